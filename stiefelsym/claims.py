@@ -1,0 +1,225 @@
+"""The claim model and the registry.
+
+A claim is a function of a :class:`~stiefelsym.scene.Scene` that returns named
+checks: residuals (matrices or scalars that must vanish on T*V), :class:`Rank`
+statements (a rank or dimension the paper asserts) or :class:`Count`
+statements (an integer formula against the value the paper prints).  The
+engine decides how to check them.
+"""
+from __future__ import annotations
+
+import importlib
+import importlib.util
+import inspect
+import re
+import sys
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Callable, Iterable, Mapping
+
+from .matrix import Mat
+
+KINDS = ("id", "lax", "pb", "dim", "not", "geo")
+
+
+@dataclass(frozen=True)
+class Rank:
+    """The rank of ``matrix`` equals ``expected``.
+
+    ``generic``: the rank at a generic point of the chart (the paper's
+    "generic orbit", "independent functions"); otherwise the rank must be
+    ``expected`` at every point of the constraint set (then the exact method
+    looks for a nonzero constant maximal minor)."""
+
+    matrix: Mat
+    expected: int
+    generic: bool = True
+    meaning: str = ""
+
+
+@dataclass(frozen=True)
+class Count:
+    """An integer computed by the claim (e.g. from ranks) against the printed formula."""
+
+    value: int
+    expected: int
+    meaning: str = ""
+
+
+Checks = Mapping[str, Any]
+
+
+@dataclass(frozen=True)
+class Size:
+    n: int
+    r: int
+
+    def __str__(self) -> str:
+        return f"n={self.n},r={self.r}"
+
+
+def admissible(n_max: int = 5, *, n_min: int = 1, r_min: int = 1, r_max: int | None = None,
+               where: Callable[[int, int], bool] | None = None) -> tuple[Size, ...]:
+    """All sizes 1 <= r_min <= r <= min(n, r_max), n_min <= n <= n_max, filtered by ``where``."""
+    out = []
+    for n in range(max(n_min, 1), n_max + 1):
+        for r in range(max(r_min, 1), n + 1):
+            if r_max is not None and r > r_max:
+                continue
+            if where is not None and not where(n, r):
+                continue
+            out.append(Size(n, r))
+    return tuple(out)
+
+
+@dataclass
+class Correction:
+    """A candidate correction of a printed formula: what changes, and the corrected claim."""
+
+    description: str
+    func: Callable
+    changes: int = 1
+
+
+@dataclass
+class Claim:
+    id: str
+    paper: tuple[str, ...]
+    kind: str
+    section: str
+    func: Callable
+    sizes: tuple[Size, ...]
+    statement: str = ""
+    title: str = ""
+    realization: str = "standard"
+    #: "holds": the printed statement is true; "nonzero": the paper says this does NOT vanish
+    expect: str = "holds"
+    #: largest n for the symbolic exact method (beyond: randomized exact only)
+    exact_max_n: int = 5
+    corrections: list[Correction] = field(default_factory=list)
+    source: str = ""
+
+    def __post_init__(self) -> None:
+        if self.kind not in KINDS:
+            raise ValueError(f"claim {self.id}: unknown kind {self.kind!r} (one of {', '.join(KINDS)})")
+        if self.expect not in ("holds", "nonzero"):
+            raise ValueError(f"claim {self.id}: expect must be 'holds' or 'nonzero'")
+        if not self.sizes:
+            raise ValueError(f"claim {self.id}: no sizes")
+
+    def correction(self, description: str, changes: int = 1):
+        """Decorator registering a candidate correction of this claim (errata search)."""
+        def deco(fn):
+            self.corrections.append(Correction(description, fn, changes))
+            return fn
+        return deco
+
+
+class Registry:
+    """Claims by id, in registration order."""
+
+    def __init__(self) -> None:
+        self._claims: dict[str, Claim] = {}
+
+    def add(self, c: Claim) -> Claim:
+        if c.id in self._claims:
+            raise ValueError(f"duplicate claim id {c.id!r}")
+        self._claims[c.id] = c
+        return c
+
+    def get(self, cid: str) -> Claim:
+        try:
+            return self._claims[cid]
+        except KeyError:
+            near = [k for k in self._claims if cid.lower() in k.lower()]
+            hint = f"; did you mean {', '.join(near[:3])}?" if near else "; `stiefelsym list` shows all claims"
+            raise KeyError(f"unknown claim {cid!r}{hint}") from None
+
+    def __iter__(self):
+        return iter(self._claims.values())
+
+    def __len__(self) -> int:
+        return len(self._claims)
+
+    def __contains__(self, cid: str) -> bool:
+        return cid in self._claims
+
+    def ids(self) -> list[str]:
+        return list(self._claims)
+
+
+#: the registry the @claim decorator writes to while a catalog module is imported
+_ACTIVE: list[Registry] = [Registry()]
+
+
+def claim(id: str, *, paper: str | Iterable[str], kind: str, section: str | None = None,
+          sizes: Iterable[Size] = (), statement: str = "", realization: str = "standard",
+          expect: str = "holds", exact_max_n: int = 5):
+    """Register a claim.  The function's docstring (one sentence) goes into the report."""
+    def deco(fn):
+        labels = (paper,) if isinstance(paper, str) else tuple(paper)
+        sec = section
+        if sec is None:
+            mod = sys.modules.get(fn.__module__)
+            sec = getattr(mod, "SECTION", "") if mod else ""
+        c = Claim(id=id, paper=labels, kind=kind, section=str(sec), func=fn,
+                  sizes=tuple(sizes) or admissible(), statement=statement.strip(),
+                  title=(inspect.getdoc(fn) or "").strip(), realization=realization,
+                  expect=expect, exact_max_n=exact_max_n, source=fn.__module__)
+        _ACTIVE[-1].add(c)
+        fn.claim = c
+        return fn
+    return deco
+
+
+class CatalogError(Exception):
+    """A claims file could not be loaded."""
+
+
+def _collect(loader: Callable[[], None]) -> Registry:
+    reg = Registry()
+    _ACTIVE.append(reg)
+    try:
+        loader()
+    finally:
+        _ACTIVE.pop()
+    return reg
+
+
+def load_catalog(package: str = "proofs") -> Registry:
+    """Import every module of the paper's catalog and return its claims."""
+    def loader():
+        pkg = importlib.import_module(package)
+        for name in getattr(pkg, "MODULES", ()):
+            full = f"{package}.{name}"
+            if full in sys.modules:
+                importlib.reload(sys.modules[full])
+            else:
+                importlib.import_module(full)
+    return _collect(loader)
+
+
+def load_claims_file(path: str | Path) -> Registry:
+    """Load user claims from a Python file written against the public API."""
+    p = Path(path)
+    if not p.is_file():
+        raise CatalogError(f"claims file not found: {p}")
+    name = "stiefelsym_user_" + re.sub(r"\W", "_", p.stem)
+
+    def loader():
+        spec = importlib.util.spec_from_file_location(name, p)
+        if spec is None or spec.loader is None:
+            raise CatalogError(f"not a Python file: {p}")
+        mod = importlib.util.module_from_spec(spec)
+        sys.modules[name] = mod
+        try:
+            spec.loader.exec_module(mod)
+        except Exception as exc:  # a user's file: report, never a traceback
+            raise CatalogError(f"{p}: {type(exc).__name__}: {exc}") from exc
+    try:
+        reg = _collect(loader)
+    except (ValueError, TypeError) as exc:
+        raise CatalogError(f"{p}: {exc}") from exc
+    if not len(reg):
+        raise CatalogError(f"{p}: defines no claims (use the @claim decorator)")
+    return reg

@@ -1,0 +1,603 @@
+"""Number systems a scene can be evaluated over.
+
+Every field supplies constants, fresh parameters (a symbol, a random exact
+number, a random float or a degree marker), a zero test and linear solves.
+Matrices are numpy object arrays of field elements, so one piece of claim code
+runs over all of them.
+"""
+from __future__ import annotations
+
+import itertools
+import math
+import random
+from dataclasses import dataclass
+from fractions import Fraction
+from typing import Any, Sequence
+
+import flint
+import mpmath
+import symengine as se
+
+MERSENNE_61 = 2**61 - 1
+
+
+class DegenerateError(ArithmeticError):
+    """A division by zero at a sampled point (pole, singular system)."""
+
+
+class Field:
+    """Base class: exact or approximate scalar arithmetic for scenes."""
+
+    name = "field"
+    exact = True
+    #: size of the set random parameters are drawn from (Schwartz-Zippel), or None
+    sample_size: int | None = None
+    #: involution applied to entries by Mat.T (None: entries are commuting scalars)
+    star = None
+    #: map applied to diagonal entries by Mat.trace (None: entries are scalars)
+    entry_trace = None
+
+    def const(self, q: int | Fraction) -> Any:
+        raise NotImplementedError
+
+    def param(self, name: str, rng: random.Random | None) -> Any:
+        raise NotImplementedError
+
+    def is_zero(self, x: Any) -> bool:
+        raise NotImplementedError
+
+    def normalize(self, x: Any) -> Any:
+        return x
+
+    def pivot_cost(self, x: Any) -> float:
+        """Smaller is a better pivot; inf means the entry is zero."""
+        return 0.0 if not self.is_zero(x) else math.inf
+
+    def describe(self, x: Any) -> str:
+        return str(x)
+
+    # -- linear algebra ---------------------------------------------------
+    def solve(self, M: Sequence[Sequence[Any]], B: Sequence[Sequence[Any]]) -> list[list[Any]]:
+        """Solve M Y = B by Gaussian elimination with the field's pivot choice."""
+        m = len(M)
+        k = len(B[0]) if B else 0
+        rows = [list(M[i]) + list(B[i]) for i in range(m)]
+        for col in range(m):
+            best, best_cost = None, math.inf
+            for i in range(col, m):
+                c = self.pivot_cost(rows[i][col])
+                if c < best_cost:
+                    best, best_cost = i, c
+            if best is None:
+                raise DegenerateError("singular linear system")
+            rows[col], rows[best] = rows[best], rows[col]
+            piv = rows[col][col]
+            for i in range(m):
+                if i == col:
+                    continue
+                f = rows[i][col]
+                if self.is_zero(f):
+                    continue
+                f = self.normalize(f / piv)
+                rows[i] = [self.normalize(a - f * b) if j >= col else a
+                           for j, (a, b) in enumerate(zip(rows[i], rows[col]))]
+            rows[col] = [self.normalize(a / piv) if j >= col else a for j, a in enumerate(rows[col])]
+        return [row[m:m + k] for row in rows]
+
+    def rank(self, M: Sequence[Sequence[Any]]) -> int:
+        rows = [list(r) for r in M]
+        if not rows:
+            return 0
+        rank, ncols = 0, len(rows[0])
+        for col in range(ncols):
+            best, best_cost = None, math.inf
+            for i in range(rank, len(rows)):
+                c = self.pivot_cost(rows[i][col])
+                if c < best_cost:
+                    best, best_cost = i, c
+            if best is None:
+                continue
+            rows[rank], rows[best] = rows[best], rows[rank]
+            piv = rows[rank][col]
+            for i in range(rank + 1, len(rows)):
+                f = rows[i][col]
+                if self.is_zero(f):
+                    continue
+                f = self.normalize(f / piv)
+                rows[i] = [self.normalize(a - f * b) for a, b in zip(rows[i], rows[rank])]
+            rank += 1
+        return rank
+
+
+# ---------------------------------------------------------------------------
+class SymbolicField(Field):
+    """symengine expressions in the chart parameters; zero means identically zero."""
+
+    name = "symbolic"
+
+    def __init__(self) -> None:
+        self.symbols: dict[str, se.Symbol] = {}
+
+    def const(self, q):
+        q = Fraction(q)
+        return se.Integer(q.numerator) / se.Integer(q.denominator)
+
+    def param(self, name, rng=None):
+        s = se.Symbol(name)
+        self.symbols[name] = s
+        return s
+
+    def normalize(self, x):
+        return se.expand(x)
+
+    def is_zero(self, x):
+        e = se.expand(x)
+        if e == 0:
+            return True
+        if e.is_Number:
+            return False
+        num, _den = e.as_numer_denom()
+        if se.expand(num) == 0:
+            return True
+        import sympy
+        return sympy.cancel(sympy.together(sympy.sympify(e))) == 0
+
+    def pivot_cost(self, x):
+        e = se.expand(x)
+        if e == 0:
+            return math.inf
+        if e.is_Number:
+            return 0.0
+        if self.is_zero(e):
+            return math.inf
+        return float(len(str(e)))
+
+
+class RationalField(Field):
+    """Exact rationals (python-flint fmpq); parameters are uniform integers in [-B, B]."""
+
+    name = "rational"
+
+    def __init__(self, bound: int = 2**20) -> None:
+        self.bound = bound
+        self.sample_size = 2 * bound + 1
+
+    def const(self, q):
+        q = Fraction(q)
+        return flint.fmpq(q.numerator, q.denominator)
+
+    def param(self, name, rng):
+        return flint.fmpq(rng.randint(-self.bound, self.bound))
+
+    def is_zero(self, x):
+        return x == 0
+
+    def solve(self, M, B):
+        try:
+            sol = flint.fmpq_mat([list(map(self._q, r)) for r in M]).solve(
+                flint.fmpq_mat([list(map(self._q, r)) for r in B]))
+        except ZeroDivisionError as exc:
+            raise DegenerateError("singular linear system") from exc
+        return [[sol[i, j] for j in range(sol.ncols())] for i in range(sol.nrows())]
+
+    def rank(self, M):
+        if not M or not M[0]:
+            return 0
+        return flint.fmpq_mat([list(map(self._q, r)) for r in M]).rank()
+
+    @staticmethod
+    def _q(x):
+        return x if isinstance(x, flint.fmpq) else flint.fmpq(x)
+
+
+class ModularField(Field):
+    """The prime field GF(p), p = 2^61 - 1 by default; parameters uniform in GF(p)."""
+
+    name = "modular"
+
+    def __init__(self, p: int = MERSENNE_61) -> None:
+        self.p = p
+        self.sample_size = p
+
+    def const(self, q):
+        q = Fraction(q)
+        return flint.nmod(q.numerator, self.p) / flint.nmod(q.denominator, self.p)
+
+    def param(self, name, rng):
+        return flint.nmod(rng.randrange(self.p), self.p)
+
+    def is_zero(self, x):
+        return int(x) == 0 if isinstance(x, flint.nmod) else x == 0
+
+    def describe(self, x):
+        v = int(x)
+        return str(v if v <= self.p // 2 else v - self.p) + f" (mod {self.p})"
+
+    def solve(self, M, B):
+        cast = lambda r: [x if isinstance(x, flint.nmod) else flint.nmod(int(x), self.p) for x in r]
+        try:
+            sol = flint.nmod_mat([cast(r) for r in M], self.p).solve(
+                flint.nmod_mat([cast(r) for r in B], self.p))
+        except ZeroDivisionError as exc:
+            raise DegenerateError("singular linear system mod p") from exc
+        return [[sol[i, j] for j in range(sol.ncols())] for i in range(sol.nrows())]
+
+    def rank(self, M):
+        if not M or not M[0]:
+            return 0
+        cast = lambda r: [x if isinstance(x, flint.nmod) else flint.nmod(int(x), self.p) for x in r]
+        return flint.nmod_mat([cast(r) for r in M], self.p).rank()
+
+
+# ---------------------------------------------------------------------------
+class ErrNum:
+    """A float (or mpf) with a first-order running bound on its rounding error.
+
+    ``e`` bounds |computed - exact| and ``m`` bounds the sum of the absolute
+    values of all terms that went into the number (its scale).
+    """
+
+    __slots__ = ("v", "e", "m", "u")
+
+    def __init__(self, v, e=0, m=None, u=2.0**-53):
+        self.v, self.e, self.u = v, e, u
+        self.m = abs(v) if m is None else m
+
+    def _lift(self, o):
+        if isinstance(o, ErrNum):
+            return o
+        if isinstance(o, (int, Fraction)):
+            v = self._num(o)
+            err = 0 if v == o else self.u * abs(v)
+            return ErrNum(v, err, abs(v), self.u)
+        return NotImplemented
+
+    def _num(self, q):
+        if isinstance(self.v, float):
+            return float(q)
+        return mpmath.mpf(q.numerator) / q.denominator if isinstance(q, Fraction) else mpmath.mpf(q)
+
+    def __add__(self, o):
+        o = self._lift(o)
+        if o is NotImplemented:
+            return o
+        v = self.v + o.v
+        return ErrNum(v, self.e + o.e + self.u * abs(v), self.m + o.m, self.u)
+
+    __radd__ = __add__
+
+    def __neg__(self):
+        return ErrNum(-self.v, self.e, self.m, self.u)
+
+    def __sub__(self, o):
+        o = self._lift(o)
+        if o is NotImplemented:
+            return o
+        return self + (-o)
+
+    def __rsub__(self, o):
+        return (-self) + o
+
+    def __mul__(self, o):
+        o = self._lift(o)
+        if o is NotImplemented:
+            return o
+        v = self.v * o.v
+        e = abs(self.v) * o.e + abs(o.v) * self.e + self.e * o.e + self.u * abs(v)
+        return ErrNum(v, e, self.m * o.m, self.u)
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, o):
+        o = self._lift(o)
+        if o is NotImplemented:
+            return o
+        if o.v == 0 or o.e >= abs(o.v):
+            raise DegenerateError("division by a number indistinguishable from zero")
+        v = self.v / o.v
+        e = (self.e + abs(v) * o.e) / (abs(o.v) - o.e) + self.u * abs(v)
+        m = self.m / (abs(o.v) - o.e) if o.m <= abs(o.v) else self.m * o.m / (abs(o.v) - o.e) ** 2
+        return ErrNum(v, e, m, self.u)
+
+    def __rtruediv__(self, o):
+        return self._lift(o) / self
+
+    def __repr__(self):
+        return f"{float(self.v):.3e}±{float(self.e):.1e}"
+
+
+class FloatField(Field):
+    """float64 (or mpmath at ``dps`` digits) with running error bounds."""
+
+    exact = False
+
+    def __init__(self, dps: int | None = None, scale: float = 1.0) -> None:
+        self.dps = dps
+        self.scale = scale
+        self.name = "float64" if dps is None else f"mpmath{dps}"
+        self.u = 2.0**-53 if dps is None else mpmath.mpf(10) ** (-dps)
+
+    def _num(self, x):
+        return float(x) if self.dps is None else mpmath.mpf(x)
+
+    def const(self, q):
+        q = Fraction(q)
+        if self.dps is None:
+            v = q.numerator / q.denominator
+        else:
+            v = mpmath.mpf(q.numerator) / q.denominator
+        err = 0 if q.denominator == 1 and abs(q.numerator) < 2**53 else self.u * abs(v)
+        return ErrNum(v, err, abs(v), self.u)
+
+    def param(self, name, rng):
+        v = self._num(Fraction(rng.randint(-2**40, 2**40), 2**40) * Fraction(self.scale).limit_denominator())
+        return ErrNum(v, 0, abs(v), self.u)
+
+    def is_zero(self, x):
+        return abs(x.v) <= x.e if isinstance(x, ErrNum) else x == 0
+
+    def pivot_cost(self, x):
+        if not isinstance(x, ErrNum):
+            return math.inf if x == 0 else 0.0
+        if abs(x.v) <= x.e:
+            return math.inf
+        return -float(abs(x.v))
+
+    def describe(self, x):
+        return repr(x)
+
+
+# ---------------------------------------------------------------------------
+class Deg:
+    """Degree bookkeeping: a rational function N/D with deg N <= num and D a
+    product of named factors ``den`` (factor -> exponent)."""
+
+    __slots__ = ("num", "den", "f")
+
+    def __init__(self, num: int, den: dict | None = None, field: "DegreeField" = None):
+        self.num, self.den, self.f = num, dict(den or {}), field
+
+    @property
+    def zero(self):
+        return self.num < 0
+
+    def _lift(self, o):
+        if isinstance(o, Deg):
+            return o
+        if isinstance(o, (int, Fraction)):
+            return Deg(-1 if o == 0 else 0, None, self.f)
+        return NotImplemented
+
+    def _dd(self, den):
+        return sum(self.f.factor_degree[k] * e for k, e in den.items())
+
+    def __add__(self, o):
+        o = self._lift(o)
+        if o is NotImplemented:
+            return o
+        if self.zero:
+            return o
+        if o.zero:
+            return self
+        den = {k: max(self.den.get(k, 0), o.den.get(k, 0)) for k in set(self.den) | set(o.den)}
+        lift = lambda d: self._dd({k: den[k] - d.den.get(k, 0) for k in den})
+        return Deg(max(self.num + lift(self), o.num + lift(o)), den, self.f)
+
+    __radd__ = __add__
+
+    def __neg__(self):
+        return self
+
+    def __sub__(self, o):
+        return self.__add__(o)
+
+    __rsub__ = __sub__
+
+    def __mul__(self, o):
+        o = self._lift(o)
+        if o is NotImplemented:
+            return o
+        if self.zero or o.zero:
+            return Deg(-1, None, self.f)
+        den = dict(self.den)
+        for k, e in o.den.items():
+            den[k] = den.get(k, 0) + e
+        return Deg(self.num + o.num, den, self.f)
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, o):
+        o = self._lift(o)
+        if o is NotImplemented:
+            return o
+        if o.zero:
+            raise DegenerateError("division by an identically zero expression")
+        if self.zero:
+            return self
+        key = self.f.new_factor(o.num)
+        den = dict(self.den)
+        den[key] = den.get(key, 0) + 1
+        return Deg(self.num + self._dd(o.den), den, self.f)
+
+    def __rtruediv__(self, o):
+        return self._lift(o) / self
+
+    def __repr__(self):
+        return f"Deg({self.num}/{self._dd(self.den)})"
+
+
+class DegreeField(Field):
+    """Runs a claim on degree markers to bound the numerator degree of its residual."""
+
+    name = "degree"
+
+    def __init__(self) -> None:
+        self.factor_degree: dict[int, int] = {}
+        self._ids = itertools.count()
+
+    def new_factor(self, degree: int) -> int:
+        k = next(self._ids)
+        self.factor_degree[k] = max(degree, 0)
+        return k
+
+    def const(self, q):
+        return Deg(-1 if q == 0 else 0, None, self)
+
+    def param(self, name, rng=None):
+        return Deg(1, None, self)
+
+    def is_zero(self, x):
+        return isinstance(x, Deg) and x.zero or (not isinstance(x, Deg) and x == 0)
+
+    def _lift(self, x):
+        return x if isinstance(x, Deg) else self.const(x)
+
+    def solve(self, M, B):
+        """Cramer's rule bound: independent of the pivots a concrete solve uses."""
+        M = [[self._lift(x) for x in row] for row in M]
+        B = [[self._lift(x) for x in row] for row in B]
+        m = len(M)
+        common = {}
+        for row in M:
+            for x in row:
+                for k, e in x.den.items():
+                    common[k] = max(common.get(k, 0), e)
+        dd = lambda den: sum(self.factor_degree[k] * e for k, e in den.items())
+        cleared = [[(-1 if x.zero else x.num + dd({k: common[k] - x.den.get(k, 0) for k in common}))
+                    for x in row] for row in M]
+        det_bound = min(sum(max(r) for r in cleared),
+                        sum(max(cleared[i][j] for i in range(m)) for j in range(m)))
+        det_key = self.new_factor(det_bound)
+        out = []
+        for i in range(m):
+            row = []
+            for j in range(len(B[0])):
+                acc = Deg(-1, None, self)
+                for b in (B[l][j] for l in range(m)):
+                    acc = acc + b
+                if acc.zero:
+                    row.append(acc)
+                    continue
+                den = dict(acc.den)
+                den[det_key] = den.get(det_key, 0) + 1
+                row.append(Deg(acc.num + det_bound + dd(common), den, self))
+            out.append(row)
+        return out
+
+    def rank(self, M):
+        raise TypeError("ranks are not defined over degree markers")
+
+
+# ---------------------------------------------------------------------------
+def _is_matrix(o) -> bool:
+    return getattr(o, "__array_priority__", 0) >= 1000
+
+
+class Dual:
+    """a + b·ε with ε² = 0: forward-mode derivative over any field."""
+
+    __slots__ = ("a", "b")
+
+    def __init__(self, a, b=0):
+        self.a, self.b = a, b
+
+    def __add__(self, o):
+        if _is_matrix(o):
+            return NotImplemented
+        if isinstance(o, Dual):
+            return Dual(self.a + o.a, self.b + o.b)
+        return Dual(self.a + o, self.b)
+
+    __radd__ = __add__
+
+    def __neg__(self):
+        return Dual(-self.a, -self.b)
+
+    def __sub__(self, o):
+        if _is_matrix(o):
+            return NotImplemented
+        if isinstance(o, Dual):
+            return Dual(self.a - o.a, self.b - o.b)
+        return Dual(self.a - o, self.b)
+
+    def __rsub__(self, o):
+        return Dual(o - self.a, -self.b)
+
+    def __mul__(self, o):
+        if _is_matrix(o):
+            return NotImplemented
+        if isinstance(o, Dual):
+            return Dual(self.a * o.a, self.a * o.b + self.b * o.a)
+        return Dual(self.a * o, self.b * o)
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, o):
+        if _is_matrix(o):
+            return NotImplemented
+        if isinstance(o, Dual):
+            q = self.a / o.a
+            return Dual(q, (self.b - q * o.b) / o.a)
+        return Dual(self.a / o, self.b / o)
+
+    def __rtruediv__(self, o):
+        q = o / self.a
+        return Dual(q, -(q * self.b) / self.a)
+
+    def __repr__(self):
+        return f"Dual({self.a!r}, {self.b!r})"
+
+
+class DualField(Field):
+    """Elements a + bε over a base field; used for derivatives along flows."""
+
+    def __init__(self, base: Field) -> None:
+        self.base = base
+        self.name = f"dual({base.name})"
+        self.exact = base.exact
+
+    def const(self, q):
+        return Dual(self.base.const(q), self.base.const(0))
+
+    def lift(self, x):
+        return x if isinstance(x, Dual) else Dual(x, self.base.const(0))
+
+    def is_zero(self, x):
+        x = self.lift(x)
+        return self.base.is_zero(x.a) and self.base.is_zero(x.b)
+
+    def normalize(self, x):
+        x = self.lift(x)
+        return Dual(self.base.normalize(x.a), self.base.normalize(x.b))
+
+    def pivot_cost(self, x):
+        return self.base.pivot_cost(self.lift(x).a)
+
+    def solve(self, M, B):
+        M = [[self.lift(x) for x in r] for r in M]
+        B = [[self.lift(x) for x in r] for r in B]
+        M0 = [[x.a for x in r] for r in M]
+        Y0 = self.base.solve(M0, [[x.a for x in r] for r in B])
+        m, k = len(M), len(B[0])
+        rhs = [[B[i][j].b - sum((M[i][l].b * Y0[l][j] for l in range(m)), self.base.const(0))
+                for j in range(k)] for i in range(m)]
+        Y1 = self.base.solve(M0, rhs)
+        return [[Dual(Y0[i][j], Y1[i][j]) for j in range(k)] for i in range(m)]
+
+
+@dataclass(frozen=True)
+class FieldSpec:
+    """How a method builds its field (kept small so results can name it)."""
+
+    kind: str
+    dps: int | None = None
+
+
+def make_field(kind: str, **kw) -> Field:
+    return {
+        "symbolic": SymbolicField,
+        "rational": RationalField,
+        "modular": ModularField,
+        "float": FloatField,
+        "degree": DegreeField,
+    }[kind](**kw)

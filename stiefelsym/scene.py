@@ -1,0 +1,633 @@
+"""Scenes: one problem (n, r, field, parameters), built lazily.
+
+A scene hands claims the paper's objects (X, P, A, Phi, Psi, lambda, kappa,
+...) as :class:`~stiefelsym.matrix.Mat` over its field, and the Hamiltonian
+machinery on T*V_{n,r}: gradients, the Dirac bracket, Dirac flows and the
+Lagrange-multiplier form.  Everything is built on first use and cached.
+
+Charts (how a point of T*V_{n,r} is produced from free parameters):
+
+* ``cayley``: X = first r columns of (I - S)(I + S)^{-1} D with S skew
+  (D = diag(-1, 1, ..., 1) on the second component of O(n) when r = n),
+  P = X W + (I - X X^T) Z with W skew; A = diag(a_1, ..., a_n).  Every point of a
+  dense open subset of T*V_{n,r} arises this way.
+* ``equivariant``: X = X0 = (E_1, ..., E_r), P = (W; Z2) with W skew, A a generic
+  symmetric matrix.  Valid for residuals built from X, P, A by matrix
+  operations only (covariant under (X, P, A) -> (gX, gP, g A g^T), g in O(n)),
+  which the scene verifies by recording coordinate access.
+"""
+from __future__ import annotations
+
+import random
+from dataclasses import dataclass, field as dc_field
+from fractions import Fraction
+from typing import Any, Callable, Mapping
+
+import numpy as np
+
+from .fields import Dual, DualField, Field, DegenerateError
+from .matrix import CoordinateTracker, Mat, block, comm, scalar_matrix
+
+Scalar = Any
+Function = Callable[["Scene"], Any]
+
+
+class SizeError(ValueError):
+    """An inadmissible problem size."""
+
+
+@dataclass
+class Flow:
+    """A vector field on T*V (or on a larger phase space): derivatives of primitives."""
+
+    Xdot: Mat
+    Pdot: Mat
+    extra: dict[str, Mat] = dc_field(default_factory=dict)
+    multipliers: dict[str, Mat] = dc_field(default_factory=dict)
+
+    def tangent(self) -> dict[str, Mat]:
+        out = {"X": self.Xdot, "P": self.Pdot}
+        out.update(self.extra)
+        return out
+
+    def __getitem__(self, key: str) -> Mat:
+        return self.multipliers[key]
+
+
+@dataclass
+class Constraints:
+    """A realization of T*V as the zero set of symmetric matrix constraints."""
+
+    name: str
+    build: Callable[["Scene"], list[Mat]]
+    #: number of scalar constraints per matrix: upper triangles of symmetric r x r
+    symmetric: bool = True
+
+
+def standard_constraints(s: "Scene") -> list[Mat]:
+    """(cond_XP): X^T X = I_r, X^T P + P^T X = 0."""
+    return [s.X.T @ s.X - s.Ir, s.X.T @ s.P + s.P.T @ s.X]
+
+
+def metric_constraints(s: "Scene") -> list[Mat]:
+    """(cond_XP2): X^T X = I_r, X^T A^{-1} P + P^T A^{-1} X = 0."""
+    return [s.X.T @ s.X - s.Ir, s.X.T @ s.Ainv @ s.P + s.P.T @ s.Ainv @ s.X]
+
+
+REALIZATIONS = {
+    "standard": Constraints("standard", standard_constraints),
+    "metric": Constraints("metric", metric_constraints),
+}
+
+
+class Scene:
+    """One problem size over one field, with lazily built objects."""
+
+    def __init__(self, n: int, r: int, field: Field, *, chart: str = "cayley",
+                 rng: random.Random | None = None, component: int = 0,
+                 realization: str = "standard", options: Mapping[str, Any] | None = None,
+                 tracker: CoordinateTracker | None = None) -> None:
+        if not isinstance(n, int) or not isinstance(r, int):
+            raise SizeError("n and r must be integers")
+        if r < 1:
+            raise SizeError(f"r = {r} < 1: a Stiefel variety V(n, r) needs r >= 1")
+        if r > n:
+            raise SizeError(f"r = {r} > n = {n}: V(n, r) needs r <= n")
+        if chart not in ("cayley", "equivariant"):
+            raise ValueError(f"unknown chart {chart!r}")
+        self.n, self.r = n, r
+        self.field = field
+        self.chart = chart
+        self.rng = rng
+        self.component = component
+        self.realization = realization
+        self.options = dict(options or {})
+        self.tracker = tracker if tracker is not None else CoordinateTracker()
+        self.params: dict[str, Any] = {}
+        self._cache: dict[str, Any] = {}
+
+    # ------------------------------------------------------------------
+    # parameters and primitives
+    def param(self, name: str) -> Scalar:
+        """A free parameter of the chart (symbol, random number, degree marker)."""
+        if name not in self.params:
+            self.params[name] = self.field.param(name, self.rng)
+        return self.params[name]
+
+    def _cached(self, key: str, build: Callable[[], Any]) -> Any:
+        if key not in self._cache:
+            self._cache[key] = build()
+        return self._cache[key]
+
+    def _cached_for(self, key: str, obj: Any, build: Callable[[], Any]) -> Any:
+        """Cache keyed by an object's identity; the object is kept alive with the value."""
+        full = f"{key}:{id(obj)}"
+        if full not in self._cache:
+            self._cache[full] = (obj, build())
+        return self._cache[full][1]
+
+    def const(self, q: int | Fraction) -> Scalar:
+        return self.field.const(q)
+
+    def q(self, num: int, den: int = 1) -> Scalar:
+        """The rational constant num/den as an element of the scene's field."""
+        return self.field.const(Fraction(num, den))
+
+    def mat(self, rows, tags=("?", "?")) -> Mat:
+        return Mat.from_rows(rows, self.field, tags, self.tracker)
+
+    def zeros(self, m: int, k: int, tags=("?", "?")) -> Mat:
+        return Mat.zeros(m, k, self.field, tags, self.tracker)
+
+    def identity(self, m: int, tag="?") -> Mat:
+        return Mat.identity(m, self.field, tag, self.tracker)
+
+    def skew_params(self, name: str, m: int, tag: str) -> Mat:
+        M = self.zeros(m, m, (tag, tag))
+        for i in range(m):
+            for j in range(i + 1, m):
+                x = self.param(f"{name}_{i + 1}{j + 1}")
+                M.a[i, j], M.a[j, i] = x, -x
+        return M
+
+    def sym_params(self, name: str, m: int, tag: str) -> Mat:
+        M = self.zeros(m, m, (tag, tag))
+        for i in range(m):
+            for j in range(i, m):
+                x = self.param(f"{name}_{i + 1}{j + 1}")
+                M.a[i, j] = M.a[j, i] = x
+        return M
+
+    def general_params(self, name: str, m: int, k: int, tags) -> Mat:
+        M = self.zeros(m, k, tags)
+        for i in range(m):
+            for j in range(k):
+                M.a[i, j] = self.param(f"{name}_{i + 1}{j + 1}")
+        return M
+
+    def _stiefel_point(self, prefix: str) -> tuple[Mat, Mat]:
+        n, r = self.n, self.r
+        if self.chart == "equivariant":
+            X = self.zeros(n, r, ("n", "r"))
+            for i in range(r):
+                X.a[i, i] = self.const(1)
+            P = self.zeros(n, r, ("n", "r"))
+            W = self.skew_params(f"{prefix}W", r, "r")
+            P.a[:r, :] = W.a
+            for i in range(r, n):
+                for j in range(r):
+                    P.a[i, j] = self.param(f"{prefix}Z_{i + 1}{j + 1}")
+            return X, P
+        S = self.skew_params(f"{prefix}S", n, "n")
+        In = self.identity(n, "n")
+        Q = Mat.from_rows(self.field.solve((In + S).T.a.tolist(), (In - S).T.a.tolist()),
+                          self.field, ("n", "n"), self.tracker).T  # (I - S)(I + S)^{-1}
+        if self.component % 2 == 1:
+            Q.a[:, 0] = [-x for x in Q.a[:, 0]]
+        X = Mat(Q.a[:, :r].copy(), self.field, ("n", "r"), self.tracker)
+        W = self.skew_params(f"{prefix}W", r, "r")
+        Z = self.general_params(f"{prefix}Z", n, r, ("n", "r"))
+        P0 = X @ W + (In - X @ X.T) @ Z
+        if self.realization == "metric":
+            P0 = self.A @ P0
+        return X, P0
+
+    def _point(self):
+        return self._cached("point", lambda: self._stiefel_point(""))
+
+    @property
+    def X(self) -> Mat:
+        return self._point()[0]
+
+    @property
+    def P(self) -> Mat:
+        if self.chart == "equivariant" and self.realization == "metric":
+            return self._cached("P_metric", lambda: self.A @ self._point()[1])
+        return self._point()[1]
+
+    @property
+    def Y(self) -> Mat:
+        """A second point (Y, Q) of T*V_{n,r}."""
+        return self._cached("point2", lambda: self._stiefel_point("second_"))[0]
+
+    @property
+    def Q(self) -> Mat:
+        return self._cached("point2", lambda: self._stiefel_point("second_"))[1]
+
+    @property
+    def a(self) -> list[Scalar]:
+        """Eigenvalues a_1..a_n of A (a coordinate object: A is then diagonal)."""
+        self.tracker.touch("eigenvalues a_i of A")
+        if self.chart == "equivariant":
+            raise CoordinateAccess("eigenvalues a_i")
+        return self._cached("a", lambda: [self.param(f"a_{i + 1}") for i in range(self.n)])
+
+    @property
+    def A(self) -> Mat:
+        """The symmetric matrix A: diag(a_1..a_n), or generic symmetric in the equivariant chart."""
+        def build():
+            if self.chart == "equivariant":
+                return self.sym_params("A", self.n, "n")
+            M = self.zeros(self.n, self.n, ("n", "n"))
+            for i, x in enumerate(self._cached("a", lambda: [self.param(f"a_{i + 1}") for i in range(self.n)])):
+                M.a[i, i] = x
+            return M
+        return self._cached("A", build)
+
+    @property
+    def Ainv(self) -> Mat:
+        def build():
+            if self.chart == "cayley":
+                M = self.zeros(self.n, self.n, ("n", "n"))
+                for i in range(self.n):
+                    M.a[i, i] = self.const(1) / self.A.a[i, i]
+                return M
+            return self.A.inv()
+        return self._cached("Ainv", build)
+
+    def scalar(self, name: str) -> Scalar:
+        """A free scalar parameter such as lambda, kappa, epsilon."""
+        return self.param(name)
+
+    @property
+    def lam(self) -> Scalar:
+        return self.param("lambda")
+
+    @property
+    def kappa(self) -> Scalar:
+        return self.param("kappa")
+
+    @property
+    def eps(self) -> Scalar:
+        return self.param("epsilon")
+
+    @property
+    def xi(self) -> Mat:
+        """A generic element of so(n)."""
+        return self._cached("xi", lambda: self.skew_params("xi", self.n, "n"))
+
+    @property
+    def zeta(self) -> Mat:
+        """A second generic element of so(n)."""
+        return self._cached("zeta", lambda: self.skew_params("zeta", self.n, "n"))
+
+    @property
+    def eta(self) -> Mat:
+        """A generic element of so(r)."""
+        return self._cached("eta", lambda: self.skew_params("eta", self.r, "r"))
+
+    @property
+    def theta(self) -> Mat:
+        """A second generic element of so(r)."""
+        return self._cached("theta", lambda: self.skew_params("theta", self.r, "r"))
+
+    def generic(self, name: str, m: str, k: str) -> Mat:
+        """A generic matrix of parameters with index labels m, k in {'n', 'r'}."""
+        size = {"n": self.n, "r": self.r}
+        return self._cached(f"gen:{name}", lambda: self.general_params(name, size[m], size[k], (m, k)))
+
+    def sym_operator(self, name: str = "AA") -> Callable[[Mat], Mat]:
+        """A generic symmetric linear operator on so(n) (w.r.t. <,>), covariant parameter."""
+        def build():
+            basis = so_basis(self.n)
+            Mop = self.sym_params(name, len(basis), "so")
+            return basis, Mop.a
+        basis, coeffs = self._cached(f"op:{name}", build)
+
+        def apply(xi: Mat) -> Mat:
+            comps = [xi.a[i, j] for (i, j) in basis]  # coordinates in the orthonormal basis
+            out = Mat.zeros(self.n, self.n, xi.field, ("n", "n"), xi.tracker)
+            for k, (i, j) in enumerate(basis):
+                acc = xi.field.const(0)
+                for l, c in enumerate(comps):
+                    acc = acc + c * coeffs[k, l]
+                acc = xi.field.normalize(acc)
+                out.a[i, j], out.a[j, i] = acc, -acc
+            return out
+        return apply
+
+    # ------------------------------------------------------------------
+    # derived objects
+    @property
+    def In(self) -> Mat:
+        return self._cached("In", lambda: self.identity(self.n, "n"))
+
+    @property
+    def Ir(self) -> Mat:
+        return self._cached("Ir", lambda: self.identity(self.r, "r"))
+
+    @property
+    def Phi(self) -> Mat:
+        """The SO(n) momentum map Phi = P X^T - X P^T."""
+        return self._cached("Phi", lambda: self.P @ self.X.T - self.X @ self.P.T)
+
+    @property
+    def Psi(self) -> Mat:
+        """The SO(r) momentum map Psi = X^T P - P^T X."""
+        return self._cached("Psi", lambda: self.X.T @ self.P - self.P.T @ self.X)
+
+    def tr(self, M: Mat) -> Scalar:
+        return M.trace()
+
+    def killing(self, a: Mat, b: Mat) -> Scalar:
+        """<a, b> = -1/2 tr(ab)."""
+        return (a @ b).trace() * self.const(Fraction(-1, 2))
+
+    def resolvent(self, mu: Scalar) -> Mat:
+        """(mu I_n - A)^{-1}."""
+        def build():
+            if self.chart == "cayley":
+                M = self.zeros(self.n, self.n, ("n", "n"))
+                for i in range(self.n):
+                    M.a[i, i] = self.const(1) / (mu - self.A.a[i, i])
+                return M
+            return (scalar_matrix(mu, self.n, self.field, "n", self.tracker) - self.A).inv()
+        return self._cached_for("res", mu, build)
+
+    def scalar_matrix(self, c: Scalar, m: int, tag="?") -> Mat:
+        return scalar_matrix(c, m, self.field, tag, self.tracker)
+
+    # ------------------------------------------------------------------
+    # phase space calculus
+    @property
+    def constraints(self) -> Constraints:
+        return REALIZATIONS[self.realization]
+
+    def _coords(self) -> list[tuple[str, int, int]]:
+        n, r = self.n, self.r
+        return [(name, i, j) for name in ("X", "P") for i in range(n) for j in range(r)]
+
+    def tangent(self, flow: Mapping[str, Mat]) -> "TangentScene":
+        return TangentScene(self, flow)
+
+    def _unit_tangents(self):
+        n, r = self.n, self.r
+        zero = self.zeros(n, r, ("n", "r"))
+        for name, i, j in self._coords():
+            E = self.zeros(n, r, ("n", "r"))
+            E.a[i, j] = self.const(1)
+            yield {"X": E, "P": zero} if name == "X" else {"X": zero, "P": E}
+
+    def jacobian(self, F: Function) -> list[list[Scalar]]:
+        """Rows: scalar components of F (a scalar or list of Mats); columns: the 2nr coordinates."""
+        cols = []
+        for t in self._unit_tangents():
+            values = _flatten_value(F(self.tangent(t)), self._sym_list(F))
+            cols.append([x.b if isinstance(x, Dual) else self.const(0) for x in values])
+        return [list(row) for row in zip(*cols)]
+
+    def _sym_list(self, F) -> bool:
+        return F is self.constraints.build
+
+    def gradient(self, H: Function) -> tuple[Mat, Mat]:
+        """(dH/dX, dH/dP) for a scalar function H of the scene."""
+        def build():
+            row = self.jacobian(H)[0]
+            n, r = self.n, self.r
+            HX = self.zeros(n, r, ("n", "r"))
+            HP = self.zeros(n, r, ("n", "r"))
+            HX.a[:, :] = np.array(row[: n * r], dtype=object).reshape(n, r)
+            HP.a[:, :] = np.array(row[n * r:], dtype=object).reshape(n, r)
+            return HX, HP
+        return self._cached_for("grad", H, build)
+
+    def _grad_vector(self, H: Function) -> list[Scalar]:
+        HX, HP = self.gradient(H)
+        return list(HX.a.flat) + list(HP.a.flat)
+
+    def _omega(self, v: list[Scalar]) -> list[Scalar]:
+        """Omega v for Omega = [[0, I], [-I, 0]] in (X, P) coordinates."""
+        m = len(v) // 2
+        return list(v[m:]) + [-x for x in v[:m]]
+
+    def _constraint_jacobian(self) -> list[list[Scalar]]:
+        return self._cached("J", lambda: self.jacobian(self.constraints.build))
+
+    def constraint_bracket_matrix(self) -> list[list[Scalar]]:
+        """The matrix {F_i, F_j}_0 of the scalar constraints (scalar)."""
+        def build():
+            J = self._constraint_jacobian()
+            return [[self._dot(ri, self._omega(rj)) for rj in J] for ri in J]
+        return self._cached("C0", build)
+
+    def _dot(self, u, v) -> Scalar:
+        acc = self.const(0)
+        for x, y in zip(u, v):
+            acc = acc + x * y
+        return self.field.normalize(acc)
+
+    def canonical_bracket(self, F: Function, G: Function) -> Scalar:
+        """{F, G}_0 = sum (dF/de, dG/dp) - (dF/dp, dG/de)."""
+        return self._dot(self._grad_vector(F), self._omega(self._grad_vector(G)))
+
+    def _dirac_inverse(self) -> list[list[Scalar]]:
+        def build():
+            C0 = self.constraint_bracket_matrix()
+            m = len(C0)
+            I = [[self.const(1 if i == j else 0) for j in range(m)] for i in range(m)]
+            try:
+                return self.field.solve(C0, I)
+            except DegenerateError as exc:
+                raise DegenerateError("the constraint bracket matrix {F_i, F_j}_0 is singular here") from exc
+        return self._cached("C", build)
+
+    def bracket(self, F: Function, G: Function) -> Scalar:
+        """The Dirac bracket (Dirac_bracket) of two scalar functions."""
+        J = self._constraint_jacobian()
+        C = self._dirac_inverse()
+        gF, gG = self._grad_vector(F), self._grad_vector(G)
+        FiF = [self._dot(row, self._omega(gF)) for row in J]  # {F_i, F}_0
+        FjG = [self._dot(row, self._omega(gG)) for row in J]  # {F_j, G}_0
+        acc = self._dot(gF, self._omega(gG))
+        for i in range(len(J)):
+            for j in range(len(J)):
+                acc = acc + FiF[i] * C[i][j] * FjG[j]
+        return self.field.normalize(acc)
+
+    def canonical_flow(self, H: Function) -> Flow:
+        """The Hamiltonian vector field of H for the ambient bracket {,}_0."""
+        HX, HP = self.gradient(H)
+        return Flow(HP, -HX)
+
+    def dirac_flow(self, H: Function) -> Flow:
+        """dz/dt = {z, H} for the Dirac bracket (Dirac_bracket), z = entries of X, P."""
+        def build():
+            J = self._constraint_jacobian()
+            C = self._dirac_inverse()
+            gH = self._grad_vector(H)
+            z = self._omega(gH)
+            FjH = [self._dot(row, z) for row in J]
+            w = [self._dot(Ci, FjH) for Ci in C]          # C {F, H}_0
+            JO = [self._omega(row) for row in J]           # grad of {F_i, .}_0 is -Omega grad F_i
+            out = []
+            for k in range(len(z)):
+                acc = z[k]
+                for i in range(len(J)):
+                    acc = acc - JO[i][k] * w[i]
+                out.append(self.field.normalize(acc))
+            return self._split(out)
+        return self._cached_for("dflow", H, build)
+
+    def _split(self, v: list[Scalar]) -> Flow:
+        n, r = self.n, self.r
+        Xd = self.zeros(n, r, ("n", "r"))
+        Pd = self.zeros(n, r, ("n", "r"))
+        Xd.a[:, :] = np.array(v[: n * r], dtype=object).reshape(n, r)
+        Pd.a[:, :] = np.array(v[n * r:], dtype=object).reshape(n, r)
+        return Flow(Xd, Pd)
+
+    def multiplier_flow(self, H: Function) -> Flow:
+        """(dot_XP): X' = H_P - X Pi, P' = -H_X + X Lambda + P Pi with symmetric
+        Lambda, Pi solved from the condition that the constraints are preserved.
+
+        Raises DegenerateError when the multipliers are not unique."""
+        def build():
+            r = self.r
+            HX, HP = self.gradient(H)
+            J = self._constraint_jacobian()
+            base = list(HP.a.flat) + list((-HX).a.flat)
+            units = []
+            for name in ("Lambda", "Pi"):
+                for i in range(r):
+                    for j in range(i, r):
+                        E = self.zeros(r, r, ("r", "r"))
+                        E.a[i, j] = E.a[j, i] = self.const(1)
+                        if name == "Lambda":
+                            v = [self.const(0)] * (self.n * r) + list((self.X @ E).a.flat)
+                        else:
+                            v = list((-(self.X @ E)).a.flat) + list((self.P @ E).a.flat)
+                        units.append((name, i, j, E, v))
+            M = [[self._dot(row, u[4]) for u in units] for row in J]
+            b = [[-self._dot(row, base)] for row in J]
+            try:
+                sol = self.field.solve(M, b)
+            except DegenerateError as exc:
+                raise DegenerateError("the multipliers Lambda, Pi are not unique here") from exc
+            Lam = self.zeros(r, r, ("r", "r"))
+            Pi = self.zeros(r, r, ("r", "r"))
+            for (name, i, j, E, v), (c,) in zip(units, sol):
+                target = Lam if name == "Lambda" else Pi
+                target.a[i, j] = target.a[j, i] = c
+            Xd = HP - self.X @ Pi
+            Pd = -HX + self.X @ Lam + self.P @ Pi
+            return Flow(Xd, Pd, multipliers={"Lambda": Lam, "Pi": Pi})
+        return self._cached_for("mflow", H, build)
+
+    def d(self, F: Function, flow: Flow | Mapping[str, Mat]) -> Any:
+        """The derivative of F (a function of the scene) along a flow."""
+        tangent = flow.tangent() if isinstance(flow, Flow) else dict(flow)
+        value = F(self.tangent(tangent))
+        return _map_value(value, lambda x: x.b if isinstance(x, Dual) else self.const(0), self)
+
+
+class CoordinateAccess(ValueError):
+    """Raised when a chart cannot provide a coordinate object."""
+
+
+class TangentScene(Scene):
+    """The scene with primitives X, P (and any others in the flow) perturbed by ε·flow."""
+
+    def __init__(self, base: Scene, flow: Mapping[str, Mat]) -> None:
+        self.base = base
+        self.flow = flow
+        super().__init__(base.n, base.r, DualField(base.field), chart=base.chart, rng=base.rng,
+                         component=base.component, realization=base.realization,
+                         options=base.options, tracker=base.tracker)
+        self.params = base.params
+
+    def _lift(self, M: Any, dot: Mat | None = None) -> Any:
+        if isinstance(M, Mat):
+            a = np.empty(M.a.shape, dtype=object)
+            zero = self.base.field.const(0)
+            for idx, x in np.ndenumerate(M.a):
+                a[idx] = Dual(x, dot.a[idx] if dot is not None else zero)
+            return Mat(a, self.field, M.tags, self.tracker)
+        if isinstance(M, list):
+            return [self._lift(x) for x in M]
+        if isinstance(M, tuple):
+            return tuple(self._lift(x) for x in M)
+        if callable(M):
+            return M
+        return Dual(M, self.base.field.const(0))
+
+    def param(self, name: str) -> Scalar:
+        return self._lift(self.base.param(name))
+
+    def _point(self):
+        def build():
+            X, P = self.base._point()
+            return self._lift(X, self.flow.get("X")), self._lift(P, self.flow.get("P"))
+        return self._cached("point", build)
+
+    @property
+    def P(self) -> Mat:
+        if self.base.chart == "equivariant" and self.base.realization == "metric":
+            return self._cached("P_metric", lambda: self._lift(self.base.P, self.flow.get("P")))
+        return self._point()[1]
+
+    @property
+    def Y(self) -> Mat:
+        return self._cached("Y", lambda: self._lift(self.base.Y, self.flow.get("Y")))
+
+    @property
+    def Q(self) -> Mat:
+        return self._cached("Q", lambda: self._lift(self.base.Q, self.flow.get("Q")))
+
+    @property
+    def A(self) -> Mat:
+        return self._cached("A", lambda: self._lift(self.base.A))
+
+    @property
+    def Ainv(self) -> Mat:
+        return self._cached("Ainv", lambda: self._lift(self.base.Ainv))
+
+    @property
+    def a(self):
+        return self._cached("a", lambda: self._lift(self.base.a))
+
+    def _cached(self, key, build):
+        return Scene._cached(self, key, build)
+
+    def sym_operator(self, name: str = "AA"):
+        return self.base.sym_operator(name)
+
+    def generic(self, name, m, k):
+        return self._cached(f"gen:{name}", lambda: self._lift(self.base.generic(name, m, k)))
+
+    def skew_params(self, name, m, tag):
+        return self._lift(self.base.skew_params(name, m, tag))
+
+    def sym_params(self, name, m, tag):
+        return self._lift(self.base.sym_params(name, m, tag))
+
+
+def so_basis(n: int) -> list[tuple[int, int]]:
+    """Index pairs (i, j), i < j, of the orthonormal basis E_i ∧ E_j of so(n) for <,>."""
+    return [(i, j) for i in range(n) for j in range(i + 1, n)]
+
+
+def _flatten_value(v: Any, symmetric_lists: bool) -> list[Any]:
+    if isinstance(v, Mat):
+        if symmetric_lists:
+            m = v.shape[0]
+            return [v.a[i, j] for i in range(m) for j in range(i, m)]
+        return list(v.a.flat)
+    if isinstance(v, (list, tuple)):
+        out = []
+        for x in v:
+            out.extend(_flatten_value(x, symmetric_lists))
+        return out
+    return [v]
+
+
+def _map_value(v: Any, f, scene: Scene) -> Any:
+    if isinstance(v, Mat):
+        a = np.empty(v.a.shape, dtype=object)
+        for idx, x in np.ndenumerate(v.a):
+            a[idx] = f(x)
+        return Mat(a, scene.field, v.tags, scene.tracker)
+    if isinstance(v, dict):
+        return {k: _map_value(x, f, scene) for k, x in v.items()}
+    if isinstance(v, (list, tuple)):
+        return type(v)(_map_value(x, f, scene) for x in v)
+    return f(v)
