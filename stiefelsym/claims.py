@@ -58,18 +58,43 @@ class Size:
         return f"n={self.n},r={self.r}"
 
 
+@dataclass(frozen=True)
+class SizeSpec:
+    """Which (n, r) a claim is stated for, and the default sizes the catalog verifies."""
+
+    sizes: tuple[Size, ...]
+    n_min: int = 1
+    r_min: int = 1
+    r_max: int | None = None
+    where: Callable[[int, int], bool] | None = None
+    condition: str = ""
+
+    def admits(self, n: int, r: int) -> bool:
+        if not (1 <= r <= n) or n < self.n_min or r < self.r_min:
+            return False
+        if self.r_max is not None and r > self.r_max:
+            return False
+        return self.where is None or bool(self.where(n, r))
+
+    def __iter__(self):
+        return iter(self.sizes)
+
+    def __len__(self) -> int:
+        return len(self.sizes)
+
+
 def admissible(n_max: int = 5, *, n_min: int = 1, r_min: int = 1, r_max: int | None = None,
-               where: Callable[[int, int], bool] | None = None) -> tuple[Size, ...]:
-    """All sizes 1 <= r_min <= r <= min(n, r_max), n_min <= n <= n_max, filtered by ``where``."""
+               where: Callable[[int, int], bool] | None = None, condition: str = "") -> SizeSpec:
+    """All sizes 1 <= r_min <= r <= min(n, r_max), n_min <= n <= n_max, filtered by ``where``.
+
+    ``condition`` states the restriction in words for the report (e.g. "n >= 2r")."""
     out = []
+    spec = SizeSpec((), n_min, r_min, r_max, where, condition)
     for n in range(max(n_min, 1), n_max + 1):
-        for r in range(max(r_min, 1), n + 1):
-            if r_max is not None and r > r_max:
-                continue
-            if where is not None and not where(n, r):
-                continue
-            out.append(Size(n, r))
-    return tuple(out)
+        for r in range(1, n + 1):
+            if spec.admits(n, r):
+                out.append(Size(n, r))
+    return SizeSpec(tuple(out), n_min, r_min, r_max, where, condition)
 
 
 @dataclass
@@ -88,11 +113,12 @@ class Claim:
     kind: str
     section: str
     func: Callable
-    sizes: tuple[Size, ...]
+    sizes: SizeSpec
     statement: str = ""
     title: str = ""
     realization: str = "standard"
-    #: "holds": the printed statement is true; "nonzero": the paper says this does NOT vanish
+    #: "holds": the printed statement is true; "nonzero": the paper says this does NOT vanish;
+    #: "fails": a known erratum (the printed formula is wrong; a correction is registered)
     expect: str = "holds"
     #: largest n for the symbolic exact method (beyond: randomized exact only)
     exact_max_n: int = 5
@@ -102,8 +128,8 @@ class Claim:
     def __post_init__(self) -> None:
         if self.kind not in KINDS:
             raise ValueError(f"claim {self.id}: unknown kind {self.kind!r} (one of {', '.join(KINDS)})")
-        if self.expect not in ("holds", "nonzero"):
-            raise ValueError(f"claim {self.id}: expect must be 'holds' or 'nonzero'")
+        if self.expect not in ("holds", "nonzero", "fails"):
+            raise ValueError(f"claim {self.id}: expect must be 'holds', 'nonzero' or 'fails'")
         if not self.sizes:
             raise ValueError(f"claim {self.id}: no sizes")
 
@@ -153,7 +179,7 @@ _ACTIVE: list[Registry] = [Registry()]
 
 
 def claim(id: str, *, paper: str | Iterable[str], kind: str, section: str | None = None,
-          sizes: Iterable[Size] = (), statement: str = "", realization: str = "standard",
+          sizes: SizeSpec | None = None, statement: str = "", realization: str = "standard",
           expect: str = "holds", exact_max_n: int = 5):
     """Register a claim.  The function's docstring (one sentence) goes into the report."""
     def deco(fn):
@@ -163,7 +189,7 @@ def claim(id: str, *, paper: str | Iterable[str], kind: str, section: str | None
             mod = sys.modules.get(fn.__module__)
             sec = getattr(mod, "SECTION", "") if mod else ""
         c = Claim(id=id, paper=labels, kind=kind, section=str(sec), func=fn,
-                  sizes=tuple(sizes) or admissible(), statement=statement.strip(),
+                  sizes=sizes if sizes is not None else admissible(), statement=statement.strip(),
                   title=(inspect.getdoc(fn) or "").strip(), realization=realization,
                   expect=expect, exact_max_n=exact_max_n, source=fn.__module__)
         _ACTIVE[-1].add(c)

@@ -296,8 +296,7 @@ class ErrNum:
             raise DegenerateError("division by a number indistinguishable from zero")
         v = self.v / o.v
         e = (self.e + abs(v) * o.e) / (abs(o.v) - o.e) + self.u * abs(v)
-        m = self.m / (abs(o.v) - o.e) if o.m <= abs(o.v) else self.m * o.m / (abs(o.v) - o.e) ** 2
-        return ErrNum(v, e, m, self.u)
+        return ErrNum(v, e, self.m / (abs(o.v) - o.e), self.u)
 
     def __rtruediv__(self, o):
         return self._lift(o) / self

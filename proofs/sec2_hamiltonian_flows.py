@@ -1,0 +1,2 @@
+"""§2 Hamiltonian flows on Stiefel varieties."""
+SECTION = "2"
