@@ -1,2 +1,325 @@
-"""§2 Hamiltonian flows on Stiefel varieties."""
+"""§2 Hamiltonian flows on Stiefel varieties: the constraints of T*V(n, r), the
+Dirac bracket, the momentum maps Φ and Ψ, SO(n)-invariant functions and the
+chain algebra."""
+from __future__ import annotations
+
+from itertools import combinations
+
+from stiefelsym import Count, Rank, admissible, claim, comm
+
 SECTION = "2"
+
+
+# -- dimensions printed in the section -----------------------------------------
+
+def dim_so(m):
+    """dim SO(m) = m(m-1)/2 (0 for m <= 1)."""
+    return m * (m - 1) // 2 if m > 1 else 0
+
+
+def dim_V(n, r):
+    """§2: dim V(n, r) = N = rn - r(r+1)/2."""
+    return r * n - r * (r + 1) // 2
+
+
+def ddim_printed(n, r):
+    """(ddim): the differential dimension of the SO(n)-invariant functions."""
+    if n <= 2 * r:
+        return dim_V(n, r) - dim_so(n - r)
+    return dim_V(n, r) - dim_so(n - r) + dim_so(n - 2 * r)
+
+
+def two_l_printed(n, r):
+    """Lemma (2l): the dimension 2l of a generic adjoint orbit in Φ(T*V)."""
+    if n <= 2 * r + 1:
+        return n * (n - 1) // 2 - n // 2
+    return 2 * r * (n - r - 1)
+
+
+# -- small constructions ---------------------------------------------------------
+
+def Phi_xi(t):
+    """Φ_ξ = <Φ, ξ>."""
+    return t.killing(t.Phi, t.xi)
+
+
+def Phi_zeta(t):
+    """Φ_ζ = <Φ, ζ>."""
+    return t.killing(t.Phi, t.zeta)
+
+
+def Psi_eta(t):
+    """Ψ_η = <Ψ, η>."""
+    return t.killing(t.Psi, t.eta)
+
+
+def Psi_theta(t):
+    """Ψ_θ = <Ψ, θ>."""
+    return t.killing(t.Psi, t.theta)
+
+
+def H_linear(t):
+    """H = tr(U^T X) + tr(V^T P) with generic U, V: its differential at a point is arbitrary."""
+    return t.tr(t.generic("U", "n", "r").T @ t.X) + t.tr(t.generic("V", "n", "r").T @ t.P)
+
+
+def upper(M):
+    """The upper triangle (diagonal included) of a symmetric r x r matrix, as scalars."""
+    m = M.shape[0]
+    return [M[i, j] for i in range(m) for j in range(i, m)]
+
+
+def scalar_constraints(s):
+    """(scalar): the r(r+1) constraint functions F_ij, G_ij (i <= j) as scalar functions."""
+    r = s.r
+    return [(lambda t, k=k, i=i, j=j: t.constraints.build(t)[k][i, j])
+            for k in range(2) for i in range(r) for j in range(i, r)]
+
+
+def unit(s, m, k, a, b):
+    """The m x k matrix unit E_ab."""
+    return s.mat([[s.q(1) if (i, j) == (a, b) else s.q(0) for j in range(k)] for i in range(m)])
+
+
+def sym_unit(s, a, b):
+    """E_ab + E_ba (a != b) or E_aa: a basis of the symmetric r x r matrices."""
+    E = unit(s, s.r, s.r, a, b)
+    return E if a == b else E + E.T
+
+
+def wedge_basis(s, m):
+    """The orthonormal basis E_i ∧ E_j (i < j) of so(m) for <,>."""
+    return [unit(s, m, m, i, j) - unit(s, m, m, j, i) for i in range(m) for j in range(i + 1, m)]
+
+
+def vertical_directions(s):
+    """Tangent vectors (0, δP) spanning the fibre T(T*_X V) = {X^T δP + δP^T X = 0}:
+    δP = X ω (ω in a basis of so(r)) and δP = (I - X X^T) E_ab (all matrix units)."""
+    n, r = s.n, s.r
+    zero = s.zeros(n, r, ("n", "r"))
+    dirs = [{"X": zero, "P": s.X @ w} for w in wedge_basis(s, r)]
+    horizontal = s.In - s.X @ s.X.T
+    dirs += [{"X": zero, "P": horizontal @ unit(s, n, r, a, b)} for a in range(n) for b in range(r)]
+    return dirs
+
+
+def lower_block(s, m):
+    """The projector diag(0, ..., 0, 1, ..., 1) onto the last m coordinates of R^n."""
+    n = s.n
+    return s.mat([[s.q(1) if i == j and i >= n - m else s.q(0) for j in range(n)] for i in range(n)])
+
+
+def chain_generators(n, r):
+    """(m, k) with tr(ξ_(m)^{2k}) a generator of 𝔄: n - r < m <= n, 2k <= m."""
+    return [(m, k) for m in range(n - r + 1, n + 1) for k in range(1, m // 2 + 1)]
+
+
+def chain_gradient(s, xi, m, k):
+    """∇f = Σ_{i<j} ∂f/∂ξ_ij E_i∧E_j for f(ξ) = tr(ξ_(m)^{2k}); ∂f/∂ξ_ij = 2k tr(ξ_(m)^{2k-1} (E_i∧E_j)_(m))."""
+    Pm = lower_block(s, m)
+    block_xi = Pm @ xi @ Pm
+    power = s.In
+    for _ in range(2 * k - 1):
+        power = power @ block_xi
+    grad = s.zeros(s.n, s.n, ("n", "n"))
+    for e in wedge_basis(s, s.n):
+        grad = grad + e * (s.tr(power @ Pm @ e @ Pm) * (2 * k))
+    return grad
+
+
+# -- the cotangent bundle as a constraint set -------------------------------------
+
+@claim("constraints-independent", paper=("cond_XP", "scalar"), kind="dim",
+       statement=r"\rank\frac{\partial(F_{ij},G_{ij})}{\partial(X,P)}=r(r+1)\ \text{on } T^*V_{n,r},\quad "
+                 r"\dim V_{n,r}=rn-\tfrac{r(r+1)}{2}")
+def constraints_are_independent(s):
+    """The r(r+1) scalar constraints (scalar) have independent differentials at every point of T*V, and X^T X = I_r cuts out V(n, r) of dimension rn − r(r+1)/2."""
+    n, r = s.n, s.r
+    J = s.jacobian(s.constraints.build)
+    JX = s.jacobian(lambda t: t.X.T @ t.X)
+    return {
+        "number of scalar constraints": Count(len(J), r * (r + 1), "F_ij, G_ij with i <= j"),
+        "rank d(F, G)": Rank(s.mat(J), r * (r + 1), generic=False,
+                             meaning="the constraints (scalar) are independent on T*V"),
+        "dim V": Rank(s.mat(JX), n * r - dim_V(n, r), generic=False,
+                      meaning="nr - dim V = rank of d(X^T X) on V"),
+    }
+
+
+# -- the Dirac bracket and the Lagrange-multiplier form -----------------------------
+
+@claim("dirac-bracket-multipliers", paper=("Dirac_bracket", "dot_XP"), kind="pb",
+       statement=r"\det\big(\{F_i,F_j\}_0\big)\ne0 \text{ on } T^*V_{n,r};\quad \dot f=\{f,H\}\iff "
+                 r"\dot X=\tfrac{\partial H}{\partial P}-X\Pi,\ \dot P=-\tfrac{\partial H}{\partial X}+X\Lambda+P\Pi,"
+                 r"\ \Lambda^T=\Lambda,\ \Pi^T=\Pi \text{ unique}")
+def dirac_flow_is_the_multiplier_form(s):
+    """The matrix {F_i, F_j}_0 is invertible on T*V, and the Dirac flow of any H is (dot_XP) with unique symmetric multipliers Λ, Π (both sides depend linearly on dH at the point, so H = tr(UᵀX) + tr(VᵀP) with generic U, V suffices)."""
+    n, r = s.n, s.r
+    dirac = s.dirac_flow(H_linear)
+    mult = s.multiplier_flow(H_linear)
+    Lam, Pi = mult["Lambda"], mult["Pi"]
+    HX, HP = s.gradient(H_linear)
+    zero = s.zeros(n, r, ("n", "r"))
+    # the linear system for (Λ, Π): derivatives of the constraints along the multiplier directions
+    columns = []
+    for a in range(r):
+        for b in range(a, r):
+            E = sym_unit(s, a, b)
+            dF = s.d(s.constraints.build, {"X": zero, "P": s.X @ E})
+            columns.append(upper(dF[0]) + upper(dF[1]))
+    for a in range(r):
+        for b in range(a, r):
+            E = sym_unit(s, a, b)
+            dF = s.d(s.constraints.build, {"X": -(s.X @ E), "P": s.P @ E})
+            columns.append(upper(dF[0]) + upper(dF[1]))
+    system = s.mat([list(row) for row in zip(*columns)])
+    return {
+        "{F_i, F_j}_0 invertible": Rank(s.mat(s.constraint_bracket_matrix()), r * (r + 1), generic=False,
+                                        meaning="the Dirac bracket is defined on T*V"),
+        "Lambda, Pi unique": Rank(system, r * (r + 1), generic=False,
+                                  meaning="the multipliers are determined by the constraints"),
+        "dX/dt": dirac.Xdot - (HP - s.X @ Pi),
+        "dP/dt": dirac.Pdot - (-HX + s.X @ Lam + s.P @ Pi),
+        "Lambda symmetric": Lam - Lam.T,
+        "Pi symmetric": Pi - Pi.T,
+        "constraints kept by the Dirac flow": s.d(s.constraints.build, dirac),
+    }
+
+
+# -- momentum maps -------------------------------------------------------------------
+
+@claim("left-momentum-map", paper=("Phi", "momentum_map", "zero", "left_action"), kind="pb",
+       statement=r"\{\Phi_\xi,F_i\}_0=0,\quad X_{\Phi_\xi}=X^0_{\Phi_\xi}=(\xi X,\xi P),\quad "
+                 r"\tfrac{d}{ds}\Phi(e^{s\xi}X,e^{s\xi}P)\big|_{s=0}=[\xi,\Phi],\quad \Phi=PX^T-XP^T")
+def phi_is_the_left_momentum_map(s):
+    """Φ = PXᵀ − XPᵀ is the momentum map of the left SO(n) action: {Φ_ξ, F_i}_0 = 0, the Dirac and canonical flows of Φ_ξ are both (ξX, ξP), and Φ is equivariant."""
+    left = {"X": s.xi @ s.X, "P": s.xi @ s.P}
+    canonical = s.canonical_flow(Phi_xi)
+    dirac = s.dirac_flow(Phi_xi)
+    return {
+        "{Phi_xi, F_i}_0": [s.canonical_bracket(Phi_xi, F) for F in scalar_constraints(s)],
+        "Dirac flow = canonical flow (X)": dirac.Xdot - canonical.Xdot,
+        "Dirac flow = canonical flow (P)": dirac.Pdot - canonical.Pdot,
+        "dX/dt = xi X": dirac.Xdot - left["X"],
+        "dP/dt = xi P": dirac.Pdot - left["P"],
+        "equivariance": s.d(lambda t: t.Phi, left) - comm(s.xi, s.Phi),
+        "matrix form": s.Phi - (s.P @ s.X.T - s.X @ s.P.T),
+    }
+
+
+@claim("right-momentum-map", paper=("momentum_right_map", "right_action"), kind="pb",
+       statement=r"\{\Psi_\eta,F_i\}_0\big|_{T^*V}=0,\quad X_{\Psi_\eta}=X^0_{\Psi_\eta}=(X\eta,P\eta),\quad "
+                 r"\tfrac{d}{ds}\Psi(Xe^{s\eta},Pe^{s\eta})\big|_{s=0}=[\Psi,\eta],\quad \Psi=X^TP-P^TX")
+def psi_is_the_right_momentum_map(s):
+    """Ψ = XᵀP − PᵀX is the momentum map of the right SO(r) action: {Ψ_η, F_i}_0 = 0 on T*V, the Dirac and canonical flows of Ψ_η are both (Xη, Pη), and Ψ(XQ, PQ) = QᵀΨQ infinitesimally."""
+    right = {"X": s.X @ s.eta, "P": s.P @ s.eta}
+    canonical = s.canonical_flow(Psi_eta)
+    dirac = s.dirac_flow(Psi_eta)
+    return {
+        "{Psi_eta, F_i}_0 on T*V": [s.canonical_bracket(Psi_eta, F) for F in scalar_constraints(s)],
+        "Dirac flow = canonical flow (X)": dirac.Xdot - canonical.Xdot,
+        "Dirac flow = canonical flow (P)": dirac.Pdot - canonical.Pdot,
+        "dX/dt = X eta": dirac.Xdot - right["X"],
+        "dP/dt = P eta": dirac.Pdot - right["P"],
+        "equivariance": s.d(lambda t: t.Psi, right) - comm(s.Psi, s.eta),
+    }
+
+
+@claim("momentum-maps-poisson", paper=("Phi", "momentum_map", "momentum_right_map"), kind="pb",
+       statement=r"\{\Phi_\xi,\Phi_\zeta\}=\langle\Phi,[\xi,\zeta]\rangle,\quad "
+                 r"\{\Psi_\eta,\Psi_\theta\}=-\langle\Psi,[\eta,\theta]\rangle,\quad \{\Phi_\xi,\Psi_\eta\}=0")
+def momentum_maps_are_poisson(s):
+    """For the Dirac bracket, Φ is Poisson for the (+) Lie–Poisson bracket on so(n), Ψ for the (−) bracket on so(r), and Φ, Ψ commute (linear functions h(μ) = <μ, ξ> suffice by the Leibniz rule)."""
+    return {
+        "{Phi_xi, Phi_zeta} (+)": s.bracket(Phi_xi, Phi_zeta) - s.killing(s.Phi, comm(s.xi, s.zeta)),
+        "{Psi_eta, Psi_theta} (-)": s.bracket(Psi_eta, Psi_theta) + s.killing(s.Psi, comm(s.eta, s.theta)),
+        "{Phi_xi, Psi_eta}": s.bracket(Phi_xi, Psi_eta),
+    }
+
+
+# -- SO(n)-invariant functions ----------------------------------------------------------
+
+@claim("invariants-differential-dimension", paper=("ddim", "SO(n-r)-action", "P-neutral"), kind="dim",
+       sizes=admissible(n_max=5),
+       statement=r"\ddim C^\infty(T^*V_{n,r})^{SO(n)}=\dim T^*_{X_0}V_{n,r}-\dim SO(n-r)\cdot P_0"
+                 r"=\begin{cases}\dim V_{n,r}-\dim SO(n-r),&n\le2r\\ "
+                 r"\dim V_{n,r}-\dim SO(n-r)+\dim SO(n-2r),&n>2r\end{cases}")
+def differential_dimension_of_invariants(s):
+    """The codimension of a generic SO(n−r)-orbit P₂ ↦ BP₂ in the fibre T*_{X₀}V equals the printed (ddim) in both cases n ≤ 2r and n > 2r."""
+    n, r = s.n, s.r
+    P2 = s.general_params("P2", n - r, r, ("n-r", "r"))
+    targets = [unit(s, n - r, r, a, c) for a in range(n - r) for c in range(r)]
+    # the matrix of b -> b P2, so(n-r) -> M_{n-r,r}, in the bases E_i∧E_j and E_ac (trace pairing)
+    orbit_map = s.mat([[s.tr(E.T @ b @ P2) for E in targets] for b in wedge_basis(s, n - r)])
+    fibre = dim_so(r) + (n - r) * r   # P1 skew, P2 arbitrary
+    return {
+        "dim of the fibre": Count(fibre, dim_V(n, r), "dim T*_{X0}V = dim V"),
+        "generic orbit dimension": Rank(orbit_map, fibre - ddim_printed(n, r), generic=True,
+                                        meaning="dim SO(n-r)·P0 = dim V - ddim"),
+    }
+
+
+@claim("invariants-so-n", paper=("SO(n)-inv",), kind="id",
+       statement=r"\tfrac{d}{ds}\Psi(e^{s\xi}X,e^{s\xi}P)=0,\quad \tfrac{d}{ds}(P^TP)(e^{s\xi}X,e^{s\xi}P)=0")
+def psi_and_gram_are_invariant(s):
+    """Ψ_ij and (PᵀP)_ij are SO(n)-invariant: their derivatives along the left action (ξX, ξP) vanish."""
+    left = {"X": s.xi @ s.X, "P": s.xi @ s.P}
+    return {
+        "d Psi": s.d(lambda t: t.Psi, left),
+        "d(P^T P)": s.d(lambda t: t.P.T @ t.P, left),
+    }
+
+
+@claim("invariants-complete", paper=("SO(n)-inv", "ddim"), kind="dim",
+       statement=r"\rank d\big(\Psi_{ij},(P^TP)_{ij}\big)\big|_{T^*_{X_0}V_{n,r}}=\ddim C^\infty(T^*V_{n,r})^{SO(n)}")
+def psi_and_gram_give_ddim_functions(s):
+    """Restricted to the fibre T*_{X₀}V, the functions Ψ_ij and (PᵀP)_ij have ddim independent differentials (any spanning set of the fibre directions gives the same rank)."""
+    n, r = s.n, s.r
+    columns = []
+    for v in vertical_directions(s):
+        dPsi = s.d(lambda t: t.Psi, v)
+        dG = s.d(lambda t: t.P.T @ t.P, v)
+        columns.append([dPsi[i, j] for i in range(r) for j in range(i + 1, r)] + upper(dG))
+    jac = s.mat([list(row) for row in zip(*columns)])
+    return {
+        "number of functions": Count(jac.shape[0], r * r, "Psi_ij (i < j) and (P^T P)_ij (i <= j)"),
+        "rank on the fibre": Rank(jac, ddim_printed(n, r), generic=True,
+                                  meaning="independent SO(n)-invariant functions"),
+    }
+
+
+@claim("adjoint-orbit-dimension", paper=("2l",), kind="dim",
+       statement=r"\dim\mathcal O_{\Phi(X_0,P_0)}=2l=\begin{cases}\tfrac{n(n-1)}2-\left[\tfrac n2\right],&n\le2r+1\\ "
+                 r"2r(n-r-1),&n>2r+1\end{cases}")
+def generic_adjoint_orbit_dimension(s):
+    """A generic adjoint orbit through Φ(T*V) = Ad Φ(T*_{X₀}V) has the dimension 2l of Lemma 2l, and it is regular exactly when n ≤ 2r + 1."""
+    n, r = s.n, s.r
+    basis = wedge_basis(s, n)
+    # the matrix of ad_Φ in the orthonormal basis E_i∧E_j: <e_l, [Φ, e_k]>
+    ad_Phi = s.mat([[s.killing(e_l, comm(s.Phi, e_k)) for e_k in basis] for e_l in basis])
+    regular = n * (n - 1) // 2 - n // 2
+    return {
+        "rank ad_Phi": Rank(ad_Phi, two_l_printed(n, r), generic=True, meaning="2l"),
+        "regular iff n <= 2r+1": Count(int(two_l_printed(n, r) == regular), int(n <= 2 * r + 1),
+                                       "2l equals the regular orbit dimension"),
+    }
+
+
+@claim("chain-algebra-commutative", paper=("com", "hat", "hat2", "iso"), kind="pb",
+       sizes=admissible(n_max=5, n_min=2, condition="n >= 2 (so(1) = 0 has no invariants)"),
+       statement=r"\{\tr\xi_{(m)}^{2k},\tr\xi_{(m')}^{2k'}\}_{\mathfrak v}(\xi)="
+                 r"-\langle\xi,[\nabla\tr\xi_{(m)}^{2k},\nabla\tr\xi_{(m')}^{2k'}]\rangle=0,\quad "
+                 r"\xi\in\mathfrak v,\ n-r<m,m'\le n")
+def chain_algebra_commutes(s):
+    """The generators tr ξ_(m)^{2k} (n − r < m ≤ n) of 𝔄 = 𝔄₁ + … + 𝔄_r pairwise commute for {f, g}_𝔳(ξ) = −<ξ, [∇f, ∇g]> at a generic ξ ∈ 𝔳 (gradients taken on so(n))."""
+    n, r = s.n, s.r
+    xi = s.xi - lower_block(s, n - r) @ s.xi @ lower_block(s, n - r)   # zero lower-right block: ξ ∈ 𝔳
+    gens = chain_generators(n, r)
+    grads = {g: chain_gradient(s, xi, *g) for g in gens}
+    checks = {f"{{tr xi_({m})^{2 * k}, tr xi_({m2})^{2 * k2}}}":
+              -s.killing(xi, comm(grads[(m, k)], grads[(m2, k2)]))
+              for (m, k), (m2, k2) in combinations(gens, 2)}
+    for m, k in gens:   # each generator is an invariant of so(m): [∇f, ξ_(m)] = 0
+        checks[f"tr xi_({m})^{2 * k} is so({m})-invariant"] = comm(
+            grads[(m, k)], lower_block(s, m) @ xi @ lower_block(s, m))
+    return checks

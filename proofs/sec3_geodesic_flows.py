@@ -59,3 +59,306 @@ def euclidean_flow_keeps_the_cotangent_bundle(s):
         "d(X^T X)/dt": s.d(lambda t: t.X.T @ t.X, printed),
         "d(X^T P + P^T X)/dt": s.d(lambda t: t.X.T @ t.P + t.P.T @ t.X, printed),
     }
+
+
+# -- submersion metrics --------------------------------------------------------
+
+@claim("submersion-hamiltonian", paper=("submersion_metric",), kind="id",
+       statement=r"\tfrac12\langle\mathbb A\Phi,\Phi\rangle=-\tfrac14\tr\big(\mathbb A(PX^T-XP^T)(PX^T-XP^T)\big)")
+def submersion_hamiltonian_trace_form(s):
+    """For every symmetric operator 𝔸 on so(n), H_𝔸 = ½⟨𝔸Φ, Φ⟩ equals the printed trace form."""
+    AA = s.sym_operator("AA")
+    Phi = s.P @ s.X.T - s.X @ s.P.T
+    return {"H_AA": H_submersion(s) - (-(s.tr(AA(Phi) @ Phi)) / 4)}
+
+
+@claim("submersion-flow", paper=("dot_XP2",), kind="id",
+       statement=r"\dot X=\mathbb A(\Phi)X,\quad \dot P=\mathbb A(\Phi)P,\quad \Lambda=\Pi=0")
+def submersion_geodesic_flow(s):
+    """The Dirac flow of H_𝔸 is Ẋ = 𝔸(Φ)X, Ṗ = 𝔸(Φ)P, and its Lagrange multipliers Λ, Π vanish."""
+    AA = s.sym_operator("AA")
+    flow = s.dirac_flow(H_submersion)
+    mult = s.multiplier_flow(H_submersion)
+    return {
+        "dX/dt": flow.Xdot - AA(s.Phi) @ s.X,
+        "dP/dt": flow.Pdot - AA(s.Phi) @ s.P,
+        "Lambda": mult["Lambda"],
+        "Pi": mult["Pi"],
+    }
+
+
+# -- the normal metric ---------------------------------------------------------
+
+@claim("normal-hamiltonian", paper=("normal_metric",), kind="id",
+       statement=r"H_0=\tfrac12\langle\Phi,\Phi\rangle=\tfrac12\tr(P^TP)-\tfrac12\tr\big((X^TP)^2\big)")
+def normal_hamiltonian_trace_form(s):
+    """On T*V, ½⟨Φ, Φ⟩ = ½tr(PᵀP) − ½tr((XᵀP)²)."""
+    XtP = s.X.T @ s.P
+    return {"H_0": H_normal(s) - (s.tr(s.P.T @ s.P) / 2 - s.tr(XtP @ XtP) / 2)}
+
+
+@claim("normal-flow", paper=("dot_X3", "dot_P3"), kind="id",
+       statement=r"\dot X=\Phi X=P-XP^TX,\quad \dot P=\Phi P=-XP^TP+PX^TP")
+def normal_geodesic_flow(s):
+    """The Dirac flow of H_0 is Ẋ = ΦX = P − XPᵀX, Ṗ = ΦP = −XPᵀP + PXᵀP."""
+    flow = s.dirac_flow(H_normal)
+    X, P, Phi = s.X, s.P, s.Phi
+    return {
+        "dX/dt = Phi X": flow.Xdot - Phi @ X,
+        "Phi X = P - X P^T X": Phi @ X - (P - X @ P.T @ X),
+        "dP/dt = Phi P": flow.Pdot - Phi @ P,
+        "Phi P = -X P^T P + P X^T P": Phi @ P - (-X @ P.T @ P + P @ X.T @ P),
+    }
+
+
+def _normal_velocity(s):
+    return s.P - s.X @ s.P.T @ s.X
+
+
+@claim("normal-legendre-inverse", paper=("P(dot_X)",), kind="id",
+       statement=r"\dot X=P-XP^TX\ \Longrightarrow\ P=\dot X-\tfrac12XX^T\dot X")
+def normal_metric_inverse_legendre(s):
+    """On T*V the velocity Ẋ = P − XPᵀX of the normal metric determines P = Ẋ − ½XXᵀẊ."""
+    Xdot = _normal_velocity(s)
+    return {"P": s.P - (Xdot - s.X @ s.X.T @ Xdot / 2)}
+
+
+def _Phi0(s, V):
+    """(Phi_0) with V in the role of the velocity."""
+    X = s.X
+    return V @ X.T - X @ V.T - X @ (X.T @ V - V.T @ X) @ X.T / 2
+
+
+@claim("normal-momentum-of-velocity", paper=("Phi_0",), kind="id",
+       statement=r"\Phi_0(X,\dot X)=\dot XX^T-X\dot X^T-\tfrac12X\big[X^T\dot X-\dot X^TX\big]X^T=\Phi\big(X,P(X,\dot X)\big)")
+def momentum_as_function_of_velocity(s):
+    """For every tangent vector Ẋ of V, Φ(X, Ẋ − ½XXᵀẊ) equals the printed Φ₀(X, Ẋ)."""
+    V = s.P  # a generic tangent vector: X^T V + V^T X = 0 is the same constraint
+    P_of_V = V - s.X @ s.X.T @ V / 2
+    return {"Phi_0": _Phi0(s, V) - (P_of_V @ s.X.T - s.X @ P_of_V.T)}
+
+
+def L_normal(s):
+    """(normal_metric_lagrangian) L_0 = ½⟨Φ₀, Φ₀⟩ with the slot P holding the velocity."""
+    Phi0 = _Phi0(s, s.P)
+    return s.killing(Phi0, Phi0) / 2
+
+
+@claim("normal-lagrangian", paper=("normal_metric_lagrangian", "P(dot_X)"), kind="id",
+       statement=r"L_0=\tfrac12\langle\Phi_0,\Phi_0\rangle:\quad \frac{\partial L_0}{\partial\dot X}=\dot X-\tfrac12XX^T\dot X,"
+                 r"\quad L_0(X,\dot X)=H_0\big(X,P(X,\dot X)\big)")
+def normal_lagrangian_legendre(s):
+    """The Legendre transform of L₀ = ½⟨Φ₀, Φ₀⟩ on TV is P = Ẋ − ½XXᵀẊ, and L₀ equals H₀ there."""
+    V = s.P
+    P_of_V = V - s.X @ s.X.T @ V / 2
+    dL_dV = s.gradient(L_normal)[1]
+    XtP = s.X.T @ P_of_V
+    H0_at = s.tr(P_of_V.T @ P_of_V) / 2 - s.tr(XtP @ XtP) / 2
+    return {"dL/dXdot": dL_dV - P_of_V, "L_0 = H_0": L_normal(s) - H0_at}
+
+
+# -- Jensen metrics ------------------------------------------------------------
+
+@claim("jensen-hamiltonian", paper=("EM",), kind="id",
+       statement=r"H_\kappa=\tfrac12\langle\Phi,\Phi\rangle+\tfrac{\kappa}{2}\langle\Psi,\Psi\rangle"
+                 r"=\tfrac12\tr(P^TP)-\big(\tfrac12+\kappa\big)\tr\big((X^TP)^2\big)")
+def jensen_hamiltonian_trace_form(s):
+    """On T*V, ½⟨Φ,Φ⟩ + κ/2⟨Ψ,Ψ⟩ = ½tr(PᵀP) − (½+κ)tr((XᵀP)²); κ = 0 is the normal and κ = −½ the Euclidean metric."""
+    XtP = s.X.T @ s.P
+    printed = s.tr(s.P.T @ s.P) / 2 - (s.q(1, 2) + s.kappa) * s.tr(XtP @ XtP)
+    at = lambda k: s.killing(s.Phi, s.Phi) / 2 + k * s.killing(s.Psi, s.Psi) / 2
+    return {
+        "H_kappa": H_jensen(s) - printed,
+        "kappa = 0": at(s.const(0)) - H_normal(s),
+        "kappa = -1/2": at(s.q(-1, 2)) - H_euclidean(s),
+    }
+
+
+@claim("jensen-invariance", paper=("EM",), kind="id",
+       statement=r"H_\kappa(gXQ^{-1},gPQ^{-1})=H_\kappa(X,P),\quad g\in SO(n),\ Q\in SO(r)")
+def jensen_hamiltonian_is_invariant(s):
+    """H_κ is invariant under the left SO(n) and the right SO(r) actions (its derivatives along both vanish)."""
+    left = {"X": s.xi @ s.X, "P": s.xi @ s.P}
+    right = {"X": s.X @ s.eta, "P": s.P @ s.eta}
+    return {"left so(n)": s.d(H_jensen, left), "right so(r)": s.d(H_jensen, right)}
+
+
+def _blocks(r: int) -> list[tuple[int, int]]:
+    """A partition of r into consecutive blocks of sizes 2, 2, ..., (2 or 3)."""
+    if r <= 3:
+        return [(0, r)]
+    out, start = [], 0
+    while r - start > 3:
+        out.append((start, start + 2))
+        start += 2
+    out.append((start, r))
+    return out
+
+
+def _block_part(s, M, lo, hi):
+    """The orthogonal projection of M in so(r) to so(r_i) (the diagonal block lo..hi)."""
+    B = s.zeros(s.r, s.r, ("r", "r"))
+    B.a[lo:hi, lo:hi] = M[lo:hi, lo:hi].a
+    return B
+
+
+def H_K(s):
+    """(EM2), (EM3): H_K = ½⟨Φ,Φ⟩ + K(Ψ), K(ξ) = κ₀/2⟨ξ,ξ⟩ + Σ κᵢ/2⟨ξᵢ,ξᵢ⟩."""
+    K = s.scalar("kappa_0") * s.killing(s.Psi, s.Psi) / 2
+    for i, (lo, hi) in enumerate(_blocks(s.r)):
+        Pi = _block_part(s, s.Psi, lo, hi)
+        K = K + s.scalar(f"kappa_{i + 1}") * s.killing(Pi, Pi) / 2
+    return s.killing(s.Phi, s.Phi) / 2 + K
+
+
+@claim("block-jensen-hamiltonian", paper=("EM2", "EM3"), kind="id",
+       statement=r"H_K=\tfrac12\langle\Phi,\Phi\rangle+K(\Psi),\quad "
+                 r"K(\xi)=\tfrac{\kappa_0}{2}\langle\xi,\xi\rangle+\sum_i\tfrac{\kappa_i}{2}\langle\xi_i,\xi_i\rangle")
+def block_jensen_hamiltonian(s):
+    """H_K is SO(n)-invariant and SO(r₁)×…×SO(r_k)-invariant, conserves Φ, and is H_κ when all κᵢ = 0."""
+    left = {"X": s.xi @ s.X, "P": s.xi @ s.P}
+    eta_b = s.zeros(s.r, s.r, ("r", "r"))
+    for lo, hi in _blocks(s.r):
+        eta_b = eta_b + _block_part(s, s.eta, lo, hi)
+    right = {"X": s.X @ eta_b, "P": s.P @ eta_b}
+    flow = s.dirac_flow(H_K)
+    plain = s.killing(s.Phi, s.Phi) / 2 + s.scalar("kappa_0") * s.killing(s.Psi, s.Psi) / 2
+    K_parts = H_K(s) - plain
+    return {
+        "left so(n)": s.d(H_K, left),
+        "right block subgroup": s.d(H_K, right),
+        "Phi conserved": s.d(lambda t: t.Phi, flow),
+        "block terms": K_parts - sum_block_terms(s),
+    }
+
+
+def sum_block_terms(s):
+    acc = s.const(0)
+    for i, (lo, hi) in enumerate(_blocks(s.r)):
+        Pi = _block_part(s, s.Psi, lo, hi)
+        acc = acc + s.scalar(f"kappa_{i + 1}") * s.killing(Pi, Pi) / 2
+    return acc
+
+
+# -- SO(r)-invariant metrics L_A ----------------------------------------------
+
+@claim("metric-legendre", paper=("leg2", "cond_XP2"), kind="id", exact_max_n=3,
+       statement=r"P=\frac{\partial L_A}{\partial\dot X}=A\dot X,\qquad X^TA^{-1}P+P^TA^{-1}X=0")
+def metric_legendre_transform(s):
+    """The Legendre transform of L_A = ½tr(ẊᵀAẊ) is P = AẊ, and it maps TV onto (cond_XP2)."""
+    V = s.P  # a generic tangent vector of V at X
+    L_A = lambda t: t.tr(t.P.T @ t.A @ t.P) / 2
+    P = s.A @ V
+    return {
+        "dL_A/dXdot": s.gradient(L_A)[1] - P,
+        "cond_XP2": s.X.T @ s.Ainv @ P + P.T @ s.Ainv @ s.X,
+    }
+
+
+@claim("metric-flow", paper=("A_XP",), kind="id", realization="metric", exact_max_n=2,
+       statement=r"\dot X=A^{-1}P,\ \dot P=X\Lambda,\quad \Lambda X^TA^{-1}X+X^TA^{-1}X\Lambda+2P^TA^{-2}P=0")
+def metric_geodesic_flow(s):
+    """The Dirac flow of H_A = ½tr(PᵀA⁻¹P) on (cond_XP2) is Ẋ = A⁻¹P, Ṗ = XΛ with Λ symmetric solving the printed equation."""
+    flow = s.dirac_flow(H_metric_A)
+    Lam = s.X.T @ flow.Pdot
+    M = s.X.T @ s.Ainv @ s.X
+    return {
+        "dX/dt": flow.Xdot - s.Ainv @ s.P,
+        "dP/dt = X Lambda": flow.Pdot - s.X @ Lam,
+        "Lambda symmetric": Lam - Lam.T,
+        "Lambda equation": Lam @ M + M @ Lam + 2 * (s.P.T @ s.Ainv @ s.Ainv @ s.P),
+    }
+
+
+# -- SO(n) x SO(r)-invariant metrics -------------------------------------------
+
+def _fibre_action_matrix(s):
+    """Linear conditions T^T G + G T = 0 on a symmetric G: the quadratic forms on T*_{X0}V
+    invariant under P1 -> Q P1 Q^{-1}, P2 -> B P2 Q^{-1} (Q in SO(r), B in SO(n-r))."""
+    n, r = s.n, s.r
+    coords = [("P1", i, j) for i in range(r) for j in range(i + 1, r)] + \
+             [("P2", i, j) for i in range(n - r) for j in range(r)]
+    index = {c: k for k, c in enumerate(coords)}
+    N = len(coords)
+
+    def action(eta, beta):
+        """The matrix T of the infinitesimal action on the fibre coordinates."""
+        T = [[0] * N for _ in range(N)]
+        for (blk, i, j), k in index.items():
+            # image of the unit vector of coordinate k
+            if blk == "P1":
+                P1 = [[0] * r for _ in range(r)]
+                P1[i][j], P1[j][i] = 1, -1
+                img1 = [[sum(eta[a][c] * P1[c][b] - P1[a][c] * eta[c][b] for c in range(r))
+                         for b in range(r)] for a in range(r)]
+                for a in range(r):
+                    for b in range(a + 1, r):
+                        T[index[("P1", a, b)]][k] += img1[a][b]
+            else:
+                img2 = [[0] * r for _ in range(n - r)]
+                for a in range(n - r):
+                    img2[a][j] += beta[a][i]
+                for b in range(r):
+                    img2[i][b] -= eta[j][b]
+                for a in range(n - r):
+                    for b in range(r):
+                        T[index[("P2", a, b)]][k] += img2[a][b]
+        return T
+
+    def skew_basis(m):
+        out = []
+        for i in range(m):
+            for j in range(i + 1, m):
+                E = [[0] * m for _ in range(m)]
+                E[i][j], E[j][i] = 1, -1
+                out.append(E)
+        return out
+
+    gens = [action(E, [[0] * (n - r) for _ in range(n - r)]) for E in skew_basis(r)]
+    gens += [action([[0] * r for _ in range(r)], B) for B in skew_basis(n - r)]
+    unknowns = [(i, j) for i in range(N) for j in range(i, N)]
+    rows = []
+    for T in gens:
+        for k in range(N):
+            for l in range(k, N):
+                row = []
+                for (i, j) in unknowns:
+                    # (T^T G + G T)_{kl} as a linear form in G_ij = G_ji
+                    c = 0
+                    for (a, b) in ({(i, j), (j, i)}):
+                        c += T[a][k] * (1 if b == l else 0) + (1 if a == k else 0) * T[b][l]
+                    row.append(c)
+                rows.append(row)
+    return rows, len(unknowns), N
+
+
+def _extra_invariants(n: int, r: int) -> int:
+    """Quadratic invariants beyond tr(P^T P), tr((X^T P)^2) in the exceptional sizes:
+    the Pfaffian of P1 (r = 4), det P2 (n - r = r = 2), and <axial vector of P1, P2> (n - r = 1, r = 3)."""
+    return int(r == 4) + int(n - r == 2 and r == 2) + int(n - r == 1 and r == 3)
+
+
+@claim("invariant-metrics", paper=("so(n)+so(r)",), kind="dim", sizes=admissible(5, n_min=2),
+       fails_at=lambda n, r: _extra_invariants(n, r) > 0,
+       erratum="""The proposition fails when r = 4 (the Pfaffian of P1 is an invariant quadratic form),
+       when n - r = r = 2 (det P2 is invariant) and when n - r = 1, r = 3 (the pairing of the axial
+       vector of P1 with P2 is invariant); there the invariant metrics form a larger family.""",
+       statement=r"\dim\{\text{quadratic forms on }T^*_{X_0}V_{n,r}\text{ invariant under }SO(r)\times SO(n-r)\}"
+                 r"=\dim\Span\{\tr(P^TP),\tr((X^TP)^2)\}")
+def invariant_quadratic_forms(s):
+    """The SO(n)×SO(r)-invariant quadratic forms on T*_{X₀}V are spanned by tr(PᵀP) and tr((XᵀP)²)."""
+    rows, unknowns, N = _fibre_action_matrix(s)
+    span = 1 if s.r in (1, s.n) else 2
+    M = s.mat([[s.const(c) for c in row] for row in rows]) if rows else s.zeros(1, unknowns)
+    return {"invariant forms": Rank(M, unknowns - span, generic=False,
+                                    meaning=f"invariance conditions on the {unknowns} coefficients of a "
+                                            f"quadratic form on the {N}-dimensional fibre; kernel = invariant forms")}
+
+
+@invariant_quadratic_forms.claim.correction(
+    "count also the Pfaffian of P1 (r = 4), det P2 (n - r = r = 2) and <axial(P1), P2> (n - r = 1, r = 3)")
+def invariant_quadratic_forms_corrected(s):
+    rows, unknowns, N = _fibre_action_matrix(s)
+    span = (1 if s.r in (1, s.n) else 2) + _extra_invariants(s.n, s.r)
+    M = s.mat([[s.const(c) for c in row] for row in rows])
+    return {"invariant forms": Rank(M, unknowns - span, generic=False)}

@@ -124,6 +124,14 @@ class Claim:
     exact_max_n: int = 5
     corrections: list[Correction] = field(default_factory=list)
     source: str = ""
+    #: sizes at which the printed statement is known to fail (a documented erratum)
+    fails_at: Callable[[int, int], bool] | None = None
+    erratum: str = ""
+
+    def expects_failure(self, n: int | None, r: int | None) -> bool:
+        if self.expect == "fails":
+            return True
+        return self.fails_at is not None and n is not None and bool(self.fails_at(n, r))
 
     def __post_init__(self) -> None:
         if self.kind not in KINDS:
@@ -180,7 +188,8 @@ _ACTIVE: list[Registry] = [Registry()]
 
 def claim(id: str, *, paper: str | Iterable[str], kind: str, section: str | None = None,
           sizes: SizeSpec | None = None, statement: str = "", realization: str = "standard",
-          expect: str = "holds", exact_max_n: int = 5):
+          expect: str = "holds", exact_max_n: int = 5,
+          fails_at: Callable[[int, int], bool] | None = None, erratum: str = ""):
     """Register a claim.  The function's docstring (one sentence) goes into the report."""
     def deco(fn):
         labels = (paper,) if isinstance(paper, str) else tuple(paper)
@@ -191,7 +200,8 @@ def claim(id: str, *, paper: str | Iterable[str], kind: str, section: str | None
         c = Claim(id=id, paper=labels, kind=kind, section=str(sec), func=fn,
                   sizes=sizes if sizes is not None else admissible(), statement=statement.strip(),
                   title=(inspect.getdoc(fn) or "").strip(), realization=realization,
-                  expect=expect, exact_max_n=exact_max_n, source=fn.__module__)
+                  expect=expect, exact_max_n=exact_max_n, source=fn.__module__,
+                  fails_at=fails_at, erratum=erratum.strip())
         _ACTIVE[-1].add(c)
         fn.claim = c
         return fn

@@ -173,12 +173,13 @@ class Mat:
             self.tracker.touch(what)
 
     def __getitem__(self, idx):
+        """Entries or sub-blocks (reading entries of an R^n-indexed matrix is recorded)."""
         self._touch("matrix entries")
         out = self.a[idx]
         if isinstance(out, np.ndarray):
             if out.ndim == 1:
                 out = out.reshape(1, -1) if isinstance(idx, tuple) and isinstance(idx[0], int) else out.reshape(-1, 1)
-            return self._new(out.copy(), ("?", "?"))
+            return self._new(out.copy(), self.tags)
         return out
 
     def entries(self) -> list[Any]:

@@ -71,7 +71,7 @@ def run_one(claim: Claim, size: Size | None, method: str, seed: int, func: Calla
         res = METHOD_RUNNERS[method](claim, size.n, size.r, seed, func)
     res.variant = variant
     res.expected = res.verdict in ("proved", "undecided") if res.method == "free" else \
-        expected_verdict(claim, res.verdict, variant)
+        expected_verdict(claim, res.verdict, variant, res.n, res.r)
     res.rerun = rerun_command(res)
     return res
 

@@ -1,0 +1,43 @@
+# stiefelsym: the two commands a new user needs are `make verify` and `make test`.
+PYTHON ?= python3
+VENV   := .venv
+BIN    := $(VENV)/bin
+STAMP  := $(VENV)/.installed
+
+.PHONY: venv verify verify-all test bench report clean
+
+## venv: create .venv (if missing) and install stiefelsym with its test extras
+venv: $(STAMP)
+
+$(STAMP): pyproject.toml
+	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
+	$(BIN)/python -m pip install --quiet -e '.[test]'
+	touch $(STAMP)
+
+## verify: verify the whole catalog (default methods) and regenerate reports/
+verify: venv
+	$(BIN)/stiefelsym verify
+
+## verify-all: also the slow methods (symbolic exact, modular, dimension-free) and slow tests
+verify-all: venv
+	$(BIN)/stiefelsym verify --method auto --method exact --method modular --method free \
+		--report-dir reports/all
+	$(BIN)/python -m pytest -q -m slow || test $$? -eq 5
+
+## test: the test suite without the tests marked slow (pytest exit 5, "no tests", is not a failure)
+test: venv
+	$(BIN)/python -m pytest -q || test $$? -eq 5
+
+## bench: timings of the verification methods
+bench: venv
+	$(BIN)/python bench/bench.py
+
+## report: re-render reports/verification.{md,tex} from reports/results.json
+report: venv
+	$(BIN)/stiefelsym report --results reports/results.json
+
+## clean: remove build artefacts and caches (not .venv, not reports/)
+clean:
+	rm -rf build *.egg-info .pytest_cache
+	find . -name __pycache__ -type d -not -path './$(VENV)/*' -prune -exec rm -rf {} +
+	rm -f reports/*.aux reports/*.log reports/*.out reports/*.toc reports/*.pdf

@@ -1,0 +1,19 @@
+"""Dimension-free backend: identities on T*V_{n,r} proved for every n and r at once.
+
+Matrices become letters of a free algebra with involution (:mod:`.algebra`),
+the constraints become a confluent rewriting system (:mod:`.rewriting`), trace
+forms are cyclic words (:mod:`.traces`), and :class:`FreeScene` runs claim code
+written for the coordinate scene (:mod:`.scene`).
+"""
+from .algebra import Letter, NCPoly, letter_pair, skew_letter, substitute, symmetric_letter, trace
+from .rewriting import (CompletionResult, CriticalPair, Order, Reduction, RewritingError, RewritingSystem,
+                        Rule, complete, critical_pairs, is_confluent)
+from .scene import FreeField, FreeScene, FreeSolveError, NeedsCoordinates, standard_system
+from .traces import gradient
+
+__all__ = [
+    "Letter", "NCPoly", "letter_pair", "skew_letter", "symmetric_letter", "substitute", "trace",
+    "CompletionResult", "CriticalPair", "Order", "Reduction", "RewritingError", "RewritingSystem", "Rule",
+    "complete", "critical_pairs", "is_confluent",
+    "FreeField", "FreeScene", "FreeSolveError", "NeedsCoordinates", "standard_system", "gradient",
+]

@@ -1,0 +1,535 @@
+"""Typed words and noncommutative polynomials with involution.
+
+A :class:`Letter` is a matrix symbol with a row and a column index type
+(``"n"`` or ``"r"``) and an adjoint partner (the transpose): X ↔ Xᵀ, A* = A,
+ξ* = −ξ.  A word is a tuple of letters that compose (the column type of each
+letter is the row type of the next).  An :class:`NCPoly` is a linear
+combination of terms ``(traces, word)`` with symengine coefficients, all of one
+type ``(row, col)``; ``traces`` is a sorted tuple of cyclic words, a product of
+traces that multiplies the word (traces are central).  The empty word of type
+``(t, t)`` is the identity I_t; polynomials of type ``("1", "1")`` are scalars
+(trace forms).  Nothing here knows the constraints: normal forms live in
+:mod:`stiefelsym.free.rewriting`.
+"""
+from __future__ import annotations
+
+from fractions import Fraction
+from typing import Any, Iterable, Mapping
+
+import symengine as se
+
+from ..fields import Dual
+
+#: index type of scalars
+SCALAR = "1"
+#: dimension symbols: tr(I_n) = n, tr(I_r) = r
+DIMENSIONS = {"n": se.Symbol("n"), "r": se.Symbol("r"), SCALAR: se.Integer(1)}
+
+Coef = Any  # a symengine expression
+
+
+class Letter(str):
+    """A matrix letter: name (its identity), index types, adjoint partner and sign, LaTeX."""
+
+    row: str
+    col: str
+    latex: str
+    adjoint: "Letter"
+    adjoint_sign: int
+    sort_key: tuple
+
+    def __new__(cls, name: str, row: str, col: str, latex: str | None = None) -> "Letter":
+        obj = super().__new__(cls, name)
+        obj.row, obj.col = row, col
+        obj.latex = latex if latex is not None else name
+        obj.adjoint, obj.adjoint_sign = obj, 1
+        obj.sort_key = (1, name)
+        return obj
+
+
+def letter_pair(name: str, adjoint_name: str, row: str, col: str,
+                latex: str | None = None, adjoint_latex: str | None = None) -> tuple[Letter, Letter]:
+    """A letter L and its transpose L* (types swapped)."""
+    L = Letter(name, row, col, latex)
+    Lt = Letter(adjoint_name, col, row, adjoint_latex if adjoint_latex is not None else f"{L.latex}^{{T}}")
+    L.adjoint, Lt.adjoint = Lt, L
+    Lt.sort_key = (0, adjoint_name)  # representatives of traces start with a transpose: tr(XᵀAX)
+    return L, Lt
+
+
+def symmetric_letter(name: str, t: str, latex: str | None = None) -> Letter:
+    """A self-adjoint letter (symmetric t×t matrix)."""
+    return Letter(name, t, t, latex)
+
+
+def skew_letter(name: str, t: str, latex: str | None = None) -> Letter:
+    """An anti-self-adjoint letter (skew-symmetric t×t matrix): L* = −L."""
+    L = Letter(name, t, t, latex)
+    L.adjoint_sign = -1
+    return L
+
+
+Word = tuple  # tuple[Letter, ...]
+Traces = tuple  # sorted tuple of cyclic words
+Key = tuple  # (Traces, Word)
+
+
+def check_word(w: Word) -> None:
+    """Raise TypeError unless consecutive letters compose."""
+    for a, b in zip(w, w[1:]):
+        if a.col != b.row:
+            raise TypeError(f"ill-typed word {word_str(w)}: {a} is ·×{a.col}, {b} is {b.row}×·")
+
+
+def star_word(w: Word) -> tuple[int, Word]:
+    """w* = sign · (reversed word of adjoint letters)."""
+    sign = 1
+    out = []
+    for L in reversed(w):
+        sign *= L.adjoint_sign
+        out.append(L.adjoint)
+    return sign, tuple(out)
+
+
+def word_key(w: Word) -> tuple:
+    """A total order on words used for canonical representatives (length, then letters,
+    transposed letters first)."""
+    return (len(w), tuple(L.sort_key for L in w))
+
+
+def min_rotation(c: Word) -> Word:
+    """The least rotation of a cyclic word (in the order of :func:`word_key`)."""
+    keys = tuple(L.sort_key for L in c)
+    best = min(range(len(c)), key=lambda k: keys[k:] + keys[:k])
+    return c[best:] + c[:best]
+
+
+def cycle_rep(w: Word) -> tuple[int, Word]:
+    """Canonical (sign, representative) of tr(w) under rotation and tr(w*) = tr(w).
+
+    sign 0 means tr(w) = −tr(w), i.e. the trace vanishes."""
+    c = min_rotation(w)
+    s, ws = star_word(w)
+    cs = min_rotation(ws)
+    if cs == c:
+        return (1 if s == 1 else 0), c
+    return (1, c) if word_key(c) < word_key(cs) else (s, cs)
+
+
+def word_str(w: Word) -> str:
+    return "*".join(w) if w else "I"
+
+
+def as_coef(c: Any) -> Coef | None:
+    """A commuting scalar as a symengine number/expression, or None if c is not one."""
+    if isinstance(c, se.Basic):
+        return c
+    if isinstance(c, bool):
+        return None
+    if isinstance(c, int):
+        return se.Integer(c)
+    if isinstance(c, Fraction):
+        return se.Integer(c.numerator) / se.Integer(c.denominator)
+    return None
+
+
+def _is_matrix(o: Any) -> bool:
+    return getattr(o, "__array_priority__", 0) >= 1000
+
+
+def merge_traces(a: Traces, b: Traces) -> Traces:
+    if not a:
+        return b
+    if not b:
+        return a
+    return tuple(sorted(a + b, key=word_key))
+
+
+class NCPoly:
+    """A linear combination of (traces, word) terms of one type (row, col)."""
+
+    __slots__ = ("terms", "row", "col")
+
+    def __init__(self, terms: Mapping[Key, Coef], row: str, col: str) -> None:
+        self.terms = dict(terms)
+        self.row, self.col = row, col
+
+    # -- construction -------------------------------------------------------
+    @classmethod
+    def zero(cls, row: str, col: str) -> "NCPoly":
+        return cls({}, row, col)
+
+    @classmethod
+    def identity(cls, t: str) -> "NCPoly":
+        """I_t (the empty word of type (t, t)); t = "1" gives the scalar 1."""
+        return cls({((), ()): se.Integer(1)}, t, t)
+
+    @classmethod
+    def scalar(cls, c: Any) -> "NCPoly":
+        k = as_coef(c)
+        if k is None:
+            raise TypeError(f"not a scalar: {c!r}")
+        return cls({((), ()): k} if k != 0 else {}, SCALAR, SCALAR)
+
+    @classmethod
+    def word(cls, w: Iterable[Letter], row: str | None = None, coef: Any = 1) -> "NCPoly":
+        """The monomial coef·w; ``row`` types the empty word."""
+        w = tuple(w)
+        check_word(w)
+        if w:
+            row, col = w[0].row, w[-1].col
+        elif row is None:
+            raise TypeError("the empty word needs a type")
+        else:
+            col = row
+        k = as_coef(coef)
+        return cls({((), w): k} if k != 0 else {}, row, col)
+
+    # -- queries ------------------------------------------------------------
+    @property
+    def shape(self) -> tuple[str, str]:
+        return (self.row, self.col)
+
+    @property
+    def is_scalar(self) -> bool:
+        return self.row == SCALAR and self.col == SCALAR
+
+    def is_zero_raw(self) -> bool:
+        """No terms (after coefficient expansion); no constraints used."""
+        return all(se.expand(c) == 0 for c in self.terms.values())
+
+    def letters(self) -> set[Letter]:
+        out: set[Letter] = set()
+        for tm, w in self.terms:
+            out.update(w)
+            for c in tm:
+                out.update(c)
+        return out
+
+    def coefficient(self, w: Word, traces: Traces = ()) -> Coef:
+        return self.terms.get((traces, tuple(w)), se.Integer(0))
+
+    def scalar_value(self) -> Coef:
+        """The coefficient of a scalar without traces; TypeError if traces remain."""
+        if not self.is_scalar or any(tm for tm, _ in self.terms):
+            raise TypeError(f"{self} is not a plain scalar")
+        return self.terms.get(((), ()), se.Integer(0))
+
+    # -- arithmetic ---------------------------------------------------------
+    def _new(self, terms: dict) -> "NCPoly":
+        return NCPoly(terms, self.row, self.col)
+
+    def _same_type(self, o: "NCPoly") -> None:
+        if self.shape != o.shape:
+            raise TypeError(f"cannot add a {self.row}×{self.col} and a {o.row}×{o.col} polynomial")
+
+    def __add__(self, o: Any):
+        if isinstance(o, NCPoly):
+            self._same_type(o)
+            out = dict(self.terms)
+            for k, c in o.terms.items():
+                out[k] = out[k] + c if k in out else c
+            return self._new(out)
+        if isinstance(o, Dual) or _is_matrix(o):
+            return NotImplemented
+        k = as_coef(o)
+        if k is None:
+            return NotImplemented
+        if k == 0:
+            return self
+        if not self.is_scalar:
+            raise TypeError("adding a scalar to a matrix polynomial: write c·I explicitly")
+        return self + NCPoly.scalar(k)
+
+    __radd__ = __add__
+
+    def __neg__(self) -> "NCPoly":
+        return self._new({k: -c for k, c in self.terms.items()})
+
+    def __sub__(self, o: Any):
+        if isinstance(o, (Dual,)) or _is_matrix(o):
+            return NotImplemented
+        return self + (-o)
+
+    def __rsub__(self, o: Any):
+        return (-self) + o
+
+    def _scale(self, k: Coef) -> "NCPoly":
+        if k == 0:
+            return self._new({})
+        return self._new({key: c * k for key, c in self.terms.items()})
+
+    def __mul__(self, o: Any):
+        if isinstance(o, NCPoly):
+            return self._mul_poly(o)
+        if isinstance(o, Dual):
+            return Dual(self * o.a, self * o.b)
+        if _is_matrix(o):
+            if self.is_scalar:
+                return NotImplemented  # the matrix scales its entries
+            raise TypeError("a matrix polynomial cannot multiply a block matrix from the left")
+        k = as_coef(o)
+        if k is None:
+            return NotImplemented
+        return self._scale(k)
+
+    def __rmul__(self, o: Any):
+        if isinstance(o, NCPoly):
+            return o._mul_poly(self)
+        k = as_coef(o)
+        if k is None:
+            return NotImplemented
+        return self._scale(k)
+
+    def __truediv__(self, o: Any):
+        if isinstance(o, NCPoly):
+            return self._scale(se.Integer(1) / o.scalar_value())
+        k = as_coef(o)
+        if k is None:
+            return NotImplemented
+        return self._scale(se.Integer(1) / k)
+
+    def _mul_poly(self, o: "NCPoly") -> "NCPoly":
+        if self.is_scalar:
+            row, col = o.row, o.col
+        elif o.is_scalar:
+            row, col = self.row, self.col
+        elif self.col == o.row:
+            row, col = self.row, o.col
+        else:
+            raise TypeError(f"cannot multiply a {self.row}×{self.col} by a {o.row}×{o.col} polynomial")
+        out: dict = {}
+        for (t1, w1), c1 in self.terms.items():
+            for (t2, w2), c2 in o.terms.items():
+                k = (merge_traces(t1, t2), w1 + w2)
+                c = c1 * c2
+                out[k] = out[k] + c if k in out else c
+        return NCPoly(out, row, col)
+
+    def star(self) -> "NCPoly":
+        """The involution (transpose): reverses words, adjoint letters; traces are fixed."""
+        out: dict = {}
+        for (tm, w), c in self.terms.items():
+            s, ws = star_word(w)
+            k = (tm, ws)
+            v = c if s == 1 else -c
+            out[k] = out[k] + v if k in out else v
+        return NCPoly(out, self.col, self.row)
+
+    def expand(self) -> "NCPoly":
+        """Expanded coefficients, zero terms dropped (no constraints used)."""
+        out = {}
+        for k, c in self.terms.items():
+            e = se.expand(c)
+            if e != 0:
+                out[k] = e
+        return self._new(out)
+
+    def __eq__(self, o: object) -> bool:
+        """Equality as elements of the free algebra (no constraints used)."""
+        if not isinstance(o, NCPoly):
+            k = as_coef(o)
+            if k is None:
+                return NotImplemented
+            return self.is_scalar and (self - k).is_zero_raw() or (k == 0 and self.is_zero_raw())
+        return self.shape == o.shape and (self - o).is_zero_raw()
+
+    __hash__ = None  # type: ignore[assignment]
+
+    # -- printing -----------------------------------------------------------
+    def _sorted_terms(self):
+        return sorted(self.terms.items(), key=lambda kv: (len(kv[0][0]), [word_key(c) for c in kv[0][0]],
+                                                         word_key(kv[0][1])))
+
+    def __str__(self) -> str:
+        parts = []
+        for (tm, w), c in self._sorted_terms():
+            factors = [f"tr({word_str(t)})" for t in tm]
+            if w or not factors:
+                factors.append(word_str(w) if w else (f"I_{self.row}" if self.row != SCALAR else "1"))
+            parts.append(f"({c})*" + "*".join(factors))
+        return " + ".join(parts) if parts else "0"
+
+    def __repr__(self) -> str:
+        return f"NCPoly[{self.row}x{self.col}]({self})"
+
+    def latex(self) -> str:
+        """LaTeX with the paper's notation (X^{T}, (\\lambda I_n - A)^{-1}, tr)."""
+        if not self.terms:
+            return "0"
+        out = []
+        for (tm, w), c in self._sorted_terms():
+            body = " ".join([rf"\operatorname{{tr}}({word_latex(t)})" for t in tm]
+                            + ([word_latex(w)] if w else []))
+            if not body and self.row != SCALAR:
+                body = rf"\mathbf{{I}}_{{{self.row}}}"
+            out.append(_signed_term(c, body))
+        s = " ".join(out).strip()
+        return s[2:] if s.startswith("+ ") else s
+
+
+def word_latex(w: Word) -> str:
+    return " ".join(L.latex for L in w)
+
+
+def coef_latex(c: Coef) -> str:
+    import sympy  # local: only printing needs sympy
+
+    return sympy.latex(sympy.sympify(c._sympy_() if hasattr(c, "_sympy_") else c))
+
+
+def _signed_term(c: Coef, body: str) -> str:
+    import sympy
+
+    e = sympy.sympify(se.expand(c)._sympy_())
+    neg = e.could_extract_minus_sign()
+    mag = -e if neg else e
+    sign = "- " if neg else "+ "
+    if not body:
+        return sign + sympy.latex(mag)
+    if mag == 1:
+        return sign + body
+    text = sympy.latex(mag)
+    if isinstance(mag, sympy.Add):
+        text = rf"\left({text}\right)"
+    return sign + text + " " + body
+
+
+# ---------------------------------------------------------------------------
+def trace(p: NCPoly) -> NCPoly:
+    """tr(p) as a scalar polynomial (canonical cyclic representatives, no constraints)."""
+    if p.is_scalar:
+        return p
+    if p.row != p.col:
+        raise TypeError(f"trace of a non-square {p.row}×{p.col} polynomial")
+    out: dict = {}
+    for (tm, w), c in p.terms.items():
+        if not w:
+            k, v = (tm, ()), c * DIMENSIONS[p.row]
+        else:
+            s, cw = cycle_rep(w)
+            if s == 0:
+                continue
+            k, v = (merge_traces(tm, (cw,)), ()), c * s
+        out[k] = out[k] + v if k in out else v
+    return NCPoly(out, SCALAR, SCALAR)
+
+
+def substitute(p: NCPoly, images: Mapping[Letter, NCPoly]) -> NCPoly:
+    """The algebra homomorphism sending letters to polynomials (adjoints follow by *).
+
+    Images must have the letter's type; traces are substituted inside."""
+    full: dict[Letter, NCPoly] = {}
+    for L, v in images.items():
+        if v.shape != (L.row, L.col):
+            raise TypeError(f"image of {L} must be {L.row}×{L.col}, got {v.row}×{v.col}")
+        full[L] = v
+        if L.adjoint not in images:
+            full[L.adjoint] = v.star() * L.adjoint_sign if L.adjoint != L else v
+    out = NCPoly.zero(p.row, p.col)
+    for (tm, w), c in p.terms.items():
+        term = NCPoly({((), w): c}, p.row, p.col)
+        if any(L in full for L in w):
+            acc = NCPoly.identity(p.row) * c
+            for L in w:
+                acc = acc * (full[L] if L in full else NCPoly.word((L,)))
+            term = acc
+        for cyc in tm:
+            if any(L in full for L in cyc):
+                acc = NCPoly.identity(cyc[0].row)
+                for L in cyc:
+                    acc = acc * (full[L] if L in full else NCPoly.word((L,)))
+                term = term * trace(acc)
+            else:
+                term = term * NCPoly({((cyc,), ()): se.Integer(1)}, SCALAR, SCALAR)
+        out = out + term
+    return out
+
+
+def evaluate(p: NCPoly, matrices: Mapping[str, Any], scalars: Mapping[Any, Any] | None = None,
+             dims: Mapping[str, int] | None = None) -> Any:
+    """p at concrete matrices (numpy object arrays of exact numbers, keyed by letter name).
+
+    A letter whose adjoint is given but not itself evaluates to sign·transpose;
+    ``scalars`` maps symbols (λ, κ, ...) to numbers; ``dims`` gives n and r
+    (inferred from the matrices when possible).  Returns an array, or a number
+    for a scalar.  Used to certify that a nonzero normal form is nonzero."""
+    import numpy as np  # local: only evaluation needs arrays
+
+    mats = {k: np.asarray(v, dtype=object) for k, v in matrices.items()}
+    d = dict(dims or {})
+    for L in p.letters() | {x.adjoint for x in p.letters()}:
+        if L in mats:
+            d.setdefault(L.row, mats[L].shape[0])
+            d.setdefault(L.col, mats[L].shape[1])
+    d[SCALAR] = 1
+    subs = {DIMENSIONS["n"]: d.get("n", 0), DIMENSIONS["r"]: d.get("r", 0)}
+    subs.update(scalars or {})
+    subs = {k: as_coef(v) for k, v in subs.items()}
+
+    def number(c: Coef) -> Fraction:
+        v = se.expand(se.sympify(c).subs(subs))
+        if not v.is_Number:
+            raise ValueError(f"coefficient {c} has unassigned symbols {v.free_symbols}")
+        num, den = v.as_numer_denom()
+        return Fraction(int(num), int(den))
+
+    def letter(L: Letter):
+        if L in mats:
+            return mats[L]
+        if L.adjoint in mats:
+            return mats[L.adjoint].T * L.adjoint_sign
+        raise KeyError(f"no value for the letter {L}")
+
+    def word_value(w: Word, t: str):
+        if t == SCALAR:
+            return Fraction(1)
+        acc = np.identity(d[t], dtype=object) * Fraction(1)
+        for L in w:
+            acc = acc.dot(letter(L))
+        return acc
+
+    total = None
+    for (tm, w), c in p.terms.items():
+        v = word_value(w, p.row) * number(c)
+        for cyc in tm:
+            v = v * sum(np.diag(word_value(cyc, cyc[0].row)), Fraction(0))
+        total = v if total is None else total + v
+    if total is None:
+        return Fraction(0) if p.is_scalar else np.zeros((d[p.row], d[p.col]), dtype=object) * Fraction(0)
+    return total
+
+
+def derivation(p: NCPoly, images: Mapping[Letter, NCPoly]) -> NCPoly:
+    """The derivation D with D(L) = images[L], D(L*) = images[L]* (with sign), other letters ↦ 0.
+
+    Traces: D tr(c) = tr(D c).  D is well defined on a quotient only if it maps
+    the relations into the ideal (for a flow: the flow is tangent to T*V)."""
+    full: dict[Letter, NCPoly] = {}
+    for L, v in images.items():
+        if v.shape != (L.row, L.col):
+            raise TypeError(f"the derivative of {L} must be {L.row}×{L.col}, got {v.row}×{v.col}")
+        full[L] = v
+        if L.adjoint != L and L.adjoint not in images:
+            full[L.adjoint] = v.star() * L.adjoint_sign
+
+    def word_derivative(w: Word, t: str) -> NCPoly:
+        out = NCPoly.zero(t, w[-1].col if w else t)
+        for i, L in enumerate(w):
+            if L in full:
+                left = NCPoly.word(w[:i], t)
+                right = NCPoly.word(w[i + 1:], L.col)
+                out = out + left * full[L] * right
+        return out
+
+    out = NCPoly.zero(p.row, p.col)
+    for (tm, w), c in p.terms.items():
+        if w:
+            out = out + NCPoly({(tm, ()): c}, SCALAR, SCALAR) * word_derivative(w, p.row)
+        for i, cyc in enumerate(tm):
+            dc = word_derivative(cyc, cyc[0].row)
+            if not dc.terms:
+                continue
+            rest = NCPoly({(tm[:i] + tm[i + 1:], w): c}, p.row, p.col)
+            out = out + rest * trace(dc)
+    return out

@@ -1,0 +1,499 @@
+"""Rewriting systems on typed words: normal forms, critical pairs, completion.
+
+A :class:`Rule` replaces a word (its left-hand side) by a polynomial of the
+same type whose words are all smaller in a deg-lex :class:`Order`; the order is
+a well-order, so repeated reduction terminates.  Every rule carries the reason
+it is valid on T*V (a constraint, a resolvent identity, or the critical pair
+it completes).  If every critical pair resolves (:func:`critical_pairs`), the
+system is confluent and normal forms are unique (Bergman's diamond lemma): a
+residual whose normal form is 0 holds, and one whose normal form is not 0 is
+not a consequence of the rules.
+
+Traces are reduced as cyclic words: a rule applies in any rotation, and
+tr(w*) = tr(w).  Confluence of that reduction needs, on top of the word
+critical pairs, the *cyclic* critical pairs (two left-hand sides that cover a
+cyclic word and overlap at both ends), which :func:`critical_pairs` also lists.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Iterable, Sequence
+
+import symengine as se
+
+from .algebra import (DIMENSIONS, SCALAR, Coef, Letter, NCPoly, Word, check_word, merge_traces,
+                      min_rotation, star_word, word_key, word_latex, word_str)
+
+
+class RewritingError(ValueError):
+    """A rule that does not decrease, is ill-typed, or a reduction that does not terminate."""
+
+
+def simplify_coef(c: Coef) -> Coef:
+    """Expanded coefficient; rational coefficients are zero iff their expanded numerator is."""
+    e = se.expand(c)
+    if e == 0 or e.is_Number:
+        return e
+    num, den = e.as_numer_denom()
+    if den.is_Number:
+        return e
+    num = se.expand(num)
+    return se.Integer(0) if num == 0 else e
+
+
+class Order:
+    """Deg-lex order on words: longer is larger, equal lengths compare letter ranks left to right.
+
+    Letters not listed rank after the listed ones, in the order they are first met."""
+
+    def __init__(self, letters: Iterable[str] = ()) -> None:
+        self._rank: dict[str, int] = {}
+        for L in letters:
+            self.add(L)
+
+    def add(self, letter: str) -> int:
+        if letter not in self._rank:
+            self._rank[letter] = len(self._rank)
+        return self._rank[letter]
+
+    def key(self, w: Word) -> tuple:
+        rank = self._rank
+        return (len(w), tuple(rank[L] if L in rank else self.add(L) for L in w))
+
+    def less(self, u: Word, v: Word) -> bool:
+        return self.key(u) < self.key(v)
+
+    @property
+    def letters(self) -> list[str]:
+        return sorted(self._rank, key=self._rank.get)
+
+    def copy(self) -> "Order":
+        return Order(self.letters)
+
+
+@dataclass(frozen=True)
+class Rule:
+    """lhs → rhs, valid because of ``reason``."""
+
+    name: str
+    lhs: Word
+    rhs: NCPoly
+    reason: str
+
+    def latex(self) -> str:
+        return rf"{word_latex(self.lhs)} \to {self.rhs.latex()}"
+
+    def __str__(self) -> str:
+        return f"{self.name}: {word_str(self.lhs)} -> {self.rhs}   [{self.reason}]"
+
+
+@dataclass
+class Reduction:
+    """A residual, its normal form and the rules used to get there."""
+
+    residual: NCPoly
+    normal_form: NCPoly
+    rules: list[Rule]
+
+    @property
+    def is_zero(self) -> bool:
+        return not self.normal_form.terms
+
+    def latex(self) -> str:
+        """A short derivation: the residual, the rules applied (with reasons), the normal form."""
+        lines = [r"\begin{aligned}", rf"R &= {self.residual.latex()} \\"]
+        lines.append(rf"\operatorname{{nf}}(R) &= {self.normal_form.latex()}")
+        lines.append(r"\end{aligned}")
+        body = "\n".join(lines)
+        if not self.rules:
+            return rf"\[{body}\]" + "\nNo rule was needed."
+        items = "\n".join(rf"  \item ${r.latex()}$ ({latex_text(r.reason)})" for r in self.rules)
+        return rf"\[{body}\]" + "\nusing\n\\begin{itemize}\n" + items + "\n\\end{itemize}"
+
+
+def latex_text(s: str) -> str:
+    """Plain text (a rule's reason) escaped for LaTeX text mode."""
+    out = []
+    for ch in s:
+        if ch == "\\":
+            out.append(r"\textbackslash{}")
+        elif ch in "_{}&%$#":
+            out.append("\\" + ch)
+        elif ch == "^":
+            out.append(r"\^{}")
+        elif ch == "~":
+            out.append(r"\~{}")
+        else:
+            out.append(ch)
+    return "".join(out)
+
+
+class RewritingSystem:
+    """Rules on typed words with a deg-lex order; memoized normal forms of words and traces."""
+
+    #: a reduction chain longer than this is reported as non-terminating
+    max_depth = 500
+
+    def __init__(self, order: Order | None = None, rules: Iterable[Rule] = ()) -> None:
+        self.order = order if order is not None else Order()
+        self.rules: list[Rule] = []
+        self._lhs: dict[Word, Rule] = {}
+        self._lengths: list[int] = []
+        #: irreducible cyclic words whose adjoint did not reduce to ± one cyclic word
+        self.trace_fallbacks: set[Word] = set()
+        self._clear()
+        for r in rules:
+            self._insert(r)
+
+    def _clear(self) -> None:
+        self._word_memo: dict[Word, tuple[dict, frozenset]] = {}
+        self._cycle_memo: dict[Word, tuple[dict, frozenset]] = {}
+        self._trace_memo: dict[Word, tuple[dict, frozenset]] = {}
+
+    def copy(self) -> "RewritingSystem":
+        return RewritingSystem(self.order.copy(), self.rules)
+
+    # -- rules ------------------------------------------------------------
+    def add_rule(self, lhs: Sequence[Letter], rhs: NCPoly, reason: str, name: str | None = None) -> Rule:
+        """Add lhs → rhs after checking types and that every word of rhs is smaller than lhs."""
+        lhs = tuple(lhs)
+        if not lhs:
+            raise RewritingError("a rule needs a nonempty left-hand side")
+        check_word(lhs)
+        if (rhs.row, rhs.col) != (lhs[0].row, lhs[-1].col):
+            raise RewritingError(f"rule {word_str(lhs)}: rhs is {rhs.row}×{rhs.col}, "
+                                 f"lhs is {lhs[0].row}×{lhs[-1].col}")
+        rhs = rhs.expand()
+        for (tm, w), _c in rhs.terms.items():
+            if tm:
+                raise RewritingError(f"rule {word_str(lhs)}: traces are not allowed on the right-hand side")
+            if not self.order.less(w, lhs):
+                raise RewritingError(f"rule {word_str(lhs)} -> {rhs} does not decrease: "
+                                     f"{word_str(w)} is not smaller than {word_str(lhs)}")
+        if lhs in self._lhs:
+            raise RewritingError(f"a rule for {word_str(lhs)} exists already")
+        rule = Rule(name or word_str(lhs), lhs, rhs, reason)
+        self._insert(rule)
+        return rule
+
+    def _insert(self, rule: Rule) -> None:
+        self.rules.append(rule)
+        self._lhs[rule.lhs] = rule
+        if len(rule.lhs) not in self._lengths:
+            self._lengths = sorted(self._lengths + [len(rule.lhs)])
+        for L in rule.lhs:
+            self.order.add(L)
+        self._clear()
+
+    def rule(self, name: str) -> Rule:
+        for r in self.rules:
+            if r.name == name:
+                return r
+        raise KeyError(name)
+
+    def decreasing(self, rule: Rule) -> bool:
+        """Every word of the rule's rhs is smaller than its lhs."""
+        return all(self.order.less(w, rule.lhs) for (_, w) in rule.rhs.terms)
+
+    def find(self, w: Word) -> tuple[int, Rule] | None:
+        """The leftmost occurrence of a left-hand side in w."""
+        lhs = self._lhs
+        for i in range(len(w)):
+            for L in self._lengths:
+                if i + L > len(w):
+                    break
+                r = lhs.get(w[i:i + L])
+                if r is not None:
+                    return i, r
+        return None
+
+    # -- words --------------------------------------------------------------
+    def _word_nf(self, w: Word, depth: int = 0) -> tuple[dict, frozenset]:
+        hit = self._word_memo.get(w)
+        if hit is not None:
+            return hit
+        if depth > self.max_depth:
+            raise RewritingError(f"reduction of {word_str(w)} does not terminate")
+        found = self.find(w)
+        if found is None:
+            res = ({w: se.Integer(1)}, frozenset())
+        else:
+            i, rule = found
+            out: dict = {}
+            used = {rule.name}
+            pre, post = w[:i], w[i + len(rule.lhs):]
+            for (_, rw), c in rule.rhs.terms.items():
+                sub, u = self._word_nf(pre + rw + post, depth + 1)
+                used |= u
+                for k, v in sub.items():
+                    out[k] = out[k] + c * v if k in out else c * v
+            res = ({k: v for k, v in ((k, simplify_coef(v)) for k, v in out.items()) if v != 0},
+                   frozenset(used))
+        self._word_memo[w] = res
+        return res
+
+    # -- traces ---------------------------------------------------------------
+    def _cycle_reduce(self, c: Word, depth: int = 0) -> tuple[dict, frozenset]:
+        """tr(c) reduced by the rules in every rotation: {least rotation or (): coefficient}."""
+        hit = self._cycle_memo.get(c)
+        if hit is not None:
+            return hit
+        if depth > self.max_depth:
+            raise RewritingError(f"cyclic reduction of tr({word_str(c)}) does not terminate")
+        res = None
+        for k in range(len(c)):
+            rot = c[k:] + c[:k]
+            found = self.find(rot)
+            if found is None:
+                continue
+            i, rule = found
+            out: dict = {}
+            used = {rule.name}
+            for (_, rw), coef in rule.rhs.terms.items():
+                nw = rot[:i] + rw + rot[i + len(rule.lhs):]
+                if not nw:
+                    key = ()
+                    out[key] = out.get(key, 0) + coef * DIMENSIONS[rot[0].row]
+                    continue
+                sub, u = self._cycle_reduce(min_rotation(nw), depth + 1)
+                used |= u
+                for kk, v in sub.items():
+                    out[kk] = out[kk] + coef * v if kk in out else coef * v
+            res = ({k: v for k, v in ((k, simplify_coef(v)) for k, v in out.items()) if v != 0},
+                   frozenset(used))
+            break
+        if res is None:
+            res = ({c: se.Integer(1)}, frozenset())
+        self._cycle_memo[c] = res
+        return res
+
+    def _trace_nf(self, c: Word) -> tuple[dict, frozenset]:
+        """Normal form of tr(c): cyclic reduction, then one representative per pair {c, c*}."""
+        c = min_rotation(c)
+        hit = self._trace_memo.get(c)
+        if hit is not None:
+            return hit
+        red, used = self._cycle_reduce(c)
+        out: dict = {}
+        for k, v in red.items():
+            if k == ():
+                out[()] = out.get((), 0) + v
+                continue
+            rep, s, u = self._adjoint_rep(k)
+            used = used | u
+            if rep is not None:
+                out[rep] = out[rep] + v * s if rep in out else v * s
+        res = ({k: v for k, v in ((k, simplify_coef(v)) for k, v in out.items()) if v != 0}, used)
+        self._trace_memo[c] = res
+        return res
+
+    def _adjoint_rep(self, c: Word) -> tuple[Word | None, Coef, frozenset]:
+        """For an irreducible cyclic word c: tr(c) = s·tr(rep); rep None means tr(c) = 0."""
+        sign, ws = star_word(c)
+        d, used = self._cycle_reduce(min_rotation(ws))
+        if len(d) == 1:
+            (k, v), = d.items()
+            v = v * sign
+            if k == c:
+                if v == 1:
+                    return c, se.Integer(1), used
+                if v == -1:
+                    return None, se.Integer(0), used
+            elif k != () and (v == 1 or v == -1):
+                return (c, se.Integer(1), used) if word_key(c) < word_key(k) else (k, v, used)
+        self.trace_fallbacks.add(c)
+        return c, se.Integer(1), used
+
+    def _traces_nf(self, tm: tuple) -> tuple[dict, frozenset]:
+        out: dict = {(): se.Integer(1)}
+        used: frozenset = frozenset()
+        for c in tm:
+            red, u = self._trace_nf(c)
+            used |= u
+            nxt: dict = {}
+            for k1, v1 in out.items():
+                for k2, v2 in red.items():
+                    k = merge_traces(k1, (k2,) if k2 != () else ())
+                    nxt[k] = nxt[k] + v1 * v2 if k in nxt else v1 * v2
+            out = nxt
+        return out, used
+
+    # -- polynomials ------------------------------------------------------------
+    def reduce(self, p: NCPoly) -> Reduction:
+        """Normal form of p with the rules used."""
+        out: dict = {}
+        used: set[str] = set()
+        for (tm, w), c in p.terms.items():
+            wn, u = self._word_nf(w)
+            used |= u
+            if tm:
+                tn, u2 = self._traces_nf(tm)
+                used |= u2
+            else:
+                tn = {(): se.Integer(1)}
+            for w2, c2 in wn.items():
+                for t2, c3 in tn.items():
+                    k = (t2, w2)
+                    v = c * c2 * c3
+                    out[k] = out[k] + v if k in out else v
+        terms = {k: v for k, v in ((k, simplify_coef(v)) for k, v in out.items()) if v != 0}
+        rules = [r for r in self.rules if r.name in used]
+        return Reduction(p, NCPoly(terms, p.row, p.col), rules)
+
+    def normal_form(self, p: NCPoly) -> NCPoly:
+        return self.reduce(p).normal_form
+
+    def is_zero(self, p: NCPoly) -> bool:
+        return not self.normal_form(p).terms
+
+    def trace_normal_form(self, w: Sequence[Letter]) -> NCPoly:
+        """Normal form of tr(w) as a scalar polynomial."""
+        w = tuple(w)
+        check_word(w)
+        if w[0].row != w[-1].col:
+            raise TypeError(f"tr({word_str(w)}) is not defined: the word is not square")
+        red, _ = self._trace_nf(w)
+        return NCPoly({((k,) if k != () else (), ()): v for k, v in red.items()}, SCALAR, SCALAR)
+
+
+# ---------------------------------------------------------------------------
+# critical pairs and completion
+@dataclass
+class CriticalPair:
+    """Two one-step reductions of ``word`` (a cyclic word for kind 'cyclic')."""
+
+    kind: str  # "overlap", "inclusion" or "cyclic"
+    a: Rule
+    b: Rule
+    word: Word
+    left: NCPoly
+    right: NCPoly
+    difference: NCPoly
+
+    @property
+    def joinable(self) -> bool:
+        return not self.difference.terms
+
+    def __str__(self) -> str:
+        w = f"tr({word_str(self.word)})" if self.kind == "cyclic" else word_str(self.word)
+        state = "resolves" if self.joinable else f"does NOT resolve: {self.difference}"
+        return f"{self.kind} of {self.a.name} and {self.b.name} on {w}: {state}"
+
+
+def _mono(w: Word, t: str) -> NCPoly:
+    return NCPoly.word(w, t)
+
+
+def _trace_of(system: RewritingSystem, p: NCPoly) -> NCPoly:
+    out = NCPoly.zero(SCALAR, SCALAR)
+    for (tm, w), c in p.terms.items():
+        if w:
+            t = system.trace_normal_form(w)
+        else:
+            t = NCPoly.scalar(DIMENSIONS[p.row])
+        if tm:
+            t = t * NCPoly({(tm, ()): se.Integer(1)}, SCALAR, SCALAR)
+        out = out + t * c
+    return system.normal_form(out)
+
+
+def critical_pairs(system: RewritingSystem, cyclic: bool = True) -> list[CriticalPair]:
+    """All critical pairs (overlaps, inclusions and, if ``cyclic``, cyclic overlaps) and whether each resolves."""
+    out: list[CriticalPair] = []
+    rules = system.rules
+    for a in rules:
+        la = a.lhs
+        for b in rules:
+            lb = b.lhs
+            for k in range(1, min(len(la), len(lb))):
+                if la[-k:] == lb[:k]:
+                    left = a.rhs * _mono(lb[k:], la[-1].col)
+                    right = _mono(la[:-k], la[0].row) * b.rhs
+                    diff = system.normal_form(left - right)
+                    out.append(CriticalPair("overlap", a, b, la + lb[k:], left, right, diff))
+            if a is not b and len(lb) <= len(la):
+                for i in range(len(la) - len(lb) + 1):
+                    if la[i:i + len(lb)] == lb:
+                        left = a.rhs
+                        right = _mono(la[:i], la[0].row) * b.rhs * _mono(la[i + len(lb):], lb[-1].col)
+                        diff = system.normal_form(left - right)
+                        out.append(CriticalPair("inclusion", a, b, la, left, right, diff))
+            if cyclic:
+                out.extend(_cyclic_pairs(system, a, b))
+    return out
+
+
+def _cyclic_pairs(system: RewritingSystem, a: Rule, b: Rule) -> list[CriticalPair]:
+    """Cyclic words covered by la (at 0) and lb (at j), overlapping at both ends."""
+    la, lb = a.lhs, b.lhs
+    out = []
+    for m in range(max(len(la), len(lb)), len(la) + len(lb)):
+        for j in range(1, len(la)):
+            if j + len(lb) <= m:
+                continue  # lb does not wrap around to la's start
+            c: list = list(la) + [None] * (m - len(la))
+            ok = True
+            for t, L in enumerate(lb):
+                pos = (j + t) % m
+                if c[pos] is None:
+                    c[pos] = L
+                elif c[pos] != L:
+                    ok = False
+                    break
+            if not ok or any(x is None for x in c):
+                continue
+            cw = tuple(c)
+            if cw[-1].col != cw[0].row:
+                continue
+            rot = cw[j:] + cw[:j]
+            left = _trace_of(system, a.rhs * _mono(cw[len(la):], la[-1].col))
+            right = _trace_of(system, b.rhs * _mono(rot[len(lb):], lb[-1].col))
+            out.append(CriticalPair("cyclic", a, b, cw, left, right, system.normal_form(left - right)))
+    return out
+
+
+def is_confluent(system: RewritingSystem, cyclic: bool = True) -> bool:
+    return all(p.joinable for p in critical_pairs(system, cyclic))
+
+
+@dataclass
+class CompletionResult:
+    """The completed system, whether completion finished, and the rules it added."""
+
+    system: RewritingSystem
+    finished: bool
+    added: list[Rule] = field(default_factory=list)
+    rounds: int = 0
+    message: str = ""
+
+
+def complete(system: RewritingSystem, max_rules: int = 50, max_rounds: int = 20) -> CompletionResult:
+    """Knuth–Bendix completion on words (bounded); the input system is not modified.
+
+    Unresolved pairs become rules oriented by the order, leading coefficient
+    normalized to 1 (only numeric leading coefficients are divided by)."""
+    sys2 = system.copy()
+    added: list[Rule] = []
+    for rnd in range(1, max_rounds + 1):
+        pending = [p for p in critical_pairs(sys2, cyclic=False) if not p.joinable]
+        if not pending:
+            return CompletionResult(sys2, True, added, rnd - 1, "confluent")
+        for p in pending:
+            d = sys2.normal_form(p.left - p.right)
+            if not d.terms:
+                continue
+            (tm, lead), c = max(d.terms.items(), key=lambda kv: (len(kv[0][0]), sys2.order.key(kv[0][1])))
+            if tm:
+                return CompletionResult(sys2, False, added, rnd, f"{p}: leading term has traces")
+            if not c.is_Number:
+                return CompletionResult(sys2, False, added, rnd,
+                                        f"{p}: leading coefficient {c} is not a number")
+            if not lead:
+                return CompletionResult(sys2, False, added, rnd, f"{p}: the identity is a consequence (inconsistent)")
+            rest = d - NCPoly({((), lead): c}, d.row, d.col)
+            rule = sys2.add_rule(lead, rest * (se.Integer(-1) / c),
+                                 f"completion of {p.a.name}, {p.b.name}", name=f"C{len(added) + 1}")
+            added.append(rule)
+            if len(sys2.rules) > max_rules:
+                return CompletionResult(sys2, False, added, rnd, f"more than {max_rules} rules")
+    return CompletionResult(sys2, False, added, max_rounds, f"not confluent after {max_rounds} rounds")

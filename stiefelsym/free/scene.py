@@ -1,0 +1,608 @@
+"""The dimension-free scene: claims run on letters of a free algebra.
+
+:class:`FreeScene` offers the matrix interface of
+:class:`stiefelsym.scene.Scene` (X, P, A, Φ, Ψ, λ, κ, ε, traces, resolvents,
+Dirac flows, derivatives along flows) with 1×1 :class:`~stiefelsym.matrix.Mat`
+whose entry is a word polynomial (an n×r, r×n, n×n or r×r block), and 2×2
+``Mat`` of them for 2r×2r block matrices.  The field :class:`FreeField`
+normalizes entries with the standard rewriting system (the constraints
+(cond_XP) and the resolvent identities), which is confluent (see the tests),
+so a residual is zero for every n, r and every symmetric A iff its normal form
+is 0, up to consequences of the constraints that the rules do not generate.
+Objects that need coordinates raise :class:`NeedsCoordinates`.
+"""
+from __future__ import annotations
+
+from fractions import Fraction
+from typing import Any, Callable, Mapping
+
+import numpy as np
+import symengine as se
+
+from ..fields import Dual, DualField, Field
+from ..matrix import CoordinateTracker, Mat
+from ..scene import Flow
+from .algebra import (DIMENSIONS, Letter, NCPoly, as_coef, coef_latex, derivation, letter_pair,
+                      skew_letter, substitute, symmetric_letter, trace)
+from .rewriting import Order, Reduction, RewritingSystem, simplify_coef
+from .traces import gradient
+
+Function = Callable[[Any], Any]
+
+X, Xt = letter_pair("X", "Xt", "n", "r", "X", "X^{T}")
+P, Pt = letter_pair("P", "Pt", "n", "r", "P", "P^{T}")
+A = symmetric_letter("A", "n", "A")
+Y, Yt = letter_pair("Y", "Yt", "n", "r", "Y", "Y^{T}")
+Q, Qt = letter_pair("Q", "Qt", "n", "r", "Q", "Q^{T}")
+AINV = symmetric_letter("Ainv", "n", "A^{-1}")
+PI = symmetric_letter("Pi", "r", r"\Pi")
+LAMBDA = symmetric_letter("Lambda", "r", r"\Lambda")
+
+COND_XX = "X^T X = I_r (cond_XP)"
+COND_XP = "X^T P + P^T X = 0 (cond_XP)"
+
+
+class NeedsCoordinates(Exception):
+    """The claim needs an object the dimension-free backend cannot provide."""
+
+    def __init__(self, what: str) -> None:
+        super().__init__(f"{what} needs coordinates (fixed n, r); use a coordinate backend")
+        self.what = what
+
+
+class FreeSolveError(ArithmeticError):
+    """Lagrange multipliers that are not of the form c·Π + (terms free of Π) = 0."""
+
+
+def _i(t: str) -> NCPoly:
+    return NCPoly.identity(t)
+
+
+def _w(*letters: Letter) -> NCPoly:
+    return NCPoly.word(letters)
+
+
+def standard_system() -> RewritingSystem:
+    """(cond_XP) as rules: XᵀX → I_r, PᵀX → −XᵀP (order X < P < A < Xᵀ < Pᵀ)."""
+    system = RewritingSystem(Order([X, P, A, Xt, Pt]))
+    system.add_rule((Xt, X), _i("r"), COND_XX, name="XtX")
+    system.add_rule((Pt, X), -_w(Xt, P), COND_XP, name="PtX")
+    return system
+
+
+def resolvent_letter(mu: Any) -> Letter:
+    """The letter R_mu = (mu I_n - A)^{-1} (symmetric n×n)."""
+    c = as_coef(mu)
+    return symmetric_letter(f"R[{c}]", "n", rf"(\left({coef_latex(c)}\right) \mathbf{{I}}_n - A)^{{-1}}"
+                            if not c.is_Symbol else rf"({coef_latex(c)} \mathbf{{I}}_n - A)^{{-1}}")
+
+
+def add_resolvent(system: RewritingSystem, mu: Any, resolvents: dict[Letter, Any],
+                  ainv: bool = False) -> Letter:
+    """Add R = (mu I − A)^{-1} with A R, R A → mu R − I and the resolvent identity with the others."""
+    mu = as_coef(mu)
+    R = resolvent_letter(mu)
+    if R in resolvents:
+        return R
+    system.order.add(R)
+    reason = f"A R = R A = mu R - I_n for R = (mu I_n - A)^(-1), mu = {mu} (definition of the resolvent)"
+    system.add_rule((A, R), _w(R) * mu - _i("n"), reason, name=f"A{R}")
+    system.add_rule((R, A), _w(R) * mu - _i("n"), reason, name=f"{R}A")
+    for S, nu in resolvents.items():
+        if simplify_coef(nu - mu) == 0:
+            continue
+        rhs = (_w(R) - _w(S)) * (se.Integer(1) / (nu - mu))
+        why = f"resolvent identity R_mu R_nu = (R_mu - R_nu)/(nu - mu), mu = {mu}, nu = {nu} (mu != nu)"
+        system.add_rule((R, S), rhs, why, name=f"{R}{S}")
+        system.add_rule((S, R), rhs, why, name=f"{S}{R}")
+    if ainv:
+        _ainv_resolvent_rules(system, R, mu)
+    resolvents[R] = mu
+    return R
+
+
+def _ainv_resolvent_rules(system: RewritingSystem, R: Letter, mu: Any) -> None:
+    if simplify_coef(mu) == 0:
+        return  # R_0 = -A^{-1}: no rule needed for soundness
+    rhs = (_w(R) + _w(AINV)) * (se.Integer(1) / mu)
+    why = f"A^(-1) R_mu = R_mu A^(-1) = (R_mu + A^(-1))/mu, mu = {mu} (mu != 0)"
+    system.add_rule((AINV, R), rhs, why, name=f"Ainv{R}")
+    system.add_rule((R, AINV), rhs, why, name=f"{R}Ainv")
+
+
+# ---------------------------------------------------------------------------
+class FreeField(Field):
+    """Entries are word polynomials; normal form by the scene's rewriting system."""
+
+    name = "free"
+    exact = True
+
+    def __init__(self, system: RewritingSystem) -> None:
+        self.system = system
+
+    def const(self, q: int | Fraction) -> Any:
+        return as_coef(Fraction(q))
+
+    def param(self, name: str, rng=None) -> Any:
+        return se.Symbol(name)
+
+    def normalize(self, x: Any) -> Any:
+        if isinstance(x, NCPoly):
+            return self.system.normal_form(x)
+        c = as_coef(x)
+        return simplify_coef(c) if c is not None else x
+
+    def is_zero(self, x: Any) -> bool:
+        if isinstance(x, NCPoly):
+            return self.system.is_zero(x)
+        return simplify_coef(as_coef(x)) == 0
+
+    def star(self, x: Any) -> Any:
+        return x.star() if isinstance(x, NCPoly) else x
+
+    def entry_trace(self, x: Any) -> Any:
+        return trace(x) if isinstance(x, NCPoly) else x
+
+    def describe(self, x: Any) -> str:
+        return x.latex() if isinstance(x, NCPoly) else str(x)
+
+    def solve(self, M, B):
+        raise NeedsCoordinates("solving a linear system entrywise")
+
+    def rank(self, M):
+        raise NeedsCoordinates("a rank")
+
+
+class FreeDualField(DualField):
+    """a + bε over the free field, with the involution and the trace."""
+
+    def star(self, x: Any) -> Any:
+        x = self.lift(x)
+        return Dual(self.base.star(x.a), self.base.star(x.b))
+
+    def entry_trace(self, x: Any) -> Any:
+        x = self.lift(x)
+        return Dual(self.base.entry_trace(x.a), self.base.entry_trace(x.b))
+
+    def solve(self, M, B):
+        raise NeedsCoordinates("solving a linear system entrywise")
+
+    def rank(self, M):
+        raise NeedsCoordinates("a rank")
+
+
+# ---------------------------------------------------------------------------
+class FreeScene:
+    """T*V_{n,r} for all n, r at once: the scene interface over the free algebra."""
+
+    chart = "free"
+    realization = "standard"
+
+    def __init__(self, tracker: CoordinateTracker | None = None, system: RewritingSystem | None = None) -> None:
+        self.system = system if system is not None else standard_system()
+        self.field: Field = FreeField(self.system)
+        self.tracker = tracker if tracker is not None else CoordinateTracker()
+        self.options: dict[str, Any] = {}
+        self.params: dict[str, Any] = {}
+        self._cache: dict[str, Any] = {}
+        self._resolvents: dict[Letter, Any] = {}
+        self._extras: set[str] = set()
+        self._named: dict[str, Letter] = {}
+
+    # -- primitives -----------------------------------------------------------
+    def _cached(self, key: str, build: Callable[[], Any]) -> Any:
+        if key not in self._cache:
+            self._cache[key] = build()
+        return self._cache[key]
+
+    def _prim(self, key: str, poly: NCPoly) -> Mat:
+        """The 1×1 matrix holding a primitive letter (overridden by the tangent scene)."""
+        return Mat.from_rows([[poly]], self.field, poly.shape, self.tracker)
+
+    def _letter(self, L: Letter) -> Mat:
+        self._named[str(L)] = L
+        return self._cached(f"letter:{L}", lambda: self._prim(str(L), _w(L)))
+
+    @property
+    def n(self) -> Any:
+        """The symbol n (tr I_n); not an integer: loops over coordinates fail."""
+        return DIMENSIONS["n"]
+
+    @property
+    def r(self) -> Any:
+        return DIMENSIONS["r"]
+
+    @property
+    def X(self) -> Mat:
+        return self._letter(X)
+
+    @property
+    def P(self) -> Mat:
+        return self._letter(P)
+
+    @property
+    def A(self) -> Mat:
+        return self._letter(A)
+
+    def _second_point(self) -> None:
+        if "second" not in self._extras:
+            self._extras.add("second")
+            self.system.order.add(Y)
+            self.system.order.add(Q)
+            self.system.order.add(Yt)
+            self.system.order.add(Qt)
+            self.system.add_rule((Yt, Y), _i("r"), "Y^T Y = I_r (second point)", name="YtY")
+            self.system.add_rule((Qt, Y), -_w(Yt, Q), "Y^T Q + Q^T Y = 0 (second point)", name="QtY")
+
+    @property
+    def Y(self) -> Mat:
+        """A second point (Y, Q) of T*V_{n,r} (free letters with its own constraints)."""
+        self._second_point()
+        return self._letter(Y)
+
+    @property
+    def Q(self) -> Mat:
+        self._second_point()
+        return self._letter(Q)
+
+    @property
+    def Ainv(self) -> Mat:
+        """A^{-1} (A invertible): A A^{-1} = A^{-1} A = I_n, and its products with resolvents."""
+        if "ainv" not in self._extras:
+            self._extras.add("ainv")
+            self.system.order.add(AINV)
+            self.system.add_rule((A, AINV), _i("n"), "A A^(-1) = I_n", name="AAinv")
+            self.system.add_rule((AINV, A), _i("n"), "A^(-1) A = I_n", name="AinvA")
+            for R, mu in self._resolvents.items():
+                _ainv_resolvent_rules(self.system, R, mu)
+        return self._letter(AINV)
+
+    @property
+    def a(self) -> Any:
+        raise NeedsCoordinates("the eigenvalues a_i of A")
+
+    def sym_operator(self, name: str = "AA") -> Any:
+        raise NeedsCoordinates("a generic symmetric operator on so(n)")
+
+    def generic(self, name: str, m: str, k: str) -> Mat:
+        """A generic m×k matrix: a free letter G with transpose G^T."""
+        G, _ = letter_pair(f"gen:{name}", f"gen:{name}^T", m, k, name, f"{name}^{{T}}")
+        self._named.setdefault(str(G), G)
+        return self._cached(f"gen:{name}", lambda: self._prim(str(G), _w(self._named[str(G)])))
+
+    def _skew(self, name: str, t: str, latex: str) -> Mat:
+        self._named.setdefault(name, skew_letter(name, t, latex))
+        return self._cached(f"skew:{name}", lambda: self._prim(name, _w(self._named[name])))
+
+    @property
+    def xi(self) -> Mat:
+        """A generic element of so(n) (a skew letter)."""
+        return self._skew("xi", "n", r"\xi")
+
+    @property
+    def zeta(self) -> Mat:
+        return self._skew("zeta", "n", r"\zeta")
+
+    @property
+    def eta(self) -> Mat:
+        """A generic element of so(r)."""
+        return self._skew("eta", "r", r"\eta")
+
+    @property
+    def theta(self) -> Mat:
+        return self._skew("theta", "r", r"\theta")
+
+    # -- scalars --------------------------------------------------------------
+    def param(self, name: str) -> Any:
+        if name not in self.params:
+            self.params[name] = se.Symbol(name)
+        return self.params[name]
+
+    def scalar(self, name: str) -> Any:
+        return self.param(name)
+
+    @property
+    def lam(self) -> Any:
+        return self.param("lambda")
+
+    @property
+    def kappa(self) -> Any:
+        return self.param("kappa")
+
+    @property
+    def eps(self) -> Any:
+        return self.param("epsilon")
+
+    def const(self, q: int | Fraction) -> Any:
+        return as_coef(Fraction(q))
+
+    def q(self, num: int, den: int = 1) -> Any:
+        return as_coef(Fraction(num, den))
+
+    # -- matrices ---------------------------------------------------------------
+    def _blocks(self, m: Any, tag: str | None) -> tuple[str, int]:
+        """(index type, number of diagonal blocks) for a size given as n, r, k·n, k·r or a tag."""
+        for t in ("n", "r"):
+            if tag == t:
+                return t, 1
+        e = as_coef(m)
+        if e is not None:
+            for t in ("n", "r"):
+                k = simplify_coef(e / DIMENSIONS[t])
+                if k.is_Integer and int(k) >= 1:
+                    return t, int(k)
+        if isinstance(tag, str) and tag[:-1].isdigit() and tag[-1] in "nr":
+            return tag[-1], int(tag[:-1])
+        raise NeedsCoordinates(f"a matrix of size {m} (tag {tag!r})")
+
+    def scalar_matrix(self, c: Any, m: Any, tag: str | None = None) -> Mat:
+        """c·I_m for m = n, r (or k·n, k·r: a k×k block diagonal)."""
+        t, k = self._blocks(m, tag)
+        blocks = [[(_i(t) * c if i == j else NCPoly.zero(t, t)) for j in range(k)] for i in range(k)]
+        return Mat.from_rows(blocks, self.field, (tag or t, tag or t), self.tracker)
+
+    def identity(self, m: Any, tag: str | None = None) -> Mat:
+        return self.scalar_matrix(1, m, tag)
+
+    def zeros(self, m: Any, k: Any, tags=(None, None)) -> Mat:
+        t1, k1 = self._blocks(m, tags[0])
+        t2, k2 = self._blocks(k, tags[1])
+        rows = [[NCPoly.zero(t1, t2) for _ in range(k2)] for _ in range(k1)]
+        return Mat.from_rows(rows, self.field, (tags[0] or t1, tags[1] or t2), self.tracker)
+
+    def mat(self, rows, tags=("?", "?")) -> Mat:
+        return Mat.from_rows(rows, self.field, tags, self.tracker)
+
+    @property
+    def In(self) -> Mat:
+        return self._cached("In", lambda: self._const_mat(_i("n")))
+
+    @property
+    def Ir(self) -> Mat:
+        return self._cached("Ir", lambda: self._const_mat(_i("r")))
+
+    def _const_mat(self, p: NCPoly) -> Mat:
+        return Mat.from_rows([[p]], self.field, p.shape, self.tracker)
+
+    @property
+    def Phi(self) -> Mat:
+        """The SO(n) momentum map Φ = P Xᵀ − X Pᵀ."""
+        return self._cached("Phi", lambda: self.P @ self.X.T - self.X @ self.P.T)
+
+    @property
+    def Psi(self) -> Mat:
+        """The SO(r) momentum map Ψ = Xᵀ P − Pᵀ X."""
+        return self._cached("Psi", lambda: self.X.T @ self.P - self.P.T @ self.X)
+
+    def tr(self, M: Any) -> Any:
+        if isinstance(M, Mat):
+            return M.trace()
+        return self.field.normalize(self.field.entry_trace(M))
+
+    def killing(self, a: Mat, b: Mat) -> Any:
+        """<a, b> = −½ tr(ab)."""
+        return self.field.normalize((a @ b).trace() * self.const(Fraction(-1, 2)))
+
+    def resolvent(self, mu: Any) -> Mat:
+        """(mu I_n − A)^{-1} as a letter R_mu with A R = R A = mu R − I."""
+        R = add_resolvent(self.system, mu, self._resolvents, ainv="ainv" in self._extras)
+        return self._letter(R)
+
+    # -- flows ------------------------------------------------------------------
+    def _hamiltonian(self, H: Function) -> NCPoly:
+        value = H(self)
+        if isinstance(value, Mat):
+            if value.shape != (1, 1):
+                raise TypeError("a Hamiltonian must be a scalar")
+            value = value.a[0, 0]
+        if not isinstance(value, NCPoly):
+            c = as_coef(value)
+            if c is None:
+                raise TypeError(f"a Hamiltonian must be a trace form, got {type(value).__name__}")
+            value = NCPoly.scalar(c)
+        if not value.is_scalar:
+            raise TypeError("a Hamiltonian must be a scalar trace form")
+        return value
+
+    def gradient(self, H: Function) -> tuple[Mat, Mat]:
+        """(∂H/∂X, ∂H/∂P) of the trace form H (of the formula as written)."""
+        def build():
+            h = self._hamiltonian(H)
+            return (self._const_mat(self.system.normal_form(gradient(h, X))),
+                    self._const_mat(self.system.normal_form(gradient(h, P))))
+        return self._cached_for("grad", H, build)
+
+    def _cached_for(self, key: str, obj: Any, build: Callable[[], Any]) -> Any:
+        full = f"{key}:{id(obj)}"
+        if full not in self._cache:
+            self._cache[full] = (obj, build())
+        return self._cache[full][1]
+
+    def canonical_flow(self, H: Function) -> Flow:
+        """The Hamiltonian vector field of H for the ambient bracket: Ẋ = H_P, Ṗ = −H_X."""
+        HX, HP = self.gradient(H)
+        return Flow(HP, -HX)
+
+    def dirac_flow(self, H: Function) -> Flow:
+        """(dot_XP): Ẋ = H_P − XΠ, Ṗ = −H_X + XΛ + PΠ with Π, Λ solved in the free algebra."""
+        return self._cached_for("dflow", H, lambda: self._multiplier_flow(H))
+
+    multiplier_flow = dirac_flow
+
+    def _multiplier_flow(self, H: Function) -> Flow:
+        HX, HP = (m.a[0, 0] for m in self.gradient(H))
+        nf = self.system.normal_form
+        x, p = _w(X), _w(P)
+        Pi, Lam = _w(PI), _w(LAMBDA)
+        Xd = HP - x * Pi
+        Pd = -HX + x * Lam + p * Pi
+        eq_XX = nf(Xd.star() * x + x.star() * Xd)
+        eq_XP = nf(Xd.star() * p + x.star() * Pd + Pd.star() * x + p.star() * Xd)
+        solved = solve_multipliers([eq_XX, eq_XP], [PI, LAMBDA], self.system)
+        Xd, Pd = (nf(substitute(v, solved)) for v in (Xd, Pd))
+        return Flow(self._const_mat(Xd), self._const_mat(Pd),
+                    multipliers={"Pi": self._const_mat(solved[PI]), "Lambda": self._const_mat(solved[LAMBDA])})
+
+    def tangent(self, flow: Mapping[str, Mat]) -> "FreeTangentScene":
+        return FreeTangentScene(self, flow)
+
+    def d(self, F: Function | Any, flow: Flow | Mapping[str, Mat]) -> Any:
+        """The derivative of F along a flow (X ↦ Ẋ, P ↦ Ṗ; A, R constant).
+
+        F is a function of the scene (differentiated as written, by dual
+        numbers), or a value (Mat, polynomial, list, dict), differentiated by
+        the derivation of the free algebra; the latter needs a flow tangent to
+        T*V, which is checked (ValueError otherwise)."""
+        tangent = flow.tangent() if isinstance(flow, Flow) else dict(flow)
+        if callable(F):
+            return _map_value(F(self.tangent(tangent)), self)
+        images = self._tangent_images(tangent)
+        nf = self.system.normal_form
+        return _map_entries(F, lambda x: nf(derivation(x, images)) if isinstance(x, NCPoly)
+                            else se.Integer(0), self)
+
+    def _tangent_images(self, tangent: Mapping[str, Any]) -> dict[Letter, NCPoly]:
+        images = {}
+        for key, v in tangent.items():
+            if key not in self._named:
+                raise KeyError(f"the flow moves {key!r}, which is not a letter of this scene")
+            images[self._named[key]] = v.a[0, 0] if isinstance(v, Mat) else v
+        relations = [(_w(Xt, X), COND_XX), (_w(Xt, P) + _w(Pt, X), COND_XP)]
+        if "second" in self._extras:
+            relations += [(_w(Yt, Y), "Y^T Y = I_r"), (_w(Yt, Q) + _w(Qt, Y), "Y^T Q + Q^T Y = 0")]
+        for rel, why in relations:
+            if not self.system.is_zero(derivation(rel, images)):
+                raise ValueError(f"the flow does not preserve {why}: differentiate a function of the "
+                                 "scene (d(lambda s: ..., flow)) instead of a value")
+        return images
+
+    def canonical_bracket(self, F: Function, G: Function) -> Any:
+        """{F, G}_0 = tr(F_Xᵀ G_P) − tr(F_Pᵀ G_X) for trace forms F, G."""
+        FX, FP = (m.a[0, 0] for m in self.gradient(F))
+        GX, GP = (m.a[0, 0] for m in self.gradient(G))
+        return self.field.normalize(trace(FX.star() * GP) - trace(FP.star() * GX))
+
+    def bracket(self, F: Function, G: Function) -> Any:
+        """The Dirac bracket {F, G} = derivative of F along the Dirac flow of G."""
+        return self.d(F, self.dirac_flow(G))
+
+    def reduce(self, x: Any) -> Reduction:
+        """Normal form of one entry with the rules used (for reports)."""
+        return self.system.reduce(x if isinstance(x, NCPoly) else NCPoly.scalar(x))
+
+
+class FreeTangentScene(FreeScene):
+    """The free scene with primitives perturbed by ε·flow (entries a + bε)."""
+
+    def __init__(self, base: FreeScene, flow: Mapping[str, Mat]) -> None:
+        super().__init__(base.tracker, base.system)
+        self.base = base
+        self.flow = dict(flow)
+        self.field = FreeDualField(base.field)
+        self.params = base.params
+        self._resolvents = base._resolvents
+        self._extras = base._extras
+        self._named = base._named
+
+    def _prim(self, key: str, poly: NCPoly) -> Mat:
+        dot = self.flow.get(key)
+        if dot is None:
+            b = NCPoly.zero(poly.row, poly.col)
+        else:
+            b = dot.a[0, 0] if isinstance(dot, Mat) else dot
+            if not isinstance(b, NCPoly) or b.shape != poly.shape:
+                raise TypeError(f"the flow's {key}-component must be a {poly.row}×{poly.col} polynomial")
+        return Mat.from_rows([[Dual(poly, b)]], self.field, poly.shape, self.tracker)
+
+    def _const_mat(self, p: NCPoly) -> Mat:
+        return Mat.from_rows([[Dual(p, NCPoly.zero(p.row, p.col))]], self.field, p.shape, self.tracker)
+
+    def scalar_matrix(self, c: Any, m: Any, tag: str | None = None) -> Mat:
+        M = self.base.scalar_matrix(c, m, tag)
+        return _lift_mat(M, self.field)
+
+    def zeros(self, m: Any, k: Any, tags=(None, None)) -> Mat:
+        return _lift_mat(self.base.zeros(m, k, tags), self.field)
+
+    def dirac_flow(self, H: Function) -> Flow:
+        raise TypeError("flows are built on the base scene, not along a tangent")
+
+
+def _lift_mat(M: Mat, field: Field) -> Mat:
+    a = np.empty(M.a.shape, dtype=object)
+    for idx, x in np.ndenumerate(M.a):
+        a[idx] = Dual(x, NCPoly.zero(x.row, x.col) if isinstance(x, NCPoly) else se.Integer(0))
+    return Mat(a, field, M.tags, M.tracker)
+
+
+def _map_value(v: Any, scene: FreeScene) -> Any:
+    """The ε-part of a value computed on a tangent scene, normalized."""
+    return _map_entries(v, lambda x: _eps_part(x, scene), scene)
+
+
+def _map_entries(v: Any, f: Callable[[Any], Any], scene: FreeScene) -> Any:
+    if isinstance(v, Mat):
+        a = np.empty(v.a.shape, dtype=object)
+        for idx, x in np.ndenumerate(v.a):
+            a[idx] = f(x)
+        return Mat(a, scene.field, v.tags, scene.tracker)
+    if isinstance(v, dict):
+        return {k: _map_entries(x, f, scene) for k, x in v.items()}
+    if isinstance(v, (list, tuple)):
+        return type(v)(_map_entries(x, f, scene) for x in v)
+    return f(v)
+
+
+def _eps_part(x: Any, scene: FreeScene) -> Any:
+    if isinstance(x, Dual):
+        return scene.field.normalize(x.b)
+    if isinstance(x, NCPoly):
+        return NCPoly.zero(x.row, x.col)
+    return se.Integer(0)
+
+
+# ---------------------------------------------------------------------------
+def solve_multipliers(equations: list[NCPoly], unknowns: list[Letter],
+                      system: RewritingSystem) -> dict[Letter, NCPoly]:
+    """Solve equations of the form c·U + (terms free of the unknowns) = 0, one unknown at a time.
+
+    Solved unknowns are substituted into the remaining equations; a solution
+    must be self-adjoint when the unknown is.  Raises FreeSolveError otherwise."""
+    solved: dict[Letter, NCPoly] = {}
+    pending = list(equations)
+    todo = list(unknowns)
+    while todo:
+        progress = False
+        for k, eq in enumerate(pending):
+            eq = system.normal_form(substitute(eq, solved)) if solved else eq
+            pending[k] = eq
+            for U in todo:
+                sol = _isolate(eq, U, todo)
+                if sol is None:
+                    continue
+                sol = system.normal_form(sol)
+                if U.adjoint == U and U.adjoint_sign == 1 and not system.is_zero(sol.star() - sol):
+                    raise FreeSolveError(f"the solution for {U} is not symmetric: {sol}")
+                solved[U] = sol
+                todo.remove(U)
+                pending.pop(k)
+                progress = True
+                break
+            if progress:
+                break
+        if not progress:
+            names = ", ".join(map(str, todo))
+            raise FreeSolveError(f"the multipliers {names} are not of the form c·U + (terms free of U) = 0 "
+                                 "after reduction; solve them with a coordinate backend")
+    return solved
+
+
+def _isolate(eq: NCPoly, U: Letter, unknowns: list[Letter]) -> NCPoly | None:
+    """−rest/c if eq = c·U + rest with c a nonzero scalar and rest free of all unknowns."""
+    c = eq.terms.get(((), (U,)))
+    if c is None or simplify_coef(c) == 0:
+        return None
+    rest = NCPoly({k: v for k, v in eq.terms.items() if k != ((), (U,))}, eq.row, eq.col)
+    if rest.letters() & set(unknowns):
+        return None
+    return rest * (se.Integer(-1) / c)

@@ -1,0 +1,457 @@
+"""The command line, through click's CliRunner (with a fake runner and catalog) and
+as a real subprocess (``python -m stiefelsym``, with the real engine)."""
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+from stiefelsym import cli
+from stiefelsym.claims import Claim, Registry, admissible
+from stiefelsym.results import PASSING, Result, load_results
+from stiefelsym.scene import SizeError
+
+EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "my_claims.py"
+
+
+# --------------------------------------------------------------------------- fakes
+
+class FakeRunner:
+    """The runner API of stiefelsym.runner, with verdicts chosen per claim id."""
+
+    METHODS = ("auto", "exact", "rational", "modular", "float", "free")
+
+    class BudgetError(ValueError):
+        pass
+
+    def __init__(self, verdicts: dict[str, str] | None = None, expected: dict[str, bool] | None = None,
+                 interrupt_after: int | None = None) -> None:
+        self.verdicts = verdicts or {}
+        self.expected = expected or {}
+        self.interrupt_after = interrupt_after
+        self.calls: list[dict] = []
+
+    def select(self, registry: Registry, ids: list[str]) -> list[Claim]:
+        return [registry.get(i) for i in ids]
+
+    def verify(self, claims, *, sizes=None, methods=("auto",), seed=0, on_result=None, on_plan=None):
+        self.calls.append({"claims": [c.id for c in claims], "sizes": sizes, "methods": methods,
+                           "seed": seed})
+        for s in sizes or ():
+            if s.r > s.n or s.r < 1:
+                raise SizeError(f"inadmissible size n={s.n}, r={s.r}")
+            if s.n > 6:
+                raise self.BudgetError(f"size n={s.n} is beyond the budget of method auto (n <= 6)")
+        runs = [(c, s, m) for c in claims for s in (sizes or list(c.sizes)[:2]) for m in methods]
+        if on_plan:
+            on_plan(len(runs))
+        out = []
+        for i, (c, s, m) in enumerate(runs):
+            if self.interrupt_after is not None and i == self.interrupt_after:
+                raise KeyboardInterrupt
+            verdict = self.verdicts.get(c.id, "checked")
+            r = Result(claim=c.id, paper=list(c.paper), section=c.section, kind=c.kind,
+                       title=c.title, statement=c.statement, n=s.n, r=s.r, method=m,
+                       verdict=verdict, expected=self.expected.get(c.id, verdict in PASSING),
+                       seconds=0.01, seed=seed,
+                       false_pass_bound=1e-30 if verdict == "checked" else None,
+                       witness={"seed": seed, "entry": "(1,2)", "value": "3/7"}
+                       if verdict == "fails" else None)
+            out.append(r)
+            if on_result:
+                on_result(r)
+        return out
+
+    def rerun_command(self, r: Result) -> str:
+        return f"stiefelsym verify {r.claim} --size {r.n},{r.r} --method {r.method} --seed {r.seed}"
+
+
+def _claim(cid: str, section: str, kind: str = "id") -> Claim:
+    return Claim(id=cid, paper=(cid.replace("-", "_"),), kind=kind, section=section,
+                 func=lambda s: {}, sizes=admissible(n_max=3),
+                 statement=r"\frac{d}{dt}\Phi = [XX^T, A]",
+                 title="Along every Neumann flow, dΦ/dt = [XXᵀ, A].", source="proofs.fake")
+
+
+@pytest.fixture
+def catalog() -> Registry:
+    reg = Registry()
+    for cid, sec in (("prep", "5"), ("Neumann-LA", "5"), ("ddim", "2")):
+        reg.add(_claim(cid, sec))
+    return reg
+
+
+@pytest.fixture
+def fake(monkeypatch, catalog):
+    runner = FakeRunner()
+    monkeypatch.setattr(cli, "_runner", lambda: runner)
+    monkeypatch.setattr(cli, "_catalog", lambda: catalog)
+    return runner
+
+
+@pytest.fixture
+def run(tmp_path):
+    """Invoke the CLI in an empty working directory; stdout and stderr apart."""
+    def invoke(*args: str):
+        old = os.getcwd()
+        os.chdir(tmp_path)
+        try:
+            return CliRunner().invoke(cli.main, list(args), prog_name="stiefelsym")
+        finally:
+            os.chdir(old)
+    return invoke
+
+
+def _one_line_error(result) -> str:
+    assert result.exit_code == 2, (result.exit_code, result.output)
+    assert "Traceback" not in result.output
+    lines = result.stderr.strip().splitlines()
+    assert len(lines) == 1, result.stderr
+    assert result.stdout == ""
+    return lines[0]
+
+
+# --------------------------------------------------------------------------- list, show
+
+def test_list_shows_every_claim_with_label_kind_section(fake, run):
+    result = run("list")
+    assert result.exit_code == 0
+    assert result.stdout.splitlines()[0].split() == ["id", "paper", "kind", "§", "sizes"]
+    for cid, label, sec in (("prep", "prep", "5"), ("Neumann-LA", "Neumann_LA", "5"),
+                            ("ddim", "ddim", "2")):
+        row = next(line for line in result.stdout.splitlines() if line.startswith(cid + " "))
+        assert row.split()[:4] == [cid, label, "id", sec]
+        assert "6 sizes, n 1..3, r 1..3" in row
+
+
+def test_show_prints_statement_docstring_sizes_source(fake, run):
+    result = run("show", "prep")
+    assert result.exit_code == 0
+    out = result.stdout
+    assert r"\frac{d}{dt}\Phi = [XX^T, A]" in out
+    assert "Along every Neumann flow" in out
+    assert "(1,1) (2,1) (2,2) (3,1) (3,2) (3,3)" in out
+    assert "source:" in out and "test_cli.py" in out
+
+
+def test_show_unknown_claim_is_one_line(fake, run):
+    assert "unknown claim 'prepp'" in _one_line_error(run("show", "prepp"))
+
+
+def test_bare_command_prints_help(run):
+    result = run()
+    assert result.exit_code == 0
+    assert "verify" in result.stdout and "Exit status" in result.stdout
+
+
+# --------------------------------------------------------------------------- verify
+
+def test_verify_prints_one_line_per_result_and_a_summary(fake, run):
+    result = run("verify", "prep", "--size", "4,2", "--method", "modular", "--method", "rational")
+    assert result.exit_code == 0, result.output
+    lines = result.stdout.splitlines()
+    assert lines[0].startswith("prep (4,2) modular: checked")
+    assert lines[1].startswith("prep (4,2) rational: checked")
+    assert lines[2].startswith("summary: 1 claim, 2 runs: 2 as expected, 0 unexpected")
+    assert any(line.split()[:2] == ["modular", "-"] for line in lines)
+    assert fake.calls[0]["methods"] == ("modular", "rational")
+    assert "no report written" in result.stderr
+
+
+def test_unexpected_verdict_exits_1_and_prints_rerun(fake, run):
+    fake.verdicts["prep"] = "fails"
+    result = run("verify", "prep", "ddim", "--seed", "7")
+    assert result.exit_code == 1
+    lines = result.stdout.splitlines()
+    i = next(i for i, line in enumerate(lines) if line.startswith("prep (1,1) auto: fails"))
+    assert lines[i].endswith("UNEXPECTED")
+    assert lines[i + 1] == "  rerun: stiefelsym verify prep --size 1,1 --method auto --seed 7"
+    assert "unexpected verdicts:" in result.stdout
+
+
+def test_expected_failure_exits_0_but_still_prints_rerun(fake, run):
+    fake.verdicts["prep"] = "fails"
+    fake.expected["prep"] = True
+    result = run("verify", "prep")
+    assert result.exit_code == 0
+    assert "  rerun: stiefelsym verify prep" in result.stdout
+
+
+def test_format_json_is_the_results_document(fake, run):
+    result = run("verify", "prep", "ddim", "--format", "json", "--seed", "3")
+    assert result.exit_code == 0
+    payload = json.loads(result.stdout)
+    assert [r["claim"] for r in payload["results"]] == ["prep"] * 2 + ["ddim"] * 2
+    assert payload["meta"]["seed"] == 3
+    assert payload["meta"]["command"] == "stiefelsym verify prep ddim --method auto --seed 3"
+    assert "prep (1,1) auto: checked" in result.stderr  # the lines go to stderr
+
+
+def test_format_junit_parses_with_failures_for_unexpected(fake, run):
+    fake.verdicts["ddim"] = "error"
+    result = run("verify", "--format", "junit")
+    assert result.exit_code == 1
+    root = ET.fromstring(result.stdout)
+    cases = root.findall(".//testcase")
+    assert len(cases) == 6
+    failed = [c.get("name") for c in cases if c.find("failure") is not None]
+    assert failed == ["ddim[n=1,r=1]-auto", "ddim[n=2,r=1]-auto"]
+
+
+def test_full_catalog_run_writes_reports(fake, run, tmp_path):
+    result = run("verify")
+    assert result.exit_code == 0
+    for name in cli.REPORT_FILES:
+        assert (tmp_path / "reports" / name).is_file()
+    meta, results = load_results(tmp_path / "reports" / "results.json")
+    assert len(results) == 6 and meta["command"] == "stiefelsym verify --method auto --seed 0"
+    assert "python" in meta["versions"]
+
+
+def test_partial_run_leaves_default_reports_alone(fake, run, tmp_path):
+    for args in (["prep"], ["--size", "3,1"]):
+        result = run("verify", *args)
+        assert result.exit_code == 0
+        assert not (tmp_path / "reports").exists()
+        assert "no report written" in result.stderr
+
+
+def test_partial_run_writes_to_explicit_report_dir(fake, run, tmp_path):
+    result = run("verify", "prep", "--report-dir", "out/sub")
+    assert result.exit_code == 0
+    assert sorted(p.name for p in (tmp_path / "out" / "sub").iterdir()) == sorted(cli.REPORT_FILES)
+
+
+def test_no_report_writes_nothing(fake, run, tmp_path):
+    assert run("verify", "--no-report").exit_code == 0
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_user_claims_file_with_catalog_claim(fake, run, tmp_path):
+    path = tmp_path / "mine.py"
+    path.write_text(
+        "from stiefelsym.claims import admissible, claim\n\n"
+        "@claim('mine', paper='prep', kind='id', section='5', sizes=admissible(n_max=2))\n"
+        "def mine(s):\n"
+        "    \"\"\"A claim of my own.\"\"\"\n"
+        "    return {}\n")
+    fake.verdicts["mine"] = "fails"
+    result = run("verify", "--claims", "mine.py")
+    assert result.exit_code == 1
+    assert fake.calls[-1]["claims"] == ["mine"]
+    assert "  rerun: stiefelsym verify mine --size 1,1 --method auto --seed 0 --claims mine.py" \
+        in result.stdout.splitlines()
+    result = run("verify", "mine", "ddim", "--claims", "mine.py")
+    assert fake.calls[-1]["claims"] == ["mine", "ddim"]
+
+
+def test_progress_bar_does_not_touch_stdout(fake, run, monkeypatch):
+    monkeypatch.setattr(cli, "_isatty", lambda stream: True)
+    result = run("verify", "prep")
+    assert result.exit_code == 0
+    assert [line.split(":")[0] for line in result.stdout.splitlines()[:2]] == \
+        ["prep (1,1) auto", "prep (2,1) auto"]
+
+
+def test_interrupt_exits_130_and_writes_no_report(fake, run, tmp_path):
+    fake.interrupt_after = 1
+    result = run("verify")
+    assert result.exit_code == 130
+    assert "Traceback" not in result.output
+    assert result.stderr.strip().splitlines()[-1] == \
+        "stiefelsym: interrupted after 1 of 6 runs; no report written"
+    assert not (tmp_path / "reports").exists()
+
+
+def test_interrupt_keeps_existing_reports_whole(fake, run, tmp_path):
+    assert run("verify").exit_code == 0
+    before = {n: (tmp_path / "reports" / n).read_text() for n in cli.REPORT_FILES}
+    fake.interrupt_after = 3
+    assert run("verify").exit_code == 130
+    assert {n: (tmp_path / "reports" / n).read_text() for n in cli.REPORT_FILES} == before
+    assert sorted(p.name for p in (tmp_path / "reports").iterdir()) == sorted(cli.REPORT_FILES)
+
+
+# --------------------------------------------------------------------------- bad input
+
+BAD_SIZES = {
+    "4": "is not a size",
+    "a,b": "is not a size",
+    "4,2,1": "is not a size",
+    "2,3": "r = 3 > n = 2",
+    "3,0": "r = 0",
+    "-4,2": "r = 2 > n = -4",
+}
+
+
+@pytest.mark.parametrize("size", list(BAD_SIZES))
+def test_bad_size_is_one_line(fake, run, size):
+    line = _one_line_error(run("verify", "prep", "--size", size))
+    assert BAD_SIZES[size] in line and line.startswith("stiefelsym verify: error:")
+    assert fake.calls == []
+
+
+@pytest.mark.parametrize("args, message", [
+    (["--method", "exactly"], "unknown method 'exactly'"),
+    (["--seed", "-1"], "-1 is not in the range"),
+    (["--seed", "x"], "'x' is not a valid integer"),
+    (["--format", "pdf"], "'pdf' is not one of"),
+    (["--frobnicate"], "--frobnicate"),
+    (["nosuch"], "unknown claim 'nosuch'"),
+    (["--claims", "missing.py"], "claims file not found: missing.py"),
+    (["--no-report", "--report-dir", "x"], "contradict"),
+])
+def test_bad_input_is_one_line(fake, run, args, message):
+    assert message in _one_line_error(run("verify", *args))
+    assert fake.calls == []
+
+
+@pytest.mark.parametrize("source, message", [
+    ("def f(:\n", "SyntaxError"),
+    ("import no_such_module_anywhere\n", "ModuleNotFoundError"),
+    ("x = 1\n", "defines no claims"),
+    ("from stiefelsym.claims import claim\n"
+     "@claim('c', paper='p', kind='nonsense')\ndef c(s):\n    return {}\n", "unknown kind"),
+])
+def test_malformed_claims_file_is_one_line(fake, run, tmp_path, source, message):
+    (tmp_path / "bad.py").write_text(source)
+    assert message in _one_line_error(run("verify", "--claims", "bad.py"))
+
+
+def test_budget_and_size_errors_from_the_runner_are_one_line(fake, run):
+    assert "beyond the budget" in _one_line_error(run("verify", "prep", "--size", "9,2"))
+
+
+def test_report_dir_under_a_file_is_refused_before_running(fake, run, tmp_path):
+    (tmp_path / "afile").write_text("")
+    line = _one_line_error(run("verify", "--report-dir", "afile/reports"))
+    assert "cannot write reports to afile/reports" in line and "not a directory" in line
+    assert fake.calls == []
+
+
+@pytest.mark.skipif(os.geteuid() == 0, reason="root writes to read-only directories")
+def test_read_only_report_dir_is_refused_before_running(fake, run, tmp_path):
+    ro = tmp_path / "ro"
+    ro.mkdir()
+    ro.chmod(0o555)
+    try:
+        assert "cannot write reports" in _one_line_error(run("verify", "--report-dir", "ro/x"))
+    finally:
+        ro.chmod(0o755)
+    assert fake.calls == []
+
+
+@pytest.mark.skipif(not Path("/proc/self").is_dir(), reason="needs /proc")
+def test_unwritable_report_dir_is_refused_even_for_root(fake, run):
+    assert "cannot write reports" in _one_line_error(
+        run("verify", "--report-dir", "/proc/stiefelsym-reports"))
+    assert fake.calls == []
+
+
+# --------------------------------------------------------------------------- report
+
+def test_report_rerenders_from_results(fake, run, tmp_path):
+    assert run("verify", "--report-dir", "r").exit_code == 0
+    (tmp_path / "r" / "verification.md").unlink()
+    result = run("report", "--results", "r/results.json")
+    assert result.exit_code == 0, result.output
+    assert "`prep`" in (tmp_path / "r" / "verification.md").read_text()
+    result = run("report", "--results", "r/results.json", "--report-dir", "elsewhere")
+    assert (tmp_path / "elsewhere" / "verification.tex").is_file()
+
+
+def test_report_bad_results_file_is_one_line(run, tmp_path):
+    assert "results file not found" in _one_line_error(run("report"))
+    (tmp_path / "junk.json").write_text("{not json")
+    assert "not a stiefelsym results file" in _one_line_error(run("report", "--results", "junk.json"))
+    (tmp_path / "wrong.json").write_text('{"results": [{"claim": 1}]}')
+    assert "not a stiefelsym results file" in _one_line_error(run("report", "--results", "wrong.json"))
+
+
+def test_every_kind_is_explained():
+    from stiefelsym.claims import KINDS
+    assert set(cli.KIND_MEANING) == set(KINDS)
+
+
+def test_method_help_names_every_runner_method():
+    from stiefelsym import runner
+    for m in runner.METHODS:
+        assert f"{m}:" in cli.METHOD_HELP
+
+
+# --------------------------------------------------------------------------- subprocess
+
+def stiefelsym(*args: str, cwd: Path, timeout: float = 120) -> subprocess.CompletedProcess:
+    env = {k: v for k, v in os.environ.items() if not k.startswith("PYTEST")}
+    return subprocess.run([sys.executable, "-m", "stiefelsym", *args], cwd=cwd, env=env,
+                          capture_output=True, text=True, timeout=timeout, stdin=subprocess.DEVNULL)
+
+
+def _sub_error(proc: subprocess.CompletedProcess) -> str:
+    assert proc.returncode == 2, (proc.returncode, proc.stderr)
+    assert "Traceback" not in proc.stderr + proc.stdout
+    lines = proc.stderr.strip().splitlines()
+    assert len(lines) == 1, proc.stderr
+    return lines[0]
+
+
+def test_subprocess_help_and_version(tmp_path):
+    proc = stiefelsym("--help", cwd=tmp_path)
+    assert proc.returncode == 0 and "verify" in proc.stdout
+    proc = stiefelsym("--version", cwd=tmp_path)
+    assert proc.returncode == 0 and proc.stdout.startswith("stiefelsym, version")
+
+
+@pytest.mark.parametrize("args, message", [
+    (["verify", "--size", "4"], "is not a size"),
+    (["verify", "--size", "a,b"], "is not a size"),
+    (["verify", "--size", "4,2,1"], "is not a size"),
+    (["verify", "--size", "2,3"], "r = 3 > n = 2"),
+    (["verify", "--size", "3,0"], "r = 0"),
+    (["verify", "--seed", "-5"], "-5 is not in the range"),
+    (["verify", "--claims", "missing.py"], "claims file not found"),
+    (["verify", "--method", "bogus"], "unknown method 'bogus'"),
+    (["verify", "no-such-claim"], "unknown claim 'no-such-claim'"),
+    (["show", "no-such-claim"], "unknown claim 'no-such-claim'"),
+    (["report"], "results file not found"),
+])
+def test_subprocess_bad_input(tmp_path, args, message):
+    assert message in _sub_error(stiefelsym(*args, cwd=tmp_path))
+
+
+def test_subprocess_unwritable_report_dir(tmp_path):
+    (tmp_path / "afile").write_text("")
+    assert "not a directory" in _sub_error(
+        stiefelsym("verify", "--report-dir", "afile/sub", cwd=tmp_path))
+
+
+def test_subprocess_list_and_show_the_catalog(tmp_path):
+    proc = stiefelsym("list", cwd=tmp_path)
+    assert proc.returncode == 0, proc.stderr
+    rows = proc.stdout.splitlines()[1:]
+    assert rows, "the catalog is empty"
+    first = rows[0].split()[0]
+    proc = stiefelsym("show", first, cwd=tmp_path)
+    assert proc.returncode == 0 and proc.stdout.startswith(first)
+
+
+def test_subprocess_verify_example_claims_as_json(tmp_path):
+    proc = stiefelsym("verify", "--claims", str(EXAMPLE), "--size", "3,2", "--method", "modular",
+                      "--format", "json", "--no-report", cwd=tmp_path)
+    assert proc.returncode == 0, proc.stderr
+    payload = json.loads(proc.stdout)
+    assert {r["claim"] for r in payload["results"]} == {"my-prep", "my-psi-conserved"}
+    assert all(r["verdict"] in PASSING for r in payload["results"])
+
+
+def test_subprocess_verify_junit(tmp_path):
+    proc = stiefelsym("verify", "--claims", str(EXAMPLE), "--size", "3,1", "--method", "modular",
+                      "--format", "junit", "--no-report", cwd=tmp_path)
+    assert proc.returncode == 0, proc.stderr
+    assert len(ET.fromstring(proc.stdout).findall(".//testcase")) == 2

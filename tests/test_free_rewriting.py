@@ -1,0 +1,237 @@
+"""Rewriting: decreasing rules, confluence of the rule sets in use, unique and sound normal forms."""
+from __future__ import annotations
+
+import random
+from fractions import Fraction
+
+import numpy as np
+import pytest
+import symengine as se
+
+from stiefelsym.fields import RationalField
+from stiefelsym.free.algebra import NCPoly, evaluate, symmetric_letter, trace
+from stiefelsym.free.rewriting import (Order, RewritingError, RewritingSystem, complete, critical_pairs,
+                                       is_confluent)
+from stiefelsym.free.scene import A, FreeScene, P, Pt, X, Xt, resolvent_letter, standard_system
+from stiefelsym.scene import Scene
+
+lam, mu = se.Symbol("lambda"), se.Symbol("mu")
+
+
+def w(*letters):
+    return NCPoly.word(letters)
+
+
+def rule_set(name: str) -> RewritingSystem:
+    """The rule sets the free scene builds: constraints, resolvents, A^{-1}, a second point."""
+    s = FreeScene()
+    if name in ("resolvent", "two resolvents", "everything"):
+        s.resolvent(s.lam)
+    if name in ("two resolvents", "everything"):
+        s.resolvent(mu)
+        s.resolvent(s.lam + 1)
+    if name == "everything":
+        s.Ainv
+        s.Y
+    return s.system
+
+
+RULE_SETS = ["constraints", "resolvent", "two resolvents", "everything"]
+
+
+@pytest.mark.parametrize("name", RULE_SETS)
+def test_every_rule_decreases_and_has_a_reason(name):
+    system = rule_set(name)
+    assert system.rules
+    for rule in system.rules:
+        assert system.decreasing(rule), rule
+        assert rule.reason
+        assert rule.rhs.shape == (rule.lhs[0].row, rule.lhs[-1].col)
+
+
+@pytest.mark.parametrize("name", RULE_SETS)
+def test_critical_pairs_of_the_rule_sets_in_use_all_resolve(name):
+    """Confluence proof (diamond lemma): every overlap, inclusion and cyclic critical pair resolves."""
+    system = rule_set(name)
+    pairs = critical_pairs(system)
+    unresolved = [str(p) for p in pairs if not p.joinable]
+    assert not unresolved, unresolved
+    if name != "constraints":
+        kinds = {p.kind for p in pairs}
+        assert {"overlap", "cyclic"} <= kinds
+
+
+def test_the_constraint_rules_have_no_critical_pairs():
+    assert critical_pairs(standard_system()) == []
+    assert is_confluent(standard_system())
+
+
+def test_rules_that_do_not_decrease_or_are_ill_typed_are_rejected():
+    system = standard_system()
+    with pytest.raises(RewritingError, match="does not decrease"):
+        system.add_rule((Xt, P), -w(Pt, X), "wrong orientation")
+    with pytest.raises(RewritingError):
+        system.add_rule((X, Pt), NCPoly.identity("r"), "wrong type")
+    with pytest.raises(TypeError):
+        system.add_rule((X, X), w(X), "ill-typed")
+    with pytest.raises(RewritingError, match="exists"):
+        system.add_rule((Xt, X), NCPoly.identity("r"), "duplicate")
+
+
+# ---------------------------------------------------------------------------
+def _letters() -> list:
+    return [X, Xt, P, Pt, A, resolvent_letter(lam)]
+
+
+def random_word(rng, letters, row, col, length):
+    out, t = [], row
+    for _ in range(length):
+        L = rng.choice([L for L in letters if L.row == t])
+        out.append(L)
+        t = L.col
+    if t != col:
+        out.append(X if t == "n" else Xt)
+    return tuple(out)
+
+
+def random_poly(rng, letters, row, col, terms=5, length=7):
+    p = NCPoly.zero(row, col)
+    for _ in range(terms):
+        c = rng.choice([1, -1, 2]) * rng.choice([se.Integer(1), lam, se.Symbol("kappa")])
+        p = p + NCPoly.word(random_word(rng, letters, row, col, rng.randint(0, length)), row, c)
+    return p
+
+
+def reduce_randomly(system: RewritingSystem, p: NCPoly, rng: random.Random) -> NCPoly:
+    """Reduce at randomly chosen occurrences (another strategy than the leftmost one)."""
+    terms = dict(p.expand().terms)
+    while True:
+        reducible = []
+        for key, c in terms.items():
+            word = key[1]
+            for i in range(len(word)):
+                for rule in system.rules:
+                    if word[i:i + len(rule.lhs)] == rule.lhs:
+                        reducible.append((key, i, rule))
+        if not reducible:
+            return NCPoly(terms, p.row, p.col).expand()
+        key, i, rule = rng.choice(reducible)
+        c = terms.pop(key)
+        word = key[1]
+        for (_, rw), rc in rule.rhs.terms.items():
+            k = ((), word[:i] + rw + word[i + len(rule.lhs):])
+            terms[k] = se.expand(terms.get(k, 0) + c * rc)
+        terms = {k: v for k, v in terms.items() if v != 0}
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_normal_forms_do_not_depend_on_the_reduction_strategy(seed):
+    rng = random.Random(seed)
+    system = rule_set("resolvent")
+    letters = _letters()
+    for row, col in [("n", "r"), ("r", "r"), ("n", "n"), ("r", "n")]:
+        p = random_poly(rng, letters, row, col)
+        nf = system.normal_form(p)
+        assert reduce_randomly(system, p, rng) == nf
+        assert system.normal_form(nf) == nf
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_trace_normal_forms_are_cyclic_and_adjoint_invariant(seed):
+    rng = random.Random(100 + seed)
+    system = rule_set("resolvent")
+    letters = _letters()
+    for _ in range(5):
+        p, q = random_poly(rng, letters, "n", "r", 3, 5), random_poly(rng, letters, "r", "n", 3, 5)
+        t1 = system.normal_form(trace(system.normal_form(p * q)))
+        t2 = system.normal_form(trace(system.normal_form(q * p)))
+        t3 = system.normal_form(trace(system.normal_form((p * q).star())))
+        assert t1 == t2 == t3
+    assert not system.trace_fallbacks
+    assert system.trace_normal_form((Xt, P)) == 0  # XᵀP is skew on T*V
+    assert system.trace_normal_form((X, Xt)) == NCPoly.scalar(se.Symbol("r"))
+
+
+def fraction_inverse(M: np.ndarray) -> np.ndarray:
+    """Gauss-Jordan inverse over the rationals."""
+    m = M.shape[0]
+    rows = [[Fraction(x) for x in M[i]] + [Fraction(int(i == j)) for j in range(m)] for i in range(m)]
+    for col in range(m):
+        piv = next(i for i in range(col, m) if rows[i][col] != 0)
+        rows[col], rows[piv] = rows[piv], rows[col]
+        rows[col] = [x / rows[col][col] for x in rows[col]]
+        for i in range(m):
+            if i != col and rows[i][col] != 0:
+                f = rows[i][col]
+                rows[i] = [a - f * b for a, b in zip(rows[i], rows[col])]
+    return np.array([row[m:] for row in rows], dtype=object)
+
+
+def exact_point(n: int, r: int, seed: int):
+    """A rational point of T*V_{n,r} (the Cayley chart of the coordinate scene), a symmetric A and R_λ."""
+    sc = Scene(n, r, RationalField(), chart="cayley", rng=random.Random(seed))
+    frac = lambda M: np.array([[Fraction(int(x.p), int(x.q)) for x in row] for row in M.a], dtype=object)
+    rng = random.Random(seed)
+    B = np.array([[Fraction(rng.randint(-4, 4)) for _ in range(n)] for _ in range(n)], dtype=object)
+    Am = B + B.T
+    lam_value = Fraction(7, 3)
+    Rm = fraction_inverse(lam_value * np.identity(n, dtype=object) - Am)
+    values = {"X": frac(sc.X), "P": frac(sc.P), "A": Am, str(resolvent_letter(lam)): Rm}
+    return values, {lam: lam_value, se.Symbol("kappa"): Fraction(-5, 11)}
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_normal_forms_are_sound_at_an_exact_point(seed):
+    """Every rule holds on T*V: p and nf(p) agree at a rational point (n=5, r=2)."""
+    values, scalars = exact_point(5, 2, seed)
+    Rm = values[str(resolvent_letter(lam))]
+    assert ((scalars[lam] * np.identity(5, dtype=object) - values["A"]).dot(Rm) == np.identity(5)).all()
+    rng = random.Random(seed)
+    system = rule_set("resolvent")
+    letters = _letters()
+    for row, col in [("n", "r"), ("r", "r"), ("n", "n")]:
+        p = random_poly(rng, letters, row, col)
+        assert (evaluate(p, values, scalars) == evaluate(system.normal_form(p), values, scalars)).all()
+        t = trace(p * p.star())
+        assert evaluate(t, values, scalars) == evaluate(system.normal_form(t), values, scalars)
+
+
+def test_reductions_record_their_rules_and_print_a_derivation():
+    s = FreeScene()
+    R = s.resolvent(s.lam).a[0, 0]
+    p = w(Pt, X) + w(Xt, A) * R * w(X)
+    red = s.system.reduce(p)
+    assert {r.name for r in red.rules} == {"PtX", "XtX", f"A{resolvent_letter(lam)}"}
+    assert red.normal_form == -w(Xt, P) - NCPoly.identity("r") + (w(Xt) * R * w(X)) * lam
+    tex = red.latex()
+    assert r"\operatorname{nf}(R)" in tex and "cond" in tex and r"\to" in tex
+    assert s.system.reduce(w(X)).rules == []
+
+
+# ---------------------------------------------------------------------------
+def test_completion_adds_the_missing_rules_and_finishes():
+    a, b = symmetric_letter("a", "r"), symmetric_letter("b", "r")
+    system = RewritingSystem(Order([a, b]))
+    system.add_rule((a, b), w(b), "toy", "r1")
+    system.add_rule((b, a), w(a), "toy", "r2")
+    assert not is_confluent(system, cyclic=False)
+    result = complete(system)
+    assert result.finished
+    assert {r.lhs for r in result.added} == {(a, a), (b, b)}
+    assert all(r.reason.startswith("completion of r") for r in result.added)
+    assert is_confluent(result.system, cyclic=False)
+    assert len(system.rules) == 2  # the input is not modified
+
+
+def test_completion_reports_when_it_does_not_finish():
+    a, b = symmetric_letter("a", "r"), symmetric_letter("b", "r")
+    system = RewritingSystem(Order([a, b]))
+    system.add_rule((b, a, b), w(a, b, a), "braid relation", "braid")
+    result = complete(system, max_rules=8)
+    assert not result.finished
+    assert "more than 8 rules" in result.message
+
+
+def test_completion_of_the_standard_rule_sets_adds_nothing():
+    result = complete(rule_set("everything"))
+    assert result.finished and not result.added
