@@ -48,6 +48,8 @@ class Result:
     rerun: str = ""
     message: str = ""
     variant: str | None = None
+    #: for the dimension-free method: LaTeX derivations (residual, rules, normal form)
+    derivation: list[str] = field(default_factory=list)
 
     @property
     def size(self) -> str:

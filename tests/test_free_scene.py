@@ -26,7 +26,7 @@ KAPPAS = {"kappa": None, "normal": 0, "euclidean": Fraction(-1, 2)}
 
 
 def neumann_flow(s, kappa, flip: str = "") -> Flow:
-    """(No): Ẋ = P − (1+2κ)XPᵀX, Ṗ = −AX − XPᵀP + (1+2κ)PXᵀP + XXᵀAX (``flip`` corrupts one sign)."""
+    """(No): Ẋ = P − (1+2κ)XPᵀX, Ṗ = −AX − XPᵀP + (1+2κ)PXᵀP + XXᵀAX; ``flip`` corrupts a sign."""
     X, P, A = s.X, s.P, s.A
     c = 1 + 2 * (s.kappa if kappa is None else kappa)
     sx = -1 if flip == "Xdot" else 1
@@ -239,8 +239,16 @@ def test_coordinate_objects_raise_needs_coordinates():
         s.X.T.__matmul__(s.X).inv()
     with pytest.raises(NeedsCoordinates):
         s.scalar_matrix(s.lam, 3)
-    with pytest.raises(TypeError):
+    with pytest.raises(NeedsCoordinates):
         range(s.n)
+    with pytest.raises(NeedsCoordinates):
+        s.r >= 2
+    with pytest.raises(NeedsCoordinates):
+        FreeScene(realization="metric")
+    with pytest.raises(NeedsCoordinates):
+        s.jacobian(lambda t: t.X)
+    with pytest.raises(AttributeError):
+        s.no_such_thing
 
 
 def test_multipliers_outside_the_solvable_form_are_reported():

@@ -22,8 +22,27 @@ from ..fields import Dual
 
 #: index type of scalars
 SCALAR = "1"
+
+
+class NeedsCoordinates(Exception):
+    """The claim needs an object the dimension-free backend cannot provide."""
+
+    def __init__(self, what: str) -> None:
+        super().__init__(f"{what} needs coordinates (fixed n, r); use a coordinate backend")
+        self.what = what
+
+
+class Dimension(se.Symbol):
+    """The symbol n or r: usable in formulas (tr I_r = r), not as an integer or in comparisons."""
+
+    def _refuse(self, *args: Any) -> Any:
+        raise NeedsCoordinates(f"using the dimension {self} as a number")
+
+    __index__ = __int__ = __lt__ = __le__ = __gt__ = __ge__ = _refuse
+
+
 #: dimension symbols: tr(I_n) = n, tr(I_r) = r
-DIMENSIONS = {"n": se.Symbol("n"), "r": se.Symbol("r"), SCALAR: se.Integer(1)}
+DIMENSIONS = {"n": Dimension("n"), "r": Dimension("r"), SCALAR: se.Integer(1)}
 
 Coef = Any  # a symengine expression
 

@@ -319,6 +319,15 @@ class RewritingSystem:
         return out, used
 
     # -- polynomials ------------------------------------------------------------
+    def rules_applied(self) -> list[Rule]:
+        """Every rule used by some reduction so far (in rule order): the rules a whole
+        computation relied on, including the normalizations made while building it."""
+        names: set[str] = set()
+        for memo in (self._word_memo, self._cycle_memo, self._trace_memo):
+            for _value, used in memo.values():
+                names |= set(used)
+        return [r for r in self.rules if r.name in names]
+
     def reduce(self, p: NCPoly) -> Reduction:
         """Normal form of p with the rules used."""
         out: dict = {}

@@ -22,8 +22,8 @@ import symengine as se
 from ..fields import Dual, DualField, Field
 from ..matrix import CoordinateTracker, Mat
 from ..scene import Flow
-from .algebra import (DIMENSIONS, Letter, NCPoly, as_coef, coef_latex, derivation, letter_pair,
-                      skew_letter, substitute, symmetric_letter, trace)
+from .algebra import (DIMENSIONS, Letter, NCPoly, NeedsCoordinates, as_coef, coef_latex, derivation,
+                      letter_pair, skew_letter, substitute, symmetric_letter, trace)
 from .rewriting import Order, Reduction, RewritingSystem, simplify_coef
 from .traces import gradient
 
@@ -40,14 +40,6 @@ LAMBDA = symmetric_letter("Lambda", "r", r"\Lambda")
 
 COND_XX = "X^T X = I_r (cond_XP)"
 COND_XP = "X^T P + P^T X = 0 (cond_XP)"
-
-
-class NeedsCoordinates(Exception):
-    """The claim needs an object the dimension-free backend cannot provide."""
-
-    def __init__(self, what: str) -> None:
-        super().__init__(f"{what} needs coordinates (fixed n, r); use a coordinate backend")
-        self.what = what
 
 
 class FreeSolveError(ArithmeticError):
@@ -176,9 +168,13 @@ class FreeScene:
     """T*V_{n,r} for all n, r at once: the scene interface over the free algebra."""
 
     chart = "free"
-    realization = "standard"
+    realization = "standard"  # (cond_XP); other realizations raise NeedsCoordinates
 
-    def __init__(self, tracker: CoordinateTracker | None = None, system: RewritingSystem | None = None) -> None:
+    def __init__(self, tracker: CoordinateTracker | None = None, system: RewritingSystem | None = None,
+                 realization: str = "standard") -> None:
+        if realization != "standard":
+            raise NeedsCoordinates(f"the {realization!r} realization of T*V (its multipliers solve a "
+                                   "Sylvester equation)")
         self.system = system if system is not None else standard_system()
         self.field: Field = FreeField(self.system)
         self.tracker = tracker if tracker is not None else CoordinateTracker()
@@ -188,6 +184,14 @@ class FreeScene:
         self._resolvents: dict[Letter, Any] = {}
         self._extras: set[str] = set()
         self._named: dict[str, Letter] = {}
+
+    def __getattr__(self, name: str) -> Any:
+        """Coordinate-scene API this backend does not offer (jacobian, general_params, ...)."""
+        from ..scene import Scene
+
+        if not name.startswith("__") and hasattr(Scene, name):
+            raise NeedsCoordinates(f"Scene.{name}")
+        raise AttributeError(name)
 
     # -- primitives -----------------------------------------------------------
     def _cached(self, key: str, build: Callable[[], Any]) -> Any:
@@ -405,7 +409,10 @@ class FreeScene:
         return value
 
     def gradient(self, H: Function) -> tuple[Mat, Mat]:
-        """(∂H/∂X, ∂H/∂P) of the trace form H (of the formula as written)."""
+        """(∂H/∂X, ∂H/∂P) of the trace form H, as reduced by the scene's arithmetic.
+
+        The reduction changes H only off T*V, so Dirac flows are unaffected; the
+        canonical flow and the multipliers Λ, Π are those of the reduced form."""
         def build():
             h = self._hamiltonian(H)
             return (self._const_mat(self.system.normal_form(gradient(h, X))),
