@@ -24,22 +24,15 @@ from typing import Any, Sequence
 import click
 
 from .claims import CatalogError, Claim, Registry, Size, load_catalog, load_claims_file
-from .report import render_junit, render_latex, render_markdown, render_summary
+from .report import KIND_MEANING, render_junit, render_latex, render_markdown, render_summary
 from .results import Result, dump_results, load_results, write_atomic
+from .scene import SizeError
 
 EXIT_OK, EXIT_UNEXPECTED, EXIT_INPUT, EXIT_INTERRUPTED = 0, 1, 2, 130
 DEFAULT_REPORT_DIR = Path("reports")
 REPORT_FILES = ("results.json", "verification.md", "verification.tex")
 #: the distributions whose versions a report records
 VERSIONED = ("stiefelsym", "sympy", "symengine", "numpy", "python-flint", "mpmath", "click")
-KIND_MEANING = {
-    "id": "identity on T*V (residual must vanish)",
-    "lax": "Lax equation implied by a flow",
-    "pb": "Poisson-bracket statement",
-    "dim": "dimension, rank or count",
-    "not": "the paper says this does NOT hold (needs a certified witness)",
-    "geo": "geometric statement checked through its algebraic form",
-}
 EXPECT_MEANING = {
     "holds": "holds (the printed statement is true)",
     "nonzero": "nonzero (the paper says this does not vanish)",
@@ -95,12 +88,12 @@ def main(ctx: click.Context) -> None:
     "Geodesic Flows and Neumann Systems on Stiefel Varieties".
 
     \b
-      stiefelsym list                      the catalog of claims
-      stiefelsym show prep                 one claim: statement, sizes, source
-      stiefelsym verify                    verify the catalog, write reports/
-      stiefelsym verify prep --size 4,2    one claim at one size
-      stiefelsym verify --claims my.py     your own claims
-      stiefelsym report                    re-render reports/ from results.json
+      stiefelsym list                              the catalog of claims
+      stiefelsym show euclidean-flow               statement, sizes, source
+      stiefelsym verify                            the catalog; writes reports/
+      stiefelsym verify euclidean-flow --size 4,2  one claim, one size
+      stiefelsym verify --claims my_claims.py      your own claims
+      stiefelsym report                            re-render reports/
 
     Exit status: 0 every verdict as expected, 1 some verdict unexpected, 2 bad
     input, 130 interrupted.
@@ -230,7 +223,8 @@ def _check_report_dir(d: Path) -> None:
         os.close(fd)
         os.unlink(probe)
     except OSError as exc:
-        raise InputError(f"cannot write reports to {d}: {p}: {exc.strerror or exc}") from None
+        raise InputError(f"cannot write reports to {d}: {p} is not writable "
+                         f"({exc.strerror or exc})") from None
     for name in REPORT_FILES:
         if (Path(d) / name).is_dir():
             raise InputError(f"cannot write reports to {d}: {Path(d) / name} is a directory")
@@ -313,9 +307,8 @@ class _Progress:
     def plan(self, total: int) -> None:
         self.total = total
         if self.enabled and total > 0:
-            self.bar = click.progressbar(
-                length=total, label="verifying", file=sys.stderr, show_pos=True, show_eta=True,
-                item_show_func=lambda r: f"{r.claim} {r.size} {r.method}" if r else None)
+            self.bar = click.progressbar(length=total, label="verifying", file=sys.stderr,
+                                         show_pos=True, show_eta=True)
             self.bar.render_progress()
 
     def clear(self) -> None:
@@ -328,7 +321,7 @@ class _Progress:
             return
         self.done += 1
         if self.bar is not None:
-            self.bar.update(1, result)
+            self.bar.update(1)
 
     def close(self) -> None:
         if self.bar is not None:
@@ -420,7 +413,6 @@ def verify(ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tuple[str, ..
             click.echo(f"  rerun: {r.rerun}", err=out_err)
         progress.advance(r)
 
-    from .scene import SizeError
     started = datetime.now(timezone.utc)
     t0 = time.perf_counter()
     try:
@@ -435,7 +427,7 @@ def verify(ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tuple[str, ..
             "seed": seed, "methods": list(methods),
             "sizes": [f"{s.n},{s.r}" for s in sizes] or None,
             "claims_file": claims_file,
-            "date": started.isoformat(timespec="seconds"),
+            "date": started.strftime("%Y-%m-%d %H:%M:%S UTC"),
             "seconds": round(time.perf_counter() - t0, 2),
             "versions": _versions(), "platform": platform.platform(terse=True),
             "commit": _commit(), "sections": _section_titles(),
@@ -447,15 +439,16 @@ def verify(ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tuple[str, ..
             click.echo(render_junit(results, meta), nl=False)
         click.echo(summary, err=out_err, nl=False)
         if target is not None:
-            paths = _write_reports(target, results, meta)
+            try:
+                paths = _write_reports(target, results, meta)
+            except OSError as exc:  # the disk filled up or the directory vanished meanwhile
+                raise InputError(f"cannot write reports to {target}: {exc.strerror or exc}") from None
             click.echo(f"reports: {', '.join(str(p) for p in paths)}", err=True)
         elif not no_report:
             click.echo("note: partial run, no report written (give --report-dir DIR to write "
                        "one)", err=True)
     except (SizeError, runner.BudgetError) as exc:
         raise InputError(str(exc)) from None
-    except OSError as exc:  # the disk filled up or the directory vanished while writing
-        raise InputError(f"cannot write reports to {target}: {exc.strerror or exc}") from None
     except KeyboardInterrupt:
         lead = "\n" if _isatty(sys.stderr) else ""
         click.echo(f"{lead}stiefelsym: interrupted after {progress.done} of "
@@ -479,10 +472,14 @@ def _title(claims_file: str | None, user_ids: set[str], claims: list[Claim]) -> 
 # --------------------------------------------------------------------------- list, show
 
 def _sizes_text(sizes: Sequence[Size], limit: int = 4) -> str:
+    """The sizes a claim is verified at, listed or summarized, with its stated condition."""
     if len(sizes) <= limit:
-        return " ".join(f"({s.n},{s.r})" for s in sizes)
-    ns, rs = [s.n for s in sizes], [s.r for s in sizes]
-    return f"{len(sizes)} sizes, n {min(ns)}..{max(ns)}, r {min(rs)}..{max(rs)}"
+        text = " ".join(f"({s.n},{s.r})" for s in sizes)
+    else:
+        ns, rs = [s.n for s in sizes], [s.r for s in sizes]
+        text = f"{len(sizes)} sizes, n {min(ns)}..{max(ns)}, r {min(rs)}..{max(rs)}"
+    condition = getattr(sizes, "condition", "")
+    return f"{text}; {condition}" if condition else text
 
 
 @main.command("list")
@@ -511,13 +508,15 @@ def show(claim_id: str, claims_file: str | None) -> None:
     if c.title:
         click.echo(f"docstring:   {c.title}")
     click.echo(f"statement:   {c.statement or '(none given)'}")
-    click.echo(f"expect:      {EXPECT_MEANING.get(c.expect, c.expect)}")
+    failing = [f"({z.n},{z.r})" for z in c.sizes if c.expects_failure(z.n, z.r)]
+    exception = "; except where the erratum below says" if failing and c.expect == "holds" else ""
+    click.echo(f"expect:      {EXPECT_MEANING.get(c.expect, c.expect)}{exception}")
     click.echo(f"realization: {c.realization}")
     click.echo(f"sizes:       {_sizes_text(c.sizes, limit=len(c.sizes))}")
-    condition = getattr(c.sizes, "condition", "")
-    if condition:
-        click.echo(f"stated for:  {condition}")
     click.echo(f"exact symbolic method up to n = {c.exact_max_n}")
+    if failing:
+        click.echo(f"erratum:     fails as printed at {' '.join(failing)}"
+                   + (f": {_one_line(c.erratum)}" if c.erratum else ""))
     for corr in c.corrections:
         click.echo(f"correction:  {corr.description}")
     click.echo(f"source:      {_source(c)}")
@@ -559,8 +558,11 @@ def report(results_file: Path | None, report_dir: Path | None) -> None:
     _check_report_dir(target)
     texts = {"verification.md": render_markdown(results, meta),
              "verification.tex": render_latex(results, meta)}
-    for name, text in texts.items():
-        write_atomic(target / name, text)
+    try:
+        for name, text in texts.items():
+            write_atomic(target / name, text)
+    except OSError as exc:
+        raise InputError(f"cannot write reports to {target}: {exc.strerror or exc}") from None
     click.echo(f"reports: {', '.join(str(target / n) for n in texts)} "
                f"({len(results)} results)", err=True)
 

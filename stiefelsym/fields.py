@@ -25,6 +25,10 @@ class DegenerateError(ArithmeticError):
     """A division by zero at a sampled point (pole, singular system)."""
 
 
+class SymbolicBudget(ArithmeticError):
+    """A symbolic computation beyond what the exact method attempts."""
+
+
 class Field:
     """Base class: exact or approximate scalar arithmetic for scenes."""
 
@@ -151,6 +155,52 @@ class SymbolicField(Field):
         if self.is_zero(e):
             return math.inf
         return float(len(str(e)))
+
+    def _numeric_pivots(self, M) -> bool:
+        """Whether Gaussian elimination finds a nonzero numeric pivot at every step."""
+        rows = [[se.expand(x) for x in row] for row in M]
+        m = len(rows)
+        for col in range(m):
+            piv = next((i for i in range(col, m) if rows[i][col].is_Number and rows[i][col] != 0), None)
+            if piv is None:
+                return False
+            rows[col], rows[piv] = rows[piv], rows[col]
+            for i in range(col + 1, m):
+                f = rows[i][col] / rows[col][col]
+                if f != 0:
+                    rows[i] = [se.expand(a - f * b) for a, b in zip(rows[i], rows[col])]
+        return True
+
+    def pivot_cost_numeric(self, x):
+        e = se.expand(x)
+        return 0.0 if e.is_Number and e != 0 else math.inf
+
+    #: largest system solved by cofactors (larger ones raise SymbolicBudget)
+    max_solve = 3
+
+    def solve(self, M, B):
+        """Elimination when numeric pivots suffice (then no fractions appear); otherwise
+        Y = adj(M) B / det(M) with determinants by fraction-free elimination."""
+        m = len(M)
+        if all(se.expand(x).is_Number for row in M for x in row) or self._numeric_pivots(M):
+            return Field.solve(self, M, B)
+        if m > self.max_solve:
+            raise SymbolicBudget(f"a symbolic {m}x{m} linear solve")
+        A = se.DenseMatrix(m, m, [se.expand(x) for row in M for x in row])
+        det = se.expand(A.det())
+        if self.is_zero(det):
+            raise DegenerateError("singular symbolic linear system")
+        adj = [[None] * m for _ in range(m)]
+        for i in range(m):
+            for j in range(m):
+                rows = [k for k in range(m) if k != j]
+                cols = [k for k in range(m) if k != i]
+                minor = se.DenseMatrix(m - 1, m - 1, [A[a, b] for a in rows for b in cols]) if m > 1 else None
+                cof = se.expand(minor.det()) if minor is not None else se.Integer(1)
+                adj[i][j] = cof if (i + j) % 2 == 0 else -cof
+        k = len(B[0]) if B else 0
+        return [[se.expand(sum((adj[i][l] * B[l][j] for l in range(m)), se.Integer(0))) / det
+                 for j in range(k)] for i in range(m)]
 
 
 class RationalField(Field):

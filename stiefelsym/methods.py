@@ -21,7 +21,7 @@ import mpmath
 
 from .claims import Claim, Count, Rank
 from .fields import (DegenerateError, Deg, DegreeField, ErrNum, Field, FloatField,
-                     ModularField, RationalField, SymbolicField)
+                     ModularField, RationalField, SymbolicBudget, SymbolicField)
 from .matrix import Mat
 from .results import CheckOutcome, Result
 from .scene import CoordinateAccess, Scene, SizeError
@@ -265,6 +265,11 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
     except ExactTimeout:
         res.verdict = "inconclusive"
         res.message = f"symbolic computation exceeded its budget of {time_budget:.0f} s"
+        res.seconds = time.perf_counter() - t0
+        return res
+    except SymbolicBudget as exc:
+        res.verdict = "inconclusive"
+        res.message = f"{exc} is beyond the symbolic method's budget"
         res.seconds = time.perf_counter() - t0
         return res
     except DegenerateError as exc:

@@ -4,6 +4,9 @@ from __future__ import annotations
 
 import json
 import os
+import re
+import select
+import signal
 import subprocess
 import sys
 import xml.etree.ElementTree as ET
@@ -138,6 +141,15 @@ def test_show_prints_statement_docstring_sizes_source(fake, run):
     assert "Along every Neumann flow" in out
     assert "(1,1) (2,1) (2,2) (3,1) (3,2) (3,3)" in out
     assert "source:" in out and "test_cli.py" in out
+
+
+def test_show_documents_a_known_erratum(fake, run, catalog):
+    c = catalog.get("ddim")
+    c.fails_at = lambda n, r: n == 3 and r >= 2
+    c.erratum = "the printed count misses the Pfaffian"
+    out = run("show", "ddim").stdout
+    assert "erratum:     fails as printed at (3,2) (3,3): the printed count misses the Pfaffian" in out
+    assert "except where the erratum below says" in out
 
 
 def test_show_unknown_claim_is_one_line(fake, run):
@@ -455,3 +467,25 @@ def test_subprocess_verify_junit(tmp_path):
                       "--format", "junit", "--no-report", cwd=tmp_path)
     assert proc.returncode == 0, proc.stderr
     assert len(ET.fromstring(proc.stdout).findall(".//testcase")) == 2
+
+
+def test_subprocess_ctrl_c_exits_130_and_writes_no_report(tmp_path):
+    env = {k: v for k, v in os.environ.items() if not k.startswith("PYTEST")}
+    proc = subprocess.Popen([sys.executable, "-m", "stiefelsym", "verify", "--report-dir", "out"],
+                            cwd=tmp_path, env=env, stdin=subprocess.DEVNULL,
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        ready, _, _ = select.select([proc.stdout], [], [], 120)
+        assert ready, "no result within 120 s"
+        assert proc.stdout.readline().strip()
+        proc.send_signal(signal.SIGINT)
+        out, err = proc.communicate(timeout=120)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+    assert proc.returncode == 130, err
+    assert "Traceback" not in err
+    assert re.fullmatch(r"stiefelsym: interrupted after \d+ of \d+ runs; no report written",
+                        err.strip().splitlines()[-1])
+    assert not any((tmp_path / "out" / name).exists() for name in cli.REPORT_FILES)

@@ -1,0 +1,227 @@
+"""LaTeX from plain text and from math statements.
+
+Text (docstrings, certificates, witnesses) is escaped for text mode, with the
+Unicode a mathematician types (Φ, Xᵀ, ≤, ℝ, 𝔄, accented names) mapped to LaTeX
+so that pdflatex with Debian's texlive-latex-base compiles it.  Statements are
+LaTeX math already: they are checked for balance and placed in a display.
+"""
+from __future__ import annotations
+
+import re
+import unicodedata
+from collections import Counter
+from typing import Any
+
+_TEX_SPECIAL = {
+    "\\": r"\textbackslash{}", "{": r"\{", "}": r"\}", "#": r"\#", "$": r"\$", "%": r"\%",
+    "&": r"\&", "_": r"\_", "~": r"\~{}", "^": r"\^{}",
+    "<": r"\ensuremath{<}", ">": r"\ensuremath{>}", "|": r"\ensuremath{|}",
+}
+_SUP = dict(zip("⁰¹²³⁴⁵⁶⁷⁸⁹⁺⁻⁼⁽⁾ⁿⁱᵀᵗʳᵏʲ", "0123456789+-=()niTtrkj"))
+_SUB = dict(zip("₀₁₂₃₄₅₆₇₈₉₊₋₌₍₎ₐₑₒₓₕₖₗₘₙₚₛₜᵢⱼᵣ", "0123456789+-=()aeoxhklmnpstijr"))
+#: text-mode replacements; \S and \P in text mode would need a bitmap TS1 font
+_TEXT_ONLY = {"–": "--", "—": "---", "‘": "`", "’": "'", "“": "``", "”": "''",
+              "\u00a0": "~", "…": r"\ldots{}", "•": r"\ensuremath{\bullet}", "§": r"\ensuremath{\S}",
+              "¶": r"\ensuremath{\P}"}
+_ACCENTS = {"\u0301": "'", "\u0300": "`", "\u030c": "v", "\u0308": '"', "\u0302": "^",
+            "\u0303": "~", "\u0327": "c", "\u0306": "u", "\u0304": "="}
+_MATH_SYMBOLS = {
+    "−": "-", "×": r"\times", "·": r"\cdot", "∘": r"\circ", "≤": r"\le", "≥": r"\ge",
+    "≠": r"\neq", "∈": r"\in", "∉": r"\notin", "∧": r"\wedge", "∨": r"\vee", "⊂": r"\subset",
+    "⊆": r"\subseteq", "⊕": r"\oplus", "⊗": r"\otimes", "→": r"\to", "↦": r"\mapsto",
+    "⇒": r"\Rightarrow", "⇔": r"\Leftrightarrow", "∂": r"\partial", "∇": r"\nabla",
+    "∑": r"\sum", "∏": r"\prod", "∫": r"\int", "∞": r"\infty", "≅": r"\cong",
+    "≈": r"\approx", "≡": r"\equiv", "⟨": r"\langle", "⟩": r"\rangle", "½": r"\tfrac12",
+    "⊥": r"\perp", "∀": r"\forall", "∃": r"\exists", "±": r"\pm", "√": r"\surd",
+    "∅": r"\emptyset", "∩": r"\cap", "∪": r"\cup", "∖": r"\setminus", "′": "'",
+    "ℓ": r"\ell", "ħ": r"\hbar", "≔": ":=", "…": r"\dots", "⋯": r"\cdots",
+}
+_GREEK_LOWER = {"epsilon": "varepsilon", "phi": "varphi", "lamda": "lambda", "omicron": "o",
+                "final sigma": "varsigma"}
+_GREEK_UPPER = {"gamma", "delta", "theta", "lamda", "xi", "pi", "sigma", "upsilon", "phi",
+                "psi", "omega"}
+_ALPHABETS = {"DOUBLE-STRUCK": "mathbb", "FRAKTUR": "mathfrak", "BLACK-LETTER": "mathfrak",
+              "SCRIPT": "mathcal", "BOLD": "mathbf", "ITALIC": "mathit"}
+
+
+def _unicode_math(ch: str) -> str | None:
+    """Math-mode LaTeX for one character, or None."""
+    if ch in _MATH_SYMBOLS:
+        return _MATH_SYMBOLS[ch]
+    name = unicodedata.name(ch, "")
+    m = re.fullmatch(r"GREEK (SMALL|CAPITAL) LETTER (.+?)( SYMBOL)?", name)
+    if m:
+        letter = m.group(2).lower()
+        if m.group(3):  # ϕ, ϵ, ϑ: the symbol forms
+            return {"phi": r"\phi", "theta": r"\vartheta", "epsilon": r"\epsilon",
+                    "rho": r"\varrho", "pi": r"\varpi", "kappa": r"\varkappa"}.get(letter)
+        if m.group(1) == "SMALL":
+            cmd = _GREEK_LOWER.get(letter, letter)
+            return cmd if len(cmd) == 1 else "\\" + cmd
+        if letter in _GREEK_UPPER:
+            cmd = "lambda" if letter == "lamda" else letter
+            return "\\" + cmd.capitalize()
+        greek_to_latin = {"alpha": "A", "beta": "B", "epsilon": "E", "zeta": "Z", "eta": "H",
+                          "iota": "I", "kappa": "K", "mu": "M", "nu": "N", "omicron": "O",
+                          "rho": "P", "tau": "T", "chi": "X"}
+        return greek_to_latin.get(letter)
+    m = re.fullmatch(r"(?:MATHEMATICAL )?(.+?) (CAPITAL|SMALL) ([A-Z])", name)
+    if m and m.group(1) in _ALPHABETS:
+        letter = m.group(3) if m.group(2) == "CAPITAL" else m.group(3).lower()
+        return f"\\{_ALPHABETS[m.group(1)]}{{{letter}}}"
+    return None
+
+
+def _script_runs(text: str) -> list[tuple[str, str]]:
+    """Split into ("sup", run), ("sub", run) and ("", other character) pieces."""
+    out: list[tuple[str, str]] = []
+    for ch in text:
+        kind = "sup" if ch in _SUP else "sub" if ch in _SUB else ""
+        if kind and out and out[-1][0] == kind:
+            out[-1] = (kind, out[-1][1] + ch)
+        else:
+            out.append((kind, ch))
+    return out
+
+
+def _cmd(tex: str) -> str:
+    """A command followed by a letter needs a separator."""
+    return tex + " " if re.search(r"\\[A-Za-z]+$", tex) else tex
+
+
+def tex_escape(text: Any) -> str:
+    """Plain text to LaTeX text mode: specials escaped, Unicode mapped to LaTeX."""
+    out = []
+    for kind, piece in _script_runs(str(text)):
+        if kind == "sup":
+            out.append(r"\ensuremath{^{" + "".join(_SUP[c] for c in piece) + "}}")
+        elif kind == "sub":
+            out.append(r"\ensuremath{_{" + "".join(_SUB[c] for c in piece) + "}}")
+        elif piece in _TEX_SPECIAL:
+            out.append(_TEX_SPECIAL[piece])
+        elif piece == "\n":
+            out.append(" ")
+        elif ord(piece) < 128:
+            out.append(piece)
+        elif piece in _TEXT_ONLY:
+            out.append(_TEXT_ONLY[piece])
+        else:
+            out.append(_tex_nonascii(piece))
+    return "".join(out)
+
+
+def _tex_nonascii(ch: str) -> str:
+    math = _unicode_math(ch)
+    if math is not None:
+        return r"\ensuremath{" + math + "}"
+    base, *marks = unicodedata.normalize("NFD", ch)
+    if ord(base) < 128 and marks and all(m in _ACCENTS for m in marks):
+        res = base if base not in "ij" else "\\" + base  # dotless i, j under accents
+        for m in marks:
+            res = f"\\{_ACCENTS[m]}{{{res}}}"
+        return res
+    folded = unicodedata.normalize("NFKD", ch).encode("ascii", "ignore").decode()
+    if folded and folded.isalnum():
+        return folded
+    return r"\texttt{[U+%04X]}" % ord(ch)
+
+
+def tex_math(statement: str) -> str:
+    """A LaTeX math statement, Unicode characters mapped to math commands."""
+    out = []
+    for kind, piece in _script_runs(statement):
+        if kind == "sup":
+            out.append("^{" + "".join(_SUP[c] for c in piece) + "}")
+        elif kind == "sub":
+            out.append("_{" + "".join(_SUB[c] for c in piece) + "}")
+        elif ord(piece) < 128:
+            out.append(piece)
+        else:
+            m = _unicode_math(piece)
+            out.append(_cmd(m) if m is not None else r"\text{" + _tex_nonascii(piece) + "}")
+    return "".join(out)
+
+
+def split_math(text: str) -> list[tuple[bool, str]]:
+    """Split text at unescaped ``$``: (is_math, segment).  Unpaired ``$``: all text."""
+    pieces = re.split(r"(?<!\\)\$", text)
+    if len(pieces) % 2 == 0 or len(pieces) == 1:
+        return [(False, text)]
+    return [(i % 2 == 1, p) for i, p in enumerate(pieces) if p or i % 2 == 0]
+
+
+def tex_balanced(tex: str) -> bool:
+    """Balanced braces, environments and display delimiters: safe to include as is."""
+    if not _braces_balanced(tex):
+        return False
+    if len(re.findall(r"\\\[", tex)) != len(re.findall(r"\\\]", tex)):
+        return False
+    if re.search(r"\\(?:end|begin)\{document\}", tex):
+        return False
+    return _environments_balanced(tex)
+
+
+def _environments_balanced(tex: str) -> bool:
+    begins = Counter(re.findall(r"\\begin\{([^}]*)\}", tex))
+    return begins == Counter(re.findall(r"\\end\{([^}]*)\}", tex))
+
+
+def _braces_balanced(tex: str) -> bool:
+    depth = 0
+    for m in re.finditer(r"\\.|[{}]", tex, re.S):
+        tok = m.group()
+        if tok == "{":
+            depth += 1
+        elif tok == "}":
+            depth -= 1
+            if depth < 0:
+                return False
+    return depth == 0
+
+
+def math_ok(tex: str) -> bool:
+    """Balanced braces and environments, no math delimiters: safe inside a display."""
+    if not _braces_balanced(tex):
+        return False
+    if re.search(r"(?<!\\)\$|\\[\[\]()]|\\(?:end\{document\}|begin\{document\}|section|par\b)", tex):
+        return False
+    return _environments_balanced(tex)
+
+
+def _toplevel(tex: str) -> str:
+    """``tex`` with every environment block removed (for spotting top-level & and \\\\)."""
+    prev = None
+    while prev != tex:
+        prev, tex = tex, re.sub(r"\\begin\{([^}]*)\}(?:(?!\\begin\{).)*?\\end\{\1\}", "", tex,
+                                flags=re.S)
+    return tex
+
+
+def tex_text(text: str) -> str:
+    """Running text that may contain ``$...$`` math (docstrings)."""
+    out = []
+    for is_math, seg in split_math(text):
+        if is_math and math_ok(seg):
+            out.append("$" + tex_math(seg) + "$")
+        else:
+            out.append(tex_escape(f"${seg}$" if is_math else seg))
+    return "".join(out)
+
+
+def tex_display(statement: str) -> str:
+    """A statement in display math (``align*`` if it aligns, ``gather*`` if multi-line)."""
+    s = statement.strip()
+    if not s:
+        return ""
+    if not math_ok(s):
+        return ("\\noindent\\texttt{" + tex_escape(s) + "}\\\\\n"
+                "{\\small (statement shown verbatim: it is not balanced LaTeX math)}\n")
+    body = tex_math(s)
+    top = _toplevel(body)
+    if re.search(r"(?<!\\)&", top):
+        return "\\begin{align*}\n" + body + "\n\\end{align*}\n"
+    if "\\\\" in top:
+        return "\\begin{gather*}\n" + body + "\n\\end{gather*}\n"
+    return "\\[\n" + body + "\n\\]\n"
+
+

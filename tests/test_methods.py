@@ -1,0 +1,145 @@
+"""Every method proves what holds and rejects what does not (negative controls)."""
+import pytest
+
+from stiefelsym import Count, Rank, admissible, comm
+from stiefelsym.claims import Claim, Size
+from stiefelsym.methods import run_exact, run_float, run_points
+from stiefelsym.free_method import run_free
+from stiefelsym.runner import run_one
+
+
+def H_normal(s):
+    return s.killing(s.Phi, s.Phi) / 2
+
+
+def projector_evolves(s):
+    """d(XX^T)/dt = [Phi, XX^T] along the normal geodesic flow."""
+    flow = s.dirac_flow(H_normal)
+    return {"d(XX^T)/dt": s.d(lambda t: t.X @ t.X.T, flow) - comm(s.Phi, s.X @ s.X.T)}
+
+
+def projector_evolves_swapped(s):
+    """Corrupted: the commutator in the wrong order."""
+    flow = s.dirac_flow(H_normal)
+    return {"d(XX^T)/dt": s.d(lambda t: t.X @ t.X.T, flow) - comm(s.X @ s.X.T, s.Phi)}
+
+
+def normal_flow_sign(s):
+    """Corrupted: dX/dt = P + X P^T X (a flipped sign)."""
+    flow = s.dirac_flow(H_normal)
+    return {"dX/dt": flow.Xdot - (s.P + s.X @ s.P.T @ s.X)}
+
+
+def resolvent_identity(s):
+    """A (lambda - A)^{-1} = lambda (lambda - A)^{-1} - I."""
+    R = s.resolvent(s.lam)
+    return {"AR": s.A @ R - (s.lam * R - s.In)}
+
+
+def resolvent_identity_sign(s):
+    R = s.resolvent(s.lam)
+    return {"AR": s.A @ R - (s.lam * R + s.In)}
+
+
+def dimension_of_V(s):
+    """The rank of the differential of X -> X^T X at a point of V is r(r+1)/2."""
+    J = s.jacobian(lambda t: t.X.T @ t.X)
+    rows = [row[: s.n * s.r] for i, row in enumerate(J) if i in _upper(s.r)]
+    return {"rank": Rank(s.mat(rows), s.r * (s.r + 1) // 2),
+            "dim V": Count(s.n * s.r - s.r * (s.r + 1) // 2, s.r * s.n - s.r * (s.r + 1) // 2)}
+
+
+def dimension_of_V_wrong(s):
+    J = s.jacobian(lambda t: t.X.T @ t.X)
+    rows = [row[: s.n * s.r] for i, row in enumerate(J) if i in _upper(s.r)]
+    return {"rank": Rank(s.mat(rows), s.r * (s.r + 1) // 2 + 1)}
+
+
+def _upper(r):
+    idx, k = set(), 0
+    for i in range(r):
+        for j in range(r):
+            if j >= i:
+                idx.add(k)
+            k += 1
+    return idx
+
+
+def _claim(func, kind="id", cid="test"):
+    return Claim(id=cid, paper=("prep",), kind=kind, section="t", func=func, sizes=admissible(4))
+
+
+GOOD = [projector_evolves, resolvent_identity]
+BAD = [projector_evolves_swapped, normal_flow_sign, resolvent_identity_sign]
+SIZES = [(3, 1), (3, 2), (3, 3)]
+
+
+@pytest.mark.parametrize("n,r", SIZES)
+@pytest.mark.parametrize("func", GOOD, ids=lambda f: f.__name__)
+def test_true_identities_pass_every_method(func, n, r):
+    c = _claim(func)
+    assert run_exact(c, n, r, 0).verdict == "proved"
+    assert run_points(c, n, r, "rational", 0).verdict == "checked"
+    res = run_points(c, n, r, "modular", 0)
+    assert res.verdict == "checked" and 0 < res.false_pass_bound < 1e-20
+    assert run_float(c, n, r, 0).verdict == "numeric"
+
+
+# the corruptions are harmless at some sizes (for r = n, XX^T = I; for r = 1, X^T P = 0)
+@pytest.mark.parametrize("n,r", [(3, 2)])
+@pytest.mark.parametrize("func", BAD, ids=lambda f: f.__name__)
+def test_corrupted_identities_fail_every_method(func, n, r):
+    c = _claim(func)
+    assert run_exact(c, n, r, 0).verdict == "fails"
+    for kind in ("rational", "modular"):
+        res = run_points(c, n, r, kind, 0)
+        assert res.verdict == "fails"
+        assert res.witness and res.witness["seed"] == 0 and res.witness["point"]
+    res = run_float(c, n, r, 0)
+    assert res.verdict == "fails" and res.witness["field"] == "rational"
+
+
+@pytest.mark.parametrize("n,r", [(4, 2), (5, 3), (5, 4)])
+@pytest.mark.parametrize("func", BAD, ids=lambda f: f.__name__)
+def test_corrupted_identities_fail_at_larger_sizes(func, n, r):
+    assert run_points(_claim(func), n, r, "modular", 1).verdict == "fails"
+
+
+@pytest.mark.parametrize("func", BAD, ids=lambda f: f.__name__)
+def test_corrupted_identities_are_never_proved_dimension_free(func):
+    assert run_free(_claim(func)).verdict == "undecided"
+
+
+@pytest.mark.parametrize("func", GOOD, ids=lambda f: f.__name__)
+def test_true_identities_are_proved_dimension_free(func):
+    res = run_free(_claim(func))
+    assert res.verdict == "proved" and res.n is None
+
+
+def test_symbolic_budget_is_reported_not_guessed():
+    res = run_exact(_claim(resolvent_identity), 5, 2, 0)
+    assert res.verdict == "inconclusive" and "budget" in res.message
+    auto = run_one(_claim(resolvent_identity), Size(5, 2), "auto", 0)
+    assert auto.method == "modular" and auto.verdict == "checked" and "budget" in auto.message
+
+
+def test_witness_is_reproducible():
+    c = _claim(normal_flow_sign)
+    a, b = run_points(c, 4, 2, "rational", 5), run_points(c, 4, 2, "rational", 5)
+    assert a.witness == b.witness
+    assert run_points(c, 4, 2, "rational", 6).witness != a.witness
+
+
+@pytest.mark.parametrize("n,r", [(3, 1), (4, 2)])
+def test_ranks_are_decided_two_sided(n, r):
+    good, bad = _claim(dimension_of_V, "dim"), _claim(dimension_of_V_wrong, "dim")
+    assert run_exact(good, n, r, 0).verdict == "proved"
+    assert run_points(good, n, r, "modular", 0).verdict == "checked"
+    assert run_exact(bad, n, r, 0).verdict == "fails"
+    assert run_points(bad, n, r, "modular", 0).verdict not in ("proved", "checked")
+
+
+def test_rerun_command_after_failure():
+    res = run_one(_claim(normal_flow_sign), Size(4, 2), "modular", 3)
+    assert res.verdict == "fails" and not res.expected
+    assert res.rerun == "stiefelsym verify test --size 4,2 --method modular --seed 3"
