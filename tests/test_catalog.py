@@ -1,0 +1,74 @@
+"""Catalog integrity: ids, paper labels, coverage of CLAIMS.md, presence in the report."""
+import re
+from pathlib import Path
+
+import pytest
+
+from stiefelsym.claims import load_catalog
+
+ROOT = Path(__file__).resolve().parents[1]
+SHARED = ROOT.parent / "shared"
+PAPER = SHARED / "paper" / "fedorov-jovanovic-stiefel.tex"
+CLAIMS_MD = SHARED / "CLAIMS.md"
+#: sections of CLAIMS.md the catalog covers so far
+COVERED = ("§2", "§3")
+
+
+@pytest.fixture(scope="module")
+def catalog():
+    return load_catalog()
+
+
+def _paper_labels():
+    return set(re.findall(r"\\label\{([^}]*)\}", PAPER.read_text(encoding="utf-8")))
+
+
+def _claims_md_labels(section_prefix):
+    text = CLAIMS_MD.read_text(encoding="utf-8")
+    out = set()
+    for block in re.split(r"^## ", text, flags=re.M):
+        if block.startswith(section_prefix):
+            out |= set(re.findall(r"`([^`]+)`", block))
+    return out
+
+
+def test_ids_are_unique_and_kebab_case(catalog):
+    ids = catalog.ids()
+    assert len(ids) == len(set(ids))
+    for cid in ids:
+        assert re.fullmatch(r"[a-z0-9]+(-[a-z0-9]+)*", cid), cid
+
+
+@pytest.mark.skipif(not PAPER.exists(), reason="the paper is not next to the repository")
+def test_every_paper_label_exists_in_the_tex(catalog):
+    labels = _paper_labels()
+    for c in catalog:
+        for lab in c.paper:
+            assert lab in labels, f"{c.id}: no \\label{{{lab}}} in the paper"
+
+
+@pytest.mark.skipif(not CLAIMS_MD.exists(), reason="CLAIMS.md is not next to the repository")
+@pytest.mark.parametrize("section", COVERED)
+def test_every_listed_label_is_covered(catalog, section):
+    used = {lab for c in catalog for lab in c.paper}
+    paper = _paper_labels()
+    missing = sorted(lab for lab in _claims_md_labels(section) if lab in paper and lab not in used)
+    assert not missing, f"CLAIMS.md {section} items without a claim: {missing}"
+
+
+def test_claims_are_documented(catalog):
+    for c in catalog:
+        assert c.title and c.statement, c.id
+        assert c.kind in ("id", "lax", "pb", "dim", "not", "geo")
+        assert c.section in ("2", "3"), c.id
+
+
+def test_every_claim_appears_in_the_report(catalog):
+    from stiefelsym.report import render_latex, render_markdown
+    from stiefelsym.results import Result
+    results = [Result(claim=c.id, paper=list(c.paper), section=c.section, kind=c.kind, title=c.title,
+                      statement=c.statement, n=3, r=1, method="modular", verdict="checked", expected=True,
+                      seconds=0.0, seed=0) for c in catalog]
+    md, tex = render_markdown(results, {}), render_latex(results, {})
+    for c in catalog:
+        assert c.id in md and c.id in tex
