@@ -53,6 +53,10 @@ class Field:
     def normalize(self, x: Any) -> Any:
         return x
 
+    def exact_input(self, x: Any) -> Any:
+        """A computed value taken as an exact input of the problem (hard cases)."""
+        return x
+
     def pivot_cost(self, x: Any) -> float:
         """Smaller is a better pivot; inf means the entry is zero."""
         return 0.0 if not self.is_zero(x) else math.inf
@@ -367,7 +371,11 @@ class FloatField(Field):
         self.u = 2.0**-53 if dps is None else mpmath.mpf(10) ** (-dps)
 
     def _num(self, x):
-        return float(x) if self.dps is None else mpmath.mpf(x)
+        if self.dps is None:
+            return float(x)
+        if isinstance(x, Fraction):
+            return mpmath.mpf(x.numerator) / x.denominator
+        return mpmath.mpf(x)
 
     def const(self, q):
         q = Fraction(q)
@@ -384,6 +392,9 @@ class FloatField(Field):
 
     def is_zero(self, x):
         return abs(x.v) <= x.e if isinstance(x, ErrNum) else x == 0
+
+    def exact_input(self, x):
+        return ErrNum(x.v, 0, abs(x.v), self.u) if isinstance(x, ErrNum) else x
 
     def pivot_cost(self, x):
         if not isinstance(x, ErrNum):

@@ -368,7 +368,7 @@ def _point_rank(R: Rank, field: Field, bound_text: str) -> tuple[str, bool]:
 
 
 def run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callable | None = None,
-               trials: int | None = None) -> Result:
+               trials: int | None = None, options: dict | None = None) -> Result:
     func = func or claim.func
     trials = trials or TRIALS[kind]
     res = _base_result(claim, n, r, kind, seed)
@@ -383,13 +383,16 @@ def run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callabl
     per_trial = min(1.0, deg.numerator / max(S - deg.denominator, 1))
     res.reductions = [CAYLEY_REDUCTION.format(D=" D" if r == n else "",
                                               comp="; both components of O(n) alternate" if r == n else "")]
+    if options and options.get("hard"):
+        res.reductions.append(f"hard case: {options['hard'].description} (not uniform: no Schwartz-Zippel bound)")
     evaluations, resampled = [], 0
     witness = None
     for t in range(trials):
         comp = t % 2 if r == n else 0
         for attempt in range(MAX_RESAMPLE):
             rng = random.Random(f"{seed}|{claim.id}|{n}|{r}|{kind}|{t}|{attempt}")
-            scene = Scene(n, r, field, chart="cayley", rng=rng, component=comp, realization=claim.realization)
+            scene = Scene(n, r, field, chart="cayley", rng=rng, component=comp, realization=claim.realization,
+                          options=options)
             try:
                 checks = call_claim(func, scene)
                 ev = _evaluate(checks, field, lambda R: _point_rank(R, field, str(deg.numerator)))
@@ -441,6 +444,10 @@ def run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callabl
         res.verdict = "inconclusive"
         res.message = "; ".join(rank_bad)
         return res
+    if options and options.get("hard"):
+        res.verdict = "checked"
+        res.certificate = f"the residual vanishes exactly at the {trials} hard points{note}"
+        return res
     res.verdict = "checked"
     res.false_pass_bound = per_trial ** trials
     res.certificate = (f"{trials} independent points, parameters uniform from a set of size {_size(S)}; "
@@ -466,6 +473,8 @@ def run_float(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
     res = _base_result(claim, n, r, "float", seed)
     t0 = time.perf_counter()
     res.reductions = [CAYLEY_REDUCTION.format(D="", comp="") + "; running error analysis of every operation"]
+    if options and options.get("hard"):
+        res.reductions.append(f"hard case: {options['hard'].description}")
     log = []
     for dps in FLOAT_LADDER:
         field = FloatField(dps)
@@ -498,7 +507,7 @@ def run_float(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
         log.append(f"{field.name}: max |residual| {float(abs(worst.v)) if worst else 0:.2e}, "
                    f"error bound {emax:.2e}, term scale {mmax:.2e}")
         if bad:
-            ex = run_points(claim, n, r, "rational", seed, func, trials=1)
+            ex = run_points(claim, n, r, "rational", seed, func, trials=1, options=options)
             res.seconds = time.perf_counter() - t0
             res.residual = f"{bad[0][0]} = {bad[0][1]!r}"
             if ex.verdict == "fails":
@@ -533,8 +542,10 @@ def _null():
 
 
 METHOD_RUNNERS = {
-    "exact": lambda c, n, r, seed, func=None: run_exact(c, n, r, seed, func),
-    "rational": lambda c, n, r, seed, func=None: run_points(c, n, r, "rational", seed, func),
-    "modular": lambda c, n, r, seed, func=None: run_points(c, n, r, "modular", seed, func),
-    "float": lambda c, n, r, seed, func=None: run_float(c, n, r, seed, func),
+    "exact": lambda c, n, r, seed, func=None, options=None: run_exact(c, n, r, seed, func),
+    "rational": lambda c, n, r, seed, func=None, options=None: run_points(c, n, r, "rational", seed, func,
+                                                                          options=options),
+    "modular": lambda c, n, r, seed, func=None, options=None: run_points(c, n, r, "modular", seed, func,
+                                                                         options=options),
+    "float": lambda c, n, r, seed, func=None, options=None: run_float(c, n, r, seed, func, options),
 }

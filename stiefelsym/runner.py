@@ -6,6 +6,7 @@ import time
 from typing import Callable, Iterable
 
 from .claims import Claim, Registry, Size
+from .hard import hard_case
 from .methods import BUDGET, METHOD_RUNNERS, BudgetError, check_budget, expected_verdict
 from .results import Result
 from .scene import SizeError
@@ -60,15 +61,19 @@ def plan(claims: list[Claim], sizes: list[Size] | None, methods: Iterable[str]) 
 
 
 def run_one(claim: Claim, size: Size | None, method: str, seed: int, func: Callable | None = None,
-            variant: str | None = None) -> Result:
-    """One result for one (claim, size, method)."""
+            variant: str | None = None, hard: str | None = None) -> Result:
+    """One result for one (claim, size, method); ``hard`` names a hard numerical case."""
+    options = {"hard": hard_case(hard)} if hard else None
     if method == "free" or size is None:
         from .free_method import run_free
         res = run_free(claim, func)
     elif method == "auto":
-        res = _run_auto(claim, size, seed, func)
+        res = _run_auto(claim, size, seed, func) if not options else \
+            METHOD_RUNNERS["rational"](claim, size.n, size.r, seed, func, options)
     else:
-        res = METHOD_RUNNERS[method](claim, size.n, size.r, seed, func)
+        if options and method == "exact":
+            raise ValueError("hard cases are sampled points: use --method rational, modular or float")
+        res = METHOD_RUNNERS[method](claim, size.n, size.r, seed, func, options)
     res.variant = variant
     res.expected = res.verdict in ("proved", "undecided") if res.method == "free" else \
         expected_verdict(claim, res.verdict, variant, res.n, res.r)
@@ -93,22 +98,27 @@ def _run_auto(claim: Claim, size: Size, seed: int, func: Callable | None) -> Res
 
 def verify(claims: list[Claim], *, sizes: list[Size] | None = None, methods: Iterable[str] = ("auto",),
            seed: int = 0, on_result: Callable[[Result], None] | None = None,
-           on_plan: Callable[[int], None] | None = None) -> list[Result]:
+           on_plan: Callable[[int], None] | None = None, hard: str | None = None) -> list[Result]:
     """Run the plan; claims that fail as printed are followed by their registered corrections."""
     if seed < 0:
         raise ValueError("the seed must be a non-negative integer")
+    if hard is not None:
+        hard_case(hard)
+        methods = [m for m in methods if m != "free"]
+        if "exact" in methods:
+            raise ValueError("hard cases are sampled points: use --method rational, modular or float")
     runs = plan(claims, sizes, methods)
     if on_plan is not None:
         on_plan(len(runs))
     results: list[Result] = []
     for c, s, m in runs:
-        res = run_one(c, s, m, seed)
+        res = run_one(c, s, m, seed, hard=hard)
         results.append(res)
         if on_result is not None:
             on_result(res)
         if res.verdict == "fails" and res.variant is None and c.corrections and s is not None:
             for corr in c.corrections:
-                fix = run_one(c, s, m, seed, corr.func, corr.description)
+                fix = run_one(c, s, m, seed, corr.func, corr.description, hard=hard)
                 results.append(fix)
                 if on_result is not None:
                     on_result(fix)
@@ -122,4 +132,10 @@ def rerun_command(result: Result) -> str:
     parts += ["--method", result.method]
     if result.seed is not None:
         parts += ["--seed", str(result.seed)]
+    hard = next((h for h in result.reductions if h.startswith("hard case: ")), None)
+    if hard is not None:
+        from .hard import HARD_CASES
+        name = next((k for k, v in HARD_CASES.items() if v.description in hard), None)
+        if name:
+            parts += ["--hard", name]
     return " ".join(shlex.quote(p) for p in parts)

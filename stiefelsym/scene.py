@@ -111,7 +111,11 @@ class Scene:
     def param(self, name: str) -> Scalar:
         """A free parameter of the chart (symbol, random number, degree marker)."""
         if name not in self.params:
-            self.params[name] = self.field.param(name, self.rng)
+            value = self.field.param(name, self.rng)
+            hard = self.options.get("hard")
+            if hard is not None and self.rng is not None:
+                value = self.field.exact_input(hard.rewrite(self, name, value))
+            self.params[name] = value
         return self.params[name]
 
     def _cached(self, key: str, build: Callable[[], Any]) -> Any:

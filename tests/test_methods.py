@@ -143,3 +143,36 @@ def test_rerun_command_after_failure():
     res = run_one(_claim(normal_flow_sign), Size(4, 2), "modular", 3)
     assert res.verdict == "fails" and not res.expected
     assert res.rerun == "stiefelsym verify test --size 4,2 --method modular --seed 3"
+
+
+def cancellation(s):
+    """1/((a_1 + q) - a_1) = 1/q for q = 10^-12: float64 loses 4 digits to rounding of a_1 + q."""
+    q = s.q(1, 10**12)
+    a1 = s.param("a_1")
+    return {"cancellation": 1 / ((a1 + q) - a1) - 1 / q}
+
+
+def cancellation_wrong(s):
+    q = s.q(1, 10**12)
+    a1 = s.param("a_1")
+    return {"cancellation": 1 / ((a1 + q) - a1) - 1 / (q * (1 + s.q(1, 10**6)))}
+
+
+def test_float_escalates_when_float64_cannot_resolve():
+    res = run_float(_claim(cancellation), 3, 1, 0)
+    assert res.verdict == "numeric"
+    assert "float64" in res.message and "mpmath" in res.certificate
+
+
+def test_float_never_widens_its_tolerance_to_pass():
+    res = run_float(_claim(cancellation_wrong), 3, 1, 0)
+    assert res.verdict == "fails" and res.witness["field"] == "rational"
+
+
+@pytest.mark.parametrize("hard", ["near-pole", "near-equal-a", "large-momenta"])
+def test_hard_cases_reject_a_corrupted_claim(hard):
+    for m in ("float", "rational", "modular"):
+        assert run_one(_claim(resolvent_identity_sign), Size(3, 2), m, 0, hard=hard).verdict == "fails"
+        good = run_one(_claim(resolvent_identity), Size(3, 2), m, 0, hard=hard)
+        assert good.verdict in ("numeric", "checked") and good.false_pass_bound is None
+        assert "--hard " + hard in good.rerun

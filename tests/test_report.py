@@ -8,7 +8,6 @@ import xml.etree.ElementTree as ET
 
 import pytest
 
-from stiefelsym.latex import math_ok, tex_display, tex_escape, tex_math, tex_text
 from stiefelsym.report import (case_name, render_junit, render_latex, render_markdown,
                                render_summary)
 from stiefelsym.results import CheckOutcome, Result, dump_results, load_results
@@ -213,53 +212,6 @@ def test_junit_one_testcase_per_result_failures_for_unexpected(results):
 def test_junit_survives_control_characters():
     r = result("prep", 3, 1, "modular", "error", message="bad \x00\x07 bytes")
     assert ET.fromstring(render_junit([r])).find(".//failure") is not None
-
-
-# --------------------------------------------------------------------------- LaTeX text
-
-@pytest.mark.parametrize("raw, tex", [
-    ("a_b", r"a\_b"), ("#1", r"\#1"), ("50%", r"50\%"), ("A&B", r"A\&B"), ("~", r"\~{}"),
-    ("x^2", r"x\^{}2"), ("{b}", r"\{b\}"), ("\\foo", r"\textbackslash{}foo"), ("$5", r"\$5"),
-    ("a<b", r"a\ensuremath{<}b"), ("Φ", r"\ensuremath{\Phi}"), ("XXᵀ", r"XX\ensuremath{^{T}}"),
-    ("≤ ½", r"\ensuremath{\le} \ensuremath{\tfrac12}"), ("Jovanović", r"Jovanovi\'{c}"),
-    ("Božidar", r"Bo\v{z}idar"), ("𝔄", r"\ensuremath{\mathfrak{A}}"), ("ℝ", r"\ensuremath{\mathbb{R}}"),
-    ("x₁₂", r"x\ensuremath{_{12}}"), ("§5", r"\ensuremath{\S}5"), ("ε", r"\ensuremath{\varepsilon}"),
-])
-def test_tex_escape(raw, tex):
-    assert tex_escape(raw) == tex
-
-
-def test_tex_escape_leaves_no_special_unescaped():
-    out = tex_escape(NASTY)
-    stripped = re.sub(r"\\ensuremath\{[^{}]*(\{[^{}]*\})?\}", "", out)
-    stripped = re.sub(r"\\[A-Za-z]+|\\[^A-Za-z]|\{|\}", "", stripped)
-    assert not re.search(r"[#%&~^_$]", stripped)
-    assert out.count("{") - out.count(r"\{") == out.count("}") - out.count(r"\}")
-    assert all(ord(ch) < 128 for ch in out)
-
-
-def test_tex_text_keeps_inline_math():
-    assert tex_text(r"the sign of $\lambda A$ and 5% off") == r"the sign of $\lambda A$ and 5\% off"
-    assert tex_text("costs $5") == r"costs \$5"
-
-
-def test_tex_math_maps_unicode():
-    assert tex_math("Φ + XXᵀ ≤ λ·𝔄") == r"\Phi  + XX^{T} \le  \lambda \cdot \mathfrak{A}"
-
-
-def test_tex_display_environments():
-    assert tex_display(STATEMENTS["prep"]).startswith("\\[\n")
-    assert tex_display(STATEMENTS["orbit"]).startswith("\\[\n")  # & only inside cases
-    assert tex_display(STATEMENTS["aligned"]).startswith("\\begin{align*}")
-    assert tex_display(STATEMENTS["lines"]).startswith("\\begin{gather*}")
-    assert "verbatim" in tex_display(STATEMENTS["unbalanced"])
-
-
-def test_math_ok():
-    assert math_ok(r"\{a\} + \frac{1}{2}")
-    assert not math_ok(r"\frac{1}{2")
-    assert not math_ok("a $ b")
-    assert not math_ok(r"\begin{cases} a")
 
 
 # --------------------------------------------------------------------------- pdflatex

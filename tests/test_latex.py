@@ -1,0 +1,70 @@
+"""LaTeX from plain text and from math statements (stiefelsym.latex)."""
+from __future__ import annotations
+
+import re
+
+import pytest
+
+from stiefelsym.latex import math_ok, tex_balanced, tex_display, tex_escape, tex_math, tex_text
+
+NASTY = r"50% of #cases & ~x^2 {b} \foo <a|b> under_score, Božidar Jovanović, dΦ/dt = [XXᵀ, A] ≤ ½"
+
+STATEMENTS = {
+    "prep": r"\frac{d}{dt}\Phi=[XX^T,A],\qquad \frac{d}{dt}(XX^T)=[\Phi,XX^T]",
+    "orbit": r"2l=\begin{cases}\tfrac{n(n-1)}2-\left[\tfrac n2\right],&n\le2r+1\\ 2r(n-r-1),&n>2r+1\end{cases}",
+    "aligned": r"H &= \tfrac12\tr(P^TP) \\ &= \tfrac12\langle\Phi,\Phi\rangle",
+    "lines": r"\dot X = P \\ \dot P = -XP^TP",
+    "unbalanced": r"\frac{1}{2",
+}
+
+
+@pytest.mark.parametrize("raw, tex", [
+    ("a_b", r"a\_b"), ("#1", r"\#1"), ("50%", r"50\%"), ("A&B", r"A\&B"), ("~", r"\~{}"),
+    ("x^2", r"x\^{}2"), ("{b}", r"\{b\}"), ("\\foo", r"\textbackslash{}foo"), ("$5", r"\$5"),
+    ("a<b", r"a\ensuremath{<}b"), ("Φ", r"\ensuremath{\Phi}"), ("XXᵀ", r"XX\ensuremath{^{T}}"),
+    ("≤ ½", r"\ensuremath{\le} \ensuremath{\tfrac12}"), ("Jovanović", r"Jovanovi\'{c}"),
+    ("Božidar", r"Bo\v{z}idar"), ("𝔄", r"\ensuremath{\mathfrak{A}}"), ("ℝ", r"\ensuremath{\mathbb{R}}"),
+    ("x₁₂", r"x\ensuremath{_{12}}"), ("§5", r"\ensuremath{\S}5"), ("ε", r"\ensuremath{\varepsilon}"),
+])
+def test_tex_escape(raw, tex):
+    assert tex_escape(raw) == tex
+
+
+def test_tex_escape_leaves_no_special_unescaped():
+    out = tex_escape(NASTY)
+    stripped = re.sub(r"\\ensuremath\{[^{}]*(\{[^{}]*\})?\}", "", out)
+    stripped = re.sub(r"\\[A-Za-z]+|\\[^A-Za-z]|\{|\}", "", stripped)
+    assert not re.search(r"[#%&~^_$]", stripped)
+    assert out.count("{") - out.count(r"\{") == out.count("}") - out.count(r"\}")
+    assert all(ord(ch) < 128 for ch in out)
+
+
+def test_tex_text_keeps_inline_math():
+    assert tex_text(r"the sign of $\lambda A$ and 5% off") == r"the sign of $\lambda A$ and 5\% off"
+    assert tex_text("costs $5") == r"costs \$5"
+
+
+def test_tex_math_maps_unicode():
+    assert tex_math("Φ + XXᵀ ≤ λ·𝔄") == r"\Phi  + XX^{T} \le  \lambda \cdot \mathfrak{A}"
+
+
+def test_tex_display_environments():
+    assert tex_display(STATEMENTS["prep"]).startswith("\\[\n")
+    assert tex_display(STATEMENTS["orbit"]).startswith("\\[\n")  # & only inside cases
+    assert tex_display(STATEMENTS["aligned"]).startswith("\\begin{align*}")
+    assert tex_display(STATEMENTS["lines"]).startswith("\\begin{gather*}")
+    assert "verbatim" in tex_display(STATEMENTS["unbalanced"])
+
+
+def test_math_ok():
+    assert math_ok(r"\{a\} + \frac{1}{2}")
+    assert not math_ok(r"\frac{1}{2")
+    assert not math_ok("a $ b")
+    assert not math_ok(r"\begin{cases} a")
+
+
+def test_tex_balanced():
+    assert tex_balanced("\\paragraph{a}\n\\[x^{2}\\]\n\\begin{itemize}\\item b\\end{itemize}")
+    assert not tex_balanced("\\[x^{2}")
+    assert not tex_balanced("\\begin{itemize}")
+    assert not tex_balanced("\\end{document}")
