@@ -128,6 +128,7 @@ def chain_gradient(s, xi, m, k):
 # -- the cotangent bundle as a constraint set -------------------------------------
 
 @claim("constraints-independent", paper=("cond_XP", "scalar"), kind="dim",
+       equivariance="the rank of the differential of the O(n)-invariant constraint map is O(n)-invariant; the matrix only lists that differential in the coordinates of R^{2nr}",
        statement=r"\rank\frac{\partial(F_{ij},G_{ij})}{\partial(X,P)}=r(r+1)\ \text{on } T^*V_{n,r},\quad "
                  r"\dim V_{n,r}=rn-\tfrac{r(r+1)}{2}")
 def constraints_are_independent(s):
@@ -149,6 +150,7 @@ def constraints_are_independent(s):
 # -- the Dirac bracket and the Lagrange-multiplier form -----------------------------
 
 @claim("dirac-bracket-multipliers", paper=("Dirac_bracket", "dot_XP"), kind="pb",
+       equivariance="the ranks concern the O(n)-invariant matrices {F_i, F_j}_0 and the multiplier system, written in a fixed basis of the symmetric r x r matrices (no coordinate of R^n)",
        statement=r"\det\big(\{F_i,F_j\}_0\big)\ne0 \text{ on } T^*V_{n,r};\quad \dot f=\{f,H\}\iff "
                  r"\dot X=\tfrac{\partial H}{\partial P}-X\Pi,\ \dot P=-\tfrac{\partial H}{\partial X}+X\Lambda+P\Pi,"
                  r"\ \Lambda^T=\Lambda,\ \Pi^T=\Pi \text{ unique}")
@@ -189,6 +191,7 @@ def dirac_flow_is_the_multiplier_form(s):
 # -- momentum maps -------------------------------------------------------------------
 
 @claim("left-momentum-map", paper=("Phi", "momentum_map", "zero", "left_action"), kind="pb",
+       equivariance="the matrix units only span the tangent directions of the fibre; the checks are covariant",
        statement=r"\{\Phi_\xi,F_i\}_0=0,\quad X_{\Phi_\xi}=X^0_{\Phi_\xi}=(\xi X,\xi P),\quad "
                  r"\tfrac{d}{ds}\Phi(e^{s\xi}X,e^{s\xi}P)\big|_{s=0}=[\xi,\Phi],\quad \Phi=PX^T-XP^T")
 def phi_is_the_left_momentum_map(s):
@@ -207,6 +210,7 @@ def phi_is_the_left_momentum_map(s):
 
 
 @claim("right-momentum-map", paper=("momentum_right_map", "right_action"), kind="pb",
+       equivariance="the matrix units only span the tangent directions of the fibre; the checks are covariant",
        statement=r"\{\Psi_\eta,F_i\}_0\big|_{T^*V}=0,\quad X_{\Psi_\eta}=X^0_{\Psi_\eta}=(X\eta,P\eta),\quad "
                  r"\tfrac{d}{ds}\Psi(Xe^{s\eta},Pe^{s\eta})\big|_{s=0}=[\Psi,\eta],\quad \Psi=X^TP-P^TX")
 def psi_is_the_right_momentum_map(s):
@@ -239,6 +243,7 @@ def momentum_maps_are_poisson(s):
 # -- SO(n)-invariant functions ----------------------------------------------------------
 
 @claim("invariants-differential-dimension", paper=("ddim", "SO(n-r)-action", "P-neutral"), kind="dim",
+       equivariance="the statement is about the fibre T*_{X0}V itself (P2 is a fresh generic matrix)",
        statement=r"\ddim C^\infty(T^*V_{n,r})^{SO(n)}=\dim T^*_{X_0}V_{n,r}-\dim SO(n-r)\cdot P_0"
                  r"=\begin{cases}\dim V_{n,r}-\dim SO(n-r),&n\le2r\\ "
                  r"\dim V_{n,r}-\dim SO(n-r)+\dim SO(n-2r),&n>2r\end{cases}")
@@ -269,6 +274,7 @@ def psi_and_gram_are_invariant(s):
 
 
 @claim("invariants-complete", paper=("SO(n)-inv", "ddim"), kind="dim",
+       equivariance="the statement is about the fibre T*_{X0}V itself",
        statement=r"\rank d\big(\Psi_{ij},(P^TP)_{ij}\big)\big|_{T^*_{X_0}V_{n,r}}=\ddim C^\infty(T^*V_{n,r})^{SO(n)}")
 def psi_and_gram_give_ddim_functions(s):
     """Restricted to the fibre T*_{X₀}V, the functions Ψ_ij and (PᵀP)_ij have ddim independent differentials (any spanning set of the fibre directions gives the same rank)."""
@@ -292,9 +298,8 @@ def ad_matrix(s, mu):
     return s.mat([[s.killing(e_l, comm(mu, e_k)) for e_k in basis] for e_l in basis])
 
 
-# exact_max_n=4: at n = 5, r >= 3 the engine's function-field rank of the 10 x 10 matrix ad_Phi
-# takes 60 s to more than 120 s (the modular method decides these sizes)
-@claim("adjoint-orbit-dimension", paper=("2l",), kind="dim", exact_max_n=4,
+@claim("adjoint-orbit-dimension", paper=("2l",), kind="dim",
+       equivariance="the rank of ad_Phi does not depend on the basis of so(n) and is invariant under Phi -> g Phi g^T",
        statement=r"\dim\big(\Ad_{SO(n)}\Phi(X_0,P_0)\big)=2l=\begin{cases}\tfrac{n(n-1)}2-\left[\tfrac n2\right],"
                  r"&n\le2r+1\\ 2r(n-r-1),&n>2r+1\end{cases}")
 def generic_adjoint_orbit_dimension(s):
@@ -302,7 +307,12 @@ def generic_adjoint_orbit_dimension(s):
     return {"rank ad_Phi": Rank(ad_matrix(s, s.Phi), two_l_printed(s.n, s.r), generic=True, meaning="2l")}
 
 
-@claim("adjoint-orbit-regularity", paper=("2l",), kind="dim", exact_max_n=4,
+@claim("adjoint-orbit-regularity", paper=("2l",), kind="dim",
+       fails_at=lambda n, r: n == 2 * r + 2,
+       erratum="""The remark before Lemma 2l says that the generic orbit in Phi(T*V) is regular for
+       n <= 2r+1 and singular otherwise.  For n = 2r+2 the generic orbit is regular as well (both cases of
+       the Lemma's formula give the regular dimension there); the orbit is regular iff n <= 2r+2.""",
+       equivariance="the rank of ad_Phi does not depend on the basis of so(n) and is invariant under Phi -> g Phi g^T",
        statement=r"\Ad_{SO(n)}\Phi(X_0,P_0)\ \text{regular}\iff n\le 2r+1,\qquad "
                  r"\text{regular: }\dim=\tfrac{n(n-1)}2-\left[\tfrac n2\right]")
 def generic_adjoint_orbit_is_regular_iff(s):
@@ -316,7 +326,19 @@ def generic_adjoint_orbit_is_regular_iff(s):
     }
 
 
+@generic_adjoint_orbit_is_regular_iff.claim.correction("regular iff n <= 2r + 2")
+def generic_adjoint_orbit_is_regular_iff_corrected(s):
+    n, r = s.n, s.r
+    regular = n * (n - 1) // 2 - n // 2
+    return {
+        "rank ad_Phi": Rank(ad_matrix(s, s.Phi), two_l_printed(n, r), generic=True, meaning="2l"),
+        "regular iff n <= 2r+2": Count(int(two_l_printed(n, r) == regular), int(n <= 2 * r + 2),
+                                       "the generic orbit is regular (1) or singular (0)"),
+    }
+
+
 @claim("chain-algebra-commutative", paper=("com", "hat", "hat2", "iso"), kind="pb",
+       equivariance="the statement is about a generic element of the subspace v of so(n); no point of T*V enters",
        sizes=admissible(n_max=5, n_min=2, condition="n >= 2 (so(1) = 0 has no invariants)"),
        statement=r"\{\tr\xi_{(m)}^{2k},\tr\xi_{(m')}^{2k'}\}_{\mathfrak v}(\xi)="
                  r"-\langle\xi,[\nabla\tr\xi_{(m)}^{2k},\nabla\tr\xi_{(m')}^{2k'}]\rangle=0,\quad "

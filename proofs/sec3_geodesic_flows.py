@@ -349,7 +349,8 @@ def invariant_quadratic_forms(s):
     """The SO(n)×SO(r)-invariant quadratic forms on T*_{X₀}V are spanned by tr(PᵀP) and tr((XᵀP)²)."""
     rows, unknowns, N = _fibre_action_matrix(s)
     span = 1 if s.r in (1, s.n) else 2
-    M = s.mat([[s.const(c) for c in row] for row in rows]) if rows else s.zeros(1, unknowns)
+    M = s.mat([[s.const(c) for c in row] for row in rows], tags=("cond", "coef")) if rows else \
+        s.zeros(1, unknowns, ("cond", "coef"))
     return {"invariant forms": Rank(M, unknowns - span, generic=False,
                                     meaning=f"invariance conditions on the {unknowns} coefficients of a "
                                             f"quadratic form on the {N}-dimensional fibre; kernel = invariant forms")}
@@ -360,5 +361,5 @@ def invariant_quadratic_forms(s):
 def invariant_quadratic_forms_corrected(s):
     rows, unknowns, N = _fibre_action_matrix(s)
     span = (1 if s.r in (1, s.n) else 2) + _extra_invariants(s.n, s.r)
-    M = s.mat([[s.const(c) for c in row] for row in rows])
+    M = s.mat([[s.const(c) for c in row] for row in rows], tags=("cond", "coef"))
     return {"invariant forms": Rank(M, unknowns - span, generic=False)}

@@ -127,6 +127,8 @@ class Claim:
     #: sizes at which the printed statement is known to fail (a documented erratum)
     fails_at: Callable[[int, int], bool] | None = None
     erratum: str = ""
+    #: why the equivariance reduction is valid although the claim reads coordinates (stated in reports)
+    equivariance: str = ""
 
     def expects_failure(self, n: int | None, r: int | None) -> bool:
         if self.expect == "fails":
@@ -189,7 +191,7 @@ _ACTIVE: list[Registry] = [Registry()]
 def claim(id: str, *, paper: str | Iterable[str], kind: str, section: str | None = None,
           sizes: SizeSpec | None = None, statement: str = "", realization: str = "standard",
           expect: str = "holds", exact_max_n: int = 5,
-          fails_at: Callable[[int, int], bool] | None = None, erratum: str = ""):
+          fails_at: Callable[[int, int], bool] | None = None, erratum: str = "", equivariance: str = ""):
     """Register a claim.  The function's docstring (one sentence) goes into the report."""
     def deco(fn):
         labels = (paper,) if isinstance(paper, str) else tuple(paper)
@@ -201,7 +203,7 @@ def claim(id: str, *, paper: str | Iterable[str], kind: str, section: str | None
                   sizes=sizes if sizes is not None else admissible(), statement=statement.strip(),
                   title=(inspect.getdoc(fn) or "").strip(), realization=realization,
                   expect=expect, exact_max_n=exact_max_n, source=fn.__module__,
-                  fails_at=fails_at, erratum=erratum.strip())
+                  fails_at=fails_at, erratum=" ".join(erratum.split()), equivariance=" ".join(equivariance.split()))
         _ACTIVE[-1].add(c)
         fn.claim = c
         return fn

@@ -172,7 +172,7 @@ def _function_field_rank(M: Mat) -> int:
     if not rows or not rows[0]:
         return 0
     dM = DomainMatrix.from_list_sympy(len(rows), len(rows[0]), rows)
-    return dM.to_field().rank()
+    return len(dM.rref_den()[2])   # fraction-free elimination: pivots of the reduced form
 
 
 def _constant_minor_rank(M: Mat, field: Field) -> int:
@@ -204,12 +204,16 @@ def _constant_minor_rank(M: Mat, field: Field) -> int:
 
 
 def _exact_rank(R: Rank, field: Field) -> tuple[str, bool]:
-    generic = _function_field_rank(R.matrix)
     if R.generic:
+        generic = _function_field_rank(R.matrix)
         ok = generic == R.expected
         return (f"rank over the function field Q(chart parameters) = {generic} "
                 f"(paper: {R.expected}); two-sided: exact rank of the generic matrix", ok)
     const = _constant_minor_rank(R.matrix, field)
+    if const == R.expected == min(R.matrix.shape):
+        return (f"a constant nonzero {const}x{const} minor: rank {const} at every point (full rank); "
+                f"paper: {R.expected}", True)
+    generic = _function_field_rank(R.matrix)
     ok = generic == R.expected and const == R.expected
     return (f"a constant nonzero {const}x{const} minor (rank >= {const} at every point) and rank "
             f"{generic} over the function field (rank <= {generic} at every point); paper: {R.expected}", ok)
@@ -239,9 +243,15 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                 coords = list(scene.tracker.used)
             except CoordinateAccess:
                 coords = list(scene.tracker.used) or ["coordinates"]
-            if not coords:
-                charts.append((scene, EQUIVARIANT_REDUCTION if scene.params else
-                               "none: the checks are constant (no point of T*V enters)"))
+            if not coords or claim.equivariance:
+                if not scene.params:
+                    text = "none: the checks are constant (no point of T*V enters)"
+                elif coords:
+                    text = (f"{EQUIVARIANT_REDUCTION.split(';')[0]}; the claim reads {', '.join(coords)}, "
+                            f"and the catalog justifies the reduction: {claim.equivariance}")
+                else:
+                    text = EQUIVARIANT_REDUCTION
+                charts.append((scene, text))
                 evaluations = [_evaluate(checks, field, lambda R: _exact_rank(R, field))]
             else:
                 if n > EXACT_CAYLEY_MAX_N:
@@ -414,8 +424,8 @@ def run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callabl
     res.seconds = time.perf_counter() - t0
     res.checks = [o for e in evaluations for o in e.outcomes]
     nonzero = [z for e in evaluations for z in e.nonzero]
-    rank_bad = [p for e in evaluations for p in e.rank_problems]
-    count_bad = [p for e in evaluations for p in e.count_problems]
+    rank_bad = list(dict.fromkeys(p for e in evaluations for p in e.rank_problems))
+    count_bad = list(dict.fromkeys(p for e in evaluations for p in e.count_problems))
     for o in res.checks:
         o.degree = deg.numerator
     note = f" ({resampled} degenerate samples redrawn)" if resampled else ""
@@ -495,7 +505,7 @@ def run_float(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
             continue
         if not entries:
             res.verdict = "inconclusive"
-            res.message = "no residuals to evaluate in floating point (ranks are decided exactly)"
+            res.message = "not applicable: no residuals to evaluate in floating point (ranks are decided exactly)"
             res.seconds = time.perf_counter() - t0
             return res
         vals = [x for _, x in entries if isinstance(x, ErrNum)]

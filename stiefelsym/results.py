@@ -48,6 +48,8 @@ class Result:
     rerun: str = ""
     message: str = ""
     variant: str | None = None
+    #: the catalog's explanation when the printed statement is a documented erratum at this size
+    erratum: str = ""
     #: for the dimension-free method: LaTeX derivations (residual, rules, normal form)
     derivation: list[str] = field(default_factory=list)
 

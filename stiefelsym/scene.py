@@ -138,6 +138,10 @@ class Scene:
         return self.field.const(Fraction(num, den))
 
     def mat(self, rows, tags=("?", "?")) -> Mat:
+        """A matrix from rows of scalars.  Unless its index labels say it is not indexed by
+        R^n (e.g. ("r", "r"), ("so", "so")), building one counts as reading coordinates."""
+        if any(t == "?" or "n" in t for t in tags):
+            self.tracker.touch("matrices built entrywise")
         return Mat.from_rows(rows, self.field, tags, self.tracker)
 
     def zeros(self, m: int, k: int, tags=("?", "?")) -> Mat:

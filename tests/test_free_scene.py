@@ -112,13 +112,12 @@ def test_negative_control_LA1_with_the_commutator_swapped_fails():
 
 
 def test_dirac_flow_of_the_neumann_hamiltonian_is_No():
-    """Proposition (No): the Dirac flow of (neumann) is (No), with Π = 0 and Λ = XᵀAX − PᵀP."""
+    """Proposition (No): the Dirac flow of (neumann) is (No); its multipliers are not exposed."""
     s = FreeScene()
     f = s.dirac_flow(neumann_hamiltonian)
     g = neumann_flow(s, None)
     assert (f.Xdot - g.Xdot).is_zero() and (f.Pdot - g.Pdot).is_zero()
-    assert f.multipliers["Pi"].is_zero()
-    assert (f["Lambda"] - (s.X.T @ s.A @ s.X - s.P.T @ s.P)).is_zero()
+    assert not f.multipliers
     assert not (f.Pdot - neumann_flow(s, None, flip="AX").Pdot).is_zero()
 
 
@@ -266,10 +265,10 @@ def test_momentum_map_brackets():
     phi = lambda name: (lambda t: t.killing(t.Phi, getattr(t, name)))
     f = s.dirac_flow(phi("xi"))
     assert (f.Xdot - s.xi @ s.X).is_zero() and (f.Pdot - s.xi @ s.P).is_zero()
-    assert f["Pi"].is_zero() and f["Lambda"].is_zero()
     target = s.killing(s.Phi, comm(s.xi, s.zeta))
     assert s.field.is_zero(s.bracket(phi("xi"), phi("zeta")) - target)
-    assert s.field.is_zero(s.canonical_bracket(phi("xi"), phi("zeta")) - target)
+    with pytest.raises(NeedsCoordinates):     # ambient brackets depend on values off T*V
+        s.canonical_bracket(phi("xi"), phi("zeta"))
     assert not s.field.is_zero(s.bracket(phi("xi"), phi("zeta")) + target)
 
 

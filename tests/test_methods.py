@@ -65,8 +65,9 @@ def _upper(r):
     return idx
 
 
-def _claim(func, kind="id", cid="test"):
-    return Claim(id=cid, paper=("prep",), kind=kind, section="t", func=func, sizes=admissible(4))
+def _claim(func, kind="id", cid="test", equivariance=""):
+    return Claim(id=cid, paper=("prep",), kind=kind, section="t", func=func, sizes=admissible(4),
+                 equivariance=equivariance)
 
 
 GOOD = [projector_evolves, resolvent_identity]
@@ -132,7 +133,8 @@ def test_witness_is_reproducible():
 
 @pytest.mark.parametrize("n,r", [(3, 1), (4, 2)])
 def test_ranks_are_decided_two_sided(n, r):
-    good, bad = _claim(dimension_of_V, "dim"), _claim(dimension_of_V_wrong, "dim")
+    why = "the rank of the differential of the O(n)-invariant map X -> X^T X is O(n)-invariant"
+    good, bad = _claim(dimension_of_V, "dim", equivariance=why), _claim(dimension_of_V_wrong, "dim", equivariance=why)
     assert run_exact(good, n, r, 0).verdict == "proved"
     assert run_points(good, n, r, "modular", 0).verdict == "checked"
     assert run_exact(bad, n, r, 0).verdict == "fails"
@@ -176,3 +178,16 @@ def test_hard_cases_reject_a_corrupted_claim(hard):
         good = run_one(_claim(resolvent_identity), Size(3, 2), m, 0, hard=hard)
         assert good.verdict in ("numeric", "checked") and good.false_pass_bound is None
         assert "--hard " + hard in good.rerun
+
+
+def entrywise_constant_matrix(s):
+    """tr(X^T E_11 X) = 1 holds at X0 only: entrywise matrices of R^n break the equivariance reduction."""
+    E = s.mat([[s.const(1 if (i, j) == (0, 0) else 0) for j in range(s.n)] for i in range(s.n)], tags=("n", "n"))
+    return {"value": s.tr(s.X.T @ E @ s.X) - 1}
+
+
+def test_entrywise_matrices_disable_the_equivariance_reduction():
+    res = run_exact(_claim(entrywise_constant_matrix), 3, 1, 0)
+    assert res.verdict == "fails" and "rational parametrization" in res.reductions[0]
+    assert run_exact(_claim(entrywise_constant_matrix), 4, 1, 0).verdict == "inconclusive"
+    assert run_points(_claim(entrywise_constant_matrix), 4, 1, "modular", 0).verdict == "fails"

@@ -409,6 +409,10 @@ class FreeScene:
         return value
 
     def gradient(self, H: Function) -> tuple[Mat, Mat]:
+        """Ambient gradients depend on H off T*V: not offered (see _gradient)."""
+        raise NeedsCoordinates("the ambient gradient of H, which depends on H off T*V")
+
+    def _gradient(self, H: Function) -> tuple[Mat, Mat]:
         """(∂H/∂X, ∂H/∂P) of the trace form H, as reduced by the scene's arithmetic.
 
         The reduction changes H only off T*V, so Dirac flows are unaffected; the
@@ -426,18 +430,22 @@ class FreeScene:
         return self._cache[full][1]
 
     def canonical_flow(self, H: Function) -> Flow:
-        """The Hamiltonian vector field of H for the ambient bracket: Ẋ = H_P, Ṗ = −H_X."""
-        HX, HP = self.gradient(H)
-        return Flow(HP, -HX)
+        """Ambient quantities depend on H off T*V, which the reduced trace form has lost."""
+        raise NeedsCoordinates("the ambient (canonical) flow, which depends on H off T*V")
 
     def dirac_flow(self, H: Function) -> Flow:
         """(dot_XP): Ẋ = H_P − XΠ, Ṗ = −H_X + XΛ + PΠ with Π, Λ solved in the free algebra."""
-        return self._cached_for("dflow", H, lambda: self._multiplier_flow(H))
+        def build():
+            flow = self._multiplier_flow(H)
+            return Flow(flow.Xdot, flow.Pdot)   # the multipliers of the reduced form are not H's
+        return self._cached_for("dflow", H, build)
 
-    multiplier_flow = dirac_flow
+    def multiplier_flow(self, H: Function) -> Flow:
+        """The multipliers Λ, Π depend on H off T*V, which the reduced trace form has lost."""
+        raise NeedsCoordinates("the Lagrange multipliers, which depend on H off T*V")
 
     def _multiplier_flow(self, H: Function) -> Flow:
-        HX, HP = (m.a[0, 0] for m in self.gradient(H))
+        HX, HP = (m.a[0, 0] for m in self._gradient(H))
         nf = self.system.normal_form
         x, p = _w(X), _w(P)
         Pi, Lam = _w(PI), _w(LAMBDA)
@@ -484,10 +492,8 @@ class FreeScene:
         return images
 
     def canonical_bracket(self, F: Function, G: Function) -> Any:
-        """{F, G}_0 = tr(F_Xᵀ G_P) − tr(F_Pᵀ G_X) for trace forms F, G."""
-        FX, FP = (m.a[0, 0] for m in self.gradient(F))
-        GX, GP = (m.a[0, 0] for m in self.gradient(G))
-        return self.field.normalize(trace(FX.star() * GP) - trace(FP.star() * GX))
+        """The ambient bracket depends on F, G off T*V, which the reduced trace forms have lost."""
+        raise NeedsCoordinates("the ambient bracket {F, G}_0, which depends on F, G off T*V")
 
     def bracket(self, F: Function, G: Function) -> Any:
         """The Dirac bracket {F, G} = derivative of F along the Dirac flow of G."""
