@@ -2,3 +2,9 @@
 
 #: catalog modules in the order of the paper
 MODULES = ("sec2_hamiltonian_flows", "sec3_geodesic_flows")
+
+#: section headings for the reports
+SECTION_TITLES = {
+    "2": "Hamiltonian flows on Stiefel varieties",
+    "3": "Geodesic flows",
+}

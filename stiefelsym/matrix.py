@@ -7,6 +7,7 @@ and therefore the equivariance reduction of the exact method.
 """
 from __future__ import annotations
 
+import re
 from fractions import Fraction
 from typing import Any, Iterable, Sequence
 
@@ -27,6 +28,11 @@ class CoordinateTracker:
 
 
 _SCALARS = (int, Fraction)
+
+
+def indexed_by_Rn(tags) -> bool:
+    """Whether index labels such as "n", "2n", "n+r" or "?" (unknown) involve R^n."""
+    return any(part == "?" or re.fullmatch(r"\d*n", part) for t in tags for part in t.split("+"))
 
 
 class Mat:
@@ -169,7 +175,7 @@ class Mat:
 
     # -- coordinates (flagged) ---------------------------------------------
     def _touch(self, what: str) -> None:
-        if self.tracker is not None and any("n" in t or t == "?" for t in self.tags):
+        if self.tracker is not None and indexed_by_Rn(self.tags):
             self.tracker.touch(what)
 
     def __getitem__(self, idx):

@@ -26,7 +26,7 @@ from typing import Any, Callable, Mapping
 import numpy as np
 
 from .fields import Dual, DualField, Field, DegenerateError
-from .matrix import CoordinateTracker, Mat, block, comm, scalar_matrix
+from .matrix import CoordinateTracker, Mat, block, comm, indexed_by_Rn, scalar_matrix
 
 Scalar = Any
 Function = Callable[["Scene"], Any]
@@ -140,7 +140,7 @@ class Scene:
     def mat(self, rows, tags=("?", "?")) -> Mat:
         """A matrix from rows of scalars.  Unless its index labels say it is not indexed by
         R^n (e.g. ("r", "r"), ("so", "so")), building one counts as reading coordinates."""
-        if any(t == "?" or "n" in t for t in tags):
+        if indexed_by_Rn(tags):
             self.tracker.touch("matrices built entrywise")
         return Mat.from_rows(rows, self.field, tags, self.tracker)
 
