@@ -220,9 +220,10 @@ def _exact_rank(R: Rank, field: Field) -> tuple[str, bool]:
 
 
 EQUIVARIANT_REDUCTION = (
-    "equivariance: X = X0 = (E_1..E_r), P = (W; Z) with W skew, A generic symmetric; the claim read no "
-    "coordinates of R^n, so every object is covariant under (X, P, A) -> (gX, gP, gAg^T), g in O(n), "
-    "and O(n) moves X0 to every point of V(n, r)")
+    "equivariance: X = X0 = (E_1..E_r), P = (W; Z) with W skew, A generic symmetric; O(n) moves X0 to "
+    "every point of V(n, r), and the residuals are covariant under (X, P, A) -> (gX, gP, gAg^T), g in O(n), "
+    "because {why}")
+COVARIANT_BY_CONSTRUCTION = "the claim read no coordinates of R^n (recorded by the engine)"
 CAYLEY_REDUCTION = (
     "rational parametrization: X = first r columns of (I - S)(I + S)^{{-1}}{D}, P = XW + (I - XX^T)Z "
     "(S, W skew, Z arbitrary), A = diag(a); dense in T*V(n, r){comp}")
@@ -244,14 +245,9 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
             except CoordinateAccess:
                 coords = list(scene.tracker.used) or ["coordinates"]
             if not coords or claim.equivariance:
-                if not scene.params:
-                    text = "none: the checks are constant (no point of T*V enters)"
-                elif coords:
-                    text = (f"{EQUIVARIANT_REDUCTION.split(';')[0]}; the claim reads {', '.join(coords)}, "
-                            f"and the catalog justifies the reduction: {claim.equivariance}")
-                else:
-                    text = EQUIVARIANT_REDUCTION
-                charts.append((scene, text))
+                why = (COVARIANT_BY_CONSTRUCTION if not coords else
+                       f"(the claim reads {', '.join(coords)}) {claim.equivariance}")
+                charts.append((scene, EQUIVARIANT_REDUCTION.format(why=why)))
                 evaluations = [_evaluate(checks, field, lambda R: _exact_rank(R, field))]
             else:
                 if n > EXACT_CAYLEY_MAX_N:

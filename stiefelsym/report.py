@@ -469,6 +469,8 @@ def _md_erratum(c: ClaimResults) -> list[str]:
     out += ["Fails at: " + ", ".join(f"{_md_escape(r.size)} {r.method}" for r in c.failures)
             + ".", ""]
     w = c.failures[0]
+    if w.erratum:
+        out += [f"What is wrong: {_md_escape(w.erratum)}", ""]
     out += [_md_escape(_witness_heading(w)), ""]
     out += [f"- {_md_escape(k)}: {_md_code(v)}" for k, v in witness_lines(w.witness)] \
         or [f"- ({NO_POINT})"]
@@ -675,8 +677,10 @@ def _tex_erratum(c: ClaimResults) -> list[str]:
     if c.statement.strip():
         out += ["As printed:", tex_display(c.statement)]
     w = c.failures[0]
-    out += [tex_escape("Fails at: " + ", ".join(f"{r.size} {r.method}" for r in c.failures) + "."),
-            "", tex_escape(_witness_heading(w))]
+    out += [tex_escape("Fails at: " + ", ".join(f"{r.size} {r.method}" for r in c.failures) + "."), ""]
+    if w.erratum:
+        out += [tex_escape("What is wrong: " + w.erratum), ""]
+    out += [tex_escape(_witness_heading(w))]
     items = [tex_escape(k) + ": " + _tt(v) for k, v in witness_lines(w.witness)]
     if not items:
         items = [f"({NO_POINT})"]
