@@ -24,6 +24,7 @@ from typing import Any, Sequence
 import click
 
 from .claims import CatalogError, Claim, Registry, Size, load_catalog, load_claims_file
+from .hard import HARD_CASES
 from .report import KIND_MEANING, render_junit, render_latex, render_markdown, render_summary
 from .results import Result, dump_results, load_results, write_atomic
 from .scene import SizeError
@@ -355,8 +356,12 @@ def _isatty(stream: Any) -> bool:
               show_default=True,
               help="stdout: one line per result and a summary, or the JSON results, or JUnit XML.")
 @click.option("--no-report", is_flag=True, help="Write no report files.")
+@click.option("--hard", type=click.Choice(sorted(HARD_CASES)), default=None,
+              help="Evaluate at a hard numerical case (rational, modular and float methods): "
+                   + "; ".join(f"{k}: {v.description}" for k, v in sorted(HARD_CASES.items())) + ".")
 def verify(ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tuple[str, ...], seed: int,
-           claims_file: str | None, report_dir: Path | None, fmt: str, no_report: bool) -> int:
+           claims_file: str | None, report_dir: Path | None, fmt: str, no_report: bool,
+           hard: str | None) -> int:
     """Verify claims (default: the whole catalog) and print one line per result.
 
     CLAIM is a claim id (see `stiefelsym list`).  With --claims FILE the claims of
@@ -379,7 +384,10 @@ def verify(ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tuple[str, ..
     """
     if no_report and report_dir is not None:
         raise InputError("--no-report and --report-dir contradict each other")
-    full_run = not ids and not claims_file and not sizes
+    if hard is not None and set(methods or ("auto",)) & {"exact", "free"}:
+        raise InputError("--hard evaluates sampled points: use it with --method rational, modular, float "
+                         "or auto")
+    full_run = not ids and not claims_file and not sizes and hard is None
     target = None if no_report else (report_dir if report_dir is not None
                                      else DEFAULT_REPORT_DIR if full_run else None)
     if target is not None:
@@ -418,13 +426,13 @@ def verify(ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tuple[str, ..
     try:
         try:
             runner.verify(claims, sizes=list(sizes) or None, methods=tuple(methods), seed=seed,
-                          on_result=on_result, on_plan=progress.plan)
+                          on_result=on_result, on_plan=progress.plan, hard=hard)
         finally:
             progress.close()
         meta = {
             "title": _title(claims_file, user_ids, claims),
             "command": _command(ids, claims_file, sizes, methods, seed, report_dir),
-            "seed": seed, "methods": list(methods),
+            "seed": seed, "methods": list(methods), "hard": hard,
             "sizes": [f"{s.n},{s.r}" for s in sizes] or None,
             "claims_file": claims_file,
             "date": started.strftime("%Y-%m-%d %H:%M:%S UTC"),
