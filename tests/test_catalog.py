@@ -72,3 +72,23 @@ def test_every_claim_appears_in_the_report(catalog):
     md, tex = render_markdown(results, {}), render_latex(results, {})
     for c in catalog:
         assert c.id in md and c.id in tex
+
+
+def _run_catalog(catalog, n_max, methods):
+    from stiefelsym.runner import verify
+    sizes = sorted({s for c in catalog for s in c.sizes if s.n <= n_max}, key=lambda s: (s.n, s.r))
+    return verify(list(catalog), sizes=sizes, methods=methods, seed=0)
+
+
+def test_catalog_verdicts_are_as_expected_for_small_sizes(catalog):
+    results = _run_catalog(catalog, 3, ("auto", "free"))
+    bad = [r.line() for r in results if not r.expected]
+    assert not bad, bad
+    assert {r.claim for r in results} == set(catalog.ids())
+
+
+@pytest.mark.slow
+def test_catalog_verdicts_are_as_expected_with_every_method(catalog):
+    results = _run_catalog(catalog, 5, ("exact", "modular", "rational", "float", "free"))
+    bad = [r.line() for r in results if not r.expected and r.verdict != "inconclusive"]
+    assert not bad, bad
