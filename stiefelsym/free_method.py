@@ -33,7 +33,7 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
     if claim.expect == "nonzero":
         return undecided("rewriting proves vanishing only; a nonvanishing statement needs a witness")
     try:
-        scene = FreeScene(realization=claim.realization)
+        scene = FreeScene(realization=claim.realization, lazy=True)
         checks = call_claim(func, scene)
     except NeedsCoordinates as exc:
         return undecided(f"needs coordinates ({exc}); decided by the fixed-size methods")

@@ -43,7 +43,7 @@ class FakeRunner:
     def select(self, registry: Registry, ids: list[str]) -> list[Claim]:
         return [registry.get(i) for i in ids]
 
-    def verify(self, claims, *, sizes=None, methods=("auto",), seed=0, on_result=None, on_plan=None):
+    def verify(self, claims, *, sizes=None, methods=("auto",), seed=0, on_result=None, on_plan=None, hard=None):
         self.calls.append({"claims": [c.id for c in claims], "sizes": sizes, "methods": methods,
                            "seed": seed})
         for s in sizes or ():

@@ -109,8 +109,11 @@ class FreeField(Field):
     name = "free"
     exact = True
 
-    def __init__(self, system: RewritingSystem) -> None:
+    def __init__(self, system: RewritingSystem, lazy: bool = False) -> None:
         self.system = system
+        #: lazy: keep expressions as built (reduce only when asked), so that a residual can be
+        #: shown before its reduction, with the rules that reduce it
+        self.lazy = lazy
 
     def const(self, q: int | Fraction) -> Any:
         return as_coef(Fraction(q))
@@ -120,6 +123,9 @@ class FreeField(Field):
 
     def normalize(self, x: Any) -> Any:
         if isinstance(x, NCPoly):
+            if self.lazy:   # collect coefficients only
+                terms = {k: c for k, c in ((k, simplify_coef(c)) for k, c in x.terms.items()) if c != 0}
+                return NCPoly(terms, x.row, x.col)
             return self.system.normal_form(x)
         c = as_coef(x)
         return simplify_coef(c) if c is not None else x
@@ -171,12 +177,12 @@ class FreeScene:
     realization = "standard"  # (cond_XP); other realizations raise NeedsCoordinates
 
     def __init__(self, tracker: CoordinateTracker | None = None, system: RewritingSystem | None = None,
-                 realization: str = "standard") -> None:
+                 realization: str = "standard", lazy: bool = False) -> None:
         if realization != "standard":
             raise NeedsCoordinates(f"the {realization!r} realization of T*V (its multipliers solve a "
                                    "Sylvester equation)")
         self.system = system if system is not None else standard_system()
-        self.field: Field = FreeField(self.system)
+        self.field: Field = FreeField(self.system, lazy)
         self.tracker = tracker if tracker is not None else CoordinateTracker()
         self.options: dict[str, Any] = {}
         self.params: dict[str, Any] = {}
