@@ -222,6 +222,40 @@ class Scene:
     def Q(self) -> Mat:
         return self._cached("point2", lambda: self._stiefel_point("second_"))[1]
 
+    # -- the complex Stiefel variety W(n, r), realified ---------------------------
+    # A complex matrix U + iV is represented by the real block matrix [[U, -V], [V, U]]:
+    # sums, products and the conjugate transpose (which becomes the transpose) are preserved.
+    def realify(self, U: Mat, V: Mat) -> Mat:
+        """The real 2m x 2k form of the complex matrix U + iV."""
+        return block([[U, -V], [V, U]])
+
+    def conj(self, M: Mat) -> Mat:
+        """The complex conjugate of a realified matrix."""
+        m, k = M.shape[0] // 2, M.shape[1] // 2
+        return block([[M[:m, :k], -M[:m, k:]], [-M[m:, :k], M[m:, k:]]])
+
+    def _complex_point(self):
+        n, r = self.n, self.r
+        S = self.realify(self.skew_params("cS", n, "n"), self.sym_params("cH", n, "n"))
+        I2 = self.identity(2 * n, "n+n")
+        Q = Mat.from_rows(self.field.solve((I2 + S).T.a.tolist(), (I2 - S).T.a.tolist()),
+                          self.field, ("n+n", "n+n"), self.tracker).T
+        cols = list(range(r)) + list(range(n, n + r))
+        Z = Mat(Q.a[:, cols].copy(), self.field, ("n+n", "r+r"), self.tracker)
+        W = self.realify(self.skew_params("cW", r, "r"), self.sym_params("cK", r, "r"))
+        Y = self.realify(self.general_params("cY", n, r, ("n", "r")), self.general_params("cV", n, r, ("n", "r")))
+        return Z, Z @ W + (I2 - Z @ Z.T) @ Y
+
+    @property
+    def Zc(self) -> Mat:
+        """A point Z of W(n, r) (Z^* Z = I_r), realified (2n x 2r)."""
+        return self._cached("cpoint", self._complex_point)[0]
+
+    @property
+    def Zc_dot(self) -> Mat:
+        """A tangent vector at Zc (Z^* V + V^* Z = 0), realified."""
+        return self._cached("cpoint", self._complex_point)[1]
+
     @property
     def a(self) -> list[Scalar]:
         """Eigenvalues a_1..a_n of A (a coordinate object: A is then diagonal)."""
@@ -584,6 +618,14 @@ class TangentScene(Scene):
     @property
     def A(self) -> Mat:
         return self._cached("A", lambda: self._lift(self.base.A))
+
+    @property
+    def Zc(self) -> Mat:
+        return self._cached("Zc", lambda: self._lift(self.base.Zc, self.flow.get("Zc")))
+
+    @property
+    def Zc_dot(self) -> Mat:
+        return self._cached("Zc_dot", lambda: self._lift(self.base.Zc_dot, self.flow.get("Zc_dot")))
 
     @property
     def Ainv(self) -> Mat:

@@ -69,3 +69,16 @@ def test_same_seed_same_point_different_seed_different_point():
     b = Scene(3, 2, RationalField(), rng=random.Random("s|1"))
     c = Scene(3, 2, RationalField(), rng=random.Random("s|2"))
     assert a.P.rows() == b.P.rows() != c.P.rows()
+
+
+@pytest.mark.parametrize("n,r", [(2, 1), (3, 2), (3, 3)])
+def test_complex_stiefel_point_is_unitary_and_complex_linear(n, r):
+    s = Scene(n, r, RationalField(), rng=random.Random(3))
+    Z, V = s.Zc, s.Zc_dot
+    assert (Z.T @ Z - s.identity(2 * r)).is_zero()
+    assert (Z.T @ V + V.T @ Z).is_zero()
+    # complex linearity: Z is of the form [[U, -W], [W, U]], i.e. conj(conj(Z)) = Z and J Z = Z J
+    assert (s.conj(s.conj(Z)) - Z).is_zero()
+    Jn = s.realify(s.zeros(n, n), s.identity(n))
+    Jr = s.realify(s.zeros(r, r), s.identity(r))
+    assert (Jn @ Z - Z @ Jr).is_zero()
