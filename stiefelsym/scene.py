@@ -80,7 +80,33 @@ REALIZATIONS = {
 }
 
 
-class Scene:
+class ScalarParameters:
+    """The paper's scalar parameters, as free parameters of a scene (shared by every backend)."""
+
+    def param(self, name: str) -> Scalar:
+        raise NotImplementedError
+
+    def scalar(self, name: str) -> Scalar:
+        """A free scalar parameter such as lambda, kappa, epsilon."""
+        return self.param(name)
+
+    @property
+    def lam(self) -> Scalar:
+        """The spectral parameter lambda."""
+        return self.param("lambda")
+
+    @property
+    def kappa(self) -> Scalar:
+        """The parameter kappa of the Jensen metrics (EM)."""
+        return self.param("kappa")
+
+    @property
+    def eps(self) -> Scalar:
+        """The magnetic parameter epsilon."""
+        return self.param("epsilon")
+
+
+class Scene(ScalarParameters):
     """One problem size over one field, with lazily built objects."""
 
     def __init__(self, n: int, r: int, field: Field, *, chart: str = "cayley",
@@ -286,22 +312,6 @@ class Scene:
                 return M
             return self.A.inv()
         return self._cached("Ainv", build)
-
-    def scalar(self, name: str) -> Scalar:
-        """A free scalar parameter such as lambda, kappa, epsilon."""
-        return self.param(name)
-
-    @property
-    def lam(self) -> Scalar:
-        return self.param("lambda")
-
-    @property
-    def kappa(self) -> Scalar:
-        return self.param("kappa")
-
-    @property
-    def eps(self) -> Scalar:
-        return self.param("epsilon")
 
     @property
     def xi(self) -> Mat:

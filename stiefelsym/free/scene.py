@@ -21,7 +21,7 @@ import symengine as se
 
 from ..fields import Dual, DualField, Field
 from ..matrix import CoordinateTracker, Mat
-from ..scene import Flow
+from ..scene import Flow, ScalarParameters
 from .algebra import (DIMENSIONS, Letter, NCPoly, NeedsCoordinates, as_coef, coef_latex, derivation,
                       letter_pair, skew_letter, substitute, symmetric_letter, trace)
 from .rewriting import Order, Reduction, RewritingSystem, simplify_coef
@@ -170,7 +170,7 @@ class FreeDualField(DualField):
 
 
 # ---------------------------------------------------------------------------
-class FreeScene:
+class FreeScene(ScalarParameters):
     """T*V_{n,r} for all n, r at once: the scene interface over the free algebra."""
 
     chart = "free"
@@ -307,21 +307,6 @@ class FreeScene:
         if name not in self.params:
             self.params[name] = se.Symbol(name)
         return self.params[name]
-
-    def scalar(self, name: str) -> Any:
-        return self.param(name)
-
-    @property
-    def lam(self) -> Any:
-        return self.param("lambda")
-
-    @property
-    def kappa(self) -> Any:
-        return self.param("kappa")
-
-    @property
-    def eps(self) -> Any:
-        return self.param("epsilon")
 
     def const(self, q: int | Fraction) -> Any:
         return as_coef(Fraction(q))
