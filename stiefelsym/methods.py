@@ -301,6 +301,10 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
         if nonzero:
             res.residual = f"{nonzero[0][1]} = {_short(nonzero[0][2])}"
             res.certificate = "the residual is a nonzero function on the chart"
+            point = run_points(claim, n, r, "rational", seed, func, trials=1)
+            if point.witness:
+                res.witness, res.seed = point.witness, seed
+                res.certificate += "; exact rational witness point attached"
         else:
             res.certificate = "; ".join(problems)
         return res

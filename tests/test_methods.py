@@ -191,3 +191,9 @@ def test_entrywise_matrices_disable_the_equivariance_reduction():
     assert res.verdict == "fails" and "rational parametrization" in res.reductions[0]
     assert run_exact(_claim(entrywise_constant_matrix), 4, 1, 0).verdict == "inconclusive"
     assert run_points(_claim(entrywise_constant_matrix), 4, 1, "modular", 0).verdict == "fails"
+
+
+def test_exact_failure_comes_with_an_exact_witness_point():
+    res = run_exact(_claim(normal_flow_sign), 3, 2, 4)
+    assert res.verdict == "fails" and res.witness["field"] == "rational" and res.seed == 4
+    assert res.witness["point"] and res.witness["value"] != "0"
