@@ -376,13 +376,16 @@ def _md_results(rs: list[Result]) -> list[str]:
 
 def _summary_rows(claims: list[ClaimResults]) -> tuple[list[str], list[tuple[ClaimResults, list[int], str]]]:
     """The verdicts that occur, and per claim its counts (as printed) and status."""
-    present = [v for v in VERDICTS if any(r.verdict == v for c in claims for r in c.printed)]
+    sized = lambda c: [r for r in c.printed if r.n is not None]
+    present = [v for v in VERDICTS if any(r.verdict == v for c in claims for r in sized(c))]
     rows = []
     for c in claims:
-        cnt = Counter(r.verdict for r in c.printed)
+        cnt = Counter(r.verdict for r in sized(c))
+        free = next((r.verdict for r in c.printed if r.n is None), "–")
         bad = len(c.unexpected)
-        rows.append((c, [cnt[v] for v in present], "as expected" if not bad else f"{bad} unexpected"))
-    return present, rows
+        rows.append((c, [free] + [cnt[v] for v in present],
+                     "as expected" if not bad else f"{bad} unexpected"))
+    return ["all n, r"] + present, rows
 
 
 def render_markdown(results: Sequence[Result], meta: dict[str, Any] | None = None) -> str:
@@ -404,7 +407,8 @@ def render_markdown(results: Sequence[Result], meta: dict[str, Any] | None = Non
             f"**Expected verdicts.** {_md_escape(EXPECTED_EXPLANATION)}", ""]
 
     present, rows = _summary_rows(claims)
-    out += ["## Summary", "", "Runs (sizes × methods) of each claim as printed, by verdict.", ""]
+    out += ["## Summary", "", "For each claim as printed: the verdict of the dimension-free method (all n, r "
+            "at once), then the runs at fixed sizes (n, r) by verdict.", ""]
     out += _md_table(["claim", "paper", "§", "kind"] + present + ["status"],
                      [[f"`{c.id}`", _md_cell(labels(c.paper)), c.section or "–", c.kind]
                       + [str(k or "") for k in counts] + [status if status == "as expected"
@@ -592,7 +596,8 @@ def render_latex(results: Sequence[Result], meta: dict[str, Any] | None = None) 
 
     present, rows = _summary_rows(claims)
     out += [r"\section*{Summary}",
-            tex_escape("Runs (sizes × methods) of each claim as printed, by verdict."), "",
+            tex_escape("For each claim as printed: the verdict of the dimension-free method (all n, r at "
+                       "once), then the runs at fixed sizes (n, r) by verdict."), "",
             r"{\small\setlength{\tabcolsep}{4pt}", r"\begin{longtable}{@{}P{3.9cm}P{3.1cm}ll" + "r" * len(present) + "l@{}}",
             r"\toprule",
             " & ".join(["claim", "paper", r"\ensuremath{\S}", "kind"]
