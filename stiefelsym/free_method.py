@@ -19,6 +19,7 @@ from .results import CheckOutcome, Result
 
 def run_free(claim: Claim, func: Callable | None = None) -> Result:
     from .free import FreeScene, FreeSolveError, NeedsCoordinates, RewritingError
+    from .free.rewriting import latex_text
 
     func = func or claim.func
     res = _base_result(claim, None, None, "free", None)
@@ -36,7 +37,7 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
         scene = FreeScene(realization=claim.realization, lazy=True)
         checks = call_claim(func, scene)
     except NeedsCoordinates as exc:
-        return undecided(f"needs coordinates ({exc}); decided by the fixed-size methods")
+        return undecided(f"needs coordinates: {exc.what}; decided by the fixed-size methods")
     except (FreeSolveError, RewritingError) as exc:
         return undecided(f"outside the rewriting backend: {exc}")
     except (TypeError, ValueError, AttributeError, ArithmeticError) as exc:
@@ -58,7 +59,7 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
                     bad += 1
                     open_entries.append((pos, red))
                 if red.rules or not red.is_zero:
-                    derivations.append(f"\\paragraph{{{_tex(pos)}}}\n{red.latex()}")
+                    derivations.append(f"\\paragraph{{{latex_text(pos)}}}\n{red.latex()}")
             outcomes.append(CheckOutcome(name, "zero" if not bad else "open",
                                          "" if not bad else f"{bad} entries with nonzero normal form"))
     except RewritingError as exc:
@@ -82,7 +83,3 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
     res.certificate = (f"every residual entry has normal form 0; rules applied while building and reducing "
                        f"the residual: {names}")
     return res
-
-
-def _tex(s: str) -> str:
-    return "".join("\\" + c if c in "_{}&%$#" else c for c in s)

@@ -237,3 +237,24 @@ def test_latex_report_compiles_with_pdflatex(results, tmp_path):
     assert "Missing character" not in log
     assert ".600pk" not in log, "a bitmap font was generated: some glyph is not in a Type 1 font"
     assert (tmp_path / "verification.pdf").stat().st_size > 10_000
+
+
+def test_latex_report_of_real_catalog_runs_compiles(tmp_path):
+    """The catalog's own results (statements, certificates, dimension-free derivations, errata)."""
+    if shutil.which("pdflatex") is None:
+        pytest.skip("pdflatex is not installed (Debian: texlive-latex-base texlive-latex-recommended)")
+    from stiefelsym.claims import Size, load_catalog
+    from stiefelsym.runner import verify
+    cat = load_catalog()
+    ids = ["euclidean-invariance", "normal-flow", "jensen-invariance", "invariant-metrics",
+           "adjoint-orbit-regularity", "metric-flow"]
+    results = verify([cat.get(i) for i in ids], sizes=[Size(4, 1), Size(4, 2), Size(3, 2)],
+                     methods=("auto", "free", "float"), seed=0)
+    assert any(r.derivation for r in results) and any(r.verdict == "fails" for r in results)
+    (tmp_path / "verification.tex").write_text(render_latex(results, {"seed": 0}), encoding="utf-8")
+    for _ in range(2):
+        proc = subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error",
+                               "-no-shell-escape", "verification.tex"], cwd=tmp_path,
+                              capture_output=True, text=True, timeout=120, stdin=subprocess.DEVNULL)
+        assert proc.returncode == 0, proc.stdout[-3000:]
+    assert "Undefined control sequence" not in (tmp_path / "verification.log").read_text(errors="replace")
