@@ -94,6 +94,9 @@ def _entries(value: Any, prefix: str = "") -> list[tuple[str, Any]]:
         for k, v in enumerate(value):
             out.extend(_entries(v, f"{prefix}#{k + 1}"))
         return out
+    if isinstance(value, (str, bytes, float, complex, bool)) or value is None:
+        raise TypeError(f"check {prefix or 'value'}: a residual must be a matrix or a scalar of the scene "
+                        f"(use s.q(num, den) for constants), not {type(value).__name__}")
     return [(prefix or "value", value)]
 
 

@@ -63,6 +63,21 @@ def run_one(claim: Claim, size: Size | None, method: str, seed: int, func: Calla
             variant: str | None = None, hard: str | None = None) -> Result:
     """One result for one (claim, size, method); ``hard`` names a hard numerical case."""
     options = {"hard": hard_case(hard)} if hard else None
+    try:
+        res = _dispatch(claim, size, method, seed, func, options)
+    except KeyboardInterrupt:
+        raise
+    except Exception as exc:   # a bug in the claim (or the engine): an "error" verdict, never a traceback
+        from .methods import _base_result
+        res = _base_result(claim, size.n if size else None, size.r if size else None,
+                           "free" if size is None else method, seed)
+        res.verdict = "error"
+        res.message = f"{type(exc).__name__}: {exc}{_where(exc)}"
+    return _finish(res, claim, variant)
+
+
+def _dispatch(claim: Claim, size: Size | None, method: str, seed: int, func: Callable | None,
+              options: dict | None) -> Result:
     if method == "free" or size is None:
         from .free_method import run_free
         res = run_free(claim, func)
@@ -73,6 +88,17 @@ def run_one(claim: Claim, size: Size | None, method: str, seed: int, func: Calla
         if options and method == "exact":
             raise ValueError("hard cases are sampled points: use --method rational, modular or float")
         res = METHOD_RUNNERS[method](claim, size.n, size.r, seed, func, options)
+    return res
+
+
+def _where(exc: BaseException) -> str:
+    """' (at file:line)' of the innermost frame outside the engine, if any."""
+    import traceback
+    frames = [f for f in traceback.extract_tb(exc.__traceback__) if "/stiefelsym/" not in f.filename]
+    return f" (at {frames[-1].filename}:{frames[-1].lineno})" if frames else ""
+
+
+def _finish(res: Result, claim: Claim, variant: str | None) -> Result:
     res.variant = variant
     if res.method == "free":
         res.expected = res.verdict in ("proved", "undecided")

@@ -197,3 +197,21 @@ def test_exact_failure_comes_with_an_exact_witness_point():
     res = run_exact(_claim(normal_flow_sign), 3, 2, 4)
     assert res.verdict == "fails" and res.witness["field"] == "rational" and res.seed == 4
     assert res.witness["point"] and res.witness["value"] != "0"
+
+
+def buggy(s):
+    return {"oops": s.X @ s.X}          # shapes do not match
+
+
+def float_residual(s):
+    return {"oops": 0.5}
+
+
+@pytest.mark.parametrize("func", [buggy, float_residual])
+@pytest.mark.parametrize("method", ["exact", "modular", "rational", "float", "auto"])
+def test_a_broken_claim_is_an_error_verdict_not_a_crash(func, method):
+    res = run_one(_claim(func), Size(3, 2), method, 0)
+    assert res.verdict == "error" and not res.expected
+    assert "Error" in res.message
+    if func is buggy:
+        assert "test_methods.py" in res.message       # where in the claim it broke
