@@ -530,6 +530,24 @@ def show(claim_id: str, claims_file: str | None) -> None:
     click.echo(f"source:      {_source(c)}")
 
 
+@main.command()
+@click.argument("claim_id", metavar="CLAIM")
+@click.option("--claims", "claims_file", metavar="FILE", help="Look the claim up in this file first.")
+def derive(claim_id: str, claims_file: str | None) -> None:
+    """Print the dimension-free proof of CLAIM as LaTeX: each residual, the rules that
+    reduce it, its normal form.  Exit status 1 when the claim is not proved for all n, r."""
+    from .free_method import run_free
+    registry, _ = _registry(claims_file, (claim_id,))
+    c = _lookup(registry, claim_id)
+    res = run_free(c)
+    click.echo(f"% {c.id} ({', '.join(c.paper)}): {res.verdict} for all n, r", err=False)
+    if res.verdict != "proved":
+        click.echo(f"% {res.message}")
+        raise click.exceptions.Exit(EXIT_UNEXPECTED)
+    click.echo(f"% {res.certificate}")
+    click.echo("\n\n".join(res.derivation) if res.derivation else "% every residual is 0 as built")
+
+
 def _source(c: Claim) -> str:
     try:
         path = inspect.getsourcefile(c.func)

@@ -489,3 +489,14 @@ def test_subprocess_ctrl_c_exits_130_and_writes_no_report(tmp_path):
     assert re.fullmatch(r"stiefelsym: interrupted after \d+ of \d+ runs; no report written",
                         err.strip().splitlines()[-1])
     assert not any((tmp_path / "out" / name).exists() for name in cli.REPORT_FILES)
+
+
+def test_derive_prints_a_latex_derivation_or_exits_1():
+    from click.testing import CliRunner
+    from stiefelsym.cli import main
+    ok = CliRunner().invoke(main, ["derive", "normal-flow"])
+    assert ok.exit_code == 0 and "\\operatorname{nf}(R) &= 0" in ok.output and "proved for all n, r" in ok.output
+    no = CliRunner().invoke(main, ["derive", "metric-flow"])
+    assert no.exit_code == 1 and "undecided" in no.output
+    bad = CliRunner().invoke(main, ["derive", "nosuch"])
+    assert bad.exit_code == 2
