@@ -239,14 +239,21 @@ class Scene(ScalarParameters):
             return self._cached("P_metric", lambda: self.A @ self._point()[1])
         return self._point()[1]
 
+    def _second_point(self):
+        if self.chart == "equivariant":
+            # the reduction moves one point to X0; a second point stays generic
+            self.tracker.touch("a second point (Y, Q)")
+            raise CoordinateAccess("a second point (Y, Q)")
+        return self._cached("point2", lambda: self._stiefel_point("second_"))
+
     @property
     def Y(self) -> Mat:
         """A second point (Y, Q) of T*V_{n,r}."""
-        return self._cached("point2", lambda: self._stiefel_point("second_"))[0]
+        return self._second_point()[0]
 
     @property
     def Q(self) -> Mat:
-        return self._cached("point2", lambda: self._stiefel_point("second_"))[1]
+        return self._second_point()[1]
 
     # -- the complex Stiefel variety W(n, r), realified ---------------------------
     # A complex matrix U + iV is represented by the real block matrix [[U, -V], [V, U]]:

@@ -215,3 +215,19 @@ def test_a_broken_claim_is_an_error_verdict_not_a_crash(func, method):
     assert "Error" in res.message
     if func is buggy:
         assert "test_methods.py" in res.message       # where in the claim it broke
+
+
+def two_points(s):
+    """Y^T Y = I for a second point; and a false 'Y = X'."""
+    return {"Y^T Y": s.Y.T @ s.Y - s.Ir}
+
+
+def two_points_false(s):
+    return {"Y = X": s.Y - s.X}
+
+
+def test_a_second_point_is_never_reduced_to_X0():
+    assert run_exact(_claim(two_points), 3, 2, 0).verdict == "proved"
+    res = run_exact(_claim(two_points_false), 3, 2, 0)
+    assert res.verdict == "fails" and "rational parametrization" in res.reductions[0]
+    assert run_points(_claim(two_points_false), 4, 2, "modular", 0).verdict == "fails"
