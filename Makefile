@@ -18,9 +18,9 @@ $(STAMP): pyproject.toml
 verify: venv
 	$(BIN)/stiefelsym verify
 
-## verify-all: also the slow methods (symbolic exact, modular, dimension-free) and slow tests
+## verify-all: every method at every size (auto, modular, rational, float, free) and the slow tests
 verify-all: venv
-	$(BIN)/stiefelsym verify --method auto --method exact --method modular --method free \
+	$(BIN)/stiefelsym verify --method auto --method modular --method rational --method float --method free \
 		--report-dir reports/all
 	$(BIN)/python -m pytest -q -m slow || test $$? -eq 5
 

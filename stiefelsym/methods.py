@@ -380,6 +380,12 @@ def _point_rank(R: Rank, field: Field, bound_text: str) -> tuple[str, bool]:
             f"unless a ({rk + 1})-minor of degree <= {bound_text} vanishes here"), True
 
 
+def _constant_rank(R: Rank) -> tuple[str, bool]:
+    rk = RationalField().rank(R.matrix.a.tolist())
+    return (f"the matrix is constant (no parameter enters); its exact rank over Q is {rk} "
+            f"(paper: {R.expected})", rk == R.expected)
+
+
 def run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callable | None = None,
                trials: int | None = None, options: dict | None = None) -> Result:
     func = func or claim.func
@@ -453,6 +459,16 @@ def run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callabl
         else:
             res.certificate = "; ".join(count_bad + rank_bad)
         return res
+    if rank_bad and not scene.params:
+        # no chart parameter entered: the matrices are constant, and their rank over Q is exact
+        exact_scene = Scene(n, r, RationalField(), chart="cayley", rng=random.Random(seed),
+                            realization=claim.realization)
+        ev = _evaluate(call_claim(func, exact_scene), exact_scene.field, lambda R: _constant_rank(R))
+        if ev.rank_problems:
+            res.verdict = "fails"
+            res.certificate = "; ".join(ev.rank_problems)
+            return res
+        rank_bad = []
     if rank_bad:
         res.verdict = "inconclusive"
         res.message = "; ".join(rank_bad)
