@@ -46,8 +46,8 @@ def plan(claims: list[Claim], sizes: list[Size] | None, methods: Iterable[str]) 
         for m in methods:
             if m == "free" or (m == "auto" and sizes is None):
                 runs.append((c, None, "free"))
-            if m == "free":
-                continue
+            if m == "free" or (m == "float" and c.kind == "dim"):
+                continue   # dimensions are integers: floating point has nothing to say about them
             for s in _sizes_for(c, sizes):
                 runs.append((c, s, m))
     seen, out = set(), []
@@ -122,7 +122,7 @@ def _run_auto(claim: Claim, size: Size, seed: int, func: Callable | None) -> Res
     else:
         reason, spent = f"n = {size.n} is above this claim's symbolic budget (n <= {claim.exact_max_n})", 0.0
     res = METHOD_RUNNERS["modular"](claim, size.n, size.r, seed, func)
-    res.message = (f"exact: {reason}; " if reason else "") + res.message
+    res.message = "; ".join(m for m in (f"exact: {reason}" if reason else "", res.message) if m)
     res.seconds += spent
     return res
 
