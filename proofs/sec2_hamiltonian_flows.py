@@ -190,6 +190,21 @@ def dirac_flow_is_the_multiplier_form(s):
 
 # -- momentum maps -------------------------------------------------------------------
 
+def momentum_map_checks(s, H, action, name, x_text, p_text, equivariance):
+    """H generates the action: {H, F_i}_0 = 0 on T*V, its Dirac and canonical flows agree and
+    equal the infinitesimal action, and the momentum map is equivariant."""
+    canonical = s.canonical_flow(H)
+    dirac = s.dirac_flow(H)
+    return {
+        f"{{{name}, F_i}}_0 on T*V": [-dF for dF in s.d(cond_XP, canonical)],
+        "Dirac flow = canonical flow (X)": dirac.Xdot - canonical.Xdot,
+        "Dirac flow = canonical flow (P)": dirac.Pdot - canonical.Pdot,
+        f"dX/dt = {x_text}": dirac.Xdot - action["X"],
+        f"dP/dt = {p_text}": dirac.Pdot - action["P"],
+        "equivariance": equivariance,
+    }
+
+
 @claim("left-momentum-map", paper=("Phi", "momentum_map", "zero", "left_action"), kind="pb",
        equivariance="the matrix units only span the tangent directions of the fibre; the checks are covariant",
        statement=r"\{\Phi_\xi,F_i\}_0=0,\quad X_{\Phi_\xi}=X^0_{\Phi_\xi}=(\xi X,\xi P),\quad "
@@ -197,16 +212,8 @@ def dirac_flow_is_the_multiplier_form(s):
 def phi_is_the_left_momentum_map(s):
     """Φ = PXᵀ − XPᵀ is the momentum map of the left SO(n) action: {Φ_ξ, F_i}_0 = −dF_i(X⁰_{Φ_ξ}) = 0, the Dirac and canonical flows of Φ_ξ are both (ξX, ξP), and Φ is equivariant."""
     left = {"X": s.xi @ s.X, "P": s.xi @ s.P}
-    canonical = s.canonical_flow(Phi_xi)
-    dirac = s.dirac_flow(Phi_xi)
-    return {
-        "{Phi_xi, F_i}_0": [-dF for dF in s.d(cond_XP, canonical)],
-        "Dirac flow = canonical flow (X)": dirac.Xdot - canonical.Xdot,
-        "Dirac flow = canonical flow (P)": dirac.Pdot - canonical.Pdot,
-        "dX/dt = xi X": dirac.Xdot - left["X"],
-        "dP/dt = xi P": dirac.Pdot - left["P"],
-        "equivariance": s.d(lambda t: t.Phi, left) - comm(s.xi, s.Phi),
-    }
+    return momentum_map_checks(s, Phi_xi, left, "Phi_xi", "xi X", "xi P",
+                               s.d(lambda t: t.Phi, left) - comm(s.xi, s.Phi))
 
 
 @claim("right-momentum-map", paper=("momentum_right_map", "right_action"), kind="pb",
@@ -216,16 +223,8 @@ def phi_is_the_left_momentum_map(s):
 def psi_is_the_right_momentum_map(s):
     """Ψ = XᵀP − PᵀX is the momentum map of the right SO(r) action: {Ψ_η, F_i}_0 = 0 on T*V, the Dirac and canonical flows of Ψ_η are both (Xη, Pη), and Ψ(XQ, PQ) = QᵀΨQ infinitesimally."""
     right = {"X": s.X @ s.eta, "P": s.P @ s.eta}
-    canonical = s.canonical_flow(Psi_eta)
-    dirac = s.dirac_flow(Psi_eta)
-    return {
-        "{Psi_eta, F_i}_0 on T*V": [-dF for dF in s.d(cond_XP, canonical)],
-        "Dirac flow = canonical flow (X)": dirac.Xdot - canonical.Xdot,
-        "Dirac flow = canonical flow (P)": dirac.Pdot - canonical.Pdot,
-        "dX/dt = X eta": dirac.Xdot - right["X"],
-        "dP/dt = P eta": dirac.Pdot - right["P"],
-        "equivariance": s.d(lambda t: t.Psi, right) - comm(s.Psi, s.eta),
-    }
+    return momentum_map_checks(s, Psi_eta, right, "Psi_eta", "X eta", "P eta",
+                               s.d(lambda t: t.Psi, right) - comm(s.Psi, s.eta))
 
 
 @claim("momentum-maps-poisson", paper=("Phi", "momentum_map", "momentum_right_map"), kind="pb",

@@ -80,11 +80,28 @@ REALIZATIONS = {
 }
 
 
-class ScalarParameters:
-    """The paper's scalar parameters, as free parameters of a scene (shared by every backend)."""
+class PaperObjects:
+    """What every backend derives the same way from its primitives X, P and its parameters."""
 
     def param(self, name: str) -> Scalar:
         raise NotImplementedError
+
+    def _cached(self, key: str, build: Callable[[], Any]) -> Any:
+        raise NotImplementedError
+
+    @property
+    def Phi(self) -> Mat:
+        """The SO(n) momentum map Phi = P X^T - X P^T."""
+        return self._cached("Phi", lambda: self.P @ self.X.T - self.X @ self.P.T)
+
+    @property
+    def Psi(self) -> Mat:
+        """The SO(r) momentum map Psi = X^T P - P^T X."""
+        return self._cached("Psi", lambda: self.X.T @ self.P - self.P.T @ self.X)
+
+    def killing(self, a: Mat, b: Mat) -> Scalar:
+        """<a, b> = -1/2 tr(ab)."""
+        return self.field.normalize((a @ b).trace() * self.const(Fraction(-1, 2)))
 
     def scalar(self, name: str) -> Scalar:
         """A free scalar parameter such as lambda, kappa, epsilon."""
@@ -106,7 +123,7 @@ class ScalarParameters:
         return self.param("epsilon")
 
 
-class Scene(ScalarParameters):
+class Scene(PaperObjects):
     """One problem size over one field, with lazily built objects."""
 
     def __init__(self, n: int, r: int, field: Field, *, chart: str = "cayley",
@@ -375,22 +392,8 @@ class Scene(ScalarParameters):
     def Ir(self) -> Mat:
         return self._cached("Ir", lambda: self.identity(self.r, "r"))
 
-    @property
-    def Phi(self) -> Mat:
-        """The SO(n) momentum map Phi = P X^T - X P^T."""
-        return self._cached("Phi", lambda: self.P @ self.X.T - self.X @ self.P.T)
-
-    @property
-    def Psi(self) -> Mat:
-        """The SO(r) momentum map Psi = X^T P - P^T X."""
-        return self._cached("Psi", lambda: self.X.T @ self.P - self.P.T @ self.X)
-
     def tr(self, M: Mat) -> Scalar:
         return M.trace()
-
-    def killing(self, a: Mat, b: Mat) -> Scalar:
-        """<a, b> = -1/2 tr(ab)."""
-        return (a @ b).trace() * self.const(Fraction(-1, 2))
 
     def resolvent(self, mu: Scalar) -> Mat:
         """(mu I_n - A)^{-1}."""

@@ -21,7 +21,7 @@ import symengine as se
 
 from ..fields import Dual, DualField, Field
 from ..matrix import CoordinateTracker, Mat
-from ..scene import Flow, ScalarParameters
+from ..scene import Flow, PaperObjects
 from .algebra import (DIMENSIONS, Letter, NCPoly, NeedsCoordinates, as_coef, coef_latex, derivation,
                       letter_pair, skew_letter, substitute, symmetric_letter, trace)
 from .rewriting import Order, Reduction, RewritingSystem, simplify_coef
@@ -170,7 +170,7 @@ class FreeDualField(DualField):
 
 
 # ---------------------------------------------------------------------------
-class FreeScene(ScalarParameters):
+class FreeScene(PaperObjects):
     """T*V_{n,r} for all n, r at once: the scene interface over the free algebra."""
 
     chart = "free"
@@ -359,24 +359,10 @@ class FreeScene(ScalarParameters):
     def _const_mat(self, p: NCPoly) -> Mat:
         return Mat.from_rows([[p]], self.field, p.shape, self.tracker)
 
-    @property
-    def Phi(self) -> Mat:
-        """The SO(n) momentum map Φ = P Xᵀ − X Pᵀ."""
-        return self._cached("Phi", lambda: self.P @ self.X.T - self.X @ self.P.T)
-
-    @property
-    def Psi(self) -> Mat:
-        """The SO(r) momentum map Ψ = Xᵀ P − Pᵀ X."""
-        return self._cached("Psi", lambda: self.X.T @ self.P - self.P.T @ self.X)
-
     def tr(self, M: Any) -> Any:
         if isinstance(M, Mat):
             return M.trace()
         return self.field.normalize(self.field.entry_trace(M))
-
-    def killing(self, a: Mat, b: Mat) -> Any:
-        """<a, b> = −½ tr(ab)."""
-        return self.field.normalize((a @ b).trace() * self.const(Fraction(-1, 2)))
 
     def resolvent(self, mu: Any) -> Mat:
         """(mu I_n − A)^{-1} as a letter R_mu with A R = R A = mu R − I."""
