@@ -570,8 +570,35 @@ def _null():
     yield
 
 
+def run_exact_isolated(claim: Claim, n: int, r: int, seed: int, func: Callable | None = None,
+                       time_budget: float = EXACT_TIME_LIMIT) -> Result:
+    """run_exact in a child process that is killed when it exceeds its budget (no hang, ever).
+    Sizes n <= 3 stay in-process: their symbolic work is small and the fork would dominate."""
+    if n <= 3:
+        return run_exact(claim, n, r, seed, func, time_budget)
+    from .isolate import HardTimeout, run_isolated
+    import sympy.polys.matrices  # noqa: F401 - imported once here, not in every child
+    t0 = time.perf_counter()
+    try:
+        return run_isolated(lambda: run_exact(claim, n, r, seed, func, time_budget),
+                            1.1 * time_budget + 1, _describe)
+    except HardTimeout:
+        res = _base_result(claim, n, r, "exact", None)
+        res.verdict = "inconclusive"
+        res.message = f"symbolic computation exceeded its budget of {time_budget:.0f} s (stopped)"
+        res.seconds = time.perf_counter() - t0
+        return res
+
+
+def _describe(exc: BaseException) -> str:
+    import traceback
+    frames = [f for f in traceback.extract_tb(exc.__traceback__) if "/stiefelsym/" not in f.filename]
+    where = f" (at {frames[-1].filename}:{frames[-1].lineno})" if frames else ""
+    return f"{type(exc).__name__}: {exc}{where}"
+
+
 METHOD_RUNNERS = {
-    "exact": lambda c, n, r, seed, func=None, options=None: run_exact(c, n, r, seed, func),
+    "exact": lambda c, n, r, seed, func=None, options=None: run_exact_isolated(c, n, r, seed, func),
     "rational": lambda c, n, r, seed, func=None, options=None: run_points(c, n, r, "rational", seed, func,
                                                                           options=options),
     "modular": lambda c, n, r, seed, func=None, options=None: run_points(c, n, r, "modular", seed, func,

@@ -68,11 +68,12 @@ def run_one(claim: Claim, size: Size | None, method: str, seed: int, func: Calla
     except KeyboardInterrupt:
         raise
     except Exception as exc:   # a bug in the claim (or the engine): an "error" verdict, never a traceback
-        from .methods import _base_result
+        from .isolate import ChildError
+        from .methods import _base_result, _describe
         res = _base_result(claim, size.n if size else None, size.r if size else None,
                            "free" if size is None else method, seed)
         res.verdict = "error"
-        res.message = f"{type(exc).__name__}: {exc}{_where(exc)}"
+        res.message = str(exc) if isinstance(exc, ChildError) else _describe(exc)
     return _finish(res, claim, variant)
 
 
@@ -89,13 +90,6 @@ def _dispatch(claim: Claim, size: Size | None, method: str, seed: int, func: Cal
             raise ValueError("hard cases are sampled points: use --method rational, modular or float")
         res = METHOD_RUNNERS[method](claim, size.n, size.r, seed, func, options)
     return res
-
-
-def _where(exc: BaseException) -> str:
-    """' (at file:line)' of the innermost frame outside the engine, if any."""
-    import traceback
-    frames = [f for f in traceback.extract_tb(exc.__traceback__) if "/stiefelsym/" not in f.filename]
-    return f" (at {frames[-1].filename}:{frames[-1].lineno})" if frames else ""
 
 
 def _finish(res: Result, claim: Claim, variant: str | None) -> Result:

@@ -231,3 +231,26 @@ def test_a_second_point_is_never_reduced_to_X0():
     res = run_exact(_claim(two_points_false), 3, 2, 0)
     assert res.verdict == "fails" and "rational parametrization" in res.reductions[0]
     assert run_points(_claim(two_points_false), 4, 2, "modular", 0).verdict == "fails"
+
+
+def stuck_in_native_code(s):
+    """Blocks the alarm signal and sleeps: only a hard kill can stop it."""
+    import signal
+    import time
+    signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGALRM})
+    time.sleep(60)
+    return {"never": s.X}
+
+
+def test_exact_method_never_hangs():
+    import time
+    from stiefelsym.methods import run_exact_isolated
+    t0 = time.perf_counter()
+    res = run_exact_isolated(_claim(stuck_in_native_code), 4, 2, 0, time_budget=1)
+    assert res.verdict == "inconclusive" and "budget" in res.message
+    assert time.perf_counter() - t0 < 10
+
+
+def test_errors_in_the_isolated_child_come_back_as_error_verdicts():
+    res = run_one(_claim(buggy), Size(4, 2), "exact", 0)
+    assert res.verdict == "error" and "test_methods.py" in res.message

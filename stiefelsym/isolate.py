@@ -1,0 +1,78 @@
+"""Run a computation in a forked child with a hard time limit.
+
+Symbolic expansion inside symengine's C++ code cannot be interrupted by a
+signal handler; a child process can always be killed.  Where fork is not
+available the computation runs in-process (with the signal-based limit only).
+"""
+from __future__ import annotations
+
+import gc
+import os
+import pickle
+import select
+import signal
+import time
+from typing import Any, Callable
+
+
+class HardTimeout(Exception):
+    """The child exceeded its time limit and was killed."""
+
+
+class ChildError(Exception):
+    """The computation raised in the child; the message says what and where."""
+
+
+def run_isolated(fn: Callable[[], Any], seconds: float, describe: Callable[[BaseException], str]) -> Any:
+    """fn() in a forked child, killed after ``seconds``; its exceptions come back as ChildError."""
+    if not hasattr(os, "fork"):
+        return fn()
+    rfd, wfd = os.pipe()
+    gc.freeze()    # keep the parent's objects out of the child's collections (fewer copied pages)
+    pid = os.fork()
+    if pid == 0:   # the child: compute, send, exit without running the parent's cleanup
+        os.close(rfd)
+        try:
+            try:
+                payload = pickle.dumps(("ok", fn()))
+            except BaseException as exc:  # noqa: BLE001 - everything goes back to the parent
+                payload = pickle.dumps(("error", describe(exc)))
+            with os.fdopen(wfd, "wb") as out:
+                out.write(payload)
+        finally:
+            os._exit(0)
+    os.close(wfd)
+    gc.unfreeze()
+    chunks: list[bytes] = []
+    deadline = time.monotonic() + seconds
+    try:
+        while True:
+            left = deadline - time.monotonic()
+            if left <= 0:
+                raise HardTimeout()
+            ready, _, _ = select.select([rfd], [], [], left)
+            if ready:
+                chunk = os.read(rfd, 1 << 16)
+                if not chunk:
+                    break
+                chunks.append(chunk)
+    except BaseException:
+        _kill(pid)
+        raise
+    finally:
+        os.close(rfd)
+    os.waitpid(pid, 0)
+    if not chunks:
+        raise ChildError("the computation ended without a result (the child process died)")
+    kind, value = pickle.loads(b"".join(chunks))
+    if kind == "error":
+        raise ChildError(value)
+    return value
+
+
+def _kill(pid: int) -> None:
+    try:
+        os.kill(pid, signal.SIGKILL)
+        os.waitpid(pid, 0)
+    except (ProcessLookupError, ChildProcessError):
+        pass
