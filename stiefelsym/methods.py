@@ -170,12 +170,32 @@ def _sympy_rows(M: Mat):
 
 
 def _function_field_rank(M: Mat) -> int:
+    dM = _domain_matrix(M)
+    return 0 if dM is None else len(dM.rref_den()[2])   # fraction-free: pivots of the reduced form
+
+
+def _domain_matrix(M: Mat):
     from sympy.polys.matrices import DomainMatrix
     rows = _sympy_rows(M)
     if not rows or not rows[0]:
-        return 0
-    dM = DomainMatrix.from_list_sympy(len(rows), len(rows[0]), rows)
-    return len(dM.rref_den()[2])   # fraction-free elimination: pivots of the reduced form
+        return None
+    return DomainMatrix.from_list_sympy(len(rows), len(rows[0]), rows)
+
+
+def _kernel_certificate(M: Mat, limit: int = 3) -> str:
+    """Explicit kernel vectors over the function field, each checked to be annihilated by M."""
+    dM = _domain_matrix(M)
+    if dM is None:
+        return ""
+    K = dM.to_field().nullspace()
+    vecs = K.to_Matrix().tolist() if K.shape[0] else []
+    for v in vecs:
+        import sympy
+        if any(sympy.simplify(x) != 0 for x in (dM.to_Matrix() * sympy.Matrix(v))):
+            return ""
+    shown = "; ".join("(" + ", ".join(str(x) for x in v) + ")" for v in vecs[:limit])
+    more = f" and {len(vecs) - limit} more" if len(vecs) > limit else ""
+    return f"; explicit kernel ({len(vecs)} vectors, each checked M v = 0): {_short(shown + more, 400)}"
 
 
 def _constant_minor_rank(M: Mat, field: Field) -> int:
@@ -210,16 +230,18 @@ def _exact_rank(R: Rank, field: Field) -> tuple[str, bool]:
     if R.generic:
         generic = _function_field_rank(R.matrix)
         ok = generic == R.expected
+        kernel = _kernel_certificate(R.matrix) if generic < R.expected else ""
         return (f"rank over the function field Q(chart parameters) = {generic} "
-                f"(paper: {R.expected}); two-sided: exact rank of the generic matrix", ok)
+                f"(paper: {R.expected}); two-sided: exact rank of the generic matrix{kernel}", ok)
     const = _constant_minor_rank(R.matrix, field)
     if const == R.expected == min(R.matrix.shape):
         return (f"a constant nonzero {const}x{const} minor: rank {const} at every point (full rank); "
                 f"paper: {R.expected}", True)
     generic = _function_field_rank(R.matrix)
     ok = generic == R.expected and const == R.expected
+    kernel = _kernel_certificate(R.matrix) if generic < R.expected else ""
     return (f"a constant nonzero {const}x{const} minor (rank >= {const} at every point) and rank "
-            f"{generic} over the function field (rank <= {generic} at every point); paper: {R.expected}", ok)
+            f"{generic} over the function field (rank <= {generic} at every point); paper: {R.expected}{kernel}", ok)
 
 
 EQUIVARIANT_REDUCTION = (
