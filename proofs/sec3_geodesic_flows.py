@@ -2,7 +2,7 @@
 SO(r)-invariant metrics on V(n, r)."""
 from __future__ import annotations
 
-from stiefelsym import Count, Rank, admissible, block, claim, comm
+from stiefelsym import Rank, admissible, claim
 
 SECTION = "3"
 

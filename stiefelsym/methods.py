@@ -9,7 +9,6 @@
 """
 from __future__ import annotations
 
-import math
 import random
 import signal
 import time
@@ -392,7 +391,6 @@ def _point_field(kind: str) -> Field:
 
 def _point_rank(R: Rank, field: Field, bound_text: str) -> tuple[str, bool]:
     rk = field.rank(R.matrix.a.tolist())
-    ok = rk == R.expected
     where = "at this exact point" if field.name == "rational" else "at this point mod p"
     if rk > R.expected:
         return f"rank {rk} {where} exceeds the paper's {R.expected} (certain: generic rank >= {rk})", False
@@ -599,7 +597,7 @@ def run_exact_isolated(claim: Claim, n: int, r: int, seed: int, func: Callable |
     if n <= 3:
         return run_exact(claim, n, r, seed, func, time_budget)
     from .isolate import HardTimeout, run_isolated
-    import sympy.polys.matrices  # noqa: F401 - imported once here, not in every child
+    import sympy.polys.matrices  # noqa: F401 (imported once here, not in every child)
     t0 = time.perf_counter()
     try:
         return run_isolated(lambda: run_exact(claim, n, r, seed, func, time_budget),

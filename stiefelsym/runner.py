@@ -6,7 +6,7 @@ from typing import Callable, Iterable
 
 from .claims import Claim, Registry, Size
 from .hard import hard_case
-from .methods import BUDGET, METHOD_RUNNERS, BudgetError, check_budget, expected_verdict
+from .methods import BUDGET, METHOD_RUNNERS, BudgetError, check_budget, expected_verdict  # noqa: F401 (BudgetError is part of the runner API)
 from .results import Result
 from .scene import SizeError
 

@@ -26,7 +26,7 @@ from typing import Any, Callable, Mapping
 import numpy as np
 
 from .fields import Dual, DualField, Field, DegenerateError
-from .matrix import CoordinateTracker, Mat, block, comm, indexed_by_Rn, scalar_matrix
+from .matrix import CoordinateTracker, Mat, block, indexed_by_Rn, scalar_matrix
 
 Scalar = Any
 Function = Callable[["Scene"], Any]

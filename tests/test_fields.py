@@ -3,9 +3,8 @@ import random
 from fractions import Fraction
 
 import pytest
-import symengine as se
 
-from stiefelsym.fields import (DegenerateError, Deg, DegreeField, Dual, ErrNum, FloatField, ModularField,
+from stiefelsym.fields import (DegenerateError, Deg, DegreeField, Dual, FloatField, ModularField,
                                RationalField, SymbolicField)
 from stiefelsym.matrix import Mat
 

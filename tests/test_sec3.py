@@ -2,7 +2,7 @@
 import pytest
 
 from proofs import sec3_geodesic_flows as g
-from stiefelsym import Rank, admissible, comm
+from stiefelsym import Rank, admissible
 from stiefelsym.claims import Claim, load_catalog
 from stiefelsym.methods import run_exact, run_points
 
