@@ -175,10 +175,6 @@ class SymbolicField(Field):
                     rows[i] = [se.expand(a - f * b) for a, b in zip(rows[i], rows[col])]
         return True
 
-    def pivot_cost_numeric(self, x):
-        e = se.expand(x)
-        return 0.0 if e.is_Number and e != 0 else math.inf
-
     #: largest system solved by cofactors (larger ones raise SymbolicBudget)
     max_solve = 3
 
@@ -643,21 +639,3 @@ class DualField(Field):
                 for j in range(k)] for i in range(m)]
         Y1 = self.base.solve(M0, rhs)
         return [[Dual(Y0[i][j], Y1[i][j]) for j in range(k)] for i in range(m)]
-
-
-@dataclass(frozen=True)
-class FieldSpec:
-    """How a method builds its field (kept small so results can name it)."""
-
-    kind: str
-    dps: int | None = None
-
-
-def make_field(kind: str, **kw) -> Field:
-    return {
-        "symbolic": SymbolicField,
-        "rational": RationalField,
-        "modular": ModularField,
-        "float": FloatField,
-        "degree": DegreeField,
-    }[kind](**kw)

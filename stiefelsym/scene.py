@@ -59,9 +59,8 @@ class Constraints:
     """A realization of T*V as the zero set of symmetric matrix constraints."""
 
     name: str
+    #: the symmetric r x r matrix constraints; their scalar components are the upper triangles
     build: Callable[["Scene"], list[Mat]]
-    #: number of scalar constraints per matrix: upper triangles of symmetric r x r
-    symmetric: bool = True
 
 
 def standard_constraints(s: "Scene") -> list[Mat]:
