@@ -95,7 +95,7 @@ def main(ctx: click.Context) -> None:
       stiefelsym verify euclidean-flow --size 4,2  one claim, one size
       stiefelsym verify --claims my_claims.py      your own claims
       stiefelsym report                            re-render reports/
-    stiefelsym derive normal-flow                the proof for all n, r, as LaTeX
+      stiefelsym derive normal-flow                the proof for all n, r, as LaTeX
 
     Exit status: 0 every verdict as expected, 1 some verdict unexpected, 2 bad
     input, 130 interrupted.
