@@ -426,8 +426,10 @@ def run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callabl
         res.reductions.append(f"hard case: {options['hard'].description} (not uniform: no Schwartz-Zippel bound)")
     evaluations, resampled = [], 0
     witness = None
-    for t in range(trials):
-        comp = t % 2 if r == n else 0
+    # for r = n the constraint set has two components (det X = +-1): each gets ``trials`` points
+    components = 2 if r == n else 1
+    for t in range(trials * components):
+        comp = t % components
         for attempt in range(MAX_RESAMPLE):
             rng = random.Random(f"{seed}|{claim.id}|{n}|{r}|{kind}|{t}|{attempt}")
             scene = Scene(n, r, field, chart="cayley", rng=rng, component=comp, realization=claim.realization,
@@ -436,7 +438,7 @@ def run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callabl
                 checks = call_claim(func, scene)
                 ev = _evaluate(checks, field, lambda R: _point_rank(R, field, str(deg.numerator)))
                 break
-            except DegenerateError:
+            except (DegenerateError, ZeroDivisionError):
                 resampled += 1
                 continue
         else:
@@ -467,7 +469,7 @@ def run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callabl
         else:
             res.verdict = "fails"
             res.false_pass_bound = per_trial ** trials
-            res.certificate = f"vanished at {trials} random points{note}"
+            res.certificate = f"vanished at {trials * components} random points{note}"
         return res
     if nonzero or count_bad or any("exceeds" in p for p in rank_bad):
         res.verdict = "fails"
@@ -495,11 +497,12 @@ def run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callabl
         return res
     if options and options.get("hard"):
         res.verdict = "checked"
-        res.certificate = f"the residual vanishes exactly at the {trials} hard points{note}"
+        res.certificate = f"the residual vanishes exactly at the {trials * components} hard points{note}"
         return res
     res.verdict = "checked"
     res.false_pass_bound = per_trial ** trials
-    res.certificate = (f"{trials} independent points, parameters uniform from a set of size {_size(S)}; "
+    per = f" on each of the {components} components of T*V" if components == 2 else ""
+    res.certificate = (f"{trials} independent points{per}, parameters uniform from a set of size {_size(S)}; "
                        f"numerator degree <= {deg.numerator}; false-pass probability <= "
                        f"(d/(|S| - d_den))^{trials} = {res.false_pass_bound:.1e}{note}")
     return res

@@ -254,3 +254,28 @@ def test_exact_method_never_hangs():
 def test_errors_in_the_isolated_child_come_back_as_error_verdicts():
     res = run_one(_claim(buggy), Size(4, 2), "exact", 0)
     assert res.verdict == "error" and "test_methods.py" in res.message
+
+
+def only_on_the_identity_component(s):
+    """det X = 1 only on one component of O(3): a claim true there and false on the other."""
+    X = s.X
+    det = (X[0, 0] * (X[1, 1] * X[2, 2] - X[1, 2] * X[2, 1]) - X[0, 1] * (X[1, 0] * X[2, 2] - X[1, 2] * X[2, 0])
+           + X[0, 2] * (X[1, 0] * X[2, 1] - X[1, 1] * X[2, 0]))
+    return {"det X - 1": det - 1}
+
+
+def test_both_components_are_sampled_when_r_equals_n():
+    for kind in ("rational", "modular"):
+        res = run_points(_claim(only_on_the_identity_component), 3, 3, kind, 0)
+        assert res.verdict == "fails" and res.witness["component"] == 1
+
+
+def always_at_a_pole(s):
+    u = s.param("u")
+    return {"pole": 1 / (u - u) * s.X}
+
+
+def test_a_point_at_a_pole_is_redrawn_and_reported_never_a_crash():
+    for kind in ("rational", "modular"):
+        res = run_points(_claim(always_at_a_pole), 3, 1, kind, 0)
+        assert res.verdict == "inconclusive" and "degenerate" in res.message
