@@ -578,7 +578,7 @@ class Scene(PaperObjects):
         """The derivative of F (a function of the scene) along a flow."""
         tangent = flow.tangent() if isinstance(flow, Flow) else dict(flow)
         value = F(self.tangent(tangent))
-        return _map_value(value, lambda x: x.b if isinstance(x, Dual) else self.const(0), self)
+        return map_entries(value, lambda x: x.b if isinstance(x, Dual) else self.const(0), self)
 
 
 class CoordinateAccess(ValueError):
@@ -689,14 +689,15 @@ def _flatten_value(v: Any, symmetric_lists: bool) -> list[Any]:
     return [v]
 
 
-def _map_value(v: Any, f, scene: Scene) -> Any:
+def map_entries(v: Any, f, scene: Any) -> Any:
+    """Apply f to every entry of a value (a Mat, a scalar, or a dict/list/tuple of them)."""
     if isinstance(v, Mat):
         a = np.empty(v.a.shape, dtype=object)
         for idx, x in np.ndenumerate(v.a):
             a[idx] = f(x)
         return Mat(a, scene.field, v.tags, scene.tracker)
     if isinstance(v, dict):
-        return {k: _map_value(x, f, scene) for k, x in v.items()}
+        return {k: map_entries(x, f, scene) for k, x in v.items()}
     if isinstance(v, (list, tuple)):
-        return type(v)(_map_value(x, f, scene) for x in v)
+        return type(v)(map_entries(x, f, scene) for x in v)
     return f(v)

@@ -21,7 +21,7 @@ import symengine as se
 
 from ..fields import Dual, DualField, Field
 from ..matrix import CoordinateTracker, Mat
-from ..scene import Flow, PaperObjects
+from ..scene import Flow, PaperObjects, map_entries
 from .algebra import (DIMENSIONS, Letter, NCPoly, NeedsCoordinates, as_coef, coef_latex, derivation,
                       letter_pair, skew_letter, substitute, symmetric_letter, trace)
 from .rewriting import Order, Reduction, RewritingSystem, simplify_coef
@@ -450,7 +450,7 @@ class FreeScene(PaperObjects):
             return _map_value(F(self.tangent(tangent)), self)
         images = self._tangent_images(tangent)
         nf = self.system.normal_form
-        return _map_entries(F, lambda x: nf(derivation(x, images)) if isinstance(x, NCPoly)
+        return map_entries(F, lambda x: nf(derivation(x, images)) if isinstance(x, NCPoly)
                             else se.Integer(0), self)
 
     def _tangent_images(self, tangent: Mapping[str, Any]) -> dict[Letter, NCPoly]:
@@ -527,20 +527,7 @@ def _lift_mat(M: Mat, field: Field) -> Mat:
 
 def _map_value(v: Any, scene: FreeScene) -> Any:
     """The ε-part of a value computed on a tangent scene, normalized."""
-    return _map_entries(v, lambda x: _eps_part(x, scene), scene)
-
-
-def _map_entries(v: Any, f: Callable[[Any], Any], scene: FreeScene) -> Any:
-    if isinstance(v, Mat):
-        a = np.empty(v.a.shape, dtype=object)
-        for idx, x in np.ndenumerate(v.a):
-            a[idx] = f(x)
-        return Mat(a, scene.field, v.tags, scene.tracker)
-    if isinstance(v, dict):
-        return {k: _map_entries(x, f, scene) for k, x in v.items()}
-    if isinstance(v, (list, tuple)):
-        return type(v)(_map_entries(x, f, scene) for x in v)
-    return f(v)
+    return map_entries(v, lambda x: _eps_part(x, scene), scene)
 
 
 def _eps_part(x: Any, scene: FreeScene) -> Any:
