@@ -429,16 +429,18 @@ class Scene(PaperObjects):
             E.a[i, j] = self.const(1)
             yield {"X": E, "P": zero} if name == "X" else {"X": zero, "P": E}
 
-    def jacobian(self, F: Function) -> list[list[Scalar]]:
-        """Rows: scalar components of F (a scalar or list of Mats); columns: the 2nr coordinates."""
+    def jacobian(self, F: Function, symmetric: bool | None = None) -> list[list[Scalar]]:
+        """Rows: scalar components of F (a scalar or list of Mats); columns: the 2nr coordinates.
+
+        ``symmetric``: F's matrices are symmetric and only their upper triangles count (the
+        default for the scene's own constraint functions, whose scalar constraints they are)."""
+        if symmetric is None:
+            symmetric = F is self.constraints.build
         cols = []
         for t in self._unit_tangents():
-            values = _flatten_value(F(self.tangent(t)), self._sym_list(F))
+            values = _flatten_value(F(self.tangent(t)), symmetric)
             cols.append([x.b if isinstance(x, Dual) else self.const(0) for x in values])
         return [list(row) for row in zip(*cols)]
-
-    def _sym_list(self, F) -> bool:
-        return F is self.constraints.build
 
     def gradient(self, H: Function) -> tuple[Mat, Mat]:
         """(dH/dX, dH/dP) for a scalar function H of the scene."""
