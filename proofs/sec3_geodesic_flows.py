@@ -37,16 +37,25 @@ def H_metric_A(s):
 # -- the Euclidean metric ------------------------------------------------------
 
 @claim("euclidean-flow", paper=("Euclidean", "Euclidean_XP"), kind="id",
-       statement=r"H_E=\tfrac12\tr(P^TP):\quad \dot X=P,\ \dot P=-XP^TP,\quad \Lambda=-\dot X^T\dot X")
+       statement=r"H_E=\tfrac12\tr(P^TP):\quad \dot X=P,\ \dot P=-XP^TP")
 def euclidean_geodesic_flow(s):
-    """The Dirac flow of H_E = ½tr(PᵀP) is Ẋ = P, Ṗ = −XPᵀP; in Lagrange form Ẍ = XΛ with Λ = −ẊᵀẊ."""
+    """The Dirac flow of H_E = ½tr(PᵀP) is Ẋ = P, Ṗ = −XPᵀP."""
     flow = s.dirac_flow(H_euclidean)
-    mult = s.multiplier_flow(H_euclidean)
     return {
         "dX/dt": flow.Xdot - s.P,
         "dP/dt": flow.Pdot - (-s.X @ s.P.T @ s.P),
-        "Lambda": mult["Lambda"] - (-(flow.Xdot.T @ flow.Xdot)),
-        "Pi": mult["Pi"],
+    }
+
+
+@claim("euclidean-multipliers", paper=("Euclidean", "dot_XP"), kind="id",
+       statement=r"\ddot X=X\Lambda,\quad \Lambda=-\dot X^T\dot X,\quad \Pi=0")
+def euclidean_lagrange_multipliers(s):
+    """In the Lagrange form (dot_XP) of the Euclidean geodesic flow, Π = 0 and Λ = −ẊᵀẊ, so that Ẍ = XΛ."""
+    flow = s.multiplier_flow(H_euclidean)
+    return {
+        "Lambda": flow["Lambda"] - (-(flow.Xdot.T @ flow.Xdot)),
+        "Pi": flow["Pi"],
+        "d^2X/dt^2 = X Lambda": s.d(lambda t: t.P, flow) - s.X @ flow["Lambda"],
     }
 
 

@@ -100,7 +100,7 @@ def invariant_metrics_one_form(s):
 
 CASES = [
     ("euclidean-flow", euclidean_flow_sign, (3, 2)),
-    ("euclidean-flow", euclidean_lambda_sign, (3, 2)),
+    ("euclidean-multipliers", euclidean_lambda_sign, (3, 2)),
     ("euclidean-invariance", euclidean_invariance_wrong_flow, (3, 2)),
     ("submersion-hamiltonian", submersion_trace_sign, (3, 2)),
     ("submersion-flow", submersion_flow_transposed, (3, 2)),
