@@ -11,6 +11,7 @@ import symengine as se
 from stiefelsym.free.algebra import NCPoly, cycle_rep, evaluate, letter_pair, skew_letter, substitute, trace
 from stiefelsym.free.scene import LAMBDA, A, P, Pt, X, Xt
 from stiefelsym.free.traces import gradient
+from free_words import random_word
 
 XI = skew_letter("xi_test", "n", r"\xi")
 LETTERS = [X, Xt, P, Pt, A, XI, LAMBDA]
@@ -21,22 +22,11 @@ def w(*letters):
     return NCPoly.word(letters)
 
 
-def random_word(rng: random.Random, row: str, col: str, length: int) -> tuple:
-    out, t = [], row
-    for _ in range(length):
-        L = rng.choice([L for L in LETTERS if L.row == t])
-        out.append(L)
-        t = L.col
-    if t != col:
-        out.append(X if t == "n" else Xt)
-    return tuple(out)
-
-
 def random_poly(rng: random.Random, row: str, col: str, terms: int = 4) -> NCPoly:
     p = NCPoly.zero(row, col)
     for _ in range(terms):
         c = rng.choice([1, -2, 3]) * rng.choice([se.Integer(1), kappa, lam, kappa * lam + 1])
-        p = p + NCPoly.word(random_word(rng, row, col, rng.randint(0, 4)), row, c)
+        p = p + NCPoly.word(random_word(rng, LETTERS, row, col, rng.randint(0, 4)), row, c)
     return p
 
 

@@ -14,6 +14,7 @@ from stiefelsym.free.rewriting import (Order, RewritingError, RewritingSystem, c
                                        is_confluent)
 from stiefelsym.free.scene import A, FreeScene, P, Pt, X, Xt, resolvent_letter, standard_system
 from stiefelsym.scene import Scene
+from free_words import random_word
 
 lam, mu = se.Symbol("lambda"), se.Symbol("mu")
 
@@ -81,17 +82,6 @@ def test_rules_that_do_not_decrease_or_are_ill_typed_are_rejected():
 # ---------------------------------------------------------------------------
 def _letters() -> list:
     return [X, Xt, P, Pt, A, resolvent_letter(lam)]
-
-
-def random_word(rng, letters, row, col, length):
-    out, t = [], row
-    for _ in range(length):
-        L = rng.choice([L for L in letters if L.row == t])
-        out.append(L)
-        t = L.col
-    if t != col:
-        out.append(X if t == "n" else Xt)
-    return tuple(out)
 
 
 def random_poly(rng, letters, row, col, terms=5, length=7):
