@@ -207,7 +207,7 @@ def _blocks(r: int) -> list[tuple[int, int]]:
 def _block_part(s, M, lo, hi):
     """The orthogonal projection of M in so(r) to so(r_i) (the diagonal block lo..hi)."""
     B = s.zeros(s.r, s.r, ("r", "r"))
-    B.a[lo:hi, lo:hi] = M[lo:hi, lo:hi].a
+    B._a[lo:hi, lo:hi] = M[lo:hi, lo:hi]._a
     return B
 
 

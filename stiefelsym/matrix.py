@@ -39,10 +39,10 @@ class Mat:
     """A dense matrix over a field, with index labels."""
 
     __array_priority__ = 1000
-    __slots__ = ("a", "field", "tags", "tracker")
+    __slots__ = ("_a", "field", "tags", "tracker")
 
     def __init__(self, a: np.ndarray, field: Field, tags=("?", "?"), tracker: CoordinateTracker | None = None):
-        self.a = a
+        self._a = a
         self.field = field
         self.tags = tuple(tags)
         self.tracker = tracker
@@ -72,7 +72,7 @@ class Mat:
         M = cls.zeros(m, m, field, (tag, tag), tracker)
         one = field.const(1)
         for i in range(m):
-            M.a[i, i] = one
+            M._a[i, i] = one
         return M
 
     def _new(self, a, tags=None) -> "Mat":
@@ -88,12 +88,12 @@ class Mat:
     # -- shape ------------------------------------------------------------
     @property
     def shape(self) -> tuple[int, int]:
-        return self.a.shape
+        return self._a.shape
 
     @property
     def T(self) -> "Mat":
         star = self.field.star
-        a = self.a.T.copy()
+        a = self._a.T.copy()
         if star is not None:
             for idx, x in np.ndenumerate(a):
                 a[idx] = star(x)
@@ -108,16 +108,16 @@ class Mat:
         if not isinstance(o, Mat):
             return NotImplemented
         self._check(o)
-        return self._new(self._norm(self.a + o.a))
+        return self._new(self._norm(self._a + o._a))
 
     def __sub__(self, o):
         if not isinstance(o, Mat):
             return NotImplemented
         self._check(o)
-        return self._new(self._norm(self.a - o.a))
+        return self._new(self._norm(self._a - o._a))
 
     def __neg__(self):
-        return self._new(-self.a)
+        return self._new(-self._a)
 
     def __matmul__(self, o):
         if not isinstance(o, Mat):
@@ -127,7 +127,7 @@ class Mat:
         m, k = self.shape[0], o.shape[1]
         if self.shape[1] == 0:
             return Mat.zeros(m, k, self.field, (self.tags[0], o.tags[1]), self.tracker)
-        return self._new(self._norm(np.dot(self.a, o.a)), (self.tags[0], o.tags[1]))
+        return self._new(self._norm(np.dot(self._a, o._a)), (self.tags[0], o.tags[1]))
 
     def _scalar(self, c):
         if isinstance(c, Mat):
@@ -136,8 +136,8 @@ class Mat:
             raise TypeError("use integers or fractions, not floats, as constants in claims")
         if isinstance(c, Fraction):
             c = self.field.const(c)
-        out = np.empty(self.a.shape, dtype=object)
-        for idx, x in np.ndenumerate(self.a):
+        out = np.empty(self._a.shape, dtype=object)
+        for idx, x in np.ndenumerate(self._a):
             out[idx] = self.field.normalize(x * c)
         return self._new(out)
 
@@ -160,18 +160,18 @@ class Mat:
         entry_trace = self.field.entry_trace
         acc = self.field.const(0) if entry_trace is None else None
         for i in range(self.shape[0]):
-            x = self.a[i, i] if entry_trace is None else entry_trace(self.a[i, i])
+            x = self._a[i, i] if entry_trace is None else entry_trace(self._a[i, i])
             acc = x if acc is None else acc + x
         return self.field.normalize(acc)
 
     def inv(self) -> "Mat":
         m = self.shape[0]
         I = Mat.identity(m, self.field)
-        sol = self.field.solve(self.a.tolist(), I.a.tolist())
+        sol = self.field.solve(self._a.tolist(), I._a.tolist())
         return Mat.from_rows(sol, self.field, (self.tags[1], self.tags[0]), self.tracker)
 
     def is_zero(self) -> bool:
-        return all(self.field.is_zero(x) for x in self.a.flat)
+        return all(self.field.is_zero(x) for x in self._a.flat)
 
     # -- coordinates (flagged) ---------------------------------------------
     def _touch(self, what: str) -> None:
@@ -181,7 +181,7 @@ class Mat:
     def __getitem__(self, idx):
         """Entries or sub-blocks (reading entries of an R^n-indexed matrix is recorded)."""
         self._touch("matrix entries")
-        out = self.a[idx]
+        out = self._a[idx]
         if isinstance(out, np.ndarray):
             if out.ndim == 1:
                 out = out.reshape(1, -1) if isinstance(idx, tuple) and isinstance(idx[0], int) else out.reshape(-1, 1)
@@ -190,10 +190,10 @@ class Mat:
 
     def entries(self) -> list[Any]:
         """All entries, row by row (engine use: residual tests)."""
-        return list(self.a.flat)
+        return list(self._a.flat)
 
     def rows(self) -> list[list[Any]]:
-        return self.a.tolist()
+        return self._a.tolist()
 
     def __repr__(self) -> str:
         return f"Mat{self.shape}[{self.tags[0]}x{self.tags[1]}]({self.field.name})"
@@ -202,7 +202,7 @@ class Mat:
 def block(rows: Sequence[Sequence[Mat]]) -> Mat:
     """Block matrix from a grid of Mats."""
     first = rows[0][0]
-    a = np.concatenate([np.concatenate([b.a for b in row], axis=1) for row in rows], axis=0)
+    a = np.concatenate([np.concatenate([b._a for b in row], axis=1) for row in rows], axis=0)
     rt = "+".join(row[0].tags[0] for row in rows)
     ct = "+".join(b.tags[1] for b in rows[0])
     return Mat(a, first.field, (rt, ct), first.tracker)
@@ -216,12 +216,12 @@ def comm(A: Mat, B: Mat) -> Mat:
 def scalar_matrix(c, m: int, field: Field, tag="?", tracker=None) -> Mat:
     M = Mat.zeros(m, m, field, (tag, tag), tracker)
     for i in range(m):
-        M.a[i, i] = c
+        M._a[i, i] = c
     return M
 
 
 def mat_map(M: Mat, f) -> Mat:
-    out = np.empty(M.a.shape, dtype=object)
-    for idx, x in np.ndenumerate(M.a):
+    out = np.empty(M._a.shape, dtype=object)
+    for idx, x in np.ndenumerate(M._a):
         out[idx] = f(x)
     return Mat(out, M.field, M.tags, M.tracker)

@@ -81,7 +81,7 @@ def _raise_timeout(signum, frame):
 def _entries(value: Any, prefix: str = "") -> list[tuple[str, Any]]:
     """(position, scalar) pairs of a residual: a Mat, a scalar, or a list/tuple/dict of them."""
     if isinstance(value, Mat):
-        return [(f"{prefix}[{i + 1},{j + 1}]", value.a[i, j])
+        return [(f"{prefix}[{i + 1},{j + 1}]", value._a[i, j])
                 for i in range(value.shape[0]) for j in range(value.shape[1])]
     if isinstance(value, dict):
         out = []
@@ -165,7 +165,7 @@ def expected_verdict(claim: Claim, verdict: str, variant: str | None = None,
 
 def _sympy_rows(M: Mat):
     import sympy
-    return [[sympy.sympify(x) for x in row] for row in M.a.tolist()]
+    return [[sympy.sympify(x) for x in row] for row in M._a.tolist()]
 
 
 def _function_field_rank(M: Mat) -> int:
@@ -201,7 +201,7 @@ def _constant_minor_rank(M: Mat, field: Field) -> int:
     """Elimination using only nonzero numeric pivots: the product of the pivots is a
     constant (hence everywhere nonzero) minor of the returned size."""
     import symengine as se
-    rows = [list(r) for r in M.a.tolist()]
+    rows = [list(r) for r in M._a.tolist()]
     rank = 0
     if not rows:
         return 0
@@ -370,7 +370,7 @@ def degree_bound(claim: Claim, n: int, r: int, func: Callable | None = None) -> 
 
 
 def _rank_minor_degree(R: Rank, field: DegreeField) -> int:
-    cells = [x for x in R.matrix.a.flat if isinstance(x, Deg) and not x.zero]
+    cells = [x for x in R.matrix._a.flat if isinstance(x, Deg) and not x.zero]
     if not cells:
         return 0
     common: dict[int, int] = {}
@@ -390,7 +390,7 @@ def _point_field(kind: str) -> Field:
 
 
 def _point_rank(R: Rank, field: Field, bound_text: str) -> tuple[str, bool]:
-    rk = field.rank(R.matrix.a.tolist())
+    rk = field.rank(R.matrix._a.tolist())
     where = "at this exact point" if field.name == "rational" else "at this point mod p"
     if rk > R.expected:
         return f"rank {rk} {where} exceeds the paper's {R.expected} (certain: generic rank >= {rk})", False
@@ -401,7 +401,7 @@ def _point_rank(R: Rank, field: Field, bound_text: str) -> tuple[str, bool]:
 
 
 def _constant_rank(R: Rank) -> tuple[str, bool]:
-    rk = RationalField().rank(R.matrix.a.tolist())
+    rk = RationalField().rank(R.matrix._a.tolist())
     return (f"the matrix is constant (no parameter enters); its exact rank over Q is {rk} "
             f"(paper: {R.expected})", rk == R.expected)
 

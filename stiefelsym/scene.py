@@ -197,7 +197,7 @@ class Scene(PaperObjects):
         for i in range(m):
             for j in range(i + 1, m):
                 x = self.param(f"{name}_{i + 1}{j + 1}")
-                M.a[i, j], M.a[j, i] = x, -x
+                M._a[i, j], M._a[j, i] = x, -x
         return M
 
     def sym_params(self, name: str, m: int, tag: str) -> Mat:
@@ -205,14 +205,14 @@ class Scene(PaperObjects):
         for i in range(m):
             for j in range(i, m):
                 x = self.param(f"{name}_{i + 1}{j + 1}")
-                M.a[i, j] = M.a[j, i] = x
+                M._a[i, j] = M._a[j, i] = x
         return M
 
     def general_params(self, name: str, m: int, k: int, tags) -> Mat:
         M = self.zeros(m, k, tags)
         for i in range(m):
             for j in range(k):
-                M.a[i, j] = self.param(f"{name}_{i + 1}{j + 1}")
+                M._a[i, j] = self.param(f"{name}_{i + 1}{j + 1}")
         return M
 
     def _stiefel_point(self, prefix: str) -> tuple[Mat, Mat]:
@@ -220,21 +220,21 @@ class Scene(PaperObjects):
         if self.chart == "equivariant":
             X = self.zeros(n, r, ("n", "r"))
             for i in range(r):
-                X.a[i, i] = self.const(1)
+                X._a[i, i] = self.const(1)
             P = self.zeros(n, r, ("n", "r"))
             W = self.skew_params(f"{prefix}W", r, "r")
-            P.a[:r, :] = W.a
+            P._a[:r, :] = W._a
             for i in range(r, n):
                 for j in range(r):
-                    P.a[i, j] = self.param(f"{prefix}Z_{i + 1}{j + 1}")
+                    P._a[i, j] = self.param(f"{prefix}Z_{i + 1}{j + 1}")
             return X, P
         S = self.skew_params(f"{prefix}S", n, "n")
         In = self.identity(n, "n")
-        Q = Mat.from_rows(self.field.solve((In + S).T.a.tolist(), (In - S).T.a.tolist()),
+        Q = Mat.from_rows(self.field.solve((In + S).T._a.tolist(), (In - S).T._a.tolist()),
                           self.field, ("n", "n"), self.tracker).T  # (I - S)(I + S)^{-1}
         if self.component % 2 == 1:
-            Q.a[:, 0] = [-x for x in Q.a[:, 0]]
-        X = Mat(Q.a[:, :r].copy(), self.field, ("n", "r"), self.tracker)
+            Q._a[:, 0] = [-x for x in Q._a[:, 0]]
+        X = Mat(Q._a[:, :r].copy(), self.field, ("n", "r"), self.tracker)
         W = self.skew_params(f"{prefix}W", r, "r")
         Z = self.general_params(f"{prefix}Z", n, r, ("n", "r"))
         P0 = X @ W + (In - X @ X.T) @ Z
@@ -287,10 +287,10 @@ class Scene(PaperObjects):
         n, r = self.n, self.r
         S = self.realify(self.skew_params("cS", n, "n"), self.sym_params("cH", n, "n"))
         I2 = self.identity(2 * n, "n+n")
-        Q = Mat.from_rows(self.field.solve((I2 + S).T.a.tolist(), (I2 - S).T.a.tolist()),
+        Q = Mat.from_rows(self.field.solve((I2 + S).T._a.tolist(), (I2 - S).T._a.tolist()),
                           self.field, ("n+n", "n+n"), self.tracker).T
         cols = list(range(r)) + list(range(n, n + r))
-        Z = Mat(Q.a[:, cols].copy(), self.field, ("n+n", "r+r"), self.tracker)
+        Z = Mat(Q._a[:, cols].copy(), self.field, ("n+n", "r+r"), self.tracker)
         W = self.realify(self.skew_params("cW", r, "r"), self.sym_params("cK", r, "r"))
         Y = self.realify(self.general_params("cY", n, r, ("n", "r")), self.general_params("cV", n, r, ("n", "r")))
         return Z, Z @ W + (I2 - Z @ Z.T) @ Y
@@ -321,7 +321,7 @@ class Scene(PaperObjects):
                 return self.sym_params("A", self.n, "n")
             M = self.zeros(self.n, self.n, ("n", "n"))
             for i, x in enumerate(self._cached("a", lambda: [self.param(f"a_{i + 1}") for i in range(self.n)])):
-                M.a[i, i] = x
+                M._a[i, i] = x
             return M
         return self._cached("A", build)
 
@@ -331,7 +331,7 @@ class Scene(PaperObjects):
             if self.chart == "cayley":
                 M = self.zeros(self.n, self.n, ("n", "n"))
                 for i in range(self.n):
-                    M.a[i, i] = self.const(1) / self.A.a[i, i]
+                    M._a[i, i] = self.const(1) / self.A._a[i, i]
                 return M
             return self.A.inv()
         return self._cached("Ainv", build)
@@ -366,18 +366,18 @@ class Scene(PaperObjects):
         def build():
             basis = so_basis(self.n)
             Mop = self.sym_params(name, len(basis), "so")
-            return basis, Mop.a
+            return basis, Mop._a
         basis, coeffs = self._cached(f"op:{name}", build)
 
         def apply(xi: Mat) -> Mat:
-            comps = [xi.a[i, j] for (i, j) in basis]  # coordinates in the orthonormal basis
+            comps = [xi._a[i, j] for (i, j) in basis]  # coordinates in the orthonormal basis
             out = Mat.zeros(self.n, self.n, xi.field, ("n", "n"), xi.tracker)
             for k, (i, j) in enumerate(basis):
                 acc = xi.field.const(0)
                 for l, c in enumerate(comps):
                     acc = acc + c * coeffs[k, l]
                 acc = xi.field.normalize(acc)
-                out.a[i, j], out.a[j, i] = acc, -acc
+                out._a[i, j], out._a[j, i] = acc, -acc
             return out
         return apply
 
@@ -400,7 +400,7 @@ class Scene(PaperObjects):
             if self.chart == "cayley":
                 M = self.zeros(self.n, self.n, ("n", "n"))
                 for i in range(self.n):
-                    M.a[i, i] = self.const(1) / (mu - self.A.a[i, i])
+                    M._a[i, i] = self.const(1) / (mu - self.A._a[i, i])
                 return M
             return (scalar_matrix(mu, self.n, self.field, "n", self.tracker) - self.A).inv()
         return self._cached_for("res", mu, build)
@@ -426,7 +426,7 @@ class Scene(PaperObjects):
         zero = self.zeros(n, r, ("n", "r"))
         for name, i, j in self._coords():
             E = self.zeros(n, r, ("n", "r"))
-            E.a[i, j] = self.const(1)
+            E._a[i, j] = self.const(1)
             yield {"X": E, "P": zero} if name == "X" else {"X": zero, "P": E}
 
     def jacobian(self, F: Function, symmetric: bool | None = None) -> list[list[Scalar]]:
@@ -449,14 +449,14 @@ class Scene(PaperObjects):
             n, r = self.n, self.r
             HX = self.zeros(n, r, ("n", "r"))
             HP = self.zeros(n, r, ("n", "r"))
-            HX.a[:, :] = np.array(row[: n * r], dtype=object).reshape(n, r)
-            HP.a[:, :] = np.array(row[n * r:], dtype=object).reshape(n, r)
+            HX._a[:, :] = np.array(row[: n * r], dtype=object).reshape(n, r)
+            HP._a[:, :] = np.array(row[n * r:], dtype=object).reshape(n, r)
             return HX, HP
         return self._cached_for("grad", H, build)
 
     def _grad_vector(self, H: Function) -> list[Scalar]:
         HX, HP = self.gradient(H)
-        return list(HX.a.flat) + list(HP.a.flat)
+        return list(HX._a.flat) + list(HP._a.flat)
 
     def _omega(self, v: list[Scalar]) -> list[Scalar]:
         """Omega v for Omega = [[0, I], [-I, 0]] in (X, P) coordinates."""
@@ -535,8 +535,8 @@ class Scene(PaperObjects):
         n, r = self.n, self.r
         Xd = self.zeros(n, r, ("n", "r"))
         Pd = self.zeros(n, r, ("n", "r"))
-        Xd.a[:, :] = np.array(v[: n * r], dtype=object).reshape(n, r)
-        Pd.a[:, :] = np.array(v[n * r:], dtype=object).reshape(n, r)
+        Xd._a[:, :] = np.array(v[: n * r], dtype=object).reshape(n, r)
+        Pd._a[:, :] = np.array(v[n * r:], dtype=object).reshape(n, r)
         return Flow(Xd, Pd)
 
     def multiplier_flow(self, H: Function) -> Flow:
@@ -548,17 +548,17 @@ class Scene(PaperObjects):
             r = self.r
             HX, HP = self.gradient(H)
             J = self._constraint_jacobian()
-            base = list(HP.a.flat) + list((-HX).a.flat)
+            base = list(HP._a.flat) + list((-HX)._a.flat)
             units = []
             for name in ("Lambda", "Pi"):
                 for i in range(r):
                     for j in range(i, r):
                         E = self.zeros(r, r, ("r", "r"))
-                        E.a[i, j] = E.a[j, i] = self.const(1)
+                        E._a[i, j] = E._a[j, i] = self.const(1)
                         if name == "Lambda":
-                            v = [self.const(0)] * (self.n * r) + list((self.X @ E).a.flat)
+                            v = [self.const(0)] * (self.n * r) + list((self.X @ E)._a.flat)
                         else:
-                            v = list((-(self.X @ E)).a.flat) + list((self.P @ E).a.flat)
+                            v = list((-(self.X @ E))._a.flat) + list((self.P @ E)._a.flat)
                         units.append((name, i, j, E, v))
             M = [[self._dot(row, u[4]) for u in units] for row in J]
             b = [[-self._dot(row, base)] for row in J]
@@ -570,7 +570,7 @@ class Scene(PaperObjects):
             Pi = self.zeros(r, r, ("r", "r"))
             for (name, i, j, E, v), (c,) in zip(units, sol):
                 target = Lam if name == "Lambda" else Pi
-                target.a[i, j] = target.a[j, i] = c
+                target._a[i, j] = target._a[j, i] = c
             Xd = HP - self.X @ Pi
             Pd = -HX + self.X @ Lam + self.P @ Pi
             return Flow(Xd, Pd, multipliers={"Lambda": Lam, "Pi": Pi})
@@ -600,10 +600,10 @@ class TangentScene(Scene):
 
     def _lift(self, M: Any, dot: Mat | None = None) -> Any:
         if isinstance(M, Mat):
-            a = np.empty(M.a.shape, dtype=object)
+            a = np.empty(M._a.shape, dtype=object)
             zero = self.base.field.const(0)
-            for idx, x in np.ndenumerate(M.a):
-                a[idx] = Dual(x, dot.a[idx] if dot is not None else zero)
+            for idx, x in np.ndenumerate(M._a):
+                a[idx] = Dual(x, dot._a[idx] if dot is not None else zero)
             return Mat(a, self.field, M.tags, self.tracker)
         if isinstance(M, list):
             return [self._lift(x) for x in M]
@@ -681,8 +681,8 @@ def _flatten_value(v: Any, symmetric_lists: bool) -> list[Any]:
     if isinstance(v, Mat):
         if symmetric_lists:
             m = v.shape[0]
-            return [v.a[i, j] for i in range(m) for j in range(i, m)]
-        return list(v.a.flat)
+            return [v._a[i, j] for i in range(m) for j in range(i, m)]
+        return list(v._a.flat)
     if isinstance(v, (list, tuple)):
         out = []
         for x in v:
@@ -694,8 +694,8 @@ def _flatten_value(v: Any, symmetric_lists: bool) -> list[Any]:
 def map_entries(v: Any, f, scene: Any) -> Any:
     """Apply f to every entry of a value (a Mat, a scalar, or a dict/list/tuple of them)."""
     if isinstance(v, Mat):
-        a = np.empty(v.a.shape, dtype=object)
-        for idx, x in np.ndenumerate(v.a):
+        a = np.empty(v._a.shape, dtype=object)
+        for idx, x in np.ndenumerate(v._a):
             a[idx] = f(x)
         return Mat(a, scene.field, v.tags, scene.tracker)
     if isinstance(v, dict):

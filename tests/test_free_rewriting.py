@@ -160,7 +160,7 @@ def fraction_inverse(M: np.ndarray) -> np.ndarray:
 def exact_point(n: int, r: int, seed: int):
     """A rational point of T*V_{n,r} (the Cayley chart of the coordinate scene), a symmetric A and R_λ."""
     sc = Scene(n, r, RationalField(), chart="cayley", rng=random.Random(seed))
-    frac = lambda M: np.array([[Fraction(int(x.p), int(x.q)) for x in row] for row in M.a], dtype=object)
+    frac = lambda M: np.array([[Fraction(int(x.p), int(x.q)) for x in row] for row in M._a], dtype=object)
     rng = random.Random(seed)
     B = np.array([[Fraction(rng.randint(-4, 4)) for _ in range(n)] for _ in range(n)], dtype=object)
     Am = B + B.T
@@ -188,7 +188,7 @@ def test_normal_forms_are_sound_at_an_exact_point(seed):
 
 def test_reductions_record_their_rules_and_print_a_derivation():
     s = FreeScene()
-    R = s.resolvent(s.lam).a[0, 0]
+    R = s.resolvent(s.lam)._a[0, 0]
     p = w(Pt, X) + w(Xt, A) * R * w(X)
     red = s.system.reduce(p)
     assert {r.name for r in red.rules} == {"PtX", "XtX", f"A{resolvent_letter(lam)}"}

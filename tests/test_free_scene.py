@@ -125,12 +125,12 @@ def test_dirac_flow_agrees_with_the_coordinate_scene():
     """One Hamiltonian, two backends: the free flow evaluated at a point equals the coordinate flow."""
     sc = Scene(4, 2, RationalField(), chart="cayley", rng=random.Random(7))
     fc = sc.dirac_flow(neumann_hamiltonian)
-    frac = lambda M: np.array([[Fraction(int(x.p), int(x.q)) for x in row] for row in M.a], dtype=object)
+    frac = lambda M: np.array([[Fraction(int(x.p), int(x.q)) for x in row] for row in M._a], dtype=object)
     values = {"X": frac(sc.X), "P": frac(sc.P), "A": frac(sc.A)}
     scalars = {se.Symbol("kappa"): Fraction(int(sc.kappa.p), int(sc.kappa.q))}
     ff = FreeScene().dirac_flow(neumann_hamiltonian)
-    assert (evaluate(ff.Xdot.a[0, 0], values, scalars) == frac(fc.Xdot)).all()
-    assert (evaluate(ff.Pdot.a[0, 0], values, scalars) == frac(fc.Pdot)).all()
+    assert (evaluate(ff.Xdot._a[0, 0], values, scalars) == frac(fc.Xdot)).all()
+    assert (evaluate(ff.Pdot._a[0, 0], values, scalars) == frac(fc.Pdot)).all()
 
 
 def test_prep_momentum_and_projector_evolve_by_commutators():
@@ -207,8 +207,8 @@ def test_odd_traces_of_the_dual_lax_matrix_vanish():
 # ---------------------------------------------------------------------------
 def test_scalars_multiply_matrices_and_identities_are_typed():
     s = FreeScene()
-    x = s.X.a[0, 0]
-    assert (s.lam * s.X).a[0, 0] == x * s.lam
+    x = s.X._a[0, 0]
+    assert (s.lam * s.X)._a[0, 0] == x * s.lam
     assert (2 * s.X - s.X * 2).is_zero()
     assert (s.X / 2 * 2 - s.X).is_zero()
     assert (Fraction(1, 3) * s.X * 3 - s.X).is_zero()
@@ -224,7 +224,7 @@ def test_block_transpose_and_trace():
     s = FreeScene()
     B = block([[s.X.T @ s.P, s.Ir], [s.P.T @ s.P, s.X.T @ s.A @ s.X]])
     assert (B.T.T - B).is_zero()
-    assert s.field.is_zero(B.T.a[0, 1] - (s.P.T @ s.P).a[0, 0])
+    assert s.field.is_zero(B.T._a[0, 1] - (s.P.T @ s.P)._a[0, 0])
     assert s.field.is_zero(s.tr(B) - s.tr(s.X.T @ s.A @ s.X))
 
 
@@ -254,7 +254,7 @@ def test_multipliers_outside_the_solvable_form_are_reported():
     from stiefelsym.free.scene import FreeSolveError, solve_multipliers
     s = FreeScene()
     Lam = NCPoly.word((LAMBDA,))
-    eq = s.X.T.a[0, 0] * s.A.a[0, 0] * s.X.a[0, 0] * Lam + Lam * s.X.T.a[0, 0] * s.A.a[0, 0] * s.X.a[0, 0]
+    eq = s.X.T._a[0, 0] * s.A._a[0, 0] * s.X._a[0, 0] * Lam + Lam * s.X.T._a[0, 0] * s.A._a[0, 0] * s.X._a[0, 0]
     with pytest.raises(FreeSolveError, match="not of the form"):
         solve_multipliers([s.system.normal_form(eq)], [LAMBDA], s.system)
 

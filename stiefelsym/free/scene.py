@@ -375,7 +375,7 @@ class FreeScene(PaperObjects):
         if isinstance(value, Mat):
             if value.shape != (1, 1):
                 raise TypeError("a Hamiltonian must be a scalar")
-            value = value.a[0, 0]
+            value = value._a[0, 0]
         if not isinstance(value, NCPoly):
             c = as_coef(value)
             if c is None:
@@ -422,7 +422,7 @@ class FreeScene(PaperObjects):
         raise NeedsCoordinates("the Lagrange multipliers, which depend on H off T*V")
 
     def _multiplier_flow(self, H: Function) -> Flow:
-        HX, HP = (m.a[0, 0] for m in self._gradient(H))
+        HX, HP = (m._a[0, 0] for m in self._gradient(H))
         nf = self.system.normal_form
         x, p = _w(X), _w(P)
         Pi, Lam = _w(PI), _w(LAMBDA)
@@ -458,7 +458,7 @@ class FreeScene(PaperObjects):
         for key, v in tangent.items():
             if key not in self._named:
                 raise KeyError(f"the flow moves {key!r}, which is not a letter of this scene")
-            images[self._named[key]] = v.a[0, 0] if isinstance(v, Mat) else v
+            images[self._named[key]] = v._a[0, 0] if isinstance(v, Mat) else v
         relations = [(_w(Xt, X), COND_XX), (_w(Xt, P) + _w(Pt, X), COND_XP)]
         if "second" in self._extras:
             relations += [(_w(Yt, Y), "Y^T Y = I_r"), (_w(Yt, Q) + _w(Qt, Y), "Y^T Q + Q^T Y = 0")]
@@ -499,7 +499,7 @@ class FreeTangentScene(FreeScene):
         if dot is None:
             b = NCPoly.zero(poly.row, poly.col)
         else:
-            b = dot.a[0, 0] if isinstance(dot, Mat) else dot
+            b = dot._a[0, 0] if isinstance(dot, Mat) else dot
             if not isinstance(b, NCPoly) or b.shape != poly.shape:
                 raise TypeError(f"the flow's {key}-component must be a {poly.row}×{poly.col} polynomial")
         return Mat.from_rows([[Dual(poly, b)]], self.field, poly.shape, self.tracker)
@@ -519,8 +519,8 @@ class FreeTangentScene(FreeScene):
 
 
 def _lift_mat(M: Mat, field: Field) -> Mat:
-    a = np.empty(M.a.shape, dtype=object)
-    for idx, x in np.ndenumerate(M.a):
+    a = np.empty(M._a.shape, dtype=object)
+    for idx, x in np.ndenumerate(M._a):
         a[idx] = Dual(x, NCPoly.zero(x.row, x.col) if isinstance(x, NCPoly) else se.Integer(0))
     return Mat(a, field, M.tags, M.tracker)
 
