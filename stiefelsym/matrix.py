@@ -1,14 +1,27 @@
-"""Matrices over any field of :mod:`stiefelsym.fields`.
+"""Matrices over any field of :mod:`stiefelsym.fields`, typed by index spaces.
 
-A :class:`Mat` is a numpy object array of field elements plus two index
-labels (``"n"``, ``"r"``, ``"2r"``, ...).  The labels let the engine know
-whether a claim looked at coordinates of R^n, which breaks O(n)-equivariance
-and therefore the equivariance reduction of the exact method.
+A :class:`Mat` is a dense array of field elements together with the spaces of
+its rows and columns.  A space is *definite* when it is a direct sum of copies
+of ℝⁿ and ℝʳ (tags ``"n"``, ``"r"``, ``"n+n"``, ``"2r"``, ``"n+r"``, ...) and
+*opaque* otherwise: ``"?"`` (untyped) or a named coordinate space (``"so"``,
+``"n-r"``, ``"cond"``, ...).  The types make two things impossible by design:
+
+* an ill-typed sum or product: ℝⁿ- and ℝʳ-indexed objects are never added,
+  multiplied or compared, even when n = r numerically (a :class:`TypeError`
+  when the expression is written);
+* an unrecorded look at coordinates of ℝⁿ: the entries are private, and the
+  only doors to them (indexing, building a matrix from entries, an untyped
+  index meeting ℝⁿ, slicing) record the access in the scene's
+  :class:`CoordinateTracker`.  A claim that went through such a door loses
+  the equivariance reduction unless the catalog states why it still holds.
+
+Engine code reads the private array ``_a``; claim code has no business there.
 """
 from __future__ import annotations
 
 import re
 from fractions import Fraction
+from functools import lru_cache
 from typing import Any, Sequence
 
 import numpy as np
@@ -17,66 +30,188 @@ from .fields import Field
 
 
 class CoordinateTracker:
-    """Records whether claim code read individual entries of R^n-indexed matrices."""
+    """Records, append-only, how claim code looked at coordinates of ℝⁿ; knows the sizes n, r."""
 
-    def __init__(self) -> None:
-        self.used: list[str] = []
+    __slots__ = ("_used", "dims")
+
+    def __init__(self, dims: dict[str, int] | None = None) -> None:
+        self._used: list[str] = []
+        #: numeric sizes of the definite spaces (None for the dimension-free scene)
+        self.dims = dict(dims) if dims is not None else None
 
     def touch(self, what: str) -> None:
-        if what not in self.used:
-            self.used.append(what)
+        if what not in self._used:
+            self._used.append(what)
+
+    @property
+    def used(self) -> tuple[str, ...]:
+        return tuple(self._used)
+
+
+class NeedsCoordinates(Exception):
+    """The claim needs an object the dimension-free backend cannot provide."""
+
+    def __init__(self, what: str) -> None:
+        super().__init__(f"{what} needs coordinates (fixed n, r); use a coordinate backend")
+        self.what = what
 
 
 _SCALARS = (int, Fraction)
+UNTYPED = "?"
+
+
+@lru_cache(maxsize=None)
+def definite(tag: str) -> tuple[str, ...] | None:
+    """The atoms of a definite space ("n+2r" -> ("n", "r", "r")), or None for an opaque one."""
+    atoms: list[str] = []
+    for part in str(tag).split("+"):
+        m = re.fullmatch(r"(\d*)([nr])", part.strip())
+        if m is None:
+            return None
+        atoms.extend([m.group(2)] * (int(m.group(1)) if m.group(1) else 1))
+    return tuple(atoms)
+
+
+def involves_Rn(tag: str) -> bool:
+    """Whether a space is a definite space with a summand ℝⁿ."""
+    d = definite(tag)
+    return d is not None and "n" in d
 
 
 def indexed_by_Rn(tags) -> bool:
-    """Whether index labels such as "n", "2n", "n+r" or "?" (unknown) involve R^n."""
-    return any(part == "?" or re.fullmatch(r"\d*n", part) for t in tags for part in t.split("+"))
+    """Whether one of the index spaces has a summand ℝⁿ.
+
+    Untyped ("?") and named coordinate spaces ("so", "cond") are not: a named one never
+    meets ℝⁿ (a type error), and an untyped one that meets ℝⁿ is recorded then."""
+    return any(involves_Rn(t) for t in tags)
+
+
+def _space_text(tag: str) -> str:
+    d = definite(tag)
+    if d is None:
+        return "an untyped index" if tag == UNTYPED else f"the coordinate space {tag!r}"
+    return "R^" + "+".join(d) if len(d) > 1 else "R^" + d[0]
+
+
+def unify(a: str, b: str, what: str, tracker: "CoordinateTracker | None") -> str:
+    """The common space of two indices that must agree, or a TypeError.
+
+    Definite spaces must be equal (ℝⁿ is never ℝʳ, whatever the sizes); an untyped
+    index takes the other's type, and meeting ℝⁿ that way is a recorded look at
+    coordinates; two different named coordinate spaces never agree."""
+    if a == b:
+        return a
+    da, db = definite(a), definite(b)
+    if da is not None and db is not None:
+        if da == db:
+            return a
+        raise TypeError(f"{what}: {_space_text(a)} and {_space_text(b)} do not match "
+                        "(index types are checked even when the sizes agree)")
+    if a == UNTYPED or b == UNTYPED:
+        other = b if a == UNTYPED else a
+        if tracker is not None and involves_Rn(other):
+            tracker.touch("untyped matrices used as R^n-indexed")
+        return other
+    raise TypeError(f"{what}: {_space_text(a)} and {_space_text(b)} do not match")
+
+
+def space_size(tag: str, dims: dict[str, int]) -> int | None:
+    d = definite(tag)
+    if d is None:
+        return None
+    return sum(dims[x] for x in d)
+
+
+def _coordinates(field: Field) -> bool:
+    return getattr(field, "coordinates", True)
 
 
 class Mat:
-    """A dense matrix over a field, with index labels."""
+    """A dense matrix over a field, typed by the spaces of its rows and columns."""
 
     __array_priority__ = 1000
-    __slots__ = ("_a", "field", "tags", "tracker")
+    __slots__ = ("_a", "field", "_tags", "_tracker", "_coords")
 
-    def __init__(self, a: np.ndarray, field: Field, tags=("?", "?"), tracker: CoordinateTracker | None = None):
+    def __init__(self, a: Any, field: Field, tags=(UNTYPED, UNTYPED), tracker: CoordinateTracker | None = None):
+        """A matrix from an array of entries: building an ℝⁿ-indexed matrix entrywise is a
+        (recorded) look at coordinates.  Engine code uses :meth:`_wrap`."""
+        self._init(np.array(a, dtype=object).reshape(np.shape(a)) if not isinstance(a, np.ndarray) else a.copy(),
+                   field, tags, tracker, indexed_by_Rn(tags))
+
+    def _init(self, a: np.ndarray, field: Field, tags, tracker, coords: bool) -> None:
         self._a = a
         self.field = field
-        self.tags = tuple(tags)
-        self.tracker = tracker
+        self._tags = (str(tags[0]), str(tags[1]))
+        self._tracker = tracker
+        self._coords = coords
+        if tracker is not None:
+            if coords:
+                tracker.touch("matrices built entrywise")
+            if tracker.dims is not None and a.ndim == 2:
+                for tag, size in zip(self._tags, a.shape):
+                    want = space_size(tag, tracker.dims)
+                    if want is not None and want != size:
+                        raise TypeError(f"a {a.shape[0]}x{a.shape[1]} matrix cannot be indexed by "
+                                        f"{_space_text(tag)}, of dimension {want}")
+
+    @classmethod
+    def _wrap(cls, a: np.ndarray, field: Field, tags=(UNTYPED, UNTYPED), tracker=None, coords: bool = False) -> "Mat":
+        """Engine door: wrap an array the engine built (no record, the types are checked)."""
+        m = object.__new__(cls)
+        m._init(a, field, tags, tracker, coords)
+        return m
+
+    @property
+    def tags(self) -> tuple[str, str]:
+        """The spaces of the rows and the columns."""
+        return self._tags
+
+    @property
+    def tracker(self) -> CoordinateTracker | None:
+        return self._tracker
 
     # -- construction -----------------------------------------------------
     @classmethod
-    def from_rows(cls, rows: Sequence[Sequence[Any]], field: Field, tags=("?", "?"), tracker=None) -> "Mat":
+    def _rows(cls, rows: Sequence[Sequence[Any]], field: Field, tags=(UNTYPED, UNTYPED), tracker=None) -> "Mat":
+        """Engine door: a matrix from rows of entries the engine computed."""
         m = len(rows)
         k = len(rows[0]) if m else 0
         a = np.empty((m, k), dtype=object)
         for i in range(m):
             for j in range(k):
                 a[i, j] = rows[i][j]
-        return cls(a, field, tags, tracker)
+        return cls._wrap(a, field, tags, tracker)
 
     @classmethod
-    def zeros(cls, m: int, k: int, field: Field, tags=("?", "?"), tracker=None) -> "Mat":
+    def from_rows(cls, rows: Sequence[Sequence[Any]], field: Field, tags=(UNTYPED, UNTYPED), tracker=None) -> "Mat":
+        """A matrix from rows of scalars (a recorded look at coordinates when ℝⁿ-indexed)."""
+        M = cls._rows(rows, field, tags, tracker)
+        M._coords = indexed_by_Rn(M._tags)
+        if M._coords and tracker is not None:
+            tracker.touch("matrices built entrywise")
+        return M
+
+    @classmethod
+    def zeros(cls, m: int, k: int, field: Field, tags=(UNTYPED, UNTYPED), tracker=None) -> "Mat":
         a = np.empty((m, k), dtype=object)
         z = field.const(0)
         for i in range(m):
             for j in range(k):
                 a[i, j] = z
-        return cls(a, field, tags, tracker)
+        return cls._wrap(a, field, tags, tracker)
 
     @classmethod
-    def identity(cls, m: int, field: Field, tag="?", tracker=None) -> "Mat":
+    def identity(cls, m: int, field: Field, tag=UNTYPED, tracker=None) -> "Mat":
         M = cls.zeros(m, m, field, (tag, tag), tracker)
         one = field.const(1)
         for i in range(m):
             M._a[i, i] = one
         return M
 
-    def _new(self, a, tags=None) -> "Mat":
-        return Mat(a, self.field, self.tags if tags is None else tags, self.tracker)
+    def _new(self, a, tags=None, other: "Mat | None" = None) -> "Mat":
+        tracker = self._tracker if self._tracker is not None else (other._tracker if other is not None else None)
+        coords = self._coords or (other is not None and other._coords)
+        return Mat._wrap(a, self.field, self._tags if tags is None else tags, tracker, coords)
 
     def _norm(self, a: np.ndarray) -> np.ndarray:
         f = self.field.normalize
@@ -85,9 +220,15 @@ class Mat:
             out[idx] = f(x)
         return out
 
+    def _tracker_of(self, o: "Mat") -> CoordinateTracker | None:
+        return self._tracker if self._tracker is not None else o._tracker
+
     # -- shape ------------------------------------------------------------
     @property
     def shape(self) -> tuple[int, int]:
+        """The numbers of rows and columns (sizes: not offered by the dimension-free backend)."""
+        if not _coordinates(self.field):
+            raise NeedsCoordinates("the shape of a matrix")
         return self._a.shape
 
     @property
@@ -97,24 +238,26 @@ class Mat:
         if star is not None:
             for idx, x in np.ndenumerate(a):
                 a[idx] = star(x)
-        return self._new(a, (self.tags[1], self.tags[0]))
+        return self._new(a, (self._tags[1], self._tags[0]))
 
     # -- arithmetic -------------------------------------------------------
-    def _check(self, o: "Mat") -> None:
-        if self.shape != o.shape:
-            raise ValueError(f"shape mismatch {self.shape} vs {o.shape}")
+    def _sum_tags(self, o: "Mat", what: str) -> tuple[str, str]:
+        if self._a.shape != o._a.shape:
+            raise ValueError(f"{what}: shape mismatch {self._a.shape} vs {o._a.shape}")
+        t = self._tracker_of(o)
+        return (unify(self._tags[0], o._tags[0], what, t), unify(self._tags[1], o._tags[1], what, t))
 
     def __add__(self, o):
         if not isinstance(o, Mat):
             return NotImplemented
-        self._check(o)
-        return self._new(self._norm(self._a + o._a))
+        tags = self._sum_tags(o, "a sum")
+        return self._new(self._norm(self._a + o._a), tags, o)
 
     def __sub__(self, o):
         if not isinstance(o, Mat):
             return NotImplemented
-        self._check(o)
-        return self._new(self._norm(self._a - o._a))
+        tags = self._sum_tags(o, "a difference")
+        return self._new(self._norm(self._a - o._a), tags, o)
 
     def __neg__(self):
         return self._new(-self._a)
@@ -122,19 +265,22 @@ class Mat:
     def __matmul__(self, o):
         if not isinstance(o, Mat):
             return NotImplemented
-        if self.shape[1] != o.shape[0]:
-            raise ValueError(f"cannot multiply {self.shape} by {o.shape}")
-        m, k = self.shape[0], o.shape[1]
-        if self.shape[1] == 0:
-            return Mat.zeros(m, k, self.field, (self.tags[0], o.tags[1]), self.tracker)
-        return self._new(self._norm(np.dot(self._a, o._a)), (self.tags[0], o.tags[1]))
+        if self._a.shape[1] != o._a.shape[0]:
+            raise ValueError(f"cannot multiply {self._a.shape} by {o._a.shape}")
+        unify(self._tags[1], o._tags[0], "a product", self._tracker_of(o))
+        tags = (self._tags[0], o._tags[1])
+        m, k = self._a.shape[0], o._a.shape[1]
+        if self._a.shape[1] == 0:
+            z = Mat.zeros(m, k, self.field, tags, self._tracker_of(o))
+            return self._new(z._a, tags, o)
+        return self._new(self._norm(np.dot(self._a, o._a)), tags, o)
 
     def _scalar(self, c):
         if isinstance(c, Mat):
             return NotImplemented
         if isinstance(c, float):
             raise TypeError("use integers or fractions, not floats, as constants in claims")
-        if isinstance(c, Fraction):
+        if isinstance(c, _SCALARS):
             c = self.field.const(c)
         out = np.empty(self._a.shape, dtype=object)
         for idx, x in np.ndenumerate(self._a):
@@ -148,64 +294,100 @@ class Mat:
         return self._scalar(c)
 
     def __truediv__(self, c):
-        if isinstance(c, int):
-            c = self.field.const(Fraction(1, c))
-            return self._scalar(c)
+        if isinstance(c, Mat):
+            return NotImplemented
+        if isinstance(c, _SCALARS):
+            return self._scalar(self.field.const(Fraction(1) / Fraction(c)))
         return self._scalar(self.field.const(1) / c)
 
     # -- linear algebra ---------------------------------------------------
     def trace(self):
-        if self.shape[0] != self.shape[1]:
+        if self._a.shape[0] != self._a.shape[1]:
             raise ValueError("trace of a non-square matrix")
+        unify(self._tags[0], self._tags[1], "a trace", self._tracker)
         entry_trace = self.field.entry_trace
         acc = self.field.const(0) if entry_trace is None else None
-        for i in range(self.shape[0]):
+        for i in range(self._a.shape[0]):
             x = self._a[i, i] if entry_trace is None else entry_trace(self._a[i, i])
             acc = x if acc is None else acc + x
         return self.field.normalize(acc)
 
     def inv(self) -> "Mat":
-        m = self.shape[0]
+        m = self._a.shape[0]
+        if m != self._a.shape[1]:
+            raise ValueError("inverse of a non-square matrix")
+        t = unify(self._tags[0], self._tags[1], "an inverse", self._tracker)
         I = Mat.identity(m, self.field)
         sol = self.field.solve(self._a.tolist(), I._a.tolist())
-        return Mat.from_rows(sol, self.field, (self.tags[1], self.tags[0]), self.tracker)
+        out = Mat._rows(sol, self.field, (t, t), self._tracker)
+        out._coords = self._coords
+        return out
 
     def is_zero(self) -> bool:
         return all(self.field.is_zero(x) for x in self._a.flat)
 
-    # -- coordinates (flagged) ---------------------------------------------
-    def _touch(self, what: str) -> None:
-        if self.tracker is not None and indexed_by_Rn(self.tags):
-            self.tracker.touch(what)
-
+    # -- the one door to entries (recorded) ----------------------------------
     def __getitem__(self, idx):
-        """Entries or sub-blocks (reading entries of an R^n-indexed matrix is recorded)."""
-        self._touch("matrix entries")
+        """Entries or sub-blocks.  Reading an ℝⁿ-indexed (or untyped) matrix entrywise is
+        recorded; the dimension-free backend has no entries."""
+        if not _coordinates(self.field):
+            raise NeedsCoordinates("an entry or a block of a matrix")
+        if not isinstance(idx, tuple) or len(idx) != 2:
+            raise TypeError("index a matrix with two indices, M[i, j] or M[i0:i1, j0:j1]")
+        if self._tracker is not None and indexed_by_Rn(self._tags):
+            self._tracker.touch("matrix entries")
         out = self._a[idx]
         if isinstance(out, np.ndarray):
             if out.ndim == 1:
-                out = out.reshape(1, -1) if isinstance(idx, tuple) and isinstance(idx[0], int) else out.reshape(-1, 1)
-            return self._new(out.copy(), self.tags)
+                out = out.reshape(1, -1) if isinstance(idx[0], (int, np.integer)) else out.reshape(-1, 1)
+            full = [isinstance(i, slice) and i == slice(None) for i in idx]
+            tags = tuple(t if f else UNTYPED for t, f in zip(self._tags, full))
+            return Mat._wrap(out.copy(), self.field, tags, self._tracker,
+                             self._coords or (self._tracker is None and indexed_by_Rn(self._tags)))
         return out
 
-    def entries(self) -> list[Any]:
-        """All entries, row by row (engine use: residual tests)."""
-        return list(self._a.flat)
+    def __iter__(self):
+        raise TypeError("a matrix is not iterable: read entries as M[i, j]")
 
-    def rows(self) -> list[list[Any]]:
-        return self._a.tolist()
+    def __array__(self, *args, **kwargs):
+        raise TypeError("a matrix does not convert to a numpy array: read entries as M[i, j]")
+
+    def __bool__(self):
+        raise TypeError("a matrix has no truth value: return it as a residual")
 
     def __repr__(self) -> str:
-        return f"Mat{self.shape}[{self.tags[0]}x{self.tags[1]}]({self.field.name})"
+        return f"Mat{self._a.shape}[{self._tags[0]}x{self._tags[1]}]({self.field.name})"
+
+
+def _join(tags: Sequence[str]) -> str:
+    if any(t == UNTYPED for t in tags):
+        return UNTYPED
+    return "+".join(tags)
 
 
 def block(rows: Sequence[Sequence[Mat]]) -> Mat:
-    """Block matrix from a grid of Mats."""
-    first = rows[0][0]
+    """Block matrix from a grid of Mats; its spaces are the direct sums of the blocks' spaces."""
+    rows = [list(row) for row in rows]
+    if not rows or not rows[0] or any(len(row) != len(rows[0]) for row in rows):
+        raise ValueError("a block matrix needs a rectangular, non-empty grid of blocks")
+    if not all(isinstance(b, Mat) for row in rows for b in row):
+        raise TypeError("the blocks of a block matrix must be matrices")
+    tracker = next((b._tracker for row in rows for b in row if b._tracker is not None), None)
+    row_tags = []
+    for i, row in enumerate(rows):
+        t = row[0]._tags[0]
+        for b in row[1:]:
+            t = unify(t, b._tags[0], f"block row {i + 1}", tracker)
+        row_tags.append(t)
+    col_tags = []
+    for j in range(len(rows[0])):
+        t = rows[0][j]._tags[1]
+        for row in rows[1:]:
+            t = unify(t, row[j]._tags[1], f"block column {j + 1}", tracker)
+        col_tags.append(t)
     a = np.concatenate([np.concatenate([b._a for b in row], axis=1) for row in rows], axis=0)
-    rt = "+".join(row[0].tags[0] for row in rows)
-    ct = "+".join(b.tags[1] for b in rows[0])
-    return Mat(a, first.field, (rt, ct), first.tracker)
+    coords = any(b._coords for row in rows for b in row)
+    return Mat._wrap(a, rows[0][0].field, (_join(row_tags), _join(col_tags)), tracker, coords)
 
 
 def comm(A: Mat, B: Mat) -> Mat:
@@ -213,7 +395,7 @@ def comm(A: Mat, B: Mat) -> Mat:
     return A @ B - B @ A
 
 
-def scalar_matrix(c, m: int, field: Field, tag="?", tracker=None) -> Mat:
+def scalar_matrix(c, m: int, field: Field, tag=UNTYPED, tracker=None) -> Mat:
     M = Mat.zeros(m, m, field, (tag, tag), tracker)
     for i in range(m):
         M._a[i, i] = c
@@ -224,4 +406,4 @@ def mat_map(M: Mat, f) -> Mat:
     out = np.empty(M._a.shape, dtype=object)
     for idx, x in np.ndenumerate(M._a):
         out[idx] = f(x)
-    return Mat(out, M.field, M.tags, M.tracker)
+    return Mat._wrap(out, M.field, M._tags, M._tracker, M._coords)

@@ -32,6 +32,11 @@ Scalar = Any
 Function = Callable[["Scene"], Any]
 
 
+#: prefixes of the claim's own parameters: they never coincide with a chart parameter
+USER_SCALAR = "scalar:"
+USER_GENERIC = "generic:"
+
+
 class SizeError(ValueError):
     """An inadmissible problem size."""
 
@@ -103,8 +108,8 @@ class PaperObjects:
         return self.field.normalize((a @ b).trace() * self.const(Fraction(-1, 2)))
 
     def scalar(self, name: str) -> Scalar:
-        """A free scalar parameter such as lambda, kappa, epsilon."""
-        return self.param(name)
+        """A fresh free scalar parameter of the claim's own (never one of the chart's, whatever its name)."""
+        return self.param(USER_SCALAR + str(name))
 
     @property
     def lam(self) -> Scalar:
@@ -144,7 +149,7 @@ class Scene(PaperObjects):
         self.component = component
         self.realization = realization
         self.options = dict(options or {})
-        self.tracker = tracker if tracker is not None else CoordinateTracker()
+        self.tracker = tracker if tracker is not None else CoordinateTracker({"n": n, "r": r})
         self.params: dict[str, Any] = {}
         self._cache: dict[str, Any] = {}
 
@@ -156,7 +161,10 @@ class Scene(PaperObjects):
             value = self.field.param(name, self.rng)
             hard = self.options.get("hard")
             if hard is not None and self.rng is not None:
-                value = self.field.exact_input(hard.rewrite(self, name, value))
+                new = hard.rewrite(self, name, value)
+                if new is not value:
+                    self.options.setdefault("hard_hits", []).append(name)
+                    value = self.field.exact_input(new)
             self.params[name] = value
         return self.params[name]
 
@@ -180,10 +188,10 @@ class Scene(PaperObjects):
         return self.field.const(Fraction(num, den))
 
     def mat(self, rows, tags=("?", "?")) -> Mat:
-        """A matrix from rows of scalars.  Unless its index labels say it is not indexed by
-        R^n (e.g. ("r", "r"), ("so", "so")), building one counts as reading coordinates."""
-        if indexed_by_Rn(tags):
-            self.tracker.touch("matrices built entrywise")
+        """A matrix from rows of scalars, with the spaces of its rows and columns.  An
+        R^n-indexed one (tags such as ("n", "n")) is recorded as built from coordinates;
+        an untyped one (tags "?") is recorded when it meets R^n; a named coordinate
+        space ("so", "cond", ...) never meets R^n or R^r."""
         return Mat.from_rows(rows, self.field, tags, self.tracker)
 
     def zeros(self, m: int, k: int, tags=("?", "?")) -> Mat:
@@ -192,7 +200,7 @@ class Scene(PaperObjects):
     def identity(self, m: int, tag="?") -> Mat:
         return Mat.identity(m, self.field, tag, self.tracker)
 
-    def skew_params(self, name: str, m: int, tag: str) -> Mat:
+    def _skew_params(self, name: str, m: int, tag: str) -> Mat:
         M = self.zeros(m, m, (tag, tag))
         for i in range(m):
             for j in range(i + 1, m):
@@ -200,7 +208,7 @@ class Scene(PaperObjects):
                 M._a[i, j], M._a[j, i] = x, -x
         return M
 
-    def sym_params(self, name: str, m: int, tag: str) -> Mat:
+    def _sym_params(self, name: str, m: int, tag: str) -> Mat:
         M = self.zeros(m, m, (tag, tag))
         for i in range(m):
             for j in range(i, m):
@@ -209,6 +217,10 @@ class Scene(PaperObjects):
         return M
 
     def general_params(self, name: str, m: int, k: int, tags) -> Mat:
+        """A generic m x k matrix of fresh parameters of the claim's own (index spaces ``tags``)."""
+        return self._general_params(USER_GENERIC + str(name), m, k, tags)
+
+    def _general_params(self, name: str, m: int, k: int, tags) -> Mat:
         M = self.zeros(m, k, tags)
         for i in range(m):
             for j in range(k):
@@ -222,21 +234,21 @@ class Scene(PaperObjects):
             for i in range(r):
                 X._a[i, i] = self.const(1)
             P = self.zeros(n, r, ("n", "r"))
-            W = self.skew_params(f"{prefix}W", r, "r")
+            W = self._skew_params(f"{prefix}W", r, "r")
             P._a[:r, :] = W._a
             for i in range(r, n):
                 for j in range(r):
                     P._a[i, j] = self.param(f"{prefix}Z_{i + 1}{j + 1}")
             return X, P
-        S = self.skew_params(f"{prefix}S", n, "n")
+        S = self._skew_params(f"{prefix}S", n, "n")
         In = self.identity(n, "n")
-        Q = Mat.from_rows(self.field.solve((In + S).T._a.tolist(), (In - S).T._a.tolist()),
+        Q = Mat._rows(self.field.solve((In + S).T._a.tolist(), (In - S).T._a.tolist()),
                           self.field, ("n", "n"), self.tracker).T  # (I - S)(I + S)^{-1}
         if self.component % 2 == 1:
             Q._a[:, 0] = [-x for x in Q._a[:, 0]]
-        X = Mat(Q._a[:, :r].copy(), self.field, ("n", "r"), self.tracker)
-        W = self.skew_params(f"{prefix}W", r, "r")
-        Z = self.general_params(f"{prefix}Z", n, r, ("n", "r"))
+        X = Mat._wrap(Q._a[:, :r].copy(), self.field, ("n", "r"), self.tracker)
+        W = self._skew_params(f"{prefix}W", r, "r")
+        Z = self._general_params(f"{prefix}Z", n, r, ("n", "r"))
         P0 = X @ W + (In - X @ X.T) @ Z
         if self.realization == "metric":
             P0 = self.A @ P0
@@ -280,19 +292,22 @@ class Scene(PaperObjects):
 
     def conj(self, M: Mat) -> Mat:
         """The complex conjugate of a realified matrix."""
-        m, k = M.shape[0] // 2, M.shape[1] // 2
-        return block([[M[:m, :k], -M[:m, k:]], [-M[m:, :k], M[m:, k:]]])
+        m, k = M._a.shape[0] // 2, M._a.shape[1] // 2
+        a = M._a.copy()
+        a[:m, k:] = -a[:m, k:]
+        a[m:, :k] = -a[m:, :k]
+        return Mat._wrap(a, M.field, M.tags, M.tracker, M._coords)   # J M J, J = diag(I, -I): covariant
 
     def _complex_point(self):
         n, r = self.n, self.r
-        S = self.realify(self.skew_params("cS", n, "n"), self.sym_params("cH", n, "n"))
+        S = self.realify(self._skew_params("cS", n, "n"), self._sym_params("cH", n, "n"))
         I2 = self.identity(2 * n, "n+n")
-        Q = Mat.from_rows(self.field.solve((I2 + S).T._a.tolist(), (I2 - S).T._a.tolist()),
+        Q = Mat._rows(self.field.solve((I2 + S).T._a.tolist(), (I2 - S).T._a.tolist()),
                           self.field, ("n+n", "n+n"), self.tracker).T
         cols = list(range(r)) + list(range(n, n + r))
-        Z = Mat(Q._a[:, cols].copy(), self.field, ("n+n", "r+r"), self.tracker)
-        W = self.realify(self.skew_params("cW", r, "r"), self.sym_params("cK", r, "r"))
-        Y = self.realify(self.general_params("cY", n, r, ("n", "r")), self.general_params("cV", n, r, ("n", "r")))
+        Z = Mat._wrap(Q._a[:, cols].copy(), self.field, ("n+n", "r+r"), self.tracker)
+        W = self.realify(self._skew_params("cW", r, "r"), self._sym_params("cK", r, "r"))
+        Y = self.realify(self._general_params("cY", n, r, ("n", "r")), self._general_params("cV", n, r, ("n", "r")))
         return Z, Z @ W + (I2 - Z @ Z.T) @ Y
 
     @property
@@ -318,7 +333,7 @@ class Scene(PaperObjects):
         """The symmetric matrix A: diag(a_1..a_n), or generic symmetric in the equivariant chart."""
         def build():
             if self.chart == "equivariant":
-                return self.sym_params("A", self.n, "n")
+                return self._sym_params("A", self.n, "n")
             M = self.zeros(self.n, self.n, ("n", "n"))
             for i, x in enumerate(self._cached("a", lambda: [self.param(f"a_{i + 1}") for i in range(self.n)])):
                 M._a[i, i] = x
@@ -339,33 +354,35 @@ class Scene(PaperObjects):
     @property
     def xi(self) -> Mat:
         """A generic element of so(n)."""
-        return self._cached("xi", lambda: self.skew_params("xi", self.n, "n"))
+        return self._cached("xi", lambda: self._skew_params("xi", self.n, "n"))
 
     @property
     def zeta(self) -> Mat:
         """A second generic element of so(n)."""
-        return self._cached("zeta", lambda: self.skew_params("zeta", self.n, "n"))
+        return self._cached("zeta", lambda: self._skew_params("zeta", self.n, "n"))
 
     @property
     def eta(self) -> Mat:
         """A generic element of so(r)."""
-        return self._cached("eta", lambda: self.skew_params("eta", self.r, "r"))
+        return self._cached("eta", lambda: self._skew_params("eta", self.r, "r"))
 
     @property
     def theta(self) -> Mat:
         """A second generic element of so(r)."""
-        return self._cached("theta", lambda: self.skew_params("theta", self.r, "r"))
+        return self._cached("theta", lambda: self._skew_params("theta", self.r, "r"))
 
     def generic(self, name: str, m: str, k: str) -> Mat:
         """A generic matrix of parameters with index labels m, k in {'n', 'r'}."""
         size = {"n": self.n, "r": self.r}
+        if m not in size or k not in size:
+            raise ValueError(f"generic({name!r}, {m!r}, {k!r}): the index spaces are 'n' or 'r'")
         return self._cached(f"gen:{name}", lambda: self.general_params(name, size[m], size[k], (m, k)))
 
     def sym_operator(self, name: str = "AA") -> Callable[[Mat], Mat]:
         """A generic symmetric linear operator on so(n) (w.r.t. <,>), covariant parameter."""
         def build():
             basis = so_basis(self.n)
-            Mop = self.sym_params(name, len(basis), "so")
+            Mop = self._sym_params(name, len(basis), "so")
             return basis, Mop._a
         basis, coeffs = self._cached(f"op:{name}", build)
 
@@ -430,6 +447,12 @@ class Scene(PaperObjects):
             yield {"X": E, "P": zero} if name == "X" else {"X": zero, "P": E}
 
     def jacobian(self, F: Function, symmetric: bool | None = None) -> list[list[Scalar]]:
+        """The Jacobian of F in the 2nr coordinates of X, P (a recorded look at coordinates);
+        see :meth:`_jacobian`."""
+        self.tracker.touch("a Jacobian in the coordinates of X, P")
+        return self._jacobian(F, symmetric)
+
+    def _jacobian(self, F: Function, symmetric: bool | None = None) -> list[list[Scalar]]:
         """Rows: scalar components of F (a scalar or list of Mats); columns: the 2nr coordinates.
 
         ``symmetric``: F's matrices are symmetric and only their upper triangles count (the
@@ -445,7 +468,7 @@ class Scene(PaperObjects):
     def gradient(self, H: Function) -> tuple[Mat, Mat]:
         """(dH/dX, dH/dP) for a scalar function H of the scene."""
         def build():
-            row = self.jacobian(H)[0]
+            row = self._jacobian(H)[0]
             n, r = self.n, self.r
             HX = self.zeros(n, r, ("n", "r"))
             HP = self.zeros(n, r, ("n", "r"))
@@ -464,7 +487,7 @@ class Scene(PaperObjects):
         return list(v[m:]) + [-x for x in v[:m]]
 
     def _constraint_jacobian(self) -> list[list[Scalar]]:
-        return self._cached("J", lambda: self.jacobian(self.constraints.build))
+        return self._cached("J", lambda: self._jacobian(self.constraints.build))
 
     def constraint_bracket_matrix(self) -> list[list[Scalar]]:
         """The matrix {F_i, F_j}_0 of the scalar constraints (scalar)."""
@@ -604,7 +627,7 @@ class TangentScene(Scene):
             zero = self.base.field.const(0)
             for idx, x in np.ndenumerate(M._a):
                 a[idx] = Dual(x, dot._a[idx] if dot is not None else zero)
-            return Mat(a, self.field, M.tags, self.tracker)
+            return Mat._wrap(a, self.field, M.tags, self.tracker, M._coords)
         if isinstance(M, list):
             return [self._lift(x) for x in M]
         if isinstance(M, tuple):
@@ -665,11 +688,14 @@ class TangentScene(Scene):
     def generic(self, name, m, k):
         return self._cached(f"gen:{name}", lambda: self._lift(self.base.generic(name, m, k)))
 
-    def skew_params(self, name, m, tag):
-        return self._lift(self.base.skew_params(name, m, tag))
+    def _skew_params(self, name, m, tag):
+        return self._lift(self.base._skew_params(name, m, tag))
 
-    def sym_params(self, name, m, tag):
-        return self._lift(self.base.sym_params(name, m, tag))
+    def _sym_params(self, name, m, tag):
+        return self._lift(self.base._sym_params(name, m, tag))
+
+    def _general_params(self, name, m, k, tags):
+        return self._lift(self.base._general_params(name, m, k, tags))
 
 
 def so_basis(n: int) -> list[tuple[int, int]]:
@@ -697,7 +723,7 @@ def map_entries(v: Any, f, scene: Any) -> Any:
         a = np.empty(v._a.shape, dtype=object)
         for idx, x in np.ndenumerate(v._a):
             a[idx] = f(x)
-        return Mat(a, scene.field, v.tags, scene.tracker)
+        return Mat._wrap(a, scene.field, v.tags, scene.tracker, v._coords)
     if isinstance(v, dict):
         return {k: map_entries(x, f, scene) for k, x in v.items()}
     if isinstance(v, (list, tuple)):

@@ -19,21 +19,16 @@ from typing import Any, Iterable, Mapping
 import symengine as se
 
 from ..fields import Dual
+from ..matrix import NeedsCoordinates  # noqa: F401 (one exception for every backend)
 
 #: index type of scalars
 SCALAR = "1"
 
 
-class NeedsCoordinates(Exception):
-    """The claim needs an object the dimension-free backend cannot provide."""
+class Dimension(se.Dummy):
+    """The symbol n or r: usable in formulas (tr I_r = r), not as an integer or in comparisons.
 
-    def __init__(self, what: str) -> None:
-        super().__init__(f"{what} needs coordinates (fixed n, r); use a coordinate backend")
-        self.what = what
-
-
-class Dimension(se.Symbol):
-    """The symbol n or r: usable in formulas (tr I_r = r), not as an integer or in comparisons."""
+    A dummy symbol: a symbol a claim creates with the same name is a different symbol."""
 
     def _refuse(self, *args: Any) -> Any:
         raise NeedsCoordinates(f"using the dimension {self} as a number")

@@ -20,8 +20,8 @@ import numpy as np
 import symengine as se
 
 from ..fields import Dual, DualField, Field
-from ..matrix import CoordinateTracker, Mat
-from ..scene import Flow, PaperObjects, map_entries
+from ..matrix import CoordinateTracker, Mat, definite
+from ..scene import USER_SCALAR, Flow, PaperObjects, map_entries
 from .algebra import (DIMENSIONS, Letter, NCPoly, NeedsCoordinates, as_coef, coef_latex, derivation,
                       letter_pair, skew_letter, substitute, symmetric_letter, trace)
 from .rewriting import Order, Reduction, RewritingSystem, simplify_coef
@@ -40,6 +40,36 @@ LAMBDA = symmetric_letter("Lambda", "r", r"\Lambda")
 
 COND_XX = "X^T X = I_r (cond_XP)"
 COND_XP = "X^T P + P^T X = 0 (cond_XP)"
+
+
+class FreeSize:
+    """A size k·n or k·r of the dimension-free scene.
+
+    It sizes identity and zero blocks and nothing else: comparing sizes, using one as a
+    number, in arithmetic or as a loop bound needs coordinates (a fixed n, r)."""
+
+    __slots__ = ("kind", "k")
+
+    def __init__(self, kind: str, k: int = 1) -> None:
+        self.kind, self.k = kind, k
+
+    def __mul__(self, c: Any) -> "FreeSize":
+        if isinstance(c, int) and not isinstance(c, bool) and c >= 1:
+            return FreeSize(self.kind, self.k * c)
+        raise NeedsCoordinates(f"the size {self} in arithmetic")
+
+    __rmul__ = __mul__
+
+    def _refuse(self, *args: Any) -> Any:
+        raise NeedsCoordinates(f"using the size {self} as a number")
+
+    __eq__ = __ne__ = __lt__ = __le__ = __gt__ = __ge__ = _refuse
+    __add__ = __radd__ = __sub__ = __rsub__ = __truediv__ = __floordiv__ = __rfloordiv__ = _refuse
+    __mod__ = __pow__ = __neg__ = __int__ = __index__ = __float__ = __bool__ = _refuse
+    __hash__ = object.__hash__
+
+    def __repr__(self) -> str:
+        return f"{self.k if self.k > 1 else ''}{self.kind}"
 
 
 class FreeSolveError(ArithmeticError):
@@ -62,10 +92,10 @@ def standard_system() -> RewritingSystem:
     return system
 
 
-def resolvent_letter(mu: Any) -> Letter:
-    """The letter R_mu = (mu I_n - A)^{-1} (symmetric n×n)."""
+def resolvent_letter(mu: Any, k: int = 1) -> Letter:
+    """The letter R_mu = (mu I_n - A)^{-1} (symmetric n×n); k > 1 tells apart coefficients that print alike."""
     c = as_coef(mu)
-    return symmetric_letter(f"R[{c}]", "n", rf"(\left({coef_latex(c)}\right) \mathbf{{I}}_n - A)^{{-1}}"
+    return symmetric_letter(f"R[{c}]" + (f"#{k}" if k > 1 else ""), "n", rf"(\left({coef_latex(c)}\right) \mathbf{{I}}_n - A)^{{-1}}"
                             if not c.is_Symbol else rf"({coef_latex(c)} \mathbf{{I}}_n - A)^{{-1}}")
 
 
@@ -73,9 +103,15 @@ def add_resolvent(system: RewritingSystem, mu: Any, resolvents: dict[Letter, Any
                   ainv: bool = False) -> Letter:
     """Add R = (mu I − A)^{-1} with A R, R A → mu R − I and the resolvent identity with the others."""
     mu = as_coef(mu)
+    for S, nu in resolvents.items():   # the same resolvent iff the same coefficient, never by name
+        if simplify_coef(nu - mu) == 0:
+            return S
     R = resolvent_letter(mu)
-    if R in resolvents:
-        return R
+    taken = {str(S) for S in resolvents}
+    k = 1
+    while str(R) in taken:             # another coefficient that prints alike: a fresh letter
+        k += 1
+        R = resolvent_letter(mu, k)
     system.order.add(R)
     reason = f"A R = R A = mu R - I_n for R = (mu I_n - A)^(-1), mu = {mu} (definition of the resolvent)"
     system.add_rule((A, R), _w(R) * mu - _i("n"), reason, name=f"A{R}")
@@ -207,20 +243,21 @@ class FreeScene(PaperObjects):
 
     def _prim(self, key: str, poly: NCPoly) -> Mat:
         """The 1×1 matrix holding a primitive letter (overridden by the tangent scene)."""
-        return Mat.from_rows([[poly]], self.field, poly.shape, self.tracker)
+        return Mat._rows([[poly]], self.field, poly.shape, self.tracker)
 
     def _letter(self, L: Letter) -> Mat:
         self._named[str(L)] = L
         return self._cached(f"letter:{L}", lambda: self._prim(str(L), _w(L)))
 
     @property
-    def n(self) -> Any:
-        """The symbol n (tr I_n); not an integer: loops over coordinates fail."""
-        return DIMENSIONS["n"]
+    def n(self) -> "FreeSize":
+        """The size n: good for sizing blocks (s.zeros(s.n, s.r), 2 * s.r), nothing else."""
+        return FreeSize("n")
 
     @property
-    def r(self) -> Any:
-        return DIMENSIONS["r"]
+    def r(self) -> "FreeSize":
+        """The size r: good for sizing blocks, nothing else."""
+        return FreeSize("r")
 
     @property
     def X(self) -> Mat:
@@ -305,7 +342,9 @@ class FreeScene(PaperObjects):
     # -- scalars --------------------------------------------------------------
     def param(self, name: str) -> Any:
         if name not in self.params:
-            self.params[name] = se.Symbol(name)
+            # the paper's scalars are the symbols lambda, kappa, epsilon; a claim's own scalar is a
+            # dummy symbol, never equal to another symbol, whatever its name
+            self.params[name] = se.Dummy(name) if name.startswith(USER_SCALAR) else se.Symbol(name)
         return self.params[name]
 
     def const(self, q: int | Fraction) -> Any:
@@ -316,25 +355,28 @@ class FreeScene(PaperObjects):
 
     # -- matrices ---------------------------------------------------------------
     def _blocks(self, m: Any, tag: str | None) -> tuple[str, int]:
-        """(index type, number of diagonal blocks) for a size given as n, r, k·n, k·r or a tag."""
-        for t in ("n", "r"):
-            if tag == t:
-                return t, 1
-        e = as_coef(m)
-        if e is not None:
-            for t in ("n", "r"):
-                k = simplify_coef(e / DIMENSIONS[t])
-                if k.is_Integer and int(k) >= 1:
-                    return t, int(k)
-        if isinstance(tag, str) and tag[:-1].isdigit() and tag[-1] in "nr":
-            return tag[-1], int(tag[:-1])
-        raise NeedsCoordinates(f"a matrix of size {m} (tag {tag!r})")
+        """(index type, number of diagonal blocks) for a size given as s.n, s.r, k·s.n, k·s.r or
+        by a definite index space ("n", "2r", "r+r")."""
+        atoms = definite(tag) if tag is not None else None
+        if isinstance(m, FreeSize):
+            t, k = m.kind, m.k
+        elif atoms and len(set(atoms)) == 1:
+            t, k = atoms[0], len(atoms)
+        else:
+            raise NeedsCoordinates(f"a matrix of size {m!r} (index space {tag!r})")
+        if atoms is not None and atoms != (t,) * k:
+            raise TypeError(f"the size {k if k > 1 else ''}{t} does not match the index space {tag!r}")
+        return t, k
+
+    @staticmethod
+    def _tag(t: str, k: int, tag: str | None) -> str:
+        return tag or (t if k == 1 else f"{k}{t}")
 
     def scalar_matrix(self, c: Any, m: Any, tag: str | None = None) -> Mat:
         """c·I_m for m = n, r (or k·n, k·r: a k×k block diagonal)."""
         t, k = self._blocks(m, tag)
         blocks = [[(_i(t) * c if i == j else NCPoly.zero(t, t)) for j in range(k)] for i in range(k)]
-        return Mat.from_rows(blocks, self.field, (tag or t, tag or t), self.tracker)
+        return Mat._rows(blocks, self.field, (self._tag(t, k, tag),) * 2, self.tracker)
 
     def identity(self, m: Any, tag: str | None = None) -> Mat:
         return self.scalar_matrix(1, m, tag)
@@ -343,10 +385,10 @@ class FreeScene(PaperObjects):
         t1, k1 = self._blocks(m, tags[0])
         t2, k2 = self._blocks(k, tags[1])
         rows = [[NCPoly.zero(t1, t2) for _ in range(k2)] for _ in range(k1)]
-        return Mat.from_rows(rows, self.field, (tags[0] or t1, tags[1] or t2), self.tracker)
+        return Mat._rows(rows, self.field, (self._tag(t1, k1, tags[0]), self._tag(t2, k2, tags[1])), self.tracker)
 
     def mat(self, rows, tags=("?", "?")) -> Mat:
-        return Mat.from_rows(rows, self.field, tags, self.tracker)
+        return Mat._rows(rows, self.field, tags, self.tracker)
 
     @property
     def In(self) -> Mat:
@@ -357,7 +399,7 @@ class FreeScene(PaperObjects):
         return self._cached("Ir", lambda: self._const_mat(_i("r")))
 
     def _const_mat(self, p: NCPoly) -> Mat:
-        return Mat.from_rows([[p]], self.field, p.shape, self.tracker)
+        return Mat._rows([[p]], self.field, p.shape, self.tracker)
 
     def tr(self, M: Any) -> Any:
         if isinstance(M, Mat):
@@ -502,10 +544,10 @@ class FreeTangentScene(FreeScene):
             b = dot._a[0, 0] if isinstance(dot, Mat) else dot
             if not isinstance(b, NCPoly) or b.shape != poly.shape:
                 raise TypeError(f"the flow's {key}-component must be a {poly.row}×{poly.col} polynomial")
-        return Mat.from_rows([[Dual(poly, b)]], self.field, poly.shape, self.tracker)
+        return Mat._rows([[Dual(poly, b)]], self.field, poly.shape, self.tracker)
 
     def _const_mat(self, p: NCPoly) -> Mat:
-        return Mat.from_rows([[Dual(p, NCPoly.zero(p.row, p.col))]], self.field, p.shape, self.tracker)
+        return Mat._rows([[Dual(p, NCPoly.zero(p.row, p.col))]], self.field, p.shape, self.tracker)
 
     def scalar_matrix(self, c: Any, m: Any, tag: str | None = None) -> Mat:
         M = self.base.scalar_matrix(c, m, tag)
@@ -522,7 +564,7 @@ def _lift_mat(M: Mat, field: Field) -> Mat:
     a = np.empty(M._a.shape, dtype=object)
     for idx, x in np.ndenumerate(M._a):
         a[idx] = Dual(x, NCPoly.zero(x.row, x.col) if isinstance(x, NCPoly) else se.Integer(0))
-    return Mat(a, field, M.tags, M.tracker)
+    return Mat._wrap(a, field, M.tags, M.tracker)
 
 
 def _map_value(v: Any, scene: FreeScene) -> Any:
