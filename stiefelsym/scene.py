@@ -706,7 +706,7 @@ def so_basis(n: int) -> list[tuple[int, int]]:
 def _flatten_value(v: Any, symmetric_lists: bool) -> list[Any]:
     if isinstance(v, Mat):
         if symmetric_lists:
-            m = v.shape[0]
+            m = v._a.shape[0]
             return [v._a[i, j] for i in range(m) for j in range(i, m)]
         return list(v._a.flat)
     if isinstance(v, (list, tuple)):

@@ -144,6 +144,8 @@ class FreeField(Field):
 
     name = "free"
     exact = True
+    #: entries are blocks for every n, r: no coordinates (no entries, no shapes)
+    coordinates = False
 
     def __init__(self, system: RewritingSystem, lazy: bool = False) -> None:
         self.system = system
@@ -189,6 +191,8 @@ class FreeField(Field):
 
 class FreeDualField(DualField):
     """a + bε over the free field, with the involution and the trace."""
+
+    coordinates = False
 
     def star(self, x: Any) -> Any:
         x = self.lift(x)
@@ -415,7 +419,7 @@ class FreeScene(PaperObjects):
     def _hamiltonian(self, H: Function) -> NCPoly:
         value = H(self)
         if isinstance(value, Mat):
-            if value.shape != (1, 1):
+            if value._a.shape != (1, 1):
                 raise TypeError("a Hamiltonian must be a scalar")
             value = value._a[0, 0]
         if not isinstance(value, NCPoly):

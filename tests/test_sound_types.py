@@ -1,0 +1,235 @@
+"""Routes by which a false statement used to pass, closed by types, doors and fresh names.
+
+Each test writes the trick as a user's claim would and runs it under every method: a
+false statement is never ``proved``, ``checked`` or ``numeric``; it fails, is refused
+with a type error (``error``) or is left ``undecided`` by the dimension-free method.
+"""
+import random
+
+import numpy as np
+import pytest
+import symengine as se
+
+from stiefelsym import Mat, admissible, block
+from stiefelsym.claims import Claim, Size
+from stiefelsym.fields import RationalField
+from stiefelsym.matrix import NeedsCoordinates
+from stiefelsym.runner import run_one
+from stiefelsym.scene import Scene
+
+PASSING = ("proved", "checked", "numeric")
+FIXED = ("exact", "rational", "modular", "float", "auto")
+
+
+def _claim(func, cid="trick"):
+    return Claim(id=cid, paper=("cond_XP",), kind="id", section="t", func=func, sizes=admissible(4))
+
+
+def _verdicts(func, sizes, methods=FIXED + ("free",)):
+    c = _claim(func)
+    out = {}
+    for m in methods:
+        for n, r in (sizes if m != "free" else [(None, None)]):
+            size = None if n is None else Size(n, r)
+            res = run_one(c, size, m, 0)
+            out[(m, None if size is None else (n, r))] = res
+    return out
+
+
+def _never_passes(func, sizes, methods=FIXED + ("free",)):
+    for key, res in _verdicts(func, sizes, methods).items():
+        assert res.verdict not in PASSING, (key, res.verdict, res.certificate, res.message)
+
+
+def _X0(s):
+    """The base point (E_1, ..., E_r) written out with constants."""
+    return block([[s.identity(s.r, "r")], [s.zeros(s.n - s.r, s.r)]])
+
+
+# -- route 1: the equivariant chart ---------------------------------------------------
+
+def x_is_the_base_point_block(s):
+    """False: X = (I; 0) (built as a block of constant matrices)."""
+    return {"X - X0": s.X - _X0(s)}
+
+
+def x_is_the_base_point_entrywise(s):
+    """False: X = (I; 0) (built entrywise)."""
+    rows = [[s.q(1 if i == j else 0) for j in range(s.r)] for i in range(s.n)]
+    return {"X - X0": s.X - s.mat(rows, ("n", "r"))}
+
+
+def x_is_the_base_point_untyped(s):
+    """False: X = (I; 0) (built entrywise, untyped)."""
+    rows = [[s.q(1 if i == j else 0) for j in range(s.r)] for i in range(s.n)]
+    return {"X - X0": s.X - s.mat(rows)}
+
+
+def x_is_the_base_point_constructor(s):
+    """False: X = (I; 0) (the Mat constructor from a numpy array)."""
+    a = np.empty((s.n, s.r), dtype=object)
+    for i in range(s.n):
+        for j in range(s.r):
+            a[i, j] = s.q(1 if i == j else 0)
+    return {"X - X0": s.X - Mat(a, s.X.field, ("n", "r"))}
+
+
+def x_is_the_base_point_sliced(s):
+    """False: X = first r columns of I_n (a slice of the identity)."""
+    return {"X - X0": s.X - s.identity(s.n, "n")[:, 0:s.r]}
+
+
+def first_entry_of_X_is_one(s):
+    """False: X_11 = 1 (an entry read)."""
+    return {"X_11": s.X[0, 0] - s.q(1)}
+
+
+@pytest.mark.parametrize("func", [x_is_the_base_point_block, x_is_the_base_point_entrywise,
+                                  x_is_the_base_point_untyped, x_is_the_base_point_constructor,
+                                  x_is_the_base_point_sliced, first_entry_of_X_is_one],
+                         ids=lambda f: f.__name__)
+def test_the_base_point_is_never_proved_to_be_every_point(func):
+    _never_passes(func, [(3, 1), (3, 2)])
+
+
+def test_raw_entries_have_no_unrecorded_door():
+    s = Scene(3, 2, RationalField(), chart="equivariant", rng=random.Random(0))
+    X = s.X
+    for attempt in (lambda: list(X), lambda: np.asarray(X, dtype=float), lambda: X.entries(),
+                    lambda: X.rows(), lambda: X.a, lambda: bool(X)):
+        with pytest.raises((TypeError, AttributeError, ValueError)):
+            attempt()
+    with pytest.raises((TypeError, AttributeError)):
+        X[0, 0] = 1
+    with pytest.raises(AttributeError):
+        X.tags = ("r", "r")
+    assert s.tracker.used == ()
+    s.jacobian(lambda t: t.X.T @ t.X)
+    assert "a Jacobian in the coordinates of X, P" in s.tracker.used
+    with pytest.raises(AttributeError):
+        s.tracker.used.clear()
+
+
+def test_covariant_constructions_read_no_coordinates():
+    s = Scene(4, 2, RationalField(), chart="equivariant", rng=random.Random(0))
+    M = s.X @ s.X.T - s.In + s.zeros(4, 4, ("n", "n")) + block([[s.X, s.P]]) @ block([[s.X.T], [s.P.T]])
+    s.tr(M @ s.A)
+    s.Psi[0, 1]                       # entries of r x r matrices are O(n)-invariant functions
+    assert s.tracker.used == ()
+
+
+# -- route 2: index types -------------------------------------------------------------
+
+def phi_equals_psi(s):
+    """False: Φ = Ψ (true at X = I when r = n)."""
+    return {"Phi - Psi": s.Phi - s.Psi}
+
+
+def trace_of_x(s):
+    """False: tr X = r (true at X = I when r = n)."""
+    return {"tr X": s.tr(s.X) - s.tr(s.Ir)}
+
+
+def x_times_phi(s):
+    """Ill-typed: Ψ X (an r×r times an n×r)."""
+    return {"Psi X - X": s.Psi @ s.X - s.X}
+
+
+@pytest.mark.parametrize("func", [phi_equals_psi, trace_of_x, x_times_phi], ids=lambda f: f.__name__)
+def test_n_and_r_indexed_objects_never_meet(func):
+    res = _verdicts(func, [(2, 2), (3, 3)])
+    for key, r in res.items():
+        assert r.verdict not in PASSING, key
+        if key[0] != "free":
+            assert r.verdict == "error" and "do not match" in r.message, (key, r.message)
+
+
+def test_types_are_checked_against_sizes():
+    s = Scene(4, 1, RationalField())
+    with pytest.raises(TypeError):
+        s.zeros(3, 1, ("n", "r"))
+    with pytest.raises(TypeError):
+        block([[s.identity(1, "r")], [s.zeros(3, 1, ("n", "r"))]])
+
+
+# -- route 3: name capture --------------------------------------------------------------
+
+def scalars_named_like_the_chart(s):
+    """False: tr A = A_11 + ... + A_nn with scalars of the claim's own named like A's entries."""
+    acc = s.q(0)
+    for i in range(s.n):
+        acc = acc + s.scalar(f"A_{i + 1}{i + 1}")
+    return {"tr A": s.tr(s.A) - acc}
+
+
+def raw_symbols_named_like_the_chart(s):
+    """False: tr A = A_11 + ... + A_nn with symbols the claim makes itself."""
+    acc = s.q(0)
+    for i in range(s.n):
+        acc = acc + se.Symbol(f"A_{i + 1}{i + 1}")
+    return {"tr A": s.tr(s.A) - acc}
+
+
+def scalar_named_lambda(s):
+    """False: a scalar of the claim's own named lambda is the spectral parameter."""
+    return {"lambda": s.scalar("lambda") - s.lam}
+
+
+def generic_named_like_xi(s):
+    """False: a generic matrix named xi is the so(n) element xi (its upper triangle)."""
+    G = s.general_params("xi", s.n, s.n, ("n", "n"))
+    return {"xi": s.killing(s.xi, s.xi) - s.killing(G - G.T, G - G.T) / 4}
+
+
+@pytest.mark.parametrize("func", [scalars_named_like_the_chart, scalar_named_lambda, generic_named_like_xi],
+                         ids=lambda f: f.__name__)
+def test_a_claims_own_parameters_are_fresh(func):
+    _never_passes(func, [(2, 1), (3, 2)])
+
+
+def test_raw_symbols_are_not_chart_parameters():
+    _never_passes(raw_symbols_named_like_the_chart, [(2, 1), (3, 2)], methods=("exact",))
+
+
+# -- route 4: the dimension-free scene ----------------------------------------------------
+
+def sizes_compared(s):
+    """False: Φ = Ψ whenever n = r (a comparison of sizes)."""
+    return {"x": s.Phi - s.Phi if s.n != s.r else s.P}
+
+
+def entry_of_psi(s):
+    """False: Ψ_12 = 0 (an entry of an r-indexed matrix)."""
+    return {"Psi_12": s.Psi[0, 1]}
+
+
+def shape_used(s):
+    """False: P = 0 when the shape says so."""
+    return {"P": s.P if s.X.shape[0] == 0 else s.X - s.X}
+
+
+def scalar_named_n(s):
+    """False: tr I_n equals a free scalar named n."""
+    return {"tr I_n - n": s.tr(s.In) - s.scalar("n")}
+
+
+def size_in_arithmetic(s):
+    """False: tr I_n = n - r + r, the sizes as numbers."""
+    return {"x": s.tr(s.In) * (s.n - s.r)}
+
+
+@pytest.mark.parametrize("func", [sizes_compared, entry_of_psi, shape_used, scalar_named_n, size_in_arithmetic],
+                         ids=lambda f: f.__name__)
+def test_the_dimension_free_scene_refuses_what_depends_on_a_size(func):
+    res = run_one(_claim(func), None, "free", 0)
+    assert res.verdict == "undecided", (res.verdict, res.certificate)
+
+
+def test_free_sizes_only_size_blocks():
+    from stiefelsym.free import FreeScene
+    s = FreeScene()
+    assert (s.zeros(2 * s.r, s.r) @ s.Ir).is_zero() is True
+    for attempt in (lambda: s.n == s.r, lambda: s.n != s.n, lambda: int(s.n), lambda: s.n - s.r,
+                    lambda: range(s.r), lambda: bool(s.r), lambda: s.X.shape, lambda: s.Psi[0, 0]):
+        with pytest.raises(NeedsCoordinates):
+            attempt()
