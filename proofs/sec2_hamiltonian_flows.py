@@ -139,7 +139,6 @@ def constraints_are_independent(s):
     J = [row[n * r:] + row[:n * r] for row in s.jacobian(s.constraints.build)]
     JX = s.jacobian(lambda t: t.X.T @ t.X)
     return {
-        "number of scalar constraints": Count(len(J), r * (r + 1), "F_ij, G_ij with i <= j"),
         "rank d(F, G)": Rank(s.mat(J), r * (r + 1), generic=False,
                              meaning="the constraints (scalar) are independent on T*V"),
         "dim V": Rank(s.mat(JX), n * r - dim_V(n, r), generic=False,
@@ -182,8 +181,6 @@ def dirac_flow_is_the_multiplier_form(s):
                                   meaning="the multipliers are determined by the constraints"),
         "dX/dt": dirac.Xdot - (HP - s.X @ Pi),
         "dP/dt": dirac.Pdot - (-HX + s.X @ Lam + s.P @ Pi),
-        "Lambda symmetric": Lam - Lam.T,
-        "Pi symmetric": Pi - Pi.T,
         "constraints kept by the Dirac flow": s.d(s.constraints.build, dirac),
     }
 
@@ -254,8 +251,14 @@ def differential_dimension_of_invariants(s):
     # the matrix of b -> b P2, so(n-r) -> M_{n-r,r}, in the bases E_i∧E_j and E_ac (trace pairing)
     orbit_map = s.mat([[s.tr(E.T @ b @ P2) for E in targets] for b in wedge_basis(s, n - r)])
     fibre = dim_so(r) + (n - r) * r   # P1 skew, P2 arbitrary
+    zero = s.zeros(n, r, ("n", "r"))
+    columns = [upper(s.d(lambda t: t.X.T @ t.P + t.P.T @ t.X, {"X": zero, "P": unit(s, n, r, a, c)}))
+               for a in range(n) for c in range(r)]
+    fibre_equations = s.mat([list(row) for row in zip(*columns)], ("cond", "coord"))
     return {
-        "dim of the fibre": Count(fibre, dim_V(n, r), "dim T*_{X0}V = dim V"),
+        "dim of the fibre": Rank(fibre_equations, n * r - fibre, generic=True,
+                                 meaning="nr - dim T*_{X0}V: the fibre {X^T P + P^T X = 0} has the dimension "
+                                         "dim so(r) + (n-r)r = dim V of the parametrization (P1, P2)"),
         "generic orbit dimension": Rank(orbit_map, fibre - ddim_printed(n, r), generic=True,
                                         meaning="dim SO(n-r)·P0 = dim V - ddim"),
     }
@@ -285,7 +288,6 @@ def psi_and_gram_give_ddim_functions(s):
         columns.append([dPsi[i, j] for i in range(r) for j in range(i + 1, r)] + upper(dG))
     jac = s.mat([list(row) for row in zip(*columns)])
     return {
-        "number of functions": Count(jac.shape[0], r * r, "Psi_ij (i < j) and (P^T P)_ij (i <= j)"),
         "rank on the fibre": Rank(jac, ddim_printed(n, r), generic=True,
                                   meaning="independent SO(n)-invariant functions"),
     }
