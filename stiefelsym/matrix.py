@@ -130,7 +130,7 @@ class Mat:
     """A dense matrix over a field, typed by the spaces of its rows and columns."""
 
     __array_priority__ = 1000
-    __slots__ = ("_a", "field", "_tags", "_tracker", "_coords")
+    __slots__ = ("_a", "_field", "_tags", "_tracker", "_coords")
 
     def __init__(self, a: Any, field: Field, tags=(UNTYPED, UNTYPED), tracker: CoordinateTracker | None = None):
         """A matrix from an array of entries: building an ℝⁿ-indexed matrix entrywise is a
@@ -140,7 +140,7 @@ class Mat:
 
     def _init(self, a: np.ndarray, field: Field, tags, tracker, coords: bool) -> None:
         self._a = a
-        self.field = field
+        self._field = field
         self._tags = (str(tags[0]), str(tags[1]))
         self._tracker = tracker
         self._coords = coords
@@ -160,6 +160,10 @@ class Mat:
         m = object.__new__(cls)
         m._init(a, field, tags, tracker, coords)
         return m
+
+    @property
+    def field(self) -> Field:
+        return self._field
 
     @property
     def tags(self) -> tuple[str, str]:

@@ -26,7 +26,7 @@ from typing import Any, Callable, Mapping
 import numpy as np
 
 from .fields import Dual, DualField, Field, DegenerateError
-from .matrix import CoordinateTracker, Mat, block, indexed_by_Rn, scalar_matrix
+from .matrix import CoordinateTracker, Mat, block, scalar_matrix, unify
 
 Scalar = Any
 Function = Callable[["Scene"], Any]
@@ -142,16 +142,25 @@ class Scene(PaperObjects):
             raise SizeError(f"r = {r} > n = {n}: V(n, r) needs r <= n")
         if chart not in ("cayley", "equivariant"):
             raise ValueError(f"unknown chart {chart!r}")
-        self.n, self.r = n, r
-        self.field = field
-        self.chart = chart
+        self._n, self._r = n, r
+        self._field = field
+        self._chart = chart
         self.rng = rng
-        self.component = component
-        self.realization = realization
+        self._component = component
+        self._realization = realization
         self.options = dict(options or {})
-        self.tracker = tracker if tracker is not None else CoordinateTracker({"n": n, "r": r})
+        self._tracker = tracker if tracker is not None else CoordinateTracker({"n": n, "r": r})
         self.params: dict[str, Any] = {}
         self._cache: dict[str, Any] = {}
+
+    # the problem is fixed once the scene exists: read-only
+    n = property(lambda self: self._n, doc="the size n")
+    r = property(lambda self: self._r, doc="the size r")
+    field = property(lambda self: self._field, doc="the number system")
+    chart = property(lambda self: self._chart, doc="how points of T*V are produced")
+    component = property(lambda self: self._component, doc="the component of O(n) when r = n")
+    realization = property(lambda self: self._realization, doc="the constraints realizing T*V")
+    tracker = property(lambda self: self._tracker, doc="the record of looks at coordinates")
 
     # ------------------------------------------------------------------
     # parameters and primitives
@@ -382,13 +391,21 @@ class Scene(PaperObjects):
         """A generic symmetric linear operator on so(n) (w.r.t. <,>), covariant parameter."""
         def build():
             basis = so_basis(self.n)
-            Mop = self._sym_params(name, len(basis), "so")
+            Mop = self._sym_params(USER_GENERIC + "operator:" + str(name), len(basis), "so")
             return basis, Mop._a
         basis, coeffs = self._cached(f"op:{name}", build)
 
         def apply(xi: Mat) -> Mat:
-            comps = [xi._a[i, j] for (i, j) in basis]  # coordinates in the orthonormal basis
+            """AA applied to the skew part (xi - xi^T)/2 (an O(n)-equivariant extension to gl(n))."""
+            if not isinstance(xi, Mat):
+                raise TypeError("the operator acts on matrices of so(n)")
+            unify(xi.tags[0], "n", "the operator on so(n)", xi.tracker)
+            unify(xi.tags[1], "n", "the operator on so(n)", xi.tracker)
+            half = xi.field.const(Fraction(1, 2))
+            # coordinates of the skew part in the orthonormal basis E_i ∧ E_j
+            comps = [xi.field.normalize((xi._a[i, j] - xi._a[j, i]) * half) for (i, j) in basis]
             out = Mat.zeros(self.n, self.n, xi.field, ("n", "n"), xi.tracker)
+            out._coords = xi._coords
             for k, (i, j) in enumerate(basis):
                 acc = xi.field.const(0)
                 for l, c in enumerate(comps):
@@ -615,7 +632,7 @@ class TangentScene(Scene):
 
     def __init__(self, base: Scene, flow: Mapping[str, Mat]) -> None:
         self.base = base
-        self.flow = flow
+        self.flow = _checked_tangent(base, flow)
         super().__init__(base.n, base.r, DualField(base.field), chart=base.chart, rng=base.rng,
                          component=base.component, realization=base.realization,
                          options=base.options, tracker=base.tracker)
@@ -696,6 +713,31 @@ class TangentScene(Scene):
 
     def _general_params(self, name, m, k, tags):
         return self._lift(self.base._general_params(name, m, k, tags))
+
+
+#: the primitives a flow or tangent vector may move, and the scene objects they perturb
+TANGENT_KEYS = ("X", "P", "Y", "Q", "Zc", "Zc_dot")
+
+
+def _checked_tangent(base: Scene, flow: Mapping[str, Any]) -> dict[str, Mat]:
+    """A tangent vector: each component a matrix of the type of the primitive it moves.
+    An untyped component meeting R^n is recorded, like any other untyped matrix."""
+    out = {}
+    for key, v in dict(flow).items():
+        if key not in TANGENT_KEYS:
+            raise KeyError(f"a tangent vector moves {', '.join(TANGENT_KEYS)}, not {key!r}")
+        if not isinstance(v, Mat):
+            raise TypeError(f"the {key}-component of a tangent vector must be a matrix")
+        prim = getattr(base, key)
+        if v._a.shape != prim._a.shape:
+            raise ValueError(f"the {key}-component of a tangent vector has shape {v._a.shape}, "
+                             f"{key} has {prim._a.shape}")
+        for t, p in zip(v.tags, prim.tags):
+            unify(t, p, f"the {key}-component of a tangent vector", base.tracker)
+        if v._coords:
+            base.tracker.touch("matrices built entrywise")
+        out[key] = v
+    return out
 
 
 def so_basis(n: int) -> list[tuple[int, int]]:

@@ -233,3 +233,58 @@ def test_free_sizes_only_size_blocks():
                     lambda: range(s.r), lambda: bool(s.r), lambda: s.X.shape, lambda: s.Psi[0, 0]):
         with pytest.raises(NeedsCoordinates):
             attempt()
+
+
+# -- more doors: tangent vectors, the operator on so(n), the scene's own record ------------
+
+def derivative_along_a_constant_direction(s):
+    """False: d(XᵀX) along the constant direction (I; 0) is 2I (true only at X = (I; 0))."""
+    V = block([[s.identity(s.r, "r")], [s.zeros(s.n - s.r, s.r)]])
+    return {"d(X^T X)": s.d(lambda t: t.X.T @ t.X, {"X": V, "P": s.zeros(s.n, s.r, ("n", "r"))})
+            - s.Ir * 2}
+
+
+def operator_on_a_symmetric_matrix(s):
+    """True: 𝔸 acts on the skew part (an equivariant extension), so 𝔸(XXᵀ) = 0 everywhere, not only
+    at X = (I; 0) where a reading of the upper triangle would also give 0."""
+    AA = s.sym_operator("AA")
+    return {"AA(XX^T)": AA(s.X @ s.X.T)}
+
+
+def test_the_operator_on_so_n_is_equivariant_on_all_matrices():
+    for (n, r), res in _verdicts(operator_on_a_symmetric_matrix, [(3, 1), (3, 2)], ("exact", "rational")).items():
+        assert res.verdict in ("proved", "checked"), (n, r, res.verdict)
+
+
+def operator_named_like_a(s):
+    """False: an operator named A shares its coefficients with the matrix A."""
+    AA = s.sym_operator("A")
+    return {"AA(xi) - A xi": AA(s.xi) - (s.xi @ s.A - s.A @ s.xi)}
+
+
+def tracker_swapped(s):
+    """False: X = (I; 0), hiding the entry reads by swapping the record."""
+    from stiefelsym.matrix import CoordinateTracker
+    residual = s.X[0, 0] - s.q(1)
+    s.tracker = CoordinateTracker()
+    return {"X_11": residual}
+
+
+def chart_switched(s):
+    """False: X_11 = 1, after switching the chart."""
+    s.chart = "cayley"
+    return {"X_11": s.X[0, 0] - s.q(1)}
+
+
+@pytest.mark.parametrize("func", [derivative_along_a_constant_direction, operator_named_like_a, tracker_swapped, chart_switched],
+                         ids=lambda f: f.__name__)
+def test_no_side_door_around_the_record(func):
+    _never_passes(func, [(3, 1), (3, 2)], methods=FIXED)
+
+
+def test_tangent_vectors_are_typed():
+    s = Scene(3, 3, RationalField(), rng=random.Random(0))
+    with pytest.raises(TypeError):
+        s.d(lambda t: t.X, {"X": s.Psi})       # an r x r direction for an n x r primitive
+    with pytest.raises(KeyError):
+        s.d(lambda t: t.X, {"A": s.A})

@@ -222,14 +222,17 @@ class FreeScene(PaperObjects):
             raise NeedsCoordinates(f"the {realization!r} realization of T*V (its multipliers solve a "
                                    "Sylvester equation)")
         self.system = system if system is not None else standard_system()
-        self.field: Field = FreeField(self.system, lazy)
-        self.tracker = tracker if tracker is not None else CoordinateTracker()
+        self._field: Field = FreeField(self.system, lazy)
+        self._tracker = tracker if tracker is not None else CoordinateTracker()
         self.options: dict[str, Any] = {}
         self.params: dict[str, Any] = {}
         self._cache: dict[str, Any] = {}
         self._resolvents: dict[Letter, Any] = {}
         self._extras: set[str] = set()
         self._named: dict[str, Letter] = {}
+
+    field = property(lambda self: self._field, doc="the free algebra (read-only)")
+    tracker = property(lambda self: self._tracker, doc="the record of looks at coordinates (read-only)")
 
     def __getattr__(self, name: str) -> Any:
         """Coordinate-scene API this backend does not offer (jacobian, general_params, ...)."""
@@ -534,7 +537,7 @@ class FreeTangentScene(FreeScene):
         super().__init__(base.tracker, base.system)
         self.base = base
         self.flow = dict(flow)
-        self.field = FreeDualField(base.field)
+        self._field = FreeDualField(base.field)
         self.params = base.params
         self._resolvents = base._resolvents
         self._extras = base._extras
