@@ -26,7 +26,7 @@ from typing import Any, Sequence
 
 import numpy as np
 
-from .fields import Field
+from .fields import Deg, Dual, ErrNum, Field
 
 
 class CoordinateTracker:
@@ -122,6 +122,44 @@ def space_size(tag: str, dims: dict[str, int]) -> int | None:
     return sum(dims[x] for x in d)
 
 
+_ENGINE_TYPES: set[type] = {ErrNum, Deg}
+
+
+def engine_number_type(cls: type) -> type:
+    """Register an engine number type (error-bounded floats, degree markers, dual numbers, words)."""
+    _ENGINE_TYPES.add(cls)
+    return cls
+
+
+@lru_cache(maxsize=None)
+def _library_types() -> frozenset:
+    """The number types of symengine, python-flint and mpmath (the classes themselves)."""
+    import flint
+    import mpmath
+    import symengine.lib.symengine_wrapper as sw
+    out = {t for t in vars(sw).values() if isinstance(t, type)}
+    out |= {flint.fmpq, flint.fmpz, flint.nmod, mpmath.mpf}
+    return frozenset(out)
+
+
+def check_element(field: Field, x: Any) -> Any:
+    """x as an entry of a matrix or a residual over ``field``: integers and fractions become
+    constants of the field; anything else must be a number of the engine's or its libraries'
+    own types, exactly (an object of a claim's own class that says it equals 0 is refused)."""
+    t = type(x)
+    if t is int or t is Fraction:
+        return field.const(x)
+    if t is Dual:
+        check_element(field, x.a)
+        check_element(field, x.b)
+        return x
+    if t in _ENGINE_TYPES:
+        return x
+    if t in _library_types():
+        return x
+    raise TypeError(f"a {t.__name__} is not a number of the scene (use s.q(num, den) for constants)")
+
+
 def _coordinates(field: Field) -> bool:
     return getattr(field, "coordinates", True)
 
@@ -133,10 +171,14 @@ class Mat:
     __slots__ = ("_a", "_field", "_tags", "_tracker", "_coords")
 
     def __init__(self, a: Any, field: Field, tags=(UNTYPED, UNTYPED), tracker: CoordinateTracker | None = None):
-        """A matrix from an array of entries: building an ℝⁿ-indexed matrix entrywise is a
+        """A matrix from a 2-d array of entries: building an ℝⁿ-indexed matrix entrywise is a
         (recorded) look at coordinates.  Engine code uses :meth:`_wrap`."""
-        self._init(np.array(a, dtype=object).reshape(np.shape(a)) if not isinstance(a, np.ndarray) else a.copy(),
-                   field, tags, tracker, indexed_by_Rn(tags))
+        arr = np.empty(np.shape(a), dtype=object)
+        if arr.ndim != 2:
+            raise ValueError("a matrix needs a 2-d array of entries")
+        for idx in np.ndindex(arr.shape):
+            arr[idx] = check_element(field, a[idx])
+        self._init(arr, field, tags, tracker, indexed_by_Rn(tags))
 
     def _init(self, a: np.ndarray, field: Field, tags, tracker, coords: bool) -> None:
         self._a = a
@@ -189,7 +231,9 @@ class Mat:
     @classmethod
     def from_rows(cls, rows: Sequence[Sequence[Any]], field: Field, tags=(UNTYPED, UNTYPED), tracker=None) -> "Mat":
         """A matrix from rows of scalars (a recorded look at coordinates when ℝⁿ-indexed)."""
-        M = cls._rows(rows, field, tags, tracker)
+        if any(len(row) != len(rows[0]) for row in rows):
+            raise ValueError("the rows of a matrix must have equal lengths")
+        M = cls._rows([[check_element(field, x) for x in row] for row in rows], field, tags, tracker)
         M._coords = indexed_by_Rn(M._tags)
         if M._coords and tracker is not None:
             tracker.touch("matrices built entrywise")

@@ -19,12 +19,13 @@ from typing import Any, Iterable, Mapping
 import symengine as se
 
 from ..fields import Dual
-from ..matrix import NeedsCoordinates  # noqa: F401 (one exception for every backend)
+from ..matrix import NeedsCoordinates, engine_number_type  # noqa: F401 (one exception for every backend)
 
 #: index type of scalars
 SCALAR = "1"
 
 
+@engine_number_type
 class Dimension(se.Dummy):
     """The symbol n or r: usable in formulas (tr I_r = r), not as an integer or in comparisons.
 
@@ -159,6 +160,7 @@ def merge_traces(a: Traces, b: Traces) -> Traces:
     return tuple(sorted(a + b, key=word_key))
 
 
+@engine_number_type
 class NCPoly:
     """A linear combination of (traces, word) terms of one type (row, col)."""
 
