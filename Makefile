@@ -32,6 +32,11 @@ test: venv
 bench: venv
 	$(BIN)/python bench/bench.py
 
+## mutate: mutation analysis of the catalog (small corruptions every method must catch); writes reports/mutation.{json,md}
+.PHONY: mutate
+mutate: venv
+	$(BIN)/stiefelsym mutate --report-dir reports
+
 ## report: re-render reports/verification.{md,tex} from reports/results.json
 report: venv
 	$(BIN)/stiefelsym report --results reports/results.json

@@ -5,6 +5,11 @@ dict describing the run) and nothing else, so a report can be re-rendered from
 ``results.json`` at any time.  ``meta`` keys are all optional: ``title``,
 ``command``, ``seed``, ``date``, ``seconds``, ``versions`` (name -> version),
 ``platform``, ``commit``, ``sections`` (section number -> section title).
+
+The mutation analysis (``mutation.json``, written by ``stiefelsym mutate``) is a
+record too: :func:`render_mutation_markdown` renders it on its own, and
+``render_markdown``/``render_latex`` add a section "Mutation analysis" when its
+parsed contents are passed as ``mutation=``.
 """
 from __future__ import annotations
 
@@ -233,10 +238,116 @@ def _witness_heading(w: Result) -> str:
     return f"Witness at size {w.size}, method {w.method}{seed}:"
 
 
-def _correction_status(rs: list[Result]) -> str:
-    if all(r.verdict in PASSING for r in rs):
-        return "verified"
-    return "rejected" if any(r.verdict == "fails" for r in rs) else "undecided"
+def _size_key(size: tuple[int, int]) -> tuple[int, int]:
+    return size
+
+
+def format_sizes(sizes: Iterable[tuple[int, int]], limit: int = 4) -> str:
+    """``(3,1), (4,2)``; a longer list as ``(1,1)…(5,5)``."""
+    ss = sorted(set(sizes), key=_size_key)
+    if len(ss) <= limit:
+        return ", ".join(f"({n},{r})" for n, r in ss)
+    return f"({ss[0][0]},{ss[0][1]})…({ss[-1][0]},{ss[-1][1]})"
+
+
+def planned_sizes(c: "ClaimResults") -> list[tuple[int, int]]:
+    """The sizes at which the printed claim was run (the sizes a correction must cover)."""
+    return sorted({(r.n, r.r) for r in c.printed if r.n is not None}, key=_size_key)
+
+
+def correction_summary(rs: list[Result], planned: Sequence[tuple[int, int]]) -> tuple[str, list[str]]:
+    """The status of a candidate correction, aggregated over sizes, and one phrase per method.
+
+    ``verified`` only when it passes at every planned size of the claim (at least one method
+    passing at each size) and fails nowhere; ``rejected`` when it fails somewhere; otherwise
+    ``not verified`` (some planned size was not covered, or no method decided)."""
+    planned = sorted(set(planned), key=_size_key)
+    by_method: dict[str, list[Result]] = {}
+    for r in rs:
+        by_method.setdefault(r.method, []).append(r)
+    phrases, passed_at, failed_at = [], set(), set()
+    free_proved = False
+    for m, mrs in by_method.items():
+        ok = sorted({(r.n, r.r) for r in mrs if r.n is not None and r.verdict in PASSING}, key=_size_key)
+        bad = sorted({(r.n, r.r) for r in mrs if r.n is not None and r.verdict == "fails"}, key=_size_key)
+        other: dict[str, set] = {}
+        for r in mrs:
+            if r.n is None:
+                if r.verdict == "proved":
+                    free_proved = True
+                    phrases.append(f"proved for all n, r by {m}")
+                elif r.verdict == "fails":
+                    failed_at.add(None)
+                    phrases.append(f"fails by {m}")
+                else:
+                    phrases.append(f"{r.verdict} by {m} (all n, r)")
+            elif r.verdict not in PASSING and r.verdict != "fails":
+                other.setdefault(r.verdict, set()).add((r.n, r.r))
+        passed_at.update(ok)
+        failed_at.update(bad)
+        bounds = [r.false_pass_bound for r in mrs if r.false_pass_bound is not None and r.verdict in PASSING]
+        bound = f" (p ≤ {format_bound(max(bounds))})" if bounds else ""
+        if ok:
+            if planned and set(ok) >= set(planned) and len(planned) > 1:
+                phrases.append(f"verified at all {len(planned)} sizes {format_sizes(ok)} by {m}{bound}")
+            elif planned and set(ok) >= set(planned):
+                phrases.append(f"verified at the claim's only size {format_sizes(ok)} by {m}{bound}")
+            else:
+                phrases.append(f"passes at {format_sizes(ok, 6)} by {m}{bound}")
+        if bad:
+            phrases.append(f"fails at {format_sizes(bad, 6)} by {m}")
+        for v, where in other.items():
+            phrases.append(f"{v} at {format_sizes(where, 6)} by {m}")
+    if failed_at:
+        status = "rejected"
+    elif planned and passed_at >= set(planned):
+        status = "verified"
+    elif not planned and free_proved:
+        status = "verified"
+    else:
+        status = "not verified"
+    missing = [s for s in planned if s not in passed_at and s not in failed_at]
+    if missing and status != "rejected":
+        phrases.append(f"not verified at {format_sizes(missing, 6)}")
+    return status, phrases
+
+
+def _correction_status(rs: list[Result], planned: Sequence[tuple[int, int]] = ()) -> str:
+    return correction_summary(rs, planned)[0]
+
+
+#: the order of authority of the methods for a check's detail (most rigorous first)
+METHOD_ORDER = ("exact", "rational", "modular", "auto", "float", "free")
+DIMENSION_STATUSES = ("rank", "rank-mismatch", "count", "count-mismatch")
+
+
+def dimension_checks(c: "ClaimResults") -> list[tuple[str, str, str, str, str]]:
+    """(check, size, method, status, detail) of the rank and count statements of a claim as
+    printed: at each size, from the most rigorous method that decided it.  The detail is the
+    CheckOutcome's (with its ``meaning`` in front when the record carries one)."""
+    best: dict[tuple[str, tuple], tuple[int, Result, Any]] = {}
+    order: list[tuple[str, tuple]] = []
+    for r in c.printed:
+        rank = METHOD_ORDER.index(r.method) if r.method in METHOD_ORDER else len(METHOD_ORDER)
+        seen = set()
+        for ch in r.checks:
+            if ch.status not in DIMENSION_STATUSES or ch.name in seen:
+                continue
+            seen.add(ch.name)
+            key = (ch.name, (r.n, r.r))
+            if key not in best:
+                order.append(key)
+            if key not in best or rank < best[key][0]:
+                best[key] = (rank, r, ch)
+    out = []
+    for name in dict.fromkeys(k[0] for k in order):
+        for key in sorted((k for k in order if k[0] == name), key=lambda k: (k[1][0] or 0, k[1][1] or 0)):
+            _, r, ch = best[key]
+            meaning = getattr(ch, "meaning", "") or ""
+            detail = ch.detail if not meaning or ch.detail.startswith(meaning) else f"{meaning}: {ch.detail}"
+            out.append((ch.name, r.size, r.method,
+                        "as printed" if ch.status in ("rank", "count") else "mismatch", detail))
+    return out
 
 
 # --------------------------------------------------------------------------- terminal
@@ -388,8 +499,10 @@ def _summary_rows(claims: list[ClaimResults]) -> tuple[list[str], list[tuple[Cla
     return ["all n, r"] + present, rows
 
 
-def render_markdown(results: Sequence[Result], meta: dict[str, Any] | None = None) -> str:
-    """The Markdown report: how to reproduce, vocabulary, summary, sections, errata."""
+def render_markdown(results: Sequence[Result], meta: dict[str, Any] | None = None,
+                    mutation: Any = None) -> str:
+    """The Markdown report: how to reproduce, vocabulary, summary, sections, errata, and the
+    mutation analysis when ``mutation`` (the parsed ``mutation.json``) is given."""
     meta = meta or {}
     claims = group_by_claim(results)
     unexpected = sum(not r.expected for r in results)
@@ -434,6 +547,8 @@ def render_markdown(results: Sequence[Result], meta: dict[str, Any] | None = Non
         out += ["Candidate corrections were also checked for claims that hold as printed:", ""]
         for c in others:
             out += [f"### `{c.id}` {_md_escape(labels(c.paper))}", ""] + _md_corrections(c)
+    if mutation:
+        out += _md_mutation_section(_mutation_data(mutation))
     return "\n".join(out).rstrip() + "\n"
 
 
@@ -447,6 +562,12 @@ def _md_claim(c: ClaimResults) -> list[str]:
     out += [f"Kind: {c.kind}, {_md_escape(KIND_MEANING.get(c.kind, ''))}.", ""]
     if c.printed:
         out += _md_results(c.printed)
+    dims = dimension_checks(c)
+    if dims:
+        out += ["Rank and count statements (at each size, from the most rigorous method that ran):", ""]
+        out += _md_table(["check", "size (n,r)", "method", "outcome", "what was computed"],
+                         [[_md_cell(name), _md_cell(size), m, st if st == "as printed" else f"**{st}**",
+                           _md_cell(detail)] for name, size, m, st, detail in dims], "lllll")
     how = c.how_obtained()
     if how:
         out += ["How the verdicts were obtained:", ""]
@@ -494,15 +615,16 @@ def _md_erratum(c: ClaimResults) -> list[str]:
 def _md_corrections(c: ClaimResults) -> list[str]:
     if not c.variants:
         return ["No candidate correction was checked.", ""]
+    planned = planned_sizes(c)
     rows = []
     for var, rs in c.variants.items():
-        status = _correction_status(rs)
-        runs = ", ".join(f"{r.size} {r.method}: {r.verdict}"
-                         + (f" (p ≤ {format_bound(r.false_pass_bound)})"
-                            if r.false_pass_bound is not None else "") for r in rs)
+        status, phrases = correction_summary(rs, planned)
         rows.append([_md_cell(var), f"**{status}**" if status == "verified" else status,
-                     _md_cell(runs)])
-    return ["Candidate corrections:", ""] + _md_table(["correction", "status", "runs"], rows, "lll")
+                     _md_cell("; ".join(phrases))])
+    where = (f" The claim as printed was run at {len(planned)} size{'s' * (len(planned) != 1)} "
+             f"{format_sizes(planned)}; a correction is verified only if it passes at every one of them "
+             "and fails nowhere.") if planned else ""
+    return [f"Candidate corrections:{where}", ""] + _md_table(["correction", "status", "runs"], rows, "lll")
 
 
 # --------------------------------------------------------------------------- LaTeX
@@ -571,8 +693,9 @@ def _tex_items(items: list[str]) -> list[str]:
             + [r"\item " + x for x in items] + [r"\end{itemize}"])
 
 
-def render_latex(results: Sequence[Result], meta: dict[str, Any] | None = None) -> str:
-    """A complete ``article`` document (pdflatex, Debian's texlive-latex-base/recommended)."""
+def render_latex(results: Sequence[Result], meta: dict[str, Any] | None = None, mutation: Any = None) -> str:
+    """A complete ``article`` document (pdflatex, Debian's texlive-latex-base/recommended); with
+    ``mutation`` (the parsed ``mutation.json``) a section "Mutation analysis" at the end."""
     meta = meta or {}
     claims = group_by_claim(results)
     unexpected = sum(not r.expected for r in results)
@@ -629,6 +752,8 @@ def render_latex(results: Sequence[Result], meta: dict[str, Any] | None = None) 
         out += ["Candidate corrections were also checked for claims that hold as printed:", ""]
         for c in others:
             out += [_tex_claim_heading(c)] + _tex_corrections(c)
+    if mutation:
+        out += _tex_mutation_section(_mutation_data(mutation))
     return "\n".join(out + [r"\end{document}", ""])
 
 
@@ -645,6 +770,13 @@ def _tex_claim(c: ClaimResults) -> list[str]:
     out += [tex_escape(f"Kind: {c.kind}, {KIND_MEANING.get(c.kind, '')}."), ""]
     if c.printed:
         out += _tex_results(c.printed)
+    dims = dimension_checks(c)
+    if dims:
+        out += [tex_escape("Rank and count statements (at each size, from the most rigorous method that ran):")]
+        out += _tex_items([tex_escape(f"{name}, {size} {m}: ")
+                           + (st if st == "as printed" else rf"\textbf{{{st}}}")
+                           + (". " + tex_escape(short(detail, 400)) if detail else "")
+                           for name, size, m, st, detail in dims])
     how = c.how_obtained()
     if how:
         out += ["How the verdicts were obtained:"]
@@ -703,12 +835,253 @@ def _tex_erratum(c: ClaimResults) -> list[str]:
 def _tex_corrections(c: ClaimResults) -> list[str]:
     if not c.variants:
         return ["No candidate correction was checked.", ""]
+    planned = planned_sizes(c)
     items = []
     for var, rs in c.variants.items():
-        status = _correction_status(rs)
-        runs = "; ".join(f"{r.size} {r.method}: {r.verdict}" for r in rs)
-        bounds = [r.false_pass_bound for r in rs if r.false_pass_bound is not None]
-        bound = f" ($p\\le$ {_tex_bound(max(bounds))})" if bounds else ""
-        items.append(tex_text(var) + " --- " + (r"\textbf{verified}" if status == "verified"
-                                                else status) + ". " + tex_escape(runs) + bound)
-    return ["Candidate corrections:"] + _tex_items(items)
+        status, phrases = correction_summary(rs, planned)
+        items.append(tex_text(var) + " --- " + (r"\textbf{verified}" if status == "verified" else status)
+                     + ". " + tex_escape("; ".join(phrases) + "."))
+    intro = "Candidate corrections:"
+    if planned:
+        intro += tex_escape(f" the claim as printed was run at {len(planned)} size{'s' * (len(planned) != 1)} "
+                            f"{format_sizes(planned)}; a correction is verified only if it passes at every "
+                            "one of them and fails nowhere.")
+    return [intro] + _tex_items(items)
+
+
+# --------------------------------------------------------------------------- mutation analysis
+
+MUTATION_EXPLANATION = (
+    "Each claim's source is corrupted in one small place (a mutant): the sign of a term flipped, "
+    "the operands of a product or commutator swapped, a factor transposed, a term dropped, a "
+    "scene letter replaced by another of the same kind, a rational coefficient changed.  Every "
+    "mutant runs with every method at a few sizes, and with the dimension-free method; the claim "
+    "as printed runs too, and a (size, method) where it does not pass is not counted.  A method "
+    "kills a mutant when it does not pass it at some counted size: fails (refuted with a witness), "
+    "error (for instance ill-typed: the engine refused the expression), or inconclusive/undecided "
+    "(the method could not decide; not a refutation).  A mutant that passes everywhere is "
+    "equivalent: a true statement.  A method survives a mutant when it passes it at a size where "
+    "another method refutes it; the dimension-free method survives a mutant when it proves one that "
+    "is not equivalent.  Survivors are soundness or sensitivity problems.  Kill rate = killed / "
+    "(mutants - equivalent).")
+MUTATION_COLUMNS = ("mutants", "killed", "fails", "error", "other", "survived", "equivalent",
+                    "unresolved", "missed", "kill rate")
+
+
+def _mutation_data(mutation: Any) -> dict[str, Any]:
+    """The parsed mutation.json (a MutationReport is accepted and turned into its record)."""
+    if hasattr(mutation, "to_json"):
+        mutation = mutation.to_json()
+    return mutation or {}
+
+
+def kill_rate(row: dict[str, Any]) -> str:
+    """killed / (mutants - equivalent), or "–" when nothing could be killed."""
+    denom = row.get("total", 0) - row.get("equivalent", 0)
+    if denom <= 0 or row.get("baseline_passes") is False:
+        return "–"
+    return f"{100 * row.get('killed', 0) / denom:.0f}%"
+
+
+def _mutation_cells(row: dict[str, Any]) -> list[str]:
+    other = row.get("inconclusive", 0) + row.get("undecided", 0)
+    vals = [row.get("total", 0), row.get("killed", 0), row.get("fails", 0), row.get("error", 0), other,
+            row.get("survived", 0), row.get("equivalent", 0), row.get("unresolved", 0), row.get("missed", 0)]
+    return [str(v) for v in vals] + [kill_rate(row)]
+
+
+def _mutants(data: dict[str, Any], classification: str | None = None, survivors: bool = False) -> list[dict]:
+    out = []
+    for c in data.get("claims", []):
+        for o in c.get("mutants", []):
+            if survivors and o.get("survived"):
+                out.append(o)
+            elif classification is not None and o.get("classification") == classification:
+                out.append(o)
+    return out
+
+
+def _mutant_verdicts(o: dict[str, Any]) -> str:
+    per: dict[str, list[str]] = {}
+    for c in o.get("cells", []):
+        size = "" if c.get("n") is None else f" ({c['n']},{c['r']})"
+        per.setdefault(c["method"], []).append(f"{c['verdict']}{size}")
+    return "; ".join(f"{m}: {', '.join(v)}" for m, v in per.items())
+
+
+def _mutant_label(o: dict[str, Any]) -> str:
+    return f"{o.get('claim')}#{o.get('index')}"
+
+
+def render_mutation_summary(mutation: Any) -> str:
+    """The kill-rate table for the terminal (totals per method, then per claim and method)."""
+    data = _mutation_data(mutation)
+    rows = [dict(r, claim="all claims") for r in data.get("totals", [])] + list(data.get("table", []))
+    if not rows:
+        return "mutation: nothing was run\n"
+    head = ["claim", "method"] + list(MUTATION_COLUMNS)
+    body = [[r.get("claim", ""), r.get("method", "")] + _mutation_cells(r) for r in rows]
+    widths = [max(len(str(x)) for x in col) for col in zip(head, *body)]
+    fmt = lambda cells: "  " + "  ".join(str(c).ljust(w) if i < 2 else str(c).rjust(w)
+                                         for i, (c, w) in enumerate(zip(cells, widths)))
+    surv = _mutants(data, survivors=True)
+    lines = [f"mutation: {sum(len(c.get('mutants', [])) for c in data.get('claims', []))} mutants of "
+             f"{len(data.get('claims', []))} claims; {len(surv)} survivor{'s' * (len(surv) != 1)}, "
+             f"{len(_mutants(data, 'equivalent'))} equivalent", fmt(head)] + [fmt(b) for b in body]
+    if surv:
+        lines.append("survivors (a method passed a mutant another method refuted, or free proved it):")
+        for o in surv:
+            lines.append(f"  {_mutant_label(o)} survived {', '.join(o['survived'])}: {o.get('description')}")
+            lines.append(f"    {_mutant_verdicts(o)}")
+    return "\n".join(lines) + "\n"
+
+
+def _md_mutation_tables(data: dict[str, Any]) -> list[str]:
+    head = list(MUTATION_COLUMNS)
+    out = ["Per method, over all claims:", ""]
+    out += _md_table(["method"] + head, [[r["method"]] + _mutation_cells(r) for r in data.get("totals", [])],
+                     "l" + "r" * len(head))
+    out += ["Per claim and method (the verdicts of the claim as printed in the third column):", ""]
+    out += _md_table(["claim", "method", "as printed"] + head,
+                     [[f"`{r['claim']}`", r["method"], _md_cell(r.get("baseline") or "–")] + _mutation_cells(r)
+                      for r in data.get("table", [])], "lll" + "r" * len(head))
+    return out
+
+
+def _md_described(text: str) -> str:
+    """A mutant's description: `code` spans kept as code, the words between them escaped."""
+    parts = str(text).split("`")
+    if len(parts) % 2 == 0:   # unbalanced backticks: all text
+        return _md_escape(text)
+    return "".join(_md_code(p) if i % 2 else _md_escape(p) for i, p in enumerate(parts))
+
+
+def _md_mutant_item(o: dict[str, Any], verdicts: bool = True) -> str:
+    text = f"- `{_mutant_label(o)}` {_md_described(o.get('description', ''))}"
+    if o.get("survived"):
+        text += f": **survived {', '.join(o['survived'])}**"
+    if verdicts:
+        text += f" ({_md_escape(_mutant_verdicts(o))})"
+    return text
+
+
+def _md_mutation_body(data: dict[str, Any], full: bool) -> list[str]:
+    out = _md_mutation_tables(data)
+    surv = _mutants(data, survivors=True)
+    if surv:
+        out += [f"**{len(surv)} survivor{'s' * (len(surv) != 1)}**: a method passed a mutant that another "
+                "method refuted at the same size, or the dimension-free method proved a mutant that is not "
+                "equivalent.", ""]
+        out += [_md_mutant_item(o) for o in surv] + [""]
+        if full:
+            for o in surv:
+                msgs = [c for c in o.get("cells", []) if c.get("message") and c["verdict"] in ("fails", "error")]
+                if msgs:
+                    c = msgs[0]
+                    size = "all n, r" if c.get("n") is None else f"({c['n']},{c['r']})"
+                    out += [f"  - `{_mutant_label(o)}` {size} {c['method']} {c['verdict']}: "
+                            f"{_md_cell(short(c['message'], 200))}"]
+            out.append("")
+    else:
+        out += ["No survivor: every mutant that some method refuted was refuted by every method that ran at "
+                "that size, and the dimension-free method proved no mutant that is not equivalent.", ""]
+    equiv = _mutants(data, "equivalent")
+    unresolved = _mutants(data, "unresolved")
+    if full or len(equiv) <= 30:
+        out += [f"Equivalent mutants ({len(equiv)}): true statements, passed by every method at every size.", ""]
+        out += [_md_mutant_item(o, verdicts=False) for o in equiv] + [""] if equiv else []
+    else:
+        out += [f"{len(equiv)} equivalent mutants (true statements), listed in `mutation.md`.", ""]
+    if unresolved:
+        out += [f"Unresolved mutants ({len(unresolved)}): killed only by inconclusive or undecided verdicts.", ""]
+        out += [_md_mutant_item(o) for o in unresolved] + [""]
+    skipped = [c for c in data.get("claims", []) if c.get("skipped")]
+    if skipped:
+        out += ["Claims not mutated:", ""]
+        out += [f"- `{c['claim']}`: {_md_escape(c['skipped'])}" for c in skipped] + [""]
+    return out
+
+
+def _mutation_facts(data: dict[str, Any]) -> list[str]:
+    """Plain-text sentences on the run (the command is rendered apart, as code)."""
+    meta = data.get("meta") or {}
+    run = [f"seed {meta['seed']}" if meta.get("seed") is not None else "",
+           f"on {meta['date']}" if meta.get("date") else "",
+           f"in {format_seconds(meta['seconds'])}" if meta.get("seconds") is not None else "",
+           f"at commit {meta['commit']}" if meta.get("commit") else ""]
+    return ["Run with " + ", ".join(x for x in run if x) + "."] if any(run) else []
+
+
+def _md_mutation_facts(data: dict[str, Any]) -> list[str]:
+    command = (data.get("meta") or {}).get("command")
+    return ([f"Command: {_md_code(command)}."] if command else []) + \
+        [_md_escape(f) for f in _mutation_facts(data)]
+
+
+def render_mutation_markdown(mutation: Any) -> str:
+    """``mutation.md``: the kill-rate tables, the survivors, the equivalent mutants (all of them)."""
+    data = _mutation_data(mutation)
+    meta = data.get("meta") or {}
+    out = ["# Mutation analysis", "",
+           "Generated by `stiefelsym mutate` from `mutation.json`; do not edit by hand.", ""]
+    facts = _md_mutation_facts(data)
+    out += facts + ([""] if facts else [])
+    out += [_md_escape(MUTATION_EXPLANATION), ""]
+    ops = meta.get("operators") or []
+    if ops:
+        out += ["The corruptions:", ""] + [f"- {o['name']}: {_md_escape(o['description'])}" for o in ops] + [""]
+    sizes = [(c["claim"], c.get("sizes", [])) for c in data.get("claims", []) if not c.get("skipped")]
+    if sizes:
+        distinct = {tuple(map(tuple, s)) for _, s in sizes}
+        if len(distinct) == 1:
+            out += [f"Sizes: {format_sizes([tuple(x) for x in sizes[0][1]], 6) or 'none'} (every claim).", ""]
+        else:
+            out += ["Sizes: " + "; ".join(f"`{cid}` {format_sizes([tuple(x) for x in s], 6) or 'none'}"
+                                          for cid, s in sizes) + ".", ""]
+    return "\n".join(out + _md_mutation_body(data, full=True)).rstrip() + "\n"
+
+
+def _md_mutation_section(data: dict[str, Any]) -> list[str]:
+    out = ["## Mutation analysis", "",
+           "From `mutation.json` (`stiefelsym mutate`; in full in `mutation.md`)."]
+    out += _md_mutation_facts(data) + [""]
+    out += [_md_escape(MUTATION_EXPLANATION), ""]
+    return out + _md_mutation_body(data, full=False)
+
+
+def _tex_mutation_section(data: dict[str, Any]) -> list[str]:
+    head = list(MUTATION_COLUMNS)
+    out = [r"\section*{Mutation analysis}",
+           tex_escape("From mutation.json (stiefelsym mutate; in full in mutation.md). ")
+           + (("Command: " + _tt((data.get("meta") or {})["command"]) + ". ")
+              if (data.get("meta") or {}).get("command") else "")
+           + " ".join(tex_escape(f) for f in _mutation_facts(data)), "",
+           tex_escape(MUTATION_EXPLANATION), "",
+           r"{\small\setlength{\tabcolsep}{3pt}",
+           r"\begin{longtable}{@{}P{4.2cm}l" + "r" * len(head) + "@{}}", r"\toprule",
+           " & ".join(["claim", "method"] + [r"\rotatebox{90}{" + tex_escape(h) + "}" for h in head]) + r"\\",
+           r"\midrule", r"\endhead"]
+    rows = [dict(r, claim="all claims") for r in data.get("totals", [])] + list(data.get("table", []))
+    for i, r in enumerate(rows):
+        name = r"\textit{all claims}" if r["claim"] == "all claims" else r"\texttt{" + tex_escape(r["claim"]) + "}"
+        out.append(" & ".join([name, tex_escape(r["method"])] + [tex_escape(x) for x in _mutation_cells(r)]) + r"\\")
+        if r["claim"] == "all claims" and (i + 1 == len(rows) or rows[i + 1]["claim"] != "all claims"):
+            out.append(r"\midrule")
+    out += [r"\bottomrule", r"\end{longtable}", "}", ""]
+    surv = _mutants(data, survivors=True)
+    if surv:
+        out.append(tex_escape(f"{len(surv)} survivors: a method passed a mutant that another method refuted "
+                              "at the same size, or the dimension-free method proved a mutant that is not "
+                              "equivalent."))
+        out += _tex_items([r"\texttt{" + tex_escape(_mutant_label(o)) + "} " + tex_escape(o.get("description", ""))
+                           + r": \textbf{survived " + tex_escape(", ".join(o["survived"])) + "} ("
+                           + tex_escape(short(_mutant_verdicts(o), 300)) + ")" for o in surv])
+    else:
+        out.append("No survivor.")
+    equiv = _mutants(data, "equivalent")
+    out += ["", tex_escape(f"{len(equiv)} equivalent mutants (true statements)" + (":" if equiv else "."))]
+    out += _tex_items([r"\texttt{" + tex_escape(_mutant_label(o)) + "} " + tex_escape(o.get("description", ""))
+                       for o in equiv[:40]])
+    if len(equiv) > 40:
+        out.append(tex_escape(f"… and {len(equiv) - 40} more (in mutation.md)."))
+    return out + [""]

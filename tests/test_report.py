@@ -9,7 +9,7 @@ import xml.etree.ElementTree as ET
 import pytest
 
 from stiefelsym.report import (case_name, render_junit, render_latex, render_markdown,
-                               render_summary)
+                               render_mutation_markdown, render_summary)
 from stiefelsym.results import CheckOutcome, Result, dump_results, load_results
 
 NASTY = r"50% of #cases & ~x^2 {b} \foo <a|b> under_score, Božidar Jovanović, dΦ/dt = [XXᵀ, A] ≤ ½"
@@ -139,9 +139,10 @@ def test_errata_lists_failing_claim_with_witness_and_corrections(results):
     assert "- point: `a_1 = 1/2; S_12 = -3; W#1 = x_1`" in errata
     assert "- check dL/dt: nonzero, entry (1, 2) = 3/7" in errata
     assert "- rerun: `stiefelsym verify neumann-lax --size 3,1 --method rational --seed 0`" in errata
-    assert r"| sign of $\lambda A$ flipped | **verified** | (3,1) rational: checked (p ≤ 2.9e-34), " \
-           "(4,2) rational: checked (p ≤ 2.9e-34) |" in errata
-    assert "| M transposed | rejected | (3,1) rational: fails |" in errata
+    assert "the claim as printed was run at 2 sizes (3,1), (4,2)" in errata.lower()
+    assert r"| sign of $\lambda A$ flipped | **verified** | verified at all 2 sizes (3,1), (4,2) by rational " \
+           "(p ≤ 2.9e-34) |" in errata
+    assert "| M transposed | rejected | fails at (3,1) by rational |" in errata
     for cid in CLAIMS[:-1]:  # only the failing claim is an erratum
         assert f"### `{cid}`" not in errata
 
@@ -258,3 +259,163 @@ def test_latex_report_of_real_catalog_runs_compiles(tmp_path):
                               capture_output=True, text=True, timeout=120, stdin=subprocess.DEVNULL)
         assert proc.returncode == 0, proc.stdout[-3000:]
     assert "Undefined control sequence" not in (tmp_path / "verification.log").read_text(errors="replace")
+
+
+# --------------------------------------------------------------------------- corrections across sizes
+
+from stiefelsym.report import correction_summary, dimension_checks, group_by_claim  # noqa: E402
+
+ALL12 = [(n, r) for n in range(1, 6) for r in range(1, n + 1)][:12] + []
+
+
+def _corr(n, r, method, verdict, variant="fix"):
+    return result("claim", n, r, method, verdict, variant=variant, expected=verdict in ("proved", "checked"))
+
+
+def test_correction_verified_at_every_planned_size_is_said_so():
+    sizes = [(n, r) for n in range(1, 6) for r in range(1, n + 1) if (n, r) != (5, 1)][:12]
+    rs = [_corr(n, r, "exact", "proved") for n, r in sizes]
+    status, phrases = correction_summary(rs, sizes)
+    assert status == "verified"
+    assert phrases == ["verified at all 12 sizes (1,1)…(5,3) by exact"]
+
+
+def test_correction_verified_at_one_size_of_two_is_not_verified():
+    status, phrases = correction_summary([_corr(3, 1, "rational", "checked")], [(3, 1), (4, 2)])
+    assert status == "not verified"
+    assert "passes at (3,1) by rational (p ≤ 2.9e-34)" in phrases
+    assert "not verified at (4,2)" in phrases
+
+
+def test_correction_failing_somewhere_is_rejected_with_the_sizes():
+    rs = [_corr(3, 1, "exact", "proved"), _corr(4, 2, "exact", "fails"), _corr(4, 2, "modular", "checked")]
+    status, phrases = correction_summary(rs, [(3, 1), (4, 2)])
+    assert status == "rejected"
+    assert "fails at (4,2) by exact" in phrases
+
+
+def test_correction_at_the_claims_only_size():
+    status, phrases = correction_summary([_corr(4, 2, "exact", "proved")], [(4, 2)])
+    assert status == "verified" and phrases == ["verified at the claim's only size (4,2) by exact"]
+
+
+def test_errata_table_aggregates_corrections_across_sizes():
+    sizes = [(2, 1), (3, 1), (3, 2), (4, 2), (5, 2)]
+    rs = [result("orbit", n, r, "exact", "fails", section="2") for n, r in sizes]
+    rs += [_corr(n, r, "exact", "proved", variant="n <= 2r + 2") for n, r in sizes]
+    rs += [_corr(n, r, "exact", "proved" if n < 4 else "fails", variant="n <= 2r") for n, r in sizes]
+    for r in rs:
+        r.claim, r.section = "orbit", "2"
+    md = render_markdown(rs)
+    assert "| n \\<= 2r + 2 | **verified** | verified at all 5 sizes (2,1)…(5,2) by exact |" in md
+    assert "| n \\<= 2r | rejected | passes at (2,1), (3,1), (3,2) by exact; fails at (4,2), (5,2) by exact |" in md
+    tex = render_latex(rs)
+    assert r"\textbf{verified}. verified at all 5 sizes (2,1)\ldots{}(5,2) by exact." in tex
+
+
+# --------------------------------------------------------------------------- rank and count statements
+
+def _rank_results():
+    checks = [CheckOutcome("rank ad_Phi", "rank", "rank over the function field Q(chart parameters) = 5 "
+                                                  "(paper: 5); two-sided: exact rank of the generic matrix"),
+              CheckOutcome("regular", "count-mismatch", "the generic orbit is regular (1) or singular (0): "
+                                                        "1 (paper: 0)")]
+    point = [CheckOutcome("rank ad_Phi", "rank", "rank 5 at this exact point: generic rank >= 5 (certain)"),
+             CheckOutcome("rank ad_Phi", "rank", "rank 5 at this exact point (second trial)")]
+    return [result("orbit", 4, 1, "exact", "fails", section="2", checks=checks, expected=True),
+            result("orbit", 4, 1, "rational", "checked", section="2", checks=point),
+            result("orbit", 3, 1, "rational", "checked", section="2", checks=point)]
+
+
+def test_rank_and_count_details_are_shown_from_the_most_rigorous_method():
+    c = group_by_claim(_rank_results())[0]
+    rows = dimension_checks(c)
+    assert [(name, size, m) for name, size, m, _, _ in rows] == [
+        ("rank ad_Phi", "(3,1)", "rational"), ("rank ad_Phi", "(4,1)", "exact"), ("regular", "(4,1)", "exact")]
+    md = render_markdown(_rank_results())
+    assert "Rank and count statements" in md
+    assert "| rank ad\\_Phi | (4,1) | exact | as printed | rank over the function field Q(chart parameters) = 5" in md
+    assert "| regular | (4,1) | exact | **mismatch** | the generic orbit is regular (1) or singular (0): 1 (paper: 0) |" in md
+    assert "rank 5 at this exact point: generic rank \\>= 5 (certain)" in md
+    tex = render_latex(_rank_results())
+    assert r"regular, (4,1) exact: \textbf{mismatch}. the generic orbit is regular (1) or singular (0)" in tex
+
+
+def test_a_meaning_carried_by_the_record_is_shown_in_front():
+    r = result("orbit", 4, 1, "exact", "proved", section="2",
+               checks=[CheckOutcome("rank ad_Phi", "rank", "rank ... = 5 (paper: 5)")])
+    r.checks[0].meaning = "2l"   # a record that carries the Rank's meaning
+    assert "| rank ad\\_Phi | (4,1) | exact | as printed | 2l: rank ... = 5 (paper: 5) |" in render_markdown([r])
+
+
+# --------------------------------------------------------------------------- mutation analysis
+
+def _mutation() -> dict:
+    cell = lambda n, r, m, v, msg="": {"n": n, "r": r, "method": m, "verdict": v, "seconds": 0.1, "seed": 0,
+                                       "message": msg}
+    base = {"claim": "prep", "index": None, "description": "the claim as printed", "lineno": None,
+            "operator": "", "source": "", "classification": "baseline", "killed_by": {}, "survived": [],
+            "cells": [cell(4, 2, "rational", "checked"), cell(None, None, "free", "proved")]}
+    killed = {"claim": "prep", "index": 0, "description": "line 12: swap the operands of @ in `s.X @ s.P.T`",
+              "lineno": 12, "operator": "swap", "source": "s.P.T @ s.X", "classification": "killed",
+              "killed_by": {"rational": "error", "free": "undecided"}, "survived": [],
+              "cells": [cell(4, 2, "rational", "error", "TypeError: R^r x R^n @ R^n x R^r"),
+                        cell(None, None, "free", "undecided")]}
+    survivor = {"claim": "prep", "index": 1, "description": "line 13: flip the sign of the term `b_1` in `a*b | c`",
+                "lineno": 13, "operator": "sign", "source": "a - b", "classification": "survivor",
+                "killed_by": {"exact": "fails"}, "survived": ["float", "free"],
+                "cells": [cell(4, 2, "exact", "fails", "entry (1,2) = 3/7 & 100% #"),
+                          cell(4, 2, "float", "numeric"), cell(None, None, "free", "proved")]}
+    equiv = {"claim": "prep", "index": 2, "description": "line 14: remove the transpose in `Lam.T` in `Lam - Lam.T`",
+             "lineno": 14, "operator": "transpose", "source": "Lam", "classification": "equivalent",
+             "killed_by": {}, "survived": [], "cells": [cell(4, 2, "rational", "checked")]}
+    row = lambda m, **kw: {"claim": "prep", "method": m, "total": 3, "killed": 1, "fails": 0, "error": 1,
+                           "inconclusive": 0, "undecided": 0, "survived": 1, "equivalent": 1, "unresolved": 0,
+                           "missed": 0, "baseline": "checked", "baseline_passes": True, **kw}
+    return {"schema": 1, "meta": {"command": "stiefelsym mutate prep --seed 0", "seed": 0, "seconds": 12.5,
+                                  "operators": [{"name": "sign", "description": "flip a sign (a + b <-> a - b)"}]},
+            "claims": [{"claim": "prep", "paper": ["prep"], "section": "5", "kind": "id", "sizes": [[4, 2]],
+                        "methods": ["rational", "free"], "mutant_count": 3, "baseline": base,
+                        "mutants": [killed, survivor, equiv], "skipped": "", "seconds": 1.0},
+                       {"claim": "wrong", "paper": ["w"], "section": "5", "kind": "id", "sizes": [],
+                        "methods": ["rational"], "mutant_count": 0, "baseline": None, "mutants": [],
+                        "skipped": "the printed statement fails at every size", "seconds": 0.0}],
+            "table": [row("rational"), row("free", baseline="undecided", baseline_passes=False, killed=0)],
+            "totals": [dict(row("rational"), claim="all claims")]}
+
+
+def test_mutation_section_in_markdown(results):
+    md = render_markdown(results, {"seed": 0}, mutation=_mutation())
+    assert re.findall(r"^## (.*)$", md, re.M)[-1] == "Mutation analysis"
+    section = md[md.index("## Mutation analysis"):]
+    assert "| `prep` | rational | checked | 3 | 1 | 0 | 1 | 0 | 1 | 1 | 0 | 0 | 50% |" in section
+    assert "| `prep` | free | undecided | 3 | 0 | 0 | 1 | 0 | 1 | 1 | 0 | 0 | – |" in section
+    assert "**1 survivor**" in section and "**survived float, free**" in section
+    assert "`prep#2` line 14: remove the transpose in `Lam.T` in `Lam - Lam.T`" in section
+    assert "Command: `stiefelsym mutate prep --seed 0`." in section
+    assert "## Mutation analysis" not in render_markdown(results)
+
+
+def test_mutation_markdown_document_lists_everything():
+    md = render_mutation_markdown(_mutation())
+    assert md.startswith("# Mutation analysis")
+    assert "- sign: flip a sign (a + b \\<-\\> a - b)" in md
+    assert "`prep#0`" not in md, "killed mutants are in mutation.json only"
+    assert "- `prep#1` line 13: flip the sign of the term `b_1` in `a*b | c`: **survived float, free**" in md
+    assert "`wrong`: the printed statement fails at every size" in md
+    assert "entry (1,2) = 3/7 & 100% #" in md
+
+
+def test_mutation_section_in_latex_compiles(results, tmp_path):
+    tex = render_latex(results, {"seed": 0}, mutation=_mutation())
+    assert r"\section*{Mutation analysis}" in tex and r"\textbf{survived float, free}" in tex
+    if shutil.which("pdflatex") is None:
+        pytest.skip("pdflatex is not installed (Debian: texlive-latex-base texlive-latex-recommended)")
+    (tmp_path / "verification.tex").write_text(tex, encoding="utf-8")
+    for _ in range(2):
+        proc = subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error",
+                               "-no-shell-escape", "verification.tex"], cwd=tmp_path,
+                              capture_output=True, text=True, timeout=120, stdin=subprocess.DEVNULL)
+        assert proc.returncode == 0, proc.stdout[-3000:]
+    log = (tmp_path / "verification.log").read_text(errors="replace")
+    assert "Undefined control sequence" not in log and "Missing character" not in log

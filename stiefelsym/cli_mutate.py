@@ -1,0 +1,244 @@
+"""``stiefelsym mutate``: the mutation analysis of the catalog (or of named claims).
+
+The command object :data:`mutate` is added to the ``stiefelsym`` group with
+``main.add_command(mutate)``; it also runs on its own (its errors are then one
+line on stderr as well).
+
+Exit status: 0 no survivor; 1 some mutant that is not equivalent survived a
+method or was proved by ``free``; 2 bad input (one line on stderr); 130
+interrupted (no report is written).
+"""
+from __future__ import annotations
+
+import os
+import platform
+import re
+import shlex
+import subprocess
+import sys
+import time
+from datetime import datetime, timezone
+from pathlib import Path
+from typing import Any, Sequence
+
+import click
+
+from .claims import CatalogError, Claim, Registry, Size, load_catalog, load_claims_file
+from .results import write_atomic
+
+EXIT_OK, EXIT_SURVIVORS, EXIT_INPUT, EXIT_INTERRUPTED = 0, 1, 2, 130
+DEFAULT_REPORT_DIR = Path("reports")
+REPORT_FILES = ("mutation.json", "mutation.md")
+
+
+class MutateInputError(click.ClickException):
+    """Bad input: one line on stderr, exit status 2."""
+
+    exit_code = EXIT_INPUT
+
+
+class _Command(click.Command):
+    """Run standalone, every error is one line on stderr with a documented exit status (inside
+    the ``stiefelsym`` group, the group does the same)."""
+
+    def main(self, args: Sequence[str] | None = None, prog_name: str | None = None,
+             complete_var: str | None = None, standalone_mode: bool = True, **extra: Any) -> Any:
+        try:
+            rv = super().main(args, prog_name or "stiefelsym mutate", complete_var,
+                              standalone_mode=False, **extra)
+            code = rv if isinstance(rv, int) else EXIT_OK
+        except click.ClickException as exc:
+            hint = " (see 'stiefelsym mutate --help')" if isinstance(exc, click.UsageError) else ""
+            click.echo(f"stiefelsym mutate: error: {' '.join(exc.format_message().split())}{hint}", err=True)
+            code = EXIT_INPUT
+        except (click.Abort, KeyboardInterrupt):
+            click.echo("stiefelsym mutate: interrupted", err=True)
+            code = EXIT_INTERRUPTED
+        if standalone_mode:
+            sys.exit(code)
+        return code
+
+
+def _parse_size(text: str) -> Size:
+    m = re.fullmatch(r"\s*(?:n\s*=\s*)?([+-]?\d+)\s*,\s*(?:r\s*=\s*)?([+-]?\d+)\s*", text)
+    if not m:
+        raise MutateInputError(f"--size {text!r} is not a size; write n,r with integers 1 <= r <= n, e.g. 4,2")
+    n, r = int(m.group(1)), int(m.group(2))
+    if not 1 <= r <= n:
+        raise MutateInputError(f"--size {text!r}: the Stiefel variety V(n,r) needs 1 <= r <= n")
+    return Size(n, r)
+
+
+def _registry(claims_file: str | None) -> Registry:
+    """The catalog, or the user's claims followed by the catalog's (the user's shadow the catalog's)."""
+    try:
+        catalog = load_catalog("proofs")
+    except (ImportError, CatalogError, ValueError) as exc:
+        if claims_file is None:
+            raise MutateInputError(f"cannot load the catalog of claims: {exc}") from None
+        catalog = Registry()
+    if claims_file is None:
+        return catalog
+    try:
+        user = load_claims_file(claims_file)
+    except CatalogError as exc:
+        raise MutateInputError(str(exc)) from None
+    merged = Registry()
+    for c in user:
+        merged.add(c)
+    for c in catalog:
+        if c.id not in merged:
+            merged.add(c)
+    return merged
+
+
+def _check_report_dir(d: Path) -> None:
+    p = Path(os.path.abspath(d))
+    while not p.exists():
+        p = p.parent
+    if not p.is_dir() or not os.access(p, os.W_OK):
+        raise MutateInputError(f"cannot write reports to {d}: {p} is not a writable directory")
+    for name in REPORT_FILES:
+        if (Path(d) / name).is_dir():
+            raise MutateInputError(f"cannot write reports to {d}: {Path(d) / name} is a directory")
+
+
+def _commit() -> str | None:
+    try:
+        out = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True, text=True,
+                             timeout=5, cwd=Path(__file__).resolve().parent, stdin=subprocess.DEVNULL)
+    except (OSError, subprocess.SubprocessError):
+        return None
+    return out.stdout.strip() or None if out.returncode == 0 else None
+
+
+def _command(ids: Sequence[str], sizes: Sequence[str], methods: Sequence[str], seed: int,
+             claims_file: str | None, report_dir: Path | None, limit: int | None,
+             only: Sequence[int]) -> str:
+    parts = ["stiefelsym", "mutate", *ids]
+    for s in sizes:
+        parts += ["--size", s.replace(" ", "")]
+    for m in methods:
+        parts += ["--method", m]
+    parts += ["--seed", str(seed)]
+    if claims_file:
+        parts += ["--claims", claims_file]
+    if limit is not None:
+        parts += ["--limit", str(limit)]
+    for k in only:
+        parts += ["--mutant", str(k)]
+    if report_dir is not None:
+        parts += ["--report-dir", str(report_dir)]
+    return " ".join(shlex.quote(p) for p in parts)
+
+
+@click.command("mutate", cls=_Command, short_help="Mutation analysis: do the methods catch small corruptions?")
+@click.argument("ids", nargs=-1, metavar="[CLAIM]...")
+@click.option("--size", "sizes", multiple=True, metavar="n,r",
+              help="Problem size, repeatable (default: up to three sizes of each claim with n <= 4, "
+                   "distinct r, one with 1 < r < n).")
+@click.option("--method", "methods", multiple=True, metavar="METHOD",
+              help="exact, rational, modular, float or free; repeatable (default: all five).")
+@click.option("--seed", type=click.IntRange(min=0), default=0, show_default=True, metavar="N",
+              help="Seed of every random choice.")
+@click.option("--claims", "claims_file", metavar="FILE", help="Mutate the claims of your own Python file.")
+@click.option("--report-dir", type=click.Path(path_type=Path), metavar="DIR",
+              help="Write mutation.json and mutation.md here (default: reports/, full catalog runs only).")
+@click.option("--format", "fmt", type=click.Choice(["text", "json"]), default="text", show_default=True,
+              help="stdout: one line per mutant and the kill-rate table, or the JSON report.")
+@click.option("--limit", type=click.IntRange(min=1), default=None, metavar="K",
+              help="At most K mutants per claim, evenly spread over its source.")
+@click.option("--mutant", "only", type=click.IntRange(min=0), multiple=True, metavar="K",
+              help="Only the mutant with this index (as in 'CLAIM#K'); repeatable; needs one CLAIM.")
+@click.option("--jobs", type=click.IntRange(min=0), default=0, show_default=True, metavar="J",
+              help="Worker processes (0: one per CPU).  The results do not depend on it.")
+def mutate(ids: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str, ...], seed: int,
+           claims_file: str | None, report_dir: Path | None, fmt: str, limit: int | None,
+           only: tuple[int, ...], jobs: int) -> None:
+    """Corrupt every claim in small ways and check that every method notices.
+
+    Each mutant (one sign flipped, operands of @ or comm swapped, a factor
+    transposed, a term dropped, a scene letter replaced, a coefficient changed)
+    runs with every method at a few sizes and with the dimension-free method.
+    A mutant that passes everywhere is equivalent (a true statement); one that a
+    method passes where another refutes it is a SURVIVOR of that method, and the
+    dimension-free method must prove no mutant that is not equivalent.
+
+    Prints one line per mutant and the kill-rate table per claim and method;
+    writes mutation.json and mutation.md (to reports/ for a full catalog run,
+    otherwise only to a --report-dir given explicitly).
+
+    Exit status: 0 no survivor, 1 some survivor, 2 bad input, 130 interrupted.
+    """
+    from . import mutate as engine
+    from .report import render_mutation_markdown, render_mutation_summary
+
+    for m in methods:
+        if m not in engine.METHODS:
+            raise MutateInputError(f"unknown method {m!r} for mutation (one of {', '.join(engine.METHODS)})")
+    parsed_sizes = [_parse_size(s) for s in sizes]
+    if only and len(ids) != 1:
+        raise MutateInputError("--mutant K names a mutant of one claim: give exactly one CLAIM")
+    full_run = not ids and not claims_file and not sizes and limit is None and not only
+    target = report_dir if report_dir is not None else DEFAULT_REPORT_DIR if full_run else None
+    if target is not None:
+        _check_report_dir(target)
+    registry = _registry(claims_file)
+    try:
+        claims: list[Claim] = [registry.get(i) for i in ids] if ids else list(registry)
+    except KeyError as exc:
+        raise MutateInputError(exc.args[0] if exc.args else "unknown claim") from None
+    if parsed_sizes and not any(c.sizes.admits(s.n, s.r) for c in claims for s in parsed_sizes):
+        wanted = ", ".join(f"({s.n},{s.r})" for s in parsed_sizes)
+        raise MutateInputError(f"no selected claim is stated for size {wanted}")
+    from .methods import BUDGET
+    for s in parsed_sizes:
+        for m in methods or engine.METHODS:
+            if m in BUDGET and s.n > BUDGET[m]:
+                raise MutateInputError(f"n = {s.n} is beyond the {m} method's budget (n <= {BUDGET[m]})")
+    methods = tuple(methods) or engine.METHODS
+    out_err = fmt != "text"
+
+    def on_result(o: Any) -> None:
+        click.echo(o.line(), err=out_err)
+
+    started = datetime.now(timezone.utc)
+    t0 = time.perf_counter()
+    try:
+        report = engine.run_mutation(claims, sizes=parsed_sizes or None, methods=methods, seed=seed,
+                                     on_result=on_result, limit=limit, only=only or None,
+                                     jobs=jobs or os.cpu_count() or 1)
+    except KeyboardInterrupt:
+        click.echo("stiefelsym mutate: interrupted; no report written", err=True)
+        raise click.exceptions.Exit(EXIT_INTERRUPTED) from None
+    except ValueError as exc:
+        raise MutateInputError(str(exc)) from None
+    report.meta = {
+        "command": _command(ids, sizes, methods if tuple(methods) != engine.METHODS else (), seed,
+                            claims_file, report_dir, limit, only),
+        "seed": seed, "methods": list(methods), "sizes": [f"{s.n},{s.r}" for s in parsed_sizes] or None,
+        "limit": limit, "claims_file": claims_file,
+        "operators": [{"name": name, "description": text} for name, text, _ in engine.OPERATORS],
+        "letter_swaps": {k: list(v) for k, v in engine.LETTER_SWAPS.items()},
+        "date": started.strftime("%Y-%m-%d %H:%M:%S UTC"),
+        "seconds": round(time.perf_counter() - t0, 2),
+        "platform": platform.platform(terse=True), "commit": _commit(),
+    }
+    data = report.to_json()
+    if fmt == "json":
+        click.echo(report.dumps(), nl=False)
+    click.echo(render_mutation_summary(data), err=out_err, nl=False)
+    if target is not None:
+        try:
+            write_atomic(Path(target) / "mutation.json", report.dumps())
+            write_atomic(Path(target) / "mutation.md", render_mutation_markdown(data))
+        except OSError as exc:
+            raise MutateInputError(f"cannot write reports to {target}: {exc.strerror or exc}") from None
+        click.echo(f"reports: {Path(target) / 'mutation.json'}, {Path(target) / 'mutation.md'}", err=True)
+    else:
+        click.echo("note: partial run, no report written (give --report-dir DIR to write one)", err=True)
+    raise click.exceptions.Exit(EXIT_OK if report.ok() else EXIT_SURVIVORS)
+
+
+if __name__ == "__main__":   # python -m stiefelsym.cli_mutate, before the command joins the group
+    mutate()

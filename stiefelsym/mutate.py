@@ -1,0 +1,787 @@
+"""Mutation analysis: how sensitive is each verification method to a small corruption?
+
+A *mutant* of a claim is the claim's function with one small change of its source:
+the sign of a term flipped, the operands of a product or commutator swapped, a
+factor transposed, a term dropped, a scene letter replaced by another of the same
+kind, or a rational coefficient changed.  The space of changes is declared once,
+in :data:`OPERATORS` (and :data:`LETTER_SWAPS` for the letters); every claim of the
+catalog gets every mutant its source admits.
+
+Each mutant runs, through :func:`stiefelsym.runner.run_one`, with every fixed-size
+method at a few sizes and with the dimension-free method.  The claim as printed
+runs too (the *baseline*): a cell (size, method) where the printed claim does not
+pass says nothing about a mutant, and is not counted.  Then:
+
+* a mutant is **killed** by a method when, at some counted size, its verdict is not
+  ``proved``/``checked``/``numeric`` (``fails``: refuted with a witness; ``error``:
+  e.g. ill-typed, the engine refused it; ``inconclusive``/``undecided``: the method
+  could not decide, which is not a refutation);
+* a mutant that passes at every counted cell is **equivalent**: a true statement
+  (often, but not always, trivially so; the list is reported);
+* a mutant that one method refutes (``fails`` or ``error``) at a size where another
+  method passes it is a **survivor** of the passing method: a soundness or
+  sensitivity problem;
+* the dimension-free method ``free`` must never prove a mutant that is not
+  equivalent (that would be a false proof for all n, r);
+* a mutant that is only killed by ``inconclusive``/``undecided`` verdicts and passes
+  elsewhere is **unresolved**.
+
+The same machinery searches corrections of a printed formula that fails:
+:func:`search_corrections` returns the mutants that pass every method at every size.
+"""
+from __future__ import annotations
+
+import ast
+import copy
+import inspect
+import json
+import textwrap
+import time
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
+from typing import Any, Callable, Iterable, Iterator, Sequence
+
+from .claims import Claim, Size
+from .results import PASSING, Result
+
+SCHEMA_VERSION = 1
+FIXED_METHODS = ("exact", "rational", "modular", "float")
+METHODS = FIXED_METHODS + ("free",)
+DEFAULT_N_MAX = 4
+DEFAULT_SIZE_COUNT = 3
+#: verdicts that refute a mutant (as opposed to "could not decide")
+DECISIVE = ("fails", "error")
+#: the order in which the kind of a kill is reported when a method killed at several sizes
+KILL_ORDER = ("fails", "error", "inconclusive", "undecided")
+MESSAGE_WIDTH = 240
+
+#: scene letters and the letters of the same kind that replace them (one place, both directions)
+LETTER_SWAPS: dict[str, tuple[str, ...]] = {
+    # a point of T*V and its momentum (n x r)
+    "X": ("P",), "P": ("X",),
+    # the second point of T*V
+    "Y": ("Q",), "Q": ("Y",),
+    # generic elements of so(n), of so(r)
+    "xi": ("zeta",), "zeta": ("xi",),
+    "eta": ("theta",), "theta": ("eta",),
+    # the two momentum maps (so(n) and so(r): ill-typed unless n = r)
+    "Phi": ("Psi",), "Psi": ("Phi",),
+    # A and its inverse; the two identities (ill-typed unless n = r)
+    "A": ("Ainv",), "Ainv": ("A",),
+    "In": ("Ir",), "Ir": ("In",),
+    # scalar parameters
+    "lam": ("kappa",), "kappa": ("lam",),
+    # the two components of a flow, and its two multipliers
+    "Xdot": ("Pdot",), "Pdot": ("Xdot",),
+    "Lambda": ("Pi",), "Pi": ("Lambda",),
+}
+#: calls whose two operands are swapped (commutator, brackets: antisymmetric)
+SWAPPED_CALLS = ("comm", "bracket", "canonical_bracket")
+#: calls whose integer arguments are sizes or indices, not coefficients
+INDEX_CALLS = ("range", "len", "unit", "sym_unit", "wedge_basis", "lower_block", "zeros", "identity",
+               "general_params", "skew_params", "sym_params", "generic")
+
+
+# --------------------------------------------------------------------------- mutants
+
+@dataclass(frozen=True)
+class Mutant:
+    """One small corruption of a claim: what changed (in words, with the source line) and
+    the corrupted claim function."""
+
+    description: str
+    lineno: int
+    func: Callable = field(repr=False, compare=False)
+    operator: str = ""
+    #: position in mutants(claim): stable for a given source, used to rerun one mutant
+    index: int = 0
+    #: the corrupted expression, as source
+    source: str = ""
+
+
+@dataclass
+class _Site:
+    node: ast.AST
+    replacement: ast.AST
+    operator: str
+    text: str
+
+
+def _code(node: ast.AST, width: int = 70) -> str:
+    text = " ".join(ast.unparse(node).split())
+    return "`" + (text if len(text) <= width else text[: width - 1] + "…") + "`"
+
+
+def _neg(node: ast.AST) -> ast.AST:
+    return ast.UnaryOp(op=ast.USub(), operand=copy.deepcopy(node))
+
+
+def _transposed(node: ast.AST) -> ast.AST:
+    return ast.Attribute(value=copy.deepcopy(node), attr="T", ctx=ast.Load())
+
+
+def _call_name(node: ast.Call) -> str:
+    f = node.func
+    return f.id if isinstance(f, ast.Name) else f.attr if isinstance(f, ast.Attribute) else ""
+
+
+def _is_int(node: ast.AST) -> bool:
+    return isinstance(node, ast.Constant) and type(node.value) is int
+
+
+def _sign_sites(node, parents, names) -> Iterator[_Site]:
+    """a + b <-> a - b; a unary minus added to the first term, or removed."""
+    if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Add, ast.Sub)):
+        op = ast.Sub() if isinstance(node.op, ast.Add) else ast.Add()
+        new = ast.BinOp(left=copy.deepcopy(node.left), op=op, right=copy.deepcopy(node.right))
+        yield _Site(node, new, "sign", f"flip the sign of the term {_code(node.right)} in {_code(node)}")
+        if not (isinstance(node.left, ast.UnaryOp) and isinstance(node.left.op, ast.USub)):
+            new = ast.BinOp(left=_neg(node.left), op=copy.deepcopy(node.op), right=copy.deepcopy(node.right))
+            yield _Site(node, new, "sign", f"negate the term {_code(node.left)} in {_code(node)}")
+    if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
+        yield _Site(node, copy.deepcopy(node.operand), "sign", f"remove the unary minus in {_code(node)}")
+
+
+def _swap_sites(node, parents, names) -> Iterator[_Site]:
+    """a @ b -> b @ a; comm(a, b) -> comm(b, a) (and the brackets)."""
+    if isinstance(node, ast.BinOp) and isinstance(node.op, ast.MatMult):
+        if ast.dump(node.left) != ast.dump(node.right):
+            new = ast.BinOp(left=copy.deepcopy(node.right), op=ast.MatMult(), right=copy.deepcopy(node.left))
+            yield _Site(node, new, "swap", f"swap the operands of @ in {_code(node)}")
+    if isinstance(node, ast.Call) and _call_name(node) in SWAPPED_CALLS and len(node.args) == 2 \
+            and not node.keywords and ast.dump(node.args[0]) != ast.dump(node.args[1]):
+        new = copy.deepcopy(node)
+        new.args = [copy.deepcopy(node.args[1]), copy.deepcopy(node.args[0])]
+        yield _Site(node, new, "swap", f"swap the operands of {_call_name(node)} in {_code(node)}")
+
+
+def _transpose_sites(node, parents, names) -> Iterator[_Site]:
+    """Remove a transpose anywhere; add one to a factor of @ or an operand of comm."""
+    if isinstance(node, ast.Attribute) and node.attr == "T" and isinstance(node.ctx, ast.Load):
+        yield _Site(node, copy.deepcopy(node.value), "transpose",
+                    f"remove the transpose in {_code(node)}{_context(parents)}")
+    factors: list[ast.AST] = []
+    if isinstance(node, ast.BinOp) and isinstance(node.op, ast.MatMult):
+        factors = [node.left, node.right]
+    elif isinstance(node, ast.Call) and _call_name(node) == "comm" and len(node.args) == 2:
+        factors = list(node.args)
+    for k, f in enumerate(factors):
+        if isinstance(f, ast.Attribute) and f.attr == "T":
+            continue   # removing it is the site above
+        new = copy.deepcopy(node)
+        if isinstance(new, ast.BinOp):
+            setattr(new, ("left", "right")[k], _transposed(f))
+        else:
+            new.args[k] = _transposed(f)
+        yield _Site(node, new, "transpose", f"transpose the factor {_code(f)} in {_code(node)}")
+
+
+def _drop_sites(node, parents, names) -> Iterator[_Site]:
+    """a ± b -> a; a + b -> b, a - b -> -b."""
+    if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Add, ast.Sub)):
+        yield _Site(node, copy.deepcopy(node.left), "drop", f"drop the term {_code(node.right)} from {_code(node)}")
+        right = copy.deepcopy(node.right) if isinstance(node.op, ast.Add) else _neg(node.right)
+        yield _Site(node, right, "drop", f"drop the term {_code(node.left)} from {_code(node)}")
+
+
+def _context(parents: list[ast.AST]) -> str:
+    """`` in `expr` `` for the enclosing expression (none for a statement)."""
+    parent = parents[-1] if parents else None
+    return f" in {_code(parent)}" if isinstance(parent, ast.expr) else ""
+
+
+def _letter_sites(node, parents, names) -> Iterator[_Site]:
+    """s.X -> s.P etc. (LETTER_SWAPS); also local names bound to letters, and flow["Lambda"]."""
+    if isinstance(node, ast.Attribute) and isinstance(node.ctx, ast.Load) and node.attr in LETTER_SWAPS:
+        for alt in LETTER_SWAPS[node.attr]:
+            new = ast.Attribute(value=copy.deepcopy(node.value), attr=alt, ctx=ast.Load())
+            yield _Site(node, new, "letter", f"replace {_code(node)} by {_code(new)}{_context(parents)}")
+    if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load) and node.id in LETTER_SWAPS:
+        for alt in LETTER_SWAPS[node.id]:
+            if alt in names:
+                new = ast.Name(id=alt, ctx=ast.Load())
+                yield _Site(node, new, "letter", f"replace {_code(node)} by {_code(new)}{_context(parents)}")
+    if isinstance(node, ast.Subscript) and isinstance(node.slice, ast.Constant) \
+            and isinstance(node.slice.value, str) and node.slice.value in LETTER_SWAPS:
+        for alt in LETTER_SWAPS[node.slice.value]:
+            new = copy.deepcopy(node)
+            new.slice = ast.Constant(alt)
+            yield _Site(node, new, "letter", f"replace {_code(node)} by {_code(new)}{_context(parents)}")
+
+
+def _inside(parents: list[ast.AST], kinds: tuple[type, ...]) -> bool:
+    return any(isinstance(p, kinds) for p in parents)
+
+
+def _coefficient_sites(node, parents, names) -> Iterator[_Site]:
+    """An integer coefficient k -> k + 1 (so / 2 -> / 3, s.q(1, 2) -> s.q(1, 3)); s.q(a, b) -> s.q(a, b + 1)."""
+    if _is_int(node):
+        if _inside(parents, (ast.JoinedStr, ast.Subscript, ast.Slice)):
+            return   # check names and indices are not coefficients
+        if any(isinstance(p, ast.Call) and _call_name(p) in INDEX_CALLS for p in parents):
+            return
+        new = ast.Constant(node.value + 1)
+        yield _Site(node, new, "coefficient",
+                    f"change the coefficient {node.value} to {node.value + 1}{_context(parents)}")
+    if isinstance(node, ast.Call) and _call_name(node) == "q" and len(node.args) == 2 and not _is_int(node.args[1]):
+        new = copy.deepcopy(node)
+        new.args[1] = ast.BinOp(left=copy.deepcopy(node.args[1]), op=ast.Add(), right=ast.Constant(1))
+        yield _Site(node, new, "coefficient", f"change the denominator in {_code(node)} to {_code(new.args[1])}")
+
+
+#: the declared space of corruptions: (name, what it does, site generator)
+OPERATORS: tuple[tuple[str, str, Callable], ...] = (
+    ("sign", "flip the sign of one term (a + b <-> a - b), add or remove a unary minus", _sign_sites),
+    ("swap", "swap the operands of a product @ or of comm / bracket", _swap_sites),
+    ("transpose", "transpose one factor (add or remove .T)", _transpose_sites),
+    ("drop", "drop a term (a ± b -> a, or -> ±b)", _drop_sites),
+    ("letter", "replace a scene letter by another of the same kind (LETTER_SWAPS)", _letter_sites),
+    ("coefficient", "change a rational coefficient (an integer k -> k + 1; s.q(a, b) -> s.q(a, b + 1))",
+     _coefficient_sites),
+)
+
+
+def _function_ast(fn: Callable) -> tuple[ast.FunctionDef, str]:
+    """The function's definition (decorators stripped), with the line numbers of its file."""
+    lines, start = inspect.getsourcelines(fn)
+    tree = ast.parse(textwrap.dedent("".join(lines)))
+    defn = next(n for n in tree.body if isinstance(n, (ast.FunctionDef, ast.AsyncFunctionDef)))
+    ast.increment_lineno(defn, max(start, 1) - 1)
+    defn.decorator_list = []
+    defn.returns = None   # annotations are not evaluated in the mutant
+    for a in defn.args.posonlyargs + defn.args.args + defn.args.kwonlyargs:
+        a.annotation = None
+    for a in (defn.args.vararg, defn.args.kwarg):
+        if a is not None:
+            a.annotation = None
+    filename = inspect.getsourcefile(fn) or inspect.getfile(fn)
+    return defn, filename
+
+
+def _walk(node: ast.AST, parents: list[ast.AST]) -> Iterator[tuple[ast.AST, list[ast.AST]]]:
+    """Pre-order, with the ancestors of each node (a fixed order: mutants are numbered by it)."""
+    yield node, parents
+    for child in ast.iter_child_nodes(node):
+        yield from _walk(child, parents + [node])
+
+
+def _bound_names(defn: ast.FunctionDef) -> set[str]:
+    names = {a.arg for a in defn.args.posonlyargs + defn.args.args + defn.args.kwonlyargs}
+    for node in ast.walk(defn):
+        if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Store):
+            names.add(node.id)
+    return names
+
+
+def _body(defn: ast.FunctionDef) -> list[ast.stmt]:
+    """The statements of the body without the docstring."""
+    body = defn.body
+    if body and isinstance(body[0], ast.Expr) and isinstance(body[0].value, ast.Constant) \
+            and isinstance(body[0].value.value, str):
+        body = body[1:]
+    return body
+
+
+class _Replace(ast.NodeTransformer):
+    def __init__(self, target: ast.AST, replacement: ast.AST) -> None:
+        self.target, self.replacement = target, replacement
+
+    def visit(self, node: ast.AST) -> ast.AST:
+        if node is self.target:
+            return ast.copy_location(copy.deepcopy(self.replacement), node)
+        return self.generic_visit(node)
+
+
+def _compile(fn: Callable, defn: ast.FunctionDef, filename: str) -> Callable:
+    """The mutated definition as a function of the claim's module (same globals, same closure values)."""
+    freevars = fn.__code__.co_freevars
+    if freevars:   # a claim defined inside a function: rebuild its closure through a factory
+        factory = ast.FunctionDef(name="__mutant_factory", args=ast.arguments(
+            posonlyargs=[], args=[ast.arg(arg=v) for v in freevars], vararg=None, kwonlyargs=[],
+            kw_defaults=[], kwarg=None, defaults=[]), body=[defn, ast.Return(ast.Name(defn.name, ast.Load()))],
+            decorator_list=[], returns=None, type_params=[])
+        ast.copy_location(factory, defn)
+        module = ast.Module(body=[factory], type_ignores=[])
+    else:
+        module = ast.Module(body=[defn], type_ignores=[])
+    ast.fix_missing_locations(module)
+    code = compile(module, filename, "exec", dont_inherit=True)
+    namespace: dict[str, Any] = {}
+    exec(code, fn.__globals__, namespace)   # noqa: S102 - the claim's own source, mutated
+    if freevars:
+        func = namespace["__mutant_factory"](*(c.cell_contents for c in fn.__closure__))
+    else:
+        func = namespace[defn.name]
+    func.__defaults__ = fn.__defaults__
+    func.__kwdefaults__ = fn.__kwdefaults__
+    func.__doc__ = fn.__doc__
+    func.__qualname__ = fn.__qualname__ + "<mutant>"
+    return func
+
+
+def mutants(claim: Claim | Callable) -> list[Mutant]:
+    """Every mutant of a claim (or of a claim function), in source order, without duplicates.
+
+    Returns [] when the function's source is not available."""
+    fn = claim.func if isinstance(claim, Claim) else claim
+    try:
+        defn, filename = _function_ast(fn)
+    except (OSError, TypeError, SyntaxError, StopIteration):
+        return []
+    names = _bound_names(defn)
+    original = ast.unparse(defn)
+    seen = {original}
+    repeats: dict[str, int] = {}
+    out: list[Mutant] = []
+    for stmt in _body(defn):
+        for node, parents in _walk(stmt, [defn]):
+            for _, _, gen in OPERATORS:
+                for site in gen(node, parents, names):
+                    mutated = _mutated(defn, site)
+                    text = ast.unparse(mutated)
+                    if text in seen:
+                        continue
+                    seen.add(text)
+                    lineno = getattr(site.node, "lineno", defn.lineno)
+                    func = _compile(fn, mutated, filename)
+                    description = f"line {lineno}: {site.text}"
+                    repeats[description] = repeats.get(description, 0) + 1
+                    if repeats[description] > 1:   # the same text at another place of the line
+                        description += f" (occurrence {repeats[description]})"
+                    out.append(Mutant(description=description, lineno=lineno, func=func,
+                                      operator=site.operator, index=len(out),
+                                      source=" ".join(ast.unparse(site.replacement).split())))
+    return out
+
+
+def _mutated(defn: ast.FunctionDef, site: _Site) -> ast.FunctionDef:
+    """A copy of defn with site.node replaced (the copy keeps node identity through a memo)."""
+    memo: dict[int, Any] = {}
+    clone = copy.deepcopy(defn, memo)
+    target = memo[id(site.node)]
+    return _Replace(target, site.replacement).visit(clone)
+
+
+# --------------------------------------------------------------------------- sizes and plan
+
+def mutation_sizes(claim: Claim, n_max: int = DEFAULT_N_MAX, count: int = DEFAULT_SIZE_COUNT) -> list[Size]:
+    """Up to ``count`` sizes with n <= n_max where the printed claim is stated and expected to hold:
+    first one with 1 < r < n (largest n), then sizes with distinct r (largest n first)."""
+    cands = [s for s in claim.sizes if s.n <= n_max and not claim.expects_failure(s.n, s.r)]
+    if not cands:
+        cands = [Size(n, r) for n in range(1, n_max + 1) for r in range(1, n + 1)
+                 if claim.sizes.admits(n, r) and not claim.expects_failure(n, r)]
+    order = sorted(cands, key=lambda s: (-s.n, s.r))
+    chosen: list[Size] = []
+    mid = [s for s in order if 1 < s.r < s.n]
+    if mid:
+        chosen.append(mid[0])
+    for s in order:
+        if len(chosen) >= count:
+            break
+        if all(c.r != s.r for c in chosen):
+            chosen.append(s)
+    for s in order:   # fewer distinct r than wanted: fill with the remaining sizes
+        if len(chosen) >= count:
+            break
+        if s not in chosen:
+            chosen.append(s)
+    return chosen
+
+
+def _exact_ok(claim: Claim, size: Size) -> bool:
+    from .methods import BUDGET
+    return size.n <= min(claim.exact_max_n, BUDGET["exact"])
+
+
+def cells(claim: Claim, sizes: Sequence[Size], methods: Sequence[str]) -> list[tuple[Size | None, str]]:
+    """The (size, method) runs of one mutant: exact only within the claim's symbolic budget, no float
+    for dimension claims (as the runner plans them), ``free`` once (size None)."""
+    out: list[tuple[Size | None, str]] = []
+    for s in sizes:
+        for m in methods:
+            if m == "free" or (m == "exact" and not _exact_ok(claim, s)) or (m == "float" and claim.kind == "dim"):
+                continue
+            out.append((s, m))
+    if "free" in methods:
+        out.append((None, "free"))
+    return out
+
+
+# --------------------------------------------------------------------------- records
+
+@dataclass
+class Cell:
+    """One run of a mutant (or of the printed claim): the verdict at one size by one method."""
+
+    n: int | None
+    r: int | None
+    method: str
+    verdict: str
+    seconds: float = 0.0
+    seed: int | None = None
+    message: str = ""
+
+    @property
+    def size(self) -> str:
+        return "all n, r" if self.n is None else f"({self.n},{self.r})"
+
+    @classmethod
+    def of(cls, res: Result) -> "Cell":
+        msg = " ".join((res.message or res.residual or res.certificate or "").split())
+        if len(msg) > MESSAGE_WIDTH:
+            msg = msg[: MESSAGE_WIDTH - 1] + "…"
+        return cls(res.n, res.r, res.method, res.verdict, round(res.seconds, 3), res.seed, msg)
+
+
+@dataclass
+class MutantOutcome:
+    """What every method said about one mutant, and its classification."""
+
+    claim: str
+    index: int | None          # None: the printed claim (the baseline)
+    description: str
+    lineno: int | None
+    operator: str
+    source: str = ""
+    cells: list[Cell] = field(default_factory=list)
+    #: killed | survivor | equivalent | unresolved | unexercised | baseline
+    classification: str = ""
+    #: method -> kind of its kill (fails, error, inconclusive, undecided)
+    killed_by: dict[str, str] = field(default_factory=dict)
+    #: methods that passed the mutant at a size where another method refuted it (free: proved it)
+    survived: list[str] = field(default_factory=list)
+
+    @property
+    def label(self) -> str:
+        return f"{self.claim}#{self.index}" if self.index is not None else f"{self.claim} (as printed)"
+
+    def verdicts(self) -> dict[str, str]:
+        """Per method: its verdicts over the sizes, e.g. ``fails (4,2), checked (4,1)``."""
+        out: dict[str, list[str]] = {}
+        for c in self.cells:
+            out.setdefault(c.method, []).append(c.verdict if c.n is None else f"{c.verdict} {c.size}")
+        return {m: ", ".join(v) for m, v in out.items()}
+
+    def line(self) -> str:
+        """One greppable line."""
+        per = "; ".join(f"{m} {v}" for m, v in self.verdicts().items())
+        tag = "  SURVIVOR of " + ", ".join(self.survived) if self.survived else ""
+        return f"{self.label} {self.classification}: {self.description} [{per}]{tag}"
+
+
+@dataclass
+class ClaimMutation:
+    """The mutation analysis of one claim."""
+
+    claim: str
+    paper: list[str]
+    section: str
+    kind: str
+    sizes: list[tuple[int, int]]
+    methods: list[str]
+    mutant_count: int = 0
+    baseline: MutantOutcome | None = None
+    mutants: list[MutantOutcome] = field(default_factory=list)
+    #: why the claim was not mutated (empty when it was)
+    skipped: str = ""
+    seconds: float = 0.0
+
+    def counted(self) -> set[tuple[int | None, int | None, str]]:
+        """The cells where the printed claim passes (free: always counted)."""
+        if self.baseline is None:
+            return set()
+        return {(c.n, c.r, c.method) for c in self.baseline.cells
+                if c.method == "free" or c.verdict in PASSING}
+
+    def table(self) -> list[dict[str, Any]]:
+        """Per method: total, killed (by kind), survived, equivalent, unresolved, missed, baseline."""
+        rows = []
+        for m in self.methods:
+            base = [c for c in (self.baseline.cells if self.baseline else []) if c.method == m]
+            if not base:
+                continue
+            counted = {k for k in self.counted() if k[2] == m}
+            ran = [o for o in self.mutants if any((c.n, c.r, c.method) in counted for c in o.cells)]
+            row = {"claim": self.claim, "method": m, "total": len(ran), "killed": 0,
+                   "fails": 0, "error": 0, "inconclusive": 0, "undecided": 0,
+                   "survived": 0, "equivalent": 0, "unresolved": 0, "missed": 0,
+                   "baseline": _baseline_text(base),
+                   "baseline_passes": any(c.verdict in PASSING for c in base)}
+            for o in ran:
+                if o.classification == "equivalent":
+                    row["equivalent"] += 1
+                elif m in o.survived:
+                    row["survived"] += 1
+                elif m in o.killed_by:
+                    row["killed"] += 1
+                    row[o.killed_by[m]] += 1
+                elif o.classification == "unresolved":
+                    row["unresolved"] += 1
+                else:
+                    row["missed"] += 1
+            rows.append(row)
+        return rows
+
+
+def _baseline_text(base: list[Cell]) -> str:
+    """The printed claim's verdicts by one method: ``proved`` or ``checked; inconclusive at (4,3)``."""
+    passing = list(dict.fromkeys(c.verdict for c in base if c.verdict in PASSING))
+    other: dict[str, list[str]] = {}
+    for c in base:
+        if c.verdict not in PASSING:
+            other.setdefault(c.verdict, []).append(c.size)
+    parts = passing + [v if all(s == "all n, r" for s in where) else f"{v} at {', '.join(where)}"
+                       for v, where in other.items()]
+    return "; ".join(parts)
+
+
+@dataclass
+class MutationReport:
+    """The mutation analysis of several claims, with the run's metadata."""
+
+    claims: list[ClaimMutation] = field(default_factory=list)
+    meta: dict[str, Any] = field(default_factory=dict)
+
+    def outcomes(self) -> list[MutantOutcome]:
+        return [o for c in self.claims for o in c.mutants]
+
+    def survivors(self) -> list[MutantOutcome]:
+        """Mutants that some method passed although another refuted them, or that free proved."""
+        return [o for o in self.outcomes() if o.survived]
+
+    def equivalents(self) -> list[MutantOutcome]:
+        return [o for o in self.outcomes() if o.classification == "equivalent"]
+
+    def table(self) -> list[dict[str, Any]]:
+        return [row for c in self.claims for row in c.table()]
+
+    def totals(self) -> list[dict[str, Any]]:
+        """The table summed over claims, per method."""
+        out: dict[str, dict[str, Any]] = {}
+        for row in self.table():
+            if not row["baseline_passes"]:
+                continue   # nothing a method could kill where the printed claim does not pass
+            t = out.setdefault(row["method"], {k: 0 for k in row
+                                               if k not in ("claim", "method", "baseline", "baseline_passes")})
+            for k in t:
+                t[k] += row[k]
+        return [{"claim": "all claims", "method": m, **t, "baseline": "", "baseline_passes": True}
+                for m, t in out.items()]
+
+    def ok(self) -> bool:
+        """No survivor (in particular, free proved no mutant that is not equivalent)."""
+        return not self.survivors()
+
+    def to_json(self) -> dict[str, Any]:
+        return {"schema": SCHEMA_VERSION, "meta": self.meta,
+                "claims": [asdict(c) for c in self.claims],
+                "table": self.table(), "totals": self.totals()}
+
+    def dumps(self) -> str:
+        return json.dumps(self.to_json(), indent=1, default=str) + "\n"
+
+    @classmethod
+    def from_json(cls, d: dict[str, Any]) -> "MutationReport":
+        def outcome(o: dict[str, Any] | None) -> MutantOutcome | None:
+            if o is None:
+                return None
+            o = dict(o)
+            o["cells"] = [Cell(**c) for c in o.get("cells", [])]
+            return MutantOutcome(**o)
+
+        claims = []
+        for c in d.get("claims", []):
+            c = dict(c)
+            c["sizes"] = [tuple(s) for s in c.get("sizes", [])]
+            c["baseline"] = outcome(c.get("baseline"))
+            c["mutants"] = [outcome(o) for o in c.get("mutants", [])]
+            claims.append(ClaimMutation(**c))
+        return cls(claims=claims, meta=dict(d.get("meta", {})))
+
+    @classmethod
+    def load(cls, path: str | Path) -> "MutationReport":
+        return cls.from_json(json.loads(Path(path).read_text(encoding="utf-8")))
+
+
+# --------------------------------------------------------------------------- running
+
+def _run_cells(claim: Claim, plan: Sequence[tuple[Size | None, str]], seed: int,
+               func: Callable | None, variant: str | None) -> list[Cell]:
+    from .runner import run_one
+    return [Cell.of(run_one(claim, s, m, seed, func=func, variant=variant)) for s, m in plan]
+
+
+def classify(outcome: MutantOutcome, baseline: MutantOutcome) -> MutantOutcome:
+    """Fill in the classification, the kills per method and the survivals (see the module docstring)."""
+    counted = {(c.n, c.r, c.method) for c in baseline.cells if c.method == "free" or c.verdict in PASSING}
+    fixed = [c for c in outcome.cells if c.method != "free" and (c.n, c.r, c.method) in counted]
+    free = [c for c in outcome.cells if c.method == "free"]
+    kills: dict[str, list[str]] = {}
+    refuted_at: set[tuple[int | None, int | None]] = set()
+    for c in fixed:
+        if c.verdict not in PASSING:
+            kills.setdefault(c.method, []).append(c.verdict)
+            if c.verdict in DECISIVE:
+                refuted_at.add((c.n, c.r))
+    outcome.killed_by = {m: min(vs, key=KILL_ORDER.index) for m, vs in kills.items()}
+    survived = [c.method for c in fixed if (c.n, c.r) in refuted_at and c.verdict in PASSING]
+    if not fixed:
+        outcome.classification = "unexercised"
+    elif not kills:
+        outcome.classification = "equivalent"
+    elif refuted_at:
+        outcome.classification = "survivor" if survived else "killed"
+    else:
+        outcome.classification = "unresolved"
+    for c in free:
+        if c.verdict == "proved" and outcome.classification != "equivalent":
+            survived.append("free")   # a dimension-free proof of a statement a method refuted: unsound
+        elif c.verdict != "proved" and outcome.classification != "equivalent":
+            outcome.killed_by["free"] = c.verdict if c.verdict in KILL_ORDER else "undecided"
+    if "free" in survived and outcome.classification in ("killed", "unresolved", "unexercised"):
+        outcome.classification = "survivor"
+    outcome.survived = list(dict.fromkeys(survived))
+    return outcome
+
+
+#: filled in before worker processes are forked (mutant functions cannot be pickled)
+_WORK: dict[str, Any] = {}
+
+
+def _work(task: tuple[int, int]) -> list[Cell]:
+    ci, mi = task
+    claim, plan, muts = _WORK["claims"][ci]
+    m = muts[mi]
+    return _run_cells(claim, plan, _WORK["seed"], m.func, m.description)
+
+
+def _select(muts: list[Mutant], limit: int | None, only: Iterable[int] | None) -> list[Mutant]:
+    if only is not None:
+        wanted = set(only)
+        return [m for m in muts if m.index in wanted]
+    if limit is None or limit >= len(muts):
+        return muts
+    if limit <= 0:
+        return []
+    # evenly spread over the source, so that a limited run still sees every part of the claim
+    step = len(muts) / limit
+    return [muts[int(k * step)] for k in range(limit)]
+
+
+def run_mutation(claims: Sequence[Claim], sizes: Sequence[Size] | None = None,
+                 methods: Sequence[str] = METHODS, seed: int = 0,
+                 on_result: Callable[[MutantOutcome], None] | None = None, *,
+                 limit: int | None = None, only: Iterable[int] | None = None,
+                 jobs: int = 1) -> MutationReport:
+    """Run every mutant of every claim with every method; classify each mutant.
+
+    ``sizes``: the fixed sizes (default: :func:`mutation_sizes` of each claim; given sizes
+    are filtered by what each claim admits and expects to hold).  ``limit``: at most that many
+    mutants per claim, evenly spread over the source; ``only``: these mutant indices.
+    ``on_result`` is called with the baseline and then with each mutant, in order.
+    ``jobs`` > 1 runs mutants in that many forked worker processes."""
+    methods = list(dict.fromkeys(methods))
+    for m in methods:
+        if m not in METHODS:
+            raise ValueError(f"unknown mutation method {m!r} (one of {', '.join(METHODS)})")
+    if seed < 0:
+        raise ValueError("the seed must be a non-negative integer")
+    report = MutationReport()
+    work: list[tuple[Claim, list, list[Mutant]]] = []
+    for claim in claims:
+        if sizes is None:
+            chosen = mutation_sizes(claim)
+        else:
+            chosen = [s for s in sizes if claim.sizes.admits(s.n, s.r) and not claim.expects_failure(s.n, s.r)]
+        cm = ClaimMutation(claim=claim.id, paper=list(claim.paper), section=claim.section, kind=claim.kind,
+                           sizes=[(s.n, s.r) for s in chosen], methods=list(methods))
+        report.claims.append(cm)
+        muts = mutants(claim)
+        cm.mutant_count = len(muts)
+        plan = cells(claim, chosen, methods)
+        if claim.expect == "fails":
+            cm.skipped = ("the printed statement fails at every size (a documented erratum): a mutation "
+                          "analysis needs a true statement")
+        elif not muts:
+            cm.skipped = "the claim's source is not available, or offers no mutation site"
+        elif not plan:
+            cm.skipped = "no size at which the printed statement is expected to hold, and no method to run"
+        work.append((claim, plan, _select(muts, limit, only) if not cm.skipped else []))
+
+    # the baselines first (a mutant is classified against them)
+    for (claim, plan, muts), cm in zip(work, report.claims):
+        if cm.skipped:
+            continue
+        t0 = time.perf_counter()
+        cm.baseline = MutantOutcome(claim.id, None, "the claim as printed", None, "", "",
+                                    _run_cells(claim, plan, seed, None, None), "baseline")
+        cm.seconds += time.perf_counter() - t0
+        if on_result is not None:
+            on_result(cm.baseline)
+
+    tasks = [(ci, mi) for ci, (_, _, muts) in enumerate(work) for mi in range(len(muts))]
+    _WORK.clear()
+    _WORK.update(claims=work, seed=seed)
+    try:
+        for (ci, mi), (cells_, secs) in zip(tasks, _map(tasks, jobs)):
+            claim, _, muts = work[ci]
+            m, cm = muts[mi], report.claims[ci]
+            o = MutantOutcome(claim.id, m.index, m.description, m.lineno, m.operator, m.source, cells_)
+            classify(o, cm.baseline)
+            cm.mutants.append(o)
+            cm.seconds += secs
+            if on_result is not None:
+                on_result(o)
+    finally:
+        _WORK.clear()
+    for cm in report.claims:
+        cm.seconds = round(cm.seconds, 2)
+    return report
+
+
+def _timed(task: tuple[int, int]) -> tuple[list[Cell], float]:
+    t0 = time.perf_counter()
+    out = _work(task)
+    return out, time.perf_counter() - t0
+
+
+def _map(tasks: list[tuple[int, int]], jobs: int) -> Iterator[tuple[list[Cell], float]]:
+    """The tasks' cells, in order; in ``jobs`` forked workers when jobs > 1."""
+    if jobs <= 1 or len(tasks) <= 1:
+        for t in tasks:
+            yield _timed(t)
+        return
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor
+    with ProcessPoolExecutor(max_workers=jobs, mp_context=multiprocessing.get_context("fork")) as ex:
+        try:
+            yield from ex.map(_timed, tasks, chunksize=1)
+        except BaseException:
+            ex.shutdown(wait=False, cancel_futures=True)
+            raise
+
+
+# --------------------------------------------------------------------------- errata search
+
+def search_corrections(claim: Claim, sizes: Sequence[Size] | None = None,
+                       methods: Sequence[str] = ("rational", "modular"), seed: int = 0,
+                       candidates: Sequence[Mutant] | None = None) -> list[Mutant]:
+    """The mutants of ``claim`` that pass every method at every given size: candidate corrections
+    of a printed formula that fails.
+
+    Default sizes: the claim's own sizes with n <= 4.  Each candidate is run cell by cell and
+    dropped at its first cell that does not pass, so a wrong candidate costs one run."""
+    from .runner import run_one
+    if sizes is None:
+        sizes = [s for s in claim.sizes if s.n <= DEFAULT_N_MAX] or list(claim.sizes)[:1]
+    for m in methods:
+        if m not in METHODS:
+            raise ValueError(f"unknown method {m!r} (one of {', '.join(METHODS)})")
+    plan = cells(claim, list(sizes), list(methods))
+    def passes(m: Mutant, s: Size | None, meth: str) -> bool:
+        verdict = run_one(claim, s, meth, seed, func=m.func, variant=m.description).verdict
+        return verdict == "proved" if meth == "free" else verdict in PASSING
+
+    return [m for m in (mutants(claim) if candidates is None else candidates)
+            if plan and all(passes(m, s, meth) for s, meth in plan)]

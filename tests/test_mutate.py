@@ -1,0 +1,381 @@
+"""The mutation harness: the mutant generator, the classification, the errata search,
+the records, the command line, and (slow) the whole catalog."""
+from __future__ import annotations
+
+import json
+import linecache
+import re
+from fractions import Fraction
+from types import SimpleNamespace
+
+import numpy as np
+import pytest
+from click.testing import CliRunner
+
+from stiefelsym import comm
+from stiefelsym.claims import Claim, Size, admissible, load_catalog
+from stiefelsym.cli_mutate import mutate as mutate_command
+from stiefelsym.mutate import (LETTER_SWAPS, OPERATORS, Cell, MutantOutcome, MutationReport, classify,
+                               mutants, mutation_sizes, run_mutation, search_corrections)
+from stiefelsym.report import render_mutation_markdown, render_mutation_summary
+from stiefelsym.runner import run_one
+
+
+# --------------------------------------------------------------------------- a hand-written claim
+
+def toy_identities(s):
+    """Identities on T*V that exercise every operator class."""
+    X, P = s.X, s.P
+    pair = {"Lambda": s.eta, "Pi": s.theta}
+    return {
+        "constraint": s.X.T @ s.P + s.P.T @ s.X,
+        "antisymmetry": comm(s.xi, s.zeta) + comm(s.zeta, s.xi),
+        "half": s.tr(s.P.T @ s.P) / 2 - s.q(1, 2) * s.tr(P.T @ P),
+        "unit": -(X.T @ X) + s.Ir,
+        "pick": pair["Lambda"] - s.eta,
+    }
+
+
+def toy_claim(func=toy_identities, cid: str = "toy") -> Claim:
+    return Claim(id=cid, paper=("toy",), kind="id", section="", func=func, sizes=admissible(n_max=3))
+
+
+def _numeric_scene(seed: int = 1) -> SimpleNamespace:
+    """Plain numpy matrices (no constraints): enough to see that a mutant computes something else."""
+    rng = np.random.default_rng(seed)
+    n, r = 4, 2
+    skew = lambda m: (lambda a: a - a.T)(rng.integers(-5, 6, (m, m)).astype(float))
+    return SimpleNamespace(X=rng.integers(-5, 6, (n, r)).astype(float), P=rng.integers(-5, 6, (n, r)).astype(float),
+                           xi=skew(n), zeta=skew(n), eta=skew(r), theta=skew(r), Ir=np.eye(r), In=np.eye(n),
+                           tr=np.trace, q=lambda a, b=1: float(Fraction(a, b)))
+
+
+def _value(func, scene) -> dict:
+    return {k: np.asarray(v, dtype=float) for k, v in func(scene).items()}
+
+
+def test_every_operator_class_generates_its_mutants():
+    ms = mutants(toy_claim())
+    by_op = {m.operator for m in ms}
+    assert by_op == {name for name, _, _ in OPERATORS}
+    texts = [m.description.split(": ", 1)[1] for m in ms]
+    for expected in [
+        "flip the sign of the term `s.P.T @ s.X` in `s.X.T @ s.P + s.P.T @ s.X`",
+        "negate the term `s.X.T @ s.P` in `s.X.T @ s.P + s.P.T @ s.X`",
+        "remove the unary minus in `-(X.T @ X)`",
+        "swap the operands of @ in `s.X.T @ s.P`",
+        "swap the operands of comm in `comm(s.xi, s.zeta)`",
+        "transpose the factor `s.P` in `s.X.T @ s.P`",
+        "remove the transpose in `s.X.T` in `s.X.T @ s.P`",
+        "drop the term `s.P.T @ s.X` from `s.X.T @ s.P + s.P.T @ s.X`",
+        "drop the term `s.X.T @ s.P` from `s.X.T @ s.P + s.P.T @ s.X`",
+        "replace `s.X` by `s.P` in `s.X.T`",
+        "replace `s.xi` by `s.zeta` in `comm(s.xi, s.zeta)`",
+        "replace `s.eta` by `s.theta` in `pair['Lambda'] - s.eta`",
+        "replace `X` by `P` in `X.T`",
+        "replace `pair['Lambda']` by `pair['Pi']` in `pair['Lambda'] - s.eta`",
+        "change the coefficient 2 to 3 in `s.tr(s.P.T @ s.P) / 2`",
+        "change the coefficient 1 to 2 in `s.q(1, 2)`",
+        "change the coefficient 2 to 3 in `s.q(1, 2)`",
+    ]:
+        assert expected in texts, expected
+    assert len({m.description for m in ms}) == len(ms), "descriptions identify mutants"
+    assert [m.index for m in ms] == list(range(len(ms)))
+
+
+def test_mutants_name_their_source_line():
+    for m in mutants(toy_claim()):
+        line = linecache.getline(__file__, m.lineno)
+        snippet = m.description.split("`")[1]
+        first_name = re.search(r"[A-Za-z_]\w*", snippet).group(0)
+        assert first_name in line, (m.description, line)
+
+
+def test_a_mutant_really_changes_the_value():
+    ms = mutants(toy_claim())
+    scene = _numeric_scene()
+    base = _value(toy_identities, scene)
+    changed = 0
+    for m in ms:
+        try:
+            val = _value(m.func, scene)
+        except (ValueError, TypeError):   # ill-shaped: changed as well
+            changed += 1
+            continue
+        assert set(val) == set(base), "check names are not mutated"
+        if any(val[k].shape != base[k].shape or not np.allclose(val[k], base[k]) for k in base):
+            changed += 1
+    # on unconstrained matrices only a handful can coincide (e.g. comm swapped inside a symmetric sum)
+    assert changed >= len(ms) - 4
+    flip = next(m for m in ms if m.description.endswith("flip the sign of the term `s.P.T @ s.X` in "
+                                                        "`s.X.T @ s.P + s.P.T @ s.X`"))
+    got = _value(flip.func, scene)["constraint"]
+    assert np.allclose(got, scene.X.T @ scene.P - scene.P.T @ scene.X)
+    assert toy_identities(scene)["constraint"].shape == got.shape
+
+
+def test_mutants_keep_the_original_function_intact():
+    before = _value(toy_identities, _numeric_scene())
+    mutants(toy_claim())
+    after = _value(toy_identities, _numeric_scene())
+    assert all(np.allclose(before[k], after[k]) for k in before)
+
+
+def test_mutants_of_a_closure():
+    offset = 2
+
+    def shifted(s):
+        return {"v": s.q(offset, 4) - s.q(1, 2)}
+
+    ms = mutants(toy_claim(shifted))
+    assert ms and all(m.func(SimpleNamespace(q=lambda a, b=1: Fraction(a, b)))["v"] is not None for m in ms)
+    flip = next(m for m in ms if "flip the sign" in m.description)
+    assert flip.func(SimpleNamespace(q=lambda a, b=1: Fraction(a, b)))["v"] == 1
+
+
+def test_letter_swaps_are_symmetric_where_declared():
+    for a, alts in LETTER_SWAPS.items():
+        for b in alts:
+            assert a in LETTER_SWAPS[b], (a, b)
+
+
+def test_a_mutant_is_refuted_by_the_engine():
+    c = toy_claim()
+    flip = next(m for m in mutants(c) if "flip the sign of the term `s.P.T @ s.X`" in m.description)
+    assert run_one(c, Size(3, 2), "rational", 0).verdict == "checked"
+    res = run_one(c, Size(3, 2), "rational", 0, func=flip.func, variant=flip.description)
+    assert res.verdict == "fails" and res.variant == flip.description and not res.expected
+
+
+# --------------------------------------------------------------------------- sizes
+
+def test_mutation_sizes_prefer_a_generic_size_and_distinct_r():
+    c = toy_claim()
+    c.sizes = admissible(n_max=5)
+    sizes = mutation_sizes(c)
+    assert sizes[0] == Size(4, 2)
+    assert len(sizes) == 3 and len({s.r for s in sizes}) == 3 and all(s.n <= 4 for s in sizes)
+    c.fails_at = lambda n, r: (n, r) == (4, 2)
+    assert Size(4, 2) not in mutation_sizes(c)
+
+
+# --------------------------------------------------------------------------- classification
+
+def _cells(spec: dict) -> list[Cell]:
+    out = []
+    for (size, method), verdict in spec.items():
+        n, r = size if size else (None, None)
+        out.append(Cell(n, r, method, verdict))
+    return out
+
+
+BASE = {((3, 2), "exact"): "proved", ((3, 2), "rational"): "checked", ((3, 1), "rational"): "checked",
+        (None, "free"): "proved"}
+
+
+def _classify(spec: dict, base: dict = BASE) -> MutantOutcome:
+    baseline = MutantOutcome("c", None, "as printed", None, "", "", _cells(base), "baseline")
+    return classify(MutantOutcome("c", 0, "m", 1, "sign", "", _cells(spec)), baseline)
+
+
+def test_classification_killed_equivalent_survivor_unresolved():
+    killed = _classify({((3, 2), "exact"): "fails", ((3, 2), "rational"): "fails",
+                        ((3, 1), "rational"): "checked", (None, "free"): "undecided"})
+    assert killed.classification == "killed" and not killed.survived
+    assert killed.killed_by == {"exact": "fails", "rational": "fails", "free": "undecided"}
+
+    equiv = _classify({((3, 2), "exact"): "proved", ((3, 2), "rational"): "checked",
+                       ((3, 1), "rational"): "checked", (None, "free"): "undecided"})
+    assert equiv.classification == "equivalent" and not equiv.killed_by
+
+    survivor = _classify({((3, 2), "exact"): "fails", ((3, 2), "rational"): "checked",
+                          ((3, 1), "rational"): "checked", (None, "free"): "undecided"})
+    assert survivor.classification == "survivor" and survivor.survived == ["rational"]
+
+    unsound_free = _classify({((3, 2), "exact"): "error", ((3, 2), "rational"): "error",
+                              ((3, 1), "rational"): "error", (None, "free"): "proved"})
+    assert unsound_free.classification == "survivor" and unsound_free.survived == ["free"]
+
+    unresolved = _classify({((3, 2), "exact"): "inconclusive", ((3, 2), "rational"): "checked",
+                            ((3, 1), "rational"): "checked", (None, "free"): "undecided"})
+    assert unresolved.classification == "unresolved" and not unresolved.survived
+
+
+def test_cells_where_the_printed_claim_does_not_pass_are_not_counted():
+    base = dict(BASE)
+    base[((3, 2), "exact")] = "inconclusive"
+    o = _classify({((3, 2), "exact"): "inconclusive", ((3, 2), "rational"): "checked",
+                   ((3, 1), "rational"): "checked", (None, "free"): "proved"}, base)
+    assert o.classification == "equivalent"
+
+
+# --------------------------------------------------------------------------- errata search
+
+def sign_error(s):
+    """X^T P - P^T X vanishes on T*V (a deliberate sign error: it is X^T P + P^T X)."""
+    return {"constraint": s.X.T @ s.P - s.P.T @ s.X}
+
+
+def test_search_corrections_finds_the_sign_error():
+    c = toy_claim(sign_error, "sign-error")
+    assert run_one(c, Size(3, 2), "rational", 0).verdict == "fails"
+    found = search_corrections(c, [Size(3, 2), Size(3, 3)], ["rational"])
+    texts = [m.description.split(": ", 1)[1] for m in found]
+    assert "flip the sign of the term `s.P.T @ s.X` in `s.X.T @ s.P - s.P.T @ s.X`" in texts
+    # the only other one-step correction is the same identity times -1
+    assert set(texts) <= {"flip the sign of the term `s.P.T @ s.X` in `s.X.T @ s.P - s.P.T @ s.X`",
+                          "negate the term `s.X.T @ s.P` in `s.X.T @ s.P - s.P.T @ s.X`"}
+    for m in found:
+        assert run_one(c, Size(4, 2), "modular", 3, func=m.func, variant=m.description).verdict == "checked"
+
+
+def test_search_corrections_at_r_1_cannot_see_the_sign():
+    """At r = 1 the printed X^T P - P^T X vanishes anyway: every size matters."""
+    c = toy_claim(sign_error, "sign-error")
+    assert run_one(c, Size(3, 1), "rational", 0).verdict == "checked"
+
+
+# --------------------------------------------------------------------------- end to end
+
+SMALL = ("euclidean-invariance", "normal-hamiltonian", "invariants-so-n")
+
+
+@pytest.fixture(scope="module")
+def small_report() -> MutationReport:
+    cat = load_catalog()
+    return run_mutation([cat.get(i) for i in SMALL], sizes=[Size(3, 2)], methods=("rational", "free"), seed=0)
+
+
+def test_small_catalog_run_kills_every_mutant_that_is_not_equivalent(small_report):
+    rep = small_report
+    assert [c.claim for c in rep.claims] == list(SMALL)
+    for c in rep.claims:
+        assert c.baseline is not None and not c.skipped and c.sizes == [(3, 2)]
+        assert {(x.n, x.r, x.method) for x in c.baseline.cells} == {(3, 2, "rational"), (None, None, "free")}
+        assert len(c.mutants) == c.mutant_count > 10
+        for o in c.mutants:
+            assert {(x.n, x.method) for x in o.cells} == {(3, "rational"), (None, "free")}
+            assert o.classification in ("killed", "equivalent")
+    assert rep.ok() and not rep.survivors()
+    rows = {(r["claim"], r["method"]): r for r in rep.table()}
+    for cid in SMALL:
+        row = rows[(cid, "rational")]
+        assert row["killed"] + row["equivalent"] == row["total"] > 10
+        assert row["killed"] == row["fails"] + row["error"]
+    assert sum(r["fails"] for r in rep.table()) > 0 and sum(r["error"] for r in rep.table()) > 0
+    free = rows[("euclidean-invariance", "free")]
+    assert free["baseline"] == "proved" and free["survived"] == 0
+
+
+def test_mutation_report_round_trips_through_json(small_report):
+    text = small_report.dumps()
+    back = MutationReport.from_json(json.loads(text))
+    assert back.dumps() == text
+    assert back.table() == small_report.table()
+    md = render_mutation_markdown(json.loads(text))
+    assert "# Mutation analysis" in md and "`euclidean-invariance`" in md
+    assert "No survivor" in md
+    summary = render_mutation_summary(json.loads(text))
+    assert summary.startswith("mutation: ") and "kill rate" in summary
+
+
+def test_limit_and_only_select_mutants():
+    c = load_catalog().get("normal-hamiltonian")
+    rep = run_mutation([c], sizes=[Size(3, 2)], methods=("rational",), limit=3)
+    assert len(rep.claims[0].mutants) == 3
+    idx = [o.index for o in rep.claims[0].mutants]
+    assert idx[0] == 0 and idx == sorted(idx) and idx[-1] > 3
+    rep = run_mutation([c], sizes=[Size(3, 2)], methods=("rational",), only=[5])
+    assert [o.index for o in rep.claims[0].mutants] == [5]
+
+
+def test_parallel_run_gives_the_same_records():
+    c = load_catalog().get("normal-hamiltonian")
+    one = run_mutation([c], sizes=[Size(3, 2)], methods=("rational",), limit=4, jobs=1)
+    two = run_mutation([c], sizes=[Size(3, 2)], methods=("rational",), limit=4, jobs=2)
+    strip = lambda rep: [(o.index, o.classification, [(x.n, x.method, x.verdict) for x in o.cells])
+                         for o in rep.outcomes()]
+    assert strip(one) == strip(two)
+
+
+def test_unknown_method_is_refused():
+    with pytest.raises(ValueError, match="unknown mutation method"):
+        run_mutation([toy_claim()], methods=("auto",))
+
+
+# --------------------------------------------------------------------------- command line
+
+def _invoke(args):
+    return CliRunner().invoke(mutate_command, args)
+
+
+def test_cli_small_run_writes_reports(tmp_path):
+    out = tmp_path / "rep"
+    res = _invoke(["normal-hamiltonian", "--size", "3,2", "--method", "rational", "--method", "free",
+                   "--limit", "4", "--report-dir", str(out), "--jobs", "1"])
+    assert res.exit_code == 0, res.output + res.stderr
+    lines = res.stdout.splitlines()
+    assert lines[0].startswith("normal-hamiltonian (as printed) baseline:")
+    assert sum(1 for l in lines if l.startswith("normal-hamiltonian#")) == 4
+    assert any(l.startswith("mutation: 4 mutants of 1 claims") for l in lines)
+    data = json.loads((out / "mutation.json").read_text())
+    assert data["meta"]["command"].startswith("stiefelsym mutate normal-hamiltonian --size 3,2")
+    assert [o["name"] for o in data["meta"]["operators"]] == [n for n, _, _ in OPERATORS]
+    md = (out / "mutation.md").read_text()
+    assert "| `normal-hamiltonian` | rational |" in md
+
+
+def test_cli_json_format_and_partial_run_writes_nothing(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    res = _invoke(["normal-hamiltonian", "--size", "3,2", "--method", "rational", "--limit", "2",
+                   "--format", "json", "--jobs", "1"])
+    assert res.exit_code == 0, res.stderr
+    data = json.loads(res.stdout)
+    assert data["claims"][0]["claim"] == "normal-hamiltonian" and len(data["claims"][0]["mutants"]) == 2
+    assert "no report written" in res.stderr and not (tmp_path / "reports").exists()
+
+
+@pytest.mark.parametrize("args, message", [
+    (["no-such-claim"], "unknown claim"),
+    (["normal-flow", "--method", "auto"], "unknown method 'auto'"),
+    (["normal-flow", "--size", "2,3"], "1 <= r <= n"),
+    (["normal-flow", "--size", "x"], "is not a size"),
+    (["normal-flow", "euclidean-flow", "--mutant", "3"], "exactly one CLAIM"),
+    (["--seed", "-1"], "--seed"),
+])
+def test_cli_bad_input_is_one_line_and_exit_2(args, message):
+    res = _invoke(args)
+    assert res.exit_code == 2
+    assert res.stderr.count("\n") == 1 and message in res.stderr, res.stderr
+    assert res.stdout == ""
+
+
+def test_cli_exits_1_when_a_mutant_survives(monkeypatch, tmp_path):
+    import stiefelsym.mutate as engine
+
+    def fake(claims, **kw):
+        base = MutantOutcome("c", None, "as printed", None, "", "", _cells(BASE), "baseline")
+        o = classify(MutantOutcome("c", 7, "line 3: flip", 3, "sign", "", _cells(
+            {((3, 2), "exact"): "fails", ((3, 2), "rational"): "checked", ((3, 1), "rational"): "checked",
+             (None, "free"): "undecided"})), base)
+        from stiefelsym.mutate import ClaimMutation
+        cm = ClaimMutation("c", ["c"], "", "id", [(3, 2), (3, 1)], ["exact", "rational", "free"], 1, base, [o])
+        kw["on_result"](o)
+        return MutationReport([cm])
+
+    monkeypatch.setattr(engine, "run_mutation", fake)
+    res = _invoke(["normal-flow", "--report-dir", str(tmp_path)])
+    assert res.exit_code == 1
+    assert "c#7 survivor: line 3: flip" in res.stdout and "SURVIVOR of rational" in res.stdout
+    assert "c#7 survived rational" in res.stdout
+    assert "survived rational" in (tmp_path / "mutation.md").read_text()
+
+
+# --------------------------------------------------------------------------- the whole catalog
+
+@pytest.mark.slow
+def test_whole_catalog_no_method_survives_a_mutant():
+    rep = run_mutation(list(load_catalog()), jobs=2)
+    proved_by_free = [o.line() for o in rep.outcomes() if "free" in o.survived]
+    assert not proved_by_free, "the dimension-free method proved a refuted mutant:\n" + "\n".join(proved_by_free)
+    assert rep.ok(), "survivors:\n" + "\n".join(o.line() for o in rep.survivors())
