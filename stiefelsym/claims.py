@@ -8,6 +8,7 @@ engine decides how to check them.
 """
 from __future__ import annotations
 
+import hashlib
 import importlib
 import importlib.util
 import inspect
@@ -68,13 +69,37 @@ class SizeSpec:
     r_max: int | None = None
     where: Callable[[int, int], bool] | None = None
     condition: str = ""
+    #: the largest n the claim is stated for (None: no upper bound)
+    n_max: int | None = None
 
     def admits(self, n: int, r: int) -> bool:
         if not (1 <= r <= n) or n < self.n_min or r < self.r_min:
             return False
+        if self.n_max is not None and n > self.n_max:
+            return False
         if self.r_max is not None and r > self.r_max:
             return False
         return self.where is None or bool(self.where(n, r))
+
+    def describe(self) -> str:
+        """The declared sizes in words, e.g. "2 <= n <= 5, r <= 3 (n >= 2r)"."""
+        lo = max(self.n_min, 1)
+        if self.n_max is not None:
+            parts = [f"n <= {self.n_max}" if lo <= 1 else f"{lo} <= n <= {self.n_max}"]
+        else:
+            parts = [f"n >= {lo}"] if lo > 1 else []
+        if self.r_min > 1 and self.r_max is not None:
+            parts.append(f"{self.r_min} <= r <= {self.r_max}")
+        elif self.r_min > 1:
+            parts.append(f"r >= {self.r_min}")
+        elif self.r_max is not None:
+            parts.append(f"r <= {self.r_max}")
+        text = ", ".join(parts) or "every n >= r >= 1"
+        if self.condition:
+            text += f" ({self.condition})"
+        elif self.where is not None:
+            text += " (with a further condition on n, r)"
+        return text
 
     def __iter__(self):
         return iter(self.sizes)
@@ -89,12 +114,12 @@ def admissible(n_max: int = 5, *, n_min: int = 1, r_min: int = 1, r_max: int | N
 
     ``condition`` states the restriction in words for the report (e.g. "n >= 2r")."""
     out = []
-    spec = SizeSpec((), n_min, r_min, r_max, where, condition)
+    spec = SizeSpec((), n_min, r_min, r_max, where, condition, n_max)
     for n in range(max(n_min, 1), n_max + 1):
         for r in range(1, n + 1):
             if spec.admits(n, r):
                 out.append(Size(n, r))
-    return SizeSpec(tuple(out), n_min, r_min, r_max, where, condition)
+    return SizeSpec(tuple(out), n_min, r_min, r_max, where, condition, n_max)
 
 
 @dataclass
@@ -238,11 +263,19 @@ def load_catalog(package: str = "proofs") -> Registry:
 
 
 def load_claims_file(path: str | Path) -> Registry:
-    """Load user claims from a Python file written against the public API."""
+    """Load user claims from a Python file written against the public API.
+
+    Whatever the file raises while it is imported (SystemExit included; not a
+    Ctrl-C or SIGTERM) is a :class:`CatalogError`, and whatever it prints goes to
+    standard error: standard output is left to the command's own output."""
+    from .pool import Terminated, stdout_to_stderr
     p = Path(path)
     if not p.is_file():
         raise CatalogError(f"claims file not found: {p}")
     name = "stiefelsym_user_" + re.sub(r"\W", "_", p.stem)
+    other = getattr(sys.modules.get(name), "__file__", None)
+    if other and Path(other).resolve() != p.resolve():   # two files of the same name: keep both modules
+        name += "_" + hashlib.sha1(str(p.resolve()).encode("utf-8", "surrogateescape")).hexdigest()[:8]
 
     def loader():
         spec = importlib.util.spec_from_file_location(name, p)
@@ -251,8 +284,14 @@ def load_claims_file(path: str | Path) -> Registry:
         mod = importlib.util.module_from_spec(spec)
         sys.modules[name] = mod
         try:
-            spec.loader.exec_module(mod)
-        except Exception as exc:  # a user's file: report, never a traceback
+            with stdout_to_stderr():
+                spec.loader.exec_module(mod)
+        except (KeyboardInterrupt, Terminated):
+            raise
+        except BaseException as exc:  # noqa: BLE001 - a user's file: report, never a traceback
+            sys.modules.pop(name, None)
+            if isinstance(exc, CatalogError):
+                raise
             raise CatalogError(f"{p}: {type(exc).__name__}: {exc}") from exc
     try:
         reg = _collect(loader)

@@ -1,8 +1,9 @@
-"""The command line: ``stiefelsym verify | list | show | report``.
+"""The command line: ``stiefelsym verify | list | show | derive | report``.
 
 Exit status: 0 when every verdict is the one the catalog expects, 1 when some
 verdict is not, 2 on bad input (one line on stderr, never a traceback), 130 when
-interrupted (no report is written).
+interrupted with Ctrl-C and 143 when terminated with SIGTERM (no report is
+written, no worker process is left behind).
 """
 from __future__ import annotations
 
@@ -25,11 +26,12 @@ import click
 
 from .claims import CatalogError, Claim, Registry, Size, load_catalog, load_claims_file
 from .hard import HARD_CASES
+from .pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT, Terminated, raise_on_sigterm
 from .report import KIND_MEANING, render_junit, render_latex, render_markdown, render_summary
 from .results import Result, dump_results, load_results, write_atomic
 from .scene import SizeError
 
-EXIT_OK, EXIT_UNEXPECTED, EXIT_INPUT, EXIT_INTERRUPTED = 0, 1, 2, 130
+EXIT_OK, EXIT_UNEXPECTED, EXIT_INPUT, EXIT_INTERRUPTED, EXIT_TERMINATED = 0, 1, 2, 130, 143
 DEFAULT_REPORT_DIR = Path("reports")
 REPORT_FILES = ("results.json", "verification.md", "verification.tex")
 #: the distributions whose versions a report records
@@ -58,7 +60,33 @@ def _one_line(text: str) -> str:
 
 
 class _Main(click.Group):
-    """Turns every error into one line on stderr and a documented exit status."""
+    """Turns every error into one line on stderr and a documented exit status.
+
+    Commands listed in ``lazy`` are imported only when they are asked for (or the
+    commands are listed), so that start-up stays fast; a module that is missing
+    is skipped silently."""
+
+    lazy: dict[str, tuple[str, str]] = {}
+
+    def _load(self, name: str) -> click.Command | None:
+        module, attr = self.lazy.get(name, ("", ""))
+        if not module or name in self.commands:
+            return self.commands.get(name)
+        try:
+            cmd = getattr(importlib.import_module(module), attr)
+        except (ImportError, AttributeError):
+            self.lazy.pop(name, None)
+            return None
+        self.add_command(cmd, name)
+        return cmd
+
+    def get_command(self, ctx: click.Context, cmd_name: str) -> click.Command | None:
+        return super().get_command(ctx, cmd_name) or self._load(cmd_name)
+
+    def list_commands(self, ctx: click.Context) -> list[str]:
+        for name in list(self.lazy):
+            self._load(name)
+        return super().list_commands(ctx)
 
     def main(self, args: Sequence[str] | None = None, prog_name: str | None = None,
              complete_var: str | None = None, standalone_mode: bool = True, **extra: Any) -> Any:
@@ -75,6 +103,9 @@ class _Main(click.Group):
         except (click.Abort, KeyboardInterrupt):
             click.echo("stiefelsym: interrupted", err=True)
             code = EXIT_INTERRUPTED
+        except Terminated:
+            click.echo("stiefelsym: terminated", err=True)
+            code = EXIT_TERMINATED
         if standalone_mode:
             sys.exit(code)
         return code
@@ -98,7 +129,7 @@ def main(ctx: click.Context) -> None:
       stiefelsym derive normal-flow                the proof for all n, r, as LaTeX
 
     Exit status: 0 every verdict as expected, 1 some verdict unexpected, 2 bad
-    input, 130 interrupted.
+    input, 130 interrupted (Ctrl-C), 143 terminated (SIGTERM).
     """
     if ctx.invoked_subcommand is None:
         click.echo(ctx.get_help())
@@ -167,20 +198,40 @@ def _catalog() -> Registry:
         raise InputError(f"cannot load the catalog of claims: {exc}") from exc
 
 
-def _user_claims(path: str) -> Registry:
-    try:
-        return load_claims_file(path)
-    except CatalogError as exc:
-        raise InputError(str(exc)) from exc
+def _user_claims(paths: str | Sequence[str]) -> Registry:
+    """The claims of one or more files, in order; an id defined twice is refused."""
+    if isinstance(paths, str):
+        paths = [paths]
+    merged, origin = Registry(), {}
+    seen: set[str] = set()
+    for path in paths:
+        key = os.path.realpath(path)
+        if key in seen:         # the same file twice: load it once
+            continue
+        seen.add(key)
+        try:
+            reg = load_claims_file(path)
+        except CatalogError as exc:
+            raise InputError(str(exc)) from exc
+        for c in reg:
+            if c.id in merged:
+                raise InputError(f"claim {c.id!r} is defined in both {origin[c.id]} and {path}")
+            merged.add(c)
+            origin[c.id] = path
+    merged.origin = origin     # type: ignore[attr-defined]  (claim id -> its file)
+    return merged
 
 
-def _registry(claims_file: str | None, ids: Sequence[str] = ()) -> tuple[Registry, Registry | None]:
+def _registry(claims_files: str | Sequence[str] | None,
+              ids: Sequence[str] = ()) -> tuple[Registry, Registry | None]:
     """The registry to look claims up in, and the user's registry (if any).
 
-    A user's file alone when it defines every named claim (or none is named);
-    otherwise the user's claims followed by the catalog's, the user's shadowing
+    The users' files alone when they define every named claim (or none is named);
+    otherwise the users' claims followed by the catalog's, the users' shadowing
     catalog claims of the same id."""
-    user = _user_claims(claims_file) if claims_file else None
+    if isinstance(claims_files, str):
+        claims_files = [claims_files]
+    user = _user_claims(claims_files) if claims_files else None
     if user is not None and all(cid in user for cid in ids):
         return user, user
     catalog = _catalog()
@@ -191,7 +242,7 @@ def _registry(claims_file: str | None, ids: Sequence[str] = ()) -> tuple[Registr
         merged.add(c)
     for c in catalog:
         if c.id in merged:
-            click.echo(f"note: claim {c.id!r} of {claims_file} shadows the catalog claim "
+            click.echo(f"note: claim {c.id!r} of {user.origin[c.id]} shadows the catalog claim "  # type: ignore[attr-defined]
                        "of the same id", err=True)
         else:
             merged.add(c)
@@ -277,11 +328,13 @@ def _section_titles() -> dict[str, str]:
     return {str(k): str(v) for k, v in titles.items()} if isinstance(titles, dict) else {}
 
 
-def _command(ids: Sequence[str], claims_file: str | None, sizes: Sequence[Size],
-             methods: Sequence[str], seed: int, report_dir: Path | None) -> str:
+def _command(ids: Sequence[str], claims_files: Sequence[str], sizes: Sequence[Size],
+             methods: Sequence[str], seed: int, report_dir: Path | None,
+             budgets: Sequence[str] = ()) -> str:
     parts = ["stiefelsym", "verify", *ids]
-    if claims_file:
-        parts += ["--claims", claims_file]
+    for f in claims_files:
+        parts += ["--claims", f]
+    parts += list(budgets)
     for s in sizes:
         parts += ["--size", f"{s.n},{s.r}"]
     for m in methods:
@@ -341,17 +394,114 @@ def _isatty(stream: Any) -> bool:
 
 # --------------------------------------------------------------------------- verify
 
-@main.command(short_help="Verify claims (default: the catalog); write reports.")
+P_LEGEND = ("p<=: the Schwartz-Zippel bound of a randomized exact check (rational, modular): a false "
+            "statement would pass all of its random points with probability at most p.")
+
+
+def _budget_help() -> str:
+    """The per-method size budgets, read from the engine (only when help is shown)."""
+    try:
+        budget = dict(_runner().BUDGET)
+    except click.ClickException:
+        return ""
+    sizes = ", ".join(f"{m} n <= {k}" for m, k in budget.items())
+    return (f"Size budgets (the largest n each method attempts; a larger --size is refused): {sizes}; "
+            "free: every n and r at once.  auto is exact up to each claim's symbolic budget (see "
+            "`stiefelsym show CLAIM`), then modular.")
+
+
+class _VerifyCommand(click.Command):
+    """``verify``, whose help ends with what p means and the methods' budgets."""
+
+    def format_epilog(self, ctx: click.Context, formatter: click.HelpFormatter) -> None:
+        paragraphs = [
+            "p: after a `checked` verdict, p<=BOUND is the Schwartz-Zippel false-pass bound: the "
+            "residual is a rational function of degree at most d in the chart parameters, so a false "
+            "statement vanishes at a uniformly random point of a set S with probability at most "
+            "d/(|S| - d_den), and at all of the independent points with probability at most their "
+            "product p.",
+            _budget_help(),
+            "Time and memory: every run (claim, size, method) executes in a worker process with "
+            "--timeout seconds of wall time (auto: exact and its modular fallback together) and "
+            "--memory GiB of address space.  A run past its time is inconclusive; one that runs out "
+            "of memory, crashes, or exits is an error; the other runs go on either way.",
+        ]
+        for text in paragraphs:
+            if text:
+                formatter.write_paragraph()
+                formatter.write_text(text)
+
+
+def _report_dir(ctx: click.Context, param: click.Parameter, value: str | None) -> Path | None:
+    if value is None:
+        return None
+    if not value.strip():
+        raise click.BadParameter("the report directory is empty; give one, for example reports",
+                                 ctx, param)
+    return Path(value)
+
+
+class _Stdout:
+    """The command's own standard output, kept apart from anything a claim writes.
+
+    Meanwhile ``sys.stdout`` and file descriptor 1 point at stderr, so nothing a
+    claims file prints (at import, in a claim, at exit) reaches stdout; the
+    command writes to the stream this returns, a duplicate of the original
+    descriptor.  In a real process descriptor 1 stays pointed at stderr afterwards
+    (atexit handlers or threads a claims file left behind cannot write to stdout
+    either); an in-memory stdout (a test runner's) is simply restored."""
+
+    def __enter__(self) -> Any:
+        from .pool import _redirect_fd1
+        self.original = sys.stdout
+        try:
+            fd = sys.stdout.fileno()
+        except (AttributeError, OSError, ValueError):
+            fd = None
+        try:
+            sys.stdout.flush()
+        except (AttributeError, OSError, ValueError):
+            pass
+        self.stream = sys.stdout
+        if fd == 1:
+            try:
+                self.stream = open(os.dup(1), "w", encoding=sys.stdout.encoding,
+                                   errors=sys.stdout.errors,
+                                   buffering=1 if sys.stdout.line_buffering else -1)
+            except (OSError, AttributeError):
+                self.stream = sys.stdout
+        self.saved_fd = _redirect_fd1()
+        sys.stdout = sys.stderr
+        return self.stream
+
+    def __exit__(self, *exc: Any) -> None:
+        try:
+            self.stream.flush()
+        except (OSError, ValueError):
+            pass
+        sys.stdout = self.original
+        if self.stream is not self.original:
+            self.stream.close()
+            if self.saved_fd is not None:
+                os.close(self.saved_fd)
+        elif self.saved_fd is not None:
+            os.dup2(self.saved_fd, 1)
+            os.close(self.saved_fd)
+
+
+@main.command(cls=_VerifyCommand, short_help="Verify claims (default: the catalog); write reports.")
 @click.argument("ids", nargs=-1, metavar="[CLAIM]...")
 @click.option("--size", "sizes", type=SizeType(), multiple=True, metavar="n,r",
-              help="Problem size, repeatable (default: each claim's own sizes).")
+              help="Problem size, repeatable (default: each claim's own sizes).  A size outside "
+                   "the sizes a named claim is stated for is refused; without named claims, the "
+                   "claims that are not stated for it skip it.")
 @click.option("--method", "methods", type=MethodType(), multiple=True, help=METHOD_HELP)
 @click.option("--seed", type=click.IntRange(min=0), default=0, show_default=True, metavar="N",
               help="Seed of every random choice; the same seed reproduces every verdict.")
-@click.option("--claims", "claims_file", metavar="FILE",
+@click.option("--claims", "claims_files", metavar="FILE", multiple=True,
               help="A Python file of your own claims (written with @claim); verifies them all, "
-                   "or those named.")
-@click.option("--report-dir", type=click.Path(path_type=Path), metavar="DIR",
+                   "or those named.  Repeatable (an id defined in two files is refused).")
+@click.option("--report-dir", type=str, callback=_report_dir, metavar="DIR",
               help="Write the reports here (default: reports/, full catalog runs only).")
 @click.option("--format", "fmt", type=click.Choice(["text", "json", "junit"]), default="text",
               show_default=True,
@@ -360,15 +510,29 @@ def _isatty(stream: Any) -> bool:
 @click.option("--hard", type=click.Choice(sorted(HARD_CASES)), default=None,
               help="Evaluate at a hard numerical case (rational, modular and float methods): "
                    + "; ".join(f"{k}: {v.description}" for k, v in sorted(HARD_CASES.items())) + ".")
+@click.option("--timeout", type=click.FloatRange(min=0, min_open=True), default=DEFAULT_TIMEOUT,
+              show_default=True, metavar="SECONDS",
+              help="Wall-time budget of each run (auto as a whole); past it the run's worker is "
+                   "killed and the verdict is inconclusive.")
+@click.option("--memory", type=click.FloatRange(min=0, min_open=True), default=DEFAULT_MEMORY_GIB,
+              show_default=True, metavar="GIB",
+              help="Memory budget (address space, GiB) of each run's worker; a run that exceeds it "
+                   "is an error.")
+@click.option("--jobs", type=click.IntRange(min=1), default=1, show_default=True, metavar="N",
+              help="Runs computed in parallel (worker processes); the results come in the same "
+                   "order with the same verdicts whatever N.")
 def verify(ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tuple[str, ...], seed: int,
-           claims_file: str | None, report_dir: Path | None, fmt: str, no_report: bool,
-           hard: str | None) -> int:
+           claims_files: tuple[str, ...], report_dir: Path | None, fmt: str, no_report: bool,
+           hard: str | None, timeout: float, memory: float, jobs: int) -> int:
     """Verify claims (default: the whole catalog) and print one line per result.
 
     CLAIM is a claim id (see `stiefelsym list`).  With --claims FILE the claims of
     your own file are verified, optionally together with catalog claims named as
-    CLAIM; a claim of FILE shadows a catalog claim of the same id.  After every
-    failure or unexpected verdict the command that reruns it is printed.
+    CLAIM; a claim of FILE shadows a catalog claim of the same id.  A failure is
+    printed with its witness in short, an undecided, inconclusive or error verdict
+    with its reason, and after every failure or unexpected verdict the command that
+    reruns it.  When a claim fails as printed, each of its registered corrections is
+    then verified at every size the claim was run at.
 
     Reports (results.json, verification.md, verification.tex) are written only after
     the run has finished, each file atomically, and not at all when interrupted.  A
@@ -377,24 +541,32 @@ def verify(ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tuple[str, ..
     silently overwrites the catalog's reports.
 
     With --format json or junit, stdout holds only that document; the result lines
-    and the summary go to stderr.  A progress bar is shown on stderr when it is a
-    terminal.
+    and the summary go to stderr.  Whatever claims print goes to stderr.  A progress
+    bar is shown on stderr when it is a terminal.
 
     Exit status: 0 every verdict as expected, 1 some verdict unexpected, 2 bad
-    input, 130 interrupted.
+    input, 130 interrupted (Ctrl-C), 143 terminated (SIGTERM).
     """
+    with _Stdout() as out, raise_on_sigterm():
+        return _verify(out, ids, sizes, methods, seed, claims_files, report_dir, fmt, no_report,
+                       hard, timeout, memory, jobs)
+
+
+def _verify(out: Any, ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tuple[str, ...],
+            seed: int, claims_files: tuple[str, ...], report_dir: Path | None, fmt: str,
+            no_report: bool, hard: str | None, timeout: float, memory: float, jobs: int) -> int:
     if no_report and report_dir is not None:
         raise InputError("--no-report and --report-dir contradict each other")
     if hard is not None and set(methods or ("auto",)) & {"exact", "free"}:
         raise InputError("--hard evaluates sampled points: use it with --method rational, modular, float "
                          "or auto")
-    full_run = not ids and not claims_file and not sizes and hard is None
+    full_run = not ids and not claims_files and not sizes and hard is None
     target = None if no_report else (report_dir if report_dir is not None
                                      else DEFAULT_REPORT_DIR if full_run else None)
     if target is not None:
         _check_report_dir(target)
     runner = _runner()
-    registry, user = _registry(claims_file, ids)
+    registry, user = _registry(claims_files, ids)
     if ids:
         try:
             claims = runner.select(registry, list(ids))
@@ -402,24 +574,38 @@ def verify(ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tuple[str, ..
             raise InputError(exc.args[0] if exc.args else str(exc)) from None
     else:
         claims = list(registry)
-    user_ids = set(user.ids()) if user is not None else set()
+    origin: dict[str, str] = getattr(user, "origin", {}) if user is not None else {}
+    user_ids = set(origin)
     methods = methods or ("auto",)
-    out_err = fmt != "text"  # result lines go to stderr when stdout is a document
+    budgets: list[str] = []
+    if timeout != DEFAULT_TIMEOUT:
+        budgets += ["--timeout", f"{timeout:g}"]
+    if memory != DEFAULT_MEMORY_GIB:
+        budgets += ["--memory", f"{memory:g}"]
+    dest = out if fmt == "text" else sys.stderr   # result lines go to stderr when stdout is a document
     progress = _Progress(_isatty(sys.stderr))
     results: list[Result] = []
+
+    def say(text: str, nl: bool = True) -> None:
+        click.echo(text, file=dest, nl=nl)
 
     def on_result(r: Result) -> None:
         if not r.rerun:
             r.rerun = runner.rerun_command(r)
         if r.claim in user_ids and "--claims" not in r.rerun:
-            r.rerun += " --claims " + shlex.quote(claims_file or "")
+            r.rerun += " --claims " + shlex.quote(origin[r.claim])
+        if budgets and budgets[0] not in r.rerun:
+            r.rerun += " " + shlex.join(budgets)
         results.append(r)
         progress.clear()
-        click.echo(r.line(), err=out_err)
-        if r.verdict in ("fails", "error") or not r.expected:
-            if r.message:
-                click.echo(f"  {_one_line(r.message)}", err=out_err)
-            click.echo(f"  rerun: {r.rerun}", err=out_err)
+        say(r.line())
+        reason = r.reason(None)
+        if reason and reason != r.reason():
+            say(f"  {_shorten(reason, 2000)}")        # the whole reason, which the line had to cut
+        if r.verdict == "fails" and r.message and _one_line(r.message) not in reason:
+            say(f"  {_shorten(_one_line(r.message), 2000)}")
+        if r.verdict in ("fails", "error", "inconclusive") or not r.expected:
+            say(f"  rerun: {r.rerun}")
         progress.advance(r)
 
     started = datetime.now(timezone.utc)
@@ -427,15 +613,18 @@ def verify(ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tuple[str, ..
     try:
         try:
             runner.verify(claims, sizes=list(sizes) or None, methods=tuple(methods), seed=seed,
-                          on_result=on_result, on_plan=progress.plan, hard=hard)
+                          on_result=on_result, on_plan=progress.plan, hard=hard,
+                          timeout=timeout, memory=memory, jobs=jobs, strict_sizes=bool(ids))
         finally:
             progress.close()
         meta = {
-            "title": _title(claims_file, user_ids, claims),
-            "command": _command(ids, claims_file, sizes, methods, seed, report_dir),
+            "title": _title(claims_files, user_ids, claims),
+            "command": _command(ids, claims_files, sizes, methods, seed, report_dir, budgets),
             "seed": seed, "methods": list(methods), "hard": hard,
             "sizes": [f"{s.n},{s.r}" for s in sizes] or None,
-            "claims_file": claims_file,
+            "claims_file": claims_files[0] if claims_files else None,
+            "claims_files": list(claims_files),
+            "timeout": timeout, "memory_gib": memory, "jobs": jobs,
             "date": started.strftime("%Y-%m-%d %H:%M:%S UTC"),
             "seconds": round(time.perf_counter() - t0, 2),
             "versions": _versions(), "platform": platform.platform(terse=True),
@@ -443,10 +632,12 @@ def verify(ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tuple[str, ..
         }
         summary = render_summary(results)
         if fmt == "json":
-            click.echo(dump_results(results, meta), nl=False)
+            click.echo(dump_results(results, meta), file=out, nl=False)
         elif fmt == "junit":
-            click.echo(render_junit(results, meta), nl=False)
-        click.echo(summary, err=out_err, nl=False)
+            click.echo(render_junit(results, meta), file=out, nl=False)
+        say(summary, nl=False)
+        if any(r.false_pass_bound is not None for r in results):
+            say(P_LEGEND)
         if target is not None:
             try:
                 paths = _write_reports(target, results, meta)
@@ -458,24 +649,30 @@ def verify(ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tuple[str, ..
                        "one)", err=True)
     except (SizeError, runner.BudgetError) as exc:
         raise InputError(str(exc)) from None
-    except KeyboardInterrupt:
+    except (KeyboardInterrupt, Terminated) as exc:
         lead = "\n" if _isatty(sys.stderr) else ""
-        click.echo(f"{lead}stiefelsym: interrupted after {progress.done} of "
+        what = "interrupted" if isinstance(exc, KeyboardInterrupt) else "terminated"
+        click.echo(f"{lead}stiefelsym: {what} after {progress.done} of "
                    f"{progress.total or '?'} runs; no report written", err=True)
-        raise click.exceptions.Exit(EXIT_INTERRUPTED) from None
+        raise click.exceptions.Exit(EXIT_INTERRUPTED if isinstance(exc, KeyboardInterrupt)
+                                    else EXIT_TERMINATED) from None
     if not results:
         click.echo("note: nothing was run", err=True)
     return EXIT_UNEXPECTED if any(not r.expected for r in results) else EXIT_OK
 
 
-def _title(claims_file: str | None, user_ids: set[str], claims: list[Claim]) -> str | None:
+def _shorten(text: str, limit: int) -> str:
+    return text if len(text) <= limit else text[: limit - 3] + "..."
+
+
+def _title(claims_files: Sequence[str], user_ids: set[str], claims: list[Claim]) -> str | None:
     """None (the paper's title) unless user claims were verified."""
-    if not claims_file:
+    if not claims_files:
         return None
-    name = Path(claims_file).name
+    names = ", ".join(dict.fromkeys(Path(f).name for f in claims_files))
     if all(c.id in user_ids for c in claims):
-        return f"Verification of the claims of {name}"
-    return f"Verification of the claims of {name} and of the paper's catalog"
+        return f"Verification of the claims of {names}"
+    return f"Verification of the claims of {names} and of the paper's catalog"
 
 
 # --------------------------------------------------------------------------- list, show
@@ -492,10 +689,11 @@ def _sizes_text(sizes: Sequence[Size], limit: int = 4) -> str:
 
 
 @main.command("list")
-@click.option("--claims", "claims_file", metavar="FILE", help="List the claims of this file.")
-def list_claims(claims_file: str | None) -> None:
+@click.option("--claims", "claims_files", metavar="FILE", multiple=True,
+              help="List the claims of this file (repeatable).")
+def list_claims(claims_files: tuple[str, ...]) -> None:
     """List the claims: id, paper label(s), kind, section, sizes."""
-    registry = _user_claims(claims_file) if claims_file else _catalog()
+    registry = _user_claims(claims_files) if claims_files else _catalog()
     rows = [("id", "paper", "kind", "§", "sizes")]
     rows += [(c.id, ", ".join(c.paper), c.kind, c.section or "-", _sizes_text(c.sizes))
              for c in registry]
@@ -507,10 +705,11 @@ def list_claims(claims_file: str | None) -> None:
 
 @main.command()
 @click.argument("claim_id", metavar="CLAIM")
-@click.option("--claims", "claims_file", metavar="FILE", help="Look the claim up in this file first.")
-def show(claim_id: str, claims_file: str | None) -> None:
+@click.option("--claims", "claims_files", metavar="FILE", multiple=True,
+              help="Look the claim up in this file first (repeatable).")
+def show(claim_id: str, claims_files: tuple[str, ...]) -> None:
     """Show one claim: statement, docstring, sizes, source."""
-    registry, _ = _registry(claims_file, (claim_id,))
+    registry, _ = _registry(claims_files, (claim_id,))
     c = _lookup(registry, claim_id)
     click.echo(f"{c.id}  (paper: {', '.join(c.paper)})  §{c.section or '-'}")
     click.echo(f"kind:        {c.kind}: {KIND_MEANING.get(c.kind, '')}")
@@ -533,12 +732,13 @@ def show(claim_id: str, claims_file: str | None) -> None:
 
 @main.command()
 @click.argument("claim_id", metavar="CLAIM")
-@click.option("--claims", "claims_file", metavar="FILE", help="Look the claim up in this file first.")
-def derive(claim_id: str, claims_file: str | None) -> None:
+@click.option("--claims", "claims_files", metavar="FILE", multiple=True,
+              help="Look the claim up in this file first (repeatable).")
+def derive(claim_id: str, claims_files: tuple[str, ...]) -> None:
     """Print the dimension-free proof of CLAIM as LaTeX: each residual, the rules that
     reduce it, its normal form.  Exit status 1 when the claim is not proved for all n, r."""
     from .free_method import run_free
-    registry, _ = _registry(claims_file, (claim_id,))
+    registry, _ = _registry(claims_files, (claim_id,))
     c = _lookup(registry, claim_id)
     res = run_free(c)
     click.echo(f"% {c.id} ({', '.join(c.paper)}): {res.verdict} for all n, r", err=False)
@@ -568,7 +768,7 @@ def _source(c: Claim) -> str:
 @main.command()
 @click.option("--results", "results_file", type=click.Path(path_type=Path), metavar="FILE",
               help="The JSON results (default: DIR/results.json, DIR defaulting to reports/).")
-@click.option("--report-dir", type=click.Path(path_type=Path), metavar="DIR",
+@click.option("--report-dir", type=str, callback=_report_dir, metavar="DIR",
               help="Where to write verification.md and verification.tex (default: the results "
                    "file's directory).")
 def report(results_file: Path | None, report_dir: Path | None) -> None:
@@ -592,6 +792,13 @@ def report(results_file: Path | None, report_dir: Path | None) -> None:
         raise InputError(f"cannot write reports to {target}: {exc.strerror or exc}") from None
     click.echo(f"reports: {', '.join(str(target / n) for n in texts)} "
                f"({len(results)} results)", err=True)
+
+
+# --------------------------------------------------------------------------- mutate
+
+# ``stiefelsym mutate`` lives in its own module, imported only when it is asked for (or the
+# commands are listed); if the module is missing the command is simply not there.
+main.lazy = {"mutate": ("stiefelsym.cli_mutate", "mutate")}
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -14,6 +14,16 @@ PASSING = ("proved", "checked", "numeric")
 SCHEMA_VERSION = 1
 
 
+#: characters of a verdict's reason shown on its terminal line
+REASON_LIMIT = 120
+
+
+def _clip(text: str, limit: int | None) -> str:
+    if limit is None or len(text) <= limit:
+        return text
+    return text[: max(limit - 3, 0)] + "..."
+
+
 @dataclass
 class CheckOutcome:
     """What happened to one named check of a claim."""
@@ -57,13 +67,33 @@ class Result:
     def size(self) -> str:
         return "all n, r" if self.n is None else f"({self.n},{self.r})"
 
-    def line(self) -> str:
-        """One greppable line for the terminal."""
+    def line(self, limit: int = REASON_LIMIT) -> str:
+        """One greppable line for the terminal: a failure with its witness in short, an
+        undecided, inconclusive or error verdict with its reason in short."""
         tag = "" if self.expected else "  UNEXPECTED"
         var = f" [{self.variant}]" if self.variant else ""
         bound = f" p<={self.false_pass_bound:.1e}" if self.false_pass_bound is not None else ""
+        reason = self.reason(limit)
         return (f"{self.claim}{var} {self.size} {self.method}: {self.verdict}{bound}"
-                f" ({self.seconds:.2f}s, seed {self.seed}){tag}")
+                f" ({self.seconds:.2f}s, seed {self.seed}){tag}" + (f" -- {reason}" if reason else ""))
+
+    def reason(self, limit: int | None = REASON_LIMIT) -> str:
+        """Why the verdict, in one line (at most ``limit`` characters; None: all of it):
+        for ``fails`` the witness (entry = value, or the rank or count mismatch), for
+        ``undecided``, ``inconclusive`` and ``error`` the message; empty otherwise."""
+        if self.verdict == "fails":
+            w = self.witness or {}
+            if w.get("entry") is not None and w.get("value") is not None:
+                text = f"witness {w['entry']} = {_clip(str(w['value']), 60)}"
+            elif self.residual:
+                text = f"residual {self.residual}"
+            else:
+                text = self.certificate or self.message
+        elif self.verdict in ("undecided", "inconclusive", "error"):
+            text = self.message or self.certificate
+        else:
+            return ""
+        return _clip(" ".join(str(text).split()), limit)
 
     def to_json(self) -> dict[str, Any]:
         d = asdict(self)
@@ -76,12 +106,25 @@ class Result:
         return cls(**d)
 
 
+def _umask() -> int:
+    mask = os.umask(0o022)
+    os.umask(mask)
+    return mask
+
+
 def write_atomic(path: Path, text: str) -> None:
-    """Write a file so that an interruption never leaves it half-written."""
+    """Write a file so that an interruption never leaves it half-written.
+
+    The file gets the permissions of any newly created file (0o666 less the umask),
+    not the owner-only ones of the temporary file it is renamed from."""
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
     try:
+        try:
+            os.fchmod(fd, 0o666 & ~_umask())
+        except (AttributeError, OSError):   # no fchmod (Windows), or a file system without modes
+            pass
         with os.fdopen(fd, "w", encoding="utf-8") as fh:
             fh.write(text)
         os.replace(tmp, path)

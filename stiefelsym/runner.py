@@ -1,4 +1,13 @@
-"""Plans and runs verifications: claims x sizes x methods -> Result records."""
+"""Plans and runs verifications: claims x sizes x methods -> Result records.
+
+Every (claim, size, method) of a plan runs in a forked worker process with a
+wall-time budget and a memory budget (:mod:`stiefelsym.pool`); ``auto`` (exact,
+then modular) is budgeted as a whole.  A run that exceeds its time is
+``inconclusive``; one that crashes, raises anything (``SystemExit`` included),
+exhausts its memory or kills its process is an ``error``, and the plan goes on.
+Whether a verdict is the expected one is decided here, in the parent process,
+never by the code that ran the claim.
+"""
 from __future__ import annotations
 
 import shlex
@@ -7,10 +16,15 @@ from typing import Callable, Iterable
 from .claims import Claim, Registry, Size
 from .hard import hard_case
 from .methods import BUDGET, METHOD_RUNNERS, BudgetError, check_budget, expected_verdict  # noqa: F401 (BudgetError is part of the runner API)
-from .results import Result
+from .pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT, GIB, Outcome, Terminated, WorkerPool  # noqa: F401
+from .results import VERDICTS, Result
 from .scene import SizeError
 
 METHODS = ("auto", "exact", "rational", "modular", "float", "free")
+#: the verdicts that are never expected: the method could not decide, or the check broke
+NEVER_EXPECTED = ("inconclusive", "error")
+
+Task = tuple  # (claim index, n or None, r or None, method, correction index or -1)
 
 
 def select(registry: Registry, ids: Iterable[str]) -> list[Claim]:
@@ -27,8 +41,18 @@ def _sizes_for(claim: Claim, sizes: list[Size] | None) -> list[Size]:
     return [s for s in sizes if claim.sizes.admits(s.n, s.r)]
 
 
-def plan(claims: list[Claim], sizes: list[Size] | None, methods: Iterable[str]) -> list[tuple[Claim, Size | None, str]]:
-    """Every (claim, size, method) to run; size None is a dimension-free run."""
+def _spec_text(claim: Claim) -> str:
+    describe = getattr(claim.sizes, "describe", None)
+    return describe() if describe is not None else "its declared sizes"
+
+
+def plan(claims: list[Claim], sizes: list[Size] | None, methods: Iterable[str],
+         strict: bool = False) -> list[tuple[Claim, Size | None, str]]:
+    """Every (claim, size, method) to run; size None is a dimension-free run.
+
+    With ``strict`` (the claims were named explicitly) a size outside a claim's
+    declared sizes is refused; otherwise such a claim skips that size, and a size
+    that no claim admits is refused."""
     methods = list(methods)
     for m in methods:
         if m not in METHODS:
@@ -38,9 +62,16 @@ def plan(claims: list[Claim], sizes: list[Size] | None, methods: Iterable[str]) 
             for m in methods:
                 if m != "free":
                     check_budget(m, s.n, s.r)
-        if not any(_sizes_for(c, sizes) for c in claims) and any(m != "free" for m in methods):
-            wanted = ", ".join(f"({s.n},{s.r})" for s in sizes)
-            raise SizeError(f"no selected claim is stated for size {wanted}")
+        if any(m != "free" for m in methods):
+            if strict:
+                for c in claims:
+                    for s in sizes:
+                        if not c.sizes.admits(s.n, s.r):
+                            raise SizeError(f"claim {c.id} is stated for sizes {_spec_text(c)}; "
+                                            f"({s.n},{s.r}) is outside")
+            for s in sizes:
+                if not any(c.sizes.admits(s.n, s.r) for c in claims):
+                    raise SizeError(f"no selected claim is stated for size ({s.n},{s.r})")
     runs: list[tuple[Claim, Size | None, str]] = []
     for c in claims:
         for m in methods:
@@ -59,56 +90,81 @@ def plan(claims: list[Claim], sizes: list[Size] | None, methods: Iterable[str]) 
     return out
 
 
+# --------------------------------------------------------------------------- one run
+
 def run_one(claim: Claim, size: Size | None, method: str, seed: int, func: Callable | None = None,
             variant: str | None = None, hard: str | None = None) -> Result:
-    """One result for one (claim, size, method); ``hard`` names a hard numerical case."""
+    """One result for one (claim, size, method), computed in this process (no budgets but the
+    symbolic method's own); ``hard`` names a hard numerical case."""
+    return _finish(_guarded(claim, size, method, seed, func, hard), claim, variant, hard)
+
+
+def _guarded(claim: Claim, size: Size | None, method: str, seed: int, func: Callable | None,
+             hard: str | None, in_worker: bool = False, timeout: float | None = None) -> Result:
+    """The raw result (verdict policy not applied); whatever the claim raises is an ``error``.
+
+    In a worker, MemoryError is left to the pool (which reports the memory budget and
+    replaces the worker)."""
     options = {"hard": hard_case(hard)} if hard else None
     try:
-        res = _dispatch(claim, size, method, seed, func, options)
-    except KeyboardInterrupt:
+        return _dispatch(claim, size, method, seed, func, options, in_worker, timeout)
+    except (KeyboardInterrupt, Terminated):
         raise
-    except Exception as exc:   # a bug in the claim (or the engine): an "error" verdict, never a traceback
+    except MemoryError:
+        if in_worker:
+            raise
+        return _error(claim, size, method, seed, "MemoryError: the computation ran out of memory")
+    except BaseException as exc:  # noqa: BLE001 - a bug in the claim (or the engine), SystemExit included
         from .isolate import ChildError
-        from .methods import _base_result, _describe
-        res = _base_result(claim, size.n if size else None, size.r if size else None,
-                           "free" if size is None else method, seed)
-        res.verdict = "error"
-        res.message = str(exc) if isinstance(exc, ChildError) else _describe(exc)
-    return _finish(res, claim, variant)
+        from .methods import _describe
+        return _error(claim, size, method, seed, str(exc) if isinstance(exc, ChildError) else _describe(exc))
+
+
+def _blank(claim: Claim, size: Size | None, method: str, seed: int | None) -> Result:
+    from .methods import _base_result
+    label = "free" if size is None else method
+    return _base_result(claim, size.n if size else None, size.r if size else None, label,
+                        None if label in ("exact", "free") else seed)
+
+
+def _error(claim: Claim, size: Size | None, method: str, seed: int, message: str) -> Result:
+    res = _blank(claim, size, method, seed)
+    res.verdict, res.message = "error", message
+    return res
+
+
+def _exact_runner(in_worker: bool, budget: float | None) -> Callable[..., Result]:
+    """The symbolic method: in a worker it runs right there (the worker is the killable
+    process); elsewhere in its own killable child."""
+    if not in_worker:
+        return METHOD_RUNNERS["exact"]
+    from .methods import EXACT_TIME_LIMIT, run_exact
+    limit = EXACT_TIME_LIMIT if budget is None else min(EXACT_TIME_LIMIT, budget)
+    return lambda c, n, r, seed, func=None, options=None: run_exact(c, n, r, seed, func, limit)
 
 
 def _dispatch(claim: Claim, size: Size | None, method: str, seed: int, func: Callable | None,
-              options: dict | None) -> Result:
+              options: dict | None, in_worker: bool = False, timeout: float | None = None) -> Result:
     if method == "free" or size is None:
         from .free_method import run_free
-        res = run_free(claim, func)
-    elif method == "auto":
-        res = _run_auto(claim, size, seed, func) if not options else \
-            METHOD_RUNNERS["rational"](claim, size.n, size.r, seed, func, options)
-    else:
-        if options and method == "exact":
+        return run_free(claim, func)
+    if method == "auto":
+        if options:
+            return METHOD_RUNNERS["rational"](claim, size.n, size.r, seed, func, options)
+        # the whole of auto shares one budget: the symbolic attempt gets half of it
+        return _run_auto(claim, size, seed, func, _exact_runner(in_worker, None if timeout is None else timeout / 2))
+    if method == "exact":
+        if options:
             raise ValueError("hard cases are sampled points: use --method rational, modular or float")
-        res = METHOD_RUNNERS[method](claim, size.n, size.r, seed, func, options)
-    return res
+        return _exact_runner(in_worker, timeout)(claim, size.n, size.r, seed, func)
+    return METHOD_RUNNERS[method](claim, size.n, size.r, seed, func, options)
 
 
-def _finish(res: Result, claim: Claim, variant: str | None) -> Result:
-    res.variant = variant
-    if res.method == "free":
-        res.expected = res.verdict in ("proved", "undecided")
-    elif res.verdict == "inconclusive" and res.message.startswith("not applicable"):
-        res.expected = True
-    else:
-        res.expected = expected_verdict(claim, res.verdict, variant, res.n, res.r)
-    if variant is None and claim.erratum and claim.expects_failure(res.n, res.r):
-        res.erratum = claim.erratum
-    res.rerun = rerun_command(res)
-    return res
-
-
-def _run_auto(claim: Claim, size: Size, seed: int, func: Callable | None) -> Result:
+def _run_auto(claim: Claim, size: Size, seed: int, func: Callable | None,
+              exact: Callable[..., Result] | None = None) -> Result:
+    exact = exact or METHOD_RUNNERS["exact"]
     if size.n <= min(claim.exact_max_n, BUDGET["exact"]):
-        res = METHOD_RUNNERS["exact"](claim, size.n, size.r, seed, func)
+        res = exact(claim, size.n, size.r, seed, func)
         if res.verdict != "inconclusive":
             return res
         reason = res.message
@@ -121,46 +177,146 @@ def _run_auto(claim: Claim, size: Size, seed: int, func: Callable | None) -> Res
     return res
 
 
+def _finish(res: Result, claim: Claim, variant: str | None, hard: str | None = None) -> Result:
+    """The verdict policy: which verdicts the catalog expects.
+
+    ``undecided`` (the method does not apply here) is expected of every method;
+    ``inconclusive`` (could not be decided numerically, or a budget was hit) and
+    ``error`` never are; ``fails`` only where a documented erratum says so."""
+    res.variant = variant
+    if res.verdict == "inconclusive" and res.message.startswith("not applicable"):
+        res.verdict = "undecided"     # the method has nothing to say here, e.g. float on a pure rank claim
+    if res.verdict == "undecided":
+        res.expected = True
+    elif res.verdict in NEVER_EXPECTED:
+        res.expected = False
+    elif res.method == "free":
+        res.expected = res.verdict == "proved" and (variant is not None or claim.expect != "fails")
+    else:
+        res.expected = expected_verdict(claim, res.verdict, variant, res.n, res.r)
+    if variant is None and claim.erratum and claim.expects_failure(res.n, res.r):
+        res.erratum = claim.erratum
+    res.rerun = rerun_command(res, hard)
+    return res
+
+
+# --------------------------------------------------------------------------- the plan, in workers
+
+def _execute(claims: list[Claim], seed: int, hard: str | None, timeout: float, task: Task) -> Result:
+    """Run one task (in a worker): the raw result."""
+    ci, n, r, method, k = task
+    c = claims[ci]
+    func = c.corrections[k].func if k >= 0 else None
+    return _guarded(c, None if n is None else Size(n, r), method, seed, func, hard, in_worker=True,
+                    timeout=timeout)
+
+
+def _settle(outcome: Outcome, task: Task, claims: list[Claim], seed: int, hard: str | None) -> Result:
+    """The finished result of a task, from what the pool reported (in the parent)."""
+    ci, n, r, method, k = task
+    c = claims[ci]
+    size = None if n is None else Size(n, r)
+    variant = c.corrections[k].description if k >= 0 else None
+    res = outcome.value if outcome.kind == "ok" else None
+    if res is not None and not (isinstance(res, Result) and res.verdict in VERDICTS
+                                and res.claim == c.id and (res.n, res.r) == (n, r)):
+        res = _error(c, size, method, seed, "the run did not return a result record for this claim and size")
+    if res is None:
+        res = _blank(c, size, method, seed)
+        res.verdict = "inconclusive" if outcome.kind == "timeout" else "error"
+        res.message = outcome.message
+        res.seconds = outcome.seconds
+    return _finish(res, c, variant, hard)
+
+
+def _preload(tasks: list[Task]) -> None:
+    """Import, before forking, what the workers will need (so a fresh worker starts ready)."""
+    if any(t[1] is None for t in tasks):
+        from . import free  # noqa: F401
+        from . import free_method  # noqa: F401
+    if any(t[3] in ("auto", "exact") for t in tasks):
+        import sympy.polys.matrices  # noqa: F401
+
+
 def verify(claims: list[Claim], *, sizes: list[Size] | None = None, methods: Iterable[str] = ("auto",),
            seed: int = 0, on_result: Callable[[Result], None] | None = None,
-           on_plan: Callable[[int], None] | None = None, hard: str | None = None) -> list[Result]:
-    """Run the plan; claims that fail as printed are followed by their registered corrections."""
+           on_plan: Callable[[int], None] | None = None, hard: str | None = None,
+           timeout: float = DEFAULT_TIMEOUT, memory: float | None = DEFAULT_MEMORY_GIB, jobs: int = 1,
+           strict_sizes: bool = False, fork: bool | None = None) -> list[Result]:
+    """Run the plan, in order, in ``jobs`` worker processes; ``timeout`` seconds and ``memory``
+    GiB (None: no limit) per run.
+
+    Then, for every (claim, method) whose printed statement fails at some size, each
+    registered correction is run at every planned size of that claim for that method:
+    a correction is verified only where it holds everywhere.  ``on_result`` sees the
+    results in that order (the plan first, then the corrections)."""
     if seed < 0:
         raise ValueError("the seed must be a non-negative integer")
+    if not timeout or timeout <= 0:
+        raise ValueError("the time budget must be a positive number of seconds")
+    if memory is not None and memory <= 0:
+        raise ValueError("the memory budget must be a positive number of GiB")
+    if jobs < 1:
+        raise ValueError("--jobs must be at least 1")
     if hard is not None:
         hard_case(hard)
         methods = [m for m in methods if m != "free"]
         if "exact" in methods:
             raise ValueError("hard cases are sampled points: use --method rational, modular or float")
-    runs = plan(claims, sizes, methods)
+    claims = list(claims)
+    runs = plan(claims, sizes, methods, strict=strict_sizes)
     if on_plan is not None:
         on_plan(len(runs))
+    index = {id(c): i for i, c in enumerate(claims)}
+    tasks: list[Task] = [(index[id(c)], None if s is None else s.n, None if s is None else s.r, m, -1)
+                         for c, s, m in runs]
+    memory_bytes = None if memory is None else int(memory * GIB)
     results: list[Result] = []
-    for c, s, m in runs:
-        res = run_one(c, s, m, seed, hard=hard)
+
+    def execute(task: Task) -> Result:
+        return _execute(claims, seed, hard, timeout, task)
+
+    def deliver(res: Result) -> None:
         results.append(res)
         if on_result is not None:
             on_result(res)
-        if res.verdict == "fails" and res.variant is None and c.corrections and s is not None:
-            for corr in c.corrections:
-                fix = run_one(c, s, m, seed, corr.func, corr.description, hard=hard)
-                results.append(fix)
-                if on_result is not None:
-                    on_result(fix)
+
+    if not tasks:
+        return results
+    _preload(tasks)
+    from .methods import _describe
+    with WorkerPool(execute, workers=min(jobs, len(tasks)), timeout=timeout, memory=memory_bytes,
+                    describe=_describe, fork=fork) as pool:
+        failed: dict[tuple[int, str], None] = {}
+        for i, outcome in pool.run(tasks):
+            res = _settle(outcome, tasks[i], claims, seed, hard)
+            deliver(res)
+            ci, n, _, m, _ = tasks[i]
+            if res.verdict == "fails" and n is not None and claims[ci].corrections:
+                failed.setdefault((ci, m))
+        corrections: list[Task] = []
+        for ci, m in failed:
+            planned = [(t[1], t[2]) for t in tasks if t[0] == ci and t[3] == m and t[1] is not None]
+            for k in range(len(claims[ci].corrections)):
+                corrections += [(ci, n, r, m, k) for n, r in planned]
+        for i, outcome in pool.run(corrections):
+            deliver(_settle(outcome, corrections[i], claims, seed, hard))
     return results
 
 
-def rerun_command(result: Result) -> str:
+def rerun_command(result: Result, hard: str | None = None) -> str:
     parts = ["stiefelsym", "verify", result.claim]
     if result.n is not None:
         parts += ["--size", f"{result.n},{result.r}"]
     parts += ["--method", result.method]
     if result.seed is not None:
         parts += ["--seed", str(result.seed)]
-    hard = next((h for h in result.reductions if h.startswith("hard case: ")), None)
-    if hard is not None:
-        from .hard import HARD_CASES
-        name = next((k for k, v in HARD_CASES.items() if v.description in hard), None)
-        if name:
-            parts += ["--hard", name]
+    if hard is None:
+        text = next((h for h in result.reductions if h.startswith("hard case: ")), None)
+        if text is not None:
+            from .hard import HARD_CASES
+            hard = next((k for k, v in HARD_CASES.items() if v.description in text), None)
+    if hard:
+        parts += ["--hard", hard]
     return " ".join(shlex.quote(p) for p in parts)
+

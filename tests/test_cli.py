@@ -43,9 +43,11 @@ class FakeRunner:
     def select(self, registry: Registry, ids: list[str]) -> list[Claim]:
         return [registry.get(i) for i in ids]
 
-    def verify(self, claims, *, sizes=None, methods=("auto",), seed=0, on_result=None, on_plan=None, hard=None):
+    def verify(self, claims, *, sizes=None, methods=("auto",), seed=0, on_result=None, on_plan=None, hard=None,
+               timeout=300.0, memory=4.0, jobs=1, strict_sizes=False):
         self.calls.append({"claims": [c.id for c in claims], "sizes": sizes, "methods": methods,
-                           "seed": seed})
+                           "seed": seed, "timeout": timeout, "memory": memory, "jobs": jobs,
+                           "strict_sizes": strict_sizes})
         for s in sizes or ():
             if s.r > s.n or s.r < 1:
                 raise SizeError(f"inadmissible size n={s.n}, r={s.r}")
@@ -182,7 +184,7 @@ def test_unexpected_verdict_exits_1_and_prints_rerun(fake, run):
     assert result.exit_code == 1
     lines = result.stdout.splitlines()
     i = next(i for i, line in enumerate(lines) if line.startswith("prep (1,1) auto: fails"))
-    assert lines[i].endswith("UNEXPECTED")
+    assert lines[i].endswith("UNEXPECTED -- witness (1,2) = 3/7")   # the witness in short
     assert lines[i + 1] == "  rerun: stiefelsym verify prep --size 1,1 --method auto --seed 7"
     assert "unexpected verdicts:" in result.stdout
 
