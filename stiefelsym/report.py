@@ -880,7 +880,10 @@ def kill_rate(row: dict[str, Any]) -> str:
     denom = row.get("total", 0) - row.get("equivalent", 0)
     if denom <= 0 or row.get("baseline_passes") is False:
         return "–"
-    return f"{100 * row.get('killed', 0) / denom:.0f}%"
+    killed = row.get("killed", 0)
+    if killed == denom:
+        return "100%"
+    return f"{min(99.9, 100 * killed / denom):.1f}%"   # never rounded up to 100%
 
 
 def _mutation_cells(row: dict[str, Any]) -> list[str]:

@@ -388,7 +388,7 @@ def test_mutation_section_in_markdown(results):
     md = render_markdown(results, {"seed": 0}, mutation=_mutation())
     assert re.findall(r"^## (.*)$", md, re.M)[-1] == "Mutation analysis"
     section = md[md.index("## Mutation analysis"):]
-    assert "| `prep` | rational | checked | 3 | 1 | 0 | 1 | 0 | 1 | 1 | 0 | 0 | 50% |" in section
+    assert "| `prep` | rational | checked | 3 | 1 | 0 | 1 | 0 | 1 | 1 | 0 | 0 | 50.0% |" in section
     assert "| `prep` | free | undecided | 3 | 0 | 0 | 1 | 0 | 1 | 1 | 0 | 0 | – |" in section
     assert "**1 survivor**" in section and "**survived float, free**" in section
     assert "`prep#2` line 14: remove the transpose in `Lam.T` in `Lam - Lam.T`" in section
@@ -419,3 +419,11 @@ def test_mutation_section_in_latex_compiles(results, tmp_path):
         assert proc.returncode == 0, proc.stdout[-3000:]
     log = (tmp_path / "verification.log").read_text(errors="replace")
     assert "Undefined control sequence" not in log and "Missing character" not in log
+
+
+def test_kill_rate_is_never_rounded_up_to_100_percent():
+    from stiefelsym.report import kill_rate
+    assert kill_rate({"total": 1001, "killed": 1000, "equivalent": 0}) == "99.9%"
+    assert kill_rate({"total": 5, "killed": 4, "equivalent": 1}) == "100%"
+    assert kill_rate({"total": 5, "killed": 0, "equivalent": 5}) == "–"
+    assert kill_rate({"total": 5, "killed": 5, "equivalent": 0, "baseline_passes": False}) == "–"
