@@ -36,6 +36,10 @@ class MutateInputError(click.ClickException):
 
     exit_code = EXIT_INPUT
 
+    def __init__(self, message: str) -> None:
+        super().__init__(message)
+        self.ctx = click.get_current_context(silent=True)
+
 
 class _Command(click.Command):
     """Run standalone, every error is one line on stderr with a documented exit status (inside

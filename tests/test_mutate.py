@@ -235,6 +235,17 @@ def test_search_corrections_at_r_1_cannot_see_the_sign():
     assert run_one(c, Size(3, 1), "rational", 0).verdict == "checked"
 
 
+def test_search_corrections_finds_the_catalogs_registered_erratum_fix():
+    """The remark before Lemma 2l: "regular iff n <= 2r + 1" fails at (4, 1); one mutation away is
+    the registered correction n <= 2r + 2 (and, at n <= 5, the indistinguishable n <= 3r + 1)."""
+    c = load_catalog().get("adjoint-orbit-regularity")
+    sizes = [s for s in c.sizes if s.n <= 5]
+    assert run_one(c, Size(4, 1), "rational", 0).verdict == "fails"
+    texts = {m.description.split(": ", 1)[1] for m in search_corrections(c, sizes, ["rational"])}
+    assert "change the coefficient 1 to 2 in `2 * r + 1`" in texts
+    assert texts <= {"change the coefficient 1 to 2 in `2 * r + 1`", "change the coefficient 2 to 3 in `2 * r`"}
+
+
 # --------------------------------------------------------------------------- end to end
 
 SMALL = ("euclidean-invariance", "normal-hamiltonian", "invariants-so-n")
