@@ -37,6 +37,11 @@ USER_SCALAR = "scalar:"
 USER_GENERIC = "generic:"
 
 
+def param_name(name: str, i: int, j: int) -> str:
+    """The name of entry (i, j) of a parameter matrix: "S_1,12" (one name per entry at every size)."""
+    return f"{name}_{i + 1},{j + 1}"
+
+
 class SizeError(ValueError):
     """An inadmissible problem size."""
 
@@ -213,7 +218,7 @@ class Scene(PaperObjects):
         M = self.zeros(m, m, (tag, tag))
         for i in range(m):
             for j in range(i + 1, m):
-                x = self.param(f"{name}_{i + 1}{j + 1}")
+                x = self.param(param_name(name, i, j))
                 M._a[i, j], M._a[j, i] = x, -x
         return M
 
@@ -221,7 +226,7 @@ class Scene(PaperObjects):
         M = self.zeros(m, m, (tag, tag))
         for i in range(m):
             for j in range(i, m):
-                x = self.param(f"{name}_{i + 1}{j + 1}")
+                x = self.param(param_name(name, i, j))
                 M._a[i, j] = M._a[j, i] = x
         return M
 
@@ -233,7 +238,7 @@ class Scene(PaperObjects):
         M = self.zeros(m, k, tags)
         for i in range(m):
             for j in range(k):
-                M._a[i, j] = self.param(f"{name}_{i + 1}{j + 1}")
+                M._a[i, j] = self.param(param_name(name, i, j))
         return M
 
     def _stiefel_point(self, prefix: str) -> tuple[Mat, Mat]:
@@ -247,7 +252,7 @@ class Scene(PaperObjects):
             P._a[:r, :] = W._a
             for i in range(r, n):
                 for j in range(r):
-                    P._a[i, j] = self.param(f"{prefix}Z_{i + 1}{j + 1}")
+                    P._a[i, j] = self.param(param_name(f"{prefix}Z", i, j))
             return X, P
         S = self._skew_params(f"{prefix}S", n, "n")
         In = self.identity(n, "n")

@@ -15,7 +15,7 @@ from stiefelsym.claims import Claim, Size
 from stiefelsym.fields import RationalField
 from stiefelsym.matrix import NeedsCoordinates
 from stiefelsym.runner import run_one
-from stiefelsym.scene import Scene
+from stiefelsym.scene import Scene, param_name
 
 PASSING = ("proved", "checked", "numeric")
 FIXED = ("exact", "rational", "modular", "float", "auto")
@@ -158,7 +158,7 @@ def scalars_named_like_the_chart(s):
     """False: tr A = A_11 + ... + A_nn with scalars of the claim's own named like A's entries."""
     acc = s.q(0)
     for i in range(s.n):
-        acc = acc + s.scalar(f"A_{i + 1}{i + 1}")
+        acc = acc + s.scalar(param_name("A", i, i))
     return {"tr A": s.tr(s.A) - acc}
 
 
@@ -166,7 +166,7 @@ def raw_symbols_named_like_the_chart(s):
     """False: tr A = A_11 + ... + A_nn with symbols the claim makes itself."""
     acc = s.q(0)
     for i in range(s.n):
-        acc = acc + se.Symbol(f"A_{i + 1}{i + 1}")
+        acc = acc + se.Symbol(param_name("A", i, i))
     return {"tr A": s.tr(s.A) - acc}
 
 
@@ -288,3 +288,19 @@ def test_tangent_vectors_are_typed():
         s.d(lambda t: t.X, {"X": s.Psi})       # an r x r direction for an n x r primitive
     with pytest.raises(KeyError):
         s.d(lambda t: t.X, {"A": s.A})
+
+
+def test_free_generic_names_cannot_alias_a_transpose():
+    from stiefelsym.free import FreeScene
+    s = FreeScene()
+    with pytest.raises(ValueError):
+        s.generic("U^T", "r", "n")
+    with pytest.raises(ValueError):
+        s.generic("U", "n", "1")
+
+
+def test_parameter_names_are_distinct_at_every_size():
+    s = Scene(12, 11, RationalField(), rng=random.Random(0))
+    s.P
+    assert len(s.params) == len(set(s.params))
+    assert param_name("Z", 0, 10) != param_name("Z", 10, 0)

@@ -13,6 +13,7 @@ Objects that need coordinates raise :class:`NeedsCoordinates`.
 """
 from __future__ import annotations
 
+import re
 from fractions import Fraction
 from typing import Any, Callable, Mapping
 
@@ -319,7 +320,11 @@ class FreeScene(PaperObjects):
         raise NeedsCoordinates("a generic symmetric operator on so(n)")
 
     def generic(self, name: str, m: str, k: str) -> Mat:
-        """A generic m×k matrix: a free letter G with transpose G^T."""
+        """A generic m×k matrix (m, k in {"n", "r"}): a free letter G with transpose G^T."""
+        if m not in ("n", "r") or k not in ("n", "r"):
+            raise ValueError(f"generic({name!r}, {m!r}, {k!r}): the index spaces are 'n' or 'r'")
+        if not re.fullmatch(r"[A-Za-z][A-Za-z0-9]*", str(name)):
+            raise ValueError(f"generic({name!r}): a name is letters and digits (it names a letter and its transpose)")
         G, _ = letter_pair(f"gen:{name}", f"gen:{name}^T", m, k, name, f"{name}^{{T}}")
         self._named.setdefault(str(G), G)
         return self._cached(f"gen:{name}", lambda: self._prim(str(G), _w(self._named[str(G)])))
