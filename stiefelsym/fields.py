@@ -19,9 +19,56 @@ import symengine as se
 
 MERSENNE_61 = 2**61 - 1
 
+#: the modular method draws a fresh prime for every point, uniformly among the primes in [2^60, 2^61)
+PRIME_LOW, PRIME_HIGH = 2**60, 2**61
+#: a proven lower bound on the number of primes in [2^60, 2^61).  Rosser-Schoenfeld (1962):
+#: x/ln x < pi(x) for x >= 17 and pi(x) < 1.25506 x/ln x for x > 1, hence
+#: pi(2^61) - pi(2^60) > 2^61/ln 2^61 - 1.25506 * 2^60/ln 2^60 = 1.97...e16 >= K (checked in the tests)
+PRIMES_IN_RANGE_LOWER = 19 * 10**15
+
+
+def primes_in_range_lower_bound() -> float:
+    """Rosser-Schoenfeld's lower bound on pi(2^61) - pi(2^60), evaluated at 50 digits."""
+    with mpmath.workdps(50):
+        lo, hi = mpmath.mpf(PRIME_LOW), mpmath.mpf(PRIME_HIGH)
+        return hi / mpmath.log(hi) - mpmath.mpf("1.25506") * lo / mpmath.log(lo)
+
+
+def random_prime(rng: random.Random) -> int:
+    """A prime uniform among the primes in [2^60, 2^61): uniform odd integers of the range,
+    rejected until one is prime (a proven primality test); the seed reproduces it."""
+    while True:
+        x = PRIME_LOW + 1 + 2 * rng.randrange((PRIME_HIGH - PRIME_LOW) // 2)
+        if flint.fmpz(x).is_prime():
+            return x
+
+
+def log2_up(x: int | float) -> float:
+    """An upper bound on log2 |x| (x != 0), safe against rounding."""
+    v = math.log2(abs(x))
+    return v + 1e-9 * max(1.0, abs(v))
+
+
+def log2_sum(hs: Sequence[float]) -> float:
+    """An upper bound on log2(sum 2^h) (-inf for an empty sum), safe against rounding."""
+    hs = [h for h in hs if h != -math.inf]
+    if not hs:
+        return -math.inf
+    top = max(hs)
+    s = sum(2.0 ** (h - top) for h in hs)
+    return top + math.log2(s) + 1e-9 * max(1.0, abs(top))
+
 
 class DegenerateError(ArithmeticError):
     """A division by zero at a sampled point (pole, singular system)."""
+
+
+class ConstantDegenerate(DegenerateError):
+    """A constant of the claim vanishes (or has no inverse) modulo the sampled prime: draw another prime."""
+
+
+class FloatUnresolved(ArithmeticError):
+    """A non-finite value, error bound or term scale in floating point: the precision cannot decide."""
 
 
 class SymbolicBudget(ArithmeticError):
@@ -130,7 +177,7 @@ class SymbolicField(Field):
         return se.Integer(q.numerator) / se.Integer(q.denominator)
 
     def param(self, name, rng=None):
-        s = se.Symbol(name)
+        s = se.Dummy(name)   # unforgeable: a symbol a claim makes with this name is another one
         self.symbols[name] = s
         return s
 
@@ -207,7 +254,7 @@ class RationalField(Field):
 
     name = "rational"
 
-    def __init__(self, bound: int = 2**20) -> None:
+    def __init__(self, bound: int = 2**30) -> None:
         self.bound = bound
         self.sample_size = 2 * bound + 1
 
@@ -240,7 +287,7 @@ class RationalField(Field):
 
 
 class ModularField(Field):
-    """The prime field GF(p), p = 2^61 - 1 by default; parameters uniform in GF(p)."""
+    """The prime field GF(p) (the modular method draws p per point); parameters uniform in GF(p)."""
 
     name = "modular"
 
@@ -250,6 +297,12 @@ class ModularField(Field):
 
     def const(self, q):
         q = Fraction(q)
+        if q == 0:
+            return flint.nmod(0, self.p)
+        if q.numerator % self.p == 0 or q.denominator % self.p == 0:
+            # the constant would vanish, or have no inverse, mod p: this prime says nothing about it
+            raise ConstantDegenerate(f"the constant {q} is divisible by p = {self.p} in its numerator or "
+                                     f"denominator")
         return flint.nmod(q.numerator, self.p) / flint.nmod(q.denominator, self.p)
 
     def param(self, name, rng):
@@ -279,11 +332,19 @@ class ModularField(Field):
 
 
 # ---------------------------------------------------------------------------
+FLOAT_MIN_NORMAL = 2.0**-1022
+FLOAT_UNDERFLOW = 2.0**-1074
+
+
 class ErrNum:
     """A float (or mpf) with a first-order running bound on its rounding error.
 
-    ``e`` bounds |computed - exact| and ``m`` bounds the sum of the absolute
-    values of all terms that went into the number (its scale).
+    ``e`` bounds |computed - exact| and ``m`` is the scale of the number: the sum of
+    the absolute values of the terms of the polynomial expression it is, in the inputs
+    and in the quotients met on the way (a quotient is a term of its own size).  In float64 a
+    value, bound or scale that is not finite (overflow, inf - inf, 0 * inf)
+    raises :class:`FloatUnresolved`: the error model is then void, and the
+    evaluation must be repeated at a higher precision (mpmath does not overflow).
     """
 
     __slots__ = ("v", "e", "m", "u")
@@ -292,13 +353,22 @@ class ErrNum:
         self.v, self.e, self.u = v, e, u
         self.m = abs(v) if m is None else m
 
+    def _new(self, v, e, m):
+        # nan fails both comparisons; e >= u |v| whenever v is infinite or nan
+        if not (e < math.inf and m < math.inf):
+            raise FloatUnresolved("a non-finite value, error bound or term scale (overflow)")
+        return ErrNum(v, e, m, self.u)
+
     def _lift(self, o):
         if isinstance(o, ErrNum):
             return o
         if isinstance(o, (int, Fraction)):
-            v = self._num(o)
-            err = 0 if v == o else self.u * abs(v)
-            return ErrNum(v, err, abs(v), self.u)
+            try:
+                v = self._num(o)
+            except OverflowError as exc:
+                raise FloatUnresolved(f"the constant {o} overflows") from exc
+            err = 0 if v == o else self.u * abs(v) + (FLOAT_UNDERFLOW if isinstance(v, float) else 0)
+            return self._new(v, err, abs(v))
         return NotImplemented
 
     def _num(self, q):
@@ -311,7 +381,7 @@ class ErrNum:
         if o is NotImplemented:
             return o
         v = self.v + o.v
-        return ErrNum(v, self.e + o.e + self.u * abs(v), self.m + o.m, self.u)
+        return self._new(v, self.e + o.e + self.u * abs(v), self.m + o.m)
 
     __radd__ = __add__
 
@@ -333,7 +403,10 @@ class ErrNum:
             return o
         v = self.v * o.v
         e = abs(self.v) * o.e + abs(o.v) * self.e + self.e * o.e + self.u * abs(v)
-        return ErrNum(v, e, self.m * o.m, self.u)
+        if isinstance(v, float) and abs(v) < FLOAT_MIN_NORMAL and not (
+                (self.v == 0 and self.e == 0) or (o.v == 0 and o.e == 0)):
+            e += FLOAT_UNDERFLOW   # a gradual underflow adds an absolute error < 2^-1074
+        return self._new(v, e, self.m * o.m)
 
     __rmul__ = __mul__
 
@@ -345,7 +418,12 @@ class ErrNum:
             raise DegenerateError("division by a number indistinguishable from zero")
         v = self.v / o.v
         e = (self.e + abs(v) * o.e) / (abs(o.v) - o.e) + self.u * abs(v)
-        return ErrNum(v, e, self.m / (abs(o.v) - o.e), self.u)
+        if isinstance(v, float) and abs(v) < FLOAT_MIN_NORMAL and not (self.v == 0 and self.e == 0):
+            e += FLOAT_UNDERFLOW
+        # a quotient is a new term of its own size (|v| + e bounds the exact quotient); carrying
+        # m_a / |b| instead lets the scale grow doubly exponentially through a Gaussian elimination
+        # (it overflowed float64 from n = 5) and makes every error bound look "resolved"
+        return self._new(v, e, abs(v) + e)
 
     def __rtruediv__(self, o):
         return self._lift(o) / self
@@ -375,10 +453,15 @@ class FloatField(Field):
     def const(self, q):
         q = Fraction(q)
         if self.dps is None:
-            v = q.numerator / q.denominator
+            try:
+                v = q.numerator / q.denominator
+            except OverflowError as exc:
+                raise FloatUnresolved(f"the constant {q} overflows float64") from exc
         else:
             v = mpmath.mpf(q.numerator) / q.denominator
         err = 0 if q.denominator == 1 and abs(q.numerator) < 2**53 else self.u * abs(v)
+        if self.dps is None and err and abs(v) < FLOAT_MIN_NORMAL:
+            err += FLOAT_UNDERFLOW
         return ErrNum(v, err, abs(v), self.u)
 
     def param(self, name, rng):
@@ -404,13 +487,22 @@ class FloatField(Field):
 
 # ---------------------------------------------------------------------------
 class Deg:
-    """Degree bookkeeping: a rational function N/D with deg N <= num and D a
-    product of named factors ``den`` (factor -> exponent)."""
+    """Degree and height bookkeeping for a rational function N/D of the parameters.
 
-    __slots__ = ("num", "den", "f")
+    D is a product of named factors ``den`` (factor -> exponent); each factor is an
+    integer polynomial (the numerator of a divisor, a determinant, or the integer
+    denominator b of a constant a/b) whose degree and height the field records.  N is
+    the integer polynomial with N/D equal to the value: ``num`` bounds its total degree
+    (-1: identically zero) and ``h`` bounds log2 of its L1 norm (sum of the absolute
+    values of its coefficients).  Sums use the largest exponent of every factor
+    (N = N1 D/D1 + N2 D/D2), products add them; the L1 norm is subadditive and
+    submultiplicative, so every bound is conservative."""
 
-    def __init__(self, num: int, den: dict | None = None, field: "DegreeField" = None):
+    __slots__ = ("num", "den", "f", "h")
+
+    def __init__(self, num: int, den: dict | None = None, field: "DegreeField" = None, h: float = 0.0):
         self.num, self.den, self.f = num, dict(den or {}), field
+        self.h = -math.inf if num < 0 else max(h, 0.0)
 
     @property
     def zero(self):
@@ -420,11 +512,14 @@ class Deg:
         if isinstance(o, Deg):
             return o
         if isinstance(o, (int, Fraction)):
-            return Deg(-1 if o == 0 else 0, None, self.f)
+            return self.f.const(o)
         return NotImplemented
 
     def _dd(self, den):
         return sum(self.f.factor_degree[k] * e for k, e in den.items())
+
+    def _dh(self, den):
+        return sum(self.f.factor_height[k] * e for k, e in den.items())
 
     def __add__(self, o):
         o = self._lift(o)
@@ -435,8 +530,10 @@ class Deg:
         if o.zero:
             return self
         den = {k: max(self.den.get(k, 0), o.den.get(k, 0)) for k in set(self.den) | set(o.den)}
-        lift = lambda d: self._dd({k: den[k] - d.den.get(k, 0) for k in den})
-        return Deg(max(self.num + lift(self), o.num + lift(o)), den, self.f)
+        shift = lambda d: {k: den[k] - d.den.get(k, 0) for k in den}
+        sa, so = shift(self), shift(o)
+        return Deg(max(self.num + self._dd(sa), o.num + self._dd(so)), den, self.f,
+                   log2_sum([self.h + self._dh(sa), o.h + self._dh(so)]))
 
     __radd__ = __add__
 
@@ -457,7 +554,7 @@ class Deg:
         den = dict(self.den)
         for k, e in o.den.items():
             den[k] = den.get(k, 0) + e
-        return Deg(self.num + o.num, den, self.f)
+        return Deg(self.num + o.num, den, self.f, self.h + o.h)
 
     __rmul__ = __mul__
 
@@ -469,37 +566,56 @@ class Deg:
             raise DegenerateError("division by an identically zero expression")
         if self.zero:
             return self
-        key = self.f.new_factor(o.num)
+        # (N/D) / (No/Do) = N Do / (D No): No becomes a factor of the denominator
+        key = self.f.new_factor(o.num, o.h)
         den = dict(self.den)
         den[key] = den.get(key, 0) + 1
-        return Deg(self.num + self._dd(o.den), den, self.f)
+        return Deg(self.num + self._dd(o.den), den, self.f, self.h + self._dh(o.den))
 
     def __rtruediv__(self, o):
         return self._lift(o) / self
 
     def __repr__(self):
-        return f"Deg({self.num}/{self._dd(self.den)})"
+        return f"Deg({self.num}/{self._dd(self.den)}, h<={self.h:.1f})"
 
 
 class DegreeField(Field):
-    """Runs a claim on degree markers to bound the numerator degree of its residual."""
+    """Runs a claim on degree markers to bound the degree and the height of its residual's numerator."""
 
     name = "degree"
 
     def __init__(self) -> None:
         self.factor_degree: dict[int, int] = {}
+        self.factor_height: dict[int, float] = {}
         self._ids = itertools.count()
+        self._const_factor: dict[int, int] = {}
+        #: the distinct constants a/b met; sum of log2|a| + log2 b over them
+        self.constants: set[Fraction] = set()
+        self.constant_bits = 0.0
 
-    def new_factor(self, degree: int) -> int:
+    def new_factor(self, degree: int, height: float = 0.0) -> int:
         k = next(self._ids)
         self.factor_degree[k] = max(degree, 0)
+        self.factor_height[k] = max(height, 0.0)
         return k
 
     def const(self, q):
-        return Deg(-1 if q == 0 else 0, None, self)
+        q = Fraction(q)
+        if q == 0:
+            return Deg(-1, None, self)
+        if q not in self.constants:
+            self.constants.add(q)
+            self.constant_bits += log2_up(q.numerator) + (log2_up(q.denominator) if q.denominator > 1 else 0.0)
+        den = None
+        if q.denominator > 1:
+            key = self._const_factor.get(q.denominator)
+            if key is None:
+                key = self._const_factor[q.denominator] = self.new_factor(0, log2_up(q.denominator))
+            den = {key: 1}
+        return Deg(0, den, self, log2_up(q.numerator))
 
     def param(self, name, rng=None):
-        return Deg(1, None, self)
+        return Deg(1, None, self, 0.0)
 
     def is_zero(self, x):
         return isinstance(x, Deg) and x.zero or (not isinstance(x, Deg) and x == 0)
@@ -507,22 +623,58 @@ class DegreeField(Field):
     def _lift(self, x):
         return x if isinstance(x, Deg) else self.const(x)
 
-    def solve(self, M, B):
-        """Cramer's rule bound: independent of the pivots a concrete solve uses."""
-        M = [[self._lift(x) for x in row] for row in M]
-        B = [[self._lift(x) for x in row] for row in B]
-        m = len(M)
-        common = {}
-        for row in M:
+    def den_degree(self, den: dict) -> int:
+        return sum(self.factor_degree[k] * e for k, e in den.items())
+
+    def den_height(self, den: dict) -> float:
+        return sum(self.factor_height[k] * e for k, e in den.items())
+
+    def cleared(self, cells) -> tuple[dict, list[list[tuple[int, float]]]]:
+        """A common denominator C of a matrix of markers and the (degree, height) bounds of the
+        entries of C * M (degree -1 for a zero entry)."""
+        common: dict[int, int] = {}
+        for row in cells:
             for x in row:
                 for k, e in x.den.items():
                     common[k] = max(common.get(k, 0), e)
-        dd = lambda den: sum(self.factor_degree[k] * e for k, e in den.items())
-        cleared = [[(-1 if x.zero else x.num + dd({k: common[k] - x.den.get(k, 0) for k in common}))
-                    for x in row] for row in M]
-        det_bound = min(sum(max(r) for r in cleared),
-                        sum(max(cleared[i][j] for i in range(m)) for j in range(m)))
-        det_key = self.new_factor(det_bound)
+        out = []
+        for row in cells:
+            out_row = []
+            for x in row:
+                if x.zero:
+                    out_row.append((-1, -math.inf))
+                    continue
+                rest = {k: common[k] - x.den.get(k, 0) for k in common}
+                out_row.append((x.num + self.den_degree(rest), x.h + self.den_height(rest)))
+            out.append(out_row)
+        return common, out
+
+    def minor_bound(self, cleared: list[list[tuple[int, float]]], size: int) -> tuple[int, float]:
+        """(degree, log2 L1 height) bounds for every size x size minor of a cleared matrix: the sum
+        of the ``size`` largest row (or column) degree maxima, and the product of the ``size``
+        largest row (or column) L1 sums (a determinant's L1 norm is at most its permanent in the
+        entries' L1 norms, at most the product of the row sums)."""
+        if not cleared or not cleared[0] or size <= 0:
+            return 0, 0.0
+        cols = [list(c) for c in zip(*cleared)]
+
+        def side(lines):
+            degs = sorted((max(0, max(d for d, _ in line)) for line in lines), reverse=True)[:size]
+            hts = sorted((max(0.0, log2_sum([h for _, h in line])) for line in lines), reverse=True)[:size]
+            return sum(degs), sum(hts)
+
+        (d1, h1), (d2, h2) = side(cleared), side(cols)
+        return min(d1, d2), min(h1, h2)
+
+    def solve(self, M, B):
+        """Cramer's rule bound, independent of the pivots a concrete solve uses: with C a
+        common denominator of M and M' = C M (integer polynomials), Y = C adj(M') B / det(M')."""
+        M = [[self._lift(x) for x in row] for row in M]
+        B = [[self._lift(x) for x in row] for row in B]
+        m = len(M)
+        common, cleared = self.cleared(M)
+        det_deg, det_h = self.minor_bound(cleared, m)      # also bounds every cofactor
+        det_key = self.new_factor(det_deg, det_h)
         out = []
         for i in range(m):
             row = []
@@ -535,7 +687,8 @@ class DegreeField(Field):
                     continue
                 den = dict(acc.den)
                 den[det_key] = den.get(det_key, 0) + 1
-                row.append(Deg(acc.num + det_bound + dd(common), den, self))
+                row.append(Deg(acc.num + det_deg + self.den_degree(common), den, self,
+                               acc.h + det_h + self.den_height(common)))
             out.append(row)
         return out
 

@@ -9,18 +9,20 @@
 """
 from __future__ import annotations
 
+import math
 import random
 import signal
 import time
 from contextlib import contextmanager
-from dataclasses import dataclass
+from dataclasses import dataclass, field as dc_field
 from typing import Any, Callable, Iterator
 
 import mpmath
 
 from .claims import Claim, Count, Rank
-from .fields import (DegenerateError, Deg, DegreeField, ErrNum, Field, FloatField,
-                     ModularField, RationalField, SymbolicBudget, SymbolicField)
+from .fields import (PRIME_LOW, PRIMES_IN_RANGE_LOWER, ConstantDegenerate, DegenerateError, Deg, DegreeField,
+                     ErrNum, Field, FloatField, FloatUnresolved, ModularField, RationalField, SymbolicBudget,
+                     SymbolicField, random_prime)
 from .matrix import Mat
 from .results import CheckOutcome, Result
 from .scene import CoordinateAccess, Scene, SizeError
@@ -28,7 +30,6 @@ from .scene import CoordinateAccess, Scene, SizeError
 EXACT_CAYLEY_MAX_N = 3       # the symbolic Cayley chart (used when coordinates are read)
 EXACT_TIME_LIMIT = 120.0      # seconds per (claim, size) for the symbolic method
 BUDGET = {"exact": 8, "rational": 10, "modular": 12, "float": 16, "auto": 12}
-TRIALS = {"rational": 3, "modular": 2}
 MAX_RESAMPLE = 8
 FLOAT_RESOLUTION = 1e-8       # a pass must be able to see a relative residual this small
 FLOAT_LADDER = (None, 30, 60, 120)
@@ -79,19 +80,30 @@ def _raise_timeout(signum, frame):
 # flattening checks
 
 def _entries(value: Any, prefix: str = "") -> list[tuple[str, Any]]:
-    """(position, scalar) pairs of a residual: a Mat, a scalar, or a list/tuple/dict of them."""
+    """(position, scalar) pairs of a residual: a Mat, a scalar, or a list/tuple/dict of them.
+
+    A check without a single entry (an empty list or dict, a 0 x 0 matrix) is vacuous: it
+    would pass under every method without saying anything, so it is an error."""
+    out = _flatten(value, prefix)
+    if not out:
+        raise TypeError(f"check {prefix or 'value'} has no entries (an empty matrix, list or dict): "
+                        "a vacuous check proves nothing")
+    return out
+
+
+def _flatten(value: Any, prefix: str) -> list[tuple[str, Any]]:
     if isinstance(value, Mat):
-        return [(f"{prefix}[{i + 1},{j + 1}]", value._a[i, j])
-                for i in range(value.shape[0]) for j in range(value.shape[1])]
+        rows, cols = value._a.shape
+        return [(f"{prefix}[{i + 1},{j + 1}]", value._a[i, j]) for i in range(rows) for j in range(cols)]
     if isinstance(value, dict):
         out = []
         for k, v in value.items():
-            out.extend(_entries(v, f"{prefix}.{k}"))
+            out.extend(_flatten(v, f"{prefix}.{k}"))
         return out
     if isinstance(value, (list, tuple)):
         out = []
         for k, v in enumerate(value):
-            out.extend(_entries(v, f"{prefix}#{k + 1}"))
+            out.extend(_flatten(v, f"{prefix}#{k + 1}"))
         return out
     if isinstance(value, (str, bytes, float, complex, bool)) or value is None:
         raise TypeError(f"check {prefix or 'value'}: a residual must be a matrix or a scalar of the scene "
@@ -113,12 +125,19 @@ def call_claim(func: Callable, scene: Any) -> dict[str, Any]:
 class Evaluation:
     outcomes: list[CheckOutcome]
     nonzero: list[tuple[str, str, Any]]   # (check, position, value) of failing residual entries
-    rank_problems: list[str]
+    rank_problems: list[str]              # every rank that does not match (certain or not)
     count_problems: list[str]
+    rank_certain: list[str] = dc_field(default_factory=list)   # rank mismatches that are certain
+    every_point: list[str] = dc_field(default_factory=list)    # "at every point" ranks this method cannot decide
 
 
-def _evaluate(checks: dict[str, Any], field: Field, rank_fn: Callable[[Rank], tuple[str, bool]] | None) -> Evaluation:
+#: what a rank function may say about a Rank statement (True/False: the exact method's "ok"/"mismatch")
+RANK_STATUSES = ("ok", "mismatch", "certain", "every-point")
+
+
+def _evaluate(checks: dict[str, Any], field: Field, rank_fn: Callable[[Rank], tuple[str, Any]] | None) -> Evaluation:
     outcomes, nonzero, rank_problems, count_problems = [], [], [], []
+    rank_certain, every_point = [], []
     for name, value in checks.items():
         if isinstance(value, Count):
             ok = value.value == value.expected
@@ -132,10 +151,19 @@ def _evaluate(checks: dict[str, Any], field: Field, rank_fn: Callable[[Rank], tu
                 outcomes.append(CheckOutcome(name, "skipped", "ranks are decided by exact methods"))
                 rank_problems.append(f"{name}: rank not decided by this method")
                 continue
-            detail, ok = rank_fn(value)
+            detail, status = rank_fn(value)
+            if status is True or status is False:
+                status = "ok" if status else "mismatch"
+            if status not in RANK_STATUSES:
+                raise ValueError(f"unknown rank status {status!r}")
+            ok = status in ("ok", "every-point")
             outcomes.append(CheckOutcome(name, "rank" if ok else "rank-mismatch", detail))
             if not ok:
                 rank_problems.append(f"{name}: {detail}")
+            if status == "certain":
+                rank_certain.append(f"{name}: {detail}")
+            elif status == "every-point":
+                every_point.append(name)
             continue
         bad = [(pos, x) for pos, x in _entries(value, name) if not field.is_zero(x)]
         if bad:
@@ -143,7 +171,7 @@ def _evaluate(checks: dict[str, Any], field: Field, rank_fn: Callable[[Rank], tu
             outcomes.append(CheckOutcome(name, "nonzero", f"{len(bad)} nonzero entries"))
         else:
             outcomes.append(CheckOutcome(name, "zero"))
-    return Evaluation(outcomes, nonzero, rank_problems, count_problems)
+    return Evaluation(outcomes, nonzero, rank_problems, count_problems, rank_certain, every_point)
 
 
 def _base_result(claim: Claim, n: int | None, r: int | None, method: str, seed: int | None) -> Result:
@@ -343,101 +371,195 @@ def _short(x: Any, limit: int = 160) -> str:
 
 
 # ---------------------------------------------------------------------------
-# degree bounds (for Schwartz-Zippel)
+# degree and height bounds (for Schwartz-Zippel and the choice of primes)
 
 @dataclass
 class DegreeBound:
     numerator: int          # max numerator degree over residual entries / rank minors
     denominator: int        # total degree of all denominators met (for resampling)
+    height: float = 0.0     # max log2 of the L1 norm of an integer numerator polynomial (entries, minors)
+    constant_bits: float = 0.0   # sum of log2|a| + log2 b over the constants a/b of the claim
 
 
 def degree_bound(claim: Claim, n: int, r: int, func: Callable | None = None) -> DegreeBound:
     field = DegreeField()
     scene = Scene(n, r, field, chart="cayley", realization=claim.realization)
     checks = call_claim(func or claim.func, scene)
-    num = 0
+    num, height = 0, 0.0
     for name, value in checks.items():
         if isinstance(value, Count):
             continue
         if isinstance(value, Rank):
-            num = max(num, _rank_minor_degree(value, field))
+            d, h = _rank_minor_bound(value, field)
+            num, height = max(num, d), max(height, h)
             continue
         for _pos, x in _entries(value, name):
             if isinstance(x, Deg) and not x.zero:
-                num = max(num, x.num)
+                num, height = max(num, x.num), max(height, x.h)
+            elif not isinstance(x, Deg) and x != 0:
+                height = max(height, field.const(x).h)
     den = sum(field.factor_degree.values())
-    return DegreeBound(num, den)
+    return DegreeBound(num, den, height, field.constant_bits)
 
 
-def _rank_minor_degree(R: Rank, field: DegreeField) -> int:
-    cells = [x for x in R.matrix._a.flat if isinstance(x, Deg) and not x.zero]
-    if not cells:
-        return 0
-    common: dict[int, int] = {}
-    for x in cells:
-        for k, e in x.den.items():
-            common[k] = max(common.get(k, 0), e)
-    dd = lambda den: sum(field.factor_degree[k] * e for k, e in den.items())
-    top = max(x.num + dd({k: common[k] - x.den.get(k, 0) for k in common}) for x in cells)
-    return (R.expected + 1) * top
+def _rank_minor_bound(R: Rank, field: DegreeField) -> tuple[int, float]:
+    """Degree and height bounds of the (k+1)-minors of the matrix, k the printed rank: a sampled
+    rank k is the generic rank unless such a minor, a nonzero polynomial, vanishes at the point."""
+    rows = [[field._lift(x) for x in row] for row in R.matrix._a.tolist()]
+    if not rows or not rows[0] or R.expected + 1 > min(len(rows), len(rows[0])):
+        return 0, 0.0      # no (k+1)-minor: rank <= k holds everywhere
+    _common, cleared = field.cleared(rows)
+    return field.minor_bound(cleared, R.expected + 1)
 
 
 # ---------------------------------------------------------------------------
 # randomized exact methods
 
-def _point_field(kind: str) -> Field:
-    return RationalField() if kind == "rational" else ModularField()
+POINTS_TARGET = 1e-30     # `checked` needs a false-pass probability at most this
+POINTS_MIN = 2            # points per component, at least
+POINTS_CAP = 24           # points per component, at most
+RATIONAL_BOUND = 2**30    # rational points: integers uniform in [-B, B]
+PRIME_BOUND_TEXT = (f"K >= {PRIMES_IN_RANGE_LOWER:.2g} primes in [2^60, 2^61) (Rosser-Schoenfeld: "
+                    "x/ln x < pi(x) < 1.25506 x/ln x)")
 
 
-def _point_rank(R: Rank, field: Field, bound_text: str) -> tuple[str, bool]:
+def _per_point_bound(kind: str, deg: DegreeBound) -> float:
+    """The probability that one point passes a false claim.
+
+    rational: Schwartz-Zippel over S = [-B, B], conditioned on the point avoiding the denominators:
+    d/(|S| - d_den).  modular: a fresh prime p, uniform among the primes of [2^60, 2^61), then a
+    uniform point of GF(p)^k.  The integer numerator N != 0 vanishes mod p only if p divides its
+    content; a nonzero coefficient c has |c| <= ||N||_1 <= 2^h, so at most floor(h/60) primes >= 2^60
+    divide it, out of K_eff >= K - floor(constant bits/60) admissible primes (a prime dividing a
+    constant of the claim is redrawn).  Otherwise N mod p is a nonzero polynomial of degree <= d:
+    Schwartz-Zippel d/(p - d_den) <= d/(2^60 - d_den)."""
+    d = max(deg.numerator, 0)
+    if kind == "rational":
+        S = 2 * RATIONAL_BOUND + 1
+        return 0.0 if d == 0 else min(1.0, d / max(S - deg.denominator, 1))
+    k_eff = PRIMES_IN_RANGE_LOWER - math.floor(deg.constant_bits / 60)
+    content = math.floor(deg.height / 60) / k_eff
+    zippel = 0.0 if d == 0 else d / max(PRIME_LOW - deg.denominator, 1)
+    return min(1.0, content + zippel)
+
+
+def _points_needed(eps: float) -> int | None:
+    """The least number of independent points (>= POINTS_MIN) whose joint bound eps^k is at most
+    POINTS_TARGET; None when POINTS_CAP points cannot reach it."""
+    if eps <= 0:
+        return POINTS_MIN
+    if eps >= 1:
+        return None
+    k = max(POINTS_MIN, math.ceil(math.log(POINTS_TARGET) / math.log(eps)))
+    while k > POINTS_MIN and eps ** (k - 1) <= POINTS_TARGET:
+        k -= 1
+    while eps ** k > POINTS_TARGET:
+        k += 1
+    return k if k <= POINTS_CAP else None
+
+
+def _point_rank(R: Rank, field: Field, bound_text: str) -> tuple[str, str]:
     rk = field.rank(R.matrix._a.tolist())
-    where = "at this exact point" if field.name == "rational" else "at this point mod p"
+    exact = field.name == "rational"
+    where = "at this exact point" if exact else f"at this point mod p = {field.p}"
     if rk > R.expected:
-        return f"rank {rk} {where} exceeds the paper's {R.expected} (certain: generic rank >= {rk})", False
+        return f"rank {rk} {where} exceeds the paper's {R.expected} (certain: generic rank >= {rk})", "certain"
     if rk < R.expected:
-        return f"rank {rk} {where} (paper: {R.expected}); a special point or a wrong count", False
-    return (f"rank {rk} {where}: generic rank >= {rk} (certain); generic rank <= {rk} "
-            f"unless a ({rk + 1})-minor of degree <= {bound_text} vanishes here"), True
+        if exact and not R.generic:
+            return (f"rank {rk} {where} of T*V, below the rank {R.expected} the paper states at every point "
+                    f"(certain)"), "certain"
+        return f"rank {rk} {where} (paper: {R.expected}); a special point or a wrong count", "mismatch"
+    generic = (f"rank {rk} {where}: generic rank >= {rk} (certain); generic rank <= {rk} "
+               f"unless a ({rk + 1})-minor ({bound_text}) vanishes here")
+    if not R.generic:
+        return (generic + f"; rank {rk} at EVERY point does not follow from sampled points "
+                          "(needs the exact method)"), "every-point"
+    return generic, "ok"
 
 
-def _constant_rank(R: Rank) -> tuple[str, bool]:
+def _constant_rank(R: Rank) -> tuple[str, str]:
     rk = RationalField().rank(R.matrix._a.tolist())
-    return (f"the matrix is constant (no parameter enters); its exact rank over Q is {rk} "
-            f"(paper: {R.expected})", rk == R.expected)
+    return (f"the matrix is constant (no parameter enters); its exact rank over Q is {rk} at every point "
+            f"(paper: {R.expected})", "ok" if rk == R.expected else "certain")
+
+
+def _prepare(options: dict | None) -> dict | None:
+    if options and options.get("hard"):
+        options.setdefault("hard_hits", [])   # the scene appends the parameters a hard case rewrites
+    return options
+
+
+def _hard_note(res: Result, options: dict | None) -> Result:
+    if options and options.get("hard") and not options.get("hard_hits"):
+        note = f"the hard case {options['hard'].name} changed no parameter of this claim"
+        res.message = f"{res.message}; {note}" if res.message else note
+    return res
 
 
 def run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callable | None = None,
                trials: int | None = None, options: dict | None = None) -> Result:
-    func = func or claim.func
-    trials = trials or TRIALS[kind]
+    """Exact evaluation at seeded random points (kind "rational" or "modular").
+
+    The number of points per component is chosen so that the false-pass bound is at most
+    POINTS_TARGET (``trials`` fixes it instead: a witness search, whose passes claim no more than
+    their bound).  Hard cases are evaluated at POINTS_MIN points, with no bound."""
+    options = _prepare(options)
+    return _hard_note(_run_points(claim, n, r, kind, seed, func or claim.func, trials, options), options)
+
+
+def _prime_field(claim: Claim, n: int, r: int, seed: int, t: int, attempt: int) -> ModularField:
+    rng = random.Random(f"{seed}|{claim.id}|{n}|{r}|modular|{t}|prime|{attempt}")
+    return ModularField(random_prime(rng))
+
+
+def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callable,
+                trials: int | None, options: dict | None) -> Result:
     res = _base_result(claim, n, r, kind, seed)
     t0 = time.perf_counter()
+    hard = bool(options and options.get("hard"))
     try:
         deg = degree_bound(claim, n, r, func)
     except CoordinateAccess as exc:
         res.verdict, res.message = "error", str(exc)
         return res
-    field = _point_field(kind)
-    S = field.sample_size
-    per_trial = min(1.0, deg.numerator / max(S - deg.denominator, 1))
+    eps = _per_point_bound(kind, deg)
+    needed = _points_needed(eps)
+    if trials is not None:
+        points = trials
+    elif hard or needed is None:
+        points = POINTS_MIN
+    else:
+        points = needed
+    bound_text = (f"degree <= {deg.numerator}" if kind == "rational"
+                  else f"degree <= {deg.numerator}, log2 height <= {deg.height:.0f}")
     res.reductions = [CAYLEY_REDUCTION.format(D=" D" if r == n else "",
                                               comp="; both components of O(n) alternate" if r == n else "")]
-    if options and options.get("hard"):
+    if hard:
         res.reductions.append(f"hard case: {options['hard'].description} (not uniform: no Schwartz-Zippel bound)")
-    evaluations, resampled = [], 0
-    witness = None
-    # for r = n the constraint set has two components (det X = +-1): each gets ``trials`` points
+    evaluations, resampled, primes_redrawn = [], 0, 0
+    witness, primes = None, []
+    rational = RationalField(RATIONAL_BOUND)
+    # for r = n the constraint set has two components (det X = +-1): each gets ``points`` points
     components = 2 if r == n else 1
-    for t in range(trials * components):
+    scene = None
+    for t in range(points * components):
         comp = t % components
+        prime_attempt = 0
+        field = rational if kind == "rational" else _prime_field(claim, n, r, seed, t, prime_attempt)
         for attempt in range(MAX_RESAMPLE):
             rng = random.Random(f"{seed}|{claim.id}|{n}|{r}|{kind}|{t}|{attempt}")
             scene = Scene(n, r, field, chart="cayley", rng=rng, component=comp, realization=claim.realization,
                           options=options)
             try:
                 checks = call_claim(func, scene)
-                ev = _evaluate(checks, field, lambda R: _point_rank(R, field, str(deg.numerator)))
+                ev = _evaluate(checks, field, lambda R: _point_rank(R, field, bound_text))
                 break
+            except ConstantDegenerate:
+                # a constant of the claim vanishes mod p: this prime is not admissible, draw another
+                primes_redrawn += 1
+                prime_attempt += 1
+                field = _prime_field(claim, n, r, seed, t, prime_attempt)
+                continue
             except (DegenerateError, ZeroDivisionError):
                 resampled += 1
                 continue
@@ -446,71 +568,146 @@ def run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callabl
             res.message = f"every one of {MAX_RESAMPLE} sampled points was degenerate (a pole or singular system)"
             res.seconds = time.perf_counter() - t0
             return res
+        if t == 0 and not scene.params:
+            return _run_constant(claim, n, r, seed, func, options, res, t0)
         evaluations.append(ev)
+        if kind == "modular":
+            primes.append(field.p)
         if ev.nonzero and witness is None:
             check, pos, val = ev.nonzero[0]
             witness = {"seed": seed, "trial": t, "attempt": attempt, "component": comp, "field": field.name,
                        "check": check, "entry": pos, "value": field.describe(val),
                        "point": {k: field.describe(v) for k, v in scene.params.items()}}
+            if kind == "modular":
+                witness["prime"] = field.p
     res.seconds = time.perf_counter() - t0
     res.checks = [o for e in evaluations for o in e.outcomes]
     nonzero = [z for e in evaluations for z in e.nonzero]
-    rank_bad = list(dict.fromkeys(p for e in evaluations for p in e.rank_problems))
+    rank_mismatch = list(dict.fromkeys(p for e in evaluations for p in e.rank_problems))
+    rank_certain = list(dict.fromkeys(p for e in evaluations for p in e.rank_certain))
     count_bad = list(dict.fromkeys(p for e in evaluations for p in e.count_problems))
+    every_point = list(dict.fromkeys(p for e in evaluations for p in e.every_point))
     for o in res.checks:
         o.degree = deg.numerator
-    note = f" ({resampled} degenerate samples redrawn)" if resampled else ""
+    notes = []
+    if resampled:
+        notes.append(f"{resampled} degenerate samples redrawn")
+    if primes_redrawn:
+        notes.append(f"{primes_redrawn} primes dividing a constant of the claim redrawn")
+    note = f" ({'; '.join(notes)})" if notes else ""
+    per = f" on each of the {components} components of T*V" if components == 2 else ""
+    joint = eps ** points
+    if kind == "modular":
+        how = (f"each point over its own prime p, drawn uniformly from the primes in [2^60, 2^61) by the seed "
+               f"(uniform odd integers until one is prime), parameters uniform in GF(p); primes: "
+               f"{', '.join(str(p) for p in primes)}; numerator degree <= d = {deg.numerator}, log2 of its L1 norm "
+               f"<= h = {deg.height:.1f}; per point: a false pass needs p | N (at most floor(h/60) of the "
+               f"{PRIME_BOUND_TEXT}) or N(x) = 0 mod p (Schwartz-Zippel): <= floor(h/60)/K + d/(2^60 - d_den) "
+               f"= {eps:.1e}")
+    else:
+        how = (f"parameters uniform integers in [-2^{RATIONAL_BOUND.bit_length() - 1}, "
+               f"2^{RATIONAL_BOUND.bit_length() - 1}] (|S| = {_size(2 * RATIONAL_BOUND + 1)}); numerator degree "
+               f"<= d = {deg.numerator}; per point (Schwartz-Zippel) d/(|S| - d_den) = {eps:.1e}")
     if claim.expect == "nonzero":
         if nonzero:
             res.verdict = "proved"
             res.witness = witness
             res.certificate = (f"nonzero value at a seeded point{' mod p' if kind == 'modular' else ''}: "
                                f"{witness['entry']} = {witness['value']}{note}")
+        elif hard or joint > POINTS_TARGET:
+            res.verdict = "inconclusive"
+            res.message = (f"vanished at {points * components} points, but that does not bound the chance that a "
+                           f"nonzero residual vanished there ({'hard points are not uniform' if hard else _cap_text(eps)})")
         else:
             res.verdict = "fails"
-            res.false_pass_bound = per_trial ** trials
-            res.certificate = f"vanished at {trials * components} random points{note}"
+            res.false_pass_bound = joint
+            res.certificate = f"vanished at {points} random points{per}; {how}; probability <= {joint:.1e}{note}"
         return res
-    if nonzero or count_bad or any("exceeds" in p for p in rank_bad):
+    if nonzero or count_bad or rank_certain:
         res.verdict = "fails"
         res.witness = witness
         if nonzero:
             res.residual = f"{witness['entry']} = {witness['value']}"
-            modnote = " (mod p: the numerator polynomial is nonzero)" if kind == "modular" else ""
+            modnote = (f" (mod p = {witness['prime']}: the numerator polynomial is nonzero)"
+                       if kind == "modular" else "")
             res.certificate = f"exact nonzero residual at a seeded point of T*V{modnote}{note}"
         else:
-            res.certificate = "; ".join(count_bad + rank_bad)
+            res.certificate = "; ".join(count_bad + rank_certain)
         return res
-    if rank_bad and not scene.params:
-        # no chart parameter entered: the matrices are constant, and their rank over Q is exact
-        exact_scene = Scene(n, r, RationalField(), chart="cayley", rng=random.Random(seed),
-                            realization=claim.realization)
-        ev = _evaluate(call_claim(func, exact_scene), exact_scene.field, lambda R: _constant_rank(R))
-        if ev.rank_problems:
-            res.verdict = "fails"
-            res.certificate = "; ".join(ev.rank_problems)
-            return res
-        rank_bad = []
-    if rank_bad:
+    if rank_mismatch:
         res.verdict = "inconclusive"
-        res.message = "; ".join(rank_bad)
+        res.message = "; ".join(rank_mismatch)
         return res
-    if options and options.get("hard"):
+    established = "every residual vanishes" + (" and the generic ranks are as printed" if any(
+        o.status == "rank" for o in res.checks) else "")
+    if hard:
         res.verdict = "checked"
-        res.certificate = f"the residual vanishes exactly at the {trials * components} hard points{note}"
+        res.certificate = (f"{established} exactly at the {points * components} hard points "
+                           f"(no probability bound: the points are not uniform){note}")
+    elif joint > POINTS_TARGET:
+        res.verdict = "inconclusive"
+        res.message = (f"{established} at {points} points{per}, but the false-pass bound is too weak: "
+                       f"{_cap_text(eps)}; {how}")
+        return res
+    else:
+        res.verdict = "checked"
+        res.false_pass_bound = joint
+        res.certificate = (f"{points} independent points{per} (chosen so that the bound is <= {POINTS_TARGET:.0e}); "
+                           f"{how}; false-pass probability <= {eps:.1e}^{points} = {joint:.1e}{note}")
+    if every_point:
+        res.verdict = "undecided"
+        res.message = (f"not applicable: {', '.join(every_point)}: a rank at every point of T*V does not follow "
+                       f"from sampled points; it needs the exact method (a constant nonzero maximal minor). "
+                       f"Established here: {res.certificate}")
+        res.false_pass_bound = None
+    return res
+
+
+def _cap_text(eps: float) -> str:
+    if eps >= 1:
+        return f"the per-point bound is {eps:.1e} >= 1"
+    return (f"the per-point bound {eps:.1e} would need more than {POINTS_CAP} points per component to reach "
+            f"{POINTS_TARGET:.0e} ({POINTS_CAP} points give {eps ** POINTS_CAP:.1e})")
+
+
+def _run_constant(claim: Claim, n: int, r: int, seed: int, func: Callable, options: dict | None,
+                  res: Result, t0: float) -> Result:
+    """No parameter entered the checks: they are constants, decided exactly over Q (no probability)."""
+    field = RationalField(RATIONAL_BOUND)
+    evaluations = []
+    for comp in ((0, 1) if r == n else (0,)):
+        scene = Scene(n, r, field, chart="cayley", rng=random.Random(seed), component=comp,
+                      realization=claim.realization, options=options)
+        evaluations.append((comp, _evaluate(call_claim(func, scene), field, _constant_rank)))
+    res.seconds = time.perf_counter() - t0
+    res.checks = [o for _, e in evaluations for o in e.outcomes]
+    nonzero = [(comp, z) for comp, e in evaluations for z in e.nonzero]
+    problems = list(dict.fromkeys(p for _, e in evaluations for p in e.count_problems + e.rank_problems))
+    if nonzero:
+        comp, (check, pos, val) = nonzero[0]
+        res.witness = {"seed": seed, "trial": 0, "attempt": 0, "component": comp, "field": field.name,
+                       "check": check, "entry": pos, "value": field.describe(val), "point": {}}
+    if claim.expect == "nonzero":
+        res.verdict = "proved" if nonzero else "fails"
+        res.certificate = ("no parameter enters the checks: " +
+                           (f"the constant {res.witness['entry']} = {res.witness['value']} is not zero" if nonzero
+                            else "every entry is the constant 0 (exact over Q)"))
+        return res
+    if nonzero or problems:
+        res.verdict = "fails"
+        if nonzero:
+            res.residual = f"{res.witness['entry']} = {res.witness['value']}"
+        res.certificate = "no parameter enters the checks; exact over Q: " + (
+            "a nonzero constant residual" if nonzero else "; ".join(problems))
         return res
     res.verdict = "checked"
-    res.false_pass_bound = per_trial ** trials
-    per = f" on each of the {components} components of T*V" if components == 2 else ""
-    res.certificate = (f"{trials} independent points{per}, parameters uniform from a set of size {_size(S)}; "
-                       f"numerator degree <= {deg.numerator}; false-pass probability <= "
-                       f"(d/(|S| - d_den))^{trials} = {res.false_pass_bound:.1e}{note}")
+    res.false_pass_bound = 0.0
+    res.certificate = ("no parameter enters the checks: they are constants, evaluated exactly over Q "
+                       "(ranks of constant matrices hold at every point); no probability involved")
     return res
 
 
 def _size(S: int) -> str:
-    if S == 2**61 - 1:
-        return "p = 2^61-1"
     if S > 10**6:
         return f"{S:.3g}"
     return str(S)
@@ -521,71 +718,183 @@ def _size(S: int) -> str:
 
 def run_float(claim: Claim, n: int, r: int, seed: int, func: Callable | None = None,
               options: dict | None = None) -> Result:
-    func = func or claim.func
-    res = _base_result(claim, n, r, "float", seed)
-    t0 = time.perf_counter()
-    res.reductions = [CAYLEY_REDUCTION.format(D="", comp="") + "; running error analysis of every operation"]
-    if options and options.get("hard"):
-        res.reductions.append(f"hard case: {options['hard'].description}")
-    log = []
+    """float64 with a running error bound; mpmath at 30, 60, 120 digits when float64 cannot decide.
+    When r = n both components of O(n) are evaluated."""
+    options = _prepare(options)
+    return _hard_note(_run_float(claim, n, r, seed, func or claim.func, options), options)
+
+
+@dataclass
+class _FloatRun:
+    status: str                 # "pass", "bad", "nonzero", "zero", "unresolved", "empty"
+    field: str = ""
+    log: list[str] = dc_field(default_factory=list)
+    entry: tuple[str, Any] | None = None
+    worst_e: Any = 0.0
+    worst_m: Any = 0.0
+    ranks: list[str] = dc_field(default_factory=list)
+    count_problems: list[str] = dc_field(default_factory=list)
+
+
+def _resolves(x: ErrNum) -> bool:
+    """The bound e could see a residual far below the scale of the terms (e <= 1e-8 m, all finite)."""
+    return _finite(x) and x.e <= FLOAT_RESOLUTION * x.m
+
+
+def _finite(x: ErrNum) -> bool:
+    try:
+        return all(mpmath.isfinite(y) for y in (x.v, x.e, x.m))
+    except (TypeError, ValueError):
+        return False
+
+
+def _float_component(claim: Claim, n: int, r: int, seed: int, func: Callable, options: dict | None,
+                     comp: int) -> _FloatRun:
+    run = _FloatRun("unresolved")
+    nonzero_claim = claim.expect == "nonzero"
     for dps in FLOAT_LADDER:
         field = FloatField(dps)
-        rng = random.Random(f"{seed}|{claim.id}|{n}|{r}|float")
+        rng = random.Random(f"{seed}|{claim.id}|{n}|{r}|float" + (f"|component {comp}" if comp else ""))
         ctx = mpmath.workdps(dps) if dps else _null()
         try:
             with ctx:
-                scene = Scene(n, r, field, chart="cayley", rng=rng, realization=claim.realization,
+                scene = Scene(n, r, field, chart="cayley", rng=rng, component=comp, realization=claim.realization,
                               options=options)
                 checks = call_claim(func, scene)
-                entries = []
+                entries, ranks, counts = [], [], []
                 for name, value in checks.items():
-                    if isinstance(value, (Rank, Count)):
-                        continue
-                    entries.extend(_entries(value, name))
-        except DegenerateError as exc:
-            log.append(f"{field.name}: {exc}")
+                    if isinstance(value, Rank):
+                        ranks.append(name)
+                    elif isinstance(value, Count):
+                        if value.value != value.expected:
+                            counts.append(f"{name}: {value.meaning + ': ' if value.meaning else ''}"
+                                          f"{value.value} (paper: {value.expected})")
+                    else:
+                        for pos, x in _entries(value, name):
+                            if not isinstance(x, ErrNum):
+                                x = field.const(x)       # an exact int or Fraction
+                            entries.append((pos, x))
+        except (FloatUnresolved, OverflowError) as exc:
+            run.log.append(f"{field.name}: unresolved ({exc})")
             continue
+        except DegenerateError as exc:
+            run.log.append(f"{field.name}: {exc}")
+            continue
+        run.ranks, run.count_problems, run.field = ranks, counts, field.name
         if not entries:
-            res.verdict = "inconclusive"
-            res.message = "not applicable: no residuals to evaluate in floating point (ranks are decided exactly)"
-            res.seconds = time.perf_counter() - t0
-            return res
-        vals = [x for _, x in entries if isinstance(x, ErrNum)]
-        worst = max(vals, key=lambda x: float(abs(x.v))) if vals else None
-        emax = max((float(x.e) for x in vals), default=0.0)
-        mmax = max((float(x.m) for x in vals), default=0.0)
-        resolution = emax / mmax if mmax > 0 else 0.0
-        bad = [(pos, x) for pos, x in entries if isinstance(x, ErrNum) and abs(x.v) > x.e]
-        log.append(f"{field.name}: max |residual| {float(abs(worst.v)) if worst else 0:.2e}, "
-                   f"error bound {emax:.2e}, term scale {mmax:.2e}")
-        if bad:
-            ex = run_points(claim, n, r, "rational", seed, func, trials=1, options=options)
-            res.seconds = time.perf_counter() - t0
-            res.residual = f"{bad[0][0]} = {bad[0][1]!r}"
-            if ex.verdict == "fails":
-                res.verdict = "fails"
-                res.witness = ex.witness
-                res.certificate = (f"{field.name} residual exceeds its error bound; confirmed by an exact "
-                                   f"rational witness")
-            else:
-                res.verdict = "inconclusive"
-                res.message = ("the floating-point residual exceeds its first-order error bound but the exact "
-                               f"check passed ({ex.verdict}): the bound is too optimistic here")
-            res.message = (res.message + " | " if res.message else "") + "; ".join(log)
-            return res
-        if resolution <= FLOAT_RESOLUTION:
-            res.verdict = "numeric"
-            res.false_pass_bound = None
-            res.residual = f"{float(abs(worst.v)) if worst else 0:.2e}"
-            res.certificate = (f"{field.name}: |residual| <= error bound {emax:.1e} at terms of size {mmax:.1e} "
-                               f"(resolution {resolution:.1e})")
-            res.message = "; ".join(log)
-            res.seconds = time.perf_counter() - t0
-            return res
-    res.verdict = "inconclusive"
-    res.message = "precision ladder exhausted without a resolving bound: " + "; ".join(log)
-    res.seconds = time.perf_counter() - t0
-    return res
+            run.status = "empty"
+            return run
+        finite = all(_finite(x) for _, x in entries)
+        if not finite:   # never a pass: nan or inf anywhere voids the error model
+            run.log.append(f"{field.name}: a non-finite residual, bound or scale")
+            continue
+        worst = max(entries, key=lambda px: abs(px[1].v))[1]
+        ratio = max(entries, key=lambda px: (px[1].e / px[1].m) if px[1].m else (0 if px[1].e == 0 else math.inf))[1]
+        run.worst_e, run.worst_m = ratio.e, ratio.m
+        run.log.append(f"{field.name}: max |residual| {float(abs(worst.v)):.2e}, error bound up to "
+                       f"{float(max(x.e for _, x in entries)):.2e}, worst resolution e = {float(ratio.e):.1e} at "
+                       f"term scale m = {float(ratio.m):.1e}")
+        clear = [(pos, x) for pos, x in entries if abs(x.v) > x.e]
+        if nonzero_claim:
+            hit = [(pos, x) for pos, x in clear if _resolves(x)]
+            if hit:
+                run.status, run.entry = "nonzero", hit[0]
+                return run
+            if not clear and all(_resolves(x) for _, x in entries):
+                run.status = "zero"
+                return run
+            continue
+        if clear:
+            run.status, run.entry = "bad", clear[0]
+            return run
+        if all(_resolves(x) for _, x in entries):
+            run.status = "pass"
+            return run
+    run.status = "unresolved"
+    return run
+
+
+def _run_float(claim: Claim, n: int, r: int, seed: int, func: Callable, options: dict | None) -> Result:
+    res = _base_result(claim, n, r, "float", seed)
+    t0 = time.perf_counter()
+    comps = (0, 1) if r == n else (0,)
+    res.reductions = [CAYLEY_REDUCTION.format(
+        D=" D" if r == n else "", comp="; both components of O(n)" if r == n else "")
+        + "; running error analysis of every operation"]
+    if options and options.get("hard"):
+        res.reductions.append(f"hard case: {options['hard'].description}")
+    runs = [_float_component(claim, n, r, seed, func, options, c) for c in comps]
+    log = "; ".join((f"component {c + 1}: " if len(comps) > 1 else "") + "; ".join(run.log)
+                    for c, run in zip(comps, runs))
+
+    def done(verdict: str) -> Result:
+        res.verdict = verdict
+        res.seconds = time.perf_counter() - t0
+        return res
+
+    counts = list(dict.fromkeys(p for run in runs for p in run.count_problems))
+    if counts:
+        res.certificate = "; ".join(counts) + " (integers, exact)"
+        return done("fails")
+    if any(run.status == "empty" for run in runs):
+        res.message = "not applicable: no residuals to evaluate in floating point (ranks are decided exactly)"
+        return done("inconclusive")
+    ranks = list(dict.fromkeys(name for run in runs for name in run.ranks))
+
+    if claim.expect == "nonzero":
+        hit = next(((c, run) for c, run in zip(comps, runs) if run.status == "nonzero"), None)
+        res.message = log
+        if hit is not None:
+            c, run = hit
+            pos, x = run.entry
+            res.residual = f"{pos} = {x!r}"
+            res.certificate = (f"{run.field}{f' (component {c + 1})' if len(comps) > 1 else ''}: {pos} = {x!r}, "
+                               f"|value| > its error bound, which resolves 1e-8 of the term scale")
+            return done("numeric")
+        ex = run_points(claim, n, r, "rational", seed, func, options=options)
+        if ex.verdict == "proved":
+            res.witness = ex.witness
+            res.certificate = ("not clearly nonzero in floating point; an exact rational point confirms it: "
+                               f"{ex.certificate}")
+            return done("numeric")
+        if ex.verdict == "fails":
+            res.witness, res.false_pass_bound = ex.witness, ex.false_pass_bound
+            res.certificate = f"no entry is nonzero in floating point; exact rational points: {ex.certificate}"
+            return done("fails")
+        res.message = f"neither floating point nor exact rational points decide ({ex.verdict}: {ex.message}) | {log}"
+        return done("inconclusive")
+
+    bad = next(((c, run) for c, run in zip(comps, runs) if run.status == "bad"), None)
+    if bad is not None:
+        c, run = bad
+        pos, x = run.entry
+        res.residual = f"{pos} = {x!r}"
+        ex = run_points(claim, n, r, "rational", seed, func, trials=1, options=options)
+        if ex.verdict == "fails":
+            res.witness = ex.witness
+            res.certificate = (f"{run.field} residual exceeds its error bound; confirmed by an exact "
+                               f"rational witness")
+            res.message = log
+            return done("fails")
+        res.message = ("the floating-point residual exceeds its first-order error bound but the exact "
+                       f"check passed ({ex.verdict}): the bound is too optimistic here | {log}")
+        return done("inconclusive")
+    if any(run.status != "pass" for run in runs):
+        res.message = "precision ladder exhausted without a resolving bound: " + log
+        return done("inconclusive")
+    res.false_pass_bound = None
+    res.residual = None
+    res.certificate = "; ".join(
+        f"{f'component {c + 1}, ' if len(comps) > 1 else ''}{run.field}: every residual entry |v| <= its error "
+        f"bound e, and e <= 1e-8 x its term scale m (worst e = {float(run.worst_e):.1e} at m = "
+        f"{float(run.worst_m):.1e}); so |exact residual| <= 2e at this point" for c, run in zip(comps, runs))
+    res.message = log
+    if ranks:
+        res.message = (f"not applicable: {', '.join(ranks)}: ranks are decided by exact arithmetic (methods exact, "
+                       f"rational, modular); floating point cannot. The residuals pass numerically: "
+                       f"{res.certificate} | {log}")
+        return done("undecided")
+    return done("numeric")
 
 
 @contextmanager
