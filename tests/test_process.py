@@ -1,0 +1,555 @@
+"""Runs in worker processes: claims that try to escape their verdict (exit, die, hang, eat
+memory, print into stdout), SIGTERM and Ctrl-C, the verdict policy, corrections at every
+size, and the command line's other honest-output rules."""
+from __future__ import annotations
+
+import json
+import os
+import select
+import signal
+import subprocess
+import sys
+import textwrap
+import time
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+from stiefelsym import cli, runner
+from stiefelsym.claims import Claim, Count, Rank, Size, admissible
+from stiefelsym.pool import GIB, WorkerPool
+from stiefelsym.results import Result, load_results, write_atomic
+
+needs_fork = pytest.mark.skipif(not hasattr(os, "fork"), reason="workers need os.fork")
+
+#: the tricks, as a claims file: each one's id, and the verdict it must end with
+TRICKS = textwrap.dedent('''
+    import os, signal, sys, time
+    from stiefelsym import admissible, claim
+
+    print("printed at import")
+    os.write(1, b"written to fd 1 at import\\n")
+
+    def one(id):
+        return claim(id, paper="t", kind="id", section="9", sizes=admissible(n_max=1))
+
+    class Escape(BaseException):
+        pass
+
+    @one("good")
+    def good(s):
+        print("printed by a claim")
+        os.write(1, b"written to fd 1 by a claim\\n")
+        sys.__stdout__.write("written to sys.__stdout__ by a claim\\n")
+        sys.__stdout__.flush()
+        return {"XtX": s.X.T @ s.X - s.Ir}
+
+    @one("raises-system-exit")
+    def raises_system_exit(s):
+        raise SystemExit(0)
+
+    @one("raises-base-exception")
+    def raises_base_exception(s):
+        raise Escape("out")
+
+    @one("raises-keyboard-interrupt")
+    def raises_keyboard_interrupt(s):
+        raise KeyboardInterrupt
+
+    @one("calls-os-exit")
+    def calls_os_exit(s):
+        os._exit(0)
+
+    @one("segfaults")
+    def segfaults(s):
+        os.kill(os.getpid(), signal.SIGSEGV)
+        time.sleep(5)
+
+    @one("blocks-signals-and-sleeps")
+    def blocks_signals_and_sleeps(s):
+        signal.pthread_sigmask(signal.SIG_BLOCK, signal.valid_signals())
+        time.sleep(600)
+
+    @one("loops-forever")
+    def loops_forever(s):
+        while True:
+            pass
+
+    @one("allocates-without-bound")
+    def allocates_without_bound(s):
+        hoard = []
+        while True:
+            hoard.append(bytes(1 << 28))     # address space, not touched pages: fast
+''')
+
+TRICK_VERDICTS = {
+    "good": ("checked", "", True),
+    "raises-system-exit": ("error", "SystemExit", False),
+    "raises-base-exception": ("error", "Escape: out", False),
+    "raises-keyboard-interrupt": ("error", "KeyboardInterrupt", False),
+    "calls-os-exit": ("error", "the computation died (the worker process exited with status 0)", False),
+    "segfaults": ("error", "the computation died (killed by SIGSEGV)", False),
+    "blocks-signals-and-sleeps": ("inconclusive", "exceeded its time budget of 2 s", False),
+    "loops-forever": ("inconclusive", "exceeded its time budget of 2 s", False),
+    "allocates-without-bound": ("error", "exceeded its memory budget of 3 GiB", False),
+}
+
+
+@pytest.fixture
+def tricks(tmp_path) -> Path:
+    path = tmp_path / "tricks.py"
+    path.write_text(TRICKS)
+    return path
+
+
+def _env() -> dict[str, str]:
+    return {k: v for k, v in os.environ.items() if not k.startswith("PYTEST")}
+
+
+def stiefelsym(*args: str, cwd: Path, timeout: float = 120) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-m", "stiefelsym", *args], cwd=cwd, env=_env(),
+                          capture_output=True, text=True, timeout=timeout, stdin=subprocess.DEVNULL)
+
+
+# --------------------------------------------------------------------------- the pool
+
+def _echo(x):
+    return x
+
+
+def _task(kind):
+    if kind == "exit":
+        os._exit(5)
+    if kind == "sleep":
+        time.sleep(60)
+    if kind == "system-exit":
+        raise SystemExit(2)
+    if kind == "memory":
+        hoard = []
+        while True:
+            hoard.append(bytes(1 << 28))
+    return kind
+
+
+@needs_fork
+def test_pool_returns_outcomes_in_order_and_replaces_lost_workers():
+    tasks = ["a", "exit", "b", "sleep", "system-exit", "memory", "c"]
+    with WorkerPool(_task, workers=2, timeout=2, memory=3 * GIB) as pool:
+        outcomes = list(pool.run(tasks))
+        assert [i for i, _ in outcomes] == list(range(len(tasks)))
+        kinds = [o.kind for _, o in outcomes]
+        assert kinds == ["ok", "died", "ok", "timeout", "error", "memory", "ok"]
+        assert [o.value for _, o in outcomes if o.kind == "ok"] == ["a", "b", "c"]
+        assert "exited with status 5" in outcomes[1][1].message and "3 GiB" in outcomes[1][1].message
+        assert outcomes[3][1].message == "exceeded its time budget of 2 s"
+        assert "SystemExit" in outcomes[4][1].message
+        assert "memory budget of 3 GiB" in outcomes[5][1].message
+        assert [o.value for _, o in pool.run(["d"])] == ["d"]      # the pool goes on
+    assert pool.workers == []
+
+
+@needs_fork
+def test_pool_leaves_no_process_behind():
+    pool = WorkerPool(_task, workers=2, timeout=30)
+    gen = pool.run(["a", "sleep", "b"])
+    assert next(gen)[1].value == "a"
+    pids = [w.pid for w in pool.workers]
+    assert pids
+    gen.close()                          # the consumer stops early: every worker is killed
+    assert pool.workers == []
+    for pid in pids:
+        with pytest.raises(ChildProcessError):
+            os.waitpid(pid, os.WNOHANG)
+
+
+def test_pool_without_fork_runs_in_process():
+    with WorkerPool(_task, workers=1, timeout=1, fork=False) as pool:
+        outcomes = [o for _, o in pool.run(["a", "system-exit"])]
+    assert [o.kind for o in outcomes] == ["ok", "error"]
+
+
+# --------------------------------------------------------------------------- claims that cheat, in the runner
+
+def _claim(cid, func, sizes=None, **kw) -> Claim:
+    return Claim(id=cid, paper=("t",), kind=kw.pop("kind", "id"), section="9", func=func,
+                 sizes=sizes or admissible(n_max=1), **kw)
+
+
+def _ok(s):
+    return {"XtX": s.X.T @ s.X - s.Ir}
+
+
+def _exits(s):
+    raise SystemExit(1)
+
+
+def _sleeps(s):
+    signal.pthread_sigmask(signal.SIG_BLOCK, signal.valid_signals())
+    time.sleep(600)
+
+
+@needs_fork
+def test_every_method_runs_in_a_budgeted_worker():
+    claims = [_claim("sleeps", _sleeps), _claim("exits", _exits), _claim("ok", _ok)]
+    results = runner.verify(claims, methods=runner.METHODS, timeout=2, seed=0, jobs=3)
+    for cid in ("sleeps", "exits", "ok"):     # auto at (1,1) is the exact method, unless stopped
+        assert sorted(r.method for r in results if r.claim == cid) == \
+            sorted(["exact" if cid == "ok" else "auto", "exact", "rational", "modular", "float", "free"])
+    for r in results:
+        if r.claim == "sleeps":
+            assert r.verdict == "inconclusive" and not r.expected
+            assert r.message == "exceeded its time budget of 2 s"
+        elif r.claim == "exits":
+            assert r.verdict == "error" and "SystemExit" in r.message and not r.expected
+        else:
+            assert r.verdict in ("proved", "checked", "numeric", "undecided") and r.expected
+
+
+@needs_fork
+def test_auto_is_budgeted_as_a_whole():
+    res = runner.verify([_claim("sleeps", _sleeps)], sizes=[Size(1, 1)], methods=("auto",), timeout=2)
+    assert [(r.method, r.verdict) for r in res] == [("auto", "inconclusive")]
+    assert "--method auto" in res[0].rerun
+
+
+@needs_fork
+def test_parallel_workers_give_the_same_results_in_the_same_order():
+    from stiefelsym.claims import load_catalog
+    cat = load_catalog()
+    claims = [cat.get(i) for i in ("adjoint-orbit-regularity", "invariant-metrics")] + \
+        [_claim("sleeps", _sleeps, sizes=admissible(n_max=4, where=lambda n, r: (n, r) == (4, 2))),
+         _claim("ok", _ok, sizes=admissible(n_max=3))]
+    kw = dict(sizes=[Size(3, 1), Size(4, 1), Size(4, 2)], methods=("auto", "modular"), seed=3, timeout=2)
+    seen = []
+    one = runner.verify(claims, jobs=1, **kw)
+    two = runner.verify(claims, jobs=2, on_result=seen.append, **kw)
+    key = lambda r: (r.claim, r.variant, r.n, r.r, r.method, r.verdict, r.expected, r.seed, r.witness)
+    assert [key(r) for r in one] == [key(r) for r in two] == [key(r) for r in seen]
+    assert any(r.variant for r in one) and any(r.verdict == "inconclusive" for r in one)
+
+
+# --------------------------------------------------------------------------- corrections
+
+def _count_claim():
+    def printed(s):
+        return {"count": Count(s.n, 3 if s.n == 2 else s.n, "n")}
+    c = _claim("count", printed, sizes=admissible(n_max=3), fails_at=lambda n, r: n == 2,
+               erratum="n is miscounted at n = 2")
+    c.correction("counted right")(lambda s: {"count": Count(s.n, s.n)})
+    c.correction("wrong at n = 3")(lambda s: {"count": Count(s.n, 4 if s.n == 3 else s.n)})
+    return c
+
+
+@needs_fork
+def test_corrections_run_at_every_planned_size_after_the_plan():
+    c = _count_claim()
+    results = runner.verify([c, _claim("ok", _ok)], methods=("modular",))
+    printed = [r for r in results if r.variant is None]
+    fixes = [r for r in results if r.variant is not None]
+    assert results[:len(printed)] == printed                       # the plan first, then the corrections
+    sizes = [(s.n, s.r) for s in c.sizes]
+    assert [(r.n, r.r) for r in fixes] == sizes * 2
+    assert [r.variant for r in fixes] == ["counted right"] * 6 + ["wrong at n = 3"] * 6
+    assert all(r.verdict == "checked" and r.expected for r in fixes[:6])
+    wrong = {(r.n, r.r): r for r in fixes[6:]}
+    assert all(wrong[s].verdict == "fails" and not wrong[s].expected for s in sizes if s[0] == 3)
+    assert all(r.verdict == "fails" and r.expected for r in printed if r.n == 2)
+
+
+@needs_fork
+def test_no_corrections_when_the_printed_claim_holds_at_the_planned_sizes():
+    results = runner.verify([_count_claim()], sizes=[Size(3, 1)], methods=("modular",))
+    assert [(r.variant, r.verdict) for r in results] == [(None, "checked")]
+
+
+# --------------------------------------------------------------------------- verdict policy
+
+def _result(verdict, method="modular", message="", n=3):
+    return Result(claim="c", paper=["t"], section="9", kind="id", title="", statement="", n=n, r=1,
+                  method=method, verdict=verdict, expected=False, seconds=0.0, seed=0, message=message)
+
+
+@pytest.mark.parametrize("method", runner.METHODS)
+def test_verdict_policy(method):
+    holds = _claim("c", _ok)
+    erratum = _claim("c", _ok, fails_at=lambda n, r: n == 3, erratum="known")
+    n = None if method == "free" else 3
+    fin = lambda v, c=holds, variant=None, msg="": runner._finish(_result(v, method, msg, n), c, variant).expected
+    assert fin("undecided") and fin("undecided", erratum)
+    assert not fin("inconclusive") and not fin("error") and not fin("inconclusive", erratum)
+    if method != "free":
+        assert fin("proved") and fin("checked") and fin("numeric")
+        assert not fin("fails")
+        assert fin("fails", erratum) and not fin("checked", erratum)
+        assert not fin("fails", erratum, "a correction") and fin("checked", erratum, "a correction")
+    else:
+        assert fin("proved")
+
+
+def test_a_method_that_does_not_apply_is_undecided_and_expected():
+    res = runner._finish(_result("inconclusive", "float", "not applicable: no residuals"), _claim("c", _ok), None)
+    assert res.verdict == "undecided" and res.expected
+
+
+@needs_fork
+def test_float_on_a_pure_rank_claim_is_undecided():
+    c = _claim("rk", lambda s: {"rank": Rank(s.X, 1)}, sizes=admissible(n_max=2))
+    res = runner.verify([c], sizes=[Size(2, 1)], methods=("float",))
+    assert [(r.verdict, r.expected) for r in res] == [("undecided", True)]
+
+
+# --------------------------------------------------------------------------- the command line
+
+@pytest.fixture
+def run(tmp_path):
+    def invoke(*args: str):
+        old = os.getcwd()
+        os.chdir(tmp_path)
+        try:
+            return CliRunner().invoke(cli.main, list(args), prog_name="stiefelsym")
+        finally:
+            os.chdir(old)
+    return invoke
+
+
+@needs_fork
+def test_tricks_each_get_their_verdict_and_the_run_goes_on(run, tricks):
+    result = run("verify", "--claims", str(tricks), "--method", "modular", "--timeout", "2",
+                 "--memory", "3", "--jobs", "2", "--format", "json")
+    assert result.exit_code == 1, result.output
+    payload = json.loads(result.stdout)                 # stdout is the document and nothing else
+    by = {r["claim"]: r for r in payload["results"]}
+    assert set(by) == set(TRICK_VERDICTS)
+    for cid, (verdict, message, expected) in TRICK_VERDICTS.items():
+        assert (by[cid]["verdict"], by[cid]["expected"]) == (verdict, expected), (cid, by[cid])
+        assert message in by[cid]["message"], (cid, by[cid]["message"])
+    assert "printed at import" in result.stderr
+    assert payload["meta"]["timeout"] == 2 and payload["meta"]["jobs"] == 2
+    assert "--timeout 2 --memory 3" in by["loops-forever"]["rerun"]
+
+
+@needs_fork
+def test_subprocess_json_stays_one_document_whatever_claims_print(tmp_path, tricks):
+    (tmp_path / "printer.py").write_text(textwrap.dedent('''
+        import atexit, os, sys, threading
+        from stiefelsym import admissible, claim
+        print("import")
+        atexit.register(print, "at exit")
+        atexit.register(os.write, 1, b"fd 1 at exit\\n")
+
+        @claim("printer", paper="t", kind="id", section="9", sizes=admissible(n_max=2))
+        def printer(s):
+            print("body")
+            os.write(1, b"fd 1 in the body\\n")
+            return {"XtX": s.X.T @ s.X - s.Ir}
+    '''))
+    proc = stiefelsym("verify", "--claims", "printer.py", "--format", "json", "--no-report",
+                      "--method", "modular", "--method", "float", cwd=tmp_path)
+    assert proc.returncode == 0, proc.stderr
+    payload = json.loads(proc.stdout)
+    assert len(payload["results"]) == 6
+    for text in ("import", "body", "fd 1 in the body", "at exit", "fd 1 at exit"):
+        assert text in proc.stderr
+    proc = stiefelsym("list", "--claims", "printer.py", cwd=tmp_path)
+    assert proc.returncode == 0 and "import" not in proc.stdout and "import" in proc.stderr
+
+
+@pytest.mark.parametrize("body, what", [
+    ("raise SystemExit(0)", "SystemExit"),
+    ("raise SystemExit('bye')", "SystemExit: bye"),
+    ("class Out(BaseException): pass\nraise Out('x')", "Out: x"),
+    ("raise RuntimeError('no')", "RuntimeError: no"),
+])
+def test_a_claims_file_that_raises_at_import_is_bad_input(run, tmp_path, body, what):
+    (tmp_path / "bad.py").write_text("print('hello')\n" + body + "\n")
+    result = run("verify", "--claims", "bad.py")
+    assert result.exit_code == 2, result.output
+    lines = result.stderr.strip().splitlines()
+    assert lines[-1].startswith("stiefelsym verify: error: bad.py: ") and what in lines[-1]
+    assert [line for line in lines if "error" in line] == [lines[-1]]
+    assert result.stdout == ""
+
+
+def test_subprocess_claims_file_exiting_at_import_exits_2(tmp_path):
+    (tmp_path / "bye.py").write_text("import sys\nsys.exit(0)\n")
+    proc = stiefelsym("verify", "--claims", "bye.py", cwd=tmp_path)
+    assert proc.returncode == 2
+    assert proc.stdout == "" and len(proc.stderr.strip().splitlines()) == 1
+    assert "bye.py: SystemExit" in proc.stderr
+
+
+SLOW = textwrap.dedent('''
+    import os, subprocess, sys, time
+    from pathlib import Path
+    from stiefelsym import admissible, claim
+
+    @claim("slow", paper="t", kind="id", section="9", sizes=admissible(n_max=1))
+    def slow(s):
+        child = subprocess.Popen(["sleep", "300"])
+        Path("pids.tmp").write_text(f"{os.getpid()} {child.pid}")
+        os.replace("pids.tmp", "pids")
+        time.sleep(300)
+        return {"XtX": s.X.T @ s.X - s.Ir}
+''')
+
+
+def _gone(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return True
+    try:   # a zombie waiting for a parent that will not reap it is gone too
+        return Path(f"/proc/{pid}/stat").read_text().split(")")[-1].split()[0] == "Z"
+    except OSError:
+        return True
+
+
+@needs_fork
+@pytest.mark.parametrize("sig, status, word", [(signal.SIGTERM, 143, "terminated"),
+                                               (signal.SIGINT, 130, "interrupted")])
+def test_subprocess_signal_kills_every_worker_and_writes_no_report(tmp_path, sig, status, word):
+    (tmp_path / "slow.py").write_text(SLOW)
+    proc = subprocess.Popen([sys.executable, "-m", "stiefelsym", "verify", "--claims", "slow.py",
+                             "--method", "modular", "--report-dir", "out", "--timeout", "120"],
+                            cwd=tmp_path, env=_env(), stdin=subprocess.DEVNULL,
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        deadline = time.monotonic() + 60
+        while not (tmp_path / "pids").exists():
+            assert proc.poll() is None, proc.communicate()
+            assert time.monotonic() < deadline, "the slow claim never started"
+            time.sleep(0.05)
+        pids = [int(p) for p in (tmp_path / "pids").read_text().split()]
+        proc.send_signal(sig)
+        out, err = proc.communicate(timeout=30)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+    assert proc.returncode == status, err
+    assert "Traceback" not in err
+    assert err.strip().splitlines()[-1] == f"stiefelsym: {word} after 0 of 1 runs; no report written"
+    assert not (tmp_path / "out").exists()
+    deadline = time.monotonic() + 10
+    while not all(_gone(p) for p in pids) and time.monotonic() < deadline:
+        time.sleep(0.05)
+    assert all(_gone(p) for p in pids), pids
+
+
+# --------------------------------------------------------------------------- lines, legend, help
+
+def test_result_lines_give_the_witness_or_the_reason():
+    r = _result("fails")
+    r.witness = {"entry": "prep[1,2]", "value": "3/7"}
+    assert r.line().endswith("-- witness prep[1,2] = 3/7")
+    r = _result("fails")
+    r.certificate = "invariant forms: rank 3 (paper: 2)"
+    assert r.line().endswith("-- invariant forms: rank 3 (paper: 2)")
+    for verdict in ("undecided", "inconclusive", "error"):
+        r = _result(verdict, message="the reason\n  on two lines " + "x" * 300)
+        assert " -- the reason on two lines xxx" in r.line() and r.line().endswith("...")
+        assert r.reason(None).endswith("x" * 300)
+    assert " -- " not in _result("checked").line()
+
+
+@needs_fork
+def test_cli_prints_reasons_rerun_and_the_legend(run, tricks):
+    result = run("verify", "good", "loops-forever", "--claims", str(tricks), "--method", "modular",
+                 "--timeout", "2")
+    assert result.exit_code == 1
+    lines = result.stdout.splitlines()
+    i = next(i for i, line in enumerate(lines) if line.startswith("loops-forever (1,1) modular"))
+    assert lines[i].endswith("UNEXPECTED -- exceeded its time budget of 2 s")
+    assert lines[i + 1] == (f"  rerun: stiefelsym verify loops-forever --size 1,1 --method modular --seed 0 "
+                            f"--claims {tricks} --timeout 2")
+    assert any(line.startswith("p<=: the Schwartz-Zippel bound") for line in lines)
+
+
+def test_verify_help_explains_p_and_the_budgets(run):
+    result = run("verify", "--help")
+    assert result.exit_code == 0
+    text = " ".join(result.stdout.split())
+    assert "Schwartz-Zippel false-pass bound" in text
+    from stiefelsym.methods import BUDGET
+    for method, n in BUDGET.items():
+        assert f"{method} n <= {n}" in text
+    for option in ("--timeout SECONDS", "--memory GIB", "--jobs N"):
+        assert option in text
+
+
+# --------------------------------------------------------------------------- report files, --claims, mutate
+
+def test_report_files_respect_the_umask(tmp_path):
+    for mask, mode in ((0o022, 0o644), (0o077, 0o600), (0o002, 0o664)):
+        old = os.umask(mask)
+        try:
+            write_atomic(tmp_path / f"r{mask}.json", "{}")
+        finally:
+            os.umask(old)
+        assert (tmp_path / f"r{mask}.json").stat().st_mode & 0o777 == mode
+
+
+@pytest.mark.parametrize("args", [["verify", "--report-dir", ""], ["verify", "--report-dir", "  "],
+                                  ["report", "--report-dir", ""]])
+def test_empty_report_dir_is_refused(run, tmp_path, args):
+    result = run(*args)
+    assert result.exit_code == 2 and "report directory is empty" in result.stderr
+    assert len(result.stderr.strip().splitlines()) == 1
+    assert list(tmp_path.iterdir()) == []
+
+
+def _claims_file(path: Path, *ids: str) -> None:
+    path.write_text("from stiefelsym import admissible, claim\n" + "".join(
+        f"@claim({cid!r}, paper='t', kind='id', section='9', sizes=admissible(n_max=1))\n"
+        f"def c{i}(s):\n    return {{'XtX': s.X.T @ s.X - s.Ir}}\n" for i, cid in enumerate(ids)))
+
+
+@needs_fork
+def test_claims_given_twice_loads_both_files(run, tmp_path):
+    _claims_file(tmp_path / "a.py", "from-a")
+    _claims_file(tmp_path / "b.py", "from-b", "also-b")
+    result = run("verify", "--claims", "a.py", "--claims", "b.py", "--method", "modular",
+                 "--format", "json", "--report-dir", "out")
+    assert result.exit_code == 0, result.output
+    payload = json.loads(result.stdout)
+    assert [r["claim"] for r in payload["results"]] == ["from-a", "from-b", "also-b"]
+    assert payload["meta"]["command"].startswith("stiefelsym verify --claims a.py --claims b.py")
+    assert payload["meta"]["title"] == "Verification of the claims of a.py, b.py"
+    assert payload["results"][1]["rerun"].endswith("--claims b.py")
+    _, results = load_results(tmp_path / "out" / "results.json")
+    assert len(results) == 3
+
+
+def test_an_id_defined_in_two_claims_files_is_refused(run, tmp_path):
+    _claims_file(tmp_path / "a.py", "same")
+    _claims_file(tmp_path / "b.py", "other", "same")
+    result = run("verify", "--claims", "a.py", "--claims", "b.py")
+    assert result.exit_code == 2
+    assert "claim 'same' is defined in both a.py and b.py" in result.stderr
+
+
+def test_mutate_is_loaded_only_when_asked_for(run, monkeypatch, tmp_path):
+    monkeypatch.setattr(cli.main, "commands", dict(cli.main.commands))
+    monkeypatch.setattr(cli.main, "lazy", {"mutate": ("stiefelsym_no_such_module", "mutate")})
+    assert run("--help").exit_code == 0 and "mutate" not in run("--help").stdout
+    assert run("mutate").exit_code == 2
+    (tmp_path / "fake_mutate.py").write_text(
+        "import click\n@click.command()\ndef mutate():\n    'Mutation analysis.'\n    click.echo('mutating')\n")
+    monkeypatch.syspath_prepend(str(tmp_path))
+    monkeypatch.setattr(cli.main, "lazy", {"mutate": ("fake_mutate", "mutate")})
+    assert "fake_mutate" not in sys.modules
+    assert run("list", "--claims", "nothing.py").exit_code == 2 and "fake_mutate" not in sys.modules
+    result = run("mutate")
+    assert result.exit_code == 0 and result.stdout == "mutating\n"
+
+
+def test_list_does_not_import_the_mutate_command(tmp_path):
+    code = ("import sys\nfrom stiefelsym.cli import main\n"
+            "code = main(['list'], standalone_mode=False)\n"
+            "print('MUTATE-LOADED' if 'stiefelsym.cli_mutate' in sys.modules else 'MUTATE-NOT-LOADED',"
+            " file=sys.stderr)\n")
+    proc = subprocess.run([sys.executable, "-c", code], cwd=Path(__file__).resolve().parents[1], env=_env(),
+                          capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 0, proc.stderr
+    assert "MUTATE-NOT-LOADED" in proc.stderr
