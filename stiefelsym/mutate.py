@@ -16,8 +16,10 @@ pass says nothing about a mutant, and is not counted.  Then:
   ``proved``/``checked``/``numeric`` (``fails``: refuted with a witness; ``error``:
   e.g. ill-typed, the engine refused it; ``inconclusive``/``undecided``: the method
   could not decide, which is not a refutation);
-* a mutant that passes at every counted cell is **equivalent**: a true statement
-  (often, but not always, trivially so; the list is reported);
+* a mutant that passes at every counted cell is **equivalent**: a true statement at
+  the sizes run (often trivially so, sometimes only because the sizes are small, e.g.
+  a condition n <= 2r + 1 changed to n <= 2r + 2 when no size has n = 2r + 2; the list
+  is reported);
 * a mutant that one method refutes (``fails`` or ``error``) at a size where another
   method passes it is a **survivor** of the passing method: a soundness or
   sensitivity problem;
@@ -216,8 +218,8 @@ def _inside(parents: list[ast.AST], kinds: tuple[type, ...]) -> bool:
 def _coefficient_sites(node, parents, names) -> Iterator[_Site]:
     """An integer coefficient k -> k + 1 (so / 2 -> / 3, s.q(1, 2) -> s.q(1, 3)); s.q(a, b) -> s.q(a, b + 1)."""
     if _is_int(node):
-        if _inside(parents, (ast.JoinedStr, ast.Subscript, ast.Slice)):
-            return   # check names and indices are not coefficients
+        if _inside(parents, (ast.Subscript, ast.Slice)):
+            return   # indices are not coefficients
         if any(isinstance(p, ast.Call) and _call_name(p) in INDEX_CALLS for p in parents):
             return
         new = ast.Constant(node.value + 1)
@@ -259,7 +261,10 @@ def _function_ast(fn: Callable) -> tuple[ast.FunctionDef, str]:
 
 
 def _walk(node: ast.AST, parents: list[ast.AST]) -> Iterator[tuple[ast.AST, list[ast.AST]]]:
-    """Pre-order, with the ancestors of each node (a fixed order: mutants are numbered by it)."""
+    """Pre-order, with the ancestors of each node (a fixed order: mutants are numbered by it).
+    f-strings are names (of checks, of parameters), not mathematics: nothing inside is mutated."""
+    if isinstance(node, ast.JoinedStr):
+        return
     yield node, parents
     for child in ast.iter_child_nodes(node):
         yield from _walk(child, parents + [node])

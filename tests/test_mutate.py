@@ -114,6 +114,16 @@ def test_a_mutant_really_changes_the_value():
     assert toy_identities(scene)["constraint"].shape == got.shape
 
 
+def named_checks(s):
+    return {f"order {2 * 1 + 1}": s.q(3) - s.q(2 + 1)}
+
+
+def test_f_strings_are_names_not_mathematics():
+    texts = [m.description for m in mutants(toy_claim(named_checks))]
+    assert texts and not any("2 * 1" in t for t in texts)
+    assert any("change the coefficient 3 to 4 in `s.q(3)`" in t for t in texts)
+
+
 def test_mutants_keep_the_original_function_intact():
     before = _value(toy_identities, _numeric_scene())
     mutants(toy_claim())
