@@ -860,7 +860,7 @@ MUTATION_EXPLANATION = (
     "kills a mutant when it does not pass it at some counted size: fails (refuted with a witness), "
     "error (for instance ill-typed: the engine refused the expression), or inconclusive/undecided "
     "(the method could not decide; not a refutation).  A mutant that passes everywhere is "
-    "equivalent: a true statement.  A method survives a mutant when it passes it at a size where "
+    "equivalent: a true statement at the sizes run.  A method survives a mutant when it passes it at a size where "
     "another method refutes it; the dimension-free method survives a mutant when it proves one that "
     "is not equivalent.  Survivors are soundness or sensitivity problems.  Kill rate = killed / "
     "(mutants - equivalent).")
@@ -986,12 +986,13 @@ def _md_mutation_body(data: dict[str, Any], full: bool) -> list[str]:
                             f"{_md_cell(short(c['message'], 200))}"]
             out.append("")
     else:
-        out += ["No survivor: every mutant that some method refuted was refuted by every method that ran at "
-                "that size, and the dimension-free method proved no mutant that is not equivalent.", ""]
+        out += ["No survivor: no method passed a mutant at a size where another method refuted it, and the "
+                "dimension-free method proved no mutant that is not equivalent.", ""]
     equiv = _mutants(data, "equivalent")
     unresolved = _mutants(data, "unresolved")
     if full or len(equiv) <= 30:
-        out += [f"Equivalent mutants ({len(equiv)}): true statements, passed by every method at every size.", ""]
+        out += [f"Equivalent mutants ({len(equiv)}): passed by every method at every size run (where the "
+                "printed claim passes), so true statements at those sizes.", ""]
         out += [_md_mutant_item(o, verdicts=False) for o in equiv] + [""] if equiv else []
     else:
         out += [f"{len(equiv)} equivalent mutants (true statements), listed in `mutation.md`.", ""]
@@ -1033,14 +1034,24 @@ def render_mutation_markdown(mutation: Any) -> str:
     ops = meta.get("operators") or []
     if ops:
         out += ["The corruptions:", ""] + [f"- {o['name']}: {_md_escape(o['description'])}" for o in ops] + [""]
-    sizes = [(c["claim"], c.get("sizes", [])) for c in data.get("claims", []) if not c.get("skipped")]
-    if sizes:
-        distinct = {tuple(map(tuple, s)) for _, s in sizes}
-        if len(distinct) == 1:
-            out += [f"Sizes: {format_sizes([tuple(x) for x in sizes[0][1]], 6) or 'none'} (every claim).", ""]
-        else:
-            out += ["Sizes: " + "; ".join(f"`{cid}` {format_sizes([tuple(x) for x in s], 6) or 'none'}"
-                                          for cid, s in sizes) + ".", ""]
+    swaps = meta.get("letter_swaps") or {}
+    if swaps:
+        seen: dict[frozenset, str] = {}
+        for a, bs in swaps.items():
+            for b in bs:   # a two-way swap once, in the order of the table
+                seen.setdefault(frozenset((a, b)), f"{a} ↔ {b}" if a in swaps.get(b, ()) else f"{a} → {b}")
+        pairs = list(seen.values())
+        out += ["Letter swaps (scene attributes, local names bound to them, and flow[\"...\"] keys): "
+                + ", ".join(_md_code(p) for p in pairs) + ".", ""]
+    groups: dict[tuple, list[str]] = {}
+    for c in data.get("claims", []):
+        if not c.get("skipped"):
+            groups.setdefault(tuple(tuple(x) for x in c.get("sizes", [])), []).append(c["claim"])
+    if groups:
+        out += ["Sizes (where the printed claim is stated and expected to hold):", ""]
+        out += [f"- {format_sizes(sz, 6) or 'none'}: " + (f"every claim ({len(ids)})" if len(groups) == 1
+                                                         else ", ".join(f"`{i}`" for i in ids))
+                for sz, ids in groups.items()] + [""]
     return "\n".join(out + _md_mutation_body(data, full=True)).rstrip() + "\n"
 
 
