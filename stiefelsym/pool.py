@@ -316,34 +316,43 @@ class WorkerPool:
                 stream.flush()
             except (OSError, ValueError, AttributeError):
                 pass
-        # SIGINT and SIGTERM wait until both processes are set up (the child resets their handlers)
+        # SIGINT and SIGTERM wait until both processes are set up (the child resets their handlers,
+        # the parent has registered the worker, so that it is killed with the others)
         mask = signal.pthread_sigmask(signal.SIG_BLOCK, _SIGNALS) if hasattr(signal, "pthread_sigmask") \
             else None
-        gc.freeze()    # the inherited objects stay out of the worker's collections (fewer copied pages)
         try:
-            pid = os.fork()
-            if pid == 0:
-                _worker_main(task_r, result_w, self.execute, self.memory, self.describe, mask)
-        except BaseException:
-            for fd in (task_r, task_w, result_r, result_w):
-                os.close(fd)
-            raise
+            gc.freeze()    # the inherited objects stay out of the worker's collections (fewer copied pages)
+            try:
+                pid = os.fork()
+                if pid == 0:
+                    _worker_main(task_r, result_w, self.execute, self.memory, self.describe, mask)
+            except BaseException:
+                for fd in (task_r, task_w, result_r, result_w):
+                    os.close(fd)
+                raise
+            finally:
+                gc.unfreeze()
+            os.close(task_r)
+            os.close(result_w)
+            try:
+                os.setpgid(pid, pid)
+            except OSError:
+                pass
+            w = _Worker(pid, task_w, result_r)
+            self.workers.append(w)
         finally:
-            gc.unfreeze()
             if mask is not None:
                 signal.pthread_sigmask(signal.SIG_SETMASK, mask)
-        os.close(task_r)
-        os.close(result_w)
-        try:
-            os.setpgid(pid, pid)
-        except OSError:
-            pass
-        w = _Worker(pid, task_w, result_r)
-        self.workers.append(w)
         return w
 
     def _reap(self, w: _Worker, kill: bool) -> int | None:
         """Remove a worker (killing it and its process group first if asked); its wait status."""
+        if kill:
+            for killer in (os.killpg, os.kill):
+                try:
+                    killer(w.pid, signal.SIGKILL)
+                except OSError:
+                    pass
         if w in self.workers:
             self.workers.remove(w)
         for fd in (w.task_fd, w.result_fd):
@@ -351,12 +360,6 @@ class WorkerPool:
                 os.close(fd)
             except OSError:
                 pass
-        if kill:
-            for killer in (os.killpg, os.kill):
-                try:
-                    killer(w.pid, signal.SIGKILL)
-                except (ProcessLookupError, PermissionError, OSError):
-                    pass
         while True:
             try:
                 return os.waitpid(w.pid, 0)[1]
@@ -366,7 +369,7 @@ class WorkerPool:
                 continue
 
     def close(self) -> None:
-        """Stop every worker: an idle one exits when its pipe closes, a busy one is killed."""
+        """Stop every worker (killed with its process group, then reaped)."""
         for w in list(self.workers):
             self._reap(w, kill=True)
 

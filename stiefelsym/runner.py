@@ -202,12 +202,13 @@ def _finish(res: Result, claim: Claim, variant: str | None, hard: str | None = N
 
 # --------------------------------------------------------------------------- the plan, in workers
 
-def _execute(claims: list[Claim], seed: int, hard: str | None, timeout: float, task: Task) -> Result:
-    """Run one task (in a worker): the raw result."""
+def _execute(claims: list[Claim], seed: int, hard: str | None, timeout: float, in_worker: bool,
+             task: Task) -> Result:
+    """Run one task (in a worker, unless fork is not available): the raw result."""
     ci, n, r, method, k = task
     c = claims[ci]
     func = c.corrections[k].func if k >= 0 else None
-    return _guarded(c, None if n is None else Size(n, r), method, seed, func, hard, in_worker=True,
+    return _guarded(c, None if n is None else Size(n, r), method, seed, func, hard, in_worker=in_worker,
                     timeout=timeout)
 
 
@@ -274,7 +275,7 @@ def verify(claims: list[Claim], *, sizes: list[Size] | None = None, methods: Ite
     results: list[Result] = []
 
     def execute(task: Task) -> Result:
-        return _execute(claims, seed, hard, timeout, task)
+        return _execute(claims, seed, hard, timeout, pool.forking, task)
 
     def deliver(res: Result) -> None:
         results.append(res)

@@ -553,3 +553,16 @@ def test_list_does_not_import_the_mutate_command(tmp_path):
                           capture_output=True, text=True, timeout=120)
     assert proc.returncode == 0, proc.stderr
     assert "MUTATE-NOT-LOADED" in proc.stderr
+
+
+def test_without_fork_the_plan_runs_in_process():
+    claims = [_claim("exits", _exits), _claim("ok", _ok), _count_claim()]
+    results = runner.verify(claims, methods=("auto", "modular"), fork=False)
+    by = {(r.claim, r.variant, r.n, r.method): r for r in results}
+    assert by[("exits", None, 1, "auto")].verdict == "error"
+    assert "SystemExit" in by[("exits", None, 1, "auto")].message
+    assert by[("ok", None, 1, "modular")].verdict == "checked"
+    assert by[("count", "counted right", 3, "modular")].verdict == "checked"
+    with_fork = runner.verify(claims, methods=("auto", "modular")) if hasattr(os, "fork") else results
+    assert [(r.claim, r.variant, r.n, r.r, r.method, r.verdict) for r in results] == \
+        [(r.claim, r.variant, r.n, r.r, r.method, r.verdict) for r in with_fork]
