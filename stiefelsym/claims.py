@@ -167,6 +167,9 @@ class Claim:
             raise ValueError(f"claim {self.id}: expect must be 'holds', 'nonzero' or 'fails'")
         if not self.sizes:
             raise ValueError(f"claim {self.id}: no sizes")
+        if (self.expect == "fails" or self.fails_at is not None) and not self.erratum.strip():
+            raise ValueError(f"claim {self.id}: a statement expected to fail must be a documented erratum "
+                             "(say what is wrong with erratum=...)")
 
     def correction(self, description: str, changes: int = 1):
         """Decorator registering a candidate correction of this claim (errata search)."""

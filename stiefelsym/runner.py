@@ -17,7 +17,7 @@ from .claims import Claim, Registry, Size
 from .hard import hard_case
 from .methods import BUDGET, METHOD_RUNNERS, BudgetError, check_budget, expected_verdict  # noqa: F401 (BudgetError is part of the runner API)
 from .pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT, GIB, Outcome, Terminated, WorkerPool  # noqa: F401
-from .results import VERDICTS, Result
+from .results import PASSING, VERDICTS, Result
 from .scene import SizeError
 
 METHODS = ("auto", "exact", "rational", "modular", "float", "free")
@@ -186,15 +186,26 @@ def _finish(res: Result, claim: Claim, variant: str | None, hard: str | None = N
     res.variant = variant
     if res.verdict == "inconclusive" and res.message.startswith("not applicable"):
         res.verdict = "undecided"     # the method has nothing to say here, e.g. float on a pure rank claim
+    try:
+        erratum = variant is None and bool(claim.erratum) and claim.expects_failure(res.n, res.r)
+    except (KeyboardInterrupt, Terminated):
+        raise
+    except BaseException as exc:  # noqa: BLE001 - the claim's own fails_at broke
+        from .methods import _describe
+        res.verdict = "error"
+        res.message = f"the claim's erratum sizes (fails_at) could not be evaluated: {_describe(exc)}"
+        erratum = False
     if res.verdict == "undecided":
         res.expected = True
     elif res.verdict in NEVER_EXPECTED:
         res.expected = False
     elif res.method == "free":
         res.expected = res.verdict == "proved" and (variant is not None or claim.expect != "fails")
+    elif erratum:                     # a documented erratum: expected to fail as printed, here
+        res.expected = res.verdict == "fails"
     else:
-        res.expected = expected_verdict(claim, res.verdict, variant, res.n, res.r)
-    if variant is None and claim.erratum and claim.expects_failure(res.n, res.r):
+        res.expected = res.verdict in PASSING
+    if erratum:
         res.erratum = claim.erratum
     res.rerun = rerun_command(res, hard)
     return res

@@ -530,7 +530,7 @@ def test_an_id_defined_in_two_claims_files_is_refused(run, tmp_path):
 
 
 def test_mutate_is_loaded_only_when_asked_for(run, monkeypatch, tmp_path):
-    monkeypatch.setattr(cli.main, "commands", dict(cli.main.commands))
+    monkeypatch.setattr(cli.main, "commands", {k: v for k, v in cli.main.commands.items() if k != "mutate"})
     monkeypatch.setattr(cli.main, "lazy", {"mutate": ("stiefelsym_no_such_module", "mutate")})
     assert run("--help").exit_code == 0 and "mutate" not in run("--help").stdout
     assert run("mutate").exit_code == 2
@@ -566,3 +566,22 @@ def test_without_fork_the_plan_runs_in_process():
     with_fork = runner.verify(claims, methods=("auto", "modular")) if hasattr(os, "fork") else results
     assert [(r.claim, r.variant, r.n, r.r, r.method, r.verdict) for r in results] == \
         [(r.claim, r.variant, r.n, r.r, r.method, r.verdict) for r in with_fork]
+
+
+def test_only_a_documented_erratum_is_expected_to_fail(run, tmp_path):
+    (tmp_path / "undocumented.py").write_text(
+        "from stiefelsym import admissible, claim\n"
+        "@claim('u', paper='t', kind='id', section='9', sizes=admissible(n_max=1), fails_at=lambda n, r: True)\n"
+        "def u(s):\n    return {'XtX': s.X.T @ s.X}\n")
+    result = run("verify", "--claims", "undocumented.py")
+    assert result.exit_code == 2 and "must be a documented erratum" in result.stderr
+    c = _claim("c", _ok)
+    c.fails_at = lambda n, r: True                     # set afterwards, still without an erratum
+    assert not runner._finish(_result("fails"), c, None).expected
+    assert runner._finish(_result("checked"), c, None).expected
+
+
+def test_an_erratum_predicate_that_breaks_is_an_error_not_a_crash():
+    c = _claim("c", _ok, fails_at=lambda n, r: 1 / 0, erratum="broken predicate")
+    res = runner._finish(_result("fails"), c, None)
+    assert res.verdict == "error" and not res.expected and "ZeroDivisionError" in res.message
