@@ -265,6 +265,24 @@ def test_user_claims_file_with_catalog_claim(fake, run, tmp_path):
     assert fake.calls[-1]["claims"] == ["mine", "ddim"]
 
 
+def test_budgets_jobs_and_named_sizes_reach_the_runner(fake, run):
+    assert run("verify", "prep").exit_code == 0
+    assert fake.calls[-1]["timeout"] == 300 and fake.calls[-1]["memory"] == 4
+    assert fake.calls[-1]["jobs"] == 1 and fake.calls[-1]["strict_sizes"] is True
+    result = run("verify", "--timeout", "2.5", "--memory", "0.5", "--jobs", "3", "--format", "json")
+    assert result.exit_code == 0
+    assert (fake.calls[-1]["timeout"], fake.calls[-1]["memory"], fake.calls[-1]["jobs"]) == (2.5, 0.5, 3)
+    assert fake.calls[-1]["strict_sizes"] is False
+    meta = json.loads(result.stdout)["meta"]
+    assert meta["command"] == "stiefelsym verify --timeout 2.5 --memory 0.5 --method auto --seed 0"
+    assert (meta["timeout"], meta["memory_gib"], meta["jobs"]) == (2.5, 0.5, 3)
+
+
+def test_the_p_legend_follows_the_summary(fake, run):
+    lines = run("verify", "prep").stdout.splitlines()
+    assert lines[-1].startswith("p<=: the Schwartz-Zippel bound")
+
+
 def test_progress_bar_does_not_touch_stdout(fake, run, monkeypatch):
     monkeypatch.setattr(cli, "_isatty", lambda stream: True)
     result = run("verify", "prep")
@@ -320,6 +338,10 @@ def test_bad_size_is_one_line(fake, run, size):
     (["nosuch"], "unknown claim 'nosuch'"),
     (["--claims", "missing.py"], "claims file not found: missing.py"),
     (["--no-report", "--report-dir", "x"], "contradict"),
+    (["--timeout", "0"], "0.0 is not in the range x>0"),
+    (["--memory", "-1"], "-1.0 is not in the range x>0"),
+    (["--jobs", "0"], "0 is not in the range x>=1"),
+    (["--report-dir", ""], "the report directory is empty"),
 ])
 def test_bad_input_is_one_line(fake, run, args, message):
     assert message in _one_line_error(run("verify", *args))
