@@ -477,7 +477,7 @@ class _Stdout:
     def __exit__(self, *exc: Any) -> None:
         try:
             self.stream.flush()
-        except (OSError, ValueError):
+        except (OSError, ValueError, AttributeError):
             pass
         sys.stdout = self.original
         if self.stream is not self.original:
