@@ -109,17 +109,22 @@ class SizeSpec:
 
 
 def admissible(n_max: int = 5, *, n_min: int = 1, r_min: int = 1, r_max: int | None = None,
-               where: Callable[[int, int], bool] | None = None, condition: str = "") -> SizeSpec:
-    """All sizes 1 <= r_min <= r <= min(n, r_max), n_min <= n <= n_max, filtered by ``where``.
+               where: Callable[[int, int], bool] | None = None, condition: str = "",
+               stated_n_max: int | None = None) -> SizeSpec:
+    """The sizes a claim is stated for: 1 <= r_min <= r <= min(n, r_max), n >= n_min, filtered by
+    ``where``, and n <= stated_n_max if given (None: every n).  The catalog verifies them by
+    default up to n = n_max; an explicit --size may go further, never outside the statement.
 
     ``condition`` states the restriction in words for the report (e.g. "n >= 2r")."""
+    if stated_n_max is not None and stated_n_max < n_max:
+        n_max = stated_n_max
     out = []
-    spec = SizeSpec((), n_min, r_min, r_max, where, condition, n_max)
+    spec = SizeSpec((), n_min, r_min, r_max, where, condition, stated_n_max)
     for n in range(max(n_min, 1), n_max + 1):
         for r in range(1, n + 1):
             if spec.admits(n, r):
                 out.append(Size(n, r))
-    return SizeSpec(tuple(out), n_min, r_min, r_max, where, condition, n_max)
+    return SizeSpec(tuple(out), n_min, r_min, r_max, where, condition, stated_n_max)
 
 
 @dataclass

@@ -19,17 +19,17 @@ from stiefelsym.scene import SizeError
 FILE = textwrap.dedent('''
     from stiefelsym import admissible, claim
 
-    @claim("small", paper="t", kind="id", section="9", sizes=admissible(n_max=2))
+    @claim("small", paper="t", kind="id", section="9", sizes=admissible(n_max=2, stated_n_max=2))
     def small(s):
         return {"XtX": s.X.T @ s.X - s.Ir}
 
     @claim("big", paper="t", kind="id", section="9",
-           sizes=admissible(n_max=4, n_min=2, condition="n >= 2 (a pair of rows)"))
+           sizes=admissible(n_max=4, n_min=2, condition="n >= 2 (a pair of rows)", stated_n_max=4))
     def big(s):
         return {"XtX": s.X.T @ s.X - s.Ir}
 
     @claim("thin", paper="t", kind="id", section="9",
-           sizes=admissible(n_max=4, where=lambda n, r: n >= 2 * r, condition="n >= 2r"))
+           sizes=admissible(n_max=4, where=lambda n, r: n >= 2 * r, condition="n >= 2r", stated_n_max=4))
     def thin(s):
         return {"XtX": s.X.T @ s.X - s.Ir}
 ''')
@@ -56,14 +56,16 @@ def _error(result) -> str:
     return lines[0]
 
 
-def test_admissible_records_n_max_and_admits_checks_it():
-    spec = admissible(n_max=4)
+def test_admissible_records_the_stated_bound_and_admits_checks_it():
+    spec = admissible(n_max=4, stated_n_max=4)
     assert spec.n_max == 4
     assert spec.admits(4, 2) and not spec.admits(5, 2) and not spec.admits(6, 2)
     assert max(s.n for s in spec) == 4
+    default = admissible(n_max=4)                          # verified to n = 4, stated for every n
+    assert max(s.n for s in default) == 4 and default.admits(9, 3) and default.n_max is None
     assert SizeSpec((Size(2, 1),)).admits(9, 3)          # no n_max: no upper bound
-    assert admissible(n_max=5).describe() == "n <= 5"
-    assert admissible(4, n_min=2, r_max=2, condition="c").describe() == "2 <= n <= 4, r <= 2 (c)"
+    assert admissible(n_max=5, stated_n_max=5).describe() == "n <= 5"
+    assert admissible(4, n_min=2, r_max=2, condition="c", stated_n_max=4).describe() == "2 <= n <= 4, r <= 2 (c)"
 
 
 @pytest.mark.parametrize("args, message", [
@@ -96,7 +98,7 @@ def test_a_named_claim_at_its_own_sizes_runs(run):
 
 
 def test_plan_strict_and_lenient():
-    c = Claim(id="c", paper=("t",), kind="id", section="9", func=lambda s: {}, sizes=admissible(n_max=3))
+    c = Claim(id="c", paper=("t",), kind="id", section="9", func=lambda s: {}, sizes=admissible(n_max=3, stated_n_max=3))
     with pytest.raises(SizeError, match=r"claim c is stated for sizes n <= 3; \(4,1\) is outside"):
         runner.plan([c], [Size(4, 1)], ["modular"], strict=True)
     with pytest.raises(SizeError, match=r"no selected claim is stated for size \(4,1\)"):
@@ -105,13 +107,25 @@ def test_plan_strict_and_lenient():
 
 
 def test_subprocess_catalog_claim_beyond_its_sizes_exits_2(tmp_path):
+    """chain-algebra-commutative is stated for n >= 2 (so(1) = 0 has no invariants)."""
     env = {k: v for k, v in os.environ.items() if not k.startswith("PYTEST")}
-    proc = subprocess.run([sys.executable, "-m", "stiefelsym", "verify", "normal-flow", "--size", "6,2",
+    proc = subprocess.run([sys.executable, "-m", "stiefelsym", "verify", "chain-algebra-commutative", "--size", "1,1",
                            "--method", "modular"], cwd=tmp_path, env=env, capture_output=True, text=True,
                           timeout=120, stdin=subprocess.DEVNULL)
     assert proc.returncode == 2 and proc.stdout == ""
     assert proc.stderr.strip().splitlines() == [
-        "stiefelsym verify: error: claim normal-flow is stated for sizes n <= 5; (6,2) is outside"]
+        "stiefelsym verify: error: claim chain-algebra-commutative is stated for sizes n >= 2 "
+        "(n >= 2 (so(1) = 0 has no invariants)); (1,1) is outside"]
+
+
+def test_catalog_identities_are_stated_for_every_size(tmp_path):
+    """The catalog verifies n <= 5 by default; an identity may be run further, e.g. n = 6."""
+    env = {k: v for k, v in os.environ.items() if not k.startswith("PYTEST")}
+    proc = subprocess.run([sys.executable, "-m", "stiefelsym", "verify", "normal-flow", "--size", "6,2",
+                           "--method", "modular", "--no-report"], cwd=tmp_path, env=env, capture_output=True,
+                          text=True, timeout=300, stdin=subprocess.DEVNULL)
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stdout.startswith("normal-flow (6,2) modular: checked")
 
 
 def test_subprocess_claims_file_size_refusal(tmp_path):
