@@ -2,10 +2,15 @@
 
 * ``exact``    symbolic (symengine): the residual is identically zero on a chart
                of the constraint set; the reduction used is stated.
-* ``rational`` exact rationals at seeded random points of the Cayley chart,
-               with the Schwartz-Zippel false-pass bound from a degree bound.
-* ``modular``  the same over GF(p), p = 2^61 - 1.
+* ``rational`` exact rationals at seeded random points of the Cayley chart
+               (integers in [-2^30, 2^30]), with the Schwartz-Zippel false-pass
+               bound from a degree bound; as many points as the bound 1e-30 needs.
+* ``modular``  the same over GF(p), a fresh prime p in [2^60, 2^61) per point,
+               with a height bound for the primes that divide the numerator.
 * ``float``    float64 with a running error bound; mpmath escalation.
+
+Sampled methods never decide a rank "at every point" (verdict ``undecided``),
+and a check without entries is an error under every method.
 """
 from __future__ import annotations
 

@@ -1,0 +1,367 @@
+"""Verdicts that cannot be fooled: each trick an adversarial claim could play on a method,
+reproduced by a small claim, now fails, errs or is refused; the honest version still passes."""
+import math
+import random
+
+import pytest
+
+from stiefelsym import Count, Rank, admissible
+from stiefelsym.claims import Claim, Size
+from stiefelsym.fields import (PRIME_HIGH, PRIME_LOW, PRIMES_IN_RANGE_LOWER, ConstantDegenerate, ErrNum,
+                               FloatField, FloatUnresolved, ModularField, primes_in_range_lower_bound,
+                               random_prime)
+from stiefelsym.methods import (POINTS_CAP, POINTS_TARGET, _per_point_bound, _points_needed, _prime_field,
+                                degree_bound, run_exact, run_float, run_points)
+from stiefelsym.runner import run_one
+
+PASSING = ("proved", "checked", "numeric")
+
+
+def _claim(func, kind="id", expect="holds", cid="trick"):
+    return Claim(id=cid, paper=("prep",), kind=kind, section="t", func=func, sizes=admissible(4), expect=expect)
+
+
+def resolvent_identity(s):
+    R = s.resolvent(s.lam)
+    return {"AR": s.A @ R - (s.lam * R - s.In)}
+
+
+def resolvent_identity_sign(s):
+    R = s.resolvent(s.lam)
+    return {"AR": s.A @ R - (s.lam * R + s.In)}
+
+
+# -- 1. the modular method: a prime per point, a height bound, enough points -----------------
+
+def test_the_prime_count_is_a_proven_lower_bound():
+    assert primes_in_range_lower_bound() >= PRIMES_IN_RANGE_LOWER >= 1.9e16
+
+
+def test_primes_are_drawn_by_the_seed_from_the_whole_range():
+    import flint
+    ps = [random_prime(random.Random(f"p{k}")) for k in range(20)]
+    assert all(PRIME_LOW <= p < PRIME_HIGH and flint.fmpz(p).is_prime() for p in ps)
+    assert len(set(ps)) == 20
+    assert ps == [random_prime(random.Random(f"p{k}")) for k in range(20)]
+
+
+def test_a_constant_divisible_by_p_is_refused_not_reduced_to_zero():
+    F = ModularField(2**61 - 1)
+    for q in (2**61 - 1, 3 * (2**61 - 1), __import__("fractions").Fraction(1, 2**61 - 1)):
+        with pytest.raises(ConstantDegenerate):
+            F.const(q)
+    assert F.const(5) * F.const(__import__("fractions").Fraction(1, 5)) == F.const(1)
+
+
+def mersenne_multiple(s):
+    """False: (2^61 - 1) X vanished mod the old fixed prime 2^61 - 1."""
+    return {"pX": s.X * (2**61 - 1)}
+
+
+def mersenne_multiple_raw(s):
+    """False, the constant entering the field arithmetic directly (no const() to refuse it)."""
+    return {"pX": s.X[0, 0] * (2**61 - 1)}
+
+
+@pytest.mark.parametrize("func", [mersenne_multiple, mersenne_multiple_raw], ids=lambda f: f.__name__)
+def test_a_constant_multiple_of_the_old_prime_fails(func):
+    res = run_points(_claim(func), 3, 2, "modular", 0)
+    assert res.verdict == "fails" and PRIME_LOW <= res.witness["prime"] < PRIME_HIGH
+
+
+def test_a_claim_aimed_at_the_seeds_primes_has_them_redrawn():
+    """A constant divisible by the primes seed 0 draws first: those primes are redrawn, the claim fails."""
+    probe = _claim(mersenne_multiple)
+    c = 1
+    for t in range(6):
+        for attempt in range(3):
+            c *= _prime_field(probe, 3, 2, 0, t, attempt).p
+
+    def aimed(s):
+        return {"cX": s.X * c}
+    res = run_points(_claim(aimed, cid=probe.id), 3, 2, "modular", 0)
+    assert res.verdict == "fails"
+    assert res.witness["prime"] % 1 == 0 and c % res.witness["prime"] != 0
+
+
+def test_the_height_bound_sees_big_constants():
+    small = degree_bound(_claim(resolvent_identity), 3, 2)
+
+    def big(s):
+        R = s.resolvent(s.lam)
+        return {"AR": s.A @ R - (s.lam * R - s.In) * s.q(3**400, 7**50)}
+    large = degree_bound(_claim(big), 3, 2)
+    assert large.height >= small.height + 400 * math.log2(3) - 1
+    assert large.constant_bits >= 400 * math.log2(3) + 50 * math.log2(7)
+
+
+def fermat(s):
+    """False, but x^p - x vanishes at every point of GF(p) for p = 2^61 - 1 (Fermat)."""
+    x = s.X[0, 0]
+    y, e = s.const(1), 2**61 - 1
+    base = x
+    while e:
+        if e & 1:
+            y = y * base
+        base = base * base
+        e >>= 1
+    return {"x^p - x": y - x}
+
+
+def test_fermat_trick_is_never_checked():
+    res = run_points(_claim(fermat), 3, 1, "modular", 0)
+    assert res.verdict in ("fails", "inconclusive")
+
+
+def _huge_degree_identity(k):
+    def claim(s):
+        """True: (x/x)^(2^k) = 1, but its degree bound 2^k exceeds what any sample set can bound."""
+        y = s.X[0, 0] / s.X[0, 0]
+        for _ in range(k):
+            y = y * y
+        return {"(x/x)^(2^k) - 1": y - 1}
+    return claim
+
+
+@pytest.mark.parametrize("kind,k", [("rational", 40), ("modular", 62)])
+def test_a_residual_of_huge_degree_is_inconclusive_not_checked(kind, k):
+    res = run_points(_claim(_huge_degree_identity(k)), 3, 1, kind, 0)
+    assert res.verdict == "inconclusive" and "bound" in res.message
+    honest = run_points(_claim(_huge_degree_identity(3)), 3, 1, kind, 0)
+    assert honest.verdict == "checked" and honest.false_pass_bound <= POINTS_TARGET
+
+
+def test_the_number_of_points_is_chosen_for_the_target():
+    assert _points_needed(0.0) == 2 and _points_needed(1e-16) == 2
+    assert _points_needed(1e-8) == 4
+    assert _points_needed(0.05) == POINTS_CAP and _points_needed(0.1) is None and _points_needed(1.0) is None
+    for eps in (1e-16, 3e-11, 1e-8, 2e-3, 0.05):
+        k = _points_needed(eps)
+        assert eps ** k <= POINTS_TARGET and (k == 2 or eps ** (k - 1) > POINTS_TARGET)
+
+
+@pytest.mark.parametrize("kind", ["rational", "modular"])
+def test_checked_means_a_bound_below_the_target_per_component(kind):
+    for n, r in ((3, 2), (3, 3)):
+        res = run_points(_claim(resolvent_identity), n, r, kind, 0)
+        assert res.verdict == "checked" and 0 < res.false_pass_bound <= POINTS_TARGET
+        assert ("each of the 2 components" in res.certificate) == (r == n)
+    mod = run_points(_claim(resolvent_identity), 3, 2, "modular", 0)
+    assert "Rosser-Schoenfeld" in mod.certificate and "primes:" in mod.certificate
+    assert mod.certificate == run_points(_claim(resolvent_identity), 3, 2, "modular", 0).certificate
+    eps = _per_point_bound("modular", degree_bound(_claim(resolvent_identity), 3, 2))
+    assert 0 < eps < 1e-15
+
+
+@pytest.mark.parametrize("kind", ["rational", "modular"])
+def test_negative_control_sampled_methods(kind):
+    res = run_points(_claim(resolvent_identity_sign), 3, 2, kind, 0)
+    assert res.verdict == "fails" and res.witness["seed"] == 0
+
+
+# -- 2. ranks at every point ---------------------------------------------------------------
+
+def every_point_rank_false(s):
+    """False: [x] has rank 1 generically, not at every point (x = 0)."""
+    return {"rank": Rank(s.mat([[s.X[0, 0]]]), 1, generic=False)}
+
+
+def every_point_rank_true(s):
+    """True: X^T X = I_r has rank r at every point."""
+    return {"rank": Rank(s.X.T @ s.X, s.r, generic=False), "X^T X": s.X.T @ s.X - s.Ir}
+
+
+def every_point_rank_exceeded(s):
+    return {"rank": Rank(s.mat([[s.X[0, 0]]]), 0, generic=False)}
+
+
+def every_point_rank_too_low(s):
+    """False: X X^T (r < n) has rank r < n everywhere."""
+    return {"rank": Rank(s.X @ s.X.T, s.n, generic=False)}
+
+
+@pytest.mark.parametrize("kind", ["rational", "modular"])
+def test_every_point_ranks_are_not_checked_by_sampling(kind):
+    for func in (every_point_rank_false, every_point_rank_true):
+        res = run_points(_claim(func, "dim"), 3, 2, kind, 0)
+        assert res.verdict == "undecided" and res.message.startswith("not applicable:")
+        assert "exact method" in res.message and "generic rank >= " in res.checks[0].detail
+    assert run_exact(_claim(every_point_rank_false, "dim"), 3, 2, 0).verdict == "fails"
+    assert run_exact(_claim(every_point_rank_true, "dim"), 3, 2, 0).verdict == "proved"
+    assert run_one(_claim(every_point_rank_true, "dim"), Size(3, 2), kind, 0).expected
+
+
+@pytest.mark.parametrize("kind", ["rational", "modular"])
+def test_a_sampled_rank_above_the_printed_one_still_fails(kind):
+    assert run_points(_claim(every_point_rank_exceeded, "dim"), 3, 2, kind, 0).verdict == "fails"
+
+
+def test_a_rank_below_the_printed_one_at_an_exact_point_fails():
+    assert run_points(_claim(every_point_rank_too_low, "dim"), 3, 2, "rational", 0).verdict == "fails"
+    assert run_points(_claim(every_point_rank_too_low, "dim"), 3, 2, "modular", 0).verdict not in PASSING
+
+
+def test_float_never_passes_a_rank():
+    res = run_float(_claim(every_point_rank_true, "id"), 3, 2, 0)
+    assert res.verdict == "undecided" and res.message.startswith("not applicable:")
+
+
+def count_wrong_beside_a_true_residual(s):
+    return {"X^T X": s.X.T @ s.X - s.Ir, "count": Count(s.n, s.n + 1)}
+
+
+@pytest.mark.parametrize("method", ["float", "rational", "modular"])
+def test_a_wrong_count_next_to_a_true_residual_fails(method):
+    assert run_one(_claim(count_wrong_beside_a_true_residual), Size(3, 2), method, 0).verdict == "fails"
+
+
+# -- 3. the float method -------------------------------------------------------------------
+
+def identically_zero(s):
+    return {"X^T X - I": s.X.T @ s.X - s.Ir}
+
+
+def rounding_sized_zero(s):
+    """Identically zero, but only after a cancellation that float64 cannot see: (a + q) - a - q."""
+    a, q = s.param("a_1"), s.q(1, 10**20)
+    return {"cancel": (a + q) - a - q}
+
+
+def rounding_sized_nonzero(s):
+    """Not zero: (a + q) - a = q = 10^-20, which float64 rounds away."""
+    a, q = s.param("a_1"), s.q(1, 10**20)
+    return {"tiny": (a + q) - a}
+
+
+def clearly_nonzero(s):
+    return {"X^T X": s.X.T @ s.X}
+
+
+def test_float_respects_expect_nonzero():
+    for func in (identically_zero, rounding_sized_zero):
+        res = run_float(_claim(func, expect="nonzero"), 3, 2, 0)
+        assert res.verdict == "fails"
+    res = run_float(_claim(clearly_nonzero, expect="nonzero"), 3, 2, 0)
+    assert res.verdict == "numeric" and "error bound" in res.certificate
+    res = run_float(_claim(rounding_sized_nonzero, expect="nonzero"), 3, 2, 0)
+    assert res.verdict == "numeric" and res.witness["field"] == "rational"
+
+
+def only_on_the_identity_component(s):
+    X = s.X
+    det = (X[0, 0] * (X[1, 1] * X[2, 2] - X[1, 2] * X[2, 1]) - X[0, 1] * (X[1, 0] * X[2, 2] - X[1, 2] * X[2, 0])
+           + X[0, 2] * (X[1, 0] * X[2, 1] - X[1, 1] * X[2, 0]))
+    return {"det X - 1": det - 1}
+
+
+def test_float_samples_both_components_when_r_equals_n():
+    res = run_float(_claim(only_on_the_identity_component), 3, 3, 0)
+    assert res.verdict == "fails" and res.witness["component"] == 1
+    assert run_float(_claim(identically_zero), 3, 3, 0).verdict == "numeric"
+
+
+def overflowing_scale_hides_a_false_entry(s):
+    """False.  "scale": 0 with a term scale beyond float64 (it overflowed to inf and switched the
+    resolution test off for every entry); "false": a cancellation float64 cannot resolve, off by 10^-6."""
+    a = s.param("a_1")
+    w = (a + s.q(1000)) - s.q(1000)
+    for _ in range(8):
+        w = w * w
+    q = s.q(1, 10**12)
+    return {"scale": w - w, "false": 1 / ((a + q) - a) - 1 / (q * (1 + s.q(1, 10**6)))}
+
+
+def overflowing_scale_true(s):
+    a = s.param("a_1")
+    w = (a + s.q(1000)) - s.q(1000)
+    for _ in range(8):
+        w = w * w
+    q = s.q(1, 10**12)
+    return {"scale": w - w, "true": 1 / ((a + q) - a) - 1 / q}
+
+
+def test_a_non_finite_scale_never_passes():
+    res = run_float(_claim(overflowing_scale_hides_a_false_entry), 3, 1, 0)
+    assert res.verdict == "fails" and res.witness["field"] == "rational"
+    assert "float64: unresolved" in res.message
+    res = run_float(_claim(overflowing_scale_true), 3, 1, 0)
+    assert res.verdict == "numeric" and "mpmath" in res.certificate
+
+
+def test_non_finite_float64_is_unresolved_not_a_number():
+    F = FloatField()
+    big = F.const(10**300)
+    with pytest.raises(FloatUnresolved):
+        big * big
+    with pytest.raises(FloatUnresolved):
+        F.const(10**400)
+    with pytest.raises(FloatUnresolved):
+        ErrNum(float("nan")) + ErrNum(1.0)
+    tiny = F.const(__import__("fractions").Fraction(1, 10**200))
+    z = tiny * tiny                     # underflows to 0: the bound must still contain 10^-400
+    assert z.v == 0 and z.e > 0
+
+
+def lax_false(s):
+    """A false Lax-type equation at a larger size: [Phi, Phi^2] = Phi (it is 0)."""
+    Phi = s.Phi
+    return {"lax": (Phi @ (Phi @ Phi) - (Phi @ Phi) @ Phi) - s.q(1, 10**6) * Phi}
+
+
+def lax_true(s):
+    Phi = s.Phi
+    return {"lax": Phi @ (Phi @ Phi) - (Phi @ Phi) @ Phi}
+
+
+def test_float_at_n_12_keeps_a_finite_sound_error_model():
+    res = run_float(_claim(lax_true), 12, 1, 0)
+    assert res.verdict == "numeric" and res.certificate.startswith("float64")   # no overflow, no escalation
+    res = run_float(_claim(lax_false), 12, 1, 0)
+    assert res.verdict == "fails" and res.witness["field"] == "rational"
+
+
+def test_negative_control_float():
+    assert run_float(_claim(resolvent_identity_sign), 3, 2, 0).verdict == "fails"
+    assert run_float(_claim(resolvent_identity), 3, 2, 0).verdict == "numeric"
+
+
+# -- 4. vacuous checks ---------------------------------------------------------------------
+
+def empty_list(s):
+    return {"nothing": []}
+
+
+def empty_dict(s):
+    return {"nothing": {}, "nested": {"also": []}}
+
+
+def empty_matrix(s):
+    return {"nothing": s.zeros(0, 0)}
+
+
+@pytest.mark.parametrize("func", [empty_list, empty_dict, empty_matrix], ids=lambda f: f.__name__)
+@pytest.mark.parametrize("method", ["exact", "rational", "modular", "float", "auto"])
+def test_a_vacuous_check_is_an_error(func, method):
+    res = run_one(_claim(func), Size(3, 2), method, 0)
+    assert res.verdict == "error" and "vacuous" in res.message
+
+
+@pytest.mark.parametrize("func", [empty_list, empty_dict], ids=lambda f: f.__name__)
+def test_a_vacuous_check_is_an_error_dimension_free(func):
+    res = run_one(_claim(func), None, "free", 0)
+    assert res.verdict == "error" and "vacuous" in res.message
+
+
+def test_an_empty_claim_is_still_an_error():
+    for method in ("modular", "float"):
+        assert run_one(_claim(lambda s: {}), Size(3, 2), method, 0).verdict == "error"
+
+
+# -- 5. hard cases that change nothing -----------------------------------------------------
+
+@pytest.mark.parametrize("method", ["rational", "modular", "float"])
+def test_a_hard_case_that_changes_no_parameter_says_so(method):
+    res = run_one(_claim(identically_zero), Size(3, 2), method, 0, hard="near-pole")
+    assert "the hard case near-pole changed no parameter of this claim" in res.message
+    res = run_one(_claim(resolvent_identity), Size(3, 2), method, 0, hard="near-pole")
+    assert "changed no parameter" not in res.message
