@@ -159,6 +159,9 @@ class Claim:
     erratum: str = ""
     #: why the equivariance reduction is valid although the claim reads coordinates (stated in reports)
     equivariance: str = ""
+    #: registered by the paper's catalog (whose stated reasons are reviewed with the code); a stated
+    #: equivariance reason of any other claim is printed but not relied on
+    reviewed: bool = False
 
     def expects_failure(self, n: int | None, r: int | None) -> bool:
         if self.expect == "fails":
@@ -187,8 +190,10 @@ class Claim:
 class Registry:
     """Claims by id, in registration order."""
 
-    def __init__(self) -> None:
+    def __init__(self, reviewed: bool = False) -> None:
         self._claims: dict[str, Claim] = {}
+        #: claims registered here come from the reviewed catalog
+        self.reviewed = reviewed
 
     def add(self, c: Claim) -> Claim:
         if c.id in self._claims:
@@ -237,6 +242,7 @@ def claim(id: str, *, paper: str | Iterable[str], kind: str, section: str | None
                   title=(inspect.getdoc(fn) or "").strip(), realization=realization,
                   expect=expect, exact_max_n=exact_max_n, source=fn.__module__,
                   fails_at=fails_at, erratum=" ".join(erratum.split()), equivariance=" ".join(equivariance.split()))
+        c.reviewed = _ACTIVE[-1].reviewed
         _ACTIVE[-1].add(c)
         fn.claim = c
         return fn
@@ -247,8 +253,8 @@ class CatalogError(Exception):
     """A claims file could not be loaded."""
 
 
-def _collect(loader: Callable[[], None]) -> Registry:
-    reg = Registry()
+def _collect(loader: Callable[[], None], reviewed: bool = False) -> Registry:
+    reg = Registry(reviewed)
     _ACTIVE.append(reg)
     try:
         loader()
@@ -267,7 +273,7 @@ def load_catalog(package: str = "proofs") -> Registry:
                 importlib.reload(sys.modules[full])
             else:
                 importlib.import_module(full)
-    return _collect(loader)
+    return _collect(loader, reviewed=(package == "proofs"))
 
 
 def load_claims_file(path: str | Path) -> Registry:

@@ -283,11 +283,21 @@ def _check_report_dir(d: Path) -> None:
             raise InputError(f"cannot write reports to {d}: {Path(d) / name} is a directory")
 
 
+def _mutation(d: Path) -> dict[str, Any] | None:
+    """The mutation analysis next to the results (written by `stiefelsym mutate`), if any."""
+    p = Path(d) / "mutation.json"
+    try:
+        return json.loads(p.read_text(encoding="utf-8")) if p.is_file() else None
+    except (OSError, UnicodeDecodeError, json.JSONDecodeError):
+        return None
+
+
 def _write_reports(d: Path, results: list[Result], meta: dict[str, Any]) -> list[Path]:
     """Render everything first, then write each file atomically."""
+    mutation = _mutation(d)
     texts = {"results.json": dump_results(results, meta),
-             "verification.md": render_markdown(results, meta),
-             "verification.tex": render_latex(results, meta)}
+             "verification.md": render_markdown(results, meta, mutation=mutation),
+             "verification.tex": render_latex(results, meta, mutation=mutation)}
     paths = []
     for name, text in texts.items():
         write_atomic(Path(d) / name, text)
@@ -783,8 +793,9 @@ def report(results_file: Path | None, report_dir: Path | None) -> None:
         raise InputError(f"{source} is not a stiefelsym results file: {_one_line(exc)}") from None
     target = report_dir or source.parent
     _check_report_dir(target)
-    texts = {"verification.md": render_markdown(results, meta),
-             "verification.tex": render_latex(results, meta)}
+    mutation = _mutation(source.parent)
+    texts = {"verification.md": render_markdown(results, meta, mutation=mutation),
+             "verification.tex": render_latex(results, meta, mutation=mutation)}
     try:
         for name, text in texts.items():
             write_atomic(target / name, text)
