@@ -49,6 +49,15 @@ def log2_up(x: int | float) -> float:
     return v + 1e-9 * max(1.0, abs(v))
 
 
+def log2_add(a: float, b: float) -> float:
+    """An upper bound on log2(2^a + 2^b), safe against rounding."""
+    if a < b:
+        a, b = b, a
+    if b == -math.inf:
+        return a
+    return a + math.log2(1.0 + 2.0 ** (b - a)) + 1e-9 * max(1.0, abs(a))
+
+
 def log2_sum(hs: Sequence[float]) -> float:
     """An upper bound on log2(sum 2^h) (-inf for an empty sum), safe against rounding."""
     hs = [h for h in hs if h != -math.inf]
@@ -254,7 +263,7 @@ class RationalField(Field):
 
     name = "rational"
 
-    def __init__(self, bound: int = 2**30) -> None:
+    def __init__(self, bound: int = 2**62) -> None:
         self.bound = bound
         self.sample_size = 2 * bound + 1
 
@@ -501,8 +510,9 @@ class Deg:
     __slots__ = ("num", "den", "f", "h")
 
     def __init__(self, num: int, den: dict | None = None, field: "DegreeField" = None, h: float = 0.0):
-        self.num, self.den, self.f = num, dict(den or {}), field
-        self.h = -math.inf if num < 0 else max(h, 0.0)
+        # ``den`` is never changed in place once a marker holds it (operations build new dicts)
+        self.num, self.den, self.f = num, (den if den is not None else {}), field
+        self.h = -math.inf if num < 0 else (h if h > 0.0 else 0.0)
 
     @property
     def zero(self):
@@ -529,11 +539,13 @@ class Deg:
             return o
         if o.zero:
             return self
+        if self.den == o.den:
+            return Deg(max(self.num, o.num), self.den, self.f, log2_add(self.h, o.h))
         den = {k: max(self.den.get(k, 0), o.den.get(k, 0)) for k in set(self.den) | set(o.den)}
         shift = lambda d: {k: den[k] - d.den.get(k, 0) for k in den}
         sa, so = shift(self), shift(o)
         return Deg(max(self.num + self._dd(sa), o.num + self._dd(so)), den, self.f,
-                   log2_sum([self.h + self._dh(sa), o.h + self._dh(so)]))
+                   log2_add(self.h + self._dh(sa), o.h + self._dh(so)))
 
     __radd__ = __add__
 
@@ -551,9 +563,14 @@ class Deg:
             return o
         if self.zero or o.zero:
             return Deg(-1, None, self.f)
-        den = dict(self.den)
-        for k, e in o.den.items():
-            den[k] = den.get(k, 0) + e
+        if not o.den:
+            den = self.den
+        elif not self.den:
+            den = o.den
+        else:
+            den = dict(self.den)
+            for k, e in o.den.items():
+                den[k] = den.get(k, 0) + e
         return Deg(self.num + o.num, den, self.f, self.h + o.h)
 
     __rmul__ = __mul__
@@ -710,10 +727,10 @@ class Dual:
         self.a, self.b = a, b
 
     def __add__(self, o):
-        if _is_matrix(o):
-            return NotImplemented
         if isinstance(o, Dual):
             return Dual(self.a + o.a, self.b + o.b)
+        if _is_matrix(o):
+            return NotImplemented
         return Dual(self.a + o, self.b)
 
     __radd__ = __add__
@@ -722,30 +739,30 @@ class Dual:
         return Dual(-self.a, -self.b)
 
     def __sub__(self, o):
-        if _is_matrix(o):
-            return NotImplemented
         if isinstance(o, Dual):
             return Dual(self.a - o.a, self.b - o.b)
+        if _is_matrix(o):
+            return NotImplemented
         return Dual(self.a - o, self.b)
 
     def __rsub__(self, o):
         return Dual(o - self.a, -self.b)
 
     def __mul__(self, o):
-        if _is_matrix(o):
-            return NotImplemented
         if isinstance(o, Dual):
             return Dual(self.a * o.a, self.a * o.b + self.b * o.a)
+        if _is_matrix(o):
+            return NotImplemented
         return Dual(self.a * o, self.b * o)
 
     __rmul__ = __mul__
 
     def __truediv__(self, o):
-        if _is_matrix(o):
-            return NotImplemented
         if isinstance(o, Dual):
             q = self.a / o.a
             return Dual(q, (self.b - q * o.b) / o.a)
+        if _is_matrix(o):
+            return NotImplemented
         return Dual(self.a / o, self.b / o)
 
     def __rtruediv__(self, o):

@@ -3,7 +3,7 @@
 * ``exact``    symbolic (symengine): the residual is identically zero on a chart
                of the constraint set; the reduction used is stated.
 * ``rational`` exact rationals at seeded random points of the Cayley chart
-               (integers in [-2^30, 2^30]), with the Schwartz-Zippel false-pass
+               (integers in [-2^62, 2^62]), with the Schwartz-Zippel false-pass
                bound from a degree bound; as many points as the bound 1e-30 needs.
 * ``modular``  the same over GF(p), a fresh prime p in [2^60, 2^61) per point,
                with a height bound for the primes that divide the numerator.
@@ -423,7 +423,7 @@ def _rank_minor_bound(R: Rank, field: DegreeField) -> tuple[int, float]:
 POINTS_TARGET = 1e-30     # `checked` needs a false-pass probability at most this
 POINTS_MIN = 2            # points per component, at least
 POINTS_CAP = 24           # points per component, at most
-RATIONAL_BOUND = 2**30    # rational points: integers uniform in [-B, B]
+RATIONAL_BOUND = 2**62    # rational points: integers uniform in [-B, B] (fewest points for the target)
 PRIME_BOUND_TEXT = (f"K >= {PRIMES_IN_RANGE_LOWER:.2g} primes in [2^60, 2^61) (Rosser-Schoenfeld: "
                     "x/ln x < pi(x) < 1.25506 x/ln x)")
 

@@ -123,7 +123,7 @@ def _huge_degree_identity(k):
     return claim
 
 
-@pytest.mark.parametrize("kind,k", [("rational", 40), ("modular", 62)])
+@pytest.mark.parametrize("kind,k", [("rational", 64), ("modular", 62)])
 def test_a_residual_of_huge_degree_is_inconclusive_not_checked(kind, k):
     res = run_points(_claim(_huge_degree_identity(k)), 3, 1, kind, 0)
     assert res.verdict == "inconclusive" and "bound" in res.message
