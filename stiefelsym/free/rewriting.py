@@ -13,6 +13,14 @@ Traces are reduced as cyclic words: a rule applies in any rotation, and
 tr(w*) = tr(w).  Confluence of that reduction needs, on top of the word
 critical pairs, the *cyclic* critical pairs (two left-hand sides that cover a
 cyclic word and overlap at both ends), which :func:`critical_pairs` also lists.
+
+Certificates.  A rule may carry its *cofactors*: lhs − rhs written as
+Σ c·u·h·v over named :class:`Hypothesis` generators h (XᵀX − I_r, …), checked
+when the rule is added.  :meth:`RewritingSystem.certify` traces a reduction
+step by step and returns p − nf(p) as Σ c·T·a·h·b (and Σ c·T·tr(a·h·b)·w for
+steps inside traces, T a product of traces): when nf(p) = 0 this is a cofactor
+representation of p in the two-sided ideal of the hypotheses, which
+:mod:`stiefelsym.certificate_check` re-expands without any rewriting.
 """
 from __future__ import annotations
 
@@ -21,8 +29,8 @@ from typing import Iterable, Sequence
 
 import symengine as se
 
-from .algebra import (DIMENSIONS, SCALAR, Coef, Letter, NCPoly, Word, check_word, merge_traces,
-                      min_rotation, star_word, word_key, word_latex, word_str)
+from .algebra import (DIMENSIONS, SCALAR, Coef, Letter, NCPoly, Word, check_word, cycle_rep, merge_traces,
+                      min_rotation, star_word, trace, word_key, word_latex, word_str)
 
 
 class RewritingError(ValueError):
@@ -34,6 +42,10 @@ def simplify_coef(c: Coef) -> Coef:
     e = se.expand(c)
     if e == 0 or e.is_Number:
         return e
+    if isinstance(e, se.Add):
+        e = se.expand(e)   # symengine may leave a sum of numbers (1 - 1) after one pass
+        if e == 0 or e.is_Number:
+            return e
     num, den = e.as_numer_denom()
     if den.is_Number:
         return e
@@ -72,13 +84,50 @@ class Order:
 
 
 @dataclass(frozen=True)
+class Hypothesis:
+    """A named generator h of the ideal of relations (a polynomial that vanishes on T*V).
+
+    The name is what a certificate records; the independent checker rebuilds
+    h from its own table of names, never from this polynomial."""
+
+    name: str
+    poly: NCPoly = field(compare=False)
+
+    def __str__(self) -> str:
+        return f"{self.name}: {self.poly}"
+
+
+@dataclass(frozen=True)
+class Cofactor:
+    """coef · left · h · right (a term of a rule's cofactor expansion)."""
+
+    coef: Coef
+    left: Word
+    hyp: Hypothesis
+    right: Word
+
+    def value(self) -> NCPoly:
+        h = self.hyp.poly
+        return NCPoly.word(self.left, h.row) * h * NCPoly.word(self.right, h.col) * self.coef
+
+
+def cofactor_sum(cofactors: Iterable[Cofactor], row: str, col: str) -> NCPoly:
+    out = NCPoly.zero(row, col)
+    for cf in cofactors:
+        out = out + cf.value()
+    return out
+
+
+@dataclass(frozen=True)
 class Rule:
-    """lhs → rhs, valid because of ``reason``."""
+    """lhs → rhs, valid because of ``reason``; ``cofactors`` write lhs − rhs through the
+    hypotheses (None: not known, and reductions using the rule cannot be certified)."""
 
     name: str
     lhs: Word
     rhs: NCPoly
     reason: str
+    cofactors: tuple | None = field(default=None, compare=False)
 
     def latex(self) -> str:
         return rf"{word_latex(self.lhs)} \to {self.rhs.latex()}"
@@ -149,13 +198,17 @@ class RewritingSystem:
         self._word_memo: dict[Word, tuple[dict, frozenset]] = {}
         self._cycle_memo: dict[Word, tuple[dict, frozenset]] = {}
         self._trace_memo: dict[Word, tuple[dict, frozenset]] = {}
+        #: certificates of words, cyclic reductions and trace normal forms (see certify)
+        self._cert_memos: tuple[dict, dict, dict] = ({}, {}, {})
 
     def copy(self) -> "RewritingSystem":
         return RewritingSystem(self.order.copy(), self.rules)
 
     # -- rules ------------------------------------------------------------
-    def add_rule(self, lhs: Sequence[Letter], rhs: NCPoly, reason: str, name: str | None = None) -> Rule:
-        """Add lhs → rhs after checking types and that every word of rhs is smaller than lhs."""
+    def add_rule(self, lhs: Sequence[Letter], rhs: NCPoly, reason: str, name: str | None = None,
+                 cofactors: Iterable[Cofactor] | None = None) -> Rule:
+        """Add lhs → rhs after checking types, that every word of rhs is smaller than lhs and
+        that the cofactors (if given) sum to lhs − rhs exactly."""
         lhs = tuple(lhs)
         if not lhs:
             raise RewritingError("a rule needs a nonempty left-hand side")
@@ -172,7 +225,13 @@ class RewritingSystem:
                                      f"{word_str(w)} is not smaller than {word_str(lhs)}")
         if lhs in self._lhs:
             raise RewritingError(f"a rule for {word_str(lhs)} exists already")
-        rule = Rule(name or word_str(lhs), lhs, rhs, reason)
+        if cofactors is not None:
+            cofactors = tuple(cofactors)
+            gap = NCPoly.word(lhs) - rhs - cofactor_sum(cofactors, rhs.row, rhs.col)
+            if any(simplify_coef(c) != 0 for c in gap.terms.values()):
+                raise RewritingError(f"rule {word_str(lhs)}: the cofactors do not sum to lhs - rhs "
+                                     f"(they miss {gap.expand()})")
+        rule = Rule(name or word_str(lhs), lhs, rhs, reason, cofactors)
         self._insert(rule)
         return rule
 
@@ -365,6 +424,210 @@ class RewritingSystem:
         return NCPoly({((k,) if k != () else (), ()): v for k, v in red.items()}, SCALAR, SCALAR)
 
 
+    # -- certificates -----------------------------------------------------------
+    # Each helper mirrors a normal-form helper above step for step (same rule, same
+    # occurrence, same rotation), and returns what that reduction subtracted, as a
+    # dict {(pre, rule name, post): coefficient}: w − nf(w) = Σ c·pre·(l − r)·post for
+    # words, tr(c) − nf(tr c) = Σ c·tr(pre·(l − r)·post) for traces.
+    def _certificate_memos(self) -> tuple[dict, dict, dict]:
+        return self._cert_memos
+
+    def _word_cert(self, w: Word) -> dict:
+        memo = self._certificate_memos()[0]
+        hit = memo.get(w)
+        if hit is not None:
+            return hit
+        found = self.find(w)
+        out: dict = {}
+        if found is not None:
+            i, rule = found
+            pre, post = w[:i], w[i + len(rule.lhs):]
+            out[(pre, rule.name, post)] = se.Integer(1)
+            for (_, rw), c in rule.rhs.terms.items():
+                _add_scaled(out, self._word_cert(pre + rw + post), c)
+        memo[w] = out
+        return out
+
+    def _cycle_cert(self, c: Word) -> dict:
+        memo = self._certificate_memos()[1]
+        hit = memo.get(c)
+        if hit is not None:
+            return hit
+        out: dict = {}
+        for k in range(len(c)):
+            rot = c[k:] + c[:k]
+            found = self.find(rot)
+            if found is None:
+                continue
+            i, rule = found
+            pre, post = rot[:i], rot[i + len(rule.lhs):]
+            out[(pre, rule.name, post)] = se.Integer(1)
+            for (_, rw), coef in rule.rhs.terms.items():
+                nw = pre + rw + post
+                if nw:
+                    _add_scaled(out, self._cycle_cert(min_rotation(nw)), coef)
+            break
+        memo[c] = out
+        return out
+
+    def _adjoint_cert(self, c: Word) -> dict:
+        """What :meth:`_adjoint_rep` replaced: tr(c) = sign·tr(c*-word) structurally, and the
+        cyclic reduction of c* certifies tr(c) − (its replacement)."""
+        sign, ws = star_word(c)
+        d, _ = self._cycle_reduce(min_rotation(ws))
+        if len(d) == 1:
+            (k, v), = d.items()
+            v = v * sign
+            scale = None
+            if k == c:
+                if v == -1:     # tr(c) = −tr(c) + sign·C, so tr(c) = (sign/2)·C
+                    scale = se.Integer(sign) / 2
+            elif k != () and (v == 1 or v == -1) and not word_key(c) < word_key(k):
+                scale = se.Integer(sign)   # tr(c) − v·tr(k) = sign·C
+            if scale is not None:
+                out: dict = {}
+                _add_scaled(out, self._cycle_cert(min_rotation(ws)), scale)
+                return out
+        return {}
+
+    def _trace_cert(self, c: Word) -> dict:
+        c = min_rotation(c)
+        memo = self._certificate_memos()[2]
+        hit = memo.get(c)
+        if hit is not None:
+            return hit
+        red, _ = self._cycle_reduce(c)
+        out: dict = {}
+        _add_scaled(out, self._cycle_cert(c), se.Integer(1))
+        for k, v in red.items():
+            if k != ():
+                _add_scaled(out, self._adjoint_cert(k), v)
+        memo[c] = out
+        return out
+
+    def _traces_cert(self, tm: tuple) -> dict:
+        """Π tr(c_i) − Π nf(tr c_i) = Σ_i (Π_{j<i} nf(tr c_j)) (tr c_i − nf(tr c_i)) Π_{j>i} tr(c_j):
+        {(trace factors, pre, rule name, post): coefficient}."""
+        out: dict = {}
+        prefix: dict = {(): se.Integer(1)}
+        for i, c in enumerate(tm):
+            cert = self._trace_cert(c)
+            for pk, pv in prefix.items():
+                factors = merge_traces(pk, tm[i + 1:])
+                for (pre, name, post), cv in cert.items():
+                    key = (factors, pre, name, post)
+                    out[key] = out[key] + pv * cv if key in out else pv * cv
+            red, _ = self._trace_nf(c)
+            nxt: dict = {}
+            for k1, v1 in prefix.items():
+                for k2, v2 in red.items():
+                    k = merge_traces(k1, (k2,) if k2 != () else ())
+                    nxt[k] = nxt[k] + v1 * v2 if k in nxt else v1 * v2
+            prefix = nxt
+        return out
+
+    def certify(self, p: NCPoly) -> "Certificate":
+        """p − nf(p) as a combination of hypotheses (every rule used must carry cofactors).
+
+        Raises :class:`CertificateError` if a rule used has no cofactor expansion."""
+        steps: dict = {}   # (in_trace, trace factors, word, pre, rule name, post) -> coefficient
+        for (tm, w), c in p.terms.items():
+            if tm:
+                for (factors, pre, name, post), v in self._traces_cert(tm).items():
+                    key = (True, factors, w, pre, name, post)
+                    steps[key] = steps[key] + c * v if key in steps else c * v
+                tn, _ = self._traces_nf(tm)
+            else:
+                tn = {(): se.Integer(1)}
+            wc = self._word_cert(w)
+            if wc:
+                for t2, c3 in tn.items():
+                    for (pre, name, post), v in wc.items():
+                        key = (False, t2, (), pre, name, post)
+                        steps[key] = steps[key] + c * c3 * v if key in steps else c * c3 * v
+        rules = {r.name: r for r in self.rules}
+        terms: dict = {}
+        hyps: dict = {}
+        for (in_trace, factors, w, pre, name, post), v in steps.items():
+            rule = rules[name]
+            if rule.cofactors is None:
+                raise CertificateError(f"rule {name} ({rule.reason}) has no cofactor expansion")
+            for cf in rule.cofactors:
+                hyps[cf.hyp.name] = cf.hyp
+                key = (in_trace, factors, w, pre + cf.left, cf.hyp.name, cf.right + post)
+                terms[key] = terms[key] + v * cf.coef if key in terms else v * cf.coef
+        out = []
+        for (in_trace, factors, w, left, name, right), v in terms.items():
+            v = simplify_coef(v)
+            if v != 0:
+                out.append(CertTerm(v, left, hyps[name], right, in_trace, factors, w))
+        return Certificate(p, self.normal_form(p), out)
+
+
+def _add_scaled(out: dict, add: dict, scale: Coef) -> None:
+    for k, v in add.items():
+        out[k] = out[k] + scale * v if k in out else scale * v
+
+
+class CertificateError(RewritingError):
+    """A reduction that cannot be certified (a rule without cofactors)."""
+
+
+@dataclass(frozen=True)
+class CertTerm:
+    """coef · Π tr(traces) · left·h·right, or, ``in_trace``, coef · Π tr(traces) · tr(left·h·right) · word."""
+
+    coef: Coef
+    left: Word
+    hyp: Hypothesis
+    right: Word
+    in_trace: bool = False
+    traces: tuple = ()
+    word: Word = ()
+
+    def value(self, row: str, col: str) -> NCPoly:
+        """The term as a polynomial of type (row, col) (traces in canonical form)."""
+        h = self.hyp.poly
+        inner = NCPoly.word(self.left, h.row) * h * NCPoly.word(self.right, h.col)
+        factors = NCPoly.scalar(self.coef)
+        for t in self.traces:
+            sign, rep = cycle_rep(t)
+            factors = factors * NCPoly({((rep,), ()): se.Integer(sign)}, SCALAR, SCALAR)
+        if not self.in_trace:
+            return factors * inner
+        return factors * trace(inner) * NCPoly.word(self.word, row)
+
+    def __str__(self) -> str:
+        body = f"{word_str(self.left)}·[{self.hyp.name}]·{word_str(self.right)}"
+        if self.in_trace:
+            body = f"tr({body})" + (f"·{word_str(self.word)}" if self.word else "")
+        factors = "".join(f"tr({word_str(t)})·" for t in self.traces)
+        return f"({self.coef})·{factors}{body}"
+
+
+@dataclass
+class Certificate:
+    """p − normal_form = Σ terms: a cofactor representation of p when the normal form is 0."""
+
+    residual: NCPoly
+    normal_form: NCPoly
+    terms: list[CertTerm]
+
+    @property
+    def proves_zero(self) -> bool:
+        return not self.normal_form.terms
+
+    def hypotheses(self) -> list[str]:
+        return sorted({t.hyp.name for t in self.terms})
+
+    def value(self) -> NCPoly:
+        """Σ terms in the free algebra (a self-check; the independent checker does not use it)."""
+        out = NCPoly.zero(self.residual.row, self.residual.col)
+        for t in self.terms:
+            out = out + t.value(self.residual.row, self.residual.col)
+        return out
+
+
 # ---------------------------------------------------------------------------
 # critical pairs and completion
 @dataclass
@@ -378,6 +641,8 @@ class CriticalPair:
     left: NCPoly
     right: NCPoly
     difference: NCPoly
+    #: where b's left-hand side sits in ``word`` (a's sits at 0)
+    offset: int = 0
 
     @property
     def joinable(self) -> bool:
@@ -419,14 +684,14 @@ def critical_pairs(system: RewritingSystem, cyclic: bool = True) -> list[Critica
                     left = a.rhs * _mono(lb[k:], la[-1].col)
                     right = _mono(la[:-k], la[0].row) * b.rhs
                     diff = system.normal_form(left - right)
-                    out.append(CriticalPair("overlap", a, b, la + lb[k:], left, right, diff))
+                    out.append(CriticalPair("overlap", a, b, la + lb[k:], left, right, diff, len(la) - k))
             if a is not b and len(lb) <= len(la):
                 for i in range(len(la) - len(lb) + 1):
                     if la[i:i + len(lb)] == lb:
                         left = a.rhs
                         right = _mono(la[:i], la[0].row) * b.rhs * _mono(la[i + len(lb):], lb[-1].col)
                         diff = system.normal_form(left - right)
-                        out.append(CriticalPair("inclusion", a, b, la, left, right, diff))
+                        out.append(CriticalPair("inclusion", a, b, la, left, right, diff, i))
             if cyclic:
                 out.extend(_cyclic_pairs(system, a, b))
     return out
@@ -458,6 +723,28 @@ def _cyclic_pairs(system: RewritingSystem, a: Rule, b: Rule) -> list[CriticalPai
             left = _trace_of(system, a.rhs * _mono(cw[len(la):], la[-1].col))
             right = _trace_of(system, b.rhs * _mono(rot[len(lb):], lb[-1].col))
             out.append(CriticalPair("cyclic", a, b, cw, left, right, system.normal_form(left - right)))
+    return out
+
+
+def _completion_cofactors(system: RewritingSystem, p: CriticalPair, c: Coef) -> list[Cofactor] | None:
+    """Cofactors of the rule that completes the word pair p (leading coefficient c).
+
+    With a at 0 and b at ``offset`` in the word, p.left − p.right =
+    −(l_a − r_a)·suffix + prefix·(l_b − r_b)·rest; reducing it subtracts a certified
+    combination, and the new rule's lhs − rhs is what is left, divided by c."""
+    if p.a.cofactors is None or p.b.cofactors is None:
+        return None
+    w = p.word
+    after_a = w[len(p.a.lhs):]
+    before_b, after_b = w[:p.offset], w[p.offset + len(p.b.lhs):]
+    try:
+        cert = system.certify(p.left - p.right)
+    except CertificateError:
+        return None
+    inv = se.Integer(1) / c
+    out = [Cofactor(-cf.coef * inv, cf.left, cf.hyp, cf.right + after_a) for cf in p.a.cofactors]
+    out += [Cofactor(cf.coef * inv, before_b + cf.left, cf.hyp, cf.right + after_b) for cf in p.b.cofactors]
+    out += [Cofactor(-t.coef * inv, t.left, t.hyp, t.right) for t in cert.terms]
     return out
 
 
@@ -501,7 +788,8 @@ def complete(system: RewritingSystem, max_rules: int = 50, max_rounds: int = 20)
                 return CompletionResult(sys2, False, added, rnd, f"{p}: the identity is a consequence (inconsistent)")
             rest = d - NCPoly({((), lead): c}, d.row, d.col)
             rule = sys2.add_rule(lead, rest * (se.Integer(-1) / c),
-                                 f"completion of {p.a.name}, {p.b.name}", name=f"C{len(added) + 1}")
+                                 f"completion of {p.a.name}, {p.b.name}", name=f"C{len(added) + 1}",
+                                 cofactors=_completion_cofactors(sys2, p, c))
             added.append(rule)
             if len(sys2.rules) > max_rules:
                 return CompletionResult(sys2, False, added, rnd, f"more than {max_rules} rules")

@@ -25,7 +25,7 @@ from ..matrix import CoordinateTracker, Mat, definite
 from ..scene import USER_SCALAR, Flow, PaperObjects, map_entries
 from .algebra import (DIMENSIONS, Letter, NCPoly, NeedsCoordinates, as_coef, coef_latex, derivation,
                       letter_pair, skew_letter, substitute, symmetric_letter, trace)
-from .rewriting import Order, Reduction, RewritingSystem, simplify_coef
+from .rewriting import Cofactor, Hypothesis, Order, Reduction, RewritingSystem, simplify_coef
 from .traces import gradient
 
 Function = Callable[[Any], Any]
@@ -85,11 +85,37 @@ def _w(*letters: Letter) -> NCPoly:
     return NCPoly.word(letters)
 
 
+# ---------------------------------------------------------------------------
+# the hypotheses: every rule's lhs − rhs is a combination of these (its cofactors), and a
+# certificate names them; the independent checker rebuilds each from its name
+def hypothesis(name: str, R: Letter | None = None, mu: Any = None) -> Hypothesis:
+    """The generator of the ideal of relations called ``name`` (``res_left``/``res_right``
+    take the resolvent letter R = (mu I_n − A)^{-1})."""
+    if name in ("res_left", "res_right"):
+        mu = as_coef(mu)
+        shifted = _i("n") * mu - _w(A)
+        poly = (shifted * _w(R) if name == "res_left" else _w(R) * shifted) - _i("n")
+        return Hypothesis(f"{name}:{R}", poly)
+    polys = {
+        "XtX": lambda: _w(Xt, X) - _i("r"),
+        "XtP+PtX": lambda: _w(Xt, P) + _w(Pt, X),
+        "YtY": lambda: _w(Yt, Y) - _i("r"),
+        "YtQ+QtY": lambda: _w(Yt, Q) + _w(Qt, Y),
+        "AAinv": lambda: _w(A, AINV) - _i("n"),
+        "AinvA": lambda: _w(AINV, A) - _i("n"),
+    }
+    return Hypothesis(name, polys[name]())
+
+
+def _by(h: Hypothesis, coef: Any = 1, left: tuple = (), right: tuple = ()) -> Cofactor:
+    return Cofactor(as_coef(coef), tuple(left), h, tuple(right))
+
+
 def standard_system() -> RewritingSystem:
     """(cond_XP) as rules: XᵀX → I_r, PᵀX → −XᵀP (order X < P < A < Xᵀ < Pᵀ)."""
     system = RewritingSystem(Order([X, P, A, Xt, Pt]))
-    system.add_rule((Xt, X), _i("r"), COND_XX, name="XtX")
-    system.add_rule((Pt, X), -_w(Xt, P), COND_XP, name="PtX")
+    system.add_rule((Xt, X), _i("r"), COND_XX, name="XtX", cofactors=[_by(hypothesis("XtX"))])
+    system.add_rule((Pt, X), -_w(Xt, P), COND_XP, name="PtX", cofactors=[_by(hypothesis("XtP+PtX"))])
     return system
 
 
@@ -115,15 +141,22 @@ def add_resolvent(system: RewritingSystem, mu: Any, resolvents: dict[Letter, Any
         R = resolvent_letter(mu, k)
     system.order.add(R)
     reason = f"A R = R A = mu R - I_n for R = (mu I_n - A)^(-1), mu = {mu} (definition of the resolvent)"
-    system.add_rule((A, R), _w(R) * mu - _i("n"), reason, name=f"A{R}")
-    system.add_rule((R, A), _w(R) * mu - _i("n"), reason, name=f"{R}A")
+    left, right = hypothesis("res_left", R, mu), hypothesis("res_right", R, mu)
+    # A R − (mu R − I) = −[(mu I − A) R − I], and likewise on the right
+    system.add_rule((A, R), _w(R) * mu - _i("n"), reason, name=f"A{R}", cofactors=[_by(left, -1)])
+    system.add_rule((R, A), _w(R) * mu - _i("n"), reason, name=f"{R}A", cofactors=[_by(right, -1)])
     for S, nu in resolvents.items():
         if simplify_coef(nu - mu) == 0:
             continue
         rhs = (_w(R) - _w(S)) * (se.Integer(1) / (nu - mu))
         why = f"resolvent identity R_mu R_nu = (R_mu - R_nu)/(nu - mu), mu = {mu}, nu = {nu} (mu != nu)"
-        system.add_rule((R, S), rhs, why, name=f"{R}{S}")
-        system.add_rule((S, R), rhs, why, name=f"{S}{R}")
+        s_left, s_right = hypothesis("res_left", S, nu), hypothesis("res_right", S, nu)
+        # (nu − mu) R S − R + S = R [(nu I − A) S − I] − [R (mu I − A) − I] S
+        system.add_rule((R, S), rhs, why, name=f"{R}{S}",
+                        cofactors=[_by(s_left, 1 / (nu - mu), left=(R,)), _by(right, -1 / (nu - mu), right=(S,))])
+        # (mu − nu) S R − S + R = S [(mu I − A) R − I] − [S (nu I − A) − I] R
+        system.add_rule((S, R), rhs, why, name=f"{S}{R}",
+                        cofactors=[_by(left, 1 / (mu - nu), left=(S,)), _by(s_right, -1 / (mu - nu), right=(R,))])
     if ainv:
         _ainv_resolvent_rules(system, R, mu)
     resolvents[R] = mu
@@ -135,8 +168,13 @@ def _ainv_resolvent_rules(system: RewritingSystem, R: Letter, mu: Any) -> None:
         return  # R_0 = -A^{-1}: no rule needed for soundness
     rhs = (_w(R) + _w(AINV)) * (se.Integer(1) / mu)
     why = f"A^(-1) R_mu = R_mu A^(-1) = (R_mu + A^(-1))/mu, mu = {mu} (mu != 0)"
-    system.add_rule((AINV, R), rhs, why, name=f"Ainv{R}")
-    system.add_rule((R, AINV), rhs, why, name=f"{R}Ainv")
+    left, right = hypothesis("res_left", R, mu), hypothesis("res_right", R, mu)
+    # mu A^{-1} R − R − A^{-1} = A^{-1} [(mu I − A) R − I] + [A^{-1} A − I] R
+    system.add_rule((AINV, R), rhs, why, name=f"Ainv{R}",
+                    cofactors=[_by(left, 1 / mu, left=(AINV,)), _by(hypothesis("AinvA"), 1 / mu, right=(R,))])
+    # mu R A^{-1} − R − A^{-1} = [R (mu I − A) − I] A^{-1} + R [A A^{-1} − I]
+    system.add_rule((R, AINV), rhs, why, name=f"{R}Ainv",
+                    cofactors=[_by(right, 1 / mu, right=(AINV,)), _by(hypothesis("AAinv"), 1 / mu, left=(R,))])
 
 
 # ---------------------------------------------------------------------------
@@ -286,8 +324,10 @@ class FreeScene(PaperObjects):
             self.system.order.add(Q)
             self.system.order.add(Yt)
             self.system.order.add(Qt)
-            self.system.add_rule((Yt, Y), _i("r"), "Y^T Y = I_r (second point)", name="YtY")
-            self.system.add_rule((Qt, Y), -_w(Yt, Q), "Y^T Q + Q^T Y = 0 (second point)", name="QtY")
+            self.system.add_rule((Yt, Y), _i("r"), "Y^T Y = I_r (second point)", name="YtY",
+                                 cofactors=[_by(hypothesis("YtY"))])
+            self.system.add_rule((Qt, Y), -_w(Yt, Q), "Y^T Q + Q^T Y = 0 (second point)", name="QtY",
+                                 cofactors=[_by(hypothesis("YtQ+QtY"))])
 
     @property
     def Y(self) -> Mat:
@@ -306,8 +346,10 @@ class FreeScene(PaperObjects):
         if "ainv" not in self._extras:
             self._extras.add("ainv")
             self.system.order.add(AINV)
-            self.system.add_rule((A, AINV), _i("n"), "A A^(-1) = I_n", name="AAinv")
-            self.system.add_rule((AINV, A), _i("n"), "A^(-1) A = I_n", name="AinvA")
+            self.system.add_rule((A, AINV), _i("n"), "A A^(-1) = I_n", name="AAinv",
+                                 cofactors=[_by(hypothesis("AAinv"))])
+            self.system.add_rule((AINV, A), _i("n"), "A^(-1) A = I_n", name="AinvA",
+                                 cofactors=[_by(hypothesis("AinvA"))])
             for R, mu in self._resolvents.items():
                 _ainv_resolvent_rules(self.system, R, mu)
         return self._letter(AINV)
