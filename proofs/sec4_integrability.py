@@ -1,7 +1,7 @@
 """§4 Integrability of geodesic flows: the Jensen flows and their integrals."""
 from __future__ import annotations
 
-from stiefelsym import claim
+from stiefelsym import admissible, block, claim, comm
 
 SECTION = "4"
 
@@ -20,3 +20,240 @@ def momentum_maps_are_integrals_of_the_jensen_flows(s):
         "dPhi/dt": s.d(lambda t: t.Phi, flow),
         "dPsi/dt": s.d(lambda t: t.Psi, flow),
     }
+
+
+# -- Manakov metrics ----------------------------------------------------------------
+
+#: the powers k of the integrals tr(Φ + λA)^k of (man) checked (the paper: k = 1, ..., n)
+POWERS = (1, 2, 3)
+
+
+def power_trace(s, M, k):
+    """tr M^k."""
+    acc = M
+    for _ in range(k - 1):
+        acc = acc @ M
+    return s.tr(acc)
+
+
+def b_eigenvalues(s):
+    """The eigenvalues b_1, ..., b_n of a generic diagonal B: fresh parameters of the claim."""
+    return [s.scalar(f"b_{i + 1}") for i in range(s.n)]
+
+
+def diagonal(s, entries):
+    """diag(entries) as an n x n matrix."""
+    n = s.n
+    return s.mat([[entries[i] if i == j else s.q(0) for j in range(n)] for i in range(n)], ("n", "n"))
+
+
+def manakov_operator(s, b):
+    """(Manakov): 𝔸(E_i ∧ E_j) = (b_i − b_j)/(a_i − a_j) E_i ∧ E_j, extended linearly to so(n)
+    (entry (i, j) of 𝔸(ξ) is (b_i − b_j)/(a_i − a_j) ξ_ij)."""
+    a, n = s.a, s.n
+
+    def apply(xi):
+        return s.mat([[(b[i] - b[j]) / (a[i] - a[j]) * xi[i, j] if i != j else s.q(0) for j in range(n)]
+                      for i in range(n)], ("n", "n"))
+    return apply
+
+
+def H_manakov(s):
+    """(submersion_metric) H_𝔸 = ½<𝔸Φ, Φ> with the Manakov operator (Manakov) of a generic diagonal B."""
+    return s.killing(manakov_operator(s, b_eigenvalues(s))(s.Phi), s.Phi) / 2
+
+
+def manakov_square(s, xi):
+    """(Manakov*): 𝔸(ξ) = Aξ + ξA, the Manakov operator for B = A²."""
+    return s.A @ xi + xi @ s.A
+
+
+def H_manakov_square(s):
+    """H_𝔸 = ½<𝔸Φ, Φ> with 𝔸(ξ) = Aξ + ξA."""
+    return s.killing(manakov_square(s, s.Phi), s.Phi) / 2
+
+
+def flow_XP3(s):
+    """(dot_XP3*): Ẋ = A(PXᵀ − XPᵀ)X + (PXᵀ − XPᵀ)AX, Ṗ = A(PXᵀ − XPᵀ)P + (PXᵀ − XPᵀ)AP."""
+    X, P, A = s.X, s.P, s.A
+    Phi = P @ X.T - X @ P.T
+    return {"X": A @ Phi @ X + Phi @ A @ X, "P": A @ Phi @ P + Phi @ A @ P}
+
+
+@claim("manakov-operator", paper=("Manakov", "Manakov*"), kind="id", exact_max_n=3,
+       statement=r"\mathbb A(E_i\wedge E_j)=\tfrac{b_i-b_j}{a_i-a_j}E_i\wedge E_j\iff\mathbb A(\xi)=\ad_A^{-1}\ad_B\xi;"
+                 r"\quad B=A^2:\ \mathbb A(\xi)=A\xi+\xi A")
+def manakov_operator_is_ad_inverse(s):
+    """The operator (Manakov) defined on the basis E_i ∧ E_j satisfies ad_A 𝔸(ξ) = ad_B ξ (so 𝔸 = ad_A⁻¹ad_B on so(n)), and for B = A² it is 𝔸(ξ) = Aξ + ξA (Manakov*)."""
+    b = b_eigenvalues(s)
+    B = diagonal(s, b)
+    AA = manakov_operator(s, b)
+    AA_square = manakov_operator(s, [x * x for x in s.a])
+    return {
+        "ad_A AA(xi) = ad_B xi": comm(s.A, AA(s.xi)) - comm(B, s.xi),
+        "B = A^2: AA(xi) = A xi + xi A": AA_square(s.xi) - manakov_square(s, s.xi),
+    }
+
+
+@claim("manakov-square", paper=("Manakov*",), kind="id",
+       statement=r"A\xi+\xi A\in so(n),\quad \ad_A(A\xi+\xi A)=\ad_{A^2}\xi,\quad \xi\in so(n)")
+def manakov_operator_for_a_squared(s):
+    """For B = A², 𝔸(ξ) = Aξ + ξA maps so(n) to so(n) and ad_A 𝔸(ξ) = ad_{A²} ξ, so it is the Manakov operator ad_A⁻¹ad_B wherever ad_A is invertible on so(n)."""
+    AA = manakov_square(s, s.xi)
+    return {
+        "AA(xi) skew": AA + AA.T,
+        "ad_A AA(xi) = ad_{A^2} xi": comm(s.A, AA) - comm(s.A @ s.A, s.xi),
+    }
+
+
+@claim("manakov-square-flow", paper=("Manakov*", "dot_XP3*", "dot_XP2"), kind="id",
+       statement=r"\dot X=\{X,H_{\mathbb A}\}=A(PX^T-XP^T)X+(PX^T-XP^T)AX,\ "
+                 r"\dot P=\{P,H_{\mathbb A}\}=A(PX^T-XP^T)P+(PX^T-XP^T)AP,\quad \mathbb A(\xi)=A\xi+\xi A")
+def manakov_flow_for_a_squared(s):
+    """The Dirac flow of H_𝔸 = ½<𝔸Φ, Φ> with 𝔸(ξ) = Aξ + ξA is the printed (dot_XP3*), which is (dot_XP2) Ẋ = 𝔸(Φ)X, Ṗ = 𝔸(Φ)P and is tangent to T*V."""
+    flow = s.dirac_flow(H_manakov_square)
+    printed = flow_XP3(s)
+    omega = manakov_square(s, s.Phi)
+    kept = s.d(lambda t: [t.X.T @ t.X - t.Ir, t.X.T @ t.P + t.P.T @ t.X], printed)
+    return {
+        "dX/dt": flow.Xdot - printed["X"],
+        "dP/dt": flow.Pdot - printed["P"],
+        "(dot_XP2) X": printed["X"] - omega @ s.X,
+        "(dot_XP2) P": printed["P"] - omega @ s.P,
+        "d(X^T X)/dt along (dot_XP3*)": kept[0],
+        "d(X^T P + P^T X)/dt along (dot_XP3*)": kept[1],
+    }
+
+
+@claim("manakov-lax", paper=("Manakov", "dot_XP2", "man"), kind="lax", exact_max_n=2,
+       statement=r"\tfrac{d}{dt}\mathcal L_{man}(\lambda)=[\mathcal A_{man}(\lambda),\mathcal L_{man}(\lambda)],\quad "
+                 r"\mathcal L_{man}=\Phi+\lambda A,\ \mathcal A_{man}=\mathbb A(\Phi)+\lambda B;\quad "
+                 r"\tfrac{d}{dt}\tr\big(\lambda A+\textstyle\sum_i p_i\wedge e_i\big)^k=0")
+def manakov_lax_pair(s):
+    """The Dirac flow of H_𝔸 with the Manakov operator (Manakov) of generic diagonal A, B implies d𝓛/dt = [𝓐, 𝓛] for 𝓛 = Φ + λA, 𝓐 = 𝔸(Φ) + λB, and the integrals tr(λA + Σ p_i ∧ e_i)^k of (man) (Σ p_i ∧ e_i = PXᵀ − XPᵀ) are conserved."""
+    b = b_eigenvalues(s)
+    flow = s.dirac_flow(H_manakov)
+    L = s.Phi + s.lam * s.A
+    M = manakov_operator(s, b)(s.Phi) + s.lam * diagonal(s, b)
+    checks = {"Lax": s.d(lambda t: t.Phi + t.lam * t.A, flow) - comm(M, L)}
+    for k in POWERS:
+        checks[f"d tr L^{k}/dt"] = s.d(
+            lambda t, k=k: power_trace(t, t.lam * t.A + t.P @ t.X.T - t.X @ t.P.T, k), flow)
+    return checks
+
+
+@claim("manakov-square-lax", paper=("Manakov*", "dot_XP3*"), kind="lax",
+       statement=r"\tfrac{d}{dt}(\Phi+\lambda A)=[A\Phi+\Phi A+\lambda A^2,\Phi+\lambda A]\ \text{along (dot\_XP3*)}")
+def manakov_lax_pair_for_a_squared(s):
+    """For B = A², the Dirac flow of H_𝔸 (the flow (dot_XP3*)) implies d𝓛/dt = [𝓐, 𝓛] with 𝓛 = Φ + λA, 𝓐 = 𝔸(Φ) + λB = AΦ + ΦA + λA²."""
+    flow = s.dirac_flow(H_manakov_square)
+    L = s.Phi + s.lam * s.A
+    M = manakov_square(s, s.Phi) + s.lam * (s.A @ s.A)
+    return {"Lax": s.d(lambda t: t.Phi + t.lam * t.A, flow) - comm(M, L)}
+
+
+@claim("manakov-integrals", paper=("man", "SO(n)-inv"), kind="pb",
+       statement=r"\{\tr(\lambda A+\Phi)^k,\tr(\mu A+\Phi)^m\}=0,\ k,m=1,2,3;\quad "
+                 r"\tfrac{d}{dt}\tr(\lambda A+\Phi)^k=\tfrac{d}{dt}\Psi=\tfrac{d}{dt}P^TP=0\ \text{along (dot\_XP3*)}")
+def manakov_integrals_commute(s):
+    """The integrals tr(λA + Σ p_i ∧ e_i)^k of (man), k = 1, 2, 3, Poisson-commute for two values λ, μ, and together with the SO(n)-invariant Ψ and PᵀP they are conserved by the Manakov flow (dot_XP3*) (B = A²)."""
+    flow = s.dirac_flow(H_manakov_square)
+
+    def f(t, mu, k):
+        return power_trace(t, mu * t.A + t.P @ t.X.T - t.X @ t.P.T, k)
+    checks = {}
+    for k in POWERS:
+        for m in POWERS:
+            if m >= k:   # the pairs m < k are these with λ and μ exchanged
+                checks[f"{{tr L(lambda)^{k}, tr L(mu)^{m}}}"] = s.bracket(
+                    lambda t, k=k: f(t, t.lam, k), lambda t, m=m: f(t, t.scalar("mu"), m))
+    for k in POWERS:
+        checks[f"d tr L(lambda)^{k}/dt"] = s.d(lambda t, k=k: f(t, t.lam, k), flow)
+    checks["dPsi/dt"] = s.d(lambda t: t.Psi, flow)
+    checks["d(P^T P)/dt"] = s.d(lambda t: t.P.T @ t.P, flow)
+    return checks
+
+
+# -- the dual Lax pair for the Manakov flows ------------------------------------------
+
+def L_man_dual(s):
+    """(MAN-LA2): the 2r x 2r matrix 𝓛*_man(λ) with R = (λI_n − A)⁻¹."""
+    R, X, P = s.resolvent(s.lam), s.X, s.P
+    return block([[-(X.T @ R @ P), -(X.T @ R @ X)],
+                  [P.T @ R @ P, P.T @ R @ X]])
+
+
+def A_man_dual_with(s, S):
+    """(LA-MAN3) with the n x n matrix S in the place of (A + λI_n)⁻¹."""
+    X, P = s.X, s.P
+    return block([[X.T @ S @ P, X.T @ S @ X],
+                  [-(P.T @ S @ P), -(P.T @ S @ X)]])
+
+
+def A_man_dual(s):
+    """(LA-MAN3): 𝓐*_man(λ) with (A + λI_n)⁻¹ = −((−λ)I_n − A)⁻¹."""
+    return A_man_dual_with(s, -s.resolvent(-s.lam))
+
+
+@claim("manakov-dual-lax", paper=("man-dual", "MAN-LA", "MAN-LA2", "LA-MAN3"), kind="lax", exact_max_n=2,
+       fails_at=lambda n, r: n >= 2,
+       erratum="""Theorem man-dual: with the printed (LA-MAN3), whose entries contain (A + λI_n)^{-1}, the
+       flow (dot_XP3*) does not imply (MAN-LA).  It does with (A + λI_n) in place of (A + λI_n)^{-1}:
+       𝓐*_man(λ) = J Uᵀ(A + λI_n)U for U = (P, X), J = [[0, I_r], [−I_r, 0]], while 𝓛*_man(λ) = −J UᵀRU;
+       then d𝓛*/dt = [𝓛*, 𝓐*] follows from d(UᵀRU)/dt = Uᵀ[R, AΦ + ΦA]U and Φ = UJUᵀ.""",
+       statement=r"\tfrac{d}{dt}\mathcal L^*_{man}(\lambda)=[\mathcal L^*_{man}(\lambda),\mathcal A^*_{man}(\lambda)]\ "
+                 r"\text{along (dot\_XP3*)},\quad \mathcal L^*_{man}=\begin{pmatrix}-X^TR_\lambda P&-X^TR_\lambda X\\"
+                 r"P^TR_\lambda P&P^TR_\lambda X\end{pmatrix},\ \mathcal A^*_{man}=\begin{pmatrix}X^T(A+\lambda\mathbf I)^{-1}P&"
+                 r"X^T(A+\lambda\mathbf I)^{-1}X\\-P^T(A+\lambda\mathbf I)^{-1}P&-P^T(A+\lambda\mathbf I)^{-1}X\end{pmatrix},"
+                 r"\ R_\lambda=(\lambda\mathbf I_n-A)^{-1}")
+def manakov_dual_lax_pair(s):
+    """Theorem man-dual: the Manakov flow (dot_XP3*), derived from H_𝔸 with 𝔸(ξ) = Aξ + ξA, implies the 2r×2r Lax equation (MAN-LA) with the printed 𝓛*_man(λ) (MAN-LA2) and 𝓐*_man(λ) (LA-MAN3)."""
+    flow = s.dirac_flow(H_manakov_square)
+    return {"MAN-LA": s.d(L_man_dual, flow) - comm(L_man_dual(s), A_man_dual(s))}
+
+
+@manakov_dual_lax_pair.claim.correction("(LA-MAN3): (A + λI_n) in place of (A + λI_n)^{-1}")
+def manakov_dual_lax_pair_corrected(s):
+    flow = s.dirac_flow(H_manakov_square)
+    M = A_man_dual_with(s, s.A + s.lam * s.In)
+    return {"MAN-LA": s.d(L_man_dual, flow) - comm(L_man_dual(s), M)}
+
+
+def reflection(s, i):
+    """(reflections): S_i = diag(1, ..., −1, ..., 1), the reflection in the i-th coordinate hyperplane."""
+    return diagonal(s, [s.q(-1) if j == i else s.q(1) for j in range(s.n)])
+
+
+def manakov_field_at(s, X, P):
+    """The right-hand side of (dot_XP3*) at the point (X, P)."""
+    A = s.A
+    Phi = P @ X.T - X @ P.T
+    return A @ Phi @ X + Phi @ A @ X, A @ Phi @ P + Phi @ A @ P
+
+
+def dual_pair_at(s, X, P):
+    """(MAN-LA2), (LA-MAN3) at the point (X, P)."""
+    R, S = s.resolvent(s.lam), -s.resolvent(-s.lam)
+    L = block([[-(X.T @ R @ P), -(X.T @ R @ X)], [P.T @ R @ P, P.T @ R @ X]])
+    M = block([[X.T @ S @ P, X.T @ S @ X], [-(P.T @ S @ P), -(P.T @ S @ X)]])
+    return L, M
+
+
+@claim("manakov-reflections", paper=("reflections", "man-dual"), kind="id", exact_max_n=2,
+       statement=r"(X,P)\mapsto(S_iX,S_iP):\quad (\text{dot\_XP3*})\ \text{is equivariant},\quad "
+                 r"\mathcal L^*_{man}(\lambda),\ \mathcal A^*_{man}(\lambda)\ \text{are invariant},\quad i=1,\dots,n")
+def reflections_are_symmetries_of_the_dual_pair(s):
+    """The reflections (reflections) S_i of the coordinate hyperplanes (A diagonal) map the Manakov flow (dot_XP3*) to itself and leave the dual Lax matrices 𝓛*_man(λ), 𝓐*_man(λ) unchanged, so the dual Lax pair can determine the flow only up to the group ℤ₂ⁿ they generate."""
+    X, P = s.X, s.P
+    VX, VP = manakov_field_at(s, X, P)
+    L, M = dual_pair_at(s, X, P)
+    checks = {}
+    for i in range(s.n):
+        S = reflection(s, i)
+        WX, WP = manakov_field_at(s, S @ X, S @ P)
+        L_i, M_i = dual_pair_at(s, S @ X, S @ P)
+        checks[f"S_{i + 1}: dX/dt"] = WX - S @ VX
+        checks[f"S_{i + 1}: dP/dt"] = WP - S @ VP
+        checks[f"S_{i + 1}: L*"] = L_i - L
+        checks[f"S_{i + 1}: A*"] = M_i - M
+    return checks
