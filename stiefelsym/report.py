@@ -575,6 +575,9 @@ def _md_claim(c: ClaimResults) -> list[str]:
     if any(r.derivation and r.verdict == "proved" for r in c.printed):
         out += ["The dimension-free derivation (residual, rules applied, normal form) is in "
                 "`verification.tex`.", ""]
+    out += [_md_escape(line) + "." for line in map(certificate_summary, c.printed) if line]
+    if any(map(certificate_summary, c.printed)):
+        out.append("")
     notes = c.notes()
     if notes:
         out += ["Notes:", ""]
@@ -793,13 +796,36 @@ def _tex_claim(c: ClaimResults) -> list[str]:
     return out
 
 
+def certificate_summary(r: Result) -> str:
+    """One line on a dimension-free proof's cofactor certificate (its terms are in results.json)."""
+    data = r.certificate_data
+    if r.verdict != "proved" or not isinstance(data, dict) or "summary" not in data:
+        return ""
+    sm = data["summary"]
+    per = [len(e.get("terms", ())) for e in data.get("entries", ())]
+    entries = f"{sm['entries']} residual entr{'y' if sm['entries'] == 1 else 'ies'}"
+    checked = "re-checked by the independent checker (stiefelsym.certificate_check)"
+    if not sm["terms"]:
+        verb = "vanishes" if sm["entries"] == 1 else "vanish"
+        return (f"Cofactor certificate ({r.method}): empty, the {entries} already {verb} in the free algebra "
+                f"as built; {checked}")
+    sizes = ", ".join(map(str, per[:12])) + (", ..." if len(per) > 12 else "")
+    return (f"Cofactor certificate ({r.method}): {sm['terms']} terms over {entries} (per entry: {sizes}), "
+            f"in the hypotheses {', '.join(sm['hypotheses'])}; {checked}; the terms are in results.json")
+
+
 def _tex_derivations(c: ClaimResults) -> list[str]:
-    """The dimension-free proofs: residual, rules applied, normal form."""
+    """The dimension-free proofs: residual, rules applied, normal form, certificate size."""
     out = []
     for r in c.printed:
+        cert = certificate_summary(r)
+        if cert and not r.derivation:
+            out += [tex_escape(cert + "."), ""]
         if not r.derivation or r.verdict != "proved":
             continue
         out.append(r"\subsubsection*{" + tex_escape(f"Dimension-free proof ({r.method})") + "}")
+        if cert:
+            out.append(tex_escape(cert + "."))
         for chunk in r.derivation[:MAX_DERIVATIONS]:
             out.append(chunk if tex_balanced(chunk) else r"\texttt{" + tex_escape(chunk) + "}")
         if len(r.derivation) > MAX_DERIVATIONS:

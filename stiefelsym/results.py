@@ -62,6 +62,8 @@ class Result:
     erratum: str = ""
     #: for the dimension-free method: LaTeX derivations (residual, rules, normal form)
     derivation: list[str] = field(default_factory=list)
+    #: for the dimension-free method: the cofactor certificates (JSON; see stiefelsym.certificate_check)
+    certificate_data: dict[str, Any] | None = None
 
     @property
     def size(self) -> str:

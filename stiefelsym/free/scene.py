@@ -545,7 +545,7 @@ class FreeScene(PaperObjects):
         if callable(F):
             return _map_value(F(self.tangent(tangent)), self)
         images = self._tangent_images(tangent)
-        nf = self.system.normal_form
+        nf = self.field.normalize   # lazy: the derivative as computed, reduced with the residual
         return map_entries(F, lambda x: nf(derivation(x, images)) if isinstance(x, NCPoly)
                             else se.Integer(0), self)
 

@@ -1,0 +1,106 @@
+"""Certificates as data: residual entries and their cofactor representations in JSON.
+
+The form read by :mod:`stiefelsym.certificate_check` (format
+``stiefelsym-cofactor-1``)::
+
+    {"format": ..., "symbols": {name: what it stands for},
+     "letters": {name: {"kind": "resolvent", "parameter": "lambda_"} |
+                       {"kind": "generic", "row": "n", "col": "r", "transpose": name}},
+     "entries": [{"position": "dL[1,1]", "type": ["n", "n"],
+                  "residual": [{"coef": "2*kappa", "traces": [["Xt", "P"]], "word": ["X", "Pt"]}, ...],
+                  "terms": [{"coef": "-1", "traces": [], "left": ["Xt"], "hyp": "XtP+PtX",
+                             "right": ["X"], "in_trace": false, "word": []}, ...]}]}
+
+Letters are written by name (X, Xt, P, Pt, A, Ainv, xi, …; R[μ] and gen:… are
+declared), coefficients as strings that symengine and sympy parse, with one
+name per symbol (a claim's own scalar that prints like a chart symbol gets
+another name; n and r are the dimensions, tr I_n = n).
+"""
+from __future__ import annotations
+
+import keyword
+import re
+from typing import Any, Iterable, Mapping
+
+import symengine as se
+
+from .algebra import DIMENSIONS, Letter, NCPoly
+from .rewriting import Certificate
+
+FORMAT = "stiefelsym-cofactor-1"
+
+
+class CertificateWriter:
+    """Serializes the entries of one scene (one naming of symbols and letters)."""
+
+    def __init__(self, resolvents: Mapping[Letter, Any]) -> None:
+        self.resolvents = dict(resolvents)
+        self.symbols: dict[Any, str] = {DIMENSIONS["n"]: "n", DIMENSIONS["r"]: "r"}
+        self.meaning: dict[str, str] = {"n": "the dimension n (tr I_n)", "r": "the dimension r (tr I_r)"}
+        self.letters: dict[str, dict] = {}
+        self.entries: list[dict] = []
+
+    # -- names ----------------------------------------------------------------
+    def _symbol_name(self, s: Any) -> str:
+        name = self.symbols.get(s)
+        if name is not None:
+            return name
+        base = re.sub(r"\W", "_", str(s)) or "s"
+        if not base[0].isalpha():
+            base = "s" + base
+        if keyword.iskeyword(base):
+            base += "_"
+        name, k = base, 1
+        taken = set(self.symbols.values())
+        while name in taken:
+            k += 1
+            name = f"{base}_{k}"
+        self.symbols[s] = name
+        self.meaning[name] = f"the scalar {s}" + ("" if type(s) is se.Symbol else " (a claim's own)")
+        return name
+
+    def coef(self, c: Any) -> str:
+        c = se.sympify(c)
+        subs = {}
+        for s in c.free_symbols:
+            name = self._symbol_name(s)
+            if name != str(s) or type(s) is not se.Symbol:
+                subs[s] = se.Symbol(name)
+        return str(c.xreplace(subs) if subs else c)
+
+    def letter(self, L: Letter) -> str:
+        name = str(L)
+        if name in self.letters:
+            return name
+        if L in self.resolvents:
+            self.letters[name] = {"kind": "resolvent", "parameter": self.coef(self.resolvents[L])}
+        elif name.startswith("gen:") and L.adjoint != L:
+            G = L if not name.endswith("^T") else L.adjoint
+            if str(G) not in self.letters:
+                self.letters[str(G)] = {"kind": "generic", "row": G.row, "col": G.col, "transpose": str(G.adjoint)}
+        return name
+
+    def word(self, w: Iterable[Letter]) -> list[str]:
+        return [self.letter(L) for L in w]
+
+    # -- entries --------------------------------------------------------------
+    def residual(self, p: NCPoly) -> list[dict]:
+        return [{"coef": self.coef(c), "traces": [self.word(t) for t in tm], "word": self.word(w)}
+                for (tm, w), c in p.expand().terms.items()]
+
+    def add(self, position: str, cert: Certificate) -> dict:
+        p = cert.residual
+        entry = {"position": position, "type": [p.row, p.col], "residual": self.residual(p),
+                 "terms": [{"coef": self.coef(t.coef), "traces": [self.word(x) for x in t.traces],
+                            "left": self.word(t.left), "hyp": t.hyp.name, "right": self.word(t.right),
+                            "in_trace": t.in_trace, "word": self.word(t.word)} for t in cert.terms],
+                 "hypotheses": cert.hypotheses()}
+        self.entries.append(entry)
+        return entry
+
+    def data(self) -> dict:
+        terms = sum(len(e["terms"]) for e in self.entries)
+        used = sorted({h for e in self.entries for h in e["hypotheses"]})
+        return {"format": FORMAT, "symbols": dict(self.meaning), "letters": dict(self.letters),
+                "entries": self.entries,
+                "summary": {"entries": len(self.entries), "terms": terms, "hypotheses": used}}
