@@ -182,10 +182,25 @@ def hypothesis(name: str, ctx: Context) -> tuple[str, str, list[tuple[Any, tuple
 
 
 def coefficient(text: Any) -> Any:
-    """A scalar from its text (symengine's parser: no Python evaluation)."""
+    """A scalar from its text (symengine's parser: no Python evaluation): a rational function of
+    the scalars with rational numbers, whose denominator is not the zero polynomial."""
     if not isinstance(text, str):
         raise Rejected(f"a coefficient must be a string, got {text!r}")
-    return se.sympify(text)
+    e = se.sympify(text)
+    _rational_function(e, text)
+    if se.expand(e.as_numer_denom()[1]) == 0:
+        raise Rejected(f"the coefficient {text} has a zero denominator")
+    return e
+
+
+def _rational_function(e: Any, text: str) -> None:
+    if isinstance(e, (se.Integer, se.Rational, se.Symbol)):
+        return
+    if isinstance(e, (se.Add, se.Mul)) or (isinstance(e, se.Pow) and isinstance(e.args[1], se.Integer)):
+        for a in (e.args if not isinstance(e, se.Pow) else e.args[:1]):
+            _rational_function(a, text)
+        return
+    raise Rejected(f"the coefficient {text} is not a rational function of the scalars ({type(e).__name__})")
 
 
 def is_zero(c: Any) -> bool:
@@ -238,6 +253,8 @@ def check_entry(entry: dict, ctx: Context) -> int:
             left, right, word = _words(t["left"]), _words(t["right"]), _words(t["word"])
             traces = [_words(x) for x in t["traces"]]
             h_row, h_col, h_terms = hypothesis(t["hyp"], ctx)
+            if not isinstance(t["in_trace"], bool) or not isinstance(t.get("transposed", False), bool):
+                raise Rejected("in_trace and transposed are true or false")
             if t.get("transposed", False):
                 h_row, h_col = h_col, h_row
                 h_terms = [(hc * s, ws) for hc, hw in h_terms for s, ws in [ctx.star(hw)]]
@@ -291,8 +308,8 @@ def main(argv: list[str] | None = None) -> int:
                 continue
             rep = check_certificate(data)
             bad += not rep.accepted
-            print(f"{r.get('claim', path)}: {'accepted' if rep.accepted else 'REJECTED'} "
-                  f"({rep.entries} entries, {rep.terms} terms, {rep.seconds:.3f}s) {'' if rep.accepted else rep.message}")
+            verdict = "accepted" if rep.accepted else f"REJECTED: {rep.message}"
+            print(f"{r.get('claim', path)}: {verdict} ({rep.entries} entries, {rep.terms} terms, {rep.seconds:.3f}s)")
     return 1 if bad else 0
 
 

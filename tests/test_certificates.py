@@ -339,3 +339,31 @@ def test_the_checker_does_not_import_the_rewriting_system():
     assert not any(isinstance(n, ast.ImportFrom) and n.level for n in ast.walk(tree))   # no relative imports
     assert imported <= {"__future__", "time", "dataclasses", "typing", "symengine", "sympy", "json", "sys"}
     assert len(path.read_text(encoding="utf-8").splitlines()) < 400
+
+
+ZERO = "((kappa + 1)**2 - kappa**2 - 2*kappa - 1)"   # the zero polynomial, not written as 0
+
+
+@pytest.mark.parametrize("coef", ["oo", "zoo", "nan", "1/0", "sin(kappa)", "2**(1/2)", "kappa**(1/2)",
+                                  f"1/{ZERO}", f"{ZERO}/{ZERO}"])
+def test_coefficients_are_rational_functions_with_a_nonzero_denominator(coef):
+    data = xtp_skew()
+    data["entries"][0]["terms"][0]["coef"] = f"1/2 + {coef}"
+    rejected_because(data, "coefficient")
+
+
+def test_the_checker_runs_on_a_results_file(tmp_path, catalog_free_results, capsys):
+    from stiefelsym.certificate_check import main
+    from stiefelsym.results import dump_results
+
+    proved = [r for _, r in catalog_free_results if r.verdict == "proved"]
+    path = tmp_path / "results.json"
+    path.write_text(dump_results(proved, {}), encoding="utf-8")
+    assert main([str(path)]) == 0
+    assert capsys.readouterr().out.count("accepted") == len(proved)
+    payload = json.loads(path.read_text(encoding="utf-8"))
+    victim = next(r for r in payload["results"] if r["certificate_data"]["summary"]["terms"])
+    next(e for e in victim["certificate_data"]["entries"] if e["terms"])["terms"].pop()
+    path.write_text(json.dumps(payload), encoding="utf-8")
+    assert main([str(path)]) == 1
+    assert "REJECTED" in capsys.readouterr().out

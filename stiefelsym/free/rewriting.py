@@ -575,7 +575,7 @@ class CertificateError(RewritingError):
 
 @dataclass(frozen=True)
 class CertTerm:
-    """coef · Π tr(traces) · left·h·right, or, ``in_trace``, coef · Π tr(traces) · tr(left·h·right) · word."""
+    """coef · Π tr(traces) · left·h·right, or (``in_trace``) coef · Π tr(traces) · tr(left·h·right) · word."""
 
     coef: Coef
     left: Word
