@@ -111,12 +111,11 @@ def power_trace(s, M, k):
        statement=r"H_{neum,\kappa}=\tfrac12\langle\Phi,\Phi\rangle+\tfrac{\kappa}{2}\langle\Psi,\Psi\rangle+V,\quad "
                  r"V=\tfrac12\tr(X^TAX)=\tfrac12\sum_{i=1}^r(e_i,Ae_i)")
 def neumann_hamiltonian_is_jensen_plus_potential(s):
-    """H_neum,κ is the Jensen kinetic energy (EM) of ds²_κ plus the potential V = ½tr(XᵀAX) = ½Σ(eᵢ, Aeᵢ), and both are right SO(r)-invariant."""
+    """H_neum,κ is the Jensen kinetic energy (EM) of ds²_κ plus the potential V = ½tr(XᵀAX) = ½Σ(eᵢ, Aeᵢ), and it is right SO(r)-invariant."""
     kinetic = s.killing(s.Phi, s.Phi) / 2 + s.kappa * s.killing(s.Psi, s.Psi) / 2
     right = {"X": s.X @ s.eta, "P": s.P @ s.eta}
     return {
         "H_neum = H_kappa + V": H_neumann(s) - (kinetic + potential(s)),
-        "V right SO(r)-invariant": s.d(potential, right),
         "H_neum right SO(r)-invariant": s.d(H_neumann, right),
     }
 
