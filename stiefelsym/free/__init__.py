@@ -3,11 +3,15 @@
 Matrices become letters of a free algebra with involution (:mod:`.algebra`),
 the constraints become a confluent rewriting system (:mod:`.rewriting`), trace
 forms are cyclic words (:mod:`.traces`), and :class:`FreeScene` runs claim code
-written for the coordinate scene (:mod:`.scene`).
+written for the coordinate scene (:mod:`.scene`).  Every reduction to 0 is
+certified as a combination of the hypotheses (:meth:`RewritingSystem.certify`),
+written as data by :mod:`.certificates` and re-checked by
+:mod:`stiefelsym.certificate_check`.
 """
 from .algebra import Letter, NCPoly, letter_pair, skew_letter, substitute, symmetric_letter, trace
-from .rewriting import (CompletionResult, CriticalPair, Order, Reduction, RewritingError, RewritingSystem,
-                        Rule, complete, critical_pairs, is_confluent)
+from .rewriting import (Certificate, CertificateError, CertTerm, Cofactor, CompletionResult, CriticalPair, Hypothesis,
+                        Order, Reduction, RewritingError, RewritingSystem, Rule, complete, critical_pairs,
+                        is_confluent)
 from .scene import FreeField, FreeScene, FreeSolveError, NeedsCoordinates, standard_system
 from .traces import gradient
 
@@ -15,5 +19,6 @@ __all__ = [
     "Letter", "NCPoly", "letter_pair", "skew_letter", "symmetric_letter", "substitute", "trace",
     "CompletionResult", "CriticalPair", "Order", "Reduction", "RewritingError", "RewritingSystem", "Rule",
     "complete", "critical_pairs", "is_confluent",
+    "Certificate", "CertificateError", "CertTerm", "Cofactor", "Hypothesis",
     "FreeField", "FreeScene", "FreeSolveError", "NeedsCoordinates", "standard_system", "gradient",
 ]
