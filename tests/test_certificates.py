@@ -367,3 +367,27 @@ def test_the_checker_runs_on_a_results_file(tmp_path, catalog_free_results, caps
     path.write_text(json.dumps(payload), encoding="utf-8")
     assert main([str(path)]) == 1
     assert "REJECTED" in capsys.readouterr().out
+
+
+def test_coefficients_parse_in_sympy_with_one_name_per_symbol(catalog_free_results):
+    """Another system can read the certificates: sympy parses every coefficient."""
+    import sympy
+
+    s = FreeScene(lazy=True)
+    datas = [certificate_of(s, matrix_entries(la3_residual(s, 0)))]
+    datas += [r.certificate_data for _, r in catalog_free_results if r.verdict == "proved"]
+    for data in datas:
+        for e in data["entries"]:
+            for t in e["residual"] + e["terms"]:
+                names = {str(x) for x in sympy.sympify(t["coef"]).free_symbols}
+                assert names <= set(data["symbols"]), (names, data["symbols"])
+    assert "lambda_" in datas[0]["symbols"]
+
+
+def test_a_claims_own_scalar_that_prints_like_a_chart_symbol_gets_its_own_name():
+    s = FreeScene(lazy=True)
+    own = se.Dummy("lambda")
+    x = (s.X.T @ s.X)._a[0, 0] * own - NCPoly.identity("r") * s.lam
+    writer = CertificateWriter(s._resolvents)
+    coefs = {writer.coef(c) for c in x.terms.values()}
+    assert coefs == {"lambda_", "-lambda__2"} or coefs == {"lambda__2", "-lambda_"}
