@@ -429,11 +429,8 @@ class RewritingSystem:
     # occurrence, same rotation), and returns what that reduction subtracted, as a
     # dict {(pre, rule name, post): coefficient}: w − nf(w) = Σ c·pre·(l − r)·post for
     # words, tr(c) − nf(tr c) = Σ c·tr(pre·(l − r)·post) for traces.
-    def _certificate_memos(self) -> tuple[dict, dict, dict]:
-        return self._cert_memos
-
     def _word_cert(self, w: Word) -> dict:
-        memo = self._certificate_memos()[0]
+        memo = self._cert_memos[0]
         hit = memo.get(w)
         if hit is not None:
             return hit
@@ -449,7 +446,7 @@ class RewritingSystem:
         return out
 
     def _cycle_cert(self, c: Word) -> dict:
-        memo = self._certificate_memos()[1]
+        memo = self._cert_memos[1]
         hit = memo.get(c)
         if hit is not None:
             return hit
@@ -492,7 +489,7 @@ class RewritingSystem:
 
     def _trace_cert(self, c: Word) -> dict:
         c = min_rotation(c)
-        memo = self._certificate_memos()[2]
+        memo = self._cert_memos[2]
         hit = memo.get(c)
         if hit is not None:
             return hit
