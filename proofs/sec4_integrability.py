@@ -1,7 +1,10 @@
 """§4 Integrability of geodesic flows: the Jensen flows and their integrals."""
 from __future__ import annotations
 
-from stiefelsym import admissible, block, claim, comm
+from stiefelsym import Count, Rank, admissible, block, claim, comm
+
+from .sec2_hamiltonian_flows import (ad_matrix, ddim_printed, dim_so, dim_V, psi_and_gram_give_ddim_functions,
+                                     two_l_printed)
 
 SECTION = "4"
 
@@ -20,6 +23,36 @@ def momentum_maps_are_integrals_of_the_jensen_flows(s):
         "dPhi/dt": s.d(lambda t: t.Phi, flow),
         "dPsi/dt": s.d(lambda t: t.Psi, flow),
     }
+
+
+# -- dimensions of the invariant tori ------------------------------------------------
+
+def delta0_printed(n, r):
+    """The closed form of δ₀ after Theorem bols-jov."""
+    if n >= 2 * r:
+        return r
+    return dim_V(n, r) + dim_so(n - r) - dim_so(n) + n // 2
+
+
+@claim("invariant-tori-dimensions", paper=("bols-jov", "ddim", "2l"), kind="dim",
+       equivariance="the ranks do not depend on the bases of so(n) and of the fibre and are invariant under O(n)",
+       statement=r"\delta_0=2\dim V_{n,r}-\ddim C^\infty(T^*V_{n,r})^{SO(n)}-2l=\begin{cases}r,&n\ge2r\\"
+                 r"\dim V_{n,r}+\dim SO(n-r)-\dim SO(n)+\rank SO(n),&n<2r\end{cases};\quad "
+                 r"\delta=2\dim V_{n,r}-\ddim-l=r(n-r),\ n\ge2r")
+def invariant_tori_dimensions(s):
+    """With ddim and 2l computed at this size (the ranks of Lemma 2l and (ddim)), δ₀ = 2dim V − ddim − 2l of Theorem bols-jov has the printed closed form, and for the Manakov metrics δ = 2dim V − ddim − l = r(n − r) when n ≥ 2r."""
+    n, r = s.n, s.r
+    ddim, two_l = ddim_printed(n, r), two_l_printed(n, r)
+    checks = {
+        "2l": Rank(ad_matrix(s, s.Phi), two_l, generic=True, meaning="2l, the dimension of a generic orbit in Phi(T*V)"),
+        "ddim": psi_and_gram_give_ddim_functions(s)["rank on the fibre"],
+        "delta_0": Count(2 * dim_V(n, r) - ddim - two_l, delta0_printed(n, r),
+                         "2 dim V - ddim - 2l against the closed form"),
+    }
+    if n >= 2 * r:
+        checks["delta (Manakov)"] = Count(2 * dim_V(n, r) - ddim - two_l // 2, r * (n - r),
+                                          "2 dim V - ddim - l against r(n - r)")
+    return checks
 
 
 # -- Manakov metrics ----------------------------------------------------------------

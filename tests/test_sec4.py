@@ -4,7 +4,7 @@ corrupted copy of each FAILS (negative controls; for every Lax pair, the commuta
 other order)."""
 import pytest
 
-from stiefelsym import comm
+from stiefelsym import Count, comm
 from stiefelsym.claims import Size, load_catalog
 from stiefelsym.free_method import run_free
 from stiefelsym.methods import run_exact, run_points
@@ -17,8 +17,8 @@ SEED = 0
 #: proved for every n, r by rewriting modulo (cond_XP)
 FREE_PROVED = ("jensen-integrals", "manakov-square", "manakov-square-flow", "manakov-square-lax",
                "manakov-integrals")
-#: need coordinates: the Manakov operator of a general diagonal B, the reflections S_i
-NEEDS_COORDINATES = ("manakov-operator", "manakov-lax", "manakov-reflections")
+#: need coordinates: ranks and counts, the Manakov operator of a general diagonal B, the reflections S_i
+NEEDS_COORDINATES = ("invariant-tori-dimensions", "manakov-operator", "manakov-lax", "manakov-reflections")
 #: fail as printed (documented errata with a registered correction)
 ERRATA = ("manakov-dual-lax",)
 
@@ -37,6 +37,12 @@ def _section4(catalog):
 def jensen_gram_not_conserved(s):
     """Corrupted: PᵀP in place of Ψ (it is not an integral of H_κ for κ ≠ 0)."""
     return {"dPsi/dt": s.d(lambda t: t.P.T @ t.P, s.dirac_flow(sec4.H_jensen))}
+
+
+def tori_dimension_always_r(s):
+    """Corrupted (bols-jov): δ₀ = r for every n."""
+    n, r = s.n, s.r
+    return {"delta_0": Count(2 * sec4.dim_V(n, r) - sec4.ddim_printed(n, r) - sec4.two_l_printed(n, r), r)}
 
 
 def manakov_operator_transposed(s):
@@ -104,6 +110,7 @@ def reflections_break_the_resolvent(s):
 
 CORRUPTIONS = [
     ("jensen-integrals", jensen_gram_not_conserved, (3, 2)),
+    ("invariant-tori-dimensions", tori_dimension_always_r, (3, 2)),   # n < 2r
     ("manakov-operator", manakov_operator_transposed, (3, 2)),
     ("manakov-square", manakov_square_minus, (3, 2)),
     ("manakov-square-flow", manakov_flow_one_term, (3, 2)),
@@ -131,7 +138,9 @@ def test_corrupted_claim_fails(catalog, cid, func, size):
         assert run_exact(c, *size, SEED, func=func).verdict == "fails"
     for method in ("modular", "rational"):
         res = run_points(c, 3, 2, method, SEED, func=func)
-        assert res.verdict == "fails" and res.witness and res.witness["seed"] == SEED
+        assert res.verdict == "fails"
+        if c.kind != "dim":      # a wrong count is exact arithmetic: no point of T*V to show
+            assert res.witness and res.witness["seed"] == SEED
 
 
 @pytest.mark.parametrize("cid, func", [(c, f) for c, f, _ in CORRUPTIONS if c in FREE_PROVED + ERRATA],
