@@ -290,3 +290,34 @@ def reflections_are_symmetries_of_the_dual_pair(s):
         checks[f"S_{i + 1}: L*"] = L_i - L
         checks[f"S_{i + 1}: A*"] = M_i - M
     return checks
+
+
+# -- the remark after Theorem ET --------------------------------------------------------
+
+def bracket_gram_psi(s):
+    """{tr(G PᵀP), ⟨Ψ, Ψ⟩} for a generic r x r matrix G: all the brackets {(p_i, p_j), ⟨Ψ, Ψ⟩} at once."""
+    gram = lambda t: t.tr(t.generic("G", "r", "r") @ t.P.T @ t.P)
+    return s.bracket(gram, lambda t: t.killing(t.Psi, t.Psi))
+
+
+@claim("gram-not-in-involution-with-psi", paper=("so(n)+so(r)", "SO(n)-inv"), kind="not", expect="nonzero",
+       fails_at=lambda n, r: r in (1, n),
+       erratum="""The remark after Theorem ET (the functions (p_i, p_j) do not Poisson-commute with <Psi, Psi>,
+       so the SO(n)-invariant functions are not conserved by the Euclidean geodesic flow) fails for r = 1, where
+       Psi = 0, and for r = n, where P = XW with W = X^T P skew, Psi = 2W and P^T P = -Psi^2/4 is a function of
+       Psi, which commutes with the Casimir <Psi, Psi> of so(r) (verified by the claim
+       gram-commutes-with-psi-if-r-is-1-or-n).  It holds for 2 <= r <= n - 1.""",
+       statement=r"\{(p_i,p_j),\langle\Psi,\Psi\rangle\}\not\equiv0")
+def gram_does_not_commute_with_psi_squared(s):
+    """The remark after Theorem ET: the SO(n)-invariant functions (p_i, p_j) do not Poisson-commute with ⟨Ψ, Ψ⟩ (tested on Σ g_ij (p_i, p_j) = tr(G PᵀP) with generic G), so, as they commute with ⟨Φ, Φ⟩, they are not conserved by the Euclidean geodesic flow."""
+    return {"{tr(G P^T P), <Psi, Psi>}": bracket_gram_psi(s)}
+
+
+@claim("gram-commutes-with-psi-if-r-is-1-or-n", paper=("so(n)+so(r)", "SO(n)-inv"), kind="pb",
+       sizes=admissible(5, where=lambda n, r: r in (1, n), condition="r = 1 or r = n"),
+       statement=r"r\in\{1,n\}:\quad P^TP=-\tfrac14\Psi^2,\quad \{(p_i,p_j),\langle\Psi,\Psi\rangle\}=0")
+def gram_commutes_with_psi_in_the_exceptional_cases(s):
+    """For r = 1 and r = n, PᵀP = −Ψ²/4 on T*V, so the functions (p_i, p_j) Poisson-commute with ⟨Ψ, Ψ⟩ (the cases where the remark after Theorem ET fails)."""
+    checks = {"P^T P + Psi^2/4": s.P.T @ s.P + s.Psi @ s.Psi / 4} if s.r == s.n else {"Psi (r = 1)": s.Psi}
+    checks["{tr(G P^T P), <Psi, Psi>}"] = bracket_gram_psi(s)
+    return checks
