@@ -76,10 +76,6 @@ class ConstantDegenerate(DegenerateError):
     """A constant of the claim vanishes (or has no inverse) modulo the sampled prime: draw another prime."""
 
 
-class FloatUnresolved(ArithmeticError):
-    """A non-finite value, error bound or term scale in floating point: the precision cannot decide."""
-
-
 class SymbolicBudget(ArithmeticError):
     """A symbolic computation beyond what the exact method attempts."""
 
@@ -112,6 +108,10 @@ class Field:
         """A computed value taken as an exact input of the problem (hard cases)."""
         return x
 
+    def is_exact_zero(self, x: Any) -> bool:
+        """Whether x is exactly zero (an elimination step with it may be skipped)."""
+        return self.is_zero(x)
+
     def pivot_cost(self, x: Any) -> float:
         """Smaller is a better pivot; inf means the entry is zero."""
         return 0.0 if not self.is_zero(x) else math.inf
@@ -139,7 +139,7 @@ class Field:
                 if i == col:
                     continue
                 f = rows[i][col]
-                if self.is_zero(f):
+                if self.is_exact_zero(f):
                     continue
                 f = self.normalize(f / piv)
                 rows[i] = [self.normalize(a - f * b) if j >= col else a
@@ -164,7 +164,7 @@ class Field:
             piv = rows[rank][col]
             for i in range(rank + 1, len(rows)):
                 f = rows[i][col]
-                if self.is_zero(f):
+                if self.is_exact_zero(f):
                     continue
                 f = self.normalize(f / piv)
                 rows[i] = [self.normalize(a - f * b) for a, b in zip(rows[i], rows[rank])]
@@ -348,12 +348,16 @@ FLOAT_UNDERFLOW = 2.0**-1074
 class ErrNum:
     """A float (or mpf) with a first-order running bound on its rounding error.
 
-    ``e`` bounds |computed - exact| and ``m`` is the scale of the number: the sum of
-    the absolute values of the terms of the polynomial expression it is, in the inputs
-    and in the quotients met on the way (a quotient is a term of its own size).  In float64 a
-    value, bound or scale that is not finite (overflow, inf - inf, 0 * inf)
-    raises :class:`FloatUnresolved`: the error model is then void, and the
-    evaluation must be repeated at a higher precision (mpmath does not overflow).
+    ``e`` bounds |computed - exact| and ``m`` bounds the sum of the absolute
+    values of all terms that went into the number (its scale; the terms of a
+    quotient a/b are those of a divided by |b|).  In float64 a value, bound or
+    scale can stop being finite (overflow, inf - inf, 0 * inf): the error model
+    is then void.  Such a number is *poisoned* (e or m is inf or nan) and every
+    number computed from it is poisoned too (no operation can turn inf or nan
+    back into a finite bound), so the engine sees it in the result and repeats the
+    evaluation at a higher precision (mpmath does not overflow).  Nothing is
+    raised inside the arithmetic (numpy's object dot does not propagate exceptions
+    cleanly).
     """
 
     __slots__ = ("v", "e", "m", "u")
@@ -363,10 +367,12 @@ class ErrNum:
         self.m = abs(v) if m is None else m
 
     def _new(self, v, e, m):
-        # nan fails both comparisons; e >= u |v| whenever v is infinite or nan
-        if not (e < math.inf and m < math.inf):
-            raise FloatUnresolved("a non-finite value, error bound or term scale (overflow)")
         return ErrNum(v, e, m, self.u)
+
+    @property
+    def poisoned(self) -> bool:
+        """The error model is void: e or m is not finite (nan fails both comparisons)."""
+        return not (self.e < math.inf and self.m < math.inf)
 
     def _lift(self, o):
         if isinstance(o, ErrNum):
@@ -374,8 +380,8 @@ class ErrNum:
         if isinstance(o, (int, Fraction)):
             try:
                 v = self._num(o)
-            except OverflowError as exc:
-                raise FloatUnresolved(f"the constant {o} overflows") from exc
+            except OverflowError:
+                return ErrNum(0.0, math.inf, math.inf, self.u)     # poisoned: float64 cannot hold it
             err = 0 if v == o else self.u * abs(v) + (FLOAT_UNDERFLOW if isinstance(v, float) else 0)
             return self._new(v, err, abs(v))
         return NotImplemented
@@ -423,16 +429,18 @@ class ErrNum:
         o = self._lift(o)
         if o is NotImplemented:
             return o
+        if o.poisoned:
+            return ErrNum(0.0, math.inf, math.inf, self.u)
         if o.v == 0 or o.e >= abs(o.v):
             raise DegenerateError("division by a number indistinguishable from zero")
         v = self.v / o.v
         e = (self.e + abs(v) * o.e) / (abs(o.v) - o.e) + self.u * abs(v)
         if isinstance(v, float) and abs(v) < FLOAT_MIN_NORMAL and not (self.v == 0 and self.e == 0):
             e += FLOAT_UNDERFLOW
-        # a quotient is a new term of its own size (|v| + e bounds the exact quotient); carrying
-        # m_a / |b| instead lets the scale grow doubly exponentially through a Gaussian elimination
-        # (it overflowed float64 from n = 5) and makes every error bound look "resolved"
-        return self._new(v, e, abs(v) + e)
+        # the terms of a/b are those of a divided by b; through a long elimination this scale can
+        # exceed float64 (then the result is poisoned, and mpmath, which does not overflow, takes
+        # over).  The divisor's scale does not enter the quotient's: its poison was passed on above.
+        return self._new(v, e, self.m / (abs(o.v) - o.e))
 
     def __rtruediv__(self, o):
         return self._lift(o) / self
@@ -464,8 +472,8 @@ class FloatField(Field):
         if self.dps is None:
             try:
                 v = q.numerator / q.denominator
-            except OverflowError as exc:
-                raise FloatUnresolved(f"the constant {q} overflows float64") from exc
+            except OverflowError:
+                return ErrNum(0.0, math.inf, math.inf, self.u)      # poisoned: float64 cannot hold it
         else:
             v = mpmath.mpf(q.numerator) / q.denominator
         err = 0 if q.denominator == 1 and abs(q.numerator) < 2**53 else self.u * abs(v)
@@ -479,6 +487,9 @@ class FloatField(Field):
 
     def is_zero(self, x):
         return abs(x.v) <= x.e if isinstance(x, ErrNum) else x == 0
+
+    def is_exact_zero(self, x):
+        return x.v == 0 and x.e == 0 if isinstance(x, ErrNum) else x == 0
 
     def exact_input(self, x):
         return ErrNum(x.v, 0, abs(x.v), self.u) if isinstance(x, ErrNum) else x
@@ -790,6 +801,10 @@ class DualField(Field):
     def is_zero(self, x):
         x = self.lift(x)
         return self.base.is_zero(x.a) and self.base.is_zero(x.b)
+
+    def is_exact_zero(self, x):
+        x = self.lift(x)
+        return self.base.is_exact_zero(x.a) and self.base.is_exact_zero(x.b)
 
     def normalize(self, x):
         x = self.lift(x)

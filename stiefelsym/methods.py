@@ -23,10 +23,11 @@ from dataclasses import dataclass, field as dc_field
 from typing import Any, Callable, Iterator
 
 import mpmath
+import numpy as np
 
 from .claims import Claim, Count, Rank
 from .fields import (PRIME_LOW, PRIMES_IN_RANGE_LOWER, ConstantDegenerate, DegenerateError, Deg, DegreeField,
-                     ErrNum, Field, FloatField, FloatUnresolved, ModularField, RationalField, SymbolicBudget,
+                     ErrNum, Field, FloatField, ModularField, RationalField, SymbolicBudget,
                      SymbolicField, random_prime)
 from .matrix import Mat
 from .results import CheckOutcome, Result
@@ -760,7 +761,7 @@ def _float_component(claim: Claim, n: int, r: int, seed: int, func: Callable, op
     for dps in FLOAT_LADDER:
         field = FloatField(dps)
         rng = random.Random(f"{seed}|{claim.id}|{n}|{r}|float" + (f"|component {comp}" if comp else ""))
-        ctx = mpmath.workdps(dps) if dps else _null()
+        ctx = mpmath.workdps(dps) if dps else np.errstate(over="ignore", invalid="ignore")
         try:
             with ctx:
                 scene = Scene(n, r, field, chart="cayley", rng=rng, component=comp, realization=claim.realization,
@@ -779,7 +780,7 @@ def _float_component(claim: Claim, n: int, r: int, seed: int, func: Callable, op
                             if not isinstance(x, ErrNum):
                                 x = field.const(x)       # an exact int or Fraction
                             entries.append((pos, x))
-        except (FloatUnresolved, OverflowError) as exc:
+        except OverflowError as exc:
             run.log.append(f"{field.name}: unresolved ({exc})")
             continue
         except DegenerateError as exc:
@@ -791,7 +792,7 @@ def _float_component(claim: Claim, n: int, r: int, seed: int, func: Callable, op
             return run
         finite = all(_finite(x) for _, x in entries)
         if not finite:   # never a pass: nan or inf anywhere voids the error model
-            run.log.append(f"{field.name}: a non-finite residual, bound or scale")
+            run.log.append(f"{field.name}: unresolved (a non-finite value, error bound or term scale: overflow)")
             continue
         worst = max(entries, key=lambda px: abs(px[1].v))[1]
         ratio = max(entries, key=lambda px: (px[1].e / px[1].m) if px[1].m else (0 if px[1].e == 0 else math.inf))[1]
@@ -900,11 +901,6 @@ def _run_float(claim: Claim, n: int, r: int, seed: int, func: Callable, options:
                        f"{res.certificate} | {log}")
         return done("undecided")
     return done("numeric")
-
-
-@contextmanager
-def _null():
-    yield
 
 
 def run_exact_isolated(claim: Claim, n: int, r: int, seed: int, func: Callable | None = None,
