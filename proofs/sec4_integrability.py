@@ -1,4 +1,6 @@
-"""§4 Integrability of geodesic flows: the Jensen flows and their integrals."""
+"""§4 Integrability of geodesic flows: the dimensions of the invariant tori (bols-jov), the
+Manakov metrics (Manakov), (Manakov*), their flow (dot_XP3*), Lax pairs and integrals (man), the
+dual Lax pair (MAN-LA) with the reflections, and the Jensen flows with their integrals (ET)."""
 from __future__ import annotations
 
 from stiefelsym import Count, Rank, admissible, block, claim, comm
@@ -106,11 +108,16 @@ def H_manakov_square(s):
     return s.killing(manakov_square(s, s.Phi), s.Phi) / 2
 
 
-def flow_XP3(s):
-    """(dot_XP3*): Ẋ = A(PXᵀ − XPᵀ)X + (PXᵀ − XPᵀ)AX, Ṗ = A(PXᵀ − XPᵀ)P + (PXᵀ − XPᵀ)AP."""
-    X, P, A = s.X, s.P, s.A
+def flow_XP3_at(s, X, P):
+    """(dot_XP3*) at the point (X, P): Ẋ = A(PXᵀ − XPᵀ)X + (PXᵀ − XPᵀ)AX, Ṗ = A(PXᵀ − XPᵀ)P + (PXᵀ − XPᵀ)AP."""
+    A = s.A
     Phi = P @ X.T - X @ P.T
     return {"X": A @ Phi @ X + Phi @ A @ X, "P": A @ Phi @ P + Phi @ A @ P}
+
+
+def flow_XP3(s):
+    """(dot_XP3*) at the point (X, P) of the scene."""
+    return flow_XP3_at(s, s.X, s.P)
 
 
 @claim("manakov-operator", paper=("Manakov", "Manakov*"), kind="id", exact_max_n=3,
@@ -209,23 +216,32 @@ def manakov_integrals_commute(s):
 
 # -- the dual Lax pair for the Manakov flows ------------------------------------------
 
-def L_man_dual(s):
-    """(MAN-LA2): the 2r x 2r matrix 𝓛*_man(λ) with R = (λI_n − A)⁻¹."""
-    R, X, P = s.resolvent(s.lam), s.X, s.P
+def L_man_dual_at(s, X, P):
+    """(MAN-LA2) at the point (X, P): the 2r x 2r matrix 𝓛*_man(λ) with R = (λI_n − A)⁻¹."""
+    R = s.resolvent(s.lam)
     return block([[-(X.T @ R @ P), -(X.T @ R @ X)],
                   [P.T @ R @ P, P.T @ R @ X]])
 
 
-def A_man_dual_with(s, S):
-    """(LA-MAN3) with the n x n matrix S in the place of (A + λI_n)⁻¹."""
-    X, P = s.X, s.P
+def A_man_dual_at(s, X, P, S):
+    """(LA-MAN3) at the point (X, P), with the n x n matrix S in the place of (A + λI_n)⁻¹."""
     return block([[X.T @ S @ P, X.T @ S @ X],
                   [-(P.T @ S @ P), -(P.T @ S @ X)]])
 
 
+def inverse_of_A_plus_lambda(s):
+    """(A + λI_n)⁻¹ = −((−λ)I_n − A)⁻¹, as printed in (LA-MAN3)."""
+    return -s.resolvent(-s.lam)
+
+
+def L_man_dual(s):
+    """(MAN-LA2): 𝓛*_man(λ)."""
+    return L_man_dual_at(s, s.X, s.P)
+
+
 def A_man_dual(s):
-    """(LA-MAN3): 𝓐*_man(λ) with (A + λI_n)⁻¹ = −((−λ)I_n − A)⁻¹."""
-    return A_man_dual_with(s, -s.resolvent(-s.lam))
+    """(LA-MAN3): 𝓐*_man(λ) as printed."""
+    return A_man_dual_at(s, s.X, s.P, inverse_of_A_plus_lambda(s))
 
 
 @claim("manakov-dual-lax", paper=("man-dual", "MAN-LA", "MAN-LA2", "LA-MAN3"), kind="lax", exact_max_n=2,
@@ -248,7 +264,7 @@ def manakov_dual_lax_pair(s):
 @manakov_dual_lax_pair.claim.correction("(LA-MAN3): (A + λI_n) in place of (A + λI_n)^{-1}")
 def manakov_dual_lax_pair_corrected(s):
     flow = s.dirac_flow(H_manakov_square)
-    M = A_man_dual_with(s, s.A + s.lam * s.In)
+    M = A_man_dual_at(s, s.X, s.P, s.A + s.lam * s.In)
     return {"MAN-LA": s.d(L_man_dual, flow) - comm(L_man_dual(s), M)}
 
 
@@ -257,38 +273,21 @@ def reflection(s, i):
     return diagonal(s, [s.q(-1) if j == i else s.q(1) for j in range(s.n)])
 
 
-def manakov_field_at(s, X, P):
-    """The right-hand side of (dot_XP3*) at the point (X, P)."""
-    A = s.A
-    Phi = P @ X.T - X @ P.T
-    return A @ Phi @ X + Phi @ A @ X, A @ Phi @ P + Phi @ A @ P
-
-
-def dual_pair_at(s, X, P):
-    """(MAN-LA2), (LA-MAN3) at the point (X, P)."""
-    R, S = s.resolvent(s.lam), -s.resolvent(-s.lam)
-    L = block([[-(X.T @ R @ P), -(X.T @ R @ X)], [P.T @ R @ P, P.T @ R @ X]])
-    M = block([[X.T @ S @ P, X.T @ S @ X], [-(P.T @ S @ P), -(P.T @ S @ X)]])
-    return L, M
-
-
 @claim("manakov-reflections", paper=("reflections", "man-dual"), kind="id", exact_max_n=2,
        statement=r"(X,P)\mapsto(S_iX,S_iP):\quad (\text{dot\_XP3*})\ \text{is equivariant},\quad "
                  r"\mathcal L^*_{man}(\lambda),\ \mathcal A^*_{man}(\lambda)\ \text{are invariant},\quad i=1,\dots,n")
 def reflections_are_symmetries_of_the_dual_pair(s):
     """The reflections (reflections) S_i of the coordinate hyperplanes (A diagonal) map the Manakov flow (dot_XP3*) to itself and leave the dual Lax matrices 𝓛*_man(λ), 𝓐*_man(λ) unchanged, so the dual Lax pair can determine the flow only up to the group ℤ₂ⁿ they generate."""
-    X, P = s.X, s.P
-    VX, VP = manakov_field_at(s, X, P)
-    L, M = dual_pair_at(s, X, P)
+    X, P, Sinv = s.X, s.P, inverse_of_A_plus_lambda(s)
+    V = flow_XP3(s)
     checks = {}
     for i in range(s.n):
         S = reflection(s, i)
-        WX, WP = manakov_field_at(s, S @ X, S @ P)
-        L_i, M_i = dual_pair_at(s, S @ X, S @ P)
-        checks[f"S_{i + 1}: dX/dt"] = WX - S @ VX
-        checks[f"S_{i + 1}: dP/dt"] = WP - S @ VP
-        checks[f"S_{i + 1}: L*"] = L_i - L
-        checks[f"S_{i + 1}: A*"] = M_i - M
+        W = flow_XP3_at(s, S @ X, S @ P)
+        checks[f"S_{i + 1}: dX/dt"] = W["X"] - S @ V["X"]
+        checks[f"S_{i + 1}: dP/dt"] = W["P"] - S @ V["P"]
+        checks[f"S_{i + 1}: L*"] = L_man_dual_at(s, S @ X, S @ P) - L_man_dual(s)
+        checks[f"S_{i + 1}: A*"] = A_man_dual_at(s, S @ X, S @ P, Sinv) - A_man_dual(s)
     return checks
 
 
@@ -315,9 +314,9 @@ def gram_does_not_commute_with_psi_squared(s):
 
 @claim("gram-commutes-with-psi-if-r-is-1-or-n", paper=("so(n)+so(r)", "SO(n)-inv"), kind="pb",
        sizes=admissible(5, where=lambda n, r: r in (1, n), condition="r = 1 or r = n"),
-       statement=r"r\in\{1,n\}:\quad P^TP=-\tfrac14\Psi^2,\quad \{(p_i,p_j),\langle\Psi,\Psi\rangle\}=0")
+       statement=r"r=n:\ P^TP=-\tfrac14\Psi^2;\quad r=1:\ \Psi=0;\quad \{(p_i,p_j),\langle\Psi,\Psi\rangle\}=0")
 def gram_commutes_with_psi_in_the_exceptional_cases(s):
-    """For r = 1 and r = n, PᵀP = −Ψ²/4 on T*V, so the functions (p_i, p_j) Poisson-commute with ⟨Ψ, Ψ⟩ (the cases where the remark after Theorem ET fails)."""
+    """For r = n, PᵀP = −Ψ²/4 on T*V, and for r = 1, Ψ = 0, so in both cases the functions (p_i, p_j) Poisson-commute with ⟨Ψ, Ψ⟩ (the sizes where the remark after Theorem ET fails)."""
     checks = {"P^T P + Psi^2/4": s.P.T @ s.P + s.Psi @ s.Psi / 4} if s.r == s.n else {"Psi (r = 1)": s.Psi}
     checks["{tr(G P^T P), <Psi, Psi>}"] = bracket_gram_psi(s)
     return checks

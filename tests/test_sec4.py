@@ -91,7 +91,7 @@ def manakov_integral_of_the_wrong_pencil(s):
 def dual_lax_corrected_but_swapped(s):
     """Corrupted correction of (MAN-LA): [𝓐*, 𝓛*] with (A + λI)."""
     flow = s.dirac_flow(sec4.H_manakov_square)
-    M = sec4.A_man_dual_with(s, s.A + s.lam * s.In)
+    M = sec4.A_man_dual_at(s, s.X, s.P, s.A + s.lam * s.In)
     return {"MAN-LA": s.d(sec4.L_man_dual, flow) - comm(M, sec4.L_man_dual(s))}
 
 
@@ -115,9 +115,7 @@ def gram_is_plus_psi_squared(s):
 def reflections_break_the_resolvent(s):
     """Corrupted: 𝓛* at (S_1 X, P) (only X reflected) is not 𝓛*."""
     S = sec4.reflection(s, 0)
-    L, _ = sec4.dual_pair_at(s, s.X, s.P)
-    L1, _ = sec4.dual_pair_at(s, S @ s.X, s.P)
-    return {"S_1: L*": L1 - L}
+    return {"S_1: L*": sec4.L_man_dual_at(s, S @ s.X, s.P) - sec4.L_man_dual(s)}
 
 
 CORRUPTIONS = [
