@@ -37,6 +37,12 @@ class Rank:
     generic: bool = True
     meaning: str = ""
 
+    def __post_init__(self) -> None:
+        if not isinstance(self.matrix, Mat):
+            raise TypeError("Rank: the matrix must be a matrix of the scene")
+        if type(self.expected) is not int or type(self.generic) is not bool:
+            raise TypeError("Rank: the expected rank is an int and generic a bool")
+
 
 @dataclass(frozen=True)
 class Count:
@@ -45,6 +51,11 @@ class Count:
     value: int
     expected: int
     meaning: str = ""
+
+    def __post_init__(self) -> None:
+        if type(self.value) is not int or type(self.expected) is not int:
+            raise TypeError("Count: the value and the expected count are ints (an object that says it "
+                            "equals anything is refused)")
 
 
 Checks = Mapping[str, Any]

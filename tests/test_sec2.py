@@ -220,7 +220,15 @@ def test_section_2_holds_at_small_sizes(catalog, n, r):
         if not c.sizes.admits(n, r):
             continue
         assert run_exact(c, n, r, SEED).verdict == "proved", c.id
-        assert run_points(c, n, r, "modular", SEED).verdict == "checked", c.id
+        sampled = run_points(c, n, r, "modular", SEED)
+        if c.id in EVERY_POINT_RANKS:   # random points establish the generic rank only
+            assert sampled.verdict == "undecided" and "every point" in sampled.message, c.id
+        else:
+            assert sampled.verdict == "checked", c.id
+
+
+#: claims that assert a rank at every point of T*V (decided by the exact method only)
+EVERY_POINT_RANKS = ("constraints-independent", "dirac-bracket-multipliers")
 
 
 def test_regularity_remark_fails_as_printed_for_n_equal_2r_plus_2(catalog):
