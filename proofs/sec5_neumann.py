@@ -143,6 +143,7 @@ def neumann_lagrange_multipliers(s):
         "-dH/dX": -HX - (-(A @ X) + c * (P @ X.T @ P)),
         "Pi": mult["Pi"],
         "Lambda": mult["Lambda"] - (X.T @ A @ X - P.T @ P),
+        "dX/dt": mult.Xdot - flow_No(s, s.kappa)["X"],
         "dP/dt": mult.Pdot - flow_No(s, s.kappa)["P"],
     }
 
@@ -202,7 +203,7 @@ def spectral_invariants_are_commuting_integrals(s):
         checks[f"d tr L(lambda)^{k}/dt"] = s.d(lambda t, k=k: power_trace(t, L_neum_at(t, t.lam), k), flow)
     for k in POWERS:
         for m in POWERS:
-            if m < k:
+            if m < k:   # the pairs m < k are these with λ and μ exchanged
                 continue
             checks[f"{{tr L(lambda)^{k}, tr L(mu)^{m}}}"] = s.bracket(
                 lambda t, k=k: power_trace(t, L_neum_at(t, t.lam), k),
