@@ -297,21 +297,29 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
             field = SymbolicField()
             scene = Scene(n, r, field, chart="equivariant", realization=claim.realization)
             charts: list[tuple[Scene, str]] = []
+            missing = False   # the equivariant chart cannot provide an object (a_i, a second point)
             try:
                 checks = call_claim(func, scene)
                 coords = list(scene.tracker.used)
             except CoordinateAccess:
                 coords = list(scene.tracker.used) or ["coordinates"]
-            if not coords or claim.equivariance:
+                missing = True
+            # a stated reason is relied on only for the reviewed catalog: a user's claims file
+            # cannot buy the reduction with a sentence
+            reason = claim.equivariance if claim.reviewed else ""
+            if not missing and (not coords or reason):
                 why = (COVARIANT_BY_CONSTRUCTION if not coords else
-                       f"(the claim reads {', '.join(coords)}) {claim.equivariance}")
+                       f"(the claim reads {', '.join(coords)}) {reason}")
                 charts.append((scene, EQUIVARIANT_REDUCTION.format(why=why)))
                 evaluations = [_evaluate(checks, field, lambda R: _exact_rank(R, field))]
             else:
                 if n > EXACT_CAYLEY_MAX_N:
                     res.verdict = "inconclusive"
+                    unrelied = (" (a stated reason is relied on only for the reviewed catalog)"
+                                if claim.equivariance and not claim.reviewed else "")
                     res.message = (f"the claim reads {', '.join(coords)}, so the equivariance reduction does not "
-                                   f"apply, and the symbolic Cayley chart is limited to n <= {EXACT_CAYLEY_MAX_N}")
+                                   f"apply{unrelied}, and the symbolic Cayley chart is limited to "
+                                   f"n <= {EXACT_CAYLEY_MAX_N}")
                     res.seconds = time.perf_counter() - t0
                     res.rerun = ""
                     return res

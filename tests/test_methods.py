@@ -66,8 +66,9 @@ def _upper(r):
 
 
 def _claim(func, kind="id", cid="test", equivariance=""):
+    """A test claim; a stated equivariance reason stands for a reviewed catalog claim's."""
     return Claim(id=cid, paper=("prep",), kind=kind, section="t", func=func, sizes=admissible(4),
-                 equivariance=equivariance)
+                 equivariance=equivariance, reviewed=bool(equivariance))
 
 
 GOOD = [projector_evolves, resolvent_identity]

@@ -304,3 +304,34 @@ def test_parameter_names_are_distinct_at_every_size():
     s.P
     assert len(s.params) == len(set(s.params))
     assert param_name("Z", 0, 10) != param_name("Z", 10, 0)
+
+
+# -- a stated equivariance reason is relied on only for the reviewed catalog -----------------
+
+def x_is_the_base_point_with_a_reason(s):
+    """False: X_11 = 1, with a (false) reason why the reduction is valid."""
+    return {"X_11": s.X[0, 0] - s.q(1)}
+
+
+def test_a_users_stated_reason_does_not_buy_the_reduction():
+    c = Claim(id="trick", paper=("cond_XP",), kind="id", section="t", func=x_is_the_base_point_with_a_reason,
+              sizes=admissible(4), equivariance="trust me: X_11 is an invariant")
+    assert not c.reviewed
+    for n, r in [(2, 1), (3, 2), (4, 2)]:
+        res = run_one(c, Size(n, r), "exact", 0)
+        assert res.verdict in ("fails", "inconclusive"), (n, r, res.verdict)
+    assert "reviewed catalog" in run_one(c, Size(4, 2), "exact", 0).message
+
+
+def eigenvalues_with_a_reason(s):
+    """True: tr A = a_1 + ... + a_n, reading the eigenvalues, with a stated reason."""
+    acc = s.q(0)
+    for x in s.a:
+        acc = acc + x
+    return {"tr A": s.tr(s.A) - acc}
+
+
+def test_objects_the_equivariant_chart_lacks_send_the_claim_to_the_cayley_chart():
+    c = Claim(id="eig", paper=("cond_XP",), kind="id", section="t", func=eigenvalues_with_a_reason,
+              sizes=admissible(4), equivariance="the trace is invariant", reviewed=True)
+    assert run_one(c, Size(3, 2), "exact", 0).verdict == "proved"
