@@ -142,6 +142,15 @@ def _library_types() -> frozenset:
     return frozenset(out)
 
 
+def is_scene_number(x: Any) -> bool:
+    """Whether x is a number of one of the engine's number systems (exact type; a Python int or
+    a claim's own object is not)."""
+    t = type(x)
+    if t is Dual:
+        return is_scene_number(x.a) and (is_scene_number(x.b) or type(x.b) is int and x.b == 0)
+    return t in _ENGINE_TYPES or t in _library_types()
+
+
 def check_element(field: Field, x: Any) -> Any:
     """x as an entry of a matrix or a residual over ``field``: integers and fractions become
     constants of the field; anything else must be a number of the engine's or its libraries'

@@ -29,7 +29,7 @@ from .claims import Claim, Count, Rank
 from .fields import (PRIME_LOW, PRIMES_IN_RANGE_LOWER, ConstantDegenerate, DegenerateError, Deg, DegreeField,
                      ErrNum, Field, FloatField, ModularField, RationalField, SymbolicBudget,
                      SymbolicField, random_prime)
-from .matrix import Mat
+from .matrix import Mat, is_scene_number
 from .results import CheckOutcome, Result
 from .scene import CoordinateAccess, Scene, SizeError
 
@@ -111,7 +111,7 @@ def _flatten(value: Any, prefix: str) -> list[tuple[str, Any]]:
         for k, v in enumerate(value):
             out.extend(_flatten(v, f"{prefix}#{k + 1}"))
         return out
-    if isinstance(value, (str, bytes, float, complex, bool)) or value is None:
+    if not is_scene_number(value):
         raise TypeError(f"check {prefix or 'value'}: a residual must be a matrix or a scalar of the scene "
                         f"(use s.q(num, den) for constants), not {type(value).__name__}")
     return [(prefix or "value", value)]

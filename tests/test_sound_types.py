@@ -335,3 +335,37 @@ def test_objects_the_equivariant_chart_lacks_send_the_claim_to_the_cayley_chart(
     c = Claim(id="eig", paper=("cond_XP",), kind="id", section="t", func=eigenvalues_with_a_reason,
               sizes=admissible(4), equivariance="the trace is invariant", reviewed=True)
     assert run_one(c, Size(3, 2), "exact", 0).verdict == "proved"
+
+
+# -- numbers of the scene only -----------------------------------------------------------------
+
+class Zero:
+    """A claim's own object that says it equals everything."""
+
+    def __eq__(self, other):
+        return True
+
+    __hash__ = object.__hash__
+
+
+def residual_is_an_object_that_equals_zero(s):
+    """False: X = 0, hidden in an object whose == always says yes."""
+    return {"X": Zero(), "X entries": s.mat([[Zero()]], ("r", "r"))}
+
+
+def residual_is_a_python_zero(s):
+    """Vacuous: a literal 0 says nothing about the scene."""
+    return {"nothing": 0}
+
+
+def count_is_an_object_that_equals_anything(s):
+    """False: a count hidden in an object whose == always says yes."""
+    from stiefelsym import Count
+    return {"count": Count(Zero(), 3)}
+
+
+@pytest.mark.parametrize("func", [residual_is_an_object_that_equals_zero, residual_is_a_python_zero,
+                                  count_is_an_object_that_equals_anything], ids=lambda f: f.__name__)
+def test_residuals_are_numbers_of_the_scene(func):
+    for key, res in _verdicts(func, [(3, 2)]).items():
+        assert res.verdict in ("error", "undecided"), (key, res.verdict)
