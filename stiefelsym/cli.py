@@ -648,6 +648,13 @@ def _verify(out: Any, ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tu
         say(summary, nl=False)
         if any(r.false_pass_bound is not None for r in results):
             say(P_LEGEND)
+        if hard:
+            untouched = sorted({r.claim for r in results if "changed no parameter" in (r.message or "")})
+            if untouched:
+                click.echo(f"note: the hard case {hard} changed no parameter of {len(untouched)} "
+                           f"claim{'s' if len(untouched) > 1 else ''} ({', '.join(untouched[:6])}"
+                           f"{', ...' if len(untouched) > 6 else ''}): there it is an ordinary random point",
+                           err=True)
         if target is not None:
             try:
                 paths = _write_reports(target, results, meta)

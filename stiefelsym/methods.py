@@ -163,6 +163,8 @@ def _evaluate(checks: dict[str, Any], field: Field, rank_fn: Callable[[Rank], tu
             if status not in RANK_STATUSES:
                 raise ValueError(f"unknown rank status {status!r}")
             ok = status in ("ok", "every-point")
+            if value.meaning:
+                detail = f"{value.meaning}: {detail}"
             outcomes.append(CheckOutcome(name, "rank" if ok else "rank-mismatch", detail))
             if not ok:
                 rank_problems.append(f"{name}: {detail}")
