@@ -112,6 +112,11 @@ class Field:
         """Whether x is exactly zero (an elimination step with it may be skipped)."""
         return self.is_zero(x)
 
+    def absorb(self, a: Any, g: Any, b: Any) -> Any:
+        """a - g b where g is zero up to its error bound: an approximate field keeps a and widens
+        its bound by |g b| instead (no cancellation noise, no growth of the scale)."""
+        return self.normalize(a - g * b)
+
     def pivot_cost(self, x: Any) -> float:
         """Smaller is a better pivot; inf means the entry is zero."""
         return 0.0 if not self.is_zero(x) else math.inf
@@ -142,6 +147,10 @@ class Field:
                 if self.is_exact_zero(f):
                     continue
                 f = self.normalize(f / piv)
+                if not self.exact and self.is_zero(f):      # zero only up to its error bound
+                    rows[i] = [self.absorb(a, f, b) if j >= col else a
+                               for j, (a, b) in enumerate(zip(rows[i], rows[col]))]
+                    continue
                 rows[i] = [self.normalize(a - f * b) if j >= col else a
                            for j, (a, b) in enumerate(zip(rows[i], rows[col]))]
             rows[col] = [self.normalize(a / piv) if j >= col else a for j, a in enumerate(rows[col])]
@@ -167,6 +176,9 @@ class Field:
                 if self.is_exact_zero(f):
                     continue
                 f = self.normalize(f / piv)
+                if not self.exact and self.is_zero(f):
+                    rows[i] = [self.absorb(a, f, b) for a, b in zip(rows[i], rows[rank])]
+                    continue
                 rows[i] = [self.normalize(a - f * b) for a, b in zip(rows[i], rows[rank])]
             rank += 1
         return rank
@@ -491,6 +503,11 @@ class FloatField(Field):
     def is_exact_zero(self, x):
         return x.v == 0 and x.e == 0 if isinstance(x, ErrNum) else x == 0
 
+    def absorb(self, a, g, b):
+        """a - g b for g = 0 within its bound: |g b| <= (|g.v| + g.e)(|b.v| + b.e) joins a's error."""
+        a, g, b = (x if isinstance(x, ErrNum) else self.const(x) for x in (a, g, b))
+        return ErrNum(a.v, a.e + (abs(g.v) + g.e) * (abs(b.v) + b.e), a.m, a.u)
+
     def exact_input(self, x):
         return ErrNum(x.v, 0, abs(x.v), self.u) if isinstance(x, ErrNum) else x
 
@@ -805,6 +822,12 @@ class DualField(Field):
     def is_exact_zero(self, x):
         x = self.lift(x)
         return self.base.is_exact_zero(x.a) and self.base.is_exact_zero(x.b)
+
+    def absorb(self, a, g, b):
+        # (a - g b) = (a.a - g.a b.a) + eps (a.b - g.a b.b - g.b b.a), every g part zero within its bound
+        a, g, b = self.lift(a), self.lift(g), self.lift(b)
+        base = self.base
+        return Dual(base.absorb(a.a, g.a, b.a), base.absorb(base.absorb(a.b, g.a, b.b), g.b, b.a))
 
     def normalize(self, x):
         x = self.lift(x)

@@ -302,12 +302,23 @@ def test_non_finite_float64_poisons_every_number_computed_from_it():
     assert z.v == 0 and z.e > 0 and not z.poisoned
 
 
-def test_float_solve_never_skips_an_entry_that_is_only_close_to_zero():
+def test_float_solve_accounts_for_entries_that_are_zero_only_within_their_bound():
+    """(1 + 10^-20) - 1 is 0 in float64 with a bound of ~1e-16: an elimination that skipped it would
+    claim x_2 = 0 exactly; the true x_2 is -10^-20, and the bound must contain it."""
     F = FloatField()
-    eps = F.const(Fraction(1, 10**20)) * F.const(1)          # 1e-20, with an error bound above it
-    x = F.solve([[F.const(1), F.const(0)], [eps, F.const(1)]], [[F.const(1)], [F.const(0)]])
-    exact = -Fraction(1, 10**20)
-    assert abs(Fraction(x[1][0].v) - exact) <= Fraction(x[1][0].e)
+    one = F.const(1)
+    f = (one + F.const(Fraction(1, 10**20))) - one
+    assert f.v == 0 and f.e > 0
+    for M, B, i in (([[one, F.const(0)], [f, one]], [[one], [F.const(0)]], 1),
+                    ([[F.const(2), F.const(1)], [f, one]], [[one], [F.const(3)]], 1)):
+        x = F.solve(M, B)
+        Mq = [[Fraction(1), Fraction(0)], [Fraction(1, 10**20), Fraction(1)]] if M[0][0].v == 1 else \
+             [[Fraction(2), Fraction(1)], [Fraction(1, 10**20), Fraction(1)]]
+        Bq = [Fraction(1), Fraction(0)] if M[0][0].v == 1 else [Fraction(1), Fraction(3)]
+        det = Mq[0][0] * Mq[1][1] - Mq[0][1] * Mq[1][0]
+        exact = [(Bq[0] * Mq[1][1] - Mq[0][1] * Bq[1]) / det, (Mq[0][0] * Bq[1] - Mq[1][0] * Bq[0]) / det]
+        for k in range(2):
+            assert abs(Fraction(x[k][0].v) - exact[k]) <= Fraction(x[k][0].e)
 
 
 def lax_false(s):
