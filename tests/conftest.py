@@ -4,3 +4,24 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
+
+
+import os  # noqa: E402
+
+import pytest  # noqa: E402
+
+
+@pytest.fixture
+def run(tmp_path):
+    """Invoke the CLI (click's CliRunner) in the test's own empty working directory."""
+    from click.testing import CliRunner
+    from stiefelsym import cli
+
+    def invoke(*args: str):
+        old = os.getcwd()
+        os.chdir(tmp_path)
+        try:
+            return CliRunner().invoke(cli.main, list(args), prog_name="stiefelsym")
+        finally:
+            os.chdir(old)
+    return invoke

@@ -100,19 +100,6 @@ def fake(monkeypatch, catalog):
     return runner
 
 
-@pytest.fixture
-def run(tmp_path):
-    """Invoke the CLI in an empty working directory; stdout and stderr apart."""
-    def invoke(*args: str):
-        old = os.getcwd()
-        os.chdir(tmp_path)
-        try:
-            return CliRunner().invoke(cli.main, list(args), prog_name="stiefelsym")
-        finally:
-            os.chdir(old)
-    return invoke
-
-
 def _one_line_error(result) -> str:
     assert result.exit_code == 2, (result.exit_code, result.output)
     assert "Traceback" not in result.output

@@ -301,18 +301,6 @@ def test_float_on_a_pure_rank_claim_is_undecided():
 
 # --------------------------------------------------------------------------- the command line
 
-@pytest.fixture
-def run(tmp_path):
-    def invoke(*args: str):
-        old = os.getcwd()
-        os.chdir(tmp_path)
-        try:
-            return CliRunner().invoke(cli.main, list(args), prog_name="stiefelsym")
-        finally:
-            os.chdir(old)
-    return invoke
-
-
 @needs_fork
 def test_tricks_each_get_their_verdict_and_the_run_goes_on(run, tricks):
     result = run("verify", "--claims", str(tricks), "--method", "modular", "--timeout", "2",

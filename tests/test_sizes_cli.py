@@ -36,17 +36,10 @@ FILE = textwrap.dedent('''
 
 
 @pytest.fixture
-def run(tmp_path):
+def run(run, tmp_path):
+    """The CLI in a directory holding the claims file mine.py."""
     (tmp_path / "mine.py").write_text(FILE)
-
-    def invoke(*args: str):
-        old = os.getcwd()
-        os.chdir(tmp_path)
-        try:
-            return CliRunner().invoke(cli.main, list(args), prog_name="stiefelsym")
-        finally:
-            os.chdir(old)
-    return invoke
+    return run
 
 
 def _error(result) -> str:
