@@ -147,8 +147,11 @@ class Correction:
     changes: int = 1
 
 
-@dataclass
+@dataclass(frozen=True)
 class Claim:
+    """A registered claim; frozen, so that nothing (a claims file included) rewrites what was
+    registered: its statement, its expected verdict, its erratum, its review."""
+
     id: str
     paper: tuple[str, ...]
     kind: str
@@ -252,8 +255,8 @@ def claim(id: str, *, paper: str | Iterable[str], kind: str, section: str | None
                   sizes=sizes if sizes is not None else admissible(), statement=statement.strip(),
                   title=(inspect.getdoc(fn) or "").strip(), realization=realization,
                   expect=expect, exact_max_n=exact_max_n, source=fn.__module__,
-                  fails_at=fails_at, erratum=" ".join(erratum.split()), equivariance=" ".join(equivariance.split()))
-        c.reviewed = _ACTIVE[-1].reviewed
+                  fails_at=fails_at, erratum=" ".join(erratum.split()), equivariance=" ".join(equivariance.split()),
+                  reviewed=_ACTIVE[-1].reviewed)
         _ACTIVE[-1].add(c)
         fn.claim = c
         return fn

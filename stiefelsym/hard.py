@@ -21,13 +21,13 @@ class HardCase:
 def _near_equal_a(s, name, v):
     if name.startswith("a_") and name != "a_1":
         i = int(name[2:])
-        return s.param("a_1") + s.field.const(Fraction(i, 10**9)) * (1 + v * v)
+        return s._param("a_1") + s.field.const(Fraction(i, 10**9)) * (1 + v * v)
     return v
 
 
 def _near_pole(s, name, v):
     if name == "lambda":
-        return s.param("a_1") + s.field.const(Fraction(1, 10**12))
+        return s._param("a_1") + s.field.const(Fraction(1, 10**12))
     return v
 
 

@@ -19,6 +19,7 @@ Charts (how a point of T*V_{n,r} is produced from free parameters):
 from __future__ import annotations
 
 import random
+import re
 from dataclasses import dataclass, field as dc_field
 from fractions import Fraction
 from typing import Any, Callable, Mapping
@@ -26,7 +27,7 @@ from typing import Any, Callable, Mapping
 import numpy as np
 
 from .fields import Dual, DualField, Field, DegenerateError
-from .matrix import CoordinateTracker, Mat, block, scalar_matrix, unify
+from .matrix import CoordinateTracker, Mat, block, definite, scalar_matrix, unify
 
 Scalar = Any
 Function = Callable[["Scene"], Any]
@@ -35,6 +36,17 @@ Function = Callable[["Scene"], Any]
 #: prefixes of the claim's own parameters: they never coincide with a chart parameter
 USER_SCALAR = "scalar:"
 USER_GENERIC = "generic:"
+USER_PARAMS = "params:"
+USER_OPERATOR = "operator:"
+NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
+
+
+def user_name(name: Any, what: str) -> str:
+    """A name for a claim's own parameters: letters, digits and underscores (so that no name,
+    however chosen, spells another object's parameters)."""
+    if not isinstance(name, str) or not NAME.fullmatch(name):
+        raise ValueError(f"{what}({name!r}): a name is a letter followed by letters, digits or underscores")
+    return name
 
 
 def param_name(name: str, i: int, j: int) -> str:
@@ -92,7 +104,7 @@ REALIZATIONS = {
 class PaperObjects:
     """What every backend derives the same way from its primitives X, P and its parameters."""
 
-    def param(self, name: str) -> Scalar:
+    def _param(self, name: str) -> Scalar:
         raise NotImplementedError
 
     def _cached(self, key: str, build: Callable[[], Any]) -> Any:
@@ -114,22 +126,22 @@ class PaperObjects:
 
     def scalar(self, name: str) -> Scalar:
         """A fresh free scalar parameter of the claim's own (never one of the chart's, whatever its name)."""
-        return self.param(USER_SCALAR + str(name))
+        return self._param(USER_SCALAR + user_name(name, "scalar"))
 
     @property
     def lam(self) -> Scalar:
         """The spectral parameter lambda."""
-        return self.param("lambda")
+        return self._param("lambda")
 
     @property
     def kappa(self) -> Scalar:
         """The parameter kappa of the Jensen metrics (EM)."""
-        return self.param("kappa")
+        return self._param("kappa")
 
     @property
     def eps(self) -> Scalar:
         """The magnetic parameter epsilon."""
-        return self.param("epsilon")
+        return self._param("epsilon")
 
 
 class Scene(PaperObjects):
@@ -169,7 +181,7 @@ class Scene(PaperObjects):
 
     # ------------------------------------------------------------------
     # parameters and primitives
-    def param(self, name: str) -> Scalar:
+    def _param(self, name: str) -> Scalar:
         """A free parameter of the chart (symbol, random number, degree marker)."""
         if name not in self.params:
             value = self.field.param(name, self.rng)
@@ -218,7 +230,7 @@ class Scene(PaperObjects):
         M = self.zeros(m, m, (tag, tag))
         for i in range(m):
             for j in range(i + 1, m):
-                x = self.param(param_name(name, i, j))
+                x = self._param(param_name(name, i, j))
                 M._a[i, j], M._a[j, i] = x, -x
         return M
 
@@ -226,19 +238,19 @@ class Scene(PaperObjects):
         M = self.zeros(m, m, (tag, tag))
         for i in range(m):
             for j in range(i, m):
-                x = self.param(param_name(name, i, j))
+                x = self._param(param_name(name, i, j))
                 M._a[i, j] = M._a[j, i] = x
         return M
 
     def general_params(self, name: str, m: int, k: int, tags) -> Mat:
         """A generic m x k matrix of fresh parameters of the claim's own (index spaces ``tags``)."""
-        return self._general_params(USER_GENERIC + str(name), m, k, tags)
+        return self._general_params(f"{USER_PARAMS}{user_name(name, 'general_params')}[{m}x{k}]", m, k, tags)
 
     def _general_params(self, name: str, m: int, k: int, tags) -> Mat:
         M = self.zeros(m, k, tags)
         for i in range(m):
             for j in range(k):
-                M._a[i, j] = self.param(param_name(name, i, j))
+                M._a[i, j] = self._param(param_name(name, i, j))
         return M
 
     def _stiefel_point(self, prefix: str) -> tuple[Mat, Mat]:
@@ -252,7 +264,7 @@ class Scene(PaperObjects):
             P._a[:r, :] = W._a
             for i in range(r, n):
                 for j in range(r):
-                    P._a[i, j] = self.param(param_name(f"{prefix}Z", i, j))
+                    P._a[i, j] = self._param(param_name(f"{prefix}Z", i, j))
             return X, P
         S = self._skew_params(f"{prefix}S", n, "n")
         In = self.identity(n, "n")
@@ -305,7 +317,11 @@ class Scene(PaperObjects):
         return block([[U, -V], [V, U]])
 
     def conj(self, M: Mat) -> Mat:
-        """The complex conjugate of a realified matrix."""
+        """The complex conjugate of a realified matrix (spaces V+V for V = R^n or R^r on each side)."""
+        for tag in M.tags:
+            atoms = definite(tag)
+            if atoms is None or len(atoms) != 2 or atoms[0] != atoms[1]:
+                raise TypeError(f"conj acts on realified matrices, indexed by n+n or r+r, not by {tag!r}")
         m, k = M._a.shape[0] // 2, M._a.shape[1] // 2
         a = M._a.copy()
         a[:m, k:] = -a[:m, k:]
@@ -340,7 +356,7 @@ class Scene(PaperObjects):
         self.tracker.touch("eigenvalues a_i of A")
         if self.chart == "equivariant":
             raise CoordinateAccess("eigenvalues a_i")
-        return self._cached("a", lambda: [self.param(f"a_{i + 1}") for i in range(self.n)])
+        return self._cached("a", lambda: [self._param(f"a_{i + 1}") for i in range(self.n)])
 
     @property
     def A(self) -> Mat:
@@ -349,7 +365,7 @@ class Scene(PaperObjects):
             if self.chart == "equivariant":
                 return self._sym_params("A", self.n, "n")
             M = self.zeros(self.n, self.n, ("n", "n"))
-            for i, x in enumerate(self._cached("a", lambda: [self.param(f"a_{i + 1}") for i in range(self.n)])):
+            for i, x in enumerate(self._cached("a", lambda: [self._param(f"a_{i + 1}") for i in range(self.n)])):
                 M._a[i, i] = x
             return M
         return self._cached("A", build)
@@ -390,13 +406,14 @@ class Scene(PaperObjects):
         size = {"n": self.n, "r": self.r}
         if m not in size or k not in size:
             raise ValueError(f"generic({name!r}, {m!r}, {k!r}): the index spaces are 'n' or 'r'")
-        return self._cached(f"gen:{name}", lambda: self.general_params(name, size[m], size[k], (m, k)))
+        key = f"{USER_GENERIC}{user_name(name, 'generic')}[{m}x{k}]"
+        return self._cached(key, lambda: self._general_params(key, size[m], size[k], (m, k)))
 
     def sym_operator(self, name: str = "AA") -> Callable[[Mat], Mat]:
         """A generic symmetric linear operator on so(n) (w.r.t. <,>), covariant parameter."""
         def build():
             basis = so_basis(self.n)
-            Mop = self._sym_params(USER_GENERIC + "operator:" + str(name), len(basis), "so")
+            Mop = self._sym_params(USER_OPERATOR + user_name(name, "sym_operator"), len(basis), "so")
             return basis, Mop._a
         basis, coeffs = self._cached(f"op:{name}", build)
 
@@ -474,23 +491,28 @@ class Scene(PaperObjects):
         self.tracker.touch("a Jacobian in the coordinates of X, P")
         return self._jacobian(F, symmetric)
 
-    def _jacobian(self, F: Function, symmetric: bool | None = None) -> list[list[Scalar]]:
+    def _jacobian(self, F: Function, symmetric: bool | None = None, scalar: bool = False) -> list[list[Scalar]]:
         """Rows: scalar components of F (a scalar or list of Mats); columns: the 2nr coordinates.
 
         ``symmetric``: F's matrices are symmetric and only their upper triangles count (the
-        default for the scene's own constraint functions, whose scalar constraints they are)."""
+        default for the scene's own constraint functions, whose scalar constraints they are).
+        ``scalar``: F must be a scalar function (a Hamiltonian), never a matrix read at one entry."""
         if symmetric is None:
             symmetric = F is self.constraints.build
         cols = []
         for t in self._unit_tangents():
-            values = _flatten_value(F(self.tangent(t)), symmetric)
+            value = F(self.tangent(t))
+            if scalar and isinstance(value, (Mat, list, tuple, dict)):
+                raise TypeError("a Hamiltonian (a function whose gradient, flow or bracket is taken) must be "
+                                f"a scalar function of the scene, not a {type(value).__name__}")
+            values = _flatten_value(value, symmetric)
             cols.append([x.b if isinstance(x, Dual) else self.const(0) for x in values])
         return [list(row) for row in zip(*cols)]
 
     def gradient(self, H: Function) -> tuple[Mat, Mat]:
         """(dH/dX, dH/dP) for a scalar function H of the scene."""
         def build():
-            row = self._jacobian(H)[0]
+            row = self._jacobian(H, scalar=True)[0]
             n, r = self.n, self.r
             HX = self.zeros(n, r, ("n", "r"))
             HP = self.zeros(n, r, ("n", "r"))
@@ -658,8 +680,8 @@ class TangentScene(Scene):
             return M
         return Dual(M, self.base.field.const(0))
 
-    def param(self, name: str) -> Scalar:
-        return self._lift(self.base.param(name))
+    def _param(self, name: str) -> Scalar:
+        return self._lift(self.base._param(name))
 
     def _point(self):
         def build():
@@ -708,7 +730,7 @@ class TangentScene(Scene):
         return self.base.sym_operator(name)
 
     def generic(self, name, m, k):
-        return self._cached(f"gen:{name}", lambda: self._lift(self.base.generic(name, m, k)))
+        return self._cached(f"gen:{name}[{m}x{k}]", lambda: self._lift(self.base.generic(name, m, k)))
 
     def _skew_params(self, name, m, tag):
         return self._lift(self.base._skew_params(name, m, tag))

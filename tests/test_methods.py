@@ -151,13 +151,13 @@ def test_rerun_command_after_failure():
 def cancellation(s):
     """1/((a_1 + q) - a_1) = 1/q for q = 10^-12: float64 loses 4 digits to rounding of a_1 + q."""
     q = s.q(1, 10**12)
-    a1 = s.param("a_1")
+    a1 = s._param("a_1")
     return {"cancellation": 1 / ((a1 + q) - a1) - 1 / q}
 
 
 def cancellation_wrong(s):
     q = s.q(1, 10**12)
-    a1 = s.param("a_1")
+    a1 = s._param("a_1")
     return {"cancellation": 1 / ((a1 + q) - a1) - 1 / (q * (1 + s.q(1, 10**6)))}
 
 
@@ -272,7 +272,7 @@ def test_both_components_are_sampled_when_r_equals_n():
 
 
 def always_at_a_pole(s):
-    u = s.param("u")
+    u = s._param("u")
     return {"pole": 1 / (u - u) * s.X}
 
 

@@ -2,6 +2,8 @@
 the records, the command line, and (slow) the whole catalog."""
 from __future__ import annotations
 
+import dataclasses
+
 import json
 import linecache
 import re
@@ -161,11 +163,11 @@ def test_a_mutant_is_refuted_by_the_engine():
 
 def test_mutation_sizes_prefer_a_generic_size_and_distinct_r():
     c = toy_claim()
-    c.sizes = admissible(n_max=5)
+    c = dataclasses.replace(c, sizes=admissible(n_max=5))
     sizes = mutation_sizes(c)
     assert sizes[0] == Size(4, 2)
     assert len(sizes) == 3 and len({s.r for s in sizes}) == 3 and all(s.n <= 4 for s in sizes)
-    c.fails_at = lambda n, r: (n, r) == (4, 2)
+    c = dataclasses.replace(c, fails_at=lambda n, r: (n, r) == (4, 2), erratum="a test erratum")
     assert Size(4, 2) not in mutation_sizes(c)
 
 

@@ -224,13 +224,13 @@ def identically_zero(s):
 
 def rounding_sized_zero(s):
     """Identically zero, but only after a cancellation that float64 cannot see: (a + q) - a - q."""
-    a, q = s.param("a_1"), s.q(1, 10**20)
+    a, q = s._param("a_1"), s.q(1, 10**20)
     return {"cancel": (a + q) - a - q}
 
 
 def rounding_sized_nonzero(s):
     """Not zero: (a + q) - a = q = 10^-20, which float64 rounds away."""
-    a, q = s.param("a_1"), s.q(1, 10**20)
+    a, q = s._param("a_1"), s.q(1, 10**20)
     return {"tiny": (a + q) - a}
 
 
@@ -264,7 +264,7 @@ def test_float_samples_both_components_when_r_equals_n():
 def overflowing_scale_hides_a_false_entry(s):
     """False.  "scale": 0 with a term scale beyond float64 (it overflowed to inf and switched the
     resolution test off for every entry); "false": a cancellation float64 cannot resolve, off by 10^-6."""
-    a = s.param("a_1")
+    a = s._param("a_1")
     w = (a + s.q(1000)) - s.q(1000)
     for _ in range(8):
         w = w * w
@@ -273,7 +273,7 @@ def overflowing_scale_hides_a_false_entry(s):
 
 
 def overflowing_scale_true(s):
-    a = s.param("a_1")
+    a = s._param("a_1")
     w = (a + s.q(1000)) - s.q(1000)
     for _ in range(8):
         w = w * w

@@ -43,6 +43,10 @@ COND_XX = "X^T X = I_r (cond_XP)"
 COND_XP = "X^T P + P^T X = 0 (cond_XP)"
 
 
+#: the letters a flow may move (the points of T*V); A, A^-1 and the resolvents are constants
+MOVABLE = ("X", "P", "Y", "Q")
+
+
 class FreeSize:
     """A size k·n or k·r of the dimension-free scene.
 
@@ -394,7 +398,7 @@ class FreeScene(PaperObjects):
         return self._skew("theta", "r", r"\theta")
 
     # -- scalars --------------------------------------------------------------
-    def param(self, name: str) -> Any:
+    def _param(self, name: str) -> Any:
         if name not in self.params:
             # the paper's scalars are the symbols lambda, kappa, epsilon; a claim's own scalar is a
             # dummy symbol, never equal to another symbol, whatever its name
@@ -442,7 +446,26 @@ class FreeScene(PaperObjects):
         return Mat._rows(rows, self.field, (self._tag(t1, k1, tags[0]), self._tag(t2, k2, tags[1])), self.tracker)
 
     def mat(self, rows, tags=("?", "?")) -> Mat:
-        return Mat._rows(rows, self.field, tags, self.tracker)
+        """A block matrix from rows of blocks (word polynomials of the scene); its spaces are the
+        sums of the blocks' types.  Scalars as entries need coordinates."""
+        rows = [list(row) for row in rows]
+        if not rows or not rows[0] or any(len(row) != len(rows[0]) for row in rows):
+            raise ValueError("a matrix needs a rectangular, non-empty grid of blocks")
+        for row in rows:
+            for x in row:
+                if type(x) is not NCPoly:
+                    raise NeedsCoordinates("a matrix built from scalar entries")
+        row_types = [row[0].row for row in rows]
+        col_types = [x.col for x in rows[0]]
+        for row, t in zip(rows, row_types):
+            for x, c in zip(row, col_types):
+                if (x.row, x.col) != (t, c):
+                    raise TypeError(f"a block of type {x.row}x{x.col} where {t}x{c} is needed")
+        spaces = ("+".join(row_types), "+".join(col_types))
+        for given, built in zip(tags, spaces):
+            if given not in ("?", None) and definite(given) != definite(built):
+                raise TypeError(f"the blocks span {built}, not {given!r}")
+        return Mat._rows(rows, self.field, spaces, self.tracker)
 
     @property
     def In(self) -> Mat:
@@ -532,6 +555,10 @@ class FreeScene(PaperObjects):
                     multipliers={"Pi": self._const_mat(solved[PI]), "Lambda": self._const_mat(solved[LAMBDA])})
 
     def tangent(self, flow: Mapping[str, Mat]) -> "FreeTangentScene":
+        for key in dict(flow):
+            if key not in MOVABLE:
+                raise KeyError(f"a tangent vector moves {', '.join(MOVABLE)}, not {key!r} "
+                               "(A and the resolvents are constant along flows)")
         return FreeTangentScene(self, flow)
 
     def d(self, F: Function | Any, flow: Flow | Mapping[str, Mat]) -> Any:
@@ -552,7 +579,7 @@ class FreeScene(PaperObjects):
     def _tangent_images(self, tangent: Mapping[str, Any]) -> dict[Letter, NCPoly]:
         images = {}
         for key, v in tangent.items():
-            if key not in self._named:
+            if key not in MOVABLE or key not in self._named:
                 raise KeyError(f"the flow moves {key!r}, which is not a letter of this scene")
             images[self._named[key]] = v._a[0, 0] if isinstance(v, Mat) else v
         relations = [(_w(Xt, X), COND_XX), (_w(Xt, P) + _w(Pt, X), COND_XP)]
