@@ -13,12 +13,49 @@ import importlib
 import importlib.util
 import inspect
 import re
+import signal
 import sys
+import threading
+import time
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Callable, Iterable, Mapping
 
 from .matrix import Mat
+
+#: seconds a claim's own metadata code (size conditions, erratum sizes) may take per call,
+#: and a claims file's import
+METADATA_SECONDS = 10.0
+IMPORT_SECONDS = 120.0
+
+
+class ClaimTimeout(ValueError):
+    """A claim's own code (its file's import, a size condition, its erratum sizes) did not finish."""
+
+
+@contextmanager
+def deadline(seconds: float, what: str):
+    """Interrupt Python code that runs past ``seconds`` (main thread; nests with an outer deadline)."""
+    if not hasattr(signal, "SIGALRM") or threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    outer_left, _ = signal.getitimer(signal.ITIMER_REAL)
+    limit = min(seconds, outer_left) if outer_left > 0 else seconds
+
+    def expire(signum, frame):
+        raise ClaimTimeout(f"{what} did not finish within {limit:.0f} s")
+    old = signal.signal(signal.SIGALRM, expire)
+    t0 = time.monotonic()
+    signal.setitimer(signal.ITIMER_REAL, limit)
+    try:
+        yield
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, old)
+        if outer_left > 0:
+            signal.setitimer(signal.ITIMER_REAL, max(outer_left - (time.monotonic() - t0), 1e-3))
+
 
 KINDS = ("id", "lax", "pb", "dim", "not", "geo")
 
@@ -42,6 +79,8 @@ class Rank:
             raise TypeError("Rank: the matrix must be a matrix of the scene")
         if type(self.expected) is not int or type(self.generic) is not bool:
             raise TypeError("Rank: the expected rank is an int and generic a bool")
+        if 0 in self.matrix._a.shape:
+            raise ValueError("Rank: the rank of an empty matrix is a vacuous check")
 
 
 @dataclass(frozen=True)
@@ -90,7 +129,10 @@ class SizeSpec:
             return False
         if self.r_max is not None and r > self.r_max:
             return False
-        return self.where is None or bool(self.where(n, r))
+        if self.where is None:
+            return True
+        with deadline(METADATA_SECONDS, "the claim's size condition (where)"):
+            return bool(self.where(n, r))
 
     def describe(self) -> str:
         """The declared sizes in words, e.g. "2 <= n <= 5, r <= 3 (n >= 2r)"."""
@@ -180,7 +222,10 @@ class Claim:
     def expects_failure(self, n: int | None, r: int | None) -> bool:
         if self.expect == "fails":
             return True
-        return self.fails_at is not None and n is not None and bool(self.fails_at(n, r))
+        if self.fails_at is None or n is None:
+            return False
+        with deadline(METADATA_SECONDS, "the claim's erratum sizes (fails_at)"):
+            return bool(self.fails_at(n, r))
 
     def __post_init__(self) -> None:
         if self.kind not in KINDS:
@@ -312,7 +357,7 @@ def load_claims_file(path: str | Path) -> Registry:
         mod = importlib.util.module_from_spec(spec)
         sys.modules[name] = mod
         try:
-            with stdout_to_stderr():
+            with stdout_to_stderr(), deadline(IMPORT_SECONDS, f"loading {p}"):
                 spec.loader.exec_module(mod)
         except (KeyboardInterrupt, Terminated):
             raise

@@ -24,7 +24,7 @@ from typing import Any, Sequence
 
 import click
 
-from .claims import CatalogError, Claim, Registry, Size, load_catalog, load_claims_file
+from .claims import CatalogError, ClaimTimeout, Claim, Registry, Size, load_catalog, load_claims_file
 from .hard import HARD_CASES
 from .pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT, Terminated, raise_on_sigterm
 from .report import KIND_MEANING, render_junit, render_latex, render_markdown, render_summary
@@ -41,6 +41,25 @@ EXPECT_MEANING = {
     "nonzero": "nonzero (the paper says this does not vanish)",
     "fails": "fails as printed (a known erratum; corrections are registered)",
 }
+
+
+class SeedType(click.ParamType):
+    """A non-negative integer, or "random": a fresh seed from the operating system."""
+
+    name = "seed"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> int:
+        if isinstance(value, int) and value >= 0:
+            return value
+        text = str(value).strip()
+        if text == "random":
+            import secrets
+            seed = secrets.randbits(48)
+            click.echo(f"seed: {seed}", err=True)
+            return seed
+        if text.isdigit():
+            return int(text)
+        self.fail(f"{value!r} is not a non-negative integer or 'random'", param, ctx)
 
 
 class InputError(click.ClickException):
@@ -506,8 +525,10 @@ class _Stdout:
                    "the sizes a named claim is stated for is refused; without named claims, the "
                    "claims that are not stated for it skip it.")
 @click.option("--method", "methods", type=MethodType(), multiple=True, help=METHOD_HELP)
-@click.option("--seed", type=click.IntRange(min=0), default=0, show_default=True, metavar="N",
-              help="Seed of every random choice; the same seed reproduces every verdict.")
+@click.option("--seed", type=SeedType(), default="0", show_default=True, metavar="N|random",
+              help="Seed of every random choice; the same seed reproduces every verdict.  'random' draws "
+                   "a fresh seed (printed in every result): use it for claims you did not write, since a "
+                   "claim that knows the seed could be built to vanish exactly at its random points.")
 @click.option("--claims", "claims_files", metavar="FILE", multiple=True,
               help="A Python file of your own claims (written with @claim); verifies them all, "
                    "or those named.  Repeatable (an id defined in two files is refused).")
@@ -664,7 +685,7 @@ def _verify(out: Any, ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tu
         elif not no_report:
             click.echo("note: partial run, no report written (give --report-dir DIR to write "
                        "one)", err=True)
-    except (SizeError, runner.BudgetError) as exc:
+    except (SizeError, runner.BudgetError, ClaimTimeout) as exc:
         raise InputError(str(exc)) from None
     except (KeyboardInterrupt, Terminated) as exc:
         lead = "\n" if _isatty(sys.stderr) else ""

@@ -19,7 +19,7 @@ from typing import Callable
 
 from .certificate_check import check_certificate
 from .claims import Claim, Count, Rank
-from .methods import _base_result, _entries, _short, call_claim
+from .methods import _base_result, division_probe, _entries, _short, call_claim
 from .results import CheckOutcome, Result
 
 
@@ -84,6 +84,14 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
         res.residual = f"{pos}: nf = {_short(red.normal_form)}"
         return undecided(f"{len(open_entries)} residual entries have a nonzero normal form "
                          f"(e.g. {res.residual}); the fixed-size methods decide")
+    # symbolic coefficients do not raise on a division by an identically zero expression: probe
+    # the same claim code at an exact point of a fixed size first
+    probe_size = next((z for z in claim.sizes if z.n >= 3), None) or list(claim.sizes)[-1]
+    why = division_probe(claim, probe_size.n, probe_size.r, func)
+    if why:
+        res.verdict, res.message = "error", why
+        res.seconds = time.perf_counter() - t0
+        return res
     applied = scene.system.rules_applied()
     names = "; ".join(f"{r} " for r in applied).strip() or "none"
     try:

@@ -356,6 +356,11 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
     res.checks = [o for e in evaluations for o in e.outcomes]
     nonzero = [z for e in evaluations for z in e.nonzero]
     problems = [p for e in evaluations for p in e.rank_problems + e.count_problems]
+    if (claim.expect == "nonzero" and nonzero) or not (nonzero or problems or claim.expect == "nonzero"):
+        why = division_probe(claim, n, r, func, seed)
+        if why:
+            res.verdict, res.message = "error", why
+            return res
     if claim.expect == "nonzero":
         if nonzero:
             res.verdict = "proved"
@@ -379,6 +384,32 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
     res.verdict = "proved"
     res.certificate = "; ".join(o.detail for o in res.checks if o.detail) or "every residual entry expands to 0"
     return res
+
+
+def division_probe(claim: Claim, n: int, r: int, func: Callable | None = None, seed: int = 0) -> str:
+    """"" when the claim evaluates at an exact rational point of T*V without dividing by zero;
+    otherwise the reason.
+
+    Symbolic arithmetic does not raise on a division by an identically zero expression: it makes
+    an infinity that a later division turns into 0.  So every symbolic proof is preceded by this
+    probe; a division by zero at each of three random points means a divisor that vanishes
+    identically (or at a pole the claim put itself on)."""
+    func = func or claim.func
+    last: BaseException | None = None
+    for attempt in range(3):
+        rng = random.Random(f"{seed}|{claim.id}|{n}|{r}|division-probe|{attempt}")
+        scene = Scene(n, r, RationalField(), chart="cayley", rng=rng, component=attempt % 2 if r == n else 0,
+                      realization=claim.realization)
+        try:
+            call_claim(func, scene)
+            return ""
+        except (DegenerateError, ZeroDivisionError) as exc:
+            last = exc
+        except Exception:   # noqa: BLE001 - anything else is the symbolic run's to report
+            return ""
+    return (f"the claim divides by zero at every one of 3 exact random points of T*V(n={n}, r={r}) "
+            f"({type(last).__name__}: {last}): a divisor that vanishes identically, so a symbolic "
+            "'proof' would only have divided by zero")
 
 
 def _short(x: Any, limit: int = 160) -> str:
@@ -657,9 +688,10 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
     established = "every residual vanishes" + (" and the generic ranks are as printed" if any(
         o.status == "rank" for o in res.checks) else "")
     if hard:
-        res.verdict = "checked"
-        res.certificate = (f"{established} exactly at the {points * components} hard points "
-                           f"(no probability bound: the points are not uniform){note}")
+        # a hard point is chosen, not random: vanishing there says nothing of the statement's truth
+        res.verdict = "undecided"
+        res.message = (f"not applicable: {established} exactly at the {points * components} hard points; "
+                       f"they are chosen, not random, so no verdict on the statement follows{note}")
     elif joint > POINTS_TARGET:
         res.verdict = "inconclusive"
         res.message = (f"{established} at {points} points{per}, but the false-pass bound is too weak: "
@@ -844,6 +876,11 @@ def _run_float(claim: Claim, n: int, r: int, seed: int, func: Callable, options:
                     for c, run in zip(comps, runs))
 
     def done(verdict: str) -> Result:
+        if verdict == "numeric" and options and options.get("hard"):
+            # resolved at a chosen (not random) point: a test of the error model, not of the statement
+            verdict = "undecided"
+            res.message = ("not applicable: resolved at the hard point, which is chosen, not random, so no "
+                           "verdict on the statement follows; " + (res.message or res.certificate))
         res.verdict = verdict
         res.seconds = time.perf_counter() - t0
         return res

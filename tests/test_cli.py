@@ -318,8 +318,8 @@ def test_bad_size_is_one_line(fake, run, size):
 
 @pytest.mark.parametrize("args, message", [
     (["--method", "exactly"], "unknown method 'exactly'"),
-    (["--seed", "-1"], "-1 is not in the range"),
-    (["--seed", "x"], "'x' is not a valid integer"),
+    (["--seed", "-1"], "is not a non-negative integer or 'random'"),
+    (["--seed", "x"], "'x' is not a non-negative integer or 'random'"),
     (["--format", "pdf"], "'pdf' is not one of"),
     (["--frobnicate"], "--frobnicate"),
     (["nosuch"], "unknown claim 'nosuch'"),
@@ -437,7 +437,7 @@ def test_subprocess_help_and_version(tmp_path):
     (["verify", "--size", "4,2,1"], "is not a size"),
     (["verify", "--size", "2,3"], "r = 3 > n = 2"),
     (["verify", "--size", "3,0"], "r = 0"),
-    (["verify", "--seed", "-5"], "-5 is not in the range"),
+    (["verify", "--seed", "-5"], "'-5' is not a non-negative integer"),
     (["verify", "--claims", "missing.py"], "claims file not found"),
     (["verify", "--method", "bogus"], "unknown method 'bogus'"),
     (["verify", "no-such-claim"], "unknown claim 'no-such-claim'"),

@@ -369,3 +369,102 @@ def count_is_an_object_that_equals_anything(s):
 def test_residuals_are_numbers_of_the_scene(func):
     for key, res in _verdicts(func, [(3, 2)]).items():
         assert res.verdict in ("error", "undecided"), (key, res.verdict)
+
+
+# -- an adversarial review's tricks, kept ----------------------------------------------------------
+
+def divides_by_an_identically_zero_expression(s):
+    """False: X = 0, written X / (1 / (<ξ,ξ> − <ξ,ξ>)) (symbolically an infinity turned into 0)."""
+    k = s.killing(s.xi, s.xi)
+    return {"X": s.X / (s.q(1) / (k - k))}
+
+
+def divides_by_zero_among_constants(s):
+    """False: Φ · 1/(1 + 1/0) = 0."""
+    return {"Phi": s.Phi * (s.q(1) / (s.q(1) + s.q(1) / s.q(0)))}
+
+
+def gradient_of_a_matrix(s):
+    """False: a matrix 'Hamiltonian' read at its first entry (E_11 at X = (I; 0))."""
+    E, _ = s.gradient(lambda t: t.X)
+    return {"XX^T E - E": s.X @ s.X.T @ E - E}
+
+
+def flow_of_a_matrix(s):
+    """False: the Dirac flow of a matrix-valued function."""
+    flow = s.dirac_flow(lambda t: t.P)
+    return {"XX^T X' - X'": s.X @ s.X.T @ flow.Xdot - flow.Xdot}
+
+
+def operator_and_generic_share_a_name(s):
+    """False: a generic matrix named like an operator's coefficients equals them."""
+    K = s.sym_operator("K")
+    G = s.generic("K", "n", "n")
+    E = s.xi - s.xi.T
+    return {"shared": s.killing(E, K(E)) - s.tr(G)}
+
+
+def generic_and_params_share_a_name(s):
+    """False: two generic matrices of the claim's own with one name have equal first columns."""
+    G = s.generic("G", "n", "r")
+    H = s.general_params("G", s.n, s.r, ("n", "r"))
+    return {"G - H": G - H}
+
+
+def conj_of_x(s):
+    """False: conj(X)ᵀ X = diag(1, −1) (conj of a matrix that is not realified)."""
+    C = s.conj(s.X)
+    return {"conj": C.T @ s.X - s.Ir}
+
+
+def a_chart_parameter_by_name(s):
+    """False: a parameter fetched by the chart's own name (not part of the API)."""
+    return {"a_1": s.param("a_1") - s.A[0, 0]}
+
+
+def rank_of_an_empty_matrix(s):
+    """Vacuous: the rank of a 0 x 0 matrix."""
+    from stiefelsym import Rank
+    return {"rank": Rank(s.zeros(0, 0, ("cond", "coef")), 0, generic=False)}
+
+
+@pytest.mark.parametrize("func", [divides_by_an_identically_zero_expression, divides_by_zero_among_constants,
+                                  gradient_of_a_matrix, flow_of_a_matrix, operator_and_generic_share_a_name,
+                                  generic_and_params_share_a_name, conj_of_x, a_chart_parameter_by_name,
+                                  rank_of_an_empty_matrix], ids=lambda f: f.__name__)
+def test_reviewed_tricks_never_pass(func):
+    _never_passes(func, [(3, 1), (4, 2)])
+
+
+def free_trace_of_a_scalar_block(s):
+    """False: tr I_n = 1, from a 1×1 matrix typed as R^n."""
+    return {"tr": s.tr(s.mat([[1]], ("n", "n"))) - s.q(1)}
+
+
+def free_moves_a(s):
+    """False: the resolvent is constant when A moves."""
+    return {"dR": s.d(lambda t: t.resolvent(t.lam), {"A": s.In})}
+
+
+@pytest.mark.parametrize("func", [free_trace_of_a_scalar_block, free_moves_a], ids=lambda f: f.__name__)
+def test_the_free_scene_refuses_untyped_blocks_and_moving_a(func):
+    assert run_one(_claim(func), None, "free", 0).verdict in ("undecided", "error")
+
+
+def test_a_registered_claim_cannot_be_rewritten():
+    import dataclasses
+    c = _claim(x_is_the_base_point_block)
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        c.reviewed = True
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        c.expect = "fails"
+
+
+def test_metadata_code_that_never_returns_is_stopped(monkeypatch):
+    import time
+    from stiefelsym import claims
+    monkeypatch.setattr(claims, "METADATA_SECONDS", 0.2)
+    c = Claim(id="hang", paper=("cond_XP",), kind="id", section="t", func=x_is_the_base_point_block,
+              sizes=admissible(3), fails_at=lambda n, r: time.sleep(30), erratum="never returns")
+    res = run_one(c, Size(3, 1), "rational", 0)
+    assert res.verdict == "error" and "did not finish" in res.message
