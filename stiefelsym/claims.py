@@ -79,8 +79,6 @@ class Rank:
             raise TypeError("Rank: the matrix must be a matrix of the scene")
         if type(self.expected) is not int or type(self.generic) is not bool:
             raise TypeError("Rank: the expected rank is an int and generic a bool")
-        if 0 in self.matrix._a.shape:
-            raise ValueError("Rank: the rank of an empty matrix is a vacuous check")
 
 
 @dataclass(frozen=True)
