@@ -3,6 +3,8 @@ PYTHON ?= python3
 VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
+#: worker processes for the verification runs (the verdicts do not depend on it)
+JOBS   ?= 2
 
 .PHONY: venv verify verify-all test bench report clean
 
@@ -16,11 +18,11 @@ $(STAMP): pyproject.toml
 
 ## verify: verify the whole catalog (default methods) and regenerate reports/
 verify: venv
-	$(BIN)/stiefelsym verify
+	$(BIN)/stiefelsym verify --jobs $(JOBS)
 
 ## verify-all: every method at every size (auto, modular, rational, float, free) and the slow tests
 verify-all: venv
-	$(BIN)/stiefelsym verify --method auto --method modular --method rational --method float --method free \
+	$(BIN)/stiefelsym verify --jobs $(JOBS) --method auto --method modular --method rational --method float --method free \
 		--report-dir reports/all
 	$(BIN)/python -m pytest -q -m slow || test $$? -eq 5
 
@@ -35,7 +37,7 @@ bench: venv
 ## mutate: mutation analysis of the catalog (small corruptions every method must catch); writes reports/mutation.{json,md}
 .PHONY: mutate
 mutate: venv
-	$(BIN)/stiefelsym mutate --report-dir reports
+	$(BIN)/stiefelsym mutate --jobs $(JOBS) --report-dir reports
 
 ## report: re-render reports/verification.{md,tex} from reports/results.json
 report: venv
