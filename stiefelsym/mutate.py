@@ -19,7 +19,8 @@ pass says nothing about a mutant, and is not counted.  Then:
 * a mutant that passes at every counted cell is **equivalent**: a true statement at
   the sizes run (often trivially so, sometimes only because the sizes are small, e.g.
   a condition n <= 2r + 1 changed to n <= 2r + 2 when no size has n = 2r + 2; the list
-  is reported);
+  is reported); so is a mutant that no method refutes and ``free`` proves for all n, r
+  (with its re-checked certificate), even where a fixed-size method ran out of budget;
 * a mutant that one method refutes (``fails`` or ``error``) at a size where another
   method passes it is a **survivor** of the passing method: a soundness or
   sensitivity problem;
@@ -639,6 +640,11 @@ def classify(outcome: MutantOutcome, baseline: MutantOutcome) -> MutantOutcome:
         outcome.classification = "survivor" if survived else "killed"
     else:
         outcome.classification = "unresolved"
+    if not refuted_at and any(c.verdict == "proved" for c in free):
+        # nothing refuted it and it is proved for all n, r with a re-checked certificate: a true
+        # statement, even where a fixed-size method could not decide it (e.g. exact out of budget)
+        outcome.classification = "equivalent"
+        outcome.killed_by = {}
     for c in free:
         if c.verdict == "proved" and outcome.classification != "equivalent":
             survived.append("free")   # a dimension-free proof of a statement a method refuted: unsound
