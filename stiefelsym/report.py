@@ -36,17 +36,23 @@ VERDICT_MEANING = {
                 "statement passes with probability at most the stated bound p "
                 "(Schwartz–Zippel, see below)."),
     "numeric": ("Floating-point evidence at random real points, with a running error "
-                "bound and precision escalation; strong evidence, not a proof."),
+                "bound and precision escalation: every residual entry is within its "
+                "rounding-error bound, and that bound is below 10⁻⁸ of the size of the "
+                "terms; strong evidence, not a proof."),
     "fails": ("The statement as printed is false at this size: an exact witness (a "
               "point and a nonzero residual entry) is given and is reproducible from "
               "the seed."),
-    "inconclusive": ("The method ran but could not decide (for instance only degenerate "
-                     "random points, a floating-point residual of ambiguous size, or a "
-                     "claim the method cannot evaluate)."),
-    "undecided": ("The method does not apply to this claim or size, or exceeded its "
-                  "budget; the fixed-size methods decide instead."),
-    "error": ("The check itself raised an error (a bug in the claim or in the "
-              "engine); the message is given."),
+    "inconclusive": ("The method ran but could not decide: only degenerate random "
+                     "points, a floating-point residual no precision resolved, a "
+                     "false-pass bound above 10⁻³⁰, or the run's time budget.  Never "
+                     "expected."),
+    "undecided": ("The method does not apply here: the dimension-free method on a "
+                  "statement that needs coordinates, a randomized method on a rank "
+                  "“at every point”, or a chosen (hard) point; an expected non-answer, "
+                  "the other methods decide."),
+    "error": ("The claim could not be evaluated as written: ill-typed (ℝⁿ and ℝʳ "
+              "indices mixed), empty, dividing by zero, or crashed; the message is "
+              "given.  Never expected."),
 }
 
 #: what each kind of claim is
@@ -65,8 +71,13 @@ BOUND_EXPLANATION = (
     "S of field elements, vanishes with probability at most d/|S|.  The residuals of "
     "a claim are rational functions in the free parameters of a chart of T*V; a "
     "randomized check evaluates their numerators exactly at several independent "
-    "points.  The bound p is the probability that a false statement would have passed "
-    "this run.  It concerns the random choices of the run only, which the seed fixes.")
+    "points.  Over a prime field each point has its own prime, drawn from the seed "
+    "among the primes in [2⁶⁰, 2⁶¹), and the bound adds the chance h/(60·K) that the "
+    "prime divides the numerator (h bounds its height, K ≥ 1.9·10¹⁶ primes).  The "
+    "number of points is chosen so that p ≤ 10⁻³⁰.  The bound p is the probability "
+    "that a false statement would have passed this run.  It concerns the random "
+    "choices of the run only, which the seed fixes, for a claim written independently "
+    "of the seed.")
 
 EXPECTED_EXPLANATION = (
     "Each verdict is compared with what the catalog expects: a statement of the paper "
