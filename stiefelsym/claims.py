@@ -35,16 +35,18 @@ class ClaimTimeout(ValueError):
 
 
 @contextmanager
-def deadline(seconds: float, what: str):
-    """Interrupt Python code that runs past ``seconds`` (main thread; nests with an outer deadline)."""
-    if not hasattr(signal, "SIGALRM") or threading.current_thread() is not threading.main_thread():
+def deadline(seconds: float | None, what: str, timeout: Callable[[str], BaseException] = ClaimTimeout):
+    """Interrupt Python code that runs past ``seconds`` with ``timeout(message)`` (main thread;
+    nests with an outer deadline; ``None``: no deadline)."""
+    if seconds is None or not hasattr(signal, "SIGALRM") \
+            or threading.current_thread() is not threading.main_thread():
         yield
         return
     outer_left, _ = signal.getitimer(signal.ITIMER_REAL)
     limit = min(seconds, outer_left) if outer_left > 0 else seconds
 
     def expire(signum, frame):
-        raise ClaimTimeout(f"{what} did not finish within {limit:.0f} s")
+        raise timeout(f"{what} did not finish within {limit:.0f} s")
     old = signal.signal(signal.SIGALRM, expire)
     t0 = time.monotonic()
     signal.setitimer(signal.ITIMER_REAL, limit)

@@ -16,16 +16,14 @@ from __future__ import annotations
 
 import math
 import random
-import signal
 import time
-from contextlib import contextmanager
 from dataclasses import dataclass, field as dc_field
-from typing import Any, Callable, Iterator
+from typing import Any, Callable
 
 import mpmath
 import numpy as np
 
-from .claims import Claim, Count, Rank
+from .claims import Claim, Count, Rank, deadline
 from .fields import (PRIME_LOW, PRIMES_IN_RANGE_LOWER, ConstantDegenerate, DegenerateError, Deg, DegreeField,
                      ErrNum, Field, FloatField, ModularField, RationalField, SymbolicBudget,
                      SymbolicField, random_prime)
@@ -59,27 +57,9 @@ def check_budget(method: str, n: int, r: int) -> None:
         raise BudgetError(f"n = {n} is beyond the {method} method's budget (n <= {limit})")
 
 
-@contextmanager
-def time_limit(seconds: float) -> Iterator[None]:
+def time_limit(seconds: float | None):
     """Interrupt a symbolic computation that exceeds its budget (main thread only)."""
-    if seconds is None or not hasattr(signal, "SIGALRM"):
-        yield
-        return
-    try:
-        old = signal.signal(signal.SIGALRM, _raise_timeout)
-    except ValueError:  # not in the main thread
-        yield
-        return
-    signal.setitimer(signal.ITIMER_REAL, seconds)
-    try:
-        yield
-    finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, old)
-
-
-def _raise_timeout(signum, frame):
-    raise ExactTimeout()
+    return deadline(seconds, "the symbolic computation", lambda message: ExactTimeout(message))
 
 
 # ---------------------------------------------------------------------------

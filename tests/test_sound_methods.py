@@ -22,14 +22,7 @@ def _claim(func, kind="id", expect="holds", cid="trick"):
     return Claim(id=cid, paper=("prep",), kind=kind, section="t", func=func, sizes=admissible(4), expect=expect)
 
 
-def resolvent_identity(s):
-    R = s.resolvent(s.lam)
-    return {"AR": s.A @ R - (s.lam * R - s.In)}
-
-
-def resolvent_identity_sign(s):
-    R = s.resolvent(s.lam)
-    return {"AR": s.A @ R - (s.lam * R + s.In)}
+from test_methods import resolvent_identity, resolvent_identity_sign  # noqa: E402  (shared test claims)
 
 
 # -- 1. the modular method: a prime per point, a height bound, enough points -----------------
