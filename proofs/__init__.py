@@ -2,7 +2,7 @@
 
 #: catalog modules in the order of the paper
 MODULES = ("sec2_hamiltonian_flows", "sec3_geodesic_flows", "sec4_integrability",
-           "sec5_neumann")
+           "sec5_neumann", "sec8_dual_lax_pair")
 
 #: section headings for the reports
 SECTION_TITLES = {
@@ -10,4 +10,5 @@ SECTION_TITLES = {
     "3": "Geodesic flows",
     "4": "Integrability of geodesic flows",
     "5": "The Neumann systems on Stiefel varieties",
+    "8": "The dual Lax pair and geometric interpretation of integrals",
 }
