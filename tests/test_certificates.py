@@ -20,7 +20,8 @@ import pytest
 import symengine as se
 
 from stiefelsym.certificate_check import FORMAT, check_certificate
-from stiefelsym.claims import load_catalog
+from stiefelsym import admissible
+from stiefelsym.claims import Claim, load_catalog
 from stiefelsym.free.algebra import NCPoly, trace
 from stiefelsym.free.certificates import CertificateWriter
 from stiefelsym.free.rewriting import CertificateError, Hypothesis, Order, RewritingSystem
@@ -121,6 +122,7 @@ def _every_rule_scene() -> FreeScene:
     s.resolvent(mu)
     s.resolvent(lam + 1)
     s.Ainv
+    s.resolvent(0)   # R_0 -> -A^{-1}
     s.Y
     return s
 
@@ -391,3 +393,50 @@ def test_a_claims_own_scalar_that_prints_like_a_chart_symbol_gets_its_own_name()
     writer = CertificateWriter(s._resolvents)
     coefs = {writer.coef(c) for c in x.terms.values()}
     assert coefs == {"lambda_", "-lambda__2"} or coefs == {"lambda__2", "-lambda_"}
+
+
+# ---------------------------------------------------------------------------
+# A^{-1} and the resolvent at 0 (0·I − A)^{-1} = −A^{-1}: true identities that need the rule
+# R_0 -> -A^{-1} (completion of the pairs A^{-1}·A·R_0, R_0·A·A^{-1}, A^{-1}·R_lambda·R_0, ...)
+def _claim(func, cid):
+    return Claim(id=cid, paper=("cond_XP",), kind="id", section="t", func=func, sizes=admissible(4))
+
+
+def ainv_plus_resolvent_at_0(s):
+    """True: A^{-1} + (0·I − A)^{-1} = 0."""
+    return {"Ainv + R_0": s.Ainv + s.resolvent(0)}
+
+
+def resolvent_at_0_then_ainv(s):
+    """True: (0·I − A)^{-1} A^{-1} = −A^{-2}, the resolvent at 0 built before A^{-1}."""
+    R0 = s.resolvent(0)
+    Ai = s.Ainv
+    return {"R_0 Ainv + Ainv Ainv": R0 @ Ai + Ai @ Ai}
+
+
+def ainv_resolvent_two_ways(s):
+    """True: λ Xᵀ A^{-1} R_λ X = Xᵀ (R_λ − R_0) X (the resolvent identity at 0 and λ)."""
+    X, R = s.X, s.resolvent(s.lam)
+    return {"XtAinvRX": s.lam * (X.T @ s.Ainv @ R @ X) - X.T @ (R - s.resolvent(0)) @ X}
+
+
+def ainv_minus_resolvent_at_0(s):
+    """False: A^{-1} = (0·I − A)^{-1}."""
+    return {"Ainv - R_0": s.Ainv - s.resolvent(0)}
+
+
+@pytest.mark.parametrize("func", [ainv_plus_resolvent_at_0, resolvent_at_0_then_ainv, ainv_resolvent_two_ways])
+def test_identities_through_the_resolvent_at_0_are_proved_with_an_accepted_certificate(func):
+    res = run_one(_claim(func, func.__name__), None, "free", 0)
+    assert res.verdict == "proved", (res.verdict, res.message)
+    data = json.loads(json.dumps(res.certificate_data))
+    rep = check_certificate(data)
+    assert rep.accepted, rep.message
+    assert "res_left:R[0]" in data["summary"]["hypotheses"]
+    assert data["letters"]["R[0]"] == {"kind": "resolvent", "parameter": "0"}
+
+
+def test_a_false_identity_with_the_resolvent_at_0_is_not_proved():
+    res = run_one(_claim(ainv_minus_resolvent_at_0, "ainv_minus_R0"), None, "free", 0)
+    assert res.verdict not in ("proved", "checked", "numeric"), res.verdict
+    assert res.certificate_data is None

@@ -24,20 +24,45 @@ def w(*letters):
 
 
 def rule_set(name: str) -> RewritingSystem:
-    """The rule sets the free scene builds: constraints, resolvents, A^{-1}, a second point."""
+    """The rule sets the free scene builds: constraints, resolvents at symbolic points, A^{-1},
+    the resolvent at 0 with A^{-1} (added in either order), a second point."""
     s = FreeScene()
     if name in ("resolvent", "two resolvents", "everything"):
         s.resolvent(s.lam)
     if name in ("two resolvents", "everything"):
         s.resolvent(mu)
         s.resolvent(s.lam + 1)
+    if name == "ainv":
+        s.Ainv
+        s.resolvent(s.lam)
+        s.resolvent(mu)
+    if name == "ainv, then the resolvent at 0":
+        s.Ainv
+        s.resolvent(s.lam)
+        s.resolvent(0)
+    if name == "the resolvent at 0, then ainv":
+        s.resolvent(0)
+        s.resolvent(s.lam)
+        s.Ainv
+        s.resolvent(mu)
+    if name == "second point":
+        s.Y
+        s.resolvent(s.lam)
     if name == "everything":
         s.Ainv
+        s.resolvent(0)
         s.Y
     return s.system
 
 
-RULE_SETS = ["constraints", "resolvent", "two resolvents", "everything"]
+RULE_SETS = ["constraints", "resolvent", "two resolvents", "ainv", "ainv, then the resolvent at 0",
+             "the resolvent at 0, then ainv", "second point", "everything"]
+
+#: how many critical pairs each rule set has (all resolve); before the rule R_0 -> -A^{-1}, 4, 6
+#: and 8 pairs of the sets with A^{-1} and the resolvent at 0 did not (e.g. Ainv*A*R[0]: Ainv + R[0])
+PAIR_COUNTS = {"constraints": 0, "resolvent": 4, "two resolvents": 48, "ainv": 48,
+               "ainv, then the resolvent at 0": 40, "the resolvent at 0, then ainv": 90,
+               "second point": 4, "everything": 168}
 
 
 @pytest.mark.parametrize("name", RULE_SETS)
@@ -57,9 +82,31 @@ def test_critical_pairs_of_the_rule_sets_in_use_all_resolve(name):
     pairs = critical_pairs(system)
     unresolved = [str(p) for p in pairs if not p.joinable]
     assert not unresolved, unresolved
+    assert len(pairs) == PAIR_COUNTS[name]
     if name != "constraints":
         kinds = {p.kind for p in pairs}
         assert {"overlap", "cyclic"} <= kinds
+    if "at 0" in name or name == "everything":
+        assert "inclusion" in kinds   # R_0 -> -A^{-1} inside A R_0, R_0 A, R_0 R_mu, R_mu R_0
+
+
+@pytest.mark.parametrize("ainv_first", [True, False])
+def test_the_resolvent_at_0_is_minus_the_inverse_in_either_order(ainv_first):
+    """R_0 = (0 I - A)^{-1} -> -A^{-1}, with R_0 + A^{-1} = -A^{-1}·res_left:R_0 - AinvA·R_0."""
+    s = FreeScene()
+    if ainv_first:
+        Ai = s.Ainv._a[0, 0]
+        R0 = s.resolvent(0)._a[0, 0]
+    else:
+        R0 = s.resolvent(0)._a[0, 0]
+        Ai = s.Ainv._a[0, 0]
+    R0_letter = resolvent_letter(0)
+    rule = s.system.rule(f"{R0_letter}=-Ainv")
+    assert rule.lhs == (R0_letter,) and rule.rhs == -Ai
+    assert sorted(cf.hyp.name for cf in rule.cofactors) == ["AinvA", f"res_left:{R0_letter}"]
+    assert s.system.normal_form(Ai + R0) == NCPoly.zero("n", "n")
+    assert s.system.normal_form(Ai * R0 - R0 * Ai) == NCPoly.zero("n", "n")
+    assert is_confluent(s.system)
 
 
 def test_the_constraint_rules_have_no_critical_pairs():
@@ -222,6 +269,7 @@ def test_completion_reports_when_it_does_not_finish():
     assert "more than 8 rules" in result.message
 
 
-def test_completion_of_the_standard_rule_sets_adds_nothing():
-    result = complete(rule_set("everything"))
+@pytest.mark.parametrize("name", RULE_SETS)
+def test_completion_of_the_rule_sets_in_use_adds_nothing(name):
+    result = complete(rule_set(name))
     assert result.finished and not result.added

@@ -90,6 +90,11 @@ class CertificateWriter:
 
     def add(self, position: str, cert: Certificate) -> dict:
         p = cert.residual
+        by_name = {str(R): R for R in self.resolvents}
+        for t in cert.terms:   # a hypothesis res_left:R / res_right:R needs R declared, in a word or not
+            kind, _, R = t.hyp.name.partition(":")
+            if kind in ("res_left", "res_right") and R in by_name:
+                self.letter(by_name[R])
         entry = {"position": position, "type": [p.row, p.col], "residual": self.residual(p),
                  "terms": [{"coef": self.coef(t.coef), "traces": [self.word(x) for x in t.traces],
                             "left": self.word(t.left), "hyp": t.hyp.name, "right": self.word(t.right),

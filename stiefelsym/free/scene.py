@@ -143,6 +143,8 @@ def add_resolvent(system: RewritingSystem, mu: Any, resolvents: dict[Letter, Any
     while str(R) in taken:             # another coefficient that prints alike: a fresh letter
         k += 1
         R = resolvent_letter(mu, k)
+    if simplify_coef(mu) == 0:
+        system.order.add(AINV)         # A^{-1} < R_0, so that R_0 -> -A^{-1} whenever both are present
     system.order.add(R)
     reason = f"A R = R A = mu R - I_n for R = (mu I_n - A)^(-1), mu = {mu} (definition of the resolvent)"
     left, right = hypothesis("res_left", R, mu), hypothesis("res_right", R, mu)
@@ -168,11 +170,20 @@ def add_resolvent(system: RewritingSystem, mu: Any, resolvents: dict[Letter, Any
 
 
 def _ainv_resolvent_rules(system: RewritingSystem, R: Letter, mu: Any) -> None:
+    """The rules that relate A^{-1} and R = (mu I − A)^{-1}: R_0 = −A^{-1} at mu = 0, else
+    A^{-1} R = R A^{-1} = (R + A^{-1})/mu."""
+    left, right = hypothesis("res_left", R, mu), hypothesis("res_right", R, mu)
     if simplify_coef(mu) == 0:
-        return  # R_0 = -A^{-1}: no rule needed for soundness
+        why = "R_0 = (0 I_n - A)^(-1) = -A^(-1) (the resolvent at 0 is minus the inverse)"
+        # R_0 + A^{-1} = −A^{-1} [(0 I − A) R_0 − I] − [A^{-1} A − I] R_0
+        cofactors = [_by(left, -1, left=(AINV,)), _by(hypothesis("AinvA"), -1, right=(R,))]
+        if system.order.less((AINV,), (R,)):   # always so for add_resolvent's order
+            system.add_rule((R,), -_w(AINV), why, name=f"{R}=-Ainv", cofactors=cofactors)
+        else:
+            system.add_rule((AINV,), -_w(R), why, name=f"Ainv=-{R}", cofactors=cofactors)
+        return
     rhs = (_w(R) + _w(AINV)) * (se.Integer(1) / mu)
     why = f"A^(-1) R_mu = R_mu A^(-1) = (R_mu + A^(-1))/mu, mu = {mu} (mu != 0)"
-    left, right = hypothesis("res_left", R, mu), hypothesis("res_right", R, mu)
     # mu A^{-1} R − R − A^{-1} = A^{-1} [(mu I − A) R − I] + [A^{-1} A − I] R
     system.add_rule((AINV, R), rhs, why, name=f"Ainv{R}",
                     cofactors=[_by(left, 1 / mu, left=(AINV,)), _by(hypothesis("AinvA"), 1 / mu, right=(R,))])
