@@ -22,7 +22,7 @@ FREE_PROVED = ("neumann-dual-lax-normal", "neumann-dual-lax-euclidean", "dual-la
 NEEDS_COORDINATES = ("poisson-sphere-flow", "dual-lax-reflections")
 #: sizes of the exact check (the spectral invariants: exact only for n <= 2, the claim's symbolic budget)
 EXACT_SIZES = {"dual-lax-spectral-invariants": [(2, 1), (2, 2)],
-               "poisson-sphere-flow": [(2, 1), (3, 1)]}
+               "poisson-sphere-flow": [(2, 1), (3, 1)], "dual-lax-reflections": [(2, 1), (3, 2)]}
 MODULAR_SIZES = {"poisson-sphere-flow": [(2, 1), (3, 1), (4, 1)]}
 DEFAULT_EXACT_SIZES = [(2, 1), (3, 2), (3, 3)]
 
