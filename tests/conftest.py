@@ -25,3 +25,10 @@ def run(tmp_path):
         finally:
             os.chdir(old)
     return invoke
+
+
+@pytest.fixture(scope="session")
+def catalog():
+    """The paper's catalog, loaded once (claims are frozen, so tests share it safely)."""
+    from stiefelsym.claims import load_catalog
+    return load_catalog()

@@ -4,7 +4,6 @@ from pathlib import Path
 
 import pytest
 
-from stiefelsym.claims import load_catalog
 
 ROOT = Path(__file__).resolve().parents[1]
 SHARED = ROOT.parent / "shared"
@@ -12,11 +11,6 @@ PAPER = SHARED / "paper" / "fedorov-jovanovic-stiefel.tex"
 CLAIMS_MD = SHARED / "CLAIMS.md"
 #: sections of CLAIMS.md the catalog covers so far
 COVERED = ("§2", "§3", "§4", "§5")
-
-
-@pytest.fixture(scope="module")
-def catalog():
-    return load_catalog()
 
 
 def _paper_labels():

@@ -2,17 +2,11 @@
 import pytest
 
 from stiefelsym import Count, Rank, comm
-from stiefelsym.claims import load_catalog
 from stiefelsym.methods import run_exact, run_points
 
 import proofs.sec2_hamiltonian_flows as sec2
 
 SEED = 0
-
-
-@pytest.fixture(scope="module")
-def catalog():
-    return load_catalog()
 
 
 def _section2(catalog):

@@ -5,7 +5,7 @@ other order)."""
 import pytest
 
 from stiefelsym import Count, comm
-from stiefelsym.claims import Size, load_catalog
+from stiefelsym.claims import Size
 from stiefelsym.free_method import run_free
 from stiefelsym.methods import run_exact, run_points
 from stiefelsym.runner import run_one
@@ -22,11 +22,6 @@ NEEDS_COORDINATES = ("invariant-tori-dimensions", "manakov-operator", "manakov-l
                      "gram-commutes-with-psi-if-r-is-1-or-n")
 #: fail as printed (documented errata with a registered correction)
 ERRATA = ("manakov-dual-lax", "gram-not-in-involution-with-psi")
-
-
-@pytest.fixture(scope="module")
-def catalog():
-    return load_catalog()
 
 
 def _section4(catalog):

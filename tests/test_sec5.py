@@ -4,7 +4,6 @@ controls; for the Lax pair, the commutator in the other order)."""
 import pytest
 
 from stiefelsym import comm
-from stiefelsym.claims import load_catalog
 from stiefelsym.free_method import run_free
 from stiefelsym.methods import run_exact, run_points
 
@@ -17,11 +16,6 @@ FREE_PROVED = ("neumann-hamiltonian", "neumann-flow", "neumann-normal-flow", "ne
                "neumann-psi-conserved", "prep", "neumann-lax", "neumann-spectral-invariants")
 #: need coordinates: the multipliers Λ, Π and the gradients depend on H off T*V
 NEEDS_COORDINATES = ("neumann-multipliers",)
-
-
-@pytest.fixture(scope="module")
-def catalog():
-    return load_catalog()
 
 
 def _section5(catalog):

@@ -6,7 +6,6 @@ the commutator in the other order)."""
 import pytest
 
 from stiefelsym import block, comm
-from stiefelsym.claims import load_catalog
 from stiefelsym.free_method import run_free
 from stiefelsym.methods import run_exact, run_points
 
@@ -25,11 +24,6 @@ EXACT_SIZES = {"dual-lax-spectral-invariants": [(2, 1), (2, 2)],
                "poisson-sphere-flow": [(2, 1), (3, 1)], "dual-lax-reflections": [(2, 1), (3, 2)]}
 MODULAR_SIZES = {"poisson-sphere-flow": [(2, 1), (3, 1), (4, 1)]}
 DEFAULT_EXACT_SIZES = [(2, 1), (3, 2), (3, 3)]
-
-
-@pytest.fixture(scope="module")
-def catalog():
-    return load_catalog()
 
 
 def _section8(catalog):

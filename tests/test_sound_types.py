@@ -462,3 +462,23 @@ def test_metadata_code_that_never_returns_is_stopped(monkeypatch):
               sizes=admissible(3), fails_at=lambda n, r: time.sleep(30), erratum="never returns")
     res = run_one(c, Size(3, 1), "rational", 0)
     assert res.verdict == "error" and "did not finish" in res.message
+
+
+# -- a last pass at the new doors: sizes under the wrong space, a user-built Flow ----------------
+
+def scalar_matrix_labelled_r_at_n_equal_r(s):
+    """False: X = I (an n×n identity labelled as R^r, which agrees with X0 when r = n)."""
+    return {"X": s.X - s.scalar_matrix(s.q(1), s.n, "r")}
+
+
+def user_flow_along_a_constant_direction(s):
+    """False: d(XᵀX) = 2I along a Flow whose direction is the constant (I; 0)."""
+    from stiefelsym import Flow
+    V = block([[s.identity(s.r, "r")], [s.zeros(s.n - s.r, s.r)]])
+    return {"d": s.d(lambda t: t.X.T @ t.X, Flow(V, s.zeros(s.n, s.r, ("n", "r")))) - s.Ir * 2}
+
+
+@pytest.mark.parametrize("func", [scalar_matrix_labelled_r_at_n_equal_r, user_flow_along_a_constant_direction],
+                         ids=lambda f: f.__name__)
+def test_sizes_and_flows_of_a_users_own_making_never_pass(func):
+    _never_passes(func, [(3, 3), (3, 1)])
