@@ -109,25 +109,32 @@ class _Main(click.Group):
 
     def main(self, args: Sequence[str] | None = None, prog_name: str | None = None,
              complete_var: str | None = None, standalone_mode: bool = True, **extra: Any) -> Any:
-        try:
-            rv = super().main(args, prog_name or "stiefelsym", complete_var,
-                              standalone_mode=False, **extra)
-            code = rv if isinstance(rv, int) else EXIT_OK
-        except click.ClickException as exc:
-            ctx = getattr(exc, "ctx", None)
-            where = ctx.command_path if ctx is not None else "stiefelsym"
-            hint = f" (see '{where} --help')" if isinstance(exc, click.UsageError) else ""
-            click.echo(f"{where}: error: {_one_line(exc.format_message())}{hint}", err=True)
-            code = EXIT_INPUT
-        except (click.Abort, KeyboardInterrupt):
-            click.echo("stiefelsym: interrupted", err=True)
-            code = EXIT_INTERRUPTED
-        except Terminated:
-            click.echo("stiefelsym: terminated", err=True)
-            code = EXIT_TERMINATED
-        if standalone_mode:
-            sys.exit(code)
-        return code
+        return run_reporting_errors(
+            lambda: super(_Main, self).main(args, prog_name or "stiefelsym", complete_var,
+                                            standalone_mode=False, **extra),
+            prog_name or "stiefelsym", standalone_mode)
+
+
+def run_reporting_errors(invoke: Any, prog: str, standalone_mode: bool) -> int:
+    """Run a command; every error is one line on stderr and a documented exit status."""
+    try:
+        rv = invoke()
+        code = rv if isinstance(rv, int) else EXIT_OK
+    except click.ClickException as exc:
+        ctx = getattr(exc, "ctx", None)
+        where = ctx.command_path if ctx is not None else prog
+        hint = f" (see '{where} --help')" if isinstance(exc, click.UsageError) else ""
+        click.echo(f"{where}: error: {_one_line(exc.format_message())}{hint}", err=True)
+        code = EXIT_INPUT
+    except (click.Abort, KeyboardInterrupt):
+        click.echo(f"{prog}: interrupted", err=True)
+        code = EXIT_INTERRUPTED
+    except Terminated:
+        click.echo(f"{prog}: terminated", err=True)
+        code = EXIT_TERMINATED
+    if standalone_mode:
+        sys.exit(code)
+    return code
 
 
 @click.group(cls=_Main, invoke_without_command=True,

@@ -14,8 +14,6 @@ import os
 import platform
 import re
 import shlex
-import subprocess
-import sys
 import time
 from datetime import datetime, timezone
 from pathlib import Path
@@ -47,20 +45,11 @@ class _Command(click.Command):
 
     def main(self, args: Sequence[str] | None = None, prog_name: str | None = None,
              complete_var: str | None = None, standalone_mode: bool = True, **extra: Any) -> Any:
-        try:
-            rv = super().main(args, prog_name or "stiefelsym mutate", complete_var,
-                              standalone_mode=False, **extra)
-            code = rv if isinstance(rv, int) else EXIT_OK
-        except click.ClickException as exc:
-            hint = " (see 'stiefelsym mutate --help')" if isinstance(exc, click.UsageError) else ""
-            click.echo(f"stiefelsym mutate: error: {' '.join(exc.format_message().split())}{hint}", err=True)
-            code = EXIT_INPUT
-        except (click.Abort, KeyboardInterrupt):
-            click.echo("stiefelsym mutate: interrupted", err=True)
-            code = EXIT_INTERRUPTED
-        if standalone_mode:
-            sys.exit(code)
-        return code
+        from .cli import run_reporting_errors
+        return run_reporting_errors(
+            lambda: super(_Command, self).main(args, prog_name or "stiefelsym mutate", complete_var,
+                                               standalone_mode=False, **extra),
+            prog_name or "stiefelsym mutate", standalone_mode)
 
 
 def _parse_size(text: str) -> Size:
@@ -107,13 +96,9 @@ def _check_report_dir(d: Path) -> None:
             raise MutateInputError(f"cannot write reports to {d}: {Path(d) / name} is a directory")
 
 
-def _commit() -> str | None:
-    try:
-        out = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True, text=True,
-                             timeout=5, cwd=Path(__file__).resolve().parent, stdin=subprocess.DEVNULL)
-    except (OSError, subprocess.SubprocessError):
-        return None
-    return out.stdout.strip() or None if out.returncode == 0 else None
+def _git_commit() -> str | None:
+    from .cli import _commit
+    return _commit()
 
 
 def _command(ids: Sequence[str], sizes: Sequence[str], methods: Sequence[str], seed: int,
@@ -226,7 +211,7 @@ def mutate(ids: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str, ...
         "letter_swaps": {k: list(v) for k, v in engine.LETTER_SWAPS.items()},
         "date": started.strftime("%Y-%m-%d %H:%M:%S UTC"),
         "seconds": round(time.perf_counter() - t0, 2),
-        "platform": platform.platform(terse=True), "commit": _commit(),
+        "platform": platform.platform(terse=True), "commit": _git_commit(),
     }
     data = report.to_json()
     if fmt == "json":
