@@ -6,7 +6,7 @@ STAMP  := $(VENV)/.installed
 #: worker processes for the verification runs (the verdicts do not depend on it)
 JOBS   ?= 2
 
-.PHONY: venv verify verify-all test bench report clean
+.PHONY: venv verify verify-all test bench report clean tables flows speed
 
 ## venv: create .venv (if missing) and install stiefelsym with its test extras
 venv: $(STAMP)
@@ -38,6 +38,18 @@ bench: venv
 .PHONY: mutate
 mutate: venv
 	$(BIN)/stiefelsym mutate --jobs $(JOBS) --report-dir reports
+
+## tables: appendix tables (dimensions formula against computed, verdict matrix) in reports/tables.{md,tex}
+tables: venv
+	$(BIN)/stiefelsym tables --report-dir reports
+
+## flows: integrated flows, work-precision diagrams and Lax spectra along trajectories in reports/flows/
+flows: venv
+	$(BIN)/stiefelsym flows --report-dir reports/flows
+
+## speed: residual and time against n and precision, the cost model and its fit, in reports/speed/
+speed: venv
+	$(BIN)/stiefelsym speed --report-dir reports/speed
 
 ## report: re-render reports/verification.{md,tex} from reports/results.json
 report: venv

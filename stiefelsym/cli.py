@@ -844,7 +844,10 @@ def report(results_file: Path | None, report_dir: Path | None) -> None:
 
 # ``stiefelsym mutate`` lives in its own module, imported only when it is asked for (or the
 # commands are listed); if the module is missing the command is simply not there.
-main.lazy = {"mutate": ("stiefelsym.cli_mutate", "mutate")}
+main.lazy = {"mutate": ("stiefelsym.cli_mutate", "mutate"),
+             "tables": ("stiefelsym.cli_tables", "tables"),
+             "flows": ("stiefelsym.cli_flows", "flows"),
+             "speed": ("stiefelsym.cli_speed", "speed")}
 
 
 if __name__ == "__main__":  # pragma: no cover
