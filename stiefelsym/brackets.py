@@ -1,0 +1,457 @@
+"""Poisson brackets as objects a claim can use.
+
+Two kinds of brackets:
+
+* brackets of functions of the scene (the phase space T*M_{n,r} or T*V_{n,r}):
+  :data:`canonical` ({,}_0 on T*M_{n,r}), :data:`dirac` (the Dirac bracket
+  (Dirac_bracket) of the scene's realization: (cond_XP), or (cond_XP2) in a claim
+  declared with ``realization="metric"``) and :func:`dirac_bracket_for` (the Dirac
+  bracket of any list of symmetric matrix constraints, built from the canonical
+  bracket: the L_A bracket {,}_A of §3 is ``dirac_bracket_for(metric_constraints)``);
+* Poisson tensors on a matrix space (so(m), Sym(m), gl(n)), given as a bilinear form
+  ``form(x, a, b)`` = Λ(a, b)|_x in the covectors a, b, identified with the space by
+  <a, b> = −½tr(ab): the Lie–Poisson brackets (±) on so(n) and so(r)
+  (:func:`lie_poisson`), the pencil Λ1, Λ2 on gl(n) of (LAMBDA12) (:func:`lambda1`,
+  :func:`lambda2`), their combinations ``c1 * T1 + c2 * T2``.
+
+Functions on a matrix space are :class:`MatrixFunction` objects that carry their
+gradient for <,> (:func:`linear`, :func:`quadratic`, :func:`trace_power`, sums,
+products); ``f.pullback(moment)`` is the function f∘moment of the scene.
+
+Checks (each returns a residual that must vanish): :func:`antisymmetry`,
+:func:`jacobiator` (the Jacobi identity of a tensor, from its form alone: the
+derivative in x is taken by exact interpolation of a polynomial of the declared
+degree along x + t·e_k, over a basis e_k of the space), :func:`compatibility`,
+:func:`casimir_residual`, :func:`poisson_map_residual` (a map of the phase space into
+a matrix space is Poisson), :func:`phase_jacobiator` (the Jacobi identity of a
+bracket of functions of the scene, through nested brackets).
+
+For a tensor affine in x (every tensor of this module), the Jacobi identity for
+linear functions with generic covectors a, b, c is the Jacobi identity (the
+Jacobiator of coordinate functions is the Schouten bracket [Λ, Λ], a tensor).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from fractions import Fraction
+from typing import Any, Callable, Sequence
+
+from .matrix import Mat, comm
+
+Scalar = Any
+Function = Callable[[Any], Any]
+
+
+# ---------------------------------------------------------------------------------
+# brackets of functions of the scene
+
+@dataclass(frozen=True)
+class PhaseBracket:
+    """A bracket of two scalar functions of the scene."""
+
+    name: str
+    evaluate: Callable[[Any, Function, Function], Scalar]
+
+    def __call__(self, s: Any, F: Function, G: Function) -> Scalar:
+        return self.evaluate(s, F, G)
+
+    def flow_derivative(self, s: Any, F: Function, H: Function) -> Scalar:
+        """dF/dt = {F, H} along the Hamiltonian flow of H."""
+        return self.evaluate(s, F, H)
+
+
+#: the canonical bracket {,}_0 on T*M_{n,r} = R^{2nr} (functions of the scene off T*V)
+canonical = PhaseBracket("{,}_0 on T*M_{n,r}", lambda s, F, G: s.canonical_bracket(F, G))
+
+#: the Dirac bracket (Dirac_bracket) of the scene's realization of T*V
+dirac = PhaseBracket("Dirac bracket on T*V_{n,r}", lambda s, F, G: s.bracket(F, G))
+
+
+def standard_constraints(t: Any) -> list[Mat]:
+    """(cond_XP): XᵀX − I_r, XᵀP + PᵀX."""
+    return [t.X.T @ t.X - t.Ir, t.X.T @ t.P + t.P.T @ t.X]
+
+
+def metric_constraints(t: Any) -> list[Mat]:
+    """(cond_XP2): XᵀX − I_r, XᵀA⁻¹P + PᵀA⁻¹X."""
+    return [t.X.T @ t.X - t.Ir, t.X.T @ t.Ainv @ t.P + t.P.T @ t.Ainv @ t.X]
+
+
+def _scalar_constraints(constraints: Callable[[Any], Sequence[Mat]], r: int) -> list[Function]:
+    """The upper-triangle entries of symmetric r x r matrix constraints, as scalar functions."""
+    out = []
+    for k in range(2):
+        for i in range(r):
+            for j in range(i, r):
+                out.append(lambda t, k=k, i=i, j=j: constraints(t)[k][i, j])
+    return out
+
+
+def dirac_bracket_for(constraints: Callable[[Any], Sequence[Mat]], name: str = "") -> PhaseBracket:
+    """The Dirac bracket {f, g} = {f, g}_0 + Σ {F_i, f}_0 C_ij {F_j, g}_0 (Dirac_bracket) for the
+    scalar constraints F_i (upper triangles of the two symmetric r x r matrices ``constraints``),
+    C the inverse of ({F_i, F_j}_0); only the canonical bracket of the scene is used."""
+    def evaluate(s: Any, F: Function, G: Function) -> Scalar:
+        Fs = _scalar_constraints(constraints, s.r)
+        m = len(Fs)
+        C0 = s.mat([[s.canonical_bracket(Fi, Fj) for Fj in Fs] for Fi in Fs], ("cond", "cond"))
+        C = C0.inv()
+        FiF = [s.canonical_bracket(Fi, F) for Fi in Fs]
+        FjG = [s.canonical_bracket(Fj, G) for Fj in Fs]
+        acc = s.canonical_bracket(F, G)
+        for i in range(m):
+            for j in range(m):
+                acc = acc + FiF[i] * C[i, j] * FjG[j]
+        return acc
+    return PhaseBracket(name or "Dirac bracket of the given constraints", evaluate)
+
+
+#: the Dirac bracket {,}_A of the constraints (cond_XP2) of the SO(r)-invariant metric L_A (§3)
+metric_dirac = dirac_bracket_for(metric_constraints, "Dirac bracket {,}_A of (cond_XP2)")
+
+
+def phase_jacobiator(s: Any, bracket: PhaseBracket, F: Function, G: Function, H: Function) -> Scalar:
+    """{F, {G, H}} + {G, {H, F}} + {H, {F, G}} (nested brackets: the inner bracket is a function of
+    the scene, differentiated like any other)."""
+    def inner(P: Function, Q: Function) -> Function:
+        return lambda t: bracket(t, P, Q)
+    return (bracket(s, F, inner(G, H)) + bracket(s, G, inner(H, F)) + bracket(s, H, inner(F, G)))
+
+
+# ---------------------------------------------------------------------------------
+# matrix spaces
+
+def skew(M: Mat) -> Mat:
+    """The so-part (M − Mᵀ)/2."""
+    return (M - M.T) / 2
+
+
+def sym(M: Mat) -> Mat:
+    """The Sym-part (M + Mᵀ)/2."""
+    return (M + M.T) / 2
+
+
+@dataclass(frozen=True)
+class Space:
+    """A matrix space so(m), Sym(m) or gl(m) (m = n or r), paired with itself by <a, b> = −½tr(ab)."""
+
+    kind: str   # "so", "sym" or "gl"
+    index: str  # "n" or "r"
+
+    def __post_init__(self) -> None:
+        if self.kind not in ("so", "sym", "gl") or self.index not in ("n", "r"):
+            raise ValueError(f"a matrix space is so, sym or gl over n or r, not {self.kind}({self.index})")
+
+    @property
+    def name(self) -> str:
+        return f"{self.kind}({self.index})"
+
+    def size(self, s: Any) -> int:
+        return s.n if self.index == "n" else s.r
+
+    def project(self, M: Mat) -> Mat:
+        """The orthogonal projection of a matrix onto the space (for <,>, so(m) ⊥ Sym(m))."""
+        if self.kind == "so":
+            return skew(M)
+        if self.kind == "sym":
+            return sym(M)
+        return M
+
+    def generic(self, s: Any, name: str) -> Mat:
+        """A generic element (parameters of the claim's own)."""
+        return self.project(s.generic(name, self.index, self.index) * 2)
+
+    def basis(self, s: Any) -> list[tuple[Mat, Mat]]:
+        """Pairs (e_k, e_k*) of a basis and its dual basis for <,> (<e_k, e_l*> = δ_kl)."""
+        m = self.size(s)
+        tags = (self.index, self.index)
+
+        def unit(i, j):
+            return s.mat([[s.q(1) if (a, b) == (i, j) else s.q(0) for b in range(m)] for a in range(m)], tags)
+        out = []
+        if self.kind == "so":
+            for i in range(m):
+                for j in range(i + 1, m):
+                    e = unit(i, j) - unit(j, i)            # <e, e> = 1
+                    out.append((e, e))
+        elif self.kind == "sym":
+            for i in range(m):
+                e = unit(i, i)                              # <e, e> = -1/2
+                out.append((e, e * (-2)))
+                for j in range(i + 1, m):
+                    e = unit(i, j) + unit(j, i)            # <e, e> = -1
+                    out.append((e, -e))
+        else:
+            for i in range(m):
+                for j in range(m):
+                    out.append((unit(i, j), unit(j, i) * (-2)))   # <E_ij, E_kl> = -1/2 δ_jk δ_il
+        return out
+
+
+SO_N, SO_R, GL_N, SYM_N = Space("so", "n"), Space("so", "r"), Space("gl", "n"), Space("sym", "n")
+
+
+def pairing(s: Any, a: Mat, b: Mat) -> Scalar:
+    """<a, b> = −½tr(ab)."""
+    return s.killing(a, b)
+
+
+# ---------------------------------------------------------------------------------
+# functions on a matrix space, with their gradients
+
+@dataclass(frozen=True)
+class MatrixFunction:
+    """A scalar function h on a matrix space with its gradient ∇h (dh(δ) = <∇h, δ>, taken in gl)."""
+
+    value: Callable[[Any, Mat], Scalar]
+    gradient: Callable[[Any, Mat], Mat]
+    name: str = "h"
+
+    def __call__(self, s: Any, x: Mat) -> Scalar:
+        return self.value(s, x)
+
+    def grad(self, s: Any, x: Mat) -> Mat:
+        return self.gradient(s, x)
+
+    def pullback(self, moment: Callable[[Any], Mat]) -> Function:
+        """h∘moment, a function of the scene."""
+        return lambda t: self.value(t, moment(t))
+
+    def __add__(self, o: "MatrixFunction") -> "MatrixFunction":
+        return MatrixFunction(lambda s, x: self.value(s, x) + o.value(s, x),
+                              lambda s, x: self.gradient(s, x) + o.gradient(s, x), f"({self.name} + {o.name})")
+
+    def __mul__(self, o: "MatrixFunction") -> "MatrixFunction":
+        """The product (Leibniz rule for the gradient)."""
+        return MatrixFunction(lambda s, x: self.value(s, x) * o.value(s, x),
+                              lambda s, x: self.gradient(s, x) * o.value(s, x) + o.gradient(s, x) * self.value(s, x),
+                              f"{self.name}·{o.name}")
+
+    def scaled(self, c: Callable[[Any], Scalar]) -> "MatrixFunction":
+        """c·h for a scalar c(s) of the scene."""
+        return MatrixFunction(lambda s, x: self.value(s, x) * c(s), lambda s, x: self.gradient(s, x) * c(s),
+                              f"c·{self.name}")
+
+
+def linear(a: Callable[[Any], Mat], name: str = "<x, a>") -> MatrixFunction:
+    """h(x) = <x, a(s)>, ∇h = a."""
+    return MatrixFunction(lambda s, x: s.killing(x, a(s)), lambda s, x: a(s), name)
+
+
+def quadratic(op: Callable[[Any, Mat], Mat] | None = None, name: str = "½<x, 𝔸x>") -> MatrixFunction:
+    """h(x) = ½<x, op(x)> with op symmetric for <,> (default: the identity), ∇h = op(x)."""
+    if op is None:
+        op = lambda s, x: x   # noqa: E731
+    return MatrixFunction(lambda s, x: s.killing(x, op(s, x)) / 2, op, name)
+
+
+def _power(M: Mat, k: int, one: Mat) -> Mat:
+    acc = one
+    for _ in range(k):
+        acc = acc @ M
+    return acc
+
+
+def trace_power(k: int, *, so_scale: Callable[[Any], Scalar] | None = None,
+                sym_scale: Callable[[Any], Scalar] | None = None,
+                shift: Callable[[Any], Mat] | None = None, name: str = "") -> MatrixFunction:
+    """h(x) = tr(M^k) with M = c₁·(x − xᵀ)/2 + c₂·(x + xᵀ)/2 + B (c₁ = so_scale, c₂ = sym_scale,
+    default 1; B = shift, default 0), ∇h = −2k(c₁·skew(M^{k−1}) + c₂·sym(M^{k−1}))."""
+    if k < 1:
+        raise ValueError("trace_power: k >= 1")
+
+    def M_of(s, x):
+        h, v = skew(x), sym(x)
+        M = (h * so_scale(s) if so_scale is not None else h) + (v * sym_scale(s) if sym_scale is not None else v)
+        return M + shift(s) if shift is not None else M
+
+    def identity_like(s, x):
+        return s.Ir if x.tags[0] == "r" else s.In
+
+    def value(s, x):
+        return _power(M_of(s, x), k, identity_like(s, x)).trace()
+
+    def gradient(s, x):
+        Mk = _power(M_of(s, x), k - 1, identity_like(s, x))
+        g_so, g_sym = skew(Mk), sym(Mk)
+        g_so = g_so * so_scale(s) if so_scale is not None else g_so
+        g_sym = g_sym * sym_scale(s) if sym_scale is not None else g_sym
+        return (g_so + g_sym) * (-2 * k)
+    return MatrixFunction(value, gradient, name or f"tr M^{k}")
+
+
+# ---------------------------------------------------------------------------------
+# Poisson tensors on a matrix space
+
+#: weights w_j with p'(0) = Σ_j w_j p(j) for every polynomial p of degree <= d (j = 0..d)
+def _derivative_weights(d: int) -> list[Fraction]:
+    pts = list(range(d + 1))
+    weights = []
+    for j in pts:
+        den = Fraction(1)
+        for m in pts:
+            if m != j:
+                den *= (j - m)
+        num = Fraction(0)
+        for l in pts:
+            if l == j:
+                continue
+            prod = Fraction(1)
+            for m in pts:
+                if m not in (j, l):
+                    prod *= (0 - m)
+            num += prod
+        weights.append(num / den)
+    return weights
+
+
+@dataclass(frozen=True)
+class PoissonTensor:
+    """Λ(a, b)|_x = form(s, x, a, b), bilinear in the covectors a, b of the space (identified with
+    the space by <,>), polynomial of degree <= ``degree`` in x."""
+
+    space: Space
+    form: Callable[[Any, Mat, Mat, Mat], Scalar]
+    degree: int = 1
+    name: str = "Λ"
+
+    def __call__(self, s: Any, x: Mat, a: Mat, b: Mat) -> Scalar:
+        return self.form(s, x, self.space.project(a), self.space.project(b))
+
+    def bracket(self, s: Any, f: MatrixFunction, g: MatrixFunction, x: Mat) -> Scalar:
+        """{f, g}(x) = Λ(∇f, ∇g)|_x (gradients projected onto the space)."""
+        return self(s, x, f.grad(s, x), g.grad(s, x))
+
+    def sharp(self, s: Any, x: Mat, a: Mat) -> Mat:
+        """The vector Λ_x(·, a)^♯: <Λ_x(·, a)^♯, c> = Λ_x(c, a) for every c (the Hamiltonian vector
+        field of a function with gradient a at x: ẋ = sharp(x, ∇H))."""
+        acc = None
+        for e, dual in self.space.basis(s):
+            term = dual * self(s, x, e, a)
+            acc = term if acc is None else acc + term
+        return acc
+
+    def __add__(self, o: "PoissonTensor") -> "PoissonTensor":
+        if o.space != self.space:
+            raise TypeError(f"a sum of tensors on {self.space.name} and {o.space.name}")
+        return PoissonTensor(self.space, lambda s, x, a, b: self.form(s, x, a, b) + o.form(s, x, a, b),
+                             max(self.degree, o.degree), f"{self.name} + {o.name}")
+
+    def scaled(self, c: Callable[[Any], Scalar]) -> "PoissonTensor":
+        """c(s)·Λ for a scalar of the scene (a pencil λ1Λ1 + λ2Λ2 is ``T1.scaled(l1) + T2.scaled(l2)``)."""
+        return PoissonTensor(self.space, lambda s, x, a, b: self.form(s, x, a, b) * c(s), self.degree,
+                             f"c·{self.name}")
+
+
+def lie_poisson(space: Space, sign: int = 1) -> PoissonTensor:
+    """The (±) Lie–Poisson bracket {h1, h2}^±(μ) = ±<μ, [∇h1, ∇h2]> on so(m) or gl(m)."""
+    if sign not in (1, -1):
+        raise ValueError("sign is +1 or -1")
+    return PoissonTensor(space, lambda s, x, a, b: s.killing(x, comm(a, b)) * sign, 1,
+                         f"({'+' if sign > 0 else '-'}) Lie-Poisson on {space.name}")
+
+
+def lambda1() -> PoissonTensor:
+    """(LAMBDA12): Λ1(ξ+η, ζ+θ)|_x = <x, [ξ,ζ] + [ξ,θ] + [η,ζ]> on gl(n) = so(n) + Sym(n), the
+    Lie–Poisson bracket of the semi-direct product so(n) ⊕_ad Sym(n)."""
+    def form(s, x, a, b):
+        xi, eta, zeta, theta = skew(a), sym(a), skew(b), sym(b)
+        return s.killing(x, comm(xi, zeta) + comm(xi, theta) + comm(eta, zeta))
+    return PoissonTensor(GL_N, form, 1, "Λ1")
+
+
+def lambda2() -> PoissonTensor:
+    """(LAMBDA12): Λ2(ξ+η, ζ+θ)|_x = <x − A, [ξ+η, ζ+θ]> on gl(n)."""
+    return PoissonTensor(GL_N, lambda s, x, a, b: s.killing(x - s.A, comm(a, b)), 1, "Λ2")
+
+
+def pencil(l1: Callable[[Any], Scalar], l2: Callable[[Any], Scalar]) -> PoissonTensor:
+    """Λ_{λ1,λ2} = λ1Λ1 + λ2Λ2."""
+    return lambda1().scaled(l1) + lambda2().scaled(l2)
+
+
+# ---------------------------------------------------------------------------------
+# checks
+
+def antisymmetry(s: Any, T: PoissonTensor, x: Mat, a: Mat, b: Mat) -> Scalar:
+    """Λ(a, b) + Λ(b, a) at x."""
+    return T(s, x, a, b) + T(s, x, b, a)
+
+
+def gradient_in_x(s: Any, T: PoissonTensor, x: Mat, b: Mat, c: Mat) -> Mat:
+    """The gradient at x of the function y ↦ Λ(b, c)|_y (exact: interpolation of the polynomial
+    t ↦ Λ(b, c)|_{x + t e_k} of degree <= T.degree at t = 0, ..., degree)."""
+    w = [s.q(q.numerator, q.denominator) for q in _derivative_weights(T.degree)]
+    values0 = T(s, x, b, c)
+    acc = None
+    for e, dual in T.space.basis(s):
+        deriv = values0 * w[0]
+        for j in range(1, T.degree + 1):
+            deriv = deriv + T(s, x + e * j, b, c) * w[j]
+        term = dual * deriv
+        acc = term if acc is None else acc + term
+    return acc
+
+
+def jacobiator(s: Any, T: PoissonTensor, x: Mat, a: Mat, b: Mat, c: Mat) -> Scalar:
+    """{f_a, {f_b, f_c}} + {f_b, {f_c, f_a}} + {f_c, {f_a, f_b}} at x for the linear functions
+    f_a = <·, a>: the Schouten bracket [Λ, Λ](a, b, c) at x."""
+    return (T(s, x, a, gradient_in_x(s, T, x, b, c)) + T(s, x, b, gradient_in_x(s, T, x, c, a))
+            + T(s, x, c, gradient_in_x(s, T, x, a, b)))
+
+
+def degree_residual(s: Any, T: PoissonTensor, x: Mat, e: Mat, b: Mat, c: Mat) -> Scalar:
+    """The (degree+1)-th finite difference of t ↦ Λ(b, c)|_{x + t e}: zero iff the form is a
+    polynomial of degree <= T.degree along the line (which the exact derivative needs)."""
+    from math import comb
+    d = T.degree + 1
+    acc = None
+    for j in range(d + 1):
+        term = T(s, x + e * j, b, c) * ((-1) ** (d - j) * comb(d, j))
+        acc = term if acc is None else acc + term
+    return acc
+
+
+def poisson_checks(s: Any, T: PoissonTensor, prefix: str = "") -> dict[str, Scalar]:
+    """Antisymmetry, polynomial degree and the Jacobi identity of T at a generic point x with
+    generic covectors a, b, c (parameters of the claim's own)."""
+    sp = T.space
+    x, a, b, c = (sp.generic(s, f"brackets_{nm}") for nm in ("x", "a", "b", "c"))
+    e = sp.generic(s, "brackets_e")
+    p = f"{prefix}: " if prefix else ""
+    return {
+        f"{p}Λ(a, b) + Λ(b, a)": antisymmetry(s, T, x, a, b),
+        f"{p}degree in x <= {T.degree}": degree_residual(s, T, x, e, b, c),
+        f"{p}Jacobi identity": jacobiator(s, T, x, a, b, c),
+    }
+
+
+def compatibility(s: Any, T1: PoissonTensor, T2: PoissonTensor, prefix: str = "") -> dict[str, Scalar]:
+    """Jacobi identity of T1 + T2 (compatibility, given that T1 and T2 are Poisson) at a generic
+    point with generic covectors."""
+    sp = T1.space
+    T = T1 + T2
+    x, a, b, c = (sp.generic(s, f"brackets_{nm}") for nm in ("x", "a", "b", "c"))
+    p = f"{prefix}: " if prefix else ""
+    return {f"{p}Jacobi identity of {T1.name} + {T2.name}": jacobiator(s, T, x, a, b, c)}
+
+
+def casimir_residual(s: Any, T: PoissonTensor, f: MatrixFunction, x: Mat, b: Mat) -> Scalar:
+    """Λ(∇f, b)|_x: zero for every b iff f is a Casimir of Λ at x."""
+    return T(s, x, f.grad(s, x), b)
+
+
+def poisson_map_residual(s: Any, bracket: PhaseBracket, moment: Callable[[Any], Mat], T: PoissonTensor,
+                         a: Mat, b: Mat) -> Scalar:
+    """{<moment, a>, <moment, b>} − Λ(a, b)|_{moment}: the map ``moment`` of the phase space into
+    T's space is Poisson (linear functions suffice: both sides are biderivations)."""
+    Fa = lambda t: t.killing(moment(t), a)   # noqa: E731
+    Fb = lambda t: t.killing(moment(t), b)   # noqa: E731
+    return bracket(s, Fa, Fb) - T(s, moment(s), a, b)
+
+
+__all__ = ["PhaseBracket", "canonical", "dirac", "metric_dirac", "dirac_bracket_for", "standard_constraints",
+           "metric_constraints", "phase_jacobiator", "skew", "sym", "Space", "SO_N", "SO_R", "GL_N", "SYM_N",
+           "pairing", "MatrixFunction", "linear", "quadratic", "trace_power", "PoissonTensor", "lie_poisson",
+           "lambda1", "lambda2", "pencil", "antisymmetry", "gradient_in_x", "jacobiator", "degree_residual",
+           "poisson_checks", "compatibility", "casimir_residual", "poisson_map_residual"]
