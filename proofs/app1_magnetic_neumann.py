@@ -1,6 +1,211 @@
 """Appendix 1. Magnetic Neumann systems: the twisted symplectic form, the momentum map Φ_ε, the magnetic flows and their Lax pairs, Proposition YM."""
 from __future__ import annotations
 
-from stiefelsym import admissible, claim, comm  # noqa: F401
+from stiefelsym import Rank, admissible, claim, comm
+from stiefelsym import twisted
+
+from .sec5_neumann import H_neumann_euclidean, H_neumann_normal, cond_XP, flow_N0
 
 SECTION = "A1"
+
+#: V(n, 2): the magnetic form de_1 ∧ de_2 needs two columns
+ON_V_N2 = admissible(n_max=5, n_min=2, r_min=2, r_max=2, condition="r = 2")
+#: T*SO(n) realized as T*V(n, n) (both components of O(n) are sampled; the formulas hold on both)
+ON_SO_N = admissible(n_max=5, n_min=2, where=lambda n, r: r == n, condition="r = n: T*SO(n) = T*V(n, n)")
+#: T*V(n, n − 1), identified with T*SO(n) by (iden1)
+ON_V_NN1 = admissible(n_max=5, n_min=2, where=lambda n, r: r == n - 1, condition="r = n - 1")
+
+
+# -- vectors, wedges and columns -----------------------------------------------------------
+
+def unit(s, i):
+    """The i-th standard basis vector of ℝʳ (a column, i from 0)."""
+    return s.mat([[1 if j == i else 0] for j in range(s.r)], ("r", "?"))
+
+
+def col(s, i):
+    """e_{i+1} = X E_{i+1}, or p_{i+1} for P."""
+    return s.X @ unit(s, i)
+
+
+def pcol(s, i):
+    """p_{i+1} = P E_{i+1}."""
+    return s.P @ unit(s, i)
+
+
+def dot(s, x, y):
+    """(x, y) = xᵀy for columns x, y."""
+    return s.tr(x.T @ y)
+
+
+def wedge(x, y):
+    """x ∧ y = x ⊗ y − y ⊗ x = xyᵀ − yxᵀ."""
+    return x @ y.T - y @ x.T
+
+
+def columns_to_matrix(s, vectors):
+    """The n × r matrix with the given columns."""
+    out = vectors[0] @ unit(s, 0).T
+    for i, v in enumerate(vectors[1:], start=1):
+        out = out + v @ unit(s, i).T
+    return out
+
+
+def projector(s, k):
+    """D_k = diag(1, ..., 1, 0, ..., 0) (k ones) on ℝʳ."""
+    return s.mat([[1 if i == j and i < k else 0 for j in range(s.r)] for i in range(s.r)], ("r", "r"))
+
+
+# -- the twisted form on T*V(n, 2) -------------------------------------------------------------
+
+def e1e2(s):
+    """e₁ ∧ e₂ = XJXᵀ, J = E₁∧E₂ ∈ so(2)."""
+    return wedge(col(s, 0), col(s, 1))
+
+
+def Phi_eps(s):
+    """(mag-mom-stief): Φ_ε = Φ + ε e₁∧e₂."""
+    return s.Phi + s.eps * e1e2(s)
+
+
+def Phi_eps_xi(s):
+    """⟨Φ_ε, ξ⟩."""
+    return s.killing(Phi_eps(s), s.xi)
+
+
+def Phi_eps_zeta(s):
+    """⟨Φ_ε, ζ⟩."""
+    return s.killing(Phi_eps(s), s.zeta)
+
+
+def H_linear(s):
+    """H = tr(UᵀX) + tr(VᵀP) with generic U, V: its differential is a generic covector."""
+    return s.tr(s.generic("U", "n", "r").T @ s.X) + s.tr(s.generic("V", "n", "r").T @ s.P)
+
+
+def tangent_vector(s):
+    """A generic tangent vector of T*V at (X, P): (ξX, ξP + Xη + (I − XXᵀ)Z) with ξ ∈ so(n), η ∈ so(r)
+    (for r < n the vectors ξX span T_XV, and Xη + (I − XXᵀ)Z spans the fibre directions)."""
+    Z = s.generic("Z", "n", "r")
+    return {"X": s.xi @ s.X, "P": s.xi @ s.P + s.X @ s.eta + (s.In - s.X @ s.X.T) @ Z}
+
+
+@claim("twisted-form", paper=("twisted",), kind="pb", sizes=ON_V_N2,
+       equivariance="the rank concerns the O(n)-invariant matrix {F_i, F_j}_eps of the O(n)-invariant constraints for the O(n)-invariant form; no coordinate of R^n is read",
+       statement=r"\omega_\epsilon=\omega+\epsilon\,\pi^*\omega_{mag},\ \omega_{mag}=de_1\wedge de_2:\quad "
+                 r"\det\big(\{F_i,F_j\}_\epsilon\big)\ne0,\quad X_H\in T(T^*V_{n,2}),\quad "
+                 r"\omega_\epsilon(X_H,v)=-dH(v)\ \ \forall v\in T(T^*V_{n,2})")
+def twisted_form_is_symplectic(s):
+    """The twisted form ω_ε = ω + ε π*ω_mag is symplectic on T*V_{n,2}: ω₀ + ε de₁∧de₂ is a constant (closed, nondegenerate) form on ℝ^{4n}, the constraints (cond_XP) stay second class for its bracket, and the Dirac flow of every H (a linear H with generic differential suffices) is tangent to T*V and satisfies ω_ε(X_H, v) = −dH(v) for every v tangent to T*V, so the twisted Dirac bracket is the Poisson bracket of ω_ε."""
+    r = s.r
+    XH = twisted.flow(s, H_linear)
+    v = tangent_vector(s)
+    return {
+        "{F_i, F_j}_eps invertible": Rank(s.mat(twisted.constraint_bracket_matrix(s)), r * (r + 1), generic=False,
+                                          meaning="T*V is a symplectic submanifold for the twisted ambient form"),
+        "X_H tangent to T*V": s.d(cond_XP, XH),
+        "v tangent to T*V": s.d(cond_XP, v),
+        "omega_eps(X_H, v) + dH(v)": twisted.form(s, XH.tangent(), v) + s.d(H_linear, v),
+    }
+
+
+@claim("magnetic-momentum-map", paper=("mag-mom-stief", "twisted"), kind="pb", sizes=ON_V_N2,
+       statement=r"\Phi_\epsilon=\Phi+\epsilon\,e_1\wedge e_2=p_1\wedge e_1+p_2\wedge e_2+\epsilon\,e_1\wedge e_2:\quad "
+                 r"X^{\epsilon}_{\langle\Phi_\epsilon,\xi\rangle}=(\xi X,\xi P),\quad "
+                 r"\tfrac{d}{ds}\Phi_\epsilon(e^{s\xi}X,e^{s\xi}P)\big|_{s=0}=[\xi,\Phi_\epsilon],\quad "
+                 r"\{\langle\Phi_\epsilon,\xi\rangle,\langle\Phi_\epsilon,\zeta\rangle\}_\epsilon=\langle\Phi_\epsilon,[\xi,\zeta]\rangle")
+def phi_eps_is_the_twisted_momentum_map(s):
+    """The left SO(n) action on (T*V_{n,2}, ω_ε) is Hamiltonian with momentum map Φ_ε = p₁∧e₁ + p₂∧e₂ + εe₁∧e₂: the Hamiltonian vector field of ⟨Φ_ε, ξ⟩ for the twisted form is the infinitesimal action (ξX, ξP), Φ_ε is equivariant, and it is a Poisson map to so(n) with the (+) Lie–Poisson bracket."""
+    e1, e2, p1, p2 = col(s, 0), col(s, 1), pcol(s, 0), pcol(s, 1)
+    left = {"X": s.xi @ s.X, "P": s.xi @ s.P}
+    flow = twisted.flow(s, Phi_eps_xi)
+    return {
+        "Phi + eps e1^e2 = p1^e1 + p2^e2 + eps e1^e2": Phi_eps(s) - (wedge(p1, e1) + wedge(p2, e2) + s.eps * wedge(e1, e2)),
+        "dX/dt = xi X": flow.Xdot - left["X"],
+        "dP/dt = xi P": flow.Pdot - left["P"],
+        "equivariance": s.d(Phi_eps, left) - comm(s.xi, Phi_eps(s)),
+        "{Phi_eps_xi, Phi_eps_zeta}_eps (+)": twisted.bracket(s, Phi_eps_xi, Phi_eps_zeta)
+        - s.killing(Phi_eps(s), comm(s.xi, s.zeta)),
+    }
+
+
+# -- the magnetic Neumann flows (mag-euk), (mag-nor) ------------------------------------------------
+
+def flow_mag_euk(s):
+    """(mag-euk) as printed, columns e_i = X E_i, p_i = P E_i."""
+    A, eps = s.A, s.eps
+    e1, e2, p1, p2 = col(s, 0), col(s, 1), pcol(s, 0), pcol(s, 1)
+    d = lambda x, y: dot(s, x, y)
+    p1dot = (-(A @ e1) + (d(e1, A @ e1) - d(p1, p1) - eps * d(e1, p2)) * e1
+             + (d(e1, A @ e2) - d(p1, p2)) * e2 + eps * p2)
+    p2dot = (-(A @ e2) + (d(e1, A @ e2) - d(p1, p2)) * e1
+             + (d(e2, A @ e2) - d(p2, p2) + eps * d(e2, p1)) * e2 - eps * p1)
+    return {"X": columns_to_matrix(s, [p1, p2]), "P": columns_to_matrix(s, [p1dot, p2dot])}
+
+
+def flow_mag_nor(s):
+    """(mag-nor) as printed, Φ₀ = Φ = PXᵀ − XPᵀ (Φ_ε at ε = 0)."""
+    A, eps, Phi0 = s.A, s.eps, s.Phi
+    e1, e2, p1, p2 = col(s, 0), col(s, 1), pcol(s, 0), pcol(s, 1)
+    d = lambda x, y: dot(s, x, y)
+    p1dot = (Phi0 @ p1 - A @ e1 + (d(e1, A @ e1) - eps * d(e1, Phi0 @ e2)) * e1 + d(e1, A @ e2) * e2
+             + eps * (Phi0 @ e2))
+    p2dot = (Phi0 @ p2 - A @ e2 + d(e2, A @ e1) * e1 + (d(e2, A @ e2) + eps * d(e2, Phi0 @ e1)) * e2
+             - eps * (Phi0 @ e1))
+    return {"X": columns_to_matrix(s, [Phi0 @ e1, Phi0 @ e2]), "P": columns_to_matrix(s, [p1dot, p2dot])}
+
+
+def twisted_flow_checks(s, H, printed):
+    """The twisted Dirac flow of H equals the printed flow, and the printed flow keeps T*V."""
+    flow = twisted.flow(s, H)
+    kept = s.d(cond_XP, printed)
+    return {
+        "dX/dt": flow.Xdot - printed["X"],
+        "dP/dt": flow.Pdot - printed["P"],
+        "d(X^T X)/dt along the printed flow": kept[0],
+        "d(X^T P + P^T X)/dt along the printed flow": kept[1],
+    }
+
+
+@claim("magnetic-euclidean-flow", paper=("mag-euk", "twisted", "neumann"), kind="id", sizes=ON_V_N2,
+       statement=r"\dot e_i=p_i,\ \dot p_1=-Ae_1+\big((e_1,Ae_1)-(p_1,p_1)-\epsilon(e_1,p_2)\big)e_1+\big((e_1,Ae_2)-(p_1,p_2)\big)e_2+\epsilon p_2,"
+                 r"\ \dot p_2=-Ae_2+\big((e_1,Ae_2)-(p_1,p_2)\big)e_1+\big((e_2,Ae_2)-(p_2,p_2)+\epsilon(e_2,p_1)\big)e_2-\epsilon p_1")
+def magnetic_neumann_euclidean_flow(s):
+    """The Hamiltonian flow of the Euclidean Neumann Hamiltonian H_neum,−½ for the twisted form ω + ε π*ω_mag on T*V_{n,2} is the printed (mag-euk), which is tangent to T*V."""
+    return twisted_flow_checks(s, H_neumann_euclidean, flow_mag_euk(s))
+
+
+@claim("magnetic-normal-flow", paper=("mag-nor", "twisted", "neumann"), kind="id", sizes=ON_V_N2,
+       statement=r"\dot e_1=\Phi_0e_1=p_1-(e_1,p_2)e_2,\ \dot e_2=\Phi_0e_2=p_2-(e_2,p_1)e_1,\ "
+                 r"\dot p_1=\Phi_0p_1-Ae_1+\big((e_1,Ae_1)-\epsilon(e_1,\Phi_0e_2)\big)e_1+(e_1,Ae_2)e_2+\epsilon\Phi_0e_2,\ "
+                 r"\dot p_2=\Phi_0p_2-Ae_2+(e_2,Ae_1)e_1+\big((e_2,Ae_2)+\epsilon(e_2,\Phi_0e_1)\big)e_2-\epsilon\Phi_0e_1")
+def magnetic_neumann_normal_flow(s):
+    """The Hamiltonian flow of the normal-metric Neumann Hamiltonian H_neum,0 for the twisted form on T*V_{n,2} is the printed (mag-nor) with Φ₀ = Φ, which is tangent to T*V, and Φ₀e₁ = p₁ − (e₁, p₂)e₂, Φ₀e₂ = p₂ − (e₂, p₁)e₁ on T*V."""
+    e1, e2, p1, p2 = col(s, 0), col(s, 1), pcol(s, 0), pcol(s, 1)
+    checks = twisted_flow_checks(s, H_neumann_normal, flow_mag_nor(s))
+    checks["Phi_0 e1 = p1 - (e1, p2) e2"] = s.Phi @ e1 - (p1 - dot(s, e1, p2) * e2)
+    checks["Phi_0 e2 = p2 - (e2, p1) e1"] = s.Phi @ e2 - (p2 - dot(s, e2, p1) * e1)
+    return checks
+
+
+def psi12(s):
+    """Ψ₁₂ = (e₁, p₂) − (e₂, p₁)."""
+    return dot(s, col(s, 0), pcol(s, 1)) - dot(s, col(s, 1), pcol(s, 0))
+
+
+@claim("magnetic-psi12-conserved", paper=("mag-euk", "mag-nor"), kind="pb", sizes=ON_V_N2,
+       statement=r"\Psi_{12}=(e_1,p_2)-(e_2,p_1):\quad \tfrac{d}{dt}\Psi_{12}=\{\Psi_{12},H\}_\epsilon=0\ "
+                 r"\text{along (mag-euk), (mag-nor)};\quad H(Xe^{s\eta},Pe^{s\eta})=H")
+def psi12_is_an_integral_of_the_magnetic_flows(s):
+    """The magnetic Neumann flows (mag-euk) and (mag-nor) are right SO(2)-invariant (so are their Hamiltonians and ω_ε) and have the integral Ψ₁₂ = (e₁, p₂) − (e₂, p₁): its twisted bracket with either Hamiltonian vanishes."""
+    right = {"X": s.X @ s.eta, "P": s.P @ s.eta}
+    checks = {}
+    for name, H in (("mag-euk", H_neumann_euclidean), ("mag-nor", H_neumann_normal)):
+        checks[f"dPsi12/dt along ({name})"] = s.d(psi12, twisted.flow(s, H))
+        checks[f"{{Psi12, H}}_eps ({name})"] = twisted.bracket(s, psi12, H)
+        checks[f"H right SO(2)-invariant ({name})"] = s.d(H, right)
+    u = {"X": s.generic("U1", "n", "r"), "P": s.generic("U2", "n", "r")}
+    v = {"X": s.generic("V1", "n", "r"), "P": s.generic("V2", "n", "r")}
+    moved = lambda w: {"X": w["X"] @ s.eta, "P": w["P"] @ s.eta}
+    checks["omega_eps right SO(2)-invariant"] = twisted.form(s, moved(u), v) + twisted.form(s, u, moved(v))
+    return checks

@@ -1,0 +1,218 @@
+"""The twisted (magnetic) symplectic structure of Appendix 1: ω_ε = ω + ε π*ω_mag on T*V_{n,r}.
+
+ω is the canonical form (the restriction of ω₀ = Σ dp_s^i ∧ de_s^i) and ω_mag = Σ_{j<k} F_jk de_j ∧ de_k
+for a constant F ∈ so(r); the appendix takes r = 2 and F = E₁∧E₂, i.e. ω_mag = de₁∧de₂ = Σ_i de₁^i∧de₂^i.
+Nothing of the paper's magnetic formulas is typed in here: the structure is built exactly as the
+Dirac construction (Dirac_bracket) builds the canonical one.
+
+* In the ambient space T*M_{n,r} = ℝ^{2nr}, ω_ε₀ = ω₀ + ε Σ F_jk de_j∧de_k has constant coefficients,
+  so it is closed; as a matrix in the coordinates (X, P) it is W = [[εK, −I], [I, 0]] with
+  K(V) = V Fᵀ, and it is nondegenerate (det W = 1).  Its Poisson tensor is W⁻¹ = [[0, I], [−I, εK]]:
+  {f, g}_ε = {f, g}₀ − ε tr(f_Pᵀ g_P F), with the convention of the scene (i_{X_H} ω = −dH,
+  Ẋ = ∂H/∂P, Ṗ = −∂H/∂X when ε = 0).
+* T*V is cut out by the constraints (cond_XP); where the matrix {F_i, F_j}_ε is invertible, T*V is a
+  symplectic submanifold of (ℝ^{2nr}, ω_ε₀), the Dirac bracket built from {,}_ε is the Poisson bracket of
+  the restricted form ω_ε₀|_{T*V} = ω + ε π*ω_mag, and the Dirac flow of H is its Hamiltonian vector field.
+
+The functions take a coordinate scene (a fixed n, r); the dimension-free backend has no so(r)-valued
+constant F and refuses them (NeedsCoordinates), so its method answers ``undecided``.
+"""
+from __future__ import annotations
+
+from typing import Any, Callable, Mapping
+
+from .fields import DegenerateError
+from .matrix import Mat, NeedsCoordinates
+from .scene import Flow, Scene
+
+Function = Callable[[Any], Any]
+
+
+def _scene(s: Any, what: str) -> Scene:
+    if not isinstance(s, Scene):
+        raise NeedsCoordinates(what)
+    return s
+
+
+def magnetic_matrix(s) -> Mat:
+    """F = E₁∧E₂ ∈ so(2) (the r×r matrix [[0, 1], [−1, 0]]): ω_mag = Σ_{j<k} F_jk de_j∧de_k = de₁∧de₂."""
+    s = _scene(s, "the magnetic form de_1 ∧ de_2 (a constant element of so(2))")
+    if s.r != 2:
+        raise ValueError(f"the magnetic form de_1 ∧ de_2 lives on V(n, 2), not on V({s.n}, {s.r})")
+    return s._cached("twisted:F", lambda: s.mat([[0, 1], [-1, 0]], ("r", "r")))
+
+
+def _field_strength(s, F: Mat | None) -> Mat:
+    F = magnetic_matrix(s) if F is None else F
+    if not isinstance(F, Mat):
+        raise TypeError("the field strength F is an r x r skew matrix of the scene")
+    return F
+
+
+def _split(s: Scene, v: list) -> tuple[Mat, Mat]:
+    flow = s._split(v)
+    return flow.Xdot, flow.Pdot
+
+
+def _flat(X: Mat, P: Mat) -> list:
+    return list(X._a.flat) + list(P._a.flat)
+
+
+def _pi(s: Scene, v: list, F: Mat) -> list:
+    """W⁻¹ v: the ambient twisted Poisson tensor applied to a covector v = (v_X, v_P)."""
+    vX, vP = _split(s, v)
+    return _flat(vP, -vX - s.eps * (vP @ F))
+
+
+def _key(F: Mat | None) -> str:
+    return "default" if F is None else str(id(F))
+
+
+def ambient_bracket(s, f: Function, g: Function, F: Mat | None = None) -> Any:
+    """{f, g}_ε = {f, g}₀ − ε tr(f_Pᵀ g_P F): the Poisson bracket of ω₀ + ε Σ F_jk de_j∧de_k on ℝ^{2nr}."""
+    s = _scene(s, "the ambient twisted bracket")
+    F = _field_strength(s, F)
+    return s._dot(s._grad_vector(f), _pi(s, s._grad_vector(g), F))
+
+
+def constraint_bracket_matrix(s, F: Mat | None = None) -> list[list[Any]]:
+    """The matrix {F_i, F_j}_ε of the scalar constraints (scalar) for the twisted ambient bracket."""
+    s = _scene(s, "the twisted constraint bracket matrix")
+    Fm = _field_strength(s, F)
+
+    def build():
+        J = s._constraint_jacobian()
+        return [[s._dot(ri, _pi(s, rj, Fm)) for rj in J] for ri in J]
+    return s._cached_for("twisted:C0:" + _key(F), Fm, build)
+
+
+def _inverse(s: Scene, F: Mat | None) -> list[list[Any]]:
+    Fm = _field_strength(s, F)
+
+    def build():
+        C0 = constraint_bracket_matrix(s, F)
+        m = len(C0)
+        I = [[s.const(1 if i == j else 0) for j in range(m)] for i in range(m)]
+        try:
+            return s.field.solve(C0, I)
+        except DegenerateError as exc:
+            raise DegenerateError("the twisted constraint bracket matrix {F_i, F_j}_eps is singular here") from exc
+    return s._cached_for("twisted:C:" + _key(F), Fm, build)
+
+
+def bracket(s, f: Function, g: Function, F: Mat | None = None) -> Any:
+    """The Dirac bracket (Dirac_bracket) built from {,}_ε: the Poisson bracket of ω + ε π*ω_mag on T*V."""
+    s = _scene(s, "the twisted Dirac bracket")
+    Fm = _field_strength(s, F)
+    J = s._constraint_jacobian()
+    C = _inverse(s, F)
+    gf, gg = s._grad_vector(f), s._grad_vector(g)
+    Fif = [s._dot(row, _pi(s, gf, Fm)) for row in J]     # {F_i, f}_ε
+    Fjg = [s._dot(row, _pi(s, gg, Fm)) for row in J]     # {F_j, g}_ε
+    acc = s._dot(gf, _pi(s, gg, Fm))
+    for i in range(len(J)):
+        for j in range(len(J)):
+            acc = acc + Fif[i] * C[i][j] * Fjg[j]
+    return s.field.normalize(acc)
+
+
+def ambient_flow(s, H: Function, F: Mat | None = None) -> Flow:
+    """The Hamiltonian vector field of H for ω₀ + ε Σ F_jk de_j∧de_k on ℝ^{2nr}: Ẋ = H_P, Ṗ = −H_X − εH_P F."""
+    s = _scene(s, "the ambient twisted flow")
+    Fm = _field_strength(s, F)
+    HX, HP = s.gradient(H)
+    return Flow(HP, -HX - s.eps * (HP @ Fm))
+
+
+def flow(s, H: Function, F: Mat | None = None) -> Flow:
+    """dz/dt = {z, H} for the twisted Dirac bracket, z = entries of X, P: the Hamiltonian vector field of
+    H for ω_ε = ω + ε π*ω_mag on T*V."""
+    s = _scene(s, "the Hamiltonian flow of the twisted form")
+    Fm = _field_strength(s, F)
+
+    def build():
+        J = s._constraint_jacobian()
+        C = _inverse(s, F)
+        z = _pi(s, s._grad_vector(H), Fm)
+        FjH = [s._dot(row, z) for row in J]               # {F_j, H}_ε
+        w = [s._dot(Ci, FjH) for Ci in C]
+        JP = [_pi(s, row, Fm) for row in J]               # {z, F_i}_ε = (W⁻¹ grad F_i)
+        out = []
+        for k in range(len(z)):
+            acc = z[k]
+            for i in range(len(J)):
+                acc = acc - JP[i][k] * w[i]
+            out.append(s.field.normalize(acc))
+        return s._split(out)
+    return s._cached_for("twisted:flow", H, build) if F is None else build()
+
+
+def multiplier_flow(s, H: Function, F: Mat | None = None) -> Flow:
+    """The Lagrange form of the twisted flow: Ẋ = H_P − XΠ, Ṗ = −H_X − εẊF + XΛ + PΠ (the Lorentz force
+    −εẊF), with symmetric Λ, Π solved from the condition that (cond_XP) is preserved.  An independent
+    derivation of :func:`flow` (the constraints' gradients moved by W⁻¹)."""
+    s = _scene(s, "the Lagrange form of the twisted flow")
+    Fm = _field_strength(s, F)
+
+    def build():
+        n, r = s.n, s.r
+        HX, HP = s.gradient(H)
+        J = s._constraint_jacobian()
+        base = _flat(HP, -HX - s.eps * (HP @ Fm))
+        units = []
+        for name in ("Lambda", "Pi"):
+            for i in range(r):
+                for j in range(i, r):
+                    E = s.zeros(r, r, ("r", "r"))
+                    E._a[i, j] = E._a[j, i] = s.const(1)
+                    if name == "Lambda":
+                        v = _flat(s.zeros(n, r, ("n", "r")), s.X @ E)
+                    else:
+                        XE = s.X @ E
+                        v = _flat(-XE, s.P @ E + s.eps * (XE @ Fm))
+                    units.append((name, i, j, v))
+        M = [[s._dot(row, u[3]) for u in units] for row in J]
+        b = [[-s._dot(row, base)] for row in J]
+        try:
+            sol = s.field.solve(M, b)
+        except DegenerateError as exc:
+            raise DegenerateError("the multipliers Lambda, Pi of the twisted flow are not unique here") from exc
+        Lam = s.zeros(r, r, ("r", "r"))
+        Pi = s.zeros(r, r, ("r", "r"))
+        for (name, i, j, _v), (c,) in zip(units, sol):
+            target = Lam if name == "Lambda" else Pi
+            target._a[i, j] = target._a[j, i] = c
+        Xd = HP - s.X @ Pi
+        Pd = -HX - s.eps * (Xd @ Fm) + s.X @ Lam + s.P @ Pi
+        return Flow(Xd, Pd, multipliers={"Lambda": Lam, "Pi": Pi})
+    return s._cached_for("twisted:mflow", H, build) if F is None else build()
+
+
+def form(s, u: Mapping[str, Mat], v: Mapping[str, Mat], F: Mat | None = None) -> Any:
+    """ω_ε(u, v) = (u_P, v_X) − (u_X, v_P) + ε Σ F_jk (u_j, v_k) for tangent vectors u, v (dicts with
+    components "X", "P"); the canonical part is ω₀ = Σ dp∧de, the magnetic part ε Σ_{j<k} F_jk de_j∧de_k."""
+    s = _scene(s, "the twisted symplectic form")
+    Fm = _field_strength(s, F)
+    uX, uP, vX, vP = u["X"], u["P"], v["X"], v["P"]
+    return s.field.normalize(s.tr(uP.T @ vX) - s.tr(uX.T @ vP) + s.eps * s.tr(uX @ Fm @ vX.T))
+
+
+def at_point(s, X: Mat, P: Mat) -> Scene:
+    """The scene's problem at another point (X, P) of T*V (same field, parameters and record): its
+    gradients, brackets and flows, the twisted ones included, are taken at (X, P).  (X, P) must lie on
+    T*V (a claim checks the constraints it relies on)."""
+    s = _scene(s, "a scene at another point")
+    for M, name in ((X, "X"), (P, "P")):
+        if not isinstance(M, Mat) or M._a.shape != (s.n, s.r):
+            raise TypeError(f"{name} must be an n x r matrix of the scene")
+    other = Scene(s.n, s.r, s.field, chart=s.chart, rng=s.rng, component=s.component,
+                  realization=s.realization, options=s.options, tracker=s.tracker)
+    other.params = s.params
+    other._cache["point"] = (Mat._wrap(X._a.copy(), s.field, ("n", "r"), s.tracker, X._coords),
+                             Mat._wrap(P._a.copy(), s.field, ("n", "r"), s.tracker, P._coords))
+    return other
+
+
+__all__ = ["magnetic_matrix", "ambient_bracket", "constraint_bracket_matrix", "bracket", "ambient_flow",
+           "flow", "multiplier_flow", "form", "at_point"]
+
