@@ -1,6 +1,517 @@
 """§6 Compatible Poisson brackets and integrability: the pencil Λ1, Λ2 on gl(n), the map Θ = Φ + XXᵀ, the Casimirs and the integrable families of the section."""
 from __future__ import annotations
 
-from stiefelsym import admissible, claim, comm  # noqa: F401
+from stiefelsym import admissible, claim, comm
+from stiefelsym.brackets import (GL_N, SO_R, casimir_residual, compatibility, dirac, lambda1, lambda2,
+                                 lie_poisson, linear, pencil, poisson_checks, poisson_map_residual, quadratic,
+                                 skew, sym, trace_power)
 
 SECTION = "6"
+
+#: the powers k of the trace functions tr(·)^k checked (the paper: k = 1, ..., n or 1, ..., r)
+POWERS = (1, 2, 3)
+
+
+def powers(m):
+    """The powers k = 1, ..., min(m, 3) of the trace functions on an m x m matrix."""
+    return tuple(k for k in POWERS if k <= max(m, 1))
+
+
+def power_trace(s, M, k):
+    """tr M^k."""
+    acc = M
+    for _ in range(k - 1):
+        acc = acc @ M
+    return s.tr(acc)
+
+
+# -- the map Θ and the functions of the section ------------------------------------------
+
+def Theta_at(X, P):
+    """Θ = Φ + XXᵀ = Σ p_i ∧ e_i + Σ e_i ⊗ e_i at the point (X, P)."""
+    return P @ X.T - X @ P.T + X @ X.T
+
+
+def Theta(t):
+    """Θ = Φ + XXᵀ at the point of the scene."""
+    return Theta_at(t.X, t.P)
+
+
+def central_function(s, x, lam, k, A=None):
+    """(central): tr(λh + v − λ²A)^k with x = h + v, h ∈ so(n), v ∈ Sym(n)."""
+    A = s.A if A is None else A
+    return power_trace(s, lam * skew(x) + sym(x) - lam * lam * A, k)
+
+
+def central(k, lam, shift_A=True):
+    """(central) as a function on gl(n) with its gradient: tr(λh + v − λ²A)^k (λ = lam(s))."""
+    if shift_A:
+        return trace_power(k, so_scale=lam, shift=lambda s: -(lam(s) * lam(s)) * s.A, name=f"tr(λh+v-λ²A)^{k}")
+    return trace_power(k, so_scale=lam, name=f"tr(λh+v)^{k}")
+
+
+def perelomov(t, lam, k):
+    """(perelomov): tr(λ(PXᵀ − XPᵀ) + XXᵀ − λ²A)^k."""
+    return power_trace(t, lam * (t.P @ t.X.T - t.X @ t.P.T) + t.X @ t.X.T - lam * lam * t.A, k)
+
+
+def FF(t, lam, k):
+    """(FF): tr(λ(PXᵀ − XPᵀ) + XXᵀ)^k (A = 0)."""
+    return power_trace(t, lam * (t.P @ t.X.T - t.X @ t.P.T) + t.X @ t.X.T, k)
+
+
+def mu(t):
+    """A second value μ of the spectral parameter."""
+    return t.scalar("mu")
+
+
+def Phi_xi(t):
+    """Φ_ξ = <Φ, ξ>."""
+    return t.killing(t.Phi, t.xi)
+
+
+def Psi_eta(t):
+    """Ψ_η = <Ψ, η>."""
+    return t.killing(t.Psi, t.eta)
+
+
+def H_jensen(t):
+    """(EM) H_κ = ½<Φ, Φ> + κ/2 <Ψ, Ψ>."""
+    return t.killing(t.Phi, t.Phi) / 2 + t.kappa * t.killing(t.Psi, t.Psi) / 2
+
+
+def H_neum0(t):
+    """(neumann) with κ = 0: ½tr(PᵀP) − ½tr((XᵀP)²) + ½tr(XᵀAX)."""
+    XtP = t.X.T @ t.P
+    return t.tr(t.P.T @ t.P) / 2 - t.tr(XtP @ XtP) / 2 + t.tr(t.X.T @ t.A @ t.X) / 2
+
+
+def H_cpb_value(s, x):
+    """The Hamiltonian of the Remark after Theorem NEUMANN: H = ½<h, h> − <A, v>, x = h + v."""
+    return s.killing(skew(x), skew(x)) / 2 - s.killing(s.A, sym(x))
+
+
+#: H = ½<h, h> − <A, v> as a function on gl(n) with its gradient ∇H = h − A
+H_CPB = quadratic(lambda s, x: skew(x), "½<h,h>") + linear(lambda s: -s.A, "-<A,v>")
+
+
+def gl_generic(s, name):
+    """A generic n x n matrix (an element, or a covector, of gl(n))."""
+    return s.generic(name, "n", "n")
+
+
+# -- the Lie algebra gl(n) = so(n) + Sym(n) and the pencil --------------------------------
+
+@claim("symmetric-pair", paper=("symmetric-pair", "killing"), kind="id",
+       statement=r"[so(n),Sym(n)]\subset Sym(n),\quad [Sym(n),Sym(n)]\subset so(n),\quad "
+                 r"\langle so(n),Sym(n)\rangle=0,\quad \langle\xi,\xi\rangle=\tfrac12\tr(\xi^T\xi),\ "
+                 r"\langle\eta,\eta\rangle=-\tfrac12\tr(\eta^T\eta)")
+def symmetric_pair(s):
+    """(symmetric-pair): gl(n) = so(n) + Sym(n) is a symmetric pair, the decomposition is orthogonal for <,>, and <,> is positive definite on so(n) (½ the sum of squares of the entries) and negative definite on Sym(n)."""
+    xi = s.xi
+    eta = gl_generic(s, "S") + gl_generic(s, "S").T
+    theta = gl_generic(s, "T") + gl_generic(s, "T").T
+    C = comm(xi, eta)
+    D = comm(eta, theta)
+    return {
+        "[xi, eta] symmetric": C - C.T,
+        "[eta, theta] skew": D + D.T,
+        "<xi, eta>": s.killing(xi, eta),
+        "<xi, xi> = 1/2 tr(xi^T xi)": s.killing(xi, xi) - s.tr(xi.T @ xi) / 2,
+        "<eta, eta> = -1/2 tr(eta^T eta)": s.killing(eta, eta) + s.tr(eta.T @ eta) / 2,
+    }
+
+
+@claim("lambda12-compatible", paper=("LAMBDA12",), kind="pb", exact_max_n=3,
+       equivariance="no point of T*V enters: the tensors are evaluated at a generic x in gl(n) with generic covectors, in a basis of gl(n)",
+       statement=r"\Lambda_1(\xi+\eta,\zeta+\theta)|_x=\langle x,[\xi,\zeta]+[\xi,\theta]+[\eta,\zeta]\rangle,\ "
+                 r"\Lambda_2(\xi+\eta,\zeta+\theta)|_x=\langle x-A,[\xi+\eta,\zeta+\theta]\rangle:\quad "
+                 r"[\Lambda_1,\Lambda_1]=[\Lambda_2,\Lambda_2]=[\Lambda_1,\Lambda_2]=0")
+def pencil_is_poisson_and_compatible(s):
+    """(LAMBDA12): Λ1 and Λ2 on gl(n) are antisymmetric and satisfy the Jacobi identity, and so does Λ1 + Λ2, so they are compatible (Jacobi identity for linear functions with generic covectors at a generic point, the derivative in x taken exactly)."""
+    checks = {}
+    checks.update(poisson_checks(s, lambda1(), "Lambda1"))
+    checks.update(poisson_checks(s, lambda2(), "Lambda2"))
+    checks.update(compatibility(s, lambda1(), lambda2(), "pencil"))
+    return checks
+
+
+@claim("pencil-casimirs", paper=("central", "LAMBDA12"), kind="pb", exact_max_n=3,
+       equivariance="no point of T*V enters: the pencil is evaluated at a generic x in gl(n)",
+       statement=r"\Lambda_{\lambda_1,\lambda_2}\big(\nabla\tr(\sqrt{\tfrac{\lambda_2}{\lambda_1+\lambda_2}}h+v-"
+                 r"\tfrac{\lambda_2}{\lambda_1+\lambda_2}A)^k,\cdot\big)=0;\quad "
+                 r"\{\tr(\lambda h+v-\lambda^2A)^k,\tr(\mu h+v-\mu^2A)^m\}_{\Lambda_{\lambda_1,\lambda_2}}=0,\ k,m\le3")
+def pencil_casimirs_commute(s):
+    """The functions tr(√(λ₂/(λ₁+λ₂))h + v − λ₂/(λ₁+λ₂)A)^k are Casimirs of Λ_{λ1,λ2} = λ₁Λ₁ + λ₂Λ₂ (written with λ₁ = σ(1 − c²), λ₂ = σc², which covers every λ₂/(λ₁+λ₂) > 0), and the functions (central) tr(λh + v − λ²A)^k commute for every bracket of the pencil (k, m = 1, 2, 3, at a generic point of gl(n))."""
+    n = s.n
+    c = lambda t: t.scalar("c")                                      # noqa: E731
+    sigma = lambda t: t.scalar("sigma")                              # noqa: E731
+    T_c = pencil(lambda t: sigma(t) * (t.q(1) - c(t) * c(t)), lambda t: sigma(t) * c(t) * c(t))
+    T = pencil(lambda t: t.scalar("lambda_1"), lambda t: t.scalar("lambda_2"))
+    x, b = gl_generic(s, "x"), gl_generic(s, "b")
+    checks = {}
+    for k in powers(n):
+        checks[f"Lambda(grad f_{k}, b): f_{k} a Casimir"] = casimir_residual(s, T_c, central(k, c), x, b)
+    for k in powers(n):
+        for m in powers(n):
+            if m >= k:
+                checks[f"{{tr L(lambda)^{k}, tr L(mu)^{m}}} in the pencil"] = T.bracket(
+                    s, central(k, lambda t: t.lam), central(m, mu), x)
+    return checks
+
+
+# -- the Poisson map Θ ------------------------------------------------------------------
+
+@claim("theta-poisson-map", paper=("LAMBDA12", "right_action", "perelomov", "central"), kind="pb", exact_max_n=3,
+       statement=r"\{\langle\Theta,a\rangle,\langle\Theta,b\rangle\}=\Lambda_1(a,b)|_{\Theta},\ \Theta=\Phi+XX^T;\quad "
+                 r"\Theta(XQ,PQ)=\Theta(X,P)=\Theta(-X,-P);\quad \mathfrak F=\Theta^*\mathcal F")
+def theta_is_a_poisson_map(s):
+    """Θ = Φ + XXᵀ is a Poisson map from (T*V, Dirac bracket) to (gl(n), Λ1) (linear functions with generic covectors a, b suffice), invariant under the right SO(r) action and under (X, P) ↦ (−X, −P), and the integrals (perelomov) are the pull-backs Θ*𝓕 of the functions (central)."""
+    a, b = (lambda t: gl_generic(t, "a")), (lambda t: gl_generic(t, "b"))
+    right = {"X": s.X @ s.eta, "P": s.P @ s.eta}
+    checks = {
+        "{<Theta,a>, <Theta,b>} - Lambda1(a, b)|Theta": poisson_map_residual(s, dirac, Theta, lambda1(), a, b),
+        "d Theta along (X eta, P eta)": s.d(Theta, right),
+        "Theta(-X, -P) - Theta(X, P)": Theta_at(-s.X, -s.P) - Theta(s),
+    }
+    for k in POWERS:
+        checks[f"perelomov_{k} - central_{k}(Theta)"] = perelomov(s, s.lam, k) - central_function(s, Theta(s), s.lam, k)
+    return checks
+
+
+def theta2_semidirect_bracket(s, a, b, mu_, Y):
+    """{<Θ₂, a>, <Θ₂, b>} on (so(n) ⊕_ρ M_{n,r})* at (μ, Y) for Θ₂(μ, Y) = μ + YYᵀ: the Lie–Poisson
+    bracket <μ, [α_a, α_b]> − tr(U_bᵀα_aY) + tr(U_aᵀα_bY) with the gradients α = skew(a) in so(n) and
+    U = −sym(a)Y in M_{n,r} (trace pairing), the bracket of which Θ₁ = Φ + X is a realization
+    ({<μ, α>, tr(UᵀY)} = −tr(UᵀαY), as {Φ_ξ, tr(UᵀX)} = −tr(UᵀξX))."""
+    alpha_a, alpha_b = skew(a), skew(b)
+    U_a, U_b = -(sym(a) @ Y), -(sym(b) @ Y)
+    return (s.killing(mu_, comm(alpha_a, alpha_b)) - s.tr(U_b.T @ alpha_a @ Y) + s.tr(U_a.T @ alpha_b @ Y))
+
+
+@claim("theta-factorization", paper=("LAMBDA12", "momentum_map"), kind="pb", exact_max_n=3,
+       statement=r"\Theta=\Theta_2\circ\Theta_1,\ \Theta_1=\Phi+X,\ \Theta_2(\xi,Y)=\xi+YY^T:\quad "
+                 r"\{\Phi_\xi,\Phi_\zeta\}=\langle\Phi,[\xi,\zeta]\rangle,\ \{\Phi_\xi,\tr(U^TX)\}=-\tr(U^T\xi X),\ "
+                 r"\{\tr(U^TX),\tr(V^TX)\}=0;\ \Theta_2\ \text{Poisson into}\ (so(n)\oplus_{\ad}Sym(n))^*")
+def theta_is_a_composition_of_poisson_maps(s):
+    """Θ = Θ₂∘Θ₁: Θ₁ = Φ + X satisfies the Lie–Poisson relations of the semi-direct product so(n) ⊕_ρ M_{n,r} for the Dirac bracket ({Φ_ξ, Φ_ζ} = Φ_[ξ,ζ], {Φ_ξ, tr(UᵀX)} = −tr(UᵀξX), {tr(UᵀX), tr(VᵀX)} = 0), and Θ₂(μ, Y) = μ + YYᵀ maps that bracket to Λ₁ (at a generic (μ, Y), with generic covectors a, b of gl(n))."""
+    U, V = s.generic("U", "n", "r"), s.generic("V", "n", "r")
+    zeta = s.zeta
+    a, b = gl_generic(s, "a"), gl_generic(s, "b")
+    mu_, Y = s.xi, s.generic("Y", "n", "r")
+    trUX = lambda t: t.tr(t.generic("U", "n", "r").T @ t.X)   # noqa: E731
+    trVX = lambda t: t.tr(t.generic("V", "n", "r").T @ t.X)   # noqa: E731
+    return {
+        "{Phi_xi, Phi_zeta} - <Phi, [xi, zeta]>": s.bracket(Phi_xi, lambda t: t.killing(t.Phi, t.zeta))
+        - s.killing(s.Phi, comm(s.xi, zeta)),
+        "{Phi_xi, tr(U^T X)} + tr(U^T xi X)": s.bracket(Phi_xi, trUX) + s.tr(U.T @ s.xi @ s.X),
+        "{tr(U^T X), tr(V^T X)}": s.bracket(trUX, trVX),
+        "Theta_2 Poisson": theta2_semidirect_bracket(s, a, b, mu_, Y) - lambda1()(s, mu_ + Y @ Y.T, a, b),
+        "Theta = Theta_2(Phi, X)": (s.Phi + s.X @ s.X.T) - Theta(s),
+    }
+
+
+# -- the reduced bracket and its Casimirs J_k ---------------------------------------------
+
+def J(t, k):
+    """J_k = tr(Ψ^{2k})."""
+    return power_trace(t, t.Psi, 2 * k)
+
+
+@claim("reduced-bracket-casimirs", paper=("REDUCED_BRACKET", "torus"), kind="pb", exact_max_n=3,
+       sizes=admissible(5, r_min=2, condition="r >= 2 (J_k exist for k <= [r/2])"),
+       statement=r"X_{J_k}=(X\omega,P\omega),\ \omega=-4k\Psi^{2k-1}\in so(r);\quad \{J_k,\langle\Theta,a\rangle\}="
+                 r"\{J_k,\Psi_\eta\}=\{\langle\Theta,a\rangle,\Psi_\eta\}=0,\quad J_k=\tr\Psi^{2k},\ k\le[r/2]")
+def psi_powers_are_casimirs_of_the_reduced_bracket(s):
+    """The Hamiltonian vector field of J_k = tr(Ψ^{2k}) (k ≤ [r/2]) is the infinitesimal right action of ω = −4kΨ^{2k−1} ∈ so(r), tangent to the SO(r)-orbits, so J_k commutes with every SO(r)-invariant function (j_k is a Casimir of the reduced bracket {,}′), in particular with the components of Θ; and the functions (torus) commute with Ψ."""
+    Theta_a = lambda t: t.killing(Theta(t), gl_generic(t, "a"))   # noqa: E731
+    checks = {"{<Theta, a>, Psi_eta}": s.bracket(Theta_a, Psi_eta)}
+    for k in range(1, s.r // 2 + 1):
+        flow = s.dirac_flow(lambda t, k=k: J(t, k))
+        omega = s.Psi
+        for _ in range(2 * k - 2):
+            omega = omega @ s.Psi
+        omega = omega * (-4 * k)
+        checks[f"X_J{k} - (X omega, P omega): X"] = flow.Xdot - s.X @ omega
+        checks[f"X_J{k} - (X omega, P omega): P"] = flow.Pdot - s.P @ omega
+        checks[f"{{J_{k}, <Theta, a>}}"] = s.bracket(lambda t, k=k: J(t, k), Theta_a)
+        checks[f"{{J_{k}, Psi_eta}}"] = s.bracket(lambda t, k=k: J(t, k), Psi_eta)
+    return checks
+
+
+# -- the Clebsch–Perelomov–Bogoyavlenski system (CPB) --------------------------------------
+
+@claim("cpb-hamiltonian", paper=("CPB", "neumann", "N0_XP2", "prep"), kind="id",
+       statement=r"H_{neum_0}=H\circ\Theta,\ H=\tfrac12\langle h,h\rangle-\langle A,v\rangle;\quad "
+                 r"\tfrac{d}{dt}\Theta=[v,A]+[h,v]\big|_{h=\Phi,\,v=XX^T}\ \text{along (N0\_XP2)}")
+def neumann_normal_hamiltonian_is_pulled_back(s):
+    """Remark after Theorem NEUMANN: H_neum₀ = H∘Θ with H = ½<h, h> − <A, v>, and along the Dirac flow of H_neum₀ the image Θ(X, P) = h + v moves by (CPB): ḣ = [v, A], v̇ = [h, v]."""
+    flow = s.dirac_flow(H_neum0)
+    h, v = s.Phi, s.X @ s.X.T
+    return {
+        "H_neum0 - H(Theta)": H_neum0(s) - H_cpb_value(s, Theta(s)),
+        "dh/dt - [v, A]": s.d(lambda t: t.Phi, flow) - comm(v, s.A),
+        "dv/dt - [h, v]": s.d(lambda t: t.X @ t.X.T, flow) - comm(h, v),
+    }
+
+
+@claim("cpb-flow", paper=("CPB", "central", "LAMBDA12"), kind="pb", exact_max_n=3,
+       equivariance="no point of T*V enters: the flow is evaluated at a generic x in gl(n)",
+       statement=r"\dot x=\Lambda_1(\cdot,\nabla H)^\sharp\iff\dot h=[v,A],\ \dot v=[h,v];\quad "
+                 r"\{\tr(\lambda h+v-\lambda^2A)^k,H\}_{\Lambda_1}=0,\ k\le3")
+def cpb_is_the_hamiltonian_flow_of_H(s):
+    """The Hamiltonian flow of H = ½<h, h> − <A, v> for Λ₁ on gl(n) is (CPB) ḣ = [v, A], v̇ = [h, v], and the functions (central) are its integrals (k = 1, 2, 3, at a generic point of gl(n))."""
+    x = gl_generic(s, "x")
+    h, v = skew(x), sym(x)
+    T = lambda1()
+    xdot = T.sharp(s, x, H_CPB.grad(s, x))
+    checks = {"x' - ([v, A] + [h, v])": xdot - (comm(v, s.A) + comm(h, v))}
+    for k in powers(s.n):
+        checks[f"{{tr L(lambda)^{k}, H}}_Lambda1"] = T.bracket(s, central(k, lambda t: t.lam), H_CPB, x)
+    return checks
+
+
+# -- A = 0: the integrals (FF) of the geodesic flows ---------------------------------------
+
+@claim("ff-integrals", paper=("FF", "so(n)+so(r)", "EM"), kind="pb", exact_max_n=3,
+       statement=r"\{\tr(\lambda\Phi+XX^T)^k,\tr(\mu\Phi+XX^T)^m\}=\{\tr(\lambda\Phi+XX^T)^k,\Phi_\xi\}="
+                 r"\{\tr(\lambda\Phi+XX^T)^k,\Psi_\eta\}=\{\tr(\lambda\Phi+XX^T)^k,H_\kappa\}=0,\ k,m\le3")
+def ff_commute_and_are_integrals(s):
+    """The functions (FF) tr(λ(PXᵀ − XPᵀ) + XXᵀ)^k, k = 1, 2, 3, commute for two values λ, μ, are SO(n)×SO(r)-invariant (they commute with Φ_ξ and Ψ_η) and are integrals of the geodesic flows of the Jensen metrics H_κ."""
+    checks = {}
+    for k in POWERS:
+        f = lambda t, k=k: FF(t, t.lam, k)   # noqa: E731
+        for m in POWERS:
+            if m >= k:
+                checks[f"{{FF_{k}(lambda), FF_{m}(mu)}}"] = s.bracket(f, lambda t, m=m: FF(t, mu(t), m))
+        checks[f"{{FF_{k}, Phi_xi}}"] = s.bracket(f, Phi_xi)
+        checks[f"{{FF_{k}, Psi_eta}}"] = s.bracket(f, Psi_eta)
+        checks[f"{{FF_{k}, H_kappa}}"] = s.bracket(f, H_jensen)
+    return checks
+
+
+# -- the Manakov family on so(r) (BB), Theorem CIF, Corollaries nikinorov and COM -----------
+
+def b_diagonal(t):
+    """B = diag(B_1, ..., B_r) as printed after Theorem CIF, fresh parameters of the claim."""
+    r = t.r
+    b = [t.scalar(f"B_{i + 1}") for i in range(r)]
+    return t.mat([[b[i] if i == j else t.q(0) for j in range(r)] for i in range(r)], ("r", "r"))
+
+
+def b_symmetric(t):
+    """A generic symmetric r x r matrix B.  The identities on T*V are checked for it: they are
+    polynomial in B, so they hold for the diagonal B of the paper as a special case."""
+    G = t.generic("B", "r", "r")
+    return G + G.T
+
+
+def manakov_so_r(t, xi, B=None):
+    """𝔹(ξ) = Bξ + ξB, the Manakov operator on so(r)."""
+    B = b_symmetric(t) if B is None else B
+    return B @ xi + xi @ B
+
+
+def bb(t, M, nu, k, B=None):
+    """(BB): tr(M + νB)^k for M in so(r)."""
+    B = b_symmetric(t) if B is None else B
+    return power_trace(t, M + nu * B, k)
+
+
+def so_r_coordinates(t, xi):
+    """The coordinates <ξ, E_i ∧ E_j> = ξ_ij (i < j) of ξ ∈ so(r) in the orthonormal basis."""
+    r = t.r
+    return [xi[i, j] for i in range(r) for j in range(i + 1, r)]
+
+
+def half_form_generic(t, xi):
+    """½<ξ, 𝔹ξ> = ½Σ β_kl c_k c_l for a generic operator 𝔹 on so(r), symmetric for <,>
+    (β symmetric: fresh parameters; c the coordinates of ξ)."""
+    c = so_r_coordinates(t, xi)
+    acc = t.q(0)
+    for k in range(len(c)):
+        for l in range(len(c)):
+            i, j = min(k, l), max(k, l)
+            acc = acc + t.scalar(f"beta_{i + 1}_{j + 1}") * c[k] * c[l]
+    return acc / 2
+
+
+def H_B_generic(t):
+    """(HB): H_𝔹 = ½tr(PᵀP) − ¼tr(Ψ𝔹(Ψ)) = ½tr(PᵀP) + ½<Ψ, 𝔹Ψ> for a generic symmetric 𝔹 on so(r)."""
+    return t.tr(t.P.T @ t.P) / 2 + half_form_generic(t, t.Psi)
+
+
+def H_B_manakov(t):
+    """(HB) with 𝔹(ξ) = Bξ + ξB: ½tr(PᵀP) − ¼tr(Ψ𝔹(Ψ))."""
+    return t.tr(t.P.T @ t.P) / 2 - t.tr(t.Psi @ manakov_so_r(t, t.Psi)) / 4
+
+
+def potential(t):
+    """½tr(XᵀAX)."""
+    return t.tr(t.X.T @ t.A @ t.X) / 2
+
+
+@claim("bb-manakov-so-r", paper=("BB", "e-so(r)"), kind="pb", exact_max_n=3,
+       sizes=admissible(5, r_min=2, condition="r >= 2 (so(1) = 0)"),
+       equivariance="the functions are evaluated at a generic ξ in so(r) (B diagonal); no coordinate of R^n",
+       statement=r"\dot\xi=\{\xi,h_{\mathbb B}\}^-_{so(r)}=[\xi,\mathbb B\xi],\ \mathbb B\xi=B\xi+\xi B;\quad "
+                 r"\{\tr(\xi+\mu B)^k,\tr(\xi+\nu B)^m\}^-=\{\tr(\xi+\mu B)^k,h_{\mathbb B}\}^-=0,\ k,m\le3")
+def manakov_family_on_so_r(s):
+    """(e-so(r)), (BB): for 𝔹(ξ) = Bξ + ξB with B = diag(B₁, ..., B_r), the Hamiltonian vector field of h_𝔹 = ½<ξ, 𝔹ξ> for the (−) Lie–Poisson bracket on so(r) is ξ̇ = [ξ, 𝔹ξ], and the functions tr(ξ + μB)^k commute with each other and with h_𝔹 (k, m = 1, 2, 3, at a generic ξ ∈ so(r))."""
+    T = lie_poisson(SO_R, -1)
+    xi = s.eta
+    h_B = quadratic(lambda t, x: manakov_so_r(t, x, b_diagonal(t)), "h_B")
+    fam = lambda k, nu: trace_power(k, so_scale=lambda t: t.q(1), shift=lambda t: nu(t) * b_diagonal(t))  # noqa: E731
+    checks = {"xi' - [xi, B xi]": T.sharp(s, xi, h_B.grad(s, xi)) - comm(xi, manakov_so_r(s, xi, b_diagonal(s)))}
+    for k in powers(s.r):
+        for m in powers(s.r):
+            if m >= k:
+                checks[f"{{tr(xi+mu B)^{k}, tr(xi+nu B)^{m}}}^-"] = T.bracket(
+                    s, fam(k, lambda t: t.lam), fam(m, mu), xi)
+        checks[f"{{tr(xi+mu B)^{k}, h_B}}^-"] = T.bracket(s, fam(k, lambda t: t.lam), h_B, xi)
+    return checks
+
+
+@claim("cif-integrals", paper=("CIF", "HB", "BB", "FF"), kind="pb", exact_max_n=3,
+       sizes=admissible(5, r_min=2, condition="r >= 2 (so(1) = 0)"),
+       statement=r"\{\mathfrak B,\mathfrak B\}=\{\mathfrak B,\mathfrak F\}=\{\mathfrak B,\Phi_\xi\}=0,\ "
+                 r"\mathfrak B=\{\tr(\Psi+\mu B)^k\};\quad \{\Phi_\xi,H_{\mathbb B}\}=\{\mathfrak F,H_{\mathbb B}\}=0;\ "
+                 r"\{\mathfrak B,H_{\mathbb B}\}=0\ \text{for}\ \mathbb B\xi=B\xi+\xi B")
+def cif_set_is_commutative_and_conserved(s):
+    """Theorem CIF with the Manakov family (BB): 𝔅 = {tr(Ψ + μB)^k} and 𝔉 (FF) form a commutative set of SO(n)-invariant functions; for every symmetric 𝔹 on so(r) the geodesic flow of H_𝔹 (HB) has the integrals Φ and 𝔉, and for 𝔹(ξ) = Bξ + ξB also 𝔅 (k, m = 1, 2, 3; B generic symmetric, the diagonal B of the paper being a special case)."""
+    checks = {}
+    for k in powers(s.r):
+        b_k = lambda t, k=k: bb(t, t.Psi, t.lam, k)   # noqa: E731
+        for m in powers(s.r):
+            if m >= k:
+                checks[f"{{BB_{k}(lambda), BB_{m}(mu)}}"] = s.bracket(b_k, lambda t, m=m: bb(t, t.Psi, mu(t), m))
+        checks[f"{{BB_{k}, FF_2}}"] = s.bracket(b_k, lambda t: FF(t, mu(t), 2))
+        checks[f"{{BB_{k}, Phi_xi}}"] = s.bracket(b_k, Phi_xi)
+        checks[f"{{BB_{k}, H_B (Manakov)}}"] = s.bracket(b_k, H_B_manakov)
+    checks["{Phi_xi, H_B}"] = s.bracket(Phi_xi, H_B_generic)
+    for k in POWERS:
+        checks[f"{{FF_{k}, H_B}}"] = s.bracket(lambda t, k=k: FF(t, t.lam, k), H_B_generic)
+    return checks
+
+
+def blocks_of_r(r):
+    """The partition r = r₁ + r₂ of (EM3) used: r₁ = ⌈r/2⌉, r₂ = ⌊r/2⌋, as index ranges."""
+    r1 = (r + 1) // 2
+    return [(0, r1), (r1, r)]
+
+
+def block_of(M, block):
+    """ξ_i: the so(r_i) block of ξ ∈ so(r) (the orthogonal projection onto so(r_i), as an r_i x r_i matrix)."""
+    i0, i1 = block
+    return M[i0:i1, i0:i1]
+
+
+def K_of(t, xi):
+    """(EM3): K(ξ) = κ₀/2<ξ, ξ> + Σ κᵢ/2<ξᵢ, ξᵢ>."""
+    acc = t.scalar("kappa_0") * t.killing(xi, xi) / 2
+    for i, block in enumerate(blocks_of_r(t.r)):
+        if block[1] - block[0] >= 2:
+            xi_i = block_of(xi, block)
+            acc = acc + t.scalar(f"kappa_{i + 1}") * t.killing(xi_i, xi_i) / 2
+    return acc
+
+
+def H_K(t):
+    """(EM2): H_K = ½<Φ, Φ> + K∘Ψ."""
+    return t.killing(t.Phi, t.Phi) / 2 + K_of(t, t.Psi)
+
+
+def chain_functions(r):
+    """The chain functions of so(r₁) ⊕ so(r₂) ⊂ so(r): (name, f(t)) with f = tr Ψ^{2k}, tr Ψᵢ^{2k}."""
+    out = [(f"tr Psi^{2 * k}", lambda t, k=k: power_trace(t, t.Psi, 2 * k)) for k in (1, 2) if 2 * k <= r]
+    for i, block in enumerate(blocks_of_r(r)):
+        for k in (1, 2):
+            if 2 * k <= block[1] - block[0]:
+                out.append((f"tr Psi_{i + 1}^{2 * k}",
+                            lambda t, k=k, block=block: power_trace(t, block_of(t.Psi, block), 2 * k)))
+    return out
+
+
+@claim("nikinorov-integrals", paper=("nikinorov", "EM2", "EM3", "FF"), kind="pb", exact_max_n=3,
+       sizes=admissible(5, r_min=2, condition="r >= 2 (so(1) = 0)"),
+       statement=r"H_K=\tfrac12\langle\Phi,\Phi\rangle+K\circ\Psi:\ \{\Phi_\xi,H_K\}=\{\mathfrak F,H_K\}=0,\ "
+                 r"\{\tr\Psi^{2k},\cdot\}=\{\tr\Psi_i^{2k},\tr\Psi_j^{2m}\}=\{\tr\Psi_i^{2k},H_K\}=0")
+def einstein_metric_flows_have_commuting_integrals(s):
+    """Corollary nikinorov: the geodesic flow of H_K (EM2), (EM3) (here r = r₁ + r₂, r₁ = ⌈r/2⌉) has the integrals Φ and 𝔉 (FF), and the chain functions tr Ψ^{2k}, tr Ψᵢ^{2k} of so(r₁) ⊕ so(r₂) ⊂ so(r) commute with each other and with H_K (the bracket part of the statement)."""
+    checks = {"{Phi_xi, H_K}": s.bracket(Phi_xi, H_K)}
+    for k in POWERS:
+        checks[f"{{FF_{k}, H_K}}"] = s.bracket(lambda t, k=k: FF(t, t.lam, k), H_K)
+    chain = chain_functions(s.r)
+    for i, (name, f) in enumerate(chain):
+        checks[f"{{{name}, H_K}}"] = s.bracket(f, H_K)
+        for name2, g in chain[i + 1:]:
+            checks[f"{{{name}, {name2}}}"] = s.bracket(f, g)
+    return checks
+
+
+@claim("com-integrals", paper=("COM", "perelomov", "BB"), kind="pb", exact_max_n=3,
+       sizes=admissible(5, r_min=2, condition="r >= 2 (so(1) = 0)"),
+       statement=r"H_{neum,\mathbb B}=H_{\mathbb B}+\tfrac12\tr(X^TAX):\ \{\mathfrak F,H_{neum,\mathbb B}\}="
+                 r"\{\mathfrak F,\mathfrak B\}=0,\ \mathfrak F\ \text{(perelomov)};\ \{\mathfrak B,H_{neum,\mathbb B}\}=0\ "
+                 r"\text{for}\ \mathbb B\xi=B\xi+\xi B")
+def neumann_with_b_metric_has_commuting_integrals(s):
+    """Corollary COM: the integrals (perelomov) are conserved by the Neumann system H_neum,𝔹 for every symmetric 𝔹 on so(r) and commute with 𝔅 (BB); for 𝔹(ξ) = Bξ + ξB the functions of 𝔅 are conserved too (k = 1, 2, 3)."""
+    H_gen = lambda t: H_B_generic(t) + potential(t)   # noqa: E731
+    H_man = lambda t: H_B_manakov(t) + potential(t)   # noqa: E731
+    checks = {}
+    for k in POWERS:
+        f = lambda t, k=k: perelomov(t, t.lam, k)   # noqa: E731
+        checks[f"{{perelomov_{k}, H_neum,B}}"] = s.bracket(f, H_gen)
+        checks[f"{{perelomov_{k}, BB_2}}"] = s.bracket(f, lambda t: bb(t, t.Psi, mu(t), 2))
+    for k in powers(s.r):
+        checks[f"{{BB_{k}, H_neum,B (Manakov)}}"] = s.bracket(lambda t, k=k: bb(t, t.Psi, t.lam, k), H_man)
+    return checks
+
+
+# -- singular A: the Noether integrals Φ_A ---------------------------------------------------
+
+def partitions_of_n(n):
+    """The eigenspaces of A used (index ranges): pairs (a₁ = a₂, a₃ = a₄, ...) and A = αI."""
+    return {"pairs": [(i, min(i + 2, n)) for i in range(0, n, 2)], "scalar": [(0, n)]}
+
+
+def isotropy_pairing(t, M, xi, blocks):
+    """<pr_{so(n)_A} M, ξ> = Σ <M_ii, ξ_ii> over the diagonal blocks (the eigenspaces of A)."""
+    acc = t.q(0)
+    for i0, i1 in blocks:
+        if i1 - i0 >= 2:
+            acc = acc + t.killing(M[i0:i1, i0:i1], xi[i0:i1, i0:i1])
+    return acc
+
+
+def H_neum_singular(blocks):
+    """(neumann) with κ free and A = diag(α₁I_{k₁}, α₂I_{k₂}, ...): ½tr(XᵀAX) = ½Σ αᵢ tr(XᵢᵀXᵢ),
+    Xᵢ the rows of X in the i-th eigenspace."""
+    def H(t):
+        XtP = t.X.T @ t.P
+        V = t.q(0)
+        for i, (i0, i1) in enumerate(blocks):
+            Xi = t.X[i0:i1, 0:t.r]
+            V = V + t.scalar(f"alpha_{i + 1}") * t.tr(Xi.T @ Xi)
+        return t.tr(t.P.T @ t.P) / 2 - (t.q(1, 2) + t.kappa) * t.tr(XtP @ XtP) + V / 2
+    return H
+
+
+@claim("singular-a-noether", paper=("No", "momentum_map", "Phi"), kind="pb", exact_max_n=3,
+       sizes=admissible(5, n_min=2, condition="n >= 2 (so(1) = 0)"),
+       equivariance="the claim's own A with repeated eigenvalues is diagonal in the coordinates of R^n (stated as such in the paper)",
+       statement=r"a_1=\dots=a_{k_1},\dots:\quad \tfrac{d}{dt}\Phi_A=0,\ \Phi_A=\pr_{so(n)_A}(PX^T-XP^T),\quad "
+                 r"\{\langle\Phi,\xi_A\rangle,H_{neum,\kappa}\}=0,\ \xi_A\in so(n)_A")
+def isotropy_momentum_is_conserved(s):
+    """For A with repeated eigenvalues (here eigenspaces of dimension 2, and A = αI), the momentum map Φ_A = pr_{so(n)_A}Φ of the isotropy group SO(n)_A is conserved by the Neumann flows (No) for every κ, and the linear functions <Φ, ξ_A>, ξ_A ∈ so(n)_A, are Noether integrals commuting with H_neum,κ."""
+    checks = {}
+    for name, blocks in partitions_of_n(s.n).items():
+        H = H_neum_singular(blocks)
+        flow = s.dirac_flow(H)
+        for i0, i1 in blocks:
+            if i1 - i0 >= 2:
+                checks[f"{name}: d Phi_A/dt, block {i0 + 1}..{i1}"] = s.d(
+                    lambda t, i0=i0, i1=i1: t.Phi[i0:i1, i0:i1], flow)
+        checks[f"{name}: {{<Phi, xi_A>, H}}"] = s.bracket(
+            lambda t, blocks=blocks: isotropy_pairing(t, t.Phi, t.xi, blocks), H)
+    return checks

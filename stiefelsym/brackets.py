@@ -442,12 +442,14 @@ def casimir_residual(s: Any, T: PoissonTensor, f: MatrixFunction, x: Mat, b: Mat
 
 
 def poisson_map_residual(s: Any, bracket: PhaseBracket, moment: Callable[[Any], Mat], T: PoissonTensor,
-                         a: Mat, b: Mat) -> Scalar:
+                         a: Callable[[Any], Mat], b: Callable[[Any], Mat]) -> Scalar:
     """{<moment, a>, <moment, b>} − Λ(a, b)|_{moment}: the map ``moment`` of the phase space into
-    T's space is Poisson (linear functions suffice: both sides are biderivations)."""
-    Fa = lambda t: t.killing(moment(t), a)   # noqa: E731
-    Fb = lambda t: t.killing(moment(t), b)   # noqa: E731
-    return bracket(s, Fa, Fb) - T(s, moment(s), a, b)
+    T's space is Poisson (linear functions suffice: both sides are biderivations).  The covectors
+    a, b are functions of the scene (e.g. ``lambda t: t.generic("a", "n", "n")``), so that they
+    are constants of every derived scene."""
+    Fa = lambda t: t.killing(moment(t), a(t))   # noqa: E731
+    Fb = lambda t: t.killing(moment(t), b(t))   # noqa: E731
+    return bracket(s, Fa, Fb) - T(s, moment(s), a(s), b(s))
 
 
 __all__ = ["PhaseBracket", "canonical", "dirac", "metric_dirac", "dirac_bracket_for", "standard_constraints",
