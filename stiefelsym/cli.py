@@ -32,6 +32,8 @@ from .results import Result, dump_results, load_results, write_atomic
 from .scene import SizeError
 
 EXIT_OK, EXIT_UNEXPECTED, EXIT_INPUT, EXIT_INTERRUPTED, EXIT_TERMINATED = 0, 1, 2, 130, 143
+#: the default of --budget: seconds a single run may be predicted to take (see stiefelsym.costmodel)
+DEFAULT_BUDGET = 3600.0
 DEFAULT_REPORT_DIR = Path("reports")
 REPORT_FILES = ("results.json", "verification.md", "verification.tex")
 #: the distributions whose versions a report records
@@ -559,9 +561,19 @@ class _Stdout:
 @click.option("--jobs", type=click.IntRange(min=1), default=1, show_default=True, metavar="N",
               help="Runs computed in parallel (worker processes); the results come in the same "
                    "order with the same verdicts whatever N.")
+@click.option("--budget", type=click.FloatRange(min=0, min_open=True), default=DEFAULT_BUDGET,
+              show_default=True, metavar="SECONDS",
+              help="Refuse, before anything runs (exit 2), a run (claim, size, method) whose time "
+                   "predicted by the cost model (`stiefelsym speed`) exceeds SECONDS; the refusal "
+                   "gives the prediction and a faster method.")
+@click.option("--scheduler", default=None, metavar="ADDRESS",
+              help="Run the plan on a dask.distributed cluster (e.g. tcp://host:8786; needs the "
+                   "optional extra stiefelsym[dask]); the same budgets per run, the same verdicts "
+                   "and order as a local run; reports are written once, here.")
 def verify(ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tuple[str, ...], seed: int,
            claims_files: tuple[str, ...], report_dir: Path | None, fmt: str, no_report: bool,
-           hard: str | None, timeout: float, memory: float, jobs: int) -> int:
+           hard: str | None, timeout: float, memory: float, jobs: int,
+           budget: float = DEFAULT_BUDGET, scheduler: str | None = None) -> int:
     """Verify claims (default: the whole catalog) and print one line per result.
 
     CLAIM is a claim id (see `stiefelsym list`).  With --claims FILE the claims of
@@ -587,12 +599,40 @@ def verify(ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tuple[str, ..
     """
     with _Stdout() as out, raise_on_sigterm():
         return _verify(out, ids, sizes, methods, seed, claims_files, report_dir, fmt, no_report,
-                       hard, timeout, memory, jobs)
+                       hard, timeout, memory, jobs, budget, scheduler)
+
+
+def _check_costs(runner: Any, claims: list[Claim], sizes: tuple[Size, ...], methods: Sequence[str],
+                 budget: float) -> None:
+    """Refuse (BudgetError, exit 2) a planned run whose predicted time exceeds the budget."""
+    from . import costmodel
+    for c in claims:
+        for m in methods:
+            if m == "free":
+                continue
+            for s in (sizes or tuple(c.sizes)):
+                if s.r < 1 or s.r > s.n or (sizes and not c.sizes.admits(s.n, s.r)):
+                    continue          # refused (or skipped) with its own reason by the plan
+                costmodel.check(m, c, s.n, s.r, budget)
+
+
+def _remote(address: str) -> Any:
+    """runner.verify on the dask cluster at ``address``; a cluster that cannot be used is bad input."""
+    from . import distributed
+    remote = distributed.verifier(address)
+
+    def engine(*args: Any, **kw: Any) -> Any:
+        try:
+            return remote(*args, **kw)
+        except distributed.DistributedError as exc:
+            raise InputError(str(exc)) from None
+    return engine
 
 
 def _verify(out: Any, ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tuple[str, ...],
             seed: int, claims_files: tuple[str, ...], report_dir: Path | None, fmt: str,
-            no_report: bool, hard: str | None, timeout: float, memory: float, jobs: int) -> int:
+            no_report: bool, hard: str | None, timeout: float, memory: float, jobs: int,
+            budget: float = DEFAULT_BUDGET, scheduler: str | None = None) -> int:
     if no_report and report_dir is not None:
         raise InputError("--no-report and --report-dir contradict each other")
     if hard is not None and set(methods or ("auto",)) & {"exact", "free"}:
@@ -618,6 +658,8 @@ def _verify(out: Any, ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tu
     budgets: list[str] = []
     if timeout != DEFAULT_TIMEOUT:
         budgets += ["--timeout", f"{timeout:g}"]
+    if budget != DEFAULT_BUDGET:
+        budgets += ["--budget", f"{budget:g}"]
     if memory != DEFAULT_MEMORY_GIB:
         budgets += ["--memory", f"{memory:g}"]
     dest = out if fmt == "text" else sys.stderr   # result lines go to stderr when stdout is a document
@@ -649,10 +691,14 @@ def _verify(out: Any, ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tu
     started = datetime.now(timezone.utc)
     t0 = time.perf_counter()
     try:
+        _check_costs(runner, claims, sizes, methods, budget)
+        engine = runner.verify
+        if scheduler is not None:
+            engine = _remote(scheduler)
         try:
-            runner.verify(claims, sizes=list(sizes) or None, methods=tuple(methods), seed=seed,
-                          on_result=on_result, on_plan=progress.plan, hard=hard,
-                          timeout=timeout, memory=memory, jobs=jobs, strict_sizes=bool(ids))
+            engine(claims, sizes=list(sizes) or None, methods=tuple(methods), seed=seed,
+                   on_result=on_result, on_plan=progress.plan, hard=hard,
+                   timeout=timeout, memory=memory, jobs=jobs, strict_sizes=bool(ids))
         finally:
             progress.close()
         meta = {
@@ -662,7 +708,8 @@ def _verify(out: Any, ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tu
             "sizes": [f"{s.n},{s.r}" for s in sizes] or None,
             "claims_file": claims_files[0] if claims_files else None,
             "claims_files": list(claims_files),
-            "timeout": timeout, "memory_gib": memory, "jobs": jobs,
+            "timeout": timeout, "memory_gib": memory, "jobs": jobs, "budget": budget,
+            "scheduler": scheduler,
             "date": started.strftime("%Y-%m-%d %H:%M:%S UTC"),
             "seconds": round(time.perf_counter() - t0, 2),
             "versions": _versions(), "platform": platform.platform(terse=True),

@@ -1,0 +1,392 @@
+"""The cost model: how long a (claim, n, r, method) run takes, predicted before it starts.
+
+Time against n is measured for each method on one representative claim per family
+of claims (flows, big Lax, dual Lax, brackets, dimensions) and fitted per method and
+family by a power law
+
+    t(n) = exp(a) * n**b          (b >= 0, so the prediction never decreases with n)
+
+whose constant ``a`` is then raised until the curve lies above every measured point
+(an upper envelope: the prediction is never below what was seen).  The fitted
+coefficients and the measurements are stored in ``costmodel.json`` next to this
+module; ``stiefelsym speed`` measures again and rewrites it (``measure``, ``fit``).
+
+``check(method, claim, n, r, budget)`` is what the engine calls instead of fixed size
+caps: it returns the predicted seconds, or raises ``BudgetError`` (exit status 2 on the
+command line) with the prediction and a faster method to try.  Only the size checks of
+the Stiefel variety (1 <= r <= n) are absolute; everything else is a question of time.
+"""
+from __future__ import annotations
+
+import json
+import math
+import platform
+from datetime import datetime, timezone
+from pathlib import Path
+from typing import Any, Iterable, Sequence
+
+#: seconds a single run may be predicted to take before the command line refuses it
+DEFAULT_BUDGET = 3600.0
+MODEL_FILE = Path(__file__).with_name("costmodel.json")
+#: the methods the model covers (``auto`` and ``free`` are derived from them)
+METHODS = ("exact", "rational", "modular", "float")
+#: one representative catalog claim per family of claims
+FAMILIES = {
+    "flows": "neumann-flow",
+    "lax": "neumann-lax",
+    "dual-lax": "neumann-dual-lax-normal",
+    "brackets": "momentum-maps-poisson",
+    "dimensions": "adjoint-orbit-dimension",
+}
+#: the fastest to the slowest kind of answer: which method to suggest first
+SUGGEST_ORDER = ("modular", "float", "rational", "exact")
+#: a dimension-free run does not depend on n; its time is below this (measured: milliseconds)
+FREE_SECONDS = 5.0
+#: a prediction for a claim the model did not measure is the largest of the families' times this
+#: many times over (claims of one family differ by small constant factors)
+UNKNOWN_CLAIM_FACTOR = 3.0
+#: measured times below this are dominated by fixed overheads and are not fitted as a power of n
+TIME_FLOOR = 2e-3
+
+#: used when costmodel.json is missing or unreadable: generous power laws (seconds)
+_FALLBACK = {"exact": (math.log(1e-3), 6.0), "rational": (math.log(1e-3), 4.5),
+             "modular": (math.log(1e-3), 4.0), "float": (math.log(1e-3), 4.5)}
+
+
+class CostModel:
+    """Fitted power laws per (method, family), with the measurements they came from."""
+
+    def __init__(self, data: dict[str, Any] | None = None) -> None:
+        self.data = data or {}
+        self.fits: dict[str, dict[str, tuple[float, float]]] = {}
+        for method, fams in (self.data.get("fits") or {}).items():
+            for fam, coef in fams.items():
+                self.fits.setdefault(method, {})[fam] = (float(coef["a"]), float(coef["b"]))
+        self.claim_family: dict[str, str] = dict(self.data.get("claim_family") or {})
+
+    @classmethod
+    def load(cls, path: Path | str | None = None) -> "CostModel":
+        p = Path(path) if path is not None else MODEL_FILE
+        try:
+            return cls(json.loads(p.read_text(encoding="utf-8")))
+        except (OSError, ValueError):
+            return cls({})
+
+    # -- prediction
+
+    def family_of(self, claim: Any) -> str | None:
+        """The family a claim belongs to: its own if it was measured, else by its kind."""
+        cid = getattr(claim, "id", claim)
+        if cid in self.claim_family:
+            return self.claim_family[cid]
+        for fam, rep in FAMILIES.items():
+            if rep == cid:
+                return fam
+        return None
+
+    def _power(self, method: str, fam: str | None, n: int) -> float:
+        fams = self.fits.get(method)
+        if not fams:
+            a, b = _FALLBACK.get(method, _FALLBACK["exact"])
+            return math.exp(a + b * math.log(max(n, 1)))
+        if fam in fams:
+            a, b = fams[fam]
+            return math.exp(a + b * math.log(max(n, 1)))
+        # not a measured claim: the slowest family, with a margin
+        return UNKNOWN_CLAIM_FACTOR * max(math.exp(a + b * math.log(max(n, 1))) for a, b in fams.values())
+
+    def predict(self, method: str, claim: Any, n: int, r: int) -> float:
+        """Predicted wall seconds of one run (claim, n, r, method); r = n counts both components."""
+        if method == "free":
+            return FREE_SECONDS
+        if method == "auto":
+            # the exact attempt with its modular fallback up to the claim's symbolic budget, modular
+            # beyond; kept monotone in n (a size beyond the budget is never predicted cheaper)
+            k = min(n, getattr(claim, "exact_max_n", 5), _exact_cap())
+            below = self.predict("exact", claim, k, min(r, k)) + self.predict("modular", claim, k, min(r, k))
+            return max(below, self.predict("modular", claim, n, r))
+        if method not in METHODS:
+            raise ValueError(f"unknown method {method!r}")
+        kind = getattr(claim, "kind", None)
+        if method == "float" and kind == "dim":
+            return 0.0       # dimensions are integers: the float method is not run on them
+        t = self._power(method, self.family_of(claim), n)
+        if r == n and not self.data.get("r_equal_n_measured"):
+            t *= 2.0         # both components of O(n) are sampled
+        return t
+
+    def largest_n(self, method: str, claim: Any, budget: float, r_of=lambda n: max(1, n // 2),
+                  limit: int = 100000) -> int:
+        """The largest n whose predicted time is within the budget (0 if none)."""
+        lo = 0
+        n = 1
+        while n <= limit and self.predict(method, claim, n, r_of(n)) <= budget:
+            lo, n = n, n * 2
+        hi = min(n, limit + 1)
+        while hi - lo > 1:
+            mid = (lo + hi) // 2
+            if self.predict(method, claim, mid, r_of(mid)) <= budget:
+                lo = mid
+            else:
+                hi = mid
+        return lo
+
+    def suggest(self, method: str, claim: Any, n: int, r: int, budget: float) -> str:
+        """What to do instead of a run predicted to exceed the budget."""
+        options = []
+        for m in SUGGEST_ORDER:
+            if m == method or (method == "auto" and m == "exact"):
+                continue
+            if m == "float" and getattr(claim, "kind", None) == "dim":
+                continue
+            if n > _engine_cap(m):
+                continue
+            options.append((self.predict(m, claim, n, r), m))
+        parts = []
+        if options:
+            t, m = min(options)
+            grade = {"modular": "randomized exact", "rational": "randomized exact",
+                     "float": "numerical evidence, not proof", "exact": "symbolic proof"}[m]
+            within = "" if t <= budget else ", also beyond the budget"
+            parts.append(f"try --method {m} (predicted {format_seconds(t)}, {grade}{within})")
+        k = self.largest_n(method, claim, budget)
+        if 0 < k < n:
+            parts.append(f"a size with n <= {k} with --method {method}")
+        parts.append("--method free (every n, r at once, when the claim needs no coordinates)")
+        parts.append("or a larger --budget")
+        return "; ".join(parts)
+
+
+def format_seconds(t: float) -> str:
+    if t >= 86400:
+        return f"{t / 86400:.3g} days"
+    if t >= 3600:
+        return f"{t / 3600:.3g} h"
+    if t >= 60:
+        return f"{t / 60:.3g} min"
+    return f"{t:.3g} s"
+
+
+def _engine_cap(method: str) -> int:
+    """A method's fixed size cap while the engine still has one (methods.BUDGET), else none."""
+    try:
+        from .methods import BUDGET
+        return int(BUDGET.get(method, 10**9))
+    except (ImportError, AttributeError, TypeError, ValueError):
+        return 10**9
+
+
+def _exact_cap() -> int:
+    return _engine_cap("exact")
+
+
+_MODEL: CostModel | None = None
+
+
+def model() -> CostModel:
+    """The package's cost model (costmodel.json), loaded once."""
+    global _MODEL
+    if _MODEL is None:
+        _MODEL = CostModel.load()
+    return _MODEL
+
+
+def predict(method: str, claim: Any, n: int, r: int) -> float:
+    return model().predict(method, claim, n, r)
+
+
+def check(method: str, claim: Any, n: int, r: int, budget: float | None = DEFAULT_BUDGET,
+          cost: CostModel | None = None) -> float:
+    """The predicted seconds of a run; ``BudgetError`` (with the prediction and a faster method)
+    if it exceeds ``budget`` (None: no budget).  ``SizeError`` if (n, r) is not a Stiefel variety.
+
+    This replaces ``methods.check_budget`` (fixed caps on n): the engine calls it per planned
+    (claim, size, method) with the run's budget."""
+    from .methods import BudgetError
+    from .scene import SizeError
+    if r < 1:
+        raise SizeError(f"r = {r} < 1: a Stiefel variety V(n, r) needs r >= 1")
+    if r > n:
+        raise SizeError(f"r = {r} > n = {n}: V(n, r) needs r <= n")
+    cost = cost or model()
+    t = cost.predict(method, claim, n, r)
+    if budget is not None and t > budget:
+        cid = getattr(claim, "id", str(claim))
+        raise BudgetError(f"{cid} ({n},{r}) with --method {method}: predicted {format_seconds(t)}, "
+                          f"beyond the budget of {format_seconds(budget)} (--budget); "
+                          f"{cost.suggest(method, claim, n, r, budget)}")
+    return t
+
+
+# --------------------------------------------------------------------------- measuring and fitting
+
+def fit(points: Sequence[tuple[int, float]]) -> tuple[float, float] | None:
+    """(a, b) with t <= exp(a) n**b at every measured point, b >= 0; None without data.
+
+    Least squares of log t against log n (points above TIME_FLOOR), then a raised to the
+    upper envelope of all points."""
+    pts = [(n, max(t, 1e-6)) for n, t in points if n >= 1 and t is not None]
+    if not pts:
+        return None
+    big = [(n, t) for n, t in pts if t >= TIME_FLOOR and n >= 2]
+    b = 0.0
+    if len({n for n, _ in big}) >= 2:
+        xs = [math.log(n) for n, _ in big]
+        ys = [math.log(t) for _, t in big]
+        mx, my = sum(xs) / len(xs), sum(ys) / len(ys)
+        sxx = sum((x - mx) ** 2 for x in xs)
+        sxy = sum((x - mx) * (y - my) for x, y in zip(xs, ys))
+        b = max(0.0, sxy / sxx) if sxx > 0 else 0.0
+    a = max(math.log(t) - b * math.log(n) for n, t in pts)
+    return a, b
+
+
+def measure(methods: Iterable[str] = METHODS, families: dict[str, str] | None = None,
+            n_values: dict[str, Sequence[int]] | None = None, per_run: float = 30.0,
+            series_seconds: float = 20.0, seed: int = 0, on_point: Any = None,
+            registry: Any = None) -> list[dict[str, Any]]:
+    """Time runs of each family's representative claim, for each method, at growing n.
+
+    Each run executes in a budgeted worker (``runner.verify``); a series stops at the first
+    run that is not decided in ``per_run`` seconds, or once it has spent ``series_seconds``.
+    r = ceil(n/2) and r = n (two components) are both measured; a point is the slower of
+    the two.  Returns one record per run."""
+    from .claims import Size, load_catalog
+    from .methods import BudgetError
+    from .runner import verify
+    from .scene import SizeError
+    families = families or FAMILIES
+    registry = registry or load_catalog("proofs")
+    grid = n_values or {}
+    out: list[dict[str, Any]] = []
+    for fam, cid in families.items():
+        claim = registry.get(cid)
+        for method in methods:
+            if method == "float" and claim.kind == "dim":
+                continue
+            spent = 0.0
+            for n in grid.get(method, _default_ns(method)):
+                stop = False
+                for r in sorted({(n + 1) // 2, n}):
+                    try:
+                        results = verify([claim], sizes=[Size(n, r)], methods=(method,), seed=seed,
+                                         timeout=per_run, jobs=1)
+                    except (BudgetError, SizeError):
+                        stop = True
+                        break
+                    res = next((x for x in results if x.variant is None), None)
+                    if res is None:
+                        continue
+                    rec = {"family": fam, "claim": cid, "method": method, "n": n, "r": r,
+                           "seconds": round(float(res.seconds), 6), "verdict": res.verdict}
+                    out.append(rec)
+                    if on_point is not None:
+                        on_point(rec)
+                    spent += res.seconds
+                    if res.verdict in ("inconclusive", "error"):
+                        stop = True
+                if stop or spent > series_seconds:
+                    break
+    return out
+
+
+def _default_ns(method: str) -> list[int]:
+    return {"exact": [2, 3, 4, 5, 6, 7, 8], "rational": [2, 3, 4, 5, 6, 8, 10],
+            "modular": [2, 3, 4, 5, 6, 8, 10, 12], "float": [2, 3, 4, 5, 6, 8, 10, 12, 16]}.get(
+        method, [2, 3, 4, 5])
+
+
+def build(records: Sequence[dict[str, Any]], note: str = "") -> dict[str, Any]:
+    """The JSON document of a cost model from measurement records."""
+    fits: dict[str, dict[str, Any]] = {}
+    groups: dict[tuple[str, str], dict[int, float]] = {}
+    for rec in records:
+        if rec.get("verdict") in ("inconclusive", "error"):
+            # a run stopped by its budget: its time is a lower bound, still an upper-envelope point
+            pass
+        key = (rec["method"], rec["family"])
+        g = groups.setdefault(key, {})
+        g[rec["n"]] = max(g.get(rec["n"], 0.0), float(rec["seconds"]))
+    for (method, fam), g in sorted(groups.items()):
+        coef = fit(sorted(g.items()))
+        if coef is None:
+            continue
+        a, b = coef
+        fits.setdefault(method, {})[fam] = {"a": round(a, 6), "b": round(b, 6),
+                                           "n_max_measured": max(g), "points": sorted(g.items())}
+    return {
+        "version": 1,
+        "model": "t(n) = exp(a) * n^b seconds, upper envelope of the measured points (max over r = ceil(n/2), n)",
+        "generated": datetime.now(timezone.utc).strftime("%Y-%m-%d %H:%M:%S UTC"),
+        "platform": platform.platform(terse=True),
+        "python": platform.python_version(),
+        "note": note,
+        "families": dict(FAMILIES),
+        "claim_family": {cid: fam for fam, cid in FAMILIES.items()},
+        "r_equal_n_measured": True,
+        "fits": fits,
+        "records": list(records),
+    }
+
+
+def save(doc: dict[str, Any], path: Path | str | None = None) -> Path:
+    from .results import write_atomic
+    p = Path(path) if path is not None else MODEL_FILE
+    write_atomic(p, json.dumps(doc, indent=1, sort_keys=False) + "\n")
+    global _MODEL
+    if path is None or Path(path) == MODEL_FILE:
+        _MODEL = None
+    return p
+
+
+def plot(doc: dict[str, Any], out_dir: Path | str) -> list[Path]:
+    """Time against n with the fitted power laws, one panel per family (PNG and PDF)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    out_dir = Path(out_dir)
+    out_dir.mkdir(parents=True, exist_ok=True)
+    fams = list(doc.get("families") or FAMILIES)
+    fig, axes = plt.subplots(1, len(fams), figsize=(4 * len(fams), 3.6), sharey=True)
+    if len(fams) == 1:
+        axes = [axes]
+    colors = {"exact": "C0", "rational": "C1", "modular": "C2", "float": "C3"}
+    for ax, fam in zip(axes, fams):
+        for method, fits in (doc.get("fits") or {}).items():
+            f = fits.get(fam)
+            if not f:
+                continue
+            ns = [p[0] for p in f["points"]]
+            ts = [max(p[1], 1e-5) for p in f["points"]]
+            ax.loglog(ns, ts, "o", color=colors.get(method), label=method, ms=4)
+            grid = [2 + k * (max(ns) * 2 - 2) / 50 for k in range(51)]
+            ax.loglog(grid, [math.exp(f["a"]) * x ** f["b"] for x in grid], "-", color=colors.get(method),
+                      lw=1, alpha=0.7)
+        ax.set_title(f"{fam} ({doc.get('families', FAMILIES).get(fam, '')})", fontsize=8)
+        ax.set_xlabel("n")
+        ax.grid(True, which="both", alpha=0.3)
+    axes[0].set_ylabel("seconds per run")
+    axes[0].legend(fontsize=7)
+    fig.suptitle("cost model: time against n per method (points measured, lines fitted upper envelopes)",
+                 fontsize=9)
+    fig.tight_layout()
+    paths = []
+    for ext in ("png", "pdf"):
+        p = out_dir / f"costmodel.{ext}"
+        fig.savefig(p, dpi=110)
+        paths.append(p)
+    plt.close(fig)
+    return paths
+
+
+def table(doc: dict[str, Any]) -> str:
+    """The fitted coefficients as a Markdown table."""
+    lines = ["| method | family | a | b (exponent of n) | measured up to n | predicted at n = 12 | n = 100 |",
+             "| --- | --- | ---: | ---: | ---: | ---: | ---: |"]
+    for method, fits in sorted((doc.get("fits") or {}).items()):
+        for fam, f in fits.items():
+            t12 = math.exp(f["a"]) * 12 ** f["b"]
+            t100 = math.exp(f["a"]) * 100 ** f["b"]
+            lines.append(f"| {method} | {fam} | {f['a']:.2f} | {f['b']:.2f} | {f['n_max_measured']} | "
+                         f"{format_seconds(t12)} | {format_seconds(t100)} |")
+    return "\n".join(lines) + "\n"

@@ -1,0 +1,64 @@
+"""The cost model: predictions grow with n, a run predicted beyond --budget is refused with
+exit status 2, its prediction and a faster method, and the fit is an upper envelope."""
+import math
+
+import pytest
+
+from stiefelsym import costmodel
+from stiefelsym.methods import BudgetError
+
+
+@pytest.mark.parametrize("method", ["exact", "rational", "modular", "float", "auto"])
+@pytest.mark.parametrize("cid", ["neumann-lax", "neumann-flow", "momentum-maps-poisson", "euclidean-flow"])
+def test_prediction_is_monotone_in_n(catalog, method, cid):
+    c = catalog.get(cid)
+    ts = [costmodel.predict(method, c, n, max(1, n // 2)) for n in range(1, 60)]
+    assert all(t > 0 for t in ts)
+    assert all(b >= a for a, b in zip(ts, ts[1:])), ts
+
+
+def test_fit_is_an_upper_envelope_with_nonnegative_exponent():
+    pts = [(2, 0.01), (3, 0.02), (4, 0.05), (6, 0.3), (8, 0.9)]
+    a, b = costmodel.fit(pts)
+    assert b >= 0
+    assert all(math.exp(a) * n ** b >= t * (1 - 1e-12) for n, t in pts)
+    a, b = costmodel.fit([(2, 1.0), (3, 0.5), (4, 0.2)])     # decreasing noise: never a negative exponent
+    assert b == 0.0 and math.isclose(math.exp(a), 1.0)
+
+
+def test_the_stored_model_covers_every_method_and_family():
+    doc = costmodel.CostModel.load().data
+    assert set(doc["fits"]) >= {"exact", "rational", "modular", "float"}
+    for method in ("rational", "modular"):
+        assert set(doc["fits"][method]) == set(costmodel.FAMILIES)
+
+
+def test_check_refuses_with_prediction_and_suggestion(catalog):
+    c = catalog.get("neumann-lax")
+    assert costmodel.check("modular", c, 4, 2, budget=3600) < 3600
+    with pytest.raises(BudgetError) as err:
+        costmodel.check("rational", c, 10, 5, budget=1e-3)
+    text = str(err.value)
+    assert "predicted" in text and "--budget" in text and "--method" in text
+
+
+def test_unknown_claims_are_predicted_conservatively(catalog):
+    known = catalog.get("neumann-lax")
+    other = catalog.get("manakov-lax")
+    m = costmodel.model()
+    assert m.predict("modular", other, 8, 4) >= m.predict("modular", known, 8, 4)
+
+
+def test_cli_refuses_a_run_beyond_the_budget(run):
+    res = run("verify", "neumann-lax", "--size", "10,5", "--method", "modular", "--budget", "0.001",
+              "--no-report")
+    assert res.exit_code == 2
+    assert "predicted" in res.output and "budget" in res.output
+    assert "try --method" in res.output or "n <=" in res.output
+    assert "neumann-lax (10,5) modular" not in res.output      # refused before it started
+
+
+def test_cli_runs_within_the_budget(run):
+    res = run("verify", "neumann-lax", "--size", "3,1", "--method", "modular", "--budget", "60", "--no-report")
+    assert res.exit_code == 0, res.output
+    assert "checked" in res.output
