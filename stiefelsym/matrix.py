@@ -27,6 +27,8 @@ from typing import Any, Sequence
 import numpy as np
 
 from .fields import Deg, Dual, ErrNum, Field
+from .native import backend
+from .reverse import Rev
 
 
 class CoordinateTracker:
@@ -162,6 +164,9 @@ def check_element(field: Field, x: Any) -> Any:
         check_element(field, x.a)
         check_element(field, x.b)
         return x
+    if t is Rev:
+        check_element(getattr(field, "base", field), x.v)
+        return x
     if t in _ENGINE_TYPES:
         return x
     if t in _library_types():
@@ -174,10 +179,15 @@ def _coordinates(field: Field) -> bool:
 
 
 class Mat:
-    """A dense matrix over a field, typed by the spaces of its rows and columns."""
+    """A dense matrix over a field, typed by the spaces of its rows and columns.
+
+    The entries live either in a numpy array of field elements (``_obj``, every field) or in
+    the native storage of the field's whole-matrix backend (``_n``, see :mod:`.native`); each
+    operation uses the native form when both operands have one, and an entry read or write
+    converts."""
 
     __array_priority__ = 1000
-    __slots__ = ("_a", "_field", "_tags", "_tracker", "_coords")
+    __slots__ = ("_obj", "_n", "_field", "_tags", "_tracker", "_coords")
 
     def __init__(self, a: Any, field: Field, tags=(UNTYPED, UNTYPED), tracker: CoordinateTracker | None = None):
         """A matrix from a 2-d array of entries: building an ℝⁿ-indexed matrix entrywise is a
@@ -189,8 +199,9 @@ class Mat:
             arr[idx] = check_element(field, a[idx])
         self._init(arr, field, tags, tracker, indexed_by_Rn(tags))
 
-    def _init(self, a: np.ndarray, field: Field, tags, tracker, coords: bool) -> None:
-        self._a = a
+    def _init(self, a: np.ndarray | None, field: Field, tags, tracker, coords: bool, native: Any = None) -> None:
+        self._obj = a
+        self._n = native
         self._field = field
         self._tags = (str(tags[0]), str(tags[1]))
         self._tracker = tracker
@@ -198,11 +209,12 @@ class Mat:
         if tracker is not None:
             if coords:
                 tracker.touch("matrices built entrywise")
-            if tracker.dims is not None and a.ndim == 2:
-                for tag, size in zip(self._tags, a.shape):
+            if tracker.dims is not None:
+                shape = self._shape()
+                for tag, size in zip(self._tags, shape):
                     want = space_size(tag, tracker.dims)
                     if want is not None and want != size:
-                        raise TypeError(f"a {a.shape[0]}x{a.shape[1]} matrix cannot be indexed by "
+                        raise TypeError(f"a {shape[0]}x{shape[1]} matrix cannot be indexed by "
                                         f"{_space_text(tag)}, of dimension {want}")
 
     @classmethod
@@ -211,6 +223,56 @@ class Mat:
         m = object.__new__(cls)
         m._init(a, field, tags, tracker, coords)
         return m
+
+    @classmethod
+    def _wrap_native(cls, s: Any, field: Field, tags=(UNTYPED, UNTYPED), tracker=None, coords: bool = False) -> "Mat":
+        """Engine door: wrap a backend's native storage."""
+        m = object.__new__(cls)
+        m._init(None, field, tags, tracker, coords, native=s)
+        return m
+
+    # -- the two representations ---------------------------------------------
+    @property
+    def _a(self) -> np.ndarray:
+        """The entries as a numpy array (engine only).  The caller may write into it, so the
+        native form is dropped and rebuilt when next needed."""
+        if self._obj is None:
+            self._obj = backend(self._field).to_obj(self._n)
+        self._n = None
+        return self._obj
+
+    @_a.setter
+    def _a(self, a: np.ndarray) -> None:
+        self._obj, self._n = a, None
+
+    def _view(self) -> np.ndarray:
+        """The entries as a numpy array, read-only (engine only: never write into it)."""
+        if self._obj is None:
+            self._obj = backend(self._field).to_obj(self._n)
+        return self._obj
+
+    def _nat(self) -> Any:
+        """The native storage, or None when the field has no whole-matrix backend."""
+        if self._n is None:
+            be = backend(self._field)
+            if be is None:
+                return None
+            self._n = be.from_obj(self._obj)
+        return self._n
+
+    def _shape(self) -> tuple[int, int]:
+        if self._obj is not None:
+            return self._obj.shape
+        return tuple(backend(self._field).shape(self._n))
+
+    def _native_pair(self, o: "Mat"):
+        """The backend and both native storages, when both matrices have one over one field."""
+        if o._field is not self._field:
+            return None
+        be = backend(self._field)
+        if be is None:
+            return None
+        return be, self._nat(), o._nat()
 
     @property
     def field(self) -> Field:
@@ -251,10 +313,7 @@ class Mat:
     @classmethod
     def zeros(cls, m: int, k: int, field: Field, tags=(UNTYPED, UNTYPED), tracker=None) -> "Mat":
         a = np.empty((m, k), dtype=object)
-        z = field.const(0)
-        for i in range(m):
-            for j in range(k):
-                a[i, j] = z
+        a.fill(field.const(0))
         return cls._wrap(a, field, tags, tracker)
 
     @classmethod
@@ -262,13 +321,18 @@ class Mat:
         M = cls.zeros(m, m, field, (tag, tag), tracker)
         one = field.const(1)
         for i in range(m):
-            M._a[i, i] = one
+            M._obj[i, i] = one
         return M
 
     def _new(self, a, tags=None, other: "Mat | None" = None) -> "Mat":
         tracker = self._tracker if self._tracker is not None else (other._tracker if other is not None else None)
         coords = self._coords or (other is not None and other._coords)
         return Mat._wrap(a, self.field, self._tags if tags is None else tags, tracker, coords)
+
+    def _new_n(self, s, tags=None, other: "Mat | None" = None) -> "Mat":
+        tracker = self._tracker if self._tracker is not None else (other._tracker if other is not None else None)
+        coords = self._coords or (other is not None and other._coords)
+        return Mat._wrap_native(s, self.field, self._tags if tags is None else tags, tracker, coords)
 
     def _norm(self, a: np.ndarray) -> np.ndarray:
         f = self.field.normalize
@@ -286,21 +350,24 @@ class Mat:
         """The numbers of rows and columns (sizes: not offered by the dimension-free backend)."""
         if not _coordinates(self.field):
             raise NeedsCoordinates("the shape of a matrix")
-        return self._a.shape
+        return self._shape()
 
     @property
     def T(self) -> "Mat":
+        tags = (self._tags[1], self._tags[0])
         star = self.field.star
-        a = self._a.T.copy()
+        if star is None and self._n is not None:
+            return self._new_n(backend(self._field).T(self._n), tags)
+        a = self._view().T.copy()
         if star is not None:
             for idx, x in np.ndenumerate(a):
                 a[idx] = star(x)
-        return self._new(a, (self._tags[1], self._tags[0]))
+        return self._new(a, tags)
 
     # -- arithmetic -------------------------------------------------------
     def _sum_tags(self, o: "Mat", what: str) -> tuple[str, str]:
-        if self._a.shape != o._a.shape:
-            raise ValueError(f"{what}: shape mismatch {self._a.shape} vs {o._a.shape}")
+        if self._shape() != o._shape():
+            raise ValueError(f"{what}: shape mismatch {self._shape()} vs {o._shape()}")
         t = self._tracker_of(o)
         return (unify(self._tags[0], o._tags[0], what, t), unify(self._tags[1], o._tags[1], what, t))
 
@@ -308,29 +375,43 @@ class Mat:
         if not isinstance(o, Mat):
             return NotImplemented
         tags = self._sum_tags(o, "a sum")
-        return self._new(self._norm(self._a + o._a), tags, o)
+        nat = self._native_pair(o)
+        if nat is not None:
+            be, a, b = nat
+            return self._new_n(be.add(a, b), tags, o)
+        return self._new(self._norm(self._view() + o._view()), tags, o)
 
     def __sub__(self, o):
         if not isinstance(o, Mat):
             return NotImplemented
         tags = self._sum_tags(o, "a difference")
-        return self._new(self._norm(self._a - o._a), tags, o)
+        nat = self._native_pair(o)
+        if nat is not None:
+            be, a, b = nat
+            return self._new_n(be.sub(a, b), tags, o)
+        return self._new(self._norm(self._view() - o._view()), tags, o)
 
     def __neg__(self):
-        return self._new(-self._a)
+        if self._n is not None:
+            return self._new_n(backend(self._field).neg(self._n))
+        return self._new(-self._view())
 
     def __matmul__(self, o):
         if not isinstance(o, Mat):
             return NotImplemented
-        if self._a.shape[1] != o._a.shape[0]:
-            raise ValueError(f"cannot multiply {self._a.shape} by {o._a.shape}")
+        (m, k1), (k2, k) = self._shape(), o._shape()
+        if k1 != k2:
+            raise ValueError(f"cannot multiply {(m, k1)} by {(k2, k)}")
         unify(self._tags[1], o._tags[0], "a product", self._tracker_of(o))
         tags = (self._tags[0], o._tags[1])
-        m, k = self._a.shape[0], o._a.shape[1]
-        if self._a.shape[1] == 0:
+        nat = self._native_pair(o)
+        if nat is not None:
+            be, a, b = nat
+            return self._new_n(be.matmul(a, b), tags, o)
+        if k1 == 0:
             z = Mat.zeros(m, k, self.field, tags, self._tracker_of(o))
-            return self._new(z._a, tags, o)
-        return self._new(self._norm(np.dot(self._a, o._a)), tags, o)
+            return self._new(z._obj, tags, o)
+        return self._new(self._norm(np.dot(self._view(), o._view())), tags, o)
 
     def _scalar(self, c):
         if isinstance(c, Mat):
@@ -339,8 +420,11 @@ class Mat:
             raise TypeError("use integers or fractions, not floats, as constants in claims")
         if isinstance(c, _SCALARS):
             c = self.field.const(c)
-        out = np.empty(self._a.shape, dtype=object)
-        for idx, x in np.ndenumerate(self._a):
+        be = backend(self._field)
+        if be is not None and be.accepts(c):
+            return self._new_n(be.smul(self._nat(), c))
+        out = np.empty(self._shape(), dtype=object)
+        for idx, x in np.ndenumerate(self._view()):
             out[idx] = self.field.normalize(x * c)
         return self._new(out)
 
@@ -359,29 +443,39 @@ class Mat:
 
     # -- linear algebra ---------------------------------------------------
     def trace(self):
-        if self._a.shape[0] != self._a.shape[1]:
+        m, k = self._shape()
+        if m != k:
             raise ValueError("trace of a non-square matrix")
         unify(self._tags[0], self._tags[1], "a trace", self._tracker)
         entry_trace = self.field.entry_trace
+        if entry_trace is None and self._n is not None:
+            return backend(self._field).trace(self._n)
+        a = self._view()
         acc = self.field.const(0) if entry_trace is None else None
-        for i in range(self._a.shape[0]):
-            x = self._a[i, i] if entry_trace is None else entry_trace(self._a[i, i])
+        for i in range(m):
+            x = a[i, i] if entry_trace is None else entry_trace(a[i, i])
             acc = x if acc is None else acc + x
         return self.field.normalize(acc)
 
     def inv(self) -> "Mat":
-        m = self._a.shape[0]
-        if m != self._a.shape[1]:
+        m, k = self._shape()
+        if m != k:
             raise ValueError("inverse of a non-square matrix")
         t = unify(self._tags[0], self._tags[1], "an inverse", self._tracker)
-        I = Mat.identity(m, self.field)
-        sol = self.field.solve(self._a.tolist(), I._a.tolist())
-        out = Mat._rows(sol, self.field, (t, t), self._tracker)
+        be = backend(self._field)
+        if be is not None:
+            out = Mat._wrap_native(be.inv(self._nat()), self.field, (t, t), self._tracker)
+        else:
+            I = Mat.identity(m, self.field)
+            sol = self.field.solve(self._view().tolist(), I._obj.tolist())
+            out = Mat._rows(sol, self.field, (t, t), self._tracker)
         out._coords = self._coords
         return out
 
     def is_zero(self) -> bool:
-        return all(self.field.is_zero(x) for x in self._a.flat)
+        if self._n is not None:
+            return backend(self._field).is_zero(self._n)
+        return all(self.field.is_zero(x) for x in self._view().flat)
 
     # -- the one door to entries (recorded) ----------------------------------
     def __getitem__(self, idx):
@@ -393,7 +487,7 @@ class Mat:
             raise TypeError("index a matrix with two indices, M[i, j] or M[i0:i1, j0:j1]")
         if self._tracker is not None and indexed_by_Rn(self._tags):
             self._tracker.touch("matrix entries")
-        out = self._a[idx]
+        out = self._view()[idx]
         if isinstance(out, np.ndarray):
             if out.ndim == 1:
                 out = out.reshape(1, -1) if isinstance(idx[0], (int, np.integer)) else out.reshape(-1, 1)
@@ -413,7 +507,7 @@ class Mat:
         raise TypeError("a matrix has no truth value: return it as a residual")
 
     def __repr__(self) -> str:
-        return f"Mat{self._a.shape}[{self._tags[0]}x{self._tags[1]}]({self.field.name})"
+        return f"Mat{self._shape()}[{self._tags[0]}x{self._tags[1]}]({self.field.name})"
 
 
 def _join(tags: Sequence[str]) -> str:
@@ -442,9 +536,14 @@ def block(rows: Sequence[Sequence[Mat]]) -> Mat:
         for row in rows[1:]:
             t = unify(t, row[j]._tags[1], f"block column {j + 1}", tracker)
         col_tags.append(t)
-    a = np.concatenate([np.concatenate([b._a for b in row], axis=1) for row in rows], axis=0)
     coords = any(b._coords for row in rows for b in row)
-    return Mat._wrap(a, rows[0][0].field, (_join(row_tags), _join(col_tags)), tracker, coords)
+    field = rows[0][0].field
+    tags = (_join(row_tags), _join(col_tags))
+    be = backend(field)
+    if be is not None and all(b._field is field for row in rows for b in row):
+        return Mat._wrap_native(be.block([[b._nat() for b in row] for row in rows]), field, tags, tracker, coords)
+    a = np.concatenate([np.concatenate([b._view() for b in row], axis=1) for row in rows], axis=0)
+    return Mat._wrap(a, field, tags, tracker, coords)
 
 
 def comm(A: Mat, B: Mat) -> Mat:
@@ -460,7 +559,7 @@ def scalar_matrix(c, m: int, field: Field, tag=UNTYPED, tracker=None) -> Mat:
 
 
 def mat_map(M: Mat, f) -> Mat:
-    out = np.empty(M._a.shape, dtype=object)
-    for idx, x in np.ndenumerate(M._a):
+    out = np.empty(M._shape(), dtype=object)
+    for idx, x in np.ndenumerate(M._view()):
         out[idx] = f(x)
     return Mat._wrap(out, M.field, M._tags, M._tracker, M._coords)

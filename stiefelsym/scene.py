@@ -28,6 +28,8 @@ import numpy as np
 
 from .fields import Dual, DualField, Field, DegenerateError
 from .matrix import CoordinateTracker, Mat, block, definite, scalar_matrix, unify
+from .native import backend
+from .reverse import Rev, RevField, RevMat, Unsupported, gradient as rev_gradient, leaf as rev_leaf
 
 Scalar = Any
 Function = Callable[["Scene"], Any]
@@ -52,6 +54,10 @@ def user_name(name: Any, what: str) -> str:
 def param_name(name: str, i: int, j: int) -> str:
     """The name of entry (i, j) of a parameter matrix: "S_1,12" (one name per entry at every size)."""
     return f"{name}_{i + 1},{j + 1}"
+
+
+#: False: gradients by 2nr forward passes only (the tests compare both ways)
+REVERSE_GRADIENTS = True
 
 
 class SizeError(ValueError):
@@ -510,8 +516,15 @@ class Scene(PaperObjects):
         return [list(row) for row in zip(*cols)]
 
     def gradient(self, H: Function) -> tuple[Mat, Mat]:
-        """(dH/dX, dH/dP) for a scalar function H of the scene."""
+        """(dH/dX, dH/dP) for a scalar function H of the scene: reverse mode over the matrix
+        operations (one evaluation of H and one backward sweep), or 2nr forward passes when H
+        uses an operation reverse mode does not differentiate."""
         def build():
+            if REVERSE_GRADIENTS:
+                try:
+                    return self._reverse_gradient(H)
+                except Unsupported:
+                    pass
             row = self._jacobian(H, scalar=True)[0]
             n, r = self.n, self.r
             HX = self.zeros(n, r, ("n", "r"))
@@ -520,6 +533,27 @@ class Scene(PaperObjects):
             HP._a[:, :] = np.array(row[n * r:], dtype=object).reshape(n, r)
             return HX, HP
         return self._cached_for("grad", H, build)
+
+    def _reverse_gradient(self, H: Function) -> tuple[Mat, Mat]:
+        rs = ReverseScene(self)
+        X, P = rs.X, rs.P          # the leaves, created before anything that depends on them
+        value = H(rs)
+        if isinstance(value, (Mat, list, tuple, dict)):
+            raise TypeError("a Hamiltonian (a function whose gradient, flow or bracket is taken) must be "
+                            f"a scalar function of the scene, not a {type(value).__name__}")
+        if not isinstance(value, Rev):
+            raise Unsupported("a value that is not a number of the scene")
+        leaves = [rs.leaves[k] for k in ("X", "P")]
+        grads = rev_gradient(value, leaves, self.const(1))
+        out = []
+        for g in grads:
+            if g is None:
+                M = self.zeros(self.n, self.r, ("n", "r"))
+            else:
+                M = Mat._wrap_native(g._nat(), self.field, ("n", "r"), self.tracker) if g._n is not None \
+                    else Mat._wrap(g._view().copy(), self.field, ("n", "r"), self.tracker)
+            out.append(M)
+        return out[0], out[1]
 
     def _grad_vector(self, H: Function) -> list[Scalar]:
         HX, HP = self.gradient(H)
@@ -654,7 +688,76 @@ class CoordinateAccess(ValueError):
     """Raised when a chart cannot provide a coordinate object."""
 
 
-class TangentScene(Scene):
+class _LiftedScene(Scene):
+    """The scene over a field built on the base scene's field (duals, reverse numbers): every
+    primitive is the base scene's, lifted by :meth:`_lift_primitive`."""
+
+    def _lift_primitive(self, M: Any, key: str | None) -> Any:
+        raise NotImplementedError
+
+    def _param(self, name: str) -> Scalar:
+        return self._lift_primitive(self.base._param(name), None)
+
+    def _point(self):
+        def build():
+            X, P = self.base._point()
+            return self._lift_primitive(X, "X"), self._lift_primitive(P, "P")
+        return self._cached("point", build)
+
+    @property
+    def P(self) -> Mat:
+        if self.base.chart == "equivariant" and self.base.realization == "metric":
+            return self._cached("P_metric", lambda: self._lift_primitive(self.base.P, "P"))
+        return self._point()[1]
+
+    @property
+    def Y(self) -> Mat:
+        return self._cached("Y", lambda: self._lift_primitive(self.base.Y, "Y"))
+
+    @property
+    def Q(self) -> Mat:
+        return self._cached("Q", lambda: self._lift_primitive(self.base.Q, "Q"))
+
+    @property
+    def A(self) -> Mat:
+        return self._cached("A", lambda: self._lift_primitive(self.base.A, None))
+
+    @property
+    def Zc(self) -> Mat:
+        return self._cached("Zc", lambda: self._lift_primitive(self.base.Zc, "Zc"))
+
+    @property
+    def Zc_dot(self) -> Mat:
+        return self._cached("Zc_dot", lambda: self._lift_primitive(self.base.Zc_dot, "Zc_dot"))
+
+    @property
+    def Ainv(self) -> Mat:
+        return self._cached("Ainv", lambda: self._lift_primitive(self.base.Ainv, None))
+
+    @property
+    def a(self):
+        return self._cached("a", lambda: self._lift_primitive(self.base.a, None))
+
+    def _cached(self, key, build):
+        return Scene._cached(self, key, build)
+
+    def sym_operator(self, name: str = "AA"):
+        return self.base.sym_operator(name)
+
+    def generic(self, name, m, k):
+        return self._cached(f"gen:{name}[{m}x{k}]", lambda: self._lift_primitive(self.base.generic(name, m, k), None))
+
+    def _skew_params(self, name, m, tag):
+        return self._lift_primitive(self.base._skew_params(name, m, tag), None)
+
+    def _sym_params(self, name, m, tag):
+        return self._lift_primitive(self.base._sym_params(name, m, tag), None)
+
+    def _general_params(self, name, m, k, tags):
+        return self._lift_primitive(self.base._general_params(name, m, k, tags), None)
+
+
+class TangentScene(_LiftedScene):
     """The scene with primitives X, P (and any others in the flow) perturbed by ε·flow."""
 
     def __init__(self, base: Scene, flow: Mapping[str, Mat]) -> None:
@@ -665,12 +768,20 @@ class TangentScene(Scene):
                          options=base.options, tracker=base.tracker)
         self.params = base.params
 
+    def _lift_primitive(self, M: Any, key: str | None) -> Any:
+        return self._lift(M, self.flow.get(key) if key is not None else None)
+
     def _lift(self, M: Any, dot: Mat | None = None) -> Any:
         if isinstance(M, Mat):
-            a = np.empty(M._a.shape, dtype=object)
+            be = backend(self.field)
+            if be is not None and M.field is self.base.field and (dot is None or dot.field is self.base.field):
+                d = dot._nat() if dot is not None else be.base.zeros(*M._shape())
+                return Mat._wrap_native((M._nat(), d), self.field, M.tags, self.tracker, M._coords)
+            a = np.empty(M._shape(), dtype=object)
             zero = self.base.field.const(0)
-            for idx, x in np.ndenumerate(M._a):
-                a[idx] = Dual(x, dot._a[idx] if dot is not None else zero)
+            dv = dot._view() if dot is not None else None
+            for idx, x in np.ndenumerate(M._view()):
+                a[idx] = Dual(x, dv[idx] if dv is not None else zero)
             return Mat._wrap(a, self.field, M.tags, self.tracker, M._coords)
         if isinstance(M, list):
             return [self._lift(x) for x in M]
@@ -680,66 +791,46 @@ class TangentScene(Scene):
             return M
         return Dual(M, self.base.field.const(0))
 
-    def _param(self, name: str) -> Scalar:
-        return self._lift(self.base._param(name))
 
-    def _point(self):
-        def build():
-            X, P = self.base._point()
-            return self._lift(X, self.flow.get("X")), self._lift(P, self.flow.get("P"))
-        return self._cached("point", build)
+class ReverseScene(_LiftedScene):
+    """The scene over reverse numbers: X and P are the independent variables of a tape, every
+    other primitive a constant (used for gradients, see :mod:`.reverse`)."""
+
+    def __init__(self, base: Scene) -> None:
+        self.base = base
+        super().__init__(base.n, base.r, RevField(base.field), chart=base.chart, rng=base.rng,
+                         component=base.component, realization=base.realization,
+                         options=base.options, tracker=base.tracker)
+        self.params = base.params
+        self.leaves: dict[str, RevMat] = {}
+
+    def _lift_primitive(self, M: Any, key: str | None) -> Any:
+        if isinstance(M, Mat):
+            # the tape's values are untyped and unrecorded: the types are checked (and coordinate
+            # reads recorded) on the matrices of this scene, which carry M's spaces
+            v = Mat._wrap_native(M._nat(), M.field) if M._n is not None or backend(M.field) is not None \
+                else Mat._wrap(M._view(), M.field)
+            if key in ("X", "P"):
+                s = self.leaves.setdefault(key, rev_leaf(v))
+            else:
+                s = RevMat(v)
+            return Mat._wrap_native(s, self.field, M.tags, self.tracker, M._coords)
+        if isinstance(M, list):
+            return [self._lift_primitive(x, None) for x in M]
+        if isinstance(M, tuple):
+            return tuple(self._lift_primitive(x, None) for x in M)
+        if callable(M):
+            return M
+        return Rev(M)
 
     @property
     def P(self) -> Mat:
         if self.base.chart == "equivariant" and self.base.realization == "metric":
-            return self._cached("P_metric", lambda: self._lift(self.base.P, self.flow.get("P")))
+            raise Unsupported("the metric realization's P in the equivariant chart")
         return self._point()[1]
 
-    @property
-    def Y(self) -> Mat:
-        return self._cached("Y", lambda: self._lift(self.base.Y, self.flow.get("Y")))
-
-    @property
-    def Q(self) -> Mat:
-        return self._cached("Q", lambda: self._lift(self.base.Q, self.flow.get("Q")))
-
-    @property
-    def A(self) -> Mat:
-        return self._cached("A", lambda: self._lift(self.base.A))
-
-    @property
-    def Zc(self) -> Mat:
-        return self._cached("Zc", lambda: self._lift(self.base.Zc, self.flow.get("Zc")))
-
-    @property
-    def Zc_dot(self) -> Mat:
-        return self._cached("Zc_dot", lambda: self._lift(self.base.Zc_dot, self.flow.get("Zc_dot")))
-
-    @property
-    def Ainv(self) -> Mat:
-        return self._cached("Ainv", lambda: self._lift(self.base.Ainv))
-
-    @property
-    def a(self):
-        return self._cached("a", lambda: self._lift(self.base.a))
-
-    def _cached(self, key, build):
-        return Scene._cached(self, key, build)
-
-    def sym_operator(self, name: str = "AA"):
-        return self.base.sym_operator(name)
-
-    def generic(self, name, m, k):
-        return self._cached(f"gen:{name}[{m}x{k}]", lambda: self._lift(self.base.generic(name, m, k)))
-
-    def _skew_params(self, name, m, tag):
-        return self._lift(self.base._skew_params(name, m, tag))
-
-    def _sym_params(self, name, m, tag):
-        return self._lift(self.base._sym_params(name, m, tag))
-
-    def _general_params(self, name, m, k, tags):
-        return self._lift(self.base._general_params(name, m, k, tags))
+    def tangent(self, flow):
+        raise Unsupported("a derivative along a flow inside a gradient")
 
 
 #: the primitives a flow or tangent vector may move, and the scene objects they perturb

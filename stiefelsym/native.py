@@ -1,0 +1,505 @@
+"""Whole-matrix backends: one class per number system, each keeping a matrix in native code.
+
+A :class:`~stiefelsym.matrix.Mat` holds its entries either as a numpy array of field elements
+(the generic representation every field supports: symbols, degree markers, duals over them) or
+as the native storage of its field's backend, converting between the two only where an entry is
+read or written.  Every backend implements the same operations on whole matrices:
+
+=========================  =====================================================================
+``ModularBackend``         GF(p) matrices in flint's ``nmod_mat``
+``RationalBackend``        ℚ matrices in flint's ``fmpq_mat``
+``Float64Backend``         numpy float64 values with entrywise bounds on their rounding error
+                           (products by the dot-product bound γ_k |A||B|, inverses by a residual
+                           bound in the Frobenius norm) and the scale of their terms
+``DegreeBackend``          one degree/height marker bounding every entry (a structural bound:
+                           O(1) per operation instead of one marker per entry)
+``DualBackend``            pairs (value, derivative) over any backend: forward mode in one pass
+=========================  =====================================================================
+
+A backend never decides a verdict: it computes the same numbers the generic representation
+would (or, for float64 and degree markers, sound bounds on them), and the tests compare the two
+on random matrices.
+"""
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+from .fields import FLOAT_UNDERFLOW, DegenerateError, Deg, Dual, ErrNum, log2_up
+
+U64 = 2.0**-53
+
+
+class Backend:
+    """Whole-matrix operations over one field (storage is backend-specific)."""
+
+    def from_obj(self, a: np.ndarray) -> Any:
+        raise NotImplementedError
+
+    def to_obj(self, s: Any) -> np.ndarray:
+        raise NotImplementedError
+
+    def shape(self, s: Any) -> tuple[int, int]:
+        raise NotImplementedError
+
+    def zeros(self, m: int, k: int) -> Any:
+        return self.from_obj(_fill(m, k, self.field.const(0)))
+
+    def identity(self, m: int) -> Any:
+        a = _fill(m, m, self.field.const(0))
+        one = self.field.const(1)
+        for i in range(m):
+            a[i, i] = one
+        return self.from_obj(a)
+
+    def block(self, grid: list[list[Any]]) -> Any:
+        a = np.concatenate([np.concatenate([self.to_obj(b) for b in row], axis=1) for row in grid], axis=0)
+        return self.from_obj(a)
+
+    def accepts(self, x: Any) -> bool:
+        """Whether a scalar can multiply a native matrix directly."""
+        return True
+
+
+def _fill(m: int, k: int, x: Any) -> np.ndarray:
+    a = np.empty((m, k), dtype=object)
+    a.fill(x)
+    return a
+
+
+# ----------------------------------------------------------------------------- flint
+class _FlintBackend(Backend):
+    mat: Any = None
+
+    def shape(self, s):
+        return (s.nrows(), s.ncols())
+
+    def to_obj(self, s):
+        m, k = s.nrows(), s.ncols()
+        a = np.empty((m, k), dtype=object)
+        if m and k:
+            a[:, :] = np.array(s.entries(), dtype=object).reshape(m, k)
+        return a
+
+    def add(self, a, b):
+        return a + b
+
+    def sub(self, a, b):
+        return a - b
+
+    def neg(self, a):
+        return -a
+
+    def matmul(self, a, b):
+        if a.ncols() == 0:
+            return self.zeros(a.nrows(), b.ncols())
+        return a * b
+
+    def smul(self, a, c):
+        return a * c
+
+    def T(self, a):
+        return a.transpose()
+
+    def trace(self, a):
+        acc = self.field.const(0)
+        for i in range(a.nrows()):
+            acc = acc + a[i, i]
+        return acc
+
+    def inv(self, a):
+        try:
+            return a.inv()
+        except ZeroDivisionError as exc:
+            raise DegenerateError("singular matrix") from exc
+
+    def is_zero(self, a):
+        return a == self.zeros(a.nrows(), a.ncols())
+
+
+class ModularBackend(_FlintBackend):
+    """GF(p) matrices as flint ``nmod_mat``."""
+
+    def __init__(self, field) -> None:
+        import flint
+        self.field, self.p, self._flint = field, field.p, flint
+
+    def from_obj(self, a):
+        m, k = a.shape
+        nm = self._flint.nmod
+        flat = [x if type(x) is nm else nm(int(x), self.p) for x in a.flat]
+        return self._flint.nmod_mat(m, k, flat, self.p) if m and k else self._flint.nmod_mat(m, k, self.p)
+
+    def zeros(self, m, k):
+        return self._flint.nmod_mat(m, k, self.p)
+
+    def accepts(self, x):
+        return type(x) is self._flint.nmod
+
+
+class RationalBackend(_FlintBackend):
+    """ℚ matrices as flint ``fmpq_mat``."""
+
+    def __init__(self, field) -> None:
+        import flint
+        self.field, self._flint = field, flint
+
+    def from_obj(self, a):
+        m, k = a.shape
+        q = self._flint.fmpq
+        flat = [x if type(x) is q else q(x) for x in a.flat]
+        return self._flint.fmpq_mat(m, k, flat) if m and k else self._flint.fmpq_mat(m, k)
+
+    def zeros(self, m, k):
+        return self._flint.fmpq_mat(m, k)
+
+    def accepts(self, x):
+        return type(x) in (self._flint.fmpq, self._flint.fmpz)
+
+
+# ----------------------------------------------------------------------------- float64
+class F64:
+    """A float64 matrix with entrywise error bounds and term scales (the whole-matrix ErrNum)."""
+
+    __slots__ = ("v", "e", "m")
+
+    def __init__(self, v: np.ndarray, e: np.ndarray, m: np.ndarray) -> None:
+        self.v, self.e, self.m = v, e, m
+
+
+def _gamma(k: int) -> float:
+    """γ_k = k u / (1 − k u), the dot-product rounding constant (Higham, Thm 3.5), padded for the
+    rounding of the bound's own evaluation."""
+    ku = (k + 2) * U64
+    return ku / (1.0 - ku) * (1.0 + 1e-6)
+
+
+def _up(x: np.ndarray, k: int) -> np.ndarray:
+    """Inflate a bound computed in float64 (k operations per entry) so that its own rounding
+    errors cannot make it too small."""
+    return x * (1.0 + _gamma(k + 4))
+
+
+class Float64Backend(Backend):
+    """float64 matrices with a sound first-order entrywise error bound and a residual-checked
+    inverse (numpy/BLAS does the arithmetic)."""
+
+    def __init__(self, field) -> None:
+        self.field = field
+
+    def accepts(self, x):
+        return type(x) is ErrNum and isinstance(x.v, float)
+
+    def from_obj(self, a):
+        m, k = a.shape
+        v, e, s = np.empty((m, k)), np.empty((m, k)), np.empty((m, k))
+        for idx, x in np.ndenumerate(a):
+            if type(x) is not ErrNum:
+                x = self.field.const(x)
+            v[idx], e[idx], s[idx] = float(x.v), float(x.e), float(x.m)
+        return F64(v, e, s)
+
+    def to_obj(self, s):
+        out = np.empty(s.v.shape, dtype=object)
+        u = self.field.u
+        for idx in np.ndindex(s.v.shape):
+            out[idx] = ErrNum(float(s.v[idx]), float(s.e[idx]), float(s.m[idx]), u)
+        return out
+
+    def shape(self, s):
+        return s.v.shape
+
+    def zeros(self, m, k):
+        z = np.zeros((m, k))
+        return F64(z, z.copy(), z.copy())
+
+    def identity(self, m):
+        return F64(np.eye(m), np.zeros((m, m)), np.eye(m))
+
+    def add(self, a, b):
+        with np.errstate(all="ignore"):
+            v = a.v + b.v
+            return F64(v, _up(a.e + b.e + U64 * np.abs(v), 2), a.m + b.m)
+
+    def sub(self, a, b):
+        with np.errstate(all="ignore"):
+            v = a.v - b.v
+            return F64(v, _up(a.e + b.e + U64 * np.abs(v), 2), a.m + b.m)
+
+    def neg(self, a):
+        return F64(-a.v, a.e, a.m)
+
+    def matmul(self, a, b):
+        k = a.v.shape[1]
+        with np.errstate(all="ignore"):
+            v = a.v @ b.v
+            if k == 0:
+                return self.zeros(a.v.shape[0], b.v.shape[1])
+            av, bv = np.abs(a.v), np.abs(b.v)
+            e = av @ b.e + a.e @ bv + a.e @ b.e + _gamma(k) * (av @ bv) + k * FLOAT_UNDERFLOW
+            return F64(v, _up(e, 3 * k), a.m @ b.m)
+
+    def smul(self, a, c):
+        cv, ce, cm = float(c.v), float(c.e), float(c.m)
+        with np.errstate(all="ignore"):
+            v = a.v * cv
+            e = np.abs(a.v) * ce + a.e * abs(cv) + a.e * ce + U64 * np.abs(v) + FLOAT_UNDERFLOW
+            return F64(v, _up(e, 4), a.m * cm)
+
+    def T(self, a):
+        return F64(a.v.T.copy(), a.e.T.copy(), a.m.T.copy())
+
+    def trace(self, a):
+        d = np.diag(a.v)
+        k = len(d)
+        with np.errstate(all="ignore"):
+            v = float(np.sum(d))
+            e = float(np.sum(np.diag(a.e)) + _gamma(k) * np.sum(np.abs(d)))
+            e = e * (1.0 + _gamma(2 * k + 4))
+            m = float(np.sum(np.diag(a.m)))
+        return ErrNum(v, e, m, self.field.u)
+
+    def inv(self, a):
+        """Z ≈ A⁻¹ from LAPACK, then a bound on |A⁻¹ − Z| for every A within the entry bounds:
+        with ρ ≥ ‖I − A Z‖_F (the computed residual, its rounding bound and the input's error
+        times |Z|), ρ < 1 gives ‖A⁻¹ − Z‖_F ≤ ‖Z‖_F ρ / (1 − ρ), a bound on every entry."""
+        m = a.v.shape[0]
+        if not np.all(np.isfinite(a.v)) or not np.all(np.isfinite(a.e)):
+            inf = np.full((m, m), math.inf)
+            return F64(np.zeros((m, m)), inf, inf)
+        try:
+            Z = np.linalg.inv(a.v)
+        except np.linalg.LinAlgError as exc:
+            raise DegenerateError("singular matrix") from exc
+        with np.errstate(all="ignore"):
+            if not np.all(np.isfinite(Z)):
+                raise DegenerateError("a matrix indistinguishable from a singular one")
+            absZ = np.abs(Z)
+            Rv = np.eye(m) - a.v @ Z
+            Rb = np.abs(Rv) + _gamma(m + 1) * (np.abs(a.v) @ absZ + np.eye(m)) + a.e @ absZ + m * FLOAT_UNDERFLOW
+            rho = float(np.sqrt(np.sum(Rb * Rb))) * (1.0 + _gamma(2 * m * m + 8))
+            if not rho < 1.0:
+                raise DegenerateError("a matrix too close to singular for a float64 inverse bound")
+            zf = float(np.sqrt(np.sum(absZ * absZ))) * (1.0 + _gamma(2 * m * m + 8))
+            bound = zf * rho / (1.0 - rho) * (1.0 + 8 * U64)
+            e = np.full((m, m), bound)
+            return F64(Z, e, absZ + e)
+
+    def is_zero(self, a):
+        return bool(np.all(np.abs(a.v) <= a.e))
+
+    def block(self, grid):
+        cat = lambda attr: np.concatenate([np.concatenate([getattr(b, attr) for b in row], axis=1)
+                                           for row in grid], axis=0)
+        return F64(cat("v"), cat("e"), cat("m"))
+
+
+# ----------------------------------------------------------------------------- degree markers
+class DegMat:
+    """m x k matrix whose every entry is bounded by one degree marker."""
+
+    __slots__ = ("shape", "d")
+
+    def __init__(self, shape: tuple[int, int], d: Deg) -> None:
+        self.shape, self.d = shape, d
+
+
+def _times(d: Deg, k: int) -> Deg:
+    """A bound for a sum of k terms each bounded by d."""
+    if d.zero or k <= 1:
+        return d if k >= 1 else Deg(-1, None, d.f)
+    return Deg(d.num, d.den, d.f, d.h + log2_up(k))
+
+
+class DegreeBackend(Backend):
+    """Structural degree bounds: one marker per matrix (sums take the larger degree and add the
+    heights, products add both, inverses follow Cramer's rule), so a claim's degree bound costs
+    O(1) per matrix operation."""
+
+    def __init__(self, field) -> None:
+        self.field = field
+
+    def accepts(self, x):
+        return type(x) is Deg
+
+    def _lift(self, x):
+        return x if type(x) is Deg else self.field.const(x)
+
+    def from_obj(self, a):
+        acc = Deg(-1, None, self.field)
+        for x in a.flat:
+            acc = acc + self._lift(x)
+        return DegMat(a.shape, acc)
+
+    def to_obj(self, s):
+        return _fill(s.shape[0], s.shape[1], s.d)
+
+    def shape(self, s):
+        return s.shape
+
+    def zeros(self, m, k):
+        return DegMat((m, k), Deg(-1, None, self.field))
+
+    def identity(self, m):
+        return DegMat((m, m), self.field.const(1))
+
+    def add(self, a, b):
+        return DegMat(a.shape, a.d + b.d)
+
+    sub = add
+
+    def neg(self, a):
+        return a
+
+    def matmul(self, a, b):
+        return DegMat((a.shape[0], b.shape[1]), _times(a.d * b.d, a.shape[1]))
+
+    def smul(self, a, c):
+        return DegMat(a.shape, a.d * self._lift(c))
+
+    def T(self, a):
+        return DegMat((a.shape[1], a.shape[0]), a.d)
+
+    def trace(self, a):
+        return _times(a.d, a.shape[0])
+
+    def inv(self, a):
+        """Cramer's rule for a matrix whose entries are all bounded by one marker N/D: every
+        cofactor of D·M is bounded by ((m−1) deg N, (m−1)(h + log2 m)) and det(D·M) by
+        (m deg N, m (h + log2 m)), so M⁻¹ = D adj(DM)/det(DM)."""
+        f = self.field
+        m = a.shape[0]
+        d = a.d
+        if d.zero:
+            raise DegenerateError("division by an identically zero expression")
+        num, h = max(d.num, 0), d.h + log2_up(m) if m > 1 else d.h
+        key = f.new_factor(m * num, m * h)
+        den = {key: 1}
+        out = Deg((m - 1) * num + f.den_degree(d.den), den, f, (m - 1) * h + f.den_height(d.den))
+        return DegMat((m, m), out)
+
+    def is_zero(self, a):
+        return a.d.zero
+
+    def block(self, grid):
+        acc = Deg(-1, None, self.field)
+        for row in grid:
+            for b in row:
+                acc = acc + b.d
+        rows = sum(row[0].shape[0] for row in grid)
+        cols = sum(b.shape[1] for b in grid[0])
+        return DegMat((rows, cols), acc)
+
+
+# ----------------------------------------------------------------------------- duals
+class DualBackend(Backend):
+    """(value, derivative) pairs of matrices over a base backend: a derivative along a
+    direction in one pass of native operations."""
+
+    def __init__(self, field, base: Backend) -> None:
+        self.field, self.base = field, base
+
+    def accepts(self, x):
+        return type(x) is Dual and self.base.accepts(x.a) and self.base.accepts(x.b) or self.base.accepts(x)
+
+    def from_obj(self, a):
+        zero = self.field.base.const(0)
+        A = np.empty(a.shape, dtype=object)
+        B = np.empty(a.shape, dtype=object)
+        for idx, x in np.ndenumerate(a):
+            if type(x) is Dual:
+                A[idx], B[idx] = x.a, x.b
+            else:
+                A[idx], B[idx] = x, zero
+        return (self.base.from_obj(A), self.base.from_obj(B))
+
+    def to_obj(self, s):
+        A, B = self.base.to_obj(s[0]), self.base.to_obj(s[1])
+        out = np.empty(A.shape, dtype=object)
+        for idx in np.ndindex(A.shape):
+            out[idx] = Dual(A[idx], B[idx])
+        return out
+
+    def shape(self, s):
+        return self.base.shape(s[0])
+
+    def zeros(self, m, k):
+        return (self.base.zeros(m, k), self.base.zeros(m, k))
+
+    def identity(self, m):
+        return (self.base.identity(m), self.base.zeros(m, m))
+
+    def add(self, a, b):
+        return (self.base.add(a[0], b[0]), self.base.add(a[1], b[1]))
+
+    def sub(self, a, b):
+        return (self.base.sub(a[0], b[0]), self.base.sub(a[1], b[1]))
+
+    def neg(self, a):
+        return (self.base.neg(a[0]), self.base.neg(a[1]))
+
+    def matmul(self, a, b):
+        B = self.base
+        return (B.matmul(a[0], b[0]), B.add(B.matmul(a[0], b[1]), B.matmul(a[1], b[0])))
+
+    def smul(self, a, c):
+        B = self.base
+        if type(c) is not Dual:
+            return (B.smul(a[0], c), B.smul(a[1], c))
+        return (B.smul(a[0], c.a), B.add(B.smul(a[1], c.a), B.smul(a[0], c.b)))
+
+    def T(self, a):
+        return (self.base.T(a[0]), self.base.T(a[1]))
+
+    def trace(self, a):
+        return Dual(self.base.trace(a[0]), self.base.trace(a[1]))
+
+    def inv(self, a):
+        B = self.base
+        Z = B.inv(a[0])
+        return (Z, B.neg(B.matmul(B.matmul(Z, a[1]), Z)))
+
+    def is_zero(self, a):
+        return self.base.is_zero(a[0]) and self.base.is_zero(a[1])
+
+    def block(self, grid):
+        return (self.base.block([[b[0] for b in row] for row in grid]),
+                self.base.block([[b[1] for b in row] for row in grid]))
+
+
+# ----------------------------------------------------------------------------- dispatch
+#: False: every matrix keeps numpy arrays of field elements (the generic path; the tests compare)
+ENABLED = True
+
+
+def backend(field) -> Backend | None:
+    """The whole-matrix backend of a field (cached on the field), or None for the generic path."""
+    try:
+        return field.__dict__["_backend"]
+    except KeyError:
+        pass
+    be = _make(field) if ENABLED else None
+    field.__dict__["_backend"] = be
+    return be
+
+
+def _make(field) -> Backend | None:
+    from .fields import DegreeField, DualField, FloatField, ModularField, RationalField
+    t = type(field)
+    if t is ModularField:
+        return ModularBackend(field)
+    if t is RationalField:
+        return RationalBackend(field)
+    if t is FloatField and field.dps is None:
+        return Float64Backend(field)
+    if t is DegreeField:
+        return DegreeBackend(field)
+    from .reverse import RevBackend, RevField
+    if t is RevField:
+        return RevBackend(field)
+    if t is DualField:
+        base = backend(field.base)
+        return None if base is None else DualBackend(field, base)
+    return None
