@@ -209,3 +209,124 @@ def psi12_is_an_integral_of_the_magnetic_flows(s):
     moved = lambda w: {"X": w["X"] @ s.eta, "P": w["P"] @ s.eta}
     checks["omega_eps right SO(2)-invariant"] = twisted.form(s, moved(u), v) + twisted.form(s, u, moved(v))
     return checks
+
+
+# -- (prep) and the Lax pair with Φ_ε -------------------------------------------------------------
+
+MAGNETIC_HAMILTONIANS = (("mag-euk", H_neumann_euclidean), ("mag-nor", H_neumann_normal))
+
+
+@claim("magnetic-prep", paper=("prep", "mag-euk", "mag-nor", "mag-mom-stief"), kind="id", sizes=ON_V_N2,
+       statement=r"\tfrac{d}{dt}\Phi_\epsilon=[e_1\otimes e_1+e_2\otimes e_2,A],\quad "
+                 r"\tfrac{d}{dt}(e_1\otimes e_1+e_2\otimes e_2)=[\Phi_\epsilon,e_1\otimes e_1+e_2\otimes e_2]\ "
+                 r"\text{along (mag-euk), (mag-nor)}")
+def magnetic_prep(s):
+    """Along both magnetic Neumann flows (mag-euk) and (mag-nor), derived from the twisted form, (prep) holds with Φ_ε in place of Φ: dΦ_ε/dt = [XXᵀ, A] and d(XXᵀ)/dt = [Φ_ε, XXᵀ], XXᵀ = e₁⊗e₁ + e₂⊗e₂."""
+    XX = s.X @ s.X.T
+    checks = {}
+    for name, H in MAGNETIC_HAMILTONIANS:
+        flow = twisted.flow(s, H)
+        checks[f"dPhi_eps/dt ({name})"] = s.d(Phi_eps, flow) - comm(XX, s.A)
+        checks[f"d(XX^T)/dt ({name})"] = s.d(lambda t: t.X @ t.X.T, flow) - comm(Phi_eps(s), XX)
+    return checks
+
+
+def L_mag(s):
+    """(LA2) with Φ_ε: 𝓛(λ) = λΦ_ε + XXᵀ − λ²A."""
+    return s.lam * Phi_eps(s) + s.X @ s.X.T - s.lam * s.lam * s.A
+
+
+def A_mag(s):
+    """(LA2) with Φ_ε: 𝓐(λ) = Φ_ε − λA."""
+    return Phi_eps(s) - s.lam * s.A
+
+
+@claim("magnetic-lax", paper=("LA1", "LA2", "mag-euk", "mag-nor", "mag-mom-stief"), kind="lax", sizes=ON_V_N2,
+       statement=r"\tfrac{d}{dt}\mathcal L(\lambda)=[\mathcal A(\lambda),\mathcal L(\lambda)],\quad "
+                 r"\mathcal L=\lambda\Phi_\epsilon+XX^T-\lambda^2A,\ \mathcal A=\Phi_\epsilon-\lambda A\ "
+                 r"\text{along (mag-euk), (mag-nor)}")
+def magnetic_lax_pair(s):
+    """Both magnetic Neumann flows (mag-euk) and (mag-nor), derived from the twisted form, imply the Lax representation (LA1), (LA2) with the momentum map Φ_ε of (mag-mom-stief) in place of Φ."""
+    checks = {}
+    for name, H in MAGNETIC_HAMILTONIANS:
+        checks[f"LA1 ({name})"] = s.d(L_mag, twisted.flow(s, H)) - comm(A_mag(s), L_mag(s))
+    return checks
+
+
+# -- the magnetic Neumann system on G(n, 2) -------------------------------------------------------
+
+def horizontal_point(s):
+    """(X, P_h), P_h = (I − XXᵀ)P: a generic point of Ψ⁻¹(0) = {XᵀP = 0} (gras-velocities with ė = p)."""
+    return s.X, (s.In - s.X @ s.X.T) @ s.P
+
+
+def Phi_eps_grass(s, e1, e2, e1dot, e2dot):
+    """(mag-mom-grass), first form: ė₁∧e₁ + ė₂∧e₂ + εe₁∧e₂."""
+    return wedge(e1dot, e1) + wedge(e2dot, e2) + s.eps * wedge(e1, e2)
+
+
+def Phi_eps_grass_commutator(s, e1, e2, e1dot, e2dot):
+    """(mag-mom-grass), second form: [e₁∧e₂, ė₁∧e₂ + e₁∧ė₂] + εe₁∧e₂."""
+    return comm(wedge(e1, e2), wedge(e1dot, e2) + wedge(e1, e2dot)) + s.eps * wedge(e1, e2)
+
+
+def grass_momentum_of(t):
+    """Φ_ε of (mag-mom-grass) at (X, (I − XXᵀ)P), as a function of the scene."""
+    X, Ph = horizontal_point(t)
+    e1, e2 = X @ unit(t, 0), X @ unit(t, 1)
+    return Phi_eps_grass(t, e1, e2, Ph @ unit(t, 0), Ph @ unit(t, 1))
+
+
+@claim("magnetic-grassmannian-momentum", paper=("mag-mom-grass", "gras-velocities", "mag-mom-stief"), kind="id",
+       sizes=ON_V_N2,
+       statement=r"(e_i,e_j)=\delta_{ij},\ (\dot e_i,e_j)=0:\quad \Phi_\epsilon=\dot e_1\wedge e_1+\dot e_2\wedge e_2+\epsilon\,e_1\wedge e_2"
+                 r"=[e_1\wedge e_2,\dot e_1\wedge e_2+e_1\wedge\dot e_2]+\epsilon\,e_1\wedge e_2")
+def magnetic_grassmannian_momentum(s):
+    """For velocities satisfying (gras-velocities) the two forms of the magnetic momentum map (mag-mom-grass) agree, it is the Stiefel momentum map Φ_ε of (mag-mom-stief) on Ψ⁻¹(0) (where ė = p), and it is right SO(2)-invariant, so a function on the magnetic T*G_{n,2}."""
+    X, Ph = horizontal_point(s)
+    e1, e2 = col(s, 0), col(s, 1)
+    e1dot, e2dot = Ph @ unit(s, 0), Ph @ unit(s, 1)
+    right = {"X": s.X @ s.eta, "P": s.P @ s.eta}
+    first = Phi_eps_grass(s, e1, e2, e1dot, e2dot)
+    return {
+        "gras-velocities (e_i, de_j/dt) = 0": X.T @ Ph,
+        "two forms of (mag-mom-grass)": first - Phi_eps_grass_commutator(s, e1, e2, e1dot, e2dot),
+        "= (mag-mom-stief) at (X, P_h)": first - (Ph @ X.T - X @ Ph.T + s.eps * wedge(e1, e2)),
+        "right SO(2)-invariant": s.d(grass_momentum_of, right),
+    }
+
+
+def rhs_neum_gras_mag(s, e1, e2, e1dot, e2dot):
+    """The right-hand side of (neum-gras-mag) as printed."""
+    A, eps = s.A, s.eps
+    d = lambda x, y: dot(s, x, y)
+    lam = d(e1, A @ e1) - d(e1dot, e1dot) + d(e2, A @ e2) - d(e2dot, e2dot)
+    return (-wedge(A @ e1, e2) - wedge(e1, A @ e2) + lam * wedge(e1, e2) + 2 * wedge(e1dot, e2dot)
+            + eps * comm(wedge(e1, e2), wedge(e1dot, e2) + wedge(e1, e2dot)))
+
+
+@claim("magnetic-grassmannian-flow", paper=("neum-gras-mag", "mag-euk", "mag-nor", "prep"), kind="id", sizes=ON_V_N2,
+       statement=r"\tfrac{d^2}{dt^2}(e_1\wedge e_2)=-Ae_1\wedge e_2-e_1\wedge Ae_2+\big((e_1,Ae_1)-(\dot e_1,\dot e_1)"
+                 r"+(e_2,Ae_2)-(\dot e_2,\dot e_2)\big)e_1\wedge e_2+2\dot e_1\wedge\dot e_2"
+                 r"+\epsilon[e_1\wedge e_2,\dot e_1\wedge e_2+e_1\wedge\dot e_2]")
+def magnetic_grassmannian_flow(s):
+    """The magnetic Neumann system (neum-gras-mag) on G_{n,2} is the reduction of (mag-euk) and of (mag-nor) on Ψ⁻¹(0): at a generic point of Ψ⁻¹(0) the twisted flow keeps Ψ = 0, has ė = p, and its second derivative of e₁∧e₂ is the printed right-hand side; along it (prep) holds with the Φ_ε of (mag-mom-grass)."""
+    X, Ph = horizontal_point(s)
+    h = twisted.at_point(s, X, Ph)
+    e1, e2 = col(h, 0), col(h, 1)
+    XX = X @ X.T
+    checks = {"Psi at the point": h.Psi}
+    for name, H in MAGNETIC_HAMILTONIANS:
+        flow = twisted.flow(h, H)
+        e1dot, e2dot = flow.Xdot @ unit(h, 0), flow.Xdot @ unit(h, 1)
+        e1dd, e2dd = flow.Pdot @ unit(h, 0), flow.Pdot @ unit(h, 1)    # ë = d/dt p since ė = p on Ψ⁻¹(0)
+        second = wedge(e1dd, e2) + 2 * wedge(e1dot, e2dot) + wedge(e1, e2dd)
+        grass = Phi_eps_grass(h, e1, e2, e1dot, e2dot)
+        checks[f"dPsi/dt at Psi = 0 ({name})"] = h.d(lambda t: t.Psi, flow)
+        checks[f"de/dt = p on Psi = 0 ({name})"] = flow.Xdot - Ph
+        checks[f"(neum-gras-mag) ({name})"] = second - rhs_neum_gras_mag(h, e1, e2, e1dot, e2dot)
+        checks[f"(prep): dPhi_eps/dt = [XX^T, A] ({name})"] = (
+            wedge(e1dd, e1) + wedge(e2dd, e2) + h.eps * (wedge(e1dot, e2) + wedge(e1, e2dot)) - comm(XX, h.A))
+        checks[f"(prep): d(XX^T)/dt = [Phi_eps, XX^T] ({name})"] = (
+            e1dot @ e1.T + e1 @ e1dot.T + e2dot @ e2.T + e2 @ e2dot.T - comm(grass, XX))
+    return checks
