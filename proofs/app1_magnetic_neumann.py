@@ -330,3 +330,201 @@ def magnetic_grassmannian_flow(s):
         checks[f"(prep): d(XX^T)/dt = [Phi_eps, XX^T] ({name})"] = (
             e1dot @ e1.T + e1 @ e1dot.T + e2dot @ e2.T + e2 @ e2dot.T - comm(grass, XX))
     return checks
+
+
+# -- Proposition YM: the rigid body on SO(n) = V(n, n) ----------------------------------------------
+
+def last(s):
+    """e_n, the last column of 𝒳 = X ∈ SO(n) (r = n)."""
+    return col(s, s.r - 1)
+
+
+def H_CP(s):
+    """(mag*): H_CP = ½⟨M, M⟩ + ½(tr A − (e_n, Ae_n)), M = Φ = 𝒫𝒳ᵀ − 𝒳𝒫ᵀ."""
+    e = last(s)
+    return s.killing(s.Phi, s.Phi) / 2 + (s.tr(s.A) - dot(s, e, s.A @ e)) / 2
+
+
+def first_columns(s, k):
+    """The r × k matrix (E_1, ..., E_k) of ℝʳ."""
+    return s.mat([[1 if i == j else 0 for j in range(k)] for i in range(s.r)], ("r", "?"))
+
+
+def stiefel_image(s):
+    """(iden1) backwards: (𝒳, 𝒫) ↦ (X', P') ∈ T*V(n, n−1), X' = (e_1, ..., e_{n−1}), P' the cotangent
+    lift (P' = MX' − ½X'X'ᵀMX', the unique covector with Φ(X', P') = M)."""
+    Xp = s.X @ first_columns(s, s.r - 1)
+    M = s.Phi
+    return Xp, M @ Xp - Xp @ (Xp.T @ M @ Xp) / 2
+
+
+def neumann_normal_at(s, X, P):
+    """H_neum,0 at (X, P): ½tr(PᵀP) − ½tr((XᵀP)²) + ½tr(XᵀAX)."""
+    XtP = X.T @ P
+    return (s.tr(P.T @ P) - s.tr(XtP @ XtP) + s.tr(X.T @ s.A @ X)) / 2
+
+
+def flow_N0_at(s, X, P):
+    """(N0_XP2) at (X, P): Ẋ = P − XPᵀX, Ṗ = −AX + PXᵀP − XPᵀP + XXᵀAX."""
+    A = s.A
+    return {"X": P - X @ P.T @ X, "P": -(A @ X) + P @ X.T @ P - X @ P.T @ P + X @ X.T @ A @ X}
+
+
+def right_so_n_minus_1(s):
+    """The right action of η' ∈ so(n−1) ⊂ so(n) (η' = DηD, D = diag(1, ..., 1, 0))."""
+    D = projector(s, s.r - 1)
+    eta = D @ s.eta @ D
+    return {"X": s.X @ eta, "P": s.P @ eta}
+
+
+@claim("clebsch-perelomov-hamiltonian", paper=("mag*", "iden1", "N0_XP2"), kind="id", sizes=ON_SO_N,
+       statement=r"e_n\otimes e_n=\mathbf I_n-\sum_{i=1}^{n-1}e_i\otimes e_i,\quad "
+                 r"H_{neum,0}(X,P)=H_{CP}=\tfrac12\langle M,M\rangle+\tfrac12\big(\tr A-(e_n,Ae_n)\big),\quad "
+                 r"M=\mathcal P\mathcal X^T-\mathcal X\mathcal P^T=\Phi(X,P)")
+def clebsch_perelomov_hamiltonian(s):
+    """Under (iden1), T*V_{n,n−1} ≅ T*SO(n) (the cotangent lift (𝒳, 𝒫) ↦ (X, P), X = (e₁, …, e_{n−1}), P = MX − ½XXᵀMX), the momentum maps agree, Φ(X, P) = M, the normal-metric Neumann Hamiltonian becomes the symmetric Clebsch–Perelomov Hamiltonian H_CP of (mag*), which is right SO(n−1)-invariant, and the Dirac flow of H_CP on T*SO(n) is carried to the Neumann flow (N0_XP2) on T*V_{n,n−1}."""
+    n = s.n
+    e = last(s)
+    Xp, Pp = stiefel_image(s)
+    flow = s.dirac_flow(H_CP)
+    image = flow_N0_at(s, Xp, Pp)
+    D = projector(s, n - 1)
+    return {
+        "e_n (x) e_n = I - sum e_i (x) e_i": e @ e.T - (s.In - s.X @ D @ s.X.T),
+        "X'^T X' = I_{n-1}": Xp.T @ Xp - s.identity(n - 1),
+        "X'^T P' + P'^T X' = 0": Xp.T @ Pp + Pp.T @ Xp,
+        "Phi(X', P') = M": Pp @ Xp.T - Xp @ Pp.T - s.Phi,
+        "H_neum,0(X', P') = H_CP": neumann_normal_at(s, Xp, Pp) - H_CP(s),
+        "H_CP right SO(n-1)-invariant": s.d(H_CP, right_so_n_minus_1(s)),
+        "d X'/dt = (N0_XP2)": s.d(lambda t: stiefel_image(t)[0], flow) - image["X"],
+        "d P'/dt = (N0_XP2)": s.d(lambda t: stiefel_image(t)[1], flow) - image["P"],
+    }
+
+
+@claim("rigid-body-euler-poisson", paper=("Euler*", "Poisson", "mag2", "mag*"), kind="id", sizes=ON_SO_N,
+       statement=r"\Omega=\dot{\mathcal X}\mathcal X^{-1}=M,\ \omega=\mathcal X^{-1}\dot{\mathcal X}=m=\mathcal X^{-1}M\mathcal X,\quad "
+                 r"\dot\Omega=[A,e_n\otimes e_n],\quad \dot e_i=\Omega e_i\ (i=1,\dots,n),\quad \dot e_n=\Omega e_n")
+def rigid_body_euler_poisson(s):
+    """Along the Dirac flow of H_CP on T*SO(n), the angular velocities in the space and body frames are the angular momenta, Ω = 𝒳̇𝒳⁻¹ = M and ω = 𝒳⁻¹𝒳̇ = m = 𝒳⁻¹M𝒳 (the inertia operator is the identity), and the motion obeys the Euler–Poincaré equation (Euler*) Ω̇ = [A, e_n⊗e_n] with the Poisson equations (Poisson), in particular (mag2) ė_n = Ωe_n."""
+    flow = s.dirac_flow(H_CP)
+    e = last(s)
+    Omega = flow.Xdot @ s.X.T
+    return {
+        "Omega = M": Omega - s.Phi,
+        "omega = m": s.X.T @ flow.Xdot - s.X.T @ s.Phi @ s.X,
+        "(Euler*)": s.d(lambda t: t.Phi, flow) - comm(s.A, e @ e.T),
+        "(Poisson) de_i/dt = Omega e_i": flow.Xdot - Omega @ s.X,
+        "(mag2) de_n/dt = Omega e_n": s.d(last, flow) - Omega @ e,
+    }
+
+
+@claim("ym-reduced-neumann", paper=("YM", "Euler**", "mag0", "iden1"), kind="id", sizes=ON_V_NN1,
+       statement=r"T^*V_{n,n-1}/SO(n-1)\cong so(n)\times S^{n-1}:\quad \dot\Omega=[A,e_n\otimes e_n],\quad \dot e_n=\Omega e_n,"
+                 r"\quad \Omega=\Phi,\ e_n\otimes e_n=\mathbf I_n-XX^T")
+def reduced_neumann_is_euler_star_star(s):
+    """Proposition YM (i): the normal-metric Neumann flow (N0_XP2) on T*V_{n,n−1} (the Dirac flow of H_neum,0) reduces by the right SO(n−1) action to (Euler**) on so(n) × S^{n−1}: (Ω, e_n⊗e_n) = (Φ, I − XXᵀ) are invariant, e_n⊗e_n is the rank-one projector onto e_n ⊥ e₁, …, e_{n−1}, and Ω̇ = [A, e_n⊗e_n], d(e_n⊗e_n)/dt = [Ω, e_n⊗e_n] (equivalent to ė_n = Ωe_n for a unit e_n)."""
+    flow = s.dirac_flow(H_neumann_normal)
+    N = s.In - s.X @ s.X.T
+    right = {"X": s.X @ s.eta, "P": s.P @ s.eta}
+    return {
+        "e_n (x) e_n projector": N @ N - N,
+        "e_n orthogonal to e_1..e_{n-1}": N @ s.X,
+        "tr e_n (x) e_n = 1": s.tr(N) - 1,
+        "Omega, e_n (x) e_n right-invariant": [s.d(lambda t: t.Phi, right), s.d(lambda t: t.X @ t.X.T, right)],
+        "(Euler**) dOmega/dt = [A, e_n (x) e_n]": s.d(lambda t: t.Phi, flow) - comm(s.A, N),
+        "(Euler**) de_n/dt = Omega e_n": s.d(lambda t: t.In - t.X @ t.X.T, flow) - comm(s.Phi, N),
+    }
+
+
+def pr_e(xi, e):
+    """pr_{e_n}(ξ) = ξe_n⊗e_n + e_n⊗e_nξ."""
+    return xi @ e @ e.T + e @ e.T @ xi
+
+
+@claim("ym-second-derivative", paper=("YM", "mag6", "mag3", "OD"), kind="id", sizes=ON_SO_N,
+       statement=r"\ddot e_n=Ae_n-\big((e_n,Ae_n)+(\dot e_n,\dot e_n)\big)e_n+F_\Omega\dot e_n,\quad "
+                 r"F_\Omega=\pr_{e_n^\perp}(\Omega)=\Omega-\Phi(e_n,\dot e_n),\quad "
+                 r"\pr_{e_n}(\Omega)=\dot e_n\wedge e_n=\Phi(e_n,\dot e_n)")
+def ym_second_derivative(s):
+    """Proposition YM (ii): along the flow of H_CP, the second derivative of e_n is (mag6) with the Yang–Mills term F_Ωė_n, F_Ω = pr_{e_n⊥}(Ω) = Ω − ė_n∧e_n; (mag3) pr_{e_n}(Ω) = ė_n∧e_n, pr_{e_n} is the orthogonal projection of (OD) (idempotent, ⟨pr_{e_n}ξ, pr_{e_n⊥}ζ⟩ = 0, pr_{e_n⊥}ξ annihilates e_n), ė_n = pr_{e_n}(Ω)e_n, and the steps of the proof hold."""
+    flow = s.dirac_flow(H_CP)
+    e = last(s)
+    Omega = s.Phi
+    edot = Omega @ e
+    edd = s.d(lambda t: t.Phi @ last(t), flow)        # ė_n = Ωe_n = Φe_n on T*SO(n) (Poisson)
+    F = Omega - wedge(edot, e)
+    xi, zeta = s.xi, s.zeta
+    return {
+        "de_n/dt = Omega e_n": s.d(last, flow) - edot,
+        "(mag6)": edd - (s.A @ e - (dot(s, e, s.A @ e) + dot(s, edot, edot)) * e + F @ edot),
+        "(mag3) pr_e(Omega) = de_n/dt ^ e_n": pr_e(Omega, e) - wedge(edot, e),
+        "F_Omega = pr_perp(Omega)": F - (Omega - pr_e(Omega, e)),
+        "de_n/dt = pr_e(Omega) e_n": pr_e(Omega, e) @ e - edot,
+        "(OD) pr_e idempotent": pr_e(pr_e(xi, e), e) - pr_e(xi, e),
+        "(OD) orthogonal": s.killing(pr_e(xi, e), zeta - pr_e(zeta, e)),
+        "(OD) pr_perp(xi) e_n = 0": (xi - pr_e(xi, e)) @ e,
+        "proof: dOmega/dt e_n = (A e_n (x) e_n - e_n (x) e_n A) e_n": s.d(lambda t: t.Phi, flow) @ e
+        - (s.A @ e @ e.T - e @ e.T @ s.A) @ e,
+        "proof: pr_e(Omega) de_n/dt = (de_n/dt ^ e_n) de_n/dt": pr_e(Omega, e) @ edot - wedge(edot, e) @ edot,
+    }
+
+
+# -- the n = 3 monopole remark ------------------------------------------------------------------------
+
+def cross(s, a, b):
+    """a × b for columns a, b of ℝ³ (read from coordinates)."""
+    x = [a[i, 0] for i in range(3)]
+    y = [b[i, 0] for i in range(3)]
+    return s.mat([[x[1] * y[2] - x[2] * y[1]], [x[2] * y[0] - x[0] * y[2]], [x[0] * y[1] - x[1] * y[0]]], ("n", "?"))
+
+
+def e3_of(s):
+    """(iden1) for n = 3: e₃ = e₁ × e₂, so that (e₁, e₂, e₃) ∈ SO(3)."""
+    return cross(s, col(s, 0), col(s, 1))
+
+
+def monopole_terms(s):
+    """Ω = Φ, e₃ = e₁ × e₂, ė₃ (derived along the normal Neumann flow on V_{3,2}), F_Ω, ε = Ψ₁₂, ë₃."""
+    flow = s.dirac_flow(H_neumann_normal)
+    e3 = e3_of(s)
+    Omega = s.Phi
+    e3dot = Omega @ e3
+    F = Omega - wedge(e3dot, e3)
+    eps = s.Psi[0, 1]                               # η = Ψ = εE₁∧E₂
+    e3dd = s.d(lambda t: t.Phi @ e3_of(t), flow)    # ė₃ = Ωe₃ (checked below)
+    return flow, e3, e3dot, F, eps, e3dd
+
+
+def monopole_checks(s, sign):
+    flow, e3, e3dot, F, eps, e3dd = monopole_terms(s)
+    A = s.A
+    lorentz = sign * eps * cross(s, e3, e3dot)
+    return {
+        "e_3 (x) e_3 = I - XX^T": e3 @ e3.T - (s.In - s.X @ s.X.T),
+        "(mag2) d(e_1 x e_2)/dt = Omega e_3": s.d(e3_of, flow) - e3dot,
+        "F_Omega = X Psi X^T = eps e_1 ^ e_2": F - eps * wedge(col(s, 0), col(s, 1)),
+        "F_Omega de_3/dt = eps e_3 x de_3/dt": F @ e3dot - lorentz,
+        "monopole equation": e3dd - (A @ e3 - (dot(s, e3, A @ e3) + dot(s, e3dot, e3dot)) * e3 + lorentz),
+    }
+
+
+@claim("ym-monopole", paper=("YM", "mag6"), kind="id",
+       sizes=admissible(n_max=3, n_min=3, r_min=2, r_max=2, stated_n_max=3, condition="n = 3, r = 2"),
+       equivariance="not used: the cross product e_1 x e_2 is read from coordinates",
+       fails_at=lambda n, r: True,
+       erratum="""The remark after Proposition YM (n = 3, r = 2): with eta = Psi = epsilon E_1 ^ E_2
+       (Psi = X^T P - P^T X), e_3 = e_1 x e_2 (iden1) and so(3) identified with (R^3, x) as Lie algebras,
+       F_Omega = X Psi X^T = epsilon e_1 ^ e_2 = -epsilon hat(e_3), so the Lorentz force is
+       F_Omega de_3/dt = -epsilon e_3 x de_3/dt, not +epsilon e_3 x de_3/dt: the monopole equation holds as
+       d^2e_3/dt^2 = A e_3 - ((e_3, A e_3) + (de_3/dt, de_3/dt)) e_3 - epsilon e_3 x de_3/dt (equivalently, the
+       printed sign with eta = -epsilon E_1 ^ E_2, a monopole of the opposite charge).  (mag6) itself holds.""",
+       statement=r"n=3,\ \eta=\epsilon E_1\wedge E_2:\quad \ddot e_3=Ae_3-\big((e_3,Ae_3)+(\dot e_3,\dot e_3)\big)e_3"
+                 r"+\epsilon\,e_3\times\dot e_3,\quad F_\Omega\dot e_3=\epsilon\,e_3\times\dot e_3")
+def monopole_form(s):
+    """The n = 3 case of Proposition YM: for the normal Neumann flow on V_{3,2} with Ψ = εE₁∧E₂, under so(3) ≅ (ℝ³, ×) and e₃ = e₁ × e₂, the Yang–Mills term of (mag6) is the Lorentz force of a magnetic monopole, F_Ωė₃ = εe₃ × ė₃, and (mag6) becomes the printed monopole equation."""
+    return monopole_checks(s, 1)
+
+
+@monopole_form.claim.correction("the Lorentz force with the opposite sign: F_Ω ė₃ = −ε e₃ × ė₃")
+def monopole_form_corrected(s):
+    return monopole_checks(s, -1)
