@@ -1,0 +1,562 @@
+"""The integrated-flows report: Lax spectra along trajectories, work-precision diagrams, long-time
+behaviour and the Edelman–Arias–Smith closed forms, written to ``reports/flows/``.
+
+Collect first, render separately: :func:`collect` integrates and returns plain data (JSON-ready);
+:func:`write_report` writes the data (``flows.json`` and CSV files), the figures (PNG for Markdown,
+PDF for LaTeX) and ``flows.md``.
+"""
+from __future__ import annotations
+
+import csv
+import io
+import json
+import math
+import platform
+import time
+from datetime import datetime, timezone
+from pathlib import Path
+from typing import Any, Callable, Iterable, Sequence
+
+import numpy as np
+
+from . import integrate as ig
+from .results import write_atomic
+
+__all__ = ["collect", "write_report", "algebraic_verdicts", "SPECTRUM_FIXED"]
+
+#: a Lax spectrum whose drift stays below this (relative) along a DOP853 run at tol 1e-12 is "fixed"
+SPECTRUM_FIXED = 1e-7
+A_DEFAULT = (0.5, 1.3, 2.1, 3.4, 4.6)
+
+
+def _A(n: int) -> np.ndarray:
+    return np.diag(np.asarray(A_DEFAULT[:n], float))
+
+
+def _start(flow: str, n: int, r: int, seed: int) -> tuple[Any, Any]:
+    if flow == "coupled":
+        X, P = ig.random_point(n, r, seed=seed)
+        Y, Q = ig.random_point(n, r, seed=seed + 100)
+        return (X, Y), (P, Q)
+    return ig.random_point(n, r, seed=seed)
+
+
+def _params(flow: str, n: int, kw: dict[str, Any]) -> dict[str, Any]:
+    out = dict(kw)
+    if flow in ("neumann", "manakov", "magnetic", "coupled"):
+        out.setdefault("A", _A(n))
+    return out
+
+
+# --------------------------------------------------------------------------- the cases
+
+def spectra_cases(quick: bool) -> list[dict[str, Any]]:
+    """The flows whose Lax spectra are followed: (flow, n, r, parameters, method, tolerance/step, T)."""
+    n = 3 if quick else 4
+    T = 1.0 if quick else 20.0
+    ref = {"method": "dop853", "tol": 1e-12}
+    cases = [
+        ("neumann", {"kappa": -0.5}, ref), ("neumann", {"kappa": 0.0}, ref), ("neumann", {"kappa": 0.5}, ref),
+        ("jensen", {"kappa": -0.5}, ref), ("jensen", {"kappa": 0.0}, ref),
+        ("manakov", {}, ref), ("manakov", {"B": np.diag([1.0, -0.4, 2.0, 0.3, 1.1][:n])}, ref),
+        ("magnetic", {"kappa": -0.5, "eps": 0.7}, {"method": "rk4", "step": 0.01 if not quick else 0.02}),
+        ("magnetic", {"kappa": -0.5, "eps": 0.7}, ref),
+        ("magnetic", {"kappa": 0.0, "eps": 0.7}, ref),
+        ("coupled", {"kappa": 0.0}, ref), ("coupled", {"kappa": -0.5}, ref),
+        ("coupled", {"kappa": -0.5, "perturbed": True}, ref), ("coupled", {"kappa": 0.5, "perturbed": True}, ref),
+    ]
+    out = []
+    for flow, kw, how in cases:
+        r = 2
+        out.append({"flow": flow, "n": n, "r": r, "params": kw, "T": T, **how})
+    return out
+
+
+def _run(case: dict[str, Any], seed: int = 1, samples: int = 101) -> ig.Trajectory:
+    X0, P0 = _start(case["flow"], case["n"], case["r"], seed)
+    kw = _params(case["flow"], case["n"], case["params"])
+    return ig.integrate(X0, P0, case["flow"], case["T"], method=case["method"], tol=case.get("tol", 1e-8),
+                        step=case.get("step"), samples=samples, **kw)
+
+
+def _jsonable_params(kw: dict[str, Any]) -> dict[str, Any]:
+    out = {}
+    for k, v in kw.items():
+        if isinstance(v, np.ndarray):
+            out[k] = np.diag(v).tolist() if v.ndim == 2 else v.tolist()
+        else:
+            out[k] = v
+    return out
+
+
+def collect_spectra(quick: bool, log: Callable[[str], None]) -> list[dict[str, Any]]:
+    rows = []
+    for case in spectra_cases(quick):
+        tr = _run(case)
+        fl = ig.make_flow(case["flow"], case["n"], case["r"], **_params(case["flow"], case["n"], case["params"]))
+        errs = tr.max_errors()
+        for lx in fl.lax:
+            drift = float(tr.lax_drift[lx.name].max())
+            rows.append({
+                "flow": fl.label, "flow_name": case["flow"], "paper_flow": list(fl.paper), "n": case["n"], "r": case["r"],
+                "params": _jsonable_params(case["params"]), "method": case["method"],
+                "tol": case.get("tol"), "step": tr.step, "T": case["T"], "lax": lx.name, "paper": list(lx.paper),
+                "printed": lx.printed, "note": lx.note, "lambdas": list(lx.lambdas), "drift": drift,
+                "constraint_error": max(errs["position"], errs["momentum"]),
+                "hamiltonian_error": errs.get("hamiltonian"), "seconds": tr.seconds,
+                "invariants": {k[len("invariant: "):]: v for k, v in errs.items() if k.startswith("invariant: ")},
+            })
+        log(f"spectra: {fl.label} {case['method']} ({tr.seconds:.1f}s)")
+    return rows
+
+
+def wp_cases(quick: bool) -> list[dict[str, Any]]:
+    n, r = (3, 2) if quick else (4, 2)
+    T = 2.0 if quick else 50.0
+    tols = (1e-6, 1e-9) if quick else (1e-5, 1e-7, 1e-9, 1e-11, 1e-13)
+    rattle = (0.1, 0.03) if quick else (0.1, 0.05, 0.02, 0.01, 0.005)
+    rk4 = (0.1, 0.05) if quick else (0.2, 0.1, 0.05, 0.025, 0.0125)
+    cases = [("neumann", {"kappa": -0.5}, True), ("neumann", {"kappa": 0.0}, True),
+             ("manakov", {}, False), ("coupled", {"kappa": 0.0}, False)]
+    if quick:
+        cases = cases[:2]
+    out = []
+    for flow, kw, has_rattle in cases:
+        runs = [("dop853", {"tol": t}) for t in tols] + [("rk4", {"step": h}) for h in rk4]
+        if has_rattle:
+            runs += [("rattle", {"step": h}) for h in rattle]
+        out.append({"flow": flow, "n": n, "r": r, "params": kw, "T": T, "runs": runs})
+    return out
+
+
+def collect_wp(quick: bool, log: Callable[[str], None]) -> list[dict[str, Any]]:
+    rows = []
+    for case in wp_cases(quick):
+        for method, how in case["runs"]:
+            c = {**case, "method": method, **how}
+            tr = _run(c)
+            e = tr.max_errors()
+            printed_lax = [k for k in tr.lax_drift if "correction" not in k]
+            lax_err = max((float(tr.lax_drift[k].max()) for k in printed_lax if "so(n,n)" not in k), default=float("nan"))
+            rows.append({"flow": tr.flow, "flow_name": case["flow"], "n": case["n"], "r": case["r"], "T": case["T"],
+                         "method": method, "tol": how.get("tol"), "step": tr.step, "seconds": tr.seconds,
+                         "evaluations": tr.evaluations,
+                         "constraint_error": max(e["position"], e["momentum"]),
+                         "hamiltonian_error": e.get("hamiltonian", float("nan")), "lax_error": lax_err})
+        log(f"work-precision: {case['flow']} {case['params']} ({len(case['runs'])} runs)")
+    return rows
+
+
+def collect_long(quick: bool, log: Callable[[str], None]) -> dict[str, Any]:
+    """The long run: the Euclidean Neumann flow on V(3, 2) up to t = 1e4 with each method."""
+    T = 50.0 if quick else 1e4
+    runs = [("dop853", {"tol": 1e-9}), ("rattle", {"step": 0.05}), ("rk4", {"step": 0.1})]
+    out: dict[str, Any] = {"flow": "neumann", "n": 3, "r": 2, "params": {"kappa": -0.5}, "T": T, "runs": []}
+    for method, how in runs:
+        c = {"flow": "neumann", "n": 3, "r": 2, "params": {"kappa": -0.5}, "T": T, "method": method, **how}
+        tr = _run(c, samples=201)
+        e = tr.max_errors()
+        lax_name = next(iter(tr.lax_drift))
+        out["runs"].append({
+            "method": method, "tol": how.get("tol"), "step": tr.step, "seconds": tr.seconds, "evaluations": tr.evaluations,
+            "times": tr.times.tolist(),
+            "constraint_error": np.maximum(tr.position_error, tr.momentum_error).tolist(),
+            "hamiltonian_error": tr.hamiltonian_error.tolist(), "lax_error": tr.lax_drift[lax_name].tolist(),
+            "max": {"constraint": max(e["position"], e["momentum"]), "hamiltonian": e["hamiltonian"],
+                    "lax": float(tr.lax_drift[lax_name].max())}})
+        log(f"long run: {method} to t = {T:g} ({tr.seconds:.1f}s)")
+    return out
+
+
+def collect_closed_forms(quick: bool, log: Callable[[str], None]) -> list[dict[str, Any]]:
+    """Integrated Jensen geodesics against the closed forms (EAS Euclidean / canonical, and the rotated
+    Euclidean geodesic for any κ)."""
+    rows = []
+    sizes = [(4, 2)] if quick else [(5, 2), (4, 3), (3, 3)]
+    times = (1.0,) if quick else (1.0, 10.0, 100.0)
+    for n, r in sizes:
+        X, P = ig.random_point(n, r, seed=7)
+        for kappa in (-0.5, 0.0, 0.5):
+            for T in times:
+                Xc, Pc = ig.jensen_geodesic(X, P, kappa, T)
+                tr = ig.integrate(X, P, "jensen", T, method="dop853", tol=1e-13, samples=2, kappa=kappa)
+                Xi, Pi = tr.final()
+                row = {"n": n, "r": r, "kappa": kappa, "beta": ig.metric_beta(kappa), "T": T,
+                       "dop853_vs_closed_X": float(np.abs(Xi - Xc).max()),
+                       "dop853_vs_closed_P": float(np.abs(Pi - Pc).max())}
+                tr2 = ig.integrate(X, P, "jensen", T, method="rattle", step=0.01, samples=2, kappa=kappa)
+                row["rattle_h0.01_vs_closed_X"] = float(np.abs(tr2.final()[0] - Xc).max())
+                if kappa == -0.5:
+                    row["eas"] = "Euclidean"
+                    row["eas_vs_closed_X"] = float(np.abs(ig.euclidean_geodesic(X, P, T) - Xc).max())
+                    row["eas_vs_dop853_X"] = float(np.abs(ig.euclidean_geodesic(X, P, T) - Xi).max())
+                elif kappa == 0.0:
+                    V = P - X @ P.T @ X                      # (dot_X3): the velocity of the normal metric
+                    row["eas"] = "canonical"
+                    row["eas_vs_closed_X"] = float(np.abs(ig.canonical_geodesic(X, V, T) - Xc).max())
+                    row["eas_vs_dop853_X"] = float(np.abs(ig.canonical_geodesic(X, V, T) - Xi).max())
+                    row["eas_with_velocity_P_vs_dop853_X"] = float(np.abs(ig.canonical_geodesic(X, P, T) - Xi).max())
+                rows.append(row)
+        log(f"closed forms: V({n},{r})")
+    return rows
+
+
+def collect(quick: bool = False, log: Callable[[str], None] = lambda s: None) -> dict[str, Any]:
+    """Every integration of the report, as plain data."""
+    started = time.perf_counter()
+    data = {
+        "schema": 1,
+        "meta": {"quick": quick, "created": datetime.now(timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ"),
+                 "python": platform.python_version(), "numpy": np.__version__, "machine": platform.machine(),
+                 "A": list(A_DEFAULT), "spectrum_fixed_threshold": SPECTRUM_FIXED},
+        "spectra": collect_spectra(quick, log),
+        "work_precision": collect_wp(quick, log),
+        "long_time": collect_long(quick, log),
+        "closed_forms": collect_closed_forms(quick, log),
+    }
+    data["meta"]["seconds"] = time.perf_counter() - started
+    return data
+
+
+# --------------------------------------------------------------------------- algebraic verdicts
+
+def algebraic_verdicts(results_path: Path, labels: Sequence[str], kind: str | None = "lax") -> list[dict[str, Any]]:
+    """The catalog's verdicts on the claims stated for any of the paper labels (by ``\\label``),
+    from a ``results.json``: one summary per claim (printed statement, and its corrections)."""
+    try:
+        doc = json.loads(Path(results_path).read_text())
+    except (OSError, ValueError):
+        return []
+    summary: dict[str, dict[str, Any]] = {}
+    for r in doc.get("results", []):
+        paper = r.get("paper") or []
+        if isinstance(paper, str):
+            paper = [paper]
+        if not set(paper) & set(labels):
+            continue
+        if kind is not None and r.get("kind") != kind:
+            continue
+        s = summary.setdefault(r["claim"], {"claim": r["claim"], "paper": list(paper), "printed": {}, "corrections": {},
+                                            "free": None, "erratum": bool(r.get("erratum"))})
+        if r.get("method") == "free" and not r.get("variant"):
+            s["free"] = r.get("verdict")
+            continue
+        bucket = s["corrections"] if r.get("variant") else s["printed"]
+        bucket[r.get("verdict")] = bucket.get(r.get("verdict"), 0) + 1
+    return list(summary.values())
+
+
+def _verdict_text(v: dict[str, Any]) -> str:
+    def counts(d: dict[str, int]) -> str:
+        return ", ".join(f"{k} {c}" for k, c in sorted(d.items()))
+    parts = []
+    if v["free"] == "proved":
+        parts.append("proved for all n, r")
+    if v["printed"]:
+        parts.append(f"as printed: {counts(v['printed'])} sizes")
+    if v["corrections"]:
+        parts.append(f"corrected: {counts(v['corrections'])}")
+    return f"`{v['claim']}`: " + "; ".join(parts)
+
+
+# --------------------------------------------------------------------------- rendering
+
+def _digits(x: float) -> str:
+    if x is None or not math.isfinite(x):
+        return "–"
+    if x <= 0:
+        return "1e-16"
+    return f"1e{math.ceil(math.log10(x)):d}"
+
+
+def _e(x: Any) -> str:
+    return "–" if x is None or (isinstance(x, float) and not math.isfinite(x)) else f"{x:.1e}"
+
+
+METHOD_STYLE = {"dop853": ("DOP853 (reference, tol)", "o-"), "rattle": ("RATTLE (step h)", "s-"),
+                "rk4": ("RK4 + projection (step h)", "^-")}
+
+
+def _figures(data: dict[str, Any], out: Path) -> list[str]:
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    names = []
+    wp = data["work_precision"]
+    flows = list(dict.fromkeys(r["flow"] for r in wp))
+    for i, flow in enumerate(flows):
+        rows = [r for r in wp if r["flow"] == flow]
+        fig, axes = plt.subplots(1, 3, figsize=(12, 3.6))
+        for ax, key, title in zip(axes, ("constraint_error", "hamiltonian_error", "lax_error"),
+                                  ("constraints ‖XᵀX−I‖, ‖XᵀP+PᵀX‖", "Hamiltonian |ΔH|/|H|", "Lax spectrum drift")):
+            for method, (label, style) in METHOD_STYLE.items():
+                pts = sorted((r["seconds"], max(r[key], 1e-17)) for r in rows if r["method"] == method
+                             and r[key] is not None and math.isfinite(r[key]))
+                if pts:
+                    ax.loglog(*zip(*pts), style, label=label, ms=4)
+            ax.set_title(title, fontsize=9)
+            ax.set_xlabel("wall time (s)")
+            ax.grid(True, which="both", alpha=0.3)
+        axes[0].set_ylabel("largest error on [0, T]")
+        axes[0].legend(fontsize=7)
+        fig.suptitle(f"work-precision: {flow} on V({rows[0]['n']},{rows[0]['r']}), T = {rows[0]['T']:g}", fontsize=10)
+        fig.tight_layout()
+        name = f"wp_{i + 1}"
+        fig.savefig(out / f"{name}.png", dpi=110, metadata={"Software": None})
+        fig.savefig(out / f"{name}.pdf", metadata={"CreationDate": None, "Creator": None, "Producer": None})
+        plt.close(fig)
+        names.append(name)
+    lt = data["long_time"]
+    fig, axes = plt.subplots(1, 3, figsize=(12, 3.6))
+    for ax, key, title in zip(axes, ("constraint_error", "hamiltonian_error", "lax_error"),
+                              ("constraints", "Hamiltonian |ΔH|/|H|", "Lax spectrum drift (LA2)")):
+        for run in lt["runs"]:
+            label, _ = METHOD_STYLE[run["method"]]
+            t = np.asarray(run["times"])[1:]
+            y = np.maximum(np.asarray(run[key])[1:], 1e-17)
+            what = f"tol {run['tol']:g}" if run["tol"] else f"h = {run['step']:g}"
+            ax.loglog(t, y, label=f"{run['method']} {what} ({run['seconds']:.0f}s)")
+        ax.set_title(title, fontsize=9)
+        ax.set_xlabel("t")
+        ax.grid(True, which="both", alpha=0.3)
+    axes[0].set_ylabel("error at time t")
+    axes[0].legend(fontsize=7)
+    fig.suptitle(f"long run: Euclidean Neumann flow (NE_XP) on V(3,2) to t = {lt['T']:g}", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(out / "long_time.png", dpi=110, metadata={"Software": None})
+    fig.savefig(out / "long_time.pdf", metadata={"CreationDate": None, "Creator": None, "Producer": None})
+    plt.close(fig)
+    names.append("long_time")
+    return names
+
+
+def _csv(rows: Iterable[dict[str, Any]], keys: Sequence[str]) -> str:
+    buf = io.StringIO()
+    w = csv.DictWriter(buf, fieldnames=list(keys), extrasaction="ignore", lineterminator="\n")
+    w.writeheader()
+    for r in rows:
+        w.writerow({k: (json.dumps(r.get(k), ensure_ascii=False) if isinstance(r.get(k), (dict, list)) else r.get(k))
+                    for k in keys})
+    return buf.getvalue()
+
+
+def _tradeoffs(wp: list[dict[str, Any]]) -> list[dict[str, Any]]:
+    """Per flow and method: the smallest error reached, its cost, and the error reached within ~1 s."""
+    out = []
+    for flow in dict.fromkeys(r["flow"] for r in wp):
+        for method in METHOD_STYLE:
+            rows = [r for r in wp if r["flow"] == flow and r["method"] == method]
+            if not rows:
+                continue
+            best = min(rows, key=lambda r: max(r["hamiltonian_error"], r["lax_error"] if math.isfinite(r["lax_error"]) else 0))
+            cheap = min(rows, key=lambda r: r["seconds"])
+            out.append({"flow": flow, "method": method,
+                        "best_H": best["hamiltonian_error"], "best_lax": best["lax_error"],
+                        "best_constraint": best["constraint_error"], "best_seconds": best["seconds"],
+                        "best_setting": f"tol {best['tol']:g}" if best["tol"] else f"h = {best['step']:g}",
+                        "cheap_H": cheap["hamiltonian_error"], "cheap_seconds": cheap["seconds"],
+                        "cheap_setting": f"tol {cheap['tol']:g}" if cheap["tol"] else f"h = {cheap['step']:g}",
+                        "worst_constraint": max(r["constraint_error"] for r in rows)})
+    return out
+
+
+def render_markdown(data: dict[str, Any], results_path: Path, figures: Sequence[str]) -> str:
+    meta = data["meta"]
+    L: list[str] = []
+    add = L.append
+    add("# Integrated flows: Lax spectra, work-precision and closed-form geodesics")
+    add("")
+    add("Generated by `stiefelsym flows` (`make flows`)" + (" in **quick** mode (small sizes, short times)" if meta["quick"] else "")
+        + f"; {meta['seconds']:.0f} s of compute on {meta['machine']}, numpy {meta['numpy']}, float64. "
+        "The API is `stiefelsym.integrate` (`integrate(X0, P0, flow, t_span, method=..., tol=...)`). "
+        f"A = diag({', '.join(f'{a:g}' for a in meta['A'])}) (its first n entries); starting points are seeded random "
+        "points of T*V (XᵀX = I, XᵀP + PᵀX = 0, ‖P‖ ≈ √(nr)). Every vector field is the Dirac flow (dot_XP) of the printed "
+        "Hamiltonian (the multipliers Π, Λ solved from the constraints), except the magnetic flows, which are integrated as "
+        "printed, (mag-euk) and (mag-nor). The data are in `flows.json` and the CSV files next to this one.")
+    add("")
+    add("Methods: **DOP853** (scipy, explicit, order 8, step control; the reference), **RATTLE** (symplectic, "
+        "time-reversible, order 2; SHAKE for XᵀX = I by a chord-Newton iteration on the symmetric multiplier, then the "
+        "exact tangent projection of P; for H_κ with κ ≠ −½ it integrates H_{−½} and applies the exact right rotation "
+        "exp(t(κ+½)Ψ₀), since H_κ = H_{−½} + (κ+½)·½⟨Ψ,Ψ⟩ and the two terms Poisson-commute; it does not cover the "
+        "Manakov and magnetic flows), **RK4 + projection** (classical RK4 with a fixed step, then X ↦ polar factor, "
+        "P ↦ P − X sym(XᵀP)).")
+    add("")
+    # ---------------------------------------------------------------- spectra
+    add("## Lax spectra along integrated trajectories")
+    add("")
+    add("The spectrum of a Lax matrix L(λ) that satisfies dL/dt = [L, M] for *some* M stays fixed. This checks the Lax matrix L independently of the algebra; it does "
+        "not see the second matrix M of the pair (a wrong printed M with a right L still gives a fixed spectrum). "
+        "The spectrum is compared through the power traces tr L(λ)ᵏ, k = 1..dim (the integrals (perelomov)), "
+        "scaled by ‖L(λ)‖₂ᵏ at t = 0, at three λ (away from the poles of the resolvents); the drift is the largest change. "
+        f"\"Fixed to 1e-k\" is the drift rounded up; \"isospectral\" means drift < {SPECTRUM_FIXED:g} while the "
+        "constraints and H are kept to about 1e-10.")
+    add("")
+    add("| flow | n, r | method | Lax matrix | drift (fixed to) | isospectral | ΔH, constraints | algebraic verdict (reports/results.json) |")
+    add("| --- | --- | --- | --- | --- | --- | --- | --- |")
+    for row in data["spectra"]:
+        verdicts = algebraic_verdicts(results_path, row["paper"])
+        vt = "; ".join(_verdict_text(v) for v in verdicts) if verdicts else \
+            f"no claim for ({', '.join(row['paper'])}) in results.json yet"
+        iso = "yes" if row["drift"] < SPECTRUM_FIXED else "**no**"
+        how = f"{row['method']} tol {row['tol']:g}" if row["tol"] else f"{row['method']} h = {row['step']:g}"
+        name = row["lax"] + ("" if row["printed"] else f" ({row['note']})")
+        add(f"| {row['flow']} | {row['n']}, {row['r']} | {how}, T = {row['T']:g} | {name} | {_e(row['drift'])} ({_digits(row['drift'])}) "
+            f"| {iso} | {_e(row['hamiltonian_error'])}, {_e(row['constraint_error'])} | {vt} |")
+    add("")
+    add(_spectra_findings(data["spectra"]))
+    add("")
+    # ---------------------------------------------------------------- work precision
+    add("## Work-precision diagrams")
+    add("")
+    add("Largest error on [0, T] against wall time, for DOP853 at several tolerances and RATTLE and RK4 + projection "
+        "at several steps (the errors are sampled at 101 times).")
+    add("")
+    for name in figures:
+        if name.startswith("wp_"):
+            add(f"![{name}]({name}.png)")
+            add("")
+    add("Measured trade-offs (per flow and method: the most accurate setting, and the cheapest one):")
+    add("")
+    add("| flow | method | most accurate setting | ΔH | Lax drift | constraints | seconds | cheapest setting | ΔH | seconds |")
+    add("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+    for t in _tradeoffs(data["work_precision"]):
+        add(f"| {t['flow']} | {t['method']} | {t['best_setting']} | {_e(t['best_H'])} | {_e(t['best_lax'])} | "
+            f"{_e(t['best_constraint'])} | {t['best_seconds']:.2f} | {t['cheap_setting']} | {_e(t['cheap_H'])} | {t['cheap_seconds']:.2f} |")
+    add("")
+    add(_wp_findings(data["work_precision"]))
+    add("")
+    # ---------------------------------------------------------------- long time
+    lt = data["long_time"]
+    add(f"## Long run: t = {lt['T']:g}")
+    add("")
+    add("![long_time](long_time.png)")
+    add("")
+    add("| method | setting | seconds | right-hand sides / steps | max constraints | max ΔH | max Lax drift |")
+    add("| --- | --- | --- | --- | --- | --- | --- |")
+    for run in lt["runs"]:
+        what = f"tol {run['tol']:g}" if run["tol"] else f"h = {run['step']:g}"
+        add(f"| {run['method']} | {what} | {run['seconds']:.1f} | {run['evaluations']} | {_e(run['max']['constraint'])} | "
+            f"{_e(run['max']['hamiltonian'])} | {_e(run['max']['lax'])} |")
+    add("")
+    add(_long_findings(lt))
+    add("")
+    # ---------------------------------------------------------------- closed forms
+    add("## Closed-form geodesics (Edelman, Arias, Smith 1998)")
+    add("")
+    add("**Mapping of the metrics.** The Legendre map of H_κ (EM) is Ẋ = P − (1+2κ)XPᵀX (No with A = 0), so "
+        "XᵀẊ = 2(1+κ)XᵀP and (I − XXᵀ)Ẋ = (I − XXᵀ)P; the metric ds²_κ is therefore "
+        "g_κ(Ẋ, Ẋ) = tr(ẊᵀP) = tr Ẋᵀ(I − βXXᵀ)Ẋ with **β = (1+2κ)/(2+2κ)** (positive definite for κ > −1). "
+        "κ = −½ gives β = 0, EAS's Euclidean metric tr ΔᵀΔ (with P = Ẋ, (leg)); κ = 0 gives β = ½, EAS's canonical "
+        "metric tr Δᵀ(I − ½YYᵀ)Δ, with the same time parameter and Δ = Ẋ = P − XPᵀX (dot_X3), i.e. the paper's "
+        "normalization ⟨ξ, η⟩ = −½tr(ξη) of (killing) is exactly EAS's canonical metric. For every κ the geodesic is "
+        "the Euclidean one followed by a right rotation: X_κ(t) = X_E(t)·exp(t(κ+½)Ψ₀), Ψ₀ = X₀ᵀP₀ − P₀ᵀX₀ "
+        "(`integrate.jensen_geodesic`).")
+    add("")
+    add("| V(n,r) | κ | β | T | DOP853 (tol 1e-13) vs closed form: X, P | RATTLE h = 0.01 vs closed form | EAS formula | EAS vs closed form | EAS vs DOP853 |")
+    add("| --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+    for row in data["closed_forms"]:
+        add(f"| V({row['n']},{row['r']}) | {row['kappa']:g} | {row['beta']:g} | {row['T']:g} | "
+            f"{_e(row['dop853_vs_closed_X'])}, {_e(row['dop853_vs_closed_P'])} | {_e(row['rattle_h0.01_vs_closed_X'])} | "
+            f"{row.get('eas', '–')} | {_e(row.get('eas_vs_closed_X'))} | {_e(row.get('eas_vs_dop853_X'))} |")
+    add("")
+    wrong = [r["eas_with_velocity_P_vs_dop853_X"] for r in data["closed_forms"] if "eas_with_velocity_P_vs_dop853_X" in r]
+    if wrong:
+        add(f"The normalization matters: EAS's canonical geodesic started with Δ = P instead of Δ = P − XPᵀX is off "
+            f"by {min(wrong):.1e} to {max(wrong):.1e} (max-norm of X) in the same table's cases.")
+        add("")
+    return "\n".join(L) + "\n"
+
+
+def _spectra_findings(rows: list[dict[str, Any]]) -> str:
+    out = ["Findings:", ""]
+    bad_printed = [r for r in rows if r["printed"] and r["drift"] >= SPECTRUM_FIXED]
+    good = [r for r in rows if r["drift"] < SPECTRUM_FIXED]
+    if good:
+        out.append(f"* {len(good)} (flow, Lax matrix) pairs keep their spectrum fixed to ≤ "
+                   f"{_digits(max(r['drift'] for r in good))} along the reference trajectory.")
+    dual_k = [r for r in rows if r["flow_name"] == "neumann" and "LA3" in r["lax"] and r["params"].get("kappa") not in (0.0, -0.5)]
+    if dual_k and all(r["drift"] < SPECTRUM_FIXED for r in dual_k):
+        out.append("* The dual matrix 𝓛*_neum (LA3) is isospectral along the Neumann flow for κ = "
+                   f"{', '.join(str(r['params']['kappa']) for r in dual_k)} too, although Theorem DUAL states it for κ = 0 and "
+                   "κ = −½ only: the κ-flow is the Euclidean flow followed by the right rotation exp(t(κ+½)Ψ₀), which "
+                   "conjugates 𝓛* by diag(R, R).")
+    sonn = [r for r in bad_printed if r["flow_name"] == "coupled" and "so(n,n)" in r["lax"]]
+    if sonn:
+        out.append(f"* **(so(n,n)) as printed is not isospectral** along {', '.join(r['flow'] for r in sonn)} (drift "
+                   f"{_e(min(r['drift'] for r in sonn))} to {_e(max(r['drift'] for r in sonn))}). With the ν⁻¹ term of "
+                   "opposite sign, L(ν) = ν[[0, A], [A, 0]] + diag(Φ_X, Φ_Y) − ν⁻¹[[0, XYᵀ], [YXᵀ, 0]], the spectrum is "
+                   "fixed for κ = 0 and for the perturbed H_κ (rows marked *correction*): dL/dt = [L_+(ν), L(ν)] then "
+                   "follows from dΦ_X/dt = XYᵀA − AYXᵀ and d(XYᵀ)/dt = Φ_X XYᵀ − XYᵀΦ_Y (κ = 0), so the printed pair "
+                   "(L, L_+) has a sign error (a candidate erratum for the Appendix 2 claims).")
+    for r in bad_printed:
+        if r in sonn:
+            continue
+        if r["flow_name"] == "coupled" and not r["params"].get("perturbed") and r["params"].get("kappa") == -0.5:
+            out.append(f"* {r['lax']} drifts ({_e(r['drift'])}) along the unperturbed coupled flow with κ = −½: the "
+                       "paper's statement that these Lax pairs hold for κ = 0 and not for the Euclidean metric, "
+                       "witnessed numerically.")
+        elif r["flow_name"] == "magnetic" and r["method"] == "dop853":
+            out.append(f"* {r['flow']} with DOP853: drift {_e(r['drift'])} together with constraint errors "
+                       f"{_e(r['constraint_error'])}: the printed (mag-euk) uses XᵀX = I to simplify its multipliers, "
+                       "and as an ODE on n × 2 matrices its constraint set is unstable (errors of 1e-12 grow "
+                       "exponentially); on T*V it is right: RK4 + projection keeps the spectrum and H fixed (row above).")
+        else:
+            out.append(f"* {r['flow']}, {r['lax']}: drift {_e(r['drift'])}.")
+    return "\n".join(out)
+
+
+def _wp_findings(rows: list[dict[str, Any]]) -> str:
+    out = ["Observations:", ""]
+    rat = [r for r in rows if r["method"] == "rattle"]
+    if rat:
+        out.append(f"* RATTLE keeps XᵀX = I and XᵀP + PᵀX = 0 to ≤ {max(r['constraint_error'] for r in rat):.0e} at every "
+                   "step size; its energy error is O(h²) and does not grow (symplectic).")
+    rk = [r for r in rows if r["method"] == "rk4"]
+    if rk:
+        out.append(f"* RK4 + projection is on T*V to ≤ {max(r['constraint_error'] for r in rk):.0e} by construction; its "
+                   "energy error is O(h⁴) but drifts linearly in time (not symplectic).")
+    dop = [r for r in rows if r["method"] == "dop853"]
+    if dop:
+        out.append(f"* DOP853 reaches the smallest errors per second at tight tolerances; its constraint errors follow the "
+                   f"tolerance (from {min(r['constraint_error'] for r in dop):.0e} to {max(r['constraint_error'] for r in dop):.0e}) "
+                   "since nothing projects.")
+    return "\n".join(out)
+
+
+def _long_findings(lt: dict[str, Any]) -> str:
+    out = []
+    for run in lt["runs"]:
+        h = np.asarray(run["hamiltonian_error"])
+        k = len(h)
+        early, late = float(h[1:k // 10 + 1].max()), float(h[-k // 10:].max())
+        out.append(f"* {run['method']}: ΔH at the first tenth of the run ≤ {early:.1e}, at the last tenth ≤ {late:.1e} "
+                   f"(growth ×{late / early if early > 0 else float('nan'):.1f}); constraints ≤ {run['max']['constraint']:.1e}.")
+    return "\n".join(out)
+
+
+def write_report(data: dict[str, Any], out: Path, results_path: Path) -> list[Path]:
+    """Write flows.json, the CSV files, the figures and flows.md into ``out``."""
+    out.mkdir(parents=True, exist_ok=True)
+    written = []
+    figures = _figures(data, out)
+    for name in figures:
+        written += [out / f"{name}.png", out / f"{name}.pdf"]
+    write_atomic(out / "flows.json", json.dumps(data, indent=1, ensure_ascii=False) + "\n")
+    write_atomic(out / "spectra.csv", _csv(data["spectra"], ["flow", "n", "r", "method", "tol", "step", "T", "lax", "paper",
+                                                             "printed", "drift", "hamiltonian_error", "constraint_error",
+                                                             "seconds"]))
+    write_atomic(out / "work_precision.csv", _csv(data["work_precision"], ["flow", "n", "r", "T", "method", "tol", "step",
+                                                                         "seconds", "evaluations", "constraint_error",
+                                                                         "hamiltonian_error", "lax_error"]))
+    long_rows = [{"method": run["method"], "t": t, "constraint_error": c, "hamiltonian_error": h, "lax_error": x}
+                 for run in data["long_time"]["runs"]
+                 for t, c, h, x in zip(run["times"], run["constraint_error"], run["hamiltonian_error"], run["lax_error"])]
+    write_atomic(out / "long_time.csv", _csv(long_rows, ["method", "t", "constraint_error", "hamiltonian_error", "lax_error"]))
+    cf_keys = ["n", "r", "kappa", "beta", "T", "dop853_vs_closed_X", "dop853_vs_closed_P", "rattle_h0.01_vs_closed_X", "eas",
+               "eas_vs_closed_X", "eas_vs_dop853_X", "eas_with_velocity_P_vs_dop853_X"]
+    write_atomic(out / "closed_forms.csv", _csv(data["closed_forms"], cf_keys))
+    write_atomic(out / "flows.md", render_markdown(data, results_path, figures))
+    written += [out / n for n in ("flows.json", "spectra.csv", "work_precision.csv", "long_time.csv", "closed_forms.csv",
+                                  "flows.md")]
+    return written
