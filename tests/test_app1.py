@@ -1,0 +1,281 @@
+"""Appendix 1 claims: the twisted form ω + ε π*ω_mag (its Dirac bracket satisfies Jacobi, its flow agrees
+with the Lagrange form and with the canonical flow when the magnetic term is switched off), each claim at
+one small size, the monopole erratum with its correction, and a corrupted copy of each claim that every
+method rejects (negative controls)."""
+import pytest
+
+from stiefelsym import comm, twisted
+from stiefelsym.free_method import run_free
+from stiefelsym.methods import run_exact, run_points
+
+import proofs.app1_magnetic_neumann as app1
+from proofs.sec5_neumann import H_neumann_euclidean, H_neumann_normal
+
+SEED = 0
+
+
+def _appendix1(catalog):
+    return [c for c in catalog if c.section == "A1"]
+
+
+def _small_size(c):
+    """The first declared size with n >= 3 (n = 3 for every claim of the appendix)."""
+    return next(z for z in c.sizes if z.n >= 3)
+
+
+# -- the twisted structure itself ---------------------------------------------------------------
+
+def f_phi(t):
+    return t.killing(t.Phi, t.xi)
+
+
+def f_gram(t):
+    return t.tr(t.generic("G", "r", "r") @ t.P.T @ t.P)
+
+
+def f_potential(t):
+    return t.tr(t.X.T @ t.A @ t.X) / 2 + t.tr(t.generic("U", "n", "r").T @ t.P)
+
+
+def jacobi(s):
+    """{f, {g, h}} + {g, {h, f}} + {h, {f, g}} for the twisted Dirac bracket."""
+    b = lambda F, G: (lambda t: twisted.bracket(t, F, G))
+    return {"Jacobi": twisted.bracket(s, f_phi, b(f_gram, f_potential))
+            + twisted.bracket(s, f_gram, b(f_potential, f_phi))
+            + twisted.bracket(s, f_potential, b(f_phi, f_gram))}
+
+
+def jacobi_of_a_wrong_bracket(s):
+    """Corrupted: the Dirac correction built from {,}_ε but the ambient part from {,}₀ (not a Poisson bracket)."""
+    def wrong(t, F, G):
+        return twisted.bracket(t, F, G) - twisted.ambient_bracket(t, F, G) + t.canonical_bracket(F, G)
+    b = lambda F, G: (lambda t: wrong(t, F, G))
+    return {"Jacobi": wrong(s, f_phi, b(f_gram, f_potential)) + wrong(s, f_gram, b(f_potential, f_phi))
+            + wrong(s, f_potential, b(f_phi, f_gram))}
+
+
+def test_twisted_dirac_bracket_satisfies_jacobi(catalog):
+    """ω_ε is closed (the ambient form has constant coefficients), so its Dirac bracket satisfies Jacobi."""
+    c = catalog.get("twisted-form")
+    assert run_points(c, 3, 2, "modular", SEED, func=jacobi).verdict == "checked"
+    assert run_points(c, 3, 2, "modular", SEED, func=jacobi_of_a_wrong_bracket).verdict == "fails"
+
+
+def flows_agree(s):
+    """The Dirac flow of the twisted bracket = its Lagrange form; with F = 0 it is the canonical Dirac flow."""
+    zero = s.zeros(2, 2, ("r", "r"))
+    checks = {}
+    for name, H in (("euk", H_neumann_euclidean), ("nor", H_neumann_normal), ("pot", f_potential)):
+        dirac, mult = twisted.flow(s, H), twisted.multiplier_flow(s, H)
+        untwisted = twisted.flow(s, H, F=zero)
+        checks[f"{name}: Dirac = Lagrange (X)"] = dirac.Xdot - mult.Xdot
+        checks[f"{name}: Dirac = Lagrange (P)"] = dirac.Pdot - mult.Pdot
+        checks[f"{name}: F = 0 gives the canonical flow (X)"] = untwisted.Xdot - s.dirac_flow(H).Xdot
+        checks[f"{name}: F = 0 gives the canonical flow (P)"] = untwisted.Pdot - s.dirac_flow(H).Pdot
+        checks[f"{name}: bracket = derivative along the flow"] = (twisted.bracket(s, f_gram, H)
+                                                                 - s.d(f_gram, dirac))
+    at = twisted.at_point(s, s.X, s.P)
+    checks["at_point at the scene's own point"] = twisted.flow(at, H_neumann_normal).Pdot - twisted.flow(s, H_neumann_normal).Pdot
+    return checks
+
+
+def lorentz_force_dropped(s):
+    """Corrupted: the canonical Dirac flow taken for the twisted one."""
+    return {"dP/dt": twisted.flow(s, H_neumann_euclidean).Pdot - s.dirac_flow(H_neumann_euclidean).Pdot}
+
+
+def test_twisted_flow_derivations_agree(catalog):
+    c = catalog.get("twisted-form")
+    for n in (2, 3):
+        assert run_exact(c, n, 2, SEED, func=flows_agree).verdict == "proved"
+    assert run_points(c, 4, 2, "modular", SEED, func=flows_agree).verdict == "checked"
+    assert run_exact(c, 3, 2, SEED, func=lorentz_force_dropped).verdict == "fails"
+
+
+def test_the_magnetic_form_needs_two_columns():
+    from stiefelsym import fields
+    from stiefelsym.scene import Scene
+    s = Scene(3, 1, fields.RationalField())
+    with pytest.raises(ValueError, match="V\\(n, 2\\)"):
+        twisted.magnetic_matrix(s)
+
+
+def test_the_twisted_form_needs_coordinates(catalog):
+    res = run_free(catalog.get("magnetic-euclidean-flow"))
+    assert res.verdict == "undecided" and "needs coordinates" in res.message
+
+
+# -- corrupted copies of the claims --------------------------------------------------------------
+
+def twisted_form_sign(s):
+    """Corrupted: ω − ε π*ω_mag against the flow of ω + ε π*ω_mag."""
+    XH = twisted.flow(s, app1.H_linear)
+    v = app1.tangent_vector(s)
+    flipped = twisted.form(s, XH.tangent(), v) - 2 * s.eps * s.tr(XH.Xdot @ twisted.magnetic_matrix(s) @ v["X"].T)
+    return {"omega(X_H, v) + dH(v)": flipped + s.d(app1.H_linear, v)}
+
+
+def momentum_without_magnetic_term(s):
+    """Corrupted (mag-mom-stief): Φ in place of Φ_ε generates the action."""
+    flow = twisted.flow(s, lambda t: t.killing(t.Phi, t.xi))
+    return {"dP/dt = xi P": flow.Pdot - s.xi @ s.P}
+
+
+def euclidean_flow_epsilon_sign(s):
+    """Corrupted (mag-euk): −εp₂ in dp₁/dt."""
+    printed = app1.flow_mag_euk(s)
+    p2 = app1.pcol(s, 1)
+    P = printed["P"] - 2 * s.eps * app1.columns_to_matrix(s, [p2, s.zeros(s.n, 1, ("n", "?"))])
+    return app1.twisted_flow_checks(s, H_neumann_euclidean, {"X": printed["X"], "P": P})
+
+
+def normal_flow_multiplier_dropped(s):
+    """Corrupted (mag-nor): the term −ε(e₁, Φ₀e₂)e₁ dropped."""
+    printed = app1.flow_mag_nor(s)
+    e1, e2 = app1.col(s, 0), app1.col(s, 1)
+    term = s.eps * app1.dot(s, e1, s.Phi @ e2) * e1
+    P = printed["P"] + app1.columns_to_matrix(s, [term, s.zeros(s.n, 1, ("n", "?"))])
+    return app1.twisted_flow_checks(s, H_neumann_normal, {"X": printed["X"], "P": P})
+
+
+def psi12_replaced_by_gram(s):
+    """Corrupted: (p₁, p₂) is not an integral of (mag-euk)."""
+    return {"d(p1, p2)/dt": s.d(lambda t: app1.dot(t, app1.pcol(t, 0), app1.pcol(t, 1)),
+                                twisted.flow(s, H_neumann_euclidean))}
+
+
+def prep_with_phi(s):
+    """Corrupted: (prep) with Φ instead of Φ_ε along (mag-euk)."""
+    flow = twisted.flow(s, H_neumann_euclidean)
+    return {"dPhi/dt": s.d(lambda t: t.Phi, flow) - comm(s.X @ s.X.T, s.A)}
+
+
+def lax_commutator_swapped(s):
+    """Corrupted (LA1) with Φ_ε: d𝓛/dt = [𝓛, 𝓐]."""
+    flow = twisted.flow(s, H_neumann_normal)
+    return {"LA1": s.d(app1.L_mag, flow) - comm(app1.L_mag(s), app1.A_mag(s))}
+
+
+def grass_momentum_commutator_swapped(s):
+    """Corrupted (mag-mom-grass): [ė₁∧e₂ + e₁∧ė₂, e₁∧e₂]."""
+    X, Ph = app1.horizontal_point(s)
+    e1, e2 = app1.col(s, 0), app1.col(s, 1)
+    d1, d2 = Ph @ app1.unit(s, 0), Ph @ app1.unit(s, 1)
+    other = comm(app1.wedge(d1, e2) + app1.wedge(e1, d2), app1.wedge(e1, e2)) + s.eps * app1.wedge(e1, e2)
+    return {"two forms": app1.Phi_eps_grass(s, e1, e2, d1, d2) - other}
+
+
+def grass_flow_epsilon_sign(s):
+    """Corrupted (neum-gras-mag): −ε[e₁∧e₂, ė₁∧e₂ + e₁∧ė₂]."""
+    X, Ph = app1.horizontal_point(s)
+    h = twisted.at_point(s, X, Ph)
+    e1, e2 = app1.col(h, 0), app1.col(h, 1)
+    flow = twisted.flow(h, H_neumann_euclidean)
+    d1, d2 = flow.Xdot @ app1.unit(h, 0), flow.Xdot @ app1.unit(h, 1)
+    dd1, dd2 = flow.Pdot @ app1.unit(h, 0), flow.Pdot @ app1.unit(h, 1)
+    second = app1.wedge(dd1, e2) + 2 * app1.wedge(d1, d2) + app1.wedge(e1, dd2)
+    kick = 2 * h.eps * comm(app1.wedge(e1, e2), app1.wedge(d1, e2) + app1.wedge(e1, d2))
+    return {"(neum-gras-mag)": second - (app1.rhs_neum_gras_mag(h, e1, e2, d1, d2) - kick)}
+
+
+def cp_potential_sign(s):
+    """Corrupted (mag*): +(e_n, Ae_n) in H_CP."""
+    Xp, Pp = app1.stiefel_image(s)
+    e = app1.last(s)
+    H = s.killing(s.Phi, s.Phi) / 2 + (s.tr(s.A) + app1.dot(s, e, s.A @ e)) / 2
+    return {"H_neum,0 = H_CP": app1.neumann_normal_at(s, Xp, Pp) - H}
+
+
+def euler_star_commutator_swapped(s):
+    """Corrupted (Euler*): Ω̇ = [e_n⊗e_n, A]."""
+    e = app1.last(s)
+    return {"(Euler*)": s.d(lambda t: t.Phi, s.dirac_flow(app1.H_CP)) - comm(e @ e.T, s.A)}
+
+
+def euler_star_star_body_frame(s):
+    """Corrupted (Euler**): ė_n = −Ωe_n (the body-frame sign)."""
+    N = s.In - s.X @ s.X.T
+    flow = s.dirac_flow(H_neumann_normal)
+    return {"de_n/dt": s.d(lambda t: t.In - t.X @ t.X.T, flow) + comm(s.Phi, N)}
+
+
+def mag6_without_yang_mills(s):
+    """Corrupted (mag6): the Yang–Mills term F_Ωė_n dropped (it vanishes only on Ψ = 0)."""
+    e = app1.last(s)
+    edot = s.Phi @ e
+    edd = s.d(lambda t: t.Phi @ app1.last(t), s.dirac_flow(app1.H_CP))
+    return {"(mag6)": edd - (s.A @ e - (app1.dot(s, e, s.A @ e) + app1.dot(s, edot, edot)) * e)}
+
+
+def monopole_both_signs_wrong(s):
+    """Corrupted monopole remark: no Lorentz force at all."""
+    return {k: v for k, v in app1.monopole_checks(s, 0).items() if "x de_3/dt" in k}
+
+
+def cpb_euler_commutator_swapped(s):
+    """Corrupted (Euler): Ω̇ = [A, Σ e_i⊗e_i]."""
+    k, H = app1.cpb_hamiltonians(s)[0]
+    v = s.X @ app1.projector(s, k) @ s.X.T
+    return {"(Euler)": s.d(lambda t: t.Phi, s.dirac_flow(H)) - comm(s.A, v)}
+
+
+def cpb_full_psi_conserved(s):
+    """Corrupted: the whole body momentum 𝒳ᵀM𝒳 conserved (only its so(r) ⊕ so(n−r) blocks are)."""
+    k, H = app1.cpb_hamiltonians(s)[0]
+    return {"d m/dt": s.d(lambda t: t.X.T @ t.Phi @ t.X, s.dirac_flow(H))}
+
+
+CORRUPTIONS = [
+    ("twisted-form", twisted_form_sign),
+    ("magnetic-momentum-map", momentum_without_magnetic_term),
+    ("magnetic-euclidean-flow", euclidean_flow_epsilon_sign),
+    ("magnetic-normal-flow", normal_flow_multiplier_dropped),
+    ("magnetic-psi12-conserved", psi12_replaced_by_gram),
+    ("magnetic-prep", prep_with_phi),
+    ("magnetic-lax", lax_commutator_swapped),
+    ("magnetic-grassmannian-momentum", grass_momentum_commutator_swapped),
+    ("magnetic-grassmannian-flow", grass_flow_epsilon_sign),
+    ("clebsch-perelomov-hamiltonian", cp_potential_sign),
+    ("rigid-body-euler-poisson", euler_star_commutator_swapped),
+    ("ym-reduced-neumann", euler_star_star_body_frame),
+    ("ym-second-derivative", mag6_without_yang_mills),
+    ("ym-monopole", monopole_both_signs_wrong),
+    ("cpb-euler", cpb_euler_commutator_swapped),
+    ("cpb-right-momentum", cpb_full_psi_conserved),
+]
+
+
+def test_every_appendix1_claim_has_a_negative_control(catalog):
+    assert {cid for cid, _ in CORRUPTIONS} == {c.id for c in _appendix1(catalog)}
+
+
+@pytest.mark.parametrize("cid, func", CORRUPTIONS, ids=[f"{c}-{f.__name__}" for c, f in CORRUPTIONS])
+def test_corrupted_claim_fails(catalog, cid, func):
+    c = catalog.get(cid)
+    z = _small_size(c)
+    assert run_exact(c, z.n, z.r, SEED, func=func).verdict == "fails"
+    res = run_points(c, z.n, z.r, "modular", SEED, func=func)
+    assert res.verdict == "fails" and res.witness and res.witness["seed"] == SEED
+    assert run_free(c, func).verdict == "undecided"
+
+
+# -- the claims as printed -------------------------------------------------------------------------
+
+@pytest.mark.parametrize("cid", [cid for cid, _ in CORRUPTIONS if cid != "ym-monopole"])
+def test_claim_holds_at_a_small_size(catalog, cid):
+    c = catalog.get(cid)
+    z = _small_size(c)
+    assert run_exact(c, z.n, z.r, SEED).verdict == "proved"
+    # a rank "at every point" is left to the exact method by the sampled ones
+    assert run_points(c, z.n, z.r, "modular", SEED).verdict == ("undecided" if cid == "twisted-form" else "checked")
+
+
+def test_monopole_remark_fails_as_printed_and_its_correction_holds(catalog):
+    c = catalog.get("ym-monopole")
+    assert c.expects_failure(3, 2) and "opposite" in c.erratum
+    res = run_exact(c, 3, 2, SEED)
+    assert res.verdict == "fails" and "e_3 x de_3/dt" in str(res.witness)
+    assert run_points(c, 3, 2, "modular", SEED).verdict == "fails"
+    [fix] = c.corrections
+    assert run_exact(c, 3, 2, SEED, func=fix.func).verdict == "proved"
+    assert run_points(c, 3, 2, "modular", SEED, func=fix.func).verdict == "checked"
