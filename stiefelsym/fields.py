@@ -494,7 +494,11 @@ class FloatField(Field):
         return ErrNum(v, err, abs(v), self.u)
 
     def param(self, name, rng):
-        v = self._num(Fraction(rng.randint(-2**40, 2**40), 2**40) * Fraction(self.scale).limit_denominator())
+        k = rng.randint(-2**40, 2**40)
+        if self.scale == 1 and self.dps is None:
+            v = k / 2**40        # exact: |k| <= 2^40 and the quotient is a power-of-two scaling
+        else:
+            v = self._num(Fraction(k, 2**40) * Fraction(self.scale).limit_denominator())
         return ErrNum(v, 0, abs(v), self.u)
 
     def is_zero(self, x):

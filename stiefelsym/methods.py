@@ -79,8 +79,9 @@ def _entries(value: Any, prefix: str = "") -> list[tuple[str, Any]]:
 
 def _flatten(value: Any, prefix: str) -> list[tuple[str, Any]]:
     if isinstance(value, Mat):
-        rows, cols = value._a.shape
-        return [(f"{prefix}[{i + 1},{j + 1}]", value._a[i, j]) for i in range(rows) for j in range(cols)]
+        a = value._view()
+        rows, cols = a.shape
+        return [(f"{prefix}[{i + 1},{j + 1}]", a[i, j]) for i in range(rows) for j in range(cols)]
     if isinstance(value, dict):
         out = []
         for k, v in value.items():
@@ -775,6 +776,8 @@ def _resolves(x: ErrNum) -> bool:
 
 
 def _finite(x: ErrNum) -> bool:
+    if type(x.v) is float and type(x.e) is float and type(x.m) is float:
+        return math.isfinite(x.v) and math.isfinite(x.e) and math.isfinite(x.m)
     try:
         return all(mpmath.isfinite(y) for y in (x.v, x.e, x.m))
     except (TypeError, ValueError):

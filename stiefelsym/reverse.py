@@ -175,23 +175,37 @@ class RevBackend:
         return isinstance(x, Rev) or type(x) is not Fraction and not isinstance(x, int) and not _is_matrix(x)
 
     def from_obj(self, a: np.ndarray) -> RevMat:
+        """A matrix from entries; the adjoint of a tracked entry is the matching entry of the
+        matrix's adjoint."""
         out = np.empty(a.shape, dtype=object)
+        tracked = []
         for idx, x in np.ndenumerate(a):
             if isinstance(x, Rev):
                 if x.node is not None:
-                    raise Unsupported("a matrix built from entries that depend on X, P")
+                    tracked.append((idx, x.node))
                 x = x.v
             out[idx] = x
-        return RevMat(self._mat(out))
+        v = self._mat(out)
+        if not tracked:
+            return RevMat(v)
+        return RevMat(v, Node(lambda g: [(node, g._view()[idx]) for idx, node in tracked]))
 
     def to_obj(self, s: RevMat) -> np.ndarray:
-        if s.node is not None:
-            raise Unsupported("reading entries of a matrix that depends on X, P")
+        """The entries; the adjoint of entry (i, j) is the matrix with that entry alone."""
         v = s.v._view()
         out = np.empty(v.shape, dtype=object)
         for idx, x in np.ndenumerate(v):
-            out[idx] = Rev(x)
+            if s.node is None:
+                out[idx] = Rev(x)
+            else:
+                out[idx] = Rev(x, Node(lambda g, idx=idx, node=s.node, shape=v.shape: [(node, self._unit(shape, idx, g))]))
         return out
+
+    def _unit(self, shape, idx, g):
+        from .matrix import Mat
+        M = Mat.zeros(shape[0], shape[1], self.base)
+        M._obj[idx] = g
+        return M
 
     def shape(self, s):
         return s.v._shape()

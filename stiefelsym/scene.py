@@ -234,18 +234,20 @@ class Scene(PaperObjects):
 
     def _skew_params(self, name: str, m: int, tag: str) -> Mat:
         M = self.zeros(m, m, (tag, tag))
+        a = M._a
         for i in range(m):
             for j in range(i + 1, m):
                 x = self._param(param_name(name, i, j))
-                M._a[i, j], M._a[j, i] = x, -x
+                a[i, j], a[j, i] = x, -x
         return M
 
     def _sym_params(self, name: str, m: int, tag: str) -> Mat:
         M = self.zeros(m, m, (tag, tag))
+        a = M._a
         for i in range(m):
             for j in range(i, m):
                 x = self._param(param_name(name, i, j))
-                M._a[i, j] = M._a[j, i] = x
+                a[i, j] = a[j, i] = x
         return M
 
     def general_params(self, name: str, m: int, k: int, tags) -> Mat:
@@ -254,9 +256,10 @@ class Scene(PaperObjects):
 
     def _general_params(self, name: str, m: int, k: int, tags) -> Mat:
         M = self.zeros(m, k, tags)
+        a = M._a
         for i in range(m):
             for j in range(k):
-                M._a[i, j] = self._param(param_name(name, i, j))
+                a[i, j] = self._param(param_name(name, i, j))
         return M
 
     def _stiefel_point(self, prefix: str) -> tuple[Mat, Mat]:
@@ -274,11 +277,22 @@ class Scene(PaperObjects):
             return X, P
         S = self._skew_params(f"{prefix}S", n, "n")
         In = self.identity(n, "n")
-        Q = Mat._rows(self.field.solve((In + S).T._a.tolist(), (In - S).T._a.tolist()),
+        if backend(self.field) is not None:
+            Q = (In - S) @ (In + S).inv()      # whole-matrix inverse in the backend
+        else:
+            Q = Mat._rows(self.field.solve((In + S).T._a.tolist(), (In - S).T._a.tolist()),
                           self.field, ("n", "n"), self.tracker).T  # (I - S)(I + S)^{-1}
-        if self.component % 2 == 1:
-            Q._a[:, 0] = [-x for x in Q._a[:, 0]]
-        X = Mat._wrap(Q._a[:, :r].copy(), self.field, ("n", "r"), self.tracker)
+        if backend(self.field) is not None:
+            # the first r columns (the first one negated on the second component of O(n)) as one
+            # product with the constant n x r matrix [D; 0]
+            J = self.zeros(n, r, ("n", "r"))
+            for i in range(r):
+                J._obj[i, i] = self.const(-1 if i == 0 and self.component % 2 == 1 else 1)
+            X = Q @ J
+        else:
+            if self.component % 2 == 1:
+                Q._a[:, 0] = [-x for x in Q._a[:, 0]]
+            X = Mat._wrap(Q._a[:, :r].copy(), self.field, ("n", "r"), self.tracker)
         W = self._skew_params(f"{prefix}W", r, "r")
         Z = self._general_params(f"{prefix}Z", n, r, ("n", "r"))
         P0 = X @ W + (In - X @ X.T) @ Z
@@ -557,21 +571,66 @@ class Scene(PaperObjects):
 
     def _grad_vector(self, H: Function) -> list[Scalar]:
         HX, HP = self.gradient(H)
-        return list(HX._a.flat) + list(HP._a.flat)
+        return list(HX._view().flat) + list(HP._view().flat)
 
     def _omega(self, v: list[Scalar]) -> list[Scalar]:
         """Omega v for Omega = [[0, I], [-I, 0]] in (X, P) coordinates."""
         m = len(v) // 2
         return list(v[m:]) + [-x for x in v[:m]]
 
+    # gradients as pairs (d/dX, d/dP) of n x r matrices: <u, v> = tr(u_Xᵀ v_X) + tr(u_Pᵀ v_P)
+    def _pair_dot(self, u: tuple[Mat, Mat], v: tuple[Mat, Mat]) -> Scalar:
+        return self.field.normalize((u[0].T @ v[0]).trace() + (u[1].T @ v[1]).trace())
+
+    @staticmethod
+    def _pair_omega(u: tuple[Mat, Mat]) -> tuple[Mat, Mat]:
+        return (u[1], -u[0])
+
+    def _constraint_gradients(self) -> list[tuple[Mat, Mat]]:
+        """The gradients of the scalar constraints F_i (the upper triangles of the realization's
+        constraint matrices), by reverse mode: one evaluation of the constraints, one backward
+        sweep per scalar constraint (or the 2nr-column Jacobian when reverse mode cannot)."""
+        def build():
+            if REVERSE_GRADIENTS:
+                try:
+                    rs = ReverseScene(self)
+                    X, P = rs.X, rs.P
+                    scalars = _flatten_value(self.constraints.build(rs), True)
+                    leaves = [rs.leaves[k] for k in ("X", "P")]
+                    out = []
+                    for F in scalars:
+                        gX, gP = rev_gradient(F, leaves, self.const(1)) if isinstance(F, Rev) else (None, None)
+                        out.append((self._as_nr(gX), self._as_nr(gP)))
+                    return out
+                except Unsupported:
+                    pass
+            n, r = self.n, self.r
+            out = []
+            for row in self._jacobian(self.constraints.build):
+                gX, gP = self.zeros(n, r, ("n", "r")), self.zeros(n, r, ("n", "r"))
+                gX._a[:, :] = np.array(row[: n * r], dtype=object).reshape(n, r)
+                gP._a[:, :] = np.array(row[n * r:], dtype=object).reshape(n, r)
+                out.append((gX, gP))
+            return out
+        return self._cached("grad F", build)
+
+    def _as_nr(self, g) -> Mat:
+        """An adjoint from the tape as an n x r matrix of the scene (zero when absent)."""
+        if g is None:
+            return self.zeros(self.n, self.r, ("n", "r"))
+        if g._n is not None:
+            return Mat._wrap_native(g._nat(), self.field, ("n", "r"), self.tracker)
+        return Mat._wrap(g._view().copy(), self.field, ("n", "r"), self.tracker)
+
     def _constraint_jacobian(self) -> list[list[Scalar]]:
-        return self._cached("J", lambda: self._jacobian(self.constraints.build))
+        return self._cached("J", lambda: [list(gX._view().flat) + list(gP._view().flat)
+                                          for gX, gP in self._constraint_gradients()])
 
     def constraint_bracket_matrix(self) -> list[list[Scalar]]:
         """The matrix {F_i, F_j}_0 of the scalar constraints (scalar)."""
         def build():
-            J = self._constraint_jacobian()
-            return [[self._dot(ri, self._omega(rj)) for rj in J] for ri in J]
+            G = self._constraint_gradients()
+            return [[self._pair_dot(gi, self._pair_omega(gj)) for gj in G] for gi in G]
         return self._cached("C0", build)
 
     def _dot(self, u, v) -> Scalar:
@@ -582,7 +641,7 @@ class Scene(PaperObjects):
 
     def canonical_bracket(self, F: Function, G: Function) -> Scalar:
         """{F, G}_0 = sum (dF/de, dG/dp) - (dF/dp, dG/de)."""
-        return self._dot(self._grad_vector(F), self._omega(self._grad_vector(G)))
+        return self._pair_dot(self.gradient(F), self._pair_omega(self.gradient(G)))
 
     def _dirac_inverse(self) -> list[list[Scalar]]:
         def build():
@@ -596,15 +655,16 @@ class Scene(PaperObjects):
         return self._cached("C", build)
 
     def bracket(self, F: Function, G: Function) -> Scalar:
-        """The Dirac bracket (Dirac_bracket) of two scalar functions."""
-        J = self._constraint_jacobian()
+        """The Dirac bracket (Dirac_bracket) of two scalar functions:
+        {F, G} = {F, G}_0 + sum_ij {F_i, F}_0 C^{ij} {F_j, G}_0 (C = ({F_i, F_j}_0)^{-1})."""
+        Gs = self._constraint_gradients()
         C = self._dirac_inverse()
-        gF, gG = self._grad_vector(F), self._grad_vector(G)
-        FiF = [self._dot(row, self._omega(gF)) for row in J]  # {F_i, F}_0
-        FjG = [self._dot(row, self._omega(gG)) for row in J]  # {F_j, G}_0
-        acc = self._dot(gF, self._omega(gG))
-        for i in range(len(J)):
-            for j in range(len(J)):
+        gF, gG = self.gradient(F), self.gradient(G)
+        FiF = [self._pair_dot(g, self._pair_omega(gF)) for g in Gs]  # {F_i, F}_0
+        FjG = [self._pair_dot(g, self._pair_omega(gG)) for g in Gs]  # {F_j, G}_0
+        acc = self._pair_dot(gF, self._pair_omega(gG))
+        for i in range(len(Gs)):
+            for j in range(len(Gs)):
                 acc = acc + FiF[i] * C[i][j] * FjG[j]
         return self.field.normalize(acc)
 
@@ -614,22 +674,19 @@ class Scene(PaperObjects):
         return Flow(HP, -HX)
 
     def dirac_flow(self, H: Function) -> Flow:
-        """dz/dt = {z, H} for the Dirac bracket (Dirac_bracket), z = entries of X, P."""
+        """dz/dt = {z, H} for the Dirac bracket (Dirac_bracket), z = entries of X, P:
+        ż = Ω∇H − Σ_i w_i Ω∇F_i with w = C {F, H}_0."""
         def build():
-            J = self._constraint_jacobian()
+            Gs = self._constraint_gradients()
             C = self._dirac_inverse()
-            gH = self._grad_vector(H)
-            z = self._omega(gH)
-            FjH = [self._dot(row, z) for row in J]
-            w = [self._dot(Ci, FjH) for Ci in C]          # C {F, H}_0
-            JO = [self._omega(row) for row in J]           # grad of {F_i, .}_0 is -Omega grad F_i
-            out = []
-            for k in range(len(z)):
-                acc = z[k]
-                for i in range(len(J)):
-                    acc = acc - JO[i][k] * w[i]
-                out.append(self.field.normalize(acc))
-            return self._split(out)
+            zX, zP = self._pair_omega(self.gradient(H))
+            FjH = [self._pair_dot(g, (zX, zP)) for g in Gs]
+            w = [self._dot(Ci, FjH) for Ci in C]
+            Xd, Pd = zX, zP
+            for wi, (gX, gP) in zip(w, Gs):      # Ω∇F_i = (gP, −gX)
+                Xd = Xd - gP * wi
+                Pd = Pd + gX * wi
+            return Flow(Xd, Pd)
         return self._cached_for("dflow", H, build)
 
     def _split(self, v: list[Scalar]) -> Flow:
@@ -642,34 +699,34 @@ class Scene(PaperObjects):
 
     def multiplier_flow(self, H: Function) -> Flow:
         """(dot_XP): X' = H_P - X Pi, P' = -H_X + X Lambda + P Pi with symmetric
-        Lambda, Pi solved from the condition that the constraints are preserved.
+        Lambda, Pi solved from the condition that the constraints are preserved (an
+        r(r+1)-dimensional linear system: the derivative of every scalar constraint along each
+        unit multiplier direction).
 
         Raises DegenerateError when the multipliers are not unique."""
         def build():
             r = self.r
             HX, HP = self.gradient(H)
-            J = self._constraint_jacobian()
-            base = list(HP._a.flat) + list((-HX)._a.flat)
+            Gs = self._constraint_gradients()
+            base = (HP, -HX)
+            zero = self.zeros(self.n, r, ("n", "r"))
             units = []
             for name in ("Lambda", "Pi"):
                 for i in range(r):
                     for j in range(i, r):
                         E = self.zeros(r, r, ("r", "r"))
                         E._a[i, j] = E._a[j, i] = self.const(1)
-                        if name == "Lambda":
-                            v = [self.const(0)] * (self.n * r) + list((self.X @ E)._a.flat)
-                        else:
-                            v = list((-(self.X @ E))._a.flat) + list((self.P @ E)._a.flat)
-                        units.append((name, i, j, E, v))
-            M = [[self._dot(row, u[4]) for u in units] for row in J]
-            b = [[-self._dot(row, base)] for row in J]
+                        v = (zero, self.X @ E) if name == "Lambda" else (-(self.X @ E), self.P @ E)
+                        units.append((name, i, j, v))
+            M = [[self._pair_dot(g, u[3]) for u in units] for g in Gs]
+            b = [[-self._pair_dot(g, base)] for g in Gs]
             try:
                 sol = self.field.solve(M, b)
             except DegenerateError as exc:
                 raise DegenerateError("the multipliers Lambda, Pi are not unique here") from exc
             Lam = self.zeros(r, r, ("r", "r"))
             Pi = self.zeros(r, r, ("r", "r"))
-            for (name, i, j, E, v), (c,) in zip(units, sol):
+            for (name, i, j, v), (c,) in zip(units, sol):
                 target = Lam if name == "Lambda" else Pi
                 target._a[i, j] = target._a[j, i] = c
             Xd = HP - self.X @ Pi

@@ -326,11 +326,22 @@ def lax_true(s):
     return {"lax": Phi @ (Phi @ Phi) - (Phi @ Phi) @ Phi}
 
 
-def test_float_at_n_12_overflows_float64_and_decides_with_mpmath():
+def lax_true_huge(s):
+    """The same true identity with entries near 1e200: float64 overflows (inf - inf)."""
+    Phi = s.Phi * s.q(10**200)
+    return {"lax": Phi @ (Phi @ Phi) - (Phi @ Phi) @ Phi}
+
+
+def test_float_decides_at_n_12_in_float64():
     res = run_float(_claim(lax_true), 12, 1, 0)
-    assert res.verdict == "numeric" and "float64: unresolved" in res.message and "mpmath" in res.certificate
+    assert res.verdict == "numeric" and "float64: max |residual|" in res.message
     res = run_float(_claim(lax_false), 12, 1, 0)
     assert res.verdict == "fails" and res.witness["field"] == "rational"
+
+
+def test_float64_overflow_escalates_to_mpmath():
+    res = run_float(_claim(lax_true_huge), 6, 1, 0)
+    assert res.verdict == "numeric" and "float64: unresolved" in res.message and "mpmath" in res.certificate
 
 
 def test_negative_control_float():
