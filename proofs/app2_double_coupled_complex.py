@@ -1,6 +1,500 @@
 """Appendix 2. Double, coupled and complex Neumann systems: the Lagrangian systems, their flows, conserved quantities and Lax pairs."""
 from __future__ import annotations
 
-from stiefelsym import admissible, claim, comm  # noqa: F401
+from stiefelsym import admissible, block, claim, comm  # noqa: F401
+from stiefelsym.systems import (complex_coordinates, complex_diagonal, complex_point, coupled_point, ctranspose,
+                                derivative, double_point, euler_lagrange, hamiltonian_flow, hermitian_entries,
+                                re_trace, real_complex_point, real_coordinates, realify_real, symmetric_entries)
 
 SECTION = "A2"
+
+
+def _scalar_block(s, c):
+    """c·I_r."""
+    return s.scalar_matrix(c, s.r, "r")
+
+
+def _zero_r(s):
+    return s.zeros(s.r, s.r, ("r", "r"))
+
+
+def resolvent_flipped(s):
+    """(I_n − λA)⁻¹ = λ⁻¹(λ⁻¹I_n − A)⁻¹, as printed in (LA3*D) and (LA3*)."""
+    return s.resolvent(s.q(1) / s.lam) / s.lam
+
+
+# ==== the rank r double Neumann system ============================================================
+
+def T_double(t, v):
+    """(D-Lag), the kinetic part: tr(ẊᵀẎ)."""
+    return t.tr(v["X"].T @ v["Y"])
+
+
+def U_double(t, q):
+    """(D-Lag), the potential: tr(XᵀAY); L = T − U."""
+    return t.tr(q["X"].T @ t.A @ q["Y"])
+
+
+def D0(t, q):
+    """(D0): XᵀY − I_r (all r² entries are constraints)."""
+    return [q["X"].T @ q["Y"] - t.Ir]
+
+
+def Lambda_double(t, z):
+    """(D-L): Λ = XᵀAY − ẊᵀẎ."""
+    return z["X"].T @ t.A @ z["Y"] - z["Xdot"].T @ z["Ydot"]
+
+
+def flow_double(t, z):
+    """(D-eq) as a first-order system: Ẍ = −AX + XΛᵀ, Ÿ = −AY + YΛ."""
+    Lam = Lambda_double(t, z)
+    return {"X": z["Xdot"], "Y": z["Ydot"],
+            "Xdot": -(t.A @ z["X"]) + z["X"] @ Lam.T, "Ydot": -(t.A @ z["Y"]) + z["Y"] @ Lam}
+
+
+def double_accelerations(s, z):
+    """Ẍ, Ÿ of the Euler–Lagrange equations of (D-Lag) with the constraints (D0) at z."""
+    acc, _ = euler_lagrange(s, T_double, U_double, D0, {"X": z["X"], "Y": z["Y"]}, {"X": z["Xdot"], "Y": z["Ydot"]},
+                            real_coordinates(s, ["X", "Y"]))
+    return acc
+
+
+def L_dual_double(t, z, flipped):
+    """(LA3*D): 𝓛(λ) with R = (λI_n − A)⁻¹ on the diagonal and ``flipped`` off the diagonal."""
+    R = t.resolvent(t.lam)
+    X, Y, Xd, Yd = z["X"], z["Y"], z["Xdot"], z["Ydot"]
+    return block([[-(X.T @ R @ Yd), -(X.T @ flipped @ Y)],
+                  [t.Ir + Xd.T @ flipped @ Yd, Xd.T @ R @ Y]])
+
+
+def A_dual_double(t, z):
+    """(LA3*D): 𝓐(λ) = [[0, I_r], [Λ − λI_r, 0]]."""
+    return block([[_zero_r(t), t.Ir], [Lambda_double(t, z) - _scalar_block(t, t.lam), _zero_r(t)]])
+
+
+def double_lax_residual(s, flipped):
+    z = double_point(s)
+    L = lambda t, w: L_dual_double(t, w, flipped(t))
+    return derivative(s, L, z, flow_double(s, z)) - comm(L(s, z), A_dual_double(s, z))
+
+
+@claim("double-neumann-flow", paper=("D-Lag", "D0", "D-eq", "D-L"), kind="id",
+       statement=r"L=\tr(\dot X^T\dot Y)-\tr(X^TAY),\ X^TY=\mathbf I_r:\quad "
+                 r"\ddot X=-AX+X\Lambda^T,\ \ddot Y=-AY+Y\Lambda,\ \Lambda=X^TAY-\dot X^T\dot Y")
+def double_neumann_flow(s):
+    """The Euler–Lagrange equations of the Lagrangian (D-Lag) with the holonomic constraints (D0), derived with r×r multipliers, are the printed (D-eq) with Λ of (D-L), and (D-eq) keeps XᵀY = I_r."""
+    z = double_point(s)
+    acc, printed = double_accelerations(s, z), flow_double(s, z)
+    velocity_constraint = lambda t, w: w["Xdot"].T @ w["Y"] + w["X"].T @ w["Ydot"]
+    return {
+        "X'' (D-Lag) - (D-eq)": acc["X"] - printed["Xdot"],
+        "Y'' (D-Lag) - (D-eq)": acc["Y"] - printed["Ydot"],
+        "d(X^T Y)/dt": velocity_constraint(s, z),
+        "d^2(X^T Y)/dt^2 along (D-eq)": derivative(s, velocity_constraint, z, printed),
+    }
+
+
+@claim("double-neumann-dual-lax", paper=("dual-D", "LA3*D", "D-eq", "D-L"), kind="lax",
+       fails_at=lambda n, r: True,
+       erratum="""Theorem dual-D: with (I_n - lambda A)^{-1} in the off-diagonal blocks of L(lambda), as printed
+       in (LA3*D), the equations (D-eq) do not imply dL/dt = [L, A].  They do with (lambda I_n - A)^{-1} in all four
+       blocks, as in (LA3) of Theorem DUAL, which (LA3*D) extends: L(lambda) = [[-X^T R Y', -X^T R Y],
+       [I_r + X'^T R Y', X'^T R Y]], R = (lambda I_n - A)^{-1}.""",
+       statement=r"\tfrac{d}{dt}\mathcal L(\lambda)=[\mathcal L(\lambda),\mathcal A(\lambda)],\ "
+                 r"\mathcal L=\begin{pmatrix}-X^T(\lambda-A)^{-1}\dot Y&-X^T(\mathbf I-\lambda A)^{-1}Y\\"
+                 r"\mathbf I_r+\dot X^T(\mathbf I-\lambda A)^{-1}\dot Y&\dot X^T(\lambda-A)^{-1}Y\end{pmatrix},\ "
+                 r"\mathcal A=\begin{pmatrix}0&\mathbf I_r\\\Lambda-\lambda\mathbf I_r&0\end{pmatrix}")
+def double_neumann_dual_lax(s):
+    """Theorem dual-D: the equations (D-eq) imply the 2r×2r Lax equation (LA3*D) with the printed 𝓛(λ), whose off-diagonal blocks contain (I_n − λA)⁻¹, and 𝓐(λ)."""
+    return {"LA3*D": double_lax_residual(s, resolvent_flipped)}
+
+
+@double_neumann_dual_lax.claim.correction("(LA3*D): (λI_n − A)⁻¹ in place of (I_n − λA)⁻¹ in the off-diagonal blocks")
+def double_neumann_dual_lax_corrected(s):
+    return {"LA3*D": double_lax_residual(s, lambda t: t.resolvent(t.lam))}
+
+
+@claim("double-neumann-momentum", paper=("dual-D", "D-eq"), kind="pb",
+       statement=r"\tfrac{d}{dt}\left(X^T\dot Y-Y^T\dot X\right)=0\ \text{along (D-eq)}")
+def double_neumann_momentum(s):
+    """The matrix XᵀẎ − YᵀẊ, named as the integral of the symmetry (X, Y) ↦ (XRᵀ, YR⁻¹), is conserved along (D-eq)."""
+    z = double_point(s)
+    return {"d(X^T Y' - Y^T X')/dt": derivative(s, lambda t, w: w["X"].T @ w["Ydot"] - w["Y"].T @ w["Xdot"],
+                                                z, flow_double(s, z))}
+
+
+def flow_NE(s):
+    """(NE_XP): Ẋ = P, Ṗ = −AX − XPᵀP + XXᵀAX."""
+    X, P, A = s.X, s.P, s.A
+    return {"X": P, "P": -(A @ X) - X @ P.T @ P + X @ X.T @ A @ X}
+
+
+@claim("double-neumann-diagonal", paper=("D-eq", "NE_XP"), kind="id",
+       statement=r"X=Y,\ \dot X=\dot Y:\quad \ddot X=\ddot Y=-AX-X\dot X^T\dot X+XX^TAX\ \text{(NE\_XP)}")
+def double_neumann_contains_the_euclidean_neumann_system(s):
+    """At initial conditions X = Y ∈ V(n, r), Ẋ = Ẏ, the Euler–Lagrange equations of (D-Lag), (D0) give Ẍ = Ÿ, so X = Y persists, and Ẍ is the acceleration Ṗ of the Euclidean Neumann system (NE_XP) at (X, P) = (X, Ẋ)."""
+    z = {"X": s.X, "Y": s.X, "Xdot": s.P, "Ydot": s.P}
+    acc = double_accelerations(s, z)
+    return {"X'' - Y''": acc["X"] - acc["Y"], "X'' - (NE_XP)": acc["X"] - flow_NE(s)["P"]}
+
+
+# ==== the r-coupled Neumann systems ===============================================================
+
+def T_kappa(t, z, kappa):
+    """(C-neumann): T_κ = ½tr(PᵀP) − (½ + κ)tr((XᵀP)²) + ½tr(QᵀQ) − (½ + κ)tr((YᵀQ)²)."""
+    XP, YQ = z["X"].T @ z["P"], z["Y"].T @ z["Q"]
+    c = t.q(1, 2) + kappa
+    return (t.tr(z["P"].T @ z["P"]) / 2 - c * t.tr(XP @ XP)
+            + t.tr(z["Q"].T @ z["Q"]) / 2 - c * t.tr(YQ @ YQ))
+
+
+def H_coupled(kappa):
+    """(C-neumann): H = T_κ + tr(XᵀAY), for κ a function of the scene."""
+    return lambda t, z: T_kappa(t, z, kappa(t)) + t.tr(z["X"].T @ t.A @ z["Y"])
+
+
+def H_perturbed(kappa):
+    """The perturbed Hamiltonian H_κ = T_κ + tr(XᵀAY) − 2κ tr(XᵀP YᵀQ)."""
+    return lambda t, z: (H_coupled(kappa)(t, z)
+                         - 2 * kappa(t) * t.tr(z["X"].T @ z["P"] @ z["Y"].T @ z["Q"]))
+
+
+FREE_KAPPA = lambda t: t.kappa
+NORMAL = lambda t: t.q(0)
+EUCLIDEAN = lambda t: t.q(-1, 2)
+
+
+def coupled_constraints(t, z):
+    """The constraints of T*V × T*V: XᵀX = I_r, XᵀP + PᵀX = 0, YᵀY = I_r, YᵀQ + QᵀY = 0."""
+    X, P, Y, Q = z["X"], z["P"], z["Y"], z["Q"]
+    return (symmetric_entries(X.T @ X - t.Ir) + symmetric_entries(X.T @ P + P.T @ X)
+            + symmetric_entries(Y.T @ Y - t.Ir) + symmetric_entries(Y.T @ Q + Q.T @ Y))
+
+
+def coupled_flow(s, H):
+    """The flow of H on T*V × T*V with both constraint sets (the Hamilton equations with multipliers)."""
+    flow, _ = hamiltonian_flow(s, H, coupled_constraints, coupled_point(s), [("X", "P"), ("Y", "Q")])
+    return flow
+
+
+def Lambda_Pi_coupled(t, z):
+    """(C-L): Λ = ½(XᵀAY + YᵀAX) − PᵀP, Π = ½(XᵀAY + YᵀAX) − QᵀQ."""
+    X, Y, P, Q, A = z["X"], z["Y"], z["P"], z["Q"], t.A
+    S = (X.T @ A @ Y + Y.T @ A @ X) / 2
+    return S - P.T @ P, S - Q.T @ Q
+
+
+def flow_C_eq(t, z, kappa, Q_Pi=True):
+    """(C-eq) with (C-L); ``Q_Pi``: the last term of Q̇ is QΠ as printed (else YΠ)."""
+    X, P, Y, Q, A = z["X"], z["P"], z["Y"], z["Q"], t.A
+    c = 1 + 2 * kappa
+    Lam, Pi = Lambda_Pi_coupled(t, z)
+    return {"X": P - c * (X @ P.T @ X),
+            "P": -(A @ Y) + c * (P @ X.T @ P) + X @ Lam,
+            "Y": Q - c * (Y @ Q.T @ Y),
+            "Q": -(A @ X) + c * (Q @ Y.T @ Q) + (Q if Q_Pi else Y) @ Pi}
+
+
+def coupled_flow_checks(s, Q_Pi):
+    z = coupled_point(s)
+    derived = coupled_flow(s, H_coupled(FREE_KAPPA))
+    printed = flow_C_eq(s, z, s.kappa, Q_Pi)
+    kept = derivative(s, lambda t, w: [w["X"].T @ w["X"], w["X"].T @ w["P"] + w["P"].T @ w["X"],
+                                       w["Y"].T @ w["Y"], w["Y"].T @ w["Q"] + w["Q"].T @ w["Y"]], z, printed)
+    checks = {f"d{k}/dt (C-neumann) - (C-eq)": derived[k] - printed[k] for k in ("X", "P", "Y", "Q")}
+    checks.update({"d(X^T X)/dt along (C-eq)": kept[0], "d(X^T P + P^T X)/dt along (C-eq)": kept[1],
+                   "d(Y^T Y)/dt along (C-eq)": kept[2], "d(Y^T Q + Q^T Y)/dt along (C-eq)": kept[3]})
+    return checks
+
+
+@claim("coupled-neumann-flow", paper=("C-neumann", "C-eq", "C-L"), kind="id",
+       fails_at=lambda n, r: True,
+       erratum="""(C-eq): the last term of the equation for Q' is printed Q Pi; the flow of (C-neumann) on
+       T*V x T*V has Y Pi there (the multiplier of Y^T Y = I_r, as X Lambda in the equation for P'), with Pi of
+       (C-L).  With Q Pi the printed system is not the Hamiltonian flow and does not keep Y^T Q + Q^T Y = 0.""",
+       statement=r"\dot X=P-(1+2\kappa)XP^TX,\ \dot P=-AY+(1+2\kappa)PX^TP+X\Lambda,\ "
+                 r"\dot Y=Q-(1+2\kappa)YQ^TY,\ \dot Q=-AX+(1+2\kappa)QY^TQ+Q\Pi,\ "
+                 r"\Lambda=\tfrac12(X^TAY+Y^TAX)-P^TP,\ \Pi=\tfrac12(X^TAY+Y^TAX)-Q^TQ")
+def coupled_neumann_flow(s):
+    """For every κ, the flow of the Hamiltonian (C-neumann) on T*V × T*V with both constraint sets is the printed r-coupled Neumann system (C-eq) with the multipliers (C-L), and (C-eq) keeps both constraint sets."""
+    return coupled_flow_checks(s, Q_Pi=True)
+
+
+@coupled_neumann_flow.claim.correction("(C-eq): YΠ in place of QΠ in the equation for Q̇")
+def coupled_neumann_flow_corrected(s):
+    return coupled_flow_checks(s, Q_Pi=False)
+
+
+@claim("coupled-neumann-momentum", paper=("C-eq",), kind="pb",
+       statement=r"\tfrac{d}{dt}\left(X^TP-P^TX+Y^TQ-Q^TY\right)=0\ \text{along (C-eq)}")
+def coupled_neumann_momentum(s):
+    """For every κ, the momentum XᵀP − PᵀX + YᵀQ − QᵀY of the right diagonal SO(r)-action is conserved by the flow of (C-neumann), and the Hamiltonian is invariant under that action."""
+    z = coupled_point(s)
+    psi = lambda t, w: w["X"].T @ w["P"] - w["P"].T @ w["X"] + w["Y"].T @ w["Q"] - w["Q"].T @ w["Y"]
+    eta = s.eta
+    right = {k: z[k] @ eta for k in ("X", "P", "Y", "Q")}
+    return {"d(Psi_X + Psi_Y)/dt": derivative(s, psi, z, coupled_flow(s, H_coupled(FREE_KAPPA))),
+            "H right SO(r)-invariant": derivative(s, H_coupled(FREE_KAPPA), z, right)}
+
+
+def L_big(t, z, nu, sign=1):
+    """(so(n,n)): L(ν) = ν[[0, A], [A, 0]] + diag(PXᵀ − XPᵀ, QYᵀ − YQᵀ) + ν⁻¹[[0, XYᵀ], [YXᵀ, 0]]
+    (``sign`` = −1: −ν⁻¹ in front of the last term)."""
+    X, Y, A = z["X"], z["Y"], t.A
+    Z = A - A
+    return A_big(t, z, nu) + sign * block([[Z, X @ Y.T], [Y @ X.T, Z]]) * (t.q(1) / nu)
+
+
+def A_big(t, z, nu):
+    """(so(n,n)): A(ν) = L₊(ν) = ν[[0, A], [A, 0]] + diag(PXᵀ − XPᵀ, QYᵀ − YQᵀ)."""
+    X, P, Y, Q, A = z["X"], z["P"], z["Y"], z["Q"], t.A
+    Z = A - A
+    return block([[Z, A], [A, Z]]) * nu + block([[P @ X.T - X @ P.T, Z], [Z, Q @ Y.T - Y @ Q.T]])
+
+
+def big_lax_residual(s, H, corrected=False):
+    """dL/dt − [L, A] along the flow of H for the printed pair (so(n,n)); ``corrected``: dL/dt − [A, L]
+    with −ν⁻¹ in front of the last term of L(ν)."""
+    z = coupled_point(s)
+    nu = s.scalar("nu")
+    sign = -1 if corrected else 1
+    L = lambda t, w: L_big(t, w, nu, sign)
+    flow = coupled_flow(s, H)
+    if corrected:
+        return derivative(s, L, z, flow) - comm(A_big(s, z, nu), L(s, z))
+    return derivative(s, L, z, flow) - comm(L(s, z), A_big(s, z, nu))
+
+
+_BIG = (r"\dot L(\nu)=[L(\nu),A(\nu)],\ L(\nu)=\begin{pmatrix}0&A\\A&0\end{pmatrix}\nu+"
+        r"\begin{pmatrix}PX^T-XP^T&0\\0&QY^T-YQ^T\end{pmatrix}+\begin{pmatrix}0&XY^T\\YX^T&0\end{pmatrix}\nu^{-1},\ "
+        r"A(\nu)=L_+(\nu)")
+
+_BIG_ERRATUM = """with the printed L(nu), A(nu) = L_+(nu) the flow does not imply dL/dt = [L, A]: on T*V x T*V it gives
+       d/dt diag(PX^T - XP^T, QY^T - YQ^T) = [K, J] and dK/dt = [diag(PX^T - XP^T, QY^T - YQ^T), K] for
+       J = [[0, A], [A, 0]], K = [[0, XY^T], [YX^T, 0]], so the nu^0 and nu^{-1} parts of the equation need opposite
+       orders of the commutator (already for r = 1; for n = 1, where P = Q = 0, it holds).  No single change of a sign or of the order repairs it.
+       Corrected: L(nu) = nu J + diag(PX^T - XP^T, QY^T - YQ^T) - nu^{-1} K and dL/dt = [A(nu), L(nu)] with
+       A(nu) = L_+(nu) (equivalently dL/dt = [L(nu), L_-(nu)])."""
+
+
+@claim("coupled-big-lax-normal", paper=("so(n,n)", "C-eq"), kind="lax",
+       fails_at=lambda n, r: n >= 2,
+       erratum="(so(n,n)) for kappa = 0: " + _BIG_ERRATUM,
+       statement=r"\kappa=0:\ " + _BIG)
+def coupled_big_lax_normal(s):
+    """The r-coupled Neumann system (C-eq) with the normal metric (κ = 0) implies the so(n,n) Lax equation (so(n,n)) with the spectral parameter ν."""
+    return {"so(n,n)": big_lax_residual(s, H_coupled(NORMAL))}
+
+
+@coupled_big_lax_normal.claim.correction("(so(n,n)): −ν⁻¹ in front of the last term of L(ν), and dL/dt = [A(ν), L(ν)]",
+                                         changes=2)
+def coupled_big_lax_normal_corrected(s):
+    return {"so(n,n)": big_lax_residual(s, H_coupled(NORMAL), corrected=True)}
+
+
+@claim("coupled-big-lax-not-euclidean", paper=("so(n,n)", "C-eq"), kind="not", expect="nonzero",
+       sizes=admissible(r_min=2, condition="r >= 2 (for r = 1 all the metrics coincide)"),
+       statement=r"\kappa=-\tfrac12:\ \dot L(\nu)\neq[A(\nu),L(\nu)]\ \text{along (C-eq)},\ "
+                 r"L(\nu)=\nu\begin{pmatrix}0&A\\A&0\end{pmatrix}+\begin{pmatrix}PX^T-XP^T&0\\0&QY^T-YQ^T\end{pmatrix}"
+                 r"-\nu^{-1}\begin{pmatrix}0&XY^T\\YX^T&0\end{pmatrix},\ A(\nu)=L_+(\nu)")
+def coupled_big_lax_fails_for_the_euclidean_metric(s):
+    """As the paper says, the so(n,n) Lax pair does not hold along the r-coupled Neumann system (C-eq) with the Euclidean metric (κ = −½) when r ≥ 2, even in the corrected form of (so(n,n)) that holds for κ = 0 (see the erratum of coupled-big-lax-normal); the printed form fails for every κ."""
+    return {"so(n,n), corrected, kappa = -1/2": big_lax_residual(s, H_coupled(EUCLIDEAN), corrected=True)}
+
+
+def F_lambda(t, U, V):
+    """F_λ(U, V) = Uᵀ(A² − λ²)⁻¹V, with (A² − λ²I_n)⁻¹ = (λI_n − A)⁻¹(−λI_n − A)⁻¹."""
+    return U.T @ t.resolvent(t.lam) @ t.resolvent(-t.lam) @ V
+
+
+def L_dual_coupled(t, z):
+    """(LA3*C): the 4r×4r matrix 𝓛(λ)."""
+    X, P, Y, Q, A, lam, I = z["X"], z["P"], z["Y"], z["Q"], t.A, t.lam, t.Ir
+    F = lambda U, V: F_lambda(t, U, V)
+    return block([
+        [lam * F(P, X), lam * F(P, P), F(A @ P, Y), -I + F(A @ P, Q)],
+        [-lam * F(X, X), -lam * F(X, P), -F(A @ X, Y), -F(A @ X, Q)],
+        [F(A @ Q, X), -I + F(A @ Q, P), lam * F(Q, Y), lam * F(Q, Q)],
+        [-F(A @ Y, X), -F(A @ Y, P), -lam * F(Y, Y), -lam * F(Y, Q)]])
+
+
+def A_dual_coupled(t, z, d1, d2):
+    """(LA4*C): the 4r×4r matrix 𝓐(λ) with the diagonal blocks d1 (rows 1, 2) and d2 (rows 3, 4)."""
+    Lam, Pi = Lambda_Pi_coupled(t, z)
+    O, I, lam = _zero_r(t), t.Ir, _scalar_block(t, t.lam)
+    return block([[d1, Lam, O, -lam], [I, d1, O, O], [O, -lam, d2, Pi], [O, O, I, d2]])
+
+
+def dual_coupled_residual(s, H, diagonal):
+    z = coupled_point(s)
+    d1, d2 = diagonal(s, z)
+    return derivative(s, L_dual_coupled, z, coupled_flow(s, H)) - comm(L_dual_coupled(s, z),
+                                                                       A_dual_coupled(s, z, d1, d2))
+
+
+_DUAL_C = (r"\tfrac{d}{dt}\mathcal L(\lambda)=[\mathcal L(\lambda),\mathcal A(\lambda)],\ "
+           r"F_\lambda(X,Y)=X^T(A^2-\lambda^2)^{-1}Y,\ \mathcal A(\lambda)=\begin{pmatrix}D_1&\Lambda&0&-\lambda\\"
+           r"\mathbf I_r&D_1&0&0\\0&-\lambda&D_2&\Pi\\0&0&\mathbf I_r&D_2\end{pmatrix}")
+
+
+@claim("coupled-dual-lax", paper=("dual-DC", "LA3*C", "LA4*C", "C-L"), kind="lax",
+       statement=r"\kappa=0:\ " + _DUAL_C + r",\ D_1=X^TP,\ D_2=Y^TQ")
+def coupled_dual_lax(s):
+    """Theorem dual-DC: the r-coupled Neumann system (C-eq) with κ = 0 implies the 4r×4r Lax equation (LA3*C) with the printed 𝓛(λ) and 𝓐(λ) of (LA4*C), Λ, Π of (C-L)."""
+    diagonal = lambda t, z: (z["X"].T @ z["P"], z["Y"].T @ z["Q"])
+    return {"LA3*C": dual_coupled_residual(s, H_coupled(NORMAL), diagonal)}
+
+
+@claim("coupled-perturbed-big-lax", paper=("so(n,n)", "C-neumann"), kind="lax",
+       fails_at=lambda n, r: n >= 2,
+       erratum="(so(n,n)) for the perturbed Hamiltonian H_kappa, every kappa: " + _BIG_ERRATUM,
+       statement=r"H_\kappa=T_\kappa+\tr(X^TAY)-2\kappa\tr(X^TP\,Y^TQ):\ " + _BIG + r"\ \text{for every }\kappa")
+def coupled_perturbed_big_lax(s):
+    """For every κ, the flow of the perturbed Hamiltonian H_κ = T_κ + tr(XᵀAY) − 2κ tr(XᵀP YᵀQ) implies the so(n,n) Lax equation (so(n,n))."""
+    return {"so(n,n)": big_lax_residual(s, H_perturbed(FREE_KAPPA))}
+
+
+@coupled_perturbed_big_lax.claim.correction("(so(n,n)): −ν⁻¹ in front of the last term of L(ν), and dL/dt = [A(ν), L(ν)]",
+                                            changes=2)
+def coupled_perturbed_big_lax_corrected(s):
+    return {"so(n,n)": big_lax_residual(s, H_perturbed(FREE_KAPPA), corrected=True)}
+
+
+@claim("coupled-perturbed-dual-lax", paper=("LA3*C", "LA4*C", "C-neumann"), kind="lax",
+       statement=r"H_\kappa:\ " + _DUAL_C + r",\ D_1=(1+2\kappa)X^TP+2\kappa Y^TQ,\ "
+                 r"D_2=2\kappa X^TP+(1+2\kappa)Y^TQ\ \text{for every }\kappa")
+def coupled_perturbed_dual_lax(s):
+    """For every κ, the flow of the perturbed Hamiltonian H_κ implies the Lax equation (LA3*C) with XᵀP and YᵀQ on the diagonal of 𝓐(λ) replaced by (1 + 2κ)XᵀP + 2κYᵀQ and 2κXᵀP + (1 + 2κ)YᵀQ."""
+    def diagonal(t, z):
+        XP, YQ, k = z["X"].T @ z["P"], z["Y"].T @ z["Q"], t.kappa
+        return (1 + 2 * k) * XP + 2 * k * YQ, 2 * k * XP + (1 + 2 * k) * YQ
+    return {"LA3*C": dual_coupled_residual(s, H_perturbed(FREE_KAPPA), diagonal)}
+
+
+# ==== the Neumann system on the complex Stiefel variety W(n, r) ========================================
+# Z, Ż are realified (2n × 2r); Zᵀ is the plain transpose (ctranspose), Z̄ the conjugate (s.conj).
+
+def T_complex(t, v):
+    """(W-Lag), the kinetic part: ½tr(ŻᵀŻ̄) (real: its real part)."""
+    Zd = v["Z"]
+    return re_trace(t, ctranspose(t, Zd) @ t.conj(Zd)) / 2
+
+
+def U_complex(t, q):
+    """(W-Lag), the potential: ½tr(ZᵀAZ̄) (real: its real part); L = T − U."""
+    Z = q["Z"]
+    return re_trace(t, ctranspose(t, Z) @ realify_real(t, t.A) @ t.conj(Z)) / 2
+
+
+def W0(t, q):
+    """(W0): Z̄ᵀZ − I_r, Hermitian: its r² independent real components."""
+    Z = q["Z"]
+    return hermitian_entries(ctranspose(t, t.conj(Z)) @ Z - realify_real(t, t.Ir))
+
+
+def Lambda_complex(t, z):
+    """(W-L): Λ = Z̄ᵀAZ − Ż̄ᵀŻ."""
+    Z, Zd, A = z["Z"], z["Zdot"], realify_real(t, t.A)
+    return ctranspose(t, t.conj(Z)) @ A @ Z - ctranspose(t, t.conj(Zd)) @ Zd
+
+
+def flow_complex(t, z):
+    """(W-eq) as a first-order system: Z̈ = −AZ + ZΛ."""
+    A = realify_real(t, t.A)
+    return {"Z": z["Zdot"], "Zdot": -(A @ z["Z"]) + z["Z"] @ Lambda_complex(t, z)}
+
+
+def complex_acceleration(s, z):
+    """Z̈ of the Euler–Lagrange equations of (W-Lag) with the constraints (W0) at z."""
+    acc, _ = euler_lagrange(s, T_complex, U_complex, W0, {"Z": z["Z"]}, {"Z": z["Zdot"]}, complex_coordinates(s, ["Z"]))
+    return acc["Z"]
+
+
+@claim("complex-neumann-flow", paper=("W0", "W-Lag", "W-eq", "W-L"), kind="id",
+       statement=r"L=\tfrac12\tr(\dot Z^T\dot{\bar Z})-\tfrac12\tr(Z^TA\bar Z),\ \bar Z^TZ=\mathbf I_r:\quad "
+                 r"\ddot Z=-AZ+Z\Lambda,\ \ddot{\bar Z}=-A\bar Z+\bar Z\bar\Lambda,\ "
+                 r"\Lambda=\bar Z^TAZ-\dot{\bar Z}^T\dot Z=\bar\Lambda^T")
+def complex_neumann_flow(s):
+    """The Lagrangian (W-Lag) is real, its Euler–Lagrange equations with the holonomic constraints (W0) on the complex Stiefel variety are the printed (W-eq) with the Hermitian Λ of (W-L), and (W-eq) keeps Z̄ᵀZ = I_r."""
+    z = complex_point(s)
+    Z, Zd = z["Z"], z["Zdot"]
+    acc, printed, A = complex_acceleration(s, z), flow_complex(s, z), realify_real(s, s.A)
+    Lam = Lambda_complex(s, z)
+    kinetic = ctranspose(s, Zd) @ s.conj(Zd) - ctranspose(s, Z) @ A @ s.conj(Z)
+    velocity_constraint = lambda t, w: (ctranspose(t, t.conj(w["Zdot"])) @ w["Z"]
+                                        + ctranspose(t, t.conj(w["Z"])) @ w["Zdot"])
+    return {
+        "Im tr(Z'^T conj Z' - Z^T A conj Z)": sum((im for _, im in complex_diagonal(kinetic)), s.q(0)),
+        "Z'' (W-Lag) - (W-eq)": acc - printed["Zdot"],
+        "conj Z'' (W-Lag) - (W-eq)": s.conj(acc) - (-(A @ s.conj(Z)) + s.conj(Z) @ s.conj(Lam)),
+        "Lambda - conj Lambda^T": Lam - ctranspose(s, s.conj(Lam)),
+        "d(conj Z^T Z)/dt": velocity_constraint(s, z),
+        "d^2(conj Z^T Z)/dt^2 along (W-eq)": derivative(s, velocity_constraint, z, printed),
+    }
+
+
+def L_dual_complex(t, z, flipped):
+    """(LA3*): 𝓛(λ) with R = (λI_n − A)⁻¹ on the diagonal and ``flipped`` off the diagonal."""
+    R, F = realify_real(t, t.resolvent(t.lam)), realify_real(t, flipped)
+    Z, Zd, T, bar = z["Z"], z["Zdot"], (lambda M: ctranspose(t, M)), t.conj
+    I = realify_real(t, t.Ir)
+    return block([[-(T(Z) @ R @ bar(Zd)), -(T(Z) @ F @ bar(Z))],
+                  [I + T(Zd) @ F @ bar(Zd), T(Zd) @ R @ bar(Z)]])
+
+
+def A_dual_complex(t, z):
+    """(LA3*): 𝓐(λ) = [[0, I_r], [Λ̄ − λI_r, 0]]."""
+    I, O = realify_real(t, t.Ir), realify_real(t, _zero_r(t))
+    return block([[O, I], [t.conj(Lambda_complex(t, z)) - realify_real(t, _scalar_block(t, t.lam)), O]])
+
+
+def complex_lax_residual(s, flipped):
+    z = complex_point(s)
+    L = lambda t, w: L_dual_complex(t, w, flipped(t))
+    return derivative(s, L, z, flow_complex(s, z)) - comm(L(s, z), A_dual_complex(s, z))
+
+
+@claim("complex-neumann-dual-lax", paper=("dual-complex", "LA3*", "W-eq", "W-L"), kind="lax",
+       fails_at=lambda n, r: True,
+       erratum="""Theorem dual-complex: with (I_n - lambda A)^{-1} in the off-diagonal blocks of L(lambda), as
+       printed in (LA3*), the Neumann system (W-eq) on W(n, r) does not imply dL/dt = [L, A].  It does with
+       (lambda I_n - A)^{-1} in all four blocks (the complex form of (LA3)): L(lambda) = [[-Z^T R conj(Z'),
+       -Z^T R conj(Z)], [I_r + Z'^T R conj(Z'), Z'^T R conj(Z)]], R = (lambda I_n - A)^{-1}.""",
+       statement=r"\tfrac{d}{dt}\mathcal L(\lambda)=[\mathcal L(\lambda),\mathcal A(\lambda)],\ "
+                 r"\mathcal L=\begin{pmatrix}-Z^T(\lambda-A)^{-1}\dot{\bar Z}&-Z^T(\mathbf I-\lambda A)^{-1}\bar Z\\"
+                 r"\mathbf I_r+\dot Z^T(\mathbf I-\lambda A)^{-1}\dot{\bar Z}&\dot Z^T(\lambda-A)^{-1}\bar Z\end{pmatrix},\ "
+                 r"\mathcal A=\begin{pmatrix}0&\mathbf I_r\\\bar\Lambda-\lambda\mathbf I_r&0\end{pmatrix}")
+def complex_neumann_dual_lax(s):
+    """Theorem dual-complex: the Neumann system (W-eq) on the complex Stiefel variety implies the 2r×2r Lax equation (LA3*) with the printed 𝓛(λ), whose off-diagonal blocks contain (I_n − λA)⁻¹, and 𝓐(λ)."""
+    return {"LA3*": complex_lax_residual(s, resolvent_flipped)}
+
+
+@complex_neumann_dual_lax.claim.correction("(LA3*): (λI_n − A)⁻¹ in place of (I_n − λA)⁻¹ in the off-diagonal blocks")
+def complex_neumann_dual_lax_corrected(s):
+    return {"LA3*": complex_lax_residual(s, lambda t: t.resolvent(t.lam))}
+
+
+@claim("complex-neumann-momenta", paper=("W-eq", "u(1)"), kind="pb",
+       statement=r"\tfrac{d}{dt}\psi_0=0,\ \psi_0=Z^T\dot{\bar Z}-\dot Z^T\bar Z;\quad \tfrac{d}{dt}\psi_j=0,\ "
+                 r"\psi_j=\sum_{i=1}^r\dot z_i^j\bar z_i^j-z_i^j\dot{\bar z}_i^j\ \text{along (W-eq)}")
+def complex_neumann_momenta(s):
+    """The momentum ψ₀ = ZᵀŻ̄ − ŻᵀZ̄ of the right U(r)-action and the momenta ψ_j of the left U(1)ⁿ-action (u(1)) (A diagonal) are conserved along (W-eq)."""
+    z = complex_point(s)
+    flow = flow_complex(s, z)
+    psi0 = lambda t, w: ctranspose(t, w["Z"]) @ t.conj(w["Zdot"]) - ctranspose(t, w["Zdot"]) @ t.conj(w["Z"])
+    # ψ_j = (Ż Z̄ᵀ − Z Ż̄ᵀ)_jj
+    psi = lambda t, w: [x for pair in complex_diagonal(w["Zdot"] @ ctranspose(t, t.conj(w["Z"]))
+                                                       - w["Z"] @ ctranspose(t, t.conj(w["Zdot"])))
+                        for x in pair]
+    checks = {"d psi_0/dt": derivative(s, psi0, z, flow)}
+    for j, x in enumerate(derivative(s, psi, z, flow)):
+        checks[f"d {'Im' if j % 2 else 'Re'} psi_{j // 2 + 1}/dt"] = x
+    return checks
+
+
+@claim("complex-neumann-real-data", paper=("W-eq", "W-Lag", "NE_XP"), kind="id",
+       statement=r"Z=\bar Z=X,\ \dot Z=\dot{\bar Z}=P:\quad \ddot Z=-AX-XP^TP+XX^TAX\ \text{(NE\_XP)}")
+def complex_neumann_real_data(s):
+    """At real initial data Z = X ∈ V(n, r), Ż = P, the Euler–Lagrange equations of (W-Lag), (W0) give the real acceleration Ṗ of the Euclidean Neumann system (NE_XP), so (NE_XP) is the subsystem Z = Z̄ of (W-eq)."""
+    acc = complex_acceleration(s, real_complex_point(s))
+    return {"Z'' - (NE_XP)": acc - realify_real(s, flow_NE(s)["P"])}
