@@ -495,17 +495,25 @@ def monopole_terms(s):
     return flow, e3, e3dot, F, eps, e3dd
 
 
-def monopole_checks(s, sign):
-    flow, e3, e3dot, F, eps, e3dd = monopole_terms(s)
+def monopole_identities(s, flow, e3, e3dot, F, eps, e3dd):
+    """What the remark rests on: e₃ completes (e₁, e₂) to SO(3), ė₃ = Ωe₃ along the derived flow, the
+    Yang–Mills field is F_Ω = XΨXᵀ = εe₁∧e₂, and (mag6) holds at n = 3 (so the monopole equation is
+    (mag6) with F_Ωė₃ replaced by the Lorentz force)."""
     A = s.A
-    lorentz = sign * eps * cross(s, e3, e3dot)
     return {
         "e_3 (x) e_3 = I - XX^T": e3 @ e3.T - (s.In - s.X @ s.X.T),
         "(mag2) d(e_1 x e_2)/dt = Omega e_3": s.d(e3_of, flow) - e3dot,
         "F_Omega = X Psi X^T = eps e_1 ^ e_2": F - eps * wedge(col(s, 0), col(s, 1)),
-        "F_Omega de_3/dt = eps e_3 x de_3/dt": F @ e3dot - lorentz,
-        "monopole equation": e3dd - (A @ e3 - (dot(s, e3, A @ e3) + dot(s, e3dot, e3dot)) * e3 + lorentz),
+        "(mag6) at n = 3": e3dd - (A @ e3 - (dot(s, e3, A @ e3) + dot(s, e3dot, e3dot)) * e3 + F @ e3dot),
     }
+
+
+def monopole_checks(s, sign):
+    """The remark with the Lorentz force sign·ε e₃ × ė₃ (sign = 1: as printed)."""
+    flow, e3, e3dot, F, eps, e3dd = monopole_terms(s)
+    checks = monopole_identities(s, flow, e3, e3dot, F, eps, e3dd)
+    checks["F_Omega de_3/dt = eps e_3 x de_3/dt"] = F @ e3dot - sign * eps * cross(s, e3, e3dot)
+    return checks
 
 
 @claim("ym-monopole", paper=("YM", "mag6"), kind="id",
@@ -521,8 +529,11 @@ def monopole_checks(s, sign):
        statement=r"n=3,\ \eta=\epsilon E_1\wedge E_2:\quad \ddot e_3=Ae_3-\big((e_3,Ae_3)+(\dot e_3,\dot e_3)\big)e_3"
                  r"+\epsilon\,e_3\times\dot e_3,\quad F_\Omega\dot e_3=\epsilon\,e_3\times\dot e_3")
 def monopole_form(s):
-    """The n = 3 case of Proposition YM: for the normal Neumann flow on V_{3,2} with Ψ = εE₁∧E₂, under so(3) ≅ (ℝ³, ×) and e₃ = e₁ × e₂, the Yang–Mills term of (mag6) is the Lorentz force of a magnetic monopole, F_Ωė₃ = εe₃ × ė₃, and (mag6) becomes the printed monopole equation."""
-    return monopole_checks(s, 1)
+    """The n = 3 case of Proposition YM: for the normal Neumann flow on V_{3,2} with Ψ = εE₁∧E₂, under so(3) ≅ (ℝ³, ×) and e₃ = e₁ × e₂, the Yang–Mills term of (mag6) is the Lorentz force of a magnetic monopole, F_Ωė₃ = εe₃ × ė₃, so that (mag6), checked here at n = 3, becomes the printed monopole equation."""
+    flow, e3, e3dot, F, eps, e3dd = monopole_terms(s)
+    checks = monopole_identities(s, flow, e3, e3dot, F, eps, e3dd)
+    checks["F_Omega de_3/dt = eps e_3 x de_3/dt"] = F @ e3dot - eps * cross(s, e3, e3dot)
+    return checks
 
 
 @monopole_form.claim.correction("the Lorentz force with the opposite sign: F_Ω ė₃ = −ε e₃ × ė₃")
