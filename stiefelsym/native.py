@@ -480,14 +480,19 @@ def backend(field) -> Backend | None:
         return field.__dict__["_backend"]
     except KeyError:
         pass
-    be = _make(field) if ENABLED else None
+    be = _make(field)
     field.__dict__["_backend"] = be
     return be
 
 
 def _make(field) -> Backend | None:
     from .fields import DegreeField, DualField, FloatField, ModularField, RationalField
+    from .reverse import RevBackend, RevField
     t = type(field)
+    if t is RevField:                 # reverse numbers exist only as whole matrices
+        return RevBackend(field)
+    if not ENABLED:
+        return None
     if t is ModularField:
         return ModularBackend(field)
     if t is RationalField:
@@ -496,9 +501,6 @@ def _make(field) -> Backend | None:
         return Float64Backend(field)
     if t is DegreeField:
         return DegreeBackend(field)
-    from .reverse import RevBackend, RevField
-    if t is RevField:
-        return RevBackend(field)
     if t is DualField:
         base = backend(field.base)
         return None if base is None else DualBackend(field, base)
