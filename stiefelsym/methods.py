@@ -414,7 +414,23 @@ class DegreeBound:
     constant_bits: float = 0.0   # sum of log2|a| + log2 b over the constants a/b of the claim
 
 
+#: degree bounds computed in this process, per (claim, function, size): a claim's bound is
+#: computed once however many methods, points or components use it
+_DEGREE_CACHE: dict[tuple, DegreeBound] = {}
+
+
 def degree_bound(claim: Claim, n: int, r: int, func: Callable | None = None) -> DegreeBound:
+    """Bounds on the degree and height of the numerators of a claim's residuals at size (n, r),
+    from the structure of its expressions: the claim runs once over degree markers, one marker
+    per matrix (see :class:`~stiefelsym.native.DegreeBackend`); cached."""
+    from . import native
+    key = (claim.id, func or claim.func, claim.realization, n, r, native.ENABLED)
+    if key not in _DEGREE_CACHE:
+        _DEGREE_CACHE[key] = _degree_bound(claim, n, r, func)
+    return _DEGREE_CACHE[key]
+
+
+def _degree_bound(claim: Claim, n: int, r: int, func: Callable | None = None) -> DegreeBound:
     field = DegreeField()
     scene = Scene(n, r, field, chart="cayley", realization=claim.realization)
     checks = call_claim(func or claim.func, scene)
