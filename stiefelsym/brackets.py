@@ -161,6 +161,11 @@ class Space:
         """A generic element (parameters of the claim's own)."""
         return self.project(s.generic(name, self.index, self.index) * 2)
 
+    def zero(self, s: Any) -> Mat:
+        """The zero of the space."""
+        m = self.size(s)
+        return s.zeros(m, m, (self.index, self.index))
+
     def basis(self, s: Any) -> list[tuple[Mat, Mat]]:
         """Pairs (e_k, e_k*) of a basis and its dual basis for <,> (<e_k, e_l*> = δ_kl)."""
         m = self.size(s)
@@ -325,10 +330,9 @@ class PoissonTensor:
     def sharp(self, s: Any, x: Mat, a: Mat) -> Mat:
         """The vector Λ_x(·, a)^♯: <Λ_x(·, a)^♯, c> = Λ_x(c, a) for every c (the Hamiltonian vector
         field of a function with gradient a at x: ẋ = sharp(x, ∇H))."""
-        acc = None
+        acc = self.space.zero(s)
         for e, dual in self.space.basis(s):
-            term = dual * self(s, x, e, a)
-            acc = term if acc is None else acc + term
+            acc = acc + dual * self(s, x, e, a)
         return acc
 
     def __add__(self, o: "PoissonTensor") -> "PoissonTensor":
@@ -383,13 +387,12 @@ def gradient_in_x(s: Any, T: PoissonTensor, x: Mat, b: Mat, c: Mat) -> Mat:
     t ↦ Λ(b, c)|_{x + t e_k} of degree <= T.degree at t = 0, ..., degree)."""
     w = [s.q(q.numerator, q.denominator) for q in _derivative_weights(T.degree)]
     values0 = T(s, x, b, c)
-    acc = None
+    acc = T.space.zero(s)
     for e, dual in T.space.basis(s):
         deriv = values0 * w[0]
         for j in range(1, T.degree + 1):
             deriv = deriv + T(s, x + e * j, b, c) * w[j]
-        term = dual * deriv
-        acc = term if acc is None else acc + term
+        acc = acc + dual * deriv
     return acc
 
 
@@ -416,8 +419,8 @@ def poisson_checks(s: Any, T: PoissonTensor, prefix: str = "") -> dict[str, Scal
     """Antisymmetry, polynomial degree and the Jacobi identity of T at a generic point x with
     generic covectors a, b, c (parameters of the claim's own)."""
     sp = T.space
-    x, a, b, c = (sp.generic(s, f"brackets_{nm}") for nm in ("x", "a", "b", "c"))
-    e = sp.generic(s, "brackets_e")
+    x, a, b, c = (sp.generic(s, f"Bk{nm}") for nm in ("x", "a", "b", "c"))
+    e = sp.generic(s, "Bke")
     p = f"{prefix}: " if prefix else ""
     return {
         f"{p}Λ(a, b) + Λ(b, a)": antisymmetry(s, T, x, a, b),
@@ -431,7 +434,7 @@ def compatibility(s: Any, T1: PoissonTensor, T2: PoissonTensor, prefix: str = ""
     point with generic covectors."""
     sp = T1.space
     T = T1 + T2
-    x, a, b, c = (sp.generic(s, f"brackets_{nm}") for nm in ("x", "a", "b", "c"))
+    x, a, b, c = (sp.generic(s, f"Bk{nm}") for nm in ("x", "a", "b", "c"))
     p = f"{prefix}: " if prefix else ""
     return {f"{p}Jacobi identity of {T1.name} + {T2.name}": jacobiator(s, T, x, a, b, c)}
 

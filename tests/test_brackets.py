@@ -1,0 +1,202 @@
+"""Brackets as objects: the canonical, Dirac and Lie–Poisson brackets and the pencil Λ1, Λ2 satisfy
+the Jacobi identity and are antisymmetric; a bilinear form that is not Poisson is rejected; the
+gradients of the matrix functions are exact; the Dirac bracket built from the canonical one agrees
+with the scene's, for (cond_XP) and for (cond_XP2)."""
+import random
+
+import pytest
+
+from stiefelsym import brackets as B
+from stiefelsym.fields import ModularField, RationalField
+from stiefelsym.matrix import comm
+from stiefelsym.scene import Scene
+
+SIZES = [(2, 1), (3, 2), (3, 3), (4, 2)]
+
+
+def scene(n, r, seed=0, field=None, **kw):
+    return Scene(n, r, field or ModularField(), rng=random.Random(f"brackets|{n}|{r}|{seed}"), **kw)
+
+
+def all_zero(checks):
+    return all(v == 0 for v in checks.values())
+
+
+# -- Poisson tensors on matrix spaces --------------------------------------------------------------
+
+TENSORS = {
+    "Lie-Poisson (+) so(n)": lambda: B.lie_poisson(B.SO_N, 1),
+    "Lie-Poisson (-) so(n)": lambda: B.lie_poisson(B.SO_N, -1),
+    "Lie-Poisson (+) so(r)": lambda: B.lie_poisson(B.SO_R, 1),
+    "Lie-Poisson (-) so(r)": lambda: B.lie_poisson(B.SO_R, -1),
+    "Lie-Poisson gl(n)": lambda: B.lie_poisson(B.GL_N, 1),
+    "Lambda1": B.lambda1,
+    "Lambda2": B.lambda2,
+}
+
+
+@pytest.mark.parametrize("name", sorted(TENSORS))
+@pytest.mark.parametrize("n, r", SIZES)
+def test_tensor_is_antisymmetric_and_satisfies_jacobi(name, n, r):
+    s = scene(n, r)
+    checks = B.poisson_checks(s, TENSORS[name]())
+    assert all_zero(checks), checks
+
+
+@pytest.mark.parametrize("n", [2, 3, 4])
+def test_pencil_is_compatible_for_every_coefficient(n):
+    s = scene(n, 1)
+    T1 = B.lambda1().scaled(lambda t: t.scalar("l1"))
+    T2 = B.lambda2().scaled(lambda t: t.scalar("l2"))
+    assert all_zero(B.poisson_checks(s, T1 + T2))
+    assert all_zero(B.compatibility(s, B.lambda1(), B.lambda2()))
+
+
+def doubled_action():
+    """Not Poisson: the semi-direct product with the module action doubled (2ρ is no representation)."""
+    def form(s, x, a, b):
+        xi, eta, zeta, theta = B.skew(a), B.sym(a), B.skew(b), B.sym(b)
+        return s.killing(x, comm(xi, zeta) + (comm(xi, theta) + comm(eta, zeta)) * 2)
+    return B.PoissonTensor(B.GL_N, form, 1, "doubled")
+
+
+def quadratic_so_bracket():
+    """Not Poisson: <x, [a, b]> on gl(n) times <x, xᵀ>, which is not a Casimir (a multiple by a
+    Casimir, or any multiple on so(3), would be Poisson)."""
+    return B.PoissonTensor(B.GL_N, lambda s, x, a, b: s.killing(x, comm(a, b)) * s.killing(x, x.T), 3, "quadratic")
+
+
+def symmetric_form():
+    """Not antisymmetric: <x, ab + ba>."""
+    return B.PoissonTensor(B.GL_N, lambda s, x, a, b: s.killing(x, a @ b + b @ a), 1, "symmetric")
+
+
+@pytest.mark.parametrize("n", [3, 4])
+@pytest.mark.parametrize("field", [ModularField, RationalField])
+def test_a_non_poisson_bilinear_form_is_rejected(n, field):
+    s = scene(n, 1, field=field())
+    for T in (doubled_action(), quadratic_so_bracket()):
+        checks = B.poisson_checks(s, T)
+        assert checks[[k for k in checks if "Jacobi" in k][0]] != 0, T.name
+    assert B.poisson_checks(s, symmetric_form())["Λ(a, b) + Λ(b, a)"] != 0
+
+
+def test_the_declared_degree_is_checked():
+    """A quadratic tensor declared affine: the finite difference of order 2 does not vanish."""
+    s = scene(3, 1)
+    T = quadratic_so_bracket()
+    wrong = B.PoissonTensor(T.space, T.form, 1, "declared affine")
+    assert B.poisson_checks(s, wrong)["degree in x <= 1"] != 0
+    assert B.poisson_checks(s, T)["degree in x <= 3"] == 0
+
+
+def test_derivative_weights_are_exact():
+    from fractions import Fraction
+    for d in range(1, 5):
+        w = B._derivative_weights(d)
+        for k in range(d + 1):      # p(t) = t^k: p'(0) = 1 if k == 1 else 0
+            assert sum(wj * Fraction(j) ** k for j, wj in enumerate(w)) == (1 if k == 1 else 0)
+
+
+# -- functions on matrix spaces ---------------------------------------------------------------------
+
+def directional_derivative(s, f, x, e, degree):
+    w = [s.q(q.numerator, q.denominator) for q in B._derivative_weights(degree)]
+    acc = f(s, x) * w[0]
+    for j in range(1, degree + 1):
+        acc = acc + f(s, x + e * j) * w[j]
+    return acc
+
+
+@pytest.mark.parametrize("n", [2, 3])
+def test_gradients_of_matrix_functions_are_exact(n):
+    s = scene(n, 1)
+    x, e = s.generic("x", "n", "n"), s.generic("e", "n", "n")
+    lam = lambda t: t.scalar("lam")   # noqa: E731
+    functions = [
+        (B.linear(lambda t: t.generic("a", "n", "n")), 1),
+        (B.quadratic(lambda t, y: B.skew(y)), 2),
+        (B.trace_power(3, so_scale=lam, shift=lambda t: t.A), 3),
+        (B.trace_power(2), 2),
+        (B.trace_power(2) * B.linear(lambda t: t.generic("a", "n", "n")), 3),
+    ]
+    for f, degree in functions:
+        assert s.killing(f.grad(s, x), e) - directional_derivative(s, f, x, e, degree) == 0, f.name
+
+
+def test_casimirs_of_the_lie_poisson_bracket():
+    s = scene(4, 1)
+    T = B.lie_poisson(B.SO_N, 1)
+    x, b = B.SO_N.generic(s, "x"), B.SO_N.generic(s, "b")
+    for k in (2, 4):
+        assert B.casimir_residual(s, T, B.trace_power(k), x, b) == 0
+    assert B.casimir_residual(s, T, B.trace_power(2, shift=lambda t: t.zeta), x, b) != 0
+
+
+def test_sharp_is_the_hamiltonian_vector_field():
+    """For the (+) Lie–Poisson bracket, the Hamiltonian vector field of h = <μ, a> is ẋ = [a, x]."""
+    s = scene(3, 1)
+    T = B.lie_poisson(B.SO_N, 1)
+    x, a = B.SO_N.generic(s, "x"), B.SO_N.generic(s, "a")
+    assert (T.sharp(s, x, a) - comm(a, x)).is_zero()
+
+
+# -- brackets of functions of the scene ----------------------------------------------------------
+
+def F(t):
+    return t.tr(t.generic("U", "n", "r").T @ t.X @ t.X.T @ t.P)
+
+
+def G(t):
+    return t.tr(t.P.T @ t.A @ t.P) + t.tr(t.X.T @ t.A @ t.A @ t.X)
+
+
+def H(t):
+    return t.killing(t.Phi, t.xi) * t.tr(t.X.T @ t.A @ t.X)
+
+
+@pytest.mark.parametrize("n, r", [(2, 1), (3, 2), (3, 3)])
+def test_canonical_and_dirac_brackets_satisfy_jacobi(n, r):
+    s = scene(n, r)
+    for br in (B.canonical, B.dirac):
+        assert B.phase_jacobiator(s, br, F, G, H) == 0, br.name
+        assert br(s, F, G) + br(s, G, F) == 0
+
+
+@pytest.mark.parametrize("n, r", [(2, 1), (3, 2)])
+def test_a_non_poisson_phase_bracket_is_rejected(n, r):
+    """{,}_0 times a non-constant function of X is antisymmetric but not Poisson."""
+    s = scene(n, r)
+    bad = B.PhaseBracket("conformal", lambda t, F_, G_: t.canonical_bracket(F_, G_) * t.tr(t.X.T @ t.A @ t.X))
+    assert bad(s, F, G) + bad(s, G, F) == 0
+    assert B.phase_jacobiator(s, bad, F, G, H) != 0
+
+
+@pytest.mark.parametrize("n, r", SIZES)
+def test_dirac_bracket_from_the_constraints_is_the_scenes(n, r):
+    s = scene(n, r)
+    assert B.dirac(s, F, G) - B.dirac_bracket_for(B.standard_constraints)(s, F, G) == 0
+
+
+@pytest.mark.parametrize("n, r", [(2, 1), (3, 2), (3, 3)])
+def test_metric_dirac_bracket_of_cond_XP2(n, r):
+    """On (cond_XP2) the bracket {,}_A built from the constraints is the scene's, satisfies Jacobi,
+    and the right SO(r) action is generated by Ψ_η (ds²_A is right SO(r)-invariant)."""
+    s = scene(n, r, realization="metric")
+    assert all(C.is_zero() for C in B.metric_constraints(s))
+    assert B.metric_dirac(s, F, G) - B.dirac(s, F, G) == 0
+    assert B.phase_jacobiator(s, B.dirac, F, G, H) == 0
+    H_A = lambda t: t.tr(t.P.T @ t.Ainv @ t.P) / 2                   # noqa: E731
+    Psi_eta = lambda t: t.killing(t.X.T @ t.P - t.P.T @ t.X, t.eta)  # noqa: E731
+    assert B.dirac(s, Psi_eta, H_A) == 0
+    flow = s.dirac_flow(Psi_eta)
+    assert (flow.Xdot - s.X @ s.eta).is_zero() and (flow.Pdot - s.P @ s.eta).is_zero()
+
+
+def test_poisson_map_residual_detects_a_non_poisson_map():
+    s = scene(3, 2)
+    a, b = (lambda t: t.generic("a", "n", "n")), (lambda t: t.generic("b", "n", "n"))
+    Theta = lambda t: t.Phi + t.X @ t.X.T          # noqa: E731
+    wrong = lambda t: -t.Phi + t.X @ t.X.T         # noqa: E731
+    assert B.poisson_map_residual(s, B.dirac, Theta, B.lambda1(), a, b) == 0
+    assert B.poisson_map_residual(s, B.dirac, wrong, B.lambda1(), a, b) != 0
