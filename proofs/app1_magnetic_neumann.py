@@ -131,30 +131,6 @@ def phi_eps_is_the_twisted_momentum_map(s):
 
 # -- the magnetic Neumann flows (mag-euk), (mag-nor) ------------------------------------------------
 
-def flow_mag_euk(s):
-    """(mag-euk) as printed, columns e_i = X E_i, p_i = P E_i."""
-    A, eps = s.A, s.eps
-    e1, e2, p1, p2 = col(s, 0), col(s, 1), pcol(s, 0), pcol(s, 1)
-    d = lambda x, y: dot(s, x, y)
-    p1dot = (-(A @ e1) + (d(e1, A @ e1) - d(p1, p1) - eps * d(e1, p2)) * e1
-             + (d(e1, A @ e2) - d(p1, p2)) * e2 + eps * p2)
-    p2dot = (-(A @ e2) + (d(e1, A @ e2) - d(p1, p2)) * e1
-             + (d(e2, A @ e2) - d(p2, p2) + eps * d(e2, p1)) * e2 - eps * p1)
-    return {"X": columns_to_matrix(s, [p1, p2]), "P": columns_to_matrix(s, [p1dot, p2dot])}
-
-
-def flow_mag_nor(s):
-    """(mag-nor) as printed, Φ₀ = Φ = PXᵀ − XPᵀ (Φ_ε at ε = 0)."""
-    A, eps, Phi0 = s.A, s.eps, s.Phi
-    e1, e2, p1, p2 = col(s, 0), col(s, 1), pcol(s, 0), pcol(s, 1)
-    d = lambda x, y: dot(s, x, y)
-    p1dot = (Phi0 @ p1 - A @ e1 + (d(e1, A @ e1) - eps * d(e1, Phi0 @ e2)) * e1 + d(e1, A @ e2) * e2
-             + eps * (Phi0 @ e2))
-    p2dot = (Phi0 @ p2 - A @ e2 + d(e2, A @ e1) * e1 + (d(e2, A @ e2) + eps * d(e2, Phi0 @ e1)) * e2
-             - eps * (Phi0 @ e1))
-    return {"X": columns_to_matrix(s, [Phi0 @ e1, Phi0 @ e2]), "P": columns_to_matrix(s, [p1dot, p2dot])}
-
-
 def twisted_flow_checks(s, H, printed):
     """The twisted Dirac flow of H equals the printed flow, and the printed flow keeps T*V."""
     flow = twisted.flow(s, H)
@@ -172,7 +148,15 @@ def twisted_flow_checks(s, H, printed):
                  r"\ \dot p_2=-Ae_2+\big((e_1,Ae_2)-(p_1,p_2)\big)e_1+\big((e_2,Ae_2)-(p_2,p_2)+\epsilon(e_2,p_1)\big)e_2-\epsilon p_1")
 def magnetic_neumann_euclidean_flow(s):
     """The Hamiltonian flow of the Euclidean Neumann Hamiltonian H_neum,−½ for the twisted form ω + ε π*ω_mag on T*V_{n,2} is the printed (mag-euk), which is tangent to T*V."""
-    return twisted_flow_checks(s, H_neumann_euclidean, flow_mag_euk(s))
+    A, eps = s.A, s.eps
+    e1, e2, p1, p2 = col(s, 0), col(s, 1), pcol(s, 0), pcol(s, 1)
+    d = lambda x, y: dot(s, x, y)
+    p1dot = (-(A @ e1) + (d(e1, A @ e1) - d(p1, p1) - eps * d(e1, p2)) * e1
+             + (d(e1, A @ e2) - d(p1, p2)) * e2 + eps * p2)
+    p2dot = (-(A @ e2) + (d(e1, A @ e2) - d(p1, p2)) * e1
+             + (d(e2, A @ e2) - d(p2, p2) + eps * d(e2, p1)) * e2 - eps * p1)
+    printed = {"X": columns_to_matrix(s, [p1, p2]), "P": columns_to_matrix(s, [p1dot, p2dot])}
+    return twisted_flow_checks(s, H_neumann_euclidean, printed)
 
 
 @claim("magnetic-normal-flow", paper=("mag-nor", "twisted", "neumann"), kind="id", sizes=ON_V_N2,
@@ -181,10 +165,17 @@ def magnetic_neumann_euclidean_flow(s):
                  r"\dot p_2=\Phi_0p_2-Ae_2+(e_2,Ae_1)e_1+\big((e_2,Ae_2)+\epsilon(e_2,\Phi_0e_1)\big)e_2-\epsilon\Phi_0e_1")
 def magnetic_neumann_normal_flow(s):
     """The Hamiltonian flow of the normal-metric Neumann Hamiltonian H_neum,0 for the twisted form on T*V_{n,2} is the printed (mag-nor) with Φ₀ = Φ, which is tangent to T*V, and Φ₀e₁ = p₁ − (e₁, p₂)e₂, Φ₀e₂ = p₂ − (e₂, p₁)e₁ on T*V."""
+    A, eps, Phi0 = s.A, s.eps, s.Phi
     e1, e2, p1, p2 = col(s, 0), col(s, 1), pcol(s, 0), pcol(s, 1)
-    checks = twisted_flow_checks(s, H_neumann_normal, flow_mag_nor(s))
-    checks["Phi_0 e1 = p1 - (e1, p2) e2"] = s.Phi @ e1 - (p1 - dot(s, e1, p2) * e2)
-    checks["Phi_0 e2 = p2 - (e2, p1) e1"] = s.Phi @ e2 - (p2 - dot(s, e2, p1) * e1)
+    d = lambda x, y: dot(s, x, y)
+    p1dot = (Phi0 @ p1 - A @ e1 + (d(e1, A @ e1) - eps * d(e1, Phi0 @ e2)) * e1 + d(e1, A @ e2) * e2
+             + eps * (Phi0 @ e2))
+    p2dot = (Phi0 @ p2 - A @ e2 + d(e2, A @ e1) * e1 + (d(e2, A @ e2) + eps * d(e2, Phi0 @ e1)) * e2
+             - eps * (Phi0 @ e1))
+    printed = {"X": columns_to_matrix(s, [Phi0 @ e1, Phi0 @ e2]), "P": columns_to_matrix(s, [p1dot, p2dot])}
+    checks = twisted_flow_checks(s, H_neumann_normal, printed)
+    checks["Phi_0 e1 = p1 - (e1, p2) e2"] = Phi0 @ e1 - (p1 - d(e1, p2) * e2)
+    checks["Phi_0 e2 = p2 - (e2, p1) e1"] = Phi0 @ e2 - (p2 - d(e2, p1) * e1)
     return checks
 
 

@@ -123,19 +123,25 @@ def momentum_without_magnetic_term(s):
 
 def euclidean_flow_epsilon_sign(s):
     """Corrupted (mag-euk): −εp₂ in dp₁/dt."""
-    printed = app1.flow_mag_euk(s)
-    p2 = app1.pcol(s, 1)
-    P = printed["P"] - 2 * s.eps * app1.columns_to_matrix(s, [p2, s.zeros(s.n, 1, ("n", "?"))])
-    return app1.twisted_flow_checks(s, H_neumann_euclidean, {"X": printed["X"], "P": P})
+    A, eps, d = s.A, s.eps, lambda x, y: app1.dot(s, x, y)
+    e1, e2, p1, p2 = app1.col(s, 0), app1.col(s, 1), app1.pcol(s, 0), app1.pcol(s, 1)
+    p1dot = (-(A @ e1) + (d(e1, A @ e1) - d(p1, p1) - eps * d(e1, p2)) * e1
+             + (d(e1, A @ e2) - d(p1, p2)) * e2 - eps * p2)
+    p2dot = (-(A @ e2) + (d(e1, A @ e2) - d(p1, p2)) * e1
+             + (d(e2, A @ e2) - d(p2, p2) + eps * d(e2, p1)) * e2 - eps * p1)
+    printed = {"X": s.P, "P": app1.columns_to_matrix(s, [p1dot, p2dot])}
+    return app1.twisted_flow_checks(s, H_neumann_euclidean, printed)
 
 
 def normal_flow_multiplier_dropped(s):
     """Corrupted (mag-nor): the term −ε(e₁, Φ₀e₂)e₁ dropped."""
-    printed = app1.flow_mag_nor(s)
-    e1, e2 = app1.col(s, 0), app1.col(s, 1)
-    term = s.eps * app1.dot(s, e1, s.Phi @ e2) * e1
-    P = printed["P"] + app1.columns_to_matrix(s, [term, s.zeros(s.n, 1, ("n", "?"))])
-    return app1.twisted_flow_checks(s, H_neumann_normal, {"X": printed["X"], "P": P})
+    A, eps, Phi0, d = s.A, s.eps, s.Phi, lambda x, y: app1.dot(s, x, y)
+    e1, e2, p1, p2 = app1.col(s, 0), app1.col(s, 1), app1.pcol(s, 0), app1.pcol(s, 1)
+    p1dot = Phi0 @ p1 - A @ e1 + d(e1, A @ e1) * e1 + d(e1, A @ e2) * e2 + eps * (Phi0 @ e2)
+    p2dot = (Phi0 @ p2 - A @ e2 + d(e2, A @ e1) * e1 + (d(e2, A @ e2) + eps * d(e2, Phi0 @ e1)) * e2
+             - eps * (Phi0 @ e1))
+    printed = {"X": Phi0 @ s.X, "P": app1.columns_to_matrix(s, [p1dot, p2dot])}
+    return app1.twisted_flow_checks(s, H_neumann_normal, printed)
 
 
 def psi12_replaced_by_gram(s):
