@@ -1,0 +1,102 @@
+"""``stiefelsym speed``: time and error against n and precision, the cost model, the hard cases.
+
+Writes to the report directory (default reports/speed/): ``speed.json`` (all data),
+``speed.md`` with ``speed-FAMILY.png``/``.pdf`` per family of claims, ``costmodel.png``/``.pdf``,
+``hard.md`` and ``hard.json``; and regenerates the package's cost model
+(``stiefelsym/costmodel.json``) unless ``--quick``.  Exit status 1 when an observed residual
+exceeded its predicted bound or a hard case got a wrong verdict.
+"""
+from __future__ import annotations
+
+import json
+import platform
+import shlex
+import time
+from datetime import datetime, timezone
+from pathlib import Path
+
+import click
+
+QUICK_NS = {"exact": [2, 3], "rational": [2, 3], "modular": [2, 3], "float": [2, 3]}
+FULL_NS = {"exact": [2, 3, 4, 5, 6, 7, 8], "rational": [2, 3, 4, 5, 6, 8, 10],
+           "modular": [2, 3, 4, 5, 6, 8, 10, 12], "float": [2, 3, 4, 5, 6, 8, 10, 12, 16]}
+FLOAT_NS_FULL = [2, 3, 4, 5, 6, 8, 10, 12, 16, 20, 24, 32]
+
+
+@click.command("speed")
+@click.option("--report-dir", type=click.Path(file_okay=False, path_type=Path), default=Path("reports/speed"),
+              show_default=True, metavar="DIR", help="Where to write the data, plots and tables.")
+@click.option("--quick", is_flag=True,
+              help="Small sizes only, a reduced hard-case table, and the package's cost model is left alone "
+                   "(a copy of the fit goes to DIR).")
+@click.option("--seed", type=click.IntRange(min=0), default=0, show_default=True, metavar="N")
+@click.option("--no-hard", is_flag=True, help="Skip the hard-case table.")
+def speed(report_dir: Path, quick: bool, seed: int, no_hard: bool) -> int:
+    """Residual and time against n and precision per family of claims, the fitted cost model
+    (time against n per method), and the hard numerical cases."""
+    from . import costmodel, speed as sp
+    from .claims import load_catalog
+    from .results import write_atomic
+    t_start = time.perf_counter()
+    report_dir.mkdir(parents=True, exist_ok=True)
+    registry = load_catalog("proofs")
+    say = lambda text: click.echo(text, err=True)  # noqa: E731
+
+    say("measuring time against n (cost model) ...")
+    records = costmodel.measure(n_values=QUICK_NS if quick else FULL_NS, per_run=20.0 if quick else 60.0,
+                                series_seconds=3.0 if quick else 25.0, seed=seed, registry=registry,
+                                on_point=lambda r: say(f"  {r['family']:>10} {r['method']:>8} ({r['n']},{r['r']}) "
+                                                       f"{r['verdict']} {r['seconds']:.3f}s"))
+    cm_doc = costmodel.build(records, note="quick run" if quick else "stiefelsym speed")
+    if quick:
+        costmodel.save(cm_doc, report_dir / "costmodel.json")
+    else:
+        costmodel.save(cm_doc)
+        costmodel.save(cm_doc, report_dir / "costmodel.json")
+    costmodel.plot(cm_doc, report_dir)
+
+    families = {}
+    everything = []
+    for fam, cid in costmodel.FAMILIES.items():
+        claim = registry.get(cid)
+        say(f"{fam}: {cid}: residual against n and precision ...")
+        if claim.kind == "dim":
+            against_n, against_p = [], []
+        else:
+            against_n = sp.residual_against_n(claim, [2, 3] if quick else FLOAT_NS_FULL,
+                                              cap=2.0 if quick else 20.0, total=5.0 if quick else 60.0, seed=seed)
+            against_p = sp.residual_against_precision(claim, 3 if quick else 5, 1 if quick else 3, seed=seed)
+        everything += against_n + against_p
+        times = [r for r in records if r["family"] == fam]
+        families[fam] = {"claim": cid, "times": times, "against_n": against_n, "against_precision": against_p}
+        sp.plot_family(fam, cid, times, against_n, against_p, report_dir)
+    bad = sp.violations(everything)
+    command = shlex.join(["stiefelsym", "speed", "--report-dir", str(report_dir)] + (["--quick"] if quick else [])
+                         + (["--seed", str(seed)] if seed else []) + (["--no-hard"] if no_hard else []))
+    doc = {"generated": datetime.now(timezone.utc).strftime("%Y-%m-%d %H:%M:%S UTC"),
+           "command": command.strip(), "platform": platform.platform(terse=True), "quick": quick, "seed": seed,
+           "families": families, "violations": bad, "costmodel": cm_doc}
+    hard_rows = []
+    if not no_hard:
+        say("hard cases ...")
+        if quick:
+            hard_rows = sp.hard_table(cases=["near-pole", "near-equal-a-1e-12"], sizes=((3, 3),), large=None,
+                                      timeout=30.0, seed=seed, registry=registry)
+        else:
+            hard_rows = sp.hard_table(timeout=60.0, seed=seed, registry=registry)
+        write_atomic(report_dir / "hard.json", json.dumps(hard_rows, indent=1) + "\n")
+        write_atomic(report_dir / "hard.md", sp.hard_markdown(hard_rows))
+    doc["hard_wrong"] = [r for r in hard_rows if r["judgement"].startswith("WRONG")]
+    doc["seconds"] = round(time.perf_counter() - t_start, 1)
+    write_atomic(report_dir / "speed.json", json.dumps(doc, indent=1, default=_json_default) + "\n")
+    write_atomic(report_dir / "speed.md", sp.markdown(doc))
+    say(f"speed: {len(everything)} evaluations, {len(bad)} over their bound; {len(hard_rows)} hard runs, "
+        f"{len(doc['hard_wrong'])} wrong; {doc['seconds']} s; reports in {report_dir}")
+    return 1 if bad or doc["hard_wrong"] else 0
+
+
+def _json_default(x):
+    try:
+        return float(x)
+    except (TypeError, ValueError):
+        return str(x)
