@@ -122,7 +122,7 @@ def symmetric_pair(s):
     }
 
 
-@claim("lambda12-compatible", paper=("LAMBDA12",), kind="pb", exact_max_n=3,
+@claim("lambda12-compatible", paper=("LAMBDA12",), kind="pb", exact_max_n=4,
        equivariance="no point of T*V enters: the tensors are evaluated at a generic x in gl(n) with generic covectors, in a basis of gl(n)",
        statement=r"\Lambda_1(\xi+\eta,\zeta+\theta)|_x=\langle x,[\xi,\zeta]+[\xi,\theta]+[\eta,\zeta]\rangle,\ "
                  r"\Lambda_2(\xi+\eta,\zeta+\theta)|_x=\langle x-A,[\xi+\eta,\zeta+\theta]\rangle:\quad "
@@ -162,7 +162,7 @@ def pencil_casimirs_commute(s):
 
 # -- the Poisson map Θ ------------------------------------------------------------------
 
-@claim("theta-poisson-map", paper=("LAMBDA12", "right_action", "perelomov", "central"), kind="pb", exact_max_n=3,
+@claim("theta-poisson-map", paper=("LAMBDA12", "right_action", "perelomov", "central"), kind="pb", exact_max_n=4,
        statement=r"\{\langle\Theta,a\rangle,\langle\Theta,b\rangle\}=\Lambda_1(a,b)|_{\Theta},\ \Theta=\Phi+XX^T;\quad "
                  r"\Theta(XQ,PQ)=\Theta(X,P)=\Theta(-X,-P);\quad \mathfrak F=\Theta^*\mathcal F")
 def theta_is_a_poisson_map(s):
@@ -189,7 +189,7 @@ def theta2_semidirect_bracket(s, a, b, mu_, Y):
     return (s.killing(mu_, comm(alpha_a, alpha_b)) - s.tr(U_b.T @ alpha_a @ Y) + s.tr(U_a.T @ alpha_b @ Y))
 
 
-@claim("theta-factorization", paper=("LAMBDA12", "momentum_map"), kind="pb", exact_max_n=3,
+@claim("theta-factorization", paper=("LAMBDA12", "momentum_map"), kind="pb", exact_max_n=4,
        statement=r"\Theta=\Theta_2\circ\Theta_1,\ \Theta_1=\Phi+X,\ \Theta_2(\xi,Y)=\xi+YY^T:\quad "
                  r"\{\Phi_\xi,\Phi_\zeta\}=\langle\Phi,[\xi,\zeta]\rangle,\ \{\Phi_\xi,\tr(U^TX)\}=-\tr(U^T\xi X),\ "
                  r"\{\tr(U^TX),\tr(V^TX)\}=0;\ \Theta_2\ \text{Poisson into}\ (so(n)\oplus_{\ad}Sym(n))^*")
@@ -218,7 +218,7 @@ def J(t, k):
     return power_trace(t, t.Psi, 2 * k)
 
 
-@claim("reduced-bracket-casimirs", paper=("REDUCED_BRACKET", "torus"), kind="pb", exact_max_n=3,
+@claim("reduced-bracket-casimirs", paper=("REDUCED_BRACKET", "torus"), kind="pb", exact_max_n=4,
        sizes=admissible(5, r_min=2, condition="r >= 2 (J_k exist for k <= [r/2])"),
        statement=r"X_{J_k}=(X\omega,P\omega),\ \omega=-4k\Psi^{2k-1}\in so(r);\quad \{J_k,\langle\Theta,a\rangle\}="
                  r"\{J_k,\Psi_\eta\}=\{\langle\Theta,a\rangle,\Psi_\eta\}=0,\quad J_k=\tr\Psi^{2k},\ k\le[r/2]")
@@ -255,7 +255,7 @@ def neumann_normal_hamiltonian_is_pulled_back(s):
     }
 
 
-@claim("cpb-flow", paper=("CPB", "central", "LAMBDA12"), kind="pb", exact_max_n=3,
+@claim("cpb-flow", paper=("CPB", "central", "LAMBDA12"), kind="pb", exact_max_n=4,
        equivariance="no point of T*V enters: the flow is evaluated at a generic x in gl(n)",
        statement=r"\dot x=\Lambda_1(\cdot,\nabla H)^\sharp\iff\dot h=[v,A],\ \dot v=[h,v];\quad "
                  r"\{\tr(\lambda h+v-\lambda^2A)^k,H\}_{\Lambda_1}=0,\ k\le3")
@@ -273,7 +273,7 @@ def cpb_is_the_hamiltonian_flow_of_H(s):
 
 # -- A = 0: the integrals (FF) of the geodesic flows ---------------------------------------
 
-@claim("ff-integrals", paper=("FF", "so(n)+so(r)", "EM"), kind="pb", exact_max_n=3,
+@claim("ff-integrals", paper=("FF", "so(n)+so(r)", "EM"), kind="pb", exact_max_n=4,
        statement=r"\{\tr(\lambda\Phi+XX^T)^k,\tr(\mu\Phi+XX^T)^m\}=\{\tr(\lambda\Phi+XX^T)^k,\Phi_\xi\}="
                  r"\{\tr(\lambda\Phi+XX^T)^k,\Psi_\eta\}=\{\tr(\lambda\Phi+XX^T)^k,H_\kappa\}=0,\ k,m\le3")
 def ff_commute_and_are_integrals(s):
@@ -351,7 +351,7 @@ def potential(t):
     return t.tr(t.X.T @ t.A @ t.X) / 2
 
 
-@claim("bb-manakov-so-r", paper=("BB", "e-so(r)"), kind="pb", exact_max_n=3,
+@claim("bb-manakov-so-r", paper=("BB", "e-so(r)"), kind="pb", exact_max_n=4,
        sizes=admissible(5, r_min=2, condition="r >= 2 (so(1) = 0)"),
        equivariance="the functions are evaluated at a generic ξ in so(r) (B diagonal); no coordinate of R^n",
        statement=r"\dot\xi=\{\xi,h_{\mathbb B}\}^-_{so(r)}=[\xi,\mathbb B\xi],\ \mathbb B\xi=B\xi+\xi B;\quad "
@@ -372,7 +372,7 @@ def manakov_family_on_so_r(s):
     return checks
 
 
-@claim("cif-integrals", paper=("CIF", "HB", "BB", "FF"), kind="pb", exact_max_n=3,
+@claim("cif-integrals", paper=("CIF", "HB", "BB", "FF"), kind="pb", exact_max_n=4,
        sizes=admissible(5, r_min=2, condition="r >= 2 (so(1) = 0)"),
        statement=r"\{\mathfrak B,\mathfrak B\}=\{\mathfrak B,\mathfrak F\}=\{\mathfrak B,\Phi_\xi\}=0,\ "
                  r"\mathfrak B=\{\tr(\Psi+\mu B)^k\};\quad \{\Phi_\xi,H_{\mathbb B}\}=\{\mathfrak F,H_{\mathbb B}\}=0;\ "
@@ -432,7 +432,7 @@ def chain_functions(r):
     return out
 
 
-@claim("nikinorov-integrals", paper=("nikinorov", "EM2", "EM3", "FF"), kind="pb", exact_max_n=3,
+@claim("nikinorov-integrals", paper=("nikinorov", "EM2", "EM3", "FF"), kind="pb", exact_max_n=4,
        sizes=admissible(5, r_min=2, condition="r >= 2 (so(1) = 0)"),
        statement=r"H_K=\tfrac12\langle\Phi,\Phi\rangle+K\circ\Psi:\ \{\Phi_\xi,H_K\}=\{\mathfrak F,H_K\}=0,\ "
                  r"\{\tr\Psi^{2k},\cdot\}=\{\tr\Psi_i^{2k},\tr\Psi_j^{2m}\}=\{\tr\Psi_i^{2k},H_K\}=0")
@@ -449,7 +449,7 @@ def einstein_metric_flows_have_commuting_integrals(s):
     return checks
 
 
-@claim("com-integrals", paper=("COM", "perelomov", "BB"), kind="pb", exact_max_n=3,
+@claim("com-integrals", paper=("COM", "perelomov", "BB"), kind="pb", exact_max_n=4,
        sizes=admissible(5, r_min=2, condition="r >= 2 (so(1) = 0)"),
        statement=r"H_{neum,\mathbb B}=H_{\mathbb B}+\tfrac12\tr(X^TAX):\ \{\mathfrak F,H_{neum,\mathbb B}\}="
                  r"\{\mathfrak F,\mathfrak B\}=0,\ \mathfrak F\ \text{(perelomov)};\ \{\mathfrak B,H_{neum,\mathbb B}\}=0\ "
@@ -497,9 +497,8 @@ def H_neum_singular(blocks):
     return H
 
 
-@claim("singular-a-noether", paper=("No", "momentum_map", "Phi"), kind="pb", exact_max_n=3,
+@claim("singular-a-noether", paper=("No", "momentum_map", "Phi"), kind="pb", exact_max_n=2,
        sizes=admissible(5, n_min=2, condition="n >= 2 (so(1) = 0)"),
-       equivariance="the claim's own A with repeated eigenvalues is diagonal in the coordinates of R^n (stated as such in the paper)",
        statement=r"a_1=\dots=a_{k_1},\dots:\quad \tfrac{d}{dt}\Phi_A=0,\ \Phi_A=\pr_{so(n)_A}(PX^T-XP^T),\quad "
                  r"\{\langle\Phi,\xi_A\rangle,H_{neum,\kappa}\}=0,\ \xi_A\in so(n)_A")
 def isotropy_momentum_is_conserved(s):
