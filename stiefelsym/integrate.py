@@ -343,7 +343,9 @@ def make_flow(name: str, n: int, r: int, *, kappa: float | None = None, A: Any =
         if B is None:
             dl = _lambdas(a)
             lax += (_dual_lax(Am, dl, False, "L*_man (MAN-LA2)", ("man-dual", "MAN-LA", "MAN-LA2", "LA-MAN3")),)
-        return Flow(name, n, r, rhs, 1, H, lax, {"Ψ (right momentum)": _psi}, None, 0.0, {"A": Am, "B": "A^2" if B is None else np.diag(b)}, ("Manakov", "dot_XP2", "dot_XP3*"))
+        bname = "A²" if B is None else "diag(" + ", ".join(f"{x:g}" for x in b) + ")"
+        return Flow(name, n, r, rhs, 1, H, lax, {"Ψ (right momentum)": _psi}, None, 0.0, {"A": Am, "B": bname},
+                    ("Manakov", "dot_XP2", "dot_XP3*") if B is None else ("Manakov", "dot_XP2"))
     if name == "magnetic":
         if r != 2:
             raise ValueError(f"the magnetic Neumann flows live on V(n, 2); got r = {r}")
@@ -496,18 +498,16 @@ def _shake(Xn: Array, Y: Array, max_iter: int = 50) -> Array:
     M = O(h²), so each iteration gains a factor O(h²))."""
     r = Xn.shape[1]
     I = np.eye(r)
-    C = Xn.T @ Y
-    K = C.T
-    Lop = _kron(I, K) + _kron(K, I)    # (Cᵀδ + δC) in column-major vec
-    F0 = Y.T @ Y - I
+    K = Y.T @ Xn                       # Cᵀ, C = XnᵀY
+    Linv = np.linalg.inv(_kron(I, K) + _kron(K, I))    # (Cᵀδ + δC) in column-major vec, inverted once
+    F0 = (Y.T @ Y - I).ravel(order="F")
     M = np.zeros((r, r))
     X = Y
     for _ in range(max_iter):
         X = Y - Xn @ M
-        res = X.T @ X - I
-        if np.abs(res).max() <= 4e-16:
+        if np.abs(X.T @ X - I).max() <= 4e-16:
             break
-        M = np.linalg.solve(Lop, (F0 + M @ M).reshape(-1, order="F")).reshape(r, r, order="F")
+        M = (Linv @ (F0 + (M @ M).ravel(order="F"))).reshape(r, r, order="F")
         M = (M + M.T) / 2
     return X
 
