@@ -357,3 +357,51 @@ def chain_algebra_commutes(s):
         checks[f"tr xi_({m})^{2 * k} is so({m})-invariant"] = comm(
             grads[(m, k)], lower_block(s, m) @ xi @ lower_block(s, m))
     return checks
+
+
+# -- the momentum maps as Poisson maps, for functions that are not linear -----------------
+
+def _so_n_functions():
+    """Functions on so(n): h₁ = ½<μ, 𝔸μ> (𝔸 a generic symmetric operator), h₂ = tr(μ + λA)³, h₃ = tr μ⁴."""
+    from stiefelsym.brackets import quadratic, trace_power
+    return [("1/2<mu, AA mu>", quadratic(lambda t, mu: t.sym_operator("AA")(mu))),
+            ("tr(mu + lambda A)^3", trace_power(3, shift=lambda t: t.lam * t.A)),
+            ("tr mu^4", trace_power(4))]
+
+
+def _so_r_functions():
+    """Functions on so(r): f₁ = ½<η, θ>², f₂ = tr(η + μB)³ (B generic symmetric), f₃ = tr η⁴."""
+    from stiefelsym.brackets import linear, trace_power
+    lin = linear(lambda t: t.theta, "<eta, theta>")
+    B = lambda t: t.generic("B", "r", "r") + t.generic("B", "r", "r").T   # noqa: E731
+    return [("<eta, theta>^2", lin * lin),
+            ("tr(eta + mu B)^3", trace_power(3, shift=lambda t: t.scalar("mu") * B(t))),
+            ("tr eta^4", trace_power(4))]
+
+
+@claim("momentum-maps-poisson-nonlinear", paper=("Phi", "momentum_map", "momentum_right_map"), kind="pb",
+       exact_max_n=3,
+       statement=r"\{h_1\circ\Phi,h_2\circ\Phi\}=\{h_1,h_2\}^+_{so(n)}(\Phi),\ "
+                 r"\{f_1\circ\Psi,f_2\circ\Psi\}=\{f_1,f_2\}^-_{so(r)}(\Psi),\ \{h\circ\Phi,f\circ\Psi\}=0,\ "
+                 r"\{h_1,h_2\}^\pm(\mu)=\pm\langle\mu,[\nabla h_1,\nabla h_2]\rangle")
+def momentum_maps_are_poisson_for_nonlinear_functions(s):
+    """As printed after Proposition Phi, for functions that are not linear: Φ is Poisson for the (+) and Ψ for the (−) Lie–Poisson bracket, and Φ*(C∞(so(n))) commutes with Ψ*(C∞(so(r))) (h = ½<μ, 𝔸μ>, tr(μ + λA)³, tr μ⁴ on so(n); f = <η, θ>², tr(η + μB)³, tr η⁴ on so(r))."""
+    from stiefelsym.brackets import SO_N, SO_R, lie_poisson
+    plus, minus = lie_poisson(SO_N, 1), lie_poisson(SO_R, -1)
+    Phi, Psi = (lambda t: t.Phi), (lambda t: t.Psi)
+    hs, fs = _so_n_functions(), _so_r_functions()
+    checks = {}
+    for i, (n1, h1) in enumerate(hs):
+        for n2, h2 in hs[i + 1:]:
+            checks[f"{{{n1}, {n2}}} (+)"] = (s.bracket(h1.pullback(Phi), h2.pullback(Phi))
+                                            - plus.bracket(s, h1, h2, s.Phi))
+    if s.r >= 2:
+        for i, (n1, f1) in enumerate(fs):
+            for n2, f2 in fs[i + 1:]:
+                checks[f"{{{n1}, {n2}}} (-)"] = (s.bracket(f1.pullback(Psi), f2.pullback(Psi))
+                                                - minus.bracket(s, f1, f2, s.Psi))
+        for n1, h in hs:
+            for n2, f in fs:
+                checks[f"{{{n1} o Phi, {n2} o Psi}}"] = s.bracket(h.pullback(Phi), f.pullback(Psi))
+    return checks
+

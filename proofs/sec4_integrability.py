@@ -320,3 +320,62 @@ def gram_commutes_with_psi_in_the_exceptional_cases(s):
     checks = {"P^T P + Psi^2/4": s.P.T @ s.P + s.Psi @ s.Psi / 4} if s.r == s.n else {"Psi (r = 1)": s.Psi}
     checks["{tr(G P^T P), <Psi, Psi>}"] = bracket_gram_psi(s)
     return checks
+
+
+# -- Noether integrals ----------------------------------------------------------------------
+
+def _phi_xi(t):
+    """Φ_ξ = <Φ, ξ>."""
+    return t.killing(t.Phi, t.xi)
+
+
+def _psi_eta(t):
+    """Ψ_η = <Ψ, η>."""
+    return t.killing(t.Psi, t.eta)
+
+
+def _gram(t):
+    """Σ g_ij (p_i, p_j) = tr(G PᵀP) for a generic r x r matrix G: all the functions (p_i, p_j) at once."""
+    return t.tr(t.generic("G", "r", "r") @ t.P.T @ t.P)
+
+
+def H_normal(t):
+    """(normal_metric) H₀ = ½<Φ, Φ> = h₀∘Φ, h₀ = ½<μ, μ>."""
+    return t.killing(t.Phi, t.Phi) / 2
+
+
+@claim("noether-normal-metric", paper=("bols-jov", "SO(n)-inv", "normal_metric"), kind="pb",
+       statement=r"\{\Phi^*(C^\infty(so(n))),C^\infty(T^*V_{n,r})^{SO(n)}\}=0:\ \{\Phi_\xi,\Psi_\eta\}="
+                 r"\{\Phi_\xi,(p_i,p_j)\}=\{\tr\Phi^4,(p_i,p_j)\}=0;\quad \{H_0,\Phi_\xi\}=\{H_0,\tr\Phi^4\}="
+                 r"\{H_0,\Psi_\eta\}=\{H_0,(p_i,p_j)\}=0")
+def noether_integrals_of_the_normal_metric(s):
+    """The proof of Theorem bols-jov: by the Noether theorem Φ*(C∞(so(n))) (Φ_ξ, tr Φ⁴) commutes with the SO(n)-invariant functions Ψ_ij, (p_i, p_j), and H₀ = ½<Φ, Φ> commutes with both sets (with Φ*(C∞(so(n))) because h ↦ h∘Φ is a morphism of Poisson structures and ½<μ, μ> is a Casimir)."""
+    trPhi4 = lambda t: power_trace(t, t.Phi, 4)   # noqa: E731
+    return {
+        "{Phi_xi, Psi_eta}": s.bracket(_phi_xi, _psi_eta),
+        "{Phi_xi, (p_i, p_j)}": s.bracket(_phi_xi, _gram),
+        "{tr Phi^4, Psi_eta}": s.bracket(trPhi4, _psi_eta),
+        "{tr Phi^4, (p_i, p_j)}": s.bracket(trPhi4, _gram),
+        "{H_0, Phi_xi}": s.bracket(H_normal, _phi_xi),
+        "{H_0, tr Phi^4}": s.bracket(H_normal, trPhi4),
+        "{H_0, Psi_eta}": s.bracket(H_normal, _psi_eta),
+        "{H_0, (p_i, p_j)}": s.bracket(H_normal, _gram),
+    }
+
+
+@claim("jensen-invariants-conserved", paper=("ET", "so(n)+so(r)", "EM"), kind="pb",
+       statement=r"f\in C^\infty(T^*V_{n,r})^{SO(n)\times SO(r)}:\ \{f,\Phi_\xi\}=\{f,\Psi_\eta\}=\{f,H_\kappa\}=0,"
+                 r"\quad f=\tr(P^TP)^2,\ \tr(P^TP\Psi^2),\ \tr\Psi^4")
+def jensen_flows_conserve_the_invariants(s):
+    """Theorem ET: the SO(n)×SO(r)-invariant functions (here tr(PᵀP)², tr(PᵀPΨ²), tr Ψ⁴) commute with Φ*(C∞(so(n))) and Ψ*(C∞(so(r))) and are integrals of the geodesic flows of every Jensen metric H_κ, so the Euclidean and the normal metric share the integrals (so(n)+so(r))."""
+    invariants = {
+        "tr(P^T P)^2": lambda t: power_trace(t, t.P.T @ t.P, 2),
+        "tr(P^T P Psi^2)": lambda t: t.tr(t.P.T @ t.P @ t.Psi @ t.Psi),
+        "tr Psi^4": lambda t: power_trace(t, t.Psi, 4),
+    }
+    checks = {}
+    for name, f in invariants.items():
+        checks[f"{{{name}, Phi_xi}}"] = s.bracket(f, _phi_xi)
+        checks[f"{{{name}, Psi_eta}}"] = s.bracket(f, _psi_eta)
+        checks[f"{{{name}, H_kappa}}"] = s.bracket(f, H_jensen)
+    return checks

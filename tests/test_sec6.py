@@ -213,3 +213,54 @@ def test_every_bracket_label_of_section_6_has_a_claim(catalog):
     used = {lab for c in _mine(catalog) for lab in c.paper}
     missing = sorted(lab for lab in listed - DIMENSION_LABELS if lab in paper and lab not in used)
     assert not missing, missing
+
+
+# -- the bracket claims added to §2 and §4 ------------------------------------------------------
+# (test_sec2.py and test_sec4.py list the claims of their sections; these three are tested here)
+
+import proofs.sec2_hamiltonian_flows as sec2   # noqa: E402
+import proofs.sec4_integrability as sec4       # noqa: E402
+
+
+def phi_poisson_with_minus_sign(s):
+    """Corrupted: Φ Poisson for the (−) bracket."""
+    minus = B.lie_poisson(B.SO_N, -1)
+    (n1, h1), (n2, h2) = sec2._so_n_functions()[:2]   # tr μ⁴ is a Casimir: it commutes for either sign
+    Phi = lambda t: t.Phi   # noqa: E731
+    return {"(-)": s.bracket(h1.pullback(Phi), h2.pullback(Phi)) - minus.bracket(s, h1, h2, s.Phi)}
+
+
+def gram_with_psi_squared(s):
+    """Corrupted Noether statement: (p_i, p_j) commute with <Ψ, Ψ> (the remark after ET: they do not)."""
+    return {"{gram, <Psi, Psi>}": s.bracket(sec4._gram, lambda t: t.killing(t.Psi, t.Psi))}
+
+
+def non_invariant_function_conserved(s):
+    """Corrupted: tr(PᵀAP), not SO(n)-invariant, is no integral of H_κ."""
+    return {"{tr P^T A P, H_kappa}": s.bracket(lambda t: t.tr(t.P.T @ t.A @ t.P), sec4.H_jensen)}
+
+
+ADDED = [
+    ("momentum-maps-poisson-nonlinear", phi_poisson_with_minus_sign, (3, 2)),
+    ("noether-normal-metric", gram_with_psi_squared, (3, 2)),
+    ("jensen-invariants-conserved", non_invariant_function_conserved, (3, 2)),
+]
+
+
+@pytest.mark.parametrize("cid, func, size", ADDED, ids=[c for c, _, _ in ADDED])
+def test_added_claims_hold_and_their_corruptions_fail(catalog, cid, func, size):
+    c = catalog.get(cid)
+    n, r = size
+    assert run_exact(c, n, r, SEED).verdict == "proved"
+    assert run_points(c, 4, 3, "modular", SEED).verdict == "checked"
+    assert run_exact(c, n, r, SEED, func=func).verdict == "fails"
+    for method in ("modular", "rational"):
+        res = run_points(c, n, r, method, SEED, func=func)
+        assert res.verdict == "fails" and res.witness["seed"] == SEED
+
+
+@pytest.mark.parametrize("cid", ["noether-normal-metric", "jensen-invariants-conserved"])
+def test_added_claims_are_proved_for_every_n_and_r(catalog, cid):
+    assert run_free(catalog.get(cid)).verdict == "proved"
+    corrupted = dict((c, f) for c, f, _ in ADDED)[cid]
+    assert run_free(catalog.get(cid), corrupted).verdict == "undecided"
