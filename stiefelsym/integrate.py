@@ -50,7 +50,7 @@ from scipy.linalg import expm
 
 __all__ = ["Flow", "LaxMatrix", "Trajectory", "make_flow", "custom_flow", "integrate", "FLOWS", "METHODS",
            "project_to_tangent_bundle", "constraint_errors", "expm_skew", "euclidean_geodesic", "canonical_geodesic",
-           "jensen_geodesic", "metric_beta", "random_point", "spectral_drift"]
+           "jensen_geodesic", "metric_beta", "random_point", "spectral_drift", "eigenvalue_drift", "dirac_vector_field"]
 
 FLOWS = ("neumann", "jensen", "manakov", "magnetic", "coupled")
 METHODS = ("dop853", "rattle", "rk4")
@@ -449,32 +449,67 @@ def _coupled_flow(n: int, r: int, kappa: float, A: Array, perturbed: bool) -> Fl
                 {"kappa": kappa, "perturbed": perturbed, "A": A}, ("C-neumann", "C-eq"))
 
 
-def custom_flow(rhs: Callable[[Array, Array], tuple[Array, Array]], *, n: int, r: int,
+def custom_flow(rhs: Callable[[Array, Array], tuple[Array, Array]] | None = None, *, n: int, r: int,
                 hamiltonian: Callable[[Array, Array], float] | None = None,
                 invariants: Mapping[str, Callable[[Array, Array], Any]] | None = None,
-                constraint: Callable[[Array, Array], float] | None = None, name: str = "custom") -> Flow:
-    """A user's flow: ``rhs(X, P) -> (dX/dt, dP/dt)`` on n x r matrices; optional Hamiltonian, named
-    invariants (X, P) -> array, and an extra constraint (X, P) -> residual norm to monitor."""
+                constraint: Callable[[Array, Array], float] | None = None,
+                lax: Mapping[str, Callable[[Array, Array, float], Any]] | None = None,
+                lambdas: Sequence[float] = (0.7, -1.3, 2.1),
+                potential: Callable[[Array], float] | None = None,
+                potential_gradient: Callable[[Array], Array] | None = None, name: str = "custom") -> Flow:
+    """A user's flow on T*V(n, r), on n x r matrices.
+
+    Either ``rhs(X, P) -> (dX/dt, dP/dt)``, or ``potential_gradient`` (X ↦ ∂V/∂X, optionally with
+    ``potential`` X ↦ V) for H = ½tr PᵀP + V(X): its Dirac flow is derived, and RATTLE applies.
+    Optional: a Hamiltonian, named invariants (X, P) -> array, an extra constraint (X, P) -> residual
+    norm, and Lax matrices {name: (X, P, λ) -> square matrix} whose spectra are followed at ``lambdas``."""
     _check_size(n, r)
-    if not callable(rhs):
+    if rhs is None and potential_gradient is None:
+        raise ValueError("give the flow as a callable (X, P) -> (dX, dP), or the potential gradient X -> dV/dX")
+    if rhs is not None and not callable(rhs):
         raise ValueError(f"a flow is a name ({', '.join(FLOWS)}) or a callable (X, P) -> (dX, dP), got {rhs!r}")
+    if potential_gradient is not None and not callable(potential_gradient):
+        raise ValueError(f"potential_gradient must be a callable X -> dV/dX, got {potential_gradient!r}")
 
-    def wrapped(X: Array, P: Array) -> tuple[Array, Array]:
-        out = rhs(X[0], P[0])
-        try:
-            Xd, Pd = out
-        except (TypeError, ValueError):
-            raise ValueError("the flow callable must return a pair (dX/dt, dP/dt)") from None
-        Xd, Pd = np.asarray(Xd, float), np.asarray(Pd, float)
-        if Xd.shape != (n, r) or Pd.shape != (n, r):
-            raise ValueError(f"the flow callable returned shapes {Xd.shape}, {Pd.shape}; expected ({n}, {r}) each")
-        return Xd[None], Pd[None]
+    def checked(what: str, M: Any) -> Array:
+        M = np.asarray(M, float)
+        if M.shape != (n, r):
+            raise ValueError(f"{what} returned shape {M.shape}; expected ({n}, {r})")
+        return M
 
-    H = (lambda X, P: float(hamiltonian(X[0], P[0]))) if hamiltonian else None
+    grad = None
+    if potential_gradient is not None:
+        user_grad = potential_gradient
+
+        def grad(X: Array) -> Array:
+            return np.stack([checked("potential_gradient", user_grad(X[i])) for i in range(X.shape[0])])
+
+    if rhs is not None:
+        def wrapped(X: Array, P: Array) -> tuple[Array, Array]:
+            out = rhs(X[0], P[0])
+            try:
+                Xd, Pd = out
+            except (TypeError, ValueError):
+                raise ValueError("the flow callable must return a pair (dX/dt, dP/dt)") from None
+            return checked("the flow callable", Xd)[None], checked("the flow callable", Pd)[None]
+    else:
+        assert grad is not None
+        g = grad
+        wrapped = dirac_vector_field(lambda X, P: (g(X), P))
+
+    if hamiltonian is not None:
+        H = lambda X, P: float(hamiltonian(X[0], P[0]))  # noqa: E731
+    elif rhs is None:
+        V = potential
+        H = (lambda X, P: 0.5 * float(np.sum(P[0] * P[0])) + float(V(X[0]))) if V is not None else None  # noqa: E731
+    else:
+        H = None
     inv = {k: (lambda f: (lambda X, P: np.atleast_2d(np.asarray(f(X[0], P[0]), float))))(f)
            for k, f in (invariants or {}).items()}
     con = (lambda X, P: float(constraint(X[0], P[0]))) if constraint else None
-    return Flow(name, n, r, wrapped, 1, H, (), inv, None, 0.0, {}, (), con)
+    laxes = tuple(LaxMatrix(k, (), (lambda f: (lambda X, P, lam: np.asarray(f(X[0], P[0], lam), float)))(f),
+                            tuple(float(x) for x in lambdas)) for k, f in (lax or {}).items())
+    return Flow(name, n, r, wrapped, 1, H, laxes, inv, grad, 0.0, {}, (), con)
 
 
 # --------------------------------------------------------------------------- steppers
@@ -545,7 +580,8 @@ class Trajectory:
     ``X``, ``P`` have shape (k, points, n, r); errors are arrays of length k: ``position_error``
     ‖XᵀX − I‖, ``momentum_error`` ‖XᵀP + PᵀX‖, ``hamiltonian_error`` |H − H(0)|/max(1, |H(0)|),
     ``lax_drift[name]`` the largest change of a power trace tr L(λ)ᵏ over the λ's (see
-    :func:`spectral_drift`), ``invariant_drift[name]`` ‖I(t) − I(0)‖/max(1, ‖I(0)‖)."""
+    :func:`spectral_drift`), ``lax_eigenvalue_drift[name]`` the largest change of a matched eigenvalue
+    (see :func:`eigenvalue_drift`), ``invariant_drift[name]`` ‖I(t) − I(0)‖/max(1, ‖I(0)‖)."""
 
     flow: str
     method: str
@@ -562,6 +598,7 @@ class Trajectory:
     constraint_error: Array | None
     seconds: float
     evaluations: int
+    lax_eigenvalue_drift: dict[str, Array] = field(default_factory=dict)
 
     def max_errors(self) -> dict[str, float]:
         """The largest error of each kind along the trajectory."""
@@ -597,6 +634,17 @@ def spectral_drift(L0: Array, L1: Array) -> float:
     return float(worst)
 
 
+def eigenvalue_drift(L0: Array, L1: Array) -> float:
+    """The largest distance between the eigenvalues of L1 and those of L0, matched optimally (an
+    assignment problem; sorting complex eigenvalues is not stable), relative to max(1, spectral radius
+    of L0).  Near a multiple eigenvalue this is of the order of the square root of the error."""
+    from scipy.optimize import linear_sum_assignment
+    e0, e1 = np.linalg.eigvals(L0), np.linalg.eigvals(L1)
+    cost = np.abs(e0[:, None] - e1[None, :])
+    i, j = linear_sum_assignment(cost)
+    return float(cost[i, j].max() / max(1.0, np.abs(e0).max()))
+
+
 def _diagnostics(flow: Flow, X: Array, P: Array) -> dict[str, Any]:
     e1 = np.empty(len(X))
     e2 = np.empty(len(X))
@@ -606,14 +654,19 @@ def _diagnostics(flow: Flow, X: Array, P: Array) -> dict[str, Any]:
     if flow.hamiltonian is not None:
         H = np.array([flow.hamiltonian(X[k], P[k]) for k in range(len(X))])
         out["hamiltonian"] = np.abs(H - H[0]) / max(1.0, abs(H[0]))
-    lax = {}
+    lax, eig = {}, {}
     for lx in flow.lax:
         L0 = [lx.matrix(X[0], P[0], lam) for lam in lx.lambdas]
         d = np.zeros(len(X))
+        e = np.zeros(len(X))
         for k in range(1, len(X)):
-            d[k] = max(spectral_drift(L0[j], lx.matrix(X[k], P[k], lam)) for j, lam in enumerate(lx.lambdas))
+            Lk = [lx.matrix(X[k], P[k], lam) for lam in lx.lambdas]
+            d[k] = max(spectral_drift(a, b) for a, b in zip(L0, Lk))
+            e[k] = max(eigenvalue_drift(a, b) for a, b in zip(L0, Lk))
         lax[lx.name] = d
+        eig[lx.name] = e
     out["lax"] = lax
+    out["eig"] = eig
     inv = {}
     for name, f in flow.invariants.items():
         I0 = np.asarray(f(X[0], P[0]), float)
@@ -760,7 +813,7 @@ def integrate(X0: Any, P0: Any, flow: Any, t_span: Sequence[float] | float, *, m
     diag = _diagnostics(fl, Xs, Ps)
     return Trajectory(fl.label, method, tol if method == "dop853" or step is None else None, used_step, ts, Xs, Ps,
                       diag["position"], diag["momentum"], diag.get("hamiltonian"), diag["lax"], diag["invariants"],
-                      diag.get("constraint"), seconds, evals)
+                      diag.get("constraint"), seconds, evals, diag["eig"])
 
 
 # --------------------------------------------------------------------------- closed forms (Edelman–Arias–Smith)

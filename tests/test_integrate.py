@@ -237,3 +237,19 @@ def test_flows_command_refuses_an_unwritable_report_dir(run, tmp_path):
     res = run("flows", "--quick", "--report-dir", "f/sub")
     assert res.exit_code == 2
     assert "cannot write" in res.output
+
+
+def test_custom_potential_flow_gets_the_dirac_field_and_rattle():
+    """A user's H = ½tr PᵀP + V(X): the Dirac flow is derived; with V the Neumann potential it is (NE_XP),
+    and RATTLE applies; a user Lax matrix is followed."""
+    X, P = point()
+    grad = lambda X: A4 @ X                                  # noqa: E731
+    V = lambda X: 0.5 * float(np.trace(X.T @ A4 @ X))        # noqa: E731
+    L = lambda X, P, lam: lam * (P @ X.T - X @ P.T) + X @ X.T - lam ** 2 * A4   # noqa: E731
+    fl = ig.custom_flow(n=4, r=2, potential=V, potential_gradient=grad, lax={"LA2": L})
+    ref = ig.make_flow("neumann", 4, 2, kappa=-0.5, A=A4)
+    assert np.allclose(fl.rhs(X[None], P[None])[1], ref.rhs(X[None], P[None])[1], atol=1e-13)
+    t = ig.integrate(X, P, fl, 2.0, method="rattle", step=0.01, samples=5)
+    errs = t.max_errors()
+    assert errs["position"] < 1e-14 and errs["hamiltonian"] < 1e-3 and errs["lax: LA2"] < 1e-3
+    assert t.lax_eigenvalue_drift["LA2"].max() < 1e-2
