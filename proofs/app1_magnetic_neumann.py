@@ -4,7 +4,7 @@ from __future__ import annotations
 from stiefelsym import Rank, admissible, claim, comm
 from stiefelsym import twisted
 
-from .sec5_neumann import H_neumann_euclidean, H_neumann_normal, cond_XP, flow_N0
+from .sec5_neumann import H_neumann_euclidean, H_neumann_normal, cond_XP
 
 SECTION = "A1"
 
@@ -24,7 +24,7 @@ def unit(s, i):
 
 
 def col(s, i):
-    """e_{i+1} = X E_{i+1}, or p_{i+1} for P."""
+    """e_{i+1} = X E_{i+1}."""
     return s.X @ unit(s, i)
 
 

@@ -19,6 +19,7 @@ constant F and refuses them (NeedsCoordinates), so its method answers ``undecide
 """
 from __future__ import annotations
 
+import copy
 from typing import Any, Callable, Mapping
 
 from .fields import DegenerateError
@@ -202,12 +203,13 @@ def at_point(s, X: Mat, P: Mat) -> Scene:
     gradients, brackets and flows, the twisted ones included, are taken at (X, P).  (X, P) must lie on
     T*V (a claim checks the constraints it relies on)."""
     s = _scene(s, "a scene at another point")
+    if s.realization != "standard":
+        raise ValueError("a scene at another point is offered for the realization (cond_XP) only")
     for M, name in ((X, "X"), (P, "P")):
         if not isinstance(M, Mat) or M._a.shape != (s.n, s.r):
             raise TypeError(f"{name} must be an n x r matrix of the scene")
-    other = Scene(s.n, s.r, s.field, chart=s.chart, rng=s.rng, component=s.component,
-                  realization=s.realization, options=s.options, tracker=s.tracker)
-    other.params = s.params
+    other = copy.copy(s)            # the same problem: field, chart, parameters, record, options
+    other._cache = {}
     other._cache["point"] = (Mat._wrap(X._a.copy(), s.field, ("n", "r"), s.tracker, X._coords),
                              Mat._wrap(P._a.copy(), s.field, ("n", "r"), s.tracker, P._coords))
     return other
