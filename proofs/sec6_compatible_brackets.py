@@ -2,7 +2,7 @@
 from __future__ import annotations
 
 from stiefelsym import admissible, claim, comm
-from stiefelsym.brackets import (GL_N, SO_R, casimir_residual, compatibility, dirac, lambda1, lambda2,
+from stiefelsym.brackets import (SO_R, MatrixFunction, casimir_residual, compatibility, dirac, lambda1, lambda2,
                                  lie_poisson, linear, pencil, poisson_checks, poisson_map_residual, quadratic,
                                  skew, sym, trace_power)
 
@@ -139,10 +139,10 @@ def pencil_is_poisson_and_compatible(s):
 @claim("pencil-casimirs", paper=("central", "LAMBDA12"), kind="pb", exact_max_n=3,
        equivariance="no point of T*V enters: the pencil is evaluated at a generic x in gl(n)",
        statement=r"\Lambda_{\lambda_1,\lambda_2}\big(\nabla\tr(\sqrt{\tfrac{\lambda_2}{\lambda_1+\lambda_2}}h+v-"
-                 r"\tfrac{\lambda_2}{\lambda_1+\lambda_2}A)^k,\cdot\big)=0;\quad "
+                 r"\tfrac{\lambda_2}{\lambda_1+\lambda_2}A)^k,\cdot\big)=0,\ \Lambda_{\lambda_1,\lambda_2}\cong gl(n);\quad "
                  r"\{\tr(\lambda h+v-\lambda^2A)^k,\tr(\mu h+v-\mu^2A)^m\}_{\Lambda_{\lambda_1,\lambda_2}}=0,\ k,m\le3")
 def pencil_casimirs_commute(s):
-    """The functions tr(√(λ₂/(λ₁+λ₂))h + v − λ₂/(λ₁+λ₂)A)^k are Casimirs of Λ_{λ1,λ2} = λ₁Λ₁ + λ₂Λ₂ (written with λ₁ = σ(1 − c²), λ₂ = σc², which covers every λ₂/(λ₁+λ₂) > 0), and the functions (central) tr(λh + v − λ²A)^k commute for every bracket of the pencil (k, m = 1, 2, 3, at a generic point of gl(n))."""
+    """The functions tr(√(λ₂/(λ₁+λ₂))h + v − λ₂/(λ₁+λ₂)A)^k are Casimirs of Λ_{λ1,λ2} = λ₁Λ₁ + λ₂Λ₂ (written with λ₁ = σ(1 − c²), λ₂ = σc², which covers every λ₂/(λ₁+λ₂) > 0), because x ↦ ch + v − c²A maps Λ_{λ1,λ2} to σc times the Lie–Poisson bracket of gl(n), and the functions (central) tr(λh + v − λ²A)^k commute for every bracket of the pencil (k, m = 1, 2, 3, at a generic point of gl(n))."""
     n = s.n
     c = lambda t: t.scalar("c")                                      # noqa: E731
     sigma = lambda t: t.scalar("sigma")                              # noqa: E731
@@ -157,7 +157,21 @@ def pencil_casimirs_commute(s):
             if m >= k:
                 checks[f"{{tr L(lambda)^{k}, tr L(mu)^{m}}} in the pencil"] = T.bracket(
                     s, central(k, lambda t: t.lam), central(m, mu), x)
+    # why: ψ(x) = ch + v − c²A maps Λ_{λ1,λ2} to (λ₁+λ₂)c times the Lie–Poisson bracket of gl(n)
+    a = gl_generic(s, "a")
+    lin_a = MatrixFunction(lambda t, y: t.killing(psi_pencil(t, y, c(t)), a),
+                           lambda t, y: skew(a) * c(t) + sym(a), "<psi, a>")
+    lin_b = MatrixFunction(lambda t, y: t.killing(psi_pencil(t, y, c(t)), b),
+                           lambda t, y: skew(b) * c(t) + sym(b), "<psi, b>")
+    checks["{<psi, a>, <psi, b>} - (lambda_1 + lambda_2) c <psi, [a, b]>"] = (
+        T_c.bracket(s, lin_a, lin_b, x) - sigma(s) * c(s) * s.killing(psi_pencil(s, x, c(s)), comm(a, b)))
     return checks
+
+
+def psi_pencil(s, x, c):
+    """ψ(x) = ch + v − c²A (x = h + v): the isomorphism of (gl(n), Λ_{λ1,λ2}), c² = λ₂/(λ₁+λ₂), with
+    gl(n) and its Lie–Poisson bracket times (λ₁+λ₂)c, which carries the Casimirs tr y^k to (central)."""
+    return skew(x) * c + sym(x) - (c * c) * s.A
 
 
 # -- the Poisson map Θ ------------------------------------------------------------------
