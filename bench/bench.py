@@ -1,27 +1,48 @@
-"""Side-by-side timings on the big Lax equation LA1 (Theorem Neumann_LA).
+"""The benchmark targets of issue 7, measured side by side in one run.
 
-Baseline: naive sympy -- substitute the Cayley parametrization of T*V(n, r)
-into the residual dL/dt - [M, L] along the printed flow (No) and call
-``simplify`` on every entry.  Against it, in the same process run: the
-engine's exact (equivariance-reduced symbolic), rational, modular and float
-methods, and the dimension-free rewriting backend when it is available.
+Every target is printed with its measured value, its goal and the ratio measured/goal, and
+written to ``reports/bench.json`` and ``reports/bench.md``.  The engine is reached through its
+public entry points only (``stiefelsym.runner``: ``run_one`` in this process, ``verify`` in
+budgeted worker processes; the ``stiefelsym`` command in subprocesses), so the numbers follow
+the engine as it improves.  A target the engine cannot run yet (a size refused by the current
+size caps, a run past its time budget) is reported as "not yet" with the reason, never a crash.
 
-    python bench/bench.py                 # (2,1) and (3,1)
-    python bench/bench.py --large         # also (3,2) (the baseline needs minutes)
-    python bench/bench.py --sizes 4,2 5,3 --no-baseline
+Baseline: naive sympy -- substitute the Cayley parametrization of T*V(n, r) into the residual
+dL/dt - [M, L] of the big Lax equation LA1 along the printed flow (No) and call ``simplify``
+on every entry.  Against it, in the same run: the engine's exact, rational, modular and float
+methods and the dimension-free proof.
+
+    python bench/bench.py                  # every target (make verify at n <= 6 included: minutes)
+    python bench/bench.py --quick          # without the make verify run (and its peak memory)
+    python bench/bench.py --sizes 2,1 3,1  # sizes of the side-by-side LA1 table
 """
 from __future__ import annotations
 
 import argparse
+import json
+import os
+import platform
+import re
+import resource
+import subprocess
 import sys
+import tempfile
 import time
+from datetime import datetime, timezone
 from pathlib import Path
+from typing import Any, Callable
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))
 
 from stiefelsym import admissible, comm  # noqa: E402
 from stiefelsym.claims import Claim, Size  # noqa: E402
 from stiefelsym.runner import run_one  # noqa: E402
+
+GIB = 1 << 30
+#: the §3 claims that are flows (derived Dirac flow against the printed one) or their multipliers
+SEC3_FLOWS = ("euclidean-flow", "euclidean-multipliers", "submersion-flow", "normal-flow", "metric-flow")
+STIEFELSYM = str(Path(sys.executable).with_name("stiefelsym"))
 
 
 def neumann_flow(s):
@@ -34,7 +55,7 @@ def neumann_flow(s):
 
 def la1_residual(s):
     """dL/dt - [M, L] for L = lambda Phi + X X^T - lambda^2 A, M = Phi - lambda A."""
-    L = lambda t: t.lam * t.Phi + t.X @ t.X.T - t.lam * t.lam * t.A
+    L = lambda t: t.lam * t.Phi + t.X @ t.X.T - t.lam * t.lam * t.A  # noqa: E731
     M = s.Phi - s.lam * s.A
     return {"LA1": s.d(L, neumann_flow(s)) - comm(M, L(s))}
 
@@ -44,8 +65,9 @@ LA1 = Claim(id="LA1", paper=("LA1",), kind="lax", section="5", func=la1_residual
 
 
 def naive_sympy(n: int, r: int) -> float:
+    """CPU seconds of the naive sympy proof of LA1 at (n, r)."""
     import sympy as sp
-    t0 = time.perf_counter()
+    t0 = time.process_time()
     S = sp.zeros(n, n)
     for i in range(n):
         for j in range(i + 1, n):
@@ -75,40 +97,315 @@ def naive_sympy(n: int, r: int) -> float:
         for j in range(n):
             if sp.simplify(R[i, j]) != 0:
                 raise AssertionError("naive baseline: nonzero residual")
-    return time.perf_counter() - t0
+    return time.process_time() - t0
 
 
-def engine(method: str, n: int, r: int) -> tuple[float, str]:
-    res = run_one(LA1, Size(n, r), method, seed=0)
-    return res.seconds, res.verdict
+# --------------------------------------------------------------------------- helpers
+
+class NotYet(Exception):
+    """The engine cannot run this target yet (a size cap, a time budget); the reason."""
+
+
+def _catalog():
+    from stiefelsym.claims import load_catalog
+    return load_catalog("proofs")
+
+
+def _budgeted(claim: Claim, n: int, r: int | None, method: str, timeout: float) -> Any:
+    """One run in a budgeted worker (runner.verify); NotYet when refused or not decided in time."""
+    from stiefelsym.runner import BudgetError, verify
+    from stiefelsym.scene import SizeError
+    try:
+        results = verify([claim], sizes=None if r is None else [Size(n, r)], methods=(method,), timeout=timeout)
+    except (BudgetError, SizeError) as exc:
+        raise NotYet(f"refused by the engine: {exc}") from None
+    res = next((x for x in results if x.variant is None and (r is None or (x.n, x.r) == (n, r))), None)
+    if res is None:
+        raise NotYet("no result")
+    if res.verdict in ("inconclusive", "error"):
+        raise NotYet(f"{res.verdict}: {(res.message or '')[:160]}")
+    return res
+
+
+def _points(res: Any) -> int:
+    """The number of random points a randomized check used (from its certificate)."""
+    m = re.search(r"(\d+) independent points", res.certificate or "")
+    k = int(m.group(1)) if m else 1
+    return k * (2 if "2 components" in (res.certificate or "") else 1)
+
+
+def _wall(cmd: list[str], repeat: int = 3) -> tuple[float, subprocess.CompletedProcess]:
+    best, out = None, None
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        out = subprocess.run(cmd, capture_output=True, text=True, cwd=ROOT)
+        t = time.perf_counter() - t0
+        best = t if best is None else min(best, t)
+    return best, out
+
+
+# --------------------------------------------------------------------------- the targets
+
+class Bench:
+    def __init__(self) -> None:
+        self.rows: list[dict[str, Any]] = []
+
+    def target(self, name: str, goal: float, unit: str, better: str, fn: Callable[[], tuple[float, str]]) -> None:
+        """Measure one target: fn() -> (value, note); ``better`` is "lower" or "higher"."""
+        t0 = time.perf_counter()
+        try:
+            value, note = fn()
+            status = "met" if (value <= goal if better == "lower" else value >= goal) else "not met"
+        except NotYet as exc:
+            value, note, status = None, str(exc), "not yet"
+        except Exception as exc:  # noqa: BLE001 - a benchmark never crashes: it says what happened
+            value, note, status = None, f"{type(exc).__name__}: {exc}", "not yet"
+        row = {"target": name, "measured": value, "goal": goal, "unit": unit, "better": better,
+               "ratio": None if value is None else value / goal, "status": status, "note": note,
+               "bench_seconds": round(time.perf_counter() - t0, 2)}
+        self.rows.append(row)
+        print(_line(row), flush=True)
+
+
+def _fmt(v: float | None, unit: str) -> str:
+    if v is None:
+        return "-"
+    if unit == "x":
+        return f"{v:,.0f}x"
+    if unit == "GiB":
+        return f"{v:.3f} GiB"
+    if unit == "ms":
+        return f"{v:.3f} ms"
+    return f"{v:.3f} s"
+
+
+def _line(row: dict[str, Any]) -> str:
+    op = "<=" if row["better"] == "lower" else ">="
+    ratio = "-" if row["ratio"] is None else f"{row['ratio']:.3g}"
+    return (f"{row['target']:<52} {_fmt(row['measured'], row['unit']):>14}  goal {op} "
+            f"{_fmt(row['goal'], row['unit']):>12}  ratio {ratio:>9}  {row['status']:<8} {row['note']}")
+
+
+def make_verify(timeout: float = 1800.0) -> tuple[float, float, str]:
+    """`make verify` restricted to n <= 6: wall seconds and peak RSS (GiB) of the process tree."""
+    sizes = [f"{n},{r}" for n in range(1, 7) for r in range(1, n + 1)]
+    with tempfile.TemporaryDirectory() as d:
+        cmd = [STIEFELSYM, "verify", "--jobs", os.environ.get("JOBS", "2"), "--report-dir", d, "--format", "json"]
+        for s in sizes:
+            cmd += ["--size", s]
+        before = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
+        t0 = time.perf_counter()
+        try:
+            out = subprocess.run(cmd, capture_output=True, text=True, cwd=ROOT, timeout=timeout)
+        except subprocess.TimeoutExpired:
+            raise NotYet(f"did not finish within {timeout:.0f} s") from None
+        wall = time.perf_counter() - t0
+        peak_kib = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
+        if out.returncode == 2:
+            raise NotYet(f"refused: {out.stderr.strip().splitlines()[-1] if out.stderr.strip() else '?'}")
+        try:
+            doc = json.loads(out.stdout)
+            results = doc["results"]
+        except (ValueError, KeyError):
+            raise NotYet(f"no results (exit {out.returncode})") from None
+    grades: dict[str, int] = {}
+    for r in results:
+        grades[r["verdict"]] = grades.get(r["verdict"], 0) + 1
+    unexpected = sum(1 for r in results if not r.get("expected"))
+    note = (f"{len(results)} runs: " + ", ".join(f"{k} {v}" for k, v in sorted(grades.items()))
+            + f"; {unexpected} unexpected; exit {out.returncode}")
+    peak = max(peak_kib, before) * 1024 / GIB
+    return wall, peak, note
 
 
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--sizes", nargs="*", default=None, help="sizes n,r (default: 2,1 3,1)")
-    ap.add_argument("--large", action="store_true", help="also (3,2): the sympy baseline takes minutes")
+    ap.add_argument("--quick", action="store_true", help="skip the make verify run (minutes) and its peak memory")
+    ap.add_argument("--sizes", nargs="*", default=None, help="sizes n,r of the side-by-side LA1 table (2,1 3,1)")
     ap.add_argument("--no-baseline", action="store_true", help="skip the naive sympy baseline")
-    ap.add_argument("--repeat", type=int, default=3, help="engine runs per method (best time is kept)")
+    ap.add_argument("--repeat", type=int, default=3, help="engine runs per timing (the best is kept)")
+    ap.add_argument("--report-dir", default=str(ROOT / "reports"), help="where bench.json and bench.md go")
+    ap.add_argument("--per-run", type=float, default=20.0, help="time budget of one run at the large sizes (s)")
     args = ap.parse_args(argv)
+    started = datetime.now(timezone.utc)
+    bench = Bench()
+    print(f"{'target':<52} {'measured':>14}  {'goal':>15}  {'ratio':>15}  status   note")
+
+    # 1. make verify (n <= 6) and its peak memory: first, so that RUSAGE_CHILDREN is its own
+    if args.quick:
+        bench.rows.append({"target": "make verify, n <= 6, 2 jobs (wall)", "measured": None, "goal": 60.0,
+                           "unit": "s", "better": "lower", "ratio": None, "status": "skipped",
+                           "note": "--quick", "bench_seconds": 0})
+        bench.rows.append({"target": "make verify peak memory (max RSS)", "measured": None, "goal": 2.0,
+                           "unit": "GiB", "better": "lower", "ratio": None, "status": "skipped",
+                           "note": "--quick", "bench_seconds": 0})
+        for row in bench.rows:
+            print(_line(row))
+    else:
+        holder: dict[str, Any] = {}
+
+        def mv() -> tuple[float, str]:
+            wall, peak, note = make_verify()
+            holder.update(peak=peak, note=note)
+            return wall, note
+        bench.target("make verify, n <= 6, 2 jobs (wall)", 60.0, "s", "lower", mv)
+        bench.target("make verify peak memory (max RSS)", 2.0, "GiB", "lower",
+                     lambda: (holder["peak"], "getrusage(RUSAGE_CHILDREN).ru_maxrss") if "peak" in holder
+                     else (_ for _ in ()).throw(NotYet("make verify did not run")))
+
+    # 2. LA1 exact at (3,1) against the naive sympy baseline (CPU time)
+    base: dict[tuple[int, int], float] = {}
+
+    def speedup() -> tuple[float, str]:
+        if args.no_baseline:
+            raise NotYet("--no-baseline")
+        base[(3, 1)] = naive_sympy(3, 1)
+        best = None
+        for _ in range(args.repeat):
+            t0 = time.process_time()
+            res = run_one(LA1, Size(3, 1), "exact", seed=0)
+            t = time.process_time() - t0
+            if res.verdict != "proved":
+                raise NotYet(f"exact LA1 (3,1): {res.verdict} {res.message[:120]}")
+            best = t if best is None else min(best, t)
+        return base[(3, 1)] / max(best, 1e-9), f"sympy {base[(3, 1)]:.2f} s CPU, engine {best * 1e3:.3f} ms CPU"
+    bench.target("LA1 exact (3,1): speed-up over naive sympy (CPU)", 100000.0, "x", "higher", speedup)
+
+    # 3. exact LA1 and every §3 flow claim at n = 12, every r
+    catalog = _catalog()
+
+    def exact12(claim: Claim) -> Callable[[], tuple[float, str]]:
+        def run() -> tuple[float, str]:
+            worst, where = 0.0, None
+            for r in range(1, 13):
+                if not claim.sizes.admits(12, r):
+                    continue
+                res = _budgeted(claim, 12, r, "exact", args.per_run)
+                if res.verdict != "proved":
+                    raise NotYet(f"(12,{r}): {res.verdict}")
+                if res.seconds >= worst:
+                    worst, where = res.seconds, r
+            return worst, f"slowest r = {where}; all proved"
+        return run
+    bench.target("exact LA1 at n = 12, slowest r", 1.0, "s", "lower", exact12(LA1))
+    for cid in SEC3_FLOWS:
+        try:
+            c = catalog.get(cid)
+        except KeyError:
+            continue
+        bench.target(f"exact {cid} at n = 12, slowest r", 1.0, "s", "lower", exact12(c))
+
+    # 4. a modular evaluation of a Lax claim, per point, at n = 8 and n = 100
+    def modular(n: int, r: int) -> Callable[[], tuple[float, str]]:
+        def run() -> tuple[float, str]:
+            res = _budgeted(LA1, n, r, "modular", args.per_run if n <= 12 else 4 * args.per_run)
+            k = _points(res)
+            return 1e3 * res.seconds / k, f"{res.verdict}, {k} points in {res.seconds:.3f} s (degree bound included)"
+        return run
+    bench.target("modular LA1 per point, (8,4)", 1.0, "ms", "lower", modular(8, 4))
+    bench.target("modular LA1 per point, (100,50)", 50.0, "ms", "lower", modular(100, 50))
+
+    # 5. a float check of a Lax claim at n = 200
+    def float200() -> tuple[float, str]:
+        res = _budgeted(LA1, 200, 100, "float", 4 * args.per_run)
+        return 1e3 * res.seconds, f"{res.verdict}; {(res.certificate or '')[:100]}"
+    bench.target("float LA1 check, (200,100)", 10.0, "ms", "lower", float200)
+
+    # 6. the dimension-free proof of LA1, warm
+    def free() -> tuple[float, str]:
+        res = run_one(LA1, None, "free", seed=0)
+        if res.verdict != "proved":
+            raise NotYet(f"free LA1: {res.verdict} {res.message[:120]}")
+        best = None
+        for _ in range(max(5, args.repeat)):
+            t0 = time.perf_counter()
+            run_one(LA1, None, "free", seed=0)
+            t = time.perf_counter() - t0
+            best = t if best is None else min(best, t)
+        return 1e3 * best, "proved for all n, r; best of warm runs (certificate check included)"
+    bench.target("dimension-free proof of LA1, warm", 0.5, "ms", "lower", free)
+
+    # 7. start-up
+    def startup_list() -> tuple[float, str]:
+        t, out = _wall([STIEFELSYM, "list"])
+        if out.returncode:
+            raise NotYet(f"exit {out.returncode}")
+        return t, "wall time of the whole command, best of 3"
+    bench.target("start-up: stiefelsym list", 0.3, "s", "lower", startup_list)
+
+    def startup_run() -> tuple[float, str]:
+        t, out = _wall([STIEFELSYM, "verify", "neumann-flow", "--size", "2,1", "--method", "modular",
+                        "--no-report", "--format", "json"])
+        if out.returncode:
+            raise NotYet(f"exit {out.returncode}")
+        ran = sum(r["seconds"] for r in json.loads(out.stdout)["results"])
+        return t - ran, f"wall {t:.3f} s minus the run's own {ran:.3f} s, best of 3"
+    bench.target("start-up: a one-claim run", 0.3, "s", "lower", startup_run)
+
+    # side by side: LA1 under every method against the baseline, in this run
     sizes = [tuple(map(int, s.split(","))) for s in args.sizes] if args.sizes else [(2, 1), (3, 1)]
-    if args.large:
-        sizes.append((3, 2))
-    methods = ["exact", "modular", "rational", "float", "free"]
-    print("LA1 residual, one process run; times in seconds (best of "
-          f"{args.repeat} for the engine); ratio = baseline / method")
-    print(f"{'size':>7} {'method':>9} {'verdict':>12} {'seconds':>10} {'ratio':>10}")
+    side: list[dict[str, Any]] = []
+    print("\nLA1 side by side (CPU seconds, best of %d for the engine); ratio = baseline / method" % args.repeat)
+    print(f"{'size':>7} {'method':>9} {'verdict':>12} {'seconds':>10} {'ratio':>12}")
     for n, r in sizes:
-        base = None if args.no_baseline else naive_sympy(n, r)
-        if base is not None:
-            print(f"{f'({n},{r})':>7} {'sympy':>9} {'proved':>12} {base:>10.3f} {'1':>10}")
-        for m in methods:
+        b = None if args.no_baseline else base.get((n, r)) or naive_sympy(n, r)
+        if b is not None:
+            print(f"{f'({n},{r})':>7} {'sympy':>9} {'proved':>12} {b:>10.3f} {'1':>12}")
+            side.append({"size": f"({n},{r})", "method": "naive sympy", "verdict": "proved", "seconds": b, "ratio": 1.0})
+        for m in ("exact", "modular", "rational", "float", "free"):
             best, verdict = None, ""
             for _ in range(args.repeat):
-                t, verdict = engine(m, n, r)
+                t0 = time.process_time()
+                res = run_one(LA1, None if m == "free" else Size(n, r), m, seed=0)
+                t = time.process_time() - t0
+                verdict = res.verdict
                 best = t if best is None else min(best, t)
-            ratio = f"{base / best:.0f}x" if base is not None and best > 0 else "-"
-            print(f"{f'({n},{r})':>7} {m:>9} {verdict:>12} {best:>10.4f} {ratio:>10}")
+            ratio = b / best if b is not None and best > 0 else None
+            side.append({"size": f"({n},{r})", "method": m, "verdict": verdict, "seconds": best, "ratio": ratio})
+            print(f"{f'({n},{r})':>7} {m:>9} {verdict:>12} {best:>10.5f} "
+                  f"{('%.0fx' % ratio) if ratio else '-':>12}")
+
+    doc = {"generated": started.strftime("%Y-%m-%d %H:%M:%S UTC"), "platform": platform.platform(terse=True),
+           "python": platform.python_version(), "cpus": os.cpu_count(), "quick": args.quick,
+           "command": "python bench/bench.py" + (" --quick" if args.quick else ""),
+           "commit": _commit(), "targets": bench.rows, "side_by_side": side}
+    out_dir = Path(args.report_dir)
+    out_dir.mkdir(parents=True, exist_ok=True)
+    (out_dir / "bench.json").write_text(json.dumps(doc, indent=1) + "\n", encoding="utf-8")
+    (out_dir / "bench.md").write_text(markdown(doc), encoding="utf-8")
+    met = sum(1 for r in bench.rows if r["status"] == "met")
+    print(f"\n{met} of {len(bench.rows)} targets met; {out_dir / 'bench.json'}, {out_dir / 'bench.md'}")
     return 0
+
+
+def _commit() -> str | None:
+    try:
+        out = subprocess.run(["git", "rev-parse", "--short=12", "HEAD"], capture_output=True, text=True, cwd=ROOT,
+                             timeout=5)
+        return out.stdout.strip() or None
+    except (OSError, subprocess.SubprocessError):
+        return None
+
+
+def markdown(doc: dict[str, Any]) -> str:
+    lines = ["# Benchmark: the targets of issue 7", "",
+             f"Generated {doc['generated']} by `{doc['command']}` (commit {doc['commit']}) on {doc['platform']}, "
+             f"{doc['cpus']} CPUs.  ratio = measured / goal (a time goal is met at ratio <= 1, the speed-up goal "
+             "at ratio >= 1).", "",
+             "| target | measured | goal | ratio | status | note |", "| --- | ---: | ---: | ---: | --- | --- |"]
+    for r in doc["targets"]:
+        op = "≤" if r["better"] == "lower" else "≥"
+        ratio = "-" if r["ratio"] is None else f"{r['ratio']:.3g}"
+        lines.append(f"| {r['target']} | {_fmt(r['measured'], r['unit'])} | {op} {_fmt(r['goal'], r['unit'])} | "
+                     f"{ratio} | {r['status']} | {str(r['note']).replace('|', '/')} |")
+    if doc["side_by_side"]:
+        lines += ["", "## LA1 side by side", "", "CPU seconds in one process run (best of the repeats for the engine); "
+                  "ratio = naive sympy / method.", "", "| size | method | verdict | seconds | ratio |",
+                  "| --- | --- | --- | ---: | ---: |"]
+        for s in doc["side_by_side"]:
+            ratio = "-" if s["ratio"] is None else f"{s['ratio']:,.0f}x"
+            lines.append(f"| {s['size']} | {s['method']} | {s['verdict']} | {s['seconds']:.5f} | {ratio} |")
+    return "\n".join(lines) + "\n"
 
 
 if __name__ == "__main__":
