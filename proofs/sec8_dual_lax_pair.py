@@ -4,10 +4,14 @@ the symplectic block structure of 𝓛*_neum(λ) and the SO(r)-invariance of its
 (2r-integrals)."""
 from __future__ import annotations
 
+from itertools import combinations
+from math import comb, factorial
+
 from stiefelsym import admissible, block, claim, comm
 
 from .sec4_integrability import reflection
 from .sec5_neumann import H_neumann_euclidean, H_neumann_normal, power_trace
+from .sec7_grassmannians import column, columns, det, wedge
 
 SECTION = "8"
 
@@ -187,3 +191,204 @@ def reflections_leave_the_dual_pair_invariant(s):
         checks[f"S_{i + 1}: A* (N0_XP2)"] = A_dual_normal_at(s, S @ X, S @ P) - A_dual_normal(s)
         checks[f"S_{i + 1}: Lambda (NE_XP)"] = Lambda_at(s, S @ X, S @ P) - Lambda(s)
     return checks
+
+
+# -- the spectral curve and its coefficients 𝓘_{2l}(λ) (2r-integrals) ------------------------------
+
+def elementary(s, M, k_max):
+    """e_0(M), …, e_{k_max}(M), the coefficients of det(wI − M) = Σ (−1)^k e_k w^{m−k}, from the power
+    traces by Newton's identities k e_k = Σ_{i=1}^k (−1)^{i−1} e_{k−i} tr M^i (no coordinates)."""
+    p = [None] + [power_trace(s, M, k) for k in range(1, k_max + 1)]
+    e = [s.q(1)]
+    for k in range(1, k_max + 1):
+        acc = s.q(0)
+        for i in range(1, k + 1):
+            term = e[k - i] * p[i]
+            acc = acc + term if i % 2 else acc - term
+        e.append(acc * s.q(1, k))
+    return e
+
+
+def a_poly(s, mu):
+    """a(μ) = (μ − a_1)⋯(μ − a_n) = det(μI − A) = Σ_k (−1)^k e_k(A) μ^{n−k} (from traces of A)."""
+    e = elementary(s, s.A, s.n)
+    acc = s.q(0)
+    for k in range(s.n + 1):
+        acc = acc * mu + (e[k] if k % 2 == 0 else -e[k])
+    return acc
+
+
+def L_dual_mu(s, mu):
+    """(LA3) at the spectral parameter μ."""
+    R, X, P = s.resolvent(mu), s.X, s.P
+    return block([[-(X.T @ R @ P), -(X.T @ R @ X)], [s.Ir + P.T @ R @ P, P.T @ R @ X]])
+
+
+def spectral_integrals(s, mu):
+    """𝓘_{2l}(μ), l = 0..r: the coefficient of w^{2r−2l} in |a(μ)𝓛*(μ) − wI| is a^{2l−1}(μ)𝓘_{2l}(μ),
+    so 𝓘_{2l} = a(μ) e_{2l}(𝓛*(μ)); also returns the odd e_{2l+1}(𝓛*(μ))."""
+    e = elementary(s, L_dual_mu(s, mu), 2 * s.r)
+    a = a_poly(s, mu)
+    return [a * e[2 * l] for l in range(s.r + 1)], [e[k] for k in range(1, 2 * s.r + 1, 2)]
+
+
+def finite_difference(s, values, d):
+    """Δ^d f(λ) = Σ_j (−1)^{d−j} C(d, j) f(λ + j) from values[j] = f(λ + j), j = 0..d."""
+    acc = s.q(0)
+    for j in range(d + 1):
+        c = comb(d, j)
+        acc = acc + values[j] * c if (d - j) % 2 == 0 else acc - values[j] * c
+    return acc
+
+
+@claim("2r-integrals", paper=("2r-integrals", "LA3", "LA4"), kind="id",
+       sizes=admissible(n_max=5), exact_max_n=1,
+       statement=r"|a(\lambda)\mathcal L^*_{neum}(\lambda)-w\mathbf I|=w^{2r}+w^{2r-2}a\mathcal I_2+\dots"
+                 r"+a^{2r-1}\mathcal I_{2r}:\ \text{no odd powers of }w,\ \deg_\lambda\mathcal I_{2l}=n-l,\ "
+                 r"\text{leading coefficient of }\mathcal I_{2l}=\tbinom rl\ \text{on}\ V")
+def spectral_curve_coefficients(s):
+    """The spectral curve |a(λ)𝓛*_neum(λ) − wI| = 0 has no odd powers of w, and its coefficients 𝓘_{2l}(λ) = a(λ)e_{2l}(𝓛*_neum(λ)) are polynomials in λ of degree n − l whose leading coefficients are the constants C(r, l) on V (checked by finite differences: Δ^{n−l+1}𝓘_{2l} = 0 and Δ^{n−l}𝓘_{2l} = (n − l)! C(r, l))."""
+    n, r = s.n, s.r
+    values, checks = [], {}
+    for j in range(n + 1):
+        integrals, odd = spectral_integrals(s, s.lam + s.q(j))
+        values.append(integrals)
+        if j == 0:
+            for k, e in zip(range(1, 2 * r + 1, 2), odd):
+                checks[f"coefficient of w^{2 * r - k}"] = e
+    for l in range(1, r + 1):
+        d = n - l
+        seq = [v[l] for v in values]
+        checks[f"degree of I_{2 * l} <= {d}"] = finite_difference(s, seq, d + 1)
+        checks[f"leading coefficient of I_{2 * l} - C({r},{l})"] = (
+            finite_difference(s, seq, d) - s.q(factorial(d) * comb(r, l)))
+    return checks
+
+
+def I2_printed(s):
+    """The explicit 𝓘_2(λ) of (2r-integrals): Σ_i a/(λ − a_i)((e_1^i)² + ⋯ + (e_r^i)²)
+    + Σ_{i<j} a/((λ − a_i)(λ − a_j)) Φ_ij²."""
+    n, r, X, Phi, a, lam = s.n, s.r, s.X, s.Phi, s.a, s.lam
+    A = a_poly(s, lam)
+    acc = s.q(0)
+    for i in range(n):
+        norm = s.q(0)
+        for j in range(r):
+            norm = norm + X[i, j] * X[i, j]
+        acc = acc + A / (lam - a[i]) * norm
+    for i, j in combinations(range(n), 2):
+        acc = acc + A / ((lam - a[i]) * (lam - a[j])) * Phi[i, j] * Phi[i, j]
+    return acc
+
+
+def weight(s, mu, I):
+    """a(μ)/((μ − a_{i_1})⋯(μ − a_{i_k})) for the multi-index I."""
+    a = s.a
+    acc = a_poly(s, mu)
+    for i in I:
+        acc = acc / (mu - a[i])
+    return acc
+
+
+def I2r_printed(s, mu):
+    """The explicit 𝓘_{2r}(μ) of (2r-integrals): Σ_k Σ_{I_{r+k}} a(μ)/Π(μ − a_i) Σ_{i_1<⋯<i_k}
+    (e_1∧⋯∧e_r∧p_{i_1}∧⋯∧p_{i_k})²_{I_{r+k}} for k < r, and the last term with the diagonal minors
+    |Φ|^{I_{2r}}_{I_{2r}} of Φ (terms of order > n are absent)."""
+    n, r = s.n, s.r
+    E, Pc = columns(s.X, r), columns(s.P, r)
+    acc = s.q(0)
+    for k in range(r):
+        for I in combinations(range(n), r + k):
+            inner = s.q(0)
+            for J in combinations(range(r), k):
+                g = wedge(s, E + [Pc[j] for j in J], I)
+                inner = inner + g * g
+            acc = acc + weight(s, mu, I) * inner
+    for I in combinations(range(n), 2 * r):
+        acc = acc + weight(s, mu, I) * det(s, [[s.Phi[i, j] for j in I] for i in I])
+    return acc
+
+
+@claim("2r-integrals-explicit", paper=("2r-integrals", "forms"), kind="id",
+       sizes=admissible(n_max=5), exact_max_n=1,
+       statement=r"\mathcal I_2=\sum_i\frac{a(\lambda)}{\lambda-a_i}\big((e^i_1)^2+\dots+(e^i_r)^2\big)"
+                 r"+\sum_{i<j}\frac{a(\lambda)\,\Phi_{ij}^2}{(\lambda-a_i)(\lambda-a_j)},\quad "
+                 r"\mathcal I_{2r}=\sum_{k}\sum_{I_{r+k}}\frac{a(\lambda)}{\prod(\lambda-a_{i})}\sum_{i_1<\dots<i_k}"
+                 r"(e_1\wedge\dots\wedge e_r\wedge p_{i_1}\wedge\dots\wedge p_{i_k})^2_{I_{r+k}},\quad "
+                 r"|\Phi|^{I_{2r}}_{I_{2r}}=(e_1\wedge\dots\wedge e_r\wedge p_1\wedge\dots\wedge p_r)^2_{I_{2r}}")
+def explicit_spectral_integrals(s):
+    """The coefficients 𝓘_2(λ) and 𝓘_{2r}(λ) of the spectral curve of 𝓛*_neum(λ) are the printed sums over the Plücker coordinates of the forms (forms) (the terms of order > n absent when 2r > n), and the diagonal 2r×2r minors of Φ are the squares of the Plücker coordinates of e_1∧⋯∧e_r∧p_1∧⋯∧p_r."""
+    n, r = s.n, s.r
+    integrals, _ = spectral_integrals(s, s.lam)
+    E, Pc = columns(s.X, r), columns(s.P, r)
+    checks = {"I_2 - printed": integrals[1] - I2_printed(s),
+              f"I_{2 * r} - printed": integrals[r] - I2r_printed(s, s.lam)}
+    minors = [det(s, [[s.Phi[i, j] for j in I] for i in I]) - wedge(s, E + Pc, I) * wedge(s, E + Pc, I)
+              for I in combinations(range(n), 2 * r)]
+    if minors:
+        checks["|Phi|_I - (e_1 ^ ... ^ p_r)_I^2"] = column(s, minors)
+    return checks
+
+
+def I2l_general_line(s, l):
+    """The general line of (2r-integrals) as printed, where it is complete (l = 1: wedge products of
+    orders l and l + 1 = 2l): Σ_{I_l} a/Π(λ − a_i) Σ_{J_l}(e_{j_1}∧⋯∧e_{j_l})²_{I_l}
+    + Σ_{I_{l+1}} a/Π(λ − a_i) Σ_{J_l, 1≤i≤r}(e_{j_1}∧⋯∧e_{j_l}∧p_i)²_{I_{l+1}}."""
+    n, r, lam = s.n, s.r, s.lam
+    E, Pc = columns(s.X, r), columns(s.P, r)
+    acc = s.q(0)
+    for I in combinations(range(n), l):
+        inner = s.q(0)
+        for J in combinations(range(r), l):
+            g = wedge(s, [E[j] for j in J], I)
+            inner = inner + g * g
+        acc = acc + weight(s, lam, I) * inner
+    for I in combinations(range(n), l + 1):
+        inner = s.q(0)
+        for J in combinations(range(r), l):
+            for i in range(r):
+                g = wedge(s, [E[j] for j in J] + [Pc[i]], I)
+                inner = inner + g * g
+        acc = acc + weight(s, lam, I) * inner
+    return acc
+
+
+@claim("2r-integrals-general-line", paper=("2r-integrals",), kind="id",
+       sizes=admissible(n_max=5, n_min=2, condition="n >= 2"), exact_max_n=1,
+       fails_at=lambda n, r: r >= 2,
+       erratum="""The general line of (2r-integrals), I_{2l} = sum_{I_l} a/prod(lambda - a_i) sum_{J_l}
+       (e_{j_1}^...^e_{j_l})^2_{I_l} + sum_{I_{l+1}} a/prod(lambda - a_i) sum_{J_l, 1<=i<=r}
+       (e_{j_1}^...^e_{j_l}^p_i)^2 + ..., is complete for l = 1 (forms of orders 1 and 2), and there it
+       contradicts the explicit I_2 printed just above it whenever r >= 2: the second sum has the squares of
+       all the (e_j ^ p_i)_{I_2}, i, j = 1..r, where I_2 has Phi_{I_2}^2 = (sum_j e_j ^ p_j)_{I_2}^2 (the mixed
+       terms (e_j^p_i)^2, i != j, do not belong, the cross terms (e_j^p_j)(e_k^p_k) are missing).  The
+       explicit I_2 and I_{2r} hold (claim 2r-integrals-explicit); at l = 1 the line holds for r = 1 only.
+       Corrected: the second sum is sum_{I_2} a/prod(lambda - a_i) (sum_j e_j ^ p_j)_{I_2}^2.  The subscript
+       I_{r+1} of the second sum is also a misprint of I_{l+1}.""",
+       statement=r"\mathcal I_{2}=\sum_{I_1}\frac{a(\lambda)}{\lambda-a_{i_1}}\sum_{J_1}(e_{j_1})_{I_1}^2"
+                 r"+\sum_{I_2}\frac{a(\lambda)}{(\lambda-a_{i_1})(\lambda-a_{i_2})}\sum_{J_1,1\le i\le r}"
+                 r"(e_{j_1}\wedge p_i)_{I_2}^2\quad(\text{the line }\mathcal I_{2l}\text{ at }l=1)")
+def general_line_of_the_spectral_integrals(s):
+    """The general line for 𝓘_{2l}(λ) in (2r-integrals), read at l = 1, where its sums over forms of orders l and l + 1 are all the terms, gives 𝓘_2(λ)."""
+    integrals, _ = spectral_integrals(s, s.lam)
+    return {"I_2 - general line at l = 1": integrals[1] - I2l_general_line(s, 1)}
+
+
+@general_line_of_the_spectral_integrals.claim.correction(
+    "second sum: (e_1 ^ p_1 + ... + e_r ^ p_r)_{I_2}^2 in place of the sum of all (e_j ^ p_i)_{I_2}^2")
+def general_line_of_the_spectral_integrals_corrected(s):
+    n, r, lam = s.n, s.r, s.lam
+    E, Pc = columns(s.X, r), columns(s.P, r)
+    acc = s.q(0)
+    for i in range(n):
+        inner = s.q(0)
+        for j in range(r):
+            inner = inner + E[j][i] * E[j][i]
+        acc = acc + weight(s, lam, (i,)) * inner
+    for I in combinations(range(n), 2):
+        g = s.q(0)
+        for j in range(r):
+            g = g + wedge(s, [E[j], Pc[j]], I)
+        acc = acc + weight(s, lam, I) * g * g
+    integrals, _ = spectral_integrals(s, s.lam)
+    return {"I_2 - general line at l = 1": integrals[1] - acc}
