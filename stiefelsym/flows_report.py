@@ -227,9 +227,11 @@ def collect(quick: bool = False, log: Callable[[str], None] = lambda s: None) ->
 
 # --------------------------------------------------------------------------- algebraic verdicts
 
-def algebraic_verdicts(results_path: Path, labels: Sequence[str], kind: str | None = "lax") -> list[dict[str, Any]]:
-    """The catalog's verdicts on the claims stated for any of the paper labels (by ``\\label``),
-    from a ``results.json``: one summary per claim (printed statement, and its corrections)."""
+def algebraic_verdicts(results_path: Path, labels: Sequence[str] = (), claims: Sequence[str] = (),
+                       kinds: Sequence[str] = ("lax", "not")) -> list[dict[str, Any]]:
+    """The catalog's verdicts, from a ``results.json``, on the named claims, or else on the claims stated
+    for any of the paper labels (``\\label``) with one of ``kinds``: one summary per claim (the printed
+    statement, its corrections, the dimension-free verdict)."""
     try:
         doc = json.loads(Path(results_path).read_text())
     except (OSError, ValueError):
@@ -239,18 +241,44 @@ def algebraic_verdicts(results_path: Path, labels: Sequence[str], kind: str | No
         paper = r.get("paper") or []
         if isinstance(paper, str):
             paper = [paper]
-        if not set(paper) & set(labels):
-            continue
-        if kind is not None and r.get("kind") != kind:
+        if claims:
+            if r.get("claim") not in claims:
+                continue
+        elif not set(paper) & set(labels) or r.get("kind") not in kinds:
             continue
         s = summary.setdefault(r["claim"], {"claim": r["claim"], "paper": list(paper), "printed": {}, "corrections": {},
-                                            "free": None, "erratum": bool(r.get("erratum"))})
+                                            "free": None, "kind": r.get("kind"), "erratum": bool(r.get("erratum"))})
         if r.get("method") == "free" and not r.get("variant"):
             s["free"] = r.get("verdict")
             continue
         bucket = s["corrections"] if r.get("variant") else s["printed"]
         bucket[r.get("verdict")] = bucket.get(r.get("verdict"), 0) + 1
-    return list(summary.values())
+    order = {c: i for i, c in enumerate(claims)}
+    return sorted(summary.values(), key=lambda v: order.get(v["claim"], len(order)))
+
+
+def catalog_claims(row: dict[str, Any]) -> tuple[str, ...]:
+    """The catalog's claims about the Lax matrix of a row of the spectra table."""
+    flow, kw, lax = row["flow_name"], row["params"], row["lax"]
+    kappa, perturbed = kw.get("kappa"), kw.get("perturbed", False)
+    if flow in ("neumann", "jensen"):
+        if "LA3" in lax:
+            return {0.0: ("neumann-dual-lax-normal",), -0.5: ("neumann-dual-lax-euclidean",)}.get(
+                kappa, ("neumann-dual-lax-normal", "neumann-dual-lax-euclidean"))
+        return ("neumann-lax",)
+    if flow == "manakov":
+        if "MAN-LA2" in lax:
+            return ("manakov-dual-lax",)
+        return ("manakov-square-lax", "manakov-lax") if "B" not in kw else ("manakov-lax",)
+    if flow == "magnetic":
+        return ("magnetic-lax",)
+    if flow == "coupled":
+        if "so(n,n)" in lax:
+            if perturbed:
+                return ("coupled-perturbed-big-lax",)
+            return ("coupled-big-lax-normal",) if kappa == 0.0 else ("coupled-big-lax-not-euclidean", "coupled-big-lax-normal")
+        return ("coupled-perturbed-dual-lax",) if perturbed else ("coupled-dual-lax",)
+    return ()
 
 
 def _verdict_text(v: dict[str, Any]) -> str:
@@ -263,6 +291,8 @@ def _verdict_text(v: dict[str, Any]) -> str:
         parts.append(f"as printed: {counts(v['printed'])} sizes")
     if v["corrections"]:
         parts.append(f"corrected: {counts(v['corrections'])}")
+    if v.get("kind") == "not":
+        parts.append("(a statement that does *not* hold)")
     return f"`{v['claim']}`: " + "; ".join(parts)
 
 
@@ -412,16 +442,17 @@ def render_markdown(data: dict[str, Any], results_path: Path, figures: Sequence[
     add("| flow | n, r | method | Lax matrix | drift (fixed to) | eigenvalues | isospectral | ΔH, constraints | algebraic verdict (reports/results.json) |")
     add("| --- | --- | --- | --- | --- | --- | --- | --- | --- |")
     for row in data["spectra"]:
-        verdicts = algebraic_verdicts(results_path, row["paper"])
+        wanted = catalog_claims(row)
+        verdicts = algebraic_verdicts(results_path, row["paper"], claims=wanted)
         vt = "; ".join(_verdict_text(v) for v in verdicts) if verdicts else \
-            f"no claim for ({', '.join(row['paper'])}) in results.json yet"
+            f"`{'`, `'.join(wanted)}` not in {results_path.name} yet" if wanted else "–"
         iso = "yes" if row["drift"] < SPECTRUM_FIXED else "**no**"
         how = f"{row['method']} tol {row['tol']:g}" if row["tol"] else f"{row['method']} h = {row['step']:g}"
         name = row["lax"] + ("" if row["printed"] else f" ({row['note']})")
         add(f"| {row['flow']} | {row['n']}, {row['r']} | {how}, T = {row['T']:g} | {name} | {_e(row['drift'])} ({_digits(row['drift'])}) "
             f"| {_e(row.get('eigenvalue_drift'))} | {iso} | {_e(row['hamiltonian_error'])}, {_e(row['constraint_error'])} | {vt} |")
     add("")
-    add(_spectra_findings(data["spectra"]))
+    add(_spectra_findings(data["spectra"], results_path))
     add("")
     # ---------------------------------------------------------------- work precision
     add("## Work-precision diagrams")
@@ -490,7 +521,7 @@ def render_markdown(data: dict[str, Any], results_path: Path, figures: Sequence[
     return "\n".join(L) + "\n"
 
 
-def _spectra_findings(rows: list[dict[str, Any]]) -> str:
+def _spectra_findings(rows: list[dict[str, Any]], results_path: Path) -> str:
     out = ["Findings:", ""]
     bad_printed = [r for r in rows if r["printed"] and r["drift"] >= SPECTRUM_FIXED]
     good = [r for r in rows if r["drift"] < SPECTRUM_FIXED]
@@ -503,6 +534,16 @@ def _spectra_findings(rows: list[dict[str, Any]]) -> str:
                    f"{', '.join(str(r['params']['kappa']) for r in dual_k)} too, although Theorem DUAL states it for κ = 0 and "
                    "κ = −½ only: the κ-flow is the Euclidean flow followed by the right rotation exp(t(κ+½)Ψ₀), which "
                    "conjugates 𝓛* by diag(R, R).")
+    for r in rows:
+        if r["printed"] and r["drift"] < SPECTRUM_FIXED:
+            for v in algebraic_verdicts(results_path, claims=catalog_claims(r)):
+                if v["kind"] == "lax" and "fails" in v["printed"]:
+                    why = ("its registered correction keeps this L and replaces (A + λI)⁻¹ by A + λI in 𝓐*_man (LA-MAN3), "
+                           "the other matrix of the pair, which the integration does not see — consistent"
+                           if v["claim"] == "manakov-dual-lax" else
+                           "the integration tests only L (see the claim's erratum in verification.md)")
+                    out.append(f"* {r['lax']} along {r['flow']}: the spectrum is fixed although `{v['claim']}` fails as "
+                               f"printed; {why}.")
     sonn = [r for r in bad_printed if r["flow_name"] == "coupled" and "so(n,n)" in r["lax"]]
     if sonn:
         out.append(f"* **(so(n,n)) as printed is not isospectral** along {', '.join(r['flow'] for r in sonn)} (drift "
@@ -510,7 +551,8 @@ def _spectra_findings(rows: list[dict[str, Any]]) -> str:
                    "opposite sign, L(ν) = ν[[0, A], [A, 0]] + diag(Φ_X, Φ_Y) − ν⁻¹[[0, XYᵀ], [YXᵀ, 0]], the spectrum is "
                    "fixed for κ = 0 and for the perturbed H_κ (rows marked *correction*): dL/dt = [L_+(ν), L(ν)] then "
                    "follows from dΦ_X/dt = XYᵀA − AYXᵀ and d(XYᵀ)/dt = Φ_X XYᵀ − XYᵀΦ_Y (κ = 0), so the printed pair "
-                   "(L, L_+) has a sign error (a candidate erratum for the Appendix 2 claims).")
+                   "(L, L_+) has a sign error. This is the erratum registered in the catalog for `coupled-big-lax-normal` and "
+                   "`coupled-perturbed-big-lax` (same correction), found here independently of the algebra.")
     for r in bad_printed:
         if r in sonn:
             continue
