@@ -430,14 +430,13 @@ def rigid_body_euler_poisson(s):
        statement=r"T^*V_{n,n-1}/SO(n-1)\cong so(n)\times S^{n-1}:\quad \dot\Omega=[A,e_n\otimes e_n],\quad \dot e_n=\Omega e_n,"
                  r"\quad \Omega=\Phi,\ e_n\otimes e_n=\mathbf I_n-XX^T")
 def reduced_neumann_is_euler_star_star(s):
-    """Proposition YM (i): the normal-metric Neumann flow (N0_XP2) on T*V_{n,n−1} (the Dirac flow of H_neum,0) reduces by the right SO(n−1) action to (Euler**) on so(n) × S^{n−1}: (Ω, e_n⊗e_n) = (Φ, I − XXᵀ) are invariant, e_n⊗e_n is the rank-one projector onto e_n ⊥ e₁, …, e_{n−1}, and Ω̇ = [A, e_n⊗e_n], d(e_n⊗e_n)/dt = [Ω, e_n⊗e_n] (equivalent to ė_n = Ωe_n for a unit e_n)."""
+    """Proposition YM (i): the normal-metric Neumann flow (N0_XP2) on T*V_{n,n−1} (the Dirac flow of H_neum,0) reduces by the right SO(n−1) action to (Euler**) on so(n) × S^{n−1}: (Ω, e_n⊗e_n) = (Φ, I − XXᵀ) are invariant (e_n⊗e_n = I − XXᵀ by (iden1), see clebsch-perelomov-hamiltonian; it is the projector orthogonal to e₁, …, e_{n−1}), and Ω̇ = [A, e_n⊗e_n], d(e_n⊗e_n)/dt = [Ω, e_n⊗e_n] (equivalent to ė_n = Ωe_n for a unit e_n); the identities hold for every r, so the dimension-free method proves them for all n, r."""
     flow = s.dirac_flow(H_neumann_normal)
     N = s.In - s.X @ s.X.T
     right = {"X": s.X @ s.eta, "P": s.P @ s.eta}
     return {
         "e_n (x) e_n projector": N @ N - N,
         "e_n orthogonal to e_1..e_{n-1}": N @ s.X,
-        "tr e_n (x) e_n = 1": s.tr(N) - 1,
         "Omega, e_n (x) e_n right-invariant": [s.d(lambda t: t.Phi, right), s.d(lambda t: t.X @ t.X.T, right)],
         "(Euler**) dOmega/dt = [A, e_n (x) e_n]": s.d(lambda t: t.Phi, flow) - comm(s.A, N),
         "(Euler**) de_n/dt = Omega e_n": s.d(lambda t: t.In - t.X @ t.X.T, flow) - comm(s.Phi, N),

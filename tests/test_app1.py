@@ -88,6 +88,11 @@ def test_the_magnetic_form_needs_two_columns():
         twisted.magnetic_matrix(s)
 
 
+def test_the_reduction_to_euler_star_star_is_proved_for_every_size(catalog):
+    res = run_free(catalog.get("ym-reduced-neumann"))
+    assert res.verdict == "proved", res.message
+
+
 def test_the_twisted_form_needs_coordinates(catalog):
     res = run_free(catalog.get("magnetic-euclidean-flow"))
     assert res.verdict == "undecided" and "needs coordinates" in res.message
