@@ -13,15 +13,15 @@ Flows (:func:`make_flow`), as in the paper:
 * ``"jensen"`` (kappa): the geodesic flow of ds²_κ, Hamiltonian (EM) (the Neumann flow with A = 0).
 * ``"manakov"`` (A, B, default B = A²): (dot_XP2) with 𝔸 = ad_A⁻¹ad_B; 𝓛 = Φ + λA, and for B = A²
   the dual (MAN-LA2).
-* ``"magnetic"`` (eps, A, kappa ∈ {−½, 0}): the magnetic Neumann flows on V(n, 2), (mag-euk) and
-  (mag-nor) as printed; 𝓛 = λΦ_ε + XXᵀ − λ²A with Φ_ε = Φ + ε e₁∧e₂.
+* ``"magnetic"`` (eps, A, kappa; printed): the magnetic Neumann flows on V(n, 2) for the twisted
+  form (twisted), or (mag-euk), (mag-nor) as printed; 𝓛 = λΦ_ε + XXᵀ − λ²A with Φ_ε = Φ + ε e₁∧e₂.
 * ``"coupled"`` (kappa, A, perturbed): the r-coupled Neumann system (C-neumann) on T*V × T*V, or the
   perturbed H_κ with −2κ tr(XᵀP YᵀQ); the so(n, n) Lax matrix (so(n,n)) and the 4r × 4r (LA3*C).
 
 Every vector field of a Hamiltonian is the Dirac flow (dot_XP): Ẋ = ∂H/∂P − XΠ,
 Ṗ = −∂H/∂X + XΛ + PΠ with the symmetric multipliers solved from the time derivatives of the
 constraints, so the flow is derived from the printed Hamiltonian, never typed in (the magnetic
-flows, whose symplectic form is twisted, use the printed equations).
+flows add the Lorentz force of the twisted form; their printed equations are available too).
 
 Methods (:func:`integrate`):
 
@@ -163,16 +163,20 @@ def _fmt(v: Any) -> str:
     return str(v)
 
 
-def dirac_vector_field(gradient: Callable[[Array, Array], tuple[Array, Array]]) -> Vector:
+def dirac_vector_field(gradient: Callable[[Array, Array], tuple[Array, Array]],
+                       force: Callable[[Array, Array], Array] | None = None) -> Vector:
     """The Dirac flow (dot_XP) of a Hamiltonian given by its gradient (X, P) ↦ (∂H/∂X, ∂H/∂P), each
     point of the state constrained to its own T*V: Π = sym(Xᵀ∂H/∂P), and Λ from
-    d/dt(XᵀP + PᵀX) = 0 (with XᵀX = I)."""
+    d/dt(XᵀP + PᵀX) = 0 (with XᵀX = I).  ``force(X, dX/dt)`` is an extra term of dP/dt (a magnetic
+    force from a twisted symplectic form), included before Λ is solved."""
 
     def rhs(X: Array, P: Array) -> tuple[Array, Array]:
         HX, HP = gradient(X, P)
         Pi = _sym(_T(X) @ HP)
         Xd = HP - X @ Pi
         P0 = -HX + P @ Pi
+        if force is not None:
+            P0 = P0 + force(X, Xd)
         Lam = -_sym(_T(Xd) @ P + _T(X) @ P0)
         return Xd, P0 + X @ Lam
 
@@ -280,11 +284,14 @@ def _jensen_hamiltonian(kappa: float, A: Array | None) -> Callable[[Array, Array
 
 
 def make_flow(name: str, n: int, r: int, *, kappa: float | None = None, A: Any = None, B: Any = None,
-              eps: float | None = None, perturbed: bool = False) -> Flow:
+              eps: float | None = None, perturbed: bool = False, printed: bool = False) -> Flow:
     """One of the paper's flows by name (see the module docstring) at the size (n, r).
 
     ``A`` is an n x n symmetric matrix or the vector of its eigenvalues (default diag(1, …, n));
-    ``B`` (Manakov only) a diagonal matrix or vector (default A²)."""
+    ``B`` (Manakov only) a diagonal matrix or vector (default A²).  The magnetic flow is the Dirac flow
+    of H_neum,κ for the twisted form (twisted) — the Lorentz force ε(ė₂, −ė₁) added to dP/dt before the
+    multipliers are solved (ι_v(ω + ε de₁∧de₂) = −dH gives ṗ₁ = −∂H/∂e₁ + εė₂, ṗ₂ = −∂H/∂e₂ − εė₁) — for every κ; ``printed=True`` integrates (mag-euk), (mag-nor) as printed
+    (κ = −½, 0), which agree with it on T*V but, as ODEs on n × 2 matrices, leave T*V unstably."""
     _check_size(n, r)
     if name not in FLOWS:
         raise ValueError(f"unknown flow {name!r}; the flows are {', '.join(FLOWS)} (or give a callable (X, P) -> (dX, dP))")
@@ -350,17 +357,25 @@ def make_flow(name: str, n: int, r: int, *, kappa: float | None = None, A: Any =
         if r != 2:
             raise ValueError(f"the magnetic Neumann flows live on V(n, 2); got r = {r}")
         k = _kappa(-0.5 if kappa is None else kappa)
-        if k not in (-0.5, 0.0):
+        if printed and k not in (-0.5, 0.0):
             raise ValueError(f"the magnetic flows are printed for kappa = -1/2 (mag-euk) and kappa = 0 (mag-nor), got {k}")
         e = 0.0 if eps is None else float(eps)
         if not math.isfinite(e):
             raise ValueError(f"eps must be finite, got {eps!r}")
         Am = _as_matrix_A(A, n)
-        rhs = _magnetic_rhs(Am, e, k)
+        if printed:
+            rhs = _magnetic_rhs(Am, e, k)
+        else:
+            J = np.array([[0.0, -1.0], [1.0, 0.0]])
+            rhs = dirac_vector_field(_jensen_gradient(k, Am), lambda X, Xd: e * Xd @ J)
         a = np.linalg.eigvalsh(Am)
-        return Flow(name, n, r, rhs, 1, _jensen_hamiltonian(k, Am), (_neumann_lax(Am, _lambdas(a), e, ("mag-mom-stief", "mag-euk", "mag-nor")),),
+        params: dict[str, Any] = {"kappa": k, "eps": e, "A": Am}
+        if printed:
+            params["printed"] = True
+        return Flow(name, n, r, rhs, 1, _jensen_hamiltonian(k, Am),
+                    (_neumann_lax(Am, _lambdas(a), e, ("mag-mom-stief", "mag-euk", "mag-nor")),),
                     {"Ψ_12 = (e₁,p₂) − (e₂,p₁)": lambda X, P: np.array([[X[0][:, 0] @ P[0][:, 1] - X[0][:, 1] @ P[0][:, 0]]])},
-                    None, 0.0, {"kappa": k, "eps": e, "A": Am}, ("mag-euk",) if k == -0.5 else ("mag-nor",))
+                    None, 0.0, params, (("mag-euk",) if k == -0.5 else ("mag-nor",) if k == 0 else ("twisted",)))
     # coupled
     k = _kappa(0.0 if kappa is None else kappa)
     Am = _as_matrix_A(A, n)

@@ -193,7 +193,7 @@ def test_custom_flow_with_invariants():
     (lambda X, P: ig.integrate(X, P, "neumann", 1.0, kappa=-1.0), "kappa"),
     (lambda X, P: ig.integrate(X, P, "neumann", (1.0, 0.0)), "t0 < t1"),
     (lambda X, P: ig.integrate(X, P, "neumann", 1.0, A=np.ones((3, 3))), "A must be"),
-    (lambda X, P: ig.integrate(X, P, "magnetic", 1.0, kappa=0.3), "printed for kappa"),
+    (lambda X, P: ig.integrate(X, P, "magnetic", 1.0, kappa=0.3, printed=True), "printed for kappa"),
     (lambda X, P: ig.integrate(2 * X, P, "neumann", 1.0), "not on T*V"),
     (lambda X, P: ig.integrate(X, P + X, "neumann", 1.0), "not on T*V"),
     (lambda X, P: ig.integrate(X, P, "neumann", 1.0, step=0.0, method="rk4"), "step"),
@@ -208,6 +208,16 @@ def test_off_shell_point_is_projected_on_request():
     X, P = point()
     t = ig.integrate(1.01 * X, P + 0.1 * X, "neumann", 0.5, method="dop853", project=True, samples=3)
     assert t.position_error[0] < 1e-14 and t.momentum_error[0] < 1e-14
+
+
+@pytest.mark.parametrize("kappa", [-0.5, 0.0])
+def test_magnetic_flows_as_printed_are_the_twisted_dirac_flows(kappa):
+    """(mag-euk), (mag-nor) as printed agree on T*V with the Dirac flow of H_neum,κ plus the Lorentz force."""
+    X, P = point(5, 2, seed=4)
+    A = np.diag([0.5, 1.3, 2.1, 3.4, 4.6])
+    a = ig.make_flow("magnetic", 5, 2, kappa=kappa, eps=0.7, A=A).rhs(X[None], P[None])
+    b = ig.make_flow("magnetic", 5, 2, kappa=kappa, eps=0.7, A=A, printed=True).rhs(X[None], P[None])
+    assert np.abs(a[0] - b[0]).max() < 1e-13 and np.abs(a[1] - b[1]).max() < 1e-13
 
 
 def test_magnetic_flow_needs_r_2():
