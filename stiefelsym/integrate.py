@@ -53,6 +53,9 @@ __all__ = ["Flow", "LaxMatrix", "Trajectory", "make_flow", "custom_flow", "integ
            "jensen_geodesic", "metric_beta", "random_point", "spectral_drift", "eigenvalue_drift", "dirac_vector_field"]
 
 FLOWS = ("neumann", "jensen", "manakov", "magnetic", "coupled")
+#: the parameters each named flow takes
+FLOW_PARAMETERS = {"neumann": ("kappa", "A"), "jensen": ("kappa",), "manakov": ("A", "B"),
+                   "magnetic": ("kappa", "eps", "A", "printed"), "coupled": ("kappa", "A", "perturbed")}
 METHODS = ("dop853", "rattle", "rk4")
 #: the largest constraint violation accepted as "on T*V" without projection
 ON_SHELL = 1e-10
@@ -289,9 +292,10 @@ def make_flow(name: str, n: int, r: int, *, kappa: float | None = None, A: Any =
 
     ``A`` is an n x n symmetric matrix or the vector of its eigenvalues (default diag(1, …, n));
     ``B`` (Manakov only) a diagonal matrix or vector (default A²).  The magnetic flow is the Dirac flow
-    of H_neum,κ for the twisted form (twisted) — the Lorentz force ε(ė₂, −ė₁) added to dP/dt before the
-    multipliers are solved (ι_v(ω + ε de₁∧de₂) = −dH gives ṗ₁ = −∂H/∂e₁ + εė₂, ṗ₂ = −∂H/∂e₂ − εė₁) — for every κ; ``printed=True`` integrates (mag-euk), (mag-nor) as printed
-    (κ = −½, 0), which agree with it on T*V but, as ODEs on n × 2 matrices, leave T*V unstably."""
+    of H_neum,κ for the twisted form (twisted), for every κ: the Lorentz force ε(ė₂, −ė₁) is added to
+    dP/dt before the multipliers are solved (ι_v(ω + ε de₁∧de₂) = −dH gives ṗ₁ = −∂H/∂e₁ + εė₂,
+    ṗ₂ = −∂H/∂e₂ − εė₁); ``printed=True`` integrates (mag-euk), (mag-nor) as printed (κ = −½, 0),
+    which agree with it on T*V but, as ODEs on n × 2 matrices, leave T*V unstably."""
     _check_size(n, r)
     if name not in FLOWS:
         raise ValueError(f"unknown flow {name!r}; the flows are {', '.join(FLOWS)} (or give a callable (X, P) -> (dX, dP))")
@@ -735,9 +739,17 @@ def _resolve_flow(flow: Any, n: int, r: int, params: dict[str, Any]) -> Flow:
             raise ValueError(f"flow parameters {sorted(params)} given together with a ready Flow object")
         return flow
     if isinstance(flow, str):
+        allowed = FLOW_PARAMETERS.get(flow)
+        if allowed is not None:
+            extra = sorted(set(params) - set(allowed))
+            if extra:
+                raise ValueError(f"the {flow} flow takes the parameters {', '.join(allowed)}; got {', '.join(extra)}")
         return make_flow(flow, n, r, **params)
     if callable(flow):
-        return custom_flow(flow, n=n, r=r, **params)
+        try:
+            return custom_flow(flow, n=n, r=r, **params)
+        except TypeError as exc:
+            raise ValueError(f"bad parameters for a user flow: {exc}") from None
     raise ValueError(f"a flow is a name ({', '.join(FLOWS)}), a Flow, or a callable (X, P) -> (dX, dP); got {flow!r}")
 
 

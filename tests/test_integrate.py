@@ -197,6 +197,8 @@ def test_custom_flow_with_invariants():
     (lambda X, P: ig.integrate(2 * X, P, "neumann", 1.0), "not on T*V"),
     (lambda X, P: ig.integrate(X, P + X, "neumann", 1.0), "not on T*V"),
     (lambda X, P: ig.integrate(X, P, "neumann", 1.0, step=0.0, method="rk4"), "step"),
+    (lambda X, P: ig.integrate(X, P, "neumann", 1.0, eps=0.5), "takes the parameters"),
+    (lambda X, P: ig.integrate(X, P, lambda X, P: (P, -X), 1.0, kappa=0.5), "user flow"),
 ])
 def test_bad_input_is_a_clear_value_error(call, message):
     X, P = point()
