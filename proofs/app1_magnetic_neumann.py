@@ -261,6 +261,55 @@ def magnetic_lax_pair(s):
     return checks
 
 
+# -- every rank: a magnetic term ε Σ F_jk de_j∧de_k with a generic F ∈ so(r) --------------------------
+
+def Phi_F(s):
+    """Φ_F = Φ + εXFXᵀ for the generic F = η ∈ so(r) (r = 2: F = η₁₂E₁∧E₂, XFXᵀ = η₁₂ e₁∧e₂)."""
+    return s.Phi + s.eps * (s.X @ s.eta @ s.X.T)
+
+
+def H_neumann_kappa(s):
+    """(neumann) with a free κ."""
+    XtP = s.X.T @ s.P
+    return (s.tr(s.P.T @ s.P) / 2 - (s.q(1, 2) + s.kappa) * s.tr(XtP @ XtP)
+            + s.tr(s.X.T @ s.A @ s.X) / 2)
+
+
+@claim("magnetic-momentum-map-any-rank", paper=("mag-mom-stief", "twisted"), kind="pb",
+       statement=r"\omega_F=\omega+\epsilon\,\pi^*\textstyle\sum_{j<k}F_{jk}de_j\wedge de_k,\ F\in so(r):\quad "
+                 r"\Phi_F=\Phi+\epsilon XFX^T,\ X^{F}_{\langle\Phi_F,\xi\rangle}=(\xi X,\xi P),\ "
+                 r"\{\langle\Phi_F,\xi\rangle,\langle\Phi_F,\zeta\rangle\}_F=\langle\Phi_F,[\xi,\zeta]\rangle")
+def twisted_momentum_map_every_rank(s):
+    """(mag-mom-stief) for every n, r: with the magnetic term ε Σ F_jk de_j∧de_k of a generic constant F ∈ so(r) (for r = 2, F = fE₁∧E₂ and Φ_F is Φ_ε with ε replaced by εf), Φ_F = Φ + εXFXᵀ is the equivariant momentum map of the left SO(n) action and a Poisson map."""
+    left = {"X": s.xi @ s.X, "P": s.xi @ s.P}
+    flow = twisted.flow(s, lambda t: t.killing(Phi_F(t), t.xi), F=s.eta)
+    return {
+        "dX/dt = xi X": flow.Xdot - left["X"],
+        "dP/dt = xi P": flow.Pdot - left["P"],
+        "equivariance": s.d(Phi_F, left) - comm(s.xi, Phi_F(s)),
+        "{Phi_F_xi, Phi_F_zeta}_F (+)": twisted.bracket(s, lambda t: t.killing(Phi_F(t), t.xi),
+                                                        lambda t: t.killing(Phi_F(t), t.zeta), F=s.eta)
+        - s.killing(Phi_F(s), comm(s.xi, s.zeta)),
+    }
+
+
+@claim("magnetic-lax-any-rank", paper=("prep", "LA1", "LA2", "mag-euk", "mag-nor", "twisted"), kind="lax",
+       statement=r"\tfrac{d}{dt}\Phi_F=[XX^T,A],\ \tfrac{d}{dt}XX^T=[\Phi_F,XX^T],\ "
+                 r"\tfrac{d}{dt}\mathcal L=[\mathcal A,\mathcal L],\ \mathcal L=\lambda\Phi_F+XX^T-\lambda^2A,\ "
+                 r"\mathcal A=\Phi_F-\lambda A\ \text{along the flow of } H_{neum,\kappa}\ \text{for } \omega_F")
+def twisted_lax_pair_every_rank(s):
+    """(prep) and the Lax pair (LA1) with the momentum map Φ_F = Φ + εXFXᵀ hold along the Hamiltonian flow of H_neum,κ for the twisted form ω_F, for every n, r, κ and generic constant F ∈ so(r) (r = 2, κ = −½, 0: (mag-euk), (mag-nor) with Φ_ε)."""
+    flow = twisted.flow(s, H_neumann_kappa, F=s.eta)
+    XX = s.X @ s.X.T
+    L = lambda t: t.lam * Phi_F(t) + t.X @ t.X.T - t.lam * t.lam * t.A
+    M = Phi_F(s) - s.lam * s.A
+    return {
+        "dPhi_F/dt = [XX^T, A]": s.d(Phi_F, flow) - comm(XX, s.A),
+        "d(XX^T)/dt = [Phi_F, XX^T]": s.d(lambda t: t.X @ t.X.T, flow) - comm(Phi_F(s), XX),
+        "LA1": s.d(L, flow) - comm(M, L(s)),
+    }
+
+
 # -- the magnetic Neumann system on G(n, 2) -------------------------------------------------------
 
 def horizontal_point(s):

@@ -102,7 +102,10 @@ def _inverse(s: Scene, F: Mat | None) -> list[list[Any]]:
 
 
 def bracket(s, f: Function, g: Function, F: Mat | None = None) -> Any:
-    """The Dirac bracket (Dirac_bracket) built from {,}_ε: the Poisson bracket of ω + ε π*ω_mag on T*V."""
+    """The Dirac bracket (Dirac_bracket) built from {,}_ε: the Poisson bracket of ω + ε π*ω_mag on T*V.
+    (Dimension-free: the derivative of f along the twisted flow of g, for a field strength F of so(r).)"""
+    if _is_free(s):
+        return s.d(f, _free_flow(s, g, F))
     s = _scene(s, "the twisted Dirac bracket")
     Fm = _field_strength(s, F)
     J = s._constraint_jacobian()
@@ -127,7 +130,11 @@ def ambient_flow(s, H: Function, F: Mat | None = None) -> Flow:
 
 def flow(s, H: Function, F: Mat | None = None) -> Flow:
     """dz/dt = {z, H} for the twisted Dirac bracket, z = entries of X, P: the Hamiltonian vector field of
-    H for ω_ε = ω + ε π*ω_mag on T*V."""
+    H for ω_ε = ω + ε π*ω_mag on T*V.  On the dimension-free scene (for a field strength F given as a
+    letter of so(r), e.g. s.eta) it is the Lagrange form of :func:`multiplier_flow` with Λ, Π solved in
+    the free algebra."""
+    if _is_free(s):
+        return _free_flow(s, H, F)
     s = _scene(s, "the Hamiltonian flow of the twisted form")
     Fm = _field_strength(s, F)
 
@@ -146,6 +153,40 @@ def flow(s, H: Function, F: Mat | None = None) -> Flow:
             out.append(s.field.normalize(acc))
         return s._split(out)
     return s._cached_for("twisted:flow", H, build) if F is None else build()
+
+
+def _is_free(s: Any) -> bool:
+    from .free import FreeScene
+    return isinstance(s, FreeScene)
+
+
+def _free_flow(s, H: Function, F: Mat | None) -> Flow:
+    """The twisted flow in the free algebra: Ẋ = H_P − XΠ, Ṗ = −H_X − εẊF + XΛ + PΠ, with Π, Λ solved
+    from d/dt(XᵀX) = 0 and d/dt(XᵀP + PᵀX) = 0 (the same construction as the scene's Dirac flows)."""
+    if F is None:
+        raise NeedsCoordinates("the magnetic form de_1 ∧ de_2 (a constant element of so(2))")
+    from .free.scene import LAMBDA, PI, P as LP, X as LX, _w, solve_multipliers
+    from .free.algebra import substitute
+
+    def build():
+        f = F._a[0, 0]
+        HX, HP = (m._a[0, 0] for m in s._gradient(H))
+        nf = s.system.normal_form
+        x, p = _w(LX), _w(LP)
+        Pi, Lam = _w(PI), _w(LAMBDA)
+        Xd = HP - x * Pi
+        Pd = -HX - s.eps * (Xd * f) + x * Lam + p * Pi
+        eq_XX = nf(Xd.star() * x + x.star() * Xd)
+        eq_XP = nf(Xd.star() * p + x.star() * Pd + Pd.star() * x + p.star() * Xd)
+        solved = solve_multipliers([eq_XX, eq_XP], [PI, LAMBDA], s.system)
+        Xd, Pd = (nf(substitute(v, solved)) for v in (Xd, Pd))
+        return Flow(s._const_mat(Xd), s._const_mat(Pd))
+    return s._cached_for("twisted:flow:" + str(f_key(F)), H, build)
+
+
+def f_key(F: Mat) -> str:
+    """A cache key of a field strength of the free scene (its polynomial)."""
+    return str(F._a[0, 0])
 
 
 def multiplier_flow(s, H: Function, F: Mat | None = None) -> Flow:

@@ -19,8 +19,8 @@ def _appendix1(catalog):
 
 
 def _small_size(c):
-    """The first declared size with n >= 3 (n = 3 for every claim of the appendix)."""
-    return next(z for z in c.sizes if z.n >= 3)
+    """The first declared size with n = 3 and r >= 2 (so(r) is 0 when r = 1)."""
+    return next(z for z in c.sizes if z.n >= 3 and z.r >= 2)
 
 
 # -- the twisted structure itself ---------------------------------------------------------------
@@ -88,9 +88,20 @@ def test_the_magnetic_form_needs_two_columns():
         twisted.magnetic_matrix(s)
 
 
-def test_the_reduction_to_euler_star_star_is_proved_for_every_size(catalog):
-    res = run_free(catalog.get("ym-reduced-neumann"))
+#: proved for every n, r by rewriting (the twisted flow with a letter F of so(r) in the free algebra)
+FREE_PROVED = ("ym-reduced-neumann", "magnetic-momentum-map-any-rank", "magnetic-lax-any-rank")
+
+
+@pytest.mark.parametrize("cid", FREE_PROVED)
+def test_claim_is_proved_for_every_n_and_r(catalog, cid):
+    res = run_free(catalog.get(cid))
     assert res.verdict == "proved", res.message
+
+
+def test_the_free_twisted_flow_is_not_the_untwisted_one(catalog):
+    """In the free algebra the Lorentz force is there: the untwisted (prep) fails to reduce to 0."""
+    res = run_free(catalog.get("magnetic-lax-any-rank"), any_rank_prep_with_phi)
+    assert res.verdict == "undecided" and "nonzero normal form" in res.message
 
 
 def test_the_twisted_form_needs_coordinates(catalog):
@@ -153,6 +164,18 @@ def lax_commutator_swapped(s):
     """Corrupted (LA1) with Φ_ε: d𝓛/dt = [𝓛, 𝓐]."""
     flow = twisted.flow(s, H_neumann_normal)
     return {"LA1": s.d(app1.L_mag, flow) - comm(app1.L_mag(s), app1.A_mag(s))}
+
+
+def any_rank_momentum_without_magnetic_term(s):
+    """Corrupted (mag-mom-stief), every rank: Φ in place of Φ_F generates the action of the twisted form."""
+    flow = twisted.flow(s, lambda t: t.killing(t.Phi, t.xi), F=s.eta)
+    return {"dP/dt = xi P": flow.Pdot - s.xi @ s.P}
+
+
+def any_rank_prep_with_phi(s):
+    """Corrupted (prep), every rank: Φ in place of Φ_F along the twisted flow."""
+    flow = twisted.flow(s, app1.H_neumann_kappa, F=s.eta)
+    return {"dPhi/dt": s.d(lambda t: t.Phi, flow) - comm(s.X @ s.X.T, s.A)}
 
 
 def grass_momentum_commutator_swapped(s):
@@ -233,6 +256,8 @@ CORRUPTIONS = [
     ("magnetic-psi12-conserved", psi12_replaced_by_gram),
     ("magnetic-prep", prep_with_phi),
     ("magnetic-lax", lax_commutator_swapped),
+    ("magnetic-momentum-map-any-rank", any_rank_momentum_without_magnetic_term),
+    ("magnetic-lax-any-rank", any_rank_prep_with_phi),
     ("magnetic-grassmannian-momentum", grass_momentum_commutator_swapped),
     ("magnetic-grassmannian-flow", grass_flow_epsilon_sign),
     ("clebsch-perelomov-hamiltonian", cp_potential_sign),
