@@ -8,6 +8,10 @@ from stiefelsym.systems import (complex_coordinates, complex_diagonal, complex_p
 
 SECTION = "A2"
 
+#: the coupled and complex systems: their second point (Y, Q) and the complex point are Cayley points
+#: with symbolic pivots, and the multipliers a symbolic linear solve beyond the symbolic budget when n >= 2
+SYMBOLIC_N_MAX = 1
+
 
 def _scalar_block(s, c):
     """c·I_r."""
@@ -94,7 +98,7 @@ def double_neumann_flow(s):
     }
 
 
-@claim("double-neumann-dual-lax", paper=("dual-D", "LA3*D", "D-eq", "D-L"), kind="lax",
+@claim("double-neumann-dual-lax", paper=("dual-D", "LA3*D", "D-eq", "D-L"), kind="lax", exact_max_n=2,
        fails_at=lambda n, r: True,
        erratum="""Theorem dual-D: with (I_n - lambda A)^{-1} in the off-diagonal blocks of L(lambda), as printed
        in (LA3*D), the equations (D-eq) do not imply dL/dt = [L, A].  They do with (lambda I_n - A)^{-1} in all four
@@ -114,13 +118,23 @@ def double_neumann_dual_lax_corrected(s):
     return {"LA3*D": double_lax_residual(s, lambda t: t.resolvent(t.lam))}
 
 
-@claim("double-neumann-momentum", paper=("dual-D", "D-eq"), kind="pb",
-       statement=r"\tfrac{d}{dt}\left(X^T\dot Y-Y^T\dot X\right)=0\ \text{along (D-eq)}")
+@claim("double-neumann-momentum", paper=("dual-D", "D-Lag", "D0", "D-eq"), kind="pb",
+       statement=r"\tfrac{d}{dt}\left(X^T\dot Y-Y^T\dot X\right)=0\ \text{along (D-eq)};\ "
+                 r"(X,Y)\mapsto(XR^T,YR^{-1})\ \text{preserves (D-Lag), (D0)},\ "
+                 r"\tfrac{d}{dt}\left(X^T\dot Y-\dot X^TY\right)=0")
 def double_neumann_momentum(s):
-    """The matrix XᵀẎ − YᵀẊ, named as the integral of the symmetry (X, Y) ↦ (XRᵀ, YR⁻¹), is conserved along (D-eq)."""
+    """The matrix XᵀẎ − YᵀẊ is conserved along (D-eq); the action (X, Y) ↦ (XRᵀ, YR⁻¹), R ∈ GL(r), leaves (D-Lag) and (D0) invariant, its Noether momentum XᵀẎ − ẊᵀY (of which the printed integral is the symmetric part, as XᵀẎ + ẊᵀY = 0) is conserved too."""
     z = double_point(s)
-    return {"d(X^T Y' - Y^T X')/dt": derivative(s, lambda t, w: w["X"].T @ w["Ydot"] - w["Y"].T @ w["Xdot"],
-                                                z, flow_double(s, z))}
+    flow = flow_double(s, z)
+    xi = s.generic("xi", "r", "r")
+    action = {"X": z["X"] @ xi.T, "Y": -(z["Y"] @ xi), "Xdot": z["Xdot"] @ xi.T, "Ydot": -(z["Ydot"] @ xi)}
+    L = lambda t, w: (T_double(t, {"X": w["Xdot"], "Y": w["Ydot"]}) - U_double(t, {"X": w["X"], "Y": w["Y"]}))
+    return {
+        "d(X^T Y' - Y^T X')/dt": derivative(s, lambda t, w: w["X"].T @ w["Ydot"] - w["Y"].T @ w["Xdot"], z, flow),
+        "d(X^T Y' - X'^T Y)/dt": derivative(s, lambda t, w: w["X"].T @ w["Ydot"] - w["Xdot"].T @ w["Y"], z, flow),
+        "L along the GL(r)-action": derivative(s, L, z, action),
+        "X^T Y along the GL(r)-action": derivative(s, lambda t, w: w["X"].T @ w["Y"], z, action),
+    }
 
 
 def flow_NE(s):
@@ -207,7 +221,7 @@ def coupled_flow_checks(s, Q_Pi):
     return checks
 
 
-@claim("coupled-neumann-flow", paper=("C-neumann", "C-eq", "C-L"), kind="id",
+@claim("coupled-neumann-flow", paper=("C-neumann", "C-eq", "C-L"), kind="id", exact_max_n=SYMBOLIC_N_MAX,
        fails_at=lambda n, r: True,
        erratum="""(C-eq): the last term of the equation for Q' is printed Q Pi; the flow of (C-neumann) on
        T*V x T*V has Y Pi there (the multiplier of Y^T Y = I_r, as X Lambda in the equation for P'), with Pi of
@@ -225,7 +239,7 @@ def coupled_neumann_flow_corrected(s):
     return coupled_flow_checks(s, Q_Pi=False)
 
 
-@claim("coupled-neumann-momentum", paper=("C-eq",), kind="pb",
+@claim("coupled-neumann-momentum", paper=("C-eq",), kind="pb", exact_max_n=SYMBOLIC_N_MAX,
        statement=r"\tfrac{d}{dt}\left(X^TP-P^TX+Y^TQ-Q^TY\right)=0\ \text{along (C-eq)}")
 def coupled_neumann_momentum(s):
     """For every κ, the momentum XᵀP − PᵀX + YᵀQ − QᵀY of the right diagonal SO(r)-action is conserved by the flow of (C-neumann), and the Hamiltonian is invariant under that action."""
@@ -277,7 +291,7 @@ _BIG_ERRATUM = """with the printed L(nu), A(nu) = L_+(nu) the flow does not impl
        A(nu) = L_+(nu) (equivalently dL/dt = [L(nu), L_-(nu)])."""
 
 
-@claim("coupled-big-lax-normal", paper=("so(n,n)", "C-eq"), kind="lax",
+@claim("coupled-big-lax-normal", paper=("so(n,n)", "C-eq"), kind="lax", exact_max_n=SYMBOLIC_N_MAX,
        fails_at=lambda n, r: n >= 2,
        erratum="(so(n,n)) for kappa = 0: " + _BIG_ERRATUM,
        statement=r"\kappa=0:\ " + _BIG)
@@ -292,7 +306,7 @@ def coupled_big_lax_normal_corrected(s):
     return {"so(n,n)": big_lax_residual(s, H_coupled(NORMAL), corrected=True)}
 
 
-@claim("coupled-big-lax-not-euclidean", paper=("so(n,n)", "C-eq"), kind="not", expect="nonzero",
+@claim("coupled-big-lax-not-euclidean", paper=("so(n,n)", "C-eq"), kind="not", exact_max_n=SYMBOLIC_N_MAX, expect="nonzero",
        sizes=admissible(r_min=2, condition="r >= 2 (for r = 1 all the metrics coincide)"),
        statement=r"\kappa=-\tfrac12:\ \dot L(\nu)\neq[A(\nu),L(\nu)]\ \text{along (C-eq)},\ "
                  r"L(\nu)=\nu\begin{pmatrix}0&A\\A&0\end{pmatrix}+\begin{pmatrix}PX^T-XP^T&0\\0&QY^T-YQ^T\end{pmatrix}"
@@ -337,7 +351,7 @@ _DUAL_C = (r"\tfrac{d}{dt}\mathcal L(\lambda)=[\mathcal L(\lambda),\mathcal A(\l
            r"\mathbf I_r&D_1&0&0\\0&-\lambda&D_2&\Pi\\0&0&\mathbf I_r&D_2\end{pmatrix}")
 
 
-@claim("coupled-dual-lax", paper=("dual-DC", "LA3*C", "LA4*C", "C-L"), kind="lax",
+@claim("coupled-dual-lax", paper=("dual-DC", "LA3*C", "LA4*C", "C-L"), kind="lax", exact_max_n=SYMBOLIC_N_MAX,
        statement=r"\kappa=0:\ " + _DUAL_C + r",\ D_1=X^TP,\ D_2=Y^TQ")
 def coupled_dual_lax(s):
     """Theorem dual-DC: the r-coupled Neumann system (C-eq) with κ = 0 implies the 4r×4r Lax equation (LA3*C) with the printed 𝓛(λ) and 𝓐(λ) of (LA4*C), Λ, Π of (C-L)."""
@@ -345,7 +359,7 @@ def coupled_dual_lax(s):
     return {"LA3*C": dual_coupled_residual(s, H_coupled(NORMAL), diagonal)}
 
 
-@claim("coupled-perturbed-big-lax", paper=("so(n,n)", "C-neumann"), kind="lax",
+@claim("coupled-perturbed-big-lax", paper=("so(n,n)", "C-neumann"), kind="lax", exact_max_n=SYMBOLIC_N_MAX,
        fails_at=lambda n, r: n >= 2,
        erratum="(so(n,n)) for the perturbed Hamiltonian H_kappa, every kappa: " + _BIG_ERRATUM,
        statement=r"H_\kappa=T_\kappa+\tr(X^TAY)-2\kappa\tr(X^TP\,Y^TQ):\ " + _BIG + r"\ \text{for every }\kappa")
@@ -360,7 +374,7 @@ def coupled_perturbed_big_lax_corrected(s):
     return {"so(n,n)": big_lax_residual(s, H_perturbed(FREE_KAPPA), corrected=True)}
 
 
-@claim("coupled-perturbed-dual-lax", paper=("LA3*C", "LA4*C", "C-neumann"), kind="lax",
+@claim("coupled-perturbed-dual-lax", paper=("LA3*C", "LA4*C", "C-neumann"), kind="lax", exact_max_n=SYMBOLIC_N_MAX,
        statement=r"H_\kappa:\ " + _DUAL_C + r",\ D_1=(1+2\kappa)X^TP+2\kappa Y^TQ,\ "
                  r"D_2=2\kappa X^TP+(1+2\kappa)Y^TQ\ \text{for every }\kappa")
 def coupled_perturbed_dual_lax(s):
@@ -410,7 +424,7 @@ def complex_acceleration(s, z):
     return acc["Z"]
 
 
-@claim("complex-neumann-flow", paper=("W0", "W-Lag", "W-eq", "W-L"), kind="id",
+@claim("complex-neumann-flow", paper=("W0", "W-Lag", "W-eq", "W-L"), kind="id", exact_max_n=SYMBOLIC_N_MAX,
        statement=r"L=\tfrac12\tr(\dot Z^T\dot{\bar Z})-\tfrac12\tr(Z^TA\bar Z),\ \bar Z^TZ=\mathbf I_r:\quad "
                  r"\ddot Z=-AZ+Z\Lambda,\ \ddot{\bar Z}=-A\bar Z+\bar Z\bar\Lambda,\ "
                  r"\Lambda=\bar Z^TAZ-\dot{\bar Z}^T\dot Z=\bar\Lambda^T")
@@ -454,7 +468,7 @@ def complex_lax_residual(s, flipped):
     return derivative(s, L, z, flow_complex(s, z)) - comm(L(s, z), A_dual_complex(s, z))
 
 
-@claim("complex-neumann-dual-lax", paper=("dual-complex", "LA3*", "W-eq", "W-L"), kind="lax",
+@claim("complex-neumann-dual-lax", paper=("dual-complex", "LA3*", "W-eq", "W-L"), kind="lax", exact_max_n=SYMBOLIC_N_MAX,
        fails_at=lambda n, r: True,
        erratum="""Theorem dual-complex: with (I_n - lambda A)^{-1} in the off-diagonal blocks of L(lambda), as
        printed in (LA3*), the Neumann system (W-eq) on W(n, r) does not imply dL/dt = [L, A].  It does with
@@ -474,7 +488,7 @@ def complex_neumann_dual_lax_corrected(s):
     return {"LA3*": complex_lax_residual(s, lambda t: t.resolvent(t.lam))}
 
 
-@claim("complex-neumann-momenta", paper=("W-eq", "u(1)"), kind="pb",
+@claim("complex-neumann-momenta", paper=("W-eq", "u(1)"), kind="pb", exact_max_n=SYMBOLIC_N_MAX,
        statement=r"\tfrac{d}{dt}\psi_0=0,\ \psi_0=Z^T\dot{\bar Z}-\dot Z^T\bar Z;\quad \tfrac{d}{dt}\psi_j=0,\ "
                  r"\psi_j=\sum_{i=1}^r\dot z_i^j\bar z_i^j-z_i^j\dot{\bar z}_i^j\ \text{along (W-eq)}")
 def complex_neumann_momenta(s):
