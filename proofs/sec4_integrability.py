@@ -344,14 +344,17 @@ def H_normal(t):
     return t.killing(t.Phi, t.Phi) / 2
 
 
-@claim("noether-normal-metric", paper=("bols-jov", "SO(n)-inv", "normal_metric"), kind="pb",
+@claim("noether-normal-metric", paper=("bols-jov", "SO(n)-inv", "normal_metric", "man", "com"), kind="pb",
        statement=r"\{\Phi^*(C^\infty(so(n))),C^\infty(T^*V_{n,r})^{SO(n)}\}=0:\ \{\Phi_\xi,\Psi_\eta\}="
-                 r"\{\Phi_\xi,(p_i,p_j)\}=\{\tr\Phi^4,(p_i,p_j)\}=0;\quad \{H_0,\Phi_\xi\}=\{H_0,\tr\Phi^4\}="
+                 r"\{\Phi_\xi,(p_i,p_j)\}=\{\tr\Phi^4,(p_i,p_j)\}=\{\tr(\lambda A+\Phi)^3,(p_i,p_j)\}=0;\quad \{H_0,\Phi_\xi\}=\{H_0,\tr\Phi^4\}="
                  r"\{H_0,\Psi_\eta\}=\{H_0,(p_i,p_j)\}=0")
 def noether_integrals_of_the_normal_metric(s):
-    """The proof of Theorem bols-jov: by the Noether theorem Φ*(C∞(so(n))) (Φ_ξ, tr Φ⁴) commutes with the SO(n)-invariant functions Ψ_ij, (p_i, p_j), and H₀ = ½<Φ, Φ> commutes with both sets (with Φ*(C∞(so(n))) because h ↦ h∘Φ is a morphism of Poisson structures and ½<μ, μ> is a Casimir)."""
+    """The proof of Theorem bols-jov: by the Noether theorem Φ*(C∞(so(n))) (Φ_ξ, tr Φ⁴, and the integrals tr(λA + Φ)³ of (man), so that (man) and the SO(n)-invariant (com) commute, as the Remark after Theorem man says) commutes with the SO(n)-invariant functions Ψ_ij, (p_i, p_j), and H₀ = ½<Φ, Φ> commutes with both sets (with Φ*(C∞(so(n))) because h ↦ h∘Φ is a morphism of Poisson structures and ½<μ, μ> is a Casimir)."""
     trPhi4 = lambda t: power_trace(t, t.Phi, 4)   # noqa: E731
+    man3 = lambda t: power_trace(t, t.lam * t.A + t.Phi, 3)   # noqa: E731
     return {
+        "{tr(lambda A + Phi)^3, Psi_eta}": s.bracket(man3, _psi_eta),
+        "{tr(lambda A + Phi)^3, (p_i, p_j)}": s.bracket(man3, _gram),
         "{Phi_xi, Psi_eta}": s.bracket(_phi_xi, _psi_eta),
         "{Phi_xi, (p_i, p_j)}": s.bracket(_phi_xi, _gram),
         "{tr Phi^4, Psi_eta}": s.bracket(trPhi4, _psi_eta),

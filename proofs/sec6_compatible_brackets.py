@@ -86,6 +86,12 @@ def H_neum0(t):
     return t.tr(t.P.T @ t.P) / 2 - t.tr(XtP @ XtP) / 2 + t.tr(t.X.T @ t.A @ t.X) / 2
 
 
+def H_neum_kappa(t):
+    """(neumann): ½tr(PᵀP) − (½ + κ)tr((XᵀP)²) + ½tr(XᵀAX)."""
+    XtP = t.X.T @ t.P
+    return t.tr(t.P.T @ t.P) / 2 - (t.q(1, 2) + t.kappa) * t.tr(XtP @ XtP) + t.tr(t.X.T @ t.A @ t.X) / 2
+
+
 def H_cpb_value(s, x):
     """The Hamiltonian of the Remark after Theorem NEUMANN: H = ½<h, h> − <A, v>, x = h + v."""
     return s.killing(skew(x), skew(x)) / 2 - s.killing(s.A, sym(x))
@@ -235,9 +241,9 @@ def J(t, k):
 @claim("reduced-bracket-casimirs", paper=("REDUCED_BRACKET", "torus"), kind="pb", exact_max_n=4,
        sizes=admissible(5, r_min=2, condition="r >= 2 (J_k exist for k <= [r/2])"),
        statement=r"X_{J_k}=(X\omega,P\omega),\ \omega=-4k\Psi^{2k-1}\in so(r);\quad \{J_k,\langle\Theta,a\rangle\}="
-                 r"\{J_k,\Psi_\eta\}=\{\langle\Theta,a\rangle,\Psi_\eta\}=0,\quad J_k=\tr\Psi^{2k},\ k\le[r/2]")
+                 r"\{J_k,\Psi_\eta\}=\{\langle\Theta,a\rangle,\Psi_\eta\}=\{J_k,H_{neum,\kappa}\}=0,\quad J_k=\tr\Psi^{2k},\ k\le[r/2]")
 def psi_powers_are_casimirs_of_the_reduced_bracket(s):
-    """The Hamiltonian vector field of J_k = tr(Ψ^{2k}) (k ≤ [r/2]) is the infinitesimal right action of ω = −4kΨ^{2k−1} ∈ so(r), tangent to the SO(r)-orbits, so J_k commutes with every SO(r)-invariant function (j_k is a Casimir of the reduced bracket {,}′), in particular with the components of Θ; and the functions (torus) commute with Ψ."""
+    """The Hamiltonian vector field of J_k = tr(Ψ^{2k}) (k ≤ [r/2]) is the infinitesimal right action of ω = −4kΨ^{2k−1} ∈ so(r), tangent to the SO(r)-orbits, so J_k commutes with every SO(r)-invariant function (j_k is a Casimir of the reduced bracket {,}′), in particular with the components of Θ, and is an integral of the Neumann flows (No); and the functions (torus) commute with Ψ."""
     Theta_a = lambda t: t.killing(Theta(t), gl_generic(t, "a"))   # noqa: E731
     checks = {"{<Theta, a>, Psi_eta}": s.bracket(Theta_a, Psi_eta)}
     for k in range(1, s.r // 2 + 1):
@@ -250,6 +256,7 @@ def psi_powers_are_casimirs_of_the_reduced_bracket(s):
         checks[f"X_J{k} - (X omega, P omega): P"] = flow.Pdot - s.P @ omega
         checks[f"{{J_{k}, <Theta, a>}}"] = s.bracket(lambda t, k=k: J(t, k), Theta_a)
         checks[f"{{J_{k}, Psi_eta}}"] = s.bracket(lambda t, k=k: J(t, k), Psi_eta)
+        checks[f"{{J_{k}, H_neum,kappa}}"] = s.bracket(lambda t, k=k: J(t, k), H_neum_kappa)
     return checks
 
 
