@@ -20,7 +20,7 @@ ON_V_NN1 = admissible(n_max=5, n_min=2, where=lambda n, r: r == n - 1, condition
 
 def unit(s, i):
     """The i-th standard basis vector of ℝʳ (a column, i from 0)."""
-    return s.mat([[1 if j == i else 0] for j in range(s.r)], ("r", "?"))
+    return twisted.basis_vector(s, i)
 
 
 def col(s, i):
@@ -53,7 +53,7 @@ def columns_to_matrix(s, vectors):
 
 def projector(s, k):
     """D_k = diag(1, ..., 1, 0, ..., 0) (k ones) on ℝʳ."""
-    return s.mat([[1 if i == j and i < k else 0 for j in range(s.r)] for i in range(s.r)], ("r", "r"))
+    return twisted.coordinate_projector(s, k)
 
 
 # -- the twisted form on T*V(n, 2) -------------------------------------------------------------
@@ -393,7 +393,7 @@ def magnetic_grassmannian_flow(s):
 
 def last(s):
     """e_n, the last column of 𝒳 = X ∈ SO(n) (r = n)."""
-    return col(s, s.r - 1)
+    return s.X @ twisted.last_basis_vector(s)
 
 
 def H_CP(s):
@@ -402,15 +402,10 @@ def H_CP(s):
     return s.killing(s.Phi, s.Phi) / 2 + (s.tr(s.A) - dot(s, e, s.A @ e)) / 2
 
 
-def first_columns(s, k):
-    """The r × k matrix (E_1, ..., E_k) of ℝʳ."""
-    return s.mat([[1 if i == j else 0 for j in range(k)] for i in range(s.r)], ("r", "?"))
-
-
 def stiefel_image(s):
     """(iden1) backwards: (𝒳, 𝒫) ↦ (X', P') ∈ T*V(n, n−1), X' = (e_1, ..., e_{n−1}), P' the cotangent
     lift (P' = MX' − ½X'X'ᵀMX', the unique covector with Φ(X', P') = M)."""
-    Xp = s.X @ first_columns(s, s.r - 1)
+    Xp = s.X @ twisted.leading_basis_vectors(s)
     M = s.Phi
     return Xp, M @ Xp - Xp @ (Xp.T @ M @ Xp) / 2
 
@@ -429,7 +424,7 @@ def flow_N0_at(s, X, P):
 
 def right_so_n_minus_1(s):
     """The right action of η' ∈ so(n−1) ⊂ so(n) (η' = DηD, D = diag(1, ..., 1, 0))."""
-    D = projector(s, s.r - 1)
+    D = s.Ir - twisted.last_basis_vector(s) @ twisted.last_basis_vector(s).T
     eta = D @ s.eta @ D
     return {"X": s.X @ eta, "P": s.P @ eta}
 
@@ -440,15 +435,14 @@ def right_so_n_minus_1(s):
                  r"M=\mathcal P\mathcal X^T-\mathcal X\mathcal P^T=\Phi(X,P)")
 def clebsch_perelomov_hamiltonian(s):
     """Under (iden1), T*V_{n,n−1} ≅ T*SO(n) (the cotangent lift (𝒳, 𝒫) ↦ (X, P), X = (e₁, …, e_{n−1}), P = MX − ½XXᵀMX), the momentum maps agree, Φ(X, P) = M, the normal-metric Neumann Hamiltonian becomes the symmetric Clebsch–Perelomov Hamiltonian H_CP of (mag*), which is right SO(n−1)-invariant, and the Dirac flow of H_CP on T*SO(n) is carried to the Neumann flow (N0_XP2) on T*V_{n,n−1}."""
-    n = s.n
     e = last(s)
+    E = twisted.leading_basis_vectors(s)
     Xp, Pp = stiefel_image(s)
     flow = s.dirac_flow(H_CP)
     image = flow_N0_at(s, Xp, Pp)
-    D = projector(s, n - 1)
     return {
-        "e_n (x) e_n = I - sum e_i (x) e_i": e @ e.T - (s.In - s.X @ D @ s.X.T),
-        "X'^T X' = I_{n-1}": Xp.T @ Xp - s.identity(n - 1),
+        "e_n (x) e_n = I - sum e_i (x) e_i": e @ e.T - (s.In - Xp @ Xp.T),
+        "X'^T X' = I_{n-1}": Xp.T @ Xp - E.T @ E,
         "X'^T P' + P'^T X' = 0": Xp.T @ Pp + Pp.T @ Xp,
         "Phi(X', P') = M": Pp @ Xp.T - Xp @ Pp.T - s.Phi,
         "H_neum,0(X', P') = H_CP": neumann_normal_at(s, Xp, Pp) - H_CP(s),
@@ -606,7 +600,7 @@ def H_CPB(s, k):
 
 def cpb_hamiltonians(s):
     """H_CPB for k = 1, ..., n − 1 (k = n: a constant potential)."""
-    return [(k, lambda t, k=k: H_CPB(t, k)) for k in range(1, s.r)]
+    return [(k, lambda t, k=k: H_CPB(t, k)) for k in twisted.column_splittings(s)]
 
 
 @claim("cpb-euler", paper=("Euler", "CPB", "Poisson"), kind="id", sizes=ON_SO_N,

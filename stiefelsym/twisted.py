@@ -239,11 +239,51 @@ def form(s, u: Mapping[str, Mat], v: Mapping[str, Mat], F: Mat | None = None) ->
     return s.field.normalize(s.tr(uP.T @ vX) - s.tr(uX.T @ vP) + s.eps * s.tr(uX @ Fm @ vX.T))
 
 
+def basis_vector(s, i: int) -> Mat:
+    """E_{i+1} ∈ ℝʳ as a column (index space ("r", "?")), so that XE_{i+1} = e_{i+1}: the appendix writes
+    its flows column by column.  The dimension-free backend has no columns (NeedsCoordinates)."""
+    s = _scene(s, f"the column e_{i + 1} = X E_{i + 1} (a basis vector of R^r)")
+    if not 0 <= i < s.r:
+        raise ValueError(f"E_{i + 1} is not a basis vector of R^{s.r}")
+    return s.mat([[1 if j == i else 0] for j in range(s.r)], ("r", "?"))
+
+
+def coordinate_projector(s, k: int) -> Mat:
+    """D_k = diag(1, ..., 1, 0, ..., 0) (k ones) on ℝʳ: the splitting ℝʳ = ℝᵏ ⊕ ℝʳ⁻ᵏ of the first k columns
+    (NeedsCoordinates on the dimension-free backend)."""
+    s = _scene(s, f"the first {k} columns of X (the splitting of R^r)")
+    return s.mat([[1 if i == j and i < k else 0 for j in range(s.r)] for i in range(s.r)], ("r", "r"))
+
+
+def first_basis_vectors(s, k: int) -> Mat:
+    """The r × k matrix (E_1, ..., E_k) (column space untyped): X(E_1, ..., E_k) = (e_1, ..., e_k)."""
+    s = _scene(s, f"the first {k} columns of X")
+    return s.mat([[1 if i == j else 0 for j in range(k)] for i in range(s.r)], ("r", "?"))
+
+
+def last_basis_vector(s) -> Mat:
+    """E_r ∈ ℝʳ: X E_r is the last column (e_n of 𝒳 ∈ SO(n) when r = n)."""
+    s = _scene(s, "the last column e_n = X E_n of X in SO(n)")
+    return basis_vector(s, s.r - 1)
+
+
+def leading_basis_vectors(s) -> Mat:
+    """(E_1, ..., E_{r−1}): X(E_1, ..., E_{r−1}) = (e_1, ..., e_{n−1}) when r = n (iden1)."""
+    s = _scene(s, "the columns e_1, ..., e_(n-1) of X in SO(n)")
+    return first_basis_vectors(s, s.r - 1)
+
+
+def column_splittings(s) -> list[int]:
+    """k = 1, ..., r − 1: the splittings of the columns into the first k and the last r − k."""
+    s = _scene(s, "the splittings of the columns of X into the first k and the last r - k")
+    return list(range(1, s.r))
+
+
 def at_point(s, X: Mat, P: Mat) -> Scene:
     """The scene's problem at another point (X, P) of T*V (same field, parameters and record): its
     gradients, brackets and flows, the twisted ones included, are taken at (X, P).  (X, P) must lie on
     T*V (a claim checks the constraints it relies on)."""
-    s = _scene(s, "a scene at another point")
+    s = _scene(s, "the flows at another point (X, P) of T*V, given by matrices")
     if s.realization != "standard":
         raise ValueError("a scene at another point is offered for the realization (cond_XP) only")
     for M, name in ((X, "X"), (P, "P")):
@@ -257,5 +297,6 @@ def at_point(s, X: Mat, P: Mat) -> Scene:
 
 
 __all__ = ["magnetic_matrix", "ambient_bracket", "constraint_bracket_matrix", "bracket", "ambient_flow",
-           "flow", "multiplier_flow", "form", "at_point"]
+           "flow", "multiplier_flow", "form", "basis_vector", "coordinate_projector", "first_basis_vectors",
+           "last_basis_vector", "leading_basis_vectors", "column_splittings", "at_point"]
 
