@@ -1,6 +1,396 @@
 """§6 The dimension lemmas: LEMA1, LEMA2 and the kernels, the isotropic tori (dim_fol, NEUMANN), each with a two-sided certificate."""
 from __future__ import annotations
 
-from stiefelsym import admissible, claim, comm  # noqa: F401
+from stiefelsym import Count, Rank, admissible, claim, comm
 
 SECTION = "6"
+
+
+# -- the printed dimensions ----------------------------------------------------------------------
+
+def dim_so(m):
+    return m * (m - 1) // 2 if m > 1 else 0
+
+
+def dim_sym(m):
+    return m * (m + 1) // 2
+
+
+def dim_V(n, r):
+    return r * n - r * (r + 1) // 2
+
+
+def leaf_printed(n, r):
+    """(dimension): 2l = 2r(n − r) + r(r − 1)/2 − [r/2]."""
+    return 2 * r * (n - r) + r * (r - 1) // 2 - r // 2
+
+
+def ker_lema1_printed(n, r):
+    """Proof of LEMA1: dim ker Λ1(h + v) = rank so(r) + dim so(n − r) + dim Sym(r) + dim Sym(n − r)."""
+    return r // 2 + dim_so(n - r) + dim_sym(r) + dim_sym(n - r)
+
+
+def ker_printed(n, r):
+    """(KER): dim so(r)_{h1} ⊕ Sym(r) ⊕ gl(n − r)."""
+    return r // 2 + dim_sym(r) + (n - r) ** 2
+
+
+def torus_twice_printed(n, r):
+    """Twice (dim_fol): 2r(n − r) + r(r − 1)/2 − [r/2] + 2[r/2]."""
+    return leaf_printed(n, r) + 2 * (r // 2)
+
+
+# -- gl(n) = so(n) + Sym(n) and the pencil Λ1, Λ2 ----------------------------------------------------
+
+def unit(s, m, k, a, b, tags):
+    """The m x k matrix unit E_ab."""
+    return s.mat([[s.q(1) if (i, j) == (a, b) else s.q(0) for j in range(k)] for i in range(m)], tags)
+
+
+def gl_basis(s):
+    """E_i∧E_j (i < j), then E_ij + E_ji (i < j) and E_ii: a basis of so(n) + Sym(n); and its kinds."""
+    n, tags = s.n, ("n", "n")
+    basis, kinds = [], []
+    for i in range(n):
+        for j in range(i + 1, n):
+            basis.append(unit(s, n, n, i, j, tags) - unit(s, n, n, j, i, tags))
+            kinds.append(("so", i, j))
+    for i in range(n):
+        for j in range(i, n):
+            E = unit(s, n, n, i, j, tags)
+            basis.append(E + E.T if i != j else E)
+            kinds.append(("sym", i, j))
+    return basis, kinds
+
+
+def pair(C, kind):
+    """tr(C u) for the basis element u of the given kind, read off the entries of C."""
+    what, i, j = kind
+    if what == "so":
+        return C[j, i] - C[i, j]
+    return C[j, i] + C[i, j] if i != j else C[i, i]
+
+
+def form_matrix(s, y, kinds_rows, basis_rows, kinds_cols, drop_sym_sym):
+    """(tr(y [u_a, u_b])) = (tr([y, u_a] u_b)): −2 times <y, [u_a, u_b]>; with ``drop_sym_sym`` the
+    Sym × Sym block is 0 (Λ1, the semidirect product so(n) ⊕_ad Sym(n))."""
+    rows = []
+    for u, ka in zip(basis_rows, kinds_rows):
+        C = comm(y, u)
+        rows.append([s.q(0) if drop_sym_sym and ka[0] == "sym" and kb[0] == "sym" else pair(C, kb)
+                     for kb in kinds_cols])
+    return rows
+
+
+def lambda1(s, x):
+    basis, kinds = gl_basis(s)
+    return s.mat(form_matrix(s, x, kinds, basis, kinds, True))
+
+
+def lambda2(s, x, A):
+    basis, kinds = gl_basis(s)
+    return s.mat(form_matrix(s, x - A, kinds, basis, kinds, False))
+
+
+def theta(s):
+    """Θ = Φ + XXᵀ = h + v."""
+    return s.Phi + s.X @ s.X.T
+
+
+def entries(s, M):
+    n = s.n
+    return [M[i, j] for i in range(n) for j in range(n)]
+
+
+def linear_system(s, image):
+    """The matrix of a linear map gl(n) -> (n x n matrices)^k, u ↦ image(ξ, η) (u = ξ + η), in the
+    basis of gl(n) (columns) and the entries of the images (rows)."""
+    basis, kinds = gl_basis(s)
+    zero = s.zeros(s.n, s.n, ("n", "n"))
+    columns = []
+    for u, k in zip(basis, kinds):
+        xi, eta = (u, zero) if k[0] == "so" else (zero, u)
+        columns.append([e for M in image(xi, eta) for e in entries(s, M)])
+    return s.mat([list(row) for row in zip(*columns)])
+
+
+EQUIVARIANCE_X = ("Λ1 is Ad_O(n)-invariant and Θ(gX, gP) = gΘ(X, P)gᵀ, so the rank at Θ(X, P) is O(n)-invariant; "
+                  "the basis of gl(n) only lists the bilinear form in coordinates")
+EQUIVARIANCE_XA = ("Λ1 and Λ2 at (Θ, A) are covariant under (X, P, A) ↦ (gX, gP, gAgᵀ), so the ranks are "
+                   "O(n)-invariant; the basis of gl(n) only lists the bilinear forms in coordinates")
+
+
+# -- Lemma LEMA1 -----------------------------------------------------------------------------------
+
+@claim("pencil-leaf-dimension", paper=("dimension", "LEMA1", "L1", "L2"), kind="dim",
+       sizes=admissible(4), equivariance=EQUIVARIANCE_X,
+       statement=r"\rank\Lambda_1(h+v)=n^2-\dim\ker\Lambda_1(h+v)=2r(n-r)+\tfrac{r(r-1)}2-\left[\tfrac r2\right],"
+                 r"\quad \xi+\eta\in\ker\Lambda_1(h+v)\iff[\xi,v]=0,\ [\xi,h]+[\eta,v]=0")
+def pencil_leaf_dimension(s):
+    """Lemma LEMA1: at a generic h + v = Θ(X, P) the bracket Λ1 has rank (dimension), its kernel is the solution space of (L1), (L2), of dimension rank so(r) + dim so(n−r) + dim Sym(r) + dim Sym(n−r)."""
+    n, r = s.n, s.r
+    h, v = s.Phi, s.X @ s.X.T
+    L1L2 = linear_system(s, lambda xi, eta: [comm(xi, v), comm(xi, h) + comm(eta, v)])
+    return {
+        "rank Lambda1(h+v)": Rank(lambda1(s, h + v), leaf_printed(n, r), generic=True,
+                                  meaning="the dimension of a generic symplectic leaf in Θ(T*V)"),
+        "rank of (L1), (L2)": Rank(L1L2, n * n - ker_lema1_printed(n, r), generic=True,
+                                   meaning="n² − dim of the solutions of (L1), (L2)"),
+        "n^2 - dim ker = (dimension)": Count(n * n - ker_lema1_printed(n, r), leaf_printed(n, r),
+                                             "the last line of the proof of LEMA1"),
+    }
+
+
+def generic_leaf_rank(n):
+    """The rank n² − n of Λ1 at a generic point of gl(n) (its Casimirs: tr(h + v)^k... n of them)."""
+    return n * n - n
+
+
+@claim("pencil-leaves-singular", paper=("dimension",), kind="dim",
+       sizes=admissible(4), equivariance=EQUIVARIANCE_X,
+       fails_at=lambda n, r: r == 1 and n <= 2,
+       erratum="""(dimension) says 2l < n² − n: the leaves in Θ(T*V) are singular leaves of (gl(n), Λ1).  For
+       (n, r) = (1, 1) and (2, 1) the two sides are equal (0 = 0 and 2 = 2): there Θ(T*V) meets the regular
+       leaves.  The strict inequality holds at every other size (checked at every size of the tables).""",
+       statement=r"2l=2r(n-r)+\tfrac{r(r-1)}2-\left[\tfrac r2\right]<n^2-n=\rank\Lambda_1\ \text{at a generic point of } gl(n)")
+def pencil_leaves_singular(s):
+    """(dimension): the generic leaf in Θ(T*V) is singular in (gl(n), Λ1): 2l < n² − n, the rank of Λ1 at a generic point of gl(n)."""
+    n, r = s.n, s.r
+    y = s.generic("Y", "n", "n")
+    return {
+        "rank Lambda1 at a generic point of gl(n)": Rank(lambda1(s, y), generic_leaf_rank(n), generic=True,
+                                                         meaning="n² − n"),
+        "(dimension) < n^2 - n": Count(int(leaf_printed(n, r) < generic_leaf_rank(n)), 1,
+                                       "the leaves in Θ(T*V) are singular leaves of (gl(n), Λ1)"),
+    }
+
+
+@pencil_leaves_singular.claim.correction("2l <= n² − n (equality at (1,1) and (2,1))")
+def pencil_leaves_singular_corrected(s):
+    n, r = s.n, s.r
+    y = s.generic("Y", "n", "n")
+    return {
+        "rank Lambda1 at a generic point of gl(n)": Rank(lambda1(s, y), generic_leaf_rank(n), generic=True),
+        "(dimension) <= n^2 - n": Count(int(leaf_printed(n, r) <= generic_leaf_rank(n)), 1,
+                                        "the leaves in Θ(T*V) are leaves of (gl(n), Λ1) of rank at most n² − n"),
+    }
+
+
+# -- Lemma LEMA2: (A1) ---------------------------------------------------------------------------------
+
+@claim("pencil-rank-A1", paper=("LEMA2", "LAMBDA", "L3", "L4"), kind="dim",
+       sizes=admissible(4), exact_max_n=3, equivariance=EQUIVARIANCE_XA,
+       statement=r"\rank\Lambda_{1,-1}(h+v)=\rank\Lambda_{1,t}(h+v)=\rank\Lambda_2(h+v)=n^2-n,\quad "
+                 r"\xi+\eta\in\ker\Lambda_{1,-1}\iff[\eta,A]=0,\ [\xi,A]-[\eta,h]=0")
+def pencil_rank_A1(s):
+    """(A1) of Lemma LEMA2: at a generic h + v = Θ(X, P) the brackets Λ_{1,−1} (LAMBDA), Λ2 and Λ1 + tΛ2 (t generic) have the maximal rank n² − n, and the kernel of Λ_{1,−1} is the n-dimensional solution space of (L3), (L4)."""
+    n = s.n
+    h, v = s.Phi, s.X @ s.X.T
+    x, A = h + v, s.A
+    L1, L2 = lambda1(s, x), lambda2(s, x, A)
+    t = s.scalar("t")
+    L3L4 = linear_system(s, lambda xi, eta: [comm(eta, A), comm(xi, A) - comm(eta, h)])
+    return {
+        "rank Lambda_{1,-1}": Rank(L1 - L2, n * n - n, generic=True, meaning="(A1) at λ1 + λ2 = 0"),
+        "rank Lambda_2": Rank(L2, n * n - n, generic=True, meaning="(A1) at λ1 = 0"),
+        "rank Lambda_1 + t Lambda_2": Rank(L1 + L2 * t, n * n - n, generic=True, meaning="(A1) at a generic t"),
+        "rank of (L3), (L4)": Rank(L3L4, n * n - n, generic=True, meaning="n² − n: the solutions are n-dimensional"),
+    }
+
+
+# -- Lemma LEMA2: (KER), (A2), (L5)–(L8) at the paper's point ---------------------------------------------
+
+def paper_point(s):
+    """X0 = (E_1..E_r), h = diag(h1, 0) with h1 generic in so(r), v = X0X0ᵀ, A = diag(a_1..a_n) generic:
+    built from the claim's own parameters (the point of the proof of (A2))."""
+    n, r = s.n, s.r
+    X0 = s.mat([[s.q(1) if i == j else s.q(0) for j in range(r)] for i in range(n)], ("n", "r"))
+    h1 = s.eta + s.eta          # 2η, η a generic element of so(r)
+    A = s.mat([[s.scalar(f"a{i}") if i == j else s.q(0) for j in range(n)] for i in range(n)], ("n", "n"))
+    return X0, X0 @ h1 @ X0.T, X0 @ X0.T, h1, A
+
+
+def printed_kernel(s, X0, h1):
+    """A spanning set of so(r)_{h1} ⊕ Sym(r) ⊕ gl(n − r): odd powers of h1, Sym(r), Q E_ab Q
+    (Q = I − X0X0ᵀ)."""
+    n, r = s.n, s.r
+    out = []
+    power = h1
+    for _ in range(r // 2):
+        out.append(X0 @ power @ X0.T)
+        power = power @ h1 @ h1
+    for a in range(r):
+        for b in range(a, r):
+            E = unit(s, r, r, a, b, ("r", "r"))
+            out.append(X0 @ (E + E.T if a != b else E) @ X0.T)
+    Q = s.In - X0 @ X0.T
+    out += [Q @ unit(s, n, n, a, b, ("n", "n")) @ Q for a in range(r, n) for b in range(r, n)]
+    return out
+
+
+def lambda_forms(s, x, A):
+    """Λ1(z, w) and Λ_{1,−1}(z, w) as functions of two elements of gl(n) (up to the factor −2):
+    <y, [z, w]> = −½tr(y[z, w]) with the Sym × Sym part dropped for Λ1."""
+    half = s.q(1, 2)
+
+    def sym(M):
+        return (M + M.T) * half
+
+    def L1(z, w):
+        return s.tr(x @ comm(z, w)) - s.tr(x @ comm(sym(z), sym(w)))
+
+    def L1m1(z, w):
+        return L1(z, w) - s.tr((x - A) @ comm(z, w))
+    return L1, L1m1
+
+
+@claim("pencil-kernel-KER-A2", paper=("KER", "A2", "L7", "L8"), kind="dim",
+       sizes=admissible(4), exact_max_n=3, equivariance="the point is built from the claim's own parameters (no chart coordinate)",
+       statement=r"\ker\Lambda_1(h+v)=so(r)_{h_1}\oplus Sym(r)\oplus gl(n-r),\quad "
+                 r"\dim\{z\in\ker\Lambda_1\mid\Lambda_{1,-1}(z,\ker\Lambda_1)=0\}=n\quad (h=\mathrm{diag}(h_1,0))")
+def pencil_kernel_and_A2(s):
+    """At h = diag(h1, 0) with h1 generic and A diagonal, ker Λ1(h + v) is so(r)_{h1} ⊕ Sym(r) ⊕ gl(n−r) (KER) — the printed space lies in the kernel and has its dimension — and the kernel of Λ_{1,−1} restricted to it has dimension n (A2)."""
+    n, r = s.n, s.r
+    X0, h, v, h1, A = paper_point(s)
+    x = h + v
+    L1, L1m1 = lambda_forms(s, x, A)
+    K = printed_kernel(s, X0, h1)
+    test = s.xi + (s.generic("T", "n", "n") + s.generic("T", "n", "n").T)   # a generic element of gl(n)
+    restricted = s.mat([[L1m1(a, b) for b in K] for a in K])
+    return {
+        "rank Lambda1": Rank(lambda1(s, x), n * n - ker_printed(n, r), generic=True,
+                             meaning="n² − dim (KER)"),
+        "(KER) lies in ker Lambda1": [L1(k, test) for k in K],
+        "rank of the (KER) spanning set": Rank(s.mat([entries(s, k) for k in K]), ker_printed(n, r), generic=True,
+                                               meaning="dim so(r)_{h1} ⊕ Sym(r) ⊕ gl(n−r)"),
+        "(A2)": Rank(restricted, ker_printed(n, r) - n, generic=True,
+                     meaning="dim (KER) − n: the restriction of Λ_{1,−1} to ker Λ1 has an n-dimensional kernel"),
+    }
+
+
+def l5_l6_matrix(s, printed):
+    """The system (L5), (L6) on ξ1 ∈ so(r)_{h1} (odd powers of h1), η1 ∈ Sym(r), at A1 = diag(a_1..a_r):
+    (L6) as printed, [A1, η1] ∈ so(r)^⊥, or corrected, [A1, η1] ⟂ so(r)_{h1}."""
+    r = s.r
+    _, _, _, h1, A = paper_point(s)
+    A1 = s.mat([[s.scalar(f"a{i}") if i == j else s.q(0) for j in range(r)] for i in range(r)], ("r", "r"))
+    cartan, power = [], h1
+    for _ in range(r // 2):
+        cartan.append(power)
+        power = power @ h1 @ h1
+    zero = s.zeros(r, r, ("r", "r"))
+    unknowns = [(c, zero) for c in cartan]
+    for a in range(r):
+        for b in range(a, r):
+            E = unit(s, r, r, a, b, ("r", "r"))
+            unknowns.append((zero, E + E.T if a != b else E))
+    columns = []
+    for xi1, eta1 in unknowns:
+        L5 = comm(A1, xi1) - comm(h1, eta1)
+        C6 = comm(A1, eta1)
+        col = [L5[i, j] for i in range(r) for j in range(r)]
+        if printed:   # so(r)^⊥ in gl(r) is Sym(r): the skew matrix [A1, η1] must vanish
+            col += [C6[i, j] for i in range(r) for j in range(r)]
+        else:
+            col += [s.tr(C6 @ c) for c in cartan]
+        columns.append(col)
+    return s.mat([list(row) for row in zip(*columns)]), len(unknowns)
+
+
+@claim("pencil-L5-L6", paper=("L5", "L6"), kind="dim",
+       sizes=admissible(5, r_max=3), equivariance="the system is built from the claim's own parameters (no chart coordinate)",
+       fails_at=lambda n, r: r >= 3,
+       erratum="""The proof of Lemma LEMA2 says that the solutions of (L5), (L6) within so(r)_{h1} ⊕ Sym(r)
+       form an r-dimensional space.  With (L6) as printed, [A1, η1] ∈ so(r,C)^⊥ = Sym(r), the skew matrix
+       [A1, η1] must vanish, and the solutions form a 2-dimensional space for every r >= 3 (1 for r = 1, 2 for
+       r = 2).  What the restriction of Λ_{1,-1} to ker Λ1 gives (pairing with ζ1 in the Cartan subalgebra) is
+       [A1, η1] ⟂ so(r,C)_{h1}; with that (L6) the solutions are r-dimensional and (A2) follows.""",
+       statement=r"\dim\{(\xi_1,\eta_1)\in so(r)_{h_1}\oplus Sym(r)\mid [A_1,\xi_1]-[h_1,\eta_1]=0,\ "
+                 r"[A_1,\eta_1]\in so(r,\mathbb C)^\perp\}=r")
+def pencil_l5_l6(s):
+    """The solutions of (L5), (L6) in so(r)_{h1} ⊕ Sym(r) form an r-dimensional space (the proof of (A2), after Theorem 1.6 of Bolsinov)."""
+    M, unknowns = l5_l6_matrix(s, printed=True)
+    return {"(L5), (L6)": Rank(M, unknowns - s.r, generic=True, meaning="unknowns − r")}
+
+
+@pencil_l5_l6.claim.correction("(L6): [A1, η1] ⟂ so(r,C)_{h1} in place of [A1, η1] ∈ so(r,C)^⊥")
+def pencil_l5_l6_corrected(s):
+    M, unknowns = l5_l6_matrix(s, printed=False)
+    return {"(L5), (L6)": Rank(M, unknowns - s.r, generic=True, meaning="unknowns − r")}
+
+
+# -- the Casimirs: complete on the leaf (LEMA2) and the tori (NEUMANN, dim_fol) ---------------------------
+
+def casimir_gradient_rows(s, x, A):
+    """Coordinates (in the basis of gl(n), up to the diagonal Gram matrix) of the gradients of
+    tr(λh + v − λ²A)^k, k = 1..n, at 2n values of λ (degree <= 2k − 1 in λ: these span every λ)."""
+    n = s.n
+    basis, kinds = gl_basis(s)
+    half = s.q(1, 2)
+    h, v = (x - x.T) * half, (x + x.T) * half
+    gram_inv = {"so": s.q(1), "sym": s.q(-1)}
+    rows = []
+    for lam in range(2 * n):
+        L = s.q(lam)
+        M = h * L + v - A * (L * L)
+        power = s.In
+        for k in range(1, n + 1):
+            row = []
+            for kind in kinds:
+                g = pair(power, kind) * s.q(k)
+                g = g * L if kind[0] == "so" else g
+                row.append(g * (gram_inv[kind[0]] if kind[1] != kind[2] or kind[0] == "so" else s.q(-2)))
+            rows.append(row)
+            power = power @ M
+    return rows
+
+
+@claim("casimirs-complete-on-leaf", paper=("LEMA2", "central", "dimension"), kind="dim",
+       sizes=admissible(4), equivariance=EQUIVARIANCE_XA,
+       statement=r"\rank\{d f|_{T_x\mathcal O}: f\in\mathcal F\}=l=\tfrac12\dim\mathcal O,\quad x=\Theta(X,P)\ \text{generic}")
+def casimirs_complete_on_leaf(s):
+    """Lemma LEMA2: among the functions (central) there are l = ½(dimension) independent on a generic symplectic leaf 𝒪 ⊂ Θ(T*V) (the rank of df restricted to T_x𝒪 = Λ1(x)(gl(n)))."""
+    n, r = s.n, s.r
+    x = theta(s)
+    G = s.mat(casimir_gradient_rows(s, x, s.A))
+    return {"rank dF . Lambda1": Rank(G @ lambda1(s, x), leaf_printed(n, r) // 2, generic=True,
+                                      meaning="l independent Casimirs on the leaf")}
+
+
+def torus_functions(s, with_casimirs=True):
+    """The integrals of Theorem NEUMANN as scalar functions of the scene: tr(λΦ + XXᵀ − λ²A)^k
+    (k = 1..n, 2n values of λ) and the entries Ψ_ij, i < j."""
+    n, r = s.n, s.r
+    funcs = []
+    if with_casimirs:
+        for lam in range(2 * n):
+            for k in range(1, n + 1):
+                def f(t, lam=lam, k=k):
+                    L = t.q(lam)
+                    M = t.Phi * L + t.X @ t.X.T - t.A * (L * L)
+                    P = M
+                    for _ in range(k - 1):
+                        P = P @ M
+                    return t.tr(P)
+                funcs.append(f)
+    for i in range(r):
+        for j in range(i + 1, r):
+            funcs.append(lambda t, i=i, j=j: t.Psi[i, j])
+    return funcs
+
+
+@claim("neumann-torus-dimension", paper=("NEUMANN", "dim_fol", "torus"), kind="dim",
+       sizes=admissible(3), equivariance=EQUIVARIANCE_XA,
+       statement=r"2\dim V_{n,r}-\rank d\big(\Theta^*\mathcal F,\Psi\big)=\tfrac12\Big(2r(n-r)+\tfrac{r(r-1)}2-"
+                 r"\left[\tfrac r2\right]\Big)+\left[\tfrac r2\right]")
+def neumann_torus_dimension(s):
+    """Theorem NEUMANN: the integrals Θ*𝓕 (perelomov) and Ψ have 2dim V − (dim_fol) independent differentials on T*V, so the generic isotropic tori have the dimension (dim_fol) (the rank on T*V is the rank of the Jacobian with the constraints' rows, less r(r+1))."""
+    n, r = s.n, s.r
+    funcs = torus_functions(s)
+    rows = s.jacobian(lambda t: [f(t) for f in funcs]) + s.jacobian(s.constraints.build)
+    expected = 2 * dim_V(n, r) - torus_twice_printed(n, r) // 2 + r * (r + 1)
+    return {
+        "rank d(Theta*F, Psi, constraints)": Rank(s.mat(rows), expected, generic=True,
+                                                  meaning="2 dim V − (dim_fol) + r(r+1)"),
+        "(dim_fol) is an integer": Count(torus_twice_printed(n, r) % 2, 0, "2·(dim_fol) is even"),
+    }

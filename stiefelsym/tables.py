@@ -846,3 +846,254 @@ def compute_tables(n_max: int = 9, *, seed: int = 0, progress: Callable[[int, in
             if progress:
                 progress(n, r, T.seconds[(n, r)])
     return T
+
+
+# -- rendering -----------------------------------------------------------------------------------------
+
+#: the three tables of part (a): (title, quantity keys)
+GROUPS = (
+    ("§2–§4: the variety, SO(n)-invariants, orbits and the tori of the geodesic flows",
+     ("dimV", "ddim", "ddim_inv", "2l", "regular", "chain", "delta0", "delta0_complete", "delta", "delta_complete")),
+    ("§6: the pencil Λ1, Λ2 (Lemmas LEMA1, LEMA2) and the tori of the Neumann systems",
+     ("leaf", "leaf_pushforward", "complete_F", "A1", "A1_t", "KER", "A2", "torus", "torus_complete")),
+    ("§3, §7, §8: invariant metrics, Grassmannians, the count N",
+     ("invariant_forms", "NEUMANN2", "N", "N_vs_l")),
+)
+
+#: short column headings (Markdown, LaTeX)
+HEADINGS = {
+    "dimV": ("dim V", r"$\dim V$"), "ddim": ("ddim", r"ddim"), "ddim_inv": ("ddim (Ψ,PᵀP)", r"ddim$(\Psi,P^TP)$"),
+    "2l": ("2l", r"$2l$"), "regular": ("regular", r"reg."), "chain": ("ddim 𝔄", r"ddim$\,\mathfrak A$"),
+    "delta0": ("δ₀", r"$\delta_0$"), "delta0_complete": ("δ₀ (compl.)", r"$\delta_0$ c."),
+    "delta": ("δ", r"$\delta$"), "delta_complete": ("δ (compl.)", r"$\delta$ c."),
+    "leaf": ("2l (dimension)", r"$2l$ (dim.)"), "leaf_pushforward": ("2l via Θ", r"$2l$ via $\Theta$"),
+    "complete_F": ("l (LEMA2)", r"$l$ (LEMA2)"), "A1": ("(A1) t=−1", r"(A1) $t{=}{-1}$"),
+    "A1_t": ("(A1) any t", r"(A1) $t$"), "KER": ("KER", r"KER"), "A2": ("(A2)", r"(A2)"),
+    "torus": ("torus", r"torus"), "torus_complete": ("torus (compl.)", r"torus c."),
+    "NEUMANN2": ("NEUMANN2", r"NEU2"), "N": ("N", r"$N$"), "N_vs_l": ("N > l", r"$N>l$"),
+    "invariant_forms": ("inv. forms", r"inv.\ forms"),
+}
+
+
+def _fmt(x) -> str:
+    if isinstance(x, Fraction):
+        return str(x.numerator) if x.denominator == 1 else f"{x.numerator}/{x.denominator}"
+    return str(x)
+
+
+def _cell(row: Row | None, latex: bool = False) -> str:
+    if row is None:
+        return "" if not latex else ""
+    v = row.cert.value
+    val = _fmt(v) if v is not None else f"[{row.cert.lower.bound},{row.cert.upper.bound}]"
+    mark = "" if row.cert.kind == "proved" else ("*" if not latex else r"$^*$")
+    if row.agree is False:
+        return (f"**{_fmt(row.printed)} ≠ {val}**{mark}" if not latex
+                else rf"\textbf{{{_fmt(row.printed)}}}$\ne$\textbf{{{val}}}{mark}")
+    if row.agree is None and row.printed is None:
+        return f"({val}){mark}"
+    return f"{val}{mark}"
+
+
+def _sizes_text(sizes: list[tuple[int, int]]) -> str:
+    return ", ".join(f"({n},{r})" for n, r in sizes)
+
+
+def tables_json(T: Tables, verdicts: dict[str, Any]) -> dict:
+    return {
+        "schema": "stiefelsym-tables/1", "n_max": T.n_max, "seed": T.seed,
+        "quantities": {k: {"label": v[0], "meaning": v[1]} for k, v in QUANTITIES.items()},
+        "sizes": [{"n": n, "r": r, "seconds": round(T.seconds.get((n, r), 0.0), 3),
+                   "rows": [row.as_dict() for row in rows]} for (n, r), rows in sorted(T.rows.items())],
+        "disagreements": T.formula_check(),
+        "undecided": {k: v for k, v in T.undecided().items()},
+        "max_false_probability": max((row.cert.false_probability for rows in T.rows.values() for row in rows), default=0.0),
+        "verdicts": verdicts,
+    }
+
+
+def _row_lookup(T: Tables) -> dict[tuple[int, int], dict[str, Row]]:
+    return {size: {row.key: row for row in rows} for size, rows in T.rows.items()}
+
+
+def render_markdown(T: Tables, verdicts: dict[str, Any]) -> str:
+    look = _row_lookup(T)
+    sizes = sorted(T.rows)
+    maxp = max((row.cert.false_probability for rows in T.rows.values() for row in rows), default=0.0)
+    out = [f"# Appendix tables: the paper's dimensions against exact computations (n ≤ {T.n_max})", "",
+           "Each cell is the computed value at (n, r); where it differs from the paper's formula the cell reads "
+           "**printed ≠ computed**.  A value without a mark is *proved* on both sides (exact rank at an exact "
+           "point with a kernel checked over ℤ, or a count); a value marked * is *checked*: the lower side is "
+           "proved (an exact rank at an integer point), the upper side holds unless random points hit the zero set "
+           "of a nonzero minor (Schwartz–Zippel) — the false-pass probability of every checked value in these "
+           f"tables is at most {maxp:.1e}.  A value in parentheses has no printed counterpart at that size.  "
+           f"Computed with seed {T.seed} (`stiefelsym tables --seed {T.seed}` reproduces every number).", ""]
+    for title, keys in GROUPS:
+        out += [f"## {title}", "", "| (n, r) | " + " | ".join(HEADINGS[k][0] for k in keys) + " |",
+                "|---" * (len(keys) + 1) + "|"]
+        for size in sizes:
+            cells = [_cell(look[size].get(k)) for k in keys]
+            out.append(f"| ({size[0]},{size[1]}) | " + " | ".join(cells) + " |")
+        out += ["", "What each column computes:", ""]
+        out += [f"- **{HEADINGS[k][0]}** ({QUANTITIES[k][0]}): {QUANTITIES[k][1]}" for k in keys]
+        out.append("")
+    out += ["## Disagreements between the printed formulas and the computation", ""]
+    checks = T.formula_check()
+    if not any(c["sizes"] for c in checks.values()):
+        out += ["None at any computed size.", ""]
+    for key, c in checks.items():
+        if not c["sizes"] and c["matches_formula"]:
+            continue
+        verdict = ("the closed form matches the computed sizes exactly" if c["matches_formula"] else
+                   f"the closed form does NOT match at {_sizes_text(c['mismatch'])}")
+        out += [f"- **{HEADINGS[key][0]}** ({QUANTITIES[key][0]}): disagrees exactly when {c['set']}; "
+                f"{verdict} (checked at all {c['checked_sizes']} computed sizes). "
+                f"Sizes: {_sizes_text(c['sizes']) or 'none'}."]
+    out += ["", *_notes_markdown(), ""]
+    und = T.undecided()
+    if und:
+        out += ["Undecided (the bounds did not meet): " + "; ".join(f"{k} at {_sizes_text(v)}" for k, v in und.items()), ""]
+    out += verdict_markdown(verdicts)
+    return "\n".join(out) + "\n"
+
+
+def _notes_markdown() -> list[str]:
+    return [
+        "Notes on the disagreements:", "",
+        "- *regular*: the remark before Lemma 2l (the generic orbit in Φ(T*V) is regular iff n ≤ 2r+1); at "
+        "n = 2r+2 both cases of Lemma 2l give the regular dimension, so the orbit is regular there (the Lemma's "
+        "formula itself agrees everywhere).",
+        "- *inv. forms*: the proposition after Theorem ET (the SO(n)×SO(r)-invariant quadratic forms on T*_{X₀}V "
+        "are spanned by tr(PᵀP), tr((XᵀP)²)); at r = 4 the Pfaffian of P₁ is a further invariant form for every "
+        "n ≥ 4, at n − r = r = 2 det P₂, at (n, r) = (4, 3) the pairing of the axial vector of P₁ with P₂.",
+        "- *N > l*: §8 says N = r(n−r) + r(r−1)/2 exceeds half the dimension (dimension) of a generic leaf, so "
+        "some of the N integrals are dependent.  For r = 1, N = l = n − 1: the premise fails (and the Neumann "
+        "integrals on the sphere are independent); for r ≥ 2, N − l = r(r−1)/4 + [r/2]/2 > 0.",
+    ]
+
+
+def verdict_matrix(results: list[dict]) -> dict[str, Any]:
+    """claim (with its correction as a separate row) × size × method -> verdict (and expected)."""
+    matrix: dict[str, dict[str, dict[str, list]]] = {}
+    sizes, methods = set(), []
+    for r in results:
+        claim = r["claim"] + (" [corrected]" if r.get("variant") else "")
+        size = "all" if r.get("n") is None else f"{r['n']},{r['r']}"
+        sizes.add(size)
+        if r["method"] not in methods:
+            methods.append(r["method"])
+        matrix.setdefault(claim, {}).setdefault(size, {})[r["method"]] = [r["verdict"], bool(r.get("expected"))]
+    order = ["exact", "auto", "rational", "modular", "float", "free"]
+    methods.sort(key=lambda m: order.index(m) if m in order else len(order))
+
+    def size_key(s):
+        return (0, 0) if s == "all" else tuple(int(x) for x in s.split(","))
+    return {"methods": methods, "sizes": sorted(sizes, key=size_key), "claims": matrix}
+
+
+VERDICT_LETTERS = {"proved": "P", "checked": "C", "numeric": "N", "fails": "F", "inconclusive": "I",
+                   "undecided": "u", "error": "E"}
+
+
+def _verdict_cell(cell: dict[str, list] | None, methods: list[str]) -> str:
+    if not cell:
+        return ""
+    out = ""
+    for m in methods:
+        if m in cell:
+            verdict, expected = cell[m]
+            out += VERDICT_LETTERS.get(verdict, "?") + ("" if expected else "!")
+        else:
+            out += "·"
+    return out
+
+
+def verdict_markdown(verdicts: dict[str, Any]) -> list[str]:
+    out = ["# Verdict matrix: claim × size × method", ""]
+    if not verdicts:
+        return out + ["No results file was found.", ""]
+    out += ["Letters: P proved, C checked, N numeric, F fails, I inconclusive, u undecided, E error; "
+            "`!` marks a verdict the catalog does not expect; `·` a method not run there.  Size `all` is the "
+            "dimension-free method (every n, r).", ""]
+    for name, vm in verdicts.items():
+        methods, sizes = vm["methods"], vm["sizes"]
+        out += [f"## {name}", "", f"Each cell lists the methods in the order {', '.join(methods)}.", "",
+                "| claim | " + " | ".join(sizes) + " |", "|---" * (len(sizes) + 1) + "|"]
+        for claim in sorted(vm["claims"]):
+            row = vm["claims"][claim]
+            out.append(f"| `{claim}` | " + " | ".join(_verdict_cell(row.get(s), methods) for s in sizes) + " |")
+        out.append("")
+    return out
+
+
+def _tex(text: str) -> str:
+    repl = {"\\": r"\textbackslash{}", "_": r"\_", "&": r"\&", "%": r"\%", "#": r"\#", "$": r"\$",
+            "{": r"\{", "}": r"\}", "^": r"\^{}", "~": r"\~{}"}
+    repl.update({"−": "-", "–": "--", "≤": r"$\le$", "≥": r"$\ge$", "≠": r"$\ne$"})
+    return "".join(repl.get(c, c) for c in text)
+
+
+def render_latex(T: Tables, verdicts: dict[str, Any]) -> str:
+    """booktabs tables, to be \\input into a document with booktabs and longtable."""
+    look = _row_lookup(T)
+    sizes = sorted(T.rows)
+    maxp = max((row.cert.false_probability for rows in T.rows.values() for row in rows), default=0.0)
+    maxp_tex = f"{maxp:.1e}".replace("e-", r"\cdot 10^{-") + "}" if maxp else "0"
+    out = ["% Generated by `stiefelsym tables`; needs \\usepackage{booktabs,longtable}.",
+           rf"\paragraph{{Dimensions, printed against computed ($n\le {T.n_max}$).}}",
+           r"A value is proved on both sides unless marked $^*$ (lower side proved, upper side by "
+           rf"Schwartz--Zippel, false-pass probability at most ${maxp_tex}$); a bold pair reads "
+           r"printed${}\ne{}$computed; a value in parentheses has no printed counterpart.", ""]
+    for title, keys in GROUPS:
+        cols = "l" + "r" * len(keys)
+        out += [r"\begin{longtable}{" + cols + "}",
+                r"\caption{" + _tex_title(title) + r"}\\", r"\toprule",
+                "$(n,r)$ & " + " & ".join(HEADINGS[k][1] for k in keys) + r" \\", r"\midrule", r"\endhead"]
+        for size in sizes:
+            out.append(f"$({size[0]},{size[1]})$ & " + " & ".join(_cell(look[size].get(k), True) for k in keys) + r" \\")
+        out += [r"\bottomrule", r"\end{longtable}", ""]
+    checks = T.formula_check()
+    out += [r"\paragraph{Disagreements.}", r"\begin{itemize}"]
+    any_item = False
+    for key, c in checks.items():
+        if not c["sizes"] and c["matches_formula"]:
+            continue
+        any_item = True
+        verdict = ("the closed form matches every computed size" if c["matches_formula"] else
+                   "the closed form does not match at " + _tex(_sizes_text(c["mismatch"])))
+        out.append(rf"\item {HEADINGS[key][1]} ({_tex(QUANTITIES[key][0])}): exactly when {_tex(c['set'])}; "
+                   rf"{verdict} ({c['checked_sizes']} sizes).")
+    if not any_item:
+        out.append(r"\item None.")
+    out += [r"\end{itemize}", ""]
+    if verdicts:
+        out += [r"\paragraph{Verdict matrix.} P proved, C checked, N numeric, F fails, I inconclusive, "
+                r"u undecided, E error; ! unexpected; $\cdot$ not run.", ""]
+        for name, vm in verdicts.items():
+            methods, vsizes = vm["methods"], vm["sizes"]
+            out += [r"{\scriptsize", r"\begin{longtable}{l" + "c" * len(vsizes) + "}",
+                    r"\caption{" + _tex(name) + " (methods: " + _tex(", ".join(methods)) + r")}\\", r"\toprule",
+                    "claim & " + " & ".join(_tex(s) for s in vsizes) + r" \\", r"\midrule", r"\endhead"]
+            for claim in sorted(vm["claims"]):
+                row = vm["claims"][claim]
+                cells = [_verdict_cell(row.get(s), methods).replace("·", r"$\cdot$") for s in vsizes]
+                out.append(r"\texttt{" + _tex(claim) + "} & " + " & ".join(cells) + r" \\")
+            out += [r"\bottomrule", r"\end{longtable}}", ""]
+    return "\n".join(out) + "\n"
+
+
+def _tex_title(title: str) -> str:
+    return (title.replace("§", r"\S").replace("Λ1", r"$\Lambda_1$").replace("Λ2", r"$\Lambda_2$")
+            .replace("SO(n)", r"$SO(n)$").replace("–", "--"))
+
+
+STANDALONE = r"""% Compile with: pdflatex tables-standalone.tex  (in the directory of tables.tex)
+\documentclass[10pt]{article}
+\usepackage[T1]{fontenc}
+\usepackage[utf8]{inputenc}
+\usepackage[landscape,margin=1.5cm]{geometry}
+\usepackage{booktabs,longtable,amssymb}
+\begin{document}
+\input{tables}
+\end{document}
+"""
