@@ -126,6 +126,11 @@ def singular_a_whole_phi(s):
     return {"dPhi/dt": s.d(lambda t: t.Phi, s.dirac_flow(sec6.H_neum_singular(blocks)))}
 
 
+def covariant_whole_phi(s):
+    """Corrupted: the whole Φ is not conserved for A = αI + βWWᵀ."""
+    return {"dPhi/dt": s.d(lambda t: t.Phi, s.dirac_flow(sec6.H_neum_W))}
+
+
 CORRUPTIONS = [
     ("symmetric-pair", pair_bracket_skew, (3, 1)),
     ("lambda12-compatible", lambda1_doubled_action, (3, 1)),
@@ -141,6 +146,7 @@ CORRUPTIONS = [
     ("nikinorov-integrals", nikinorov_manakov_not_conserved, (4, 3)),
     ("com-integrals", com_phi_not_conserved, (3, 2)),
     ("singular-a-noether", singular_a_whole_phi, (3, 2)),
+    ("singular-a-noether-covariant", covariant_whole_phi, (3, 1)),
 ]
 
 
@@ -169,7 +175,7 @@ def test_corrupted_claim_is_not_proved_for_all_sizes(catalog, cid, func):
 # -- the claims as printed -------------------------------------------------------------------
 
 def _small_size(c):
-    for n, r in ((3, 2), (2, 1), (2, 2)):
+    for n, r in ((3, 2), (2, 1), (2, 2), (3, 1)):
         if n <= EXACT_N_MAX.get(c.id, 3) and c.sizes.admits(n, r):
             return n, r
     raise AssertionError(c.id)
@@ -182,6 +188,7 @@ def test_claim_holds_at_a_small_size_exactly_and_modulo_primes(catalog, cid):
     assert run_exact(c, n, r, SEED).verdict == "proved", cid
     assert run_points(c, n, r, "modular", SEED).verdict == "checked", cid
     assert run_points(c, 4, 2 if c.sizes.admits(4, 2) else 1, "modular", SEED).verdict == "checked", cid
+    assert run_points(c, 5, 3 if c.sizes.admits(5, 3) else 1, "rational", SEED).verdict == "checked", cid
 
 
 @pytest.mark.parametrize("cid", FREE_PROVED)
