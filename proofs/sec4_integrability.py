@@ -382,3 +382,26 @@ def jensen_flows_conserve_the_invariants(s):
         checks[f"{{{name}, Psi_eta}}"] = s.bracket(f, _psi_eta)
         checks[f"{{{name}, H_kappa}}"] = s.bracket(f, H_jensen)
     return checks
+
+
+@claim("euler-so-n", paper=("Euler-so(n)", "Manakov", "Manakov*"), kind="pb",
+       equivariance="the Euler equations live on so(n): a generic ξ and a generic symmetric operator, no point of T*V; the basis of so(n) only writes the Hamiltonian vector field",
+       statement=r"\dot f=\{f,h_{\mathbb A}\}^+_{so(n)}\iff\dot\xi=[\nabla h_{\mathbb A}(\xi),\xi]=[\mathbb A\xi,\xi];\quad "
+                 r"\{\tr(\xi+\lambda A)^k,\tr(\xi+\mu A)^m\}^+=\{\tr(\xi+\lambda A)^k,h_{\mathbb A}\}^+=0,\ "
+                 r"\mathbb A\xi=A\xi+\xi A")
+def euler_equations_on_so_n(s):
+    """(Euler-so(n)): the Hamiltonian vector field of h_𝔸 = ½<ξ, 𝔸ξ> for the (+) Lie–Poisson bracket on so(n) is ξ̇ = [𝔸ξ, ξ] (a generic symmetric 𝔸), and for the Manakov operator 𝔸ξ = Aξ + ξA the functions tr(ξ + λA)^k (k = 1, 2, 3) commute with each other and with h_𝔸."""
+    from stiefelsym.brackets import SO_N, lie_poisson, quadratic, trace_power
+    T = lie_poisson(SO_N, 1)
+    xi = s.xi
+    h_gen = quadratic(lambda t, x: t.sym_operator("AA")(x))
+    h_man = quadratic(lambda t, x: manakov_square(t, x))
+    fam = lambda k, nu: trace_power(k, shift=lambda t: nu(t) * t.A)   # noqa: E731
+    checks = {"xi' - [AA xi, xi]": T.sharp(s, xi, h_gen.grad(s, xi)) - comm(s.sym_operator("AA")(xi), xi)}
+    for k in POWERS:
+        for m in POWERS:
+            if m >= k:
+                checks[f"{{tr(xi+lambda A)^{k}, tr(xi+mu A)^{m}}}+"] = T.bracket(
+                    s, fam(k, lambda t: t.lam), fam(m, lambda t: t.scalar("mu")), xi)
+        checks[f"{{tr(xi+lambda A)^{k}, h_AA}}+ (Manakov)"] = T.bracket(s, fam(k, lambda t: t.lam), h_man, xi)
+    return checks

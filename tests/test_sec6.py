@@ -247,10 +247,18 @@ def non_invariant_function_conserved(s):
     return {"{tr P^T A P, H_kappa}": s.bracket(lambda t: t.tr(t.P.T @ t.A @ t.P), sec4.H_jensen)}
 
 
+def euler_so_n_swapped(s):
+    """Corrupted (Euler-so(n)): ξ̇ = [ξ, 𝔸ξ]."""
+    T = B.lie_poisson(B.SO_N, 1)
+    h = B.quadratic(lambda t, x: t.sym_operator("AA")(x))
+    return {"Euler": T.sharp(s, s.xi, h.grad(s, s.xi)) - comm(s.xi, s.sym_operator("AA")(s.xi))}
+
+
 ADDED = [
     ("momentum-maps-poisson-nonlinear", phi_poisson_with_minus_sign, (3, 2)),
     ("noether-normal-metric", gram_with_psi_squared, (3, 2)),
     ("jensen-invariants-conserved", non_invariant_function_conserved, (3, 2)),
+    ("euler-so-n", euler_so_n_swapped, (3, 2)),
 ]
 
 
