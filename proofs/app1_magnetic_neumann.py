@@ -486,6 +486,21 @@ def reduced_neumann_is_euler_star_star(s):
     }
 
 
+@claim("ym-charge", paper=("YM", "mag6", "mag0"), kind="id", sizes=ON_V_NN1,
+       statement=r"F_\Omega=\pr_{e_n^\perp}(\Omega)=X\Psi X^T,\quad X^TF_\Omega X=\Psi:\quad "
+                 r"(F_\Omega,e_n,\dot e_n)\in\mathcal O_\eta\times_sTS^{n-1}\ \text{on}\ \Psi^{-1}(\mathcal O_\eta)")
+def yang_mills_field_lies_on_the_orbit_of_the_charge(s):
+    """On T*V_{n,n−1} (Ω = Φ, e_n⊗e_n = I − XXᵀ), the Yang–Mills field F_Ω = pr_{e_n⊥}(Ω) is XΨXᵀ, the momentum Ψ of the right SO(n−1) action carried to e_n⊥ by X, so on Ψ⁻¹(𝒪_η) it ranges over the orbit 𝒪_η (the charge type), and it vanishes on Ψ⁻¹(0), where (mag6) is the Neumann system on the sphere."""
+    N = s.In - s.X @ s.X.T
+    Omega = s.Phi
+    F = Omega - (Omega @ N + N @ Omega)
+    return {
+        "F_Omega = X Psi X^T": F - s.X @ s.Psi @ s.X.T,
+        "X^T F_Omega X = Psi": s.X.T @ F @ s.X - s.Psi,
+        "F_Omega annihilates e_n": F @ N,
+    }
+
+
 def pr_e(xi, e):
     """pr_{e_n}(ξ) = ξe_n⊗e_n + e_n⊗e_nξ."""
     return xi @ e @ e.T + e @ e.T @ xi

@@ -89,7 +89,7 @@ def test_the_magnetic_form_needs_two_columns():
 
 
 #: proved for every n, r by rewriting (the twisted flow with a letter F of so(r) in the free algebra)
-FREE_PROVED = ("ym-reduced-neumann", "magnetic-momentum-map-any-rank", "magnetic-lax-any-rank")
+FREE_PROVED = ("ym-reduced-neumann", "ym-charge", "magnetic-momentum-map-any-rank", "magnetic-lax-any-rank")
 
 
 @pytest.mark.parametrize("cid", FREE_PROVED)
@@ -221,6 +221,13 @@ def euler_star_star_body_frame(s):
     return {"de_n/dt": s.d(lambda t: t.In - t.X @ t.X.T, flow) + comm(s.Phi, N)}
 
 
+def charge_from_the_wrong_side(s):
+    """Corrupted: F_Ω = XΨᵀXᵀ (the transposed charge)."""
+    N = s.In - s.X @ s.X.T
+    F = s.Phi - (s.Phi @ N + N @ s.Phi)
+    return {"F_Omega": F - s.X @ s.Psi.T @ s.X.T}
+
+
 def mag6_without_yang_mills(s):
     """Corrupted (mag6): the Yang–Mills term F_Ωė_n dropped (it vanishes only on Ψ = 0)."""
     e = app1.last(s)
@@ -264,6 +271,7 @@ CORRUPTIONS = [
     ("rigid-body-euler-poisson", euler_star_commutator_swapped),
     ("ym-reduced-neumann", euler_star_star_body_frame),
     ("ym-second-derivative", mag6_without_yang_mills),
+    ("ym-charge", charge_from_the_wrong_side),
     ("ym-monopole", monopole_both_signs_wrong),
     ("cpb-euler", cpb_euler_commutator_swapped),
     ("cpb-right-momentum", cpb_full_psi_conserved),
