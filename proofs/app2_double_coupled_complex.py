@@ -113,7 +113,8 @@ def double_neumann_dual_lax(s):
     return {"LA3*D": double_lax_residual(s, resolvent_flipped)}
 
 
-@double_neumann_dual_lax.claim.correction("(LA3*D): (λI_n − A)⁻¹ in place of (I_n − λA)⁻¹ in the off-diagonal blocks")
+@double_neumann_dual_lax.claim.correction(
+    "(LA3*D): (λI_n − A)⁻¹ in place of (I_n − λA)⁻¹ in the off-diagonal blocks")
 def double_neumann_dual_lax_corrected(s):
     return {"LA3*D": double_lax_residual(s, lambda t: t.resolvent(t.lam))}
 
@@ -286,9 +287,13 @@ _BIG = (r"\dot L(\nu)=[L(\nu),A(\nu)],\ L(\nu)=\begin{pmatrix}0&A\\A&0\end{pmatr
 _BIG_ERRATUM = """with the printed L(nu), A(nu) = L_+(nu) the flow does not imply dL/dt = [L, A]: on T*V x T*V it gives
        d/dt diag(PX^T - XP^T, QY^T - YQ^T) = [K, J] and dK/dt = [diag(PX^T - XP^T, QY^T - YQ^T), K] for
        J = [[0, A], [A, 0]], K = [[0, XY^T], [YX^T, 0]], so the nu^0 and nu^{-1} parts of the equation need opposite
-       orders of the commutator (already for r = 1; for n = 1, where P = Q = 0, it holds).  No single change of a sign or of the order repairs it.
+       orders of the commutator (already for r = 1; for n = 1, where P = Q = 0, it holds).  No single change
+       of a sign or of the order repairs it.
        Corrected: L(nu) = nu J + diag(PX^T - XP^T, QY^T - YQ^T) - nu^{-1} K and dL/dt = [A(nu), L(nu)] with
        A(nu) = L_+(nu) (equivalently dL/dt = [L(nu), L_-(nu)])."""
+
+
+BIG_CORRECTION = "(so(n,n)): −ν⁻¹ in front of the last term of L(ν), and dL/dt = [A(ν), L(ν)]"
 
 
 @claim("coupled-big-lax-normal", paper=("so(n,n)", "C-eq"), kind="lax", exact_max_n=SYMBOLIC_N_MAX,
@@ -300,13 +305,13 @@ def coupled_big_lax_normal(s):
     return {"so(n,n)": big_lax_residual(s, H_coupled(NORMAL))}
 
 
-@coupled_big_lax_normal.claim.correction("(so(n,n)): −ν⁻¹ in front of the last term of L(ν), and dL/dt = [A(ν), L(ν)]",
-                                         changes=2)
+@coupled_big_lax_normal.claim.correction(BIG_CORRECTION, changes=2)
 def coupled_big_lax_normal_corrected(s):
     return {"so(n,n)": big_lax_residual(s, H_coupled(NORMAL), corrected=True)}
 
 
-@claim("coupled-big-lax-not-euclidean", paper=("so(n,n)", "C-eq"), kind="not", exact_max_n=SYMBOLIC_N_MAX, expect="nonzero",
+@claim("coupled-big-lax-not-euclidean", paper=("so(n,n)", "C-eq"), kind="not", expect="nonzero",
+       exact_max_n=SYMBOLIC_N_MAX,
        sizes=admissible(r_min=2, condition="r >= 2 (for r = 1 all the metrics coincide)"),
        statement=r"\kappa=-\tfrac12:\ \dot L(\nu)\neq[A(\nu),L(\nu)]\ \text{along (C-eq)},\ "
                  r"L(\nu)=\nu\begin{pmatrix}0&A\\A&0\end{pmatrix}+\begin{pmatrix}PX^T-XP^T&0\\0&QY^T-YQ^T\end{pmatrix}"
@@ -368,8 +373,7 @@ def coupled_perturbed_big_lax(s):
     return {"so(n,n)": big_lax_residual(s, H_perturbed(FREE_KAPPA))}
 
 
-@coupled_perturbed_big_lax.claim.correction("(so(n,n)): −ν⁻¹ in front of the last term of L(ν), and dL/dt = [A(ν), L(ν)]",
-                                            changes=2)
+@coupled_perturbed_big_lax.claim.correction(BIG_CORRECTION, changes=2)
 def coupled_perturbed_big_lax_corrected(s):
     return {"so(n,n)": big_lax_residual(s, H_perturbed(FREE_KAPPA), corrected=True)}
 
@@ -468,7 +472,8 @@ def complex_lax_residual(s, flipped):
     return derivative(s, L, z, flow_complex(s, z)) - comm(L(s, z), A_dual_complex(s, z))
 
 
-@claim("complex-neumann-dual-lax", paper=("dual-complex", "LA3*", "W-eq", "W-L"), kind="lax", exact_max_n=SYMBOLIC_N_MAX,
+@claim("complex-neumann-dual-lax", paper=("dual-complex", "LA3*", "W-eq", "W-L"), kind="lax",
+       exact_max_n=SYMBOLIC_N_MAX,
        fails_at=lambda n, r: True,
        erratum="""Theorem dual-complex: with (I_n - lambda A)^{-1} in the off-diagonal blocks of L(lambda), as
        printed in (LA3*), the Neumann system (W-eq) on W(n, r) does not imply dL/dt = [L, A].  It does with
@@ -476,14 +481,16 @@ def complex_lax_residual(s, flipped):
        -Z^T R conj(Z)], [I_r + Z'^T R conj(Z'), Z'^T R conj(Z)]], R = (lambda I_n - A)^{-1}.""",
        statement=r"\tfrac{d}{dt}\mathcal L(\lambda)=[\mathcal L(\lambda),\mathcal A(\lambda)],\ "
                  r"\mathcal L=\begin{pmatrix}-Z^T(\lambda-A)^{-1}\dot{\bar Z}&-Z^T(\mathbf I-\lambda A)^{-1}\bar Z\\"
-                 r"\mathbf I_r+\dot Z^T(\mathbf I-\lambda A)^{-1}\dot{\bar Z}&\dot Z^T(\lambda-A)^{-1}\bar Z\end{pmatrix},\ "
+                 r"\mathbf I_r+\dot Z^T(\mathbf I-\lambda A)^{-1}\dot{\bar Z}&"
+                 r"\dot Z^T(\lambda-A)^{-1}\bar Z\end{pmatrix},\ "
                  r"\mathcal A=\begin{pmatrix}0&\mathbf I_r\\\bar\Lambda-\lambda\mathbf I_r&0\end{pmatrix}")
 def complex_neumann_dual_lax(s):
     """Theorem dual-complex: the Neumann system (W-eq) on the complex Stiefel variety implies the 2r×2r Lax equation (LA3*) with the printed 𝓛(λ), whose off-diagonal blocks contain (I_n − λA)⁻¹, and 𝓐(λ)."""
     return {"LA3*": complex_lax_residual(s, resolvent_flipped)}
 
 
-@complex_neumann_dual_lax.claim.correction("(LA3*): (λI_n − A)⁻¹ in place of (I_n − λA)⁻¹ in the off-diagonal blocks")
+@complex_neumann_dual_lax.claim.correction(
+    "(LA3*): (λI_n − A)⁻¹ in place of (I_n − λA)⁻¹ in the off-diagonal blocks")
 def complex_neumann_dual_lax_corrected(s):
     return {"LA3*": complex_lax_residual(s, lambda t: t.resolvent(t.lam))}
 

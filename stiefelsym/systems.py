@@ -16,8 +16,12 @@ in coordinates along a basis of the ambient space of each matrix variable:
   of H for all the constraints together.
 
 Derivatives are exact (forward mode, dual numbers) over every field of the scene, and the
-points are built by the caller (generic points of the constraint set).  Only coordinate
-backends run these functions: the dimension-free scene raises ``NeedsCoordinates``.
+points are built by the caller (generic points of the constraint set).  The coordinates are
+orthonormal (the unit matrices E_ij, and E_ij, iE_ij for a realified complex variable) and a
+flow is reassembled in the basis it was computed in, so the result does not depend on the basis:
+a flow derived from O(n)-invariant data is O(n)-covariant, and these internal coordinates are not
+recorded as a look at coordinates (like the scene's own gradients).  Only coordinate backends run
+these functions: the dimension-free scene raises ``NeedsCoordinates``.
 
 Complex matrices U + iV are realified as [[U, −V], [V, U]] (``Scene.realify``): sums, products
 and the conjugate transpose (the transpose of the real form) are preserved; the plain transpose
