@@ -654,3 +654,59 @@ def cpb_right_momentum(s):
         checks[f"dPsi_so(n-r)/dt (r = {k})"] = s.d(
             lambda t, k=k: (t.Ir - projector(t, k)) @ body(t) @ (t.Ir - projector(t, k)), flow)
     return checks
+
+
+# -- the reduction of the CPB body to V(n, r) ------------------------------------------------------------
+
+def body_block_removed(s, k, block):
+    """A point of T*SO(n) where one block of the body momentum m = 𝒳ᵀM𝒳 = 2𝒳ᵀ𝒫 vanishes: Ψ_so(r) = 0
+    (block "so(r)", the first k columns) or Ψ_so(n−r) = 0 (block "so(n-r)")."""
+    D = projector(s, k)
+    Z = D if block == "so(r)" else s.Ir - D
+    W = s.X.T @ s.P
+    return twisted.at_point(s, s.X, s.P - s.X @ (Z @ W @ Z))
+
+
+def cpb_reduction_checks(s, block):
+    """Along the flow of H_CPB (first k columns), at a point where the given block of the body momentum
+    vanishes, the image (X_r, P_r) in T*V(n, r), X_r = (e_1, ..., e_r), P_r = MX_r − ½X_rX_rᵀMX_r, moves by
+    the normal-metric Neumann flow (N0_XP2)."""
+    checks = {}
+    for k in twisted.column_splittings(s):
+        if s.r - k < 2:
+            continue        # so(n - r) = 0: nothing to reduce
+        h = body_block_removed(s, k, block)
+        flow = h.dirac_flow(lambda t, k=k: H_CPB(t, k))
+        D = projector(h, k)
+        Z = D if block == "so(r)" else h.Ir - D
+        image = lambda t, k=k: (t.X @ twisted.first_basis_vectors(t, k),
+                                t.Phi @ t.X @ twisted.first_basis_vectors(t, k)
+                                - t.X @ twisted.first_basis_vectors(t, k) @ twisted.first_basis_vectors(t, k).T
+                                @ t.X.T @ t.Phi @ t.X @ twisted.first_basis_vectors(t, k) / 2)
+        Xr, Pr = image(h)
+        target = flow_N0_at(h, Xr, Pr)
+        checks[f"the block {block} of the body momentum vanishes (r = {k})"] = Z @ h.X.T @ h.Phi @ h.X @ Z
+        checks[f"dX_r/dt = (N0_XP2) (r = {k})"] = h.d(lambda t, image=image: image(t)[0], flow) - target["X"]
+        checks[f"dP_r/dt = (N0_XP2) (r = {k})"] = h.d(lambda t, image=image: image(t)[1], flow) - target["P"]
+    return checks
+
+
+@claim("cpb-reduction-stiefel", paper=("Euler", "Poisson", "CPB", "N0_XP2"), kind="id",
+       sizes=admissible(n_max=5, n_min=3, where=lambda n, r: r == n, condition="r = n >= 3: T*SO(n), n - r >= 2"),
+       fails_at=lambda n, r: True,
+       erratum="""The paragraph on the symmetric Clebsch-Perelomov-Bogoyavlenski bodies says that for
+       eta_so(r) = 0 the reduction of (Euler), (Poisson) gives the Neumann system with the normal metric on
+       V_{n,r}.  The reduction to V_{n,r} is the one by SO(n-r), and the condition is on its momentum:
+       at a point where Psi_so(r) = 0 but Psi_so(n-r) != 0 (possible when n - r >= 2) the image (X_r, P_r) in
+       T*V_{n,r} does not follow the normal Neumann flow (N0_XP2) (the Yang-Mills field of SO(n-r) acts);
+       it does where Psi_so(n-r) = 0.  Corrected: "if eta_so(n-r) = 0 (eta_so(r) = eta_so(n-r) = 0), we get
+       the Neumann system with the normal metric on V_{n,r} (respectively, the Neumann system on G_{n,r})".""",
+       statement=r"\eta_{so(r)}=0:\quad (e_1,\dots,e_r),\ P_r=MX_r-\tfrac12X_rX_r^TMX_r\ \text{follow (N0\_XP2) on } T^*V_{n,r}")
+def cpb_reduces_to_the_normal_neumann_system(s):
+    """The symmetric CPB body reduced with η_so(r) = 0 is, as the paper says, the Neumann system with the normal metric on V_{n,r}: at a point of T*SO(n) where the so(r) block of the body momentum vanishes, the first r columns and P_r = MX_r − ½X_rX_rᵀMX_r (the covector with Φ = M when Ψ_so(n−r) = 0) move by (N0_XP2), for every r ≤ n − 2."""
+    return cpb_reduction_checks(s, "so(r)")
+
+
+@cpb_reduces_to_the_normal_neumann_system.claim.correction("η_so(n−r) = 0 in place of η_so(r) = 0")
+def cpb_reduces_to_the_normal_neumann_system_corrected(s):
+    return cpb_reduction_checks(s, "so(n-r)")

@@ -254,6 +254,25 @@ def cpb_full_psi_conserved(s):
     return {"d m/dt": s.d(lambda t: t.X.T @ t.Phi @ t.X, s.dirac_flow(H))}
 
 
+def cpb_reduction_potential_sign(s):
+    """Corrupted correction: (N0_XP2) with +AX where Ψ_so(n−r) = 0."""
+    checks = {}
+    for k in twisted.column_splittings(s):
+        if s.r - k < 2:
+            continue
+        h = app1.body_block_removed(s, k, "so(n-r)")
+        flow = h.dirac_flow(lambda t, k=k: app1.H_CPB(t, k))
+        E = twisted.first_basis_vectors(h, k)
+        Xr = h.X @ E
+        Pr = h.Phi @ Xr - Xr @ Xr.T @ h.Phi @ Xr / 2
+        target = app1.flow_N0_at(h, Xr, Pr)["P"] + 2 * (h.A @ Xr)
+        image = lambda t, k=k: (t.Phi @ t.X @ twisted.first_basis_vectors(t, k)
+                                - t.X @ twisted.first_basis_vectors(t, k) @ twisted.first_basis_vectors(t, k).T
+                                @ t.X.T @ t.Phi @ t.X @ twisted.first_basis_vectors(t, k) / 2)
+        checks[f"dP_r/dt (r = {k})"] = h.d(image, flow) - target
+    return checks
+
+
 CORRUPTIONS = [
     ("twisted-form", twisted_form_sign),
     ("twisted-form-closed", jacobi_of_a_wrong_bracket),
@@ -275,6 +294,7 @@ CORRUPTIONS = [
     ("ym-monopole", monopole_both_signs_wrong),
     ("cpb-euler", cpb_euler_commutator_swapped),
     ("cpb-right-momentum", cpb_full_psi_conserved),
+    ("cpb-reduction-stiefel", cpb_reduction_potential_sign),
 ]
 
 
@@ -294,7 +314,11 @@ def test_corrupted_claim_fails(catalog, cid, func):
 
 # -- the claims as printed -------------------------------------------------------------------------
 
-@pytest.mark.parametrize("cid", [cid for cid, _ in CORRUPTIONS if cid != "ym-monopole"])
+#: printed statements that fail (errata with a registered correction)
+ERRATA = ("ym-monopole", "cpb-reduction-stiefel")
+
+
+@pytest.mark.parametrize("cid", [cid for cid, _ in CORRUPTIONS if cid not in ERRATA])
 def test_claim_holds_at_a_small_size(catalog, cid):
     c = catalog.get(cid)
     z = _small_size(c)
@@ -312,3 +336,16 @@ def test_monopole_remark_fails_as_printed_and_its_correction_holds(catalog):
     [fix] = c.corrections
     assert run_exact(c, 3, 2, SEED, func=fix.func).verdict == "proved"
     assert run_points(c, 3, 2, "modular", SEED, func=fix.func).verdict == "checked"
+
+
+def test_cpb_reduction_needs_the_so_n_minus_r_momentum_to_vanish(catalog):
+    """The CPB paragraph: with η_so(r) = 0 (as printed) the image in T*V_{n,r} is not the normal Neumann
+    flow; with η_so(n−r) = 0 it is."""
+    c = catalog.get("cpb-reduction-stiefel")
+    assert c.expects_failure(3, 3) and "eta_so(n-r) = 0" in c.erratum
+    res = run_exact(c, 3, 3, SEED)
+    assert res.verdict == "fails" and "dP_r/dt" in str(res.witness)
+    assert run_points(c, 4, 4, "modular", SEED).verdict == "fails"
+    [fix] = c.corrections
+    assert run_exact(c, 3, 3, SEED, func=fix.func).verdict == "proved"
+    assert run_points(c, 4, 4, "modular", SEED, func=fix.func).verdict == "checked"
