@@ -505,6 +505,9 @@ QUANTITIES = {
     "delta": ("man", "2 dim V − rank d(Ψ, PᵀP, tr(Φ+λA)^k); printed r(n−r) for n ≥ 2r"),
     "delta_complete": ("man", "rank d(F) − rank{F, F} for the Manakov integrals; = δ iff complete"),
     "leaf": ("dimension", "generic rank of Λ1 at Θ(X,P)  (LEMA1, L1, L2)"),
+    "leaf_singular": ("dimension", "2l < n² − n (the leaves in Θ(T*V) are singular): 1 if the computed 2l is below n² − n"),
+    "L5L6": ("L6", "dim of the solutions of (L5), (L6) as printed in so(r)_{h1} ⊕ Sym(r); printed: r"),
+    "L5L6_corrected": ("L6", "the same with (L6) read as [A1, η1] ⟂ so(r)_{h1}; printed: r"),
     "leaf_pushforward": ("dimension", "generic rank of dΘ·ω⁻¹·dΘᵀ (Θ is Poisson: the same leaf)"),
     "complete_F": ("LEMA2", "generic rank of (d𝓕)·Λ1 (independent Casimirs on the leaf); printed: l"),
     "A1": ("A2", "generic rank of Λ_{1,−1} at Θ(X,P); printed: n² − n  (A1, LAMBDA, L3, L4)"),
@@ -648,6 +651,14 @@ def compute_size(n: int, r: int, *, seed: int = 0, include: Iterable[str] | None
     leaf = _safe_generic(lambda x: lambda1(theta_point(x, with_A=False)[1], basis, nskew), nv_fibre, 1,
                          "rank Λ1(Θ)", seed, n * n)
     add("leaf", leaf_printed(n, r), leaf)
+    if leaf.value is not None:
+        add("leaf_singular", 1, exact("2l < n² − n", int(leaf.value < n * n - n),
+                                      f"2l = {leaf.value} against n² − n = {n * n - n}"))
+    if "L5L6" in want:
+        for key, printed_l6 in (("L5L6", True), ("L5L6_corrected", False)):
+            M, unknowns = l5_l6_matrix(r, printed_l6, seed=f"{s}|L5L6")
+            add(key, r, (unknowns - rank_at_point(M, "rank", seed=seed, where="at h1, A1 (random integers)")).renamed(
+                "dim of the solutions of (L5), (L6)"))
 
     def pushforward(x):
         pt, T = full_T(x)
@@ -739,6 +750,33 @@ def compute_size(n: int, r: int, *, seed: int = 0, include: Iterable[str] | None
     return rows
 
 
+def l5_l6_matrix(r: int, printed: bool, seed: str) -> tuple[Z, int]:
+    """(L5), (L6) on ξ1 ∈ so(r)_{h1} (odd powers of h1), η1 ∈ Sym(r), at random integer h1 ∈ so(r) and
+    A1 = diag (distinct): (L6) as printed ([A1, η1] ∈ so(r)^⊥ = Sym(r), i.e. [A1, η1] = 0) or corrected
+    ([A1, η1] ⟂ so(r)_{h1})."""
+    import random as _random
+    rng = _random.Random(seed)
+    h1, A1 = zeros(r, r), zeros(r, r)
+    for i, j in _pairs(r):
+        c = rng.randint(-2 ** 20, 2 ** 20)
+        h1[i, j], h1[j, i] = c, -c
+    for i, a in enumerate(rng.sample(range(-2 ** 20, 2 ** 20), r)):
+        A1[i, i] = a
+    cartan, power = [], h1
+    for _ in range(r // 2):
+        cartan.append(power)
+        power = power * h1 * h1
+    unknowns = [(c, zeros(r, r)) for c in cartan] + [(zeros(r, r), S) for S in sym_basis(r)]
+    cols = []
+    for xi1, eta1 in unknowns:
+        L5 = (A1 * xi1 - xi1 * A1) - (h1 * eta1 - eta1 * h1)
+        C6 = A1 * eta1 - eta1 * A1
+        col = list(L5.entries())
+        col += list(C6.entries()) if printed else [trace(C6 * c) for c in cartan]
+        cols.append(col)
+    return Z(rows_of(cols)), len(unknowns)
+
+
 def _safe_generic(evaluate, nv: int, degree: int, quantity: str, seed: int, full: int) -> Certificate:
     if nv == 0:
         M = evaluate([])
@@ -791,6 +829,8 @@ def _embed(B: Z, n: int, offset: int) -> Z:
 KNOWN_DISAGREEMENTS: dict[str, tuple[str, Callable[[int, int], bool]]] = {
     "regular": ("n = 2r + 2", lambda n, r: n == 2 * r + 2),
     "N_vs_l": ("r = 1 (then N = l = n − 1)", lambda n, r: r == 1),
+    "leaf_singular": ("r = 1 and n <= 2 (2l = n² − n)", lambda n, r: r == 1 and n <= 2),
+    "L5L6": ("r >= 3 (the solutions are 2-dimensional)", lambda n, r: r >= 3),
     "invariant_forms": ("r = 4, or n − r = r = 2, or (n − r, r) = (1, 3)",
                         lambda n, r: r == 4 or (n - r == 2 and r == 2) or (n - r == 1 and r == 3)),
 }
@@ -855,7 +895,8 @@ GROUPS = (
     ("§2–§4: the variety, SO(n)-invariants, orbits and the tori of the geodesic flows",
      ("dimV", "ddim", "ddim_inv", "2l", "regular", "chain", "delta0", "delta0_complete", "delta", "delta_complete")),
     ("§6: the pencil Λ1, Λ2 (Lemmas LEMA1, LEMA2) and the tori of the Neumann systems",
-     ("leaf", "leaf_pushforward", "complete_F", "A1", "A1_t", "KER", "A2", "torus", "torus_complete")),
+     ("leaf", "leaf_singular", "leaf_pushforward", "complete_F", "A1", "A1_t", "KER", "A2", "L5L6", "L5L6_corrected",
+      "torus", "torus_complete")),
     ("§3, §7, §8: invariant metrics, Grassmannians, the count N",
      ("invariant_forms", "NEUMANN2", "N", "N_vs_l")),
 )
@@ -866,7 +907,9 @@ HEADINGS = {
     "2l": ("2l", r"$2l$"), "regular": ("regular", r"reg."), "chain": ("ddim 𝔄", r"ddim$\,\mathfrak A$"),
     "delta0": ("δ₀", r"$\delta_0$"), "delta0_complete": ("δ₀ (compl.)", r"$\delta_0$ c."),
     "delta": ("δ", r"$\delta$"), "delta_complete": ("δ (compl.)", r"$\delta$ c."),
-    "leaf": ("2l (dimension)", r"$2l$ (dim.)"), "leaf_pushforward": ("2l via Θ", r"$2l$ via $\Theta$"),
+    "leaf": ("2l (dimension)", r"$2l$ (dim.)"), "leaf_singular": ("2l < n²−n", r"$2l<n^2-n$"),
+    "L5L6": ("(L5),(L6)", r"(L5,6)"), "L5L6_corrected": ("(L5),(L6) corr.", r"(L5,6) c."),
+    "leaf_pushforward": ("2l via Θ", r"$2l$ via $\Theta$"),
     "complete_F": ("l (LEMA2)", r"$l$ (LEMA2)"), "A1": ("(A1) t=−1", r"(A1) $t{=}{-1}$"),
     "A1_t": ("(A1) any t", r"(A1) $t$"), "KER": ("KER", r"KER"), "A2": ("(A2)", r"(A2)"),
     "torus": ("torus", r"torus"), "torus_complete": ("torus (compl.)", r"torus c."),
@@ -969,6 +1012,12 @@ def _notes_markdown() -> list[str]:
         "- *N > l*: §8 says N = r(n−r) + r(r−1)/2 exceeds half the dimension (dimension) of a generic leaf, so "
         "some of the N integrals are dependent.  For r = 1, N = l = n − 1: the premise fails (and the Neumann "
         "integrals on the sphere are independent); for r ≥ 2, N − l = r(r−1)/4 + [r/2]/2 > 0.",
+        "- *2l < n²−n*: (dimension) states the strict inequality; at (1,1) and (2,1) 2l = n² − n (0 and 2).",
+        "- *(L5),(L6)*: the proof of Lemma LEMA2 says the solutions of (L5), (L6) form an r-dimensional space.  "
+        "With (L6) as printed, [A₁, η₁] ∈ so(r,ℂ)^⊥ = Sym(r) forces the skew matrix [A₁, η₁] to vanish, and the "
+        "solutions are 2-dimensional for every r ≥ 3.  Pairing with the Cartan subalgebra so(r)_{h₁} (the part of "
+        "ker Λ1 it is paired with) gives [A₁, η₁] ⟂ so(r,ℂ)_{h₁}: then the dimension is r at every size (column "
+        "*(L5),(L6) corr.*), and (A2) holds (column *(A2)*, computed without (L5)–(L8)).",
     ]
 
 
