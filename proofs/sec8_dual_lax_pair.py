@@ -9,7 +9,7 @@ from math import comb, factorial
 
 from stiefelsym import admissible, block, claim, comm
 
-from .sec4_integrability import reflection
+from .sec4_integrability import H_manakov, H_manakov_square, L_man_dual, reflection
 from .sec5_neumann import H_neumann_euclidean, H_neumann_normal, power_trace
 from .sec7_grassmannians import column, columns, det, wedge
 
@@ -392,3 +392,253 @@ def general_line_of_the_spectral_integrals_corrected(s):
         acc = acc + weight(s, lam, I) * g * g
     integrals, _ = spectral_integrals(s, s.lam)
     return {"I_2 - general line at l = 1": integrals[1] - acc}
+
+
+# -- Plücker coordinates and tangency to cones (tangency), (cone0) ----------------------------------
+
+def entries(M):
+    """The entries of a matrix as a list of rows."""
+    m, k = M.shape
+    return [[M[i, j] for j in range(k)] for i in range(m)]
+
+
+def adjugate(s, rows):
+    """The adjugate of a square list of lists of scalars (transposed cofactors)."""
+    m = len(rows)
+    out = [[None] * m for _ in range(m)]
+    for i in range(m):
+        for j in range(m):
+            sub = [[rows[a][b] for b in range(m) if b != j] for a in range(m) if a != i]
+            c = det(s, sub)
+            out[j][i] = c if (i + j) % 2 == 0 else -c
+    return out
+
+
+def cone_equation(s, V, b):
+    """Σ_I |B|_I G_I² over the k-subsets I of the rows of V (m × k), B = diag(b): the quadric (cone0)
+    in the Plücker coordinates G_I of the k-plane spanned by the columns of V."""
+    m, k = V.shape
+    cols = columns(V, k)
+    acc = s.q(0)
+    for I in combinations(range(m), k):
+        g = wedge(s, cols, I)
+        w = s.q(1)
+        for i in I:
+            w = w * b[i]
+        acc = acc + w * g * g
+    return acc
+
+
+@claim("tangency", paper=("tangency", "cone0"), kind="geo",
+       sizes=admissible(n_max=5), exact_max_n=3,
+       statement=r"\det(V^TBV)=\sum_I|B|^I_IG_I^2,\qquad V^TB\,v=\det(V^TBV)\,E_1,\ \ "
+                 r"\langle v,Bv\rangle=\det(V^TBV)\,\mathrm{adj}(V^TBV)_{11},\ \ v=V\,\mathrm{adj}(V^TBV)E_1")
+def planes_tangent_to_a_cone(s):
+    """Proposition tangency in algebraic form: for a k-plane spanned by the columns of a generic V (n × k, k = r) and a generic diagonal B, the printed quadric Σ_I |B|_I G_I² of (cone0) is det(VᵀBV) (Cauchy–Binet), and where it vanishes the vector v = V adj(VᵀBV)E_1 of the plane lies on the cone ⟨x, Bx⟩ = 0 with Bv orthogonal to the plane, i.e. the plane is tangent to the cone along v."""
+    V = s.generic("V", "n", "r")
+    b = [s.scalar(f"b_{i + 1}") for i in range(s.n)]
+    B = s.mat([[b[i] if i == j else s.q(0) for j in range(s.n)] for i in range(s.n)], ("n", "n"))
+    M = entries(V.T @ B @ V)
+    D = det(s, M)
+    adj = adjugate(s, M)
+    u = s.mat([[adj[i][0]] for i in range(s.r)], ("r", "?"))
+    v = V @ u
+    first = s.mat([[D if i == 0 else s.q(0)] for i in range(s.r)], ("r", "?"))
+    return {
+        "det(V^T B V) - sum_I |B|_I G_I^2": D - cone_equation(s, V, b),
+        "V^T B v - det(V^T B V) E_1": V.T @ B @ v - first,
+        "<v, Bv> - det(V^T B V) adj_11": (v.T @ B @ v)[0, 0] - D * adj[0][0],
+    }
+
+
+# -- the generalized Chasles theorems (Gen_Chasles), (Gen_Chasles2) -----------------------------------
+
+def plane_VV(s, X, P):
+    """(VV): the (n + r) × 2r matrix 𝒱 = [[X, P], [0, I_r]] whose columns span the 2r-plane Σ̄(X, P)."""
+    return block([[X, P], [s.zeros(s.r, s.r, ("r", "r")), s.Ir]])
+
+
+def cone_matrix(s, mu):
+    """B(μ) = diag(1/(μ − a_1), …, 1/(μ − a_n), 1, …, 1): the cone Q̄(μ) of (conf0) is ⟨x, B(μ)x⟩ = 0."""
+    return block([[s.resolvent(mu), s.zeros(s.n, s.r, ("n", "r"))], [s.zeros(s.r, s.n, ("r", "n")), s.Ir]])
+
+
+def cone_weights(s, mu):
+    """The diagonal of B(μ)."""
+    return [1 / (mu - a) for a in s.a] + [s.q(1)] * s.r
+
+
+def tangency_determinant(t):
+    """det(𝒱ᵀB(λ)𝒱): zero iff Σ̄(X, P) is tangent to the cone Q̄(λ)."""
+    VV = plane_VV(t, t.X, t.P)
+    return det(t, entries(VV.T @ cone_matrix(t, t.lam) @ VV))
+
+
+@claim("Gen_Chasles", paper=("Gen_Chasles", "conf0", "VV", "cone0", "tangency", "2r-integrals"), kind="geo",
+       sizes=admissible(n_max=5), exact_max_n=1,
+       statement=r"a(\lambda)\det(\mathcal V^TB(\lambda)\mathcal V)=a(\lambda)\sum_{I}|B(\lambda)|^I_IG_I(\mathcal V)^2"
+                 r"=\mathcal I_{2r}(\lambda)=a(\lambda)\det\mathcal L^*_{neum}(\lambda),\quad "
+                 r"\tfrac{d}{dt}\det(\mathcal V^TB(\lambda)\mathcal V)=0\ \text{along (N0\_XP2), (NE\_XP)}")
+def planes_tangent_to_confocal_cones(s):
+    """Theorem Gen_Chasles in algebraic form: the 2r-plane Σ̄(X, P) spanned by the columns of 𝒱 (VV) is tangent to the cone Q̄(λ) of (conf0) iff its Plücker coordinates satisfy the quadric (cone0) with B(λ) = diag((λ − a_i)⁻¹, 1, …, 1), whose left-hand side times a(λ) is 𝓘_{2r}(λ) = a(λ) det 𝓛*_neum(λ) (the printed quadratic equation, with its sums Σ_{i=1}^n, Σ_{1≤i<j≤n} over the momenta p_i read as i ≤ r), and it is conserved by both Neumann flows, so the n − r roots of 𝓘_{2r} give fixed cones."""
+    VV = plane_VV(s, s.X, s.P)
+    D = tangency_determinant(s)
+    integrals, _ = spectral_integrals(s, s.lam)
+    a = a_poly(s, s.lam)
+    return {
+        "det L*(lambda) - det(V^T B V)": det(s, entries(L_dual(s))) - D,
+        "det(V^T B V) - sum_I |B|_I G_I(V)^2": D - cone_equation(s, VV, cone_weights(s, s.lam)),
+        "a(lambda) det(V^T B V) - I_2r(lambda)": a * D - integrals[s.r],
+        "a(lambda) det(V^T B V) - printed I_2r(lambda)": a * D - I2r_printed(s, s.lam),
+        "d det(V^T B V)/dt along (N0_XP2)": s.d(tangency_determinant, s.dirac_flow(H_neumann_normal)),
+        "d det(V^T B V)/dt along (NE_XP)": s.d(tangency_determinant, s.dirac_flow(H_neumann_euclidean)),
+    }
+
+
+def rotation(s):
+    """B = (I − η)(I + η)⁻¹ ∈ SO(r) for a generic η ∈ so(r) (the Cayley transform)."""
+    return (s.Ir - s.eta) @ (s.Ir + s.eta).inv()
+
+
+@claim("Gen_Chasles2", paper=("Gen_Chasles2", "VVB", "conf", "conf0"), kind="geo",
+       sizes=admissible(n_max=5), exact_max_n=1,
+       statement=r"\mathcal V(XB,PB)\begin{pmatrix}B^{-1}&0\\0&B^{-1}\end{pmatrix}=\begin{pmatrix}\mathbf I_n&0\\0&B^{-1}"
+                 r"\end{pmatrix}\mathcal V(X,P),\ \det(\mathcal V(XB,PB)^TB(\lambda)\mathcal V(XB,PB))="
+                 r"\det(\mathcal V^TB(\lambda)\mathcal V),\ B\in SO(r);\quad \mathfrak i(x)\in\bar Q(\lambda)\iff "
+                 r"\sum_i\frac{x_i^2}{a_i-\lambda}=r")
+def cylinder_tangent_to_confocal_quadrics(s):
+    """For B ∈ SO(r) the plane Σ̄(XB, PB) is Σ̄(X, P) rotated by B⁻¹ in the coordinates y (VVB; the printed left factor diag(I_{n−r}, B⁻¹) is a misprint of diag(I_n, B⁻¹), the only size for which the product is defined), so every plane of the cylinder Δ̄ is tangent to the same cones Q̄(λ), and the section of Q̄(λ) by {y_1 = ⋯ = y_r = 1} is the confocal quadric Q_r(λ) of (conf)."""
+    X, P, B = s.X, s.P, rotation(s)
+    Binv = B.inv()
+    zr = s.zeros(s.r, s.r, ("r", "r"))
+    left = plane_VV(s, X @ B, P @ B) @ block([[Binv, zr], [zr, Binv]])
+    right = block([[s.In, s.zeros(s.n, s.r, ("n", "r"))], [s.zeros(s.r, s.n, ("r", "n")), Binv]]) @ plane_VV(s, X, P)
+    VB = plane_VV(s, X @ B, P @ B)
+    cone = cone_matrix(s, s.lam)
+    x = s.generic("x", "n", "r")[0:s.n, 0:1]
+    ones = s.mat([[s.q(1)] for _ in range(s.r)], ("r", "?"))
+    point = block([[x], [ones]])
+    shifted = (s.A - s.scalar_matrix(s.lam, s.n, "n")).inv()
+    return {
+        "(VVB)": left - right,
+        "B^T B - I_r": B.T @ B - s.Ir,
+        "tangency of the rotated plane - tangency of the plane":
+            det(s, entries(VB.T @ cone @ VB)) - det(s, entries(plane_VV(s, X, P).T @ cone @ plane_VV(s, X, P))),
+        "(conf): <i(x), B i(x)> + (sum x_i^2/(a_i - lambda) - r)": (point.T @ cone @ point)[0, 0]
+        + (x.T @ shifted @ x)[0, 0] - s.q(s.r),
+    }
+
+
+# -- r = 1: the Moser statements (Mum_geod) -------------------------------------------------------------
+
+def uhlenbeck_integrals(t):
+    """F_i = e_i² + Σ_{j≠i} (e_ip_j − e_jp_i)²/(a_i − a_j), i = 1..n (r = 1)."""
+    a, e, p, n = t.a, t.X, t.P, t.n
+    out = []
+    for i in range(n):
+        acc = e[i, 0] * e[i, 0]
+        for j in range(n):
+            if j != i:
+                m = e[i, 0] * p[j, 0] - e[j, 0] * p[i, 0]
+                acc = acc + m * m / (a[i] - a[j])
+        out.append(acc)
+    return out
+
+
+def line_tangency(s, mu):
+    """The discriminant of |p + σe|² in the quadric Q(μ) = {Σ x_i²/(a_i − μ) = 1}: zero iff the line
+    l = p + span{e} is tangent to Q(μ)."""
+    a, e, p, n = s.a, s.X, s.P, s.n
+    ee, ep, pp = s.q(0), s.q(0), s.q(0)
+    for i in range(n):
+        w = 1 / (a[i] - mu)
+        ee, ep, pp = ee + w * e[i, 0] * e[i, 0], ep + w * e[i, 0] * p[i, 0], pp + w * p[i, 0] * p[i, 0]
+    return ep * ep - ee * (pp - s.q(1))
+
+
+@claim("Mum_geod", paper=("Mum_geod",), kind="pb",
+       sizes=admissible(n_max=5, n_min=2, r_max=1, condition="r = 1, n >= 2"), exact_max_n=2,
+       statement=r"r=1:\ \{F_i,F_j\}=0,\ \ \mathrm{disc}_{l(t)}Q(\lambda)=-\sum_i\frac{F_i}{\lambda-a_i}"
+                 r"=-\mathcal I_2(\lambda)/a(\lambda),\ \ \mathrm{disc}_{l(t)}Q(0)=\sum_iF_i/a_i")
+def moser_chasles_for_the_neumann_system(s):
+    """Proposition Mum_geod (r = 1): the functions F_i Poisson-commute, so every Hamiltonian Σ α_iF_i conserves them all; the line l = p + span{e} is tangent to the confocal quadric Q(λ) iff Σ_i F_i/(λ − a_i) = 𝓘_2(λ)/a(λ) vanishes, a polynomial condition of degree n − 1 with fixed roots (i); and it is tangent to Q(0) iff Σ_i F_i/a_i = 0 (ii)."""
+    n = s.n
+    F = uhlenbeck_integrals(s)
+    lam, a = s.lam, s.a
+    uhl = s.q(0)
+    for i in range(n):
+        uhl = uhl + F[i] / (lam - a[i])
+    H_ii = s.q(0)
+    for i in range(n):
+        H_ii = H_ii + F[i] / a[i]
+    integrals, _ = spectral_integrals(s, lam)
+    checks = {f"{{F_{i + 1}, F_{j + 1}}}": s.bracket(lambda t, i=i: uhlenbeck_integrals(t)[i],
+                                                     lambda t, j=j: uhlenbeck_integrals(t)[j])
+              for i, j in combinations(range(n), 2)}
+    checks["(i): tangency to Q(lambda) + sum F_i/(lambda - a_i)"] = line_tangency(s, lam) + uhl
+    checks["sum F_i/(lambda - a_i) - I_2(lambda)/a(lambda)"] = uhl * a_poly(s, lam) - integrals[1]
+    checks["(ii): tangency to Q(0) - sum F_i/a_i"] = line_tangency(s, s.q(0)) - H_ii
+    return checks
+
+
+# -- Manakov flows (Chasles-Manakov) and the Poisson sphere ---------------------------------------------
+
+def manakov_tangency(t):
+    """det(UᵀR_λU), U = (X, P): zero iff span{e_1..e_r, p_1..p_r} is tangent to the cone Q_0(λ)."""
+    U = block([[t.X, t.P]])
+    return det(t, entries(U.T @ t.resolvent(t.lam) @ U))
+
+
+def J2r_printed(s, mu):
+    """𝒥_{2r}(μ) = Σ_{I_{2r}} a(μ)/Π(μ − a_i) |Φ|^{I_{2r}}_{I_{2r}}."""
+    acc = s.q(0)
+    for I in combinations(range(s.n), 2 * s.r):
+        acc = acc + weight(s, mu, I) * det(s, [[s.Phi[i, j] for j in I] for i in I])
+    return acc
+
+
+@claim("Chasles-Manakov", paper=("Chasles-Manakov", "man-dual", "MAN-LA2"), kind="geo",
+       sizes=admissible(n_max=5, where=lambda n, r: n >= 2 * r, condition="n >= 2r"), exact_max_n=1,
+       statement=r"a(\lambda)\det\mathcal L^*_{man}(\lambda)=\mathcal J_{2r}(\lambda)=\sum_{I_{2r}}"
+                 r"\frac{a(\lambda)|\Phi|^{I_{2r}}_{I_{2r}}}{\prod(\lambda-a_i)},\ \deg\mathcal J_{2r}=n-2r,\ "
+                 r"\det(U^T(A-\lambda)^{-1}U)=\det(U^TR_\lambda U)=\det\mathcal L^*_{man},\ "
+                 r"\tfrac{d}{dt}\mathcal J_{2r}=0\ \text{for every Manakov operator}")
+def planes_tangent_to_confocal_cones_manakov(s):
+    """Theorem Chasles-Manakov in algebraic form: the w⁰ coefficient of |a(λ)𝓛*_man(λ) − wI| is a^{2r−1}(λ)𝒥_{2r}(λ) with the printed 𝒥_{2r}, a polynomial of degree n − 2r whose leading coefficient is the sum of the diagonal 2r×2r minors of Φ; 𝒥_{2r}(λ) = 0 iff the 2r-plane span{e_i, p_i} is tangent to the cone Q_0(λ); and 𝒥_{2r} is conserved by the Manakov flow of (Manakov) for a generic B (the same tori for every B)."""
+    n, r = s.n, s.r
+    checks = {}
+    values = []
+    for j in range(n - 2 * r + 2):
+        mu = s.lam + s.q(j)
+        values.append(J2r_printed(s, mu))
+    L = L_man_dual(s)
+    D = det(s, entries(L))
+    a = a_poly(s, s.lam)
+    e_phi = elementary(s, s.Phi, 2 * r)[2 * r]
+    U = block([[s.X, s.P]])
+    shifted = (s.A - s.scalar_matrix(s.lam, n, "n")).inv()
+    checks["a(lambda) det L*_man(lambda) - J_2r(lambda)"] = a * D - values[0]
+    checks[f"degree of J_2r <= {n - 2 * r}"] = finite_difference(s, values, n - 2 * r + 1)
+    checks["leading coefficient of J_2r - e_2r(Phi)"] = (
+        finite_difference(s, values, n - 2 * r) - s.q(factorial(n - 2 * r)) * e_phi)
+    checks["tangency to Q_0(lambda): det(U^T (A - lambda)^{-1} U) - det L*_man"] = (
+        det(s, entries(U.T @ shifted @ U)) - D)
+    checks["d J_2r/dt along the Manakov flow (generic B)"] = s.d(manakov_tangency, s.dirac_flow(H_manakov))
+    checks["d J_2r/dt along (dot_XP3*) (B = A^2)"] = s.d(manakov_tangency, s.dirac_flow(H_manakov_square))
+    return checks
+
+
+@claim("poisson-sphere-chasles", paper=("Chasles-Manakov", "sp1", "P_q"), kind="geo",
+       sizes=admissible(n_max=5, n_min=2, r_max=1, condition="r = 1, n >= 2"), exact_max_n=3,
+       statement=r"r=1,\ B=-A^{-1}:\ A\dot e=(A^{-1}e,e)\,p-(A^{-1}e,p)\,e,\ \ \Sigma=\mathrm{span}\{e,p\}="
+                 r"\mathrm{span}\{e,A\dot e\},\ \ \tfrac{d}{dt}\det(U^TR_\lambda U)=0")
+def poisson_sphere_planes(s):
+    """The corollary of Theorem Chasles-Manakov: along a geodesic of the Poisson-sphere metric (sp1), Aė = (A⁻¹e, e)p − (A⁻¹e, p)e, so the 2-plane span{e, p} is span{e, Aė}, and its tangency polynomial det(UᵀR_λU) is conserved (tangent to n − 2 fixed cones of Q_0(λ))."""
+    flow = s.dirac_flow(H_poisson_sphere)
+    e, p, Ai = s.X, s.P, s.Ainv
+    k = (e.T @ Ai @ e)[0, 0]
+    m = (e.T @ Ai @ p)[0, 0]
+    return {
+        "A de/dt - (A^{-1}e, e) p + (A^{-1}e, p) e": s.A @ flow.Xdot - k * p + m * e,
+        "d det(U^T R U)/dt": s.d(manakov_tangency, flow),
+    }
