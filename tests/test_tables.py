@@ -1,0 +1,151 @@
+"""stiefelsym tables: the paper's dimensions against the computation (known cases, a wrong formula
+is flagged, the known disagreements as closed forms), the three files, bad input, and the LaTeX
+compiling on its own."""
+import json
+import shutil
+import subprocess
+import sys
+from fractions import Fraction
+from pathlib import Path
+
+import pytest
+
+from stiefelsym import tables
+from stiefelsym.dimensions import exact
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+@pytest.fixture(scope="module")
+def small():
+    """The tables for n <= 4 (a few seconds)."""
+    return tables.compute_tables(4, seed=0)
+
+
+def _row(T, n, r, key):
+    return next(row for row in T.rows[(n, r)] if row.key == key)
+
+
+def test_known_values(small):
+    assert _row(small, 4, 2, "dimV").cert.value == 5
+    assert _row(small, 4, 2, "dimV").cert.proved
+    assert _row(small, 3, 1, "2l").cert.value == 2
+    assert _row(small, 4, 1, "2l").cert.value == 4          # n > 2r + 1: 2r(n − r − 1)
+    assert _row(small, 4, 2, "KER").cert.value == 8 and _row(small, 4, 2, "KER").cert.proved
+    assert _row(small, 4, 4, "A2").cert.value == 4
+    assert _row(small, 4, 3, "torus").cert.value == tables.torus_printed(4, 3)
+
+
+def test_every_printed_dimension_formula_agrees_except_the_errata(small):
+    allowed = {"regular", "invariant_forms", "N_vs_l", "leaf_singular", "L5L6"}
+    for (n, r), rows in small.rows.items():
+        for row in rows:
+            if row.key not in allowed:
+                assert row.agree is not False, (n, r, row.key, row.printed, row.cert.describe())
+
+
+def test_every_checked_value_has_a_small_false_pass_bound(small):
+    for rows in small.rows.values():
+        for row in rows:
+            assert row.cert.value is not None
+            assert row.cert.false_probability <= 1e-30   # a difference of ranks adds the bounds of both
+            assert row.cert.kind in ("proved", "checked")
+
+
+def test_the_disagreements_are_the_closed_forms(small):
+    checks = small.formula_check()
+    assert checks["regular"]["sizes"] == [(4, 1)]
+    assert checks["leaf_singular"]["sizes"] == [(1, 1), (2, 1)]
+    assert checks["L5L6"]["sizes"] == [(3, 3), (4, 3), (4, 4)]
+    assert checks["invariant_forms"]["sizes"] == [(4, 2), (4, 3), (4, 4)]
+    assert all(c["matches_formula"] for c in checks.values())
+
+
+def test_a_wrong_formula_is_flagged():
+    cert = exact("2l", 4, "count")
+    assert tables._cmp(4, cert) is True
+    assert tables._cmp(5, cert) is False
+    assert tables._cmp(Fraction(9, 2), cert) is False
+    assert tables._cmp(None, cert) is None
+
+
+def test_a_closed_form_that_misses_a_size_is_reported(small, monkeypatch):
+    monkeypatch.setitem(tables.KNOWN_DISAGREEMENTS, "regular", ("n = 2r + 3", lambda n, r: n == 2 * r + 3))
+    check = small.formula_check()["regular"]
+    assert not check["matches_formula"] and check["mismatch"] == [(4, 1)]
+
+
+def test_the_invariant_metrics_erratum_occurs_for_every_n_at_r_4():
+    for n in (5, 6):
+        row = next(x for x in tables.compute_size(n, 4, include={"invariant_forms"}) if x.key == "invariant_forms")
+        assert (row.printed, row.cert.value, row.agree) == (2, 3, False)
+
+
+def test_the_second_case_of_lemma_2l_at_r_2():
+    rows = {x.key: x for x in tables.compute_size(7, 2, include={"2l", "regular"})}   # n = 2r + 3
+    assert rows["2l"].printed == 2 * 2 * (7 - 2 - 1) and rows["2l"].agree
+
+
+def _write(run, *args):
+    return run("tables", *args)
+
+
+def test_the_command_writes_the_files(run, tmp_path):
+    res = _write(run, "--report-dir", "out", "--n-max", "3")
+    assert res.exit_code == 0, res.output
+    out = tmp_path / "out"
+    for name in ("tables.md", "tables.tex", "tables.json", "tables-standalone.tex"):
+        assert (out / name).is_file()
+    data = json.loads((out / "tables.json").read_text())
+    assert data["n_max"] == 3 and len(data["sizes"]) == 6
+    assert "Disagreements" in (out / "tables.md").read_text()
+    assert r"\toprule" in (out / "tables.tex").read_text()
+
+
+def test_the_verdict_matrix_is_read_from_a_results_file(run, tmp_path):
+    results = tmp_path / "r.json"
+    results.write_text(json.dumps({"meta": {}, "results": [
+        {"claim": "c1", "n": 2, "r": 1, "method": "exact", "verdict": "proved", "expected": True, "variant": None},
+        {"claim": "c1", "n": None, "r": None, "method": "free", "verdict": "undecided", "expected": True},
+        {"claim": "c2", "n": 2, "r": 1, "method": "modular", "verdict": "fails", "expected": False}]}))
+    res = _write(run, "--report-dir", "out", "--size", "2,1", "--results", str(results))
+    assert res.exit_code == 0, res.output
+    md = (tmp_path / "out" / "tables.md").read_text()
+    assert "| `c1` |" in md and "F!" in md
+
+
+@pytest.mark.parametrize("args, message", [
+    (("--size", "2,3"), "1 <= r <= n"),
+    (("--size", "3,0"), "1 <= r <= n"),
+    (("--size", "x"), "is not a size"),
+    (("--n-max", "0"), "--n-max"),
+    (("--results", "missing.json"), "not found"),
+])
+def test_bad_input_exits_2_with_one_line(run, args, message):
+    res = _write(run, "--report-dir", "out", *args)
+    assert res.exit_code == 2
+    lines = [x for x in res.output.splitlines() if x.strip()]
+    assert len(lines) == 1 and message in lines[0], res.output
+
+
+def test_an_unreadable_results_file_exits_2(run, tmp_path):
+    (tmp_path / "bad.json").write_text("{not json")
+    res = _write(run, "--report-dir", "out", "--size", "2,1", "--results", "bad.json")
+    assert res.exit_code == 2 and "not a stiefelsym results file" in res.output
+
+
+def test_bad_input_as_a_subprocess(tmp_path):
+    proc = subprocess.run([sys.executable, "-m", "stiefelsym", "tables", "--size", "2,3",
+                           "--report-dir", str(tmp_path)], capture_output=True, text=True, cwd=ROOT)
+    assert proc.returncode == 2 and proc.stdout == ""
+    assert len(proc.stderr.strip().splitlines()) == 1
+
+
+@pytest.mark.skipif(shutil.which("pdflatex") is None, reason="pdflatex is not installed")
+def test_the_latex_compiles_on_its_own(run, tmp_path):
+    assert _write(run, "--report-dir", "out", "--n-max", "3").exit_code == 0
+    out = tmp_path / "out"
+    proc = subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error", "tables-standalone.tex"],
+                          cwd=out, capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 0, proc.stdout[-2000:]
+    assert (out / "tables-standalone.pdf").is_file()
