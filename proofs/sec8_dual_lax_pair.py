@@ -265,6 +265,21 @@ def spectral_curve_coefficients(s):
     return checks
 
 
+@claim("2r-integrals-conserved", paper=("2r-integrals", "LA3", "LA4"), kind="pb",
+       sizes=admissible(n_max=5), exact_max_n=1,
+       statement=r"\tfrac{d}{dt}\mathcal I_{2l}(\lambda)=0\ \text{along (N0\_XP2) and (NE\_XP)},\quad "
+                 r"\tfrac{d}{d\epsilon}\mathcal I_{2l}(\lambda)\big|_{(Xe^{\epsilon\eta},Pe^{\epsilon\eta})}=0,"
+                 r"\ \eta\in so(r),\ l=1,\dots,r")
+def spectral_curve_coefficients_are_invariant(s):
+    """Every coefficient 𝓘_{2l}(λ), l = 1, …, r, of the spectral curve of 𝓛*_neum(λ) is an integral of both Neumann flows (N0_XP2) and (NE_XP) and is invariant under the right SO(r)-action."""
+    normal, euclidean = s.dirac_flow(H_neumann_normal), s.dirac_flow(H_neumann_euclidean)
+    right = {"X": s.X @ s.eta, "P": s.P @ s.eta}
+    F = lambda t: column(t, spectral_integrals(t, t.lam)[0][1:])
+    return {"d I_2l/dt along (N0_XP2)": s.d(F, normal),
+            "d I_2l/dt along (NE_XP)": s.d(F, euclidean),
+            "d I_2l along the right so(r)-action": s.d(F, right)}
+
+
 def I2_printed(s):
     """The explicit 𝓘_2(λ) of (2r-integrals): Σ_i a/(λ − a_i)((e_1^i)² + ⋯ + (e_r^i)²)
     + Σ_{i<j} a/((λ − a_i)(λ − a_j)) Φ_ij²."""
