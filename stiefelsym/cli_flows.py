@@ -65,7 +65,7 @@ def flows(report_dir: Path, results_path: Path, quick: bool) -> int:
     compare the Jensen geodesics with the closed forms of Edelman, Arias and Smith."""
     _check_report_dir(report_dir)
     try:
-        import matplotlib  # noqa: F401
+        import matplotlib  # noqa: F401  (checked before any integration)
     except ImportError:
         raise FlowsInputError("the flows report needs matplotlib (pip install 'stiefelsym[plots]')") from None
     from .flows_report import collect, write_report

@@ -378,7 +378,8 @@ def make_flow(name: str, n: int, r: int, *, kappa: float | None = None, A: Any =
             params["printed"] = True
         return Flow(name, n, r, rhs, 1, _jensen_hamiltonian(k, Am),
                     (_neumann_lax(Am, _lambdas(a), e, ("mag-mom-stief", "mag-euk", "mag-nor")),),
-                    {"Ψ_12 = (e₁,p₂) − (e₂,p₁)": lambda X, P: np.array([[X[0][:, 0] @ P[0][:, 1] - X[0][:, 1] @ P[0][:, 0]]])},
+                    {"Ψ_12 = (e₁,p₂) − (e₂,p₁)":
+                         lambda X, P: np.array([[X[0][:, 0] @ P[0][:, 1] - X[0][:, 1] @ P[0][:, 0]]])},
                     None, 0.0, params, (("mag-euk",) if k == -0.5 else ("mag-nor",) if k == 0 else ("twisted",)))
     # coupled
     k = _kappa(0.0 if kappa is None else kappa)
