@@ -301,7 +301,7 @@ BIG_CORRECTION = "(so(n,n)): −ν⁻¹ in front of the last term of L(ν), and 
        erratum="(so(n,n)) for kappa = 0: " + _BIG_ERRATUM,
        statement=r"\kappa=0:\ " + _BIG)
 def coupled_big_lax_normal(s):
-    """The r-coupled Neumann system (C-eq) with the normal metric (κ = 0) implies the so(n,n) Lax equation (so(n,n)) with the spectral parameter ν."""
+    """The r-coupled Neumann system with the normal metric (κ = 0), the flow of (C-neumann) on T*V × T*V, implies the so(n,n) Lax equation (so(n,n)) with the spectral parameter ν."""
     return {"so(n,n)": big_lax_residual(s, H_coupled(NORMAL))}
 
 
@@ -317,7 +317,7 @@ def coupled_big_lax_normal_corrected(s):
                  r"L(\nu)=\nu\begin{pmatrix}0&A\\A&0\end{pmatrix}+\begin{pmatrix}PX^T-XP^T&0\\0&QY^T-YQ^T\end{pmatrix}"
                  r"-\nu^{-1}\begin{pmatrix}0&XY^T\\YX^T&0\end{pmatrix},\ A(\nu)=L_+(\nu)")
 def coupled_big_lax_fails_for_the_euclidean_metric(s):
-    """As the paper says, the so(n,n) Lax pair does not hold along the r-coupled Neumann system (C-eq) with the Euclidean metric (κ = −½) when r ≥ 2, even in the corrected form of (so(n,n)) that holds for κ = 0 (see the erratum of coupled-big-lax-normal); the printed form fails for every κ."""
+    """As the paper says, the so(n,n) Lax pair does not hold along the r-coupled Neumann system (the flow of (C-neumann)) with the Euclidean metric (κ = −½) when r ≥ 2, even in the corrected form of (so(n,n)) that holds for κ = 0 (see the erratum of coupled-big-lax-normal); the printed form fails for every κ."""
     return {"so(n,n), corrected, kappa = -1/2": big_lax_residual(s, H_coupled(EUCLIDEAN), corrected=True)}
 
 
@@ -359,7 +359,7 @@ _DUAL_C = (r"\tfrac{d}{dt}\mathcal L(\lambda)=[\mathcal L(\lambda),\mathcal A(\l
 @claim("coupled-dual-lax", paper=("dual-DC", "LA3*C", "LA4*C", "C-L"), kind="lax", exact_max_n=SYMBOLIC_N_MAX,
        statement=r"\kappa=0:\ " + _DUAL_C + r",\ D_1=X^TP,\ D_2=Y^TQ")
 def coupled_dual_lax(s):
-    """Theorem dual-DC: the r-coupled Neumann system (C-eq) with κ = 0 implies the 4r×4r Lax equation (LA3*C) with the printed 𝓛(λ) and 𝓐(λ) of (LA4*C), Λ, Π of (C-L)."""
+    """Theorem dual-DC: the r-coupled Neumann system with κ = 0, the flow of (C-neumann) on T*V × T*V, implies the 4r×4r Lax equation (LA3*C) with the printed 𝓛(λ) and 𝓐(λ) of (LA4*C), Λ, Π of (C-L)."""
     diagonal = lambda t, z: (z["X"].T @ z["P"], z["Y"].T @ z["Q"])
     return {"LA3*C": dual_coupled_residual(s, H_coupled(NORMAL), diagonal)}
 
@@ -387,6 +387,53 @@ def coupled_perturbed_dual_lax(s):
         XP, YQ, k = z["X"].T @ z["P"], z["Y"].T @ z["Q"], t.kappa
         return (1 + 2 * k) * XP + 2 * k * YQ, 2 * k * XP + (1 + 2 * k) * YQ
     return {"LA3*C": dual_coupled_residual(s, H_perturbed(FREE_KAPPA), diagonal)}
+
+
+# -- for every n, r: along (C-eq) with YΠ, the flow of (C-neumann) ----------------------------------
+# The flow of (C-neumann) is (C-eq) with YΠ in place of QΠ (coupled-neumann-flow and its correction, at
+# every size); along that matrix expression the dimension-free method proves the rest for all n, r.
+
+def _coupled_primitives(t):
+    return {"X": t.X, "P": t.P, "Y": t.Y, "Q": t.Q}
+
+
+def flow_C_eq_corrected(s, kappa):
+    """(C-eq) with YΠ in place of QΠ, as a tangent vector of the scene's T*V × T*V."""
+    return flow_C_eq(s, _coupled_primitives(s), kappa, Q_Pi=False)
+
+
+@claim("coupled-corrected-flow-invariants", paper=("C-eq", "C-L"), kind="id", exact_max_n=2,
+       statement=r"\text{(C-eq) with }Y\Pi:\ \tfrac{d}{dt}(X^TX)=\tfrac{d}{dt}(X^TP+P^TX)=\tfrac{d}{dt}(Y^TY)="
+                 r"\tfrac{d}{dt}(Y^TQ+Q^TY)=0,\ \tfrac{d}{dt}\left(X^TP-P^TX+Y^TQ-Q^TY\right)=0")
+def coupled_corrected_flow_invariants(s):
+    """For every κ, the r-coupled system (C-eq) with YΠ in place of QΠ (the flow of (C-neumann)) keeps both constraint sets of T*V × T*V and conserves the diagonal SO(r) momentum XᵀP − PᵀX + YᵀQ − QᵀY."""
+    flow = flow_C_eq_corrected(s, s.kappa)
+    kept = s.d(lambda t: [t.X.T @ t.X, t.X.T @ t.P + t.P.T @ t.X, t.Y.T @ t.Y, t.Y.T @ t.Q + t.Q.T @ t.Y], flow)
+    return {"d(X^T X)/dt": kept[0], "d(X^T P + P^T X)/dt": kept[1], "d(Y^T Y)/dt": kept[2],
+            "d(Y^T Q + Q^T Y)/dt": kept[3],
+            "d(Psi_X + Psi_Y)/dt": s.d(lambda t: t.X.T @ t.P - t.P.T @ t.X + t.Y.T @ t.Q - t.Q.T @ t.Y, flow)}
+
+
+@claim("coupled-dual-lax-along-corrected-flow", paper=("dual-DC", "LA3*C", "LA4*C", "C-eq"), kind="lax",
+       exact_max_n=1,
+       statement=r"\text{(C-eq) with }Y\Pi,\ \kappa=0:\ " + _DUAL_C + r",\ D_1=X^TP,\ D_2=Y^TQ")
+def coupled_dual_lax_along_corrected_flow(s):
+    """Theorem dual-DC along the matrix equations (C-eq) with κ = 0 and YΠ in place of QΠ (the flow of (C-neumann)): the 4r×4r Lax equation (LA3*C) with the printed 𝓛(λ), 𝓐(λ) of (LA4*C)."""
+    z = _coupled_primitives(s)
+    A = A_dual_coupled(s, z, s.X.T @ s.P, s.Y.T @ s.Q)
+    return {"LA3*C": s.d(lambda t: L_dual_coupled(t, _coupled_primitives(t)), flow_C_eq_corrected(s, s.q(0)))
+            - comm(L_dual_coupled(s, z), A)}
+
+
+@claim("coupled-big-lax-along-corrected-flow", paper=("so(n,n)", "C-eq"), kind="lax", exact_max_n=2,
+       statement=r"\text{(C-eq) with }Y\Pi,\ \kappa=0:\ \dot L(\nu)=[A(\nu),L(\nu)],\ "
+                 r"L(\nu)=\nu\begin{pmatrix}0&A\\A&0\end{pmatrix}+\begin{pmatrix}PX^T-XP^T&0\\0&QY^T-YQ^T\end{pmatrix}"
+                 r"-\nu^{-1}\begin{pmatrix}0&XY^T\\YX^T&0\end{pmatrix},\ A(\nu)=L_+(\nu)")
+def coupled_big_lax_along_corrected_flow(s):
+    """The corrected so(n,n) Lax pair (the erratum of coupled-big-lax-normal: −ν⁻¹ in front of the last term, dL/dt = [A(ν), L(ν)]) holds along the matrix equations (C-eq) with κ = 0 and YΠ in place of QΠ (the flow of (C-neumann))."""
+    z, nu = _coupled_primitives(s), s.scalar("nu")
+    L = lambda t: L_big(t, _coupled_primitives(t), nu, -1)
+    return {"so(n,n)": s.d(L, flow_C_eq_corrected(s, s.q(0))) - comm(A_big(s, z, nu), L(s))}
 
 
 # ==== the Neumann system on the complex Stiefel variety W(n, r) ========================================

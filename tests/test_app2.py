@@ -16,10 +16,13 @@ import proofs.app2_double_coupled_complex as a
 
 SEED = 0
 
+#: proved for every n, r by the dimension-free method (along (C-eq) with YΠ, a matrix expression)
+FREE_PROVED = ("coupled-corrected-flow-invariants", "coupled-dual-lax-along-corrected-flow",
+               "coupled-big-lax-along-corrected-flow")
 #: hold as printed
 HOLDS = ("double-neumann-flow", "double-neumann-momentum", "double-neumann-diagonal", "coupled-neumann-momentum",
          "coupled-dual-lax", "coupled-perturbed-dual-lax", "complex-neumann-flow", "complex-neumann-momenta",
-         "complex-neumann-real-data")
+         "complex-neumann-real-data") + FREE_PROVED
 #: fail as printed (documented errata with a registered correction)
 ERRATA = ("double-neumann-dual-lax", "coupled-neumann-flow", "coupled-big-lax-normal", "coupled-perturbed-big-lax",
           "complex-neumann-dual-lax")
@@ -152,6 +155,31 @@ def complex_real_data_sign(s):
     return {"Z''": acc - a.realify_real(s, a.flow_NE(s)["P"] + 2 * (s.A @ s.X))}
 
 
+def _primitives(t):
+    return {"X": t.X, "P": t.P, "Y": t.Y, "Q": t.Q}
+
+
+def printed_flow_loses_a_constraint(s):
+    """Corrupted: (C-eq) as printed, with QΠ, does not keep YᵀQ + QᵀY = 0."""
+    flow = a.flow_C_eq(s, _primitives(s), s.kappa, Q_Pi=True)
+    return {"d(Y^T Q + Q^T Y)/dt": s.d(lambda t: t.Y.T @ t.Q + t.Q.T @ t.Y, flow)}
+
+
+def dual_lax_along_the_printed_flow(s):
+    """Corrupted: (LA3*C) along (C-eq) as printed, with QΠ."""
+    z = _primitives(s)
+    flow = a.flow_C_eq(s, z, s.q(0), Q_Pi=True)
+    A = a.A_dual_coupled(s, z, s.X.T @ s.P, s.Y.T @ s.Q)
+    return {"LA3*C": s.d(lambda t: a.L_dual_coupled(t, _primitives(t)), flow) - comm(a.L_dual_coupled(s, z), A)}
+
+
+def corrected_big_lax_along_the_euclidean_flow(s):
+    """Corrupted: the corrected (so(n,n)) along (C-eq) with YΠ for κ = −½."""
+    z, nu = _primitives(s), s.scalar("nu")
+    L = lambda t: a.L_big(t, _primitives(t), nu, -1)
+    return {"so(n,n)": s.d(L, a.flow_C_eq_corrected(s, s.q(-1, 2))) - comm(a.A_big(s, z, nu), L(s))}
+
+
 CORRUPTIONS = [
     ("double-neumann-flow", double_flow_without_transpose),
     ("double-neumann-flow", double_flow_of_another_lagrangian),
@@ -169,6 +197,9 @@ CORRUPTIONS = [
     ("complex-neumann-dual-lax", complex_lax_without_bar),
     ("complex-neumann-momenta", complex_momentum_without_bars),
     ("complex-neumann-real-data", complex_real_data_sign),
+    ("coupled-corrected-flow-invariants", printed_flow_loses_a_constraint),
+    ("coupled-dual-lax-along-corrected-flow", dual_lax_along_the_printed_flow),
+    ("coupled-big-lax-along-corrected-flow", corrected_big_lax_along_the_euclidean_flow),
 ]
 
 
@@ -189,8 +220,8 @@ def test_corrupted_claim_fails(catalog, cid, func):
         assert run_exact(c, n, r, SEED, func=func).verdict == "fails"
 
 
-@pytest.mark.parametrize("cid, func", CORRUPTIONS[:1] + CORRUPTIONS[5:6] + CORRUPTIONS[12:13],
-                         ids=["double", "coupled", "complex"])
+@pytest.mark.parametrize("cid, func", CORRUPTIONS[:1] + CORRUPTIONS[5:6] + CORRUPTIONS[12:13] + CORRUPTIONS[-3:],
+                         ids=["double", "coupled", "complex", "invariants", "dual-lax", "big-lax"])
 def test_corrupted_claim_is_not_proved_for_all_sizes(catalog, cid, func):
     assert run_free(catalog.get(cid), func).verdict == "undecided"
 
@@ -206,7 +237,13 @@ def test_appendix_2_holds_as_printed_at_a_small_size(catalog, cid):
         assert res.method == "exact", res.line()
 
 
-@pytest.mark.parametrize("cid", HOLDS + ERRATA + NOT)
+@pytest.mark.parametrize("cid", FREE_PROVED)
+def test_claim_is_proved_for_every_n_and_r(catalog, cid):
+    res = run_free(catalog.get(cid))
+    assert res.verdict == "proved", res.message
+
+
+@pytest.mark.parametrize("cid", [c for c in HOLDS + ERRATA + NOT if c not in FREE_PROVED])
 def test_the_systems_need_coordinates(catalog, cid):
     res = run_free(catalog.get(cid))
     assert res.verdict == "undecided", res.line()
