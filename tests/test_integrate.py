@@ -58,6 +58,14 @@ def test_rattle_energy_error_is_second_order_and_XtX_exact(kappa):
         assert t.momentum_error.max() < 1e-14
 
 
+def test_rattle4_is_fourth_order_and_on_T_star_V():
+    X, P = point()
+    runs = [ig.integrate(X, P, "neumann", 2.0, method="rattle4", step=h, A=A4, kappa=0.0, samples=5) for h in (0.1, 0.05)]
+    e = [t.max_errors()["hamiltonian"] for t in runs]
+    assert 12 < e[0] / e[1] < 20           # 2⁴ = 16
+    assert max(t.position_error.max() for t in runs) < 1e-14
+
+
 def test_rattle_stays_on_T_star_V_at_a_large_step_and_keeps_psi():
     X, P = point(5, 3, seed=4)
     t = ig.integrate(X, P, "neumann", 20.0, method="rattle", step=0.2, kappa=0.0, samples=11)
