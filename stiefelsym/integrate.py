@@ -63,6 +63,8 @@ METHODS = ("dop853", "rattle", "rattle4", "rk4")
 _YOSHIDA = (1 / (2 - 2 ** (1 / 3)), -2 ** (1 / 3) / (2 - 2 ** (1 / 3)), 1 / (2 - 2 ** (1 / 3)))
 #: the largest constraint violation accepted as "on T*V" without projection
 ON_SHELL = 1e-10
+#: DOP853's relative tolerance and the fixed-step methods' step when neither tol nor step is given
+DEFAULT_TOL, DEFAULT_STEP = 1e-10, 0.01
 
 Array = np.ndarray
 Vector = Callable[[Array, Array], tuple[Array, Array]]
@@ -759,13 +761,13 @@ def _resolve_flow(flow: Any, n: int, r: int, params: dict[str, Any]) -> Flow:
 
 
 def integrate(X0: Any, P0: Any, flow: Any, t_span: Sequence[float] | float, *, method: str = "dop853",
-              tol: float = 1e-10, step: float | None = None, samples: int = 101, project: bool = False,
+              tol: float | None = None, step: float | None = None, samples: int = 101, project: bool = False,
               **flow_params: Any) -> Trajectory:
     """Integrate ``flow`` from (X0, P0) over ``t_span`` = (t0, t1) (or t1) with ``method``.
 
-    ``tol`` is the relative tolerance of DOP853 (absolute tolerance tol·1e-2); the fixed-step methods
-    use ``step`` or, when it is None, h = tol^(1/2) (RATTLE, order 2) and h = tol^(1/4) (RATTLE4, RK4),
-    at most (t1 − t0)/10.  ``samples`` states are kept, evenly spaced in time, and the errors are
+    ``tol`` is the relative tolerance of DOP853 (absolute tolerance tol·1e-2; default 1e-10); the
+    fixed-step methods use ``step``, or, when it is None, h = tol^(1/2) (RATTLE, order 2) and
+    h = tol^(1/4) (RATTLE4, RK4) if ``tol`` is given, else h = 0.01; at most (t1 − t0)/10.  ``samples`` states are kept, evenly spaced in time, and the errors are
     evaluated there.  A point that is off T*V by more than 1e-10 is refused unless ``project``.
     The remaining keywords are the flow's parameters (kappa, A, B, eps, perturbed for a named flow;
     hamiltonian, invariants, constraint, name for a callable)."""
@@ -779,7 +781,7 @@ def integrate(X0: Any, P0: Any, flow: Any, t_span: Sequence[float] | float, *, m
         raise ValueError(f"t_span must have finite t0 < t1, got ({t0}, {t1})")
     if method not in METHODS:
         raise ValueError(f"unknown method {method!r}; the methods are {', '.join(METHODS)}")
-    if not (isinstance(tol, (int, float)) and math.isfinite(tol) and tol > 0):
+    if tol is not None and not (isinstance(tol, (int, float)) and math.isfinite(tol) and tol > 0):
         raise ValueError(f"the tolerance must be a positive number, got {tol!r}")
     if step is not None and not (isinstance(step, (int, float)) and math.isfinite(step) and step > 0):
         raise ValueError(f"the step must be a positive number, got {step!r}")
@@ -801,6 +803,7 @@ def integrate(X0: Any, P0: Any, flow: Any, t_span: Sequence[float] | float, *, m
     m = fl.points
     started = time.perf_counter()
     if method == "dop853":
+        rtol = DEFAULT_TOL if tol is None else tol
         nxr = n * r * m
 
         def f(t: float, y: Array) -> Array:
@@ -808,7 +811,7 @@ def integrate(X0: Any, P0: Any, flow: Any, t_span: Sequence[float] | float, *, m
             return np.concatenate([np.ravel(Xd), np.ravel(Pd)])
 
         sol = solve_ivp(f, (t0, t1), np.concatenate([X.ravel(), P.ravel()]), method="DOP853", t_eval=ts,
-                        rtol=tol, atol=tol * 1e-2)
+                        rtol=rtol, atol=rtol * 1e-2)
         if sol.status != 0:
             raise RuntimeError(f"DOP853 failed on {fl.label}: {sol.message}")
         Ys = sol.y.T
@@ -816,7 +819,8 @@ def integrate(X0: Any, P0: Any, flow: Any, t_span: Sequence[float] | float, *, m
         evals, used_step = int(sol.nfev), None
     else:
         order = 2 if method == "rattle" else 4
-        h = step if step is not None else min(tol ** (1.0 / order), (t1 - t0) / 10)
+        h = step if step is not None else DEFAULT_STEP if tol is None else tol ** (1.0 / order)
+        h = min(h, (t1 - t0) / 10)
         per = max(1, int(math.ceil((t1 - t0) / (samples - 1) / h)))
         h = (t1 - t0) / (samples - 1) / per
         Xs, Ps = [X], [P]
@@ -847,7 +851,8 @@ def integrate(X0: Any, P0: Any, flow: Any, t_span: Sequence[float] | float, *, m
         Xs, Ps, used_step = np.stack(Xs), np.stack(Ps), h
     seconds = time.perf_counter() - started
     diag = _diagnostics(fl, Xs, Ps)
-    return Trajectory(fl.label, method, tol if method == "dop853" or step is None else None, used_step, ts, Xs, Ps,
+    used_tol = rtol if method == "dop853" else tol if step is None else None
+    return Trajectory(fl.label, method, used_tol, used_step, ts, Xs, Ps,
                       diag["position"], diag["momentum"], diag.get("hamiltonian"), diag["lax"], diag["invariants"],
                       diag.get("constraint"), seconds, evals, diag["eig"])
 

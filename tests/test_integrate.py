@@ -273,3 +273,13 @@ def test_custom_potential_flow_gets_the_dirac_field_and_rattle():
     errs = t.max_errors()
     assert errs["position"] < 1e-14 and errs["hamiltonian"] < 1e-3 and errs["lax: LA2"] < 1e-3
     assert t.lax_eigenvalue_drift["LA2"].max() < 1e-2
+
+
+def test_default_tolerance_and_step():
+    X, P = point()
+    t = ig.integrate(X, P, "neumann", 1.0, samples=3)
+    assert t.method == "dop853" and t.tol == 1e-10 and t.max_errors()["hamiltonian"] < 1e-9
+    t = ig.integrate(X, P, "neumann", 1.0, method="rattle", samples=3)
+    assert t.step == pytest.approx(0.01)
+    t = ig.integrate(X, P, "neumann", 1.0, method="rk4", tol=1e-8, samples=3)
+    assert t.step == pytest.approx(0.01)
