@@ -274,6 +274,31 @@ class Mat:
             return None
         return be, self._nat(), o._nat()
 
+    def _dual(self, dot: "Mat | None", field: Field, tracker) -> "Mat":
+        """This matrix plus ε·dot over the dual numbers ``field`` of this matrix's field."""
+        be = backend(field)
+        if be is not None and (dot is None or dot._field is self._field):
+            d = dot._nat() if dot is not None else be.base.zeros(*self._shape())
+            return Mat._wrap_native((self._nat(), d), field, self._tags, tracker, self._coords)
+        a = np.empty(self._shape(), dtype=object)
+        zero = self._field.const(0)
+        dv = dot._view() if dot is not None else None
+        for idx, x in np.ndenumerate(self._view()):
+            a[idx] = Dual(x, dv[idx] if dv is not None else zero)
+        return Mat._wrap(a, field, self._tags, tracker, self._coords)
+
+    def _retyped(self, field: Field, tags, tracker) -> "Mat":
+        """The same entries as a matrix of ``field`` (the same number system) with other spaces."""
+        if self._n is not None:
+            return Mat._wrap_native(self._n, field, tags, tracker)
+        return Mat._wrap(self._view().copy(), field, tags, tracker)
+
+    def _untyped(self) -> "Mat":
+        """The same entries, untyped and unrecorded (engine-internal values, e.g. on a tape)."""
+        if self._n is not None or backend(self._field) is not None:
+            return Mat._wrap_native(self._nat(), self._field)
+        return Mat._wrap(self._view(), self._field)
+
     @property
     def field(self) -> Field:
         return self._field

@@ -28,7 +28,6 @@ import numpy as np
 
 from .fields import Dual, DualField, Field, DegenerateError
 from .matrix import CoordinateTracker, Mat, block, definite, scalar_matrix, unify
-from .native import backend
 from .reverse import Rev, RevField, RevMat, Unsupported, gradient as rev_gradient, leaf as rev_leaf
 
 Scalar = Any
@@ -277,22 +276,13 @@ class Scene(PaperObjects):
             return X, P
         S = self._skew_params(f"{prefix}S", n, "n")
         In = self.identity(n, "n")
-        if backend(self.field) is not None:
-            Q = (In - S) @ (In + S).inv()      # whole-matrix inverse in the backend
-        else:
-            Q = Mat._rows(self.field.solve((In + S).T._a.tolist(), (In - S).T._a.tolist()),
-                          self.field, ("n", "n"), self.tracker).T  # (I - S)(I + S)^{-1}
-        if backend(self.field) is not None:
-            # the first r columns (the first one negated on the second component of O(n)) as one
-            # product with the constant n x r matrix [D; 0]
-            J = self.zeros(n, r, ("n", "r"))
-            for i in range(r):
-                J._obj[i, i] = self.const(-1 if i == 0 and self.component % 2 == 1 else 1)
-            X = Q @ J
-        else:
-            if self.component % 2 == 1:
-                Q._a[:, 0] = [-x for x in Q._a[:, 0]]
-            X = Mat._wrap(Q._a[:, :r].copy(), self.field, ("n", "r"), self.tracker)
+        Q = (In - S) @ (In + S).inv()          # in O(n); det Q = 1
+        # the first r columns (the first one negated on the second component of O(n)) as one
+        # product with the constant n x r matrix [D; 0]
+        J = self.zeros(n, r, ("n", "r"))
+        for i in range(r):
+            J._obj[i, i] = self.const(-1 if i == 0 and self.component % 2 == 1 else 1)
+        X = Q @ J
         W = self._skew_params(f"{prefix}W", r, "r")
         Z = self._general_params(f"{prefix}Z", n, r, ("n", "r"))
         P0 = X @ W + (In - X @ X.T) @ Z
@@ -559,15 +549,7 @@ class Scene(PaperObjects):
             raise Unsupported("a value that is not a number of the scene")
         leaves = [rs.leaves[k] for k in ("X", "P")]
         grads = rev_gradient(value, leaves, self.const(1))
-        out = []
-        for g in grads:
-            if g is None:
-                M = self.zeros(self.n, self.r, ("n", "r"))
-            else:
-                M = Mat._wrap_native(g._nat(), self.field, ("n", "r"), self.tracker) if g._n is not None \
-                    else Mat._wrap(g._view().copy(), self.field, ("n", "r"), self.tracker)
-            out.append(M)
-        return out[0], out[1]
+        return self._as_nr(grads[0]), self._as_nr(grads[1])
 
     def _grad_vector(self, H: Function) -> list[Scalar]:
         HX, HP = self.gradient(H)
@@ -618,9 +600,7 @@ class Scene(PaperObjects):
         """An adjoint from the tape as an n x r matrix of the scene (zero when absent)."""
         if g is None:
             return self.zeros(self.n, self.r, ("n", "r"))
-        if g._n is not None:
-            return Mat._wrap_native(g._nat(), self.field, ("n", "r"), self.tracker)
-        return Mat._wrap(g._view().copy(), self.field, ("n", "r"), self.tracker)
+        return g._retyped(self.field, ("n", "r"), self.tracker)
 
     def _constraint_jacobian(self) -> list[list[Scalar]]:
         return self._cached("J", lambda: [list(gX._view().flat) + list(gP._view().flat)
@@ -830,16 +810,7 @@ class TangentScene(_LiftedScene):
 
     def _lift(self, M: Any, dot: Mat | None = None) -> Any:
         if isinstance(M, Mat):
-            be = backend(self.field)
-            if be is not None and M.field is self.base.field and (dot is None or dot.field is self.base.field):
-                d = dot._nat() if dot is not None else be.base.zeros(*M._shape())
-                return Mat._wrap_native((M._nat(), d), self.field, M.tags, self.tracker, M._coords)
-            a = np.empty(M._shape(), dtype=object)
-            zero = self.base.field.const(0)
-            dv = dot._view() if dot is not None else None
-            for idx, x in np.ndenumerate(M._view()):
-                a[idx] = Dual(x, dv[idx] if dv is not None else zero)
-            return Mat._wrap(a, self.field, M.tags, self.tracker, M._coords)
+            return M._dual(dot, self.field, self.tracker)
         if isinstance(M, list):
             return [self._lift(x) for x in M]
         if isinstance(M, tuple):
@@ -865,8 +836,7 @@ class ReverseScene(_LiftedScene):
         if isinstance(M, Mat):
             # the tape's values are untyped and unrecorded: the types are checked (and coordinate
             # reads recorded) on the matrices of this scene, which carry M's spaces
-            v = Mat._wrap_native(M._nat(), M.field) if M._n is not None or backend(M.field) is not None \
-                else Mat._wrap(M._view(), M.field)
+            v = M._untyped()
             if key in ("X", "P"):
                 s = self.leaves.setdefault(key, rev_leaf(v))
             else:
