@@ -583,7 +583,10 @@ def monopole_checks(s, sign):
 
 @claim("ym-monopole", paper=("YM", "mag6"), kind="id",
        sizes=admissible(n_max=3, n_min=3, r_min=2, r_max=2, stated_n_max=3, condition="n = 3, r = 2"),
-       equivariance="not used: the cross product e_1 x e_2 is read from coordinates",
+       equivariance="e_3 = e_1 x e_2 is read from coordinates, but (g e_1) x (g e_2) = det(g) g (e_1 x e_2) for g "
+                    "in O(3), so under (X, P, A) -> (gX, gP, gAg^T) every residual becomes g R g^T (those even in "
+                    "e_3) or det(g) g R (those odd in e_3: the cross products, e_3 and its derivatives); each vanishes "
+                    "everywhere iff it vanishes at X0 for all P and A",
        fails_at=lambda n, r: True,
        erratum="""The remark after Proposition YM (n = 3, r = 2): with eta = Psi = epsilon E_1 ^ E_2
        (Psi = X^T P - P^T X), e_3 = e_1 x e_2 (iden1) and so(3) identified with (R^3, x) as Lie algebras,
