@@ -367,7 +367,7 @@ def rhs_neum_gras_mag(s, e1, e2, e1dot, e2dot):
                  r"+(e_2,Ae_2)-(\dot e_2,\dot e_2)\big)e_1\wedge e_2+2\dot e_1\wedge\dot e_2"
                  r"+\epsilon[e_1\wedge e_2,\dot e_1\wedge e_2+e_1\wedge\dot e_2]")
 def magnetic_grassmannian_flow(s):
-    """The magnetic Neumann system (neum-gras-mag) on G_{n,2} is the reduction of (mag-euk) and of (mag-nor) on Ψ⁻¹(0): at a generic point of Ψ⁻¹(0) the twisted flow keeps Ψ = 0, has ė = p, and its second derivative of e₁∧e₂ is the printed right-hand side; along it (prep) holds with the Φ_ε of (mag-mom-grass)."""
+    """The magnetic Neumann system (neum-gras-mag) on G_{n,2} is the reduction of (mag-euk) and of (mag-nor) on Ψ⁻¹(0): at a generic point of Ψ⁻¹(0) the twisted flow keeps Ψ = 0, has ė = p, and its second derivative of e₁∧e₂ is the printed right-hand side (which keeps e₁∧e₂ a unit decomposable bivector to second order); along it (prep) holds with the Φ_ε of (mag-mom-grass)."""
     X, Ph = horizontal_point(s)
     h = twisted.at_point(s, X, Ph)
     e1, e2 = col(h, 0), col(h, 1)
@@ -382,6 +382,10 @@ def magnetic_grassmannian_flow(s):
         checks[f"dPsi/dt at Psi = 0 ({name})"] = h.d(lambda t: t.Psi, flow)
         checks[f"de/dt = p on Psi = 0 ({name})"] = flow.Xdot - Ph
         checks[f"(neum-gras-mag) ({name})"] = second - rhs_neum_gras_mag(h, e1, e2, e1dot, e2dot)
+        G, Gd, Gdd = wedge(e1, e2), wedge(e1dot, e2) + wedge(e1, e2dot), rhs_neum_gras_mag(h, e1, e2, e1dot, e2dot)
+        checks[f"(neum-gras-mag) keeps G^3 = -G, G = e1^e2, to second order ({name})"] = (
+            Gdd @ G @ G + G @ Gdd @ G + G @ G @ Gdd + 2 * (Gd @ Gd @ G + Gd @ G @ Gd + G @ Gd @ Gd) + Gdd)
+        checks[f"(neum-gras-mag) keeps tr G^2 = -2 to second order ({name})"] = h.tr(Gdd @ G) + h.tr(Gd @ Gd)
         checks[f"(prep): dPhi_eps/dt = [XX^T, A] ({name})"] = (
             wedge(e1dd, e1) + wedge(e2dd, e2) + h.eps * (wedge(e1dot, e2) + wedge(e1, e2dot)) - comm(XX, h.A))
         checks[f"(prep): d(XX^T)/dt = [Phi_eps, XX^T] ({name})"] = (
@@ -456,7 +460,7 @@ def clebsch_perelomov_hamiltonian(s):
        statement=r"\Omega=\dot{\mathcal X}\mathcal X^{-1}=M,\ \omega=\mathcal X^{-1}\dot{\mathcal X}=m=\mathcal X^{-1}M\mathcal X,\quad "
                  r"\dot\Omega=[A,e_n\otimes e_n],\quad \dot e_i=\Omega e_i\ (i=1,\dots,n),\quad \dot e_n=\Omega e_n")
 def rigid_body_euler_poisson(s):
-    """Along the Dirac flow of H_CP on T*SO(n), the angular velocities in the space and body frames are the angular momenta, Ω = 𝒳̇𝒳⁻¹ = M and ω = 𝒳⁻¹𝒳̇ = m = 𝒳⁻¹M𝒳 (the inertia operator is the identity), and the motion obeys the Euler–Poincaré equation (Euler*) Ω̇ = [A, e_n⊗e_n] with the Poisson equations (Poisson), in particular (mag2) ė_n = Ωe_n."""
+    """Along the Dirac flow of H_CP on T*SO(n), the angular velocities in the space and body frames are the angular momenta, Ω = 𝒳̇𝒳⁻¹ = M and ω = 𝒳⁻¹𝒳̇ = m = 𝒳⁻¹M𝒳 (the inertia operator is the identity), and the motion obeys the Euler–Poincaré equation (Euler*) Ω̇ = [A, e_n⊗e_n] with the Poisson equations (Poisson), in particular (mag2) ė_n = Ωe_n, which keep 𝒳 orthogonal."""
     flow = s.dirac_flow(H_CP)
     e = last(s)
     Omega = flow.Xdot @ s.X.T
@@ -466,6 +470,7 @@ def rigid_body_euler_poisson(s):
         "(Euler*)": s.d(lambda t: t.Phi, flow) - comm(s.A, e @ e.T),
         "(Poisson) de_i/dt = Omega e_i": flow.Xdot - Omega @ s.X,
         "(mag2) de_n/dt = Omega e_n": s.d(last, flow) - Omega @ e,
+        "(Poisson) with Omega = M keeps X^T X = I": (s.Phi @ s.X).T @ s.X + s.X.T @ (s.Phi @ s.X),
     }
 
 
@@ -473,7 +478,7 @@ def rigid_body_euler_poisson(s):
        statement=r"T^*V_{n,n-1}/SO(n-1)\cong so(n)\times S^{n-1}:\quad \dot\Omega=[A,e_n\otimes e_n],\quad \dot e_n=\Omega e_n,"
                  r"\quad \Omega=\Phi,\ e_n\otimes e_n=\mathbf I_n-XX^T")
 def reduced_neumann_is_euler_star_star(s):
-    """Proposition YM (i): the normal-metric Neumann flow (N0_XP2) on T*V_{n,n−1} (the Dirac flow of H_neum,0) reduces by the right SO(n−1) action to (Euler**) on so(n) × S^{n−1}: (Ω, e_n⊗e_n) = (Φ, I − XXᵀ) are invariant (e_n⊗e_n = I − XXᵀ by (iden1), see clebsch-perelomov-hamiltonian; it is the projector orthogonal to e₁, …, e_{n−1}), and Ω̇ = [A, e_n⊗e_n], d(e_n⊗e_n)/dt = [Ω, e_n⊗e_n] (equivalent to ė_n = Ωe_n for a unit e_n); the identities hold for every r, so the dimension-free method proves them for all n, r."""
+    """Proposition YM (i): the normal-metric Neumann flow (N0_XP2) on T*V_{n,n−1} (the Dirac flow of H_neum,0) reduces by the right SO(n−1) action to (Euler**) on so(n) × S^{n−1}: (Ω, e_n⊗e_n) = (Φ, I − XXᵀ) are invariant (e_n⊗e_n = I − XXᵀ by (iden1), see clebsch-perelomov-hamiltonian; it is the projector orthogonal to e₁, …, e_{n−1}), and Ω̇ = [A, e_n⊗e_n], d(e_n⊗e_n)/dt = [Ω, e_n⊗e_n] (equivalent to ė_n = Ωe_n for a unit e_n), equations that keep Ω skew and e_n⊗e_n a projector; the identities hold for every r, so the dimension-free method proves them for all n, r."""
     flow = s.dirac_flow(H_neumann_normal)
     N = s.In - s.X @ s.X.T
     right = {"X": s.X @ s.eta, "P": s.P @ s.eta}
@@ -483,6 +488,8 @@ def reduced_neumann_is_euler_star_star(s):
         "Omega, e_n (x) e_n right-invariant": [s.d(lambda t: t.Phi, right), s.d(lambda t: t.X @ t.X.T, right)],
         "(Euler**) dOmega/dt = [A, e_n (x) e_n]": s.d(lambda t: t.Phi, flow) - comm(s.A, N),
         "(Euler**) de_n/dt = Omega e_n": s.d(lambda t: t.In - t.X @ t.X.T, flow) - comm(s.Phi, N),
+        "(Euler**) keeps Omega skew": comm(s.A, N) + comm(s.A, N).T,
+        "(Euler**) keeps e_n (x) e_n a projector": comm(s.Phi, N) @ N + N @ comm(s.Phi, N) - comm(s.Phi, N),
     }
 
 
@@ -511,7 +518,7 @@ def pr_e(xi, e):
                  r"F_\Omega=\pr_{e_n^\perp}(\Omega)=\Omega-\Phi(e_n,\dot e_n),\quad "
                  r"\pr_{e_n}(\Omega)=\dot e_n\wedge e_n=\Phi(e_n,\dot e_n)")
 def ym_second_derivative(s):
-    """Proposition YM (ii): along the flow of H_CP, the second derivative of e_n is (mag6) with the Yang–Mills term F_Ωė_n, F_Ω = pr_{e_n⊥}(Ω) = Ω − ė_n∧e_n; (mag3) pr_{e_n}(Ω) = ė_n∧e_n, pr_{e_n} is the orthogonal projection of (OD) (idempotent, ⟨pr_{e_n}ξ, pr_{e_n⊥}ζ⟩ = 0, pr_{e_n⊥}ξ annihilates e_n), ė_n = pr_{e_n}(Ω)e_n, and the steps of the proof hold."""
+    """Proposition YM (ii): along the flow of H_CP, the second derivative of e_n is (mag6) with the Yang–Mills term F_Ωė_n, F_Ω = pr_{e_n⊥}(Ω) = Ω − ė_n∧e_n, an equation that keeps TS^{n−1}; (mag3) pr_{e_n}(Ω) = ė_n∧e_n, pr_{e_n} is the orthogonal projection of (OD) (idempotent, ⟨pr_{e_n}ξ, pr_{e_n⊥}ζ⟩ = 0, pr_{e_n⊥}ξ annihilates e_n), ė_n = pr_{e_n}(Ω)e_n, and the steps of the proof hold."""
     flow = s.dirac_flow(H_CP)
     e = last(s)
     Omega = s.Phi
@@ -522,6 +529,8 @@ def ym_second_derivative(s):
     return {
         "de_n/dt = Omega e_n": s.d(last, flow) - edot,
         "(mag6)": edd - (s.A @ e - (dot(s, e, s.A @ e) + dot(s, edot, edot)) * e + F @ edot),
+        "(mag6) keeps TS^{n-1}: d/dt (e_n, de_n/dt) = 0": dot(s, edot, edot)
+        + dot(s, e, s.A @ e - (dot(s, e, s.A @ e) + dot(s, edot, edot)) * e + F @ edot),
         "(mag3) pr_e(Omega) = de_n/dt ^ e_n": pr_e(Omega, e) - wedge(edot, e),
         "F_Omega = pr_perp(Omega)": F - (Omega - pr_e(Omega, e)),
         "de_n/dt = pr_e(Omega) e_n": pr_e(Omega, e) @ e - edot,
@@ -626,7 +635,7 @@ def cpb_hamiltonians(s):
                  r"\dot\Omega=[e_1\otimes e_1+\dots+e_r\otimes e_r,A],\ \dot e_i=\Omega e_i;\quad "
                  r"h=\Omega,\ v=\textstyle\sum_{i\le r}e_i\otimes e_i:\ \dot h=[v,A],\ \dot v=[h,v]")
 def cpb_euler(s):
-    """For every r < n, the Dirac flow of the symmetric Clebsch–Perelomov–Bogoyavlenski Hamiltonian H_CPB on T*SO(n) has Ω = M and is the Euler–Poincaré equation (Euler) with the Poisson equations (Poisson), closed in h = Ω, v = Σ_{i≤r} e_i⊗e_i as (CPB), with H_CPB = ½⟨h, h⟩ − ⟨A, v⟩."""
+    """For every r < n, the Dirac flow of the symmetric Clebsch–Perelomov–Bogoyavlenski Hamiltonian H_CPB on T*SO(n) has Ω = M and is the Euler–Poincaré equation (Euler) with the Poisson equations (Poisson), closed in h = Ω, v = Σ_{i≤r} e_i⊗e_i as (CPB) (which keeps h skew and v a projector), with H_CPB = ½⟨h, h⟩ − ⟨A, v⟩."""
     checks = {}
     for k, H in cpb_hamiltonians(s):
         flow = s.dirac_flow(H)
@@ -637,6 +646,8 @@ def cpb_euler(s):
         checks[f"(Euler) (r = {k})"] = s.d(lambda t: t.Phi, flow) - comm(v, s.A)
         checks[f"(CPB) dv/dt = [h, v] (r = {k})"] = s.d(lambda t, k=k: t.X @ projector(t, k) @ t.X.T, flow) - comm(s.Phi, v)
         checks[f"H_CPB = 1/2<h, h> - <A, v> (r = {k})"] = H(s) - (s.killing(s.Phi, s.Phi) / 2 - s.killing(s.A, v))
+        checks[f"(CPB) keeps v a projector and h skew (r = {k})"] = [
+            comm(s.Phi, v) @ v + v @ comm(s.Phi, v) - comm(s.Phi, v), comm(v, s.A) + comm(v, s.A).T]
     return checks
 
 
