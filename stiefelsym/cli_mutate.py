@@ -141,9 +141,14 @@ def _command(ids: Sequence[str], sizes: Sequence[str], methods: Sequence[str], s
               help="Only the mutant with this index (as in 'CLAIM#K'); repeatable; needs one CLAIM.")
 @click.option("--jobs", type=click.IntRange(min=0), default=0, show_default=True, metavar="J",
               help="Worker processes (0: one per CPU).  The results do not depend on it.")
+@click.option("--corrections", is_flag=True,
+              help="Errata search instead of the mutation analysis: for each named CLAIM, the candidates of the "
+                   "declared search space (every operator, in the claim and its helper functions, two signs at "
+                   "once, the expectation of a 'does not hold') that pass every method at every size "
+                   "(default methods: rational, modular; default sizes: the claim's sizes with n <= 4).")
 def mutate(ids: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str, ...], seed: int,
            claims_file: str | None, report_dir: Path | None, fmt: str, limit: int | None,
-           only: tuple[int, ...], jobs: int) -> None:
+           only: tuple[int, ...], jobs: int, corrections: bool) -> None:
     """Corrupt every claim in small ways and check that every method notices.
 
     Each mutant (one sign flipped, operands of @ or comm swapped, a factor
@@ -185,6 +190,8 @@ def mutate(ids: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str, ...
         for m in methods or engine.METHODS:
             if m in BUDGET and s.n > BUDGET[m]:
                 raise MutateInputError(f"n = {s.n} is beyond the {m} method's budget (n <= {BUDGET[m]})")
+    if corrections:
+        _search(engine, claims, ids, parsed_sizes, tuple(methods) or ("rational", "modular"), seed, fmt)
     methods = tuple(methods) or engine.METHODS
     out_err = fmt != "text"
 
@@ -227,6 +234,42 @@ def mutate(ids: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str, ...
     else:
         click.echo("note: partial run, no report written (give --report-dir DIR to write one)", err=True)
     raise click.exceptions.Exit(EXIT_OK if report.ok() else EXIT_SURVIVORS)
+
+
+def _search(engine: Any, claims: Sequence[Claim], ids: Sequence[str], sizes: Sequence[Size],
+            methods: Sequence[str], seed: int, fmt: str) -> None:
+    """``mutate --corrections``: the errata search of the named claims; exits 0."""
+    import json
+
+    if not ids:
+        raise MutateInputError("--corrections searches corrections of named claims: give at least one CLAIM")
+    out: dict[str, Any] = {"seed": seed, "methods": list(methods),
+                           "search_space": [{"name": name, "description": text} for name, text, _ in engine.OPERATORS]
+                           + [{"name": name, "description": text} for name, text in engine.SEARCH_EXTRAS],
+                           "claims": []}
+    for c in claims:
+        chosen = [s for s in sizes if c.sizes.admits(s.n, s.r)] or None
+        plan_sizes = chosen or [s for s in c.sizes if s.n <= engine.DEFAULT_N_MAX] or list(c.sizes)[:1]
+        tried = [0]
+
+        def seen(m: Any, ok: bool) -> None:
+            tried[0] += 1
+            if ok and fmt == "text":
+                click.echo(f"{c.id}: correction passes: {m.description}")
+        try:
+            found = engine.search_corrections(c, plan_sizes, methods, seed, on_candidate=seen)
+        except ValueError as exc:
+            raise MutateInputError(str(exc)) from None
+        where = ", ".join(f"({s.n},{s.r})" for s in plan_sizes)
+        out["claims"].append({"claim": c.id, "sizes": [[s.n, s.r] for s in plan_sizes], "candidates": tried[0],
+                              "corrections": [{"description": m.description, "operator": m.operator,
+                                               "source": m.source, "expect": m.expect} for m in found]})
+        if fmt == "text":
+            click.echo(f"{c.id}: {len(found)} of {tried[0]} candidates pass every method ({', '.join(methods)}) "
+                       f"at {where}, seed {seed}")
+    if fmt == "json":
+        click.echo(json.dumps(out, indent=1))
+    raise click.exceptions.Exit(EXIT_OK)
 
 
 if __name__ == "__main__":   # python -m stiefelsym.cli_mutate, before the command joins the group

@@ -3,9 +3,13 @@
 A *mutant* of a claim is the claim's function with one small change of its source:
 the sign of a term flipped, the operands of a product or commutator swapped, a
 factor transposed, a term dropped, a scene letter replaced by another of the same
-kind, or a rational coefficient changed.  The space of changes is declared once,
-in :data:`OPERATORS` (and :data:`LETTER_SWAPS` for the letters); every claim of the
-catalog gets every mutant its source admits.
+kind, a rational coefficient changed, a matrix function of A and the spectral
+parameter inverted or not (a resolvent (μI − A)⁻¹ and μI − A, M.inv() and M,
+A + λI and its inverse), the normalization of a resolvent changed ((A − μI)⁻¹,
+(−μI − A)⁻¹, (A + μI)⁻¹, (I − A/μ)⁻¹), or two letters of the same shape swapped in
+one term.  The space of changes is declared once, in :data:`OPERATORS` (and
+:data:`LETTER_SWAPS` for the letters); every claim of the catalog gets every mutant
+its source admits.
 
 Each mutant runs, through :func:`stiefelsym.runner.run_one`, with every fixed-size
 method at a few sizes and with the dimension-free method.  The claim as printed
@@ -30,7 +34,13 @@ pass says nothing about a mutant, and is not counted.  Then:
   elsewhere is **unresolved**.
 
 The same machinery searches corrections of a printed formula that fails:
-:func:`search_corrections` returns the mutants that pass every method at every size.
+:func:`search_corrections` returns the candidates that pass every method at every size.
+Its search space (:func:`correction_candidates`, :data:`SEARCH_EXTRAS`) is the same for
+every claim: every operator above, in the claim and in the helper functions of its own
+package that it calls (where the printed formulas usually live), the signs of two terms
+at once (tried only when no one-step candidate passes), and, for a statement the paper
+says does not hold, that it holds.  A candidate that makes a residual read E − E, or
+whose left sides vanish as well (0 = 0), is no correction and is left out.
 """
 from __future__ import annotations
 
@@ -38,8 +48,10 @@ import ast
 import copy
 import inspect
 import json
+import sys
 import textwrap
 import time
+import types
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import Any, Callable, Iterable, Iterator, Sequence
@@ -100,6 +112,11 @@ class Mutant:
     index: int = 0
     #: the corrupted expression, as source
     source: str = ""
+    #: a changed expectation of the claim ("holds" for a statement the paper says does not hold)
+    expect: str | None = None
+    #: builds the mutant with each residual a − b replaced by its left side a (errata search: a
+    #: candidate whose left sides vanish too is vacuous); None: no such test
+    left: Callable[[], Callable | None] | None = field(default=None, repr=False, compare=False)
 
 
 @dataclass
@@ -132,8 +149,17 @@ def _is_int(node: ast.AST) -> bool:
     return isinstance(node, ast.Constant) and type(node.value) is int
 
 
+def _in_index(parents: list[ast.AST]) -> bool:
+    """Inside the arguments of range(), len() and the other index calls, or a subscript: sizes and
+    indices, not mathematics."""
+    return any(isinstance(p, ast.Call) and _call_name(p) in INDEX_CALLS for p in parents) \
+        or any(isinstance(p, (ast.Subscript, ast.Slice)) for p in parents)
+
+
 def _sign_sites(node, parents, names) -> Iterator[_Site]:
     """a + b <-> a - b; a unary minus added to the first term, or removed."""
+    if _in_index(parents):
+        return
     if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Add, ast.Sub)):
         op = ast.Sub() if isinstance(node.op, ast.Add) else ast.Add()
         new = ast.BinOp(left=copy.deepcopy(node.left), op=op, right=copy.deepcopy(node.right))
@@ -181,6 +207,8 @@ def _transpose_sites(node, parents, names) -> Iterator[_Site]:
 
 def _drop_sites(node, parents, names) -> Iterator[_Site]:
     """a ± b -> a; a + b -> b, a - b -> -b."""
+    if _in_index(parents):
+        return
     if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Add, ast.Sub)):
         yield _Site(node, copy.deepcopy(node.left), "drop", f"drop the term {_code(node.right)} from {_code(node)}")
         right = copy.deepcopy(node.right) if isinstance(node.op, ast.Add) else _neg(node.right)
@@ -232,6 +260,113 @@ def _coefficient_sites(node, parents, names) -> Iterator[_Site]:
         yield _Site(node, new, "coefficient", f"change the denominator in {_code(node)} to {_code(new.args[1])}")
 
 
+#: names of the spectral parameter and of scalar matrices (a matrix function of A and the spectral
+#: parameter is an expression in A and one of them)
+SPECTRAL_NAMES = ("lam", "mu", "nu", "kappa")
+SPECTRAL_CALLS = ("scalar", "scalar_matrix")
+
+
+def _inverted(node: ast.AST) -> ast.AST:
+    return ast.Call(func=ast.Attribute(value=copy.deepcopy(node), attr="inv", ctx=ast.Load()), args=[], keywords=[])
+
+
+def _mentions(node: ast.AST, names: Iterable[str]) -> bool:
+    names = set(names)
+    for sub in ast.walk(node):
+        if isinstance(sub, ast.Attribute) and sub.attr in names or isinstance(sub, ast.Name) and sub.id in names:
+            return True
+    return False
+
+
+def _spectral(node: ast.AST) -> bool:
+    return _mentions(node, SPECTRAL_NAMES) or any(
+        isinstance(sub, ast.Call) and _call_name(sub) in SPECTRAL_CALLS for sub in ast.walk(node))
+
+
+def _invert_sites(node, parents, names) -> Iterator[_Site]:
+    """Invert or not a matrix function of A and the spectral parameter: a resolvent (μI − A)⁻¹ becomes
+    μI − A, an explicit inverse M.inv() becomes M, a sum in A and the spectral parameter (A + λI) becomes
+    its inverse."""
+    if isinstance(node, ast.Call) and _call_name(node) == "resolvent" and len(node.args) == 1:
+        yield _Site(node, _inverted(node), "invert",
+                    f"invert the resolvent {_code(node)} (μI − A in place of (μI − A)⁻¹){_context(parents)}")
+    if isinstance(node, ast.Call) and _call_name(node) == "inv" and not node.args \
+            and isinstance(node.func, ast.Attribute):
+        yield _Site(node, copy.deepcopy(node.func.value), "invert",
+                    f"drop the inverse in {_code(node)}{_context(parents)}")
+    if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Add, ast.Sub)) \
+            and not (parents and isinstance(parents[-1], ast.BinOp) and isinstance(parents[-1].op, (ast.Add, ast.Sub))) \
+            and _mentions(node, ("A",)) and _spectral(node):
+        yield _Site(node, _inverted(node), "invert", f"invert the matrix {_code(node)}{_context(parents)}")
+
+
+def _negated_argument(arg: ast.AST) -> ast.AST:
+    if isinstance(arg, ast.UnaryOp) and isinstance(arg.op, ast.USub):
+        return copy.deepcopy(arg.operand)
+    return _neg(arg)
+
+
+def _normalization_sites(node, parents, names) -> Iterator[_Site]:
+    """Change the normalization of a resolvent R(μ) = (μI − A)⁻¹: (A − μI)⁻¹ = −R(μ), (−μI − A)⁻¹ = R(−μ),
+    (A + μI)⁻¹ = −R(−μ), (I − A/μ)⁻¹ = μR(μ)."""
+    if not (isinstance(node, ast.Call) and _call_name(node) == "resolvent" and len(node.args) == 1):
+        return
+    arg = node.args[0]
+    flipped = copy.deepcopy(node)
+    flipped.args = [_negated_argument(arg)]
+    ctx = _context(parents)
+    yield _Site(node, _neg(node), "normalize", f"(A − μI)⁻¹ in place of {_code(node)}{ctx}")
+    yield _Site(node, flipped, "normalize", f"(−μI − A)⁻¹: {_code(flipped)} in place of {_code(node)}{ctx}")
+    yield _Site(node, _neg(flipped), "normalize", f"(A + μI)⁻¹: {_code(_neg(flipped))} in place of {_code(node)}{ctx}")
+    scaled = ast.BinOp(left=copy.deepcopy(arg), op=ast.Mult(), right=copy.deepcopy(node))
+    yield _Site(node, scaled, "normalize", f"(I − A/μ)⁻¹: {_code(scaled)} in place of {_code(node)}{ctx}")
+
+
+class _SwapLetters(ast.NodeTransformer):
+    def __init__(self, a: str, b: str) -> None:
+        self.map = {a: b, b: a}
+
+    def visit_Attribute(self, node: ast.Attribute) -> ast.AST:
+        self.generic_visit(node)
+        if isinstance(node.ctx, ast.Load) and node.attr in self.map:
+            node.attr = self.map[node.attr]
+        return node
+
+    def visit_Name(self, node: ast.Name) -> ast.AST:
+        if isinstance(node.ctx, ast.Load) and node.id in self.map:
+            node.id = self.map[node.id]
+        return node
+
+
+def _letters(node: ast.AST, names: set[str]) -> list[str]:
+    out = []
+    for sub, _ in _walk(node, []):   # source order
+        if isinstance(sub, ast.Attribute) and isinstance(sub.ctx, ast.Load) and sub.attr in LETTER_SWAPS:
+            out.append(sub.attr)
+        elif isinstance(sub, ast.Name) and isinstance(sub.ctx, ast.Load) and sub.id in LETTER_SWAPS \
+                and all(alt in names for alt in LETTER_SWAPS[sub.id]):
+            out.append(sub.id)
+    return list(dict.fromkeys(out))
+
+
+def _term_swap_sites(node, parents, names) -> Iterator[_Site]:
+    """Swap two letters of the same shape (LETTER_SWAPS) everywhere in one term: a maximal product
+    (X.T @ R @ P -> P.T @ R @ X) or an operand of comm."""
+    term = isinstance(node, ast.BinOp) and isinstance(node.op, ast.MatMult) \
+        and not (parents and isinstance(parents[-1], ast.BinOp) and isinstance(parents[-1].op, ast.MatMult))
+    if not term:
+        return
+    present = _letters(node, names)
+    done = set()
+    for a in present:
+        for b in LETTER_SWAPS[a]:
+            if b in present and frozenset((a, b)) not in done:
+                done.add(frozenset((a, b)))
+                new = _SwapLetters(a, b).visit(copy.deepcopy(node))
+                if ast.dump(new) != ast.dump(node):
+                    yield _Site(node, new, "letters", f"swap the letters {a} and {b} in the term {_code(node)}")
+
+
 #: the declared space of corruptions: (name, what it does, site generator)
 OPERATORS: tuple[tuple[str, str, Callable], ...] = (
     ("sign", "flip the sign of one term (a + b <-> a - b), add or remove a unary minus", _sign_sites),
@@ -241,6 +376,22 @@ OPERATORS: tuple[tuple[str, str, Callable], ...] = (
     ("letter", "replace a scene letter by another of the same kind (LETTER_SWAPS)", _letter_sites),
     ("coefficient", "change a rational coefficient (an integer k -> k + 1; s.q(a, b) -> s.q(a, b + 1))",
      _coefficient_sites),
+    ("invert", "invert or not a matrix function of A and the spectral parameter (a resolvent, an explicit "
+     "inverse, A + λI)", _invert_sites),
+    ("normalize", "change the normalization of a resolvent (μI − A)⁻¹: (A − μI)⁻¹, (−μI − A)⁻¹, (A + μI)⁻¹, "
+     "(I − A/μ)⁻¹", _normalization_sites),
+    ("letters", "swap two letters of the same shape (LETTER_SWAPS) in one term", _term_swap_sites),
+)
+
+#: the errata search adds to OPERATORS: the signs of two terms at once (in one function), the mutants
+#: of the helper functions a claim calls (of its own package), and, for a statement that the paper says
+#: does not hold, the statement that it does
+SEARCH_EXTRAS: tuple[tuple[str, str], ...] = (
+    ("sign2", "flip the signs of two terms at once (two sites of the sign operator in one function)"),
+    ("helper", "every operator above, applied inside a helper function of the claim's package that the claim "
+               "calls (directly or through other helpers, up to depth 3)"),
+    ("expect", "a statement the paper says does not hold (expect='nonzero'): it holds (the residual vanishes); "
+               "for such a statement this is the whole search space"),
 )
 
 
@@ -325,47 +476,286 @@ def _compile(fn: Callable, defn: ast.FunctionDef, filename: str) -> Callable:
     return func
 
 
-def mutants(claim: Claim | Callable) -> list[Mutant]:
-    """Every mutant of a claim (or of a claim function), in source order, without duplicates.
+def _function_sites(defn: ast.FunctionDef, names: set[str]) -> Iterator[_Site]:
+    """Every site of every operator in the body of defn, in source order (node by node, then operator)."""
+    for stmt in _body(defn):
+        for node, parents in _walk(stmt, [defn]):
+            for _, _, gen in OPERATORS:
+                yield from gen(node, parents, names)
 
-    Returns [] when the function's source is not available."""
-    fn = claim.func if isinstance(claim, Claim) else claim
+
+def _vacuous(defn: ast.FunctionDef) -> bool:
+    """Whether the mutated body contains a difference of two identical expressions (E − E, E + (−E)):
+    a mutant that makes a residual vanish for no reason (e.g. the letters of XᵀP − PᵀX swapped in one
+    term) is no candidate correction."""
+    for node in ast.walk(defn):
+        if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Sub, ast.Add)):
+            right = node.right
+            if isinstance(node.op, ast.Add):
+                if not (isinstance(right, ast.UnaryOp) and isinstance(right.op, ast.USub)):
+                    continue
+                right = right.operand
+            if ast.dump(node.left) == ast.dump(right):
+                return True
+    return False
+
+
+class _LeftSides(ast.NodeTransformer):
+    """In the returned dict of checks, each residual ``a - b`` becomes its left side ``a``."""
+
+    def __init__(self) -> None:
+        self.changed = False
+
+    def visit_Dict(self, node: ast.Dict) -> ast.AST:
+        self.generic_visit(node)
+        node.values = [self._left(v) for v in node.values]
+        return node
+
+    def visit_DictComp(self, node: ast.DictComp) -> ast.AST:
+        self.generic_visit(node)
+        node.value = self._left(node.value)
+        return node
+
+    def visit_Assign(self, node: ast.Assign) -> ast.AST:   # checks[name] = a - b
+        self.generic_visit(node)
+        if len(node.targets) == 1 and isinstance(node.targets[0], ast.Subscript):
+            node.value = self._left(node.value)
+        return node
+
+    def _left(self, v: ast.AST) -> ast.AST:
+        if isinstance(v, ast.BinOp) and isinstance(v.op, ast.Sub):
+            self.changed = True
+            return v.left
+        return v
+
+
+def _left_sides(fn: Callable, defn: ast.FunctionDef | None = None, filename: str = "") -> Callable | None:
+    """fn with every residual a − b of its checks replaced by a (None when no check is a difference):
+    a candidate correction whose left sides vanish as well makes the printed equation read 0 = 0."""
+    if defn is None:
+        try:
+            defn, filename = _function_ast(fn)
+        except (OSError, TypeError, SyntaxError, StopIteration):
+            return None
+    tr = _LeftSides()
+    new = tr.visit(copy.deepcopy(defn))
+    return _compile(fn, ast.fix_missing_locations(new), filename) if tr.changed else None
+
+
+def _function_mutants(fn: Callable) -> list[tuple[str, int, Callable, str, str, bool]]:
+    """(description, line, mutated function, operator, source, vacuous) for every one-step mutant of
+    fn, in source order, without duplicates; [] when the source is not available."""
     try:
         defn, filename = _function_ast(fn)
     except (OSError, TypeError, SyntaxError, StopIteration):
         return []
     names = _bound_names(defn)
-    original = ast.unparse(defn)
-    seen = {original}
+    seen = {ast.unparse(defn)}
     repeats: dict[str, int] = {}
+    out = []
+    for site in _function_sites(defn, names):
+        mutated = _mutated(defn, site)
+        text = ast.unparse(mutated)
+        if text in seen:
+            continue
+        seen.add(text)
+        lineno = getattr(site.node, "lineno", defn.lineno)
+        description = f"line {lineno}: {site.text}"
+        repeats[description] = repeats.get(description, 0) + 1
+        if repeats[description] > 1:   # the same text at another place of the line
+            description += f" (occurrence {repeats[description]})"
+        out.append((description, lineno, _compile(fn, mutated, filename), site.operator,
+                    " ".join(ast.unparse(site.replacement).split()), _vacuous(mutated),
+                    (lambda m=mutated: _left_sides(fn, m, filename))))
+    return out
+
+
+def mutants(claim: Claim | Callable, helpers: bool = False) -> list[Mutant]:
+    """Every mutant of a claim (or of a claim function), in source order, without duplicates.
+
+    ``helpers``: also the mutants of the helper functions of the claim's package that the claim
+    calls (see :func:`helper_functions`), each run with the claim's own code unchanged.
+    Returns [] when the function's source is not available."""
+    fn = claim.func if isinstance(claim, Claim) else claim
     out: list[Mutant] = []
-    for stmt in _body(defn):
-        for node, parents in _walk(stmt, [defn]):
-            for _, _, gen in OPERATORS:
-                for site in gen(node, parents, names):
-                    mutated = _mutated(defn, site)
-                    text = ast.unparse(mutated)
-                    if text in seen:
-                        continue
-                    seen.add(text)
-                    lineno = getattr(site.node, "lineno", defn.lineno)
-                    func = _compile(fn, mutated, filename)
-                    description = f"line {lineno}: {site.text}"
-                    repeats[description] = repeats.get(description, 0) + 1
-                    if repeats[description] > 1:   # the same text at another place of the line
-                        description += f" (occurrence {repeats[description]})"
-                    out.append(Mutant(description=description, lineno=lineno, func=func,
-                                      operator=site.operator, index=len(out),
-                                      source=" ".join(ast.unparse(site.replacement).split())))
+    for description, lineno, func, op, source, _, _ in _function_mutants(fn):
+        out.append(Mutant(description=description, lineno=lineno, func=func, operator=op,
+                          index=len(out), source=source))
+    if helpers:
+        for name, helper in helper_functions(fn):
+            for description, lineno, func, op, source, _, _ in _function_mutants(helper):
+                out.append(Mutant(description=f"in {name}(), {description}", lineno=lineno,
+                                  func=_patched(fn, helper, func), operator=op, index=len(out), source=source))
+    return out
+
+
+# --------------------------------------------------------------------------- helpers of a claim
+
+def _referenced_names(fn: Callable) -> list[str]:
+    """The global names a function's code (and the lambdas and functions inside it) refers to."""
+    out: list[str] = []
+    stack = [fn.__code__]
+    while stack:
+        code = stack.pop()
+        out.extend(code.co_names)
+        stack.extend(c for c in code.co_consts if isinstance(c, types.CodeType))
+    return list(dict.fromkeys(out))
+
+
+def _package(fn: Callable) -> str:
+    return (getattr(fn, "__module__", "") or "").split(".")[0]
+
+
+def helper_functions(fn: Callable, depth: int = 3) -> list[tuple[str, Callable]]:
+    """The plain functions of the claim's own package (not the engine's, not other claims) that the
+    claim refers to, directly or through such helpers, up to ``depth`` levels: the formulas a claim
+    builds from (the printed Lax matrices, Hamiltonians, resolvent factors)."""
+    pkg = _package(fn)
+    found: dict[int, tuple[str, Callable]] = {}
+    frontier = [fn]
+    for _ in range(depth):
+        nxt = []
+        for f in frontier:
+            for name in _referenced_names(f):
+                obj = f.__globals__.get(name)
+                if isinstance(obj, types.FunctionType) and obj is not fn and id(obj) not in found \
+                        and _package(obj) == pkg and pkg and pkg != "stiefelsym" and not hasattr(obj, "claim"):
+                    found[id(obj)] = (name, obj)
+                    nxt.append(obj)
+        frontier = nxt
+    return list(found.values())
+
+
+def _patched(fn: Callable, original: Callable, replacement: Callable) -> Callable:
+    """fn, run with every binding of ``original`` in the modules of fn's package (and of the helper's)
+    replaced by ``replacement`` for the duration of the call."""
+    packages = {_package(fn), _package(original)}
+
+    def run(*args, **kwargs):
+        slots = []
+        for mname, mod in list(sys.modules.items()):
+            if mod is None or mname.split(".")[0] not in packages:
+                continue
+            d = vars(mod)
+            slots += [(d, k) for k, v in list(d.items()) if v is original]
+        for d, k in slots:
+            d[k] = replacement
+        try:
+            return fn(*args, **kwargs)
+        finally:
+            for d, k in slots:
+                d[k] = original
+    run.__doc__ = fn.__doc__
+    run.__name__ = getattr(fn, "__name__", "claim")
+    run.__qualname__ = getattr(fn, "__qualname__", "claim") + "<mutant>"
+    return run
+
+
+# --------------------------------------------------------------------------- the errata search space
+
+#: at most this many pairs of sign sites per function in the errata search
+MAX_SIGN_PAIRS = 300
+
+
+def _flip_in_place(node: ast.AST, site: _Site) -> None:
+    """Apply a sign site to its (cloned) node in place, so that nested sites of one sum compose:
+    a + b <-> a - b toggles the operator, "negate the term" wraps the left operand."""
+    if site.text.startswith("flip the sign"):
+        node.op = ast.Sub() if isinstance(node.op, ast.Add) else ast.Add()
+    else:
+        node.left = ast.UnaryOp(op=ast.USub(), operand=node.left)
+
+
+def _sign_pairs(fn: Callable, label: str = "") -> list[tuple[str, int, Callable, str, Callable]]:
+    """Mutants changing the signs of two terms at once (two "flip the sign" / "negate the term" sites
+    of one function, nested ones included: two terms of one sum)."""
+    try:
+        defn, filename = _function_ast(fn)
+    except (OSError, TypeError, SyntaxError, StopIteration):
+        return []
+    names = _bound_names(defn)
+    sites = [s for s in _function_sites(defn, names) if s.operator == "sign"
+             and (s.text.startswith("flip the sign") or s.text.startswith("negate the term"))]
+    seen = {ast.unparse(defn)}
+    out = []
+    for i, a in enumerate(sites):
+        for b in sites[i + 1:]:
+            if len(out) >= MAX_SIGN_PAIRS:
+                return out
+            memo: dict[int, Any] = {}
+            mutated = copy.deepcopy(defn, memo)
+            _flip_in_place(memo[id(a.node)], a)
+            _flip_in_place(memo[id(b.node)], b)
+            text = ast.unparse(mutated)
+            if text in seen or _vacuous(mutated):
+                continue
+            seen.add(text)
+            lineno = getattr(a.node, "lineno", defn.lineno)
+            line_b = getattr(b.node, "lineno", defn.lineno)
+            where = f"line {lineno}" if lineno == line_b else f"lines {lineno}, {line_b}"
+            out.append((f"{label}{where}: {a.text}; and {b.text}", lineno, _compile(fn, mutated, filename),
+                        " ".join(ast.unparse(a.replacement).split()) + " ; "
+                        + " ".join(ast.unparse(b.replacement).split()),
+                        (lambda m=mutated: _left_sides(fn, m, filename))))
+    return out
+
+
+def correction_candidates(claim: Claim, helpers: bool = True, pairs: bool = True) -> list[Mutant]:
+    """The declared search space of the errata search, for any claim: every one-step mutant of the
+    claim (:data:`OPERATORS`) and, with ``helpers``, of the helper functions it calls; with ``pairs``,
+    the signs of two terms at once; for a statement the paper says does not hold, only that it holds.
+    Mutants that make a residual vanish for no reason (E − E) are left out."""
+    fn = claim.func
+    out: list[Mutant] = []
+
+    def add(description, lineno, func, op, source, expect=None, left=None):
+        out.append(Mutant(description=description, lineno=lineno, func=func, operator=op, index=len(out),
+                          source=source, expect=expect, left=left))
+    if claim.expect == "nonzero":
+        # the paper says the residual does not vanish: a corrupted residual that does not vanish either
+        # corrects nothing; the one correction is that the statement holds
+        add("the statement holds: every residual vanishes (the paper says it does not)",
+            getattr(fn, "__code__", None) and fn.__code__.co_firstlineno or 0, fn, "expect", "", "holds")
+        return out
+    for description, lineno, func, op, source, vacuous, left in _function_mutants(fn):
+        if not vacuous:
+            add(description, lineno, func, op, source, left=left)
+    if pairs:
+        for description, lineno, func, source, left in _sign_pairs(fn):
+            add(description, lineno, func, "sign2", source, left=left)
+    if helpers:
+        claim_left: list = []
+
+        def patched_left(helper, func):
+            def build():
+                if not claim_left:
+                    claim_left.append(_left_sides(fn))
+                return None if claim_left[0] is None else _patched(claim_left[0], helper, func)
+            return build
+        for name, helper in helper_functions(fn):
+            for description, lineno, func, op, source, vacuous, _ in _function_mutants(helper):
+                if not vacuous:
+                    add(f"in {name}(), {description}", lineno, _patched(fn, helper, func), op, source,
+                        left=patched_left(helper, func))
+            if pairs:
+                for description, lineno, func, source, _ in _sign_pairs(helper, f"in {name}(), "):
+                    add(description, lineno, _patched(fn, helper, func), "sign2", source,
+                        left=patched_left(helper, func))
     return out
 
 
 def _mutated(defn: ast.FunctionDef, site: _Site) -> ast.FunctionDef:
     """A copy of defn with site.node replaced (the copy keeps node identity through a memo)."""
+    return _mutated_many(defn, [site])
+
+
+def _mutated_many(defn: ast.FunctionDef, sites: Sequence[_Site]) -> ast.FunctionDef:
+    """A copy of defn with the (non-nested) nodes of several sites replaced."""
     memo: dict[int, Any] = {}
     clone = copy.deepcopy(defn, memo)
-    target = memo[id(site.node)]
-    return _Replace(target, site.replacement).visit(clone)
+    for site in sites:
+        clone = _Replace(memo[id(site.node)], site.replacement).visit(clone)
+    return clone
 
 
 # --------------------------------------------------------------------------- sizes and plan
@@ -777,12 +1167,20 @@ def _map(tasks: list[tuple[int, int]], jobs: int) -> Iterator[tuple[list[Cell], 
 
 def search_corrections(claim: Claim, sizes: Sequence[Size] | None = None,
                        methods: Sequence[str] = ("rational", "modular"), seed: int = 0,
-                       candidates: Sequence[Mutant] | None = None) -> list[Mutant]:
-    """The mutants of ``claim`` that pass every method at every given size: candidate corrections
-    of a printed formula that fails.
+                       candidates: Sequence[Mutant] | None = None,
+                       on_candidate: Callable[[Mutant, bool], None] | None = None,
+                       minimal: bool = True) -> list[Mutant]:
+    """The candidates (default: :func:`correction_candidates`, the declared search space) that pass
+    every method at every given size: corrections of a printed formula that fails, verified by the
+    same methods as the claims.
 
     Default sizes: the claim's own sizes with n <= 4.  Each candidate is run cell by cell and
-    dropped at its first cell that does not pass, so a wrong candidate costs one run."""
+    dropped at its first cell that does not pass, so a wrong candidate costs one run.  A candidate
+    with a changed expectation (``expect``) runs as a claim with that expectation.
+    ``on_candidate(mutant, passed)`` is called after each candidate.  ``minimal``: the two-step
+    candidates (two signs, operator ``sign2``) are tried only when no one-step candidate passes."""
+    from dataclasses import replace
+
     from .runner import run_one
     if sizes is None:
         sizes = [s for s in claim.sizes if s.n <= DEFAULT_N_MAX] or list(claim.sizes)[:1]
@@ -790,9 +1188,29 @@ def search_corrections(claim: Claim, sizes: Sequence[Size] | None = None,
         if m not in METHODS:
             raise ValueError(f"unknown method {m!r} (one of {', '.join(METHODS)})")
     plan = cells(claim, list(sizes), list(methods))
+
     def passes(m: Mutant, s: Size | None, meth: str) -> bool:
-        verdict = run_one(claim, s, meth, seed, func=m.func, variant=m.description).verdict
+        c = claim if m.expect is None else replace(claim, expect=m.expect, fails_at=None, erratum="")
+        verdict = run_one(c, s, meth, seed, func=m.func, variant=m.description).verdict
         return verdict == "proved" if meth == "free" else verdict in PASSING
 
-    return [m for m in (mutants(claim) if candidates is None else candidates)
-            if plan and all(passes(m, s, meth) for s, meth in plan)]
+    def vacuous(m: Mutant) -> bool:
+        """The candidate's left sides vanish too (at the first fixed-size cell): it reads 0 = 0."""
+        left = m.left() if m.left is not None else None
+        fixed = [(s, meth) for s, meth in plan if meth != "free"]
+        if left is None or not fixed:
+            return False
+        return passes(Mutant(m.description + " (left sides)", m.lineno, left, expect=m.expect), *fixed[0])
+
+    found: list[Mutant] = []
+    pool = list(correction_candidates(claim) if candidates is None else candidates)
+    pool.sort(key=lambda m: m.operator == "sign2")   # one-step candidates first (stable)
+    for m in pool:
+        if minimal and m.operator == "sign2" and any(f.operator != "sign2" for f in found):
+            break
+        ok = bool(plan) and all(passes(m, s, meth) for s, meth in plan) and not vacuous(m)
+        if ok:
+            found.append(m)
+        if on_candidate is not None:
+            on_candidate(m, ok)
+    return found

@@ -17,8 +17,9 @@ from click.testing import CliRunner
 from stiefelsym import comm
 from stiefelsym.claims import Claim, Size, admissible, load_catalog
 from stiefelsym.cli_mutate import mutate as mutate_command
-from stiefelsym.mutate import (LETTER_SWAPS, OPERATORS, Cell, MutantOutcome, MutationReport, classify,
-                               mutants, mutation_sizes, run_mutation, search_corrections)
+from stiefelsym.mutate import (LETTER_SWAPS, OPERATORS, SEARCH_EXTRAS, Cell, MutantOutcome, MutationReport,
+                               classify, correction_candidates, helper_functions, mutants, mutation_sizes,
+                               run_mutation, search_corrections)
 from stiefelsym.report import render_mutation_markdown, render_mutation_summary
 from stiefelsym.runner import run_one
 
@@ -56,9 +57,17 @@ def _value(func, scene) -> dict:
     return {k: np.asarray(v, dtype=float) for k, v in func(scene).items()}
 
 
+def resolvent_identities(s):
+    """The resolvent identity AR − λR + I = 0 and an explicit inverse: the operators on matrix
+    functions of A and the spectral parameter."""
+    R = s.resolvent(s.lam)
+    M = s.A + s.lam * s.In
+    return {"resolvent": s.A @ R - s.lam * R + s.In, "inverse": M.inv() @ M - s.In}
+
+
 def test_every_operator_class_generates_its_mutants():
     ms = mutants(toy_claim())
-    by_op = {m.operator for m in ms}
+    by_op = {m.operator for m in ms} | {m.operator for m in mutants(toy_claim(resolvent_identities))}
     assert by_op == {name for name, _, _ in OPERATORS}
     texts = [m.description.split(": ", 1)[1] for m in ms]
     for expected in [
@@ -79,6 +88,7 @@ def test_every_operator_class_generates_its_mutants():
         "change the coefficient 2 to 3 in `s.tr(s.P.T @ s.P) / 2`",
         "change the coefficient 1 to 2 in `s.q(1, 2)`",
         "change the coefficient 2 to 3 in `s.q(1, 2)`",
+        "swap the letters X and P in the term `s.X.T @ s.P`",
     ]:
         assert expected in texts, expected
     assert len({m.description for m in ms}) == len(ms), "descriptions identify mutants"
@@ -256,6 +266,139 @@ def test_search_corrections_finds_the_catalogs_registered_erratum_fix():
     texts = {m.description.split(": ", 1)[1] for m in search_corrections(c, sizes, ["rational"])}
     assert "change the coefficient 1 to 2 in `2 * r + 1`" in texts
     assert texts <= {"change the coefficient 1 to 2 in `2 * r + 1`", "change the coefficient 2 to 3 in `2 * r`"}
+
+
+# --------------------------------------------------------------------------- the operators on resolvents
+
+def test_resolvent_operators_name_what_they_do():
+    texts = [m.description.split(": ", 1)[1] for m in mutants(toy_claim(resolvent_identities))]
+    for expected in [
+        "invert the resolvent `s.resolvent(s.lam)` (μI − A in place of (μI − A)⁻¹)",
+        "drop the inverse in `M.inv()` in `M.inv() @ M`",
+        "invert the matrix `s.A + s.lam * s.In`",
+        "(A − μI)⁻¹ in place of `s.resolvent(s.lam)`",
+        "(−μI − A)⁻¹: `s.resolvent(-s.lam)` in place of `s.resolvent(s.lam)`",
+        "(A + μI)⁻¹: `-s.resolvent(-s.lam)` in place of `s.resolvent(s.lam)`",
+        "(I − A/μ)⁻¹: `s.lam * s.resolvent(s.lam)` in place of `s.resolvent(s.lam)`",
+    ]:
+        assert expected in texts, expected
+
+
+@pytest.mark.parametrize("operator", ["invert", "normalize", "letters"])
+def test_each_new_operator_is_refuted_on_a_real_claim(operator):
+    """Every mutant of the new operators in the dual Lax matrix (LA3), a helper of the claim, is refuted
+    by the rational method at (3, 2), and the exact method agrees on the first.  (Elsewhere a swap can be
+    a true statement: XᵀP -> PᵀX in tr((XᵀP)²) of the Hamiltonian changes nothing on T*V.)"""
+    c = load_catalog().get("neumann-dual-lax-euclidean")
+    ms = [m for m in mutants(c, helpers=True) if m.operator == operator and m.description.startswith("in L_dual_at()")]
+    assert ms, operator
+    for m in ms:
+        res = run_one(c, Size(3, 2), "rational", 0, func=m.func, variant=m.description)
+        assert res.verdict in ("fails", "error"), (m.description, res.verdict, res.message)
+    assert run_one(c, Size(2, 2), "exact", 0, func=ms[0].func, variant=ms[0].description).verdict in ("fails", "error")
+
+
+def test_helpers_are_the_claims_own_formulas():
+    c = load_catalog().get("manakov-dual-lax")
+    names = [name for name, _ in helper_functions(c.func)]
+    assert "inverse_of_A_plus_lambda" in names and "A_man_dual_at" in names
+    assert not any(name in ("block", "comm", "claim") for name in names)
+
+
+def test_a_helper_mutant_leaves_the_helper_intact():
+    c = load_catalog().get("manakov-dual-lax")
+    m = next(m for m in correction_candidates(c) if m.operator == "invert"
+             and m.description.startswith("in inverse_of_A_plus_lambda()"))
+    assert run_one(c, Size(3, 2), "rational", 0, func=m.func, variant=m.description).verdict == "checked"
+    assert run_one(c, Size(3, 2), "rational", 0).verdict == "fails"   # the module is restored
+
+
+# --------------------------------------------------------------------------- planted corrections
+
+def planted_inverse(s):
+    """The resolvent identity with μI − A in place of the resolvent (planted)."""
+    R = s.resolvent(s.lam).inv()
+    return {"resolvent": s.A @ R - s.lam * R + s.In}
+
+
+def planted_normalization(s):
+    """The resolvent identity with (−λI − A)⁻¹ (planted)."""
+    R = s.resolvent(-s.lam)
+    return {"resolvent": s.A @ R - s.lam * R + s.In}
+
+
+def planted_letters(s):
+    """XᵀP + XᵀP vanishes (planted: the letters of the second term swapped)."""
+    return {"constraint": s.X.T @ s.P + s.X.T @ s.P}
+
+
+def planted_two_signs(s):
+    """XᵀX − I_r + PᵀX + XᵀP = 0 with the signs of I_r and XᵀP wrong (planted)."""
+    return {"constraints": s.X.T @ s.X + s.Ir + s.P.T @ s.X - s.X.T @ s.P}
+
+
+def planted_nonzero(s):
+    """XᵀP + PᵀX does not vanish (planted: the paper's "does not hold" is wrong)."""
+    return {"constraint": s.X.T @ s.P + s.P.T @ s.X}
+
+
+@pytest.mark.parametrize("func, expected", [
+    (planted_inverse, "drop the inverse in `s.resolvent(s.lam).inv()`"),
+    (planted_normalization, "(−μI − A)⁻¹: `s.resolvent(s.lam)` in place of `s.resolvent(-s.lam)`"),
+    (planted_letters, "swap the letters X and P in the term `s.X.T @ s.P` (occurrence 2)"),
+    (planted_two_signs, "flip the sign of the term `s.Ir`"),
+], ids=lambda v: getattr(v, "__name__", "")[:30])
+def test_search_recovers_a_planted_correction(func, expected):
+    c = toy_claim(func, func.__name__)
+    assert run_one(c, Size(3, 2), "rational", 0).verdict == "fails"
+    found = search_corrections(c, [Size(3, 2), Size(3, 1)], ["rational"])
+    texts = [m.description for m in found]
+    assert any(expected in t for t in texts), texts
+    for m in found:   # verified by another method too, and none reads 0 = 0
+        assert run_one(c, Size(4, 2), "modular", 5, func=m.func, variant=m.description).verdict == "checked"
+    if func is planted_two_signs:
+        assert {m.operator for m in found} == {"sign2"}
+        assert any("flip the sign of the term `s.X.T @ s.P`" in t for t in texts)
+
+
+def test_search_corrects_a_wrong_does_not_hold():
+    c = Claim(id="planted-nonzero", paper=("toy",), kind="not", section="", func=planted_nonzero,
+              sizes=admissible(n_max=3), expect="nonzero")
+    assert run_one(c, Size(3, 2), "rational", 0).verdict == "fails"
+    found = search_corrections(c, [Size(3, 2)], ["rational"])
+    assert [m.operator for m in found] == ["expect"] and found[0].expect == "holds"
+
+
+def test_search_space_is_declared():
+    names = {name for name, _, _ in OPERATORS} | {name for name, _ in SEARCH_EXTRAS}
+    assert {"sign", "sign2", "swap", "transpose", "invert", "normalize", "letters", "helper", "expect"} <= names
+
+
+def test_vacuous_candidates_are_left_out():
+    """Swapping the letters of XᵀP − PᵀX in one term makes the residual E − E: no correction."""
+    c = toy_claim(sign_error, "sign-error")
+    texts = [m.description for m in correction_candidates(c)]
+    assert not any("swap the letters X and P in the term `s.X.T @ s.P`" in t for t in texts)
+
+
+def test_search_recovers_the_catalogs_resolvent_erratum():
+    """Theorem man-dual: the search over the claim and its helpers finds exactly the registered
+    correction, (A + λI) in place of (A + λI)⁻¹, and nothing else."""
+    c = load_catalog().get("manakov-dual-lax")
+    found = search_corrections(c, [Size(2, 1), Size(3, 2)], ["rational"])
+    assert [m.description for m in found] == [
+        "in inverse_of_A_plus_lambda(), line 234: invert the resolvent `s.resolvent(-s.lam)` "
+        "(μI − A in place of (μI − A)⁻¹) in `-s.resolvent(-s.lam)`"]
+
+
+def test_cli_corrections(tmp_path):
+    res = CliRunner().invoke(mutate_command, ["manakov-dual-lax", "--corrections", "--size", "3,2",
+                                              "--method", "rational"])
+    assert res.exit_code == 0, res.output
+    assert "manakov-dual-lax: correction passes: in inverse_of_A_plus_lambda()" in res.output
+    assert "1 of " in res.output
+    res = CliRunner().invoke(mutate_command, ["--corrections"])
+    assert res.exit_code == 2
 
 
 # --------------------------------------------------------------------------- end to end
