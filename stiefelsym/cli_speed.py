@@ -43,8 +43,8 @@ def speed(report_dir: Path, quick: bool, seed: int, no_hard: bool) -> int:
     say = lambda text: click.echo(text, err=True)  # noqa: E731
 
     say("measuring time against n (cost model) ...")
-    records = costmodel.measure(n_values=QUICK_NS if quick else FULL_NS, per_run=20.0 if quick else 60.0,
-                                series_seconds=3.0 if quick else 25.0, seed=seed, registry=registry,
+    records = costmodel.measure(n_values=QUICK_NS if quick else FULL_NS, per_run=20.0 if quick else 30.0,
+                                series_seconds=3.0 if quick else 12.0, seed=seed, registry=registry,
                                 on_point=lambda r: say(f"  {r['family']:>10} {r['method']:>8} ({r['n']},{r['r']}) "
                                                        f"{r['verdict']} {r['seconds']:.3f}s"))
     cm_doc = costmodel.build(records, note="quick run" if quick else "stiefelsym speed")

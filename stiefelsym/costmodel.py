@@ -59,9 +59,11 @@ class CostModel:
     def __init__(self, data: dict[str, Any] | None = None) -> None:
         self.data = data or {}
         self.fits: dict[str, dict[str, tuple[float, float]]] = {}
-        for method, fams in (self.data.get("fits") or {}).items():
-            for fam, coef in fams.items():
-                self.fits.setdefault(method, {})[fam] = (float(coef["a"]), float(coef["b"]))
+        self.square: dict[str, dict[str, tuple[float, float]]] = {}
+        for key, into in (("fits", self.fits), ("fits_square", self.square)):
+            for method, fams in (self.data.get(key) or {}).items():
+                for fam, coef in fams.items():
+                    into.setdefault(method, {})[fam] = (float(coef["a"]), float(coef["b"]))
         self.claim_family: dict[str, str] = dict(self.data.get("claim_family") or {})
 
     @classmethod
@@ -84,8 +86,18 @@ class CostModel:
                 return fam
         return None
 
-    def _power(self, method: str, fam: str | None, n: int) -> float:
-        fams = self.fits.get(method)
+    def _power(self, method: str, fam: str | None, n: int, r: int | None = None) -> float:
+        """r = n: the square fit; r <= n/2: the fit at r = ceil(n/2); between: log-linear in r
+        from one to the other (so the prediction never decreases in r either)."""
+        half = self._power1(self.fits, method, fam, n)
+        if r is None or not self.square.get(method):
+            return half
+        full = max(self._power1(self.square, method, fam, n), half)
+        w = max(0.0, (r - n / 2) / (n / 2)) if n > 1 else 1.0
+        return math.exp((1 - w) * math.log(half) + w * math.log(full))
+
+    def _power1(self, table: dict, method: str, fam: str | None, n: int) -> float:
+        fams = table.get(method)
         if not fams:
             a, b = _FALLBACK.get(method, _FALLBACK["exact"])
             return math.exp(a + b * math.log(max(n, 1)))
@@ -110,8 +122,8 @@ class CostModel:
         kind = getattr(claim, "kind", None)
         if method == "float" and kind == "dim":
             return 0.0       # dimensions are integers: the float method is not run on them
-        t = self._power(method, self.family_of(claim), n)
-        if r == n and not self.data.get("r_equal_n_measured"):
+        t = self._power(method, self.family_of(claim), n, r)
+        if r == n and not self.square.get(method):
             t *= 2.0         # both components of O(n) are sampled
         return t
 
@@ -149,9 +161,9 @@ class CostModel:
                      "float": "numerical evidence, not proof", "exact": "symbolic proof"}[m]
             within = "" if t <= budget else ", also beyond the budget"
             parts.append(f"try --method {m} (predicted {format_seconds(t)}, {grade}{within})")
-        k = self.largest_n(method, claim, budget)
+        k = self.largest_n(method, claim, budget, r_of=lambda m: max(1, min(m, round(m * r / n))))
         if 0 < k < n:
-            parts.append(f"a size with n <= {k} with --method {method}")
+            parts.append(f"with --method {method}, sizes up to n = {k} at the same r/n fit the budget")
         parts.append("--method free (every n, r at once, when the claim needs no coordinates)")
         parts.append("or a larger --budget")
         return "; ".join(parts)
@@ -247,33 +259,43 @@ def measure(methods: Iterable[str] = METHODS, families: dict[str, str] | None = 
             registry: Any = None) -> list[dict[str, Any]]:
     """Time runs of each family's representative claim, for each method, at growing n.
 
-    Each run executes in a budgeted worker (``runner.verify``); a series stops at the first
-    run that is not decided in ``per_run`` seconds, or once it has spent ``series_seconds``.
-    r = ceil(n/2) and r = n (two components) are both measured; a point is the slower of
-    the two.  Returns one record per run."""
+    Each run executes in a budgeted worker (``runner.verify``); a series (r = ceil(n/2), and
+    r = n with both components of O(n)) stops at the first run that is not decided in
+    ``per_run`` seconds, or once it has spent ``series_seconds``.  Returns one record per run."""
     from .claims import Size, load_catalog
     from .methods import BudgetError
     from .runner import verify
     from .scene import SizeError
+    from .runner import run_one
     families = families or FAMILIES
     registry = registry or load_catalog("proofs")
     grid = n_values or {}
     out: list[dict[str, Any]] = []
+    methods = list(methods)
+    # warm up in this process: the workers are forked from it, so no run pays for first imports
+    for cid in families.values():
+        for method in methods:
+            try:
+                run_one(registry.get(cid), Size(2, 1), method, seed)
+            except Exception:  # noqa: BLE001 - a warm-up only
+                pass
     for fam, cid in families.items():
         claim = registry.get(cid)
         for method in methods:
             if method == "float" and claim.kind == "dim":
                 continue
-            spent = 0.0
+            spent = {"half": 0.0, "square": 0.0}
+            stopped = {"half": False, "square": False}
             for n in grid.get(method, _default_ns(method)):
-                stop = False
-                for r in sorted({(n + 1) // 2, n}):
+                for kind, r in (("half", (n + 1) // 2), ("square", n)):
+                    if stopped[kind] or (kind == "square" and r == (n + 1) // 2):
+                        continue
                     try:
                         results = verify([claim], sizes=[Size(n, r)], methods=(method,), seed=seed,
                                          timeout=per_run, jobs=1)
                     except (BudgetError, SizeError):
-                        stop = True
-                        break
+                        stopped[kind] = True
+                        continue
                     res = next((x for x in results if x.variant is None), None)
                     if res is None:
                         continue
@@ -282,10 +304,10 @@ def measure(methods: Iterable[str] = METHODS, families: dict[str, str] | None = 
                     out.append(rec)
                     if on_point is not None:
                         on_point(rec)
-                    spent += res.seconds
-                    if res.verdict in ("inconclusive", "error"):
-                        stop = True
-                if stop or spent > series_seconds:
+                    spent[kind] += res.seconds
+                    if res.verdict in ("inconclusive", "error") or spent[kind] > series_seconds:
+                        stopped[kind] = True
+                if all(stopped.values()):
                     break
     return out
 
@@ -297,34 +319,36 @@ def _default_ns(method: str) -> list[int]:
 
 
 def build(records: Sequence[dict[str, Any]], note: str = "") -> dict[str, Any]:
-    """The JSON document of a cost model from measurement records."""
-    fits: dict[str, dict[str, Any]] = {}
-    groups: dict[tuple[str, str], dict[int, float]] = {}
+    """The JSON document of a cost model from measurement records: one power law per method and
+    family at r = ceil(n/2) (``fits``), one at r = n (``fits_square``: both components of O(n))."""
+    out: dict[str, dict[str, dict[str, Any]]] = {"fits": {}, "fits_square": {}}
+    groups: dict[tuple[str, str, str], dict[int, float]] = {}
     for rec in records:
-        if rec.get("verdict") in ("inconclusive", "error"):
-            # a run stopped by its budget: its time is a lower bound, still an upper-envelope point
-            pass
-        key = (rec["method"], rec["family"])
-        g = groups.setdefault(key, {})
-        g[rec["n"]] = max(g.get(rec["n"], 0.0), float(rec["seconds"]))
-    for (method, fam), g in sorted(groups.items()):
+        # a run stopped by its budget still bounds the time from below: kept as a point
+        n, r = rec["n"], rec["r"]
+        kinds = (["fits"] if r == (n + 1) // 2 else []) + (["fits_square"] if r == n else [])
+        for kind in kinds:
+            g = groups.setdefault((kind, rec["method"], rec["family"]), {})
+            g[n] = max(g.get(n, 0.0), float(rec["seconds"]))
+    for (kind, method, fam), g in sorted(groups.items()):
         coef = fit(sorted(g.items()))
         if coef is None:
             continue
         a, b = coef
-        fits.setdefault(method, {})[fam] = {"a": round(a, 6), "b": round(b, 6),
-                                           "n_max_measured": max(g), "points": sorted(g.items())}
+        out[kind].setdefault(method, {})[fam] = {"a": round(a, 6), "b": round(b, 6),
+                                                 "n_max_measured": max(g), "points": sorted(g.items())}
     return {
-        "version": 1,
-        "model": "t(n) = exp(a) * n^b seconds, upper envelope of the measured points (max over r = ceil(n/2), n)",
+        "version": 2,
+        "model": ("t(n, r) = exp(a) * n^b seconds, upper envelopes of the measured points: 'fits' at "
+                  "r = ceil(n/2) (used for r <= n/2), 'fits_square' at r = n, log-linear in r between"),
         "generated": datetime.now(timezone.utc).strftime("%Y-%m-%d %H:%M:%S UTC"),
         "platform": platform.platform(terse=True),
         "python": platform.python_version(),
         "note": note,
         "families": dict(FAMILIES),
         "claim_family": {cid: fam for fam, cid in FAMILIES.items()},
-        "r_equal_n_measured": True,
-        "fits": fits,
+        "fits": out["fits"],
+        "fits_square": out["fits_square"],
         "records": list(records),
     }
 
@@ -352,22 +376,25 @@ def plot(doc: dict[str, Any], out_dir: Path | str) -> list[Path]:
         axes = [axes]
     colors = {"exact": "C0", "rational": "C1", "modular": "C2", "float": "C3"}
     for ax, fam in zip(axes, fams):
-        for method, fits in (doc.get("fits") or {}).items():
-            f = fits.get(fam)
-            if not f:
-                continue
-            ns = [p[0] for p in f["points"]]
-            ts = [max(p[1], 1e-5) for p in f["points"]]
-            ax.loglog(ns, ts, "o", color=colors.get(method), label=method, ms=4)
-            grid = [2 + k * (max(ns) * 2 - 2) / 50 for k in range(51)]
-            ax.loglog(grid, [math.exp(f["a"]) * x ** f["b"] for x in grid], "-", color=colors.get(method),
-                      lw=1, alpha=0.7)
+        for key, marker, style, suffix in (("fits", "o", "-", " r=n/2"), ("fits_square", "s", "--", " r=n")):
+            for method, fits in (doc.get(key) or {}).items():
+                f = fits.get(fam)
+                if not f:
+                    continue
+                ns = [p[0] for p in f["points"]]
+                ts = [max(p[1], 1e-5) for p in f["points"]]
+                ax.loglog(ns, ts, marker, color=colors.get(method), label=method + suffix, ms=4,
+                          mfc="none" if key == "fits_square" else None)
+                grid = [2 + k * (max(ns) * 2 - 2) / 50 for k in range(51)]
+                ax.loglog(grid, [math.exp(f["a"]) * x ** f["b"] for x in grid], style, color=colors.get(method),
+                          lw=1, alpha=0.7)
         ax.set_title(f"{fam} ({doc.get('families', FAMILIES).get(fam, '')})", fontsize=8)
         ax.set_xlabel("n")
         ax.grid(True, which="both", alpha=0.3)
     axes[0].set_ylabel("seconds per run")
-    axes[0].legend(fontsize=7)
-    fig.suptitle("cost model: time against n per method (points measured, lines fitted upper envelopes)",
+    axes[0].legend(fontsize=6, ncol=2)
+    fig.suptitle("cost model: time against n per method, r = ceil(n/2) (filled, solid) and r = n (open, dashed); "
+                 "lines: fitted upper envelopes",
                  fontsize=9)
     fig.tight_layout()
     paths = []
@@ -381,12 +408,13 @@ def plot(doc: dict[str, Any], out_dir: Path | str) -> list[Path]:
 
 def table(doc: dict[str, Any]) -> str:
     """The fitted coefficients as a Markdown table."""
-    lines = ["| method | family | a | b (exponent of n) | measured up to n | predicted at n = 12 | n = 100 |",
-             "| --- | --- | ---: | ---: | ---: | ---: | ---: |"]
-    for method, fits in sorted((doc.get("fits") or {}).items()):
-        for fam, f in fits.items():
-            t12 = math.exp(f["a"]) * 12 ** f["b"]
-            t100 = math.exp(f["a"]) * 100 ** f["b"]
-            lines.append(f"| {method} | {fam} | {f['a']:.2f} | {f['b']:.2f} | {f['n_max_measured']} | "
-                         f"{format_seconds(t12)} | {format_seconds(t100)} |")
+    lines = ["| method | family | r | a | b (exponent of n) | measured up to n | predicted at n = 12 | n = 100 |",
+             "| --- | --- | --- | ---: | ---: | ---: | ---: | ---: |"]
+    for key, rtext in (("fits", "n/2"), ("fits_square", "n")):
+        for method, fits in sorted((doc.get(key) or {}).items()):
+            for fam, f in fits.items():
+                t12 = math.exp(f["a"]) * 12 ** f["b"]
+                t100 = math.exp(f["a"]) * 100 ** f["b"]
+                lines.append(f"| {method} | {fam} | {rtext} | {f['a']:.2f} | {f['b']:.2f} | {f['n_max_measured']} | "
+                             f"{format_seconds(t12)} | {format_seconds(t100)} |")
     return "\n".join(lines) + "\n"
