@@ -58,6 +58,9 @@ def derivative(s: Scene, F: Callable[[Scene, dict], Any], point: Point, tangent:
     extra = set(tangent) - set(point)
     if extra:
         raise KeyError(f"a tangent vector moves the variables of the point, not {sorted(map(str, extra))}")
+    for k, v in tangent.items():
+        if not isinstance(v, Mat) or v.shape != point[k].shape:
+            raise ValueError(f"the {k}-component of a tangent vector must be a matrix of the shape of {k}")
 
     def lifted(t):
         z = {k: t._lift(M, tangent.get(k)) for k, M in point.items()}
