@@ -41,6 +41,12 @@ def _large_momenta(s, name, v):
     return v
 
 
+def _huge_momenta(s, name, v):
+    if name.startswith(("W_", "Z_")):
+        return v * s.field.const(10**160)
+    return v
+
+
 def _manakov_0_0(s, name, v):
     """a_i and the claim's own b_i both nearly equal: (b_i - b_j)/(a_i - a_j) is near 0/0."""
     if name.startswith("a_") and name != "a_1":
@@ -77,6 +83,8 @@ HARD_CASES["near-pole-1e-8"] = HardCase("near-pole-1e-8", "lambda = a_1 + 1e-8 (
 HARD_CASES["manakov-0/0"] = HardCase(
     "manakov-0/0", "a_2..a_n and the claim's b_2..b_n within 1e-9 of a_1, b_1 ((b_i - b_j)/(a_i - a_j) near 0/0)",
     _manakov_0_0)
+HARD_CASES["huge-momenta"] = HardCase("huge-momenta", "momenta scaled by 1e160 (products overflow float64: the "
+                                      "float method must escalate)", _huge_momenta)
 HARD_CASES["far-chart"] = HardCase("far-chart", "Cayley parameters S scaled by 1e4 (a point far from the chart's origin)",
                                    _far_chart)
 

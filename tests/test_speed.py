@@ -67,3 +67,14 @@ def test_speed_quick_writes_its_files(run, tmp_path):
         assert (d / name).is_file(), name
     doc = json.loads((d / "speed.json").read_text())
     assert doc["violations"] == [] and doc["hard_wrong"] == []
+
+
+def test_overflow_escalates_and_keeps_the_bound(catalog):
+    c = catalog.get("neumann-lax")
+    assert sp.evaluate(c, 4, 2, None, 0, hard="huge-momenta")["status"] == "overflow"
+    rec = sp.evaluate(c, 4, 2, 30, 0, hard="huge-momenta", exact=True)
+    assert rec["status"] == "ok" and rec["exceed"] == 0 and rec["exceed_exact"] == 0
+    rows = sp.hard_table(cases=["huge-momenta"], sizes=((3, 1),), large=None, methods=("float",),
+                         claims=[c], timeout=60)
+    assert rows[0]["verdict"] == "undecided" and rows[0]["precision"].startswith("mpmath")
+    assert rows[0]["judgement"] == "ok"
