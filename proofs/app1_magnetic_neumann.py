@@ -724,3 +724,57 @@ def cpb_reduces_to_the_normal_neumann_system(s):
 @cpb_reduces_to_the_normal_neumann_system.claim.correction("η_so(n−r) = 0 in place of η_so(r) = 0")
 def cpb_reduces_to_the_normal_neumann_system_corrected(s):
     return cpb_reduction_checks(s, "so(n-r)")
+
+
+# -- the spectral invariants with Φ_ε (the theorem on complete integrability) --------------------------------
+
+#: the powers k of the spectral invariants tr 𝓛(λ)^k checked (as in §5)
+POWERS = (1, 2, 3)
+
+
+def spectral_checks(s, momentum, H, F=None):
+    """tr(λΦ' + XXᵀ − λ²A)^k (Φ' the twisted momentum map) are integrals of the twisted flow of H and
+    Poisson-commute for two values λ, μ of the spectral parameter, for the twisted bracket."""
+    def L_at(t, mu):
+        return mu * momentum(t) + t.X @ t.X.T - mu * mu * t.A
+
+    def power_trace(t, M, k):
+        acc = M
+        for _ in range(k - 1):
+            acc = acc @ M
+        return t.tr(acc)
+    flow = twisted.flow(s, H, F=F)
+    checks = {}
+    for k in POWERS:
+        checks[f"d tr L(lambda)^{k}/dt"] = s.d(lambda t, k=k: power_trace(t, L_at(t, t.lam), k), flow)
+    for k in POWERS:
+        for m in POWERS:
+            if m < k:
+                continue
+            checks[f"{{tr L(lambda)^{k}, tr L(mu)^{m}}}_eps"] = twisted.bracket(
+                s, lambda t, k=k: power_trace(t, L_at(t, t.lam), k),
+                lambda t, m=m: power_trace(t, L_at(t, t.scalar("mu")), m), F=F)
+    return checks
+
+
+@claim("magnetic-spectral-invariants", paper=("perelomov", "mag-euk", "mag-nor", "mag-mom-stief"), kind="pb",
+       sizes=ON_V_N2,
+       statement=r"\{\tr\mathcal L_\epsilon(\lambda)^k,H\}_\epsilon=0,\ \{\tr\mathcal L_\epsilon(\lambda)^k,"
+                 r"\tr\mathcal L_\epsilon(\mu)^m\}_\epsilon=0,\quad \mathcal L_\epsilon=\lambda\Phi_\epsilon+XX^T-\lambda^2A,\ k,m=1,2,3")
+def magnetic_spectral_invariants(s):
+    """The functions tr(λΦ_ε + XXᵀ − λ²A)^k, k = 1, 2, 3, the integrals of the theorem on the complete integrability of the magnetic Neumann systems, are conserved by both (mag-euk) and (mag-nor) and Poisson-commute for the twisted bracket."""
+    checks = {}
+    for name, H in MAGNETIC_HAMILTONIANS:
+        for key, value in spectral_checks(s, Phi_eps, H).items():
+            if key.startswith("d tr") or name == "mag-euk":   # the brackets do not depend on H
+                checks[f"{key} ({name})" if key.startswith("d tr") else key] = value
+    return checks
+
+
+@claim("magnetic-spectral-invariants-any-rank", paper=("perelomov", "mag-mom-stief", "twisted"), kind="pb",
+       sizes=admissible(n_max=4),
+       statement=r"\{\tr\mathcal L_F(\lambda)^k,H_{neum,\kappa}\}_F=0,\ \{\tr\mathcal L_F(\lambda)^k,"
+                 r"\tr\mathcal L_F(\mu)^m\}_F=0,\quad \mathcal L_F=\lambda\Phi_F+XX^T-\lambda^2A,\ k,m=1,2,3")
+def magnetic_spectral_invariants_every_rank(s):
+    """For every n, r, κ and generic constant F ∈ so(r), the functions tr(λΦ_F + XXᵀ − λ²A)^k, k = 1, 2, 3, are integrals of the flow of H_neum,κ for the twisted form ω_F and Poisson-commute for its bracket."""
+    return spectral_checks(s, Phi_F, H_neumann_kappa, F=s.eta)

@@ -89,7 +89,7 @@ def test_the_magnetic_form_needs_two_columns():
 
 
 #: proved for every n, r by rewriting (the twisted flow with a letter F of so(r) in the free algebra)
-FREE_PROVED = ("ym-reduced-neumann", "ym-charge", "magnetic-momentum-map-any-rank", "magnetic-lax-any-rank")
+FREE_PROVED = ("ym-reduced-neumann", "ym-charge", "magnetic-spectral-invariants-any-rank", "magnetic-momentum-map-any-rank", "magnetic-lax-any-rank")
 
 
 @pytest.mark.parametrize("cid", FREE_PROVED)
@@ -273,6 +273,19 @@ def cpb_reduction_potential_sign(s):
     return checks
 
 
+def spectral_invariant_with_phi(s):
+    """Corrupted: tr(λΦ + XXᵀ − λ²A)³ (Φ, not Φ_ε) is not an integral of (mag-euk) (the square is: it
+    differs from tr 𝓛_ε² by a function of Ψ₁₂)."""
+    L = lambda t: t.lam * t.Phi + t.X @ t.X.T - t.lam * t.lam * t.A
+    return {"d tr L^3/dt": s.d(lambda t: t.tr(L(t) @ L(t) @ L(t)), twisted.flow(s, H_neumann_euclidean))}
+
+
+def any_rank_spectral_invariant_with_phi(s):
+    """Corrupted: tr(λΦ + XXᵀ − λ²A)³ is not an integral of the twisted flow of H_neum,κ."""
+    L = lambda t: t.lam * t.Phi + t.X @ t.X.T - t.lam * t.lam * t.A
+    return {"d tr L^3/dt": s.d(lambda t: t.tr(L(t) @ L(t) @ L(t)), twisted.flow(s, app1.H_neumann_kappa, F=s.eta))}
+
+
 CORRUPTIONS = [
     ("twisted-form", twisted_form_sign),
     ("twisted-form-closed", jacobi_of_a_wrong_bracket),
@@ -284,6 +297,8 @@ CORRUPTIONS = [
     ("magnetic-lax", lax_commutator_swapped),
     ("magnetic-momentum-map-any-rank", any_rank_momentum_without_magnetic_term),
     ("magnetic-lax-any-rank", any_rank_prep_with_phi),
+    ("magnetic-spectral-invariants", spectral_invariant_with_phi),
+    ("magnetic-spectral-invariants-any-rank", any_rank_spectral_invariant_with_phi),
     ("magnetic-grassmannian-momentum", grass_momentum_commutator_swapped),
     ("magnetic-grassmannian-flow", grass_flow_epsilon_sign),
     ("clebsch-perelomov-hamiltonian", cp_potential_sign),
