@@ -76,30 +76,38 @@ def _load_verdicts(paths: list[Path], explicit: bool) -> dict[str, Any]:
 @click.option("--report-dir", type=click.Path(file_okay=False, path_type=Path), default=Path("reports"),
               show_default=True, help="where tables.md, tables.tex, tables.json go")
 @click.option("--n-max", type=int, default=9, show_default=True, help=f"every 1 <= r <= n <= N (N <= {N_LIMIT})")
+@click.option("--extended-n-max", type=int, default=12, show_default=True,
+              help=f"also n_max < n <= N for the quantities without completeness checks ("
+                   f"N <= {N_LIMIT})")
 @click.option("--size", "sizes", multiple=True, metavar="n,r", help="only these sizes (repeatable)")
 @click.option("--results", "results", multiple=True, type=click.Path(dir_okay=False, path_type=Path),
               help="results.json for the verdict matrix (repeatable; default reports/results.json and "
                    "reports/all/results.json when present)")
 @click.option("--seed", type=int, default=0, show_default=True, help="seed of every random point and prime")
-def tables(report_dir: Path, n_max: int, sizes: tuple[str, ...], results: tuple[Path, ...], seed: int) -> None:
+def tables(report_dir: Path, n_max: int, extended_n_max: int | None, sizes: tuple[str, ...], results: tuple[Path, ...], seed: int) -> None:
     """Appendix tables: dim V, ddim, 2l, δ₀, δ, the torus dimensions, N and the §6 lemmas, the paper's
     formula next to an exact computation with its certificate, every disagreement with its set of
     sizes; and the verdict matrix claim × size × method."""
-    from .tables import STANDALONE, Tables, compute_size, render_latex, render_markdown, tables_json
+    from .tables import EXTENDED, STANDALONE, Tables, compute_size, render_latex, render_markdown, tables_json
     import time
 
     if not 1 <= n_max <= N_LIMIT:
         raise TablesInputError(f"--n-max {n_max}: need 1 <= n <= {N_LIMIT}")
-    chosen = [_parse_size(s) for s in sizes] if sizes else [(n, r) for n in range(1, n_max + 1) for r in range(1, n + 1)]
+    ext = n_max if extended_n_max is None else extended_n_max
+    if not n_max <= ext <= N_LIMIT:
+        raise TablesInputError(f"--extended-n-max {ext}: need n_max <= N <= {N_LIMIT}")
+    chosen = [_parse_size(s) for s in sizes] if sizes else [(n, r) for n in range(1, ext + 1) for r in range(1, n + 1)]
     verdicts = _load_verdicts(list(results) if results else list(DEFAULT_RESULTS), bool(results))
     try:
         report_dir.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
         raise TablesInputError(f"cannot create the report directory {report_dir}: {exc.strerror or exc}") from None
-    T = Tables(max(n for n, _ in chosen), seed)
+    T = Tables(min(n_max, max(n for n, _ in chosen)) if not sizes else max(n for n, _ in chosen), seed,
+               extended_n_max=ext if not sizes else None)
     for n, r in sorted(set(chosen)):
         t0 = time.perf_counter()
-        T.rows[(n, r)] = compute_size(n, r, seed=seed)
+        T.rows[(n, r)] = compute_size(n, r, seed=seed, include=None if n <= n_max or sizes else
+                                  EXTENDED + (("invariant_forms",) if r == 4 else ()))
         T.seconds[(n, r)] = time.perf_counter() - t0
         bad = [row.key for row in T.rows[(n, r)] if row.agree is False]
         click.echo(f"({n},{r}) {T.seconds[(n, r)]:.1f}s" + (f"  differs from the paper: {', '.join(bad)}" if bad else ""),

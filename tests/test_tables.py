@@ -91,7 +91,7 @@ def _write(run, *args):
 
 
 def test_the_command_writes_the_files(run, tmp_path):
-    res = _write(run, "--report-dir", "out", "--n-max", "3")
+    res = _write(run, "--report-dir", "out", "--n-max", "3", "--extended-n-max", "3")
     assert res.exit_code == 0, res.output
     out = tmp_path / "out"
     for name in ("tables.md", "tables.tex", "tables.json", "tables-standalone.tex"):
@@ -143,7 +143,7 @@ def test_bad_input_as_a_subprocess(tmp_path):
 
 @pytest.mark.skipif(shutil.which("pdflatex") is None, reason="pdflatex is not installed")
 def test_the_latex_compiles_on_its_own(run, tmp_path):
-    assert _write(run, "--report-dir", "out", "--n-max", "3").exit_code == 0
+    assert _write(run, "--report-dir", "out", "--n-max", "3", "--extended-n-max", "3").exit_code == 0
     out = tmp_path / "out"
     proc = subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error", "tables-standalone.tex"],
                           cwd=out, capture_output=True, text=True, timeout=120)
