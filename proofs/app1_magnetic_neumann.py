@@ -205,7 +205,7 @@ def psi12(s):
        statement=r"\Psi_{12}=(e_1,p_2)-(e_2,p_1):\quad \tfrac{d}{dt}\Psi_{12}=\{\Psi_{12},H\}_\epsilon=0\ "
                  r"\text{along (mag-euk), (mag-nor)};\quad H(Xe^{s\eta},Pe^{s\eta})=H")
 def psi12_is_an_integral_of_the_magnetic_flows(s):
-    """The magnetic Neumann flows (mag-euk) and (mag-nor) are right SO(2)-invariant (so are their Hamiltonians and ω_ε) and have the integral Ψ₁₂ = (e₁, p₂) − (e₂, p₁): its twisted bracket with either Hamiltonian vanishes."""
+    """The magnetic Neumann flows (mag-euk) and (mag-nor) are right SO(2)-invariant (so are their Hamiltonians and ω_ε) and have the integral Ψ₁₂ = (e₁, p₂) − (e₂, p₁): it is still the momentum map of the right SO(2) action for ω_ε (its twisted Hamiltonian vector field is (XJ, PJ), J = E₁∧E₂), and its twisted bracket with either Hamiltonian vanishes."""
     right = {"X": s.X @ s.eta, "P": s.P @ s.eta}
     checks = {}
     for name, H in (("mag-euk", H_neumann_euclidean), ("mag-nor", H_neumann_normal)):
@@ -216,6 +216,10 @@ def psi12_is_an_integral_of_the_magnetic_flows(s):
     v = {"X": s.generic("V1", "n", "r"), "P": s.generic("V2", "n", "r")}
     moved = lambda w: {"X": w["X"] @ s.eta, "P": w["P"] @ s.eta}
     checks["omega_eps right SO(2)-invariant"] = twisted.form(s, moved(u), v) + twisted.form(s, u, moved(v))
+    J = twisted.magnetic_matrix(s)
+    generated = twisted.flow(s, psi12)
+    checks["Psi12 generates the right SO(2) action for omega_eps (X)"] = generated.Xdot - s.X @ J
+    checks["Psi12 generates the right SO(2) action for omega_eps (P)"] = generated.Pdot - s.P @ J
     return checks
 
 
