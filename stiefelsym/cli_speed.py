@@ -48,6 +48,14 @@ def speed(report_dir: Path, quick: bool, seed: int, no_hard: bool) -> int:
                                 on_point=lambda r: say(f"  {r['family']:>10} {r['method']:>8} ({r['n']},{r['r']}) "
                                                        f"{r['verdict']} {r['seconds']:.3f}s"))
     cm_doc = costmodel.build(records, note="quick run" if quick else "stiefelsym speed")
+    calibration = []
+    for f in (Path("reports") / "all" / "results.json", Path("reports") / "results.json"):
+        try:
+            calibration += json.loads(f.read_text(encoding="utf-8"))["results"]
+        except (OSError, ValueError, KeyError):
+            pass
+    costmodel.calibrate(cm_doc, calibration)
+    say(f"per-claim factors from {len(calibration)} catalog runs (reports/all/results.json, reports/results.json)")
     if quick:
         costmodel.save(cm_doc, report_dir / "costmodel.json")
     else:

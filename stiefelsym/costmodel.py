@@ -65,6 +65,9 @@ class CostModel:
                 for fam, coef in fams.items():
                     into.setdefault(method, {})[fam] = (float(coef["a"]), float(coef["b"]))
         self.claim_family: dict[str, str] = dict(self.data.get("claim_family") or {})
+        #: per claim and method: its measured times over its family's prediction (the worst ratio)
+        self.factors: dict[str, dict[str, float]] = {
+            cid: {m: float(f) for m, f in fs.items()} for cid, fs in (self.data.get("claim_factors") or {}).items()}
 
     @classmethod
     def load(cls, path: Path | str | None = None) -> "CostModel":
@@ -77,7 +80,7 @@ class CostModel:
     # -- prediction
 
     def family_of(self, claim: Any) -> str | None:
-        """The family a claim belongs to: its own if it was measured, else by its kind."""
+        """The family a claim represents (None for the others)."""
         cid = getattr(claim, "id", claim)
         if cid in self.claim_family:
             return self.claim_family[cid]
@@ -85,6 +88,14 @@ class CostModel:
             if rep == cid:
                 return fam
         return None
+
+    def _calibrated(self, method: str, claim: Any, n: int, r: int) -> float | None:
+        """A claim calibrated on the catalog's own runs: its kind's family times its factor."""
+        cid = getattr(claim, "id", None)
+        f = self.factors.get(cid, {}).get(method) if cid else None
+        if f is None:
+            return None
+        return f * max(self._power(method, fam, n, r) for fam in kind_families(getattr(claim, "kind", "")))
 
     def _power(self, method: str, fam: str | None, n: int, r: int | None = None) -> float:
         """r = n: the square fit; r <= n/2: the fit at r = ceil(n/2); between: log-linear in r
@@ -122,7 +133,10 @@ class CostModel:
         kind = getattr(claim, "kind", None)
         if method == "float" and kind == "dim":
             return 0.0       # dimensions are integers: the float method is not run on them
-        t = self._power(method, self.family_of(claim), n, r)
+        fam = self.family_of(claim)
+        t = self._calibrated(method, claim, n, r) if fam is None else None
+        if t is None:
+            t = self._power(method, fam, n, r)
         if r == n and not self.square.get(method):
             t *= 2.0         # both components of O(n) are sampled
         return t
@@ -167,6 +181,32 @@ class CostModel:
         parts.append("--method free (every n, r at once, when the claim needs no coordinates)")
         parts.append("or a larger --budget")
         return "; ".join(parts)
+
+
+def kind_families(kind: str) -> tuple[str, ...]:
+    """The measured families a claim of this kind is compared with."""
+    return {"lax": ("lax", "dual-lax"), "pb": ("brackets",), "not": ("brackets",),
+            "dim": ("dimensions",)}.get(kind, ("flows",))
+
+
+def calibrate(doc: dict[str, Any], results: Iterable[Any], registry: Any = None) -> dict[str, Any]:
+    """Per-claim factors from result records of catalog runs (``results.json`` entries: claim, kind, n,
+    r, method, seconds, verdict): the worst ratio of a claim's measured time to its kind's prediction,
+    over its runs that took at least TIME_FLOOR (at least 1/UNKNOWN_CLAIM_FACTOR, so that a claim
+    timed only at tiny sizes keeps a margin).  Stored in ``doc['claim_factors']``."""
+    cm = CostModel(doc)
+    ratios: dict[str, dict[str, float]] = {}
+    for r in results:
+        get = r.get if isinstance(r, dict) else (lambda k, _r=r: getattr(_r, k, None))
+        n, rr, method, secs = get("n"), get("r"), get("method"), get("seconds")
+        if n is None or method not in METHODS or secs is None or get("verdict") in ("inconclusive", "error"):
+            continue
+        base = max(cm._power(method, fam, n, rr) for fam in kind_families(get("kind") or ""))
+        ratio = max(float(secs), TIME_FLOOR) / base
+        cur = ratios.setdefault(get("claim"), {})
+        cur[method] = max(cur.get(method, 1.0 / UNKNOWN_CLAIM_FACTOR), ratio)
+    doc["claim_factors"] = {c: {m: round(f, 4) for m, f in fs.items()} for c, fs in sorted(ratios.items())}
+    return doc
 
 
 def format_seconds(t: float) -> str:

@@ -44,9 +44,11 @@ def test_check_refuses_with_prediction_and_suggestion(catalog):
 
 def test_unknown_claims_are_predicted_conservatively(catalog):
     known = catalog.get("neumann-lax")
-    other = catalog.get("manakov-lax")
+
+    class Unseen:
+        id, kind, exact_max_n = "a-claim-never-timed", "lax", 5
     m = costmodel.model()
-    assert m.predict("modular", other, 8, 4) >= m.predict("modular", known, 8, 4)
+    assert m.predict("modular", Unseen, 8, 4) >= m.predict("modular", known, 8, 4)
 
 
 def test_cli_refuses_a_run_beyond_the_budget(run):
@@ -62,3 +64,22 @@ def test_cli_runs_within_the_budget(run):
     res = run("verify", "neumann-lax", "--size", "3,1", "--method", "modular", "--budget", "60", "--no-report")
     assert res.exit_code == 0, res.output
     assert "checked" in res.output
+
+
+def test_calibration_raises_a_slow_claim():
+    doc = costmodel.build([{"family": f, "claim": c, "method": "modular", "n": n, "r": r, "seconds": 0.01 * n ** 2,
+                            "verdict": "checked"} for f, c in costmodel.FAMILIES.items()
+                           for n in (2, 3, 4) for r in {(n + 1) // 2, n}])
+    slow = {"claim": "slow-claim", "kind": "id", "n": 4, "r": 2, "method": "modular", "seconds": 50.0,
+            "verdict": "checked"}
+    costmodel.calibrate(doc, [slow])
+    m = costmodel.CostModel(doc)
+
+    class C:
+        id, kind, exact_max_n = "slow-claim", "id", 5
+
+    class D:
+        id, kind, exact_max_n = "unseen-claim", "id", 5
+    assert m.predict("modular", C, 4, 2) >= 50.0 * 0.999
+    assert m.predict("modular", C, 8, 4) > m.predict("modular", C, 4, 2)
+    assert m.predict("modular", D, 4, 2) < 50.0
