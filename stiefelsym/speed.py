@@ -29,7 +29,7 @@ from fractions import Fraction
 from pathlib import Path
 from typing import Any, Iterable, Sequence
 
-from .costmodel import FAMILIES
+from .costmodel import FAMILIES, UNKNOWN_CLAIM_FACTOR
 
 PRECISIONS = (None, 30, 50, 100)          # None: float64
 
@@ -480,6 +480,23 @@ def markdown(doc: dict[str, Any]) -> str:
                 lines.append(f"| {x['precision']} | {_fmt(x.get('max_residual'))} | {_fmt(x.get('max_bound'))} | "
                              f"{x.get('exceed', '-')} | {x.get('seconds', 0):.4f} |")
             lines.append("")
+        if sec["times"]:
+            ns = sorted({rec["n"] for rec in sec["times"]})
+            lines += ["time against n, seconds per run (r = ceil(n/2) / r = n)", "",
+                      "| method | " + " | ".join(f"n = {n}" for n in ns) + " |",
+                      "| --- | " + " | ".join("---:" for _ in ns) + " |"]
+            for method in ("exact", "rational", "modular", "float"):
+                cells = []
+                for n in ns:
+                    half = [x for x in sec["times"] if x["method"] == method and x["n"] == n and x["r"] == (n + 1) // 2]
+                    full = [x for x in sec["times"] if x["method"] == method and x["n"] == n and x["r"] == n
+                            and n > 1]
+                    text = "/".join(f"{x[0]['seconds']:.3g}" + ("" if x[0]["verdict"] not in ("inconclusive", "error")
+                                                                 else "!") for x in (half, full) if x)
+                    cells.append(text or "-")
+                if any(c != "-" for c in cells):
+                    lines.append(f"| {method} | " + " | ".join(cells) + " |")
+            lines += ["", "(! : not decided within the run's budget)", ""]
         reach = {}
         for rec in sec["times"]:
             if rec["verdict"] not in ("inconclusive", "error"):
@@ -501,5 +518,9 @@ def markdown(doc: dict[str, Any]) -> str:
               "Fitted per method and family: t(n) = exp(a) n^b seconds, raised to lie above every measured point "
               "(`stiefelsym/costmodel.json`; `verify --budget` refuses a run predicted beyond it).", "",
               "![cost model](costmodel.png)", "", table(doc["costmodel"]), "",
+              f"Claims other than the five measured ones are predicted as their kind's family times a factor "
+              f"calibrated on the catalog's own runs (`claim_factors`, {len(doc['costmodel'].get('claim_factors') or {})} "
+              f"claims: the worst ratio of a claim's time to its family's prediction); a claim never timed gets "
+              f"{UNKNOWN_CLAIM_FACTOR:g} times the slowest family.", "",
               "Hard cases: [hard.md](hard.md).", ""]
     return "\n".join(lines)
