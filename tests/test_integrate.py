@@ -283,3 +283,13 @@ def test_default_tolerance_and_step():
     assert t.step == pytest.approx(0.01)
     t = ig.integrate(X, P, "neumann", 1.0, method="rk4", tol=1e-8, samples=3)
     assert t.step == pytest.approx(0.01)
+
+
+def test_dual_lax_pair_extends_to_every_kappa():
+    """(LA3) with 𝓐*_κ = [[(1+2κ)XᵀP, I], [Λ − λI, −(1+2κ)PᵀX]] along (No) for every κ; the normal-metric 𝓐*
+    of (LA4) fails off κ = 0 (negative control)."""
+    from stiefelsym.flows_report import collect_dual_every_kappa
+    for row in collect_dual_every_kappa(True, lambda s: None):
+        assert row["residual_A_kappa"] < 1e-12
+        if row["kappa"] != 0.0:
+            assert row["residual_A_normal"] > 1e-2
