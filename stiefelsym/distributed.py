@@ -121,10 +121,10 @@ def verify(claims: list[Claim], *, address: str | None = None, client: Any = Non
            on_result: Callable[[Result], None] | None = None, on_plan: Callable[[int], None] | None = None,
            hard: str | None = None, timeout: float = DEFAULT_TIMEOUT,
            memory: float | None = DEFAULT_MEMORY_GIB, jobs: int = 1, strict_sizes: bool = False,
-           fork: bool | None = None) -> list[Result]:
+           fork: bool | None = None, **plan_options: Any) -> list[Result]:
     """``runner.verify`` on a dask cluster (``address``, or an existing ``client``): the same
-    arguments (``jobs`` and ``fork`` are the cluster's business and are ignored), the same
-    results in the same order."""
+    arguments (``jobs`` and ``fork`` are the cluster's business and are ignored; other keyword
+    arguments go to ``runner.plan``), the same results in the same order."""
     from . import runner
     from .hard import hard_case
     if seed < 0:
@@ -139,7 +139,8 @@ def verify(claims: list[Claim], *, address: str | None = None, client: Any = Non
         if "exact" in methods:
             raise ValueError("hard cases are sampled points: use --method rational, modular or float")
     claims = list(claims)
-    runs = runner.plan(claims, sizes, methods, strict=strict_sizes)
+    # further options of the runner's plan (e.g. a cost budget) are passed on as they are
+    runs = runner.plan(claims, sizes, methods, strict=strict_sizes, **plan_options)
     if on_plan is not None:
         on_plan(len(runs))
     index = {id(c): i for i, c in enumerate(claims)}
