@@ -1,0 +1,186 @@
+"""§7 claims: the Neumann flows on Ψ = 0, the reduced equation (neum-gras) on e_1∧…∧e_r, the case
+r = n − 1 (iden1), (iden2), (neum-gras**), and the quartic Hamiltonian hold at small sizes; those
+built from matrix products are proved for every n, r; a corrupted copy of each FAILS (negative
+controls)."""
+import pytest
+
+from stiefelsym.free_method import run_free
+from stiefelsym.methods import run_exact, run_points
+
+import proofs.sec7_grassmannians as sec7
+from proofs.sec5_neumann import H_neumann_euclidean, H_neumann_normal
+
+SEED = 0
+
+FREE_PROVED = ("neumann-flows-coincide-on-psi-zero", "quartic-psi-zero-invariant")
+NEEDS_COORDINATES = ("neum-gras", "neum-gras**", "quartic")
+#: (exact sizes, modular sizes) of each claim as printed
+SIZES = {
+    "neumann-flows-coincide-on-psi-zero": ([(2, 1), (3, 2)], [(3, 2), (4, 2), (4, 4)]),
+    "quartic-psi-zero-invariant": ([(2, 1), (3, 2)], [(3, 2), (4, 3)]),
+    "neum-gras": ([(2, 1), (3, 2), (3, 3)], [(4, 2), (4, 3), (5, 3)]),
+    "neum-gras**": ([(2, 1)], [(3, 2), (4, 3)]),
+    "quartic": ([(2, 1), (3, 1)], [(4, 1)]),
+}
+
+
+def _section7(catalog):
+    return [c for c in catalog if c.section == "7"]
+
+
+# -- corrupted copies of the claims ----------------------------------------------------------
+
+def flows_differ_by_minus_half_psi(s):
+    """Corrupted: the κ = 0 and κ = −½ flows differ by −½(XΨ, PΨ)."""
+    normal, euclidean = s.dirac_flow(H_neumann_normal), s.dirac_flow(H_neumann_euclidean)
+    return {"dX/dt": normal.Xdot - euclidean.Xdot + s.X @ s.Psi / 2}
+
+
+def flows_coincide_everywhere(s):
+    """Corrupted: the printed (N0_XP2) and (NE_XP) coincide at every point (not only on Ψ = 0)."""
+    return {"dP/dt": sec7.flow_N0_at(s, s.X, s.P)["P"] - sec7.flow_NE_at(s, s.X, s.P)["P"]}
+
+
+def neum_gras_without_the_factor_2(s):
+    """Corrupted (neum-gras): the second sum with the factor 1 in place of 2 (r >= 2)."""
+    flow = s.dirac_flow(H_neumann_euclidean)
+    r, n = s.r, s.n
+    E = sec7.columns(s.X, r)
+    second = s.d(lambda t: sec7.column(t, sec7.first_derivative(t, sec7.columns(t.X, r), sec7.columns(t.P, r))),
+                 flow)
+    rhs = sec7.neum_gras_rhs(s, s.X, flow.Xdot)
+    V = sec7.columns(flow.Xdot, r)
+    for i in range(r):
+        for j in range(i + 1, r):
+            g = sec7.plucker(s, sec7.replaced(E, {i: V[i], j: V[j]}), n)
+            rhs = [a - b for a, b in zip(rhs, g)]
+    return {"(neum-gras)": second - sec7.column(s, rhs)}
+
+
+def neum_gras_lambda_sign(s):
+    """Corrupted (neum-gras): λ = tr(XᵀAX + ẊᵀẊ)."""
+    flow = s.dirac_flow(H_neumann_euclidean)
+    r = s.r
+    second = s.d(lambda t: sec7.column(t, sec7.first_derivative(t, sec7.columns(t.X, r), sec7.columns(t.P, r))),
+                 flow)
+    rhs = sec7.neum_gras_rhs(s, s.X, flow.Xdot)
+    extra = 2 * s.tr(flow.Xdot.T @ flow.Xdot)
+    G = sec7.plucker(s, sec7.columns(s.X, r), s.n)
+    return {"(neum-gras)": second - sec7.column(s, [a + extra * g for a, g in zip(rhs, G)])}
+
+
+def sphere_with_plus_trace(s):
+    """Corrupted (neum-gras**): (A + tr A I)e_n + λe_n."""
+    n, r = s.n, s.r
+    X = s.X
+    P0 = sec7.horizontal(s, X, s.P)
+    printed = sec7.flow_NE_at(s, X, P0)
+    E, Acc = sec7.columns(X, r), sec7.columns(printed["P"], r)
+    e = sec7.vector(s, sec7.cross(s, E))
+    eddot = sec7.vector(s, sec7.add(*[sec7.cross(s, sec7.replaced(E, {i: Acc[i]})) for i in range(r)]))
+    lam = s.tr(X.T @ s.A @ X - printed["X"].T @ printed["X"])
+    return {"(neum-gras**)": eddot - (s.A @ e + s.tr(s.A) * e) - lam * e}
+
+
+def sphere_at_a_point_off_psi_zero(s):
+    """Corrupted (neum-gras**): the second term of (neum-gras) vanishes at every point (not only on Ψ = 0)."""
+    r = s.r
+    E, V = sec7.columns(s.X, r), sec7.columns(s.P, r)
+    out = [s.q(0)] * s.n
+    for i in range(r):
+        for j in range(i + 1, r):
+            out = sec7.add(out, sec7.cross(s, sec7.replaced(E, {i: V[i], j: V[j]})))
+    return {"second term": sec7.column(s, out)}
+
+
+def quartic_coefficient(s):
+    """Corrupted (quartic): −2(Σ a_i e_i²)²."""
+    a, e, p, n = s.a, s.X, s.P, s.n
+    pp = sum((p[i, 0] * p[i, 0] for i in range(n)), s.q(0))
+    quad = sum((a[i] * a[i] * e[i, 0] * e[i, 0] for i in range(n)), s.q(0))
+    mean = sum((a[i] * e[i, 0] * e[i, 0] for i in range(n)), s.q(0))
+    return {"(quartic)": sec7.H_quartic(s) - (pp / 2 + quad - 2 * mean * mean)}
+
+
+def quartic_plus_a_non_invariant_term(s):
+    """Corrupted: a Hamiltonian with tr(XᵀAXG), G generic (not SO(r)-invariant), does not keep Ψ."""
+    H = lambda t: sec7.H_quartic(t) + t.tr(t.X.T @ t.A @ t.X @ t.generic("G", "r", "r"))
+    return {"dPsi/dt": s.d(lambda t: t.Psi, s.dirac_flow(H))}
+
+
+#: (claim, corrupted function, (size of the exact check or None, size of the modular check))
+CORRUPTIONS = [
+    ("neumann-flows-coincide-on-psi-zero", flows_differ_by_minus_half_psi, ((3, 2), (3, 2))),
+    ("neumann-flows-coincide-on-psi-zero", flows_coincide_everywhere, ((3, 2), (3, 2))),
+    ("neum-gras", neum_gras_without_the_factor_2, ((3, 2), (4, 3))),
+    ("neum-gras", neum_gras_lambda_sign, ((3, 2), (4, 2))),
+    ("neum-gras**", sphere_with_plus_trace, ((2, 1), (4, 3))),
+    ("neum-gras**", sphere_at_a_point_off_psi_zero, (None, (4, 3))),
+    ("quartic", quartic_coefficient, ((3, 1), (4, 1))),
+    ("quartic-psi-zero-invariant", quartic_plus_a_non_invariant_term, ((3, 2), (4, 2))),
+]
+
+
+def test_every_section7_claim_has_a_negative_control(catalog):
+    assert {cid for cid, _, _ in CORRUPTIONS} == {c.id for c in _section7(catalog)}
+
+
+def test_the_free_and_coordinate_lists_cover_section7(catalog):
+    assert set(FREE_PROVED) | set(NEEDS_COORDINATES) == {c.id for c in _section7(catalog)} == set(SIZES)
+
+
+@pytest.mark.parametrize("cid, func, size", CORRUPTIONS, ids=[f"{c}-{f.__name__}" for c, f, _ in CORRUPTIONS])
+def test_corrupted_claim_fails(catalog, cid, func, size):
+    c = catalog.get(cid)
+    exact, (n, r) = size
+    if exact is not None:
+        assert run_exact(c, *exact, SEED, func=func).verdict == "fails"
+    res = run_points(c, n, r, "modular", SEED, func=func)
+    assert res.verdict == "fails" and res.witness and res.witness["seed"] == SEED
+
+
+@pytest.mark.parametrize("cid", FREE_PROVED)
+def test_corrupted_claim_is_not_proved_for_all_sizes(catalog, cid):
+    for c_id, func, _ in CORRUPTIONS:
+        if c_id == cid:
+            assert run_free(catalog.get(cid), func).verdict == "undecided"
+
+
+# -- the claims as printed -------------------------------------------------------------------
+
+@pytest.mark.parametrize("cid", list(SIZES))
+def test_section_7_holds_as_printed_at_small_sizes(catalog, cid):
+    c = catalog.get(cid)
+    exact, modular = SIZES[cid]
+    for n, r in exact:
+        assert run_exact(c, n, r, SEED).verdict == "proved", (cid, n, r)
+    for n, r in modular:
+        assert run_points(c, n, r, "modular", SEED).verdict == "checked", (cid, n, r)
+
+
+@pytest.mark.parametrize("cid", FREE_PROVED)
+def test_claim_is_proved_for_every_n_and_r(catalog, cid):
+    res = run_free(catalog.get(cid))
+    assert res.verdict == "proved", res.message
+
+
+@pytest.mark.parametrize("cid", NEEDS_COORDINATES)
+def test_claim_needs_coordinates(catalog, cid):
+    assert run_free(catalog.get(cid)).verdict == "undecided"
+
+
+def test_the_sphere_vector_is_the_plucker_vector():
+    """(iden2) at r = n − 1: the components of e_n are the Plücker coordinates of e_1∧…∧e_{n−1}
+    up to the signs (−1)^{n+k} (the cofactors of the last column of (X, e_n))."""
+    from stiefelsym.claims import Claim, admissible
+
+    def iden2(s):
+        E = sec7.columns(s.X, s.r)
+        en = sec7.cross(s, E)
+        G = sec7.plucker(s, E, s.n)   # lexicographic: G[j] omits row n − 1 − j
+        return {"(iden2)": sec7.column(s, [en[k] - (G[s.n - 1 - k] if (s.n + k + 1) % 2 == 0
+                                                     else -G[s.n - 1 - k]) for k in range(s.n)])}
+    c = Claim(id="iden2", paper=("iden2",), kind="id", section="7", func=iden2,
+              sizes=admissible(4, where=lambda n, r: r == n - 1))
+    assert run_exact(c, 3, 2, SEED).verdict == "proved"
+    assert run_points(c, 4, 3, "modular", SEED).verdict == "checked"
