@@ -116,7 +116,7 @@ CORRUPTIONS = [
     ("neum-gras", neum_gras_lambda_sign, ((3, 2), (4, 2))),
     ("neum-gras**", sphere_with_plus_trace, ((2, 1), (4, 3))),
     ("neum-gras**", sphere_at_a_point_off_psi_zero, (None, (4, 3))),
-    ("quartic", quartic_coefficient, ((3, 1), (4, 1))),
+    ("quartic", quartic_coefficient, ((2, 1), (4, 1))),
     ("quartic-psi-zero-invariant", quartic_plus_a_non_invariant_term, ((3, 2), (4, 2))),
 ]
 
