@@ -159,8 +159,8 @@ def T_kappa(t, z, kappa):
     """(C-neumann): T_κ = ½tr(PᵀP) − (½ + κ)tr((XᵀP)²) + ½tr(QᵀQ) − (½ + κ)tr((YᵀQ)²)."""
     XP, YQ = z["X"].T @ z["P"], z["Y"].T @ z["Q"]
     c = t.q(1, 2) + kappa
-    return (t.tr(z["P"].T @ z["P"]) / 2 - c * t.tr(XP @ XP)
-            + t.tr(z["Q"].T @ z["Q"]) / 2 - c * t.tr(YQ @ YQ))
+    return (t.q(1, 2) * t.tr(z["P"].T @ z["P"]) - c * t.tr(XP @ XP)
+            + t.q(1, 2) * t.tr(z["Q"].T @ z["Q"]) - c * t.tr(YQ @ YQ))
 
 
 def H_coupled(kappa):
@@ -442,13 +442,13 @@ def coupled_big_lax_along_corrected_flow(s):
 def T_complex(t, v):
     """(W-Lag), the kinetic part: ½tr(ŻᵀŻ̄) (real: its real part)."""
     Zd = v["Z"]
-    return re_trace(t, ctranspose(t, Zd) @ t.conj(Zd)) / 2
+    return t.q(1, 2) * re_trace(t, ctranspose(t, Zd) @ t.conj(Zd))
 
 
 def U_complex(t, q):
     """(W-Lag), the potential: ½tr(ZᵀAZ̄) (real: its real part); L = T − U."""
     Z = q["Z"]
-    return re_trace(t, ctranspose(t, Z) @ realify_real(t, t.A) @ t.conj(Z)) / 2
+    return t.q(1, 2) * re_trace(t, ctranspose(t, Z) @ realify_real(t, t.A) @ t.conj(Z))
 
 
 def W0(t, q):
