@@ -50,19 +50,29 @@ def _field_strength(s, F: Mat | None) -> Mat:
     return F
 
 
-def _split(s: Scene, v: list) -> tuple[Mat, Mat]:
-    flow = s._split(v)
-    return flow.Xdot, flow.Pdot
+Pair = tuple  # (d/dX, d/dP): a covector or a vector of the ambient space, as two n x r matrices
 
 
-def _flat(X: Mat, P: Mat) -> list:
-    return list(X._a.flat) + list(P._a.flat)
+def _pair_dot(s: Scene, u: Pair, v: Pair) -> Any:
+    """⟨u, v⟩ = tr(u_Xᵀ v_X) + tr(u_Pᵀ v_P)."""
+    return s.field.normalize((u[0].T @ v[0]).trace() + (u[1].T @ v[1]).trace())
 
 
-def _pi(s: Scene, v: list, F: Mat) -> list:
+def _pi(s: Scene, v: Pair, F: Mat) -> Pair:
     """W⁻¹ v: the ambient twisted Poisson tensor applied to a covector v = (v_X, v_P)."""
-    vX, vP = _split(s, v)
-    return _flat(vP, -vX - s.eps * (vP @ F))
+    return (v[1], -v[0] - s.eps * (v[1] @ F))
+
+
+def _constraint_gradients(s: Scene) -> list[Pair]:
+    """The gradients of the scalar constraints (scalar) as pairs of n x r matrices (the scene's own)."""
+    grads = getattr(s, "_constraint_gradients", None)
+    if grads is not None:
+        return grads()
+    out = []
+    for row in s._constraint_jacobian():
+        f = s._split(row)
+        out.append((f.Xdot, f.Pdot))
+    return out
 
 
 def _key(F: Mat | None) -> str:
@@ -73,7 +83,7 @@ def ambient_bracket(s, f: Function, g: Function, F: Mat | None = None) -> Any:
     """{f, g}_ε = {f, g}₀ − ε tr(f_Pᵀ g_P F): the Poisson bracket of ω₀ + ε Σ F_jk de_j∧de_k on ℝ^{2nr}."""
     s = _scene(s, "the ambient twisted bracket")
     F = _field_strength(s, F)
-    return s._dot(s._grad_vector(f), _pi(s, s._grad_vector(g), F))
+    return _pair_dot(s, s.gradient(f), _pi(s, s.gradient(g), F))
 
 
 def constraint_bracket_matrix(s, F: Mat | None = None) -> list[list[Any]]:
@@ -82,8 +92,8 @@ def constraint_bracket_matrix(s, F: Mat | None = None) -> list[list[Any]]:
     Fm = _field_strength(s, F)
 
     def build():
-        J = s._constraint_jacobian()
-        return [[s._dot(ri, _pi(s, rj, Fm)) for rj in J] for ri in J]
+        G = _constraint_gradients(s)
+        return [[_pair_dot(s, gi, _pi(s, gj, Fm)) for gj in G] for gi in G]
     return s._cached_for("twisted:C0:" + _key(F), Fm, build)
 
 
@@ -108,14 +118,14 @@ def bracket(s, f: Function, g: Function, F: Mat | None = None) -> Any:
         return s.d(f, _free_flow(s, g, F))
     s = _scene(s, "the twisted Dirac bracket")
     Fm = _field_strength(s, F)
-    J = s._constraint_jacobian()
+    G = _constraint_gradients(s)
     C = _inverse(s, F)
-    gf, gg = s._grad_vector(f), s._grad_vector(g)
-    Fif = [s._dot(row, _pi(s, gf, Fm)) for row in J]     # {F_i, f}_ε
-    Fjg = [s._dot(row, _pi(s, gg, Fm)) for row in J]     # {F_j, g}_ε
-    acc = s._dot(gf, _pi(s, gg, Fm))
-    for i in range(len(J)):
-        for j in range(len(J)):
+    gf, gg = s.gradient(f), s.gradient(g)
+    Fif = [_pair_dot(s, gi, _pi(s, gf, Fm)) for gi in G]     # {F_i, f}_ε
+    Fjg = [_pair_dot(s, gj, _pi(s, gg, Fm)) for gj in G]     # {F_j, g}_ε
+    acc = _pair_dot(s, gf, _pi(s, gg, Fm))
+    for i in range(len(G)):
+        for j in range(len(G)):
             acc = acc + Fif[i] * C[i][j] * Fjg[j]
     return s.field.normalize(acc)
 
@@ -139,19 +149,16 @@ def flow(s, H: Function, F: Mat | None = None) -> Flow:
     Fm = _field_strength(s, F)
 
     def build():
-        J = s._constraint_jacobian()
+        G = _constraint_gradients(s)
         C = _inverse(s, F)
-        z = _pi(s, s._grad_vector(H), Fm)
-        FjH = [s._dot(row, z) for row in J]               # {F_j, H}_ε
-        w = [s._dot(Ci, FjH) for Ci in C]
-        JP = [_pi(s, row, Fm) for row in J]               # {z, F_i}_ε = (W⁻¹ grad F_i)
-        out = []
-        for k in range(len(z)):
-            acc = z[k]
-            for i in range(len(J)):
-                acc = acc - JP[i][k] * w[i]
-            out.append(s.field.normalize(acc))
-        return s._split(out)
+        zX, zP = _pi(s, s.gradient(H), Fm)                  # W⁻¹∇H
+        FjH = [_pair_dot(s, g, (zX, zP)) for g in G]        # {F_j, H}_ε
+        w = [s.field.normalize(sum((c * x for c, x in zip(Ci, FjH)), s.const(0))) for Ci in C]
+        for wi, g in zip(w, G):                             # {z, F_i}_ε = W⁻¹∇F_i
+            gX, gP = _pi(s, g, Fm)
+            zX = zX - gX * wi
+            zP = zP - gP * wi
+        return Flow(zX, zP)
     return s._cached_for("twisted:flow", H, build) if F is None else build()
 
 
@@ -199,8 +206,8 @@ def multiplier_flow(s, H: Function, F: Mat | None = None) -> Flow:
     def build():
         n, r = s.n, s.r
         HX, HP = s.gradient(H)
-        J = s._constraint_jacobian()
-        base = _flat(HP, -HX - s.eps * (HP @ Fm))
+        G = _constraint_gradients(s)
+        base = (HP, -HX - s.eps * (HP @ Fm))
         units = []
         for name in ("Lambda", "Pi"):
             for i in range(r):
@@ -208,13 +215,13 @@ def multiplier_flow(s, H: Function, F: Mat | None = None) -> Flow:
                     E = s.zeros(r, r, ("r", "r"))
                     E._a[i, j] = E._a[j, i] = s.const(1)
                     if name == "Lambda":
-                        v = _flat(s.zeros(n, r, ("n", "r")), s.X @ E)
+                        v = (s.zeros(n, r, ("n", "r")), s.X @ E)
                     else:
                         XE = s.X @ E
-                        v = _flat(-XE, s.P @ E + s.eps * (XE @ Fm))
+                        v = (-XE, s.P @ E + s.eps * (XE @ Fm))
                     units.append((name, i, j, v))
-        M = [[s._dot(row, u[3]) for u in units] for row in J]
-        b = [[-s._dot(row, base)] for row in J]
+        M = [[_pair_dot(s, g, u[3]) for u in units] for g in G]
+        b = [[-_pair_dot(s, g, base)] for g in G]
         try:
             sol = s.field.solve(M, b)
         except DegenerateError as exc:
