@@ -1,4 +1,11 @@
-"""Appendix 1. Magnetic Neumann systems: the twisted symplectic form, the momentum map Φ_ε, the magnetic flows and their Lax pairs, Proposition YM."""
+"""Appendix 1. Magnetic Neumann systems: the twisted symplectic form, the momentum map Φ_ε, the magnetic flows and their Lax pairs, Proposition YM.
+
+Flows are derived, never typed in: the magnetic flows are the Hamiltonian vector fields of the printed
+Hamiltonians for ω_ε = ω + ε π*ω_mag (stiefelsym.twisted: the Dirac construction with the twisted
+ambient bracket), the rigid-body flows those of H_CP, H_CPB on T*SO(n) = T*V(n, n) for the canonical form.
+Two printed statements fail and are registered as errata with a correction: the sign of the Lorentz force
+in the n = 3 monopole remark (ym-monopole), and the condition η_so(r) = 0 (for η_so(n−r) = 0) in the
+reduction of the symmetric CPB body to V(n, r) (cpb-reduction-stiefel)."""
 from __future__ import annotations
 
 from stiefelsym import Rank, admissible, claim, comm
