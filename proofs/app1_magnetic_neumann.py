@@ -133,6 +133,22 @@ def twisted_form_is_closed(s):
     return {"Jacobi": twisted.bracket(s, f, b(g, h)) + twisted.bracket(s, g, b(h, f)) + twisted.bracket(s, h, b(f, g))}
 
 
+@claim("magnetic-form-kirillov-kostant", paper=("twisted", "mag-mom-grass"), kind="pb", sizes=ON_V_N2,
+       statement=r"\omega_{mag}(X\eta,v)=0\ (v\in T_XV_{n,2}),\quad "
+                 r"\omega_{mag}(\xi X,\zeta X)=-\langle e_1\wedge e_2,[\xi,\zeta]\rangle=\omega^-_{KK}([\xi,G],[\zeta,G]),\ G=e_1\wedge e_2")
+def magnetic_form_is_kirillov_kostant(s):
+    """The magnetic form ω_mag = de₁∧de₂ is basic for V_{n,2} → G_{n,2} (it vanishes on the right SO(2) directions Xη) and on G_{n,2} ≅ the adjoint orbit of E₁∧E₂ it is the Kirillov–Kostant form, ω_mag(ξX, ζX) = −⟨e₁∧e₂, [ξ, ζ]⟩ for the tangent vectors [ξ, G], [ζ, G] of the orbit (the ω⁻ convention), so επ*ω_mag is ε times the Kirillov–Kostant form, as the paper says."""
+    zero = s.zeros(s.n, s.r, ("n", "r"))
+    G = e1e2(s)
+    along = lambda a: {"X": a, "P": zero}
+    return {
+        "omega_mag(X eta, xi X)": twisted.form(s, along(s.X @ s.eta), along(s.xi @ s.X)),
+        "omega_mag(xi X, zeta X) + <G, [xi, zeta]>": twisted.form(s, along(s.xi @ s.X), along(s.zeta @ s.X))
+        + s.eps * s.killing(G, comm(s.xi, s.zeta)),
+        "d/ds G(e^{s xi} X) = [xi, G]": s.d(e1e2, along(s.xi @ s.X)) - comm(s.xi, G),
+    }
+
+
 @claim("magnetic-momentum-map", paper=("mag-mom-stief", "twisted"), kind="pb", sizes=ON_V_N2,
        statement=r"\Phi_\epsilon=\Phi+\epsilon\,e_1\wedge e_2=p_1\wedge e_1+p_2\wedge e_2+\epsilon\,e_1\wedge e_2:\quad "
                  r"X^{\epsilon}_{\langle\Phi_\epsilon,\xi\rangle}=(\xi X,\xi P),\quad "

@@ -286,9 +286,18 @@ def any_rank_spectral_invariant_with_phi(s):
     return {"d tr L^3/dt": s.d(lambda t: t.tr(L(t) @ L(t) @ L(t)), twisted.flow(s, app1.H_neumann_kappa, F=s.eta))}
 
 
+def kirillov_kostant_plus_convention(s):
+    """Corrupted: ω_mag(ξX, ζX) = +⟨e₁∧e₂, [ξ, ζ]⟩ (it is the ω⁻ form, not ω⁺)."""
+    zero = s.zeros(s.n, s.r, ("n", "r"))
+    along = lambda a: {"X": a, "P": zero}
+    return {"KK": twisted.form(s, along(s.xi @ s.X), along(s.zeta @ s.X))
+            - s.eps * s.killing(app1.e1e2(s), comm(s.xi, s.zeta))}
+
+
 CORRUPTIONS = [
     ("twisted-form", twisted_form_sign),
     ("twisted-form-closed", jacobi_of_a_wrong_bracket),
+    ("magnetic-form-kirillov-kostant", kirillov_kostant_plus_convention),
     ("magnetic-momentum-map", momentum_without_magnetic_term),
     ("magnetic-euclidean-flow", euclidean_flow_epsilon_sign),
     ("magnetic-normal-flow", normal_flow_multiplier_dropped),
