@@ -518,6 +518,9 @@ QUANTITIES = {
     "torus_complete": ("NEUMANN", "rank d(Θ*𝓕, Ψ) − rank{ , }; = torus iff complete"),
     "NEUMANN2": ("NEUMANN2", "generic rank of (d𝓕)·Λ1 at Ψ = 0; printed r(n−r) = dim G(n,r)"),
     "N": ("2r-integrals", "Σ_l (deg I_2l) = Σ_{l=1}^r (n − l) = dim V"),
+    "N_rank": ("2r-integrals", "rank of d tr(a(λ)𝓛*(λ))^k (k ≤ 2r, enough λ) on T*V: the independent integrals of the "
+               "dual Lax matrix (LA4) among the N (nothing printed: the paper says some are dependent)"),
+    "N_dependent": ("2r-integrals", "some of the N integrals are dependent (1) or not (0): the computed rank below N"),
     "N_vs_l": ("2r-integrals", "N > l (half the leaf (dimension)): some of the N integrals are dependent"),
     "invariant_forms": ("SO(n-r)-action", "dim of SO(r)×SO(n−r)-invariant quadratic forms on the fibre; printed: dim span{tr PᵀP, tr (XᵀP)²}"),
 }
@@ -530,7 +533,7 @@ INVARIANT_FORMS_MAX_DIM = 30
 #: the quantities computed beyond the full range (n_max < n <= extended n_max): every dimension of
 #: the table without the completeness checks (Poisson matrices of the integrals), which grow fastest
 EXTENDED = ("dimV", "ddim", "ddim_inv", "2l", "regular", "chain", "delta0", "delta", "leaf", "leaf_singular",
-            "L5L6", "L5L6_corrected", "A1", "A1_t", "KER", "A2", "torus", "N", "N_vs_l")
+            "L5L6", "L5L6_corrected", "A1", "A1_t", "KER", "A2", "torus", "N", "N_rank", "N_dependent", "N_vs_l")
 
 
 def _cmp(printed, cert: Certificate) -> bool | None:
@@ -751,6 +754,17 @@ def compute_size(n: int, r: int, *, seed: int = 0, include: Iterable[str] | None
         neu2 = _safe_generic(lambda x: casimirs_on_leaf(x, P1=False), nv2, n, "rank d𝓕·Λ1 at Ψ = 0", seed, n * n)
         add("NEUMANN2", r * (n - r), neu2)
 
+    # the integrals of the dual Lax matrix: how many of the N are independent
+    if want & {"N_rank", "N_dependent"} and n * r <= N_RANK_MAX_NR:
+        def dual(x):
+            pt, T = full_T(x, True)
+            return stack_rows(dual_lax_rows(pt, T), ncols=len(T))
+        N_rank = _safe_generic(dual, nv_all, 2 * r * n + 1, "rank d tr(a𝓛*)^k", seed, 2 * dV)
+        add("N_rank", None, N_rank)
+        if N_rank.value is not None:
+            add("N_dependent", 1, exact("some dependent", int(N_rank.value < N_printed(n, r)),
+                                        f"rank {N_rank.value} against N = {N_printed(n, r)}"))
+
     # N: a count; and the remark that N exceeds half the leaf dimension
     N_comp = exact("N", sum(n - l for l in range(1, r + 1)), "Σ_{l=1}^r deg I_2l, deg I_2l = n − l")
     add("N", N_printed(n, r), N_comp)
@@ -769,6 +783,61 @@ def compute_size(n: int, r: int, *, seed: int = 0, include: Iterable[str] | None
                               (f"tr(PᵀP), tr((XᵀP)²) are invariant: {k_in} independent, checked exactly",))
             add("invariant_forms", paper_span.value, inv)
     return rows
+
+
+#: the rank of the dual Lax integrals is computed while n·r is at most this (2rn + 1 values of λ, powers
+#: up to 2r of a 2r x 2r matrix)
+N_RANK_MAX_NR = 20
+
+
+def adjugate(M: Z) -> Z:
+    """adj(M) = det(M) M⁻¹, exactly (M invertible)."""
+    d = M.det()
+    inv = flint.fmpq_mat(M).inv() * flint.fmpq(int(d))
+    num, den = inv.numer_denom()
+    if den != 1:
+        raise ArithmeticError("the adjugate is not integral")
+    return num
+
+
+def dual_lax_rows(pt: Point, tangent: list[tuple[Z, Z]]) -> list[list]:
+    """The differentials of tr(a(λ)𝓛*(λ))^k, k = 1..2r, 𝓛* of (LA4), a(λ) = det(λI − A), at 2rn + 1
+    integer values of λ (each row is a polynomial of degree <= 2rn in λ)."""
+    n, r = pt.n, pt.r
+    X, P, A = pt.X, pt.P, pt.A
+    I_r = Z([[1 if i == j else 0 for j in range(r)] for i in range(r)])
+    rows = []
+    lam = 0
+    used = 0
+    while used < 2 * r * n + 1:
+        lam += 1
+        Lm = Z([[lam if i == j else 0 for j in range(n)] for i in range(n)]) - A
+        a = Lm.det()
+        if a == 0:
+            continue
+        used += 1
+        R = adjugate(Lm)          # a(λ)(λI − A)⁻¹
+
+        def L(X, P, dX=None, dP=None):
+            if dX is None:
+                return _block(-(X.transpose() * R * P), -(X.transpose() * R * X),
+                              int(a) * I_r + P.transpose() * R * P, P.transpose() * R * X)
+            return _block(-(dX.transpose() * R * P + X.transpose() * R * dP),
+                          -(dX.transpose() * R * X + X.transpose() * R * dX),
+                          dP.transpose() * R * P + P.transpose() * R * dP,
+                          dP.transpose() * R * X + P.transpose() * R * dX)
+        M = L(X, P)
+        rows += trace_power_differentials(M, [L(X, P, dX, dP) for dX, dP in tangent], 2 * r)
+    return rows
+
+
+def _block(a: Z, b: Z, c: Z, d: Z) -> Z:
+    m, k = a.nrows(), a.ncols()
+    out = zeros(2 * m, 2 * k)
+    for i in range(m):
+        for j in range(k):
+            out[i, j], out[i, k + j], out[m + i, j], out[m + i, k + j] = a[i, j], b[i, j], c[i, j], d[i, j]
+    return out
 
 
 def l5_l6_matrix(r: int, printed: bool, seed: str) -> tuple[Z, int]:
@@ -850,6 +919,7 @@ def _embed(B: Z, n: int, offset: int) -> Z:
 KNOWN_DISAGREEMENTS: dict[str, tuple[str, Callable[[int, int], bool]]] = {
     "regular": ("n = 2r + 2", lambda n, r: n == 2 * r + 2),
     "N_vs_l": ("r = 1 (then N = l = n − 1)", lambda n, r: r == 1),
+    "N_dependent": ("r <= 2 (the N integrals are independent: N = l + [r/2])", lambda n, r: r <= 2),
     "leaf_singular": ("r = 1 and n <= 2 (2l = n² − n)", lambda n, r: r == 1 and n <= 2),
     "L5L6": ("r >= 3 (the solutions are 2-dimensional)", lambda n, r: r >= 3),
     "invariant_forms": ("r = 4, or n − r = r = 2, or (n − r, r) = (1, 3)",
@@ -920,7 +990,7 @@ GROUPS = (
      ("leaf", "leaf_singular", "leaf_pushforward", "complete_F", "A1", "A1_t", "KER", "A2", "L5L6", "L5L6_corrected",
       "torus", "torus_complete")),
     ("§3, §7, §8: invariant metrics, Grassmannians, the count N",
-     ("invariant_forms", "NEUMANN2", "N", "N_vs_l")),
+     ("invariant_forms", "NEUMANN2", "N", "N_rank", "N_dependent", "N_vs_l")),
 )
 
 #: short column headings (Markdown, LaTeX)
@@ -935,7 +1005,8 @@ HEADINGS = {
     "complete_F": ("l (LEMA2)", r"$l$ (LEMA2)"), "A1": ("(A1) t=−1", r"(A1) $t{=}{-1}$"),
     "A1_t": ("(A1) any t", r"(A1) $t$"), "KER": ("KER", r"KER"), "A2": ("(A2)", r"(A2)"),
     "torus": ("torus", r"torus"), "torus_complete": ("torus (compl.)", r"torus c."),
-    "NEUMANN2": ("NEUMANN2", r"NEU2"), "N": ("N", r"$N$"), "N_vs_l": ("N > l", r"$N>l$"),
+    "NEUMANN2": ("NEUMANN2", r"NEU2"), "N": ("N", r"$N$"), "N_rank": ("N indep.", r"$N$ indep."),
+    "N_dependent": ("some dependent", r"dep."), "N_vs_l": ("N > l", r"$N>l$"),
     "invariant_forms": ("inv. forms", r"inv.\ forms"),
 }
 
@@ -1039,6 +1110,11 @@ def _notes_markdown() -> list[str]:
         "- *N > l*: §8 says N = r(n−r) + r(r−1)/2 exceeds half the dimension (dimension) of a generic leaf, so "
         "some of the N integrals are dependent.  For r = 1, N = l = n − 1: the premise fails (and the Neumann "
         "integrals on the sphere are independent); for r ≥ 2, N − l = r(r−1)/4 + [r/2]/2 > 0.",
+        "- *some dependent*: the conclusion of that remark, computed as the rank of the differentials of the "
+        "coefficients of the dual spectral curve (column *N indep.*).  Commuting integrals on T*V/SO(r) number at "
+        "most l + [r/2] (the leaf and its [r/2] Casimirs), and N − (l + [r/2]) = r(r−1)/4 − [r/2]/2, which is 0 "
+        "for r ≤ 2: there all N integrals are independent (computed), and some are dependent exactly for r ≥ 3.  "
+        "Wherever computed, the rank equals the torus dimension (dim_fol) = l + [r/2].",
         "- *2l < n²−n*: (dimension) states the strict inequality; at (1,1) and (2,1) 2l = n² − n (0 and 2).",
         "- *(L5),(L6)*: the proof of Lemma LEMA2 says the solutions of (L5), (L6) form an r-dimensional space.  "
         "With (L6) as printed, [A₁, η₁] ∈ so(r,ℂ)^⊥ = Sym(r) forces the skew matrix [A₁, η₁] to vanish, and the "

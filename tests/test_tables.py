@@ -37,7 +37,7 @@ def test_known_values(small):
 
 
 def test_every_printed_dimension_formula_agrees_except_the_errata(small):
-    allowed = {"regular", "invariant_forms", "N_vs_l", "leaf_singular", "L5L6"}
+    allowed = {"regular", "invariant_forms", "N_vs_l", "N_dependent", "leaf_singular", "L5L6"}
     for (n, r), rows in small.rows.items():
         for row in rows:
             if row.key not in allowed:
@@ -58,7 +58,15 @@ def test_the_disagreements_are_the_closed_forms(small):
     assert checks["leaf_singular"]["sizes"] == [(1, 1), (2, 1)]
     assert checks["L5L6"]["sizes"] == [(3, 3), (4, 3), (4, 4)]
     assert checks["invariant_forms"]["sizes"] == [(4, 2), (4, 3), (4, 4)]
+    assert checks["N_dependent"]["sizes"] == [(1, 1), (2, 1), (2, 2), (3, 1), (3, 2), (4, 1), (4, 2)]
     assert all(c["matches_formula"] for c in checks.values())
+
+
+def test_the_dual_lax_integrals_are_independent_only_for_r_at_most_2():
+    for (n, r), dependent in (((4, 2), 0), ((5, 3), 1)):
+        rows = {x.key: x for x in tables.compute_size(n, r, include={"N_rank", "N_dependent", "torus"})}
+        assert rows["N_dependent"].cert.value == dependent
+        assert rows["N_rank"].cert.value == rows["torus"].cert.value     # = l + [r/2]
 
 
 def test_a_wrong_formula_is_flagged():
