@@ -293,3 +293,37 @@ def test_dual_lax_pair_extends_to_every_kappa():
         assert row["residual_A_kappa"] < 1e-12
         if row["kappa"] != 0.0:
             assert row["residual_A_normal"] > 1e-2
+
+
+def test_every_lax_matrix_of_the_report_names_claims_of_the_catalog(catalog):
+    """The spectra table looks the algebraic verdicts up by claim id: every id must exist, with a paper
+    label in common with the Lax matrix or its flow."""
+    from stiefelsym.flows_report import _params, catalog_claims, spectra_cases
+    ids = {c.id for c in catalog}
+    for quick in (False,):
+        for case in spectra_cases(quick):
+            fl = ig.make_flow(case["flow"], case["n"], case["r"], **_params(case["flow"], case["n"], case["params"]))
+            for lx in fl.lax:
+                row = {"flow_name": case["flow"], "params": case["params"], "lax": lx.name}
+                wanted = catalog_claims(row)
+                assert wanted, (fl.label, lx.name)
+                for cid in wanted:
+                    assert cid in ids, cid
+                    labels = set(catalog.get(cid).paper)
+                    assert labels & (set(lx.paper) | set(fl.paper) | {"LA2", "LA3"}), (cid, lx.paper)
+
+
+def test_algebraic_verdicts_are_read_from_results_json(tmp_path):
+    from stiefelsym.flows_report import algebraic_verdicts
+    doc = {"results": [
+        {"claim": "neumann-lax", "paper": ["Neumann_LA", "LA1", "LA2"], "kind": "lax", "method": "free", "verdict": "proved"},
+        {"claim": "neumann-lax", "paper": ["Neumann_LA", "LA1", "LA2"], "kind": "lax", "method": "exact", "verdict": "proved"},
+        {"claim": "manakov-dual-lax", "paper": ["MAN-LA2"], "kind": "lax", "method": "modular", "verdict": "fails"},
+        {"claim": "manakov-dual-lax", "paper": ["MAN-LA2"], "kind": "lax", "method": "modular", "verdict": "checked",
+         "variant": "(LA-MAN3): ..."}]}
+    path = tmp_path / "results.json"
+    path.write_text(json.dumps(doc))
+    v = {x["claim"]: x for x in algebraic_verdicts(path, claims=("neumann-lax", "manakov-dual-lax"))}
+    assert v["neumann-lax"]["free"] == "proved" and v["neumann-lax"]["printed"] == {"proved": 1}
+    assert v["manakov-dual-lax"]["printed"] == {"fails": 1} and v["manakov-dual-lax"]["corrections"] == {"checked": 1}
+    assert algebraic_verdicts(tmp_path / "missing.json", claims=("neumann-lax",)) == []
