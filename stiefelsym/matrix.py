@@ -497,6 +497,19 @@ class Mat:
         out._coords = self._coords
         return out
 
+    def _inner(self, o: "Mat"):
+        """The Frobenius pairing sum_ij a_ij b_ij = tr(AᵀB) (engine only: shapes are the caller's)."""
+        nat = self._native_pair(o)
+        if nat is not None and hasattr(nat[0], "inner"):
+            be, a, b = nat
+            return be.inner(a, b)
+        if nat is not None:
+            return (self.T @ o).trace()
+        acc = self.field.const(0)
+        for x, y in zip(self._view().flat, o._view().flat):
+            acc = acc + x * y
+        return self.field.normalize(acc)
+
     def is_zero(self) -> bool:
         if self._n is not None:
             return backend(self._field).is_zero(self._n)

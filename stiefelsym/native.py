@@ -287,6 +287,17 @@ class Float64Backend(Backend):
             e = np.full((m, m), bound)
             return F64(Z, e, absZ + e)
 
+    def inner(self, a, b):
+        """sum_ij a_ij b_ij with the dot-product bound."""
+        k = a.v.size
+        with np.errstate(all="ignore"):
+            av, bv = np.abs(a.v), np.abs(b.v)
+            v = float(np.sum(a.v * b.v))
+            e = float(np.sum(av * b.e + a.e * bv + a.e * b.e) + _gamma(k) * np.sum(av * bv) + k * FLOAT_UNDERFLOW)
+            e = e * (1.0 + _gamma(4 * k + 4))
+            m = float(np.sum(a.m * b.m))
+        return ErrNum(v, e, m, self.field.u)
+
     def is_zero(self, a):
         return bool(np.all(np.abs(a.v) <= a.e))
 
@@ -364,6 +375,9 @@ class DegreeBackend(Backend):
 
     def trace(self, a):
         return _times(a.d, a.shape[0])
+
+    def inner(self, a, b):
+        return _times(a.d * b.d, a.shape[0] * a.shape[1])
 
     def inv(self, a):
         """Cramer's rule for a matrix whose entries are all bounded by one marker N/D: every
@@ -455,6 +469,14 @@ class DualBackend(Backend):
 
     def trace(self, a):
         return Dual(self.base.trace(a[0]), self.base.trace(a[1]))
+
+    def inner(self, a, b):
+        B = self.base
+        if not hasattr(B, "inner"):
+            T = B.T
+            return Dual(B.trace(B.matmul(T(a[0]), b[0])),
+                        B.trace(B.matmul(T(a[0]), b[1])) + B.trace(B.matmul(T(a[1]), b[0])))
+        return Dual(B.inner(a[0], b[0]), B.inner(a[0], b[1]) + B.inner(a[1], b[0]))
 
     def inv(self, a):
         B = self.base

@@ -562,7 +562,7 @@ class Scene(PaperObjects):
 
     # gradients as pairs (d/dX, d/dP) of n x r matrices: <u, v> = tr(u_Xᵀ v_X) + tr(u_Pᵀ v_P)
     def _pair_dot(self, u: tuple[Mat, Mat], v: tuple[Mat, Mat]) -> Scalar:
-        return self.field.normalize((u[0].T @ v[0]).trace() + (u[1].T @ v[1]).trace())
+        return self.field.normalize(u[0]._inner(v[0]) + u[1]._inner(v[1]))
 
     @staticmethod
     def _pair_omega(u: tuple[Mat, Mat]) -> tuple[Mat, Mat]:
@@ -658,10 +658,15 @@ class Scene(PaperObjects):
         ż = Ω∇H − Σ_i w_i Ω∇F_i with w = C {F, H}_0."""
         def build():
             Gs = self._constraint_gradients()
-            C = self._dirac_inverse()
             zX, zP = self._pair_omega(self.gradient(H))
             FjH = [self._pair_dot(g, (zX, zP)) for g in Gs]
-            w = [self._dot(Ci, FjH) for Ci in C]
+            if "C" in self._cache:
+                w = [self._dot(Ci, FjH) for Ci in self._dirac_inverse()]
+            else:                                # one right-hand side: solve, do not invert
+                try:
+                    w = [row[0] for row in self.field.solve(self.constraint_bracket_matrix(), [[x] for x in FjH])]
+                except DegenerateError as exc:
+                    raise DegenerateError("the constraint bracket matrix {F_i, F_j}_0 is singular here") from exc
             Xd, Pd = zX, zP
             for wi, (gX, gP) in zip(w, Gs):      # Ω∇F_i = (gP, −gX)
                 Xd = Xd - gP * wi
