@@ -6,6 +6,8 @@ from stiefelsym.systems import (complex_coordinates, complex_diagonal, complex_p
                                 derivative, double_point, euler_lagrange, hamiltonian_flow, hermitian_entries,
                                 re_trace, real_complex_point, real_coordinates, realify_real, symmetric_entries)
 
+from .sec8_dual_lax_pair import A_dual_euclidean, L_dual
+
 SECTION = "A2"
 
 #: the coupled and complex systems: their second point (Y, Q) and the complex point are Cayley points
@@ -117,6 +119,33 @@ def double_neumann_dual_lax(s):
     "(LA3*D): (λI_n − A)⁻¹ in place of (I_n − λA)⁻¹ in the off-diagonal blocks")
 def double_neumann_dual_lax_corrected(s):
     return {"LA3*D": double_lax_residual(s, lambda t: t.resolvent(t.lam))}
+
+
+def double_lax_at_the_diagonal(s, flipped):
+    """(LA3*D) at X = Y ∈ V(n, r), Ẋ = Ẏ = P, against (LA3), (LA4) of Theorem DUAL for (NE_XP)."""
+    z = {"X": s.X, "Y": s.X, "Xdot": s.P, "Ydot": s.P}
+    return {"L(lambda) - L*_neum(lambda)": L_dual_double(s, z, flipped(s)) - L_dual(s),
+            "A(lambda) - A*_neum(lambda)": A_dual_double(s, z) - A_dual_euclidean(s)}
+
+
+@claim("double-neumann-dual-lax-extends-la3", paper=("dual-D", "LA3*D", "LA3", "LA4"), kind="id",
+       fails_at=lambda n, r: True,
+       erratum="""The text before Theorem dual-D says that (LA3*D) extends the Lax representation (LA3): at X = Y,
+       X' = Y' = P the printed L(lambda) of (LA3*D) is not L*_neum(lambda) of (LA3), because of the (I_n - lambda
+       A)^{-1} in its off-diagonal blocks; with (lambda I_n - A)^{-1} there (the correction of Theorem dual-D) it is,
+       and A(lambda) is the A*_neum(lambda) of (LA4) for (NE_XP).""",
+       statement=r"X=Y,\ \dot X=\dot Y=P:\quad \mathcal L(\lambda)=\mathcal L^*_{neum}(\lambda),\ "
+                 r"\mathcal A(\lambda)=\mathcal A^*_{neum}(\lambda)=\begin{pmatrix}0&\mathbf I_r\\"
+                 r"\Lambda-\lambda\mathbf I_r&0\end{pmatrix}")
+def double_neumann_dual_lax_extends_la3(s):
+    """The 2r×2r Lax pair (LA3*D) extends (LA3): at X = Y ∈ V(n, r), Ẋ = Ẏ = P, its matrices 𝓛(λ), 𝓐(λ) are 𝓛*_neum(λ) of (LA3) and 𝓐*_neum(λ) of (LA4) for the Euclidean Neumann system (NE_XP)."""
+    return double_lax_at_the_diagonal(s, resolvent_flipped)
+
+
+@double_neumann_dual_lax_extends_la3.claim.correction(
+    "(LA3*D): (λI_n − A)⁻¹ in place of (I_n − λA)⁻¹ in the off-diagonal blocks")
+def double_neumann_dual_lax_extends_la3_corrected(s):
+    return double_lax_at_the_diagonal(s, lambda t: t.resolvent(t.lam))
 
 
 @claim("double-neumann-momentum", paper=("dual-D", "D-Lag", "D0", "D-eq"), kind="pb",

@@ -19,12 +19,14 @@ SEED = 0
 #: proved for every n, r by the dimension-free method (along (C-eq) with YΠ, a matrix expression)
 FREE_PROVED = ("coupled-corrected-flow-invariants", "coupled-dual-lax-along-corrected-flow",
                "coupled-big-lax-along-corrected-flow")
+#: matrix expressions at a point of T*V, no flow: not proved for all n, r as printed, its correction is
+MATRIX_ONLY = ("double-neumann-dual-lax-extends-la3",)
 #: hold as printed
 HOLDS = ("double-neumann-flow", "double-neumann-momentum", "double-neumann-diagonal", "coupled-neumann-momentum",
          "coupled-dual-lax", "coupled-perturbed-dual-lax", "complex-neumann-flow", "complex-neumann-momenta",
          "complex-neumann-real-data") + FREE_PROVED
 #: fail as printed (documented errata with a registered correction)
-ERRATA = ("double-neumann-dual-lax", "coupled-neumann-flow", "coupled-big-lax-normal", "coupled-perturbed-big-lax",
+ERRATA = ("double-neumann-dual-lax", "double-neumann-dual-lax-extends-la3", "coupled-neumann-flow", "coupled-big-lax-normal", "coupled-perturbed-big-lax",
           "complex-neumann-dual-lax")
 #: statements of the paper that something does NOT hold
 NOT = ("coupled-big-lax-not-euclidean",)
@@ -69,6 +71,13 @@ def double_diagonal_sign(s):
     z = {"X": s.X, "Y": s.X, "Xdot": s.P, "Ydot": s.P}
     NE = a.flow_NE(s)["P"] + 2 * (s.X @ s.P.T @ s.P)
     return {"X''": a.double_accelerations(s, z)["X"] - NE}
+
+
+def double_lax_extends_the_normal_pair(s):
+    """Corrupted reduction: the corrected (LA3*D) at X = Y against the 𝓐*_neum of (LA4) for (N0_XP2)."""
+    from proofs.sec8_dual_lax_pair import A_dual_normal, L_dual
+    z = {"X": s.X, "Y": s.X, "Xdot": s.P, "Ydot": s.P}
+    return {"L": a.L_dual_double(s, z, s.resolvent(s.lam)) - L_dual(s), "A": a.A_dual_double(s, z) - A_dual_normal(s)}
 
 
 def double_lax_commutator_swapped(s):
@@ -186,6 +195,7 @@ CORRUPTIONS = [
     ("double-neumann-momentum", double_momentum_of_one_point),
     ("double-neumann-diagonal", double_diagonal_sign),
     ("double-neumann-dual-lax", double_lax_commutator_swapped),
+    ("double-neumann-dual-lax-extends-la3", double_lax_extends_the_normal_pair),
     ("coupled-neumann-flow", coupled_flow_kappa),
     ("coupled-neumann-momentum", coupled_antidiagonal_momentum),
     ("coupled-big-lax-normal", big_lax_corrected_in_printed_order),
@@ -220,8 +230,12 @@ def test_corrupted_claim_fails(catalog, cid, func):
         assert run_exact(c, n, r, SEED, func=func).verdict == "fails"
 
 
-@pytest.mark.parametrize("cid, func", CORRUPTIONS[:1] + CORRUPTIONS[5:6] + CORRUPTIONS[12:13] + CORRUPTIONS[-3:],
-                         ids=["double", "coupled", "complex", "invariants", "dual-lax", "big-lax"])
+#: one corrupted claim of each system, and those of the claims proved for all n, r
+FREE_CONTROLS = [(c, f) for c, f in CORRUPTIONS if c in ("coupled-neumann-flow", "complex-neumann-flow")
+                 + FREE_PROVED + MATRIX_ONLY] + CORRUPTIONS[:1]
+
+
+@pytest.mark.parametrize("cid, func", FREE_CONTROLS, ids=[f"{c}-{f.__name__}" for c, f in FREE_CONTROLS])
 def test_corrupted_claim_is_not_proved_for_all_sizes(catalog, cid, func):
     assert run_free(catalog.get(cid), func).verdict == "undecided"
 
@@ -247,8 +261,14 @@ def test_claim_is_proved_for_every_n_and_r(catalog, cid):
 def test_the_systems_need_coordinates(catalog, cid):
     res = run_free(catalog.get(cid))
     assert res.verdict == "undecided", res.line()
-    if cid not in NOT:      # (a `not` statement: rewriting proves vanishing only)
+    if cid not in NOT + MATRIX_ONLY:     # (a `not` statement: rewriting proves vanishing only)
         assert "needs coordinates" in res.message, res.message
+
+
+def test_the_double_lax_pair_extends_la3_once_corrected_for_every_n_and_r(catalog):
+    c = catalog.get("double-neumann-dual-lax-extends-la3")
+    (corr,) = c.corrections
+    assert run_free(c, corr.func).verdict == "proved"
 
 
 @pytest.mark.parametrize("cid", ERRATA)
