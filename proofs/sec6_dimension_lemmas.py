@@ -178,7 +178,7 @@ def pencil_leaves_singular_corrected(s):
 
 # -- Lemma LEMA2: (A1) ---------------------------------------------------------------------------------
 
-@claim("pencil-rank-A1", paper=("LEMA2", "LAMBDA", "L3", "L4"), kind="dim",
+@claim("pencil-rank-a1", paper=("LEMA2", "LAMBDA", "L3", "L4"), kind="dim",
        sizes=admissible(5), exact_max_n=3, equivariance=EQUIVARIANCE_XA,
        statement=r"\rank\Lambda_{1,-1}(h+v)=\rank\Lambda_{1,t}(h+v)=\rank\Lambda_2(h+v)=n^2-n,\quad "
                  r"\xi+\eta\in\ker\Lambda_{1,-1}\iff[\eta,A]=0,\ [\xi,A]-[\eta,h]=0")
@@ -244,7 +244,7 @@ def lambda_forms(s, x, A):
     return L1, L1m1
 
 
-@claim("pencil-kernel-KER-A2", paper=("KER", "A2", "L7", "L8"), kind="dim",
+@claim("pencil-kernel-ker-a2", paper=("KER", "A2", "L7", "L8"), kind="dim",
        sizes=admissible(5), exact_max_n=3, equivariance="the point is built from the claim's own parameters (no chart coordinate)",
        statement=r"\ker\Lambda_1(h+v)=so(r)_{h_1}\oplus Sym(r)\oplus gl(n-r),\quad "
                  r"\dim\{z\in\ker\Lambda_1\mid\Lambda_{1,-1}(z,\ker\Lambda_1)=0\}=n\quad (h=\mathrm{diag}(h_1,0))")
@@ -297,7 +297,7 @@ def l5_l6_matrix(s, printed):
     return s.mat([list(row) for row in zip(*columns)]), len(unknowns)
 
 
-@claim("pencil-L5-L6", paper=("L5", "L6"), kind="dim",
+@claim("pencil-l5-l6", paper=("L5", "L6"), kind="dim",
        sizes=admissible(5, r_max=3), equivariance="the system is built from the claim's own parameters (no chart coordinate)",
        fails_at=lambda n, r: r >= 3,
        erratum="""The proof of Lemma LEMA2 says that the solutions of (L5), (L6) within so(r)_{h1} ⊕ Sym(r)

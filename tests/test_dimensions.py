@@ -99,7 +99,7 @@ def _section6_dims(catalog):
     return [c for c in catalog if c.source.endswith("sec6_dimension_lemmas")]
 
 
-ERRATA = ("pencil-L5-L6", "pencil-leaves-singular")
+ERRATA = ("pencil-l5-l6", "pencil-leaves-singular")
 
 
 # Each corruption claims a rank below the true one: the sampled methods see a larger rank at a point,
@@ -154,9 +154,9 @@ def torus_one_larger(s):
 CORRUPTIONS = [
     ("pencil-leaf-dimension", leaf_dimension_minus_two, (3, 2)),
     ("pencil-leaves-singular", leaves_singular_with_more_casimirs, (3, 2)),
-    ("pencil-rank-A1", a1_kernel_too_big, (3, 2)),
-    ("pencil-kernel-KER-A2", ker_with_all_of_so_r, (3, 3)),
-    ("pencil-L5-L6", l5_l6_corrected_off_by_one, (3, 2)),
+    ("pencil-rank-a1", a1_kernel_too_big, (3, 2)),
+    ("pencil-kernel-ker-a2", ker_with_all_of_so_r, (3, 3)),
+    ("pencil-l5-l6", l5_l6_corrected_off_by_one, (3, 2)),
     ("casimirs-complete-on-leaf", casimirs_one_short, (3, 2)),
     ("neumann-torus-dimension", torus_one_larger, (3, 2)),
 ]
@@ -186,7 +186,7 @@ def test_dimension_lemmas_hold_at_small_sizes(catalog, n, r):
 
 
 def test_l6_as_printed_fails_from_r_3(catalog):
-    c = catalog.get("pencil-L5-L6")
+    c = catalog.get("pencil-l5-l6")
     assert c.erratum and c.expects_failure(3, 3) and not c.expects_failure(3, 2)
     assert run_one(c, Size(3, 3), "auto", SEED).verdict == "fails"
     assert run_points(c, 3, 3, "modular", SEED).verdict == "fails"
