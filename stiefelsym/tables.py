@@ -651,11 +651,11 @@ def compute_size(n: int, r: int, *, seed: int = 0, include: Iterable[str] | None
         return D * poisson_inverse(pt, T) * D.transpose()
     d_def = delta_definition(n, r)
     if want & {"delta", "delta_complete"}:
-        rank_M = _safe_generic(manakov, nv_all, n, "rank d(Ψ, PᵀP, man)", seed, 2 * dV)
+        rank_M = _safe_generic(manakov, nv_all, max(n, 2), "rank d(Ψ, PᵀP, man)", seed, 2 * dV)
         add("delta", delta_printed(n, r) if delta_printed(n, r) is not None else d_def,
             (2 * dV - rank_M).renamed("δ"))
     if "delta_complete" in want:
-        rank_MB = _safe_generic(manakov_bracket, nv_all, 2 * n + 1, "rank {man, man}", seed, 2 * dV)
+        rank_MB = _safe_generic(manakov_bracket, nv_all, 2 * max(n, 2) + 1, "rank {man, man}", seed, 2 * dV)
         add("delta_complete", delta_printed(n, r) if delta_printed(n, r) is not None else d_def,
             (rank_M - rank_MB).renamed("rank dF − rank{F,F}"))
 
@@ -759,7 +759,8 @@ def compute_size(n: int, r: int, *, seed: int = 0, include: Iterable[str] | None
         def dual(x):
             pt, T = full_T(x, True)
             return stack_rows(dual_lax_rows(pt, T), ncols=len(T))
-        N_rank = _safe_generic(dual, nv_all, 2 * r * n + 1, "rank d tr(a𝓛*)^k", seed, 2 * dV)
+        # entries of a(λ)𝓛*(λ) and of their derivatives have degree <= n + 1 in (P, A)
+        N_rank = _safe_generic(dual, nv_all, 2 * r * (n + 1), "rank d tr(a𝓛*)^k", seed, 2 * dV)
         add("N_rank", None, N_rank)
         if N_rank.value is not None:
             add("N_dependent", 1, exact("some dependent", int(N_rank.value < N_printed(n, r)),
