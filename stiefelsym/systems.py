@@ -23,6 +23,10 @@ a flow derived from O(n)-invariant data is O(n)-covariant, and these internal co
 recorded as a look at coordinates (like the scene's own gradients).  Only coordinate backends run
 these functions: the dimension-free scene raises ``NeedsCoordinates``.
 
+Engine internals used (an engine module may): ``Scene._unit_tangents`` (the unit matrices E_ij, not
+recorded) and ``TangentScene._lift`` (a matrix of the scene's field with a given derivative), so that
+points of the caller's own move along tangent vectors of the caller's own.
+
 Complex matrices U + iV are realified as [[U, −V], [V, U]] (``Scene.realify``): sums, products
 and the conjugate transpose (the transpose of the real form) are preserved; the plain transpose
 Zᵀ is ``ctranspose``, the conjugate Z̄ is ``Scene.conj``.
