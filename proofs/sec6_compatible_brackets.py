@@ -1,7 +1,7 @@
 """§6 Compatible Poisson brackets and integrability: the pencil Λ1, Λ2 on gl(n), the map Θ = Φ + XXᵀ, the Casimirs and the integrable families of the section."""
 from __future__ import annotations
 
-from stiefelsym import admissible, claim, comm
+from stiefelsym import Rank, admissible, claim, comm
 from stiefelsym.brackets import (SO_R, MatrixFunction, casimir_residual, compatibility, dirac, lambda1, lambda2,
                                  lie_poisson, linear, pencil, poisson_checks, poisson_map_residual, quadratic,
                                  skew, sym, trace_power)
@@ -585,3 +585,61 @@ def isotropy_momentum_is_conserved_covariantly(s):
 def det_of(s, M):
     """det M of an r x r matrix (first row expansion, through the adjugate: (M adj M)_11)."""
     return (M @ adjugate(s, M))[0, 0]
+
+
+# -- completeness: the numbers of independent functions ---------------------------------------
+
+def _differentials_on_TV(s, functions):
+    """The matrix of the differentials of ``functions`` (a function of the scene returning a list
+    of scalars) stacked on those of the constraints (cond_XP): its rank minus r(r + 1) is the
+    number of functions independent on T*V."""
+    return s.mat(s.jacobian(functions) + s.jacobian(s.constraints.build))
+
+
+def _values(t, name, m):
+    """m values of a spectral parameter: fresh scalars name_0, ..., name_{m-1}."""
+    return [t.scalar(f"{name}{j}") for j in range(m)]
+
+
+def _dim_V(n, r):
+    return r * n - r * (r + 1) // 2
+
+
+def _two_l(n, r):
+    """Lemma 2l."""
+    return n * (n - 1) // 2 - n // 2 if n <= 2 * r + 1 else 2 * r * (n - r - 1)
+
+
+def _bb_all(t):
+    """(BB): tr(Ψ + μ_jB)^k, k = 1..r, at r + 1 values μ_j (all the coefficients in μ)."""
+    return [bb(t, t.Psi, mu_j, k) for mu_j in _values(t, "mu", t.r + 1) for k in range(1, t.r + 1)]
+
+
+@claim("cif-completeness", paper=("CIF", "FF", "BB", "2l"), kind="dim", exact_max_n=3,
+       equivariance="the rank of the differentials of SO(n)-invariant functions on T*V is invariant under O(n); the Jacobian only lists them in the coordinates of R^{2nr}",
+       statement=r"\ddim(\mathfrak F+\mathfrak B)=\dim V_{n,r}-l,\quad \mathfrak F=\{\tr(\lambda\Phi+XX^T)^k\},\ "
+                 r"\mathfrak B=\{\tr(\Psi+\mu B)^k\}")
+def cif_set_is_complete(s):
+    """Theorem CIF (ii): the functions (FF) and (BB) (k ≤ n and k ≤ r, at n + 1 and r + 1 values of λ and μ: all their coefficients) have dim V − l independent differentials on T*V, 2l the dimension of Lemma 2l, so the commutative set 𝔉 + 𝔅 is complete in the algebra of SO(n)-invariant functions."""
+    n, r = s.n, s.r
+
+    def functions(t):
+        ff = [FF(t, lam_j, k) for lam_j in _values(t, "lam", n + 1) for k in range(1, n + 1)]
+        return ff + _bb_all(t)
+    return {"ddim(F + B)": Rank(_differentials_on_TV(s, functions), _dim_V(n, r) - _two_l(n, r) // 2 + r * (r + 1),
+                                generic=True, meaning="dim V - l + r(r+1): independent on T*V, plus the constraints")}
+
+
+@claim("com-completeness", paper=("COM", "perelomov", "BB"), kind="dim", exact_max_n=2,
+       equivariance="the rank of the differentials of the functions on T*V is invariant under (X, P, A) -> (gX, gP, gAg^T), which maps the set of functions to itself; the Jacobian only lists them in the coordinates of R^{2nr}",
+       statement=r"\ddim(\mathfrak F+\mathfrak B)=\dim V_{n,r},\quad \mathfrak F=\{\tr(\lambda(PX^T-XP^T)+XX^T-\lambda^2A)^k\},\ "
+                 r"\mathfrak B=\{\tr(\Psi+\mu B)^k\}")
+def com_set_is_complete(s):
+    """Corollary COM: the integrals (perelomov) and (BB) (k ≤ n and k ≤ r, at 2n + 1 and r + 1 values of λ and μ: all their coefficients) have dim V independent differentials on T*V, so with their commutativity they form a complete commutative set (Liouville integrability of H_neum,𝔹)."""
+    n, r = s.n, s.r
+
+    def functions(t):
+        per = [perelomov(t, lam_j, k) for lam_j in _values(t, "lam", 2 * n + 1) for k in range(1, n + 1)]
+        return per + _bb_all(t)
+    return {"ddim(F + B)": Rank(_differentials_on_TV(s, functions), _dim_V(n, r) + r * (r + 1), generic=True,
+                                meaning="dim V + r(r+1): independent on T*V, plus the constraints")}
