@@ -1199,12 +1199,12 @@ def render_latex(T: Tables, verdicts: dict[str, Any]) -> str:
            r"printed${}\ne{}$computed; a value in parentheses has no printed counterpart.", ""]
     for title, keys in GROUPS:
         cols = "l" + "r" * len(keys)
-        out += [r"\begin{longtable}{" + cols + "}",
+        out += [r"{\footnotesize\setlength{\tabcolsep}{3pt}", r"\begin{longtable}{" + cols + "}",
                 r"\caption{" + _tex_title(title) + r"}\\", r"\toprule",
                 "$(n,r)$ & " + " & ".join(HEADINGS[k][1] for k in keys) + r" \\", r"\midrule", r"\endhead"]
         for size in sizes:
             out.append(f"$({size[0]},{size[1]})$ & " + " & ".join(_cell(look[size].get(k), True) for k in keys) + r" \\")
-        out += [r"\bottomrule", r"\end{longtable}", ""]
+        out += [r"\bottomrule", r"\end{longtable}}", ""]
     checks = T.formula_check()
     out += [r"\paragraph{Disagreements.}", r"\begin{itemize}"]
     any_item = False
@@ -1224,7 +1224,7 @@ def render_latex(T: Tables, verdicts: dict[str, Any]) -> str:
                 r"u undecided, E error; ! unexpected; $\cdot$ not run.", ""]
         for name, vm in verdicts.items():
             methods, vsizes = vm["methods"], vm["sizes"]
-            out += [r"{\scriptsize", r"\begin{longtable}{l" + "c" * len(vsizes) + "}",
+            out += [r"{\scriptsize\setlength{\tabcolsep}{2pt}", r"\begin{longtable}{l" + "c" * len(vsizes) + "}",
                     r"\caption{" + _tex(name) + " (methods: " + _tex(", ".join(methods)) + r")}\\", r"\toprule",
                     "claim & " + " & ".join(_tex(s) for s in vsizes) + r" \\", r"\midrule", r"\endhead"]
             for claim in sorted(vm["claims"]):
