@@ -27,7 +27,7 @@ from typing import Any, Callable, Iterable
 
 import flint
 
-from .dimensions import Certificate, exact, generic_rank, rank_at_point, verified_kernel
+from .dimensions import Certificate, Side, exact, generic_rank, rank_at_point, verified_kernel
 
 Z = flint.fmpz_mat
 
@@ -595,6 +595,8 @@ def compute_size(n: int, r: int, *, seed: int = 0, include: Iterable[str] | None
         Phi = pt.Phi
         return [upper_entries(Phi * e - e * Phi, True) for e in skew_basis(n)] or [[0]]
     two_l = _safe_generic(ad_phi, nv_fibre, 1, "rank ad_Φ", seed, dim_so(n)) if want & {"2l", "regular"} else None
+    if two_l is not None and two_l.lower.bound == dim_so(n) - n // 2 and not two_l.upper.proved:
+        two_l = _odd_powers_bound(two_l, n, r, seed)
     if two_l is not None:
         add("2l", two_l_printed(n, r), two_l)
     regular_value = n * (n - 1) // 2 - n // 2
@@ -866,6 +868,26 @@ def l5_l6_matrix(r: int, printed: bool, seed: str) -> tuple[Z, int]:
         col += list(C6.entries()) if printed else [trace(C6 * c) for c in cartan]
         cols.append(col)
     return Z(rows_of(cols)), len(unknowns)
+
+
+def _odd_powers_bound(cert: Certificate, n: int, r: int, seed: int) -> Certificate:
+    """The proved upper side of rank ad_Φ <= dim so(n) − [n/2]: the odd powers Φ, Φ³, …, Φ^{2[n/2]−1}
+    are skew and commute with Φ identically (powers of one matrix commute), so they lie in ker ad_Φ
+    at every point; at the point below they are [n/2] independent vectors (rank modulo a prime, a
+    lower bound), hence dim ker ad_Φ >= [n/2] everywhere on a dense open set, and at the generic point."""
+    import random as _random
+    rng = _random.Random(f"{seed}|{n}|{r}|odd powers")
+    pt = make_point(n, r, [rng.randint(-2 ** 20, 2 ** 20) for _ in range(nvars(n, r, with_A=False))], with_A=False)
+    Phi, powers, power = pt.Phi, [], pt.Phi
+    for _ in range(n // 2):
+        powers.append(upper_entries(power, True))
+        power = power * Phi * Phi
+    k = rank_at_point(powers, "odd powers", seed=seed).lower.bound if powers else 0
+    if k != n // 2:
+        return cert
+    upper = Side(dim_so(n) - k, f"the {k} odd powers Φ^(2j+1) commute with Φ identically and are independent "
+                              f"at an integer point")
+    return Certificate(cert.quantity, cert.lower, upper, cert.notes)
 
 
 def _safe_generic(evaluate, nv: int, degree: int, quantity: str, seed: int, full: int) -> Certificate:
