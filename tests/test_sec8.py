@@ -3,12 +3,16 @@
 (P_q), (P_p) hold at small sizes, those built from matrix products are proved for every n, r by
 the dimension-free method, and a corrupted copy of each FAILS (negative controls; for the Lax pairs,
 the commutator in the other order)."""
+from itertools import combinations
+from math import factorial
+
 import pytest
 
 from stiefelsym import block, comm
 from stiefelsym.free_method import run_free
 from stiefelsym.methods import run_exact, run_points
 
+import proofs.sec7_grassmannians as sec7
 import proofs.sec8_dual_lax_pair as sec8
 from proofs.sec5_neumann import H_neumann_euclidean, H_neumann_normal, power_trace
 
@@ -17,8 +21,25 @@ SEED = 0
 #: proved for every n, r by rewriting modulo (cond_XP)
 FREE_PROVED = ("neumann-dual-lax-normal", "neumann-dual-lax-euclidean", "dual-lax-symplectic-structure",
                "dual-lax-spectral-invariants")
-#: need coordinates: r = 1 (1×1 products commute), the reflections S_i (the size n as a number)
-NEEDS_COORDINATES = ("poisson-sphere-flow", "dual-lax-reflections")
+#: need coordinates: r = 1 (1×1 products commute), the reflections S_i (the size n as a number), the
+#: spectral curve's coefficients (Newton's identities up to 2r, finite differences up to n), Plücker
+#: coordinates and determinants
+NEEDS_COORDINATES = ("poisson-sphere-flow", "dual-lax-reflections", "2r-integrals", "2r-integrals-conserved",
+                     "2r-integrals-explicit", "2r-integrals-general-line", "tangency", "Gen_Chasles",
+                     "Gen_Chasles2", "Mum_geod", "Chasles-Manakov", "poisson-sphere-chasles")
+#: the claims of the spectral curve and of the Chasles theorems: (exact sizes, modular sizes) as printed
+GEOMETRY_SIZES = {
+    "2r-integrals": ([(1, 1), (2, 1)], [(3, 2), (4, 2), (4, 3)]),
+    "2r-integrals-conserved": ([(1, 1)], [(3, 2), (4, 2)]),
+    "2r-integrals-explicit": ([(1, 1), (2, 1)], [(3, 2), (4, 2), (5, 3)]),
+    "2r-integrals-general-line": ([(2, 1)], [(3, 1), (4, 1)]),   # r = 1: where the printed line holds
+    "tangency": ([(3, 2), (3, 3)], [(4, 2), (5, 3)]),
+    "Gen_Chasles": ([(1, 1)], [(3, 2), (4, 2)]),
+    "Gen_Chasles2": ([(1, 1), (2, 1)], [(3, 2), (4, 3)]),
+    "Mum_geod": ([(2, 1)], [(3, 1), (4, 1)]),
+    "Chasles-Manakov": ([], [(3, 1), (4, 2), (5, 2)]),
+    "poisson-sphere-chasles": ([(2, 1), (3, 1)], [(4, 1)]),
+}
 #: sizes of the exact check (the spectral invariants: exact only for n <= 2, the claim's symbolic budget)
 EXACT_SIZES = {"dual-lax-spectral-invariants": [(2, 1), (2, 2)],
                "poisson-sphere-flow": [(2, 1), (3, 1)], "dual-lax-reflections": [(2, 1), (3, 2)]}
@@ -87,7 +108,114 @@ def reflection_of_X_only(s):
     return {"S_1: L*": sec8.L_dual_at(s, S @ s.X, s.P) - sec8.L_dual(s)}
 
 
+def L_without_identity(t, mu):
+    """𝓛*(μ) with the I_r of the lower left block dropped (𝓛*_man): the spectral curve of another matrix."""
+    R, X, P = t.resolvent(mu), t.X, t.P
+    return block([[-(X.T @ R @ P), -(X.T @ R @ X)], [P.T @ R @ P, P.T @ R @ X]])
+
+
+def degrees_without_identity(s):
+    """Corrupted (2r-integrals): the degree n − l for the matrix without I_r (degree n − 2l there)."""
+    values = []
+    for j in range(s.n + 1):
+        mu = s.lam + s.q(j)
+        values.append(sec8.a_poly(s, mu) * sec8.elementary(s, L_without_identity(s, mu), 2)[2])
+    return {"leading coefficient of I_2": sec8.finite_difference(s, values, s.n - 1) - s.q(factorial(s.n - 1) * s.r)}
+
+
+def integrals_not_invariant_under_gl_r(s):
+    """Corrupted (2r-integrals): 𝓘_2 is not invariant under X ↦ XG, P ↦ PG for G not skew."""
+    G = s.generic("G", "r", "r")
+    F = lambda t: sec8.spectral_integrals(t, t.lam)[0][1]
+    return {"d I_2": s.d(F, {"X": s.X @ G, "P": s.P @ G})}
+
+
+def I2_with_doubled_momentum_term(s):
+    """Corrupted (2r-integrals): 2Φ_ij² in the explicit 𝓘_2."""
+    integrals, _ = sec8.spectral_integrals(s, s.lam)
+    a, lam, Phi = s.a, s.lam, s.Phi
+    extra = s.q(0)
+    for i, j in combinations(range(s.n), 2):
+        extra = extra + sec8.a_poly(s, lam) / ((lam - a[i]) * (lam - a[j])) * Phi[i, j] * Phi[i, j]
+    return {"I_2 - printed": integrals[1] - sec8.I2_printed(s) - extra}
+
+
+def general_line_with_a_sign(s):
+    """Corrupted (2r-integrals), the general line at l = 1 for r = 1: the second sum subtracted."""
+    integrals, _ = sec8.spectral_integrals(s, s.lam)
+    first = sec8.I2l_general_line(s, 1)
+    E, Pc = sec7.columns(s.X, s.r), sec7.columns(s.P, s.r)
+    second = s.q(0)
+    for I in combinations(range(s.n), 2):
+        g = sec7.wedge(s, [E[0], Pc[0]], I)
+        second = second + sec8.weight(s, s.lam, I) * g * g
+    return {"I_2 - general line": integrals[1] - (first - 2 * second)}
+
+
+def cone_with_sums_of_b(s):
+    """Corrupted (cone0): |B|_I = b_{i_1} + ⋯ + b_{i_k} in place of the product."""
+    V = s.generic("V", "n", "r")
+    b = [s.scalar(f"b_{i + 1}") for i in range(s.n)]
+    B = s.mat([[b[i] if i == j else s.q(0) for j in range(s.n)] for i in range(s.n)], ("n", "n"))
+    cols = sec7.columns(V, s.r)
+    acc = s.q(0)
+    for I in combinations(range(s.n), s.r):
+        g = sec7.wedge(s, cols, I)
+        acc = acc + sum((b[i] for i in I), s.q(0)) * g * g
+    return {"det - cone": sec7.det(s, sec8.entries(V.T @ B @ V)) - acc}
+
+
+def cones_with_y_weight_2(s):
+    """Corrupted (conf0): the cones x²/(λ − a) + 2y² = 0 are not those of 𝓘_{2r}."""
+    VV = sec8.plane_VV(s, s.X, s.P)
+    cone = block([[s.resolvent(s.lam), s.zeros(s.n, s.r, ("n", "r"))],
+                  [s.zeros(s.r, s.n, ("r", "n")), 2 * s.Ir]])
+    return {"det L* - det": sec7.det(s, sec8.entries(sec8.L_dual(s))) - sec7.det(s, sec8.entries(VV.T @ cone @ VV))}
+
+
+def cylinder_rotated_by_B(s):
+    """Corrupted (VVB): diag(I_n, B) in place of diag(I_n, B⁻¹) (r >= 2)."""
+    X, P, B = s.X, s.P, sec8.rotation(s)
+    Binv = B.inv()
+    zr = s.zeros(s.r, s.r, ("r", "r"))
+    left = sec8.plane_VV(s, X @ B, P @ B) @ block([[Binv, zr], [zr, Binv]])
+    right = block([[s.In, s.zeros(s.n, s.r, ("n", "r"))], [s.zeros(s.r, s.n, ("r", "n")), B]]) @ sec8.plane_VV(s, X, P)
+    return {"(VVB)": left - right}
+
+
+def moser_quadrics_of_the_wrong_sign(s):
+    """Corrupted (Mum_geod): the line tangent to Q(λ) iff Σ F_i/(λ − a_i) = 0 with the quadrics Σx²/(λ − a_i) = 1."""
+    F = sec8.uhlenbeck_integrals(s)
+    uhl = s.q(0)
+    for i in range(s.n):
+        uhl = uhl + F[i] / (s.lam - s.a[i])
+    return {"tangency": sec8.line_tangency(s, -s.lam) + uhl}
+
+
+def manakov_with_the_neumann_matrix(s):
+    """Corrupted (Chasles-Manakov): a det 𝓛*_neum in place of a det 𝓛*_man."""
+    D = sec7.det(s, sec8.entries(sec8.L_dual(s)))
+    return {"a det L* - J_2r": sec8.a_poly(s, s.lam) * D - sec8.J2r_printed(s, s.lam)}
+
+
+def poisson_sphere_plane_sign(s):
+    """Corrupted: Aė = (A⁻¹e, e)p + (A⁻¹e, p)e."""
+    flow = s.dirac_flow(sec8.H_poisson_sphere)
+    e, p, Ai = s.X, s.P, s.Ainv
+    return {"A de/dt": s.A @ flow.Xdot - (e.T @ Ai @ e)[0, 0] * p - (e.T @ Ai @ p)[0, 0] * e}
+
+
 CORRUPTIONS = [
+    ("2r-integrals", degrees_without_identity),
+    ("2r-integrals-conserved", integrals_not_invariant_under_gl_r),
+    ("2r-integrals-explicit", I2_with_doubled_momentum_term),
+    ("2r-integrals-general-line", general_line_with_a_sign),
+    ("tangency", cone_with_sums_of_b),
+    ("Gen_Chasles", cones_with_y_weight_2),
+    ("Gen_Chasles2", cylinder_rotated_by_B),
+    ("Mum_geod", moser_quadrics_of_the_wrong_sign),
+    ("Chasles-Manakov", manakov_with_the_neumann_matrix),
+    ("poisson-sphere-chasles", poisson_sphere_plane_sign),
     ("poisson-sphere-flow", poisson_sphere_sign),
     ("dual-lax-reflections", reflection_of_X_only),
     ("neumann-dual-lax-normal", normal_commutator_swapped),
@@ -107,11 +235,20 @@ def test_the_free_and_coordinate_lists_cover_section8(catalog):
     assert set(FREE_PROVED) | set(NEEDS_COORDINATES) == {c.id for c in _section8(catalog)}
 
 
+#: (exact size or None, modular size) of the negative controls, where not (3, 2) for both
+CORRUPTION_SIZES = {"poisson-sphere-flow": ((3, 1), (3, 1)), "2r-integrals": ((2, 1), (3, 2)),
+                    "2r-integrals-conserved": ((2, 1), (3, 2)), "2r-integrals-explicit": ((2, 1), (4, 2)),
+                    "2r-integrals-general-line": ((2, 1), (3, 1)), "Gen_Chasles": ((2, 1), (4, 2)),
+                    "Gen_Chasles2": (None, (3, 2)), "Mum_geod": ((2, 1), (4, 1)),
+                    "Chasles-Manakov": ((2, 1), (4, 2)), "poisson-sphere-chasles": ((3, 1), (4, 1))}
+
+
 @pytest.mark.parametrize("cid, func", CORRUPTIONS, ids=[f"{c}-{f.__name__}" for c, f in CORRUPTIONS])
 def test_corrupted_claim_fails(catalog, cid, func):
     c = catalog.get(cid)
-    n, r = (3, 1) if cid == "poisson-sphere-flow" else (3, 2)
-    assert run_exact(c, n, r, SEED, func=func).verdict == "fails"
+    exact, (n, r) = CORRUPTION_SIZES.get(cid, ((3, 2), (3, 2)))
+    if exact is not None:
+        assert run_exact(c, *exact, SEED, func=func).verdict == "fails"
     res = run_points(c, n, r, "modular", SEED, func=func)
     assert res.verdict == "fails" and res.witness and res.witness["seed"] == SEED
 
@@ -126,6 +263,13 @@ def test_corrupted_claim_is_not_proved_for_all_sizes(catalog, cid, func):
 @pytest.mark.parametrize("cid", FREE_PROVED + NEEDS_COORDINATES)
 def test_section_8_holds_as_printed_at_small_sizes(catalog, cid):
     c = catalog.get(cid)
+    if cid in GEOMETRY_SIZES:
+        exact, modular = GEOMETRY_SIZES[cid]
+        for n, r in exact:
+            assert run_exact(c, n, r, SEED).verdict == "proved", (cid, n, r)
+        for n, r in modular:
+            assert run_points(c, n, r, "modular", SEED).verdict == "checked", (cid, n, r)
+        return
     for n, r in EXACT_SIZES.get(cid, DEFAULT_EXACT_SIZES):
         assert run_exact(c, n, r, SEED).verdict == "proved", (cid, n, r)
     for n, r in MODULAR_SIZES.get(cid, [(2, 1), (3, 2), (4, 2), (4, 3)]):
@@ -147,3 +291,32 @@ def test_the_two_dual_pairs_agree_when_r_is_1(catalog):
     """For r = 1, XᵀP = 0 on T*V: the two matrices 𝓐* of (LA4) coincide, as do the flows (N0_XP2) and (NE_XP)."""
     c = catalog.get("neumann-dual-lax-normal")
     assert run_exact(c, 3, 1, SEED, func=normal_flow_with_euclidean_A).verdict == "proved"
+
+
+# -- the general line of (2r-integrals): a printed failure --------------------------------------
+
+def test_the_general_line_fails_for_r_at_least_2_with_a_witness(catalog):
+    c = catalog.get("2r-integrals-general-line")
+    res = run_points(c, 3, 2, "modular", SEED)
+    assert res.verdict == "fails" and res.witness and res.witness["seed"] == SEED
+    assert c.expects_failure(3, 2) and not c.expects_failure(3, 1)
+
+
+def test_the_correction_of_the_general_line_holds(catalog):
+    c = catalog.get("2r-integrals-general-line")
+    fix = c.corrections[0].func
+    for n, r in [(3, 2), (4, 2), (4, 3), (5, 2)]:
+        assert run_points(c, n, r, "modular", SEED, func=fix).verdict == "checked", (n, r)
+    assert run_points(c, 3, 2, "rational", SEED, func=fix).verdict == "checked"
+
+
+def test_the_spectral_curve_of_a_r_1_neumann_system_is_moser_s():
+    """For r = 1, Σ_i F_i/(λ − a_i) is 𝓘_2(λ)/a(λ) (checked in Mum_geod) and Σ_i F_i = 1 on T*S^{n−1}."""
+    from stiefelsym.claims import Claim, admissible
+
+    def total(s):
+        F = sec8.uhlenbeck_integrals(s)
+        return {"sum F_i - 1": sum(F[1:], F[0]) - s.q(1)}
+    c = Claim(id="uhlenbeck-sum", paper=("Mum_geod",), kind="id", section="8", func=total,
+              sizes=admissible(4, r_max=1))
+    assert run_exact(c, 3, 1, SEED).verdict == "proved"
