@@ -539,12 +539,15 @@ class Deg:
     (N = N1 D/D1 + N2 D/D2), products add them; the L1 norm is subadditive and
     submultiplicative, so every bound is conservative."""
 
-    __slots__ = ("num", "den", "f", "h")
+    __slots__ = ("num", "den", "f", "h", "c")
 
-    def __init__(self, num: int, den: dict | None = None, field: "DegreeField" = None, h: float = 0.0):
+    def __init__(self, num: int, den: dict | None = None, field: "DegreeField" = None, h: float = 0.0,
+                 c: Fraction | None = None):
         # ``den`` is never changed in place once a marker holds it (operations build new dicts)
         self.num, self.den, self.f = num, (den if den is not None else {}), field
         self.h = -math.inf if num < 0 else (h if h > 0.0 else 0.0)
+        #: the value, when the marker stands for a rational constant
+        self.c = c
 
     @property
     def zero(self):
@@ -615,6 +618,12 @@ class Deg:
             raise DegenerateError("division by an identically zero expression")
         if self.zero:
             return self
+        if o.c is not None:
+            # (N/D) / (a/b) = N b / (D a): the integer a is the field's shared factor for |a|
+            key = self.f.integer_factor(abs(o.c.numerator))
+            den = dict(self.den)
+            den[key] = den.get(key, 0) + 1
+            return Deg(self.num, den, self.f, self.h + log2_up(o.c.denominator) if o.c.denominator > 1 else self.h)
         # (N/D) / (No/Do) = N Do / (D No): No becomes a factor of the denominator
         key = self.f.new_factor(o.num, o.h)
         den = dict(self.den)
@@ -657,11 +666,15 @@ class DegreeField(Field):
             self.constant_bits += log2_up(q.numerator) + (log2_up(q.denominator) if q.denominator > 1 else 0.0)
         den = None
         if q.denominator > 1:
-            key = self._const_factor.get(q.denominator)
-            if key is None:
-                key = self._const_factor[q.denominator] = self.new_factor(0, log2_up(q.denominator))
-            den = {key: 1}
-        return Deg(0, den, self, log2_up(q.numerator))
+            den = {self.integer_factor(q.denominator): 1}
+        return Deg(0, den, self, log2_up(q.numerator), q)
+
+    def integer_factor(self, b: int) -> int:
+        """The denominator factor standing for the positive integer b (one per integer)."""
+        key = self._const_factor.get(b)
+        if key is None:
+            key = self._const_factor[b] = self.new_factor(0, log2_up(b))
+        return key
 
     def param(self, name, rng=None):
         return Deg(1, None, self, 0.0)
