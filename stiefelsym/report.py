@@ -600,13 +600,57 @@ def _md_claim(c: ClaimResults) -> list[str]:
     return out
 
 
+#: at most this many rerun commands of failures listed per erratum
+MAX_ERRATUM_RERUNS = 8
+
+
+def _erratum_facts(c: ClaimResults) -> dict[str, Any]:
+    """What a referee's note on a printed failure needs: where it holds as printed, the rerun command
+    of every failure (one per size and method), and the corrections verified at every size."""
+    holds = sorted({(r.n, r.r) for r in c.printed if r.n is not None and r.verdict in PASSING}, key=_size_key)
+    fails = sorted({(r.n, r.r) for r in c.failures if r.n is not None}, key=_size_key)
+    reruns = list(dict.fromkeys(r.rerun for r in c.failures if r.rerun))
+    planned = planned_sizes(c)
+    verified = [var for var, rs in c.variants.items() if correction_summary(rs, planned)[0] == "verified"]
+    free = [r for r in c.printed if r.n is None]
+    return {"holds": [s for s in holds if s not in fails], "fails": fails, "reruns": reruns,
+            "verified": verified, "free": free[0].verdict if free else None}
+
+
+def _erratum_note(c: ClaimResults, facts: dict[str, Any], escape=lambda s: s, correction=lambda s: s) -> str:
+    """One paragraph a referee could send: the label, where it fails, the witness, the correction
+    (``escape`` renders the prose, ``correction`` a correction's description)."""
+    w = c.failures[0]
+    where = f"§{c.section}, " if c.section else ""
+    text = (f"In {where}{labels(c.paper)}, the statement as printed fails at "
+            f"(n, r) = {format_sizes(facts['fails'], 8)}")
+    if facts["holds"]:
+        text += f" (it holds as printed at {format_sizes(facts['holds'], 8)})"
+    text += f". A witness: size {w.size}, method {w.method}"
+    if w.seed is not None:
+        text += f", seed {w.seed}"
+    if w.residual:
+        text += f", residual {short(w.residual, 120)}"
+    text = escape(text + ".")
+    if facts["verified"]:
+        text += escape(" It holds at every size checked with the correction: ") \
+            + escape("; or ").join(correction(v) for v in facts["verified"]) + escape(".")
+    elif c.variants:
+        text += escape(" No candidate correction was verified at every size.")
+    return text
+
+
 def _md_erratum(c: ClaimResults) -> list[str]:
+    facts = _erratum_facts(c)
     out = [f"### `{c.id}` {_md_escape(labels(c.paper))}".rstrip(), ""]
+    out += [f"**Note for the authors.** {_md_escape(_erratum_note(c, facts))}", ""]
     st = _md_statement(c.statement)
     if st:
         out += ["As printed:", "", st, ""]
     out += ["Fails at: " + ", ".join(f"{_md_escape(r.size)} {r.method}" for r in c.failures)
             + ".", ""]
+    if facts["holds"]:
+        out += [f"Holds as printed at: {format_sizes(facts['holds'], 12)}.", ""]
     w = c.failures[0]
     if w.erratum:
         out += [f"What is wrong: {_md_escape(w.erratum)}", ""]
@@ -623,6 +667,16 @@ def _md_erratum(c: ClaimResults) -> list[str]:
     if w.rerun:
         out.append(f"- rerun: {_md_code(w.rerun)}")
     out.append("")
+    others = [x for x in facts["reruns"] if x != w.rerun]
+    if others:
+        out += ["Every other failure, reproducible with:", ""]
+        out += [f"- {_md_code(x)}" for x in others[:MAX_ERRATUM_RERUNS]]
+        if len(others) > MAX_ERRATUM_RERUNS:
+            out.append(f"- … and {len(others) - MAX_ERRATUM_RERUNS} more (in results.json)")
+        out.append("")
+    if facts["verified"]:
+        out += ["Corrections found (verified at every size of the claim): "
+                + "; ".join(f"{_md_escape(v)}" for v in facts["verified"]) + ".", ""]
     return out + _md_corrections(c)
 
 
@@ -847,11 +901,15 @@ def _tex_derivations(c: ClaimResults) -> list[str]:
 
 
 def _tex_erratum(c: ClaimResults) -> list[str]:
+    facts = _erratum_facts(c)
     out = [_tex_claim_heading(c)]
+    out += [r"\textbf{Note for the authors.} " + _erratum_note(c, facts, tex_escape, tex_text), ""]
     if c.statement.strip():
         out += ["As printed:", tex_display(c.statement)]
     w = c.failures[0]
     out += [tex_escape("Fails at: " + ", ".join(f"{r.size} {r.method}" for r in c.failures) + "."), ""]
+    if facts["holds"]:
+        out += [tex_escape(f"Holds as printed at: {format_sizes(facts['holds'], 12)}."), ""]
     if w.erratum:
         out += [tex_escape("What is wrong: " + w.erratum), ""]
     out += [tex_escape(_witness_heading(w))]
@@ -866,7 +924,17 @@ def _tex_erratum(c: ClaimResults) -> list[str]:
         items.append(tex_escape(w.message))
     if w.rerun:
         items.append("rerun: " + _tt(w.rerun))
-    return out + _tex_items(items) + _tex_corrections(c)
+    out += _tex_items(items)
+    others = [x for x in facts["reruns"] if x != w.rerun]
+    if others:
+        more = [f"… and {len(others) - MAX_ERRATUM_RERUNS} more (in results.json)"] \
+            if len(others) > MAX_ERRATUM_RERUNS else []
+        out += ["Every other failure, reproducible with:"] + _tex_items(
+            [_tt(x) for x in others[:MAX_ERRATUM_RERUNS]] + [tex_escape(m) for m in more])
+    if facts["verified"]:
+        out += [tex_escape("Corrections found (verified at every size of the claim): ")
+                + "; ".join(tex_text(v) for v in facts["verified"]) + ".", ""]
+    return out + _tex_corrections(c)
 
 
 def _tex_corrections(c: ClaimResults) -> list[str]:

@@ -545,3 +545,41 @@ def test_whole_catalog_no_method_survives_a_mutant():
     proved_by_free = [o.line() for o in rep.outcomes() if "free" in o.survived]
     assert not proved_by_free, "the dimension-free method proved a refuted mutant:\n" + "\n".join(proved_by_free)
     assert rep.ok(), "survivors:\n" + "\n".join(o.line() for o in rep.survivors())
+
+
+# --------------------------------------------------------------------------- the errata section
+
+def _erratum_results():
+    from stiefelsym.results import Result
+
+    def res(n, r, verdict, variant=None, **extra):
+        return Result(claim="general-line", paper=["2r-integrals"], section="8", kind="id",
+                      title="The general line.", statement=r"\mathcal I_2=\dots", n=n, r=r, method="modular",
+                      verdict=verdict, expected=True, seconds=0.1, seed=0, variant=variant,
+                      rerun=f"stiefelsym verify general-line --size {n},{r} --method modular --seed 0",
+                      **extra)
+    return [res(3, 1, "checked"),
+            res(3, 2, "fails", witness={"seed": 0, "entry": "(0, 0)", "value": "7"}, residual="(0, 0) = 7",
+                erratum="The mixed terms do not belong."),
+            res(4, 2, "fails", witness={"seed": 0, "entry": "(0, 0)", "value": "5"}),
+            res(3, 1, "checked", variant=r"$\Phi_{ij}^2$ in the second sum"),
+            res(3, 2, "checked", variant=r"$\Phi_{ij}^2$ in the second sum"),
+            res(4, 2, "checked", variant=r"$\Phi_{ij}^2$ in the second sum")]
+
+
+def test_errata_section_reads_like_a_referees_report():
+    from stiefelsym.report import render_latex, render_markdown
+    md = render_markdown(_erratum_results())
+    errata = md[md.index("## Errata"):]
+    note = next(line for line in errata.splitlines() if line.startswith("**Note for the authors.**"))
+    assert "§8, (2r-integrals)" in note and "fails at (n, r) = (3,2), (4,2)" in note
+    assert "holds as printed at (3,1)" in note and "seed 0" in note and "(0, 0) = 7" in note
+    assert "Phi_{ij}^2" in note and "correction" in note
+    assert "Holds as printed at: (3,1)." in errata
+    assert "What is wrong: The mixed terms do not belong." in errata
+    assert "- rerun: `stiefelsym verify general-line --size 3,2 --method modular --seed 0`" in errata
+    assert "Every other failure, reproducible with:" in errata
+    assert "- `stiefelsym verify general-line --size 4,2 --method modular --seed 0`" in errata
+    assert "Corrections found (verified at every size of the claim)" in errata
+    tex = render_latex(_erratum_results())
+    assert r"\textbf{Note for the authors.}" in tex and r"$\Phi_{ij}^2$" in tex
