@@ -39,6 +39,8 @@ class RewritingError(ValueError):
 
 def simplify_coef(c: Coef) -> Coef:
     """Expanded coefficient; rational coefficients are zero iff their expanded numerator is."""
+    if getattr(c, "is_Number", False):
+        return c
     e = se.expand(c)
     if e == 0 or e.is_Number:
         return e
