@@ -324,7 +324,7 @@ def I2r_printed(s, mu):
     return acc
 
 
-@claim("2r-integrals-explicit", paper=("2r-integrals", "forms"), kind="id",
+@claim("2r-integrals-explicit", paper=("2r-integrals", "LA3"), kind="id",
        sizes=admissible(n_max=5), exact_max_n=1,
        statement=r"\mathcal I_2=\sum_i\frac{a(\lambda)}{\lambda-a_i}\big((e^i_1)^2+\dots+(e^i_r)^2\big)"
                  r"+\sum_{i<j}\frac{a(\lambda)\,\Phi_{ij}^2}{(\lambda-a_i)(\lambda-a_j)},\quad "
@@ -489,7 +489,7 @@ def tangency_determinant(t):
     return det(t, entries(VV.T @ cone_matrix(t, t.lam) @ VV))
 
 
-@claim("Gen_Chasles", paper=("Gen_Chasles", "conf0", "VV", "cone0", "tangency", "2r-integrals"), kind="geo",
+@claim("gen-chasles", paper=("Gen_Chasles", "conf0", "VV", "cone0", "tangency", "2r-integrals"), kind="geo",
        sizes=admissible(n_max=5), exact_max_n=1,
        statement=r"a(\lambda)\det(\mathcal V^TB(\lambda)\mathcal V)=a(\lambda)\sum_{I}|B(\lambda)|^I_IG_I(\mathcal V)^2"
                  r"=\mathcal I_{2r}(\lambda)=a(\lambda)\det\mathcal L^*_{neum}(\lambda),\quad "
@@ -515,7 +515,7 @@ def rotation(s):
     return (s.Ir - s.eta) @ (s.Ir + s.eta).inv()
 
 
-@claim("Gen_Chasles2", paper=("Gen_Chasles2", "VVB", "conf", "conf0"), kind="geo",
+@claim("gen-chasles2", paper=("Gen_Chasles2", "VVB", "conf", "conf0"), kind="geo",
        sizes=admissible(n_max=5), exact_max_n=1,
        statement=r"\mathcal V(XB,PB)\begin{pmatrix}B^{-1}&0\\0&B^{-1}\end{pmatrix}=\begin{pmatrix}\mathbf I_n&0\\0&B^{-1}"
                  r"\end{pmatrix}\mathcal V(X,P),\ \det(\mathcal V(XB,PB)^TB(\lambda)\mathcal V(XB,PB))="
@@ -571,7 +571,7 @@ def line_tangency(s, mu):
     return ep * ep - ee * (pp - s.q(1))
 
 
-@claim("Mum_geod", paper=("Mum_geod",), kind="pb",
+@claim("mum-geod", paper=("Mum_geod",), kind="pb",
        sizes=admissible(n_max=5, n_min=2, r_max=1, condition="r = 1, n >= 2"), exact_max_n=2,
        statement=r"r=1:\ \{F_i,F_j\}=0,\ \ \mathrm{disc}_{l(t)}Q(\lambda)=-\sum_i\frac{F_i}{\lambda-a_i}"
                  r"=-\mathcal I_2(\lambda)/a(\lambda),\ \ \mathrm{disc}_{l(t)}Q(0)=\sum_iF_i/a_i")
@@ -612,7 +612,7 @@ def J2r_printed(s, mu):
     return acc
 
 
-@claim("Chasles-Manakov", paper=("Chasles-Manakov", "man-dual", "MAN-LA2"), kind="geo",
+@claim("chasles-manakov", paper=("Chasles-Manakov", "man-dual", "MAN-LA2"), kind="geo",
        sizes=admissible(n_max=5, where=lambda n, r: n >= 2 * r, condition="n >= 2r"), exact_max_n=1,
        statement=r"a(\lambda)\det\mathcal L^*_{man}(\lambda)=\mathcal J_{2r}(\lambda)=\sum_{I_{2r}}"
                  r"\frac{a(\lambda)|\Phi|^{I_{2r}}_{I_{2r}}}{\prod(\lambda-a_i)},\ \deg\mathcal J_{2r}=n-2r,\ "

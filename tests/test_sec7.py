@@ -13,13 +13,13 @@ from proofs.sec5_neumann import H_neumann_euclidean, H_neumann_normal
 SEED = 0
 
 FREE_PROVED = ("neumann-flows-coincide-on-psi-zero", "quartic-psi-zero-invariant")
-NEEDS_COORDINATES = ("neum-gras", "neum-gras**", "quartic")
+NEEDS_COORDINATES = ("neum-gras", "neum-gras-sphere", "quartic")
 #: (exact sizes, modular sizes) of each claim as printed
 SIZES = {
     "neumann-flows-coincide-on-psi-zero": ([(2, 1), (3, 2)], [(3, 2), (4, 2), (4, 4)]),
     "quartic-psi-zero-invariant": ([(2, 1), (3, 2)], [(3, 2), (4, 3)]),
     "neum-gras": ([(2, 1), (3, 2), (3, 3)], [(4, 2), (4, 3), (5, 3)]),
-    "neum-gras**": ([(2, 1)], [(3, 2), (4, 3)]),
+    "neum-gras-sphere": ([(2, 1)], [(3, 2), (4, 3)]),
     "quartic": ([(2, 1), (3, 1)], [(4, 1)]),
 }
 
@@ -114,8 +114,8 @@ CORRUPTIONS = [
     ("neumann-flows-coincide-on-psi-zero", flows_coincide_everywhere, ((3, 2), (3, 2))),
     ("neum-gras", neum_gras_without_the_factor_2, ((3, 2), (4, 3))),
     ("neum-gras", neum_gras_lambda_sign, ((3, 2), (4, 2))),
-    ("neum-gras**", sphere_with_plus_trace, ((2, 1), (4, 3))),
-    ("neum-gras**", sphere_at_a_point_off_psi_zero, (None, (4, 3))),
+    ("neum-gras-sphere", sphere_with_plus_trace, ((2, 1), (4, 3))),
+    ("neum-gras-sphere", sphere_at_a_point_off_psi_zero, (None, (4, 3))),
     ("quartic", quartic_coefficient, ((2, 1), (4, 1))),
     ("quartic-psi-zero-invariant", quartic_plus_a_non_invariant_term, ((3, 2), (4, 2))),
 ]

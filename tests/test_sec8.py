@@ -25,8 +25,8 @@ FREE_PROVED = ("neumann-dual-lax-normal", "neumann-dual-lax-euclidean", "dual-la
 #: spectral curve's coefficients (Newton's identities up to 2r, finite differences up to n), Plücker
 #: coordinates and determinants
 NEEDS_COORDINATES = ("poisson-sphere-flow", "dual-lax-reflections", "2r-integrals", "2r-integrals-conserved",
-                     "2r-integrals-explicit", "2r-integrals-general-line", "tangency", "Gen_Chasles",
-                     "Gen_Chasles2", "Mum_geod", "Chasles-Manakov", "poisson-sphere-chasles")
+                     "2r-integrals-explicit", "2r-integrals-general-line", "tangency", "gen-chasles",
+                     "gen-chasles2", "mum-geod", "chasles-manakov", "poisson-sphere-chasles")
 #: the claims of the spectral curve and of the Chasles theorems: (exact sizes, modular sizes) as printed
 GEOMETRY_SIZES = {
     "2r-integrals": ([(1, 1), (2, 1)], [(3, 2), (4, 2), (4, 3)]),
@@ -34,10 +34,10 @@ GEOMETRY_SIZES = {
     "2r-integrals-explicit": ([(1, 1), (2, 1)], [(3, 2), (4, 2), (5, 3)]),
     "2r-integrals-general-line": ([(2, 1)], [(3, 1), (4, 1)]),   # r = 1: where the printed line holds
     "tangency": ([(3, 2), (3, 3)], [(4, 2), (5, 3)]),
-    "Gen_Chasles": ([(1, 1)], [(3, 2), (4, 2)]),
-    "Gen_Chasles2": ([(1, 1), (2, 1)], [(3, 2), (4, 3)]),
-    "Mum_geod": ([(2, 1)], [(3, 1), (4, 1)]),
-    "Chasles-Manakov": ([], [(3, 1), (4, 2), (5, 2)]),
+    "gen-chasles": ([(1, 1)], [(3, 2), (4, 2)]),
+    "gen-chasles2": ([(1, 1), (2, 1)], [(3, 2), (4, 3)]),
+    "mum-geod": ([(2, 1)], [(3, 1), (4, 1)]),
+    "chasles-manakov": ([], [(3, 1), (4, 2), (5, 2)]),
     "poisson-sphere-chasles": ([(2, 1), (3, 1)], [(4, 1)]),
 }
 #: sizes of the exact check (the spectral invariants: exact only for n <= 2, the claim's symbolic budget)
@@ -211,10 +211,10 @@ CORRUPTIONS = [
     ("2r-integrals-explicit", I2_with_doubled_momentum_term),
     ("2r-integrals-general-line", general_line_with_a_sign),
     ("tangency", cone_with_sums_of_b),
-    ("Gen_Chasles", cones_with_y_weight_2),
-    ("Gen_Chasles2", cylinder_rotated_by_B),
-    ("Mum_geod", moser_quadrics_of_the_wrong_sign),
-    ("Chasles-Manakov", manakov_with_the_neumann_matrix),
+    ("gen-chasles", cones_with_y_weight_2),
+    ("gen-chasles2", cylinder_rotated_by_B),
+    ("mum-geod", moser_quadrics_of_the_wrong_sign),
+    ("chasles-manakov", manakov_with_the_neumann_matrix),
     ("poisson-sphere-chasles", poisson_sphere_plane_sign),
     ("poisson-sphere-flow", poisson_sphere_sign),
     ("dual-lax-reflections", reflection_of_X_only),
@@ -238,9 +238,9 @@ def test_the_free_and_coordinate_lists_cover_section8(catalog):
 #: (exact size or None, modular size) of the negative controls, where not (3, 2) for both
 CORRUPTION_SIZES = {"poisson-sphere-flow": ((3, 1), (3, 1)), "2r-integrals": ((2, 1), (3, 2)),
                     "2r-integrals-conserved": ((2, 1), (3, 2)), "2r-integrals-explicit": ((2, 1), (4, 2)),
-                    "2r-integrals-general-line": ((2, 1), (3, 1)), "Gen_Chasles": ((2, 1), (4, 2)),
-                    "Gen_Chasles2": (None, (3, 2)), "Mum_geod": ((2, 1), (4, 1)),
-                    "Chasles-Manakov": ((2, 1), (4, 2)), "poisson-sphere-chasles": ((3, 1), (4, 1))}
+                    "2r-integrals-general-line": ((2, 1), (3, 1)), "gen-chasles": ((2, 1), (4, 2)),
+                    "gen-chasles2": (None, (3, 2)), "mum-geod": ((2, 1), (4, 1)),
+                    "chasles-manakov": ((2, 1), (4, 2)), "poisson-sphere-chasles": ((3, 1), (4, 1))}
 
 
 @pytest.mark.parametrize("cid, func", CORRUPTIONS, ids=[f"{c}-{f.__name__}" for c, f in CORRUPTIONS])
@@ -317,6 +317,6 @@ def test_the_spectral_curve_of_a_r_1_neumann_system_is_moser_s():
     def total(s):
         F = sec8.uhlenbeck_integrals(s)
         return {"sum F_i - 1": sum(F[1:], F[0]) - s.q(1)}
-    c = Claim(id="uhlenbeck-sum", paper=("Mum_geod",), kind="id", section="8", func=total,
+    c = Claim(id="uhlenbeck-sum", paper=("mum-geod",), kind="id", section="8", func=total,
               sizes=admissible(4, r_max=1))
     assert run_exact(c, 3, 1, SEED).verdict == "proved"
