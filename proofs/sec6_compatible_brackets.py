@@ -143,23 +143,21 @@ def pencil_is_poisson_and_compatible(s):
 
 
 @claim("pencil-casimirs", paper=("central", "LAMBDA12"), kind="pb", exact_max_n=3,
-       equivariance="no point of T*V enters: the pencil is evaluated at a generic x in gl(n)",
        statement=r"\Lambda_{\lambda_1,\lambda_2}\big(\nabla\tr(\sqrt{\tfrac{\lambda_2}{\lambda_1+\lambda_2}}h+v-"
                  r"\tfrac{\lambda_2}{\lambda_1+\lambda_2}A)^k,\cdot\big)=0,\ \Lambda_{\lambda_1,\lambda_2}\cong gl(n);\quad "
                  r"\{\tr(\lambda h+v-\lambda^2A)^k,\tr(\mu h+v-\mu^2A)^m\}_{\Lambda_{\lambda_1,\lambda_2}}=0,\ k,m\le3")
 def pencil_casimirs_commute(s):
     """The functions tr(√(λ₂/(λ₁+λ₂))h + v − λ₂/(λ₁+λ₂)A)^k are Casimirs of Λ_{λ1,λ2} = λ₁Λ₁ + λ₂Λ₂ (written with λ₁ = σ(1 − c²), λ₂ = σc², which covers every λ₂/(λ₁+λ₂) > 0), because x ↦ ch + v − c²A maps Λ_{λ1,λ2} to σc times the Lie–Poisson bracket of gl(n), and the functions (central) tr(λh + v − λ²A)^k commute for every bracket of the pencil (k, m = 1, 2, 3, at a generic point of gl(n))."""
-    n = s.n
     c = lambda t: t.scalar("c")                                      # noqa: E731
     sigma = lambda t: t.scalar("sigma")                              # noqa: E731
     T_c = pencil(lambda t: sigma(t) * (t.q(1) - c(t) * c(t)), lambda t: sigma(t) * c(t) * c(t))
     T = pencil(lambda t: t.scalar("lambda_1"), lambda t: t.scalar("lambda_2"))
     x, b = gl_generic(s, "x"), gl_generic(s, "b")
     checks = {}
-    for k in powers(n):
+    for k in POWERS:
         checks[f"Lambda(grad f_{k}, b): f_{k} a Casimir"] = casimir_residual(s, T_c, central(k, c), x, b)
-    for k in powers(n):
-        for m in powers(n):
+    for k in POWERS:
+        for m in POWERS:
             if m >= k:
                 checks[f"{{tr L(lambda)^{k}, tr L(mu)^{m}}} in the pencil"] = T.bracket(
                     s, central(k, lambda t: t.lam), central(m, mu), x)
@@ -276,18 +274,18 @@ def neumann_normal_hamiltonian_is_pulled_back(s):
     }
 
 
-@claim("cpb-flow", paper=("CPB", "central", "LAMBDA12"), kind="pb", exact_max_n=4,
-       equivariance="no point of T*V enters: the flow is evaluated at a generic x in gl(n)",
+@claim("cpb-flow", paper=("CPB", "central", "LAMBDA12"), kind="pb", exact_max_n=5,
        statement=r"\dot x=\Lambda_1(\cdot,\nabla H)^\sharp\iff\dot h=[v,A],\ \dot v=[h,v];\quad "
                  r"\{\tr(\lambda h+v-\lambda^2A)^k,H\}_{\Lambda_1}=0,\ k\le3")
 def cpb_is_the_hamiltonian_flow_of_H(s):
     """The Hamiltonian flow of H = ½<h, h> − <A, v> for Λ₁ on gl(n) is (CPB) ḣ = [v, A], v̇ = [h, v], and the functions (central) are its integrals (k = 1, 2, 3, at a generic point of gl(n))."""
-    x = gl_generic(s, "x")
+    x, c = gl_generic(s, "x"), gl_generic(s, "c")
     h, v = skew(x), sym(x)
     T = lambda1()
-    xdot = T.sharp(s, x, H_CPB.grad(s, x))
-    checks = {"x' - ([v, A] + [h, v])": xdot - (comm(v, s.A) + comm(h, v))}
-    for k in powers(s.n):
+    # <x', c> = Λ1(c, ∇H)|_x for a generic covector c: the flow, without a basis of gl(n)
+    checks = {"Lambda1(c, grad H) - <[v, A] + [h, v], c>": T(s, x, c, H_CPB.grad(s, x))
+              - s.killing(comm(v, s.A) + comm(h, v), c)}
+    for k in POWERS:
         checks[f"{{tr L(lambda)^{k}, H}}_Lambda1"] = T.bracket(s, central(k, lambda t: t.lam), H_CPB, x)
     return checks
 
