@@ -140,14 +140,14 @@ def evaluate(claim: Any, n: int, r: int, dps: int | None = None, seed: int = 0, 
             if len(ex) == len(entries):
                 errs = [abs(_exact_fraction(x.v) - q) for x, q in zip(entries, ex)]
                 out["exceed_exact"] = sum(1 for x, err in zip(entries, errs) if err > _exact_fraction(x.e))
-                out["max_exact_residual"] = float(max(abs(q) for q in ex))
-                out["max_actual_error"] = float(max(errs))
+                out["max_exact_residual"] = _number(max(abs(q) for q in ex))
+                out["max_actual_error"] = _number(max(errs))
             else:
                 out["exact_error"] = "the exact evaluation has another number of entries"
     finite = all(_finite(x) for x in entries)
-    vals = [float(abs(x.v)) if _finite(x) else math.inf for x in entries]
-    bounds = [float(x.e) if _finite(x) else math.inf for x in entries]
-    scales = [float(x.m) if _finite(x) else math.inf for x in entries]
+    vals = [_clip(abs(x.v)) if _finite(x) else math.inf for x in entries]
+    bounds = [_clip(x.e) if _finite(x) else math.inf for x in entries]
+    scales = [_clip(x.m) if _finite(x) else math.inf for x in entries]
     exceed = sum(1 for x in entries if _finite(x) and abs(x.v) > x.e)
     resolved = finite and all(x.e <= 1e-8 * x.m for x in entries)
     out.update(status="ok" if finite else "overflow", seconds=seconds, entries=len(entries),
@@ -155,6 +155,23 @@ def evaluate(claim: Any, n: int, r: int, dps: int | None = None, seed: int = 0, 
                exceed=exceed, resolved=resolved,
                worst_ratio=max((v / b) if b > 0 else (0.0 if v == 0 else math.inf) for v, b in zip(vals, bounds)))
     return out
+
+
+def _clip(x: Any) -> float:
+    """float(x), inf beyond float64's range (an mpf does not overflow)."""
+    try:
+        return float(x)
+    except OverflowError:
+        return math.inf
+
+
+def _number(q: Any) -> float | str:
+    """A float, or (beyond float64's range) its value in words, e.g. "9.4e+320"."""
+    try:
+        return float(q)
+    except OverflowError:
+        import mpmath
+        return mpmath.nstr(mpmath.mpf(q.numerator) / q.denominator, 3) if isinstance(q, Fraction) else str(q)
 
 
 def _finite(x: Any) -> bool:
@@ -266,13 +283,18 @@ def _judge(truth: str, verdict: str, check: dict[str, Any] | None) -> str:
     if verdict == "undecided" and check is not None:
         # resolved at the hard point: no verdict on the statement; the point's exact residual is
         # within the certified 2e, below what this precision resolves
-        return "ok (residual below resolution)" if check.get("max_exact_residual", 0) > 0 else "ok"
+        ex = check.get("max_exact_residual", 0)
+        return "ok (residual below resolution)" if isinstance(ex, str) or ex > 0 else "ok"
     return "ok"
 
 
 def _dps(label: str) -> int | None:
     m = re.fullmatch(r"mpmath(\d+)", label or "")
     return int(m.group(1)) if m else None
+
+
+def _magnitude(x: Any) -> float:
+    return math.inf if isinstance(x, str) else float(x or 0)
 
 
 def _exact_check(claim: Any, n: int, r: int, seed: int, hard: str, label: str) -> dict[str, Any] | None:
@@ -284,7 +306,7 @@ def _exact_check(claim: Any, n: int, r: int, seed: int, hard: str, label: str) -
         if "exceed_exact" not in rec:
             continue
         if worst is None or rec["exceed_exact"] > worst["exceed_exact"] or \
-                rec.get("max_exact_residual", 0) > worst.get("max_exact_residual", 0):
+                _magnitude(rec.get("max_exact_residual", 0)) > _magnitude(worst.get("max_exact_residual", 0)):
             worst = rec
     return worst
 
@@ -319,7 +341,10 @@ def hard_table(cases: Sequence[str] | None = None, claims: Sequence[Any] | None 
                     check = None
                     if m == "float" and res.verdict in ("undecided", "numeric") and label != "-" \
                             and (truth == "false" or res.n <= exact_check_n):
-                        check = _exact_check(c, res.n, res.r, seed, case, label)
+                        try:
+                            check = _exact_check(c, res.n, res.r, seed, case, label)
+                        except Exception as exc:  # noqa: BLE001 - reported in the row, never a crash
+                            check = {"exact_error": f"{type(exc).__name__}: {exc}"}
                     rows.append({"case": case, "claim": c.id, "truth": truth, "n": res.n, "r": res.r,
                                  "method": m, "verdict": res.verdict, "precision": label,
                                  "escalated": "mpmath" in label,
