@@ -243,6 +243,7 @@ def main(argv=None) -> int:
     ap.add_argument("--repeat", type=int, default=3, help="engine runs per timing (the best is kept)")
     ap.add_argument("--report-dir", default=str(ROOT / "reports"), help="where bench.json and bench.md go")
     ap.add_argument("--per-run", type=float, default=20.0, help="time budget of one run at the large sizes (s)")
+    ap.add_argument("--verify-timeout", type=float, default=1800.0, help="time budget of the make verify run (s)")
     args = ap.parse_args(argv)
     started = datetime.now(timezone.utc)
     bench = Bench()
@@ -262,7 +263,7 @@ def main(argv=None) -> int:
         holder: dict[str, Any] = {}
 
         def mv() -> tuple[float, str]:
-            wall, peak, note = make_verify()
+            wall, peak, note = make_verify(args.verify_timeout)
             holder.update(peak=peak, note=note)
             return wall, note
         bench.target("make verify, n <= 6, 2 jobs (wall)", 60.0, "s", "lower", mv)
