@@ -249,14 +249,24 @@ def lambda_forms(s, x, A):
        statement=r"\ker\Lambda_1(h+v)=so(r)_{h_1}\oplus Sym(r)\oplus gl(n-r),\quad "
                  r"\dim\{z\in\ker\Lambda_1\mid\Lambda_{1,-1}(z,\ker\Lambda_1)=0\}=n\quad (h=\mathrm{diag}(h_1,0))")
 def pencil_kernel_and_A2(s):
-    """At h = diag(h1, 0) with h1 generic and A diagonal, ker Λ1(h + v) is so(r)_{h1} ⊕ Sym(r) ⊕ gl(n−r) (KER) — the printed space lies in the kernel and has its dimension — and the kernel of Λ_{1,−1} restricted to it has dimension n (A2)."""
+    """At h = diag(h1, 0) with h1 generic and A diagonal, ker Λ1(h + v) is so(r)_{h1} ⊕ Sym(r) ⊕ gl(n−r) (KER) — the printed space lies in the kernel and has its dimension — and the kernel of Λ_{1,−1} restricted to it has dimension n (A2), on which (L7) ξ2 = 0 and (L8) [A2, η2] = 0 hold."""
     n, r = s.n, s.r
     X0, h, v, h1, A = paper_point(s)
     x = h + v
     L1, L1m1 = lambda_forms(s, x, A)
     K = printed_kernel(s, X0, h1)
     test = s.xi + (s.generic("T", "n", "n") + s.generic("T", "n", "n").T)   # a generic element of gl(n)
-    restricted = s.mat([[L1m1(a, b) for b in K] for a in K])
+    restricted_rows = [[L1m1(a, b) for b in K] for a in K]
+    restricted = s.mat(restricted_rows)
+    # (L7), (L8): on the kernel of the restricted form, the lower blocks have ξ2 = 0 and [A2, η2] = 0
+    Q = s.In - X0 @ X0.T
+    half = s.q(1, 2)
+    l7_l8 = []
+    for k in K:
+        low = Q @ k @ Q
+        xi2, eta2 = (low - low.T) * half, (low + low.T) * half
+        l7_l8.append(entries(s, xi2) + entries(s, comm(A, eta2)))
+    with_l7_l8 = s.mat(restricted_rows + [list(row) for row in zip(*l7_l8)])
     return {
         "rank Lambda1": Rank(lambda1(s, x), n * n - ker_printed(n, r), generic=True,
                              meaning="n² − dim (KER)"),
@@ -265,6 +275,8 @@ def pencil_kernel_and_A2(s):
                                                meaning="dim so(r)_{h1} ⊕ Sym(r) ⊕ gl(n−r)"),
         "(A2)": Rank(restricted, ker_printed(n, r) - n, generic=True,
                      meaning="dim (KER) − n: the restriction of Λ_{1,−1} to ker Λ1 has an n-dimensional kernel"),
+        "(L7), (L8) on that kernel": Rank(with_l7_l8, ker_printed(n, r) - n, generic=True,
+                                          meaning="adding ξ2 = 0 and [A2, η2] = 0 leaves the kernel unchanged"),
     }
 
 
