@@ -293,9 +293,13 @@ def generic_rank(evaluate: Callable[[list[int]], flint.fmpz_mat | Rows], nvars: 
             prob *= min(1.0, per_point)
         if prob <= target and points >= 2:
             break
+    if prob > target:   # the points never agreed often enough: only the trivial upper bound is certain
+        return Certificate(quantity, Side(best, best_how),
+                           Side(min(m, c), "min(rows, cols)"), (f"{points} points did not bound the rank from above "
+                                                                f"below probability {target:g}",))
     how = (f"Schwartz–Zippel at {points} random integer points of [-2^{bits}, 2^{bits}]^{nvars} "
            f"(minors of degree <= {min(m, c)}·{degree}) and random primes in [2^62, 2^63)")
-    return Certificate(quantity, Side(best, best_how), Side(best, how, prob if prob <= 1 else 1.0))
+    return Certificate(quantity, Side(best, best_how), Side(best, how, prob))
 
 
 # -- symbolic kernels: proved upper bounds on a generic rank ------------------------------------------

@@ -66,6 +66,11 @@ def test_generic_rank_of_a_rank_one_polynomial_matrix_is_checked_with_a_bound():
     assert c.lower.proved and 0 < c.upper.false_probability <= 1e-30
 
 
+def test_generic_rank_without_enough_points_gives_only_the_trivial_upper_bound():
+    c = generic_rank(lambda x: [[x[0], x[1]], [2 * x[0], 2 * x[1]], [0, 0]], 2, 1, "rank", seed=SEED, max_points=1)
+    assert c.value is None and c.kind == "bounds" and (c.lower.bound, c.upper.bound) == (1, 2)
+
+
 def test_generic_rank_is_proved_when_full():
     c = generic_rank(lambda x: [[x[0], 1], [1, x[1]]], 2, 1, "rank", seed=SEED)
     assert c.value == 2 and c.proved
