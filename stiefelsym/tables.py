@@ -670,6 +670,8 @@ def compute_size(n: int, r: int, *, seed: int = 0, include: Iterable[str] | None
 
     leaf = _safe_generic(lambda x: lambda1(theta_point(x, with_A=False)[1], basis, nskew), nv_fibre, 1,
                          "rank Λ1(Θ)", seed, n * n) if want & {"leaf", "leaf_singular", "N_vs_l"} else None
+    if leaf is not None and not leaf.upper.proved:
+        leaf = _leaf_kernel_bound(leaf, n, r, seed)
     if leaf is not None:
         add("leaf", leaf_printed(n, r), leaf)
     if leaf is not None and leaf.value is not None:
@@ -868,6 +870,120 @@ def l5_l6_matrix(r: int, printed: bool, seed: str) -> tuple[Z, int]:
         col += list(C6.entries()) if printed else [trace(C6 * c) for c in cartan]
         cols.append(col)
     return Z(rows_of(cols)), len(unknowns)
+
+
+def _leaf_kernel_bound(cert: Certificate, n: int, r: int, seed: int) -> Certificate:
+    """The proved upper side of rank Λ1(Θ(X0, P)): the solutions of (L1), (L2) written as polynomials
+    in P — ξ1 = h1^{2j+1} with η3 = ξ1h2; ξ2 ∈ so(n−r) with η3 = −h2ξ2; η1 ∈ Sym(r); η2 ∈ Sym(n−r)
+    (h = [[h1, h2], [−h2ᵀ, 0]]) — are checked to lie in ker Λ1 identically, by multiplying out
+    over ℤ[P] (fmpz_mpoly), and their rank at an integer point is a lower bound on their generic rank."""
+    import random as _random
+    nv = nvars(n, r, with_A=False)
+    if nv == 0:
+        return cert
+    ctx = flint.fmpz_mpoly_ctx.get(("p", nv), "lex")
+    gens = list(ctx.gens())
+    zero = ctx.constant(0)
+    pt = make_point(n, r, [0] * nv, with_A=False)
+    # the symbolic point: P1 skew, P2 from the generators, in the order of make_point
+    it = iter(gens)
+    P = [[zero] * r for _ in range(n)]
+    for i in range(r):
+        for j in range(i + 1, r):
+            g = next(it)
+            P[i][j], P[j][i] = g, -g
+    for i in range(r, n):
+        for j in range(r):
+            P[i][j] = next(it)
+    # x = Φ + X0X0ᵀ, Φ = PX0ᵀ − X0Pᵀ
+    x = [[zero] * n for _ in range(n)]
+    for a in range(n):
+        for b in range(n):
+            v = (P[a][b] if b < r else zero) - (P[b][a] if a < r else zero)
+            x[a][b] = v + (1 if a == b and a < r else 0)
+    basis, nskew = gl_basis(n)
+    units = [[(i, j, int(u[i, j])) for i in range(n) for j in range(n) if u[i, j] != 0] for u in basis]
+    kinds = []
+    for i in range(n):
+        for j in range(i + 1, n):
+            kinds.append(("so", i, j))
+    for i in range(n):
+        for j in range(i, n):
+            kinds.append(("sym", i, j))
+
+    def commutator_with(u):
+        C = {}
+        for (c, b, val) in u:            # (x u)_{ab} = x_{ac} u_{cb}
+            for a in range(n):
+                C[(a, b)] = C.get((a, b), zero) + x[a][c] * val
+        for (a, c, val) in u:            # (u x)_{ab} = u_{ac} x_{cb}
+            for b in range(n):
+                C[(a, b)] = C.get((a, b), zero) - x[c][b] * val
+        return C
+
+    def pair(C, kind):
+        what, i, j = kind
+        get = lambda a, b: C.get((a, b), zero)
+        if what == "so":
+            return get(j, i) - get(i, j)
+        return get(j, i) + get(i, j) if i != j else get(i, i)
+
+    L = []
+    for a, u in enumerate(units):
+        C = commutator_with(u)
+        L.append([zero if a >= nskew and b >= nskew else pair(C, kinds[b]) for b in range(len(basis))])
+    # the kernel vectors as (ξ, η) n x n matrices of polynomials
+    h1 = [[x[i][j] - (1 if i == j else 0) for j in range(r)] for i in range(r)]     # h = x − v
+    h2 = [[x[i][r + j] for j in range(n - r)] for i in range(r)]
+
+    def mul(A, B):
+        return [[sum((A[i][k] * B[k][j] for k in range(len(B))), zero) for j in range(len(B[0]))] for i in range(len(A))]
+
+    def element(xi1=None, xi2=None, eta1=None, eta2=None, eta3=None):
+        xi = [[zero] * n for _ in range(n)]
+        eta = [[zero] * n for _ in range(n)]
+        for blk, off in ((xi1, 0), (xi2, r)):
+            if blk is not None:
+                for i in range(len(blk)):
+                    for j in range(len(blk)):
+                        xi[off + i][off + j] = blk[i][j]
+        for blk, off in ((eta1, 0), (eta2, r)):
+            if blk is not None:
+                for i in range(len(blk)):
+                    for j in range(len(blk)):
+                        eta[off + i][off + j] = blk[i][j]
+        if eta3 is not None:
+            for i in range(r):
+                for j in range(n - r):
+                    eta[i][r + j] = eta3[i][j]
+                    eta[r + j][i] = eta3[i][j]
+        coords = [xi[i][j] for (w, i, j) in kinds if w == "so"] + [eta[i][j] for (w, i, j) in kinds if w == "sym"]
+        return coords
+
+    def const(M):
+        return [[ctx.constant(int(M[i, j])) for j in range(M.ncols())] for i in range(M.nrows())]
+    K = []
+    power = h1
+    for _ in range(r // 2):
+        K.append(element(xi1=power, eta3=mul(power, h2) if n > r else None))
+        power = mul(mul(power, h1), h1)
+    for B in skew_basis(n - r):
+        Bm = const(B)
+        K.append(element(xi2=Bm, eta3=[[-e for e in row] for row in mul(h2, Bm)]))
+    K += [element(eta1=const(S)) for S in sym_basis(r)]
+    K += [element(eta2=const(S)) for S in sym_basis(n - r)]
+    for k in K:
+        for row in L:
+            if not sum((a * b for a, b in zip(row, k)), zero).is_zero():
+                return cert   # not a kernel vector: keep the randomized bound
+    # their rank at an integer point
+    rng = _random.Random(f"{seed}|{n}|{r}|leaf kernel")
+    point = [rng.randint(-2 ** 20, 2 ** 20) for _ in range(nv)]
+    values = [[int(e(*point)) if not isinstance(e, int) else e for e in k] for k in K]
+    k_rank = rank_at_point(values, "kernel vectors", seed=seed).lower.bound if K else 0
+    upper = Side(n * n - k_rank, f"{k_rank} polynomial solutions of (L1), (L2) in ker Λ1 identically (over ℤ[P]), "
+                                 f"independent at an integer point")
+    return Certificate(cert.quantity, cert.lower, upper, cert.notes)
 
 
 def _odd_powers_bound(cert: Certificate, n: int, r: int, seed: int) -> Certificate:

@@ -36,6 +36,14 @@ def test_known_values(small):
     assert _row(small, 4, 3, "torus").cert.value == tables.torus_printed(4, 3)
 
 
+def test_proved_upper_sides_from_polynomial_kernels(small):
+    """(dimension): the solutions of (L1), (L2) lie in ker Λ1 identically over ℤ[P]; 2l where the orbit is
+    regular: the odd powers of Φ."""
+    for (n, r) in small.rows:
+        assert _row(small, n, r, "leaf").cert.proved, (n, r)
+    assert _row(small, 4, 2, "2l").cert.proved and not _row(small, 4, 1, "2l").cert.proved
+
+
 def test_every_printed_dimension_formula_agrees_except_the_errata(small):
     allowed = {"regular", "invariant_forms", "N_vs_l", "N_dependent", "leaf_singular", "L5L6"}
     for (n, r), rows in small.rows.items():
