@@ -1200,8 +1200,11 @@ def render_markdown(T: Tables, verdicts: dict[str, Any]) -> str:
     title_n = f"n ≤ {T.n_max}" + (f"; n ≤ {ext} without the completeness checks" if ext else "")
     out = [f"# Appendix tables: the paper's dimensions against exact computations ({title_n})", "",
            "Each cell is the computed value at (n, r); where it differs from the paper's formula the cell reads "
-           "**printed ≠ computed**.  A value without a mark is *proved* on both sides (exact rank at an exact "
-           "point with a kernel checked over ℤ, or a count); a value marked * is *checked*: the lower side is "
+           "**printed ≠ computed**.  A value without a mark is *proved* on both sides: a rank modulo a prime at an "
+           "integer point from below, and from above exact kernel vectors (checked over ℤ at the point for the "
+           "statements at one point: KER, (A2), (L5)–(L6), invariant forms; checked identically over ℤ[P] for the "
+           "generic leaf dimension (dimension): the polynomial solutions of (L1), (L2); the odd powers of Φ for a "
+           "regular 2l), or a count.  A value marked * is *checked*: the lower side is "
            "proved (an exact rank at an integer point), the upper side holds unless random points hit the zero set "
            "of a nonzero minor (Schwartz–Zippel) — the false-pass probability of every checked value in these "
            f"tables is at most {maxp:.1e}.  A value in parentheses has no printed counterpart at that size.  "
