@@ -1,7 +1,11 @@
 """§8 The dual Lax pair and geometric interpretation of integrals: the 2r×2r Lax pairs
 (LA3), (LA4) of Theorem DUAL for the Neumann flows (N0_XP2) (κ = 0) and (NE_XP) (κ = −½),
 the symplectic block structure of 𝓛*_neum(λ) and the SO(r)-invariance of its spectral curve
-(2r-integrals)."""
+(2r-integrals): the coefficients 𝓘_{2l}(λ), their degrees n − l and constant leading coefficients,
+the explicit 𝓘_2 and 𝓘_{2r} in Plücker coordinates (the general line fails at l = 1 for r ≥ 2: an
+erratum); the tangency of planes to cones (tangency), (cone0) and the Chasles theorems Gen_Chasles,
+Gen_Chasles2, Chasles-Manakov in algebraic form (the tangency determinant of the 2r-plane is
+𝓘_{2r}(λ), resp. 𝒥_{2r}(λ), conserved); the Moser statements (Mum_geod) for r = 1."""
 from __future__ import annotations
 
 from itertools import combinations

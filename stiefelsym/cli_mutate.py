@@ -162,6 +162,10 @@ def mutate(ids: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str, ...
     writes mutation.json and mutation.md (to reports/ for a full catalog run,
     otherwise only to a --report-dir given explicitly).
 
+    With --corrections, searches corrections of the named claims instead (the
+    errata search): every candidate of the declared search space that passes
+    every method at every size is printed; exit status 0.
+
     Exit status: 0 no survivor, 1 some survivor, 2 bad input, 130 interrupted.
     """
     from . import mutate as engine
