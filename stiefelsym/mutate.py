@@ -149,16 +149,18 @@ def _is_int(node: ast.AST) -> bool:
     return isinstance(node, ast.Constant) and type(node.value) is int
 
 
-def _in_index(parents: list[ast.AST]) -> bool:
-    """Inside the arguments of range(), len() and the other index calls, or a subscript: sizes and
-    indices, not mathematics."""
-    return any(isinstance(p, ast.Call) and _call_name(p) in INDEX_CALLS for p in parents) \
-        or any(isinstance(p, (ast.Subscript, ast.Slice)) for p in parents)
+def _in_index(node: ast.AST, parents: list[ast.AST]) -> bool:
+    """Inside the arguments of range(), len() and the other index calls, or the index of a subscript
+    (M[i + 1, j], not the matrix M): sizes and indices, not mathematics."""
+    if any(isinstance(p, ast.Call) and _call_name(p) in INDEX_CALLS for p in parents):
+        return True
+    chain = list(parents) + [node]
+    return any(isinstance(p, ast.Subscript) and chain[k + 1] is p.slice for k, p in enumerate(chain[:-1]))
 
 
 def _sign_sites(node, parents, names) -> Iterator[_Site]:
     """a + b <-> a - b; a unary minus added to the first term, or removed."""
-    if _in_index(parents):
+    if _in_index(node, parents):
         return
     if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Add, ast.Sub)):
         op = ast.Sub() if isinstance(node.op, ast.Add) else ast.Add()
@@ -207,7 +209,7 @@ def _transpose_sites(node, parents, names) -> Iterator[_Site]:
 
 def _drop_sites(node, parents, names) -> Iterator[_Site]:
     """a ± b -> a; a + b -> b, a - b -> -b."""
-    if _in_index(parents):
+    if _in_index(node, parents):
         return
     if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Add, ast.Sub)):
         yield _Site(node, copy.deepcopy(node.left), "drop", f"drop the term {_code(node.right)} from {_code(node)}")
