@@ -580,7 +580,7 @@ def line_tangency(s, mu):
        statement=r"r=1:\ \{F_i,F_j\}=0,\ \ \mathrm{disc}_{l(t)}Q(\lambda)=-\sum_i\frac{F_i}{\lambda-a_i}"
                  r"=-\mathcal I_2(\lambda)/a(\lambda),\ \ \mathrm{disc}_{l(t)}Q(0)=\sum_iF_i/a_i")
 def moser_chasles_for_the_neumann_system(s):
-    """Proposition Mum_geod (r = 1): the functions F_i Poisson-commute, so every Hamiltonian Σ α_iF_i conserves them all; the line l = p + span{e} is tangent to the confocal quadric Q(λ) iff Σ_i F_i/(λ − a_i) = 𝓘_2(λ)/a(λ) vanishes, a polynomial condition of degree n − 1 with fixed roots (i); and it is tangent to Q(0) iff Σ_i F_i/a_i = 0 (ii)."""
+    """Proposition Mum_geod (r = 1): the functions F_i Poisson-commute, so every Hamiltonian Σ α_iF_i conserves them all; the line l = p + span{e} is tangent to the confocal quadric Q(λ) iff Σ_i F_i/(λ − a_i) = 𝓘_2(λ)/a(λ) vanishes, a polynomial condition of degree n − 1 with fixed roots (i); and it is tangent to Q(0) iff H = Σ_i F_i/a_i = 0, the contact point being x = p − (⟨A⁻¹e, p⟩/⟨A⁻¹e, e⟩)e, which lies on Q(0) exactly when H = 0 (ii; that x(t) is a geodesic of Q(0) is not checked here: it holds on the level set H = 0 only)."""
     n = s.n
     F = uhlenbeck_integrals(s)
     lam, a = s.lam, s.a
@@ -597,6 +597,11 @@ def moser_chasles_for_the_neumann_system(s):
     checks["(i): tangency to Q(lambda) + sum F_i/(lambda - a_i)"] = line_tangency(s, lam) + uhl
     checks["sum F_i/(lambda - a_i) - I_2(lambda)/a(lambda)"] = uhl * a_poly(s, lam) - integrals[1]
     checks["(ii): tangency to Q(0) - sum F_i/a_i"] = line_tangency(s, s.q(0)) - H_ii
+    e, p, Ai = s.X, s.P, s.Ainv
+    k = (e.T @ Ai @ e)[0, 0]
+    x = p - ((e.T @ Ai @ p)[0, 0] / k) * e          # the point of l closest to tangency with Q(0)
+    checks["(ii): <A^{-1}x, x> - 1 + H/<A^{-1}e, e> (x on Q(0) iff H = 0)"] = (x.T @ Ai @ x)[0, 0] - s.q(1) + H_ii / k
+    checks["(ii): <A^{-1}x, e> (l tangent to the quadric through x)"] = (x.T @ Ai @ e)[0, 0]
     return checks
 
 
