@@ -11,7 +11,7 @@ from __future__ import annotations
 from itertools import combinations
 from math import comb, factorial
 
-from stiefelsym import admissible, block, claim, comm
+from stiefelsym import Count, admissible, block, claim, comm
 
 from .sec4_integrability import H_manakov, H_manakov_square, L_man_dual, reflection
 from .sec5_neumann import H_neumann_euclidean, H_neumann_normal, power_trace
@@ -666,3 +666,51 @@ def poisson_sphere_planes(s):
         "A de/dt - (A^{-1}e, e) p + (A^{-1}e, p) e": s.A @ flow.Xdot - k * p + m * e,
         "d det(U^T R U)/dt": s.d(manakov_tangency, flow),
     }
+
+
+# -- printed sizes in the proofs of Gen_Chasles and Gen_Chasles2 -----------------------------------------
+
+@claim("vvb-left-factor-size", paper=("VVB", "Gen_Chasles2"), kind="dim",
+       sizes=admissible(n_max=5), fails_at=lambda n, r: True,
+       erratum="""In the proof of Theorem Gen_Chasles2, the matrix V(XB, PB) diag(B^{-1}, B^{-1}) is said to be
+       obtained from V(X, P) (VV) by left multiplication by diag(I_{n-r}, B^{-1}), a matrix of size n; V(X, P) has
+       n + r rows, so the product is not defined.  Corrected: diag(I_n, B^{-1}), of size n + r, with which the
+       identity (VVB) holds (claim gen-chasles2).""",
+       statement=r"\mathcal V(XB,PB)\begin{pmatrix}B^{-1}&0\\0&B^{-1}\end{pmatrix}="
+                 r"\operatorname{diag}(\mathbf I_{n-r},B^{-1})\,\mathcal V(X,P):\ "
+                 r"\text{size of }\operatorname{diag}(\mathbf I_{n-r},B^{-1})=\text{number of rows of }\mathcal V")
+def printed_left_factor_has_the_size_of_vv(s):
+    """The left factor diag(I_{n−r}, B⁻¹) printed in the proof of Theorem Gen_Chasles2 has as many columns as 𝒱(X, P) of (VV) has rows."""
+    return {"rows of V = size of the left factor": Count(plane_VV(s, s.X, s.P).shape[0], (s.n - s.r) + s.r,
+                                                         "the rows of V (VV); printed: the size of diag(I_{n-r}, B^{-1})")}
+
+
+@printed_left_factor_has_the_size_of_vv.claim.correction("diag(I_n, B^{-1}) in place of diag(I_{n-r}, B^{-1})")
+def printed_left_factor_has_the_size_of_vv_corrected(s):
+    return {"rows of V = size of the left factor": Count(plane_VV(s, s.X, s.P).shape[0], s.n + s.r,
+                                                         "the rows of V (VV); corrected: the size of diag(I_n, B^{-1})")}
+
+
+@claim("gen-chasles-momentum-ranges", paper=("Gen_Chasles", "tangency"), kind="dim",
+       sizes=admissible(n_max=5), fails_at=lambda n, r: n != r,
+       erratum="""In the proof of Theorem Gen_Chasles, the quadratic equation of the 2r-planes tangent to the cone
+       Q(lambda*) sums (e_1^...^e_r^p_i)^2 over i = 1, ..., n and (e_1^...^e_r^p_i^p_j)^2 over 1 <= i < j <= n, but
+       there are only r momenta p_1, ..., p_r (the columns of P).  Corrected: i = 1, ..., r and 1 <= i < j <= r, as
+       in (2r-integrals); with these ranges the equation times a(lambda*) is I_{2r}(lambda*) (claim gen-chasles).""",
+       statement=r"\sum_{i=1}^n(e_1\wedge\dots\wedge e_r\wedge p_i)^2_{I_{r+1}},\ "
+                 r"\sum_{1\le i<j\le n}(e_1\wedge\dots\wedge e_r\wedge p_i\wedge p_j)^2_{I_{r+2}}:\ "
+                 r"\text{the momenta }p_1,\dots,p_n")
+def printed_momentum_ranges(s):
+    """The sums over the momenta p_i in the printed tangency equation of the proof of Theorem Gen_Chasles run over the columns of P."""
+    m = s.P.shape[1]
+    return {"number of momenta p_i": Count(m, s.n, "the columns of P; printed: the range i = 1..n"),
+            "number of pairs p_i ^ p_j": Count(m * (m - 1) // 2, s.n * (s.n - 1) // 2,
+                                               "the pairs of columns of P; printed: the range 1 <= i < j <= n")}
+
+
+@printed_momentum_ranges.claim.correction("i = 1, ..., r and 1 <= i < j <= r in place of n")
+def printed_momentum_ranges_corrected(s):
+    m = s.P.shape[1]
+    return {"number of momenta p_i": Count(m, s.r, "the columns of P; corrected: the range i = 1..r"),
+            "number of pairs p_i ^ p_j": Count(m * (m - 1) // 2, s.r * (s.r - 1) // 2,
+                                               "the pairs of columns of P; corrected: the range 1 <= i < j <= r")}

@@ -8,7 +8,7 @@ from math import factorial
 
 import pytest
 
-from stiefelsym import block, comm
+from stiefelsym import Count, block, comm
 from stiefelsym.free_method import run_free
 from stiefelsym.methods import run_exact, run_points
 
@@ -26,7 +26,8 @@ FREE_PROVED = ("neumann-dual-lax-normal", "neumann-dual-lax-euclidean", "dual-la
 #: coordinates and determinants
 NEEDS_COORDINATES = ("poisson-sphere-flow", "dual-lax-reflections", "2r-integrals", "2r-integrals-conserved",
                      "2r-integrals-explicit", "2r-integrals-general-line", "tangency", "gen-chasles",
-                     "gen-chasles2", "mum-geod", "chasles-manakov", "poisson-sphere-chasles")
+                     "gen-chasles2", "mum-geod", "chasles-manakov", "poisson-sphere-chasles",
+                     "vvb-left-factor-size", "gen-chasles-momentum-ranges")
 #: the claims of the spectral curve and of the Chasles theorems: (exact sizes, modular sizes) as printed
 GEOMETRY_SIZES = {
     "2r-integrals": ([(1, 1), (2, 1)], [(3, 2), (4, 2), (4, 3)]),
@@ -39,6 +40,8 @@ GEOMETRY_SIZES = {
     "mum-geod": ([(2, 1)], [(3, 1), (4, 1)]),
     "chasles-manakov": ([], [(3, 1), (4, 2), (5, 2)]),
     "poisson-sphere-chasles": ([(2, 1), (3, 1)], [(4, 1)]),
+    "vvb-left-factor-size": ([], []),                            # fails at every size: an erratum
+    "gen-chasles-momentum-ranges": ([(2, 2), (3, 3)], [(4, 4)]),  # holds as printed only when r = n
 }
 #: sizes of the exact check (the spectral invariants: exact only for n <= 2, the claim's symbolic budget)
 EXACT_SIZES = {"dual-lax-spectral-invariants": [(2, 1), (2, 2)],
@@ -205,7 +208,19 @@ def poisson_sphere_plane_sign(s):
     return {"A de/dt": s.A @ flow.Xdot - (e.T @ Ai @ e)[0, 0] * p - (e.T @ Ai @ p)[0, 0] * e}
 
 
+def vvb_factor_of_size_n_plus_1(s):
+    """Corrupted correction of (VVB): diag(I_{n+1}, B⁻¹)."""
+    return {"rows": Count(sec8.plane_VV(s, s.X, s.P).shape[0], s.n + 1 + s.r)}
+
+
+def momentum_ranges_r_plus_1(s):
+    """Corrupted correction of the tangency equation: i = 1, ..., r + 1."""
+    return {"momenta": Count(s.P.shape[1], s.r + 1)}
+
+
 CORRUPTIONS = [
+    ("vvb-left-factor-size", vvb_factor_of_size_n_plus_1),
+    ("gen-chasles-momentum-ranges", momentum_ranges_r_plus_1),
     ("2r-integrals", degrees_without_identity),
     ("2r-integrals-conserved", integrals_not_invariant_under_gl_r),
     ("2r-integrals-explicit", I2_with_doubled_momentum_term),
@@ -250,7 +265,8 @@ def test_corrupted_claim_fails(catalog, cid, func):
     if exact is not None:
         assert run_exact(c, *exact, SEED, func=func).verdict == "fails"
     res = run_points(c, n, r, "modular", SEED, func=func)
-    assert res.verdict == "fails" and res.witness and res.witness["seed"] == SEED
+    # a count has no witness point: the computed and printed numbers are the witness
+    assert res.verdict == "fails" and (c.kind == "dim" or res.witness and res.witness["seed"] == SEED)
 
 
 @pytest.mark.parametrize("cid, func", CORRUPTIONS, ids=[f"{c}-{f.__name__}" for c, f in CORRUPTIONS])
@@ -320,3 +336,18 @@ def test_the_spectral_curve_of_a_r_1_neumann_system_is_moser_s():
     c = Claim(id="uhlenbeck-sum", paper=("mum-geod",), kind="id", section="8", func=total,
               sizes=admissible(4, r_max=1))
     assert run_exact(c, 3, 1, SEED).verdict == "proved"
+
+
+@pytest.mark.parametrize("cid, fails, holds", [("vvb-left-factor-size", [(3, 2), (4, 4)], []),
+                                               ("gen-chasles-momentum-ranges", [(3, 1), (4, 2)], [(3, 3)])])
+def test_printed_sizes_in_the_chasles_proofs(catalog, cid, fails, holds):
+    """The size misprints in the proofs of Gen_Chasles and Gen_Chasles2 fail as printed, with the printed
+    and computed numbers, and their corrections hold at every size."""
+    c = catalog.get(cid)
+    for n, r in fails:
+        res = run_exact(c, n, r, SEED)
+        assert res.verdict == "fails" and c.expects_failure(n, r) and "paper:" in res.certificate, res
+    for n, r in holds:
+        assert run_exact(c, n, r, SEED).verdict == "proved"
+    for n, r in fails + holds + [(5, 2)]:
+        assert run_exact(c, n, r, SEED, func=c.corrections[0].func).verdict == "proved"
