@@ -583,3 +583,16 @@ def test_errata_section_reads_like_a_referees_report():
     assert "Corrections found (verified at every size of the claim)" in errata
     tex = render_latex(_erratum_results())
     assert r"\textbf{Note for the authors.}" in tex and r"$\Phi_{ij}^2$" in tex
+
+
+def test_cli_corrections_json_declares_the_search_space():
+    res = CliRunner().invoke(mutate_command, ["vvb-left-factor-size", "--corrections", "--size", "3,2",
+                                              "--method", "rational", "--format", "json"])
+    assert res.exit_code == 0, res.output
+    data = json.loads(res.output)
+    names = {op["name"] for op in data["search_space"]}
+    assert {"invert", "normalize", "letters", "sign2", "helper", "expect"} <= names
+    (found,) = data["claims"]
+    assert found["claim"] == "vvb-left-factor-size" and found["sizes"] == [[3, 2]]
+    assert [c["description"] for c in found["corrections"]] == [
+        next(c["description"] for c in found["corrections"] if "drop the term `s.r` from `s.n - s.r`" in c["description"])]
