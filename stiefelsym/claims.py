@@ -8,6 +8,8 @@ engine decides how to check them.
 """
 from __future__ import annotations
 
+import dataclasses
+
 import hashlib
 import importlib
 import importlib.util
@@ -187,6 +189,9 @@ class Correction:
     description: str
     func: Callable
     changes: int = 1
+    #: what the corrected statement expects, when the correction changes it (a printed "does not
+    #: hold" that does hold: expect="holds"); None keeps the claim's
+    expect: str | None = None
 
 
 @dataclass(frozen=True)
@@ -238,12 +243,21 @@ class Claim:
             raise ValueError(f"claim {self.id}: a statement expected to fail must be a documented erratum "
                              "(say what is wrong with erratum=...)")
 
-    def correction(self, description: str, changes: int = 1):
-        """Decorator registering a candidate correction of this claim (errata search)."""
+    def correction(self, description: str, changes: int = 1, expect: str | None = None):
+        """Decorator registering a candidate correction of this claim (errata search); ``expect``
+        changes what the corrected statement asserts ("holds" or "nonzero")."""
+        if expect not in (None, "holds", "nonzero"):
+            raise ValueError(f"a correction expects 'holds' or 'nonzero', not {expect!r}")
+
         def deco(fn):
-            self.corrections.append(Correction(description, fn, changes))
+            self.corrections.append(Correction(description, fn, changes, expect))
             return fn
         return deco
+
+    def corrected(self, k: int) -> "Claim":
+        """The claim as its k-th correction states it (same id; its function is passed apart)."""
+        expect = self.corrections[k].expect
+        return self if expect is None or expect == self.expect else dataclasses.replace(self, expect=expect)
 
 
 class Registry:

@@ -219,6 +219,8 @@ def _execute(claims: list[Claim], seed: int, hard: str | None, timeout: float, i
     ci, n, r, method, k = task
     c = claims[ci]
     func = c.corrections[k].func if k >= 0 else None
+    if k >= 0:
+        c = c.corrected(k)
     return _guarded(c, None if n is None else Size(n, r), method, seed, func, hard, in_worker=in_worker,
                     timeout=timeout)
 
