@@ -370,7 +370,8 @@ def main(argv=None) -> int:
         b = None if args.no_baseline else base.get((n, r)) or naive_sympy(n, r)
         if b is not None:
             print(f"{f'({n},{r})':>7} {'sympy':>9} {'proved':>12} {b:>10.3f} {'1':>12}")
-            side.append({"size": f"({n},{r})", "method": "naive sympy", "verdict": "proved", "seconds": b, "ratio": 1.0})
+            side.append({"size": f"({n},{r})", "method": "naive sympy", "verdict": "proved", "seconds": b,
+                         "ratio": 1.0})
         for m in ("exact", "modular", "rational", "float", "free"):
             best, verdict = None, ""
             for _ in range(args.repeat):

@@ -85,8 +85,8 @@ HARD_CASES["manakov-0/0"] = HardCase(
     _manakov_0_0)
 HARD_CASES["huge-momenta"] = HardCase("huge-momenta", "momenta scaled by 1e160 (products overflow float64: the "
                                       "float method must escalate)", _huge_momenta)
-HARD_CASES["far-chart"] = HardCase("far-chart", "Cayley parameters S scaled by 1e4 (a point far from the chart's origin)",
-                                   _far_chart)
+HARD_CASES["far-chart"] = HardCase(
+    "far-chart", "Cayley parameters S scaled by 1e4 (a point far from the chart's origin)", _far_chart)
 
 
 def hard_case(name: str) -> HardCase:

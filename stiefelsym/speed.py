@@ -487,7 +487,8 @@ def markdown(doc: dict[str, Any]) -> str:
         lines += [f"## {fam}: `{sec['claim']}`", "", f"![{fam}](speed-{fam}.png)", ""]
         if sec["against_n"]:
             lines += ["float: residual against n (r = ceil(n/2))", "",
-                      "| n | r | precision | max \\|residual\\| | max bound e | actual error vs exact | entries over bound "
+                      "| n | r | precision | max \\|residual\\| | max bound e | actual error vs exact "
+                      "| entries over bound "
                       "| resolves 1e-8 of scale | s |",
                       "| ---: | ---: | --- | ---: | ---: | ---: | ---: | --- | ---: |"]
             for x in sec["against_n"]:
@@ -544,7 +545,8 @@ def markdown(doc: dict[str, Any]) -> str:
               "(`stiefelsym/costmodel.json`; `verify --budget` refuses a run predicted beyond it).", "",
               "![cost model](costmodel.png)", "", table(doc["costmodel"]), "",
               f"Claims other than the five measured ones are predicted as their kind's family times a factor "
-              f"calibrated on the catalog's own runs (`claim_factors`, {len(doc['costmodel'].get('claim_factors') or {})} "
+              f"calibrated on the catalog's own runs (`claim_factors`, "
+              f"{len(doc['costmodel'].get('claim_factors') or {})} "
               f"claims: the worst ratio of a claim's time to its family's prediction); a claim never timed gets "
               f"{UNKNOWN_CLAIM_FACTOR:g} times the slowest family.", "",
               "Hard cases: [hard.md](hard.md).", ""]

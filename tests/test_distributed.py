@@ -80,6 +80,7 @@ def test_unreachable_scheduler_is_bad_input(run, monkeypatch):
 
 
 def test_dask_is_not_imported_by_list():
-    code = "import sys; from stiefelsym import cli; print(any(m.startswith(('dask', 'distributed')) for m in sys.modules))"
+    code = ("import sys; from stiefelsym import cli; "
+            "print(any(m.startswith(('dask', 'distributed')) for m in sys.modules))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.strip() == "False"
