@@ -78,3 +78,14 @@ def test_overflow_escalates_and_keeps_the_bound(catalog):
                          claims=[c], timeout=60)
     assert rows[0]["verdict"] == "undecided" and rows[0]["precision"].startswith("mpmath")
     assert rows[0]["judgement"] == "ok"
+
+
+def test_every_hard_case_rewrites_some_parameter(catalog):
+    from stiefelsym.hard import HARD_CASES
+    for case in HARD_CASES:
+        touched = []
+        for cid in ("neumann-lax", "manakov-lax"):
+            rows = sp.hard_table(cases=[case], sizes=((3, 2),), large=None, methods=("modular",),
+                                 claims=[catalog.get(cid)], timeout=60)
+            touched += [r["touched"] for r in rows]
+        assert any(touched), case
