@@ -437,15 +437,12 @@ P_LEGEND = ("p<=: the Schwartz-Zippel bound of a randomized exact check (rationa
 
 
 def _budget_help() -> str:
-    """The per-method size budgets, read from the engine (only when help is shown)."""
-    try:
-        budget = dict(_runner().BUDGET)
-    except click.ClickException:
-        return ""
-    sizes = ", ".join(f"{m} n <= {k}" for m, k in budget.items())
-    return (f"Size budgets (the largest n each method attempts; a larger --size is refused): {sizes}; "
-            "free: every n and r at once.  auto is exact up to each claim's symbolic budget (see "
-            "`stiefelsym show CLAIM`), then modular.")
+    """How sizes are limited (only when help is shown)."""
+    return ("Sizes: any 1 <= r <= n.  Before it starts, each run's time is predicted by the cost model "
+            "(power laws in n fitted per method and family of claims to measured runs, `stiefelsym speed`); "
+            "a run predicted beyond --budget seconds is refused with the prediction and a faster method.  "
+            "auto is exact up to each claim's symbolic budget (see `stiefelsym show CLAIM`), then modular; "
+            "free: every n and r at once.")
 
 
 class _VerifyCommand(click.Command):

@@ -189,11 +189,16 @@ def mutate(ids: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str, ...
     if parsed_sizes and not any(c.sizes.admits(s.n, s.r) for c in claims for s in parsed_sizes):
         wanted = ", ".join(f"({s.n},{s.r})" for s in parsed_sizes)
         raise MutateInputError(f"no selected claim is stated for size {wanted}")
-    from .methods import BUDGET
+    from .costmodel import DEFAULT_BUDGET
+    from .methods import BudgetError, check_budget
     for s in parsed_sizes:
         for m in methods or engine.METHODS:
-            if m in BUDGET and s.n > BUDGET[m]:
-                raise MutateInputError(f"n = {s.n} is beyond the {m} method's budget (n <= {BUDGET[m]})")
+            for c in claims:
+                if c.sizes.admits(s.n, s.r):
+                    try:
+                        check_budget(m, s.n, s.r, c, DEFAULT_BUDGET)
+                    except BudgetError as exc:
+                        raise MutateInputError(str(exc)) from None
     if corrections:
         _search(engine, claims, ids, parsed_sizes, tuple(methods) or ("rational", "modular"), seed, fmt)
     methods = tuple(methods) or engine.METHODS

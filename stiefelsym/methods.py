@@ -35,7 +35,6 @@ from .scene import CoordinateAccess, Scene, SizeError
 
 EXACT_CAYLEY_MAX_N = 3       # the symbolic Cayley chart (used when coordinates are read)
 EXACT_TIME_LIMIT = 120.0      # seconds per (claim, size) for the symbolic method
-BUDGET = {"exact": 8, "rational": 10, "modular": 12, "float": 16, "auto": 12}
 MAX_RESAMPLE = 8
 FLOAT_RESOLUTION = 1e-8       # a pass must be able to see a relative residual this small
 FLOAT_LADDER = (None, 30, 60, 120)
@@ -49,14 +48,18 @@ class ExactTimeout(Exception):
     pass
 
 
-def check_budget(method: str, n: int, r: int) -> None:
+def check_budget(method: str, n: int, r: int, claim: Claim | None = None, budget: float | None = None) -> float:
+    """The size must be a Stiefel variety (1 <= r <= n); with a claim and a budget, the cost
+    model's predicted seconds of the run must fit the budget (BudgetError otherwise, with the
+    prediction and a faster method).  Returns the prediction (0 without a claim)."""
     if r < 1:
         raise SizeError(f"r = {r} < 1: a Stiefel variety V(n, r) needs r >= 1")
     if r > n:
         raise SizeError(f"r = {r} > n = {n}: V(n, r) needs r <= n")
-    limit = BUDGET.get(method)
-    if limit is not None and n > limit:
-        raise BudgetError(f"n = {n} is beyond the {method} method's budget (n <= {limit})")
+    if claim is None or budget is None or method == "free":
+        return 0.0
+    from . import costmodel
+    return costmodel.check(method, claim, n, r, budget)
 
 
 def time_limit(seconds: float | None):

@@ -788,8 +788,7 @@ def mutation_sizes(claim: Claim, n_max: int = DEFAULT_N_MAX, count: int = DEFAUL
 
 
 def _exact_ok(claim: Claim, size: Size) -> bool:
-    from .methods import BUDGET
-    return size.n <= min(claim.exact_max_n, BUDGET["exact"])
+    return size.n <= claim.exact_max_n
 
 
 def cells(claim: Claim, sizes: Sequence[Size], methods: Sequence[str]) -> list[tuple[Size | None, str]]:

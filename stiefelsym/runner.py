@@ -15,7 +15,7 @@ from typing import Callable, Iterable
 
 from .claims import Claim, Registry, Size
 from .hard import hard_case
-from .methods import BUDGET, METHOD_RUNNERS, BudgetError, check_budget, expected_verdict  # noqa: F401 (BudgetError is part of the runner API)
+from .methods import METHOD_RUNNERS, BudgetError, check_budget, expected_verdict  # noqa: F401 (BudgetError is part of the runner API)
 from .pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT, GIB, Outcome, Terminated, WorkerPool  # noqa: F401
 from .results import PASSING, VERDICTS, Result
 from .scene import SizeError
@@ -163,7 +163,7 @@ def _dispatch(claim: Claim, size: Size | None, method: str, seed: int, func: Cal
 def _run_auto(claim: Claim, size: Size, seed: int, func: Callable | None,
               exact: Callable[..., Result] | None = None) -> Result:
     exact = exact or METHOD_RUNNERS["exact"]
-    if size.n <= min(claim.exact_max_n, BUDGET["exact"]):
+    if size.n <= claim.exact_max_n:
         res = exact(claim, size.n, size.r, seed, func)
         if res.verdict != "inconclusive":
             return res

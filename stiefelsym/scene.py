@@ -609,8 +609,12 @@ class Scene(PaperObjects):
     def constraint_bracket_matrix(self) -> list[list[Scalar]]:
         """The matrix {F_i, F_j}_0 of the scalar constraints (scalar)."""
         def build():
+            # one product of the stacked gradients: C0 = G (ΩG)ᵀ, rows g_i = (d/dX, d/dP) F_i
             G = self._constraint_gradients()
-            return [[self._pair_dot(gi, self._pair_omega(gj)) for gj in G] for gi in G]
+            rows = [list(gX._view().flat) + list(gP._view().flat) for gX, gP in G]
+            omega = [list(gP._view().flat) + [-x for x in gX._view().flat] for gX, gP in G]
+            C = (Mat._rows(rows, self.field) @ Mat._rows(omega, self.field).T)._view()
+            return [[C[i, j] for j in range(len(G))] for i in range(len(G))]
         return self._cached("C0", build)
 
     def _dot(self, u, v) -> Scalar:

@@ -459,10 +459,8 @@ def test_verify_help_explains_p_and_the_budgets(run):
     assert result.exit_code == 0
     text = " ".join(result.stdout.split())
     assert "Schwartz-Zippel false-pass bound" in text
-    from stiefelsym.methods import BUDGET
-    for method, n in BUDGET.items():
-        assert f"{method} n <= {n}" in text
-    for option in ("--timeout SECONDS", "--memory GIB", "--jobs N"):
+    assert "cost model" in text and "--budget" in text
+    for option in ("--timeout SECONDS", "--memory GIB", "--jobs N", "--budget"):
         assert option in text
 
 
