@@ -139,6 +139,20 @@ def run_reporting_errors(invoke: Any, prog: str, standalone_mode: bool) -> int:
     return code
 
 
+
+def standalone_command(prog: str) -> type:
+    """A command class for the subcommands that live in modules of their own: run standalone,
+    every error is one line on stderr with a documented exit status (inside the ``stiefelsym``
+    group, the group does the same)."""
+    class Standalone(click.Command):
+        def main(self, args: Sequence[str] | None = None, prog_name: str | None = None,
+                 complete_var: str | None = None, standalone_mode: bool = True, **extra: Any) -> Any:
+            return run_reporting_errors(
+                lambda: click.Command.main(self, args, prog_name or prog, complete_var,
+                                           standalone_mode=False, **extra),
+                prog_name or prog, standalone_mode)
+    return Standalone
+
 @click.group(cls=_Main, invoke_without_command=True,
              context_settings={"help_option_names": ["-h", "--help"], "max_content_width": 100})
 @click.version_option(package_name="stiefelsym", prog_name="stiefelsym")

@@ -15,31 +15,19 @@ from typing import Any, Sequence
 
 import click
 
+from .cli import InputError, standalone_command
+
 EXIT_OK, EXIT_INPUT = 0, 2
 DEFAULT_REPORT_DIR = Path("reports/flows")
 DEFAULT_RESULTS = Path("reports/results.json")
 
 
-class FlowsInputError(click.ClickException):
+class FlowsInputError(InputError):
     """Bad input: one line on stderr, exit status 2."""
 
-    exit_code = EXIT_INPUT
 
-    def __init__(self, message: str) -> None:
-        super().__init__(message)
-        self.ctx = click.get_current_context(silent=True)
+_Command = standalone_command("stiefelsym flows")
 
-
-class _Command(click.Command):
-    """Run standalone, every error is one line on stderr with a documented exit status."""
-
-    def main(self, args: Sequence[str] | None = None, prog_name: str | None = None,
-             complete_var: str | None = None, standalone_mode: bool = True, **extra: Any) -> Any:
-        from .cli import run_reporting_errors
-        return run_reporting_errors(
-            lambda: super(_Command, self).main(args, prog_name or "stiefelsym flows", complete_var,
-                                               standalone_mode=False, **extra),
-            prog_name or "stiefelsym flows", standalone_mode)
 
 
 def _check_report_dir(d: Path) -> None:

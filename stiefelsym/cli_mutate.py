@@ -21,6 +21,8 @@ from typing import Any, Sequence
 
 import click
 
+from .cli import InputError, standalone_command
+
 from .claims import CatalogError, Claim, Registry, Size, load_catalog, load_claims_file
 from .results import write_atomic
 
@@ -29,27 +31,12 @@ DEFAULT_REPORT_DIR = Path("reports")
 REPORT_FILES = ("mutation.json", "mutation.md")
 
 
-class MutateInputError(click.ClickException):
+class MutateInputError(InputError):
     """Bad input: one line on stderr, exit status 2."""
 
-    exit_code = EXIT_INPUT
 
-    def __init__(self, message: str) -> None:
-        super().__init__(message)
-        self.ctx = click.get_current_context(silent=True)
+_Command = standalone_command("stiefelsym mutate")
 
-
-class _Command(click.Command):
-    """Run standalone, every error is one line on stderr with a documented exit status (inside
-    the ``stiefelsym`` group, the group does the same)."""
-
-    def main(self, args: Sequence[str] | None = None, prog_name: str | None = None,
-             complete_var: str | None = None, standalone_mode: bool = True, **extra: Any) -> Any:
-        from .cli import run_reporting_errors
-        return run_reporting_errors(
-            lambda: super(_Command, self).main(args, prog_name or "stiefelsym mutate", complete_var,
-                                               standalone_mode=False, **extra),
-            prog_name or "stiefelsym mutate", standalone_mode)
 
 
 def _parse_size(text: str) -> Size:

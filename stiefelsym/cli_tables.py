@@ -13,6 +13,8 @@ from typing import Any, Sequence
 
 import click
 
+from .cli import InputError, standalone_command
+
 from .results import write_atomic
 
 EXIT_INPUT = 2
@@ -20,26 +22,12 @@ DEFAULT_RESULTS = (Path("reports/results.json"), Path("reports/all/results.json"
 N_LIMIT = 12
 
 
-class TablesInputError(click.ClickException):
+class TablesInputError(InputError):
     """Bad input: one line on stderr, exit status 2."""
 
-    exit_code = EXIT_INPUT
 
-    def __init__(self, message: str) -> None:
-        super().__init__(message)
-        self.ctx = click.get_current_context(silent=True)
+_Command = standalone_command("stiefelsym tables")
 
-
-class _Command(click.Command):
-    """Standalone, every error is one line on stderr with a documented exit status."""
-
-    def main(self, args: Sequence[str] | None = None, prog_name: str | None = None,
-             complete_var: str | None = None, standalone_mode: bool = True, **extra: Any) -> Any:
-        from .cli import run_reporting_errors
-        return run_reporting_errors(
-            lambda: super(_Command, self).main(args, prog_name or "stiefelsym tables", complete_var,
-                                               standalone_mode=False, **extra),
-            prog_name or "stiefelsym tables", standalone_mode)
 
 
 def _parse_size(text: str) -> tuple[int, int]:
