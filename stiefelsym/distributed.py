@@ -183,21 +183,7 @@ def verify(claims: list[Claim], *, address: str | None = None, client: Any = Non
             client.cancel([f for f in futures if not f.done()])
 
     try:
-        failed: dict[tuple[int, str], None] = {}
-        for i, outcome in run(tasks):
-            res = runner._settle(outcome, tasks[i], claims, seed, hard)
-            deliver(res)
-            ci, n, _, m, _ = tasks[i]
-            if res.verdict == "fails" and n is not None and claims[ci].corrections:
-                failed.setdefault((ci, m))
-        corrections: list[tuple] = []
-        for ci, m in failed:
-            planned = [(t[1], t[2]) for t in tasks if t[0] == ci and t[3] == m and t[1] is not None]
-            for k in range(len(claims[ci].corrections)):
-                corrections += [(ci, n, r, m, k) for n, r in planned]
-        if corrections:
-            for i, outcome in run(corrections):
-                deliver(runner._settle(outcome, corrections[i], claims, seed, hard))
+        runner.run_with_corrections(run, tasks, claims, seed, hard, deliver)
     finally:
         if own:
             client.close()

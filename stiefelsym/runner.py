@@ -301,21 +301,31 @@ def verify(claims: list[Claim], *, sizes: list[Size] | None = None, methods: Ite
     from .methods import _describe
     with WorkerPool(execute, workers=min(jobs, len(tasks)), timeout=timeout, memory=memory_bytes,
                     describe=_describe, fork=fork) as pool:
-        failed: dict[tuple[int, str], None] = {}
-        for i, outcome in pool.run(tasks):
-            res = _settle(outcome, tasks[i], claims, seed, hard)
-            deliver(res)
-            ci, n, _, m, _ = tasks[i]
-            if res.verdict == "fails" and n is not None and claims[ci].corrections:
-                failed.setdefault((ci, m))
-        corrections: list[Task] = []
-        for ci, m in failed:
-            planned = [(t[1], t[2]) for t in tasks if t[0] == ci and t[3] == m and t[1] is not None]
-            for k in range(len(claims[ci].corrections)):
-                corrections += [(ci, n, r, m, k) for n, r in planned]
-        for i, outcome in pool.run(corrections):
-            deliver(_settle(outcome, corrections[i], claims, seed, hard))
+        run_with_corrections(pool.run, tasks, claims, seed, hard, deliver)
     return results
+
+
+def run_with_corrections(run: Callable[[list[Task]], Iterable[tuple[int, Outcome]]], tasks: list[Task],
+                         claims: list[Claim], seed: int, hard: str | None,
+                         deliver: Callable[[Result], None]) -> None:
+    """Run the plan with ``run`` (local workers or a cluster: it yields (task index, outcome)),
+    then every registered correction of each (claim, method) that failed somewhere, at every
+    planned size of that claim and method."""
+    failed: dict[tuple[int, str], None] = {}
+    for i, outcome in run(tasks):
+        res = _settle(outcome, tasks[i], claims, seed, hard)
+        deliver(res)
+        ci, n, _, m, _ = tasks[i]
+        if res.verdict == "fails" and n is not None and claims[ci].corrections:
+            failed.setdefault((ci, m))
+    corrections: list[Task] = []
+    for ci, m in failed:
+        planned = [(t[1], t[2]) for t in tasks if t[0] == ci and t[3] == m and t[1] is not None]
+        for k in range(len(claims[ci].corrections)):
+            corrections += [(ci, n, r, m, k) for n, r in planned]
+    if corrections:
+        for i, outcome in run(corrections):
+            deliver(_settle(outcome, corrections[i], claims, seed, hard))
 
 
 def rerun_command(result: Result, hard: str | None = None) -> str:
