@@ -694,34 +694,41 @@ class Scene(PaperObjects):
 
         Raises DegenerateError when the multipliers are not unique."""
         def build():
-            r = self.r
             HX, HP = self.gradient(H)
-            Gs = self._constraint_gradients()
-            base = (HP, -HX)
-            zero = self.zeros(self.n, r, ("n", "r"))
-            units = []
-            for name in ("Lambda", "Pi"):
-                for i in range(r):
-                    for j in range(i, r):
-                        E = self.zeros(r, r, ("r", "r"))
-                        E._a[i, j] = E._a[j, i] = self.const(1)
-                        v = (zero, self.X @ E) if name == "Lambda" else (-(self.X @ E), self.P @ E)
-                        units.append((name, i, j, v))
-            M = [[self._pair_dot(g, u[3]) for u in units] for g in Gs]
-            b = [[-self._pair_dot(g, base)] for g in Gs]
-            try:
-                sol = self.field.solve(M, b)
-            except DegenerateError as exc:
-                raise DegenerateError("the multipliers Lambda, Pi are not unique here") from exc
-            Lam = self.zeros(r, r, ("r", "r"))
-            Pi = self.zeros(r, r, ("r", "r"))
-            for (name, i, j, v), (c,) in zip(units, sol):
-                target = Lam if name == "Lambda" else Pi
-                target._a[i, j] = target._a[j, i] = c
+            Lam, Pi = self._solve_multipliers(
+                (HP, -HX), lambda name, XE, PE: (self.zeros(self.n, self.r, ("n", "r")), XE) if name == "Lambda"
+                else (-XE, PE))
             Xd = HP - self.X @ Pi
             Pd = -HX + self.X @ Lam + self.P @ Pi
             return Flow(Xd, Pd, multipliers={"Lambda": Lam, "Pi": Pi})
         return self._cached_for("mflow", H, build)
+
+    def _solve_multipliers(self, base: tuple[Mat, Mat], direction: Callable[[str, Mat, Mat], tuple[Mat, Mat]],
+                           what: str = "the multipliers Lambda, Pi") -> tuple[Mat, Mat]:
+        """Symmetric Λ, Π such that base + Σ Λ_ij u_ij + Σ Π_ij v_ij is tangent to the constraint set:
+        an r(r+1)-dimensional linear system, one unknown per unit symmetric E_ij, whose direction
+        ``direction(name, X E_ij, P E_ij)`` (a pair (δX, δP)) the flow's form gives."""
+        r = self.r
+        Gs = self._constraint_gradients()
+        units = []
+        for name in ("Lambda", "Pi"):
+            for i in range(r):
+                for j in range(i, r):
+                    E = self.zeros(r, r, ("r", "r"))
+                    E._a[i, j] = E._a[j, i] = self.const(1)
+                    units.append((name, i, j, direction(name, self.X @ E, self.P @ E)))
+        M = [[self._pair_dot(g, u[3]) for u in units] for g in Gs]
+        b = [[-self._pair_dot(g, base)] for g in Gs]
+        try:
+            sol = self.field.solve(M, b)
+        except DegenerateError as exc:
+            raise DegenerateError(f"{what} are not unique here") from exc
+        Lam = self.zeros(r, r, ("r", "r"))
+        Pi = self.zeros(r, r, ("r", "r"))
+        for (name, i, j, _v), (c,) in zip(units, sol):
+            target = Lam if name == "Lambda" else Pi
+            target._a[i, j] = target._a[j, i] = c
+        return Lam, Pi
 
     def d(self, F: Function, flow: Flow | Mapping[str, Mat]) -> Any:
         """The derivative of F (a function of the scene) along a flow."""

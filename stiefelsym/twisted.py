@@ -204,33 +204,14 @@ def multiplier_flow(s, H: Function, F: Mat | None = None) -> Flow:
     Fm = _field_strength(s, F)
 
     def build():
-        n, r = s.n, s.r
         HX, HP = s.gradient(H)
-        G = _constraint_gradients(s)
         base = (HP, -HX - s.eps * (HP @ Fm))
-        units = []
-        for name in ("Lambda", "Pi"):
-            for i in range(r):
-                for j in range(i, r):
-                    E = s.zeros(r, r, ("r", "r"))
-                    E._a[i, j] = E._a[j, i] = s.const(1)
-                    if name == "Lambda":
-                        v = (s.zeros(n, r, ("n", "r")), s.X @ E)
-                    else:
-                        XE = s.X @ E
-                        v = (-XE, s.P @ E + s.eps * (XE @ Fm))
-                    units.append((name, i, j, v))
-        M = [[_pair_dot(s, g, u[3]) for u in units] for g in G]
-        b = [[-_pair_dot(s, g, base)] for g in G]
-        try:
-            sol = s.field.solve(M, b)
-        except DegenerateError as exc:
-            raise DegenerateError("the multipliers Lambda, Pi of the twisted flow are not unique here") from exc
-        Lam = s.zeros(r, r, ("r", "r"))
-        Pi = s.zeros(r, r, ("r", "r"))
-        for (name, i, j, _v), (c,) in zip(units, sol):
-            target = Lam if name == "Lambda" else Pi
-            target._a[i, j] = target._a[j, i] = c
+
+        def direction(name, XE, PE):
+            if name == "Lambda":
+                return (s.zeros(s.n, s.r, ("n", "r")), XE)
+            return (-XE, PE + s.eps * (XE @ Fm))
+        Lam, Pi = s._solve_multipliers(base, direction, "the multipliers Lambda, Pi of the twisted flow")
         Xd = HP - s.X @ Pi
         Pd = -HX - s.eps * (Xd @ Fm) + s.X @ Lam + s.P @ Pi
         return Flow(Xd, Pd, multipliers={"Lambda": Lam, "Pi": Pi})
