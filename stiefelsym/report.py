@@ -169,6 +169,8 @@ def _section_heading(section: str, meta: dict[str, Any]) -> str:
     if not section:
         return "Claims outside the paper's sections"
     name = (meta.get("sections") or {}).get(section, "")
+    if name.startswith("Appendix"):
+        return name                      # the appendices are named, not numbered
     return f"§{section} {name}".strip()
 
 
@@ -621,7 +623,7 @@ def _erratum_note(c: ClaimResults, facts: dict[str, Any], escape=lambda s: s, co
     """One paragraph a referee could send: the label, where it fails, the witness, the correction
     (``escape`` renders the prose, ``correction`` a correction's description)."""
     w = c.failures[0]
-    where = f"§{c.section}, " if c.section else ""
+    where = (f"Appendix {c.section[1:]}, " if c.section.startswith("A") else f"§{c.section}, ") if c.section else ""
     text = (f"In {where}{labels(c.paper)}, the statement as printed fails at "
             f"(n, r) = {format_sizes(facts['fails'], 8)}")
     if facts["holds"]:
