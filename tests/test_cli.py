@@ -482,9 +482,11 @@ def test_subprocess_verify_junit(tmp_path):
 
 def test_subprocess_ctrl_c_exits_130_and_writes_no_report(tmp_path):
     env = {k: v for k, v in os.environ.items() if not k.startswith("PYTEST")}
+    # as from an interactive shell: a test run started in the background inherits SIGINT ignored
     proc = subprocess.Popen([sys.executable, "-m", "stiefelsym", "verify", "--report-dir", "out"],
                             cwd=tmp_path, env=env, stdin=subprocess.DEVNULL,
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     try:
         ready, _, _ = select.select([proc.stdout], [], [], 120)
         assert ready, "no result within 120 s"

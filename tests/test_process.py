@@ -401,7 +401,9 @@ def test_subprocess_signal_kills_every_worker_and_writes_no_report(tmp_path, sig
     proc = subprocess.Popen([sys.executable, "-m", "stiefelsym", "verify", "--claims", "slow.py",
                              "--method", "modular", "--report-dir", "out", "--timeout", "120"],
                             cwd=tmp_path, env=_env(), stdin=subprocess.DEVNULL,
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            # as from an interactive shell: a background test run inherits SIGINT ignored
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     try:
         deadline = time.monotonic() + 60
         while not (tmp_path / "pids").exists():
