@@ -17,13 +17,15 @@ from pathlib import Path
 
 import click
 
+from .cli import InputError, standalone_command
+
 QUICK_NS = {"exact": [2, 3], "rational": [2, 3], "modular": [2, 3], "float": [2, 3]}
 FULL_NS = {"exact": [2, 3, 4, 5, 6, 7, 8], "rational": [2, 3, 4, 5, 6, 8, 10],
            "modular": [2, 3, 4, 5, 6, 8, 10, 12], "float": [2, 3, 4, 5, 6, 8, 10, 12, 16]}
 FLOAT_NS_FULL = [2, 3, 4, 5, 6, 8, 10, 12, 16, 20, 24, 32]
 
 
-@click.command("speed")
+@click.command("speed", cls=standalone_command("stiefelsym speed"))
 @click.option("--report-dir", type=click.Path(file_okay=False, path_type=Path), default=Path("reports/speed"),
               show_default=True, metavar="DIR", help="Where to write the data, plots and tables.")
 @click.option("--quick", is_flag=True,
@@ -38,7 +40,10 @@ def speed(report_dir: Path, quick: bool, seed: int, no_hard: bool) -> int:
     from .claims import load_catalog
     from .results import write_atomic
     t_start = time.perf_counter()
-    report_dir.mkdir(parents=True, exist_ok=True)
+    try:
+        report_dir.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise InputError(f"cannot write the speed report to {report_dir}: {exc.strerror or exc}") from None
     registry = load_catalog("proofs")
     say = lambda text: click.echo(text, err=True)  # noqa: E731
 
