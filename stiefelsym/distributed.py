@@ -126,18 +126,7 @@ def verify(claims: list[Claim], *, address: str | None = None, client: Any = Non
     arguments (``jobs`` and ``fork`` are the cluster's business and are ignored; other keyword
     arguments go to ``runner.plan``), the same results in the same order."""
     from . import runner
-    from .hard import hard_case
-    if seed < 0:
-        raise ValueError("the seed must be a non-negative integer")
-    if not timeout or timeout <= 0:
-        raise ValueError("the time budget must be a positive number of seconds")
-    if memory is not None and memory <= 0:
-        raise ValueError("the memory budget must be a positive number of GiB")
-    if hard is not None:
-        hard_case(hard)
-        methods = [m for m in methods if m != "free"]
-        if "exact" in methods:
-            raise ValueError("hard cases are sampled points: use --method rational, modular or float")
+    methods = runner.checked_options(seed, timeout, memory, hard, methods)
     claims = list(claims)
     # further options of the runner's plan (e.g. a cost budget) are passed on as they are
     runs = runner.plan(claims, sizes, methods, strict=strict_sizes, **plan_options)

@@ -264,19 +264,9 @@ def verify(claims: list[Claim], *, sizes: list[Size] | None = None, methods: Ite
     registered correction is run at every planned size of that claim for that method:
     a correction is verified only where it holds everywhere.  ``on_result`` sees the
     results in that order (the plan first, then the corrections)."""
-    if seed < 0:
-        raise ValueError("the seed must be a non-negative integer")
-    if not timeout or timeout <= 0:
-        raise ValueError("the time budget must be a positive number of seconds")
-    if memory is not None and memory <= 0:
-        raise ValueError("the memory budget must be a positive number of GiB")
     if jobs < 1:
         raise ValueError("--jobs must be at least 1")
-    if hard is not None:
-        hard_case(hard)
-        methods = [m for m in methods if m != "free"]
-        if "exact" in methods:
-            raise ValueError("hard cases are sampled points: use --method rational, modular or float")
+    methods = checked_options(seed, timeout, memory, hard, methods)
     claims = list(claims)
     runs = plan(claims, sizes, methods, strict=strict_sizes)
     if on_plan is not None:
@@ -303,6 +293,25 @@ def verify(claims: list[Claim], *, sizes: list[Size] | None = None, methods: Ite
                     describe=_describe, fork=fork) as pool:
         run_with_corrections(pool.run, tasks, claims, seed, hard, deliver)
     return results
+
+
+def checked_options(seed: int, timeout: float, memory: float | None, hard: str | None,
+                    methods: Iterable[str]) -> list[str]:
+    """The checks every way of running a plan makes of its options; the methods to run (a hard
+    case has nothing to say to the dimension-free method and refuses the symbolic one)."""
+    if seed < 0:
+        raise ValueError("the seed must be a non-negative integer")
+    if not timeout or timeout <= 0:
+        raise ValueError("the time budget must be a positive number of seconds")
+    if memory is not None and memory <= 0:
+        raise ValueError("the memory budget must be a positive number of GiB")
+    methods = list(methods)
+    if hard is not None:
+        hard_case(hard)
+        methods = [m for m in methods if m != "free"]
+        if "exact" in methods:
+            raise ValueError("hard cases are sampled points: use --method rational, modular or float")
+    return methods
 
 
 def run_with_corrections(run: Callable[[list[Task]], Iterable[tuple[int, Outcome]]], tasks: list[Task],
