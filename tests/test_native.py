@@ -162,3 +162,33 @@ def test_verdicts_do_not_depend_on_the_backend(catalog):
             native.ENABLED = True
             scene_mod.REVERSE_GRADIENTS = True
         assert a.verdict == b.verdict, c.id
+
+
+# -- trying to fool the reverse mode: a Hamiltonian assembled from entries -----------------
+
+def _entrywise_kinetic(t, c):
+    """c * sum_ij P_ij^2, read entry by entry (reverse mode differentiates the entry reads)."""
+    acc = t.q(0)
+    for i in range(t.n):
+        for j in range(t.r):
+            acc = acc + t.P[i, j] * t.P[i, j]
+    return acc * c
+
+
+def _flow_claim(c_num, c_den):
+    from stiefelsym.claims import Claim, admissible
+
+    def func(s):
+        entry = s.dirac_flow(lambda t: _entrywise_kinetic(t, t.q(c_num, c_den)))
+        matrix = s.dirac_flow(lambda t: t.tr(t.P.T @ t.P) / 2)
+        return {"dX/dt": entry.Xdot - matrix.Xdot, "dP/dt": entry.Pdot - matrix.Pdot}
+    return Claim(id="entrywise-kinetic", paper=("Euclidean",), kind="id", section="t", func=func,
+                 sizes=admissible(3))
+
+
+@pytest.mark.parametrize("method", ["modular", "rational", "float"])
+def test_an_entrywise_hamiltonian_is_differentiated_exactly(method):
+    from stiefelsym.methods import METHOD_RUNNERS
+    run = METHOD_RUNNERS[method]
+    assert run(_flow_claim(1, 2), 3, 2, 0).verdict in ("checked", "numeric")
+    assert run(_flow_claim(1, 3), 3, 2, 0).verdict == "fails"       # the wrong coefficient is refuted
