@@ -160,25 +160,33 @@ class Context:
         return (1, m1) if m1 < m2 else (s, m2)
 
 
+_ONE, _MINUS = se.Integer(1), se.Integer(-1)
+#: the fixed generators: name -> (row, col, terms)
+HYPOTHESES: dict[str, tuple[str, str, list[tuple[Any, tuple]]]] = {
+    "XtX": ("r", "r", [(_ONE, ("Xt", "X")), (_MINUS, ())]),
+    "XtP+PtX": ("r", "r", [(_ONE, ("Xt", "P")), (_ONE, ("Pt", "X"))]),
+    "YtY": ("r", "r", [(_ONE, ("Yt", "Y")), (_MINUS, ())]),
+    "YtQ+QtY": ("r", "r", [(_ONE, ("Yt", "Q")), (_ONE, ("Qt", "Y"))]),
+    "AAinv": ("n", "n", [(_ONE, ("A", "Ainv")), (_MINUS, ())]),
+    "AinvA": ("n", "n", [(_ONE, ("Ainv", "A")), (_MINUS, ())]),
+}
+
+
 def hypothesis(name: str, ctx: Context) -> tuple[str, str, list[tuple[Any, tuple]]]:
     """(row, col, terms) of the hypothesis called ``name``: the fixed table of generators."""
-    one, minus = se.Integer(1), se.Integer(-1)
-    table = {
-        "XtX": ("r", "r", [(one, ("Xt", "X")), (minus, ())]),
-        "XtP+PtX": ("r", "r", [(one, ("Xt", "P")), (one, ("Pt", "X"))]),
-        "YtY": ("r", "r", [(one, ("Yt", "Y")), (minus, ())]),
-        "YtQ+QtY": ("r", "r", [(one, ("Yt", "Q")), (one, ("Qt", "Y"))]),
-        "AAinv": ("n", "n", [(one, ("A", "Ainv")), (minus, ())]),
-        "AinvA": ("n", "n", [(one, ("Ainv", "A")), (minus, ())]),
-    }
-    if name in table:
-        return table[name]
+    fixed = HYPOTHESES.get(name) if isinstance(name, str) else None
+    if fixed is not None:
+        return fixed
     kind, _, R = str(name).partition(":")
     if kind in ("res_left", "res_right") and R in ctx.resolvents:
         mu = ctx.resolvents[R]   # (mu I - A) R - I, resp. R (mu I - A) - I
         AR = ("A", R) if kind == "res_left" else (R, "A")
-        return ("n", "n", [(mu, (R,)), (minus, AR), (minus, ())])
+        return ("n", "n", [(mu, (R,)), (_MINUS, AR), (_MINUS, ())])
     raise Rejected(f"unknown hypothesis {name!r}")
+
+
+#: parsed coefficients: text -> expression (parsing and its checks are a function of the text)
+_PARSED: dict[str, Any] = {}
 
 
 def coefficient(text: Any) -> Any:
@@ -186,10 +194,16 @@ def coefficient(text: Any) -> Any:
     the scalars with rational numbers, whose denominator is not the zero polynomial."""
     if not isinstance(text, str):
         raise Rejected(f"a coefficient must be a string, got {text!r}")
+    e = _PARSED.get(text)
+    if e is not None:
+        return e
     e = se.sympify(text)
     _rational_function(e, text)
     if se.expand(e.as_numer_denom()[1]) == 0:
         raise Rejected(f"the coefficient {text} has a zero denominator")
+    if len(_PARSED) > 100_000:
+        _PARSED.clear()
+    _PARSED[text] = e
     return e
 
 

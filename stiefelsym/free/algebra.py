@@ -135,12 +135,44 @@ def word_str(w: Word) -> str:
     return "*".join(w) if w else "I"
 
 
+ONE_TYPE = type(se.Integer(1))
+ZERO_TYPE = type(se.Integer(0))
+#: symengine classes whose instances are never zero (zero is always of ZERO_TYPE)
+_NONZERO_TYPES = frozenset(type(x) for x in (se.Integer(1), se.Integer(-1), se.Integer(2), se.Rational(1, 2),
+                                              se.Rational(2, 3), se.Symbol("x"), se.Symbol("x") * 2,
+                                              se.Symbol("x") + 1, se.Symbol("x") ** 2))
+
+
+def coef_is_zero(k: Coef) -> bool:
+    """k == 0 (structurally, as symengine compares; no expansion), cheaply."""
+    t = type(k)
+    if t is ZERO_TYPE:
+        return True
+    if t in _NONZERO_TYPES:
+        return False
+    return k == 0
+
+
+def cmul(a: Coef, b: Coef) -> Coef:
+    """a·b, without symengine's multiplication when a factor is 1."""
+    if type(a) is ONE_TYPE:
+        return b
+    if type(b) is ONE_TYPE:
+        return a
+    return a * b
+
+
 def as_coef(c: Any) -> Coef | None:
     """A commuting scalar as a symengine number/expression, or None if c is not one."""
     if isinstance(c, se.Basic):
         return c
-    if isinstance(c, bool):
+    t = type(c)
+    if t is int:
+        return se.Integer(c)
+    if t is bool:
         return None
+    if t is Fraction:
+        return se.Integer(c.numerator) / se.Integer(c.denominator)
     if isinstance(c, int):
         return se.Integer(c)
     if isinstance(c, Fraction):
@@ -170,6 +202,13 @@ class NCPoly:
         self.terms = dict(terms)
         self.row, self.col = row, col
 
+    @classmethod
+    def _raw(cls, terms: dict, row: str, col: str) -> "NCPoly":
+        """A polynomial owning ``terms`` (a dict built for it: not copied)."""
+        p = object.__new__(cls)
+        p.terms, p.row, p.col = terms, row, col
+        return p
+
     # -- construction -------------------------------------------------------
     @classmethod
     def zero(cls, row: str, col: str) -> "NCPoly":
@@ -185,7 +224,7 @@ class NCPoly:
         k = as_coef(c)
         if k is None:
             raise TypeError(f"not a scalar: {c!r}")
-        return cls({((), ()): k} if k != 0 else {}, SCALAR, SCALAR)
+        return cls._raw({((), ()): k} if not coef_is_zero(k) else {}, SCALAR, SCALAR)
 
     @classmethod
     def word(cls, w: Iterable[Letter], row: str | None = None, coef: Any = 1) -> "NCPoly":
@@ -199,7 +238,7 @@ class NCPoly:
         else:
             col = row
         k = as_coef(coef)
-        return cls({((), w): k} if k != 0 else {}, row, col)
+        return cls._raw({((), w): k} if not coef_is_zero(k) else {}, row, col)
 
     # -- queries ------------------------------------------------------------
     @property
@@ -233,7 +272,7 @@ class NCPoly:
 
     # -- arithmetic ---------------------------------------------------------
     def _new(self, terms: dict) -> "NCPoly":
-        return NCPoly(terms, self.row, self.col)
+        return NCPoly._raw(terms, self.row, self.col)
 
     def _same_type(self, o: "NCPoly") -> None:
         if self.shape != o.shape:
@@ -251,7 +290,7 @@ class NCPoly:
         k = as_coef(o)
         if k is None:
             return NotImplemented
-        if k == 0:
+        if coef_is_zero(k):
             return self
         if not self.is_scalar:
             raise TypeError("adding a scalar to a matrix polynomial: write c·I explicitly")
@@ -271,8 +310,10 @@ class NCPoly:
         return (-self) + o
 
     def _scale(self, k: Coef) -> "NCPoly":
-        if k == 0:
+        if coef_is_zero(k):
             return self._new({})
+        if type(k) is ONE_TYPE:
+            return self._new(dict(self.terms))
         return self._new({key: c * k for key, c in self.terms.items()})
 
     def __mul__(self, o: Any):
@@ -317,10 +358,10 @@ class NCPoly:
         out: dict = {}
         for (t1, w1), c1 in self.terms.items():
             for (t2, w2), c2 in o.terms.items():
-                k = (merge_traces(t1, t2), w1 + w2)
-                c = c1 * c2
+                k = (merge_traces(t1, t2) if t1 and t2 else t1 or t2, w1 + w2)
+                c = cmul(c1, c2)
                 out[k] = out[k] + c if k in out else c
-        return NCPoly(out, row, col)
+        return NCPoly._raw(out, row, col)
 
     def star(self) -> "NCPoly":
         """The involution (transpose): reverses words, adjoint letters; traces are fixed."""
@@ -330,7 +371,7 @@ class NCPoly:
             k = (tm, ws)
             v = c if s == 1 else -c
             out[k] = out[k] + v if k in out else v
-        return NCPoly(out, self.col, self.row)
+        return NCPoly._raw(out, self.col, self.row)
 
     def expand(self) -> "NCPoly":
         """Expanded coefficients, zero terms dropped (no constraints used)."""
@@ -394,19 +435,37 @@ def coef_latex(c: Coef) -> str:
     return sympy.latex(sympy.sympify(c._sympy_() if hasattr(c, "_sympy_") else c))
 
 
-def _signed_term(c: Coef, body: str) -> str:
+#: coefficient -> (sign "- " or "+ ", LaTeX of its magnitude or None when it is 1, whether it is a sum)
+_TERM_LATEX: dict = {}
+
+
+def _coef_parts(c: Coef) -> tuple[str, str | None, bool]:
+    try:
+        return _TERM_LATEX[c]
+    except (KeyError, TypeError):
+        pass
     import sympy
 
     e = sympy.sympify(se.expand(c)._sympy_())
     neg = e.could_extract_minus_sign()
     mag = -e if neg else e
-    sign = "- " if neg else "+ "
+    out = ("- " if neg else "+ ", None if mag == 1 else sympy.latex(mag), isinstance(mag, sympy.Add))
+    try:
+        if len(_TERM_LATEX) > 50_000:
+            _TERM_LATEX.clear()
+        _TERM_LATEX[c] = out
+    except TypeError:
+        pass
+    return out
+
+
+def _signed_term(c: Coef, body: str) -> str:
+    sign, text, is_sum = _coef_parts(c)
     if not body:
-        return sign + sympy.latex(mag)
-    if mag == 1:
+        return sign + (text if text is not None else "1")
+    if text is None:
         return sign + body
-    text = sympy.latex(mag)
-    if isinstance(mag, sympy.Add):
+    if is_sum:
         text = rf"\left({text}\right)"
     return sign + text + " " + body
 

@@ -30,6 +30,25 @@ from .rewriting import Certificate
 FORMAT = "stiefelsym-cofactor-1"
 
 
+#: coefficient -> (its free symbols, its text): both functions of the coefficient alone
+_COEF_TEXT: dict = {}
+
+
+def _coef_text(c: Any) -> tuple[tuple, str]:
+    try:
+        return _COEF_TEXT[c]
+    except (KeyError, TypeError):
+        pass
+    out = (tuple(c.free_symbols), str(c))
+    try:
+        if len(_COEF_TEXT) > 100_000:
+            _COEF_TEXT.clear()
+        _COEF_TEXT[c] = out
+    except TypeError:
+        pass
+    return out
+
+
 class CertificateWriter:
     """Serializes the entries of one scene (one naming of symbols and letters)."""
 
@@ -61,12 +80,13 @@ class CertificateWriter:
 
     def coef(self, c: Any) -> str:
         c = se.sympify(c)
+        symbols, text = _coef_text(c)
         subs = {}
-        for s in c.free_symbols:
+        for s in symbols:
             name = self._symbol_name(s)
             if name != str(s) or type(s) is not se.Symbol:
                 subs[s] = se.Symbol(name)
-        return str(c.xreplace(subs) if subs else c)
+        return str(c.xreplace(subs)) if subs else text
 
     def letter(self, L: Letter) -> str:
         name = str(L)

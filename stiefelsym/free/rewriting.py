@@ -37,22 +37,65 @@ class RewritingError(ValueError):
     """A rule that does not decrease, is ill-typed, or a reduction that does not terminate."""
 
 
+#: the class of symengine's zero (a singleton): ``type(c) is ZERO_TYPE`` is the cheap zero test of
+#: a coefficient that :func:`simplify_coef` returned
+_ZERO = se.Integer(0)
+ZERO_TYPE = type(_ZERO)
+_NUMBER_TYPES = frozenset(type(x) for x in (se.Integer(0), se.Integer(1), se.Integer(-1), se.Integer(2),
+                                             se.Rational(1, 2)))
+#: simplify_coef is a pure function of its (hashable, structurally compared) argument
+_SIMPLIFIED: dict = {}
+_SIMPLIFIED_MAX = 200_000
+
+
 def simplify_coef(c: Coef) -> Coef:
-    """Expanded coefficient; rational coefficients are zero iff their expanded numerator is."""
-    if getattr(c, "is_Number", False):
+    """Expanded coefficient; rational coefficients are zero iff their expanded numerator is.
+
+    Zero comes back as symengine's zero (``type(c) is ZERO_TYPE``).  Memoized."""
+    if type(c) in _NUMBER_TYPES:
         return c
+    try:
+        return _SIMPLIFIED[c]
+    except KeyError:
+        pass
+    except TypeError:              # not hashable: no memo
+        return _simplify(c)
+    e = _simplify(c)
+    if len(_SIMPLIFIED) >= _SIMPLIFIED_MAX:
+        _SIMPLIFIED.clear()
+    _SIMPLIFIED[c] = e
+    return e
+
+
+def _simplify(c: Coef) -> Coef:
+    if getattr(c, "is_Number", False):
+        return _ZERO if c == 0 else c
     e = se.expand(c)
-    if e == 0 or e.is_Number:
+    if e == 0:
+        return _ZERO
+    if e.is_Number:
         return e
     if isinstance(e, se.Add):
         e = se.expand(e)   # symengine may leave a sum of numbers (1 - 1) after one pass
-        if e == 0 or e.is_Number:
+        if e == 0:
+            return _ZERO
+        if e.is_Number:
             return e
     num, den = e.as_numer_denom()
     if den.is_Number:
         return e
     num = se.expand(num)
-    return se.Integer(0) if num == 0 else e
+    return _ZERO if num == 0 else e
+
+
+def nonzero_terms(terms: dict) -> dict:
+    """The terms with simplified coefficients, zero coefficients dropped."""
+    out = {}
+    for k, c in terms.items():
+        c = simplify_coef(c)
+        if type(c) is not ZERO_TYPE:
+            out[k] = c
+    return out
 
 
 class Order:
@@ -288,7 +331,7 @@ class RewritingSystem:
                 used |= u
                 for k, v in sub.items():
                     out[k] = out[k] + c * v if k in out else c * v
-            res = ({k: v for k, v in ((k, simplify_coef(v)) for k, v in out.items()) if v != 0},
+            res = (nonzero_terms(out),
                    frozenset(used))
         self._word_memo[w] = res
         return res
@@ -320,7 +363,7 @@ class RewritingSystem:
                 used |= u
                 for kk, v in sub.items():
                     out[kk] = out[kk] + coef * v if kk in out else coef * v
-            res = ({k: v for k, v in ((k, simplify_coef(v)) for k, v in out.items()) if v != 0},
+            res = (nonzero_terms(out),
                    frozenset(used))
             break
         if res is None:
@@ -344,7 +387,7 @@ class RewritingSystem:
             used = used | u
             if rep is not None:
                 out[rep] = out[rep] + v * s if rep in out else v * s
-        res = ({k: v for k, v in ((k, simplify_coef(v)) for k, v in out.items()) if v != 0}, used)
+        res = (nonzero_terms(out), used)
         self._trace_memo[c] = res
         return res
 
@@ -406,7 +449,7 @@ class RewritingSystem:
                     k = (t2, w2)
                     v = c * c2 * c3
                     out[k] = out[k] + v if k in out else v
-        terms = {k: v for k, v in ((k, simplify_coef(v)) for k, v in out.items()) if v != 0}
+        terms = nonzero_terms(out)
         rules = [r for r in self.rules if r.name in used]
         return Reduction(p, NCPoly(terms, p.row, p.col), rules)
 

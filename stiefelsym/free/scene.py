@@ -25,7 +25,8 @@ from ..matrix import CoordinateTracker, Mat, definite
 from ..scene import USER_SCALAR, Flow, PaperObjects, map_entries
 from .algebra import (DIMENSIONS, Letter, NCPoly, NeedsCoordinates, as_coef, coef_latex, derivation,
                       letter_pair, skew_letter, substitute, symmetric_letter, trace)
-from .rewriting import Cofactor, Hypothesis, Order, Reduction, RewritingSystem, simplify_coef
+from .mat import FreeMat
+from .rewriting import Cofactor, Hypothesis, Order, Reduction, RewritingSystem, nonzero_terms, simplify_coef
 from .traces import gradient
 
 Function = Callable[[Any], Any]
@@ -115,12 +116,25 @@ def _by(h: Hypothesis, coef: Any = 1, left: tuple = (), right: tuple = ()) -> Co
     return Cofactor(as_coef(coef), tuple(left), h, tuple(right))
 
 
+def _standard_rules() -> tuple:
+    """The rules of (cond_XP), built once: add_rule checks their types, their order and their
+    cofactors; the rules are immutable, so every scene's system may share them."""
+    global _STANDARD_RULES
+    if _STANDARD_RULES is None:
+        system = RewritingSystem(Order([X, P, A, Xt, Pt]))
+        system.add_rule((Xt, X), _i("r"), COND_XX, name="XtX", cofactors=[_by(hypothesis("XtX"))])
+        system.add_rule((Pt, X), -_w(Xt, P), COND_XP, name="PtX", cofactors=[_by(hypothesis("XtP+PtX"))])
+        _STANDARD_RULES = tuple(system.rules)
+    return _STANDARD_RULES
+
+
+_STANDARD_RULES: tuple | None = None
+
+
 def standard_system() -> RewritingSystem:
-    """(cond_XP) as rules: XᵀX → I_r, PᵀX → −XᵀP (order X < P < A < Xᵀ < Pᵀ)."""
-    system = RewritingSystem(Order([X, P, A, Xt, Pt]))
-    system.add_rule((Xt, X), _i("r"), COND_XX, name="XtX", cofactors=[_by(hypothesis("XtX"))])
-    system.add_rule((Pt, X), -_w(Xt, P), COND_XP, name="PtX", cofactors=[_by(hypothesis("XtP+PtX"))])
-    return system
+    """(cond_XP) as rules: XᵀX → I_r, PᵀX → −XᵀP (order X < P < A < Xᵀ < Pᵀ); a fresh system
+    (its own order, rules and memos) on the shared, checked rules."""
+    return RewritingSystem(Order([X, P, A, Xt, Pt]), _standard_rules())
 
 
 def resolvent_letter(mu: Any, k: int = 1) -> Letter:
@@ -216,8 +230,7 @@ class FreeField(Field):
     def normalize(self, x: Any) -> Any:
         if isinstance(x, NCPoly):
             if self.lazy:   # collect coefficients only
-                terms = {k: c for k, c in ((k, simplify_coef(c)) for k, c in x.terms.items()) if c != 0}
-                return NCPoly(terms, x.row, x.col)
+                return NCPoly(nonzero_terms(x.terms), x.row, x.col)
             return self.system.normal_form(x)
         c = as_coef(x)
         return simplify_coef(c) if c is not None else x
@@ -304,7 +317,7 @@ class FreeScene(PaperObjects):
 
     def _prim(self, key: str, poly: NCPoly) -> Mat:
         """The 1×1 matrix holding a primitive letter (overridden by the tangent scene)."""
-        return Mat._rows([[poly]], self.field, poly.shape, self.tracker)
+        return FreeMat._rows([[poly]], self.field, poly.shape, self.tracker)
 
     def _letter(self, L: Letter) -> Mat:
         self._named[str(L)] = L
@@ -445,7 +458,7 @@ class FreeScene(PaperObjects):
         """c·I_m for m = n, r (or k·n, k·r: a k×k block diagonal)."""
         t, k = self._blocks(m, tag)
         blocks = [[(_i(t) * c if i == j else NCPoly.zero(t, t)) for j in range(k)] for i in range(k)]
-        return Mat._rows(blocks, self.field, (self._tag(t, k, tag),) * 2, self.tracker)
+        return FreeMat._rows(blocks, self.field, (self._tag(t, k, tag),) * 2, self.tracker)
 
     def identity(self, m: Any, tag: str | None = None) -> Mat:
         return self.scalar_matrix(1, m, tag)
@@ -454,7 +467,7 @@ class FreeScene(PaperObjects):
         t1, k1 = self._blocks(m, tags[0])
         t2, k2 = self._blocks(k, tags[1])
         rows = [[NCPoly.zero(t1, t2) for _ in range(k2)] for _ in range(k1)]
-        return Mat._rows(rows, self.field, (self._tag(t1, k1, tags[0]), self._tag(t2, k2, tags[1])), self.tracker)
+        return FreeMat._rows(rows, self.field, (self._tag(t1, k1, tags[0]), self._tag(t2, k2, tags[1])), self.tracker)
 
     def mat(self, rows, tags=("?", "?")) -> Mat:
         """A block matrix from rows of blocks (word polynomials of the scene); its spaces are the
@@ -476,7 +489,7 @@ class FreeScene(PaperObjects):
         for given, built in zip(tags, spaces):
             if given not in ("?", None) and definite(given) != definite(built):
                 raise TypeError(f"the blocks span {built}, not {given!r}")
-        return Mat._rows(rows, self.field, spaces, self.tracker)
+        return FreeMat._rows(rows, self.field, spaces, self.tracker)
 
     @property
     def In(self) -> Mat:
@@ -487,7 +500,7 @@ class FreeScene(PaperObjects):
         return self._cached("Ir", lambda: self._const_mat(_i("r")))
 
     def _const_mat(self, p: NCPoly) -> Mat:
-        return Mat._rows([[p]], self.field, p.shape, self.tracker)
+        return FreeMat._rows([[p]], self.field, p.shape, self.tracker)
 
     def tr(self, M: Any) -> Any:
         if isinstance(M, Mat):
@@ -636,10 +649,10 @@ class FreeTangentScene(FreeScene):
             b = dot._a[0, 0] if isinstance(dot, Mat) else dot
             if not isinstance(b, NCPoly) or b.shape != poly.shape:
                 raise TypeError(f"the flow's {key}-component must be a {poly.row}×{poly.col} polynomial")
-        return Mat._rows([[Dual(poly, b)]], self.field, poly.shape, self.tracker)
+        return FreeMat._rows([[Dual(poly, b)]], self.field, poly.shape, self.tracker)
 
     def _const_mat(self, p: NCPoly) -> Mat:
-        return Mat._rows([[Dual(p, NCPoly.zero(p.row, p.col))]], self.field, p.shape, self.tracker)
+        return FreeMat._rows([[Dual(p, NCPoly.zero(p.row, p.col))]], self.field, p.shape, self.tracker)
 
     def scalar_matrix(self, c: Any, m: Any, tag: str | None = None) -> Mat:
         M = self.base.scalar_matrix(c, m, tag)
@@ -656,7 +669,7 @@ def _lift_mat(M: Mat, field: Field) -> Mat:
     a = np.empty(M._a.shape, dtype=object)
     for idx, x in np.ndenumerate(M._a):
         a[idx] = Dual(x, NCPoly.zero(x.row, x.col) if isinstance(x, NCPoly) else se.Integer(0))
-    return Mat._wrap(a, field, M.tags, M.tracker)
+    return FreeMat._wrap(a, field, M.tags, M.tracker)
 
 
 def _map_value(v: Any, scene: FreeScene) -> Any:
