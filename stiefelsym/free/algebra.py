@@ -180,6 +180,14 @@ def as_coef(c: Any) -> Coef | None:
     return None
 
 
+#: What symengine's conversion sees of a word polynomial or a block matrix of the free scene: a
+#: symengine matrix (0×0).  ``c * p`` with a symengine scalar c then returns NotImplemented at
+#: once (symengine leaves products with matrices to the other operand) and p's reflected operator
+#: computes it; without it symengine tries every SymPy class on p first (milliseconds per product).
+#: Only symengine's arithmetic and comparisons read this; a polynomial is never a symengine number.
+SYMENGINE_OPAQUE = se.DenseMatrix(0, 0, [])
+
+
 def _is_matrix(o: Any) -> bool:
     return getattr(o, "__array_priority__", 0) >= 1000
 
@@ -197,6 +205,9 @@ class NCPoly:
     """A linear combination of (traces, word) terms of one type (row, col)."""
 
     __slots__ = ("terms", "row", "col")
+
+    def _symengine_(self) -> Any:
+        return SYMENGINE_OPAQUE
 
     def __init__(self, terms: Mapping[Key, Coef], row: str, col: str) -> None:
         self.terms = dict(terms)

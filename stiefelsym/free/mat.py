@@ -17,6 +17,7 @@ from typing import Any
 import numpy as np
 
 from ..matrix import Mat, unify
+from .algebra import SYMENGINE_OPAQUE
 
 
 def _one(x: Any) -> np.ndarray:
@@ -37,6 +38,11 @@ class FreeMat(Mat):
     """A Mat of the free scene with a fast path for 1×1 operands of one field."""
 
     __slots__ = ()
+
+    def _symengine_(self) -> Any:
+        """What symengine sees: an opaque symengine matrix, so that ``c * M`` with a symengine scalar
+        c comes to :meth:`__rmul__` at once (see :data:`~stiefelsym.free.algebra.SYMENGINE_OPAQUE`)."""
+        return SYMENGINE_OPAQUE
 
     def _fast(self, o: Any) -> tuple[Any, Any] | None:
         if type(o) is not FreeMat or o._field is not self._field:
