@@ -354,6 +354,19 @@ def test_coefficients_are_rational_functions_with_a_nonzero_denominator(coef):
     rejected_because(data, "coefficient")
 
 
+def test_a_coefficient_the_checker_has_parsed_before_is_checked_the_same_way(la1_certificate):
+    """The checker parses each coefficient text once: a text it accepted stays a term of its own
+    certificate (a wrong one is still rejected), a text it rejected is rejected again."""
+    assert accepted(la1_certificate) and accepted(copy.deepcopy(la1_certificate))
+    data = copy.deepcopy(la1_certificate)
+    data["entries"][0]["terms"][0]["coef"] = data["entries"][0]["terms"][1]["coef"] + " + 1"
+    for _ in range(2):
+        rejected_because(data, "does not expand to the residual")
+        bad = xtp_skew()
+        bad["entries"][0]["terms"][0]["coef"] = f"1/{ZERO}"
+        rejected_because(bad, "zero denominator")
+
+
 def test_the_checker_runs_on_a_results_file(tmp_path, catalog_free_results, capsys):
     from stiefelsym.certificate_check import main
     from stiefelsym.results import dump_results

@@ -273,3 +273,18 @@ def test_completion_reports_when_it_does_not_finish():
 def test_completion_of_the_rule_sets_in_use_adds_nothing(name):
     result = complete(rule_set(name))
     assert result.finished and not result.added
+
+
+def test_coefficients_simplify_to_a_canonical_zero_memoized():
+    from stiefelsym.free.rewriting import ZERO_TYPE, nonzero_terms, simplify_coef
+    k, m = se.Symbol("kappa"), se.Symbol("mu")
+    hidden = (k + 1) ** 2 - k ** 2 - 2 * k - 1          # zero only once expanded
+    rational = hidden / (k - m) + (k - m) / (k - m) - 1  # a rational function with zero numerator
+    for c in (hidden, rational, se.Integer(0), k - k):
+        for _ in range(2):                                # computed, then memoized
+            assert type(simplify_coef(c)) is ZERO_TYPE
+    nonzero = (k + 1) ** 2 - k ** 2
+    for _ in range(2):
+        assert simplify_coef(nonzero) == 2 * k + 1
+    assert simplify_coef(se.Rational(1, 2)) == se.Rational(1, 2)
+    assert nonzero_terms({"a": hidden, "b": nonzero, "c": se.Integer(3)}) == {"b": 2 * k + 1, "c": 3}

@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 import symengine as se
 
-from stiefelsym.fields import RationalField
+from stiefelsym.fields import Dual, RationalField
 from stiefelsym.free.algebra import DIMENSIONS, NCPoly, evaluate
 from stiefelsym.free.scene import LAMBDA, FreeScene, NeedsCoordinates
 from stiefelsym.matrix import Mat, block, comm
@@ -283,3 +283,62 @@ def test_values_are_differentiated_by_the_derivation_along_tangent_flows():
     assert s.d(s.tr(L_neum(s) @ L_neum(s)), flow) == 0
     with pytest.raises(ValueError, match="does not preserve"):
         s.d(s.Phi, neumann_flow(s, None, flip="AX"))
+
+
+# --------------------------------------------------------------------------- the one-block fast path
+def _generic(M):
+    """The same matrix as a plain Mat (the generic, entrywise path of every operation)."""
+    return Mat._wrap(M._view().copy(), M.field, M.tags, M.tracker)
+
+
+def _same(a, b) -> bool:
+    def eq(x, y):
+        assert type(x) is type(y)
+        return eq(x.a, y.a) and eq(x.b, y.b) if type(x) is Dual else x == y
+    return a.tags == b.tags and a._view().shape == b._view().shape and all(
+        eq(x, y) for x, y in zip(a._view().flat, b._view().flat))
+
+
+def test_one_block_operations_agree_with_the_generic_path():
+    from stiefelsym.free.mat import FreeMat
+    s = FreeScene(lazy=True)
+    X, P, A = s.X, s.P, s.A
+    assert type(X) is FreeMat
+    k = 1 + 2 * s.kappa
+    cases = [lambda X, P, A: X @ P.T, lambda X, P, A: P @ X.T - X @ P.T, lambda X, P, A: -(A @ X) + X,
+             lambda X, P, A: (X @ P.T @ X) * k, lambda X, P, A: s.lam * (A @ X), lambda X, P, A: X / s.lam,
+             lambda X, P, A: (X.T @ P) * Fraction(2, 3) - 3 * (P.T @ X)]
+    for f in cases:
+        fast = f(X, P, A)
+        assert type(fast) is FreeMat
+        assert _same(fast, f(_generic(X), _generic(P), _generic(A)))
+    # along a flow: entries are dual numbers, the same on both paths
+    t = s.tangent({"X": P, "P": -(A @ X)})
+    fast = t.X @ t.P.T - t.P @ t.X.T
+    assert type(fast) is FreeMat
+    slow = _generic(t.X) @ _generic(t.P).T - _generic(t.P) @ _generic(t.X).T
+    assert _same(fast, slow)
+
+
+def test_one_block_operations_check_index_spaces_like_the_generic_path():
+    s = FreeScene(lazy=True)
+    for f in (lambda X, P: X + P.T, lambda X, P: X @ P, lambda X, P: X - X.T @ P):
+        with pytest.raises(TypeError) as fast:
+            f(s.X, s.P)
+        with pytest.raises(TypeError) as slow:
+            f(_generic(s.X), _generic(s.P))
+        assert str(fast.value) == str(slow.value)
+    with pytest.raises(TypeError):
+        s.X * 0.5
+    with pytest.raises(TypeError):
+        s.X + 1
+
+
+def test_a_symengine_scalar_times_a_block_is_the_blocks_reflected_product():
+    s = FreeScene(lazy=True)
+    for c in (s.lam, 1 + 2 * s.kappa, s.scalar("c")):
+        assert _same(c * s.X, s.X * c)
+        assert c * s.X._view()[0, 0] == s.X._view()[0, 0] * c
+    assert not (s.lam == s.X) and s.lam != s.X
+    with pytest.raises(TypeError):
+        s.lam ** s.X
