@@ -14,6 +14,7 @@ from fractions import Fraction
 from typing import Any, Sequence
 
 import flint
+import numpy as np
 import mpmath
 import symengine as se
 
@@ -80,6 +81,11 @@ class SymbolicBudget(ArithmeticError):
     """A symbolic computation beyond what the exact method attempts."""
 
 
+def _generator(rng: random.Random) -> "np.random.Generator":
+    """A numpy generator seeded by one 64-bit draw of ``rng`` (a block of parameters at once)."""
+    return np.random.default_rng(rng.getrandbits(64))
+
+
 class Field:
     """Base class: exact or approximate scalar arithmetic for scenes."""
 
@@ -96,6 +102,15 @@ class Field:
         raise NotImplementedError
 
     def param(self, name: str, rng: random.Random | None) -> Any:
+        raise NotImplementedError
+
+    def param_values(self, rng: random.Random, count: int) -> "np.ndarray | None":
+        """``count`` parameters drawn at once as raw numbers (the distribution of :meth:`param`,
+        from a numpy generator seeded by one draw of ``rng``), or None where the field draws one
+        at a time.  :meth:`param_from_raw` turns one raw number into a field element."""
+        return None
+
+    def param_from_raw(self, x: Any) -> Any:
         raise NotImplementedError
 
     def is_zero(self, x: Any) -> bool:
@@ -286,6 +301,14 @@ class RationalField(Field):
     def param(self, name, rng):
         return flint.fmpq(rng.randint(-self.bound, self.bound))
 
+    def param_values(self, rng, count):
+        if self.bound >= 2**63:
+            return None
+        return _generator(rng).integers(-self.bound, self.bound, size=count, endpoint=True)
+
+    def param_from_raw(self, x):
+        return flint.fmpq(int(x))
+
     def is_zero(self, x):
         return x == 0
 
@@ -328,6 +351,14 @@ class ModularField(Field):
 
     def param(self, name, rng):
         return flint.nmod(rng.randrange(self.p), self.p)
+
+    def param_values(self, rng, count):
+        if self.p > 2**63:
+            return None
+        return _generator(rng).integers(0, self.p, size=count)
+
+    def param_from_raw(self, x):
+        return flint.nmod(int(x), self.p)
 
     def is_zero(self, x):
         return int(x) == 0 if isinstance(x, flint.nmod) else x == 0
@@ -492,6 +523,15 @@ class FloatField(Field):
         if self.dps is None and err and abs(v) < FLOAT_MIN_NORMAL:
             err += FLOAT_UNDERFLOW
         return ErrNum(v, err, abs(v), self.u)
+
+    def param_values(self, rng, count):
+        if self.scale != 1 or self.dps is not None:
+            return None
+        # exact: |k| <= 2^40 and the quotient is a power-of-two scaling
+        return _generator(rng).integers(-2**40, 2**40, size=count, endpoint=True) / 2.0**40
+
+    def param_from_raw(self, x):
+        return ErrNum(float(x), 0, abs(float(x)), self.u)
 
     def param(self, name, rng):
         k = rng.randint(-2**40, 2**40)
@@ -678,6 +718,12 @@ class DegreeField(Field):
 
     def param(self, name, rng=None):
         return Deg(1, None, self, 0.0)
+
+    def param_values(self, rng, count):
+        return np.zeros(count)
+
+    def param_from_raw(self, x):
+        return self.param("", None)
 
     def is_zero(self, x):
         return isinstance(x, Deg) and x.zero or (not isinstance(x, Deg) and x == 0)

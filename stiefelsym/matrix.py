@@ -336,17 +336,35 @@ class Mat:
         return M
 
     @classmethod
+    def _consts(cls, a: np.ndarray, field: Field, tags=(UNTYPED, UNTYPED), tracker=None) -> "Mat":
+        """Engine door: the matrix of integer constants ``a`` (no record)."""
+        be = backend(field)
+        if be is not None:
+            return cls._wrap_native(be.from_consts(a), field, tags, tracker)
+        out = np.empty(a.shape, dtype=object)
+        for idx, x in np.ndenumerate(a):
+            out[idx] = field.const(int(x))
+        return cls._wrap(out, field, tags, tracker)
+
+    @classmethod
     def zeros(cls, m: int, k: int, field: Field, tags=(UNTYPED, UNTYPED), tracker=None) -> "Mat":
+        be = backend(field)
+        if be is not None:
+            return cls._wrap_native(be.zeros(m, k), field, tags, tracker)
         a = np.empty((m, k), dtype=object)
         a.fill(field.const(0))
         return cls._wrap(a, field, tags, tracker)
 
     @classmethod
     def identity(cls, m: int, field: Field, tag=UNTYPED, tracker=None) -> "Mat":
+        be = backend(field)
+        if be is not None:
+            return cls._wrap_native(be.identity(m), field, (tag, tag), tracker)
         M = cls.zeros(m, m, field, (tag, tag), tracker)
         one = field.const(1)
+        a = M._a
         for i in range(m):
-            M._obj[i, i] = one
+            a[i, i] = one
         return M
 
     def _new(self, a, tags=None, other: "Mat | None" = None) -> "Mat":

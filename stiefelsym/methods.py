@@ -30,6 +30,7 @@ from .fields import (PRIME_LOW, PRIMES_IN_RANGE_LOWER, ConstantDegenerate, Degen
                      ErrNum, Field, FloatField, ModularField, RationalField, SymbolicBudget,
                      SymbolicField, random_prime)
 from .matrix import Mat, is_scene_number
+from .native import F64, backend
 from .results import CheckOutcome, Result
 from .scene import CoordinateAccess, Scene, SizeError
 
@@ -103,6 +104,45 @@ def _flatten(value: Any, prefix: str) -> list[tuple[str, Any]]:
     return [(prefix or "value", value)]
 
 
+def _natively_zero(value: Any) -> bool:
+    """Whether a residual matrix held by an exact whole-matrix backend is zero (one native
+    comparison; False sends the caller to the entries)."""
+    if not isinstance(value, Mat) or value._n is None:
+        return False
+    be = backend(value.field)
+    if be is None or not value.field.exact or not all(value._shape()):
+        return False
+    return be.is_zero(value._n)
+
+
+def _float_entries(value: Any, name: str, u: float) -> list[tuple[str, Any]]:
+    """The entries of a float64 residual that decide the float method's verdict.
+
+    Every decision of the float method is a maximum, an "every entry" or a "first entry such
+    that" over the entries; for a matrix in native float64 storage these are found with whole-
+    array operations and only the deciding entries are returned, in their order (the largest
+    |v|, e and e/m, the first non-finite, the first clear, the first clear that resolves, the
+    first that does not resolve)."""
+    if not (isinstance(value, Mat) and value._n is not None and type(value._n) is F64 and all(value._shape())):
+        return _entries(value, name)
+    s = value._n
+    v, m = s.v.ravel(), s.m.ravel()
+    e = np.full(v.shape, float(s.e))
+    with np.errstate(all="ignore"):
+        finite = np.isfinite(v) & np.isfinite(e) & np.isfinite(m)
+        clear = np.abs(v) > e
+        resolves = finite & (e <= FLOAT_RESOLUTION * m)
+        ratio = np.where(m != 0, e / np.where(m != 0, m, 1.0), np.where(e == 0, 0.0, np.inf))
+    picks = {int(np.argmax(np.abs(v))), int(np.argmax(e)), int(np.argmax(ratio))}
+    for mask in (~finite, clear, clear & resolves, ~resolves):
+        hit = np.flatnonzero(mask)
+        if hit.size:
+            picks.add(int(hit[0]))
+    cols = s.v.shape[1]
+    return [(f"{name}[{i // cols + 1},{i % cols + 1}]", ErrNum(float(v[i]), float(e[i]), float(m[i]), u))
+            for i in sorted(picks)]
+
+
 def call_claim(func: Callable, scene: Any) -> dict[str, Any]:
     checks = func(scene)
     if not isinstance(checks, dict) or not checks:
@@ -158,6 +198,9 @@ def _evaluate(checks: dict[str, Any], field: Field, rank_fn: Callable[[Rank], tu
                 rank_certain.append(f"{name}: {detail}")
             elif status == "every-point":
                 every_point.append(name)
+            continue
+        if _natively_zero(value):
+            outcomes.append(CheckOutcome(name, "zero"))
             continue
         bad = [(pos, x) for pos, x in _entries(value, name) if not field.is_zero(x)]
         if bad:
@@ -803,7 +846,7 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
             res.message = f"every one of {MAX_RESAMPLE} sampled points was degenerate (a pole or singular system)"
             res.seconds = time.perf_counter() - t0
             return res
-        if t == 0 and not scene.params:
+        if t == 0 and not scene.has_params():
             return _run_constant(claim, n, r, seed, func, options, res, t0)
         evaluations.append(ev)
         if kind == "modular":
@@ -812,7 +855,7 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
             check, pos, val = ev.nonzero[0]
             witness = {"seed": seed, "trial": t, "attempt": attempt, "component": comp, "field": field.name,
                        "check": check, "entry": pos, "value": field.describe(val),
-                       "point": {k: field.describe(v) for k, v in scene.params.items()}}
+                       "point": {k: field.describe(v) for k, v in scene.point_values().items()}}
             if kind == "modular":
                 witness["prime"] = field.p
     res.seconds = time.perf_counter() - t0
@@ -1008,7 +1051,7 @@ def _float_component(claim: Claim, n: int, r: int, seed: int, func: Callable, op
                             counts.append(f"{name}: {value.meaning + ': ' if value.meaning else ''}"
                                           f"{value.value} (paper: {value.expected})")
                     else:
-                        for pos, x in _entries(value, name):
+                        for pos, x in _float_entries(value, name, field.u):
                             if not isinstance(x, ErrNum):
                                 x = field.const(x)       # an exact int or Fraction
                             entries.append((pos, x))

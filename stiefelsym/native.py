@@ -54,6 +54,20 @@ class Backend:
             a[i, i] = one
         return self.from_obj(a)
 
+    def from_consts(self, a: np.ndarray) -> Any:
+        """Native storage of a numpy array of integer constants."""
+        out = np.empty(a.shape, dtype=object)
+        for idx, x in np.ndenumerate(a):
+            out[idx] = self.field.const(int(x))
+        return self.from_obj(out)
+
+    def diag(self, xs: list[Any]) -> Any:
+        """The diagonal matrix with the field elements xs on its diagonal."""
+        a = _fill(len(xs), len(xs), self.field.const(0))
+        for i, x in enumerate(xs):
+            a[i, i] = x
+        return self.from_obj(a)
+
     def block(self, grid: list[list[Any]]) -> Any:
         a = np.concatenate([np.concatenate([self.to_obj(b) for b in row], axis=1) for row in grid], axis=0)
         return self.from_obj(a)
@@ -75,6 +89,18 @@ class _FlintBackend(Backend):
 
     def shape(self, s):
         return (s.nrows(), s.ncols())
+
+    def identity(self, m):
+        M = self.zeros(m, m)
+        for i in range(m):
+            M[i, i] = 1
+        return M
+
+    def diag(self, xs):
+        M = self.zeros(len(xs), len(xs))
+        for i, x in enumerate(xs):
+            M[i, i] = x
+        return M
 
     def to_obj(self, s):
         m, k = s.nrows(), s.ncols()
@@ -138,6 +164,14 @@ class ModularBackend(_FlintBackend):
     def accepts(self, x):
         return type(x) is self._flint.nmod
 
+    def from_consts(self, a):
+        return self.from_array(a)
+
+    def from_array(self, a):
+        """Native storage of an integer array (a block of parameters), reduced mod p."""
+        m, k = a.shape
+        return self._flint.nmod_mat(m, k, a.ravel().tolist(), self.p) if m and k else self.zeros(m, k)
+
 
 class RationalBackend(_FlintBackend):
     """ℚ matrices as flint ``fmpq_mat``."""
@@ -158,14 +192,23 @@ class RationalBackend(_FlintBackend):
     def accepts(self, x):
         return type(x) in (self._flint.fmpq, self._flint.fmpz)
 
+    def from_consts(self, a):
+        return self.from_array(a)
+
+    def from_array(self, a):
+        """Native storage of an integer array (a block of parameters)."""
+        m, k = a.shape
+        return self._flint.fmpq_mat(m, k, a.ravel().tolist()) if m and k else self.zeros(m, k)
+
 
 # ----------------------------------------------------------------------------- float64
 class F64:
-    """A float64 matrix with entrywise error bounds and term scales (the whole-matrix ErrNum)."""
+    """A float64 matrix v with a normwise error bound e (a float: the Frobenius norm of the error,
+    hence a bound on every entry's error) and entrywise term scales m."""
 
     __slots__ = ("v", "e", "m")
 
-    def __init__(self, v: np.ndarray, e: np.ndarray, m: np.ndarray) -> None:
+    def __init__(self, v: np.ndarray, e: float, m: np.ndarray) -> None:
         self.v, self.e, self.m = v, e, m
 
 
@@ -176,21 +219,44 @@ def _gamma(k: int) -> float:
     return ku / (1.0 - ku) * (1.0 + 1e-6)
 
 
-def _up(x: np.ndarray, k: int) -> np.ndarray:
-    """Inflate a bound computed in float64 (k operations per entry) so that its own rounding
-    errors cannot make it too small."""
+def _up(x: float, k: int) -> float:
+    """Inflate a bound computed in float64 (k operations) so that its own rounding errors cannot
+    make it too small."""
     return x * (1.0 + _gamma(k + 4))
 
 
+def _fro(x: np.ndarray) -> float:
+    """An upper bound on the Frobenius norm of x (inf on overflow)."""
+    with np.errstate(all="ignore"):
+        return float(np.sqrt(np.sum(x * x))) * (1.0 + _gamma(x.size + 4))
+
+
+def _uf(shape) -> float:
+    """The Frobenius norm of a matrix of one underflow unit per entry (subnormal rounding)."""
+    return FLOAT_UNDERFLOW * math.sqrt(shape[0] * shape[1]) * 2.0
+
+
 class Float64Backend(Backend):
-    """float64 matrices with a sound first-order entrywise error bound and a residual-checked
-    inverse (numpy/BLAS does the arithmetic)."""
+    """float64 matrices with a sound first-order normwise error bound (the Frobenius norm of the
+    error of every operation: Higham's γ_k bounds with ‖|A||B|‖_F ≤ ‖A‖_F ‖B‖_F, propagated
+    errors by the triangle inequality) and a residual-checked inverse; numpy/BLAS does the
+    arithmetic, one product per product (and one more for the term scales)."""
 
     def __init__(self, field) -> None:
         self.field = field
 
     def accepts(self, x):
         return type(x) is ErrNum and isinstance(x.v, float)
+
+    def from_array(self, a):
+        """Native storage of exact float64 inputs (a block of parameters): no error, scale |v|."""
+        v = np.array(a, dtype=float)
+        return F64(v, 0.0, np.abs(v))
+
+    def from_consts(self, a):
+        if np.max(np.abs(a), initial=0) >= 2**53:
+            return Backend.from_consts(self, a)
+        return self.from_array(a)
 
     def from_obj(self, a):
         m, k = a.shape
@@ -199,76 +265,80 @@ class Float64Backend(Backend):
             if type(x) is not ErrNum:
                 x = self.field.const(x)
             v[idx], e[idx], s[idx] = float(x.v), float(x.e), float(x.m)
-        return F64(v, e, s)
+        return F64(v, _fro(e), s)
 
     def to_obj(self, s):
         out = np.empty(s.v.shape, dtype=object)
-        u = self.field.u
+        u, e = self.field.u, float(s.e)
         for idx in np.ndindex(s.v.shape):
-            out[idx] = ErrNum(float(s.v[idx]), float(s.e[idx]), float(s.m[idx]), u)
+            out[idx] = ErrNum(float(s.v[idx]), e, float(s.m[idx]), u)
         return out
 
     def shape(self, s):
         return s.v.shape
 
     def zeros(self, m, k):
-        z = np.zeros((m, k))
-        return F64(z, z.copy(), z.copy())
+        return F64(np.zeros((m, k)), 0.0, np.zeros((m, k)))
 
     def identity(self, m):
-        return F64(np.eye(m), np.zeros((m, m)), np.eye(m))
+        return F64(np.eye(m), 0.0, np.eye(m))
+
+    def diag(self, xs):
+        if not all(type(x) is ErrNum for x in xs):
+            return Backend.diag(self, xs)
+        return F64(np.diag([float(x.v) for x in xs]), _fro(np.array([float(x.e) for x in xs])),
+                   np.diag([float(x.m) for x in xs]))
 
     def add(self, a, b):
         with np.errstate(all="ignore"):
             v = a.v + b.v
-            return F64(v, _up(a.e + b.e + U64 * np.abs(v), 2), a.m + b.m)
+            return F64(v, _up(a.e + b.e + U64 * _fro(v) + _uf(v.shape), 3), a.m + b.m)
 
     def sub(self, a, b):
         with np.errstate(all="ignore"):
             v = a.v - b.v
-            return F64(v, _up(a.e + b.e + U64 * np.abs(v), 2), a.m + b.m)
+            return F64(v, _up(a.e + b.e + U64 * _fro(v) + _uf(v.shape), 3), a.m + b.m)
 
     def neg(self, a):
         return F64(-a.v, a.e, a.m)
 
     def matmul(self, a, b):
         k = a.v.shape[1]
+        if k == 0:
+            return self.zeros(a.v.shape[0], b.v.shape[1])
         with np.errstate(all="ignore"):
             v = a.v @ b.v
-            if k == 0:
-                return self.zeros(a.v.shape[0], b.v.shape[1])
-            av, bv = np.abs(a.v), np.abs(b.v)
-            e = av @ b.e + a.e @ bv + a.e @ b.e + _gamma(k) * (av @ bv) + k * FLOAT_UNDERFLOW
-            return F64(v, _up(e, 3 * k), a.m @ b.m)
+            na, nb = _fro(a.v), _fro(b.v)
+            e = na * b.e + a.e * nb + a.e * b.e + _gamma(k) * na * nb + k * _uf(v.shape)
+            return F64(v, _up(e, 8), a.m @ b.m)
 
     def smul(self, a, c):
         cv, ce, cm = float(c.v), float(c.e), float(c.m)
         with np.errstate(all="ignore"):
             v = a.v * cv
-            e = np.abs(a.v) * ce + a.e * abs(cv) + a.e * ce + U64 * np.abs(v) + FLOAT_UNDERFLOW
-            return F64(v, _up(e, 4), a.m * cm)
+            e = _fro(a.v) * ce + a.e * abs(cv) + a.e * ce + U64 * _fro(v) + _uf(v.shape)
+            return F64(v, _up(e, 6), a.m * cm)
 
     def T(self, a):
-        return F64(a.v.T.copy(), a.e.T.copy(), a.m.T.copy())
+        return F64(a.v.T.copy(), a.e, a.m.T.copy())
 
     def trace(self, a):
         d = np.diag(a.v)
         k = len(d)
         with np.errstate(all="ignore"):
             v = float(np.sum(d))
-            e = float(np.sum(np.diag(a.e)) + _gamma(k) * np.sum(np.abs(d)))
-            e = e * (1.0 + _gamma(2 * k + 4))
+            e = math.sqrt(k) * a.e + _gamma(k) * float(np.sum(np.abs(d))) + k * FLOAT_UNDERFLOW
+            e = e * (1.0 + _gamma(2 * k + 8))
             m = float(np.sum(np.diag(a.m)))
         return ErrNum(v, e, m, self.field.u)
 
     def inv(self, a):
-        """Z ≈ A⁻¹ from LAPACK, then a bound on |A⁻¹ − Z| for every A within the entry bounds:
+        """Z ≈ A⁻¹ from LAPACK, then a bound on ‖A⁻¹ − Z‖_F for every A within the error bound:
         with ρ ≥ ‖I − A Z‖_F (the computed residual, its rounding bound and the input's error
-        times |Z|), ρ < 1 gives ‖A⁻¹ − Z‖_F ≤ ‖Z‖_F ρ / (1 − ρ), a bound on every entry."""
+        times ‖Z‖_F), ρ < 1 gives ‖A⁻¹ − Z‖_F ≤ ‖Z‖_F ρ / (1 − ρ)."""
         m = a.v.shape[0]
-        if not np.all(np.isfinite(a.v)) or not np.all(np.isfinite(a.e)):
-            inf = np.full((m, m), math.inf)
-            return F64(np.zeros((m, m)), inf, inf)
+        if not np.all(np.isfinite(a.v)) or not math.isfinite(a.e):
+            return F64(np.zeros((m, m)), math.inf, np.full((m, m), math.inf))
         try:
             Z = np.linalg.inv(a.v)
         except np.linalg.LinAlgError as exc:
@@ -276,25 +346,22 @@ class Float64Backend(Backend):
         with np.errstate(all="ignore"):
             if not np.all(np.isfinite(Z)):
                 raise DegenerateError("a matrix indistinguishable from a singular one")
-            absZ = np.abs(Z)
-            Rv = np.eye(m) - a.v @ Z
-            Rb = np.abs(Rv) + _gamma(m + 1) * (np.abs(a.v) @ absZ + np.eye(m)) + a.e @ absZ + m * FLOAT_UNDERFLOW
-            rho = float(np.sqrt(np.sum(Rb * Rb))) * (1.0 + _gamma(2 * m * m + 8))
+            zf = _fro(Z)
+            R = np.eye(m) - a.v @ Z
+            rho = _up(_fro(R) + _gamma(m + 1) * (_fro(a.v) * zf + math.sqrt(m)) + a.e * zf + (m + 1) * _uf((m, m)), 8)
             if not rho < 1.0:
                 raise DegenerateError("a matrix too close to singular for a float64 inverse bound")
-            zf = float(np.sqrt(np.sum(absZ * absZ))) * (1.0 + _gamma(2 * m * m + 8))
             bound = zf * rho / (1.0 - rho) * (1.0 + 8 * U64)
-            e = np.full((m, m), bound)
-            return F64(Z, e, absZ + e)
+            return F64(Z, bound, np.abs(Z) + bound)
 
     def inner(self, a, b):
         """sum_ij a_ij b_ij with the dot-product bound."""
         k = a.v.size
         with np.errstate(all="ignore"):
-            av, bv = np.abs(a.v), np.abs(b.v)
             v = float(np.sum(a.v * b.v))
-            e = float(np.sum(av * b.e + a.e * bv + a.e * b.e) + _gamma(k) * np.sum(av * bv) + k * FLOAT_UNDERFLOW)
-            e = e * (1.0 + _gamma(4 * k + 4))
+            na, nb = _fro(a.v), _fro(b.v)
+            e = na * b.e + a.e * nb + a.e * b.e + _gamma(k) * na * nb + k * FLOAT_UNDERFLOW
+            e = _up(e, 8)
             m = float(np.sum(a.m * b.m))
         return ErrNum(v, e, m, self.field.u)
 
@@ -304,7 +371,11 @@ class Float64Backend(Backend):
     def block(self, grid):
         cat = lambda attr: np.concatenate([np.concatenate([getattr(b, attr) for b in row], axis=1)
                                            for row in grid], axis=0)
-        return F64(cat("v"), cat("e"), cat("m"))
+        e = 0.0
+        for row in grid:
+            for b in row:
+                e += b.e
+        return F64(cat("v"), _up(e, sum(len(row) for row in grid)), cat("m"))
 
 
 # ----------------------------------------------------------------------------- degree markers
@@ -346,6 +417,10 @@ class DegreeBackend(Backend):
 
     def to_obj(self, s):
         return _fill(s.shape[0], s.shape[1], s.d)
+
+    def from_array(self, a):
+        """A block of parameters: every entry is bounded by one parameter's marker."""
+        return DegMat(a.shape, self.field.param("", None))
 
     def shape(self, s):
         return s.shape
@@ -444,6 +519,14 @@ class DualBackend(Backend):
 
     def identity(self, m):
         return (self.base.identity(m), self.base.zeros(m, m))
+
+    def from_consts(self, a):
+        return (self.base.from_consts(a), self.base.zeros(*a.shape))
+
+    def diag(self, xs):
+        if not all(type(x) is Dual for x in xs):
+            return Backend.diag(self, xs)
+        return (self.base.diag([x.a for x in xs]), self.base.diag([x.b for x in xs]))
 
     def add(self, a, b):
         return (self.base.add(a[0], b[0]), self.base.add(a[1], b[1]))

@@ -204,7 +204,7 @@ class RevBackend:
     def _unit(self, shape, idx, g):
         from .matrix import Mat
         M = Mat.zeros(shape[0], shape[1], self.base)
-        M._obj[idx] = g
+        M._a[idx] = g
         return M
 
     def shape(self, s):

@@ -26,8 +26,9 @@ from typing import Any, Callable, Mapping
 
 import numpy as np
 
-from .fields import Dual, DualField, Field, DegenerateError
+from .fields import DegreeField, Dual, DualField, Field, DegenerateError
 from .matrix import CoordinateTracker, Mat, block, definite, scalar_matrix, unify
+from .native import backend
 from .reverse import Rev, RevField, RevMat, Unsupported, gradient as rev_gradient, leaf as rev_leaf
 
 Scalar = Any
@@ -50,6 +51,10 @@ def user_name(name: Any, what: str) -> str:
     return name
 
 
+#: the name of an entry of a parameter matrix (see :func:`param_name`)
+_ENTRY_NAME = re.compile(r"(.*)_\d+,\d+")
+
+
 def param_name(name: str, i: int, j: int) -> str:
     """The name of entry (i, j) of a parameter matrix: "S_1,12" (one name per entry at every size)."""
     return f"{name}_{i + 1},{j + 1}"
@@ -57,6 +62,8 @@ def param_name(name: str, i: int, j: int) -> str:
 
 #: False: gradients by 2nr forward passes only (the tests compare both ways)
 REVERSE_GRADIENTS = True
+#: False: the Dirac multipliers always from the solved r(r+1) system (the tests compare both ways)
+CLOSED_FORM_MULTIPLIERS = True
 
 
 class SizeError(ValueError):
@@ -173,6 +180,7 @@ class Scene(PaperObjects):
         self.options = dict(options or {})
         self._tracker = tracker if tracker is not None else CoordinateTracker({"n": n, "r": r})
         self.params: dict[str, Any] = {}
+        self._param_blocks: list[tuple[str, Any, Any]] = []
         self._cache: dict[str, Any] = {}
 
     # the problem is fixed once the scene exists: read-only
@@ -188,6 +196,10 @@ class Scene(PaperObjects):
     # parameters and primitives
     def _param(self, name: str) -> Scalar:
         """A free parameter of the chart (symbol, random number, degree marker)."""
+        if name not in self.params and self._param_blocks:
+            m = _ENTRY_NAME.fullmatch(name)
+            if m and any(b[0] == m.group(1) for b in self._param_blocks):
+                self._expand_param_blocks()
         if name not in self.params:
             value = self.field.param(name, self.rng)
             hard = self.options.get("hard")
@@ -231,7 +243,52 @@ class Scene(PaperObjects):
     def identity(self, m: int, tag="?") -> Mat:
         return Mat.identity(m, self.field, tag, self.tracker)
 
+    def _param_block(self, name: str, m: int, k: int, kind: str, tags) -> Mat | None:
+        """A skew, symmetric or general m x k matrix of fresh parameters drawn at once and kept in
+        the backend's native storage (recorded as one block, expanded into :attr:`params` only
+        when an entry is asked for by name), or None where parameters are drawn one at a time
+        (no backend, hard cases, a field without block draws, or a name already drawn)."""
+        be = backend(self.field)
+        if (be is None or self.rng is None or not hasattr(be, "from_array") or self.options.get("hard") is not None
+                or any(b[0] == name for b in self._param_blocks)
+                or param_name(name, 0, 1 if kind == "skew" else 0) in self.params):
+            return None
+        if kind == "general":
+            cells = (np.repeat(np.arange(m), k), np.tile(np.arange(k), m))
+        else:
+            cells = np.triu_indices(m, 1 if kind == "skew" else 0)
+        vals = self.field.param_values(self.rng, len(cells[0]))
+        if vals is None:
+            return None
+        arr = np.zeros((m, k), dtype=vals.dtype)
+        arr[cells] = vals
+        if kind == "skew":
+            arr[cells[1], cells[0]] = -vals
+        elif kind == "sym":
+            arr[cells[1], cells[0]] = vals
+        self._param_blocks.append((name, cells, vals))
+        return Mat._wrap_native(be.from_array(arr), self.field, tags, self.tracker)
+
+    def _expand_param_blocks(self) -> None:
+        """Enter every parameter drawn in a block into :attr:`params` under its own name."""
+        blocks, self._param_blocks[:] = list(self._param_blocks), []
+        for name, (rows, cols), vals in blocks:
+            for i, j, x in zip(rows.tolist(), cols.tolist(), vals.tolist()):
+                self.params[param_name(name, i, j)] = self.field.param_from_raw(x)
+
+    def point_values(self) -> dict[str, Any]:
+        """Every parameter of the point drawn so far, by name (a witness's coordinates)."""
+        self._expand_param_blocks()
+        return self.params
+
+    def has_params(self) -> bool:
+        """Whether any parameter has been drawn."""
+        return bool(self.params) or bool(self._param_blocks)
+
     def _skew_params(self, name: str, m: int, tag: str) -> Mat:
+        M = self._param_block(name, m, m, "skew", (tag, tag))
+        if M is not None:
+            return M
         M = self.zeros(m, m, (tag, tag))
         a = M._a
         for i in range(m):
@@ -241,6 +298,9 @@ class Scene(PaperObjects):
         return M
 
     def _sym_params(self, name: str, m: int, tag: str) -> Mat:
+        M = self._param_block(name, m, m, "sym", (tag, tag))
+        if M is not None:
+            return M
         M = self.zeros(m, m, (tag, tag))
         a = M._a
         for i in range(m):
@@ -254,6 +314,9 @@ class Scene(PaperObjects):
         return self._general_params(f"{USER_PARAMS}{user_name(name, 'general_params')}[{m}x{k}]", m, k, tags)
 
     def _general_params(self, name: str, m: int, k: int, tags) -> Mat:
+        M = self._param_block(name, m, k, "general", tags)
+        if M is not None:
+            return M
         M = self.zeros(m, k, tags)
         a = M._a
         for i in range(m):
@@ -279,9 +342,11 @@ class Scene(PaperObjects):
         Q = (In - S) @ (In + S).inv()          # in O(n); det Q = 1
         # the first r columns (the first one negated on the second component of O(n)) as one
         # product with the constant n x r matrix [D; 0]
-        J = self.zeros(n, r, ("n", "r"))
-        for i in range(r):
-            J._obj[i, i] = self.const(-1 if i == 0 and self.component % 2 == 1 else 1)
+        D = np.zeros((n, r), dtype=np.int64)
+        D[range(r), range(r)] = 1
+        if self.component % 2 == 1:
+            D[0, 0] = -1
+        J = Mat._consts(D, self.field, ("n", "r"), self.tracker)
         X = Q @ J
         W = self._skew_params(f"{prefix}W", r, "r")
         Z = self._general_params(f"{prefix}Z", n, r, ("n", "r"))
@@ -374,9 +439,14 @@ class Scene(PaperObjects):
         def build():
             if self.chart == "equivariant":
                 return self._sym_params("A", self.n, "n")
+            xs = self._cached("a", lambda: [self._param(f"a_{i + 1}") for i in range(self.n)])
+            be = backend(self.field)
+            if be is not None:
+                return Mat._wrap_native(be.diag(xs), self.field, ("n", "n"), self.tracker)
             M = self.zeros(self.n, self.n, ("n", "n"))
-            for i, x in enumerate(self._cached("a", lambda: [self._param(f"a_{i + 1}") for i in range(self.n)])):
-                M._a[i, i] = x
+            a = M._a
+            for i, x in enumerate(xs):
+                a[i, i] = x
             return M
         return self._cached("A", build)
 
@@ -657,10 +727,40 @@ class Scene(PaperObjects):
         HX, HP = self.gradient(H)
         return Flow(HP, -HX)
 
+    def _closed_form_multipliers(self, HX: Mat, HP: Mat) -> tuple[Mat, Mat] | None:
+        """Λ, Π of (dot_XP) in closed form, where the constraint set is the standard one and
+        XᵀX = I_r holds exactly at the point (checked in the field; every chart's point is on V by
+        construction, so for degree markers the structure alone is used):
+
+            Π = sym(XᵀH_P),   Λ = sym(XᵀH_X − H_PᵀP + ΠK − KΠ),   K = XᵀP.
+
+        With XᵀX = I the tangency conditions sym(XᵀẊ) = 0, sym(ẊᵀP + XᵀṖ) = 0 are triangular in
+        (Π, Λ) with identity diagonal blocks, so these are the unique multipliers: the Dirac flow
+        Ω∇H − Σ wᵢ Ω∇Fᵢ of H (the tests compare it with the solved system in every field).  None
+        where the closed form does not apply (another realization, floating point, XᵀX ≠ I)."""
+        if not CLOSED_FORM_MULTIPLIERS or self.realization != "standard" or not self.field.exact or self.chart not in ("cayley", "equivariant"):
+            return None
+        markers = isinstance(self.field, DegreeField)
+        X, P = self.X, self.P
+        if not markers and not _exactly_zero(X.T @ X - self.Ir):
+            return None
+        half = self.q(1, 2)
+        sym = lambda M: (M + M.T) * half        # noqa: E731
+        Pi = sym(X.T @ HP)
+        K = X.T @ P
+        Lam = sym(X.T @ HX - HP.T @ P + Pi @ K - K @ Pi)
+        return Lam, Pi
+
     def dirac_flow(self, H: Function) -> Flow:
         """dz/dt = {z, H} for the Dirac bracket (Dirac_bracket), z = entries of X, P:
-        ż = Ω∇H − Σ_i w_i Ω∇F_i with w = C {F, H}_0."""
+        ż = Ω∇H − Σ_i w_i Ω∇F_i with w = C {F, H}_0 (in closed form where
+        :meth:`_closed_form_multipliers` applies)."""
         def build():
+            HX, HP = self.gradient(H)
+            closed = self._cached_for("closed", H, lambda: self._closed_form_multipliers(HX, HP))
+            if closed is not None:
+                Lam, Pi = closed
+                return Flow(HP - self.X @ Pi, -HX + self.X @ Lam + self.P @ Pi)
             Gs = self._constraint_gradients()
             zX, zP = self._pair_omega(self.gradient(H))
             FjH = [self._pair_dot(g, (zX, zP)) for g in Gs]
@@ -695,7 +795,8 @@ class Scene(PaperObjects):
         Raises DegenerateError when the multipliers are not unique."""
         def build():
             HX, HP = self.gradient(H)
-            Lam, Pi = self._solve_multipliers(
+            closed = self._cached_for("closed", H, lambda: self._closed_form_multipliers(HX, HP))
+            Lam, Pi = closed if closed is not None else self._solve_multipliers(
                 (HP, -HX), lambda name, XE, PE: (self.zeros(self.n, self.r, ("n", "r")), XE) if name == "Lambda"
                 else (-XE, PE))
             Xd = HP - self.X @ Pi
@@ -734,7 +835,7 @@ class Scene(PaperObjects):
         """The derivative of F (a function of the scene) along a flow."""
         tangent = flow.tangent() if isinstance(flow, Flow) else dict(flow)
         value = F(self.tangent(tangent))
-        return map_entries(value, lambda x: x.b if isinstance(x, Dual) else self.const(0), self)
+        return _derivative_part(value, self)
 
 
 class CoordinateAccess(ValueError):
@@ -819,7 +920,7 @@ class TangentScene(_LiftedScene):
         super().__init__(base.n, base.r, DualField(base.field), chart=base.chart, rng=base.rng,
                          component=base.component, realization=base.realization,
                          options=base.options, tracker=base.tracker)
-        self.params = base.params
+        self.params, self._param_blocks = base.params, base._param_blocks
 
     def _lift_primitive(self, M: Any, key: str | None) -> Any:
         return self._lift(M, self.flow.get(key) if key is not None else None)
@@ -845,7 +946,7 @@ class ReverseScene(_LiftedScene):
         super().__init__(base.n, base.r, RevField(base.field), chart=base.chart, rng=base.rng,
                          component=base.component, realization=base.realization,
                          options=base.options, tracker=base.tracker)
-        self.params = base.params
+        self.params, self._param_blocks = base.params, base._param_blocks
         self.leaves: dict[str, RevMat] = {}
 
     def _lift_primitive(self, M: Any, key: str | None) -> Any:
@@ -890,9 +991,9 @@ def _checked_tangent(base: Scene, flow: Mapping[str, Any]) -> dict[str, Mat]:
         if not isinstance(v, Mat):
             raise TypeError(f"the {key}-component of a tangent vector must be a matrix")
         prim = getattr(base, key)
-        if v._a.shape != prim._a.shape:
-            raise ValueError(f"the {key}-component of a tangent vector has shape {v._a.shape}, "
-                             f"{key} has {prim._a.shape}")
+        if v._shape() != prim._shape():
+            raise ValueError(f"the {key}-component of a tangent vector has shape {v._shape()}, "
+                             f"{key} has {prim._shape()}")
         for t, p in zip(v.tags, prim.tags):
             unify(t, p, f"the {key}-component of a tangent vector", base.tracker)
         if v._coords:
@@ -918,6 +1019,27 @@ def _flatten_value(v: Any, symmetric_lists: bool) -> list[Any]:
             out.extend(_flatten_value(x, symmetric_lists))
         return out
     return [v]
+
+
+def _exactly_zero(M: Mat) -> bool:
+    """Whether every entry of a matrix over an exact field is zero (natively where possible)."""
+    be = backend(M.field)
+    if be is not None and M._n is not None:
+        return be.is_zero(M._n)
+    f = M.field
+    return all(f.is_zero(x) for x in M._view().flat)
+
+
+def _derivative_part(v: Any, scene: Scene) -> Any:
+    """The ε-part of a value over the dual numbers (a Mat, a scalar, or a dict/list/tuple of
+    them): whole matrices natively where the dual backend holds them."""
+    if isinstance(v, Mat) and v._n is not None and type(v._n) is tuple and getattr(v._field, "base", None) is scene.field:
+        return Mat._wrap_native(v._n[1], scene.field, v.tags, scene.tracker, v._coords)
+    if isinstance(v, dict):
+        return {k: _derivative_part(x, scene) for k, x in v.items()}
+    if isinstance(v, (list, tuple)):
+        return type(v)(_derivative_part(x, scene) for x in v)
+    return map_entries(v, lambda x: x.b if isinstance(x, Dual) else scene.const(0), scene)
 
 
 def map_entries(v: Any, f, scene: Any) -> Any:

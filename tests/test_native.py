@@ -139,7 +139,7 @@ def test_reverse_gradients_equal_forward_gradients(make):
             scene_mod.REVERSE_GRADIENTS = False
             try:
                 fwd = Scene(4, 2, make(), chart=chart, rng=random.Random(7))
-                fwd.params.update(base.params)
+                fwd.params.update(base.point_values())
                 fg = fwd.gradient(H)
             finally:
                 scene_mod.REVERSE_GRADIENTS = True
@@ -192,3 +192,52 @@ def test_an_entrywise_hamiltonian_is_differentiated_exactly(method):
     run = METHOD_RUNNERS[method]
     assert run(_flow_claim(1, 2), 3, 2, 0).verdict in ("checked", "numeric")
     assert run(_flow_claim(1, 3), 3, 2, 0).verdict == "fails"       # the wrong coefficient is refuted
+
+
+# -- the closed-form Dirac multipliers against the solved r(r+1) system ---------------------
+
+def _flows(s, H):
+    d, m = s.dirac_flow(H), s.multiplier_flow(H)
+    return [d.Xdot, d.Pdot, m.Xdot, m.Pdot, m["Lambda"], m["Pi"]]
+
+
+@pytest.mark.parametrize("make", [lambda: ModularField(P61), RationalField])
+@pytest.mark.parametrize("chart", ["cayley", "equivariant"])
+def test_closed_form_multipliers_equal_the_solved_system(make, chart):
+    for n, r in ((4, 2), (3, 3), (5, 1)):
+        base = Scene(n, r, make(), chart=chart, rng=random.Random(11), component=1 if r == n else 0)
+        for H in _hamiltonians(base):
+            closed = _flows(base, H)
+            assert base._cached_for("closed", H, lambda: None) is not None
+            scene_mod.CLOSED_FORM_MULTIPLIERS = False
+            try:
+                solved_scene = Scene(n, r, make(), chart=chart, rng=random.Random(11), component=1 if r == n else 0)
+                solved_scene.params.update(base.point_values())
+                solved = _flows(solved_scene, H)
+            finally:
+                scene_mod.CLOSED_FORM_MULTIPLIERS = True
+            for a, b in zip(closed, solved):
+                assert entries(a) == entries(b)
+
+
+def test_closed_form_multipliers_need_the_standard_constraint_set_exactly():
+    """Not for floating point (XᵀX = I only up to rounding) nor for the metric realization."""
+    H = lambda t: t.tr(t.P.T @ t.P) / 2      # noqa: E731
+    f = Scene(4, 2, FloatField(), rng=random.Random(1))
+    assert f._closed_form_multipliers(*f.gradient(H)) is None
+    m = Scene(4, 2, ModularField(P61), rng=random.Random(1), realization="metric")
+    assert m._closed_form_multipliers(*m.gradient(H)) is None
+    e = Scene(4, 2, ModularField(P61), rng=random.Random(1))
+    assert e._closed_form_multipliers(*e.gradient(H)) is not None
+
+
+def test_blocks_of_parameters_are_named_entries_of_the_point():
+    """Parameters drawn as one native block are the point's named coordinates: asking for one by
+    name gives the entry the block holds."""
+    s = Scene(5, 2, ModularField(P61), rng=random.Random(3))
+    S = s._skew_params("S", 5, "n")
+    assert S._n is not None
+    vals = s.point_values()
+    assert len(vals) == 10
+    assert vals["S_1,2"] == S._view()[0, 1] and vals["S_2,4"] == S._view()[1, 3] == -S._view()[3, 1]
+    assert s._param("S_1,2") == S._view()[0, 1]
