@@ -112,23 +112,57 @@ def word_key(w: Word) -> tuple:
     return (len(w), tuple(L.sort_key for L in w))
 
 
+# Memos of functions of a word.  Letters compare by name, so a hit counts only when the stored
+# word has the very same letter objects (a letter of another scene with the same name may have
+# other types or another adjoint).
+_ROTATIONS: dict = {}
+_CYCLE_REPS: dict = {}
+_MEMO_MAX = 200_000
+
+
+def _memo_get(memo: dict, w: Word) -> Any:
+    hit = memo.get(w)
+    if hit is not None:
+        stored, value = hit
+        for a, b in zip(stored, w):
+            if a is not b:
+                return None
+        return value
+    return None
+
+
+def _memo_put(memo: dict, w: Word, value: Any) -> Any:
+    if len(memo) >= _MEMO_MAX:
+        memo.clear()
+    memo[w] = (w, value)
+    return value
+
+
 def min_rotation(c: Word) -> Word:
     """The least rotation of a cyclic word (in the order of :func:`word_key`)."""
+    hit = _memo_get(_ROTATIONS, c)
+    if hit is not None:
+        return hit
     keys = tuple(L.sort_key for L in c)
     best = min(range(len(c)), key=lambda k: keys[k:] + keys[:k])
-    return c[best:] + c[:best]
+    return _memo_put(_ROTATIONS, c, c[best:] + c[:best])
 
 
 def cycle_rep(w: Word) -> tuple[int, Word]:
     """Canonical (sign, representative) of tr(w) under rotation and tr(w*) = tr(w).
 
     sign 0 means tr(w) = −tr(w), i.e. the trace vanishes."""
+    hit = _memo_get(_CYCLE_REPS, w)
+    if hit is not None:
+        return hit
     c = min_rotation(w)
     s, ws = star_word(w)
     cs = min_rotation(ws)
     if cs == c:
-        return (1 if s == 1 else 0), c
-    return (1, c) if word_key(c) < word_key(cs) else (s, cs)
+        out = (1 if s == 1 else 0), c
+    else:
+        out = (1, c) if word_key(c) < word_key(cs) else (s, cs)
+    return _memo_put(_CYCLE_REPS, w, out)
 
 
 def word_str(w: Word) -> str:

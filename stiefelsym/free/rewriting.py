@@ -89,9 +89,14 @@ def _simplify(c: Coef) -> Coef:
 
 
 def nonzero_terms(terms: dict) -> dict:
-    """The terms with simplified coefficients, zero coefficients dropped."""
+    """The terms with simplified coefficients, zero coefficients dropped (a new dict)."""
     out = {}
     for k, c in terms.items():
+        t = type(c)
+        if t in _NUMBER_TYPES:
+            if t is not ZERO_TYPE:
+                out[k] = c
+            continue
         c = simplify_coef(c)
         if type(c) is not ZERO_TYPE:
             out[k] = c

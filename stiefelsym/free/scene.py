@@ -230,7 +230,7 @@ class FreeField(Field):
     def normalize(self, x: Any) -> Any:
         if isinstance(x, NCPoly):
             if self.lazy:   # collect coefficients only
-                return NCPoly(nonzero_terms(x.terms), x.row, x.col)
+                return NCPoly._raw(nonzero_terms(x.terms), x.row, x.col)
             return self.system.normal_form(x)
         c = as_coef(x)
         return simplify_coef(c) if c is not None else x
@@ -320,8 +320,12 @@ class FreeScene(PaperObjects):
         return FreeMat._rows([[poly]], self.field, poly.shape, self.tracker)
 
     def _letter(self, L: Letter) -> Mat:
-        self._named[str(L)] = L
-        return self._cached(f"letter:{L}", lambda: self._prim(str(L), _w(L)))
+        key = "letter:" + L
+        hit = self._cache.get(key)
+        if hit is None:
+            self._named[str(L)] = L
+            hit = self._cache[key] = self._prim(str(L), _w(L))
+        return hit
 
     @property
     def n(self) -> "FreeSize":
