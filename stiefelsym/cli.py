@@ -7,7 +7,7 @@ written, no worker process is left behind).
 """
 from __future__ import annotations
 
-import importlib.metadata
+import importlib
 import inspect
 import json
 import os
@@ -24,12 +24,14 @@ from typing import Any, Sequence
 
 import click
 
+from ._lazy import lazy
 from .claims import CatalogError, ClaimTimeout, Claim, Registry, Size, load_catalog, load_claims_file
 from .hard import HARD_CASES
 from .pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT, Terminated, raise_on_sigterm
-from .report import KIND_MEANING, render_junit, render_latex, render_markdown, render_summary
 from .results import Result, dump_results, load_results, write_atomic
 from .scene import SizeError
+
+_report = lazy("stiefelsym.report", globals(), "_report")
 
 EXIT_OK, EXIT_UNEXPECTED, EXIT_INPUT, EXIT_INTERRUPTED, EXIT_TERMINATED = 0, 1, 2, 130, 143
 #: the default of --budget: seconds a single run may be predicted to take (see stiefelsym.costmodel)
@@ -338,8 +340,8 @@ def _write_reports(d: Path, results: list[Result], meta: dict[str, Any]) -> list
     """Render everything first, then write each file atomically."""
     mutation = _mutation(d)
     texts = {"results.json": dump_results(results, meta),
-             "verification.md": render_markdown(results, meta, mutation=mutation),
-             "verification.tex": render_latex(results, meta, mutation=mutation)}
+             "verification.md": _report.render_markdown(results, meta, mutation=mutation),
+             "verification.tex": _report.render_latex(results, meta, mutation=mutation)}
     paths = []
     for name, text in texts.items():
         write_atomic(Path(d) / name, text)
@@ -350,6 +352,7 @@ def _write_reports(d: Path, results: list[Result], meta: dict[str, Any]) -> list
 # --------------------------------------------------------------------------- run metadata
 
 def _versions() -> dict[str, str]:
+    import importlib.metadata
     out = {"python": platform.python_version()}
     for dist in VERSIONED:
         try:
@@ -726,11 +729,11 @@ def _verify(out: Any, ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tu
             "versions": _versions(), "platform": platform.platform(terse=True),
             "commit": _commit(), "sections": _section_titles(),
         }
-        summary = render_summary(results)
+        summary = _report.render_summary(results)
         if fmt == "json":
             click.echo(dump_results(results, meta), file=out, nl=False)
         elif fmt == "junit":
-            click.echo(render_junit(results, meta), file=out, nl=False)
+            click.echo(_report.render_junit(results, meta), file=out, nl=False)
         say(summary, nl=False)
         if any(r.false_pass_bound is not None for r in results):
             say(P_LEGEND)
@@ -815,7 +818,7 @@ def show(claim_id: str, claims_files: tuple[str, ...]) -> None:
     registry, _ = _registry(claims_files, (claim_id,))
     c = _lookup(registry, claim_id)
     click.echo(f"{c.id}  (paper: {', '.join(c.paper)})  §{c.section or '-'}")
-    click.echo(f"kind:        {c.kind}: {KIND_MEANING.get(c.kind, '')}")
+    click.echo(f"kind:        {c.kind}: {_report.KIND_MEANING.get(c.kind, '')}")
     if c.title:
         click.echo(f"docstring:   {c.title}")
     click.echo(f"statement:   {c.statement or '(none given)'}")
@@ -887,8 +890,8 @@ def report(results_file: Path | None, report_dir: Path | None) -> None:
     target = report_dir or source.parent
     _check_report_dir(target)
     mutation = _mutation(source.parent)
-    texts = {"verification.md": render_markdown(results, meta, mutation=mutation),
-             "verification.tex": render_latex(results, meta, mutation=mutation)}
+    texts = {"verification.md": _report.render_markdown(results, meta, mutation=mutation),
+             "verification.tex": _report.render_latex(results, meta, mutation=mutation)}
     try:
         for name, text in texts.items():
             write_atomic(target / name, text)

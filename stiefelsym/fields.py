@@ -13,10 +13,13 @@ import random
 from fractions import Fraction
 from typing import Any, Sequence
 
-import flint
 import numpy as np
-import mpmath
-import symengine as se
+
+from ._lazy import lazy
+
+flint = lazy("flint", globals())
+mpmath = lazy("mpmath", globals())
+se = lazy("symengine", globals(), "se")
 
 MERSENNE_61 = 2**61 - 1
 

@@ -34,12 +34,21 @@ from .reverse import Rev
 class CoordinateTracker:
     """Records, append-only, how claim code looked at coordinates of ℝⁿ; knows the sizes n, r."""
 
-    __slots__ = ("_used", "dims")
+    __slots__ = ("_used", "dims", "_sizes")
 
     def __init__(self, dims: dict[str, int] | None = None) -> None:
         self._used: list[str] = []
         #: numeric sizes of the definite spaces (None for the dimension-free scene)
         self.dims = dict(dims) if dims is not None else None
+        self._sizes: dict[str, int | None] = {}
+
+    def size(self, tag: str) -> int | None:
+        """The dimension of a space tag at these sizes (None for an indefinite one), memoized."""
+        try:
+            return self._sizes[tag]
+        except KeyError:
+            v = self._sizes[tag] = space_size(tag, self.dims)
+            return v
 
     def touch(self, what: str) -> None:
         if what not in self._used:
@@ -212,7 +221,7 @@ class Mat:
             if tracker.dims is not None:
                 shape = self._shape()
                 for tag, size in zip(self._tags, shape):
-                    want = space_size(tag, tracker.dims)
+                    want = tracker.size(tag)
                     if want is not None and want != size:
                         raise TypeError(f"a {shape[0]}x{shape[1]} matrix cannot be indexed by "
                                         f"{_space_text(tag)}, of dimension {want}")

@@ -21,10 +21,9 @@ from dataclasses import dataclass, field as dc_field
 from fractions import Fraction
 from typing import Any, Callable
 
-import flint
-import mpmath
 import numpy as np
 
+from ._lazy import lazy
 from .claims import Claim, Count, Rank, deadline
 from .fields import (PRIME_LOW, PRIMES_IN_RANGE_LOWER, ConstantDegenerate, DegenerateError, Deg, DegreeField,
                      ErrNum, Field, FloatField, ModularField, RationalField, SymbolicBudget,
@@ -33,6 +32,9 @@ from .matrix import Mat, is_scene_number
 from .native import F64, backend
 from .results import CheckOutcome, Result
 from .scene import CoordinateAccess, Scene, SizeError
+
+flint = lazy("flint", globals())
+mpmath = lazy("mpmath", globals())
 
 EXACT_CAYLEY_MAX_N = 3       # the symbolic Cayley chart (used when coordinates are read)
 EXACT_TIME_LIMIT = 120.0      # seconds per (claim, size) for the symbolic method
