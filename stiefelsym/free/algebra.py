@@ -98,6 +98,13 @@ def check_word(w: Word) -> None:
 
 def star_word(w: Word) -> tuple[int, Word]:
     """w* = sign · (reversed word of adjoint letters)."""
+    hit = _memo_get(_STARS, w)
+    if hit is not None:
+        return hit
+    return _memo_put(_STARS, w, _star_word(w))
+
+
+def _star_word(w: Word) -> tuple[int, Word]:
     sign = 1
     out = []
     for L in reversed(w):
@@ -117,6 +124,7 @@ def word_key(w: Word) -> tuple:
 # other types or another adjoint).
 _ROTATIONS: dict = {}
 _CYCLE_REPS: dict = {}
+_STARS: dict = {}
 _MEMO_MAX = 200_000
 
 
@@ -238,7 +246,8 @@ def merge_traces(a: Traces, b: Traces) -> Traces:
 class NCPoly:
     """A linear combination of (traces, word) terms of one type (row, col)."""
 
-    __slots__ = ("terms", "row", "col")
+    #: _starred: the transpose, once computed (polynomials are immutable; * is an involution)
+    __slots__ = ("terms", "row", "col", "_starred")
 
     def _symengine_(self) -> Any:
         return SYMENGINE_OPAQUE
@@ -410,13 +419,20 @@ class NCPoly:
 
     def star(self) -> "NCPoly":
         """The involution (transpose): reverses words, adjoint letters; traces are fixed."""
+        try:
+            return self._starred
+        except AttributeError:
+            pass
         out: dict = {}
         for (tm, w), c in self.terms.items():
             s, ws = star_word(w)
             k = (tm, ws)
             v = c if s == 1 else -c
             out[k] = out[k] + v if k in out else v
-        return NCPoly._raw(out, self.col, self.row)
+        res = NCPoly._raw(out, self.col, self.row)
+        res._starred = self
+        self._starred = res
+        return res
 
     def expand(self) -> "NCPoly":
         """Expanded coefficients, zero terms dropped (no constraints used)."""

@@ -63,8 +63,26 @@ def simplify_coef(c: Coef) -> Coef:
     e = _simplify(c)
     if len(_SIMPLIFIED) >= _SIMPLIFIED_MAX:
         _SIMPLIFIED.clear()
+        _SIMPLE.clear()
     _SIMPLIFIED[c] = e
+    if type(e) is not ZERO_TYPE:
+        _SIMPLE.add(e)   # simplify_coef is idempotent: e simplifies to itself
     return e
+
+
+#: nonzero coefficients that simplify_coef returns unchanged (its nonzero values)
+_SIMPLE: set = set()
+_NONZERO_NUMBER_TYPES = frozenset(_NUMBER_TYPES - {ZERO_TYPE})
+
+
+def is_simplified(c: Coef) -> bool:
+    """Whether simplify_coef(c) is c (a nonzero number, or a nonzero value simplify_coef returned)."""
+    if type(c) in _NONZERO_NUMBER_TYPES:
+        return True
+    try:
+        return c in _SIMPLE
+    except TypeError:
+        return False
 
 
 def _simplify(c: Coef) -> Coef:

@@ -26,7 +26,8 @@ from ..scene import USER_SCALAR, Flow, PaperObjects, map_entries
 from .algebra import (DIMENSIONS, Letter, NCPoly, NeedsCoordinates, as_coef, coef_latex, derivation,
                       letter_pair, skew_letter, substitute, symmetric_letter, trace)
 from .mat import FreeMat
-from .rewriting import Cofactor, Hypothesis, Order, Reduction, RewritingSystem, nonzero_terms, simplify_coef
+from .rewriting import (Cofactor, Hypothesis, Order, Reduction, RewritingSystem, is_simplified, nonzero_terms,
+                        simplify_coef)
 from .traces import gradient
 
 Function = Callable[[Any], Any]
@@ -230,7 +231,10 @@ class FreeField(Field):
     def normalize(self, x: Any) -> Any:
         if isinstance(x, NCPoly):
             if self.lazy:   # collect coefficients only
-                return NCPoly._raw(nonzero_terms(x.terms), x.row, x.col)
+                for c in x.terms.values():
+                    if not is_simplified(c):
+                        return NCPoly._raw(nonzero_terms(x.terms), x.row, x.col)
+                return x    # polynomials are immutable: nothing to collect, the same one
             return self.system.normal_form(x)
         c = as_coef(x)
         return simplify_coef(c) if c is not None else x
