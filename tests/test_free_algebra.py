@@ -174,3 +174,36 @@ def test_evaluate_is_a_homomorphism():
         assert (evaluate(p.star(), vals, sc) == evaluate(p, vals, sc).T).all()
         t = evaluate(trace(q), vals, sc)
         assert t == sum(np.diag(evaluate(q, vals, sc)), Fraction(0))
+
+
+def test_memoized_transposes_and_cycle_representatives_need_the_same_letters():
+    """Words compare by letter names: a memo hit must not hand one scene's letter to another."""
+    rng = random.Random(7)
+    for row, col in TYPES:
+        p = random_poly(rng, row, col)
+        assert p.star() is p.star() and p.star().star() is p
+        fresh = NCPoly(p.terms, row, col)
+        assert fresh.star() == p.star() and fresh.star().star() == p
+    G, Gt = letter_pair("gen:G", "gen:G^T", "n", "r")
+    H, Ht = letter_pair("gen:G", "gen:G^T", "n", "r")   # another scene's letters, of the same names
+
+    def only(word, *allowed):
+        return all(any(L is M for M in allowed) for L in word)
+
+    for _ in range(2):
+        assert only(cycle_rep((Gt, X))[1], G, Gt, X, Xt) and only(cycle_rep((Ht, X))[1], H, Ht, X, Xt)
+        assert only(next(iter(NCPoly.word((X, Gt)).star().terms))[1], G, Gt, X, Xt)
+        assert only(next(iter(NCPoly.word((X, Ht)).star().terms))[1], H, Ht, X, Xt)
+
+
+def test_lazy_normalization_keeps_simplified_polynomials_and_collects_the_others():
+    from stiefelsym.free.rewriting import is_simplified
+    from stiefelsym.free.scene import FreeField, standard_system
+    f = FreeField(standard_system(), lazy=True)
+    p = w(X, Pt) * (1 + 2 * kappa) + w(P, Xt) * 3
+    q = f.normalize(p)
+    assert q is not p and q.terms[((), (X, Pt))] == 1 + 2 * kappa and is_simplified(1 + 2 * kappa)
+    assert f.normalize(q) is q
+    hidden = (kappa + 1) ** 2 - kappa ** 2 - 2 * kappa - 1
+    r = f.normalize(q + w(X, Pt) * hidden - w(P, Xt) * 3)
+    assert set(r.terms) == {((), (X, Pt))} and not is_simplified(hidden) and not is_simplified(se.Integer(0))
