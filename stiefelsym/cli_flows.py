@@ -48,9 +48,10 @@ def _check_report_dir(d: Path) -> None:
               metavar="FILE", help="The catalog's results.json, for the algebraic verdicts of each Lax pair.")
 @click.option("--quick", is_flag=True, help="Small sizes and short times (a few seconds), for tests.")
 def flows(report_dir: Path, results_path: Path, quick: bool) -> int:
-    """Integrate the Neumann (every κ), Jensen, Manakov, magnetic and coupled flows with DOP853, RATTLE
-    and RK4 + projection; follow the constraints, the Hamiltonian and the spectra of the Lax matrices;
-    compare the Jensen geodesics with the closed forms of Edelman, Arias and Smith."""
+    """Integrate the Neumann (every κ), Jensen, Manakov, magnetic and coupled flows with DOP853, the
+    symplectic constraint-preserving steps RATTLE and RATTLE4 and RK4 + projection; follow the
+    constraints, the Hamiltonian and the spectra of the Lax matrices; tabulate the error reached per
+    second of compute; compare the Jensen geodesics with the closed forms of Edelman, Arias and Smith."""
     _check_report_dir(report_dir)
     try:
         import matplotlib  # noqa: F401  (checked before any integration)

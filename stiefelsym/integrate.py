@@ -638,10 +638,14 @@ def _shake(Xn: Array, Y: Array, max_iter: int = 50) -> Array:
     X = Y
     for _ in range(max_iter):
         X = Y - Xn @ M
-        if np.abs(X.T @ X - I).max() <= 4e-16:
+        err = np.abs(X.T @ X - I).max()
+        if err <= 4e-16:
             break
         M = (Linv @ (F0 + (M @ M).ravel(order="F"))).reshape(r, r, order="F")
         M = (M + M.T) / 2
+    else:
+        if not err <= 1e-12:
+            raise RuntimeError(f"SHAKE did not converge (‖XᵀX − I‖ = {err:.1e}): the step is too large for this flow")
     return X
 
 
@@ -761,6 +765,10 @@ def symplectic_scheme(flow: Flow) -> str:
 def expm_skew(S: Array) -> Array:
     """exp(S) for a real skew-symmetric S, orthogonal to rounding whatever ‖S‖ (through the Hermitian
     eigendecomposition of iS, unlike the scaling and squaring of expm)."""
+    if S.shape == (2, 2):                      # exp(θJ), J = [[0, 1], [−1, 0]]: the rotation by −θ
+        th = (S[0, 1] - S[1, 0]) / 2
+        c, s = math.cos(th), math.sin(th)
+        return np.array([[c, s], [-s, c]])
     w, U = np.linalg.eigh(1j * (S - S.T) / 2)
     return ((U * np.exp(-1j * w)) @ U.conj().T).real
 
