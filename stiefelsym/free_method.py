@@ -126,7 +126,7 @@ def certify_entries(scene, entries) -> dict:
 
     writer = CertificateWriter(scene._resolvents)
     for pos, red, _k in entries:
-        writer.add(pos, scene.system.certify(red.residual))
+        writer.add(pos, scene.system.certify(red.residual, red.normal_form))
     return writer.data()
 
 

@@ -591,8 +591,9 @@ class RewritingSystem:
             prefix = nxt
         return out
 
-    def certify(self, p: NCPoly) -> "Certificate":
-        """p − nf(p) as a combination of hypotheses (every rule used must carry cofactors).
+    def certify(self, p: NCPoly, normal_form: NCPoly | None = None) -> "Certificate":
+        """p − nf(p) as a combination of hypotheses (every rule used must carry cofactors);
+        ``normal_form``: nf(p) when the caller has it (from :meth:`reduce` of this system).
 
         Raises :class:`CertificateError` if a rule used has no cofactor expansion."""
         steps: dict = {}   # (in_trace, trace factors, word, pre, rule name, post) -> coefficient
@@ -626,7 +627,7 @@ class RewritingSystem:
             v = simplify_coef(v)
             if v != 0:
                 out.append(CertTerm(v, left, hyps[name], right, in_trace, factors, w))
-        return Certificate(p, self.normal_form(p), out)
+        return Certificate(p, self.normal_form(p) if normal_form is None else normal_form, out)
 
 
 def _add_scaled(out: dict, add: dict, scale: Coef) -> None:
