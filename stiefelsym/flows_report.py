@@ -634,7 +634,11 @@ def render_markdown(data: dict[str, Any], results_path: Path, figures: Sequence[
         "H_{−½} = ½tr PᵀP + ½tr QᵀQ + tr XᵀAY and F = (κ+½)(½⟨Ψ_X,Ψ_X⟩ + ½⟨Ψ_Y,Ψ_Y⟩) + β⟨Ψ_X,Ψ_Y⟩ (β = κ for the "
         "perturbed H_κ, 0 otherwise). They do not commute (only Ψ_X + Ψ_Y is conserved), so the step is Strang's "
         "splitting: the exact flow of F for h/2 (right rotations: X(t) = X(0)e^{t(κ+½−β)Ψ_X(0)}e^{tβS}, "
-        "S = Ψ_X + Ψ_Y, likewise Y), RATTLE for H_{−½}, F for h/2.")
+        "S = Ψ_X + Ψ_Y, likewise Y), RATTLE for H_{−½}, F for h/2. (For the perturbed H_κ, F = ½(½⟨Ψ_X,Ψ_X⟩ + "
+        "½⟨Ψ_Y,Ψ_Y⟩) + κ·½⟨S, S⟩, and S is the momentum of the diagonal right rotations, a symmetry of H_0: the "
+        "perturbed κ-flow is the κ = 0 coupled flow followed by the rotation (X, Y, P, Q) ↦ (X, Y, P, Q)·exp(tκS₀), which "
+        "conjugates the Lax matrices; this is why its Lax pairs hold for every κ. `tests/test_flows_symplectic.py` checks "
+        "it on integrated trajectories.)")
     add("")
     add("Every scheme is checked in `tests/test_flows_symplectic.py`: it converges to the DOP853 reference with "
         "order 2 (RATTLE) and 4 (RATTLE4), keeps T*V to 1e-13, keeps the (twisted) symplectic form ω(Du, Dv) = ω(u, v) "

@@ -153,3 +153,18 @@ def test_every_named_flow_has_a_symplectic_scheme():
         fl = ig.make_flow(flow, 4, 2, **({"A": A4} if flow != "jensen" else {}), **kw)
         assert fl.potential_gradient is not None or fl.symplectic is not None, fl.label
         assert ig.symplectic_scheme(fl)
+
+
+def test_the_perturbed_coupled_flow_is_the_kappa_0_flow_rotated_by_the_diagonal_momentum():
+    """H_κ (perturbed) = H_0 + κ·½⟨S, S⟩, S = Ψ_X + Ψ_Y: the κ-flow is the κ = 0 flow followed by exp(tκS₀)."""
+    (X, Y), (P, Q) = start("coupled")
+    S0 = X.T @ P - P.T @ X + Y.T @ Q - Q.T @ Y
+    T, kappa = 3.0, 0.7
+    a = ig.integrate((X, Y), (P, Q), "coupled", T, method="dop853", tol=1e-13, samples=2, A=A4, kappa=kappa,
+                     perturbed=True)
+    b = ig.integrate((X, Y), (P, Q), "coupled", T, method="dop853", tol=1e-13, samples=2, A=A4, kappa=0.0,
+                     perturbed=True)
+    R = ig.expm_skew(T * kappa * S0)
+    assert np.abs(a.X[-1] - b.X[-1] @ R).max() < 1e-9
+    assert np.abs(a.P[-1] - b.P[-1] @ R).max() < 1e-9
+    assert np.abs(a.X[-1] - b.X[-1]).max() > 1e-2          # the rotation is not trivial
