@@ -751,6 +751,33 @@ class Scene(PaperObjects):
         Lam = sym(X.T @ HX - HP.T @ P + Pi @ K - K @ Pi)
         return Lam, Pi
 
+    def _triangular_multipliers(self, base: tuple[Mat, Mat],
+                                direction: Callable[[str, Mat, Mat], tuple[Mat, Mat]]) -> tuple[Mat, Mat] | None:
+        """Λ, Π for a Lagrange form whose Π moves X by −XΠ and whose Λ moves only P, by XΛ (the
+        forms of (dot_XP) and of the twisted flow), where XᵀX = I holds exactly: Π from
+        sym(XᵀẊ) = 0, then Λ from sym(ẊᵀP + XᵀṖ) = 0, each in closed form; the result is kept
+        only when both conditions and the assumed shape of the Λ-direction hold exactly at the
+        point (over an exact field; elsewhere None, and the r(r+1) system is solved)."""
+        if (not CLOSED_FORM_MULTIPLIERS or self.realization != "standard" or not self.field.exact
+                or isinstance(self.field, DegreeField) or self.chart not in ("cayley", "equivariant")):
+            return None
+        X, P = self.X, self.P
+        if not _exactly_zero(X.T @ X - self.Ir):
+            return None
+        half = self.q(1, 2)
+        sym = lambda M: (M + M.T) * half        # noqa: E731
+        Pi = sym(X.T @ base[0])
+        dX, dP = direction("Pi", X @ Pi, P @ Pi)
+        Xd, Pd = base[0] + dX, base[1] + dP
+        T = Xd.T @ P + X.T @ Pd
+        Lam = -sym(T)
+        lX, lP = direction("Lambda", X @ Lam, P @ Lam)
+        Pd = Pd + lP
+        T = Xd.T @ P + X.T @ Pd
+        if not (_exactly_zero(lX) and _exactly_zero(sym(X.T @ Xd)) and _exactly_zero(T + T.T)):
+            return None
+        return Lam, Pi
+
     def dirac_flow(self, H: Function) -> Flow:
         """dz/dt = {z, H} for the Dirac bracket (Dirac_bracket), z = entries of X, P:
         ż = Ω∇H − Σ_i w_i Ω∇F_i with w = C {F, H}_0 (in closed form where
@@ -808,7 +835,12 @@ class Scene(PaperObjects):
                            what: str = "the multipliers Lambda, Pi") -> tuple[Mat, Mat]:
         """Symmetric Λ, Π such that base + Σ Λ_ij u_ij + Σ Π_ij v_ij is tangent to the constraint set:
         an r(r+1)-dimensional linear system, one unknown per unit symmetric E_ij, whose direction
-        ``direction(name, X E_ij, P E_ij)`` (a pair (δX, δP)) the flow's form gives."""
+        ``direction(name, X E_ij, P E_ij)`` (a pair (δX, δP)) the flow's form gives.  Where the
+        triangular solve of :meth:`_triangular_multipliers` applies and its result is verified
+        exactly, that instead."""
+        fast = self._triangular_multipliers(base, direction)
+        if fast is not None:
+            return fast
         r = self.r
         Gs = self._constraint_gradients()
         units = []

@@ -241,3 +241,22 @@ def test_blocks_of_parameters_are_named_entries_of_the_point():
     assert len(vals) == 10
     assert vals["S_1,2"] == S._view()[0, 1] and vals["S_2,4"] == S._view()[1, 3] == -S._view()[3, 1]
     assert s._param("S_1,2") == S._view()[0, 1]
+
+
+def test_triangular_multipliers_of_the_twisted_form_equal_the_solved_system():
+    from stiefelsym import twisted
+    H = lambda t: t.tr(t.P.T @ t.P) / 2 + t.tr(t.X.T @ t.A @ t.X)      # noqa: E731
+    for n, r in ((4, 2), (3, 3)):
+        a = Scene(n, r, ModularField(P61), rng=random.Random(5))
+        fa = twisted.multiplier_flow(a, H, a.eta)
+        scene_mod.CLOSED_FORM_MULTIPLIERS = False
+        try:
+            b = Scene(n, r, ModularField(P61), rng=random.Random(5))
+            a.eta
+            b.params.update(a.point_values())
+            fb = twisted.multiplier_flow(b, H, b.eta)
+        finally:
+            scene_mod.CLOSED_FORM_MULTIPLIERS = True
+        for key in ("Lambda", "Pi"):
+            assert entries(fa[key]) == entries(fb[key])
+        assert entries(fa.Xdot) == entries(fb.Xdot) and entries(fa.Pdot) == entries(fb.Pdot)
