@@ -628,8 +628,10 @@ def render_markdown(data: dict[str, Any], results_path: Path, figures: Sequence[
         "T*V, XᵀP̃ = w̃J and H_κ = ½tr P̃ᵀP̃ + ½tr XᵀAX + f(w̃), f(w) = −εw + 2(κ+½)(w − ε/2)²: the Euclidean Neumann "
         "Hamiltonian in (X, P̃) plus a function of the right momentum, which commutes with it. The step is RATTLE in "
         "(X, P̃) with the exact rotation exp(t f′(w̃)/2 · J); it is symplectic for ω_ε. (So the magnetic Neumann flow on "
-        "V(n, 2) is the ordinary Euclidean Neumann flow in the shifted momenta, followed by a rotation of the frame "
-        "(e₁, e₂) at a constant rate.)")
+        "V(n, 2), for every κ, is the ordinary Euclidean Neumann flow in the shifted momenta followed by a rotation of the "
+        "frame (e₁, e₂) at the constant rate f′(w̃)/2; `tests/test_flows_symplectic.py` checks it against DOP853 for "
+        "(mag-euk), (mag-nor) and κ = 0.4. This is in line with the paper's remark before (twisted) that the magnetic "
+        "T*G_{n,2} arises by reduction at a nonzero value εE₁∧E₂ of the so(2) momentum.)")
     add("* **Coupled (Appendix 2; every κ, perturbed or not)**: on T*V × T*V, H = H_{−½} + F(Ψ_X, Ψ_Y) with "
         "H_{−½} = ½tr PᵀP + ½tr QᵀQ + tr XᵀAY and F = (κ+½)(½⟨Ψ_X,Ψ_X⟩ + ½⟨Ψ_Y,Ψ_Y⟩) + β⟨Ψ_X,Ψ_Y⟩ (β = κ for the "
         "perturbed H_κ, 0 otherwise). They do not commute (only Ψ_X + Ψ_Y is conserved), so the step is Strang's "

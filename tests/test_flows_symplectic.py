@@ -168,3 +168,21 @@ def test_the_perturbed_coupled_flow_is_the_kappa_0_flow_rotated_by_the_diagonal_
     assert np.abs(a.X[-1] - b.X[-1] @ R).max() < 1e-9
     assert np.abs(a.P[-1] - b.P[-1] @ R).max() < 1e-9
     assert np.abs(a.X[-1] - b.X[-1]).max() > 1e-2          # the rotation is not trivial
+
+
+@pytest.mark.parametrize("kappa", [-0.5, 0.0, 0.4])
+def test_the_magnetic_flow_is_the_euclidean_neumann_flow_in_shifted_momenta_then_a_rotation(kappa):
+    """(mag-euk), (mag-nor) and the twisted κ-flows: with P̃ = P + (ε/2)XJ, (X, P̃)(t) is the Euclidean Neumann
+    flow from (X0, P̃0) followed by exp(t f′(w̃)/2 · J), f′(w) = −ε + 4(κ + ½)(w − ε/2), w̃ = (X0ᵀP̃0)₁₂."""
+    eps, T = 0.7, 3.0
+    X, P = ig.random_point(4, 2, seed=2)
+    J = np.array([[0.0, 1.0], [-1.0, 0.0]])
+    Pt = P + eps / 2 * X @ J
+    mag = ig.integrate(X, P, "magnetic", T, method="dop853", tol=1e-13, samples=2, A=A4, kappa=kappa, eps=eps)
+    neu = ig.integrate(X, Pt, "neumann", T, method="dop853", tol=1e-13, samples=2, A=A4, kappa=-0.5)
+    w = (X.T @ Pt)[0, 1]
+    R = ig.expm_skew(T * (-eps + 4 * (kappa + 0.5) * (w - eps / 2)) / 2 * J)
+    Xn, Pn = neu.final()
+    Xm, Pm = mag.final()
+    assert np.abs(Xm - Xn @ R).max() < 1e-9
+    assert np.abs(Pm + eps / 2 * Xm @ J - Pn @ R).max() < 1e-9
