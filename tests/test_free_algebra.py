@@ -207,3 +207,18 @@ def test_lazy_normalization_keeps_simplified_polynomials_and_collects_the_others
     hidden = (kappa + 1) ** 2 - kappa ** 2 - 2 * kappa - 1
     r = f.normalize(q + w(X, Pt) * hidden - w(P, Xt) * 3)
     assert set(r.terms) == {((), (X, Pt))} and not is_simplified(hidden) and not is_simplified(se.Integer(0))
+
+
+def test_latex_of_rational_coefficients_is_sympys_without_sympy():
+    import sympy
+    from stiefelsym.free.algebra import _TERM_LATEX, _coef_parts
+    rng = random.Random(3)
+    values = [se.Integer(0), se.Integer(1), se.Integer(-1), se.Integer(10 ** 25), se.Rational(-10 ** 20, 3)]
+    values += [se.Rational(rng.randint(-50, 50), rng.randint(1, 30)) for _ in range(100)]
+    for c in values + [kappa, -2 * kappa * lam + 1, se.Rational(-1, 2) * lam]:
+        _TERM_LATEX.pop(c, None)
+        e = sympy.sympify(c._sympy_())
+        neg = e.could_extract_minus_sign()
+        mag = -e if neg else e
+        assert _coef_parts(c) == ("- " if neg else "+ ", None if mag == 1 else sympy.latex(mag),
+                                  isinstance(mag, sympy.Add))

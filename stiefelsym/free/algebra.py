@@ -498,6 +498,9 @@ def coef_latex(c: Coef) -> str:
 
 #: coefficient -> (sign "- " or "+ ", LaTeX of its magnitude or None when it is 1, whether it is a sum)
 _TERM_LATEX: dict = {}
+#: symengine's classes of rational numbers
+_RATIONAL_TYPES = frozenset(type(x) for x in (se.Integer(0), se.Integer(1), se.Integer(-1), se.Integer(2),
+                                               se.Rational(1, 2), se.Rational(2, 3), se.Rational(-1, 2)))
 
 
 def _coef_parts(c: Coef) -> tuple[str, str | None, bool]:
@@ -505,12 +508,20 @@ def _coef_parts(c: Coef) -> tuple[str, str | None, bool]:
         return _TERM_LATEX[c]
     except (KeyError, TypeError):
         pass
-    import sympy
+    e = se.expand(c)
+    if type(e) in _RATIONAL_TYPES:   # a rational number: SymPy's LaTeX, without loading SymPy
+        num, den = (int(x) for x in e.as_numer_denom())
+        neg = num < 0
+        num = abs(num)
+        out = ("- " if neg else "+ ", None if num == den == 1 else str(num) if den == 1
+               else rf"\frac{{{num}}}{{{den}}}", False)
+    else:
+        import sympy
 
-    e = sympy.sympify(se.expand(c)._sympy_())
-    neg = e.could_extract_minus_sign()
-    mag = -e if neg else e
-    out = ("- " if neg else "+ ", None if mag == 1 else sympy.latex(mag), isinstance(mag, sympy.Add))
+        e = sympy.sympify(e._sympy_())
+        neg = e.could_extract_minus_sign()
+        mag = -e if neg else e
+        out = ("- " if neg else "+ ", None if mag == 1 else sympy.latex(mag), isinstance(mag, sympy.Add))
     try:
         if len(_TERM_LATEX) > 50_000:
             _TERM_LATEX.clear()
