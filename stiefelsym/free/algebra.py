@@ -151,8 +151,10 @@ def min_rotation(c: Word) -> Word:
     hit = _memo_get(_ROTATIONS, c)
     if hit is not None:
         return hit
-    keys = tuple(L.sort_key for L in c)
-    best = min(range(len(c)), key=lambda k: keys[k:] + keys[:k])
+    keys = [L.sort_key for L in c]
+    first = min(keys)
+    starts = [k for k, x in enumerate(keys) if x == first]   # a least rotation starts with the least letter
+    best = starts[0] if len(starts) == 1 else min(starts, key=lambda k: keys[k:] + keys[:k])
     return _memo_put(_ROTATIONS, c, c[best:] + c[:best])
 
 
