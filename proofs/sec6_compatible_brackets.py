@@ -25,6 +25,15 @@ def power_trace(s, M, k):
     return s.tr(acc)
 
 
+def power_traces(s, M, m):
+    """[tr M, tr M², …, tr M^m]: the powers of M taken once, each from the previous one."""
+    out, acc = [], None
+    for _ in range(m):
+        acc = M if acc is None else acc @ M
+        out.append(s.tr(acc))
+    return out
+
+
 # -- the map Θ and the functions of the section ------------------------------------------
 
 def Theta_at(X, P):
@@ -610,7 +619,21 @@ def _two_l(n, r):
 
 def _bb_all(t):
     """(BB): tr(Ψ + μ_jB)^k, k = 1..r, at r + 1 values μ_j (all the coefficients in μ)."""
-    return [bb(t, t.Psi, mu_j, k) for mu_j in _values(t, "mu", t.r + 1) for k in range(1, t.r + 1)]
+    B = b_symmetric(t)
+    return [x for mu_j in _values(t, "mu", t.r + 1) for x in power_traces(t, t.Psi + mu_j * B, t.r)]
+
+
+def _perelomov_all(t, lams, n):
+    """(perelomov): tr(λ_j(PXᵀ − XPᵀ) + XXᵀ − λ_j²A)^k, k = 1..n, for each λ_j of ``lams`` (in the order
+    λ_j, then k), PXᵀ − XPᵀ and XXᵀ formed once."""
+    Phi, XXt = t.P @ t.X.T - t.X @ t.P.T, t.X @ t.X.T
+    return [x for lam in lams for x in power_traces(t, lam * Phi + XXt - lam * lam * t.A, n)]
+
+
+def _FF_all(t, lams, n):
+    """(FF): tr(λ_j(PXᵀ − XPᵀ) + XXᵀ)^k, k = 1..n, for each λ_j of ``lams`` (in the order λ_j, then k)."""
+    Phi, XXt = t.P @ t.X.T - t.X @ t.P.T, t.X @ t.X.T
+    return [x for lam in lams for x in power_traces(t, lam * Phi + XXt, n)]
 
 
 @claim("cif-completeness", paper=("CIF", "FF", "BB", "2l"), kind="dim", exact_max_n=3,
@@ -622,7 +645,7 @@ def cif_set_is_complete(s):
     n, r = s.n, s.r
 
     def functions(t):
-        ff = [FF(t, lam_j, k) for lam_j in _values(t, "lam", n + 1) for k in range(1, n + 1)]
+        ff = _FF_all(t, _values(t, "lam", n + 1), n)
         return ff + _bb_all(t)
     return {"ddim(F + B)": Rank(_differentials_on_TV(s, functions), _dim_V(n, r) - _two_l(n, r) // 2 + r * (r + 1),
                                 generic=True, meaning="dim V - l + r(r+1): independent on T*V, plus the constraints")}
@@ -637,7 +660,7 @@ def com_set_is_complete(s):
     n, r = s.n, s.r
 
     def functions(t):
-        per = [perelomov(t, lam_j, k) for lam_j in _values(t, "lam", 2 * n + 1) for k in range(1, n + 1)]
+        per = _perelomov_all(t, _values(t, "lam", 2 * n + 1), n)
         return per + _bb_all(t)
     return {"ddim(F + B)": Rank(_differentials_on_TV(s, functions), _dim_V(n, r) + r * (r + 1), generic=True,
                                 meaning="dim V + r(r+1): independent on T*V, plus the constraints")}

@@ -53,10 +53,11 @@ def A_dual_normal(s):
     return A_dual_normal_at(s, s.X, s.P)
 
 
-def A_dual_normal_at(s, X, P):
-    """(LA4) for (N0_XP2) at the point (X, P)."""
+def A_dual_normal_at(s, X, P, Lam=None):
+    """(LA4) for (N0_XP2) at the point (X, P) (``Lam``: Λ = Lambda_at(s, X, P) when already formed)."""
+    Lam = Lambda_at(s, X, P) if Lam is None else Lam
     return block([[X.T @ P, s.Ir],
-                  [Lambda_at(s, X, P) - s.scalar_matrix(s.lam, s.r, "r"), -(P.T @ X)]])
+                  [Lam - s.scalar_matrix(s.lam, s.r, "r"), -(P.T @ X)]])
 
 
 def A_dual_euclidean(s):
@@ -188,12 +189,16 @@ def poisson_sphere_geodesic_flow(s):
 def reflections_leave_the_dual_pair_invariant(s):
     """The reflections S_i of the coordinate hyperplanes (A diagonal) leave 𝓛*_neum(λ) and both matrices 𝓐*_neum(λ) of (LA4) unchanged, so the dual Lax pair determines the Neumann flows only up to the group ℤ₂ⁿ of Theorem DUAL."""
     X, P = s.X, s.P
+    Lam = Lambda(s)                                                # at (X, P), formed once
+    L, A_normal = L_dual(s), A_dual_normal_at(s, X, P, Lam)
     checks = {}
     for i in range(s.n):
         S = reflection(s, i)
-        checks[f"S_{i + 1}: L*"] = L_dual_at(s, S @ X, S @ P) - L_dual(s)
-        checks[f"S_{i + 1}: A* (N0_XP2)"] = A_dual_normal_at(s, S @ X, S @ P) - A_dual_normal(s)
-        checks[f"S_{i + 1}: Lambda (NE_XP)"] = Lambda_at(s, S @ X, S @ P) - Lambda(s)
+        SX, SP = S @ X, S @ P
+        LamS = Lambda_at(s, SX, SP)
+        checks[f"S_{i + 1}: L*"] = L_dual_at(s, SX, SP) - L
+        checks[f"S_{i + 1}: A* (N0_XP2)"] = A_dual_normal_at(s, SX, SP, LamS) - A_normal
+        checks[f"S_{i + 1}: Lambda (NE_XP)"] = LamS - Lam
     return checks
 
 

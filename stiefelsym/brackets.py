@@ -383,9 +383,50 @@ def antisymmetry(s: Any, T: PoissonTensor, x: Mat, a: Mat, b: Mat) -> Scalar:
 
 
 def gradient_in_x(s: Any, T: PoissonTensor, x: Mat, b: Mat, c: Mat) -> Mat:
-    """The gradient at x of the function y ↦ Λ(b, c)|_y (exact: interpolation of the polynomial
-    t ↦ Λ(b, c)|_{x + t e_k} of degree <= T.degree at t = 0, ..., degree; for an affine tensor the
-    difference Λ(b, c)|_{e_k} − Λ(b, c)|_0)."""
+    """The gradient at x of the function y ↦ Λ(b, c)|_y, exact: one evaluation of the form over reverse
+    numbers (x the independent variable) and one backward sweep, the adjoint ∂/∂x_ij = g_ij giving
+    the gradient −2gᵀ for <,> projected onto the space; where reverse mode does not apply, by
+    interpolation of the polynomial t ↦ Λ(b, c)|_{x + t e_k} of degree <= T.degree at t = 0, ...,
+    degree over a basis e_k (for an affine tensor the difference Λ(b, c)|_{e_k} − Λ(b, c)|_0).  Both
+    are the exact derivative of a form that is a polynomial of degree <= T.degree in x, which
+    :func:`degree_residual` checks."""
+    G = _reverse_gradient_in_x(s, T, x, b, c)
+    if G is not None:
+        return G
+    return _basis_gradient_in_x(s, T, x, b, c)
+
+
+def _reverse_gradient_in_x(s: Any, T: PoissonTensor, x: Mat, b: Mat, c: Mat) -> Mat | None:
+    """The gradient of y ↦ Λ(b, c)|_y at x by reverse mode over the matrix operations of the form, or
+    None when the scene or an operation of the form is not one reverse mode differentiates."""
+    from .reverse import Rev, RevMat, Unsupported, gradient, leaf
+    from .scene import ReverseScene, Scene
+    if type(s) is not Scene or s.field.name not in _REVERSE_FIELDS:
+        return None
+    try:
+        rs = ReverseScene(s)
+
+        def const(M: Mat) -> Mat:
+            return Mat._wrap_native(RevMat(M._untyped()), rs.field, M.tags, rs.tracker, M._coords)
+        lx = leaf(x._untyped())
+        xr = Mat._wrap_native(lx, rs.field, x.tags, rs.tracker, x._coords)
+        value = T(rs, xr, const(b), const(c))
+        if not isinstance(value, Rev):
+            return None
+        g = gradient(value, [lx], s.const(1))[0]
+    except Unsupported:
+        return None
+    if g is None:
+        return T.space.zero(s)
+    return T.space.project(g._retyped(s.field, x.tags, s.tracker).T * (-2))
+
+
+#: the fields whose scenes take the gradient in x by reverse mode (the others by a basis)
+_REVERSE_FIELDS = ("symbolic", "rational", "modular")
+
+
+def _basis_gradient_in_x(s: Any, T: PoissonTensor, x: Mat, b: Mat, c: Mat) -> Mat:
+    """The gradient at x of y ↦ Λ(b, c)|_y from the values of the form along a basis of the space."""
     acc = T.space.zero(s)
     if T.degree == 1:
         # affine in x (which degree_residual checks): the derivative Λ(b, c)|_{x+e} − Λ(b, c)|_x does

@@ -22,7 +22,7 @@ from __future__ import annotations
 import copy
 from typing import Any, Callable, Mapping
 
-from .fields import DegenerateError
+from .fields import DegenerateError, Dual, DualField
 from .matrix import Mat, NeedsCoordinates
 from .scene import Flow, Scene
 
@@ -56,6 +56,20 @@ Pair = tuple  # (d/dX, d/dP): a covector or a vector of the ambient space, as tw
 def _pair_dot(s: Scene, u: Pair, v: Pair) -> Any:
     """⟨u, v⟩ = tr(u_Xᵀ v_X) + tr(u_Pᵀ v_P)."""
     return s.field.normalize((u[0].T @ v[0]).trace() + (u[1].T @ v[1]).trace())
+
+
+def _stack(s: Scene, pairs: list[Pair]) -> Mat:
+    """The pairs (u_X, u_P) as the rows (entries of u_X, then of u_P) of one matrix, so that the
+    products ⟨u_i, v_j⟩ of two lists are one matrix product."""
+    return Mat._rows([list(u[0]._view().flat) + list(u[1]._view().flat) for u in pairs], s.field)
+
+
+def _pair_dots(s: Scene, us: list[Pair], vs: list[Pair]) -> list[list[Any]]:
+    """The matrix ⟨u_i, v_j⟩ (one product of the stacked pairs)."""
+    if not us or not vs:
+        return [[] for _ in us]
+    C = (_stack(s, us) @ _stack(s, vs).T)._view()
+    return [[C[i, j] for j in range(len(vs))] for i in range(len(us))]
 
 
 def _pi(s: Scene, v: Pair, F: Mat) -> Pair:
@@ -93,7 +107,7 @@ def constraint_bracket_matrix(s, F: Mat | None = None) -> list[list[Any]]:
 
     def build():
         G = _constraint_gradients(s)
-        return [[_pair_dot(s, gi, _pi(s, gj, Fm)) for gj in G] for gi in G]
+        return _pair_dots(s, G, [_pi(s, gj, Fm) for gj in G])   # ⟨∇F_i, W⁻¹∇F_j⟩
     return s._cached_for("twisted:C0:" + _key(F), Fm, build)
 
 
@@ -102,6 +116,9 @@ def _inverse(s: Scene, F: Mat | None) -> list[list[Any]]:
 
     def build():
         C0 = constraint_bracket_matrix(s, F)
+        base = _dual_base(s, F)
+        if base is not None:
+            return _dual_inverse(s, _inverse(base, None), C0)
         m = len(C0)
         I = [[s.const(1 if i == j else 0) for j in range(m)] for i in range(m)]
         try:
@@ -109,6 +126,27 @@ def _inverse(s: Scene, F: Mat | None) -> list[list[Any]]:
         except DegenerateError as exc:
             raise DegenerateError("the twisted constraint bracket matrix {F_i, F_j}_eps is singular here") from exc
     return s._cached_for("twisted:C:" + _key(F), Fm, build)
+
+
+def _dual_base(s: Scene, F: Mat | None) -> Scene | None:
+    """For a scene over dual numbers a + bε lifted from a base scene (a derivative along a tangent
+    vector), that base scene (whose values are the a parts of this one's), else None."""
+    from .scene import TangentScene
+    if F is not None or not isinstance(s, TangentScene) or not isinstance(s.field, DualField):
+        return None
+    base = s.base
+    return base if isinstance(base, Scene) and base.field is s.field.base else None
+
+
+def _dual_inverse(s: Scene, Ca: list[list[Any]], C0: list[list[Any]]) -> list[list[Any]]:
+    """(C_a + C_b ε)⁻¹ = C_a⁻¹ − C_a⁻¹ C_b C_a⁻¹ ε from the inverse of the a part (Ca = C_a⁻¹, taken once
+    on the base scene): the same solution as the dual-number solve, with no elimination."""
+    bf = s.field.base
+    C1 = Mat._rows([[s.field.lift(x).b for x in row] for row in C0], bf)
+    Cm = Mat._rows(Ca, bf)
+    Y1 = (-(Cm @ C1 @ Cm))._view()
+    m = len(Ca)
+    return [[Dual(Ca[i][j], Y1[i, j]) for j in range(m)] for i in range(m)]
 
 
 def bracket(s, f: Function, g: Function, F: Mat | None = None) -> Any:
@@ -121,13 +159,15 @@ def bracket(s, f: Function, g: Function, F: Mat | None = None) -> Any:
     G = _constraint_gradients(s)
     C = _inverse(s, F)
     gf, gg = s.gradient(f), s.gradient(g)
-    Fif = [_pair_dot(s, gi, _pi(s, gf, Fm)) for gi in G]     # {F_i, f}_ε
-    Fjg = [_pair_dot(s, gj, _pi(s, gg, Fm)) for gj in G]     # {F_j, g}_ε
-    acc = _pair_dot(s, gf, _pi(s, gg, Fm))
-    for i in range(len(G)):
-        for j in range(len(G)):
-            acc = acc + Fif[i] * C[i][j] * Fjg[j]
-    return s.field.normalize(acc)
+    pig = _pi(s, gg, Fm)                                     # W⁻¹∇g
+    acc = _pair_dot(s, gf, pig)
+    if not G:
+        return acc
+    SG = _stack(s, G)
+    Fif = SG @ _stack(s, [_pi(s, gf, Fm)]).T                 # {F_i, f}_ε, a column
+    Fjg = SG @ _stack(s, [pig]).T                            # {F_j, g}_ε, a column
+    corr = (Fif.T @ Mat._rows(C, s.field) @ Fjg)._view()[0, 0]   # Σ_ij {F_i, f}_ε C_ij {F_j, g}_ε
+    return s.field.normalize(acc + corr)
 
 
 def ambient_flow(s, H: Function, F: Mat | None = None) -> Flow:
