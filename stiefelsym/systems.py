@@ -15,17 +15,29 @@ in coordinates along a basis of the ambient space of each matrix variable:
   the named (position, momentum) pairs, the multipliers solved from dF_j/dt = 0: the Dirac flow
   of H for all the constraints together.
 
-Derivatives are exact (forward mode, dual numbers) over every field of the scene, and the
-points are built by the caller (generic points of the constraint set).  The coordinates are
-orthonormal (the unit matrices E_ij, and E_ij, iE_ij for a realified complex variable) and a
-flow is reassembled in the basis it was computed in, so the result does not depend on the basis:
-a flow derived from O(n)-invariant data is O(n)-covariant, and these internal coordinates are not
-recorded as a look at coordinates (like the scene's own gradients).  Only coordinate backends run
-these functions: the dimension-free scene raises ``NeedsCoordinates``.
+Derivatives are exact over every field of the scene, and the points are built by the caller
+(generic points of the constraint set).  The gradients a flow needs (of H and of every scalar
+constraint; of U, of the constraints, and of T at each basis vector) come from reverse mode over the
+matrix operations (:mod:`.reverse`): one evaluation of the function over reverse numbers, the
+point's variables being the leaves of the tape, and one backward sweep per scalar component.  Where
+reverse mode has no adjoint for an operation (it raises ``Unsupported``), one forward pass (dual
+numbers) per coordinate gives the same numbers.  The gradients are then stacked by rows, and the
+linear algebra is whole-matrix: the constraint bracket matrix is one product G_x G_pᵀ − G_p G_xᵀ,
+the multipliers one solve, the flow one product with the stacked gradients.
+
+The coordinates are an orthogonal basis of each variable's space (the unit matrices E_ij, and
+E_ij, iE_ij for a realified complex variable), the coordinates of a gradient are its inner
+products with the basis (for the unit matrices, its entries), and a flow is reassembled in the
+basis it was computed in, so the result does not depend on the basis: a flow derived from
+O(n)-invariant data is O(n)-covariant, and these internal coordinates are not recorded as a look at
+coordinates (like the scene's own gradients).  Only coordinate backends run these functions: the
+dimension-free scene raises ``NeedsCoordinates``.
 
 Engine internals used (an engine module may): ``Scene._unit_tangents`` (the unit matrices E_ij, not
-recorded) and ``TangentScene._lift`` (a matrix of the scene's field with a given derivative), so that
-points of the caller's own move along tangent vectors of the caller's own.
+recorded), ``TangentScene._lift`` (a matrix of the scene's field with a given derivative), so that
+points of the caller's own move along tangent vectors of the caller's own, and ``ReverseScene``
+with the tape of :mod:`.reverse`, whose leaves here are the variables of such a point (the
+realification and the conjugate are operations of that tape, with their adjoints).
 
 Complex matrices U + iV are realified as [[U, −V], [V, U]] (``Scene.realify``): sums, products
 and the conjugate transpose (the transpose of the real form) are preserved; the plain transpose
@@ -35,8 +47,12 @@ from __future__ import annotations
 
 from typing import Any, Callable, Hashable, Mapping, Sequence
 
-from .matrix import Mat, NeedsCoordinates
-from .scene import Scene
+import numpy as np
+
+from . import scene as scene_module
+from .matrix import Mat, NeedsCoordinates, block, definite
+from .reverse import Node, Rev, RevMat, Unsupported, gradient as rev_gradient, leaf as rev_leaf
+from .scene import ReverseScene, Scene, _LiftedScene
 
 Point = Mapping[Hashable, Mat]
 Coordinates = Sequence[tuple[Hashable, Mat]]
@@ -94,6 +110,21 @@ def hermitian_entries(M: Mat) -> list[Any]:
 
 # -- coordinates ------------------------------------------------------------------------------
 
+class _UnitCoordinates(list):
+    """The coordinates of :func:`real_coordinates`: (name, E_ij) for each name, E_ij in row-major
+    order, so that the coordinates of a matrix along them are its entries, row by row (no
+    product with the basis is needed)."""
+
+    def __init__(self, items, names: Sequence[Hashable], shape: tuple[int, int]) -> None:
+        super().__init__(items)
+        self.names, self.shape = list(names), shape
+        self._made = [(name, id(E)) for name, E in items]
+
+    def intact(self) -> bool:
+        """Whether the list still holds the unit matrices it was made with (a list can be edited)."""
+        return [(name, id(E)) for name, E in self] == self._made
+
+
 def _units(s: Scene) -> list[Mat]:
     """The unit n×r matrices E_ij (an orthonormal basis of M_{n,r}(ℝ))."""
     nr = s.n * s.r
@@ -104,7 +135,7 @@ def real_coordinates(s: Scene, names: Sequence[Hashable]) -> list[tuple[Hashable
     """The coordinates of n×r real matrix variables: (name, E_ij) for each name."""
     _coordinate_scene(s, "coordinates of matrix variables")
     units = _units(s)
-    return [(name, E) for name in names for E in units]
+    return _UnitCoordinates([(name, E) for name in names for E in units], names, (s.n, s.r))
 
 
 def complex_coordinates(s: Scene, names: Sequence[Hashable]) -> list[tuple[Hashable, Mat]]:
@@ -120,17 +151,6 @@ def complex_coordinates(s: Scene, names: Sequence[Hashable]) -> list[tuple[Hasha
     return out
 
 
-def _combine(s: Scene, coords: Coordinates, c: Sequence[Any], like: Point) -> dict[Hashable, Mat]:
-    out: dict[Hashable, Mat] = {}
-    for (name, B), x in zip(coords, c):
-        term = x * B
-        out[name] = out[name] + term if name in out else term
-    for name, M in like.items():
-        if name not in out:
-            out[name] = M - M
-    return out
-
-
 def _flat(value: Any) -> list[Any]:
     if isinstance(value, Mat):
         return entries(value)
@@ -142,19 +162,256 @@ def _flat(value: Any) -> list[Any]:
     return [value]
 
 
-def _dot(s: Scene, u: Sequence[Any], v: Sequence[Any]) -> Any:
-    acc = s.q(0)
-    for x, y in zip(u, v):
-        acc = acc + x * y
-    return acc
-
-
-def _solve(s: Scene, M: list[list[Any]], B: list[list[Any]], what: str) -> list[list[Any]]:
+def _solve(s: Scene, M: Mat, B: Mat, what: str) -> Mat:
+    """Y with M Y = B (the field's solver; M square)."""
     from .fields import DegenerateError
     try:
-        return s.field.solve(M, B)
+        sol = s.field.solve(M._view().tolist(), B._view().tolist())
     except DegenerateError as exc:
         raise DegenerateError(f"{what} is singular here") from exc
+    return Mat._rows(sol, s.field)
+
+
+def _matrix(s: Scene, a: np.ndarray) -> Mat:
+    """An untyped, unrecorded matrix of the scene's field from an array of its numbers (engine
+    internal: stacked gradients, coordinates)."""
+    return Mat._wrap(a, s.field)
+
+
+class _Layout:
+    """Where the coordinates of a tangent vector at a point sit among the entries of its matrices:
+    the variables of the point one after the other, each row by row (the *ambient* vector), and
+    the coordinates as the ambient vector times Bᵀ, B the rows of the coordinate basis (or, for
+    :func:`real_coordinates`, the entries of the named variables themselves)."""
+
+    def __init__(self, s: Scene, coords: Coordinates, point: Point) -> None:
+        self.s = s
+        self.names = list(point)
+        self.shapes = {k: point[k]._shape() for k in self.names}
+        self.offsets, at = {}, 0
+        for k in self.names:
+            self.offsets[k] = at
+            at += self.shapes[k][0] * self.shapes[k][1]
+        self.size = at
+        for name, B in coords:
+            if name not in self.shapes:
+                raise KeyError(f"a coordinate of {name!r}, which is not a variable of the point")
+            if not isinstance(B, Mat) or B._shape() != self.shapes[name]:
+                raise ValueError(f"the coordinates of {name!r} must be matrices of its shape")
+        self.coords = list(coords)
+        self.unit = (isinstance(coords, _UnitCoordinates) and coords.intact()
+                     and all(self.shapes[k] == coords.shape for k in coords.names))
+        self.unit_names = list(coords.names) if self.unit else None
+        self._basis = None
+
+    def basis(self) -> Mat:
+        """B: one row per coordinate, its basis matrix as an ambient vector."""
+        if self._basis is None:
+            zero = self.s.const(0)
+            rows = np.empty((len(self.coords), self.size), dtype=object)
+            rows.fill(zero)
+            for a, (name, B) in enumerate(self.coords):
+                o = self.offsets[name]
+                rows[a, o:o + B._shape()[0] * B._shape()[1]] = B._view().reshape(-1)
+            self._basis = _matrix(self.s, rows)
+        return self._basis
+
+    def ambient(self, grads: Sequence[Mapping[Hashable, Mat | None]]) -> np.ndarray:
+        """The ambient vectors (rows) of gradients given as matrices per variable (None: zero)."""
+        out = np.empty((len(grads), self.size), dtype=object)
+        out.fill(self.s.const(0))
+        for i, g in enumerate(grads):
+            for k, M in g.items():
+                if M is not None and k in self.offsets:
+                    o = self.offsets[k]
+                    out[i, o:o + M._shape()[0] * M._shape()[1]] = M._view().reshape(-1)
+        return out
+
+    def project(self, grads: Sequence[Mapping[Hashable, Mat | None]]) -> Mat:
+        """The coordinates (rows) of gradients given as matrices per variable: derivatives along
+        the coordinate basis, ⟨∇F, B_a⟩."""
+        amb = self.ambient(grads)
+        if self.unit:
+            cols = [amb[:, self.offsets[k]:self.offsets[k] + self.shapes[k][0] * self.shapes[k][1]]
+                    for k in self.unit_names]
+            return _matrix(self.s, np.concatenate(cols, axis=1) if cols else amb[:, :0])
+        return _matrix(self.s, amb) @ self.basis().T
+
+    def assemble(self, c: Mat, like: Point) -> dict[Hashable, Mat]:
+        """The tangent vector Σ c_a B_a (c a column of coordinates), as matrices of the variables of
+        ``like`` (one without coordinates gets 0), each with the spaces of its basis."""
+        s = self.s
+        if self.unit:
+            vec = c._view().reshape(-1)
+            m, k = self.shapes[self.unit_names[0]] if self.unit_names else (0, 0)
+            parts = {}
+            for i, name in enumerate(self.unit_names):
+                parts[name] = vec[i * m * k:(i + 1) * m * k].reshape(m, k)
+        else:
+            vec = (c.T @ self.basis())._view().reshape(-1)
+            parts = {}
+            for name, _B in self.coords:
+                if name not in parts:
+                    o, (m, k) = self.offsets[name], self.shapes[name]
+                    parts[name] = vec[o:o + m * k].reshape(m, k)
+        tags = {}
+        for name, B in self.coords:
+            tags.setdefault(name, B.tags)
+        out = {}
+        for name, M in like.items():
+            if name in parts:
+                out[name] = Mat._wrap(parts[name].copy(), s.field, tags[name], s.tracker)
+            else:
+                out[name] = M - M
+        return out
+
+
+# -- gradients at points of the caller's own ----------------------------------------------------
+
+class _PointReverseScene(ReverseScene):
+    """The scene over reverse numbers, for gradients at a point of the caller's own: the complex
+    conjugate and the realification of the scene are operations of the tape here (their adjoints:
+    the conjugate itself, and the blocks of the adjoint), not entry writes."""
+
+    def conj(self, M: Mat) -> Mat:
+        for tag in M.tags:
+            atoms = definite(tag)
+            if atoms is None or len(atoms) != 2 or atoms[0] != atoms[1]:
+                raise TypeError(f"conj acts on realified matrices, indexed by n+n or r+r, not by {tag!r}")
+        R = M._nat()
+        v = _conj_values(R.v)
+        node = None if R.node is None else Node(lambda g, parent=R.node: [(parent, _conj_values(g))])
+        return Mat._wrap_native(RevMat(v, node), self.field, M.tags, M.tracker, M._coords)
+
+    def realify(self, U: Mat, V: Mat) -> Mat:
+        base = self.base.field
+        shadow = lambda M: Mat.zeros(*M._shape(), base, M.tags, M.tracker)
+        Us, Vs = shadow(U), shadow(V)
+        tags = block([[Us, -Vs], [Vs, Us]]).tags      # the spaces (and records) of the block matrix
+        RU, RV = U._nat(), V._nat()
+        v = block([[RU.v, -RV.v], [RV.v, RU.v]])
+        m, k = U._shape()
+        live = [(R.node, part) for R, part in ((RU, lambda g: g[0] + g[1]), (RV, lambda g: g[2] - g[3]))
+                if R.node is not None]
+        node = None
+        if live:
+            def backward(g):
+                a = g._view()
+                q = [Mat._wrap(x.copy(), base) for x in (a[:m, :k], a[m:, k:], a[m:, :k], a[:m, k:])]
+                return [(parent, part(q)) for parent, part in live]
+            node = Node(backward)
+        return Mat._wrap_native(RevMat(v, node), self.field, tags, self.tracker, U._coords or V._coords)
+
+
+def _conj_values(v: Mat) -> Mat:
+    """J v J, J = diag(I, −I), of an untyped matrix of the base field (the conjugate, realified)."""
+    m, k = v._shape()
+    m, k = m // 2, k // 2
+    a = v._view().copy()
+    a[:m, k:] = -a[:m, k:]
+    a[m:, :k] = -a[m:, :k]
+    return Mat._wrap(a, v.field)
+
+
+def _reverse_applies(s: Scene) -> bool:
+    return scene_module.REVERSE_GRADIENTS and not isinstance(s, _LiftedScene)
+
+
+def _reverse_gradients(s: Scene, F: Callable[[Scene, dict], Any], point: Point,
+                       wrt: Sequence[Hashable]) -> list[dict[Hashable, Mat | None]]:
+    """The gradients, with respect to the variables ``wrt`` of the point, of the scalar components
+    of F (as :func:`_flat` lists them) at the point: one evaluation of F over reverse numbers and
+    one backward sweep per component.  Raises :class:`Unsupported` where reverse mode cannot."""
+    rs = _PointReverseScene(s)
+    z, leaves = {}, []
+    for k, M in point.items():
+        if k in wrt:
+            lf = rev_leaf(M._untyped())
+            leaves.append(lf)
+            z[k] = Mat._wrap_native(lf, rs.field, M.tags, rs.tracker, M._coords)
+        else:
+            z[k] = rs._lift_primitive(M, None)
+    one = s.const(1)
+    out = []
+    for x in _flat(F(rs, z)):
+        if isinstance(x, Rev) and x.node is not None:
+            gs = rev_gradient(x, leaves, one)
+        else:
+            gs = [None] * len(leaves)
+        out.append(dict(zip(wrt, gs)))
+    return out
+
+
+def _difference(a: Mat | None, b: Mat | None) -> Mat | None:
+    """a − b for gradients (None: zero)."""
+    if b is None:
+        return a
+    return -b if a is None else a - b
+
+
+def _jacobian(s: Scene, F: Callable[[Scene, dict], Any], point: Point, layout: _Layout) -> Mat:
+    """Rows: the scalar components of F; columns: their derivatives along the coordinates of the
+    layout at the point.  Reverse mode (one evaluation, one sweep per component, one product with
+    the coordinate basis), or one forward pass per coordinate where reverse mode cannot."""
+    if _reverse_applies(s):
+        try:
+            wrt = list(dict.fromkeys(name for name, _ in layout.coords))
+            return layout.project(_reverse_gradients(s, F, point, wrt))
+        except Unsupported:
+            pass
+    cols = [_flat(derivative(s, F, point, {name: B})) for name, B in layout.coords]
+    a = np.empty((len(cols[0]) if cols else 0, len(cols)), dtype=object)
+    for j, col in enumerate(cols):
+        for i, x in enumerate(col):
+            a[i, j] = x
+    return _matrix(s, a)
+
+
+def _kinetic_matrix(s: Scene, T: Callable[[Scene, dict], Any], velocity: Point, layout: _Layout) -> Mat:
+    """The matrix K_ab = T(b_a + b_b) − T(b_a) − T(b_b) + T(0) of a quadratic form T in the velocities
+    with constant coefficients, in the coordinates b_a of the layout.  Its columns are the gradients
+    ∇T(b_b) − ∇T(0) = K b_b (reverse mode: one evaluation each), or, where reverse mode cannot, its
+    entries come from polarization."""
+    zero_v = {k: M - M for k, M in velocity.items()}
+    names = list(velocity)
+
+    def direction(name, B, base=zero_v):
+        return {k: (base[k] + B if k == name else base[k]) for k in names}
+
+    if _reverse_applies(s):
+        try:
+            wrt = list(dict.fromkeys(name for name, _ in layout.coords))
+
+            def grad(v):
+                out = _reverse_gradients(s, T, v, wrt)
+                if len(out) != 1:
+                    raise TypeError("the kinetic energy must be a scalar function")
+                return out[0]
+
+            g0 = grad(zero_v)
+            cols = []
+            for name, B in layout.coords:
+                g = grad(direction(name, B))
+                cols.append({k: _difference(g[k], g0[k]) for k in wrt})
+            return layout.project(cols).T           # column b: ∇T(b_b) − ∇T(0) = K b_b
+        except Unsupported:
+            pass
+    T0 = T(s, zero_v)
+
+    def kinetic(w):
+        return T(s, w) - T0
+
+    coords = layout.coords
+    N = len(coords)
+    T1 = [kinetic(direction(name, B)) for name, B in coords]
+    K = np.empty((N, N), dtype=object)
+    for a in range(N):
+        na, Ba = coords[a]
+        da = direction(na, Ba)
+        for b in range(a, N):
+            nb, Bb = coords[b]
+            K[a, b] = K[b, a] = kinetic(direction(nb, Bb, da)) - T1[a] - T1[b]
+    return _matrix(s, K)
 
 
 # -- Lagrangian systems with holonomic constraints -----------------------------------------------
@@ -169,7 +426,9 @@ def euler_lagrange(s: Scene, T: Callable[[Scene, dict], Any], U: Callable[[Scene
 
         d/dt ∂T/∂q̇ = −∂U/∂q + Σ_j μ_j ∂g_j/∂q,    Dg·q̈ + D²g(q̇, q̇) = 0.
 
-    The matrix of T is obtained by polarization, T(b_k + b_l) − T(b_k) − T(b_l)."""
+    The matrix K of T is that of its polarization, T(b_k + b_l) − T(b_k) − T(b_l) + T(0), taken as
+    the gradients of T at the basis vectors; with J = Dg, Y = K⁻¹[−∇U | Jᵀ], the multipliers solve
+    (J Y₁) μ = −D²g(q̇, q̇) − J Y₀ and q̈ = Y₀ + Y₁ μ (whole-matrix products)."""
     _coordinate_scene(s, "the Euler-Lagrange equations in coordinates")
     names = list(position)
     if set(velocity) != set(names):
@@ -180,40 +439,33 @@ def euler_lagrange(s: Scene, T: Callable[[Scene, dict], Any], U: Callable[[Scene
     def g(t, z):
         return _flat(constraints(t, {k: z[("q", k)] for k in names}))
 
-    zero_v = {k: M - M for k, M in velocity.items()}
-    T0 = T(s, zero_v)
-
-    def kinetic(w):
-        return T(s, w) - T0
-
-    def direction(name, B, base=zero_v):
-        return {k: (base[k] + B if k == name else base[k]) for k in names}
-
-    N = len(coords)
-    T1 = [kinetic(direction(name, B)) for name, B in coords]
-    K = [[None] * N for _ in range(N)]
-    for a in range(N):
-        na, Ba = coords[a]
-        da = direction(na, Ba)
-        for b in range(a, N):
-            nb, Bb = coords[b]
-            K[a][b] = K[b][a] = kinetic(direction(nb, Bb, da)) - T1[a] - T1[b]
-    grad = [-derivative(s, lambda t, z: U(t, {k: z[("q", k)] for k in names}), point, {("q", name): B})
-            for name, B in coords]
-    J = [derivative(s, g, point, {("q", name): B}) for name, B in coords]    # rows: ∂g/∂c_a
-    m = len(J[0]) if J else 0
+    layout = _Layout(s, coords, position)
+    N = len(layout.coords)
+    K = _kinetic_matrix(s, T, velocity, layout)
+    gradU = _jacobian(s, U, position, layout)                        # 1 × N
+    J = _jacobian(s, lambda t, q: g(t, {("q", k): q[k] for k in names}), position, layout)   # m × N
+    m = J._shape()[0]
     # D²g(q̇, q̇) = d/dε [Dg(q + εq̇)·q̇]
     along = {("q", k): velocity[k] for k in names}
-    hess = derivative(s, lambda t, z: derivative(t, g, z, {("q", k): z[("v", k)] for k in names}),
-                      point, along)
-    rhs = [[grad[a]] + [J[a][j] for j in range(m)] for a in range(N)]
-    Y = _solve(s, K, rhs, "the kinetic energy's quadratic form")
-    S = [[_dot(s, [J[a][i] for a in range(N)], [Y[a][1 + j] for a in range(N)]) for j in range(m)]
-         for i in range(m)]
-    b = [[-hess[i] - _dot(s, [J[a][i] for a in range(N)], [Y[a][0] for a in range(N)])] for i in range(m)]
-    mu = [row[0] for row in _solve(s, S, b, "the matrix of the constraints' second derivatives")]
-    acc = [Y[a][0] + _dot(s, [Y[a][1 + j] for j in range(m)], mu) for a in range(N)]
-    return _combine(s, coords, acc, position), mu
+    hess = _flat(derivative(s, lambda t, z: derivative(t, g, z, {("q", k): z[("v", k)] for k in names}),
+                            point, along))
+    rhs = np.empty((N, m + 1), dtype=object)
+    rhs[:, :1] = (-gradU).T._view()
+    rhs[:, 1:] = J.T._view()
+    Y = _solve(s, K, _matrix(s, rhs), "the kinetic energy's quadratic form")._view()
+    Y0, Y1 = _matrix(s, Y[:, :1].copy()), _matrix(s, Y[:, 1:].copy())
+    if m:
+        h = np.empty((m, 1), dtype=object)
+        for i, x in enumerate(hess):
+            h[i, 0] = x
+        S = J @ Y1
+        b = -_matrix(s, h) - J @ Y0
+        mu = _solve(s, S, b, "the matrix of the constraints' second derivatives")
+        acc = Y0 + Y1 @ mu
+        mu_list = list(mu._view()[:, 0])
+    else:
+        acc, mu_list = Y0, []
+    return layout.assemble(acc, position), mu_list
 
 
 # -- Hamiltonian flows on products of cotangent bundles ----------------------------------------
@@ -226,27 +478,53 @@ def hamiltonian_flow(s: Scene, H: Callable[[Scene, dict], Any], constraints: Cal
     pairs, restricted by the constraints F(t, z) = 0 (independent scalar functions, or matrices
     whose entries are): ż = Ω∇H + Σ_i μ_i Ω∇F_i with the multipliers μ solved from dF/dt = 0 (the
     Dirac flow of H for all constraints together).  Returns the tangent vector (a dict like
-    ``point``) and μ."""
+    ``point``) and μ.
+
+    With the gradients stacked by rows, H_x, H_p (1 × N) and G_x, G_p (one row per constraint), the
+    bracket matrix is C = {F_i, F_j}_0 = G_x G_pᵀ − G_p G_xᵀ, C μ = −(G_x H_pᵀ − G_p H_xᵀ), and
+    ẋ = H_pᵀ + G_pᵀ μ, ṗ = −(H_xᵀ + G_xᵀ μ)."""
     _coordinate_scene(s, "a Hamiltonian flow in coordinates")
     positions = coords(s, [p for p, _ in pairs])
     momenta = coords(s, [m for _, m in pairs])
-    cx = [derivative(s, H, point, {name: B}) for name, B in positions]
-    cp = [derivative(s, H, point, {name: B}) for name, B in momenta]
-    Fx = [_flat(derivative(s, constraints, point, {name: B})) for name, B in positions]
-    Fp = [_flat(derivative(s, constraints, point, {name: B})) for name, B in momenta]
-    N, m = len(positions), len(Fx[0])
-    # Ω∇f = (∂f/∂p, −∂f/∂x);  ∇F_j·Ω∇G = Σ ∂F_j/∂x ∂G/∂p − ∂F_j/∂p ∂G/∂x
-    def pair(fx, fp, gx, gp):
-        return _dot(s, fx, gp) - _dot(s, fp, gx)
-    col = lambda rows, j: [rows[a][j] for a in range(N)]
-    C = [[pair(col(Fx, j), col(Fp, j), col(Fx, i), col(Fp, i)) for i in range(m)] for j in range(m)]
-    b = [[-pair(col(Fx, j), col(Fp, j), cx, cp)] for j in range(m)]
-    mu = [row[0] for row in _solve(s, C, b, "the constraint bracket matrix {F_i, F_j}_0")]
-    xdot = [cp[a] + _dot(s, Fp[a], mu) for a in range(N)]
-    pdot = [-(cx[a] + _dot(s, Fx[a], mu)) for a in range(N)]
-    out = _combine(s, positions, xdot, {p: point[p] for p, _ in pairs})
-    out.update(_combine(s, momenta, pdot, {q: point[q] for _, q in pairs}))
-    return out, mu
+    xs = _Layout(s, positions, {p: point[p] for p, _ in pairs})
+    ps = _Layout(s, momenta, {q: point[q] for _, q in pairs})
+    N = len(positions)
+    if len(momenta) != N:
+        raise ValueError("the positions and the momenta need as many coordinates")
+
+    def scalar_H(t, z):
+        value = H(t, z)
+        if isinstance(value, (Mat, list, tuple, dict)):
+            raise TypeError("a Hamiltonian must be a scalar function, not a " + type(value).__name__)
+        return value
+
+    both = lambda t, z: [scalar_H(t, z)] + _flat(constraints(t, z))
+    if _reverse_applies(s):
+        try:
+            grads = _reverse_gradients(s, both, point, list(point))
+            Jx, Jp = xs.project(grads)._view(), ps.project(grads)._view()
+        except Unsupported:
+            grads = None
+    else:
+        grads = None
+    if grads is None:
+        Jx = _jacobian(s, both, point, _Layout(s, positions, point))._view()
+        Jp = _jacobian(s, both, point, _Layout(s, momenta, point))._view()
+    m = Jx.shape[0] - 1
+    hx, hp = _matrix(s, Jx[:1].copy()), _matrix(s, Jp[:1].copy())
+    Gx, Gp = _matrix(s, Jx[1:].copy()), _matrix(s, Jp[1:].copy())
+    if m:
+        C = Gx @ Gp.T - Gp @ Gx.T
+        b = -(Gx @ hp.T - Gp @ hx.T)
+        mu = _solve(s, C, b, "the constraint bracket matrix {F_i, F_j}_0")
+        xdot = hp.T + Gp.T @ mu
+        pdot = -(hx.T + Gx.T @ mu)
+        mu_list = list(mu._view()[:, 0])
+    else:
+        xdot, pdot, mu_list = hp.T, -hx.T, []
+    out = xs.assemble(xdot, {p: point[p] for p, _ in pairs})
+    out.update(ps.assemble(pdot, {q: point[q] for _, q in pairs}))
+    return out, mu_list
 
 
 # -- generic points of the appendix's phase spaces ------------------------------------------------
