@@ -547,6 +547,9 @@ class _Stdout:
               help="Problem size, repeatable (default: each claim's own sizes).  A size outside "
                    "the sizes a named claim is stated for is refused; without named claims, the "
                    "claims that are not stated for it skip it.")
+@click.option("--max-n", "max_n", type=click.IntRange(min=1), default=None, metavar="N",
+              help="Every size n,r with n <= N that each claim is stated for (instead of each "
+                   "claim's own default sizes); a catalog run with --max-n is still a full run.")
 @click.option("--method", "methods", type=MethodType(), multiple=True, help=METHOD_HELP)
 @click.option("--seed", type=SeedType(), default="0", show_default=True, metavar="N|random",
               help="Seed of every random choice; the same seed reproduces every verdict.  'random' draws "
@@ -587,7 +590,7 @@ class _Stdout:
 def verify(ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tuple[str, ...], seed: int,
            claims_files: tuple[str, ...], report_dir: Path | None, fmt: str, no_report: bool,
            hard: str | None, timeout: float, memory: float, jobs: int,
-           budget: float = DEFAULT_BUDGET, scheduler: str | None = None) -> int:
+           budget: float = DEFAULT_BUDGET, scheduler: str | None = None, max_n: int | None = None) -> int:
     """Verify claims (default: the whole catalog) and print one line per result.
 
     CLAIM is a claim id (see `stiefelsym list`).  With --claims FILE the claims of
@@ -613,7 +616,7 @@ def verify(ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tuple[str, ..
     """
     with _Stdout() as out, raise_on_sigterm():
         return _verify(out, ids, sizes, methods, seed, claims_files, report_dir, fmt, no_report,
-                       hard, timeout, memory, jobs, budget, scheduler)
+                       hard, timeout, memory, jobs, budget, scheduler, max_n)
 
 
 def _check_costs(runner: Any, claims: list[Claim], sizes: tuple[Size, ...], methods: Sequence[str],
@@ -646,9 +649,11 @@ def _remote(address: str) -> Any:
 def _verify(out: Any, ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tuple[str, ...],
             seed: int, claims_files: tuple[str, ...], report_dir: Path | None, fmt: str,
             no_report: bool, hard: str | None, timeout: float, memory: float, jobs: int,
-            budget: float = DEFAULT_BUDGET, scheduler: str | None = None) -> int:
+            budget: float = DEFAULT_BUDGET, scheduler: str | None = None, max_n: int | None = None) -> int:
     if no_report and report_dir is not None:
         raise InputError("--no-report and --report-dir contradict each other")
+    if max_n is not None and sizes:
+        raise InputError("--max-n and --size contradict each other: give one of them")
     if hard is not None and set(methods or ("auto",)) & {"exact", "free"}:
         raise InputError("--hard evaluates sampled points: use it with --method rational, modular, float "
                          "or auto")
@@ -666,6 +671,9 @@ def _verify(out: Any, ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tu
             raise InputError(exc.args[0] if exc.args else str(exc)) from None
     else:
         claims = list(registry)
+    if max_n is not None:     # every size up to max_n that some selected claim is stated for
+        sizes = tuple(Size(n, r) for n in range(1, max_n + 1) for r in range(1, n + 1)
+                      if any(c.sizes.admits(n, r) for c in claims))
     origin: dict[str, str] = getattr(user, "origin", {}) if user is not None else {}
     user_ids = set(origin)
     methods = methods or ("auto",)
@@ -712,14 +720,15 @@ def _verify(out: Any, ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tu
         try:
             engine(claims, sizes=list(sizes) or None, methods=tuple(methods), seed=seed,
                    on_result=on_result, on_plan=progress.plan, hard=hard,
-                   timeout=timeout, memory=memory, jobs=jobs, strict_sizes=bool(ids))
+                   timeout=timeout, memory=memory, jobs=jobs, strict_sizes=bool(ids) and max_n is None)
         finally:
             progress.close()
         meta = {
             "title": _title(claims_files, user_ids, claims),
-            "command": _command(ids, claims_files, sizes, methods, seed, report_dir, budgets),
-            "seed": seed, "methods": list(methods), "hard": hard,
-            "sizes": [f"{s.n},{s.r}" for s in sizes] or None,
+            "command": _command(ids, claims_files, () if max_n is not None else sizes, methods, seed,
+                                report_dir, budgets + (["--max-n", str(max_n)] if max_n is not None else [])),
+            "seed": seed, "methods": list(methods), "hard": hard, "max_n": max_n,
+            "sizes": None if max_n is not None else ([f"{s.n},{s.r}" for s in sizes] or None),
             "claims_file": claims_files[0] if claims_files else None,
             "claims_files": list(claims_files),
             "timeout": timeout, "memory_gib": memory, "jobs": jobs, "budget": budget,

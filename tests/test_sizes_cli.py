@@ -130,3 +130,17 @@ def test_subprocess_claims_file_size_refusal(tmp_path):
     assert proc.returncode == 2, proc.stderr
     assert "claim small is stated for sizes n <= 2; (3,1) is outside" in proc.stderr
     assert Path(tmp_path / "reports").exists() is False
+
+
+def test_max_n_runs_every_stated_size_up_to_n_and_skips_the_rest(run):
+    res = run("verify", "--claims", "mine.py", "small", "big", "thin", "--max-n", "5", "--method", "modular",
+              "--no-report", "--format", "json")
+    assert res.exit_code == 0, res.output
+    got = {(r["claim"], r["n"], r["r"]) for r in json.loads(res.stdout)["results"]}
+    assert {(c, n, r) for c, n, r in got if c == "small"} == {("small", 1, 1), ("small", 2, 1), ("small", 2, 2)}
+    assert max(n for c, n, _ in got if c == "big") == 4 and min(n for c, n, _ in got if c == "big") == 2
+    assert all(n >= 2 * r for c, n, r in got if c == "thin")
+
+
+def test_max_n_and_size_together_are_refused(run):
+    assert "contradict" in _error(run("verify", "--claims", "mine.py", "--max-n", "3", "--size", "2,1"))
