@@ -200,3 +200,100 @@ def test_poisson_map_residual_detects_a_non_poisson_map():
     wrong = lambda t: -t.Phi + t.X @ t.X.T         # noqa: E731
     assert B.poisson_map_residual(s, B.dirac, Theta, B.lambda1(), a, b) == 0
     assert B.poisson_map_residual(s, B.dirac, wrong, B.lambda1(), a, b) != 0
+
+
+# -- the fast paths agree with the definitions --------------------------------------------------
+
+def _symbolic_scene(n, r):
+    from stiefelsym.fields import SymbolicField
+    return Scene(n, r, SymbolicField(), chart="equivariant")
+
+
+FAST_TENSORS = dict(TENSORS, **{
+    "pencil": lambda: B.pencil(lambda t: t.scalar("l1"), lambda t: t.scalar("l2")),
+    "quadratic": quadratic_so_bracket,
+    "doubled": doubled_action,
+    "Lie-Poisson sym(n)": lambda: B.PoissonTensor(B.SYM_N, lambda s, x, a, b: s.killing(x, a @ b - b @ a), 1, "sym"),
+})
+
+
+@pytest.mark.parametrize("name", sorted(FAST_TENSORS))
+@pytest.mark.parametrize("make", [lambda n, r: scene(n, r), lambda n, r: scene(n, r, field=RationalField()),
+                                  _symbolic_scene], ids=["modular", "rational", "symbolic"])
+def test_reverse_gradient_in_x_is_the_basis_gradient(name, make):
+    """The gradient in x by reverse mode equals the one from the values along a basis, for Poisson
+    tensors and for forms that are not Poisson (at a generic x: for a tensor of degree > 1 the
+    derivative at x, which the basis gradient takes by exact interpolation)."""
+    for n, r in ((2, 1), (3, 2)):
+        s = make(n, r)
+        T = FAST_TENSORS[name]()
+        x, b, c = (T.space.generic(s, nm) for nm in ("Tx", "Tb", "Tc"))
+        G = B._reverse_gradient_in_x(s, T, x, b, c)
+        assert G is not None, (name, n, r)
+        assert (G - B._basis_gradient_in_x(s, T, x, b, c)).is_zero(), (name, n, r)
+
+
+def test_gradient_in_x_falls_back_to_the_basis_where_reverse_mode_does_not_apply():
+    """On a scene over another number system (float) the basis gradient is taken, with the same value."""
+    from stiefelsym.fields import FloatField
+    s = scene(3, 2, field=FloatField())
+    T = B.lambda1()
+    x, b, c = (T.space.generic(s, nm) for nm in ("Tx", "Tb", "Tc"))
+    assert B._reverse_gradient_in_x(s, T, x, b, c) is None
+    assert (B.gradient_in_x(s, T, x, b, c) - B._basis_gradient_in_x(s, T, x, b, c)).is_zero()
+
+
+def test_twisted_constraint_brackets_are_the_pairings():
+    """The twisted constraint bracket matrix (one product of the stacked gradients) is the matrix of the
+    pairings ⟨∇F_i, W⁻¹∇F_j⟩, and the twisted Dirac bracket is the sum of its definition."""
+    from stiefelsym import twisted
+    for n in (2, 3, 4):
+        s = scene(n, 2)
+        F = twisted.magnetic_matrix(s)
+        G = twisted._constraint_gradients(s)
+        C0 = twisted.constraint_bracket_matrix(s)
+        for i, gi in enumerate(G):
+            for j, gj in enumerate(G):
+                assert C0[i][j] == twisted._pair_dot(s, gi, twisted._pi(s, gj, F))
+        f = lambda t: t.killing(t.Phi, t.xi)                                   # noqa: E731
+        g = lambda t: t.tr(t.X.T @ t.A @ t.X) / 2 + t.tr(t.generic("U", "n", "r").T @ t.P)   # noqa: E731
+        C = twisted._inverse(s, None)
+        gf, gg = s.gradient(f), s.gradient(g)
+        acc = twisted._pair_dot(s, gf, twisted._pi(s, gg, F))
+        for i, gi in enumerate(G):
+            for j, gj in enumerate(G):
+                acc = acc + (twisted._pair_dot(s, gi, twisted._pi(s, gf, F)) * C[i][j]
+                             * twisted._pair_dot(s, gj, twisted._pi(s, gg, F)))
+        assert twisted.bracket(s, f, g) == s.field.normalize(acc)
+
+
+def test_twisted_inverse_on_a_tangent_scene_is_the_dual_solve():
+    """Along a tangent vector, the inverse of the twisted constraint bracket matrix taken from the base
+    inverse (C_a⁻¹ − C_a⁻¹C_bC_a⁻¹ε) is the dual-number solve of the matrix."""
+    from stiefelsym import twisted
+    for n in (2, 3):
+        s = scene(n, 2)
+        t = s.tangent({"X": s.generic("dX", "n", "r"), "P": s.generic("dP", "n", "r")})
+        assert twisted._dual_base(t, None) is s
+        C0 = twisted.constraint_bracket_matrix(t)
+        m = len(C0)
+        I = [[t.const(1 if i == j else 0) for j in range(m)] for i in range(m)]
+        solved = t.field.solve(C0, I)
+        fast = twisted._inverse(t, None)
+        for i in range(m):
+            for j in range(m):
+                assert t.field.is_zero(fast[i][j] - solved[i][j]), (n, i, j)
+
+
+def test_twisted_jacobi_identity_fails_for_a_wrong_field_strength_term():
+    """Negative control of the fast twisted bracket: with the magnetic term of W⁻¹ doubled on one side
+    (no Poisson tensor), the Jacobiator of three generic functions does not vanish."""
+    from stiefelsym import twisted
+    s = scene(3, 2)
+    f = lambda t: t.killing(t.Phi, t.xi)                                   # noqa: E731
+    g = lambda t: t.tr(t.generic("G", "r", "r") @ t.P.T @ t.P)             # noqa: E731
+    h = lambda t: t.tr(t.X.T @ t.A @ t.X) / 2 + t.tr(t.generic("U", "n", "r").T @ t.P)   # noqa: E731
+    good = B.PhaseBracket("twisted", lambda t, F, G: twisted.bracket(t, F, G))
+    assert B.phase_jacobiator(s, good, f, g, h) == 0
+    bad = B.PhaseBracket("twisted + eps{,}", lambda t, F, G: twisted.bracket(t, F, G) + t.eps * t.canonical_bracket(F, G) * t.eps)
+    assert B.phase_jacobiator(s, bad, f, g, h) != 0
