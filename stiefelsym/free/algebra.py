@@ -335,6 +335,17 @@ class NCPoly:
             raise TypeError(f"cannot add a {self.row}×{self.col} and a {o.row}×{o.col} polynomial")
 
     def __add__(self, o: Any):
+        if type(o) is NCPoly:
+            if self.row != o.row or self.col != o.col:
+                self._same_type(o)
+            if not o.terms:
+                return self
+            if not self.terms:
+                return o
+            out = dict(self.terms)
+            for k, c in o.terms.items():
+                out[k] = out[k] + c if k in out else c
+            return NCPoly._raw(out, self.row, self.col)
         if isinstance(o, NCPoly):
             self._same_type(o)
             out = dict(self.terms)
@@ -403,9 +414,9 @@ class NCPoly:
         return self._scale(se.Integer(1) / k)
 
     def _mul_poly(self, o: "NCPoly") -> "NCPoly":
-        if self.is_scalar:
+        if self.row == SCALAR and self.col == SCALAR:
             row, col = o.row, o.col
-        elif o.is_scalar:
+        elif o.row == SCALAR and o.col == SCALAR:
             row, col = self.row, self.col
         elif self.col == o.row:
             row, col = self.row, o.col
