@@ -125,7 +125,7 @@ def word_key(w: Word) -> tuple:
 _ROTATIONS: dict = {}
 _CYCLE_REPS: dict = {}
 _STARS: dict = {}
-_MEMO_MAX = 200_000
+_MEMO_MAX = 50_000
 
 
 def _memo_get(memo: dict, w: Word) -> Any:

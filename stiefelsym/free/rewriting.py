@@ -45,7 +45,7 @@ _NUMBER_TYPES = frozenset(type(x) for x in (se.Integer(0), se.Integer(1), se.Int
                                              se.Rational(1, 2)))
 #: simplify_coef is a pure function of its (hashable, structurally compared) argument
 _SIMPLIFIED: dict = {}
-_SIMPLIFIED_MAX = 200_000
+_SIMPLIFIED_MAX = 50_000
 
 
 def simplify_coef(c: Coef) -> Coef:
