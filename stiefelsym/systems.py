@@ -270,8 +270,9 @@ class _Layout:
 
 class _PointReverseScene(ReverseScene):
     """The scene over reverse numbers, for gradients at a point of the caller's own: the complex
-    conjugate and the realification of the scene are operations of the tape here (their adjoints:
-    the conjugate itself, and the blocks of the adjoint), not entry writes."""
+    conjugate and the realification of the scene are operations of the tape here (the conjugate as
+    the product J M J, J = diag(I, −I), its own adjoint; the realification a block matrix, whose
+    adjoint gathers the blocks of the adjoint), not entry writes."""
 
     def conj(self, M: Mat) -> Mat:
         for tag in M.tags:
@@ -279,9 +280,20 @@ class _PointReverseScene(ReverseScene):
             if atoms is None or len(atoms) != 2 or atoms[0] != atoms[1]:
                 raise TypeError(f"conj acts on realified matrices, indexed by n+n or r+r, not by {tag!r}")
         R = M._nat()
-        v = _conj_values(R.v)
-        node = None if R.node is None else Node(lambda g, parent=R.node: [(parent, _conj_values(g))])
-        return Mat._wrap_native(RevMat(v, node), self.field, M.tags, M.tracker, M._coords)
+        m, k = M._shape()
+        Jm, Jk = self._signs(m), self._signs(k)
+        conj = lambda v: Jm @ v @ Jk
+        node = None if R.node is None else Node(lambda g, parent=R.node: [(parent, conj(g))])
+        return Mat._wrap_native(RevMat(conj(R.v), node), self.field, M.tags, M.tracker, M._coords)
+
+    def _signs(self, m: int) -> Mat:
+        """J = diag(I, −I) (m × m, untyped, over the base field): the conjugate of a realified
+        matrix M is J M J, and the adjoint of M ↦ J M J is itself."""
+        def build():
+            d = np.ones(m, dtype=np.int64)
+            d[m // 2:] = -1
+            return Mat._consts(np.diag(d), self.base.field)
+        return self.base._cached(f"systems: diag(I, -I) {m}x{m}", build)
 
     def realify(self, U: Mat, V: Mat) -> Mat:
         base = self.base.field
@@ -301,16 +313,6 @@ class _PointReverseScene(ReverseScene):
                 return [(parent, part(q)) for parent, part in live]
             node = Node(backward)
         return Mat._wrap_native(RevMat(v, node), self.field, tags, self.tracker, U._coords or V._coords)
-
-
-def _conj_values(v: Mat) -> Mat:
-    """J v J, J = diag(I, −I), of an untyped matrix of the base field (the conjugate, realified)."""
-    m, k = v._shape()
-    m, k = m // 2, k // 2
-    a = v._view().copy()
-    a[:m, k:] = -a[:m, k:]
-    a[m:, :k] = -a[m:, :k]
-    return Mat._wrap(a, v.field)
 
 
 def _reverse_applies(s: Scene) -> bool:
