@@ -61,6 +61,12 @@ class Backend:
             out[idx] = self.field.const(int(x))
         return self.from_obj(out)
 
+    def unit(self, m: int, k: int, idx: tuple[int, int], x: Any) -> Any:
+        """The m x k matrix with the field element x at idx and zeros elsewhere."""
+        a = _fill(m, k, self.field.const(0))
+        a[idx] = x
+        return self.from_obj(a)
+
     def diag(self, xs: list[Any]) -> Any:
         """The diagonal matrix with the field elements xs on its diagonal."""
         a = _fill(len(xs), len(xs), self.field.const(0))
@@ -100,6 +106,11 @@ class _FlintBackend(Backend):
         M = self.zeros(len(xs), len(xs))
         for i, x in enumerate(xs):
             M[i, i] = x
+        return M
+
+    def unit(self, m, k, idx, x):
+        M = self.zeros(m, k)
+        M[idx[0], idx[1]] = x
         return M
 
     def to_obj(self, s):
@@ -283,6 +294,13 @@ class Float64Backend(Backend):
     def identity(self, m):
         return F64(np.eye(m), 0.0, np.eye(m))
 
+    def unit(self, m, k, idx, x):
+        if type(x) is not ErrNum:
+            return Backend.unit(self, m, k, idx, x)
+        v, s = np.zeros((m, k)), np.zeros((m, k))
+        v[idx], s[idx] = float(x.v), float(x.m)
+        return F64(v, float(x.e), s)
+
     def diag(self, xs):
         if not all(type(x) is ErrNum for x in xs):
             return Backend.diag(self, xs)
@@ -418,6 +436,9 @@ class DegreeBackend(Backend):
     def to_obj(self, s):
         return _fill(s.shape[0], s.shape[1], s.d)
 
+    def unit(self, m, k, idx, x):
+        return DegMat((m, k), self._lift(x))
+
     def from_array(self, a):
         """A block of parameters: every entry is bounded by one parameter's marker."""
         return DegMat(a.shape, self.field.param("", None))
@@ -522,6 +543,11 @@ class DualBackend(Backend):
 
     def from_consts(self, a):
         return (self.base.from_consts(a), self.base.zeros(*a.shape))
+
+    def unit(self, m, k, idx, x):
+        if type(x) is Dual:
+            return (self.base.unit(m, k, idx, x.a), self.base.unit(m, k, idx, x.b))
+        return (self.base.unit(m, k, idx, x), self.base.zeros(m, k))
 
     def diag(self, xs):
         if not all(type(x) is Dual for x in xs):

@@ -203,6 +203,10 @@ class RevBackend:
 
     def _unit(self, shape, idx, g):
         from .matrix import Mat
+        from .native import backend
+        be = backend(self.base)
+        if be is not None:
+            return Mat._wrap_native(be.unit(shape[0], shape[1], idx, g), self.base)
         M = Mat.zeros(shape[0], shape[1], self.base)
         M._a[idx] = g
         return M
