@@ -555,6 +555,18 @@ def _time_to(rows: list[dict[str, Any]], target: float) -> float | None:
     return None
 
 
+def _observed_order(rows: list[dict[str, Any]]) -> float | None:
+    """log(ΔH(h₁)/ΔH(h₂))/log(h₁/h₂) for the two smallest steps whose energy errors are above rounding
+    (None for DOP853, or when fewer than two are)."""
+    pts = sorted((r["step"], r["hamiltonian_error"]) for r in rows
+                 if r["tol"] is None and r["step"] and math.isfinite(r["hamiltonian_error"])
+                 and r["hamiltonian_error"] > 1e-12)
+    if len(pts) < 2:
+        return None
+    (h2, e2), (h1, e1) = pts[0], pts[1]
+    return math.log(e1 / e2) / math.log(h1 / h2) if h1 != h2 and e2 > 0 else None
+
+
 def _tradeoffs(wp: list[dict[str, Any]]) -> list[dict[str, Any]]:
     """Per flow and method: the errors reached within each wall-time budget (the most accurate setting that
     ran within it), and the wall time needed to reach each error target."""
@@ -580,6 +592,7 @@ def _tradeoffs(wp: list[dict[str, Any]]) -> list[dict[str, Any]]:
             for target in TARGETS:
                 t[f"seconds_to_{target:g}"] = _time_to(rows, target)
             t["worst_constraint"] = max(r["constraint_error"] for r in rows)
+            t["observed_order"] = _observed_order(rows)
             out.append(t)
     return out
 
@@ -931,11 +944,13 @@ def _tradeoff_section(data: dict[str, Any]) -> str:
              "0.1 s / 1 s*: the most accurate setting tried that ran within that budget (– if none did). *Seconds to "
              "1e-6 / 1e-8*: the wall time at which the error first reaches the target, interpolated (log-log) between "
              "the two settings around it (– if no setting tried reached it). *Constraints*: the largest ‖XᵀX − I‖, "
-             "‖XᵀP + PᵀX‖ over the settings.")
+             "‖XᵀP + PᵀX‖ over the settings. *Observed order*: log(ΔH(h₁)/ΔH(h₂))/log(h₁/h₂) for the two smallest steps "
+             "(the design orders are 2 for RATTLE, 4 for RATTLE4 and RK4; – where ΔH is at rounding level).")
     L.append("")
     L.append("| flow (V(n,r), T) | method | within 0.1 s: error | within 1 s: setting | error | constraints | "
-             "most accurate: error, seconds | seconds to 1e-6 | seconds to 1e-8 | constraints (worst setting) |")
-    L.append("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+             "most accurate: error, seconds | seconds to 1e-6 | seconds to 1e-8 | constraints (worst setting) "
+             "| observed order |")
+    L.append("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
     for t in _tradeoffs(data["work_precision"]):
         a, b = t["within_0.1s"], t["within_1s"]
         ea = max(a["hamiltonian"], a["lax"] if math.isfinite(a["lax"]) else 0) if a else None
@@ -944,7 +959,8 @@ def _tradeoff_section(data: dict[str, Any]) -> str:
         s6, s8 = t["seconds_to_1e-06"], t["seconds_to_1e-08"]
         L.append(f"| {t['flow']} ({t['n']},{t['r']}, {t['T']:g}) | {label} | {_e(ea)} | {b['setting'] if b else '–'} "
                  f"| {_e(eb)} | {_e(b['constraint']) if b else '–'} | {_e(t['best']['error'])}, "
-                 f"{_sec(t['best']['seconds'])} s | {_sec(s6)} | {_sec(s8)} | {_e(t['worst_constraint'])} |")
+                 f"{_sec(t['best']['seconds'])} s | {_sec(s6)} | {_sec(s8)} | {_e(t['worst_constraint'])} "
+                 f"| {'–' if t.get('observed_order') is None else format(t['observed_order'], '.1f')} |")
     L.append("")
     L.append(_tradeoff_summary(data))
     return "\n".join(L)
@@ -1010,7 +1026,7 @@ def write_report(data: dict[str, Any], out: Path, results_path: Path) -> list[Pa
                                                 "within_1s_setting", "within_1s_seconds", "within_1s_hamiltonian",
                                                 "within_1s_lax", "within_1s_constraint", "best_setting", "best_error",
                                                 "best_seconds", "seconds_to_1e-06", "seconds_to_1e-08",
-                                                "worst_constraint", "failed"]))
+                                                "worst_constraint", "observed_order", "failed"]))
     cf_keys = ["n", "r", "kappa", "beta", "T", "dop853_vs_closed_X", "dop853_vs_closed_P", "rattle_h0.01_vs_closed_X", "eas",
                "eas_vs_closed_X", "eas_vs_dop853_X", "eas_with_velocity_P_vs_dop853_X"]
     write_atomic(out / "closed_forms.csv", _csv(data["closed_forms"], cf_keys))
