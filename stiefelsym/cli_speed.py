@@ -23,6 +23,14 @@ QUICK_NS = {"exact": [2, 3], "rational": [2, 3], "modular": [2, 3], "float": [2,
 FULL_NS = {"exact": [2, 3, 4, 5, 6, 7, 8], "rational": [2, 3, 4, 5, 6, 8, 10],
            "modular": [2, 3, 4, 5, 6, 8, 10, 12], "float": [2, 3, 4, 5, 6, 8, 10, 12, 16]}
 FLOAT_NS_FULL = [2, 3, 4, 5, 6, 8, 10, 12, 16, 20, 24, 32]
+#: r = 2: the sizes to n = 200 (float64 and, as far as the cost model allows, every precision)
+NS_200 = [2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64, 100, 128, 160, 200]
+QUICK_PLAN = (("r = n", None, ("neumann-lax", "corrupted-LA1"), ((3, 3),), ("float", "modular"), 30.0),
+              ("r = n - 1", None, ("neumann-lax",), ((3, 2),), ("float",), 30.0))
+DIM_NOTE = ("Dimensions are integers (exact ranks and counts): there is no rounding error and no float "
+            "residual, so this family has time against n only (exact, rational, modular); n = 200 is out of "
+            "reach for it: the rank computations grow like n^4 to n^7 (the cost model's exponents below), "
+            "{reach}.")
 
 
 @click.command("speed", cls=standalone_command("stiefelsym speed"))
@@ -50,6 +58,7 @@ def speed(report_dir: Path, quick: bool, seed: int, no_hard: bool) -> int:
     say("measuring time against n (cost model) ...")
     records = costmodel.measure(n_values=QUICK_NS if quick else FULL_NS, per_run=20.0 if quick else 30.0,
                                 series_seconds=3.0 if quick else 12.0, seed=seed, registry=registry,
+                                small_ns={"float": [5], "modular": [5]} if quick else costmodel.SMALL_NS,
                                 on_point=lambda r: say(f"  {r['family']:>10} {r['method']:>8} ({r['n']},{r['r']}) "
                                                        f"{r['verdict']} {r['seconds']:.3f}s"))
     cm_doc = costmodel.build(records, note="quick run" if quick else "stiefelsym speed")
@@ -73,16 +82,28 @@ def speed(report_dir: Path, quick: bool, seed: int, no_hard: bool) -> int:
     for fam, cid in costmodel.FAMILIES.items():
         claim = registry.get(cid)
         say(f"{fam}: {cid}: residual against n and precision ...")
+        stops: list[str] = []
+        note = ""
         if claim.kind == "dim":
-            against_n, against_p = [], []
+            against_n, against_n2, against_p = [], [], []
+            cm = costmodel.CostModel(cm_doc)
+            note = DIM_NOTE.format(reach=", ".join(
+                f"{m} predicted {costmodel.format_seconds(cm.predict(m, claim, 200, 2))} at (200,2)"
+                for m in ("modular", "rational", "exact")))
         else:
-            against_n = sp.residual_against_n(claim, [2, 3] if quick else FLOAT_NS_FULL,
-                                              cap=2.0 if quick else 20.0, total=5.0 if quick else 60.0, seed=seed)
-            against_p = sp.residual_against_precision(claim, 3 if quick else 5, 1 if quick else 3, seed=seed)
+            against_n = sp.residual_against_n(claim, [2, 3] if quick else FLOAT_NS_FULL, cap=2.0 if quick else 5.0,
+                                              total=5.0 if quick else 20.0, seed=seed, stops=stops)
+            against_n2 = sp.residual_against_n(claim, [2, 3, 4] if quick else NS_200, cap=2.0 if quick else 10.0,
+                                               total=5.0 if quick else 30.0, seed=seed, r_of=sp.two,
+                                               exact_n=4 if quick else 16, stops=stops)
+            against_p = against_n2 + sp.residual_against_precision(
+                claim, [3, 4] if quick else NS_200[1:], seed=seed, precisions=(30, 50, 100, "exact"),
+                cap=2.0 if quick else 3.0, total=4.0 if quick else 8.0, exact_n=4 if quick else 8, stops=stops)
         everything += against_n + against_p
         times = [r for r in records if r["family"] == fam]
-        families[fam] = {"claim": cid, "times": times, "against_n": against_n, "against_precision": against_p}
-        sp.plot_family(fam, cid, times, against_n, against_p, report_dir)
+        families[fam] = {"claim": cid, "times": times, "against_n": against_n, "against_n2": against_n2,
+                         "against_precision": against_p, "stops": stops, "note": note}
+        sp.plot_family(fam, cid, times, against_n, against_p, report_dir, against_n2=against_n2)
     bad = sp.violations(everything)
     command = shlex.join(["stiefelsym", "speed", "--report-dir", str(report_dir)] + (["--quick"] if quick else [])
                          + (["--seed", str(seed)] if seed else []) + (["--no-hard"] if no_hard else []))
@@ -97,9 +118,17 @@ def speed(report_dir: Path, quick: bool, seed: int, no_hard: bool) -> int:
                                       timeout=30.0, seed=seed, registry=registry)
         else:
             hard_rows = sp.hard_table(timeout=60.0, seed=seed, registry=registry)
-        write_atomic(report_dir / "hard.json", json.dumps(hard_rows, indent=1) + "\n")
-        write_atomic(report_dir / "hard.md", sp.hard_markdown(hard_rows))
+        say("hard sizes (n = 200, r = n, r = n - 1) ...")
+        size_rows = sp.hard_sizes_table(QUICK_PLAN if quick else sp.HARD_SIZE_PLAN, seed=seed, registry=registry)
+        for r in hard_rows:
+            r["table"] = "points"
+        for r in size_rows:
+            r["table"] = "sizes"
+        write_atomic(report_dir / "hard.md", sp.hard_markdown(hard_rows, size_rows))
+        hard_rows = hard_rows + size_rows
+        write_atomic(report_dir / "hard.json", json.dumps(hard_rows, indent=1, default=_json_default) + "\n")
     doc["hard_wrong"] = [r for r in hard_rows if r["judgement"].startswith("WRONG")]
+    doc["tradeoffs"] = sp.tradeoffs(doc)
     doc["seconds"] = round(time.perf_counter() - t_start, 1)
     write_atomic(report_dir / "speed.json", json.dumps(doc, indent=1, default=_json_default) + "\n")
     write_atomic(report_dir / "speed.md", sp.markdown(doc))

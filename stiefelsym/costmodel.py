@@ -47,6 +47,10 @@ FREE_SECONDS = 5.0
 UNKNOWN_CLAIM_FACTOR = 3.0
 #: measured times below this are dominated by fixed overheads and are not fitted as a power of n
 TIME_FLOOR = 2e-3
+#: the small-r series is measured at this r (``fits_small``), to n = 200
+SMALL_R = 2
+#: the methods and sizes of the small-r series (the methods that reach n = 200 at r = 2)
+SMALL_NS = {"float": [4, 8, 16, 32, 64, 100, 200], "modular": [4, 8, 16, 32, 64, 100, 200]}
 
 #: used when costmodel.json is missing or unreadable: generous power laws (seconds)
 _FALLBACK = {"exact": (math.log(1e-3), 6.0), "rational": (math.log(1e-3), 4.5),
@@ -60,7 +64,8 @@ class CostModel:
         self.data = data or {}
         self.fits: dict[str, dict[str, tuple[float, float]]] = {}
         self.square: dict[str, dict[str, tuple[float, float]]] = {}
-        for key, into in (("fits", self.fits), ("fits_square", self.square)):
+        self.small: dict[str, dict[str, tuple[float, float]]] = {}
+        for key, into in (("fits", self.fits), ("fits_square", self.square), ("fits_small", self.small)):
             for method, fams in (self.data.get(key) or {}).items():
                 for fam, coef in fams.items():
                     into.setdefault(method, {})[fam] = (float(coef["a"]), float(coef["b"]))
@@ -98,9 +103,17 @@ class CostModel:
         return f * max(self._power(method, fam, n, r) for fam in kind_families(getattr(claim, "kind", "")))
 
     def _power(self, method: str, fam: str | None, n: int, r: int | None = None) -> float:
-        """r = n: the square fit; r <= n/2: the fit at r = ceil(n/2); between: log-linear in r
-        from one to the other (so the prediction never decreases in r either)."""
+        """r = n: the square fit; n//2 <= r <= n/2: the fit at r = ceil(n/2); between n/2 and n:
+        log-linear in r from one to the other; r <= SMALL_R: the small-r fit (measured at r = 2,
+        never above the r = n/2 fit); between SMALL_R and n//2: log-linear in r from it to the
+        r = n/2 fit (so the prediction never decreases in r either)."""
         half = self._power1(self.fits, method, fam, n)
+        if r is not None and r < n // 2 and self.small.get(method) and (fam in self.small[method] or fam is None):
+            small = min(self._power1(self.small, method, fam, n), half)
+            if r <= SMALL_R:
+                return small
+            w = (r - SMALL_R) / (n // 2 - SMALL_R)
+            return math.exp((1 - w) * math.log(small) + w * math.log(half))
         if r is None or not self.square.get(method):
             return half
         full = max(self._power1(self.square, method, fam, n), half)
@@ -296,7 +309,7 @@ def fit(points: Sequence[tuple[int, float]]) -> tuple[float, float] | None:
 def measure(methods: Iterable[str] = METHODS, families: dict[str, str] | None = None,
             n_values: dict[str, Sequence[int]] | None = None, per_run: float = 30.0,
             series_seconds: float = 20.0, seed: int = 0, on_point: Any = None,
-            registry: Any = None) -> list[dict[str, Any]]:
+            registry: Any = None, small_ns: dict[str, Sequence[int]] | None = None) -> list[dict[str, Any]]:
     """Time runs of each family's representative claim, for each method, at growing n.
 
     Each run executes in a budgeted worker (``runner.verify``); a series (r = ceil(n/2), and
@@ -308,6 +321,7 @@ def measure(methods: Iterable[str] = METHODS, families: dict[str, str] | None = 
     from .scene import SizeError
     from .runner import run_one
     families = families or FAMILIES
+    small_ns = {} if small_ns is None else small_ns
     registry = registry or load_catalog("proofs")
     grid = n_values or {}
     out: list[dict[str, Any]] = []
@@ -324,11 +338,17 @@ def measure(methods: Iterable[str] = METHODS, families: dict[str, str] | None = 
         for method in methods:
             if method == "float" and claim.kind == "dim":
                 continue
-            spent = {"half": 0.0, "square": 0.0}
-            stopped = {"half": False, "square": False}
-            for n in grid.get(method, _default_ns(method)):
-                for kind, r in (("half", (n + 1) // 2), ("square", n)):
-                    if stopped[kind] or (kind == "square" and r == (n + 1) // 2):
+            spent = {"half": 0.0, "square": 0.0, "small": 0.0}
+            stopped = {"half": False, "square": False, "small": method not in small_ns}
+            ns = sorted(set(grid.get(method, _default_ns(method))) | set(small_ns.get(method, [])))
+            for n in ns:
+                kinds = [("small", SMALL_R)] if n in small_ns.get(method, []) else []
+                if n in grid.get(method, _default_ns(method)):
+                    kinds = [("half", (n + 1) // 2), ("square", n)] + kinds
+                for kind, r in kinds:
+                    if stopped[kind] or (kind == "square" and r == (n + 1) // 2) or r > n:
+                        continue
+                    if kind == "small" and n < 2 * SMALL_R + 1:
                         continue
                     try:
                         results = verify([claim], sizes=[Size(n, r)], methods=(method,), seed=seed,
@@ -341,6 +361,8 @@ def measure(methods: Iterable[str] = METHODS, families: dict[str, str] | None = 
                         continue
                     rec = {"family": fam, "claim": cid, "method": method, "n": n, "r": r,
                            "seconds": round(float(res.seconds), 6), "verdict": res.verdict}
+                    if kind == "small":
+                        rec["series"] = "small"
                     out.append(rec)
                     if on_point is not None:
                         on_point(rec)
@@ -361,12 +383,15 @@ def _default_ns(method: str) -> list[int]:
 def build(records: Sequence[dict[str, Any]], note: str = "") -> dict[str, Any]:
     """The JSON document of a cost model from measurement records: one power law per method and
     family at r = ceil(n/2) (``fits``), one at r = n (``fits_square``: both components of O(n))."""
-    out: dict[str, dict[str, dict[str, Any]]] = {"fits": {}, "fits_square": {}}
+    out: dict[str, dict[str, dict[str, Any]]] = {"fits": {}, "fits_square": {}, "fits_small": {}}
     groups: dict[tuple[str, str, str], dict[int, float]] = {}
     for rec in records:
         # a run stopped by its budget still bounds the time from below: kept as a point
         n, r = rec["n"], rec["r"]
-        kinds = (["fits"] if r == (n + 1) // 2 else []) + (["fits_square"] if r == n else [])
+        if rec.get("series") == "small":
+            kinds = ["fits_small"]
+        else:
+            kinds = (["fits"] if r == (n + 1) // 2 else []) + (["fits_square"] if r == n else [])
         for kind in kinds:
             g = groups.setdefault((kind, rec["method"], rec["family"]), {})
             g[n] = max(g.get(n, 0.0), float(rec["seconds"]))
@@ -380,7 +405,8 @@ def build(records: Sequence[dict[str, Any]], note: str = "") -> dict[str, Any]:
     return {
         "version": 2,
         "model": ("t(n, r) = exp(a) * n^b seconds, upper envelopes of the measured points: 'fits' at "
-                  "r = ceil(n/2) (used for r <= n/2), 'fits_square' at r = n, log-linear in r between"),
+                  "r = ceil(n/2), 'fits_square' at r = n, 'fits_small' at r = 2 (float and modular, to "
+                  "n = 200); log-linear in r between them"),
         "generated": datetime.now(timezone.utc).strftime("%Y-%m-%d %H:%M:%S UTC"),
         "platform": platform.platform(terse=True),
         "python": platform.python_version(),
@@ -389,6 +415,7 @@ def build(records: Sequence[dict[str, Any]], note: str = "") -> dict[str, Any]:
         "claim_family": {cid: fam for fam, cid in FAMILIES.items()},
         "fits": out["fits"],
         "fits_square": out["fits_square"],
+        "fits_small": out["fits_small"],
         "records": list(records),
     }
 
@@ -416,7 +443,8 @@ def plot(doc: dict[str, Any], out_dir: Path | str) -> list[Path]:
         axes = [axes]
     colors = {"exact": "C0", "rational": "C1", "modular": "C2", "float": "C3"}
     for ax, fam in zip(axes, fams):
-        for key, marker, style, suffix in (("fits", "o", "-", " r=n/2"), ("fits_square", "s", "--", " r=n")):
+        for key, marker, style, suffix in (("fits", "o", "-", " r=n/2"), ("fits_square", "s", "--", " r=n"),
+                                           ("fits_small", "^", ":", " r=2")):
             for method, fits in (doc.get(key) or {}).items():
                 f = fits.get(fam)
                 if not f:
@@ -424,7 +452,7 @@ def plot(doc: dict[str, Any], out_dir: Path | str) -> list[Path]:
                 ns = [p[0] for p in f["points"]]
                 ts = [max(p[1], 1e-5) for p in f["points"]]
                 ax.loglog(ns, ts, marker, color=colors.get(method), label=method + suffix, ms=4,
-                          mfc="none" if key == "fits_square" else None)
+                          mfc="none" if key != "fits" else None)
                 grid = [2 + k * (max(ns) * 2 - 2) / 50 for k in range(51)]
                 ax.loglog(grid, [math.exp(f["a"]) * x ** f["b"] for x in grid], style, color=colors.get(method),
                           lw=1, alpha=0.7)
@@ -433,8 +461,8 @@ def plot(doc: dict[str, Any], out_dir: Path | str) -> list[Path]:
         ax.grid(True, which="both", alpha=0.3)
     axes[0].set_ylabel("seconds per run")
     axes[0].legend(fontsize=6, ncol=2)
-    fig.suptitle("cost model: time against n per method, r = ceil(n/2) (filled, solid) and r = n (open, dashed); "
-                 "lines: fitted upper envelopes",
+    fig.suptitle("cost model: time against n per method, r = ceil(n/2) (filled, solid), r = n (open, dashed), "
+                 "r = 2 (triangles, dotted); lines: fitted upper envelopes",
                  fontsize=9)
     fig.tight_layout()
     paths = []
@@ -448,13 +476,15 @@ def plot(doc: dict[str, Any], out_dir: Path | str) -> list[Path]:
 
 def table(doc: dict[str, Any]) -> str:
     """The fitted coefficients as a Markdown table."""
-    lines = ["| method | family | r | a | b (exponent of n) | measured up to n | predicted at n = 12 | n = 100 |",
-             "| --- | --- | --- | ---: | ---: | ---: | ---: | ---: |"]
-    for key, rtext in (("fits", "n/2"), ("fits_square", "n")):
+    lines = ["| method | family | r | a | b (exponent of n) | measured up to n | predicted at n = 12 | n = 100 "
+             "| n = 200 |",
+             "| --- | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: |"]
+    for key, rtext in (("fits", "n/2"), ("fits_square", "n"), ("fits_small", "2")):
         for method, fits in sorted((doc.get(key) or {}).items()):
             for fam, f in fits.items():
                 t12 = math.exp(f["a"]) * 12 ** f["b"]
                 t100 = math.exp(f["a"]) * 100 ** f["b"]
+                t200 = math.exp(f["a"]) * 200 ** f["b"]
                 lines.append(f"| {method} | {fam} | {rtext} | {f['a']:.2f} | {f['b']:.2f} | {f['n_max_measured']} | "
-                             f"{format_seconds(t12)} | {format_seconds(t100)} |")
+                             f"{format_seconds(t12)} | {format_seconds(t100)} | {format_seconds(t200)} |")
     return "\n".join(lines) + "\n"

@@ -52,26 +52,49 @@ def _exact_fraction(x: Any) -> Fraction:
     return Fraction(x)
 
 
-def _float_point_field() -> Any:
-    """Exact rationals at the float method's own points (the same draws: k / 2^40)."""
+def _float_point_field(dps: int | None = None) -> Any:
+    """Exact rationals at the float method's own points at precision ``dps``: the same draws,
+    k / 2^40 (float64 draws a block of parameters at once from a numpy generator seeded by ``rng``,
+    mpmath one at a time from ``rng``, as :class:`stiefelsym.fields.FloatField` does)."""
     import flint
-    from .fields import RationalField
+    from .fields import FloatField, RationalField
+    from .native import RationalBackend
 
     class FloatPointRationals(RationalField):
         name = "rational (at the float point)"
 
         def param(self, name, rng):
             return flint.fmpq(rng.randint(-2**40, 2**40), 2**40)
-    return FloatPointRationals()
+
+        def param_values(self, rng, count):
+            vals = FloatField(dps).param_values(rng, count)
+            return None if vals is None else (vals * 2.0**40).astype("int64")
+
+        def param_from_raw(self, x):
+            return flint.fmpq(int(x), 2**40)
+
+    class FloatPointBackend(RationalBackend):
+        def from_consts(self, a):
+            return RationalBackend.from_array(self, a)       # integer constants, unscaled
+
+        def from_array(self, a):
+            """A block of parameters k / 2^40, from the integers k."""
+            m, k = a.shape
+            return flint.fmpq_mat(m, k, [flint.fmpq(int(x), 2**40) for x in a.ravel().tolist()]) \
+                if m and k else self.zeros(m, k)
+    field = FloatPointRationals()
+    field.__dict__["_backend"] = FloatPointBackend(field)   # the backend cache of native.backend
+    return field
 
 
 def exact_entries(claim: Any, n: int, r: int, seed: int = 0, hard: str | None = None,
-                  component: int = 0) -> list[Fraction]:
-    """The claim's residual entries, exactly, at the very point the float method evaluates."""
+                  component: int = 0, dps: int | None = None) -> list[Fraction]:
+    """The claim's residual entries, exactly, at the very point the float method evaluates (at
+    precision ``dps``: float64 and mpmath draw their points differently)."""
     from .claims import Count, Rank
     from .methods import _entries, call_claim
     from .scene import Scene
-    field = _float_point_field()
+    field = _float_point_field(dps)
     rng = random.Random(f"{seed}|{claim.id}|{n}|{r}|float" + (f"|component {component}" if component else ""))
     options = None
     if hard:
@@ -87,21 +110,85 @@ def exact_entries(claim: Any, n: int, r: int, seed: int = 0, hard: str | None = 
     return out
 
 
+def _residual_arrays(checks: dict[str, Any], field: Any) -> tuple[Any, Any, Any, bool]:
+    """(v, e, m, native): the values, error bounds and term scales of every residual entry, in the
+    order of ``methods._entries``.  A matrix in native float64 storage is read as whole arrays (its
+    bound e is normwise: one bound for every entry of the matrix); anything else (mpmath, scalars)
+    entry by entry, as lists."""
+    import numpy as np
+    from .claims import Count, Rank
+    from .fields import ErrNum
+    from .matrix import Mat
+    from .methods import _entries
+    from .native import F64
+    parts: list[tuple[Any, Any, Any]] = []
+    native = True
+    for name, value in checks.items():
+        if isinstance(value, (Rank, Count)):
+            continue
+        s = value._n if isinstance(value, Mat) else None
+        if s is not None and type(s) is F64 and all(value._shape()):
+            parts.append((s.v.ravel(), np.full(s.v.size, float(s.e)), s.m.ravel()))
+            continue
+        native = False
+        for _, x in _entries(value, name):
+            if not isinstance(x, ErrNum):
+                x = field.const(x)           # an exact int or Fraction
+            parts.append(([x.v], [x.e], [x.m]))
+    if native:
+        if not parts:
+            return np.zeros(0), np.zeros(0), np.zeros(0), True
+        return tuple(np.concatenate([p[k] for p in parts]) for k in range(3)) + (True,)
+    flat = [[y for p in parts for y in (p[k].tolist() if hasattr(p[k], "tolist") else p[k])] for k in range(3)]
+    return flat[0], flat[1], flat[2], False
+
+
+def _stats(v: Any, e: Any, m: Any, native: bool) -> dict[str, Any]:
+    """Largest |residual|, bound and scale; entries over their bound; resolution; finiteness."""
+    import numpy as np
+    if native:
+        with np.errstate(all="ignore"):
+            fin = np.isfinite(v) & np.isfinite(e) & np.isfinite(m)
+            av = np.where(fin, np.abs(v), np.inf)
+            be = np.where(fin, e, np.inf)
+            ms = np.where(fin, m, np.inf)
+            ratio = np.where(be > 0, av / np.where(be > 0, be, 1.0), np.where(av == 0, 0.0, np.inf))
+            return {"finite": bool(fin.all()), "max_residual": float(av.max()), "max_bound": float(be.max()),
+                    "max_scale": float(ms.max()), "exceed": int(np.count_nonzero(fin & (np.abs(v) > e))),
+                    "resolved": bool(fin.all() and np.all(e <= 1e-8 * m)), "worst_ratio": float(ratio.max())}
+    fin = [_finite3(a, b, c) for a, b, c in zip(v, e, m)]
+    vals = [_clip(abs(a)) if f else math.inf for a, f in zip(v, fin)]
+    bounds = [_clip(b) if f else math.inf for b, f in zip(e, fin)]
+    scales = [_clip(c) if f else math.inf for c, f in zip(m, fin)]
+    return {"finite": all(fin), "max_residual": max(vals), "max_bound": max(bounds), "max_scale": max(scales),
+            "exceed": sum(1 for a, b, f in zip(v, e, fin) if f and abs(a) > b),
+            "resolved": all(fin) and all(b <= 1e-8 * c for b, c in zip(e, m)),
+            "worst_ratio": max((a / b) if b > 0 else (0.0 if a == 0 else math.inf) for a, b in zip(vals, bounds))}
+
+
+def _finite3(*xs: Any) -> bool:
+    import mpmath
+    try:
+        return all(mpmath.isfinite(y) for y in xs)
+    except (TypeError, ValueError):
+        return False
+
+
 def evaluate(claim: Any, n: int, r: int, dps: int | None = None, seed: int = 0, hard: str | None = None,
              component: int = 0, exact: bool = False) -> dict[str, Any]:
     """The claim's residual entries at the float method's own point, at one precision.
 
     Returns the largest |residual|, the largest predicted bound e, the number of entries with
     |residual| > e (``exceed``: must be 0 for a true claim), whether every bound resolves 1e-8 of
-    its term scale, whether anything overflowed, and the time.  With ``exact`` the residual is
-    also computed exactly at the same point, and ``exceed_exact`` counts the entries whose actual
-    rounding error |computed - exact| exceeds the bound e (must be 0 for every claim, true or
-    false: that is what the bound claims)."""
+    its term scale, whether anything overflowed, and the time (of the claim's evaluation: the
+    scene, the residuals and their bounds).  With ``exact`` the residual is also computed exactly
+    at the same point, and ``exceed_exact`` counts the entries whose actual rounding error
+    |computed - exact| exceeds the bound e (must be 0 for every claim, true or false: that is what
+    the bound claims); ``exact_seconds`` is the time of that exact evaluation."""
     import mpmath
     import numpy as np
-    from .claims import Count, Rank
-    from .fields import ErrNum, FloatField
-    from .methods import _entries, call_claim
+    from .fields import FloatField
+    from .methods import call_claim
     from .scene import Scene
     field = FloatField(dps)
     rng = random.Random(f"{seed}|{claim.id}|{n}|{r}|float" + (f"|component {component}" if component else ""))
@@ -117,43 +204,34 @@ def evaluate(claim: Any, n: int, r: int, dps: int | None = None, seed: int = 0, 
         with ctx:
             scene = Scene(n, r, field, chart="cayley", rng=rng, component=component,
                           realization=claim.realization, options=options)
-            checks = call_claim(claim.func, scene)
-            entries = []
-            for name, value in checks.items():
-                if isinstance(value, (Rank, Count)):
-                    continue
-                for _, x in _entries(value, name):
-                    entries.append(x if isinstance(x, ErrNum) else field.const(x))
+            v, e, m, native = _residual_arrays(call_claim(claim.func, scene), field)
+            seconds = time.perf_counter() - t0
+            stats = _stats(v, e, m, native) if len(v) else None
     except Exception as exc:  # noqa: BLE001 - a degenerate point, an overflow: reported, not raised
         out.update(status="error", message=f"{type(exc).__name__}: {exc}", seconds=time.perf_counter() - t0)
         return out
-    seconds = time.perf_counter() - t0
-    if not entries:
+    if stats is None:
         out.update(status="no residuals", seconds=seconds, entries=0)
         return out
-    if exact and all(_finite(x) for x in entries):
+    finite = stats.pop("finite")
+    if exact and finite:
+        t1 = time.perf_counter()
         try:
-            ex = exact_entries(claim, n, r, seed, hard, component)
+            ex = exact_entries(claim, n, r, seed, hard, component, dps)
         except Exception as exc:  # noqa: BLE001 - a degenerate point for exact arithmetic
             out["exact_error"] = f"{type(exc).__name__}: {exc}"
         else:
-            if len(ex) == len(entries):
-                errs = [abs(_exact_fraction(x.v) - q) for x, q in zip(entries, ex)]
-                out["exceed_exact"] = sum(1 for x, err in zip(entries, errs) if err > _exact_fraction(x.e))
+            out["exact_seconds"] = round(time.perf_counter() - t1, 6)
+            if len(ex) == len(v):
+                vv = v.tolist() if native else v
+                ee = e.tolist() if native else e
+                errs = [abs(_exact_fraction(a) - q) for a, q in zip(vv, ex)]
+                out["exceed_exact"] = sum(1 for b, err in zip(ee, errs) if err > _exact_fraction(b))
                 out["max_exact_residual"] = _number(max(abs(q) for q in ex))
                 out["max_actual_error"] = _number(max(errs))
             else:
                 out["exact_error"] = "the exact evaluation has another number of entries"
-    finite = all(_finite(x) for x in entries)
-    vals = [_clip(abs(x.v)) if _finite(x) else math.inf for x in entries]
-    bounds = [_clip(x.e) if _finite(x) else math.inf for x in entries]
-    scales = [_clip(x.m) if _finite(x) else math.inf for x in entries]
-    exceed = sum(1 for x in entries if _finite(x) and abs(x.v) > x.e)
-    resolved = finite and all(x.e <= 1e-8 * x.m for x in entries)
-    out.update(status="ok" if finite else "overflow", seconds=seconds, entries=len(entries),
-               max_residual=max(vals), max_bound=max(bounds), max_scale=max(scales),
-               exceed=exceed, resolved=resolved,
-               worst_ratio=max((v / b) if b > 0 else (0.0 if v == 0 else math.inf) for v, b in zip(vals, bounds)))
+    out.update(status="ok" if finite else "overflow", seconds=seconds, entries=len(v), **stats)
     return out
 
 
@@ -184,45 +262,127 @@ def _finite(x: Any) -> bool:
 
 # --------------------------------------------------------------------------- sweeps
 
+def _predicted(series: Sequence[dict[str, Any]], n: int, key: str = "seconds") -> float | None:
+    """The next evaluation's time, from the series so far: the cost model's power law (an upper
+    envelope of the measured points, :func:`stiefelsym.costmodel.fit`) at n; None without data."""
+    from .costmodel import fit
+    pts = [(x["n"], float(x[key])) for x in series if x.get(key) is not None and x.get("status") == "ok"]
+    coef = fit(pts) if pts else None
+    if coef is None:
+        return None
+    a, b = coef
+    return math.exp(a) * n ** b
+
+
+def half(n: int) -> int:
+    """r = ceil(n/2), the middle of the range of r."""
+    return (n + 1) // 2
+
+
+def two(n: int) -> int:
+    """r = 2 (r = 1 at n = 1): the small-r series, which reaches n = 200."""
+    return min(2, n)
+
+
 def residual_against_n(claim: Any, ns: Sequence[int], cap: float = 10.0, total: float = 30.0,
-                       seed: int = 0, exact_n: int = 6) -> list[dict[str, Any]]:
-    """float64 residual and bound against n (r = ceil(n/2)), until one evaluation takes ``cap``
-    seconds or the series ``total``; past an overflow in float64 the float method escalates, and so
-    does this series (the first precision of the ladder that stays finite)."""
-    out, spent = [], 0.0
+                       seed: int = 0, exact_n: int = 6, r_of: Any = half, dps: int | None = None,
+                       stops: list | None = None) -> list[dict[str, Any]]:
+    """Residual and predicted bound against n at one precision (float64 by default), r = r_of(n).
+
+    Before each size the time is predicted from the series so far (the cost model's power law,
+    an upper envelope of the measured times); the series stops at the first size predicted
+    beyond ``cap`` seconds, at an evaluation that took more than ``cap``, or once it has spent
+    ``total`` (the reason goes to ``stops``).  Up to ``exact_n`` the residual is also computed
+    exactly at the same point (the actual error against the bound).  In float64, past an
+    overflow, the series escalates as the float method does (the first precision of the ladder
+    that stays finite)."""
+    out: list[dict[str, Any]] = []
+    spent = 0.0
     for n in ns:
-        r = (n + 1) // 2
-        rec = evaluate(claim, n, r, None, seed, exact=n <= exact_n)
-        if rec.get("status") == "overflow":
-            for dps in (30, 60, 120):
-                esc = evaluate(claim, n, r, dps, seed, exact=n <= exact_n)
+        r = r_of(n)
+        guess = _predicted(out, n)
+        if guess is not None and guess > cap:
+            if stops is not None:
+                stops.append(f"{_label(dps)}, r = {_r_text(r_of)}: stopped before n = {n} (predicted "
+                             f"{guess:.3g} s > {cap:g} s per evaluation)")
+            break
+        rec = evaluate(claim, n, r, dps, seed, exact=n <= exact_n)
+        if guess is not None:
+            rec["predicted_seconds"] = round(guess, 6)
+        if dps is None and rec.get("status") == "overflow":
+            for dps2 in (30, 60, 120):
+                esc = evaluate(claim, n, r, dps2, seed, exact=n <= exact_n)
                 esc["seconds"] += rec["seconds"]
                 esc["escalated_from"] = "float64 (overflow)"
                 rec = esc
                 if rec.get("status") == "ok":
                     break
         out.append(rec)
-        spent += rec.get("seconds", 0.0)
+        spent += rec.get("seconds", 0.0) + rec.get("exact_seconds", 0.0)
         if rec.get("status") in ("error", "no residuals") or rec.get("seconds", 0) > cap or spent > total:
+            if stops is not None and n != ns[-1]:
+                why = rec.get("message") or ("the series' time" if spent > total else "the evaluation's time")
+                stops.append(f"{_label(dps)}, r = {_r_text(r_of)}: stopped after n = {n} ({why}: "
+                             f"{spent:.3g} s spent, cap {cap:g} s per evaluation, {total:g} s per series)")
             break
     return out
 
 
-def residual_against_precision(claim: Any, n: int, r: int, seed: int = 0,
-                               precisions: Iterable[int | None] = PRECISIONS) -> list[dict[str, Any]]:
-    """float64, mpmath at 30, 50, 100 digits and the exact evaluation, at one size."""
-    out = [evaluate(claim, n, r, dps, seed, exact=True) for dps in precisions]
-    from .claims import Size
-    from .runner import run_one
+def _r_text(r_of: Any) -> str:
+    return {"half": "ceil(n/2)", "two": "2"}.get(getattr(r_of, "__name__", ""), "r(n)")
+
+
+def evaluate_exact(claim: Any, n: int, r: int, seed: int = 0, hard: str | None = None) -> dict[str, Any]:
+    """The residual computed exactly (rational arithmetic) at the float method's own point: the
+    "infinite precision" end of the precision axis; the residual is exactly 0 for a true claim."""
     t0 = time.perf_counter()
-    res = run_one(claim, Size(n, r), "rational", seed)
-    out.append({"claim": claim.id, "n": n, "r": r, "precision": "exact", "digits": math.inf,
-                "status": "ok" if res.verdict in ("checked", "proved") else res.verdict,
-                "verdict": res.verdict, "seconds": time.perf_counter() - t0,
-                "max_residual": 0.0 if res.verdict in ("checked", "proved") else None,
-                "max_bound": 0.0, "exceed": 0,
-                "note": "exact rational points: the residual is exactly 0 at each (the time is that of the "
-                        "whole randomized check, with its Schwartz-Zippel bound)"})
+    out: dict[str, Any] = {"claim": claim.id, "n": n, "r": r, "precision": "exact", "digits": math.inf}
+    try:
+        ex = exact_entries(claim, n, r, seed, hard)
+    except Exception as exc:  # noqa: BLE001 - reported, not raised
+        out.update(status="error", message=f"{type(exc).__name__}: {exc}", seconds=time.perf_counter() - t0)
+        return out
+    res = max((abs(q) for q in ex), default=Fraction(0))
+    out.update(status="ok", seconds=time.perf_counter() - t0, entries=len(ex), max_residual=_number(res),
+               max_bound=0.0, exceed=0 if res == 0 else len([q for q in ex if q]), resolved=True,
+               note="rational arithmetic at the float method's point: no rounding, the bound is 0")
+    return out
+
+
+def residual_against_precision(claim: Any, ns: Sequence[int] | int, r: Any = None, seed: int = 0,
+                               precisions: Iterable[int | str | None] = PRECISIONS + ("exact",),
+                               cap: float = 3.0, total: float = 8.0, exact_n: int = 8,
+                               stops: list | None = None) -> list[dict[str, Any]]:
+    """float64, mpmath at 30, 50, 100 digits and the exact evaluation, each against n (r = r(n),
+    default 2) as far as the cost model's prediction stays within ``cap`` seconds per evaluation
+    and the series within ``total``.  ``residual_against_precision(claim, n, r)`` (two integers)
+    evaluates at that one size only."""
+    if isinstance(ns, int):
+        size_r = r
+        ns, r_of = [ns], (lambda n: size_r)
+    else:
+        r_of = r or two
+    out: list[dict[str, Any]] = []
+    for dps in precisions:
+        if dps == "exact":
+            series: list[dict[str, Any]] = []
+            spent = 0.0
+            for n in ns:
+                guess = _predicted(series, n)
+                if guess is not None and guess > cap:
+                    if stops is not None:
+                        stops.append(f"exact, r = {_r_text(r_of)}: stopped before n = {n} (predicted "
+                                     f"{guess:.3g} s > {cap:g} s per evaluation)")
+                    break
+                rec = evaluate_exact(claim, n, r_of(n), seed)
+                series.append(rec)
+                spent += rec["seconds"]
+                if rec["status"] != "ok" or spent > total:
+                    break
+            out += series
+            continue
+        out += residual_against_n(claim, ns, cap=cap, total=total, seed=seed, exact_n=exact_n, r_of=r_of,
+                                  dps=dps, stops=stops)
     return out
 
 
@@ -311,6 +471,41 @@ def _exact_check(claim: Any, n: int, r: int, seed: int, hard: str, label: str) -
     return worst
 
 
+def _hard_rows(case: str, hard: str | None, c: Any, plan: Sequence[Any], m: str, timeout: float, seed: int,
+               exact_check_n: int) -> list[dict[str, Any]]:
+    """The rows of one (case, claim, method) over its sizes: verdict, precision reached, time, judged."""
+    from .runner import verify
+    truth = "false" if c.id == "corrupted-LA1" else "true"
+    rows = []
+    if not plan:
+        return rows
+    results = verify([c], sizes=list(plan), methods=(m,), seed=seed, hard=hard, timeout=timeout)
+    for res in results:
+        if res.variant is not None:
+            continue
+        text = " ".join(x for x in (res.message, res.certificate) if x)
+        untouched = hard is not None and "changed no parameter" in text
+        label = _precision_reached(text) if m == "float" else "exact"
+        check = None
+        if m == "float" and res.verdict in ("undecided", "numeric") and label != "-" \
+                and res.n <= (max(exact_check_n, 12) if truth == "false" else exact_check_n):
+            try:
+                check = _exact_check(c, res.n, res.r, seed, hard, label)
+            except Exception as exc:  # noqa: BLE001 - reported in the row, never a crash
+                check = {"exact_error": f"{type(exc).__name__}: {exc}"}
+        rows.append({"case": case, "claim": c.id, "truth": truth, "n": res.n, "r": res.r,
+                     "method": m, "verdict": res.verdict, "precision": label,
+                     "escalated": "mpmath" in label,
+                     "seconds": round(res.seconds, 4),
+                     "touched": not untouched,
+                     "exact_residual": None if check is None else check.get("max_exact_residual"),
+                     "actual_error": None if check is None else check.get("max_actual_error"),
+                     "bound": None if check is None else check.get("max_bound"),
+                     "judgement": _judge(truth, res.verdict, check),
+                     "reason": _short(text, 160)})
+    return rows
+
+
 def hard_table(cases: Sequence[str] | None = None, claims: Sequence[Any] | None = None,
                sizes: Sequence[tuple[int, int]] = HARD_SIZES, methods: Sequence[str] = ("float", "modular"),
                timeout: float = 60.0, seed: int = 0, large: tuple[int, int] | None = HARD_LARGE,
@@ -318,7 +513,6 @@ def hard_table(cases: Sequence[str] | None = None, claims: Sequence[Any] | None 
     """Every hard case x claim x size x method: verdict, precision reached, time, judged."""
     from .claims import Size, load_catalog
     from .hard import HARD_CASES
-    from .runner import verify
     cases = list(cases or HARD_CASES)
     if claims is None:
         registry = registry or load_catalog("proofs")
@@ -326,35 +520,61 @@ def hard_table(cases: Sequence[str] | None = None, claims: Sequence[Any] | None 
     rows = []
     for case in cases:
         for c in claims:
-            truth = "false" if c.id == "corrupted-LA1" else "true"
             plan = [Size(n, r) for n, r in sizes if c.sizes.admits(n, r)]
             if large and c.sizes.admits(*large):
                 plan.append(Size(*large))
             for m in methods:
-                results = verify([c], sizes=plan, methods=(m,), seed=seed, hard=case, timeout=timeout)
-                for res in results:
-                    if res.variant is not None:
+                rows += _hard_rows(case, case, c, plan, m, timeout, seed, exact_check_n)
+    return rows
+
+
+#: the hard sizes: (label, hard case or None, claims, sizes, methods, seconds per run)
+HARD_SIZE_PLAN = (
+    ("n = 200", None, HARD_CLAIMS, ((200, 1), (200, 2)), ("float", "modular"), 15.0),
+    # a float64 failure is confirmed by an exact rational evaluation, out of reach at n = 200 (inconclusive)
+    ("n = 200", None, ("corrupted-LA1",), ((200, 2),), ("float", "modular"), 15.0),
+    ("n = 200 + near-pole-1e-8", "near-pole-1e-8", ("neumann-lax",), ((200, 2),), ("float",), 15.0),
+    ("n = 200 + near-pole-1e-8", "near-pole-1e-8", ("corrupted-LA1",), ((200, 2),), ("modular",), 15.0),
+    ("n = 200 + near-equal-a-1e-6", "near-equal-a-1e-6", ("neumann-lax",), ((200, 2),), ("float",), 15.0),
+    ("r = n", None, HARD_CLAIMS + ("corrupted-LA1",), ((6, 6), (8, 8), (10, 10), (12, 12)),
+     ("float", "modular", "exact"), 30.0),
+    ("r = n - 1", None, HARD_CLAIMS + ("corrupted-LA1",), ((6, 5), (8, 7), (10, 9), (12, 11)),
+     ("float", "modular", "exact"), 30.0),
+    ("r = n + near-pole-1e-8", "near-pole-1e-8", ("neumann-lax", "manakov-lax", "corrupted-LA1"), ((8, 8),),
+     ("float", "modular"), 30.0),
+)
+
+
+def hard_sizes_table(plan: Sequence[tuple] = HARD_SIZE_PLAN, seed: int = 0, registry: Any = None,
+                     exact_check_n: int = 8, share: float = 0.5) -> list[dict[str, Any]]:
+    """The hard sizes: n = 200 (r = 1, 2), r = n and r = n - 1, at plain random points and with
+    some hard cases.  A size whose predicted time (the cost model) exceeds ``share`` of the run's
+    budget is not run; its row says so (verdict ``refused``, never a wrong verdict)."""
+    from .claims import Size, load_catalog
+    from .costmodel import format_seconds, predict
+    registry = registry or load_catalog("proofs")
+    rows: list[dict[str, Any]] = []
+    for label, hard, cids, sizes, methods, timeout in plan:
+        for cid in cids:
+            c = control_claim() if cid == "corrupted-LA1" else registry.get(cid)
+            for m in methods:
+                run = []
+                for n, r in sizes:
+                    if not c.sizes.admits(n, r):
                         continue
-                    text = " ".join(x for x in (res.message, res.certificate) if x)
-                    untouched = "changed no parameter" in text
-                    label = _precision_reached(text) if m == "float" else "exact"
-                    check = None
-                    if m == "float" and res.verdict in ("undecided", "numeric") and label != "-" \
-                            and (truth == "false" or res.n <= exact_check_n):
-                        try:
-                            check = _exact_check(c, res.n, res.r, seed, case, label)
-                        except Exception as exc:  # noqa: BLE001 - reported in the row, never a crash
-                            check = {"exact_error": f"{type(exc).__name__}: {exc}"}
-                    rows.append({"case": case, "claim": c.id, "truth": truth, "n": res.n, "r": res.r,
-                                 "method": m, "verdict": res.verdict, "precision": label,
-                                 "escalated": "mpmath" in label,
-                                 "seconds": round(res.seconds, 4),
-                                 "touched": not untouched,
-                                 "exact_residual": None if check is None else check.get("max_exact_residual"),
-                                 "actual_error": None if check is None else check.get("max_actual_error"),
-                                 "bound": None if check is None else check.get("max_bound"),
-                                 "judgement": _judge(truth, res.verdict, check),
-                                 "reason": _short(text, 160)})
+                    # the control is timed as the big Lax equation it corrupts
+                    t = predict(m, registry.get("neumann-lax") if cid == "corrupted-LA1" else c, n, r)
+                    if t > share * timeout:
+                        rows.append({"case": label, "claim": c.id, "truth": "false" if cid == "corrupted-LA1"
+                                     else "true", "n": n, "r": r, "method": m, "verdict": "refused",
+                                     "precision": "-", "escalated": False, "seconds": 0.0, "touched": True,
+                                     "exact_residual": None, "actual_error": None, "bound": None,
+                                     "judgement": "ok", "predicted": t,
+                                     "reason": f"not run: the cost model predicts {format_seconds(t)}, beyond "
+                                               f"{share:g} x the run's budget of {timeout:g} s"})
+                        continue
+                    run.append(Size(n, r))
+                rows += _hard_rows(label, hard, c, run, m, timeout, seed, exact_check_n)
     return rows
 
 
@@ -363,9 +583,9 @@ def _short(text: str, k: int) -> str:
     return text if len(text) <= k else text[: k - 3] + "..."
 
 
-def hard_markdown(rows: Sequence[dict[str, Any]]) -> str:
+def hard_markdown(rows: Sequence[dict[str, Any]], size_rows: Sequence[dict[str, Any]] = ()) -> str:
     from .hard import HARD_CASES
-    wrong = [r for r in rows if r["judgement"].startswith("WRONG")]
+    wrong = [r for r in list(rows) + list(size_rows) if r["judgement"].startswith("WRONG")]
     lines = ["# Hard numerical cases", "",
              "Each case rewrites the sampled parameters (`stiefelsym verify --hard CASE`); a hard point is "
              "chosen, not random, so a pass there is `undecided` (\"resolved at the hard point\"), a failure a "
@@ -385,82 +605,153 @@ def hard_markdown(rows: Sequence[dict[str, Any]]) -> str:
              "Cases:", ""]
     for k, v in HARD_CASES.items():
         lines.append(f"- `{k}`: {v.description}")
-    lines += ["", f"**{len(rows)} runs, {len(wrong)} wrong verdicts.**", "",
-              "| case | claim | (n,r) | method | verdict | precision | s | exact residual | actual error | bound e "
-              "| judgement | note |",
-              "| --- | --- | --- | --- | --- | --- | ---: | ---: | ---: | ---: | --- | --- |"]
+    runs = [r for r in list(rows) + list(size_rows) if r["verdict"] != "refused"]
+    lines += ["", f"**{len(runs)} runs, {len(wrong)} wrong verdicts.**", ""]
+    if size_rows:
+        lines += _hard_size_summary(size_rows)
+    if rows:
+        lines += ["## Hard points", ""]
+    lines += _hard_lines(rows)
+    return "\n".join(lines) + "\n"
+
+
+def _hard_size_summary(rows: Sequence[dict[str, Any]]) -> list[str]:
+    """The hard sizes: n = 200 with r = 1, 2, and r = n, r = n - 1, as a section of its own."""
+    lines = ["## Hard sizes: n = 200, r = n, r = n − 1", "",
+             "The same rule at sizes that stress the engine rather than the point: n = 200 with r = 1, 2 "
+             "(whole-matrix float64; the normwise bound grows with n), r = n (both components of O(n) "
+             "sampled) and r = n − 1, at plain random points (a pass there is a real verdict: `numeric`, "
+             "`checked`, `proved`) and combined with hard points (a pass is `undecided`).  Where the float "
+             "method's float64 bound does not resolve the point it escalates to mpmath by itself; at n = 200 "
+             "that ladder does not finish within the run's budget and the verdict is `inconclusive` with "
+             "that reason, never a guess.  Sizes the cost model predicts beyond half the run's budget are "
+             "not run (`refused`, with the prediction).", ""]
+    counts: dict[tuple[str, str], dict[str, int]] = {}
+    for r in rows:
+        key = (r["case"], r["method"])
+        counts.setdefault(key, {}).setdefault(r["verdict"], 0)
+        counts[key][r["verdict"]] += 1
+    lines += ["| sizes | method | verdicts |", "| --- | --- | --- |"]
+    for (case, m), v in counts.items():
+        lines.append(f"| {case} | {m} | " + ", ".join(f"{k} {x}" for k, x in sorted(v.items())) + " |")
+    lines.append("")
+    return lines + _hard_lines(rows) + [""]
+
+
+def _hard_lines(rows: Sequence[dict[str, Any]]) -> list[str]:
+    if not rows:
+        return []
+    lines = ["| case | claim | (n,r) | method | verdict | precision | s | exact residual | actual error | bound e "
+             "| judgement | note |",
+             "| --- | --- | --- | --- | --- | --- | ---: | ---: | ---: | ---: | --- | --- |"]
     for r in rows:
         note = "case does not touch this claim" if not r["touched"] else (
-            r["reason"] if r["verdict"] in ("inconclusive", "fails", "error") else "")
+            r["reason"] if r["verdict"] in ("inconclusive", "fails", "error", "refused") else "")
         lines.append(f"| {r['case']} | {r['claim']} | ({r['n']},{r['r']}) | {r['method']} | {r['verdict']} | "
                      f"{r['precision']} | {r['seconds']:.3f} | {_fmt(r.get('exact_residual'))} | "
                      f"{_fmt(r.get('actual_error'))} | {_fmt(r.get('bound'))} | {r['judgement']} | "
                      f"{note.replace('|', '/')} |")
-    return "\n".join(lines) + "\n"
+    return lines
 
 
 # --------------------------------------------------------------------------- plots and report
 
+PREC_STYLE = {"float64": "C3", "mpmath30": "C0", "mpmath50": "C1", "mpmath100": "C2", "exact": "k"}
+
+
 def plot_family(fam: str, claim_id: str, times: Sequence[dict[str, Any]], against_n: Sequence[dict[str, Any]],
-                against_p: Sequence[dict[str, Any]], out_dir: Path) -> list[Path]:
+                against_p: Sequence[dict[str, Any]], out_dir: Path,
+                against_n2: Sequence[dict[str, Any]] = ()) -> list[Path]:
+    """Four panels: time against n per method; float64 residual and bound against n (r = 2 to
+    n = 200, r = ceil(n/2)); residual and bound against n per precision; error against time."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, axes = plt.subplots(1, 3, figsize=(13, 3.6))
-    ax = axes[0]
+    fig, axes = plt.subplots(2, 2, figsize=(12, 8))
+    ax = axes[0][0]
     for method in ("exact", "rational", "modular", "float"):
-        pts = {}
-        for rec in times:
-            if rec["method"] == method:
-                pts[rec["n"]] = max(pts.get(rec["n"], 0.0), rec["seconds"])
+        for rkind, style in (("half", "o-"), ("square", "s:")):
+            pts = {}
+            for rec in times:
+                if rec["method"] == method and rec["r"] == (rec["n"] if rkind == "square" else (rec["n"] + 1) // 2):
+                    pts[rec["n"]] = max(pts.get(rec["n"], 0.0), rec["seconds"])
+            if pts:
+                ns = sorted(pts)
+                ax.loglog(ns, [max(pts[n], 1e-5) for n in ns], style, ms=3, color=_MCOL[method],
+                          mfc="none" if rkind == "square" else None,
+                          label=f"{method} run, r = {'n' if rkind == 'square' else 'ceil(n/2)'}")
+    for prec in ("float64", "mpmath30", "mpmath100", "exact"):
+        pts = [x for x in against_p if x["precision"] == prec and x.get("status") == "ok"]
         if pts:
-            ns = sorted(pts)
-            ax.loglog(ns, [max(pts[n], 1e-5) for n in ns], "o-", ms=3, label=method)
+            ax.loglog([x["n"] for x in pts], [max(x["seconds"], 1e-5) for x in pts], "^--", ms=3, lw=0.8,
+                      color=PREC_STYLE[prec], label=f"{prec} evaluation, r = 2")
     ax.set_xlabel("n")
-    ax.set_ylabel("seconds per run")
-    ax.set_title("time against n (r = ceil(n/2), n)", fontsize=9)
+    ax.set_ylabel("seconds")
+    ax.set_title("time against n: whole runs per method, one evaluation per precision", fontsize=9)
     ax.grid(True, which="both", alpha=0.3)
     if ax.get_legend_handles_labels()[0]:
-        ax.legend(fontsize=7)
-    ax = axes[1]
-    ok = [x for x in against_n if x.get("status") == "ok"]
-    if ok:
-        ns = [x["n"] for x in ok]
-        ax.semilogy(ns, [max(x["max_residual"], 1e-300) for x in ok], "o-", ms=3, label="observed |residual|")
-        ax.semilogy(ns, [x["max_bound"] for x in ok], "s--", ms=3, label="predicted bound e")
-        for x in ok:
-            if x.get("escalated_from"):
-                ax.annotate(x["precision"], (x["n"], x["max_bound"]), fontsize=6)
+        ax.legend(fontsize=6, ncol=2)
+    ax = axes[0][1]
+    for series, rtext, color in ((against_n2, "r = 2", "C3"), (against_n, "r = ceil(n/2)", "C4")):
+        ok = [x for x in series if x.get("status") == "ok"]
+        if ok:
+            ns = [x["n"] for x in ok]
+            ax.loglog(ns, [max(x["max_residual"], 1e-300) for x in ok], "o-", ms=3, color=color,
+                      label=f"observed |residual|, {rtext}")
+            ax.loglog(ns, [x["max_bound"] for x in ok], "s--", ms=3, color=color, mfc="none",
+                      label=f"predicted bound e, {rtext}")
+            act = [x for x in ok if isinstance(x.get("max_actual_error"), float)]
+            if act:
+                ax.loglog([x["n"] for x in act], [max(x["max_actual_error"], 1e-300) for x in act], "x", ms=5,
+                          color=color, label=f"|computed - exact|, {rtext}")
+            for x in ok:
+                if x.get("escalated_from"):
+                    ax.annotate(x["precision"], (x["n"], x["max_bound"]), fontsize=6)
     ax.set_xlabel("n")
-    ax.set_title("float: residual and predicted bound against n", fontsize=9)
+    ax.set_title("float64: observed residual and the error model's bound against n", fontsize=9)
     ax.grid(True, which="both", alpha=0.3)
     if ax.get_legend_handles_labels()[0]:
-        ax.legend(fontsize=7)
-    ax = axes[2]
-    fin = [x for x in against_p if x.get("status") == "ok" and x["precision"] != "exact"]
-    if fin:
-        ds = [x["digits"] for x in fin]
-        ax.semilogy(ds, [max(x["max_residual"], 1e-300) for x in fin], "o-", ms=3, label="observed |residual|")
-        ax.semilogy(ds, [max(x["max_bound"], 1e-300) for x in fin], "s--", ms=3, label="predicted bound e")
-        ax2 = ax.twinx()
-        ax2.plot(ds, [x["seconds"] for x in fin], "^:", color="C3", ms=3, label="seconds")
-        ax2.set_ylabel("seconds", fontsize=8)
-    n0 = against_p[0]["n"] if against_p else "?"
-    r0 = against_p[0]["r"] if against_p else "?"
-    ax.set_xlabel("digits (float64 = 16)")
-    ax.set_title(f"residual against precision at ({n0},{r0})", fontsize=9)
+        ax.legend(fontsize=6)
+    ax = axes[1][0]
+    for prec in ("float64", "mpmath30", "mpmath50", "mpmath100"):
+        pts = [x for x in against_p if x["precision"] == prec and x.get("status") == "ok"]
+        if pts:
+            ns = [x["n"] for x in pts]
+            ax.loglog(ns, [max(x["max_residual"], 1e-300) for x in pts], "o-", ms=3, color=PREC_STYLE[prec],
+                      label=f"{prec} |residual|")
+            ax.loglog(ns, [max(x["max_bound"], 1e-300) for x in pts], "s--", ms=3, mfc="none",
+                      color=PREC_STYLE[prec], label=f"{prec} bound e")
+    ax.set_xlabel("n (r = 2)")
+    ax.set_title("residual and bound against n, per precision (exact: residual 0)", fontsize=9)
     ax.grid(True, which="both", alpha=0.3)
     if ax.get_legend_handles_labels()[0]:
-        ax.legend(fontsize=7, loc="lower left")
+        ax.legend(fontsize=6, ncol=2)
+    ax = axes[1][1]
+    for prec in ("float64", "mpmath30", "mpmath50", "mpmath100"):
+        pts = [x for x in against_p if x["precision"] == prec and x.get("status") == "ok"]
+        if pts:
+            ax.loglog([max(x["seconds"], 1e-5) for x in pts], [max(x["max_bound"], 1e-300) for x in pts], "s-",
+                      ms=3, color=PREC_STYLE[prec], label=f"{prec}: bound e (certified)")
+            ax.loglog([max(x["seconds"], 1e-5) for x in pts], [max(x["max_residual"], 1e-300) for x in pts], "o:",
+                      ms=3, color=PREC_STYLE[prec], alpha=0.6, label=f"{prec}: observed")
+    ax.set_xlabel("seconds per evaluation")
+    ax.set_ylabel("error")
+    ax.set_title("error against time (each point one n, r = 2)", fontsize=9)
+    ax.grid(True, which="both", alpha=0.3)
+    if ax.get_legend_handles_labels()[0]:
+        ax.legend(fontsize=6, ncol=2)
     fig.suptitle(f"{fam}: {claim_id}", fontsize=10)
     fig.tight_layout()
     paths = []
     for ext in ("png", "pdf"):
         p = out_dir / f"speed-{fam}.{ext}"
-        fig.savefig(p, dpi=110)
+        fig.savefig(p, dpi=100)
         paths.append(p)
     plt.close(fig)
     return paths
+
+
+_MCOL = {"exact": "C0", "rational": "C1", "modular": "C2", "float": "C3"}
 
 
 def _fmt(x: Any) -> str:
@@ -473,39 +764,76 @@ def _fmt(x: Any) -> str:
     return str(x)
 
 
+def _residual_table(records: Sequence[dict[str, Any]]) -> list[str]:
+    lines = ["| n | r | precision | max \\|residual\\| | max bound e | \\|computed − exact\\| | entries over bound "
+             "| resolves 1e-8 of scale | predicted s | s |",
+             "| ---: | ---: | --- | ---: | ---: | ---: | ---: | --- | ---: | ---: |"]
+    for x in records:
+        over = x.get("exceed", "-") if "exceed_exact" not in x else x["exceed"] + x["exceed_exact"]
+        pred = x.get("predicted_seconds")
+        lines.append(f"| {x['n']} | {x['r']} | {x['precision']} | {_fmt(x.get('max_residual'))} | "
+                     f"{_fmt(x.get('max_bound'))} | {_fmt(x.get('max_actual_error'))} | {over} | "
+                     f"{x.get('resolved', '-')} | {'-' if pred is None else f'{pred:.3g}'} | "
+                     f"{x.get('seconds', 0):.3f} |")
+    return lines + [""]
+
+
+def tradeoffs(doc: dict[str, Any]) -> list[dict[str, Any]]:
+    """Per family and precision: the largest n reached (r = 2) and, there and at n = 16, the
+    residual, the bound and the seconds of one evaluation; certified digits per second =
+    -log10(bound / term scale) / seconds (the exact evaluation: residual 0, digits unbounded)."""
+    out = []
+    for fam, sec in doc["families"].items():
+        for prec in ("float64", "mpmath30", "mpmath50", "mpmath100", "exact"):
+            pts = [x for x in sec.get("against_precision", []) if x["precision"] == prec and x.get("status") == "ok"]
+            if not pts:
+                continue
+            for tag, x in (("n = 16", next((y for y in pts if y["n"] == 16), None)), ("largest n", pts[-1])):
+                if x is None:
+                    continue
+                scale = x.get("max_scale") or 1.0
+                bound = x.get("max_bound") or 0.0
+                digits = -math.log10(bound / scale) if bound and scale and bound < scale else (
+                    math.inf if not bound else 0.0)
+                out.append({"family": fam, "precision": prec, "at": tag, "n": x["n"], "r": x["r"],
+                            "max_residual": x.get("max_residual"), "max_bound": bound, "seconds": x["seconds"],
+                            "certified_digits": digits,
+                            "digits_per_second": digits / max(x["seconds"], 1e-6) if math.isfinite(digits) else None})
+    return out
+
+
 def markdown(doc: dict[str, Any]) -> str:
     from .costmodel import table
     lines = ["# Speed against error", "",
-             f"Generated {doc['generated']} by `{doc['command']}` on {doc['platform']}.", "",
+             f"Generated {doc['generated']} by `{doc['command']}` on {doc['platform']} "
+             f"({doc.get('seconds', '?')} s).", "",
              "For one representative claim per family: time against n for every method (each run in a budgeted "
-             "worker), the float method's observed residual against n next to the error model's predicted "
-             "bound, and residual against precision at one size.  For a true statement the exact residual is "
-             "0, so the observed |residual| is the rounding error and must never exceed its bound; "
+             "worker), the observed residual against n up to n = 200 next to the error model's predicted bound "
+             "e, at float64, mpmath with 30, 50 and 100 digits, and exactly (rational arithmetic at the same "
+             "point).  For a true statement the exact residual is 0, so the observed |residual| is the rounding "
+             "error and must never exceed its bound; up to the size where the exact evaluation is affordable "
+             "the computed residual is also compared entry by entry with the exact one (|computed − exact| ≤ e). "
              f"**{len(doc['violations'])} evaluations exceeded their bound** (any would be a bug of the error "
-             "model).", ""]
+             "model; `tests/test_speed.py` fails on it, on fresh data and on this report's `speed.json`).", "",
+             "Sizes: r = 2 reaches n = 200 at every precision the cost model allows within the series' budget; "
+             "r = ceil(n/2) is cut where the evaluation time (dominated by the r(r+1)-dimensional multiplier "
+             "solve of the Dirac flow, which is still entry by entry) passes its cap.  Before each size the "
+             "time is predicted from the series so far by the cost model's power law (an upper envelope of the "
+             "measured times), and a size predicted beyond the cap is not started; the `predicted s` column "
+             "shows that prediction next to the measured time.", ""]
     for fam, sec in doc["families"].items():
-        lines += [f"## {fam}: `{sec['claim']}`", "", f"![{fam}](speed-{fam}.png)", ""]
+        lines += [f"## {fam}: `{sec['claim']}`", "", f"![{fam}](speed-{fam}.png)", "",
+                  f"([PDF](speed-{fam}.pdf))", ""]
+        if sec.get("note"):
+            lines += [sec["note"], ""]
+        if sec.get("against_n2"):
+            lines += ["float64: residual against n, r = 2", ""] + _residual_table(sec["against_n2"])
         if sec["against_n"]:
-            lines += ["float: residual against n (r = ceil(n/2))", "",
-                      "| n | r | precision | max \\|residual\\| | max bound e | actual error vs exact "
-                      "| entries over bound "
-                      "| resolves 1e-8 of scale | s |",
-                      "| ---: | ---: | --- | ---: | ---: | ---: | ---: | --- | ---: |"]
-            for x in sec["against_n"]:
-                over = x.get("exceed", "-") if "exceed_exact" not in x else x["exceed"] + x["exceed_exact"]
-                lines.append(f"| {x['n']} | {x['r']} | {x['precision']} | {_fmt(x.get('max_residual'))} | "
-                             f"{_fmt(x.get('max_bound'))} | {_fmt(x.get('max_actual_error'))} | {over} | "
-                             f"{x.get('resolved', '-')} | {x.get('seconds', 0):.3f} |")
-            lines.append("")
+            lines += ["float64: residual against n, r = ceil(n/2)", ""] + _residual_table(sec["against_n"])
         if sec["against_precision"]:
-            p0 = sec["against_precision"][0]
-            lines += [f"residual against precision at ({p0['n']},{p0['r']})", "",
-                      "| precision | max \\|residual\\| | max bound e | entries over bound | s |",
-                      "| --- | ---: | ---: | ---: | ---: |"]
-            for x in sec["against_precision"]:
-                lines.append(f"| {x['precision']} | {_fmt(x.get('max_residual'))} | {_fmt(x.get('max_bound'))} | "
-                             f"{x.get('exceed', '-')} | {x.get('seconds', 0):.4f} |")
-            lines.append("")
+            lines += ["residual against precision and n (r = 2)", ""] + _residual_table(sec["against_precision"])
+        if sec.get("stops"):
+            lines += ["where each series stopped:", ""] + [f"- {s}" for s in sec["stops"]] + [""]
         if sec["times"]:
             ns = sorted({rec["n"] for rec in sec["times"]})
             lines += ["time against n, seconds per run (r = ceil(n/2) / r = n)", "",
@@ -531,15 +859,19 @@ def markdown(doc: dict[str, Any]) -> str:
             lines += ["largest n reached within the series' time: " +
                       ", ".join(f"{m} n = {k}" for m, k in sorted(reach.items())), ""]
     lines += ["## Error reached per second", "",
-              "| family | precision | n | max \\|residual\\| | s | digits of residual per second |",
-              "| --- | --- | ---: | ---: | ---: | ---: |"]
-    for fam, sec in doc["families"].items():
-        for x in sec["against_precision"]:
-            if x["precision"] == "exact" or x.get("status") != "ok":
-                continue
-            res = max(x["max_residual"], 1e-300)
-            lines.append(f"| {fam} | {x['precision']} | {x['n']} | {_fmt(x['max_residual'])} | {x['seconds']:.4f} | "
-                         f"{-math.log10(res) / max(x['seconds'], 1e-6):.3g} |")
+              "One evaluation of the claim at the float method's point (r = 2), per precision: at n = 16 and at "
+              "the largest n the series reached within its budget.  `certified digits` = −log10(e / m), the "
+              "digits of the terms' scale m that the bound e guarantees; the exact evaluation has no rounding "
+              "(its residual is exactly 0 for these true claims).", "",
+              "| family | precision | at | n | max \\|residual\\| | bound e | s | certified digits | digits per second |",
+              "| --- | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: |"]
+    for t in doc.get("tradeoffs") or tradeoffs(doc):
+        dps = t["digits_per_second"]
+        digits = t["certified_digits"]
+        dtext = "exact" if not math.isfinite(digits) else f"{digits:.1f}"
+        ptext = "-" if dps is None else f"{dps:.3g}"
+        lines.append(f"| {t['family']} | {t['precision']} | {t['at']} | {t['n']} | {_fmt(t['max_residual'])} | "
+                     f"{_fmt(t['max_bound'])} | {t['seconds']:.4f} | {dtext} | {ptext} |")
     lines += ["", "## Cost model", "",
               "Fitted per method and family: t(n) = exp(a) n^b seconds, raised to lie above every measured point "
               "(`stiefelsym/costmodel.json`; `verify --budget` refuses a run predicted beyond it).", "",
