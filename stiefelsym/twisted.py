@@ -54,8 +54,9 @@ Pair = tuple  # (d/dX, d/dP): a covector or a vector of the ambient space, as tw
 
 
 def _pair_dot(s: Scene, u: Pair, v: Pair) -> Any:
-    """⟨u, v⟩ = tr(u_Xᵀ v_X) + tr(u_Pᵀ v_P)."""
-    return s.field.normalize((u[0].T @ v[0]).trace() + (u[1].T @ v[1]).trace())
+    """⟨u, v⟩ = tr(u_Xᵀ v_X) + tr(u_Pᵀ v_P) (the scene's pairing: the sums of the entrywise products,
+    not the whole products u_Xᵀ v_X)."""
+    return s._pair_dot(u, v)
 
 
 def _stack(s: Scene, pairs: list[Pair]) -> Mat:
