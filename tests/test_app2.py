@@ -352,8 +352,9 @@ def test_hamiltonian_flow_by_reverse_mode_is_the_forward_one(monkeypatch, n, r, 
     same flow and multipliers as with one forward pass per coordinate (4nr)."""
     s = _modular_scene(n, r)
     Ham = a.H_coupled(a.FREE_KAPPA) if H == "coupled" else a.H_perturbed(a.FREE_KAPPA)
+    pairs = [("X", "P"), ("Y", "Q")]
     (rev, rev_calls), (fwd, fwd_calls) = _both_ways(
-        monkeypatch, lambda: a.hamiltonian_flow(s, Ham, a.coupled_constraints, coupled_point(s), [("X", "P"), ("Y", "Q")]))
+        monkeypatch, lambda: a.hamiltonian_flow(s, Ham, a.coupled_constraints, coupled_point(s), pairs))
     assert rev_calls == 0 and fwd_calls == 4 * n * r
     _same(rev[0], fwd[0])
     assert rev[1] == fwd[1] and len(rev[1]) == 2 * r * (r + 1)
