@@ -821,8 +821,10 @@ def _spectra_findings(rows: list[dict[str, Any]], results_path: Path) -> str:
                    "for κ = 0 and κ = −½ only: the κ-flow is the Euclidean flow followed by the right rotation "
                    "exp(t(κ+½)Ψ₀), which "
                    "conjugates 𝓛* by diag(R, R).")
+    seen: set[tuple[str, str]] = set()
     for r in rows:
-        if r["printed"] and r["drift"] < SPECTRUM_FIXED:
+        if r["printed"] and r["drift"] < SPECTRUM_FIXED and (r["lax"], r["flow"]) not in seen:
+            seen.add((r["lax"], r["flow"]))
             for v in algebraic_verdicts(results_path, claims=catalog_claims(r)):
                 if v["kind"] == "lax" and "fails" in v["printed"]:
                     why = ("its registered correction keeps this L and replaces (A + λI)⁻¹ by A + λI in 𝓐*_man (LA-MAN3), "
