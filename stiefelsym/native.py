@@ -63,8 +63,13 @@ class Backend:
 
     def unit(self, m: int, k: int, idx: tuple[int, int], x: Any) -> Any:
         """The m x k matrix with the field element x at idx and zeros elsewhere."""
+        return self.sparse(m, k, {idx: x})
+
+    def sparse(self, m: int, k: int, entries: dict) -> Any:
+        """The m x k matrix with the given entries {(i, j): x} and zeros elsewhere."""
         a = _fill(m, k, self.field.const(0))
-        a[idx] = x
+        for idx, x in entries.items():
+            a[idx] = x
         return self.from_obj(a)
 
     def diag(self, xs: list[Any]) -> Any:
@@ -108,9 +113,10 @@ class _FlintBackend(Backend):
             M[i, i] = x
         return M
 
-    def unit(self, m, k, idx, x):
+    def sparse(self, m, k, entries):
         M = self.zeros(m, k)
-        M[idx[0], idx[1]] = x
+        for (i, j), x in entries.items():
+            M[i, j] = x
         return M
 
     def to_obj(self, s):
@@ -294,12 +300,14 @@ class Float64Backend(Backend):
     def identity(self, m):
         return F64(np.eye(m), 0.0, np.eye(m))
 
-    def unit(self, m, k, idx, x):
-        if type(x) is not ErrNum:
-            return Backend.unit(self, m, k, idx, x)
-        v, s = np.zeros((m, k)), np.zeros((m, k))
-        v[idx], s[idx] = float(x.v), float(x.m)
-        return F64(v, float(x.e), s)
+    def sparse(self, m, k, entries):
+        if not all(type(x) is ErrNum for x in entries.values()):
+            return Backend.sparse(self, m, k, entries)
+        v, s, e = np.zeros((m, k)), np.zeros((m, k)), 0.0
+        for idx, x in entries.items():
+            v[idx], s[idx] = float(x.v), float(x.m)
+            e += float(x.e)
+        return F64(v, _up(e, len(entries)), s)
 
     def diag(self, xs):
         if not all(type(x) is ErrNum for x in xs):
@@ -436,8 +444,11 @@ class DegreeBackend(Backend):
     def to_obj(self, s):
         return _fill(s.shape[0], s.shape[1], s.d)
 
-    def unit(self, m, k, idx, x):
-        return DegMat((m, k), self._lift(x))
+    def sparse(self, m, k, entries):
+        acc = Deg(-1, None, self.field)
+        for x in entries.values():
+            acc = acc + self._lift(x)
+        return DegMat((m, k), acc)
 
     def from_array(self, a):
         """A block of parameters: every entry is bounded by one parameter's marker."""
@@ -544,10 +555,10 @@ class DualBackend(Backend):
     def from_consts(self, a):
         return (self.base.from_consts(a), self.base.zeros(*a.shape))
 
-    def unit(self, m, k, idx, x):
-        if type(x) is Dual:
-            return (self.base.unit(m, k, idx, x.a), self.base.unit(m, k, idx, x.b))
-        return (self.base.unit(m, k, idx, x), self.base.zeros(m, k))
+    def sparse(self, m, k, entries):
+        zero = self.field.base.const(0)
+        return (self.base.sparse(m, k, {i: (x.a if type(x) is Dual else x) for i, x in entries.items()}),
+                self.base.sparse(m, k, {i: (x.b if type(x) is Dual else zero) for i, x in entries.items()}))
 
     def diag(self, xs):
         if not all(type(x) is Dual for x in xs):

@@ -198,18 +198,9 @@ class RevBackend:
             if s.node is None:
                 out[idx] = Rev(x)
             else:
-                out[idx] = Rev(x, Node(lambda g, idx=idx, node=s.node, shape=v.shape: [(node, self._unit(shape, idx, g))]))
+                out[idx] = Rev(x, Node(lambda g, idx=idx, node=s.node, shape=v.shape:
+                                       [(node, _EntryAdjoints(shape, idx, g, self.base))]))
         return out
-
-    def _unit(self, shape, idx, g):
-        from .matrix import Mat
-        from .native import backend
-        be = backend(self.base)
-        if be is not None:
-            return Mat._wrap_native(be.unit(shape[0], shape[1], idx, g), self.base)
-        M = Mat.zeros(shape[0], shape[1], self.base)
-        M._a[idx] = g
-        return M
 
     def shape(self, s):
         return s.v._shape()
@@ -268,6 +259,45 @@ class RevBackend:
         raise Unsupported("a block matrix")
 
 
+class _EntryAdjoints:
+    """The adjoint of a matrix from reads of some of its entries, {(i, j): adjoint}, plus any
+    whole-matrix contributions: summed lazily until the matrix's node is swept (one matrix per
+    node, not one per entry read)."""
+
+    __slots__ = ("shape", "entries", "dense", "base")
+
+    def __init__(self, shape, idx, g, base) -> None:
+        self.shape, self.entries, self.dense, self.base = shape, {idx: g}, None, base
+
+    def __add__(self, o):
+        if isinstance(o, _EntryAdjoints):
+            for idx, g in o.entries.items():
+                self.entries[idx] = self.entries[idx] + g if idx in self.entries else g
+            if o.dense is not None:
+                self._add_dense(o.dense)
+        else:
+            self._add_dense(o)
+        return self
+
+    __radd__ = __add__
+
+    def _add_dense(self, M) -> None:
+        self.dense = M if self.dense is None else self.dense + M
+
+    def materialize(self):
+        from .matrix import Mat
+        from .native import backend
+        be = backend(self.base)
+        if be is not None:
+            M = Mat._wrap_native(be.sparse(self.shape[0], self.shape[1], self.entries), self.base)
+        else:
+            M = Mat.zeros(self.shape[0], self.shape[1], self.base)
+            a = M._a
+            for idx, g in self.entries.items():
+                a[idx] = g
+        return M if self.dense is None else self.dense + M
+
+
 def _scaled_identity(base: Field, m: int, g):
     from .matrix import Mat, scalar_matrix
     return scalar_matrix(g, m, base)
@@ -292,6 +322,8 @@ def gradient(root: Any, leaves: list[RevMat], one: Any) -> list:
     while heap:
         _, node = heapq.heappop(heap)
         g = grads.pop(node.id)
+        if isinstance(g, _EntryAdjoints):
+            g = g.materialize()
         done[node.id] = g
         for parent, contrib in node.backward(g):
             if parent.id in grads:
