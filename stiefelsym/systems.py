@@ -445,7 +445,7 @@ def euler_lagrange(s: Scene, T: Callable[[Scene, dict], Any], U: Callable[[Scene
     N = len(layout.coords)
     K = _kinetic_matrix(s, T, velocity, layout)
     gradU = _jacobian(s, U, position, layout)                        # 1 × N
-    J = _jacobian(s, lambda t, q: g(t, {("q", k): q[k] for k in names}), position, layout)   # m × N
+    J = _jacobian(s, lambda t, q: _flat(constraints(t, q)), position, layout)           # m × N
     m = J._shape()[0]
     # D²g(q̇, q̇) = d/dε [Dg(q + εq̇)·q̇]
     along = {("q", k): velocity[k] for k in names}
