@@ -27,3 +27,17 @@ class _LazyModule:
 def lazy(name: str, namespace: dict[str, Any], alias: str | None = None) -> Any:
     """A stand-in for ``import name as alias`` in ``namespace`` (a module's globals())."""
     return _LazyModule(name, namespace, alias or name.rsplit(".", 1)[-1])
+
+
+_OPAQUE: Any = None
+
+
+def symengine_opaque() -> Any:
+    """What the engine's matrices and number types give symengine as their conversion: an empty
+    symengine matrix, so that ``symengine_expr * x`` (and +, −, /) leaves the operation to x's
+    reflected operator at once instead of trying every SymPy class first (≈0.4 ms a product)."""
+    global _OPAQUE
+    if _OPAQUE is None:
+        import symengine
+        _OPAQUE = symengine.DenseMatrix(0, 0, [])
+    return _OPAQUE

@@ -15,7 +15,7 @@ from typing import Any, Sequence
 
 import numpy as np
 
-from ._lazy import lazy
+from ._lazy import lazy, symengine_opaque
 
 flint = lazy("flint", globals())
 mpmath = lazy("mpmath", globals())
@@ -816,6 +816,9 @@ class Dual:
     """a + b·ε with ε² = 0: forward-mode derivative over any field."""
 
     __slots__ = ("a", "b")
+
+    def _symengine_(self):
+        return symengine_opaque()
 
     def __init__(self, a, b=0):
         self.a, self.b = a, b

@@ -87,7 +87,7 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
     # symbolic coefficients do not raise on a division by an identically zero expression: probe
     # the same claim code at an exact point of a fixed size first
     probe_size = next((z for z in claim.sizes if z.n >= 3), None) or list(claim.sizes)[-1]
-    why = division_probe(claim, probe_size.n, probe_size.r, func)
+    why = division_probe(claim, probe_size.n, probe_size.r, func, strict=True)
     if why:
         res.verdict, res.message = "error", why
         res.seconds = time.perf_counter() - t0

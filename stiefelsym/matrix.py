@@ -26,6 +26,7 @@ from typing import Any, Sequence
 
 import numpy as np
 
+from ._lazy import symengine_opaque
 from .fields import Deg, Dual, ErrNum, Field
 from .native import backend
 from .reverse import Rev
@@ -197,6 +198,9 @@ class Mat:
 
     __array_priority__ = 1000
     __slots__ = ("_obj", "_n", "_field", "_tags", "_tracker", "_coords")
+
+    def _symengine_(self) -> Any:
+        return symengine_opaque()
 
     def __init__(self, a: Any, field: Field, tags=(UNTYPED, UNTYPED), tracker: CoordinateTracker | None = None):
         """A matrix from a 2-d array of entries: building an ℝⁿ-indexed matrix entrywise is a

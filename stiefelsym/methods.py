@@ -603,14 +603,18 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
 PROBE_PRIMES = (2**61 - 1, 2**62 - 57, 2**60 - 93)
 
 
-def division_probe(claim: Claim, n: int, r: int, func: Callable | None = None, seed: int = 0) -> str:
+def division_probe(claim: Claim, n: int, r: int, func: Callable | None = None, seed: int = 0,
+                   strict: bool = False) -> str:
     """"" when the claim evaluates at a random point of T*V (over a prime field) without dividing by zero;
     otherwise the reason.
 
     Symbolic arithmetic does not raise on a division by an identically zero expression: it makes
     an infinity that a later division turns into 0.  So every symbolic proof is preceded by this
     probe; a division by zero at each of three random points means a divisor that vanishes
-    identically (or at a pole the claim put itself on)."""
+    identically (or at a pole the claim put itself on).  Any other exception is the symbolic
+    run's to report (it meets the same code), except with ``strict`` (a caller that does not run
+    the claim at this size itself, such as the dimension-free method): then the probe did not
+    take place, and that is the reason."""
     func = func or claim.func
     last: BaseException | None = None
     for attempt, p in enumerate(PROBE_PRIMES):
@@ -622,7 +626,11 @@ def division_probe(claim: Claim, n: int, r: int, func: Callable | None = None, s
             return ""
         except (DegenerateError, ZeroDivisionError) as exc:
             last = exc
-        except Exception:   # noqa: BLE001 - anything else is the symbolic run's to report
+        except Exception as exc:   # noqa: BLE001 - anything else is the symbolic run's to report
+            if strict:
+                return (f"the division probe could not evaluate the claim at a point of T*V(n={n}, r={r}) "
+                        f"over GF(p) ({type(exc).__name__}: {exc}), so a division by an identically zero "
+                        "expression cannot be excluded")
             return ""
     return (f"the claim divides by zero at every one of 3 random points of T*V(n={n}, r={r}) over GF(p) "
             f"({type(last).__name__}: {last}): a divisor that vanishes identically, so a symbolic "

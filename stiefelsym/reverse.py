@@ -43,6 +43,10 @@ class Rev:
 
     __slots__ = ("v", "node")
 
+    def _symengine_(self):
+        from ._lazy import symengine_opaque
+        return symengine_opaque()
+
     def __init__(self, v: Any, node: Node | None = None) -> None:
         self.v, self.node = v, node
 
