@@ -246,6 +246,7 @@ def _settle(outcome: Outcome, task: Task, claims: list[Claim], seed: int, hard: 
 def _preload(tasks: list[Task]) -> None:
     """Import, before forking, what the workers will need (so a fresh worker starts ready)."""
     if any(t[1] is None for t in tasks):
+        import sympy  # noqa: F401  (the LaTeX of symbolic coefficients in every derivation)
         from . import free  # noqa: F401
         from . import free_method  # noqa: F401
     if any(t[3] in ("auto", "exact") for t in tasks):
