@@ -64,6 +64,9 @@ def param_name(name: str, i: int, j: int) -> str:
 REVERSE_GRADIENTS = True
 #: False: the Dirac multipliers always from the solved r(r+1) system (the tests compare both ways)
 CLOSED_FORM_MULTIPLIERS = True
+#: parameter matrices with fewer entries are drawn one entry at a time (a numpy generator costs
+#: more than a few dozen draws)
+PARAM_BLOCK_MIN = 64
 
 
 class SizeError(ValueError):
@@ -253,11 +256,14 @@ class Scene(PaperObjects):
                 or any(b[0] == name for b in self._param_blocks)
                 or param_name(name, 0, 1 if kind == "skew" else 0) in self.params):
             return None
+        count = m * k if kind == "general" else m * (m - 1) // 2 if kind == "skew" else m * (m + 1) // 2
+        if count < PARAM_BLOCK_MIN:
+            return None
         if kind == "general":
             cells = (np.repeat(np.arange(m), k), np.tile(np.arange(k), m))
         else:
             cells = np.triu_indices(m, 1 if kind == "skew" else 0)
-        vals = self.field.param_values(self.rng, len(cells[0]))
+        vals = self.field.param_values(self.rng, count)
         if vals is None:
             return None
         arr = np.zeros((m, k), dtype=vals.dtype)

@@ -251,13 +251,15 @@ def test_closed_form_multipliers_need_the_standard_constraint_set():
 
 
 def test_blocks_of_parameters_are_named_entries_of_the_point():
-    """Parameters drawn as one native block are the point's named coordinates: asking for one by
-    name gives the entry the block holds."""
-    s = Scene(5, 2, ModularField(P61), rng=random.Random(3))
-    S = s._skew_params("S", 5, "n")
+    """Parameters drawn as one native block (matrices of at least PARAM_BLOCK_MIN entries) are the
+    point's named coordinates: asking for one by name gives the entry the block holds."""
+    small = Scene(5, 2, ModularField(P61), rng=random.Random(3))
+    assert small._skew_params("S", 5, "n")._n is None or not small._param_blocks
+    s = Scene(12, 2, ModularField(P61), rng=random.Random(3))
+    S = s._skew_params("S", 12, "n")
     assert S._n is not None
     vals = s.point_values()
-    assert len(vals) == 10
+    assert len(vals) == 66
     assert vals["S_1,2"] == S._view()[0, 1] and vals["S_2,4"] == S._view()[1, 3] == -S._view()[3, 1]
     assert s._param("S_1,2") == S._view()[0, 1]
 
