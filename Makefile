@@ -8,8 +8,10 @@ JOBS   ?= 2
 
 .PHONY: venv verify verify-all test bench report clean tables flows speed
 
-## venv: create .venv (if missing) and install stiefelsym with its test extras
+## venv: create .venv (if missing) and install stiefelsym with its test extras; compile the
+## bytecode (where PYTHONDONTWRITEBYTECODE is set, e.g. CI images, every start would recompile)
 venv: $(STAMP)
+	$(BIN)/python -m compileall -q stiefelsym proofs bench > /dev/null
 
 $(STAMP): pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
