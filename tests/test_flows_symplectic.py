@@ -186,3 +186,38 @@ def test_the_magnetic_flow_is_the_euclidean_neumann_flow_in_shifted_momenta_then
     Xm, Pm = mag.final()
     assert np.abs(Xm - Xn @ R).max() < 1e-9
     assert np.abs(Pm + eps / 2 * Xm @ J - Pn @ R).max() < 1e-9
+
+
+@pytest.mark.parametrize("kw", [{"kappa": 0.5}, {"kappa": 0.5, "perturbed": True}], ids=["unperturbed", "perturbed"])
+def test_the_coupled_step_keeps_the_symplectic_form_of_T_star_V_times_T_star_V(kw):
+    (X, Y), (P, Q) = start("coupled", seed=6)
+    fl = ig.make_flow("coupled", 4, 2, A=A4, **kw)
+    Z, M = np.stack([X, Y]), np.stack([P, Q])
+    rng = np.random.default_rng(8)
+    d, h = 1e-5, 0.2
+
+    def curve(dZ, dM, s):
+        pts = [ig.project_to_tangent_bundle(Z[i] + s * dZ[i], M[i] + s * dM[i]) for i in range(2)]
+        return np.stack([p[0] for p in pts]), np.stack([p[1] for p in pts])
+
+    def omega(a, b):
+        return float(np.sum(a[1] * b[0]) - np.sum(b[1] * a[0]))
+
+    def defect(step):
+        pairs = []
+        for _ in range(2):
+            dZ, dM = rng.standard_normal(Z.shape), rng.standard_normal(Z.shape)
+            (z0, m0), (z1, m1) = curve(dZ, dM, -d), curve(dZ, dM, d)
+            (w0, n0), (w1, n1) = step(z0, m0, h), step(z1, m1, h)
+            pairs.append((((z1 - z0) / (2 * d), (m1 - m0) / (2 * d)), ((w1 - w0) / (2 * d), (n1 - n0) / (2 * d))))
+        (u0, u1), (v0, v1) = pairs
+        return abs(omega(u1, v1) - omega(u0, v0)), abs(omega(u0, v0))
+
+    err, size = defect(fl.symplectic)
+    assert size > 0.1 and err < 1e-7 * size
+
+    def rk4(z, m, h):
+        z, m = ig._rk4_step(fl.rhs, z, m, h)
+        pts = [ig.project_to_tangent_bundle(z[i], m[i]) for i in range(2)]
+        return np.stack([p[0] for p in pts]), np.stack([p[1] for p in pts])
+    assert defect(rk4)[0] > 1e-5 * size
