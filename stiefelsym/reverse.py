@@ -292,7 +292,7 @@ class _EntryAdjoints:
         from .matrix import Mat
         from .native import backend
         be = backend(self.base)
-        if be is not None:
+        if be is not None and hasattr(be, "sparse"):     # not for a tape over reverse numbers
             M = Mat._wrap_native(be.sparse(self.shape[0], self.shape[1], self.entries), self.base)
         else:
             M = Mat.zeros(self.shape[0], self.shape[1], self.base)
