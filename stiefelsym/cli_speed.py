@@ -22,7 +22,7 @@ from .cli import InputError, standalone_command
 QUICK_NS = {"exact": [2, 3], "rational": [2, 3], "modular": [2, 3], "float": [2, 3]}
 FULL_NS = {"exact": [2, 3, 4, 5, 6, 7, 8], "rational": [2, 3, 4, 5, 6, 8, 10],
            "modular": [2, 3, 4, 5, 6, 8, 10, 12], "float": [2, 3, 4, 5, 6, 8, 10, 12, 16]}
-FLOAT_NS_FULL = [2, 3, 4, 5, 6, 8, 10, 12, 16, 20, 24, 32]
+FLOAT_NS_FULL = [2, 3, 4, 5, 6, 8, 10, 12, 16, 20, 24, 32, 48, 64, 100, 128, 200]
 #: r = 2: the sizes to n = 200 (float64 and, as far as the cost model allows, every precision)
 NS_200 = [2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64, 100, 128, 160, 200]
 QUICK_PLAN = (("r = n", None, ("neumann-lax", "corrupted-LA1"), ((3, 3),), ("float", "modular"), 30.0),

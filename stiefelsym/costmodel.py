@@ -108,8 +108,12 @@ class CostModel:
         never above the r = n/2 fit); between SMALL_R and n//2: log-linear in r from it to the
         r = n/2 fit (so the prediction never decreases in r either)."""
         half = self._power1(self.fits, method, fam, n)
-        if r is not None and r < n // 2 and self.small.get(method) and (fam in self.small[method] or fam is None):
-            small = min(self._power1(self.small, method, fam, n), half)
+        if r is not None and n > 2 * SMALL_R and r < max(n // 2, SMALL_R + 1) and self.small.get(method) \
+                and (fam in self.small[method] or fam is None):
+            # never below the r = ceil(n/2) fit at n = 2 SMALL_R (where r = SMALL_R is that series),
+            # never above the r = ceil(n/2) fit at n: monotone in n and in r
+            floor = self._power1(self.fits, method, fam, 2 * SMALL_R)
+            small = min(half, max(self._power1(self.small, method, fam, n), floor))
             if r <= SMALL_R:
                 return small
             w = (r - SMALL_R) / (n // 2 - SMALL_R)
@@ -117,7 +121,7 @@ class CostModel:
         if r is None or not self.square.get(method):
             return half
         full = max(self._power1(self.square, method, fam, n), half)
-        w = max(0.0, (r - n / 2) / (n / 2)) if n > 1 else 1.0
+        w = max(0.0, (r - n / 2) / (n / 2)) if n > 1 else 0.0     # V(1, 1): no fit of its own
         return math.exp((1 - w) * math.log(half) + w * math.log(full))
 
     def _power1(self, table: dict, method: str, fam: str | None, n: int) -> float:
@@ -339,7 +343,8 @@ def measure(methods: Iterable[str] = METHODS, families: dict[str, str] | None = 
             if method == "float" and claim.kind == "dim":
                 continue
             spent = {"half": 0.0, "square": 0.0, "small": 0.0}
-            stopped = {"half": False, "square": False, "small": method not in small_ns}
+            # dimensions (exact ranks) grow like n^4 and more: no small-r series to n = 200
+            stopped = {"half": False, "square": False, "small": method not in small_ns or claim.kind == "dim"}
             ns = sorted(set(grid.get(method, _default_ns(method))) | set(small_ns.get(method, [])))
             for n in ns:
                 kinds = [("small", SMALL_R)] if n in small_ns.get(method, []) else []

@@ -83,3 +83,31 @@ def test_calibration_raises_a_slow_claim():
     assert m.predict("modular", C, 4, 2) >= 50.0 * 0.999
     assert m.predict("modular", C, 8, 4) > m.predict("modular", C, 4, 2)
     assert m.predict("modular", D, 4, 2) < 50.0
+
+
+def test_small_r_fit_reaches_n_200_and_stays_monotone(catalog):
+    """The r = 2 series (float and modular, to n = 200) gives the small-r fit: at n = 200 a run
+    with r = 2 is predicted far below one with r = n/2, and the prediction never decreases in r
+    or in n."""
+    m = costmodel.model()
+    assert {"float", "modular"} <= set(m.small)
+    for cid in ("neumann-lax", "neumann-flow", "momentum-maps-poisson"):
+        c = catalog.get(cid)
+        for method in ("float", "modular"):
+            ts = [m.predict(method, c, 200, r) for r in range(1, 201)]
+            assert all(b >= a * (1 - 1e-12) for a, b in zip(ts, ts[1:])), (cid, method)
+            assert ts[1] <= ts[99] and ts[1] < 60
+            ns = [m.predict(method, c, n, 2) for n in range(5, 201)]
+            assert all(b >= a * (1 - 1e-12) for a, b in zip(ns, ns[1:])), (cid, method)
+
+
+def test_small_r_interpolation_on_a_synthetic_model():
+    recs = [{"family": "lax", "claim": "neumann-lax", "method": "float", "n": n, "r": r, "seconds": s,
+             "verdict": "numeric", **({"series": "small"} if tag else {})}
+            for n in (4, 8, 16) for r, s, tag in (((n + 1) // 2, 0.001 * n ** 3, False), (n, 0.002 * n ** 3, False))]
+    recs += [{"family": "lax", "claim": "neumann-lax", "method": "float", "n": n, "r": 2, "seconds": 0.001 * n,
+              "verdict": "numeric", "series": "small"} for n in (8, 16, 64, 200)]
+    m = costmodel.CostModel(costmodel.build(recs))
+    small, mid, half = (m._power("float", "lax", 200, r) for r in (2, 50, 100))
+    assert small < mid < half
+    assert math.isclose(small, 0.2, rel_tol=0.5)
