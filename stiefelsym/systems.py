@@ -162,20 +162,56 @@ def _flat(value: Any) -> list[Any]:
     return [value]
 
 
-def _solve(s: Scene, M: Mat, B: Mat, what: str) -> Mat:
-    """Y with M Y = B (the field's solver; M square)."""
-    from .fields import DegenerateError
-    try:
-        sol = s.field.solve(M._view().tolist(), B._view().tolist())
-    except DegenerateError as exc:
-        raise DegenerateError(f"{what} is singular here") from exc
-    return Mat._rows(sol, s.field)
-
-
 def _matrix(s: Scene, a: np.ndarray) -> Mat:
     """An untyped, unrecorded matrix of the scene's field from an array of its numbers (engine
     internal: stacked gradients, coordinates)."""
     return Mat._wrap(a, s.field)
+
+
+class _Algebra:
+    """The linear algebra of the stacked gradients: whole-matrix products (the field's native
+    backend) where the arithmetic is exact, so that the order of the operations cannot change a
+    number; entry by entry (numpy arrays of the field's numbers) where the numbers carry error
+    bounds, since entrywise propagation keeps the bound of every entry of a tall product to the
+    terms of that entry, where a normwise bound would charge it with the whole matrix."""
+
+    def __init__(self, s: Scene) -> None:
+        self.s = s
+        self.native = bool(s.field.exact)
+
+    def of(self, a: np.ndarray) -> Any:
+        """A matrix of this algebra from an array of numbers."""
+        return _matrix(self.s, a) if self.native else a
+
+    def array(self, M: Any) -> np.ndarray:
+        """The numbers of a matrix of this algebra (read-only)."""
+        return M._view() if self.native else M
+
+    def mm(self, A: Any, B: Any) -> Any:
+        if self.native:
+            return A @ B
+        m, k = A.shape[0], B.shape[1]
+        if A.shape[1] == 0:
+            out = np.empty((m, k), dtype=object)
+            out.fill(self.s.const(0))
+            return out
+        f = self.s.field.normalize
+        return np.frompyfunc(f, 1, 1)(np.dot(A, B)).astype(object) if m and k else np.empty((m, k), dtype=object)
+
+    def solve(self, M: Any, B: Any, what: str) -> Any:
+        """Y with M Y = B (the field's solver)."""
+        from .fields import DegenerateError
+        try:
+            sol = self.s.field.solve(self.array(M).tolist(), self.array(B).tolist())
+        except DegenerateError as exc:
+            raise DegenerateError(f"{what} is singular here") from exc
+        if self.native:
+            return Mat._rows(sol, self.s.field)
+        out = np.empty((len(sol), len(sol[0]) if sol else 0), dtype=object)
+        for i, row in enumerate(sol):
+            for j, x in enumerate(row):
+                out[i, j] = x
+        return out
 
 
 class _Layout:
@@ -202,10 +238,12 @@ class _Layout:
         self.unit = (isinstance(coords, _UnitCoordinates) and coords.intact()
                      and all(self.shapes[k] == coords.shape for k in coords.names))
         self.unit_names = list(coords.names) if self.unit else None
+        self.alg = _Algebra(s)
         self._basis = None
 
-    def basis(self) -> Mat:
-        """B: one row per coordinate, its basis matrix as an ambient vector."""
+    def basis(self) -> Any:
+        """B: one row per coordinate, its basis matrix as an ambient vector (a matrix of the
+        layout's algebra)."""
         if self._basis is None:
             zero = self.s.const(0)
             rows = np.empty((len(self.coords), self.size), dtype=object)
@@ -213,7 +251,7 @@ class _Layout:
             for a, (name, B) in enumerate(self.coords):
                 o = self.offsets[name]
                 rows[a, o:o + B._shape()[0] * B._shape()[1]] = B._view().reshape(-1)
-            self._basis = _matrix(self.s, rows)
+            self._basis = self.alg.of(rows)
         return self._basis
 
     def ambient(self, grads: Sequence[Mapping[Hashable, Mat | None]]) -> np.ndarray:
@@ -227,28 +265,30 @@ class _Layout:
                     out[i, o:o + M._shape()[0] * M._shape()[1]] = M._view().reshape(-1)
         return out
 
-    def project(self, grads: Sequence[Mapping[Hashable, Mat | None]]) -> Mat:
-        """The coordinates (rows) of gradients given as matrices per variable: derivatives along
-        the coordinate basis, ⟨∇F, B_a⟩."""
+    def project(self, grads: Sequence[Mapping[Hashable, Mat | None]]) -> np.ndarray:
+        """The coordinates (rows, an array) of gradients given as matrices per variable: their
+        derivatives along the coordinate basis, ⟨∇F, B_a⟩."""
         amb = self.ambient(grads)
         if self.unit:
             cols = [amb[:, self.offsets[k]:self.offsets[k] + self.shapes[k][0] * self.shapes[k][1]]
                     for k in self.unit_names]
-            return _matrix(self.s, np.concatenate(cols, axis=1) if cols else amb[:, :0])
-        return _matrix(self.s, amb) @ self.basis().T
+            return np.concatenate(cols, axis=1) if cols else amb[:, :0].copy()
+        alg = self.alg
+        return alg.array(alg.mm(alg.of(amb), self.basis().T))
 
-    def assemble(self, c: Mat, like: Point) -> dict[Hashable, Mat]:
-        """The tangent vector Σ c_a B_a (c a column of coordinates), as matrices of the variables of
-        ``like`` (one without coordinates gets 0), each with the spaces of its basis."""
+    def assemble(self, c: np.ndarray, like: Point) -> dict[Hashable, Mat]:
+        """The tangent vector Σ c_a B_a (c an array, a column of coordinates), as matrices of the
+        variables of ``like`` (one without coordinates gets 0), each with the spaces of its basis."""
         s = self.s
         if self.unit:
-            vec = c._view().reshape(-1)
+            vec = c.reshape(-1)
             m, k = self.shapes[self.unit_names[0]] if self.unit_names else (0, 0)
             parts = {}
             for i, name in enumerate(self.unit_names):
                 parts[name] = vec[i * m * k:(i + 1) * m * k].reshape(m, k)
         else:
-            vec = (c.T @ self.basis())._view().reshape(-1)
+            alg = self.alg
+            vec = alg.array(alg.mm(alg.of(c.T.copy()), self.basis())).reshape(-1)
             parts = {}
             for name, _B in self.coords:
                 if name not in parts:
@@ -351,7 +391,7 @@ def _difference(a: Mat | None, b: Mat | None) -> Mat | None:
     return -b if a is None else a - b
 
 
-def _jacobian(s: Scene, F: Callable[[Scene, dict], Any], point: Point, layout: _Layout) -> Mat:
+def _jacobian(s: Scene, F: Callable[[Scene, dict], Any], point: Point, layout: _Layout) -> np.ndarray:
     """Rows: the scalar components of F; columns: their derivatives along the coordinates of the
     layout at the point.  Reverse mode (one evaluation, one sweep per component, one product with
     the coordinate basis), or one forward pass per coordinate where reverse mode cannot."""
@@ -366,10 +406,10 @@ def _jacobian(s: Scene, F: Callable[[Scene, dict], Any], point: Point, layout: _
     for j, col in enumerate(cols):
         for i, x in enumerate(col):
             a[i, j] = x
-    return _matrix(s, a)
+    return a
 
 
-def _kinetic_matrix(s: Scene, T: Callable[[Scene, dict], Any], velocity: Point, layout: _Layout) -> Mat:
+def _kinetic_matrix(s: Scene, T: Callable[[Scene, dict], Any], velocity: Point, layout: _Layout) -> np.ndarray:
     """The matrix K_ab = T(b_a + b_b) − T(b_a) − T(b_b) + T(0) of a quadratic form T in the velocities
     with constant coefficients, in the coordinates b_a of the layout.  Its columns are the gradients
     ∇T(b_b) − ∇T(0) = K b_b (reverse mode: one evaluation each), or, where reverse mode cannot, its
@@ -395,7 +435,7 @@ def _kinetic_matrix(s: Scene, T: Callable[[Scene, dict], Any], velocity: Point, 
             for name, B in layout.coords:
                 g = grad(direction(name, B))
                 cols.append({k: _difference(g[k], g0[k]) for k in wrt})
-            return layout.project(cols).T           # column b: ∇T(b_b) − ∇T(0) = K b_b
+            return layout.project(cols).T.copy()    # column b: ∇T(b_b) − ∇T(0) = K b_b
         except Unsupported:
             pass
     T0 = T(s, zero_v)
@@ -413,7 +453,7 @@ def _kinetic_matrix(s: Scene, T: Callable[[Scene, dict], Any], velocity: Point, 
         for b in range(a, N):
             nb, Bb = coords[b]
             K[a, b] = K[b, a] = kinetic(direction(nb, Bb, da)) - T1[a] - T1[b]
-    return _matrix(s, K)
+    return K
 
 
 # -- Lagrangian systems with holonomic constraints -----------------------------------------------
@@ -442,31 +482,33 @@ def euler_lagrange(s: Scene, T: Callable[[Scene, dict], Any], U: Callable[[Scene
         return _flat(constraints(t, {k: z[("q", k)] for k in names}))
 
     layout = _Layout(s, coords, position)
+    alg = layout.alg
     N = len(layout.coords)
     K = _kinetic_matrix(s, T, velocity, layout)
-    gradU = _jacobian(s, U, position, layout)                        # 1 × N
-    J = _jacobian(s, lambda t, q: _flat(constraints(t, q)), position, layout)           # m × N
-    m = J._shape()[0]
+    gradU = _jacobian(s, U, position, layout)                                      # 1 × N
+    Ja = _jacobian(s, lambda t, q: _flat(constraints(t, q)), position, layout)    # m × N
+    m = Ja.shape[0]
     # D²g(q̇, q̇) = d/dε [Dg(q + εq̇)·q̇]
     along = {("q", k): velocity[k] for k in names}
     hess = _flat(derivative(s, lambda t, z: derivative(t, g, z, {("q", k): z[("v", k)] for k in names}),
                             point, along))
     rhs = np.empty((N, m + 1), dtype=object)
-    rhs[:, :1] = (-gradU).T._view()
-    rhs[:, 1:] = J.T._view()
-    Y = _solve(s, K, _matrix(s, rhs), "the kinetic energy's quadratic form")._view()
-    Y0, Y1 = _matrix(s, Y[:, :1].copy()), _matrix(s, Y[:, 1:].copy())
+    rhs[:, :1] = (-gradU).T
+    rhs[:, 1:] = Ja.T
+    Y = alg.array(alg.solve(alg.of(K), alg.of(rhs), "the kinetic energy's quadratic form"))
+    Y0, Y1 = alg.of(Y[:, :1].copy()), alg.of(Y[:, 1:].copy())
     if m:
         h = np.empty((m, 1), dtype=object)
         for i, x in enumerate(hess):
-            h[i, 0] = x
-        S = J @ Y1
-        b = -_matrix(s, h) - J @ Y0
-        mu = _solve(s, S, b, "the matrix of the constraints' second derivatives")
-        acc = Y0 + Y1 @ mu
-        mu_list = list(mu._view()[:, 0])
+            h[i, 0] = -x
+        J = alg.of(Ja.copy())
+        S = alg.mm(J, Y1)
+        b = alg.of(h) - alg.mm(J, Y0)
+        mu = alg.solve(S, b, "the matrix of the constraints' second derivatives")
+        acc = alg.array(Y0 + alg.mm(Y1, mu))
+        mu_list = list(alg.array(mu)[:, 0])
     else:
-        acc, mu_list = Y0, []
+        acc, mu_list = alg.array(Y0), []
     return layout.assemble(acc, position), mu_list
 
 
@@ -501,29 +543,30 @@ def hamiltonian_flow(s: Scene, H: Callable[[Scene, dict], Any], constraints: Cal
         return value
 
     both = lambda t, z: [scalar_H(t, z)] + _flat(constraints(t, z))
+    grads = None
     if _reverse_applies(s):
         try:
             grads = _reverse_gradients(s, both, point, list(point))
-            Jx, Jp = xs.project(grads)._view(), ps.project(grads)._view()
         except Unsupported:
-            grads = None
+            pass
+    if grads is not None:
+        Jx, Jp = xs.project(grads), ps.project(grads)
     else:
-        grads = None
-    if grads is None:
-        Jx = _jacobian(s, both, point, _Layout(s, positions, point))._view()
-        Jp = _jacobian(s, both, point, _Layout(s, momenta, point))._view()
+        Jx = _jacobian(s, both, point, _Layout(s, positions, point))
+        Jp = _jacobian(s, both, point, _Layout(s, momenta, point))
+    alg = xs.alg
     m = Jx.shape[0] - 1
-    hx, hp = _matrix(s, Jx[:1].copy()), _matrix(s, Jp[:1].copy())
-    Gx, Gp = _matrix(s, Jx[1:].copy()), _matrix(s, Jp[1:].copy())
+    hx, hp = alg.of(Jx[:1].copy()), alg.of(Jp[:1].copy())
+    Gx, Gp = alg.of(Jx[1:].copy()), alg.of(Jp[1:].copy())
     if m:
-        C = Gx @ Gp.T - Gp @ Gx.T
-        b = -(Gx @ hp.T - Gp @ hx.T)
-        mu = _solve(s, C, b, "the constraint bracket matrix {F_i, F_j}_0")
-        xdot = hp.T + Gp.T @ mu
-        pdot = -(hx.T + Gx.T @ mu)
-        mu_list = list(mu._view()[:, 0])
+        C = alg.mm(Gx, Gp.T) - alg.mm(Gp, Gx.T)
+        b = -(alg.mm(Gx, hp.T) - alg.mm(Gp, hx.T))
+        mu = alg.solve(C, b, "the constraint bracket matrix {F_i, F_j}_0")
+        xdot = alg.array(hp.T + alg.mm(Gp.T, mu))
+        pdot = alg.array(-(hx.T + alg.mm(Gx.T, mu)))
+        mu_list = list(alg.array(mu)[:, 0])
     else:
-        xdot, pdot, mu_list = hp.T, -hx.T, []
+        xdot, pdot, mu_list = alg.array(hp.T), alg.array(-hx.T), []
     out = xs.assemble(xdot, {p: point[p] for p, _ in pairs})
     out.update(ps.assemble(pdot, {q: point[q] for _, q in pairs}))
     return out, mu_list
