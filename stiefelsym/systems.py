@@ -188,15 +188,18 @@ class _Algebra:
         return M._view() if self.native else M
 
     def mm(self, A: Any, B: Any) -> Any:
+        """The product AB."""
         if self.native:
             return A @ B
-        m, k = A.shape[0], B.shape[1]
-        if A.shape[1] == 0:
-            out = np.empty((m, k), dtype=object)
+        (m, inner), k = A.shape, B.shape[1]
+        out = np.empty((m, k), dtype=object)
+        if inner == 0:
             out.fill(self.s.const(0))
-            return out
-        f = self.s.field.normalize
-        return np.frompyfunc(f, 1, 1)(np.dot(A, B)).astype(object) if m and k else np.empty((m, k), dtype=object)
+        elif m and k:
+            normalize = self.s.field.normalize
+            for idx, x in np.ndenumerate(np.dot(A, B)):
+                out[idx] = normalize(x)
+        return out
 
     def solve(self, M: Any, B: Any, what: str) -> Any:
         """Y with M Y = B (the field's solver)."""

@@ -405,3 +405,25 @@ def test_a_linear_term_in_the_velocities_changes_nothing_and_a_wrong_potential_d
     _same(acc, shifted)
     wrong, _ = euler_lagrange(s, a.T_double, lambda t, w: -a.U_double(t, w), a.D0, q, v, coords)
     assert not (wrong["X"] - acc["X"]).is_zero()
+
+
+def test_float_flows_agree_within_their_error_bounds(monkeypatch):
+    """Over float64 with error bounds (the stacked-gradient algebra entry by entry): the flow by
+    reverse mode and by forward passes agree within the bounds, the bounds stay far below the
+    scale of the flow, and a wrong coefficient of the Hamiltonian is seen above them."""
+    import random
+    import stiefelsym.scene as scene_mod
+    from stiefelsym.fields import FloatField
+    from stiefelsym.scene import Scene
+    s = Scene(4, 2, FloatField(), rng=random.Random(SEED))
+    pairs = [("X", "P"), ("Y", "Q")]
+    flows = []
+    for reverse in (True, False):
+        monkeypatch.setattr(scene_mod, "REVERSE_GRADIENTS", reverse)
+        flows.append(a.hamiltonian_flow(s, a.H_coupled(a.FREE_KAPPA), a.coupled_constraints, coupled_point(s), pairs)[0])
+    for k in flows[0]:
+        assert (flows[0][k] - flows[1][k]).is_zero(), k
+        assert flows[0][k]._nat().e < 1e-8 * max(1.0, float(abs(flows[0][k]._nat().v).max()))
+    wrong = lambda t, z: a.H_coupled(a.FREE_KAPPA)(t, z) + t.tr(z["X"].T @ t.A @ z["Y"])
+    other = a.hamiltonian_flow(s, wrong, a.coupled_constraints, coupled_point(s), pairs)[0]
+    assert not (other["P"] - flows[0]["P"]).is_zero()
