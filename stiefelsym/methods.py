@@ -241,6 +241,9 @@ def _function_field_rank(M: Mat) -> int:
     polynomials, sympy's DomainMatrix otherwise."""
     polys = _flint_polynomials(M)
     if polys is not None:
+        if all(p.is_constant() for row in polys for p in row):     # a matrix of rational numbers
+            return flint.fmpq_mat([[p.leading_coefficient() if p != 0 else 0 for p in row]
+                                   for row in polys]).rank() if polys and polys[0] else 0
         return _bareiss_rank(polys)
     dM = _domain_matrix(M)
     return 0 if dM is None else len(dM.rref_den()[2])   # fraction-free: pivots of the reduced form

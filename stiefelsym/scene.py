@@ -186,6 +186,17 @@ class Scene(PaperObjects):
         self._param_blocks: list[tuple[str, Any, Any]] = []
         self._cache: dict[str, Any] = {}
 
+    def killing(self, a: Mat, b: Mat) -> Scalar:
+        """<a, b> = -1/2 tr(ab), as the Frobenius pairing of a and bᵀ (n² products, not n³)."""
+        if not (isinstance(a, Mat) and isinstance(b, Mat)):
+            return PaperObjects.killing(self, a, b)
+        (m, k1), (k2, k) = a._shape(), b._shape()
+        if k1 != k2 or m != k:
+            raise ValueError(f"cannot pair {(m, k1)} with {(k2, k)} by the trace of their product")
+        unify(a.tags[1], b.tags[0], "a product", a.tracker)
+        unify(a.tags[0], b.tags[1], "a trace", a.tracker)
+        return self.field.normalize(a._inner(b.T) * self.const(Fraction(-1, 2)))
+
     # the problem is fixed once the scene exists: read-only
     n = property(lambda self: self._n, doc="the size n")
     r = property(lambda self: self._r, doc="the size r")
