@@ -626,10 +626,11 @@ def _hard_size_summary(rows: Sequence[dict[str, Any]]) -> list[str]:
              "(whole-matrix float64; the normwise bound grows with n), r = n (both components of O(n) "
              "sampled) and r = n − 1, at plain random points (a pass there is a real verdict: `numeric`, "
              "`checked`, `proved`) and combined with hard points (a pass is `undecided`).  Where the float "
-             "method's float64 bound does not resolve the point it escalates to mpmath by itself; at n = 200 "
-             "that ladder does not finish within the run's budget and the verdict is `inconclusive` with "
-             "that reason, never a guess.  Sizes the cost model predicts beyond half the run's budget are "
-             "not run (`refused`, with the prediction).", ""]
+             "method's float64 bound does not resolve the point it escalates to mpmath by itself; a float64 "
+             "failure is a `fails` only once an exact rational evaluation confirms it, which at n = 200 does "
+             "not finish within the run's budget: the verdict is then `inconclusive` with that reason, never "
+             "a guess (the modular method refutes the control there in under a second).  Sizes the cost "
+             "model predicts beyond half the run's budget are not run (`refused`, with the prediction).", ""]
     counts: dict[tuple[str, str], dict[str, int]] = {}
     for r in rows:
         key = (r["case"], r["method"])
@@ -796,9 +797,12 @@ def tradeoffs(doc: dict[str, Any]) -> list[dict[str, Any]]:
                 if x is None:
                     continue
                 bound = x.get("max_bound") or 0.0
-                digits = _digits(x["worst_resolution"], 1.0) if "worst_resolution" in x else \
-                    _digits(bound, x.get("max_scale") or 1.0)
+                # absolute digits: the mpmath path's term scales m are not a usable reference (they
+                # grow far beyond the entries' sizes through its scalar linear solves)
+                digits = _digits(bound, 1.0)
+                rel = _digits(x["worst_resolution"], 1.0) if prec == "float64" and "worst_resolution" in x else None
                 out.append({"family": fam, "precision": prec, "at": tag, "n": x["n"], "r": x["r"],
+                            "relative_digits": rel,
                             "max_residual": x.get("max_residual"), "max_bound": bound, "seconds": x["seconds"],
                             "certified_digits": digits,
                             "digits_per_second": digits / max(x["seconds"], 1e-6) if math.isfinite(digits) else None})
@@ -877,19 +881,24 @@ def markdown(doc: dict[str, Any]) -> str:
                       ", ".join(f"{m} n = {k}" for m, k in sorted(reach.items())), ""]
     lines += ["## Error reached per second", "",
               "One evaluation of the claim at the float method's point (r = 2), per precision: at n = 16 and at "
-              "the largest n the series reached within its budget.  `certified digits` = −log10 max(e / m) over "
-              "the entries, the digits of each entry's term scale m that its bound e guarantees (the float "
-              "method needs 8); the exact evaluation has no rounding "
+              "the largest n the series reached within its budget.  `certified digits` = −log10 of the largest "
+              "bound e: the absolute decimal digits to which every residual entry is guaranteed (the points "
+              "have entries of size O(1)); the last column is −log10 max(e / m) over the entries, the float "
+              "method's own resolution test (it needs 8; the term scales m grow with n, so this stays high "
+              "where the absolute digits fall); in mpmath the scales m grow far beyond the entries' sizes "
+              "through its entry-by-entry solves and are no reference.  The exact evaluation has no rounding "
               "(its residual is exactly 0 for these true claims).", "",
-              "| family | precision | at | n | max \\|residual\\| | bound e | s | certified digits | digits per second |",
-              "| --- | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: |"]
+              "| family | precision | at | n | max \\|residual\\| | bound e | s | certified digits | digits per second "
+              "| digits relative to the terms' scale (float64) |",
+              "| --- | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"]
     for t in doc.get("tradeoffs") or tradeoffs(doc):
         dps = t["digits_per_second"]
         digits = t["certified_digits"]
         dtext = "exact" if not math.isfinite(digits) else f"{digits:.1f}"
         ptext = "-" if dps is None else f"{dps:.3g}"
         lines.append(f"| {t['family']} | {t['precision']} | {t['at']} | {t['n']} | {_fmt(t['max_residual'])} | "
-                     f"{_fmt(t['max_bound'])} | {t['seconds']:.4f} | {dtext} | {ptext} |")
+                     f"{_fmt(t['max_bound'])} | {t['seconds']:.4f} | {dtext} | {ptext} | "
+                     f"{'-' if t.get('relative_digits') is None else format(t['relative_digits'], '.1f')} |")
     lines += ["", "## Cost model", "",
               "Fitted per method and family: t(n) = exp(a) n^b seconds, raised to lie above every measured point "
               "(`stiefelsym/costmodel.json`; `verify --budget` refuses a run predicted beyond it).", "",
