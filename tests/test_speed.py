@@ -94,6 +94,9 @@ def test_committed_report_has_no_residual_over_its_bound():
     assert rows and not [r for r in rows if r["judgement"].startswith("WRONG")]
     assert not [r for r in rows if r["truth"] == "true" and r["verdict"] == "fails"]
     assert not [r for r in rows if r["truth"] == "false" and r["verdict"] in ("numeric", "checked", "proved")]
+    from stiefelsym.hard import HARD_CASES
+    at200 = {r["case"] for r in rows if r["n"] == 200}
+    assert all(f"n = 200 + {case}" in at200 for case in HARD_CASES), sorted(at200)
     sizes = {(r["n"], r["r"]) for r in rows}
     assert {(200, 1), (200, 2)} <= sizes and any(n == r >= 8 for n, r in sizes) and any(r == n - 1 >= 7 for n, r in sizes)
 
