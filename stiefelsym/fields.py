@@ -550,6 +550,15 @@ class FloatField(Field):
     def is_exact_zero(self, x):
         return x.v == 0 and x.e == 0 if isinstance(x, ErrNum) else x == 0
 
+    def solve(self, M, B):
+        """Gaussian elimination with the running error bounds; each solution entry then takes its
+        own size |v| + e as its term scale (as the float64 inverse does): the scales carried
+        through elimination multiply by pivot ratios at every step and would grow without
+        meaning (10^2699 at n = 16), which would make the resolution test e <= 10^-8 m vacuous."""
+        out = Field.solve(self, M, B)
+        return [[ErrNum(x.v, x.e, abs(x.v) + x.e, x.u) if isinstance(x, ErrNum) else x for x in row]
+                for row in out]
+
     def absorb(self, a, g, b):
         """a - g b for g = 0 within its bound: |g b| <= (|g.v| + g.e)(|b.v| + b.e) joins a's error."""
         a, g, b = (x if isinstance(x, ErrNum) else self.const(x) for x in (a, g, b))

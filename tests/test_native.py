@@ -281,3 +281,14 @@ def test_triangular_multipliers_of_the_twisted_form_equal_the_solved_system():
         for key in ("Lambda", "Pi"):
             assert entries(fa[key]) == entries(fb[key])
         assert entries(fa.Xdot) == entries(fb.Xdot) and entries(fa.Pdot) == entries(fb.Pdot)
+
+
+def test_term_scales_of_a_float_solve_stay_the_size_of_the_solution():
+    """The scales carried through elimination would multiply by pivot ratios (10^2699 at n = 16
+    in mpmath), making the resolution test e <= 10^-8 m vacuous; a solution entry's scale is its
+    own size."""
+    import mpmath
+    with mpmath.workdps(30):
+        s = Scene(16, 2, FloatField(30), rng=random.Random(0))
+        for x in s.X._view().flat:
+            assert x.m <= abs(x.v) + x.e + 1
