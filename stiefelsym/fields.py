@@ -795,22 +795,19 @@ class DegreeField(Field):
         common, cleared = self.cleared(M)
         det_deg, det_h = self.minor_bound(cleared, m)      # also bounds every cofactor
         det_key = self.new_factor(det_deg, det_h)
-        out = []
-        for i in range(m):
-            row = []
-            for j in range(len(B[0])):
-                acc = Deg(-1, None, self)
-                for b in (B[l][j] for l in range(m)):
-                    acc = acc + b
-                if acc.zero:
-                    row.append(acc)
-                    continue
-                den = dict(acc.den)
-                den[det_key] = den.get(det_key, 0) + 1
-                row.append(Deg(acc.num + det_deg + self.den_degree(common), den, self,
-                               acc.h + det_h + self.den_height(common)))
-            out.append(row)
-        return out
+        column = []                # the bound of column j of the solution: the same for every row
+        for j in range(len(B[0])):
+            acc = Deg(-1, None, self)
+            for b in (B[l][j] for l in range(m)):
+                acc = acc + b
+            if acc.zero:
+                column.append(acc)
+                continue
+            den = dict(acc.den)
+            den[det_key] = den.get(det_key, 0) + 1
+            column.append(Deg(acc.num + det_deg + self.den_degree(common), den, self,
+                              acc.h + det_h + self.den_height(common)))
+        return [list(column) for _ in range(m)]
 
     def rank(self, M):
         raise TypeError("ranks are not defined over degree markers")
