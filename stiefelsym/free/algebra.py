@@ -535,13 +535,19 @@ def _coef_parts(c: Coef) -> tuple[str, str | None, bool]:
         neg = e.could_extract_minus_sign()
         mag = -e if neg else e
         out = ("- " if neg else "+ ", None if mag == 1 else sympy.latex(mag), isinstance(mag, sympy.Add))
+    return memo_put(_TERM_LATEX, c, out, 50_000)
+
+
+def memo_put(memo: dict, key: Any, value: Any, limit: int) -> Any:
+    """Store value under key in a bounded memo (cleared when it outgrows limit; an unhashable
+    key is not stored) and return value."""
     try:
-        if len(_TERM_LATEX) > 50_000:
-            _TERM_LATEX.clear()
-        _TERM_LATEX[c] = out
+        if len(memo) > limit:
+            memo.clear()
+        memo[key] = value
     except TypeError:
         pass
-    return out
+    return value
 
 
 def _signed_term(c: Coef, body: str) -> str:

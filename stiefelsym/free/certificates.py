@@ -24,7 +24,7 @@ from typing import Any, Iterable, Mapping
 
 import symengine as se
 
-from .algebra import DIMENSIONS, Letter, NCPoly
+from .algebra import DIMENSIONS, Letter, NCPoly, memo_put
 from .rewriting import Certificate
 
 FORMAT = "stiefelsym-cofactor-1"
@@ -39,14 +39,7 @@ def _coef_text(c: Any) -> tuple[tuple, str]:
         return _COEF_TEXT[c]
     except (KeyError, TypeError):
         pass
-    out = (tuple(c.free_symbols), str(c))
-    try:
-        if len(_COEF_TEXT) > 100_000:
-            _COEF_TEXT.clear()
-        _COEF_TEXT[c] = out
-    except TypeError:
-        pass
-    return out
+    return memo_put(_COEF_TEXT, c, (tuple(c.free_symbols), str(c)), 100_000)
 
 
 class CertificateWriter:
