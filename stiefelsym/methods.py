@@ -555,6 +555,11 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
         res.message = f"{exc} is beyond the symbolic method's budget"
         res.seconds = time.perf_counter() - t0
         return res
+    except MemoryError:
+        res.verdict = "inconclusive"
+        res.message = "the symbolic computation exceeded the memory budget"
+        res.seconds = time.perf_counter() - t0
+        return res
     except DegenerateError as exc:
         res.verdict = "error"
         res.message = f"degenerate: {exc}"

@@ -26,7 +26,7 @@ from typing import Any, Callable, Mapping
 
 import numpy as np
 
-from .fields import DegreeField, Dual, DualField, Field, FloatField, DegenerateError
+from .fields import DegreeField, Dual, DualField, Field, FloatField, DegenerateError, SymbolicField
 from .matrix import CoordinateTracker, Mat, block, definite, scalar_matrix, unify
 from .native import backend
 from .reverse import Rev, RevField, RevMat, Unsupported, gradient as rev_gradient, leaf as rev_leaf
@@ -763,6 +763,10 @@ class Scene(PaperObjects):
         approx = isinstance(self.field, FloatField)
         if not (self.field.exact or approx):
             return None
+        if isinstance(self.field, SymbolicField) and self.chart == "cayley":
+            # rational functions of the chart: the closed form's products swell past any memory
+            # budget where the solved system is refused early by the symbolic budget
+            return None
         markers = isinstance(self.field, DegreeField)
         X, P = self.X, self.P
         if not markers and not approx and not _exactly_zero(X.T @ X - self.Ir):
@@ -782,7 +786,8 @@ class Scene(PaperObjects):
         only when both conditions and the assumed shape of the Λ-direction hold exactly at the
         point (over an exact field; elsewhere None, and the r(r+1) system is solved)."""
         if (not CLOSED_FORM_MULTIPLIERS or self.realization != "standard" or not self.field.exact
-                or isinstance(self.field, DegreeField) or self.chart not in ("cayley", "equivariant")):
+                or isinstance(self.field, DegreeField) or self.chart not in ("cayley", "equivariant")
+                or isinstance(self.field, SymbolicField) and self.chart == "cayley"):
             return None
         X, P = self.X, self.P
         if not _exactly_zero(X.T @ X - self.Ir):
