@@ -5,6 +5,8 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 #: worker processes for the verification runs (the verdicts do not depend on it)
 JOBS   ?= 2
+#: make verify covers every size n <= MAX_N each claim is stated for
+MAX_N  ?= 6
 
 .PHONY: venv verify verify-all test bench report clean tables flows speed
 
@@ -18,9 +20,9 @@ $(STAMP): pyproject.toml
 	$(BIN)/python -m pip install --quiet -e '.[test]'
 	touch $(STAMP)
 
-## verify: verify the whole catalog (default methods) and regenerate reports/
+## verify: verify the whole catalog (default methods) at every size n <= MAX_N and regenerate reports/
 verify: venv
-	$(BIN)/stiefelsym verify --jobs $(JOBS)
+	$(BIN)/stiefelsym verify --jobs $(JOBS) --max-n $(MAX_N)
 
 ## verify-all: every method at every size (auto, modular, rational, float, free) and the slow tests
 verify-all: venv
