@@ -633,6 +633,19 @@ def _check_costs(runner: Any, claims: list[Claim], sizes: tuple[Size, ...], meth
                 costmodel.check(m, c, s.n, s.r, budget)
 
 
+def _engine_methods(methods: Sequence[str], max_n: int | None) -> tuple[str, ...]:
+    """The methods to plan: with --max-n, auto keeps its dimension-free run (which a plan with
+    explicit sizes leaves out), in the same place as in a plan of the claims' own sizes."""
+    if max_n is None:
+        return tuple(methods)
+    out: list[str] = []
+    for m in methods:
+        if m == "auto" and "free" not in methods:
+            out.append("free")
+        out.append(m)
+    return tuple(out)
+
+
 def _remote(address: str) -> Any:
     """runner.verify on the dask cluster at ``address``; a cluster that cannot be used is bad input."""
     from . import distributed
@@ -718,7 +731,7 @@ def _verify(out: Any, ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tu
         if scheduler is not None:
             engine = _remote(scheduler)
         try:
-            engine(claims, sizes=list(sizes) or None, methods=tuple(methods), seed=seed,
+            engine(claims, sizes=list(sizes) or None, methods=_engine_methods(methods, max_n), seed=seed,
                    on_result=on_result, on_plan=progress.plan, hard=hard,
                    timeout=timeout, memory=memory, jobs=jobs, strict_sizes=bool(ids) and max_n is None)
         finally:
