@@ -802,8 +802,7 @@ def tradeoffs(doc: dict[str, Any]) -> list[dict[str, Any]]:
                 if x is None:
                     continue
                 bound = x.get("max_bound") or 0.0
-                # absolute digits: the mpmath path's term scales m are not a usable reference (they
-                # grow far beyond the entries' sizes through its scalar linear solves)
+                # absolute digits; the relative column is the float64 method's own resolution test
                 digits = _digits(bound, 1.0)
                 rel = _digits(x["worst_resolution"], 1.0) if prec == "float64" and "worst_resolution" in x else None
                 out.append({"family": fam, "precision": prec, "at": tag, "n": x["n"], "r": x["r"],
@@ -890,8 +889,8 @@ def markdown(doc: dict[str, Any]) -> str:
               "bound e: the absolute decimal digits to which every residual entry is guaranteed (the points "
               "have entries of size O(1)); the last column is −log10 max(e / m) over the entries, the float "
               "method's own resolution test (it needs 8; the term scales m grow with n, so this stays high "
-              "where the absolute digits fall); in mpmath the scales m grow far beyond the entries' sizes "
-              "through its entry-by-entry solves and are no reference.  The exact evaluation has no rounding "
+              "where the absolute digits fall); it is shown for float64, the precision the verdicts rest on.  "
+              "The exact evaluation has no rounding "
               "(its residual is exactly 0 for these true claims).", "",
               "| family | precision | at | n | max \\|residual\\| | bound e | s | certified digits | digits per second "
               "| digits relative to the terms' scale (float64) |",
