@@ -57,6 +57,10 @@ _FALLBACK = {"exact": (math.log(1e-3), 6.0), "rational": (math.log(1e-3), 4.5),
              "modular": (math.log(1e-3), 4.0), "float": (math.log(1e-3), 4.5)}
 
 
+#: the extra power of n/n_measured of an exact prediction beyond the measured sizes
+EXACT_EXTRAPOLATION_EXTRA = 2.0
+
+
 class CostModel:
     """Fitted power laws per (method, family), with the measurements they came from."""
 
@@ -65,10 +69,14 @@ class CostModel:
         self.fits: dict[str, dict[str, tuple[float, float]]] = {}
         self.square: dict[str, dict[str, tuple[float, float]]] = {}
         self.small: dict[str, dict[str, tuple[float, float]]] = {}
+        #: the largest n each (method, family) fit was measured at
+        self.measured: dict[str, dict[str, int]] = {}
         for key, into in (("fits", self.fits), ("fits_square", self.square), ("fits_small", self.small)):
             for method, fams in (self.data.get(key) or {}).items():
                 for fam, coef in fams.items():
                     into.setdefault(method, {})[fam] = (float(coef["a"]), float(coef["b"]))
+                    if key == "fits" and coef.get("n_max_measured"):
+                        self.measured.setdefault(method, {})[fam] = int(coef["n_max_measured"])
         self.claim_family: dict[str, str] = dict(self.data.get("claim_family") or {})
         #: per claim and method: its measured times over its family's prediction (the worst ratio)
         self.factors: dict[str, dict[str, float]] = {
@@ -125,6 +133,17 @@ class CostModel:
         return math.exp((1 - w) * math.log(half) + w * math.log(full))
 
     def _power1(self, table: dict, method: str, fam: str | None, n: int) -> float:
+        t = self._power1_fit(table, method, fam, n)
+        if method == "exact":
+            # beyond the sizes it was measured at, a symbolic run grows faster than its fit: the
+            # generic objects alone (a symmetric A, an operator on so(n)) add O(n^2) parameters to
+            # every polynomial; n = 300 was predicted at 3 s from n <= 8 and died of memory at 73 s
+            top = self.measured.get(method, {}).get(fam) or min(self.measured.get(method, {}).values(), default=8)
+            if n > top:
+                t *= (n / top) ** EXACT_EXTRAPOLATION_EXTRA
+        return t
+
+    def _power1_fit(self, table: dict, method: str, fam: str | None, n: int) -> float:
         fams = table.get(method)
         if not fams:
             a, b = _FALLBACK.get(method, _FALLBACK["exact"])

@@ -111,3 +111,15 @@ def test_small_r_interpolation_on_a_synthetic_model():
     small, mid, half = (m._power("float", "lax", 200, r) for r in (2, 50, 100))
     assert small < mid < half
     assert math.isclose(small, 0.2, rel_tol=0.5)
+
+
+def test_exact_predictions_beyond_the_measured_sizes_are_pessimistic():
+    """Extrapolated from n <= 8, exact neumann-lax at (300,2) was predicted at 3 s and died of memory
+    after 73 s: beyond the measured sizes an exact prediction grows by an extra (n / n_measured)^2."""
+    from stiefelsym import costmodel
+    from stiefelsym.claims import load_catalog
+    from stiefelsym.methods import BudgetError
+    c = load_catalog().get("neumann-lax")
+    assert costmodel.predict("exact", c, 300, 2) > 600
+    with pytest.raises(BudgetError, match="predicted"):
+        costmodel.check("exact", c, 300, 2, budget=60)
