@@ -480,13 +480,9 @@ def _figures(data: dict[str, Any], out: Path) -> list[str]:
             ax.xaxis.set_minor_formatter(NullFormatter())
             ax.set_xlabel("wall time (s)")
             ax.grid(True, which="both", alpha=0.3)
-        axes[0].set_ylabel("largest error on [0, T]")
-        axes[0].legend(fontsize=7)
-        fig.suptitle(f"work-precision: {flow} on V({rows[0]['n']},{rows[0]['r']}), T = {rows[0]['T']:g}", fontsize=10)
-        fig.tight_layout()
         name = f"wp_{i + 1}"
-        _save(fig, out, name)
-        plt.close(fig)
+        _finish(fig, axes, "largest error on [0, T]",
+                f"work-precision: {flow} on V({rows[0]['n']},{rows[0]['r']}), T = {rows[0]['T']:g}", out, name)
         names.append(name)
     for i, fam in enumerate(data["long_runs"]):
         fig, axes = plt.subplots(1, 3, figsize=(12, 3.6))
@@ -502,15 +498,22 @@ def _figures(data: dict[str, Any], out: Path) -> list[str]:
             ax.set_title(title, fontsize=9)
             ax.set_xlabel("t")
             ax.grid(True, which="both", alpha=0.3)
-        axes[0].set_ylabel("error at time t")
-        axes[0].legend(fontsize=7)
-        fig.suptitle(f"long run: {fam['flow']} on V({fam['n']},{fam['r']}) to t = {fam['T']:g}", fontsize=10)
-        fig.tight_layout()
         name = long_figure_name(i, fam)
-        _save(fig, out, name)
-        plt.close(fig)
+        _finish(fig, axes, "error at time t",
+                f"long run: {fam['flow']} on V({fam['n']},{fam['r']}) to t = {fam['T']:g}", out, name)
         names.append(name)
     return names
+
+
+def _finish(fig: Any, axes: Any, ylabel: str, title: str, out: Path, name: str) -> None:
+    """Label, title and save a row of panels (PNG and PDF), then close it."""
+    import matplotlib.pyplot as plt
+    axes[0].set_ylabel(ylabel)
+    axes[0].legend(fontsize=7)
+    fig.suptitle(title, fontsize=10)
+    fig.tight_layout()
+    _save(fig, out, name)
+    plt.close(fig)
 
 
 def _csv(rows: Iterable[dict[str, Any]], keys: Sequence[str]) -> str:
