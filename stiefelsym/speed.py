@@ -266,6 +266,18 @@ def _finite(x: Any) -> bool:
 
 # --------------------------------------------------------------------------- sweeps
 
+def _stop_predicted(series: list[dict[str, Any]], n: int, cap: float, stops: list[str] | None,
+                    what: str) -> tuple[bool, float | None]:
+    """Whether a series stops before n (its fit so far predicts more than cap seconds), recording
+    why in stops; and the prediction."""
+    guess = _predicted(series, n)
+    if guess is not None and guess > cap:
+        if stops is not None:
+            stops.append(f"{what}: stopped before n = {n} (predicted {guess:.3g} s > {cap:g} s per evaluation)")
+        return True, guess
+    return False, guess
+
+
 def _predicted(series: Sequence[dict[str, Any]], n: int, key: str = "seconds") -> float | None:
     """The next evaluation's time, from the series so far: the cost model's power law (an upper
     envelope of the measured points, :func:`stiefelsym.costmodel.fit`) at n; None without data."""
@@ -304,11 +316,8 @@ def residual_against_n(claim: Any, ns: Sequence[int], cap: float = 10.0, total: 
     spent = 0.0
     for n in ns:
         r = r_of(n)
-        guess = _predicted(out, n)
-        if guess is not None and guess > cap:
-            if stops is not None:
-                stops.append(f"{_label(dps)}, r = {_r_text(r_of)}: stopped before n = {n} (predicted "
-                             f"{guess:.3g} s > {cap:g} s per evaluation)")
+        stop, guess = _stop_predicted(out, n, cap, stops, f"{_label(dps)}, r = {_r_text(r_of)}")
+        if stop:
             break
         rec = evaluate(claim, n, r, dps, seed, exact=n <= exact_n)
         if guess is not None:
@@ -372,11 +381,7 @@ def residual_against_precision(claim: Any, ns: Sequence[int] | int, r: Any = Non
             series: list[dict[str, Any]] = []
             spent = 0.0
             for n in ns:
-                guess = _predicted(series, n)
-                if guess is not None and guess > cap:
-                    if stops is not None:
-                        stops.append(f"exact, r = {_r_text(r_of)}: stopped before n = {n} (predicted "
-                                     f"{guess:.3g} s > {cap:g} s per evaluation)")
+                if _stop_predicted(series, n, cap, stops, f"exact, r = {_r_text(r_of)}")[0]:
                     break
                 rec = evaluate_exact(claim, n, r_of(n), seed)
                 series.append(rec)
