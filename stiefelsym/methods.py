@@ -864,7 +864,7 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
             res.message = f"every one of {MAX_RESAMPLE} sampled points was degenerate (a pole or singular system)"
             res.seconds = time.perf_counter() - t0
             return res
-        if t == 0 and not scene.has_params():
+        if t == 0 and not scene._has_params():
             return _run_constant(claim, n, r, seed, func, options, res, t0)
         evaluations.append(ev)
         if kind == "modular":
@@ -873,7 +873,7 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
             check, pos, val = ev.nonzero[0]
             witness = {"seed": seed, "trial": t, "attempt": attempt, "component": comp, "field": field.name,
                        "check": check, "entry": pos, "value": field.describe(val),
-                       "point": {k: field.describe(v) for k, v in scene.point_values().items()}}
+                       "point": {k: field.describe(v) for k, v in scene._point_values().items()}}
             if kind == "modular":
                 witness["prime"] = field.p
     res.seconds = time.perf_counter() - t0
@@ -1116,6 +1116,14 @@ def _float_component(claim: Claim, n: int, r: int, seed: int, func: Callable, op
 def _run_float(claim: Claim, n: int, r: int, seed: int, func: Callable, options: dict | None) -> Result:
     res = _base_result(claim, n, r, "float", seed)
     t0 = time.perf_counter()
+    # the structural pass the randomized exact methods make: the claim runs once over opaque degree
+    # markers, so a claim that reads the values of the scene's numbers (and could subtract the
+    # sampled value of an entry from it) is refused as it is by the modular and rational methods
+    try:
+        degree_bound(claim, n, r, func)
+    except CoordinateAccess as exc:
+        res.verdict, res.message = "error", str(exc)
+        return res
     comps = (0, 1) if r == n else (0,)
     res.reductions = [CAYLEY_REDUCTION.format(
         D=" D" if r == n else "", comp="; both components of O(n)" if r == n else "")

@@ -293,12 +293,12 @@ class Scene(PaperObjects):
             for i, j, x in zip(rows.tolist(), cols.tolist(), vals.tolist()):
                 self.params[param_name(name, i, j)] = self.field.param_from_raw(x)
 
-    def point_values(self) -> dict[str, Any]:
+    def _point_values(self) -> dict[str, Any]:
         """Every parameter of the point drawn so far, by name (a witness's coordinates)."""
         self._expand_param_blocks()
         return self.params
 
-    def has_params(self) -> bool:
+    def _has_params(self) -> bool:
         """Whether any parameter has been drawn."""
         return bool(self.params) or bool(self._param_blocks)
 
@@ -755,28 +755,32 @@ class Scene(PaperObjects):
         (Π, Λ) with identity diagonal blocks, so these are the unique multipliers: the Dirac flow
         Ω∇H − Σ wᵢ Ω∇Fᵢ of H (the tests compare it with the solved system in every field).  None
         where the closed form does not apply (another realization, XᵀX ≠ I, dual or reverse numbers)."""
-        if not CLOSED_FORM_MULTIPLIERS or self.realization != "standard" or self.chart not in ("cayley", "equivariant"):
-            return None
         # floating point: every value approximates, within its error bound, the exact evaluation at
         # the chart's point, which is on V exactly (a Cayley transform of a skew matrix of exact
-        # inputs, or [I; 0]); the closed form is exact there, so the bounds carry over
-        approx = isinstance(self.field, FloatField)
-        if not (self.field.exact or approx):
+        # inputs, or [I; 0]); the closed form is exact there, so the bounds carry over.  Degree
+        # markers follow the structure of the computation the exact fields make.
+        approx = isinstance(self.field, (FloatField, DegreeField))
+        if not self._closed_form_applies(approx):
             return None
-        if isinstance(self.field, SymbolicField) and self.chart == "cayley":
-            # rational functions of the chart: the closed form's products swell past any memory
-            # budget where the solved system is refused early by the symbolic budget
-            return None
-        markers = isinstance(self.field, DegreeField)
-        X, P = self.X, self.P
-        if not markers and not approx and not _exactly_zero(X.T @ X - self.Ir):
-            return None
-        half = self.q(1, 2)
-        sym = lambda M: (M + M.T) * half        # noqa: E731
+        X, P, sym = self.X, self.P, self._sym
         Pi = sym(X.T @ HP)
         K = X.T @ P
         Lam = sym(X.T @ HX - HP.T @ P + Pi @ K - K @ Pi)
         return Lam, Pi
+
+    def _closed_form_applies(self, approx: bool) -> bool:
+        """The standard constraint set in a chart whose points are on V, and XᵀX = I checked exactly
+        (or taken from the chart's construction, ``approx``).  Not in the symbolic Cayley chart:
+        there rational functions make the closed form's products swell past any memory budget,
+        where the solved system is refused early by the symbolic budget."""
+        if (not CLOSED_FORM_MULTIPLIERS or self.realization != "standard"
+                or self.chart not in ("cayley", "equivariant") or not (self.field.exact or approx)
+                or isinstance(self.field, SymbolicField) and self.chart == "cayley"):
+            return False
+        return approx or (self.X.T @ self.X - self.Ir).is_zero()
+
+    def _sym(self, M: Mat) -> Mat:
+        return (M + M.T) * self.q(1, 2)
 
     def _triangular_multipliers(self, base: tuple[Mat, Mat],
                                 direction: Callable[[str, Mat, Mat], tuple[Mat, Mat]]) -> tuple[Mat, Mat] | None:
@@ -785,15 +789,9 @@ class Scene(PaperObjects):
         sym(XᵀẊ) = 0, then Λ from sym(ẊᵀP + XᵀṖ) = 0, each in closed form; the result is kept
         only when both conditions and the assumed shape of the Λ-direction hold exactly at the
         point (over an exact field; elsewhere None, and the r(r+1) system is solved)."""
-        if (not CLOSED_FORM_MULTIPLIERS or self.realization != "standard" or not self.field.exact
-                or isinstance(self.field, DegreeField) or self.chart not in ("cayley", "equivariant")
-                or isinstance(self.field, SymbolicField) and self.chart == "cayley"):
+        if isinstance(self.field, DegreeField) or not self._closed_form_applies(False):
             return None
-        X, P = self.X, self.P
-        if not _exactly_zero(X.T @ X - self.Ir):
-            return None
-        half = self.q(1, 2)
-        sym = lambda M: (M + M.T) * half        # noqa: E731
+        X, P, sym = self.X, self.P, self._sym
         Pi = sym(X.T @ base[0])
         dX, dP = direction("Pi", X @ Pi, P @ Pi)
         Xd, Pd = base[0] + dX, base[1] + dP
@@ -802,7 +800,7 @@ class Scene(PaperObjects):
         lX, lP = direction("Lambda", X @ Lam, P @ Lam)
         Pd = Pd + lP
         T = Xd.T @ P + X.T @ Pd
-        if not (_exactly_zero(lX) and _exactly_zero(sym(X.T @ Xd)) and _exactly_zero(T + T.T)):
+        if not (lX.is_zero() and sym(X.T @ Xd).is_zero() and (T + T.T).is_zero()):
             return None
         return Lam, Pi
 
@@ -1079,15 +1077,6 @@ def _flatten_value(v: Any, symmetric_lists: bool) -> list[Any]:
             out.extend(_flatten_value(x, symmetric_lists))
         return out
     return [v]
-
-
-def _exactly_zero(M: Mat) -> bool:
-    """Whether every entry of a matrix over an exact field is zero (natively where possible)."""
-    be = backend(M.field)
-    if be is not None and M._n is not None:
-        return be.is_zero(M._n)
-    f = M.field
-    return all(f.is_zero(x) for x in M._view().flat)
 
 
 def _derivative_part(v: Any, scene: Scene) -> Any:

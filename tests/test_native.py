@@ -139,7 +139,7 @@ def test_reverse_gradients_equal_forward_gradients(make):
             scene_mod.REVERSE_GRADIENTS = False
             try:
                 fwd = Scene(4, 2, make(), chart=chart, rng=random.Random(7))
-                fwd.params.update(base.point_values())
+                fwd.params.update(base._point_values())
                 fg = fwd.gradient(H)
             finally:
                 scene_mod.REVERSE_GRADIENTS = True
@@ -212,7 +212,7 @@ def test_closed_form_multipliers_equal_the_solved_system(make, chart):
             scene_mod.CLOSED_FORM_MULTIPLIERS = False
             try:
                 solved_scene = Scene(n, r, make(), chart=chart, rng=random.Random(11), component=1 if r == n else 0)
-                solved_scene.params.update(base.point_values())
+                solved_scene.params.update(base._point_values())
                 solved = _flows(solved_scene, H)
             finally:
                 scene_mod.CLOSED_FORM_MULTIPLIERS = True
@@ -232,7 +232,7 @@ def test_closed_form_multipliers_in_floating_point_stay_within_the_bounds_of_the
             scene_mod.CLOSED_FORM_MULTIPLIERS = False
             try:
                 b = Scene(n, r, FloatField(), rng=random.Random(2))
-                b.params.update(a.point_values())
+                b.params.update(a._point_values())
                 solved = _flows(b, H)
             finally:
                 scene_mod.CLOSED_FORM_MULTIPLIERS = True
@@ -258,7 +258,7 @@ def test_blocks_of_parameters_are_named_entries_of_the_point():
     s = Scene(12, 2, ModularField(P61), rng=random.Random(3))
     S = s._skew_params("S", 12, "n")
     assert S._n is not None
-    vals = s.point_values()
+    vals = s._point_values()
     assert len(vals) == 66
     assert vals["S_1,2"] == S._view()[0, 1] and vals["S_2,4"] == S._view()[1, 3] == -S._view()[3, 1]
     assert s._param("S_1,2") == S._view()[0, 1]
@@ -274,7 +274,7 @@ def test_triangular_multipliers_of_the_twisted_form_equal_the_solved_system():
         try:
             b = Scene(n, r, ModularField(P61), rng=random.Random(5))
             a.eta
-            b.params.update(a.point_values())
+            b.params.update(a._point_values())
             fb = twisted.multiplier_flow(b, H, b.eta)
         finally:
             scene_mod.CLOSED_FORM_MULTIPLIERS = True
