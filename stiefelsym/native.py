@@ -646,4 +646,5 @@ def _make(field) -> Backend | None:
     if t is DualField:
         base = backend(field.base)
         return None if base is None else DualBackend(field, base)
-    return None
+    own = getattr(field, "native_backend", None)    # a field that brings its own backend module
+    return own() if own is not None else None
