@@ -2,6 +2,8 @@
 SO(r)-invariant metrics on V(n, r)."""
 from __future__ import annotations
 
+from functools import lru_cache
+
 from stiefelsym import Rank, admissible, claim
 
 SECTION = "3"
@@ -276,8 +278,15 @@ def metric_geodesic_flow(s):
 
 def _fibre_action_matrix(s):
     """Linear conditions T^T G + G T = 0 on a symmetric G: the quadratic forms on T*_{X0}V
-    invariant under P1 -> Q P1 Q^{-1}, P2 -> B P2 Q^{-1} (Q in SO(r), B in SO(n-r))."""
-    n, r = s.n, s.r
+    invariant under P1 -> Q P1 Q^{-1}, P2 -> B P2 Q^{-1} (Q in SO(r), B in SO(n-r)).  Each
+    condition is listed once (a repeated one, or its negative, and 0 = 0 are left out)."""
+    rows, unknowns, N = _fibre_conditions(s.n, s.r)
+    return [list(row) for row in rows], unknowns, N
+
+
+@lru_cache(maxsize=None)
+def _fibre_conditions(n, r):
+    """The distinct conditions of :func:`_fibre_action_matrix` (integer rows), once per size."""
     coords = [("P1", i, j) for i in range(r) for j in range(i + 1, r)] + \
              [("P2", i, j) for i in range(n - r) for j in range(r)]
     index = {c: k for k, c in enumerate(coords)}
@@ -318,20 +327,30 @@ def _fibre_action_matrix(s):
 
     gens = [action(E, [[0] * (n - r) for _ in range(n - r)]) for E in skew_basis(r)]
     gens += [action([[0] * r for _ in range(r)], B) for B in skew_basis(n - r)]
-    unknowns = [(i, j) for i in range(N) for j in range(i, N)]
+    unknowns = {(i, j): u for u, (i, j) in enumerate((i, j) for i in range(N) for j in range(i, N))}
     rows = []
     for T in gens:
         for k in range(N):
             for l in range(k, N):
-                row = []
-                for (i, j) in unknowns:
-                    # (T^T G + G T)_{kl} as a linear form in G_ij = G_ji
-                    c = 0
-                    for (a, b) in ({(i, j), (j, i)}):
-                        c += T[a][k] * (1 if b == l else 0) + (1 if a == k else 0) * T[b][l]
-                    row.append(c)
-                rows.append(row)
-    return rows, len(unknowns), N
+                # (T^T G + G T)_{kl} = sum_a T_ak G_al + G_ka T_al as a linear form in G_ij = G_ji (i <= j)
+                row = [0] * len(unknowns)
+                for a in range(N):
+                    if T[a][k]:
+                        row[unknowns[min(a, l), max(a, l)]] += T[a][k]
+                    if T[a][l]:
+                        row[unknowns[min(k, a), max(k, a)]] += T[a][l]
+                lead = next((c for c in row if c), 0)
+                if lead:
+                    rows.append(tuple(row) if lead > 0 else tuple(-c for c in row))
+    return tuple(dict.fromkeys(rows)), len(unknowns), N
+
+
+def _conditions_matrix(s, rows, unknowns):
+    """The integer conditions as a matrix of the scene (one 1 x unknowns zero row when there are none)."""
+    if not rows:
+        return s.zeros(1, unknowns, ("cond", "coef"))
+    const = {c: s.const(c) for c in {c for row in rows for c in row}}
+    return s.mat([[const[c] for c in row] for row in rows], tags=("cond", "coef"))
 
 
 def _extra_invariants(n: int, r: int) -> int:
@@ -351,8 +370,7 @@ def invariant_quadratic_forms(s):
     """Proposition after Theorem ET: the SO(n)×SO(r)-invariant quadratic forms on T*_{X₀}V (invariant under (SO(n-r)-action) and P₁ ↦ Q⁻¹P₁Q, P₂ ↦ P₂Q) are spanned by tr(PᵀP) and tr((XᵀP)²)."""
     rows, unknowns, N = _fibre_action_matrix(s)
     span = 1 if s.r in (1, s.n) else 2
-    M = s.mat([[s.const(c) for c in row] for row in rows], tags=("cond", "coef")) if rows else \
-        s.zeros(1, unknowns, ("cond", "coef"))
+    M = _conditions_matrix(s, rows, unknowns)
     return {"invariant forms": Rank(M, unknowns - span, generic=False,
                                     meaning=f"invariance conditions on the {unknowns} coefficients of a "
                                             f"quadratic form on the {N}-dimensional fibre; kernel = invariant forms")}
@@ -363,5 +381,5 @@ def invariant_quadratic_forms(s):
 def invariant_quadratic_forms_corrected(s):
     rows, unknowns, N = _fibre_action_matrix(s)
     span = (1 if s.r in (1, s.n) else 2) + _extra_invariants(s.n, s.r)
-    M = s.mat([[s.const(c) for c in row] for row in rows], tags=("cond", "coef"))
+    M = _conditions_matrix(s, rows, unknowns)
     return {"invariant forms": Rank(M, unknowns - span, generic=False)}
