@@ -25,6 +25,7 @@ from .results import CheckOutcome, Result
 
 def run_free(claim: Claim, func: Callable | None = None) -> Result:
     from .free import FreeScene, FreeSolveError, NeedsCoordinates, RewritingError
+    from .free.algebra import REFUSED, recording, refusals
     from .free.rewriting import latex_text
 
     func = func or claim.func
@@ -41,15 +42,33 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
         return undecided("rewriting proves vanishing only; a nonvanishing statement needs a witness")
     try:
         scene = FreeScene(realization=claim.realization, lazy=True)
-        checks = call_claim(func, scene)
+    except NeedsCoordinates as exc:
+        return undecided(f"needs coordinates: {exc.what}; decided by the fixed-size methods")
+
+    def touched() -> Result | None:
+        """Undecided when the run's record holds a refusal of the free scene, whatever the claim
+        did with the exception (caught it and went on, or failed on something else)."""
+        refused = refusals(scene.tracker)
+        if not refused:
+            return None
+        return undecided(f"the claim touched {'; '.join(refused)}, which needs coordinates (refused by the "
+                         "dimension-free scene, recorded before it was raised); decided by the fixed-size methods")
+
+    try:
+        with recording(scene.tracker):   # every refusal goes to the run's record before it is raised
+            checks = call_claim(func, scene)
     except NeedsCoordinates as exc:
         return undecided(f"needs coordinates: {exc.what}; decided by the fixed-size methods")
     except (FreeSolveError, RewritingError) as exc:
-        return undecided(f"outside the rewriting backend: {exc}")
+        return touched() or undecided(f"outside the rewriting backend: {exc}")
     except (TypeError, ValueError, AttributeError, ArithmeticError) as exc:
-        return undecided(f"the claim does not run on the free algebra ({type(exc).__name__}: {exc})")
-    if scene.tracker.used:
-        return undecided(f"the claim reads {', '.join(scene.tracker.used)}")
+        return touched() or undecided(f"the claim does not run on the free algebra ({type(exc).__name__}: {exc})")
+    refused = touched()
+    if refused is not None:
+        return refused
+    used = [u for u in scene.tracker.used if not u.endswith(REFUSED)]
+    if used:
+        return undecided(f"the claim reads {', '.join(used)}")
     if any(isinstance(v, (Rank, Count)) for v in checks.values()):
         return undecided("ranks and counts need coordinates; decided by the fixed-size methods")
     rules, outcomes, derivations, open_entries, proved_entries = [], [], [], [], []

@@ -13,13 +13,62 @@ traces that multiplies the word (traces are central).  The empty word of type
 """
 from __future__ import annotations
 
+from contextlib import contextmanager
+from contextvars import ContextVar
 from fractions import Fraction
-from typing import Any, Iterable, Mapping
+from typing import Any, Iterable, Iterator, Mapping
 
 import symengine as se
 
 from ..fields import Dual
 from ..matrix import NeedsCoordinates, engine_number_type  # noqa: F401 (one exception for every backend)
+
+# ---------------------------------------------------------------------------
+# the one door of refusals: a refusal of the dimension-free scene is recorded in the run's record
+# (the scene's tracker) *before* it is raised, so that a claim that catches it and goes on cannot
+# turn it into a proof: the free method gives no "proved" when the record holds a refusal.
+
+#: the suffix that marks a refusal in a tracker's record (the rest is what was refused)
+REFUSED = " (refused: needs coordinates)"
+
+#: the record of the free run in progress (its scene's tracker): for refusals of objects shared by
+#: every run (the dimension symbols n, r) and of the rewriting system, which know no scene
+_RUN_RECORD: ContextVar = ContextVar("stiefelsym_free_run_record", default=None)
+
+
+def record_refusal(what: str, tracker: Any = None) -> None:
+    """Record the refusal ``what`` in ``tracker`` (the scene's) and in the record of the run."""
+    run = _RUN_RECORD.get()
+    for t in (tracker, run if run is not tracker else None):
+        if t is None:
+            continue
+        door = getattr(t, "refuse", None)   # the record's own door for refusals, where it has one
+        if door is not None:
+            door(what)
+        else:
+            t.touch(what + REFUSED)
+
+
+def refuse(what: str, tracker: Any = None) -> NeedsCoordinates:
+    """The refusal ``what``, recorded (see :func:`record_refusal`): ``raise refuse(what, tracker)``."""
+    record_refusal(what, tracker)
+    return NeedsCoordinates(what)
+
+
+def refusals(tracker: Any) -> list[str]:
+    """The refusals in a tracker's record (what was refused)."""
+    out = list(getattr(tracker, "refused", ()))
+    return out + [u[: -len(REFUSED)] for u in tracker.used if u.endswith(REFUSED) and u[: -len(REFUSED)] not in out]
+
+
+@contextmanager
+def recording(tracker: Any) -> Iterator[None]:
+    """Within: the refusals that know no scene go to ``tracker`` (the free method's run)."""
+    token = _RUN_RECORD.set(tracker)
+    try:
+        yield
+    finally:
+        _RUN_RECORD.reset(token)
 
 #: index type of scalars
 SCALAR = "1"
@@ -32,9 +81,9 @@ class Dimension(se.Dummy):
     A dummy symbol: a symbol a claim creates with the same name is a different symbol."""
 
     def _refuse(self, *args: Any) -> Any:
-        raise NeedsCoordinates(f"using the dimension {self} as a number")
+        raise refuse(f"using the dimension {self} as a number")
 
-    __index__ = __int__ = __lt__ = __le__ = __gt__ = __ge__ = _refuse
+    __index__ = __int__ = __float__ = __complex__ = __lt__ = __le__ = __gt__ = __ge__ = _refuse
 
 
 #: dimension symbols: tr(I_n) = n, tr(I_r) = r
@@ -466,6 +515,12 @@ class NCPoly:
         return self.shape == o.shape and (self - o).is_zero_raw()
 
     __hash__ = None  # type: ignore[assignment]
+
+    def _refuse(self, *args: Any) -> Any:
+        """A block or a trace form is not a number: using one as a number is a refusal (recorded)."""
+        raise refuse("using a polynomial of the free algebra (a block or a trace form) as a number")
+
+    __index__ = __int__ = __float__ = __complex__ = __lt__ = __le__ = __gt__ = __ge__ = _refuse
 
     # -- printing -----------------------------------------------------------
     def _sorted_terms(self):

@@ -1,23 +1,23 @@
-"""1×1 block matrices of the dimension-free scene, without per-entry array machinery.
+"""The whole-matrix backend of the dimension-free field: one block without per-entry array machinery.
 
-Almost every matrix of a dimension-free claim is one block (X, P, A, Φ, a flow's
-components): a :class:`FreeMat` is a :class:`~stiefelsym.matrix.Mat` whose
-sums, products, transposes and scalings of two such blocks compute the one
-entry directly (the same arithmetic and the same normalization as the generic
-path, one entry instead of a loop over an object array).  The index spaces are
-unified exactly as :class:`~stiefelsym.matrix.Mat` does, with the same
-:class:`TypeError`; anything else (block matrices, another field, a matrix of
-another class) takes the generic path of ``Mat``.
+Almost every matrix of a dimension-free claim is one block (X, P, A, Φ, a flow's components).
+The matrices of the free scene are plain :class:`~stiefelsym.matrix.Mat`, of the same class as
+those of every other scene; their field brings this backend (``FreeField.native_backend``, the
+hook of :func:`stiefelsym.native._make`), so ``Mat`` runs its native path: the storage of a 1×1
+matrix is its entry itself (a word polynomial, a dual number over them, a scalar), and sums,
+products, transposes and scalings of such blocks compute the one entry directly, with the same
+arithmetic and the same normalization as the generic path of ``Mat``.  A block matrix (k×k
+blocks) is stored as a private numpy array of its entries and takes the generic arithmetic.
+Index spaces, shapes and the record of looks at coordinates stay ``Mat``'s.
 """
 from __future__ import annotations
 
-from fractions import Fraction
 from typing import Any
 
 import numpy as np
 
-from ..matrix import Mat, unify
-from .algebra import SYMENGINE_OPAQUE
+from ..matrix import Mat
+from ..native import Backend
 
 
 def _one(x: Any) -> np.ndarray:
@@ -26,87 +26,114 @@ def _one(x: Any) -> np.ndarray:
     return a
 
 
-def _entry(M: Mat) -> Any:
-    """The entry of a 1×1 FreeMat held as an object array, or None (then: the generic path)."""
-    a = M._obj
-    if a is None or a.shape != (1, 1):
-        return None
-    return a[0, 0]
+def _arr(s: Any) -> np.ndarray:
+    """A storage as an array (read-only use)."""
+    return s if type(s) is np.ndarray else _one(s)
 
 
-class FreeMat(Mat):
-    """A Mat of the free scene with a fast path for 1×1 operands of one field."""
+def _out(a: np.ndarray) -> Any:
+    """The storage of an array of entries (a 1×1 array is stored as its entry)."""
+    return a[0, 0] if a.shape == (1, 1) else a
 
-    __slots__ = ()
 
-    def _symengine_(self) -> Any:
-        """What symengine sees: an opaque symengine matrix, so that ``c * M`` with a symengine scalar
-        c comes to :meth:`__rmul__` at once (see :data:`~stiefelsym.free.algebra.SYMENGINE_OPAQUE`)."""
-        return SYMENGINE_OPAQUE
+class FreeBackend(Backend):
+    """The operations of :class:`Mat` on the storage described above, over a free field (or the
+    dual numbers over it): each one computes what the generic path computes."""
 
-    def _fast(self, o: Any) -> tuple[Any, Any] | None:
-        if type(o) is not FreeMat or o._field is not self._field:
-            return None
-        x, y = _entry(self), _entry(o)
-        if x is None or y is None:
-            return None
-        return x, y
+    def __init__(self, field: Any) -> None:
+        self.field = field
+        self._nf = field.normalize
 
-    def _made(self, x: Any, tags, o: "Mat | None" = None) -> "FreeMat":
-        tracker = self._tracker if self._tracker is not None else (o._tracker if o is not None else None)
-        coords = self._coords or (o is not None and o._coords)
-        return FreeMat._wrap(_one(self._field.normalize(x)), self._field, tags, tracker, coords)
+    # -- storage ---------------------------------------------------------------
+    def from_obj(self, a: np.ndarray) -> Any:
+        return a[0, 0] if a.shape == (1, 1) else a.copy()
 
-    def __add__(self, o):
-        pair = self._fast(o)
-        if pair is None:
-            return super().__add__(o)
-        t = self._tracker_of(o)
-        tags = (unify(self._tags[0], o._tags[0], "a sum", t), unify(self._tags[1], o._tags[1], "a sum", t))
-        return self._made(pair[0] + pair[1], tags, o)
+    def to_obj(self, s: Any) -> np.ndarray:
+        return s.copy() if type(s) is np.ndarray else _one(s)
 
-    def __sub__(self, o):
-        pair = self._fast(o)
-        if pair is None:
-            return super().__sub__(o)
-        t = self._tracker_of(o)
-        tags = (unify(self._tags[0], o._tags[0], "a difference", t),
-                unify(self._tags[1], o._tags[1], "a difference", t))
-        return self._made(pair[0] - pair[1], tags, o)
+    def shape(self, s: Any) -> tuple[int, int]:
+        return s.shape if type(s) is np.ndarray else (1, 1)
 
-    def __neg__(self):
-        x = _entry(self)
-        if x is None:
-            return super().__neg__()
-        return FreeMat._wrap(_one(-x), self._field, self._tags, self._tracker, self._coords)
+    def _norm(self, a: np.ndarray) -> Any:
+        nf = self._nf
+        out = np.empty(a.shape, dtype=object)
+        for idx, x in np.ndenumerate(a):
+            out[idx] = nf(x)
+        return _out(out)
 
-    def __matmul__(self, o):
-        pair = self._fast(o)
-        if pair is None:
-            return super().__matmul__(o)
-        unify(self._tags[1], o._tags[0], "a product", self._tracker_of(o))
-        return self._made(pair[0] * pair[1], (self._tags[0], o._tags[1]), o)
+    # -- arithmetic --------------------------------------------------------------
+    def add(self, a: Any, b: Any) -> Any:
+        if type(a) is not np.ndarray and type(b) is not np.ndarray:
+            return self._nf(a + b)
+        return self._norm(_arr(a) + _arr(b))
 
-    @property
-    def T(self) -> Mat:
-        x = _entry(self)
-        star = self._field.star
-        if x is None or star is None:
-            return Mat.T.fget(self)
-        return FreeMat._wrap(_one(star(x)), self._field, (self._tags[1], self._tags[0]), self._tracker,
-                             self._coords)
+    def sub(self, a: Any, b: Any) -> Any:
+        if type(a) is not np.ndarray and type(b) is not np.ndarray:
+            return self._nf(a - b)
+        return self._norm(_arr(a) - _arr(b))
 
-    def _scalar(self, c):
-        x = _entry(self)
-        if x is None or isinstance(c, (Mat, float)) or c.__class__ is bool:
-            return super()._scalar(c)
-        if type(c) is int or type(c) is Fraction:
-            c = self._field.const(c)
-        return FreeMat._wrap(_one(self._field.normalize(x * c)), self._field, self._tags, self._tracker,
-                             self._coords)
+    def neg(self, a: Any) -> Any:
+        return -a
 
-    def __mul__(self, c):
-        return self._scalar(c)
+    def matmul(self, a: Any, b: Any) -> Any:
+        if type(a) is not np.ndarray and type(b) is not np.ndarray:
+            return self._nf(a * b)
+        return self._norm(np.dot(_arr(a), _arr(b)))
 
-    def __rmul__(self, c):
-        return self._scalar(c)
+    def smul(self, a: Any, c: Any) -> Any:
+        if type(a) is not np.ndarray:
+            return self._nf(a * c)
+        nf = self._nf
+        out = np.empty(a.shape, dtype=object)
+        for idx, x in np.ndenumerate(a):
+            out[idx] = nf(x * c)
+        return out
+
+    def accepts(self, x: Any) -> bool:
+        return True
+
+    def T(self, a: Any) -> Any:
+        star = self.field.star
+        if type(a) is not np.ndarray:
+            return star(a)
+        out = a.T.copy()
+        for idx, x in np.ndenumerate(out):
+            out[idx] = star(x)
+        return out
+
+    def trace(self, a: Any) -> Any:
+        a = _arr(a)
+        acc = None
+        for i in range(a.shape[0]):
+            x = self.field.entry_trace(a[i, i])
+            acc = x if acc is None else acc + x
+        return self._nf(acc)
+
+    def inner(self, a: Any, b: Any) -> Any:
+        acc = self.field.const(0)
+        for x, y in zip(_arr(a).flat, _arr(b).flat):
+            acc = acc + x * y
+        return self._nf(acc)
+
+    def inv(self, a: Any) -> Any:
+        m = self.shape(a)[0]
+        ident = self.to_obj(self.identity(m))
+        return self.from_obj(np.array(self.field.solve(_arr(a).tolist(), ident.tolist()), dtype=object))
+
+    def is_zero(self, a: Any) -> bool:
+        if type(a) is not np.ndarray:
+            return self.field.is_zero(a)
+        return all(self.field.is_zero(x) for x in a.flat)
+
+
+def one_block(x: Any, field: Any, tags, tracker: Any) -> Mat:
+    """The 1×1 matrix of the entry x (engine door, no record)."""
+    return Mat._wrap_native(x, field, tags, tracker)
+
+
+def entry_of(M: Mat) -> Any:
+    """The entry of a 1×1 matrix (engine only)."""
+    s = M._n
+    if s is not None and type(s) is not np.ndarray:
+        return s
+    return M._view()[0, 0]

@@ -30,7 +30,7 @@ from typing import Iterable, Sequence
 import symengine as se
 
 from .algebra import (DIMENSIONS, SCALAR, Coef, Letter, NCPoly, Word, check_word, cycle_rep, merge_traces,
-                      min_rotation, star_word, trace, word_key, word_latex, word_str)
+                      min_rotation, record_refusal, star_word, trace, word_key, word_latex, word_str)
 
 
 class RewritingError(ValueError):
@@ -340,7 +340,9 @@ class RewritingSystem:
         if hit is not None:
             return hit
         if depth > self.max_depth:
-            raise RewritingError(f"reduction of {word_str(w)} does not terminate")
+            what = f"reduction of {word_str(w)} does not terminate"
+            record_refusal(what)   # a claim that catches it must not go on to a proof
+            raise RewritingError(what)
         found = self.find(w)
         if found is None:
             res = ({w: se.Integer(1)}, frozenset())
@@ -366,7 +368,9 @@ class RewritingSystem:
         if hit is not None:
             return hit
         if depth > self.max_depth:
-            raise RewritingError(f"cyclic reduction of tr({word_str(c)}) does not terminate")
+            what = f"cyclic reduction of tr({word_str(c)}) does not terminate"
+            record_refusal(what)
+            raise RewritingError(what)
         res = None
         for k in range(len(c)):
             rot = c[k:] + c[:k]

@@ -24,13 +24,30 @@ from ..fields import Dual, DualField, Field
 from ..matrix import CoordinateTracker, Mat, definite
 from ..scene import USER_SCALAR, Flow, PaperObjects, map_entries
 from .algebra import (DIMENSIONS, Letter, NCPoly, NeedsCoordinates, as_coef, coef_latex, derivation,
-                      letter_pair, skew_letter, substitute, symmetric_letter, trace)
-from .mat import FreeMat
+                      letter_pair, record_refusal, refuse, skew_letter, substitute, symmetric_letter, trace)
+from .mat import FreeBackend, entry_of, one_block
 from .rewriting import (Cofactor, Hypothesis, Order, Reduction, RewritingSystem, is_simplified, nonzero_terms,
                         simplify_coef)
 from .traces import gradient
 
 Function = Callable[[Any], Any]
+
+
+def _raw(x: Any) -> Any:
+    """The engine's value behind what claim code hands back (numbers it got wrapped from the
+    engine, in dicts, lists and tuples); anything else unchanged."""
+    global _UNWRAP
+    if _UNWRAP is None:
+        try:
+            from ..scalar import unwrap
+        except ImportError:   # no claim-facing number type: values are the engine's own
+            def unwrap(v: Any) -> Any:
+                return v
+        _UNWRAP = unwrap
+    return _UNWRAP(x)
+
+
+_UNWRAP: Callable[[Any], Any] | None = None
 
 X, Xt = letter_pair("X", "Xt", "n", "r", "X", "X^{T}")
 P, Pt = letter_pair("P", "Pt", "n", "r", "P", "P^{T}")
@@ -55,20 +72,20 @@ class FreeSize:
     It sizes identity and zero blocks and nothing else: comparing sizes, using one as a
     number, in arithmetic or as a loop bound needs coordinates (a fixed n, r)."""
 
-    __slots__ = ("kind", "k")
+    __slots__ = ("kind", "k", "_tracker")
 
-    def __init__(self, kind: str, k: int = 1) -> None:
-        self.kind, self.k = kind, k
+    def __init__(self, kind: str, k: int = 1, tracker: CoordinateTracker | None = None) -> None:
+        self.kind, self.k, self._tracker = kind, k, tracker
 
     def __mul__(self, c: Any) -> "FreeSize":
         if isinstance(c, int) and not isinstance(c, bool) and c >= 1:
-            return FreeSize(self.kind, self.k * c)
-        raise NeedsCoordinates(f"the size {self} in arithmetic")
+            return FreeSize(self.kind, self.k * c, self._tracker)
+        raise refuse(f"the size {self} in arithmetic", self._tracker)
 
     __rmul__ = __mul__
 
     def _refuse(self, *args: Any) -> Any:
-        raise NeedsCoordinates(f"using the size {self} as a number")
+        raise refuse(f"using the size {self} as a number", self._tracker)
 
     __eq__ = __ne__ = __lt__ = __le__ = __gt__ = __ge__ = _refuse
     __add__ = __radd__ = __sub__ = __rsub__ = __truediv__ = __floordiv__ = __rfloordiv__ = _refuse
@@ -213,14 +230,27 @@ class FreeField(Field):
 
     name = "free"
     exact = True
-    #: entries are blocks for every n, r: no coordinates (no entries, no shapes)
-    coordinates = False
 
-    def __init__(self, system: RewritingSystem, lazy: bool = False) -> None:
+    def __init__(self, system: RewritingSystem, lazy: bool = False,
+                 tracker: CoordinateTracker | None = None) -> None:
         self.system = system
         #: lazy: keep expressions as built (reduce only when asked), so that a residual can be
         #: shown before its reduction, with the rules that reduce it
         self.lazy = lazy
+        #: the record of the scene (refusals of the field are recorded there before they are raised)
+        self.tracker = tracker
+
+    @property
+    def coordinates(self) -> bool:
+        """Entries are blocks for every n, r: no coordinates (no entries, no shapes).  A matrix
+        asks this only when claim code wants its entries, a block or its shape, so the answer
+        is a refusal, recorded before the matrix raises it."""
+        record_refusal("an entry, a block or the shape of a matrix", self.tracker)
+        return False
+
+    def native_backend(self) -> FreeBackend:
+        """The whole-matrix backend (:mod:`.mat`): the matrices stay :class:`Mat`."""
+        return FreeBackend(self)
 
     def const(self, q: int | Fraction) -> Any:
         return as_coef(Fraction(q))
@@ -254,16 +284,22 @@ class FreeField(Field):
         return x.latex() if isinstance(x, NCPoly) else str(x)
 
     def solve(self, M, B):
-        raise NeedsCoordinates("solving a linear system entrywise")
+        raise refuse("solving a linear system entrywise", self.tracker)
 
     def rank(self, M):
-        raise NeedsCoordinates("a rank")
+        raise refuse("a rank", self.tracker)
 
 
 class FreeDualField(DualField):
     """a + bε over the free field, with the involution and the trace."""
 
-    coordinates = False
+    @property
+    def coordinates(self) -> bool:
+        record_refusal("an entry, a block or the shape of a matrix", self.base.tracker)
+        return False
+
+    def native_backend(self) -> FreeBackend:
+        return FreeBackend(self)
 
     def star(self, x: Any) -> Any:
         x = self.lift(x)
@@ -274,10 +310,10 @@ class FreeDualField(DualField):
         return Dual(self.base.entry_trace(x.a), self.base.entry_trace(x.b))
 
     def solve(self, M, B):
-        raise NeedsCoordinates("solving a linear system entrywise")
+        raise refuse("solving a linear system entrywise", self.base.tracker)
 
     def rank(self, M):
-        raise NeedsCoordinates("a rank")
+        raise refuse("a rank", self.base.tracker)
 
 
 # ---------------------------------------------------------------------------
@@ -293,8 +329,8 @@ class FreeScene(PaperObjects):
             raise NeedsCoordinates(f"the {realization!r} realization of T*V (its multipliers solve a "
                                    "Sylvester equation)")
         self.system = system if system is not None else standard_system()
-        self._field: Field = FreeField(self.system, lazy)
         self._tracker = tracker if tracker is not None else CoordinateTracker()
+        self._field: Field = FreeField(self.system, lazy, self._tracker)
         self.options: dict[str, Any] = {}
         self.params: dict[str, Any] = {}
         self._cache: dict[str, Any] = {}
@@ -310,7 +346,7 @@ class FreeScene(PaperObjects):
         from ..scene import Scene
 
         if not name.startswith("__") and hasattr(Scene, name):
-            raise NeedsCoordinates(f"Scene.{name}")
+            raise refuse(f"Scene.{name}", self.__dict__.get("_tracker"))
         raise AttributeError(name)
 
     # -- primitives -----------------------------------------------------------
@@ -321,7 +357,7 @@ class FreeScene(PaperObjects):
 
     def _prim(self, key: str, poly: NCPoly) -> Mat:
         """The 1×1 matrix holding a primitive letter (overridden by the tangent scene)."""
-        return FreeMat._rows([[poly]], self.field, poly.shape, self.tracker)
+        return one_block(poly, self.field, poly.shape, self.tracker)
 
     def _letter(self, L: Letter) -> Mat:
         key = "letter:" + L
@@ -334,12 +370,12 @@ class FreeScene(PaperObjects):
     @property
     def n(self) -> "FreeSize":
         """The size n: good for sizing blocks (s.zeros(s.n, s.r), 2 * s.r), nothing else."""
-        return FreeSize("n")
+        return FreeSize("n", 1, self._tracker)
 
     @property
     def r(self) -> "FreeSize":
         """The size r: good for sizing blocks, nothing else."""
-        return FreeSize("r")
+        return FreeSize("r", 1, self._tracker)
 
     @property
     def X(self) -> Mat:
@@ -392,10 +428,10 @@ class FreeScene(PaperObjects):
 
     @property
     def a(self) -> Any:
-        raise NeedsCoordinates("the eigenvalues a_i of A")
+        raise refuse("the eigenvalues a_i of A", self.tracker)
 
     def sym_operator(self, name: str = "AA") -> Any:
-        raise NeedsCoordinates("a generic symmetric operator on so(n)")
+        raise refuse("a generic symmetric operator on so(n)", self.tracker)
 
     def generic(self, name: str, m: str, k: str) -> Mat:
         """A generic m×k matrix (m, k in {"n", "r"}): a free letter G with transpose G^T."""
@@ -453,7 +489,7 @@ class FreeScene(PaperObjects):
         elif atoms and len(set(atoms)) == 1:
             t, k = atoms[0], len(atoms)
         else:
-            raise NeedsCoordinates(f"a matrix of size {m!r} (index space {tag!r})")
+            raise refuse(f"a matrix of size {m!r} (index space {tag!r})", self.tracker)
         if atoms is not None and atoms != (t,) * k:
             raise TypeError(f"the size {k if k > 1 else ''}{t} does not match the index space {tag!r}")
         return t, k
@@ -464,9 +500,10 @@ class FreeScene(PaperObjects):
 
     def scalar_matrix(self, c: Any, m: Any, tag: str | None = None) -> Mat:
         """c·I_m for m = n, r (or k·n, k·r: a k×k block diagonal)."""
+        c = _raw(c)
         t, k = self._blocks(m, tag)
         blocks = [[(_i(t) * c if i == j else NCPoly.zero(t, t)) for j in range(k)] for i in range(k)]
-        return FreeMat._rows(blocks, self.field, (self._tag(t, k, tag),) * 2, self.tracker)
+        return Mat._rows(blocks, self.field, (self._tag(t, k, tag),) * 2, self.tracker)
 
     def identity(self, m: Any, tag: str | None = None) -> Mat:
         return self.scalar_matrix(1, m, tag)
@@ -475,7 +512,7 @@ class FreeScene(PaperObjects):
         t1, k1 = self._blocks(m, tags[0])
         t2, k2 = self._blocks(k, tags[1])
         rows = [[NCPoly.zero(t1, t2) for _ in range(k2)] for _ in range(k1)]
-        return FreeMat._rows(rows, self.field, (self._tag(t1, k1, tags[0]), self._tag(t2, k2, tags[1])), self.tracker)
+        return Mat._rows(rows, self.field, (self._tag(t1, k1, tags[0]), self._tag(t2, k2, tags[1])), self.tracker)
 
     def mat(self, rows, tags=("?", "?")) -> Mat:
         """A block matrix from rows of blocks (word polynomials of the scene); its spaces are the
@@ -486,7 +523,7 @@ class FreeScene(PaperObjects):
         for row in rows:
             for x in row:
                 if type(x) is not NCPoly:
-                    raise NeedsCoordinates("a matrix built from scalar entries")
+                    raise refuse("a matrix built from scalar entries", self.tracker)
         row_types = [row[0].row for row in rows]
         col_types = [x.col for x in rows[0]]
         for row, t in zip(rows, row_types):
@@ -497,7 +534,7 @@ class FreeScene(PaperObjects):
         for given, built in zip(tags, spaces):
             if given not in ("?", None) and definite(given) != definite(built):
                 raise TypeError(f"the blocks span {built}, not {given!r}")
-        return FreeMat._rows(rows, self.field, spaces, self.tracker)
+        return Mat._rows(rows, self.field, spaces, self.tracker)
 
     @property
     def In(self) -> Mat:
@@ -508,25 +545,26 @@ class FreeScene(PaperObjects):
         return self._cached("Ir", lambda: self._const_mat(_i("r")))
 
     def _const_mat(self, p: NCPoly) -> Mat:
-        return FreeMat._rows([[p]], self.field, p.shape, self.tracker)
+        return one_block(p, self.field, p.shape, self.tracker)
 
     def tr(self, M: Any) -> Any:
         if isinstance(M, Mat):
             return M.trace()
+        M = _raw(M)
         return self.field.normalize(self.field.entry_trace(M))
 
     def resolvent(self, mu: Any) -> Mat:
         """(mu I_n − A)^{-1} as a letter R_mu with A R = R A = mu R − I."""
-        R = add_resolvent(self.system, mu, self._resolvents, ainv="ainv" in self._extras)
+        R = add_resolvent(self.system, _raw(mu), self._resolvents, ainv="ainv" in self._extras)
         return self._letter(R)
 
     # -- flows ------------------------------------------------------------------
     def _hamiltonian(self, H: Function) -> NCPoly:
-        value = H(self)
+        value = _raw(H(self))
         if isinstance(value, Mat):
-            if value._a.shape != (1, 1):
+            if value._shape() != (1, 1):
                 raise TypeError("a Hamiltonian must be a scalar")
-            value = value._a[0, 0]
+            value = entry_of(value)
         if not isinstance(value, NCPoly):
             c = as_coef(value)
             if c is None:
@@ -538,7 +576,7 @@ class FreeScene(PaperObjects):
 
     def gradient(self, H: Function) -> tuple[Mat, Mat]:
         """Ambient gradients depend on H off T*V: not offered (see _gradient)."""
-        raise NeedsCoordinates("the ambient gradient of H, which depends on H off T*V")
+        raise refuse("the ambient gradient of H, which depends on H off T*V", self.tracker)
 
     def _gradient(self, H: Function) -> tuple[Mat, Mat]:
         """(∂H/∂X, ∂H/∂P) of the trace form H, as reduced by the scene's arithmetic.
@@ -559,7 +597,7 @@ class FreeScene(PaperObjects):
 
     def canonical_flow(self, H: Function) -> Flow:
         """Ambient quantities depend on H off T*V, which the reduced trace form has lost."""
-        raise NeedsCoordinates("the ambient (canonical) flow, which depends on H off T*V")
+        raise refuse("the ambient (canonical) flow, which depends on H off T*V", self.tracker)
 
     def dirac_flow(self, H: Function) -> Flow:
         """(dot_XP): Ẋ = H_P − XΠ, Ṗ = −H_X + XΛ + PΠ with Π, Λ solved in the free algebra."""
@@ -570,10 +608,10 @@ class FreeScene(PaperObjects):
 
     def multiplier_flow(self, H: Function) -> Flow:
         """The multipliers Λ, Π depend on H off T*V, which the reduced trace form has lost."""
-        raise NeedsCoordinates("the Lagrange multipliers, which depend on H off T*V")
+        raise refuse("the Lagrange multipliers, which depend on H off T*V", self.tracker)
 
     def _multiplier_flow(self, H: Function) -> Flow:
-        HX, HP = (m._a[0, 0] for m in self._gradient(H))
+        HX, HP = (entry_of(m) for m in self._gradient(H))
         nf = self.system.normal_form
         x, p = _w(X), _w(P)
         Pi, Lam = _w(PI), _w(LAMBDA)
@@ -581,7 +619,11 @@ class FreeScene(PaperObjects):
         Pd = -HX + x * Lam + p * Pi
         eq_XX = nf(Xd.star() * x + x.star() * Xd)
         eq_XP = nf(Xd.star() * p + x.star() * Pd + Pd.star() * x + p.star() * Xd)
-        solved = solve_multipliers([eq_XX, eq_XP], [PI, LAMBDA], self.system)
+        try:
+            solved = solve_multipliers([eq_XX, eq_XP], [PI, LAMBDA], self.system)
+        except FreeSolveError as exc:   # a refusal too: recorded before it reaches claim code
+            record_refusal(f"the Lagrange multipliers of a Hamiltonian ({exc})", self.tracker)
+            raise
         Xd, Pd = (nf(substitute(v, solved)) for v in (Xd, Pd))
         return Flow(self._const_mat(Xd), self._const_mat(Pd),
                     multipliers={"Pi": self._const_mat(solved[PI]), "Lambda": self._const_mat(solved[LAMBDA])})
@@ -602,7 +644,7 @@ class FreeScene(PaperObjects):
         T*V, which is checked (ValueError otherwise)."""
         tangent = flow.tangent() if isinstance(flow, Flow) else dict(flow)
         if callable(F):
-            return _map_value(F(self.tangent(tangent)), self)
+            return _map_value(_raw(F(self.tangent(tangent))), self)
         images = self._tangent_images(tangent)
         nf = self.field.normalize   # lazy: the derivative as computed, reduced with the residual
         return map_entries(F, lambda x: nf(derivation(x, images)) if isinstance(x, NCPoly)
@@ -613,7 +655,7 @@ class FreeScene(PaperObjects):
         for key, v in tangent.items():
             if key not in MOVABLE or key not in self._named:
                 raise KeyError(f"the flow moves {key!r}, which is not a letter of this scene")
-            images[self._named[key]] = v._a[0, 0] if isinstance(v, Mat) else v
+            images[self._named[key]] = entry_of(v) if isinstance(v, Mat) else v
         relations = [(_w(Xt, X), COND_XX), (_w(Xt, P) + _w(Pt, X), COND_XP)]
         if "second" in self._extras:
             relations += [(_w(Yt, Y), "Y^T Y = I_r"), (_w(Yt, Q) + _w(Qt, Y), "Y^T Q + Q^T Y = 0")]
@@ -625,7 +667,7 @@ class FreeScene(PaperObjects):
 
     def canonical_bracket(self, F: Function, G: Function) -> Any:
         """The ambient bracket depends on F, G off T*V, which the reduced trace forms have lost."""
-        raise NeedsCoordinates("the ambient bracket {F, G}_0, which depends on F, G off T*V")
+        raise refuse("the ambient bracket {F, G}_0, which depends on F, G off T*V", self.tracker)
 
     def bracket(self, F: Function, G: Function) -> Any:
         """The Dirac bracket {F, G} = derivative of F along the Dirac flow of G."""
@@ -654,13 +696,13 @@ class FreeTangentScene(FreeScene):
         if dot is None:
             b = NCPoly.zero(poly.row, poly.col)
         else:
-            b = dot._a[0, 0] if isinstance(dot, Mat) else dot
+            b = entry_of(dot) if isinstance(dot, Mat) else dot
             if not isinstance(b, NCPoly) or b.shape != poly.shape:
                 raise TypeError(f"the flow's {key}-component must be a {poly.row}×{poly.col} polynomial")
-        return FreeMat._rows([[Dual(poly, b)]], self.field, poly.shape, self.tracker)
+        return one_block(Dual(poly, b), self.field, poly.shape, self.tracker)
 
     def _const_mat(self, p: NCPoly) -> Mat:
-        return FreeMat._rows([[Dual(p, NCPoly.zero(p.row, p.col))]], self.field, p.shape, self.tracker)
+        return one_block(Dual(p, NCPoly.zero(p.row, p.col)), self.field, p.shape, self.tracker)
 
     def scalar_matrix(self, c: Any, m: Any, tag: str | None = None) -> Mat:
         M = self.base.scalar_matrix(c, m, tag)
@@ -674,10 +716,10 @@ class FreeTangentScene(FreeScene):
 
 
 def _lift_mat(M: Mat, field: Field) -> Mat:
-    a = np.empty(M._a.shape, dtype=object)
-    for idx, x in np.ndenumerate(M._a):
+    a = np.empty(M._shape(), dtype=object)
+    for idx, x in np.ndenumerate(M._view()):
         a[idx] = Dual(x, NCPoly.zero(x.row, x.col) if isinstance(x, NCPoly) else se.Integer(0))
-    return FreeMat._wrap(a, field, M.tags, M.tracker)
+    return Mat._wrap(a, field, M.tags, M.tracker)
 
 
 def _map_value(v: Any, scene: FreeScene) -> Any:

@@ -1,0 +1,101 @@
+"""Soundness of the dimension-free method: no way around its refusals, no way to tell it apart.
+
+A claim that catches a refusal of the free scene (an entry, a block, a size or a trace form used
+as a number, an object that needs coordinates) and returns something that vanishes there, while
+every fixed size sees something else, must not be "proved for all n, r": every refusal is
+recorded in the run's record before it is raised, and the free method gives no proof when the
+record holds one.  And the matrices of the free scene are of the one class ``Mat``.
+"""
+from __future__ import annotations
+
+import pytest
+
+from stiefelsym.claims import Claim, admissible
+from stiefelsym.free import FreeScene
+from stiefelsym.free.algebra import recording, refusals
+from stiefelsym.matrix import Mat
+from stiefelsym.runner import run_one
+
+
+def _free(func):
+    claim = Claim(id="free-trick", paper=("t",), kind="id", section="t", func=func, sizes=admissible(4))
+    return run_one(claim, None, "free", 0)
+
+
+def _tricked(touch):
+    """A claim that is false at every size but would vanish on the free scene if the refusal of
+    ``touch`` could be caught and forgotten."""
+    def func(s):
+        try:
+            touch(s)
+        except Exception:   # noqa: BLE001 - the trick: swallow whatever the free scene raises
+            return {"r": s.X - s.X}
+        return {"r": s.X}
+    return func
+
+
+TRICKS = {
+    "an entry": lambda s: s.X[0, 0],
+    "a block": lambda s: s.A[0:1, :],
+    "a shape": lambda s: s.X.shape,
+    "the size n as a number": lambda s: int(s.n),
+    "sizes compared": lambda s: s.n == s.r,
+    "a size in arithmetic": lambda s: s.r + 1,
+    "a matrix of a numeric size": lambda s: s.zeros(2, 2),
+    "the dimension r as a number": lambda s: int(s.tr(s.Ir)),
+    "a trace form compared": lambda s: s.tr(s.X.T @ s.P) < 0,
+    "an inverse": lambda s: s.A.inv(),
+    "the eigenvalues of A": lambda s: s.a,
+    "a coordinate-scene method": lambda s: s.jacobian,
+    "the ambient gradient": lambda s: s.gradient(lambda t: t.tr(t.P.T @ t.P)),
+    "the Lagrange multipliers": lambda s: s.multiplier_flow(lambda t: t.tr(t.P.T @ t.P)),
+}
+
+
+@pytest.mark.parametrize("name", sorted(TRICKS))
+def test_a_caught_refusal_is_never_a_proof(name):
+    res = _free(_tricked(TRICKS[name]))
+    assert res.verdict == "undecided", (name, res.verdict, res.message)
+    assert "needs coordinates" in res.message and "touched" in res.message, res.message
+
+
+def test_the_untricked_claim_is_still_proved_and_the_false_one_open():
+    assert _free(lambda s: {"r": s.X - s.X}).verdict == "proved"
+    assert _free(lambda s: {"r": s.X}).verdict == "undecided"
+
+
+@pytest.mark.parametrize("name", sorted(TRICKS))
+def test_a_refusal_is_recorded_before_it_is_raised(name):
+    """In the scene's record (or, for the objects every run shares -- the dimension symbols, trace
+    forms, the rewriting system -- in the record of the run in progress)."""
+    s = FreeScene(lazy=True)
+    with recording(s.tracker):
+        with pytest.raises(Exception):   # noqa: PT011 - the refusal itself, or the claim-facing guard's
+            TRICKS[name](s)
+    assert refusals(s.tracker), name
+
+
+def test_a_refusal_in_the_dual_scene_of_a_flow_is_recorded_too():
+    def func(s):
+        def F(t):
+            try:
+                t.X[0, 0]
+            except Exception:   # noqa: BLE001
+                return t.X - t.X
+            return t.X
+        return {"r": s.d(F, {"X": s.P, "P": -(s.A @ s.X)})}
+    res = _free(func)
+    assert res.verdict == "undecided" and "touched" in res.message, res.message
+
+
+def test_the_matrices_of_the_free_scene_are_of_the_one_class_Mat():
+    s = FreeScene(lazy=True)
+    k = 1 + 2 * s.kappa
+    values = [s.X, s.P, s.A, s.Phi, s.X @ s.P.T, -(s.A @ s.X), (s.X @ s.P.T @ s.X) * k, s.X / s.lam,
+              s.resolvent(s.lam), s.identity(s.n), s.zeros(s.n, s.r), s.scalar_matrix(s.lam, 2 * s.r)]
+    t = s.tangent({"X": s.P, "P": -(s.A @ s.X)})
+    values += [t.X, t.X @ t.P.T - t.P @ t.X.T]
+    flow = s.dirac_flow(lambda u: u.tr(u.P.T @ u.P))
+    values += [flow.Xdot, flow.Pdot, s.d(s.Phi, flow)]
+    for M in values:
+        assert type(M) is Mat, type(M)
