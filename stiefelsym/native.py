@@ -221,12 +221,21 @@ class RationalBackend(_FlintBackend):
 # ----------------------------------------------------------------------------- float64
 class F64:
     """A float64 matrix v with a normwise error bound e (a float: the Frobenius norm of the error,
-    hence a bound on every entry's error) and entrywise term scales m."""
+    hence a bound on every entry's error) and entrywise term scales m.
 
-    __slots__ = ("v", "e", "m")
+    No operation writes into v or m (each makes new arrays, a transpose is a view), so an F64
+    never changes once built, and the backend keeps what it learns about one: ``nv``, the bound
+    on ‖v‖_F once computed; ``t``, its transpose; ``prods``, the products it was the left factor
+    of ({id(right factor): (right factor, product)}: the same two matrices are never multiplied
+    twice); ``diag``, its diagonal (values, term scales) when it is diagonal by construction;
+    ``sel``, (rows, signs) when every column j is signs[j] times the unit vector of rows[j]
+    (signs[j] = 0: a zero column)."""
 
-    def __init__(self, v: np.ndarray, e: float, m: np.ndarray) -> None:
-        self.v, self.e, self.m = v, e, m
+    __slots__ = ("v", "e", "m", "nv", "t", "prods", "diag", "sel")
+
+    def __init__(self, v: np.ndarray, e: float, m: np.ndarray, nv: float | None = None) -> None:
+        self.v, self.e, self.m, self.nv = v, e, m, nv
+        self.t = self.prods = self.diag = self.sel = None
 
 
 def _gamma(k: int) -> float:
@@ -242,10 +251,36 @@ def _up(x: float, k: int) -> float:
     return x * (1.0 + _gamma(k + 4))
 
 
+#: below this sum of squares, squares that fell under the normal range could matter: rescale
+_SQUARES_TINY = 2.0**-900
+
+
 def _fro(x: np.ndarray) -> float:
-    """An upper bound on the Frobenius norm of x (inf on overflow)."""
+    """An upper bound on the Frobenius norm of x (inf on overflow): one BLAS dot product of x with
+    itself, whose rounding in any order of summation is within γ_N of the sum of the squares, plus
+    at most 2⁻¹⁰⁷⁵ per operation where a square or a partial sum falls below the normal range;
+    relative to a sum of squares above 2⁻⁹⁰⁰ that is far inside the padding of γ, and below it
+    the dot product is redone on x scaled by a power of two (exactly) to the size of 1."""
+    f = x.ravel(order="K")
     with np.errstate(all="ignore"):
-        return float(np.sqrt(np.sum(x * x))) * (1.0 + _gamma(x.size + 4))
+        s = float(np.dot(f, f))
+        if not s < _SQUARES_TINY:               # normal size, inf or nan
+            return math.sqrt(s) * (1.0 + _gamma(f.size + 4))
+        mx = float(np.max(np.abs(f))) if f.size else 0.0
+        if mx == 0.0:
+            return 0.0
+        k = math.frexp(mx)[1]
+        g = np.ldexp(f, -k)                      # exact: the largest entry becomes [1/2, 1)
+        s = float(np.dot(g, g))
+    return math.nextafter(math.ldexp(math.sqrt(s) * (1.0 + _gamma(f.size + 4)), k), math.inf)
+
+
+def _norm(a: F64) -> float:
+    """The bound on ‖a.v‖_F, computed once per matrix."""
+    nv = a.nv
+    if nv is None:
+        nv = a.nv = _fro(a.v)
+    return nv
 
 
 def _uf(shape) -> float:
@@ -257,7 +292,15 @@ class Float64Backend(Backend):
     """float64 matrices with a sound first-order normwise error bound (the Frobenius norm of the
     error of every operation: Higham's γ_k bounds with ‖|A||B|‖_F ≤ ‖A‖_F ‖B‖_F, propagated
     errors by the triangle inequality) and a residual-checked inverse; numpy/BLAS does the
-    arithmetic, one product per product (and one more for the term scales)."""
+    arithmetic, one product per product (and one more for the term scales).
+
+    The bound of an operation depends only on the bounds, norms and shapes of its operands, never
+    on how the values were computed, so the backend computes them as cheaply as it can: a product
+    already computed (or its transpose: AB = (BᵀAᵀ)ᵀ, a transpose keeps the norm and the bound) is
+    not computed again; a product with a diagonal matrix scales rows or columns, a product with a
+    signed selection (the constant [D; 0] of the Cayley chart) takes columns, each with one
+    rounding at most where a BLAS product would sum k terms, so the dot-product bound γ_k covers
+    them as it covers BLAS."""
 
     def __init__(self, field) -> None:
         self.field = field
@@ -273,7 +316,10 @@ class Float64Backend(Backend):
     def from_consts(self, a):
         if np.max(np.abs(a), initial=0) >= 2**53:
             return Backend.from_consts(self, a)
-        return self.from_array(a)
+        out = self.from_array(a)
+        if a.ndim == 2 and a.size and np.max(np.abs(a)) <= 1 and np.all(np.count_nonzero(a, axis=0) <= 1):
+            out.sel = (np.argmax(a != 0, axis=0), out.v[np.argmax(a != 0, axis=0), np.arange(a.shape[1])].copy())
+        return out
 
     def from_obj(self, a):
         m, k = a.shape
@@ -295,10 +341,15 @@ class Float64Backend(Backend):
         return s.v.shape
 
     def zeros(self, m, k):
-        return F64(np.zeros((m, k)), 0.0, np.zeros((m, k)))
+        out = F64(np.zeros((m, k)), 0.0, np.zeros((m, k)), 0.0)
+        out.sel = (np.zeros(k, dtype=np.intp), np.zeros(k))
+        return out
 
     def identity(self, m):
-        return F64(np.eye(m), 0.0, np.eye(m))
+        out = F64(np.eye(m), 0.0, np.eye(m))
+        out.diag = (np.ones(m), np.ones(m))
+        out.sel = (np.arange(m), np.ones(m))
+        return out
 
     def sparse(self, m, k, entries):
         if not all(type(x) is ErrNum for x in entries.values()):
@@ -312,41 +363,78 @@ class Float64Backend(Backend):
     def diag(self, xs):
         if not all(type(x) is ErrNum for x in xs):
             return Backend.diag(self, xs)
-        return F64(np.diag([float(x.v) for x in xs]), _fro(np.array([float(x.e) for x in xs])),
-                   np.diag([float(x.m) for x in xs]))
+        dv = np.array([float(x.v) for x in xs])
+        dm = np.array([float(x.m) for x in xs])
+        out = F64(np.diag(dv), _fro(np.array([float(x.e) for x in xs])), np.diag(dm))
+        out.diag = (dv, dm)
+        return out
 
     def add(self, a, b):
         with np.errstate(all="ignore"):
             v = a.v + b.v
-            return F64(v, _up(a.e + b.e + U64 * _fro(v) + _uf(v.shape), 3), a.m + b.m)
+            nv = _fro(v)
+            return F64(v, _up(a.e + b.e + U64 * nv + _uf(v.shape), 3), a.m + b.m, nv)
 
     def sub(self, a, b):
         with np.errstate(all="ignore"):
             v = a.v - b.v
-            return F64(v, _up(a.e + b.e + U64 * _fro(v) + _uf(v.shape), 3), a.m + b.m)
+            nv = _fro(v)
+            return F64(v, _up(a.e + b.e + U64 * nv + _uf(v.shape), 3), a.m + b.m, nv)
 
     def neg(self, a):
-        return F64(-a.v, a.e, a.m)
+        return F64(-a.v, a.e, a.m, a.nv)
 
     def matmul(self, a, b):
         k = a.v.shape[1]
         if k == 0:
             return self.zeros(a.v.shape[0], b.v.shape[1])
+        prods = a.prods
+        if prods is None:
+            prods = a.prods = {}
+        hit = prods.get(id(b))
+        if hit is not None:
+            return hit[1]
+        at, bt = a.t, b.t
+        if at is not None and bt is not None and bt.prods is not None:
+            hit = bt.prods.get(id(at))
+            if hit is not None:                      # a b = (bᵀ aᵀ)ᵀ, computed already
+                out = self.T(hit[1])
+                prods[id(b)] = (b, out)
+                return out
         with np.errstate(all="ignore"):
-            v = a.v @ b.v
-            na, nb = _fro(a.v), _fro(b.v)
+            if a.diag is not None:
+                dv, dm = a.diag
+                v, m = dv[:, None] * b.v, dm[:, None] * b.m
+            elif b.diag is not None:
+                dv, dm = b.diag
+                v, m = a.v * dv, a.m * dm
+            elif b.sel is not None:
+                rows, signs = b.sel
+                v, m = a.v[:, rows] * signs, a.m[:, rows] * np.abs(signs)
+            else:
+                v, m = a.v @ b.v, a.m @ b.m
+            na, nb = _norm(a), _norm(b)
             e = na * b.e + a.e * nb + a.e * b.e + _gamma(k) * na * nb + k * _uf(v.shape)
-            return F64(v, _up(e, 8), a.m @ b.m)
+            out = F64(v, _up(e, 8), m)
+        prods[id(b)] = (b, out)
+        return out
 
     def smul(self, a, c):
         cv, ce, cm = float(c.v), float(c.e), float(c.m)
         with np.errstate(all="ignore"):
             v = a.v * cv
-            e = _fro(a.v) * ce + a.e * abs(cv) + a.e * ce + U64 * _fro(v) + _uf(v.shape)
-            return F64(v, _up(e, 6), a.m * cm)
+            nv = _fro(v)
+            e = _norm(a) * ce + a.e * abs(cv) + a.e * ce + U64 * nv + _uf(v.shape)
+            return F64(v, _up(e, 6), a.m * cm, nv)
 
     def T(self, a):
-        return F64(a.v.T.copy(), a.e, a.m.T.copy())
+        t = a.t
+        if t is None:
+            t = a.t = F64(a.v.T, a.e, a.m.T, a.nv)
+            t.t = a
+            if a.diag is not None:
+                t.diag = a.diag
+        return t
 
     def trace(self, a):
         d = np.diag(a.v)
@@ -374,18 +462,18 @@ class Float64Backend(Backend):
                 raise DegenerateError("a matrix indistinguishable from a singular one")
             zf = _fro(Z)
             R = np.eye(m) - a.v @ Z
-            rho = _up(_fro(R) + _gamma(m + 1) * (_fro(a.v) * zf + math.sqrt(m)) + a.e * zf + (m + 1) * _uf((m, m)), 8)
+            rho = _up(_fro(R) + _gamma(m + 1) * (_norm(a) * zf + math.sqrt(m)) + a.e * zf + (m + 1) * _uf((m, m)), 8)
             if not rho < 1.0:
                 raise DegenerateError("a matrix too close to singular for a float64 inverse bound")
             bound = zf * rho / (1.0 - rho) * (1.0 + 8 * U64)
-            return F64(Z, bound, np.abs(Z) + bound)
+            return F64(Z, bound, np.abs(Z) + bound, zf)
 
     def inner(self, a, b):
         """sum_ij a_ij b_ij with the dot-product bound."""
         k = a.v.size
         with np.errstate(all="ignore"):
             v = float(np.sum(a.v * b.v))
-            na, nb = _fro(a.v), _fro(b.v)
+            na, nb = _norm(a), _norm(b)
             e = na * b.e + a.e * nb + a.e * b.e + _gamma(k) * na * nb + k * FLOAT_UNDERFLOW
             e = _up(e, 8)
             m = float(np.sum(a.m * b.m))
@@ -453,6 +541,22 @@ class DegreeBackend(Backend):
     def from_array(self, a):
         """A block of parameters: every entry is bounded by one parameter's marker."""
         return DegMat(a.shape, self.field.param("", None))
+
+    def from_consts(self, a):
+        """The marker :meth:`from_obj` gives the constants, from the nonzero entries only (a zero
+        marker adds nothing), in the same order."""
+        acc = Deg(-1, None, self.field)
+        flat = a.ravel()
+        for i in np.flatnonzero(flat).tolist():
+            acc = acc + self.field.const(int(flat[i]))
+        return DegMat(a.shape, acc)
+
+    def diag(self, xs):
+        """The marker :meth:`from_obj` gives the diagonal matrix (its zeros add nothing)."""
+        acc = Deg(-1, None, self.field)
+        for x in xs:
+            acc = acc + self._lift(x)
+        return DegMat((len(xs), len(xs)), acc)
 
     def shape(self, s):
         return s.shape

@@ -2,6 +2,7 @@
 elements), and reverse-mode gradients against forward mode."""
 from __future__ import annotations
 
+import math
 import random
 from fractions import Fraction
 
@@ -292,3 +293,73 @@ def test_term_scales_of_a_float_solve_stay_the_size_of_the_solution():
         s = Scene(16, 2, FloatField(30), rng=random.Random(0))
         for x in s.X._view().flat:          # |X_ij| <= 1: its terms stay of that size
             assert x.m <= 10
+
+
+def structured_ops(F, rng):
+    """Products the float64 backend computes without a full BLAS product: with a diagonal matrix
+    on either side, with a signed selection of columns (the Cayley chart's [D; 0]), with zeros
+    and the identity, a product met twice and one met as its transpose."""
+    be = native.backend(F)
+    xs = [F.param("d", rng) for _ in range(4)]
+    if be is not None:
+        D = Mat._wrap_native(be.diag(xs), F)
+    else:                 # the exact replay (generic representation)
+        D = Mat._rows([[xs[i] if i == j else F.const(0) for j in range(4)] for i in range(4)], F)
+    J = Mat._consts(np.array([[1, 0, 0], [0, 0, 0], [0, -1, 0], [0, 0, 0]]), F)
+    B, C = rand_mat(F, 4, 4, rng), rand_mat(F, 4, 3, rng)
+    BC = B @ C
+    out = [D @ B @ J, B @ D, (B - D) @ J, BC, C.T @ B.T, B @ C, BC.T @ (B @ C),
+           Mat.zeros(4, 4, F) @ B, B @ Mat.identity(4, F), Mat.identity(4, F) @ B, D.T @ B]
+    return out
+
+
+def test_float64_structured_and_repeated_products_keep_the_bound():
+    """Each of these products lies within its bound of the exact rational value, and a product
+    met again (or as its transpose) is the stored one, not a new computation."""
+    for seed in range(4):
+        F = FloatField()
+        out = structured_ops(F, random.Random(seed))
+
+        class Replay(RationalField):
+            def param(self, name, r):
+                x = F.param(name, r)
+                return flint.fmpq(*Fraction(x.v).as_integer_ratio())
+        exact = structured_ops(Replay(), random.Random(seed))
+        for M, Mq in zip(out, exact):
+            assert M._n is not None
+            for row, rowq in zip(entries(M), entries(Mq)):
+                for x, q in zip(row, rowq):
+                    assert abs(Fraction(x.v) - Fraction(int(q.p), int(q.q))) <= Fraction(x.e)
+                    assert x.m >= abs(x.v)
+        assert out[5]._n is out[3]._n                  # B @ C again
+        assert out[4]._n is out[3]._n.t                # (B C)^T from the stored B C
+
+
+def test_float64_structured_products_equal_full_products():
+    """Diagonal, selection, zero and identity products give the values and scales of the full
+    BLAS product (up to the sign of zeros), with the same bound."""
+    rng = np.random.default_rng(0)
+    F = FloatField()
+    be = native.backend(F)
+    a = be.from_array(rng.standard_normal((5, 5)))
+    d = be.diag([F.param("d", random.Random(k)) for k in range(5)])
+    J = be.from_consts(np.array([[0, 1], [0, 0], [-1, 0], [0, 0], [0, 0]]))
+    assert d.diag is not None and J.sel is not None
+    for x, y in ((d, a), (a, d), (a, J), (be.zeros(5, 5), a), (a, be.identity(5))):
+        s = be.matmul(x, y)
+        full_v, full_m = x.v @ y.v, x.m @ y.m
+        assert np.array_equal(s.v, full_v) and np.allclose(s.m, full_m, rtol=1e-15, atol=0)
+        plain = native.F64(x.v.copy(), x.e, x.m.copy())
+        assert s.e == be.matmul(plain, native.F64(y.v.copy(), y.e, y.m.copy())).e
+
+
+def test_frobenius_bound_covers_tiny_and_huge_entries():
+    """The Frobenius bound is above the exact norm, also where the squares fall below the normal
+    range of float64 or overflow it."""
+    rng = np.random.default_rng(1)
+    for scale in (1.0, 1e-160, 1e-300, 2.0**-1074, 1e150):
+        x = rng.standard_normal((7, 5)) * scale
+        exact = sum(Fraction(float(t)) ** 2 for t in x.ravel())
+        b = native._fro(x)
+        assert b == math.inf or Fraction(b) ** 2 >= exact
+    assert native._fro(np.full((2, 2), 1e300)) == math.inf
