@@ -15,6 +15,7 @@ verdict is ``proved``; a certificate it rejects makes the verdict ``error``.
 from __future__ import annotations
 
 import time
+import weakref
 from typing import Callable
 
 from .certificate_check import check_certificate
@@ -105,8 +106,7 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
                          f"(e.g. {res.residual}); the fixed-size methods decide")
     # symbolic coefficients do not raise on a division by an identically zero expression: probe
     # the same claim code at an exact point of a fixed size first
-    probe_size = next((z for z in claim.sizes if z.n >= 3), None) or list(claim.sizes)[-1]
-    why = division_probe(claim, probe_size.n, probe_size.r, func, strict=True)
+    why = probe_divisions(claim, func)
     if why:
         res.verdict, res.message = "error", why
         res.seconds = time.perf_counter() - t0
@@ -137,6 +137,26 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
                        f"independent checker in {report.seconds:.3f}s; every entry has normal form 0; rules "
                        f"applied while building and reducing the residual: {names}")
     return res
+
+
+#: the outcome of the division probe of a claim's function, per (claim, realization, size): the
+#: probe is a pure function of these (its points come from the seed, the claim's id and the size),
+#: so it runs once per claim function, like the cached degree bound of the randomized methods
+_PROBES: "weakref.WeakKeyDictionary[Callable, dict]" = weakref.WeakKeyDictionary()
+
+
+def probe_divisions(claim: Claim, func: Callable) -> str:
+    """The division probe of ``func`` at the first size of the claim with n ≥ 3 (memoized)."""
+    probe_size = next((z for z in claim.sizes if z.n >= 3), None) or list(claim.sizes)[-1]
+    key = (claim.id, claim.realization, probe_size.n, probe_size.r)
+    try:
+        memo = _PROBES.setdefault(func, {})
+    except TypeError:   # a callable without weak references: no memo
+        memo = {}
+    why = memo.get(key)
+    if why is None:
+        why = memo[key] = division_probe(claim, probe_size.n, probe_size.r, func, strict=True)
+    return why
 
 
 def certify_entries(scene, entries) -> dict:

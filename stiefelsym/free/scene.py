@@ -230,6 +230,8 @@ class FreeField(Field):
 
     name = "free"
     exact = True
+    #: entries are blocks for every n, r: no coordinates (no entries, no shapes)
+    coordinates = False
 
     def __init__(self, system: RewritingSystem, lazy: bool = False,
                  tracker: CoordinateTracker | None = None) -> None:
@@ -239,14 +241,6 @@ class FreeField(Field):
         self.lazy = lazy
         #: the record of the scene (refusals of the field are recorded there before they are raised)
         self.tracker = tracker
-
-    @property
-    def coordinates(self) -> bool:
-        """Entries are blocks for every n, r: no coordinates (no entries, no shapes).  A matrix
-        asks this only when claim code wants its entries, a block or its shape, so the answer
-        is a refusal, recorded before the matrix raises it."""
-        record_refusal("an entry, a block or the shape of a matrix", self.tracker)
-        return False
 
     def native_backend(self) -> FreeBackend:
         """The whole-matrix backend (:mod:`.mat`): the matrices stay :class:`Mat`."""
@@ -293,10 +287,7 @@ class FreeField(Field):
 class FreeDualField(DualField):
     """a + bε over the free field, with the involution and the trace."""
 
-    @property
-    def coordinates(self) -> bool:
-        record_refusal("an entry, a block or the shape of a matrix", self.base.tracker)
-        return False
+    coordinates = False
 
     def native_backend(self) -> FreeBackend:
         return FreeBackend(self)
