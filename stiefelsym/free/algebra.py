@@ -418,6 +418,14 @@ class NCPoly:
         return self._new({k: -c for k, c in self.terms.items()})
 
     def __sub__(self, o: Any):
+        if type(o) is NCPoly and self.row == o.row and self.col == o.col:
+            # self + (−o) in one pass (the same terms and coefficients)
+            if not o.terms:
+                return self
+            out = dict(self.terms)
+            for k, c in o.terms.items():
+                out[k] = out[k] + (-c) if k in out else -c
+            return NCPoly._raw(out, self.row, self.col)
         if isinstance(o, (Dual,)) or _is_matrix(o):
             return NotImplemented
         return self + (-o)
@@ -472,10 +480,12 @@ class NCPoly:
         else:
             raise TypeError(f"cannot multiply a {self.row}×{self.col} by a {o.row}×{o.col} polynomial")
         out: dict = {}
+        one = ONE_TYPE
         for (t1, w1), c1 in self.terms.items():
+            one1 = type(c1) is one
             for (t2, w2), c2 in o.terms.items():
                 k = (merge_traces(t1, t2) if t1 and t2 else t1 or t2, w1 + w2)
-                c = cmul(c1, c2)
+                c = c2 if one1 else (c1 if type(c2) is one else c1 * c2)   # cmul, inlined
                 out[k] = out[k] + c if k in out else c
         return NCPoly._raw(out, row, col)
 

@@ -25,9 +25,9 @@ from ..matrix import CoordinateTracker, Mat, definite
 from ..scene import USER_SCALAR, Flow, PaperObjects, map_entries
 from .algebra import (DIMENSIONS, Letter, NCPoly, NeedsCoordinates, as_coef, coef_latex, derivation,
                       letter_pair, record_refusal, refuse, skew_letter, substitute, symmetric_letter, trace)
-from .mat import FreeBackend, entry_of, one_block
-from .rewriting import (Cofactor, Hypothesis, Order, Reduction, RewritingSystem, is_simplified, nonzero_terms,
-                        simplify_coef)
+from .mat import FreeBackend, FreeDualBackend, entry_of, one_block
+from .rewriting import (_NONZERO_NUMBER_TYPES, Cofactor, Hypothesis, Order, Reduction, RewritingSystem,
+                        is_simplified, nonzero_terms, simplify_coef)
 from .traces import gradient
 
 Function = Callable[[Any], Any]
@@ -253,10 +253,11 @@ class FreeField(Field):
         return se.Symbol(name)
 
     def normalize(self, x: Any) -> Any:
-        if isinstance(x, NCPoly):
+        if type(x) is NCPoly:
             if self.lazy:   # collect coefficients only
+                numbers = _NONZERO_NUMBER_TYPES   # the first test of is_simplified, inlined
                 for c in x.terms.values():
-                    if not is_simplified(c):
+                    if type(c) not in numbers and not is_simplified(c):
                         return NCPoly._raw(nonzero_terms(x.terms), x.row, x.col)
                 return x    # polynomials are immutable: nothing to collect, the same one
             return self.system.normal_form(x)
@@ -289,8 +290,8 @@ class FreeDualField(DualField):
 
     coordinates = False
 
-    def native_backend(self) -> FreeBackend:
-        return FreeBackend(self)
+    def native_backend(self) -> FreeDualBackend:
+        return FreeDualBackend(self)
 
     def star(self, x: Any) -> Any:
         x = self.lift(x)
