@@ -27,7 +27,7 @@ from typing import Any
 
 import numpy as np
 
-from .fields import FLOAT_UNDERFLOW, DegenerateError, Deg, Dual, ErrNum, log2_up
+from .fields import FLOAT_UNDERFLOW, DegenerateError, Deg, Dual, ErrNum, log2_add, log2_up
 
 U64 = 2.0**-53
 
@@ -509,6 +509,26 @@ def _times(d: Deg, k: int) -> Deg:
     return Deg(d.num, d.den, d.f, d.h + log2_up(k))
 
 
+def _marker_sum(xs: list[Deg], field) -> Deg:
+    """x_1 + x_2 + ... + x_k from the left, as Deg's sum computes it; a run of nonzero markers
+    with one denominator (the common case: parameters, integer constants) is summed by the same
+    operations without building the intermediate markers."""
+    acc = Deg(-1, None, field)
+    i, k = 0, len(xs)
+    while i < k:
+        x = xs[i]
+        if acc.zero or x.zero or acc.den != x.den:
+            acc = acc + x
+            i += 1
+            continue
+        num, h, den = acc.num, acc.h, acc.den
+        while i < k and not xs[i].zero and xs[i].den == den:
+            num, h = max(num, xs[i].num), log2_add(h, xs[i].h)
+            i += 1
+        acc = Deg(num, den, field, h)
+    return acc
+
+
 class DegreeBackend(Backend):
     """Structural degree bounds: one marker per matrix (sums take the larger degree and add the
     heights, products add both, inverses follow Cramer's rule), so a claim's degree bound costs
@@ -545,18 +565,16 @@ class DegreeBackend(Backend):
     def from_consts(self, a):
         """The marker :meth:`from_obj` gives the constants, from the nonzero entries only (a zero
         marker adds nothing), in the same order."""
-        acc = Deg(-1, None, self.field)
         flat = a.ravel()
-        for i in np.flatnonzero(flat).tolist():
-            acc = acc + self.field.const(int(flat[i]))
-        return DegMat(a.shape, acc)
+        const, seen = self.field.const, {}
+        for x in flat[np.flatnonzero(flat)].tolist():
+            if x not in seen:
+                seen[x] = const(int(x))
+        return DegMat(a.shape, _marker_sum([seen[x] for x in flat[np.flatnonzero(flat)].tolist()], self.field))
 
     def diag(self, xs):
         """The marker :meth:`from_obj` gives the diagonal matrix (its zeros add nothing)."""
-        acc = Deg(-1, None, self.field)
-        for x in xs:
-            acc = acc + self._lift(x)
-        return DegMat((len(xs), len(xs)), acc)
+        return DegMat((len(xs), len(xs)), _marker_sum([self._lift(x) for x in xs], self.field))
 
     def shape(self, s):
         return s.shape

@@ -363,3 +363,25 @@ def test_frobenius_bound_covers_tiny_and_huge_entries():
         b = native._fro(x)
         assert b == math.inf or Fraction(b) ** 2 >= exact
     assert native._fro(np.full((2, 2), 1e300)) == math.inf
+
+
+def test_degree_markers_of_diagonals_and_constants_equal_the_entrywise_sum():
+    """The shortcuts of the structural backend give the marker its generic conversion gives."""
+    F = DegreeField()
+    be = native.backend(F)
+    xs = [F.param("x"), F.const(3), F.param("y") / F.param("z"), F.const(Fraction(1, 2)), F.param("w"),
+          F.param("v"), F.const(0), F.const(5)]
+    for sub in (xs, xs[:1], xs[4:6], [F.const(0)], []):
+        if not sub:
+            continue
+        a = np.empty((len(sub), len(sub)), dtype=object)
+        a.fill(F.const(0))
+        for i, x in enumerate(sub):
+            a[i, i] = x
+        d1, d2 = be.diag(sub).d, be.from_obj(a).d
+        assert (d1.num, d1.den, d1.h) == (d2.num, d2.den, d2.h)
+    for c in (np.array([[1, 0], [0, -1], [0, 0]]), np.array([[2, 3], [3, 0]]), np.zeros((2, 2), dtype=int)):
+        G1, G2 = DegreeField(), DegreeField()
+        d1 = native.backend(G1).from_consts(c).d
+        d2 = native.backend(G2).from_obj(np.vectorize(lambda x: G2.const(int(x)), otypes=[object])(c)).d
+        assert (d1.num, d1.den, d1.h) == (d2.num, d2.den, d2.h) and G1.constant_bits == G2.constant_bits
