@@ -125,11 +125,19 @@ class Context:
         """(row, col) of a nonempty word that is a path; None for the empty word."""
         if not word:
             return None
-        types = [self.letter(L) for L in word]
-        for (a, ta), (b, tb) in zip(zip(word, types), zip(word[1:], types[1:])):
-            if ta[1] != tb[0]:
-                raise Rejected(f"ill-typed word {'*'.join(word)}: {a} ends at R^{ta[1]}, {b} starts at R^{tb[0]}")
-        return types[0][0], types[-1][1]
+        letters = self.letters
+        first = prev = None
+        a = None
+        for b in word:
+            tb = letters.get(b) if isinstance(b, str) else None
+            if tb is None:
+                raise Rejected(f"unknown letter {b!r}")
+            if prev is None:
+                first = tb
+            elif prev[1] != tb[0]:
+                raise Rejected(f"ill-typed word {'*'.join(word)}: {a} ends at R^{prev[1]}, {b} starts at R^{tb[0]}")
+            a, prev = b, tb
+        return first[0], prev[1]
 
     def expect(self, word: tuple, row: str, col: str, what: str) -> None:
         """The word is a path from row to col (the empty word: row == col, the identity)."""
@@ -217,10 +225,13 @@ def _rational_function(e: Any, text: str) -> None:
     raise Rejected(f"the coefficient {text} is not a rational function of the scalars ({type(e).__name__})")
 
 
+_ZERO = se.Integer(0)
+
+
 def is_zero(c: Any) -> bool:
     """Exact zero test of a rational function: its expanded numerator is 0."""
     e = se.expand(c)
-    if e == 0:
+    if e == _ZERO:
         return True
     num, _den = e.as_numer_denom()
     if se.expand(se.expand(num)) == 0:
@@ -249,12 +260,16 @@ def _words(x: Any) -> tuple:
     return tuple(x)
 
 
+#: tr I_n = n, tr I_r = r
+_DIMS = {"n": se.Symbol("n"), "r": se.Symbol("r")}
+
+
 def check_entry(entry: dict, ctx: Context) -> int:
     """Check one residual entry against its certificate; the number of terms, or Rejected."""
     row, col = entry["type"]
     if not ((row in OBJECTS and col in OBJECTS) or row == col == SCALAR):
         raise Rejected(f"the entry's type {row}x{col} is not a pair of objects")
-    dims = {"n": se.Symbol("n"), "r": se.Symbol("r")}
+    dims = _DIMS
     target: dict = {}
     for t in entry["residual"]:
         word, traces = _words(t["word"]), [_words(c) for c in t["traces"]]

@@ -252,7 +252,85 @@ def cmul(a: Coef, b: Coef) -> Coef:
         return b
     if type(b) is ONE_TYPE:
         return a
-    return a * b
+    return cprod(a, b)
+
+
+# Coefficient arithmetic, memoized: a symengine product, sum or negation costs about 1 µs, a
+# lookup a fifth of that, and a claim meets few distinct coefficients (λ, κ, small integers and
+# their products) many times.  Symengine expressions are immutable, hashable and compared
+# structurally, and these operations are pure functions of them, so the memo returns exactly the
+# expression the operation would build.
+_CPROD: dict = {}
+_CSUM: dict = {}
+_CNEG: dict = {}
+_COEF_MEMO_MAX = 100_000
+
+
+def _coef_memo_full() -> None:
+    for memo in (_CPROD, _CSUM, _CNEG):
+        if len(memo) >= _COEF_MEMO_MAX:
+            memo.clear()
+
+
+def cprod(a: Coef, b: Coef) -> Coef:
+    """a·b (memoized)."""
+    key = (a, b)
+    try:
+        return _CPROD[key]
+    except KeyError:
+        pass
+    except TypeError:   # not hashable: no memo
+        return a * b
+    v = _CPROD[key] = a * b
+    if len(_CPROD) >= _COEF_MEMO_MAX:
+        _coef_memo_full()
+    return v
+
+
+def csum(a: Coef, b: Coef) -> Coef:
+    """a + b (memoized)."""
+    key = (a, b)
+    try:
+        return _CSUM[key]
+    except KeyError:
+        pass
+    except TypeError:
+        return a + b
+    v = _CSUM[key] = a + b
+    if len(_CSUM) >= _COEF_MEMO_MAX:
+        _coef_memo_full()
+    return v
+
+
+_CEXPAND: dict = {}
+
+
+def cexpand(a: Coef) -> Coef:
+    """se.expand(a) (memoized: a pure function of the expression)."""
+    try:
+        return _CEXPAND[a]
+    except KeyError:
+        pass
+    except TypeError:
+        return se.expand(a)
+    v = _CEXPAND[a] = se.expand(a)
+    if len(_CEXPAND) >= _COEF_MEMO_MAX:
+        _CEXPAND.clear()
+    return v
+
+
+def cneg(a: Coef) -> Coef:
+    """−a (memoized)."""
+    try:
+        return _CNEG[a]
+    except KeyError:
+        pass
+    except TypeError:
+        return -a
+    v = _CNEG[a] = -a
+    if len(_CNEG) >= _COEF_MEMO_MAX:
+        _coef_memo_full()
+    return v
 
 
 def as_coef(c: Any) -> Coef | None:
@@ -393,7 +471,7 @@ class NCPoly:
                 return o
             out = dict(self.terms)
             for k, c in o.terms.items():
-                out[k] = out[k] + c if k in out else c
+                out[k] = csum(out[k], c) if k in out else c
             return NCPoly._raw(out, self.row, self.col)
         if isinstance(o, NCPoly):
             self._same_type(o)
@@ -415,7 +493,7 @@ class NCPoly:
     __radd__ = __add__
 
     def __neg__(self) -> "NCPoly":
-        return self._new({k: -c for k, c in self.terms.items()})
+        return self._new({k: cneg(c) for k, c in self.terms.items()})
 
     def __sub__(self, o: Any):
         if type(o) is NCPoly and self.row == o.row and self.col == o.col:
@@ -424,7 +502,7 @@ class NCPoly:
                 return self
             out = dict(self.terms)
             for k, c in o.terms.items():
-                out[k] = out[k] + (-c) if k in out else -c
+                out[k] = csum(out[k], cneg(c)) if k in out else cneg(c)
             return NCPoly._raw(out, self.row, self.col)
         if isinstance(o, (Dual,)) or _is_matrix(o):
             return NotImplemented
@@ -438,7 +516,7 @@ class NCPoly:
             return self._new({})
         if type(k) is ONE_TYPE:
             return self._new(dict(self.terms))
-        return self._new({key: c * k for key, c in self.terms.items()})
+        return self._new({key: cprod(c, k) for key, c in self.terms.items()})
 
     def __mul__(self, o: Any):
         if isinstance(o, NCPoly):
@@ -485,8 +563,8 @@ class NCPoly:
             one1 = type(c1) is one
             for (t2, w2), c2 in o.terms.items():
                 k = (merge_traces(t1, t2) if t1 and t2 else t1 or t2, w1 + w2)
-                c = c2 if one1 else (c1 if type(c2) is one else c1 * c2)   # cmul, inlined
-                out[k] = out[k] + c if k in out else c
+                c = c2 if one1 else (c1 if type(c2) is one else cprod(c1, c2))   # cmul, inlined
+                out[k] = csum(out[k], c) if k in out else c
         return NCPoly._raw(out, row, col)
 
     def star(self) -> "NCPoly":
@@ -499,8 +577,8 @@ class NCPoly:
         for (tm, w), c in self.terms.items():
             s, ws = star_word(w)
             k = (tm, ws)
-            v = c if s == 1 else -c
-            out[k] = out[k] + v if k in out else v
+            v = c if s == 1 else cneg(c)
+            out[k] = csum(out[k], v) if k in out else v
         res = NCPoly._raw(out, self.col, self.row)
         res._starred = self
         self._starred = res
@@ -510,8 +588,8 @@ class NCPoly:
         """Expanded coefficients, zero terms dropped (no constraints used)."""
         out = {}
         for k, c in self.terms.items():
-            e = se.expand(c)
-            if e != 0:
+            e = cexpand(c)
+            if not coef_is_zero(e):
                 out[k] = e
         return self._new(out)
 

@@ -42,6 +42,25 @@ def _coef_text(c: Any) -> tuple[tuple, str]:
     return memo_put(_COEF_TEXT, c, (tuple(c.free_symbols), str(c)), 100_000)
 
 
+#: words of letters that need no declaration (X, Pt, A, ...) -> their names (the same for every writer)
+_PLAIN_WORDS: dict = {}
+#: symbol -> the identifier it is written as, before disambiguation (a function of the symbol)
+_BASE_NAMES: dict = {}
+
+
+def _base_name(s: Any) -> str:
+    try:
+        return _BASE_NAMES[s]
+    except (KeyError, TypeError):
+        pass
+    base = re.sub(r"\W", "_", str(s)) or "s"
+    if not base[0].isalpha():
+        base = "s" + base
+    if keyword.iskeyword(base):
+        base += "_"
+    return memo_put(_BASE_NAMES, s, base, 100_000)
+
+
 class CertificateWriter:
     """Serializes the entries of one scene (one naming of symbols and letters)."""
 
@@ -57,11 +76,7 @@ class CertificateWriter:
         name = self.symbols.get(s)
         if name is not None:
             return name
-        base = re.sub(r"\W", "_", str(s)) or "s"
-        if not base[0].isalpha():
-            base = "s" + base
-        if keyword.iskeyword(base):
-            base += "_"
+        base = _base_name(s)
         name, k = base, 1
         taken = set(self.symbols.values())
         while name in taken:
@@ -72,7 +87,8 @@ class CertificateWriter:
         return name
 
     def coef(self, c: Any) -> str:
-        c = se.sympify(c)
+        if not isinstance(c, se.Basic):
+            c = se.sympify(c)
         symbols, text = _coef_text(c)
         subs = {}
         for s in symbols:
@@ -94,7 +110,14 @@ class CertificateWriter:
         return name
 
     def word(self, w: Iterable[Letter]) -> list[str]:
-        return [self.letter(L) for L in w]
+        w = tuple(w)
+        names = _PLAIN_WORDS.get(w)
+        if names is not None:
+            return list(names)
+        out = [self.letter(L) for L in w]
+        if not any(x.startswith(("R[", "gen:")) for x in out):   # no letter to declare: any writer's names
+            memo_put(_PLAIN_WORDS, w, tuple(out), 100_000)
+        return out
 
     # -- entries --------------------------------------------------------------
     def residual(self, p: NCPoly) -> list[dict]:

@@ -30,7 +30,7 @@ from typing import Iterable, Sequence
 import symengine as se
 
 from .algebra import (DIMENSIONS, SCALAR, Coef, Letter, NCPoly, Word, check_word, cycle_rep, merge_traces,
-                      min_rotation, record_refusal, star_word, trace, word_key, word_latex, word_str)
+                      memo_put, min_rotation, record_refusal, star_word, trace, word_key, word_latex, word_str)
 
 
 class RewritingError(ValueError):
@@ -217,7 +217,23 @@ class Reduction:
         return not self.normal_form.terms
 
     def latex(self) -> str:
-        """A short derivation: the residual, the rules applied (with reasons), the normal form."""
+        """A short derivation: the residual, the rules applied (with reasons), the normal form
+        (memoized: a function of the polynomials' terms and the rules, which the key holds)."""
+        try:
+            key = (self.residual.row, self.residual.col, tuple(self.residual.terms.items()),
+                   tuple(self.normal_form.terms.items()),
+                   tuple((r.name, r.lhs, r.reason, tuple(r.rhs.terms.items())) for r in self.rules))
+            hit = _REDUCTION_LATEX.get(key)
+        except TypeError:   # an unhashable coefficient: no memo
+            key = hit = None
+        if hit is not None:
+            return hit
+        text = self._latex()
+        if key is not None:
+            memo_put(_REDUCTION_LATEX, key, text, 10_000)
+        return text
+
+    def _latex(self) -> str:
         lines = [r"\begin{aligned}", rf"R &= {self.residual.latex()} \\"]
         lines.append(rf"\operatorname{{nf}}(R) &= {self.normal_form.latex()}")
         lines.append(r"\end{aligned}")
@@ -226,6 +242,9 @@ class Reduction:
             return rf"\[{body}\]" + "\nNo rule was needed."
         items = "\n".join(rf"  \item ${r.latex()}$ ({latex_text(r.reason)})" for r in self.rules)
         return rf"\[{body}\]" + "\nusing\n\\begin{itemize}\n" + items + "\n\\end{itemize}"
+
+
+_REDUCTION_LATEX: dict = {}
 
 
 def latex_text(s: str) -> str:
