@@ -24,12 +24,12 @@ from typing import Any, Callable
 import numpy as np
 
 from ._lazy import lazy
-from .claims import Claim, Count, Rank, deadline, guarded
+from .claims import Claim, Count, Rank, deadline
 from .fields import (PRIME_LOW, PRIMES_IN_RANGE_LOWER, ConstantDegenerate, DegenerateError, Deg, DegreeField,
                      ErrNum, Field, FloatField, ModularField, RationalField, SymbolicBudget,
                      SymbolicField, random_prime)
 from .matrix import Mat, is_scene_number
-from .native import F64, DegMat, backend
+from .native import F64, DegMat, backend, one_blas_thread
 from .results import CheckOutcome, Result
 from .scene import CoordinateAccess, Scene, SizeError
 
@@ -146,7 +146,7 @@ def _float_entries(value: Any, name: str, u: float) -> list[tuple[str, Any]]:
 
 
 def call_claim(func: Callable, scene: Any) -> dict[str, Any]:
-    checks = guarded(func)(scene)
+    checks = func(scene)
     if not isinstance(checks, dict) or not checks:
         raise TypeError("a claim must return a non-empty dict of named checks")
     for k in checks:
@@ -1024,7 +1024,8 @@ def run_float(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
     """float64 with a running error bound; mpmath at 30, 60, 120 digits when float64 cannot decide.
     When r = n both components of O(n) are evaluated."""
     options = _prepare(options)
-    return _hard_note(_run_float(claim, n, r, seed, func or claim.func, options), options)
+    with one_blas_thread():
+        return _hard_note(_run_float(claim, n, r, seed, func or claim.func, options), options)
 
 
 @dataclass

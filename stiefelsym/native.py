@@ -229,13 +229,14 @@ class F64:
     of ({id(right factor): (right factor, product)}: the same two matrices are never multiplied
     twice); ``diag``, its diagonal (values, term scales) when it is diagonal by construction;
     ``sel``, (rows, signs) when every column j is signs[j] times the unit vector of rows[j]
-    (signs[j] = 0: a zero column)."""
+    (signs[j] = 0: a zero column); ``m32``, the term scales in float32 (False where they do not
+    fit, see :func:`_scale_product`)."""
 
-    __slots__ = ("v", "e", "m", "nv", "t", "prods", "diag", "sel")
+    __slots__ = ("v", "e", "m", "nv", "t", "prods", "diag", "sel", "m32")
 
     def __init__(self, v: np.ndarray, e: float, m: np.ndarray, nv: float | None = None) -> None:
         self.v, self.e, self.m, self.nv = v, e, m, nv
-        self.t = self.prods = self.diag = self.sel = None
+        self.t = self.prods = self.diag = self.sel = self.m32 = None
 
 
 def _gamma(k: int) -> float:
@@ -281,6 +282,43 @@ def _norm(a: F64) -> float:
     if nv is None:
         nv = a.nv = _fro(a.v)
     return nv
+
+
+#: term scales up to this size go through float32 products (k·(2^56)^2 < 2^127 for k <= 2^14)
+_M32_MAX = 2.0**56
+_M32_K_MAX = 2**14
+
+
+def _m32(a: F64) -> Any:
+    """The term scales of a in float32 (rounded to nearest), or False when they are not all finite
+    and below 2^56; once per matrix (a transpose shares them)."""
+    m32 = a.m32
+    if m32 is None:
+        t = a.t
+        if t is not None and t.m32 is not None:
+            m32 = False if t.m32 is False else t.m32.T
+        else:
+            with np.errstate(all="ignore"):
+                top = float(np.max(a.m)) if a.m.size else 0.0
+            m32 = a.m.astype(np.float32) if 0.0 <= top < _M32_MAX else False
+        a.m32 = m32
+    return m32
+
+
+def _scale_product(a: F64, b: F64) -> np.ndarray:
+    """The term scales |A|_m |B|_m of a product.  They are the scale the resolution test compares
+    the error bound with, not a bound on anything, and a few digits describe them: one float32
+    product (half the time of float64) rounded down by its own rounding bound, so that they never
+    exceed the float64 scales Σ_k m_ik m_kj (the inputs' rounding to float32, 2^-24 each, and the
+    product's, γ_k in float32, are within the factor 1 − 2(k + 4)·2^-24; only sums below float32's
+    normal range, 10^-38, may differ by its underflow unit), so the test is never easier to pass
+    than with the float64 scales.  Scales too large for float32, or not finite, take float64."""
+    k = a.m.shape[1]
+    a32 = _m32(a) if k <= _M32_K_MAX else False
+    b32 = _m32(b) if a32 is not False else False
+    if a32 is False or b32 is False:
+        return a.m @ b.m
+    return np.multiply(a32 @ b32, 1.0 - 2.0 * (k + 4) * 2.0**-24, dtype=np.float64)
 
 
 def _uf(shape) -> float:
@@ -412,7 +450,7 @@ class Float64Backend(Backend):
                 rows, signs = b.sel
                 v, m = a.v[:, rows] * signs, a.m[:, rows] * np.abs(signs)
             else:
-                v, m = a.v @ b.v, a.m @ b.m
+                v, m = a.v @ b.v, _scale_product(a, b)
             na, nb = _norm(a), _norm(b)
             e = na * b.e + a.e * nb + a.e * b.e + _gamma(k) * na * nb + k * _uf(v.shape)
             out = F64(v, _up(e, 8), m)
@@ -490,6 +528,47 @@ class Float64Backend(Backend):
             for b in row:
                 e += b.e
         return F64(cat("v"), _up(e, sum(len(row) for row in grid)), cat("m"))
+
+
+#: openblas_set_num_threads_local of the OpenBLAS that numpy uses (None: not found; False: not looked up)
+_BLAS_LOCAL: Any = False
+
+
+def _blas_threads_local():
+    global _BLAS_LOCAL
+    if _BLAS_LOCAL is False:
+        _BLAS_LOCAL = None
+        try:
+            import ctypes
+            with open("/proc/self/maps") as fh:
+                paths = sorted({line.split()[-1] for line in fh if "openblas" in line.lower() and "/" in line})
+            for path in paths:
+                fn = getattr(ctypes.CDLL(path), "openblas_set_num_threads_local", None)
+                if fn is not None:
+                    fn.argtypes, fn.restype = [ctypes.c_int], ctypes.c_int
+                    _BLAS_LOCAL = fn
+                    break
+        except (OSError, AttributeError, ValueError):
+            _BLAS_LOCAL = None
+    return _BLAS_LOCAL
+
+
+class one_blas_thread:
+    """A context in which numpy's BLAS and LAPACK calls from this thread run on one thread (the
+    setting is local to the calling thread and restored on exit; nothing happens where OpenBLAS
+    does not offer it).  The float method's matrices (n up to a few hundred) are too small for
+    threads to pay: OpenBLAS's threads wait for each other by spinning, so on a busy machine (or
+    under ``--jobs``) a 200 x 200 product took 15 ms of CPU with two threads and 0.3 ms with one."""
+
+    def __enter__(self):
+        fn = _blas_threads_local()
+        self._old = fn(1) if fn is not None else None
+        return self
+
+    def __exit__(self, *exc):
+        if self._old is not None:
+            _blas_threads_local()(self._old)
+        return False
 
 
 # ----------------------------------------------------------------------------- degree markers

@@ -330,7 +330,7 @@ def test_float64_structured_and_repeated_products_keep_the_bound():
             for row, rowq in zip(entries(M), entries(Mq)):
                 for x, q in zip(row, rowq):
                     assert abs(Fraction(x.v) - Fraction(int(q.p), int(q.q))) <= Fraction(x.e)
-                    assert x.m >= abs(x.v)
+                    assert x.m >= abs(x.v) * (1 - 1e-4)     # term scales: a few digits
         assert out[5]._n is out[3]._n                  # B @ C again
         assert out[4]._n is out[3]._n.t                # (B C)^T from the stored B C
 
