@@ -30,15 +30,17 @@ from ._lazy import symengine_opaque
 from .fields import Deg, Dual, ErrNum, Field
 from .native import backend
 from .reverse import Rev
+from .scalar import Scalar, claim_code, engine_only
 
 
 class CoordinateTracker:
     """Records, append-only, how claim code looked at coordinates of ℝⁿ; knows the sizes n, r."""
 
-    __slots__ = ("_used", "dims", "_sizes")
+    __slots__ = ("_used", "dims", "_sizes", "_refused")
 
     def __init__(self, dims: dict[str, int] | None = None) -> None:
         self._used: list[str] = []
+        self._refused: list[str] = []
         #: numeric sizes of the definite spaces (None for the dimension-free scene)
         self.dims = dict(dims) if dims is not None else None
         self._sizes: dict[str, int | None] = {}
@@ -58,6 +60,16 @@ class CoordinateTracker:
     @property
     def used(self) -> tuple[str, ...]:
         return tuple(self._used)
+
+    def refuse(self, what: str) -> None:
+        """Record something the engine refused to claim code (before the refusal is raised):
+        the record outlives the exception, whatever the claim does with it."""
+        if what not in self._refused:
+            self._refused.append(what)
+
+    @property
+    def refused(self) -> tuple[str, ...]:
+        return tuple(self._refused)
 
 
 class NeedsCoordinates(Exception):
@@ -168,6 +180,9 @@ def check_element(field: Field, x: Any) -> Any:
     constants of the field; anything else must be a number of the engine's or its libraries'
     own types, exactly (an object of a claim's own class that says it equals 0 is refused)."""
     t = type(x)
+    if t is Scalar:
+        x = x._x
+        t = type(x)
     if t is int or t is Fraction:
         return field.const(x)
     if t is Dual:
@@ -314,6 +329,9 @@ class Mat:
 
     @property
     def field(self) -> Field:
+        """The number system (engine only: claim code that asks is refused, and recorded)."""
+        if claim_code():
+            engine_only(self._tracker, "a matrix's number system (M.field)")
         return self._field
 
     @property
@@ -470,6 +488,8 @@ class Mat:
         return self._new(self._norm(np.dot(self._view(), o._view())), tags, o)
 
     def _scalar(self, c):
+        if type(c) is Scalar:
+            c = c._x
         if isinstance(c, Mat):
             return NotImplemented
         if isinstance(c, float):
@@ -491,6 +511,8 @@ class Mat:
         return self._scalar(c)
 
     def __truediv__(self, c):
+        if type(c) is Scalar:
+            c = c._x
         if isinstance(c, Mat):
             return NotImplemented
         if isinstance(c, _SCALARS):
@@ -499,6 +521,11 @@ class Mat:
 
     # -- linear algebra ---------------------------------------------------
     def trace(self):
+        """The trace (a number of the scene)."""
+        x = self._trace()
+        return Scalar(x, self._tracker) if claim_code() and _coordinates(self._field) else x
+
+    def _trace(self):
         m, k = self._shape()
         if m != k:
             raise ValueError("trace of a non-square matrix")
@@ -535,13 +562,17 @@ class Mat:
             be, a, b = nat
             return be.inner(a, b)
         if nat is not None:
-            return (self.T @ o).trace()
+            return (self.T @ o)._trace()
         acc = self.field.const(0)
         for x, y in zip(self._view().flat, o._view().flat):
             acc = acc + x * y
         return self.field.normalize(acc)
 
     def is_zero(self) -> bool:
+        """Whether every entry is zero at this point (engine only: for claim code, a test of
+        the values of the point; return the matrix as a residual instead)."""
+        if claim_code():
+            engine_only(self._tracker, "a test of a matrix's values (M.is_zero())")
         if self._n is not None:
             return backend(self._field).is_zero(self._n)
         return all(self.field.is_zero(x) for x in self._view().flat)
@@ -564,7 +595,7 @@ class Mat:
             tags = tuple(t if f else UNTYPED for t, f in zip(self._tags, full))
             return Mat._wrap(out.copy(), self.field, tags, self._tracker,
                              self._coords or (self._tracker is None and indexed_by_Rn(self._tags)))
-        return out
+        return Scalar(out, self._tracker) if claim_code() else out
 
     def __iter__(self):
         raise TypeError("a matrix is not iterable: read entries as M[i, j]")

@@ -24,7 +24,7 @@ from typing import Any, Callable
 import numpy as np
 
 from ._lazy import lazy
-from .claims import Claim, Count, Rank, deadline
+from .claims import Claim, Count, Rank, deadline, guarded
 from .fields import (PRIME_LOW, PRIMES_IN_RANGE_LOWER, ConstantDegenerate, DegenerateError, Deg, DegreeField,
                      ErrNum, Field, FloatField, ModularField, RationalField, SymbolicBudget,
                      SymbolicField, random_prime)
@@ -146,7 +146,7 @@ def _float_entries(value: Any, name: str, u: float) -> list[tuple[str, Any]]:
 
 
 def call_claim(func: Callable, scene: Any) -> dict[str, Any]:
-    checks = func(scene)
+    checks = guarded(func)(scene)
     if not isinstance(checks, dict) or not checks:
         raise TypeError("a claim must return a non-empty dict of named checks")
     for k in checks:

@@ -27,7 +27,8 @@ from typing import Any, Callable, Mapping
 import numpy as np
 
 from .fields import DegreeField, Dual, DualField, Field, FloatField, DegenerateError, SymbolicField
-from .matrix import CoordinateTracker, Mat, block, definite, scalar_matrix, unify
+from .matrix import CoordinateTracker, Mat, block, check_element, definite, scalar_matrix, unify
+from .scalar import claim_code, engine_only, raw, unwrap, wrap
 from .native import backend
 from .reverse import Rev, RevField, RevMat, Unsupported, gradient as rev_gradient, leaf as rev_leaf
 
@@ -67,6 +68,23 @@ CLOSED_FORM_MULTIPLIERS = True
 #: parameter matrices with fewer entries are drawn one entry at a time (a numpy generator costs
 #: more than a few dozen draws)
 PARAM_BLOCK_MIN = 64
+
+
+def _opaque(scene: Any, x: Any) -> Any:
+    """A value of a coordinate scene as its caller sees it: claim code gets opaque numbers
+    (:mod:`.scalar`), the engine the field's own."""
+    if claim_code(3) and getattr(getattr(scene, "_field", None), "coordinates", True):
+        return wrap(x, scene._tracker)
+    return x
+
+
+def _engine_property(attr: str, what: str) -> property:
+    """A read-only attribute the engine reads and claim code is refused (the refusal recorded)."""
+    def get(self):
+        if claim_code():
+            engine_only(self._tracker, what)
+        return getattr(self, attr)
+    return property(get, doc=f"{what}: engine only")
 
 
 class SizeError(ValueError):
@@ -137,26 +155,31 @@ class PaperObjects:
 
     def killing(self, a: Mat, b: Mat) -> Scalar:
         """<a, b> = -1/2 tr(ab)."""
-        return self.field.normalize((a @ b).trace() * self.const(Fraction(-1, 2)))
+        x = self._field.normalize((a @ b)._trace() * self._field.const(Fraction(-1, 2)))
+        return _opaque(self, x)
 
     def scalar(self, name: str) -> Scalar:
         """A fresh free scalar parameter of the claim's own (never one of the chart's, whatever its name)."""
-        return self._param(USER_SCALAR + user_name(name, "scalar"))
+        x = self._param(USER_SCALAR + user_name(name, "scalar"))
+        return _opaque(self, x)
 
     @property
     def lam(self) -> Scalar:
         """The spectral parameter lambda."""
-        return self._param("lambda")
+        x = self._param("lambda")
+        return _opaque(self, x)
 
     @property
     def kappa(self) -> Scalar:
         """The parameter kappa of the Jensen metrics (EM)."""
-        return self._param("kappa")
+        x = self._param("kappa")
+        return _opaque(self, x)
 
     @property
     def eps(self) -> Scalar:
         """The magnetic parameter epsilon."""
-        return self._param("epsilon")
+        x = self._param("epsilon")
+        return _opaque(self, x)
 
 
 class Scene(PaperObjects):
@@ -177,12 +200,12 @@ class Scene(PaperObjects):
         self._n, self._r = n, r
         self._field = field
         self._chart = chart
-        self.rng = rng
+        self._rng = rng
         self._component = component
         self._realization = realization
-        self.options = dict(options or {})
+        self._options = dict(options or {})
         self._tracker = tracker if tracker is not None else CoordinateTracker({"n": n, "r": r})
-        self.params: dict[str, Any] = {}
+        self._params: dict[str, Any] = {}
         self._param_blocks: list[tuple[str, Any, Any]] = []
         self._cache: dict[str, Any] = {}
 
@@ -195,35 +218,40 @@ class Scene(PaperObjects):
             raise ValueError(f"cannot pair {(m, k1)} with {(k2, k)} by the trace of their product")
         unify(a.tags[1], b.tags[0], "a product", a.tracker)
         unify(a.tags[0], b.tags[1], "a trace", a.tracker)
-        return self.field.normalize(a._inner(b.T) * self.const(Fraction(-1, 2)))
+        x = self._field.normalize(a._inner(b.T) * self._field.const(Fraction(-1, 2)))
+        return _opaque(self, x)
 
-    # the problem is fixed once the scene exists: read-only
+    # the problem is fixed once the scene exists: read-only; what tells the methods (or the
+    # sampled point) apart is the engine's, and claim code that asks is refused (and recorded)
     n = property(lambda self: self._n, doc="the size n")
     r = property(lambda self: self._r, doc="the size r")
-    field = property(lambda self: self._field, doc="the number system")
-    chart = property(lambda self: self._chart, doc="how points of T*V are produced")
-    component = property(lambda self: self._component, doc="the component of O(n) when r = n")
-    realization = property(lambda self: self._realization, doc="the constraints realizing T*V")
     tracker = property(lambda self: self._tracker, doc="the record of looks at coordinates")
+    field = _engine_property("_field", "the scene's number system (s.field)")
+    chart = _engine_property("_chart", "the scene's chart (s.chart)")
+    component = _engine_property("_component", "the component of O(n) of the chart (s.component)")
+    realization = _engine_property("_realization", "the scene's realization (s.realization)")
+    rng = _engine_property("_rng", "the scene's random source (s.rng)")
+    params = _engine_property("_params", "the values of the chart's parameters (s.params)")
+    options = _engine_property("_options", "the run's options (s.options)")
 
     # ------------------------------------------------------------------
     # parameters and primitives
     def _param(self, name: str) -> Scalar:
         """A free parameter of the chart (symbol, random number, degree marker)."""
-        if name not in self.params and self._param_blocks:
+        if name not in self._params and self._param_blocks:
             m = _ENTRY_NAME.fullmatch(name)
             if m and any(b[0] == m.group(1) for b in self._param_blocks):
                 self._expand_param_blocks()
-        if name not in self.params:
-            value = self.field.param(name, self.rng)
-            hard = self.options.get("hard")
-            if hard is not None and self.rng is not None:
+        if name not in self._params:
+            value = self.field.param(name, self._rng)
+            hard = self._options.get("hard")
+            if hard is not None and self._rng is not None:
                 new = hard.rewrite(self, name, value)
                 if new is not value:
-                    self.options.setdefault("hard_hits", []).append(name)
+                    self._options.setdefault("hard_hits", []).append(name)
                     value = self.field.exact_input(new)
-            self.params[name] = value
-        return self.params[name]
+            self._params[name] = value
+        return self._params[name]
 
     def _cached(self, key: str, build: Callable[[], Any]) -> Any:
         if key not in self._cache:
@@ -238,11 +266,13 @@ class Scene(PaperObjects):
         return self._cache[full][1]
 
     def const(self, q: int | Fraction) -> Scalar:
-        return self.field.const(q)
+        x = self._field.const(q)
+        return _opaque(self, x)
 
     def q(self, num: int, den: int = 1) -> Scalar:
         """The rational constant num/den as an element of the scene's field."""
-        return self.field.const(Fraction(num, den))
+        x = self._field.const(Fraction(num, den))
+        return _opaque(self, x)
 
     def mat(self, rows, tags=("?", "?")) -> Mat:
         """A matrix from rows of scalars, with the spaces of its rows and columns.  An
@@ -263,9 +293,9 @@ class Scene(PaperObjects):
         when an entry is asked for by name), or None where parameters are drawn one at a time
         (no backend, hard cases, a field without block draws, or a name already drawn)."""
         be = backend(self.field)
-        if (be is None or self.rng is None or not hasattr(be, "from_array") or self.options.get("hard") is not None
+        if (be is None or self._rng is None or not hasattr(be, "from_array") or self._options.get("hard") is not None
                 or any(b[0] == name for b in self._param_blocks)
-                or param_name(name, 0, 1 if kind == "skew" else 0) in self.params):
+                or param_name(name, 0, 1 if kind == "skew" else 0) in self._params):
             return None
         count = m * k if kind == "general" else m * (m - 1) // 2 if kind == "skew" else m * (m + 1) // 2
         if count < PARAM_BLOCK_MIN:
@@ -274,7 +304,7 @@ class Scene(PaperObjects):
             cells = (np.repeat(np.arange(m), k), np.tile(np.arange(k), m))
         else:
             cells = np.triu_indices(m, 1 if kind == "skew" else 0)
-        vals = self.field.param_values(self.rng, count)
+        vals = self.field.param_values(self._rng, count)
         if vals is None:
             return None
         arr = np.zeros((m, k), dtype=vals.dtype)
@@ -291,16 +321,16 @@ class Scene(PaperObjects):
         blocks, self._param_blocks[:] = list(self._param_blocks), []
         for name, (rows, cols), vals in blocks:
             for i, j, x in zip(rows.tolist(), cols.tolist(), vals.tolist()):
-                self.params[param_name(name, i, j)] = self.field.param_from_raw(x)
+                self._params[param_name(name, i, j)] = self.field.param_from_raw(x)
 
     def _point_values(self) -> dict[str, Any]:
         """Every parameter of the point drawn so far, by name (a witness's coordinates)."""
         self._expand_param_blocks()
-        return self.params
+        return self._params
 
     def _has_params(self) -> bool:
         """Whether any parameter has been drawn."""
-        return bool(self.params) or bool(self._param_blocks)
+        return bool(self._params) or bool(self._param_blocks)
 
     def _skew_params(self, name: str, m: int, tag: str) -> Mat:
         M = self._param_block(name, m, m, "skew", (tag, tag))
@@ -446,9 +476,10 @@ class Scene(PaperObjects):
     def a(self) -> list[Scalar]:
         """Eigenvalues a_1..a_n of A (a coordinate object: A is then diagonal)."""
         self.tracker.touch("eigenvalues a_i of A")
-        if self.chart == "equivariant":
+        if self._chart == "equivariant":
             raise CoordinateAccess("eigenvalues a_i")
-        return self._cached("a", lambda: [self._param(f"a_{i + 1}") for i in range(self.n)])
+        xs = self._cached("a", lambda: [self._param(f"a_{i + 1}") for i in range(self.n)])
+        return _opaque(self, xs)
 
     @property
     def A(self) -> Mat:
@@ -545,10 +576,13 @@ class Scene(PaperObjects):
         return self._cached("Ir", lambda: self.identity(self.r, "r"))
 
     def tr(self, M: Mat) -> Scalar:
-        return M.trace()
+        x = M._trace()
+        return _opaque(self, x)
 
     def resolvent(self, mu: Scalar) -> Mat:
         """(mu I_n - A)^{-1}."""
+        mu = raw(mu)
+
         def build():
             if self.chart == "cayley":
                 M = self.zeros(self.n, self.n, ("n", "n"))
@@ -559,7 +593,7 @@ class Scene(PaperObjects):
         return self._cached_for("res", mu, build)
 
     def scalar_matrix(self, c: Scalar, m: int, tag="?") -> Mat:
-        return scalar_matrix(c, m, self.field, tag, self.tracker)
+        return scalar_matrix(check_element(self._field, c), m, self._field, tag, self._tracker)
 
     # ------------------------------------------------------------------
     # phase space calculus
@@ -586,7 +620,8 @@ class Scene(PaperObjects):
         """The Jacobian of F in the 2nr coordinates of X, P (a recorded look at coordinates);
         see :meth:`_jacobian`."""
         self.tracker.touch("a Jacobian in the coordinates of X, P")
-        return self._jacobian(F, symmetric)
+        J = self._jacobian(F, symmetric)
+        return _opaque(self, J)
 
     def _jacobian(self, F: Function, symmetric: bool | None = None, scalar: bool = False) -> list[list[Scalar]]:
         """Rows: scalar components of F (a scalar or list of Mats); columns: the 2nr coordinates.
@@ -598,7 +633,7 @@ class Scene(PaperObjects):
             symmetric = F is self.constraints.build
         cols = []
         for t in self._unit_tangents():
-            value = F(self.tangent(t))
+            value = unwrap(F(self.tangent(t)))
             if scalar and isinstance(value, (Mat, list, tuple, dict)):
                 raise TypeError("a Hamiltonian (a function whose gradient, flow or bracket is taken) must be "
                                 f"a scalar function of the scene, not a {type(value).__name__}")
@@ -628,7 +663,7 @@ class Scene(PaperObjects):
     def _reverse_gradient(self, H: Function) -> tuple[Mat, Mat]:
         rs = ReverseScene(self)
         X, P = rs.X, rs.P          # the leaves, created before anything that depends on them
-        value = H(rs)
+        value = unwrap(H(rs))
         if isinstance(value, (Mat, list, tuple, dict)):
             raise TypeError("a Hamiltonian (a function whose gradient, flow or bracket is taken) must be "
                             f"a scalar function of the scene, not a {type(value).__name__}")
@@ -702,7 +737,8 @@ class Scene(PaperObjects):
             omega = [list(gP._view().flat) + [-x for x in gX._view().flat] for gX, gP in G]
             C = (Mat._rows(rows, self.field) @ Mat._rows(omega, self.field).T)._view()
             return [[C[i, j] for j in range(len(G))] for i in range(len(G))]
-        return self._cached("C0", build)
+        C0 = self._cached("C0", build)
+        return _opaque(self, C0)
 
     def _dot(self, u, v) -> Scalar:
         acc = self.const(0)
@@ -712,7 +748,8 @@ class Scene(PaperObjects):
 
     def canonical_bracket(self, F: Function, G: Function) -> Scalar:
         """{F, G}_0 = sum (dF/de, dG/dp) - (dF/dp, dG/de)."""
-        return self._pair_dot(self.gradient(F), self._pair_omega(self.gradient(G)))
+        x = self._pair_dot(self.gradient(F), self._pair_omega(self.gradient(G)))
+        return _opaque(self, x)
 
     def _dirac_inverse(self) -> list[list[Scalar]]:
         def build():
@@ -737,7 +774,8 @@ class Scene(PaperObjects):
         for i in range(len(Gs)):
             for j in range(len(Gs)):
                 acc = acc + FiF[i] * C[i][j] * FjG[j]
-        return self.field.normalize(acc)
+        x = self._field.normalize(acc)
+        return _opaque(self, x)
 
     def canonical_flow(self, H: Function) -> Flow:
         """The Hamiltonian vector field of H for the ambient bracket {,}_0."""
@@ -892,8 +930,8 @@ class Scene(PaperObjects):
     def d(self, F: Function, flow: Flow | Mapping[str, Mat]) -> Any:
         """The derivative of F (a function of the scene) along a flow."""
         tangent = flow.tangent() if isinstance(flow, Flow) else dict(flow)
-        value = F(self.tangent(tangent))
-        return _derivative_part(value, self)
+        value = _derivative_part(unwrap(F(self.tangent(tangent))), self)
+        return _opaque(self, value)
 
 
 class CoordinateAccess(ValueError):
@@ -948,7 +986,8 @@ class _LiftedScene(Scene):
 
     @property
     def a(self):
-        return self._cached("a", lambda: self._lift_primitive(self.base.a, None))
+        xs = self._cached("a", lambda: self._lift_primitive(self.base.a, None))
+        return _opaque(self, xs)
 
     def _cached(self, key, build):
         return Scene._cached(self, key, build)
@@ -975,10 +1014,10 @@ class TangentScene(_LiftedScene):
     def __init__(self, base: Scene, flow: Mapping[str, Mat]) -> None:
         self.base = base
         self.flow = _checked_tangent(base, flow)
-        super().__init__(base.n, base.r, DualField(base.field), chart=base.chart, rng=base.rng,
+        super().__init__(base.n, base.r, DualField(base.field), chart=base.chart, rng=base._rng,
                          component=base.component, realization=base.realization,
-                         options=base.options, tracker=base.tracker)
-        self.params, self._param_blocks = base.params, base._param_blocks
+                         options=base._options, tracker=base.tracker)
+        self._params, self._param_blocks = base._params, base._param_blocks
 
     def _lift_primitive(self, M: Any, key: str | None) -> Any:
         return self._lift(M, self.flow.get(key) if key is not None else None)
@@ -1001,10 +1040,10 @@ class ReverseScene(_LiftedScene):
 
     def __init__(self, base: Scene) -> None:
         self.base = base
-        super().__init__(base.n, base.r, RevField(base.field), chart=base.chart, rng=base.rng,
+        super().__init__(base.n, base.r, RevField(base.field), chart=base.chart, rng=base._rng,
                          component=base.component, realization=base.realization,
-                         options=base.options, tracker=base.tracker)
-        self.params, self._param_blocks = base.params, base._param_blocks
+                         options=base._options, tracker=base.tracker)
+        self._params, self._param_blocks = base._params, base._param_blocks
         self.leaves: dict[str, RevMat] = {}
 
     def _lift_primitive(self, M: Any, key: str | None) -> Any:

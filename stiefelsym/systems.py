@@ -51,6 +51,7 @@ import numpy as np
 
 from . import scene as scene_module
 from .matrix import Mat, NeedsCoordinates, block, definite
+from .scalar import unwrap
 from .reverse import Node, Rev, RevMat, Unsupported, gradient as rev_gradient, leaf as rev_leaf
 from .scene import ReverseScene, Scene, _LiftedScene
 
@@ -152,6 +153,7 @@ def complex_coordinates(s: Scene, names: Sequence[Hashable]) -> list[tuple[Hasha
 
 
 def _flat(value: Any) -> list[Any]:
+    value = unwrap(value)
     if isinstance(value, Mat):
         return entries(value)
     if isinstance(value, (list, tuple)):
@@ -441,10 +443,10 @@ def _kinetic_matrix(s: Scene, T: Callable[[Scene, dict], Any], velocity: Point, 
             return layout.project(cols).T.copy()    # column b: ∇T(b_b) − ∇T(0) = K b_b
         except Unsupported:
             pass
-    T0 = T(s, zero_v)
+    T0 = unwrap(T(s, zero_v))
 
     def kinetic(w):
-        return T(s, w) - T0
+        return unwrap(T(s, w)) - T0
 
     coords = layout.coords
     N = len(coords)
@@ -540,7 +542,7 @@ def hamiltonian_flow(s: Scene, H: Callable[[Scene, dict], Any], constraints: Cal
         raise ValueError("the positions and the momenta need as many coordinates")
 
     def scalar_H(t, z):
-        value = H(t, z)
+        value = unwrap(H(t, z))
         if isinstance(value, (Mat, list, tuple, dict)):
             raise TypeError("a Hamiltonian must be a scalar function, not a " + type(value).__name__)
         return value

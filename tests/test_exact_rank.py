@@ -27,7 +27,7 @@ def ad_phi(s):
     cols = []
     for i, j in basis:
         E = s.zeros(n, n, ("n", "n"))
-        E._a[i, j], E._a[j, i] = s.const(1), s.const(-1)
+        E._a[i, j], E._a[j, i] = s._field.const(1), s._field.const(-1)
         cols.append(s.Phi @ E - E @ s.Phi)
     return [[c._view()[a, b] for c in cols] for a, b in basis]
 

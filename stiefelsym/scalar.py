@@ -1,0 +1,256 @@
+"""The numbers a claim sees: one opaque type for every method, and one recorded door.
+
+A claim computes with the numbers of its scene (λ, κ, the entries of X, traces,
+brackets, constants ``s.q(num, den)``); it never looks at them.  Every such number
+reaches claim code as a :class:`Scalar`, whatever the method: a symbolic
+expression, a rational or a residue at a random point, an error-bounded float, a
+degree marker of the structural pass, a dual or reverse number.  A claim therefore
+cannot tell the methods (or the structural pass from the sampled one) apart by the
+type of its numbers, and every way of reading a value (truth value, comparison,
+``int``, ``float``, ``str``, hashing) is refused *and recorded* in the scene's
+record before the refusal is raised: a claim that catches the refusal and computes
+something else is still an ``error``, since the record outlives the exception
+(:func:`stiefelsym.claims.guarded` checks it when the claim returns).
+
+Engine code receives the raw numbers (:func:`raw`, :func:`claim_code`): the
+scene hands a ``Scalar`` only to callers outside the package.
+"""
+from __future__ import annotations
+
+import sys
+from fractions import Fraction
+from typing import Any
+
+#: the modules whose code is the engine (everything else is claim code)
+ENGINE_PREFIX = "stiefelsym."
+
+
+#: how many claims are running (nested: a claim's function may be called inside another's run)
+_RUNNING = [0]
+
+
+def claim_code(depth: int = 2) -> bool:
+    """Whether the caller of the function that calls this one is claim code: code outside the
+    engine's package, while a claim runs (``depth`` frames up: 2 = the caller of the property or
+    method that asks).  Outside a claim's run (the engine's own tests, an interactive session)
+    nothing is claim code."""
+    if not _RUNNING[0]:
+        return False
+    return not sys._getframe(depth).f_globals.get("__name__", "").startswith(ENGINE_PREFIX)
+
+
+class running_claim:
+    """Context of a claim's run: inside it, the scene's doors treat outside code as claim code."""
+
+    __slots__ = ()
+
+    def __enter__(self):
+        _RUNNING[0] += 1
+        return self
+
+    def __exit__(self, *exc):
+        _RUNNING[0] -= 1
+        return False
+
+
+class ValueRead(TypeError):
+    """A claim tried to read the value of a number of its scene."""
+
+
+class EngineOnly(AttributeError):
+    """A claim asked for something only the engine sees (the number system, the sampled point)."""
+
+
+def engine_only(rec: Any, what: str):
+    """Refuse claim code an engine-only object, recording it first."""
+    if rec is not None:
+        rec.refuse(what)
+    raise EngineOnly(f"{what} is the engine's: a claim computes the same way on every method")
+
+
+class Scalar:
+    """A number of the scene, as claim code sees it (see the module's docstring)."""
+
+    __slots__ = ("_x", "_rec")
+    #: the engine's own number types (dual, reverse numbers) defer to an operand of this priority,
+    #: so that a claim's number meets them through its reflected operators
+    __array_priority__ = 1000
+
+    def __init__(self, x: Any, rec: Any) -> None:
+        self._x = x
+        self._rec = rec
+
+    def _symengine_(self) -> Any:
+        """What symengine sees where a symengine number meets this one (engine numbers a claim got
+        from an engine helper): the expression itself."""
+        x = self._x
+        if type(x).__module__.startswith("symengine"):
+            return x
+        from ._lazy import symengine_opaque
+        return symengine_opaque()
+
+    # -- arithmetic: the raw numbers' own, wrapped again ------------------------------------
+    def _other(self, o: Any) -> Any:
+        t = type(o)
+        if t is Scalar:
+            return o._x
+        if t is int or t is Fraction:
+            return o
+        if t is float:
+            raise TypeError("use integers or fractions, not floats, as constants in claims")
+        from .matrix import Mat
+        return None if isinstance(o, Mat) else o
+
+    def _op(self, o: Any, f) -> Any:
+        y = self._other(o)
+        if y is None:
+            return NotImplemented
+        return Scalar(f(self._x, y), self._rec)
+
+    def __add__(self, o):
+        return self._op(o, lambda a, b: a + b)
+
+    def __radd__(self, o):
+        return self._op(o, lambda a, b: b + a)
+
+    def __sub__(self, o):
+        return self._op(o, lambda a, b: a - b)
+
+    def __rsub__(self, o):
+        return self._op(o, lambda a, b: b - a)
+
+    def __mul__(self, o):
+        return self._op(o, lambda a, b: a * b)
+
+    def __rmul__(self, o):
+        return self._op(o, lambda a, b: b * a)
+
+    def __truediv__(self, o):
+        return self._op(o, lambda a, b: a / b)
+
+    def __rtruediv__(self, o):
+        return self._op(o, lambda a, b: b / a)
+
+    def __pow__(self, k):
+        if type(k) is not int:
+            raise TypeError("a number of the scene is raised to integer powers only")
+        return Scalar(self._x ** k, self._rec)
+
+    def __neg__(self):
+        return Scalar(-self._x, self._rec)
+
+    def __pos__(self):
+        return self
+
+    # -- every way of looking at the value: refused and recorded ----------------------------
+    def _read(self, how: str):
+        if self._rec is not None:
+            self._rec.refuse(f"the value of a number ({how})")
+        raise ValueRead(f"a claim computes with the numbers of its scene and never reads them ({how}); "
+                        "return the difference as a residual instead")
+
+    def __bool__(self):
+        self._read("its truth value")
+
+    def __eq__(self, o):
+        self._read("a comparison")
+
+    def __ne__(self, o):
+        self._read("a comparison")
+
+    def __lt__(self, o):
+        self._read("a comparison")
+
+    def __le__(self, o):
+        self._read("a comparison")
+
+    def __gt__(self, o):
+        self._read("a comparison")
+
+    def __ge__(self, o):
+        self._read("a comparison")
+
+    def __hash__(self):
+        self._read("a hash")
+
+    def __int__(self):
+        self._read("int()")
+
+    def __float__(self):
+        self._read("float()")
+
+    def __complex__(self):
+        self._read("complex()")
+
+    def __index__(self):
+        self._read("an index")
+
+    def __abs__(self):
+        self._read("abs()")
+
+    def __round__(self, *a):
+        self._read("round()")
+
+    def __trunc__(self):
+        self._read("trunc()")
+
+    def __floor__(self):
+        self._read("floor()")
+
+    def __ceil__(self):
+        self._read("ceil()")
+
+    def __str__(self):
+        self._read("str()")
+
+    def __format__(self, spec):
+        self._read("format()")
+
+    def __repr__(self) -> str:
+        return "<a number of the scene>"
+
+    def __reduce__(self):
+        self._read("pickling")
+
+    def __iter__(self):
+        raise TypeError("a number of the scene is not iterable")
+
+
+def raw(x: Any) -> Any:
+    """The engine's number behind a claim's :class:`Scalar` (anything else unchanged)."""
+    return x._x if type(x) is Scalar else x
+
+
+def unwrap(v: Any) -> Any:
+    """A claim's value with every :class:`Scalar` replaced by its number (dicts, lists, tuples)."""
+    t = type(v)
+    if t is Scalar:
+        return v._x
+    if t is dict:
+        return {k: unwrap(x) for k, x in v.items()}
+    if t is list:
+        return [unwrap(x) for x in v]
+    if t is tuple:
+        return tuple(unwrap(x) for x in v)
+    return v
+
+
+def wrap(x: Any, rec: Any) -> Any:
+    """x as claim code sees it: numbers become :class:`Scalar` (lists and tuples of them too);
+    matrices, callables and everything else are unchanged."""
+    from .matrix import is_scene_number
+    from .reverse import Rev
+    t = type(x)
+    if t is Scalar:
+        return x
+    if t is Rev:
+        return Scalar(x, rec)
+    if t is list:
+        return [wrap(y, rec) for y in x]
+    if t is tuple:
+        return tuple(wrap(y, rec) for y in x)
+    if t is dict:
+        return {k: wrap(y, rec) for k, y in x.items()}
+    if is_scene_number(x):
+        return Scalar(x, rec)
+    return x
