@@ -80,6 +80,14 @@ class NeedsCoordinates(Exception):
         self.what = what
 
 
+def _refused(tracker: "CoordinateTracker | None", what: str) -> NeedsCoordinates:
+    """The dimension-free scene's refusal of ``what``, recorded in the run's record first (the record
+    outlives the exception): ``raise _refused(tracker, what)``."""
+    if tracker is not None:
+        tracker.refuse(what)
+    return NeedsCoordinates(what)
+
+
 _SCALARS = (int, Fraction)
 UNTYPED = "?"
 
@@ -423,7 +431,7 @@ class Mat:
     def shape(self) -> tuple[int, int]:
         """The numbers of rows and columns (sizes: not offered by the dimension-free backend)."""
         if not _coordinates(self.field):
-            raise NeedsCoordinates("the shape of a matrix")
+            raise _refused(self._tracker, "the shape of a matrix")
         return self._shape()
 
     @property
@@ -582,7 +590,7 @@ class Mat:
         """Entries or sub-blocks.  Reading an ℝⁿ-indexed (or untyped) matrix entrywise is
         recorded; the dimension-free backend has no entries."""
         if not _coordinates(self.field):
-            raise NeedsCoordinates("an entry or a block of a matrix")
+            raise _refused(self._tracker, "an entry or a block of a matrix")
         if not isinstance(idx, tuple) or len(idx) != 2:
             raise TypeError("index a matrix with two indices, M[i, j] or M[i0:i1, j0:j1]")
         if self._tracker is not None and indexed_by_Rn(self._tags):
