@@ -617,3 +617,18 @@ def test_the_engine_still_reads_its_own_numbers():
     s = Scene(3, 2, RationalField(), rng=random.Random(0))
     assert type(s.X[0, 0]).__name__ == "fmpq"
     assert s.field.name == "rational" and s.tr(s.X.T @ s.X) == 2
+
+
+def _branch_on_the_scene_class(s):
+    """False (X = 0): trivially zero where the scene's class is the dimension-free one."""
+    if type(s).__name__ != "Scene":
+        return {"r": s.X - s.X}
+    return {"r": s.X}
+
+
+@pytest.mark.xfail(strict=True, reason="open: the dimension-free scene is another Python class than the "
+                                       "fixed-size one; closing it needs one claim-facing scene class")
+def test_a_claim_that_branches_on_the_scene_class_is_not_proved_for_all_sizes():
+    c = Claim(id="class-branch", paper=("t",), kind="id", section="t", func=_branch_on_the_scene_class,
+              sizes=admissible(4))
+    assert run_one(c, None, "free", 0).verdict not in PASSING
