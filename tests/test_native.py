@@ -385,3 +385,22 @@ def test_degree_markers_of_diagonals_and_constants_equal_the_entrywise_sum():
         d1 = native.backend(G1).from_consts(c).d
         d2 = native.backend(G2).from_obj(np.vectorize(lambda x: G2.const(int(x)), otypes=[object])(c)).d
         assert (d1.num, d1.den, d1.h) == (d2.num, d2.den, d2.h) and G1.constant_bits == G2.constant_bits
+
+
+def test_one_blas_thread_is_local_and_restored():
+    """The float method's BLAS setting is the calling thread's, and it is restored on exit (also
+    when the run raises)."""
+    fn = native._blas_threads_local()
+    if fn is None:
+        pytest.skip("numpy's BLAS is not OpenBLAS with local thread settings")
+    before = fn(3)
+    try:
+        with native.one_blas_thread():
+            assert fn(1) == 1
+        assert fn(3) == 3
+        with pytest.raises(RuntimeError):
+            with native.one_blas_thread():
+                raise RuntimeError
+        assert fn(3) == 3
+    finally:
+        fn(before)
