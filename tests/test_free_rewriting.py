@@ -10,7 +10,7 @@ import symengine as se
 
 from stiefelsym.fields import RationalField
 from stiefelsym.free.algebra import DIMENSIONS, NCPoly, evaluate, symmetric_letter, trace
-from stiefelsym.free.rewriting import (Order, RewritingError, RewritingSystem, complete, critical_pairs,
+from stiefelsym.free.rewriting import (Order, RewritingError, RewritingSystem, SharedMemos, complete, critical_pairs,
                                        is_confluent)
 from stiefelsym.free.scene import A, FreeScene, P, Pt, X, Xt, resolvent_letter, standard_system
 from stiefelsym.scene import Scene
@@ -288,3 +288,41 @@ def test_coefficients_simplify_to_a_canonical_zero_memoized():
         assert simplify_coef(nonzero) == 2 * k + 1
     assert simplify_coef(se.Rational(1, 2)) == se.Rational(1, 2)
     assert nonzero_terms({"a": hidden, "b": nonzero, "c": se.Integer(3)}) == {"b": 2 * k + 1, "c": 3}
+
+
+# --------------------------------------------------------------------------- shared memos
+def test_standard_systems_share_memos_but_not_what_they_used():
+    """Normal forms are functions of the rules: standard systems share their memos; the rules a
+    system's own reductions used (rules_applied) and its trace fallbacks stay its own."""
+    a, b = standard_system(), standard_system()
+    assert a._word_memo is b._word_memo
+    w = NCPoly.word((Xt, X, Pt, X))
+    assert a.reduce(w).rules and {r.name for r in a.rules_applied()} == {"XtX", "PtX"}
+    assert b.rules_applied() == []                       # b reduced nothing yet
+    assert b.reduce(NCPoly.word((X, Pt))).rules == [] and b.rules_applied() == []
+    assert {r.name for r in b.reduce(w).rules} == {"XtX", "PtX"}   # a memo hit, still b's own record
+    assert {r.name for r in b.rules_applied()} == {"XtX", "PtX"}
+    # a rule of its own: its own memos from then on
+    c = standard_system()
+    R = resolvent_letter(se.Symbol("lambda"))
+    c.order.add(R)
+    c.add_rule((A, R), NCPoly.word((R,)) * se.Symbol("lambda") - NCPoly.identity("n"), "resolvent")
+    assert c._word_memo is not a._word_memo and c._word_memo == {}
+    assert standard_system()._word_memo is a._word_memo
+
+
+def test_a_trace_fallback_is_recorded_by_every_system_that_meets_it(monkeypatch):
+    real = RewritingSystem._adjoint_rep
+
+    def falls_back(self, c):
+        self.trace_fallbacks.add(c)
+        self._fallback_events += 1
+        return real(self, c)
+    monkeypatch.setattr(RewritingSystem, "_adjoint_rep", falls_back)
+    tr = trace(NCPoly.word((Xt, P, Xt, P, Xt, A, X)))
+    std, shared = standard_system(), SharedMemos()   # memos of their own: nothing reduced before
+    a, b = (RewritingSystem(std.order.copy(), std.rules, shared=shared) for _ in range(2))
+    a.reduce(tr)
+    assert a.trace_fallbacks
+    b.reduce(tr)
+    assert b.trace_fallbacks == a.trace_fallbacks

@@ -353,3 +353,12 @@ def test_a_symengine_scalar_times_a_block_is_the_blocks_reflected_product():
     assert not (s.lam == s.X) and s.lam != s.X
     with pytest.raises(TypeError):
         s.lam ** s.X
+
+
+def test_the_momentum_maps_of_lazy_scenes_are_built_once_and_are_their_definition():
+    for key in ("Phi", "Psi"):
+        s, t = FreeScene(lazy=True), FreeScene(lazy=True)
+        a, b = getattr(s, key), getattr(t, key)
+        assert type(a) is Mat and a.tracker is s.tracker and b.tracker is t.tracker and a._field is s._field
+        definition = (t.P @ t.X.T - t.X @ t.P.T) if key == "Phi" else (t.X.T @ t.P - t.P.T @ t.X)
+        assert _same(a, definition) and _same(b, definition), key

@@ -264,22 +264,53 @@ def latex_text(s: str) -> str:
     return "".join(out)
 
 
+class SharedMemos:
+    """The memos of every rewriting system with one rule set (the standard rules of (cond_XP)):
+    normal forms and certificates of words and traces are functions of the rules alone, so the
+    scenes of a process share them until one adds a rule.  What a system reports about its own
+    reductions (the rules they used, their trace fallbacks) stays its own."""
+
+    LIMIT = 200_000
+
+    def __init__(self) -> None:
+        self.word: dict = {}
+        self.cycle: dict = {}
+        self.trace: dict = {}
+        self.cert: tuple[dict, dict, dict] = ({}, {}, {})
+
+    def bound(self) -> None:
+        """Empty the memos when they outgrow LIMIT entries (between two systems' uses)."""
+        memos = (self.word, self.cycle, self.trace) + self.cert
+        if sum(len(m) for m in memos) > self.LIMIT:
+            for m in memos:
+                m.clear()
+
+
 class RewritingSystem:
     """Rules on typed words with a deg-lex order; memoized normal forms of words and traces."""
 
     #: a reduction chain longer than this is reported as non-terminating
     max_depth = 500
 
-    def __init__(self, order: Order | None = None, rules: Iterable[Rule] = ()) -> None:
+    def __init__(self, order: Order | None = None, rules: Iterable[Rule] = (),
+                 shared: "SharedMemos | None" = None) -> None:
+        """``shared``: the memos of every system with exactly these rules (see :class:`SharedMemos`),
+        used until a rule is added."""
         self.order = order if order is not None else Order()
         self.rules: list[Rule] = []
         self._lhs: dict[Word, Rule] = {}
         self._lengths: list[int] = []
         #: irreducible cyclic words whose adjoint did not reduce to ± one cyclic word
         self.trace_fallbacks: set[Word] = set()
+        self._fallback_events = 0
         self._clear()
         for r in rules:
             self._insert(r)
+        if shared is not None:
+            shared.bound()
+            self._word_memo, self._cycle_memo, self._trace_memo = shared.word, shared.cycle, shared.trace
+            self._cert_memos = shared.cert
+            self._applied = set()
 
     def _clear(self) -> None:
         self._word_memo: dict[Word, tuple[dict, frozenset]] = {}
@@ -287,6 +318,13 @@ class RewritingSystem:
         self._trace_memo: dict[Word, tuple[dict, frozenset]] = {}
         #: certificates of words, cyclic reductions and trace normal forms (see certify)
         self._cert_memos: tuple[dict, dict, dict] = ({}, {}, {})
+        #: the rule names this system's reductions used, while its memos are shared (the memos then
+        #: hold other systems' reductions too); None: the memos are its own, and say it
+        self._applied: set[str] | None = None
+
+    def _track(self, used: Iterable[str]) -> None:
+        if self._applied is not None:
+            self._applied.update(used)
 
     def copy(self) -> "RewritingSystem":
         return RewritingSystem(self.order.copy(), self.rules)
@@ -423,6 +461,7 @@ class RewritingSystem:
         hit = self._trace_memo.get(c)
         if hit is not None:
             return hit
+        events = self._fallback_events
         red, used = self._cycle_reduce(c)
         out: dict = {}
         for k, v in red.items():
@@ -434,7 +473,10 @@ class RewritingSystem:
             if rep is not None:
                 out[rep] = out[rep] + v * s if rep in out else v * s
         res = (nonzero_terms(out), used)
-        self._trace_memo[c] = res
+        if self._applied is None or self._fallback_events == events:
+            # a shared memo never holds a trace whose reduction met a fallback: every system that
+            # meets it must record it (trace_fallbacks)
+            self._trace_memo[c] = res
         return res
 
     def _adjoint_rep(self, c: Word) -> tuple[Word | None, Coef, frozenset]:
@@ -452,6 +494,7 @@ class RewritingSystem:
             elif k != () and (v == 1 or v == -1):
                 return (c, se.Integer(1), used) if word_key(c) < word_key(k) else (k, v, used)
         self.trace_fallbacks.add(c)
+        self._fallback_events += 1
         return c, se.Integer(1), used
 
     def _traces_nf(self, tm: tuple) -> tuple[dict, frozenset]:
@@ -472,10 +515,13 @@ class RewritingSystem:
     def rules_applied(self) -> list[Rule]:
         """Every rule used by some reduction so far (in rule order): the rules a whole
         computation relied on, including the normalizations made while building it."""
-        names: set[str] = set()
-        for memo in (self._word_memo, self._cycle_memo, self._trace_memo):
-            for _value, used in memo.values():
-                names |= set(used)
+        if self._applied is not None:
+            names: set[str] = self._applied
+        else:
+            names = set()
+            for memo in (self._word_memo, self._cycle_memo, self._trace_memo):
+                for _value, used in memo.values():
+                    names |= set(used)
         return [r for r in self.rules if r.name in names]
 
     def reduce(self, p: NCPoly) -> Reduction:
@@ -496,6 +542,7 @@ class RewritingSystem:
                     v = c * c2 * c3
                     out[k] = out[k] + v if k in out else v
         terms = nonzero_terms(out)
+        self._track(used)
         rules = [r for r in self.rules if r.name in used]
         return Reduction(p, NCPoly(terms, p.row, p.col), rules)
 
@@ -511,7 +558,8 @@ class RewritingSystem:
         check_word(w)
         if w[0].row != w[-1].col:
             raise TypeError(f"tr({word_str(w)}) is not defined: the word is not square")
-        red, _ = self._trace_nf(w)
+        red, used = self._trace_nf(w)
+        self._track(used)
         return NCPoly({((k,) if k != () else (), ()): v for k, v in red.items()}, SCALAR, SCALAR)
 
 
@@ -562,7 +610,8 @@ class RewritingSystem:
         """What :meth:`_adjoint_rep` replaced: tr(c) = sign·tr(c*-word) structurally, and the
         cyclic reduction of c* certifies tr(c) − (its replacement)."""
         sign, ws = star_word(c)
-        d, _ = self._cycle_reduce(min_rotation(ws))
+        d, used = self._cycle_reduce(min_rotation(ws))
+        self._track(used)
         if len(d) == 1:
             (k, v), = d.items()
             v = v * sign
@@ -584,7 +633,8 @@ class RewritingSystem:
         hit = memo.get(c)
         if hit is not None:
             return hit
-        red, _ = self._cycle_reduce(c)
+        red, used = self._cycle_reduce(c)
+        self._track(used)
         out: dict = {}
         _add_scaled(out, self._cycle_cert(c), se.Integer(1))
         for k, v in red.items():
@@ -605,7 +655,8 @@ class RewritingSystem:
                 for (pre, name, post), cv in cert.items():
                     key = (factors, pre, name, post)
                     out[key] = out[key] + pv * cv if key in out else pv * cv
-            red, _ = self._trace_nf(c)
+            red, used = self._trace_nf(c)
+            self._track(used)
             nxt: dict = {}
             for k1, v1 in prefix.items():
                 for k2, v2 in red.items():
@@ -625,7 +676,8 @@ class RewritingSystem:
                 for (factors, pre, name, post), v in self._traces_cert(tm).items():
                     key = (True, factors, w, pre, name, post)
                     steps[key] = steps[key] + c * v if key in steps else c * v
-                tn, _ = self._traces_nf(tm)
+                tn, used = self._traces_nf(tm)
+                self._track(used)
             else:
                 tn = {(): se.Integer(1)}
             wc = self._word_cert(w)

@@ -26,7 +26,7 @@ from ..scene import USER_SCALAR, Flow, PaperObjects, map_entries
 from .algebra import (DIMENSIONS, Letter, NCPoly, NeedsCoordinates, as_coef, coef_latex, derivation,
                       letter_pair, record_refusal, refuse, skew_letter, substitute, symmetric_letter, trace)
 from .mat import FreeBackend, FreeDualBackend, entry_of, one_block
-from .rewriting import (_NONZERO_NUMBER_TYPES, Cofactor, Hypothesis, Order, Reduction, RewritingSystem,
+from .rewriting import (_NONZERO_NUMBER_TYPES, Cofactor, SharedMemos, Hypothesis, Order, Reduction, RewritingSystem,
                         is_simplified, nonzero_terms, simplify_coef)
 from .traces import gradient
 
@@ -147,12 +147,15 @@ def _standard_rules() -> tuple:
 
 
 _STANDARD_RULES: tuple | None = None
+#: the memos of every standard system (until it gets a rule of its own)
+_STANDARD_MEMOS = SharedMemos()
 
 
 def standard_system() -> RewritingSystem:
     """(cond_XP) as rules: XᵀX → I_r, PᵀX → −XᵀP (order X < P < A < Xᵀ < Pᵀ); a fresh system
-    (its own order, rules and memos) on the shared, checked rules."""
-    return RewritingSystem(Order([X, P, A, Xt, Pt]), _standard_rules())
+    (its own order and record of what it used) on the shared, checked rules, with the memos of
+    every standard system until it gets a rule of its own."""
+    return RewritingSystem(Order([X, P, A, Xt, Pt]), _standard_rules(), shared=_STANDARD_MEMOS)
 
 
 def resolvent_letter(mu: Any, k: int = 1) -> Letter:
@@ -309,6 +312,10 @@ class FreeDualField(DualField):
 
 
 # ---------------------------------------------------------------------------
+#: the momentum maps Φ, Ψ of a lazy free scene: (entry, index spaces), built once (see _constant_object)
+_CONSTANT_OBJECTS: dict[str, tuple | None] = {"Phi": None, "Psi": None}
+
+
 class FreeScene(PaperObjects):
     """T*V_{n,r} for all n, r at once: the scene interface over the free algebra."""
 
@@ -343,9 +350,26 @@ class FreeScene(PaperObjects):
 
     # -- primitives -----------------------------------------------------------
     def _cached(self, key: str, build: Callable[[], Any]) -> Any:
-        if key not in self._cache:
-            self._cache[key] = build()
-        return self._cache[key]
+        hit = self._cache.get(key)
+        if hit is None:
+            if key in _CONSTANT_OBJECTS and type(self) is FreeScene and self._field.lazy:
+                hit = self._cache[key] = self._constant_object(key, build)
+            else:
+                hit = self._cache[key] = build()
+        return hit
+
+    def _constant_object(self, key: str, build: Callable[[], Any]) -> Any:
+        """An object of the paper that is one polynomial in the letters X, P (the momentum maps):
+        built once by its definition on a lazy scene (lazy scenes keep expressions as built, in
+        letters every scene shares, so every one builds the same polynomial), wrapped per scene."""
+        hit = _CONSTANT_OBJECTS[key]
+        if hit is None:
+            value = build()
+            if not (isinstance(value, Mat) and value._shape() == (1, 1) and not value._coords
+                    and value._field is self._field):
+                return value
+            hit = _CONSTANT_OBJECTS[key] = (entry_of(value), value.tags)
+        return one_block(hit[0], self._field, hit[1], self._tracker)
 
     def _prim(self, key: str, poly: NCPoly) -> Mat:
         """The 1×1 matrix holding a primitive letter (overridden by the tangent scene)."""
