@@ -248,7 +248,17 @@ _REDUCTION_LATEX: dict = {}
 
 
 def latex_text(s: str) -> str:
-    """Plain text (a rule's reason) escaped for LaTeX text mode."""
+    """Plain text (a rule's reason) escaped for LaTeX text mode (memoized)."""
+    hit = _LATEX_TEXT.get(s)
+    if hit is None:
+        hit = memo_put(_LATEX_TEXT, s, _latex_text(s), 10_000)
+    return hit
+
+
+_LATEX_TEXT: dict = {}
+
+
+def _latex_text(s: str) -> str:
     out = []
     for ch in s:
         if ch == "\\":
