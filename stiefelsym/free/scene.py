@@ -147,6 +147,8 @@ def _standard_rules() -> tuple:
 
 
 _STANDARD_RULES: tuple | None = None
+#: the polynomial of each letter (the word of one letter)
+_LETTER_POLYS: dict = {}
 #: the memos of every standard system (until it gets a rule of its own)
 _STANDARD_MEMOS = SharedMemos()
 
@@ -333,6 +335,7 @@ class FreeScene(PaperObjects):
         self.options: dict[str, Any] = {}
         self.params: dict[str, Any] = {}
         self._cache: dict[str, Any] = {}
+        self._letters: dict[Letter, Mat] = {}
         self._resolvents: dict[Letter, Any] = {}
         self._extras: set[str] = set()
         self._named: dict[str, Letter] = {}
@@ -376,11 +379,13 @@ class FreeScene(PaperObjects):
         return one_block(poly, self.field, poly.shape, self.tracker)
 
     def _letter(self, L: Letter) -> Mat:
-        key = "letter:" + L
-        hit = self._cache.get(key)
+        hit = self._letters.get(L)
         if hit is None:
             self._named[str(L)] = L
-            hit = self._cache[key] = self._prim(str(L), _w(L))
+            poly = _LETTER_POLYS.get(L)
+            if poly is None or next(iter(poly.terms))[1][0] is not L:   # letters that print alike differ
+                poly = _LETTER_POLYS[L] = _w(L)   # polynomials are immutable: one per letter
+            hit = self._letters[L] = self._prim(str(L), poly)
         return hit
 
     @property
