@@ -8,9 +8,9 @@ read or written.  Every backend implements the same operations on whole matrices
 =========================  =====================================================================
 ``ModularBackend``         GF(p) matrices in flint's ``nmod_mat``
 ``RationalBackend``        ℚ matrices in flint's ``fmpq_mat``
-``Float64Backend``         numpy float64 values with entrywise bounds on their rounding error
-                           (products by the dot-product bound γ_k |A||B|, inverses by a residual
-                           bound in the Frobenius norm) and the scale of their terms
+``Float64Backend``         numpy float64 values with a normwise (Frobenius) bound on their
+                           rounding error (products by the dot-product bound γ_k ‖A‖_F ‖B‖_F,
+                           inverses by a residual bound) and the scale of their terms
 ``DegreeBackend``          one degree/height marker bounding every entry (a structural bound:
                            O(1) per operation instead of one marker per entry)
 ``DualBackend``            pairs (value, derivative) over any backend: forward mode in one pass
@@ -330,7 +330,8 @@ class Float64Backend(Backend):
     """float64 matrices with a sound first-order normwise error bound (the Frobenius norm of the
     error of every operation: Higham's γ_k bounds with ‖|A||B|‖_F ≤ ‖A‖_F ‖B‖_F, propagated
     errors by the triangle inequality) and a residual-checked inverse; numpy/BLAS does the
-    arithmetic, one product per product (and one more for the term scales).
+    arithmetic, one float64 product per product (and one float32 product for the term scales, see
+    :func:`_scale_product`).
 
     The bound of an operation depends only on the bounds, norms and shapes of its operands, never
     on how the values were computed, so the backend computes them as cheaply as it can: a product
