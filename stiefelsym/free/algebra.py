@@ -557,6 +557,12 @@ class NCPoly:
             row, col = self.row, o.col
         else:
             raise TypeError(f"cannot multiply a {self.row}×{self.col} by a {o.row}×{o.col} polynomial")
+        st, ot = self.terms, o.terms
+        if len(st) == 1 and len(ot) == 1:   # one term by one term (letters, monomials): no sums
+            ((t1, w1), c1), = st.items()
+            ((t2, w2), c2), = ot.items()
+            c = c2 if type(c1) is ONE_TYPE else (c1 if type(c2) is ONE_TYPE else cprod(c1, c2))
+            return NCPoly._raw({(merge_traces(t1, t2) if t1 and t2 else t1 or t2, w1 + w2): c}, row, col)
         out: dict = {}
         one = ONE_TYPE
         for (t1, w1), c1 in self.terms.items():

@@ -610,6 +610,13 @@ class FreeScene(PaperObjects):
                     self._const_mat(self.system.normal_form(gradient(h, P))))
         return self._cached_for("grad", H, build)
 
+    def _dual_field(self) -> "FreeDualField":
+        """The dual numbers over this scene's field (one for every tangent scene of this scene)."""
+        f = self._cache.get("dual field")
+        if f is None:
+            f = self._cache["dual field"] = FreeDualField(self._field)
+        return f
+
     def _cached_for(self, key: str, obj: Any, build: Callable[[], Any]) -> Any:
         full = f"{key}:{id(obj)}"
         if full not in self._cache:
@@ -706,7 +713,7 @@ class FreeTangentScene(FreeScene):
         super().__init__(base.tracker, base.system)
         self.base = base
         self.flow = dict(flow)
-        self._field = FreeDualField(base.field)
+        self._field = base._dual_field()
         self.params = base.params
         self._resolvents = base._resolvents
         self._extras = base._extras
