@@ -409,15 +409,15 @@ class Mat:
     def _new(self, a, tags=None, other: "Mat | None" = None) -> "Mat":
         tracker = self._tracker if self._tracker is not None else (other._tracker if other is not None else None)
         coords = self._coords or (other is not None and other._coords)
-        return Mat._wrap(a, self.field, self._tags if tags is None else tags, tracker, coords)
+        return Mat._wrap(a, self._field, self._tags if tags is None else tags, tracker, coords)
 
     def _new_n(self, s, tags=None, other: "Mat | None" = None) -> "Mat":
         tracker = self._tracker if self._tracker is not None else (other._tracker if other is not None else None)
         coords = self._coords or (other is not None and other._coords)
-        return Mat._wrap_native(s, self.field, self._tags if tags is None else tags, tracker, coords)
+        return Mat._wrap_native(s, self._field, self._tags if tags is None else tags, tracker, coords)
 
     def _norm(self, a: np.ndarray) -> np.ndarray:
-        f = self.field.normalize
+        f = self._field.normalize
         out = np.empty(a.shape, dtype=object)
         for idx, x in np.ndenumerate(a):
             out[idx] = f(x)
@@ -430,14 +430,14 @@ class Mat:
     @property
     def shape(self) -> tuple[int, int]:
         """The numbers of rows and columns (sizes: not offered by the dimension-free backend)."""
-        if not _coordinates(self.field):
+        if not _coordinates(self._field):
             raise _refused(self._tracker, "the shape of a matrix")
         return self._shape()
 
     @property
     def T(self) -> "Mat":
         tags = (self._tags[1], self._tags[0])
-        star = self.field.star
+        star = self._field.star
         if star is None and self._n is not None:
             return self._new_n(backend(self._field).T(self._n), tags)
         a = self._view().T.copy()
@@ -491,7 +491,7 @@ class Mat:
             be, a, b = nat
             return self._new_n(be.matmul(a, b), tags, o)
         if k1 == 0:
-            z = Mat.zeros(m, k, self.field, tags, self._tracker_of(o))
+            z = Mat.zeros(m, k, self._field, tags, self._tracker_of(o))
             return self._new(z._obj, tags, o)
         return self._new(self._norm(np.dot(self._view(), o._view())), tags, o)
 
@@ -503,13 +503,13 @@ class Mat:
         if isinstance(c, float):
             raise TypeError("use integers or fractions, not floats, as constants in claims")
         if isinstance(c, _SCALARS):
-            c = self.field.const(c)
+            c = self._field.const(c)
         be = backend(self._field)
         if be is not None and be.accepts(c):
             return self._new_n(be.smul(self._nat(), c))
         out = np.empty(self._shape(), dtype=object)
         for idx, x in np.ndenumerate(self._view()):
-            out[idx] = self.field.normalize(x * c)
+            out[idx] = self._field.normalize(x * c)
         return self._new(out)
 
     def __mul__(self, c):
@@ -524,8 +524,8 @@ class Mat:
         if isinstance(c, Mat):
             return NotImplemented
         if isinstance(c, _SCALARS):
-            return self._scalar(self.field.const(Fraction(1) / Fraction(c)))
-        return self._scalar(self.field.const(1) / c)
+            return self._scalar(self._field.const(Fraction(1) / Fraction(c)))
+        return self._scalar(self._field.const(1) / c)
 
     # -- linear algebra ---------------------------------------------------
     def trace(self):
@@ -538,15 +538,15 @@ class Mat:
         if m != k:
             raise ValueError("trace of a non-square matrix")
         unify(self._tags[0], self._tags[1], "a trace", self._tracker)
-        entry_trace = self.field.entry_trace
+        entry_trace = self._field.entry_trace
         if entry_trace is None and self._n is not None:
             return backend(self._field).trace(self._n)
         a = self._view()
-        acc = self.field.const(0) if entry_trace is None else None
+        acc = self._field.const(0) if entry_trace is None else None
         for i in range(m):
             x = a[i, i] if entry_trace is None else entry_trace(a[i, i])
             acc = x if acc is None else acc + x
-        return self.field.normalize(acc)
+        return self._field.normalize(acc)
 
     def inv(self) -> "Mat":
         m, k = self._shape()
@@ -555,11 +555,11 @@ class Mat:
         t = unify(self._tags[0], self._tags[1], "an inverse", self._tracker)
         be = backend(self._field)
         if be is not None:
-            out = Mat._wrap_native(be.inv(self._nat()), self.field, (t, t), self._tracker)
+            out = Mat._wrap_native(be.inv(self._nat()), self._field, (t, t), self._tracker)
         else:
-            I = Mat.identity(m, self.field)
-            sol = self.field.solve(self._view().tolist(), I._obj.tolist())
-            out = Mat._rows(sol, self.field, (t, t), self._tracker)
+            I = Mat.identity(m, self._field)
+            sol = self._field.solve(self._view().tolist(), I._obj.tolist())
+            out = Mat._rows(sol, self._field, (t, t), self._tracker)
         out._coords = self._coords
         return out
 
@@ -571,10 +571,10 @@ class Mat:
             return be.inner(a, b)
         if nat is not None:
             return (self.T @ o)._trace()
-        acc = self.field.const(0)
+        acc = self._field.const(0)
         for x, y in zip(self._view().flat, o._view().flat):
             acc = acc + x * y
-        return self.field.normalize(acc)
+        return self._field.normalize(acc)
 
     def is_zero(self) -> bool:
         """Whether every entry is zero at this point (engine only: for claim code, a test of
@@ -583,13 +583,13 @@ class Mat:
             engine_only(self._tracker, "a test of a matrix's values (M.is_zero())")
         if self._n is not None:
             return backend(self._field).is_zero(self._n)
-        return all(self.field.is_zero(x) for x in self._view().flat)
+        return all(self._field.is_zero(x) for x in self._view().flat)
 
     # -- the one door to entries (recorded) ----------------------------------
     def __getitem__(self, idx):
         """Entries or sub-blocks.  Reading an ℝⁿ-indexed (or untyped) matrix entrywise is
         recorded; the dimension-free backend has no entries."""
-        if not _coordinates(self.field):
+        if not _coordinates(self._field):
             raise _refused(self._tracker, "an entry or a block of a matrix")
         if not isinstance(idx, tuple) or len(idx) != 2:
             raise TypeError("index a matrix with two indices, M[i, j] or M[i0:i1, j0:j1]")
@@ -601,7 +601,7 @@ class Mat:
                 out = out.reshape(1, -1) if isinstance(idx[0], (int, np.integer)) else out.reshape(-1, 1)
             full = [isinstance(i, slice) and i == slice(None) for i in idx]
             tags = tuple(t if f else UNTYPED for t, f in zip(self._tags, full))
-            return Mat._wrap(out.copy(), self.field, tags, self._tracker,
+            return Mat._wrap(out.copy(), self._field, tags, self._tracker,
                              self._coords or (self._tracker is None and indexed_by_Rn(self._tags)))
         return Scalar(out, self._tracker) if claim_code() else out
 
@@ -615,7 +615,7 @@ class Mat:
         raise TypeError("a matrix has no truth value: return it as a residual")
 
     def __repr__(self) -> str:
-        return f"Mat{self._shape()}[{self._tags[0]}x{self._tags[1]}]({self.field.name})"
+        return f"Mat{self._shape()}[{self._tags[0]}x{self._tags[1]}]({self._field.name})"
 
 
 def _join(tags: Sequence[str]) -> str:
@@ -645,7 +645,7 @@ def block(rows: Sequence[Sequence[Mat]]) -> Mat:
             t = unify(t, row[j]._tags[1], f"block column {j + 1}", tracker)
         col_tags.append(t)
     coords = any(b._coords for row in rows for b in row)
-    field = rows[0][0].field
+    field = rows[0][0]._field
     tags = (_join(row_tags), _join(col_tags))
     be = backend(field)
     if be is not None and all(b._field is field for row in rows for b in row):
@@ -670,4 +670,4 @@ def mat_map(M: Mat, f) -> Mat:
     out = np.empty(M._shape(), dtype=object)
     for idx, x in np.ndenumerate(M._view()):
         out[idx] = f(x)
-    return Mat._wrap(out, M.field, M._tags, M._tracker, M._coords)
+    return Mat._wrap(out, M._field, M._tags, M._tracker, M._coords)

@@ -101,35 +101,37 @@ class Scalar:
         from .matrix import Mat
         return None if isinstance(o, Mat) else o
 
-    def _op(self, o: Any, f) -> Any:
-        y = self._other(o)
-        if y is None:
-            return NotImplemented
-        return Scalar(f(self._x, y), self._rec)
-
     def __add__(self, o):
-        return self._op(o, lambda a, b: a + b)
+        y = o._x if type(o) is Scalar else self._other(o)
+        return NotImplemented if y is None else Scalar(self._x + y, self._rec)
 
     def __radd__(self, o):
-        return self._op(o, lambda a, b: b + a)
+        y = self._other(o)
+        return NotImplemented if y is None else Scalar(y + self._x, self._rec)
 
     def __sub__(self, o):
-        return self._op(o, lambda a, b: a - b)
+        y = o._x if type(o) is Scalar else self._other(o)
+        return NotImplemented if y is None else Scalar(self._x - y, self._rec)
 
     def __rsub__(self, o):
-        return self._op(o, lambda a, b: b - a)
+        y = self._other(o)
+        return NotImplemented if y is None else Scalar(y - self._x, self._rec)
 
     def __mul__(self, o):
-        return self._op(o, lambda a, b: a * b)
+        y = o._x if type(o) is Scalar else self._other(o)
+        return NotImplemented if y is None else Scalar(self._x * y, self._rec)
 
     def __rmul__(self, o):
-        return self._op(o, lambda a, b: b * a)
+        y = self._other(o)
+        return NotImplemented if y is None else Scalar(y * self._x, self._rec)
 
     def __truediv__(self, o):
-        return self._op(o, lambda a, b: a / b)
+        y = o._x if type(o) is Scalar else self._other(o)
+        return NotImplemented if y is None else Scalar(self._x / y, self._rec)
 
     def __rtruediv__(self, o):
-        return self._op(o, lambda a, b: b / a)
+        y = self._other(o)
+        return NotImplemented if y is None else Scalar(y / self._x, self._rec)
 
     def __pow__(self, k):
         if type(k) is not int:
@@ -235,22 +237,30 @@ def unwrap(v: Any) -> Any:
     return v
 
 
+_NUMBER: list = []      # is_scene_number and the reverse number type, bound on first use
+
+
+def _number_test():
+    if not _NUMBER:
+        from .matrix import is_scene_number
+        from .reverse import Rev
+        _NUMBER[:] = [is_scene_number, Rev]
+    return _NUMBER
+
+
 def wrap(x: Any, rec: Any) -> Any:
     """x as claim code sees it: numbers become :class:`Scalar` (lists and tuples of them too);
     matrices, callables and everything else are unchanged."""
-    from .matrix import is_scene_number
-    from .reverse import Rev
     t = type(x)
     if t is Scalar:
         return x
-    if t is Rev:
-        return Scalar(x, rec)
     if t is list:
         return [wrap(y, rec) for y in x]
     if t is tuple:
         return tuple(wrap(y, rec) for y in x)
     if t is dict:
         return {k: wrap(y, rec) for k, y in x.items()}
-    if is_scene_number(x):
+    is_number, rev = _NUMBER or _number_test()
+    if t is rev or is_number(x):
         return Scalar(x, rec)
     return x

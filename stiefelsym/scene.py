@@ -28,7 +28,7 @@ import numpy as np
 
 from .fields import DegreeField, Dual, DualField, Field, FloatField, DegenerateError, SymbolicField
 from .matrix import CoordinateTracker, Mat, block, check_element, definite, scalar_matrix, unify
-from .scalar import claim_code, engine_only, raw, unwrap, wrap
+from .scalar import Scalar as _Scalar, claim_code, engine_only, raw, unwrap, wrap
 from .native import backend
 from .reverse import Rev, RevField, RevMat, Unsupported, gradient as rev_gradient, leaf as rev_leaf
 
@@ -73,8 +73,15 @@ PARAM_BLOCK_MIN = 64
 def _opaque(scene: Any, x: Any) -> Any:
     """A value of a coordinate scene as its caller sees it: claim code gets opaque numbers
     (:mod:`.scalar`), the engine the field's own."""
-    if claim_code(3) and getattr(getattr(scene, "_field", None), "coordinates", True):
+    if claim_code(3) and getattr(scene._field, "coordinates", True):
         return wrap(x, scene._tracker)
+    return x
+
+
+def _number(scene: Any, x: Any) -> Any:
+    """A number of a coordinate scene as its caller sees it (see :func:`_opaque`)."""
+    if claim_code(3) and getattr(scene._field, "coordinates", True):
+        return _Scalar(x, scene._tracker)
     return x
 
 
@@ -156,30 +163,30 @@ class PaperObjects:
     def killing(self, a: Mat, b: Mat) -> Scalar:
         """<a, b> = -1/2 tr(ab)."""
         x = self._field.normalize((a @ b)._trace() * self._field.const(Fraction(-1, 2)))
-        return _opaque(self, x)
+        return _number(self, x)
 
     def scalar(self, name: str) -> Scalar:
         """A fresh free scalar parameter of the claim's own (never one of the chart's, whatever its name)."""
         x = self._param(USER_SCALAR + user_name(name, "scalar"))
-        return _opaque(self, x)
+        return _number(self, x)
 
     @property
     def lam(self) -> Scalar:
         """The spectral parameter lambda."""
         x = self._param("lambda")
-        return _opaque(self, x)
+        return _number(self, x)
 
     @property
     def kappa(self) -> Scalar:
         """The parameter kappa of the Jensen metrics (EM)."""
         x = self._param("kappa")
-        return _opaque(self, x)
+        return _number(self, x)
 
     @property
     def eps(self) -> Scalar:
         """The magnetic parameter epsilon."""
         x = self._param("epsilon")
-        return _opaque(self, x)
+        return _number(self, x)
 
 
 class Scene(PaperObjects):
@@ -219,7 +226,7 @@ class Scene(PaperObjects):
         unify(a.tags[1], b.tags[0], "a product", a.tracker)
         unify(a.tags[0], b.tags[1], "a trace", a.tracker)
         x = self._field.normalize(a._inner(b.T) * self._field.const(Fraction(-1, 2)))
-        return _opaque(self, x)
+        return _number(self, x)
 
     # the problem is fixed once the scene exists: read-only; what tells the methods (or the
     # sampled point) apart is the engine's, and claim code that asks is refused (and recorded)
@@ -243,13 +250,13 @@ class Scene(PaperObjects):
             if m and any(b[0] == m.group(1) for b in self._param_blocks):
                 self._expand_param_blocks()
         if name not in self._params:
-            value = self.field.param(name, self._rng)
+            value = self._field.param(name, self._rng)
             hard = self._options.get("hard")
             if hard is not None and self._rng is not None:
                 new = hard.rewrite(self, name, value)
                 if new is not value:
                     self._options.setdefault("hard_hits", []).append(name)
-                    value = self.field.exact_input(new)
+                    value = self._field.exact_input(new)
             self._params[name] = value
         return self._params[name]
 
@@ -267,32 +274,32 @@ class Scene(PaperObjects):
 
     def const(self, q: int | Fraction) -> Scalar:
         x = self._field.const(q)
-        return _opaque(self, x)
+        return _number(self, x)
 
     def q(self, num: int, den: int = 1) -> Scalar:
         """The rational constant num/den as an element of the scene's field."""
         x = self._field.const(Fraction(num, den))
-        return _opaque(self, x)
+        return _number(self, x)
 
     def mat(self, rows, tags=("?", "?")) -> Mat:
         """A matrix from rows of scalars, with the spaces of its rows and columns.  An
         R^n-indexed one (tags such as ("n", "n")) is recorded as built from coordinates;
         an untyped one (tags "?") is recorded when it meets R^n; a named coordinate
         space ("so", "cond", ...) never meets R^n or R^r."""
-        return Mat.from_rows(rows, self.field, tags, self.tracker)
+        return Mat.from_rows(rows, self._field, tags, self.tracker)
 
     def zeros(self, m: int, k: int, tags=("?", "?")) -> Mat:
-        return Mat.zeros(m, k, self.field, tags, self.tracker)
+        return Mat.zeros(m, k, self._field, tags, self.tracker)
 
     def identity(self, m: int, tag="?") -> Mat:
-        return Mat.identity(m, self.field, tag, self.tracker)
+        return Mat.identity(m, self._field, tag, self.tracker)
 
     def _param_block(self, name: str, m: int, k: int, kind: str, tags) -> Mat | None:
         """A skew, symmetric or general m x k matrix of fresh parameters drawn at once and kept in
         the backend's native storage (recorded as one block, expanded into :attr:`params` only
         when an entry is asked for by name), or None where parameters are drawn one at a time
         (no backend, hard cases, a field without block draws, or a name already drawn)."""
-        be = backend(self.field)
+        be = backend(self._field)
         if (be is None or self._rng is None or not hasattr(be, "from_array") or self._options.get("hard") is not None
                 or any(b[0] == name for b in self._param_blocks)
                 or param_name(name, 0, 1 if kind == "skew" else 0) in self._params):
@@ -304,7 +311,7 @@ class Scene(PaperObjects):
             cells = (np.repeat(np.arange(m), k), np.tile(np.arange(k), m))
         else:
             cells = np.triu_indices(m, 1 if kind == "skew" else 0)
-        vals = self.field.param_values(self._rng, count)
+        vals = self._field.param_values(self._rng, count)
         if vals is None:
             return None
         arr = np.zeros((m, k), dtype=vals.dtype)
@@ -314,14 +321,14 @@ class Scene(PaperObjects):
         elif kind == "sym":
             arr[cells[1], cells[0]] = vals
         self._param_blocks.append((name, cells, vals))
-        return Mat._wrap_native(be.from_array(arr), self.field, tags, self.tracker)
+        return Mat._wrap_native(be.from_array(arr), self._field, tags, self.tracker)
 
     def _expand_param_blocks(self) -> None:
         """Enter every parameter drawn in a block into :attr:`params` under its own name."""
         blocks, self._param_blocks[:] = list(self._param_blocks), []
         for name, (rows, cols), vals in blocks:
             for i, j, x in zip(rows.tolist(), cols.tolist(), vals.tolist()):
-                self._params[param_name(name, i, j)] = self.field.param_from_raw(x)
+                self._params[param_name(name, i, j)] = self._field.param_from_raw(x)
 
     def _point_values(self) -> dict[str, Any]:
         """Every parameter of the point drawn so far, by name (a witness's coordinates)."""
@@ -393,7 +400,7 @@ class Scene(PaperObjects):
         D[range(r), range(r)] = 1
         if self.component % 2 == 1:
             D[0, 0] = -1
-        J = Mat._consts(D, self.field, ("n", "r"), self.tracker)
+        J = Mat._consts(D, self._field, ("n", "r"), self.tracker)
         X = Q @ J
         W = self._skew_params(f"{prefix}W", r, "r")
         Z = self._general_params(f"{prefix}Z", n, r, ("n", "r"))
@@ -448,16 +455,16 @@ class Scene(PaperObjects):
         a = M._a.copy()
         a[:m, k:] = -a[:m, k:]
         a[m:, :k] = -a[m:, :k]
-        return Mat._wrap(a, M.field, M.tags, M.tracker, M._coords)   # J M J, J = diag(I, -I): covariant
+        return Mat._wrap(a, M._field, M.tags, M.tracker, M._coords)   # J M J, J = diag(I, -I): covariant
 
     def _complex_point(self):
         n, r = self.n, self.r
         S = self.realify(self._skew_params("cS", n, "n"), self._sym_params("cH", n, "n"))
         I2 = self.identity(2 * n, "n+n")
-        Q = Mat._rows(self.field.solve((I2 + S).T._a.tolist(), (I2 - S).T._a.tolist()),
-                          self.field, ("n+n", "n+n"), self.tracker).T
+        Q = Mat._rows(self._field.solve((I2 + S).T._a.tolist(), (I2 - S).T._a.tolist()),
+                          self._field, ("n+n", "n+n"), self.tracker).T
         cols = list(range(r)) + list(range(n, n + r))
-        Z = Mat._wrap(Q._a[:, cols].copy(), self.field, ("n+n", "r+r"), self.tracker)
+        Z = Mat._wrap(Q._a[:, cols].copy(), self._field, ("n+n", "r+r"), self.tracker)
         W = self.realify(self._skew_params("cW", r, "r"), self._sym_params("cK", r, "r"))
         Y = self.realify(self._general_params("cY", n, r, ("n", "r")), self._general_params("cV", n, r, ("n", "r")))
         return Z, Z @ W + (I2 - Z @ Z.T) @ Y
@@ -488,9 +495,9 @@ class Scene(PaperObjects):
             if self.chart == "equivariant":
                 return self._sym_params("A", self.n, "n")
             xs = self._cached("a", lambda: [self._param(f"a_{i + 1}") for i in range(self.n)])
-            be = backend(self.field)
+            be = backend(self._field)
             if be is not None:
-                return Mat._wrap_native(be.diag(xs), self.field, ("n", "n"), self.tracker)
+                return Mat._wrap_native(be.diag(xs), self._field, ("n", "n"), self.tracker)
             M = self.zeros(self.n, self.n, ("n", "n"))
             a = M._a
             for i, x in enumerate(xs):
@@ -551,16 +558,16 @@ class Scene(PaperObjects):
                 raise TypeError("the operator acts on matrices of so(n)")
             unify(xi.tags[0], "n", "the operator on so(n)", xi.tracker)
             unify(xi.tags[1], "n", "the operator on so(n)", xi.tracker)
-            half = xi.field.const(Fraction(1, 2))
+            half = xi._field.const(Fraction(1, 2))
             # coordinates of the skew part in the orthonormal basis E_i ∧ E_j
-            comps = [xi.field.normalize((xi._a[i, j] - xi._a[j, i]) * half) for (i, j) in basis]
-            out = Mat.zeros(self.n, self.n, xi.field, ("n", "n"), xi.tracker)
+            comps = [xi._field.normalize((xi._a[i, j] - xi._a[j, i]) * half) for (i, j) in basis]
+            out = Mat.zeros(self.n, self.n, xi._field, ("n", "n"), xi.tracker)
             out._coords = xi._coords
             for k, (i, j) in enumerate(basis):
-                acc = xi.field.const(0)
+                acc = xi._field.const(0)
                 for l, c in enumerate(comps):
                     acc = acc + c * coeffs[k, l]
-                acc = xi.field.normalize(acc)
+                acc = xi._field.normalize(acc)
                 out._a[i, j], out._a[j, i] = acc, -acc
             return out
         return apply
@@ -577,7 +584,7 @@ class Scene(PaperObjects):
 
     def tr(self, M: Mat) -> Scalar:
         x = M._trace()
-        return _opaque(self, x)
+        return _number(self, x)
 
     def resolvent(self, mu: Scalar) -> Mat:
         """(mu I_n - A)^{-1}."""
@@ -589,7 +596,7 @@ class Scene(PaperObjects):
                 for i in range(self.n):
                     M._a[i, i] = self.const(1) / (mu - self.A._a[i, i])
                 return M
-            return (scalar_matrix(mu, self.n, self.field, "n", self.tracker) - self.A).inv()
+            return (scalar_matrix(mu, self.n, self._field, "n", self.tracker) - self.A).inv()
         return self._cached_for("res", mu, build)
 
     def scalar_matrix(self, c: Scalar, m: int, tag="?") -> Mat:
@@ -684,7 +691,7 @@ class Scene(PaperObjects):
 
     # gradients as pairs (d/dX, d/dP) of n x r matrices: <u, v> = tr(u_Xᵀ v_X) + tr(u_Pᵀ v_P)
     def _pair_dot(self, u: tuple[Mat, Mat], v: tuple[Mat, Mat]) -> Scalar:
-        return self.field.normalize(u[0]._inner(v[0]) + u[1]._inner(v[1]))
+        return self._field.normalize(u[0]._inner(v[0]) + u[1]._inner(v[1]))
 
     @staticmethod
     def _pair_omega(u: tuple[Mat, Mat]) -> tuple[Mat, Mat]:
@@ -722,7 +729,7 @@ class Scene(PaperObjects):
         """An adjoint from the tape as an n x r matrix of the scene (zero when absent)."""
         if g is None:
             return self.zeros(self.n, self.r, ("n", "r"))
-        return g._retyped(self.field, ("n", "r"), self.tracker)
+        return g._retyped(self._field, ("n", "r"), self.tracker)
 
     def _constraint_jacobian(self) -> list[list[Scalar]]:
         return self._cached("J", lambda: [list(gX._view().flat) + list(gP._view().flat)
@@ -735,7 +742,7 @@ class Scene(PaperObjects):
             G = self._constraint_gradients()
             rows = [list(gX._view().flat) + list(gP._view().flat) for gX, gP in G]
             omega = [list(gP._view().flat) + [-x for x in gX._view().flat] for gX, gP in G]
-            C = (Mat._rows(rows, self.field) @ Mat._rows(omega, self.field).T)._view()
+            C = (Mat._rows(rows, self._field) @ Mat._rows(omega, self._field).T)._view()
             return [[C[i, j] for j in range(len(G))] for i in range(len(G))]
         C0 = self._cached("C0", build)
         return _opaque(self, C0)
@@ -744,12 +751,12 @@ class Scene(PaperObjects):
         acc = self.const(0)
         for x, y in zip(u, v):
             acc = acc + x * y
-        return self.field.normalize(acc)
+        return self._field.normalize(acc)
 
     def canonical_bracket(self, F: Function, G: Function) -> Scalar:
         """{F, G}_0 = sum (dF/de, dG/dp) - (dF/dp, dG/de)."""
         x = self._pair_dot(self.gradient(F), self._pair_omega(self.gradient(G)))
-        return _opaque(self, x)
+        return _number(self, x)
 
     def _dirac_inverse(self) -> list[list[Scalar]]:
         def build():
@@ -757,7 +764,7 @@ class Scene(PaperObjects):
             m = len(C0)
             I = [[self.const(1 if i == j else 0) for j in range(m)] for i in range(m)]
             try:
-                return self.field.solve(C0, I)
+                return self._field.solve(C0, I)
             except DegenerateError as exc:
                 raise DegenerateError("the constraint bracket matrix {F_i, F_j}_0 is singular here") from exc
         return self._cached("C", build)
@@ -775,7 +782,7 @@ class Scene(PaperObjects):
             for j in range(len(Gs)):
                 acc = acc + FiF[i] * C[i][j] * FjG[j]
         x = self._field.normalize(acc)
-        return _opaque(self, x)
+        return _number(self, x)
 
     def canonical_flow(self, H: Function) -> Flow:
         """The Hamiltonian vector field of H for the ambient bracket {,}_0."""
@@ -797,7 +804,7 @@ class Scene(PaperObjects):
         # the chart's point, which is on V exactly (a Cayley transform of a skew matrix of exact
         # inputs, or [I; 0]); the closed form is exact there, so the bounds carry over.  Degree
         # markers follow the structure of the computation the exact fields make.
-        approx = isinstance(self.field, (FloatField, DegreeField))
+        approx = isinstance(self._field, (FloatField, DegreeField))
         if not self._closed_form_applies(approx):
             return None
         X, P, sym = self.X, self.P, self._sym
@@ -812,8 +819,8 @@ class Scene(PaperObjects):
         there rational functions make the closed form's products swell past any memory budget,
         where the solved system is refused early by the symbolic budget."""
         if (not CLOSED_FORM_MULTIPLIERS or self.realization != "standard"
-                or self.chart not in ("cayley", "equivariant") or not (self.field.exact or approx)
-                or isinstance(self.field, SymbolicField) and self.chart == "cayley"):
+                or self.chart not in ("cayley", "equivariant") or not (self._field.exact or approx)
+                or isinstance(self._field, SymbolicField) and self.chart == "cayley"):
             return False
         return approx or (self.X.T @ self.X - self.Ir).is_zero()
 
@@ -827,7 +834,7 @@ class Scene(PaperObjects):
         sym(XᵀẊ) = 0, then Λ from sym(ẊᵀP + XᵀṖ) = 0, each in closed form; the result is kept
         only when both conditions and the assumed shape of the Λ-direction hold exactly at the
         point (over an exact field; elsewhere None, and the r(r+1) system is solved)."""
-        if isinstance(self.field, DegreeField) or not self._closed_form_applies(False):
+        if isinstance(self._field, DegreeField) or not self._closed_form_applies(False):
             return None
         X, P, sym = self.X, self.P, self._sym
         Pi = sym(X.T @ base[0])
@@ -859,7 +866,7 @@ class Scene(PaperObjects):
                 w = [self._dot(Ci, FjH) for Ci in self._dirac_inverse()]
             else:                                # one right-hand side: solve, do not invert
                 try:
-                    w = [row[0] for row in self.field.solve(self.constraint_bracket_matrix(), [[x] for x in FjH])]
+                    w = [row[0] for row in self._field.solve(self.constraint_bracket_matrix(), [[x] for x in FjH])]
                 except DegenerateError as exc:
                     raise DegenerateError("the constraint bracket matrix {F_i, F_j}_0 is singular here") from exc
             Xd, Pd = zX, zP
@@ -917,7 +924,7 @@ class Scene(PaperObjects):
         M = [[self._pair_dot(g, u[3]) for u in units] for g in Gs]
         b = [[-self._pair_dot(g, base)] for g in Gs]
         try:
-            sol = self.field.solve(M, b)
+            sol = self._field.solve(M, b)
         except DegenerateError as exc:
             raise DegenerateError(f"{what} are not unique here") from exc
         Lam = self.zeros(r, r, ("r", "r"))
@@ -1014,7 +1021,7 @@ class TangentScene(_LiftedScene):
     def __init__(self, base: Scene, flow: Mapping[str, Mat]) -> None:
         self.base = base
         self.flow = _checked_tangent(base, flow)
-        super().__init__(base.n, base.r, DualField(base.field), chart=base.chart, rng=base._rng,
+        super().__init__(base.n, base.r, DualField(base._field), chart=base.chart, rng=base._rng,
                          component=base.component, realization=base.realization,
                          options=base._options, tracker=base.tracker)
         self._params, self._param_blocks = base._params, base._param_blocks
@@ -1024,14 +1031,14 @@ class TangentScene(_LiftedScene):
 
     def _lift(self, M: Any, dot: Mat | None = None) -> Any:
         if isinstance(M, Mat):
-            return M._dual(dot, self.field, self.tracker)
+            return M._dual(dot, self._field, self.tracker)
         if isinstance(M, list):
             return [self._lift(x) for x in M]
         if isinstance(M, tuple):
             return tuple(self._lift(x) for x in M)
         if callable(M):
             return M
-        return Dual(M, self.base.field.const(0))
+        return Dual(M, self.base._field.const(0))
 
 
 class ReverseScene(_LiftedScene):
@@ -1040,7 +1047,7 @@ class ReverseScene(_LiftedScene):
 
     def __init__(self, base: Scene) -> None:
         self.base = base
-        super().__init__(base.n, base.r, RevField(base.field), chart=base.chart, rng=base._rng,
+        super().__init__(base.n, base.r, RevField(base._field), chart=base.chart, rng=base._rng,
                          component=base.component, realization=base.realization,
                          options=base._options, tracker=base.tracker)
         self._params, self._param_blocks = base._params, base._param_blocks
@@ -1055,7 +1062,7 @@ class ReverseScene(_LiftedScene):
                 s = self.leaves.setdefault(key, rev_leaf(v))
             else:
                 s = RevMat(v)
-            return Mat._wrap_native(s, self.field, M.tags, self.tracker, M._coords)
+            return Mat._wrap_native(s, self._field, M.tags, self.tracker, M._coords)
         if isinstance(M, list):
             return [self._lift_primitive(x, None) for x in M]
         if isinstance(M, tuple):
@@ -1121,8 +1128,8 @@ def _flatten_value(v: Any, symmetric_lists: bool) -> list[Any]:
 def _derivative_part(v: Any, scene: Scene) -> Any:
     """The ε-part of a value over the dual numbers (a Mat, a scalar, or a dict/list/tuple of
     them): whole matrices natively where the dual backend holds them."""
-    if isinstance(v, Mat) and v._n is not None and type(v._n) is tuple and getattr(v._field, "base", None) is scene.field:
-        return Mat._wrap_native(v._n[1], scene.field, v.tags, scene.tracker, v._coords)
+    if isinstance(v, Mat) and v._n is not None and type(v._n) is tuple and getattr(v._field, "base", None) is scene._field:
+        return Mat._wrap_native(v._n[1], scene._field, v.tags, scene.tracker, v._coords)
     if isinstance(v, dict):
         return {k: _derivative_part(x, scene) for k, x in v.items()}
     if isinstance(v, (list, tuple)):
@@ -1136,7 +1143,7 @@ def map_entries(v: Any, f, scene: Any) -> Any:
         a = np.empty(v._a.shape, dtype=object)
         for idx, x in np.ndenumerate(v._a):
             a[idx] = f(x)
-        return Mat._wrap(a, scene.field, v.tags, scene.tracker, v._coords)
+        return Mat._wrap(a, scene._field, v.tags, scene.tracker, v._coords)
     if isinstance(v, dict):
         return {k: map_entries(x, f, scene) for k, x in v.items()}
     if isinstance(v, (list, tuple)):
