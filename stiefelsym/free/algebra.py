@@ -521,6 +521,8 @@ class NCPoly:
     def __mul__(self, o: Any):
         if isinstance(o, NCPoly):
             return self._mul_poly(o)
+        if isinstance(o, se.Basic):   # a coefficient (what as_coef returns for it), first
+            return self._scale(o)
         if isinstance(o, Dual):
             return Dual(self * o.a, self * o.b)
         if _is_matrix(o):

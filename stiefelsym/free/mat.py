@@ -154,6 +154,12 @@ class FreeDualBackend(FreeBackend):
                 return Dual(nf(v), nf(d))
         return super().matmul(a, b)
 
+    def smul(self, a: Any, c: Any) -> Any:
+        if type(a) is Dual and type(c) is not Dual:   # (x + yε)·c = xc + ycε, each normalized
+            nf = self._base_nf
+            return Dual(nf(a.a * c), nf(a.b * c))
+        return super().smul(a, c)
+
     def add(self, a: Any, b: Any) -> Any:
         if type(a) is Dual and type(b) is Dual:
             nf = self._base_nf
