@@ -22,13 +22,13 @@ from .certificate_check import check_certificate
 from .claims import Claim, Count, Rank
 from .methods import _base_result, division_probe, _entries, _short, call_claim
 from .results import CheckOutcome, Result
+from .free import FreeScene, FreeSolveError, NeedsCoordinates, RewritingError
+from .free.algebra import REFUSED, recording, refusals
+from .free.certificates import CertificateWriter
+from .free.rewriting import latex_text
 
 
 def run_free(claim: Claim, func: Callable | None = None) -> Result:
-    from .free import FreeScene, FreeSolveError, NeedsCoordinates, RewritingError
-    from .free.algebra import REFUSED, recording, refusals
-    from .free.rewriting import latex_text
-
     func = func or claim.func
     res = _base_result(claim, None, None, "free", None)
     t0 = time.perf_counter()
@@ -161,8 +161,6 @@ def probe_divisions(claim: Claim, func: Callable) -> str:
 
 def certify_entries(scene, entries) -> dict:
     """The certificate data of the entries (position, reduction, _) of a proof."""
-    from .free.certificates import CertificateWriter
-
     writer = CertificateWriter(scene._resolvents)
     for pos, red, _k in entries:
         writer.add(pos, scene.system.certify(red.residual, red.normal_form))
