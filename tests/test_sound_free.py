@@ -49,6 +49,9 @@ TRICKS = {
     "a coordinate-scene method": lambda s: s.jacobian,
     "the ambient gradient": lambda s: s.gradient(lambda t: t.tr(t.P.T @ t.P)),
     "the Lagrange multipliers": lambda s: s.multiplier_flow(lambda t: t.tr(t.P.T @ t.P)),
+    "a flow that moves A": lambda s: s.tangent({"A": s.A}),
+    "a value along a flow off T*V": lambda s: s.d(s.Phi, {"X": s.X, "P": s.P}),
+    "a Hamiltonian that is no trace form": lambda s: s.dirac_flow(lambda t: t.X),
 }
 
 

@@ -589,9 +589,12 @@ class FreeScene(PaperObjects):
         if not isinstance(value, NCPoly):
             c = as_coef(value)
             if c is None:
+                what = f"a Hamiltonian that is not a trace form ({type(value).__name__})"
+                record_refusal(what, self.tracker)
                 raise TypeError(f"a Hamiltonian must be a trace form, got {type(value).__name__}")
             value = NCPoly.scalar(c)
         if not value.is_scalar:
+            record_refusal("a Hamiltonian that is not a scalar trace form", self.tracker)
             raise TypeError("a Hamiltonian must be a scalar trace form")
         return value
 
@@ -659,6 +662,7 @@ class FreeScene(PaperObjects):
     def tangent(self, flow: Mapping[str, Mat]) -> "FreeTangentScene":
         for key in dict(flow):
             if key not in MOVABLE:
+                record_refusal(f"a tangent vector that moves {key!r}", self.tracker)
                 raise KeyError(f"a tangent vector moves {', '.join(MOVABLE)}, not {key!r} "
                                "(A and the resolvents are constant along flows)")
         return FreeTangentScene(self, flow)
@@ -682,6 +686,7 @@ class FreeScene(PaperObjects):
         images = {}
         for key, v in tangent.items():
             if key not in MOVABLE or key not in self._named:
+                record_refusal(f"a flow that moves {key!r}", self.tracker)
                 raise KeyError(f"the flow moves {key!r}, which is not a letter of this scene")
             images[self._named[key]] = entry_of(v) if isinstance(v, Mat) else v
         relations = [(_w(Xt, X), COND_XX), (_w(Xt, P) + _w(Pt, X), COND_XP)]
@@ -689,6 +694,7 @@ class FreeScene(PaperObjects):
             relations += [(_w(Yt, Y), "Y^T Y = I_r"), (_w(Yt, Q) + _w(Qt, Y), "Y^T Q + Q^T Y = 0")]
         for rel, why in relations:
             if not self.system.is_zero(derivation(rel, images)):
+                record_refusal(f"the derivative of a value along a flow that does not preserve {why}", self.tracker)
                 raise ValueError(f"the flow does not preserve {why}: differentiate a function of the "
                                  "scene (d(lambda s: ..., flow)) instead of a value")
         return images
@@ -726,6 +732,7 @@ class FreeTangentScene(FreeScene):
         else:
             b = entry_of(dot) if isinstance(dot, Mat) else dot
             if not isinstance(b, NCPoly) or b.shape != poly.shape:
+                record_refusal(f"a flow whose {key}-component is not a {poly.row}×{poly.col} block", self.tracker)
                 raise TypeError(f"the flow's {key}-component must be a {poly.row}×{poly.col} polynomial")
         return one_block(Dual(poly, b), self.field, poly.shape, self.tracker)
 
@@ -740,6 +747,7 @@ class FreeTangentScene(FreeScene):
         return _lift_mat(self.base.zeros(m, k, tags), self.field)
 
     def dirac_flow(self, H: Function) -> Flow:
+        record_refusal("a flow built along a tangent", self.tracker)
         raise TypeError("flows are built on the base scene, not along a tangent")
 
 
@@ -784,6 +792,7 @@ def solve_multipliers(equations: list[NCPoly], unknowns: list[Letter],
                     continue
                 sol = system.normal_form(sol)
                 if U.adjoint == U and U.adjoint_sign == 1 and not system.is_zero(sol.star() - sol):
+                    record_refusal(f"the multiplier {U}, not symmetric")
                     raise FreeSolveError(f"the solution for {U} is not symmetric: {sol}")
                 solved[U] = sol
                 todo.remove(U)
@@ -794,6 +803,7 @@ def solve_multipliers(equations: list[NCPoly], unknowns: list[Letter],
                 break
         if not progress:
             names = ", ".join(map(str, todo))
+            record_refusal(f"the multipliers {names}, not solvable one at a time")
             raise FreeSolveError(f"the multipliers {names} are not of the form c·U + (terms free of U) = 0 "
                                  "after reduction; solve them with a coordinate backend")
     return solved
