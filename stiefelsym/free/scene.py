@@ -26,7 +26,7 @@ from ..scene import USER_SCALAR, Flow, PaperObjects, map_entries
 from .algebra import (DIMENSIONS, Letter, NCPoly, NeedsCoordinates, as_coef, coef_latex, derivation,
                       letter_pair, record_refusal, refuse, skew_letter, substitute, symmetric_letter, trace)
 from .mat import FreeBackend, FreeDualBackend, entry_of, one_block
-from .rewriting import (_NONZERO_NUMBER_TYPES, Cofactor, SharedMemos, Hypothesis, Order, Reduction, RewritingSystem,
+from .rewriting import (_NONZERO_NUMBER_TYPES, _SIMPLE, Cofactor, SharedMemos, Hypothesis, Order, Reduction, RewritingSystem,
                         is_simplified, nonzero_terms, simplify_coef)
 from .traces import gradient
 
@@ -260,10 +260,13 @@ class FreeField(Field):
     def normalize(self, x: Any) -> Any:
         if type(x) is NCPoly:
             if self.lazy:   # collect coefficients only
-                numbers = _NONZERO_NUMBER_TYPES   # the first test of is_simplified, inlined
-                for c in x.terms.values():
-                    if type(c) not in numbers and not is_simplified(c):
-                        return NCPoly._raw(nonzero_terms(x.terms), x.row, x.col)
+                numbers, simple = _NONZERO_NUMBER_TYPES, _SIMPLE   # is_simplified, inlined
+                try:
+                    for c in x.terms.values():
+                        if type(c) not in numbers and c not in simple:
+                            return NCPoly._raw(nonzero_terms(x.terms), x.row, x.col)
+                except TypeError:   # an unhashable coefficient: not known to be simplified
+                    return NCPoly._raw(nonzero_terms(x.terms), x.row, x.col)
                 return x    # polynomials are immutable: nothing to collect, the same one
             return self.system.normal_form(x)
         c = as_coef(x)
