@@ -313,9 +313,9 @@ class RewritingSystem:
         #: irreducible cyclic words whose adjoint did not reduce to ± one cyclic word
         self.trace_fallbacks: set[Word] = set()
         self._fallback_events = 0
-        self._clear()
         for r in rules:
-            self._insert(r)
+            self._insert(r, clear=False)
+        self._clear()
         if shared is not None:
             shared.bound()
             self._word_memo, self._cycle_memo, self._trace_memo = shared.word, shared.cycle, shared.trace
@@ -370,14 +370,15 @@ class RewritingSystem:
         self._insert(rule)
         return rule
 
-    def _insert(self, rule: Rule) -> None:
+    def _insert(self, rule: Rule, clear: bool = True) -> None:
         self.rules.append(rule)
         self._lhs[rule.lhs] = rule
         if len(rule.lhs) not in self._lengths:
             self._lengths = sorted(self._lengths + [len(rule.lhs)])
         for L in rule.lhs:
             self.order.add(L)
-        self._clear()
+        if clear:
+            self._clear()
 
     def rule(self, name: str) -> Rule:
         for r in self.rules:
