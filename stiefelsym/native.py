@@ -784,6 +784,8 @@ class DualBackend(Backend):
         B = self.base
         if type(c) is not Dual:
             return (B.smul(a[0], c), B.smul(a[1], c))
+        if self.field.base.is_exact_zero(c.b):       # a constant: (a c)' = a' c, exactly
+            return (B.smul(a[0], c.a), B.smul(a[1], c.a))
         return (B.smul(a[0], c.a), B.add(B.smul(a[1], c.a), B.smul(a[0], c.b)))
 
     def T(self, a):

@@ -12,7 +12,7 @@ import pytest
 
 from stiefelsym import native
 from stiefelsym import scene as scene_mod
-from stiefelsym.fields import DegreeField, ErrNum, FloatField, ModularField, RationalField
+from stiefelsym.fields import DegreeField, Dual, DualField, ErrNum, FloatField, ModularField, RationalField
 from stiefelsym.matrix import Mat, block
 from stiefelsym.methods import degree_bound, run_points
 from stiefelsym.scene import Scene
@@ -404,3 +404,21 @@ def test_one_blas_thread_is_local_and_restored():
         assert fn(3) == 3
     finally:
         fn(before)
+
+
+@pytest.mark.parametrize("make", [lambda: ModularField(P61), RationalField, FloatField])
+def test_a_constant_times_a_dual_matrix_drops_only_a_zero_term(make):
+    """(a c)' = a' c + a c' with c' = 0: the shortcut gives the full formula's value (exact
+    fields) or a bound that still holds (float64)."""
+    F = make()
+    rng = random.Random(0)
+    D = DualField(F)
+    be, B = native.backend(D), native.backend(F)
+    a0, a1 = rand_mat(F, 3, 2, rng)._nat(), rand_mat(F, 3, 2, rng)._nat()
+    c = F.param("c", rng)
+    got = be.smul((a0, a1), Dual(c, F.const(0)))
+    full = (B.smul(a0, c), B.add(B.smul(a1, c), B.smul(a0, F.const(0))))
+    if F.exact:
+        assert got[0] == full[0] and got[1] == full[1]
+    else:
+        assert np.array_equal(got[1].v, full[1].v) and got[1].e <= full[1].e
