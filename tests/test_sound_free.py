@@ -74,7 +74,8 @@ MAT_RECORDS = _mat_records_its_refusals()
 
 def _cases():
     return [pytest.param(name, marks=pytest.mark.xfail(
-        not MAT_RECORDS, strict=True, reason="Mat.shape and Mat.__getitem__ raise NeedsCoordinates without recording it"))
+        not MAT_RECORDS, strict=True,
+        reason="Mat.shape and Mat.__getitem__ raise NeedsCoordinates without recording it"))
         if name in MATRIX_DOORS else name for name in sorted(TRICKS)]
 
 

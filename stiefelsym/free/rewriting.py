@@ -29,8 +29,9 @@ from typing import Iterable, Sequence
 
 import symengine as se
 
-from .algebra import (DIMENSIONS, SCALAR, Coef, Letter, NCPoly, Word, check_word, cycle_rep, merge_traces,
-                      memo_put, min_rotation, record_refusal, star_word, trace, word_key, word_latex, word_str)
+from .algebra import (DIMENSIONS, SCALAR, Coef, Letter, NCPoly, Word, check_word, cprod, csum, cycle_rep,
+                      memo_put, merge_traces, min_rotation, record_refusal, star_word, trace, word_key, word_latex,
+                      word_str)
 
 
 class RewritingError(ValueError):
@@ -550,8 +551,8 @@ class RewritingSystem:
             for w2, c2 in wn.items():
                 for t2, c3 in tn.items():
                     k = (t2, w2)
-                    v = c * c2 * c3
-                    out[k] = out[k] + v if k in out else v
+                    v = cprod(cprod(c, c2), c3)   # c·c2·c3, memoized
+                    out[k] = csum(out[k], v) if k in out else v
         terms = nonzero_terms(out)
         self._track(used)
         rules = [r for r in self.rules if r.name in used]
@@ -696,7 +697,8 @@ class RewritingSystem:
                 for t2, c3 in tn.items():
                     for (pre, name, post), v in wc.items():
                         key = (False, t2, (), pre, name, post)
-                        steps[key] = steps[key] + c * c3 * v if key in steps else c * c3 * v
+                        x = cprod(cprod(c, c3), v)   # c·c3·v, memoized
+                        steps[key] = csum(steps[key], x) if key in steps else x
         rules = {r.name: r for r in self.rules}
         terms: dict = {}
         hyps: dict = {}
@@ -707,7 +709,8 @@ class RewritingSystem:
             for cf in rule.cofactors:
                 hyps[cf.hyp.name] = cf.hyp
                 key = (in_trace, factors, w, pre + cf.left, cf.hyp.name, cf.right + post)
-                terms[key] = terms[key] + v * cf.coef if key in terms else v * cf.coef
+                x = cprod(v, cf.coef)
+                terms[key] = csum(terms[key], x) if key in terms else x
         out = []
         for (in_trace, factors, w, left, name, right), v in terms.items():
             v = simplify_coef(v)

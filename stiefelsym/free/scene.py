@@ -26,8 +26,8 @@ from ..scene import USER_SCALAR, Flow, PaperObjects, map_entries
 from .algebra import (DIMENSIONS, Letter, NCPoly, NeedsCoordinates, as_coef, coef_latex, derivation,
                       letter_pair, record_refusal, refuse, skew_letter, substitute, symmetric_letter, trace)
 from .mat import FreeBackend, FreeDualBackend, entry_of, one_block
-from .rewriting import (_NONZERO_NUMBER_TYPES, _SIMPLE, Cofactor, SharedMemos, Hypothesis, Order, Reduction, RewritingSystem,
-                        is_simplified, nonzero_terms, simplify_coef)
+from .rewriting import (_NONZERO_NUMBER_TYPES, _SIMPLE, Cofactor, Hypothesis, Order, Reduction, RewritingSystem,
+                        SharedMemos, nonzero_terms, simplify_coef)
 from .traces import gradient
 
 Function = Callable[[Any], Any]
