@@ -280,3 +280,35 @@ def test_a_point_at_a_pole_is_redrawn_and_reported_never_a_crash():
     for kind in ("rational", "modular"):
         res = run_points(_claim(always_at_a_pole), 3, 1, kind, 0)
         assert res.verdict == "inconclusive" and "degenerate" in res.message
+
+
+def _neumann_flow(s):
+    """The printed Neumann flow (No)."""
+    k = 1 + 2 * s.kappa
+    X, P, A = s.X, s.P, s.A
+    return {"X": P - k * (X @ P.T @ X),
+            "P": -(A @ X) - X @ P.T @ P + k * (P @ X.T @ P) + X @ X.T @ A @ X}
+
+
+def _lax_L(t):
+    return t.lam * t.Phi + t.X @ t.X.T - t.lam * t.lam * t.A
+
+
+def big_lax(s):
+    """dL/dt = [M, L] along the printed Neumann flow (LA1)."""
+    return {"LA1": s.d(_lax_L, _neumann_flow(s)) - comm(s.Phi - s.lam * s.A, _lax_L(s))}
+
+
+def big_lax_swapped(s):
+    """Corrupted: the commutator in the wrong order."""
+    return {"LA1": s.d(_lax_L, _neumann_flow(s)) - comm(_lax_L(s), s.Phi - s.lam * s.A)}
+
+
+def test_float_lax_check_at_a_size_with_parameter_blocks():
+    """At (16, 8) the float64 backend's shortcuts all act (parameter blocks, products met again
+    or transposed, the diagonal A, the selection [D; 0], float32 term scales, one BLAS thread):
+    the true Lax equation is numeric, the corrupted one fails with an exact rational witness."""
+    good = run_float(_claim(big_lax), 16, 8, 0)
+    assert good.verdict == "numeric", good.message
+    bad = run_float(_claim(big_lax_swapped), 16, 8, 0)
+    assert bad.verdict == "fails" and bad.witness["field"] == "rational"
