@@ -763,6 +763,8 @@ def _lift_mat(M: Mat, field: Field) -> Mat:
 
 def _map_value(v: Any, scene: FreeScene) -> Any:
     """The ε-part of a value computed on a tangent scene, normalized."""
+    if type(v) is Mat and v._shape() == (1, 1):   # one block (what map_entries makes of it, at once)
+        return Mat._wrap_native(_eps_part(entry_of(v), scene), scene.field, v.tags, scene.tracker, v._coords)
     return map_entries(v, lambda x: _eps_part(x, scene), scene)
 
 
