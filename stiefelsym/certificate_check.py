@@ -308,6 +308,9 @@ def check_entry(entry: dict, ctx: Context) -> int:
         except Rejected as exc:
             raise Rejected(f"term {k + 1}: {exc}") from None
     for key in set(target) | set(total):
+        a, b = target.get(key), total.get(key)
+        if a is not None and b is not None and a == b:   # the same expression: the difference is 0
+            continue
         if not is_zero(target.get(key, 0) - total.get(key, 0)):
             traces, word = key
             shown = "*".join(f"tr({'*'.join(c)})" for c in traces) + ("*" if traces and word else "") \
