@@ -1086,6 +1086,10 @@ def _float_component(claim: Claim, n: int, r: int, seed: int, func: Callable, op
         except DegenerateError as exc:
             run.log.append(f"{field.name}: {exc}")
             continue
+        finally:
+            release = getattr(field.__dict__.get("_backend"), "release", None)
+            if release is not None:      # the evaluation is over: its remembered products may go
+                release()
         run.ranks, run.count_problems, run.field = ranks, counts, field.name
         if not entries:
             run.status = "empty"

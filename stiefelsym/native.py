@@ -343,6 +343,16 @@ class Float64Backend(Backend):
 
     def __init__(self, field) -> None:
         self.field = field
+        #: the matrices holding a remembered product or transpose (see :meth:`release`)
+        self._holders: list[F64] = []
+
+    def release(self) -> None:
+        """Forget every remembered product and transpose.  They tie matrices to each other in
+        cycles, which only the garbage collector would free; the float method releases them when an
+        evaluation is over, so its arrays go as soon as the scene does."""
+        holders, self._holders = self._holders, []
+        for a in holders:
+            a.prods = a.t = None
 
     def accepts(self, x):
         return type(x) is ErrNum and isinstance(x.v, float)
@@ -430,6 +440,7 @@ class Float64Backend(Backend):
         prods = a.prods
         if prods is None:
             prods = a.prods = {}
+            self._holders.append(a)
         hit = prods.get(id(b))
         if hit is not None:
             return hit[1]
@@ -471,6 +482,7 @@ class Float64Backend(Backend):
         if t is None:
             t = a.t = F64(a.v.T, a.e, a.m.T, a.nv)
             t.t = a
+            self._holders += (a, t)
             if a.diag is not None:
                 t.diag = a.diag
         return t
