@@ -150,8 +150,7 @@ def casimirs_one_short(s):
 
 def torus_one_larger(s):
     """Corrupted (dim_fol): tori of dimension (dim_fol) + 1."""
-    funcs = sec6.torus_functions(s)
-    rows = s.jacobian(lambda t: [f(t) for f in funcs]) + s.jacobian(s.constraints.build)
+    rows = sec6.differentials(s, sec6.torus_functions(s)) + s.jacobian(s.constraints.build)
     n, r = s.n, s.r
     return {"rank": Rank(s.mat(rows), 2 * sec6.dim_V(n, r) - sec6.torus_twice_printed(n, r) // 2 - 1 + r * (r + 1))}
 
@@ -188,6 +187,21 @@ def test_dimension_lemmas_hold_at_small_sizes(catalog, n, r):
         assert res.expected, res.line()
         if c.id not in ERRATA or not c.expects_failure(n, r):
             assert res.verdict in ("proved", "checked"), res.line()
+
+
+@pytest.mark.parametrize("n, r", [(3, 2), (4, 4)])
+def test_differentials_by_gradients_are_the_jacobian_rows(n, r):
+    """The rows df from s.gradient (reverse mode) are the rows of s.jacobian (2nr forward passes)."""
+    import random
+
+    from stiefelsym import Scene
+    from stiefelsym.fields import ModularField
+    s = Scene(n, r, ModularField(2305843009213693951), chart="cayley", rng=random.Random(7))
+    funcs = sec6.torus_functions(s)
+    by_gradients = sec6.differentials(s, funcs)
+    by_jacobian = s.jacobian(lambda t: [f(t) for f in funcs])
+    assert len(by_gradients) == len(by_jacobian) == len(funcs)
+    assert [[str(x) for x in row] for row in by_gradients] == [[str(x) for x in row] for row in by_jacobian]
 
 
 def test_l6_as_printed_fails_from_r_3(catalog):
