@@ -36,11 +36,14 @@ from .scalar import Scalar, claim_code, engine_only
 class CoordinateTracker:
     """Records, append-only, how claim code looked at coordinates of ℝⁿ; knows the sizes n, r."""
 
-    __slots__ = ("_used", "dims", "_sizes", "_refused")
+    __slots__ = ("_used", "dims", "_sizes", "_refused", "spaces")
 
     def __init__(self, dims: dict[str, int] | None = None) -> None:
         self._used: list[str] = []
         self._refused: list[str] = []
+        #: the spaces whose coordinates are recorded: ℝⁿ, and ℝʳ too where the chart's reduction
+        #: also uses O(r) (the equivariant chart of the metric realization)
+        self.spaces: tuple[str, ...] = ("n",)
         #: numeric sizes of the definite spaces (None for the dimension-free scene)
         self.dims = dict(dims) if dims is not None else None
         self._sizes: dict[str, int | None] = {}
@@ -110,6 +113,18 @@ def involves_Rn(tag: str) -> bool:
     return d is not None and "n" in d
 
 
+def watched(tags, tracker: "CoordinateTracker | None") -> bool:
+    """Whether reading coordinates of a matrix with these spaces is recorded: indexed by ℝⁿ, or by
+    ℝʳ where the tracker's chart also reduces by O(r)."""
+    if tracker is None or tracker.spaces == ("n",):
+        return indexed_by_Rn(tags)
+    for t in tags:
+        d = definite(t)
+        if d is not None and any(x in d for x in tracker.spaces):
+            return True
+    return False
+
+
 def indexed_by_Rn(tags) -> bool:
     """Whether one of the index spaces has a summand ℝⁿ.
 
@@ -141,7 +156,7 @@ def unify(a: str, b: str, what: str, tracker: "CoordinateTracker | None") -> str
                         "(index types are checked even when the sizes agree)")
     if a == UNTYPED or b == UNTYPED:
         other = b if a == UNTYPED else a
-        if tracker is not None and involves_Rn(other):
+        if tracker is not None and watched((other,), tracker):
             tracker.touch("untyped matrices used as R^n-indexed")
         return other
     raise TypeError(f"{what}: {_space_text(a)} and {_space_text(b)} do not match")
@@ -233,7 +248,7 @@ class Mat:
             raise ValueError("a matrix needs a 2-d array of entries")
         for idx in np.ndindex(arr.shape):
             arr[idx] = check_element(field, a[idx])
-        self._init(arr, field, tags, tracker, indexed_by_Rn(tags))
+        self._init(arr, field, tags, tracker, watched(tags, tracker))
 
     def _init(self, a: np.ndarray | None, field: Field, tags, tracker, coords: bool, native: Any = None) -> None:
         self._obj = a
@@ -369,7 +384,7 @@ class Mat:
         if any(len(row) != len(rows[0]) for row in rows):
             raise ValueError("the rows of a matrix must have equal lengths")
         M = cls._rows([[check_element(field, x) for x in row] for row in rows], field, tags, tracker)
-        M._coords = indexed_by_Rn(M._tags)
+        M._coords = watched(M._tags, tracker)
         if M._coords and tracker is not None:
             tracker.touch("matrices built entrywise")
         return M
@@ -593,7 +608,7 @@ class Mat:
             raise _refused(self._tracker, "an entry or a block of a matrix")
         if not isinstance(idx, tuple) or len(idx) != 2:
             raise TypeError("index a matrix with two indices, M[i, j] or M[i0:i1, j0:j1]")
-        if self._tracker is not None and indexed_by_Rn(self._tags):
+        if self._tracker is not None and watched(self._tags, self._tracker):
             self._tracker.touch("matrix entries")
         out = self._view()[idx]
         if isinstance(out, np.ndarray):

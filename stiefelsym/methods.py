@@ -515,10 +515,15 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
             # a stated reason is relied on only for the reviewed catalog: a user's claims file
             # cannot buy the reduction with a sentence
             reason = claim.equivariance if claim.reviewed else ""
+            if scene.tracker.spaces != ("n",):
+                reason = ""      # a stated reason speaks of O(n); this chart also reduces by O(r)
             if not missing and (not coords or reason):
                 why = (COVARIANT_BY_CONSTRUCTION if not coords else
                        f"(the claim reads {', '.join(coords)}) {reason}")
-                charts.append((scene, EQUIVARIANT_REDUCTION.format(why=why)))
+                stated = scene.equivariant_reduction() or EQUIVARIANT_REDUCTION
+                if scene.tracker.spaces != ("n",):
+                    why = why.replace("coordinates of R^n", "coordinates of R^n or R^r")
+                charts.append((scene, stated.format(why=why)))
                 evaluations = [_evaluate(checks, field, lambda R: _exact_rank(
                     R, field, randomized, lambda: degree_bound(claim, n, r, func).numerator, seed))]
             else:

@@ -212,6 +212,8 @@ class Scene(PaperObjects):
         self._realization = realization
         self._options = dict(options or {})
         self._tracker = tracker if tracker is not None else CoordinateTracker({"n": n, "r": r})
+        if chart == "equivariant" and realization == "metric" and tracker is None:
+            self._tracker.spaces = ("n", "r")     # the chart's reduction uses O(r) as well
         self._params: dict[str, Any] = {}
         self._param_blocks: list[tuple[str, Any, Any]] = []
         self._cache: dict[str, Any] = {}
@@ -390,6 +392,17 @@ class Scene(PaperObjects):
             for i in range(r, n):
                 for j in range(r):
                     P._a[i, j] = self._param(param_name(f"{prefix}Z", i, j))
+            if self._realization == "metric":
+                # (cond_XP2) at X0: B11 P1 + B12 P2 = W skew (B = A⁻¹), with B11 = diag(b) (see
+                # _metric_inverse): P1 = B11⁻¹(W − B12 P2), one division per row
+                B = self.Ainv._a
+                f = self._field
+                for i in range(r):
+                    for j in range(r):
+                        acc = P._a[i, j]
+                        for k in range(r, n):
+                            acc = acc - B[i, k] * P._a[k, j]
+                        P._a[i, j] = f.normalize(acc / B[i, i])
             return X, P
         S = self._skew_params(f"{prefix}S", n, "n")
         In = self.identity(n, "n")
@@ -405,9 +418,39 @@ class Scene(PaperObjects):
         W = self._skew_params(f"{prefix}W", r, "r")
         Z = self._general_params(f"{prefix}Z", n, r, ("n", "r"))
         P0 = X @ W + (In - X @ X.T) @ Z
-        if self.realization == "metric":
+        if self._realization == "metric":
             P0 = self.A @ P0
         return X, P0
+
+    def equivariant_reduction(self) -> str | None:
+        """What the equivariant chart assumes, stated for reports (engine only; None in the Cayley
+        chart); ``{why}`` is where the method says why the claim is covariant."""
+        if self._chart != "equivariant":
+            return None
+        if self._realization == "metric":
+            return ("equivariance: X = X0 = (E_1..E_r), B = A^{{-1}} symmetric with its diagonal blocks B11 "
+                    "(r x r) and B22 diagonal and B12 generic, P = (B11^{{-1}}(W - B12 Z); Z) with W skew "
+                    "(so that X^T A^{{-1}} P is skew); O(n) moves X0 to every point of V(n, r) and the "
+                    "stabilizer diag(R, S) of X0, with R in O(r) acting on the right as well, diagonalizes "
+                    "B11 and B22; the residuals are covariant under (X, P, A) -> (gXh^T, gPh^T, gAg^T), "
+                    "g in O(n), h in O(r), because {why}")
+        return None
+
+    def _metric_inverse(self) -> Mat:
+        """B = A⁻¹ of the equivariant chart of the metric realization: symmetric, with its diagonal
+        blocks B11 = X0ᵀ B X0 (r × r) and B22 ((n − r) × (n − r)) diagonal.  The chart's reduction:
+        the claims are covariant under X ↦ QXRᵀ, P ↦ QPRᵀ, A ↦ QAQᵀ (Q ∈ O(n), R ∈ O(r)); Q moves
+        X to X0 = [I; 0], and the stabilizer of X0, Q = diag(R, S) with the same R, diagonalizes
+        B11 ↦ R B11 Rᵀ and B22 ↦ S B22 Sᵀ."""
+        n, r = self.n, self.r
+        B = self.zeros(n, n, ("n", "n"))
+        a = B._a
+        for i in range(n):
+            for j in range(i, n):
+                if i != j and (j < r or i >= r):
+                    continue                     # B11 and B22 are diagonal
+                a[i, j] = a[j, i] = self._param(param_name("Ainv", i, j))
+        return B
 
     def _point(self):
         return self._cached("point", lambda: self._stiefel_point(""))
@@ -418,8 +461,6 @@ class Scene(PaperObjects):
 
     @property
     def P(self) -> Mat:
-        if self.chart == "equivariant" and self.realization == "metric":
-            return self._cached("P_metric", lambda: self.A @ self._point()[1])
         return self._point()[1]
 
     def _second_point(self):
@@ -492,7 +533,9 @@ class Scene(PaperObjects):
     def A(self) -> Mat:
         """The symmetric matrix A: diag(a_1..a_n), or generic symmetric in the equivariant chart."""
         def build():
-            if self.chart == "equivariant":
+            if self._chart == "equivariant":
+                if self._realization == "metric":
+                    return self.Ainv.inv()
                 return self._sym_params("A", self.n, "n")
             xs = self._cached("a", lambda: [self._param(f"a_{i + 1}") for i in range(self.n)])
             be = backend(self._field)
@@ -508,6 +551,8 @@ class Scene(PaperObjects):
     @property
     def Ainv(self) -> Mat:
         def build():
+            if self._chart == "equivariant" and self._realization == "metric":
+                return self._metric_inverse()
             if self.chart == "cayley":
                 M = self.zeros(self.n, self.n, ("n", "n"))
                 for i in range(self.n):
@@ -849,16 +894,69 @@ class Scene(PaperObjects):
             return None
         return Lam, Pi
 
+    def _lyapunov_diagonal(self, m: list[Any], C: Mat) -> Mat | None:
+        """The symmetric Y with diag(m) Y + Y diag(m) = C (C symmetric): Y_ij = C_ij / (m_i + m_j);
+        None when some m_i + m_j vanishes (then the solution is not unique)."""
+        f = self._field
+        r = len(m)
+        Y = self.zeros(r, r, C.tags)
+        c = C._a
+        for i in range(r):
+            for j in range(i, r):
+                d = f.normalize(m[i] + m[j])
+                if f.is_zero(d):
+                    return None
+                Y._a[i, j] = Y._a[j, i] = f.normalize(c[i, j] / d)
+        return Y
+
+    def _metric_closed_form_flow(self, HX: Mat, HP: Mat) -> Flow | None:
+        """The Dirac flow of H on (cond_XP2) in closed form, where XᵀX = I_r and M = XᵀBX (B = A⁻¹)
+        is diagonal exactly (the equivariant chart of the metric realization, see
+        :meth:`_metric_inverse`).  The flow is Ω∇(H + ½⟨Π, F₂⟩ − ½⟨Λ, F₁⟩):
+
+            Ẋ = H_P + BXΠ,   Ṗ = −H_X + XΛ − BPΠ,
+
+        and the tangency conditions are two Lyapunov equations with the diagonal M, solved entrywise:
+        MΠ + ΠM = −(XᵀH_P + H_PᵀX), then MΛ + ΛM = −(T + Tᵀ) with
+        T = H_PᵀBP − XᵀBH_X + ΠK − KΠ, K = XᵀB²P.  (The tests compare it with the solved system.)
+        None elsewhere."""
+        if (not CLOSED_FORM_MULTIPLIERS or self._realization != "metric" or self._chart != "equivariant"
+                or not self._field.exact):
+            return None
+        X, P, B = self.X, self.P, self.Ainv
+        M = X.T @ B @ X
+        r = self.r
+        off = M - M                              # the off-diagonal part of M must vanish exactly
+        off._a[:, :] = M._a
+        for i in range(r):
+            off._a[i, i] = self.const(0)
+        if not ((X.T @ X - self.Ir).is_zero() and off.is_zero()):
+            return None
+        m = [M._a[i, i] for i in range(r)]
+        Pi = self._lyapunov_diagonal(m, -(X.T @ HP + HP.T @ X))
+        if Pi is None:
+            return None
+        BP = B @ P
+        K = X.T @ B @ BP
+        T = HP.T @ BP - X.T @ B @ HX + Pi @ K - K @ Pi
+        Lam = self._lyapunov_diagonal(m, -(T + T.T))
+        if Lam is None:
+            return None
+        return Flow(HP + B @ X @ Pi, -HX + X @ Lam - BP @ Pi)
+
     def dirac_flow(self, H: Function) -> Flow:
         """dz/dt = {z, H} for the Dirac bracket (Dirac_bracket), z = entries of X, P:
         ż = Ω∇H − Σ_i w_i Ω∇F_i with w = C {F, H}_0 (in closed form where
-        :meth:`_closed_form_multipliers` applies)."""
+        :meth:`_closed_form_multipliers` or :meth:`_metric_closed_form_flow` applies)."""
         def build():
             HX, HP = self.gradient(H)
             closed = self._cached_for("closed", H, lambda: self._closed_form_multipliers(HX, HP))
             if closed is not None:
                 Lam, Pi = closed
                 return Flow(HP - self.X @ Pi, -HX + self.X @ Lam + self.P @ Pi)
+            metric = self._metric_closed_form_flow(HX, HP)
+            if metric is not None:
+                return metric
             Gs = self._constraint_gradients()
             zX, zP = self._pair_omega(self.gradient(H))
             FjH = [self._pair_dot(g, (zX, zP)) for g in Gs]
@@ -963,8 +1061,6 @@ class _LiftedScene(Scene):
 
     @property
     def P(self) -> Mat:
-        if self.base.chart == "equivariant" and self.base.realization == "metric":
-            return self._cached("P_metric", lambda: self._lift_primitive(self.base.P, "P"))
         return self._point()[1]
 
     @property
@@ -1070,12 +1166,6 @@ class ReverseScene(_LiftedScene):
         if callable(M):
             return M
         return Rev(M)
-
-    @property
-    def P(self) -> Mat:
-        if self.base.chart == "equivariant" and self.base.realization == "metric":
-            raise Unsupported("the metric realization's P in the equivariant chart")
-        return self._point()[1]
 
     def tangent(self, flow):
         raise Unsupported("a derivative along a flow inside a gradient")

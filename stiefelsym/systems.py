@@ -50,7 +50,7 @@ from typing import Any, Callable, Hashable, Mapping, Sequence
 import numpy as np
 
 from . import scene as scene_module
-from .matrix import Mat, NeedsCoordinates, block, definite
+from .matrix import Mat, NeedsCoordinates, _refused, block, definite
 from .scalar import unwrap
 from .reverse import Node, Rev, RevMat, Unsupported, gradient as rev_gradient, leaf as rev_leaf
 from .scene import ReverseScene, Scene, _LiftedScene
@@ -65,7 +65,7 @@ __all__ = ["derivative", "entries", "symmetric_entries", "hermitian_entries", "r
 
 def _coordinate_scene(s: Any, what: str) -> None:
     if not isinstance(s, Scene):
-        raise NeedsCoordinates(what)
+        raise _refused(getattr(s, "_tracker", None), what)   # recorded before it is raised
 
 
 # -- derivatives at points of the caller's own --------------------------------------------------

@@ -23,7 +23,7 @@ import copy
 from typing import Any, Callable, Mapping
 
 from .fields import DegenerateError, Dual, DualField
-from .matrix import Mat, NeedsCoordinates
+from .matrix import Mat, NeedsCoordinates, _refused
 from .scene import Flow, Scene
 
 Function = Callable[[Any], Any]
@@ -31,7 +31,7 @@ Function = Callable[[Any], Any]
 
 def _scene(s: Any, what: str) -> Scene:
     if not isinstance(s, Scene):
-        raise NeedsCoordinates(what)
+        raise _refused(getattr(s, "_tracker", None), what)   # recorded before it is raised
     return s
 
 

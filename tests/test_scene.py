@@ -82,3 +82,65 @@ def test_complex_stiefel_point_is_unitary_and_complex_linear(n, r):
     Jn = s.realify(s.zeros(n, n), s.identity(n))
     Jr = s.realify(s.zeros(r, r), s.identity(r))
     assert (Jn @ Z - Z @ Jr).is_zero()
+
+
+# -- the equivariant chart of the metric realization -------------------------------------------
+
+def _metric_scene(n, r, field, seed=0):
+    return Scene(n, r, field, chart="equivariant", realization="metric", rng=random.Random(seed))
+
+
+@pytest.mark.parametrize("n, r", [(2, 1), (3, 2), (4, 2), (4, 4), (5, 3)])
+def test_metric_equivariant_point_is_on_cond_xp2_with_diagonal_blocks(n, r):
+    """X = X0, XᵀA⁻¹P skew, and the diagonal blocks of A⁻¹ diagonal (the O(n) × O(r) reduction)."""
+    s = _metric_scene(n, r, ModularField(2**61 - 1))
+    X, P, B = s.X, s.P, s.Ainv
+    assert (X.T @ X - s.Ir).is_zero()
+    assert (X.T @ B @ P + P.T @ B @ X).is_zero()
+    assert (B - B.T).is_zero()
+    b = B._a
+    assert all(b[i, j] == 0 for i in range(n) for j in range(n)
+               if i != j and (max(i, j) < r or min(i, j) >= r))
+    assert (s.A @ B - s.identity(n, "n")).is_zero()
+
+
+def _metric_hamiltonians(s):
+    return [lambda t: t.tr(t.P.T @ t.Ainv @ t.P) * t.q(1, 2),
+            lambda t: t.tr(t.P.T @ t.P) * t.q(1, 3) + t.tr(t.X.T @ t.A @ t.X),
+            lambda t: t.tr(t.X.T @ t.P @ t.X.T @ t.A @ t.P)]
+
+
+@pytest.mark.parametrize("n, r", [(2, 1), (3, 2), (4, 3), (4, 4), (5, 2)])
+@pytest.mark.parametrize("field", [ModularField(2**61 - 1), RationalField()], ids=["GF(p)", "Q"])
+def test_metric_closed_form_dirac_flow_is_the_solved_one(n, r, field, monkeypatch):
+    """The Dirac flow on (cond_XP2) by two diagonal Lyapunov equations equals the flow with the
+    r(r+1) multipliers solved from the constraint bracket matrix."""
+    import stiefelsym.scene as scene_mod
+    for k, H in enumerate(_metric_hamiltonians(None)):
+        fast = _metric_scene(n, r, field, seed=k)
+        assert fast._metric_closed_form_flow(*fast.gradient(H)) is not None
+        F = fast.dirac_flow(H)
+        monkeypatch.setattr(scene_mod, "CLOSED_FORM_MULTIPLIERS", False)
+        slow = _metric_scene(n, r, field, seed=k)
+        G = slow.dirac_flow(H)
+        monkeypatch.setattr(scene_mod, "CLOSED_FORM_MULTIPLIERS", True)
+        assert (F.Xdot - G.Xdot).is_zero() and (F.Pdot - G.Pdot).is_zero(), (n, r, k)
+
+
+def test_metric_flow_is_proved_in_the_reduced_chart_and_a_corrupted_one_fails():
+    from stiefelsym import admissible
+    from stiefelsym.claims import Claim, Size
+    from stiefelsym.runner import run_one
+
+    def flow(s, sign):
+        H = lambda t: t.tr(t.P.T @ t.Ainv @ t.P) * t.q(1, 2)  # noqa: E731
+        F = s.dirac_flow(H)
+        return {"dX/dt": F.Xdot - s.Ainv @ s.P * s.q(sign)}
+    good = Claim(id="m", paper=("A_XP",), kind="id", section="t", func=lambda s: flow(s, 1),
+                 sizes=admissible(5), realization="metric")
+    bad = Claim(id="m-bad", paper=("A_XP",), kind="id", section="t", func=lambda s: flow(s, -1),
+                sizes=admissible(5), realization="metric")
+    for n, r in [(3, 1), (4, 2), (5, 5)]:
+        res = run_one(good, Size(n, r), "exact", 0)
+        assert res.verdict == "proved", (n, r, res.message)
+        assert run_one(bad, Size(n, r), "exact", 0).verdict == "fails"

@@ -129,16 +129,14 @@ def test_the_matrices_of_the_free_scene_are_of_the_one_class_Mat():
 
 
 #: refusals raised outside the free scene, by library helpers a claim may call with it
-#: (stiefelsym/twisted.py: _scene, stiefelsym/systems.py: _coordinate_scene): they raise
-#: NeedsCoordinates without recording it; the route stays open until they go through
-#: stiefelsym.free.algebra.refuse(what, scene.tracker) (kept as strict xfails)
+#: (stiefelsym/twisted.py: _scene, stiefelsym/systems.py: _coordinate_scene): recorded in the
+#: scene's record before they are raised, like the scene's own
 HELPER_DOORS = {
     "twisted.magnetic_matrix": lambda s: __import__("stiefelsym.twisted", fromlist=["x"]).magnetic_matrix(s),
     "systems.real_coordinates": lambda s: __import__("stiefelsym.systems", fromlist=["x"]).real_coordinates(s, ["X"]),
 }
 
 
-@pytest.mark.xfail(strict=True, reason="twisted.py and systems.py raise NeedsCoordinates without recording it")
 @pytest.mark.parametrize("name", sorted(HELPER_DOORS))
 def test_a_caught_refusal_of_a_library_helper_is_never_a_proof(name):
     res = _free(_tricked(HELPER_DOORS[name]))

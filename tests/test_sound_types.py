@@ -632,3 +632,20 @@ def test_a_claim_that_branches_on_the_scene_class_is_not_proved_for_all_sizes():
     c = Claim(id="class-branch", paper=("t",), kind="id", section="t", func=_branch_on_the_scene_class,
               sizes=admissible(4))
     assert run_one(c, None, "free", 0).verdict not in PASSING
+
+
+def _metric_block_is_diagonal(s):
+    """False: XᵀA⁻¹X is diagonal (true at the metric chart's base points, where O(r) made it so)."""
+    M = s.X.T @ s.Ainv @ s.X
+    return {"offdiag": M[0, 1] * s.q(1)}
+
+
+def test_the_metric_charts_r_reduction_is_lost_when_r_coordinates_are_read():
+    """The equivariant chart of the metric realization also reduces by O(r) (XᵀA⁻¹X diagonal), so
+    there reading coordinates of R^r is recorded like those of R^n."""
+    c = Claim(id="diag", paper=("cond_XP2",), kind="id", section="t", func=_metric_block_is_diagonal,
+              sizes=admissible(4), realization="metric")
+    for n, r in [(3, 2), (2, 2)]:
+        for m in ("exact", "modular", "auto"):
+            res = run_one(c, Size(n, r), m, 0)
+            assert res.verdict not in PASSING, (n, r, m, res.verdict, res.reductions)
