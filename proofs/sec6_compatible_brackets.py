@@ -25,15 +25,6 @@ def power_trace(s, M, k):
     return s.tr(acc)
 
 
-def power_traces(s, M, m):
-    """[tr M, tr M², …, tr M^m]: the powers of M taken once, each from the previous one."""
-    out, acc = [], None
-    for _ in range(m):
-        acc = M if acc is None else acc @ M
-        out.append(s.tr(acc))
-    return out
-
-
 # -- the map Θ and the functions of the section ------------------------------------------
 
 def Theta_at(X, P):
@@ -596,16 +587,23 @@ def det_of(s, M):
 
 # -- completeness: the numbers of independent functions ---------------------------------------
 
+def differentials(s, functions):
+    """The rows df of scalar functions f of the scene, in the 2nr coordinates of X, P (the columns of
+    s.jacobian): (∂f/∂X, ∂f/∂P) from s.gradient, one evaluation and one backward sweep per function
+    (fewer passes than the 2nr directions of a Jacobian when the functions are few and short)."""
+    n, r = s.n, s.r
+    rows = []
+    for f in functions:
+        fX, fP = s.gradient(f)
+        rows.append([fX[i, j] for i in range(n) for j in range(r)] + [fP[i, j] for i in range(n) for j in range(r)])
+    return rows
+
+
 def _differentials_on_TV(s, functions):
-    """The matrix of the differentials of ``functions`` (a function of the scene returning a list
-    of scalars) stacked on those of the constraints (cond_XP): its rank minus r(r + 1) is the
-    number of functions independent on T*V."""
-    return s.mat(s.jacobian(functions) + s.jacobian(s.constraints.build))
-
-
-def _values(t, name, m):
-    """m values of a spectral parameter: fresh scalars name_0, ..., name_{m-1}."""
-    return [t.scalar(f"{name}{j}") for j in range(m)]
+    """The matrix of the differentials of ``functions`` (scalar functions of the scene, each
+    differentiated by its gradient) stacked on those of the constraints (cond_XP): its rank minus
+    r(r + 1) is the number of functions independent on T*V."""
+    return s.mat(differentials(s, functions) + s.jacobian(s.constraints.build))
 
 
 def _dim_V(n, r):
@@ -617,23 +615,31 @@ def _two_l(n, r):
     return n * (n - 1) // 2 - n // 2 if n <= 2 * r + 1 else 2 * r * (n - r - 1)
 
 
-def _bb_all(t):
-    """(BB): tr(Ψ + μ_jB)^k, k = 1..r, at r + 1 values μ_j (all the coefficients in μ)."""
-    B = b_symmetric(t)
-    return [x for mu_j in _values(t, "mu", t.r + 1) for x in power_traces(t, t.Psi + mu_j * B, t.r)]
+def _bb_functions(r):
+    """(BB): tr(Ψ + μ_jB)^k, k = 1..r, at r + 1 values μ_j (all the coefficients in μ), as scalar
+    functions of the scene (in the order μ_j, then k)."""
+    def f(t, j, k):
+        B = b_symmetric(t)
+        return power_trace(t, t.Psi + t.scalar(f"mu{j}") * B, k)
+    return [lambda t, j=j, k=k: f(t, j, k) for j in range(r + 1) for k in range(1, r + 1)]
 
 
-def _perelomov_all(t, lams, n):
-    """(perelomov): tr(λ_j(PXᵀ − XPᵀ) + XXᵀ − λ_j²A)^k, k = 1..n, for each λ_j of ``lams`` (in the order
-    λ_j, then k), PXᵀ − XPᵀ and XXᵀ formed once."""
-    Phi, XXt = t.P @ t.X.T - t.X @ t.P.T, t.X @ t.X.T
-    return [x for lam in lams for x in power_traces(t, lam * Phi + XXt - lam * lam * t.A, n)]
+def _perelomov_functions(count, n):
+    """(perelomov): tr(λ_j(PXᵀ − XPᵀ) + XXᵀ − λ_j²A)^k, k = 1..n, at ``count`` values λ_j, as scalar
+    functions of the scene (in the order λ_j, then k)."""
+    def f(t, j, k):
+        lam = t.scalar(f"lam{j}")
+        return power_trace(t, lam * (t.P @ t.X.T - t.X @ t.P.T) + t.X @ t.X.T - lam * lam * t.A, k)
+    return [lambda t, j=j, k=k: f(t, j, k) for j in range(count) for k in range(1, n + 1)]
 
 
-def _FF_all(t, lams, n):
-    """(FF): tr(λ_j(PXᵀ − XPᵀ) + XXᵀ)^k, k = 1..n, for each λ_j of ``lams`` (in the order λ_j, then k)."""
-    Phi, XXt = t.P @ t.X.T - t.X @ t.P.T, t.X @ t.X.T
-    return [x for lam in lams for x in power_traces(t, lam * Phi + XXt, n)]
+def _FF_functions(count, n):
+    """(FF): tr(λ_j(PXᵀ − XPᵀ) + XXᵀ)^k, k = 1..n, at ``count`` values λ_j, as scalar functions of the
+    scene (in the order λ_j, then k)."""
+    def f(t, j, k):
+        lam = t.scalar(f"lam{j}")
+        return power_trace(t, lam * (t.P @ t.X.T - t.X @ t.P.T) + t.X @ t.X.T, k)
+    return [lambda t, j=j, k=k: f(t, j, k) for j in range(count) for k in range(1, n + 1)]
 
 
 @claim("cif-completeness", paper=("CIF", "FF", "BB", "2l"), kind="dim", exact_max_n=3,
@@ -643,10 +649,7 @@ def _FF_all(t, lams, n):
 def cif_set_is_complete(s):
     """Theorem CIF (ii): the functions (FF) and (BB) (k ≤ n and k ≤ r, at n + 1 and r + 1 values of λ and μ: all their coefficients) have dim V − l independent differentials on T*V, 2l the dimension of Lemma 2l, so the commutative set 𝔉 + 𝔅 is complete in the algebra of SO(n)-invariant functions."""
     n, r = s.n, s.r
-
-    def functions(t):
-        ff = _FF_all(t, _values(t, "lam", n + 1), n)
-        return ff + _bb_all(t)
+    functions = _FF_functions(n + 1, n) + _bb_functions(r)
     return {"ddim(F + B)": Rank(_differentials_on_TV(s, functions), _dim_V(n, r) - _two_l(n, r) // 2 + r * (r + 1),
                                 generic=True, meaning="dim V - l + r(r+1): independent on T*V, plus the constraints")}
 
@@ -658,9 +661,6 @@ def cif_set_is_complete(s):
 def com_set_is_complete(s):
     """Corollary COM: the integrals (perelomov) and (BB) (k ≤ n and k ≤ r, at 2n + 1 and r + 1 values of λ and μ: all their coefficients) have dim V independent differentials on T*V, so with their commutativity they form a complete commutative set (Liouville integrability of H_neum,𝔹)."""
     n, r = s.n, s.r
-
-    def functions(t):
-        per = _perelomov_all(t, _values(t, "lam", 2 * n + 1), n)
-        return per + _bb_all(t)
+    functions = _perelomov_functions(2 * n + 1, n) + _bb_functions(r)
     return {"ddim(F + B)": Rank(_differentials_on_TV(s, functions), _dim_V(n, r) + r * (r + 1), generic=True,
                                 meaning="dim V + r(r+1): independent on T*V, plus the constraints")}

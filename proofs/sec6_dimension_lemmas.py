@@ -3,6 +3,8 @@ from __future__ import annotations
 
 from stiefelsym import Count, Rank, admissible, claim, comm
 
+from .sec6_compatible_brackets import differentials
+
 SECTION = "6"
 
 
@@ -389,18 +391,6 @@ def torus_functions(s, with_casimirs=True):
         for j in range(i + 1, r):
             funcs.append(lambda t, i=i, j=j: t.Psi[i, j])
     return funcs
-
-
-def differentials(s, functions):
-    """The rows df of scalar functions f of the scene, in the 2nr coordinates of X, P (the columns of
-    s.jacobian): (∂f/∂X, ∂f/∂P) from s.gradient, one evaluation and one backward sweep per function
-    (fewer passes than the 2nr directions of a Jacobian when the functions are few and short)."""
-    n, r = s.n, s.r
-    rows = []
-    for f in functions:
-        fX, fP = s.gradient(f)
-        rows.append([fX[i, j] for i in range(n) for j in range(r)] + [fP[i, j] for i in range(n) for j in range(r)])
-    return rows
 
 
 def torus_values(t, with_casimirs=True):

@@ -136,10 +136,7 @@ def covariant_whole_phi(s):
 def cif_one_less(s):
     """Corrupted (CIF): ddim(𝔉 + 𝔅) = dim V − l − 1 (the rank found is higher: a certain failure)."""
     n, r = s.n, s.r
-
-    def functions(t):
-        ff = [sec6.FF(t, lam_j, k) for lam_j in sec6._values(t, "lam", n + 1) for k in range(1, n + 1)]
-        return ff + sec6._bb_all(t)
+    functions = sec6._FF_functions(n + 1, n) + sec6._bb_functions(r)
     return {"ddim": B_Rank(sec6._differentials_on_TV(s, functions),
                            sec6._dim_V(n, r) - sec6._two_l(n, r) // 2 - 1 + r * (r + 1))}
 
@@ -147,10 +144,7 @@ def cif_one_less(s):
 def com_one_less(s):
     """Corrupted (COM): dim V − 1 independent functions (the rank found is higher: a certain failure)."""
     n, r = s.n, s.r
-
-    def functions(t):
-        per = [sec6.perelomov(t, lam_j, k) for lam_j in sec6._values(t, "lam", 2 * n + 1) for k in range(1, n + 1)]
-        return per + sec6._bb_all(t)
+    functions = sec6._perelomov_functions(2 * n + 1, n) + sec6._bb_functions(r)
     return {"ddim": B_Rank(sec6._differentials_on_TV(s, functions), sec6._dim_V(n, r) - 1 + r * (r + 1))}
 
 
