@@ -218,7 +218,7 @@ def test_strict_leaf_inequality_fails_only_at_the_smallest_sizes(catalog):
     assert res.verdict == "fails" and res.expected
 
 
-# -- the shared powers of the completeness Jacobians are the printed functions --------------------------
+# -- the functions of the completeness Jacobians are the printed functions --------------------------
 
 def _modular_scene(n, r, seed=0):
     import random
@@ -239,18 +239,21 @@ def test_torus_values_are_the_torus_functions(n, r):
 
 
 @pytest.mark.parametrize("n, r", [(2, 1), (3, 2), (4, 4)])
-def test_completeness_functions_with_shared_powers_are_the_printed_ones(n, r):
-    """(perelomov), (FF) and (BB) with shared powers are the functions one by one, in the same order."""
+def test_completeness_functions_are_the_printed_ones(n, r):
+    """The scalar functions (perelomov), (FF) and (BB) whose gradients the completeness claims take are the
+    printed functions, in the same order."""
     import proofs.sec6_compatible_brackets as cb
     s = _modular_scene(n, r)
     lams = [s.scalar(f"lam{j}") for j in range(3)]
-    assert cb._perelomov_all(s, lams, n) == [cb.perelomov(s, lam, k) for lam in lams for k in range(1, n + 1)]
-    assert cb._FF_all(s, lams, n) == [cb.FF(s, lam, k) for lam in lams for k in range(1, n + 1)]
-    assert cb._bb_all(s) == [cb.bb(s, s.Psi, s.scalar(f"mu{j}"), k) for j in range(r + 1) for k in range(1, r + 1)]
+    assert [f(s) for f in cb._perelomov_functions(3, n)] == [cb.perelomov(s, lam, k) for lam in lams
+                                                              for k in range(1, n + 1)]
+    assert [f(s) for f in cb._FF_functions(3, n)] == [cb.FF(s, lam, k) for lam in lams for k in range(1, n + 1)]
+    assert [f(s) for f in cb._bb_functions(r)] == [cb.bb(s, s.Psi, s.scalar(f"mu{j}"), k) for j in range(r + 1)
+                                                   for k in range(1, r + 1)]
 
 
 def test_com_completeness_with_one_power_wrong_fails():
-    """Negative controls of the shared powers: (perelomov) with its top power tr M^n replaced by
+    """Negative controls of the completeness functions: (perelomov) with its top power tr M^n replaced by
     tr M^(n-1)·tr M (dependent on the others) loses an independent differential, refuted exactly; and
     the printed functions with a count one too small are refuted by every sampled method."""
     import proofs.sec6_compatible_brackets as cb
@@ -258,19 +261,15 @@ def test_com_completeness_with_one_power_wrong_fails():
 
     def corrupted(s):
         n, r = s.n, s.r
-
-        def functions(t):
-            out = cb._perelomov_all(t, cb._values(t, "lam", 2 * n + 1), n)
-            for j in range(2 * n + 1):
-                out[j * n + n - 1] = out[j * n + n - 2] * out[j * n]
-            return out + cb._bb_all(t)
+        functions = cb._perelomov_functions(2 * n + 1, n)
+        for j in range(2 * n + 1):
+            functions[j * n + n - 1] = lambda t, a=functions[j * n + n - 2], b=functions[j * n]: a(t) * b(t)
+        functions += cb._bb_functions(r)
         return {"ddim": Rank(cb._differentials_on_TV(s, functions), cb._dim_V(n, r) + r * (r + 1), generic=True)}
 
     def one_short(s):
         n, r = s.n, s.r
-
-        def functions(t):
-            return cb._perelomov_all(t, cb._values(t, "lam", 2 * n + 1), n) + cb._bb_all(t)
+        functions = cb._perelomov_functions(2 * n + 1, n) + cb._bb_functions(r)
         return {"ddim": Rank(cb._differentials_on_TV(s, functions), cb._dim_V(n, r) + r * (r + 1) - 1, generic=True)}
     assert run_exact(claim, 2, 1, SEED, func=corrupted).verdict == "fails"
     for method in ("modular", "rational"):
