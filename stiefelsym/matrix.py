@@ -546,7 +546,7 @@ class Mat:
     def trace(self):
         """The trace (a number of the scene)."""
         x = self._trace()
-        return Scalar(x, self._tracker) if claim_code() and _coordinates(self._field) else x
+        return Scalar(x, self._tracker) if claim_code() else x
 
     def _trace(self):
         m, k = self._shape()

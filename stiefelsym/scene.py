@@ -71,16 +71,16 @@ PARAM_BLOCK_MIN = 64
 
 
 def _opaque(scene: Any, x: Any) -> Any:
-    """A value of a coordinate scene as its caller sees it: claim code gets opaque numbers
-    (:mod:`.scalar`), the engine the field's own."""
-    if claim_code(3) and getattr(scene._field, "coordinates", True):
+    """A value of a scene as its caller sees it: claim code gets opaque numbers (:mod:`.scalar`),
+    the engine the field's own."""
+    if claim_code(3):
         return wrap(x, scene._tracker)
     return x
 
 
 def _number(scene: Any, x: Any) -> Any:
-    """A number of a coordinate scene as its caller sees it (see :func:`_opaque`)."""
-    if claim_code(3) and getattr(scene._field, "coordinates", True):
+    """A number of a scene as its caller sees it (see :func:`_opaque`)."""
+    if claim_code(3):
         return _Scalar(x, scene._tracker)
     return x
 

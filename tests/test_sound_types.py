@@ -649,3 +649,25 @@ def test_the_metric_charts_r_reduction_is_lost_when_r_coordinates_are_read():
         for m in ("exact", "modular", "auto"):
             res = run_one(c, Size(n, r), m, 0)
             assert res.verdict not in PASSING, (n, r, m, res.verdict, res.reductions)
+
+
+def _compares_a_trace_form(s):
+    """False (X = 0) where tr(I_r) == 1 is False: on the dimension-free scene a structural
+    comparison of trace forms used to answer, where at r = 1 it holds."""
+    try:
+        same = s.tr(s.Ir) == 1
+    except Exception:
+        same = True
+    return {"r": s.X - s.X} if not same else {"r": s.X}
+
+
+def test_the_dimension_free_scene_hands_out_the_same_opaque_numbers():
+    seen = set()
+
+    def probe(s):
+        seen.update({type(s.tr(s.X.T @ s.X)).__name__, type(s.lam).__name__, type(s.q(1, 2)).__name__})
+        return {"r": s.X - s.X}
+    run_one(_claim(probe), None, "free", 0)
+    assert seen == {"Scalar"}, seen
+    res = run_one(_claim(_compares_a_trace_form), None, "free", 0)
+    assert res.verdict == "undecided" and "comparison" in res.message, (res.verdict, res.message)

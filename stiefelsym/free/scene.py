@@ -22,7 +22,7 @@ import symengine as se
 
 from ..fields import Dual, DualField, Field
 from ..matrix import CoordinateTracker, Mat, definite
-from ..scene import USER_SCALAR, Flow, PaperObjects, map_entries
+from ..scene import USER_SCALAR, Flow, PaperObjects, _number, map_entries
 from .algebra import (DIMENSIONS, Letter, NCPoly, NeedsCoordinates, as_coef, coef_latex, derivation,
                       letter_pair, record_refusal, refuse, skew_letter, substitute, symmetric_letter, trace)
 from .mat import FreeBackend, FreeDualBackend, entry_of, one_block
@@ -498,10 +498,10 @@ class FreeScene(PaperObjects):
         return self.params[name]
 
     def const(self, q: int | Fraction) -> Any:
-        return as_coef(Fraction(q))
+        return _number(self, as_coef(Fraction(q)))
 
     def q(self, num: int, den: int = 1) -> Any:
-        return as_coef(Fraction(num, den))
+        return _number(self, as_coef(Fraction(num, den)))
 
     # -- matrices ---------------------------------------------------------------
     def _blocks(self, m: Any, tag: str | None) -> tuple[str, int]:
@@ -573,9 +573,9 @@ class FreeScene(PaperObjects):
 
     def tr(self, M: Any) -> Any:
         if isinstance(M, Mat):
-            return M.trace()
+            return _number(self, M._trace())
         M = _raw(M)
-        return self.field.normalize(self.field.entry_trace(M))
+        return _number(self, self._field.normalize(self._field.entry_trace(M)))
 
     def resolvent(self, mu: Any) -> Mat:
         """(mu I_n − A)^{-1} as a letter R_mu with A R = R A = mu R − I."""
