@@ -46,7 +46,8 @@ def torus_twice_printed(n, r):
 
 def unit(s, m, k, a, b, tags):
     """The m x k matrix unit E_ab."""
-    return s.mat([[s.q(1) if (i, j) == (a, b) else s.q(0) for j in range(k)] for i in range(m)], tags)
+    zero, one = s.q(0), s.q(1)
+    return s.mat([[one if (i, j) == (a, b) else zero for j in range(k)] for i in range(m)], tags)
 
 
 def gl_basis(s):
