@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import itertools
 import math
+import os
 import random
 from fractions import Fraction
 from typing import Any, Sequence
@@ -208,8 +209,13 @@ class SymbolicField(Field):
 
     name = "symbolic"
 
+    #: matrices live in flint (:mod:`stiefelsym.polyfield`); False (or the environment variable
+    #: STIEFELSYM_EXACT_BACKEND=symengine): numpy arrays of symengine expressions, as before
+    native = os.environ.get("STIEFELSYM_EXACT_BACKEND", "flint") != "symengine"
+
     def __init__(self) -> None:
         self.symbols: dict[str, se.Symbol] = {}
+        self._poly_ring = None
 
     def const(self, q):
         q = Fraction(q)
@@ -223,7 +229,35 @@ class SymbolicField(Field):
     def normalize(self, x):
         return se.expand(x)
 
+    def poly_ring(self):
+        """The flint rational-function ring of this field's symbols (created on first use)."""
+        if self._poly_ring is None:
+            from .polyfield import PolyRing
+            self._poly_ring = PolyRing()
+        return self._poly_ring
+
+    def native_backend(self):
+        """Whole matrices as flint polynomial numerators over one common denominator."""
+        if not self.native:
+            return None
+        from .polyfield import PolyBackend
+        return PolyBackend(self, self.poly_ring())
+
     def is_zero(self, x):
+        """Exact: x as a rational function over flint has the zero numerator (an expression flint
+        cannot hold goes through symengine's expansion and SymPy's cancel)."""
+        if isinstance(x, se.Basic) and x.is_Number:
+            return x == 0
+        if self.native:
+            from .polyfield import NotRational
+            try:
+                return self.poly_ring().from_se(x)[0].is_zero()
+            except NotRational:
+                pass
+        return self._is_zero_sympy(x)
+
+    @staticmethod
+    def _is_zero_sympy(x):
         e = se.expand(x)
         if e == 0:
             return True

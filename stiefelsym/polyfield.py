@@ -1,0 +1,699 @@
+"""The exact method's whole-matrix backend: rational functions over flint's multivariate polynomials.
+
+A matrix over :class:`~stiefelsym.fields.SymbolicField` is kept as a numpy array of flint
+``fmpq_mpoly`` numerators over ONE common denominator, a product of powers of *atoms*: monic
+irreducible polynomials registered once per field (flint factors every new divisor: a
+determinant, λ − aᵢ, aᵢ, ...).  Because the atoms are irreducible, common denominators are
+exact least common multiples without any gcd (the larger exponent of every atom), and a
+numerator cancels against the denominator only by an atom dividing every entry, which is tested
+after every product and inverse (one exact division per atom).
+
+The zero test of a matrix is exact: every numerator is the zero polynomial.  Nothing is
+"probably zero", and no SymPy is involved.  Scalars cross the boundary as symengine expressions
+(the field's elements): traces and pairings are converted to symengine, symengine scalars that
+multiply a matrix are converted to rational functions (memoized per field).  An entry flint
+cannot represent (a non-integer power, a float, an infinity) sends that matrix to the generic
+representation (:class:`ObjMat`: numpy arrays of symengine expressions, expanded entrywise,
+exactly what :mod:`stiefelsym.matrix` does without a backend).
+
+flint contexts have a fixed number of variables while parameters appear on the fly: the ring
+starts with 16 variables and doubles its context when it runs out, lifting every stored matrix
+to the new context the next time it is used (by generator names, which never change).
+"""
+from __future__ import annotations
+
+from fractions import Fraction
+from typing import Any
+
+import numpy as np
+
+from ._lazy import lazy
+from .fields import DegenerateError, SymbolicBudget
+from .native import Backend
+
+flint = lazy("flint", globals())
+se = lazy("symengine", globals(), "se")
+
+NODEN: tuple = ()
+_INITIAL_VARS = 16
+#: beyond this many parameters (a generic operator on so(n) brings n(n-1)/2 (n(n-1)/2 + 1)/2 of
+#: them) a monomial costs a byte per parameter in flint: new matrices stay symengine expressions
+MAX_VARS = 128
+
+
+class NotRational(TypeError):
+    """A symbolic expression that is not a rational function with rational coefficients."""
+
+
+def _domain_error():
+    from flint.utils.flint_exceptions import DomainError
+    return DomainError
+
+
+def _incompatible_error():
+    from flint.utils.flint_exceptions import IncompatibleContextError
+    return IncompatibleContextError
+
+
+def _merge_max(d1: tuple, d2: tuple) -> tuple:
+    if d1 == d2 or not d2:
+        return d1
+    if not d1:
+        return d2
+    out = dict(d1)
+    for k, e in d2:
+        if out.get(k, 0) < e:
+            out[k] = e
+    return tuple(sorted(out.items()))
+
+
+def _merge_add(d1: tuple, d2: tuple) -> tuple:
+    if not d2:
+        return d1
+    if not d1:
+        return d2
+    out = dict(d1)
+    for k, e in d2:
+        out[k] = out.get(k, 0) + e
+    return tuple(sorted(out.items()))
+
+
+def _minus(d: tuple, sub: tuple) -> tuple:
+    """The exponents of d beyond those of sub (d >= sub atom by atom)."""
+    s = dict(sub)
+    return tuple((k, e - s.get(k, 0)) for k, e in d if e - s.get(k, 0) > 0)
+
+
+_CONTEXTS: dict[int, tuple] = {}
+
+
+def _context(cap: int) -> tuple:
+    """The flint context with ``cap`` variables x0, x1, ..., its generators, 0 and 1 (shared)."""
+    hit = _CONTEXTS.get(cap)
+    if hit is None:
+        ctx = flint.fmpq_mpoly_ctx.get(tuple(f"x{i}" for i in range(cap)), "degrevlex")
+        hit = _CONTEXTS[cap] = (ctx, ctx.gens(), ctx.from_dict({}), ctx.constant(1))
+    return hit
+
+
+class PolyRing:
+    """The variables, the flint context, the denominator atoms and the conversions of one field."""
+
+    def __init__(self) -> None:
+        self.syms: list = []               # symengine symbol of each variable index
+        self.index: dict = {}              # symengine symbol -> variable index
+        self.atoms: list = []              # monic irreducible polynomials (current context)
+        self.atom_key: dict[str, int] = {}  # str(atom) -> atom id
+        self._atom_se: dict[int, Any] = {}
+        self._pow: dict[tuple[int, int], Any] = {}
+        self._factor_memo: dict[str, tuple] = {}
+        self.memo: dict = {}               # symengine expression -> (numerator, denominator)
+        self.version = 0                   # bumped when the context grows
+        self.ctx = None
+        self._set_ctx(_INITIAL_VARS)
+
+    # -- context ------------------------------------------------------------------
+    def _set_ctx(self, cap: int) -> None:
+        old = self.ctx
+        self.cap = cap
+        self.ctx, self.gens, self.zero, self.one = _context(cap)
+        if old is not None:
+            self.version += 1
+            self.atoms = [p.project_to_context(self.ctx) for p in self.atoms]
+            self._pow.clear()
+            self._factor_memo.clear()
+            self.memo.clear()
+
+    def lift(self, p):
+        """A polynomial of an older context in the current one."""
+        return p.project_to_context(self.ctx)
+
+    def var(self, sym) -> Any:
+        i = self.index.get(sym)
+        if i is None:
+            i = len(self.syms)
+            if i >= MAX_VARS:
+                raise NotRational(f"more than {MAX_VARS} parameters (flint's exponent vectors are dense)")
+            if i >= self.cap:
+                self._set_ctx(2 * self.cap)
+            self.syms.append(sym)
+            self.index[sym] = i
+        return self.gens[i]
+
+    def const(self, q) -> Any:
+        if isinstance(q, int):
+            return self.ctx.constant(q)
+        return self.ctx.constant(flint.fmpq(q.numerator, q.denominator))
+
+    # -- denominator atoms ------------------------------------------------------------
+    def atom_pow(self, k: int, e: int):
+        key = (k, e)
+        p = self._pow.get(key)
+        if p is None:
+            p = self.atoms[k] ** e
+            self._pow[key] = p
+        return p
+
+    def den_poly(self, d: tuple):
+        out = self.one
+        for k, e in d:
+            out = out * self.atom_pow(k, e)
+        return out
+
+    def factor(self, p) -> tuple[Any, tuple]:
+        """p = c * prod atom^e: the rational content c (a constant polynomial) and the atoms."""
+        key = str(p)
+        hit = self._factor_memo.get(key)
+        if hit is not None:
+            return hit
+        c, facs = p.factor()
+        den = {}
+        for f, e in facs:
+            if f.is_constant():
+                c = c * f.leading_coefficient() ** e
+                continue
+            lc = f.leading_coefficient()
+            if lc != 1:
+                f = f / lc
+                c = c * lc ** e
+            fk = str(f)
+            k = self.atom_key.get(fk)
+            if k is None:
+                k = len(self.atoms)
+                self.atoms.append(f)
+                self.atom_key[fk] = k
+            den[k] = den.get(k, 0) + e
+        out = (self.ctx.constant(c), tuple(sorted(den.items())))
+        self._factor_memo[key] = out
+        return out
+
+    # -- scalar rational functions: (numerator, denominator atoms) ----------------------
+    def rf_add(self, a, b):
+        (n1, d1), (n2, d2) = a, b
+        if d1 == d2:
+            return (n1 + n2, d1)
+        D = _merge_max(d1, d2)
+        return (n1 * self.den_poly(_minus(D, d1)) + n2 * self.den_poly(_minus(D, d2)), D)
+
+    def rf_mul(self, a, b):
+        return (a[0] * b[0], _merge_add(a[1], b[1]))
+
+    def rf_inv(self, a):
+        n, d = a
+        if n.is_zero():
+            raise ZeroDivisionError("division by an identically zero expression")
+        c, atoms = self.factor(n)
+        return (self.den_poly(d) / c, atoms)
+
+    def rf_reduce(self, a):
+        n, d = a
+        if not d:
+            return a
+        if n.is_zero():
+            return (self.zero, NODEN)
+        DomainError = _domain_error()
+        out = []
+        for k, e in d:
+            f = self.atoms[k]
+            while e > 0:
+                try:
+                    n = n / f
+                except DomainError:
+                    break
+                e -= 1
+            if e:
+                out.append((k, e))
+        return (n, tuple(out))
+
+    def from_se(self, x):
+        """A symengine expression as a reduced rational function (memoized)."""
+        try:
+            return self.memo[x]
+        except KeyError:
+            pass
+        except TypeError:      # an unhashable object: not an expression of this field
+            raise NotRational(f"not a symbolic expression: {type(x).__name__}") from None
+        Incompatible = _incompatible_error()
+        while True:
+            v = self.version
+            try:
+                r = self._conv(x)
+            except Incompatible:
+                if v == self.version:
+                    raise
+                continue               # the context grew on the way: convert again in the new one
+            if v == self.version:
+                break
+        r = self.rf_reduce(r)
+        self.memo[x] = r
+        return r
+
+    def _conv(self, x):
+        if isinstance(x, int):
+            return (self.ctx.constant(x), NODEN)
+        if isinstance(x, Fraction):
+            return (self.const(x), NODEN)
+        if not isinstance(x, se.Basic):
+            raise NotRational(f"not a symbolic expression: {type(x).__name__}")
+        if x.is_Symbol:
+            return (self.var(x), NODEN)
+        if x.is_Number:
+            if x.is_Integer:
+                return (self.ctx.constant(int(x)), NODEN)
+            if x.is_Rational:
+                return (self.ctx.constant(flint.fmpq(int(x.p), int(x.q))), NODEN)
+            raise NotRational(f"not a rational number: {x}")
+        memo = self.memo
+        if x.is_Add:
+            acc = None
+            for t in x.args:
+                r = memo.get(t) or self._conv(t)
+                acc = r if acc is None else self.rf_add(acc, r)
+            return acc
+        if x.is_Mul:
+            acc = None
+            for t in x.args:
+                r = memo.get(t) or self._conv(t)
+                acc = r if acc is None else self.rf_mul(acc, r)
+            return acc
+        if x.is_Pow:
+            b, e = x.args
+            if not e.is_Integer:
+                raise NotRational(f"a non-integer power: {x}")
+            k = int(e)
+            r = memo.get(b) or self._conv(b)
+            if k < 0:
+                try:
+                    r = self.rf_inv(r)
+                except ZeroDivisionError as exc:
+                    raise NotRational(str(exc)) from None
+                k = -k
+            return (r[0] ** k, tuple((a, m * k) for a, m in r[1]))
+        raise NotRational(f"not a rational function: {type(x).__name__}")
+
+    # -- back to symengine ------------------------------------------------------------
+    def poly_se(self, p):
+        if p.is_zero():
+            return se.Integer(0)
+        syms = self.syms
+        used = [i for i, d in enumerate(p.degrees()) if d]
+        terms = []
+        for exps, c in p.terms():
+            cf = se.Integer(int(c.p)) if c.q == 1 else se.Rational(int(c.p), int(c.q))
+            fs = [cf]
+            for i in used:
+                e = exps[i]
+                if e:
+                    fs.append(syms[i] if e == 1 else se.Pow(syms[i], int(e)))
+            terms.append(se.Mul(*fs) if len(fs) > 1 else cf)
+        return se.Add(*terms) if len(terms) > 1 else terms[0]
+
+    def atom_se(self, k: int):
+        s = self._atom_se.get(k)
+        if s is None:
+            s = self._atom_se[k] = self.poly_se(self.atoms[k])
+        return s
+
+    def to_se(self, r):
+        """A rational function as a symengine expression (remembered for the way back)."""
+        n, d = r
+        out = self.poly_se(n)
+        if d and not n.is_zero():
+            den = [self.atom_se(k) if e == 1 else se.Pow(self.atom_se(k), e) for k, e in d]
+            out = out / (se.Mul(*den) if len(den) > 1 else den[0])
+        elif d:
+            r = (n, NODEN)
+        self.memo.setdefault(out, r)
+        return out
+
+
+# ----------------------------------------------------------------------------- matrices
+class PolyMat:
+    """A matrix of polynomial numerators (numpy object array) over one denominator (atoms)."""
+
+    __slots__ = ("a", "den", "ctx", "z")
+
+    def __init__(self, a: np.ndarray, den: tuple, ctx, z: bool = False) -> None:
+        #: z: known to be the zero matrix (derivatives of constants: products skip it)
+        self.a, self.den, self.ctx, self.z = a, den, ctx, z
+
+
+class ObjMat:
+    """The generic representation for a matrix flint cannot hold: symengine expressions."""
+
+    __slots__ = ("a",)
+
+    def __init__(self, a: np.ndarray) -> None:
+        self.a = a
+
+
+def _scalar_array(x) -> np.ndarray:
+    out = np.empty((), dtype=object)
+    out[()] = x
+    return out
+
+
+class PolyBackend(Backend):
+    """Whole-matrix operations over rational functions in flint (see the module docstring)."""
+
+    def __init__(self, field, ring: PolyRing) -> None:
+        self.field, self.ring = field, ring
+
+    # -- helpers ---------------------------------------------------------------------
+    def _fix(self, s: PolyMat) -> PolyMat:
+        R = self.ring
+        if s.ctx is not R.ctx:
+            lift = R.lift
+            out = np.empty(s.a.shape, dtype=object)
+            for idx, x in np.ndenumerate(s.a):
+                out[idx] = lift(x)
+            s.a, s.ctx = out, R.ctx
+        return s
+
+    def _fill(self, m: int, k: int, x) -> np.ndarray:
+        a = np.empty((m, k), dtype=object)
+        a.fill(x)
+        return a
+
+    def _pm(self, a: np.ndarray, den: tuple) -> PolyMat:
+        return PolyMat(a, den, self.ring.ctx)
+
+    def _scale(self, a: np.ndarray, f) -> np.ndarray:
+        return a * _scalar_array(f)
+
+    def _to(self, s: PolyMat, D: tuple) -> np.ndarray:
+        """The numerators of s over the larger denominator D."""
+        if s.den == D:
+            return s.a
+        f = self.ring.den_poly(_minus(D, s.den))
+        return self._scale(s.a, f)
+
+    def _reduce(self, a: np.ndarray, den: tuple) -> PolyMat:
+        """Cancel every atom that divides every numerator (exact divisions, smallest entry first:
+        an atom that does not divide usually fails at the first try)."""
+        if not den:
+            return self._pm(a, den)
+        R = self.ring
+        nz = [(i, x) for i, x in enumerate(a.flat) if not x.is_zero()]
+        if not nz:
+            return self._pm(a, NODEN)
+        DomainError = _domain_error()
+        nz.sort(key=lambda t: len(t[1]))
+        out, changed = [], False
+        for k, e in den:
+            f = R.atoms[k]
+            while e > 0:
+                try:
+                    q = [(i, x / f) for i, x in nz]
+                except DomainError:
+                    break
+                nz, e, changed = q, e - 1, True
+            if e:
+                out.append((k, e))
+        if changed:
+            a = self._fill(a.shape[0], a.shape[1], R.zero)
+            flat = a.reshape(-1)
+            for i, x in nz:
+                flat[i] = x
+        return self._pm(a, tuple(out))
+
+    def _obj(self, s) -> np.ndarray:
+        return s.a if type(s) is ObjMat else self.to_obj(s)
+
+    def _generic(self, a: np.ndarray) -> ObjMat:
+        f = self.field.normalize
+        out = np.empty(a.shape, dtype=object)
+        for idx, x in np.ndenumerate(a):
+            out[idx] = f(x)
+        return ObjMat(out)
+
+    # -- conversions -------------------------------------------------------------------
+    def from_obj(self, a):
+        R = self.ring
+        m, k = a.shape
+        try:
+            v = R.version
+            rfs = [R.from_se(x) for x in a.flat]
+            while v != R.version:      # the context grew on the way
+                v = R.version
+                rfs = [R.from_se(x) for x in a.flat]
+        except NotRational:
+            return ObjMat(a.copy())
+        D = NODEN
+        for r in rfs:
+            if r[1] and r[1] != D:
+                D = _merge_max(D, r[1])
+        out = np.empty((m, k), dtype=object)
+        flat = out.reshape(-1) if out.size else out
+        for i, (n, d) in enumerate(rfs):
+            flat[i] = n if d == D else n * R.den_poly(_minus(D, d))
+        return self._pm(out, D)
+
+    def to_obj(self, s):
+        if type(s) is ObjMat:
+            return s.a.copy()
+        s = self._fix(s)
+        R = self.ring
+        out = np.empty(s.a.shape, dtype=object)
+        for idx, x in np.ndenumerate(s.a):
+            out[idx] = R.to_se(R.rf_reduce((x, s.den)) if s.den else (x, NODEN))
+        return out
+
+    def shape(self, s):
+        return s.a.shape
+
+    def accepts(self, x):
+        return isinstance(x, (se.Basic, int, Fraction))
+
+    # -- constructors -------------------------------------------------------------------
+    def zeros(self, m, k):
+        return PolyMat(self._fill(m, k, self.ring.zero), NODEN, self.ring.ctx, True)
+
+    def identity(self, m):
+        a = self._fill(m, m, self.ring.zero)
+        one = self.ring.one
+        for i in range(m):
+            a[i, i] = one
+        return self._pm(a, NODEN)
+
+    def from_consts(self, a):
+        R = self.ring
+        out = np.empty(a.shape, dtype=object)
+        for idx, x in np.ndenumerate(a):
+            out[idx] = R.ctx.constant(int(x))
+        return self._pm(out, NODEN)
+
+    # sparse, diag, unit: the generic constructors (from_obj of symengine entries)
+
+    # -- arithmetic -------------------------------------------------------------------
+    def add(self, a, b):
+        if type(a) is ObjMat or type(b) is ObjMat:
+            return self._generic(self._obj(a) + self._obj(b))
+        if a.z:
+            return b
+        if b.z:
+            return a
+        a, b = self._fix(a), self._fix(b)
+        if a.den == b.den:
+            return self._pm(a.a + b.a, a.den)
+        D = _merge_max(a.den, b.den)
+        return self._pm(self._to(a, D) + self._to(b, D), D)
+
+    def sub(self, a, b):
+        if type(a) is ObjMat or type(b) is ObjMat:
+            return self._generic(self._obj(a) - self._obj(b))
+        if b.z:
+            return a
+        if a.z:
+            return self.neg(b)
+        a, b = self._fix(a), self._fix(b)
+        if a.den == b.den:
+            return self._pm(a.a - b.a, a.den)
+        D = _merge_max(a.den, b.den)
+        return self._pm(self._to(a, D) - self._to(b, D), D)
+
+    def neg(self, a):
+        if type(a) is ObjMat:
+            return ObjMat(-a.a)
+        if a.z:
+            return a
+        a = self._fix(a)
+        return self._pm(-a.a, a.den)
+
+    def matmul(self, a, b):
+        if type(a) is ObjMat or type(b) is ObjMat:
+            A, B = self._obj(a), self._obj(b)
+            if A.shape[1] == 0:
+                return ObjMat(self._fill(A.shape[0], B.shape[1], self.field.const(0)))
+            return self._generic(np.dot(A, B))
+        (m, k), n = a.a.shape, b.a.shape[1]
+        if a.z or b.z or k == 0 or m == 0 or n == 0:
+            return self.zeros(m, n)
+        a, b = self._fix(a), self._fix(b)
+        return self._reduce(_dot(a.a, b.a, self.ring.zero), _merge_add(a.den, b.den))
+
+    def smul(self, a, c):
+        if type(a) is PolyMat and a.z:
+            return a
+        if type(a) is not ObjMat:
+            try:
+                n, d = self.ring.from_se(c)
+            except NotRational:
+                pass
+            else:
+                a = self._fix(a)
+                if n.is_zero():
+                    return self.zeros(*a.a.shape)
+                out = self._scale(a.a, n)
+                return self._reduce(out, _merge_add(a.den, d)) if d else self._pm(out, a.den)
+        A = self._obj(a)
+        out = np.empty(A.shape, dtype=object)
+        for idx, x in np.ndenumerate(A):
+            out[idx] = x * c
+        return self._generic(out)
+
+    def T(self, a):
+        if type(a) is ObjMat:
+            return ObjMat(a.a.T.copy())
+        if a.z:
+            return self.zeros(a.a.shape[1], a.a.shape[0])
+        a = self._fix(a)
+        return self._pm(a.a.T.copy(), a.den)
+
+    def _scalar(self, n, d):
+        R = self.ring
+        return R.to_se(R.rf_reduce((n, d)))
+
+    def trace(self, a):
+        if type(a) is ObjMat:
+            acc = self.field.const(0)
+            for i in range(a.a.shape[0]):
+                acc = acc + a.a[i, i]
+            return self.field.normalize(acc)
+        a = self._fix(a)
+        acc = self.ring.zero
+        for i in range(a.a.shape[0]):
+            acc = acc + a.a[i, i]
+        return self._scalar(acc, a.den)
+
+    def inner(self, a, b):
+        if type(a) is ObjMat or type(b) is ObjMat:
+            acc = self.field.const(0)
+            for x, y in zip(self._obj(a).flat, self._obj(b).flat):
+                acc = acc + x * y
+            return self.field.normalize(acc)
+        a, b = self._fix(a), self._fix(b)
+        acc = self.ring.zero
+        for x, y in zip(a.a.flat, b.a.flat):
+            acc = acc + x * y
+        return self._scalar(acc, _merge_add(a.den, b.den))
+
+    def is_zero(self, a):
+        if type(a) is ObjMat:
+            return all(self.field.is_zero(x) for x in a.a.flat)
+        return a.z or not any(a.a.flat)
+
+    def block(self, grid):
+        if any(type(b) is ObjMat for row in grid for b in row):
+            return self._generic(np.concatenate([np.concatenate([self._obj(b) for b in row], axis=1)
+                                                 for row in grid], axis=0))
+        grid = [[self._fix(b) for b in row] for row in grid]
+        D = NODEN
+        for row in grid:
+            for b in row:
+                D = _merge_max(D, b.den)
+        a = np.concatenate([np.concatenate([self._to(b, D) for b in row], axis=1) for row in grid], axis=0)
+        return self._pm(a, D)
+
+    def inv(self, a):
+        """N/D inverted as D adj(N)/det(N): fraction-free Gauss-Jordan (Bareiss) on [N | I],
+        every division exact; the same budget as the symbolic solve (systems beyond
+        ``field.max_solve`` only when numeric pivots suffice)."""
+        if type(a) is ObjMat:
+            m = a.a.shape[0]
+            I = self._fill(m, m, self.field.const(0))
+            for i in range(m):
+                I[i, i] = self.field.const(1)
+            sol = self.field.solve(a.a.tolist(), I.tolist())
+            out = np.empty((m, m), dtype=object)
+            for i in range(m):
+                for j in range(m):
+                    out[i, j] = sol[i][j]
+            return ObjMat(out)
+        a = self._fix(a)
+        R = self.ring
+        m = a.a.shape[0]
+        if m == 0:
+            return self.zeros(0, 0)
+        N = [[a.a[i, j] for j in range(m)] for i in range(m)]
+        if m > self.field.max_solve and (a.den or not _numeric_pivots(N)):
+            raise SymbolicBudget(f"a symbolic {m}x{m} linear solve")
+        rows = [N[i] + [R.one if j == i else R.zero for j in range(m)] for i in range(m)]
+        prev = R.one
+        for k in range(m):
+            piv = None
+            for i in range(k, m):
+                x = rows[i][k]
+                if not x.is_zero() and (piv is None or len(x) < len(rows[piv][k])):
+                    piv = i
+            if piv is None:
+                raise DegenerateError("singular symbolic linear system")
+            rows[k], rows[piv] = rows[piv], rows[k]
+            rk = rows[k]
+            p = rk[k]
+            for i in range(m):
+                if i == k:
+                    continue
+                ri = rows[i]
+                f = ri[k]
+                if f.is_zero():
+                    if prev.is_one() and p.is_one():
+                        continue
+                    rows[i] = [x if j == k else (p * x) / prev for j, x in enumerate(ri)]
+                    continue
+                rows[i] = [R.zero if j == k else (p * x - f * rk[j]) / prev for j, x in enumerate(ri)]
+            prev = p
+        det = rows[0][0]                       # every diagonal entry is det(PN) now
+        c, atoms = R.factor(det)
+        num = R.den_poly(a.den) / c
+        out = np.empty((m, m), dtype=object)
+        for i in range(m):
+            for j in range(m):
+                out[i, j] = rows[i][m + j] * num
+        return self._reduce(out, atoms)
+
+
+def _dot(a: np.ndarray, b: np.ndarray, zero) -> np.ndarray:
+    """The product of two arrays of polynomials, skipping zero entries (structural zeros are
+    common: X = (E_1..E_r), derivatives of constants, block matrices)."""
+    m, n = a.shape[0], b.shape[1]
+    al, bt = a.tolist(), b.T.tolist()
+    out = np.empty((m, n), dtype=object)
+    for i in range(m):
+        ai = al[i]
+        for j in range(n):
+            acc = None
+            for x, y in zip(ai, bt[j]):
+                if x and y:
+                    acc = x * y if acc is None else acc + x * y
+            out[i, j] = zero if acc is None else acc
+    return out
+
+
+def _numeric_pivots(N) -> bool:
+    """Whether Gaussian elimination finds a nonzero constant pivot at every step (then no
+    fractions appear); the rule of :meth:`SymbolicField.solve`."""
+    rows = [list(r) for r in N]
+    m = len(rows)
+    for col in range(m):
+        piv = next((i for i in range(col, m) if rows[i][col].is_constant() and not rows[i][col].is_zero()), None)
+        if piv is None:
+            return False
+        rows[col], rows[piv] = rows[piv], rows[col]
+        p = rows[col][col]
+        for i in range(col + 1, m):
+            f = rows[i][col]
+            if not f.is_zero():
+                f = f / p
+                rows[i] = [a - f * b for a, b in zip(rows[i], rows[col])]
+    return True

@@ -1,0 +1,203 @@
+"""The exact method's flint backend (stiefelsym.polyfield) against the symengine representation:
+the same matrices, exact zero tests, cancellation, inverses, growing contexts, the fallback for
+entries flint cannot hold, and identical verdicts on claims."""
+from __future__ import annotations
+
+import random
+from fractions import Fraction
+
+import pytest
+import symengine as se
+
+from stiefelsym import admissible, comm, native
+from stiefelsym.claims import Claim
+from stiefelsym.fields import DegenerateError, DualField, SymbolicBudget, SymbolicField
+from stiefelsym.matrix import Mat, block
+from stiefelsym.methods import run_exact
+from stiefelsym.polyfield import ObjMat, PolyBackend, PolyMat
+from stiefelsym.scene import Scene
+
+
+def fields():
+    """The flint-backed field and the symengine one (the representation before the backend)."""
+    F = SymbolicField()
+    G = SymbolicField()
+    G.native = False
+    return F, G
+
+
+def same(x, y, points: int = 3) -> bool:
+    """x = y at random rational points (symengine substitution, independent of flint)."""
+    syms = sorted((x - y).free_symbols, key=str)
+    rng = random.Random(7)
+    for _ in range(points):
+        v = (x - y).subs({t: se.Rational(rng.randint(-10**6, 10**6), rng.randint(1, 10**6)) for t in syms})
+        if v != 0:
+            return False
+    return True
+
+
+def entries(M):
+    v = M._view()
+    return [[v[i, j] for j in range(v.shape[1])] for i in range(v.shape[0])]
+
+
+def rand_mat(F, m, k, syms, rng, dens=()):
+    rows = []
+    for _ in range(m):
+        row = []
+        for _ in range(k):
+            x = sum((rng.randint(-3, 3) * rng.choice(syms) for _ in range(2)), se.Integer(0))
+            x = x + F.const(Fraction(rng.randint(-5, 5), rng.randint(1, 4)))
+            if dens and rng.random() < 0.3:
+                x = x / rng.choice(dens)
+            row.append(x)
+        rows.append(row)
+    return Mat._rows(rows, F)
+
+
+def ops(F, syms, rng):
+    dens = [syms[0] - syms[1], syms[2], 1 + syms[0] ** 2 + syms[3] ** 2]
+    A = rand_mat(F, 3, 3, syms, rng, dens)
+    B = rand_mat(F, 3, 2, syms, rng, dens)
+    C = rand_mat(F, 2, 3, syms, rng)
+    c = syms[4] / (syms[1] + 2)
+    M = (A @ B @ C - C.T @ B.T * c + A.inv() @ A.T) * F.const(Fraction(3, 7))
+    K = block([[M, A @ B], [C, C @ B]])
+    return K, (A @ A.inv()).trace() + M.trace() * c, A._inner(C.T)
+
+
+def test_backend_is_used_and_agrees_with_symengine():
+    for seed in range(2):
+        F, G = fields()
+        syms = [F.param(f"x{i}") for i in range(5)]
+        K1, t1, i1 = ops(F, syms, random.Random(seed))
+        K2, t2, i2 = ops(G, syms, random.Random(seed))
+        assert isinstance(K1._n, PolyMat) and K2._n is None
+        assert all(same(x, y) for r1, r2 in zip(entries(K1), entries(K2)) for x, y in zip(r1, r2))
+        assert same(t1, t2)
+        assert same(i1, i2)
+
+
+def test_native_backend_hook():
+    F, G = fields()
+    assert isinstance(native.backend(F), PolyBackend)
+    assert native.backend(G) is None
+    assert isinstance(native.backend(DualField(F)), native.DualBackend)
+
+
+def test_cayley_point_cancels_to_the_identity():
+    """X^T X = I in the Cayley chart: the common denominator det(I + S)^2 cancels completely."""
+    for r in (1, 2, 3):
+        s = Scene(3, r, SymbolicField(), chart="cayley")
+        XtX = s.X.T @ s.X
+        assert isinstance(XtX._n, PolyMat) and XtX._n.den == ()
+        assert (XtX - s.Ir).is_zero()
+        assert not (XtX - s.Ir * 2).is_zero()
+
+
+def test_inverse_and_singular_and_budget():
+    F = SymbolicField()
+    x, y, z = (F.param(n) for n in "xyz")
+    M = Mat._rows([[x, y, 1], [z, x * y, y], [1, z, x / y]], F)
+    assert (M @ M.inv() - Mat.identity(3, F)).is_zero()
+    S = Mat._rows([[x, y], [2 * x, 2 * y]], F)
+    with pytest.raises(DegenerateError):
+        S.inv()
+    B4 = Mat._rows([[x if i == j else y + i * j for j in range(4)] for i in range(4)], F)
+    with pytest.raises(SymbolicBudget):
+        B4.inv()
+    N4 = Mat._rows([[1 if i == j else (x if j > i else 0) for j in range(4)] for i in range(4)], F)
+    assert (N4 @ N4.inv() - Mat.identity(4, F)).is_zero()
+
+
+def test_zero_test_is_exact():
+    """A polynomial that vanishes at many integer points is not zero; a sum that cancels is."""
+    F = SymbolicField()
+    x, y = F.param("x"), F.param("y")
+    p = se.Integer(1)
+    for i in range(40):
+        p = p * (x - i)
+    assert not F.is_zero(p)
+    assert not Mat._rows([[p, 0]], F).is_zero()
+    q = (x + y) ** 3 / (x - y) - (x ** 3 + 3 * x ** 2 * y + 3 * x * y ** 2 + y ** 3) / (x - y)
+    assert F.is_zero(q)
+    assert Mat._rows([[q]], F).is_zero()
+    tiny = F.const(Fraction(1, 10 ** 40)) * x * y
+    assert not F.is_zero(q + tiny)
+    assert not Mat._rows([[q + tiny]], F).is_zero()
+
+
+def test_context_grows_and_old_matrices_follow():
+    F = SymbolicField()
+    ring = F.poly_ring()
+    syms = [F.param(f"p{i}") for i in range(40)]
+    early = Mat._rows([[syms[0], syms[1]], [syms[2], 1 / (1 + syms[3] ** 2)]], F)
+    early._nat()
+    cap = ring.cap
+    late = Mat._rows([[sum(syms[4:], se.Integer(0)), syms[-2]], [syms[-3], syms[-4] / (1 + syms[3] ** 2)]], F)
+    late._nat()
+    assert ring.cap > cap and early._n.ctx is not ring.ctx
+    P = early @ late + late.T
+    G = SymbolicField()
+    G.native = False
+    P2 = (Mat._rows(entries(early), G) @ Mat._rows(entries(late), G) + Mat._rows(entries(late), G).T)
+    assert all(same(a, b) for r1, r2 in zip(entries(P), entries(P2)) for a, b in zip(r1, r2))
+
+
+def test_entries_flint_cannot_hold_fall_back_to_symengine():
+    F = SymbolicField()
+    x = F.param("x")
+    M = Mat._rows([[se.sqrt(x), 1], [x, 2]], F)
+    N = Mat._rows([[x, 1], [0, x]], F)
+    assert isinstance(M._nat(), ObjMat)
+    out = M @ N - N.T
+    assert se.expand(entries(out)[0][0] - (se.sqrt(x) * x - x)) == 0
+    assert not out.is_zero()
+    assert (M - M).is_zero()
+
+
+def test_dual_numbers_over_the_backend():
+    F = SymbolicField()
+    D = DualField(F)
+    s = Scene(3, 2, F, chart="cayley")
+    flow = {"X": s.P, "P": -(s.X)}
+    d1 = s.d(lambda t: t.X.T @ t.X, flow)
+    assert d1.is_zero()                     # X^T X = I along any tangent vector
+    d2 = s.d(lambda t: t.X.T @ t.P, flow)
+    assert not d2.is_zero()
+    assert D.base is F
+
+
+def _la1(s):
+    k = 1 + 2 * s.kappa
+    X, P, A = s.X, s.P, s.A
+    flow = {"X": P - k * (X @ P.T @ X), "P": -(A @ X) - X @ P.T @ P + k * (P @ X.T @ P) + X @ X.T @ A @ X}
+    L = lambda t: t.lam * t.Phi + t.X @ t.X.T - t.lam * t.lam * t.A  # noqa: E731
+    return {"LA1": s.d(L, flow) - comm(s.Phi - s.lam * s.A, L(s))}
+
+
+def _la1_corrupt(s):
+    out = _la1(s)
+    out["LA1"] = out["LA1"] + s.X @ s.X.T * s.q(1, 10 ** 30) * s.lam * s.kappa
+    return out
+
+
+def _la1_cayley(s):
+    out = _la1(s)
+    out["a"] = s.a[0] - s.A[0, 0]           # reads coordinates: the Cayley chart
+    return out
+
+
+@pytest.mark.parametrize("func,verdict,sizes", [(_la1, "proved", ((2, 1), (3, 1), (3, 2))),
+                                                (_la1_corrupt, "fails", ((2, 1), (3, 2))),
+                                                (_la1_cayley, "proved", ((2, 1), (2, 2)))])
+def test_verdicts_with_either_representation(func, verdict, sizes, monkeypatch):
+    claim = Claim(id="t-la1", paper=("LA1",), kind="lax", section="5", func=func, sizes=admissible(3),
+                  title="LA1")
+    for n, r in sizes:
+        got = run_exact(claim, n, r, 0).verdict
+        monkeypatch.setattr(SymbolicField, "native", False)
+        old = run_exact(claim, n, r, 0).verdict
+        monkeypatch.setattr(SymbolicField, "native", True)
+        assert got == old == verdict, (n, r, got, old)
