@@ -331,11 +331,13 @@ class PolyRing:
 class PolyMat:
     """A matrix of polynomial numerators (numpy object array) over one denominator (atoms)."""
 
-    __slots__ = ("a", "den", "ctx", "z")
+    __slots__ = ("a", "den", "ctx", "z", "o")
 
     def __init__(self, a: np.ndarray, den: tuple, ctx, z: bool = False) -> None:
         #: z: known to be the zero matrix (derivatives of constants: products skip it)
         self.a, self.den, self.ctx, self.z = a, den, ctx, z
+        #: the entries as symengine expressions, once computed (read only)
+        self.o = None
 
 
 class ObjMat:
@@ -418,7 +420,12 @@ class PolyBackend(Backend):
         return self._pm(a, tuple(out))
 
     def _obj(self, s) -> np.ndarray:
-        return s.a if type(s) is ObjMat else self.to_obj(s)
+        """The entries as symengine expressions, read only (converted once per matrix)."""
+        if type(s) is ObjMat:
+            return s.a
+        if s.o is None:
+            s.o = self._to_obj(s)
+        return s.o
 
     def _generic(self, a: np.ndarray) -> ObjMat:
         f = self.field.normalize
@@ -452,6 +459,9 @@ class PolyBackend(Backend):
     def to_obj(self, s):
         if type(s) is ObjMat:
             return s.a.copy()
+        return self._obj(s).copy()
+
+    def _to_obj(self, s):
         s = self._fix(s)
         R = self.ring
         out = np.empty(s.a.shape, dtype=object)
