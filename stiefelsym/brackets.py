@@ -402,6 +402,8 @@ def _reverse_gradient_in_x(s: Any, T: PoissonTensor, x: Mat, b: Mat, c: Mat) -> 
     from .reverse import Rev, RevMat, Unsupported, gradient, leaf
     from .scalar import unwrap
     from .scene import ReverseScene, Scene
+    from .view import engine_scene
+    s = engine_scene(s)
     if type(s) is not Scene or s.field.name not in _REVERSE_FIELDS:
         return None
     try:

@@ -41,9 +41,10 @@ def guarded(func: Callable) -> Callable:
         return func
 
     def run(scene):
+        from .view import view
         tracker = getattr(scene, "_tracker", None)
         with running_claim():
-            out = func(scene)
+            out = func(view(scene))
         refused = tracker.refused if tracker is not None and hasattr(tracker, "refused") else ()
         if refused:
             raise ClaimRefused("the claim was refused " + "; ".join(refused)
@@ -96,6 +97,16 @@ def deadline(seconds: float | None, what: str, timeout: Callable[[str], BaseExce
 KINDS = ("id", "lax", "pb", "dim", "not", "geo")
 
 
+def _sizes_as_ints(obj: Any, *names: str) -> None:
+    """A claim's sizes (``s.n``, ``s.r`` are :class:`~stiefelsym.view.Dim`) as the plain ints a
+    statement holds (on the dimension-free scene, where a size is no number, this is refused)."""
+    from .view import Dim
+    for name in names:
+        v = getattr(obj, name)
+        if type(v) is Dim:
+            object.__setattr__(obj, name, int(v))
+
+
 @dataclass(frozen=True)
 class Rank:
     """The rank of ``matrix`` equals ``expected``.
@@ -111,6 +122,7 @@ class Rank:
     meaning: str = ""
 
     def __post_init__(self) -> None:
+        _sizes_as_ints(self, "expected")
         if not isinstance(self.matrix, Mat):
             raise TypeError("Rank: the matrix must be a matrix of the scene")
         if type(self.expected) is not int or type(self.generic) is not bool:
@@ -126,6 +138,7 @@ class Count:
     meaning: str = ""
 
     def __post_init__(self) -> None:
+        _sizes_as_ints(self, "value", "expected")
         if type(self.value) is not int or type(self.expected) is not int:
             raise TypeError("Count: the value and the expected count are ints (an object that says it "
                             "equals anything is refused)")

@@ -36,14 +36,14 @@ from .scalar import Scalar, claim_code, engine_only
 class CoordinateTracker:
     """Records, append-only, how claim code looked at coordinates of ℝⁿ; knows the sizes n, r."""
 
-    __slots__ = ("_used", "dims", "_sizes", "_refused", "spaces")
+    __slots__ = ("_used", "dims", "_sizes", "_refused", "_spaces")
 
     def __init__(self, dims: dict[str, int] | None = None) -> None:
         self._used: list[str] = []
         self._refused: list[str] = []
         #: the spaces whose coordinates are recorded: ℝⁿ, and ℝʳ too where the chart's reduction
         #: also uses O(r) (the equivariant chart of the metric realization)
-        self.spaces: tuple[str, ...] = ("n",)
+        self._spaces: tuple[str, ...] = ("n",)
         #: numeric sizes of the definite spaces (None for the dimension-free scene)
         self.dims = dict(dims) if dims is not None else None
         self._sizes: dict[str, int | None] = {}
@@ -63,6 +63,15 @@ class CoordinateTracker:
     @property
     def used(self) -> tuple[str, ...]:
         return tuple(self._used)
+
+    @property
+    def spaces(self) -> tuple[str, ...]:
+        """The spaces whose coordinates are recorded (read-only; see :meth:`watch_r`)."""
+        return self._spaces
+
+    def watch_r(self) -> None:
+        """Record reads of coordinates of ℝʳ too (a chart that also reduces by O(r); engine only)."""
+        self._spaces = ("n", "r")
 
     def refuse(self, what: str) -> None:
         """Record something the engine refused to claim code (before the refusal is raised):
@@ -195,7 +204,10 @@ def is_scene_number(x: Any) -> bool:
     t = type(x)
     if t is Dual:
         return is_scene_number(x.a) and (is_scene_number(x.b) or type(x.b) is int and x.b == 0)
-    return t in _ENGINE_TYPES or t in _library_types()
+    if t in _ENGINE_TYPES:
+        return True
+    # the libraries' types, without importing a library the value cannot come from
+    return t.__module__.startswith(("flint", "symengine", "mpmath")) and t in _library_types()
 
 
 def check_element(field: Field, x: Any) -> Any:
@@ -364,6 +376,9 @@ class Mat:
 
     @property
     def tracker(self) -> CoordinateTracker | None:
+        """The record (engine only: claim code that asks is refused, and recorded)."""
+        if claim_code():
+            engine_only(self._tracker, "a matrix's record (M.tracker)")
         return self._tracker
 
     # -- construction -----------------------------------------------------

@@ -213,7 +213,7 @@ class Scene(PaperObjects):
         self._options = dict(options or {})
         self._tracker = tracker if tracker is not None else CoordinateTracker({"n": n, "r": r})
         if chart == "equivariant" and realization == "metric" and tracker is None:
-            self._tracker.spaces = ("n", "r")     # the chart's reduction uses O(r) as well
+            self._tracker.watch_r()               # the chart's reduction uses O(r) as well
         self._params: dict[str, Any] = {}
         self._param_blocks: list[tuple[str, Any, Any]] = []
         self._cache: dict[str, Any] = {}

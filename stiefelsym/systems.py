@@ -52,6 +52,7 @@ import numpy as np
 from . import scene as scene_module
 from .matrix import Mat, NeedsCoordinates, _refused, block, definite
 from .scalar import unwrap
+from .view import engine_scene
 from .reverse import Node, Rev, RevMat, Unsupported, gradient as rev_gradient, leaf as rev_leaf
 from .scene import ReverseScene, Scene, _LiftedScene
 
@@ -64,7 +65,7 @@ __all__ = ["derivative", "entries", "symmetric_entries", "hermitian_entries", "r
 
 
 def _coordinate_scene(s: Any, what: str) -> None:
-    if not isinstance(s, Scene):
+    if not isinstance(engine_scene(s), Scene):
         raise _refused(getattr(s, "_tracker", None), what)   # recorded before it is raised
 
 
@@ -361,7 +362,7 @@ class _PointReverseScene(ReverseScene):
 
 
 def _reverse_applies(s: Scene) -> bool:
-    return scene_module.REVERSE_GRADIENTS and not isinstance(s, _LiftedScene)
+    return scene_module.REVERSE_GRADIENTS and not isinstance(engine_scene(s), _LiftedScene)
 
 
 def _reverse_gradients(s: Scene, F: Callable[[Scene, dict], Any], point: Point,
