@@ -568,7 +568,7 @@ class PolyBackend(Backend):
         if a.z:
             return self.zeros(a.a.shape[1], a.a.shape[0])
         a = self._fix(a)
-        return self._pm(a.a.T.copy(), a.den)
+        return self._pm(a.a.T, a.den)          # a view: storage is never written in place
 
     def _scalar(self, n, d):
         R = self.ring
@@ -677,17 +677,18 @@ def _dot(a: np.ndarray, b: np.ndarray, zero) -> np.ndarray:
     """The product of two arrays of polynomials, skipping zero entries (structural zeros are
     common: X = (E_1..E_r), derivatives of constants, block matrices)."""
     m, n = a.shape[0], b.shape[1]
-    al, bt = a.tolist(), b.T.tolist()
-    out = np.empty((m, n), dtype=object)
-    for i in range(m):
-        ai = al[i]
-        for j in range(n):
+    bt = b.T.tolist()
+    out = np.empty(m * n, dtype=object)
+    pos = 0
+    for ai in a.tolist():
+        for bj in bt:
             acc = None
-            for x, y in zip(ai, bt[j]):
+            for x, y in zip(ai, bj):
                 if x and y:
                     acc = x * y if acc is None else acc + x * y
-            out[i, j] = zero if acc is None else acc
-    return out
+            out[pos] = zero if acc is None else acc
+            pos += 1
+    return out.reshape(m, n)
 
 
 def _numeric_pivots(N) -> bool:
