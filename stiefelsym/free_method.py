@@ -15,7 +15,6 @@ verdict is ``proved``; a certificate it rejects makes the verdict ``error``.
 from __future__ import annotations
 
 import time
-import weakref
 from typing import Callable
 
 from .certificate_check import check_certificate
@@ -139,24 +138,11 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
     return res
 
 
-#: the outcome of the division probe of a claim's function, per (claim, realization, size): the
-#: probe is a pure function of these (its points come from the seed, the claim's id and the size),
-#: so it runs once per claim function, like the cached degree bound of the randomized methods
-_PROBES: "weakref.WeakKeyDictionary[Callable, dict]" = weakref.WeakKeyDictionary()
-
-
 def probe_divisions(claim: Claim, func: Callable) -> str:
-    """The division probe of ``func`` at the first size of the claim with n ≥ 3 (memoized)."""
+    """The division probe of ``func`` at the first size of the claim with n ≥ 3 (memoized by
+    :func:`~stiefelsym.methods.division_probe`)."""
     probe_size = next((z for z in claim.sizes if z.n >= 3), None) or list(claim.sizes)[-1]
-    key = (claim.id, claim.realization, probe_size.n, probe_size.r)
-    try:
-        memo = _PROBES.setdefault(func, {})
-    except TypeError:   # a callable without weak references: no memo
-        memo = {}
-    why = memo.get(key)
-    if why is None:
-        why = memo[key] = division_probe(claim, probe_size.n, probe_size.r, func, strict=True)
-    return why
+    return division_probe(claim, probe_size.n, probe_size.r, func, strict=True)
 
 
 def certify_entries(scene, entries) -> dict:

@@ -436,15 +436,23 @@ class Mat:
             a[i, i] = one
         return M
 
+    def _derived(self, a, s, tags, other: "Mat | None") -> "Mat":
+        """The result of an operation on this matrix (and ``other``): its spaces come from the
+        operands' (already checked against the sizes, and any look at coordinates recorded when
+        they were made), so it is made without checking them again."""
+        m = object.__new__(Mat)
+        m._obj, m._n, m._field = a, s, self._field
+        m._tags = self._tags if tags is None else tags
+        t = self._tracker
+        m._tracker = t if t is not None or other is None else other._tracker
+        m._coords = self._coords or (other is not None and other._coords)
+        return m
+
     def _new(self, a, tags=None, other: "Mat | None" = None) -> "Mat":
-        tracker = self._tracker if self._tracker is not None else (other._tracker if other is not None else None)
-        coords = self._coords or (other is not None and other._coords)
-        return Mat._wrap(a, self._field, self._tags if tags is None else tags, tracker, coords)
+        return self._derived(a, None, tags, other)
 
     def _new_n(self, s, tags=None, other: "Mat | None" = None) -> "Mat":
-        tracker = self._tracker if self._tracker is not None else (other._tracker if other is not None else None)
-        coords = self._coords or (other is not None and other._coords)
-        return Mat._wrap_native(s, self._field, self._tags if tags is None else tags, tracker, coords)
+        return self._derived(None, s, tags, other)
 
     def _norm(self, a: np.ndarray) -> np.ndarray:
         f = self._field.normalize

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import math
 import random
+import weakref
 import time
 from dataclasses import dataclass, field as dc_field
 from fractions import Fraction
@@ -577,6 +578,7 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
     problems = [p for e in evaluations for p in e.rank_problems + e.count_problems]
     if (claim.expect == "nonzero" and nonzero) or not (nonzero or problems or claim.expect == "nonzero"):
         why = division_probe(claim, n, r, func, seed)
+        res.seconds = time.perf_counter() - t0       # the probe is part of the method's work
         if why:
             res.verdict, res.message = "error", why
             return res
@@ -616,8 +618,29 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
 PROBE_PRIMES = (2**61 - 1, 2**62 - 57, 2**60 - 93)
 
 
+#: the outcome of the division probe per claim function and (claim, realization, size, seed, strict):
+#: a pure function of these (its points come from the seed, the claim's id and the size), so it
+#: runs once per claim function, like the cached degree bound of the randomized methods
+_PROBES: "weakref.WeakKeyDictionary[Callable, dict]" = weakref.WeakKeyDictionary()
+
+
 def division_probe(claim: Claim, n: int, r: int, func: Callable | None = None, seed: int = 0,
                    strict: bool = False) -> str:
+    """The division probe of the claim at (n, r) (see :func:`_division_probe`), memoized."""
+    func = func or claim.func
+    key = (claim.id, claim.realization, n, r, seed, strict)
+    try:
+        memo = _PROBES.setdefault(func, {})
+    except TypeError:   # a callable without weak references: no memo
+        memo = {}
+    why = memo.get(key)
+    if why is None:
+        why = memo[key] = _division_probe(claim, n, r, func, seed, strict)
+    return why
+
+
+def _division_probe(claim: Claim, n: int, r: int, func: Callable | None = None, seed: int = 0,
+                    strict: bool = False) -> str:
     """"" when the claim evaluates at a random point of T*V (over a prime field) without dividing by zero;
     otherwise the reason.
 
