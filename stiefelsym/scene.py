@@ -860,12 +860,13 @@ class Scene(PaperObjects):
 
     def _closed_form_applies(self, approx: bool) -> bool:
         """The standard constraint set in a chart whose points are on V, and XᵀX = I checked exactly
-        (or taken from the chart's construction, ``approx``).  Not in the symbolic Cayley chart:
-        there rational functions make the closed form's products swell past any memory budget,
-        where the solved system is refused early by the symbolic budget."""
+        (or taken from the chart's construction, ``approx``).  Not in the symbolic Cayley chart over
+        symengine: there rational functions make the closed form's products swell past any memory
+        budget, where the solved system is refused early by the symbolic budget (over flint, with
+        one common denominator and exact cancellation, they do not)."""
         if (not CLOSED_FORM_MULTIPLIERS or self.realization != "standard"
                 or self.chart not in ("cayley", "equivariant") or not (self._field.exact or approx)
-                or isinstance(self._field, SymbolicField) and self.chart == "cayley"):
+                or isinstance(self._field, SymbolicField) and self.chart == "cayley" and not self._field.native):
             return False
         return approx or (self.X.T @ self.X - self.Ir).is_zero()
 
