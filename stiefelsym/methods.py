@@ -602,7 +602,7 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
         else:
             res.certificate = "; ".join(problems)
         return res
-    res.certificate = "; ".join(o.detail for o in res.checks if o.detail) or "every residual entry expands to 0"
+    res.certificate = "; ".join(o.detail for o in res.checks if o.detail) or "every residual entry is identically 0"
     if randomized.bounds:
         # every residual is identically zero and every lower bound exact; an upper bound on a rank
         # was taken at random points: randomized exact
