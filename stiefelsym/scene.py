@@ -383,15 +383,15 @@ class Scene(PaperObjects):
     def _stiefel_point(self, prefix: str) -> tuple[Mat, Mat]:
         n, r = self.n, self.r
         if self.chart == "equivariant":
-            X = self.zeros(n, r, ("n", "r"))
-            for i in range(r):
-                X._a[i, i] = self.const(1)
-            P = self.zeros(n, r, ("n", "r"))
+            D = np.zeros((n, r), dtype=np.int64)
+            D[range(r), range(r)] = 1
+            X = Mat._consts(D, self._field, ("n", "r"), self._tracker)
             W = self._skew_params(f"{prefix}W", r, "r")
-            P._a[:r, :] = W._a
-            for i in range(r, n):
-                for j in range(r):
-                    P._a[i, j] = self._param(param_name(f"{prefix}Z", i, j))
+            if n == r:
+                P = Mat._wrap(W._a.copy(), self._field, ("n", "r"), self._tracker)
+            else:
+                P = Mat._wrap(np.concatenate([W._a, self._Z_block(prefix, n, r)]), self._field, ("n", "r"),
+                              self._tracker)
             if self._realization == "metric":
                 # (cond_XP2) at X0: B11 P1 + B12 P2 = W skew (B = A⁻¹), with B11 = diag(b) (see
                 # _metric_inverse): P1 = B11⁻¹(W − B12 P2), one division per row
@@ -435,6 +435,14 @@ class Scene(PaperObjects):
                     "B11 and B22; the residuals are covariant under (X, P, A) -> (gXh^T, gPh^T, gAg^T), "
                     "g in O(n), h in O(r), because {why}")
         return None
+
+    def _Z_block(self, prefix: str, n: int, r: int) -> np.ndarray:
+        """The (n − r) × r block Z of P at X0: entries named by their rows in P (r..n−1)."""
+        Z = np.empty((n - r, r), dtype=object)
+        for i in range(r, n):
+            for j in range(r):
+                Z[i - r, j] = self._param(param_name(f"{prefix}Z", i, j))
+        return Z
 
     def _metric_inverse(self) -> Mat:
         """B = A⁻¹ of the equivariant chart of the metric realization: symmetric, with its diagonal
