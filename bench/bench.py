@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import os
 import platform
 import re
@@ -161,6 +162,21 @@ def _wall(cmd: list[str], repeat: int = 3) -> tuple[float, subprocess.CompletedP
     return best, out
 
 
+def _warm_best(run: Callable[[], Any], warm: int, runs: int) -> tuple[float, float, Any]:
+    """Best wall and best CPU seconds of ``runs`` calls after ``warm`` calls (the interpreter's
+    specialization and the memos of pure functions warm up over the first few runs), and the last
+    result."""
+    for _ in range(warm):
+        run()
+    wall = cpu = math.inf
+    res = None
+    for _ in range(runs):
+        t0, c0 = time.perf_counter(), time.process_time()
+        res = run()
+        wall, cpu = min(wall, time.perf_counter() - t0), min(cpu, time.process_time() - c0)
+    return wall, cpu, res
+
+
 # --------------------------------------------------------------------------- the targets
 
 class Bench:
@@ -276,16 +292,9 @@ def main(argv=None) -> int:
         if args.no_baseline:
             raise NotYet("--no-baseline")
         base[(3, 1)] = naive_sympy(3, 1)
-        for _ in range(10):       # warm, as the other per-run targets: the interpreter's specialization, memos
-            run_one(LA1, Size(3, 1), "exact", seed=0)
-        best = None
-        for _ in range(max(20, args.repeat)):
-            t0 = time.process_time()
-            res = run_one(LA1, Size(3, 1), "exact", seed=0)
-            t = time.process_time() - t0
-            if res.verdict != "proved":
-                raise NotYet(f"exact LA1 (3,1): {res.verdict} {res.message[:120]}")
-            best = t if best is None else min(best, t)
+        _wall_s, best, res = _warm_best(lambda: run_one(LA1, Size(3, 1), "exact", seed=0), 10, max(20, args.repeat))
+        if res.verdict != "proved":
+            raise NotYet(f"exact LA1 (3,1): {res.verdict} {res.message[:120]}")
         return base[(3, 1)] / max(best, 1e-9), (f"sympy {base[(3, 1)]:.2f} s CPU, engine {best * 1e3:.3f} ms CPU "
                                                  "(best of 20 warm runs after 10)")
     bench.target("LA1 exact (3,1): speed-up over naive sympy (CPU)", 100000.0, "x", "higher", speedup)
@@ -347,15 +356,7 @@ def main(argv=None) -> int:
         res = run_one(LA1, None, "free", seed=0)
         if res.verdict != "proved":
             raise NotYet(f"free LA1: {res.verdict} {res.message[:120]}")
-        for _ in range(10):                 # warm: the interpreter's caches, the memos of pure functions
-            run_one(LA1, None, "free", seed=0)
-        best = cpu = None
-        for _ in range(max(50, args.repeat)):
-            t0, c0 = time.perf_counter(), time.process_time()
-            run_one(LA1, None, "free", seed=0)
-            t, c = time.perf_counter() - t0, time.process_time() - c0
-            best = t if best is None else min(best, t)
-            cpu = c if cpu is None else min(cpu, c)
+        best, cpu, _res = _warm_best(lambda: run_one(LA1, None, "free", seed=0), 10, max(50, args.repeat))
         return 1e3 * best, (f"proved for all n, r; wall, best of 50 warm runs after 10 (CPU best "
                             f"{1e3 * cpu:.3f} ms; certificate check included)")
     bench.target("dimension-free proof of LA1, warm", 0.5, "ms", "lower", free)

@@ -32,32 +32,21 @@ class ClaimRefused(TypeError):
     """The claim went through a door the engine refuses (recorded), whatever it did afterwards."""
 
 
-def guarded(func: Callable) -> Callable:
-    """The claim's function as every method calls it: inside it, the scene's doors see claim
-    code (numbers are opaque :class:`~stiefelsym.scalar.Scalar`, the number system and the
-    sampled point are the engine's); when it returns, a refusal in the scene's record makes the
-    run an error even if the claim caught the exception; the numbers it returns are unwrapped."""
-    if getattr(func, "_stiefelsym_guarded", False):
-        return func
-
-    def run(scene):
-        from .view import view
-        tracker = getattr(scene, "_tracker", None)
-        with running_claim():
-            out = func(view(scene))
-        refused = tracker.refused if tracker is not None and hasattr(tracker, "refused") else ()
-        if refused:
-            raise ClaimRefused("the claim was refused " + "; ".join(refused)
-                               + " (a refusal the claim caught still counts: claims compute with the "
-                                 "scene's numbers and matrices, the same way on every method)")
-        return unwrap(out)
-    run.__wrapped__ = func
-    run.__name__ = getattr(func, "__name__", "claim")
-    run.__qualname__ = getattr(func, "__qualname__", run.__name__)
-    run.__doc__ = getattr(func, "__doc__", None)
-    run.__module__ = getattr(func, "__module__", None)
-    run._stiefelsym_guarded = True
-    return run
+def run_claim(func: Callable, scene: Any) -> Any:
+    """A claim's function on an engine scene, as every method calls it: the claim gets the scene's
+    view (:mod:`.view`), inside which numbers are opaque and the number system, chart and sampled
+    point are the engine's; when it returns, a refusal in the scene's record makes the run an
+    error even if the claim caught the exception; the numbers it returns are unwrapped."""
+    from .view import view
+    tracker = getattr(scene, "_tracker", None)
+    with running_claim():
+        out = func(view(scene))
+    refused = tracker.refused if tracker is not None and hasattr(tracker, "refused") else ()
+    if refused:
+        raise ClaimRefused("the claim was refused " + "; ".join(refused)
+                           + " (a refusal the claim caught still counts: claims compute with the "
+                             "scene's numbers and matrices, the same way on every method)")
+    return unwrap(out)
 
 #: seconds a claim's own metadata code (size conditions, erratum sizes) may take per call,
 #: and a claims file's import

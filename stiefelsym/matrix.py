@@ -30,7 +30,7 @@ from ._lazy import symengine_opaque
 from .fields import Deg, Dual, ErrNum, Field
 from .native import backend
 from .reverse import Rev
-from .scalar import Scalar, claim_code, engine_only
+from .scalar import Scalar, arithmetic_seen, claim_code, engine_only
 
 
 class CoordinateTracker:
@@ -561,9 +561,14 @@ class Mat:
             c = c._x
         if isinstance(c, Mat):
             return NotImplemented
-        if isinstance(c, _SCALARS):
-            return self._scalar(self._field.const(Fraction(1) / Fraction(c)))
-        return self._scalar(self._field.const(1) / c)
+        try:
+            if isinstance(c, _SCALARS):
+                return self._scalar(self._field.const(Fraction(1) / Fraction(c)))
+            return self._scalar(self._field.const(1) / c)
+        except ArithmeticError:
+            if claim_code():
+                arithmetic_seen(self._tracker)
+            raise
 
     # -- linear algebra ---------------------------------------------------
     def trace(self):
@@ -587,6 +592,16 @@ class Mat:
         return self._field.normalize(acc)
 
     def inv(self) -> "Mat":
+        """The inverse (an arithmetic exception claim code meets here is recorded, see
+        :func:`~stiefelsym.scalar.arithmetic_seen`)."""
+        try:
+            return self._inv()
+        except ArithmeticError:
+            if claim_code():
+                arithmetic_seen(self._tracker)
+            raise
+
+    def _inv(self) -> "Mat":
         m, k = self._shape()
         if m != k:
             raise ValueError("inverse of a non-square matrix")

@@ -25,7 +25,7 @@ from typing import Any, Callable
 import numpy as np
 
 from ._lazy import lazy
-from .claims import Claim, Count, Rank, deadline, guarded
+from .claims import Claim, Count, Rank, deadline, run_claim
 from .fields import (PRIME_LOW, PRIMES_IN_RANGE_LOWER, ConstantDegenerate, DegenerateError, Deg, DegreeField,
                      ErrNum, Field, FloatField, ModularField, RationalField, SymbolicBudget,
                      SymbolicField, random_prime)
@@ -147,7 +147,7 @@ def _float_entries(value: Any, name: str, u: float) -> list[tuple[str, Any]]:
 
 
 def call_claim(func: Callable, scene: Any) -> dict[str, Any]:
-    checks = guarded(func)(scene)
+    checks = run_claim(func, scene)
     if not isinstance(checks, dict) or not checks:
         raise TypeError("a claim must return a non-empty dict of named checks")
     for k in checks:
@@ -489,7 +489,9 @@ EQUIVARIANT_REDUCTION = (
     "equivariance: X = X0 = (E_1..E_r), P = (W; Z) with W skew, A generic symmetric; O(n) moves X0 to "
     "every point of V(n, r), and the residuals are covariant under (X, P, A) -> (gX, gP, gAg^T), g in O(n), "
     "because {why}")
-COVARIANT_BY_CONSTRUCTION = "the claim read no coordinates of R^n (recorded by the engine)"
+def covariant_by_construction(spaces: tuple[str, ...]) -> str:
+    """Why a claim that read no coordinates of the recorded spaces is covariant."""
+    return f"the claim read no coordinates of {' or '.join('R^' + x for x in spaces)} (recorded by the engine)"
 CAYLEY_REDUCTION = (
     "rational parametrization: X = first r columns of (I - S)(I + S)^{{-1}}{D}, P = XW + (I - XX^T)Z "
     "(S, W skew, Z arbitrary), A = diag(a); dense in T*V(n, r){comp}")
@@ -519,11 +521,9 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
             if scene.tracker.spaces != ("n",):
                 reason = ""      # a stated reason speaks of O(n); this chart also reduces by O(r)
             if not missing and (not coords or reason):
-                why = (COVARIANT_BY_CONSTRUCTION if not coords else
+                why = (covariant_by_construction(scene.tracker.spaces) if not coords else
                        f"(the claim reads {', '.join(coords)}) {reason}")
                 stated = scene.equivariant_reduction() or EQUIVARIANT_REDUCTION
-                if scene.tracker.spaces != ("n",):
-                    why = why.replace("coordinates of R^n", "coordinates of R^n or R^r")
                 charts.append((scene, stated.format(why=why)))
                 evaluations = [_evaluate(checks, field, lambda R: _exact_rank(
                     R, field, randomized, lambda: degree_bound(claim, n, r, func).numerator, seed))]

@@ -264,17 +264,12 @@ class PolyRing:
                 return (self.ctx.constant(flint.fmpq(int(x.p), int(x.q))), NODEN)
             raise NotRational(f"not a rational number: {x}")
         memo = self.memo
-        if x.is_Add:
+        if x.is_Add or x.is_Mul:
+            combine = self.rf_add if x.is_Add else self.rf_mul
             acc = None
             for t in x.args:
                 r = memo.get(t) or self._conv(t)
-                acc = r if acc is None else self.rf_add(acc, r)
-            return acc
-        if x.is_Mul:
-            acc = None
-            for t in x.args:
-                r = memo.get(t) or self._conv(t)
-                acc = r if acc is None else self.rf_mul(acc, r)
+                acc = r if acc is None else combine(acc, r)
             return acc
         if x.is_Pow:
             b, e = x.args

@@ -10,7 +10,7 @@ type of its numbers, and every way of reading a value (truth value, comparison,
 ``int``, ``float``, ``str``, hashing) is refused *and recorded* in the scene's
 record before the refusal is raised: a claim that catches the refusal and computes
 something else is still an ``error``, since the record outlives the exception
-(:func:`stiefelsym.claims.guarded` checks it when the claim returns).
+(:func:`stiefelsym.claims.run_claim` checks it when the claim returns).
 
 Engine code receives the raw numbers (:func:`raw`, :func:`claim_code`): the
 scene hands a ``Scalar`` only to callers outside the package.
@@ -55,6 +55,14 @@ class running_claim:
 
 class ValueRead(TypeError):
     """A claim tried to read the value of a number of its scene."""
+
+
+def arithmetic_seen(rec: Any) -> None:
+    """Record that claim code met an arithmetic exception (a division by zero, a singular system):
+    how a method raises one (at a random point, symbolically, or not at all) tells the methods
+    apart, so a claim that catches it and computes something else is not trusted."""
+    if rec is not None:
+        rec.refuse("an arithmetic exception (a division by zero or a singular system)")
 
 
 class EngineOnly(AttributeError):
@@ -125,17 +133,26 @@ class Scalar:
         y = self._other(o)
         return NotImplemented if y is None else Scalar(y * self._x, self._rec)
 
+    def _divided(self, a: Any, b: Any) -> "Scalar":
+        try:
+            return Scalar(a / b, self._rec)
+        except ArithmeticError:
+            arithmetic_seen(self._rec)
+            raise
+
     def __truediv__(self, o):
         y = o._x if type(o) is Scalar else self._other(o)
-        return NotImplemented if y is None else Scalar(self._x / y, self._rec)
+        return NotImplemented if y is None else self._divided(self._x, y)
 
     def __rtruediv__(self, o):
         y = self._other(o)
-        return NotImplemented if y is None else Scalar(y / self._x, self._rec)
+        return NotImplemented if y is None else self._divided(y, self._x)
 
     def __pow__(self, k):
         if type(k) is not int:
             raise TypeError("a number of the scene is raised to integer powers only")
+        if k < 0:
+            return self._divided(1, self._x ** -k)
         return Scalar(self._x ** k, self._rec)
 
     def __neg__(self):
@@ -151,63 +168,6 @@ class Scalar:
         raise ValueRead(f"a claim computes with the numbers of its scene and never reads them ({how}); "
                         "return the difference as a residual instead")
 
-    def __bool__(self):
-        self._read("its truth value")
-
-    def __eq__(self, o):
-        self._read("a comparison")
-
-    def __ne__(self, o):
-        self._read("a comparison")
-
-    def __lt__(self, o):
-        self._read("a comparison")
-
-    def __le__(self, o):
-        self._read("a comparison")
-
-    def __gt__(self, o):
-        self._read("a comparison")
-
-    def __ge__(self, o):
-        self._read("a comparison")
-
-    def __hash__(self):
-        self._read("a hash")
-
-    def __int__(self):
-        self._read("int()")
-
-    def __float__(self):
-        self._read("float()")
-
-    def __complex__(self):
-        self._read("complex()")
-
-    def __index__(self):
-        self._read("an index")
-
-    def __abs__(self):
-        self._read("abs()")
-
-    def __round__(self, *a):
-        self._read("round()")
-
-    def __trunc__(self):
-        self._read("trunc()")
-
-    def __floor__(self):
-        self._read("floor()")
-
-    def __ceil__(self):
-        self._read("ceil()")
-
-    def __str__(self):
-        self._read("str()")
-
-    def __format__(self, spec):
-        self._read("format()")
-
     def __repr__(self) -> str:
         return "<a number of the scene>"
 
@@ -216,6 +176,24 @@ class Scalar:
 
     def __iter__(self):
         raise TypeError("a number of the scene is not iterable")
+
+
+#: the ways of looking at a value, each refused and recorded (see Scalar._read)
+_READS = {"__bool__": "its truth value", "__hash__": "a hash", "__int__": "int()", "__float__": "float()",
+          "__complex__": "complex()", "__index__": "an index", "__abs__": "abs()", "__round__": "round()",
+          "__trunc__": "trunc()", "__floor__": "floor()", "__ceil__": "ceil()", "__str__": "str()",
+          "__format__": "format()", **{k: "a comparison" for k in ("__eq__", "__ne__", "__lt__", "__le__",
+                                                                  "__gt__", "__ge__")}}
+
+
+def _door(how: str):
+    def read(self, *args):
+        self._read(how)
+    return read
+
+
+for _name, _how in _READS.items():
+    setattr(Scalar, _name, _door(_how))
 
 
 def raw(x: Any) -> Any:

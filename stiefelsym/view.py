@@ -24,7 +24,7 @@ from __future__ import annotations
 from typing import Any
 
 from .matrix import Mat
-from .scalar import Scalar, claim_code, engine_only, unwrap, wrap
+from .scalar import Scalar, arithmetic_seen, claim_code, engine_only, unwrap, wrap
 
 #: what a claim may ask of its scene (README: "What a scene s offers" and "More building blocks")
 API = frozenset("""
@@ -168,7 +168,12 @@ def _calling(method: Any, scene: Any, rec: Any) -> Any:
         if takes_functions:
             args = [_viewing(a, scene) for a in args]
             kw = {k: _viewing(v, scene) for k, v in kw.items()}
-        return _present(method(*args, **kw), rec)
+        try:
+            out = method(*args, **kw)
+        except ArithmeticError:
+            arithmetic_seen(rec)
+            raise
+        return _present(out, rec)
     call.__name__ = call.__qualname__ = "scene_method"
     return call
 

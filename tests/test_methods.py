@@ -283,11 +283,9 @@ def test_a_point_at_a_pole_is_redrawn_and_reported_never_a_crash():
 
 
 def _neumann_flow(s):
-    """The printed Neumann flow (No)."""
-    k = 1 + 2 * s.kappa
-    X, P, A = s.X, s.P, s.A
-    return {"X": P - k * (X @ P.T @ X),
-            "P": -(A @ X) - X @ P.T @ P + k * (P @ X.T @ P) + X @ X.T @ A @ X}
+    """The printed Neumann flow (No), as the catalog writes it."""
+    from proofs.sec5_neumann import flow_No
+    return flow_No(s, s.kappa)
 
 
 def _lax_L(t):

@@ -703,3 +703,33 @@ def test_the_dimension_free_scene_hands_out_the_same_opaque_numbers():
     assert seen == {"Scalar"}, seen
     res = run_one(_claim(_compares_a_trace_form), None, "free", 0)
     assert res.verdict == "undecided" and "comparison" in res.message, (res.verdict, res.message)
+
+
+def _caught_division_by_zero(s):
+    """False (X = 0) where a division by an identically zero number does not raise: the methods
+    raise it differently (at a random point, symbolically, not at all), so catching it told them
+    apart, and the branch that caught it was `checked` with a trivially zero residual."""
+    try:
+        s.q(1) / (s.lam - s.lam)
+    except Exception:
+        return {"r": s.X - s.X}
+    return {"r": s.X}
+
+
+def _caught_singular_inverse(s):
+    """The same through the inverse of an identically singular matrix."""
+    try:
+        (s.X.T @ s.X - s.Ir).inv()
+    except Exception:
+        return {"r": s.X - s.X}
+    return {"r": s.X}
+
+
+@pytest.mark.parametrize("func", [_caught_division_by_zero, _caught_singular_inverse], ids=lambda f: f.__name__)
+def test_a_caught_arithmetic_exception_is_recorded(func):
+    """An arithmetic exception claim code meets (a division, an inverse, a scene method) is recorded
+    before it reaches the claim: no method passes the branch that caught it."""
+    for m in ("exact", "modular", "rational", "float"):
+        res = run_one(_claim(func), Size(3, 2), m, 0)
+        assert res.verdict not in PASSING, (m, res.verdict, res.message)
+    assert run_one(_claim(func), None, "free", 0).verdict not in PASSING
