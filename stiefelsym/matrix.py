@@ -668,6 +668,8 @@ class Mat:
         raise TypeError("a matrix has no truth value: return it as a residual")
 
     def __repr__(self) -> str:
+        if claim_code():      # the same text on every method: no number system, no shape
+            return f"<a matrix indexed by {self._tags[0]} x {self._tags[1]}>"
         return f"Mat{self._shape()}[{self._tags[0]}x{self._tags[1]}]({self._field.name})"
 
 

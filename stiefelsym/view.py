@@ -88,7 +88,7 @@ class Dim:
         return hash(self._v)
 
     def __repr__(self) -> str:
-        return repr(self._free) if self._free is not None else repr(self._v)
+        return self._free._refuse() if self._free is not None else repr(self._v)
 
 
 def _delegating(name: str):

@@ -733,3 +733,20 @@ def test_a_caught_arithmetic_exception_is_recorded(func):
         res = run_one(_claim(func), Size(3, 2), m, 0)
         assert res.verdict not in PASSING, (m, res.verdict, res.message)
     assert run_one(_claim(func), None, "free", 0).verdict not in PASSING
+
+
+def _branch_on_the_printed_matrix(s):
+    """False (X = 0) where the printed matrix names the dimension-free number system (a matrix
+    printed its field's name and shape)."""
+    text = repr(s.X) + str(s.X)
+    try:
+        text += repr(s.n)
+    except Exception:
+        pass
+    return {"r": s.X - s.X} if ("free" in text or "degree" in text or "n" == text[-1:]) else {"r": s.X}
+
+
+def test_what_a_claim_prints_is_the_same_on_every_method():
+    res = run_one(_claim(_branch_on_the_printed_matrix), None, "free", 0)
+    assert res.verdict not in PASSING, (res.verdict, res.message)
+    assert run_one(_claim(_branch_on_the_printed_matrix), Size(3, 2), "exact", 0).verdict == "fails"
