@@ -485,9 +485,17 @@ class Mat:
         return self._new(a, tags)
 
     # -- arithmetic -------------------------------------------------------
+    def _sizes_disagree(self, message: str) -> Exception:
+        """The error for operands whose sizes do not fit: on the dimension-free scene, where a shape
+        counts blocks of sizes n, r (n blocks of one size may equal m of another for some n, r), a
+        refusal on record; at fixed sizes a ValueError."""
+        if not _coordinates(self._field):
+            return _refused(self._tracker, "operands whose sizes fit only for some n, r")
+        return ValueError(message)
+
     def _sum_tags(self, o: "Mat", what: str) -> tuple[str, str]:
         if self._shape() != o._shape():
-            raise ValueError(f"{what}: shape mismatch {self._shape()} vs {o._shape()}")
+            raise self._sizes_disagree(f"{what}: shape mismatch {self._shape()} vs {o._shape()}")
         t = self._tracker_of(o)
         return (unify(self._tags[0], o._tags[0], what, t), unify(self._tags[1], o._tags[1], what, t))
 
@@ -521,7 +529,7 @@ class Mat:
             return NotImplemented
         (m, k1), (k2, k) = self._shape(), o._shape()
         if k1 != k2:
-            raise ValueError(f"cannot multiply {(m, k1)} by {(k2, k)}")
+            raise self._sizes_disagree(f"cannot multiply {(m, k1)} by {(k2, k)}")
         unify(self._tags[1], o._tags[0], "a product", self._tracker_of(o))
         tags = (self._tags[0], o._tags[1])
         nat = self._native_pair(o)
@@ -703,9 +711,12 @@ def block(rows: Sequence[Sequence[Mat]]) -> Mat:
     field = rows[0][0]._field
     tags = (_join(row_tags), _join(col_tags))
     be = backend(field)
-    if be is not None and all(b._field is field for row in rows for b in row):
-        return Mat._wrap_native(be.block([[b._nat() for b in row] for row in rows]), field, tags, tracker, coords)
-    a = np.concatenate([np.concatenate([b._view() for b in row], axis=1) for row in rows], axis=0)
+    try:
+        if be is not None and all(b._field is field for row in rows for b in row):
+            return Mat._wrap_native(be.block([[b._nat() for b in row] for row in rows]), field, tags, tracker, coords)
+        a = np.concatenate([np.concatenate([b._view() for b in row], axis=1) for row in rows], axis=0)
+    except ValueError as exc:
+        raise rows[0][0]._sizes_disagree(f"the blocks do not fit: {exc}") from None
     return Mat._wrap(a, field, tags, tracker, coords)
 
 

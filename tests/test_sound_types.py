@@ -750,3 +750,29 @@ def test_what_a_claim_prints_is_the_same_on_every_method():
     res = run_one(_claim(_branch_on_the_printed_matrix), None, "free", 0)
     assert res.verdict not in PASSING, (res.verdict, res.message)
     assert run_one(_claim(_branch_on_the_printed_matrix), Size(3, 2), "exact", 0).verdict == "fails"
+
+
+def _caught_size_mismatch(s):
+    """False (X = 0): on the dimension-free scene a product of an n-column matrix with a 2r-row one
+    failed as a plain ValueError (n = 2r is a matter of the sizes), which a claim could catch."""
+    try:
+        s.X.T @ s.zeros(2 * s.r, s.r)
+    except Exception:
+        return {"r": s.X - s.X}
+    return {"r": s.X}
+
+
+def _caught_block_mismatch(s):
+    """The same through a block matrix whose blocks fit only when n = 2r."""
+    try:
+        block([[s.X, s.zeros(s.n, s.r)], [s.zeros(2 * s.r, s.r), s.zeros(2 * s.r, s.r)]])
+    except Exception:
+        return {"r": s.X - s.X}
+    return {"r": s.X}
+
+
+@pytest.mark.parametrize("func", [_caught_size_mismatch, _caught_block_mismatch], ids=lambda f: f.__name__)
+def test_sizes_that_fit_only_for_some_n_r_are_refused_on_record(func):
+    res = run_one(_claim(func), None, "free", 0)
+    assert res.verdict not in PASSING, (res.verdict, res.message)
+    assert run_one(_claim(func), Size(2, 1), "exact", 0).verdict == "fails"
