@@ -230,13 +230,56 @@ class F64:
     twice); ``diag``, its diagonal (values, term scales) when it is diagonal by construction;
     ``sel``, (rows, signs) when every column j is signs[j] times the unit vector of rows[j]
     (signs[j] = 0: a zero column); ``m32``, the term scales in float32 (False where they do not
-    fit, see :func:`_scale_product`)."""
+    fit, see :func:`_scale_product`).
 
-    __slots__ = ("v", "e", "m", "nv", "t", "prods", "diag", "sel", "m32")
+    An F64 may also be *deferred* (``lazy`` holds how to compute it, ``defer`` what it is: the
+    inverse of a matrix whose inverse is known to exist with a bounded norm, or a product with
+    such an inverse): v, e and m are computed when first read, by the same operations an eager
+    computation makes, and the backend may instead use what it is for a cheaper product (a
+    deferred inverse times B is a solve; a deferred product times a selection of columns is
+    reassociated), each with a bound of its own."""
+
+    __slots__ = ("_v", "_e", "_m", "nv", "t", "prods", "diag", "sel", "m32", "lazy", "defer")
 
     def __init__(self, v: np.ndarray, e: float, m: np.ndarray, nv: float | None = None) -> None:
-        self.v, self.e, self.m, self.nv = v, e, m, nv
-        self.t = self.prods = self.diag = self.sel = self.m32 = None
+        self._v, self._e, self._m, self.nv = v, e, m, nv
+        self.t = self.prods = self.diag = self.sel = self.m32 = self.lazy = self.defer = None
+
+    @classmethod
+    def deferred(cls, build: Any, defer: tuple) -> "F64":
+        """A matrix computed by build() (an eager F64) when its values are first read; defer is
+        (kind, shape, ...) for the backend."""
+        out = cls.__new__(cls)
+        out._v = out._e = out._m = out.nv = None
+        out.t = out.prods = out.diag = out.sel = out.m32 = None
+        out.lazy, out.defer = build, defer
+        return out
+
+    def _force(self) -> None:
+        build = self.lazy
+        done = build()
+        self._v, self._e, self._m = done._v, done._e, done._m
+        if self.nv is None:
+            self.nv = done.nv
+        self.lazy = self.defer = None
+
+    @property
+    def v(self) -> np.ndarray:
+        if self.lazy is not None:
+            self._force()
+        return self._v
+
+    @property
+    def e(self) -> float:
+        if self.lazy is not None:
+            self._force()
+        return self._e
+
+    @property
+    def m(self) -> np.ndarray:
+        if self.lazy is not None:
+            self._force()
+        return self._m
 
 
 def _gamma(k: int) -> float:
@@ -351,6 +394,30 @@ def _tune_allocator() -> None:
     mallopt(M_TOP_PAD, 16 << 20)
 
 
+#: from this many rows on, an inverse known to exist (see :meth:`Float64Backend.inv`) is deferred
+DEFERRED_INVERSE_MIN = 32
+
+
+def _skew_plus_diagonal(a: F64) -> tuple[float, float] | None:
+    """(beta0, beta) with ‖a.v⁻¹‖₂ ≤ beta0 and ‖A⁻¹‖₂ ≤ beta for every A within a's bound, when
+    the values are a positive diagonal plus an exactly skew matrix (v_ij + v_ji = 0 for i ≠ j, a
+    floating-point sum that is 0 exactly when it is 0 in ℚ; d = diag v > 0): then
+    xᵀ v x = Σ d_i x_i² ≥ min d ‖x‖², so σ_min(v) ≥ min d and σ_min(A) ≥ min d − e.  None
+    otherwise, or when e is not below min d / 2."""
+    v = a.v
+    d = float(np.min(np.diagonal(v)))
+    if not d > 0.0 or not a.e < 0.5 * d:
+        return None
+    with np.errstate(all="ignore"):
+        h = v + v.T
+    np.fill_diagonal(h, 0.0)
+    if np.any(h):
+        return None
+    beta0 = _up(1.0 / d, 1)
+    beta = _up(1.0 / ((d - a.e) * (1.0 - 4 * U64)), 2)
+    return beta0, beta
+
+
 class Float64Backend(Backend):
     """float64 matrices with a sound first-order normwise error bound (the Frobenius norm of the
     error of every operation: Higham's γ_k bounds with ‖|A||B|‖_F ≤ ‖A‖_F ‖B‖_F, propagated
@@ -413,7 +480,7 @@ class Float64Backend(Backend):
         return out
 
     def shape(self, s):
-        return s.v.shape
+        return s._v.shape if s.lazy is None else s.defer[1]
 
     def zeros(self, m, k):
         out = F64(np.zeros((m, k)), 0.0, np.zeros((m, k)), 0.0)
@@ -460,9 +527,9 @@ class Float64Backend(Backend):
         return F64(-a.v, a.e, a.m, a.nv)
 
     def matmul(self, a, b):
-        k = a.v.shape[1]
+        (ma, k), (_kb, nb) = self.shape(a), self.shape(b)
         if k == 0:
-            return self.zeros(a.v.shape[0], b.v.shape[1])
+            return self.zeros(ma, nb)
         prods = a.prods
         if prods is None:
             prods = a.prods = {}
@@ -477,6 +544,34 @@ class Float64Backend(Backend):
                 out = self.T(hit[1])
                 prods[id(b)] = (b, out)
                 return out
+        out = None
+        if a.lazy is not None:
+            out = self._through(a, b)
+        elif b.lazy is not None and b.defer[0] == "inv":
+            # a A⁻¹: deferred, so that (a A⁻¹) J with J a selection of columns is a (A⁻¹ J)
+            out = F64.deferred(lambda: self._product(a, b), ("prod", (ma, nb), a, b))
+        if out is None:
+            out = self._product(a, b)
+        prods[id(b)] = (b, out)
+        return out
+
+    def _through(self, a, b):
+        """A product with a deferred left factor computed without computing that factor: A⁻¹ b as a
+        solve when b has fewer columns than A (one LU factorization and the triangular solves for
+        those columns instead of the inverse and a product), (c A⁻¹) J as c (A⁻¹ J) when J selects
+        columns; None where neither applies (a is then computed when its values are read)."""
+        kind, shape = a.defer[0], a.defer[1]
+        if kind == "inv" and self.shape(b)[1] < shape[0]:
+            _kind, _shape, src, beta0, beta = a.defer
+            return self._solve(src, beta0, beta, b.v, b.e, _norm(b))
+        if kind == "prod" and b.lazy is None and b.sel is not None:
+            _kind, _shape, c, d = a.defer
+            return self.matmul(c, self.matmul(d, b))
+        return None
+
+    def _product(self, a, b):
+        """The product of two matrices (values read), with the dot-product bound."""
+        k = a.v.shape[1]
         with np.errstate(all="ignore"):
             if a.diag is not None:
                 dv, dm = a.diag
@@ -491,9 +586,7 @@ class Float64Backend(Backend):
                 v, m = a.v @ b.v, _scale_product(a, b)
             na, nb = _norm(a), _norm(b)
             e = na * b.e + a.e * nb + a.e * b.e + _gamma(k) * na * nb + k * _uf(v.shape)
-            out = F64(v, _up(e, 8), m)
-        prods[id(b)] = (b, out)
-        return out
+            return F64(v, _up(e, 8), m)
 
     def smul(self, a, c):
         cv, ce, cm = float(c.v), float(c.e), float(c.m)
@@ -526,10 +619,23 @@ class Float64Backend(Backend):
     def inv(self, a):
         """Z ≈ A⁻¹ from LAPACK, then a bound on ‖A⁻¹ − Z‖_F for every A within the error bound:
         with ρ ≥ ‖I − A Z‖_F (the computed residual, its rounding bound and the input's error
-        times ‖Z‖_F), ρ < 1 gives ‖A⁻¹ − Z‖_F ≤ ‖Z‖_F ρ / (1 − ρ)."""
+        times ‖Z‖_F), ρ < 1 gives ‖A⁻¹ − Z‖_F ≤ ‖Z‖_F ρ / (1 − ρ).
+
+        From :data:`DEFERRED_INVERSE_MIN` rows on, a matrix v whose symmetric part is diagonal
+        and positive (vᵀ + v = 2 diag(d) exactly, d > 0: I + S with S skew, the Cayley chart's)
+        has σ_min(v) ≥ min d, hence every A within the bound e has ‖A⁻¹‖₂ ≤ 1/(min d − e): its
+        inverse exists, and is deferred (see :class:`F64`), computed only if read; a product
+        with it is a solve (:meth:`_solve`)."""
         m = a.v.shape[0]
         if not np.all(np.isfinite(a.v)) or not math.isfinite(a.e):
             return F64(np.zeros((m, m)), math.inf, np.full((m, m), math.inf))
+        if m >= DEFERRED_INVERSE_MIN:
+            beta = _skew_plus_diagonal(a)
+            if beta is not None:
+                beta0, beta1 = beta
+                out = F64.deferred(lambda: self._solve(a, beta0, beta1, np.eye(m), 0.0, _up(math.sqrt(m), 1)),
+                                   ("inv", (m, m), a, beta0, beta1))
+                return out
         try:
             Z = np.linalg.inv(a.v)
         except np.linalg.LinAlgError as exc:
@@ -544,6 +650,30 @@ class Float64Backend(Backend):
                 raise DegenerateError("a matrix too close to singular for a float64 inverse bound")
             bound = zf * rho / (1.0 - rho) * (1.0 + 8 * U64)
             return F64(Z, bound, np.abs(Z) + bound, zf)
+
+    def _solve(self, a, beta0: float, beta: float, bv: np.ndarray, eb: float, nb: float) -> F64:
+        """Y ≈ A⁻¹ B from LAPACK's solve, for A = a known to satisfy ‖a.v⁻¹‖₂ ≤ beta0 and ‖A⁻¹‖₂ ≤
+        beta for every A within a's bound (see :meth:`inv`), B the values bv within eb (‖bv‖_F ≤
+        nb).  The residual R = bv − a.v Y, computed, is within γ_{k+1}(‖bv‖_F + ‖a.v‖_F ‖Y‖_F) of
+        the exact one, so ‖a.v⁻¹ bv − Y‖_F ≤ beta0 (‖R‖_F + that) =: δ; and for the exact A and B,
+        A⁻¹B − Y = A⁻¹(B − bv) + A⁻¹(a.v − A) a.v⁻¹ bv + (a.v⁻¹ bv − Y), so
+        ‖A⁻¹B − Y‖_F ≤ beta eb + beta e_a (‖Y‖_F + δ) + δ.  Term scales |Y| + bound, as for an
+        inverse (a solution entry's scale is its own size)."""
+        k = a.v.shape[0]
+        shape = bv.shape
+        with np.errstate(all="ignore"):
+            try:
+                Y = np.linalg.solve(a.v, bv)
+            except np.linalg.LinAlgError:        # cannot happen for σ_min > 0; no verdict if it does
+                return F64(np.zeros(shape), math.inf, np.full(shape, math.inf))
+            if not np.all(np.isfinite(Y)):
+                return F64(Y, math.inf, np.full(shape, math.inf))
+            R = bv - a.v @ Y
+            ny = _fro(Y)
+            r = _fro(R) + _gamma(k + 1) * (nb + _norm(a) * ny) + (k + 1) * _uf(shape)
+            delta = _up(beta0 * r, 4)
+            e = _up(beta * eb + beta * a.e * (ny + delta) + delta, 8)
+            return F64(Y, e, np.abs(Y) + e, ny)
 
     def inner(self, a, b):
         """sum_ij a_ij b_ij with the dot-product bound."""
