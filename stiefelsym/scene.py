@@ -599,11 +599,19 @@ class Scene(PaperObjects):
 
     def sym_operator(self, name: str = "AA") -> Callable[[Mat], Mat]:
         """A generic symmetric linear operator on so(n) (w.r.t. <,>), covariant parameter."""
+        basis, coeffs = self._operator_coefficients(name)
+        return self._operator_apply(basis, coeffs)
+
+    def _operator_coefficients(self, name: str) -> tuple[list[tuple[int, int]], Mat]:
+        """The basis E_i ∧ E_j of so(n) and the symmetric coefficient matrix of the operator
+        (one parameter per pair of basis elements, drawn once per scene and name)."""
         def build():
             basis = so_basis(self.n)
-            Mop = self._sym_params(USER_OPERATOR + user_name(name, "sym_operator"), len(basis), "so")
-            return basis, Mop._a
-        basis, coeffs = self._cached(f"op:{name}", build)
+            return basis, self._sym_params(USER_OPERATOR + user_name(name, "sym_operator"), len(basis), "so")
+        return self._cached(f"op:{name}", build)
+
+    def _operator_apply(self, basis: list[tuple[int, int]], coeffs: Mat) -> Callable[[Mat], Mat]:
+        n = self.n
 
         def apply(xi: Mat) -> Mat:
             """AA applied to the skew part (xi - xi^T)/2 (an O(n)-equivariant extension to gl(n))."""
@@ -611,17 +619,29 @@ class Scene(PaperObjects):
                 raise TypeError("the operator acts on matrices of so(n)")
             unify(xi.tags[0], "n", "the operator on so(n)", xi.tracker)
             unify(xi.tags[1], "n", "the operator on so(n)", xi.tracker)
-            half = xi._field.const(Fraction(1, 2))
+            f = xi._field
+            half = f.const(Fraction(1, 2))
+            a = xi._view()
             # coordinates of the skew part in the orthonormal basis E_i ∧ E_j
-            comps = [xi._field.normalize((xi._a[i, j] - xi._a[j, i]) * half) for (i, j) in basis]
-            out = Mat.zeros(self.n, self.n, xi._field, ("n", "n"), xi.tracker)
+            comps = [f.normalize((a[i, j] - a[j, i]) * half) for (i, j) in basis]
+            out = Mat.zeros(n, n, f, ("n", "n"), xi.tracker)
             out._coords = xi._coords
+            o = out._a
+            if f is coeffs._field:
+                # one product in the field's backend: the coefficient matrix times the coordinates
+                col = np.empty((len(basis), 1), dtype=object)
+                col[:, 0] = comps
+                v = (coeffs @ Mat._wrap(col, f, ("so", "?"))).T._view()[0]
+                for k, (i, j) in enumerate(basis):
+                    o[i, j], o[j, i] = v[k], -v[k]
+                return out
+            c = coeffs._view()                  # a matrix of another field (a base scene's operator)
             for k, (i, j) in enumerate(basis):
-                acc = xi._field.const(0)
-                for l, c in enumerate(comps):
-                    acc = acc + c * coeffs[k, l]
-                acc = xi._field.normalize(acc)
-                out._a[i, j], out._a[j, i] = acc, -acc
+                acc = f.const(0)
+                for l, x in enumerate(comps):
+                    acc = acc + x * c[k, l]
+                acc = f.normalize(acc)
+                o[i, j], o[j, i] = acc, -acc
             return out
         return apply
 
@@ -1105,7 +1125,10 @@ class _LiftedScene(Scene):
         return Scene._cached(self, key, build)
 
     def sym_operator(self, name: str = "AA"):
-        return self.base.sym_operator(name)
+        """The base scene's operator (the same parameters), its coefficients lifted to this field."""
+        basis, coeffs = self.base._operator_coefficients(name)
+        lifted = self._cached(f"op:{name}", lambda: self._lift_primitive(coeffs, None))
+        return self._operator_apply(basis, lifted)
 
     def generic(self, name, m, k):
         return self._cached(f"gen:{name}[{m}x{k}]", lambda: self._lift_primitive(self.base.generic(name, m, k), None))
