@@ -613,6 +613,10 @@ class FloatField(Field):
 
 
 # ---------------------------------------------------------------------------
+#: the empty denominator of a marker (shared: markers never change their ``den``)
+_NO_DEN: dict = {}
+
+
 class Deg:
     """Degree and height bookkeeping for a rational function N/D of the parameters.
 
@@ -625,22 +629,20 @@ class Deg:
     (N = N1 D/D1 + N2 D/D2), products add them; the L1 norm is subadditive and
     submultiplicative, so every bound is conservative."""
 
-    __slots__ = ("num", "den", "f", "h", "c")
+    __slots__ = ("num", "den", "f", "h", "c", "zero")
 
     def __init__(self, num: int, den: dict | None = None, field: "DegreeField" = None, h: float = 0.0,
                  c: Fraction | None = None):
-        # ``den`` is never changed in place once a marker holds it (operations build new dicts)
-        self.num, self.den, self.f = num, (den if den is not None else {}), field
+        # a marker is never changed once made (``den`` neither: operations build new dicts)
+        self.num, self.den, self.f = num, (den if den is not None else _NO_DEN), field
+        #: identically zero
+        self.zero = num < 0
         self.h = -math.inf if num < 0 else (h if h > 0.0 else 0.0)
         #: the value, when the marker stands for a rational constant
         self.c = c
 
-    @property
-    def zero(self):
-        return self.num < 0
-
     def _lift(self, o):
-        if isinstance(o, Deg):
+        if type(o) is Deg:
             return o
         if isinstance(o, (int, Fraction)):
             return self.f.const(o)
@@ -653,20 +655,35 @@ class Deg:
         return sum(self.f.factor_height[k] * e for k, e in den.items())
 
     def __add__(self, o):
-        o = self._lift(o)
-        if o is NotImplemented:
-            return o
+        if type(o) is not Deg:
+            o = self._lift(o)
+            if o is NotImplemented:
+                return o
         if self.zero:
             return o
         if o.zero:
             return self
-        if self.den == o.den:
+        if self.den is o.den or self.den == o.den:
             return Deg(max(self.num, o.num), self.den, self.f, log2_add(self.h, o.h))
-        den = {k: max(self.den.get(k, 0), o.den.get(k, 0)) for k in set(self.den) | set(o.den)}
-        shift = lambda d: {k: den[k] - d.den.get(k, 0) for k in den}
-        sa, so = shift(self), shift(o)
-        return Deg(max(self.num + self._dd(sa), o.num + self._dd(so)), den, self.f,
-                   log2_add(self.h + self._dh(sa), o.h + self._dh(so)))
+        # the common denominator takes every factor to its larger exponent; each side's numerator
+        # is multiplied by the factors it lacks (their degrees and heights add), in one pass
+        sd, od = self.den, o.den
+        den = dict(sd)
+        for k, e in od.items():
+            if e > den.get(k, 0):
+                den[k] = e
+        fdeg, fh = self.f.factor_degree, self.f.factor_height
+        da = do = 0
+        ha = ho = 0.0
+        for k, e in den.items():
+            a, b = e - sd.get(k, 0), e - od.get(k, 0)
+            if a:
+                da += fdeg[k] * a
+                ha += fh[k] * a
+            if b:
+                do += fdeg[k] * b
+                ho += fh[k] * b
+        return Deg(max(self.num + da, o.num + do), den, self.f, log2_add(self.h + ha, o.h + ho))
 
     __radd__ = __add__
 
@@ -679,9 +696,10 @@ class Deg:
     __rsub__ = __sub__
 
     def __mul__(self, o):
-        o = self._lift(o)
-        if o is NotImplemented:
-            return o
+        if type(o) is not Deg:
+            o = self._lift(o)
+            if o is NotImplemented:
+                return o
         if self.zero or o.zero:
             return Deg(-1, None, self.f)
         if not o.den:
@@ -792,14 +810,19 @@ class DegreeField(Field):
                 for k, e in x.den.items():
                     common[k] = max(common.get(k, 0), e)
         out = []
+        done: dict[int, tuple[int, float]] = {}     # markers are immutable: once per distinct one
         for row in cells:
             out_row = []
             for x in row:
-                if x.zero:
-                    out_row.append((-1, -math.inf))
-                    continue
-                rest = {k: common[k] - x.den.get(k, 0) for k in common}
-                out_row.append((x.num + self.den_degree(rest), x.h + self.den_height(rest)))
+                b = done.get(id(x))
+                if b is None:
+                    if x.zero:
+                        b = (-1, -math.inf)
+                    else:
+                        rest = {k: common[k] - x.den.get(k, 0) for k in common}
+                        b = (x.num + self.den_degree(rest), x.h + self.den_height(rest))
+                    done[id(x)] = b
+                out_row.append(b)
             out.append(out_row)
         return common, out
 

@@ -31,6 +31,7 @@ from .fields import (PRIME_LOW, PRIMES_IN_RANGE_LOWER, ConstantDegenerate, Degen
                      SymbolicField, random_prime)
 from .matrix import Mat, is_scene_number
 from .native import F64, DegMat, backend, one_blas_thread
+from .paired import PairField, marker_of
 from .results import CheckOutcome, Result
 from .scene import CoordinateAccess, Scene, SizeError
 
@@ -732,10 +733,30 @@ def _degree_bound(claim: Claim, n: int, r: int, func: Callable | None = None) ->
     return DegreeBound(num, den, height, field.constant_bits)
 
 
-def _rank_minor_bound(R: Rank, field: DegreeField) -> tuple[int, float]:
+def _paired_bound(checks: dict[str, Any], field: PairField) -> DegreeBound:
+    """The degree and height bounds of what one sampled evaluation computed: the markers its
+    numbers carried (see :mod:`.paired`), read as :func:`_degree_bound` reads a structural pass."""
+    deg = field.degrees
+    num, height = 0, 0.0
+    for name, value in checks.items():
+        if isinstance(value, Count):
+            continue
+        if isinstance(value, Rank):
+            d, h = _rank_minor_bound(value, deg, field.marker)
+            num, height = max(num, d), max(height, h)
+            continue
+        one = marker_of(value, field)
+        markers = [one] if one is not None else [field.marker(x) for _pos, x in _entries(value, name)]
+        for x in markers:
+            if not x.zero:
+                num, height = max(num, x.num), max(height, x.h)
+    return DegreeBound(num, sum(deg.factor_degree.values()), height, deg.constant_bits)
+
+
+def _rank_minor_bound(R: Rank, field: DegreeField, marker: Callable | None = None) -> tuple[int, float]:
     """Degree and height bounds of the (k+1)-minors of the matrix, k the printed rank: a sampled
     rank k is the generic rank unless such a minor, a nonzero polynomial, vanishes at the point."""
-    rows = [[field._lift(x) for x in row] for row in R.matrix._a.tolist()]
+    rows = [[(marker or field._lift)(x) for x in row] for row in R.matrix._a.tolist()]
     if not rows or not rows[0] or R.expected + 1 > min(len(rows), len(rows[0])):
         return 0, 0.0      # no (k+1)-minor: rank <= k holds everywhere
     _common, cleared = field.cleared(rows)
@@ -871,13 +892,23 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
     rational = RationalField(RATIONAL_BOUND)
     # for r = n the constraint set has two components (det X = +-1): each gets ``points`` points
     components = 2 if r == n else 1
+    # each point's own bound: its numbers carry degree markers (paired), so the degree bound is
+    # that of the very expression evaluated there, whatever the claim did on other calls; it is
+    # never taken below the structural pass's bound (which follows the generic path)
+    per_point: list[list[float]] = [[] for _ in range(components)]
+    point_degs: list[DegreeBound] = []
     scene = None
-    for t in range(points * components):
+    t, beyond = 0, False
+    while t < points * components or (
+            trials is None and not hard and needed is not None and t < POINTS_CAP * components
+            and max(math.prod(p) for p in per_point) > POINTS_TARGET
+            and _points_needed(max(e for p in per_point for e in p)) is not None):
         comp = t % components
         prime_attempt = 0
-        field = rational if kind == "rational" else _prime_field(claim, n, r, seed, t, prime_attempt)
+        value_field = rational if kind == "rational" else _prime_field(claim, n, r, seed, t, prime_attempt)
         for attempt in range(MAX_RESAMPLE):
             rng = random.Random(f"{seed}|{claim.id}|{n}|{r}|{kind}|{t}|{attempt}")
+            field = value_field if hard else PairField(value_field)
             scene = Scene(n, r, field, chart="cayley", rng=rng, component=comp, realization=claim.realization,
                           options=options)
             try:
@@ -888,7 +919,7 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
                 # a constant of the claim vanishes mod p: this prime is not admissible, draw another
                 primes_redrawn += 1
                 prime_attempt += 1
-                field = _prime_field(claim, n, r, seed, t, prime_attempt)
+                value_field = _prime_field(claim, n, r, seed, t, prime_attempt)
                 continue
             except (DegenerateError, ZeroDivisionError):
                 resampled += 1
@@ -900,6 +931,14 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
             return res
         if t == 0 and not scene._has_params():
             return _run_constant(claim, n, r, seed, func, options, res, t0)
+        if not hard:
+            own = _paired_bound(checks, field)
+            point_deg = DegreeBound(max(deg.numerator, own.numerator), max(deg.denominator, own.denominator),
+                                    max(deg.height, own.height), max(deg.constant_bits, own.constant_bits))
+            point_degs.append(point_deg)
+            if own.numerator > deg.numerator or own.height > deg.height:
+                beyond = True
+            per_point[comp].append(_per_point_bound(kind, point_deg))
         evaluations.append(ev)
         if kind == "modular":
             primes.append(field.p)
@@ -910,6 +949,12 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
                        "point": {k: field.describe(v) for k, v in scene._point_values().items()}}
             if kind == "modular":
                 witness["prime"] = field.p
+        t += 1
+    points = min(len(p) for p in per_point) if point_degs else points
+    if point_degs:
+        deg = DegreeBound(max(d.numerator for d in point_degs), max(d.denominator for d in point_degs),
+                          max(d.height for d in point_degs), max(d.constant_bits for d in point_degs))
+        eps = max(e for p in per_point for e in p)
     res.seconds = time.perf_counter() - t0
     res.checks = [o for e in evaluations for o in e.outcomes]
     nonzero = [z for e in evaluations for z in e.nonzero]
@@ -924,9 +969,13 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
         notes.append(f"{resampled} degenerate samples redrawn")
     if primes_redrawn:
         notes.append(f"{primes_redrawn} primes dividing a constant of the claim redrawn")
+    if beyond:
+        notes.append("the degree markers carried by the sampled evaluations exceed the structural pass's "
+                     "bound (the engine took another path at the points, or the claim computed another "
+                     "expression on another call); each point's bound is its own evaluation's")
     note = f" ({'; '.join(notes)})" if notes else ""
     per = f" on each of the {components} components of T*V" if components == 2 else ""
-    joint = eps ** points
+    joint = max(math.prod(p) for p in per_point) if point_degs else eps ** points
     if kind == "modular":
         how = (f"each point over its own prime p, drawn uniformly from the primes in [2^60, 2^61) by the seed "
                f"(uniform odd integers until one is prime), parameters uniform in GF(p); primes: "
@@ -978,13 +1027,13 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
     elif joint > POINTS_TARGET:
         res.verdict = "inconclusive"
         res.message = (f"{established} at {points} points{per}, but the false-pass bound is too weak: "
-                       f"{_cap_text(eps)}; {how}")
+                       f"{_cap_text(eps)}; {how}{note}")
         return res
     else:
         res.verdict = "checked"
         res.false_pass_bound = joint
         res.certificate = (f"{points} independent points{per} (chosen so that the bound is <= {POINTS_TARGET:.0e}); "
-                           f"{how}; false-pass probability <= {eps:.1e}^{points} = {joint:.1e}{note}")
+                           f"{how}; false-pass probability <= {_joint_text(per_point, eps, points, joint)}{note}")
     if every_point:
         res.verdict = "undecided"
         res.message = (f"not applicable: {', '.join(every_point)}: a rank at every point of T*V does not follow "
@@ -992,6 +1041,14 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
                        f"Established here: {res.certificate}")
         res.false_pass_bound = None
     return res
+
+
+def _joint_text(per_point: list[list[float]], eps: float, points: int, joint: float) -> str:
+    """The joint bound: eps^k when every point has the same bound, else the product per component."""
+    if all(len(p) == points and all(e == eps for e in p) for p in per_point):
+        return f"{eps:.1e}^{points} = {joint:.1e}"
+    return (f"{joint:.1e} (the product over each component's points of their own bounds, the largest "
+            f"{eps:.1e})")
 
 
 def _cap_text(eps: float) -> str:

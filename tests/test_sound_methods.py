@@ -108,6 +108,40 @@ def test_fermat_trick_is_never_checked():
     assert res.verdict in ("fails", "inconclusive")
 
 
+def _stateful_fermat():
+    """x − x on its first call (the structural pass), x^p − x at the sampled points, p the prime
+    of each point (computable from the seed): a claim that keeps state between calls."""
+    calls = [0]
+
+    def claim(s):
+        calls[0] += 1
+        x = s.X[0, 0]
+        if calls[0] == 1:
+            return {"r": x - x}
+        p = _prime_field(c, 3, 1, 0, calls[0] - 2, 0).p
+        return {"r": x ** p - x}
+    c = _claim(claim)
+    return c, calls
+
+
+def test_a_claim_that_counts_its_calls_is_never_checked():
+    """The degree bound comes from the sampled evaluation itself (values paired with degree
+    markers), not only from a separate structural pass the claim could tell apart by counting."""
+    c, calls = _stateful_fermat()
+    res = run_points(c, 3, 1, "modular", 0)
+    assert calls[0] >= 3 and res.verdict in ("fails", "inconclusive")
+    assert "structural pass" in res.message
+
+
+@pytest.mark.parametrize("kind", ["rational", "modular"])
+def test_paired_markers_give_the_structural_bound_on_a_pure_claim(kind):
+    """On a claim that computes the same thing on every call the sampled evaluations' own markers
+    add nothing: the bound and the verdict are those of the structural pass."""
+    res = run_points(_claim(_huge_degree_identity(3)), 3, 1, kind, 0)
+    assert res.verdict == "checked" and "structural pass" not in res.certificate
+    assert res.checks[0].degree == degree_bound(_claim(_huge_degree_identity(3)), 3, 1).numerator
+
+
 def _huge_degree_identity(k):
     def claim(s):
         """True: (x/x)^(2^k) = 1, but its degree bound 2^k exceeds what any sample set can bound."""
