@@ -868,21 +868,19 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
     res = _base_result(claim, n, r, kind, seed)
     t0 = time.perf_counter()
     hard = bool(options and options.get("hard"))
-    try:
-        deg = degree_bound(claim, n, r, func)
-    except CoordinateAccess as exc:
-        res.verdict, res.message = "error", str(exc)
-        return res
-    eps = _per_point_bound(kind, deg)
-    needed = _points_needed(eps)
-    if trials is not None:
-        points = trials
-    elif hard or needed is None:
-        points = POINTS_MIN
-    else:
-        points = needed
-    bound_text = (f"degree <= {deg.numerator}" if kind == "rational"
-                  else f"degree <= {deg.numerator}, log2 height <= {deg.height:.0f}")
+    deg, eps = None, 1.0
+    if hard:
+        # a hard point is chosen, not random: no bound is claimed; the structural pass still
+        # refuses a claim that reads values and describes the degree in the report
+        try:
+            deg = degree_bound(claim, n, r, func)
+        except CoordinateAccess as exc:
+            res.verdict, res.message = "error", str(exc)
+            return res
+        eps = _per_point_bound(kind, deg)
+    # the number of points: at least POINTS_MIN per component (or ``trials``), then more while the
+    # product of the points' own bounds is above the target and the cap can still reach it
+    points = trials if trials is not None else POINTS_MIN
     res.reductions = [CAYLEY_REDUCTION.format(D=" D" if r == n else "",
                                               comp="; both components of O(n) alternate" if r == n else "")]
     if hard:
@@ -893,14 +891,13 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
     # for r = n the constraint set has two components (det X = +-1): each gets ``points`` points
     components = 2 if r == n else 1
     # each point's own bound: its numbers carry degree markers (paired), so the degree bound is
-    # that of the very expression evaluated there, whatever the claim did on other calls; it is
-    # never taken below the structural pass's bound (which follows the generic path)
+    # that of the very expression evaluated there, whatever the claim did on other calls
     per_point: list[list[float]] = [[] for _ in range(components)]
     point_degs: list[DegreeBound] = []
     scene = None
-    t, beyond = 0, False
+    t = 0
     while t < points * components or (
-            trials is None and not hard and needed is not None and t < POINTS_CAP * components
+            trials is None and not hard and t < POINTS_CAP * components
             and max(math.prod(p) for p in per_point) > POINTS_TARGET
             and _points_needed(max(e for p in per_point for e in p)) is not None):
         comp = t % components
@@ -913,6 +910,8 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
                           options=options)
             try:
                 checks = call_claim(func, scene)
+                point_deg = deg if hard else _paired_bound(checks, field)
+                bound_text = _bound_text(kind, point_deg)
                 ev = _evaluate(checks, field, lambda R: _point_rank(R, field, bound_text))
                 break
             except ConstantDegenerate:
@@ -932,12 +931,7 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
         if t == 0 and not scene._has_params():
             return _run_constant(claim, n, r, seed, func, options, res, t0)
         if not hard:
-            own = _paired_bound(checks, field)
-            point_deg = DegreeBound(max(deg.numerator, own.numerator), max(deg.denominator, own.denominator),
-                                    max(deg.height, own.height), max(deg.constant_bits, own.constant_bits))
             point_degs.append(point_deg)
-            if own.numerator > deg.numerator or own.height > deg.height:
-                beyond = True
             per_point[comp].append(_per_point_bound(kind, point_deg))
         evaluations.append(ev)
         if kind == "modular":
@@ -969,10 +963,9 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
         notes.append(f"{resampled} degenerate samples redrawn")
     if primes_redrawn:
         notes.append(f"{primes_redrawn} primes dividing a constant of the claim redrawn")
-    if beyond:
-        notes.append("the degree markers carried by the sampled evaluations exceed the structural pass's "
-                     "bound (the engine took another path at the points, or the claim computed another "
-                     "expression on another call); each point's bound is its own evaluation's")
+    if len({d.numerator for d in point_degs}) > 1:
+        notes.append(f"the points' own degree bounds differ, from {min(d.numerator for d in point_degs)} to "
+                     f"{deg.numerator}: each point's bound is that of its own evaluation")
     note = f" ({'; '.join(notes)})" if notes else ""
     per = f" on each of the {components} components of T*V" if components == 2 else ""
     joint = max(math.prod(p) for p in per_point) if point_degs else eps ** points
@@ -1041,6 +1034,11 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
                        f"Established here: {res.certificate}")
         res.false_pass_bound = None
     return res
+
+
+def _bound_text(kind: str, deg: DegreeBound) -> str:
+    return (f"degree <= {deg.numerator}" if kind == "rational"
+            else f"degree <= {deg.numerator}, log2 height <= {deg.height:.0f}")
 
 
 def _joint_text(per_point: list[list[float]], eps: float, points: int, joint: float) -> str:
