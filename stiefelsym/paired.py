@@ -206,12 +206,12 @@ class PairBackend(Backend):
         a sum over the entries, taken as one term per distinct marker with its multiplicity
         (k equal terms: the same degree, the height plus log2 k; sums do not depend on the order)."""
         f = self.field
-        V = np.empty(a.shape, dtype=object)
+        vals = []
         seen: dict[int, list] = {}
-        for idx, x in np.ndenumerate(a):
+        for x in a.ravel().tolist():
             if type(x) is not Pair:
                 x = f.lift(unwrap(x))
-            V[idx] = x.v
+            vals.append(x.v)
             d = x.d
             if not d.zero:
                 c = seen.get(id(d))
@@ -219,6 +219,9 @@ class PairBackend(Backend):
                     seen[id(d)] = [d, 1]
                 else:
                     c[1] += 1
+        V = np.empty(a.shape, dtype=object)
+        if vals:
+            V.reshape(-1)[:] = vals
         acc = self._zero
         for d, k in seen.values():
             acc = acc + _times(d, k)
