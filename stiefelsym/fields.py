@@ -226,13 +226,21 @@ class SymbolicField(Field):
         self.symbols[name] = s
         return s
 
+    #: the type of the encoded entries of the exact backend's generic matrices
+    #: (:class:`stiefelsym.polyfield._BigPoly`, set with the first ring): converted to symengine
+    #: where they leave the backend
+    _encoded_type = None
+
     def normalize(self, x):
+        if type(x) is self._encoded_type:
+            return x.to_se()
         return se.expand(x)
 
     def poly_ring(self):
         """The flint rational-function ring of this field's symbols (created on first use)."""
         if self._poly_ring is None:
-            from .polyfield import PolyRing
+            from .polyfield import PolyRing, _BigPoly
+            SymbolicField._encoded_type = _BigPoly
             self._poly_ring = PolyRing()
         return self._poly_ring
 
@@ -248,6 +256,8 @@ class SymbolicField(Field):
         cannot hold goes through symengine's expansion and SymPy's cancel)."""
         if isinstance(x, se.Basic) and x.is_Number:
             return x == 0
+        if type(x) is self._encoded_type:
+            return x.is_zero()
         if self.native:
             from .polyfield import NotRational
             try:
@@ -301,6 +311,10 @@ class SymbolicField(Field):
         """Elimination when numeric pivots suffice (then no fractions appear); otherwise
         Y = adj(M) B / det(M) with determinants by fraction-free elimination."""
         m = len(M)
+        enc = self._encoded_type
+        if enc is not None:
+            M = [[x.to_se() if type(x) is enc else x for x in row] for row in M]
+            B = [[x.to_se() if type(x) is enc else x for x in row] for row in B]
         if all(se.expand(x).is_Number for row in M for x in row) or self._numeric_pivots(M):
             return Field.solve(self, M, B)
         if m > self.max_solve:

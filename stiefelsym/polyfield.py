@@ -111,6 +111,12 @@ class PolyRing:
         self.version = 0                   # bumped when the context grows
         self.ctx = None
         self._set_ctx(_INITIAL_VARS)
+        # parameters beyond MAX_VARS, in the encoded form of :class:`_BigPoly` (never ring variables)
+        self.big: dict = {}                # symengine symbol -> index of the parameter
+        self.big_syms: list = []
+        self.big_memo: dict = {}           # symengine expression -> _BigPoly (or None: not representable)
+        self._big = None                   # (key, shell bound S, context, generators)
+        self._big_name_memo: dict = {}
 
     # -- context ------------------------------------------------------------------
     def _set_ctx(self, cap: int) -> None:
@@ -119,6 +125,7 @@ class PolyRing:
         self.ctx, self.gens, self.zero, self.one = _context(cap)
         if old is not None:
             self.version += 1
+            self._big = None                   # the encoded form's context follows the ring's
             self.atoms = [p.project_to_context(self.ctx) for p in self.atoms]
             self._pow.clear()
             self._factor_memo.clear()
@@ -131,6 +138,8 @@ class PolyRing:
     def var(self, sym) -> Any:
         i = self.index.get(sym)
         if i is None:
+            if sym in self.big:
+                raise NotRational("a parameter held in the encoded form of the parameters beyond the ring's")
             i = len(self.syms)
             if i >= MAX_VARS:
                 raise NotRational(f"more than {MAX_VARS} parameters (flint's exponent vectors are dense)")
@@ -322,6 +331,327 @@ class PolyRing:
         return out
 
 
+    # -- parameters beyond the ring's: the encoded form (see _BigPoly) ----------------
+    def big_ctx(self) -> tuple:
+        """The context of the encoded form: the ring's variables x0.., then u0..u(S-1), v0..v(S-1)
+        (S² >= the number of encoded parameters), as (key, S, context, generators); rebuilt when
+        the ring or the number of encoded parameters grows (values are lifted by name)."""
+        hit = self._big
+        if hit is not None and len(self.big_syms) <= hit[1] * hit[1]:
+            return hit
+        from math import isqrt
+        need = isqrt(max(len(self.big_syms) - 1, 0)) + 1
+        S = max(need, 8, 2 * hit[1] if hit is not None else 0)
+        names = tuple(f"x{i}" for i in range(self.cap)) + tuple(f"u{a}" for a in range(S)) \
+            + tuple(f"v{b}" for b in range(S))
+        ctx = flint.fmpq_mpoly_ctx.get(names, "degrevlex")
+        self._big = (object(), S, ctx, ctx.gens())
+        return self._big
+
+    def big_register(self, a: np.ndarray) -> None:
+        """Enter the new parameters of a matrix's entries in the encoded form at once (in the order
+        they occur), so that the encoded context grows once, not once per doubling."""
+        if len(self.syms) < MAX_VARS:
+            return
+        index, big, new = self.index, self.big, {}
+        for x in a.flat:
+            if isinstance(x, se.Symbol):
+                cand = (x,)
+            elif isinstance(x, se.Basic) and not x.is_Number:
+                cand = sorted(x.free_symbols, key=str)
+            else:
+                continue
+            for y in cand:
+                if y not in index and y not in big:
+                    new[y] = None
+        for y in new:
+            big[y] = len(self.big_syms)
+            self.big_syms.append(y)
+        self.big_ctx()
+
+    def big_var(self, sym):
+        """The encoded parameter u_a v_b of a symbol that is not (and never will be) a ring variable:
+        parameter k is the pair (a, b) of the square-shell enumeration (k = b² + a for a < b,
+        k = a² + a + b otherwise), the same at every S."""
+        k = self.big.get(sym)
+        if k is None:
+            k = self.big[sym] = len(self.big_syms)
+            self.big_syms.append(sym)
+        _, S, ctx, gens = self.big_ctx()
+        a, b = _unpair(k)
+        return gens[self.cap + a] * gens[self.cap + S + b]
+
+    def big_from_se(self, x) -> "_BigPoly":
+        """A symengine expression as a :class:`_BigPoly` (memoized), or NotRational: a non-polynomial
+        expression, or one of degree > 1 in the encoded parameters (where the encoding is not faithful)."""
+        try:
+            hit = self.big_memo[x]
+        except KeyError:
+            hit = False
+        except TypeError:
+            raise NotRational(f"not a symbolic expression: {type(x).__name__}") from None
+        if hit is None:
+            raise NotRational("not representable in the encoded form")
+        if hit is not False:
+            return hit
+        r = self.memo.get(x) if isinstance(x, se.Basic) else None
+        if r is not None and not r[1]:
+            out = _BigPoly(self, r[0].project_to_context(self.big_ctx()[2]), False)
+        else:
+            Incompatible = _incompatible_error()
+            while True:
+                key = self._big_key()
+                try:
+                    p, lin = self._big_conv(x, {})
+                except NotRational:
+                    self.big_memo[x] = None
+                    raise
+                except _Restart:
+                    continue
+                except Incompatible:
+                    if key == self._big_key():
+                        raise
+                    continue
+                if key == self._big_key():
+                    break
+            out = _BigPoly(self, p, lin)
+        self.big_memo[x] = out
+        return out
+
+    def _big_key(self):
+        return self.big_ctx()[0]
+
+    def _big_conv(self, x, memo):
+        """(polynomial in the encoded context, whether it involves an encoded parameter)."""
+        _, S, ctx, gens = self.big_ctx()
+        if isinstance(x, int):
+            return ctx.constant(x), False
+        if isinstance(x, Fraction):
+            return ctx.constant(flint.fmpq(x.numerator, x.denominator)), False
+        if not isinstance(x, se.Basic):
+            raise NotRational(f"not a symbolic expression: {type(x).__name__}")
+        hit = memo.get(x)
+        if hit is not None:
+            return hit
+        if x.is_Symbol:
+            i = self.index.get(x)
+            if i is None and x not in self.big and len(self.syms) < MAX_VARS:
+                v = self.version
+                self.var(x)                            # a ring variable while there is room
+                if v != self.version:
+                    raise _Restart()
+                i = self.index[x]
+            out = (self.big_ctx()[3][i], False) if i is not None else (self.big_var(x), True)
+        elif x.is_Number:
+            if x.is_Integer:
+                out = (ctx.constant(int(x)), False)
+            elif x.is_Rational:
+                out = (ctx.constant(flint.fmpq(int(x.p), int(x.q))), False)
+            else:
+                raise NotRational(f"not a rational number: {x}")
+        elif x.is_Add:
+            acc, lin = None, False
+            for t in x.args:
+                p, l = self._big_conv(t, memo)
+                acc = p if acc is None else acc + p
+                lin = lin or l
+            out = (acc, lin)
+        elif x.is_Mul:
+            acc, lin = None, False
+            for t in x.args:
+                p, l = self._big_conv(t, memo)
+                if l and lin:
+                    raise NotRational("of degree > 1 in the encoded parameters")
+                acc = p if acc is None else acc * p
+                lin = lin or l
+            out = (acc, lin)
+        elif x.is_Pow:
+            b, e = x.args
+            if not e.is_Integer or int(e) < 0:
+                raise NotRational(f"not a polynomial: {x}")
+            p, l = self._big_conv(b, memo)
+            k = int(e)
+            if l and k > 1:
+                raise NotRational("of degree > 1 in the encoded parameters")
+            out = (p ** k, l and k == 1)
+        else:
+            raise NotRational(f"not a polynomial: {type(x).__name__}")
+        memo[x] = out
+        return out
+
+    def _big_name(self, nm: str):
+        """A variable name of an encoded context: ("x", symbol), ("u", a) or ("v", b) (memoized)."""
+        hit = self._big_name_memo.get(nm)
+        if hit is None:
+            if nm[0] == "x":
+                hit = ("x", self.syms[int(nm[1:])])
+            elif nm[0] in "uv":
+                hit = (nm[0], int(nm[1:]))
+            else:
+                raise AssertionError(f"an unknown variable {nm!r} in the encoded form")
+            self._big_name_memo[nm] = hit
+        return hit
+
+    def big_to_se(self, p):
+        """An encoded polynomial (of degree <= 1 in the encoded parameters) as a symengine expression,
+        read from flint's text of it (terms "c*x0^2*u3*v5" joined by " + " and " - ")."""
+        if p.is_zero():
+            return se.Integer(0)
+        name = self._big_name
+        big_syms = self.big_syms
+        terms = []
+        for tok in str(p).replace(" - ", " + -").split(" + "):
+            neg = tok[0] == "-"
+            fs = (tok[1:] if neg else tok).split("*")
+            head = fs[0]
+            if head[0].isdigit():
+                num, _, den = head.partition("/")
+                c = se.Integer(int(num)) if not den else se.Rational(int(num), int(den))
+                fs = fs[1:]
+            else:
+                c = se.Integer(1)
+            out = [-c if neg else c]
+            ua = vb = None
+            for f in fs:
+                nm, _, e = f.partition("^")
+                kind, v = name(nm)
+                if kind == "x":
+                    out.append(v if not e else se.Pow(v, int(e)))
+                elif e or (ua if kind == "u" else vb) is not None:
+                    raise AssertionError("an encoded term of degree > 1 in the encoded parameters")
+                elif kind == "u":
+                    ua = v
+                else:
+                    vb = v
+            if (ua is None) != (vb is None):
+                raise AssertionError("an encoded term with half a parameter")
+            if ua is not None:
+                out.append(big_syms[_pair(ua, vb)])
+            terms.append(se.Mul(*out) if len(out) > 1 else out[0])
+        return se.Add(*terms) if len(terms) > 1 else terms[0]
+
+
+class _Restart(Exception):
+    """The ring grew during a conversion to the encoded form: convert again."""
+
+
+def _pair(a: int, b: int) -> int:
+    return b * b + a if a < b else a * a + a + b
+
+
+def _unpair(k: int) -> tuple[int, int]:
+    from math import isqrt
+    s = isqrt(k)
+    t = k - s * s
+    return (t, s) if t < s else (s, t - s)
+
+
+class _BigPoly:
+    """An entry of a generic (:class:`ObjMat`) matrix that involves parameters beyond the ring's
+    MAX_VARS (a generic operator's coefficients): a flint polynomial in the ring's variables and
+    2S more, u_0..u_(S-1), v_0..v_(S-1), where parameter k is u_a v_b ((a, b) = _unpair(k)).
+
+    The map is a ring homomorphism that is injective on polynomials of degree <= 1 in the encoded
+    parameters (their monomials u_a v_b are distinct and no ring variable is encoded), so the zero
+    test of such a value is exact.  Every value is kept of degree <= 1: ``lin`` says (possibly
+    conservatively) that it involves an encoded parameter, a product of two such values, a power
+    or a quotient is computed as a symengine expression instead (the generic path, exact), and so
+    is any operation with an expression that is not a polynomial of degree <= 1."""
+
+    __slots__ = ("R", "p", "key", "lin", "s")
+
+    def __init__(self, R: PolyRing, p, lin: bool, key=None) -> None:
+        self.R, self.p, self.lin, self.s = R, p, lin, None
+        self.key = key if key is not None else R.big_ctx()[0]
+
+    def _symengine_(self):
+        from ._lazy import symengine_opaque
+        return symengine_opaque()
+
+    def _cur(self):
+        big = self.R._big
+        if big is None or self.key is not big[0] or len(self.R.big_syms) > big[1] * big[1]:
+            big = self.R.big_ctx()
+            if self.key is not big[0]:
+                self.p = self.p.project_to_context(big[2])
+                self.key = big[0]
+        return self.p
+
+    def _of(self, o):
+        if type(o) is _BigPoly:
+            return o
+        try:
+            return self.R.big_from_se(o)
+        except NotRational:
+            return None
+
+    def to_se(self):
+        if self.s is None:
+            self.s = self.R.big_to_se(self._cur())
+            self.R.big_memo[self.s] = self     # the way back (a value read and converted again)
+        return self.s
+
+    def is_zero(self) -> bool:
+        return self.p.is_zero()
+
+    def _new(self, p, lin):
+        return _BigPoly(self.R, p, lin, self.key)
+
+    def __add__(self, o):
+        b = self._of(o)
+        if b is None:
+            return self.to_se() + o if _plain(o) else NotImplemented
+        return self._new(self._cur() + b._cur(), self.lin or b.lin)
+
+    __radd__ = __add__
+
+    def __sub__(self, o):
+        b = self._of(o)
+        if b is None:
+            return self.to_se() - o if _plain(o) else NotImplemented
+        return self._new(self._cur() - b._cur(), self.lin or b.lin)
+
+    def __rsub__(self, o):
+        b = self._of(o)
+        if b is None:
+            return o - self.to_se() if _plain(o) else NotImplemented
+        return self._new(b._cur() - self._cur(), self.lin or b.lin)
+
+    def __neg__(self):
+        return self._new(-self._cur(), self.lin)
+
+    def __mul__(self, o):
+        b = self._of(o)
+        if b is None:
+            return self.to_se() * o if _plain(o) else NotImplemented
+        if self.lin and b.lin:                 # degree 2 in the encoded parameters: not faithful
+            return self.to_se() * b.to_se()
+        return self._new(self._cur() * b._cur(), self.lin or b.lin)
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, o):
+        return self.to_se() / (o.to_se() if type(o) is _BigPoly else o)
+
+    def __rtruediv__(self, o):
+        return o / self.to_se()
+
+    def __pow__(self, k):
+        return self.to_se() ** k
+
+    def __repr__(self):
+        return f"_BigPoly({self.to_se()})"
+
+
+def _plain(o) -> bool:
+    return isinstance(o, (se.Basic, int, Fraction))
+
+
+def _se(x):
+    """An entry of a generic matrix as a symengine expression."""
+    return x.to_se() if type(x) is _BigPoly else x
+
+
 # ----------------------------------------------------------------------------- matrices
 class PolyMat:
     """A matrix of polynomial numerators (numpy object array) over one denominator (atoms)."""
@@ -422,11 +752,25 @@ class PolyBackend(Backend):
             s.o = self._to_obj(s)
         return s.o
 
-    def _generic(self, a: np.ndarray) -> ObjMat:
+    def _generic(self, a: np.ndarray):
+        """The result of an operation on generic matrices: symengine entries expanded, encoded ones
+        (:class:`_BigPoly`) kept; a matrix whose entries are all encoded without an encoded
+        parameter goes back to flint's representation."""
         f = self.field.normalize
         out = np.empty(a.shape, dtype=object)
+        polys = True
         for idx, x in np.ndenumerate(a):
-            out[idx] = f(x)
+            if type(x) is _BigPoly:
+                polys = polys and not x.lin
+                out[idx] = x
+            else:
+                out[idx] = f(x)
+                polys = False
+        if polys and out.size:
+            ctx = self.ring.ctx
+            for idx, x in np.ndenumerate(out):
+                out[idx] = x._cur().project_to_context(ctx)
+            return self._pm(out, NODEN)
         return ObjMat(out)
 
     # -- conversions -------------------------------------------------------------------
@@ -440,7 +784,18 @@ class PolyBackend(Backend):
                 v = R.version
                 rfs = [R.from_se(x) for x in a.flat]
         except NotRational:
-            return ObjMat(a.copy())
+            if len(R.syms) < MAX_VARS and not R.big:
+                return ObjMat(a.copy())
+            # parameters beyond the ring's: entries in the encoded form where they are polynomials
+            # of degree <= 1 in those parameters (see _BigPoly), symengine expressions otherwise
+            R.big_register(a)
+            out = np.empty(a.shape, dtype=object)
+            for idx, x in np.ndenumerate(a):
+                try:
+                    out[idx] = R.big_from_se(x)
+                except NotRational:
+                    out[idx] = x
+            return ObjMat(out)
         D = NODEN
         for r in rfs:
             if r[1] and r[1] != D:
@@ -453,7 +808,10 @@ class PolyBackend(Backend):
 
     def to_obj(self, s):
         if type(s) is ObjMat:
-            return s.a.copy()
+            out = np.empty(s.a.shape, dtype=object)
+            for idx, x in np.ndenumerate(s.a):
+                out[idx] = _se(x)
+            return out
         return self._obj(s).copy()
 
     def _to_obj(self, s):

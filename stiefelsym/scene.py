@@ -628,13 +628,14 @@ class Scene(PaperObjects):
             out._coords = xi._coords
             o = out._a
             if f is coeffs._field:
-                # one product in the field's backend: the coefficient matrix times the coordinates
+                # one product in the field's backend: the coefficient matrix times the coordinates,
+                # placed in the upper triangle W; AA(xi) = W - Wᵀ
                 col = np.empty((len(basis), 1), dtype=object)
                 col[:, 0] = comps
                 v = (coeffs @ Mat._wrap(col, f, ("so", "?"))).T._view()[0]
                 for k, (i, j) in enumerate(basis):
-                    o[i, j], o[j, i] = v[k], -v[k]
-                return out
+                    o[i, j] = v[k]
+                return out - out.T
             c = coeffs._view()                  # a matrix of another field (a base scene's operator)
             for k, (i, j) in enumerate(basis):
                 acc = f.const(0)

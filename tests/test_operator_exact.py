@@ -82,3 +82,80 @@ def test_operator_flow_negative_control(method):
     bad = run_one(_claim(_flow_corrupted), Size(3, 2), method, 0)
     assert good.verdict in ("proved", "checked", "numeric"), good.message
     assert bad.verdict == "fails", bad.message
+
+
+# -- the encoded form of parameters beyond the flint ring's (polyfield._BigPoly) --------------
+
+def _small_ring(monkeypatch, cap):
+    """A fresh exact field whose flint ring holds only ``cap`` parameters: the rest are encoded."""
+    from stiefelsym import polyfield
+    monkeypatch.setattr(polyfield, "MAX_VARS", cap)
+    return SymbolicField()
+
+
+def _mat(f, rows):
+    import numpy as np
+    from stiefelsym.matrix import Mat
+    a = np.empty((len(rows), len(rows[0])), dtype=object)
+    for i, row in enumerate(rows):
+        for j, x in enumerate(row):
+            a[i, j] = x
+    return Mat._wrap(a, f)
+
+
+def test_encoded_products_of_two_parameters_are_not_identified(monkeypatch):
+    """c1 c2 - c0 c3 vanishes under the encoding (u0v1·u1v0 = u0v0·u1v1): a product of two encoded
+    values must leave the encoded form, and the difference is found nonzero."""
+    f = _small_ring(monkeypatch, 1)
+    w = f.param("w")
+    c = [f.param(f"c{k}") for k in range(4)]
+    W = _mat(f, [[w]])
+    C = [_mat(f, [[x]]) @ W for x in c]        # encoded entries (w is the ring's one variable)
+    D = C[1] @ C[2] - C[0] @ C[3]
+    assert not D.is_zero()
+    assert not f.is_zero(D._view()[0, 0])
+    assert f.is_zero(f.normalize(D._view()[0, 0] - (c[1] * c[2] - c[0] * c[3]) * w * w))
+    assert (C[1] @ C[2] - C[2] @ C[1]).is_zero()
+    assert len(f.poly_ring().big_syms) == 4
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_encoded_arithmetic_agrees_with_symengine(monkeypatch, seed):
+    """Random sums, products, transposes, scalings, traces and pairings of matrices whose entries
+    involve parameters beyond the ring: every result equals symengine's expansion, and a result
+    is zero exactly when symengine's is."""
+    import random
+
+    import numpy as np
+    import symengine as se
+    f = _small_ring(monkeypatch, 3)
+    rng = random.Random(seed)
+    ps = [f.param(f"p{k}") for k in range(9)]
+
+    def entry():
+        return se.Add(*[rng.randint(-2, 2) * rng.choice(ps) * (rng.choice(ps) if rng.random() < 0.3 else 1)
+                        for _ in range(rng.randint(0, 3))] + [se.Integer(rng.randint(-1, 1))])
+
+    def pair():
+        a = np.array([[entry() for _ in range(3)] for _ in range(3)], dtype=object)
+        return _mat(f, a.tolist()), a
+
+    def same(M, a):
+        v = M._view()
+        for x, y in zip(v.flat, a.flat):
+            d = se.expand(x - y)
+            assert d == 0, (x, y)
+        assert M.is_zero() == all(se.expand(y) == 0 for y in a.flat)
+
+    for _ in range(4):
+        (A, a), (B, b) = pair(), pair()
+        same(A + B, a + b)
+        same(A - B, a - b)
+        same(A @ B.T, np.dot(a, b.T))
+        same((A @ B) @ A, np.dot(np.dot(a, b), a))
+        same(A - A, a - a)
+        s = rng.choice(ps)
+        same(A * s, a * s)
+        assert se.expand(A.trace() - sum(a[i, i] for i in range(3))) == 0
+        assert se.expand(A._inner(B) - sum(x * y for x, y in zip(a.flat, b.flat))) == 0
+    assert f.poly_ring().big_syms              # the encoded form was exercised
