@@ -349,21 +349,14 @@ class PolyRing:
         return self._big
 
     def big_register(self, a: np.ndarray) -> None:
-        """Enter the new parameters of a matrix's entries in the encoded form at once (in the order
-        they occur), so that the encoded context grows once, not once per doubling."""
+        """Enter the new parameters that are entries of a matrix in the encoded form at once (in the
+        order they occur), so that the encoded context grows once, not once per doubling."""
         if len(self.syms) < MAX_VARS:
             return
         index, big, new = self.index, self.big, {}
-        for x in a.flat:
-            if isinstance(x, se.Symbol):
-                cand = (x,)
-            elif isinstance(x, se.Basic) and not x.is_Number:
-                cand = sorted(x.free_symbols, key=str)
-            else:
-                continue
-            for y in cand:
-                if y not in index and y not in big:
-                    new[y] = None
+        for x in a.flat:                       # a matrix of parameters (the parameters of other
+            if isinstance(x, se.Symbol) and x not in index and x not in big:   # entries: one by one)
+                new[x] = None
         for y in new:
             big[y] = len(self.big_syms)
             self.big_syms.append(y)

@@ -129,6 +129,12 @@ def _mat_op(v, parents) -> RevMat:
     return RevMat(v, Node(lambda g: [(node, f(g)) for node, f in live]))
 
 
+def linear(a: RevMat, value, adjoint: Callable[[Any], Any]) -> RevMat:
+    """A linear map of a matrix on the tape as one node: its value (a base-field Mat) and the
+    adjoint map, applied to the adjoint of the result."""
+    return _mat_op(value, [(a, adjoint)])
+
+
 class RevField(Field):
     """Reverse numbers over a base field (used only to take gradients)."""
 

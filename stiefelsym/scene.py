@@ -1126,10 +1126,31 @@ class _LiftedScene(Scene):
         return Scene._cached(self, key, build)
 
     def sym_operator(self, name: str = "AA"):
-        """The base scene's operator (the same parameters), its coefficients lifted to this field."""
+        """The base scene's operator (the same parameters), its coefficients lifted to this field;
+        over reverse numbers, see :meth:`_reverse_operator_apply`."""
         basis, coeffs = self.base._operator_coefficients(name)
         lifted = self._cached(f"op:{name}", lambda: self._lift_primitive(coeffs, None))
-        return self._operator_apply(basis, lifted)
+        generic = self._operator_apply(basis, lifted)
+        if isinstance(self._field, RevField):
+            return self._reverse_operator_apply(self.base._operator_apply(basis, coeffs), generic)
+        return generic
+
+    def _reverse_operator_apply(self, base_apply, generic):
+        """The operator on the tape of reverse mode as one node: its value is the base scene's
+        operator applied to the value, and its adjoint g -> AA(g), since AA is self-adjoint for the
+        Frobenius pairing (<g, AA(xi)> = 2 c(g)ᵀ C c(xi) = <AA(g), xi>, c the skew coordinates and
+        C the symmetric coefficient matrix).  A matrix of another field takes the generic path."""
+        from .reverse import linear as rev_linear
+
+        def apply(xi: Mat) -> Mat:
+            if not isinstance(xi, Mat) or xi._field is not self._field:
+                return generic(xi)
+            unify(xi.tags[0], "n", "the operator on so(n)", xi.tracker)
+            unify(xi.tags[1], "n", "the operator on so(n)", xi.tracker)
+            s = xi._nat()
+            out = rev_linear(s, base_apply(s.v)._untyped(), lambda g: base_apply(g)._untyped())
+            return Mat._wrap_native(out, self._field, ("n", "n"), xi.tracker, xi._coords)
+        return apply
 
     def generic(self, name, m, k):
         return self._cached(f"gen:{name}[{m}x{k}]", lambda: self._lift_primitive(self.base.generic(name, m, k), None))
