@@ -131,7 +131,27 @@ def _float_entries(value: Any, name: str, u: float) -> list[tuple[str, Any]]:
         return _entries(value, name)
     s = value._n
     v, m = s.v.ravel(), s.m.ravel()
-    e = np.full(v.shape, float(s.e))
+    e1 = float(s.e)
+    cols = s.v.shape[1]
+    with np.errstate(all="ignore"):
+        av = np.abs(v)
+        fast = math.isfinite(e1) and math.isfinite(float(np.sum(av))) and math.isfinite(float(np.sum(m)))
+    if fast:
+        # every value, bound and scale finite (the sums would be inf or nan otherwise), the bound the
+        # same for every entry: the same picks from fewer passes (the largest e/m is e over the
+        # scales, inf where a scale is 0; the ratio is 0 everywhere when e = 0; the largest e is the
+        # first entry's)
+        with np.errstate(all="ignore"):
+            picks = {int(np.argmax(av)), 0, int(np.argmax(e1 / m)) if e1 > 0.0 else 0}
+            clear = av > e1
+            resolves = e1 <= FLOAT_RESOLUTION * m
+            for mask in (clear, clear & resolves, ~resolves):
+                i = int(np.argmax(mask))
+                if mask[i]:
+                    picks.add(i)
+        return [(f"{name}[{i // cols + 1},{i % cols + 1}]", ErrNum(float(v[i]), e1, float(m[i]), u))
+                for i in sorted(picks)]
+    e = np.full(v.shape, e1)
     with np.errstate(all="ignore"):
         finite = np.isfinite(v) & np.isfinite(e) & np.isfinite(m)
         clear = np.abs(v) > e
@@ -142,7 +162,6 @@ def _float_entries(value: Any, name: str, u: float) -> list[tuple[str, Any]]:
         hit = np.flatnonzero(mask)
         if hit.size:
             picks.add(int(hit[0]))
-    cols = s.v.shape[1]
     return [(f"{name}[{i // cols + 1},{i % cols + 1}]", ErrNum(float(v[i]), float(e[i]), float(m[i]), u))
             for i in sorted(picks)]
 

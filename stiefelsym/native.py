@@ -227,10 +227,11 @@ class F64:
     never changes once built, and the backend keeps what it learns about one: ``nv``, the bound
     on ‖v‖_F once computed; ``t``, its transpose; ``prods``, the products it was the left factor
     of ({id(right factor): (right factor, product)}: the same two matrices are never multiplied
-    twice); ``diag``, its diagonal (values, term scales) when it is diagonal by construction;
+    twice), and likewise its sums, differences ({("+" or "-", id(other)): (other, result)}) and
+    multiples by a scalar ({("*", value, bound, scale): (None, result)}); ``diag``, its diagonal (values, term scales) when it is diagonal by construction;
     ``sel``, (rows, signs) when every column j is signs[j] times the unit vector of rows[j]
     (signs[j] = 0: a zero column); ``m32``, the term scales in float32 (False where they do not
-    fit, see :func:`_scale_product`).
+    fit, see :func:`_scale_product`); ``msym``, whether the term scales are a symmetric matrix.
 
     An F64 may also be *deferred* (``lazy`` holds how to compute it, ``defer`` what it is: the
     inverse of a matrix whose inverse is known to exist with a bounded norm, or a product with
@@ -239,11 +240,11 @@ class F64:
     deferred inverse times B is a solve; a deferred product times a selection of columns is
     reassociated), each with a bound of its own."""
 
-    __slots__ = ("_v", "_e", "_m", "nv", "t", "prods", "diag", "sel", "m32", "lazy", "defer")
+    __slots__ = ("_v", "_e", "_m", "nv", "t", "prods", "diag", "sel", "m32", "msym", "lazy", "defer")
 
     def __init__(self, v: np.ndarray, e: float, m: np.ndarray, nv: float | None = None) -> None:
         self._v, self._e, self._m, self.nv = v, e, m, nv
-        self.t = self.prods = self.diag = self.sel = self.m32 = self.lazy = self.defer = None
+        self.t = self.prods = self.diag = self.sel = self.m32 = self.msym = self.lazy = self.defer = None
 
     @classmethod
     def deferred(cls, build: Any, defer: tuple) -> "F64":
@@ -251,7 +252,7 @@ class F64:
         (kind, shape, ...) for the backend."""
         out = cls.__new__(cls)
         out._v = out._e = out._m = out.nv = None
-        out.t = out.prods = out.diag = out.sel = out.m32 = None
+        out.t = out.prods = out.diag = out.sel = out.m32 = out.msym = None
         out.lazy, out.defer = build, defer
         return out
 
@@ -346,6 +347,15 @@ def _m32(a: F64) -> Any:
             m32 = a.m.astype(np.float32) if 0.0 <= top < _M32_MAX else False
         a.m32 = m32
     return m32
+
+
+def _msym(a: F64) -> bool:
+    """Whether a's term scales are a symmetric matrix (exactly), once per matrix."""
+    sym = a.msym
+    if sym is None:
+        m = a.m
+        sym = a.msym = m.shape[0] == m.shape[1] and bool(np.array_equal(m, m.T))
+    return sym
 
 
 def _scale_product(a: F64, b: F64) -> np.ndarray:
@@ -511,17 +521,38 @@ class Float64Backend(Backend):
         out.diag = (dv, dm)
         return out
 
+    def _memo(self, a: F64) -> dict:
+        """a's remembered results (products, sums, scalar multiples), as :meth:`release` forgets them."""
+        prods = a.prods
+        if prods is None:
+            prods = a.prods = {}
+            self._holders.append(a)
+        return prods
+
     def add(self, a, b):
+        # a sum met again (the value part of a dual evaluation repeats the plain one) is the stored one
+        memo = self._memo(a)
+        hit = memo.get(("+", id(b)))
+        if hit is not None:
+            return hit[1]
         with np.errstate(all="ignore"):
             v = a.v + b.v
             nv = _fro(v)
-            return F64(v, _up(a.e + b.e + U64 * nv + _uf(v.shape), 3), a.m + b.m, nv)
+            out = F64(v, _up(a.e + b.e + U64 * nv + _uf(v.shape), 3), a.m + b.m, nv)
+        memo[("+", id(b))] = (b, out)
+        return out
 
     def sub(self, a, b):
+        memo = self._memo(a)
+        hit = memo.get(("-", id(b)))
+        if hit is not None:
+            return hit[1]
         with np.errstate(all="ignore"):
             v = a.v - b.v
             nv = _fro(v)
-            return F64(v, _up(a.e + b.e + U64 * nv + _uf(v.shape), 3), a.m + b.m, nv)
+            out = F64(v, _up(a.e + b.e + U64 * nv + _uf(v.shape), 3), a.m + b.m, nv)
+        memo[("-", id(b))] = (b, out)
+        return out
 
     def neg(self, a):
         return F64(-a.v, a.e, a.m, a.nv)
@@ -530,10 +561,7 @@ class Float64Backend(Backend):
         (ma, k), (_kb, nb) = self.shape(a), self.shape(b)
         if k == 0:
             return self.zeros(ma, nb)
-        prods = a.prods
-        if prods is None:
-            prods = a.prods = {}
-            self._holders.append(a)
+        prods = self._memo(a)
         hit = prods.get(id(b))
         if hit is not None:
             return hit[1]
@@ -583,18 +611,33 @@ class Float64Backend(Backend):
                 rows, signs = b.sel
                 v, m = a.v[:, rows] * signs, a.m[:, rows] * np.abs(signs)
             else:
-                v, m = a.v @ b.v, _scale_product(a, b)
+                v = a.v @ b.v
+                back = b.prods.get(id(a)) if b.prods is not None else None
+                if back is not None and back[1].lazy is None and _msym(a) and _msym(b):
+                    # |A|_m |B|_m = (|B|_m |A|_m)ᵀ for symmetric scales (the two products of a
+                    # commutator): the scales of b a, whose rounding bound does not depend on the
+                    # order of the sums, transposed
+                    m = back[1].m.T
+                else:
+                    m = _scale_product(a, b)
             na, nb = _norm(a), _norm(b)
             e = na * b.e + a.e * nb + a.e * b.e + _gamma(k) * na * nb + k * _uf(v.shape)
             return F64(v, _up(e, 8), m)
 
     def smul(self, a, c):
         cv, ce, cm = float(c.v), float(c.e), float(c.m)
+        memo = self._memo(a)
+        key = ("*", cv, math.copysign(1.0, cv), ce, cm)     # the same scalar (value, bound, scale) again
+        hit = memo.get(key)
+        if hit is not None:
+            return hit[1]
         with np.errstate(all="ignore"):
             v = a.v * cv
             nv = _fro(v)
             e = _norm(a) * ce + a.e * abs(cv) + a.e * ce + U64 * nv + _uf(v.shape)
-            return F64(v, _up(e, 6), a.m * cm, nv)
+            out = F64(v, _up(e, 6), a.m * cm, nv)
+        memo[key] = (None, out)
+        return out
 
     def T(self, a):
         t = a.t

@@ -104,3 +104,104 @@ def test_an_inverse_without_the_structure_is_computed_at_once(monkeypatch):
     from stiefelsym.fields import DegenerateError
     with pytest.raises(DegenerateError):
         Mat.zeros(5, 5, F).inv()
+
+
+def _reference_entries(s, name, u):
+    """The float method's deciding entries as they were found before the fast path (every array
+    in full)."""
+    from stiefelsym.fields import ErrNum
+    from stiefelsym.methods import FLOAT_RESOLUTION
+    v, m = s.v.ravel(), s.m.ravel()
+    e = np.full(v.shape, float(s.e))
+    with np.errstate(all="ignore"):
+        finite = np.isfinite(v) & np.isfinite(e) & np.isfinite(m)
+        clear = np.abs(v) > e
+        resolves = finite & (e <= FLOAT_RESOLUTION * m)
+        ratio = np.where(m != 0, e / np.where(m != 0, m, 1.0), np.where(e == 0, 0.0, np.inf))
+    picks = {int(np.argmax(np.abs(v))), int(np.argmax(e)), int(np.argmax(ratio))}
+    for mask in (~finite, clear, clear & resolves, ~resolves):
+        hit = np.flatnonzero(mask)
+        if hit.size:
+            picks.add(int(hit[0]))
+    cols = s.v.shape[1]
+    return [(f"{name}[{i // cols + 1},{i % cols + 1}]", ErrNum(float(v[i]), float(e[i]), float(m[i]), u))
+            for i in sorted(picks)]
+
+
+def test_the_deciding_entries_are_those_of_the_full_arrays():
+    """The float method's entry picks (largest |v|, e and e/m, first non-finite, clear, clear and
+    resolving, not resolving) are the same with the fast path, on matrices with zero scales, zero
+    bounds, entries above the bound, unresolved entries, infinities and nan."""
+    from stiefelsym.methods import _float_entries
+    F = FloatField()
+    be = native.backend(F)
+    rng = np.random.default_rng(3)
+    for trial in range(60):
+        v = rng.standard_normal((5, 4)) * 10.0 ** rng.integers(-20, 3)
+        m = np.abs(rng.standard_normal((5, 4))) * 10.0 ** rng.integers(-3, 12)
+        e = [0.0, 1e-12, 1e-3, 1.0, float("inf"), float("nan")][trial % 6]
+        if trial % 5 == 1:
+            m[rng.integers(5), rng.integers(4)] = 0.0
+        if trial % 7 == 2:
+            v[rng.integers(5), rng.integers(4)] = [np.inf, -np.inf, np.nan][trial % 3]
+        if trial % 11 == 3:
+            m[rng.integers(5), rng.integers(4)] = [np.inf, np.nan][trial % 2]
+        if trial % 13 == 4:
+            m[:, :] = m[0, 0]
+        s = native.F64(v, e, m)
+        M = Mat._wrap_native(s, F)
+        got = _float_entries(M, "R", F.u)
+        want = _reference_entries(s, "R", F.u)
+        assert [p for p, _ in got] == [p for p, _ in want]
+        for (_, x), (_, y) in zip(got, want):
+            assert repr((x.v, x.e, x.m)) == repr((y.v, y.e, y.m))
+
+
+def commutator_ops(F, rng):
+    """A commutator of two matrices whose term scales are symmetric (B + Bᵀ, C Cᵀ + c·I): its
+    second product takes the first one's scales transposed; sums, differences and multiples by a
+    scalar met again are the stored ones."""
+    B, C = general(F, 5, 5, rng), general(F, 5, 3, rng)
+    c = F.param("c", rng)
+    M = B + B.T
+    L = C @ C.T + Mat.identity(5, F) * c
+    out = [M @ L - L @ M, L @ M, M @ L]
+    out += [B + B.T, (C @ C.T + Mat.identity(5, F) * c) - B, B * c, B - C @ C.T]
+    return out
+
+
+def test_symmetric_scales_and_repeated_sums_keep_the_bound():
+    for seed in range(4):
+        F = FloatField()
+        be = native.backend(F)
+        out = commutator_ops(F, random.Random(seed))
+
+        class Replay(RationalField):
+            def param(self, name, rr):
+                x = F.param(name, rr)
+                return flint.fmpq(*Fraction(x.v).as_integer_ratio())
+        exact = commutator_ops(Replay(), random.Random(seed))
+        for M, Mq in zip(out, exact):
+            for row, rowq in zip(entries(M), entries(Mq)):
+                for x, q in zip(row, rowq):
+                    assert abs(Fraction(x.v) - Fraction(int(q.p), int(q.q))) <= Fraction(x.e)
+                    assert x.m >= abs(x.v) * (1 - 1e-4)
+        LM, ML = out[1]._n, out[2]._n
+        # the scales of L M are those of M L, transposed (not a new product)
+        assert np.shares_memory(LM.m, ML.m) and np.array_equal(LM.m, ML.m.T)
+        assert be is native.backend(F)
+
+
+def test_a_sum_or_multiple_met_again_is_the_stored_one():
+    F = FloatField()
+    rng = random.Random(0)
+    B, C = general(F, 4, 4, rng), general(F, 4, 4, rng)
+    c = F.param("c", rng)
+    assert (B + C)._n is (B + C)._n and (B - C)._n is (B - C)._n
+    assert (B * c)._n is (B * ErrNumLike(c))._n
+    assert (B * c)._n is not (B * (c + F.const(1)))._n
+
+
+def ErrNumLike(c):
+    from stiefelsym.fields import ErrNum
+    return ErrNum(c.v, c.e, c.m, c.u)
