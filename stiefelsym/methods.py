@@ -30,7 +30,7 @@ from .fields import (PRIME_LOW, PRIMES_IN_RANGE_LOWER, ConstantDegenerate, Degen
                      ErrNum, Field, FloatField, ModularField, RationalField, SymbolicBudget,
                      SymbolicField, random_prime)
 from .matrix import Mat, is_scene_number
-from .native import F64, DegMat, backend, one_blas_thread
+from .native import F64, DegMat, backend, one_blas_thread, quiet_numpy
 from .paired import PairField, marker_of
 from .results import CheckOutcome, Result
 from .scene import CoordinateAccess, Scene, SizeError
@@ -1126,7 +1126,7 @@ def run_float(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
     """float64 with a running error bound; mpmath at 30, 60, 120 digits when float64 cannot decide.
     When r = n both components of O(n) are evaluated."""
     options = _prepare(options)
-    with one_blas_thread():
+    with one_blas_thread(), quiet_numpy():
         return _hard_note(_run_float(claim, n, r, seed, func or claim.func, options), options)
 
 
