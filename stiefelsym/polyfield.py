@@ -587,6 +587,9 @@ class _BigPoly:
     def is_zero(self) -> bool:
         return self.p.is_zero()
 
+    def __bool__(self) -> bool:
+        return not self.p.is_zero()
+
     def _new(self, p, lin):
         return _BigPoly(self.R, p, lin, self.key)
 
