@@ -259,7 +259,8 @@ class F64:
     twice), and likewise its sums, differences ({("+" or "-", id(other)): (other, result)}) and
     multiples by a scalar ({("*", value, bound, scale): (None, result)}); ``diag``, its diagonal (values, term scales) when it is diagonal by construction;
     ``sel``, (rows, signs) when every column j is signs[j] times the unit vector of rows[j]
-    (signs[j] = 0: a zero column); ``m32``, the term scales in float32 (False where they do not
+    (signs[j] = 0: a zero column; a diagonal keeps its full arrays deferred until read, see
+    below); ``m32``, the term scales in float32 (False where they do not
     fit, see :func:`_scale_product`); ``msym``, whether the term scales are a symmetric matrix.
 
     An F64 may also be *deferred* (``lazy`` holds how to compute it, ``defer`` what it is: the
@@ -276,11 +277,12 @@ class F64:
         self.t = self.prods = self.diag = self.sel = self.m32 = self.msym = self.lazy = self.defer = None
 
     @classmethod
-    def deferred(cls, build: Any, defer: tuple) -> "F64":
-        """A matrix computed by build() (an eager F64) when its values are first read; defer is
-        (kind, shape, ...) for the backend."""
+    def deferred(cls, build: Any, defer: tuple, e: float | None = None, nv: float | None = None) -> "F64":
+        """A matrix computed by build() (an eager F64 with the bound e, when given) when its values
+        are first read; defer is (kind, shape, ...) for the backend."""
         out = cls.__new__(cls)
-        out._v = out._e = out._m = out.nv = None
+        out._v = out._m = None
+        out._e, out.nv = e, nv
         out.t = out.prods = out.diag = out.sel = out.m32 = out.msym = None
         out.lazy, out.defer = build, defer
         return out
@@ -301,7 +303,7 @@ class F64:
 
     @property
     def e(self) -> float:
-        if self.lazy is not None:
+        if self._e is None:
             self._force()
         return self._e
 
@@ -546,7 +548,15 @@ class Float64Backend(Backend):
             return Backend.diag(self, xs)
         dv = np.array([float(x.v) for x in xs])
         dm = np.array([float(x.m) for x in xs])
-        out = F64(np.diag(dv), _fro(np.array([float(x.e) for x in xs])), np.diag(dm))
+        return self._diagonal(dv, dm, _fro(np.array([float(x.e) for x in xs])), None)
+
+    def _diagonal(self, dv: np.ndarray, dm: np.ndarray, e: float, nv: float | None) -> F64:
+        """The diagonal matrix of dv (term scales dm, bound e), whose full arrays are made only when
+        read: products with it scale rows or columns, a scalar multiple stays diagonal."""
+        k = len(dv)
+        if nv is None:
+            nv = _fro(dv)                  # ‖diag(dv)‖_F = ‖dv‖_2
+        out = F64.deferred(lambda: F64(np.diag(dv), e, np.diag(dm), nv), ("diag", (k, k)), e, nv)
         out.diag = (dv, dm)
         return out
 
@@ -558,12 +568,41 @@ class Float64Backend(Backend):
             self._holders.append(a)
         return prods
 
+    def _with_diagonal(self, a, b, sign: float) -> F64:
+        """a + sign·b where a or b is a diagonal whose full arrays are not made (see
+        :meth:`_diagonal`): the other operand's arrays with the diagonal changed, the same values
+        and scales as the full sum (x ± 0 = x exactly) under the same bound."""
+        k = self.shape(a)[0]
+        i = np.arange(k)
+        with _quiet():
+            if a.diag is not None and b.diag is not None and a.lazy is not None and b.lazy is not None:
+                (av, am), (bv, bm) = a.diag, b.diag
+                v = av + bv if sign > 0 else av - bv
+                nv = _fro(v)
+                return self._diagonal(v, am + bm, _up(a.e + b.e + U64 * nv + _uf((k, k)), 3), nv)
+            if b.diag is not None and b.lazy is not None:
+                dv, dm = b.diag
+                v, m = a.v.copy(), a.m.copy()
+                v[i, i] = a.v[i, i] + dv if sign > 0 else a.v[i, i] - dv
+                m[i, i] = a.m[i, i] + dm
+            else:
+                dv, dm = a.diag
+                v, m = (b.v.copy() if sign > 0 else -b.v), b.m.copy()
+                v[i, i] = dv + b.v[i, i] if sign > 0 else dv - b.v[i, i]
+                m[i, i] = dm + b.m[i, i]
+            nv = _fro(v)
+            return F64(v, _up(a.e + b.e + U64 * nv + _uf(v.shape), 3), m, nv)
+
     def add(self, a, b):
         # a sum met again (the value part of a dual evaluation repeats the plain one) is the stored one
         memo = self._memo(a)
         hit = memo.get(("+", id(b)))
         if hit is not None:
             return hit[1]
+        if (a.lazy is not None and a.defer[0] == "diag") or (b.lazy is not None and b.defer[0] == "diag"):
+            out = self._with_diagonal(a, b, 1.0)
+            memo[("+", id(b))] = (b, out)
+            return out
         with _quiet():
             v = a.v + b.v
             nv = _fro(v)
@@ -576,6 +615,10 @@ class Float64Backend(Backend):
         hit = memo.get(("-", id(b)))
         if hit is not None:
             return hit[1]
+        if (a.lazy is not None and a.defer[0] == "diag") or (b.lazy is not None and b.defer[0] == "diag"):
+            out = self._with_diagonal(a, b, -1.0)
+            memo[("-", id(b))] = (b, out)
+            return out
         with _quiet():
             v = a.v - b.v
             nv = _fro(v)
@@ -627,8 +670,8 @@ class Float64Backend(Backend):
         return None
 
     def _product(self, a, b):
-        """The product of two matrices (values read), with the dot-product bound."""
-        k = a.v.shape[1]
+        """The product of two matrices (values read, except a diagonal's), with the dot-product bound."""
+        k = self.shape(a)[1]
         with _quiet():
             if a.diag is not None:
                 dv, dm = a.diag
@@ -660,6 +703,17 @@ class Float64Backend(Backend):
         hit = memo.get(key)
         if hit is not None:
             return hit[1]
+        if a.diag is not None and math.isfinite(cv) and math.isfinite(ce) and math.isfinite(cm):
+            # a diagonal times a finite scalar: the zeros stay zeros (exactly), the diagonal is
+            # scaled with the bound the full matrix would get (its norm is the diagonal's)
+            dv, dm = a.diag
+            with _quiet():
+                v = dv * cv
+                nv = _fro(v)
+                e = _norm(a) * ce + a.e * abs(cv) + a.e * ce + U64 * nv + _uf((len(dv), len(dv)))
+                out = self._diagonal(v, dm * cm, _up(e, 6), nv)
+            memo[key] = (None, out)
+            return out
         with _quiet():
             v = a.v * cv
             nv = _fro(v)
