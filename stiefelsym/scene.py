@@ -926,7 +926,11 @@ class Scene(PaperObjects):
 
     def _lyapunov_diagonal(self, m: list[Any], C: Mat) -> Mat | None:
         """The symmetric Y with diag(m) Y + Y diag(m) = C (C symmetric): Y_ij = C_ij / (m_i + m_j);
-        None when some m_i + m_j vanishes (then the solution is not unique)."""
+        None when some m_i + m_j vanishes (then the solution is not unique).  Over the exact field's
+        flint backend, entry by entry there (see :meth:`_lyapunov_native`)."""
+        native = self._lyapunov_native(m, C)
+        if native is not NotImplemented:
+            return native
         f = self._field
         r = len(m)
         Y = self.zeros(r, r, C.tags)
@@ -937,6 +941,69 @@ class Scene(PaperObjects):
                 if f.is_zero(d):
                     return None
                 Y._a[i, j] = Y._a[j, i] = f.normalize(c[i, j] / d)
+        return Y
+
+    #: at most this many new denominator factors m_i + m_j: Y over one common denominator
+    _LYAPUNOV_COMMON = 6
+
+    def _lyapunov_native(self, m: list[Any], C: Mat) -> Mat | None:
+        """:meth:`_lyapunov_diagonal` where C is held by the exact field's flint backend as numerators
+        over one denominator D: Y_ij = C_ij / (m_i + m_j) is formed in flint, each entry over its own
+        denominator D (m_i + m_j) (the factors of m_i + m_j registered once as atoms, the entry
+        reduced exactly), and Y is kept entry by entry (the generic representation).  One common
+        denominator for Y would be D times every distinct m_i + m_j, r(r+1)/2 of them: every
+        numerator multiplied by all the others, a product of degree about r²/2 (beyond reach from
+        r ≈ 6 on).  NotImplemented where C is not held that way (then the generic solve)."""
+        be = backend(self._field)
+        ring = getattr(be, "ring", None)
+        if ring is None or not isinstance(self._field, SymbolicField):
+            return NotImplemented
+        from .polyfield import NODEN, NotRational, ObjMat, PolyMat, _merge_add, _merge_max, _minus
+        s = C._nat()
+        if type(s) is not PolyMat:
+            return NotImplemented
+        r = len(m)
+        try:
+            while True:                          # again if the flint context grew on the way
+                v = ring.version
+                sums = {(i, j): ring.from_se(self._field.normalize(m[i] + m[j]))
+                        for i in range(r) for j in range(i, r)}
+                if v == ring.version:
+                    break
+        except NotRational:
+            return NotImplemented
+        for (i, j), (num, den) in sums.items():
+            if num.is_zero():
+                return None
+        s = be._fix(s)
+        ring = be.ring
+        ys = {}
+        for (i, j), (dn, dd) in sums.items():
+            x = s.a[i, j]
+            if x.is_zero():
+                ys[i, j] = (ring.zero, NODEN)
+                continue
+            # C_ij / D over (dn / dd) = C_ij dd / (c D atoms), dn = c * prod atoms
+            c, atoms = ring.factor(dn)
+            num = (x * ring.den_poly(dd)) / c if dd else x / c
+            ys[i, j] = ring.rf_reduce((num, _merge_add(s.den, atoms)))
+        D = NODEN
+        for y in ys.values():
+            if y[1] and y[1] != D:
+                D = _merge_max(D, y[1])
+        Y = self.zeros(r, r, C.tags)
+        if len(_minus(D, s.den)) <= self._LYAPUNOV_COMMON:
+            # few new factors: one common denominator (the backend's own representation)
+            a = np.empty((r, r), dtype=object)
+            for (i, j), (num, d) in ys.items():
+                a[i, j] = a[j, i] = num if d == D else num * ring.den_poly(_minus(D, d))
+            Y._n = be._pm(a, D)
+        else:
+            out = np.empty((r, r), dtype=object)
+            for (i, j), y in ys.items():
+                out[i, j] = out[j, i] = ring.to_se(y)
+            Y._a = out
+            Y._n = ObjMat(out)
         return Y
 
     def _metric_closed_form_flow(self, HX: Mat, HP: Mat) -> Flow | None:
