@@ -101,6 +101,14 @@ def _refused(tracker: "CoordinateTracker | None", what: str) -> NeedsCoordinates
 
 
 _SCALARS = (int, Fraction)
+
+
+@lru_cache(maxsize=None)
+def _is_rational_type(t: type) -> bool:
+    """Whether values of type t are the Python constants of :data:`_SCALARS` (by type: the check
+    through the number ABCs costs more than the product it guards)."""
+    return issubclass(t, _SCALARS)
+
 UNTYPED = "?"
 
 
@@ -499,7 +507,27 @@ class Mat:
         t = self._tracker_of(o)
         return (unify(self._tags[0], o._tags[0], what, t), unify(self._tags[1], o._tags[1], what, t))
 
+    def _native_sum_tags(self, o: "Mat", what: str):
+        """Both native storages over one field, their backend and the spaces of their sum (the
+        checks of :meth:`_sum_tags`), or None when one operand has no native form."""
+        a, b = self._n, o._n
+        if a is None or b is None or o._field is not self._field:
+            return None
+        be = backend(self._field)
+        if be.shape(a) != be.shape(b):
+            raise self._sizes_disagree(f"{what}: shape mismatch {be.shape(a)} vs {be.shape(b)}")
+        (s0, s1), (o0, o1) = self._tags, o._tags
+        if s0 != o0 or s1 != o1:
+            t = self._tracker_of(o)
+            s0, s1 = unify(s0, o0, what, t), unify(s1, o1, what, t)
+        return be, a, b, (s0, s1)
+
     def __add__(self, o):
+        if type(o) is Mat:
+            fast = self._native_sum_tags(o, "a sum")
+            if fast is not None:
+                be, a, b, tags = fast
+                return self._derived(None, be.add(a, b), tags, o)
         if not isinstance(o, Mat):
             return NotImplemented
         tags = self._sum_tags(o, "a sum")
@@ -510,6 +538,11 @@ class Mat:
         return self._new(self._norm(self._view() + o._view()), tags, o)
 
     def __sub__(self, o):
+        if type(o) is Mat:
+            fast = self._native_sum_tags(o, "a difference")
+            if fast is not None:
+                be, a, b, tags = fast
+                return self._derived(None, be.sub(a, b), tags, o)
         if not isinstance(o, Mat):
             return NotImplemented
         tags = self._sum_tags(o, "a difference")
@@ -525,6 +558,17 @@ class Mat:
         return self._new(-self._view())
 
     def __matmul__(self, o):
+        if type(o) is Mat and self._n is not None and o._n is not None and o._field is self._field:
+            # both native over one field: the checks below, each done once
+            be = backend(self._field)
+            a, b = self._n, o._n
+            (m, k1), (k2, k) = be.shape(a), be.shape(b)
+            if k1 != k2:
+                raise self._sizes_disagree(f"cannot multiply {(m, k1)} by {(k2, k)}")
+            t1, t2 = self._tags[1], o._tags[0]
+            if t1 != t2:
+                unify(t1, t2, "a product", self._tracker_of(o))
+            return self._derived(None, be.matmul(a, b), (self._tags[0], o._tags[1]), o)
         if not isinstance(o, Mat):
             return NotImplemented
         (m, k1), (k2, k) = self._shape(), o._shape()
@@ -544,12 +588,13 @@ class Mat:
     def _scalar(self, c):
         if type(c) is Scalar:
             c = c._x
-        if isinstance(c, Mat):
-            return NotImplemented
-        if isinstance(c, float):
-            raise TypeError("use integers or fractions, not floats, as constants in claims")
-        if isinstance(c, _SCALARS):
+        t = type(c)
+        if _is_rational_type(t):
             c = self._field.const(c)
+        elif issubclass(t, Mat):
+            return NotImplemented
+        elif issubclass(t, float):
+            raise TypeError("use integers or fractions, not floats, as constants in claims")
         be = backend(self._field)
         if be is not None and be.accepts(c):
             return self._new_n(be.smul(self._nat(), c))

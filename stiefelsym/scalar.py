@@ -25,6 +25,9 @@ from typing import Any
 ENGINE_PREFIX = "stiefelsym."
 
 
+#: the matrix class, imported on first use (the matrix module imports this one)
+_MAT: list = []
+
 #: how many claims are running (nested: a claim's function may be called inside another's run)
 _RUNNING = [0]
 
@@ -106,8 +109,10 @@ class Scalar:
             return o
         if t is float:
             raise TypeError("use integers or fractions, not floats, as constants in claims")
-        from .matrix import Mat
-        return None if isinstance(o, Mat) else o
+        if not _MAT:
+            from .matrix import Mat
+            _MAT.append(Mat)
+        return None if isinstance(o, _MAT[0]) else o
 
     def __add__(self, o):
         y = o._x if type(o) is Scalar else self._other(o)

@@ -230,6 +230,18 @@ class Scene(PaperObjects):
         x = self._field.normalize(a._inner(b.T) * self._field.const(Fraction(-1, 2)))
         return _number(self, x)
 
+    @property
+    def Phi(self) -> Mat:
+        """The SO(n) momentum map Phi = P X^T - X P^T; over an exact field as B - B^T with
+        B = P X^T (X P^T is (P X^T)^T exactly: one product instead of two)."""
+        if not self._field.exact:
+            return PaperObjects.Phi.fget(self)
+
+        def build():
+            B = self.P @ self.X.T
+            return B - B.T
+        return self._cached("Phi", build)
+
     # the problem is fixed once the scene exists: read-only; what tells the methods (or the
     # sampled point) apart is the engine's, and claim code that asks is refused (and recorded)
     n = property(lambda self: self._n, doc="the size n")
@@ -1245,6 +1257,25 @@ class TangentScene(_LiftedScene):
 
     def _lift_primitive(self, M: Any, key: str | None) -> Any:
         return self._lift(M, self.flow.get(key) if key is not None else None)
+
+    @property
+    def Phi(self) -> Mat:
+        """Phi over the dual numbers of an exact field: the base scene's Phi (not recomputed) with
+        the derivative B' - B'^T, B' = P' X^T + P X'^T (P', X' the flow's; a missing one is 0)."""
+        b = self.base
+        dX, dP = self.flow.get("X"), self.flow.get("P")
+        if not self._field.exact or any(v is not None and v._field is not b._field for v in (dX, dP)):
+            return PaperObjects.Phi.fget(self)
+
+        def build():
+            X, P = b.X, b.P
+            parts = ([dP @ X.T] if dP is not None else []) + ([P @ dX.T] if dX is not None else [])
+            dot = None
+            if parts:
+                Bd = parts[0] if len(parts) == 1 else parts[0] + parts[1]
+                dot = Bd - Bd.T
+            return b.Phi._dual(dot, self._field, self.tracker)
+        return self._cached("Phi", build)
 
     def _lift(self, M: Any, dot: Mat | None = None) -> Any:
         if isinstance(M, Mat):

@@ -44,9 +44,14 @@ def engine_scene(s: Any) -> Any:
     return object.__getattribute__(s, "_s") if type(s) is ClaimScene else s
 
 
+_SCENE_CLASS: list = []
+
+
 def _is_scene(x: Any) -> bool:
-    from .scene import PaperObjects
-    return isinstance(x, PaperObjects)
+    if not _SCENE_CLASS:
+        from .scene import PaperObjects
+        _SCENE_CLASS.append(PaperObjects)
+    return isinstance(x, _SCENE_CLASS[0])
 
 
 def view(s: Any) -> Any:

@@ -1,0 +1,123 @@
+"""The per-run shortcuts of the exact method: Phi from one product, its derivative from the base
+scene's, the matrix operations' native fast paths and the deadline's handler swap compute the
+same values and keep every check and refusal of the general paths."""
+import random
+import signal
+from fractions import Fraction
+
+import pytest
+
+from stiefelsym import native
+from stiefelsym.claims import ClaimTimeout, Size, deadline
+from stiefelsym.fields import ModularField, RationalField, SymbolicField
+from stiefelsym.matrix import Mat, comm
+from stiefelsym.runner import run_one
+from stiefelsym.scene import Scene
+
+SIZES = [(2, 1), (3, 1), (3, 2), (4, 2), (3, 3)]
+
+
+def _printed_phi(s):
+    return s.P @ s.X.T - s.X @ s.P.T
+
+
+def _fields():
+    return [lambda: SymbolicField(), lambda: RationalField(), lambda: ModularField()]
+
+
+@pytest.mark.parametrize("n,r", SIZES)
+@pytest.mark.parametrize("chart", ["equivariant", "cayley"])
+def test_phi_is_the_printed_momentum_map(n, r, chart):
+    for make in _fields():
+        f = make()
+        if chart == "cayley" and n > 3 and isinstance(f, SymbolicField):
+            continue                            # the symbolic Cayley chart stops at n = 3
+        s = Scene(n, r, f, chart=chart, rng=random.Random(n + 7 * r))
+        assert (s.Phi - _printed_phi(s)).is_zero()
+        assert (s.Phi + s.Phi.T).is_zero()
+        # a corrupted momentum map is told apart
+        assert not (s.Phi - (s.P @ s.X.T + s.X @ s.P.T)).is_zero() or (s.X @ s.P.T).is_zero()
+
+
+def _flow(s):
+    k = 1 + 2 * s.kappa
+    X, P, A = s.X, s.P, s.A
+    return {"X": P - k * (X @ P.T @ X),
+            "P": -(A @ X) - X @ P.T @ P + k * (P @ X.T @ P) + X @ X.T @ A @ X}
+
+
+@pytest.mark.parametrize("n,r", SIZES)
+@pytest.mark.parametrize("keys", [("X", "P"), ("X",), ("P",)])
+def test_derivative_of_phi_is_the_dual_computation(n, r, keys):
+    for make in _fields():
+        s = Scene(n, r, make(), chart="equivariant", rng=random.Random(3 * n + r))
+        printed = {k: v for k, v in _flow(s).items() if k in keys}
+        generic = {"X": s.generic("U", "n", "r"), "P": s.generic("V", "n", "r")}
+        for flow in (printed, {k: generic[k] for k in keys}):
+            fast = s.d(lambda t: t.Phi, flow)
+            assert (fast - s.d(_printed_phi, flow)).is_zero()
+        # a wrong derivative (that of the symmetric P X^T + X P^T) is told apart at a generic tangent
+        wrong = s.d(lambda t: t.P @ t.X.T + t.X @ t.P.T, flow)
+        assert not (fast - wrong).is_zero()
+
+
+def test_phi_on_the_generic_path_agrees(monkeypatch):
+    s1 = Scene(3, 2, ModularField(), chart="equivariant", rng=random.Random(5))
+    d1 = s1.d(lambda t: t.Phi, _flow(s1))
+    monkeypatch.setattr(native, "ENABLED", False)
+    s2 = Scene(3, 2, ModularField(), chart="equivariant", rng=random.Random(5))
+    d2 = s2.d(lambda t: t.Phi, _flow(s2))
+    assert d1._view().tolist() == d2._view().tolist()
+
+
+def test_native_fast_paths_keep_their_checks():
+    s = Scene(3, 1, SymbolicField(), chart="equivariant")
+    X, P, A = s.X, s.P, s.A
+    assert (P @ X.T - (X @ P.T).T).is_zero()
+    with pytest.raises(ValueError):
+        X @ X                                   # 3x1 by 3x1
+    with pytest.raises(ValueError):
+        A + X
+    s3 = Scene(3, 3, SymbolicField(), chart="equivariant")
+    with pytest.raises(TypeError):
+        s3.X + s3.A                             # 3x3 both, R^r is not R^n
+    with pytest.raises(TypeError):
+        s3.X - s3.A
+    with pytest.raises(TypeError):
+        s3.X @ s3.A
+    with pytest.raises(TypeError):
+        2.0 * A
+    assert (True * A - A).is_zero()
+    assert (Fraction(1, 2) * A + Fraction(1, 2) * A - A).is_zero()
+    assert A.__mul__(A) is NotImplemented
+    assert comm(A, A).is_zero()
+
+
+def test_deadline_restores_the_handler_and_fires():
+    before = signal.getsignal(signal.SIGALRM)
+    with deadline(100.0, "x"):
+        pass
+    assert signal.getsignal(signal.SIGALRM) == before
+    with pytest.raises(ClaimTimeout):
+        with deadline(0.05, "a loop"):
+            while True:
+                pass
+    assert signal.getsignal(signal.SIGALRM) == before
+
+
+def test_la1_verdicts_and_a_corrupted_la1(catalog):
+    """The exact method proves LA1 at small sizes and rejects it with the commutator's sign flipped."""
+    from stiefelsym.claims import Claim, admissible
+
+    def la1(s, sign=1):
+        L = lambda t: t.lam * t.Phi + t.X @ t.X.T - t.lam * t.lam * t.A  # noqa: E731
+        M = s.Phi - s.lam * s.A
+        return {"LA1": s.d(L, _flow(s)) - sign * comm(M, L(s))}
+
+    good = Claim(id="LA1-overhead", paper=("LA1",), kind="lax", section="5", func=la1,
+                 sizes=admissible(3), title="LA1")
+    bad = Claim(id="LA1-overhead-bad", paper=("LA1",), kind="lax", section="5",
+                func=lambda s: la1(s, -1), sizes=admissible(3), title="LA1 corrupted")
+    for n, r in [(2, 1), (3, 1), (3, 2)]:
+        assert run_one(good, Size(n, r), "exact", seed=0).verdict == "proved"
+        assert run_one(bad, Size(n, r), "exact", seed=0).verdict == "fails"
