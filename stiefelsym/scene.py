@@ -955,8 +955,10 @@ class Scene(PaperObjects):
                 Y._a[i, j] = Y._a[j, i] = f.normalize(c[i, j] / d)
         return Y
 
-    #: at most this many new denominator factors m_i + m_j: Y over one common denominator
-    _LYAPUNOV_COMMON = 6
+    #: Y over one common denominator while its numerators stay below about this many terms (the
+    #: terms of the entries times the monomials of a product of the other new factors m_i + m_j):
+    #: faster than the entrywise representation there; beyond, flint runs out of memory
+    _LYAPUNOV_COMMON = 10 ** 7
 
     def _lyapunov_native(self, m: list[Any], C: Mat) -> Mat | None:
         """:meth:`_lyapunov_diagonal` where C is held by the exact field's flint backend as numerators
@@ -970,6 +972,7 @@ class Scene(PaperObjects):
         ring = getattr(be, "ring", None)
         if ring is None or not isinstance(self._field, SymbolicField):
             return NotImplemented
+        from math import comb
         from .polyfield import NODEN, NotRational, ObjMat, PolyMat, _merge_add, _merge_max, _minus
         s = C._nat()
         if type(s) is not PolyMat:
@@ -1004,8 +1007,10 @@ class Scene(PaperObjects):
             if y[1] and y[1] != D:
                 D = _merge_max(D, y[1])
         Y = self.zeros(r, r, C.tags)
-        if len(_minus(D, s.den)) <= self._LYAPUNOV_COMMON:
-            # few new factors: one common denominator (the backend's own representation)
+        k = len(_minus(D, s.den))
+        if sum(len(y[0]) for y in ys.values()) * comb(max(k - 1, 0) + r - 1, r - 1) <= self._LYAPUNOV_COMMON:
+            # few new factors: one common denominator (the backend's own representation); the
+            # bound: every numerator times a product of k - 1 linear forms in the r values m_i
             a = np.empty((r, r), dtype=object)
             for (i, j), (num, d) in ys.items():
                 a[i, j] = a[j, i] = num if d == D else num * ring.den_poly(_minus(D, d))
