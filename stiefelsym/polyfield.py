@@ -852,11 +852,17 @@ class PolyBackend(Backend):
             return b
         if b.z:
             return a
+        memo, key = self.__dict__.get("_memo"), ("+", id(a), id(b))
+        hit = memo.get(key) if memo is not None else None
+        if hit is not None and hit[0] is a and hit[1] is b:
+            return hit[2]
         a, b = self._fix(a), self._fix(b)
         if a.den == b.den:
-            return self._pm(a.a + b.a, a.den)
-        D = _merge_max(a.den, b.den)
-        return self._pm(self._to(a, D) + self._to(b, D), D)
+            out = self._pm(a.a + b.a, a.den)
+        else:
+            D = _merge_max(a.den, b.den)
+            out = self._pm(self._to(a, D) + self._to(b, D), D)
+        return self._remember(key, (a, b, out))
 
     def sub(self, a, b):
         if type(a) is ObjMat or type(b) is ObjMat:
@@ -865,11 +871,17 @@ class PolyBackend(Backend):
             return a
         if a.z:
             return self.neg(b)
+        memo, key = self.__dict__.get("_memo"), ("-", id(a), id(b))
+        hit = memo.get(key) if memo is not None else None
+        if hit is not None and hit[0] is a and hit[1] is b:
+            return hit[2]
         a, b = self._fix(a), self._fix(b)
         if a.den == b.den:
-            return self._pm(a.a - b.a, a.den)
-        D = _merge_max(a.den, b.den)
-        return self._pm(self._to(a, D) - self._to(b, D), D)
+            out = self._pm(a.a - b.a, a.den)
+        else:
+            D = _merge_max(a.den, b.den)
+            out = self._pm(self._to(a, D) - self._to(b, D), D)
+        return self._remember(key, (a, b, out))
 
     def neg(self, a):
         if type(a) is ObjMat:
@@ -888,8 +900,13 @@ class PolyBackend(Backend):
         (m, k), n = a.a.shape, b.a.shape[1]
         if a.z or b.z or k == 0 or m == 0 or n == 0:
             return self.zeros(m, n)
+        memo, key = self.__dict__.get("_memo"), ("@", id(a), id(b))
+        hit = memo.get(key) if memo is not None else None
+        if hit is not None and hit[0] is a and hit[1] is b:
+            return hit[2]
         a, b = self._fix(a), self._fix(b)
-        return self._reduce(_dot(a.a, b.a, self.ring.zero), _merge_add(a.den, b.den))
+        out = self._reduce(_dot(a.a, b.a, self.ring.zero), _merge_add(a.den, b.den))
+        return self._remember(key, (a, b, out))
 
     def smul(self, a, c):
         if type(a) is PolyMat and a.z:
@@ -900,11 +917,19 @@ class PolyBackend(Backend):
             except NotRational:
                 pass
             else:
+                memo, key = self.__dict__.get("_memo"), ("*", id(a), c)
+                try:
+                    hit = memo.get(key) if memo is not None else None
+                except TypeError:           # an unhashable constant: not remembered
+                    memo, key, hit = None, None, None
+                if hit is not None and hit[0] is a:
+                    return hit[2]
                 a = self._fix(a)
                 if n.is_zero():
                     return self.zeros(*a.a.shape)
                 out = self._scale(a.a, n)
-                return self._reduce(out, _merge_add(a.den, d)) if d else self._pm(out, a.den)
+                out = self._reduce(out, _merge_add(a.den, d)) if d else self._pm(out, a.den)
+                return out if key is None else self._remember(key, (a, None, out))
         A = self._obj(a)
         out = np.empty(A.shape, dtype=object)
         for idx, x in np.ndenumerate(A):
@@ -916,8 +941,28 @@ class PolyBackend(Backend):
             return ObjMat(a.a.T.copy())
         if a.z:
             return self.zeros(a.a.shape[1], a.a.shape[0])
+        memo, key = self.__dict__.get("_memo"), ("T", id(a))
+        hit = memo.get(key) if memo is not None else None
+        if hit is not None and hit[0] is a:
+            return hit[2]                      # the same transpose: its products meet the memo too
         a = self._fix(a)
-        return self._pm(a.a.T, a.den)          # a view: storage is never written in place
+        out = self._pm(a.a.T, a.den)          # a view: storage is never written in place
+        return self._remember(key, (a, None, out))
+
+    def _remember(self, key, entry):
+        """An operation's result, kept for the same operands met again within this field (a
+        PolyMat's storage is never written in place; the operands are kept alive with it, so
+        their ids are not reused); at most 128 results, of small matrices only, are kept."""
+        out = entry[2]
+        if out.a.size <= 64:
+            memo = self.__dict__.get("_memo")
+            if memo is None or len(memo) >= 128:
+                memo = self.__dict__["_memo"] = {}
+            try:
+                memo[key] = entry
+            except TypeError:                  # an unhashable constant of smul: not remembered
+                pass
+        return out
 
     def _scalar(self, n, d):
         R = self.ring

@@ -1,16 +1,18 @@
 """The per-run shortcuts of the exact method: Phi from one product, its derivative from the base
-scene's, the matrix operations' native fast paths and the deadline's handler swap compute the
-same values and keep every check and refusal of the general paths."""
+scene's, the matrix operations' native fast paths, the exact backend's memo of operations on the
+same operands and the deadline's handler swap compute the same values and keep every check and
+refusal of the general paths."""
 import random
 import signal
 from fractions import Fraction
 
+import numpy as np
 import pytest
 
 from stiefelsym import native
 from stiefelsym.claims import ClaimTimeout, Size, deadline
 from stiefelsym.fields import ModularField, RationalField, SymbolicField
-from stiefelsym.matrix import Mat, comm
+from stiefelsym.matrix import comm
 from stiefelsym.runner import run_one
 from stiefelsym.scene import Scene
 
@@ -121,3 +123,30 @@ def test_la1_verdicts_and_a_corrupted_la1(catalog):
     for n, r in [(2, 1), (3, 1), (3, 2)]:
         assert run_one(good, Size(n, r), "exact", seed=0).verdict == "proved"
         assert run_one(bad, Size(n, r), "exact", seed=0).verdict == "fails"
+
+
+def test_exact_backend_remembers_operations_on_the_same_operands_only():
+    f = SymbolicField()
+    s = Scene(3, 2, f, chart="equivariant")
+    be = native.backend(f)
+    A, P = s.A._nat(), s.P._nat()
+    AP = be.matmul(A, P)
+    assert be.matmul(A, P) is AP                       # the same operands: the stored product
+    PT = be.T(P)
+    assert be.T(P) is PT
+    A2 = native.backend(SymbolicField())                # another field: nothing shared
+    assert "_memo" not in A2.__dict__
+    # remembered results are the values: compare with the symbolic products entry by entry
+    fresh = np.dot(s.A._view(), s.P._view())
+    got = be.to_obj(AP)
+    assert all(f.is_zero(x - y) for x, y in zip(got.flat, fresh.flat))
+    lam = s._param("lambda")
+    assert be.smul(A, lam) is be.smul(A, lam)
+    assert be.add(A, A) is be.add(A, A) and be.sub(AP, AP) is be.sub(AP, AP)
+    # a different operand with equal entries is computed, not looked up by value
+    A_again = be.from_obj(s.A._view())
+    assert A_again is not A and be.matmul(A_again, P) is not AP
+    # bounded
+    for _ in range(300):
+        be.matmul(be.from_obj(s.A._view()), P)
+    assert len(be.__dict__["_memo"]) <= 128
