@@ -192,12 +192,19 @@ class ClaimScene:
         object.__setattr__(self, "_s", engine_scene(s))
         object.__setattr__(self, "_m", {})      # the scene's methods as claim code calls them
 
-    def __getattr__(self, name: str) -> Any:
+    def __getattribute__(self, name: str) -> Any:
+        # every attribute comes here (no failed ordinary lookup first, which costs an exception per
+        # access); this class's own attributes are private names, found as before, and no public
+        # name is an attribute of this class, so that every public name goes the way it did
+        if name[:1] == "_":
+            try:
+                return object.__getattribute__(self, name)
+            except AttributeError:
+                pass
+            return getattr(object.__getattribute__(self, "_s"), name)   # outside the API (README)
         s = object.__getattribute__(self, "_s")
         if not claim_code():
             return getattr(s, name)                  # engine code (helpers a claim called) sees it all
-        if name.startswith("_"):
-            return getattr(s, name)                  # outside the API (README: what is not covered)
         rec = s._tracker
         if name not in API:
             if hasattr(s, name):

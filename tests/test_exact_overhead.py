@@ -150,3 +150,16 @@ def test_exact_backend_remembers_operations_on_the_same_operands_only():
     for _ in range(300):
         be.matmul(be.from_obj(s.A._view()), P)
     assert len(be.__dict__["_memo"]) <= 128
+
+
+def test_the_claims_view_of_a_scene_looks_the_same():
+    from stiefelsym.view import ClaimScene, view
+    s = Scene(3, 1, SymbolicField(), chart="equivariant")
+    v = view(s)
+    assert type(v) is ClaimScene and v.__class__ is ClaimScene and not isinstance(v, Scene)
+    assert v._tracker is s._tracker                     # private names: the engine scene's (README)
+    assert v.X is s.X and repr(v) == "<a scene>"
+    with pytest.raises(AttributeError):
+        v.no_such_thing = 1
+    with pytest.raises(AttributeError):
+        v._no_such_private_thing
