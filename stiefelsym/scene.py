@@ -546,8 +546,22 @@ class Scene(PaperObjects):
         self.tracker.touch("eigenvalues a_i of A")
         if self._chart == "equivariant":
             raise CoordinateAccess("eigenvalues a_i")
-        xs = self._cached("a", lambda: [self._param(f"a_{i + 1}") for i in range(self.n)])
+        xs = self._cached("a", self._eigenvalues)
         return _opaque(self, xs)
+
+    def _eigenvalues(self) -> list[Any]:
+        """a_1..a_n, drawn at once (one generator draw) from PARAM_BLOCK_MIN on, as parameter
+        matrices are; one at a time otherwise (and for hard cases, which rewrite them by name)."""
+        n, f = self.n, self._field
+        if (n >= PARAM_BLOCK_MIN and self._rng is not None and self._options.get("hard") is None
+                and "a_1" not in self._params):
+            vals = f.param_values(self._rng, n)
+            if vals is not None:
+                xs = [f.param_from_raw(v) for v in vals.tolist()]
+                for i, x in enumerate(xs):
+                    self._params[f"a_{i + 1}"] = x
+                return xs
+        return [self._param(f"a_{i + 1}") for i in range(n)]
 
     @property
     def A(self) -> Mat:
@@ -557,7 +571,7 @@ class Scene(PaperObjects):
                 if self._realization == "metric":
                     return self.Ainv.inv()
                 return self._sym_params("A", self.n, "n")
-            xs = self._cached("a", lambda: [self._param(f"a_{i + 1}") for i in range(self.n)])
+            xs = self._cached("a", self._eigenvalues)
             be = backend(self._field)
             if be is not None:
                 return Mat._wrap_native(be.diag(xs), self._field, ("n", "n"), self.tracker)
@@ -1262,6 +1276,18 @@ class TangentScene(_LiftedScene):
 
     def _lift_primitive(self, M: Any, key: str | None) -> Any:
         return self._lift(M, self.flow.get(key) if key is not None else None)
+
+    @property
+    def lam(self) -> Scalar:
+        """The spectral parameter lambda, lifted once per tangent scene (a constant: derivative 0)."""
+        x = self._cached("param:lambda", lambda: self._param("lambda"))
+        return _number(self, x)
+
+    @property
+    def kappa(self) -> Scalar:
+        """The parameter kappa, lifted once per tangent scene (a constant: derivative 0)."""
+        x = self._cached("param:kappa", lambda: self._param("kappa"))
+        return _number(self, x)
 
     @property
     def Phi(self) -> Mat:

@@ -163,3 +163,12 @@ def test_the_claims_view_of_a_scene_looks_the_same():
         v.no_such_thing = 1
     with pytest.raises(AttributeError):
         v._no_such_private_thing
+
+
+def test_tangent_scene_parameters_are_constants_lifted_once():
+    s = Scene(3, 1, SymbolicField(), chart="equivariant")
+    flow = _flow(s)
+    dl = s.d(lambda t: t.lam * t.kappa * t.X, flow)
+    assert (dl - s.lam * s.kappa * flow["X"]).is_zero()
+    # a derivative that forgets the product rule is told apart
+    assert not (dl - s.lam * s.kappa * s.X).is_zero()
