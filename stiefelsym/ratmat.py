@@ -20,8 +20,6 @@ from __future__ import annotations
 
 import numpy as np
 
-from . import polyfield as pf
-
 
 class RatMat:
     """Numerators (numpy object array of flint polynomials) and, entry by entry, denominators
@@ -32,6 +30,9 @@ class RatMat:
 
     def __init__(self, a: np.ndarray, d: np.ndarray, ctx) -> None:
         self.a, self.d, self.ctx, self.o = a, d, ctx, None
+
+
+from . import polyfield as pf  # noqa: E402  (after RatMat: polyfield imports it from here)
 
 
 def _dens(shape, den) -> np.ndarray:
@@ -84,9 +85,33 @@ def make(be, a: np.ndarray, d: np.ndarray):
     return be._pm(a, den)
 
 
+def _reduce_by(R, n, D: tuple, atoms: set):
+    """n / D with the given atoms cancelled as far as they divide n (exact divisions)."""
+    if not atoms:
+        return (n, D)
+    DomainError = pf._domain_error()
+    out = []
+    for k, e in D:
+        if k in atoms:
+            f = R.atoms[k]
+            while e > 0:
+                try:
+                    n = n / f
+                except DomainError:
+                    break
+                e -= 1
+        if e:
+            out.append((k, e))
+    return (n, tuple(out))
+
+
 def _sum(R, terms):
-    """The reduced sum of rational functions (numerator, atoms): over the lcm of their
-    denominators."""
+    """The sum of rational functions (numerator, atoms) over the lcm of their denominators.
+
+    An atom whose largest exponent is reached by one term only cannot divide the sum when that
+    term is reduced (every other term is a multiple of the atom's full power there): only the
+    atoms reached by two terms or more are tried (a skipped cancellation leaves an equal fraction,
+    not yet reduced; the zero test reads the numerator, which is zero exactly when the sum is)."""
     terms = [t for t in terms if not t[0].is_zero()]
     if not terms:
         return (R.zero, pf.NODEN)
@@ -96,11 +121,19 @@ def _sum(R, terms):
     for _, d in terms:
         if d != D:
             D = pf._merge_max(D, d)
+    top: dict = {}
+    for _, d in terms:
+        dd = dict(d)
+        for k, e in D:
+            if dd.get(k, 0) == e:
+                top[k] = top.get(k, 0) + 1
     acc = None
     for n, d in terms:
         x = n if d == D else n * R.den_poly(pf._minus(D, d))
         acc = x if acc is None else acc + x
-    return R.rf_reduce((acc, D))
+    if acc.is_zero():
+        return (R.zero, pf.NODEN)
+    return _reduce_by(R, acc, D, {k for k, c in top.items() if c >= 2})
 
 
 def _entrywise(be, a, b, sign: int):
