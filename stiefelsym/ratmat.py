@@ -111,12 +111,13 @@ def _sum(R, terms):
     An atom whose largest exponent is reached by one term only cannot divide the sum when that
     term is reduced (every other term is a multiple of the atom's full power there): only the
     atoms reached by two terms or more are tried (a skipped cancellation leaves an equal fraction,
-    not yet reduced; the zero test reads the numerator, which is zero exactly when the sum is)."""
+    not yet reduced; the zero test reads the numerator, which is zero exactly when the sum is).
+    A single term is returned as it is (the callers reduce their terms)."""
     terms = [t for t in terms if not t[0].is_zero()]
     if not terms:
         return (R.zero, pf.NODEN)
     if len(terms) == 1:
-        return R.rf_reduce(terms[0])
+        return terms[0]
     D = pf.NODEN
     for _, d in terms:
         if d != D:
@@ -166,6 +167,42 @@ def T(be, a):
     return RatMat(a.a.T.copy(), a.d.T.copy(), a.ctx)
 
 
+def _cancel(R, n, atoms: tuple):
+    """n with the atoms (with exponents) that divide it divided out: (quotient, atoms left)."""
+    if not atoms or n.is_zero():
+        return n, atoms
+    DomainError = pf._domain_error()
+    left = []
+    for k, e in atoms:
+        f = R.atoms[k]
+        while e > 0:
+            try:
+                n = n / f
+            except DomainError:
+                break
+            e -= 1
+        if e:
+            left.append((k, e))
+    return n, tuple(left)
+
+
+def _product(R, x, dx: tuple, y, dy: tuple, memo: dict, kx, ky):
+    """(x / dx)(y / dy) with the atoms of dy cancelled from x and those of dx from y (reduced when
+    both factors are; divisions of the factors, smaller than the product); ``memo`` keeps each
+    factor's cancellation within one product of matrices (kx, ky: the factors' positions)."""
+    if dy:
+        hit = memo.get((kx, dy))
+        if hit is None:
+            hit = memo[kx, dy] = _cancel(R, x, dy)
+        x, dy = hit
+    if dx:
+        hit = memo.get((ky, dx))
+        if hit is None:
+            hit = memo[ky, dx] = _cancel(R, y, dx)
+        y, dx = hit
+    return (x * y, pf._merge_add(dx, dy))
+
+
 def matmul(be, a, b):
     R = be.ring
     if getattr(a, "z", False) or getattr(b, "z", False):
@@ -177,11 +214,13 @@ def matmul(be, a, b):
     Al, Ad = A.a.tolist(), A.d.tolist()
     Bl, Bd = B.a.T.tolist(), B.d.T.tolist()
     na, da = np.empty((m, n), dtype=object), np.empty((m, n), dtype=object)
+    memo: dict = {}
     for i in range(m):
         ai, adi = Al[i], Ad[i]
         for j in range(n):
             bj, bdj = Bl[j], Bd[j]
-            terms = [(x * y, pf._merge_add(dx, dy)) for x, dx, y, dy in zip(ai, adi, bj, bdj) if x and y]
+            terms = [_product(R, x, dx, y, dy, memo, ("a", i, t), ("b", t, j))
+                     for t, (x, dx, y, dy) in enumerate(zip(ai, adi, bj, bdj)) if x and y]
             na[i, j], da[i, j] = _sum(R, terms)
     return make(be, na, da)
 

@@ -115,3 +115,15 @@ def test_a_corrupted_entry_is_rejected(corrupt):
     diff = rm.sub(be, bad, good)
     assert not (be.is_zero(diff) if type(diff) is PolyMat else rm.is_zero(be, diff))
     assert not equal(F, be, bad, np.dot(objs(A_ROWS), objs(B_ROWS)))
+
+
+def test_a_product_cancels_the_factors_of_each_denominator():
+    """(a+c)/(a+b) times (a+b)/(a+c): both atoms cancel in the factors, the product is 1 over no
+    denominator (back to the common-denominator representation)."""
+    F, be = setup()
+    U = ratmat(be, [[(a + c) / (a + b), x / (a + b)]])
+    V = ratmat(be, [[(a + b) / (a + c)], [0]])
+    out = rm.matmul(be, U, V)
+    assert type(out) is PolyMat and out.den == () and equal(F, be, out, objs([[1]]))
+    W = ratmat(be, [[(a + b) / (a + c)], [y / (b + c)]])
+    assert equal(F, be, rm.matmul(be, U, W), objs([[1 + x * y / ((a + b) * (b + c))]]))
