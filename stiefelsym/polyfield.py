@@ -30,6 +30,8 @@ import numpy as np
 from ._lazy import lazy
 from .fields import DegenerateError, SymbolicBudget
 from .native import Backend
+from . import ratmat
+from .ratmat import RatMat
 
 flint = lazy("flint", globals())
 se = lazy("symengine", globals(), "se")
@@ -811,6 +813,8 @@ class PolyBackend(Backend):
         return self._obj(s).copy()
 
     def _to_obj(self, s):
+        if type(s) is RatMat:
+            return ratmat.to_obj(self, s)
         s = self._fix(s)
         R = self.ring
         out = np.empty(s.a.shape, dtype=object)
@@ -848,6 +852,8 @@ class PolyBackend(Backend):
     def add(self, a, b):
         if type(a) is ObjMat or type(b) is ObjMat:
             return self._generic(self._obj(a) + self._obj(b))
+        if type(a) is RatMat or type(b) is RatMat:
+            return ratmat.add(self, a, b)
         if a.z:
             return b
         if b.z:
@@ -867,6 +873,8 @@ class PolyBackend(Backend):
     def sub(self, a, b):
         if type(a) is ObjMat or type(b) is ObjMat:
             return self._generic(self._obj(a) - self._obj(b))
+        if type(a) is RatMat or type(b) is RatMat:
+            return ratmat.sub(self, a, b)
         if b.z:
             return a
         if a.z:
@@ -886,6 +894,8 @@ class PolyBackend(Backend):
     def neg(self, a):
         if type(a) is ObjMat:
             return ObjMat(-a.a)
+        if type(a) is RatMat:
+            return ratmat.neg(self, a)
         if a.z:
             return a
         a = self._fix(a)
@@ -897,6 +907,8 @@ class PolyBackend(Backend):
             if A.shape[1] == 0:
                 return ObjMat(self._fill(A.shape[0], B.shape[1], self.field.const(0)))
             return self._generic(np.dot(A, B))
+        if type(a) is RatMat or type(b) is RatMat:
+            return ratmat.matmul(self, a, b)
         (m, k), n = a.a.shape, b.a.shape[1]
         if a.z or b.z or k == 0 or m == 0 or n == 0:
             return self.zeros(m, n)
@@ -909,6 +921,13 @@ class PolyBackend(Backend):
         return self._remember(key, (a, b, out))
 
     def smul(self, a, c):
+        if type(a) is RatMat:
+            try:
+                n, d = self.ring.from_se(c)
+            except NotRational:
+                a = ObjMat(self._obj(a))       # the generic product below
+            else:
+                return ratmat.smul(self, a, n, d)
         if type(a) is PolyMat and a.z:
             return a
         if type(a) is not ObjMat:
@@ -939,6 +958,8 @@ class PolyBackend(Backend):
     def T(self, a):
         if type(a) is ObjMat:
             return ObjMat(a.a.T.copy())
+        if type(a) is RatMat:
+            return ratmat.T(self, a)
         if a.z:
             return self.zeros(a.a.shape[1], a.a.shape[0])
         memo, key = self.__dict__.get("_memo"), ("T", id(a))
@@ -974,6 +995,8 @@ class PolyBackend(Backend):
             for i in range(a.a.shape[0]):
                 acc = acc + a.a[i, i]
             return self.field.normalize(acc)
+        if type(a) is RatMat:
+            return ratmat.trace(self, a)
         a = self._fix(a)
         acc = self.ring.zero
         for i in range(a.a.shape[0]):
@@ -986,6 +1009,8 @@ class PolyBackend(Backend):
             for x, y in zip(self._obj(a).flat, self._obj(b).flat):
                 acc = acc + x * y
             return self.field.normalize(acc)
+        if type(a) is RatMat or type(b) is RatMat:
+            return ratmat.inner(self, a, b)
         a, b = self._fix(a), self._fix(b)
         acc = self.ring.zero
         for x, y in zip(a.a.flat, b.a.flat):
@@ -995,12 +1020,16 @@ class PolyBackend(Backend):
     def is_zero(self, a):
         if type(a) is ObjMat:
             return all(self.field.is_zero(x) for x in a.a.flat)
+        if type(a) is RatMat:
+            return ratmat.is_zero(self, a)
         return a.z or not any(a.a.flat)
 
     def block(self, grid):
         if any(type(b) is ObjMat for row in grid for b in row):
             return self._generic(np.concatenate([np.concatenate([self._obj(b) for b in row], axis=1)
                                                  for row in grid], axis=0))
+        if any(type(b) is RatMat for row in grid for b in row):
+            return ratmat.block(self, grid)
         grid = [[self._fix(b) for b in row] for row in grid]
         D = NODEN
         for row in grid:
@@ -1024,6 +1053,8 @@ class PolyBackend(Backend):
                 for j in range(m):
                     out[i, j] = sol[i][j]
             return ObjMat(out)
+        if type(a) is RatMat:
+            a = ratmat.common(self, a)          # the inverse over one denominator
         a = self._fix(a)
         R = self.ring
         m = a.a.shape[0]

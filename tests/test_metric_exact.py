@@ -1,5 +1,6 @@
 """The exact (flint) Lyapunov solve of the metric realization's equivariant chart: entry by entry
-over each entry's own denominator, one common denominator only for few new factors."""
+over each entry's own denominator (stiefelsym.ratmat, whose sums and products stay in flint), one
+common denominator only for few new factors."""
 import random
 
 import pytest
@@ -8,6 +9,7 @@ import symengine as se
 import stiefelsym.scene as scene_mod
 from stiefelsym.fields import SymbolicField
 from stiefelsym.polyfield import ObjMat, PolyMat
+from stiefelsym.ratmat import RatMat
 from stiefelsym.scene import Scene
 
 
@@ -36,13 +38,33 @@ def test_lyapunov_native_solves_and_a_corrupted_solution_is_rejected(n, r, commo
     C = C + C.T
     Y = s._lyapunov_native(m, C)
     assert Y is not None and Y is not NotImplemented
-    assert type(Y._nat()) is (PolyMat if common else ObjMat)
+    assert type(Y._nat()) is (PolyMat if common else RatMat)
     assert (Y - Y.T).is_zero()
     assert (M @ Y + Y @ M - C).is_zero()
     bad = s._lyapunov_native(m, C)
     a = bad._a
     a[0, r - 1] = a[0, r - 1] * se.Integer(2)
     assert not (M @ bad + bad @ M - C).is_zero()
+    if not common:                             # corrupted in flint: one numerator doubled
+        bad = s._lyapunov_native(m, C)
+        nat = bad._nat()
+        nat.a = nat.a.copy()
+        nat.a[0, r - 1] = nat.a[0, r - 1] * 2
+        assert type((M @ bad)._nat()) is not ObjMat
+        assert not (M @ bad + bad @ M - C).is_zero()
+
+
+@pytest.mark.parametrize("n, r", [(5, 4), (6, 5)])
+def test_entrywise_lambda_stays_in_flint(n, r, monkeypatch):
+    """The Dirac flow with the entrywise Lyapunov solutions: the products and sums on Π and Λ are
+    held by flint (no symengine entries), and the second Lyapunov solve takes the entrywise C."""
+    monkeypatch.setattr(Scene, "_LYAPUNOV_COMMON", 0)
+    s = _scene(n, r)
+    HX, HP = s.gradient(_hamiltonians()[0])
+    F = s._metric_closed_form_flow(HX, HP)
+    assert F is not None
+    for part in (F.Xdot, F.Pdot):
+        assert type(part._nat()) in (PolyMat, RatMat)
 
 
 @pytest.mark.parametrize("common", [0, 10 ** 12], ids=["entrywise", "common-denominator"])
