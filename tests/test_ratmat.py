@@ -127,3 +127,29 @@ def test_a_product_cancels_the_factors_of_each_denominator():
     assert type(out) is PolyMat and out.den == () and equal(F, be, out, objs([[1]]))
     W = ratmat(be, [[(a + b) / (a + c)], [y / (b + c)]])
     assert equal(F, be, rm.matmul(be, U, W), objs([[1 + x * y / ((a + b) * (b + c))]]))
+
+
+def test_the_backend_dispatches_entrywise_matrices():
+    """PolyBackend's operations on a RatMat: entrywise in flint, generic (symengine) beside a
+    generic operand or a constant flint cannot hold, the inverse over one denominator."""
+    from stiefelsym.polyfield import ObjMat
+    F, be = setup()
+    A, B = ratmat(be, A_ROWS), ratmat(be, B_ROWS)
+    EA, EB = objs(A_ROWS), objs(B_ROWS)
+    assert type(be.add(A, B)) is RatMat and equal(F, be, be.add(A, B), EA + EB)
+    assert equal(F, be, be.matmul(A, be.T(B)), np.dot(EA, EB.T))
+    assert equal(F, be, be.neg(be.sub(A, B)), EB - EA)
+    assert F.is_zero(F.normalize(be.trace(A) - (EA[0, 0] + EA[1, 1])))
+    assert F.is_zero(F.normalize(be.inner(A, B) - sum(p * q for p, q in zip(EA.flat, EB.flat))))
+    assert not be.is_zero(A) and be.is_zero(be.sub(A, A))
+    G = ObjMat(objs([[se.sqrt(2), 0], [0, 1]]))
+    out = be.add(A, G)
+    assert type(out) is ObjMat and equal(F, be, out, EA + objs([[se.sqrt(2), 0], [0, 1]]))
+    out = be.smul(A, se.sqrt(2))
+    assert type(out) is ObjMat and equal(F, be, out, EA * se.sqrt(2))
+    out = be.smul(A, x / (a + b))
+    assert equal(F, be, out, EA * x / (a + b))
+    inv = be.inv(B)
+    assert be.is_zero(be.sub(be.matmul(B, inv), be.identity(2)))
+    assert equal(F, be, be.block([[A, be.from_obj(EB)]]), np.block([[EA, EB]]))
+    assert all(F.is_zero(F.normalize(g - e)) for g, e in zip(be.to_obj(A).flat, EA.flat))
