@@ -108,3 +108,24 @@ def test_metric_flow_exact_and_a_corrupted_lambda_equation_fails(common, monkeyp
         res = run_one(good, Size(n, r), "exact", 0)
         assert res.verdict == "proved", (n, r, res.message)
         assert run_one(bad, Size(n, r), "exact", 0).verdict == "fails", (n, r)
+
+
+def test_metric_flow_exact_at_n_12_and_a_corrupted_lambda_equation_fails():
+    """At n = 12 (entrywise Λ in flint): metric-flow proved at r = 4 and 8; the Λ equation with
+    the factor 2 of its last term replaced by 1 fails (at r = 3: reading out the entries of a
+    nonzero residual for the witness dominates the time of a failure)."""
+    from stiefelsym import admissible
+    from stiefelsym.claims import Claim, Size, load_catalog
+    from stiefelsym.methods import run_exact
+    from stiefelsym.runner import run_one
+
+    def residual(s, c):
+        F = s.dirac_flow(lambda t: t.tr(t.P.T @ t.Ainv @ t.P) * t.q(1, 2))
+        Lam = s.X.T @ F.Pdot
+        M = s.X.T @ s.Ainv @ s.X
+        return {"Lambda equation": Lam @ M + M @ Lam + s.P.T @ s.Ainv @ s.Ainv @ s.P * s.q(c)}
+    bad = Claim(id="m-bad", paper=("A_XP",), kind="id", section="t", func=lambda s: residual(s, 1),
+                sizes=admissible(12), realization="metric")
+    for r in (4, 8):
+        assert run_exact(load_catalog().get("metric-flow"), 12, r, 0).verdict == "proved", r
+    assert run_one(bad, Size(12, 3), "exact", 0).verdict == "fails"
