@@ -222,16 +222,22 @@ class PolyRing:
             return a
         if n.is_zero():
             return (self.zero, NODEN)
+        return self.cancel(n, d)
+
+    def cancel(self, n, d: tuple, only=None) -> tuple:
+        """(n', d'): n over the atoms d (with exponents), every atom (of ``only``, if given)
+        divided out of n as often as it divides it (exact divisions)."""
         DomainError = _domain_error()
         out = []
         for k, e in d:
-            f = self.atoms[k]
-            while e > 0:
-                try:
-                    n = n / f
-                except DomainError:
-                    break
-                e -= 1
+            if only is None or k in only:
+                f = self.atoms[k]
+                while e > 0:
+                    try:
+                        n = n / f
+                    except DomainError:
+                        break
+                    e -= 1
             if e:
                 out.append((k, e))
         return (n, tuple(out))

@@ -89,20 +89,7 @@ def _reduce_by(R, n, D: tuple, atoms: set):
     """n / D with the given atoms cancelled as far as they divide n (exact divisions)."""
     if not atoms:
         return (n, D)
-    DomainError = pf._domain_error()
-    out = []
-    for k, e in D:
-        if k in atoms:
-            f = R.atoms[k]
-            while e > 0:
-                try:
-                    n = n / f
-                except DomainError:
-                    break
-                e -= 1
-        if e:
-            out.append((k, e))
-    return (n, tuple(out))
+    return R.cancel(n, D, atoms)
 
 
 def _sum(R, terms):
@@ -171,19 +158,7 @@ def _cancel(R, n, atoms: tuple):
     """n with the atoms (with exponents) that divide it divided out: (quotient, atoms left)."""
     if not atoms or n.is_zero():
         return n, atoms
-    DomainError = pf._domain_error()
-    left = []
-    for k, e in atoms:
-        f = R.atoms[k]
-        while e > 0:
-            try:
-                n = n / f
-            except DomainError:
-                break
-            e -= 1
-        if e:
-            left.append((k, e))
-    return n, tuple(left)
+    return R.cancel(n, atoms)
 
 
 def _product(R, x, dx: tuple, y, dy: tuple, memo: dict, kx, ky):
