@@ -691,7 +691,9 @@ class PolyBackend(Backend):
         self.field, self.ring = field, ring
 
     # -- helpers ---------------------------------------------------------------------
-    def _fix(self, s: PolyMat) -> PolyMat:
+    def _fix(self, s):
+        """A PolyMat or RatMat in the ring's current context (its numerators lifted once when the
+        context grew)."""
         R = self.ring
         if s.ctx is not R.ctx:
             lift = R.lift
@@ -864,10 +866,10 @@ class PolyBackend(Backend):
             return b
         if b.z:
             return a
-        memo, key = self.__dict__.get("_memo"), ("+", id(a), id(b))
-        hit = memo.get(key) if memo is not None else None
-        if hit is not None and hit[0] is a and hit[1] is b:
-            return hit[2]
+        key = ("+", id(a), id(b))
+        hit = self._recall(key, a, b)
+        if hit is not None:
+            return hit
         a, b = self._fix(a), self._fix(b)
         if a.den == b.den:
             out = self._pm(a.a + b.a, a.den)
@@ -885,10 +887,10 @@ class PolyBackend(Backend):
             return a
         if a.z:
             return self.neg(b)
-        memo, key = self.__dict__.get("_memo"), ("-", id(a), id(b))
-        hit = memo.get(key) if memo is not None else None
-        if hit is not None and hit[0] is a and hit[1] is b:
-            return hit[2]
+        key = ("-", id(a), id(b))
+        hit = self._recall(key, a, b)
+        if hit is not None:
+            return hit
         a, b = self._fix(a), self._fix(b)
         if a.den == b.den:
             out = self._pm(a.a - b.a, a.den)
@@ -918,10 +920,10 @@ class PolyBackend(Backend):
         (m, k), n = a.a.shape, b.a.shape[1]
         if a.z or b.z or k == 0 or m == 0 or n == 0:
             return self.zeros(m, n)
-        memo, key = self.__dict__.get("_memo"), ("@", id(a), id(b))
-        hit = memo.get(key) if memo is not None else None
-        if hit is not None and hit[0] is a and hit[1] is b:
-            return hit[2]
+        key = ("@", id(a), id(b))
+        hit = self._recall(key, a, b)
+        if hit is not None:
+            return hit
         a, b = self._fix(a), self._fix(b)
         out = self._reduce(_dot(a.a, b.a, self.ring.zero), _merge_add(a.den, b.den))
         return self._remember(key, (a, b, out))
@@ -942,13 +944,13 @@ class PolyBackend(Backend):
             except NotRational:
                 pass
             else:
-                memo, key = self.__dict__.get("_memo"), ("*", id(a), c)
+                key = ("*", id(a), c)
                 try:
-                    hit = memo.get(key) if memo is not None else None
+                    hit = self._recall(key, a)
                 except TypeError:           # an unhashable constant: not remembered
-                    memo, key, hit = None, None, None
-                if hit is not None and hit[0] is a:
-                    return hit[2]
+                    key, hit = None, None
+                if hit is not None:
+                    return hit
                 a = self._fix(a)
                 if n.is_zero():
                     return self.zeros(*a.a.shape)
@@ -968,13 +970,21 @@ class PolyBackend(Backend):
             return ratmat.T(self, a)
         if a.z:
             return self.zeros(a.a.shape[1], a.a.shape[0])
-        memo, key = self.__dict__.get("_memo"), ("T", id(a))
-        hit = memo.get(key) if memo is not None else None
-        if hit is not None and hit[0] is a:
-            return hit[2]                      # the same transpose: its products meet the memo too
+        key = ("T", id(a))
+        hit = self._recall(key, a)
+        if hit is not None:
+            return hit                         # the same transpose: its products meet the memo too
         a = self._fix(a)
         out = self._pm(a.a.T, a.den)          # a view: storage is never written in place
         return self._remember(key, (a, None, out))
+
+    def _recall(self, key, a, b=None):
+        """The result remembered for ``key`` if its operands are ``a`` (and ``b``) themselves."""
+        memo = self.__dict__.get("_memo")
+        hit = memo.get(key) if memo is not None else None
+        if hit is not None and hit[0] is a and (b is None or hit[1] is b):
+            return hit[2]
+        return None
 
     def _remember(self, key, entry):
         """An operation's result, kept for the same operands met again within this field (a

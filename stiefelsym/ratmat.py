@@ -43,14 +43,7 @@ def _dens(shape, den) -> np.ndarray:
 
 def fix(be, s: RatMat) -> RatMat:
     """s in the ring's current context (lifted once when the context grew)."""
-    R = be.ring
-    if s.ctx is not R.ctx:
-        lift = R.lift
-        out = np.empty(s.a.shape, dtype=object)
-        for idx, x in np.ndenumerate(s.a):
-            out[idx] = lift(x)
-        s.a, s.ctx = out, R.ctx
-    return s
+    return be._fix(s)
 
 
 def of(be, s) -> RatMat:
