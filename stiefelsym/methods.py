@@ -26,7 +26,7 @@ import numpy as np
 
 from ._lazy import lazy
 from .claims import Claim, Count, Rank, deadline, run_claim
-from .fields import (PRIME_LOW, PRIMES_IN_RANGE_LOWER, ConstantDegenerate, DegenerateError, Deg, DegreeField,
+from .fields import (PRIME_LOW, PRIMES_IN_RANGE_LOWER, ConstantDegenerate, DegenerateError, DegreeField,
                      ErrNum, Field, FloatField, ModularField, RationalField, SymbolicBudget,
                      SymbolicField, random_prime)
 from .matrix import Mat, is_scene_number
@@ -731,51 +731,40 @@ def _degree_bound(claim: Claim, n: int, r: int, func: Callable | None = None) ->
     # markers ignore the draws): O(1) per parameter matrix instead of one marker per entry
     scene = Scene(n, r, field, chart="cayley", realization=claim.realization, rng=random.Random(0))
     checks = call_claim(func or claim.func, scene)
-    num, height = 0, 0.0
-    for name, value in checks.items():
-        if isinstance(value, Count):
-            continue
-        if isinstance(value, Rank):
-            d, h = _rank_minor_bound(value, field)
-            num, height = max(num, d), max(height, h)
-            continue
-        if isinstance(value, Mat) and type(value._n) is DegMat and all(value._shape()):
-            entries = [(name, value._n.d)]     # one marker bounds every entry
-        else:
-            entries = _entries(value, name)
-        for _pos, x in entries:
-            if isinstance(x, Deg) and not x.zero:
-                num, height = max(num, x.num), max(height, x.h)
-            elif not isinstance(x, Deg) and x != 0:
-                height = max(height, field.const(x).h)
-    den = sum(field.factor_degree.values())
-    return DegreeBound(num, den, height, field.constant_bits)
+    one = lambda v: v._n.d if isinstance(v, Mat) and type(v._n) is DegMat and all(v._shape()) else None
+    return _read_bound(checks, field, field._lift, one)
 
 
 def _paired_bound(checks: dict[str, Any], field: PairField) -> DegreeBound:
     """The degree and height bounds of what one sampled evaluation computed: the markers its
-    numbers carried (see :mod:`.paired`), read as :func:`_degree_bound` reads a structural pass."""
-    deg = field.degrees
+    numbers carried (see :mod:`.paired`), read as a structural pass is read."""
+    return _read_bound(checks, field.degrees, field.marker, lambda v: marker_of(v, field))
+
+
+def _read_bound(checks: dict[str, Any], deg: DegreeField, marker: Callable, matrix_marker: Callable) -> DegreeBound:
+    """Degree and height bounds of a claim's residuals and rank minors from their markers:
+    ``marker`` gives an entry's, ``matrix_marker`` the one marker bounding every entry of a matrix
+    held natively (or None: its entries are read)."""
     num, height = 0, 0.0
     for name, value in checks.items():
         if isinstance(value, Count):
             continue
         if isinstance(value, Rank):
-            d, h = _rank_minor_bound(value, deg, field.marker)
+            d, h = _rank_minor_bound(value, deg, marker)
             num, height = max(num, d), max(height, h)
             continue
-        one = marker_of(value, field)
-        markers = [one] if one is not None else [field.marker(x) for _pos, x in _entries(value, name)]
+        one = matrix_marker(value)
+        markers = [one] if one is not None else [marker(x) for _pos, x in _entries(value, name)]
         for x in markers:
             if not x.zero:
                 num, height = max(num, x.num), max(height, x.h)
     return DegreeBound(num, sum(deg.factor_degree.values()), height, deg.constant_bits)
 
 
-def _rank_minor_bound(R: Rank, field: DegreeField, marker: Callable | None = None) -> tuple[int, float]:
+def _rank_minor_bound(R: Rank, field: DegreeField, marker: Callable) -> tuple[int, float]:
     """Degree and height bounds of the (k+1)-minors of the matrix, k the printed rank: a sampled
     rank k is the generic rank unless such a minor, a nonzero polynomial, vanishes at the point."""
-    rows = [[(marker or field._lift)(x) for x in row] for row in R.matrix._a.tolist()]
+    rows = [[marker(x) for x in row] for row in R.matrix._a.tolist()]
     if not rows or not rows[0] or R.expected + 1 > min(len(rows), len(rows[0])):
         return 0, 0.0      # no (k+1)-minor: rank <= k holds everywhere
     _common, cleared = field.cleared(rows)

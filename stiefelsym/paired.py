@@ -19,7 +19,7 @@ from typing import Any
 
 import numpy as np
 
-from .fields import Deg, DegenerateError, DegreeField, Field, _is_matrix
+from .fields import Deg, DegreeField, Field, _is_matrix
 from .matrix import engine_number_type
 from .scalar import unwrap
 from .native import Backend, DegMat, DegreeBackend, _times, backend
@@ -75,19 +75,6 @@ class Pair:
     def __rtruediv__(self, o):
         return Pair(o / self.v, self.d.__rtruediv__(o))
 
-    def __pow__(self, k):
-        if type(k) is not int or k < 0:
-            return NotImplemented
-        out = None
-        base = self
-        while k:                 # square and multiply: the marker follows the same products
-            if k & 1:
-                out = base if out is None else out * base
-            k >>= 1
-            if k:
-                base = base * base
-        return out if out is not None else Pair(self.v ** 0, self.d.f.const(1))
-
     def __eq__(self, o):
         return self.v == (o.v if type(o) is Pair else o)
 
@@ -95,9 +82,6 @@ class Pair:
         return not self.__eq__(o)
 
     __hash__ = None
-
-    def __int__(self):
-        return int(self.v)
 
     def __repr__(self):
         return f"Pair({self.v!r}, {self.d!r})"
@@ -306,4 +290,4 @@ def marker_of(value: Any, field: PairField) -> Deg | None:
     return None
 
 
-__all__ = ["Pair", "PairField", "PairBackend", "marker_of", "DegenerateError"]
+__all__ = ["Pair", "PairField", "PairBackend", "marker_of"]

@@ -157,8 +157,8 @@ class Scalar:
         if type(k) is not int:
             raise TypeError("a number of the scene is raised to integer powers only")
         if k < 0:
-            return self._divided(1, self._x ** -k)
-        return Scalar(self._x ** k, self._rec)
+            return self._divided(1, _power(self._x, -k))
+        return Scalar(_power(self._x, k), self._rec)
 
     def __neg__(self):
         return Scalar(-self._x, self._rec)
@@ -204,6 +204,22 @@ for _name, _how in _READS.items():
 def raw(x: Any) -> Any:
     """The engine's number behind a claim's :class:`Scalar` (anything else unchanged)."""
     return x._x if type(x) is Scalar else x
+
+
+def _power(x: Any, k: int) -> Any:
+    """x^k (k >= 0) by squaring and multiplying: every number system multiplies, so every method
+    computes the same power the same way (a power some number type lacks would raise there only,
+    and a claim catching that could tell the methods apart)."""
+    if k == 0:
+        return x * 0 + 1
+    out = None
+    while True:
+        if k & 1:
+            out = x if out is None else out * x
+        k >>= 1
+        if not k:
+            return out
+        x = x * x
 
 
 def unwrap(v: Any) -> Any:

@@ -445,3 +445,24 @@ def _hides_from_the_division_probe():
 def test_a_claim_that_raises_at_the_probe_is_not_proved_for_all_sizes():
     res = run_one(_claim(_hides_from_the_division_probe()), None, "free", 0)
     assert res.verdict == "error", (res.verdict, res.message)
+
+
+def _power_or_zero(s):
+    """False (x^2 = x): unless a power raises, in which case the claim returns 0.  A power that one
+    number type lacks (float64 with error bounds, degree markers) used to raise there only."""
+    x = s.X[0, 0]
+    try:
+        y = x ** 2
+    except TypeError:
+        return {"x^2 - x": x - x}
+    return {"x^2 - x": y - x}
+
+
+@pytest.mark.parametrize("method", ["exact", "rational", "modular", "float"])
+def test_powers_are_the_same_on_every_method(method):
+    """Scalar powers are products (square and multiply) on every number system, so a claim cannot
+    catch a power that raises on one method only and return zero there."""
+    res = run_one(_claim(_power_or_zero), Size(3, 1), method, seed=0)
+    assert res.verdict == "fails", (method, res.verdict, res.message)
+    true = run_one(_claim(lambda s: {"r": s.X[0, 0] ** 3 * s.X[0, 0] ** -2 - s.X[0, 0]}), Size(3, 1), method, seed=0)
+    assert true.verdict in ("proved", "checked", "numeric"), (method, true.verdict, true.message)
