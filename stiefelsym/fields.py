@@ -218,6 +218,8 @@ class SymbolicField(Field):
         self._poly_ring = None
 
     def const(self, q):
+        if type(q) is int:
+            return se.Integer(q)
         q = Fraction(q)
         return se.Integer(q.numerator) / se.Integer(q.denominator)
 

@@ -47,14 +47,23 @@ class NotRational(TypeError):
     """A symbolic expression that is not a rational function with rational coefficients."""
 
 
+#: flint's exception classes, imported on first use (flint loads lazily)
+_FLINT_ERRORS: list = []
+
+
+def _flint_errors() -> list:
+    if not _FLINT_ERRORS:
+        from flint.utils.flint_exceptions import DomainError, IncompatibleContextError
+        _FLINT_ERRORS[:] = [DomainError, IncompatibleContextError]
+    return _FLINT_ERRORS
+
+
 def _domain_error():
-    from flint.utils.flint_exceptions import DomainError
-    return DomainError
+    return (_FLINT_ERRORS or _flint_errors())[0]
 
 
 def _incompatible_error():
-    from flint.utils.flint_exceptions import IncompatibleContextError
-    return IncompatibleContextError
+    return (_FLINT_ERRORS or _flint_errors())[1]
 
 
 def _merge_max(d1: tuple, d2: tuple) -> tuple:
@@ -266,11 +275,11 @@ class PolyRing:
         return r
 
     def _conv(self, x):
-        if isinstance(x, int):
-            return (self.ctx.constant(x), NODEN)
-        if isinstance(x, Fraction):
-            return (self.const(x), NODEN)
         if not isinstance(x, se.Basic):
+            if isinstance(x, int):
+                return (self.ctx.constant(x), NODEN)
+            if isinstance(x, Fraction):
+                return (self.const(x), NODEN)
             raise NotRational(f"not a symbolic expression: {type(x).__name__}")
         if x.is_Symbol:
             return (self.var(x), NODEN)
@@ -689,6 +698,8 @@ class PolyBackend(Backend):
 
     def __init__(self, field, ring: PolyRing) -> None:
         self.field, self.ring = field, ring
+        #: results of operations, keyed by the operation and its operands' identities (see _remember)
+        self._memo: dict = {}
 
     # -- helpers ---------------------------------------------------------------------
     def _fix(self, s):
@@ -712,7 +723,7 @@ class PolyBackend(Backend):
         return PolyMat(a, den, self.ring.ctx)
 
     def _scale(self, a: np.ndarray, f) -> np.ndarray:
-        return a * _scalar_array(f)
+        return _ew_scale(a, f)
 
     def _to(self, s: PolyMat, D: tuple) -> np.ndarray:
         """The numerators of s over the larger denominator D."""
@@ -813,6 +824,8 @@ class PolyBackend(Backend):
         return self._pm(out, D)
 
     def to_obj(self, s):
+        if type(s) is PolyMat and s.z:          # a zero matrix about to be filled in (scene charts)
+            return self._fill(s.a.shape[0], s.a.shape[1], self.field.const(0))
         if type(s) is ObjMat:
             out = np.empty(s.a.shape, dtype=object)
             for idx, x in np.ndenumerate(s.a):
@@ -867,12 +880,14 @@ class PolyBackend(Backend):
         if b.z:
             return a
         key = ("+", id(a), id(b))
-        hit = self._recall(key, a, b)
-        if hit is not None:
-            return hit
-        a, b = self._fix(a), self._fix(b)
+        hit = self._memo.get(key)
+        if hit is not None and hit[0] is a and hit[1] is b:
+            return hit[2]
+        ctx = self.ring.ctx
+        if a.ctx is not ctx or b.ctx is not ctx:
+            a, b = self._fix(a), self._fix(b)
         if a.den == b.den:
-            out = self._pm(a.a + b.a, a.den)
+            out = PolyMat(_ew_add(a.a, b.a), a.den, ctx)
         else:
             D = _merge_max(a.den, b.den)
             out = self._pm(self._to(a, D) + self._to(b, D), D)
@@ -888,12 +903,14 @@ class PolyBackend(Backend):
         if a.z:
             return self.neg(b)
         key = ("-", id(a), id(b))
-        hit = self._recall(key, a, b)
-        if hit is not None:
-            return hit
-        a, b = self._fix(a), self._fix(b)
+        hit = self._memo.get(key)
+        if hit is not None and hit[0] is a and hit[1] is b:
+            return hit[2]
+        ctx = self.ring.ctx
+        if a.ctx is not ctx or b.ctx is not ctx:
+            a, b = self._fix(a), self._fix(b)
         if a.den == b.den:
-            out = self._pm(a.a - b.a, a.den)
+            out = PolyMat(_ew_sub(a.a, b.a), a.den, ctx)
         else:
             D = _merge_max(a.den, b.den)
             out = self._pm(self._to(a, D) - self._to(b, D), D)
@@ -921,11 +938,17 @@ class PolyBackend(Backend):
         if a.z or b.z or k == 0 or m == 0 or n == 0:
             return self.zeros(m, n)
         key = ("@", id(a), id(b))
-        hit = self._recall(key, a, b)
-        if hit is not None:
-            return hit
-        a, b = self._fix(a), self._fix(b)
-        out = self._reduce(_dot(a.a, b.a, self.ring.zero), _merge_add(a.den, b.den))
+        hit = self._memo.get(key)
+        if hit is not None and hit[0] is a and hit[1] is b:
+            return hit[2]
+        R = self.ring
+        if a.ctx is not R.ctx or b.ctx is not R.ctx:
+            a, b = self._fix(a), self._fix(b)
+        prod = _dot(a.a, b.a, R.zero)
+        if a.den or b.den:
+            out = self._reduce(prod, _merge_add(a.den, b.den))
+        else:
+            out = PolyMat(prod, NODEN, R.ctx)
         return self._remember(key, (a, b, out))
 
     def smul(self, a, c):
@@ -980,8 +1003,7 @@ class PolyBackend(Backend):
 
     def _recall(self, key, a, b=None):
         """The result remembered for ``key`` if its operands are ``a`` (and ``b``) themselves."""
-        memo = self.__dict__.get("_memo")
-        hit = memo.get(key) if memo is not None else None
+        hit = self._memo.get(key)
         if hit is not None and hit[0] is a and (b is None or hit[1] is b):
             return hit[2]
         return None
@@ -992,9 +1014,9 @@ class PolyBackend(Backend):
         their ids are not reused); at most 128 results, of small matrices only, are kept."""
         out = entry[2]
         if out.a.size <= 64:
-            memo = self.__dict__.get("_memo")
-            if memo is None or len(memo) >= 128:
-                memo = self.__dict__["_memo"] = {}
+            memo = self._memo
+            if len(memo) >= 128:
+                memo = self._memo = {}
             try:
                 memo[key] = entry
             except TypeError:                  # an unhashable constant of smul: not remembered
@@ -1112,6 +1134,30 @@ class PolyBackend(Backend):
             for j in range(m):
                 out[i, j] = rows[i][m + j] * num
         return self._reduce(out, atoms)
+
+
+# Entrywise operations that skip zero entries: a flint operation costs about half a microsecond
+# however small its operands, and the chart's matrices are sparse (X = (E_1..E_r), Phi, derivatives
+# along a flow).  A zero operand is passed through (entries are never modified in place).
+def _ew_add(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    out = np.empty(a.size, dtype=object)
+    for i, x, y in zip(range(a.size), a.flat, b.flat):
+        out[i] = (x + y if y else x) if x else y
+    return out.reshape(a.shape)
+
+
+def _ew_sub(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    out = np.empty(a.size, dtype=object)
+    for i, x, y in zip(range(a.size), a.flat, b.flat):
+        out[i] = (x - y if y else x) if x else (-y if y else x)
+    return out.reshape(a.shape)
+
+
+def _ew_scale(a: np.ndarray, f) -> np.ndarray:
+    out = np.empty(a.size, dtype=object)
+    for i, x in zip(range(a.size), a.flat):
+        out[i] = x * f if x else x
+    return out.reshape(a.shape)
 
 
 def _dot(a: np.ndarray, b: np.ndarray, zero) -> np.ndarray:
