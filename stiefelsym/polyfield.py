@@ -254,11 +254,11 @@ class PolyRing:
     def from_se(self, x):
         """A symengine expression as a reduced rational function (memoized)."""
         try:
-            return self.memo[x]
-        except KeyError:
-            pass
+            hit = self.memo.get(x)
         except TypeError:      # an unhashable object: not an expression of this field
             raise NotRational(f"not a symbolic expression: {type(x).__name__}") from None
+        if hit is not None:
+            return hit
         Incompatible = _incompatible_error()
         while True:
             v = self.version
@@ -969,12 +969,13 @@ class PolyBackend(Backend):
             else:
                 key = ("*", id(a), c)
                 try:
-                    hit = self._recall(key, a)
+                    hit = self._memo.get(key)
                 except TypeError:           # an unhashable constant: not remembered
                     key, hit = None, None
-                if hit is not None:
-                    return hit
-                a = self._fix(a)
+                if hit is not None and hit[0] is a:
+                    return hit[2]
+                if a.ctx is not self.ring.ctx:
+                    a = self._fix(a)
                 if n.is_zero():
                     return self.zeros(*a.a.shape)
                 out = self._scale(a.a, n)
@@ -994,11 +995,12 @@ class PolyBackend(Backend):
         if a.z:
             return self.zeros(a.a.shape[1], a.a.shape[0])
         key = ("T", id(a))
-        hit = self._recall(key, a)
-        if hit is not None:
-            return hit                         # the same transpose: its products meet the memo too
-        a = self._fix(a)
-        out = self._pm(a.a.T, a.den)          # a view: storage is never written in place
+        hit = self._memo.get(key)
+        if hit is not None and hit[0] is a:
+            return hit[2]                      # the same transpose: its products meet the memo too
+        if a.ctx is not self.ring.ctx:
+            a = self._fix(a)
+        out = PolyMat(a.a.T, a.den, a.ctx)    # a view: storage is never written in place
         return self._remember(key, (a, None, out))
 
     def _recall(self, key, a, b=None):
@@ -1162,16 +1164,38 @@ def _ew_scale(a: np.ndarray, f) -> np.ndarray:
 
 def _dot(a: np.ndarray, b: np.ndarray, zero) -> np.ndarray:
     """The product of two arrays of polynomials, skipping zero entries (structural zeros are
-    common: X = (E_1..E_r), derivatives of constants, block matrices)."""
-    m, n = a.shape[0], b.shape[1]
-    bt = b.T.tolist()
+    common: X = (E_1..E_r), derivatives of constants, block matrices) and products by one in
+    outer products (X X^T, X P^T at X = (E_1..E_r))."""
+    m, k = a.shape
+    n = b.shape[1]
     out = np.empty(m * n, dtype=object)
+    if k == 1:
+        row = b[0].tolist()
+        pos = 0
+        for x in a[:, 0].tolist():
+            if not x:
+                out[pos:pos + n].fill(zero)
+            elif x.is_one():
+                for j, y in enumerate(row):
+                    out[pos + j] = y
+            else:
+                for j, y in enumerate(row):
+                    out[pos + j] = x * y if y else zero
+            pos += n
+        return out.reshape(m, n)
+    bt = b.T.tolist()
     pos = 0
     for ai in a.tolist():
+        nz = [(i, x) for i, x in enumerate(ai) if x]
+        if not nz:
+            out[pos:pos + n].fill(zero)
+            pos += n
+            continue
         for bj in bt:
             acc = None
-            for x, y in zip(ai, bj):
-                if x and y:
+            for i, x in nz:
+                y = bj[i]
+                if y:
                     acc = x * y if acc is None else acc + x * y
             out[pos] = zero if acc is None else acc
             pos += 1

@@ -395,8 +395,7 @@ class Scene(PaperObjects):
     def _stiefel_point(self, prefix: str) -> tuple[Mat, Mat]:
         n, r = self.n, self.r
         if self.chart == "equivariant":
-            D = np.zeros((n, r), dtype=np.int64)
-            D[range(r), range(r)] = 1
+            D = np.eye(n, r, dtype=np.int64)
             X = Mat._consts(D, self._field, ("n", "r"), self._tracker)
             W = self._skew_params(f"{prefix}W", r, "r")
             if n == r:
