@@ -1381,7 +1381,8 @@ def _checked_tangent(base: Scene, flow: Mapping[str, Any]) -> dict[str, Mat]:
             raise ValueError(f"the {key}-component of a tangent vector has shape {v._shape()}, "
                              f"{key} has {prim._shape()}")
         for t, p in zip(v.tags, prim.tags):
-            unify(t, p, f"the {key}-component of a tangent vector", base.tracker)
+            if t != p:
+                unify(t, p, f"the {key}-component of a tangent vector", base.tracker)
         if v._coords:
             base.tracker.touch("matrices built entrywise")
         out[key] = v
