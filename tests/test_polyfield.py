@@ -201,3 +201,39 @@ def test_verdicts_with_either_representation(func, verdict, sizes, monkeypatch):
         old = run_exact(claim, n, r, 0).verdict
         monkeypatch.setattr(SymbolicField, "native", True)
         assert got == old == verdict, (n, r, got, old)
+
+
+def test_sparse_entrywise_operations_and_products_agree_with_numpy():
+    """Sums, differences, scalar multiples and products skip zero entries, and products by one in
+    outer products: on random sparse polynomial matrices (zeros, ones, outer products, zero rows)
+    they give numpy's entrywise results exactly."""
+    import numpy as np
+    from stiefelsym import polyfield as pf
+    R = SymbolicField().poly_ring()
+    xs = [R.var(se.Symbol(f"t{i}")) for i in range(4)]
+    rng = random.Random(11)
+
+    def entry():
+        k = rng.random()
+        if k < 0.4:
+            return R.zero
+        if k < 0.55:
+            return R.one
+        return rng.choice(xs) * rng.randint(-3, 3) + rng.choice(xs) - R.one * rng.randint(0, 2)
+
+    def mat(m, k):
+        a = np.empty((m, k), dtype=object)
+        for idx in np.ndindex(m, k):
+            a[idx] = entry()
+        if m > 1 and rng.random() < 0.3:
+            a[rng.randrange(m), :].fill(R.zero)
+        return a
+
+    for _ in range(60):
+        m, k, n = rng.randint(1, 4), rng.randint(1, 3), rng.randint(1, 4)
+        a, b, c = mat(m, k), mat(m, k), mat(k, n)
+        f = rng.choice([R.zero, R.one, xs[0] - xs[1]])
+        assert (pf._ew_add(a, b) == a + b).all() and (pf._ew_sub(a, b) == a - b).all()
+        assert (pf._ew_sub(a, a) == a - a).all() and (pf._ew_scale(a, f) == a * pf._scalar_array(f)).all()
+        assert (pf._dot(a, c, R.zero) == np.dot(a, c)).all()
+        assert (pf._dot(a.T.copy()[:, :m].T.copy(), c, R.zero) == np.dot(a, c)).all()
