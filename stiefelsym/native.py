@@ -260,8 +260,16 @@ class F64:
     multiples by a scalar ({("*", value, bound, scale): (None, result)}); ``diag``, its diagonal (values, term scales) when it is diagonal by construction;
     ``sel``, (rows, signs) when every column j is signs[j] times the unit vector of rows[j]
     (signs[j] = 0: a zero column; a diagonal keeps its full arrays deferred until read, see
-    below); ``m32``, the term scales in float32 (False where they do not
-    fit, see :func:`_scale_product`); ``msym``, whether the term scales are a symmetric matrix.
+    below); ``msym``, whether the term scales are a symmetric matrix.
+
+    The term scales are kept in one of two forms.  Either m is a float64 array, or they are
+    ``m32`` (float32) with a factor ``mf`` <= 1 such that mf·m32 is at most the exact term scales
+    (the recurrences |A|_m + |B|_m, |A|_m |B|_m, |c|_m |A|_m evaluated in ℝ) entrywise, and
+    ``mtop`` >= every entry of m32; m is then made from them when read, rounded down (see
+    :func:`_s32`).  Sums, products and scalar multiples of scales in float32 move half the bytes
+    of float64 and need no conversion in between; each only lowers mf by its own rounding bound,
+    so the resolution test is never easier than with the exact scales.  ``m32`` also holds the
+    float32 copy of a float64 m once made (``False``: they do not fit in float32).
 
     An F64 may also be *deferred* (``lazy`` holds how to compute it, ``defer`` what it is: the
     inverse of a matrix whose inverse is known to exist with a bounded norm, or a product with
@@ -270,11 +278,13 @@ class F64:
     deferred inverse times B is a solve; a deferred product times a selection of columns is
     reassociated), each with a bound of its own."""
 
-    __slots__ = ("_v", "_e", "_m", "nv", "t", "prods", "diag", "sel", "m32", "msym", "lazy", "defer")
+    __slots__ = ("_v", "_e", "_m", "nv", "t", "prods", "diag", "sel", "m32", "mf", "mtop", "msrc", "msym",
+                 "lazy", "defer")
 
-    def __init__(self, v: np.ndarray, e: float, m: np.ndarray, nv: float | None = None) -> None:
+    def __init__(self, v: np.ndarray, e: float, m: np.ndarray | None, nv: float | None = None) -> None:
         self._v, self._e, self._m, self.nv = v, e, m, nv
-        self.t = self.prods = self.diag = self.sel = self.m32 = self.msym = self.lazy = self.defer = None
+        self.t = self.prods = self.diag = self.sel = self.m32 = self.mf = self.mtop = self.msym = None
+        self.msrc = self.lazy = self.defer = None
 
     @classmethod
     def deferred(cls, build: Any, defer: tuple, e: float | None = None, nv: float | None = None) -> "F64":
@@ -283,7 +293,7 @@ class F64:
         out = cls.__new__(cls)
         out._v = out._m = None
         out._e, out.nv = e, nv
-        out.t = out.prods = out.diag = out.sel = out.m32 = out.msym = None
+        out.t = out.prods = out.diag = out.sel = out.m32 = out.mf = out.mtop = out.msym = out.msrc = None
         out.lazy, out.defer = build, defer
         return out
 
@@ -291,6 +301,7 @@ class F64:
         build = self.lazy
         done = build()
         self._v, self._e, self._m = done._v, done._e, done._m
+        self.m32, self.mf, self.mtop, self.msrc = done.m32, done.mf, done.mtop, done.msrc
         if self.nv is None:
             self.nv = done.nv
         self.lazy = self.defer = None
@@ -311,7 +322,17 @@ class F64:
     def m(self) -> np.ndarray:
         if self.lazy is not None:
             self._force()
-        return self._m
+        m = self._m
+        if m is None:
+            src = self.msrc
+            if src is not None:                # the scales of another matrix (transposed): its m
+                m = src[0].m.T if src[1] else src[0].m
+            else:
+                # float64 of mf·m32, rounded down: the float32 entries are exact in float64, and
+                # the factor 1 − 2⁻⁴⁰ covers the roundings of mf·(1 − 2⁻⁴⁰) and of the product
+                m = np.multiply(self.m32, self.mf * (1.0 - 2.0**-40), dtype=np.float64)
+            self._m = m
+        return m
 
 
 def _gamma(k: int) -> float:
@@ -362,47 +383,143 @@ def _norm(a: F64) -> float:
 #: term scales up to this size go through float32 products (k·(2^56)^2 < 2^127 for k <= 2^14)
 _M32_MAX = 2.0**56
 _M32_K_MAX = 2**14
+#: term scales up to this size take float32 sums and multiples (a sum of two stays below 2^127)
+_S32_MAX = 2.0**120
+#: one float32 rounding of the result and one of an input (2^-24 each), with room for the float64
+#: rounding of the factor itself: (1 − 2^-22)(1 + 2^-24)^2 (1 + 2^-53) < 1
+_R32 = 1.0 - 2.0**-22
 
 
-def _m32(a: F64) -> Any:
-    """The term scales of a in float32 (rounded to nearest), or False when they are not all finite
-    and below 2^56; once per matrix (a transpose shares them)."""
+def _f32(v: np.ndarray, e: float, m32: np.ndarray, mf: float, top: float, nv: float | None = None) -> F64:
+    """An F64 whose term scales are mf·m32 (float32, see :class:`F64`), every entry of m32 <= top."""
+    out = F64(v, e, None, nv)
+    out.m32, out.mf, out.mtop = m32, mf, top
+    return out
+
+
+def _down32(x: np.ndarray) -> np.ndarray:
+    """x (float64, >= 0) in float32 rounded down, entry by entry, also below float32's normal range
+    (rounded to nearest, then one step towards 0)."""
+    y = x.astype(np.float32)
+    return np.nextafter(y, np.float32(0.0), out=y)
+
+
+def _s32(a: F64, limit: float = _M32_MAX) -> tuple[np.ndarray, float, float] | None:
+    """(m32, mf, top): a's term scales in float32 with mf·m32 <= the exact scales and every entry
+    of m32 <= top < limit; None when they do not fit (not all finite, or a largest entry at or
+    above the limit).  A float64 m is converted once per matrix (a transpose shares it), rounded
+    down (:func:`_down32`): m32 <= m, and m itself is at most (1 + 2⁻³⁹) above the exact scales
+    (float64 sums of at most 2¹⁴ terms), inside the factor 1 − 2⁻²²."""
+    if a.lazy is not None:
+        a._force()
     m32 = a.m32
     if m32 is None:
         t = a.t
         if t is not None and t.m32 is not None:
-            m32 = False if t.m32 is False else t.m32.T
+            if t.m32 is False:
+                m32 = False
+            else:
+                m32, a.mf, a.mtop = t.m32.T, t.mf, t.mtop
         else:
+            m = a._m
             with _quiet():
-                top = float(np.max(a.m)) if a.m.size else 0.0
-            m32 = a.m.astype(np.float32) if 0.0 <= top < _M32_MAX else False
+                top = float(np.max(m)) if m.size else 0.0
+            if 0.0 <= top < _M32_MAX:
+                m32, a.mf, a.mtop = _down32(m), _R32, top * (1.0 + 2.0**-20)
+            else:
+                m32 = False
         a.m32 = m32
-    return m32
+    if m32 is False:
+        return None
+    if not a.mtop < limit:
+        # the stored top is a bound grown by products: the largest entry itself (one pass)
+        with _quiet():
+            top = float(np.max(m32)) if m32.size else 0.0
+        if not 0.0 <= top < math.inf:
+            return None
+        a.mtop = top
+        if not top < limit:
+            return None
+    return m32, a.mf, a.mtop
+
+
+def _scales_of(a: F64, transpose: bool = False) -> tuple:
+    """a's term scales in its own form, transposed if asked: (m, m32, mf, mtop, msrc) for a new
+    F64 (msrc: its float64 m, when read, is a's, transposed if asked)."""
+    if a.lazy is not None:
+        a._force()
+    if a._m is None:
+        return None, (a.m32.T if transpose else a.m32), a.mf, a.mtop, (a, transpose)
+    m32 = a.m32
+    if transpose and m32 is not None and m32 is not False:
+        m32 = m32.T
+    return (a._m.T if transpose else a._m), m32, a.mf, a.mtop, None
+
+
+def _like(v: np.ndarray, e: float, a: F64, nv: float | None, transpose: bool = False) -> F64:
+    """A new F64 (values v, bound e) with a's term scales (transposed if asked), in a's form."""
+    return _with_scales(v, e, _scales_of(a, transpose), nv)
 
 
 def _msym(a: F64) -> bool:
-    """Whether a's term scales are a symmetric matrix (exactly), once per matrix."""
+    """Whether a's term scales are a symmetric matrix (exactly, in the form they are kept), once per
+    matrix."""
     sym = a.msym
     if sym is None:
-        m = a.m
+        if a.lazy is not None:
+            a._force()
+        m = a._m if a._m is not None else a.m32
         sym = a.msym = m.shape[0] == m.shape[1] and bool(np.array_equal(m, m.T))
     return sym
 
 
-def _scale_product(a: F64, b: F64) -> np.ndarray:
-    """The term scales |A|_m |B|_m of a product.  They are the scale the resolution test compares
-    the error bound with, not a bound on anything, and a few digits describe them: one float32
-    product (half the time of float64) rounded down by its own rounding bound, so that they never
-    exceed the float64 scales Σ_k m_ik m_kj (the inputs' rounding to float32, 2^-24 each, and the
-    product's, γ_k in float32, are within the factor 1 − 2(k + 4)·2^-24; only sums below float32's
-    normal range, 10^-38, may differ by its underflow unit), so the test is never easier to pass
-    than with the float64 scales.  Scales too large for float32, or not finite, take float64."""
-    k = a.m.shape[1]
-    a32 = _m32(a) if k <= _M32_K_MAX else False
-    b32 = _m32(b) if a32 is not False else False
-    if a32 is False or b32 is False:
-        return a.m @ b.m
-    return np.multiply(a32 @ b32, 1.0 - 2.0 * (k + 4) * 2.0**-24, dtype=np.float64)
+def _scale_product(a: F64, b: F64) -> tuple:
+    """The term scales |A|_m |B|_m of a product, as (m, m32, mf, top, msrc) for
+    :func:`_with_scales`.  They are the scale the resolution test compares the error bound with,
+    not a bound on anything, and a few digits describe them: one float32 product (half the time
+    of float64) of the scales in float32, whose factor mf is the product of the inputs' times
+    1 − 2(k + 4)·2⁻²⁴ (above the float32 dot-product bound γ_k), so that mf·m32 never exceeds
+    the exact scales Σ_k m_ik m_kj (only sums below float32's normal range, 10^-38, may differ by
+    its underflow unit): the test is never easier to pass than with the exact scales.  Scales
+    too large for float32 take one float64 product."""
+    k = a.v.shape[1]
+    sa = _s32(a) if k <= _M32_K_MAX else None
+    sb = _s32(b) if sa is not None else None
+    if sb is None:
+        return a.m @ b.m, None, None, None, None
+    (a32, fa, ta), (b32, fb, tb) = sa, sb
+    g = 2.0 * (k + 4) * 2.0**-24
+    return None, a32 @ b32, fa * fb * (1.0 - g) * (1.0 - 2.0**-50), k * ta * tb * (1.0 + g), None
+
+
+def _scales_sum(a: F64, b: F64) -> tuple:
+    """The term scales |A|_m + |B|_m of a sum or difference, as (m, m32, mf, top, msrc): in float32
+    when either operand keeps its scales there (and both fit), with mf = min(mf_a, mf_b)(1 − 2⁻²²)
+    for the sum's rounding; in float64 otherwise."""
+    if a.lazy is not None:
+        a._force()
+    if b.lazy is not None:
+        b._force()
+    if a._m is None or b._m is None:
+        sa = _s32(a, _S32_MAX)
+        sb = _s32(b, _S32_MAX) if sa is not None else None
+        if sb is not None:
+            (a32, fa, ta), (b32, fb, tb) = sa, sb
+            return None, a32 + b32, min(fa, fb) * _R32, (ta + tb) * (1.0 + 2.0**-22), None
+    return a.m + b.m, None, None, None, None
+
+
+def _with_scales(v: np.ndarray, e: float, sc: tuple, nv: float | None = None) -> F64:
+    """A new F64 with the term scales sc = (m, m32, mf, top, msrc) (see :func:`_scales_of`)."""
+    out = F64(v, e, sc[0], nv)
+    out.m32, out.mf, out.mtop, out.msrc = sc[1:]
+    return out
+
+
+def _exact_zero(a: F64) -> bool:
+    """Whether a is the zero matrix exactly (a selection of zero columns with no error)."""
+    sel = a.sel
+    return sel is not None and a.lazy is None and a._e == 0.0 and not np.any(sel[1])
 
 
 def _uf(shape) -> float:
@@ -434,6 +551,9 @@ def _tune_allocator() -> None:
     mallopt(M_TRIM_THRESHOLD, 64 << 20)
     mallopt(M_TOP_PAD, 16 << 20)
 
+
+#: X = (I − S)(I + S)⁻¹ J from the solve Y = (I + S)⁻¹ J as 2Y − J (see :meth:`Float64Backend._cayley`)
+CAYLEY_BY_SOLVE = True
 
 #: from this many rows on, an inverse known to exist (see :meth:`Float64Backend.inv`) is deferred
 DEFERRED_INVERSE_MIN = 32
@@ -569,7 +689,7 @@ class Float64Backend(Backend):
         return prods
 
     def _with_diagonal(self, a, b, sign: float) -> F64:
-        """a + sign·b where a or b is a diagonal whose full arrays are not made (see
+        """a + sign·b where a or b is diagonal by construction (its full arrays made or not, see
         :meth:`_diagonal`): the other operand's arrays with the diagonal changed, the same values
         and scales as the full sum (x ± 0 = x exactly) under the same bound."""
         k = self.shape(a)[0]
@@ -580,18 +700,29 @@ class Float64Backend(Backend):
                 v = av + bv if sign > 0 else av - bv
                 nv = _fro(v)
                 return self._diagonal(v, am + bm, _up(a.e + b.e + U64 * nv + _uf((k, k)), 3), nv)
-            if b.diag is not None and b.lazy is not None:
+            if b.diag is not None:
                 dv, dm = b.diag
-                v, m = a.v.copy(), a.m.copy()
+                full = a
+                v = a.v.copy()
                 v[i, i] = a.v[i, i] + dv if sign > 0 else a.v[i, i] - dv
-                m[i, i] = a.m[i, i] + dm
             else:
                 dv, dm = a.diag
-                v, m = (b.v.copy() if sign > 0 else -b.v), b.m.copy()
+                full = b
+                v = b.v.copy() if sign > 0 else -b.v
                 v[i, i] = dv + b.v[i, i] if sign > 0 else dv - b.v[i, i]
-                m[i, i] = dm + b.m[i, i]
             nv = _fro(v)
-            return F64(v, _up(a.e + b.e + U64 * nv + _uf(v.shape), 3), m, nv)
+            e = _up(a.e + b.e + U64 * nv + _uf(v.shape), 3)
+            dtop = float(np.max(dm)) if k else 0.0
+            sf = _s32(full, _S32_MAX) if full._m is None and 0.0 <= dtop < _S32_MAX else None
+            if sf is not None:
+                # in float32: dm rounded down, the sum rounded once on the diagonal, the rest copied
+                f32, ff, ft = sf
+                m32 = f32.copy()
+                m32[i, i] = f32[i, i] + _down32(dm)
+                return _f32(v, e, m32, min(ff, 1.0) * _R32, (ft + dtop) * (1.0 + 2.0**-22), nv)
+            m = full.m.copy()
+            m[i, i] = full.m[i, i] + dm
+            return F64(v, e, m, nv)
 
     def add(self, a, b):
         # a sum met again (the value part of a dual evaluation repeats the plain one) is the stored one
@@ -599,14 +730,21 @@ class Float64Backend(Backend):
         hit = memo.get(("+", id(b)))
         if hit is not None:
             return hit[1]
-        if (a.lazy is not None and a.defer[0] == "diag") or (b.lazy is not None and b.defer[0] == "diag"):
+        if _exact_zero(b):
+            out = a                            # x + 0 = x exactly, under x's bound
+        elif _exact_zero(a):
+            out = b if 1.0 > 0 else self.neg(b)
+        elif a.diag is not None or b.diag is not None:
             out = self._with_diagonal(a, b, 1.0)
+        else:
+            out = None
+        if out is not None:
             memo[("+", id(b))] = (b, out)
             return out
         with _quiet():
             v = a.v + b.v
             nv = _fro(v)
-            out = F64(v, _up(a.e + b.e + U64 * nv + _uf(v.shape), 3), a.m + b.m, nv)
+            out = _with_scales(v, _up(a.e + b.e + U64 * nv + _uf(v.shape), 3), _scales_sum(a, b), nv)
         memo[("+", id(b))] = (b, out)
         return out
 
@@ -615,19 +753,26 @@ class Float64Backend(Backend):
         hit = memo.get(("-", id(b)))
         if hit is not None:
             return hit[1]
-        if (a.lazy is not None and a.defer[0] == "diag") or (b.lazy is not None and b.defer[0] == "diag"):
+        if _exact_zero(b):
+            out = a                            # x - 0 = x exactly, under x's bound
+        elif _exact_zero(a):
+            out = b if -1.0 > 0 else self.neg(b)
+        elif a.diag is not None or b.diag is not None:
             out = self._with_diagonal(a, b, -1.0)
+        else:
+            out = None
+        if out is not None:
             memo[("-", id(b))] = (b, out)
             return out
         with _quiet():
             v = a.v - b.v
             nv = _fro(v)
-            out = F64(v, _up(a.e + b.e + U64 * nv + _uf(v.shape), 3), a.m + b.m, nv)
+            out = _with_scales(v, _up(a.e + b.e + U64 * nv + _uf(v.shape), 3), _scales_sum(a, b), nv)
         memo[("-", id(b))] = (b, out)
         return out
 
     def neg(self, a):
-        return F64(-a.v, a.e, a.m, a.nv)
+        return _like(-a.v, a.e, a, a.nv)
 
     def matmul(self, a, b):
         (ma, k), (_kb, nb) = self.shape(a), self.shape(b)
@@ -659,29 +804,71 @@ class Float64Backend(Backend):
         """A product with a deferred left factor computed without computing that factor: A⁻¹ b as a
         solve when b has fewer columns than A (one LU factorization and the triangular solves for
         those columns instead of the inverse and a product), (c A⁻¹) J as c (A⁻¹ J) when J selects
-        columns; None where neither applies (a is then computed when its values are read)."""
+        columns (:meth:`_cayley` when c + A = 2I); None where neither applies (a is then computed
+        when its values are read)."""
         kind, shape = a.defer[0], a.defer[1]
         if kind == "inv" and self.shape(b)[1] < shape[0]:
             _kind, _shape, src, beta0, beta = a.defer
             return self._solve(src, beta0, beta, b.v, b.e, _norm(b))
         if kind == "prod" and b.lazy is None and b.sel is not None:
             _kind, _shape, c, d = a.defer
-            return self.matmul(c, self.matmul(d, b))
+            y = self.matmul(d, b)
+            if CAYLEY_BY_SOLVE and d.lazy is not None and d.defer[0] == "inv":
+                out = self._cayley(c, d.defer[2], y, b)
+                if out is not None:
+                    return out
+            return self.matmul(c, y)
         return None
+
+    def _cayley(self, c, src, y, j):
+        """c A⁻¹ J for c + A = 2I exactly (the Cayley chart's (I − S)(I + S)⁻¹ J), given Y ≈ A⁻¹J
+        (the solve, with its bound): since c A⁻¹ = 2A⁻¹ − I, the values are 2Y − J (2Y is exact,
+        the difference rounded once per entry), without the product c Y; None when the values of
+        c and A are not so related or Y is not finite.
+
+        Bound: for the exact C, Â, Ĵ within the bounds of c, A, J, C = 2I − Â + Δ with
+        ‖Δ‖_F <= e_c + e_A, so C Â⁻¹ Ĵ = 2Y* − Ĵ + Δ Y* (Y* = Â⁻¹Ĵ, within e_Y of Y) and
+        ‖C Â⁻¹ Ĵ − (2Y − J)‖_F <= 2 e_Y + e_J + (e_c + e_A)(‖Y‖_F + e_Y) + u ‖2Y − J‖_F.  The term
+        scales are those of the product c Y, |c|_m |Y|_m, as the product would have them."""
+        if c.lazy is not None or src.lazy is not None or c.v.shape != src.v.shape:
+            return None
+        k = c.v.shape[0]
+        with _quiet():
+            h = c.v + src.v                  # 0 exactly where c_ij = −A_ij exactly
+            dc, ds = np.diagonal(c.v), np.diagonal(src.v)
+            if not (np.all(dc == 1.0) and np.all(ds == 1.0)):
+                return None
+            np.fill_diagonal(h, 0.0)
+            if np.any(h):
+                return None
+            rows, signs = j.sel
+            w = 2.0 * y.v
+            cols = np.arange(w.shape[1])
+            w[rows, cols] -= signs
+            nw = _fro(w)
+            if not math.isfinite(nw):
+                return None
+            ny = _norm(y)
+            e = 2.0 * y.e + j.e + (c.e + src.e) * (ny + y.e) + U64 * nw + _uf(w.shape)
+            return _with_scales(w, _up(e, 8), _scale_product(c, y), nw)
 
     def _product(self, a, b):
         """The product of two matrices (values read, except a diagonal's), with the dot-product bound."""
         k = self.shape(a)[1]
         with _quiet():
+            sc = None
             if a.diag is not None:
                 dv, dm = a.diag
-                v, m = dv[:, None] * b.v, dm[:, None] * b.m
+                v = dv[:, None] * b.v
+                sc = self._scaled(b, dm, 0)
             elif b.diag is not None:
                 dv, dm = b.diag
-                v, m = a.v * dv, a.m * dm
+                v = a.v * dv
+                sc = self._scaled(a, dm, 1)
             elif b.sel is not None:
                 rows, signs = b.sel
-                v, m = a.v[:, rows] * signs, a.m[:, rows] * np.abs(signs)
+                v = a.v[:, rows] * signs
+                sc = self._scaled(a, np.abs(signs), 1, rows)
             else:
                 v = a.v @ b.v
                 back = b.prods.get(id(a)) if b.prods is not None else None
@@ -689,12 +876,31 @@ class Float64Backend(Backend):
                     # |A|_m |B|_m = (|B|_m |A|_m)ᵀ for symmetric scales (the two products of a
                     # commutator): the scales of b a, whose rounding bound does not depend on the
                     # order of the sums, transposed
-                    m = back[1].m.T
+                    sc = _scales_of(back[1], transpose=True)
                 else:
-                    m = _scale_product(a, b)
+                    sc = _scale_product(a, b)
             na, nb = _norm(a), _norm(b)
             e = na * b.e + a.e * nb + a.e * b.e + _gamma(k) * na * nb + k * _uf(v.shape)
-            return F64(v, _up(e, 8), m)
+            return _with_scales(v, _up(e, 8), sc)
+
+    @staticmethod
+    def _scaled(a, d: np.ndarray, axis: int, rows: np.ndarray | None = None) -> tuple:
+        """The term scales of diag(d)·a (axis 0) or a·diag(d) (axis 1; a's columns ``rows`` first,
+        when given): in float32 when a keeps its scales there (d rounded down to float32, the
+        product rounded once, inside the factor 1 − 2⁻²²), in float64 otherwise."""
+        with _quiet():
+            dtop = float(np.max(d)) if d.size else 0.0
+        if a.lazy is None and a._m is None and 0.0 <= dtop < 2.0**60:
+            sa = _s32(a, 2.0**60)
+            if sa is not None:
+                a32, fa, ta = sa
+                d32 = _down32(d)
+                if rows is not None:
+                    a32 = a32[:, rows]
+                m32 = d32[:, None] * a32 if axis == 0 else a32 * d32
+                return None, m32, fa * _R32, ta * dtop * (1.0 + 2.0**-22), None
+        m = a.m if rows is None else a.m[:, rows]
+        return (d[:, None] * m if axis == 0 else m * d), None, None, None, None
 
     def smul(self, a, c):
         cv, ce, cm = float(c.v), float(c.e), float(c.m)
@@ -703,6 +909,10 @@ class Float64Backend(Backend):
         hit = memo.get(key)
         if hit is not None:
             return hit[1]
+        if _exact_zero(a) and math.isfinite(cv) and math.isfinite(ce) and math.isfinite(cm):
+            out = self.zeros(*a.v.shape)      # 0 times a finite scalar: 0 exactly
+            memo[key] = (None, out)
+            return out
         if a.diag is not None and math.isfinite(cv) and math.isfinite(ce) and math.isfinite(cm):
             # a diagonal times a finite scalar: the zeros stay zeros (exactly), the diagonal is
             # scaled with the bound the full matrix would get (its norm is the diagonal's)
@@ -718,14 +928,23 @@ class Float64Backend(Backend):
             v = a.v * cv
             nv = _fro(v)
             e = _norm(a) * ce + a.e * abs(cv) + a.e * ce + U64 * nv + _uf(v.shape)
-            out = F64(v, _up(e, 6), a.m * cm, nv)
+            sa = None
+            if a._m is None and 0.0 <= cm < 2.0**60:
+                sa = _s32(a, 2.0**60)
+            if sa is not None:
+                # in float32: cm rounded down to float32, the product rounded once
+                a32, fa, ta = sa
+                c32 = np.nextafter(np.float32(cm), np.float32(0.0))
+                out = _f32(v, _up(e, 6), a32 * c32, fa * _R32, ta * cm * (1.0 + 2.0**-22), nv)
+            else:
+                out = F64(v, _up(e, 6), a.m * cm, nv)
         memo[key] = (None, out)
         return out
 
     def T(self, a):
         t = a.t
         if t is None:
-            t = a.t = F64(a.v.T, a.e, a.m.T, a.nv)
+            t = a.t = _like(a.v.T, a.e, a, a.nv, transpose=True)
             t.t = a
             self._holders += (a, t)
             if a.diag is not None:
