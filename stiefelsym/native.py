@@ -812,9 +812,10 @@ class Float64Backend(Backend):
             return self._solve(src, beta0, beta, b.v, b.e, _norm(b))
         if kind == "prod" and b.lazy is None and b.sel is not None:
             _kind, _shape, c, d = a.defer
-            y = self.matmul(d, b)
-            if CAYLEY_BY_SOLVE and d.lazy is not None and d.defer[0] == "inv":
-                out = self._cayley(c, d.defer[2], y, b)
+            src = d.defer[2] if CAYLEY_BY_SOLVE and d.lazy is not None and d.defer[0] == "inv" else None
+            y = self.matmul(d, b)             # a solve, or the inverse (computed) times b
+            if src is not None:
+                out = self._cayley(c, src, y, b)
                 if out is not None:
                     return out
             return self.matmul(c, y)
@@ -822,9 +823,9 @@ class Float64Backend(Backend):
 
     def _cayley(self, c, src, y, j):
         """c A⁻¹ J for c + A = 2I exactly (the Cayley chart's (I − S)(I + S)⁻¹ J), given Y ≈ A⁻¹J
-        (the solve, with its bound): since c A⁻¹ = 2A⁻¹ − I, the values are 2Y − J (2Y is exact,
-        the difference rounded once per entry), without the product c Y; None when the values of
-        c and A are not so related or Y is not finite.
+        (a solve, or the inverse times J, with its bound): since c A⁻¹ = 2A⁻¹ − I, the values are
+        2Y − J (2Y is exact, the difference rounded once per entry), without the product c Y; None
+        when the values of c and A are not so related or Y is not finite.
 
         Bound: for the exact C, Â, Ĵ within the bounds of c, A, J, C = 2I − Â + Δ with
         ‖Δ‖_F <= e_c + e_A, so C Â⁻¹ Ĵ = 2Y* − Ĵ + Δ Y* (Y* = Â⁻¹Ĵ, within e_Y of Y) and
@@ -1011,13 +1012,19 @@ class Float64Backend(Backend):
                 Y = np.linalg.solve(a.v, bv)
             except np.linalg.LinAlgError:        # cannot happen for σ_min > 0; no verdict if it does
                 return F64(np.zeros(shape), math.inf, np.full(shape, math.inf))
-            if not np.all(np.isfinite(Y)):
+            ny = _fro(Y)                         # inf or nan unless every entry is finite
+            if not math.isfinite(ny):
                 return F64(Y, math.inf, np.full(shape, math.inf))
             R = bv - a.v @ Y
-            ny = _fro(Y)
             r = _fro(R) + _gamma(k + 1) * (nb + _norm(a) * ny) + (k + 1) * _uf(shape)
             delta = _up(beta0 * r, 4)
             e = _up(beta * eb + beta * a.e * (ny + delta) + delta, 8)
+            if e < _S32_MAX and ny < _S32_MAX:
+                # the scales |Y| + e in float32: |Y| rounded down, e rounded to nearest and the sum
+                # once (inside the factor 1 − 2⁻²²); every entry at most ‖Y‖_F + e
+                m32 = _down32(np.abs(Y))
+                m32 += np.float32(e)
+                return _f32(Y, e, m32, _R32, (ny + e) * (1.0 + 2.0**-22), ny)
             return F64(Y, e, np.abs(Y) + e, ny)
 
     def inner(self, a, b):
