@@ -20,34 +20,45 @@ def _q(x: float) -> Fraction:
     return Fraction(x)
 
 
-class _Pair:
-    """A float64 backend matrix with its exact term scales (Fractions), built side by side."""
+def _mm(x, y):
+    k = len(y)
+    return [[sum((x[i][l] * y[l][j] for l in range(k)), Fraction(0)) for j in range(len(y[0]))]
+            for i in range(len(x))]
 
-    def __init__(self, be, s, ms):
-        self.be, self.s, self.ms = be, s, ms
+
+def _ew(x, y, f):
+    return [[f(a, b) for a, b in zip(r, t)] for r, t in zip(x, y)]
+
+
+class _Pair:
+    """A float64 backend matrix with its exact values and exact term scales (Fractions), built side
+    by side."""
+
+    def __init__(self, be, s, xs, ms):
+        self.be, self.s, self.xs, self.ms = be, s, xs, ms
 
     def __add__(self, o):
-        return _Pair(self.be, self.be.add(self.s, o.s), [[a + b for a, b in zip(r, t)] for r, t in zip(self.ms, o.ms)])
+        return _Pair(self.be, self.be.add(self.s, o.s), _ew(self.xs, o.xs, lambda a, b: a + b),
+                     _ew(self.ms, o.ms, lambda a, b: a + b))
 
     def __sub__(self, o):
-        return _Pair(self.be, self.be.sub(self.s, o.s), [[a + b for a, b in zip(r, t)] for r, t in zip(self.ms, o.ms)])
+        return _Pair(self.be, self.be.sub(self.s, o.s), _ew(self.xs, o.xs, lambda a, b: a - b),
+                     _ew(self.ms, o.ms, lambda a, b: a + b))
 
     def __matmul__(self, o):
-        k = len(o.ms)
-        ms = [[sum((self.ms[i][l] * o.ms[l][j] for l in range(k)), Fraction(0)) for j in range(len(o.ms[0]))]
-              for i in range(len(self.ms))]
-        return _Pair(self.be, self.be.matmul(self.s, o.s), ms)
+        return _Pair(self.be, self.be.matmul(self.s, o.s), _mm(self.xs, o.xs), _mm(self.ms, o.ms))
 
     def scaled(self, c):
-        cm = _q(float(c.m))
-        return _Pair(self.be, self.be.smul(self.s, c), [[cm * a for a in r] for r in self.ms])
+        cv, cm = _q(float(c.v)), _q(float(c.m))
+        return _Pair(self.be, self.be.smul(self.s, c), [[cv * a for a in r] for r in self.xs],
+                     [[cm * a for a in r] for r in self.ms])
 
     @property
     def T(self):
-        return _Pair(self.be, self.be.T(self.s), [list(r) for r in zip(*self.ms)])
+        return _Pair(self.be, self.be.T(self.s), [list(r) for r in zip(*self.xs)], [list(r) for r in zip(*self.ms)])
 
     def neg(self):
-        return _Pair(self.be, self.be.neg(self.s), self.ms)
+        return _Pair(self.be, self.be.neg(self.s), [[-a for a in r] for r in self.xs], self.ms)
 
 
 def _chain(be, F, rng, n=6, r=3):
@@ -55,14 +66,16 @@ def _chain(be, F, rng, n=6, r=3):
     product met again transposed), scalar multiples, transposes and negations, each result kept."""
     def general(m, k, scale=1.0):
         v = np.array([[rng.uniform(-1, 1) * scale for _ in range(k)] for _ in range(m)])
-        return _Pair(be, be.from_array(v), [[abs(_q(x)) for x in row] for row in v])
+        return _Pair(be, be.from_array(v), [[_q(x) for x in row] for row in v], [[abs(_q(x)) for x in row] for row in v])
     A, B, C = general(n, n), general(n, r, 1e3), general(r, n, 1e-3)
     xs = [F.param("d", rng) for _ in range(n)]
-    D = _Pair(be, be.diag(xs), [[abs(_q(float(x.m))) if i == j else Fraction(0) for j, x in enumerate(xs)]
-                                for i in range(n)])
+    D = _Pair(be, be.diag(xs), [[_q(float(x.v)) if i == j else Fraction(0) for j, x in enumerate(xs)]
+                                for i in range(n)],
+              [[abs(_q(float(x.m))) if i == j else Fraction(0) for j, x in enumerate(xs)] for i in range(n)])
     J = np.zeros((n, r), dtype=np.int64)
     J[range(r), range(r)] = 1
-    Js = _Pair(be, be.from_consts(J), [[Fraction(abs(int(x))) for x in row] for row in J])
+    Js = _Pair(be, be.from_consts(J), [[Fraction(int(x)) for x in row] for row in J],
+               [[Fraction(abs(int(x))) for x in row] for row in J])
     c = F.param("c", rng)
     out = []
     AB = A @ B
@@ -70,6 +83,10 @@ def _chain(be, F, rng, n=6, r=3):
     M = A + A.T
     L = B @ B.T + D
     out += [M @ L - L @ M, (M @ L).T, (AB @ C).neg() + D.scaled(c), (L - D) @ Js, (M.scaled(c) + L) @ AB]
+    # the chains of a flow, reassociated: (X Pᵀ) X, (P Xᵀ) P, (X Pᵀ) P, (X Xᵀ) X
+    X, P = general(n, 2), general(n, 2, 10.0)
+    XPt = X @ P.T
+    out += [XPt, XPt @ X, XPt.T @ P, XPt @ P, (X @ X.T) @ X, (XPt @ X) - (XPt.T @ P)]
     return out
 
 
@@ -89,13 +106,49 @@ def _worst_excess(out):
     return up, loss
 
 
+def _outside(out):
+    """Whether some computed entry lies outside its bound of the exact value."""
+    for P in out:
+        v, e = P.s.v, Fraction(P.s.e)
+        for i, row in enumerate(P.xs):
+            for j, x in enumerate(row):
+                if abs(_q(float(v[i, j])) - x) > e:
+                    return True
+    return False
+
+
 @pytest.mark.parametrize("seed", range(3))
-def test_float32_scales_never_exceed_the_exact_scales(seed):
+def test_float32_scales_never_exceed_the_exact_scales(seed, monkeypatch):
+    reassociated = []
+    real = native.Float64Backend._reassociated
+
+    def spy(self, a, b):
+        out = real(self, a, b)
+        reassociated.append(out is not None)
+        return out
+    monkeypatch.setattr(native.Float64Backend, "_reassociated", spy)
     F = FloatField()
     out = _chain(native.backend(F), F, random.Random(seed))
     assert any(P.s._m is None or P.s.msrc is not None for P in out)       # the float32 form is used
+    assert sum(reassociated) >= 3                                          # the chains are thin products
     up, loss = _worst_excess(out)
     assert up <= 0.0 and loss < 1e-5
+    assert not _outside(out)
+
+
+def test_a_wrongly_reassociated_chain_is_caught(monkeypatch):
+    """Negative control: (P Xᵀ) P reassociated from the factors of X Pᵀ without transposing them,
+    X (Pᵀ P), lies outside its bound of the exact value."""
+    real = native.Float64Backend._reassociated
+
+    def wrong(self, a, b):
+        if a.fac is None:
+            c, d = a.t.fac
+            return self.matmul(c, self.matmul(d, b))
+        return real(self, a, b)
+    monkeypatch.setattr(native.Float64Backend, "_reassociated", wrong)
+    F = FloatField()
+    assert _outside(_chain(native.backend(F), F, random.Random(0)))
 
 
 def test_a_scale_factor_that_overstates_is_caught(monkeypatch):
@@ -223,3 +276,27 @@ def test_exact_zeros_in_sums_and_multiples():
     c = F.param("c", random.Random(0))
     zc = be.smul(z, c)
     assert not np.any(zc.v) and zc.e == 0.0 and not np.any(zc.m)
+
+
+def test_the_block_solve_is_used_and_its_errors_are_bounded_by_the_residual(monkeypatch):
+    """The solve with B = [D; 0] goes by blocks; its bound comes from the residual, so even a Y
+    perturbed on purpose stays within its (larger) bound of the exact value."""
+    used = []
+    real = native._solve_top
+
+    def spy(v, sel):
+        out = real(v, sel)
+        used.append(out is not None)
+        return out
+    monkeypatch.setattr(native, "_solve_top", spy)
+    X, Xq = _replay(40, 17, 3)
+    assert used == [True] and _max_miss(X, Xq) <= 0
+    e_good = X._n.e
+
+    def perturbed(v, sel):
+        out = real(v, sel)
+        out[5, 2] += 1e-7
+        return out
+    monkeypatch.setattr(native, "_solve_top", perturbed)
+    X, Xq = _replay(40, 17, 3)
+    assert _max_miss(X, Xq) <= 0 and X._n.e > 1e3 * e_good
