@@ -745,9 +745,10 @@ class Float64Backend(Backend):
             nv = _fro(v)
             e = _up(a.e + b.e + U64 * nv + _uf(v.shape), 3)
             dtop = float(np.max(dm)) if k else 0.0
-            sf = _s32(full, _S32_MAX) if full._m is None and 0.0 <= dtop < _S32_MAX else None
+            sf = _s32(full, _S32_MAX) if 0.0 <= dtop < _S32_MAX else None
             if sf is not None:
-                # in float32: dm rounded down, the sum rounded once on the diagonal, the rest copied
+                # in float32 (a float64 operand's scales converted once, see _s32): dm rounded down,
+                # the sum rounded once on the diagonal, the rest copied
                 f32, ff, ft = sf
                 m32 = f32.copy()
                 m32[i, i] = f32[i, i] + _down32(dm)
