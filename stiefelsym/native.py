@@ -269,7 +269,10 @@ class F64:
     :func:`_s32`).  Sums, products and scalar multiples of scales in float32 move half the bytes
     of float64 and need no conversion in between; each only lowers mf by its own rounding bound,
     so the resolution test is never easier than with the exact scales.  ``m32`` also holds the
-    float32 copy of a float64 m once made (``False``: they do not fit in float32).
+    float32 copy of a float64 m once made (``False``: they do not fit in float32); ``msrc``,
+    (matrix, transposed) when the scales are another matrix's (a transpose, a negation), whose
+    float64 m is then shared.  ``fac``, (c, d) when the matrix was computed as the product c d
+    (see :meth:`Float64Backend._reassociated`).
 
     An F64 may also be *deferred* (``lazy`` holds how to compute it, ``defer`` what it is: the
     inverse of a matrix whose inverse is known to exist with a bounded norm, or a product with
