@@ -652,11 +652,15 @@ class Float64Backend(Backend):
         return F64(v, 0.0, np.abs(v))
 
     def from_consts(self, a):
-        if np.max(np.abs(a), initial=0) >= 2**53:
+        top = np.max(np.abs(a), initial=0)
+        if top >= 2**53:
             return Backend.from_consts(self, a)
         out = self.from_array(a)
-        if a.ndim == 2 and a.size and np.max(np.abs(a)) <= 1 and np.all(np.count_nonzero(a, axis=0) <= 1):
-            out.sel = (np.argmax(a != 0, axis=0), out.v[np.argmax(a != 0, axis=0), np.arange(a.shape[1])].copy())
+        if a.ndim == 2 and a.size and top <= 1:
+            nz = a != 0
+            if np.all(np.count_nonzero(nz, axis=0) <= 1):
+                rows = np.argmax(nz, axis=0)
+                out.sel = (rows, out.v[rows, np.arange(a.shape[1])].copy())
         return out
 
     def from_obj(self, a):
@@ -679,12 +683,14 @@ class Float64Backend(Backend):
         return s._v.shape if s.lazy is None else s.defer[1]
 
     def zeros(self, m, k):
-        out = F64(np.zeros((m, k)), 0.0, np.zeros((m, k)), 0.0)
+        z = np.zeros((m, k))                 # values and scales: one array (never written into)
+        out = F64(z, 0.0, z, 0.0)
         out.sel = (np.zeros(k, dtype=np.intp), np.zeros(k))
         return out
 
     def identity(self, m):
-        out = F64(np.eye(m), 0.0, np.eye(m))
+        i = np.eye(m)                        # values and scales: one array (never written into)
+        out = F64(i, 0.0, i)
         out.diag = (np.ones(m), np.ones(m))
         out.sel = (np.arange(m), np.ones(m))
         return out
