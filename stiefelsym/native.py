@@ -1430,9 +1430,16 @@ def backend(field) -> Backend | None:
     return be
 
 
+#: the field classes _make dispatches on, imported on first use (the modules import this one)
+_KINDS: list = []
+
+
 def _make(field) -> Backend | None:
-    from .fields import DegreeField, DualField, FloatField, ModularField, RationalField
-    from .reverse import RevBackend, RevField
+    if not _KINDS:
+        from .fields import DegreeField, DualField, FloatField, ModularField, RationalField
+        from .reverse import RevBackend, RevField
+        _KINDS[:] = [DegreeField, DualField, FloatField, ModularField, RationalField, RevBackend, RevField]
+    DegreeField, DualField, FloatField, ModularField, RationalField, RevBackend, RevField = _KINDS
     t = type(field)
     if t is RevField:                 # reverse numbers exist only as whole matrices
         return RevBackend(field)
