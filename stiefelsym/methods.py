@@ -594,7 +594,8 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
     res.seconds = time.perf_counter() - t0
     res.reductions = [d for _, d in charts]
     res.checks = [o for e in evaluations for o in e.outcomes]
-    nonzero = [z for e in evaluations for z in e.nonzero]
+    # (check, position, value, field of the value)
+    nonzero = [z + (sc._field,) for (sc, _), e in zip(charts, evaluations) for z in e.nonzero]
     problems = [p for e in evaluations for p in e.rank_problems + e.count_problems]
     if (claim.expect == "nonzero" and nonzero) or not (nonzero or problems or claim.expect == "nonzero"):
         why = division_probe(claim, n, r, func, seed)
@@ -605,7 +606,8 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
     if claim.expect == "nonzero":
         if nonzero:
             res.verdict = "proved"
-            res.certificate = f"the residual is not identically zero: {nonzero[0][1]} = {_short(nonzero[0][2])}"
+            res.certificate = (f"the residual is not identically zero: {nonzero[0][1]} = "
+                               f"{_short(_exact_text(nonzero[0][3], nonzero[0][2]))}")
         else:
             res.verdict = "fails"
             res.certificate = "the residual vanishes identically on the chart"
@@ -613,7 +615,7 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
     if nonzero or problems:
         res.verdict = "fails"
         if nonzero:
-            res.residual = f"{nonzero[0][1]} = {_short(nonzero[0][2])}"
+            res.residual = f"{nonzero[0][1]} = {_short(_exact_text(nonzero[0][3], nonzero[0][2]))}"
             res.certificate = "the residual is a nonzero function on the chart"
             point = run_points(claim, n, r, "rational", seed, func, trials=1)
             if point.witness:
@@ -696,6 +698,20 @@ def _division_probe(claim: Claim, n: int, r: int, func: Callable | None = None, 
 def _short(x: Any, limit: int = 160) -> str:
     s = str(x)
     return s if len(s) <= limit else s[: limit - 3] + "..."
+
+
+def _exact_text(field: Any, x: Any) -> str:
+    """An exact residual entry as text, the same in every run: through the flint ring in its
+    canonical term order where the entry is a rational function there (a symengine expression
+    orders its terms by hashes that differ between processes), else symengine's text."""
+    ring = field.poly_ring() if getattr(field, "native", False) and hasattr(field, "poly_ring") else None
+    if ring is not None:
+        from .polyfield import NotRational
+        try:
+            return ring.text(ring.from_se(x))
+        except NotRational:
+            pass
+    return str(x)
 
 
 # ---------------------------------------------------------------------------

@@ -329,6 +329,36 @@ class PolyRing:
             terms.append(se.Mul(*fs) if len(fs) > 1 else cf)
         return se.Add(*terms) if len(terms) > 1 else terms[0]
 
+    def poly_text(self, p) -> str:
+        """p as text, its terms in flint's order (degree reverse lexicographic in the variables'
+        order of first use): the same in every process, unlike a symengine expression's text,
+        which orders the terms by hashes of the parameters (their symbols are unique per process)."""
+        if p.is_zero():
+            return "0"
+        syms = self.syms
+        out = []
+        for exps, c in p.terms():
+            mono = "*".join(str(syms[i]) if e == 1 else f"{syms[i]}**{int(e)}" for i, e in enumerate(exps) if e)
+            neg = c < 0
+            c = -c if neg else c
+            if not mono:
+                t = str(c)
+            elif c == 1:
+                t = mono
+            else:
+                t = f"{c}*{mono}"
+            out.append(("- " if neg else "+ ") + t if out else ("-" if neg else "") + t)
+        return " ".join(out)
+
+    def text(self, r) -> str:
+        """A rational function (numerator, denominator atoms) as text in a canonical order."""
+        n, d = self.rf_reduce(r)
+        num = self.poly_text(n)
+        if not d:
+            return num
+        den = "*".join(f"({self.poly_text(self.atoms[k])})" + (f"**{e}" if e > 1 else "") for k, e in d)
+        return f"({num})/({den})" if len(n) > 1 else f"{num}/({den})"
+
     def atom_se(self, k: int):
         s = self._atom_se.get(k)
         if s is None:
