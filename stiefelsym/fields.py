@@ -242,7 +242,9 @@ class SymbolicField(Field):
         """The flint rational-function ring of this field's symbols (created on first use)."""
         if self._poly_ring is None:
             from .polyfield import PolyRing, _BigPoly
-            SymbolicField._encoded_type = _BigPoly
+            if SymbolicField._encoded_type is None:
+                # set once: assigning a class attribute invalidates the interpreter's attribute caches
+                SymbolicField._encoded_type = _BigPoly
             self._poly_ring = PolyRing()
         return self._poly_ring
 
