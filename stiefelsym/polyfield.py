@@ -909,19 +909,7 @@ class PolyBackend(Backend):
             return b
         if b.z:
             return a
-        key = ("+", id(a), id(b))
-        hit = self._memo.get(key)
-        if hit is not None and hit[0] is a and hit[1] is b:
-            return hit[2]
-        ctx = self.ring.ctx
-        if a.ctx is not ctx or b.ctx is not ctx:
-            a, b = self._fix(a), self._fix(b)
-        if a.den == b.den:
-            out = PolyMat(_ew_add(a.a, b.a), a.den, ctx)
-        else:
-            D = _merge_max(a.den, b.den)
-            out = self._pm(self._to(a, D) + self._to(b, D), D)
-        return self._remember(key, (a, b, out))
+        return self._entrywise("+", _ew_add, a, b)
 
     def sub(self, a, b):
         if type(a) is ObjMat or type(b) is ObjMat:
@@ -932,7 +920,12 @@ class PolyBackend(Backend):
             return a
         if a.z:
             return self.neg(b)
-        key = ("-", id(a), id(b))
+        return self._entrywise("-", _ew_sub, a, b)
+
+    def _entrywise(self, op: str, ew, a, b):
+        """a op b for two PolyMats (op "+" or "-", ew its entrywise form), over the larger of
+        their denominators; the stored result when the same operands were met before."""
+        key = (op, id(a), id(b))
         hit = self._memo.get(key)
         if hit is not None and hit[0] is a and hit[1] is b:
             return hit[2]
@@ -940,10 +933,10 @@ class PolyBackend(Backend):
         if a.ctx is not ctx or b.ctx is not ctx:
             a, b = self._fix(a), self._fix(b)
         if a.den == b.den:
-            out = PolyMat(_ew_sub(a.a, b.a), a.den, ctx)
+            out = PolyMat(ew(a.a, b.a), a.den, ctx)
         else:
             D = _merge_max(a.den, b.den)
-            out = self._pm(self._to(a, D) - self._to(b, D), D)
+            out = self._pm(ew(self._to(a, D), self._to(b, D)), D)
         return self._remember(key, (a, b, out))
 
     def neg(self, a):

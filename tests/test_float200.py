@@ -5,17 +5,14 @@ from __future__ import annotations
 import random
 from fractions import Fraction
 
-import flint
 import numpy as np
 import pytest
 
 from stiefelsym import native
-from stiefelsym.fields import FloatField, RationalField
+from stiefelsym.fields import FloatField
 from stiefelsym.matrix import Mat
 
-
-def entries(M):
-    return [[M._view()[i, j] for j in range(M._shape()[1])] for i in range(M._shape()[0])]
+from float_replay import assert_within_bounds, entries, replay_field
 
 
 def skew(F, m, rng, scale=1):
@@ -61,18 +58,9 @@ def test_deferred_inverses_and_solves_keep_the_bound(monkeypatch, m, r, threshol
     for seed in range(2):
         F = FloatField()
         out = cayley_ops(F, m, r, random.Random(seed))
-
-        class Replay(RationalField):
-            def param(self, name, rr):
-                x = F.param(name, rr)
-                return flint.fmpq(*Fraction(x.v).as_integer_ratio())
-        exact = cayley_ops(Replay(), m, r, random.Random(seed))
-        for M, Mq in zip(out, exact):
-            assert M._n is not None
-            for row, rowq in zip(entries(M), entries(Mq)):
-                for x, q in zip(row, rowq):
-                    assert abs(Fraction(x.v) - Fraction(int(q.p), int(q.q))) <= Fraction(x.e)
-                    assert x.e < 1e-9
+        assert_within_bounds(out, cayley_ops(replay_field(F), m, r, random.Random(seed)))
+        assert all(M._n is not None for M in out)
+        assert all(x.e < 1e-9 for M in out for row in entries(M) for x in row)
 
 
 def test_the_cayley_inverse_is_deferred_and_never_computed(monkeypatch):
@@ -175,17 +163,7 @@ def test_symmetric_scales_and_repeated_sums_keep_the_bound():
         F = FloatField()
         be = native.backend(F)
         out = commutator_ops(F, random.Random(seed))
-
-        class Replay(RationalField):
-            def param(self, name, rr):
-                x = F.param(name, rr)
-                return flint.fmpq(*Fraction(x.v).as_integer_ratio())
-        exact = commutator_ops(Replay(), random.Random(seed))
-        for M, Mq in zip(out, exact):
-            for row, rowq in zip(entries(M), entries(Mq)):
-                for x, q in zip(row, rowq):
-                    assert abs(Fraction(x.v) - Fraction(int(q.p), int(q.q))) <= Fraction(x.e)
-                    assert x.m >= abs(x.v) * (1 - 1e-4)
+        assert_within_bounds(out, commutator_ops(replay_field(F), random.Random(seed)), scales=True)
         LM, ML = out[1]._n, out[2]._n
         # the scales of L M are those of M L, transposed (not a new product)
         assert np.shares_memory(LM.m, ML.m) and np.array_equal(LM.m, ML.m.T)
@@ -228,17 +206,7 @@ def test_diagonals_without_full_arrays_keep_the_bound():
     for seed in range(4):
         F = FloatField()
         out = diagonal_ops(F, random.Random(seed))
-
-        class Replay(RationalField):
-            def param(self, name, rr):
-                x = F.param(name, rr)
-                return flint.fmpq(*Fraction(x.v).as_integer_ratio())
-        exact = diagonal_ops(Replay(), random.Random(seed))
-        for M, Mq in zip(out, exact):
-            for row, rowq in zip(entries(M), entries(Mq)):
-                for x, q in zip(row, rowq):
-                    assert abs(Fraction(x.v) - Fraction(int(q.p), int(q.q))) <= Fraction(x.e)
-                    assert x.m >= abs(x.v) * (1 - 1e-4)
+        assert_within_bounds(out, diagonal_ops(replay_field(F), random.Random(seed)), scales=True)
 
 
 def test_a_diagonal_times_a_scalar_stays_diagonal_and_equals_the_full_multiple():

@@ -7,13 +7,14 @@ from __future__ import annotations
 import random
 from fractions import Fraction
 
-import flint
 import numpy as np
 import pytest
 
 from stiefelsym import native
 from stiefelsym.fields import FloatField
 from stiefelsym.matrix import Mat
+
+from float_replay import replay_field
 
 
 def _q(x: float) -> Fraction:
@@ -188,15 +189,9 @@ def _cayley(F, m, r, rng):
 
 def _replay(m, r, seed):
     """The float Cayley X at (m, r) and the exact one at the same point (flint, over ℚ)."""
-    from stiefelsym.fields import RationalField
     F = FloatField()
     X = _cayley(F, m, r, random.Random(seed))
-
-    class Replay(RationalField):
-        def param(self, name, rr):
-            x = F.param(name, rr)
-            return flint.fmpq(*Fraction(x.v).as_integer_ratio())
-    Xq = _cayley(Replay(), m, r, random.Random(seed))
+    Xq = _cayley(replay_field(F), m, r, random.Random(seed))
     return X, Xq
 
 

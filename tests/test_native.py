@@ -6,7 +6,6 @@ import math
 import random
 from fractions import Fraction
 
-import flint
 import numpy as np
 import pytest
 
@@ -16,6 +15,8 @@ from stiefelsym.fields import DegreeField, Dual, DualField, ErrNum, FloatField, 
 from stiefelsym.matrix import Mat, block
 from stiefelsym.methods import degree_bound, run_points
 from stiefelsym.scene import Scene
+
+from float_replay import assert_within_bounds, entries, replay_field
 
 P61 = 2**61 - 1
 
@@ -28,10 +29,6 @@ def generic(field):
 
 def rand_mat(field, m, k, rng):
     return Mat._rows([[field.param("x", rng) for _ in range(k)] for _ in range(m)], field)
-
-
-def entries(M):
-    return [[M._view()[i, j] for j in range(M._shape()[1])] for i in range(M._shape()[0])]
 
 
 def ops(F, rng):
@@ -60,14 +57,8 @@ def test_float64_bounds_contain_the_exact_value():
         F = FloatField()
         rng = random.Random(seed)
         K, t = ops(F, rng)
-        Q = RationalField()
         rng = random.Random(seed)
-        as_q = lambda x: flint.fmpq(*Fraction(x.v).as_integer_ratio())
-
-        class Replay(RationalField):
-            def param(self, name, r):
-                return as_q(F.param(name, r))
-        Kq, tq = ops(Replay(), rng)
+        Kq, tq = ops(replay_field(F), rng)
         for row, rowq in zip(entries(K), entries(Kq)):
             for x, q in zip(row, rowq):
                 assert abs(Fraction(x.v) - Fraction(int(q.p), int(q.q))) <= Fraction(x.e)
@@ -319,18 +310,9 @@ def test_float64_structured_and_repeated_products_keep_the_bound():
     for seed in range(4):
         F = FloatField()
         out = structured_ops(F, random.Random(seed))
-
-        class Replay(RationalField):
-            def param(self, name, r):
-                x = F.param(name, r)
-                return flint.fmpq(*Fraction(x.v).as_integer_ratio())
-        exact = structured_ops(Replay(), random.Random(seed))
-        for M, Mq in zip(out, exact):
-            assert M._n is not None
-            for row, rowq in zip(entries(M), entries(Mq)):
-                for x, q in zip(row, rowq):
-                    assert abs(Fraction(x.v) - Fraction(int(q.p), int(q.q))) <= Fraction(x.e)
-                    assert x.m >= abs(x.v) * (1 - 1e-4)     # term scales: a few digits
+        exact = structured_ops(replay_field(F), random.Random(seed))
+        assert all(M._n is not None for M in out)
+        assert_within_bounds(out, exact, scales=True)
         assert out[5]._n is out[3]._n                  # B @ C again
         assert out[4]._n is out[3]._n.t                # (B C)^T from the stored B C
 
