@@ -556,14 +556,8 @@ def _tune_allocator() -> None:
     mallopt(M_TOP_PAD, 16 << 20)
 
 
-#: a product of a computed product and a thin matrix reassociated (see :meth:`Float64Backend._reassociated`)
-REASSOCIATE = True
-
 #: X = (I − S)(I + S)⁻¹ J from the solve Y = (I + S)⁻¹ J as 2Y − J (see :meth:`Float64Backend._cayley`)
 CAYLEY_BY_SOLVE = True
-
-#: a solve with B = [D; 0] by blocks (see :func:`_solve_top`)
-BLOCK_SOLVE = True
 
 
 def _solve_top(v: np.ndarray, sel: tuple) -> np.ndarray | None:
@@ -775,7 +769,7 @@ class Float64Backend(Backend):
         if _exact_zero(b):
             out = a                            # x + 0 = x exactly, under x's bound
         elif _exact_zero(a):
-            out = b if 1.0 > 0 else self.neg(b)
+            out = b
         elif a.diag is not None or b.diag is not None:
             out = self._with_diagonal(a, b, 1.0)
         else:
@@ -798,7 +792,7 @@ class Float64Backend(Backend):
         if _exact_zero(b):
             out = a                            # x - 0 = x exactly, under x's bound
         elif _exact_zero(a):
-            out = b if -1.0 > 0 else self.neg(b)
+            out = self.neg(b)
         elif a.diag is not None or b.diag is not None:
             out = self._with_diagonal(a, b, -1.0)
         else:
@@ -834,7 +828,7 @@ class Float64Backend(Backend):
         out = None
         if a.lazy is not None:
             out = self._through(a, b)
-        elif REASSOCIATE and b.lazy is None and (a.fac is not None or (at is not None and at.fac is not None)):
+        elif b.lazy is None and (a.fac is not None or (at is not None and at.fac is not None)):
             out = self._reassociated(a, b)
         elif b.lazy is not None and b.defer[0] == "inv":
             # a A⁻¹: deferred, so that (a A⁻¹) J with J a selection of columns is a (A⁻¹ J)
@@ -1085,7 +1079,7 @@ class Float64Backend(Backend):
         k = a.v.shape[0]
         shape = bv.shape
         with _quiet():
-            Y = _solve_top(a.v, sel) if sel is not None and BLOCK_SOLVE else None
+            Y = _solve_top(a.v, sel) if sel is not None else None
             try:
                 if Y is None:
                     Y = np.linalg.solve(a.v, bv)

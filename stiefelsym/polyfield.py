@@ -1026,13 +1026,6 @@ class PolyBackend(Backend):
         out = PolyMat(a.a.T, a.den, a.ctx)    # a view: storage is never written in place
         return self._remember(key, (a, None, out))
 
-    def _recall(self, key, a, b=None):
-        """The result remembered for ``key`` if its operands are ``a`` (and ``b``) themselves."""
-        hit = self._memo.get(key)
-        if hit is not None and hit[0] is a and (b is None or hit[1] is b):
-            return hit[2]
-        return None
-
     def _remember(self, key, entry):
         """An operation's result, kept for the same operands met again within this field (a
         PolyMat's storage is never written in place; the operands are kept alive with it, so
