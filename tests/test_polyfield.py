@@ -237,3 +237,43 @@ def test_sparse_entrywise_operations_and_products_agree_with_numpy():
         assert (pf._ew_sub(a, a) == a - a).all() and (pf._ew_scale(a, f) == a * pf._scalar_array(f)).all()
         assert (pf._dot(a, c, R.zero) == np.dot(a, c)).all()
         assert (pf._dot(a.T.copy()[:, :m].T.copy(), c, R.zero) == np.dot(a, c)).all()
+
+
+def _printed_value_errors() -> int:
+    """How many of a set of random rational functions print (PolyRing.text) as a different value:
+    the text is read back by symengine and compared with the expression it came from at random
+    rational points."""
+    from stiefelsym.polyfield import PolyRing
+    R = PolyRing()
+    xs = [se.Symbol(f"x{i}") for i in range(4)]
+    rng = random.Random(11)
+    wrong = 0
+    for _ in range(20):
+        def poly():
+            return sum(se.Rational(rng.randint(-9, 9), rng.randint(1, 4)) * xs[rng.randrange(4)] ** rng.randint(0, 3)
+                       * xs[rng.randrange(4)] ** rng.randint(0, 2) for _ in range(rng.randint(1, 5)))
+        num, den = poly(), poly() if rng.random() < 0.5 else se.Integer(1)
+        if den == 0:
+            continue
+        expr = num / den
+        text = R.text(R.from_se(expr))
+        if not same(se.sympify(text), expr):
+            wrong += 1
+    return wrong
+
+
+def test_an_exact_residual_prints_its_own_value():
+    """The canonical text of a rational function (the residual printed in every report) is read
+    back by symengine and equals the function; a printer that drops a sign is caught."""
+    assert _printed_value_errors() == 0
+
+
+def test_a_printer_that_loses_a_sign_is_caught(monkeypatch):
+    from stiefelsym.polyfield import PolyRing
+    real = PolyRing.poly_text
+
+    def wrong(self, p):
+        t = real(self, p)
+        return t.replace("- ", "+ ", 1)
+    monkeypatch.setattr(PolyRing, "poly_text", wrong)
+    assert _printed_value_errors() > 0

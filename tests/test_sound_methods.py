@@ -466,3 +466,39 @@ def test_powers_are_the_same_on_every_method(method):
     assert res.verdict == "fails", (method, res.verdict, res.message)
     true = run_one(_claim(lambda s: {"r": s.X[0, 0] ** 3 * s.X[0, 0] ** -2 - s.X[0, 0]}), Size(3, 1), method, seed=0)
     assert true.verdict in ("proved", "checked", "numeric"), (method, true.verdict, true.message)
+
+
+# -- the shortcuts of the whole-matrix backends: zero entries skipped, outer products by one,
+# reassociated chains, the Cayley X from a solve, the block solve (n >= 32 in float) -----------
+
+def _reassociated_wrongly(s):
+    return {"c": (s.X @ s.P.T) @ s.X - s.X @ (s.X.T @ s.P)}          # PᵀX is not XᵀP
+
+
+def _zeros_around_a_small_term(s):
+    Z = s.zeros(s.n, s.r, ("n", "r"))
+    return {"c": Z + s.X @ (s.X.T @ s.X) - Z - s.X + s.q(0) * s.P + s.q(1, 10**6) * (s.P @ s.X.T @ s.X)}
+
+
+def _outer_product_is_not_the_identity(s):
+    return {"c": s.X @ s.X.T - s.identity(s.n, "n")}                 # false for r < n
+
+
+def _cayley_without_its_j(s):
+    I, K = s.identity(s.n, "n"), s.xi
+    return {"c": (I - K) @ (I + K).inv() @ s.X - s.q(2) * ((I + K).inv() @ s.X)}
+
+
+@pytest.mark.parametrize("func", [_reassociated_wrongly, _zeros_around_a_small_term,
+                                  _outer_product_is_not_the_identity, _cayley_without_its_j])
+@pytest.mark.parametrize("method,size", [("exact", (3, 1)), ("exact", (3, 2)), ("modular", (4, 2)),
+                                         ("rational", (4, 2)), ("float", (4, 2)), ("float", (40, 20)),
+                                         ("modular", (40, 20))])
+def test_false_claims_through_the_backends_shortcuts_fail(func, method, size):
+    """False statements written to run through the backends' shortcuts: every method refutes them
+    (at (3,1) PᵀX = XᵀP = 0, so the reassociation claim is true there and is not run)."""
+    if func is _reassociated_wrongly and size[1] == 1:
+        pytest.skip("true at r = 1")
+    claim = Claim(id="trick", paper=("prep",), kind="id", section="t", func=func, sizes=admissible(40))
+    res = run_one(claim, Size(*size), method, seed=0)
+    assert res.verdict == "fails", (res.verdict, res.message)
