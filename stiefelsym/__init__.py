@@ -19,7 +19,8 @@ for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
     _os.environ.setdefault(_var, "1")
 
 from .claims import Checks, Claim, Count, Rank, Registry, Size, admissible, claim, load_catalog, load_claims_file
-from .matrix import Mat, block, comm
+from .ir import block
+from .matrix import Mat, comm
 from .scene import Flow, Scene
 
 __all__ = ["claim", "admissible", "comm", "block", "Rank", "Count", "Checks", "Claim", "Registry", "Size",

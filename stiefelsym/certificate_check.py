@@ -76,6 +76,8 @@ def check_certificate(data: Any) -> CheckReport:
         entries = data["entries"]
         if not isinstance(entries, list):
             raise Rejected("entries must be a list")
+        if not entries:
+            raise Rejected("a certificate with no entries proves nothing")
         for entry in entries:
             try:
                 terms += check_entry(entry, ctx)
@@ -337,6 +339,9 @@ def main(argv: list[str] | None = None) -> int:
         for r in payload.get("results", [payload]):
             data = r.get("certificate_data")
             if data is None:
+                if r.get("method") == "free" and r.get("verdict") == "proved":
+                    bad += 1
+                    print(f"{r.get('claim', path)}: REJECTED: a dimension-free proof without a certificate")
                 continue
             rep = check_certificate(data)
             bad += not rep.accepted

@@ -25,7 +25,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Callable, Iterable, Mapping
 
-from .matrix import Mat
+from .ir.statements import Count, Rank
 from .scalar import running_claim, unwrap
 
 
@@ -87,53 +87,6 @@ def deadline(seconds: float | None, what: str, timeout: Callable[[str], BaseExce
 
 
 KINDS = ("id", "lax", "pb", "dim", "not", "geo")
-
-
-def _sizes_as_ints(obj: Any, *names: str) -> None:
-    """A claim's sizes (``s.n``, ``s.r`` are :class:`~stiefelsym.view.Dim`) as the plain ints a
-    statement holds (on the dimension-free scene, where a size is no number, this is refused)."""
-    from .view import Dim
-    for name in names:
-        v = getattr(obj, name)
-        if type(v) is Dim:
-            object.__setattr__(obj, name, int(v))
-
-
-@dataclass(frozen=True)
-class Rank:
-    """The rank of ``matrix`` equals ``expected``.
-
-    ``generic``: the rank at a generic point of the chart (the paper's
-    "generic orbit", "independent functions"); otherwise the rank must be
-    ``expected`` at every point of the constraint set (then the exact method
-    looks for a nonzero constant maximal minor)."""
-
-    matrix: Mat
-    expected: int
-    generic: bool = True
-    meaning: str = ""
-
-    def __post_init__(self) -> None:
-        _sizes_as_ints(self, "expected")
-        if not isinstance(self.matrix, Mat):
-            raise TypeError("Rank: the matrix must be a matrix of the scene")
-        if type(self.expected) is not int or type(self.generic) is not bool:
-            raise TypeError("Rank: the expected rank is an int and generic a bool")
-
-
-@dataclass(frozen=True)
-class Count:
-    """An integer computed by the claim (e.g. from ranks) against the printed formula."""
-
-    value: int
-    expected: int
-    meaning: str = ""
-
-    def __post_init__(self) -> None:
-        _sizes_as_ints(self, "value", "expected")
-        if type(self.value) is not int or type(self.expected) is not int:
-            raise TypeError("Count: the value and the expected count are ints (an object that says it "
-                            "equals anything is refused)")
 
 
 Checks = Mapping[str, Any]

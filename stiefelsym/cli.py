@@ -909,6 +909,11 @@ def report(results_file: Path | None, report_dir: Path | None) -> None:
     except (OSError, UnicodeDecodeError, json.JSONDecodeError, KeyError, TypeError,
             AttributeError) as exc:
         raise InputError(f"{source} is not a stiefelsym results file: {_one_line(exc)}") from None
+    from .integrity import certificate_problems
+    problems = certificate_problems(results)
+    if problems:
+        raise InputError(f"{source}: refused, {len(problems)} record(s) without a valid certificate: {problems[0]} "
+                         "(`stiefelsym check` re-checks every record)")
     target = report_dir or source.parent
     _check_report_dir(target)
     mutation = _mutation(source.parent)
@@ -930,7 +935,8 @@ def report(results_file: Path | None, report_dir: Path | None) -> None:
 main.lazy = {"mutate": ("stiefelsym.cli_mutate", "mutate"),
              "tables": ("stiefelsym.cli_tables", "tables"),
              "flows": ("stiefelsym.cli_flows", "flows"),
-             "speed": ("stiefelsym.cli_speed", "speed")}
+             "speed": ("stiefelsym.cli_speed", "speed"),
+             "check": ("stiefelsym.cli_check", "check")}
 
 
 if __name__ == "__main__":  # pragma: no cover

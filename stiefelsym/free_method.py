@@ -25,6 +25,7 @@ from .free import FreeScene, FreeSolveError, NeedsCoordinates, RewritingError
 from .free.algebra import REFUSED, recording, refusals
 from .free.certificates import CertificateWriter
 from .free.rewriting import latex_text
+from .ir import TraceRefused
 
 
 def run_free(claim: Claim, func: Callable | None = None) -> Result:
@@ -59,6 +60,8 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
             checks = call_claim(func, scene)
     except NeedsCoordinates as exc:
         return undecided(f"needs coordinates: {exc.what}; decided by the fixed-size methods")
+    except TraceRefused as exc:
+        return undecided(f"needs coordinates or fixed sizes: {exc}; decided by the fixed-size methods")
     except (FreeSolveError, RewritingError) as exc:
         return touched() or undecided(f"outside the rewriting backend: {exc}")
     except (TypeError, ValueError, AttributeError, ArithmeticError) as exc:
@@ -103,6 +106,13 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
         res.residual = f"{pos}: nf = {_short(red.normal_form)}"
         return undecided(f"{len(open_entries)} residual entries have a nonzero normal form "
                          f"(e.g. {res.residual}); the fixed-size methods decide")
+    # the proof is about the graph traced with symbolic sizes: it must be the graph every fixed-size
+    # method evaluates (a claim that behaves otherwise when its sizes are symbols proves nothing)
+    why = same_graph_at_fixed_sizes(claim, func)
+    if why:
+        res.verdict, res.message = "error", why
+        res.seconds = time.perf_counter() - t0
+        return res
     # symbolic coefficients do not raise on a division by an identically zero expression: probe
     # the same claim code at an exact point of a fixed size first
     why = probe_divisions(claim, func)
@@ -136,6 +146,26 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
                        f"independent checker in {report.seconds:.3f}s; every entry has normal form 0; rules "
                        f"applied while building and reducing the residual: {names}")
     return res
+
+
+def same_graph_at_fixed_sizes(claim: Claim, func: Callable) -> str:
+    """"" when the claim's graph with symbolic sizes is its graph at its first sizes (the digest leaves
+    the values of sizes out); otherwise why not."""
+    from .ir import compile_claim
+    from .scene import REALIZATIONS
+    cons = REALIZATIONS[claim.realization]
+    free = compile_claim(func, None, None, (cons.name, cons.build)).digest()
+    sizes = list(claim.sizes)
+    for z in dict.fromkeys(sizes[:1] + [next((z for z in sizes if z.n >= 3), sizes[-1])]):
+        try:
+            fixed = compile_claim(func, z.n, z.r, (cons.name, cons.build)).digest()
+        except Exception as exc:    # noqa: BLE001 - a claim that does not trace at a size proves nothing
+            return f"the claim does not trace at ({z.n},{z.r}): {type(exc).__name__}: {exc}"
+        if fixed != free:
+            return (f"the claim's graph with symbolic sizes differs from its graph at ({z.n},{z.r}) (digest "
+                    f"{free[:12]} against {fixed[:12]}): it depends on whether its sizes are numbers, so a proof "
+                    "for every n, r would be about another computation than the fixed-size methods check")
+    return ""
 
 
 def probe_divisions(claim: Claim, func: Callable) -> str:

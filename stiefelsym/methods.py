@@ -25,7 +25,11 @@ from typing import Any, Callable
 import numpy as np
 
 from ._lazy import lazy
-from .claims import Claim, Count, Rank, deadline, run_claim
+from .claims import Claim, Count, Rank, deadline
+from .ir import compile_claim
+from .ir.evaluate import evaluate
+from .ir.passes import FLOAT_EXPONENT_LIMIT, coordinate_reads, outside_float_range
+from .scene import REALIZATIONS
 from .fields import (PRIME_LOW, PRIMES_IN_RANGE_LOWER, ConstantDegenerate, DegenerateError, DegreeField,
                      ErrNum, Field, FloatField, ModularField, RationalField, SymbolicBudget,
                      SymbolicField, random_prime)
@@ -167,7 +171,20 @@ def _float_entries(value: Any, name: str, u: float) -> list[tuple[str, Any]]:
 
 
 def call_claim(func: Callable, scene: Any) -> dict[str, Any]:
-    checks = run_claim(func, scene)
+    """A claim's checks on a method's scene: the claim's graph (traced once per size, never with
+    the scene's values) evaluated on the scene; the graph's looks at coordinates are recorded in
+    the scene's record first, whatever spaces the claim named."""
+    n, r = scene.n, scene.r
+    free = type(n) is not int
+    cons = REALIZATIONS[getattr(scene, "realization", None) or "standard"]
+    g = compile_claim(func, None if free else n, None if free else r, (cons.name, cons.build))
+    tracker = getattr(scene, "tracker", None)
+    if tracker is not None:
+        watched_spaces = {"?"} | set(tracker.spaces)
+        for what, inv in coordinate_reads(g).items():
+            if inv & watched_spaces:
+                tracker.touch(what)
+    checks = evaluate(g, scene)
     if not isinstance(checks, dict) or not checks:
         raise TypeError("a claim must return a non-empty dict of named checks")
     for k in checks:
@@ -1165,7 +1182,13 @@ def _float_component(claim: Claim, n: int, r: int, seed: int, func: Callable, op
                      comp: int) -> _FloatRun:
     run = _FloatRun("unresolved")
     nonzero_claim = claim.expect == "nonzero"
+    cons = REALIZATIONS[claim.realization]
+    wide = outside_float_range(compile_claim(func, n, r, (cons.name, cons.build)))
     for dps in FLOAT_LADDER:
+        if dps is None and wide:
+            run.log.append(f"float64 skipped: the constant {wide[0]} is outside its range "
+                           f"(2^-{FLOAT_EXPONENT_LIMIT}, 2^{FLOAT_EXPONENT_LIMIT})")
+            continue
         field = FloatField(dps)
         rng = random.Random(f"{seed}|{claim.id}|{n}|{r}|float" + (f"|component {comp}" if comp else ""))
         ctx = mpmath.workdps(dps) if dps else np.errstate(over="ignore", invalid="ignore")

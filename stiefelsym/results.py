@@ -64,6 +64,8 @@ class Result:
     derivation: list[str] = field(default_factory=list)
     #: for the dimension-free method: the cofactor certificates (JSON; see stiefelsym.certificate_check)
     certificate_data: dict[str, Any] | None = None
+    #: the digest of the claim's graph (at this size, or with symbolic sizes) the verdict is about
+    digest: str = ""
 
     @property
     def size(self) -> str:

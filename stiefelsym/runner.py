@@ -107,7 +107,10 @@ def _guarded(claim: Claim, size: Size | None, method: str, seed: int, func: Call
     replaces the worker)."""
     options = {"hard": hard_case(hard)} if hard else None
     try:
-        return _dispatch(claim, size, method, seed, func, options, in_worker, timeout)
+        res = _dispatch(claim, size, method, seed, func, options, in_worker, timeout)
+        if not res.digest:
+            res.digest = graph_digest(claim, size, func)
+        return res
     except (KeyboardInterrupt, Terminated):
         raise
     except MemoryError:
@@ -118,6 +121,19 @@ def _guarded(claim: Claim, size: Size | None, method: str, seed: int, func: Call
         from .isolate import ChildError
         from .methods import _describe
         return _error(claim, size, method, seed, str(exc) if isinstance(exc, ChildError) else _describe(exc))
+
+
+def graph_digest(claim: Claim, size: Size | None, func: Callable | None = None) -> str:
+    """The digest of the claim's graph at ``size`` (None: symbolic sizes), "" when it does not trace
+    (traced once per process and size: a cache hit after the run)."""
+    from .ir import compile_claim
+    from .scene import REALIZATIONS
+    cons = REALIZATIONS[claim.realization]
+    try:
+        return compile_claim(func or claim.func, size.n if size else None, size.r if size else None,
+                             (cons.name, cons.build)).digest()
+    except Exception:   # noqa: BLE001 - the run's verdict already says why the claim does not trace
+        return ""
 
 
 def _blank(claim: Claim, size: Size | None, method: str, seed: int | None) -> Result:

@@ -59,12 +59,18 @@ from .scene import ReverseScene, Scene, _LiftedScene
 Point = Mapping[Hashable, Mat]
 Coordinates = Sequence[tuple[Hashable, Mat]]
 
+from .ir.trace import TraceScene, primitive
+
 __all__ = ["derivative", "entries", "symmetric_entries", "hermitian_entries", "real_coordinates",
            "complex_coordinates", "euler_lagrange", "hamiltonian_flow", "double_point", "coupled_point",
            "complex_point", "real_complex_point", "ctranspose", "realify_real", "re_trace", "complex_diagonal"]
 
 
 def _coordinate_scene(s: Any, what: str) -> None:
+    if isinstance(s, TraceScene):
+        if s._t.n is None:
+            s._t.refuse(f"{what} needs coordinates (fixed n, r)")
+        return
     if not isinstance(engine_scene(s), Scene):
         raise _refused(getattr(s, "_tracker", None), what)   # recorded before it is raised
 
@@ -648,3 +654,12 @@ def complex_diagonal(M: Mat) -> list[tuple[Any, Any]]:
     """The diagonal entries (real part, imaginary part) of a realified complex square matrix."""
     m = M.shape[0] // 2
     return [(M[j, j], M[m + j, j]) for j in range(m)]
+
+# the functions that need the engine's scene (coordinates, derivatives at points of other phase
+# spaces) are single steps of a claim's graph; the points and the complex helpers are traced with it
+derivative = primitive(derivative, like={"F": "point"}, returns=("like", "F"))
+euler_lagrange = primitive(euler_lagrange, returns=2, like={"T": "velocity", "U": "position",
+                                                            "constraints": "position"})
+hamiltonian_flow = primitive(hamiltonian_flow, returns=2, like={"H": "point", "constraints": "point"})
+real_coordinates = primitive(real_coordinates)
+complex_coordinates = primitive(complex_coordinates)

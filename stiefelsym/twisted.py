@@ -26,11 +26,17 @@ from .fields import DegenerateError, Dual, DualField
 from .matrix import Mat, NeedsCoordinates, _refused
 from .view import engine_scene
 from .scene import Flow, Scene
+from .ir.trace import TraceScene, primitive
 
 Function = Callable[[Any], Any]
 
 
 def _scene(s: Any, what: str) -> Scene:
+    if isinstance(s, TraceScene):
+        # a coordinate helper traced with the claim: it reads the sizes, so it needs fixed ones
+        if s._t.n is None:
+            s._t.refuse(f"{what} needs coordinates (fixed n, r)")
+        return s
     s = engine_scene(s)
     if not isinstance(s, Scene):
         raise _refused(getattr(s, "_tracker", None), what)   # recorded before it is raised
@@ -332,3 +338,9 @@ __all__ = ["magnetic_matrix", "ambient_bracket", "constraint_bracket_matrix", "b
            "flow", "multiplier_flow", "form", "basis_vector", "coordinate_projector", "first_basis_vectors",
            "last_basis_vector", "leading_basis_vectors", "column_splittings", "at_point"]
 
+# the functions that need the engine's scene (its number system, its gradients and multipliers) are
+# single steps of a claim's graph; the coordinate helpers above are traced with the claim
+for _name in ("magnetic_matrix", "ambient_bracket", "constraint_bracket_matrix", "bracket", "ambient_flow", "flow",
+              "multiplier_flow", "form"):
+    globals()[_name] = primitive(globals()[_name])
+at_point = primitive(at_point, returns="scene")

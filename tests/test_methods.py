@@ -151,13 +151,13 @@ def test_rerun_command_after_failure():
 def cancellation(s):
     """1/((a_1 + q) - a_1) = 1/q for q = 10^-12: float64 loses 4 digits to rounding of a_1 + q."""
     q = s.q(1, 10**12)
-    a1 = s._param("a_1")
+    a1 = s.a[0]
     return {"cancellation": 1 / ((a1 + q) - a1) - 1 / q}
 
 
 def cancellation_wrong(s):
     q = s.q(1, 10**12)
-    a1 = s._param("a_1")
+    a1 = s.a[0]
     return {"cancellation": 1 / ((a1 + q) - a1) - 1 / (q * (1 + s.q(1, 10**6)))}
 
 
@@ -213,7 +213,7 @@ def float_residual(s):
 def test_a_broken_claim_is_an_error_verdict_not_a_crash(func, method):
     res = run_one(_claim(func), Size(3, 2), method, 0)
     assert res.verdict == "error" and not res.expected
-    assert "Error" in res.message
+    assert "Error" in res.message or "TraceRefused" in res.message
     if func is buggy:
         assert "test_methods.py" in res.message       # where in the claim it broke
 
@@ -272,7 +272,7 @@ def test_both_components_are_sampled_when_r_equals_n():
 
 
 def always_at_a_pole(s):
-    u = s._param("u")
+    u = s.scalar("u")
     return {"pole": 1 / (u - u) * s.X}
 
 

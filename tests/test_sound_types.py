@@ -606,7 +606,7 @@ def test_a_claim_that_branches_on_the_number_type_sees_one_type(method):
         return _frozen_by_type(s)
     c = Claim(id="frozen-by-type", paper=("t",), kind="id", section="t", func=probe, sizes=admissible(4))
     res = run_one(c, Size(4, 2), method, 0)
-    assert seen == {"Scalar"}, seen
+    assert seen == {"Tracer"}, seen
     assert res.verdict in PASSING, (res.verdict, res.message)
 
 
@@ -620,6 +620,11 @@ def test_a_refusal_the_claim_catches_is_still_recorded(method, func):
     on every method and recorded before the refusal is raised: catching it changes nothing."""
     c = Claim(id="caught", paper=("t",), kind="id", section="t", func=func, sizes=admissible(4))
     res = run_one(c, Size(3, 2), method, 0)
+    if func is _caught_str_read:
+        # no value to read: str() of a traced number is its kind, so it returns
+        # x - x on every method, a true residual (a comparison, ==, is refused and recorded)
+        assert res.verdict in PASSING, (res.verdict, res.message)
+        return
     assert res.verdict == "error", (res.verdict, res.message)
     assert any(w in res.message for w in ("refused", "never reads", "is the engine's")), res.message
 
@@ -700,7 +705,7 @@ def test_the_dimension_free_scene_hands_out_the_same_opaque_numbers():
         seen.update({type(s.tr(s.X.T @ s.X)).__name__, type(s.lam).__name__, type(s.q(1, 2)).__name__})
         return {"r": s.X - s.X}
     run_one(_claim(probe), None, "free", 0)
-    assert seen == {"Scalar"}, seen
+    assert seen == {"Tracer"}, seen
     res = run_one(_claim(_compares_a_trace_form), None, "free", 0)
     assert res.verdict == "undecided" and "comparison" in res.message, (res.verdict, res.message)
 
@@ -775,4 +780,5 @@ def _caught_block_mismatch(s):
 def test_sizes_that_fit_only_for_some_n_r_are_refused_on_record(func):
     res = run_one(_claim(func), None, "free", 0)
     assert res.verdict not in PASSING, (res.verdict, res.message)
-    assert run_one(_claim(func), Size(2, 1), "exact", 0).verdict == "fails"
+    # at n = 2r the spaces ℝⁿ and ℝʳ ⊕ ℝʳ still differ: refused there too (the refusal recorded)
+    assert run_one(_claim(func), Size(2, 1), "exact", 0).verdict in ("fails", "error")

@@ -1,0 +1,73 @@
+"""What a results file may claim: every verdict bound to the graph it is about.
+
+A record of ``results.json`` names the digest of the claim's graph (at its size, or
+with symbolic sizes).  :func:`certificate_problems` refuses a dimension-free
+``proved`` without a certificate, or with one the independent checker rejects;
+:func:`check_results` re-traces every record's claim, compares the digests, and
+re-derives every dimension-free certificate, so that a hand-edited file (a forged
+verdict, a certificate moved to another claim) is caught.
+"""
+from __future__ import annotations
+
+import json
+from typing import Any, Callable, Iterable
+
+from .certificate_check import check_certificate
+from .claims import Registry, Size
+
+
+def certificate_problems(records: Iterable[Any]) -> list[str]:
+    """Every dimension-free proof whose certificate is missing or rejected by the checker."""
+    out = []
+    for r in records:
+        get = r.get if isinstance(r, dict) else (lambda k, r=r: getattr(r, k, None))
+        if get("method") != "free" or get("verdict") != "proved":
+            continue
+        data = get("certificate_data")
+        if data is None:
+            out.append(f"{get('claim')}: a dimension-free proof without a certificate")
+            continue
+        rep = check_certificate(data)
+        if not rep.accepted:
+            out.append(f"{get('claim')}: certificate rejected by the independent checker: {rep.message}")
+    return out
+
+
+def _canonical(x: Any) -> str:
+    return json.dumps(x, sort_keys=True, separators=(",", ":"))
+
+
+def check_results(records: list[dict], registry: Registry, echo: Callable[[str], None] = print) -> int:
+    """Re-trace and re-check every record; the number of records that do not hold up."""
+    from .free_method import run_free
+    from .runner import graph_digest
+    bad = 0
+    for p in certificate_problems(records):
+        echo(f"REJECTED {p}")
+        bad += 1
+    free_done: dict[str, Any] = {}
+    for r in records:
+        cid, n, rr = r.get("claim"), r.get("n"), r.get("r")
+        where = f"{cid} {'all n, r' if n is None else f'({n},{rr})'} {r.get('method')}"
+        if cid not in registry:
+            echo(f"REJECTED {where}: no such claim in the catalog or the claims files")
+            bad += 1
+            continue
+        claim = registry.get(cid)
+        size = None if n is None else Size(n, rr)
+        digest = graph_digest(claim, size)
+        if not r.get("digest") or r.get("digest") != digest:
+            echo(f"REJECTED {where}: the record's graph digest {str(r.get('digest'))[:12] or '(none)'} is not the "
+                 f"claim's ({digest[:12] or 'it does not trace'})")
+            bad += 1
+            continue
+        if r.get("method") == "free" and r.get("verdict") == "proved":
+            again = free_done.get(cid)
+            if again is None:
+                again = free_done[cid] = run_free(claim)
+            if again.verdict != "proved" or _canonical(again.certificate_data) != _canonical(r.get("certificate_data")):
+                echo(f"REJECTED {where}: the certificate is not the one the claim's graph gives "
+                     f"(re-derived: {again.verdict})")
+                bad += 1
+    echo(f"{len(records)} records checked, {bad} rejected")
+    return bad

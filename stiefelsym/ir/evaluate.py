@@ -1,0 +1,276 @@
+"""Evaluation of a graph on an engine scene: every method's only way to run a claim.
+
+The evaluator gives each op of :mod:`.graph` its meaning on the values of one
+backend: scene attributes and methods are the engine scene's, the algebra is the
+backend's matrices and numbers, a traced function becomes a closure that
+evaluates its body for the scene (and arguments) the engine passes.  Values are
+computed once per node and per call of the function whose parameters they read.
+No claim code runs here.
+"""
+from __future__ import annotations
+
+import operator
+from fractions import Fraction
+from typing import Any, Callable
+
+from ..matrix import block as _block
+from .graph import Graph, Named, Ref, Size
+from .statements import Count, Rank
+from .trace import API, PRIMITIVES, VALUE_ATTRS
+
+
+class GraphError(ValueError):
+    """A graph that is not a trace (an op or a name outside the IR)."""
+
+
+_MISSING = object()
+
+
+def _deps(g: Graph) -> list[frozenset]:
+    """For every node, the functions whose parameters it reads (0: the claim's scene only)."""
+    cached = g.cache.get("deps")
+    if cached is not None:
+        return cached
+    deps: list[frozenset] = []
+    for i, (op, args) in enumerate(zip(g.ops, g.args)):
+        d: set = set()
+        if op == "scene" and args[0] != 0:
+            d.add(args[0])
+        elif op == "param":
+            d.add(args[0])
+        for j in g.refs(i):
+            d |= deps[j]
+        if op == "fn":
+            d.discard(args[0])
+        deps.append(frozenset(d))
+    g.cache["deps"] = deps
+    return deps
+
+
+class _Frame:
+    __slots__ = ("fn", "bind", "memo", "parent")
+
+    def __init__(self, fn: int, bind: dict, parent: "_Frame | None") -> None:
+        self.fn, self.bind, self.memo, self.parent = fn, bind, {}, parent
+
+
+class Evaluator:
+    """The values of one graph's nodes for one engine scene."""
+
+    def __init__(self, g: Graph, scene: Any) -> None:
+        self.g = g
+        if not g.cache.get("valid"):
+            bad = set(g.ops) - set(self._ops)
+            if bad:
+                raise GraphError(f"ops outside the IR: {', '.join(sorted(bad))}")
+            g.cache["valid"] = True
+        self.deps = _deps(g)
+        self.root = _Frame(0, {0: scene}, None)
+
+    def run(self) -> Any:
+        if self.g.output is None:
+            raise GraphError("the graph has no output")
+        memo = self.root.memo
+        for i, kernel in _program(self.g, self.deps):
+            memo[i] = kernel(memo, self)
+        return memo[self.g.output.i]
+
+    # -- values -----------------------------------------------------------------------------------
+    def value(self, ref: Ref, frame: _Frame) -> Any:
+        i = ref.i
+        deps = self.deps[i]
+        owner = frame
+        if deps:
+            while owner.fn != 0 and owner.fn not in deps:
+                owner = owner.parent
+        else:
+            owner = self.root
+        memo = owner.memo
+        v = memo.get(i, _MISSING)
+        if v is _MISSING:
+            v = memo[i] = self._ops[self.g.ops[i]](self, self.g.args[i], frame)
+        return v
+
+    def arg(self, a: Any, frame: _Frame) -> Any:
+        t = type(a)
+        if t is Ref:
+            return self.value(a, frame)
+        if t is Size:
+            scene = self.root.bind[0]
+            return a.k * getattr(scene, a.d) if a.k != 1 else getattr(scene, a.d)
+        if t is Named:
+            f = PRIMITIVES.get(a.qualname)
+            if f is None:
+                raise GraphError(f"unknown engine object {a.qualname!r}")
+            return f
+        if t is tuple:
+            return tuple(self.arg(x, frame) for x in a)
+        return a
+
+    def _kw(self, a: tuple, frame: _Frame) -> tuple[list, dict]:
+        args, kw = list(a), {}
+        if args and type(args[-1]) is Ref and self.g.ops[args[-1].i] == "kw":
+            kw = {k: self.arg(v, frame) for k, v in self.g.args[args.pop().i]}
+        return [self.arg(x, frame) for x in args], kw
+
+    def _lookup(self, key: Any, frame: _Frame) -> Any:
+        f = frame
+        while f is not None:
+            if key in f.bind:
+                return f.bind[key]
+            f = f.parent
+        raise GraphError(f"an unbound parameter {key!r}")
+
+    # -- the ops ------------------------------------------------------------------------------------
+    def _attr(self, a, frame):
+        obj, name = self.arg(a[0], frame), a[1]
+        if name not in API and name not in VALUE_ATTRS:
+            raise GraphError(f"an attribute outside the API: {name!r}")
+        return getattr(obj, name)
+
+    def _call(self, a, frame):
+        scene, name, args, kw = a
+        if name not in API:
+            raise GraphError(f"a scene method outside the API: {name!r}")
+        method = getattr(self.arg(scene, frame), name)
+        return method(*[self.arg(x, frame) for x in args], **{k: self.arg(v, frame) for k, v in kw})
+
+    def _entry(self, a, frame):
+        M = self.arg(a[0], frame)
+        return M[tuple(slice(*x[1:]) if type(x) is tuple else x for x in a[1:])]
+
+    def _prim(self, a, frame):
+        f = self.arg(a[0], frame)
+        args, kw = self._kw(a[1:], frame)
+        return f(*args, **kw)
+
+    def _block(self, a, frame):
+        rows, cols, blocks = a
+        vals = [self.arg(b, frame) for b in blocks]
+        return _block([vals[r * cols:(r + 1) * cols] for r in range(rows)])
+
+    def _binary(f):
+        def op(self, a, frame):
+            return f(self.arg(a[0], frame), self.arg(a[1], frame))
+        return op
+
+    _ops: dict = {
+        "add": _binary(operator.add), "sub": _binary(operator.sub), "matmul": _binary(operator.matmul),
+        "mul": _binary(operator.mul), "div": _binary(operator.truediv),
+        "neg": lambda self, a, frame: -self.arg(a[0], frame),
+        "T": lambda self, a, frame: self.arg(a[0], frame).T,
+        "inv": lambda self, a, frame: self.arg(a[0], frame).inv(),
+        "trace": lambda self, a, frame: self.arg(a[0], frame).trace(),
+        "pow": lambda self, a, frame: _power(self.arg(a[0], frame), a[1]),
+        "attr": _attr, "call": _call, "entry": _entry, "prim": _prim, "apply": _prim, "block": _block,
+        "item": lambda self, a, frame: self.arg(a[0], frame)[a[1]],
+        "scene": lambda self, a, frame: self._lookup(a[0], frame),
+        "param": lambda self, a, frame: self._lookup((a[0], a[1]), frame),
+        "fn": lambda self, a, frame: self._function(a, frame),
+        "list": lambda self, a, frame: [self.arg(x, frame) for x in a],
+        "tuple": lambda self, a, frame: tuple(self.arg(x, frame) for x in a),
+        "dict": lambda self, a, frame: {k: self.arg(v, frame) for k, v in zip(a[0], a[1])},
+        "const": lambda self, a, frame: a[0],
+        "kw": lambda self, a, frame: {k: self.arg(v, frame) for k, v in a},
+        "rank": lambda self, a, frame: Rank(self.arg(a[0], frame), a[1], a[2], a[3]),
+        "count": lambda self, a, frame: Count(a[0], a[1], a[2]),
+    }
+    del _binary
+
+    def compute(self, i: int, frame: _Frame) -> Any:
+        op = self.g.ops[i]
+        f = self._ops.get(op)
+        if f is None:
+            raise GraphError(f"an op outside the IR: {op!r}")
+        return f(self, self.g.args[i], frame)
+
+    def _function(self, a: tuple, frame: _Frame) -> Any:
+        k, arity, body = a
+
+        def fn(*args: Any) -> Any:
+            if len(args) != arity:
+                raise TypeError(f"a traced function of {arity} arguments called with {len(args)}")
+            bind = {k: args[0]}
+            for j, x in enumerate(args[1:], 1):
+                bind[(k, j)] = x
+            return self.arg(body, _Frame(k, bind, frame))
+        fn.__name__ = f"traced_function_{k}"
+        return fn
+
+
+def _power(x: Any, k: int) -> Any:
+    """x^k by products (square and multiply; a negative k: the reciprocal), the same on every number
+    system whether or not it has a power of its own."""
+    if k < 0:
+        return 1 / _power(x, -k)
+    if k == 0:
+        return x * 0 + 1
+    acc, base = None, x
+    while k:
+        if k & 1:
+            acc = base if acc is None else acc * base
+        k >>= 1
+        if k:
+            base = base * base
+    return acc
+
+
+def _kernel(op: str, a: tuple) -> Callable:
+    """The computation of one node at the top level from the values of its arguments (``m``: the
+    values so far, by node)."""
+    f = _ARITH.get(op)
+    if f is not None:
+        x, y = a
+        if type(x) is Ref and type(y) is Ref:
+            i, j = x.i, y.i
+            return lambda m, ev: f(m[i], m[j])
+        if type(x) is Ref and type(y) in (int, Fraction):
+            i = x.i
+            return lambda m, ev: f(m[i], y)
+        if type(y) is Ref and type(x) in (int, Fraction):
+            j = y.i
+            return lambda m, ev: f(x, m[j])
+    if op == "neg" and type(a[0]) is Ref:
+        i = a[0].i
+        return lambda m, ev: -m[i]
+    if op == "T" and type(a[0]) is Ref:
+        i = a[0].i
+        return lambda m, ev: m[i].T
+    if op == "item" and type(a[0]) is Ref:
+        i, key = a[0].i, a[1]
+        return lambda m, ev: m[i][key]
+    if op == "entry" and type(a[0]) is Ref and type(a[1]) is int and type(a[2]) is int:
+        i, idx = a[0].i, (a[1], a[2])
+        return lambda m, ev: m[i][idx]
+    if op == "attr" and type(a[0]) is Ref and (a[1] in API or a[1] in VALUE_ATTRS):
+        i, name = a[0].i, a[1]
+        return lambda m, ev: getattr(m[i], name)
+    return lambda m, ev: ev._ops[op](ev, a, ev.root)
+
+
+_ARITH = {"add": operator.add, "sub": operator.sub, "matmul": operator.matmul, "mul": operator.mul,
+          "div": operator.truediv}
+
+
+def _program(g: Graph, deps: list) -> list:
+    """The nodes the output needs at the top level (not inside a traced function), in order, each
+    with its kernel (made once per graph)."""
+    prog = g.cache.get("program")
+    if prog is not None:
+        return prog
+    need = set()
+    stack = [g.output.i]
+    while stack:
+        i = stack.pop()
+        if i in need or deps[i]:
+            continue
+        need.add(i)
+        if g.ops[i] != "fn":
+            stack.extend(g.refs(i))
+    prog = g.cache["program"] = [(i, _kernel(g.ops[i], g.args[i])) for i in sorted(need)]
+    return prog
+
+
+def evaluate(g: Graph, scene: Any) -> Any:
+    """The value of a graph's output on an engine scene."""
+    return Evaluator(g, scene).run()

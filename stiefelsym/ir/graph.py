@@ -1,0 +1,150 @@
+"""The IR: a typed, hash-consed DAG of the operations a claim performed on its scene.
+
+A node is ``(op, args)``; an argument is a reference to an earlier node (``Ref``),
+an allow-listed literal (``int``, ``Fraction``, ``str``, ``bool``, ``None``), a
+size expression (``Size``), a named engine object (``Named``: a function or
+constant of the engine, by its qualified name) or a tuple of these.  Nodes are
+numbered in the order the claim made them and shared when equal (common
+subexpressions are one node).  The graph holds no number of any backend: it is
+pure data, the same for every method, and its digest names it.
+
+Ops (the evaluator, :mod:`.evaluate`, gives each its meaning):
+
+* ``scene``: the scene of a claim (arg: 0) or the scene parameter of a function
+  (arg: the function's number);
+* ``param``: a further parameter of a function (function, index);
+* ``attr``: an attribute of the API (``X``, ``Phi``, ``lam``...) of a scene or of
+  a flow (object, name);
+* ``call``: a scene method of the API (scene, name, args...), with keyword
+  arguments as a trailing ``("kw", ((name, value), ...))``;
+* ``prim``: an engine function recorded as one step (``Named``, args...);
+* ``apply``: an operator the engine handed out, applied (operator, args...);
+* ``add sub neg matmul mul rmul div rdiv pow T``: the matrix and scalar algebra;
+* ``entry``: an entry or a block of a matrix (matrix, i, j), ``item``: a part of
+  a structured value (value, key);
+* ``block``: a block matrix (rows, cols, blocks...);
+* ``list tuple dict``: containers (the claim's returned structure and arguments);
+* ``fn``: a function the claim handed to the engine, traced once (number, arity,
+  body); ``rank``, ``count``: the claim's rank and count statements.
+"""
+from __future__ import annotations
+
+import hashlib
+from dataclasses import dataclass
+from fractions import Fraction
+from typing import Any
+
+
+@dataclass(frozen=True)
+class Ref:
+    """A reference to the node numbered ``i``."""
+    i: int
+
+
+@dataclass(frozen=True)
+class Named:
+    """An engine object (a function, an operator space...) by its qualified name."""
+    qualname: str
+
+
+@dataclass(frozen=True)
+class Size:
+    """A size expression ``k·d`` (d: "n" or "r") with, at a fixed size, its value."""
+    k: int
+    d: str
+    value: int | None
+
+    def text(self) -> str:
+        return self.d if self.k == 1 else f"{self.k}{self.d}"
+
+
+LITERALS = (int, Fraction, str, bool, type(None))
+
+
+def _encode(a: Any) -> str:
+    """Canonical text of an argument (what the digest hashes); the value of a size is left out, so
+    that a graph traced with symbolic sizes and one traced at a size have the same digest when the
+    claim did the same thing."""
+    t = type(a)
+    if t is Ref:
+        return f"%{a.i}"
+    if t is Size:
+        return f"<{a.k}{a.d}>"
+    if t is Named:
+        return f"@{a.qualname}"
+    if t is tuple:
+        return "(" + ",".join(_encode(x) for x in a) + ")"
+    if t is Fraction:
+        return f"{a.numerator}/{a.denominator}"
+    if t is bool or a is None:
+        return repr(a)
+    if t is int:
+        return str(a)
+    if t is str:
+        return repr(a)
+    raise TypeError(f"not an IR argument: {type(a).__name__}")
+
+
+class Graph:
+    """The nodes of one trace, with the claim's output (a ``Ref`` to a ``dict`` node)."""
+
+    __slots__ = ("ops", "args", "index", "output", "refusals", "fns", "cache", "sizes")
+
+    def __init__(self) -> None:
+        self.ops: list[str] = []
+        self.args: list[tuple] = []
+        self.index: dict[tuple, int] = {}
+        self.output: Ref | None = None
+        #: every refused operation of the trace, in order (a refusal the claim caught still counts)
+        self.refusals: list[str] = []
+        #: the number of functions traced so far
+        self.fns = 0
+        #: what the passes computed of this graph (not part of its digest)
+        self.cache: dict[str, Any] = {}
+        #: the size (n, r) it was traced at, or None (symbolic sizes)
+        self.sizes: tuple[int, int] | None = None
+
+    def add(self, op: str, args: tuple) -> Ref:
+        key = (op, args)
+        i = self.index.get(key)
+        if i is None:
+            i = self.index[key] = len(self.ops)
+            self.ops.append(op)
+            self.args.append(args)
+        return Ref(i)
+
+    def __len__(self) -> int:
+        return len(self.ops)
+
+    def lines(self) -> list[str]:
+        return [f"%{i} = {op}{_encode(a)}" for i, (op, a) in enumerate(zip(self.ops, self.args))] + \
+               [f"out {_encode(self.output) if self.output is not None else '-'}"]
+
+    def digest(self) -> str:
+        d = self.cache.get("digest")
+        if d is not None:
+            return d
+        h = hashlib.sha256()
+        for line in self.lines():
+            h.update(line.encode())
+            h.update(b"\n")
+        d = self.cache["digest"] = h.hexdigest()
+        return d
+
+    def refs(self, i: int):
+        """The nodes node ``i`` reads."""
+        stack = list(self.args[i])
+        while stack:
+            a = stack.pop()
+            if type(a) is Ref:
+                yield a.i
+            elif type(a) is tuple:
+                stack.extend(a)
+
+    def __getstate__(self):
+        return (self.ops, self.args, self.output, self.refusals, self.fns, self.sizes)
+
+    def __setstate__(self, state) -> None:
+        self.ops, self.args, self.output, self.refusals, self.fns, self.sizes = state
+        self.index = {(o, a): i for i, (o, a) in enumerate(zip(self.ops, self.args))}
+        self.cache = {}

@@ -1,0 +1,307 @@
+"""Passes over a graph: what a method decides from the claim's structure, before any value exists.
+
+* :func:`coordinate_reads`: the looks at coordinates that break the equivariance
+  reduction, decided from the graph whatever spaces the claim named: an entry or
+  a block of a matrix one of whose sides involves ℝⁿ (structurally: built from
+  X, P, A and the other n-sided objects, or sized by plain ints), and a constant
+  matrix on such a side that is not a multiple of I.
+* :func:`constants`: the exact constants of the graph (for the float method's
+  range check).
+"""
+from __future__ import annotations
+
+from fractions import Fraction
+
+from .graph import Graph, Ref, Size
+
+_N, _R = "n", "r"
+
+_LEAF_SPACES = {"X": (_N, _R), "P": (_N, _R), "Y": (_N, _R), "Q": (_N, _R),
+                "A": (_N, _N), "Ainv": (_N, _N), "Phi": (_N, _N), "In": (_N, _N), "xi": (_N, _N),
+                "zeta": (_N, _N), "Psi": (_R, _R), "Ir": (_R, _R), "eta": (_R, _R), "theta": (_R, _R)}
+
+
+class _Sides:
+    """Union-find over the spaces of the rows and columns of the graph's matrices.
+
+    A space is an atom (ℝⁿ, ℝʳ), a variable (a side sized by a plain int: unknown until an operation
+    joins it to another side), a direct sum (the side of a block matrix) or opaque (a side of an
+    engine value: it may be anything)."""
+
+    N, R = 0, 1      # the atoms, made first
+
+    def __init__(self) -> None:
+        self.parent: list[int] = []
+        self.atom: list[str | None] = []       # "n", "r", "opaque" or None (a variable)
+        self.parts: list[tuple] = []
+
+    def new(self, atom: str | None = None, parts: tuple = ()) -> int:
+        self.parent.append(len(self.parent))
+        self.atom.append(atom)
+        self.parts.append(parts)
+        return len(self.parent) - 1
+
+    def find(self, x: int) -> int:
+        while self.parent[x] != x:
+            self.parent[x] = self.parent[self.parent[x]]
+            x = self.parent[x]
+        return x
+
+    def union(self, a: int, b: int) -> None:
+        a, b = self.find(a), self.find(b)
+        if a == b:
+            return
+        ta, tb = self.atom[a], self.atom[b]
+        if ta == "opaque" or tb == "opaque":
+            # joined with an engine value's side: a variable may now be anything (an atom stays itself)
+            other = b if ta == "opaque" else a
+            if self.atom[other] is None:
+                self.atom[other] = "opaque"
+            return
+        if ta is None:
+            atom = tb
+        elif tb is None or ta == tb:
+            atom = ta
+        else:
+            atom = "opaque"                     # a join of ℝⁿ and ℝʳ (n = r): either
+        self.parent[b] = a
+        self.atom[a] = atom
+        self.parts[a] = self.parts[a] or self.parts[b]
+
+    def involves_n(self, x: int, seen: frozenset = frozenset()) -> bool:
+        x = self.find(x)
+        if self.atom[x] in ("n", "opaque"):
+            return True
+        if x in seen:
+            return False
+        return any(self.involves_n(p, seen | {x}) for p in self.parts[x])
+
+
+def _spaces(g: Graph) -> tuple["_Sides", list]:
+    cached = g.cache.get("sides")
+    if cached is not None:
+        return cached
+    S = _Sides()
+    n_atom, r_atom = S.new("n"), S.new("r")
+    assert (n_atom, r_atom) == (_Sides.N, _Sides.R)
+    opaque = S.new("opaque")
+    nv, rv = g.sizes if g.sizes is not None else (None, None)
+
+    def atom(d: str) -> int:
+        return n_atom if d == "n" else r_atom
+
+    def sized(a) -> int:
+        if type(a) is Size:
+            return atom(a.d) if a.k == 1 else S.new(parts=tuple(atom(a.d) for _ in range(a.k)))
+        return S.new()
+
+    def tagged(tag: str, m) -> int:
+        if tag in ("n", "r") and m is not None and m == (nv if tag == "n" else rv):
+            return atom(tag)
+        return S.new()
+
+    sides: list = []
+
+    def of(a):
+        return sides[a.i] if type(a) is Ref else None
+
+    for op, a in zip(g.ops, g.args):
+        sd = None
+        if op == "attr":
+            if a[1] in _LEAF_SPACES:
+                sd = tuple(atom(x) for x in _LEAF_SPACES[a[1]])
+            elif a[1] in ("Xdot", "Pdot"):
+                sd = (n_atom, r_atom)
+            elif a[1] in ("Zc", "Zc_dot"):
+                sd = (S.new(parts=(n_atom, n_atom)), S.new(parts=(r_atom, r_atom)))
+            elif a[1] not in ("lam", "kappa", "eps"):
+                sd = (opaque, opaque)
+        elif op == "call":
+            name, args = a[1], a[2]
+            if name == "resolvent":
+                sd = (n_atom, n_atom)
+            elif name == "generic":
+                sd = (atom(args[1]), atom(args[2]))
+            elif name == "zeros":
+                sd = (sized(args[0]), sized(args[1]))
+            elif name == "identity":
+                x = sized(args[0])
+                sd = (x, x)
+            elif name == "scalar_matrix":
+                x = sized(args[1])
+                sd = (x, x)
+            elif name == "general_params":
+                sd = (sized(args[1]), sized(args[2]))
+            elif name == "mat":
+                rows, tags = args
+                if type(rows) is Ref and g.ops[rows.i] == "list":
+                    cells = g.args[rows.i]
+                    m = len(cells)
+                    k = len(g.args[cells[0].i]) if m and type(cells[0]) is Ref else 0
+                    sd = (tagged(tags[0], m), tagged(tags[1], k))
+                else:
+                    sd = (S.new(), S.new())
+            elif name == "conj":
+                sd = of(args[0])
+            elif name == "d":
+                body = g.args[args[0].i][2] if type(args[0]) is Ref and g.ops[args[0].i] == "fn" else None
+                sd = of(body) if type(body) is Ref and of(body) else (opaque, opaque)
+            elif name == "realify":
+                u, v = of(args[0]), of(args[1])
+                if u and v:
+                    S.union(u[0], v[0])
+                    S.union(u[1], v[1])
+                    sd = (S.new(parts=(u[0], u[0])), S.new(parts=(u[1], u[1])))
+            elif name not in ("tr", "killing", "q", "const", "scalar", "bracket", "canonical_bracket"):
+                sd = (opaque, opaque)
+        elif op in ("T", "inv"):
+            x = of(a[0])
+            sd = (x[1], x[0]) if x else None
+        elif op in ("add", "sub"):
+            x, y = of(a[0]), of(a[1])
+            if x and y:
+                S.union(x[0], y[0])
+                S.union(x[1], y[1])
+            sd = x or y
+        elif op == "matmul":
+            x, y = of(a[0]), of(a[1])
+            if x and y:
+                S.union(x[1], y[0])
+                sd = (x[0], y[1])
+            else:
+                sd = (opaque, opaque)
+        elif op in ("mul", "div"):
+            sd = of(a[0]) or of(a[1])
+        elif op in ("neg", "pow"):
+            sd = of(a[0])
+        elif op == "entry":
+            sd = (S.new(), S.new()) if any(type(i) is tuple for i in a[1:]) else None
+        elif op == "block":
+            rows, cols, blocks = a
+            bs = [of(b) or (opaque, opaque) for b in blocks]
+            rparts, cparts = [], []
+            for i in range(rows):
+                row = bs[i * cols:(i + 1) * cols]
+                for b in row[1:]:
+                    S.union(row[0][0], b[0])
+                rparts.append(row[0][0])
+            for j in range(cols):
+                col = bs[j::cols]
+                for b in col[1:]:
+                    S.union(col[0][1], b[1])
+                cparts.append(col[0][1])
+            sd = (S.new(parts=tuple(rparts)), S.new(parts=tuple(cparts)))
+        elif op == "item":
+            sd = _element(g, a[0], a[1], sides, (opaque, opaque))
+        elif op in ("list", "tuple", "dict", "fn"):
+            sd = None
+        elif op in ("prim", "apply", "param"):
+            sd = (opaque, opaque)
+        sides.append(sd)
+    g.cache["sides"] = (S, sides)
+    return S, sides
+
+
+def _element(g: Graph, base: Ref, key, sides: list, default):
+    """The sides of a part of a structured value, where the graph says what it is: a part of a
+    container, of a parameter shaped like a point of the claim's, of a derivative of a function
+    (shaped like the function's value), of a gradient (two n x r matrices)."""
+    for _ in range(64):
+        op, a = g.ops[base.i], g.args[base.i]
+        if op in ("list", "tuple"):
+            if type(key) is int and 0 <= key < len(a):
+                el = a[key]
+                return sides[el.i] if type(el) is Ref else None
+            return default
+        if op == "dict":
+            keys, vals = a
+            if key in keys:
+                el = vals[keys.index(key)]
+                return sides[el.i] if type(el) is Ref else None
+            return default
+        if op == "param" and len(a) == 3 and type(a[2]) is Ref:
+            base = a[2]
+            continue
+        if op == "call" and a[1] == "d":
+            f = a[2][0]
+            base = g.args[f.i][2]
+            continue
+        if op == "call" and a[1] == "gradient":
+            return (_Sides.N, _Sides.R)
+        return default
+    return default
+
+
+def coordinate_reads(g: Graph) -> dict[str, frozenset]:
+    """The looks at coordinates the graph makes that break the equivariance reduction by O(n)
+    (each with the spaces it involves), whatever spaces the claim named:
+
+    * an entry or a block of a matrix with a side on ℝⁿ (or on an engine value's side);
+    * a matrix of given entries (``s.mat``) with a side on ℝⁿ: not a multiple of I (a matrix of
+      fresh parameters, ``s.general_params``, is generic and moves with O(n));
+    * a block matrix used as a matrix on ℝⁿ (a splitting of ℝⁿ into coordinate blocks).
+    Entries of ℝʳ-sided matrices are recorded too (for charts that also reduce by O(r))."""
+    cached = g.cache.get("reads")
+    if cached is not None:
+        return cached
+    S, sides = _spaces(g)
+    reads: dict[str, frozenset] = {}
+
+    def add(what: str, inv: set) -> None:
+        reads[what] = reads.get(what, frozenset()) | frozenset(inv)
+
+    def spaces_of(sd) -> set:
+        out = set()
+        for x in sd:
+            if S.involves_n(x):
+                out.add("n")
+            root = S.find(x)
+            if S.atom[root] == "r":
+                out.add("r")
+        return out
+
+    for i, (op, a) in enumerate(zip(g.ops, g.args)):
+        if op == "entry":
+            sd = sides[a[0].i] if type(a[0]) is Ref else None
+            inv = spaces_of(sd) if sd else {"n"}
+            if inv:
+                add("an entry or a block of a matrix on " + _text(inv), inv)
+        elif op == "call" and a[1] == "mat" and sides[i]:
+            inv = spaces_of(sides[i]) & {"n"}
+            if inv:
+                add("a constant matrix on R^n", inv)
+        elif op == "block" and sides[i]:
+            if any(S.atom[S.find(x)] in ("n", "opaque") for x in sides[i]):
+                add("a block splitting of R^n", {"n"})
+    g.cache["reads"] = reads
+    return reads
+
+
+def _text(inv) -> str:
+    return " and ".join({"n": "R^n", "r": "R^r"}[x] for x in sorted(inv))
+
+
+def constants(g: Graph) -> list:
+    """The exact constants of the graph (ints and Fractions in any argument)."""
+    out = []
+
+    def walk(x):
+        if type(x) is tuple:
+            for y in x:
+                walk(y)
+        elif type(x) in (int, Fraction) and type(x) is not bool:
+            out.append(x)
+    for a in g.args:
+        walk(a)
+    return out
+
+
+#: the exponent range in which a constant's float64 value and its error term are normal numbers
+FLOAT_EXPONENT_LIMIT = 1000
+
+
+def outside_float_range(g: Graph) -> list:
+    """The constants of the graph that float64 cannot carry with a meaningful error term (|c| above
+    2^1000, or nonzero below 2^-1000): the float method starts at high precision instead."""
+    hi, lo = Fraction(2) ** FLOAT_EXPONENT_LIMIT, Fraction(1, 2 ** FLOAT_EXPONENT_LIMIT)
+    return [c for c in constants(g) if c and not lo < abs(Fraction(c)) < hi]

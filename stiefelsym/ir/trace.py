@@ -1,0 +1,905 @@
+"""Tracing: a claim runs on tracers that hold no value, no number system and no backend.
+
+A tracer is a node of the graph being built, with its kind (a matrix, a number,
+a scene, or an engine value of unknown kind) and, for a matrix, its shape.  The
+scene a claim gets (:class:`TraceScene`) offers the documented API and nothing
+else; what it returns are tracers again.  So claim code can branch only on what
+every method shares: the sizes (at a fixed size) and the structure of what it
+built.  Every refused operation raises :class:`TraceRefused` with a message that
+does not depend on the method (no method runs during a trace), and is recorded
+in the graph first, so a claim that catches the refusal is still refused.
+
+Functions the claim hands to the engine (a Hamiltonian, a function to
+differentiate, an operator's argument) are traced once, as ``fn`` nodes whose
+parameters are a scene and further tracers; the engine later calls the
+evaluated function, never the claim's code.  Engine helpers that need more
+than the scene's API are :func:`primitive`: inside a trace a call to one is a
+single node.
+"""
+from __future__ import annotations
+
+import functools
+import inspect
+from fractions import Fraction
+from typing import Any, Callable
+
+from .graph import Graph, Named, Ref, Size
+from .statements import Count, Rank
+
+
+class TraceRefused(TypeError):
+    """A claim asked its scene for something the IR does not hold (the same message on every method)."""
+
+
+#: the traces running (innermost last); engine primitives called while a trace runs are recorded
+_ACTIVE: list["Trace"] = []
+
+#: engine functions recorded as single steps, by qualified name
+PRIMITIVES: dict[str, Callable] = {}
+#: engine constants a claim may hand to a primitive, by identity
+_NAMED: dict[int, tuple[str, Any]] = {}
+
+
+def primitive(f: Callable | None = None, *, returns: Any = None, like: dict[str, str] | None = None) -> Any:
+    """Mark an engine function as one step of the IR: called while a claim is traced, it becomes a
+    ``prim`` node (its function arguments traced once); otherwise it runs as written.
+
+    ``returns``: the structure of its value for claim code (None: an engine value; k: a tuple of
+    k values; "scene": a scene).  ``like``: for a function argument, the argument whose structure
+    its second parameter has (a point of a phase space of the caller's)."""
+    if f is None:
+        return lambda g: primitive(g, returns=returns, like=like)
+    qual = f"{f.__module__}.{f.__qualname__}"
+    PRIMITIVES[qual] = f
+    sig = inspect.signature(f)
+
+    @functools.wraps(f)
+    def wrapper(*args, **kw):
+        if _ACTIVE:
+            shapes = {}
+            if like or type(returns) is tuple:
+                bound = sig.bind(*args, **kw).arguments
+                shapes = {bound[name]: bound[other] for name, other in (like or {}).items() if name in bound}
+                if type(returns) is tuple and returns[1] in bound:
+                    shapes["__returns__"] = bound[returns[1]]
+            return _ACTIVE[-1].prim(qual, args, kw, returns, shapes)
+        return f(*args, **kw)
+    wrapper.__ir_primitive__ = qual          # type: ignore[attr-defined]
+    _NAMED[id(wrapper)] = (qual, wrapper)
+    return wrapper
+
+
+def named(qualname: str, obj: Any) -> Any:
+    """Register an engine constant (an operator space, an engine function) a claim may pass on."""
+    _NAMED[id(obj)] = (qualname, obj)
+    PRIMITIVES.setdefault(qualname, obj)
+    return obj
+
+
+def is_tracer(x: Any) -> bool:
+    return isinstance(x, (Tracer, TraceScene))
+
+
+# ---------------------------------------------------------------------------------------------
+# sizes
+
+class Dim:
+    """A size ``k·n`` or ``k·r`` as claim code sees it.  At a fixed size it is its int in every use;
+    traced with symbolic sizes, it may only be multiplied by an int and used as a size of the
+    scene's blocks, and every other use is refused (and recorded)."""
+
+    __slots__ = ("_size", "_trace")
+
+    def __init__(self, size: Size, trace: "Trace") -> None:
+        object.__setattr__(self, "_size", size)
+        object.__setattr__(self, "_trace", trace)
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        raise AttributeError("a size is read-only")
+
+    def _int(self, what: str = "as a number") -> int:
+        v = self._size.value
+        if v is None:
+            self._trace.refuse(f"a size ({self._size.text()}) used {what}: the claim needs fixed sizes")
+        return v
+
+    def _statement_int(self, what: str) -> int:
+        return self._int(f"in {what}")
+
+    def __mul__(self, c: Any) -> Any:
+        if type(c) is int and type(c) is not bool:
+            s = self._size
+            return Dim(Size(s.k * c, s.d, None if s.value is None else s.value * c), self._trace)
+        return self._int() * (c._int() if type(c) is Dim else c)
+
+    __rmul__ = __mul__
+
+    def __repr__(self) -> str:
+        return repr(self._int("in text"))
+
+    def __hash__(self) -> int:
+        return hash(self._int("as a key"))
+
+
+def _dim_op(name: str):
+    def op(self, *args):
+        v = self._int()
+        return getattr(v, name)(*[a._int() if type(a) is Dim else a for a in args])
+    op.__name__ = name
+    return op
+
+
+for _name in ("__add__", "__radd__", "__sub__", "__rsub__", "__floordiv__", "__rfloordiv__", "__truediv__",
+              "__rtruediv__", "__mod__", "__rmod__", "__pow__", "__rpow__", "__neg__", "__pos__", "__abs__",
+              "__int__", "__index__", "__float__", "__bool__", "__eq__", "__ne__", "__lt__", "__le__", "__gt__",
+              "__ge__", "__str__", "__format__", "__divmod__", "__rdivmod__", "__round__", "__complex__"):
+    setattr(Dim, _name, _dim_op(_name))
+
+
+def _val(a: Any) -> int | None:
+    """The value of a size (an int, a :class:`Size` at a fixed size), or None."""
+    return a if type(a) is int else a.value if type(a) is Size else None
+
+
+def _same_size(a: Any, b: Any) -> bool | None:
+    """Whether two sizes agree (for sizes of the scene: the same multiple of the same space); None
+    when it cannot be told."""
+    if a is None or b is None:
+        return None
+    if type(a) is Size and type(b) is Size:
+        return (a.k, a.d) == (b.k, b.d)
+    va, vb = _val(a), _val(b)
+    if va is None or vb is None:
+        return None
+    return va == vb
+
+
+def _add_sizes(a: Any, b: Any) -> Any:
+    if type(a) is Size and type(b) is Size and a.d == b.d:
+        return Size(a.k + b.k, a.d, None if a.value is None or b.value is None else a.value + b.value)
+    va, vb = _val(a), _val(b)
+    return None if va is None or vb is None else va + vb
+
+
+# ---------------------------------------------------------------------------------------------
+# tracers
+
+MAT, SCALAR, ANY = "matrix", "number", "value"
+
+
+class Tracer:
+    """A node of the graph as claim code holds it: a matrix, a number, or an engine value."""
+
+    __slots__ = ("_t", "_r", "_kind", "_shape")
+    __array_ufunc__ = None          # numpy hands every operation back to the tracer
+    __array_priority__ = 1000
+
+    def __init__(self, t: "Trace", r: Ref, kind: str, shape: tuple = (None, None)) -> None:
+        object.__setattr__(self, "_t", t)
+        object.__setattr__(self, "_r", r)
+        object.__setattr__(self, "_kind", kind)
+        object.__setattr__(self, "_shape", shape)
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        raise AttributeError("a traced value is read-only")
+
+    # -- what has no meaning on a graph -----------------------------------------------------
+    def _value_read(self, *args: Any) -> Any:
+        self._t.refuse(f"the value of a traced {self._kind} was read (claims compute with values; "
+                       "they never look at them)")
+
+    def _comparison(self, *args: Any) -> Any:
+        self._t.refuse(f"a comparison of a traced {self._kind} (claims compute with values; "
+                       "they never look at them)")
+
+    __bool__ = __float__ = __int__ = __index__ = __complex__ = __round__ = _value_read
+    __lt__ = __le__ = __gt__ = __ge__ = __eq__ = __ne__ = _comparison
+    __hash__ = object.__hash__
+    __array__ = _value_read
+
+    def __len__(self) -> int:
+        return self._t.refuse(f"the length of a traced {self._kind} is not known")
+
+    def __iter__(self):
+        if self._kind == MAT:
+            return self._t.refuse("a matrix is not iterable: read entries as M[i, j]")
+        return self._t.refuse(f"a traced {self._kind} is not iterable")
+
+    def __repr__(self) -> str:
+        if self._kind == MAT:
+            m, k = (("?" if x.value is None else x.value) if type(x) is Size else "?" if x is None else x
+                    for x in self._shape)
+            return f"<traced {m}x{k} matrix>"
+        return f"<traced {self._kind}>"
+
+    __str__ = __repr__
+
+    def __format__(self, spec: str) -> str:
+        return repr(self)
+
+    def __reduce__(self):
+        return self._t.refuse("a traced value cannot be pickled")
+
+    def __copy__(self):
+        return self
+
+    def __deepcopy__(self, memo):
+        return self
+
+    # -- shape --------------------------------------------------------------------------------
+    @property
+    def shape(self) -> tuple:
+        if self._kind != MAT or None in self._shape:
+            return self._t.refuse(f"the shape of a traced {self._kind} is not known")
+        return tuple(Dim(s, self._t) if type(s) is Size else s for s in self._shape)
+
+    @property
+    def tags(self) -> tuple:
+        """The spaces of a matrix's rows and columns as its sizes give them ('n', 'r', or '?')."""
+        if self._kind != MAT:
+            return self._t.refuse(f"a traced {self._kind} has no spaces")
+        return tuple(x.d if type(x) is Size and x.k == 1 else "?" for x in self._shape)
+
+    def inv(self) -> "Tracer":
+        """The inverse of a square matrix."""
+        if self._kind == SCALAR or _same_size(*self._shape) is False:
+            return self._t.refuse("the inverse of a matrix that is not square")
+        return self._t.new("inv", (self._r,), self._kind, self._shape[::-1])
+
+    def trace(self) -> "Tracer":
+        """The trace of a square matrix."""
+        if self._kind == SCALAR or _same_size(*self._shape) is False:
+            return self._t.refuse("the trace of a matrix that is not square")
+        return self._t.new("trace", (self._r,), SCALAR if self._kind == MAT else ANY)
+
+    @property
+    def T(self) -> "Tracer":
+        if self._kind == SCALAR:
+            return self._t.refuse("a number has no transpose")
+        return self._t.new("T", (self._r,), self._kind, self._shape[::-1])
+
+    # -- algebra ------------------------------------------------------------------------------
+    def _sum(self, o: Any, op: str, swap: bool = False) -> "Tracer":
+        t = self._t
+        a = t.arg(o)
+        kind_o = o._kind if isinstance(o, Tracer) else SCALAR
+        kinds = {self._kind, kind_o}
+        if kinds == {MAT, SCALAR}:
+            return t.refuse("a sum of a matrix and a number (write c·I for a multiple of the identity)")
+        if self._kind == MAT and kind_o == MAT:
+            for x, y in zip(self._shape, o._shape):
+                if _same_size(x, y) is False:
+                    return t.refuse(f"a sum of matrices whose spaces do not match ({self!r}, {o!r})")
+        shape = self._shape if self._kind == MAT else o._shape if kind_o == MAT else (None, None)
+        if self._kind == MAT and None in shape and kind_o == MAT:
+            shape = tuple(x if x is not None else y for x, y in zip(self._shape, o._shape))
+        kind = ANY if ANY in kinds else self._kind
+        args = (a, self._r) if swap else (self._r, a)
+        return t.new(op, args, kind, shape)
+
+    def __add__(self, o): return self._sum(o, "add")
+    def __radd__(self, o): return self._sum(o, "add", swap=True)
+    def __sub__(self, o): return self._sum(o, "sub")
+    def __rsub__(self, o): return self._sum(o, "sub", swap=True)
+
+    def __neg__(self):
+        return self._t.new("neg", (self._r,), self._kind, self._shape)
+
+    def __pos__(self):
+        return self
+
+    def __matmul__(self, o):
+        t = self._t
+        if not isinstance(o, Tracer):
+            return t.refuse("a matrix product with something that is not a matrix of the scene")
+        if SCALAR in (self._kind, o._kind):
+            return t.refuse("a matrix product with a number (use *)")
+        if _same_size(self._shape[1], o._shape[0]) is False:
+            return t.refuse(f"a product of matrices whose spaces do not match ({self!r} @ {o!r})")
+        kind = MAT if self._kind == o._kind == MAT else ANY
+        return t.new("matmul", (self._r, o._r), kind, (self._shape[0], o._shape[1]))
+
+    def __rmatmul__(self, o):
+        return self._t.refuse("a matrix product with something that is not a matrix of the scene")
+
+    def _times(self, o: Any, swap: bool) -> "Tracer":
+        t = self._t
+        a = t.arg(o)
+        kind_o = o._kind if isinstance(o, Tracer) else SCALAR
+        if self._kind == MAT and kind_o == MAT:
+            return t.refuse("a product of two matrices with * (use @)")
+        kind = MAT if MAT in (self._kind, kind_o) else ANY if ANY in (self._kind, kind_o) else SCALAR
+        shape = self._shape if self._kind == MAT else o._shape if kind_o == MAT else (None, None)
+        return t.new("mul", (a, self._r) if swap else (self._r, a), kind, shape)
+
+    def __mul__(self, o): return self._times(o, False)
+    def __rmul__(self, o): return self._times(o, True)
+
+    def __truediv__(self, o):
+        t = self._t
+        a = t.arg(o)
+        if isinstance(o, Tracer) and o._kind == MAT:
+            return t.refuse("a division by a matrix (use an inverse or a solve)")
+        if type(o) in (int, Fraction) and o == 0:
+            return t.refuse("a division by the constant 0")
+        return t.new("div", (self._r, a), self._kind, self._shape)
+
+    def __rtruediv__(self, o):
+        t = self._t
+        if self._kind == MAT:
+            return t.refuse("a division by a matrix (use an inverse or a solve)")
+        return t.new("div", (t.arg(o), self._r), self._kind, self._shape)
+
+    def __pow__(self, k):
+        t = self._t
+        if type(k) is Dim:
+            k = k._int("as an exponent")
+        if type(k) is not int or self._kind == MAT:
+            return t.refuse("a power of a number with an int exponent (matrices: multiply with @)")
+        return t.new("pow", (self._r, k), self._kind, self._shape)
+
+    # -- parts ----------------------------------------------------------------------------------
+    def __getitem__(self, idx):
+        t = self._t
+        if self._kind == SCALAR:
+            return t.refuse("a number has no entries")
+        if type(idx) is str:
+            return t.new("item", (self._r, idx), ANY)
+        if self._kind == ANY and type(idx) is int:
+            return t.new("item", (self._r, idx), ANY)
+        if not isinstance(idx, tuple) or len(idx) != 2:
+            return t.refuse("index a matrix with two indices, M[i, j] or M[i0:i1, j0:j1]")
+        enc, shape = [], []
+        for i, ax in zip(idx, self._shape):
+            if type(i) is Dim:
+                i = i._int("as an index")
+            if type(i) is int:
+                enc.append(i)
+                shape.append(None)
+            elif type(i) is slice:
+                parts = []
+                for p in (i.start, i.stop, i.step):
+                    if type(p) is Dim:
+                        p = p._int("as an index")
+                    if p is not None and type(p) is not int:
+                        return t.refuse("a slice of a matrix has int bounds")
+                    parts.append(p)
+                enc.append(("slice",) + tuple(parts))
+                shape.append(len(range(*slice(*parts).indices(_val(ax)))) if _val(ax) is not None else None)
+            else:
+                return t.refuse("a matrix index is an int or a slice")
+        if all(type(e) is int for e in enc):
+            return t.new("entry", (self._r, enc[0], enc[1]), SCALAR if self._kind == MAT else ANY)
+        ks = ["slice" if type(e) is tuple else "int" for e in enc]
+        shape = [1 if k == "int" else s for k, s in zip(ks, shape)]
+        return t.new("entry", (self._r, enc[0], enc[1]), MAT if self._kind == MAT else ANY, tuple(shape))
+
+    # -- engine values of unknown kind (flows, operator spaces, tensors) ------------------------
+    def __getattr__(self, name: str) -> Any:
+        if name.startswith("_"):
+            raise AttributeError(name)      # Python's and numpy's probes of protocols
+        if name not in VALUE_ATTRS:
+            return self._t.refuse(f"a traced {self._kind} has no attribute {name!r}")
+        if self._kind != ANY:
+            return self._t.refuse(f"a traced {self._kind} has no attribute {name!r}")
+        kind, shape = VALUE_ATTRS[name]
+        return self._t.new("attr", (self._r, name), kind, self._t.shape_of(shape))
+
+    def __call__(self, *args, **kw):
+        if self._kind != ANY:
+            return self._t.refuse(f"a traced {self._kind} is not callable")
+        return self._t.new("apply", (self._r,) + tuple(self._t.arg(a, functions=True) for a in args)
+                           + self._t.kw(kw), ANY)
+
+
+#: attributes of engine values a claim may read (flows, functions and tensors of the brackets module):
+#: their kind and shape
+VALUE_ATTRS: dict[str, tuple[str, tuple | None]] = {
+    "Xdot": (MAT, ("n", "r")), "Pdot": (MAT, ("n", "r")), "extra": (ANY, None), "multipliers": (ANY, None),
+    "tangent": (ANY, None), "scaled": (ANY, None), "bracket": (ANY, None), "grad": (ANY, None),
+    "pullback": (ANY, None), "value": (ANY, None), "gradient": (ANY, None), "sharp": (ANY, None),
+    "space": (ANY, None), "project": (ANY, None), "zero": (ANY, None), "basis": (ANY, None), "form": (ANY, None),
+}
+
+
+# ---------------------------------------------------------------------------------------------
+# the scene
+
+#: the scene's matrices: their spaces (rows, columns)
+MATRICES = {"X": ("n", "r"), "P": ("n", "r"), "A": ("n", "n"), "Ainv": ("n", "n"), "Phi": ("n", "n"),
+            "Psi": ("r", "r"), "In": ("n", "n"), "Ir": ("r", "r"), "xi": ("n", "n"), "zeta": ("n", "n"),
+            "eta": ("r", "r"), "theta": ("r", "r"), "Y": ("n", "r"), "Q": ("n", "r"), "Zc": ((2, "n"), (2, "r")),
+            "Zc_dot": ((2, "n"), (2, "r"))}
+NUMBERS = ("lam", "kappa", "eps")
+#: the scene's methods, with the kind of what they return
+METHODS = frozenset("""tr killing resolvent q const scalar mat zeros identity scalar_matrix generic general_params
+    sym_operator conj realify tangent d gradient dirac_flow multiplier_flow canonical_flow bracket
+    canonical_bracket jacobian constraint_bracket_matrix""".split())
+#: what a claim may ask of its scene (README: "What a scene s offers")
+API = frozenset(MATRICES) | frozenset(NUMBERS) | METHODS | {"a", "n", "r", "constraints"}
+
+
+class TraceConstraints:
+    """The scene's realization of T*V: its name and the function of its constraints."""
+
+    __slots__ = ("name", "build")
+
+    def __init__(self, name: str, build: Callable) -> None:
+        self.name, self.build = name, build
+
+
+class TraceScene:
+    """The scene as claim code sees it while it is traced."""
+
+    __slots__ = ("_t", "_r")
+
+    def __init__(self, t: "Trace", r: Ref) -> None:
+        object.__setattr__(self, "_t", t)
+        object.__setattr__(self, "_r", r)
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        raise AttributeError("a scene is read-only")
+
+    def __repr__(self) -> str:
+        return "<a scene>"
+
+    def __reduce__(self):
+        return self._t.refuse("a scene cannot be pickled")
+
+    def __getattr__(self, name: str) -> Any:
+        t = self._t
+        if name.startswith("_"):
+            raise AttributeError(name)
+        if name not in API:
+            return t.refuse(f"a scene has no {name!r} (see README: what a scene s offers)")
+        if name in MATRICES:
+            return t.new("attr", (self._r, name), MAT, t.shape_of(MATRICES[name]))
+        if name in NUMBERS:
+            return t.new("attr", (self._r, name), SCALAR)
+        if name in ("n", "r"):
+            return Dim(t.size(1, name), t)
+        if name == "a":
+            n = t.size(1, "n").value
+            if n is None:
+                return t.refuse("the eigenvalues a_i of A (they need fixed sizes and coordinates)")
+            base = t.g.add("attr", (self._r, "a"))
+            return [t.new("item", (base, i), SCALAR) for i in range(n)]
+        if name == "constraints":
+            name_, build = t.constraints
+            return TraceConstraints(name_, build)
+        return functools.partial(_SCENE_METHODS[name], self)
+
+
+def _call(s: TraceScene, name: str, args: tuple, kind: str, shape: tuple = (None, None), kw: tuple = ()) -> Tracer:
+    return s._t.new("call", (s._r, name, args, kw), kind, shape)
+
+
+def _m_tr(s, M):
+    t = s._t
+    if not isinstance(M, Tracer) or M._kind == SCALAR:
+        return t.refuse("tr takes a matrix of the scene")
+    if M._kind == MAT and _same_size(*M._shape) is False:
+        return t.refuse(f"the trace of a matrix whose row and column spaces do not match ({M!r})")
+    return _call(s, "tr", (M._r,), SCALAR)
+
+
+def _m_killing(s, a, b):
+    t = s._t
+    if not (isinstance(a, Tracer) and isinstance(b, Tracer)) or SCALAR in (a._kind, b._kind):
+        return t.refuse("killing takes two matrices of the scene")
+    return _call(s, "killing", (a._r, b._r), SCALAR)
+
+
+def _m_resolvent(s, mu):
+    t = s._t
+    return _call(s, "resolvent", (t.arg(mu),), MAT, t.shape_of(("n", "n")))
+
+
+def _m_q(s, num, den=1):
+    t = s._t
+    num, den = (x._int("in s.q") if type(x) is Dim else x for x in (num, den))
+    for x in (num, den):
+        if type(x) is not int:
+            return t.refuse("s.q(num, den) takes ints")
+    if den == 0:
+        return t.refuse("s.q(num, 0): a zero denominator")
+    return _call(s, "q", (num, den), SCALAR)
+
+
+def _m_const(s, q):
+    t = s._t
+    if type(q) not in (int, Fraction):
+        return t.refuse(f"a constant is an int or a Fraction, not a {type(q).__name__}")
+    return _call(s, "const", (q,), SCALAR)
+
+
+def _m_scalar(s, name):
+    t = s._t
+    if type(name) is not str:
+        return t.refuse("a scalar parameter is named by a string")
+    return _call(s, "scalar", (name,), SCALAR)
+
+
+def _tags(t: "Trace", tags: Any, k: int) -> tuple:
+    if type(tags) is str:
+        tags = (tags,)
+    if type(tags) is not tuple or len(tags) != k or any(type(x) is not str for x in tags):
+        return t.refuse("the spaces of a matrix are given as strings ('n', 'r', '?')")
+    return tags
+
+
+def _size_arg(t: "Trace", m: Any, what: str) -> Any:
+    if type(m) is Dim:
+        return m._size
+    if type(m) is int and m >= 0:
+        return m
+    return t.refuse(f"{what} is a size (an int, or s.n, s.r and their multiples)")
+
+
+def _m_mat(s, rows, tags=("?", "?")):
+    t = s._t
+    tags = _tags(t, tags, 2)
+    if type(rows) is Tracer and rows._kind == ANY:       # rows an engine function made
+        return _call(s, "mat", (rows._r, tags), MAT)
+    if type(rows) not in (list, tuple) or any(type(r) not in (list, tuple) for r in rows):
+        return t.refuse("s.mat takes a list of rows")
+    width = len(rows[0]) if rows else 0
+    if any(len(r) != width for r in rows):
+        return t.refuse("the rows of a matrix have the same length")
+    out = []
+    for r in rows:
+        cells = []
+        for x in r:
+            if isinstance(x, Tracer) and x._kind == MAT:
+                return t.refuse("the entries of s.mat are numbers")
+            cells.append(t.arg(x))
+        out.append(t.g.add("list", tuple(cells)))
+    shape = tuple(t.size(1, tg) if tg in ("n", "r") and _val(t.size(1, tg)) == m else m
+                  for tg, m in zip(tags, (len(rows), width)))
+    return _call(s, "mat", (t.g.add("list", tuple(out)), tags), MAT, shape)
+
+
+def _m_zeros(s, m, k, tags=("?", "?")):
+    t = s._t
+    m, k = _size_arg(t, m, "a number of rows"), _size_arg(t, k, "a number of columns")
+    return _call(s, "zeros", (m, k, _tags(t, tags, 2)), MAT, (m, k))
+
+
+def _m_identity(s, m, tag="?"):
+    t = s._t
+    m = _size_arg(t, m, "the size of an identity")
+    return _call(s, "identity", (m, _tags(t, tag, 1)[0]), MAT, (m, m))
+
+
+def _m_scalar_matrix(s, c, m, tag="?"):
+    t = s._t
+    m = _size_arg(t, m, "the size of a scalar matrix")
+    return _call(s, "scalar_matrix", (t.arg(c), m, _tags(t, tag, 1)[0]), MAT, (m, m))
+
+
+def _m_generic(s, name, m, k):
+    t = s._t
+    if not all(type(x) is str for x in (name, m, k)) or not {m, k} <= {"n", "r"}:
+        return t.refuse("s.generic(name, m, k): a name and the spaces 'n' or 'r'")
+    return _call(s, "generic", (name, m, k), MAT, t.shape_of((m, k)))
+
+
+def _m_general_params(s, name, m, k, tags):
+    t = s._t
+    if type(name) is not str:
+        return t.refuse("a parameter block is named by a string")
+    m, k = _size_arg(t, m, "a number of rows"), _size_arg(t, k, "a number of columns")
+    return _call(s, "general_params", (name, m, k, _tags(t, tags, 2)), MAT, (m, k))
+
+
+def _m_sym_operator(s, name="AA"):
+    t = s._t
+    if type(name) is not str:
+        return t.refuse("an operator is named by a string")
+    return _call(s, "sym_operator", (name,), ANY)
+
+
+def _m_conj(s, M):
+    t = s._t
+    if not isinstance(M, Tracer):
+        return t.refuse("conj takes a matrix of the scene")
+    return _call(s, "conj", (M._r,), M._kind, M._shape)
+
+
+def _m_realify(s, U, V):
+    t = s._t
+    if not (isinstance(U, Tracer) and isinstance(V, Tracer)):
+        return t.refuse("realify takes two matrices of the scene")
+    shape = tuple(_add_sizes(x, x) for x in U._shape)
+    return _call(s, "realify", (U._r, V._r), U._kind, shape)
+
+
+def _m_tangent(s, flow):
+    t = s._t
+    return TraceScene(t, t.g.add("call", (s._r, "tangent", (t.arg(flow),), ())))
+
+
+def _m_d(s, F, flow):
+    t = s._t
+    f, out = t.function(F, 1)
+    node = t.g.add("call", (s._r, "d", (f, t.arg(flow)), ()))
+    return t.mirror(out, node)
+
+
+def _m_gradient(s, H):
+    t = s._t
+    f, _ = t.function(H, 1)
+    node = t.g.add("call", (s._r, "gradient", (f,), ()))
+    shape = t.shape_of(("n", "r"))
+    return (t.new("item", (node, 0), MAT, shape), t.new("item", (node, 1), MAT, shape))
+
+
+def _flow_method(name: str):
+    def method(s, H):
+        t = s._t
+        f, _ = t.function(H, 1)
+        return _call(s, name, (f,), ANY)
+    return method
+
+
+def _m_bracket(s, F, G):
+    t = s._t
+    f, _ = t.function(F, 1)
+    g, _ = t.function(G, 1)
+    return _call(s, "bracket", (f, g), SCALAR)
+
+
+def _m_canonical_bracket(s, F, G):
+    t = s._t
+    f, _ = t.function(F, 1)
+    g, _ = t.function(G, 1)
+    return _call(s, "canonical_bracket", (f, g), SCALAR)
+
+
+def _components(t: "Trace", out: Any, symmetric: bool) -> int:
+    """The number of scalar components of a function's value (the rows of its Jacobian)."""
+    if isinstance(out, Tracer):
+        if out._kind == SCALAR:
+            return 1
+        m, k = (_val(x) for x in out._shape)
+        if out._kind != MAT or m is None or k is None:
+            return t.refuse("a Jacobian of a function whose value has no known shape")
+        if symmetric:
+            if m != k:
+                return t.refuse("a Jacobian of symmetric components of a non-square matrix")
+            return m * (m + 1) // 2
+        return m * k
+    if type(out) in (list, tuple):
+        return sum(_components(t, x, symmetric) for x in out)
+    return t.refuse("a Jacobian of a function whose value is not a number, a matrix or a list of them")
+
+
+def _m_jacobian(s, F, symmetric=None):
+    t = s._t
+    if symmetric is None:
+        symmetric = F is t.constraints[1]
+    if type(symmetric) is not bool:
+        return t.refuse("symmetric is a bool")
+    n, r = t.size(1, "n").value, t.size(1, "r").value
+    if n is None:
+        return t.refuse("a Jacobian in the coordinates of X, P (it needs fixed sizes)")
+    f, out = t.function(F, 1)
+    rows = _components(t, out, symmetric)
+    node = t.g.add("call", (s._r, "jacobian", (f, symmetric), ()))
+    return _grid(t, node, rows, 2 * n * r)
+
+
+def _grid(t: "Trace", node: Ref, rows: int, cols: int) -> list:
+    out = []
+    for i in range(rows):
+        row = t.g.add("item", (node, i))
+        out.append([t.new("item", (row, j), SCALAR) for j in range(cols)])
+    return out
+
+
+def _m_constraint_bracket_matrix(s):
+    t = s._t
+    if t.size(1, "n").value is None:
+        return t.refuse("the matrix of constraint brackets (it needs fixed sizes)")
+    _, out = t.function(t.constraints[1], 1)
+    m = _components(t, out, True)
+    return _grid(t, t.g.add("call", (s._r, "constraint_bracket_matrix", (), ())), m, m)
+
+
+_SCENE_METHODS: dict[str, Callable] = {
+    "tr": _m_tr, "killing": _m_killing, "resolvent": _m_resolvent, "q": _m_q, "const": _m_const,
+    "scalar": _m_scalar, "mat": _m_mat, "zeros": _m_zeros, "identity": _m_identity,
+    "scalar_matrix": _m_scalar_matrix, "generic": _m_generic, "general_params": _m_general_params,
+    "sym_operator": _m_sym_operator, "conj": _m_conj, "realify": _m_realify, "tangent": _m_tangent,
+    "d": _m_d, "gradient": _m_gradient, "dirac_flow": _flow_method("dirac_flow"),
+    "multiplier_flow": _flow_method("multiplier_flow"), "canonical_flow": _flow_method("canonical_flow"),
+    "bracket": _m_bracket, "canonical_bracket": _m_canonical_bracket, "jacobian": _m_jacobian,
+    "constraint_bracket_matrix": _m_constraint_bracket_matrix,
+}
+assert set(_SCENE_METHODS) == METHODS
+
+
+# ---------------------------------------------------------------------------------------------
+# blocks
+
+def block(rows: Any) -> Tracer:
+    """A block matrix of traced matrices (its sizes the sums of the blocks' sizes)."""
+    t = next((b._t for row in rows for b in row if isinstance(b, Tracer)), None)
+    if t is None:               # the engine's own matrices (engine code, tests)
+        from ..matrix import block as engine_block
+        return engine_block(rows)
+    rows = [list(row) for row in rows]
+    if not rows or not rows[0] or any(len(row) != len(rows[0]) for row in rows):
+        return t.refuse("a block matrix needs a rectangular, non-empty grid of blocks")
+    if not all(isinstance(b, Tracer) and b._kind != SCALAR for row in rows for b in row):
+        return t.refuse("the blocks of a block matrix must be matrices")
+    heights = []
+    for row in rows:
+        h = row[0]._shape[0]
+        for b in row[1:]:
+            if _same_size(h, b._shape[0]) is False:
+                return t.refuse("the blocks of a block row have different heights")
+        heights.append(h)
+    widths = []
+    for j in range(len(rows[0])):
+        w = rows[0][j]._shape[1]
+        for row in rows[1:]:
+            if _same_size(w, row[j]._shape[1]) is False:
+                return t.refuse("the blocks of a block column have different widths")
+        widths.append(w)
+    shape = (functools.reduce(_add_sizes, heights), functools.reduce(_add_sizes, widths))
+    kind = ANY if any(b._kind == ANY for row in rows for b in row) else MAT
+    return t.new("block", (len(rows), len(rows[0]), tuple(b._r for row in rows for b in row)), kind, shape)
+
+
+# ---------------------------------------------------------------------------------------------
+# the trace
+
+class Trace:
+    """One tracing of one claim at one size (or with symbolic sizes)."""
+
+    def __init__(self, n: int | None, r: int | None, constraints: tuple[str, Callable]) -> None:
+        self.g = Graph()
+        self.n, self.r = n, r
+        self.g.sizes = None if n is None else (n, r)
+        self._like: dict = {}
+        self.constraints = constraints
+        self._functions: dict[int, tuple[Any, Ref, Any]] = {}
+
+    # -- nodes ----------------------------------------------------------------------------------
+    def new(self, op: str, args: tuple, kind: str, shape: tuple = (None, None)) -> Tracer:
+        return Tracer(self, self.g.add(op, args), kind, shape)
+
+    def refuse(self, what: str) -> Any:
+        self.g.refusals.append(what)
+        raise TraceRefused(f"refused: {what}")
+
+    def size(self, k: int, d: str) -> Size:
+        v = self.n if d == "n" else self.r
+        return Size(k, d, None if v is None else k * v)
+
+    def shape_of(self, spaces: tuple | None) -> tuple:
+        if spaces is None:
+            return (None, None)
+        return tuple(self.size(1, d) if type(d) is str else self.size(*d) for d in spaces)
+
+    # -- arguments --------------------------------------------------------------------------------
+    def arg(self, x: Any, functions: bool = False) -> Any:
+        """An argument of an operation as the graph holds it (refused unless it is a traced value, an
+        exact constant, a size, a string, a container of these or an engine constant)."""
+        tx = type(x)
+        if tx is Tracer or tx is TraceScene:
+            if x._t is not self:
+                return self.refuse("a traced value of another trace")
+            return x._r
+        if tx is int or tx is bool or tx is Fraction or tx is str or x is None:
+            return x
+        if tx is Dim:
+            return x._size
+        if tx is list or tx is tuple:
+            return self.g.add("list" if tx is list else "tuple", tuple(self.arg(y, functions) for y in x))
+        if tx is dict:
+            keys = tuple(x)
+            if any(type(k) is not str for k in keys):
+                return self.refuse("the keys of a dict handed to the engine are strings")
+            return self.g.add("dict", (keys, tuple(self.arg(x[k], functions) for k in keys)))
+        if tx is TraceConstraints:
+            return self.arg(x.build, True)
+        if id(x) in _NAMED and _NAMED[id(x)][1] is x:
+            return Named(_NAMED[id(x)][0])
+        if functions and callable(x) and not isinstance(x, type):
+            return self.function(x, None)[0]
+        return self.refuse(f"a {tx.__name__} is not a value of the IR (exact constants are int and Fraction)")
+
+    def kw(self, kw: dict) -> tuple:
+        if not kw:
+            return ()
+        return (self.g.add("kw", tuple((k, self.arg(v, True)) for k, v in sorted(kw.items()))),)
+
+    # -- functions handed to the engine ----------------------------------------------------------
+    def function(self, f: Any, arity: int | None) -> tuple[Ref, Any]:
+        """Trace a function of a scene (and further arguments) once: its ``fn`` node and its value."""
+        if not callable(f) or isinstance(f, (type, Tracer, TraceScene)):
+            return self.refuse("a function of the scene is expected")
+        hit = self._functions.get(id(f))
+        if hit is not None and hit[0] is f and not getattr(self, "_like", None):
+            return hit[1], hit[2]
+        if arity is None:
+            try:
+                params = [p for p in inspect.signature(f).parameters.values()
+                          if p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD) and p.default is p.empty]
+                arity = max(len(params), 1)
+            except (TypeError, ValueError):
+                arity = 1
+        self.g.fns += 1
+        k = self.g.fns
+        scene = TraceScene(self, self.g.add("scene", (k,)))
+        like = getattr(self, "_like", {}).get(f) if arity == 2 else None
+        if like is not None:
+            extra = [self.mirror(like, self.g.add("param", (k, 1, self.arg(like))))]
+        else:
+            extra = [self.new("param", (k, i), ANY) for i in range(1, arity)]
+        out = f(scene, *extra)
+        body = self.structure(out)
+        ref = self.g.add("fn", (k, arity, body))
+        self._functions[id(f)] = (f, ref, out)
+        return ref, out
+
+    # -- structured values ------------------------------------------------------------------------
+    def structure(self, v: Any) -> Any:
+        """A value a claim (or a traced function) returns, as a node."""
+        tv = type(v)
+        if tv is Rank:
+            m = v.matrix
+            if not (type(m) is Tracer and m._kind != SCALAR):
+                return self.refuse("Rank: the matrix must be a matrix of the scene")
+            return self.g.add("rank", (m._r, v.expected, v.generic, v.meaning))
+        if tv is Count:
+            return self.g.add("count", (v.value, v.expected, v.meaning))
+        if tv is int or tv is Fraction:
+            return self.g.add("const", (v,))
+        return self.arg(v)
+
+    def mirror(self, out: Any, node: Ref) -> Any:
+        """Tracers for the parts of an engine result shaped like ``out`` (a function's value)."""
+        if isinstance(out, Tracer):
+            return Tracer(self, node, out._kind, out._shape)
+        if type(out) in (list, tuple):
+            parts = [self.mirror(x, self.g.add("item", (node, i))) for i, x in enumerate(out)]
+            return parts if type(out) is list else tuple(parts)
+        if type(out) is dict:
+            return {k: self.mirror(x, self.g.add("item", (node, k))) for k, x in out.items()}
+        return Tracer(self, node, ANY)
+
+    # -- engine primitives --------------------------------------------------------------------------
+    def prim(self, qual: str, args: tuple, kw: dict, returns: Any = None, shapes: dict | None = None) -> Any:
+        self._like = shapes or {}
+        try:
+            ref = self.g.add("prim", (Named(qual),) + tuple(self.arg(a, True) for a in args) + self.kw(kw))
+        finally:
+            self._like = {}
+        if returns == "scene":
+            return TraceScene(self, ref)
+        if type(returns) is tuple:              # ("like", name): shaped like a function argument's value
+            f = (shapes or {}).get("__returns__")
+            hit = self._functions.get(id(f)) if f is not None else None
+            return self.mirror(hit[2], ref) if hit is not None else Tracer(self, ref, ANY)
+        if type(returns) is int:
+            return tuple(self.new("item", (ref, i), ANY) for i in range(returns))
+        return Tracer(self, ref, ANY)
+
+
+def trace(func: Callable, n: int | None, r: int | None, constraints: tuple[str, Callable]) -> Graph:
+    """The graph of ``func`` at the size (n, r), or with symbolic sizes (n = r = None)."""
+    t = Trace(n, r, constraints)
+    _ACTIVE.append(t)
+    try:
+        out = func(TraceScene(t, t.g.add("scene", (0,))))
+        if type(out) is not dict or not out:
+            t.refuse("a claim returns a non-empty dict of named checks")
+        if any(type(k) is not str for k in out):
+            t.refuse("check names are strings")
+        t.g.output = t.g.add("dict", (tuple(out), tuple(t.structure(v) for v in out.values())))
+    finally:
+        _ACTIVE.pop()
+    return t.g

@@ -1,0 +1,273 @@
+"""The routes by which a claims file steered a verdict while claim code ran on live values, each a
+class, each replayed by tricks of its own: since claims are traced into graphs that hold no value,
+every method gives ``error`` or the right verdict.  (One file per class of route; the honest
+version of each trick still passes.)"""
+import json
+import pickle
+import sys
+from fractions import Fraction
+
+import numpy as np
+import pytest
+
+from stiefelsym import admissible, block
+from stiefelsym.claims import Claim
+from stiefelsym.ir import TraceRefused, compile_claim, trace
+from stiefelsym.runner import run_one
+from stiefelsym.claims import Size
+from stiefelsym.scene import REALIZATIONS
+
+PASSING = ("proved", "checked", "numeric")
+METHODS = ("exact", "rational", "modular", "float", "auto")
+STANDARD = (REALIZATIONS["standard"].name, REALIZATIONS["standard"].build)
+
+
+def _claim(func, expect="holds", cid=None, sizes=None):
+    return Claim(id=cid or func.__name__.replace("_", "-"), paper=("prep",), kind="id", section="t", func=func,
+                 sizes=sizes or admissible(5), expect=expect)
+
+
+def verdicts(func, sizes=((4, 2),), methods=METHODS, expect="holds", free=True):
+    c = _claim(func, expect)
+    out = {(m, n, r): run_one(c, Size(n, r), m, 0).verdict for n, r in sizes for m in methods}
+    if free:
+        out[("free", None, None)] = run_one(c, None, "free", 0).verdict
+    return out
+
+
+def never_passes(func, **kw):
+    v = verdicts(func, **kw)
+    wrong = {k: x for k, x in v.items() if x in PASSING}
+    assert not wrong, wrong
+
+
+# -- 1. coordinates read through blocks and untyped spaces ----------------------------------------
+
+def entry_through_a_block(s):
+    """False: X = (I; 0) is the equivariant chart's point, read through a block with an untyped row."""
+    B = block([[s.X], [s.zeros(1, s.r, ("?", "r"))]])
+    return {"X11 - 1": B[0, 0] - s.q(1), "X21": B[1, 0]}
+
+
+def diagonal_by_blocks(s):
+    """False: XᵀDX = XᵀX for D = diag(1, 1, 2, 2) made of identity blocks (true at X = (E1, E2))."""
+    D = block([[s.identity(2), s.zeros(2, 2)], [s.zeros(2, 2), s.identity(2) * 2]])
+    return {"XtDX - XtX": s.X.T @ D @ s.X - s.X.T @ s.X}
+
+
+def constant_untyped_matrix(s):
+    """False: a constant diagonal matrix written entry by entry with untyped spaces."""
+    D = s.mat([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 2, 0], [0, 0, 0, 2]])
+    return {"XtDX - XtX": s.X.T @ D @ s.X - s.X.T @ s.X}
+
+
+def slice_of_the_identity(s):
+    """False: X equals the first r columns of I_n (the chart's point), read by a slice."""
+    return {"X - In[:, :r]": s.X - s.In[:, 0:2]}
+
+
+@pytest.mark.parametrize("func", [entry_through_a_block, diagonal_by_blocks, constant_untyped_matrix,
+                                  slice_of_the_identity], ids=lambda f: f.__name__)
+def test_coordinates_are_seen_in_the_graph_whatever_the_spaces_say(func):
+    never_passes(func, methods=("exact", "auto", "modular"))
+
+
+def test_entries_of_r_by_r_invariants_keep_the_equivariant_chart():
+    def gram_entry(s):
+        """True: the (1,1) entry of XᵀX is 1."""
+        return {"(XtX)11 - 1": (s.X.T @ s.X)[0, 0] - s.q(1)}
+    assert verdicts(gram_entry, sizes=((6, 2),), methods=("exact",), free=False)[("exact", 6, 2)] == "proved"
+
+
+# -- 2. floats in disguise --------------------------------------------------------------------------
+
+@pytest.mark.parametrize("c", [complex(1, 0), np.float32(1e20), np.array(1e20), 0.5, np.float64(2.0),
+                               np.int64(3), Fraction(1, 2) + 0j], ids=lambda c: type(c).__name__)
+def test_a_constant_that_is_not_exact_is_refused_on_every_method(c):
+    def disguised(s):
+        """False in exact arithmetic: (cX + X) - cX = 0 where c absorbs X in double precision."""
+        Xc = s.X * c
+        return {"(Xc + X) - Xc": (Xc + s.X) - Xc}
+    v = verdicts(disguised, methods=("exact", "modular", "float"), free=True)
+    assert all(x in ("error", "undecided") for x in v.values()), v
+    with pytest.raises(TraceRefused, match="not a value of the IR|is an int or a Fraction"):
+        trace(disguised, 3, 2, STANDARD)
+
+
+# -- 3. exceptions as a side channel ----------------------------------------------------------------
+
+def branch_on_a_caught_refusal(s):
+    """False on one branch: the claim catches a refusal and returns a false residual."""
+    try:
+        float(s.lam)
+    except TypeError:
+        return {"X": s.X}
+    return {"zero": s.X - s.X}
+
+
+def branch_on_sizes_being_numbers(s):
+    """A true residual where sizes are symbols, a false one where they are numbers."""
+    try:
+        int(s.n)
+    except TypeError:
+        return {"ok": s.X.T @ s.X - s.Ir}
+    return {"bad": s.X.T @ s.X}
+
+
+def branch_on_the_size_type(s):
+    """No refusal: it looks at a private slot of its size to tell symbolic sizes apart."""
+    symbolic = object.__getattribute__(s.n, "_size").value is None
+    return {"ok": s.X.T @ s.X - s.Ir} if symbolic else {"bad": s.X.T @ s.X}
+
+
+def branch_on_a_failed_product(s):
+    """A product whose sizes do not fit, caught: the refusal is recorded anyway."""
+    try:
+        s.X @ s.X
+    except TypeError:
+        return {"bad": s.X}
+    return {"bad": s.X}
+
+
+@pytest.mark.parametrize("func", [branch_on_a_caught_refusal, branch_on_sizes_being_numbers,
+                                  branch_on_the_size_type, branch_on_a_failed_product], ids=lambda f: f.__name__)
+def test_no_branch_of_a_claim_sees_its_method(func):
+    never_passes(func)
+
+
+def test_a_refusal_has_one_message_whatever_the_method():
+    msgs = set()
+    for n, r in ((3, 2), (4, 2), (None, None)):
+        with pytest.raises(TraceRefused) as e:
+            trace(lambda s: {"x": s.X + s.A}, n, r, STANDARD)
+        msgs.add(str(e.value).split(" (")[0])
+    assert len(msgs) == 1
+
+
+# -- 4. state across calls --------------------------------------------------------------------------
+
+_CALLS = [0]
+
+
+def stateful(s):
+    """True on its first call only."""
+    _CALLS[0] += 1
+    return {"x": s.X.T @ s.X - s.Ir} if _CALLS[0] % 2 else {"x": s.X}
+
+
+def test_a_claim_that_changes_between_tracings_is_an_error():
+    v = verdicts(stateful, methods=METHODS)
+    assert set(v.values()) <= {"error", "undecided"}, v
+
+
+def test_every_method_evaluates_one_graph():
+    calls = []
+
+    def counted(s):
+        calls.append(1)
+        return {"x": s.X.T @ s.X - s.Ir}
+    c = _claim(counted)
+    for m in ("exact", "rational", "modular", "float"):
+        assert run_one(c, Size(3, 2), m, 0).verdict in PASSING
+    assert len(calls) == 2          # traced twice (to compare), then only evaluated
+
+
+# -- 5. a constant outside the float range ----------------------------------------------------------
+
+@pytest.mark.parametrize("q", [Fraction(1, 2**1100), Fraction(2**946), Fraction(2**1100), Fraction(3, 2**1080)],
+                         ids=str)
+def test_a_constant_outside_the_float_range_never_makes_a_numeric_verdict(q):
+    def scaled(s):
+        """False: c·tr(XᵀX) = 0 for a constant c ≠ 0."""
+        return {"c tr(XtX)": s.const(q) * s.tr(s.X.T @ s.X)}
+    v = verdicts(scaled, methods=("float", "auto", "modular", "rational"), free=False)
+    assert not [x for x in v.values() if x in PASSING], v
+
+
+# -- 6. pickling ------------------------------------------------------------------------------------
+
+def test_a_traced_value_holds_no_point():
+    def pickles(s):
+        """Pickling a matrix once revealed the float point."""
+        data = pickle.dumps(s.X)
+        return {"x": s.X * len(data)}
+    with pytest.raises(TraceRefused, match="pickled"):
+        trace(pickles, 3, 2, STANDARD)
+    never_passes(pickles, methods=("float", "exact"))
+
+
+# -- 7. a frame that claims to be the engine --------------------------------------------------------
+
+def spoofed_engine_frame(s):
+    """False: a claim that names its module after the engine and reads the private state it finds."""
+    g = sys._getframe().f_globals
+    old = g["__name__"]
+    g["__name__"] = "stiefelsym.methods"
+    try:
+        raw = getattr(s, "_field", None) or getattr(s.X, "_a", None)
+        if raw is not None:
+            return {"zero": s.X - s.X}
+        return {"X": s.X}
+    finally:
+        g["__name__"] = old
+
+
+def test_an_engine_name_buys_nothing():
+    never_passes(spoofed_engine_frame)
+
+
+# -- 8. results files -------------------------------------------------------------------------------
+
+def _run_cli(args, tmp_path):
+    from click.testing import CliRunner
+    from stiefelsym.cli import main
+    return CliRunner().invoke(main, args, catch_exceptions=False)
+
+
+def test_a_hand_edited_verdict_is_caught_by_check(tmp_path):
+    out = tmp_path / "rep"
+    r = _run_cli(["verify", "prep", "--size", "3,2", "--method", "modular", "--report-dir", str(out)], tmp_path)
+    assert r.exit_code == 0, r.output
+    payload = json.loads((out / "results.json").read_text())
+    assert all(len(x["digest"]) == 64 for x in payload["results"])
+    assert _run_cli(["check", str(out / "results.json")], tmp_path).exit_code == 0
+    payload["results"][0]["digest"] = "0" * 64
+    (out / "results.json").write_text(json.dumps(payload))
+    r = _run_cli(["check", str(out / "results.json")], tmp_path)
+    assert r.exit_code == 1 and "REJECTED" in r.output
+
+
+def test_a_free_proof_without_a_certificate_is_refused(tmp_path):
+    from stiefelsym.certificate_check import main as checker
+    forged = {"results": [{"claim": "prep", "method": "free", "verdict": "proved", "certificate_data": None}]}
+    path = tmp_path / "forged.json"
+    path.write_text(json.dumps(forged))
+    assert checker([str(path)]) == 1
+    empty = {"results": [{"claim": "prep", "method": "free", "verdict": "proved",
+                          "certificate_data": {"format": "stiefelsym-cofactor-1", "letters": {}, "entries": []}}]}
+    path.write_text(json.dumps(empty))
+    assert checker([str(path)]) == 1
+
+
+def test_a_certificate_moved_to_another_claim_is_caught(tmp_path):
+    from stiefelsym.claims import load_catalog
+    from stiefelsym.integrity import check_results
+    from stiefelsym.runner import run_one as run
+    cat = load_catalog()
+    true = run(cat.get("prep"), None, "free", 0)
+    assert true.verdict == "proved"
+    rec = json.loads(json.dumps(true.to_json() if hasattr(true, "to_json") else true.__dict__, default=str))
+    rec["claim"] = "neumann-lax"
+    rec["digest"] = run(cat.get("neumann-lax"), None, "free", 0).digest or rec["digest"]
+    lines = []
+    assert check_results([rec], cat, echo=lines.append) == 1, lines
+
+
+def test_free_and_fixed_graphs_agree_for_the_catalog_sample():
+    from stiefelsym.claims import load_catalog
+    cat = load_catalog()
+    for cid in ("prep", "neumann-lax", "euclidean-flow"):
+        c = cat.get(cid)
+        z = next(iter(c.sizes))
+        free = compile_claim(c.func, None, None, STANDARD).digest()
+        assert compile_claim(c.func, z.n, z.r, STANDARD).digest() == free
