@@ -400,10 +400,8 @@ def _reverse_gradient_in_x(s: Any, T: PoissonTensor, x: Mat, b: Mat, c: Mat) -> 
     """The gradient of y ↦ Λ(b, c)|_y at x by reverse mode over the matrix operations of the form, or
     None when the scene or an operation of the form is not one reverse mode differentiates."""
     from .reverse import Rev, RevMat, Unsupported, gradient, leaf
-    from .scalar import unwrap
     from .scene import ReverseScene, Scene
-    from .view import engine_scene
-    s = engine_scene(s)
+    s = s
     if type(s) is not Scene or s.field.name not in _REVERSE_FIELDS:
         return None
     try:
@@ -413,7 +411,7 @@ def _reverse_gradient_in_x(s: Any, T: PoissonTensor, x: Mat, b: Mat, c: Mat) -> 
             return Mat._wrap_native(RevMat(M._untyped()), rs.field, M.tags, rs.tracker, M._coords)
         lx = leaf(x._untyped())
         xr = Mat._wrap_native(lx, rs.field, x.tags, rs.tracker, x._coords)
-        value = unwrap(T(rs, xr, const(b), const(c)))
+        value = (T(rs, xr, const(b), const(c)))
         if not isinstance(value, Rev):
             return None
         g = gradient(value, [lx], s.const(1))[0]

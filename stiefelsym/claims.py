@@ -26,28 +26,7 @@ from pathlib import Path
 from typing import Any, Callable, Iterable, Mapping
 
 from .ir.statements import Count, Rank
-from .scalar import running_claim, unwrap
 
-
-class ClaimRefused(TypeError):
-    """The claim went through a door the engine refuses (recorded), whatever it did afterwards."""
-
-
-def run_claim(func: Callable, scene: Any) -> Any:
-    """A claim's function on an engine scene, as every method calls it: the claim gets the scene's
-    view (:mod:`.view`), inside which numbers are opaque and the number system, chart and sampled
-    point are the engine's; when it returns, a refusal in the scene's record makes the run an
-    error even if the claim caught the exception; the numbers it returns are unwrapped."""
-    from .view import view
-    tracker = getattr(scene, "_tracker", None)
-    with running_claim():
-        out = func(view(scene))
-    refused = tracker.refused if tracker is not None and hasattr(tracker, "refused") else ()
-    if refused:
-        raise ClaimRefused("the claim was refused " + "; ".join(refused)
-                           + " (a refusal the claim caught still counts: claims compute with the "
-                             "scene's numbers and matrices, the same way on every method)")
-    return unwrap(out)
 
 #: seconds a claim's own metadata code (size conditions, erratum sizes) may take per call,
 #: and a claims file's import

@@ -30,7 +30,6 @@ from ._lazy import symengine_opaque
 from .fields import Deg, Dual, ErrNum, Field
 from .native import backend
 from .reverse import Rev
-from .scalar import Scalar, arithmetic_seen, claim_code, engine_only
 
 
 class CoordinateTracker:
@@ -223,9 +222,6 @@ def check_element(field: Field, x: Any) -> Any:
     constants of the field; anything else must be a number of the engine's or its libraries'
     own types, exactly (an object of a claim's own class that says it equals 0 is refused)."""
     t = type(x)
-    if t is Scalar:
-        x = x._x
-        t = type(x)
     if t is int or t is Fraction:
         return field.const(x)
     if t is Dual:
@@ -372,9 +368,7 @@ class Mat:
 
     @property
     def field(self) -> Field:
-        """The number system (engine only: claim code that asks is refused, and recorded)."""
-        if claim_code():
-            engine_only(self._tracker, "a matrix's number system (M.field)")
+        """The number system."""
         return self._field
 
     @property
@@ -384,9 +378,7 @@ class Mat:
 
     @property
     def tracker(self) -> CoordinateTracker | None:
-        """The record (engine only: claim code that asks is refused, and recorded)."""
-        if claim_code():
-            engine_only(self._tracker, "a matrix's record (M.tracker)")
+        """The record of looks at coordinates."""
         return self._tracker
 
     # -- construction -----------------------------------------------------
@@ -586,8 +578,6 @@ class Mat:
         return self._new(self._norm(np.dot(self._view(), o._view())), tags, o)
 
     def _scalar(self, c):
-        if type(c) is Scalar:
-            c = c._x
         t = type(c)
         if _is_rational_type(t):
             c = self._field.const(c)
@@ -610,24 +600,16 @@ class Mat:
         return self._scalar(c)
 
     def __truediv__(self, c):
-        if type(c) is Scalar:
-            c = c._x
         if isinstance(c, Mat):
             return NotImplemented
-        try:
-            if isinstance(c, _SCALARS):
-                return self._scalar(self._field.const(Fraction(1) / Fraction(c)))
-            return self._scalar(self._field.const(1) / c)
-        except ArithmeticError:
-            if claim_code():
-                arithmetic_seen(self._tracker)
-            raise
+        if isinstance(c, _SCALARS):
+            return self._scalar(self._field.const(Fraction(1) / Fraction(c)))
+        return self._scalar(self._field.const(1) / c)
 
     # -- linear algebra ---------------------------------------------------
     def trace(self):
         """The trace (a number of the scene)."""
-        x = self._trace()
-        return Scalar(x, self._tracker) if claim_code() else x
+        return self._trace()
 
     def _trace(self):
         m, k = self._shape()
@@ -645,14 +627,8 @@ class Mat:
         return self._field.normalize(acc)
 
     def inv(self) -> "Mat":
-        """The inverse (an arithmetic exception claim code meets here is recorded, see
-        :func:`~stiefelsym.scalar.arithmetic_seen`)."""
-        try:
-            return self._inv()
-        except ArithmeticError:
-            if claim_code():
-                arithmetic_seen(self._tracker)
-            raise
+        """The inverse."""
+        return self._inv()
 
     def _inv(self) -> "Mat":
         m, k = self._shape()
@@ -683,10 +659,7 @@ class Mat:
         return self._field.normalize(acc)
 
     def is_zero(self) -> bool:
-        """Whether every entry is zero at this point (engine only: for claim code, a test of
-        the values of the point; return the matrix as a residual instead)."""
-        if claim_code():
-            engine_only(self._tracker, "a test of a matrix's values (M.is_zero())")
+        """Whether every entry is zero at this point."""
         if self._n is not None:
             return backend(self._field).is_zero(self._n)
         return all(self._field.is_zero(x) for x in self._view().flat)
@@ -709,7 +682,7 @@ class Mat:
             tags = tuple(t if f else UNTYPED for t, f in zip(self._tags, full))
             return Mat._wrap(out.copy(), self._field, tags, self._tracker,
                              self._coords or (self._tracker is None and indexed_by_Rn(self._tags)))
-        return Scalar(out, self._tracker) if claim_code() else out
+        return out
 
     def __iter__(self):
         raise TypeError("a matrix is not iterable: read entries as M[i, j]")
@@ -721,8 +694,6 @@ class Mat:
         raise TypeError("a matrix has no truth value: return it as a residual")
 
     def __repr__(self) -> str:
-        if claim_code():      # the same text on every method: no number system, no shape
-            return f"<a matrix indexed by {self._tags[0]} x {self._tags[1]}>"
         return f"Mat{self._shape()}[{self._tags[0]}x{self._tags[1]}]({self._field.name})"
 
 

@@ -21,7 +21,6 @@ import numpy as np
 
 from .fields import Deg, DegreeField, Field, _is_matrix
 from .matrix import engine_number_type
-from .scalar import unwrap
 from .native import Backend, DegMat, DegreeBackend, _times, backend
 
 
@@ -153,12 +152,10 @@ class PairField(Field):
 
     def value(self, x):
         """The value part (of a Pair, or a constant of the value field)."""
-        x = unwrap(x)
         return x.v if type(x) is Pair else (self.values.const(x) if type(x) in (int, Fraction) else x)
 
     def marker(self, x):
         """The degree marker (of a Pair, or of a constant)."""
-        x = unwrap(x)
         return x.d if type(x) is Pair else self.const(x).d if type(x) in (int, Fraction) else self.degrees._lift(x)
 
     # -- linear algebra: values by the value field, markers by Cramer's rule --------------------
@@ -194,7 +191,7 @@ class PairBackend(Backend):
         seen: dict[int, list] = {}
         for x in a.ravel().tolist():
             if type(x) is not Pair:
-                x = f.lift(unwrap(x))
+                x = f.lift(x)
             vals.append(x.v)
             d = x.d
             if not d.zero:

@@ -28,7 +28,6 @@ import numpy as np
 
 from .fields import DegreeField, Dual, DualField, Field, FloatField, DegenerateError, SymbolicField
 from .matrix import CoordinateTracker, Mat, block, check_element, definite, scalar_matrix, unify
-from .scalar import Scalar as _Scalar, claim_code, engine_only, raw, unwrap, wrap
 from .native import backend
 from .reverse import Rev, RevField, RevMat, Unsupported, gradient as rev_gradient, leaf as rev_leaf
 
@@ -71,25 +70,18 @@ PARAM_BLOCK_MIN = 64
 
 
 def _opaque(scene: Any, x: Any) -> Any:
-    """A value of a scene as its caller sees it: claim code gets opaque numbers (:mod:`.scalar`),
-    the engine the field's own."""
-    if claim_code(3):
-        return wrap(x, scene._tracker)
+    """A value of a scene as the engine hands it on (claims only meet traced values)."""
     return x
 
 
 def _number(scene: Any, x: Any) -> Any:
-    """A number of a scene as its caller sees it (see :func:`_opaque`)."""
-    if claim_code(3):
-        return _Scalar(x, scene._tracker)
+    """A number of a scene as the engine hands it on."""
     return x
 
 
 def _engine_property(attr: str, what: str) -> property:
-    """A read-only attribute the engine reads and claim code is refused (the refusal recorded)."""
+    """A read-only attribute of the engine's."""
     def get(self):
-        if claim_code():
-            engine_only(self._tracker, what)
         return getattr(self, attr)
     return property(get, doc=f"{what}: engine only")
 
@@ -687,7 +679,7 @@ class Scene(PaperObjects):
 
     def resolvent(self, mu: Scalar) -> Mat:
         """(mu I_n - A)^{-1}."""
-        mu = raw(mu)
+        mu = mu
 
         def build():
             if self.chart == "cayley":
@@ -739,7 +731,7 @@ class Scene(PaperObjects):
             symmetric = F is self.constraints.build
         cols = []
         for t in self._unit_tangents():
-            value = unwrap(F(self.tangent(t)))
+            value = F(self.tangent(t))
             if scalar and isinstance(value, (Mat, list, tuple, dict)):
                 raise TypeError("a Hamiltonian (a function whose gradient, flow or bracket is taken) must be "
                                 f"a scalar function of the scene, not a {type(value).__name__}")
@@ -769,7 +761,7 @@ class Scene(PaperObjects):
     def _reverse_gradient(self, H: Function) -> tuple[Mat, Mat]:
         rs = ReverseScene(self)
         X, P = rs.X, rs.P          # the leaves, created before anything that depends on them
-        value = unwrap(H(rs))
+        value = H(rs)
         if isinstance(value, (Mat, list, tuple, dict)):
             raise TypeError("a Hamiltonian (a function whose gradient, flow or bracket is taken) must be "
                             f"a scalar function of the scene, not a {type(value).__name__}")
@@ -1172,7 +1164,7 @@ class Scene(PaperObjects):
     def d(self, F: Function, flow: Flow | Mapping[str, Mat]) -> Any:
         """The derivative of F (a function of the scene) along a flow."""
         tangent = flow.tangent() if isinstance(flow, Flow) else dict(flow)
-        value = _derivative_part(unwrap(F(self.tangent(tangent))), self)
+        value = _derivative_part(F(self.tangent(tangent)), self)
         return _opaque(self, value)
 
 

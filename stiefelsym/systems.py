@@ -51,8 +51,6 @@ import numpy as np
 
 from . import scene as scene_module
 from .matrix import Mat, NeedsCoordinates, _refused, block, definite
-from .scalar import unwrap
-from .view import engine_scene
 from .reverse import Node, Rev, RevMat, Unsupported, gradient as rev_gradient, leaf as rev_leaf
 from .scene import ReverseScene, Scene, _LiftedScene
 
@@ -71,7 +69,7 @@ def _coordinate_scene(s: Any, what: str) -> None:
         if s._t.n is None:
             s._t.refuse(f"{what} needs coordinates (fixed n, r)")
         return
-    if not isinstance(engine_scene(s), Scene):
+    if not isinstance(s, Scene):
         raise _refused(getattr(s, "_tracker", None), what)   # recorded before it is raised
 
 
@@ -160,7 +158,7 @@ def complex_coordinates(s: Scene, names: Sequence[Hashable]) -> list[tuple[Hasha
 
 
 def _flat(value: Any) -> list[Any]:
-    value = unwrap(value)
+    value = value
     if isinstance(value, Mat):
         return entries(value)
     if isinstance(value, (list, tuple)):
@@ -368,7 +366,7 @@ class _PointReverseScene(ReverseScene):
 
 
 def _reverse_applies(s: Scene) -> bool:
-    return scene_module.REVERSE_GRADIENTS and not isinstance(engine_scene(s), _LiftedScene)
+    return scene_module.REVERSE_GRADIENTS and not isinstance(s, _LiftedScene)
 
 
 def _reverse_gradients(s: Scene, F: Callable[[Scene, dict], Any], point: Point,
@@ -450,10 +448,10 @@ def _kinetic_matrix(s: Scene, T: Callable[[Scene, dict], Any], velocity: Point, 
             return layout.project(cols).T.copy()    # column b: ∇T(b_b) − ∇T(0) = K b_b
         except Unsupported:
             pass
-    T0 = unwrap(T(s, zero_v))
+    T0 = (T(s, zero_v))
 
     def kinetic(w):
-        return unwrap(T(s, w)) - T0
+        return (T(s, w)) - T0
 
     coords = layout.coords
     N = len(coords)
@@ -549,7 +547,7 @@ def hamiltonian_flow(s: Scene, H: Callable[[Scene, dict], Any], constraints: Cal
         raise ValueError("the positions and the momenta need as many coordinates")
 
     def scalar_H(t, z):
-        value = unwrap(H(t, z))
+        value = (H(t, z))
         if isinstance(value, (Mat, list, tuple, dict)):
             raise TypeError("a Hamiltonian must be a scalar function, not a " + type(value).__name__)
         return value

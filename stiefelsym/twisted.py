@@ -24,7 +24,6 @@ from typing import Any, Callable, Mapping
 
 from .fields import DegenerateError, Dual, DualField
 from .matrix import Mat, NeedsCoordinates, _refused
-from .view import engine_scene
 from .scene import Flow, Scene
 from .ir.trace import TraceScene, primitive
 
@@ -37,7 +36,7 @@ def _scene(s: Any, what: str) -> Scene:
         if s._t.n is None:
             s._t.refuse(f"{what} needs coordinates (fixed n, r)")
         return s
-    s = engine_scene(s)
+    s = s
     if not isinstance(s, Scene):
         raise _refused(getattr(s, "_tracker", None), what)   # recorded before it is raised
     return s
@@ -141,7 +140,7 @@ def _dual_base(s: Scene, F: Mat | None) -> Scene | None:
     """For a scene over dual numbers a + bε lifted from a base scene (a derivative along a tangent
     vector), that base scene (whose values are the a parts of this one's), else None."""
     from .scene import TangentScene
-    s = engine_scene(s)
+    s = s
     if F is not None or not isinstance(s, TangentScene) or not isinstance(s.field, DualField):
         return None
     base = s.base
@@ -214,7 +213,7 @@ def flow(s, H: Function, F: Mat | None = None) -> Flow:
 
 def _is_free(s: Any) -> bool:
     from .free import FreeScene
-    return isinstance(engine_scene(s), FreeScene)
+    return isinstance(s, FreeScene)
 
 
 def _free_flow(s, H: Function, F: Mat | None) -> Flow:

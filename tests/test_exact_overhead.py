@@ -152,17 +152,17 @@ def test_exact_backend_remembers_operations_on_the_same_operands_only():
     assert len(be.__dict__["_memo"]) <= 128
 
 
-def test_the_claims_view_of_a_scene_looks_the_same():
-    from stiefelsym.view import ClaimScene, view
-    s = Scene(3, 1, SymbolicField(), chart="equivariant")
-    v = view(s)
-    assert type(v) is ClaimScene and v.__class__ is ClaimScene and not isinstance(v, Scene)
-    assert v._tracker is s._tracker                     # private names: the engine scene's (README)
-    assert v.X is s.X and repr(v) == "<a scene>"
+def test_the_claims_scene_is_a_tracing_scene_with_nothing_of_the_engine():
+    from stiefelsym.ir.trace import Trace, TraceScene
+    from stiefelsym.scene import REALIZATIONS
+    t = Trace(3, 1, (REALIZATIONS["standard"].name, REALIZATIONS["standard"].build))
+    v = TraceScene(t, t.g.add("scene", (0,)))
+    assert type(v) is TraceScene and not isinstance(v, Scene) and repr(v) == "<a scene>"
     with pytest.raises(AttributeError):
         v.no_such_thing = 1
     with pytest.raises(AttributeError):
-        v._no_such_private_thing
+        v._tracker                                       # no engine state behind it
+    assert repr(v.X) == "<traced 3x1 matrix>"
 
 
 def test_tangent_scene_parameters_are_constants_lifted_once():

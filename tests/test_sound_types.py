@@ -662,7 +662,7 @@ def _branch_inside_a_derivative(s):
 @pytest.mark.parametrize("func", [_branch_on_the_scene_class, _branch_on_the_size_class,
                                   _branch_inside_a_derivative], ids=lambda f: f.__name__)
 def test_a_claim_that_branches_on_the_scene_class_is_not_proved_for_all_sizes(func):
-    """Every method and every derivative hands the claim one scene class (ClaimScene) and one size
+    """Every method and every derivative hands the claim one scene class (TraceScene) and one size
     class (Dim): a branch on them takes the same path everywhere, so the dimension-free method and
     a fixed size agree (both prove the trivial branch, or neither passes)."""
     c = Claim(id="class-branch", paper=("t",), kind="id", section="t", func=func, sizes=admissible(4))

@@ -34,20 +34,8 @@ Function = Callable[[Any], Any]
 
 
 def _raw(x: Any) -> Any:
-    """The engine's value behind what claim code hands back (numbers it got wrapped from the
-    engine, in dicts, lists and tuples); anything else unchanged."""
-    global _UNWRAP
-    if _UNWRAP is None:
-        try:
-            from ..scalar import unwrap
-        except ImportError:   # no claim-facing number type: values are the engine's own
-            def unwrap(v: Any) -> Any:
-                return v
-        _UNWRAP = unwrap
-    return _UNWRAP(x)
-
-
-_UNWRAP: Callable[[Any], Any] | None = None
+    """What a traced function hands back is the engine's own value."""
+    return x
 
 X, Xt = letter_pair("X", "Xt", "n", "r", "X", "X^{T}")
 P, Pt = letter_pair("P", "Pt", "n", "r", "P", "P^{T}")
