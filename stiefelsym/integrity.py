@@ -55,16 +55,29 @@ def check_results(records: list[dict], registry: Registry, echo: Callable[[str],
             continue
         claim = registry.get(cid)
         size = None if n is None else Size(n, rr)
-        digest = graph_digest(claim, size)
-        if not r.get("digest") or r.get("digest") != digest:
+        func = None
+        if r.get("variant"):
+            k = next((k for k, c in enumerate(claim.corrections) if c.description == r["variant"]), None)
+            if k is None:
+                echo(f"REJECTED {where}: the claim has no correction {r['variant']!r}")
+                bad += 1
+                continue
+            func, claim = claim.corrections[k].func, claim.corrected(k)
+        digest = graph_digest(claim, size, func)
+        if not digest and r.get("verdict") not in ("error", "undecided", "inconclusive"):
+            echo(f"REJECTED {where}: a verdict {r.get('verdict')!r} for a claim that does not trace at this size")
+            bad += 1
+            continue
+        if (r.get("digest") or "") != digest:
             echo(f"REJECTED {where}: the record's graph digest {str(r.get('digest'))[:12] or '(none)'} is not the "
                  f"claim's ({digest[:12] or 'it does not trace'})")
             bad += 1
             continue
         if r.get("method") == "free" and r.get("verdict") == "proved":
-            again = free_done.get(cid)
+            key = (cid, r.get("variant"))
+            again = free_done.get(key)
             if again is None:
-                again = free_done[cid] = run_free(claim)
+                again = free_done[key] = run_free(claim, func)
             if again.verdict != "proved" or _canonical(again.certificate_data) != _canonical(r.get("certificate_data")):
                 echo(f"REJECTED {where}: the certificate is not the one the claim's graph gives "
                      f"(re-derived: {again.verdict})")

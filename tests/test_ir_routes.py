@@ -271,3 +271,19 @@ def test_free_and_fixed_graphs_agree_for_the_catalog_sample():
         z = next(iter(c.sizes))
         free = compile_claim(c.func, None, None, STANDARD).digest()
         assert compile_claim(c.func, z.n, z.r, STANDARD).digest() == free
+
+
+def test_a_passing_verdict_for_a_claim_that_does_not_trace_is_rejected():
+    from stiefelsym.claims import Registry
+    from stiefelsym.integrity import check_results
+
+    def untraceable(s):
+        """Refused at every size: a float constant."""
+        return {"x": s.X * 0.5}
+    reg = Registry()
+    reg.add(_claim(untraceable, cid="untraceable"))
+    forged = {"claim": "untraceable", "n": 3, "r": 2, "method": "modular", "verdict": "checked", "digest": ""}
+    lines = []
+    assert check_results([forged], reg, echo=lines.append) == 1 and "does not trace" in lines[0]
+    honest = dict(forged, verdict="error")
+    assert check_results([honest], reg, echo=lines.append) == 0

@@ -303,5 +303,8 @@ FLOAT_EXPONENT_LIMIT = 1000
 def outside_float_range(g: Graph) -> list:
     """The constants of the graph that float64 cannot carry with a meaningful error term (|c| above
     2^1000, or nonzero below 2^-1000): the float method starts at high precision instead."""
-    hi, lo = Fraction(2) ** FLOAT_EXPONENT_LIMIT, Fraction(1, 2 ** FLOAT_EXPONENT_LIMIT)
-    return [c for c in constants(g) if c and not lo < abs(Fraction(c)) < hi]
+    cached = g.cache.get("wide")
+    if cached is None:
+        hi, lo = Fraction(2) ** FLOAT_EXPONENT_LIMIT, Fraction(1, 2 ** FLOAT_EXPONENT_LIMIT)
+        cached = g.cache["wide"] = [c for c in constants(g) if c and not lo < abs(Fraction(c)) < hi]
+    return cached
