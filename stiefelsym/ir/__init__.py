@@ -6,6 +6,7 @@ method's scene.  See ``docs/architecture.md``.
 """
 from __future__ import annotations
 
+from collections import OrderedDict
 from typing import Any, Callable
 
 from .graph import Graph, Named, Ref, Size
@@ -20,8 +21,10 @@ class NotDeterministic(ValueError):
     """Two tracings of a claim gave different graphs."""
 
 
-#: graphs traced in this process: (function, n, r, realization) -> graph
-_GRAPHS: dict[tuple, Graph] = {}
+#: graphs traced in this process, the most recent first out last: (function, n, r, realization) ->
+#: graph (a run's methods, probes and passes share one graph; older graphs are dropped)
+_GRAPHS: "OrderedDict[tuple, Graph]" = OrderedDict()
+GRAPH_CACHE_SIZE = 24
 
 
 def compile_claim(func: Callable, n: int | None, r: int | None, constraints: tuple[str, Callable]) -> Graph:
@@ -31,6 +34,7 @@ def compile_claim(func: Callable, n: int | None, r: int | None, constraints: tup
     key = (func, n, r, constraints[0])
     g = _GRAPHS.get(key)
     if g is not None:
+        _GRAPHS.move_to_end(key)
         return g
     first = trace(func, n, r, constraints)
     _check_refusals(first)
@@ -40,6 +44,8 @@ def compile_claim(func: Callable, n: int | None, r: int | None, constraints: tup
         raise NotDeterministic("the claim is not deterministic: two tracings at the same size gave "
                                "different graphs")
     _GRAPHS[key] = first
+    while len(_GRAPHS) > GRAPH_CACHE_SIZE:
+        _GRAPHS.popitem(last=False)
     return first
 
 
