@@ -936,7 +936,8 @@ main.lazy = {"mutate": ("stiefelsym.cli_mutate", "mutate"),
              "tables": ("stiefelsym.cli_tables", "tables"),
              "flows": ("stiefelsym.cli_flows", "flows"),
              "speed": ("stiefelsym.cli_speed", "speed"),
-             "check": ("stiefelsym.cli_check", "check")}
+             "check": ("stiefelsym.cli_check", "check"),
+             "discover": ("stiefelsym.cli_discover", "discover")}
 
 
 if __name__ == "__main__":  # pragma: no cover
