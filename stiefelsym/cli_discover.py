@@ -37,10 +37,13 @@ def _size(text: str) -> Size:
               type=click.Choice(["auto", "exact", "rational", "modular", "float", "free"]),
               help="the methods that verify each integral found")
 @click.option("--seed", default=0, show_default=True, type=int)
+@click.option("--lax", "lax", default=None,
+              help="a Lax matrix L(λ) (LA2, module:function or file.py:function): find every A(λ) with "
+                   "dL/dt = [A, L] instead of the conserved quantities")
 @click.option("--report-dir", type=click.Path(path_type=Path), default=None,
               help="also write discover.md there (nothing is written without it)")
 def discover(flow: str, sizes: tuple[str, ...], degree: int, max_a: int, no_products: bool,
-             methods: tuple[str, ...], seed: int, report_dir: Path | None) -> None:
+             methods: tuple[str, ...], seed: int, lax: str | None, report_dir: Path | None) -> None:
     """FLOW: a catalog flow (neumann-normal, neumann-euclidean, geodesic-normal, geodesic-euclidean),
     module:function (a function of the scene returning {"X": Xdot, "P": Pdot}) or
     hamiltonian:module:function."""
@@ -49,6 +52,23 @@ def discover(flow: str, sizes: tuple[str, ...], degree: int, max_a: int, no_prod
         f, text = resolve_flow(flow)
     except (ValueError, ImportError) as exc:
         raise InputError(str(exc)) from None
+    if lax is not None:
+        from .discover import LAX, lax_partner, resolve_function
+        try:
+            L = resolve_function(lax, LAX)
+        except (ValueError, ImportError, AttributeError) as exc:
+            raise InputError(str(exc)) from None
+        ok = True
+        for z in (_size(x) for x in sizes):
+            space, verdicts = lax_partner(L, f, z, degree=min(degree, 3), max_a=max_a, seed=seed, verify=methods)
+            click.echo(f"L = {lax} along {text}, (n, r) = ({z.n}, {z.r}): {space.certificate()}")
+            click.echo(f"  A(λ) = {space.text()}" + (f"    [{', '.join(f'{m} {v}' for m, v in verdicts.items())}]"
+                                                    if verdicts else ""))
+            for b in space.basis:
+                click.echo(f"  + any multiple of {space.text(b)}")
+            ok = ok and space.particular is not None and all(
+                v in ("proved", "checked", "numeric", "undecided") for v in verdicts.values())
+        raise SystemExit(0 if ok else 1)
     lines, ok = [f"# Conserved quantities of {text}", ""], True
     for z in (_size(x) for x in sizes):
         d = conserved(f, z, degree, max_a=max_a, products=not no_products, seed=seed, name=text, verify=methods)

@@ -284,6 +284,9 @@ def hamiltonian_flow(H: Callable[[Any], Any]) -> Callable[[Any], Any]:
     return flow
 
 
+#: the catalog's Lax matrices by the paper's label: (module, function)
+LAX = {"LA2": ("sec5_neumann", "L_neum")}
+
 #: the catalog's flows by name: (module of the catalog, function, how to make the tangent, reference)
 FLOWS = {
     "neumann-normal": ("sec5_neumann", "flow_N0", "tangent", "(N0_XP2): the Neumann flow of the normal metric"),
@@ -302,6 +305,15 @@ def _catalog_module(name: str) -> Any:
         except ImportError:
             continue
     raise ImportError(f"the catalog module {name!r} is not available")
+
+
+def resolve_function(spec: str, table: dict[str, tuple[str, str]]) -> Callable[[Any], Any]:
+    """A function of the scene by catalog name, ``module:function`` or ``file.py:function``."""
+    if spec in table:
+        mod, fn = table[spec]
+        return getattr(_catalog_module(mod), fn)
+    f, _ = resolve_flow(spec)
+    return f
 
 
 def resolve_flow(spec: str) -> tuple[Callable[[Any], Any], str]:
@@ -334,3 +346,165 @@ def resolve_flow(spec: str) -> tuple[Callable[[Any], Any], str]:
         return (hamiltonian_flow(f) if how == "hamiltonian" else f), spec
     raise ValueError(f"unknown flow {spec!r}: a catalog flow ({', '.join(FLOWS)}), module:function or "
                      "hamiltonian:module:function")
+
+
+# ---------------------------------------------------------------------------------------------
+# affine spaces: Σ cⱼ Tⱼ = R identically on T*V (Lax partners, corrections of printed formulas)
+
+def open_words(degree: int, rows: str = "n", cols: str = "n", max_a: int = 1) -> list[tuple[str, ...]]:
+    """The words in X, Xᵀ, P, Pᵀ, A from ℝ^cols to ℝ^rows (a matrix rows × cols) with at most ``degree``
+    letters X, P and ``max_a`` letters A, none containing XᵀX (the empty word: the identity)."""
+    out = [()] if rows == cols else []
+    for length in range(1, degree + max_a + 1):
+        for word in itertools.product(LETTERS, repeat=length):
+            if sum(x != "A" for x in word) > degree or word.count("A") > max_a:
+                continue
+            if LETTERS[word[0]][0] != rows or LETTERS[word[-1]][1] != cols:
+                continue
+            if any(LETTERS[a][1] != LETTERS[b][0] for a, b in zip(word, word[1:])):
+                continue
+            if any(a == "Xt" and b == "X" for a, b in zip(word, word[1:])):
+                continue
+            out.append(word)
+    return out
+
+
+def word_matrix(s: Any, word: tuple[str, ...], rows: str = "n") -> Any:
+    if not word:
+        return s.In if rows == "n" else s.Ir
+    M = None
+    for x in word:
+        L = {"X": s.X, "Xt": s.X.T, "P": s.P, "Pt": s.P.T, "A": s.A}[x]
+        M = L if M is None else M @ L
+    return M
+
+
+def word_text(word: tuple[str, ...], rows: str = "n") -> str:
+    names = {"X": "X", "Xt": "Xᵀ", "P": "P", "Pt": "Pᵀ", "A": "A"}
+    return "".join(names[x] for x in word) or f"I_{rows}"
+
+
+@dataclass
+class AffineSpace:
+    """The solutions c of Σ cⱼ Tⱼ = R found at random points: a particular solution (None: there is
+    none, certified by a rank) and a basis of the homogeneous solutions."""
+
+    names: list[str]
+    particular: list[Fraction] | None
+    basis: list[list[Fraction]]
+    equations: int
+    rank: int
+    rank_augmented: int
+
+    def certificate(self) -> str:
+        if self.particular is None:
+            return (f"no formula in this {len(self.names)}-term space holds: over GF(2^61 - 1) the "
+                    f"{self.equations} x {len(self.names)} system has rank {self.rank} and its augmented "
+                    f"matrix rank {self.rank_augmented}")
+        return (f"a {len(self.basis)}-dimensional affine space of solutions in the {len(self.names)}-term space "
+                f"(rank {self.rank} of {len(self.names)})")
+
+    def text(self, c: Sequence[Fraction] | None = None) -> str:
+        c = self.particular if c is None else c
+        if c is None:
+            return "(none)"
+        out = []
+        for x, name in zip(c, self.names):
+            if x:
+                a = abs(x)
+                out.append(f"{'−' if x < 0 else '+'} {'' if a == 1 else f'{a}·'}{name}")
+        s = " ".join(out) or "0"
+        return s[2:] if s.startswith("+ ") else "−" + s[2:] if s.startswith("− ") else s
+
+
+def solve_affine(terms: Sequence[tuple[str, Callable[[Any], Any]]], target: Callable[[Any], Any], size: Size,
+                 *, seed: int = 0, points: int | None = None, realization: str = "standard") -> AffineSpace:
+    """Every c with Σ cⱼ Tⱼ(s) = R(s) at random points of T*V over GF(2^61 − 1) (matrices: entry by
+    entry), with rational coefficients reconstructed; a verdict on any solution is for the caller."""
+    import flint
+    from .ir import compile_claim
+    from .ir.evaluate import evaluate
+    from .fields import ModularField
+    from .scene import REALIZATIONS, Scene
+
+    N = len(terms)
+
+    def probe(s):
+        out = {f"T{j}": f(s) for j, (_, f) in enumerate(terms)}
+        out["R"] = target(s)
+        return out
+    cons = REALIZATIONS[realization]
+    g = compile_claim(probe, size.n, size.r, (cons.name, cons.build))
+    rng = random.Random(f"{seed}|affine|{size.n}|{size.r}|{N}")
+    rows: list[list[int]] = []
+    for k in range(points or max(4, N // max(1, size.n * size.n) + 4)):
+        scene = Scene(size.n, size.r, ModularField(PRIME), chart="cayley", rng=rng,
+                      component=k % 2 if size.r == size.n else 0, realization=realization)
+        out = evaluate(g, scene)
+        cols = [_entries_mod(out[f"T{j}"]) for j in range(N)] + [_entries_mod(out["R"])]
+        for e in range(len(cols[-1])):
+            rows.append([c[e] for c in cols[:-1]] + [(-cols[-1][e]) % PRIME])
+    M = flint.nmod_mat(rows, PRIME)
+    rank_aug = M.rank()
+    rank = flint.nmod_mat([r[:-1] for r in rows], PRIME).rank() if N else 0
+    names = [name for name, _ in terms]
+    if rank != rank_aug:
+        return AffineSpace(names, None, [], len(rows), rank, rank_aug)
+    X, nullity = M.nullspace()
+    vecs = [[int(X[i, j]) for i in range(N + 1)] for j in range(nullity)]
+    R = flint.nmod_mat(vecs, PRIME).rref()[0] if vecs else None
+    vecs = [[int(R[i, j]) for j in range(N + 1)] for i in range(nullity)] if vecs else []
+    # the row whose last coordinate is nonzero gives the particular solution (scaled to 1)
+    part = next((v for v in vecs if v[-1]), None)
+    particular = None
+    if part is not None:
+        inv = pow(part[-1], PRIME - 2, PRIME)
+        particular = [_rational(x * inv % PRIME, PRIME) if x else Fraction(0) for x in part[:-1]]
+    basis = [[_rational(x, PRIME) if x else Fraction(0) for x in v[:-1]] for v in vecs if not v[-1]]
+    if particular is not None and any(x is None for x in particular):
+        particular = None
+    basis = [b for b in basis if all(x is not None for x in b)]
+    return AffineSpace(names, particular, basis, len(rows), rank, rank_aug)
+
+
+def _entries_mod(v: Any) -> list[int]:
+    if hasattr(v, "_view"):
+        return [int(x) for x in v._view().flat]
+    return [int(v)]
+
+
+def lax_partner(L: Callable[[Any], Any], flow: Callable[[Any], Any], size: Size, *, degree: int = 2,
+                lam_powers: int = 2, max_a: int = 1, seed: int = 0,
+                verify: Sequence[str] = ("auto", "free")) -> tuple[AffineSpace, dict[str, str]]:
+    """Every A(λ) = Σ cⱼ λᵏ Wⱼ (words Wⱼ : ℝⁿ → ℝⁿ of degree <= ``degree``, k < ``lam_powers``) with
+    dL/dt = [A, L] along ``flow``; the particular solution found is verified by ``verify``."""
+    from .matrix import comm as _comm
+    from .runner import run_one
+    words = open_words(degree, "n", "n", max_a)
+    shapes = [(k, w) for k in range(lam_powers) for w in words]
+
+    def partner(s, coeffs):
+        acc = None
+        for c, (k, w) in coeffs:
+            W = word_matrix(s, w)
+            W = W * (s.lam ** k) if k else W
+            W = W * s.q(c.numerator, c.denominator) if c != 1 else W
+            acc = W if acc is None else acc + W
+        return acc
+
+    terms = [((("" if k == 0 else "λ·" if k == 1 else f"λ^{k}·") + word_text(w)),
+              lambda s, k=k, w=w: _comm(partner(s, [(Fraction(1), (k, w))]), L(s))) for k, w in shapes]
+    space = solve_affine(terms, lambda s: s.d(L, flow(s)), size, seed=seed)
+    verdicts: dict[str, str] = {}
+    if space.particular is not None:
+        coeffs = [(c, kw) for c, kw in zip(space.particular, shapes) if c]
+
+        def check(s):
+            A = partner(s, coeffs) if coeffs else s.zeros(s.n, s.n, ("n", "n"))
+            return {"dL/dt - [A, L]": s.d(L, flow(s)) - _comm(A, L(s))}
+        claim = Claim(id="discovered-lax-partner", paper=("discover",), kind="lax", section="discover",
+                      func=check, sizes=admissible(max(size.n, 1)))
+        for m in verify:
+            res = run_one(claim, None if m == "free" else size, m, seed)
+            verdicts[m if m != "free" else "free (all n, r)"] = res.verdict
+    return space, verdicts

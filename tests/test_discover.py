@@ -53,3 +53,20 @@ def test_a_users_flow_from_a_file_through_the_command_line(tmp_path):
     assert "I1 = tr(AAXXᵀ) + tr(PPᵀ)    [auto proved, free (all n, r) proved]" in r.output
     bad = CliRunner().invoke(main, ["discover", "no-such-flow"])
     assert bad.exit_code == 2 and "unknown flow" in bad.output
+
+
+def test_the_lax_partner_of_la2_is_found_and_proved_for_all_sizes():
+    from stiefelsym.discover import LAX, lax_partner, resolve_function
+    flow, _ = resolve_flow("neumann-normal")
+    space, verdicts = lax_partner(resolve_function("LA2", LAX), flow, Size(4, 2), degree=2)
+    assert space.text() == "−XPᵀ + PXᵀ − λ·A"
+    assert sorted(space.text(b) for b in space.basis) == ["I_n", "λ·I_n"]
+    assert verdicts == {"auto": "proved", "free (all n, r)": "proved"}
+
+
+def test_an_empty_space_is_certified_by_a_rank():
+    from stiefelsym.discover import lax_partner
+    flow, _ = resolve_flow("geodesic-normal")
+    space, verdicts = lax_partner(lambda s: s.X @ s.X.T, flow, Size(4, 2), degree=0)
+    assert space.particular is None and not verdicts
+    assert space.certificate().startswith("no formula in this 4-term space holds") and space.rank < space.rank_augmented
