@@ -31,12 +31,12 @@ from ._lazy import lazy
 from .fields import DegenerateError, SymbolicBudget
 from .native import Backend
 from . import ratmat
+from .denominators import NODEN, _merge_add, _merge_max, _minus  # noqa: F401 (ratmat's too)
 from .ratmat import RatMat
 
 flint = lazy("flint", globals())
 se = lazy("symengine", globals(), "se")
 
-NODEN: tuple = ()
 _INITIAL_VARS = 16
 #: beyond this many parameters (a generic operator on so(n) brings n(n-1)/2 (n(n-1)/2 + 1)/2 of
 #: them) a monomial costs a byte per parameter in flint: new matrices stay symengine expressions
@@ -64,35 +64,6 @@ def _domain_error():
 
 def _incompatible_error():
     return (_FLINT_ERRORS or _flint_errors())[1]
-
-
-def _merge_max(d1: tuple, d2: tuple) -> tuple:
-    if d1 == d2 or not d2:
-        return d1
-    if not d1:
-        return d2
-    out = dict(d1)
-    for k, e in d2:
-        if out.get(k, 0) < e:
-            out[k] = e
-    return tuple(sorted(out.items()))
-
-
-def _merge_add(d1: tuple, d2: tuple) -> tuple:
-    if not d2:
-        return d1
-    if not d1:
-        return d2
-    out = dict(d1)
-    for k, e in d2:
-        out[k] = out.get(k, 0) + e
-    return tuple(sorted(out.items()))
-
-
-def _minus(d: tuple, sub: tuple) -> tuple:
-    """The exponents of d beyond those of sub (d >= sub atom by atom)."""
-    s = dict(sub)
-    return tuple((k, e - s.get(k, 0)) for k, e in d if e - s.get(k, 0) > 0)
 
 
 _CONTEXTS: dict[int, tuple] = {}

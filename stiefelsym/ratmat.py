@@ -20,6 +20,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from . import denominators as pf
+
 
 class RatMat:
     """Numerators (numpy object array of flint polynomials) and, entry by entry, denominators
@@ -31,8 +33,6 @@ class RatMat:
     def __init__(self, a: np.ndarray, d: np.ndarray, ctx) -> None:
         self.a, self.d, self.ctx, self.o = a, d, ctx, None
 
-
-from . import polyfield as pf  # noqa: E402  (after RatMat: polyfield imports it from here)
 
 
 def _dens(shape, den) -> np.ndarray:
