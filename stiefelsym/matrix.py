@@ -29,7 +29,6 @@ import numpy as np
 from ._lazy import symengine_opaque
 from .fields import Deg, Dual, ErrNum, Field
 from .native import backend
-from .reverse import Rev
 
 
 class CoordinateTracker:
@@ -187,6 +186,10 @@ def space_size(tag: str, dims: dict[str, int]) -> int | None:
 
 _ENGINE_TYPES: set[type] = {ErrNum, Deg}
 
+#: number types of modules above this one whose elements are checked by a rule of their own:
+#: type -> check(field, x) (registered by those modules)
+_ELEMENT_CHECKS: dict[type, Any] = {}
+
 
 def engine_number_type(cls: type) -> type:
     """Register an engine number type (error-bounded floats, degree markers, dual numbers, words)."""
@@ -228,9 +231,9 @@ def check_element(field: Field, x: Any) -> Any:
         check_element(field, x.a)
         check_element(field, x.b)
         return x
-    if t is Rev:
-        check_element(getattr(field, "base", field), x.v)
-        return x
+    check = _ELEMENT_CHECKS.get(t)
+    if check is not None:
+        return check(field, x)
     if t in _ENGINE_TYPES:
         return x
     if t in _library_types():

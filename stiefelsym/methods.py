@@ -31,8 +31,8 @@ from .ir.evaluate import evaluate
 from .ir.passes import FLOAT_EXPONENT_LIMIT, coordinate_reads, outside_float_range
 from .scene import REALIZATIONS
 from .fields import (PRIME_LOW, PRIMES_IN_RANGE_LOWER, ConstantDegenerate, DegenerateError, DegreeField,
-                     ErrNum, Field, FloatField, ModularField, RationalField, SymbolicBudget,
-                     SymbolicField, random_prime)
+                     ErrNum, Field, FloatField, ModularField, RationalField, SymbolicBudget, random_prime)
+from .polyfield import SymbolicField
 from .matrix import Mat, is_scene_number
 from .native import F64, DegMat, backend, one_blas_thread, quiet_numpy
 from .paired import PairField, marker_of

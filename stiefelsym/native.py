@@ -1424,21 +1424,33 @@ def backend(field) -> Backend | None:
     return be
 
 
-#: the field classes _make dispatches on, imported on first use (the modules import this one)
+#: the field classes _make dispatches on, imported on first use
 _KINDS: list = []
+
+#: backends of number systems defined above this module, registered by their modules: field class ->
+#: (factory, whether it applies even when the native backends are switched off)
+_REGISTERED: dict[type, tuple[Any, bool]] = {}
+
+
+def register_backend(field_type: type, factory: Any, always: bool = False) -> None:
+    """A whole-matrix backend for the fields of ``field_type`` (a module above this one registers its
+    own, so that this module imports none of them)."""
+    _REGISTERED[field_type] = (factory, always)
 
 
 def _make(field) -> Backend | None:
     if not _KINDS:
         from .fields import DegreeField, DualField, FloatField, ModularField, RationalField
-        from .reverse import RevBackend, RevField
-        _KINDS[:] = [DegreeField, DualField, FloatField, ModularField, RationalField, RevBackend, RevField]
-    DegreeField, DualField, FloatField, ModularField, RationalField, RevBackend, RevField = _KINDS
+        _KINDS[:] = [DegreeField, DualField, FloatField, ModularField, RationalField]
+    DegreeField, DualField, FloatField, ModularField, RationalField = _KINDS
     t = type(field)
-    if t is RevField:                 # reverse numbers exist only as whole matrices
-        return RevBackend(field)
+    hit = _REGISTERED.get(t)
+    if hit is not None and hit[1]:      # reverse numbers exist only as whole matrices
+        return hit[0](field)
     if not ENABLED:
         return None
+    if hit is not None:
+        return hit[0](field)
     if t is ModularField:
         return ModularBackend(field)
     if t is RationalField:

@@ -1,6 +1,6 @@
 """The exact method's whole-matrix backend: rational functions over flint's multivariate polynomials.
 
-A matrix over :class:`~stiefelsym.fields.SymbolicField` is kept as a numpy array of flint
+A matrix over :class:`SymbolicField` (below) is kept as a numpy array of flint
 ``fmpq_mpoly`` numerators over ONE common denominator, a product of powers of *atoms*: monic
 irreducible polynomials registered once per field (flint factors every new divisor: a
 determinant, λ − aᵢ, aᵢ, ...).  Because the atoms are irreducible, common denominators are
@@ -25,10 +25,13 @@ from __future__ import annotations
 from fractions import Fraction
 from typing import Any
 
+import math
+import os
+
 import numpy as np
 
 from ._lazy import lazy
-from .fields import DegenerateError, SymbolicBudget
+from .fields import DegenerateError, Field, SymbolicBudget
 from .native import Backend
 from . import ratmat
 from .denominators import NODEN, _merge_add, _merge_max, _minus  # noqa: F401 (ratmat's too)
@@ -1206,3 +1209,139 @@ def _numeric_pivots(N) -> bool:
                 f = f / p
                 rows[i] = [a - f * b for a, b in zip(rows[i], rows[col])]
     return True
+
+
+# ---------------------------------------------------------------------------------------------
+# the number system whose matrices this module keeps
+
+class SymbolicField(Field):
+    """symengine expressions in the chart parameters; zero means identically zero."""
+
+    name = "symbolic"
+
+    #: matrices live in flint (:mod:`stiefelsym.polyfield`); False (or the environment variable
+    #: STIEFELSYM_EXACT_BACKEND=symengine): numpy arrays of symengine expressions, as before
+    native = os.environ.get("STIEFELSYM_EXACT_BACKEND", "flint") != "symengine"
+
+    def __init__(self) -> None:
+        self.symbols: dict[str, se.Symbol] = {}
+        self._poly_ring = None
+
+    def const(self, q):
+        if type(q) is int:
+            return se.Integer(q)
+        q = Fraction(q)
+        return se.Integer(q.numerator) / se.Integer(q.denominator)
+
+    def param(self, name, rng=None):
+        s = se.Dummy(name)   # unforgeable: a symbol a claim makes with this name is another one
+        self.symbols[name] = s
+        return s
+
+    #: the type of the encoded entries of the exact backend's generic matrices
+    #: (:class:`stiefelsym.polyfield._BigPoly`, set with the first ring): converted to symengine
+    #: where they leave the backend
+    _encoded_type = None
+
+    def normalize(self, x):
+        if type(x) is self._encoded_type:
+            return x.to_se()
+        return se.expand(x)
+
+    def poly_ring(self):
+        """The flint rational-function ring of this field's symbols (created on first use)."""
+        if self._poly_ring is None:
+            if SymbolicField._encoded_type is None:
+                # set once: assigning a class attribute invalidates the interpreter's attribute caches
+                SymbolicField._encoded_type = _BigPoly
+            self._poly_ring = PolyRing()
+        return self._poly_ring
+
+    def native_backend(self):
+        """Whole matrices as flint polynomial numerators over one common denominator."""
+        if not self.native:
+            return None
+        return PolyBackend(self, self.poly_ring())
+
+    def is_zero(self, x):
+        """Exact: x as a rational function over flint has the zero numerator (an expression flint
+        cannot hold goes through symengine's expansion and SymPy's cancel)."""
+        if isinstance(x, se.Basic) and x.is_Number:
+            return x == 0
+        if type(x) is self._encoded_type:
+            return x.is_zero()
+        if self.native:
+            try:
+                return self.poly_ring().from_se(x)[0].is_zero()
+            except NotRational:
+                pass
+        return self._is_zero_sympy(x)
+
+    @staticmethod
+    def _is_zero_sympy(x):
+        e = se.expand(x)
+        if e == 0:
+            return True
+        if e.is_Number:
+            return False
+        num, _den = e.as_numer_denom()
+        if se.expand(num) == 0:
+            return True
+        import sympy
+        return sympy.cancel(sympy.together(sympy.sympify(e))) == 0
+
+    def pivot_cost(self, x):
+        e = se.expand(x)
+        if e == 0:
+            return math.inf
+        if e.is_Number:
+            return 0.0
+        if self.is_zero(e):
+            return math.inf
+        return float(len(str(e)))
+
+    def _numeric_pivots(self, M) -> bool:
+        """Whether Gaussian elimination finds a nonzero numeric pivot at every step."""
+        rows = [[se.expand(x) for x in row] for row in M]
+        m = len(rows)
+        for col in range(m):
+            piv = next((i for i in range(col, m) if rows[i][col].is_Number and rows[i][col] != 0), None)
+            if piv is None:
+                return False
+            rows[col], rows[piv] = rows[piv], rows[col]
+            for i in range(col + 1, m):
+                f = rows[i][col] / rows[col][col]
+                if f != 0:
+                    rows[i] = [se.expand(a - f * b) for a, b in zip(rows[i], rows[col])]
+        return True
+
+    #: largest system solved by cofactors (larger ones raise SymbolicBudget)
+    max_solve = 3
+
+    def solve(self, M, B):
+        """Elimination when numeric pivots suffice (then no fractions appear); otherwise
+        Y = adj(M) B / det(M) with determinants by fraction-free elimination."""
+        m = len(M)
+        enc = self._encoded_type
+        if enc is not None:
+            M = [[x.to_se() if type(x) is enc else x for x in row] for row in M]
+            B = [[x.to_se() if type(x) is enc else x for x in row] for row in B]
+        if all(se.expand(x).is_Number for row in M for x in row) or self._numeric_pivots(M):
+            return Field.solve(self, M, B)
+        if m > self.max_solve:
+            raise SymbolicBudget(f"a symbolic {m}x{m} linear solve")
+        A = se.DenseMatrix(m, m, [se.expand(x) for row in M for x in row])
+        det = se.expand(A.det())
+        if self.is_zero(det):
+            raise DegenerateError("singular symbolic linear system")
+        adj = [[None] * m for _ in range(m)]
+        for i in range(m):
+            for j in range(m):
+                rows = [k for k in range(m) if k != j]
+                cols = [k for k in range(m) if k != i]
+                minor = se.DenseMatrix(m - 1, m - 1, [A[a, b] for a in rows for b in cols]) if m > 1 else None
+                cof = se.expand(minor.det()) if minor is not None else se.Integer(1)
+                adj[i][j] = cof if (i + j) % 2 == 0 else -cof
+        k = len(B[0]) if B else 0
+        return [[se.expand(sum((adj[i][l] * B[l][j] for l in range(m)), se.Integer(0))) / det
+                 for j in range(k)] for i in range(m)]

@@ -20,6 +20,8 @@ from typing import Any, Callable
 import numpy as np
 
 from .fields import Field
+from .matrix import _ELEMENT_CHECKS, Mat, check_element, scalar_matrix
+from .native import backend, register_backend
 
 _ids = itertools.count()
 
@@ -178,7 +180,6 @@ class RevBackend:
         self.base = field.base
 
     def _mat(self, a: np.ndarray):
-        from .matrix import Mat
         return Mat._wrap(a, self.base)
 
     def accepts(self, x):
@@ -216,11 +217,9 @@ class RevBackend:
         return s.v._shape()
 
     def zeros(self, m, k):
-        from .matrix import Mat
         return RevMat(Mat.zeros(m, k, self.base))
 
     def identity(self, m):
-        from .matrix import Mat
         return RevMat(Mat.identity(m, self.base))
 
     def add(self, a, b):
@@ -295,8 +294,6 @@ class _EntryAdjoints:
         self.dense = M if self.dense is None else self.dense + M
 
     def materialize(self):
-        from .matrix import Mat
-        from .native import backend
         be = backend(self.base)
         if be is not None and hasattr(be, "sparse"):     # not for a tape over reverse numbers
             M = Mat._wrap_native(be.sparse(self.shape[0], self.shape[1], self.entries), self.base)
@@ -309,7 +306,6 @@ class _EntryAdjoints:
 
 
 def _scaled_identity(base: Field, m: int, g):
-    from .matrix import Mat, scalar_matrix
     return scalar_matrix(g, m, base)
 
 
@@ -342,3 +338,13 @@ def gradient(root: Any, leaves: list[RevMat], one: Any) -> list:
                 grads[parent.id] = contrib
                 heapq.heappush(heap, (-parent.id, parent))
     return [done.get(leaf.node.id) for leaf in leaves]
+
+
+def _check_rev(field: Any, x: "Rev") -> "Rev":
+    """A reverse number is an element when its value is one of the base field."""
+    check_element(getattr(field, "base", field), x.v)
+    return x
+
+
+_ELEMENT_CHECKS[Rev] = _check_rev
+register_backend(RevField, RevBackend, always=True)

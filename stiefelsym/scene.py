@@ -26,7 +26,8 @@ from typing import Any, Callable, Mapping
 
 import numpy as np
 
-from .fields import DegreeField, Dual, DualField, Field, FloatField, DegenerateError, SymbolicField
+from .fields import DegreeField, Dual, DualField, Field, FloatField, DegenerateError
+from .polyfield import SymbolicField
 from .matrix import CoordinateTracker, Mat, block, check_element, definite, scalar_matrix, unify
 from .native import backend
 from .reverse import Rev, RevField, RevMat, Unsupported, gradient as rev_gradient, leaf as rev_leaf

@@ -205,7 +205,7 @@ def test_poisson_map_residual_detects_a_non_poisson_map():
 # -- the fast paths agree with the definitions --------------------------------------------------
 
 def _symbolic_scene(n, r):
-    from stiefelsym.fields import SymbolicField
+    from stiefelsym.polyfield import SymbolicField
     return Scene(n, r, SymbolicField(), chart="equivariant")
 
 

@@ -11,7 +11,8 @@ import pytest
 
 from stiefelsym import native
 from stiefelsym.claims import ClaimTimeout, Size, deadline
-from stiefelsym.fields import ModularField, RationalField, SymbolicField
+from stiefelsym.fields import ModularField, RationalField
+from stiefelsym.polyfield import SymbolicField
 from stiefelsym.matrix import comm
 from stiefelsym.runner import run_one
 from stiefelsym.scene import Scene

@@ -11,7 +11,7 @@ import sympy as sp
 from stiefelsym import Rank, admissible
 from stiefelsym import methods
 from stiefelsym.claims import Claim
-from stiefelsym.fields import SymbolicField
+from stiefelsym.polyfield import SymbolicField
 from stiefelsym.matrix import Mat
 from stiefelsym.methods import ExactTimeout, _bareiss_rank, _flint_polynomials, run_exact
 

@@ -4,8 +4,8 @@ from fractions import Fraction
 
 import pytest
 
-from stiefelsym.fields import (DegenerateError, Deg, DegreeField, Dual, FloatField, ModularField,
-                               RationalField, SymbolicField)
+from stiefelsym.fields import DegenerateError, Deg, DegreeField, Dual, FloatField, ModularField, RationalField
+from stiefelsym.polyfield import SymbolicField
 from stiefelsym.matrix import Mat
 
 

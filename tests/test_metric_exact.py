@@ -7,7 +7,7 @@ import pytest
 import symengine as se
 
 import stiefelsym.scene as scene_mod
-from stiefelsym.fields import SymbolicField
+from stiefelsym.polyfield import SymbolicField
 from stiefelsym.polyfield import ObjMat, PolyMat
 from stiefelsym.ratmat import RatMat
 from stiefelsym.scene import Scene

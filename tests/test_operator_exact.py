@@ -7,7 +7,7 @@ import pytest
 
 from stiefelsym import admissible
 from stiefelsym.claims import Claim, Size
-from stiefelsym.fields import SymbolicField
+from stiefelsym.polyfield import SymbolicField
 from stiefelsym.runner import run_one
 from stiefelsym.scene import Scene
 

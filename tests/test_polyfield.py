@@ -11,7 +11,8 @@ import symengine as se
 
 from stiefelsym import admissible, comm, native
 from stiefelsym.claims import Claim
-from stiefelsym.fields import DegenerateError, DualField, SymbolicBudget, SymbolicField
+from stiefelsym.fields import DegenerateError, DualField, SymbolicBudget
+from stiefelsym.polyfield import SymbolicField
 from stiefelsym.matrix import Mat, block
 from stiefelsym.methods import run_exact
 from stiefelsym.polyfield import ObjMat, PolyBackend, PolyMat

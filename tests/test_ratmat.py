@@ -9,7 +9,7 @@ import symengine as se
 
 from stiefelsym import native
 from stiefelsym import ratmat as rm
-from stiefelsym.fields import SymbolicField
+from stiefelsym.polyfield import SymbolicField
 from stiefelsym.polyfield import PolyMat
 from stiefelsym.ratmat import RatMat
 

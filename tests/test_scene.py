@@ -3,7 +3,8 @@ import random
 
 import pytest
 
-from stiefelsym.fields import ModularField, RationalField, SymbolicField
+from stiefelsym.fields import ModularField, RationalField
+from stiefelsym.polyfield import SymbolicField
 from stiefelsym.scene import Scene, SizeError
 
 SIZES = [(2, 1), (3, 2), (4, 2), (3, 3)]
