@@ -25,7 +25,7 @@ from typing import Any, Sequence
 import click
 
 from ._lazy import lazy
-from .claims import CatalogError, ClaimTimeout, Claim, Registry, Size, load_catalog, load_claims_file
+from .claims import CATALOG, CatalogError, ClaimTimeout, Claim, Registry, Size, load_catalog, load_claims_file
 from .hard import HARD_CASES
 from .pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT, Terminated, raise_on_sigterm
 from .results import Result, dump_results, load_results, write_atomic
@@ -237,7 +237,7 @@ def _runner():
 
 def _catalog() -> Registry:
     try:
-        return load_catalog("proofs")
+        return load_catalog()
     except (ImportError, CatalogError, ValueError) as exc:
         raise InputError(f"cannot load the catalog of claims: {exc}") from exc
 
@@ -377,8 +377,8 @@ def _commit() -> str | None:
 
 
 def _section_titles() -> dict[str, str]:
-    """Section titles the catalog may declare as ``proofs.SECTION_TITLES``."""
-    mod = sys.modules.get("proofs")
+    """Section titles the catalog may declare as ``stiefelsym.proofs.SECTION_TITLES``."""
+    mod = sys.modules.get(CATALOG)
     titles = getattr(mod, "SECTION_TITLES", None) if mod else None
     return {str(k): str(v) for k, v in titles.items()} if isinstance(titles, dict) else {}
 

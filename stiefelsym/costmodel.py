@@ -345,7 +345,7 @@ def measure(methods: Iterable[str] = METHODS, families: dict[str, str] | None = 
     from .runner import run_one
     families = families or FAMILIES
     small_ns = {} if small_ns is None else small_ns
-    registry = registry or load_catalog("proofs")
+    registry = registry or load_catalog()
     grid = n_values or {}
     out: list[dict[str, Any]] = []
     methods = list(methods)

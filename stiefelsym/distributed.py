@@ -25,7 +25,7 @@ import uuid
 from pathlib import Path
 from typing import Any, Callable, Iterable
 
-from .claims import Claim, Size
+from .claims import CATALOG, Claim, Size
 from .pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT, GIB, Outcome
 from .results import Result
 
@@ -40,7 +40,7 @@ class DistributedError(ValueError):
 def _claim_origin(claim: Claim) -> tuple[str, str]:
     """("catalog", module) for a claim of the installed catalog, ("file", text) for a user's file."""
     module = claim.source or getattr(claim.func, "__module__", "") or ""
-    if module == "proofs" or module.startswith("proofs."):
+    if module == CATALOG or module.startswith(CATALOG + "."):
         return ("catalog", module)
     try:
         path = inspect.getsourcefile(claim.func)
@@ -66,7 +66,7 @@ def _registry(origin: tuple[str, str]) -> Any:
         return reg
     from .claims import load_catalog, load_claims_file
     if origin[0] == "catalog":
-        reg = load_catalog("proofs")
+        reg = load_catalog()
     else:
         d = Path(tempfile.gettempdir()) / f"stiefelsym-dask-{os.getuid() if hasattr(os, 'getuid') else 0}"
         d.mkdir(parents=True, exist_ok=True)

@@ -81,7 +81,7 @@ def _claim(cid: str, section: str, kind: str = "id") -> Claim:
     return Claim(id=cid, paper=(cid.replace("-", "_"),), kind=kind, section=section,
                  func=lambda s: {}, sizes=admissible(n_max=3),
                  statement=r"\frac{d}{dt}\Phi = [XX^T, A]",
-                 title="Along every Neumann flow, dΦ/dt = [XXᵀ, A].", source="proofs.fake")
+                 title="Along every Neumann flow, dΦ/dt = [XXᵀ, A].", source="stiefelsym.proofs.fake")
 
 
 @pytest.fixture

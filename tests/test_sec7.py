@@ -7,8 +7,8 @@ import pytest
 from stiefelsym.free_method import run_free
 from stiefelsym.methods import run_exact, run_points
 
-import proofs.sec7_grassmannians as sec7
-from proofs.sec5_neumann import H_neumann_euclidean, H_neumann_normal
+import stiefelsym.proofs.sec7_grassmannians as sec7
+from stiefelsym.proofs.sec5_neumann import H_neumann_euclidean, H_neumann_normal
 
 SEED = 0
 
