@@ -53,7 +53,7 @@ flows: venv
 
 ## speed: residual and time against n and precision, the cost model and its fit, in reports/speed/
 speed: venv
-	$(BIN)/stiefelsym speed --report-dir reports/speed
+	$(BIN)/stiefelsym speed --report-dir reports/speed --model-file stiefelsym/costmodel.json
 
 ## report: re-render reports/verification.{md,tex} from reports/results.json
 report: venv

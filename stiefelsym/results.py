@@ -4,7 +4,7 @@ from __future__ import annotations
 import json
 import os
 import tempfile
-from dataclasses import asdict, dataclass, field
+from dataclasses import MISSING, asdict, dataclass, field, fields
 from pathlib import Path
 from typing import Any, Iterable
 
@@ -144,5 +144,21 @@ def dump_results(results: Iterable[Result], meta: dict[str, Any]) -> str:
 
 
 def load_results(path: str | Path) -> tuple[dict[str, Any], list[Result]]:
+    """The meta data and the results of a results file (``stiefelsym verify --format json``,
+    reports/results.json); ValueError, in one line, for anything else."""
     payload = json.loads(Path(path).read_text(encoding="utf-8"))
-    return payload.get("meta", {}), [Result.from_json(d) for d in payload["results"]]
+    if not isinstance(payload, dict) or not isinstance(payload.get("results"), list):
+        raise ValueError("no list of results at its top level (a file written by `stiefelsym verify`, "
+                         "--format json or reports/results.json, has one)")
+    if payload.get("schema", SCHEMA_VERSION) != SCHEMA_VERSION:
+        raise ValueError(f"schema {payload.get('schema')!r}, this version reads schema {SCHEMA_VERSION}")
+    names = {f.name for f in fields(Result)}
+    required = {f.name for f in fields(Result) if f.default is MISSING and f.default_factory is MISSING}
+    out = []
+    for i, d in enumerate(payload["results"]):
+        if not isinstance(d, dict) or not required <= d.keys():
+            missing = sorted(required - d.keys()) if isinstance(d, dict) else ["(not an object)"]
+            raise ValueError(f"result {i + 1} lacks {', '.join(missing[:4])}{', ...' if len(missing) > 4 else ''}")
+        out.append(Result.from_json({k: v for k, v in d.items() if k in names}))
+    meta = payload.get("meta", {})
+    return meta if isinstance(meta, dict) else {}, out
