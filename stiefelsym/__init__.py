@@ -8,11 +8,21 @@ The public API for writing claims:
 A claim is a function of a scene ``s`` returning a dict of named checks:
 residual matrices or scalars that must vanish on T*V(n, r), ``Rank`` or
 ``Count`` statements.
+
+Running claims from Python (the results ``stiefelsym verify`` prints, as records):
+
+    from stiefelsym import verify
+    results = verify(["euclidean-flow"], sizes=[(4, 2)], methods=["modular"])
+    results.ok, results[0].verdict
 """
-from .claims import Checks, Claim, Count, Rank, Registry, Size, admissible, claim, load_catalog, load_claims_file
+from .api import verify
+from .claims import (Checks, Claim, Count, Rank, Registry, Size, SizeSpec, admissible, claim, load_catalog,
+                     load_claims_file)
 from .matrix import Mat, block, comm
+from .results import Result, ResultList
 from .scene import Flow, Scene
 
 __all__ = ["claim", "admissible", "comm", "block", "Rank", "Count", "Checks", "Claim", "Registry", "Size",
-           "Mat", "Scene", "Flow", "load_catalog", "load_claims_file"]
+           "SizeSpec", "Mat", "Scene", "Flow", "load_catalog", "load_claims_file", "verify", "Result",
+           "ResultList"]
 __version__ = "0.1.0"

@@ -97,6 +97,25 @@ class Result:
             return ""
         return _clip(" ".join(str(text).split()), limit)
 
+    @property
+    def passed(self) -> bool:
+        """Whether the verdict is the one the claim expects (what the exit status counts)."""
+        return self.expected
+
+    def residual_sympy(self) -> Any:
+        """The witness residual of a failure as a sympy expression (see
+        :func:`stiefelsym.notebook.residual_sympy`); ValueError when there is none."""
+        from .notebook import residual_sympy
+        return residual_sympy(self)
+
+    def _repr_markdown_(self) -> str:
+        from .notebook import result_markdown
+        return result_markdown(self)
+
+    def _repr_latex_(self) -> str:
+        from .notebook import results_latex
+        return results_latex([self])
+
     def to_json(self) -> dict[str, Any]:
         d = asdict(self)
         return d
@@ -106,6 +125,33 @@ class Result:
         d = dict(d)
         d["checks"] = [CheckOutcome(**c) for c in d.get("checks", [])]
         return cls(**d)
+
+
+class ResultList(list):  # type: ignore[type-arg]  (a list of Result)
+    """The results of :func:`stiefelsym.verify`, in the order of the plan: a list, with a summary,
+    and displays for Jupyter (a summary table and one table per claim)."""
+
+    @property
+    def ok(self) -> bool:
+        """Every verdict as expected (what ``stiefelsym verify`` reports as exit status 0)."""
+        return all(r.expected for r in self)
+
+    @property
+    def unexpected(self) -> list[Result]:
+        return [r for r in self if not r.expected]
+
+    def summary(self) -> str:
+        """The summary table ``stiefelsym verify`` prints."""
+        from .report import render_summary
+        return render_summary(self)
+
+    def _repr_markdown_(self) -> str:
+        from .notebook import results_markdown
+        return results_markdown(self)
+
+    def _repr_latex_(self) -> str:
+        from .notebook import results_latex
+        return results_latex(self)
 
 
 def _umask() -> int:
