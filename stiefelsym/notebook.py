@@ -92,7 +92,7 @@ def claim_latex(c: Any) -> str:
 
 # --------------------------------------------------------------------------- sympy
 
-_NAME = re.compile(r"\b([A-Za-z][A-Za-z0-9]*)_(\d+),(\d+)\b")
+_NAME = re.compile(r"\b[A-Za-z][A-Za-z0-9]*_\d+,\d+\b|\b[A-Za-z_][A-Za-z0-9_]*\b")
 _MOD = re.compile(r"^\s*(-?\d+)\s*\(mod\s+(\d+)\)\s*$")
 
 
@@ -104,14 +104,15 @@ def _sympy_text(text: str) -> Any:
     if m:
         return sympy.Integer(int(m.group(1)) % int(m.group(2)))
     names: dict[str, Any] = {}
+    keys: dict[str, str] = {}
 
     def name(mt: re.Match) -> str:
-        key = f"{mt.group(1)}_{mt.group(2)}_{mt.group(3)}__c"
-        names[key] = sympy.Symbol(mt.group(0))
-        return key
+        word = mt.group(0)
+        if word not in keys:              # every name a symbol of that name (lambda included)
+            keys[word] = f"_s{len(keys)}"
+            names[keys[word]] = sympy.Symbol(word)
+        return keys[word]
     code = _NAME.sub(name, text)
-    for word in set(re.findall(r"\b[A-Za-z_][A-Za-z0-9_]*\b", code)) - set(names):
-        names[word] = sympy.Symbol(word)
     return sympy.parse_expr(code, local_dict=names, evaluate=True)
 
 
