@@ -46,10 +46,9 @@ class one_blas_thread:
         self._limiter = ctl.limit(limits=1, user_api="blas") if ctl is not None else None
         return self
 
-    def __exit__(self, *exc: Any) -> bool:
+    def __exit__(self, *exc: Any) -> None:
         if self._limiter is not None:
             self._limiter.restore_original_limits()
-        return False
 
 
 def blas_threads() -> int | None:

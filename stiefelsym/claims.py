@@ -96,7 +96,7 @@ def _sizes_as_ints(obj: Any, *names: str) -> None:
     for name in names:
         v = getattr(obj, name)
         if type(v) is Dim:
-            object.__setattr__(obj, name, int(v))
+            object.__setattr__(obj, name, int(v))  # type: ignore[call-overload]
 
 
 @dataclass(frozen=True)
@@ -267,7 +267,7 @@ class Claim:
         if self.fails_at is None or n is None:
             return False
         with deadline(METADATA_SECONDS, "the claim's erratum sizes (fails_at)"):
-            return bool(self.fails_at(n, r))
+            return bool(self.fails_at(n, r if r is not None else n))
 
     def __post_init__(self) -> None:
         if self.kind not in KINDS:

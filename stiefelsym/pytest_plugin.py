@@ -133,7 +133,7 @@ class ClaimItem(pytest.Item):
         if not res.expected:
             raise ClaimFailed(res.line())
 
-    def repr_failure(self, excinfo: Any, style: Any = None) -> str:
+    def repr_failure(self, excinfo: Any, style: Any = None) -> Any:
         if not isinstance(excinfo.value, ClaimFailed) or self.result is None:
             return super().repr_failure(excinfo)
         from .report import witness_lines

@@ -127,7 +127,7 @@ class Result:
         return cls(**d)
 
 
-class ResultList(list):  # type: ignore[type-arg]  (a list of Result)
+class ResultList(list[Result]):
     """The results of :func:`stiefelsym.verify`, in the order of the plan: a list, with a summary,
     and displays for Jupyter (a summary table and one table per claim)."""
 

@@ -309,7 +309,7 @@ class _EntryAdjoints:
 
 
 def _scaled_identity(base: Field, m: int, g):
-    from .matrix import Mat, scalar_matrix
+    from .matrix import scalar_matrix
     return scalar_matrix(g, m, base)
 
 

@@ -29,7 +29,7 @@ from fractions import Fraction
 from pathlib import Path
 from typing import Any, Iterable, Sequence
 
-from .costmodel import FAMILIES, UNKNOWN_CLAIM_FACTOR
+from .costmodel import UNKNOWN_CLAIM_FACTOR
 
 PRECISIONS = (None, 30, 50, 100)          # None: float64
 

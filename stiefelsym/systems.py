@@ -50,7 +50,7 @@ from typing import Any, Callable, Hashable, Mapping, Sequence
 import numpy as np
 
 from . import scene as scene_module
-from .matrix import Mat, NeedsCoordinates, _refused, block, definite
+from .matrix import Mat, _refused, block, definite
 from .scalar import unwrap
 from .view import engine_scene
 from .reverse import Node, Rev, RevMat, Unsupported, gradient as rev_gradient, leaf as rev_leaf

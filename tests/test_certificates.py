@@ -82,7 +82,7 @@ def test_every_free_proof_of_the_catalog_carries_an_accepted_certificate(catalog
 
 
 def test_certificates_survive_the_results_file(catalog_free_results):
-    from stiefelsym.results import Result, dump_results, load_results
+    from stiefelsym.results import Result, dump_results
 
     proved = [r for _, r in catalog_free_results if r.verdict == "proved"]
     payload = json.loads(dump_results(proved, {}))

@@ -115,8 +115,6 @@ def test_structural_degree_bounds_stay_finite_and_cover_the_leading_term(catalog
 
 
 def _hamiltonians(s):
-    X, P, A = s.X, s.P, s.A
-    XtP = X.T @ P
     yield lambda t: (t.P.T @ t.P).trace() / 2 - (t.X.T @ t.P @ t.X.T @ t.P).trace() * t.kappa
     yield lambda t: (t.X.T @ t.A @ t.X).trace() * (t.P.T @ t.P).trace()
     yield lambda t: (t.X.T @ t.resolvent(t.lam) @ t.X).trace()

@@ -71,7 +71,7 @@ def neum_gras_lambda_sign(s):
 
 def sphere_with_plus_trace(s):
     """Corrupted (neum-gras**): (A + tr A I)e_n + λe_n."""
-    n, r = s.n, s.r
+    r = s.r
     X = s.X
     P0 = sec7.horizontal(s, X, s.P)
     printed = sec7.flow_NE_at(s, X, P0)
