@@ -267,18 +267,13 @@ def _user_claims(paths: str | Sequence[str]) -> Registry:
 
 
 def claims_paths(paths: Sequence[str]) -> list[str]:
-    """The claims files named: a directory stands for its ``*.py`` files (sorted; not those whose
-    name starts with ``_``); a directory without any is bad input."""
-    out: list[str] = []
-    for path in paths:
-        if os.path.isdir(path):
-            files = sorted(str(p) for p in Path(path).glob("*.py") if not p.name.startswith("_"))
-            if not files:
-                raise InputError(f"the claims directory {path} holds no .py file")
-            out += files
-        else:
-            out.append(path)
-    return out
+    """The claims files named: a directory stands for its ``*.py`` files (see
+    :func:`stiefelsym.api.claims_files`); a directory without any is bad input."""
+    from .api import claims_files
+    try:
+        return [str(p) for p in claims_files(paths)]
+    except FileNotFoundError as exc:
+        raise InputError(str(exc)) from None
 
 
 def _shadowing_note(user: Registry) -> None:
