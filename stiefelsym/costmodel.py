@@ -9,7 +9,8 @@ family by a power law
 whose constant ``a`` is then raised until the curve lies above every measured point
 (an upper envelope: the prediction is never below what was seen).  The fitted
 coefficients and the measurements are stored in ``costmodel.json`` next to this
-module; ``stiefelsym speed`` measures again and rewrites it (``measure``, ``fit``).
+module (package data, read-only); ``stiefelsym speed`` measures again and writes the user's own
+fit to the user cache folder (``measure``, ``fit``, :func:`user_model_file`), which is then used.
 
 ``check(method, claim, n, r, budget)`` is what the engine calls instead of fixed size
 caps: it returns the predicted seconds, or raises ``BudgetError`` (exit status 2 on the
@@ -297,7 +298,7 @@ def model_file() -> Path:
 
 
 def model() -> CostModel:
-    """The package's cost model (costmodel.json), loaded once."""
+    """The cost model in use (:func:`model_file`: the user's own fit, else the package's), loaded once."""
     global _MODEL
     if _MODEL is None:
         _MODEL = CostModel.load()
