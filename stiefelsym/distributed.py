@@ -193,7 +193,10 @@ def serve() -> None:
             reply: Any = run_here(spec)
         except Exception as exc:  # noqa: BLE001 - the claim's file did not load, say: the run's error
             reply = Outcome("error", message=f"{type(exc).__name__}: {exc}")
-        _write_frame(out, reply)
+        try:
+            _write_frame(out, reply)
+        except OSError:                        # the dask worker is gone: so is this server
+            return
 
 
 class _Server:
