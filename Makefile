@@ -17,7 +17,7 @@ venv: $(STAMP)
 
 $(STAMP): pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
-	$(BIN)/python -m pip install --quiet -e '.[test]'
+	$(BIN)/python -m pip install --quiet -e '.[test,lint]'
 	touch $(STAMP)
 
 ## verify: verify the whole catalog (default methods) at every size n <= MAX_N and regenerate reports/
@@ -30,9 +30,19 @@ verify-all: venv
 		--report-dir reports/all
 	$(BIN)/python -m pytest -q -m slow || test $$? -eq 5
 
-## test: the test suite without the tests marked slow (pytest exit 5, "no tests", is not a failure)
+#: pytest-xdist processes of make test (TEST_JOBS=0: serial)
+TEST_JOBS ?= 2
+
+## test: the test suite without the tests marked slow, in TEST_JOBS processes (pytest exit 5, "no
+## tests", is not a failure)
 test: venv
-	$(BIN)/python -m pytest -q || test $$? -eq 5
+	$(BIN)/python -m pytest -q $(if $(filter 0,$(TEST_JOBS)),,-n $(TEST_JOBS)) || test $$? -eq 5
+
+## lint: ruff (the configuration in pyproject.toml) and mypy on the public API
+.PHONY: lint
+lint: venv
+	$(BIN)/python -m ruff check .
+	$(BIN)/python -m mypy
 
 ## bench: timings of the verification methods
 bench: venv
@@ -53,7 +63,7 @@ flows: venv
 
 ## speed: residual and time against n and precision, the cost model and its fit, in reports/speed/
 speed: venv
-	$(BIN)/stiefelsym speed --report-dir reports/speed
+	$(BIN)/stiefelsym speed --report-dir reports/speed --model-file stiefelsym/costmodel.json
 
 ## report: re-render reports/verification.{md,tex} from reports/results.json
 report: venv

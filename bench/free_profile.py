@@ -94,7 +94,7 @@ def main(argv: list[str] | None = None) -> int:
 
     if args.catalog:
         from stiefelsym.claims import load_catalog
-        cat = load_catalog("proofs")
+        cat = load_catalog()
         rows = {}
         for c in cat:
             r = run_one(c, None, "free", seed=0)

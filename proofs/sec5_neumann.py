@@ -3,7 +3,7 @@ flows (No), (N0_XP2), (NE_XP), the conserved momentum Ψ, the equations (prep),
 the Lax pair (LA1), (LA2) and the spectral invariants (perelomov)."""
 from __future__ import annotations
 
-from stiefelsym import admissible, claim, comm
+from stiefelsym import claim, comm
 
 SECTION = "5"
 

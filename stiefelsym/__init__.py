@@ -8,21 +8,22 @@ The public API for writing claims:
 A claim is a function of a scene ``s`` returning a dict of named checks:
 residual matrices or scalars that must vanish on T*V(n, r), ``Rank`` or
 ``Count`` statements.
+
+Running claims from Python (the results ``stiefelsym verify`` prints, as records):
+
+    from stiefelsym import verify
+    results = verify(["euclidean-flow"], sizes=[(4, 2)], methods=["modular"])
+    results.ok, results[0].verdict
 """
-import os as _os
-
-# The engine's parallelism is one process per run (--jobs); BLAS threads inside each process only
-# compete with the other workers (on 2 cores a 200 x 200 float64 product was 30x slower with
-# OpenBLAS's default threads under load).  Set before numpy is first imported; an explicit
-# setting in the environment wins.
-for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
-    _os.environ.setdefault(_var, "1")
-
-from .claims import Checks, Claim, Count, Rank, Registry, Size, admissible, claim, load_catalog, load_claims_file
+from .api import verify
+from .claims import Checks, Claim, Registry, Size, SizeSpec, admissible, claim, load_catalog, load_claims_file
 from .ir import block
+from .ir.statements import Count, Rank
 from .matrix import Mat, comm
+from .results import Result, ResultList
 from .scene import Flow, Scene
 
 __all__ = ["claim", "admissible", "comm", "block", "Rank", "Count", "Checks", "Claim", "Registry", "Size",
-           "Mat", "Scene", "Flow", "load_catalog", "load_claims_file"]
+           "SizeSpec", "Mat", "Scene", "Flow", "load_catalog", "load_claims_file", "verify", "Result",
+           "ResultList"]
 __version__ = "0.1.0"

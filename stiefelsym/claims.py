@@ -25,7 +25,6 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Callable, Iterable, Mapping
 
-from .ir.statements import Count, Rank
 
 
 #: seconds a claim's own metadata code (size conditions, erratum sizes) may take per call,
@@ -199,7 +198,7 @@ class Claim:
         if self.fails_at is None or n is None:
             return False
         with deadline(METADATA_SECONDS, "the claim's erratum sizes (fails_at)"):
-            return bool(self.fails_at(n, r))
+            return bool(self.fails_at(n, r if r is not None else n))
 
     def __post_init__(self) -> None:
         if self.kind not in KINDS:
@@ -222,6 +221,14 @@ class Claim:
             self.corrections.append(Correction(description, fn, changes, expect))
             return fn
         return deco
+
+    def _repr_markdown_(self) -> str:
+        from .notebook import claim_markdown
+        return claim_markdown(self)
+
+    def _repr_latex_(self) -> str:
+        from .notebook import claim_latex
+        return claim_latex(self)
 
     def corrected(self, k: int) -> "Claim":
         """The claim as its k-th correction states it (same id; its function is passed apart)."""
@@ -268,8 +275,32 @@ class Registry:
 _ACTIVE: list[Registry] = [Registry()]
 
 
+def _size_spec(cid: str, sizes: Any) -> SizeSpec:
+    """A claim's ``sizes=``: a :class:`SizeSpec` (``admissible(...)``), or a list of (n, r) pairs
+    (or :class:`Size`), meaning exactly those sizes."""
+    if sizes is None:
+        return admissible()
+    if isinstance(sizes, SizeSpec):
+        return sizes
+    try:
+        pairs = [(s.n, s.r) if isinstance(s, Size) else tuple(s) for s in sizes]
+    except TypeError:
+        raise TypeError(f"claim {cid}: sizes must be admissible(...) or a list of (n, r) pairs, "
+                        f"not {type(sizes).__name__}") from None
+    for p in pairs:
+        if len(p) != 2 or any(type(v) is not int for v in p) or not 1 <= p[1] <= p[0]:
+            raise ValueError(f"claim {cid}: the size {p!r} is not a pair (n, r) of ints with 1 <= r <= n")
+    if not pairs:
+        raise ValueError(f"claim {cid}: no sizes")
+    listed = tuple(dict.fromkeys(pairs))
+    allowed = frozenset(listed)
+    text = ", ".join(f"({n},{r})" for n, r in listed)
+    return SizeSpec(tuple(Size(n, r) for n, r in listed), n_max=max(n for n, _ in listed),
+                    where=lambda n, r: (n, r) in allowed, condition=f"only {text}")
+
+
 def claim(id: str, *, paper: str | Iterable[str], kind: str, section: str | None = None,
-          sizes: SizeSpec | None = None, statement: str = "", realization: str = "standard",
+          sizes: SizeSpec | Iterable[tuple[int, int] | Size] | None = None, statement: str = "", realization: str = "standard",
           expect: str = "holds", exact_max_n: int = 5,
           fails_at: Callable[[int, int], bool] | None = None, erratum: str = "", equivariance: str = ""):
     """Register a claim.  The function's docstring (one sentence) goes into the report."""
@@ -280,7 +311,7 @@ def claim(id: str, *, paper: str | Iterable[str], kind: str, section: str | None
             mod = sys.modules.get(fn.__module__)
             sec = getattr(mod, "SECTION", "") if mod else ""
         c = Claim(id=id, paper=labels, kind=kind, section=str(sec), func=fn,
-                  sizes=sizes if sizes is not None else admissible(), statement=statement.strip(),
+                  sizes=_size_spec(id, sizes), statement=statement.strip(),
                   title=(inspect.getdoc(fn) or "").strip(), realization=realization,
                   expect=expect, exact_max_n=exact_max_n, source=fn.__module__,
                   fails_at=fails_at, erratum=" ".join(erratum.split()), equivariance=" ".join(equivariance.split()),
@@ -295,18 +326,27 @@ class CatalogError(Exception):
     """A claims file could not be loaded."""
 
 
+#: the paper's catalog: the top-level folder proofs/, installed as this package
+CATALOG = "stiefelsym.proofs"
+#: one loading at a time: the @claim decorator writes to the registry on top of _ACTIVE, and a
+#: catalog module re-imported by one thread while another imports it would register half of it
+_LOADING = threading.RLock()
+
+
 def _collect(loader: Callable[[], None], reviewed: bool = False) -> Registry:
     reg = Registry(reviewed)
-    _ACTIVE.append(reg)
-    try:
-        loader()
-    finally:
-        _ACTIVE.pop()
+    with _LOADING:
+        _ACTIVE.append(reg)
+        try:
+            loader()
+        finally:
+            _ACTIVE.pop()
     return reg
 
 
-def load_catalog(package: str = "proofs") -> Registry:
-    """Import every module of the paper's catalog and return its claims."""
+def load_catalog(package: str = CATALOG) -> Registry:
+    """Import every module of the paper's catalog and return its claims (safe to call from
+    several threads at once: loadings are serialized, and a loading that fails returns nothing)."""
     def loader():
         pkg = importlib.import_module(package)
         for name in getattr(pkg, "MODULES", ()):
@@ -315,7 +355,7 @@ def load_catalog(package: str = "proofs") -> Registry:
                 importlib.reload(sys.modules[full])
             else:
                 importlib.import_module(full)
-    return _collect(loader, reviewed=(package == "proofs"))
+    return _collect(loader, reviewed=(package == CATALOG))
 
 
 def load_claims_file(path: str | Path) -> Registry:

@@ -25,7 +25,7 @@ from typing import Any, Sequence
 import click
 
 from ._lazy import lazy
-from .claims import CatalogError, ClaimTimeout, Claim, Registry, Size, load_catalog, load_claims_file
+from .claims import CATALOG, CatalogError, ClaimTimeout, Claim, Registry, Size, load_catalog, load_claims_file
 from .hard import HARD_CASES
 from .pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT, Terminated, raise_on_sigterm
 from .results import Result, dump_results, load_results, write_atomic
@@ -237,7 +237,7 @@ def _runner():
 
 def _catalog() -> Registry:
     try:
-        return load_catalog("proofs")
+        return load_catalog()
     except (ImportError, CatalogError, ValueError) as exc:
         raise InputError(f"cannot load the catalog of claims: {exc}") from exc
 
@@ -248,7 +248,7 @@ def _user_claims(paths: str | Sequence[str]) -> Registry:
         paths = [paths]
     merged, origin = Registry(), {}
     seen: set[str] = set()
-    for path in paths:
+    for path in claims_paths(paths):
         key = os.path.realpath(path)
         if key in seen:         # the same file twice: load it once
             continue
@@ -266,6 +266,28 @@ def _user_claims(paths: str | Sequence[str]) -> Registry:
     return merged
 
 
+def claims_paths(paths: Sequence[str]) -> list[str]:
+    """The claims files named: a directory stands for its ``*.py`` files (see
+    :func:`stiefelsym.api.claims_files`); a directory without any is bad input."""
+    from .api import claims_files
+    try:
+        return [str(p) for p in claims_files(paths)]
+    except FileNotFoundError as exc:
+        raise InputError(str(exc)) from None
+
+
+def _shadowing_note(user: Registry) -> None:
+    """Warn (stderr) about a claim of the user's files that has the id of a catalog claim."""
+    try:
+        catalog_ids = set(load_catalog().ids())
+    except (ImportError, CatalogError, ValueError):
+        return
+    for cid in user.ids():
+        if cid in catalog_ids:
+            click.echo(f"warning: claim {cid!r} of {user.origin[cid]} has the id of a catalog claim "  # type: ignore[attr-defined]
+                       "and replaces it in this run; give it an id of its own", err=True)
+
+
 def _registry(claims_files: str | Sequence[str] | None,
               ids: Sequence[str] = ()) -> tuple[Registry, Registry | None]:
     """The registry to look claims up in, and the user's registry (if any).
@@ -277,6 +299,7 @@ def _registry(claims_files: str | Sequence[str] | None,
         claims_files = [claims_files]
     user = _user_claims(claims_files) if claims_files else None
     if user is not None and all(cid in user for cid in ids):
+        _shadowing_note(user)
         return user, user
     catalog = _catalog()
     if user is None:
@@ -286,8 +309,8 @@ def _registry(claims_files: str | Sequence[str] | None,
         merged.add(c)
     for c in catalog:
         if c.id in merged:
-            click.echo(f"note: claim {c.id!r} of {user.origin[c.id]} shadows the catalog claim "  # type: ignore[attr-defined]
-                       "of the same id", err=True)
+            click.echo(f"warning: claim {c.id!r} of {user.origin[c.id]} has the id of a catalog claim "  # type: ignore[attr-defined]
+                       "and replaces it in this run; give it an id of its own", err=True)
         else:
             merged.add(c)
     return merged, user
@@ -377,8 +400,8 @@ def _commit() -> str | None:
 
 
 def _section_titles() -> dict[str, str]:
-    """Section titles the catalog may declare as ``proofs.SECTION_TITLES``."""
-    mod = sys.modules.get("proofs")
+    """Section titles the catalog may declare as ``stiefelsym.proofs.SECTION_TITLES``."""
+    mod = sys.modules.get(CATALOG)
     titles = getattr(mod, "SECTION_TITLES", None) if mod else None
     return {str(k): str(v) for k, v in titles.items()} if isinstance(titles, dict) else {}
 
@@ -620,8 +643,9 @@ def verify(ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tuple[str, ..
 
 
 def _check_costs(runner: Any, claims: list[Claim], sizes: tuple[Size, ...], methods: Sequence[str],
-                 budget: float) -> None:
-    """Refuse (BudgetError, exit 2) a planned run whose predicted time exceeds the budget."""
+                 budget: float, memory: float | None = None) -> None:
+    """Refuse (BudgetError, exit 2) a planned run whose predicted time exceeds the budget, or
+    whose n x n matrices alone would not fit in the memory budget."""
     from . import costmodel
     for c in claims:
         for m in methods:
@@ -630,7 +654,22 @@ def _check_costs(runner: Any, claims: list[Claim], sizes: tuple[Size, ...], meth
             for s in (sizes or tuple(c.sizes)):
                 if s.r < 1 or s.r > s.n or (sizes and not c.sizes.admits(s.n, s.r)):
                     continue          # refused (or skipped) with its own reason by the plan
+                costmodel.check_memory(m, c, s.n, s.r, memory)
                 costmodel.check(m, c, s.n, s.r, budget)
+
+
+#: what an ``auto`` run says when its symbolic attempt ran out of memory (then modular decided)
+_EXACT_OUT_OF_MEMORY = "exact: the symbolic computation exceeded the memory budget"
+
+
+def downgrade_note(r: Result, memory: float | None) -> str | None:
+    """The note for an ``auto`` run whose exact attempt exceeded the memory budget, so that a
+    randomized verdict stood in for a proof (None for any other result)."""
+    if r.method == "modular" and _EXACT_OUT_OF_MEMORY in (r.message or ""):
+        budget = "no limit" if memory is None else f"{memory:g} GiB"
+        return (f"note: {r.claim} {r.size}: the exact method ran out of memory (--memory {budget}), so auto "
+                f"fell back to modular ({r.verdict}, not proved); give more --memory for a proof")
+    return None
 
 
 def _engine_methods(methods: Sequence[str], max_n: int | None) -> tuple[str, ...]:
@@ -721,12 +760,17 @@ def _verify(out: Any, ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tu
             say(f"  {_shorten(_one_line(r.message), 2000)}")
         if r.verdict in ("fails", "error", "inconclusive") or not r.expected:
             say(f"  rerun: {r.rerun}")
+        note = downgrade_note(r, memory)
+        if note:
+            click.echo(note, err=True)
         progress.advance(r)
 
     started = datetime.now(timezone.utc)
     t0 = time.perf_counter()
     try:
-        _check_costs(runner, claims, sizes, methods, budget)
+        if not claims:
+            raise InputError("no claims to verify (0 claims loaded)")
+        _check_costs(runner, claims, sizes, methods, budget, memory)
         engine = runner.verify
         if scheduler is not None:
             engine = _remote(scheduler)
@@ -785,7 +829,7 @@ def _verify(out: Any, ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tu
         raise click.exceptions.Exit(EXIT_INTERRUPTED if isinstance(exc, KeyboardInterrupt)
                                     else EXIT_TERMINATED) from None
     if not results:
-        click.echo("note: nothing was run", err=True)
+        raise InputError("nothing was run: no planned (claim, size, method)")
     return EXIT_UNEXPECTED if any(not r.expected for r in results) else EXIT_OK
 
 
@@ -906,8 +950,7 @@ def report(results_file: Path | None, report_dir: Path | None) -> None:
         raise InputError(f"results file not found: {source} (run `stiefelsym verify` first)")
     try:
         meta, results = load_results(source)
-    except (OSError, UnicodeDecodeError, json.JSONDecodeError, KeyError, TypeError,
-            AttributeError) as exc:
+    except (OSError, UnicodeDecodeError, ValueError, KeyError, TypeError, AttributeError) as exc:
         raise InputError(f"{source} is not a stiefelsym results file: {_one_line(exc)}") from None
     from .integrity import certificate_problems
     problems = certificate_problems(results)

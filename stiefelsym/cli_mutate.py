@@ -52,7 +52,7 @@ def _parse_size(text: str) -> Size:
 def _registry(claims_file: str | None) -> Registry:
     """The catalog, or the user's claims followed by the catalog's (the user's shadow the catalog's)."""
     try:
-        catalog = load_catalog("proofs")
+        catalog = load_catalog()
     except (ImportError, CatalogError, ValueError) as exc:
         if claims_file is None:
             raise MutateInputError(f"cannot load the catalog of claims: {exc}") from None

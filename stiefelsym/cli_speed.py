@@ -41,9 +41,16 @@ DIM_NOTE = ("Dimensions are integers (exact ranks and counts): there is no round
                    "(a copy of the fit goes to DIR).")
 @click.option("--seed", type=click.IntRange(min=0), default=0, show_default=True, metavar="N")
 @click.option("--no-hard", is_flag=True, help="Skip the hard-case table.")
-def speed(report_dir: Path, quick: bool, seed: int, no_hard: bool) -> int:
+@click.option("--model-file", type=click.Path(dir_okay=False, path_type=Path), default=None, metavar="FILE",
+              help="Where to write the fitted cost model (default: your user cache folder, where "
+                   "stiefelsym then reads it; the installed package's fit is never written).")
+def speed(report_dir: Path, quick: bool, seed: int, no_hard: bool, model_file: Path | None = None) -> int:
     """Residual and time against n and precision per family of claims, the fitted cost model
     (time against n per method), and the hard numerical cases."""
+    import importlib.util
+    if importlib.util.find_spec("matplotlib") is None:
+        raise InputError("stiefelsym speed draws its plots with matplotlib, which is not installed: "
+                         "pip install 'stiefelsym[plots]'")
     from . import costmodel, speed as sp
     from .claims import load_catalog
     from .results import write_atomic
@@ -52,7 +59,7 @@ def speed(report_dir: Path, quick: bool, seed: int, no_hard: bool) -> int:
         report_dir.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
         raise InputError(f"cannot write the speed report to {report_dir}: {exc.strerror or exc}") from None
-    registry = load_catalog("proofs")
+    registry = load_catalog()
     say = lambda text: click.echo(text, err=True)  # noqa: E731
 
     say("measuring time against n (cost model) ...")
@@ -70,11 +77,9 @@ def speed(report_dir: Path, quick: bool, seed: int, no_hard: bool) -> int:
             pass
     costmodel.calibrate(cm_doc, calibration)
     say(f"per-claim factors from {len(calibration)} catalog runs (reports/all/results.json, reports/results.json)")
-    if quick:
-        costmodel.save(cm_doc, report_dir / "costmodel.json")
-    else:
-        costmodel.save(cm_doc)
-        costmodel.save(cm_doc, report_dir / "costmodel.json")
+    if not quick:
+        say(f"cost model fit written to {costmodel.save(cm_doc, model_file)}")
+    costmodel.save(cm_doc, report_dir / "costmodel.json")
     costmodel.plot(cm_doc, report_dir)
 
     families = {}

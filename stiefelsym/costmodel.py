@@ -9,7 +9,8 @@ family by a power law
 whose constant ``a`` is then raised until the curve lies above every measured point
 (an upper envelope: the prediction is never below what was seen).  The fitted
 coefficients and the measurements are stored in ``costmodel.json`` next to this
-module; ``stiefelsym speed`` measures again and rewrites it (``measure``, ``fit``).
+module (package data, read-only); ``stiefelsym speed`` measures again and writes the user's own
+fit to the user cache folder (``measure``, ``fit``, :func:`user_model_file`), which is then used.
 
 ``check(method, claim, n, r, budget)`` is what the engine calls instead of fixed size
 caps: it returns the predicted seconds, or raises ``BudgetError`` (exit status 2 on the
@@ -20,6 +21,7 @@ from __future__ import annotations
 
 import json
 import math
+import os
 import platform
 from datetime import datetime, timezone
 from pathlib import Path
@@ -27,7 +29,10 @@ from typing import Any, Iterable, Sequence
 
 #: seconds a single run may be predicted to take before the command line refuses it
 DEFAULT_BUDGET = 3600.0
+#: the package's fit (package data, read-only: ``stiefelsym speed`` never writes it)
 MODEL_FILE = Path(__file__).with_name("costmodel.json")
+#: the environment variable naming a cost model file to use instead of the user's or the package's
+MODEL_ENV = "STIEFELSYM_COSTMODEL"
 #: the methods the model covers (``auto`` and ``free`` are derived from them)
 METHODS = ("exact", "rational", "modular", "float")
 #: one representative catalog claim per family of claims
@@ -84,10 +89,15 @@ class CostModel:
 
     @classmethod
     def load(cls, path: Path | str | None = None) -> "CostModel":
-        p = Path(path) if path is not None else MODEL_FILE
+        """The model in ``path`` (default: :func:`model_file`); generous defaults, with a warning,
+        when that file is missing or unreadable."""
+        p = Path(path) if path is not None else model_file()
         try:
             return cls(json.loads(p.read_text(encoding="utf-8")))
-        except (OSError, ValueError):
+        except (OSError, ValueError) as exc:
+            import warnings
+            warnings.warn(f"stiefelsym: the cost model {p} cannot be read ({exc}); predictions use rough "
+                          "defaults", RuntimeWarning, stacklevel=2)
             return cls({})
 
     # -- prediction
@@ -271,8 +281,24 @@ def _exact_cap() -> int:
 _MODEL: CostModel | None = None
 
 
+def user_model_file() -> Path:
+    """Where ``stiefelsym speed`` writes a user's own fit: the user cache folder (platformdirs)."""
+    import platformdirs
+    return Path(platformdirs.user_cache_dir("stiefelsym")) / "costmodel.json"
+
+
+def model_file() -> Path:
+    """The cost model in use: $STIEFELSYM_COSTMODEL if set, else the user's own fit if there is one
+    (``stiefelsym speed``), else the package's."""
+    env = os.environ.get(MODEL_ENV)
+    if env:
+        return Path(env)
+    user = user_model_file()
+    return user if user.is_file() else MODEL_FILE
+
+
 def model() -> CostModel:
-    """The package's cost model (costmodel.json), loaded once."""
+    """The cost model in use (:func:`model_file`: the user's own fit, else the package's), loaded once."""
     global _MODEL
     if _MODEL is None:
         _MODEL = CostModel.load()
@@ -304,6 +330,24 @@ def check(method: str, claim: Any, n: int, r: int, budget: float | None = DEFAUL
                           f"beyond the budget of {format_seconds(budget)} (--budget); "
                           f"{cost.suggest(method, claim, n, r, budget)}")
     return t
+
+
+#: a lower bound of the n x n matrices a run holds at once, and of the bytes of one entry per method
+_SQUARE_MATRICES = 4
+_ENTRY_BYTES = {"float": 8, "modular": 8, "rational": 16, "exact": 16, "auto": 8}
+
+
+def check_memory(method: str, claim: Any, n: int, r: int, memory_gib: float | None) -> None:
+    """``BudgetError`` if a run's n x n matrices alone (a lower bound of what it holds) exceed the
+    memory budget in GiB (None: no budget): refused up front instead of dying of memory."""
+    from .methods import BudgetError
+    if memory_gib is None or method == "free":
+        return
+    need = _SQUARE_MATRICES * n * n * _ENTRY_BYTES.get(method, 8)
+    if need > memory_gib * (1 << 30):
+        cid = getattr(claim, "id", str(claim))
+        raise BudgetError(f"{cid} ({n},{r}) with --method {method}: its {n} x {n} matrices alone need more than "
+                          f"{need / (1 << 30):.3g} GiB, beyond the memory budget of {memory_gib:g} GiB (--memory)")
 
 
 # --------------------------------------------------------------------------- measuring and fitting
@@ -345,7 +389,7 @@ def measure(methods: Iterable[str] = METHODS, families: dict[str, str] | None = 
     from .runner import run_one
     families = families or FAMILIES
     small_ns = {} if small_ns is None else small_ns
-    registry = registry or load_catalog("proofs")
+    registry = registry or load_catalog()
     grid = n_values or {}
     out: list[dict[str, Any]] = []
     methods = list(methods)
@@ -445,12 +489,13 @@ def build(records: Sequence[dict[str, Any]], note: str = "") -> dict[str, Any]:
 
 
 def save(doc: dict[str, Any], path: Path | str | None = None) -> Path:
+    """Write a fit to ``path`` (default: the user's cache folder, :func:`user_model_file`)."""
     from .results import write_atomic
-    p = Path(path) if path is not None else MODEL_FILE
+    p = Path(path) if path is not None else user_model_file()
+    p.parent.mkdir(parents=True, exist_ok=True)
     write_atomic(p, json.dumps(doc, indent=1, sort_keys=False) + "\n")
     global _MODEL
-    if path is None or Path(path) == MODEL_FILE:
-        _MODEL = None
+    _MODEL = None
     return p
 
 

@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import itertools
 import math
-import os
 import random
 from fractions import Fraction
 from typing import Any, Sequence

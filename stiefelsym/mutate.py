@@ -604,8 +604,17 @@ def _referenced_names(fn: Callable) -> list[str]:
     return list(dict.fromkeys(out))
 
 
+def _module_package(module: str) -> str:
+    """The package a module belongs to: the catalog (``stiefelsym.proofs``) is a package of its own
+    (not the engine), any other module the top-level package of its name."""
+    from .claims import CATALOG
+    if module == CATALOG or module.startswith(CATALOG + "."):
+        return CATALOG
+    return module.split(".")[0]
+
+
 def _package(fn: Callable) -> str:
-    return (getattr(fn, "__module__", "") or "").split(".")[0]
+    return _module_package(getattr(fn, "__module__", "") or "")
 
 
 def helper_functions(fn: Callable, depth: int = 3) -> list[tuple[str, Callable]]:
@@ -636,7 +645,7 @@ def _patched(fn: Callable, original: Callable, replacement: Callable) -> Callabl
     def run(*args, **kwargs):
         slots = []
         for mname, mod in list(sys.modules.items()):
-            if mod is None or mname.split(".")[0] not in packages:
+            if mod is None or _module_package(mname) not in packages:
                 continue
             d = vars(mod)
             slots += [(d, k) for k, v in list(d.items()) if v is original]

@@ -531,31 +531,6 @@ def _uf(shape) -> float:
     return FLOAT_UNDERFLOW * math.sqrt(shape[0] * shape[1]) * 2.0
 
 
-_ALLOCATOR_TUNED = False
-
-
-def _tune_allocator() -> None:
-    """Keep glibc's malloc from handing the float backend's arrays (a 200 x 200 matrix is 320 kB)
-    back to the system after every evaluation: by default an array above 128 kB is a fresh mmap,
-    and the top of the heap is returned to the system once 256 kB of it are free, so every
-    evaluation page-faulted its arrays in again (LA1 at (200,100): 22 ms of CPU per run instead of
-    12 until glibc's own thresholds had grown).  Arrays up to 4 MB come from the heap, and up to
-    64 MB of free heap are kept.  Once per process; nothing happens off glibc."""
-    global _ALLOCATOR_TUNED
-    if _ALLOCATOR_TUNED:
-        return
-    _ALLOCATOR_TUNED = True
-    try:
-        import ctypes
-        mallopt = ctypes.CDLL(None).mallopt
-    except (OSError, AttributeError):
-        return
-    M_TRIM_THRESHOLD, M_TOP_PAD, M_MMAP_THRESHOLD = -1, -2, -3
-    mallopt(M_MMAP_THRESHOLD, 4 << 20)
-    mallopt(M_TRIM_THRESHOLD, 64 << 20)
-    mallopt(M_TOP_PAD, 16 << 20)
-
-
 #: X = (I − S)(I + S)⁻¹ J from the solve Y = (I + S)⁻¹ J as 2Y − J (see :meth:`Float64Backend._cayley`)
 CAYLEY_BY_SOLVE = True
 
@@ -625,7 +600,6 @@ class Float64Backend(Backend):
 
     def __init__(self, field) -> None:
         self.field = field
-        _tune_allocator()
         #: the matrices holding a remembered product or transpose (see :meth:`release`)
         self._holders: list[F64] = []
 
@@ -1124,45 +1098,8 @@ class Float64Backend(Backend):
         return F64(cat("v"), _up(e, sum(len(row) for row in grid)), cat("m"))
 
 
-#: openblas_set_num_threads_local of the OpenBLAS that numpy uses (None: not found; False: not looked up)
-_BLAS_LOCAL: Any = False
-
-
-def _blas_threads_local():
-    global _BLAS_LOCAL
-    if _BLAS_LOCAL is False:
-        _BLAS_LOCAL = None
-        try:
-            import ctypes
-            with open("/proc/self/maps") as fh:
-                paths = sorted({line.split()[-1] for line in fh if "openblas" in line.lower() and "/" in line})
-            for path in paths:
-                fn = getattr(ctypes.CDLL(path), "openblas_set_num_threads_local", None)
-                if fn is not None:
-                    fn.argtypes, fn.restype = [ctypes.c_int], ctypes.c_int
-                    _BLAS_LOCAL = fn
-                    break
-        except (OSError, AttributeError, ValueError):
-            _BLAS_LOCAL = None
-    return _BLAS_LOCAL
-
-
-class one_blas_thread:
-    """A context in which numpy's BLAS and LAPACK calls from this thread run on one thread (the
-    setting is local to the calling thread and restored on exit; nothing happens where OpenBLAS
-    does not offer it).  The float method's matrices (n up to a few hundred) are too small for
-    threads to pay: OpenBLAS's threads wait for each other by spinning, so on a busy machine (or
-    under ``--jobs``) a 200 x 200 product took 15 ms of CPU with two threads and 0.3 ms with one."""
-
-    def __enter__(self):
-        fn = _blas_threads_local()
-        self._old = fn(1) if fn is not None else None
-        return self
-
-    def __exit__(self, *exc):
-        if self._old is not None:
-            _blas_threads_local()(self._old)
-        return False
+#: the float method's BLAS setting (threadpoolctl, restored on exit): see :mod:`stiefelsym.blas`
+from .blas import one_blas_thread  # noqa: E402,F401
 
 
 # ----------------------------------------------------------------------------- degree markers

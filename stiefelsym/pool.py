@@ -214,6 +214,8 @@ def _worker_main(task_fd: int, result_fd: int, execute: Callable[[Any], Any],
             pass
         _redirect_fd1()
         sys.stdout = sys.stderr
+        from .blas import tune_worker_process
+        tune_worker_process()
         if memory is not None:
             import resource
             soft, hard = resource.getrlimit(resource.RLIMIT_AS)

@@ -4,7 +4,7 @@ from __future__ import annotations
 import json
 import os
 import tempfile
-from dataclasses import asdict, dataclass, field
+from dataclasses import MISSING, asdict, dataclass, field, fields
 from pathlib import Path
 from typing import Any, Iterable
 
@@ -99,6 +99,25 @@ class Result:
             return ""
         return _clip(" ".join(str(text).split()), limit)
 
+    @property
+    def passed(self) -> bool:
+        """Whether the verdict is the one the claim expects (what the exit status counts)."""
+        return self.expected
+
+    def residual_sympy(self) -> Any:
+        """The witness residual of a failure as a sympy expression (see
+        :func:`stiefelsym.notebook.residual_sympy`); ValueError when there is none."""
+        from .notebook import residual_sympy
+        return residual_sympy(self)
+
+    def _repr_markdown_(self) -> str:
+        from .notebook import result_markdown
+        return result_markdown(self)
+
+    def _repr_latex_(self) -> str:
+        from .notebook import results_latex
+        return results_latex([self])
+
     def to_json(self) -> dict[str, Any]:
         d = asdict(self)
         return d
@@ -108,6 +127,33 @@ class Result:
         d = dict(d)
         d["checks"] = [CheckOutcome(**c) for c in d.get("checks", [])]
         return cls(**d)
+
+
+class ResultList(list[Result]):
+    """The results of :func:`stiefelsym.verify`, in the order of the plan: a list, with a summary,
+    and displays for Jupyter (a summary table and one table per claim)."""
+
+    @property
+    def ok(self) -> bool:
+        """Every verdict as expected (what ``stiefelsym verify`` reports as exit status 0)."""
+        return all(r.expected for r in self)
+
+    @property
+    def unexpected(self) -> list[Result]:
+        return [r for r in self if not r.expected]
+
+    def summary(self) -> str:
+        """The summary table ``stiefelsym verify`` prints."""
+        from .report import render_summary
+        return render_summary(self)
+
+    def _repr_markdown_(self) -> str:
+        from .notebook import results_markdown
+        return results_markdown(self)
+
+    def _repr_latex_(self) -> str:
+        from .notebook import results_latex
+        return results_latex(self)
 
 
 def _umask() -> int:
@@ -146,5 +192,21 @@ def dump_results(results: Iterable[Result], meta: dict[str, Any]) -> str:
 
 
 def load_results(path: str | Path) -> tuple[dict[str, Any], list[Result]]:
+    """The meta data and the results of a results file (``stiefelsym verify --format json``,
+    reports/results.json); ValueError, in one line, for anything else."""
     payload = json.loads(Path(path).read_text(encoding="utf-8"))
-    return payload.get("meta", {}), [Result.from_json(d) for d in payload["results"]]
+    if not isinstance(payload, dict) or not isinstance(payload.get("results"), list):
+        raise ValueError("no list of results at its top level (a file written by `stiefelsym verify`, "
+                         "--format json or reports/results.json, has one)")
+    if payload.get("schema", SCHEMA_VERSION) != SCHEMA_VERSION:
+        raise ValueError(f"schema {payload.get('schema')!r}, this version reads schema {SCHEMA_VERSION}")
+    names = {f.name for f in fields(Result)}
+    required = {f.name for f in fields(Result) if f.default is MISSING and f.default_factory is MISSING}
+    out = []
+    for i, d in enumerate(payload["results"]):
+        if not isinstance(d, dict) or not required <= d.keys():
+            missing = sorted(required - d.keys()) if isinstance(d, dict) else ["(not an object)"]
+            raise ValueError(f"result {i + 1} lacks {', '.join(missing[:4])}{', ...' if len(missing) > 4 else ''}")
+        out.append(Result.from_json({k: v for k, v in d.items() if k in names}))
+    meta = payload.get("meta", {})
+    return meta if isinstance(meta, dict) else {}, out

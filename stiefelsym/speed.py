@@ -29,7 +29,7 @@ from fractions import Fraction
 from pathlib import Path
 from typing import Any, Iterable, Sequence
 
-from .costmodel import FAMILIES, UNKNOWN_CLAIM_FACTOR
+from .costmodel import UNKNOWN_CLAIM_FACTOR
 
 PRECISIONS = (None, 30, 50, 100)          # None: float64
 
@@ -524,7 +524,7 @@ def hard_table(cases: Sequence[str] | None = None, claims: Sequence[Any] | None 
     from .hard import HARD_CASES
     cases = list(cases or HARD_CASES)
     if claims is None:
-        registry = registry or load_catalog("proofs")
+        registry = registry or load_catalog()
         claims = [registry.get(c) for c in HARD_CLAIMS] + [control_claim()]
     rows = []
     for case in cases:
@@ -566,7 +566,7 @@ def hard_sizes_table(plan: Sequence[tuple] = HARD_SIZE_PLAN, seed: int = 0, regi
     budget is not run; its row says so (verdict ``refused``, never a wrong verdict)."""
     from .claims import Size, load_catalog
     from .costmodel import format_seconds, predict
-    registry = registry or load_catalog("proofs")
+    registry = registry or load_catalog()
     rows: list[dict[str, Any]] = []
     for label, hard, cids, sizes, methods, timeout in plan:
         for cid in cids:

@@ -50,14 +50,13 @@ from typing import Any, Callable, Hashable, Mapping, Sequence
 import numpy as np
 
 from . import scene as scene_module
-from .matrix import Mat, NeedsCoordinates, _refused, block, definite
+from .ir.trace import TraceScene, primitive
+from .matrix import Mat, _refused, block, definite
 from .reverse import Node, Rev, RevMat, Unsupported, gradient as rev_gradient, leaf as rev_leaf
 from .scene import ReverseScene, Scene, _LiftedScene
 
 Point = Mapping[Hashable, Mat]
 Coordinates = Sequence[tuple[Hashable, Mat]]
-
-from .ir.trace import TraceScene, primitive
 
 __all__ = ["derivative", "entries", "symmetric_entries", "hermitian_entries", "real_coordinates",
            "complex_coordinates", "euler_lagrange", "hamiltonian_flow", "double_point", "coupled_point",

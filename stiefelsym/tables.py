@@ -18,11 +18,9 @@ drawn as integers; every matrix below is polynomial in them, with the degree bou
 """
 from __future__ import annotations
 
-import json
 import math
 from dataclasses import dataclass, field
 from fractions import Fraction
-from pathlib import Path
 from typing import Any, Callable, Iterable
 
 import flint
@@ -889,7 +887,6 @@ def _leaf_kernel_bound(cert: Certificate, n: int, r: int, seed: int) -> Certific
     ctx = flint.fmpz_mpoly_ctx.get(("p", nv), "lex")
     gens = list(ctx.gens())
     zero = ctx.constant(0)
-    pt = make_point(n, r, [0] * nv, with_A=False)
     # the symbolic point: P1 skew, P2 from the generators, in the order of make_point
     it = iter(gens)
     P = [[zero] * r for _ in range(n)]

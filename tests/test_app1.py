@@ -8,8 +8,8 @@ from stiefelsym import comm, twisted
 from stiefelsym.free_method import run_free
 from stiefelsym.methods import run_exact, run_points
 
-import proofs.app1_magnetic_neumann as app1
-from proofs.sec5_neumann import H_neumann_euclidean, H_neumann_normal
+import stiefelsym.proofs.app1_magnetic_neumann as app1
+from stiefelsym.proofs.sec5_neumann import H_neumann_euclidean, H_neumann_normal
 
 SEED = 0
 

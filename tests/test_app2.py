@@ -12,7 +12,7 @@ from stiefelsym.methods import run_exact, run_points
 from stiefelsym.runner import run_one
 from stiefelsym.systems import coupled_point, derivative, double_point, euler_lagrange, real_coordinates
 
-import proofs.app2_double_coupled_complex as a
+import stiefelsym.proofs.app2_double_coupled_complex as a
 
 SEED = 0
 
@@ -75,7 +75,7 @@ def double_diagonal_sign(s):
 
 def double_lax_extends_the_normal_pair(s):
     """Corrupted reduction: the corrected (LA3*D) at X = Y against the 𝓐*_neum of (LA4) for (N0_XP2)."""
-    from proofs.sec8_dual_lax_pair import A_dual_normal, L_dual
+    from stiefelsym.proofs.sec8_dual_lax_pair import A_dual_normal, L_dual
     z = {"X": s.X, "Y": s.X, "Xdot": s.P, "Ydot": s.P}
     return {"L": a.L_dual_double(s, z, s.resolvent(s.lam)) - L_dual(s), "A": a.A_dual_double(s, z) - A_dual_normal(s)}
 

@@ -65,7 +65,7 @@ def test_claims_are_documented(catalog):
     for c in catalog:
         assert c.title and c.statement, c.id
         assert c.kind in ("id", "lax", "pb", "dim", "not", "geo")
-        from proofs import SECTION_TITLES
+        from stiefelsym.proofs import SECTION_TITLES
         assert c.section in SECTION_TITLES, c.id
 
 

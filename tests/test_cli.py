@@ -81,7 +81,7 @@ def _claim(cid: str, section: str, kind: str = "id") -> Claim:
     return Claim(id=cid, paper=(cid.replace("-", "_"),), kind=kind, section=section,
                  func=lambda s: {}, sizes=admissible(n_max=3),
                  statement=r"\frac{d}{dt}\Phi = [XX^T, A]",
-                 title="Along every Neumann flow, dΦ/dt = [XXᵀ, A].", source="proofs.fake")
+                 title="Along every Neumann flow, dΦ/dt = [XXᵀ, A].", source="stiefelsym.proofs.fake")
 
 
 @pytest.fixture
@@ -506,7 +506,6 @@ def test_subprocess_ctrl_c_exits_130_and_writes_no_report(tmp_path):
 
 
 def test_derive_prints_a_latex_derivation_or_exits_1():
-    from click.testing import CliRunner
     from stiefelsym.cli import main
     ok = CliRunner().invoke(main, ["derive", "normal-flow"])
     assert ok.exit_code == 0 and "\\operatorname{nf}(R) &= 0" in ok.output and "proved for all n, r" in ok.output

@@ -13,7 +13,7 @@ from stiefelsym.dimensions import (Certificate, Side, exact, generic_rank, rank_
 from stiefelsym.methods import run_exact, run_points
 from stiefelsym.runner import run_one
 
-import proofs.sec6_dimension_lemmas as sec6
+import stiefelsym.proofs.sec6_dimension_lemmas as sec6
 
 SEED = 0
 
@@ -242,7 +242,7 @@ def test_torus_values_are_the_torus_functions(n, r):
 def test_completeness_functions_are_the_printed_ones(n, r):
     """The scalar functions (perelomov), (FF) and (BB) whose gradients the completeness claims take are the
     printed functions, in the same order."""
-    import proofs.sec6_compatible_brackets as cb
+    import stiefelsym.proofs.sec6_compatible_brackets as cb
     s = _modular_scene(n, r)
     lams = [s.scalar(f"lam{j}") for j in range(3)]
     assert [f(s) for f in cb._perelomov_functions(3, n)] == [cb.perelomov(s, lam, k) for lam in lams
@@ -256,7 +256,7 @@ def test_com_completeness_with_one_power_wrong_fails():
     """Negative controls of the completeness functions: (perelomov) with its top power tr M^n replaced by
     tr M^(n-1)·tr M (dependent on the others) loses an independent differential, refuted exactly; and
     the printed functions with a count one too small are refuted by every sampled method."""
-    import proofs.sec6_compatible_brackets as cb
+    import stiefelsym.proofs.sec6_compatible_brackets as cb
     claim = next(c for c in _catalog_claims() if c.id == "com-completeness")
 
     def corrupted(s):

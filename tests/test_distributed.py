@@ -21,7 +21,7 @@ SIZES = [Size(3, 1), Size(4, 2)]
 @pytest.fixture(scope="module")
 def cluster():
     from distributed import Client, LocalCluster
-    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cl, \
+    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0") as cl, \
             Client(cl) as client:
         yield cl, client
 
@@ -84,3 +84,75 @@ def test_dask_is_not_imported_by_list():
             "print(any(m.startswith(('dask', 'distributed')) for m in sys.modules))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.strip() == "False"
+
+
+SLEEPER = (
+    "import time\n"
+    "from stiefelsym import claim\n"
+    "@claim('slow-zero', paper='x', kind='id', sizes=[(2, 1), (3, 1), (3, 2), (4, 1)])\n"
+    "def slow_zero(s):\n"
+    "    \"\"\"X - X vanishes, slowly.\"\"\"\n"
+    "    time.sleep(1.5)\n"
+    "    return {'zero': s.X - s.X}\n")
+
+
+def _sleepers(tmp_path):
+    from stiefelsym.claims import load_claims_file
+    f = tmp_path / "slow_claims.py"
+    f.write_text(SLEEPER)
+    return list(load_claims_file(f))
+
+
+def test_threaded_workers_give_the_verdicts_of_a_local_run(catalog):
+    """A default `dask worker` runs two task threads: the runs go to run servers (never a fork from
+    the threaded worker), the catalog is loaded once per server, and every verdict is a local run's."""
+    from distributed import Client, LocalCluster
+    claims = [catalog.get(c) for c in CLAIMS]
+    with LocalCluster(n_workers=1, threads_per_worker=2, processes=True, dashboard_address=":0") as cl, \
+            Client(cl) as client:
+        remote = D.verify(claims, client=client, sizes=SIZES, methods=("auto", "modular"), seed=3, timeout=120)
+    local = runner.verify(claims, sizes=SIZES, methods=("auto", "modular"), seed=3, timeout=120)
+    assert [_key(r) for r in remote] == [_key(r) for r in local]
+    assert {r.verdict for r in remote} >= {"proved", "checked"}
+
+
+def test_a_worker_killed_mid_run_changes_no_verdict(tmp_path):
+    import os
+    import signal
+    import threading
+    from distributed import Client, LocalCluster
+    claims = _sleepers(tmp_path)
+    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0") as cl, \
+            Client(cl) as client:
+        pids = list(client.run(os.getpid).values())
+        killer = threading.Timer(2.0, lambda: os.kill(pids[0], signal.SIGKILL))
+        killer.start()
+        try:
+            remote = D.verify(claims, client=client, methods=("modular",), seed=1, timeout=60)
+        finally:
+            killer.cancel()
+    local = runner.verify(claims, methods=("modular",), seed=1, timeout=60)
+    assert [_key(r) for r in remote] == [_key(r) for r in local]
+    assert [r.verdict for r in remote] == ["checked"] * 4
+
+
+def test_no_worker_left_is_a_clear_error(tmp_path, monkeypatch):
+    import threading
+    from distributed import Client, LocalCluster
+    monkeypatch.setattr(D, "NO_WORKER_SECONDS", 2.0)
+    claims = _sleepers(tmp_path)
+    with LocalCluster(n_workers=1, threads_per_worker=1, processes=True, dashboard_address=":0") as cl, \
+            Client(cl) as client:
+        threading.Timer(1.0, lambda: cl.scale(0)).start()
+        t0 = time.monotonic()
+        with pytest.raises(D.DistributedError, match="no dask worker is left"):
+            D.verify(claims, client=client, methods=("modular",), seed=1, timeout=60)
+        assert time.monotonic() - t0 < 40
+
+
+def test_a_worker_with_another_version_is_refused(cluster, catalog, monkeypatch):
+    _, client = cluster
+    import stiefelsym
+    monkeypatch.setattr(stiefelsym, "__version__", "0.0.0-other")
+    with pytest.raises(D.DistributedError, match="install the same version"):
+        D.verify([catalog.get("neumann-flow")], client=client, sizes=[Size(3, 1)], methods=("modular",))

@@ -256,7 +256,6 @@ class _PairField:
 
 def _check_bounds(x, F):
     import math
-    import sympy
     N = x.r.N
     if N.is_zero:
         return

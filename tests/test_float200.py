@@ -122,7 +122,6 @@ def test_the_deciding_entries_are_those_of_the_full_arrays():
     bounds, entries above the bound, unresolved entries, infinities and nan."""
     from stiefelsym.methods import _float_entries
     F = FloatField()
-    be = native.backend(F)
     rng = np.random.default_rng(3)
     for trial in range(60):
         v = rng.standard_normal((5, 4)) * 10.0 ** rng.integers(-20, 3)

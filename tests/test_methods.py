@@ -284,7 +284,7 @@ def test_a_point_at_a_pole_is_redrawn_and_reported_never_a_crash():
 
 def _neumann_flow(s):
     """The printed Neumann flow (No), as the catalog writes it."""
-    from proofs.sec5_neumann import flow_No
+    from stiefelsym.proofs.sec5_neumann import flow_No
     return flow_No(s, s.kappa)
 
 

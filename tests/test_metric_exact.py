@@ -6,7 +6,6 @@ import random
 import pytest
 import symengine as se
 
-import stiefelsym.scene as scene_mod
 from stiefelsym.polyfield import SymbolicField
 from stiefelsym.polyfield import ObjMat, PolyMat
 from stiefelsym.ratmat import RatMat

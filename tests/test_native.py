@@ -7,6 +7,8 @@ import random
 from fractions import Fraction
 
 import numpy as np
+import os
+
 import pytest
 
 from stiefelsym import native
@@ -113,8 +115,6 @@ def test_structural_degree_bounds_stay_finite_and_cover_the_leading_term(catalog
 
 
 def _hamiltonians(s):
-    X, P, A = s.X, s.P, s.A
-    XtP = X.T @ P
     yield lambda t: (t.P.T @ t.P).trace() / 2 - (t.X.T @ t.P @ t.X.T @ t.P).trace() * t.kappa
     yield lambda t: (t.X.T @ t.A @ t.X).trace() * (t.P.T @ t.P).trace()
     yield lambda t: (t.X.T @ t.resolvent(t.lam) @ t.X).trace()
@@ -372,23 +372,32 @@ def test_degree_markers_of_diagonals_and_constants_equal_the_entrywise_sum():
         assert (d1.num, d1.den, d1.h) == (d2.num, d2.den, d2.h) and G1.constant_bits == G2.constant_bits
 
 
-def test_one_blas_thread_is_local_and_restored():
-    """The float method's BLAS setting is the calling thread's, and it is restored on exit (also
-    when the run raises)."""
-    fn = native._blas_threads_local()
-    if fn is None:
-        pytest.skip("numpy's BLAS is not OpenBLAS with local thread settings")
-    before = fn(3)
-    try:
+def test_one_blas_thread_limits_and_restores():
+    """The float method's BLAS setting (threadpoolctl) is one thread inside and the previous count
+    after (also when the run raises)."""
+    from stiefelsym import blas
+    ctl = blas.controller()
+    if ctl is None or blas.blas_threads() is None:
+        pytest.skip("threadpoolctl finds no BLAS here")
+    with ctl.limit(limits=2, user_api="blas"):
+        before = blas.blas_threads()
         with native.one_blas_thread():
-            assert fn(1) == 1
-        assert fn(3) == 3
+            assert blas.blas_threads() == 1
+        assert blas.blas_threads() == before
         with pytest.raises(RuntimeError):
             with native.one_blas_thread():
                 raise RuntimeError
-        assert fn(3) == 3
-    finally:
-        fn(before)
+        assert blas.blas_threads() == before
+
+
+def test_importing_stiefelsym_leaves_the_environment_alone():
+    """Importing the package sets no environment variable and no thread count (a subprocess)."""
+    import subprocess
+    import sys
+    code = ("import os; before = dict(os.environ); import stiefelsym, stiefelsym.native; "
+            "assert dict(os.environ) == before, set(os.environ) ^ set(before)")
+    env = {k: v for k, v in os.environ.items() if not k.endswith("_NUM_THREADS")}
+    subprocess.run([sys.executable, "-c", code], check=True, env=env)
 
 
 @pytest.mark.parametrize("make", [lambda: ModularField(P61), RationalField, FloatField])

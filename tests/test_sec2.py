@@ -4,7 +4,7 @@ import pytest
 from stiefelsym import Count, Rank, comm
 from stiefelsym.methods import run_exact, run_points
 
-import proofs.sec2_hamiltonian_flows as sec2
+import stiefelsym.proofs.sec2_hamiltonian_flows as sec2
 
 SEED = 0
 

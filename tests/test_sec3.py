@@ -1,7 +1,7 @@
 """§3 claims: each holds at a small size, and a corrupted copy of each fails (negative controls)."""
 import pytest
 
-from proofs import sec3_geodesic_flows as g
+from stiefelsym.proofs import sec3_geodesic_flows as g
 from stiefelsym import Rank, admissible
 from stiefelsym.claims import Claim, load_catalog
 from stiefelsym.methods import run_exact, run_points

@@ -10,7 +10,7 @@ from stiefelsym.free_method import run_free
 from stiefelsym.methods import run_exact, run_points
 from stiefelsym.runner import run_one
 
-import proofs.sec4_integrability as sec4
+import stiefelsym.proofs.sec4_integrability as sec4
 
 SEED = 0
 

@@ -7,7 +7,7 @@ from stiefelsym import comm
 from stiefelsym.free_method import run_free
 from stiefelsym.methods import run_exact, run_points
 
-import proofs.sec5_neumann as sec5
+import stiefelsym.proofs.sec5_neumann as sec5
 
 SEED = 0
 

@@ -13,10 +13,10 @@ from stiefelsym import brackets as B
 from stiefelsym.free_method import run_free
 from stiefelsym.methods import run_exact, run_points
 
-import proofs.sec6_compatible_brackets as sec6
+import stiefelsym.proofs.sec6_compatible_brackets as sec6
 
 SEED = 0
-MODULE = "proofs.sec6_compatible_brackets"
+MODULE = "stiefelsym.proofs.sec6_compatible_brackets"
 
 #: proved for every n, r by rewriting modulo (cond_XP)
 FREE_PROVED = ("symmetric-pair", "pencil-casimirs", "theta-poisson-map", "theta-factorization", "cpb-hamiltonian",
@@ -246,8 +246,8 @@ def test_every_bracket_label_of_section_6_has_a_claim(catalog):
 # -- the bracket claims added to §2 and §4 ------------------------------------------------------
 # (test_sec2.py and test_sec4.py list the claims of their sections; these three are tested here)
 
-import proofs.sec2_hamiltonian_flows as sec2   # noqa: E402
-import proofs.sec4_integrability as sec4       # noqa: E402
+import stiefelsym.proofs.sec2_hamiltonian_flows as sec2   # noqa: E402
+import stiefelsym.proofs.sec4_integrability as sec4       # noqa: E402
 
 
 def phi_poisson_with_minus_sign(s):

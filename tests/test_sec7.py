@@ -7,8 +7,8 @@ import pytest
 from stiefelsym.free_method import run_free
 from stiefelsym.methods import run_exact, run_points
 
-import proofs.sec7_grassmannians as sec7
-from proofs.sec5_neumann import H_neumann_euclidean, H_neumann_normal
+import stiefelsym.proofs.sec7_grassmannians as sec7
+from stiefelsym.proofs.sec5_neumann import H_neumann_euclidean, H_neumann_normal
 
 SEED = 0
 
@@ -71,7 +71,7 @@ def neum_gras_lambda_sign(s):
 
 def sphere_with_plus_trace(s):
     """Corrupted (neum-gras**): (A + tr A I)e_n + λe_n."""
-    n, r = s.n, s.r
+    r = s.r
     X = s.X
     P0 = sec7.horizontal(s, X, s.P)
     printed = sec7.flow_NE_at(s, X, P0)

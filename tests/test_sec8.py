@@ -12,9 +12,9 @@ from stiefelsym import Count, block, comm
 from stiefelsym.free_method import run_free
 from stiefelsym.methods import run_exact, run_points
 
-import proofs.sec7_grassmannians as sec7
-import proofs.sec8_dual_lax_pair as sec8
-from proofs.sec5_neumann import H_neumann_euclidean, H_neumann_normal, power_trace
+import stiefelsym.proofs.sec7_grassmannians as sec7
+import stiefelsym.proofs.sec8_dual_lax_pair as sec8
+from stiefelsym.proofs.sec5_neumann import H_neumann_euclidean, H_neumann_normal, power_trace
 
 SEED = 0
 

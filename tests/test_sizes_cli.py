@@ -10,9 +10,8 @@ import textwrap
 from pathlib import Path
 
 import pytest
-from click.testing import CliRunner
 
-from stiefelsym import cli, runner
+from stiefelsym import runner
 from stiefelsym.claims import Claim, Size, SizeSpec, admissible
 from stiefelsym.scene import SizeError
 

@@ -139,6 +139,7 @@ def test_hard_table_has_no_wrong_verdict(catalog):
 
 
 def test_speed_quick_writes_its_files(run, tmp_path):
+    pytest.importorskip("matplotlib")
     out = run("speed", "--quick", "--report-dir", str(tmp_path / "speed"))
     assert out.exit_code == 0, out.output
     d = tmp_path / "speed"

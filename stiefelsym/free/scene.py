@@ -23,7 +23,7 @@ import symengine as se
 from ..fields import Dual, DualField, Field
 from ..matrix import CoordinateTracker, Mat, definite
 from ..scene import USER_SCALAR, Flow, PaperObjects, _number, map_entries
-from .algebra import (DIMENSIONS, Letter, NCPoly, NeedsCoordinates, as_coef, coef_latex, derivation,
+from .algebra import (Letter, NCPoly, NeedsCoordinates, as_coef, coef_latex, derivation,
                       letter_pair, record_refusal, refuse, skew_letter, substitute, symmetric_letter, trace)
 from .mat import FreeBackend, FreeDualBackend, entry_of, one_block
 from .rewriting import (_NONZERO_NUMBER_TYPES, _SIMPLE, Cofactor, Hypothesis, Order, Reduction, RewritingSystem,

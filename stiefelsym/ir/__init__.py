@@ -7,7 +7,7 @@ method's scene.  See ``docs/architecture.md``.
 from __future__ import annotations
 
 from collections import OrderedDict
-from typing import Any, Callable
+from typing import Callable
 
 from .graph import Graph, Named, Ref, Size
 from .statements import Count, Rank

@@ -1,0 +1,105 @@
+"""The library entry point: :func:`verify` runs claims as ``stiefelsym verify`` does and returns
+the result records (a :class:`~stiefelsym.results.ResultList`)."""
+from __future__ import annotations
+
+import os
+from pathlib import Path
+from typing import Iterable, Sequence, Union
+
+from .claims import Claim, Registry, Size, load_catalog, load_claims_file
+from .pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT
+from .results import ResultList
+
+PathLike = Union[str, "os.PathLike[str]"]
+ClaimRef = Union[str, Claim]
+
+
+def claims_files(paths: PathLike | Iterable[PathLike]) -> list[Path]:
+    """Claims files: a directory stands for its ``*.py`` files (sorted; names starting with ``_``
+    left out)."""
+    if isinstance(paths, (str, os.PathLike)):
+        paths = [paths]
+    out: list[Path] = []
+    for p in map(Path, paths):
+        if p.is_dir():
+            found = sorted(f for f in p.glob("*.py") if not f.name.startswith("_"))
+            if not found:
+                raise FileNotFoundError(f"the claims directory {p} holds no .py file")
+            out += found
+        else:
+            out.append(p)
+    return out
+
+
+def load(files: PathLike | Iterable[PathLike] = (), catalog: bool | None = None) -> Registry:
+    """The claims of ``files`` (files or directories), followed by the catalog's when ``catalog``
+    (default: only when no file is given).  An id defined twice is refused (ValueError)."""
+    merged = Registry()
+    paths = claims_files(files)
+    for f in paths:
+        for c in load_claims_file(f):
+            if c.id in merged:
+                raise ValueError(f"claim {c.id!r} is defined twice (again in {f})")
+            merged.add(c)
+    if catalog or (catalog is None and not paths):
+        for c in load_catalog():
+            if c.id not in merged:
+                merged.add(c)
+    return merged
+
+
+def verify(claims: ClaimRef | Iterable[ClaimRef] | None = None, *,
+           files: PathLike | Iterable[PathLike] = (),
+           sizes: Sequence[tuple[int, int] | Size] | None = None,
+           methods: str | Iterable[str] = ("auto",), seed: int = 0,
+           timeout: float = DEFAULT_TIMEOUT, memory: float | None = DEFAULT_MEMORY_GIB, jobs: int = 1,
+           budget: float | None = None, scheduler: str | None = None) -> ResultList:
+    """Verify claims and return their results, in the order of the plan (then the corrections of
+    a claim that fails as printed), exactly as ``stiefelsym verify`` computes them.
+
+    ``claims``: claim ids, :class:`Claim` objects (from ``@claim``), or None for every claim of
+    ``files`` (or the catalog when no file is given).  ``files``: claims files or directories of
+    them.  ``sizes``: (n, r) pairs (default: each claim's own).  ``methods``: ``auto``, ``exact``,
+    ``rational``, ``modular``, ``float``, ``free``.  ``timeout`` (seconds) and ``memory`` (GiB,
+    None: no limit) are the budgets of each run, which runs in a forked worker process (``jobs``
+    of them).  ``budget``: refuse, before anything runs, a run the cost model predicts to take
+    longer (seconds).  ``scheduler``: the address of a dask.distributed scheduler.
+
+    Bad input (an unknown claim or method, a size outside a named claim's statement, a run beyond
+    the budget) raises ValueError (KeyError for an unknown id); a claim that fails is a result,
+    never an exception: see ``result.verdict`` and ``result.expected``, or ``results.ok``."""
+    from . import costmodel, runner
+    if isinstance(methods, str):
+        methods = (methods,)
+    methods = tuple(methods)
+    named = [claims] if isinstance(claims, (str, Claim)) else (None if claims is None else list(claims))
+    ids = [c for c in named or () if isinstance(c, str)]
+    registry = Registry()
+    if named is None or ids:
+        registry = load(files, catalog=False) if files else Registry()
+        if not len(registry) or any(i not in registry for i in ids):
+            registry = load(files, catalog=True)
+    selected = [registry.get(c) if isinstance(c, str) else c for c in (named if named is not None else registry)]
+    if not selected:
+        raise ValueError("no claims to verify (0 claims loaded)")
+    size_list = None if sizes is None else [s if isinstance(s, Size) else Size(*s) for s in sizes]
+    if size_list is not None:
+        for s in size_list:
+            if type(s.n) is not int or type(s.r) is not int:
+                raise ValueError(f"a size is a pair of ints (n, r), not {s}")
+    for c in selected:
+        for m in methods:
+            if m == "free":
+                continue
+            for s in size_list or list(c.sizes):
+                if 1 <= s.r <= s.n and c.sizes.admits(s.n, s.r):
+                    costmodel.check_memory(m, c, s.n, s.r, memory)
+                    if budget is not None:
+                        costmodel.check(m, c, s.n, s.r, budget)
+    engine = runner.verify
+    if scheduler is not None:
+        from . import distributed
+        engine = distributed.verifier(scheduler)
+    results = engine(selected, sizes=size_list, methods=methods, seed=seed, timeout=timeout, memory=memory,
+                     jobs=jobs, strict_sizes=named is not None)
+    return ResultList(results)

@@ -1,0 +1,153 @@
+"""The pytest plugin (entry point ``pytest11``): claims as test items.
+
+    pytest --stiefelsym my_claims.py                  # the claims of a file (or a directory of them)
+    pytest --stiefelsym --pyargs stiefelsym.proofs    # the paper's catalog
+    pytest --stiefelsym my_claims.py --stiefelsym-method modular -k euclidean -n 2 --junitxml=out.xml
+
+One item per (claim, size, method) of the plan ``stiefelsym verify`` would run, named like
+``prep[n=4,r=2]-rational``; an item passes when the verdict is the one the claim expects (a
+documented erratum that fails as printed passes).  A failure shows the verdict's line, the witness
+and the command that reruns it.  Each run has the budgets of a command-line run (a forked worker
+process, ``--stiefelsym-timeout`` seconds, ``--stiefelsym-memory`` GiB).  Without ``--stiefelsym``
+the plugin does nothing, and imports nothing of the engine.
+"""
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any, Iterator
+
+import pytest
+
+_MARK = "@claim("
+
+
+def pytest_addoption(parser: Any) -> None:
+    group = parser.getgroup("stiefelsym", "stiefelsym: claims as test items")
+    group.addoption("--stiefelsym", action="store_true", default=False,
+                    help="collect the claims of the .py files given (and of the catalog, with "
+                         "--pyargs stiefelsym.proofs): one item per claim, size and method")
+    group.addoption("--stiefelsym-method", action="append", default=None, metavar="M",
+                    help="method to run (auto, exact, rational, modular, float, free); repeatable; default auto")
+    group.addoption("--stiefelsym-size", action="append", default=None, metavar="n,r",
+                    help="size to run (repeatable); default: each claim's own sizes")
+    group.addoption("--stiefelsym-seed", type=int, default=0, metavar="N", help="seed (default 0)")
+    group.addoption("--stiefelsym-timeout", type=float, default=300.0, metavar="S",
+                    help="wall-time budget of each run in seconds (default 300)")
+    group.addoption("--stiefelsym-memory", type=float, default=4.0, metavar="G",
+                    help="memory budget of each run in GiB (default 4)")
+
+
+def pytest_configure(config: Any) -> None:
+    config.addinivalue_line("markers", "stiefelsym: a claim run collected by the stiefelsym plugin")
+
+
+def _catalog_dir() -> Path | None:
+    import importlib.util
+    spec = importlib.util.find_spec("stiefelsym.proofs")
+    if spec is None or not spec.submodule_search_locations:
+        return None
+    return Path(list(spec.submodule_search_locations)[0]).resolve()
+
+
+def pytest_collect_file(file_path: Path, parent: Any) -> Any:
+    config = parent.config
+    if not config.getoption("stiefelsym") or file_path.suffix != ".py":
+        return None
+    if file_path.name.startswith(("test_", "conftest")) or file_path.name.endswith("_test.py"):
+        return None
+    try:
+        if _MARK not in file_path.read_text(encoding="utf-8", errors="replace"):
+            return None
+    except OSError:
+        return None
+    return ClaimsFile.from_parent(parent, path=file_path)
+
+
+class ClaimsFile(pytest.File):
+    """A claims file (or a module of the catalog): its claims' runs."""
+
+    def _claims(self) -> list[Any]:
+        from .claims import CATALOG, CatalogError, load_catalog, load_claims_file
+        catalog = _catalog_dir()
+        if catalog is not None and self.path.resolve().parent == catalog:
+            module = f"{CATALOG}.{self.path.stem}"
+            return [c for c in load_catalog() if c.source == module]
+        try:
+            return list(load_claims_file(self.path))
+        except CatalogError as exc:
+            raise self.CollectError(str(exc)) from None
+
+    def collect(self) -> Iterator[Any]:
+        from . import runner
+        from .claims import Size
+        from .report import case_name
+        from .results import Result
+        config = self.config
+        methods = config.getoption("stiefelsym_method") or ["auto"]
+        sizes = None
+        if config.getoption("stiefelsym_size"):
+            try:
+                sizes = [Size(*(int(x) for x in s.split(","))) for s in config.getoption("stiefelsym_size")]
+            except (TypeError, ValueError):
+                raise self.CollectError("--stiefelsym-size takes n,r (two integers)") from None
+        claims = self._claims()
+        try:
+            plan = runner.plan(claims, sizes, methods) if claims else []
+        except ValueError as exc:
+            raise self.CollectError(str(exc)) from None
+        for c, size, method in plan:
+            label = "free" if size is None else method
+            name = case_name(Result(c.id, list(c.paper), c.section, c.kind, c.title, c.statement,
+                                    None if size is None else size.n, None if size is None else size.r,
+                                    label, "undecided", True, 0.0, None))
+            yield ClaimItem.from_parent(self, name=name, claim=c, size=size, method=method)
+
+
+class ClaimFailed(Exception):
+    """A run's verdict is not the one its claim expects."""
+
+
+class ClaimItem(pytest.Item):
+    """One (claim, size, method) run."""
+
+    def __init__(self, *, claim: Any, size: Any, method: str, **kw: Any) -> None:
+        super().__init__(**kw)
+        self.claim, self.size, self.method = claim, size, method
+        self.result: Any = None
+        self.add_marker("stiefelsym")
+
+    def runtest(self) -> None:
+        from . import runner
+        config = self.config
+        results = runner.verify([self.claim], sizes=None if self.size is None else [self.size],
+                                methods=["free" if self.size is None else self.method],
+                                seed=config.getoption("stiefelsym_seed"),
+                                timeout=config.getoption("stiefelsym_timeout"),
+                                memory=config.getoption("stiefelsym_memory"), strict_sizes=True)
+        if not results:
+            raise ClaimFailed("the run produced no result")
+        self.result = res = results[0]
+        if self.claim.source and not self.claim.source.startswith("stiefelsym."):
+            res.rerun += f" --claims {self.path}"
+        self.user_properties.append(("verdict", res.verdict))
+        if not res.expected:
+            raise ClaimFailed(res.line())
+
+    def repr_failure(self, excinfo: Any, style: Any = None) -> Any:
+        if not isinstance(excinfo.value, ClaimFailed) or self.result is None:
+            return super().repr_failure(excinfo)
+        from .report import witness_lines
+        r = self.result
+        lines = [r.line(limit=400)]
+        if r.message and r.message not in lines[0]:
+            lines.append(f"  {r.message}")
+        for k, v in witness_lines(r.witness):
+            if k not in ("seed", "trial", "attempt", "component"):
+                lines.append(f"  witness {k}: {v}")
+        if r.residual and not r.witness:
+            lines.append(f"  residual: {r.residual}")
+        lines.append(f"  rerun: {r.rerun}")
+        return "\n".join(lines)
+
+    def reportinfo(self) -> tuple[Any, int, str]:
+        return self.path, 0, f"stiefelsym: {self.name}"
