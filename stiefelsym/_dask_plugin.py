@@ -2,7 +2,7 @@
 its top, so that the plugin is pickled by reference and this module is imported only with dask)."""
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, Callable
 
 from distributed import WorkerPlugin
 
@@ -13,12 +13,14 @@ class StiefelsymPlugin(WorkerPlugin):
 
     name = "stiefelsym"
 
+    def __init__(self, start: Callable[[int], None], stop: Callable[[], None]) -> None:
+        # the functions of stiefelsym.distributed, pickled by reference (this module imports none of it)
+        self.start, self.stop = start, stop
+
     def setup(self, worker: Any) -> None:
-        from .distributed import start_servers
         state = getattr(worker, "state", None)
         threads = getattr(state, "nthreads", None) or getattr(worker, "nthreads", 1)
-        start_servers(max(int(threads), 1))
+        self.start(max(int(threads), 1))
 
     def teardown(self, worker: Any) -> None:
-        from .distributed import stop_servers
-        stop_servers()
+        self.stop()

@@ -223,14 +223,6 @@ class Claim:
             return fn
         return deco
 
-    def _repr_markdown_(self) -> str:
-        from .notebook import claim_markdown
-        return claim_markdown(self)
-
-    def _repr_latex_(self) -> str:
-        from .notebook import claim_latex
-        return claim_latex(self)
-
     def corrected(self, k: int) -> "Claim":
         """The claim as its k-th correction states it (same id; its function is passed apart)."""
         expect = self.corrections[k].expect

@@ -51,7 +51,7 @@ def speed(report_dir: Path, quick: bool, seed: int, no_hard: bool, model_file: P
     if importlib.util.find_spec("matplotlib") is None:
         raise InputError("stiefelsym speed draws its plots with matplotlib, which is not installed: "
                          "pip install 'stiefelsym[plots]'")
-    from . import costmodel, speed as sp
+    from . import costfit, costmodel, speed as sp
     from .claims import load_catalog
     from .results import write_atomic
     t_start = time.perf_counter()
@@ -63,7 +63,7 @@ def speed(report_dir: Path, quick: bool, seed: int, no_hard: bool, model_file: P
     say = lambda text: click.echo(text, err=True)  # noqa: E731
 
     say("measuring time against n (cost model) ...")
-    records = costmodel.measure(n_values=QUICK_NS if quick else FULL_NS, per_run=20.0 if quick else 30.0,
+    records = costfit.measure(n_values=QUICK_NS if quick else FULL_NS, per_run=20.0 if quick else 30.0,
                                 series_seconds=3.0 if quick else 12.0, seed=seed, registry=registry,
                                 small_ns={"float": [5], "modular": [5]} if quick else costmodel.SMALL_NS,
                                 on_point=lambda r: say(f"  {r['family']:>10} {r['method']:>8} ({r['n']},{r['r']}) "

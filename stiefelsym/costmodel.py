@@ -66,6 +66,10 @@ _FALLBACK = {"exact": (math.log(1e-3), 6.0), "rational": (math.log(1e-3), 4.5),
 EXACT_EXTRAPOLATION_EXTRA = 2.0
 
 
+class BudgetError(ValueError):
+    """A size beyond what a method is allowed to attempt."""
+
+
 class CostModel:
     """Fitted power laws per (method, family), with the measurements they came from."""
 
@@ -266,12 +270,8 @@ def format_seconds(t: float) -> str:
 
 
 def _engine_cap(method: str) -> int:
-    """A method's fixed size cap while the engine still has one (methods.BUDGET), else none."""
-    try:
-        from .methods import BUDGET
-        return int(BUDGET.get(method, 10**9))
-    except (ImportError, AttributeError, TypeError, ValueError):
-        return 10**9
+    """A method's fixed size cap (none: the cost model decides)."""
+    return 10**9
 
 
 def _exact_cap() -> int:
@@ -316,7 +316,6 @@ def check(method: str, claim: Any, n: int, r: int, budget: float | None = DEFAUL
 
     This replaces ``methods.check_budget`` (fixed caps on n): the engine calls it per planned
     (claim, size, method) with the run's budget."""
-    from .methods import BudgetError
     from .scene import SizeError
     if r < 1:
         raise SizeError(f"r = {r} < 1: a Stiefel variety V(n, r) needs r >= 1")
@@ -340,7 +339,6 @@ _ENTRY_BYTES = {"float": 8, "modular": 8, "rational": 16, "exact": 16, "auto": 8
 def check_memory(method: str, claim: Any, n: int, r: int, memory_gib: float | None) -> None:
     """``BudgetError`` if a run's n x n matrices alone (a lower bound of what it holds) exceed the
     memory budget in GiB (None: no budget): refused up front instead of dying of memory."""
-    from .methods import BudgetError
     if memory_gib is None or method == "free":
         return
     need = _SQUARE_MATRICES * n * n * _ENTRY_BYTES.get(method, 8)
@@ -371,75 +369,6 @@ def fit(points: Sequence[tuple[int, float]]) -> tuple[float, float] | None:
         b = max(0.0, sxy / sxx) if sxx > 0 else 0.0
     a = max(math.log(t) - b * math.log(n) for n, t in pts)
     return a, b
-
-
-def measure(methods: Iterable[str] = METHODS, families: dict[str, str] | None = None,
-            n_values: dict[str, Sequence[int]] | None = None, per_run: float = 30.0,
-            series_seconds: float = 20.0, seed: int = 0, on_point: Any = None,
-            registry: Any = None, small_ns: dict[str, Sequence[int]] | None = None) -> list[dict[str, Any]]:
-    """Time runs of each family's representative claim, for each method, at growing n.
-
-    Each run executes in a budgeted worker (``runner.verify``); a series (r = ceil(n/2), and
-    r = n with both components of O(n)) stops at the first run that is not decided in
-    ``per_run`` seconds, or once it has spent ``series_seconds``.  Returns one record per run."""
-    from .claims import Size, load_catalog
-    from .methods import BudgetError
-    from .runner import verify
-    from .scene import SizeError
-    from .runner import run_one
-    families = families or FAMILIES
-    small_ns = {} if small_ns is None else small_ns
-    registry = registry or load_catalog()
-    grid = n_values or {}
-    out: list[dict[str, Any]] = []
-    methods = list(methods)
-    # warm up in this process: the workers are forked from it, so no run pays for first imports
-    for cid in families.values():
-        for method in methods:
-            try:
-                run_one(registry.get(cid), Size(2, 1), method, seed)
-            except Exception:  # noqa: BLE001 - a warm-up only
-                pass
-    for fam, cid in families.items():
-        claim = registry.get(cid)
-        for method in methods:
-            if method == "float" and claim.kind == "dim":
-                continue
-            spent = {"half": 0.0, "square": 0.0, "small": 0.0}
-            # dimensions (exact ranks) grow like n^4 and more: no small-r series to n = 200
-            stopped = {"half": False, "square": False, "small": method not in small_ns or claim.kind == "dim"}
-            ns = sorted(set(grid.get(method, _default_ns(method))) | set(small_ns.get(method, [])))
-            for n in ns:
-                kinds = [("small", SMALL_R)] if n in small_ns.get(method, []) else []
-                if n in grid.get(method, _default_ns(method)):
-                    kinds = [("half", (n + 1) // 2), ("square", n)] + kinds
-                for kind, r in kinds:
-                    if stopped[kind] or (kind == "square" and r == (n + 1) // 2) or r > n:
-                        continue
-                    if kind == "small" and n < 2 * SMALL_R + 1:
-                        continue
-                    try:
-                        results = verify([claim], sizes=[Size(n, r)], methods=(method,), seed=seed,
-                                         timeout=per_run, jobs=1)
-                    except (BudgetError, SizeError):
-                        stopped[kind] = True
-                        continue
-                    res = next((x for x in results if x.variant is None), None)
-                    if res is None:
-                        continue
-                    rec = {"family": fam, "claim": cid, "method": method, "n": n, "r": r,
-                           "seconds": round(float(res.seconds), 6), "verdict": res.verdict}
-                    if kind == "small":
-                        rec["series"] = "small"
-                    out.append(rec)
-                    if on_point is not None:
-                        on_point(rec)
-                    spent[kind] += res.seconds
-                    if res.verdict in ("inconclusive", "error") or spent[kind] > series_seconds:
-                        stopped[kind] = True
-                if all(stopped.values()):
-                    break
-    return out
 
 
 def _default_ns(method: str) -> list[int]:

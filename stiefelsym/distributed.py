@@ -117,7 +117,8 @@ def _registry(origin: tuple[str, str]) -> Any:
 
 def run_here(spec: dict[str, Any]) -> Outcome:
     """One run in this (single-threaded) process's budgeted forked worker: the pool's raw outcome."""
-    from . import __version__, runner
+    from . import runner
+    from ._version import __version__
     from .pool import WorkerPool
     from .methods import _describe
     if spec.get("version", __version__) != __version__:
@@ -283,14 +284,14 @@ def run_remote(spec: dict[str, Any]) -> Outcome:
 
 def worker_version() -> str:
     """The stiefelsym version of the process it runs in (a dask worker, asked by the client)."""
-    from . import __version__
+    from ._version import __version__
     return __version__
 
 
 def plugin() -> Any:
     """The worker plugin to register on a cluster (``client.register_plugin(plugin())``)."""
     from ._dask_plugin import StiefelsymPlugin
-    return StiefelsymPlugin()
+    return StiefelsymPlugin(start_servers, stop_servers)
 
 
 # --------------------------------------------------------------------------- the client's side
@@ -334,7 +335,7 @@ def verify(claims: list[Claim], *, address: str | None = None, client: Any = Non
         if address is None:
             raise DistributedError("no dask scheduler given")
         client = _client(address)
-    from . import __version__
+    from ._version import __version__
     try:
         _prepare(client, __version__)
     except BaseException:

@@ -26,6 +26,8 @@ import numpy as np
 
 from ._lazy import lazy
 from .claims import Claim, Count, Rank, deadline
+from . import costmodel
+from .costmodel import BudgetError as BudgetError  # the methods raise it (re-exported)
 from .ir import compile_claim
 from .ir.evaluate import evaluate
 from .ir.passes import FLOAT_EXPONENT_LIMIT, coordinate_reads, outside_float_range
@@ -49,10 +51,6 @@ FLOAT_RESOLUTION = 1e-8       # a pass must be able to see a relative residual t
 FLOAT_LADDER = (None, 30, 60, 120)
 
 
-class BudgetError(ValueError):
-    """A size beyond what a method is allowed to attempt."""
-
-
 class ExactTimeout(Exception):
     pass
 
@@ -67,7 +65,6 @@ def check_budget(method: str, n: int, r: int, claim: Claim | None = None, budget
         raise SizeError(f"r = {r} > n = {n}: V(n, r) needs r <= n")
     if claim is None or budget is None or method == "free":
         return 0.0
-    from . import costmodel
     return costmodel.check(method, claim, n, r, budget)
 
 

@@ -131,3 +131,31 @@ def residual_sympy(r: Result) -> Any:
     if w.get("value") is not None:
         return _sympy_text(str(w["value"]))
     raise ValueError(f"{R.case_name(r)}: {r.verdict}, no residual witness to convert")
+
+
+def _install() -> None:
+    """The displays and conveniences of results, result lists and claims (this module renders with
+    the report's code, which the results and claims modules sit below)."""
+    from .claims import Claim
+    from .results import ResultList
+
+    def summary(self: ResultList) -> str:
+        """The summary table ``stiefelsym verify`` prints."""
+        return R.render_summary(self)
+
+    def result_residual_sympy(self: Result) -> Any:
+        """The witness residual of a failure as a sympy expression (see :func:`residual_sympy`);
+        ValueError when there is none."""
+        return residual_sympy(self)
+
+    Result.residual_sympy = result_residual_sympy                  # type: ignore[attr-defined]
+    Result._repr_markdown_ = result_markdown                       # type: ignore[attr-defined]
+    Result._repr_latex_ = lambda self: results_latex([self])       # type: ignore[attr-defined]
+    ResultList.summary = summary                                   # type: ignore[attr-defined]
+    ResultList._repr_markdown_ = results_markdown                  # type: ignore[attr-defined]
+    ResultList._repr_latex_ = results_latex                        # type: ignore[attr-defined]
+    Claim._repr_markdown_ = claim_markdown                         # type: ignore[attr-defined]
+    Claim._repr_latex_ = claim_latex                               # type: ignore[attr-defined]
+
+
+_install()

@@ -104,19 +104,8 @@ class Result:
         """Whether the verdict is the one the claim expects (what the exit status counts)."""
         return self.expected
 
-    def residual_sympy(self) -> Any:
-        """The witness residual of a failure as a sympy expression (see
-        :func:`stiefelsym.notebook.residual_sympy`); ValueError when there is none."""
-        from .notebook import residual_sympy
-        return residual_sympy(self)
-
-    def _repr_markdown_(self) -> str:
-        from .notebook import result_markdown
-        return result_markdown(self)
-
-    def _repr_latex_(self) -> str:
-        from .notebook import results_latex
-        return results_latex([self])
+    # residual_sympy() and the Jupyter displays (_repr_markdown_, _repr_latex_) are installed by
+    # stiefelsym.notebook, which renders with the report's code (this module sits below the report)
 
     def to_json(self) -> dict[str, Any]:
         d = asdict(self)
@@ -142,18 +131,7 @@ class ResultList(list[Result]):
     def unexpected(self) -> list[Result]:
         return [r for r in self if not r.expected]
 
-    def summary(self) -> str:
-        """The summary table ``stiefelsym verify`` prints."""
-        from .report import render_summary
-        return render_summary(self)
-
-    def _repr_markdown_(self) -> str:
-        from .notebook import results_markdown
-        return results_markdown(self)
-
-    def _repr_latex_(self) -> str:
-        from .notebook import results_latex
-        return results_latex(self)
+    # summary() and the Jupyter displays are installed by stiefelsym.notebook
 
 
 def _umask() -> int:

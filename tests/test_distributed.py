@@ -152,7 +152,7 @@ def test_no_worker_left_is_a_clear_error(tmp_path, monkeypatch):
 
 def test_a_worker_with_another_version_is_refused(cluster, catalog, monkeypatch):
     _, client = cluster
-    import stiefelsym
-    monkeypatch.setattr(stiefelsym, "__version__", "0.0.0-other")
+    import stiefelsym._version
+    monkeypatch.setattr(stiefelsym._version, "__version__", "0.0.0-other")
     with pytest.raises(D.DistributedError, match="install the same version"):
         D.verify([catalog.get("neumann-flow")], client=client, sizes=[Size(3, 1)], methods=("modular",))
