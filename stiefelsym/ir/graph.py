@@ -35,10 +35,23 @@ from fractions import Fraction
 from typing import Any
 
 
-@dataclass(frozen=True)
-class Ref:
-    """A reference to the node numbered ``i``."""
-    i: int
+class Ref(tuple):
+    """A reference to the node numbered ``i`` (a 1-tuple, so that the graph's keys hash in C)."""
+
+    __slots__ = ()
+
+    def __new__(cls, i: int) -> "Ref":
+        return tuple.__new__(cls, (i,))
+
+    @property
+    def i(self) -> int:
+        return self[0]
+
+    def __repr__(self) -> str:
+        return f"Ref({self[0]})"
+
+    def __reduce__(self):
+        return (Ref, (self[0],))
 
 
 @dataclass(frozen=True)
