@@ -167,9 +167,12 @@ def test_every_method_evaluates_one_graph():
         calls.append(1)
         return {"x": s.X.T @ s.X - s.Ir}
     c = _claim(counted)
-    for m in ("exact", "rational", "modular", "float"):
+    assert run_one(c, Size(3, 2), "modular", 0).verdict in PASSING
+    traced = len(calls)             # twice with symbolic sizes, twice at (3, 2): compared
+    assert traced == 4
+    for m in ("exact", "rational", "float", "auto"):
         assert run_one(c, Size(3, 2), m, 0).verdict in PASSING
-    assert len(calls) == 2          # traced twice (to compare), then only evaluated
+    assert len(calls) == traced     # then only evaluated, by every method
 
 
 # -- 5. a constant outside the float range ----------------------------------------------------------

@@ -7,7 +7,7 @@ method's scene.  See ``docs/architecture.md``.
 from __future__ import annotations
 
 from collections import OrderedDict
-from typing import Callable
+from typing import Any, Callable
 
 from .graph import Graph, Named, Ref, Size
 from .statements import Count, Rank
@@ -22,31 +22,63 @@ class NotDeterministic(ValueError):
 
 
 #: graphs traced in this process, the most recent first out last: (function, n, r, realization) ->
-#: graph (a run's methods, probes and passes share one graph; older graphs are dropped)
-_GRAPHS: "OrderedDict[tuple, Graph]" = OrderedDict()
+#: graph, or the exception that refused it (a run's methods, probes and passes share one graph;
+#: older graphs are dropped)
+_GRAPHS: "OrderedDict[tuple, Any]" = OrderedDict()
 GRAPH_CACHE_SIZE = 24
 
 
 def compile_claim(func: Callable, n: int | None, r: int | None, constraints: tuple[str, Callable]) -> Graph:
-    """The graph of a claim's function at (n, r) (None, None: symbolic sizes), traced twice; a claim
-    whose two graphs differ is refused, and so is a claim whose trace met a refusal, even one it
-    caught.  Traced once per process and size."""
+    """The graph of a claim's function: traced once with symbolic sizes when it can be (then that one
+    graph is the claim at every size: every fixed-size method and the dimension-free method evaluate
+    the same graph), otherwise at (n, r).  Each graph is traced twice; a claim whose two graphs
+    differ is refused, and so is a claim whose trace met a refusal, even one it caught."""
+    free = _compile(func, None, None, constraints)
+    if isinstance(free, Graph):
+        if n is not None:
+            fixed = _compile(func, n, r, constraints)
+            if not isinstance(fixed, Graph) or fixed.digest() != free.digest():
+                raise NotDeterministic(f"the claim's graph at ({n},{r}) is not its graph with symbolic sizes: it "
+                                       "tells symbolic sizes from numbers, so no verdict rests on it")
+        return free
+    if n is None:
+        raise free
+    g = _compile(func, n, r, constraints)
+    if isinstance(g, Graph):
+        return g
+    raise g
+
+
+def compile_at_size(func: Callable, n: int, r: int, constraints: tuple[str, Callable]) -> Graph:
+    """The graph traced at (n, r) itself (to compare with the graph of symbolic sizes)."""
+    g = _compile(func, n, r, constraints)
+    if isinstance(g, Graph):
+        return g
+    raise g
+
+
+def _compile(func: Callable, n: int | None, r: int | None, constraints: tuple[str, Callable]) -> Any:
+    """The graph, or the exception that refused it (both cached per process)."""
     key = (func, n, r, constraints[0])
     g = _GRAPHS.get(key)
     if g is not None:
         _GRAPHS.move_to_end(key)
         return g
-    first = trace(func, n, r, constraints)
-    _check_refusals(first)
-    second = trace(func, n, r, constraints)
-    _check_refusals(second)
-    if first.digest() != second.digest():
-        raise NotDeterministic("the claim is not deterministic: two tracings at the same size gave "
-                               "different graphs")
-    _GRAPHS[key] = first
+    try:
+        first = trace(func, n, r, constraints)
+        _check_refusals(first)
+        second = trace(func, n, r, constraints)
+        _check_refusals(second)
+        if first.digest() != second.digest():
+            raise NotDeterministic("the claim is not deterministic: two tracings at the same size gave "
+                                   "different graphs")
+        out: Any = first
+    except Exception as exc:      # noqa: BLE001 - the claim's own failure, reported by the caller
+        out = exc
+    _GRAPHS[key] = out
     while len(_GRAPHS) > GRAPH_CACHE_SIZE:
         _GRAPHS.popitem(last=False)
-    return first
+    return out
 
 
 def _check_refusals(g: Graph) -> None:
