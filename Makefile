@@ -22,7 +22,7 @@ $(STAMP): pyproject.toml
 
 ## verify: verify the whole catalog (default methods) at every size n <= MAX_N and regenerate reports/
 verify: venv
-	$(BIN)/stiefelsym verify --jobs $(JOBS) --max-n $(MAX_N)
+	$(BIN)/stiefelsym verify --jobs $(JOBS) --max-n $(MAX_N) --report-dir reports
 
 ## verify-all: every method at every size (auto, modular, rational, float, free) and the slow tests
 verify-all: venv

@@ -710,8 +710,9 @@ def _verify(out: Any, ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tu
         raise InputError("--hard evaluates sampled points: use it with --method rational, modular, float "
                          "or auto")
     full_run = not ids and not claims_files and not sizes and hard is None
-    target = None if no_report else (report_dir if report_dir is not None
-                                     else DEFAULT_REPORT_DIR if full_run else None)
+    # reports are written only where --report-dir says (make verify: reports/), never by default, so
+    # that a run of a few claims never overwrites the committed appendix
+    target = None if no_report else report_dir
     if target is not None:
         _check_report_dir(target)
     runner = _runner()

@@ -41,16 +41,20 @@ def _check_report_dir(d: Path) -> None:
 
 @click.command("flows", cls=_Command,
                short_help="Integrated flows: Lax spectra, work-precision diagrams, closed-form geodesics.")
-@click.option("--report-dir", type=click.Path(path_type=Path), default=DEFAULT_REPORT_DIR, show_default=True,
-              metavar="DIR", help="Where to write flows.md, flows.json, the CSV files and the figures.")
+@click.option("--report-dir", type=click.Path(path_type=Path), default=None, metavar="DIR",
+              help="Where to write flows.md, flows.json, the CSV files and the figures (required; make flows: "
+                   "reports/flows).")
 @click.option("--results", "results_path", type=click.Path(path_type=Path), default=DEFAULT_RESULTS, show_default=True,
               metavar="FILE", help="The catalog's results.json, for the algebraic verdicts of each Lax pair.")
 @click.option("--quick", is_flag=True, help="Small sizes and short times (a few seconds), for tests.")
-def flows(report_dir: Path, results_path: Path, quick: bool) -> int:
+def flows(report_dir: Path | None, results_path: Path, quick: bool) -> int:
     """Integrate the Neumann (every κ), Jensen, Manakov, magnetic and coupled flows with DOP853, the
     symplectic constraint-preserving steps RATTLE and RATTLE4 and RK4 + projection; follow the
     constraints, the Hamiltonian and the spectra of the Lax matrices; tabulate the error reached per
     second of compute; compare the Jensen geodesics with the closed forms of Edelman, Arias and Smith."""
+    if report_dir is None:
+        raise FlowsInputError("give --report-dir DIR (for example reports/flows): the flows report is figures "
+                              "and files, written only where asked")
     _check_report_dir(report_dir)
     try:
         import matplotlib  # noqa: F401  (checked before any integration)

@@ -165,7 +165,7 @@ def mutate(ids: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str, ...
     if only and len(ids) != 1:
         raise MutateInputError("--mutant K names a mutant of one claim: give exactly one CLAIM")
     full_run = not ids and not claims_file and not sizes and limit is None and not only
-    target = report_dir if report_dir is not None else DEFAULT_REPORT_DIR if full_run else None
+    target = report_dir         # written only where --report-dir says (make mutate: reports/)
     if target is not None:
         _check_report_dir(target)
     registry = _registry(claims_file)

@@ -34,7 +34,7 @@ DIM_NOTE = ("Dimensions are integers (exact ranks and counts): there is no round
 
 
 @click.command("speed", cls=standalone_command("stiefelsym speed"))
-@click.option("--report-dir", type=click.Path(file_okay=False, path_type=Path), default=Path("reports/speed"),
+@click.option("--report-dir", type=click.Path(file_okay=False, path_type=Path), default=None,
               show_default=True, metavar="DIR", help="Where to write the data, plots and tables.")
 @click.option("--quick", is_flag=True,
               help="Small sizes only, a reduced hard-case table, and the package's cost model is left alone "
@@ -44,7 +44,7 @@ DIM_NOTE = ("Dimensions are integers (exact ranks and counts): there is no round
 @click.option("--model-file", type=click.Path(dir_okay=False, path_type=Path), default=None, metavar="FILE",
               help="Where to write the fitted cost model (default: your user cache folder, where "
                    "stiefelsym then reads it; the installed package's fit is never written).")
-def speed(report_dir: Path, quick: bool, seed: int, no_hard: bool, model_file: Path | None = None) -> int:
+def speed(report_dir: Path | None, quick: bool, seed: int, no_hard: bool, model_file: Path | None = None) -> int:
     """Residual and time against n and precision per family of claims, the fitted cost model
     (time against n per method), and the hard numerical cases."""
     import importlib.util
@@ -55,6 +55,9 @@ def speed(report_dir: Path, quick: bool, seed: int, no_hard: bool, model_file: P
     from .claims import load_catalog
     from .results import write_atomic
     t_start = time.perf_counter()
+    if report_dir is None:
+        raise InputError("give --report-dir DIR (for example reports/speed): the speed report is figures and "
+                         "files, written only where asked")
     try:
         report_dir.mkdir(parents=True, exist_ok=True)
     except OSError as exc:

@@ -61,8 +61,9 @@ def _load_verdicts(paths: list[Path], explicit: bool) -> dict[str, Any]:
 
 
 @click.command("tables", cls=_Command, context_settings={"help_option_names": ["-h", "--help"]})
-@click.option("--report-dir", type=click.Path(file_okay=False, path_type=Path), default=Path("reports"),
-              show_default=True, help="where tables.md, tables.tex, tables.json go")
+@click.option("--report-dir", type=click.Path(file_okay=False, path_type=Path), default=None,
+              help="where tables.md, tables.tex, tables.json go (without it: tables.md on stdout, no file "
+                   "written; make tables: reports)")
 @click.option("--n-max", type=int, default=9, show_default=True, help=f"every 1 <= r <= n <= N (N <= {N_LIMIT})")
 @click.option("--extended-n-max", type=int, default=12, show_default=True,
               help=f"also n_max < n <= N for the quantities without completeness checks ("
@@ -72,7 +73,7 @@ def _load_verdicts(paths: list[Path], explicit: bool) -> dict[str, Any]:
               help="results.json for the verdict matrix (repeatable; default reports/results.json and "
                    "reports/all/results.json when present)")
 @click.option("--seed", type=int, default=0, show_default=True, help="seed of every random point and prime")
-def tables(report_dir: Path, n_max: int, extended_n_max: int | None, sizes: tuple[str, ...], results: tuple[Path, ...], seed: int) -> None:
+def tables(report_dir: Path | None, n_max: int, extended_n_max: int | None, sizes: tuple[str, ...], results: tuple[Path, ...], seed: int) -> None:
     """Appendix tables: dim V, ddim, 2l, δ₀, δ, the torus dimensions, N and the §6 lemmas, the paper's
     formula next to an exact computation with its certificate, every disagreement with its set of
     sizes; and the verdict matrix claim × size × method."""
@@ -86,10 +87,11 @@ def tables(report_dir: Path, n_max: int, extended_n_max: int | None, sizes: tupl
         raise TablesInputError(f"--extended-n-max {ext}: need n_max <= N <= {N_LIMIT}")
     chosen = [_parse_size(s) for s in sizes] if sizes else [(n, r) for n in range(1, ext + 1) for r in range(1, n + 1)]
     verdicts = _load_verdicts(list(results) if results else list(DEFAULT_RESULTS), bool(results))
-    try:
-        report_dir.mkdir(parents=True, exist_ok=True)
-    except OSError as exc:
-        raise TablesInputError(f"cannot create the report directory {report_dir}: {exc.strerror or exc}") from None
+    if report_dir is not None:
+        try:
+            report_dir.mkdir(parents=True, exist_ok=True)
+        except OSError as exc:
+            raise TablesInputError(f"cannot create the report directory {report_dir}: {exc.strerror or exc}") from None
     T = Tables(min(n_max, max(n for n, _ in chosen)) if not sizes else max(n for n, _ in chosen), seed,
                extended_n_max=ext if not sizes else None)
     for n, r in sorted(set(chosen)):
@@ -103,6 +105,10 @@ def tables(report_dir: Path, n_max: int, extended_n_max: int | None, sizes: tupl
     texts = {"tables.md": render_markdown(T, verdicts), "tables.tex": render_latex(T, verdicts),
              "tables.json": json.dumps(tables_json(T, verdicts), indent=1, ensure_ascii=False) + "\n",
              "tables-standalone.tex": STANDALONE}
+    if report_dir is None:
+        click.echo(texts["tables.md"])
+        click.echo("no file written (give --report-dir DIR to write tables.md, tables.tex, tables.json)", err=True)
+        return
     try:
         for name, text in texts.items():
             write_atomic(report_dir / name, text)

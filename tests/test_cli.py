@@ -205,13 +205,15 @@ def test_format_junit_parses_with_failures_for_unexpected(fake, run):
     assert failed == ["ddim[n=1,r=1]-auto", "ddim[n=2,r=1]-auto"]
 
 
-def test_full_catalog_run_writes_reports(fake, run, tmp_path):
-    result = run("verify")
+def test_full_catalog_run_writes_reports_where_asked(fake, run, tmp_path):
+    assert run("verify").exit_code == 0
+    assert not (tmp_path / "reports").exists()          # never by default
+    result = run("verify", "--report-dir", "reports")
     assert result.exit_code == 0
     for name in cli.REPORT_FILES:
         assert (tmp_path / "reports" / name).is_file()
     meta, results = load_results(tmp_path / "reports" / "results.json")
-    assert len(results) == 6 and meta["command"] == "stiefelsym verify --method auto --seed 0"
+    assert len(results) == 6 and meta["command"] == "stiefelsym verify --method auto --seed 0 --report-dir reports"
     assert "python" in meta["versions"]
 
 
@@ -289,10 +291,10 @@ def test_interrupt_exits_130_and_writes_no_report(fake, run, tmp_path):
 
 
 def test_interrupt_keeps_existing_reports_whole(fake, run, tmp_path):
-    assert run("verify").exit_code == 0
+    assert run("verify", "--report-dir", "reports").exit_code == 0
     before = {n: (tmp_path / "reports" / n).read_text() for n in cli.REPORT_FILES}
     fake.interrupt_after = 3
-    assert run("verify").exit_code == 130
+    assert run("verify", "--report-dir", "reports").exit_code == 130
     assert {n: (tmp_path / "reports" / n).read_text() for n in cli.REPORT_FILES} == before
     assert sorted(p.name for p in (tmp_path / "reports").iterdir()) == sorted(cli.REPORT_FILES)
 
@@ -513,3 +515,21 @@ def test_derive_prints_a_latex_derivation_or_exits_1():
     assert no.exit_code == 1 and "undecided" in no.output
     bad = CliRunner().invoke(main, ["derive", "nosuch"])
     assert bad.exit_code == 2
+
+
+def test_no_command_writes_reports_unless_asked(tmp_path, monkeypatch):
+    """A run of a few claims (or any run) never overwrites the committed appendix: reports go only
+    where --report-dir says."""
+    from click.testing import CliRunner
+    from stiefelsym.cli import main
+    monkeypatch.chdir(tmp_path)
+    runner = CliRunner()
+    r = runner.invoke(main, ["verify", "prep", "--size", "3,2", "--method", "modular"])
+    assert r.exit_code == 0, r.output
+    r = runner.invoke(main, ["tables", "--size", "2,1"])
+    assert r.exit_code == 0, r.output
+    assert not (tmp_path / "reports").exists()
+    r = runner.invoke(main, ["flows", "--quick"])
+    assert r.exit_code == 2 and "--report-dir" in r.output
+    r = runner.invoke(main, ["verify", "prep", "--size", "3,2", "--method", "modular", "--report-dir", "out"])
+    assert r.exit_code == 0 and (tmp_path / "out" / "results.json").is_file()
