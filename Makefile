@@ -75,6 +75,12 @@ check: venv
 report: venv
 	$(BIN)/stiefelsym report --results reports/results.json
 
+## docs: docs/index.md from README.md, and the site (mkdocs build --strict) in site/
+.PHONY: docs
+docs: venv
+	sed -e 's#(docs/\([a-z]*\.md\))#(\1)#g' README.md > docs/index.md
+	$(BIN)/mkdocs build --strict -d site
+
 ## clean: remove build artefacts and caches (not .venv, not reports/)
 clean:
 	rm -rf build *.egg-info .pytest_cache
