@@ -37,7 +37,7 @@ EXIT_OK, EXIT_UNEXPECTED, EXIT_INPUT, EXIT_INTERRUPTED, EXIT_TERMINATED = 0, 1, 
 #: the default of --budget: seconds a single run may be predicted to take (see stiefelsym.costmodel)
 DEFAULT_BUDGET = 3600.0
 DEFAULT_REPORT_DIR = Path("reports")
-REPORT_FILES = ("results.json", "verification.md", "verification.tex")
+REPORT_FILES = ("results.json", "verification.md", "verification.tex", "run-log.json")
 #: the distributions whose versions a report records
 VERSIONED = ("stiefelsym", "sympy", "symengine", "numpy", "python-flint", "mpmath", "click")
 EXPECT_MEANING = {
@@ -359,12 +359,32 @@ def _mutation(d: Path) -> dict[str, Any] | None:
         return None
 
 
+#: what changes between identical runs: it goes to the run log (run-log.json, not committed), and
+#: the committed reports leave it out, so that a regeneration changes them only where a verdict does
+VOLATILE_META = ("date", "seconds", "platform", "jobs", "scheduler")
+
+
+def stable(results: list[Result], meta: dict[str, Any]) -> tuple[list[Result], dict[str, Any]]:
+    """The results and meta data without timings, dates and the host."""
+    import dataclasses
+    return ([dataclasses.replace(r, seconds=None) for r in results],   # type: ignore[arg-type]
+            {k: v for k, v in meta.items() if k not in VOLATILE_META})
+
+
+def _run_log(results: list[Result], meta: dict[str, Any]) -> str:
+    log = {"meta": {k: meta.get(k) for k in VOLATILE_META + ("command", "commit")},
+           "seconds": [[r.claim, r.n, r.r, r.method, r.variant, r.seconds] for r in results]}
+    return json.dumps(log, indent=0) + "\n"
+
+
 def _write_reports(d: Path, results: list[Result], meta: dict[str, Any]) -> list[Path]:
     """Render everything first, then write each file atomically."""
     mutation = _mutation(d)
-    texts = {"results.json": dump_results(results, meta),
-             "verification.md": _report.render_markdown(results, meta, mutation=mutation),
-             "verification.tex": _report.render_latex(results, meta, mutation=mutation)}
+    fixed, fixed_meta = stable(results, meta)
+    texts = {"results.json": dump_results(fixed, fixed_meta),
+             "verification.md": _report.render_markdown(fixed, fixed_meta, mutation=mutation),
+             "verification.tex": _report.render_latex(fixed, fixed_meta, mutation=mutation),
+             "run-log.json": _run_log(results, meta)}
     paths = []
     for name, text in texts.items():
         write_atomic(Path(d) / name, text)
@@ -385,14 +405,19 @@ def _versions() -> dict[str, str]:
     return out
 
 
+#: the code a report is about: the engine, the catalog and the package's metadata
+CODE_PATHS = ("stiefelsym", "proofs", "pyproject.toml")
+
+
 def _commit() -> str | None:
-    """The git commit of the working directory, ``+dirty`` if it has changes."""
+    """The last git commit of the code that produced a report (the engine and the catalog, not the
+    reports themselves), ``+dirty`` if that code has uncommitted changes."""
     try:
-        head = subprocess.run(["git", "rev-parse", "--short=12", "HEAD"], capture_output=True,
-                              text=True, timeout=5)
-        if head.returncode:
+        head = subprocess.run(["git", "log", "-1", "--format=%h", "--abbrev=12", "--", *CODE_PATHS],
+                              capture_output=True, text=True, timeout=5)
+        if head.returncode or not head.stdout.strip():
             return None
-        dirty = subprocess.run(["git", "status", "--porcelain", "--untracked-files=no"],
+        dirty = subprocess.run(["git", "status", "--porcelain", "--untracked-files=no", "--", *CODE_PATHS],
                                capture_output=True, text=True, timeout=10)
         return head.stdout.strip() + ("+dirty" if dirty.stdout.strip() else "")
     except (OSError, subprocess.SubprocessError):
