@@ -10,6 +10,8 @@ interrupted (no report is written).
 """
 from __future__ import annotations
 
+import json
+
 import os
 import platform
 import re
@@ -119,7 +121,7 @@ def _command(ids: Sequence[str], sizes: Sequence[str], methods: Sequence[str], s
               help="Seed of every random choice.")
 @click.option("--claims", "claims_file", metavar="FILE", help="Mutate the claims of your own Python file.")
 @click.option("--report-dir", type=click.Path(path_type=Path), metavar="DIR",
-              help="Write mutation.json and mutation.md here (default: reports/, full catalog runs only).")
+              help="Write mutation.json and mutation.md here (nothing is written without it; make mutate: reports/).")
 @click.option("--format", "fmt", type=click.Choice(["text", "json"]), default="text", show_default=True,
               help="stdout: one line per mutant and the kill-rate table, or the JSON report.")
 @click.option("--limit", type=click.IntRange(min=1), default=None, metavar="K",
@@ -222,8 +224,11 @@ def mutate(ids: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str, ...
     click.echo(render_mutation_summary(data), err=out_err, nl=False)
     if target is not None:
         try:
-            write_atomic(Path(target) / "mutation.json", report.dumps())
-            write_atomic(Path(target) / "mutation.md", render_mutation_markdown(data))
+            # no date, duration or host in the committed files (they would change at every run)
+            stable = dict(data, meta={k: v for k, v in (data.get("meta") or {}).items()
+                                      if k not in ("date", "seconds", "platform")})
+            write_atomic(Path(target) / "mutation.json", json.dumps(stable, indent=1, ensure_ascii=False) + "\n")
+            write_atomic(Path(target) / "mutation.md", render_mutation_markdown(stable))
         except OSError as exc:
             raise MutateInputError(f"cannot write reports to {target}: {exc.strerror or exc}") from None
         click.echo(f"reports: {Path(target) / 'mutation.json'}, {Path(target) / 'mutation.md'}", err=True)

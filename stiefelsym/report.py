@@ -1117,9 +1117,7 @@ def _mutation_facts(data: dict[str, Any]) -> list[str]:
     """Plain-text sentences on the run (the command is rendered apart, as code)."""
     meta = data.get("meta") or {}
     run = [f"seed {meta['seed']}" if meta.get("seed") is not None else "",
-           f"on {meta['date']}" if meta.get("date") else "",
-           f"in {format_seconds(meta['seconds'])}" if meta.get("seconds") is not None else "",
-           f"at commit {meta['commit']}" if meta.get("commit") else ""]
+           f"at commit {meta['commit']}" if meta.get("commit") else ""]     # no date, no duration: no drift
     return ["Run with " + ", ".join(x for x in run if x) + "."] if any(run) else []
 
 
