@@ -68,7 +68,8 @@ def test_cli_scheduler_writes_reports_once(cluster, run, tmp_path):
     assert out.exit_code == 0, out.output
     doc = json.loads((tmp_path / "rep" / "results.json").read_text())
     assert [(r["claim"], r["verdict"]) for r in doc["results"]] == [("neumann-flow", "checked")]
-    assert doc["meta"]["scheduler"] == cl.scheduler_address
+    log = json.loads((tmp_path / "rep" / "run-log.json").read_text())     # where the run was: not committed
+    assert log["meta"]["scheduler"] == cl.scheduler_address and "scheduler" not in doc["meta"]
 
 
 def test_unreachable_scheduler_is_bad_input(run, monkeypatch):
