@@ -734,7 +734,6 @@ def _verify(out: Any, ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tu
     if hard is not None and set(methods or ("auto",)) & {"exact", "free"}:
         raise InputError("--hard evaluates sampled points: use it with --method rational, modular, float "
                          "or auto")
-    full_run = not ids and not claims_files and not sizes and hard is None
     # reports are written only where --report-dir says (make verify: reports/), never by default, so
     # that a run of a few claims never overwrites the committed appendix
     target = None if no_report else report_dir

@@ -166,7 +166,6 @@ def mutate(ids: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str, ...
     parsed_sizes = [_parse_size(s) for s in sizes]
     if only and len(ids) != 1:
         raise MutateInputError("--mutant K names a mutant of one claim: give exactly one CLAIM")
-    full_run = not ids and not claims_file and not sizes and limit is None and not only
     target = report_dir         # written only where --report-dir says (make mutate: reports/)
     if target is not None:
         _check_report_dir(target)
