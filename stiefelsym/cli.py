@@ -842,7 +842,7 @@ def _verify(out: Any, ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tu
                 raise InputError(f"cannot write reports to {target}: {exc.strerror or exc}") from None
             click.echo(f"reports: {', '.join(str(p) for p in paths)}", err=True)
         elif not no_report:
-            click.echo("note: partial run, no report written (give --report-dir DIR to write "
+            click.echo("note: no report written (give --report-dir DIR to write "
                        "one)", err=True)
     except (SizeError, runner.BudgetError, ClaimTimeout) as exc:
         raise InputError(str(exc)) from None

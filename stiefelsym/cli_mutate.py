@@ -232,7 +232,7 @@ def mutate(ids: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str, ...
             raise MutateInputError(f"cannot write reports to {target}: {exc.strerror or exc}") from None
         click.echo(f"reports: {Path(target) / 'mutation.json'}, {Path(target) / 'mutation.md'}", err=True)
     else:
-        click.echo("note: partial run, no report written (give --report-dir DIR to write one)", err=True)
+        click.echo("note: no report written (give --report-dir DIR to write one)", err=True)
     raise click.exceptions.Exit(EXIT_OK if report.ok() else EXIT_SURVIVORS)
 
 
