@@ -38,7 +38,6 @@ import hashlib
 import inspect
 import os
 import pickle
-import select
 import struct
 import subprocess
 import sys
@@ -50,7 +49,7 @@ from pathlib import Path
 from typing import Any, Callable, Iterable
 
 from .claims import CATALOG, Claim, Size
-from .pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT, GIB, Outcome
+from .pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT, GIB, Outcome, _read_exactly
 from .results import Result
 
 #: seconds to wait for the scheduler when connecting
@@ -150,21 +149,6 @@ def _write_frame(stream: Any, obj: Any) -> None:
     data = pickle.dumps(obj, protocol=pickle.HIGHEST_PROTOCOL)
     stream.write(_FRAME.pack(len(data)) + data)
     stream.flush()
-
-
-def _read_exactly(fd: int, n: int, deadline: float | None) -> bytes | None:
-    chunks, left = [], n
-    while left:
-        if deadline is not None:
-            wait = deadline - time.monotonic()
-            if wait <= 0 or not select.select([fd], [], [], wait)[0]:
-                raise TimeoutError
-        chunk = os.read(fd, min(left, 1 << 20))
-        if not chunk:
-            return None
-        chunks.append(chunk)
-        left -= len(chunk)
-    return b"".join(chunks)
 
 
 def _read_frame(fd: int, deadline: float | None = None) -> Any:
