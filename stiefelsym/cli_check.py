@@ -22,10 +22,12 @@ _Command = standalone_command("stiefelsym check")
 
 @click.command("check", cls=_Command, short_help="Re-trace every record of a results file and re-check it.")
 @click.argument("results_file", type=click.Path(path_type=Path))
+@click.option("--no-rerun", is_flag=True, help="compare digests and certificates only (no method runs again)")
 @click.option("--claims", "claims_files", multiple=True, type=click.Path(),
               help="claims files the run used (default: those the results file names)")
-def check(results_file: Path, claims_files: tuple[str, ...]) -> None:
-    """Re-trace every record's claim, compare the graph digests, re-derive and re-check every
+def check(results_file: Path, no_rerun: bool, claims_files: tuple[str, ...]) -> None:
+    """Re-trace every record's claim, compare the graph digests, run every fixed-size record again
+    (its method, size and seed) and compare the verdicts, re-derive and re-check every
     dimension-free certificate; exit 1 if any record does not hold up."""
     if not results_file.is_file():
         raise InputError(f"results file not found: {results_file}")
@@ -39,5 +41,5 @@ def check(results_file: Path, claims_files: tuple[str, ...]) -> None:
         raise InputError(f"{results_file} is not a stiefelsym results file: {exc}") from None
     files = list(claims_files) or list(meta.get("claims_files") or [])
     registry, _ = _registry(files or None)
-    bad = check_results(records, registry, echo=click.echo)
+    bad = check_results(records, registry, echo=click.echo, rerun=not no_rerun, hard=meta.get("hard"))
     raise SystemExit(1 if bad else 0)

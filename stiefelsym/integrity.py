@@ -37,10 +37,13 @@ def _canonical(x: Any) -> str:
     return json.dumps(x, sort_keys=True, separators=(",", ":"))
 
 
-def check_results(records: list[dict], registry: Registry, echo: Callable[[str], None] = print) -> int:
-    """Re-trace and re-check every record; the number of records that do not hold up."""
+def check_results(records: list[dict], registry: Registry, echo: Callable[[str], None] = print,
+                  rerun: bool = True, hard: str | None = None) -> int:
+    """Re-trace and re-check every record; the number of records that do not hold up.  With
+    ``rerun`` every fixed-size record is also run again (its method, size and seed) and its verdict
+    compared: a hand-edited verdict is caught even where the digest is the claim's."""
     from .free_method import run_free
-    from .runner import graph_digest
+    from .runner import graph_digest, run_one
     bad = 0
     for p in certificate_problems(records):
         echo(f"REJECTED {p}")
@@ -73,6 +76,13 @@ def check_results(records: list[dict], registry: Registry, echo: Callable[[str],
                  f"claim's ({digest[:12] or 'it does not trace'})")
             bad += 1
             continue
+        if rerun and r.get("method") != "free":
+            again_fixed = run_one(claim, size, r.get("method"), r.get("seed") or 0, func, hard=hard)
+            if again_fixed.verdict != r.get("verdict"):
+                echo(f"REJECTED {where}: the record says {r.get('verdict')!r}, a run again says "
+                     f"{again_fixed.verdict!r}")
+                bad += 1
+                continue
         if r.get("method") == "free" and r.get("verdict") == "proved":
             key = (cid, r.get("variant"))
             again = free_done.get(key)

@@ -290,3 +290,16 @@ def test_a_passing_verdict_for_a_claim_that_does_not_trace_is_rejected():
     assert check_results([forged], reg, echo=lines.append) == 1 and "does not trace" in lines[0]
     honest = dict(forged, verdict="error")
     assert check_results([honest], reg, echo=lines.append) == 0
+
+
+def test_a_hand_edited_verdict_with_the_right_digest_is_caught(tmp_path):
+    """The digest binds a record to its graph, not to its verdict: check runs the record again."""
+    out = tmp_path / "rep"
+    assert _run_cli(["verify", "manakov-dual-lax", "--size", "3,1", "--method", "modular",
+                     "--report-dir", str(out)], tmp_path).exit_code in (0, 1)
+    payload = json.loads((out / "results.json").read_text())
+    rec = next(x for x in payload["results"] if x["verdict"] == "fails")
+    rec["verdict"] = "checked"
+    (out / "results.json").write_text(json.dumps(payload))
+    r = _run_cli(["check", str(out / "results.json")], tmp_path)
+    assert r.exit_code == 1 and "a run again says 'fails'" in r.output
