@@ -12,7 +12,8 @@ import pytest
 
 from stiefelsym.claims import Claim, admissible
 from stiefelsym.free import FreeScene
-from stiefelsym.free.algebra import recording, refusals
+from stiefelsym.free.algebra import NeedsCoordinates, recording, refusals
+from stiefelsym.free.mat import entry_of
 from stiefelsym.matrix import Mat
 from stiefelsym.runner import run_one
 
@@ -47,8 +48,8 @@ TRICKS = {
     "an inverse": lambda s: s.A.inv(),
     "the eigenvalues of A": lambda s: s.a,
     "a coordinate-scene method": lambda s: s.jacobian,
-    "the ambient gradient": lambda s: s.gradient(lambda t: t.tr(t.P.T @ t.P)),
-    "the Lagrange multipliers": lambda s: s.multiplier_flow(lambda t: t.tr(t.P.T @ t.P)),
+    "a gradient of a matrix": lambda s: s.gradient(lambda t: t.P),
+    "the multipliers of a matrix": lambda s: s.multiplier_flow(lambda t: t.P.T @ t.P),
     "a flow that moves A": lambda s: s.tangent({"A": s.A}),
     "a value along a flow off T*V": lambda s: s.d(s.Phi, {"X": s.X, "P": s.P}),
     "a Hamiltonian that is no trace form": lambda s: s.dirac_flow(lambda t: t.X),
@@ -141,3 +142,25 @@ HELPER_DOORS = {
 def test_a_caught_refusal_of_a_library_helper_is_never_a_proof(name):
     res = _free(_tricked(HELPER_DOORS[name]))
     assert res.verdict == "undecided", (name, res.verdict, res.message)
+
+
+def test_ambient_quantities_need_the_function_as_written():
+    """Gradients, canonical flows, multipliers and {,}_0 depend on a function off T*V: a lazy scene
+    (the free method's) keeps the trace form as written and offers them; an eager scene, which has
+    reduced it modulo the constraints, refuses and records the refusal."""
+    H = lambda t: t.tr(t.X.T @ t.X @ t.P.T @ t.P)
+    lazy = FreeScene(lazy=True)
+    HX, HP = lazy.gradient(H)
+    # ∂/∂X tr(XᵀX PᵀP) = 2 X PᵀP, whose normal form is not that of the reduced H = tr(PᵀP) (which is 0)
+    assert not lazy.system.is_zero(entry_of(HX))
+    assert lazy.system.is_zero(entry_of(HX - 2 * lazy.X @ lazy.P.T @ lazy.P))
+    assert lazy.system.is_zero(entry_of(HP - 2 * lazy.P))
+    flow = lazy.canonical_flow(H)
+    assert lazy.system.is_zero(entry_of(flow.Xdot - HP)) and lazy.system.is_zero(entry_of(flow.Pdot + HX))
+    eager = FreeScene()
+    for op in (lambda s: s.gradient(H), lambda s: s.canonical_flow(H), lambda s: s.multiplier_flow(H),
+               lambda s: s.canonical_bracket(H, H)):
+        with recording(eager.tracker):
+            with pytest.raises(NeedsCoordinates):
+                op(eager)
+        assert refusals(eager.tracker)

@@ -589,15 +589,26 @@ class FreeScene(PaperObjects):
             raise TypeError("a Hamiltonian must be a scalar trace form")
         return value
 
+    def _as_written(self, what: str) -> None:
+        """Ambient quantities (gradients, canonical flows, multipliers, the bracket {,}_0) depend on
+        a function off T*V.  A lazy scene keeps every expression as built (no rule is applied while a
+        function is evaluated), so a trace form H is the polynomial the claim wrote, defined on all of
+        (X, P)-space, and its cyclic derivative is its ambient gradient; an eager scene has reduced H
+        modulo the constraints and refuses."""
+        if not getattr(self._field, "lazy", False):
+            raise refuse(what, self.tracker)
+
     def gradient(self, H: Function) -> tuple[Mat, Mat]:
-        """Ambient gradients depend on H off T*V: not offered (see _gradient)."""
-        raise refuse("the ambient gradient of H, which depends on H off T*V", self.tracker)
+        """(∂H/∂X, ∂H/∂P) of the trace form H as written: the cyclic derivative of the polynomial
+        the lazy scene built (each gradient then reduced, which changes it only off T*V)."""
+        self._as_written("the ambient gradient of H, which depends on H off T*V")
+        return self._gradient(H)
 
     def _gradient(self, H: Function) -> tuple[Mat, Mat]:
-        """(∂H/∂X, ∂H/∂P) of the trace form H, as reduced by the scene's arithmetic.
-
-        The reduction changes H only off T*V, so Dirac flows are unaffected; the
-        canonical flow and the multipliers Λ, Π are those of the reduced form."""
+        """(∂H/∂X, ∂H/∂P) of the trace form H as the scene's arithmetic built it: on a lazy scene the
+        polynomial as written (the ambient gradient), on an eager one H reduced modulo the
+        constraints (which changes H only off T*V, so Dirac flows are unaffected, but the
+        canonical flow and the multipliers Λ, Π are those of the reduced form)."""
         def build():
             h = self._hamiltonian(H)
             return (self._const_mat(self.system.normal_form(gradient(h, X))),
@@ -618,19 +629,25 @@ class FreeScene(PaperObjects):
         return self._cache[full][1]
 
     def canonical_flow(self, H: Function) -> Flow:
-        """Ambient quantities depend on H off T*V, which the reduced trace form has lost."""
-        raise refuse("the ambient (canonical) flow, which depends on H off T*V", self.tracker)
+        """The Hamiltonian vector field of H as written for the ambient bracket {,}_0:
+        Ẋ = ∂H/∂P, Ṗ = −∂H/∂X."""
+        self._as_written("the ambient (canonical) flow, which depends on H off T*V")
+        HX, HP = self._gradient(H)
+        return Flow(HP, -HX)
 
     def dirac_flow(self, H: Function) -> Flow:
         """(dot_XP): Ẋ = H_P − XΠ, Ṗ = −H_X + XΛ + PΠ with Π, Λ solved in the free algebra."""
         def build():
             flow = self._multiplier_flow(H)
+            if getattr(self._field, "lazy", False):
+                return flow                     # H as written: Λ, Π are H's own multipliers
             return Flow(flow.Xdot, flow.Pdot)   # the multipliers of the reduced form are not H's
         return self._cached_for("dflow", H, build)
 
     def multiplier_flow(self, H: Function) -> Flow:
-        """The multipliers Λ, Π depend on H off T*V, which the reduced trace form has lost."""
-        raise refuse("the Lagrange multipliers, which depend on H off T*V", self.tracker)
+        """(dot_XP) with the Lagrange multipliers Λ, Π of H as written (see :meth:`_as_written`)."""
+        self._as_written("the Lagrange multipliers, which depend on H off T*V")
+        return self.dirac_flow(H)
 
     def _multiplier_flow(self, H: Function) -> Flow:
         HX, HP = (entry_of(m) for m in self._gradient(H))
@@ -691,8 +708,11 @@ class FreeScene(PaperObjects):
         return images
 
     def canonical_bracket(self, F: Function, G: Function) -> Any:
-        """The ambient bracket depends on F, G off T*V, which the reduced trace forms have lost."""
-        raise refuse("the ambient bracket {F, G}_0, which depends on F, G off T*V", self.tracker)
+        """{F, G}_0 = tr(F_Xᵀ G_P) − tr(F_Pᵀ G_X) for F, G as written (see :meth:`_as_written`)."""
+        self._as_written("the ambient bracket {F, G}_0, which depends on F, G off T*V")
+        FX, FP = self._gradient(F)
+        GX, GP = self._gradient(G)
+        return self.tr(FX.T @ GP) - self.tr(FP.T @ GX)
 
     def bracket(self, F: Function, G: Function) -> Any:
         """The Dirac bracket {F, G} = derivative of F along the Dirac flow of G."""
