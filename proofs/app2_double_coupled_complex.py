@@ -3,8 +3,8 @@ from __future__ import annotations
 
 from stiefelsym import admissible, block, claim, comm  # noqa: F401
 from stiefelsym.systems import (complex_coordinates, complex_diagonal, complex_point, coupled_point, ctranspose,
-                                derivative, double_point, euler_lagrange, hamiltonian_flow, hermitian_entries,
-                                re_trace, real_complex_point, real_coordinates, realify_real, symmetric_entries)
+                                derivative, double_point, euler_lagrange, hermitian_entries,
+                                re_trace, real_complex_point, real_coordinates, realify_real, stiefel_pairs_flow)
 
 from .sec8_dual_lax_pair import A_dual_euclidean, L_dual
 
@@ -208,17 +208,10 @@ NORMAL = lambda t: t.q(0)
 EUCLIDEAN = lambda t: t.q(-1, 2)
 
 
-def coupled_constraints(t, z):
-    """The constraints of T*V × T*V: XᵀX = I_r, XᵀP + PᵀX = 0, YᵀY = I_r, YᵀQ + QᵀY = 0."""
-    X, P, Y, Q = z["X"], z["P"], z["Y"], z["Q"]
-    return (symmetric_entries(X.T @ X - t.Ir) + symmetric_entries(X.T @ P + P.T @ X)
-            + symmetric_entries(Y.T @ Y - t.Ir) + symmetric_entries(Y.T @ Q + Q.T @ Y))
-
-
 def coupled_flow(s, H):
-    """The flow of H on T*V × T*V with both constraint sets (the Hamilton equations with multipliers)."""
-    flow, _ = hamiltonian_flow(s, H, coupled_constraints, coupled_point(s), [("X", "P"), ("Y", "Q")])
-    return flow
+    """The flow of H on T*V × T*V with the constraints (cond_XP) of both points, XᵀX = I_r, XᵀP + PᵀX = 0,
+    YᵀY = I_r, YᵀQ + QᵀY = 0 (the Hamilton equations with multipliers)."""
+    return stiefel_pairs_flow(s, H, coupled_point(s), [("X", "P"), ("Y", "Q")])
 
 
 def Lambda_Pi_coupled(t, z):

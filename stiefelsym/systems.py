@@ -59,7 +59,7 @@ Point = Mapping[Hashable, Mat]
 Coordinates = Sequence[tuple[Hashable, Mat]]
 
 __all__ = ["derivative", "entries", "symmetric_entries", "hermitian_entries", "real_coordinates",
-           "complex_coordinates", "euler_lagrange", "hamiltonian_flow", "double_point", "coupled_point",
+           "complex_coordinates", "euler_lagrange", "hamiltonian_flow", "stiefel_pairs_flow", "double_point", "coupled_point",
            "complex_point", "real_complex_point", "ctranspose", "realify_real", "re_trace", "complex_diagonal"]
 
 
@@ -79,6 +79,8 @@ def derivative(s: Scene, F: Callable[[Scene, dict], Any], point: Point, tangent:
 
     ``F`` is a function of a scene and of a point (a dict of matrices of the shapes of ``point``);
     its value is a scalar, a matrix, or a list/dict of them."""
+    if not isinstance(s, (Scene, TraceScene)) and hasattr(s, "derivative_at_own_point"):
+        return s.derivative_at_own_point(F, point, tangent)   # the dimension-free scene, at its own point
     _coordinate_scene(s, "a derivative at a point of a phase space other than T*V")
     extra = set(tangent) - set(point)
     if extra:
@@ -581,6 +583,25 @@ def hamiltonian_flow(s: Scene, H: Callable[[Scene, dict], Any], constraints: Cal
     return out, mu_list
 
 
+def stiefel_pairs_flow(s: Scene, H: Callable[[Scene, dict], Any], point: Point,
+                       pairs: Sequence[tuple[Hashable, Hashable]]) -> dict[Hashable, Mat]:
+    """The Dirac flow of H(t, z) on the product of copies of T*V(n, r), one for each (position,
+    momentum) pair of ``point``, each with its constraints (cond_XP): xᵀx = I_r, xᵀp + pᵀx = 0.
+    On a coordinate scene it is :func:`hamiltonian_flow` with these constraints; on the
+    dimension-free scene, at the scene's own points (X, P), (Y, Q), each pair has its own
+    multipliers (its constraints involve only its letters): ẋ = H_p − xΠ, ṗ = −H_x + xΛ + pΠ."""
+    if not isinstance(s, (Scene, TraceScene)) and hasattr(s, "pairs_dirac_flow"):
+        return s.pairs_dirac_flow(H, point, pairs)
+
+    def constraints(t, z):
+        out: list = []
+        for x, p in pairs:
+            X, P = z[x], z[p]
+            out += symmetric_entries(X.T @ X - t.Ir) + symmetric_entries(X.T @ P + P.T @ X)
+        return out
+    return hamiltonian_flow(s, H, constraints, point, pairs)[0]
+
+
 # -- generic points of the appendix's phase spaces ------------------------------------------------
 
 def _diag(s: Scene, values: Sequence[Any]) -> Mat:
@@ -658,5 +679,6 @@ derivative = primitive(derivative, like={"F": "point"}, returns=("like", "F"))
 euler_lagrange = primitive(euler_lagrange, returns=2, like={"T": "velocity", "U": "position",
                                                             "constraints": "position"})
 hamiltonian_flow = primitive(hamiltonian_flow, returns=2, like={"H": "point", "constraints": "point"})
+stiefel_pairs_flow = primitive(stiefel_pairs_flow, like={"H": "point"})
 real_coordinates = primitive(real_coordinates)
 complex_coordinates = primitive(complex_coordinates)

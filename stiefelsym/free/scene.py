@@ -651,8 +651,16 @@ class FreeScene(PaperObjects):
 
     def _multiplier_flow(self, H: Function) -> Flow:
         HX, HP = (entry_of(m) for m in self._gradient(H))
+        Xd, Pd, Lam, Pi = self._pair_multipliers(HX, HP, X, P)
+        return Flow(self._const_mat(Xd), self._const_mat(Pd),
+                    multipliers={"Pi": self._const_mat(Pi), "Lambda": self._const_mat(Lam)})
+
+    def _pair_multipliers(self, HX: NCPoly, HP: NCPoly, x_letter: Letter, p_letter: Letter) -> tuple:
+        """(dot_XP) for one pair (x, p) of T*V: ẋ = H_p − xΠ, ṗ = −H_x + xΛ + pΠ with the symmetric Π, Λ
+        for which the flow keeps xᵀx = I_r and xᵀp + pᵀx = 0, solved in the free algebra.  Returns
+        (ẋ, ṗ, Λ, Π), reduced."""
         nf = self.system.normal_form
-        x, p = _w(X), _w(P)
+        x, p = _w(x_letter), _w(p_letter)
         Pi, Lam = _w(PI), _w(LAMBDA)
         Xd = HP - x * Pi
         Pd = -HX + x * Lam + p * Pi
@@ -664,8 +672,45 @@ class FreeScene(PaperObjects):
             record_refusal(f"the Lagrange multipliers of a Hamiltonian ({exc})", self.tracker)
             raise
         Xd, Pd = (nf(substitute(v, solved)) for v in (Xd, Pd))
-        return Flow(self._const_mat(Xd), self._const_mat(Pd),
-                    multipliers={"Pi": self._const_mat(solved[PI]), "Lambda": self._const_mat(solved[LAMBDA])})
+        return Xd, Pd, solved[LAMBDA], solved[PI]
+
+    # -- phase spaces made of the scene's points ---------------------------------------------------
+    def _own_point(self, point: Mapping[str, Any], what: str) -> list[str]:
+        """The keys of a point that is the scene's own letters (X, P, and Y, Q of the second point):
+        anything else (a matrix built from them, another phase space) needs coordinates."""
+        keys = list(point)
+        if not keys or any(k not in MOVABLE or point[k] is not getattr(self, k) for k in keys):
+            raise refuse(f"{what} at a point that is not the scene's own (X, P, Y, Q)", self.tracker)
+        return keys
+
+    def derivative_at_own_point(self, F: Callable[[Any, dict], Any], point: Mapping[str, Any],
+                                tangent: Mapping[str, Any]) -> Any:
+        """d/dε F(t, point + ε·tangent) at ε = 0 for the scene's own point: the derivative of
+        t ↦ F(t, {k: t.k}) along the tangent (letters not moved are constant)."""
+        keys = self._own_point(point, "a derivative")
+        return self.d(lambda t: F(t, {k: getattr(t, k) for k in keys}), dict(tangent))
+
+    def pairs_dirac_flow(self, H: Callable[[Any, dict], Any], point: Mapping[str, Any],
+                         pairs: Any) -> dict[str, Mat]:
+        """The Dirac flow of H(t, z) on a product of copies of T*V(n, r), one for each (position,
+        momentum) pair of the scene's own letters, each with its constraints (cond_XP): the
+        constraints of a pair involve only its own letters, so each pair has its own multipliers,
+        ẋ = H_p − xΠ, ṗ = −H_x + xΛ + pΠ, solved in the free algebra."""
+        keys = self._own_point(point, "a Hamiltonian flow")
+        pairs = [tuple(pq) for pq in pairs]
+        if sorted(k for pq in pairs for k in pq) != sorted(keys) or any(len(pq) != 2 for pq in pairs):
+            raise refuse("a Hamiltonian flow whose pairs are not the point's letters", self.tracker)
+        letters = {k: self._named[k] for k in keys}
+        h = self._hamiltonian(lambda t: H(t, {k: getattr(t, k) for k in keys}))
+        nf = self.system.normal_form
+        out: dict[str, Mat] = {}
+        for xk, pk in pairs:
+            if (xk, pk) not in (("X", "P"), ("Y", "Q")):
+                raise refuse(f"a Hamiltonian flow with the pair ({xk}, {pk})", self.tracker)
+            HX, HP = nf(gradient(h, letters[xk])), nf(gradient(h, letters[pk]))
+            Xd, Pd, _, _ = self._pair_multipliers(HX, HP, letters[xk], letters[pk])
+            out[xk], out[pk] = self._const_mat(Xd), self._const_mat(Pd)
+        return out
 
     def tangent(self, flow: Mapping[str, Mat]) -> "FreeTangentScene":
         for key in dict(flow):

@@ -232,6 +232,10 @@ def _element(g: Graph, base: Ref, key, sides: list, default):
     return default
 
 
+#: the read of a block matrix used as a matrix on ℝⁿ (see :func:`coordinate_reads`)
+BLOCK_SPLITTING = "a block splitting of R^n"
+
+
 def coordinate_reads(g: Graph) -> dict[str, frozenset]:
     """The looks at coordinates the graph makes that break the equivariance reduction by O(n)
     (each with the spaces it involves), whatever spaces the claim named:
@@ -272,7 +276,7 @@ def coordinate_reads(g: Graph) -> dict[str, frozenset]:
                 add("a constant matrix on R^n", inv)
         elif op == "block" and sides[i]:
             if any(S.atom[S.find(x)] in ("n", "opaque") for x in sides[i]):
-                add("a block splitting of R^n", {"n"})
+                add(BLOCK_SPLITTING, {"n"})
     g.cache["reads"] = reads
     return reads
 
