@@ -336,15 +336,18 @@ def run_with_corrections(run: Callable[[list[Task]], Iterable[tuple[int, Outcome
                          deliver: Callable[[Result], None]) -> None:
     """Run the plan with ``run`` (local workers or a cluster: it yields (task index, outcome)),
     then every registered correction of each (claim, method) that failed somewhere, at every
-    planned size of that claim and method."""
+    planned size of that claim and method, and of each claim the dimension-free method did not
+    prove as printed (a correction proved for all n, r)."""
     failed: dict[tuple[int, str], None] = {}
+    corrections: list[Task] = []
     for i, outcome in run(tasks):
         res = _settle(outcome, tasks[i], claims, seed, hard)
         deliver(res)
         ci, n, _, m, _ = tasks[i]
         if res.verdict == "fails" and n is not None and claims[ci].corrections:
             failed.setdefault((ci, m))
-    corrections: list[Task] = []
+        if n is None and res.verdict != "proved":
+            corrections += [(ci, None, None, m, k) for k in range(len(claims[ci].corrections))]
     for ci, m in failed:
         planned = [(t[1], t[2]) for t in tasks if t[0] == ci and t[3] == m and t[1] is not None]
         for k in range(len(claims[ci].corrections)):

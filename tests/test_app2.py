@@ -10,7 +10,8 @@ from stiefelsym.claims import Size
 from stiefelsym.free_method import run_free
 from stiefelsym.methods import run_exact, run_points
 from stiefelsym.runner import run_one
-from stiefelsym.systems import coupled_point, derivative, double_point, euler_lagrange, real_coordinates
+from stiefelsym.systems import (coupled_point, derivative, double_point, euler_lagrange, hamiltonian_flow,
+                                real_coordinates, symmetric_entries)
 
 import stiefelsym.proofs.app2_double_coupled_complex as a
 
@@ -18,13 +19,23 @@ SEED = 0
 
 #: proved for every n, r by the dimension-free method (along (C-eq) with YΠ, a matrix expression)
 FREE_PROVED = ("coupled-corrected-flow-invariants", "coupled-dual-lax-along-corrected-flow",
-               "coupled-big-lax-along-corrected-flow")
+               "coupled-big-lax-along-corrected-flow", "coupled-neumann-momentum", "coupled-dual-lax",
+               "coupled-perturbed-dual-lax")
+def coupled_constraints(t, z):
+    """XᵀX = I_r, XᵀP + PᵀX = 0, YᵀY = I_r, YᵀQ + QᵀY = 0 (the constraints stiefel_pairs_flow imposes)."""
+    X, P, Y, Q = z["X"], z["P"], z["Y"], z["Q"]
+    return (symmetric_entries(X.T @ X - t.Ir) + symmetric_entries(X.T @ P + P.T @ X)
+            + symmetric_entries(Y.T @ Y - t.Ir) + symmetric_entries(Y.T @ Q + Q.T @ Y))
+
+
+#: fail as printed; their registered corrections are proved for every n and r
+FREE_CORRECTED = ("coupled-neumann-flow", "coupled-big-lax-normal", "coupled-perturbed-big-lax",
+                  "double-neumann-dual-lax-extends-la3")
 #: matrix expressions at a point of T*V, no flow: not proved for all n, r as printed, its correction is
 MATRIX_ONLY = ("double-neumann-dual-lax-extends-la3",)
 #: hold as printed
-HOLDS = ("double-neumann-flow", "double-neumann-momentum", "double-neumann-diagonal", "coupled-neumann-momentum",
-         "coupled-dual-lax", "coupled-perturbed-dual-lax", "complex-neumann-flow", "complex-neumann-momenta",
-         "complex-neumann-real-data") + FREE_PROVED
+HOLDS = ("double-neumann-flow", "double-neumann-momentum", "double-neumann-diagonal", "complex-neumann-flow",
+         "complex-neumann-momenta", "complex-neumann-real-data") + FREE_PROVED
 #: fail as printed (documented errata with a registered correction)
 ERRATA = ("double-neumann-dual-lax", "double-neumann-dual-lax-extends-la3", "coupled-neumann-flow", "coupled-big-lax-normal", "coupled-perturbed-big-lax",
           "complex-neumann-dual-lax")
@@ -261,8 +272,17 @@ def test_claim_is_proved_for_every_n_and_r(catalog, cid):
 def test_the_systems_need_coordinates(catalog, cid):
     res = run_free(catalog.get(cid))
     assert res.verdict == "undecided", res.line()
-    if cid not in NOT + MATRIX_ONLY:     # (a `not` statement: rewriting proves vanishing only)
+    if cid not in NOT + MATRIX_ONLY + FREE_CORRECTED:     # (a `not` statement: rewriting proves vanishing only)
         assert "needs coordinates" in res.message, res.message
+
+
+@pytest.mark.parametrize("cid", FREE_CORRECTED)
+def test_the_registered_correction_is_proved_for_every_n_and_r(catalog, cid):
+    """The printed formula keeps a nonzero normal form; the correction reduces to 0."""
+    c = catalog.get(cid)
+    assert run_free(c).verdict == "undecided"
+    assert [run_free(c.corrected(k), corr.func).verdict for k, corr in enumerate(c.corrections)] == \
+        ["proved"] * len(c.corrections)
 
 
 def test_the_double_lax_pair_extends_la3_once_corrected_for_every_n_and_r(catalog):
@@ -354,7 +374,7 @@ def test_hamiltonian_flow_by_reverse_mode_is_the_forward_one(monkeypatch, n, r, 
     Ham = a.H_coupled(a.FREE_KAPPA) if H == "coupled" else a.H_perturbed(a.FREE_KAPPA)
     pairs = [("X", "P"), ("Y", "Q")]
     (rev, rev_calls), (fwd, fwd_calls) = _both_ways(
-        monkeypatch, lambda: a.hamiltonian_flow(s, Ham, a.coupled_constraints, coupled_point(s), pairs))
+        monkeypatch, lambda: hamiltonian_flow(s, Ham, coupled_constraints, coupled_point(s), pairs))
     assert rev_calls == 0 and fwd_calls == 4 * n * r
     _same(rev[0], fwd[0])
     assert rev[1] == fwd[1] and len(rev[1]) == 2 * r * (r + 1)
@@ -386,8 +406,8 @@ def test_coordinates_as_a_plain_basis_give_the_same_flow():
     list of matrices (the product with the basis) give one flow."""
     s = _modular_scene(3, 2)
     H, pairs = a.H_coupled(a.FREE_KAPPA), [("X", "P"), ("Y", "Q")]
-    fast, mu = a.hamiltonian_flow(s, H, a.coupled_constraints, coupled_point(s), pairs)
-    plain, mu2 = a.hamiltonian_flow(s, H, a.coupled_constraints, coupled_point(s), pairs,
+    fast, mu = hamiltonian_flow(s, H, coupled_constraints, coupled_point(s), pairs)
+    plain, mu2 = hamiltonian_flow(s, H, coupled_constraints, coupled_point(s), pairs,
                                     coords=lambda t, names: list(real_coordinates(t, names)))
     _same(fast, plain)
     assert mu == mu2
@@ -420,11 +440,10 @@ def test_float_flows_agree_within_their_error_bounds(monkeypatch):
     flows = []
     for reverse in (True, False):
         monkeypatch.setattr(scene_mod, "REVERSE_GRADIENTS", reverse)
-        flow, _ = a.hamiltonian_flow(s, a.H_coupled(a.FREE_KAPPA), a.coupled_constraints, coupled_point(s), pairs)
-        flows.append(flow)
+        flows.append(a.coupled_flow(s, a.H_coupled(a.FREE_KAPPA)))
     for k in flows[0]:
         assert (flows[0][k] - flows[1][k]).is_zero(), k
         assert flows[0][k]._nat().e < 1e-8 * max(1.0, float(abs(flows[0][k]._nat().v).max()))
     wrong = lambda t, z: a.H_coupled(a.FREE_KAPPA)(t, z) + t.tr(z["X"].T @ t.A @ z["Y"])
-    other = a.hamiltonian_flow(s, wrong, a.coupled_constraints, coupled_point(s), pairs)[0]
+    other = a.coupled_flow(s, wrong)
     assert not (other["P"] - flows[0]["P"]).is_zero()

@@ -2,6 +2,7 @@
 import pytest
 
 from stiefelsym import Count, Rank, comm
+from stiefelsym.free_method import run_free
 from stiefelsym.methods import run_exact, run_points
 
 import stiefelsym.proofs.sec2_hamiltonian_flows as sec2
@@ -192,6 +193,7 @@ def test_corrupted_identity_fails(catalog, cid, func, n, r):
     assert run_exact(c, n, r, SEED, func=func).verdict == "fails"
     res = run_points(c, n, r, "modular", SEED, func=func)
     assert res.verdict == "fails" and res.witness and res.witness["seed"] == SEED
+    assert run_free(c, func).verdict != "proved"     # never a proof for all n, r of a false statement
 
 
 @pytest.mark.parametrize("cid, func, n, r", _cases(RANK_CORRUPTIONS))

@@ -4,6 +4,7 @@ import pytest
 from stiefelsym.proofs import sec3_geodesic_flows as g
 from stiefelsym import Rank, admissible
 from stiefelsym.claims import Claim, load_catalog
+from stiefelsym.free_method import run_free
 from stiefelsym.methods import run_exact, run_points
 
 
@@ -129,6 +130,7 @@ def test_corrupted_claim_fails(cid, func, size):
     assert run_exact(c, n, r, 0).verdict == "fails"
     assert run_points(c, n, r, "modular", 0).verdict in ("fails", "inconclusive")
     assert run_points(c, n, r, "modular", 0).verdict != "checked"
+    assert run_free(c, c.func).verdict != "proved"    # never a proof for all n, r of a false statement
 
 
 @pytest.mark.parametrize("cid", sorted({c[0] for c in CASES}))

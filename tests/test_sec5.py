@@ -13,9 +13,9 @@ SEED = 0
 
 #: proved for every n, r by rewriting modulo (cond_XP)
 FREE_PROVED = ("neumann-hamiltonian", "neumann-flow", "neumann-normal-flow", "neumann-euclidean-flow",
-               "neumann-psi-conserved", "prep", "neumann-lax", "neumann-spectral-invariants")
+               "neumann-psi-conserved", "prep", "neumann-lax", "neumann-spectral-invariants", "neumann-multipliers")
 #: need coordinates: the multipliers Λ, Π and the gradients depend on H off T*V
-NEEDS_COORDINATES = ("neumann-multipliers",)
+NEEDS_COORDINATES: tuple[str, ...] = ()
 
 
 def _section5(catalog):
