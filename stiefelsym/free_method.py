@@ -61,7 +61,7 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
     except NeedsCoordinates as exc:
         return undecided(f"needs coordinates: {exc.what}; decided by the fixed-size methods")
     except TraceRefused as exc:
-        return undecided(f"needs coordinates or fixed sizes: {exc}; decided by the fixed-size methods")
+        return undecided(needs_text(claim, func, str(exc)))
     except (FreeSolveError, RewritingError) as exc:
         return touched() or undecided(f"outside the rewriting backend: {exc}")
     except (TypeError, ValueError, AttributeError, ArithmeticError) as exc:
@@ -146,6 +146,25 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
                        f"independent checker; every entry has normal form 0; rules "
                        f"applied while building and reducing the residual: {names}")
     return res
+
+
+def needs_text(claim: Claim, func: Callable, refusal: str) -> str:
+    """Why a claim that does not trace with symbolic sizes is left to the fixed-size methods, read
+    from its graph at a fixed size (what it states and reads there), with the refusal that stopped
+    the symbolic trace."""
+    from .ir import compile_at_size
+    from .ir.passes import coordinate_needs
+    from .scene import REALIZATIONS
+    cons = REALIZATIONS[claim.realization]
+    sizes = list(claim.sizes)
+    z = next((z for z in sizes if 1 < z.r < z.n), None) or next((z for z in sizes if z.n >= 3), sizes[-1])
+    try:
+        needs = coordinate_needs(compile_at_size(func, z.n, z.r, (cons.name, cons.build)))
+    except Exception:    # noqa: BLE001 - the refusal alone says it
+        needs = []
+    what = "; ".join(needs) if needs else "its statement depends on the sizes (a loop or a condition over n, r)"
+    return (f"needs coordinates (fixed n, r): {what} (the trace with symbolic sizes stopped at: "
+            f"{refusal.removeprefix('refused: ')}); decided by the fixed-size methods")
 
 
 def same_graph_at_fixed_sizes(claim: Claim, func: Callable) -> str:

@@ -164,3 +164,18 @@ def test_ambient_quantities_need_the_function_as_written():
             with pytest.raises(NeedsCoordinates):
                 op(eager)
         assert refusals(eager.tracker)
+
+
+def test_a_claim_left_to_the_fixed_size_methods_says_what_it_reads():
+    """The reason is read from the claim's graph at a fixed size: what it states and reads there."""
+    from stiefelsym.claims import load_catalog
+    from stiefelsym.free_method import run_free
+    cat = load_catalog()
+    expect = {"pencil-rank-a1": "a rank", "quartic": "the eigenvalues a_i of A",
+              "neumann-torus-dimension": "a Jacobian", "gen-chasles-momentum-ranges": "a count of dimensions",
+              "double-neumann-flow": "Euler–Lagrange equations solved in coordinates",
+              "2r-integrals": "its statement depends on the sizes"}
+    for cid, what in expect.items():
+        res = run_free(cat.get(cid))
+        assert res.verdict == "undecided" and "needs coordinates (fixed n, r)" in res.message, res.message
+        assert what in res.message, (cid, res.message)

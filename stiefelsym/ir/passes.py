@@ -312,3 +312,48 @@ def outside_float_range(g: Graph) -> list:
         hi, lo = Fraction(2) ** FLOAT_EXPONENT_LIMIT, Fraction(1, 2 ** FLOAT_EXPONENT_LIMIT)
         cached = g.cache["wide"] = [c for c in constants(g) if c and not lo < abs(Fraction(c)) < hi]
     return cached
+
+
+#: what an engine step reads, for the steps that need coordinates (by the step's function name)
+_STEP_NEEDS = {
+    "double_point": "a generic point of the double Neumann system (X = X₀DU in coordinates)",
+    "complex_coordinates": "the real coordinates of complex matrices",
+    "real_coordinates": "the coordinates of the matrices of a phase space",
+    "hamiltonian_flow": "a Hamiltonian flow solved in coordinates",
+    "euler_lagrange": "Euler–Lagrange equations solved in coordinates",
+}
+
+
+def coordinate_needs(g: Graph) -> list[str]:
+    """What a graph traced at a fixed size reads that a statement for every n, r cannot: the
+    reasons, in a mathematician's terms, why the dimension-free method leaves the claim to the
+    fixed-size methods (empty when the graph reads none of them)."""
+    out: dict[str, None] = {}
+    ops = set(g.ops)
+    if "rank" in ops:
+        out["a rank (a dimension at fixed n, r)"] = None
+    if "count" in ops:
+        out["a count of dimensions at fixed n, r"] = None
+    for i, (op, a) in enumerate(zip(g.ops, g.args)):
+        if op == "attr" and a[1] == "a":
+            out["the eigenvalues a_i of A"] = None
+        elif op == "call" and a[1] in ("jacobian", "constraint_bracket_matrix"):
+            out["a Jacobian in the coordinates of X, P"] = None
+        elif op == "call" and a[1] == "sym_operator":
+            out["a generic symmetric operator on so(n), in a basis"] = None
+        elif op == "call" and a[1] in ("Zc", "realify"):
+            out["complex matrices realified in coordinates"] = None
+        elif op == "prim":
+            name = a[0].qualname.rsplit(".", 1)[-1]
+            if name in _STEP_NEEDS:
+                out[_STEP_NEEDS[name]] = None
+        elif op == "call" and a[1] == "mat":
+            out[_GIVEN] = None
+    for what in coordinate_reads(g):
+        out[what.replace("an entry or a block", "entries")] = None
+    if "a constant matrix on R^n" in out:
+        out.pop(_GIVEN, None)
+    return list(out)
+
+
+_GIVEN = "a matrix of given entries (basis vectors, projectors, coordinate matrices)"
