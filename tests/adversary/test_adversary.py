@@ -1,0 +1,126 @@
+"""Routes by which a claims file obtains a wrong verdict (adversarial review).  Each test asserts the
+CORRECT outcome; each fails today, hence ``xfail(strict=True)``: when a route is closed its test
+passes and the strict xfail turns red, to be unmarked.  Every run is a fresh process (the routes
+change process-wide state: primitives, backends, the graph cache)."""
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+HERE = Path(__file__).resolve().parent
+ROOT = HERE.parents[1]
+PASSING = ("proved", "checked", "numeric")
+
+
+def cli(*args, cwd=ROOT):
+    return subprocess.run([sys.executable, "-m", "stiefelsym", *args], cwd=cwd, capture_output=True,
+                          text=True, timeout=300)
+
+
+def verdicts(claims_file, method, size="3,2", ids=()):
+    """{claim id: verdict} of one `stiefelsym verify` run."""
+    args = ["verify", *ids, "--claims", str(HERE / claims_file), "--method", method]
+    if method != "free":
+        args += ["--size", size]
+    out = cli(*args).stdout
+    found = {}
+    for line in out.splitlines():
+        parts = line.split()
+        if len(parts) >= 4 and parts[-1] != "total" and parts[2 if method != "free" else 4].rstrip(":") == method:
+            found[parts[0]] = parts[3 if method != "free" else 5].rstrip(":")
+    return found
+
+
+def _v(claims_file, method, cid, size="3,2", ids=()):
+    v = verdicts(claims_file, method, size, ids)
+    assert cid in v, v
+    return v[cid]
+
+
+# -- A. the dimension-free proof compares only two fixed sizes -----------------------------------
+
+@pytest.mark.xfail(strict=True, reason="free method compares the symbolic graph with the first size and the "
+                   "first n >= 3 only; a claim reading s.n._size.value differs at n = 4")
+def test_size_branch_is_not_proved_for_all_sizes():
+    assert _v("size_branch_free.py", "free", "adv-size-branch") not in PASSING
+
+
+# -- B. a primitive of the claims file runs its Python at evaluation time --------------------------
+
+@pytest.mark.xfail(strict=True, reason="stiefelsym.ir.primitive lets claim code run on live values")
+@pytest.mark.parametrize("method", ["modular", "rational", "float", "free"])
+def test_user_primitive_cannot_tell_the_method(method):
+    assert _v("user_primitive_method.py", method, "adv-primitive-method") not in PASSING
+
+
+# -- C. a function handed to the scene is traced once per object -----------------------------------
+
+@pytest.mark.xfail(strict=True, reason="t.function caches by id(f): a changed default/closure is not re-traced")
+@pytest.mark.parametrize("method", ["exact", "modular", "float"])
+def test_function_changed_between_uses_is_not_proved(method):
+    assert _v("function_traced_once.py", method, "adv-function-once") not in PASSING
+
+
+@pytest.mark.xfail(strict=True, reason="t.function caches by id(f): a true claim fails")
+@pytest.mark.parametrize("method", ["exact", "modular"])
+def test_function_changed_between_uses_true_claim_does_not_fail(method):
+    assert _v("function_traced_once_true_fails.py", method, "adv-function-once-true") != "fails"
+
+
+# -- D. the graph cache is keyed by the claim's callable (its __hash__/__eq__) ----------------------
+
+@pytest.mark.xfail(strict=True, reason="_GRAPHS keyed by func: a callable equal to another claim's function "
+                   "gets that claim's graph")
+@pytest.mark.parametrize("method", ["exact", "modular", "free"])
+def test_cache_collision_does_not_prove_a_false_claim(method):
+    assert _v("graph_cache_collision.py", method, "adv-cache-false") not in PASSING
+
+
+# -- E. named(): any object of the claim's reaches the methods' arithmetic --------------------------
+
+@pytest.mark.xfail(strict=True, reason="stiefelsym.ir.named smuggles a method-aware Fraction subclass")
+@pytest.mark.parametrize("method", ["exact", "float", "free"])
+def test_named_constant_cannot_tell_the_method(method):
+    assert _v("named_constant.py", method, "adv-named-shifty") not in PASSING
+
+
+# -- F. engine state changed by the claims file (catalog claims included) ---------------------------
+
+@pytest.mark.xfail(strict=True, reason="primitive() overwrites an engine primitive of the same qualified name")
+def test_claims_file_cannot_change_a_catalog_verdict():
+    assert _v("primitive_override.py", "modular", "magnetic-form-kirillov-kostant",
+              ids=("magnetic-form-kirillov-kostant",)) != "fails"
+
+
+@pytest.mark.xfail(strict=True, reason="native.register_backend from a claims file replaces GF(p) zero tests")
+def test_registered_backend_cannot_pass_a_false_claim():
+    assert _v("registered_backend.py", "modular", "adv-backend") not in PASSING
+
+
+# -- G. results files that `stiefelsym check` accepts -----------------------------------------------
+
+@pytest.mark.xfail(strict=True, reason="check re-derives free records only when they say 'proved'")
+def test_check_rejects_a_free_record_edited_to_fails(tmp_path):
+    out = tmp_path / "rep"
+    r = cli("verify", "--claims", str(ROOT / "examples" / "my_claims.py"), "--method", "free",
+            "--report-dir", str(out))
+    assert r.returncode == 0, r.stdout + r.stderr
+    payload = json.loads((out / "results.json").read_text())
+    for rec in payload["results"]:
+        assert rec["verdict"] == "proved"
+        rec["verdict"], rec["certificate_data"] = "fails", None
+    (out / "forged.json").write_text(json.dumps(payload))
+    assert cli("check", str(out / "forged.json")).returncode == 1
+
+
+@pytest.mark.xfail(strict=True, reason="check loads the claims files a results file names: they override an "
+                   "engine primitive and register the catalog claim; the digest names the primitive only")
+def test_check_rejects_a_catalog_verdict_made_by_a_claims_file(tmp_path):
+    out = tmp_path / "rep"
+    cli("verify", "magnetic-form-kirillov-kostant", "--claims", str(HERE / "primitive_override_check.py"),
+        "--size", "3,2", "--method", "modular", "--report-dir", str(out))
+    payload = json.loads((out / "results.json").read_text())
+    assert [r["verdict"] for r in payload["results"]] == ["fails"]     # the true catalog claim
+    assert cli("check", str(out / "results.json")).returncode == 1
