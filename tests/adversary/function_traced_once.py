@@ -4,7 +4,7 @@ two uses, and the second use silently reuses the first one's ``fn`` node."""
 from stiefelsym import admissible, claim
 
 
-def H(t, k=[1]):
+def H(t, k=[1]):  # noqa: B006 (the mutable default is the trick)
     """k·tr(XᵀAX)/2 + tr(PᵀP)/2, k read when H is called."""
     return t.tr(t.X.T @ t.A @ t.X) * k[0] / 2 + t.tr(t.P.T @ t.P) / 2
 
