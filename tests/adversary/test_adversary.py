@@ -168,3 +168,19 @@ def test_poisoned_float_range_does_not_make_numeric():
 def test_poisoned_digest_does_not_pass_at_n4(method):
     assert _v("graph_cache_poisoned.py", method, "adv-poisoned-digest", size="4,2",
               ids=("adv-poisoned-digest",)) not in PASSING
+
+
+@pytest.mark.xfail(strict=True, reason="check compares a fixed-size record's verdict and digest only: its evidence "
+                   "(false-pass bound, chart, certificate text, expected flag) is rendered by report unchecked")
+def test_check_rejects_a_record_whose_evidence_was_edited(tmp_path):
+    out = tmp_path / "rep"
+    r = cli("verify", "my-prep", "--claims", str(ROOT / "examples" / "my_claims.py"), "--size", "3,2",
+            "--method", "modular", "--report-dir", str(out))
+    assert r.returncode == 0, r.stdout + r.stderr
+    payload = json.loads((out / "results.json").read_text())
+    rec = payload["results"][0]
+    assert rec["verdict"] == "checked"
+    rec.update(false_pass_bound=1e-300, reductions=["symbolic (exact, identically zero)"],
+               certificate="identically zero (symbolic)", expected=False)
+    (out / "forged.json").write_text(json.dumps(payload))
+    assert cli("check", str(out / "forged.json")).returncode == 1
