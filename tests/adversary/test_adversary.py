@@ -184,3 +184,10 @@ def test_check_rejects_a_record_whose_evidence_was_edited(tmp_path):
                certificate="identically zero (symbolic)", expected=False)
     (out / "forged.json").write_text(json.dumps(payload))
     assert cli("check", str(out / "forged.json")).returncode == 1
+
+
+# -- K. absorption with an exact constant inside the float range --------------------------------------
+
+@pytest.mark.xfail(strict=True, reason="float64 absorbs X into 10^20·X; the residual is 0 within its error bound")
+def test_absorbed_residual_is_not_numeric():
+    assert _v("float_absorption_exact_constant.py", "float", "adv-absorbed-int") not in PASSING
