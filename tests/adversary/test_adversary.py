@@ -191,3 +191,11 @@ def test_check_rejects_a_record_whose_evidence_was_edited(tmp_path):
 @pytest.mark.xfail(strict=True, reason="float64 absorbs X into 10^20·X; the residual is 0 within its error bound")
 def test_absorbed_residual_is_not_numeric():
     assert _v("float_absorption_exact_constant.py", "float", "adv-absorbed-int") not in PASSING
+
+
+# -- L. the method's live scene is reachable from claim code while it is traced ------------------------
+
+@pytest.mark.xfail(strict=True, reason="call_claim traces with the method's scene alive: gc.get_objects() finds it")
+@pytest.mark.parametrize("method", ["exact", "modular", "rational"])
+def test_claim_code_cannot_find_the_live_scene(method):
+    assert _v("live_scene_by_gc.py", method, "adv-live-scene") not in PASSING
