@@ -205,3 +205,13 @@ def test_claim_code_cannot_find_the_live_scene(method):
 @pytest.mark.parametrize("method", ["exact", "modular", "rational"])
 def test_claim_code_cannot_read_the_method_from_frames(method):
     assert _v("method_by_frames.py", method, "adv-frames") not in PASSING
+
+
+@pytest.mark.xfail(strict=True, reason="check traces inside check_results: the frames tell it too")
+def test_check_rejects_a_verdict_obtained_by_reading_frames(tmp_path):
+    out = tmp_path / "rep"
+    cli("verify", "--claims", str(HERE / "method_by_frames.py"), "--size", "3,2", "--method", "modular",
+        "--report-dir", str(out))
+    payload = json.loads((out / "results.json").read_text())
+    assert [r["verdict"] for r in payload["results"]] == ["checked"]      # X = 0, false
+    assert cli("check", str(out / "results.json")).returncode == 1
