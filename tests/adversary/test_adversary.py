@@ -215,3 +215,9 @@ def test_check_rejects_a_verdict_obtained_by_reading_frames(tmp_path):
     payload = json.loads((out / "results.json").read_text())
     assert [r["verdict"] for r in payload["results"]] == ["checked"]      # X = 0, false
     assert cli("check", str(out / "results.json")).returncode == 1
+
+
+@pytest.mark.xfail(strict=True, reason="a claims file is imported into the engine's process and may rewrite it")
+@pytest.mark.parametrize("method", ["exact", "modular", "free"])
+def test_patched_evaluator_cannot_pass_a_false_claim(method):
+    assert _v("evaluator_patched.py", method, "adv-evaluator") not in PASSING
