@@ -1,0 +1,223 @@
+"""Routes by which a claims file obtains a wrong verdict (adversarial review).  Each test asserts the
+CORRECT outcome; each fails today, hence ``xfail(strict=True)``: when a route is closed its test
+passes and the strict xfail turns red, to be unmarked.  Every run is a fresh process (the routes
+change process-wide state: primitives, backends, the graph cache)."""
+import json
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+HERE = Path(__file__).resolve().parent
+ROOT = HERE.parents[1]
+PASSING = ("proved", "checked", "numeric")
+#: "claim (n,r) method: verdict" or "claim all n, r free: verdict" (auto prints the method it chose)
+LINE = re.compile(r"^(\S+) (?:\(\d+,\d+\)|all n, r) \w+: (\w+)")
+
+
+def cli(*args, cwd=ROOT):
+    return subprocess.run([sys.executable, "-m", "stiefelsym", *args], cwd=cwd, capture_output=True,
+                          text=True, timeout=300)
+
+
+def verdicts(claims_file, method, size="3,2", ids=()):
+    """{claim id: verdict} of one `stiefelsym verify` run."""
+    args = ["verify", *ids, "--claims", str(HERE / claims_file), "--method", method]
+    if method != "free":
+        args += ["--size", size]
+    out = cli(*args).stdout
+    found = {}
+    for line in out.splitlines():
+        m = LINE.match(line)
+        if m:
+            found[m.group(1)] = m.group(2)
+    return found
+
+
+def _v(claims_file, method, cid, size="3,2", ids=()):
+    v = verdicts(claims_file, method, size, ids)
+    assert cid in v, v
+    return v[cid]
+
+
+# -- A. the dimension-free proof compares only two fixed sizes -----------------------------------
+
+@pytest.mark.xfail(strict=True, reason="free method compares the symbolic graph with the first size and the "
+                   "first n >= 3 only; a claim reading s.n._size.value differs at n = 4")
+def test_size_branch_is_not_proved_for_all_sizes():
+    assert _v("size_branch_free.py", "free", "adv-size-branch") not in PASSING
+
+
+# -- B. a primitive of the claims file runs its Python at evaluation time --------------------------
+
+@pytest.mark.xfail(strict=True, reason="stiefelsym.ir.primitive lets claim code run on live values")
+@pytest.mark.parametrize("method", ["modular", "rational", "float", "free"])
+def test_user_primitive_cannot_tell_the_method(method):
+    assert _v("user_primitive_method.py", method, "adv-primitive-method") not in PASSING
+
+
+# -- C. a function handed to the scene is traced once per object -----------------------------------
+
+@pytest.mark.xfail(strict=True, reason="t.function caches by id(f): a changed default/closure is not re-traced")
+@pytest.mark.parametrize("method", ["exact", "modular", "float"])
+def test_function_changed_between_uses_is_not_proved(method):
+    assert _v("function_traced_once.py", method, "adv-function-once") not in PASSING
+
+
+@pytest.mark.xfail(strict=True, reason="t.function caches by id(f): a true claim fails")
+@pytest.mark.parametrize("method", ["exact", "modular"])
+def test_function_changed_between_uses_true_claim_does_not_fail(method):
+    assert _v("function_traced_once_true_fails.py", method, "adv-function-once-true") != "fails"
+
+
+# -- D. the graph cache is keyed by the claim's callable (its __hash__/__eq__) ----------------------
+
+@pytest.mark.xfail(strict=True, reason="_GRAPHS keyed by func: a callable equal to another claim's function "
+                   "gets that claim's graph")
+@pytest.mark.parametrize("method", ["exact", "modular", "free"])
+def test_cache_collision_does_not_prove_a_false_claim(method):
+    assert _v("graph_cache_collision.py", method, "adv-cache-false") not in PASSING
+
+
+# -- E. named(): any object of the claim's reaches the methods' arithmetic --------------------------
+
+@pytest.mark.xfail(strict=True, reason="stiefelsym.ir.named smuggles a method-aware Fraction subclass")
+@pytest.mark.parametrize("method", ["exact", "float", "free"])
+def test_named_constant_cannot_tell_the_method(method):
+    assert _v("named_constant.py", method, "adv-named-shifty") not in PASSING
+
+
+# -- F. engine state changed by the claims file (catalog claims included) ---------------------------
+
+@pytest.mark.xfail(strict=True, reason="primitive() overwrites an engine primitive of the same qualified name")
+def test_claims_file_cannot_change_a_catalog_verdict():
+    assert _v("primitive_override.py", "modular", "magnetic-form-kirillov-kostant",
+              ids=("magnetic-form-kirillov-kostant",)) != "fails"
+
+
+@pytest.mark.xfail(strict=True, reason="native.register_backend from a claims file replaces GF(p) zero tests")
+def test_registered_backend_cannot_pass_a_false_claim():
+    assert _v("registered_backend.py", "modular", "adv-backend") not in PASSING
+
+
+# -- G. results files that `stiefelsym check` accepts -----------------------------------------------
+
+@pytest.mark.xfail(strict=True, reason="check re-derives free records only when they say 'proved'")
+def test_check_rejects_a_free_record_edited_to_fails(tmp_path):
+    out = tmp_path / "rep"
+    r = cli("verify", "--claims", str(ROOT / "examples" / "my_claims.py"), "--method", "free",
+            "--report-dir", str(out))
+    assert r.returncode == 0, r.stdout + r.stderr
+    payload = json.loads((out / "results.json").read_text())
+    for rec in payload["results"]:
+        assert rec["verdict"] == "proved"
+        rec["verdict"], rec["certificate_data"] = "fails", None
+    (out / "forged.json").write_text(json.dumps(payload))
+    assert cli("check", str(out / "forged.json")).returncode == 1
+
+
+@pytest.mark.xfail(strict=True, reason="check loads the claims files a results file names: they override an "
+                   "engine primitive and register the catalog claim; the digest names the primitive only")
+def test_check_rejects_a_catalog_verdict_made_by_a_claims_file(tmp_path):
+    out = tmp_path / "rep"
+    cli("verify", "magnetic-form-kirillov-kostant", "--claims", str(HERE / "primitive_override_check.py"),
+        "--size", "3,2", "--method", "modular", "--report-dir", str(out))
+    payload = json.loads((out / "results.json").read_text())
+    assert [r["verdict"] for r in payload["results"]] == ["fails"]     # the true catalog claim
+    assert cli("check", str(out / "results.json")).returncode == 1
+
+
+# -- H. coordinates read through an engine value (opaque sides) with a product and a trace -----------
+
+@pytest.mark.xfail(strict=True, reason="coordinate_reads records entry/mat/block only: tr(E11ᵀX) with E11 from "
+                   "an engine primitive keeps the equivariant chart")
+@pytest.mark.parametrize("method", ["exact", "auto"])
+def test_coordinate_read_through_an_engine_value_is_seen(method):
+    assert _v("coordinate_via_engine_units.py", method, "adv-units") not in PASSING
+
+
+# -- I. digest collisions: an engine name is hashed unescaped ---------------------------------------
+
+@pytest.mark.xfail(strict=True, reason="_encode writes Named qualnames unescaped: distinct graphs, one digest")
+def test_distinct_graphs_have_distinct_digests():
+    code = (
+        "from stiefelsym.claims import load_claims_file\n"
+        "from stiefelsym.ir import trace\n"
+        "from stiefelsym.scene import REALIZATIONS\n"
+        f"c = load_claims_file({str(HERE / 'digest_collision.py')!r}).get('adv-digest-collision')\n"
+        "cons = (REALIZATIONS['standard'].name, REALIZATIONS['standard'].build)\n"
+        "a, b = trace(c.func, None, None, cons), trace(c.func, 3, 2, cons)\n"
+        "print(a.args != b.args, a.digest() == b.digest())\n")
+    out = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True, timeout=120)
+    differ, same_digest = out.stdout.split()
+    assert differ == "True"
+    assert same_digest == "False"
+
+
+# -- J. claim code writes the graph's cache of derived data (s._t.g.cache) --------------------------
+
+@pytest.mark.xfail(strict=True, reason="s._t.g.cache['wide'] = [] hides a constant outside the float range")
+def test_poisoned_float_range_does_not_make_numeric():
+    assert _v("graph_cache_poisoned.py", "float", "adv-poisoned-wide", ids=("adv-poisoned-wide",)) not in PASSING
+
+
+@pytest.mark.xfail(strict=True, reason="s._t.g.cache['digest'] forged: the graph at n = 4 passes as the symbolic one")
+@pytest.mark.parametrize("method", ["exact", "modular", "float", "free"])
+def test_poisoned_digest_does_not_pass_at_n4(method):
+    assert _v("graph_cache_poisoned.py", method, "adv-poisoned-digest", size="4,2",
+              ids=("adv-poisoned-digest",)) not in PASSING
+
+
+@pytest.mark.xfail(strict=True, reason="check compares a fixed-size record's verdict and digest only: its evidence "
+                   "(false-pass bound, chart, certificate text, expected flag) is rendered by report unchecked")
+def test_check_rejects_a_record_whose_evidence_was_edited(tmp_path):
+    out = tmp_path / "rep"
+    r = cli("verify", "my-prep", "--claims", str(ROOT / "examples" / "my_claims.py"), "--size", "3,2",
+            "--method", "modular", "--report-dir", str(out))
+    assert r.returncode == 0, r.stdout + r.stderr
+    payload = json.loads((out / "results.json").read_text())
+    rec = payload["results"][0]
+    assert rec["verdict"] == "checked"
+    rec.update(false_pass_bound=1e-300, reductions=["symbolic (exact, identically zero)"],
+               certificate="identically zero (symbolic)", expected=False)
+    (out / "forged.json").write_text(json.dumps(payload))
+    assert cli("check", str(out / "forged.json")).returncode == 1
+
+
+# -- K. absorption with an exact constant inside the float range --------------------------------------
+
+@pytest.mark.xfail(strict=True, reason="float64 absorbs X into 10^20·X; the residual is 0 within its error bound")
+def test_absorbed_residual_is_not_numeric():
+    assert _v("float_absorption_exact_constant.py", "float", "adv-absorbed-int") not in PASSING
+
+
+# -- L. the method's live scene is reachable from claim code while it is traced ------------------------
+
+@pytest.mark.xfail(strict=True, reason="call_claim traces with the method's scene alive: gc.get_objects() finds it")
+@pytest.mark.parametrize("method", ["exact", "modular", "rational"])
+def test_claim_code_cannot_find_the_live_scene(method):
+    assert _v("live_scene_by_gc.py", method, "adv-live-scene") not in PASSING
+
+
+@pytest.mark.xfail(strict=True, reason="the claim is traced inside the method's call: its frames name the method")
+@pytest.mark.parametrize("method", ["exact", "modular", "rational"])
+def test_claim_code_cannot_read_the_method_from_frames(method):
+    assert _v("method_by_frames.py", method, "adv-frames") not in PASSING
+
+
+@pytest.mark.xfail(strict=True, reason="check traces inside check_results: the frames tell it too")
+def test_check_rejects_a_verdict_obtained_by_reading_frames(tmp_path):
+    out = tmp_path / "rep"
+    cli("verify", "--claims", str(HERE / "method_by_frames.py"), "--size", "3,2", "--method", "modular",
+        "--report-dir", str(out))
+    payload = json.loads((out / "results.json").read_text())
+    assert [r["verdict"] for r in payload["results"]] == ["checked"]      # X = 0, false
+    assert cli("check", str(out / "results.json")).returncode == 1
+
+
+@pytest.mark.xfail(strict=True, reason="a claims file is imported into the engine's process and may rewrite it")
+@pytest.mark.parametrize("method", ["exact", "modular", "free"])
+def test_patched_evaluator_cannot_pass_a_false_claim(method):
+    assert _v("evaluator_patched.py", method, "adv-evaluator") not in PASSING
