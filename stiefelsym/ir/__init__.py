@@ -32,7 +32,9 @@ def compile_claim(func: Callable, n: int | None, r: int | None, constraints: tup
     """The graph of a claim's function: traced once with symbolic sizes when it can be (then that one
     graph is the claim at every size: every fixed-size method and the dimension-free method evaluate
     the same graph), otherwise at (n, r).  Each graph is traced twice; a claim whose two graphs
-    differ is refused, and so is a claim whose trace met a refusal, even one it caught."""
+    differ is refused, and so is a claim whose trace met a refusal, even one it caught.  A claim
+    whose graph at (n, r) is not its graph with symbolic sizes is refused at (n, r) (and the
+    dimension-free method compares the two at every size the claim is stated for)."""
     free = _compile(func, None, None, constraints)
     if isinstance(free, Graph):
         if n is not None:
@@ -61,11 +63,11 @@ def _compile(func: Callable, n: int | None, r: int | None, constraints: tuple[st
              twice: bool = True) -> Any:
     """The graph, or the exception that refused it (both cached per process); traced twice and
     compared, or once where it is only compared with the graph of symbolic sizes (which was)."""
-    key = (func, n, r, constraints[0])
-    g = _GRAPHS.get(key)
-    if g is not None:
+    key = (id(func), n, r, constraints[0])     # by identity: a callable's own __eq__ is never asked
+    hit = _GRAPHS.get(key)
+    if hit is not None and hit[0] is func:
         _GRAPHS.move_to_end(key)
-        return g
+        return hit[1]
     try:
         first = trace(func, n, r, constraints)
         _check_refusals(first)
@@ -77,7 +79,7 @@ def _compile(func: Callable, n: int | None, r: int | None, constraints: tuple[st
         out: Any = first
     except Exception as exc:      # noqa: BLE001 - the claim's own failure, reported by the caller
         out = exc
-    _GRAPHS[key] = out
+    _GRAPHS[key] = (func, out)
     while len(_GRAPHS) > GRAPH_CACHE_SIZE:
         _GRAPHS.popitem(last=False)
     return out

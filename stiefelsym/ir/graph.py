@@ -84,7 +84,7 @@ def _encode(a: Any) -> str:
     if t is Size:
         return f"<{a.k}{a.d}>"
     if t is Named:
-        return f"@{a.qualname}"
+        return f"@{a.qualname!r}"     # quoted: a name cannot pose as more of the line
     if t is tuple:
         return "(" + ",".join(_encode(x) for x in a) + ")"
     if t is Fraction:
@@ -143,6 +143,13 @@ class Graph:
             h.update(b"\n")
         d = self.cache["digest"] = h.hexdigest()
         return d
+
+    def sealed(self) -> "Graph":
+        """A copy of the graph that no object of the trace refers to (claim code that kept a handle on
+        the graph being traced cannot change this one or its cache)."""
+        g = Graph()
+        g.__setstate__((list(self.ops), list(self.args), self.output, list(self.refusals), self.fns, self.sizes))
+        return g
 
     def refs(self, i: int):
         """The nodes node ``i`` reads."""

@@ -764,7 +764,7 @@ class Trace:
         self.g.sizes = None if n is None else (n, r)
         self._like: dict = {}
         self.constraints = constraints
-        self._functions: dict[int, tuple[Any, Ref, Any]] = {}
+        self._functions: dict[int, tuple[Any, Ref, Any, Any]] = {}
 
     # -- nodes ----------------------------------------------------------------------------------
     def new(self, op: str, args: tuple, kind: str, shape: tuple = (None, None)) -> Tracer:
@@ -823,6 +823,18 @@ class Trace:
             return self.refuse("a function of the scene is expected")
         hit = self._functions.get(id(f))
         if hit is not None and hit[0] is f and not getattr(self, "_like", None):
+            # the same function object again: it must trace to the same body (its closure, defaults or
+            # globals may have changed since; then it is another function, and it is refused)
+            k, arity, body = self.g.args[hit[1].i]
+            scene = TraceScene(self, self.g.add("scene", (k,)))
+            like = hit[3]
+            if like is not None:
+                extra = [self.mirror(like, self.g.add("param", (k, 1, self.arg(like))))]
+            else:
+                extra = [self.new("param", (k, i), ANY) for i in range(1, arity)]
+            if self.structure(f(scene, *extra)) != body:
+                return self.refuse("a function that traces to another graph when it is used again (its state "
+                                   "changed between two uses)")
             return hit[1], hit[2]
         if arity is None:
             try:
@@ -842,7 +854,7 @@ class Trace:
         out = f(scene, *extra)
         body = self.structure(out)
         ref = self.g.add("fn", (k, arity, body))
-        self._functions[id(f)] = (f, ref, out)
+        self._functions[id(f)] = (f, ref, out, like)
         return ref, out
 
     # -- structured values ------------------------------------------------------------------------
@@ -902,4 +914,4 @@ def trace(func: Callable, n: int | None, r: int | None, constraints: tuple[str, 
         t.g.output = t.g.add("dict", (tuple(out), tuple(t.structure(v) for v in out.values())))
     finally:
         _ACTIVE.pop()
-    return t.g
+    return t.g.sealed()

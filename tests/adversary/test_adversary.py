@@ -44,8 +44,6 @@ def _v(claims_file, method, cid, size="3,2", ids=()):
 
 # -- A. the dimension-free proof compares only two fixed sizes -----------------------------------
 
-@pytest.mark.xfail(strict=True, reason="free method compares the symbolic graph with the first size and the "
-                   "first n >= 3 only; a claim reading s.n._size.value differs at n = 4")
 def test_size_branch_is_not_proved_for_all_sizes():
     assert _v("size_branch_free.py", "free", "adv-size-branch") not in PASSING
 
@@ -60,13 +58,11 @@ def test_user_primitive_cannot_tell_the_method(method):
 
 # -- C. a function handed to the scene is traced once per object -----------------------------------
 
-@pytest.mark.xfail(strict=True, reason="t.function caches by id(f): a changed default/closure is not re-traced")
 @pytest.mark.parametrize("method", ["exact", "modular", "float"])
 def test_function_changed_between_uses_is_not_proved(method):
     assert _v("function_traced_once.py", method, "adv-function-once") not in PASSING
 
 
-@pytest.mark.xfail(strict=True, reason="t.function caches by id(f): a true claim fails")
 @pytest.mark.parametrize("method", ["exact", "modular"])
 def test_function_changed_between_uses_true_claim_does_not_fail(method):
     assert _v("function_traced_once_true_fails.py", method, "adv-function-once-true") != "fails"
@@ -74,8 +70,6 @@ def test_function_changed_between_uses_true_claim_does_not_fail(method):
 
 # -- D. the graph cache is keyed by the claim's callable (its __hash__/__eq__) ----------------------
 
-@pytest.mark.xfail(strict=True, reason="_GRAPHS keyed by func: a callable equal to another claim's function "
-                   "gets that claim's graph")
 @pytest.mark.parametrize("method", ["exact", "modular", "free"])
 def test_cache_collision_does_not_prove_a_false_claim(method):
     assert _v("graph_cache_collision.py", method, "adv-cache-false") not in PASSING
@@ -140,7 +134,6 @@ def test_coordinate_read_through_an_engine_value_is_seen(method):
 
 # -- I. digest collisions: an engine name is hashed unescaped ---------------------------------------
 
-@pytest.mark.xfail(strict=True, reason="_encode writes Named qualnames unescaped: distinct graphs, one digest")
 def test_distinct_graphs_have_distinct_digests():
     code = (
         "from stiefelsym.claims import load_claims_file\n"
@@ -158,12 +151,10 @@ def test_distinct_graphs_have_distinct_digests():
 
 # -- J. claim code writes the graph's cache of derived data (s._t.g.cache) --------------------------
 
-@pytest.mark.xfail(strict=True, reason="s._t.g.cache['wide'] = [] hides a constant outside the float range")
 def test_poisoned_float_range_does_not_make_numeric():
     assert _v("graph_cache_poisoned.py", "float", "adv-poisoned-wide", ids=("adv-poisoned-wide",)) not in PASSING
 
 
-@pytest.mark.xfail(strict=True, reason="s._t.g.cache['digest'] forged: the graph at n = 4 passes as the symbolic one")
 @pytest.mark.parametrize("method", ["exact", "modular", "float", "free"])
 def test_poisoned_digest_does_not_pass_at_n4(method):
     assert _v("graph_cache_poisoned.py", method, "adv-poisoned-digest", size="4,2",
