@@ -378,6 +378,9 @@ def load_claims_file(path: str | Path) -> Registry:
     if other and Path(other).resolve() != p.resolve():   # two files of the same name: keep both modules
         name += "_" + hashlib.sha1(str(p.resolve()).encode("utf-8", "surrogateescape")).hexdigest()[:8]
 
+    from .ir.seal import EngineChanged, seal, verify
+    seal()      # the engine as it is before the file runs (see stiefelsym.ir.seal)
+
     def loader():
         spec = importlib.util.spec_from_file_location(name, p)
         if spec is None or spec.loader is None:
@@ -396,7 +399,8 @@ def load_claims_file(path: str | Path) -> Registry:
             raise CatalogError(f"{p}: {type(exc).__name__}: {exc}") from exc
     try:
         reg = _collect(loader)
-    except (ValueError, TypeError) as exc:
+        verify(f"importing {p}")
+    except (ValueError, TypeError, EngineChanged) as exc:
         raise CatalogError(f"{p}: {exc}") from exc
     if not len(reg):
         raise CatalogError(f"{p}: defines no claims (use the @claim decorator)")

@@ -30,6 +30,7 @@ from . import costmodel
 from .costmodel import BudgetError as BudgetError  # the methods raise it (re-exported)
 from .ir import compile_claim
 from .ir.evaluate import evaluate
+from .ir.seal import verify as verify_engine
 from .ir.passes import BLOCK_SPLITTING, FLOAT_EXPONENT_LIMIT, coordinate_reads, outside_float_range
 from .scene import REALIZATIONS
 from .fields import (PRIME_LOW, PRIMES_IN_RANGE_LOWER, ConstantDegenerate, DegenerateError, DegreeField,
@@ -183,6 +184,7 @@ def call_claim(func: Callable, scene: Any) -> dict[str, Any]:
                 continue    # the free algebra keeps a block matrix as its blocks, each for every n, r
             if inv & watched_spaces:
                 tracker.touch(what)
+    verify_engine("before an evaluation")
     checks = evaluate(g, scene)
     if not isinstance(checks, dict) or not checks:
         raise TypeError("a claim must return a non-empty dict of named checks")

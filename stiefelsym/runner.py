@@ -107,6 +107,9 @@ def _guarded(claim: Claim, size: Size | None, method: str, seed: int, func: Call
     replaces the worker)."""
     options = {"hard": hard_case(hard)} if hard else None
     try:
+        # the claim is traced before any method builds its scene or runs (the graph is cached for the
+        # method): claim code never runs while a scene of a method is alive
+        graph_digest(claim, size, func)
         res = _dispatch(claim, size, method, seed, func, options, in_worker, timeout)
         if not res.digest:
             res.digest = graph_digest(claim, size, func)

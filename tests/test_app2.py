@@ -436,7 +436,6 @@ def test_float_flows_agree_within_their_error_bounds(monkeypatch):
     from stiefelsym.fields import FloatField
     from stiefelsym.scene import Scene
     s = Scene(4, 2, FloatField(), rng=random.Random(SEED))
-    pairs = [("X", "P"), ("Y", "Q")]
     flows = []
     for reverse in (True, False):
         monkeypatch.setattr(scene_mod, "REVERSE_GRADIENTS", reverse)

@@ -23,6 +23,7 @@ import inspect
 from fractions import Fraction
 from typing import Any, Callable
 
+from .seal import refuse_registration
 from .graph import Graph, Named, Ref, Size
 from .statements import Count, Rank
 
@@ -49,6 +50,7 @@ def primitive(f: Callable | None = None, *, returns: Any = None, like: dict[str,
     its second parameter has (a point of a phase space of the caller's)."""
     if f is None:
         return lambda g: primitive(g, returns=returns, like=like)
+    refuse_registration("an engine step (primitive)")
     qual = f"{f.__module__}.{f.__qualname__}"
     PRIMITIVES[qual] = f
     sig = inspect.signature(f)
@@ -71,6 +73,7 @@ def primitive(f: Callable | None = None, *, returns: Any = None, like: dict[str,
 
 def named(qualname: str, obj: Any) -> Any:
     """Register an engine constant (an operator space, an engine function) a claim may pass on."""
+    refuse_registration("an engine constant (named)")
     _NAMED[id(obj)] = (qualname, obj)
     PRIMITIVES.setdefault(qualname, obj)
     return obj

@@ -1,0 +1,138 @@
+"""The engine sealed against claims files: what a user's claims file may not change.
+
+A claims file is Python: importing it, and tracing its claims, runs its code in
+the engine's process, where nothing can be made unreachable.  What can be made
+certain is that a change is *seen*.  When the first user claims file is loaded,
+:func:`seal` imports every module a verdict depends on and records a
+fingerprint of the engine: every attribute of those modules (by identity), the
+code of every function and method, and the contents of the registries a claim
+could use to reach a method (engine steps, engine constants, whole-matrix
+backends, the evaluator's operations), with the top-level attributes of the
+numerical libraries the backends call.  After the file is imported, and before
+every evaluation of a graph, :func:`verify` computes the fingerprint again; a
+difference makes the file's loading fail (exit 2) or the run an ``error``.
+After sealing, the engine's registries take no new entries
+(:func:`stiefelsym.ir.primitive`, :func:`stiefelsym.ir.named`, backends).
+
+The catalog of the paper is not sealed against (it is part of the reviewed
+source); a run that loads no claims file pays nothing.
+"""
+from __future__ import annotations
+
+import hashlib
+import importlib
+import pkgutil
+import sys
+import types
+from typing import Any
+
+#: modules a verdict does not depend on (renderers, the CLI, optional integrations): not imported at
+#: sealing time (a claims file that changes one of them changes no verdict)
+_NOT_VERDICT = ("cli", "cli_", "notebook", "pytest_plugin", "distributed", "_dask_plugin", "speed", "costfit",
+                "report", "latex", "flows_report", "mutate", "discover", "__main__", "proofs")
+#: third-party modules whose top-level attributes the backends call
+_LIBRARIES = ("numpy", "flint", "symengine", "fractions", "operator", "math", "mpmath", "random", "hashlib")
+#: registries (module, attribute) whose contents are fingerprinted
+_REGISTRIES = (("stiefelsym.ir.trace", "PRIMITIVES"), ("stiefelsym.ir.trace", "_NAMED"),
+               ("stiefelsym.ir.trace", "VALUE_ATTRS"), ("stiefelsym.native", "_REGISTERED"),
+               ("stiefelsym.methods", "_REGISTERED"), ("stiefelsym.ir.evaluate", "_ARITH"))
+
+
+#: module attributes watched: code, classes, modules and public constants (a tolerance, a limit);
+#: private values, flags and containers are the engine's state and caches (the registries below are
+#: watched by their contents)
+_CODE = (types.FunctionType, staticmethod, classmethod, property, types.BuiltinFunctionType)
+_WATCHED = _CODE + (type, types.ModuleType)
+_CONSTANTS = (int, float, complex, str, bytes)
+
+
+class EngineChanged(RuntimeError):
+    """A claims file changed the engine (a module attribute, a function's code, a registry)."""
+
+
+_STATE: dict[str, Any] = {"modules": None, "print": None}
+
+
+def sealed() -> bool:
+    return _STATE["modules"] is not None
+
+
+def _verdict_modules() -> list[str]:
+    import stiefelsym
+    names = []
+    for info in pkgutil.walk_packages(stiefelsym.__path__, "stiefelsym."):
+        last = info.name.rsplit(".", 1)[-1]
+        if any(last == x or (x.endswith("_") and last.startswith(x)) for x in _NOT_VERDICT):
+            continue
+        if ".proofs" in info.name:
+            continue
+        names.append(info.name)
+    return names
+
+
+def _fingerprint(modules: list[str]) -> str:
+    h = hashlib.sha256()
+
+    def code_of(v: Any) -> str:
+        # only true functions are looked into (an arbitrary object's attributes may compute, import or
+        # change things when they are read)
+        if isinstance(v, (staticmethod, classmethod)):
+            v = v.__func__
+        if not isinstance(v, types.FunctionType):
+            return ""
+        return f"{id(v.__code__)}/{id(v.__defaults__)}/{id(v.__kwdefaults__)}"
+
+    for name in modules:
+        mod = sys.modules.get(name)
+        if mod is None:
+            h.update(f"{name}:absent\n".encode())
+            continue
+        for attr, v in list(vars(mod).items()):
+            if not (isinstance(v, _WATCHED) or (isinstance(v, _CONSTANTS) and type(v) is not bool
+                                                and not attr.startswith("_"))):
+                continue            # caches, flags and other state the engine changes as it runs
+            h.update(f"{name}.{attr}={id(v)}:{code_of(v)}\n".encode())
+            if isinstance(v, type) and getattr(v, "__module__", None) == name:
+                for k, w in list(vars(v).items()):
+                    if isinstance(w, _CODE):
+                        h.update(f"{name}.{attr}.{k}={id(w)}:{code_of(w)}\n".encode())
+    for name, attr in _REGISTRIES:
+        reg = getattr(sys.modules.get(name), attr, None)
+        if isinstance(reg, dict):
+            for k, v in list(reg.items()):
+                h.update(f"{name}.{attr}[{k!r}]={id(v)}\n".encode())
+    ops = getattr(getattr(sys.modules.get("stiefelsym.ir.evaluate"), "Evaluator", None), "_ops", {})
+    for k, v in list(ops.items()):
+        h.update(f"_ops[{k!r}]={id(v)}:{code_of(v)}\n".encode())
+    return h.hexdigest()
+
+
+def seal() -> None:
+    """Record the engine's fingerprint (once per process; before the first user claims file runs)."""
+    if sealed():
+        return
+    names = _verdict_modules()
+    for name in names:
+        importlib.import_module(name)
+    for name in names:              # modules imported on first use: imported now (see stiefelsym._lazy)
+        for attr, v in list(vars(sys.modules[name]).items()):
+            if type(v).__name__ == "_LazyModule":
+                getattr(v, "__name__", None)
+    modules = names + [m for m in _LIBRARIES if m in sys.modules]
+    _STATE["print"] = _fingerprint(modules)
+    _STATE["modules"] = modules
+
+
+def verify(when: str) -> None:
+    """Raise :class:`EngineChanged` when the engine is not what it was when sealed."""
+    if not sealed():
+        return
+    if _fingerprint(_STATE["modules"]) != _STATE["print"]:
+        raise EngineChanged(f"the engine was changed by claim code ({when}): a claims file may use the public "
+                            "API, not replace engine functions, steps, constants or backends; no verdict is given")
+
+
+def refuse_registration(what: str) -> None:
+    """Registries take no entry once sealed (claims files may not add engine steps or constants)."""
+    if sealed():
+        raise EngineChanged(f"{what} is registered by the engine's own modules, not by a claims file")
