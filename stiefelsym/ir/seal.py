@@ -24,6 +24,7 @@ import importlib
 import pkgutil
 import sys
 import types
+from pathlib import Path
 from typing import Any
 
 #: modules a verdict does not depend on (renderers, the CLI, optional integrations): not imported at
@@ -58,9 +59,9 @@ def sealed() -> bool:
 
 
 def _verdict_modules() -> list[str]:
-    import stiefelsym
     names = []
-    for info in pkgutil.walk_packages(stiefelsym.__path__, "stiefelsym."):
+    root = str(Path(__file__).resolve().parents[1])     # the engine's package folder
+    for info in pkgutil.walk_packages([root], "stiefelsym."):
         last = info.name.rsplit(".", 1)[-1]
         if any(last == x or (x.endswith("_") and last.startswith(x)) for x in _NOT_VERDICT):
             continue
