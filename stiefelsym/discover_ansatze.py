@@ -11,6 +11,7 @@ from typing import Any, Callable
 from .claims import Size
 from .discover import CorrectionAnsatz, Factor, _catalog_module, sandwich_terms
 from .matrix import comm
+from .systems import derivative
 
 ONE = Fraction(1)
 
@@ -21,15 +22,18 @@ def _outer(text: str, latex: str, key: str, transpose: bool = False) -> Factor:
     return Factor(text, latex, lambda s, w: w[key])
 
 
-def _middles(s_inverse: tuple[str, str, Callable[[Any], Any]] | None = None) -> list[Factor]:
-    """The middle factors M of UᵀMV: I_n, A, λI_n, λA, the printed resolvent (if any) and (λI_n − A)⁻¹."""
-    out = [Factor("", "", lambda s: s.In),
-           Factor("A", "A", lambda s: s.A),
-           Factor("", "", lambda s: s.In * s.lam, "λ·", r"\lambda "),
-           Factor("A", "A", lambda s: s.A * s.lam, "λ·", r"\lambda ")]
+def _middles(s_inverse: tuple[str, str, Callable[[Any], Any]] | None = None,
+             wrap: Callable[[Any, Any], Any] = lambda s, M: M) -> list[Factor]:
+    """The middle factors M of UᵀMV: I_n, A, λI_n, λA, the printed resolvent (if any) and (λI_n − A)⁻¹
+    (each passed through ``wrap``, e.g. to realify it)."""
+    out = [Factor("", "", lambda s: wrap(s, s.In)),
+           Factor("A", "A", lambda s: wrap(s, s.A)),
+           Factor("", "", lambda s: wrap(s, s.In * s.lam), "λ·", r"\lambda "),
+           Factor("A", "A", lambda s: wrap(s, s.A * s.lam), "λ·", r"\lambda ")]
     if s_inverse is not None:
-        out.append(Factor(s_inverse[0], s_inverse[1], s_inverse[2]))
-    out.append(Factor("(λI_n − A)⁻¹", r"(\lambda\mathbf I_n-A)^{-1}", lambda s: s.resolvent(s.lam)))
+        f = s_inverse[2]
+        out.append(Factor(s_inverse[0], s_inverse[1], lambda s: wrap(s, f(s))))
+    out.append(Factor("(λI_n − A)⁻¹", r"(\lambda\mathbf I_n-A)^{-1}", lambda s: wrap(s, s.resolvent(s.lam))))
     return out
 
 
@@ -41,9 +45,8 @@ def _zero_r(s):
     return s.zeros(s.r, s.r, ("r", "r"))
 
 
-def _signed(pairs: dict[str, int], middle: Factor, prefix: str = "") -> dict[str, Fraction]:
-    return {f"{prefix}{k.split('|')[0]}{middle}{k.split('|')[1]} in block {b}": Fraction(c)
-            for k, (b, c) in pairs.items()}
+def _at(block: tuple[int, int], word: str) -> str:
+    return f"{word} in block ({block[0] + 1},{block[1] + 1})"
 
 
 # -- (MAN-LA): the dual Lax pair of the Manakov flows ------------------------------------------------
@@ -82,7 +85,87 @@ def manakov_dual_lax() -> CorrectionAnsatz:
         size=Size(3, 2), blocks=(2, 2))
 
 
-#: the paper's corrections searched as solution spaces: claim id -> the ansatz builder
+# -- (LA3*D) and (LA3*): the dual Lax pairs of the double and the complex Neumann systems ----------
+
+FLIPPED = ("(I_n − λA)⁻¹", r"(\mathbf I_n-\lambda A)^{-1}")
+
+
+def _flipped_value(s):
+    return s.resolvent(s.q(1) / s.lam) / s.lam
+
+
+def _off_diagonal_lax(claim: str, label: str, left, right, identity: tuple[str, str], wrap, zero, point,
+                      diagonal, A_of, flow_of, realization: str = "standard") -> CorrectionAnsatz:
+    """The off-diagonal blocks of 𝓛(λ) = [[−UᵀRV̇, B₁₂], [B₂₁, U̇ᵀRV]] searched, its diagonal blocks as printed."""
+    from .ir import block
+    middles = _middles((*FLIPPED, _flipped_value), wrap)
+    pattern = {(0, 1): (left[0].text, right[0].text), (1, 0): (left[1].text, right[1].text)}
+
+    def preferred(pos, U, M, V):
+        return 2 * ("⁻¹" in M.text) + (pattern[pos] != (U.text, V.text))
+    word = left[0].text + right[0].text
+    terms = sandwich_terms(left, right, middles, list(pattern), (2, 2), zero, preferred,
+                           identities={word: identity})
+
+    def residual(s, slot):
+        z = point(s)
+
+        def L(t, w):
+            D11, D22 = diagonal(t, w)
+            return block([[D11, zero(t)], [zero(t), D22]]) + slot(t, w)
+        return derivative(s, L, z, flow_of(s, z)) - comm(L(s, z), A_of(s, z))
+
+    def coeffs(mid: str) -> dict[str, Fraction]:
+        (u1, v1), (u2, v2) = pattern[(0, 1)], pattern[(1, 0)]
+        return {_at((0, 1), u1 + mid + v1): -ONE, _at((1, 0), identity[0]): ONE, _at((1, 0), u2 + mid + v2): ONE}
+    return CorrectionAnsatz(
+        claim=claim, label=label, slot="the off-diagonal blocks of 𝓛(λ)",
+        slot_latex=r"\text{the off-diagonal blocks of }\mathcal L(\lambda)", terms=terms, residual=residual,
+        point=point,
+        description=f"of the blocks (1,2), (2,1), each Σ c·UᵀMV, U ∈ {{{left[0].text}, {left[1].text}}}, "
+                    f"V ∈ {{{right[0].text}, {right[1].text}}}, M ∈ {{I_n, A, λI_n, λA, {FLIPPED[0]}, (λI_n − A)⁻¹}}",
+        description_latex=rf"blocks (1,2), (2,1), each $\sum c\,U^TMV$, $U\in\{{{left[0].latex},{left[1].latex}\}}$, "
+                          rf"$V\in\{{{right[0].latex},{right[1].latex}\}}$, $M\in\{{\mathbf I_n,A,\lambda\mathbf I_n,"
+                          rf"\lambda A,{FLIPPED[1]},(\lambda\mathbf I_n-A)^{{-1}}\}}$",
+        printed=coeffs(FLIPPED[0]), registered=coeffs("(λI_n − A)⁻¹"), size=Size(3, 2), blocks=(2, 2),
+        realization=realization)
+
+
+def double_neumann_dual_lax() -> CorrectionAnsatz:
+    """(LA3*D): the off-diagonal blocks of 𝓛(λ) for the double Neumann system (D-eq)."""
+    from .systems import double_point
+    app2 = _catalog_module("app2_double_coupled_complex")
+    left = [_outer("Xᵀ", "X^T", "X", True), _outer("Ẋᵀ", r"\dot X^T", "Xdot", True)]
+    right = [_outer("Y", "Y", "Y"), _outer("Ẏ", r"\dot Y", "Ydot")]
+
+    def diagonal(t, w):
+        R = t.resolvent(t.lam)
+        return -(w["X"].T @ R @ w["Ydot"]), w["Xdot"].T @ R @ w["Y"]
+    return _off_diagonal_lax("double-neumann-dual-lax", "(LA3*D)", left, right, ("I_r", r"\mathbf I_r"),
+                             lambda s, M: M, _zero_r, double_point, diagonal, app2.A_dual_double, app2.flow_double)
+
+
+def complex_neumann_dual_lax() -> CorrectionAnsatz:
+    """(LA3*): the off-diagonal blocks of 𝓛(λ) for the Neumann system (W-eq) on W(n, r)."""
+    from .systems import complex_point, ctranspose, realify_real
+    app2 = _catalog_module("app2_double_coupled_complex")
+    left = [Factor("Zᵀ", "Z^T", lambda s, w: ctranspose(s, w["Z"])),
+            Factor("Żᵀ", r"\dot Z^T", lambda s, w: ctranspose(s, w["Zdot"]))]
+    right = [Factor("Z̄", r"\bar Z", lambda s, w: s.conj(w["Z"])),
+             Factor("Ż̄", r"\dot{\bar Z}", lambda s, w: s.conj(w["Zdot"]))]
+
+    def diagonal(t, w):
+        R = realify_real(t, t.resolvent(t.lam))
+        Z, Zd = w["Z"], w["Zdot"]
+        return -(ctranspose(t, Z) @ R @ t.conj(Zd)), ctranspose(t, Zd) @ R @ t.conj(Z)
+    return _off_diagonal_lax("complex-neumann-dual-lax", "(LA3*)", left, right, ("I_r", r"\mathbf I_r"),
+                             realify_real, lambda s: realify_real(s, _zero_r(s)), complex_point, diagonal,
+                             app2.A_dual_complex, app2.flow_complex)
+
+
+#: the paper's corrections searched as solution spaces: a name -> the ansatz builder
 CORRECTIONS: dict[str, Callable[[], CorrectionAnsatz]] = {
     "manakov-dual-lax": manakov_dual_lax,
+    "double-neumann-dual-lax": double_neumann_dual_lax,
+    "complex-neumann-dual-lax": complex_neumann_dual_lax,
 }
