@@ -163,9 +163,99 @@ def complex_neumann_dual_lax() -> CorrectionAnsatz:
                              app2.A_dual_complex, app2.flow_complex)
 
 
+# -- (C-eq): the r-coupled Neumann system -----------------------------------------------------------
+
+def coupled_neumann_flow() -> CorrectionAnsatz:
+    """(C-eq): the last term of the equation for Q̇, among U·M, U ∈ {X, P, Y, Q}, M ∈ {Λ, Π}, and
+    U·S, U ∈ {X, P, Y, Q}, S ∈ {XᵀAY, YᵀAX, PᵀP, QᵀQ, XᵀP, YᵀQ} (Λ, Π of (C-L))."""
+    from .systems import coupled_point
+    app2 = _catalog_module("app2_double_coupled_complex")
+    letters = [("X", "X"), ("Y", "Y"), ("P", "P"), ("Q", "Q")]
+    multipliers = [("Π", r"\Pi", lambda t, w: app2.Lambda_Pi_coupled(t, w)[1]),
+                   ("Λ", r"\Lambda", lambda t, w: app2.Lambda_Pi_coupled(t, w)[0])]
+    parts = [("XᵀAY", "X^TAY", lambda t, w: w["X"].T @ t.A @ w["Y"]),
+             ("YᵀAX", "Y^TAX", lambda t, w: w["Y"].T @ t.A @ w["X"]),
+             ("PᵀP", "P^TP", lambda t, w: w["P"].T @ w["P"]), ("QᵀQ", "Q^TQ", lambda t, w: w["Q"].T @ w["Q"]),
+             ("XᵀP", "X^TP", lambda t, w: w["X"].T @ w["P"]), ("YᵀQ", "Y^TQ", lambda t, w: w["Y"].T @ w["Q"])]
+    from .discover import Term
+    terms = [Term(u + m, ul + ml, lambda t, w, u=u, f=f: w[u] @ f(t, w))
+             for m, ml, f in multipliers + parts for u, ul in letters]
+
+    def residual(s, slot):
+        z = coupled_point(s)
+        derived = app2.coupled_flow(s, app2.H_coupled(app2.FREE_KAPPA))
+        printed = dict(app2.flow_C_eq(s, z, s.kappa, Q_Pi=True))
+        _, Pi = app2.Lambda_Pi_coupled(s, z)
+        printed["Q"] = printed["Q"] - z["Q"] @ Pi + slot(s, z)
+        kept = derivative(s, lambda t, w: [w["X"].T @ w["X"], w["X"].T @ w["P"] + w["P"].T @ w["X"],
+                                           w["Y"].T @ w["Y"], w["Y"].T @ w["Q"] + w["Q"].T @ w["Y"]], z, printed)
+        out = {f"d{k}/dt (C-neumann) - (C-eq)": derived[k] - printed[k] for k in ("X", "P", "Y", "Q")}
+        out.update({f"constraint {i + 1} kept": v for i, v in enumerate(kept)})
+        return out
+    return CorrectionAnsatz(
+        claim="coupled-neumann-flow", label="(C-eq)", slot="the last term of Q̇",
+        slot_latex=r"\text{the last term of }\dot Q", terms=terms, residual=residual, point=coupled_point,
+        description="Σ c·UM, U ∈ {X, Y, P, Q}, M ∈ {Π, Λ, XᵀAY, YᵀAX, PᵀP, QᵀQ, XᵀP, YᵀQ}",
+        description_latex=r"$\sum c\,UM$, $U\in\{X,Y,P,Q\}$, $M\in\{\Pi,\Lambda,X^TAY,Y^TAX,P^TP,Q^TQ,"
+                          r"X^TP,Y^TQ\}$",
+        printed={"QΠ": ONE}, registered={"YΠ": ONE}, size=Size(3, 2))
+
+
+# -- (so(n,n)): the big Lax pair of the coupled Neumann system -----------------------------------------
+
+def _big_lax(order: str) -> CorrectionAnsatz:
+    """(so(n,n)) for κ = 0: the ν⁻¹ part of L(ν) among the 2n×2n block matrices with blocks Σ c·UVᵀ,
+    U, V ∈ {X, Y, P, Q}; A(ν) = L₊(ν) as printed; the Lax equation in the printed order dL/dt = [L, A]
+    (``order`` "LA") or in the order [A, L] ("AL")."""
+    from .systems import coupled_point
+    app2 = _catalog_module("app2_double_coupled_complex")
+    outer = [_outer(x, x, x) for x in ("X", "Y", "P", "Q")]
+    outer_t = [_outer(x + "ᵀ", x + "^T", x, True) for x in ("X", "Y", "P", "Q")]
+    pattern = {(0, 1): ("X", "Yᵀ"), (1, 0): ("Y", "Xᵀ")}
+    middle = [Factor("", "", lambda s: s.Ir, "ν⁻¹·", r"\nu^{-1}")]
+
+    def zero(s):
+        return s.zeros(s.n, s.n, ("n", "n"))
+
+    def preferred(pos, U, M, V):
+        return 0 if pattern.get(pos) == (U.text, V.text) else 1
+    terms = sandwich_terms(outer, outer_t, middle, [(0, 0), (0, 1), (1, 0), (1, 1)], (2, 2), zero, preferred)
+
+    def residual(s, slot):
+        z = coupled_point(s)
+        nu = s.scalar("nu")
+        L = lambda t, w: app2.A_big(t, w, nu) + slot(t, w) * (t.q(1) / nu)
+        flow = app2.coupled_flow(s, app2.H_coupled(app2.NORMAL))
+        A = app2.A_big(s, z, nu)
+        bracket = comm(L(s, z), A) if order == "LA" else comm(A, L(s, z))
+        return derivative(s, L, z, flow) - bracket
+    K = {_at(b, "ν⁻¹·" + u + v): ONE for b, (u, v) in pattern.items()}
+    eq = "dL/dt = [L(ν), A(ν)] as printed" if order == "LA" else "dL/dt = [A(ν), L(ν)]"
+    eq_latex = r"\dot L=[L(\nu),A(\nu)]" if order == "LA" else r"\dot L=[A(\nu),L(\nu)]"
+    return CorrectionAnsatz(
+        claim="coupled-big-lax-normal", label="(so(n,n))", slot="ν⁻¹·L₋(ν)", slot_latex=r"\nu^{-1}L_-(\nu)",
+        terms=terms, residual=residual, point=coupled_point,
+        description=f"of 2n×2n block matrices, each block Σ c·ν⁻¹UVᵀ, U, V ∈ {{X, Y, P, Q}}; A(ν) = L₊(ν), {eq}",
+        description_latex=r"each block $\sum c\,\nu^{-1}UV^T$, $U,V\in\{X,Y,P,Q\}$; $A(\nu)=L_+(\nu)$, $"
+                          + eq_latex + "$",
+        printed=K if order == "LA" else None,
+        registered={k: -ONE for k in K} if order == "AL" else None, size=Size(3, 2), blocks=(2, 2))
+
+
+def coupled_big_lax_normal() -> CorrectionAnsatz:
+    return _big_lax("LA")
+
+
+def coupled_big_lax_normal_reordered() -> CorrectionAnsatz:
+    return _big_lax("AL")
+
+
 #: the paper's corrections searched as solution spaces: a name -> the ansatz builder
 CORRECTIONS: dict[str, Callable[[], CorrectionAnsatz]] = {
     "manakov-dual-lax": manakov_dual_lax,
     "double-neumann-dual-lax": double_neumann_dual_lax,
     "complex-neumann-dual-lax": complex_neumann_dual_lax,
+    "coupled-neumann-flow": coupled_neumann_flow,
+    "coupled-big-lax-normal": coupled_big_lax_normal,
+    "coupled-big-lax-normal/[A,L]": coupled_big_lax_normal_reordered,
 }
