@@ -555,6 +555,8 @@ class CorrectionAnsatz:
     size: Size = field(default_factory=lambda: Size(3, 2))
     realization: str = "standard"
     blocks: tuple[int, int] = (1, 1)
+    #: whether the dimension-free method applies (the claim lives on T*V itself)
+    free: bool = False
 
     def vector(self, coeffs: dict[str, Fraction]) -> list[Fraction]:
         names = [t.key for t in self.terms]
@@ -629,8 +631,10 @@ class CorrectionSpace:
         if self.particular is None:
             return (f"no formula in this {self.N}-term space holds: over GF(2^61 - 1) the {self.equations} x "
                     f"{self.N} system has rank {self.rank} and its augmented matrix rank {self.rank_augmented}")
-        return (f"a {len(self.basis)}-dimensional affine space of formulas that hold in the {self.N}-term space "
-                f"({self.zero_dim} combinations vanish on the phase space; rank {self.rank} of {self.N})")
+        what = ("exactly one formula holds" if not self.basis else
+                f"a {len(self.basis)}-dimensional affine space of formulas holds")
+        return (f"{what} in this {self.N}-term space, modulo the {self.zero_dim} independent combinations that "
+                f"vanish on the phase space (the {self.equations} x {self.N} system has rank {self.rank})")
 
     def text(self, c: Sequence[Fraction] | None = None) -> str:
         """Σ cⱼ Tⱼ in the paper's notation, block by block when the slot is a block matrix."""
@@ -819,6 +823,8 @@ def correction_space(ansatz: CorrectionAnsatz, size: Size | None = None, *, seed
         checks = {"": space.particular} | {f" + direction {i + 1}": [a + b for a, b in zip(space.particular, h)]
                                             for i, h in enumerate(space.basis)}
         for m in verify:
+            if m == "free" and not ansatz.free:
+                continue
             verdicts = []
             for label, c in checks.items():
                 slot = combination(terms, c)

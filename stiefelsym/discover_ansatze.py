@@ -82,7 +82,7 @@ def manakov_dual_lax() -> CorrectionAnsatz:
         description_latex=r"each block $\sum c\,U^TMV$, $U,V\in\{X,P\}$, $M\in\{\mathbf I_n,A,\lambda\mathbf I_n,"
                           r"\lambda A,(A+\lambda\mathbf I_n)^{-1},(\lambda\mathbf I_n-A)^{-1}\}$",
         printed=coeffs([("", "(A + λI_n)⁻¹")]), registered=coeffs([("", "A"), ("λ·", "")]),
-        size=Size(3, 2), blocks=(2, 2))
+        size=Size(3, 2), blocks=(2, 2), free=True)
 
 
 # -- (LA3*D) and (LA3*): the dual Lax pairs of the double and the complex Neumann systems ----------
@@ -230,14 +230,14 @@ def _big_lax(order: str) -> CorrectionAnsatz:
         bracket = comm(L(s, z), A) if order == "LA" else comm(A, L(s, z))
         return derivative(s, L, z, flow) - bracket
     K = {_at(b, "ν⁻¹·" + u + v): ONE for b, (u, v) in pattern.items()}
-    eq = "dL/dt = [L(ν), A(ν)] as printed" if order == "LA" else "dL/dt = [A(ν), L(ν)]"
+    eq = "dL/dt = [L(ν), A(ν)], as printed" if order == "LA" else "dL/dt = [A(ν), L(ν)]"
     eq_latex = r"\dot L=[L(\nu),A(\nu)]" if order == "LA" else r"\dot L=[A(\nu),L(\nu)]"
     return CorrectionAnsatz(
-        claim="coupled-big-lax-normal", label="(so(n,n))", slot="ν⁻¹·L₋(ν)", slot_latex=r"\nu^{-1}L_-(\nu)",
+        claim="coupled-big-lax-normal", label="(so(n,n))", slot=f"ν⁻¹·L₋(ν) (with {eq})",
+        slot_latex=r"\nu^{-1}L_-(\nu)\ (\text{with }" + eq_latex + ")",
         terms=terms, residual=residual, point=coupled_point,
-        description=f"of 2n×2n block matrices, each block Σ c·ν⁻¹UVᵀ, U, V ∈ {{X, Y, P, Q}}; A(ν) = L₊(ν), {eq}",
-        description_latex=r"each block $\sum c\,\nu^{-1}UV^T$, $U,V\in\{X,Y,P,Q\}$; $A(\nu)=L_+(\nu)$, $"
-                          + eq_latex + "$",
+        description="of 2n×2n block matrices, each block Σ c·ν⁻¹UVᵀ, U, V ∈ {X, Y, P, Q}; A(ν) = L₊(ν) as printed",
+        description_latex=r"each block $\sum c\,\nu^{-1}UV^T$, $U,V\in\{X,Y,P,Q\}$; $A(\nu)=L_+(\nu)$ as printed",
         printed=K if order == "LA" else None,
         registered={k: -ONE for k in K} if order == "AL" else None, size=Size(3, 2), blocks=(2, 2))
 
@@ -259,3 +259,9 @@ CORRECTIONS: dict[str, Callable[[], CorrectionAnsatz]] = {
     "coupled-big-lax-normal": coupled_big_lax_normal,
     "coupled-big-lax-normal/[A,L]": coupled_big_lax_normal_reordered,
 }
+
+
+def searches_for(claim: str) -> list[str]:
+    """The names of the searches of ``claim``'s corrections (a name of :data:`CORRECTIONS`, or a claim id
+    with several searches)."""
+    return [k for k in CORRECTIONS if k == claim or k.split("/")[0] == claim]
