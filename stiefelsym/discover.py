@@ -557,6 +557,8 @@ class CorrectionAnsatz:
     blocks: tuple[int, int] = (1, 1)
     #: whether the dimension-free method applies (the claim lives on T*V itself)
     free: bool = False
+    #: what ``registered`` is
+    registered_name: str = "the registered correction"
 
     def vector(self, coeffs: dict[str, Fraction]) -> list[Fraction]:
         names = [t.key for t in self.terms]
@@ -661,7 +663,7 @@ class CorrectionSpace:
         if self.contains_printed is not None:
             out.append(f"  the printed formula {'holds' if self.contains_printed else 'is not in the space'}")
         if self.contains_registered is not None:
-            out.append(f"  the registered correction {'is in the space' if self.contains_registered else 'is NOT in the space'}")
+            out.append(f"  {a.registered_name} {'is in the space' if self.contains_registered else 'is NOT in the space'}")
         return out
 
 

@@ -250,6 +250,150 @@ def coupled_big_lax_normal_reordered() -> CorrectionAnsatz:
     return _big_lax("AL")
 
 
+# -- (2r-integrals): the general line I_{2l} -------------------------------------------------------
+
+def _sorted_sign(cols: list[int]) -> tuple[int, tuple[int, ...]]:
+    """The sign of the permutation sorting ``cols`` (0 if two are equal) and the sorted tuple."""
+    if len(set(cols)) < len(cols):
+        return 0, ()
+    inv = sum(1 for i in range(len(cols)) for j in range(i + 1, len(cols)) if cols[i] > cols[j])
+    return (-1 if inv % 2 else 1), tuple(sorted(cols))
+
+
+class _Plucker:
+    """The minors of W = (e₁ … e_r p₁ … p_r) (the columns of X, then of P) of a scene, each computed once
+    by Laplace expansion along its first row."""
+
+    def __init__(self, s: Any) -> None:
+        self.s, self.memo = s, {}
+        self.W = [[s.X[i, j] for j in range(s.r)] + [s.P[i, j] for j in range(s.r)] for i in range(s.n)]
+
+    def minor(self, rows: tuple[int, ...], cols: tuple[int, ...]) -> Any:
+        if not rows:
+            return self.s.q(1)
+        key = (rows, cols)
+        if key not in self.memo:
+            acc = None
+            for t, c in enumerate(cols):
+                v = self.W[rows[0]][c] * self.minor(rows[1:], cols[:t] + cols[t + 1:])
+                v = -v if t % 2 else v
+                acc = v if acc is None else acc + v
+            self.memo[key] = acc
+        return self.memo[key]
+
+
+def _wedge_power_term(a: int, b: int, k: int) -> Callable[[Any, Any], Any]:
+    """G_{a,b,k} = Σ_{|I| = a+b+2k} w_I Σ_{|J| = a, |K| = b} ((e_J ∧ p_K ∧ ω^k/k!)_I)², ω = Σ_j e_j ∧ p_j,
+    w_I = a(λ)/∏_{i∈I}(λ − a_i)."""
+    from itertools import combinations
+    sec8 = _catalog_module("sec8_dual_lax_pair")
+
+    def value(s, w):
+        W, n, r = w["plucker"], s.n, s.r
+        m = a + b + 2 * k
+        acc = s.q(0)
+        if m > n or a > r or b > r:
+            return acc
+        for I in combinations(range(n), m):
+            inner = s.q(0)
+            for J in combinations(range(r), a):
+                for K in combinations(range(r), b):
+                    coord = None
+                    for L in combinations([j for j in range(r) if j not in J and j not in K], k):
+                        cols = list(J) + [r + x for x in K] + [c for j in L for c in (j, r + j)]
+                        sign, key = _sorted_sign(cols)
+                        if sign:
+                            v = W.minor(I, key)
+                            v = -v if sign < 0 else v
+                            coord = v if coord is None else coord + v
+                    if coord is not None:
+                        inner = inner + coord * coord
+            acc = acc + sec8.weight(s, s.lam, I) * inner
+        return acc
+    return value
+
+
+def _g_text(a: int, b: int, k: int, latex: bool) -> str:
+    m = a + b + 2 * k
+    if latex:
+        parts = ([rf"e_{{J_{a}}}"] if a else []) + ([rf"p_{{K_{b}}}"] if b else []) + \
+                ([r"\omega" if k == 1 else rf"\tfrac{{\omega^{k}}}{{{k}!}}"] if k else [])
+        sums = ",".join(x for x, y in ((f"J_{a}", a), (f"K_{b}", b)) if y)
+        return (rf"\sum_{{I_{m}}}w_I" + (rf"\sum_{{{sums}}}" if sums else "")
+                + "(" + r"\wedge ".join(parts) + rf")_{{I_{m}}}^2")
+    digits = "₀₁₂₃₄₅₆₇₈₉"
+    sub = ["".join(digits[int(d)] for d in str(i)) for i in range(2 * m + 1)]
+    parts = ([f"e_J{sub[a]}"] if a else []) + ([f"p_K{sub[b]}"] if b else []) + \
+            (["ω" if k == 1 else f"ω^{k}/{k}!"] if k else [])
+    sums = ",".join(x for x, y in ((f"J{sub[a]}", a), (f"K{sub[b]}", b)) if y)
+    return f"Σ_I{sub[m]} w_I" + (f" Σ_{sums}" if sums else "") + " (" + "∧".join(parts) + ")²"
+
+
+_POINT: dict[str, Any] = {}
+
+
+def _plucker_point(s: Any) -> dict[str, Any]:
+    """The point (X, P) with the minors of (X | P), one per scene (so that the terms share them)."""
+    if _POINT.get("scene") is not s:
+        _POINT.clear()
+        _POINT.update(scene=s, point={"X": s.X, "P": s.P, "plucker": _Plucker(s)})
+    return _POINT["point"]
+
+
+def general_line(l: int, r_max: int = 3) -> CorrectionAnsatz:
+    """(2r-integrals), the line 𝓘_{2l}(λ): every G_{a,b,k} of order l <= a + b + 2k <= 2l with a + k, b + k <= r_max
+    (the printed line's terms are G_{l,b,0}: l vectors e, b vectors p)."""
+    from .discover import Term
+    sec8 = _catalog_module("sec8_dual_lax_pair")
+    shapes = [(a, b, k) for m in range(l, 2 * l + 1) for k in range(m // 2 + 1) for b in range(m - 2 * k + 1)
+              for a in [m - 2 * k - b] if a + k <= r_max and b + k <= r_max]
+    # the fewest vectors p outside ω first (then the fewest ω), so that the solution is written with them
+    shapes.sort(key=lambda t: (t[1], t[2], -t[0]))
+    terms = [Term(_g_text(*t, latex=False), _g_text(*t, latex=True), _wedge_power_term(*t)) for t in shapes]
+
+    def residual(s, slot):
+        integrals, _ = sec8.spectral_integrals(s, s.lam)
+        return integrals[l] - slot(s, _plucker_point(s)) if l <= s.r else s.q(0)
+    g = {t: _g_text(*t, latex=False) for t in shapes}
+    return CorrectionAnsatz(
+        claim="2r-integrals-general-line", label=f"(2r-integrals), l = {l}", slot=f"𝓘_{2 * l}(λ)",
+        slot_latex=rf"\mathcal I_{{{2 * l}}}(\lambda)", terms=terms, residual=residual, point=_plucker_point,
+        description=f"Σ c·G_a,b,k, G_a,b,k = Σ_I w_I Σ_J,K ((e_J∧p_K∧ω^k/k!)_I)², |J| = a, |K| = b, |I| = a + b + 2k "
+                    f"∈ [{l}, {2 * l}], w_I = a(λ)/∏_(i∈I)(λ − a_i), ω = e₁∧p₁ + ⋯ + e_r∧p_r",
+        description_latex=r"$\sum c\,G_{a,b,k}$, $G_{a,b,k}=\sum_{I}w_I\sum_{J,K}(e_J\wedge p_K\wedge"
+                          r"\tfrac{\omega^k}{k!})_I^2$, $|J|=a$, $|K|=b$, $|I|=a+b+2k\in[" + f"{l},{2 * l}" + r"]$, "
+                          r"$w_I=a(\lambda)/\prod_{i\in I}(\lambda-a_i)$, $\omega=\sum_j e_j\wedge p_j$",
+        printed={g[(l, b, 0)]: ONE for b in range(l + 1) if (l, b, 0) in g},
+        registered={g[(l - k, 0, k)]: ONE for k in range(l + 1)},
+        registered_name="the registered correction" if l == 1 else "the general line Σ_k G_(l−k),0,k",
+        size=Size(6, 3))
+
+
+def general_line_formula(l: int) -> tuple[CorrectionAnsatz, list[Fraction]]:
+    """The general line 𝓘_{2l} = Σ_{k=0}^{l} G_{l−k,0,k} (its ansatz and coefficients)."""
+    a = general_line(l, r_max=max(3, l))
+    assert a.registered is not None
+    return a, a.vector(a.registered)
+
+
+def sweep_general_line(n_max: int = 6, method: str = "auto", seed: int = 0) -> list[tuple[int, int, int, str]]:
+    """The verdict of the general line 𝓘_{2l} = Σ_{k=0}^{l} G_{l−k,0,k} at every 1 <= l <= r <= n <= ``n_max``
+    (the catalog's claim 2r-integrals-general-line with the line in place of the printed one)."""
+    from .claims import load_catalog
+    from .discover import combination
+    from .runner import run_one
+    claim = load_catalog().get("2r-integrals-general-line")
+    out = []
+    for n in range(1, n_max + 1):
+        for r in range(1, n + 1):
+            for l in range(1, r + 1):
+                a, c = general_line_formula(l)
+                slot = combination(a.terms, c)
+                func = (lambda s, a=a, slot=slot: {f"I_{2 * l} - general line": a.residual(s, slot)})
+                out.append((n, r, l, run_one(claim, Size(n, r), method, seed, func=func).verdict))
+    return out
+
+
 #: the paper's corrections searched as solution spaces: a name -> the ansatz builder
 CORRECTIONS: dict[str, Callable[[], CorrectionAnsatz]] = {
     "manakov-dual-lax": manakov_dual_lax,
@@ -258,6 +402,9 @@ CORRECTIONS: dict[str, Callable[[], CorrectionAnsatz]] = {
     "coupled-neumann-flow": coupled_neumann_flow,
     "coupled-big-lax-normal": coupled_big_lax_normal,
     "coupled-big-lax-normal/[A,L]": coupled_big_lax_normal_reordered,
+    "2r-integrals-general-line/l=1": lambda: general_line(1),
+    "2r-integrals-general-line/l=2": lambda: general_line(2),
+    "2r-integrals-general-line/l=3": lambda: general_line(3),
 }
 
 
