@@ -23,6 +23,7 @@ $(STAMP): pyproject.toml
 ## verify: verify the whole catalog (default methods) at every size n <= MAX_N and regenerate reports/
 verify: venv
 	$(BIN)/stiefelsym verify --jobs $(JOBS) --max-n $(MAX_N) --report-dir reports
+	$(BIN)/stiefelsym discover --correct all --report-dir reports
 
 ## verify-all: every method at every size (auto, modular, rational, float, free) and the slow tests
 verify-all: venv
@@ -52,6 +53,11 @@ bench: venv
 .PHONY: mutate
 mutate: venv
 	$(BIN)/stiefelsym mutate --jobs $(JOBS) --report-dir reports
+
+## discover: the corrections of the paper's printed formulas as solution spaces in reports/discover.{md,tex} (~20 s)
+.PHONY: discover
+discover: venv
+	$(BIN)/stiefelsym discover --correct all --report-dir reports
 
 ## tables: appendix tables (dimensions formula against computed, verdict matrix) in reports/tables.{md,tex}
 tables: venv

@@ -120,6 +120,16 @@ def _correct(names: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str,
                 click.echo(line)
             spaces.append(space)
             ok = ok and (space.empty or space.verified) and space.contains_registered is not False
+    sweep = None
+    if any(x.startswith("2r-integrals-general-line") for x in chosen) and not sizes:
+        from .discover_ansatze import sweep_general_line
+        sweep = sweep_general_line(6, seed=seed)
+        bad = [x for x in sweep if x[3] not in ("proved", "checked")]
+        click.echo(f"the general line of (2r-integrals) at every 1 <= l <= r <= n <= 6: {len(sweep) - len(bad)} of "
+                   f"{len(sweep)} proved or checked")
+        for n, r, l, v in bad:
+            click.echo(f"  (n, r) = ({n}, {r}), l = {l}: {v}")
+        ok = ok and not bad
     if report_dir is not None:
-        write_reports(spaces, report_dir)
+        write_reports(spaces, report_dir, sweep)
     raise SystemExit(0 if ok else 1)
