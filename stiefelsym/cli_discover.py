@@ -46,7 +46,7 @@ def _size(text: str) -> Size:
                    "dL/dt = [A, L] instead of the conserved quantities")
 @click.option("--correct", "corrections", multiple=True, metavar="CLAIM",
               help="the space of formulas of the printed shape that make CLAIM hold (a claim with a registered "
-                   "ansatz, or 'all'); FLOW is not given then")
+                   "ansatz, 'all', or file.py:NAME, a CorrectionAnsatz of one's own); FLOW is not given then")
 @click.option("--report-dir", type=click.Path(path_type=Path), default=None,
               help="also write discover.md (and, with --correct, discover.tex) there (nothing is written without it)")
 def discover(flow: str | None, sizes: tuple[str, ...], degree: int, max_a: int, no_products: bool,
@@ -105,15 +105,29 @@ def _correct(names: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str,
     from .discover import correction_space
     from .discover_ansatze import CORRECTIONS, searches_for
     from .discover_report import write_reports
+    from .discover import CorrectionAnsatz, load_object
     chosen: list[str] = []
+    own: dict[str, CorrectionAnsatz] = {}
     for name in names:
-        found = list(CORRECTIONS) if name == "all" else searches_for(name)
+        if name.count(":") == 1 and name not in CORRECTIONS:
+            try:
+                obj = load_object(*name.split(":"))
+                obj = obj() if callable(obj) and not isinstance(obj, CorrectionAnsatz) else obj
+            except ValueError as exc:
+                raise InputError(str(exc)) from None
+            if not isinstance(obj, CorrectionAnsatz):
+                raise InputError(f"{name} is not a CorrectionAnsatz (nor a function returning one)")
+            own[name] = obj
+            found = [name]
+        else:
+            found = list(CORRECTIONS) if name == "all" else searches_for(name)
         if not found:
-            raise InputError(f"no correction ansatz for {name!r}; there are: {', '.join(CORRECTIONS)}")
+            raise InputError(f"no correction ansatz for {name!r}; there are: {', '.join(CORRECTIONS)} "
+                             "(or give file.py:NAME, a CorrectionAnsatz of one's own)")
         chosen += [x for x in found if x not in chosen]
     spaces, ok = [], True
     for name in chosen:
-        ansatz = CORRECTIONS[name]()
+        ansatz = own[name] if name in own else CORRECTIONS[name]()
         for z in [_size(x) for x in sizes] or [ansatz.size]:
             space = correction_space(ansatz, z, seed=seed, verify=methods)
             for line in space.lines():

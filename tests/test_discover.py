@@ -202,3 +202,16 @@ def test_correct_as_a_real_subprocess():
                          capture_output=True, text=True, timeout=300)
     assert out.returncode == 0, out.stderr
     assert "exactly one formula holds in this 32-term space" in out.stdout
+
+
+def test_a_users_own_correction_search_through_the_command_line_and_the_api():
+    from pathlib import Path
+    from click.testing import CliRunner
+    from stiefelsym.cli import main
+    from stiefelsym.discover import correction_space, load_object
+    example = Path(__file__).resolve().parent.parent / "examples" / "my_correction.py"
+    r = CliRunner().invoke(main, ["discover", "--correct", f"{example}:ANSATZ"])
+    assert r.exit_code == 0, r.output
+    assert "X·M = XXᵀAX − XPᵀP    [auto proved, free (all n, r) proved]" in r.output
+    sp = correction_space(load_object(str(example), "ANSATZ"), verify=())
+    assert (sp.N, sp.dimension) == (5, 2)
