@@ -338,7 +338,6 @@ def load_object(mod: str, name: str) -> Any:
 def resolve_flow(spec: str) -> tuple[Callable[[Any], Any], str]:
     """A flow by catalog name, by ``module:function`` or ``file.py:function`` (a function of the scene
     giving {"X": Ẋ, "P": Ṗ}), or by ``hamiltonian:module:function`` (the Dirac flow of a Hamiltonian)."""
-    import importlib
     if spec in FLOWS:
         mod, fn, how, text = FLOWS[spec]
         f = getattr(_catalog_module(mod), fn)
