@@ -563,6 +563,8 @@ class CorrectionAnsatz:
     free: bool = False
     #: what ``registered`` is
     registered_name: str = "the registered correction"
+    #: the sizes besides the search's at which each solution is verified
+    verify_sizes: tuple[Size, ...] = ()
 
     def vector(self, coeffs: dict[str, Fraction]) -> list[Fraction]:
         names = [t.key for t in self.terms]
@@ -832,18 +834,22 @@ def correction_space(ansatz: CorrectionAnsatz, size: Size | None = None, *, seed
                           func=lambda s: {}, sizes=admissible(max(size.n, 1)), realization=ansatz.realization)
         checks = {"": space.particular} | {f" + direction {i + 1}": [a + b for a, b in zip(space.particular, h)]
                                             for i, h in enumerate(space.basis)}
+        at = [size] + [z for z in ansatz.verify_sizes if z != size]
         for m in verify:
             if m == "free" and not ansatz.free:
                 continue
             verdicts = []
-            for label, c in checks.items():
+            for c in checks.values():
                 slot = combination(terms, c)
 
                 def func(s, slot=slot):
                     r = ansatz.residual(s, slot)
                     return r if isinstance(r, dict) else {f"{ansatz.label} corrected": r}
-                verdicts.append(run_one(claim, None if m == "free" else size, m, seed, func=func).verdict)
-            space.verdicts[m if m != "free" else "free (all n, r)"] = next((v for v in verdicts if v not in ("proved", "checked")), verdicts[0])
+                for z in ([None] if m == "free" else at):
+                    verdicts.append(run_one(claim, z, m, seed, func=func).verdict)
+            key = "free (all n, r)" if m == "free" else (
+                m if len(at) == 1 else f"{m} at " + ", ".join(f"({z.n},{z.r})" for z in at))
+            space.verdicts[key] = next((v for v in verdicts if v not in ("proved", "checked")), verdicts[0])
     elif ansatz.printed is not None:
         space.contains_printed = False
     if ansatz.registered is not None and space.particular is None:

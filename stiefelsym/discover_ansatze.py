@@ -15,6 +15,9 @@ from .systems import derivative
 
 ONE = Fraction(1)
 
+#: the sizes, besides the search's (3, 2), at which each solution found is verified
+MORE = (Size(2, 1), Size(4, 2), Size(4, 3))
+
 
 def _outer(text: str, latex: str, key: str, transpose: bool = False) -> Factor:
     if transpose:
@@ -82,7 +85,7 @@ def manakov_dual_lax() -> CorrectionAnsatz:
         description_latex=r"each block $\sum c\,U^TMV$, $U,V\in\{X,P\}$, $M\in\{\mathbf I_n,A,\lambda\mathbf I_n,"
                           r"\lambda A,(A+\lambda\mathbf I_n)^{-1},(\lambda\mathbf I_n-A)^{-1}\}$",
         printed=coeffs([("", "(A + λI_n)⁻¹")]), registered=coeffs([("", "A"), ("λ·", "")]),
-        size=Size(3, 2), blocks=(2, 2), free=True)
+        size=Size(3, 2), blocks=(2, 2), free=True, verify_sizes=MORE)
 
 
 # -- (LA3*D) and (LA3*): the dual Lax pairs of the double and the complex Neumann systems ----------
@@ -128,7 +131,7 @@ def _off_diagonal_lax(claim: str, label: str, left, right, identity: tuple[str, 
                           rf"$V\in\{{{right[0].latex},{right[1].latex}\}}$, $M\in\{{\mathbf I_n,A,\lambda\mathbf I_n,"
                           rf"\lambda A,{FLIPPED[1]},(\lambda\mathbf I_n-A)^{{-1}}\}}$",
         printed=coeffs(FLIPPED[0]), registered=coeffs("(λI_n − A)⁻¹"), size=Size(3, 2), blocks=(2, 2),
-        realization=realization)
+        realization=realization, verify_sizes=MORE)
 
 
 def double_neumann_dual_lax() -> CorrectionAnsatz:
@@ -198,7 +201,7 @@ def coupled_neumann_flow() -> CorrectionAnsatz:
         description="Σ c·UM, U ∈ {X, Y, P, Q}, M ∈ {Π, Λ, XᵀAY, YᵀAX, PᵀP, QᵀQ, XᵀP, YᵀQ}",
         description_latex=r"$\sum c\,UM$, $U\in\{X,Y,P,Q\}$, $M\in\{\Pi,\Lambda,X^TAY,Y^TAX,P^TP,Q^TQ,"
                           r"X^TP,Y^TQ\}$",
-        printed={"QΠ": ONE}, registered={"YΠ": ONE}, size=Size(3, 2))
+        printed={"QΠ": ONE}, registered={"YΠ": ONE}, size=Size(3, 2), verify_sizes=MORE)
 
 
 # -- (so(n,n)): the big Lax pair of the coupled Neumann system -----------------------------------------
@@ -239,7 +242,8 @@ def _big_lax(order: str) -> CorrectionAnsatz:
         description="of 2n×2n block matrices, each block Σ c·ν⁻¹UVᵀ, U, V ∈ {X, Y, P, Q}; A(ν) = L₊(ν) as printed",
         description_latex=r"each block $\sum c\,\nu^{-1}UV^T$, $U,V\in\{X,Y,P,Q\}$; $A(\nu)=L_+(\nu)$ as printed",
         printed=K if order == "LA" else None,
-        registered={k: -ONE for k in K} if order == "AL" else None, size=Size(3, 2), blocks=(2, 2))
+        registered={k: -ONE for k in K} if order == "AL" else None, size=Size(3, 2), blocks=(2, 2),
+        verify_sizes=MORE)
 
 
 def coupled_big_lax_normal() -> CorrectionAnsatz:
