@@ -48,7 +48,8 @@ def _size(text: str) -> Size:
               help="the space of formulas of the printed shape that make CLAIM hold (a claim with a registered "
                    "ansatz, 'all', or file.py:NAME, a CorrectionAnsatz of one's own); FLOW is not given then")
 @click.option("--report-dir", type=click.Path(path_type=Path), default=None,
-              help="also write discover.md (and, with --correct, discover.tex) there (nothing is written without it)")
+              help="also write conserved.md there (with --correct: discover.md and discover.tex); nothing is "
+                   "written without it")
 def discover(flow: str | None, sizes: tuple[str, ...], degree: int, max_a: int, no_products: bool,
              methods: tuple[str, ...], seed: int, lax: str | None, corrections: tuple[str, ...],
              report_dir: Path | None) -> None:
@@ -96,7 +97,7 @@ def discover(flow: str | None, sizes: tuple[str, ...], degree: int, max_a: int, 
                         for v in I.verdicts.values())
     if report_dir is not None:
         report_dir.mkdir(parents=True, exist_ok=True)
-        (report_dir / "discover.md").write_text("\n".join(lines), encoding="utf-8")
+        (report_dir / "conserved.md").write_text("\n".join(lines), encoding="utf-8")
     raise SystemExit(0 if ok else 1)
 
 
