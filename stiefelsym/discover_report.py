@@ -70,7 +70,7 @@ def render_markdown(spaces: Sequence[CorrectionSpace], sweep: Sweep | None = Non
         a = sp.ansatz
         out += [f"## `{a.claim}` {a.label}: ${a.slot_latex}$", "",
                 f"Search space ({sp.N} terms): {a.description_latex}.", "",
-                f"- {sp.certificate()}."]
+                f"- {sp.certificate()[0].upper() + sp.certificate()[1:]}."]
         if not sp.empty:
             out.append(f"- ${a.slot_latex} = {sp.latex()}$")
             out += [f"- plus any multiple of ${sp.latex(b)}$" for b in sp.basis]
@@ -97,8 +97,9 @@ def render_latex(spaces: Sequence[CorrectionSpace], sweep: Sweep | None = None) 
                 _sweep_sentence(sweep).replace("≤", r"$\le$"), ""]
     for sp in spaces:
         a = sp.ansatz
-        out.append(rf"\paragraph{{\texttt{{{a.claim}}} {a.label}.}} Search space ({sp.N} terms): "
-                   rf"{a.description_latex}. {sp.certificate()}.")
+        cert = sp.certificate().replace("GF(2^61 - 1)", r"$\mathrm{GF}(2^{61}-1)$").replace(" x ", r" $\times$ ")
+        out.append(rf"\paragraph{{\texttt{{{a.claim}}} {a.label}: ${a.slot_latex}$.}} Search space ({sp.N} terms): "
+                   rf"{a.description_latex}. {cert[0].upper() + cert[1:]}.")
         out.append("")
     return "\n".join(out)
 
