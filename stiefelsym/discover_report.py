@@ -18,7 +18,10 @@ def _dimension(sp: CorrectionSpace) -> str:
 def _registered(sp: CorrectionSpace) -> str:
     if sp.contains_registered is None:
         return "—"
-    return "matches" if sp.contains_registered else "does not match"
+    word = "matches" if sp.contains_registered else "does not match"
+    if sp.ansatz.registered_name != "the registered correction":
+        return f"{word} the general line (registered for l = 1)"
+    return word
 
 
 def _verdicts(sp: CorrectionSpace) -> str:
