@@ -241,7 +241,7 @@ def _big_lax(order: str) -> CorrectionAnsatz:
         terms=terms, residual=residual, point=coupled_point,
         description="of 2n×2n block matrices, each block Σ c·ν⁻¹UVᵀ, U, V ∈ {X, Y, P, Q}; A(ν) = L₊(ν) as printed",
         description_latex=r"each block $\sum c\,\nu^{-1}UV^T$, $U,V\in\{X,Y,P,Q\}$; $A(\nu)=L_+(\nu)$ as printed",
-        printed=K if order == "LA" else None,
+        printed=K,
         registered={k: -ONE for k in K} if order == "AL" else None, size=Size(3, 2), blocks=(2, 2),
         verify_sizes=MORE)
 
