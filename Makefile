@@ -23,7 +23,6 @@ $(STAMP): pyproject.toml
 ## verify: verify the whole catalog (default methods) at every size n <= MAX_N and regenerate reports/
 verify: venv
 	$(BIN)/stiefelsym verify --jobs $(JOBS) --max-n $(MAX_N) --report-dir reports
-	$(BIN)/stiefelsym discover --correct all --report-dir reports
 
 ## verify-all: every method at every size (auto, modular, rational, float, free) and the slow tests
 verify-all: venv
@@ -54,7 +53,8 @@ bench: venv
 mutate: venv
 	$(BIN)/stiefelsym mutate --jobs $(JOBS) --report-dir reports
 
-## discover: the corrections of the paper's printed formulas as solution spaces in reports/discover.{md,tex} (~20 s)
+## discover: the corrections of the paper's printed formulas as solution spaces in reports/discover.{md,tex}
+## (16-40 s, so not part of verify)
 .PHONY: discover
 discover: venv
 	$(BIN)/stiefelsym discover --correct all --report-dir reports
