@@ -670,6 +670,7 @@ class CorrectionSpace:
             out.append(f"  the printed formula {'holds' if self.contains_printed else 'is not in the space'}")
         if self.contains_registered is not None:
             out.append(f"  {a.registered_name} {'is in the space' if self.contains_registered else 'is NOT in the space'}")
+        out.append(f"  searched and verified in {self.seconds:.2f} s (seed {self.seed})")
         return out
 
 
