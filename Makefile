@@ -53,6 +53,12 @@ bench: venv
 mutate: venv
 	$(BIN)/stiefelsym mutate --jobs $(JOBS) --report-dir reports
 
+## discover: the corrections of the paper's printed formulas as solution spaces in reports/discover.{md,tex}
+## (16-40 s, so not part of verify)
+.PHONY: discover
+discover: venv
+	$(BIN)/stiefelsym discover --correct all --report-dir reports
+
 ## tables: appendix tables (dimensions formula against computed, verdict matrix) in reports/tables.{md,tex}
 tables: venv
 	$(BIN)/stiefelsym tables --report-dir reports

@@ -1,6 +1,8 @@
-"""``stiefelsym discover FLOW``: the conserved quantities of a flow among trace polynomials.
+"""``stiefelsym discover FLOW``: the conserved quantities of a flow among trace polynomials;
+``stiefelsym discover --correct CLAIM``: the formulas of a printed formula's shape that hold.
 
-Exit status: 0 every integral found is verified; 1 some integral is not; 2 bad input.
+Exit status: 0 every integral, partner or correction found is verified (an empty space of
+corrections, certified by a rank, is an answer too); 1 some is not; 2 bad input.
 """
 from __future__ import annotations
 
@@ -26,9 +28,11 @@ def _size(text: str) -> Size:
     return Size(n, r)
 
 
-@click.command("discover", cls=_Command, short_help="Find the conserved quantities of a flow among trace polynomials.")
-@click.argument("flow")
-@click.option("--size", "sizes", multiple=True, default=("4,2",), show_default=True, help="n,r (repeatable)")
+@click.command("discover", cls=_Command,
+               short_help="Find conserved quantities, Lax partners and corrections as exact solution spaces.")
+@click.argument("flow", required=False)
+@click.option("--size", "sizes", multiple=True, default=(), help="n,r (repeatable; default 4,2, and for --correct "
+              "the size of the ansatz, 3,2)")
 @click.option("--degree", default=4, show_default=True, type=click.IntRange(1, 6),
               help="the largest degree in X, P of a monomial")
 @click.option("--max-a", default=1, show_default=True, type=click.IntRange(0, 3), help="letters A per trace")
@@ -40,13 +44,26 @@ def _size(text: str) -> Size:
 @click.option("--lax", "lax", default=None,
               help="a Lax matrix L(λ) (LA2, module:function or file.py:function): find every A(λ) with "
                    "dL/dt = [A, L] instead of the conserved quantities")
+@click.option("--correct", "corrections", multiple=True, metavar="CLAIM",
+              help="the space of formulas of the printed shape that make CLAIM hold (a claim with a registered "
+                   "ansatz, 'all', or file.py:NAME, a CorrectionAnsatz of one's own); FLOW is not given then")
 @click.option("--report-dir", type=click.Path(path_type=Path), default=None,
-              help="also write discover.md there (nothing is written without it)")
-def discover(flow: str, sizes: tuple[str, ...], degree: int, max_a: int, no_products: bool,
-             methods: tuple[str, ...], seed: int, lax: str | None, report_dir: Path | None) -> None:
+              help="also write conserved.md there (with --correct: discover.md and discover.tex); nothing is "
+                   "written without it")
+def discover(flow: str | None, sizes: tuple[str, ...], degree: int, max_a: int, no_products: bool,
+             methods: tuple[str, ...], seed: int, lax: str | None, corrections: tuple[str, ...],
+             report_dir: Path | None) -> None:
     """FLOW: a catalog flow (neumann-normal, neumann-euclidean, geodesic-normal, geodesic-euclidean),
     module:function (a function of the scene returning {"X": Xdot, "P": Pdot}) or
-    hamiltonian:module:function."""
+    hamiltonian:module:function.  With --correct CLAIM, no FLOW: the corrections of CLAIM's printed
+    formula as a solution space (--correct all: every registered ansatz)."""
+    if corrections:
+        if flow is not None or lax is not None:
+            raise InputError("--correct searches the corrections of a claim: give no FLOW and no --lax with it")
+        _correct(corrections, sizes, methods, seed, report_dir)
+    if flow is None:
+        raise InputError("give a FLOW (or --correct CLAIM)")
+    sizes = sizes or ("4,2",)
     from .discover import conserved, resolve_flow
     try:
         f, text = resolve_flow(flow)
@@ -80,5 +97,54 @@ def discover(flow: str, sizes: tuple[str, ...], degree: int, max_a: int, no_prod
                         for v in I.verdicts.values())
     if report_dir is not None:
         report_dir.mkdir(parents=True, exist_ok=True)
-        (report_dir / "discover.md").write_text("\n".join(lines), encoding="utf-8")
+        (report_dir / "conserved.md").write_text("\n".join(lines), encoding="utf-8")
+    raise SystemExit(0 if ok else 1)
+
+
+def _correct(names: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str, ...], seed: int,
+             report_dir: Path | None) -> None:
+    from .discover import correction_space
+    from .discover_ansatze import CORRECTIONS, searches_for
+    from .discover_report import write_reports
+    from .discover import CorrectionAnsatz, load_object
+    chosen: list[str] = []
+    own: dict[str, CorrectionAnsatz] = {}
+    for name in names:
+        if name.count(":") == 1 and name not in CORRECTIONS:
+            try:
+                obj = load_object(*name.split(":"))
+                obj = obj() if callable(obj) and not isinstance(obj, CorrectionAnsatz) else obj
+            except ValueError as exc:
+                raise InputError(str(exc)) from None
+            if not isinstance(obj, CorrectionAnsatz):
+                raise InputError(f"{name} is not a CorrectionAnsatz (nor a function returning one)")
+            own[name] = obj
+            found = [name]
+        else:
+            found = list(CORRECTIONS) if name == "all" else searches_for(name)
+        if not found:
+            raise InputError(f"no correction ansatz for {name!r}; there are: {', '.join(CORRECTIONS)} "
+                             "(or give file.py:NAME, a CorrectionAnsatz of one's own)")
+        chosen += [x for x in found if x not in chosen]
+    spaces, ok = [], True
+    for name in chosen:
+        ansatz = own[name] if name in own else CORRECTIONS[name]()
+        for z in [_size(x) for x in sizes] or [ansatz.size]:
+            space = correction_space(ansatz, z, seed=seed, verify=methods)
+            for line in space.lines():
+                click.echo(line)
+            spaces.append(space)
+            ok = ok and (space.empty or space.verified) and space.contains_registered is not False
+    sweep = None
+    if any(x.startswith("2r-integrals-general-line") for x in chosen) and not sizes:
+        from .discover_ansatze import sweep_general_line
+        sweep = sweep_general_line(6, seed=seed)
+        bad = [x for x in sweep if x[3] not in ("proved", "checked")]
+        click.echo(f"the general line of (2r-integrals) at every 1 <= l <= r <= n <= 6: {len(sweep) - len(bad)} of "
+                   f"{len(sweep)} proved or checked")
+        for n, r, l, v in bad:
+            click.echo(f"  (n, r) = ({n}, {r}), l = {l}: {v}")
+        ok = ok and not bad
+    if report_dir is not None:
+        write_reports(spaces, report_dir, sweep)
     raise SystemExit(0 if ok else 1)

@@ -28,6 +28,7 @@ from fractions import Fraction
 from typing import Any, Callable, Sequence
 
 from .claims import Claim, Size, admissible
+from .ir import block
 
 #: the letters: (name, rows, columns, transpose, LaTeX)
 LETTERS = {"X": ("n", "r", "Xt", "X"), "Xt": ("r", "n", "X", "X^T"), "P": ("n", "r", "Pt", "P"),
@@ -316,10 +317,27 @@ def resolve_function(spec: str, table: dict[str, tuple[str, str]]) -> Callable[[
     return f
 
 
+def load_object(mod: str, name: str) -> Any:
+    """The object ``name`` of a module (dotted name) or of a file ``something.py``."""
+    import importlib
+    try:
+        if mod.endswith(".py"):
+            import importlib.util
+            mspec = importlib.util.spec_from_file_location(f"_discover_{abs(hash(mod))}", mod)
+            if mspec is None or mspec.loader is None:
+                raise ImportError(f"no such file: {mod}")
+            module = importlib.util.module_from_spec(mspec)
+            mspec.loader.exec_module(module)
+        else:
+            module = importlib.import_module(mod)
+        return getattr(module, name)
+    except (ImportError, AttributeError, OSError, SyntaxError) as exc:
+        raise ValueError(f"cannot load {mod}:{name}: {exc}") from None
+
+
 def resolve_flow(spec: str) -> tuple[Callable[[Any], Any], str]:
     """A flow by catalog name, by ``module:function`` or ``file.py:function`` (a function of the scene
     giving {"X": Ẋ, "P": Ṗ}), or by ``hamiltonian:module:function`` (the Dirac flow of a Hamiltonian)."""
-    import importlib
     if spec in FLOWS:
         mod, fn, how, text = FLOWS[spec]
         f = getattr(_catalog_module(mod), fn)
@@ -329,20 +347,7 @@ def resolve_flow(spec: str) -> tuple[Callable[[Any], Any], str]:
         how = parts[0] if len(parts) == 3 else "tangent"
         if how not in ("tangent", "hamiltonian"):
             raise ValueError(f"unknown kind of flow {how!r} (tangent or hamiltonian)")
-        mod, fn = parts[-2], parts[-1]
-        try:
-            if mod.endswith(".py"):
-                import importlib.util
-                mspec = importlib.util.spec_from_file_location(f"_discover_{abs(hash(mod))}", mod)
-                if mspec is None or mspec.loader is None:
-                    raise ImportError(f"no such file: {mod}")
-                module = importlib.util.module_from_spec(mspec)
-                mspec.loader.exec_module(module)
-            else:
-                module = importlib.import_module(mod)
-            f = getattr(module, fn)
-        except (ImportError, AttributeError, OSError, SyntaxError) as exc:
-            raise ValueError(f"cannot load {mod}:{fn}: {exc}") from None
+        f = load_object(parts[-2], parts[-1])
         return (hamiltonian_flow(f) if how == "hamiltonian" else f), spec
     raise ValueError(f"unknown flow {spec!r}: a catalog flow ({', '.join(FLOWS)}), module:function or "
                      "hamiltonian:module:function")
@@ -508,3 +513,392 @@ def lax_partner(L: Callable[[Any], Any], flow: Callable[[Any], Any], size: Size,
             res = run_one(claim, None if m == "free" else size, m, seed)
             verdicts[m if m != "free" else "free (all n, r)"] = res.verdict
     return space, verdicts
+
+
+# ---------------------------------------------------------------------------------------------
+# corrections: the formulas of the printed shape that hold, as an exact affine space
+
+@dataclass(frozen=True)
+class Term:
+    """One term of a correction ansatz: its value at a point (a function of the scene and of the point),
+    its name in the paper's notation, and the block of the slot it fills (None: the slot is one block)."""
+
+    text: str
+    latex: str
+    value: Callable[[Any, Any], Any]
+    block: tuple[int, int] | None = None
+
+    @property
+    def key(self) -> str:
+        """The term's name, with its block when the slot is a block matrix."""
+        return self.text if self.block is None else f"{self.text} in block ({self.block[0] + 1},{self.block[1] + 1})"
+
+
+@dataclass
+class CorrectionAnsatz:
+    """The space searched for a correction of one printed formula of a claim.
+
+    ``residual(s, slot)`` is the claim's residual (a matrix, or a dict of them) with the formula under
+    correction given by ``slot``, a function of (scene, point) as ``Term.value``; it must be affine in the
+    slot.  ``terms`` are listed most natural first (the printed shape before the rest): the solution is
+    written, modulo the homogeneous solutions, with the most natural terms.  ``printed`` and
+    ``registered`` are the coefficients (by term text) of the printed formula and of the registered
+    correction, when they lie in the ansatz."""
+
+    claim: str
+    label: str
+    slot: str
+    slot_latex: str
+    terms: list[Term]
+    residual: Callable[[Any, Callable[[Any, Any], Any]], Any]
+    point: Callable[[Any], Any]
+    description: str
+    description_latex: str
+    printed: dict[str, Fraction] | None = None
+    registered: dict[str, Fraction] | None = None
+    size: Size = field(default_factory=lambda: Size(3, 2))
+    realization: str = "standard"
+    blocks: tuple[int, int] = (1, 1)
+    #: whether the dimension-free method applies (the claim lives on T*V itself)
+    free: bool = False
+    #: what ``registered`` is
+    registered_name: str = "the registered correction"
+    #: the sizes besides the search's at which each solution is verified
+    verify_sizes: tuple[Size, ...] = ()
+
+    def vector(self, coeffs: dict[str, Fraction]) -> list[Fraction]:
+        names = [t.key for t in self.terms]
+        unknown = set(coeffs) - set(names)
+        if unknown:
+            raise KeyError(f"not terms of the ansatz of {self.claim}: {sorted(unknown)}")
+        return [Fraction(coeffs.get(x, 0)) for x in names]
+
+
+def combination(terms: Sequence[Term], coeffs: Sequence[Fraction]) -> Callable[[Any, Any], Any]:
+    """Σ cⱼ Tⱼ as a function of (scene, point); the empty sum is 0 · T₁ (a zero of the slot's shape)."""
+    pairs = [(c, t) for c, t in zip(coeffs, terms) if c]
+
+    def slot(s, w):
+        if not pairs:
+            return terms[0].value(s, w) * s.q(0)
+        acc = None
+        for c, t in pairs:
+            v = t.value(s, w)
+            v = v if c == 1 else v * s.q(c.numerator, c.denominator)
+            acc = v if acc is None else acc + v
+        return acc
+    return slot
+
+
+def _flat(v: Any) -> list[Any]:
+    """The matrices of a residual (a matrix, a scalar, or a dict/list of them) in a fixed order."""
+    if isinstance(v, dict):
+        return [x for k in v for x in _flat(v[k])]
+    if isinstance(v, (list, tuple)):
+        return [x for e in v for x in _flat(e)]
+    return [v]
+
+
+@dataclass
+class CorrectionSpace:
+    """The solutions of one correction ansatz at one size: an affine space modulo the combinations that
+    vanish identically on the phase space (certified empty when the sampled system is inconsistent)."""
+
+    ansatz: CorrectionAnsatz
+    size: Size
+    particular: list[Fraction] | None
+    basis: list[list[Fraction]]
+    zero_dim: int
+    equations: int
+    rank: int
+    rank_augmented: int
+    seed: int
+    seconds: float = 0.0
+    verdicts: dict[str, str] = field(default_factory=dict)
+    contains_registered: bool | None = None
+    contains_printed: bool | None = None
+
+    @property
+    def N(self) -> int:
+        return len(self.ansatz.terms)
+
+    @property
+    def empty(self) -> bool:
+        return self.particular is None
+
+    @property
+    def dimension(self) -> int | None:
+        """The dimension of the affine space of solutions (modulo what vanishes on the phase space)."""
+        return None if self.particular is None else len(self.basis)
+
+    @property
+    def verified(self) -> bool:
+        return bool(self.verdicts) and all(v in ("proved", "checked") for v in self.verdicts.values())
+
+    def certificate(self) -> str:
+        if self.particular is None:
+            return (f"no formula in this {self.N}-term space holds: over GF(2^61 - 1) the {self.equations} x "
+                    f"{self.N} system has rank {self.rank} and its augmented matrix rank {self.rank_augmented}")
+        what = ("exactly one formula holds" if not self.basis else
+                f"a {len(self.basis)}-dimensional affine space of formulas holds")
+        return (f"{what} in this {self.N}-term space, modulo the {self.zero_dim} independent combinations that "
+                f"vanish on the phase space (the {self.equations} x {self.N} system has rank {self.rank})")
+
+    def text(self, c: Sequence[Fraction] | None = None) -> str:
+        """Σ cⱼ Tⱼ in the paper's notation, block by block when the slot is a block matrix."""
+        c = self.particular if c is None else c
+        if c is None:
+            return "(none)"
+        return _render(self.ansatz, c, latex=False)
+
+    def latex(self, c: Sequence[Fraction] | None = None) -> str:
+        c = self.particular if c is None else c
+        if c is None:
+            return r"\text{(none)}"
+        return _render(self.ansatz, c, latex=True)
+
+    def lines(self) -> list[str]:
+        a, z = self.ansatz, self.size
+        out = [f"{a.claim} {a.label}, (n, r) = ({z.n}, {z.r}): {a.slot} in the {self.N}-term space {a.description}",
+               f"  {self.certificate()}"]
+        if self.particular is not None:
+            v = ", ".join(f"{m} {x}" for m, x in self.verdicts.items())
+            out.append(f"  {a.slot} = {self.text()}" + (f"    [{v}]" if v else ""))
+            for b in self.basis:
+                out.append(f"  + any multiple of {self.text(b)}")
+        if self.contains_printed is not None:
+            out.append(f"  the printed formula {'holds' if self.contains_printed else 'is not in the space'}")
+        if self.contains_registered is not None:
+            out.append(f"  {a.registered_name} {'is in the space' if self.contains_registered else 'is NOT in the space'}")
+        out.append(f"  searched and verified in {self.seconds:.2f} s (seed {self.seed})")
+        return out
+
+
+def _sum_text(parts: list[tuple[Fraction, Term]], latex: bool) -> str:
+    out = []
+    for x, t in parts:
+        a = abs(x)
+        if latex:
+            coef = "" if a == 1 else (rf"\tfrac{{{a.numerator}}}{{{a.denominator}}}" if a.denominator != 1 else str(a))
+            out.append(("-" if x < 0 else "+") + coef + t.latex)
+        else:
+            out.append(f"{'−' if x < 0 else '+'} {'' if a == 1 else f'{a}·'}{t.text}")
+    if not out:
+        return "0"
+    s = ("" if latex else " ").join(out)
+    if latex:
+        return s[1:] if s.startswith("+") else s
+    return s[2:] if s.startswith("+ ") else "−" + s[2:]
+
+
+def _render(a: CorrectionAnsatz, c: Sequence[Fraction], latex: bool) -> str:
+    parts = [(x, t) for x, t in zip(c, a.terms) if x]
+    if a.blocks == (1, 1):
+        return _sum_text([(x, t) for x, t in parts], latex)
+    rows, cols = a.blocks
+    grid = [[_sum_text([(x, t) for x, t in parts if t.block == (i, j)], latex) for j in range(cols)]
+            for i in range(rows)]
+    if latex:
+        return r"\begin{pmatrix}" + r"\\".join("&".join(row) for row in grid) + r"\end{pmatrix}"
+    return "[" + "; ".join(", ".join(row) for row in grid) + "]"
+
+
+def _in_span(v: Sequence[Fraction], basis: Sequence[Sequence[Fraction]]) -> bool:
+    """Whether v lies in the span of ``basis`` (exact rational ranks)."""
+    import flint
+    if not any(v):
+        return True
+    if not basis:
+        return False
+    B = flint.fmpq_mat([[flint.fmpq(x.numerator, x.denominator) for x in b] for b in basis])
+    Bv = flint.fmpq_mat([[flint.fmpq(x.numerator, x.denominator) for x in b] for b in list(basis) + [list(v)]])
+    return Bv.rank() == B.rank()
+
+
+def _reduce(v: list[int], echelon: list[list[int]], p: int) -> list[int]:
+    """v with the pivot columns of the reduced echelon rows ``echelon`` eliminated (mod p)."""
+    v = list(v)
+    for row in echelon:
+        j = next(k for k, x in enumerate(row) if x)
+        if v[j]:
+            c = v[j]
+            v = [(x - c * y) % p for x, y in zip(v, row)]
+    return v
+
+
+def _rref(rows: list[list[int]], N: int, p: int) -> list[list[int]]:
+    import flint
+    if not rows:
+        return []
+    R, rank = flint.nmod_mat(rows, p).rref()
+    return [[int(R[i, j]) for j in range(N)] for i in range(rank)]
+
+
+def correction_space(ansatz: CorrectionAnsatz, size: Size | None = None, *, seed: int = 0,
+                     verify: Sequence[str] = ("auto",), points: int | None = None) -> CorrectionSpace:
+    """Every formula Σ cⱼ Tⱼ of the ansatz that makes the claim's residual vanish on the phase space:
+    the residual of each term is sampled at random points over GF(2^61 − 1), the affine system solved,
+    the combinations that vanish on the phase space quotiented out, the coefficients reconstructed as
+    rationals, and the solution (and each direction of the space) verified by ``verify`` with the
+    catalog's claim.  An inconsistent sampled system certifies that the space is empty."""
+    import time
+
+    import flint
+    from .claims import load_catalog
+    from .fields import ModularField
+    from .ir import compile_claim
+    from .ir.evaluate import evaluate
+    from .runner import run_one
+    from .scene import REALIZATIONS, Scene
+
+    t0 = time.perf_counter()
+    size = size or ansatz.size
+    terms, N = ansatz.terms, len(ansatz.terms)
+    # the least natural terms first, so that the reduced echelon forms put their pivots there
+    order = list(reversed(range(N)))
+
+    def probe(s):
+        w = ansatz.point(s)
+        out = {}
+        for j, t in enumerate(terms):
+            out[f"S{j}"] = t.value(s, w)
+        zero = combination(terms, [Fraction(0)] * N)
+        for e, v in enumerate(_flat(ansatz.residual(s, zero))):
+            out[f"R|{e}"] = v
+        for j, t in enumerate(terms):
+            for e, v in enumerate(_flat(ansatz.residual(s, t.value))):
+                out[f"R{j}|{e}"] = v
+        return out
+    cons = REALIZATIONS[ansatz.realization]
+    g = compile_claim(probe, size.n, size.r, (cons.name, cons.build))
+    rng = random.Random(f"{seed}|correct|{ansatz.claim}|{size.n}|{size.r}|{N}")
+    slot_rows: list[list[int]] = []
+    rows: list[list[int]] = []
+    k, stable, last = 0, 0, (-1, -1)
+    # sample until the ranks of both systems stop growing (two more points change neither)
+    while True:
+        scene = Scene(size.n, size.r, ModularField(PRIME), chart="cayley", rng=rng,
+                      component=k % 2 if size.r == size.n else 0, realization=ansatz.realization)
+        out = evaluate(g, scene)
+        k += 1
+        S = [_entries_mod(out[f"S{j}"]) for j in order]
+        slot_rows += [[c[e] for c in S] for e in range(len(S[0]))]
+        keys = sorted((x for x in out if x.startswith("R|")), key=lambda x: int(x[2:]))
+        R0 = [e for x in keys for e in _entries_mod(out[x])]
+        cols = [[(a - b) % PRIME for a, b in zip((e for x in keys for e in _entries_mod(out[f"R{j}|{x[2:]}"])), R0)]
+                for j in order]
+        # Σ cⱼ (Rⱼ − R₀) = −R₀: a null vector (c, t) of [Rⱼ − R₀ | R₀] with t ≠ 0 gives c / t
+        rows += [[c[e] for c in cols] + [R0[e]] for e in range(len(R0))]
+        if len(rows) >= N + 8 and len(slot_rows) >= N + 8:
+            ranks = (flint.nmod_mat(rows, PRIME).rank(), flint.nmod_mat(slot_rows, PRIME).rank())
+            stable = stable + 1 if ranks == last else 0
+            last = ranks
+            if stable >= 2 and k >= (points or 3):
+                break
+    M = flint.nmod_mat(rows, PRIME)
+    rank_aug = M.rank()
+    rank = flint.nmod_mat([r[:-1] for r in rows], PRIME).rank()
+    Z = _rref(_nullspace(slot_rows, N, PRIME), N, PRIME)
+
+    def unorder(v: Sequence[Any]) -> list[Any]:
+        out = [None] * N
+        for pos, j in enumerate(order):
+            out[j] = v[pos]
+        return out
+
+    space = CorrectionSpace(ansatz, size, None, [], len(Z), len(rows), rank, rank_aug, seed)
+    if rank == rank_aug:
+        full = _nullspace(rows, N + 1, PRIME)
+        part = next((v for v in full if v[-1]), None)
+        homogeneous = [v[:-1] for v in full if not v[-1]]
+        H = _quotient(homogeneous, Z, PRIME) if homogeneous else []
+        if part is not None:
+            inv = pow(part[-1], PRIME - 2, PRIME)
+            p0 = [x * inv % PRIME for x in part[:-1]]
+            p0 = _reduce(p0, _rref(H + Z, N, PRIME), PRIME)
+            particular = [_rational(x, PRIME) if x else Fraction(0) for x in p0]
+            basis = [[_rational(x, PRIME) if x else Fraction(0) for x in h] for h in H]
+            if all(x is not None for x in particular) and all(x is not None for b in basis for x in b):
+                space.particular = unorder(particular)
+                space.basis = [unorder(b) for b in basis]
+    zero_basis = [unorder([_rational(x, PRIME) if x else Fraction(0) for x in z]) for z in Z]
+    if space.particular is not None:
+        span = space.basis + [z for z in zero_basis if all(x is not None for x in z)]
+        for name, coeffs in (("registered", ansatz.registered), ("printed", ansatz.printed)):
+            if coeffs is not None:
+                d = [a - b for a, b in zip(ansatz.vector(coeffs), space.particular)]
+                setattr(space, f"contains_{name}", _in_span(d, span))
+        try:
+            claim = load_catalog().get(ansatz.claim)
+        except KeyError:        # a search of one's own: its residual is the whole claim
+            claim = Claim(id=ansatz.claim, paper=("discover",), kind="id", section="discover",
+                          func=lambda s: {}, sizes=admissible(max(size.n, 1)), realization=ansatz.realization)
+        checks = {"": space.particular} | {f" + direction {i + 1}": [a + b for a, b in zip(space.particular, h)]
+                                            for i, h in enumerate(space.basis)}
+        at = [size] + [z for z in ansatz.verify_sizes if z != size]
+        for m in verify:
+            if m == "free" and not ansatz.free:
+                continue
+            verdicts = []
+            for c in checks.values():
+                slot = combination(terms, c)
+
+                def func(s, slot=slot):
+                    r = ansatz.residual(s, slot)
+                    return r if isinstance(r, dict) else {f"{ansatz.label} corrected": r}
+                for z in ([None] if m == "free" else at):
+                    verdicts.append(run_one(claim, z, m, seed, func=func).verdict)
+            key = "free (all n, r)" if m == "free" else (
+                m if len(at) == 1 else f"{m} at " + ", ".join(f"({z.n},{z.r})" for z in at))
+            space.verdicts[key] = next((v for v in verdicts if v not in ("proved", "checked")), verdicts[0])
+    elif ansatz.printed is not None:
+        space.contains_printed = False
+    if ansatz.registered is not None and space.particular is None:
+        space.contains_registered = False
+    space.seconds = time.perf_counter() - t0
+    return space
+
+
+@dataclass(frozen=True)
+class Factor:
+    """A factor of a sandwich UᵀMV: its text, its LaTeX and its value (a function of (scene, point) for
+    the outer factors, of the scene for the middle one); a middle factor may carry a scalar prefix."""
+
+    text: str
+    latex: str
+    value: Callable[..., Any]
+    prefix: str = ""
+    prefix_latex: str = ""
+
+
+def sandwich_terms(left: Sequence[Factor], right: Sequence[Factor], middles: Sequence[Factor],
+                   blocks: Sequence[tuple[int, int]], grid: tuple[int, int], zero: Callable[[Any], Any],
+                   preferred: Callable[[tuple[int, int], Factor, Factor, Factor], int] | None = None,
+                   extra: Sequence[tuple[Factor, tuple[int, int]]] = (),
+                   identities: dict[str, tuple[str, str]] | None = None) -> list[Term]:
+    """The terms (prefix)·U M V placed in one block of a ``grid`` of blocks (``zero(s)`` elsewhere), for
+    every block of ``blocks``, U in ``left``, V in ``right`` and M in ``middles``, and the ``extra``
+    single-block terms; sorted by ``preferred`` (smaller first), then in the order given.  ``identities``
+    renames a word that is simpler on the phase space (its text -> the simpler text and LaTeX)."""
+    rows, cols = grid
+
+    def placed(pos, f):
+        def value(s, w):
+            Z = zero(s)
+            return block([[f(s, w) if (i, j) == pos else Z for j in range(cols)] for i in range(rows)])
+        return value
+    out = []
+    for pos in blocks:
+        for U in left:
+            for V in right:
+                for M in middles:
+                    word = f"{U.text}{M.text}{V.text}"
+                    simple = (identities or {}).get(word)
+                    text = M.prefix + (simple[0] if simple else word)
+                    latex = M.prefix_latex + (simple[1] if simple else f"{U.latex}{M.latex}{V.latex}")
+                    f = (lambda s, w, U=U, V=V, M=M: U.value(s, w) @ M.value(s) @ V.value(s, w))
+                    key = preferred(pos, U, M, V) if preferred else 0
+                    out.append((key, Term(text, latex, placed(pos, f), pos)))
+    for F, pos in extra:
+        out.append((-1, Term(F.text, F.latex, placed(pos, F.value), pos)))
+    return [t for _, (_, t) in sorted(enumerate(out), key=lambda e: (e[1][0], e[0]))]

@@ -70,3 +70,149 @@ def test_an_empty_space_is_certified_by_a_rank():
     space, verdicts = lax_partner(lambda s: s.X @ s.X.T, flow, Size(4, 2), degree=0)
     assert space.particular is None and not verdicts
     assert space.certificate().startswith("no formula in this 4-term space holds") and space.rank < space.rank_augmented
+
+
+# -- corrections as solution spaces ---------------------------------------------------------------
+
+import dataclasses  # noqa: E402
+
+import pytest  # noqa: E402
+
+
+def _space(name, **kw):
+    from stiefelsym.discover import correction_space
+    from stiefelsym.discover_ansatze import CORRECTIONS
+    return correction_space(CORRECTIONS[name](), **kw)
+
+
+def test_man_la_correction_space_holds_the_registered_correction_and_is_proved_for_all_sizes():
+    sp = _space("manakov-dual-lax", verify=("auto", "free"))
+    assert (sp.N, sp.dimension, sp.zero_dim) == (96, 3, 8)
+    assert sp.text() == "[XᵀAP + λ·XᵀP, XᵀAX + λ·I_r; −PᵀAP − λ·PᵀP, −PᵀAX − λ·PᵀX]"
+    # the directions: 𝓛*_man(λ) itself, and λI_{2r}, I_{2r} (what commutes with every 𝓛)
+    assert sp.text(sp.basis[0]) == "[−Xᵀ(λI_n − A)⁻¹P, −Xᵀ(λI_n − A)⁻¹X; Pᵀ(λI_n − A)⁻¹P, Pᵀ(λI_n − A)⁻¹X]"
+    assert sp.contains_registered and sp.contains_printed is False
+    assert sp.verdicts == {"auto at (3,2), (2,1), (4,2), (4,3)": "checked", "free (all n, r)": "proved"}
+
+
+@pytest.mark.parametrize("name, block_12, block_21", [
+    ("double-neumann-dual-lax", "−Xᵀ(λI_n − A)⁻¹Y", "I_r + Ẋᵀ(λI_n − A)⁻¹Ẏ"),
+    ("complex-neumann-dual-lax", "−Zᵀ(λI_n − A)⁻¹Z̄", "I_r + Żᵀ(λI_n − A)⁻¹Ż̄"),
+], ids=["LA3*D", "LA3*"])
+def test_la3_star_corrections_are_the_only_formulas_of_their_shape(name, block_12, block_21):
+    sp = _space(name)
+    assert (sp.N, sp.dimension) == (48, 0)
+    assert sp.text() == f"[0, {block_12}; {block_21}, 0]"
+    assert sp.contains_registered and sp.contains_printed is False and sp.verified
+
+
+def test_c_eq_correction_is_y_pi_alone():
+    sp = _space("coupled-neumann-flow")
+    assert (sp.N, sp.dimension, sp.text()) == (32, 0, "YΠ")
+    assert sp.contains_registered and sp.contains_printed is False and sp.verified
+
+
+def test_so_nn_printed_order_space_is_certified_empty():
+    sp = _space("coupled-big-lax-normal")
+    assert sp.empty and sp.rank < sp.rank_augmented and not sp.verdicts
+    assert sp.certificate().startswith("no formula in this 64-term space holds")
+
+
+def test_so_nn_reordered_space_holds_the_registered_correction_only():
+    sp = _space("coupled-big-lax-normal/[A,L]")
+    assert (sp.N, sp.dimension, sp.text()) == (64, 0, "[0, −ν⁻¹·XYᵀ; −ν⁻¹·YXᵀ, 0]")
+    # the order alone does not repair it: the printed +ν⁻¹K is not in the space
+    assert sp.contains_registered and sp.contains_printed is False and sp.verified
+
+
+def test_a_corrupted_lax_matrix_has_no_partner_of_the_man_la_shape():
+    """Negative control: with the (1,1) block of 𝓛*_man(λ) negated, no 𝓐 of the ansatz holds."""
+    from stiefelsym import block, comm
+    from stiefelsym.discover import _catalog_module, correction_space
+    from stiefelsym.discover_ansatze import manakov_dual_lax
+    sec4 = _catalog_module("sec4_integrability")
+
+    def L_bad(s):
+        L = sec4.L_man_dual(s)
+        R = s.resolvent(s.lam)
+        X, P = s.X, s.P
+        return L + block([[X.T @ R @ P * 2, s.zeros(s.r, s.r, ("r", "r"))],
+                          [s.zeros(s.r, s.r, ("r", "r")), s.zeros(s.r, s.r, ("r", "r"))]])
+
+    def residual(s, slot):
+        flow = s.dirac_flow(sec4.H_manakov_square)
+        return s.d(L_bad, flow) - comm(L_bad(s), slot(s, {"X": s.X, "P": s.P}))
+    sp = correction_space(dataclasses.replace(manakov_dual_lax(), residual=residual))
+    assert sp.empty and sp.contains_registered is False
+    assert sp.certificate().startswith("no formula in this 96-term space holds")
+
+
+def test_a_corrupted_c_eq_does_not_return_the_corruption():
+    """Negative control: the printed QΠ is never a solution, and the Q̇ of a corrupted flow (−AX with the
+    wrong sign) has no last term of the shape that repairs it."""
+    from stiefelsym.discover import correction_space
+    from stiefelsym.discover_ansatze import coupled_neumann_flow
+    a = coupled_neumann_flow()
+
+    def residual(s, slot):
+        return a.residual(s, lambda t, w: slot(t, w) - t.A @ w["X"] * 2)
+    sp = correction_space(dataclasses.replace(a, residual=residual))
+    assert sp.empty
+
+
+@pytest.mark.parametrize("l, N", [(1, 6), (2, 17), (3, 23)], ids=["l=1", "l=2", "l=3"])
+def test_the_general_line_of_the_spectral_integrals_is_the_only_one_of_its_shape(l, N):
+    sp = _space(f"2r-integrals-general-line/l={l}")
+    assert (sp.N, sp.dimension) == (N, 0) and sp.contains_registered and sp.verified
+    assert sp.contains_printed is (l == 3)      # the printed line holds for l = r only
+
+
+def test_the_general_line_holds_at_every_l_up_to_n_4():
+    from stiefelsym.discover_ansatze import sweep_general_line
+    res = sweep_general_line(4)
+    assert len(res) == 20 and all(v in ("proved", "checked") for *_, v in res), res
+
+
+@pytest.mark.slow
+def test_the_general_line_holds_at_every_l_up_to_n_6():
+    from stiefelsym.discover_ansatze import sweep_general_line
+    res = sweep_general_line(6)
+    assert len(res) == 56 and all(v in ("proved", "checked") for *_, v in res), res
+
+
+def test_correct_through_the_command_line_and_the_report_is_reproducible(tmp_path):
+    from click.testing import CliRunner
+    from stiefelsym.cli import main
+    runs = [CliRunner().invoke(main, ["discover", "--correct", "coupled-neumann-flow", "--correct",
+                                      "coupled-big-lax-normal", "--report-dir", str(tmp_path / d)]) for d in "ab"]
+    assert all(r.exit_code == 0 for r in runs), runs[0].output
+    assert "the last term of Q̇ = YΠ    [auto at (3,2), (2,1), (4,2), (4,3) checked]" in runs[0].output
+    assert "no formula in this 64-term space holds" in runs[0].output
+    for f in ("discover.md", "discover.tex"):
+        assert (tmp_path / "a" / f).read_bytes() == (tmp_path / "b" / f).read_bytes()
+    md = (tmp_path / "a" / "discover.md").read_text(encoding="utf-8")
+    assert "| `coupled-neumann-flow` (C-eq) |" in md and "$Y\\Pi$ | matches" in md
+    bad = CliRunner().invoke(main, ["discover", "--correct", "no-such-claim"])
+    assert bad.exit_code == 2 and "no correction ansatz" in bad.output
+
+
+def test_correct_as_a_real_subprocess():
+    import subprocess
+    import sys
+    out = subprocess.run([sys.executable, "-m", "stiefelsym", "discover", "--correct", "coupled-neumann-flow"],
+                         capture_output=True, text=True, timeout=300)
+    assert out.returncode == 0, out.stderr
+    assert "exactly one formula holds in this 32-term space" in out.stdout
+
+
+def test_a_users_own_correction_search_through_the_command_line_and_the_api():
+    from pathlib import Path
+    from click.testing import CliRunner
+    from stiefelsym.cli import main
+    from stiefelsym.discover import correction_space, load_object
+    example = Path(__file__).resolve().parent.parent / "examples" / "my_correction.py"
+    r = CliRunner().invoke(main, ["discover", "--correct", f"{example}:ANSATZ"])
+    assert r.exit_code == 0, r.output
+    assert "X·M = XXᵀAX − XPᵀP    [auto proved, free (all n, r) proved]" in r.output
+    sp = correction_space(load_object(str(example), "ANSATZ"), verify=())
+    assert (sp.N, sp.dimension) == (5, 2)
