@@ -37,6 +37,20 @@ def _canonical(x: Any) -> str:
     return json.dumps(x, sort_keys=True, separators=(",", ":"))
 
 
+#: the fields of a decided record that a run again must reproduce exactly (its evidence); timings,
+#: messages and the rerun line are left out
+EVIDENCE = ("expected", "seed", "reductions", "certificate", "residual", "false_pass_bound", "checks", "witness",
+            "erratum", "certificate_data", "derivation")
+
+
+def _evidence_edits(record: dict, again: dict) -> list[str]:
+    """The evidence fields of a decided record that differ from a run again (none for a verdict that
+    depends on time: inconclusive, error)."""
+    if record.get("verdict") not in ("proved", "checked", "numeric", "fails", "undecided"):
+        return []
+    return [k for k in EVIDENCE if _canonical(record.get(k)) != _canonical(again.get(k))]
+
+
 def check_results(records: list[dict], registry: Registry, echo: Callable[[str], None] = print,
                   rerun: bool = True, hard: str | None = None) -> int:
     """Re-trace and re-check every record; the number of records that do not hold up.  With
@@ -81,6 +95,21 @@ def check_results(records: list[dict], registry: Registry, echo: Callable[[str],
             if again_fixed.verdict != r.get("verdict"):
                 echo(f"REJECTED {where}: the record says {r.get('verdict')!r}, a run again says "
                      f"{again_fixed.verdict!r}")
+                bad += 1
+                continue
+            edited = _evidence_edits(r, again_fixed.to_json())
+            if edited:
+                echo(f"REJECTED {where}: its evidence is not what a run again gives ({', '.join(edited)})")
+                bad += 1
+                continue
+        if r.get("method") == "free" and r.get("verdict") != "proved":
+            key = (cid, r.get("variant"))
+            again = free_done.get(key)
+            if again is None:
+                again = free_done[key] = run_free(claim, func)
+            if again.verdict != r.get("verdict"):
+                echo(f"REJECTED {where}: the record says {r.get('verdict')!r}, the dimension-free method again "
+                     f"says {again.verdict!r}")
                 bad += 1
                 continue
         if r.get("method") == "free" and r.get("verdict") == "proved":
