@@ -232,6 +232,10 @@ def _element(g: Graph, base: Ref, key, sides: list, default):
     return default
 
 
+#: engine steps whose values are coordinates (unit matrices of a basis): reading them is reading
+#: entries, whatever the claim does with them (a product and a trace read an entry just the same)
+COORDINATE_STEPS = frozenset({"stiefelsym.systems.real_coordinates", "stiefelsym.systems.complex_coordinates"})
+
 #: the read of a block matrix used as a matrix on ℝⁿ (see :func:`coordinate_reads`)
 BLOCK_SPLITTING = "a block splitting of R^n"
 
@@ -274,6 +278,8 @@ def coordinate_reads(g: Graph) -> dict[str, frozenset]:
             inv = spaces_of(sides[i]) & {"n"}
             if inv:
                 add("a constant matrix on R^n", inv)
+        elif op == "prim" and a[0].qualname in COORDINATE_STEPS:
+            add("the coordinate basis of R^n (an engine step)", {"n"})
         elif op == "block" and sides[i]:
             if any(S.atom[S.find(x)] in ("n", "opaque") for x in sides[i]):
                 add(BLOCK_SPLITTING, {"n"})

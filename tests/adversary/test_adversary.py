@@ -125,8 +125,6 @@ def test_check_rejects_a_catalog_verdict_made_by_a_claims_file(tmp_path):
 
 # -- H. coordinates read through an engine value (opaque sides) with a product and a trace -----------
 
-@pytest.mark.xfail(strict=True, reason="coordinate_reads records entry/mat/block only: tr(E11ᵀX) with E11 from "
-                   "an engine primitive keeps the equivariant chart")
 @pytest.mark.parametrize("method", ["exact", "auto"])
 def test_coordinate_read_through_an_engine_value_is_seen(method):
     assert _v("coordinate_via_engine_units.py", method, "adv-units") not in PASSING
@@ -176,7 +174,6 @@ def test_check_rejects_a_record_whose_evidence_was_edited(tmp_path):
 
 # -- K. absorption with an exact constant inside the float range --------------------------------------
 
-@pytest.mark.xfail(strict=True, reason="float64 absorbs X into 10^20·X; the residual is 0 within its error bound")
 def test_absorbed_residual_is_not_numeric():
     assert _v("float_absorption_exact_constant.py", "float", "adv-absorbed-int") not in PASSING
 
