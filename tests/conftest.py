@@ -35,3 +35,12 @@ def catalog():
     """The paper's catalog, loaded once (claims are frozen, so tests share it safely)."""
     from stiefelsym.claims import load_catalog
     return load_catalog()
+
+
+@pytest.fixture(autouse=True)
+def _engine_unsealed_after_each_test():
+    """A test that loads a claims file seals the engine for its process (stiefelsym.ir.seal); the next
+    test starts unsealed, so that tests may replace engine functions with monkeypatch."""
+    yield
+    from stiefelsym.ir import seal
+    seal._STATE.update(modules=None, print=None)
