@@ -1436,7 +1436,12 @@ def _ball_component(claim: Claim, n: int, r: int, seed: int, func: Callable, opt
                 return pos(i - first)
             clear = [i for i, b in enumerate(balls) if not b.contains(0)]
             # e_i >= |x| for every x in the ball: the upper end, rounded up by one ulp of float64
-            ups = np.nextafter(np.array([float(abs(b).upper()) for b in balls]), math.inf)
+            # (0 for the ball that is exactly 0)
+            raw = np.array([float(abs(b).upper()) for b in balls])
+            ups = np.nextafter(raw, math.inf)
+            for i in np.flatnonzero(raw == 0).tolist():
+                if balls[i].is_zero():
+                    ups[i] = 0.0
             scales = np.array(scale_list)
             with np.errstate(all="ignore"):
                 resolves = np.isfinite(ups) & np.isfinite(scales) & (ups <= FLOAT_RESOLUTION * scales)
