@@ -233,10 +233,12 @@ class Balls:
     *deferred*: ``defer`` says what it is, and ``M``, ``m`` are computed only if read (a product
     of it with another matrix is a rigorous solve instead, see :meth:`BallBackend.matmul`)."""
 
-    __slots__ = ("_M", "_m", "t", "defer", "_build")
+    __slots__ = ("_M", "_m", "t", "defer", "_build", "diag")
 
     def __init__(self, M: Any, m: np.ndarray | None, defer: tuple | None = None, build: Any = None) -> None:
         self._M, self._m, self.t, self.defer, self._build = M, m, None, defer, build
+        #: the diagonal (a list of balls) of a matrix that is diagonal by construction, else None
+        self.diag: list | None = None
 
     def _force(self) -> None:
         self._M, self._m = self._build()
@@ -339,7 +341,9 @@ class BallBackend(Backend):
         M = flint.arb_mat(k, k)
         for i, x in enumerate(xs):
             M[i, i] = x.b
-        return Balls(M, np.diag([x.m for x in xs]))
+        out = Balls(M, np.diag([x.m for x in xs]))
+        out.diag = [x.b for x in xs]
+        return out
 
     def add(self, a, b):
         return Balls(a.M + b.M, a.m + b.m)
@@ -363,6 +367,8 @@ class BallBackend(Backend):
                 self._products[(id(a), id(b))] = (a, b, out)
                 return out
         out = self._deferred_product(a, b)
+        if out is None and (a.diag is not None or b.diag is not None) and a.defer is None and b.defer is None:
+            out = _diagonal_product(a, b)
         if out is None:
             (m, j), k = a.shape(), b.shape()[1]
             if j == 0:
@@ -389,12 +395,16 @@ class BallBackend(Backend):
         return None
 
     def smul(self, a, c):
-        return Balls(a.M * c.b, a.m * c.m)
+        out = Balls(a.M * c.b, a.m * c.m)
+        if a.diag is not None:
+            out.diag = [x * c.b for x in a.diag]
+        return out
 
     def T(self, a):
         if a.t is None:
             a.t = Balls(a.M.transpose(), a.m.T)
             a.t.t = a
+            a.t.diag = a.diag
             self._products[(id(a), -1)] = (a, a.t, a.t)      # keeps both alive until release
         return a.t
 
@@ -423,6 +433,22 @@ class BallBackend(Backend):
     def block(self, grid):
         M = np.concatenate([np.concatenate([self.to_obj(b) for b in row], axis=1) for row in grid], axis=0)
         return self.from_obj(M)
+
+
+def _diagonal_product(a: Balls, b: Balls) -> Balls:
+    """A product with a diagonal matrix: rows (or columns) scaled, one ball product per entry."""
+    if a.diag is not None:
+        d, (m, k) = a.diag, b.shape()
+        flat = [x * d[i // k] for i, x in enumerate(b.M.entries())] if m and k else []
+        scales = np.diag(a.m)[:, None] * b.m
+    else:
+        d, (m, k) = b.diag, a.shape()
+        flat = [x * d[i % k] for i, x in enumerate(a.M.entries())] if m and k else []
+        scales = a.m * np.diag(b.m)[None, :]
+    out = Balls(_arb_mat(m, k, flat), scales)
+    if a.diag is not None and b.diag is not None:
+        out.diag = [x * y for x, y in zip(a.diag, b.diag)]
+    return out
 
 
 def _forced_product(a: Balls, b: Balls) -> tuple[Any, np.ndarray]:

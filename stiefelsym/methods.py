@@ -1357,7 +1357,8 @@ def run_ball(claim: Claim, n: int, r: int, seed: int, func: Callable | None = No
     (``fails``); all within 1e-8 of their term scales is ``numeric`` with the rigorous bound.
     When r = n both components of O(n) are evaluated."""
     options = _prepare(options)
-    return _hard_note(_run_ball(claim, n, r, seed, func or claim.func, options), options)
+    with one_blas_thread(), quiet_numpy():
+        return _hard_note(_run_ball(claim, n, r, seed, func or claim.func, options), options)
 
 
 def _ball_entries(value: Any, name: str) -> tuple[Callable[[int], str], list, list[float]]:
@@ -1373,6 +1374,14 @@ def _ball_entries(value: Any, name: str) -> tuple[Callable[[int], str], list, li
         if not hasattr(x, "b"):
             raise TypeError(f"check {pos}: not a number of the ball field ({type(x).__name__})")
     return (lambda i: pairs[i][0]), [x.b for _, x in pairs], [float(x.m) for _, x in pairs]
+
+
+def _contains_zero(value: Any) -> bool:
+    """Whether every ball of a native residual matrix contains 0 (False: look at the entries)."""
+    from .ball import Balls
+    if isinstance(value, Mat) and isinstance(value._n, Balls):
+        return backend(value._field).is_zero(value._n)
+    return False
 
 
 @dataclass
@@ -1407,6 +1416,7 @@ def _ball_component(claim: Claim, n: int, r: int, seed: int, func: Callable, opt
                 checks = call_claim(func, scene)
                 balls, scale_list, ranks, counts = [], [], [], []
                 positions: list[tuple[int, Callable[[int], str]]] = []    # (first index, position of an index)
+                whole: list[bool] = []      # per check: every ball contains 0 (one native test)
                 for name, value in checks.items():
                     if isinstance(value, Rank):
                         ranks.append(name)
@@ -1416,6 +1426,7 @@ def _ball_component(claim: Claim, n: int, r: int, seed: int, func: Callable, opt
                                           f"{value.value} (paper: {value.expected})")
                     else:
                         pos, bs, ms = _ball_entries(value, name)
+                        whole.append(_contains_zero(value))
                         positions.append((len(balls), pos))
                         balls.extend(bs)
                         scale_list.extend(ms)
@@ -1434,10 +1445,12 @@ def _ball_component(claim: Claim, n: int, r: int, seed: int, func: Callable, opt
             def position(i: int) -> str:
                 first, pos = max((p for p in positions if p[0] <= i), key=lambda p: p[0])
                 return pos(i - first)
-            clear = [i for i, b in enumerate(balls) if not b.contains(0)]
             # e_i >= |x| for every x in the ball: the upper end, rounded up by one ulp of float64
-            # (0 for the ball that is exactly 0)
-            raw = np.array([float(abs(b).upper()) for b in balls])
+            # (0 for the ball that is exactly 0); a ball excludes 0 where the lower end of |x| is
+            # positive (a positive float64 never rounds to 0 above 2^-1075)
+            raw = np.array([float(b.abs_upper()) for b in balls])
+            clear = [] if all(contain for contain in whole) else np.flatnonzero(
+                np.array([float(b.abs_lower()) for b in balls]) > 0).tolist()
             ups = np.nextafter(raw, math.inf)
             for i in np.flatnonzero(raw == 0).tolist():
                 if balls[i].is_zero():
