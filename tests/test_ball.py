@@ -214,3 +214,23 @@ def test_a_float_value_off_by_more_than_its_bound_is_caught(catalog):
     from ball_replay import Violation
     moved = [Violation(x.entry, x.value, x.bound, x.distance + 2 * x.bound + 1e-300) for x in errors]
     assert len(optimistic(moved)) == len(moved)
+
+
+# -- the command line and the Python API ------------------------------------------------------------------
+
+def test_the_command_line_runs_the_ball_method(run):
+    out = run("verify", "neumann-flow", "--size", "4,2", "--method", "ball", "--no-report")
+    assert out.exit_code == 0, out.output
+    assert "numeric" in out.output and "ball" in out.output
+
+
+def test_the_python_api_runs_the_ball_method():
+    from stiefelsym.api import verify
+    results = verify("neumann-lax", sizes=[(5, 2)], methods="ball", memory=None)
+    assert [r.verdict for r in results] == ["numeric"] and results.ok
+
+
+def test_the_ball_method_is_refused_on_dimension_claims(catalog):
+    from stiefelsym.runner import plan
+    dims = [c for c in catalog if c.kind == "dim"][:1]
+    assert dims and plan(dims, None, ["ball"]) == []
