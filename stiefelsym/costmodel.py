@@ -341,7 +341,7 @@ def check(method: str, claim: Any, n: int, r: int, budget: float | None = DEFAUL
 
 #: a lower bound of the n x n matrices a run holds at once, and of the bytes of one entry per method
 _SQUARE_MATRICES = 4
-_ENTRY_BYTES = {"float": 8, "modular": 8, "rational": 16, "exact": 16, "auto": 8, "ball": 48}
+_ENTRY_BYTES = {"float": 8, "modular": 8, "rational": 16, "exact": 16, "auto": 8, "ball": 56}
 
 
 def check_memory(method: str, claim: Any, n: int, r: int, memory_gib: float | None) -> None:

@@ -234,3 +234,31 @@ def test_the_ball_method_is_refused_on_dimension_claims(catalog):
     from stiefelsym.runner import plan
     dims = [c for c in catalog if c.kind == "dim"][:1]
     assert dims and plan(dims, None, ["ball"]) == []
+
+
+# -- hard cases ------------------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("method", ["float", "ball", "rational"])
+def test_a_claim_the_hard_case_does_not_touch_is_verified_at_random_points(catalog, method):
+    """near-pole rewrites λ only: a claim without λ is verified as without the case (here an erratum
+    at r = 1, which must fail as documented, instead of ending inconclusive)."""
+    c = catalog.get("gram-not-in-involution-with-psi")
+    res = run_one(c, Size(2, 1), method, SEED, hard="near-pole")
+    assert res.verdict == "fails" and res.expected, res.message
+    assert "changed no parameter of this claim: verified at random points" in res.message
+    assert "--hard near-pole" in res.rerun
+
+
+@pytest.mark.parametrize("case", ["near-pole", "near-equal-a", "large-momenta", "huge-momenta", "far-chart"])
+def test_ball_at_hard_cases(catalog, case):
+    """At a hard point the ball method certifies a corrupted claim's failure, and says nothing of a
+    true statement (the point is chosen): undecided, or verified at random points if untouched."""
+    bad = run_one(control_claim(), Size(4, 2), "ball", SEED, hard=case)
+    if case == "huge-momenta":
+        # terms near 1e480 whose difference is near 1e160: 424 bits do not reach it, and the term
+        # scales overflow float64: inconclusive, never a pass
+        assert bad.verdict == "inconclusive", bad.message
+    else:
+        assert bad.verdict == "fails", bad.message
+    good = run_one(catalog.get("neumann-lax"), Size(4, 2), "ball", SEED, hard=case)
+    assert good.verdict in ("undecided", "numeric") and good.expected, good.message
