@@ -1476,7 +1476,9 @@ def _ball_component(claim: Claim, n: int, r: int, seed: int, func: Callable, opt
             k = int(np.argmax(ratio))
             run.worst, run.bound = (float(ups[k]), float(scales[k])), float(np.max(ups))
             run.log.append(f"{field.name}: {len(clear)} of {len(balls)} enclosures exclude 0; largest bound "
-                           f"{run.bound:.2e}, worst resolution e = {ups[k]:.1e} at term scale m = {scales[k]:.1e}")
+                           f"{run.bound:.2e}, worst resolution e = {ups[k]:.1e} at term scale m = {scales[k]:.1e}"
+                           + ("" if np.all(np.isfinite(scales)) else
+                              " (a term scale overflows float64: the resolution test cannot be made)"))
             if clear:
                 i = clear[0]
                 run.entry = (position(i), balls[i].str(17, radius=True))

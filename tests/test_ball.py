@@ -261,4 +261,8 @@ def test_ball_at_hard_cases(catalog, case):
     else:
         assert bad.verdict == "fails", bad.message
     good = run_one(catalog.get("neumann-lax"), Size(4, 2), "ball", SEED, hard=case)
-    assert good.verdict in ("undecided", "numeric") and good.expected, good.message
+    if case == "huge-momenta":
+        # a known limit: the term scales (float64) overflow, so no resolution test, never a pass
+        assert good.verdict == "inconclusive" and "overflows float64" in good.message
+    else:
+        assert good.verdict in ("undecided", "numeric") and good.expected, good.message
