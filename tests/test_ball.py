@@ -266,3 +266,10 @@ def test_ball_at_hard_cases(catalog, case):
         assert good.verdict == "inconclusive" and "overflows float64" in good.message
     else:
         assert good.verdict in ("undecided", "numeric") and good.expected, good.message
+
+
+def test_a_ball_run_beyond_the_memory_budget_is_refused(run):
+    """A ball matrix entry takes 48 bytes of arb and 8 of its term scale: n = 10000 needs more than
+    4 n x n matrices' 20 GiB, refused up front (exit 2) instead of dying of memory."""
+    out = run("verify", "neumann-lax", "--size", "10000,2", "--method", "ball", "--memory", "4", "--no-report")
+    assert out.exit_code == 2 and "memory budget" in out.output
