@@ -477,7 +477,8 @@ def _skew_plus_diagonal(a: Balls) -> Any:
         D[i, i] = d[i]
     if not (H == D) or not all(x.is_exact() and x > 0 for x in d):
         return None
-    return 2 / min(d, key=lambda x: float(x))
+    # d holds 2 d_i: β = max 2/d_i, each rounded up (no comparison of rounded values picks the minimum)
+    return flint.arb(max(_upper(2 / x) for x in d))
 
 
 #: from this many rows on, an inverse of the Cayley chart's kind is deferred (a solve is cheaper)
