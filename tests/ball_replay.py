@@ -57,23 +57,30 @@ def _rng(seed, claim, n, r, comp):
     return random.Random(f"{seed}|{claim.id}|{n}|{r}|float" + (f"|component {comp}" if comp else ""))
 
 
-def float_model_errors(claim, n: int, r: int, seed: int = 0, func=None) -> list[Violation]:
-    """For every finite float64 residual entry at the float method's point(s) of (claim, n, r): its
-    value, its float64 bound and a rigorous lower bound of its true error (the distance to the
-    ball of the exact value)."""
+def float_model_errors(claim, n: int, r: int, seed: int = 0, func=None, hard: str | None = None) -> list[Violation]:
+    """For every finite float64 residual entry at the float method's point(s) of (claim, n, r) (at
+    the hard case ``hard``, if named): its value, its float64 bound and a rigorous lower bound of
+    its true error (the distance to the ball of the exact value at the same point)."""
+    from stiefelsym.hard import hard_case
     func = func or claim.func
     out = []
     for comp in ((0, 1) if r == n else (0,)):
+        options = {"hard": hard_case(hard), "hard_hits": []} if hard else None
         with one_blas_thread(), quiet_numpy():
             fs = Scene(n, r, FloatField(), chart="cayley", rng=_rng(seed, claim, n, r, comp), component=comp,
-                       realization=claim.realization)
+                       realization=claim.realization, options=options)
             try:
                 fchecks = call_claim(func, fs)
-            except DegenerateError:
+            except (DegenerateError, OverflowError):
                 continue     # float64 gives no value here (the float method goes on to mpmath): nothing to compare
         with working_precision(REFERENCE_BITS):
             bs = Scene(n, r, BallField(REFERENCE_BITS), chart="cayley", rng=_rng(seed, claim, n, r, comp),
                        component=comp, realization=claim.realization)
+            if hard:
+                # the float scene's point, every coordinate exactly (a hard value is the float64 number
+                # the float method took as its exact input): the ball scene draws nothing
+                for name, x in fs._point_values().items():
+                    bs._params[name] = BallNum(flint.arb(float(x.v)), abs(float(x.v)))
             bchecks = call_claim(func, bs)
             for name, fv in fchecks.items():
                 if isinstance(fv, (Rank, Count)):

@@ -22,6 +22,7 @@ import pytest
 from stiefelsym import admissible, comm
 from stiefelsym.ball import BallField, BallNum, working_precision
 from stiefelsym.claims import Claim, Size
+from stiefelsym.hard import HARD_CASES
 from stiefelsym.matrix import Mat
 from stiefelsym.results import PASSING
 from stiefelsym.runner import run_one
@@ -195,6 +196,27 @@ MODEL6 = _catalog_sizes(_load(), 6, which="last")
 @pytest.mark.parametrize("cid, size", MODEL6, ids=_ids(MODEL6))
 def test_the_float64_bound_contains_the_true_error_to_n_6(catalog, cid, size):
     assert not optimistic(float_model_errors(catalog.get(cid), size.n, size.r, SEED))
+
+
+HARD_CLAIMS = ("neumann-lax", "manakov-lax", "neumann-flow")
+
+
+@pytest.mark.parametrize("case", sorted(HARD_CASES))
+@pytest.mark.parametrize("cid", HARD_CLAIMS)
+def test_the_float64_bound_contains_the_true_error_at_hard_cases(catalog, cid, case):
+    """At a hard point (the float method's own: its hard values are the float64 numbers it took as
+    exact inputs, given to the ball scene coordinate by coordinate)."""
+    errors = float_model_errors(catalog.get(cid), 4, 2, SEED, hard=case)
+    assert not optimistic(errors), optimistic(errors)[:3]
+    if case != "huge-momenta":           # there float64 overflows: no finite value to compare
+        assert errors and optimistic(errors, shrink=1e-9)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("case", sorted(HARD_CASES))
+@pytest.mark.parametrize("cid, size", MODEL6, ids=_ids(MODEL6))
+def test_the_float64_bound_contains_the_true_error_at_every_hard_case(catalog, cid, size, case):
+    assert not optimistic(float_model_errors(catalog.get(cid), size.n, size.r, SEED, hard=case))
 
 
 @pytest.mark.parametrize("cid, size", [("neumann-lax", Size(4, 2)), ("neumann-flow", Size(6, 3)),
