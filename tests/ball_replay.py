@@ -81,7 +81,10 @@ def float_model_errors(claim, n: int, r: int, seed: int = 0, func=None, hard: st
                 # the float method took as its exact input): the ball scene draws nothing
                 for name, x in fs._point_values().items():
                     bs._params[name] = BallNum(flint.arb(float(x.v)), abs(float(x.v)))
-            bchecks = call_claim(func, bs)
+            try:
+                bchecks = call_claim(func, bs)
+            except DegenerateError:
+                continue     # the reference balls are too wide to solve a system (huge-momenta): nothing certified
             for name, fv in fchecks.items():
                 if isinstance(fv, (Rank, Count)):
                     continue
