@@ -180,11 +180,18 @@ def _warm_best(run: Callable[[], Any], warm: int, runs: int) -> tuple[float, flo
 # --------------------------------------------------------------------------- the targets
 
 class Bench:
-    def __init__(self) -> None:
+    def __init__(self, only: list[str] | None = None) -> None:
         self.rows: list[dict[str, Any]] = []
+        #: measure only the targets whose name contains one of these (None: every target)
+        self.only = only
+
+    def wanted(self, name: str) -> bool:
+        return not self.only or any(w in name for w in self.only)
 
     def target(self, name: str, goal: float, unit: str, better: str, fn: Callable[[], tuple[float, str]]) -> None:
         """Measure one target: fn() -> (value, note); ``better`` is "lower" or "higher"."""
+        if not self.wanted(name):
+            return
         t0 = time.perf_counter()
         try:
             value, note = fn()
@@ -204,7 +211,7 @@ def _fmt(v: float | None, unit: str) -> str:
     if v is None:
         return "-"
     if unit == "x":
-        return f"{v:,.0f}x"
+        return f"{v:,.0f}x" if v >= 100 else f"{v:.1f}x"
     if unit == "GiB":
         return f"{v:.3f} GiB"
     if unit == "ms":
@@ -255,16 +262,23 @@ def main(argv=None) -> int:
     ap.add_argument("--sizes", nargs="*", default=None, help="sizes n,r of the side-by-side LA1 table (2,1 3,1)")
     ap.add_argument("--no-baseline", action="store_true", help="skip the naive sympy baseline")
     ap.add_argument("--repeat", type=int, default=3, help="timed engine runs after 10 warm ones, at least 20 (the best is kept)")
-    ap.add_argument("--report-dir", default=str(ROOT / "reports"), help="where bench.json and bench.md go")
+    ap.add_argument("--report-dir", default=None,
+                    help="where bench.json and bench.md go (default reports/; with --only, nowhere unless given)")
     ap.add_argument("--per-run", type=float, default=20.0, help="time budget of one run at the large sizes (s)")
     ap.add_argument("--verify-timeout", type=float, default=1800.0, help="time budget of the make verify run (s)")
+    ap.add_argument("--only", nargs="*", default=None,
+                    help="measure only the targets whose name contains one of these words (e.g. --only ball)")
     args = ap.parse_args(argv)
     started = datetime.now(timezone.utc)
-    bench = Bench()
+    bench = Bench(args.only)
+    if args.only:
+        args.quick = True
     print(f"{'target':<52} {'measured':>14}  {'goal':>15}  {'ratio':>15}  status   note")
 
     # 1. make verify (n <= 6) and its peak memory: first, so that RUSAGE_CHILDREN is its own
-    if args.quick:
+    if args.only:
+        pass
+    elif args.quick:
         bench.rows.append({"target": "make verify, n <= 6, 2 jobs (wall)", "measured": None, "goal": 60.0,
                            "unit": "s", "better": "lower", "ratio": None, "status": "skipped",
                            "note": "--quick", "bench_seconds": 0})
@@ -353,6 +367,32 @@ def main(argv=None) -> int:
                                     f"took {1e3 * cold.seconds:.0f} ms; {(best.certificate or '')[:100]}")
     bench.target("float LA1 check, (200,100)", 10.0, "ms", "lower", float200)
 
+    # 5b. the ball check of LA1 against the float64 check, side by side (interleaved warm runs)
+    def ball_over_float(n: int, r: int) -> Callable[[], tuple[float, str]]:
+        def run() -> tuple[float, str]:
+            size = Size(n, r)
+            for _ in range(2):
+                run_one(LA1, size, "float", seed=0)
+                run_one(LA1, size, "ball", seed=0)
+            k = max(5, args.repeat)
+            cpu: dict[str, float] = {"float": math.inf, "ball": math.inf}
+            last: dict[str, Any] = {}
+            for _ in range(k):
+                for m in ("float", "ball"):
+                    c0 = time.process_time()
+                    last[m] = run_one(LA1, size, m, seed=0)
+                    cpu[m] = min(cpu[m], time.process_time() - c0)
+            f, b = last["float"], last["ball"]
+            if b.verdict != "numeric" or f.verdict != "numeric":
+                raise NotYet(f"float {f.verdict}, ball {b.verdict}: {(b.message or '')[:120]}")
+            bound = re.search(r"\|exact residual\| <= ([0-9.e+-]+)", b.certificate or "")
+            return cpu["ball"] / cpu["float"], (
+                f"CPU: ball {1e3 * cpu['ball']:.0f} ms, float64 {1e3 * cpu['float']:.1f} ms (best of {k} interleaved "
+                f"warm runs after 2, one BLAS thread); ball: rigorous |residual| <= {bound.group(1) if bound else '?'}")
+        return run
+    bench.target("ball / float64 LA1 check, (200,100)", 20.0, "x", "lower", ball_over_float(200, 100))
+    bench.target("ball / float64 LA1 check, (40,20)", 20.0, "x", "lower", ball_over_float(40, 20))
+
     # 6. the dimension-free proof of LA1, warm
     def free() -> tuple[float, str]:
         res = run_one(LA1, None, "free", seed=0)
@@ -382,6 +422,8 @@ def main(argv=None) -> int:
 
     # side by side: LA1 under every method against the baseline, in this run
     sizes = [tuple(map(int, s.split(","))) for s in args.sizes] if args.sizes else [(2, 1), (3, 1)]
+    if args.only:
+        sizes = []
     side: list[dict[str, Any]] = []
     print("\nLA1 side by side (CPU seconds, best of %d warm runs after 10 for the engine); ratio = baseline / method"
           % max(20, args.repeat))
@@ -392,7 +434,7 @@ def main(argv=None) -> int:
             print(f"{f'({n},{r})':>7} {'sympy':>9} {'proved':>12} {b:>10.3f} {'1':>12}")
             side.append({"size": f"({n},{r})", "method": "naive sympy", "verdict": "proved", "seconds": b,
                          "ratio": 1.0})
-        for m in ("exact", "modular", "rational", "float", "free"):
+        for m in ("exact", "modular", "rational", "float", "ball", "free"):
             size = None if m == "free" else Size(n, r)
             _wall_s, best, res = _warm_best(lambda: run_one(LA1, size, m, seed=0), 10, max(20, args.repeat))
             verdict = res.verdict
@@ -405,7 +447,11 @@ def main(argv=None) -> int:
            "python": platform.python_version(), "cpus": os.cpu_count(), "quick": args.quick,
            "command": "python bench/bench.py" + (" --quick" if args.quick else ""),
            "commit": _commit(), "targets": bench.rows, "side_by_side": side}
-    out_dir = Path(args.report_dir)
+    if args.only and args.report_dir is None:
+        met = sum(1 for r in bench.rows if r["status"] == "met")
+        print(f"\n{met} of {len(bench.rows)} targets met (--only: no report written)")
+        return 0
+    out_dir = Path(args.report_dir or ROOT / "reports")
     out_dir.mkdir(parents=True, exist_ok=True)
     (out_dir / "bench.json").write_text(json.dumps(doc, indent=1) + "\n", encoding="utf-8")
     (out_dir / "bench.md").write_text(markdown(doc), encoding="utf-8")

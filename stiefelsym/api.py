@@ -60,7 +60,7 @@ def verify(claims: ClaimRef | Iterable[ClaimRef] | None = None, *,
     ``claims``: claim ids, :class:`Claim` objects (from ``@claim``), or None for every claim of
     ``files`` (or the catalog when no file is given).  ``files``: claims files or directories of
     them.  ``sizes``: (n, r) pairs (default: each claim's own).  ``methods``: ``auto``, ``exact``,
-    ``rational``, ``modular``, ``float``, ``free``.  ``timeout`` (seconds) and ``memory`` (GiB,
+    ``rational``, ``modular``, ``float``, ``ball``, ``free``.  ``timeout`` (seconds) and ``memory`` (GiB,
     None: no limit) are the budgets of each run, which runs in a forked worker process (``jobs``
     of them).  ``budget``: refuse, before anything runs, a run the cost model predicts to take
     longer (seconds).  ``scheduler``: the address of a dask.distributed scheduler.

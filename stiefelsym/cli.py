@@ -220,7 +220,9 @@ class MethodType(click.ParamType):
 METHOD_HELP = ("Verification method, repeatable (default: auto).  auto: the fastest "
                "proof-grade method for each claim; exact: symbolic, every point; rational: "
                "random exact points over Q; modular: random points over a prime field; "
-               "float: floating point with precision escalation (evidence, not proof); free: "
+               "float: floating point with precision escalation (evidence, not proof); ball: rigorous "
+               "arb enclosures at the float method's exact points (a certified nonzero residual fails; "
+               "numeric bounds the residual at that point, it does not prove the identity); free: "
                "dimension-free algebra, all n and r at once.")
 
 
@@ -613,7 +615,7 @@ class _Stdout:
               help="stdout: one line per result and a summary, or the JSON results, or JUnit XML.")
 @click.option("--no-report", is_flag=True, help="Write no report files.")
 @click.option("--hard", type=click.Choice(sorted(HARD_CASES)), default=None,
-              help="Evaluate at a hard numerical case (rational, modular and float methods): "
+              help="Evaluate at a hard numerical case (rational, modular, float and ball methods): "
                    + "; ".join(f"{k}: {v.description}" for k, v in sorted(HARD_CASES.items())) + ".")
 @click.option("--timeout", type=click.FloatRange(min=0, min_open=True), default=DEFAULT_TIMEOUT,
               show_default=True, metavar="SECONDS",
@@ -732,7 +734,7 @@ def _verify(out: Any, ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tu
     if max_n is not None and sizes:
         raise InputError("--max-n and --size contradict each other: give one of them")
     if hard is not None and set(methods or ("auto",)) & {"exact", "free"}:
-        raise InputError("--hard evaluates sampled points: use it with --method rational, modular, float "
+        raise InputError("--hard evaluates sampled points: use it with --method rational, modular, float, ball "
                          "or auto")
     # reports are written only where --report-dir says (make verify: reports/), never by default, so
     # that a run of a few claims never overwrites the committed appendix

@@ -8,6 +8,7 @@
 * ``modular``  the same over GF(p), a fresh prime p in [2^60, 2^61) per point,
                with a height bound for the primes that divide the numerator.
 * ``float``    float64 with a running error bound; mpmath escalation.
+* ``ball``     rigorous ball arithmetic (arb) at the float method's exact points, 53 to 424 bits.
 
 Sampled methods never decide a rank "at every point" (verdict ``undecided``),
 and a check without entries is an error under every method.
@@ -882,10 +883,23 @@ def _prepare(options: dict | None) -> dict | None:
     return options
 
 
-def _hard_note(res: Result, options: dict | None) -> Result:
-    if options and options.get("hard") and not options.get("hard_hits"):
-        note = f"the hard case {options['hard'].name} changed no parameter of this claim"
-        res.message = f"{res.message}; {note}" if res.message else note
+def _untouched(options: dict | None) -> bool:
+    """A hard case was asked for and changed no parameter of the claim (after a run with it)."""
+    return bool(options and options.get("hard") and not options.get("hard_hits"))
+
+
+def _hard_or_random(run: Callable[[dict | None], Result], options: dict | None) -> Result:
+    """The run at the hard case; when the case changed no parameter of the claim, its point was an
+    ordinary random point, so the claim is verified as without the case (random points, with their
+    bounds and verdicts), and the result says so."""
+    res = run(options)
+    if not _untouched(options):
+        return res
+    plain = {k: v for k, v in options.items() if k not in ("hard", "hard_hits")} or None
+    res = run(plain)
+    note = (f"the hard case {options['hard'].name} changed no parameter of this claim: verified at random "
+            f"points as without it")
+    res.message = f"{res.message}; {note}" if res.message else note
     return res
 
 
@@ -897,7 +911,7 @@ def run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callabl
     POINTS_TARGET (``trials`` fixes it instead: a witness search, whose passes claim no more than
     their bound).  Hard cases are evaluated at POINTS_MIN points, with no bound."""
     options = _prepare(options)
-    return _hard_note(_run_points(claim, n, r, kind, seed, func or claim.func, trials, options), options)
+    return _hard_or_random(lambda o: _run_points(claim, n, r, kind, seed, func or claim.func, trials, o), options)
 
 
 def _prime_field(claim: Claim, n: int, r: int, seed: int, t: int, attempt: int) -> ModularField:
@@ -1150,7 +1164,7 @@ def run_float(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
     When r = n both components of O(n) are evaluated."""
     options = _prepare(options)
     with one_blas_thread(), quiet_numpy():
-        res = _hard_note(_run_float(claim, n, r, seed, func or claim.func, options), options)
+        res = _hard_or_random(lambda o: _run_float(claim, n, r, seed, func or claim.func, o), options)
     if res.verdict == "numeric" and n <= FLOAT_CONFIRM_N and not options:
         res = _confirm_numeric(res, claim, n, r, seed, func)
     return res
@@ -1365,6 +1379,222 @@ def _run_float(claim: Claim, n: int, r: int, seed: int, func: Callable, options:
     return done("numeric")
 
 
+# ---------------------------------------------------------------------------
+# ball arithmetic: rigorous enclosures at the float method's exact points
+
+BALL_CERTIFICATE = (
+    "ball arithmetic (arb): every residual entry is enclosed in a ball that contains its exact value at "
+    "this exact point of T*V (parameters k/2^40, exact constants), by the inclusion property of arb")
+
+
+def run_ball(claim: Claim, n: int, r: int, seed: int, func: Callable | None = None,
+             options: dict | None = None) -> Result:
+    """Rigorous ball arithmetic (arb) at the exact point the float method draws, at 53, 106, 212
+    and 424 bits until the enclosures decide: one that excludes 0 is a certified nonzero residual
+    (``fails``); all within 1e-8 of their term scales is ``numeric`` with the rigorous bound.
+    When r = n both components of O(n) are evaluated."""
+    options = _prepare(options)
+    with one_blas_thread(), quiet_numpy():
+        return _hard_or_random(lambda o: _run_ball(claim, n, r, seed, func or claim.func, o), options)
+
+
+def _ball_entries(value: Any, name: str) -> tuple[Callable[[int], str], list, list[float]]:
+    """The balls of a residual over the ball field, their term scales and the position of an
+    entry by its index (formatted only for the entry that decides)."""
+    from .ball import Balls, entries_of
+    if isinstance(value, Mat) and isinstance(value._n, Balls):
+        balls, scales = entries_of(value._n)
+        cols = value._n.shape()[1]
+        return (lambda i: f"{name}[{i // cols + 1},{i % cols + 1}]"), balls, scales.tolist()
+    pairs = _entries(value, name)
+    for pos, x in pairs:
+        if not hasattr(x, "b"):
+            raise TypeError(f"check {pos}: not a number of the ball field ({type(x).__name__})")
+    return (lambda i: pairs[i][0]), [x.b for _, x in pairs], [float(x.m) for _, x in pairs]
+
+
+def _contains_zero(value: Any) -> bool:
+    """Whether every ball of a native residual matrix contains 0 (False: look at the entries)."""
+    from .ball import Balls
+    if isinstance(value, Mat) and isinstance(value._n, Balls):
+        return backend(value._field).is_zero(value._n)
+    return False
+
+
+@dataclass
+class _BallDecision:
+    status: str                  # "pass", "bad", "nonzero", "zero", "unresolved", "empty"
+    field: str = ""
+    log: list[str] = dc_field(default_factory=list)
+    entry: tuple[str, str] | None = None          # (position, enclosure) of the deciding entry
+    worst: tuple[float, float] = (0.0, 0.0)       # the bound e and scale m of the worst e/m
+    bound: float = 0.0                            # the largest bound over all entries
+    ranks: list[str] = dc_field(default_factory=list)
+    count_problems: list[str] = dc_field(default_factory=list)
+    point: dict[str, str] = dc_field(default_factory=dict)
+
+
+def _ball_rng(seed: int, claim: Claim, n: int, r: int, comp: int) -> random.Random:
+    """The float method's random source: the ball method evaluates at the float method's point."""
+    return random.Random(f"{seed}|{claim.id}|{n}|{r}|float" + (f"|component {comp}" if comp else ""))
+
+
+def _ball_component(claim: Claim, n: int, r: int, seed: int, func: Callable, options: dict | None,
+                    comp: int) -> _BallDecision:
+    from .ball import BALL_LADDER, BallField, working_precision
+    run = _BallDecision("unresolved")
+    nonzero_claim = claim.expect == "nonzero"
+    for prec in BALL_LADDER:
+        field = BallField(prec)
+        with working_precision(prec):
+            try:
+                scene = Scene(n, r, field, chart="cayley", rng=_ball_rng(seed, claim, n, r, comp), component=comp,
+                              realization=claim.realization, options=options)
+                checks = call_claim(func, scene)
+                balls, scale_list, ranks, counts = [], [], [], []
+                positions: list[tuple[int, Callable[[int], str]]] = []    # (first index, position of an index)
+                whole: list[bool] = []      # per check: every ball contains 0 (one native test)
+                for name, value in checks.items():
+                    if isinstance(value, Rank):
+                        ranks.append(name)
+                    elif isinstance(value, Count):
+                        if value.value != value.expected:
+                            counts.append(f"{name}: {value.meaning + ': ' if value.meaning else ''}"
+                                          f"{value.value} (paper: {value.expected})")
+                    else:
+                        pos, bs, ms = _ball_entries(value, name)
+                        whole.append(_contains_zero(value))
+                        positions.append((len(balls), pos))
+                        balls.extend(bs)
+                        scale_list.extend(ms)
+            except DegenerateError as exc:
+                run.log.append(f"{field.name}: {exc}")
+                continue
+            finally:
+                release = getattr(field.__dict__.get("_backend"), "release", None)
+                if release is not None:      # the evaluation is over: its remembered products may go
+                    release()
+            run.ranks, run.count_problems, run.field = ranks, counts, field.name
+            if not balls:
+                run.status = "empty"
+                return run
+
+            def position(i: int) -> str:
+                first, pos = max((p for p in positions if p[0] <= i), key=lambda p: p[0])
+                return pos(i - first)
+            # e_i >= |x| for every x in the ball: the upper end, rounded up by one ulp of float64
+            # (0 for the ball that is exactly 0); a ball excludes 0 where the lower end of |x| is
+            # positive (a positive float64 never rounds to 0 above 2^-1075)
+            raw = np.array([float(b.abs_upper()) for b in balls])
+            clear = [] if all(contain for contain in whole) else np.flatnonzero(
+                np.array([float(b.abs_lower()) for b in balls]) > 0).tolist()
+            ups = np.nextafter(raw, math.inf)
+            for i in np.flatnonzero(raw == 0).tolist():
+                if balls[i].is_zero():
+                    ups[i] = 0.0
+            scales = np.array(scale_list)
+            with np.errstate(all="ignore"):
+                resolves = np.isfinite(ups) & np.isfinite(scales) & (ups <= FLOAT_RESOLUTION * scales)
+                ratio = np.where(scales > 0, ups / np.where(scales > 0, scales, 1.0),
+                                 np.where(ups == 0, 0.0, math.inf))
+            k = int(np.argmax(ratio))
+            run.worst, run.bound = (float(ups[k]), float(scales[k])), float(np.max(ups))
+            run.log.append(f"{field.name}: {len(clear)} of {len(balls)} enclosures exclude 0; largest bound "
+                           f"{run.bound:.2e}, worst resolution e = {ups[k]:.1e} at term scale m = {scales[k]:.1e}"
+                           + ("" if np.all(np.isfinite(scales)) else
+                              " (a term scale overflows float64: the resolution test cannot be made)"))
+            if clear:
+                i = clear[0]
+                run.entry = (position(i), balls[i].str(17, radius=True))
+                run.point = {name: field.describe(v) for name, v in scene._point_values().items()}
+                run.status = "nonzero" if nonzero_claim else "bad"
+                return run
+            if bool(np.all(resolves)):
+                run.status = "zero" if nonzero_claim else "pass"
+                return run
+    run.status = "unresolved"
+    return run
+
+
+def _run_ball(claim: Claim, n: int, r: int, seed: int, func: Callable, options: dict | None) -> Result:
+    res = _base_result(claim, n, r, "ball", seed)
+    t0 = time.perf_counter()
+    comps = (0, 1) if r == n else (0,)
+    res.reductions = [CAYLEY_REDUCTION.format(
+        D=" D" if r == n else "", comp="; both components of O(n)" if r == n else "")
+        + "; the float method's exact point (parameters k/2^40); rigorous ball arithmetic (arb)"]
+    if options and options.get("hard"):
+        res.reductions.append(f"hard case: {options['hard'].description} (the hard value's ball midpoint, "
+                              f"taken as an exact input)")
+    runs = [_ball_component(claim, n, r, seed, func, options, c) for c in comps]
+    log = "; ".join((f"component {c + 1}: " if len(comps) > 1 else "") + "; ".join(run.log)
+                    for c, run in zip(comps, runs))
+    where = lambda c: f" (component {c + 1})" if len(comps) > 1 else ""  # noqa: E731
+
+    def done(verdict: str) -> Result:
+        if verdict in ("numeric", "proved") and options and options.get("hard"):
+            verdict = "undecided"
+            res.message = ("not applicable: resolved at the hard point, which is chosen, not random, so no "
+                           "verdict on the statement follows; " + (res.certificate or res.message))
+        res.verdict = verdict
+        res.seconds = time.perf_counter() - t0
+        return res
+
+    def witness(c: int, run: _BallDecision) -> dict[str, Any]:
+        pos, ball = run.entry
+        return {"seed": seed, "trial": 0, "attempt": 0, "component": c, "field": run.field,
+                "check": pos.split("[")[0], "entry": pos, "value": ball, "point": run.point}
+
+    counts = list(dict.fromkeys(p for run in runs for p in run.count_problems))
+    if counts:
+        res.certificate = "; ".join(counts) + " (integers, exact)"
+        return done("fails")
+    if any(run.status == "empty" for run in runs):
+        res.message = "not applicable: no residuals to enclose (ranks are decided exactly)"
+        return done("inconclusive")
+    ranks = list(dict.fromkeys(name for run in runs for name in run.ranks))
+    res.message = log
+    if claim.expect == "nonzero":
+        hit = next(((c, run) for c, run in zip(comps, runs) if run.status == "nonzero"), None)
+        if hit is not None:
+            c, run = hit
+            res.witness = witness(c, run)
+            res.residual = f"{run.entry[0]} in {run.entry[1]}"
+            res.certificate = (f"{BALL_CERTIFICATE}; {run.field}{where(c)}: {run.entry[0]} lies in "
+                               f"{run.entry[1]}, which excludes 0: the residual is not identically zero "
+                               f"(certified at this point)")
+            return done("proved")
+        ex = run_points(claim, n, r, "rational", seed, func, options=options)
+        if ex.verdict in ("proved", "fails"):
+            res.witness, res.false_pass_bound = ex.witness, ex.false_pass_bound
+            res.certificate = f"no enclosure excludes 0; exact rational points: {ex.certificate}"
+            return done(ex.verdict)
+        res.message = f"neither the enclosures nor exact rational points decide ({ex.verdict}: {ex.message}) | {log}"
+        return done("inconclusive")
+    bad = next(((c, run) for c, run in zip(comps, runs) if run.status == "bad"), None)
+    if bad is not None:
+        c, run = bad
+        res.witness = witness(c, run)
+        res.residual = f"{run.entry[0]} in {run.entry[1]}"
+        res.certificate = (f"{BALL_CERTIFICATE}; {run.field}{where(c)}: the enclosure {run.entry[1]} of "
+                           f"{run.entry[0]} excludes 0, so the exact residual is nonzero at this point "
+                           f"(a certified witness)")
+        return done("fails")
+    if any(run.status != "pass" for run in runs):
+        res.message = "precision ladder (53, 106, 212, 424 bits) exhausted without resolving enclosures: " + log
+        return done("inconclusive")
+    res.certificate = BALL_CERTIFICATE + "; " + "; ".join(
+        f"{f'component {c + 1}, ' if len(comps) > 1 else ''}{run.field}: every enclosure contains 0 and "
+        f"lies in [-e, e] with e <= 1e-8 x its term scale (largest e = {run.bound:.1e}; worst e/m: "
+        f"{run.worst[0]:.1e} at m = {run.worst[1]:.1e}); so |exact residual| <= {run.bound:.1e} at this point"
+        for c, run in zip(comps, runs))
+    if ranks:
+        res.message = (f"not applicable: {', '.join(ranks)}: ranks are decided by exact arithmetic (methods exact, "
+                       f"rational, modular); balls cannot. The residuals are enclosed: {res.certificate} | {log}")
+        return done("undecided")
+    return done("numeric")
+
+
 def run_exact_isolated(claim: Claim, n: int, r: int, seed: int, func: Callable | None = None,
                        time_budget: float = EXACT_TIME_LIMIT) -> Result:
     """run_exact in a child process that is killed when it exceeds its budget (no hang, ever).
@@ -1399,4 +1629,5 @@ METHOD_RUNNERS = {
     "modular": lambda c, n, r, seed, func=None, options=None: run_points(c, n, r, "modular", seed, func,
                                                                          options=options),
     "float": lambda c, n, r, seed, func=None, options=None: run_float(c, n, r, seed, func, options),
+    "ball": lambda c, n, r, seed, func=None, options=None: run_ball(c, n, r, seed, func, options),
 }

@@ -330,7 +330,7 @@ def _correction_status(rs: list[Result], planned: Sequence[tuple[int, int]] = ()
 
 
 #: the order of authority of the methods for a check's detail (most rigorous first)
-METHOD_ORDER = ("exact", "rational", "modular", "auto", "float", "free")
+METHOD_ORDER = ("exact", "rational", "modular", "auto", "ball", "float", "free")
 DIMENSION_STATUSES = ("rank", "rank-mismatch", "count", "count-mismatch")
 
 

@@ -20,7 +20,7 @@ from .pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT, GIB, Outcome, Terminated,
 from .results import PASSING, VERDICTS, Result
 from .scene import SizeError
 
-METHODS = ("auto", "exact", "rational", "modular", "float", "free")
+METHODS = ("auto", "exact", "rational", "modular", "float", "ball", "free")
 #: the verdicts that are never expected: the method could not decide, or the check broke
 NEVER_EXPECTED = ("inconclusive", "error")
 
@@ -77,7 +77,7 @@ def plan(claims: list[Claim], sizes: list[Size] | None, methods: Iterable[str],
         for m in methods:
             if m == "free" or (m == "auto" and sizes is None):
                 runs.append((c, None, "free"))
-            if m == "free" or (m == "float" and c.kind == "dim"):
+            if m == "free" or (m in ("float", "ball") and c.kind == "dim"):
                 continue   # dimensions are integers: floating point has nothing to say about them
             for s in _sizes_for(c, sizes):
                 runs.append((c, s, m))

@@ -896,7 +896,7 @@ class Scene(PaperObjects):
         # the chart's point, which is on V exactly (a Cayley transform of a skew matrix of exact
         # inputs, or [I; 0]); the closed form is exact there, so the bounds carry over.  Degree
         # markers follow the structure of the computation the exact fields make.
-        approx = isinstance(self._field, (FloatField, DegreeField))
+        approx = isinstance(self._field, (FloatField, DegreeField)) or getattr(self._field, "encloses_exact_point", False)
         if not self._closed_form_applies(approx):
             return None
         X, P, sym = self.X, self.P, self._sym

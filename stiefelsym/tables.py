@@ -1279,7 +1279,7 @@ def verdict_matrix(results: list[dict]) -> dict[str, Any]:
         if r["method"] not in methods:
             methods.append(r["method"])
         matrix.setdefault(claim, {}).setdefault(size, {})[r["method"]] = [r["verdict"], bool(r.get("expected"))]
-    order = ["exact", "auto", "rational", "modular", "float", "free"]
+    order = ["exact", "auto", "rational", "modular", "float", "ball", "free"]
     methods.sort(key=lambda m: order.index(m) if m in order else len(order))
 
     def size_key(s):

@@ -177,7 +177,11 @@ def test_hard_cases_reject_a_corrupted_claim(hard):
     for m in ("float", "rational", "modular"):
         assert run_one(_claim(resolvent_identity_sign), Size(3, 2), m, 0, hard=hard).verdict == "fails"
         good = run_one(_claim(resolvent_identity), Size(3, 2), m, 0, hard=hard)
-        assert good.verdict == "undecided" and good.false_pass_bound is None and "chosen, not random" in good.message
+        if hard == "large-momenta":
+            # no momenta in the claim: the case changes nothing, and the claim is verified at random points
+            assert good.verdict in ("checked", "numeric") and "verified at random points" in good.message
+        else:
+            assert good.verdict == "undecided" and good.false_pass_bound is None and "chosen, not random" in good.message
         assert "--hard " + hard in good.rerun
 
 

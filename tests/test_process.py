@@ -193,7 +193,7 @@ def test_every_method_runs_in_a_budgeted_worker():
     results = runner.verify(claims, methods=runner.METHODS, timeout=2, seed=0, jobs=3)
     for cid in ("sleeps", "exits", "ok"):     # auto at (1,1) is the exact method, unless stopped
         assert sorted(r.method for r in results if r.claim == cid) == \
-            sorted(["exact" if cid == "ok" else "auto", "exact", "rational", "modular", "float", "free"])
+            sorted(["exact" if cid == "ok" else "auto", "exact", "rational", "modular", "float", "ball", "free"])
     for r in results:
         if r.claim == "sleeps":
             assert r.verdict == "inconclusive" and not r.expected
