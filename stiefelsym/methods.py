@@ -1176,12 +1176,13 @@ def run_float(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
 FLOAT_CONFIRM_N = 12
 
 
-def _confirm_numeric(res: Result, claim: Claim, n: int, r: int, seed: int, func: Callable | None) -> Result:
+def _confirm_numeric(res: Result, claim: Claim, n: int, r: int, seed: int, func: Callable | None,
+                     method: str = "float") -> Result:
     exact = run_points(claim, n, r, "modular", seed, func)
     if exact.verdict != "fails":
         return res
-    exact.method = "float"
-    exact.message = ("float64 passed within its tolerance relative to the terms' scale, but the residual is not 0 at "
+    exact.method = method
+    exact.message = (f"{'float64' if method == 'float' else 'the ball enclosure'} passed within its tolerance relative to the terms' scale, but the residual is not 0 at "
                      "exact points mod p: it lies below float64's resolution of those terms"
                      + (f" ({exact.message})" if exact.message else ""))
     return exact
@@ -1395,7 +1396,10 @@ def run_ball(claim: Claim, n: int, r: int, seed: int, func: Callable | None = No
     When r = n both components of O(n) are evaluated."""
     options = _prepare(options)
     with one_blas_thread(), quiet_numpy():
-        return _hard_or_random(lambda o: _run_ball(claim, n, r, seed, func or claim.func, o), options)
+        res = _hard_or_random(lambda o: _run_ball(claim, n, r, seed, func or claim.func, o), options)
+    if res.verdict == "numeric" and n <= FLOAT_CONFIRM_N and not options:
+        res = _confirm_numeric(res, claim, n, r, seed, func, "ball")
+    return res
 
 
 def _ball_entries(value: Any, name: str) -> tuple[Callable[[int], str], list, list[float]]:

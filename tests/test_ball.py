@@ -123,12 +123,16 @@ def test_a_corrupted_claim_fails_with_a_certified_witness(claim, size):
 
 def test_numeric_is_not_a_proof_of_the_identity():
     """A residual of 10⁻¹⁴ of its terms is nonzero, but below the resolution 10⁻⁸ of the term scale:
-    the ball method says ``numeric`` with a rigorous bound on it at this point, which is all it
-    claims (the exact methods refute the claim)."""
-    res = run_one(SLIGHTLY_WRONG, Size(5, 2), "ball", seed=SEED)
+    beyond the sizes where it is confirmed at exact points, the ball method says ``numeric`` with a
+    rigorous bound on it at this point, which is all it claims; where an exact point costs little
+    (n <= FLOAT_CONFIRM_N) the confirmation refutes it, as the exact methods do."""
+    from stiefelsym.methods import FLOAT_CONFIRM_N
+    n = FLOAT_CONFIRM_N + 2
+    res = run_one(SLIGHTLY_WRONG, Size(n, 2), "ball", seed=SEED)
     assert res.verdict == "numeric"
     bound = float(res.certificate.rsplit("|exact residual| <= ", 1)[1].split()[0])
     assert 0 < bound < 1e-8
+    assert run_one(SLIGHTLY_WRONG, Size(5, 2), "ball", seed=SEED).verdict == "fails"
     assert run_one(SLIGHTLY_WRONG, Size(5, 2), "modular", seed=SEED).verdict == "fails"
 
 
