@@ -50,6 +50,10 @@ EXACT_CAYLEY_MAX_N = 3       # the symbolic Cayley chart (used when coordinates 
 EXACT_TIME_LIMIT = 120.0      # seconds per (claim, size) for the symbolic method
 MAX_RESAMPLE = 8
 FLOAT_RESOLUTION = 1e-8       # a pass must be able to see a relative residual this small
+#: float64, then mpmath at 30, 60, 120 digits with the same error model.  For an identity, when
+#: float64's bounds cannot decide, the rigorous ball method decides first (arb at 53 to 424 bits at the
+#: same exact point); mpmath is the last resort only where the balls stay inconclusive (float64 term
+#: scales that overflow)
 FLOAT_LADDER = (None, 30, 60, 120)
 
 
@@ -1215,12 +1219,12 @@ def _finite(x: ErrNum) -> bool:
 
 
 def _float_component(claim: Claim, n: int, r: int, seed: int, func: Callable, options: dict | None,
-                     comp: int) -> _FloatRun:
+                     comp: int, ladder: tuple = FLOAT_LADDER) -> _FloatRun:
     run = _FloatRun("unresolved")
     nonzero_claim = claim.expect == "nonzero"
     cons = REALIZATIONS[claim.realization]
     wide = outside_float_range(compile_claim(func, n, r, (cons.name, cons.build)))
-    for dps in FLOAT_LADDER:
+    for dps in ladder:
         if dps is None and wide:
             run.log.append(f"float64 skipped: the constant {wide[0]} is outside its range "
                            f"(2^-{FLOAT_EXPONENT_LIMIT}, 2^{FLOAT_EXPONENT_LIMIT})")
@@ -1301,9 +1305,26 @@ def _run_float(claim: Claim, n: int, r: int, seed: int, func: Callable, options:
         + "; running error analysis of every operation"]
     if options and options.get("hard"):
         res.reductions.append(f"hard case: {options['hard'].description}")
-    runs = [_float_component(claim, n, r, seed, func, options, c) for c in comps]
+    identity = claim.expect != "nonzero"
+    first = FLOAT_LADDER[:1] if identity else FLOAT_LADDER
+    runs = [_float_component(claim, n, r, seed, func, options, c, first) for c in comps]
     log = "; ".join((f"component {c + 1}: " if len(comps) > 1 else "") + "; ".join(run.log)
                     for c, run in zip(comps, runs))
+    decided = None
+    if identity and any(run.status == "unresolved" for run in runs) and not any(run.status == "bad" for run in runs):
+        ball = _run_ball(claim, n, r, seed, func, options)
+        if ball.verdict in ("numeric", "fails"):
+            for k in ("certificate", "residual", "witness", "false_pass_bound"):
+                setattr(res, k, getattr(ball, k))
+            res.reductions += [x for x in ball.reductions if x not in res.reductions]
+            res.message = (f"float64 could not resolve the residual ({log}); ball arithmetic at the same exact "
+                           f"point decided: {ball.message or ball.certificate}")
+            decided = ball.verdict
+        else:
+            runs = [_float_component(claim, n, r, seed, func, options, c, FLOAT_LADDER[1:]) for c in comps]
+            log += (f"; ball arithmetic: {ball.verdict} ({ball.message}); "
+                    + "; ".join((f"component {c + 1}: " if len(comps) > 1 else "") + "; ".join(run.log)
+                                for c, run in zip(comps, runs)))
 
     def done(verdict: str) -> Result:
         if verdict == "numeric" and options and options.get("hard"):
@@ -1315,6 +1336,8 @@ def _run_float(claim: Claim, n: int, r: int, seed: int, func: Callable, options:
         res.seconds = time.perf_counter() - t0
         return res
 
+    if decided is not None:
+        return done(decided)
     counts = list(dict.fromkeys(p for run in runs for p in run.count_problems))
     if counts:
         res.certificate = "; ".join(counts) + " (integers, exact)"

@@ -313,7 +313,7 @@ def overflowing_scale_true(s):
 
 def test_a_non_finite_scale_never_passes():
     res = run_float(_claim(overflowing_scale_hides_a_false_entry), 3, 1, 0)
-    assert res.verdict == "fails" and res.witness["field"] == "rational"
+    assert res.verdict == "fails" and (res.witness["field"] == "rational" or res.witness["field"].startswith("arb"))
     assert "float64: unresolved" in res.message
     res = run_float(_claim(overflowing_scale_true), 3, 1, 0)
     assert res.verdict == "numeric" and "mpmath" in res.certificate
@@ -372,7 +372,7 @@ def test_float_decides_at_n_12_in_float64():
     res = run_float(_claim(lax_true), 12, 1, 0)
     assert res.verdict == "numeric" and "float64: max |residual|" in res.message
     res = run_float(_claim(lax_false), 12, 1, 0)
-    assert res.verdict == "fails" and res.witness["field"] == "rational"
+    assert res.verdict == "fails" and (res.witness["field"] == "rational" or res.witness["field"].startswith("arb"))
 
 
 def test_float64_overflow_escalates_to_mpmath():
