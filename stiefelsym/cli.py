@@ -37,7 +37,7 @@ EXIT_OK, EXIT_UNEXPECTED, EXIT_INPUT, EXIT_INTERRUPTED, EXIT_TERMINATED = 0, 1, 
 #: the default of --budget: seconds a single run may be predicted to take (see stiefelsym.costmodel)
 DEFAULT_BUDGET = 3600.0
 DEFAULT_REPORT_DIR = Path("reports")
-REPORT_FILES = ("results.json", "verification.md", "verification.tex", "run-log.json")
+REPORT_FILES = ("results.json", "verification.md", "verification.tex", "verification-runs.tex", "run-log.json")
 #: the distributions whose versions a report records
 VERSIONED = ("stiefelsym", "sympy", "symengine", "numpy", "python-flint", "mpmath", "click")
 EXPECT_MEANING = {
@@ -386,6 +386,7 @@ def _write_reports(d: Path, results: list[Result], meta: dict[str, Any]) -> list
     texts = {"results.json": dump_results(fixed, fixed_meta),
              "verification.md": _report.render_markdown(fixed, fixed_meta, mutation=mutation),
              "verification.tex": _report.render_latex(fixed, fixed_meta, mutation=mutation),
+             "verification-runs.tex": _report.render_latex(fixed, fixed_meta, detail=True),
              "run-log.json": _run_log(results, meta)}
     paths = []
     for name, text in texts.items():
@@ -988,7 +989,8 @@ def report(results_file: Path | None, report_dir: Path | None) -> None:
     _check_report_dir(target)
     mutation = _mutation(source.parent)
     texts = {"verification.md": _report.render_markdown(results, meta, mutation=mutation),
-             "verification.tex": _report.render_latex(results, meta, mutation=mutation)}
+             "verification.tex": _report.render_latex(results, meta, mutation=mutation),
+             "verification-runs.tex": _report.render_latex(results, meta, detail=True)}
     try:
         for name, text in texts.items():
             write_atomic(target / name, text)

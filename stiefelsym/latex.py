@@ -219,9 +219,11 @@ def tex_display(statement: str) -> str:
     body = tex_math(s)
     top = _toplevel(body)
     if re.search(r"(?<!\\)&", top):
-        return "\\begin{align*}\n" + body + "\n\\end{align*}\n"
-    if "\\\\" in top:
-        return "\\begin{gather*}\n" + body + "\n\\end{gather*}\n"
-    return "\\[\n" + body + "\n\\]\n"
+        body = "\\begin{aligned}\n" + body + "\n\\end{aligned}"
+    elif "\\\\" in top:
+        body = "\\begin{gathered}\n" + body + "\n\\end{gathered}"
+    # shrunk to the line's width when it is wider (never an overfull line), at its size otherwise
+    return ("\\begin{center}\\resizebox{\\ifdim\\width>\\linewidth\\linewidth\\else\\width\\fi}{!}{$\\displaystyle\n"
+            + body + "\n$}\\end{center}\n")
 
 

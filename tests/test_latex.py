@@ -49,10 +49,13 @@ def test_tex_math_maps_unicode():
 
 
 def test_tex_display_environments():
-    assert tex_display(STATEMENTS["prep"]).startswith("\\[\n")
-    assert tex_display(STATEMENTS["orbit"]).startswith("\\[\n")  # & only inside cases
-    assert tex_display(STATEMENTS["aligned"]).startswith("\\begin{align*}")
-    assert tex_display(STATEMENTS["lines"]).startswith("\\begin{gather*}")
+    # every display is shrunk to the line's width when wider (no overfull line)
+    assert all(tex_display(STATEMENTS[k]).startswith("\\begin{center}\\resizebox")
+               for k in ("prep", "orbit", "aligned", "lines"))
+    assert "aligned" not in tex_display(STATEMENTS["prep"])
+    assert "aligned" not in tex_display(STATEMENTS["orbit"])  # & only inside cases
+    assert "\\begin{aligned}" in tex_display(STATEMENTS["aligned"])
+    assert "\\begin{gathered}" in tex_display(STATEMENTS["lines"])
     assert "verbatim" in tex_display(STATEMENTS["unbalanced"])
 
 
