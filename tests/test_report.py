@@ -253,12 +253,18 @@ def test_latex_report_of_real_catalog_runs_compiles(tmp_path):
                      methods=("auto", "free", "float"), seed=0)
     assert any(r.derivation for r in results) and any(r.verdict == "fails" for r in results)
     (tmp_path / "verification.tex").write_text(render_latex(results, {"seed": 0}), encoding="utf-8")
-    for _ in range(2):
-        proc = subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error",
-                               "-no-shell-escape", "verification.tex"], cwd=tmp_path,
-                              capture_output=True, text=True, timeout=120, stdin=subprocess.DEVNULL)
-        assert proc.returncode == 0, proc.stdout[-3000:]
-    assert "Undefined control sequence" not in (tmp_path / "verification.log").read_text(errors="replace")
+    (tmp_path / "runs.tex").write_text(render_latex(results, {"seed": 0}, detail=True), encoding="utf-8")
+    for name in ("verification", "runs"):
+        for _ in range(2):
+            proc = subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error",
+                                   "-no-shell-escape", f"{name}.tex"], cwd=tmp_path,
+                                  capture_output=True, text=True, timeout=120, stdin=subprocess.DEVNULL)
+            assert proc.returncode == 0, proc.stdout[-3000:]
+        log = (tmp_path / f"{name}.log").read_text(errors="replace")
+        assert "Undefined control sequence" not in log
+        # no line wider than the page by more than 1 pt (displays shrink, numbers and names break)
+        over = [float(x) for x in re.findall(r"Overfull \\hbox \(([0-9.]+)pt too wide\)", log)]
+        assert not [x for x in over if x > 1], (name, over)
 
 
 # --------------------------------------------------------------------------- corrections across sizes
