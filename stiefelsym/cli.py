@@ -385,8 +385,8 @@ def _write_reports(d: Path, results: list[Result], meta: dict[str, Any]) -> list
     fixed, fixed_meta = stable(results, meta)
     texts = {"results.json": dump_results(fixed, fixed_meta),
              "verification.md": _report.render_markdown(fixed, fixed_meta, mutation=mutation),
-             "verification.tex": _report.render_latex(fixed, fixed_meta, mutation=mutation),
-             "verification-runs.tex": _report.render_latex(fixed, fixed_meta, detail=True),
+             "verification.tex": _report.render_latex(fixed, fixed_meta),
+             "verification-runs.tex": _report.render_latex(fixed, fixed_meta, mutation=mutation, detail=True),
              "run-log.json": _run_log(results, meta)}
     paths = []
     for name, text in texts.items():
@@ -989,8 +989,8 @@ def report(results_file: Path | None, report_dir: Path | None) -> None:
     _check_report_dir(target)
     mutation = _mutation(source.parent)
     texts = {"verification.md": _report.render_markdown(results, meta, mutation=mutation),
-             "verification.tex": _report.render_latex(results, meta, mutation=mutation),
-             "verification-runs.tex": _report.render_latex(results, meta, detail=True)}
+             "verification.tex": _report.render_latex(results, meta),
+             "verification-runs.tex": _report.render_latex(results, meta, mutation=mutation, detail=True)}
     try:
         for name, text in texts.items():
             write_atomic(target / name, text)

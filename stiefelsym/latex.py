@@ -32,7 +32,7 @@ _MATH_SYMBOLS = {
     "⇒": r"\Rightarrow", "⇔": r"\Leftrightarrow", "∂": r"\partial", "∇": r"\nabla",
     "∑": r"\sum", "∏": r"\prod", "∫": r"\int", "∞": r"\infty", "≅": r"\cong",
     "≈": r"\approx", "≡": r"\equiv", "⟨": r"\langle", "⟩": r"\rangle", "½": r"\tfrac12",
-    "⊥": r"\perp", "∀": r"\forall", "∃": r"\exists", "±": r"\pm", "√": r"\surd",
+    "⊥": r"\perp", "⟂": r"\perp", "⌈": r"\lceil", "⌉": r"\rceil", "⌊": r"\lfloor", "⌋": r"\rfloor", "∀": r"\forall", "∃": r"\exists", "±": r"\pm", "√": r"\surd",
     "∅": r"\emptyset", "∩": r"\cap", "∪": r"\cup", "∖": r"\setminus", "′": "'",
     "ℓ": r"\ell", "ħ": r"\hbar", "≔": ":=", "…": r"\dots", "⋯": r"\cdots",
 }
@@ -103,11 +103,19 @@ def tex_escape(text: Any) -> str:
             out.append(" ")
         elif ord(piece) < 128:
             out.append(piece)
+        elif piece in _COMBINING and out and (len(out[-1]) == 1 and out[-1].isalpha()
+                                              or out[-1].startswith("\\ensuremath{") and out[-1].count("{") == 1):
+            last = out[-1][len("\\ensuremath{"):-1] if out[-1].startswith("\\ensuremath{") else out[-1]
+            out[-1] = r"\ensuremath{" + _COMBINING[piece] + "{" + last + "}}"   # Q̇, Σ̄: a mark on the letter before
         elif piece in _TEXT_ONLY:
             out.append(_TEXT_ONLY[piece])
         else:
             out.append(_tex_nonascii(piece))
     return "".join(out)
+
+
+#: combining marks written after a letter (U+0307 dot above, U+0308 diaeresis: time derivatives)
+_COMBINING = {"\u0307": r"\dot", "\u0308": r"\ddot", "\u0304": r"\bar"}
 
 
 def _tex_nonascii(ch: str) -> str:
