@@ -8,7 +8,7 @@ JOBS   ?= 2
 #: make verify covers every size n <= MAX_N each claim is stated for
 MAX_N  ?= 6
 
-.PHONY: venv verify verify-all test bench report clean tables flows speed
+.PHONY: venv verify verify-all test bench report clean tables flows speed paper-labels
 
 ## venv: create .venv (if missing) and install stiefelsym with its test extras; compile the
 ## bytecode (where PYTHONDONTWRITEBYTECODE is set, e.g. CI images, every start would recompile)
@@ -80,6 +80,14 @@ check: venv
 ## report: re-render reports/verification.{md,tex} from reports/results.json
 report: venv
 	$(BIN)/stiefelsym report --results reports/results.json
+
+#: the paper's LaTeX source (for its equation and theorem numbers)
+PAPER ?= ../shared/paper/fedorov-jovanovic-stiefel.tex
+
+## paper-labels: the paper's printed numbers of its labels (proofs/paper_labels.json), by compiling it
+paper-labels: venv
+	$(BIN)/python -c "import sys; from pathlib import Path; from stiefelsym import paperref; \
+	print(len(paperref.write(Path(sys.argv[1]), Path('proofs/paper_labels.json'))), 'labels')" $(PAPER)
 
 ## docs: docs/index.md from README.md, and the site (mkdocs build --strict) in site/
 .PHONY: docs

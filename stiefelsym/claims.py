@@ -297,12 +297,13 @@ IDENTITY_EXACT_MAX_N = 7
 DIM_EXACT_MAX_N = 5
 
 
-def claim(id: str, *, paper: str | Iterable[str], kind: str, section: str | None = None,
+def claim(id: str, *, paper: str | Iterable[str] = (), kind: str, section: str | None = None,
           sizes: SizeSpec | Iterable[tuple[int, int] | Size] | None = None, statement: str = "", realization: str = "standard",
           expect: str = "holds", exact_max_n: int | None = None,
           fails_at: Callable[[int, int], bool] | None = None, erratum: str = "", equivariance: str = ""):
     """Register a claim.  The function's docstring (one sentence) goes into the report.
 
+    ``paper``: the paper's equation labels the claim checks; a user's own claim may have none.
     ``exact_max_n``: the largest n at which ``auto`` tries the symbolic exact method first (default:
     7 for identities, whose residuals are matrix products the exact backends prove quickly; 5 for
     dimension statements, whose exact ranks are randomized beyond small sizes anyway)."""

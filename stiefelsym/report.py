@@ -18,6 +18,7 @@ import xml.etree.ElementTree as ET
 from collections import Counter
 from typing import Any, Iterable, Sequence
 
+from . import paperref, sizerules
 from .latex import math_ok, split_math, tex_balanced, tex_display, tex_escape, tex_text
 from .results import PASSING, VERDICTS, Result
 
@@ -225,7 +226,18 @@ def case_name(r: Result) -> str:
 
 
 def labels(paper: Sequence[str]) -> str:
-    return ", ".join(f"({p})" for p in paper)
+    """The paper's numbers of a claim's labels, each label kept in brackets: "(4) §2 [cond_XP]";
+    a label the paper does not number (a user's own) is printed as "(label)"."""
+    return ", ".join(f"{paperref.printed(p)} [{p}]" if p in paperref.table() else f"({p})" for p in paper)
+
+
+def tex_labels(paper: Sequence[str]) -> str:
+    """LaTeX of :func:`labels`: the paper's numbers, each label in small type (breakable)."""
+    def one(p: str) -> str:
+        key = r"{\scriptsize\texttt{" + tex_escape(p).replace(r"\_", r"\_\allowbreak{}") + "}}"
+        return (tex_escape(paperref.printed(p)).replace(" ", "~") + " " + key) if p in paperref.table() \
+            else tex_escape(f"({p})").replace(r"\_", r"\_\allowbreak{}")
+    return ", ".join(one(p) for p in paper)
 
 
 def _run_facts(meta: dict[str, Any]) -> list[str]:
@@ -255,12 +267,20 @@ def _size_key(size: tuple[int, int]) -> tuple[int, int]:
     return size
 
 
-def format_sizes(sizes: Iterable[tuple[int, int]], limit: int = 4) -> str:
-    """``(3,1), (4,2)``; a longer list as ``(1,1)…(5,5)``."""
+def format_sizes(sizes: Iterable[tuple[int, int]], limit: int = 4,
+                 universe: Iterable[tuple[int, int]] = ()) -> str:
+    """``(3,1), (4,2)``.  A list longer than ``limit`` is stated by its rule within ``universe``
+    (the computed sizes) where one separates it ("every computed size with r ≥ 2 (12 sizes)"), and
+    otherwise listed in full: never an ellipsis, which would suggest every size in between."""
     ss = sorted(set(sizes), key=_size_key)
+    text = ", ".join(f"({n},{r})" for n, r in ss)
     if len(ss) <= limit:
-        return ", ".join(f"({n},{r})" for n, r in ss)
-    return f"({ss[0][0]},{ss[0][1]})…({ss[-1][0]},{ss[-1][1]})"
+        return text
+    rest = set(universe) - set(ss)
+    if universe and not rest:
+        return f"every computed size ({len(ss)})"
+    cond = sizerules.rule(ss, rest) if rest else None
+    return f"every computed size with {cond} ({len(ss)} sizes)" if cond else text
 
 
 def planned_sizes(c: "ClaimResults") -> list[tuple[int, int]]:
@@ -303,15 +323,15 @@ def correction_summary(rs: list[Result], planned: Sequence[tuple[int, int]]) -> 
                  else " (exact)" if bounds else "")
         if ok:
             if planned and set(ok) >= set(planned) and len(planned) > 1:
-                phrases.append(f"verified at all {len(planned)} sizes {format_sizes(ok)} by {m}{bound}")
+                phrases.append(f"verified at all {len(planned)} computed sizes by {m}{bound}")
             elif planned and set(ok) >= set(planned):
                 phrases.append(f"verified at the claim's only size {format_sizes(ok)} by {m}{bound}")
             else:
-                phrases.append(f"passes at {format_sizes(ok, 6)} by {m}{bound}")
+                phrases.append(f"passes at {format_sizes(ok, 6, planned)} by {m}{bound}")
         if bad:
-            phrases.append(f"fails at {format_sizes(bad, 6)} by {m}")
+            phrases.append(f"fails at {format_sizes(bad, 6, planned)} by {m}")
         for v, where in other.items():
-            phrases.append(f"{v} at {format_sizes(where, 6)} by {m}")
+            phrases.append(f"{v} at {format_sizes(where, 6, planned)} by {m}")
     if failed_at:
         status = "rejected"
     elif planned and passed_at >= set(planned):
@@ -322,7 +342,7 @@ def correction_summary(rs: list[Result], planned: Sequence[tuple[int, int]]) -> 
         status = "not verified"
     missing = [s for s in planned if s not in passed_at and s not in failed_at]
     if missing and status != "rejected":
-        phrases.append(f"not verified at {format_sizes(missing, 6)}")
+        phrases.append(f"not verified at {format_sizes(missing, 6, planned)}")
     return status, phrases
 
 
@@ -515,23 +535,36 @@ def _summary_rows(claims: list[ClaimResults]) -> tuple[list[str], list[tuple[Cla
 
 def render_markdown(results: Sequence[Result], meta: dict[str, Any] | None = None,
                     mutation: Any = None) -> str:
-    """The Markdown report: how to reproduce, vocabulary, summary, sections, errata, and the
-    mutation analysis when ``mutation`` (the parsed ``mutation.json``) is given."""
+    """The Markdown report: the headline, the errata, the summary, the sections, how to reproduce,
+    the vocabulary, and the mutation analysis when ``mutation`` (the parsed ``mutation.json``) is given."""
     meta = meta or {}
     claims = group_by_claim(results)
     unexpected = sum(not r.expected for r in results)
+    text, errata = headline(claims)
     out = [f"# {_md_escape(meta.get('title') or DEFAULT_TITLE)}", "",
-           f"Generated by `stiefelsym` from `results.json`; do not edit by hand. {len(claims)} "
-           f"claims, {len(results)} runs, "
-           + ("every verdict as expected." if not unexpected
-              else f"**{unexpected} verdicts not as expected.**"), "",
-           "## How to reproduce", "", "```sh", meta.get("command") or "stiefelsym verify", "```", ""]
-    out += [_md_escape(f) for f in _run_facts(meta)] + [""]
+           "Generated by `stiefelsym` from `results.json`; do not edit by hand.", "",
+           _md_escape(text), "",
+           f"{len(results)} runs; " + ("every verdict is the one the catalog expects (the errata are expected "
+                                       "to fail as printed)." if not unexpected
+                                       else f"**{unexpected} verdicts not as expected.**"), ""]
+    if errata:
+        out += ["Fails as printed:", ""]
+        out += [f"- `{c.id}` {_md_escape(labels(c.paper))}"
+                + ("; correction: " + _md_escape(next(iter(c.variants))) if c.variants else "") for c in errata]
+        out += [""]
 
-    out += ["## What the verdicts mean", ""]
-    out += [f"- **{v}**: {_md_escape(VERDICT_MEANING[v])}" for v in VERDICTS]
-    out += ["", f"**The bound p.** {_md_escape(BOUND_EXPLANATION)}", "",
-            f"**Expected verdicts.** {_md_escape(EXPECTED_EXPLANATION)}", ""]
+    out += ["## Errata", ""]
+    if errata:
+        out += [_md_escape(ERRATA_INTRO), ""]
+    else:
+        out += ["No statement failed as printed.", ""]
+    for c in errata:
+        out += _md_erratum(c)
+    others = [c for c in claims if c.variants and not c.failures]
+    if others:
+        out += ["Candidate corrections were also checked for claims that hold as printed:", ""]
+        for c in others:
+            out += [f"### `{c.id}` {_md_escape(labels(c.paper))}", ""] + _md_corrections(c)
 
     present, rows = _summary_rows(claims)
     out += ["## Summary", "", "For each claim as printed: the verdict of the dimension-free method (all n, r "
@@ -548,19 +581,12 @@ def render_markdown(results: Sequence[Result], meta: dict[str, Any] | None = Non
         for c in cs:
             out += _md_claim(c)
 
-    errata = [c for c in claims if c.failures]
-    out += ["## Errata", ""]
-    if errata:
-        out += [_md_escape(ERRATA_INTRO), ""]
-    else:
-        out += ["No statement failed as printed.", ""]
-    for c in errata:
-        out += _md_erratum(c)
-    others = [c for c in claims if c.variants and not c.failures]
-    if others:
-        out += ["Candidate corrections were also checked for claims that hold as printed:", ""]
-        for c in others:
-            out += [f"### `{c.id}` {_md_escape(labels(c.paper))}", ""] + _md_corrections(c)
+    out += ["## How to reproduce", "", "```sh", meta.get("command") or "stiefelsym verify", "```", ""]
+    out += [_md_escape(f) for f in _run_facts(meta)] + [""]
+    out += ["## What the verdicts mean", ""]
+    out += [f"- **{v}**: {_md_escape(VERDICT_MEANING[v])}" for v in VERDICTS]
+    out += ["", f"**The bound p.** {_md_escape(BOUND_EXPLANATION)}", "",
+            f"**Expected verdicts.** {_md_escape(EXPECTED_EXPLANATION)}", ""]
     if mutation:
         out += _md_mutation_section(_mutation_data(mutation))
     return "\n".join(out).rstrip() + "\n"
@@ -624,11 +650,10 @@ def _erratum_note(c: ClaimResults, facts: dict[str, Any], escape=lambda s: s, co
     """One paragraph a referee could send: the label, where it fails, the witness, the correction
     (``escape`` renders the prose, ``correction`` a correction's description)."""
     w = c.failures[0]
-    where = (f"Appendix {c.section[1:]}, " if c.section.startswith("A") else f"§{c.section}, ") if c.section else ""
-    text = (f"In {where}{labels(c.paper)}, the statement as printed fails at "
-            f"(n, r) = {format_sizes(facts['fails'], 8)}")
-    if facts["holds"]:
-        text += f" (it holds as printed at {format_sizes(facts['holds'], 8)})"
+    where = (f"Appendix {c.section[1:]}, " if c.section.startswith("A") else f"§{c.section}, ") \
+        if c.section and not all(p in paperref.table() for p in c.paper) else ""
+    text = (f"In {where}{labels(c.paper)}, the statement as printed "
+            f"{sizerules.fails_holds_text(facts['fails'], facts['holds'])}")
     text += f". A witness: size {w.size}, method {w.method}"
     if w.seed is not None:
         text += f", seed {w.seed}"
@@ -650,10 +675,8 @@ def _md_erratum(c: ClaimResults) -> list[str]:
     st = _md_statement(c.statement)
     if st:
         out += ["As printed:", "", st, ""]
-    out += ["Fails at: " + ", ".join(f"{_md_escape(r.size)} {r.method}" for r in c.failures)
+    out += ["Failing runs: " + ", ".join(f"{_md_escape(r.size)} {r.method}" for r in c.failures)
             + ".", ""]
-    if facts["holds"]:
-        out += [f"Holds as printed at: {format_sizes(facts['holds'], 12)}.", ""]
     w = c.failures[0]
     if w.erratum:
         out += [f"What is wrong: {_md_escape(w.erratum)}", ""]
@@ -751,13 +774,14 @@ def _tt(text: Any) -> str:
 
 
 def _tex_results(rs: list[Result]) -> list[str]:
-    out = [r"{\small", r"\begin{longtable}{@{}llP{2.2cm}rP{5.3cm}rl@{}}", r"\toprule",
+    out = [r"{\small", r"\begin{longtable}{@{}llP{2.2cm}rP{5.0cm}rl@{}}", r"\toprule",
            r"size $(n,r)$ & method & verdict & time & certificate & seed & $p$ (false pass)\\",
            r"\midrule", r"\endhead"]
     for r in rs:
         out.append(" & ".join([
             tex_escape(r.size), tex_escape(r.method), _tex_verdict(r),
-            tex_escape(format_seconds(r.seconds)), tex_escape(short(r.certificate, 120) or "--"),
+            tex_escape(format_seconds(r.seconds)),
+            re.sub(r"([*+,=])", r"\1\\allowbreak{}", tex_escape(short(r.certificate, 120) or "--")),
             str(r.seed if r.seed is not None else "--"), _tex_bound(r.false_pass_bound)]) + r"\\")
     return out + [r"\bottomrule", r"\end{longtable}", "}"]
 
@@ -810,33 +834,13 @@ def render_latex(results: Sequence[Result], meta: dict[str, Any] | None = None, 
               if not unexpected else f"\\textbf{{{unexpected} verdicts not as expected.}}"), ""]
     if errata:
         out += [tex_escape("Fails as printed:")]
-        out += _tex_items([r"\texttt{" + tex_escape(c.id) + "} " + tex_escape(labels(c.paper))
+        out += _tex_items([r"\texttt{" + tex_escape(c.id) + "} " + tex_labels(c.paper)
                            + ("; correction: " + tex_text(next(iter(c.variants))) if c.variants else "")
                            for c in errata])
     if not detail:
         out += [tex_escape("Every run, residual and certificate is in the companion document "
                            "verification-runs.tex and in results.json."), ""]
     out += [r"\tableofcontents", ""]
-
-    present, rows = _summary_rows(claims)
-    out += _toc_section("Summary")
-    out += [tex_escape("For each claim as printed: the verdict of the dimension-free method (all n, r at "
-                       "once), then the runs at fixed sizes (n, r) by verdict."), "",
-            r"{\small\setlength{\tabcolsep}{3pt}",
-            r"\begin{longtable}{@{}P{3.6cm}P{3.0cm}P{0.5cm}P{1.6cm}" + "r" * (len(present) - 1) + "P{1.6cm}@{}}",
-            r"\toprule",
-            " & ".join(["claim", "paper", r"\ensuremath{\S}"]
-                       + [r"\rotatebox{90}{" + v + "}" for v in present] + ["status"]) + r"\\",
-            r"\midrule", r"\endhead"]
-    for c, counts, status in rows:
-        out.append(" & ".join([r"\texttt{" + tex_escape(c.id).replace("-", r"-\allowbreak{}") + "}",
-                               tex_escape(labels(c.paper)).replace(r"\_", r"\_\allowbreak{}"),
-                               tex_escape(c.section or "--")]
-                              + [tex_escape(str(k or "")) for k in counts]
-                              + [tex_escape(status) if status == "as expected"
-                                 else rf"\textbf{{{tex_escape(status)}}}"])
-                   + r"\\")
-    out += [r"\bottomrule", r"\end{longtable}", "}", ""]
 
     out += _toc_section("Errata")
     if errata:
@@ -850,6 +854,8 @@ def render_latex(results: Sequence[Result], meta: dict[str, Any] | None = None, 
         out += ["Candidate corrections were also checked for claims that hold as printed:", ""]
         for c in others:
             out += [_tex_claim_heading(c)] + _tex_corrections(c)
+
+    out += _tex_claim_table(claims) if detail else _tex_section_table(claims, meta)
 
     for sec, cs in group_by_section(claims):
         out += _toc_section(tex_escape(_section_heading(sec, meta)))
@@ -869,6 +875,60 @@ def render_latex(results: Sequence[Result], meta: dict[str, Any] | None = None, 
     return "\n".join(out + [r"\end{document}", ""])
 
 
+def _tex_claim_table(claims: list[ClaimResults]) -> list[str]:
+    """The per-run document's summary: per claim as printed, the verdict for all n, r and the
+    runs at fixed sizes by verdict."""
+    present, rows = _summary_rows(claims)
+    out = _toc_section("Summary")
+    out += [tex_escape("For each claim as printed: the verdict of the dimension-free method (all n, r at "
+                       "once), then the runs at fixed sizes (n, r) by verdict."), "",
+            r"{\small\setlength{\tabcolsep}{3pt}",
+            r"\begin{longtable}{@{}P{3.6cm}P{3.0cm}P{0.5cm}P{1.6cm}" + "r" * (len(present) - 1) + "P{1.6cm}@{}}",
+            r"\toprule",
+            " & ".join(["claim", "paper", r"\ensuremath{\S}"]
+                       + [r"\rotatebox{90}{" + v + "}" for v in present] + ["status"]) + r"\\",
+            r"\midrule", r"\endhead"]
+    for c, counts, status in rows:
+        out.append(" & ".join([r"\texttt{" + tex_escape(c.id).replace("-", r"-\allowbreak{}") + "}",
+                               tex_labels(c.paper),
+                               tex_escape(c.section or "--")]
+                              + [tex_escape(str(k or "")) for k in counts]
+                              + [tex_escape(status) if status == "as expected"
+                                 else rf"\textbf{{{tex_escape(status)}}}"])
+                   + r"\\")
+    return out + [r"\bottomrule", r"\end{longtable}", "}", ""]
+
+
+def section_counts(cs: list[ClaimResults]) -> dict[str, int]:
+    """Per section: its claims, those proved for every n, r as printed, those that hold as printed
+    at every computed size, those that fail as printed, and those with a verdict not expected."""
+    free = sum(any(r.n is None and r.verdict == "proved" for r in c.printed) for c in cs)
+    fails = sum(bool(c.failures) for c in cs)
+    holds = sum(not c.failures and all(r.verdict in PASSING for r in c.printed if r.n is not None)
+                and any(r.n is not None for r in c.printed) for c in cs)
+    return {"claims": len(cs), "all n, r": free, "every size": holds, "fail as printed": fails,
+            "unexpected": sum(bool(c.unexpected) for c in cs)}
+
+
+def _tex_section_table(claims: list[ClaimResults], meta: dict[str, Any]) -> list[str]:
+    """The referee's summary: one row per section of the paper."""
+    out = _toc_section("Summary")
+    out += [tex_escape("Per section of the paper: its claims; those proved for every n and r at once "
+                       "(dimension-free, as printed); those that hold as printed at every size computed "
+                       "(proved, or checked at random exact points); those that fail as printed (the errata); "
+                       "and verdicts the catalog does not expect.  Each claim follows, by section."), "",
+            r"\begin{center}\small", r"\begin{tabular}{@{}P{6.2cm}rrrrr@{}}", r"\toprule",
+            r"section & claims & all $n,r$ & every size & fail as printed & unexpected\\", r"\midrule"]
+    total: Counter = Counter()
+    for sec, cs in group_by_section(claims):
+        k = section_counts(cs)
+        total.update(k)
+        out.append(" & ".join([tex_escape(_section_heading(sec, meta))] + [str(v) for v in k.values()]) + r"\\")
+    out += [r"\midrule", " & ".join(["total"] + [str(total[key]) for key in section_counts([])]) + r"\\",
+            r"\bottomrule", r"\end{tabular}", r"\end{center}", ""]
+    return out
+
+
 def _tex_claim_brief(c: ClaimResults) -> list[str]:
     """A claim in a few lines: its statement, the verdict for all n, r, and its sizes by method."""
     out = [_tex_claim_heading(c)]
@@ -883,14 +943,14 @@ def _tex_claim_brief(c: ClaimResults) -> list[str]:
                                                       else f"{free.verdict}: {short(free.message, 160)}"))
     _, phrases = correction_summary([r for r in c.printed if r.n is not None], planned_sizes(c))
     lines += phrases
-    out += _tex_items([tex_escape(x) for x in lines])
     if c.failures:
-        out += ["Fails as printed: see the Errata section.", ""]
+        lines.append("fails as printed: see the Errata")
+    out += [r"\noindent\textit{Verdict:} " + tex_escape("; ".join(lines) + "."), ""]
     return out
 
 
 def _tex_claim_heading(c: ClaimResults) -> str:
-    return r"\subsection*{\texttt{" + tex_escape(c.id) + "} " + tex_escape(labels(c.paper)) + "}"
+    return r"\subsection*{\texttt{" + tex_escape(c.id) + "} " + tex_labels(c.paper) + "}"
 
 
 def _tex_claim(c: ClaimResults) -> list[str]:
@@ -989,9 +1049,7 @@ def _tex_erratum(c: ClaimResults) -> list[str]:
     if c.statement.strip():
         out += ["As printed:", tex_display(c.statement)]
     w = c.failures[0]
-    out += [tex_escape("Fails at: " + ", ".join(f"{r.size} {r.method}" for r in c.failures) + "."), ""]
-    if facts["holds"]:
-        out += [tex_escape(f"Holds as printed at: {format_sizes(facts['holds'], 12)}."), ""]
+    out += [tex_escape("Failing runs: " + ", ".join(f"{r.size} {r.method}" for r in c.failures) + "."), ""]
     if w.erratum:
         out += [tex_escape("What is wrong: " + w.erratum), ""]
     out += [tex_escape(_witness_heading(w))]
@@ -1262,7 +1320,8 @@ def _tex_mutation_section(data: dict[str, Any]) -> list[str]:
            r"\midrule", r"\endhead"]
     rows = [dict(r, claim="all claims") for r in data.get("totals", [])] + list(data.get("table", []))
     for i, r in enumerate(rows):
-        name = r"\textit{all claims}" if r["claim"] == "all claims" else r"\texttt{" + tex_escape(r["claim"]) + "}"
+        name = (r"\textit{all claims}" if r["claim"] == "all claims"
+                else r"\texttt{" + tex_escape(r["claim"]).replace("-", r"-\allowbreak{}") + "}")
         out.append(" & ".join([name, tex_escape(r["method"])] + [tex_escape(x) for x in _mutation_cells(r)]) + r"\\")
         if r["claim"] == "all claims" and (i + 1 == len(rows) or rows[i + 1]["claim"] != "all claims"):
             out.append(r"\midrule")

@@ -78,8 +78,9 @@ class Result:
         var = f" [{self.variant}]" if self.variant else ""
         bound = f" p<={self.false_pass_bound:.1e}" if self.false_pass_bound is not None else ""
         reason = self.reason(limit)
+        seed = f", seed {self.seed}" if self.seed is not None else ", no randomness"
         return (f"{self.claim}{var} {self.size} {self.method}: {self.verdict}{bound}"
-                f" ({self.seconds:.2f}s, seed {self.seed}){tag}" + (f" -- {reason}" if reason else ""))
+                f" ({self.seconds:.2f}s{seed}){tag}" + (f" -- {reason}" if reason else ""))
 
     def reason(self, limit: int | None = REASON_LIMIT) -> str:
         """Why the verdict, in one line (at most ``limit`` characters; None: all of it):

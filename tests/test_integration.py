@@ -72,7 +72,7 @@ def test_displays_reuse_the_report_renderers(wrong_file):
     assert res._repr_latex_().startswith("$$\\begin{array}") and "fails" in res._repr_latex_()
     assert "prep[n=3,r=1]-exact" in res[0]._repr_markdown_()
     c = stiefelsym.load_claims_file(wrong_file).get("prep")
-    assert c._repr_markdown_().startswith("**prep** (prep)") and "only (3,1), (4,2)" in c._repr_markdown_()
+    assert c._repr_markdown_().startswith("**prep** (6) §5 [prep]") and "only (3,1), (4,2)" in c._repr_markdown_()
     cat = stiefelsym.load_catalog().get("euclidean-flow")
     assert "\\dot X=P" in cat._repr_markdown_() and cat._repr_latex_().startswith("$$")
 

@@ -570,12 +570,12 @@ def _erratum_results():
 def test_errata_section_reads_like_a_referees_report():
     from stiefelsym.report import render_latex, render_markdown
     md = render_markdown(_erratum_results())
-    errata = md[md.index("## Errata"):]
+    errata = md[md.index("## Errata"):md.index("## Summary")]
     note = next(line for line in errata.splitlines() if line.startswith("**Note for the authors.**"))
-    assert "§8, (2r-integrals)" in note and "fails at (n, r) = (3,2), (4,2)" in note
+    assert "(5) §8 [2r-integrals]" in note and "fails at every computed size with r = 2: (3,2), (4,2)" in note
     assert "holds as printed at (3,1)" in note and "seed 0" in note and "(0, 0) = 7" in note
     assert "Phi_{ij}^2" in note and "correction" in note
-    assert "Holds as printed at: (3,1)." in errata
+    assert "holds as printed at (3,1)" in errata
     assert "What is wrong: The mixed terms do not belong." in errata
     assert "- rerun: `stiefelsym verify general-line --size 3,2 --method modular --seed 0`" in errata
     assert "Every other failure, reproducible with:" in errata

@@ -88,8 +88,8 @@ def test_markdown_has_every_claim_in_its_section(results):
     for cid in CLAIMS:
         assert f"### `{cid}`" in md
     headings = re.findall(r"^## (.*)$", md, re.M)
-    assert headings == ["How to reproduce", "What the verdicts mean", "Summary", "§2", "§3", "§5",
-                        "§6", "§7", "Claims outside the paper's sections", "Errata"]
+    assert headings == ["Errata", "Summary", "§2", "§3", "§5", "§6", "§7",
+                        "Claims outside the paper's sections", "How to reproduce", "What the verdicts mean"]
     assert md.index("### `orbit`") < md.index("### `aligned`") < md.index("### `prep`")
 
 
@@ -118,7 +118,7 @@ def test_markdown_summary_counts_verdicts_per_claim(results):
     summary = md[md.index("## Summary"):md.index("## §2")]
     header = "| claim | paper | § | kind | all n, r | proved | checked | numeric | fails | inconclusive | error | status |"
     assert header in summary
-    assert "| `prep` | (prep), (extra\\_label) | 5 | id | proved |  | 1 |  |  |  |  | as expected |" in summary
+    assert "| `prep` | (6) §5 [prep], (extra\\_label) | 5 | id | proved |  | 1 |  |  |  |  | as expected |" in summary
     assert "| `neumann-lax` | (neumann\\_lax), (extra\\_label) | 5 | id | – |  |  |  | 2 |  |  | **2 unexpected** |" in summary
 
 
@@ -131,16 +131,16 @@ def test_markdown_statements_in_math_with_operators_expanded(results):
 
 def test_errata_lists_failing_claim_with_witness_and_corrections(results):
     md = render_markdown(results)
-    errata = md[md.index("## Errata"):]
+    errata = md[md.index("## Errata"):md.index("## Summary")]
     assert "### `neumann-lax`" in errata
-    assert "Fails at: (3,1) rational, (4,2) rational." in errata
+    assert "Failing runs: (3,1) rational, (4,2) rational." in errata
     assert "Witness at size (3,1), method rational, seed 0:" in errata
     assert "- entry: `(1, 2)`" in errata and "- value: `3/7`" in errata
     assert "- point: `a_1 = 1/2; S_12 = -3; W#1 = x_1`" in errata
     assert "- check dL/dt: nonzero, entry (1, 2) = 3/7" in errata
     assert "- rerun: `stiefelsym verify neumann-lax --size 3,1 --method rational --seed 0`" in errata
     assert "the claim as printed was run at 2 sizes (3,1), (4,2)" in errata.lower()
-    assert r"| sign of $\lambda A$ flipped | **verified** | verified at all 2 sizes (3,1), (4,2) by rational " \
+    assert r"| sign of $\lambda A$ flipped | **verified** | verified at all 2 computed sizes by rational " \
            "(p ≤ 2.9e-34) |" in errata
     assert "| M transposed | rejected | fails at (3,1) by rational |" in errata
     for cid in CLAIMS[:-1]:  # only the failing claim is an erratum
@@ -149,7 +149,7 @@ def test_errata_lists_failing_claim_with_witness_and_corrections(results):
 
 def test_no_errata_when_nothing_fails(results):
     md = render_markdown([r for r in results if r.claim != "neumann-lax"])
-    assert md.rstrip().endswith("No statement failed as printed.")
+    assert "## Errata\n\nNo statement failed as printed.\n\n## Summary" in md
 
 
 def test_long_witness_is_cut_and_points_to_results_json():
@@ -283,7 +283,7 @@ def test_correction_verified_at_every_planned_size_is_said_so():
     rs = [_corr(n, r, "exact", "proved") for n, r in sizes]
     status, phrases = correction_summary(rs, sizes)
     assert status == "verified"
-    assert phrases == ["verified at all 12 sizes (1,1)…(5,3) by exact"]
+    assert phrases == ["verified at all 12 computed sizes by exact"]
 
 
 def test_correction_verified_at_one_size_of_two_is_not_verified():
@@ -313,10 +313,10 @@ def test_errata_table_aggregates_corrections_across_sizes():
     for r in rs:
         r.claim, r.section = "orbit", "2"
     md = render_markdown(rs)
-    assert "| n \\<= 2r + 2 | **verified** | verified at all 5 sizes (2,1)…(5,2) by exact |" in md
+    assert "| n \\<= 2r + 2 | **verified** | verified at all 5 computed sizes by exact |" in md
     assert "| n \\<= 2r | rejected | passes at (2,1), (3,1), (3,2) by exact; fails at (4,2), (5,2) by exact |" in md
     tex = render_latex(rs, detail=True)
-    assert r"\textbf{verified}. verified at all 5 sizes (2,1)\ldots{}(5,2) by exact." in tex
+    assert r"\textbf{verified}. verified at all 5 computed sizes by exact." in tex
 
 
 # --------------------------------------------------------------------------- rank and count statements
@@ -433,3 +433,4 @@ def test_kill_rate_is_never_rounded_up_to_100_percent():
     assert kill_rate({"total": 5, "killed": 4, "equivalent": 1}) == "100%"
     assert kill_rate({"total": 5, "killed": 0, "equivalent": 5}) == "–"
     assert kill_rate({"total": 5, "killed": 5, "equivalent": 0, "baseline_passes": False}) == "–"
+

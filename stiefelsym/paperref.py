@@ -1,0 +1,140 @@
+"""The paper's own numbers for its ``\\label`` keys: "(12) in §5", "Theorem 5.3".
+
+The catalog names the statements it checks by the paper's label keys (``cond_XP``, ``NEUMANN2``).
+A reader looks for the printed numbers instead.  They are read from the ``.aux`` file of the
+paper, compiled once with pdflatex and hyperref (which records each label's counter), and from
+the paper's source (which environment a label sits in: equation, Theorem, Proposition, ...).
+The table is committed as ``proofs/paper_labels.json`` and shipped with the catalog, so the
+reports need neither the paper nor LaTeX; ``make paper-labels`` regenerates it.
+"""
+from __future__ import annotations
+
+import json
+import re
+import shutil
+import subprocess
+import tempfile
+from functools import cache
+from importlib import resources
+from pathlib import Path
+from typing import TypedDict
+
+
+class PaperRef(TypedDict):
+    kind: str       # "equation", "Theorem", "Proposition", "Lemma", "Corollary", "Remark", "section",
+                    # or "display" (an unnumbered display: no number of its own)
+    number: str     # as printed: "12" for an equation, "5.3" for a theorem
+    section: str    # the section's number as printed (the appendices are §9 and §10)
+    page: str       # the page in the compiled paper
+
+
+#: theorem-like environments of the paper and their printed names
+THEOREM_NAMES = {"thm": "Theorem", "prop": "Proposition", "lem": "Lemma", "cor": "Corollary",
+                 "remark": "Remark"}
+LABEL_FILE = "paper_labels.json"
+
+
+def _groups(text: str, start: int, count: int) -> list[str]:
+    """The ``count`` brace groups of ``text`` from ``start`` on (nested braces respected)."""
+    out, i = [], start
+    while len(out) < count:
+        i = text.index("{", i)
+        depth, j = 0, i
+        while True:
+            if text[j] == "{":
+                depth += 1
+            elif text[j] == "}":
+                depth -= 1
+                if depth == 0:
+                    break
+            j += 1
+        out.append(text[i + 1:j])
+        i = j + 1
+    return out
+
+
+def _aux_labels(aux: str) -> dict[str, tuple[str, str, str]]:
+    """label -> (number, page, hyperref anchor) from an .aux written with hyperref."""
+    out = {}
+    for m in re.finditer(r"^\\newlabel\{", aux, flags=re.M):
+        key, body = _groups(aux, m.start(), 2)
+        if key.endswith("@cref"):
+            continue
+        fields = _groups("{" + body + "}", 1, 4) if body.count("{") >= 4 else None
+        if fields is None:
+            continue
+        number, page, _title, anchor = fields
+        out[key] = (number, page, anchor)
+    return out
+
+
+def _environments(tex: str) -> dict[str, str]:
+    """label -> the innermost theorem-like environment around it in the source ("display" for an
+    unnumbered display, whose reference prints the number of the last numbered item)."""
+    out: dict[str, str] = {}
+    stack: list[str] = []
+    for m in re.finditer(r"\\(begin|end)\{([^}]*)\}|\\label\{([^}]*)\}|\\(section)\*?\{", tex):
+        if m.group(1) == "begin":
+            stack.append(m.group(2))
+        elif m.group(1) == "end":
+            if m.group(2) in stack:
+                while stack and stack.pop() != m.group(2):
+                    pass
+        elif m.group(3) is not None:
+            env = next((e for e in reversed(stack) if e in THEOREM_NAMES or e.endswith("*")), None)
+            out.setdefault(m.group(3), "display" if env and env.endswith("*")
+                           else THEOREM_NAMES[env] if env else "")
+    return out
+
+
+def build(tex_path: Path) -> dict[str, PaperRef]:
+    """Compile a copy of the paper with hyperref (two pdflatex passes, errors tolerated) and read
+    every label's printed number, environment and section."""
+    tex = Path(tex_path).read_text(encoding="utf-8", errors="replace")
+    if shutil.which("pdflatex") is None:
+        raise RuntimeError("pdflatex is needed to number the paper's labels (Debian: texlive-latex-base)")
+    with tempfile.TemporaryDirectory() as tmp:
+        src = re.sub(r"(\\documentclass[^\n]*\n)", lambda m: m.group(1) + "\\usepackage{hyperref}\n", tex, count=1)
+        (Path(tmp) / "paper.tex").write_text(src, encoding="utf-8")
+        for _ in range(2):
+            subprocess.run(["pdflatex", "-interaction=nonstopmode", "paper.tex"], cwd=tmp, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, timeout=300, check=False)
+        aux = (Path(tmp) / "paper.aux").read_text(encoding="utf-8", errors="replace")
+    envs = _environments(tex)
+    out: dict[str, PaperRef] = {}
+    for key, (number, page, anchor) in sorted(_aux_labels(aux).items()):
+        counter, _, where = anchor.partition(".")
+        section = where.split(".")[0]
+        kind = counter if counter in ("section", "equation") else (envs.get(key) or "Theorem")
+        out[key] = PaperRef(kind=kind, number=number, section=section, page=page)
+    return out
+
+
+def write(tex_path: Path, dest: Path) -> dict[str, PaperRef]:
+    table = build(tex_path)
+    dest.write_text(json.dumps(table, indent=1, sort_keys=True, ensure_ascii=False) + "\n", encoding="utf-8")
+    return table
+
+
+@cache
+def table() -> dict[str, PaperRef]:
+    """The committed table (empty if the catalog ships none)."""
+    try:
+        text = resources.files("stiefelsym.proofs").joinpath(LABEL_FILE).read_text(encoding="utf-8")
+    except (FileNotFoundError, ModuleNotFoundError):
+        return {}
+    return json.loads(text)
+
+
+def printed(label: str) -> str:
+    """How the paper prints a reference to ``label``: "(12) §5", "Thm 5.3", "§7"; the label
+    itself where the paper's table does not know it."""
+    ref = table().get(label)
+    if ref is None:
+        return f"({label})"
+    if ref["kind"] == "equation":
+        return f"({ref['number']}) §{ref['section']}"
+    if ref["kind"] == "section":
+        return f"§{ref['number']}"
+    if ref["kind"] == "display":
+        return f"unnumbered display, p. {ref['page']}"
+    return f"{ref['kind']} {ref['number']}"
