@@ -388,8 +388,12 @@ def _write_reports(d: Path, results: list[Result], meta: dict[str, Any]) -> list
              "verification.tex": _report.render_latex(fixed, fixed_meta),
              "verification-runs.tex": _report.render_latex(fixed, fixed_meta, mutation=mutation, detail=True),
              "run-log.json": _run_log(results, meta)}
+    from .witness_scripts import TEMPLATE_DIR, scripts
+    for name, text in scripts(fixed, lambda r: _report.labels(r.paper)).items():
+        texts[f"{TEMPLATE_DIR}/{name}"] = text
     paths = []
     for name, text in texts.items():
+        (Path(d) / name).parent.mkdir(parents=True, exist_ok=True)
         write_atomic(Path(d) / name, text)
         paths.append(Path(d) / name)
     return paths
@@ -823,6 +827,9 @@ def _verify(out: Any, ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tu
             "versions": _versions(), "platform": platform.platform(terse=True),
             "commit": _commit(), "sections": _section_titles(),
         }
+        if target is not None:
+            from .witness import attach_small_witnesses
+            attach_small_witnesses(results, {c.id: c for c in claims})
         summary = _report.render_summary(results)
         if fmt == "json":
             click.echo(dump_results(results, meta), file=out, nl=False)

@@ -97,7 +97,15 @@ def check_results(records: list[dict], registry: Registry, echo: Callable[[str],
                      f"{again_fixed.verdict!r}")
                 bad += 1
                 continue
-            edited = _evidence_edits(r, again_fixed.to_json())
+            small = (r.get("witness") or {}).get("small") if isinstance(r.get("witness"), dict) else None
+            record = dict(r, witness={k: v for k, v in r["witness"].items() if k != "small"}) if small else r
+            edited = _evidence_edits(record, again_fixed.to_json())
+            if small is not None and not edited:
+                from .witness import encoded, small_witness
+                from .witness_scripts import template_check
+                found = small_witness(claim, n, rr, func, check=template_check(cid))
+                if found is None or _canonical(encoded(found)) != _canonical(small):
+                    edited = ["witness (the small witness)"]
             if edited:
                 echo(f"REJECTED {where}: its evidence is not what a run again gives ({', '.join(edited)})")
                 bad += 1

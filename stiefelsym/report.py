@@ -14,6 +14,7 @@ parsed contents are passed as ``mutation=``.
 from __future__ import annotations
 
 import re
+from fractions import Fraction
 import xml.etree.ElementTree as ET
 from collections import Counter
 from typing import Any, Iterable, Sequence
@@ -207,10 +208,16 @@ def format_value(v: Any) -> str:
     return str(v)
 
 
+#: a witness's bookkeeping, left out of the reports (the rerun command reproduces it)
+WITNESS_INTERNAL = ("trial", "attempt", "component", "small", "seed")
+
+
 def witness_lines(w: dict[str, Any] | None) -> list[tuple[str, str]]:
     """(key, value) of a witness, each value cut to WITNESS_WIDTH characters."""
     out = []
     for k, v in (w or {}).items():
+        if k in WITNESS_INTERNAL:
+            continue
         text = format_value(v)
         if len(text) > WITNESS_WIDTH:
             text = short(text, WITNESS_WIDTH) + " (in full in results.json)"
@@ -680,6 +687,7 @@ def _md_erratum(c: ClaimResults) -> list[str]:
     w = c.failures[0]
     if w.erratum:
         out += [f"What is wrong: {_md_escape(w.erratum)}", ""]
+    out += _md_small_witness(c)
     out += [_md_escape(_witness_heading(w)), ""]
     out += [f"- {_md_escape(k)}: {_md_code(v)}" for k, v in witness_lines(w.witness)] \
         or [f"- ({NO_POINT})"]
@@ -704,6 +712,68 @@ def _md_erratum(c: ClaimResults) -> list[str]:
         out += ["Corrections found (verified at every size of the claim): "
                 + "; ".join(f"{_md_escape(v)}" for v in facts["verified"]) + ".", ""]
     return out + _md_corrections(c)
+
+
+def small_witness_of(c: ClaimResults) -> tuple[Result, dict[str, Any]] | None:
+    """The failing run that carries a small witness (see :mod:`stiefelsym.witness`), and that witness."""
+    for r in c.failures:
+        if isinstance(r.witness, dict) and isinstance(r.witness.get("small"), dict):
+            return r, r.witness["small"]
+    return None
+
+
+WITNESS_SCRIPT_DIR = "witnesses"
+
+
+def _md_small_witness(c: ClaimResults) -> list[str]:
+    found = small_witness_of(c)
+    if found is None:
+        return []
+    from .witness import decoded, matrix_tex, q_tex
+    r, w = found
+    w = decoded(w)
+    on = [k for k, ok in w.get("on T*V", {}).items() if ok]
+    out = [f"**A witness to check by hand** at (n, r) = {r.size}"
+           + (f", a point of T\*V ({', '.join(_md_escape(k) for k in on)} hold exactly)" if on else "") + ":", ""]
+    parts = [f"{name} = {matrix_tex(v) if isinstance(v, list) else q_tex(v)}" for name, v in w["letters"].items()]
+    out += ["$$" + r",\quad ".join(_tex_letter(p) for p in parts) + "$$", ""]
+    out += [f"There the entry {_md_escape(w['entry'])} of the residual is ${q_tex(Fraction(w['value']))} \\neq 0$."
+            + (f" A self-contained script (Python with sympy, no stiefelsym) rebuilds this point and evaluates "
+               f"the printed formula and the correction: `{WITNESS_SCRIPT_DIR}/{c.id}.py`." if _has_script(c) else ""),
+            ""]
+    return out
+
+
+def _tex_small_witness(c: ClaimResults) -> list[str]:
+    found = small_witness_of(c)
+    if found is None:
+        return []
+    from .witness import decoded, matrix_tex, q_tex
+    r, w = found
+    w = decoded(w)
+    on = [k for k, ok in w.get("on T*V", {}).items() if ok]
+    out = [r"\textbf{A witness to check by hand} " + tex_escape(
+        f"at (n, r) = {r.size}" + (f", a point of T*V ({', '.join(on)} hold exactly)" if on else "") + ":")]
+    parts = [f"{name} = {matrix_tex(v) if isinstance(v, list) else q_tex(v)}" for name, v in w["letters"].items()]
+    out += [r"\[" + r",\quad ".join(_tex_letter(p) for p in parts) + r"\]"]
+    out += [tex_escape(f"There the entry {w['entry']} of the residual is ") + f"${q_tex(Fraction(w['value']))} \\neq 0$."
+            + ((tex_escape(" A self-contained script (Python with sympy, no stiefelsym) rebuilds this point and "
+                           "evaluates the printed formula and the correction: ")
+                + _tt(f"{WITNESS_SCRIPT_DIR}/{c.id}.py") + ".") if _has_script(c) else ""), ""]
+    return out
+
+
+def _has_script(c: ClaimResults) -> bool:
+    from .witness_scripts import template
+    return template(c.id) is not None
+
+
+def _tex_letter(part: str) -> str:
+    """A letter of a witness in LaTeX: Greek letters and 'Re Z' spelled for math mode."""
+    for a, b in (("λ", r"\lambda"), ("κ", r"\kappa"), ("ε", r"\varepsilon"), ("ξ", r"\xi"), ("ζ", r"\zeta"),
+                 ("η", r"\eta"), ("θ", r"\theta"), ("Re ", r"\operatorname{Re} "), ("Im ", r"\operatorname{Im} ")):
+        part = part.replace(a, b)
+    return part
 
 
 def _md_corrections(c: ClaimResults) -> list[str]:
@@ -1052,6 +1122,7 @@ def _tex_erratum(c: ClaimResults) -> list[str]:
     out += [tex_escape("Failing runs: " + ", ".join(f"{r.size} {r.method}" for r in c.failures) + "."), ""]
     if w.erratum:
         out += [tex_escape("What is wrong: " + w.erratum), ""]
+    out += _tex_small_witness(c)
     out += [tex_escape(_witness_heading(w))]
     items = [tex_escape(k) + ": " + _tt(v) for k, v in witness_lines(w.witness)]
     if not items:
