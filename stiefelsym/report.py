@@ -734,7 +734,7 @@ def _md_small_witness(c: ClaimResults) -> list[str]:
     w = decoded(w)
     on = [k for k, ok in w.get("on T*V", {}).items() if ok]
     out = [f"**A witness to check by hand** at (n, r) = {r.size}"
-           + (f", a point of T\*V ({', '.join(_md_escape(k) for k in on)} hold exactly)" if on else "") + ":", ""]
+           + (rf", a point of T\*V ({', '.join(_md_escape(k) for k in on)} hold exactly)" if on else "") + ":", ""]
     parts = [f"{name} = {matrix_tex(v) if isinstance(v, list) else q_tex(v)}" for name, v in w["letters"].items()]
     out += ["$$" + r",\quad ".join(_tex_letter(p) for p in parts) + "$$", ""]
     out += [f"There the entry {_md_escape(w['entry'])} of the residual is ${q_tex(Fraction(w['value']))} \\neq 0$."

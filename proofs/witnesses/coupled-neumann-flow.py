@@ -1,7 +1,6 @@
 """(C-eq) of Appendix 2: the r-coupled Neumann system.  As printed, the last term of the equation
 for Q' is Q Pi; the correction has Y Pi.  The check: the printed flow must keep the constraint
 Y^T Q + Q^T Y = 0, i.e. its derivative along the flow must vanish."""
-import sympy as sp
 
 CHECK = "d(Y^T Q + Q^T Y)/dt along (C-eq)"
 
