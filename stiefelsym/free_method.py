@@ -25,6 +25,7 @@ from .free import FreeScene, FreeSolveError, NeedsCoordinates, RewritingError
 from .free.algebra import REFUSED, recording, refusals
 from .free.certificates import CertificateWriter
 from .free.rewriting import latex_text
+from .latex import tex_text, unicode_name
 from .ir import TraceRefused
 
 
@@ -89,7 +90,7 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
                 else:
                     proved_entries.append((pos, red, len(derivations) if red.rules else None))
                 if red.rules or not red.is_zero:
-                    derivations.append(f"\\paragraph{{{latex_text(pos)}}}\n{red.latex()}")
+                    derivations.append(f"\\paragraph{{{tex_text(unicode_name(pos))}}}\n{red.latex()}")
             outcomes.append(CheckOutcome(name, "zero" if not bad else "open",
                                          "" if not bad else f"{bad} entries with nonzero normal form"))
     except RewritingError as exc:

@@ -23,7 +23,7 @@ _SUB = dict(zip("₀₁₂₃₄₅₆₇₈₉₊₋₌₍₎ₐₑₒₓₕₖ
 _TEXT_ONLY = {"–": "--", "—": "---", "‘": "`", "’": "'", "“": "``", "”": "''",
               "\u00a0": "~", "…": r"\ldots{}", "•": r"\ensuremath{\bullet}", "§": r"\ensuremath{\S}",
               "¶": r"\ensuremath{\P}"}
-_ACCENTS = {"\u0301": "'", "\u0300": "`", "\u030c": "v", "\u0308": '"', "\u0302": "^",
+_ACCENTS = {"\u0301": "'", "\u0300": "`", "\u030c": "v", "\u0308": '"', "\u0302": "^", "\u0307": ".",
             "\u0303": "~", "\u0327": "c", "\u0306": "u", "\u0304": "="}
 _MATH_SYMBOLS = {
     "−": "-", "×": r"\times", "·": r"\cdot", "∘": r"\circ", "≤": r"\le", "≥": r"\ge",
@@ -203,6 +203,21 @@ def _toplevel(tex: str) -> str:
         prev, tex = tex, re.sub(r"\\begin\{([^}]*)\}(?:(?!\\begin\{).)*?\\end\{\1\}", "", tex,
                                 flags=re.S)
     return tex
+
+
+#: the Greek letters of the paper as the claims' check names spell them in ASCII
+_GREEK_WORDS = {"Phi": "Φ", "Psi": "Ψ", "Lambda": "Λ", "lambda": "λ", "kappa": "κ", "Pi": "Π", "Omega": "Ω",
+                "eta": "η", "xi": "ξ", "zeta": "ζ", "theta": "θ", "epsilon": "ε", "eps": "ε", "nu": "ν",
+                "Sigma": "Σ", "sigma": "σ", "omega": "ω", "mu": "μ", "Gamma": "Γ", "Delta": "Δ"}
+
+
+def unicode_name(name: str) -> str:
+    """A check's ASCII name as mathematics in Unicode: ``X^T`` as Xᵀ, ``Phi`` as Φ, a trailing
+    entry ``[1,2]`` as ", entry (1,2)"."""
+    name = re.sub(r"\^T\b", "ᵀ", name)
+    name = re.sub(r"(?<![A-Za-z])(d?)(" + "|".join(sorted(_GREEK_WORDS, key=len, reverse=True)) + r")(?![a-z])",
+                  lambda m: m.group(1) + _GREEK_WORDS[m.group(2)], name)
+    return re.sub(r"\[(\d+),(\d+)\]$", r", entry (\1,\2)", name)
 
 
 def tex_text(text: str) -> str:

@@ -71,3 +71,11 @@ def test_tex_balanced():
     assert not tex_balanced("\\[x^{2}")
     assert not tex_balanced("\\begin{itemize}")
     assert not tex_balanced("\\end{document}")
+
+
+def test_check_names_read_as_mathematics():
+    from stiefelsym.latex import unicode_name
+    assert unicode_name("Phi X = P - X P^T X[1,1]") == "Φ X = P - X Pᵀ X, entry (1,1)"
+    assert unicode_name("dPsi/dt") == "dΨ/dt" and unicode_name("H_kappa") == "H_κ"
+    assert unicode_name("derivative along the printed flow") == "derivative along the printed flow"
+    assert tex_text("Ẋ") == r"\.{X}"

@@ -1,0 +1,83 @@
+"""Witnesses a reader checks by hand: a small point on T*V where the printed formula fails, and a
+self-contained script that rebuilds it and evaluates the printed formula and the correction."""
+import json
+import subprocess
+import sys
+from fractions import Fraction
+from pathlib import Path
+
+import pytest
+
+from stiefelsym.claims import load_catalog
+from stiefelsym.witness import decoded, encoded, small_witness
+from stiefelsym.witness_scripts import run_script, script_text, template, template_check
+
+ROOT = Path(__file__).resolve().parents[1]
+REPORTS = ROOT / "reports"
+CID = "coupled-neumann-flow"
+
+
+@pytest.fixture(scope="module")
+def witness():
+    claim = load_catalog().get(CID)
+    return small_witness(claim, 1, 1, check=template_check(CID))
+
+
+def test_the_small_witness_is_a_point_of_tstar_v_with_a_nonzero_entry(witness):
+    assert witness["check"] == template_check(CID) and Fraction(witness["value"]) != 0
+    assert witness["on T*V"] and all(witness["on T*V"].values())
+    assert witness["height bits"] <= 4
+    assert set(witness["letters"]) >= {"X", "P", "Y", "Q", "A", "κ"}
+
+
+def test_the_small_witness_is_reproducible(witness):
+    claim = load_catalog().get(CID)
+    again = small_witness(claim, 1, 1, check=template_check(CID))
+    assert encoded(again) == encoded(witness)
+    assert decoded(json.loads(json.dumps(encoded(witness))))["letters"] == witness["letters"]
+
+
+def test_the_correction_has_no_witness():
+    claim = load_catalog().get(CID)
+    fixed = claim.corrections[0].func
+    assert small_witness(claim, 1, 1, fixed, check=template_check(CID)) is None
+
+
+def test_the_script_confirms_the_report_and_a_wrong_one_does_not(witness):
+    text = script_text(CID, "(C-eq)", 1, 1, encoded(witness))
+    status, out = run_script(text)
+    assert status == 0 and "the correction holds there" in out
+    # negative controls: a stated value that is not the printed residual, a point off T*V
+    wrong = dict(encoded(witness), value=str(Fraction(witness["value"]) + 1))
+    assert run_script(script_text(CID, "", 1, 1, wrong))[0] == 1
+    off = encoded(witness)
+    off = dict(off, letters=dict(off["letters"], X=[["2"]]))
+    status, out = run_script(script_text(CID, "", 1, 1, off))
+    assert status == 1 and "X^T X = I: False" in out
+
+
+def test_a_template_whose_correction_is_wrong_is_caught(witness, monkeypatch):
+    import stiefelsym.witness_scripts as ws
+    body = template(CID).replace("+ Y * Pi", "- Y * Pi")
+    monkeypatch.setattr(ws, "template", lambda cid: body)
+    status, out = run_script(ws.script_text(CID, "", 1, 1, encoded(witness)))
+    assert status == 1 and "(NOT zero)" in out
+
+
+def _committed():
+    return sorted((REPORTS / "witnesses").glob("*.py")) if (REPORTS / "witnesses").is_dir() else []
+
+
+@pytest.mark.parametrize("script", _committed(), ids=lambda p: p.stem)
+def test_every_committed_witness_script_runs_alone_and_prints_what_the_report_states(script, tmp_path):
+    """Each script runs from an empty folder with python -I (no stiefelsym on its path), prints
+    exactly its committed output, and the value it confirms is the one in results.json."""
+    out = subprocess.run([sys.executable, "-I", str(script)], cwd=tmp_path, capture_output=True, text=True,
+                         timeout=120)
+    assert out.returncode == 0, out.stdout + out.stderr
+    assert out.stdout == script.with_suffix(".out").read_text(encoding="utf-8")
+    results = json.loads((REPORTS / "results.json").read_text(encoding="utf-8"))["results"]
+    small = [r["witness"]["small"] for r in results if r["claim"] == script.stem and not r.get("variant")
+             and isinstance(r.get("witness"), dict) and "small" in r["witness"]]
+    assert small and f"(the report states {Fraction(small[0]['value'])})" in out.stdout
+    assert f"`witnesses/{script.stem}.py`" in (REPORTS / "verification.md").read_text(encoding="utf-8")
