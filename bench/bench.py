@@ -1,4 +1,4 @@
-"""The benchmark targets of issue 7, measured side by side in one run.
+"""The benchmark targets of the engine, measured side by side in one run.
 
 Every target is printed with its measured value, its goal and the ratio measured/goal, and
 written to ``reports/bench.json`` and ``reports/bench.md``.  The engine is reached through its
@@ -470,7 +470,7 @@ def _commit() -> str | None:
 
 
 def markdown(doc: dict[str, Any]) -> str:
-    lines = ["# Benchmark: the targets of issue 7", "",
+    lines = ["# Benchmark: the engine's speed targets, measured side by side", "",
              f"Generated {doc['generated']} by `{doc['command']}` (commit {doc['commit']}) on {doc['platform']}, "
              f"{doc['cpus']} CPUs.  ratio = measured / goal (a time goal is met at ratio <= 1, the speed-up goal "
              "at ratio >= 1).", "",

@@ -441,12 +441,17 @@ def plot(doc: dict[str, Any], out_dir: Path | str) -> list[Path]:
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+    import matplotlib.ticker
     out_dir = Path(out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
     fams = list(doc.get("families") or FAMILIES)
-    fig, axes = plt.subplots(1, len(fams), figsize=(4 * len(fams), 3.6), sharey=True)
-    if len(fams) == 1:
-        axes = [axes]
+    # a grid three panels wide, legible at the page's width
+    cols = min(3, len(fams))
+    rows = -(-len(fams) // cols)
+    fig, grid_axes = plt.subplots(rows, cols, figsize=(4.2 * cols, 3.4 * rows + 0.6), sharey=True, squeeze=False)
+    axes = [ax for row in grid_axes for ax in row]
+    for ax in axes[len(fams):]:
+        ax.set_visible(False)
     colors = {"exact": "C0", "rational": "C1", "modular": "C2", "float": "C3"}
     for ax, fam in zip(axes, fams):
         for key, marker, style, suffix in (("fits", "o", "-", " r=n/2"), ("fits_square", "s", "--", " r=n"),
@@ -462,19 +467,23 @@ def plot(doc: dict[str, Any], out_dir: Path | str) -> list[Path]:
                 grid = [2 + k * (max(ns) * 2 - 2) / 50 for k in range(51)]
                 ax.loglog(grid, [math.exp(f["a"]) * x ** f["b"] for x in grid], style, color=colors.get(method),
                           lw=1, alpha=0.7)
-        ax.set_title(f"{fam} ({doc.get('families', FAMILIES).get(fam, '')})", fontsize=8)
+        ax.set_title(f"{fam} ({doc.get('families', FAMILIES).get(fam, '')})", fontsize=10)
         ax.set_xlabel("n")
+        ax.xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
         ax.grid(True, which="both", alpha=0.3)
-    axes[0].set_ylabel("seconds per run")
-    axes[0].legend(fontsize=6, ncol=2)
-    fig.suptitle("cost model: time against n per method, r = ceil(n/2) (filled, solid), r = n (open, dashed), "
-                 "r = 2 (triangles, dotted); lines: fitted upper envelopes",
-                 fontsize=9)
+    for row in grid_axes:
+        row[0].set_ylabel("seconds per run")
+    axes[0].legend(fontsize=8, ncol=2)
+    fig.suptitle("Cost model: time against n per method; r = ceil(n/2) (filled, solid), r = n (open, dashed),\n"
+                 "r = 2 (triangles, dotted); lines: the fitted upper envelopes",
+                 fontsize=11)
     fig.tight_layout()
     paths = []
     for ext in ("png", "pdf"):
         p = out_dir / f"costmodel.{ext}"
-        fig.savefig(p, dpi=110)
+        # no date or producer in the file: the same data give the same bytes
+        fig.savefig(p, dpi=110, metadata={"CreationDate": None, "Creator": None, "Producer": None}
+                    if ext == "pdf" else {"Software": None})
         paths.append(p)
     plt.close(fig)
     return paths

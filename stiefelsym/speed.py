@@ -779,6 +779,10 @@ def _fmt(x: Any) -> str:
     return str(x)
 
 
+def _yes_no(x: Any) -> str:
+    return "yes" if x is True else "no" if x is False else str(x)
+
+
 def _residual_table(records: Sequence[dict[str, Any]]) -> list[str]:
     lines = ["| n | r | precision | max \\|residual\\| | max bound e | \\|computed − exact\\| | entries over bound "
              "| resolves 1e-8 of scale | predicted s | s |",
@@ -788,7 +792,7 @@ def _residual_table(records: Sequence[dict[str, Any]]) -> list[str]:
         pred = x.get("predicted_seconds")
         lines.append(f"| {x['n']} | {x['r']} | {x['precision']} | {_fmt(x.get('max_residual'))} | "
                      f"{_fmt(x.get('max_bound'))} | {_fmt(x.get('max_actual_error'))} | {over} | "
-                     f"{x.get('resolved', '-')} | {'-' if pred is None else f'{pred:.3g}'} | "
+                     f"{_yes_no(x.get('resolved', '-'))} | {'-' if pred is None else f'{pred:.3g}'} | "
                      f"{x.get('seconds', 0):.3f} |")
     return lines + [""]
 
