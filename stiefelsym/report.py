@@ -20,7 +20,7 @@ from collections import Counter
 from typing import Any, Iterable, Sequence
 
 from . import paperref, sizerules
-from .latex import math_ok, split_math, tex_balanced, tex_display, tex_escape, tex_text
+from .latex import unicode_name, math_ok, split_math, tex_balanced, tex_display, tex_escape, tex_text
 from .results import PASSING, VERDICTS, Result
 
 DEFAULT_TITLE = ("Verification of Fedorov & Jovanović, "
@@ -731,6 +731,10 @@ def _md_small_witness(c: ClaimResults) -> list[str]:
         return []
     from .witness import decoded, matrix_tex, q_tex
     r, w = found
+    if w.get("kind") == "count":
+        return [_count_witness_text(c, r, w, _md_escape) + (f" The script `{WITNESS_SCRIPT_DIR}/{c.id}.py` "
+                                                            "(Python with sympy, no stiefelsym) recomputes it from "
+                                                            "the paper's definitions." if _has_script(c) else ""), ""]
     w = decoded(w)
     on = [k for k, ok in w.get("on T*V", {}).items() if ok]
     out = [f"**A witness to check by hand** at (n, r) = {r.size}"
@@ -750,6 +754,11 @@ def _tex_small_witness(c: ClaimResults) -> list[str]:
         return []
     from .witness import decoded, matrix_tex, q_tex
     r, w = found
+    if w.get("kind") == "count":
+        return [r"\textbf{A witness to check by hand:} " + _count_witness_text(c, r, w, tex_escape)
+                + ((tex_escape(" The script ") + _tt(f"{WITNESS_SCRIPT_DIR}/{c.id}.py")
+                    + tex_escape(" (Python with sympy, no stiefelsym) recomputes it from the paper's definitions."))
+                   if _has_script(c) else ""), ""]
     w = decoded(w)
     on = [k for k, ok in w.get("on T*V", {}).items() if ok]
     out = [r"\textbf{A witness to check by hand} " + tex_escape(
@@ -761,6 +770,12 @@ def _tex_small_witness(c: ClaimResults) -> list[str]:
                            "evaluates the printed formula and the correction: ")
                 + _tt(f"{WITNESS_SCRIPT_DIR}/{c.id}.py") + ".") if _has_script(c) else ""), ""]
     return out
+
+
+def _count_witness_text(c: ClaimResults, r: Result, w: dict[str, Any], escape: Any) -> str:
+    head = "" if escape is tex_escape else "**A witness to check by hand:** "
+    return head + escape(f"at (n, r) = {r.size}, {unicode_name(w['check'])} is {w['value']}, where the printed "
+                         f"statement gives {w['paper']}.")
 
 
 def _has_script(c: ClaimResults) -> bool:

@@ -204,6 +204,21 @@ def attach_small_witnesses(results: list[Any], claims: dict[str, Claim]) -> int:
     """For every claim that fails as printed at a point: search a small witness at its smallest
     failing size (among the failures with a point) and attach it to that result's witness as
     ``small``.  Returns how many were attached."""
+    from .witness_scripts import count_values, template_check, template_kind, template_size
+    done = 0
+    counted: set[str] = set()
+    for r in results:       # errata about a number: the template's size and check
+        if (r.verdict != "fails" or r.variant or r.n is None or r.claim in counted
+                or template_kind(r.claim) != "count" or (r.n, r.r) != template_size(r.claim)):
+            continue
+        for ch in r.checks:
+            values = count_values(ch.detail or "") if ch.name == template_check(r.claim) else None
+            if values is not None and ch.status in ("count-mismatch", "rank-mismatch"):
+                r.witness = dict(r.witness or {}, small={"kind": "count", "check": ch.name,
+                                                          "value": values[0], "paper": values[1]})
+                counted.add(r.claim)
+                done += 1
+                break
     firsts: dict[str, Any] = {}
     for r in results:
         if (r.verdict != "fails" or r.variant or r.n is None or not isinstance(r.witness, dict)
@@ -212,13 +227,11 @@ def attach_small_witnesses(results: list[Any], claims: dict[str, Claim]) -> int:
         best = firsts.get(r.claim)
         if best is None or (r.n, r.r, r.method) < (best.n, best.r, best.method):
             firsts[r.claim] = r
-    done = 0
     for cid, r in firsts.items():
         if "small" in r.witness:
             done += 1
             continue
         try:
-            from .witness_scripts import template_check
             w = small_witness(claims[cid], r.n, r.r, check=template_check(cid))
         except Exception:   # noqa: BLE001 - the seeded witness stands; no small one is offered
             w = None
@@ -227,11 +240,3 @@ def attach_small_witnesses(results: list[Any], claims: dict[str, Claim]) -> int:
             done += 1
     return done
 
-
-def summary(w: dict[str, Any]) -> tuple[str, list[tuple[str, Any]], str]:
-    """The words of a small witness: where it lies, its letters (name, value), and the failing entry."""
-    on = [k for k, ok in w.get("on T*V", {}).items() if ok]
-    where = ("a point of T*V: " + ", ".join(on) + " hold exactly") if on else "a point of the scene"
-    letters = list(w["letters"].items())
-    entry = f"the entry {w['entry']} is {w['value']} ≠ 0"
-    return where, letters, entry
