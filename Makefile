@@ -58,6 +58,7 @@ mutate: venv
 .PHONY: discover
 discover: venv
 	$(BIN)/stiefelsym discover --correct all --report-dir reports
+	$(BIN)/stiefelsym discover --tables --report-dir reports
 
 ## tables: appendix tables (dimensions formula against computed, verdict matrix) in reports/tables.{md,tex}
 tables: venv

@@ -47,12 +47,15 @@ def _size(text: str) -> Size:
 @click.option("--correct", "corrections", multiple=True, metavar="CLAIM",
               help="the space of formulas of the printed shape that make CLAIM hold (a claim with a registered "
                    "ansatz, 'all', or file.py:NAME, a CorrectionAnsatz of one's own); FLOW is not given then")
+@click.option("--tables", is_flag=True,
+              help="the tables of the conserved trace polynomials of the paper's Neumann flows (every κ) and "
+                   "Manakov flow, and which of them the paper names (default sizes 4,2 and 5,2)")
 @click.option("--report-dir", type=click.Path(path_type=Path), default=None,
               help="also write conserved.md there (with --correct: discover.md and discover.tex); nothing is "
                    "written without it")
 def discover(flow: str | None, sizes: tuple[str, ...], degree: int, max_a: int, no_products: bool,
              methods: tuple[str, ...], seed: int, lax: str | None, corrections: tuple[str, ...],
-             report_dir: Path | None) -> None:
+             report_dir: Path | None, tables: bool = False) -> None:
     """FLOW: a catalog flow (neumann-normal, neumann-euclidean, geodesic-normal, geodesic-euclidean),
     module:function (a function of the scene returning {"X": Xdot, "P": Pdot}) or
     hamiltonian:module:function.  With --correct CLAIM, no FLOW: the corrections of CLAIM's printed
@@ -61,8 +64,13 @@ def discover(flow: str | None, sizes: tuple[str, ...], degree: int, max_a: int, 
         if flow is not None or lax is not None:
             raise InputError("--correct searches the corrections of a claim: give no FLOW and no --lax with it")
         _correct(corrections, sizes, methods, seed, report_dir)
+    if tables:
+        if flow is not None or lax is not None:
+            raise InputError("--tables runs the paper's flows: give no FLOW and no --lax with it")
+        _tables(sizes, degree, methods, seed, report_dir)
+        return
     if flow is None:
-        raise InputError("give a FLOW (or --correct CLAIM)")
+        raise InputError("give a FLOW (or --correct CLAIM, or --tables)")
     sizes = sizes or ("4,2",)
     from .discover import conserved, resolve_flow
     try:
@@ -147,4 +155,26 @@ def _correct(names: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str,
         ok = ok and not bad
     if report_dir is not None:
         write_reports(spaces, report_dir, sweep)
+    raise SystemExit(0 if ok else 1)
+
+
+def _tables(sizes: tuple[str, ...], degree: int, methods: tuple[str, ...], seed: int, report_dir: Path | None) -> None:
+    from .conserved_tables import markdown, tables
+    from .results import write_atomic
+    zs = [_size(x) for x in sizes] or [Size(4, 2), Size(5, 2)]
+    rows = tables(zs, degree, seed, verify=methods)
+    ok = True
+    for r in rows:
+        d = r.discovery
+        click.echo(f"{r.family.key} ({r.size.n},{r.size.r}): dim D = {len(d.integrals)}, named {r.named_dim}, "
+                   f"not named {len(d.integrals) - r.named_dim}  ({r.seconds:.1f} s)")
+        for I in r.not_named:
+            click.echo(f"  not named: {I.text()}")
+        bad = [v for I in d.integrals for v in I.verdicts.values() if v not in ("proved", "checked", "numeric",
+                                                                                 "undecided")]
+        ok = ok and not bad
+    if report_dir is not None:
+        report_dir.mkdir(parents=True, exist_ok=True)
+        write_atomic(report_dir / "conserved.md", markdown(rows))
+        click.echo(f"report: {report_dir / 'conserved.md'}", err=True)
     raise SystemExit(0 if ok else 1)
