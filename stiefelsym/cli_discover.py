@@ -159,7 +159,7 @@ def _correct(names: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str,
 
 
 def _tables(sizes: tuple[str, ...], degree: int, methods: tuple[str, ...], seed: int, report_dir: Path | None) -> None:
-    from .conserved_tables import markdown, tables
+    from .conserved_tables import markdown, neumann2_integrals, tables
     from .results import write_atomic
     zs = [_size(x) for x in sizes] or [Size(4, 2), Size(5, 2)]
     rows = tables(zs, degree, seed, verify=methods)
@@ -173,8 +173,14 @@ def _tables(sizes: tuple[str, ...], degree: int, methods: tuple[str, ...], seed:
         bad = [v for I in d.integrals for v in I.verdicts.values() if v not in ("proved", "checked", "numeric",
                                                                                  "undecided")]
         ok = ok and not bad
+    neumann2 = [neumann2_integrals(Size(n, r), seed) for n in range(2, 7) for r in range(1, n)]
+    for it in neumann2:
+        r_n = it.size.r * (it.size.n - it.size.r)
+        click.echo(f"NEUMANN2 ({it.size.n},{it.size.r}): rank {it.rank_all} of r(n - r) = {r_n}: "
+                   + ", ".join(f"c{k},{j}" for k, j in it.chosen))
+        ok = ok and it.rank_all == r_n
     if report_dir is not None:
         report_dir.mkdir(parents=True, exist_ok=True)
-        write_atomic(report_dir / "conserved.md", markdown(rows))
+        write_atomic(report_dir / "conserved.md", markdown(rows, neumann2))
         click.echo(f"report: {report_dir / 'conserved.md'}", err=True)
     raise SystemExit(0 if ok else 1)

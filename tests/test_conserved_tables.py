@@ -43,3 +43,13 @@ def test_the_table_says_which_integrals_are_named():
     dim, extra = ct.named_part(fam, d)
     md = ct.markdown([ct.Row(fam, Size(4, 2), d, dim, extra)])
     assert "| (4,2) |" in md and "in the span of the named integrals" in md and "## Method" in md
+
+
+def test_neumann2_has_r_n_minus_r_integrals_on_psi_zero_and_more_off_it():
+    for n, r in ((3, 1), (4, 2), (5, 2)):
+        it = ct.neumann2_integrals(Size(n, r))
+        assert it.rank_all == len(it.chosen) == r * (n - r)
+    # negative control: off Ψ = 0 (r = 3: the generic leaf is larger) the same functions have
+    # l = 7 independent differentials on the leaf, not r(n - r) = 6
+    off = ct.neumann2_integrals(Size(5, 3), on_psi_zero=False)
+    assert off.rank_all == 7
