@@ -609,6 +609,9 @@ def _diag(s: Scene, values: Sequence[Any]) -> Mat:
     return s.mat([[values[i] if i == j else s.q(0) for j in range(r)] for i in range(r)], ("r", "r"))
 
 
+DOUBLE_PARAMETER = "double_d1"     # a scalar every double point draws (a witness looks for it)
+
+
 def double_point(s: Scene) -> dict[str, Mat]:
     """A generic point (X, Y, Ẋ, Ẏ) of the rank r double Neumann system: XᵀY = I_r,
     ẊᵀY + XᵀẎ = 0 (keys "X", "Y", "Xdot", "Ydot").

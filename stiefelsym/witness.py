@@ -19,6 +19,7 @@ from typing import Any, Callable
 
 from .claims import Claim
 from .fields import DegenerateError, RationalField
+from .systems import DOUBLE_PARAMETER, double_point
 
 #: the chart parameters' bounds tried in turn (integers in [-B, B])
 BOUNDS = (1, 2, 3, 5)
@@ -63,6 +64,14 @@ def _letters(scene: Any) -> dict[str, Any]:
                 out[name] = _matrix(M)
             except (AttributeError, TypeError, ValueError):
                 continue
+    if "scalar:" + DOUBLE_PARAMETER in scene._point_values():
+        # the double Neumann system: its point (X, Y, Ẋ, Ẏ), rebuilt from the parameters the claim
+        # drew (named, so the same values), replaces the chart's X0, P
+        dp = double_point(scene)
+        out.pop("X", None)
+        out.pop("P", None)
+        for key, name in (("X", "X"), ("Y", "Y"), ("Xdot", "Ẋ"), ("Ydot", "Ẏ")):
+            out[name] = _matrix(dp[key])
     cp = cache.get("cpoint")
     if cp is not None:                         # a point Z of W(n, r) and its tangent vector, realified
         n, r = scene.n, scene.r
@@ -74,6 +83,13 @@ def _letters(scene: Any) -> dict[str, Any]:
     for key, name in SCALARS:
         if key in params:
             out[name] = _fraction(params[key])
+    if "A" not in out and "a_1" in params:     # A built in a scene of the claim's own: its eigenvalues
+        n = scene.n
+        out["A"] = [[_fraction(params[f"a_{i + 1}"]) if i == j else Fraction(0) for j in range(n)]
+                    for i in range(n)]
+    for key, v in params.items():              # the claim's own scalars (ν, ...), but not a point's parameters
+        if key.startswith("scalar:") and not key.startswith("scalar:double_"):
+            out[key.split(":", 1)[1]] = _fraction(v)
     return out
 
 
@@ -103,6 +119,13 @@ def _on_tstar_v(letters: dict[str, Any]) -> dict[str, bool]:
         k = len(G)
         out["Z*Z = I"] = all(G[i][j] == (1 if i == j else 0) for i in range(k) for j in range(k))
         out["Z*V + V*Z = 0"] = all(S[i][j] + S[j][i] == 0 for i in range(k) for j in range(k))
+    if "Ẋ" in letters:                          # the double system: XᵀY = I, ẊᵀY + XᵀẎ = 0
+        X, Y, Xd, Yd = letters["X"], letters["Y"], letters["Ẋ"], letters["Ẏ"]
+        G, S1, S2 = mul(T(X), Y), mul(T(Xd), Y), mul(T(X), Yd)
+        k = len(G)
+        out["XᵀY = I"] = all(G[i][j] == (1 if i == j else 0) for i in range(k) for j in range(k))
+        out["ẊᵀY + XᵀẎ = 0"] = all(S1[i][j] + S2[i][j] == 0 for i in range(k) for j in range(k))
+        return out
     for x, p in (("X", "P"), ("Y", "Q")):
         if x in letters and p in letters:
             X, P = letters[x], letters[p]

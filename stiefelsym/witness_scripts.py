@@ -8,7 +8,8 @@ formula and its correction out with sympy, from the paper, independently of the 
   for a point where this check is nonzero, so the report and the script speak of the same entry);
 * ``residuals(W)``: ``{"printed": ..., "corrected": ...}``, the value of that check for the
   printed formula and for the correction, at the point ``W`` (letters by ASCII name: ``X``,
-  ``P``, ``Y``, ``Q``, ``A``, ``lam``, ``kappa``, ``eps``, ``ReZ``, ``ImZ``, ``ReV``, ``ImV``;
+  ``P``, ``Y``, ``Q``, ``A``, ``lam``, ``kappa``, ``eps``, ``ReZ``, ``ImZ``, ``ReV``, ``ImV``, the
+  double system's ``X``, ``Y``, ``Xdot``, ``Ydot``, and the claim's own scalars (``nu``);
   matrices as ``sympy.Matrix``, scalars as ``sympy.Rational``).
 
 The generated script embeds the witness point, checks that it lies on T*V, evaluates both
@@ -36,6 +37,7 @@ TEMPLATE_DIR = "witnesses"
 
 #: the letters' names in the scripts (ASCII)
 ASCII = {"λ": "lam", "κ": "kappa", "ε": "eps", "ξ": "xi", "ζ": "zeta", "η": "eta", "θ": "theta",
+         "Ẋ": "Xdot", "Ẏ": "Ydot",
          "Re Z": "ReZ", "Im Z": "ImZ", "Re V": "ReV", "Im V": "ImV"}
 
 
@@ -124,6 +126,11 @@ def _letters():
 
 def _on_tstar_v(W):
     out = []
+    if "Xdot" in W:
+        X, Y, Xd, Yd = W["X"], W["Y"], W["Xdot"], W["Ydot"]
+        out.append(("X^T Y = I", X.T * Y == sp.eye(X.shape[1])))
+        out.append(("Xdot^T Y + X^T Ydot = 0", (Xd.T * Y + X.T * Yd).is_zero_matrix))
+        return out
     for x, p in (("X", "P"), ("Y", "Q")):
         if x in W and p in W:
             X, P = W[x], W[p]

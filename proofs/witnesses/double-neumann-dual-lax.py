@@ -1,16 +1,15 @@
 """Theorem dual-D: with (I_n - lambda A)^{-1} in the off-diagonal blocks of L(lambda), as printed in (LA3*D),
 the double Neumann system (D-eq) does not imply dL/dt = [L, A]; it does with (lambda I_n - A)^{-1} there.
-The point of the double system is the diagonal one, X = Y, X' = Y' = P (X^T Y = I_r, X'^T Y + X^T Y' = 0)."""
+The point (X, Y, X', Y') of the double system: X^T Y = I_r, X'^T Y + X^T Y' = 0."""
 import sympy as sp
 
 CHECK = "LA3*D"
 
 
 def residuals(W):
-    X0, P0, A, lam = W["X"], W["P"], W["A"], W["lam"]
-    n, r = X0.shape
+    X, Y, Xd, Yd, A, lam = W["X"], W["Y"], W["Xdot"], W["Ydot"], W["A"], W["lam"]
+    n, r = X.shape
     t = sp.Symbol("t")
-    X, Y, Xd, Yd = X0, X0, P0, P0                           # a point of (D0): X^T Y = I_r
     R = (lam * sp.eye(n) - A).inv()                         # (lambda I_n - A)^{-1}
     Lam = X.T * A * Y - Xd.T * Yd                           # (D-L)
     Xdd = -A * X + X * Lam.T                                # (D-eq)
