@@ -741,7 +741,7 @@ def _md_small_witness(c: ClaimResults) -> list[str]:
            + (rf", a point of T\*V ({', '.join(_md_escape(k) for k in on)} hold exactly)" if on else "") + ":", ""]
     parts = [f"{name} = {matrix_tex(v) if isinstance(v, list) else q_tex(v)}" for name, v in w["letters"].items()]
     out += ["$$" + r",\quad ".join(_tex_letter(p) for p in parts) + "$$", ""]
-    out += [f"There the entry {_md_escape(w['entry'])} of the residual is ${q_tex(Fraction(w['value']))} \\neq 0$."
+    out += [f"There the residual {_md_escape(_entry_words(w['entry']))} is ${q_tex(Fraction(w['value']))} \\neq 0$."
             + (f" A self-contained script (Python with sympy, no stiefelsym) rebuilds this point and evaluates "
                f"the printed formula and the correction: `{WITNESS_SCRIPT_DIR}/{c.id}.py`." if _has_script(c) else ""),
             ""]
@@ -764,8 +764,11 @@ def _tex_small_witness(c: ClaimResults) -> list[str]:
     out = [r"\textbf{A witness to check by hand} " + tex_escape(
         f"at (n, r) = {r.size}" + (f", a point of T*V ({', '.join(on)} hold exactly)" if on else "") + ":")]
     parts = [f"{name} = {matrix_tex(v) if isinstance(v, list) else q_tex(v)}" for name, v in w["letters"].items()]
-    out += [r"\[" + r",\quad ".join(_tex_letter(p) for p in parts) + r"\]"]
-    out += [tex_escape(f"There the entry {w['entry']} of the residual is ") + f"${q_tex(Fraction(w['value']))} \\neq 0$."
+    rows = [r",\quad ".join(_tex_letter(p) for p in parts[k:k + 3]) for k in range(0, len(parts), 3)]
+    # three letters a line, the whole shrunk to the line's width when wider
+    out += [r"\begin{center}\resizebox{\ifdim\width>\linewidth\linewidth\else\width\fi}{!}{$\displaystyle"
+            r"\begin{gathered}" + r"\\[2pt]".join(rows) + r"\end{gathered}$}\end{center}"]
+    out += [tex_text(f"There the residual {_entry_words(w['entry'])} is ") + f"${q_tex(Fraction(w['value']))} \\neq 0$."
             + ((tex_escape(" A self-contained script (Python with sympy, no stiefelsym) rebuilds this point and "
                            "evaluates the printed formula and the correction: ")
                 + _tt(f"{WITNESS_SCRIPT_DIR}/{c.id}.py") + ".") if _has_script(c) else ""), ""]
@@ -778,6 +781,12 @@ def _count_witness_text(c: ClaimResults, r: Result, w: dict[str, Any], escape: A
                          f"statement gives {w['paper']}.")
 
 
+def _entry_words(entry: str) -> str:
+    """"MAN-LA, entry (1,1)," for a matrix residual; the name alone for a scalar one."""
+    text = unicode_name(entry)
+    return text + "," if "entry (" in text else text
+
+
 def _has_script(c: ClaimResults) -> bool:
     from .witness_scripts import template
     return template(c.id) is not None
@@ -785,7 +794,7 @@ def _has_script(c: ClaimResults) -> bool:
 
 def _tex_letter(part: str) -> str:
     """A letter of a witness in LaTeX: Greek letters and 'Re Z' spelled for math mode."""
-    for a, b in (("λ", r"\lambda"), ("κ", r"\kappa"), ("ε", r"\varepsilon"), ("ξ", r"\xi"), ("ζ", r"\zeta"),
+    for a, b in (("Ẋ", r"\dot X"), ("Ẏ", r"\dot Y"), ("λ", r"\lambda"), ("κ", r"\kappa"), ("ε", r"\varepsilon"), ("ξ", r"\xi"), ("ζ", r"\zeta"),
                  ("η", r"\eta"), ("θ", r"\theta"), ("Re ", r"\operatorname{Re} "), ("Im ", r"\operatorname{Im} ")):
         part = part.replace(a, b)
     return part

@@ -247,11 +247,14 @@ def test_latex_report_of_real_catalog_runs_compiles(tmp_path):
     from stiefelsym.claims import Size, load_catalog
     from stiefelsym.runner import verify
     cat = load_catalog()
+    from stiefelsym.witness import attach_small_witnesses
     ids = ["euclidean-invariance", "normal-flow", "jensen-invariance", "invariant-metrics",
-           "adjoint-orbit-regularity", "metric-flow"]
+           "adjoint-orbit-regularity", "metric-flow", "double-neumann-dual-lax"]
     results = verify([cat.get(i) for i in ids], sizes=[Size(4, 1), Size(4, 2), Size(3, 2)],
                      methods=("auto", "free", "float"), seed=0)
     assert any(r.derivation for r in results) and any(r.verdict == "fails" for r in results)
+    # the errata's witnesses to check by hand: a double-system point (X, Y, Ẋ, Ẏ) in display math
+    assert attach_small_witnesses(results, {i: cat.get(i) for i in ids}) >= 1
     (tmp_path / "verification.tex").write_text(render_latex(results, {"seed": 0}), encoding="utf-8")
     (tmp_path / "runs.tex").write_text(render_latex(results, {"seed": 0}, detail=True), encoding="utf-8")
     for name in ("verification", "runs"):
