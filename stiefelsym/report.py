@@ -661,11 +661,15 @@ def _erratum_note(c: ClaimResults, facts: dict[str, Any], escape=lambda s: s, co
         if c.section and not all(p in paperref.table() for p in c.paper) else ""
     text = (f"In {where}{labels(c.paper)}, the statement as printed "
             f"{sizerules.fails_holds_text(facts['fails'], facts['holds'])}")
-    text += f". A witness: size {w.size}, method {w.method}"
-    if w.seed is not None:
-        text += f", seed {w.seed}"
-    if w.residual:
-        text += f", residual {short(w.residual, 120)}"
+    small = small_witness_of(c)
+    if small is not None:
+        text += f". A witness to check by hand, at size {small[0].size}, follows"
+    else:
+        text += f". A witness: size {w.size}, method {w.method}"
+        if w.seed is not None:
+            text += f", seed {w.seed}"
+        if w.residual:
+            text += f", residual {short(w.residual, 120)}"
     text = escape(text + ".")
     if facts["verified"]:
         text += escape(" It holds at every size checked with the correction: ") \
@@ -688,6 +692,10 @@ def _md_erratum(c: ClaimResults) -> list[str]:
     if w.erratum:
         out += [f"What is wrong: {_md_escape(w.erratum)}", ""]
     out += _md_small_witness(c)
+    if small_witness_of(c) is not None and "point" in (w.witness or {}):
+        out += [f"The seeded run that found the failure: size {_md_escape(w.size)}, method {w.method}"
+                + (f", seed {w.seed}" if w.seed is not None else "") + f"; rerun: {_md_code(w.rerun)}.", ""]
+        return _md_erratum_tail(c, facts, w, out)
     out += [_md_escape(_witness_heading(w)), ""]
     out += [f"- {_md_escape(k)}: {_md_code(v)}" for k, v in witness_lines(w.witness)] \
         or [f"- ({NO_POINT})"]
@@ -701,6 +709,10 @@ def _md_erratum(c: ClaimResults) -> list[str]:
     if w.rerun:
         out.append(f"- rerun: {_md_code(w.rerun)}")
     out.append("")
+    return _md_erratum_tail(c, facts, w, out)
+
+
+def _md_erratum_tail(c: ClaimResults, facts: dict[str, Any], w: Result, out: list[str]) -> list[str]:
     others = [x for x in facts["reruns"] if x != w.rerun]
     if others:
         out += ["Every other failure, reproducible with:", ""]
@@ -1147,6 +1159,11 @@ def _tex_erratum(c: ClaimResults) -> list[str]:
     if w.erratum:
         out += [tex_escape("What is wrong: " + w.erratum), ""]
     out += _tex_small_witness(c)
+    if small_witness_of(c) is not None and "point" in (w.witness or {}):
+        out += [tex_escape(f"The seeded run that found the failure: size {w.size}, method {w.method}"
+                           + (f", seed {w.seed}" if w.seed is not None else "") + "; rerun: ")
+                + _tt(w.rerun or "") + ".", ""]
+        return _tex_erratum_tail(c, facts, w, out)
     out += [tex_escape(_witness_heading(w))]
     items = [tex_escape(k) + ": " + _tt(v) for k, v in witness_lines(w.witness)]
     if not items:
@@ -1160,6 +1177,10 @@ def _tex_erratum(c: ClaimResults) -> list[str]:
     if w.rerun:
         items.append("rerun: " + _tt(w.rerun))
     out += _tex_items(items)
+    return _tex_erratum_tail(c, facts, w, out)
+
+
+def _tex_erratum_tail(c: ClaimResults, facts: dict[str, Any], w: Result, out: list[str]) -> list[str]:
     others = [x for x in facts["reruns"] if x != w.rerun]
     if others:
         more = [f"… and {len(others) - MAX_ERRATUM_RERUNS} more (in results.json)"] \
