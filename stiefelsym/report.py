@@ -17,7 +17,7 @@ import re
 from fractions import Fraction
 import xml.etree.ElementTree as ET
 from collections import Counter
-from typing import Any, Iterable, Sequence
+from typing import Any, Callable, Iterable, Sequence
 
 from . import paperref, sizerules
 from .latex import unicode_name, math_ok, split_math, tex_balanced, tex_display, tex_escape, tex_text
@@ -561,17 +561,8 @@ def render_markdown(results: Sequence[Result], meta: dict[str, Any] | None = Non
         out += [""]
 
     out += ["## Errata", ""]
-    if errata:
-        out += [_md_escape(ERRATA_INTRO), ""]
-    else:
-        out += ["No statement failed as printed.", ""]
-    for c in errata:
-        out += _md_erratum(c)
-    others = [c for c in claims if c.variants and not c.failures]
-    if others:
-        out += ["Candidate corrections were also checked for claims that hold as printed:", ""]
-        for c in others:
-            out += [f"### `{c.id}` {_md_escape(labels(c.paper))}", ""] + _md_corrections(c)
+    out += _errata_body(claims, _md_escape, _md_erratum,
+                        lambda c: [f"### `{c.id}` {_md_escape(labels(c.paper))}", ""] + _md_corrections(c))
 
     present, rows = _summary_rows(claims)
     out += ["## Summary", "", "For each claim as printed: the verdict of the dimension-free method (all n, r "
@@ -677,6 +668,22 @@ def _erratum_note(c: ClaimResults, facts: dict[str, Any], escape=lambda s: s, co
     elif c.variants:
         text += escape(" No candidate correction was verified at every size.")
     return text
+
+
+def _errata_body(claims: list[ClaimResults], escape: Callable[[str], str], erratum: Callable[[ClaimResults], list[str]],
+                 corrections: Callable[[ClaimResults], list[str]]) -> list[str]:
+    """The errata section of either document: each claim that fails as printed, then the candidate
+    corrections checked for claims that hold as printed."""
+    errata = [c for c in claims if c.failures]
+    out = [escape(ERRATA_INTRO), ""] if errata else ["No statement failed as printed.", ""]
+    for c in errata:
+        out += erratum(c)
+    others = [c for c in claims if c.variants and not c.failures]
+    if others:
+        out += ["Candidate corrections were also checked for claims that hold as printed:", ""]
+        for c in others:
+            out += corrections(c)
+    return out
 
 
 def _md_erratum(c: ClaimResults) -> list[str]:
@@ -949,17 +956,7 @@ def render_latex(results: Sequence[Result], meta: dict[str, Any] | None = None, 
     out += [r"\tableofcontents", ""]
 
     out += _toc_section("Errata")
-    if errata:
-        out += [tex_escape(ERRATA_INTRO), ""]
-    else:
-        out += ["No statement failed as printed.", ""]
-    for c in errata:
-        out += _tex_erratum(c)
-    others = [c for c in claims if c.variants and not c.failures]
-    if others:
-        out += ["Candidate corrections were also checked for claims that hold as printed:", ""]
-        for c in others:
-            out += [_tex_claim_heading(c)] + _tex_corrections(c)
+    out += _errata_body(claims, tex_escape, _tex_erratum, lambda c: [_tex_claim_heading(c)] + _tex_corrections(c))
 
     out += _tex_claim_table(claims) if detail else _tex_section_table(claims, meta)
 

@@ -201,26 +201,20 @@ def matrix_text(M: list[list[Fraction]]) -> str:
     return "[" + "; ".join(", ".join(q_text(q) for q in row) for row in M) + "]"
 
 
+def _map_letters(w: dict[str, Any], f: Callable[[Any], Any]) -> dict[str, Any]:
+    def walk(v):
+        return [walk(x) for x in v] if isinstance(v, list) else f(v)
+    return dict(w, letters={k: walk(v) for k, v in w["letters"].items()})
+
+
 def decoded(w: dict[str, Any]) -> dict[str, Any]:
     """A witness read back from JSON: its letters as Fractions again."""
-    def dec(v):
-        if isinstance(v, list):
-            return [dec(x) for x in v]
-        return Fraction(v) if isinstance(v, str) else v
-    out = dict(w)
-    out["letters"] = {k: dec(v) for k, v in w["letters"].items()}
-    return out
+    return _map_letters(w, lambda v: Fraction(v) if isinstance(v, str) else v)
 
 
 def encoded(w: dict[str, Any]) -> dict[str, Any]:
     """A witness as JSON data: Fractions as strings."""
-    def enc(v):
-        if isinstance(v, list):
-            return [enc(x) for x in v]
-        return str(v) if isinstance(v, Fraction) else v
-    out = dict(w)
-    out["letters"] = {k: enc(v) for k, v in w["letters"].items()}
-    return out
+    return _map_letters(w, lambda v: str(v) if isinstance(v, Fraction) else v)
 
 
 def attach_small_witnesses(results: list[Any], claims: dict[str, Claim]) -> int:
