@@ -435,6 +435,9 @@ def _precision_reached(text: str) -> str:
     hits = re.findall(r"(float64|mpmath\d+): max \|residual\|", text or "")
     if hits:
         return hits[-1]
+    balls = re.findall(r"\b(arb\d+)\b", text or "")       # the ball method's last precision (bits)
+    if balls:
+        return balls[-1]
     if "exactly" in (text or "") or "vanishes" in (text or ""):
         return "exact"
     return "-"
@@ -494,7 +497,7 @@ def _hard_rows(case: str, hard: str | None, c: Any, plan: Sequence[Any], m: str,
             continue
         text = " ".join(x for x in (res.message, res.certificate) if x)
         untouched = hard is not None and "changed no parameter" in text
-        label = _precision_reached(text) if m == "float" else "exact"
+        label = _precision_reached(text) if m in ("float", "ball") else "exact"
         check = None
         if m == "float" and res.verdict in ("undecided", "numeric") and label != "-" \
                 and res.n <= (max(exact_check_n, 12) if truth == "false" else exact_check_n):
@@ -516,7 +519,7 @@ def _hard_rows(case: str, hard: str | None, c: Any, plan: Sequence[Any], m: str,
 
 
 def hard_table(cases: Sequence[str] | None = None, claims: Sequence[Any] | None = None,
-               sizes: Sequence[tuple[int, int]] = HARD_SIZES, methods: Sequence[str] = ("float", "modular"),
+               sizes: Sequence[tuple[int, int]] = HARD_SIZES, methods: Sequence[str] = ("float", "ball", "modular"),
                timeout: float = 60.0, seed: int = 0, large: tuple[int, int] | None = HARD_LARGE,
                registry: Any = None, exact_check_n: int = 6) -> list[dict[str, Any]]:
     """Every hard case x claim x size x method: verdict, precision reached, time, judged."""
@@ -539,9 +542,9 @@ def hard_table(cases: Sequence[str] | None = None, claims: Sequence[Any] | None 
 
 #: the hard sizes: (label, hard case or None, claims, sizes, methods, seconds per run)
 HARD_SIZE_PLAN = (
-    ("n = 200", None, HARD_CLAIMS, ((200, 1), (200, 2)), ("float", "modular"), 15.0),
+    ("n = 200", None, HARD_CLAIMS, ((200, 1), (200, 2)), ("float", "ball", "modular"), 15.0),
     # a float64 failure is confirmed by an exact rational evaluation, out of reach at n = 200 (inconclusive)
-    ("n = 200", None, ("corrupted-LA1",), ((200, 2),), ("float", "modular"), 15.0),
+    ("n = 200", None, ("corrupted-LA1",), ((200, 2),), ("float", "ball", "modular"), 15.0),
     # every hard point at n = 200 (huge-momenta: float64 overflows and the mpmath ladder at n = 200 is
     # beyond the run's budget, so inconclusive with that reason)
     *((f"n = 200 + {case}", case, ("neumann-lax", "manakov-lax"), ((200, 2),), ("float",), 15.0)
