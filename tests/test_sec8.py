@@ -401,3 +401,35 @@ def test_printed_sizes_in_the_chasles_proofs(catalog, cid, fails, holds):
         assert run_exact(c, n, r, SEED).verdict == "proved"
     for n, r in fails + holds + [(5, 2)]:
         assert run_exact(c, n, r, SEED, func=c.corrections[0].func).verdict == "proved"
+
+
+# -- the Chasles cones are real: floating-point evidence independent of the engine ------------------------
+
+@pytest.mark.parametrize("n, r", [(3, 1), (4, 2), (5, 2), (5, 3), (6, 2)])
+def test_chasles_cones_are_real_at_random_real_points(n, r):
+    """Evidence for the remark after Gen_Chasles with numpy alone: at seeded random real points of T*V the
+    n − r roots of 𝓘_{2r}(λ) = a(λ) det 𝓛*_neum(λ) (interpolated) are real, and they are the eigenvalues of
+    the compression of A − PPᵀ to the complement of span X (the identity chasles-cones-real proves)."""
+    import numpy as np
+    rng = np.random.default_rng([SEED, n, r])
+    for _ in range(10):
+        a = np.sort(rng.normal(size=n))
+        A = np.diag(a)
+        X, _ = np.linalg.qr(rng.normal(size=(n, r)))
+        P = rng.normal(size=(n, r))
+        W = X.T @ P
+        P = P - X @ (W + W.T) / 2                       # XᵀP skew: a point of T*V
+        assert np.allclose(X.T @ P + P.T @ X, 0)
+
+        def I2r(lam):
+            R = np.linalg.inv(lam * np.eye(n) - A)
+            L = np.block([[-(X.T @ R @ P), -(X.T @ R @ X)], [np.eye(r) + P.T @ R @ P, P.T @ R @ X]])
+            return np.prod(lam - a) * np.linalg.det(L)
+        nodes = np.max(np.abs(a)) + 1 + np.arange(3 * (n - r + 1), dtype=float)
+        coeffs = np.polyfit(nodes - nodes.mean(), [I2r(x) for x in nodes], n - r)
+        roots = np.roots(coeffs) + nodes.mean()
+        Y = np.linalg.svd(np.eye(n) - X @ X.T)[0][:, :n - r]
+        eigs = np.linalg.eigvalsh(Y.T @ (A - P @ P.T) @ Y)
+        scale = 1 + np.max(np.abs(eigs))
+        assert np.max(np.abs(roots.imag)) < 1e-6 * scale, roots
+        assert np.allclose(np.sort(roots.real), eigs, atol=1e-6 * scale), (roots, eigs)
