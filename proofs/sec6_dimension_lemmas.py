@@ -283,6 +283,36 @@ def pencil_kernel_and_A2(s):
     }
 
 
+def a2_system(s, x, A):
+    """The block matrix [[Λ1, 0], [Λ_{1,−1}, −Λ1]] of the forms at x (Λ_{1,−1} = Λ1 − Λ2): its
+    solutions (z, y) are the z ∈ ker Λ1 with Λ_{1,−1}z ∈ im Λ1 = (ker Λ1)^⊥ (Λ1 is skew), i.e. the
+    kernel of Λ_{1,−1} restricted to ker Λ1, each with y up to ker Λ1.  So its rank is
+    2n² − dim ker Λ1 − dim{z ∈ ker Λ1 | Λ_{1,−1}(z, ker Λ1) = 0}."""
+    basis, kinds = gl_basis(s)
+    rows1 = form_matrix(s, x, kinds, basis, kinds, True)
+    rows2 = form_matrix(s, x - A, kinds, basis, kinds, False)
+    zero = s.q(0)
+    top = [row + [zero] * len(row) for row in rows1]
+    bottom = [[a - b for a, b in zip(r1, r2)] + [-a for a in r1] for r1, r2 in zip(rows1, rows2)]
+    return s.mat(top + bottom)
+
+
+@claim("pencil-a2-generic", paper=("LEMA2", "A2", "LAMBDA"), kind="dim",
+       sizes=admissible(5), exact_max_n=3, equivariance=EQUIVARIANCE_XA,
+       statement=r"\dim\{z\in\ker\Lambda_1(x)\mid\Lambda_{1,-1}(z,\ker\Lambda_1(x))=0\}=n,\quad "
+                 r"x=h+v=\Theta(X,P)\ \text{generic}")
+def pencil_a2_at_a_generic_point(s):
+    """(A2) of Lemma LEMA2 at a generic point x = h + v = Θ(X, P) of Θ(T*V) (not only at the point h = diag(h1, 0) of the proof): the kernel of Λ_{1,−1} restricted to ker Λ1(x) has dimension n (computed as 2n² − dim ker Λ1 − the rank of the system z ∈ ker Λ1, Λ_{1,−1}z ∈ im Λ1)."""
+    n, r = s.n, s.r
+    x = theta(s)
+    return {
+        "rank Lambda1(h+v)": Rank(lambda1(s, x), leaf_printed(n, r), generic=True,
+                                  meaning="(dimension): n² − dim ker Λ1"),
+        "(A2)": Rank(a2_system(s, x, s.A), n * n - n + leaf_printed(n, r), generic=True,
+                     meaning="2n² − dim ker Λ1 − n: the restriction of Λ_{1,−1} to ker Λ1 has an n-dimensional kernel"),
+    }
+
+
 def l5_l6_matrix(s, printed):
     """The system (L5), (L6) on ξ1 ∈ so(r)_{h1} (odd powers of h1), η1 ∈ Sym(r), at A1 = diag(a_1..a_r):
     (L6) as printed, [A1, η1] ∈ so(r)^⊥, or corrected, [A1, η1] ⟂ so(r)_{h1}."""

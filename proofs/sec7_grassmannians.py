@@ -3,9 +3,10 @@ from __future__ import annotations
 
 from itertools import combinations
 
-from stiefelsym import admissible, claim, comm  # noqa: F401
+from stiefelsym import Count, Rank, admissible, claim, comm  # noqa: F401
 
 from .sec5_neumann import H_neumann_euclidean, H_neumann_normal
+from .sec6_dimension_lemmas import EQUIVARIANCE_X, lambda1
 
 SECTION = "7"
 
@@ -96,6 +97,29 @@ def neumann_flows_coincide_on_psi_zero(s):
         "X^T P0 (a point of Psi^{-1}(0))": X.T @ P0,
         "(N0_XP2) - (NE_XP) at Psi = 0: dX/dt": n0["X"] - ne["X"],
         "(N0_XP2) - (NE_XP) at Psi = 0: dP/dt": n0["P"] - ne["P"],
+    }
+
+
+# -- Theorem NEUMANN2: the kernel of Λ1 on Θ(Ψ⁻¹(0)) ------------------------------------------------
+
+@claim("neumann2-kernel", paper=("NEUMANN2", "LEMA1", "KER"), kind="dim",
+       sizes=admissible(5), exact_max_n=3, equivariance=EQUIVARIANCE_X,
+       statement=r"(X_0,P_0)\in\Psi^{-1}(0)\ \text{generic},\ h=\Phi(X_0,P_0),\ v=X_0X_0^T:\quad "
+                 r"\dim\ker\Lambda_1(h+v)=\dim(gl(r)\oplus gl(n-r)),\quad "
+                 r"r(n-r)=\tfrac12\big(\dim gl(n)-\dim gl(r)-\dim gl(n-r)\big)=\dim G_{n,r}")
+def neumann2_kernel(s):
+    """The proof of Theorem NEUMANN2: at a generic point (X0, P0) of Ψ⁻¹(0) (so h1 = 0), the kernel of Λ1 at h + v = Θ(X0, P0) has the dimension of gl(r) ⊕ gl(n − r), so the leaf through it has dimension 2r(n − r) = 2 dim G_{n,r} (P0 = (I − XXᵀ)P: a generic point of Ψ⁻¹(0) over X; the proof's h = Ψ(X0, P0) is read as the so(n) part Φ(X0, P0) of Θ, as in Lemma LEMA1)."""
+    n, r = s.n, s.r
+    X = s.X
+    P0 = horizontal(s, X, s.P)
+    x = P0 @ X.T - X @ P0.T + X @ X.T
+    ker = r * r + (n - r) * (n - r)
+    return {
+        "X^T P0 (a point of Psi^{-1}(0))": X.T @ P0,
+        "rank Lambda1(h+v) at Psi = 0": Rank(lambda1(s, x), n * n - ker, generic=True,
+                                             meaning="n² − dim gl(r) − dim gl(n − r)"),
+        "r(n-r) = (dim gl(n) - dim gl(r) - dim gl(n-r))/2": Count(2 * r * (n - r), n * n - ker,
+                                                                  "twice dim G_{n,r} against the printed count"),
     }
 
 

@@ -11,10 +11,10 @@ from __future__ import annotations
 from itertools import combinations
 from math import comb, factorial
 
-from stiefelsym import Count, admissible, block, claim, comm
+from stiefelsym import Count, Rank, admissible, block, claim, comm
 
 from .sec4_integrability import H_manakov, H_manakov_square, L_man_dual, reflection
-from .sec5_neumann import H_neumann_euclidean, H_neumann_normal, power_trace
+from .sec5_neumann import H_neumann_euclidean, H_neumann_normal, L_neum_at, power_trace
 from .sec7_grassmannians import column, columns, det, wedge
 
 SECTION = "8"
@@ -688,6 +688,125 @@ def poisson_sphere_planes(s):
         "A de/dt - (A^{-1}e, e) p + (A^{-1}e, p) e": s.A @ flow.Xdot - k * p + m * e,
         "d det(U^T R U)/dt": s.d(manakov_tangency, flow),
     }
+
+
+# -- the dual Lax matrices determine (X, P) up to the reflections (DUAL, man-dual) ----------------------
+
+def L_man_dual_mu(t, mu):
+    """(MAN-LA2) at the spectral parameter μ."""
+    R, X, P = t.resolvent(mu), t.X, t.P
+    return block([[-(X.T @ R @ P), -(X.T @ R @ X)], [P.T @ R @ P, P.T @ R @ X]])
+
+
+@claim("dual-lax-determines-the-point", paper=("DUAL", "man-dual", "reflections", "LA3", "MAN-LA2"), kind="dim",
+       sizes=admissible(n_max=5), exact_max_n=3,
+       equivariance="𝓛*(λ) at (gX, gP, gAgᵀ) is 𝓛*(λ) at (X, P, A), and (X, P) ↦ (gX, gP) is linear in the "
+                    "coordinates and keeps T*V, so the rank is O(n)-invariant; the Jacobian only lists the entries "
+                    "in coordinates",
+       statement=r"\rank d\big(\mathcal L^*_{neum}(\lambda_1),\dots,\mathcal L^*_{neum}(\lambda_n)\big)\big|_{T(T^*V_{n,r})}"
+                 r"=\rank d\big(\mathcal L^*_{man}(\lambda_1),\dots,\mathcal L^*_{man}(\lambda_n)\big)\big|_{T(T^*V_{n,r})}"
+                 r"=2\dim V_{n,r}=2rn-r(r+1)")
+def dual_lax_matrices_determine_the_point(s):
+    """Theorems DUAL and man-dual: (X, P) ↦ 𝓛*_neum(λ), and (X, P) ↦ 𝓛*_man(λ), is locally injective on T*V at a generic point (so the Lax equations determine the flows up to a discrete group, the reflections): the Jacobian of the entries at n values λ, λ + 1, …, λ + n − 1 (the residues at a_1..a_n: every λ), with the rows of the constraints (cond_XP), has rank 2 dim V + r(r + 1) = 2nr."""
+    n, r = s.n, s.r
+    constraints = s.jacobian(s.constraints.build)
+    neum = s.jacobian(lambda t: [L_dual_mu(t, t.lam + t.q(j)) for j in range(t.n)])
+    man = s.jacobian(lambda t: [L_man_dual_mu(t, t.lam + t.q(j)) for j in range(t.n)])
+    full = 2 * n * r
+    return {
+        "rank d L*_neum on T*V + r(r+1)": Rank(s.mat(neum + constraints), full, generic=True,
+                                               meaning="2 dim V + r(r + 1) = 2nr"),
+        "rank d L*_man on T*V + r(r+1)": Rank(s.mat(man + constraints), full, generic=True,
+                                              meaning="2 dim V + r(r + 1) = 2nr"),
+    }
+
+
+# -- r = n: the Lax pairs give integrals of every Manakov flow (the remark after DUAL) ---------------------
+
+@claim("dual-invariants-manakov-r-n", paper=("DUAL", "LA3", "Neumann_LA", "Manakov", "dot_XP2"), kind="pb",
+       sizes=admissible(n_max=5, where=lambda n, r: r == n, condition="r = n"), exact_max_n=2,
+       statement=r"r=n:\ \tr(X^TAX)=\tr A,\quad \tfrac{d}{dt}\tr\mathcal L_{neum}(\lambda)^k=0\ (k=1,2,3),\ "
+                 r"\tfrac{d}{dt}\tr\mathcal L^*_{neum}(\lambda)^k=0\ (k=2,4)\ \text{along the Manakov flow (dot\_XP2), "
+                 r"(Manakov)},\ B\ \text{generic}")
+def dual_invariants_are_manakov_integrals_for_r_n(s):
+    """The remark after Theorem DUAL: for r = n the potential ½tr(XᵀAX) = ½tr A is constant, so the Neumann flows are geodesic flows on SO(n), and the spectral invariants of both Lax matrices, tr 𝓛_neum(λ)^k (n×n) and tr 𝓛*_neum(λ)^k (2n×2n), are also integrals of the Manakov geodesic flow (dot_XP2) with the operator (Manakov) of a generic diagonal B."""
+    flow = s.dirac_flow(H_manakov)
+    checks = {"tr(X^T A X) - tr A": s.tr(s.X.T @ s.A @ s.X) - s.tr(s.A)}
+    for k in (1, 2, 3):
+        checks[f"d tr L(lambda)^{k}/dt along the Manakov flow"] = s.d(
+            lambda t, k=k: power_trace(t, L_neum_at(t, t.lam), k), flow)
+    for k in EVEN_POWERS:
+        checks[f"d tr L*(lambda)^{k}/dt along the Manakov flow"] = s.d(
+            lambda t, k=k: power_trace(t, L_dual(t), k), flow)
+    return checks
+
+
+# -- the Chasles cones are real ------------------------------------------------------------------------
+
+@claim("chasles-cones-real", paper=("Gen_Chasles", "2r-integrals", "conf0"), kind="geo",
+       sizes=admissible(n_max=5), exact_max_n=2,
+       statement=r"\lambda^r\,\mathcal I_{2r}(\lambda)=\det\big(\lambda\mathbf I_n-Q(A-PP^T)Q\big),\ Q=\mathbf I_n-XX^T"
+                 r"\ \Rightarrow\ c_1,\dots,c_{n-r}\in\mathbb R\ \text{for real}\ (X,P)")
+def chasles_cones_are_real(s):
+    """The remark after Theorem Gen_Chasles (for real solutions all the cones Q̄(c_i) are real), in algebraic form: λ^r𝓘_{2r}(λ) is the characteristic polynomial of the symmetric matrix Q(A − PPᵀ)Q, Q = I − XXᵀ, so the n − r roots c_i of 𝓘_{2r} are the eigenvalues of the compression of A − PPᵀ to the orthogonal complement of span{e_1..e_r}, real for real (X, P)."""
+    n, r = s.n, s.r
+    Q = s.In - s.X @ s.X.T
+    M = Q @ (s.A - s.P @ s.P.T) @ Q
+    integrals, _ = spectral_integrals(s, s.lam)
+    lam_r = s.q(1)
+    for _ in range(r):
+        lam_r = lam_r * s.lam
+    return {
+        "Q(A - PP^T)Q symmetric": M - M.T,
+        "lambda^r I_2r(lambda) - det(lambda I - Q(A - PP^T)Q)":
+            lam_r * integrals[r] - det_matrix(s, s.scalar_matrix(s.lam, n, "n") - M),
+    }
+
+
+# -- the integrals 𝒥_{2l}(λ) of 𝓛*_man (Chasles-Manakov) ---------------------------------------------
+
+def manakov_coefficients(t, mu):
+    """e_1, …, e_{2r} of 𝓛*_man(μ): 𝒥_{2l}(μ) is a(μ)^{2l} e_{2l}, the coefficient of w^{2r−2l} in
+    |a(μ)𝓛*_man(μ) − wI| (a(μ) is constant on T*V)."""
+    return elementary(t, L_man_dual_mu(t, mu), 2 * t.r)
+
+
+@claim("manakov-dual-integrals", paper=("Chasles-Manakov", "man-dual", "MAN-LA2", "Manakov"), kind="pb",
+       sizes=admissible(n_max=5, where=lambda n, r: 2 * r < n, condition="2r < n"), exact_max_n=1,
+       statement=r"2r<n:\ |a(\lambda)\mathcal L^*_{man}(\lambda)-w\mathbf I|=\sum_l w^{2r-2l}\mathcal J_{2l}(\lambda),\ "
+                 r"\{\mathcal J_{2l}(\lambda),\mathcal J_{2m}(\mu)\}=0,\ \tfrac{d}{dt}\mathcal J_{2l}(\lambda)=0\ "
+                 r"\text{along (dot\_XP2), (Manakov) for a generic }B\text{ and along (dot\_XP3*)},\ l,m=1,\dots,r")
+def manakov_dual_integrals(s):
+    """The paragraph before Theorem Chasles-Manakov: every coefficient 𝒥_{2l}(λ), l = 1, …, r (not only 𝒥_{2r}), of the spectral curve of 𝓛*_man(λ) (coefficients at odd powers of w vanish) is an integral of the Manakov flow with a generic diagonal B and of (dot_XP3*) (B = A²), and they Poisson-commute for two values λ, μ."""
+    r = s.r
+    e = manakov_coefficients(s, s.lam)
+    checks = {f"coefficient of w^{2 * r - k}": e[k] for k in range(1, 2 * r + 1, 2)}
+    F = lambda t: column(t, [manakov_coefficients(t, t.lam)[2 * l] for l in range(1, t.r + 1)])  # noqa: E731
+    checks["d J_2l/dt along the Manakov flow (generic B)"] = s.d(F, s.dirac_flow(H_manakov))
+    checks["d J_2l/dt along (dot_XP3*) (B = A^2)"] = s.d(F, s.dirac_flow(H_manakov_square))
+    for l in range(1, r + 1):
+        for m in range(l, r + 1):
+            checks[f"{{J_{2 * l}(lambda), J_{2 * m}(mu)}}"] = s.bracket(
+                lambda t, l=l: manakov_coefficients(t, t.lam)[2 * l],
+                lambda t, m=m: manakov_coefficients(t, t.scalar("mu"))[2 * m])
+    return checks
+
+
+@claim("manakov-j2r-vanishes", paper=("Chasles-Manakov", "MAN-LA2"), kind="id",
+       sizes=admissible(n_max=5, where=lambda n, r: 2 * r > n, condition="2r > n"), exact_max_n=2,
+       statement=r"2r>n:\ \mathcal J_{2r}(\lambda)=a(\lambda)\det\mathcal L^*_{man}(\lambda)="
+                 r"\sum_{I_{2r}}\frac{a(\lambda)|\Phi|^{I_{2r}}_{I_{2r}}}{\prod(\lambda-a_i)}=0,\quad "
+                 r"\mathcal J_{2l}(\lambda)=0\ \text{for}\ 2l>n")
+def manakov_j2r_vanishes(s):
+    """When 2r > n the printed 𝒥_{2r}(λ) is an empty sum (no 2r of the n indices) and indeed a(λ) det 𝓛*_man(λ) = 0, as are all the coefficients 𝒥_{2l}(λ) with 2l > n (𝓛*_man(λ) = (−X, P)ᵀ R_λ (P, X) has rank at most n), so Theorem Chasles-Manakov is empty there."""
+    n, r = s.n, s.r
+    L = L_man_dual_mu(s, s.lam)
+    e = manakov_coefficients(s, s.lam)
+    checks = {"a(lambda) det L*_man(lambda) - printed J_2r(lambda)":
+              a_poly(s, s.lam) * det_matrix(s, L) - J2r_printed(s, s.lam)}
+    for k in range(n + 1, 2 * r + 1):
+        checks[f"e_{k}(L*_man(lambda))"] = e[k]
+    return checks
 
 
 # -- printed sizes in the proofs of Gen_Chasles and Gen_Chasles2 -----------------------------------------

@@ -135,6 +135,13 @@ def ker_with_all_of_so_r(s):
     return {"rank": Rank(sec6.lambda1(s, h + v), s.n * s.n - sec6.ker_printed(s.n, s.r) - extra - 1)}
 
 
+def a2_generic_kernel_too_big(s):
+    """Corrupted (A2) at a generic point: the restricted kernel of dimension n + 1."""
+    x = sec6.theta(s)
+    n = s.n
+    return {"(A2)": Rank(sec6.a2_system(s, x, s.A), n * n - n - 1 + sec6.leaf_printed(n, s.r))}
+
+
 def l5_l6_corrected_off_by_one(s):
     """Corrupted correction of (L6): r + 1 solutions."""
     M, unknowns = sec6.l5_l6_matrix(s, printed=False)
@@ -160,6 +167,7 @@ CORRUPTIONS = [
     ("pencil-leaves-singular", leaves_singular_with_more_casimirs, (3, 2)),
     ("pencil-rank-a1", a1_kernel_too_big, (3, 2)),
     ("pencil-kernel-ker-a2", ker_with_all_of_so_r, (3, 3)),
+    ("pencil-a2-generic", a2_generic_kernel_too_big, (3, 2)),
     ("pencil-l5-l6", l5_l6_corrected_off_by_one, (3, 2)),
     ("casimirs-complete-on-leaf", casimirs_one_short, (3, 2)),
     ("neumann-torus-dimension", torus_one_larger, (3, 2)),

@@ -4,6 +4,7 @@ built from matrix products are proved for every n, r; a corrupted copy of each F
 controls)."""
 import pytest
 
+from stiefelsym import Rank
 from stiefelsym.free_method import run_free
 from stiefelsym.methods import run_exact, run_points
 
@@ -13,7 +14,7 @@ from stiefelsym.proofs.sec5_neumann import H_neumann_euclidean, H_neumann_normal
 SEED = 0
 
 FREE_PROVED = ("neumann-flows-coincide-on-psi-zero", "quartic-psi-zero-invariant")
-NEEDS_COORDINATES = ("neum-gras", "neum-gras-sphere", "quartic")
+NEEDS_COORDINATES = ("neum-gras", "neum-gras-sphere", "quartic", "neumann2-kernel")
 #: (exact sizes, modular sizes) of each claim as printed
 SIZES = {
     "neumann-flows-coincide-on-psi-zero": ([(2, 1), (3, 2)], [(3, 2), (4, 2), (4, 4)]),
@@ -21,6 +22,7 @@ SIZES = {
     "neum-gras": ([(2, 1), (3, 2), (3, 3)], [(4, 2), (4, 3), (5, 3)]),
     "neum-gras-sphere": ([(2, 1)], [(3, 2), (4, 3)]),
     "quartic": ([(2, 1), (3, 1)], [(4, 1)]),
+    "neumann2-kernel": ([(2, 1), (3, 2), (3, 3)], [(4, 2), (4, 3), (5, 2), (5, 3)]),
 }
 
 
@@ -108,6 +110,14 @@ def quartic_plus_a_non_invariant_term(s):
     return {"dPsi/dt": s.d(lambda t: t.Psi, s.dirac_flow(H))}
 
 
+def neumann2_kernel_off_psi_zero(s):
+    """Corrupted (NEUMANN2): the kernel of gl(r) ⊕ gl(n − r) at a generic point of T*V, off Ψ = 0 (there
+    Λ1 has the larger rank (dimension) when r >= 3: a certain failure)."""
+    n, r = s.n, s.r
+    x = sec7.lambda1(s, s.Phi + s.X @ s.X.T)
+    return {"rank": Rank(x, n * n - r * r - (n - r) * (n - r))}
+
+
 #: (claim, corrupted function, (size of the exact check or None, size of the modular check))
 CORRUPTIONS = [
     ("neumann-flows-coincide-on-psi-zero", flows_differ_by_minus_half_psi, ((3, 2), (3, 2))),
@@ -118,6 +128,7 @@ CORRUPTIONS = [
     ("neum-gras-sphere", sphere_at_a_point_off_psi_zero, (None, (4, 3))),
     ("quartic", quartic_coefficient, ((2, 1), (4, 1))),
     ("quartic-psi-zero-invariant", quartic_plus_a_non_invariant_term, ((3, 2), (4, 2))),
+    ("neumann2-kernel", neumann2_kernel_off_psi_zero, ((3, 3), (4, 3))),
 ]
 
 
@@ -136,7 +147,8 @@ def test_corrupted_claim_fails(catalog, cid, func, size):
     if exact is not None:
         assert run_exact(c, *exact, SEED, func=func).verdict == "fails"
     res = run_points(c, n, r, "modular", SEED, func=func)
-    assert res.verdict == "fails" and res.witness and res.witness["seed"] == SEED
+    # a rank has no witness point: the computed and printed numbers are the witness
+    assert res.verdict == "fails" and (c.kind == "dim" or res.witness and res.witness["seed"] == SEED)
 
 
 @pytest.mark.parametrize("cid", FREE_PROVED)

@@ -8,12 +8,13 @@ from math import factorial
 
 import pytest
 
-from stiefelsym import Count, block, comm
+from stiefelsym import Count, Rank, block, comm
 from stiefelsym.free_method import run_free
 from stiefelsym.methods import run_exact, run_points
 
 import stiefelsym.proofs.sec7_grassmannians as sec7
 import stiefelsym.proofs.sec8_dual_lax_pair as sec8
+from stiefelsym.proofs.sec4_integrability import H_manakov
 from stiefelsym.proofs.sec5_neumann import H_neumann_euclidean, H_neumann_normal, power_trace
 
 SEED = 0
@@ -27,7 +28,9 @@ FREE_PROVED = ("neumann-dual-lax-normal", "neumann-dual-lax-euclidean", "dual-la
 NEEDS_COORDINATES = ("poisson-sphere-flow", "dual-lax-reflections", "2r-integrals", "2r-integrals-conserved",
                      "2r-integrals-explicit", "2r-integrals-general-line", "tangency", "gen-chasles",
                      "gen-chasles2", "mum-geod", "chasles-manakov", "poisson-sphere-chasles",
-                     "vvb-left-factor-size", "gen-chasles-momentum-ranges")
+                     "vvb-left-factor-size", "gen-chasles-momentum-ranges", "dual-lax-determines-the-point",
+                     "dual-invariants-manakov-r-n", "chasles-cones-real", "manakov-dual-integrals",
+                     "manakov-j2r-vanishes")
 #: the claims of the spectral curve and of the Chasles theorems: (exact sizes, modular sizes) as printed
 GEOMETRY_SIZES = {
     "2r-integrals": ([(1, 1), (2, 1)], [(3, 2), (4, 2), (4, 3)]),
@@ -42,6 +45,11 @@ GEOMETRY_SIZES = {
     "poisson-sphere-chasles": ([(2, 1), (3, 1)], [(4, 1)]),
     "vvb-left-factor-size": ([], []),                            # fails at every size: an erratum
     "gen-chasles-momentum-ranges": ([(2, 2), (3, 3)], [(4, 4)]),  # holds as printed only when r = n
+    "dual-lax-determines-the-point": ([(2, 1), (3, 2)], [(3, 3), (4, 2), (5, 2)]),
+    "dual-invariants-manakov-r-n": ([(1, 1), (2, 2)], [(3, 3), (4, 4), (5, 5)]),
+    "chasles-cones-real": ([(1, 1), (2, 1), (2, 2)], [(3, 2), (4, 2), (4, 3), (5, 3)]),
+    "manakov-dual-integrals": ([], [(3, 1), (4, 1), (5, 2)]),    # 2r < n: l < r first at (5, 2)
+    "manakov-j2r-vanishes": ([(1, 1), (2, 2), (3, 2)], [(4, 3), (5, 3), (5, 4)]),
 }
 #: sizes of the exact check (the spectral invariants: exact only for n <= 2, the claim's symbolic budget)
 EXACT_SIZES = {"dual-lax-spectral-invariants": [(2, 1), (2, 2)],
@@ -218,6 +226,40 @@ def momentum_ranges_r_plus_1(s):
     return {"momenta": Count(s.P.shape[1], s.r + 1)}
 
 
+def dual_lax_rank_one_short(s):
+    """Corrupted (DUAL): a one-parameter family of points with the same 𝓛*(λ) (rank 2nr − 1; the rank found
+    is higher: a certain failure)."""
+    rows = s.jacobian(lambda t: [sec8.L_dual_mu(t, t.lam + t.q(j)) for j in range(t.n)])
+    return {"rank": Rank(s.mat(rows + s.jacobian(s.constraints.build)), 2 * s.n * s.r - 1)}
+
+
+def manakov_conserves_an_entry_of_the_dual_matrix(s):
+    """Corrupted (the remark after DUAL): the entry (1, 2) of 𝓛*(λ), not a spectral invariant, conserved."""
+    return {"d L*_12/dt": s.d(lambda t: sec8.L_dual(t)[0, 1], s.dirac_flow(H_manakov))}
+
+
+def cones_of_a_plus_pp(s):
+    """Corrupted: the compression of A + PPᵀ in place of A − PPᵀ."""
+    Q = s.In - s.X @ s.X.T
+    M = Q @ (s.A + s.P @ s.P.T) @ Q
+    integrals, _ = sec8.spectral_integrals(s, s.lam)
+    lam_r = s.q(1)
+    for _ in range(s.r):
+        lam_r = lam_r * s.lam
+    return {"char": lam_r * integrals[s.r] - sec8.det_matrix(s, s.scalar_matrix(s.lam, s.n, "n") - M)}
+
+
+def manakov_flow_with_the_neumann_dual_matrix(s):
+    """Corrupted: e_2 of 𝓛*_neum (with its I_r) conserved along the Manakov flow."""
+    F = lambda t: sec8.elementary(t, sec8.L_dual(t), 2)[2]
+    return {"d e_2(L*_neum)/dt": s.d(F, s.dirac_flow(H_manakov))}
+
+
+def neumann_determinant_vanishes(s):
+    """Corrupted: a(λ) det 𝓛*_neum(λ) = 𝓘_{2r}(λ) vanishes when 2r > n (it has degree n − r)."""
+    return {"a det L*_neum": sec8.a_poly(s, s.lam) * sec8.det_matrix(s, sec8.L_dual(s))}
+
+
 CORRUPTIONS = [
     ("vvb-left-factor-size", vvb_factor_of_size_n_plus_1),
     ("gen-chasles-momentum-ranges", momentum_ranges_r_plus_1),
@@ -239,6 +281,11 @@ CORRUPTIONS = [
     ("neumann-dual-lax-euclidean", euclidean_lambda_sign),
     ("dual-lax-symplectic-structure", symplectic_sign_of_a_block),
     ("dual-lax-spectral-invariants", spectral_invariant_without_identity),
+    ("dual-lax-determines-the-point", dual_lax_rank_one_short),
+    ("dual-invariants-manakov-r-n", manakov_conserves_an_entry_of_the_dual_matrix),
+    ("chasles-cones-real", cones_of_a_plus_pp),
+    ("manakov-dual-integrals", manakov_flow_with_the_neumann_dual_matrix),
+    ("manakov-j2r-vanishes", neumann_determinant_vanishes),
 ]
 
 
@@ -255,7 +302,10 @@ CORRUPTION_SIZES = {"poisson-sphere-flow": ((3, 1), (3, 1)), "2r-integrals": ((2
                     "2r-integrals-conserved": ((2, 1), (3, 2)), "2r-integrals-explicit": ((2, 1), (4, 2)),
                     "2r-integrals-general-line": ((2, 1), (3, 1)), "gen-chasles": ((2, 1), (4, 2)),
                     "gen-chasles2": (None, (3, 2)), "mum-geod": ((2, 1), (4, 1)),
-                    "chasles-manakov": ((2, 1), (4, 2)), "poisson-sphere-chasles": ((3, 1), (4, 1))}
+                    "chasles-manakov": ((2, 1), (4, 2)), "poisson-sphere-chasles": ((3, 1), (4, 1)),
+                    "dual-lax-determines-the-point": ((3, 2), (4, 2)), "dual-invariants-manakov-r-n": ((2, 2), (3, 3)),
+                    "chasles-cones-real": ((2, 1), (4, 2)), "manakov-dual-integrals": (None, (5, 2)),
+                    "manakov-j2r-vanishes": ((2, 2), (4, 3))}
 
 
 @pytest.mark.parametrize("cid, func", CORRUPTIONS, ids=[f"{c}-{f.__name__}" for c, f in CORRUPTIONS])
@@ -351,3 +401,35 @@ def test_printed_sizes_in_the_chasles_proofs(catalog, cid, fails, holds):
         assert run_exact(c, n, r, SEED).verdict == "proved"
     for n, r in fails + holds + [(5, 2)]:
         assert run_exact(c, n, r, SEED, func=c.corrections[0].func).verdict == "proved"
+
+
+# -- the Chasles cones are real: floating-point evidence independent of the engine ------------------------
+
+@pytest.mark.parametrize("n, r", [(3, 1), (4, 2), (5, 2), (5, 3), (6, 2)])
+def test_chasles_cones_are_real_at_random_real_points(n, r):
+    """Evidence for the remark after Gen_Chasles with numpy alone: at seeded random real points of T*V the
+    n − r roots of 𝓘_{2r}(λ) = a(λ) det 𝓛*_neum(λ) (interpolated) are real, and they are the eigenvalues of
+    the compression of A − PPᵀ to the complement of span X (the identity chasles-cones-real proves)."""
+    import numpy as np
+    rng = np.random.default_rng([SEED, n, r])
+    for _ in range(10):
+        a = np.sort(rng.normal(size=n))
+        A = np.diag(a)
+        X, _ = np.linalg.qr(rng.normal(size=(n, r)))
+        P = rng.normal(size=(n, r))
+        W = X.T @ P
+        P = P - X @ (W + W.T) / 2                       # XᵀP skew: a point of T*V
+        assert np.allclose(X.T @ P + P.T @ X, 0)
+
+        def I2r(lam):
+            R = np.linalg.inv(lam * np.eye(n) - A)
+            L = np.block([[-(X.T @ R @ P), -(X.T @ R @ X)], [np.eye(r) + P.T @ R @ P, P.T @ R @ X]])
+            return np.prod(lam - a) * np.linalg.det(L)
+        nodes = np.max(np.abs(a)) + 1 + np.arange(3 * (n - r + 1), dtype=float)
+        coeffs = np.polyfit(nodes - nodes.mean(), [I2r(x) for x in nodes], n - r)
+        roots = np.roots(coeffs) + nodes.mean()
+        Y = np.linalg.svd(np.eye(n) - X @ X.T)[0][:, :n - r]
+        eigs = np.linalg.eigvalsh(Y.T @ (A - P @ P.T) @ Y)
+        scale = 1 + np.max(np.abs(eigs))
+        assert np.max(np.abs(roots.imag)) < 1e-6 * scale, roots
+        assert np.allclose(np.sort(roots.real), eigs, atol=1e-6 * scale), (roots, eigs)
