@@ -14,6 +14,7 @@ import shlex
 import time
 from datetime import datetime, timezone
 from pathlib import Path
+from typing import Any
 
 import click
 
@@ -41,10 +42,14 @@ DIM_NOTE = ("Dimensions are integers (exact ranks and counts): there is no round
                    "(a copy of the fit goes to DIR).")
 @click.option("--seed", type=click.IntRange(min=0), default=0, show_default=True, metavar="N")
 @click.option("--no-hard", is_flag=True, help="Skip the hard-case table.")
+@click.option("--hard-only", is_flag=True,
+              help="Only the hard-case tables (hard.md, hard.json; speed.json and speed.md take their count of "
+                   "wrong verdicts), without the measurements of time and residual.")
 @click.option("--model-file", type=click.Path(dir_okay=False, path_type=Path), default=None, metavar="FILE",
               help="Where to write the fitted cost model (default: your user cache folder, where "
                    "stiefelsym then reads it; the installed package's fit is never written).")
-def speed(report_dir: Path | None, quick: bool, seed: int, no_hard: bool, model_file: Path | None = None) -> int:
+def speed(report_dir: Path | None, quick: bool, seed: int, no_hard: bool, model_file: Path | None = None,
+          hard_only: bool = False) -> int:
     """Residual and time against n and precision per family of claims, the fitted cost model
     (time against n per method), and the hard numerical cases."""
     import importlib.util
@@ -64,6 +69,21 @@ def speed(report_dir: Path | None, quick: bool, seed: int, no_hard: bool, model_
         raise InputError(f"cannot write the speed report to {report_dir}: {exc.strerror or exc}") from None
     registry = load_catalog()
     say = lambda text: click.echo(text, err=True)  # noqa: E731
+    if hard_only:
+        if no_hard:
+            raise InputError("--hard-only and --no-hard exclude each other")
+        hard_rows = _hard_tables(report_dir, quick, seed, registry, say)
+        wrong = [r for r in hard_rows if r["judgement"].startswith("WRONG")]
+        try:
+            doc = json.loads((report_dir / "speed.json").read_text(encoding="utf-8"))
+        except (OSError, ValueError):
+            doc = None
+        if doc is not None:
+            doc["hard_wrong"] = wrong
+            write_atomic(report_dir / "speed.json", json.dumps(doc, indent=1, default=_json_default) + "\n")
+            write_atomic(report_dir / "speed.md", sp.markdown(doc))
+        say(f"hard cases: {len(hard_rows)} runs, {len(wrong)} wrong; reports in {report_dir}")
+        return 1 if wrong else 0
 
     say("measuring time against n (cost model) ...")
     records = costfit.measure(n_values=QUICK_NS if quick else FULL_NS, per_run=20.0 if quick else 30.0,
@@ -118,23 +138,7 @@ def speed(report_dir: Path | None, quick: bool, seed: int, no_hard: bool, model_
     doc = {"generated": datetime.now(timezone.utc).strftime("%Y-%m-%d %H:%M:%S UTC"),
            "command": command.strip(), "platform": platform.platform(terse=True), "quick": quick, "seed": seed,
            "families": families, "violations": bad, "costmodel": cm_doc}
-    hard_rows = []
-    if not no_hard:
-        say("hard cases ...")
-        if quick:
-            hard_rows = sp.hard_table(cases=["near-pole", "near-equal-a-1e-12"], sizes=((3, 3),), large=None,
-                                      timeout=30.0, seed=seed, registry=registry)
-        else:
-            hard_rows = sp.hard_table(timeout=60.0, seed=seed, registry=registry)
-        say("hard sizes (n = 200, r = n, r = n - 1) ...")
-        size_rows = sp.hard_sizes_table(QUICK_PLAN if quick else sp.HARD_SIZE_PLAN, seed=seed, registry=registry)
-        for r in hard_rows:
-            r["table"] = "points"
-        for r in size_rows:
-            r["table"] = "sizes"
-        write_atomic(report_dir / "hard.md", sp.hard_markdown(hard_rows, size_rows))
-        hard_rows = hard_rows + size_rows
-        write_atomic(report_dir / "hard.json", json.dumps(hard_rows, indent=1, default=_json_default) + "\n")
+    hard_rows = [] if no_hard else _hard_tables(report_dir, quick, seed, registry, say)
     doc["hard_wrong"] = [r for r in hard_rows if r["judgement"].startswith("WRONG")]
     doc["tradeoffs"] = sp.tradeoffs(doc)
     doc["seconds"] = round(time.perf_counter() - t_start, 1)
@@ -150,3 +154,25 @@ def _json_default(x):
         return float(x)
     except (TypeError, ValueError):
         return str(x)
+
+
+def _hard_tables(report_dir: Path, quick: bool, seed: int, registry: Any, say: Any) -> list[dict[str, Any]]:
+    """The hard points and the hard sizes, written to hard.md and hard.json; their rows."""
+    from . import speed as sp
+    from .results import write_atomic
+    say("hard cases ...")
+    if quick:
+        hard_rows = sp.hard_table(cases=["near-pole", "near-equal-a-1e-12"], sizes=((3, 3),), large=None,
+                                  timeout=30.0, seed=seed, registry=registry)
+    else:
+        hard_rows = sp.hard_table(timeout=60.0, seed=seed, registry=registry)
+    say("hard sizes (n = 200, r = n, r = n - 1) ...")
+    size_rows = sp.hard_sizes_table(QUICK_PLAN if quick else sp.HARD_SIZE_PLAN, seed=seed, registry=registry)
+    for r in hard_rows:
+        r["table"] = "points"
+    for r in size_rows:
+        r["table"] = "sizes"
+    write_atomic(report_dir / "hard.md", sp.hard_markdown(hard_rows, size_rows))
+    rows = hard_rows + size_rows
+    write_atomic(report_dir / "hard.json", json.dumps(rows, indent=1, default=_json_default) + "\n")
+    return rows
