@@ -241,7 +241,7 @@ def labels(paper: Sequence[str]) -> str:
 def tex_labels(paper: Sequence[str]) -> str:
     """LaTeX of :func:`labels`: the paper's numbers, each label in small type (breakable)."""
     def one(p: str) -> str:
-        key = r"{\scriptsize\texttt{" + tex_escape(p).replace(r"\_", r"\_\allowbreak{}") + "}}"
+        key = r"{\scriptsize[\texttt{" + tex_escape(p).replace(r"\_", r"\_\allowbreak{}") + "}]}"
         return (tex_escape(paperref.printed(p)).replace(" ", "~") + " " + key) if p in paperref.table() \
             else tex_escape(f"({p})").replace(r"\_", r"\_\allowbreak{}")
     return ", ".join(one(p) for p in paper)
@@ -796,8 +796,9 @@ def _tex_small_witness(c: ClaimResults) -> list[str]:
 
 def _count_witness_text(c: ClaimResults, r: Result, w: dict[str, Any], escape: Any) -> str:
     head = "" if escape is tex_escape else "**A witness to check by hand:** "
-    return head + escape(f"at (n, r) = {r.size}, {unicode_name(w['check'])} is {w['value']}, where the printed "
-                         f"statement gives {w['paper']}.")
+    what = w.get("meaning") or unicode_name(w["check"])
+    return head + escape(f"at (n, r) = {r.size}, {what}: computed {w['value']}, where the printed statement "
+                         f"gives {w['paper']}.")
 
 
 def _entry_words(entry: str) -> str:

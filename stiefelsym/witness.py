@@ -221,7 +221,7 @@ def attach_small_witnesses(results: list[Any], claims: dict[str, Claim]) -> int:
     """For every claim that fails as printed at a point: search a small witness at its smallest
     failing size (among the failures with a point) and attach it to that result's witness as
     ``small``.  Returns how many were attached."""
-    from .witness_scripts import count_values, template_check, template_kind, template_size
+    from .witness_scripts import count_meaning, count_values, template_check, template_kind, template_size
     done = 0
     counted: set[str] = set()
     for r in results:       # errata about a number: the template's size and check
@@ -232,7 +232,8 @@ def attach_small_witnesses(results: list[Any], claims: dict[str, Claim]) -> int:
             values = count_values(ch.detail or "") if ch.name == template_check(r.claim) else None
             if values is not None and ch.status in ("count-mismatch", "rank-mismatch"):
                 r.witness = dict(r.witness or {}, small={"kind": "count", "check": ch.name,
-                                                          "value": values[0], "paper": values[1]})
+                                                          "value": values[0], "paper": values[1],
+                                                          "meaning": count_meaning(ch.detail or "")})
                 counted.add(r.claim)
                 done += 1
                 break

@@ -95,6 +95,13 @@ def count_values(detail: str) -> tuple[int, int] | None:
     return (int(k.group(1)), int(p.group(1))) if k and p else None
 
 
+def count_meaning(detail: str) -> str:
+    """What a Count check counts, from its detail "the generic orbit is regular (1) or singular (0):
+    1 (paper: 0)"; "" for a rank's detail."""
+    m = re.match(r"(.*): \d+ \(paper: \d+\)$", detail.strip())
+    return m.group(1) if m and len(m.group(1)) < 160 else ""
+
+
 def _entry(entry: str) -> tuple[int, int] | None:
     m = re.search(r"\[(\d+),(\d+)\]$", entry)
     return (int(m.group(1)), int(m.group(2))) if m else None
