@@ -81,3 +81,22 @@ def test_every_committed_witness_script_runs_alone_and_prints_what_the_report_st
              and isinstance(r.get("witness"), dict) and "small" in r["witness"]]
     assert small and f"(the report states {Fraction(small[0]['value'])})" in out.stdout
     assert f"`witnesses/{script.stem}.py`" in (REPORTS / "verification.md").read_text(encoding="utf-8")
+
+
+def test_the_integrity_check_recomputes_the_small_witness():
+    """A hand-edited small witness (another point, another value) is caught by `stiefelsym check`;
+    the honest record passes."""
+    from stiefelsym.claims import Size
+    from stiefelsym.integrity import check_results
+    from stiefelsym.runner import verify
+    from stiefelsym.witness import attach_small_witnesses
+    cat = load_catalog()
+    claim = cat.get(CID)
+    res = [r for r in verify([claim], sizes=[Size(1, 1)], methods=("exact",), seed=0) if not r.variant]
+    assert attach_small_witnesses(res, {CID: claim}) == 1
+    honest = json.loads(json.dumps(res[0].to_json(), default=str))
+    assert check_results([honest], cat, echo=lambda _: None) == 0
+    forged = json.loads(json.dumps(honest))
+    forged["witness"]["small"]["value"] = "3"
+    lines: list[str] = []
+    assert check_results([forged], cat, echo=lines.append) == 1 and "small witness" in lines[0]
