@@ -104,6 +104,8 @@ def speed(report_dir: Path | None, quick: bool, seed: int, no_hard: bool, model_
         say(f"cost model fit written to {costmodel.save(cm_doc, model_file)}")
     costmodel.save(cm_doc, report_dir / "costmodel.json")
     costmodel.plot(cm_doc, report_dir)
+    accuracy = costmodel.accuracy(cm_doc, registry)
+    costmodel.plot_accuracy(accuracy, report_dir)
 
     families = {}
     everything = []
@@ -137,7 +139,8 @@ def speed(report_dir: Path | None, quick: bool, seed: int, no_hard: bool, model_
                          + (["--seed", str(seed)] if seed else []) + (["--no-hard"] if no_hard else []))
     doc = {"generated": datetime.now(timezone.utc).strftime("%Y-%m-%d %H:%M:%S UTC"),
            "command": command.strip(), "platform": platform.platform(terse=True), "quick": quick, "seed": seed,
-           "families": families, "violations": bad, "costmodel": cm_doc}
+           "families": families, "violations": bad, "costmodel": cm_doc,
+           "accuracy": costmodel.accuracy_summary(accuracy)}
     hard_rows = [] if no_hard else _hard_tables(report_dir, quick, seed, registry, say)
     doc["hard_wrong"] = [r for r in hard_rows if r["judgement"].startswith("WRONG")]
     doc["tradeoffs"] = sp.tradeoffs(doc)

@@ -503,3 +503,64 @@ def table(doc: dict[str, Any]) -> str:
                 lines.append(f"| {method} | {fam} | {rtext} | {f['a']:.2f} | {f['b']:.2f} | {f['n_max_measured']} | "
                              f"{format_seconds(t12)} | {format_seconds(t100)} | {format_seconds(t200)} |")
     return "\n".join(lines) + "\n"
+
+
+def accuracy(doc: dict[str, Any], registry: Any) -> list[dict[str, Any]]:
+    """Predicted against measured seconds for every measurement of the fit (``doc["records"]``):
+    one row per record, with the ratio predicted / measured."""
+    cost = CostModel(doc)
+    rows = []
+    for rec in doc.get("records") or []:
+        if rec["claim"] not in registry or rec.get("seconds") is None or rec["seconds"] <= 0:
+            continue
+        claim = registry.get(rec["claim"])
+        pred = cost.predict(rec["method"], claim, rec["n"], rec["r"])
+        rows.append(dict(rec, predicted=pred, ratio=pred / rec["seconds"]))
+    return rows
+
+
+def plot_accuracy(rows: list[dict[str, Any]], out_dir: Path | str) -> list[Path]:
+    """Predicted against measured seconds, per method, with the bands of a factor 3 (PNG and PDF)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    out_dir = Path(out_dir)
+    fig, ax = plt.subplots(figsize=(6.4, 5.2))
+    colors = {"exact": "C0", "rational": "C1", "modular": "C2", "float": "C3"}
+    for method in colors:
+        pts = [(r["seconds"], r["predicted"]) for r in rows if r["method"] == method]
+        if pts:
+            ax.loglog([p[0] for p in pts], [p[1] for p in pts], "o", ms=4, color=colors[method], label=method,
+                      alpha=0.8)
+    lo = min([r["seconds"] for r in rows] + [r["predicted"] for r in rows] + [1e-3])
+    hi = max([r["seconds"] for r in rows] + [r["predicted"] for r in rows] + [1.0])
+    grid = [lo / 2, hi * 2]
+    ax.loglog(grid, grid, "k-", lw=1, label="predicted = measured")
+    for f, style in ((3, "--"), (1 / 3, "--")):
+        ax.loglog(grid, [g * f for g in grid], "k" + style, lw=0.8, alpha=0.6)
+    ax.set_xlabel("measured seconds")
+    ax.set_ylabel("predicted seconds")
+    ax.set_title("Cost model: predicted against measured (dashed: a factor 3)", fontsize=10)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    paths = []
+    for ext in ("png", "pdf"):
+        p = out_dir / f"costmodel-accuracy.{ext}"
+        fig.savefig(p, dpi=110, metadata={"CreationDate": None, "Creator": None, "Producer": None}
+                    if ext == "pdf" else {"Software": None})
+        paths.append(p)
+    plt.close(fig)
+    return paths
+
+
+def accuracy_summary(rows: list[dict[str, Any]]) -> dict[str, dict[str, Any]]:
+    """Per method: the measurements, how many are predicted within a factor 3, and the extreme ratios
+    predicted / measured (below 1: predicted too fast, the case a budget must not meet)."""
+    out: dict[str, dict[str, Any]] = {}
+    for m in METHODS:
+        rs = [r["ratio"] for r in rows if r["method"] == m]
+        if rs:
+            out[m] = {"runs": len(rs), "within_3x": sum(1 / 3 <= x <= 3 for x in rs),
+                      "min_ratio": round(min(rs), 3), "max_ratio": round(max(rs), 3)}
+    return out

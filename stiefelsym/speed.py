@@ -783,6 +783,20 @@ def _fmt(x: Any) -> str:
     return str(x)
 
 
+def _accuracy_lines(acc: dict[str, Any] | None) -> list[str]:
+    """The cost model's predictions against its own measurements, per method."""
+    if not acc:
+        return []
+    out = ["Predicted against measured, over the measurements of the fit (a ratio below 1: predicted too "
+           "fast; the fits are upper envelopes, so most ratios are above 1):", "",
+           "![predicted against measured](costmodel-accuracy.png)", "",
+           "| method | runs | within a factor 3 | min predicted/measured | max predicted/measured |",
+           "| --- | ---: | ---: | ---: | ---: |"]
+    for m, a in acc.items():
+        out.append(f"| {m} | {a['runs']} | {a['within_3x']} | {a['min_ratio']} | {a['max_ratio']} |")
+    return out + [""]
+
+
 def _yes_no(x: Any) -> str:
     return "yes" if x is True else "no" if x is False else str(x)
 
@@ -920,6 +934,7 @@ def markdown(doc: dict[str, Any]) -> str:
               "Fitted per method and family: t(n) = exp(a) n^b seconds, raised to lie above every measured point "
               "(`stiefelsym/costmodel.json`; `verify --budget` refuses a run predicted beyond it).", "",
               "![cost model](costmodel.png)", "", table(doc["costmodel"]), "",
+              *_accuracy_lines(doc.get("accuracy")),
               f"Claims other than the five measured ones are predicted as their kind's family times a factor "
               f"calibrated on the catalog's own runs (`claim_factors`, "
               f"{len(doc['costmodel'].get('claim_factors') or {})} "
