@@ -25,6 +25,13 @@ rewriting system that found the certificate (it imports nothing of
 
 The only facts used besides the hypotheses are structural: the transposes of
 the letters (A = Aᵀ, R_μ = R_μᵀ, ξᵀ = −ξ), and tr(uv) = tr(vu), tr(w) = tr(wᵀ).
+
+Declared operator letters ``AA(w)`` stand for 𝔸(skew w), a generic operator 𝔸 on
+so(n), symmetric for ⟨a, b⟩ = −½ tr(ab), applied to the skew part of an n×n path
+w; they are n×n and skew.  Three more structural facts hold for them and are
+used: 𝔸(skew w) = 0 for a symmetric path (wᵀ = w), 𝔸(skew wᵀ) = −𝔸(skew w)
+(linearity), and tr(𝔸(skew u)·v) = tr(𝔸(skew v)·u) for n×n paths u, v (the
+symmetry of 𝔸, for a trace with one operator letter).
 """
 from __future__ import annotations
 
@@ -50,6 +57,11 @@ FIXED_LETTERS: dict[str, tuple[str, str, str, int]] = {
     "xi": ("n", "n", "xi", -1), "zeta": ("n", "n", "zeta", -1),
     "eta": ("r", "r", "eta", -1), "theta": ("r", "r", "theta", -1),
 }
+
+
+def operator_name(op: str, arg: tuple) -> str:
+    """The name of the operator letter op(skew arg): ``AA(X*Pt)``."""
+    return f"{op}({'*'.join(arg)})"
 
 
 class Rejected(Exception):
@@ -99,6 +111,8 @@ class Context:
     def __init__(self, declared: dict) -> None:
         self.letters = dict(FIXED_LETTERS)
         self.resolvents: dict[str, Any] = {}
+        #: operator letters: name -> (operator, argument path)
+        self.operators: dict[str, tuple[str, tuple]] = {}
         for name, d in declared.items():
             if name in self.letters:
                 raise Rejected(f"the letter {name} is declared twice or redeclares a fixed letter")
@@ -107,6 +121,17 @@ class Context:
                     raise Rejected(f"a resolvent letter is named R[...], not {name}")
                 self.resolvents[name] = coefficient(d["parameter"])
                 self.letters[name] = ("n", "n", name, 1)
+            elif d["kind"] == "operator":
+                op, arg = d["operator"], d["argument"]
+                if not (isinstance(op, str) and op[:1].isalpha() and op.isalnum()):
+                    raise Rejected(f"an operator is named by letters and digits, not {op!r}")
+                if not isinstance(arg, list) or not arg:
+                    raise Rejected(f"the operator letter {name} needs a nonempty argument")
+                arg = tuple(arg)
+                if name != operator_name(op, arg):
+                    raise Rejected(f"the operator letter {name} is not named by its operator and argument")
+                self.expect(arg, "n", "n", f"the argument of {name}")
+                self.add_operator(op, arg)
             elif d["kind"] == "generic":
                 t, row, col = d["transpose"], d["row"], d["col"]
                 if not (name.startswith("gen:") and t.startswith("gen:")) or t == name or t in self.letters:
@@ -117,6 +142,40 @@ class Context:
                 self.letters[t] = (col, row, name, 1)
             else:
                 raise Rejected(f"unknown kind of letter {d['kind']!r} for {name}")
+
+    def add_operator(self, op: str, arg: tuple) -> str:
+        """The operator letter op(arg) (arg an n×n path): n×n, its transpose itself with sign −1."""
+        name = operator_name(op, arg)
+        if name not in self.operators:
+            if name in self.letters:
+                raise Rejected(f"the operator letter {name} redeclares a letter")
+            self.letters[name] = ("n", "n", name, -1)
+            self.operators[name] = (op, arg)
+        return name
+
+    def operator_canon(self, op: str, arg: tuple) -> tuple[int, str | None]:
+        """(s, name) with op(skew arg) = s·name; (0, None) when skew arg = 0 (a symmetric path).
+        The transposed path argᵀ = σ·arg* gives op(skew arg*) = −σ·op(skew arg)."""
+        sigma, ws = self.star(arg)
+        if ws == arg:
+            return (0, None) if sigma == 1 else (1, self.add_operator(op, arg))
+        if arg <= ws:
+            return 1, self.add_operator(op, arg)
+        return -sigma, self.add_operator(op, ws)
+
+    def canon_word(self, word: tuple) -> tuple[int, tuple]:
+        """A word with every operator letter replaced by its canonical form (sign, word); sign 0: zero."""
+        if not self.operators or not any(L in self.operators for L in word):
+            return 1, word
+        sign, out = 1, []
+        for L in word:
+            if L in self.operators:
+                s, L = self.operator_canon(*self.operators[L])
+                if s == 0:
+                    return 0, word
+                sign *= s
+            out.append(L)
+        return sign, tuple(out)
 
     def letter(self, name: Any) -> tuple[str, str, str, int]:
         if not isinstance(name, str) or name not in self.letters:
@@ -161,6 +220,16 @@ class Context:
         span = self.span(word)
         if span is None or span[0] != span[1]:
             raise Rejected(f"trace of a word that is not a closed path: {'*'.join(word) or 'I'}")
+        ops = [k for k, L in enumerate(word) if L in self.operators]
+        if len(ops) == 1:   # tr(op(skew u)·v) = tr(op(skew v)·u): one representative per pair {u, v}
+            j = ops[0]
+            op, u = self.operators[word[j]]
+            s1, u1 = self.operator_canon(op, u)
+            s2, v1 = self.operator_canon(op, word[j + 1:] + word[:j])
+            if s1 == 0 or s2 == 0:
+                return 0, None
+            a, b = sorted([self.operators[u1][1], self.operators[v1][1]])
+            return s1 * s2, (self.add_operator(op, a),) + b
         rots = {word[k:] + word[:k] for k in range(len(word))}
         s, ws = self.star(word)
         srots = {ws[k:] + ws[:k] for k in range(len(ws))}
@@ -246,8 +315,16 @@ def is_zero(c: Any) -> bool:
 def _add(poly: dict, c: Any, traces: list, word: tuple, ctx: Context) -> None:
     """poly += c · Π tr(traces) · word, traces in canonical form."""
     keys = []
+    s, word = ctx.canon_word(word)
+    if s == 0:
+        return
+    c = c * s
     for t in traces:
-        s, rep = ctx.cyclic(tuple(t))
+        s, t = ctx.canon_word(tuple(t))
+        if s == 0:
+            return
+        c = c * s
+        s, rep = ctx.cyclic(t)
         if s == 0:
             return
         c = c * s
