@@ -25,13 +25,9 @@ rewriting system that found the certificate (it imports nothing of
 
 The only facts used besides the hypotheses are structural: the transposes of
 the letters (A = Aᵀ, R_μ = R_μᵀ, ξᵀ = −ξ), and tr(uv) = tr(vu), tr(w) = tr(wᵀ).
-
-Declared operator letters ``AA(w)`` stand for 𝔸(skew w), a generic operator 𝔸 on
-so(n), symmetric for ⟨a, b⟩ = −½ tr(ab), applied to the skew part of an n×n path
-w; they are n×n and skew.  Three more structural facts hold for them and are
-used: 𝔸(skew w) = 0 for a symmetric path (wᵀ = w), 𝔸(skew wᵀ) = −𝔸(skew w)
-(linearity), and tr(𝔸(skew u)·v) = tr(𝔸(skew v)·u) for n×n paths u, v (the
-symmetry of 𝔸, for a trace with one operator letter).
+A declared operator letter AA(w) is 𝔸(skew w) for an n×n path w and a generic 𝔸 on so(n)
+symmetric for −½tr: it is n×n and skew, 𝔸(skew wᵀ) = −𝔸(skew w), 0 when wᵀ = w, and
+tr(𝔸(skew u)·v) = tr(𝔸(skew v)·u) (linearity and symmetry, for a trace with one such letter).
 """
 from __future__ import annotations
 
@@ -57,11 +53,6 @@ FIXED_LETTERS: dict[str, tuple[str, str, str, int]] = {
     "xi": ("n", "n", "xi", -1), "zeta": ("n", "n", "zeta", -1),
     "eta": ("r", "r", "eta", -1), "theta": ("r", "r", "theta", -1),
 }
-
-
-def operator_name(op: str, arg: tuple) -> str:
-    """The name of the operator letter op(skew arg): ``AA(X*Pt)``."""
-    return f"{op}({'*'.join(arg)})"
 
 
 class Rejected(Exception):
@@ -111,8 +102,7 @@ class Context:
     def __init__(self, declared: dict) -> None:
         self.letters = dict(FIXED_LETTERS)
         self.resolvents: dict[str, Any] = {}
-        #: operator letters: name -> (operator, argument path)
-        self.operators: dict[str, tuple[str, tuple]] = {}
+        self.operators: dict[str, tuple[str, tuple]] = {}   # name -> (operator, argument path)
         for name, d in declared.items():
             if name in self.letters:
                 raise Rejected(f"the letter {name} is declared twice or redeclares a fixed letter")
@@ -122,14 +112,10 @@ class Context:
                 self.resolvents[name] = coefficient(d["parameter"])
                 self.letters[name] = ("n", "n", name, 1)
             elif d["kind"] == "operator":
-                op, arg = d["operator"], d["argument"]
-                if not (isinstance(op, str) and op[:1].isalpha() and op.isalnum()):
-                    raise Rejected(f"an operator is named by letters and digits, not {op!r}")
-                if not isinstance(arg, list) or not arg:
-                    raise Rejected(f"the operator letter {name} needs a nonempty argument")
-                arg = tuple(arg)
-                if name != operator_name(op, arg):
-                    raise Rejected(f"the operator letter {name} is not named by its operator and argument")
+                op, arg = d["operator"], tuple(d["argument"])
+                if not (isinstance(op, str) and op[:1].isalpha() and op.isalnum() and arg
+                        and name == f"{op}({'*'.join(arg)})"):
+                    raise Rejected(f"an operator letter is named op(argument), op alphanumeric: {name}")
                 self.expect(arg, "n", "n", f"the argument of {name}")
                 self.add_operator(op, arg)
             elif d["kind"] == "generic":
@@ -144,37 +130,27 @@ class Context:
                 raise Rejected(f"unknown kind of letter {d['kind']!r} for {name}")
 
     def add_operator(self, op: str, arg: tuple) -> str:
-        """The operator letter op(arg) (arg an n×n path): n×n, its transpose itself with sign −1."""
-        name = operator_name(op, arg)
+        """The letter op(arg), arg an n×n path: n×n, its transpose itself with sign −1."""
+        name = f"{op}({'*'.join(arg)})"
         if name not in self.operators:
             if name in self.letters:
                 raise Rejected(f"the operator letter {name} redeclares a letter")
-            self.letters[name] = ("n", "n", name, -1)
-            self.operators[name] = (op, arg)
+            self.letters[name], self.operators[name] = ("n", "n", name, -1), (op, arg)
         return name
 
     def operator_canon(self, op: str, arg: tuple) -> tuple[int, str | None]:
-        """(s, name) with op(skew arg) = s·name; (0, None) when skew arg = 0 (a symmetric path).
-        The transposed path argᵀ = σ·arg* gives op(skew arg*) = −σ·op(skew arg)."""
+        """(s, name) with op(skew arg) = s·name, s = 0 for a symmetric path (argᵀ = σ·arg*, skew arg* = −σ·skew arg)."""
         sigma, ws = self.star(arg)
         if ws == arg:
             return (0, None) if sigma == 1 else (1, self.add_operator(op, arg))
-        if arg <= ws:
-            return 1, self.add_operator(op, arg)
-        return -sigma, self.add_operator(op, ws)
+        return (1, self.add_operator(op, arg)) if arg <= ws else (-sigma, self.add_operator(op, ws))
 
     def canon_word(self, word: tuple) -> tuple[int, tuple]:
-        """A word with every operator letter replaced by its canonical form (sign, word); sign 0: zero."""
-        if not self.operators or not any(L in self.operators for L in word):
-            return 1, word
+        """(sign, word) with every operator letter in canonical form; sign 0: the word is zero."""
         sign, out = 1, []
         for L in word:
-            if L in self.operators:
-                s, L = self.operator_canon(*self.operators[L])
-                if s == 0:
-                    return 0, word
-                sign *= s
-            out.append(L)
+            s, L = self.operator_canon(*self.operators[L]) if L in self.operators else (1, L)
+            sign, out = sign * s, out + [L]
         return sign, tuple(out)
 
     def letter(self, name: Any) -> tuple[str, str, str, int]:
@@ -222,11 +198,9 @@ class Context:
             raise Rejected(f"trace of a word that is not a closed path: {'*'.join(word) or 'I'}")
         ops = [k for k, L in enumerate(word) if L in self.operators]
         if len(ops) == 1:   # tr(op(skew u)·v) = tr(op(skew v)·u): one representative per pair {u, v}
-            j = ops[0]
-            op, u = self.operators[word[j]]
-            s1, u1 = self.operator_canon(op, u)
-            s2, v1 = self.operator_canon(op, word[j + 1:] + word[:j])
-            if s1 == 0 or s2 == 0:
+            (op, u), j = self.operators[word[ops[0]]], ops[0]
+            (s1, u1), (s2, v1) = self.operator_canon(op, u), self.operator_canon(op, word[j + 1:] + word[:j])
+            if s1 * s2 == 0:
                 return 0, None
             a, b = sorted([self.operators[u1][1], self.operators[v1][1]])
             return s1 * s2, (self.add_operator(op, a),) + b
@@ -316,21 +290,14 @@ def _add(poly: dict, c: Any, traces: list, word: tuple, ctx: Context) -> None:
     """poly += c · Π tr(traces) · word, traces in canonical form."""
     keys = []
     s, word = ctx.canon_word(word)
+    for t in traces:
+        s2, t = ctx.canon_word(tuple(t))
+        s3, rep = ctx.cyclic(t)
+        s, keys = s * s2 * s3, keys + [rep]
     if s == 0:
         return
-    c = c * s
-    for t in traces:
-        s, t = ctx.canon_word(tuple(t))
-        if s == 0:
-            return
-        c = c * s
-        s, rep = ctx.cyclic(t)
-        if s == 0:
-            return
-        c = c * s
-        keys.append(rep)
     key = (tuple(sorted(keys)), word)
-    poly[key] = poly[key] + c if key in poly else c
+    poly[key] = poly[key] + c * s if key in poly else c * s
 
 
 def _words(x: Any) -> tuple:
