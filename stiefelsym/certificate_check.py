@@ -196,22 +196,24 @@ class Context:
         span = self.span(word)
         if span is None or span[0] != span[1]:
             raise Rejected(f"trace of a word that is not a closed path: {'*'.join(word) or 'I'}")
-        ops = [k for k, L in enumerate(word) if L in self.operators]
-        if len(ops) == 1:   # tr(op(skew u)·v) = tr(op(skew v)·u): one representative per pair {u, v}
+        ops, sign = [k for k, L in enumerate(word) if L in self.operators], 1
+        if len(ops) == 1:   # tr(op(skew u)·v) = tr(op(skew v)·u), the word without operators inside
             (op, u), j = self.operators[word[ops[0]]], ops[0]
             (s1, u1), (s2, v1) = self.operator_canon(op, u), self.operator_canon(op, word[j + 1:] + word[:j])
             if s1 * s2 == 0:
                 return 0, None
-            a, b = sorted([self.operators[u1][1], self.operators[v1][1]])
-            return s1 * s2, (self.add_operator(op, a),) + b
+            a, b = sorted([self.operators[u1][1], self.operators[v1][1]],
+                          key=lambda w: (any(L in self.operators for L in w), w))
+            sign, word = s1 * s2, (self.add_operator(op, a),) + b
+            if not any(L in self.operators for L in b):
+                return sign, word
         rots = {word[k:] + word[:k] for k in range(len(word))}
         s, ws = self.star(word)
         srots = {ws[k:] + ws[:k] for k in range(len(ws))}
         if rots == srots:
-            return (0, None) if s == -1 else (1, min(rots))
+            return (0, None) if s == -1 else (sign, min(rots))
         m1, m2 = min(rots), min(srots)
-        return (1, m1) if m1 < m2 else (s, m2)
-
+        return (sign, m1) if m1 < m2 else (sign * s, m2)
 
 _ONE, _MINUS = se.Integer(1), se.Integer(-1)
 #: the fixed generators: name -> (row, col, terms)
@@ -288,8 +290,7 @@ def is_zero(c: Any) -> bool:
 # ---------------------------------------------------------------------------
 def _add(poly: dict, c: Any, traces: list, word: tuple, ctx: Context) -> None:
     """poly += c · Π tr(traces) · word, traces in canonical form."""
-    keys = []
-    s, word = ctx.canon_word(word)
+    keys, (s, word) = [], ctx.canon_word(word)
     for t in traces:
         s2, t = ctx.canon_word(tuple(t))
         s3, rep = ctx.cyclic(t)

@@ -217,15 +217,21 @@ def cycle_rep(w: Word) -> tuple[int, Word]:
         return hit
     pair = operator_pair_rep(w)   # the symmetry of an operator letter (see operator_pair_rep)
     if pair is not None:
-        return _memo_put(_CYCLE_REPS, w, pair)
+        s0, w0 = pair
+        if s0 == 0 or not operator_letters_in(w0[1:]):
+            return _memo_put(_CYCLE_REPS, w, pair)
+        s1, rep = _rotation_rep(w0)   # an operator inside the other argument: by rotation and transposition
+        return _memo_put(_CYCLE_REPS, w, (s0 * s1, rep))
+    return _memo_put(_CYCLE_REPS, w, _rotation_rep(w))
+
+
+def _rotation_rep(w: Word) -> tuple[int, Word]:
     c = min_rotation(w)
     s, ws = star_word(w)
     cs = min_rotation(ws)
     if cs == c:
-        out = (1 if s == 1 else 0), c
-    else:
-        out = (1, c) if word_key(c) < word_key(cs) else (s, cs)
-    return _memo_put(_CYCLE_REPS, w, out)
+        return (1 if s == 1 else 0), c
+    return (1, c) if word_key(c) < word_key(cs) else (s, cs)
 
 
 def word_str(w: Word) -> str:
@@ -929,8 +935,10 @@ def nonzero_terms_raw(terms: dict) -> dict:
 def operator_pair_rep(w: Word) -> tuple[int, Word] | None:
     """The symmetry of 𝔸 as a normal form of traces: tr(𝔸⟨u⟩V) = tr(𝔸(skew u) skew V) is symmetric
     in (u, V), so a cyclic word with exactly one operator letter 𝔸⟨u⟩ and no other is represented by
-    (s, (𝔸⟨a⟩,) + b) with {a, b} the canonical words of {u, V} (:func:`operator_rep`) in word_key
-    order; s = 0 when the trace vanishes.  None when w has no operator letter or more than one."""
+    (s, (𝔸⟨a⟩,) + b) with {a, b} the canonical words of {u, V} (:func:`operator_rep`), a the one
+    without operator letters if one has some (u may hold nested ones), else the lesser in word_key
+    order; s = 0 when the trace vanishes.  None when w has no operator letter or more than one.
+    (When b holds operators, :func:`cycle_rep` takes the rotation representative of the result.)"""
     ops = [k for k, L in enumerate(w) if isinstance(L, OperatorLetter)]
     if len(ops) != 1:
         return None
@@ -941,7 +949,7 @@ def operator_pair_rep(w: Word) -> tuple[int, Word] | None:
     s2, v = operator_rep(V)
     if s1 == 0 or s2 == 0:
         return 0, w
-    a, b = (u, v) if word_key(u) <= word_key(v) else (v, u)
+    a, b = sorted((u, v), key=lambda x: (operator_letters_in(x), word_key(x)))
     return s1 * s2, (operator_letter(L.operator, a),) + b
 
 

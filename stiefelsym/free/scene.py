@@ -467,7 +467,8 @@ class FreeScene(PaperObjects):
                 raise TypeError(f"the operator {op} acts on so(n), not on a scalar")
             for L in _operator_letters(y):
                 scene._named.setdefault(str(L), L)
-            return one_block(scene.field.normalize(y), scene.field, ("n", "n"), scene.tracker)
+            f = M._field   # the operator is one for every scene: on a tangent scene, its dual numbers
+            return one_block(f.normalize(y), f, ("n", "n"), M.tracker)
 
         return apply
 
