@@ -25,6 +25,9 @@ rewriting system that found the certificate (it imports nothing of
 
 The only facts used besides the hypotheses are structural: the transposes of
 the letters (A = Aᵀ, R_μ = R_μᵀ, ξᵀ = −ξ), and tr(uv) = tr(vu), tr(w) = tr(wᵀ).
+A declared operator letter AA(w) is 𝔸(skew w) for an n×n path w and a generic 𝔸 on so(n)
+symmetric for −½tr: it is n×n and skew, 𝔸(skew wᵀ) = −𝔸(skew w), 0 when wᵀ = w, and
+tr(𝔸(skew u)·v) = tr(𝔸(skew v)·u) (linearity and symmetry, for a trace with one such letter).
 """
 from __future__ import annotations
 
@@ -99,6 +102,7 @@ class Context:
     def __init__(self, declared: dict) -> None:
         self.letters = dict(FIXED_LETTERS)
         self.resolvents: dict[str, Any] = {}
+        self.operators: dict[str, tuple[str, tuple]] = {}   # name -> (operator, argument path)
         for name, d in declared.items():
             if name in self.letters:
                 raise Rejected(f"the letter {name} is declared twice or redeclares a fixed letter")
@@ -107,6 +111,13 @@ class Context:
                     raise Rejected(f"a resolvent letter is named R[...], not {name}")
                 self.resolvents[name] = coefficient(d["parameter"])
                 self.letters[name] = ("n", "n", name, 1)
+            elif d["kind"] == "operator":
+                op, arg = d["operator"], tuple(d["argument"])
+                if not (isinstance(op, str) and op[:1].isalpha() and op.isalnum() and arg
+                        and name == f"{op}({'*'.join(arg)})"):
+                    raise Rejected(f"an operator letter is named op(argument), op alphanumeric: {name}")
+                self.expect(arg, "n", "n", f"the argument of {name}")
+                self.add_operator(op, arg)
             elif d["kind"] == "generic":
                 t, row, col = d["transpose"], d["row"], d["col"]
                 if not (name.startswith("gen:") and t.startswith("gen:")) or t == name or t in self.letters:
@@ -117,6 +128,30 @@ class Context:
                 self.letters[t] = (col, row, name, 1)
             else:
                 raise Rejected(f"unknown kind of letter {d['kind']!r} for {name}")
+
+    def add_operator(self, op: str, arg: tuple) -> str:
+        """The letter op(arg), arg an n×n path: n×n, its transpose itself with sign −1."""
+        name = f"{op}({'*'.join(arg)})"
+        if name not in self.operators:
+            if name in self.letters:
+                raise Rejected(f"the operator letter {name} redeclares a letter")
+            self.letters[name], self.operators[name] = ("n", "n", name, -1), (op, arg)
+        return name
+
+    def operator_canon(self, op: str, arg: tuple) -> tuple[int, str | None]:
+        """(s, name) with op(skew arg) = s·name, s = 0 for a symmetric path (argᵀ = σ·arg*, skew arg* = −σ·skew arg)."""
+        sigma, ws = self.star(arg)
+        if ws == arg:
+            return (0, None) if sigma == 1 else (1, self.add_operator(op, arg))
+        return (1, self.add_operator(op, arg)) if arg <= ws else (-sigma, self.add_operator(op, ws))
+
+    def canon_word(self, word: tuple) -> tuple[int, tuple]:
+        """(sign, word) with every operator letter in canonical form; sign 0: the word is zero."""
+        sign, out = 1, []
+        for L in word:
+            s, L = self.operator_canon(*self.operators[L]) if L in self.operators else (1, L)
+            sign, out = sign * s, out + [L]
+        return sign, tuple(out)
 
     def letter(self, name: Any) -> tuple[str, str, str, int]:
         if not isinstance(name, str) or name not in self.letters:
@@ -161,14 +196,24 @@ class Context:
         span = self.span(word)
         if span is None or span[0] != span[1]:
             raise Rejected(f"trace of a word that is not a closed path: {'*'.join(word) or 'I'}")
+        ops, sign = [k for k, L in enumerate(word) if L in self.operators], 1
+        if len(ops) == 1:   # tr(op(skew u)·v) = tr(op(skew v)·u), the word without operators inside
+            (op, u), j = self.operators[word[ops[0]]], ops[0]
+            (s1, u1), (s2, v1) = self.operator_canon(op, u), self.operator_canon(op, word[j + 1:] + word[:j])
+            if s1 * s2 == 0:
+                return 0, None
+            a, b = sorted([self.operators[u1][1], self.operators[v1][1]],
+                          key=lambda w: (any(L in self.operators for L in w), w))
+            sign, word = s1 * s2, (self.add_operator(op, a),) + b
+            if not any(L in self.operators for L in b):
+                return sign, word
         rots = {word[k:] + word[:k] for k in range(len(word))}
         s, ws = self.star(word)
         srots = {ws[k:] + ws[:k] for k in range(len(ws))}
         if rots == srots:
-            return (0, None) if s == -1 else (1, min(rots))
+            return (0, None) if s == -1 else (sign, min(rots))
         m1, m2 = min(rots), min(srots)
-        return (1, m1) if m1 < m2 else (s, m2)
-
+        return (sign, m1) if m1 < m2 else (sign * s, m2)
 
 _ONE, _MINUS = se.Integer(1), se.Integer(-1)
 #: the fixed generators: name -> (row, col, terms)
@@ -245,15 +290,15 @@ def is_zero(c: Any) -> bool:
 # ---------------------------------------------------------------------------
 def _add(poly: dict, c: Any, traces: list, word: tuple, ctx: Context) -> None:
     """poly += c · Π tr(traces) · word, traces in canonical form."""
-    keys = []
+    keys, (s, word) = [], ctx.canon_word(word)
     for t in traces:
-        s, rep = ctx.cyclic(tuple(t))
-        if s == 0:
-            return
-        c = c * s
-        keys.append(rep)
+        s2, t = ctx.canon_word(tuple(t))
+        s3, rep = ctx.cyclic(t)
+        s, keys = s * s2 * s3, keys + [rep]
+    if s == 0:
+        return
     key = (tuple(sorted(keys)), word)
-    poly[key] = poly[key] + c if key in poly else c
+    poly[key] = poly[key] + c * s if key in poly else c * s
 
 
 def _words(x: Any) -> tuple:

@@ -22,7 +22,7 @@ from .claims import Claim, Count, Rank
 from .methods import _base_result, division_probe, _entries, _short, call_claim
 from .results import CheckOutcome, Result
 from .free import FreeScene, FreeSolveError, NeedsCoordinates, RewritingError
-from .free.algebra import REFUSED, recording, refusals
+from .free.algebra import REFUSED, OperatorLetter, recording, refusals
 from .free.certificates import CertificateWriter
 from .free.rewriting import latex_text
 from .latex import tex_text, unicode_name
@@ -100,6 +100,10 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
     res.reductions = ["free algebra with involution: X, P, A, resolvents as letters; rules are consequences "
                       "of X^T X = I, X^T P + P^T X = 0, A = A^T and the resolvent identity; the rule set is "
                       "terminating (deg-lex order) and confluent (all critical pairs resolve)"]
+    if any(isinstance(L, OperatorLetter) for L in scene._named.values()):
+        res.reductions.append("a generic symmetric operator AA on so(n) as letters AA(w) = AA(skew w), one per word "
+                              "w of its argument (linear, skew); its symmetry tr(AA(u) v) = tr(AA(v) u) as a "
+                              "normal form of traces and in gradients; d AA(M) = AA(dM) along flows")
     if scene.system.trace_fallbacks:
         return undecided("a trace normal form used a non-canonical representative")
     if open_entries:

@@ -235,8 +235,6 @@ def test_coordinate_objects_raise_needs_coordinates():
     with pytest.raises(NeedsCoordinates):
         s.a
     with pytest.raises(NeedsCoordinates):
-        s.sym_operator()
-    with pytest.raises(NeedsCoordinates):
         s.X.T.__matmul__(s.X).inv()
     with pytest.raises(NeedsCoordinates):
         s.scalar_matrix(s.lam, 3)

@@ -208,20 +208,30 @@ def min_rotation(c: Word) -> Word:
 
 
 def cycle_rep(w: Word) -> tuple[int, Word]:
-    """Canonical (sign, representative) of tr(w) under rotation and tr(w*) = tr(w).
+    """Canonical (sign, representative) of tr(w) under rotation and tr(w*) = tr(w), and for a word
+    with one letter of a symmetric operator on so(n), under tr(𝔸(u)V) = tr(u𝔸(V)).
 
     sign 0 means tr(w) = −tr(w), i.e. the trace vanishes."""
     hit = _memo_get(_CYCLE_REPS, w)
     if hit is not None:
         return hit
+    pair = operator_pair_rep(w)   # the symmetry of an operator letter (see operator_pair_rep)
+    if pair is not None:
+        s0, w0 = pair
+        if s0 == 0 or not operator_letters_in(w0[1:]):
+            return _memo_put(_CYCLE_REPS, w, pair)
+        s1, rep = _rotation_rep(w0)   # an operator inside the other argument: by rotation and transposition
+        return _memo_put(_CYCLE_REPS, w, (s0 * s1, rep))
+    return _memo_put(_CYCLE_REPS, w, _rotation_rep(w))
+
+
+def _rotation_rep(w: Word) -> tuple[int, Word]:
     c = min_rotation(w)
     s, ws = star_word(w)
     cs = min_rotation(ws)
     if cs == c:
-        out = (1 if s == 1 else 0), c
-    else:
-        out = (1, c) if word_key(c) < word_key(cs) else (s, cs)
-    return _memo_put(_CYCLE_REPS, w, out)
+        return (1 if s == 1 else 0), c
+    return (1, c) if word_key(c) < word_key(cs) else (s, cs)
 
 
 def word_str(w: Word) -> str:
@@ -743,6 +753,7 @@ def substitute(p: NCPoly, images: Mapping[Letter, NCPoly]) -> NCPoly:
         full[L] = v
         if L.adjoint not in images:
             full[L.adjoint] = v.star() * L.adjoint_sign if L.adjoint != L else v
+    _operator_images(p, full, lambda q: substitute(q, images))
     out = NCPoly.zero(p.row, p.col)
     for (tm, w), c in p.terms.items():
         term = NCPoly({((), w): c}, p.row, p.col)
@@ -829,6 +840,8 @@ def derivation(p: NCPoly, images: Mapping[Letter, NCPoly]) -> NCPoly:
         full[L] = v
         if L.adjoint != L and L.adjoint not in images:
             full[L.adjoint] = v.star() * L.adjoint_sign
+    # d𝔸⟨u⟩ = 𝔸(du): the operator is linear and constant along flows
+    _operator_images(p, full, lambda q: derivation(q, images))
 
     def word_derivative(w: Word, t: str) -> NCPoly:
         out = NCPoly.zero(t, w[-1].col if w else t)
@@ -850,3 +863,114 @@ def derivation(p: NCPoly, images: Mapping[Letter, NCPoly]) -> NCPoly:
             rest = NCPoly({(tm[:i] + tm[i + 1:], w): c}, p.row, p.col)
             out = out + rest * trace(dc)
     return out
+
+
+# ---------------------------------------------------------------------------
+# a generic symmetric operator on so(n) as typed letters
+class OperatorLetter(Letter):
+    """𝔸⟨w⟩ = 𝔸(skew w): a generic linear operator 𝔸 on so(n), symmetric for the Killing form,
+    applied to the skew part (w − wᵀ)/2 of an n×n word w.  An opaque skew n×n letter whose name
+    says the operator and its argument, ``AA(X*Pt)``; :func:`apply_operator` makes only canonical
+    ones (the argument is the least of w and its transpose word, see :func:`operator_rep`)."""
+
+    operator: str
+    argument: Word
+
+
+def operator_letter(op: str, arg: Word) -> OperatorLetter:
+    """The letter 𝔸⟨arg⟩ of the operator ``op`` (arg an n×n word, taken as it is)."""
+    arg = tuple(arg)
+    key = (op, arg)
+    hit = _OPERATOR_LETTERS.get(key)
+    if hit is not None and all(a is b for a, b in zip(hit.argument, arg)):
+        return hit
+    check_word(arg)
+    if arg and (arg[0].row != "n" or arg[-1].col != "n"):
+        raise TypeError(f"the operator {op} acts on so(n): its argument {word_str(arg)} is not n×n")
+    L = OperatorLetter.__new__(OperatorLetter, f"{op}({word_str(arg)})", "n", "n",
+                               rf"\mathbb{{{op[0]}}}({word_latex(arg) or 'I'})")
+    L.adjoint_sign = -1
+    L.operator, L.argument = op, arg
+    _OPERATOR_LETTERS[key] = L
+    return L
+
+
+_OPERATOR_LETTERS: dict = {}
+
+
+def operator_rep(w: Word) -> tuple[int, Word]:
+    """(s, v) with skew(w) = s·skew(v) and v the least (word_key) of w and its transpose word:
+    wᵀ = σ·w* (w* the reversed word of adjoint letters), so skew(w*) = −σ·skew(w); s = 0 when the
+    skew part vanishes (w* = w with σ = 1: a symmetric word, such as the identity)."""
+    sigma, ws = star_word(w)
+    if ws == w and all(a is b for a, b in zip(ws, w)):
+        return (0, w) if sigma == 1 else (1, w)
+    return (1, w) if word_key(w) <= word_key(ws) else (-sigma, ws)
+
+
+def is_operator(L: Any) -> bool:
+    return isinstance(L, OperatorLetter)
+
+
+def apply_operator(op: str, p: NCPoly) -> NCPoly:
+    """𝔸(p) for an n×n polynomial p: 𝔸(skew p), linear in p, one canonical letter per word
+    (traces are scalars and stay factors)."""
+    if (p.row, p.col) != ("n", "n"):
+        raise TypeError(f"the operator {op} acts on so(n), not on a {p.row}×{p.col} polynomial")
+    out: dict = {}
+    for (tm, w), c in p.terms.items():
+        s, v = operator_rep(w)
+        if s == 0:
+            continue
+        k = (tm, (operator_letter(op, v),))
+        x = c if s == 1 else cneg(c)
+        out[k] = csum(out[k], x) if k in out else x
+    return NCPoly(nonzero_terms_raw(out), "n", "n")
+
+
+def nonzero_terms_raw(terms: dict) -> dict:
+    return {k: c for k, c in terms.items() if not coef_is_zero(c)}
+
+
+def operator_pair_rep(w: Word) -> tuple[int, Word] | None:
+    """The symmetry of 𝔸 as a normal form of traces: tr(𝔸⟨u⟩V) = tr(𝔸(skew u) skew V) is symmetric
+    in (u, V), so a cyclic word with exactly one operator letter 𝔸⟨u⟩ and no other is represented by
+    (s, (𝔸⟨a⟩,) + b) with {a, b} the canonical words of {u, V} (:func:`operator_rep`), a the one
+    without operator letters if one has some (u may hold nested ones), else the lesser in word_key
+    order; s = 0 when the trace vanishes.  None when w has no operator letter or more than one.
+    (When b holds operators, :func:`cycle_rep` takes the rotation representative of the result.)"""
+    ops = [k for k, L in enumerate(w) if isinstance(L, OperatorLetter)]
+    if len(ops) != 1:
+        return None
+    j = ops[0]
+    L = w[j]
+    V = w[j + 1:] + w[:j]
+    s1, u = operator_rep(L.argument)
+    s2, v = operator_rep(V)
+    if s1 == 0 or s2 == 0:
+        return 0, w
+    a, b = sorted((u, v), key=lambda x: (operator_letters_in(x), word_key(x)))
+    return s1 * s2, (operator_letter(L.operator, a),) + b
+
+
+def operator_letters_in(w: Word) -> bool:
+    return any(isinstance(L, OperatorLetter) for L in w)
+
+
+def _operator_images(p: NCPoly, full: dict, image: Any) -> None:
+    """Add to ``full`` the image of every operator letter of p whose argument meets ``full``:
+    𝔸⟨u⟩ ↦ 𝔸(image(u)) (linearity; the operator itself is constant)."""
+    def visit(L: Letter) -> bool:
+        if L in full:
+            return True
+        if not isinstance(L, OperatorLetter):
+            return False
+        moved = False
+        for x in L.argument:
+            moved = visit(x) or moved
+        if moved:
+            full[L] = apply_operator(L.operator, image(NCPoly.word(L.argument, "n")))
+        return moved
+
+    for L in p.letters():
+        visit(L)

@@ -5,7 +5,8 @@ The form read by :mod:`stiefelsym.certificate_check` (format
 
     {"format": ..., "symbols": {name: what it stands for},
      "letters": {name: {"kind": "resolvent", "parameter": "lambda_"} |
-                       {"kind": "generic", "row": "n", "col": "r", "transpose": name}},
+                       {"kind": "generic", "row": "n", "col": "r", "transpose": name} |
+                       {"kind": "operator", "operator": "AA", "argument": ["X", "Pt"]}},
      "entries": [{"position": "dL[1,1]", "type": ["n", "n"],
                   "residual": [{"coef": "2*kappa", "traces": [["Xt", "P"]], "word": ["X", "Pt"]}, ...],
                   "terms": [{"coef": "-1", "traces": [], "left": ["Xt"], "hyp": "XtP+PtX",
@@ -24,7 +25,7 @@ from typing import Any, Iterable, Mapping
 
 import symengine as se
 
-from .algebra import DIMENSIONS, Letter, NCPoly, memo_put
+from .algebra import DIMENSIONS, Letter, NCPoly, OperatorLetter, memo_put
 from .rewriting import Certificate
 
 FORMAT = "stiefelsym-cofactor-1"
@@ -101,7 +102,10 @@ class CertificateWriter:
         name = str(L)
         if name in self.letters:
             return name
-        if L in self.resolvents:
+        if isinstance(L, OperatorLetter):
+            argument = self.word(L.argument)   # the letters of the argument first
+            self.letters[name] = {"kind": "operator", "operator": L.operator, "argument": argument}
+        elif L in self.resolvents:
             self.letters[name] = {"kind": "resolvent", "parameter": self.coef(self.resolvents[L])}
         elif name.startswith("gen:") and L.adjoint != L:
             G = L if not name.endswith("^T") else L.adjoint
@@ -115,7 +119,7 @@ class CertificateWriter:
         if names is not None:
             return list(names)
         out = [self.letter(L) for L in w]
-        if not any(x.startswith(("R[", "gen:")) for x in out):   # no letter to declare: any writer's names
+        if not any(x.startswith(("R[", "gen:")) or "(" in x for x in out):   # no letter to declare: any writer's names
             memo_put(_PLAIN_WORDS, w, tuple(out), 100_000)
         return out
 

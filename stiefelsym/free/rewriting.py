@@ -30,8 +30,8 @@ from typing import Iterable, Sequence
 import symengine as se
 
 from .algebra import (DIMENSIONS, SCALAR, Coef, Letter, NCPoly, Word, check_word, cprod, csum, cycle_rep,
-                      memo_put, merge_traces, min_rotation, record_refusal, star_word, trace, word_key, word_latex,
-                      word_str)
+                      memo_put, merge_traces, min_rotation, operator_letters_in, record_refusal, star_word, trace,
+                      word_key, word_latex, word_str)
 
 
 class RewritingError(ValueError):
@@ -482,6 +482,12 @@ class RewritingSystem:
                 continue
             rep, s, u = self._adjoint_rep(k)
             used = used | u
+            if rep is not None and operator_letters_in(rep):
+                # the symmetry of an operator on so(n): a normal form of the pair of its traces (no rule)
+                s2, rep = cycle_rep(rep)
+                s = s * s2
+                if s2 == 0:
+                    rep = None
             if rep is not None:
                 out[rep] = out[rep] + v * s if rep in out else v * s
         res = (nonzero_terms(out), used)

@@ -23,7 +23,7 @@ import symengine as se
 from ..fields import Dual, DualField, Field
 from ..matrix import CoordinateTracker, Mat, definite
 from ..scene import USER_SCALAR, Flow, PaperObjects, _number, map_entries
-from .algebra import (Letter, NCPoly, NeedsCoordinates, as_coef, coef_latex, derivation,
+from .algebra import (Letter, NCPoly, NeedsCoordinates, OperatorLetter, apply_operator, as_coef, coef_latex, derivation,
                       letter_pair, record_refusal, refuse, skew_letter, substitute, symmetric_letter, trace)
 from .mat import FreeBackend, FreeDualBackend, entry_of, one_block
 from .rewriting import (_NONZERO_NUMBER_TYPES, _SIMPLE, Cofactor, Hypothesis, Order, Reduction, RewritingSystem,
@@ -442,8 +442,35 @@ class FreeScene(PaperObjects):
     def a(self) -> Any:
         raise refuse("the eigenvalues a_i of A", self.tracker)
 
-    def sym_operator(self, name: str = "AA") -> Any:
-        raise refuse("a generic symmetric operator on so(n)", self.tracker)
+    def sym_operator(self, name: str = "AA") -> Callable[[Mat], Mat]:
+        """A generic symmetric operator 𝔸 on so(n) (for ⟨a, b⟩ = −½ tr(ab)), as letters: 𝔸(M) for an
+        n×n block M is Σ c·𝔸⟨w⟩ over the words w of M (linear in M; 𝔸 acts on the skew part, as
+        the coordinate scenes' operator does), each 𝔸⟨w⟩ an opaque skew n×n letter.  Its symmetry
+        is a normal form of traces (:func:`~stiefelsym.free.algebra.operator_pair_rep`) and the
+        rule of gradients (:func:`~stiefelsym.free.traces.gradient`); along a flow d𝔸(M) = 𝔸(dM)."""
+        if not re.fullmatch(r"[A-Za-z][A-Za-z0-9]*", str(name)):
+            raise ValueError(f"sym_operator({name!r}): a name is letters and digits (it names the operator's letters)")
+        op = str(name)
+        scene = self
+
+        def apply(M: Any) -> Mat:
+            if not isinstance(M, Mat) or M._shape() != (1, 1):
+                raise refuse(f"the operator {op} on a matrix that is not one n×n block", scene.tracker)
+            if tuple(M.tags) != ("n", "n"):
+                raise TypeError(f"the operator {op} acts on so(n), not on a {M.tags[0]}×{M.tags[1]} matrix")
+            x = entry_of(M)
+            if isinstance(x, Dual):   # along a flow: d𝔸(M) = 𝔸(dM)
+                y: Any = Dual(apply_operator(op, x.a), apply_operator(op, x.b))
+            elif isinstance(x, NCPoly):
+                y = apply_operator(op, x)
+            else:
+                raise TypeError(f"the operator {op} acts on so(n), not on a scalar")
+            for L in _operator_letters(y):
+                scene._named.setdefault(str(L), L)
+            f = M._field   # the operator is one for every scene: on a tangent scene, its dual numbers
+            return one_block(f.normalize(y), f, ("n", "n"), M.tracker)
+
+        return apply
 
     def generic(self, name: str, m: str, k: str) -> Mat:
         """A generic m×k matrix (m, k in {"n", "r"}): a free letter G with transpose G^T."""
@@ -876,3 +903,8 @@ def _isolate(eq: NCPoly, U: Letter, unknowns: list[Letter]) -> NCPoly | None:
     if rest.letters() & set(unknowns):
         return None
     return rest * (se.Integer(-1) / c)
+
+
+def _operator_letters(y: Any) -> list[OperatorLetter]:
+    polys = [y.a, y.b] if isinstance(y, Dual) else [y]
+    return [L for q in polys for L in q.letters() if isinstance(L, OperatorLetter)]

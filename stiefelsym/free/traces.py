@@ -18,11 +18,15 @@ from __future__ import annotations
 
 import symengine as se
 
-from .algebra import SCALAR, Letter, NCPoly
+from .algebra import SCALAR, Letter, NCPoly, OperatorLetter, apply_operator
 
 
 def gradient(H: NCPoly, L: Letter) -> NCPoly:
-    """∂H/∂L for a trace form H and a letter L that is not self-adjoint (an L.row × L.col polynomial)."""
+    """∂H/∂L for a trace form H and a letter L that is not self-adjoint (an L.row × L.col polynomial).
+
+    An occurrence of L in the argument u of an operator letter 𝔸⟨u⟩ in tr(𝔸⟨u⟩V) is differentiated
+    through the symmetry of 𝔸: d tr(𝔸(skew u)V) = tr(𝔸(skew du) skew V) = tr(du 𝔸(skew V)), so it
+    contributes as the same occurrence in tr(u·𝔸⟨V⟩)."""
     if not H.is_scalar:
         raise TypeError("gradients are taken of scalar trace forms")
     if L.adjoint == L:
@@ -31,14 +35,51 @@ def gradient(H: NCPoly, L: Letter) -> NCPoly:
     for (tm, w), c in H.terms.items():
         for i, cyc in enumerate(tm):
             rest = NCPoly({(tm[:i] + tm[i + 1:], ()): c}, SCALAR, SCALAR)
-            for j, letter in enumerate(cyc):
-                if letter != L and letter != L.adjoint:
-                    continue
-                U = cyc[j + 1:] + cyc[:j]  # tr(U · letter)
-                t = letter.col  # type the empty U would have
-                mono = NCPoly.word(U, t)
-                if letter == L:
-                    out = out + rest * mono.star()
-                else:
-                    out = out + rest * mono * se.Integer(L.adjoint_sign)
+            out = out + rest * _cycle_gradient(cyc, L)
     return out
+
+
+def _cycle_gradient(cyc: tuple, L: Letter) -> NCPoly:
+    """∂ tr(cyc)/∂L."""
+    out = NCPoly.zero(L.row, L.col)
+    for j, letter in enumerate(cyc):
+        if isinstance(letter, OperatorLetter):
+            if _mentions(letter, L):
+                V = cyc[j + 1:] + cyc[:j]   # tr(𝔸⟨u⟩ V) = tr(u 𝔸(V))
+                image = apply_operator(letter.operator, NCPoly.word(V, "n"))
+                for (_, vw), vc in image.terms.items():
+                    out = out + _occurrences_gradient(letter.argument + vw, len(letter.argument), L) * vc
+            continue
+        if letter != L and letter != L.adjoint:
+            continue
+        out = out + _one_occurrence(cyc, j, L)
+    return out
+
+
+def _occurrences_gradient(cyc: tuple, upto: int, L: Letter) -> NCPoly:
+    """∂ tr(cyc)/∂L from the occurrences of L at the positions before ``upto``."""
+    out = NCPoly.zero(L.row, L.col)
+    for j in range(upto):
+        letter = cyc[j]
+        if isinstance(letter, OperatorLetter):
+            if _mentions(letter, L):
+                raise TypeError(f"the gradient of an operator nested in an operator's argument ({letter})")
+            continue
+        if letter == L or letter == L.adjoint:
+            out = out + _one_occurrence(cyc, j, L)
+    return out
+
+
+def _one_occurrence(cyc: tuple, j: int, L: Letter) -> NCPoly:
+    letter = cyc[j]
+    U = cyc[j + 1:] + cyc[:j]  # tr(U · letter)
+    mono = NCPoly.word(U, letter.col)   # letter.col: the type the empty U would have
+    if letter == L:
+        return mono.star()
+    return mono * se.Integer(L.adjoint_sign)
+
+
+def _mentions(op: OperatorLetter, L: Letter) -> bool:
+    """L or its adjoint occurs in the argument of the operator letter op (at any depth)."""
+    return any(x == L or x == L.adjoint or (isinstance(x, OperatorLetter) and _mentions(x, L))
+               for x in op.argument)
