@@ -207,3 +207,20 @@ def test_check_rejects_a_verdict_obtained_by_reading_frames(tmp_path):
 @pytest.mark.parametrize("method", ["exact", "modular", "free"])
 def test_patched_evaluator_cannot_pass_a_false_claim(method):
     assert _v("evaluator_patched.py", method, "adv-evaluator") not in PASSING
+
+
+# -- M. the operator letter on so(n) (dimension-free) used wrongly -------------------------------
+
+OPERATOR_FALSE = ("two-operators-equal", "operator-self-pairing-zero", "operator-additive-wrong",
+                  "operator-symmetric-no-trace", "operator-on-phi-vs-psi-size")
+
+
+def test_operator_letter_misuse_is_never_proved_for_all_sizes():
+    v = verdicts("operator_letter_misuse.py", "free")
+    assert all(v[c] not in PASSING for c in OPERATOR_FALSE), v
+
+
+@pytest.mark.parametrize("method", ["exact", "modular", "float"])
+def test_operator_letter_misuse_fails_at_a_fixed_size(method):
+    v = verdicts("operator_letter_misuse.py", method, size="3,2")
+    assert all(v[c] == "fails" for c in OPERATOR_FALSE), v
