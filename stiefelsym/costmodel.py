@@ -436,6 +436,20 @@ def save(doc: dict[str, Any], path: Path | str | None = None) -> Path:
     return p
 
 
+def save_figure(fig: Any, out_dir: Path, stem: str) -> list[Path]:
+    """``stem``.png and ``stem``.pdf, with no date or producer in the files (the same data give the
+    same bytes); the figure is closed."""
+    import matplotlib.pyplot as plt
+    paths = []
+    for ext in ("png", "pdf"):
+        p = out_dir / f"{stem}.{ext}"
+        fig.savefig(p, dpi=110, metadata={"CreationDate": None, "Creator": None, "Producer": None}
+                    if ext == "pdf" else {"Software": None})
+        paths.append(p)
+    plt.close(fig)
+    return paths
+
+
 def plot(doc: dict[str, Any], out_dir: Path | str) -> list[Path]:
     """Time against n with the fitted power laws, one panel per family (PNG and PDF)."""
     import matplotlib
@@ -478,15 +492,7 @@ def plot(doc: dict[str, Any], out_dir: Path | str) -> list[Path]:
                  "r = 2 (triangles, dotted); lines: the fitted upper envelopes",
                  fontsize=11)
     fig.tight_layout()
-    paths = []
-    for ext in ("png", "pdf"):
-        p = out_dir / f"costmodel.{ext}"
-        # no date or producer in the file: the same data give the same bytes
-        fig.savefig(p, dpi=110, metadata={"CreationDate": None, "Creator": None, "Producer": None}
-                    if ext == "pdf" else {"Software": None})
-        paths.append(p)
-    plt.close(fig)
-    return paths
+    return save_figure(fig, out_dir, "costmodel")
 
 
 def table(doc: dict[str, Any]) -> str:
@@ -544,14 +550,7 @@ def plot_accuracy(rows: list[dict[str, Any]], out_dir: Path | str) -> list[Path]
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8)
     fig.tight_layout()
-    paths = []
-    for ext in ("png", "pdf"):
-        p = out_dir / f"costmodel-accuracy.{ext}"
-        fig.savefig(p, dpi=110, metadata={"CreationDate": None, "Creator": None, "Producer": None}
-                    if ext == "pdf" else {"Software": None})
-        paths.append(p)
-    plt.close(fig)
-    return paths
+    return save_figure(fig, out_dir, "costmodel-accuracy")
 
 
 def accuracy_summary(rows: list[dict[str, Any]]) -> dict[str, dict[str, Any]]:

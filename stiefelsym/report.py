@@ -744,23 +744,31 @@ def small_witness_of(c: ClaimResults) -> tuple[Result, dict[str, Any]] | None:
 WITNESS_SCRIPT_DIR = "witnesses"
 
 
+def _point_witness(w: dict[str, Any]) -> tuple[list[str], list[str], str]:
+    """Of a small witness at a point: the constraints found to hold exactly, each letter as LaTeX
+    ("X = \\begin{pmatrix}…"), and the failing value as LaTeX."""
+    from .witness import decoded, matrix_tex, q_tex
+    w = decoded(w)
+    on = [k for k, ok in w.get("on T*V", {}).items() if ok]
+    parts = [_tex_letter(f"{name} = {matrix_tex(v) if isinstance(v, list) else q_tex(v)}")
+             for name, v in w["letters"].items()]
+    return on, parts, q_tex(Fraction(w["value"]))
+
+
 def _md_small_witness(c: ClaimResults) -> list[str]:
     found = small_witness_of(c)
     if found is None:
         return []
-    from .witness import decoded, matrix_tex, q_tex
     r, w = found
     if w.get("kind") == "count":
         return [_count_witness_text(c, r, w, _md_escape) + (f" The script `{WITNESS_SCRIPT_DIR}/{c.id}.py` "
                                                             "(Python with sympy, no stiefelsym) recomputes it from "
                                                             "the paper's definitions." if _has_script(c) else ""), ""]
-    w = decoded(w)
-    on = [k for k, ok in w.get("on T*V", {}).items() if ok]
+    on, parts, value = _point_witness(w)
     out = [f"**A witness to check by hand** at (n, r) = {r.size}"
            + (rf", a point of T\*V ({', '.join(_md_escape(k) for k in on)} hold exactly)" if on else "") + ":", ""]
-    parts = [f"{name} = {matrix_tex(v) if isinstance(v, list) else q_tex(v)}" for name, v in w["letters"].items()]
-    out += ["$$" + r",\quad ".join(_tex_letter(p) for p in parts) + "$$", ""]
-    out += [f"There the residual {_md_escape(_entry_words(w['entry']))} is ${q_tex(Fraction(w['value']))} \\neq 0$."
+    out += ["$$" + r",\quad ".join(parts) + "$$", ""]
+    out += [f"There the residual {_md_escape(_entry_words(w['entry']))} is ${value} \\neq 0$."
             + (f" A self-contained script (Python with sympy, no stiefelsym) rebuilds this point and evaluates "
                f"the printed formula and the correction: `{WITNESS_SCRIPT_DIR}/{c.id}.py`." if _has_script(c) else ""),
             ""]
@@ -771,23 +779,20 @@ def _tex_small_witness(c: ClaimResults) -> list[str]:
     found = small_witness_of(c)
     if found is None:
         return []
-    from .witness import decoded, matrix_tex, q_tex
     r, w = found
     if w.get("kind") == "count":
         return [r"\textbf{A witness to check by hand:} " + _count_witness_text(c, r, w, tex_escape)
                 + ((tex_escape(" The script ") + _tt(f"{WITNESS_SCRIPT_DIR}/{c.id}.py")
                     + tex_escape(" (Python with sympy, no stiefelsym) recomputes it from the paper's definitions."))
                    if _has_script(c) else ""), ""]
-    w = decoded(w)
-    on = [k for k, ok in w.get("on T*V", {}).items() if ok]
+    on, parts, value = _point_witness(w)
     out = [r"\textbf{A witness to check by hand} " + tex_escape(
         f"at (n, r) = {r.size}" + (f", a point of T*V ({', '.join(on)} hold exactly)" if on else "") + ":")]
-    parts = [f"{name} = {matrix_tex(v) if isinstance(v, list) else q_tex(v)}" for name, v in w["letters"].items()]
-    rows = [r",\quad ".join(_tex_letter(p) for p in parts[k:k + 3]) for k in range(0, len(parts), 3)]
+    rows = [r",\quad ".join(parts[k:k + 3]) for k in range(0, len(parts), 3)]
     # three letters a line, the whole shrunk to the line's width when wider
     out += [r"\begin{center}\resizebox{\ifdim\width>\linewidth\linewidth\else\width\fi}{!}{$\displaystyle"
             r"\begin{gathered}" + r"\\[2pt]".join(rows) + r"\end{gathered}$}\end{center}"]
-    out += [tex_text(f"There the residual {_entry_words(w['entry'])} is ") + f"${q_tex(Fraction(w['value']))} \\neq 0$."
+    out += [tex_text(f"There the residual {_entry_words(w['entry'])} is ") + f"${value} \\neq 0$."
             + ((tex_escape(" A self-contained script (Python with sympy, no stiefelsym) rebuilds this point and "
                            "evaluates the printed formula and the correction: ")
                 + _tt(f"{WITNESS_SCRIPT_DIR}/{c.id}.py") + ".") if _has_script(c) else ""), ""]

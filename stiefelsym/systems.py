@@ -609,7 +609,6 @@ def _diag(s: Scene, values: Sequence[Any]) -> Mat:
     return s.mat([[values[i] if i == j else s.q(0) for j in range(r)] for i in range(r)], ("r", "r"))
 
 
-DOUBLE_PARAMETER = "double_d1"     # a scalar every double point draws (a witness looks for it)
 
 
 def double_point(s: Scene) -> dict[str, Mat]:
@@ -636,6 +635,12 @@ def double_point(s: Scene) -> dict[str, Mat]:
     V = s.general_params("double_V", s.n, r, ("n", "r"))
     W = s.general_params("double_W", s.n, r, ("n", "r"))
     return {"X": X, "Y": Y, "Xdot": V, "Ydot": -(Y @ V.T @ Y) + (s.In - Y @ X.T) @ W}
+
+
+#: the points of the appendix's phase spaces built from scalar parameters of their own, for a
+#: witness (stiefelsym.witness) to state: (the prefix of their parameters' names, the builder, the
+#: keys of the point and the letters a report names them by); such a point replaces the chart's X, P
+WITNESS_POINTS = (("double_", double_point, (("X", "X"), ("Y", "Y"), ("Xdot", "Ẋ"), ("Ydot", "Ẏ"))),)
 
 
 def coupled_point(s: Scene) -> dict[str, Mat]:

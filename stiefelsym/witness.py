@@ -19,7 +19,7 @@ from typing import Any, Callable
 
 from .claims import Claim
 from .fields import DegenerateError, RationalField
-from .systems import DOUBLE_PARAMETER, double_point
+from .systems import WITNESS_POINTS
 
 #: the chart parameters' bounds tried in turn (integers in [-B, B])
 BOUNDS = (1, 2, 3, 5)
@@ -64,14 +64,16 @@ def _letters(scene: Any) -> dict[str, Any]:
                 out[name] = _matrix(M)
             except (AttributeError, TypeError, ValueError):
                 continue
-    if "scalar:" + DOUBLE_PARAMETER in scene._point_values():
-        # the double Neumann system: its point (X, Y, Ẋ, Ẏ), rebuilt from the parameters the claim
-        # drew (named, so the same values), replaces the chart's X0, P
-        dp = double_point(scene)
+    params = scene._point_values()
+    built = [w for w in WITNESS_POINTS if any(k.startswith("scalar:" + w[0]) for k in params)]
+    for _, builder, keys in built:
+        # a point the claim built from parameters of its own (the double Neumann system's (X, Y, Ẋ, Ẏ)),
+        # rebuilt from them (named, so the same values); it replaces the chart's X0, P
+        point = builder(scene)
         out.pop("X", None)
         out.pop("P", None)
-        for key, name in (("X", "X"), ("Y", "Y"), ("Xdot", "Ẋ"), ("Ydot", "Ẏ")):
-            out[name] = _matrix(dp[key])
+        for key, name in keys:
+            out[name] = _matrix(point[key])
     cp = cache.get("cpoint")
     if cp is not None:                         # a point Z of W(n, r) and its tangent vector, realified
         n, r = scene.n, scene.r
@@ -79,7 +81,6 @@ def _letters(scene: Any) -> dict[str, Any]:
             R = _matrix(M)
             out[f"Re {name}"] = [row[:r] for row in R[:n]]
             out[f"Im {name}"] = [row[:r] for row in R[n:]]
-    params = scene._point_values()
     for key, name in SCALARS:
         if key in params:
             out[name] = _fraction(params[key])
@@ -88,7 +89,7 @@ def _letters(scene: Any) -> dict[str, Any]:
         out["A"] = [[_fraction(params[f"a_{i + 1}"]) if i == j else Fraction(0) for j in range(n)]
                     for i in range(n)]
     for key, v in params.items():              # the claim's own scalars (ν, ...), but not a point's parameters
-        if key.startswith("scalar:") and not key.startswith("scalar:double_"):
+        if key.startswith("scalar:") and not any(key.startswith("scalar:" + w[0]) for w in WITNESS_POINTS):
             out[key.split(":", 1)[1]] = _fraction(v)
     return out
 

@@ -1,6 +1,7 @@
 """Witnesses a reader checks by hand: a small point on T*V where the printed formula fails, and a
 self-contained script that rebuilds it and evaluates the printed formula and the correction."""
 import json
+import re
 import subprocess
 import sys
 from fractions import Fraction
@@ -100,3 +101,15 @@ def test_the_integrity_check_recomputes_the_small_witness():
     forged["witness"]["small"]["value"] = "3"
     lines: list[str] = []
     assert check_results([forged], cat, echo=lines.append) == 1 and "small witness" in lines[0]
+
+
+@pytest.mark.parametrize("script", _committed(), ids=lambda p: p.stem)
+def test_every_witness_script_rejects_a_value_the_report_does_not_state(script):
+    """Negative control of every committed script: the stated value changed by one, it exits 1."""
+    text = script.read_text(encoding="utf-8")
+    m = re.search(r'^STATED = (?:sp\.Rational\("([^"]+)"\)|(-?\d+))$', text, re.M)
+    assert m, "no STATED line"
+    wrong = Fraction(m.group(1) or m.group(2)) + 1
+    new = f'STATED = sp.Rational("{wrong}")' if m.group(1) else f"STATED = {wrong}"
+    status, out = run_script(text[:m.start()] + new + text[m.end():])
+    assert status == 1 and "MISMATCH" in out
