@@ -44,9 +44,11 @@ lint: venv
 	$(BIN)/python -m ruff check .
 	$(BIN)/python -m mypy
 
-## bench: timings of the verification methods
+## bench: timings of the verification methods, and Singular's Gröbner reduction of LA1 beside the exact
+## method where Singular is installed (bench/singular.py)
 bench: venv
 	$(BIN)/python bench/bench.py
+	$(BIN)/python bench/singular.py
 
 ## mutate: mutation analysis of the catalog (small corruptions every method must catch); writes reports/mutation.{json,md}
 .PHONY: mutate

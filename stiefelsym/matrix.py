@@ -677,6 +677,10 @@ class Mat:
             raise TypeError("index a matrix with two indices, M[i, j] or M[i0:i1, j0:j1]")
         if self._tracker is not None and watched(self._tags, self._tracker):
             self._tracker.touch("matrix entries")
+        if self._obj is None and all(isinstance(i, (int, np.integer, slice)) for i in idx):
+            got = self._take_native(idx)
+            if got is not NotImplemented:
+                return got
         out = self._view()[idx]
         if isinstance(out, np.ndarray):
             if out.ndim == 1:
@@ -686,6 +690,27 @@ class Mat:
             return Mat._wrap(out.copy(), self._field, tags, self._tracker,
                              self._coords or (self._tracker is None and indexed_by_Rn(self._tags)))
         return out
+
+    def _take_native(self, idx: tuple) -> Any:
+        """``self[idx]`` (integers and slices) read from the native storage, without building the
+        generic representation of the whole matrix; ``NotImplemented`` where the backend has no
+        native form of it.  The same values, shapes and types as the generic path."""
+        be = backend(self._field)
+        if be is None:
+            return NotImplemented
+        m, k = self._shape()
+        rows, cols = np.arange(m)[idx[0]], np.arange(k)[idx[1]]   # numpy's rules (and IndexError)
+        if rows.ndim == 0 and cols.ndim == 0:
+            entry = getattr(be, "entry", None)       # a backend outside the Backend class has neither
+            return NotImplemented if entry is None else entry(self._n, int(rows), int(cols))
+        take = getattr(be, "take", None)
+        sub = NotImplemented if take is None else take(self._n, np.atleast_1d(rows), np.atleast_1d(cols))
+        if sub is NotImplemented:
+            return NotImplemented
+        full = [isinstance(i, slice) and i == slice(None) for i in idx]
+        tags = tuple(t if f else UNTYPED for t, f in zip(self._tags, full))
+        return Mat._wrap_native(sub, self._field, tags, self._tracker,
+                                self._coords or (self._tracker is None and indexed_by_Rn(self._tags)))
 
     def __iter__(self):
         raise TypeError("a matrix is not iterable: read entries as M[i, j]")

@@ -116,6 +116,16 @@ class Backend:
         """Whether a scalar can multiply a native matrix directly."""
         return True
 
+    def take(self, s: Any, rows: np.ndarray, cols: np.ndarray) -> Any:
+        """The sub-matrix of s on these rows and columns (index arrays), in native storage; or
+        ``NotImplemented``, where the backend has no native form of it (the caller then reads the
+        entries through the generic representation)."""
+        return NotImplemented
+
+    def entry(self, s: Any, i: int, j: int) -> Any:
+        """The field element at (i, j) of s; or ``NotImplemented`` (as for :meth:`take`)."""
+        return NotImplemented
+
 
 def _fill(m: int, k: int, x: Any) -> np.ndarray:
     a = np.empty((m, k), dtype=object)

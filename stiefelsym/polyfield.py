@@ -850,6 +850,33 @@ class PolyBackend(Backend):
     def shape(self, s):
         return s.a.shape
 
+    def take(self, s, rows, cols):
+        """A block without converting the rest of the matrix: numerators sliced over the same
+        denominator (then reduced), or the generic entries sliced."""
+        ix = np.ix_(rows, cols)
+        if type(s) is ObjMat:
+            return ObjMat(s.a[ix].copy())
+        if type(s) is RatMat:
+            s = ratmat.fix(self, s)
+            return ratmat.make(self, s.a[ix].copy(), s.d[ix].copy())
+        s = self._fix(s)
+        return self._reduce(s.a[ix].copy(), s.den)
+
+    def entry(self, s, i, j):
+        """One entry, converted alone (the generic representation of the rest is not built)."""
+        if type(s) is ObjMat:
+            return _se(s.a[i, j])
+        if s.o is not None:
+            return s.o[i, j]
+        R = self.ring
+        if type(s) is RatMat:
+            s = ratmat.fix(self, s)
+            x, e = s.a[i, j], s.d[i, j]
+        else:
+            s = self._fix(s)
+            x, e = s.a[i, j], s.den
+        return R.to_se(R.rf_reduce((x, e)) if e else (x, NODEN))
+
     def accepts(self, x):
         return isinstance(x, (se.Basic, int, Fraction))
 

@@ -278,3 +278,54 @@ def test_a_printer_that_loses_a_sign_is_caught(monkeypatch):
         return t.replace("- ", "+ ", 1)
     monkeypatch.setattr(PolyRing, "poly_text", wrong)
     assert _printed_value_errors() > 0
+
+
+INDEXES = [(0, 0), (2, 1), (-1, -2), (slice(None), 1), (1, slice(None)), (slice(0, 2), slice(1, 3)),
+           (slice(None), slice(None)), (slice(1, None), 0), (slice(2, 2), slice(None))]
+
+
+@pytest.mark.parametrize("kind", ["poly", "rat", "obj"])
+def test_entries_and_blocks_read_natively_agree_with_the_generic_read(kind):
+    """M[i, j] and M[block] straight from flint's storage (no conversion of the rest of the matrix)
+    give the values, shapes and types of the read through the symengine entries; a wrong index
+    raises as numpy does; a corrupted native read is caught."""
+    F = SymbolicField()
+    syms = [F.param(f"x{i}") for i in range(5)]
+    K, _, _ = ops(F, syms, random.Random(3))
+    if kind == "rat":
+        K = K / syms[2] + K.T       # entries over different denominators
+    elif kind == "obj":
+        K = Mat._rows([[se.sqrt(syms[0]), syms[1], 3], [1, syms[2], 0], [syms[3], 2, se.sqrt(syms[1])]], F)
+    want_type = {"poly": PolyMat, "obj": ObjMat}.get(kind)
+    if want_type is not None:
+        assert isinstance(K._nat(), want_type)
+    for idx in INDEXES:
+        fresh = K * 1                                   # a matrix with native storage only
+        assert fresh._obj is None
+        got = fresh[idx]
+        assert fresh._obj is None, "the native read converted the whole matrix"
+        ref = (K * 1)
+        ref._view()
+        want = ref[idx]
+        if isinstance(want, Mat):
+            assert isinstance(got, Mat) and got._shape() == want._shape() and got._tags == want._tags
+            assert all(same(x, y) for r1, r2 in zip(entries(got), entries(want)) for x, y in zip(r1, r2))
+            assert (got - want).is_zero()
+        else:
+            assert not isinstance(got, Mat) and same(got, want)
+    with pytest.raises(IndexError):
+        (K * 1)[7, 0]
+
+
+def test_a_native_read_that_returns_the_wrong_entry_is_caught(monkeypatch):
+    F = SymbolicField()
+    syms = [F.param(f"x{i}") for i in range(5)]
+    K, _, _ = ops(F, syms, random.Random(3))
+    ref = K * 1
+    ref._view()
+    monkeypatch.setattr(PolyBackend, "entry", lambda self, s, i, j: PolyBackend._entry_original(self, s, j, i))
+    monkeypatch.setattr(PolyBackend, "_entry_original", native_entry, raising=False)
+    assert not same((K * 1)[0, 1], ref[0, 1])
+
+
+native_entry = PolyBackend.entry
