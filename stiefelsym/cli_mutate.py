@@ -92,8 +92,10 @@ def _git_commit() -> str | None:
 
 def _command(ids: Sequence[str], sizes: Sequence[str], methods: Sequence[str], seed: int,
              claims_file: str | None, report_dir: Path | None, limit: int | None,
-             only: Sequence[int]) -> str:
+             only: Sequence[int], fresh: bool = False) -> str:
     parts = ["stiefelsym", "mutate", *ids]
+    if fresh:
+        parts.append("--fresh-points")
     for s in sizes:
         parts += ["--size", s.replace(" ", "")]
     for m in methods:
@@ -130,6 +132,10 @@ def _command(ids: Sequence[str], sizes: Sequence[str], methods: Sequence[str], s
               help="Only the mutant with this index (as in 'CLAIM#K'); repeatable; needs one CLAIM.")
 @click.option("--jobs", type=click.IntRange(min=0), default=0, show_default=True, metavar="J",
               help="Worker processes (0: one per CPU).  The results do not depend on it.")
+@click.option("--fresh-points", is_flag=True,
+              help="Every mutant at points of its own, as a verify run of it would be.  By default the point "
+                   "methods evaluate a mutant at the points of the claim as printed and recompute only what the "
+                   "change reaches (several times faster; the classification is the same).")
 @click.option("--corrections", is_flag=True,
               help="Errata search instead of the mutation analysis: for each named CLAIM, the candidates of the "
                    "declared search space (every operator, in the claim and its helper functions, two signs at "
@@ -137,7 +143,7 @@ def _command(ids: Sequence[str], sizes: Sequence[str], methods: Sequence[str], s
                    "(default methods: rational, modular; default sizes: the claim's sizes with n <= 4).")
 def mutate(ids: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str, ...], seed: int,
            claims_file: str | None, report_dir: Path | None, fmt: str, limit: int | None,
-           only: tuple[int, ...], jobs: int, corrections: bool) -> None:
+           only: tuple[int, ...], jobs: int, fresh_points: bool, corrections: bool) -> None:
     """Corrupt every claim in small ways and check that every method notices.
 
     Each mutant (one sign flipped, operands of @ or comm swapped, a factor
@@ -200,7 +206,7 @@ def mutate(ids: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str, ...
     try:
         report = engine.run_mutation(claims, sizes=parsed_sizes or None, methods=methods, seed=seed,
                                      on_result=on_result, limit=limit, only=only or None,
-                                     jobs=jobs or os.cpu_count() or 1)
+                                     jobs=jobs or os.cpu_count() or 1, lend=not fresh_points)
     except KeyboardInterrupt:
         click.echo("stiefelsym mutate: interrupted; no report written", err=True)
         raise click.exceptions.Exit(EXIT_INTERRUPTED) from None
@@ -208,7 +214,7 @@ def mutate(ids: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str, ...
         raise MutateInputError(str(exc)) from None
     report.meta = {
         "command": _command(ids, sizes, methods if tuple(methods) != engine.METHODS else (), seed,
-                            claims_file, report_dir, limit, only),
+                            claims_file, report_dir, limit, only, fresh_points),
         "seed": seed, "methods": list(methods), "sizes": [f"{s.n},{s.r}" for s in parsed_sizes] or None,
         "limit": limit, "claims_file": claims_file,
         "operators": [{"name": name, "description": text} for name, text, _ in engine.OPERATORS],

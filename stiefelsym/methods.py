@@ -814,6 +814,63 @@ def _rank_minor_bound(R: Rank, field: DegreeField, marker: Callable) -> tuple[in
 # randomized exact methods
 
 POINTS_TARGET = 1e-30     # `checked` needs a false-pass probability at most this
+class PointLoan:
+    """The points of a claim as printed, lent to its mutants (the mutation analysis only).
+
+    While :attr:`recording`, every scene a point method builds (the baseline's) is kept, keyed by
+    everything that chose it: the claim, the method, the size, the seed, the point's number, the
+    attempt and the prime.  Afterwards a run that asks for the same point gets a copy of that scene
+    in the state the baseline left it (its parameters, its built objects), with the node values of
+    the baseline's graph keyed by the structure of their subgraphs (:func:`.ir.evaluate.node_keys`):
+    a mutant's graph recomputes only the nodes its change reaches.  Parameters the baseline did not
+    draw come from a copy of its generator: the point is as random as a fresh one, and the same
+    whatever other mutants ran before (each copy starts from the same snapshot).  Hard cases and
+    the exact method never borrow."""
+
+    def __init__(self) -> None:
+        self.recording = False
+        self._points: dict[tuple, tuple] = {}
+
+    def scene(self, key: tuple, build: Callable[[], tuple]) -> tuple:
+        """``build()``'s (fields..., scene) for this key: built and kept while recording, lent (a copy
+        of the kept scene's state when its run was over) otherwise."""
+        hit = self._points.get(key)
+        if hit is not None and not self.recording:
+            if hit[-1] is None:
+                # the first loan: the state in which the baseline's run left the scene, taken once
+                # (later runs may reach the kept scene through the objects it built)
+                hit[-1] = hit[-3]._lent()
+            lent = hit[-1]._lent()
+            lent._node_memo = dict(hit[-2])
+            return (*hit[:-3], lent)
+        out = build()
+        if self.recording:
+            memo: dict = {}
+            out[-1]._node_memo = memo
+            self._points[key] = [*out, memo, None]
+        return out
+
+
+_LOAN: PointLoan | None = None
+
+
+class lending_points:
+    """A context in which the point methods borrow the points of :class:`PointLoan` (mutation
+    analysis)."""
+
+    def __init__(self, loan: PointLoan) -> None:
+        self.loan = loan
+
+    def __enter__(self) -> PointLoan:
+        global _LOAN
+        self._old, _LOAN = _LOAN, self.loan
+        return self.loan
+
+    def __exit__(self, *exc: Any) -> None:
+        global _LOAN
+        _LOAN = self._old
+
+
 POINTS_MIN = 2            # points per component, at least
 POINTS_CAP = 24           # points per component, at most
 RATIONAL_BOUND = 2**62    # rational points: integers uniform in [-B, B] (fewest points for the target)
@@ -964,10 +1021,16 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
         prime_attempt = 0
         value_field = rational if kind == "rational" else _prime_field(claim, n, r, seed, t, prime_attempt)
         for attempt in range(MAX_RESAMPLE):
-            rng = random.Random(f"{seed}|{claim.id}|{n}|{r}|{kind}|{t}|{attempt}")
-            field = value_field if hard else PairField(value_field)
-            scene = Scene(n, r, field, chart="cayley", rng=rng, component=comp, realization=claim.realization,
-                          options=options)
+            def build(value_field=value_field, attempt=attempt) -> tuple:
+                rng = random.Random(f"{seed}|{claim.id}|{n}|{r}|{kind}|{t}|{attempt}")
+                field = value_field if hard else PairField(value_field)
+                return value_field, field, Scene(n, r, field, chart="cayley", rng=rng, component=comp,
+                                                 realization=claim.realization, options=options)
+            if _LOAN is not None and not options:
+                value_field, field, scene = _LOAN.scene(
+                    (claim.id, claim.realization, kind, n, r, seed, t, attempt, prime_attempt, comp), build)
+            else:
+                value_field, field, scene = build()
             try:
                 checks = call_claim(func, scene)
                 point_deg = deg if hard else _paired_bound(checks, field)
@@ -1229,13 +1292,18 @@ def _float_component(claim: Claim, n: int, r: int, seed: int, func: Callable, op
             run.log.append(f"float64 skipped: the constant {wide[0]} is outside its range "
                            f"(2^-{FLOAT_EXPONENT_LIMIT}, 2^{FLOAT_EXPONENT_LIMIT})")
             continue
-        field = FloatField(dps)
-        rng = random.Random(f"{seed}|{claim.id}|{n}|{r}|float" + (f"|component {comp}" if comp else ""))
+        def build(dps=dps) -> tuple:
+            field = FloatField(dps)
+            rng = random.Random(f"{seed}|{claim.id}|{n}|{r}|float" + (f"|component {comp}" if comp else ""))
+            return field, Scene(n, r, field, chart="cayley", rng=rng, component=comp,
+                                realization=claim.realization, options=options)
+        if _LOAN is not None and not options and dps is None:
+            field, scene = _LOAN.scene((claim.id, claim.realization, "float", n, r, seed, comp), build)
+        else:
+            field, scene = build()        # (a scene builds its objects when they are first asked for)
         ctx = mpmath.workdps(dps) if dps else np.errstate(over="ignore", invalid="ignore")
         try:
             with ctx:
-                scene = Scene(n, r, field, chart="cayley", rng=rng, component=comp, realization=claim.realization,
-                              options=options)
                 checks = call_claim(func, scene)
                 entries, ranks, counts = [], [], []
                 for name, value in checks.items():
@@ -1625,8 +1693,11 @@ def _run_ball(claim: Claim, n: int, r: int, seed: int, func: Callable, options: 
 def run_exact_isolated(claim: Claim, n: int, r: int, seed: int, func: Callable | None = None,
                        time_budget: float = EXACT_TIME_LIMIT) -> Result:
     """run_exact in a child process that is killed when it exceeds its budget (no hang, ever).
-    Sizes n <= 3 stay in-process: their symbolic work is small and the fork would dominate."""
-    if n <= 3:
+    Sizes n <= 3 stay in-process: their symbolic work is small and the fork would dominate; so does
+    n = 4 in the mutation analysis (:class:`PointLoan`), whose thousands of small runs at n <= 4
+    would spend more time forking than computing.  In-process, the budget is the deadline of
+    :func:`time_limit`."""
+    if n <= (4 if _LOAN is not None else 3):
         return run_exact(claim, n, r, seed, func, time_budget)
     from .isolate import HardTimeout, run_isolated
     import sympy.polys.matrices  # noqa: F401 (imported once here, not in every child)

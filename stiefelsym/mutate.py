@@ -45,6 +45,7 @@ whose left sides vanish as well (0 = 0), is no correction and is left out.
 from __future__ import annotations
 
 import ast
+import contextlib
 import copy
 import inspect
 import json
@@ -1084,14 +1085,24 @@ def run_mutation(claims: Sequence[Claim], sizes: Sequence[Size] | None = None,
                  methods: Sequence[str] = METHODS, seed: int = 0,
                  on_result: Callable[[MutantOutcome], None] | None = None, *,
                  limit: int | None = None, only: Iterable[int] | None = None,
-                 jobs: int = 1) -> MutationReport:
+                 jobs: int = 1, lend: bool = True) -> MutationReport:
     """Run every mutant of every claim with every method; classify each mutant.
 
     ``sizes``: the fixed sizes (default: :func:`mutation_sizes` of each claim; given sizes
     are filtered by what each claim admits and expects to hold).  ``limit``: at most that many
     mutants per claim, evenly spread over the source; ``only``: these mutant indices.
     ``on_result`` is called with the baseline and then with each mutant, in order.
-    ``jobs`` > 1 runs mutants in that many forked worker processes."""
+    ``jobs`` > 1 runs mutants in that many forked worker processes.  ``lend``: the point methods
+    evaluate each mutant at the points of the claim as printed, recomputing only the nodes of its
+    graph that the change reaches (:class:`stiefelsym.methods.PointLoan`); False: every mutant on
+    points of its own, as a verify run of it would be (slower)."""
+    from .methods import PointLoan, lending_points
+    loan = PointLoan()
+    with lending_points(loan) if lend else contextlib.nullcontext():
+        return _run_mutation(claims, sizes, methods, seed, on_result, limit, only, jobs, loan)
+
+
+def _run_mutation(claims, sizes, methods, seed, on_result, limit, only, jobs, loan) -> MutationReport:
     methods = list(dict.fromkeys(methods))
     for m in methods:
         if m not in METHODS:
@@ -1125,8 +1136,12 @@ def run_mutation(claims: Sequence[Claim], sizes: Sequence[Size] | None = None,
         if cm.skipped:
             continue
         t0 = time.perf_counter()
-        cm.baseline = MutantOutcome(claim.id, None, "the claim as printed", None, "", "",
-                                    _run_cells(claim, plan, seed, None, None), "baseline")
+        loan.recording = True          # the baseline's points are kept for its mutants
+        try:
+            cm.baseline = MutantOutcome(claim.id, None, "the claim as printed", None, "", "",
+                                        _run_cells(claim, plan, seed, None, None), "baseline")
+        finally:
+            loan.recording = False
         cm.seconds += time.perf_counter() - t0
         if on_result is not None:
             on_result(cm.baseline)
@@ -1215,12 +1230,23 @@ def search_corrections(claim: Claim, sizes: Sequence[Size] | None = None,
     found: list[Mutant] = []
     pool = list(correction_candidates(claim) if candidates is None else candidates)
     pool.sort(key=lambda m: m.operator == "sign2")   # one-step candidates first (stable)
-    for m in pool:
-        if minimal and m.operator == "sign2" and any(f.operator != "sign2" for f in found):
-            break
-        ok = bool(plan) and all(passes(m, s, meth) for s, meth in plan) and not vacuous(m)
-        if ok:
-            found.append(m)
-        if on_candidate is not None:
-            on_candidate(m, ok)
+    from .methods import PointLoan, lending_points
+    loan = PointLoan()
+    with lending_points(loan):
+        # the printed formula's points, lent to every candidate (which recomputes only what it changed)
+        loan.recording = True
+        try:
+            for s, meth in plan:
+                if meth != "free":
+                    run_one(claim, s, meth, seed)
+        finally:
+            loan.recording = False
+        for m in pool:
+            if minimal and m.operator == "sign2" and any(f.operator != "sign2" for f in found):
+                break
+            ok = bool(plan) and all(passes(m, s, meth) for s, meth in plan) and not vacuous(m)
+            if ok:
+                found.append(m)
+            if on_candidate is not None:
+                on_candidate(m, ok)
     return found

@@ -1249,7 +1249,10 @@ MUTATION_EXPLANATION = (
     "equivalent: a true statement at the sizes run.  A method survives a mutant when it passes it at a size where "
     "another method refutes it; the dimension-free method survives a mutant when it proves one that "
     "is not equivalent.  Survivors are soundness or sensitivity problems.  Kill rate = killed / "
-    "(mutants - equivalent).")
+    "(mutants - equivalent).  Unless the command says --fresh-points, the point methods (rational, "
+    "modular, float) evaluate a mutant at the random points of the claim as printed and recompute "
+    "only the nodes of its graph that the change reaches (parameters the printed claim never drew "
+    "are drawn afresh); the verdicts are those of fresh points, which the tests check.")
 MUTATION_COLUMNS = ("mutants", "killed", "fails", "error", "other", "survived", "equivalent",
                     "unresolved", "missed", "kill rate")
 

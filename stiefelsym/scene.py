@@ -153,6 +153,23 @@ class PaperObjects:
         """The SO(r) momentum map Psi = X^T P - P^T X."""
         return self._cached("Psi", lambda: self.X.T @ self.P - self.P.T @ self.X)
 
+    def _lent(self) -> "Scene":
+        """A copy of this scene in its present state (engine only: the mutation analysis lends the
+        point of a claim as printed to its mutants).  The parameters drawn so far and the objects
+        built from them are shared; parameters drawn later come from a copy of the generator, so
+        nothing done with the copy changes this scene."""
+        s = object.__new__(type(self))
+        s.__dict__.update(self.__dict__)
+        s._params, s._param_blocks, s._cache = dict(self._params), list(self._param_blocks), dict(self._cache)
+        s._options = dict(self._options)
+        if self._rng is not None:
+            s._rng = random.Random()
+            s._rng.setstate(self._rng.getstate())
+        t = self._tracker
+        s._tracker = CoordinateTracker(t.dims)
+        s._tracker._used, s._tracker._refused, s._tracker._spaces = list(t._used), list(t._refused), t._spaces
+        return s
+
     def killing(self, a: Mat, b: Mat) -> Scalar:
         """<a, b> = -1/2 tr(ab)."""
         x = self._field.normalize((a @ b)._trace() * self._field.const(Fraction(-1, 2)))

@@ -45,11 +45,11 @@ def compile_claim(func: Callable, n: int | None, r: int | None, constraints: tup
                                        "tells symbolic sizes from numbers, so no verdict rests on it")
         return free
     if n is None:
-        raise free
+        raise _fresh(free)
     g = _compile(func, n, r, constraints)
     if isinstance(g, Graph):
         return g
-    raise g
+    raise _fresh(g)
 
 
 def compile_at_size(func: Callable, n: int, r: int, constraints: tuple[str, Callable]) -> Graph:
@@ -57,7 +57,7 @@ def compile_at_size(func: Callable, n: int, r: int, constraints: tuple[str, Call
     g = _compile(func, n, r, constraints)
     if isinstance(g, Graph):
         return g
-    raise g
+    raise _fresh(g)
 
 
 def _compile(func: Callable, n: int | None, r: int | None, constraints: tuple[str, Callable],
@@ -79,6 +79,7 @@ def _compile(func: Callable, n: int | None, r: int | None, constraints: tuple[st
                                    "different graphs")
         out: Any = first
     except Exception as exc:      # noqa: BLE001 - the claim's own failure, reported by the caller
+        exc._first_traceback = exc.__traceback__      # type: ignore[attr-defined]
         out = exc
     _GRAPHS[key] = (func, out)
     while len(_GRAPHS) > GRAPH_CACHE_SIZE:
@@ -103,6 +104,12 @@ def _clean(f: Callable, *args: Any) -> Any:
     if not ok:
         raise value
     return value
+
+
+def _fresh(exc: BaseException) -> BaseException:
+    """A cached refusal, raised again with the traceback of its first raise (where in the claim it
+    was refused), not with those of its earlier raises: each raise of one object appends to it."""
+    return exc.with_traceback(getattr(exc, "_first_traceback", None))
 
 
 def _check_refusals(g: Graph) -> None:

@@ -9,12 +9,13 @@ No claim code runs here.
 """
 from __future__ import annotations
 
+import hashlib
 import operator
 from fractions import Fraction
 from typing import Any, Callable
 
 from ..matrix import block as _block
-from .graph import Graph, Named, Ref, Size
+from .graph import Graph, Named, Ref, Size, _encode
 from .statements import Count, Rank
 from .trace import API, PRIMITIVES, VALUE_ATTRS
 
@@ -71,8 +72,24 @@ class Evaluator:
         if self.g.output is None:
             raise GraphError("the graph has no output")
         memo = self.root.memo
+        shared = getattr(self.root.bind[0], "_node_memo", None)
+        if shared is None:
+            for i, kernel in _program(self.g, self.deps):
+                memo[i] = kernel(memo, self)
+            return memo[self.g.output.i]
+        # values shared with other graphs evaluated on this very point, by the structure of the
+        # node's whole subgraph (the mutation analysis: a mutant recomputes only what it changed)
+        keys = node_keys(self.g)
+        ops = self.g.ops
         for i, kernel in _program(self.g, self.deps):
-            memo[i] = kernel(memo, self)
+            if ops[i] in UNSHARED:
+                memo[i] = kernel(memo, self)
+                continue
+            k = keys[i]
+            v = shared.get(k, _MISSING)
+            if v is _MISSING:
+                v = shared[k] = kernel(memo, self)
+            memo[i] = v
         return memo[self.g.output.i]
 
     # -- values -----------------------------------------------------------------------------------
@@ -196,6 +213,33 @@ class Evaluator:
             return self.arg(body, _Frame(k, bind, frame))
         fn.__name__ = f"traced_function_{k}"
         return fn
+
+
+#: ops whose values are never shared between graphs: the scene itself and a function's parameters
+#: (bound per evaluation), containers (cheap to rebuild, and mutable), traced functions (closures
+#: over their own evaluation) and the rank and count statements
+UNSHARED = frozenset({"list", "tuple", "dict", "kw", "fn", "rank", "count", "scene", "param"})
+
+
+def node_keys(g: Graph) -> list[bytes]:
+    """For every node, a digest of its whole subgraph (its op, its literal arguments and, in place of
+    every reference, the digest of the node referred to): equal keys in two graphs name the same
+    computation, whatever the nodes' numbers."""
+    keys = g.cache.get("node_keys")
+    if keys is None:
+        keys = []
+
+        def enc(a: Any) -> str:
+            t = type(a)
+            if t is Ref:
+                return "%" + keys[a.i].hex()
+            if t is tuple:
+                return "(" + ",".join(enc(x) for x in a) + ")"
+            return _encode(a)
+        for op, a in zip(g.ops, g.args):
+            keys.append(hashlib.blake2b((op + enc(a)).encode(), digest_size=20).digest())
+        g.cache["node_keys"] = keys
+    return keys
 
 
 def _power(x: Any, k: int) -> Any:

@@ -1,0 +1,73 @@
+"""The mutation analysis evaluates a mutant at the points of the claim as printed and recomputes only
+the nodes its change reaches (stiefelsym.methods.PointLoan): the same verdicts as fresh points, in
+any order and any number of workers; a key that forgets part of a node is caught."""
+from __future__ import annotations
+
+import random
+
+import pytest
+
+from stiefelsym.claims import load_catalog
+from stiefelsym.fields import RationalField
+from stiefelsym.ir import evaluate as ev
+from stiefelsym.mutate import run_mutation
+from stiefelsym.paired import PairField
+from stiefelsym.scene import Scene
+
+#: claims with flows, brackets, resolvents and an operator letter, a few mutants each
+CLAIMS = ("neumann-lax", "euclidean-flow", "submersion-flow", "magnetic-normal-flow")
+
+
+def outcomes(report):
+    return {(c.claim, o.index): (o.classification, sorted(o.killed_by.items()), o.survived,
+                                 [(x.n, x.r, x.method, x.verdict) for x in o.cells])
+            for c in report.claims for o in c.mutants}
+
+
+@pytest.fixture(scope="module")
+def claims():
+    reg = load_catalog()
+    return [reg.get(c) for c in CLAIMS]
+
+
+@pytest.fixture(scope="module")
+def fresh(claims):
+    return outcomes(run_mutation(claims, methods=("rational", "modular", "float"), limit=6, lend=False))
+
+
+def test_lent_points_give_the_verdicts_of_fresh_points(claims, fresh):
+    """The same verdict in every cell.  (A witness may differ: parameters the printed claim never
+    drew are drawn in the mutant's own order, so its point is another random point.)"""
+    lent = outcomes(run_mutation(claims, methods=("rational", "modular", "float"), limit=6))
+    assert len(lent) >= 20
+    assert lent == fresh
+
+
+def test_the_workers_and_their_order_do_not_matter(claims, fresh):
+    lent = outcomes(run_mutation(claims, methods=("rational", "modular", "float"), limit=6, jobs=2))
+    assert lent == fresh
+
+
+def test_a_node_key_that_forgets_a_literal_is_caught(claims, fresh, monkeypatch):
+    """Negative control: keys that drop the nodes' literal arguments (a coefficient, an attribute's
+    name) let a mutant read the printed claim's values, and its verdicts change."""
+    real = ev.node_keys
+
+    def careless(g):
+        keys = real(g)
+        return [k if op in ("scene",) else op.encode() for k, op in zip(keys, g.ops)]
+    monkeypatch.setattr(ev, "node_keys", careless)
+    assert outcomes(run_mutation(claims, methods=("rational", "modular", "float"), limit=6)) != fresh
+
+
+def test_a_lent_scene_draws_its_own_parameters_and_leaves_the_original_alone():
+    s = Scene(4, 2, PairField(RationalField(2**20)), rng=random.Random(5))
+    X = s.X
+    copy = s._lent()
+    assert copy.X is X                         # what was drawn is shared
+    a_copy = copy.A                            # drawn after the loan, on the copy's own generator
+    assert "A" not in s._cache and not any(k.startswith("a") for k in s._params if k not in copy._params)
+    a_orig = s.A                               # the original draws the same values from its own
+    assert (a_orig - a_copy).is_zero()
+    copy.tracker.touch("matrix entries")
+    assert "matrix entries" not in s.tracker.used
