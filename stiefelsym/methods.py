@@ -15,6 +15,7 @@ and a check without entries is an error under every method.
 """
 from __future__ import annotations
 
+import copy
 import math
 import random
 import weakref
@@ -837,10 +838,13 @@ class PointLoan:
         hit = self._points.get(key)
         if hit is not None and not self.recording:
             if hit[-1] is None:
-                # the first loan: the state in which the baseline's run left the scene, taken once
-                # (later runs may reach the kept scene through the objects it built)
-                hit[-1] = hit[-3]._lent()
-            lent = hit[-1]._lent()
+                # the first loan: the state in which the baseline's run left the scene and its
+                # fields, taken once (later runs may reach the kept scene through its objects)
+                hit[-1] = (hit[-3]._lent(), [(f, _field_state(f)) for f in hit[:-3]])
+            snapshot, states = hit[-1]
+            for f, state in states:
+                _restore_field(f, state)      # what the fields counted so far: the baseline's only
+            lent = snapshot._lent()
             lent._node_memo = dict(hit[-2])
             return (*hit[:-3], lent)
         out = build()
@@ -849,6 +853,18 @@ class PointLoan:
             out[-1]._node_memo = memo
             self._points[key] = [*out, memo, None]
         return out
+
+
+def _field_state(f: Any) -> dict | None:
+    """The mutable record of a field (a paired field's degree markers: the denominators and constants
+    met), copied; None for a field that keeps none."""
+    degrees = getattr(f, "degrees", None)
+    return copy.deepcopy(degrees.__dict__) if degrees is not None else None
+
+
+def _restore_field(f: Any, state: dict | None) -> None:
+    if state is not None:
+        f.degrees.__dict__.update(copy.deepcopy(state))
 
 
 _LOAN: PointLoan | None = None
@@ -1051,7 +1067,10 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
             res.message = f"every one of {MAX_RESAMPLE} sampled points was degenerate (a pole or singular system)"
             res.seconds = time.perf_counter() - t0
             return res
-        if t == 0 and not scene._has_params():
+        # no parameter entered the checks (on a lent point, whose parameters the printed claim drew,
+        # the markers of the checks say it: all of degree 0)
+        if t == 0 and (point_deg.numerator == 0 if getattr(scene, "_loaned", False) and not hard
+                       else not scene._has_params()):
             return _run_constant(claim, n, r, seed, func, options, res, t0)
         if not hard:
             point_degs.append(point_deg)

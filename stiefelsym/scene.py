@@ -168,6 +168,7 @@ class PaperObjects:
         t = self._tracker
         s._tracker = CoordinateTracker(t.dims)
         s._tracker._used, s._tracker._refused, s._tracker._spaces = list(t._used), list(t._refused), t._spaces
+        s._loaned = True
         return s
 
     def killing(self, a: Mat, b: Mat) -> Scalar:

@@ -43,9 +43,19 @@ def test_lent_points_give_the_verdicts_of_fresh_points(claims, fresh):
     assert lent == fresh
 
 
+def messages(report):
+    return {(c.claim, o.index, x.n, x.r, x.method): x.message for c in report.claims for o in c.mutants
+            for x in o.cells}
+
+
 def test_the_workers_and_their_order_do_not_matter(claims, fresh):
-    lent = outcomes(run_mutation(claims, methods=("rational", "modular", "float"), limit=6, jobs=2))
-    assert lent == fresh
+    """Verdicts, witnesses and bounds alike: every loan starts from the same snapshot of the point and
+    of the fields' records (the denominators and constants the degree markers met)."""
+    one = run_mutation(claims, methods=("rational", "modular", "float"), limit=6)
+    two = run_mutation(claims, methods=("rational", "modular", "float"), limit=6, jobs=2)
+    backwards = run_mutation(list(reversed(claims)), methods=("rational", "modular", "float"), limit=6)
+    assert outcomes(two) == fresh
+    assert messages(one) == messages(two) == messages(backwards)
 
 
 def test_a_node_key_that_forgets_a_literal_is_caught(claims, fresh, monkeypatch):
@@ -71,3 +81,29 @@ def test_a_lent_scene_draws_its_own_parameters_and_leaves_the_original_alone():
     assert (a_orig - a_copy).is_zero()
     copy.tracker.touch("matrix entries")
     assert "matrix entries" not in s.tracker.used
+
+
+@pytest.mark.parametrize("restore", [True, False])
+def test_every_loan_starts_from_the_baselines_record_of_denominators(monkeypatch, restore):
+    """What a mutant's degree markers meet (a new denominator, a new constant) is not seen by the next
+    mutant; the negative control (no restore) shows that it would be."""
+    from stiefelsym import methods
+    if not restore:
+        monkeypatch.setattr(methods, "_restore_field", lambda f, state: None)
+    loan = methods.PointLoan()
+
+    def build():
+        f = PairField(RationalField(2**20))
+        return f, Scene(3, 1, f, rng=random.Random(1))
+    loan.recording = True
+    f, s = loan.scene(("k",), build)
+    s.X                                             # the baseline draws its point
+    loan.recording = False
+    f1, s1 = loan.scene(("k",), build)
+    before = dict(f1.degrees.factor_degree)
+    f1.degrees.new_factor(3)                        # a mutant meets a denominator the baseline did not
+    f1.degrees.const(7919)
+    f2, s2 = loan.scene(("k",), build)
+    assert f2 is f1 is f and s2 is not s1
+    assert (f2.degrees.factor_degree == before) == restore
+    assert (7919 not in f2.degrees.constants) == restore
