@@ -828,9 +828,11 @@ class PointLoan:
     whatever other mutants ran before (each copy starts from the same snapshot).  Hard cases and
     the exact method never borrow."""
 
-    def __init__(self) -> None:
+    def __init__(self, exact_seconds: float | None = None) -> None:
         self.recording = False
-        self._points: dict[tuple, tuple] = {}
+        self._points: dict[tuple, list] = {}
+        #: the symbolic method's time budget per run while lending (None: its own, EXACT_TIME_LIMIT)
+        self.exact_seconds = exact_seconds
 
     def scene(self, key: tuple, build: Callable[[], tuple]) -> tuple:
         """``build()``'s (fields..., scene) for this key: built and kept while recording, lent (a copy
@@ -1716,6 +1718,8 @@ def run_exact_isolated(claim: Claim, n: int, r: int, seed: int, func: Callable |
     n = 4 in the mutation analysis (:class:`PointLoan`), whose thousands of small runs at n <= 4
     would spend more time forking than computing.  In-process, the budget is the deadline of
     :func:`time_limit`."""
+    if _LOAN is not None and _LOAN.exact_seconds is not None:
+        time_budget = min(time_budget, _LOAN.exact_seconds)
     if n <= (4 if _LOAN is not None else 3):
         return run_exact(claim, n, r, seed, func, time_budget)
     from .isolate import HardTimeout, run_isolated

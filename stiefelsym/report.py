@@ -1252,7 +1252,8 @@ MUTATION_EXPLANATION = (
     "(mutants - equivalent).  Unless the command says --fresh-points, the point methods (rational, "
     "modular, float) evaluate a mutant at the random points of the claim as printed and recompute "
     "only the nodes of its graph that the change reaches (parameters the printed claim never drew "
-    "are drawn afresh); the verdicts are those of fresh points, which the tests check.")
+    "are drawn afresh), and the symbolic method has 30 s per run of a mutant; the verdicts are those of "
+    "fresh points, which the tests check.")
 MUTATION_COLUMNS = ("mutants", "killed", "fails", "error", "other", "survived", "equivalent",
                     "unresolved", "missed", "kill rate")
 
