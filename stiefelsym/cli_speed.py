@@ -177,7 +177,7 @@ def _cost_model(report_dir: Path, quick: bool, seed: int, registry: Any, say: An
         cap = cap or (2.0 if quick else costfit.SCALE_CAP)
         say(f"measuring time and peak memory against n (cost model, {cap:g} s per run) ...")
         records = costfit.measure_scale(ns=(4, 6) if quick else costfit.SCALE_NS, cap=cap, seed=seed,
-                                        registry=registry,
+                                        registry=registry, repeat=1 if quick else costfit.REPEAT,
                                         on_point=lambda r: say(f"  {r['family']:>10} {r['method']:>8} ({r['n']},{r['r']}) "
                                                                f"{r['verdict']} {r['seconds']:.3f}s"))
         note = (f"measured by stiefelsym speed on {platform.platform(terse=True)}, Python "
