@@ -13,7 +13,8 @@ and O(n r^2) products of n x r blocks, O(n^2) entries of n x n matrices (memory 
 per-entry work of the bound and of the exact confirmations) and O(n^2 r), O(n^3) products of
 n x n matrices; the symbolic methods get monomials up to degree 8.  The coefficients minimize
 the relative error sum ((t_fit - t) / t)^2 (nonnegative least squares), so a run of 5 ms and
-one of 15 s weigh the same.  Peak memory (bytes above the worker's own) is fitted the same way
+one of 15 s weigh the same, then are reweighted (Lawson) towards the least worst ratio
+max |log(t_fit / t)|.  Peak memory (bytes above the worker's own) is fitted the same way
 with the terms 1, n r, n^2.
 
 The fitted coefficients and the measurements are stored in ``costmodel.json`` next to this
@@ -83,6 +84,9 @@ _FALLBACK = {"exact": (math.log(1e-3), 6.0), "rational": (math.log(1e-3), 4.5),
 
 #: the extra power of n/n_measured of an exact prediction beyond the measured sizes
 EXACT_EXTRAPOLATION_EXTRA = 2.0
+
+#: rounds of Lawson's reweighting of a fit towards the least worst ratio (see :func:`fit_terms`)
+MINIMAX_ROUNDS = 30
 
 Poly = tuple[tuple[tuple[int, int], ...], tuple[float, ...]]
 
@@ -423,10 +427,14 @@ def fit(points: Sequence[tuple[int, float]]) -> tuple[float, float] | None:
     return a, b
 
 
-def fit_terms(points: Sequence[tuple[int, int, float]], terms: Sequence[tuple[int, int]]) -> list[float]:
-    """Nonnegative c_k minimizing sum ((sum_k c_k n^i_k r^j_k - y) / y)^2 over the points (n, r, y):
-    the relative error, so that small and large values weigh the same (nonnegative least squares,
-    each column scaled to its largest entry)."""
+def fit_terms(points: Sequence[tuple[int, int, float]], terms: Sequence[tuple[int, int]],
+              rounds: int = MINIMAX_ROUNDS) -> list[float]:
+    """Nonnegative c_k making sum_k c_k n^i_k r^j_k close to y at every point (n, r, y) in ratio.
+
+    First the least relative error, sum ((fit - y) / y)^2 (nonnegative least squares, each column
+    scaled to its largest entry), so that small and large values weigh the same; then Lawson's
+    reweighting towards the least worst ratio: each round weighs every point by its share of
+    |log(fit / y)|, and the coefficients with the smallest max |log(fit / y)| are kept."""
     import numpy as np
     from scipy.optimize import nnls
     pts = [(n, r, y) for n, r, y in points if y and y > 0]
@@ -435,8 +443,27 @@ def fit_terms(points: Sequence[tuple[int, int, float]], terms: Sequence[tuple[in
     A = np.array([[float(n) ** i * float(r) ** j / y for i, j in terms] for n, r, y in pts])
     scale = A.max(axis=0)
     scale[scale == 0] = 1.0
-    c, _ = nnls(A / scale, np.ones(len(pts)), maxiter=50 * len(terms))
-    return [float(x) for x in c / scale]
+    A = A / scale
+    w = np.ones(len(pts))
+    best, best_err = None, math.inf
+    for _ in range(rounds + 1):
+        sq = np.sqrt(w)
+        c, _ = nnls(A * sq[:, None], sq, maxiter=50 * len(terms))
+        fitted = A @ c
+        if not np.all(fitted > 0):
+            break
+        err = np.abs(np.log(fitted))
+        worst = float(err.max())
+        if worst < best_err - 1e-12:
+            best, best_err = c, worst
+        if worst == 0.0:
+            break
+        w = w * err
+        w = w / w.sum()
+        w = np.maximum(w, 1e-12)
+    if best is None:
+        best = c
+    return [float(x) for x in best / scale]
 
 
 def _fit_doc(points: list[tuple[int, int, float]], terms: Sequence[tuple[int, int]]) -> dict[str, Any]:
