@@ -510,9 +510,10 @@ P_LEGEND = ("p<=: the Schwartz-Zippel bound of a randomized exact check (rationa
 
 def _budget_help() -> str:
     """How sizes are limited (only when help is shown)."""
-    return ("Sizes: any 1 <= r <= n.  Before it starts, each run's time is predicted by the cost model "
-            "(power laws in n fitted per method and family of claims to measured runs, `stiefelsym speed`); "
-            "a run predicted beyond --budget seconds is refused with the prediction and a faster method.  "
+    return ("Sizes: any 1 <= r <= n.  Before it starts, each run's time and peak memory are predicted by the "
+            "cost model (sums of monomials in n and r fitted per method and family of claims to measured runs, "
+            "`stiefelsym speed --cost-only`); a run predicted beyond --budget seconds is refused with the "
+            "prediction and a faster method, one predicted beyond --memory with the largest n that fits.  "
             "auto is exact up to each claim's symbolic budget (see `stiefelsym show CLAIM`), then modular; "
             "free: every n and r at once.")
 

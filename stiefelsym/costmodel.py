@@ -407,7 +407,9 @@ def check_memory(method: str, claim: Any, n: int, r: int, memory_gib: float | No
 # --------------------------------------------------------------------------- measuring and fitting
 
 def fit(points: Sequence[tuple[int, float]]) -> tuple[float, float] | None:
-    """(a, b) with t <= exp(a) n**b at every measured point, b >= 0; None without data.
+    """(a, b) with t <= exp(a) n**b at every measured point, b >= 0; None without data.  (A single
+    power law: what a speed series uses to predict its next size from the sizes so far, and the
+    cost model's earlier form, which fitted at small n and extrapolated, under-predicted at scale.)
 
     Least squares of log t against log n (points above TIME_FLOOR), then a raised to the
     upper envelope of all points."""
