@@ -204,3 +204,15 @@ def test_cost_model_refit_from_its_records_is_byte_for_byte(run, tmp_path):
     out = run("speed", "--cost-only", "--records", str(tmp_path / "empty.json"), "--report-dir", str(tmp_path / "c"))
     assert out.exit_code == 2 and "holds no cost model measurements" in out.output
     assert "Traceback" not in out.output
+
+
+def test_ball_evaluation_bounds_a_true_claim_and_not_a_corrupted_one(catalog):
+    """The ball column of the speed-against-error plots: a rigorous bound for a true claim at the float
+    method's point (below float64's error-model bound there); the control, the corrupted LA1, gets an
+    enclosure that excludes 0, never a bound."""
+    c = catalog.get("neumann-lax")
+    rec = sp.evaluate_ball(c, 8, 2)
+    assert rec["status"] == "ok" and rec["bits"] == "arb53" and 0 < rec["max_bound"] < 1e-9
+    assert rec["max_bound"] <= sp.evaluate(c, 8, 2)["max_bound"]
+    bad = sp.evaluate_ball(sp.control_claim(), 8, 2)
+    assert bad["status"] == "bad" and not bad["resolved"]
