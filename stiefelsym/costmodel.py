@@ -204,8 +204,8 @@ class CostModel:
         t = self._calibrated(method, claim, n, r) if fam is None else None
         if t is None:
             t = self._power(method, fam, n, r)
-        if r == n:
-            t *= 2.0         # both components of O(n) are sampled
+        if r == n and n > 1:
+            t *= 2.0         # both components of O(n) are sampled (V(1, 1) is two points: as cheap as V(2, 1))
         return t
 
     def predict_memory(self, method: str, claim: Any, n: int, r: int) -> float:
@@ -481,18 +481,17 @@ def build(records: Sequence[dict[str, Any]], note: str = "") -> dict[str, Any]:
     memory fit (``memory``) over every decided run, whatever its r."""
     fits: dict[str, dict[str, Any]] = {}
     memory: dict[str, dict[str, Any]] = {}
-    groups: dict[tuple[str, str], dict[tuple[int, int], dict[str, float]]] = {}
+    groups: dict[tuple[str, str], list[tuple[int, int, float, float | None]]] = {}
     for rec in records:
         if rec.get("verdict") in ("inconclusive", "error") or rec.get("seconds") is None:
             continue            # a run stopped by its budget only bounds the time from below
-        g = groups.setdefault((rec["method"], rec["family"]), {}).setdefault((rec["n"], rec["r"]), {})
-        g["t"] = max(g.get("t", 0.0), float(rec["seconds"]))
-        if rec.get("peak_bytes"):
-            g["m"] = max(g.get("m", 0.0), float(rec["peak_bytes"]))
+        groups.setdefault((rec["method"], rec["family"]), []).append(
+            (rec["n"], rec["r"], float(rec["seconds"]), float(rec["peak_bytes"]) if rec.get("peak_bytes") else None))
     for (method, fam), g in sorted(groups.items()):
-        pts = [(n, r, v["t"]) for (n, r), v in sorted(g.items())]
-        fits.setdefault(method, {})[fam] = _fit_doc(pts, TERMS.get(method, SYMBOLIC_TERMS))
-        mpts = [(n, r, v["m"]) for (n, r), v in sorted(g.items()) if v.get("m")]
+        # every run is a point (n = 4, r = 2 is in both series: both are fitted)
+        g = sorted(g, key=lambda p: (p[0], p[1], p[2]))
+        fits.setdefault(method, {})[fam] = _fit_doc([(n, r, t) for n, r, t, _ in g], TERMS.get(method, SYMBOLIC_TERMS))
+        mpts = [(n, r, m) for n, r, _, m in g if m]
         if mpts:
             memory.setdefault(method, {})[fam] = _fit_doc(mpts, MEMORY_TERMS)
     return {

@@ -28,12 +28,16 @@ def test_fit_is_an_upper_envelope_with_nonnegative_exponent():
 
 
 def test_the_stored_model_covers_every_method_and_family():
-    doc = costmodel.CostModel.load().data
+    doc = costmodel.CostModel.load(costmodel.MODEL_FILE).data
     assert set(doc["fits"]) >= {"exact", "rational", "modular", "float", "ball"}
-    for method in ("exact", "rational", "modular"):
+    for method in ("rational", "modular"):
         assert set(doc["fits"][method]) == set(costmodel.FAMILIES)
     for method in ("float", "ball"):          # dimensions are integers: no numeric run
         assert set(doc["fits"][method]) == set(costmodel.FAMILIES) - {"dimensions"}
+    # the exact method refuses the dual Lax equation from n = 4 on (a symbolic 4 x 4 solve): no fit, and
+    # its predictions there are the slowest family's, UNKNOWN_CLAIM_FACTOR times over
+    decided = {(r["method"], r["family"]) for r in doc["records"] if r["verdict"] not in ("inconclusive", "error")}
+    assert {fam for m, fam in decided if m == "exact"} == set(doc["fits"]["exact"])
     for method, fams in doc["fits"].items():
         for fam, f in fams.items():
             assert f["terms"] and all(c > 0 for c in f["coef"]), (method, fam)
@@ -167,20 +171,21 @@ def test_check_memory_refuses_with_prediction(catalog):
 
 
 def test_cli_refuses_a_run_beyond_the_memory_budget(run):
-    """float neumann-lax at (100000,2) died of memory; it is now refused up front (exit 2), and so is
-    (3000,2) under --memory 0.05; the control: (3000,2) fits the default 4 GiB and is not refused."""
+    """float neumann-lax at (100000,2) died of memory; it is now refused up front under the default 4 GiB
+    (exit 2; measured: 3.8 GB at (3072,2), 6.7 GB at (4096,2)), and so is (1000,2) under --memory 0.05;
+    the control: (1000,2) fits the default 4 GiB and goes on to the time budget (refused there instead)."""
     res = run("verify", "neumann-lax", "--size", "100000,2", "--method", "float", "--no-report")
     assert res.exit_code == 2, res.output
     assert "predicted peak memory" in res.output and "--memory" in res.output
-    res = run("verify", "neumann-lax", "--size", "3000,2", "--method", "float", "--memory", "0.05", "--no-report")
+    res = run("verify", "neumann-lax", "--size", "1000,2", "--method", "float", "--memory", "0.05", "--no-report")
     assert res.exit_code == 2, res.output
     assert "predicted peak memory" in res.output and "Traceback" not in res.output
-    res = run("verify", "neumann-lax", "--size", "3000,2", "--method", "float", "--budget", "1e-9", "--no-report")
+    res = run("verify", "neumann-lax", "--size", "1000,2", "--method", "float", "--budget", "1e-9", "--no-report")
     assert res.exit_code == 2 and "predicted peak memory" not in res.output and "budget" in res.output
 
 
 def test_cli_runs_within_the_memory_budget(run):
-    res = run("verify", "neumann-lax", "--size", "3,1", "--method", "float", "--memory", "0.5", "--no-report")
+    res = run("verify", "neumann-lax", "--size", "3,1", "--method", "float", "--memory", "2", "--no-report")
     assert res.exit_code == 0, res.output
 
 
