@@ -143,7 +143,8 @@ def speed(report_dir: Path | None, quick: bool, seed: int, no_hard: bool, model_
         sp.plot_family(fam, cid, times, against_n, against_p, report_dir, against_n2=against_n2)
     bad = sp.violations(everything)
     command = shlex.join(["stiefelsym", "speed", "--report-dir", str(report_dir)] + (["--quick"] if quick else [])
-                         + (["--seed", str(seed)] if seed else []) + (["--no-hard"] if no_hard else []))
+                         + (["--seed", str(seed)] if seed else []) + (["--no-hard"] if no_hard else [])
+                         + (["--records", str(records_file)] if records_file is not None else []))
     doc = {"generated": datetime.now(timezone.utc).strftime("%Y-%m-%d %H:%M:%S UTC"),
            "command": command.strip(), "platform": platform.platform(terse=True), "quick": quick, "seed": seed,
            "families": families, "violations": bad, "costmodel": cm_doc,
