@@ -41,6 +41,8 @@ DEFAULT_BUDGET = 3600.0
 MODEL_FILE = Path(__file__).with_name("costmodel.json")
 #: the environment variable naming a cost model file to use instead of the user's or the package's
 MODEL_ENV = "STIEFELSYM_COSTMODEL"
+#: the form of the model files this module reads (older ones are fitted again by ``stiefelsym speed``)
+MODEL_VERSION = 3
 #: the methods the model covers (``auto`` and ``free`` are derived from them)
 METHODS = ("exact", "rational", "modular", "float", "ball")
 #: one representative catalog claim per family of claims
@@ -131,7 +133,16 @@ class CostModel:
         when that file is missing or unreadable."""
         p = Path(path) if path is not None else model_file()
         try:
-            return cls(json.loads(p.read_text(encoding="utf-8")))
+            data = json.loads(p.read_text(encoding="utf-8"))
+            if not isinstance(data, dict):
+                raise ValueError("not a JSON object")
+            if data.get("version", 0) < MODEL_VERSION and p != MODEL_FILE:
+                import warnings
+                warnings.warn(f"stiefelsym: the cost model {p} is of an older form (version "
+                              f"{data.get('version', 0)}); the package's is used (`stiefelsym speed` fits a new one)",
+                              RuntimeWarning, stacklevel=2)
+                return cls.load(MODEL_FILE)
+            return cls(data)
         except (OSError, ValueError) as exc:
             import warnings
             warnings.warn(f"stiefelsym: the cost model {p} cannot be read ({exc}); predictions use rough "
@@ -495,7 +506,7 @@ def build(records: Sequence[dict[str, Any]], note: str = "") -> dict[str, Any]:
         if mpts:
             memory.setdefault(method, {})[fam] = _fit_doc(mpts, MEMORY_TERMS)
     return {
-        "version": 3,
+        "version": MODEL_VERSION,
         "model": ("t(n, r) = sum_k c_k n^i r^j seconds and peak memory m(n, r) = sum_k d_k n^i r^j bytes, "
                   "c_k, d_k >= 0 minimizing the relative error over the runs at r = 2 and r = ceil(n/2) "
                   "from n = 4 up to the largest n within the cap; r = n: twice (two components)"),

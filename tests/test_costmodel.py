@@ -1,6 +1,7 @@
 """The cost model: predictions grow with n and r, a run predicted beyond --budget or --memory is refused
 with exit status 2, its prediction and a way out, and the stored fit is within a factor 3 of every run
 it was fitted on."""
+import json
 import math
 
 import pytest
@@ -199,3 +200,18 @@ def test_exact_predictions_beyond_the_measured_sizes_are_pessimistic():
     assert costmodel.predict("exact", c, 300, 2) > 600
     with pytest.raises(BudgetError, match="predicted"):
         costmodel.check("exact", c, 300, 2, budget=60)
+
+
+def test_a_model_file_of_the_older_form_is_replaced_by_the_package_s(tmp_path):
+    """A user's fit of the power-law form (version 2) is not read as an empty model: the package's is
+    used, with a warning; the control: a file of the current form is read as it is."""
+    old = tmp_path / "old.json"
+    old.write_text(json.dumps({"version": 2, "fits": {"float": {"lax": {"a": -5.0, "b": 0.4}}}}))
+    with pytest.warns(RuntimeWarning, match="older form"):
+        m = costmodel.CostModel.load(old)
+    assert m.fits == costmodel.CostModel.load(costmodel.MODEL_FILE).fits and m.fits["ball"]
+    new = tmp_path / "new.json"
+    new.write_text(json.dumps(costmodel.build([{"family": "lax", "claim": "neumann-lax", "method": "float", "n": n,
+                                                "r": 2, "seconds": 0.01 * n, "verdict": "numeric"}
+                                               for n in (4, 8, 16)])))
+    assert set(costmodel.CostModel.load(new).fits) == {"float"}
