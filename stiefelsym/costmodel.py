@@ -296,6 +296,8 @@ def calibrate(doc: dict[str, Any], results: Iterable[Any], registry: Any = None)
         if n is None or method not in METHODS or secs is None or get("verdict") in ("inconclusive", "error"):
             continue
         base = max(cm._power(method, fam, n, rr) for fam in kind_families(get("kind") or ""))
+        if rr == n and n > 1:
+            base *= 2.0              # as predict does: both components of O(n) are sampled
         ratio = max(float(secs), TIME_FLOOR) / base
         cur = ratios.setdefault(get("claim"), {})
         cur[method] = max(cur.get(method, 1.0 / UNKNOWN_CLAIM_FACTOR), ratio)
