@@ -191,6 +191,7 @@ def _cost_model(report_dir: Path, quick: bool, seed: int, registry: Any, say: An
         except (OSError, ValueError, KeyError):
             pass
     costmodel.calibrate(cm_doc, calibration)
+    cm_doc["catalog_accuracy"] = costmodel.catalog_accuracy(cm_doc, calibration, registry)
     say(f"per-claim factors from {len(calibration)} catalog runs (reports/all/results.json, reports/results.json)")
     if not quick:
         say(f"cost model fit written to {costmodel.save(cm_doc, model_file)}")

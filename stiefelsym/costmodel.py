@@ -124,8 +124,8 @@ class CostModel:
                         self.measured.setdefault(method, {})[fam] = int(f["n_max_measured"])
         self.claim_family: dict[str, str] = dict(self.data.get("claim_family") or {})
         #: per claim and method: its measured times over its family's prediction (the worst ratio)
-        self.factors: dict[str, dict[str, float]] = {
-            cid: {m: float(f) for m, f in fs.items()} for cid, fs in (self.data.get("claim_factors") or {}).items()}
+        self.factors: dict[str, dict[str, Any]] = {
+            cid: dict(fs) for cid, fs in (self.data.get("claim_factors") or {}).items()}
 
     @classmethod
     def load(cls, path: Path | str | None = None) -> "CostModel":
@@ -162,13 +162,14 @@ class CostModel:
         return None
 
     def _calibrated(self, method: str, claim: Any, n: int, r: int) -> float | None:
-        """A claim calibrated on the catalog's own runs: its kind's family times its factor."""
+        """A claim calibrated on the catalog's own runs: its kind's family times its factor at (n, r)."""
         cid = getattr(claim, "id", None)
         fs = self.factors.get(cid, {}) if cid else {}
-        f = fs.get(method, fs.get("float") if method == "ball" else None)     # ball: as costly as float, relatively
-        if f is None:
+        stairs = fs.get(method, fs.get("float") if method == "ball" else None)   # ball: as costly as float, relatively
+        if not stairs:
             return None
-        return f * max(self._power(method, fam, n, r) for fam in kind_families(getattr(claim, "kind", "")))
+        return _step_factor(stairs, n, r) * max(self._power(method, fam, n, r)
+                                                for fam in kind_families(getattr(claim, "kind", "")))
 
     def _power(self, method: str, fam: str | None, n: int, r: int | None = None) -> float:
         """The family's fitted time at (n, r) (r = None: ceil(n/2)); a family the model did not
@@ -285,11 +286,13 @@ def kind_families(kind: str) -> tuple[str, ...]:
 
 def calibrate(doc: dict[str, Any], results: Iterable[Any], registry: Any = None) -> dict[str, Any]:
     """Per-claim factors from result records of catalog runs (``results.json`` entries: claim, kind, n,
-    r, method, seconds, verdict): the worst ratio of a claim's measured time to its kind's prediction,
-    over its runs that took at least TIME_FLOOR (at least 1/UNKNOWN_CLAIM_FACTOR, so that a claim
-    timed only at tiny sizes keeps a margin).  Stored in ``doc['claim_factors']``."""
+    r, method, seconds, verdict): each run's ratio of its measured time (at least TIME_FLOOR) to its
+    kind's prediction (at least 1/UNKNOWN_CLAIM_FACTOR, so that a claim timed only at tiny sizes keeps
+    a margin), kept as a staircase [[n, r, ratio], ...]: a claim is predicted at (n, r) with the worst
+    ratio of its runs at sizes n' <= n, r' <= r (never below what a smaller run took, relatively, and
+    never decreasing in n or r).  Stored in ``doc['claim_factors']``."""
     cm = CostModel(doc)
-    ratios: dict[str, dict[str, float]] = {}
+    points: dict[str, dict[str, dict[tuple[int, int], float]]] = {}
     for r in results:
         get = r.get if isinstance(r, dict) else (lambda k, _r=r: getattr(_r, k, None))
         n, rr, method, secs = get("n"), get("r"), get("method"), get("seconds")
@@ -299,10 +302,52 @@ def calibrate(doc: dict[str, Any], results: Iterable[Any], registry: Any = None)
         if rr == n and n > 1:
             base *= 2.0              # as predict does: both components of O(n) are sampled
         ratio = max(float(secs), TIME_FLOOR) / base
-        cur = ratios.setdefault(get("claim"), {})
-        cur[method] = max(cur.get(method, 1.0 / UNKNOWN_CLAIM_FACTOR), ratio)
-    doc["claim_factors"] = {c: {m: round(f, 4) for m, f in fs.items()} for c, fs in sorted(ratios.items())}
+        cur = points.setdefault(get("claim"), {}).setdefault(method, {})
+        cur[(n, rr)] = max(cur.get((n, rr), 1.0 / UNKNOWN_CLAIM_FACTOR), ratio)
+    doc["claim_factors"] = {c: {m: _staircase(p) for m, p in sorted(fs.items())} for c, fs in sorted(points.items())}
     return doc
+
+
+def _staircase(pts: dict[tuple[int, int], float]) -> list[list[float]]:
+    """The points (n, r, ratio) no other point makes redundant (one at n' <= n, r' <= r with a ratio at
+    least as large), sorted."""
+    keep = []
+    for (n, r), f in sorted(pts.items()):
+        if not any(n2 <= n and r2 <= r and f2 >= f and (n2, r2) != (n, r) for (n2, r2), f2 in pts.items()):
+            keep.append([n, r, round(f, 4)])
+    return keep
+
+
+def _step_factor(stairs: Any, n: int, r: int) -> float:
+    """A claim's factor at (n, r): the worst ratio of its runs at n' <= n, r' <= r (the smallest of its
+    ratios below every run it has; a plain number is the factor everywhere)."""
+    if isinstance(stairs, (int, float)):
+        return float(stairs)
+    below = [f for n2, r2, f in stairs if n2 <= n and r2 <= r]
+    return max(below) if below else min(f for _, _, f in stairs)
+
+
+def catalog_accuracy(doc: dict[str, Any], results: Iterable[Any], registry: Any,
+                     floor: float = 0.05) -> dict[str, dict[str, Any]]:
+    """Per method, over the catalog's own decided runs of at least ``floor`` seconds (``results.json``
+    records): how many are predicted within a factor 3, how many below a third of their time, and the
+    extreme and median ratios predicted / measured."""
+    cost = CostModel(doc)
+    ratios: dict[str, list[float]] = {}
+    for r in results:
+        n, method, secs = r.get("n"), r.get("method"), r.get("seconds")
+        if n is None or method not in METHODS or secs is None or secs < floor or r.get("claim") not in registry \
+                or r.get("verdict") in ("inconclusive", "error"):
+            continue
+        ratios.setdefault(method, []).append(cost.predict(method, registry.get(r["claim"]), n, r["r"]) / secs)
+    out = {}
+    for m in METHODS:
+        xs = sorted(ratios.get(m, []))
+        if xs:
+            out[m] = {"runs": len(xs), "within_3x": sum(1 / 3 <= x <= 3 for x in xs),
+                      "under_a_third": sum(x < 1 / 3 for x in xs), "min_ratio": round(xs[0], 3),
+                      "median_ratio": round(xs[len(xs) // 2], 3), "max_ratio": round(xs[-1], 3)}
+    return out
 
 
 def format_seconds(t: float) -> str:

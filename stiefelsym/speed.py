@@ -825,6 +825,22 @@ def _accuracy_lines(acc: dict[str, Any] | None) -> list[str]:
     return out + [""]
 
 
+def _catalog_accuracy_lines(acc: dict[str, Any] | None) -> list[str]:
+    """The calibrated predictions against the catalog's own runs (reports/results.json), per method."""
+    if not acc:
+        return []
+    out = ["Predicted against measured over the catalog's own runs of at least 0.05 s (`reports/all/results.json`, "
+           "`reports/results.json`, n <= 6; the calibration's data, so a calibrated claim is never predicted below "
+           "its time there, only the five measured claims can be, by their own fits; above 3x where a claim's "
+           "time grows more slowly than its family's):", "",
+           "| method | runs | within a factor 3 | below a third | min predicted/measured | median | max |",
+           "| --- | ---: | ---: | ---: | ---: | ---: | ---: |"]
+    for m, a in acc.items():
+        out.append(f"| {m} | {a['runs']} | {a['within_3x']}/{a['runs']} | {a['under_a_third']} | {a['min_ratio']} | "
+                   f"{a['median_ratio']} | {a['max_ratio']} |")
+    return out + [""]
+
+
 def _yes_no(x: Any) -> str:
     return "yes" if x is True else "no" if x is False else str(x)
 
@@ -976,7 +992,9 @@ def markdown(doc: dict[str, Any]) -> str:
               f"Claims other than the five measured ones are predicted as their kind's family times a factor "
               f"calibrated on the catalog's own runs (`claim_factors`, "
               f"{len(doc['costmodel'].get('claim_factors') or {})} "
-              f"claims: the worst ratio of a claim's time to its family's prediction); a claim never timed gets "
+              f"claims: at (n, r), the worst ratio of the claim's time to its family's prediction over its runs at "
+              f"n' <= n, r' <= r, so never below what a smaller run took, relatively); a claim never timed gets "
               f"{UNKNOWN_CLAIM_FACTOR:g} times the slowest family.", "",
+              *_catalog_accuracy_lines(doc["costmodel"].get("catalog_accuracy")),
               "Hard cases: [hard.md](hard.md).", ""]
     return "\n".join(lines)

@@ -215,3 +215,28 @@ def test_a_model_file_of_the_older_form_is_replaced_by_the_package_s(tmp_path):
                                                 "r": 2, "seconds": 0.01 * n, "verdict": "numeric"}
                                                for n in (4, 8, 16)])))
     assert set(costmodel.CostModel.load(new).fits) == {"float"}
+
+
+def test_calibration_is_a_staircase_in_n_and_r():
+    """A claim slow only at r = n (complex-neumann-flow float: 0.46 s at (5,1), 46 s at (5,5)) is predicted
+    with the worst ratio of its runs at sizes n' <= n, r' <= r: within a factor 3 at (5,1) and at (5,5), never
+    decreasing in n or r.  The control: the single worst factor of all its runs (the earlier calibration)
+    predicts (5,1) more than 3 times too slow."""
+    recs = [{"family": "flows", "claim": "neumann-flow", "method": "float", "n": n, "r": r, "seconds": 0.02,
+             "verdict": "numeric"} for n in (4, 8, 16) for r in (2, (n + 1) // 2)]
+    doc = costmodel.build(recs)
+    runs = [{"claim": "slow-at-r-n", "kind": "id", "method": "float", "n": n, "r": r, "seconds": s,
+             "verdict": "numeric"} for n, r, s in ((3, 1, 0.02), (5, 1, 0.46), (5, 3, 5.0), (5, 5, 46.0))]
+    costmodel.calibrate(doc, runs)
+    m = costmodel.CostModel(doc)
+
+    class C:
+        id, kind, exact_max_n = "slow-at-r-n", "id", 5
+    for n, r, s in ((5, 1, 0.46), (5, 5, 46.0)):
+        assert s <= m.predict("float", C, n, r) <= 3 * s, (n, r)
+    ts = [m.predict("float", C, 5, r) for r in range(1, 6)]
+    assert all(b >= a for a, b in zip(ts, ts[1:]))
+    ts = [m.predict("float", C, n, 4) for n in range(5, 9)]
+    assert all(b >= a for a, b in zip(ts, ts[1:]))
+    worst = max(f for _, _, f in doc["claim_factors"]["slow-at-r-n"]["float"])
+    assert worst * m._power("float", "flows", 5, 1) > 3 * 0.46
