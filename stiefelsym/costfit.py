@@ -61,19 +61,24 @@ def timed_run(claim: Any, n: int, r: int, method: str, seed: int = 0, timeout: f
     data = b""
     deadline = t0 + timeout
     import select
-    while True:
-        left = deadline - time.perf_counter()
-        if left <= 0:
-            os.kill(pid, signal.SIGKILL)
-            break
-        ready, _, _ = select.select([r_fd], [], [], min(left, 1.0))
-        if ready:
-            chunk = os.read(r_fd, 1 << 16)
-            if not chunk:
+    try:
+        while True:
+            left = deadline - time.perf_counter()
+            if left <= 0:
+                os.kill(pid, signal.SIGKILL)
                 break
-            data += chunk
-    os.close(r_fd)
-    os.waitpid(pid, 0)
+            ready, _, _ = select.select([r_fd], [], [], min(left, 1.0))
+            if ready:
+                chunk = os.read(r_fd, 1 << 16)
+                if not chunk:
+                    break
+                data += chunk
+    except BaseException:                          # interrupted: the child goes too
+        os.kill(pid, signal.SIGKILL)
+        raise
+    finally:
+        os.close(r_fd)
+        os.waitpid(pid, 0)
     wall = time.perf_counter() - t0
     if not data:
         return {"verdict": "inconclusive" if wall >= timeout else "error", "seconds": round(wall, 6),

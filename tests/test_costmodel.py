@@ -240,3 +240,14 @@ def test_calibration_is_a_staircase_in_n_and_r():
     assert all(b >= a for a, b in zip(ts, ts[1:]))
     worst = max(f for _, _, f in doc["claim_factors"]["slow-at-r-n"]["float"])
     assert worst * m._power("float", "flows", 5, 1) > 3 * 0.46
+
+
+def test_a_timed_run_reports_time_and_peak_memory_and_is_stopped_at_its_cap(catalog):
+    """The cost model's measurements: a run in a fresh process gives its verdict, seconds and peak memory
+    (its n x n matrices at least); the control: a run past its cap is killed and inconclusive."""
+    from stiefelsym import costfit
+    c = catalog.get("neumann-lax")
+    rec = costfit.timed_run(c, 300, 2, "float", 0, 60.0)
+    assert rec["verdict"] == "numeric" and 0 < rec["seconds"] < 60 and rec["peak_bytes"] >= 8 * 300 * 300
+    rec = costfit.timed_run(c, 400, 200, "exact", 0, 0.5)
+    assert rec["verdict"] == "inconclusive" and rec["peak_bytes"] is None and rec["seconds"] < 5
