@@ -75,6 +75,10 @@ def speed(report_dir: Path | None, quick: bool, seed: int, no_hard: bool, model_
         report_dir.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
         raise InputError(f"cannot write the speed report to {report_dir}: {exc.strerror or exc}") from None
+    if cost_only and (hard_only or quick):
+        raise InputError("--cost-only excludes --hard-only and --quick")
+    if cap is not None and records_file is not None:
+        raise InputError("--cap is the time of a measured run; --records measures nothing: give one of them")
     registry = load_catalog()
     say = lambda text: click.echo(text, err=True)  # noqa: E731
     if hard_only:
@@ -93,8 +97,6 @@ def speed(report_dir: Path | None, quick: bool, seed: int, no_hard: bool, model_
         say(f"hard cases: {len(hard_rows)} runs, {len(wrong)} wrong; reports in {report_dir}")
         return 1 if wrong else 0
 
-    if cost_only and (hard_only or quick):
-        raise InputError("--cost-only excludes --hard-only and --quick")
     cm_doc, accuracy = _cost_model(report_dir, quick, seed, registry, say, model_file, records_file, cap)
     if cost_only:
         try:

@@ -207,6 +207,9 @@ def test_cost_model_refit_from_its_records_is_byte_for_byte(run, tmp_path):
     out = run("speed", "--cost-only", "--records", str(tmp_path / "empty.json"), "--report-dir", str(tmp_path / "c"))
     assert out.exit_code == 2 and "holds no cost model measurements" in out.output
     assert "Traceback" not in out.output
+    for bad in (["--cost-only", "--hard-only"], ["--cost-only", "--records", str(stored), "--cap", "5"]):
+        out = run("speed", *bad, "--report-dir", str(tmp_path / "d"))
+        assert out.exit_code == 2 and "Traceback" not in out.output and "--" in out.output, bad
 
 
 def test_ball_evaluation_bounds_a_true_claim_and_not_a_corrupted_one(catalog):
