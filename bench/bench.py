@@ -101,6 +101,31 @@ def naive_sympy(n: int, r: int) -> float:
     return time.process_time() - t0
 
 
+def la1_numpy(n: int, r: int, rng: Any) -> Any:
+    """The residual of LA1 at a random point of the Cayley chart in plain numpy: the products the float
+    check evaluates, with no error bounds, no term scales and no verdict (the baseline of its overhead)."""
+    import numpy as np
+    S = np.triu(rng.standard_normal((n, n)), 1)
+    S = S - S.T
+    W = np.triu(rng.standard_normal((r, r)), 1)
+    W = W - W.T
+    Z = rng.standard_normal((n, r))
+    a = rng.standard_normal(n)
+    lam, kappa = rng.standard_normal(2)
+    E = np.eye(n, r)
+    X = 2 * np.linalg.solve(np.eye(n) + S, E) - E
+    P = X @ W + Z - X @ (X.T @ Z)
+    k = 1 + 2 * kappa
+    Xd = P - k * (X @ (P.T @ X))
+    Pd = -(a[:, None] * X) - X @ (P.T @ P) + k * (P @ (X.T @ P)) + X @ ((X.T * a) @ X)
+    Phi = P @ X.T - X @ P.T
+    XXt = X @ X.T
+    L = lam * Phi + XXt - lam * lam * np.diag(a)
+    M = Phi - lam * np.diag(a)
+    dL = lam * (Pd @ X.T + P @ Xd.T - Xd @ P.T - X @ Pd.T) + Xd @ X.T + X @ Xd.T
+    return dL - (M @ L - L @ M)
+
+
 # --------------------------------------------------------------------------- helpers
 
 class NotYet(Exception):
@@ -392,6 +417,35 @@ def main(argv=None) -> int:
         return run
     bench.target("ball / float64 LA1 check, (200,100)", 20.0, "x", "lower", ball_over_float(200, 100))
     bench.target("ball / float64 LA1 check, (40,20)", 20.0, "x", "lower", ball_over_float(40, 20))
+
+    # 5c. the float64 check of LA1 against plain numpy doing the same products (no bounds, no verdict)
+    def float_over_numpy(n: int, r: int) -> Callable[[], tuple[float, str]]:
+        def run() -> tuple[float, str]:
+            import numpy as np
+            from stiefelsym.blas import one_blas_thread
+            size = Size(n, r)
+            rng = np.random.default_rng(0)
+            with one_blas_thread():
+                for _ in range(2):
+                    run_one(LA1, size, "float", seed=0)
+                    la1_numpy(n, r, rng)
+                k = max(10, args.repeat)
+                cpu = {"float": math.inf, "numpy": math.inf}
+                for _ in range(k):
+                    c0 = time.process_time()
+                    res = run_one(LA1, size, "float", seed=0)
+                    cpu["float"] = min(cpu["float"], time.process_time() - c0)
+                    c0 = time.process_time()
+                    la1_numpy(n, r, rng)
+                    cpu["numpy"] = min(cpu["numpy"], time.process_time() - c0)
+            if res.verdict != "numeric":
+                raise NotYet(f"float {res.verdict}: {(res.message or '')[:120]}")
+            return cpu["float"] / cpu["numpy"], (
+                f"CPU: float64 check {1e3 * cpu['float']:.1f} ms, plain numpy {1e3 * cpu['numpy']:.1f} ms (the Cayley "
+                f"point, the flow and the residual of LA1, no bounds; best of {k} interleaved warm runs, one BLAS "
+                f"thread)")
+        return run
+    bench.target("float64 LA1 check / plain numpy, (200,100)", 1.5, "x", "lower", float_over_numpy(200, 100))
 
     # 6. the dimension-free proof of LA1, warm
     def free() -> tuple[float, str]:

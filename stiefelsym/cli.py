@@ -510,9 +510,10 @@ P_LEGEND = ("p<=: the Schwartz-Zippel bound of a randomized exact check (rationa
 
 def _budget_help() -> str:
     """How sizes are limited (only when help is shown)."""
-    return ("Sizes: any 1 <= r <= n.  Before it starts, each run's time is predicted by the cost model "
-            "(power laws in n fitted per method and family of claims to measured runs, `stiefelsym speed`); "
-            "a run predicted beyond --budget seconds is refused with the prediction and a faster method.  "
+    return ("Sizes: any 1 <= r <= n.  Before it starts, each run's time and peak memory are predicted by the "
+            "cost model (sums of monomials in n and r fitted per method and family of claims to measured runs, "
+            "`stiefelsym speed --cost-only`); a run predicted beyond --budget seconds is refused with the "
+            "prediction and a faster method, one predicted beyond --memory with the largest n that fits.  "
             "auto is exact up to each claim's symbolic budget (see `stiefelsym show CLAIM`), then modular; "
             "free: every n and r at once.")
 
@@ -628,8 +629,9 @@ class _Stdout:
                    "killed and the verdict is inconclusive.")
 @click.option("--memory", type=click.FloatRange(min=0, min_open=True), default=DEFAULT_MEMORY_GIB,
               show_default=True, metavar="GIB",
-              help="Memory budget (address space, GiB) of each run's worker; a run that exceeds it "
-                   "is an error.")
+              help="Memory budget (address space, GiB) of each run's worker: a run whose peak memory "
+                   "predicted by the cost model exceeds it is refused before anything runs (exit 2, with the "
+                   "prediction and the largest n that fits); a run that exceeds it while running is an error.")
 @click.option("--jobs", type=click.IntRange(min=1), default=1, show_default=True, metavar="N",
               help="Runs computed in parallel (worker processes); the results come in the same "
                    "order with the same verdicts whatever N.")
@@ -677,7 +679,7 @@ def verify(ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tuple[str, ..
 def _check_costs(runner: Any, claims: list[Claim], sizes: tuple[Size, ...], methods: Sequence[str],
                  budget: float, memory: float | None = None) -> None:
     """Refuse (BudgetError, exit 2) a planned run whose predicted time exceeds the budget, or
-    whose n x n matrices alone would not fit in the memory budget."""
+    whose predicted peak memory exceeds the memory budget (--memory)."""
     from . import costmodel
     for c in claims:
         for m in methods:

@@ -20,9 +20,6 @@ import click
 
 from .cli import InputError, standalone_command
 
-QUICK_NS = {"exact": [2, 3], "rational": [2, 3], "modular": [2, 3], "float": [2, 3]}
-FULL_NS = {"exact": [2, 3, 4, 5, 6, 7, 8], "rational": [2, 3, 4, 5, 6, 8, 10],
-           "modular": [2, 3, 4, 5, 6, 8, 10, 12], "float": [2, 3, 4, 5, 6, 8, 10, 12, 16]}
 FLOAT_NS_FULL = [2, 3, 4, 5, 6, 8, 10, 12, 16, 20, 24, 32, 48, 64, 100, 128, 200]
 #: r = 2: the sizes to n = 200 (float64 and, as far as the cost model allows, every precision)
 NS_200 = [2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64, 100, 128, 160, 200]
@@ -45,18 +42,29 @@ DIM_NOTE = ("Dimensions are integers (exact ranks and counts): there is no round
 @click.option("--hard-only", is_flag=True,
               help="Only the hard-case tables (hard.md, hard.json; speed.json and speed.md take their count of "
                    "wrong verdicts), without the measurements of time and residual.")
+@click.option("--cost-only", is_flag=True,
+              help="Only the cost model: measure time and peak memory (r = 2 and r = ceil(n/2), n = 4 up to the "
+                   "cap), fit, and write costmodel.json, its plots and the cost-model sections of speed.md.")
+@click.option("--records", "records_file", type=click.Path(dir_okay=False, exists=True, path_type=Path),
+              default=None, metavar="FILE",
+              help="Fit the cost model's measurements stored in FILE (a costmodel.json) instead of measuring "
+                   "again; with --cost-only the same file gives the same fit, plots and tables, byte for byte.")
+@click.option("--cap", type=click.FloatRange(min=0, min_open=True), default=None, metavar="SECONDS",
+              help="Seconds one run of the cost model's series may take (default 20; the series stops before a "
+                   "size predicted beyond it).")
 @click.option("--model-file", type=click.Path(dir_okay=False, path_type=Path), default=None, metavar="FILE",
               help="Where to write the fitted cost model (default: your user cache folder, where "
                    "stiefelsym then reads it; the installed package's fit is never written).")
 def speed(report_dir: Path | None, quick: bool, seed: int, no_hard: bool, model_file: Path | None = None,
-          hard_only: bool = False) -> int:
+          hard_only: bool = False, cost_only: bool = False, records_file: Path | None = None,
+          cap: float | None = None) -> int:
     """Residual and time against n and precision per family of claims, the fitted cost model
     (time against n per method), and the hard numerical cases."""
     import importlib.util
     if importlib.util.find_spec("matplotlib") is None:
         raise InputError("stiefelsym speed draws its plots with matplotlib, which is not installed: "
                          "pip install 'stiefelsym[plots]'")
-    from . import costfit, costmodel, speed as sp
+    from . import costmodel, speed as sp
     from .claims import load_catalog
     from .results import write_atomic
     t_start = time.perf_counter()
@@ -67,6 +75,10 @@ def speed(report_dir: Path | None, quick: bool, seed: int, no_hard: bool, model_
         report_dir.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
         raise InputError(f"cannot write the speed report to {report_dir}: {exc.strerror or exc}") from None
+    if cost_only and (hard_only or quick):
+        raise InputError("--cost-only excludes --hard-only and --quick")
+    if cap is not None and records_file is not None:
+        raise InputError("--cap is the time of a measured run; --records measures nothing: give one of them")
     registry = load_catalog()
     say = lambda text: click.echo(text, err=True)  # noqa: E731
     if hard_only:
@@ -85,27 +97,24 @@ def speed(report_dir: Path | None, quick: bool, seed: int, no_hard: bool, model_
         say(f"hard cases: {len(hard_rows)} runs, {len(wrong)} wrong; reports in {report_dir}")
         return 1 if wrong else 0
 
-    say("measuring time against n (cost model) ...")
-    records = costfit.measure(n_values=QUICK_NS if quick else FULL_NS, per_run=20.0 if quick else 30.0,
-                                series_seconds=3.0 if quick else 12.0, seed=seed, registry=registry,
-                                small_ns={"float": [5], "modular": [5]} if quick else costmodel.SMALL_NS,
-                                on_point=lambda r: say(f"  {r['family']:>10} {r['method']:>8} ({r['n']},{r['r']}) "
-                                                       f"{r['verdict']} {r['seconds']:.3f}s"))
-    cm_doc = costmodel.build(records, note="quick run" if quick else "stiefelsym speed")
-    calibration = []
-    for f in (Path("reports") / "all" / "results.json", Path("reports") / "results.json"):
+    cm_doc, accuracy = _cost_model(report_dir, quick, seed, registry, say, model_file, records_file, cap)
+    if cost_only:
         try:
-            calibration += json.loads(f.read_text(encoding="utf-8"))["results"]
-        except (OSError, ValueError, KeyError):
-            pass
-    costmodel.calibrate(cm_doc, calibration)
-    say(f"per-claim factors from {len(calibration)} catalog runs (reports/all/results.json, reports/results.json)")
-    if not quick:
-        say(f"cost model fit written to {costmodel.save(cm_doc, model_file)}")
-    costmodel.save(cm_doc, report_dir / "costmodel.json")
-    costmodel.plot(cm_doc, report_dir)
-    accuracy = costmodel.accuracy(cm_doc, registry)
-    costmodel.plot_accuracy(accuracy, report_dir)
+            doc = json.loads((report_dir / "speed.json").read_text(encoding="utf-8"))
+        except (OSError, ValueError):
+            doc = None
+        if doc is not None:
+            doc["costmodel"] = cm_doc
+            doc["accuracy"] = costmodel.accuracy_summary(accuracy)
+            for fam, sec in doc.get("families", {}).items():
+                sec["times"] = [r for r in cm_doc["records"] if r["family"] == fam]
+            write_atomic(report_dir / "speed.json", json.dumps(doc, indent=1, default=_json_default) + "\n")
+            write_atomic(report_dir / "speed.md", sp.markdown(doc))
+        summary = costmodel.accuracy_summary(accuracy)
+        say("cost model: " + ", ".join(f"{m} {a['within_3x']}/{a['runs']} within 3x" for m, a in summary.items())
+            + f"; reports in {report_dir}")
+        return 0
+    records = cm_doc["records"]
 
     families = {}
     everything = []
@@ -127,7 +136,7 @@ def speed(report_dir: Path | None, quick: bool, seed: int, no_hard: bool, model_
                                                total=5.0 if quick else 30.0, seed=seed, r_of=sp.two,
                                                exact_n=4 if quick else 16, stops=stops)
             against_p = against_n2 + sp.residual_against_precision(
-                claim, [3, 4] if quick else NS_200[1:], seed=seed, precisions=(30, 50, 100, "exact"),
+                claim, [3, 4] if quick else NS_200[1:], seed=seed, precisions=(30, 50, 100, "ball", "exact"),
                 cap=2.0 if quick else 3.0, total=4.0 if quick else 8.0, exact_n=4 if quick else 8, stops=stops)
         everything += against_n + against_p
         times = [r for r in records if r["family"] == fam]
@@ -136,7 +145,8 @@ def speed(report_dir: Path | None, quick: bool, seed: int, no_hard: bool, model_
         sp.plot_family(fam, cid, times, against_n, against_p, report_dir, against_n2=against_n2)
     bad = sp.violations(everything)
     command = shlex.join(["stiefelsym", "speed", "--report-dir", str(report_dir)] + (["--quick"] if quick else [])
-                         + (["--seed", str(seed)] if seed else []) + (["--no-hard"] if no_hard else []))
+                         + (["--seed", str(seed)] if seed else []) + (["--no-hard"] if no_hard else [])
+                         + (["--records", str(records_file)] if records_file is not None else []))
     doc = {"generated": datetime.now(timezone.utc).strftime("%Y-%m-%d %H:%M:%S UTC"),
            "command": command.strip(), "platform": platform.platform(terse=True), "quick": quick, "seed": seed,
            "families": families, "violations": bad, "costmodel": cm_doc,
@@ -150,6 +160,48 @@ def speed(report_dir: Path | None, quick: bool, seed: int, no_hard: bool, model_
     say(f"speed: {len(everything)} evaluations, {len(bad)} over their bound; {len(hard_rows)} hard runs, "
         f"{len(doc['hard_wrong'])} wrong; {doc['seconds']} s; reports in {report_dir}")
     return 1 if bad or doc["hard_wrong"] else 0
+
+
+def _cost_model(report_dir: Path, quick: bool, seed: int, registry: Any, say: Any, model_file: Path | None,
+                records_file: Path | None, cap: float | None) -> tuple[dict[str, Any], list[dict[str, Any]]]:
+    """Measure (or read from ``records_file``) the cost model's runs, fit, calibrate on the catalog's
+    own runs, save and plot; the model and its accuracy rows."""
+    from . import costfit, costmodel
+    if records_file is not None:
+        try:
+            stored = json.loads(records_file.read_text(encoding="utf-8"))
+            records = list(stored["records"])
+            note = str(stored.get("note", ""))
+        except (OSError, ValueError, KeyError, TypeError) as exc:
+            raise InputError(f"{records_file} holds no cost model measurements (a costmodel.json with "
+                             f"'records'): {exc}") from None
+        say(f"fitting the {len(records)} measurements of {records_file} ...")
+    else:
+        cap = cap or (2.0 if quick else costfit.SCALE_CAP)
+        say(f"measuring time and peak memory against n (cost model, {cap:g} s per run) ...")
+        records = costfit.measure_scale(ns=(4, 6) if quick else costfit.SCALE_NS, cap=cap, seed=seed,
+                                        registry=registry, repeat=1 if quick else costfit.REPEAT,
+                                        on_point=lambda r: say(f"  {r['family']:>10} {r['method']:>8} ({r['n']},{r['r']}) "
+                                                               f"{r['verdict']} {r['seconds']:.3f}s"))
+        note = (f"measured by stiefelsym speed on {platform.platform(terse=True)}, Python "
+                f"{platform.python_version()}, {cap:g} s per run" + (" (quick run)" if quick else ""))
+    cm_doc = costmodel.build(records, note=note)
+    calibration = []
+    for f in (Path("reports") / "all" / "results.json", Path("reports") / "results.json"):
+        try:
+            calibration += json.loads(f.read_text(encoding="utf-8"))["results"]
+        except (OSError, ValueError, KeyError):
+            pass
+    costmodel.calibrate(cm_doc, calibration)
+    cm_doc["catalog_accuracy"] = costmodel.catalog_accuracy(cm_doc, calibration, registry)
+    say(f"per-claim factors from {len(calibration)} catalog runs (reports/all/results.json, reports/results.json)")
+    if not quick:
+        say(f"cost model fit written to {costmodel.save(cm_doc, model_file)}")
+    costmodel.save(cm_doc, report_dir / "costmodel.json")
+    costmodel.plot(cm_doc, report_dir)
+    accuracy = costmodel.accuracy(cm_doc, registry)
+    costmodel.plot_accuracy(accuracy, report_dir)
+    return cm_doc, accuracy
 
 
 def _json_default(x):

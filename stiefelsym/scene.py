@@ -332,26 +332,28 @@ class Scene(PaperObjects):
         count = m * k if kind == "general" else m * (m - 1) // 2 if kind == "skew" else m * (m + 1) // 2
         if count < PARAM_BLOCK_MIN:
             return None
-        if kind == "general":
-            cells = (np.repeat(np.arange(m), k), np.tile(np.arange(k), m))
-        else:
-            cells = np.triu_indices(m, 1 if kind == "skew" else 0)
         vals = self._field.param_values(self._rng, count)
         if vals is None:
             return None
-        arr = np.zeros((m, k), dtype=vals.dtype)
-        arr[cells] = vals
-        if kind == "skew":
-            arr[cells[1], cells[0]] = -vals
-        elif kind == "sym":
-            arr[cells[1], cells[0]] = vals
-        self._param_blocks.append((name, cells, vals))
+        if kind == "general":
+            arr = vals.reshape(m, k)                  # row by row, as the cells are listed
+        else:
+            # the upper triangle row by row (a boolean mask selects in that order, as triu_indices
+            # lists it), then mirrored: the lower triangle is 0 there, so the sums are exact
+            arr = np.zeros((m, m), dtype=vals.dtype)
+            arr[_upper_mask(m, 1 if kind == "skew" else 0)] = vals
+            arr = arr - arr.T if kind == "skew" else arr + np.triu(arr, 1).T
+        self._param_blocks.append((name, (kind, m, k), vals))
         return Mat._wrap_native(be.from_array(arr), self._field, tags, self.tracker)
 
     def _expand_param_blocks(self) -> None:
         """Enter every parameter drawn in a block into :attr:`params` under its own name."""
         blocks, self._param_blocks[:] = list(self._param_blocks), []
-        for name, (rows, cols), vals in blocks:
+        for name, (kind, m, k), vals in blocks:
+            if kind == "general":
+                rows, cols = np.repeat(np.arange(m), k), np.tile(np.arange(k), m)
+            else:
+                rows, cols = np.triu_indices(m, 1 if kind == "skew" else 0)
             for i, j, x in zip(rows.tolist(), cols.tolist(), vals.tolist()):
                 self._params[param_name(name, i, j)] = self._field.param_from_raw(x)
 
@@ -1443,3 +1445,16 @@ def map_entries(v: Any, f, scene: Any) -> Any:
     if isinstance(v, (list, tuple)):
         return type(v)(map_entries(x, f, scene) for x in v)
     return f(v)
+
+
+_UPPER_MASKS: dict[tuple[int, int], Any] = {}
+
+
+def _upper_mask(m: int, k: int) -> Any:
+    """The boolean mask of the entries (i, j) with j >= i + k of an m x m matrix (kept per size)."""
+    mask = _UPPER_MASKS.get((m, k))
+    if mask is None:
+        if len(_UPPER_MASKS) > 64:
+            _UPPER_MASKS.clear()
+        mask = _UPPER_MASKS[(m, k)] = np.triu(np.ones((m, m), dtype=bool), k)
+    return mask

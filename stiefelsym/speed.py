@@ -362,6 +362,24 @@ def evaluate_exact(claim: Any, n: int, r: int, seed: int = 0, hard: str | None =
     return out
 
 
+def evaluate_ball(claim: Any, n: int, r: int, seed: int = 0) -> dict[str, Any]:
+    """The ball method's evaluation at the float method's own point: the precision of its ladder that
+    decided, and the rigorous bound of every residual entry (its largest: |exact residual| <= bound)."""
+    from .methods import _ball_component
+    t0 = time.perf_counter()
+    out: dict[str, Any] = {"claim": claim.id, "n": n, "r": r, "precision": "ball"}
+    try:
+        run = _ball_component(claim, n, r, seed, claim.func, None, 0)
+    except Exception as exc:  # noqa: BLE001 - reported, not raised
+        out.update(status="error", message=f"{type(exc).__name__}: {exc}", seconds=time.perf_counter() - t0)
+        return out
+    ok = run.status in ("pass", "zero")
+    out.update(status="ok" if ok else run.status, seconds=time.perf_counter() - t0, bits=run.field,
+               max_bound=run.bound, max_residual=None, exceed=0, resolved=ok,
+               note="rigorous enclosures (arb): every |exact residual| <= the bound")
+    return out
+
+
 def residual_against_precision(claim: Any, ns: Sequence[int] | int, r: Any = None, seed: int = 0,
                                precisions: Iterable[int | str | None] = PRECISIONS + ("exact",),
                                cap: float = 3.0, total: float = 8.0, exact_n: int = 8,
@@ -377,13 +395,13 @@ def residual_against_precision(claim: Any, ns: Sequence[int] | int, r: Any = Non
         r_of = r or two
     out: list[dict[str, Any]] = []
     for dps in precisions:
-        if dps == "exact":
+        if dps in ("exact", "ball"):
             series: list[dict[str, Any]] = []
             spent = 0.0
             for n in ns:
-                if _stop_predicted(series, n, cap, stops, f"exact, r = {_r_text(r_of)}")[0]:
+                if _stop_predicted(series, n, cap, stops, f"{dps}, r = {_r_text(r_of)}")[0]:
                     break
-                rec = evaluate_exact(claim, n, r_of(n), seed)
+                rec = (evaluate_exact if dps == "exact" else evaluate_ball)(claim, n, r_of(n), seed)
                 series.append(rec)
                 spent += rec["seconds"]
                 if rec["status"] != "ok" or spent > total:
@@ -675,7 +693,7 @@ def _hard_lines(rows: Sequence[dict[str, Any]]) -> list[str]:
 
 # --------------------------------------------------------------------------- plots and report
 
-PREC_STYLE = {"float64": "C3", "mpmath30": "C0", "mpmath50": "C1", "mpmath100": "C2", "exact": "k"}
+PREC_STYLE = {"float64": "C3", "mpmath30": "C0", "mpmath50": "C1", "mpmath100": "C2", "ball": "C4", "exact": "k"}
 
 
 def plot_family(fam: str, claim_id: str, times: Sequence[dict[str, Any]], against_n: Sequence[dict[str, Any]],
@@ -688,18 +706,18 @@ def plot_family(fam: str, claim_id: str, times: Sequence[dict[str, Any]], agains
     import matplotlib.pyplot as plt
     fig, axes = plt.subplots(2, 2, figsize=(12, 8))
     ax = axes[0][0]
-    for method in ("exact", "rational", "modular", "float"):
-        for rkind, style in (("half", "o-"), ("square", "s:")):
+    for method in ("exact", "rational", "modular", "float", "ball"):
+        for rkind, style in (("half", "o-"), ("two", "s:")):
             pts = {}
             for rec in times:
-                if rec["method"] == method and rec["r"] == (rec["n"] if rkind == "square" else (rec["n"] + 1) // 2):
+                if rec["method"] == method and rec["r"] == (2 if rkind == "two" else (rec["n"] + 1) // 2):
                     pts[rec["n"]] = max(pts.get(rec["n"], 0.0), rec["seconds"])
             if pts:
                 ns = sorted(pts)
                 ax.loglog(ns, [max(pts[n], 1e-5) for n in ns], style, ms=3, color=_MCOL[method],
-                          mfc="none" if rkind == "square" else None,
-                          label=f"{method} run, r = {'n' if rkind == 'square' else 'ceil(n/2)'}")
-    for prec in ("float64", "mpmath30", "mpmath100", "exact"):
+                          mfc="none" if rkind == "two" else None,
+                          label=f"{method} run, r = {'2' if rkind == 'two' else 'ceil(n/2)'}")
+    for prec in ("float64", "ball", "exact"):
         pts = [x for x in against_p if x["precision"] == prec and x.get("status") == "ok"]
         if pts:
             ax.loglog([x["n"] for x in pts], [max(x["seconds"], 1e-5) for x in pts], "^--", ms=3, lw=0.8,
@@ -746,31 +764,38 @@ def plot_family(fam: str, claim_id: str, times: Sequence[dict[str, Any]], agains
     if ax.get_legend_handles_labels()[0]:
         ax.legend(fontsize=6, ncol=2)
     ax = axes[1][1]
-    for prec in ("float64", "mpmath30", "mpmath50", "mpmath100"):
+    # float64, ball and exact side by side: the bound each certifies against the seconds it took
+    floor = None
+    # (mpmath's bounds, 1e-30 and below, are in the panel to the left)
+    for prec, label in (("float64", "float64: error model's bound e"), ("ball", "ball: rigorous enclosure bound")):
         pts = [x for x in against_p if x["precision"] == prec and x.get("status") == "ok"]
         if pts:
-            ax.loglog([max(x["seconds"], 1e-5) for x in pts], [max(x["max_bound"], 1e-300) for x in pts], "s-",
-                      ms=3, color=PREC_STYLE[prec], label=f"{prec}: bound e (certified)")
-            ax.loglog([max(x["seconds"], 1e-5) for x in pts], [max(x["max_residual"], 1e-300) for x in pts], "o:",
-                      ms=3, color=PREC_STYLE[prec], alpha=0.6, label=f"{prec}: observed")
+            ys = [max(x["max_bound"], 1e-300) for x in pts]
+            floor = min(ys + ([floor] if floor else []))
+            ax.loglog([max(x["seconds"], 1e-5) for x in pts], ys, "s-", ms=3, lw=0.8, color=PREC_STYLE[prec],
+                      label=label + " (points: n = 2 to 200)")
+            for x, y in zip(pts, ys):
+                if x["n"] in (16, 64) or x is pts[-1]:
+                    ax.annotate(f"n={x['n']}", (max(x["seconds"], 1e-5), y), fontsize=6, color=PREC_STYLE[prec])
+    exact = [x for x in against_p if x["precision"] == "exact" and x.get("status") == "ok"]
+    if exact:
+        y0 = (floor or 1e-16) / 100
+        ax.loglog([max(x["seconds"], 1e-5) for x in exact], [y0] * len(exact), "D-", ms=3, color=PREC_STYLE["exact"],
+                  label="exact: error 0 (drawn at the bottom)")
+        ax.annotate(f"n={exact[-1]['n']}", (max(exact[-1]["seconds"], 1e-5), y0), fontsize=6)
     ax.set_xlabel("seconds per evaluation")
-    ax.set_ylabel("error")
-    ax.set_title("error against time (each point one n, r = 2)", fontsize=9)
+    ax.set_ylabel("certified error")
+    ax.set_title("error against time: float64, ball and exact side by side (r = 2)", fontsize=9)
     ax.grid(True, which="both", alpha=0.3)
     if ax.get_legend_handles_labels()[0]:
-        ax.legend(fontsize=6, ncol=2)
+        ax.legend(fontsize=6)
     fig.suptitle(f"{fam}: {claim_id}", fontsize=10)
     fig.tight_layout()
-    paths = []
-    for ext in ("png", "pdf"):
-        p = out_dir / f"speed-{fam}.{ext}"
-        fig.savefig(p, dpi=100)
-        paths.append(p)
-    plt.close(fig)
-    return paths
+    from .costmodel import save_figure
+    return save_figure(fig, out_dir, f"speed-{fam}")
 
 
-_MCOL = {"exact": "C0", "rational": "C1", "modular": "C2", "float": "C3"}
+_MCOL = {"exact": "C0", "rational": "C1", "modular": "C2", "float": "C3", "ball": "C4"}
 
 
 def _fmt(x: Any) -> str:
@@ -787,13 +812,32 @@ def _accuracy_lines(acc: dict[str, Any] | None) -> list[str]:
     """The cost model's predictions against its own measurements, per method."""
     if not acc:
         return []
-    out = ["Predicted against measured, over the measurements of the fit (a ratio below 1: predicted too "
-           "fast; the fits are upper envelopes, so most ratios are above 1):", "",
+    out = ["Predicted against measured, over every decided run of the fit (n >= 4; a ratio below 1: predicted "
+           "too fast):", "",
            "![predicted against measured](costmodel-accuracy.png)", "",
-           "| method | runs | within a factor 3 | min predicted/measured | max predicted/measured |",
-           "| --- | ---: | ---: | ---: | ---: |"]
+           "| method | runs | largest n | time within a factor 3 | min predicted/measured | max predicted/measured "
+           "| peak memory within a factor 3 |",
+           "| --- | ---: | ---: | ---: | ---: | ---: | ---: |"]
     for m, a in acc.items():
-        out.append(f"| {m} | {a['runs']} | {a['within_3x']} | {a['min_ratio']} | {a['max_ratio']} |")
+        mem = f"{a['memory_within_3x']}/{a['memory_runs']}" if "memory_runs" in a else "-"
+        out.append(f"| {m} | {a['runs']} | {a.get('largest_n', '-')} | {a['within_3x']}/{a['runs']} | {a['min_ratio']} "
+                   f"| {a['max_ratio']} | {mem} |")
+    return out + [""]
+
+
+def _catalog_accuracy_lines(acc: dict[str, Any] | None) -> list[str]:
+    """The calibrated predictions against the catalog's own runs (reports/results.json), per method."""
+    if not acc:
+        return []
+    out = ["Predicted against measured over the catalog's own runs of at least 0.05 s (`reports/all/results.json`, "
+           "`reports/results.json`, n <= 6; the calibration's data, so a calibrated claim is never predicted below "
+           "its time there, only the five measured claims can be, by their own fits; above 3x where a claim's "
+           "time grows more slowly than its family's):", "",
+           "| method | runs | within a factor 3 | below a third | min predicted/measured | median | max |",
+           "| --- | ---: | ---: | ---: | ---: | ---: | ---: |"]
+    for m, a in acc.items():
+        out.append(f"| {m} | {a['runs']} | {a['within_3x']}/{a['runs']} | {a['under_a_third']} | {a['min_ratio']} | "
+                   f"{a['median_ratio']} | {a['max_ratio']} |")
     return out + [""]
 
 
@@ -821,7 +865,7 @@ def tradeoffs(doc: dict[str, Any]) -> list[dict[str, Any]]:
     -log10(bound / term scale) / seconds (the exact evaluation: residual 0, digits unbounded)."""
     out = []
     for fam, sec in doc["families"].items():
-        for prec in ("float64", "mpmath30", "mpmath50", "mpmath100", "exact"):
+        for prec in ("float64", "ball", "mpmath30", "mpmath50", "mpmath100", "exact"):
             pts = [x for x in sec.get("against_precision", []) if x["precision"] == prec and x.get("status") == "ok"]
             if not pts:
                 continue
@@ -860,8 +904,9 @@ def markdown(doc: dict[str, Any]) -> str:
              f"({doc.get('seconds', '?')} s).", "",
              "For one representative claim per family: time against n for every method (each run in a budgeted "
              "worker), the observed residual against n up to n = 200 next to the error model's predicted bound "
-             "e, at float64, mpmath with 30, 50 and 100 digits, and exactly (rational arithmetic at the same "
-             "point).  For a true statement the exact residual is 0, so the observed |residual| is the rounding "
+             "e, at float64, mpmath with 30, 50 and 100 digits, in ball arithmetic (the ball method: arb at 53 to 424 "
+             "bits, a rigorous bound of every entry at the same exact point) and exactly (rational arithmetic at "
+             "the same point); the error-against-time panel puts float64, ball and exact side by side.  For a true statement the exact residual is 0, so the observed |residual| is the rounding "
              "error and must never exceed its bound; up to the size where the exact evaluation is affordable "
              "the computed residual is also compared entry by entry with the exact one (|computed − exact| ≤ e). "
              f"**{len(doc['violations'])} evaluations exceeded their bound** (any would be a bug of the error "
@@ -888,21 +933,21 @@ def markdown(doc: dict[str, Any]) -> str:
             lines += ["where each series stopped:", ""] + [f"- {s}" for s in sec["stops"]] + [""]
         if sec["times"]:
             ns = sorted({rec["n"] for rec in sec["times"]})
-            lines += ["time against n, seconds per run (r = ceil(n/2) / r = n)", "",
+            lines += ["time against n, seconds per run (r = 2 / r = ceil(n/2); the cost model's series)", "",
                       "| method | " + " | ".join(f"n = {n}" for n in ns) + " |",
                       "| --- | " + " | ".join("---:" for _ in ns) + " |"]
-            for method in ("exact", "rational", "modular", "float"):
+            for method in ("exact", "rational", "modular", "float", "ball"):
                 cells = []
                 for n in ns:
-                    half = [x for x in sec["times"] if x["method"] == method and x["n"] == n and x["r"] == (n + 1) // 2]
-                    full = [x for x in sec["times"] if x["method"] == method and x["n"] == n and x["r"] == n
-                            and n > 1]
+                    two_ = [x for x in sec["times"] if x["method"] == method and x["n"] == n and x["r"] == 2]
+                    half_ = [x for x in sec["times"] if x["method"] == method and x["n"] == n
+                             and x["r"] == (n + 1) // 2 and x["r"] != 2]
                     text = "/".join(f"{x[0]['seconds']:.3g}" + ("" if x[0]["verdict"] not in ("inconclusive", "error")
-                                                                 else "!") for x in (half, full) if x)
-                    cells.append(text or "-")
+                                                                 else "!") if x else "-" for x in (two_, half_))
+                    cells.append("-" if text == "-/-" else text)
                 if any(c != "-" for c in cells):
                     lines.append(f"| {method} | " + " | ".join(cells) + " |")
-            lines += ["", "(! : not decided within the run's budget)", ""]
+            lines += ["", "(! : not decided within the run's cap)", ""]
         reach = {}
         for rec in sec["times"]:
             if rec["verdict"] not in ("inconclusive", "error"):
@@ -931,14 +976,25 @@ def markdown(doc: dict[str, Any]) -> str:
                      f"{_fmt(t['max_bound'])} | {t['seconds']:.4f} | {dtext} | {ptext} | "
                      f"{'-' if t.get('relative_digits') is None else format(t['relative_digits'], '.1f')} |")
     lines += ["", "## Cost model", "",
-              "Fitted per method and family: t(n) = exp(a) n^b seconds, raised to lie above every measured point "
-              "(`stiefelsym/costmodel.json`; `verify --budget` refuses a run predicted beyond it).", "",
+              "Measured per method and family on the family's representative claim, at r = 2 and r = ceil(n/2), "
+              "from n = 4 up to the largest n each method reaches within the cap (each run in a fresh worker "
+              "process with one BLAS thread; the cap is 20 s per run on this shared machine, against the 60 s "
+              "the issue allows, and the sizes stop at n = 4096).  Fitted per method and family by a sum of "
+              "monomials in n and r with nonnegative coefficients (a fixed cost, n r and n r² for n × r blocks, "
+              "n² for the entries of n × n matrices, n² r and n³ for their products; the symbolic methods to "
+              "degree 8) minimizing the relative error; the peak memory of a run likewise with the terms 1, "
+              "n r, n² (`stiefelsym/costmodel.json`; `verify --budget` and `verify --memory` refuse a run "
+              "predicted beyond them).  The fit is reproducible from the stored measurements: `stiefelsym speed "
+              "--cost-only --records stiefelsym/costmodel.json --report-dir reports/speed --model-file "
+              "stiefelsym/costmodel.json`.", "",
               "![cost model](costmodel.png)", "", table(doc["costmodel"]), "",
               *_accuracy_lines(doc.get("accuracy")),
               f"Claims other than the five measured ones are predicted as their kind's family times a factor "
               f"calibrated on the catalog's own runs (`claim_factors`, "
               f"{len(doc['costmodel'].get('claim_factors') or {})} "
-              f"claims: the worst ratio of a claim's time to its family's prediction); a claim never timed gets "
+              f"claims: at (n, r), the worst ratio of the claim's time to its family's prediction over its runs at "
+              f"n' <= n, r' <= r, so never below what a smaller run took, relatively); a claim never timed gets "
               f"{UNKNOWN_CLAIM_FACTOR:g} times the slowest family.", "",
+              *_catalog_accuracy_lines(doc["costmodel"].get("catalog_accuracy")),
               "Hard cases: [hard.md](hard.md).", ""]
     return "\n".join(lines)

@@ -84,6 +84,9 @@ def test_committed_report_has_no_residual_over_its_bound():
                     continue
                 seen += 1
                 assert not r.get("exceed") and not r.get("exceed_exact"), (fam, r)
+                if r["precision"] == "ball":      # an enclosure: no observed residual beside its bound
+                    assert r["max_residual"] is None and r["resolved"], (fam, r)
+                    continue
                 assert float(r["max_residual"]) <= float(r["max_bound"]), (fam, r)
                 if isinstance(r.get("max_actual_error"), float):
                     assert r["max_actual_error"] <= r["max_bound"], (fam, r)
@@ -149,7 +152,7 @@ def test_speed_quick_writes_its_files(run, tmp_path):
     doc = json.loads((d / "speed.json").read_text())
     assert doc["violations"] == [] and doc["hard_wrong"] == []
     precs = {r["precision"] for r in doc["families"]["lax"]["against_precision"]}
-    assert precs == {"float64", "mpmath30", "mpmath50", "mpmath100", "exact"}
+    assert precs == {"float64", "mpmath30", "mpmath50", "mpmath100", "ball", "exact"}
     assert doc["tradeoffs"] and "Hard sizes" in (d / "hard.md").read_text()
 
 
@@ -173,3 +176,49 @@ def test_every_hard_case_rewrites_some_parameter(catalog):
                                  claims=[catalog.get(cid)], timeout=60)
             touched += [r["touched"] for r in rows]
         assert any(touched), case
+
+
+def test_cost_model_refit_from_its_records_is_byte_for_byte(run, tmp_path):
+    """stiefelsym speed --cost-only --records refits the stored measurements: the same cost model file and the
+    same plot of predicted against measured as committed.  The control: one measurement changed gives
+    another fit; a file without measurements is refused (exit 2, one line, no traceback)."""
+    pytest.importorskip("matplotlib")
+    from pathlib import Path
+    root = Path(__file__).resolve().parents[1]
+    stored = root / "stiefelsym" / "costmodel.json"
+    for f in ("all/results.json", "results.json"):           # the catalog runs the claims are calibrated on
+        (tmp_path / "reports" / f).parent.mkdir(parents=True, exist_ok=True)
+        (tmp_path / "reports" / f).write_bytes((root / "reports" / f).read_bytes())
+    out = run("speed", "--cost-only", "--records", str(stored), "--report-dir", str(tmp_path / "a"),
+              "--model-file", str(tmp_path / "model.json"))
+    assert out.exit_code == 0, out.output
+    assert (tmp_path / "model.json").read_bytes() == stored.read_bytes()
+    for name in ("costmodel.json", "costmodel-accuracy.png", "costmodel.png"):
+        assert (tmp_path / "a" / name).read_bytes() == (root / "reports" / "speed" / name).read_bytes(), name
+    doc = json.loads(stored.read_text())
+    rec = next(r for r in doc["records"] if r["method"] == "float" and r["n"] >= 64)
+    rec["seconds"] *= 10
+    (tmp_path / "changed.json").write_text(json.dumps(doc))
+    out = run("speed", "--cost-only", "--records", str(tmp_path / "changed.json"), "--report-dir", str(tmp_path / "b"),
+              "--model-file", str(tmp_path / "model2.json"))
+    assert out.exit_code == 0, out.output
+    assert (tmp_path / "model2.json").read_bytes() != stored.read_bytes()
+    (tmp_path / "empty.json").write_text("{}")
+    out = run("speed", "--cost-only", "--records", str(tmp_path / "empty.json"), "--report-dir", str(tmp_path / "c"))
+    assert out.exit_code == 2 and "holds no cost model measurements" in out.output
+    assert "Traceback" not in out.output
+    for bad in (["--cost-only", "--hard-only"], ["--cost-only", "--records", str(stored), "--cap", "5"]):
+        out = run("speed", *bad, "--report-dir", str(tmp_path / "d"))
+        assert out.exit_code == 2 and "Traceback" not in out.output and "--" in out.output, bad
+
+
+def test_ball_evaluation_bounds_a_true_claim_and_not_a_corrupted_one(catalog):
+    """The ball column of the speed-against-error plots: a rigorous bound for a true claim at the float
+    method's point (below float64's error-model bound there); the control, the corrupted LA1, gets an
+    enclosure that excludes 0, never a bound."""
+    c = catalog.get("neumann-lax")
+    rec = sp.evaluate_ball(c, 8, 2)
+    assert rec["status"] == "ok" and rec["bits"] == "arb53" and 0 < rec["max_bound"] < 1e-9
+    assert rec["max_bound"] <= sp.evaluate(c, 8, 2)["max_bound"]
+    bad = sp.evaluate_ball(sp.control_claim(), 8, 2)
+    assert bad["status"] == "bad" and not bad["resolved"]
