@@ -636,6 +636,20 @@ class DegreeField(Field):
         self.constants: set[Fraction] = set()
         self.constant_bits = 0.0
 
+    def record(self) -> tuple:
+        """What the markers met so far (denominator factors, constants), copied: see :meth:`restore`."""
+        nxt = next(self._ids)
+        self._ids = itertools.count(nxt)
+        return (dict(self.factor_degree), dict(self.factor_height), nxt, dict(self._const_factor),
+                set(self.constants), self.constant_bits)
+
+    def restore(self, rec: tuple) -> None:
+        """Back to a :meth:`record` (the markers made since then still read their own factors)."""
+        fd, fh, nxt, cf, consts, bits = rec
+        self.factor_degree, self.factor_height = dict(fd), dict(fh)
+        self._ids = itertools.count(nxt)
+        self._const_factor, self.constants, self.constant_bits = dict(cf), set(consts), bits
+
     def new_factor(self, degree: int, height: float = 0.0) -> int:
         k = next(self._ids)
         self.factor_degree[k] = max(degree, 0)

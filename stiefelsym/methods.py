@@ -15,7 +15,6 @@ and a check without entries is an error under every method.
 """
 from __future__ import annotations
 
-import copy
 import math
 import random
 import weakref
@@ -857,16 +856,16 @@ class PointLoan:
         return out
 
 
-def _field_state(f: Any) -> dict | None:
+def _field_state(f: Any) -> tuple | None:
     """The mutable record of a field (a paired field's degree markers: the denominators and constants
     met), copied; None for a field that keeps none."""
     degrees = getattr(f, "degrees", None)
-    return copy.deepcopy(degrees.__dict__) if degrees is not None else None
+    return degrees.record() if degrees is not None else None
 
 
-def _restore_field(f: Any, state: dict | None) -> None:
+def _restore_field(f: Any, state: tuple | None) -> None:
     if state is not None:
-        f.degrees.__dict__.update(copy.deepcopy(state))
+        f.degrees.restore(state)
 
 
 _LOAN: PointLoan | None = None
