@@ -24,6 +24,7 @@ from .results import CheckOutcome, Result
 from .free import FreeScene, FreeSolveError, NeedsCoordinates, RewritingError
 from .free.algebra import REFUSED, OperatorLetter, recording, refusals
 from .free.certificates import CertificateWriter
+from .free.columns import COMPLETE
 from .free.rewriting import latex_text
 from .latex import tex_text, unicode_name
 from .ir import TraceRefused
@@ -43,7 +44,8 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
     if claim.expect == "nonzero":
         return undecided("rewriting proves vanishing only; a nonvanishing statement needs a witness")
     try:
-        scene = FreeScene(realization=claim.realization, lazy=True)
+        # a claim stated at r = 2 alone may name the columns E_1, E_2 of R^2 (E_1E_1^T + E_2E_2^T = I_r)
+        scene = FreeScene(realization=claim.realization, lazy=True, columns=at_r_2(claim))
     except NeedsCoordinates as exc:
         return undecided(f"needs coordinates: {exc.what}; decided by the fixed-size methods")
 
@@ -104,6 +106,10 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
         res.reductions.append("a generic symmetric operator AA on so(n) as letters AA(w) = AA(skew w), one per word "
                               "w of its argument (linear, skew); its symmetry tr(AA(u) v) = tr(AA(v) u) as a "
                               "normal form of traces and in gradients; d AA(M) = AA(dM) along flows")
+    if "columns" in scene._extras:
+        res.reductions.append("the columns E_1, E_2 of R^r as letters (r x 1), E_i^T E_j = delta_ij, and, the claim being "
+                              "stated at r = 2 only, E_1 E_1^T + E_2 E_2^T = I_r: every place where a word passes "
+                              "through R^r is written in this basis, and a 1 x 1 piece is its own trace")
     if scene.system.trace_fallbacks:
         return undecided("a trace normal form used a non-canonical representative")
     if open_entries:
@@ -146,11 +152,19 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
     res.verdict = "proved"
     res.seconds = time.perf_counter() - t0
     entries = f"{summary['entries']} residual entr{'y' if summary['entries'] == 1 else 'ies'}"
+    if COMPLETE in summary["hypotheses"]:
+        entries += " (for every n at r = 2, the only r the claim is stated for: it uses E_1E_1^T + E_2E_2^T = I_r)"
     res.certificate = (f"cofactor certificate of {entries} ({summary['terms']} terms "
                        f"in the hypotheses {', '.join(summary['hypotheses']) or '(none)'}), re-checked by the "
                        f"independent checker; every entry has normal form 0; rules "
                        f"applied while building and reducing the residual: {names}")
     return res
+
+
+def at_r_2(claim: Claim) -> bool:
+    """Whether every size the claim is stated for has r = 2 (and there is one)."""
+    sizes = list(claim.sizes)
+    return bool(sizes) and all(z.r == 2 for z in sizes)
 
 
 def needs_text(claim: Claim, func: Callable, refusal: str) -> str:
@@ -204,7 +218,7 @@ def certify_entries(scene, entries) -> dict:
     """The certificate data of the entries (position, reduction, _) of a proof."""
     writer = CertificateWriter(scene._resolvents)
     for pos, red, _k in entries:
-        writer.add(pos, scene.system.certify(red.residual, red.normal_form))
+        writer.add(pos, scene.certify(red.residual, red.normal_form))
     return writer.data()
 
 

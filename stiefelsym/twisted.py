@@ -43,7 +43,11 @@ def _scene(s: Any, what: str) -> Scene:
 
 
 def magnetic_matrix(s) -> Mat:
-    """F = E₁∧E₂ ∈ so(2) (the r×r matrix [[0, 1], [−1, 0]]): ω_mag = Σ_{j<k} F_jk de_j∧de_k = de₁∧de₂."""
+    """F = E₁∧E₂ ∈ so(2) (the r×r matrix [[0, 1], [−1, 0]]): ω_mag = Σ_{j<k} F_jk de_j∧de_k = de₁∧de₂.
+    (Dimension-free, for a claim stated at r = 2 only: E₁E₂ᵀ − E₂E₁ᵀ in the column letters.)"""
+    if _is_free(s):
+        E1, E2 = s.column(0), s.column(1)
+        return s._cached("twisted:F", lambda: E1 @ E2.T - E2 @ E1.T)
     s = _scene(s, "the magnetic form de_1 ∧ de_2 (a constant element of so(2))")
     if s.r != 2:
         raise ValueError(f"the magnetic form de_1 ∧ de_2 lives on V(n, 2), not on V({s.n}, {s.r})")
@@ -220,7 +224,7 @@ def _free_flow(s, H: Function, F: Mat | None) -> Flow:
     """The twisted flow in the free algebra: Ẋ = H_P − XΠ, Ṗ = −H_X − εẊF + XΛ + PΠ, with Π, Λ solved
     from d/dt(XᵀX) = 0 and d/dt(XᵀP + PᵀX) = 0 (the same construction as the scene's Dirac flows)."""
     if F is None:
-        raise NeedsCoordinates("the magnetic form de_1 ∧ de_2 (a constant element of so(2))")
+        F = magnetic_matrix(s)   # the columns E_1, E_2 of a claim at r = 2 (refused otherwise)
     from .free.scene import LAMBDA, PI, P as LP, X as LX, _w, solve_multipliers
     from .free.algebra import substitute
 
@@ -270,7 +274,8 @@ def multiplier_flow(s, H: Function, F: Mat | None = None) -> Flow:
 def form(s, u: Mapping[str, Mat], v: Mapping[str, Mat], F: Mat | None = None) -> Any:
     """ω_ε(u, v) = (u_P, v_X) − (u_X, v_P) + ε Σ F_jk (u_j, v_k) for tangent vectors u, v (dicts with
     components "X", "P"); the canonical part is ω₀ = Σ dp∧de, the magnetic part ε Σ_{j<k} F_jk de_j∧de_k."""
-    s = _scene(s, "the twisted symplectic form")
+    if not _is_free(s):
+        s = _scene(s, "the twisted symplectic form")
     Fm = _field_strength(s, F)
     uX, uP, vX, vP = u["X"], u["P"], v["X"], v["P"]
     return s.field.normalize(s.tr(uP.T @ vX) - s.tr(uX.T @ vP) + s.eps * s.tr(uX @ Fm @ vX.T))
@@ -278,7 +283,10 @@ def form(s, u: Mapping[str, Mat], v: Mapping[str, Mat], F: Mat | None = None) ->
 
 def basis_vector(s, i: int) -> Mat:
     """E_{i+1} ∈ ℝʳ as a column (index space ("r", "?")), so that XE_{i+1} = e_{i+1}: the appendix writes
-    its flows column by column.  The dimension-free backend has no columns (NeedsCoordinates)."""
+    its flows column by column.  The dimension-free backend has the columns E₁, E₂ as letters for a
+    claim stated at r = 2 only (NeedsCoordinates otherwise)."""
+    if _is_free(s):
+        return s.column(i)
     s = _scene(s, f"the column e_{i + 1} = X E_{i + 1} (a basis vector of R^r)")
     if not 0 <= i < s.r:
         raise ValueError(f"E_{i + 1} is not a basis vector of R^{s.r}")
@@ -340,6 +348,6 @@ __all__ = ["magnetic_matrix", "ambient_bracket", "constraint_bracket_matrix", "b
 # the functions that need the engine's scene (its number system, its gradients and multipliers) are
 # single steps of a claim's graph; the coordinate helpers above are traced with the claim
 for _name in ("magnetic_matrix", "ambient_bracket", "constraint_bracket_matrix", "bracket", "ambient_flow", "flow",
-              "multiplier_flow", "form"):
+              "multiplier_flow", "form", "basis_vector"):
     globals()[_name] = primitive(globals()[_name])
 at_point = primitive(at_point, returns="scene")

@@ -26,9 +26,10 @@ from ..scene import USER_SCALAR, Flow, PaperObjects, _number, map_entries
 from .algebra import (Letter, NCPoly, NeedsCoordinates, OperatorLetter, apply_operator, as_coef, coef_latex, derivation,
                       letter_pair, record_refusal, refuse, skew_letter, substitute, symmetric_letter, trace)
 from .mat import FreeBackend, FreeDualBackend, entry_of, one_block
-from .rewriting import (_NONZERO_NUMBER_TYPES, _SIMPLE, Cofactor, Hypothesis, Order, Reduction, RewritingSystem,
-                        SharedMemos, nonzero_terms, simplify_coef)
+from .rewriting import (_NONZERO_NUMBER_TYPES, _SIMPLE, Certificate, Cofactor, Hypothesis, Order, Reduction,
+                        RewritingError, RewritingSystem, SharedMemos, nonzero_terms, simplify_coef)
 from .traces import gradient
+from .columns import COLUMNS, COMPLETE, COVECTORS, canonical, column_hypotheses
 
 Function = Callable[[Any], Any]
 
@@ -46,6 +47,7 @@ AINV = symmetric_letter("Ainv", "n", "A^{-1}")
 PI = symmetric_letter("Pi", "r", r"\Pi")
 LAMBDA = symmetric_letter("Lambda", "r", r"\Lambda")
 
+SCALAR_T = "1"
 COND_XX = "X^T X = I_r (cond_XP)"
 COND_XP = "X^T P + P^T X = 0 (cond_XP)"
 
@@ -115,6 +117,8 @@ def hypothesis(name: str, R: Letter | None = None, mu: Any = None) -> Hypothesis
         "AAinv": lambda: _w(A, AINV) - _i("n"),
         "AinvA": lambda: _w(AINV, A) - _i("n"),
     }
+    if name not in polys:
+        return column_hypotheses()[name]
     return Hypothesis(name, polys[name]())
 
 
@@ -316,7 +320,7 @@ class FreeScene(PaperObjects):
     realization = "standard"  # (cond_XP); other realizations raise NeedsCoordinates
 
     def __init__(self, tracker: CoordinateTracker | None = None, system: RewritingSystem | None = None,
-                 realization: str = "standard", lazy: bool = False) -> None:
+                 realization: str = "standard", lazy: bool = False, columns: bool = False) -> None:
         if realization != "standard":
             raise NeedsCoordinates(f"the {realization!r} realization of T*V (its multipliers solve a "
                                    "Sylvester equation)")
@@ -330,6 +334,8 @@ class FreeScene(PaperObjects):
         self._resolvents: dict[Letter, Any] = {}
         self._extras: set[str] = set()
         self._named: dict[str, Letter] = {}
+        #: r = 2 is given (the claim is stated for V(n, 2) only): the columns E_1, E_2 are letters
+        self.columns = columns
 
     field = property(lambda self: self._field, doc="the free algebra (read-only)")
     tracker = property(lambda self: self._tracker, doc="the record of looks at coordinates (read-only)")
@@ -423,6 +429,30 @@ class FreeScene(PaperObjects):
     def Q(self) -> Mat:
         self._second_point()
         return self._letter(Q)
+
+    def _column_letters(self) -> None:
+        if "columns" not in self._extras:
+            self._extras.add("columns")
+            for L in COLUMNS + COVECTORS:
+                self.system.order.add(L)
+            hyps = column_hypotheses()
+            for i, Eit in enumerate(COVECTORS, start=1):
+                for j, Ej in enumerate(COLUMNS, start=1):
+                    rhs = _i(SCALAR_T) if i == j else NCPoly.zero(SCALAR_T, SCALAR_T)
+                    self.system.add_rule((Eit, Ej), rhs, f"E_{i}^T E_{j} = {int(i == j)} (the basis of R^r)",
+                                         name=f"E{i}tE{j}", cofactors=[_by(hyps[f"E{i}tE{j}"])])
+
+    def column(self, i: int) -> Mat:
+        """E_{i+1} ∈ ℝʳ (i = 0, 1) as an r×1 letter, for a claim stated at r = 2 only (the scene was made
+        with ``columns``: E₁E₁ᵀ + E₂E₂ᵀ = I_r is then a hypothesis of its normal forms)."""
+        if not self.columns:
+            raise refuse(f"the column e_{i + 1} = X E_{i + 1} (a basis vector of R^r) for every r", self.tracker)
+        if i not in (0, 1):
+            raise ValueError(f"E_{i + 1} is not a basis vector of R^2")
+        self._column_letters()
+        L = COLUMNS[i]
+        self._named.setdefault(str(L), L)
+        return self._cached(f"column:{i}", lambda: self._const_block(_w(L), ("r", "?")))
 
     @property
     def Ainv(self) -> Mat:
@@ -585,6 +615,11 @@ class FreeScene(PaperObjects):
 
     def _const_mat(self, p: NCPoly) -> Mat:
         return one_block(p, self.field, p.shape, self.tracker)
+
+    def _const_block(self, p: NCPoly, tags: tuple) -> Mat:
+        """A constant of the scene (constant along every flow) with the given index spaces."""
+        x = Dual(p, NCPoly.zero(p.row, p.col)) if isinstance(self.field, DualField) else p
+        return one_block(x, self.field, tags, self.tracker)
 
     def tr(self, M: Any) -> Any:
         if isinstance(M, Mat):
@@ -791,8 +826,44 @@ class FreeScene(PaperObjects):
         return self.d(F, self.dirac_flow(G))
 
     def reduce(self, x: Any) -> Reduction:
-        """Normal form of one entry with the rules used (for reports)."""
-        return self.system.reduce(x if isinstance(x, NCPoly) else NCPoly.scalar(x))
+        """Normal form of one entry with the rules used (for reports); with the columns of V(n, 2),
+        the canonical form of :mod:`.columns` and the rules in turn until neither changes it."""
+        p = x if isinstance(x, NCPoly) else NCPoly.scalar(x)
+        if "columns" not in self._extras:
+            return self.system.reduce(p)
+        rules: list = []
+        q = p
+        for _ in range(self.system.max_depth):
+            c, _cert = canonical(q, self._complete())
+            red = self.system.reduce(c)
+            rules += [r for r in red.rules if r not in rules]
+            if red.normal_form == q:
+                return Reduction(p, red.normal_form, rules)
+            q = red.normal_form
+        raise RewritingError("the canonical form of the columns and the rules do not settle")
+
+    def _complete(self) -> Hypothesis:
+        return column_hypotheses()[COMPLETE]
+
+    def certify(self, p: NCPoly, normal_form: NCPoly) -> Certificate:
+        """p − nf(p) through the hypotheses (see :meth:`RewritingSystem.certify`); with the columns,
+        the resolutions of :func:`.columns.canonical` and the rules' steps, in the order of :meth:`reduce`."""
+        if "columns" not in self._extras:
+            return self.system.certify(p, normal_form)
+        terms: list = []
+        q = p
+        for _ in range(self.system.max_depth):
+            c, cert = canonical(q, self._complete())
+            terms += cert
+            step = self.system.certify(c)
+            terms += step.terms
+            if step.normal_form == q:
+                q = step.normal_form
+                break
+            q = step.normal_form
+        if q != normal_form:
+            raise RewritingError("the certificate's normal form is not the reduction's")
+        return Certificate(p, q, terms)
 
 
 class FreeTangentScene(FreeScene):
@@ -807,6 +878,7 @@ class FreeTangentScene(FreeScene):
         self._resolvents = base._resolvents
         self._extras = base._extras
         self._named = base._named
+        self.columns = base.columns
 
     def _prim(self, key: str, poly: NCPoly) -> Mat:
         dot = self.flow.get(key)
