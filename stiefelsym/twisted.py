@@ -23,7 +23,7 @@ import copy
 from typing import Any, Callable, Mapping
 
 from .fields import DegenerateError, Dual, DualField
-from .matrix import Mat, NeedsCoordinates, _refused
+from .matrix import Mat, _refused
 from .scene import Flow, Scene
 from .ir.trace import TraceScene, primitive
 

@@ -1,0 +1,206 @@
+"""The columns E₁, E₂ of ℝʳ as letters of the free algebra, for claims stated at r = 2 only: E_iᵀE_j = δ_ij
+as rules, E₁E₁ᵀ + E₂E₂ᵀ = I_r as a canonical form (a hypothesis true at r = 2 alone), 1×1 pieces as
+traces.  The magnetic claims of Appendix 1 are then proved for every n at r = 2; corrupted copies of them
+are not, a claim stated for other r gets no columns, and the checker rejects forged certificates."""
+import copy
+import dataclasses
+
+import pytest
+
+from stiefelsym import admissible, comm
+from stiefelsym import twisted
+from stiefelsym.certificate_check import check_certificate
+from stiefelsym.claims import load_catalog
+from stiefelsym.free import FreeScene
+from stiefelsym.free.mat import entry_of
+from stiefelsym.free_method import run_free
+from stiefelsym.matrix import Mat
+from stiefelsym.proofs import app1_magnetic_neumann as m
+from stiefelsym.proofs.sec5_neumann import H_neumann_euclidean
+
+CATALOG = load_catalog()
+BASE = CATALOG.get("magnetic-momentum-map")
+R2 = "E1E1t+E2E2t"
+
+MAGNETIC = ["magnetic-form-kirillov-kostant", "magnetic-momentum-map", "magnetic-euclidean-flow",
+            "magnetic-normal-flow", "magnetic-psi12-conserved", "magnetic-prep", "magnetic-lax",
+            "magnetic-grassmannian-momentum", "magnetic-spectral-invariants", "twisted-form-closed"]
+
+
+def _zero(s, M):
+    return s.field.is_zero(entry_of(M) if isinstance(M, Mat) else M) if not s.columns else \
+        s.reduce(entry_of(M) if isinstance(M, Mat) else M).is_zero
+
+
+def _proved(res):
+    assert res.verdict == "proved", res.message
+    report = check_certificate(res.certificate_data)
+    assert report.accepted, report.message
+    return res
+
+
+def at_sizes(claim, **kw):
+    return dataclasses.replace(claim, sizes=admissible(**kw))
+
+
+# -- the claims of the paper ---------------------------------------------------------------------------
+@pytest.mark.parametrize("cid", MAGNETIC)
+def test_magnetic_claims_are_proved_for_every_n_at_r_2(cid):
+    res = _proved(run_free(CATALOG.get(cid)))
+    if R2 in res.certificate_data["summary"]["hypotheses"]:
+        assert "r = 2" in res.certificate and "r = 2" in check_certificate(res.certificate_data).message
+
+
+# -- the letters and their rules ------------------------------------------------------------------------
+def test_the_columns_are_orthonormal_and_complete_at_r_2():
+    s = FreeScene(columns=True)
+    E1, E2 = s.column(0), s.column(1)
+    assert _zero(s, s.tr(E1.T @ E1) - 1) and _zero(s, s.tr(E1.T @ E2))
+    assert _zero(s, E1 @ E1.T + E2 @ E2.T - s.Ir)
+    assert _zero(s, s.X @ s.X.T - s.X @ E1 @ E1.T @ s.X.T - s.X @ E2 @ E2.T @ s.X.T)
+    assert _zero(s, s.tr(E1.T @ s.eta @ E1))                       # η skew
+    assert not _zero(s, s.tr(E1.T @ s.eta @ E2))
+    assert not _zero(s, s.X @ s.X.T - s.X @ E1 @ E1.T @ s.X.T)     # a dropped column
+    assert not _zero(s, E1 @ E2.T - E2 @ E1.T)
+    assert not _zero(s, s.tr(s.X.T @ s.A @ s.X) - s.tr(E1.T @ s.X.T @ s.A @ s.X @ E1))
+
+
+def test_without_r_2_there_are_no_columns():
+    s = FreeScene()
+    with pytest.raises(Exception):
+        s.column(0)
+    claim = at_sizes(BASE, n_max=5, n_min=3, r_min=2, r_max=3)     # stated at r = 3 too
+    res = run_free(claim, lambda t: {"XX^T": t.X @ t.X.T - m.col(t, 0) @ m.col(t, 0).T - m.col(t, 1) @ m.col(t, 1).T})
+    assert res.verdict == "undecided", res.message
+
+
+def test_an_identity_of_r_2_is_proved_at_r_2_only():
+    """XXᵀ = e₁e₁ᵀ + e₂e₂ᵀ holds on V(n, 2), not on V(n, 3)."""
+    func = lambda t: {"XX^T": t.X @ t.X.T - m.col(t, 0) @ m.col(t, 0).T - m.col(t, 1) @ m.col(t, 1).T}  # noqa: E731
+    _proved(run_free(BASE, func))
+    assert run_free(at_sizes(BASE, n_max=5, n_min=3, r_min=3, r_max=3), func).verdict != "proved"
+
+
+# -- negative controls: corrupted claims are not proved -------------------------------------------------
+def momentum_map_swapped(s):
+    e1, e2, p1, p2 = m.col(s, 0), m.col(s, 1), m.pcol(s, 0), m.pcol(s, 1)
+    return {"Phi_eps": m.Phi_eps(s) - (m.wedge(p1, e1) + m.wedge(p2, e2) + s.eps * m.wedge(e2, e1))}
+
+
+def momentum_map_dropped(s):
+    e1, p1 = m.col(s, 0), m.pcol(s, 0)
+    return {"Phi_eps": m.Phi_eps(s) - (m.wedge(p1, e1) + s.eps * m.wedge(e1, m.col(s, 1)))}
+
+
+def euclidean_flow_lorentz_sign(s):
+    """(mag-euk) with the Lorentz force −εp₂ in ṗ₁."""
+    A, eps = s.A, s.eps
+    e1, e2, p1, p2 = m.col(s, 0), m.col(s, 1), m.pcol(s, 0), m.pcol(s, 1)
+    d = lambda x, y: m.dot(s, x, y)  # noqa: E731
+    p1dot = (-(A @ e1) + (d(e1, A @ e1) - d(p1, p1) - eps * d(e1, p2)) * e1
+             + (d(e1, A @ e2) - d(p1, p2)) * e2 - eps * p2)
+    return {"dp1/dt": twisted.flow(s, H_neumann_euclidean).Pdot @ m.unit(s, 0) - p1dot}
+
+
+def euclidean_flow_swapped_columns(s):
+    """(mag-euk) with (e₁, Ae₁) in place of (e₂, Ae₂) in ṗ₂."""
+    A, eps = s.A, s.eps
+    e1, e2, p1, p2 = m.col(s, 0), m.col(s, 1), m.pcol(s, 0), m.pcol(s, 1)
+    d = lambda x, y: m.dot(s, x, y)  # noqa: E731
+    p2dot = (-(A @ e2) + (d(e1, A @ e2) - d(p1, p2)) * e1
+             + (d(e1, A @ e1) - d(p2, p2) + eps * d(e2, p1)) * e2 - eps * p1)
+    return {"dp2/dt": twisted.flow(s, H_neumann_euclidean).Pdot @ m.unit(s, 1) - p2dot}
+
+
+def prep_without_magnetic_term(s):
+    flow = twisted.flow(s, H_neumann_euclidean)
+    return {"dPhi/dt": s.d(lambda t: t.Phi, flow) - comm(s.X @ s.X.T, s.A)}
+
+
+def lax_with_phi(s):
+    flow = twisted.flow(s, H_neumann_euclidean)
+    L = lambda t: t.lam * t.Phi + t.X @ t.X.T - t.lam * t.lam * t.A  # noqa: E731
+    return {"LA1": s.d(L, flow) - comm(s.Phi - s.lam * s.A, L(s))}
+
+
+def psi12_not_invariant(s):
+    """Ψ₁₂ along the twisted flow of H + (e₁, Ae₁), which is not right SO(2)-invariant."""
+    H = lambda t: H_neumann_euclidean(t) + m.dot(t, m.col(t, 0), t.A @ m.col(t, 0))  # noqa: E731
+    return {"dPsi/dt": s.d(m.psi12, twisted.flow(s, H))}
+
+
+def form_sign(s):
+    zero = s.zeros(s.n, s.r, ("n", "r"))
+    along = lambda a: {"X": a, "P": zero}  # noqa: E731
+    return {"omega": twisted.form(s, along(s.xi @ s.X), along(s.zeta @ s.X))
+            - s.eps * s.killing(m.e1e2(s), comm(s.xi, s.zeta))}
+
+
+@pytest.mark.parametrize("func", [momentum_map_swapped, momentum_map_dropped, euclidean_flow_lorentz_sign,
+                                  euclidean_flow_swapped_columns, prep_without_magnetic_term, lax_with_phi,
+                                  psi12_not_invariant, form_sign])
+def test_a_corrupted_magnetic_claim_is_not_proved(func):
+    assert run_free(BASE, func).verdict in ("undecided", "fails")
+
+
+# -- the independent checker ----------------------------------------------------------------------------
+def _complete_claim(s):
+    return {"XX^T": s.X @ s.X.T - m.col(s, 0) @ m.col(s, 0).T - m.col(s, 1) @ m.col(s, 1).T,
+            "(e1, e2) + (e2, p2)": m.dot(s, m.col(s, 0), m.col(s, 1)) + m.dot(s, m.col(s, 1), m.pcol(s, 1))}
+
+
+@pytest.fixture(scope="module")
+def certificate():
+    res = _proved(run_free(BASE, _complete_claim))
+    hyps = res.certificate_data["summary"]["hypotheses"]
+    assert R2 in hyps and "E1tE2" in hyps
+    return res.certificate_data
+
+
+def _terms(data, hyp):
+    return [t for e in data["entries"] for t in e["terms"] if t["hyp"] == hyp]
+
+
+def test_the_checker_says_r_2(certificate):
+    assert "r = 2" in check_certificate(certificate).message
+
+
+def test_the_checker_rejects_a_flipped_coefficient(certificate):
+    data = copy.deepcopy(certificate)
+    t = _terms(data, R2)[0]
+    t["coef"] = f"-({t['coef']})"
+    assert not check_certificate(data).accepted
+
+
+@pytest.mark.parametrize("name, other", [("E1tE2", "E1tE1"), ("E1tE2", "E2tE2"), (R2, "XtX")])
+def test_the_checker_rejects_another_hypothesis(certificate, name, other):
+    data = copy.deepcopy(certificate)
+    for t in _terms(data, name):
+        t["hyp"] = other
+    assert not check_certificate(data).accepted
+
+
+def test_the_checker_rejects_swapped_columns_in_the_residual(certificate):
+    data = copy.deepcopy(certificate)
+    entry = data["entries"][0]
+    t = next(t for t in entry["residual"] if "E1" in t["word"])
+    t["word"] = ["E2" if x == "E1" else "E2t" if x == "E1t" else x for x in t["word"]]
+    assert not check_certificate(data).accepted
+
+
+def test_the_checker_types_the_columns(certificate):
+    data = copy.deepcopy(certificate)
+    for t in _terms(data, R2):
+        t["left"] = t["left"] + ["E1t"]     # a path through the scalar object that does not close
+    assert not check_certificate(data).accepted
+    data = copy.deepcopy(certificate)
+    data["letters"] = {"E1": {"kind": "generic", "row": "r", "col": "n", "transpose": "E1t"}}
+    assert not check_certificate(data).accepted
+
+
+def test_the_checker_does_not_take_x_xt_for_the_identity(certificate):
+    """Without the uses of E₁E₁ᵀ + E₂E₂ᵀ = I_r the certificate does not expand to XXᵀ − e₁e₁ᵀ − e₂e₂ᵀ."""
+    data = copy.deepcopy(certificate)
+    for e in data["entries"]:
+        e["terms"] = [t for t in e["terms"] if t["hyp"] != R2]
+    assert not check_certificate(data).accepted
