@@ -24,8 +24,9 @@ rewriting system that found the certificate (it imports nothing of
     letters: tr ξ = 0).
 
 The columns E₁, E₂ of ℝʳ (r×1 letters, E1t, E2t their transposes) come with the hypotheses
-E_iᵀE_j − δ_ij (true for every r ≥ 2) and E₁E₁ᵀ + E₂E₂ᵀ − I_r, which is true at r = 2 only: a
-certificate that uses it proves its entry at r = 2 (for every n), and the report says so.  With
+E_iᵀE_j − δ_ij (true whenever E_i, E_j are columns of I_r) and E₁E₁ᵀ + E₂E₂ᵀ − I_r, which is true at
+r = 2 only (E₁E₁ᵀ − I_r: at r = 1 only): a certificate that uses it proves its entries at that r (for
+every n), and the report says so; one that uses both proves nothing.  With
 them one more structural fact is used: a 1×1 piece of a word is its own trace (u·E_i·(E_jᵀwE_k)·E_lᵀ·v
 = tr(E_jᵀwE_k)·u·E_iE_lᵀ·v, and a trace through the scalar object k times is a product of k traces).
 
@@ -99,11 +100,25 @@ def check_certificate(data: Any) -> CheckReport:
     except (KeyError, TypeError, ValueError, AttributeError, RuntimeError) as exc:
         return CheckReport(False, f"malformed certificate ({type(exc).__name__}: {exc})",
                            seconds=time.perf_counter() - t0)
-    at = ""
-    if any(t.get("hyp") == R2_ONLY for e in entries for t in e["terms"]):
-        at = f" (at r = 2 only: the hypothesis {R2_ONLY} holds exactly there)"
+    used = {t.get("hyp") for e in entries for t in e["terms"]}
+    at = "".join(f" (at r = {k} only: the hypothesis {h} holds exactly there)"
+                 for k, h in ((1, R1_ONLY), (2, R2_ONLY)) if h in used)
+    if R1_ONLY in used and (used & {R2_ONLY, "E2tE2", "E1tE2", "E2tE1"} or _mentions(entries, {"E2", "E2t"})):
+        # at r = 1 there is no E_2: E_2 = E_1E_1^T E_2 = 0 contradicts E_2^T E_2 = 1
+        why = "a certificate that uses E1E1t = I_r (r = 1) has no second column E2 (it would prove anything)"
+        return CheckReport(False, why, seconds=time.perf_counter() - t0)
     return CheckReport(True, f"{len(entries)} entries, {terms} terms: every certificate expands to its residual{at}",
                        len(entries), terms, time.perf_counter() - t0)
+
+
+def _mentions(entries: list, letters: set) -> bool:
+    """Whether a word of the entries (residuals, cofactors, traces) has one of the letters."""
+    for e in entries:
+        for t in e["residual"] + e["terms"]:
+            words = [t.get("word", [])] + list(t.get("traces", [])) + [t.get("left", []), t.get("right", [])]
+            if any(L in letters for w in words for L in w):
+                return True
+    return False
 
 
 # ---------------------------------------------------------------------------
@@ -227,8 +242,8 @@ class Context:
         return (sign, m1) if m1 < m2 else (sign * s, m2)
 
 _ONE, _MINUS = se.Integer(1), se.Integer(-1)
-#: the hypothesis E₁E₁ᵀ + E₂E₂ᵀ = I_r: true at r = 2 only
-R2_ONLY = "E1E1t+E2E2t"
+#: the hypotheses E₁E₁ᵀ = I_r and E₁E₁ᵀ + E₂E₂ᵀ = I_r: true at r = 1, resp. r = 2 only
+R1_ONLY, R2_ONLY = "E1E1t", "E1E1t+E2E2t"
 #: the fixed generators: name -> (row, col, terms)
 HYPOTHESES: dict[str, tuple[str, str, list[tuple[Any, tuple]]]] = {
     "XtX": ("r", "r", [(_ONE, ("Xt", "X")), (_MINUS, ())]),
@@ -241,6 +256,7 @@ HYPOTHESES: dict[str, tuple[str, str, list[tuple[Any, tuple]]]] = {
     "E2tE2": ("1", "1", [(_ONE, ("E2t", "E2")), (_MINUS, ())]),
     "E1tE2": ("1", "1", [(_ONE, ("E1t", "E2"))]),
     "E2tE1": ("1", "1", [(_ONE, ("E2t", "E1"))]),
+    R1_ONLY: ("r", "r", [(_ONE, ("E1", "E1t")), (_MINUS, ())]),
     R2_ONLY: ("r", "r", [(_ONE, ("E1", "E1t")), (_ONE, ("E2", "E2t")), (_MINUS, ())]),
 }
 

@@ -44,8 +44,9 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
     if claim.expect == "nonzero":
         return undecided("rewriting proves vanishing only; a nonvanishing statement needs a witness")
     try:
-        # a claim stated at r = 2 alone may name the columns E_1, E_2 of R^2 (E_1E_1^T + E_2E_2^T = I_r)
-        scene = FreeScene(realization=claim.realization, lazy=True, columns=at_r_2(claim))
+        # a claim stated at one r = 1 or 2 alone may name the columns E_1, ..., E_r of R^r (their sum
+        # E_1E_1^T + ... + E_rE_r^T = I_r is then a hypothesis)
+        scene = FreeScene(realization=claim.realization, lazy=True, columns=fixed_r(claim))
     except NeedsCoordinates as exc:
         return undecided(f"needs coordinates: {exc.what}; decided by the fixed-size methods")
 
@@ -107,9 +108,11 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
                               "w of its argument (linear, skew); its symmetry tr(AA(u) v) = tr(AA(v) u) as a "
                               "normal form of traces and in gradients; d AA(M) = AA(dM) along flows")
     if "columns" in scene._extras:
-        res.reductions.append("the columns E_1, E_2 of R^r as letters (r x 1), E_i^T E_j = delta_ij, and, the claim being "
-                              "stated at r = 2 only, E_1 E_1^T + E_2 E_2^T = I_r: every place where a word passes "
-                              "through R^r is written in this basis, and a 1 x 1 piece is its own trace")
+        k = scene.columns
+        res.reductions.append(f"the columns {', '.join(f'E_{i + 1}' for i in range(k))} of R^r as letters (r x 1), "
+                              f"E_i^T E_j = delta_ij, and, the claim being stated at r = {k} only, "
+                              f"{' + '.join(f'E_{i + 1} E_{i + 1}^T' for i in range(k))} = I_r: every place where a "
+                              "word passes through R^r is written in this basis, and a 1 x 1 piece is its own trace")
     if scene.system.trace_fallbacks:
         return undecided("a trace normal form used a non-canonical representative")
     if open_entries:
@@ -152,8 +155,10 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
     res.verdict = "proved"
     res.seconds = time.perf_counter() - t0
     entries = f"{summary['entries']} residual entr{'y' if summary['entries'] == 1 else 'ies'}"
-    if COMPLETE in summary["hypotheses"]:
-        entries += " (for every n at r = 2, the only r the claim is stated for: it uses E_1E_1^T + E_2E_2^T = I_r)"
+    for k, name in COMPLETE.items():
+        if name in summary["hypotheses"]:
+            entries += (f" (for every n at r = {k}, the only r the claim is stated for: it uses "
+                        f"{' + '.join(f'E_{i + 1}E_{i + 1}^T' for i in range(k))} = I_r)")
     res.certificate = (f"cofactor certificate of {entries} ({summary['terms']} terms "
                        f"in the hypotheses {', '.join(summary['hypotheses']) or '(none)'}), re-checked by the "
                        f"independent checker; every entry has normal form 0; rules "
@@ -161,10 +166,14 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
     return res
 
 
-def at_r_2(claim: Claim) -> bool:
-    """Whether every size the claim is stated for has r = 2 (and there is one)."""
-    sizes = list(claim.sizes)
-    return bool(sizes) and all(z.r == 2 for z in sizes)
+def fixed_r(claim: Claim) -> int:
+    """r when the claim is stated at that one r (its statement's r_min = r_max, not merely its default
+    sizes) and it is 1 or 2, else 0."""
+    spec = claim.sizes
+    lo, hi = getattr(spec, "r_min", None), getattr(spec, "r_max", None)
+    if lo is None or lo != hi or lo not in (1, 2) or any(z.r != lo for z in spec):
+        return 0
+    return lo
 
 
 def needs_text(claim: Claim, func: Callable, refusal: str) -> str:

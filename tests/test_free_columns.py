@@ -1,7 +1,8 @@
 """The columns E₁, E₂ of ℝʳ as letters of the free algebra, for claims stated at r = 2 only: E_iᵀE_j = δ_ij
 as rules, E₁E₁ᵀ + E₂E₂ᵀ = I_r as a canonical form (a hypothesis true at r = 2 alone), 1×1 pieces as
-traces.  The magnetic claims of Appendix 1 are then proved for every n at r = 2; corrupted copies of them
-are not, a claim stated for other r gets no columns, and the checker rejects forged certificates."""
+traces; at r = 1 the same with E₁ alone (every r×r matrix a scalar).  The magnetic claims of Appendix 1
+are then proved for every n at r = 2, the Poisson sphere's flow at r = 1; corrupted copies of them are
+not, a claim stated for other r gets no columns, and the checker rejects forged certificates."""
 import copy
 import dataclasses
 
@@ -28,8 +29,7 @@ MAGNETIC = ["magnetic-form-kirillov-kostant", "magnetic-momentum-map", "magnetic
 
 
 def _zero(s, M):
-    return s.field.is_zero(entry_of(M) if isinstance(M, Mat) else M) if not s.columns else \
-        s.reduce(entry_of(M) if isinstance(M, Mat) else M).is_zero
+    return s.reduce(entry_of(M) if isinstance(M, Mat) else M).is_zero
 
 
 def _proved(res):
@@ -53,7 +53,7 @@ def test_magnetic_claims_are_proved_for_every_n_at_r_2(cid):
 
 # -- the letters and their rules ------------------------------------------------------------------------
 def test_the_columns_are_orthonormal_and_complete_at_r_2():
-    s = FreeScene(columns=True)
+    s = FreeScene(columns=2)
     E1, E2 = s.column(0), s.column(1)
     assert _zero(s, s.tr(E1.T @ E1) - 1) and _zero(s, s.tr(E1.T @ E2))
     assert _zero(s, E1 @ E1.T + E2 @ E2.T - s.Ir)
@@ -203,4 +203,54 @@ def test_the_checker_does_not_take_x_xt_for_the_identity(certificate):
     data = copy.deepcopy(certificate)
     for e in data["entries"]:
         e["terms"] = [t for t in e["terms"] if t["hyp"] != R2]
+    assert not check_certificate(data).accepted
+
+
+# -- r = 1: every r×r matrix is a scalar ------------------------------------------------------------------
+SPHERE = CATALOG.get("poisson-sphere-flow")
+
+
+def test_the_poisson_sphere_flow_is_proved_for_every_n_at_r_1():
+    res = _proved(run_free(SPHERE))
+    assert "r = 1" in res.certificate and "r = 1" in check_certificate(res.certificate_data).message
+
+
+def _commute(t):
+    """XᵀAX and XᵀP commute: true at r = 1 (scalars), false at r = 2."""
+    M, N = t.X.T @ t.A @ t.X, t.X.T @ t.P
+    return {"[X^T A X, X^T P]": M @ N - N @ M}
+
+
+def test_an_identity_of_r_1_is_proved_at_r_1_only():
+    _proved(run_free(SPHERE, _commute))
+    assert run_free(at_sizes(SPHERE, n_max=5, r_min=2, r_max=2), _commute).verdict != "proved"
+    assert run_free(at_sizes(SPHERE, n_max=3, r_max=2), _commute).verdict != "proved"
+    # default sizes at r = 1 only, but the statement is for every r: no columns
+    assert run_free(at_sizes(SPHERE, n_max=1), _commute).verdict != "proved"
+
+
+def sphere_flow_sign(s):
+    from stiefelsym.proofs.sec8_dual_lax_pair import H_poisson_sphere
+    e, p, Ai = s.X, s.P, s.Ainv
+    return {"de/dt": s.dirac_flow(H_poisson_sphere).Xdot - (Ai @ p @ (e.T @ Ai @ e) + Ai @ e @ (e.T @ Ai @ p))}
+
+
+def sphere_flow_swapped(s):
+    from stiefelsym.proofs.sec8_dual_lax_pair import H_poisson_sphere
+    e, p, Ai = s.X, s.P, s.Ainv
+    return {"dp/dt": s.dirac_flow(H_poisson_sphere).Pdot - (Ai @ e @ (e.T @ Ai @ p) - Ai @ p @ (p.T @ Ai @ p))}
+
+
+@pytest.mark.parametrize("func", [sphere_flow_sign, sphere_flow_swapped])
+def test_a_corrupted_sphere_claim_is_not_proved(func):
+    assert run_free(SPHERE, func).verdict in ("undecided", "fails")
+
+
+def test_the_checker_has_no_second_column_at_r_1():
+    """At r = 1, E₂ = E₁E₁ᵀE₂ = 0 would contradict E₂ᵀE₂ = 1: a certificate with both is rejected."""
+    data = copy.deepcopy(_proved(run_free(SPHERE, _commute)).certificate_data)
+    assert "E1E1t" in data["summary"]["hypotheses"]
+    assert check_certificate(data).accepted
+    data["entries"][0]["terms"].append({"coef": "0", "traces": [], "left": [], "hyp": "E2tE2", "right": [],
+                                        "in_trace": True, "word": []})
     assert not check_certificate(data).accepted

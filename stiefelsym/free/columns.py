@@ -1,4 +1,5 @@
-"""The columns e₁ = XE₁, e₂ = XE₂ of a point of T*V(n, 2): E₁, E₂ ∈ ℝʳ as letters, for r = 2 only.
+"""The columns e₁ = XE₁, e₂ = XE₂ of a point of T*V(n, 2): E₁, E₂ ∈ ℝʳ as letters, for r = 2 only
+(and E₁ alone for r = 1: every r×r matrix is then a scalar).
 
 E₁, E₂ are r×1 letters (columns of the identity), E₁ᵀ, E₂ᵀ their transposes, with
 E_iᵀE_j = δ_ij (rules of the rewriting system, true for every r ≥ 2) and
@@ -14,7 +15,8 @@ pieces: a word that passes through the scalar object twice, u·E_i·(E_jᵀ w E_
 is tr(E_jᵀ w E_k)·u·E_i E_lᵀ v, and a trace that passes k times is a product
 of k traces (a 1×1 matrix is its own trace: an identity, no hypothesis).  After
 that every r×r quantity is written in the basis E_iE_jᵀ with scalar coefficients,
-so the normal form is that of the columns e₁, e₂, p₁, p₂.
+so the normal form is that of the columns e₁, e₂, p₁, p₂.  At r = 1 the same with E₁ alone and
+E₁E₁ᵀ = I_r (hypothesis ``E1E1t``): every r×r word is then a scalar.
 """
 from __future__ import annotations
 
@@ -30,19 +32,23 @@ E2, E2t = letter_pair("E2", "E2t", "r", SCALAR, "E_2", "E_2^{T}")
 COLUMNS = (E1, E2)
 COVECTORS = (E1t, E2t)
 
-#: the name of the hypothesis E₁E₁ᵀ + E₂E₂ᵀ − I_r (true at r = 2 only)
-COMPLETE = "E1E1t+E2E2t"
+#: the name of the hypothesis E₁E₁ᵀ + … + E_rE_rᵀ − I_r (true at that r only), by r
+COMPLETE = {1: "E1E1t", 2: "E1E1t+E2E2t"}
 
 
 def column_hypotheses() -> dict[str, Hypothesis]:
-    """E_iᵀE_j − δ_ij (1×1) and E₁E₁ᵀ + E₂E₂ᵀ − I_r (r×r), by name."""
+    """E_iᵀE_j − δ_ij (1×1), E₁E₁ᵀ − I_r and E₁E₁ᵀ + E₂E₂ᵀ − I_r (r×r), by name."""
     w = NCPoly.word
     out = {}
     for i, (Ei, Eit) in enumerate(zip(COLUMNS, COVECTORS), start=1):
         for j, Ej in enumerate(COLUMNS, start=1):
             poly = w((Eit, Ej)) - (NCPoly.identity(SCALAR) if i == j else NCPoly.zero(SCALAR, SCALAR))
             out[f"E{i}tE{j}"] = Hypothesis(f"E{i}tE{j}", poly)
-    out[COMPLETE] = Hypothesis(COMPLETE, w((E1, E1t)) + w((E2, E2t)) - NCPoly.identity("r"))
+    for r, name in COMPLETE.items():
+        poly = NCPoly.zero("r", "r")
+        for E, Et in zip(COLUMNS[:r], COVECTORS[:r]):
+            poly = poly + w((E, Et))
+        out[name] = Hypothesis(name, poly - NCPoly.identity("r"))
     return out
 
 
@@ -62,8 +68,10 @@ def _open_in_cycle(c: tuple) -> int | None:
     return None
 
 
-def _resolve(p: NCPoly, hyp: Hypothesis, cert: list[CertTerm]) -> list[tuple[Any, tuple, tuple]]:
-    """The terms (c, traces, word) of p with every open place resolved; ``cert`` gets p − result."""
+def _resolve(p: NCPoly, hyp: Hypothesis, cert: list[CertTerm], r: int) -> list[tuple[Any, tuple, tuple]]:
+    """The terms (c, traces, word) of p with every open place resolved in the basis E_1, …, E_r;
+    ``cert`` gets p − result."""
+    basis = list(zip(COLUMNS[:r], COVECTORS[:r]))
     todo = [(c, tm, w) for (tm, w), c in p.terms.items()]
     done = []
     while todo:
@@ -71,7 +79,7 @@ def _resolve(p: NCPoly, hyp: Hypothesis, cert: list[CertTerm]) -> list[tuple[Any
         k = next((k for k in range(len(w) + 1) if _open_at(w, k, p.row)), None)
         if k is not None:   # c·T·w = Σ_i c·T·w[:k]E_iE_iᵀw[k:] − c·T·w[:k]·h·w[k:]
             cert.append(CertTerm(-c, w[:k], hyp, w[k:], False, tm, ()))
-            todo.extend((c, tm, w[:k] + (E, Et) + w[k:]) for E, Et in zip(COLUMNS, COVECTORS))
+            todo.extend((c, tm, w[:k] + (E, Et) + w[k:]) for E, Et in basis)
             continue
         j = next((j for j, cyc in enumerate(tm) if _open_in_cycle(cyc) is not None), None)
         if j is not None:   # tr(cyc) = tr(rot) = Σ_i tr(E_iE_iᵀ rot) − tr(h·rot)
@@ -80,7 +88,7 @@ def _resolve(p: NCPoly, hyp: Hypothesis, cert: list[CertTerm]) -> list[tuple[Any
             rot = cyc[k:] + cyc[:k]
             rest = tm[:j] + tm[j + 1:]
             cert.append(CertTerm(-c, (), hyp, rot, True, rest, w))
-            todo.extend((c, merge_traces(rest, ((E, Et) + rot,)), w) for E, Et in zip(COLUMNS, COVECTORS))
+            todo.extend((c, merge_traces(rest, ((E, Et) + rot,)), w) for E, Et in basis)
             continue
         done.append((c, tm, w))
     return done
@@ -118,12 +126,13 @@ def _extract(c: Any, tm: tuple, w: tuple) -> tuple[Any, tuple, tuple]:
     return c, out, w
 
 
-def canonical(p: NCPoly, hyp: Hypothesis) -> tuple[NCPoly, list[CertTerm]]:
-    """(q, terms): q the canonical form of p (every place in ℝʳ resolved, every 1×1 piece a trace),
-    and p − q = Σ terms up to the identity "a 1×1 matrix is its own trace"."""
+def canonical(p: NCPoly, r: int) -> tuple[NCPoly, list[CertTerm]]:
+    """(q, terms): q the canonical form of p at r = 1 or 2 (every place in ℝʳ resolved, every 1×1 piece
+    a trace), and p − q = Σ terms up to the identity "a 1×1 matrix is its own trace"."""
+    hyp = column_hypotheses()[COMPLETE[r]]
     cert: list[CertTerm] = []
     out: dict = {}
-    for c, tm, w in _resolve(p, hyp, cert):
+    for c, tm, w in _resolve(p, hyp, cert, r):
         c, tm, w = _extract(c, tm, w)
         if c == 0:
             continue

@@ -29,7 +29,7 @@ from .mat import FreeBackend, FreeDualBackend, entry_of, one_block
 from .rewriting import (_NONZERO_NUMBER_TYPES, _SIMPLE, Certificate, Cofactor, Hypothesis, Order, Reduction,
                         RewritingError, RewritingSystem, SharedMemos, nonzero_terms, simplify_coef)
 from .traces import gradient
-from .columns import COLUMNS, COMPLETE, COVECTORS, canonical, column_hypotheses
+from .columns import COLUMNS, COVECTORS, canonical, column_hypotheses
 
 Function = Callable[[Any], Any]
 
@@ -320,7 +320,7 @@ class FreeScene(PaperObjects):
     realization = "standard"  # (cond_XP); other realizations raise NeedsCoordinates
 
     def __init__(self, tracker: CoordinateTracker | None = None, system: RewritingSystem | None = None,
-                 realization: str = "standard", lazy: bool = False, columns: bool = False) -> None:
+                 realization: str = "standard", lazy: bool = False, columns: int = 0) -> None:
         if realization != "standard":
             raise NeedsCoordinates(f"the {realization!r} realization of T*V (its multipliers solve a "
                                    "Sylvester equation)")
@@ -334,7 +334,10 @@ class FreeScene(PaperObjects):
         self._resolvents: dict[Letter, Any] = {}
         self._extras: set[str] = set()
         self._named: dict[str, Letter] = {}
-        #: r = 2 is given (the claim is stated for V(n, 2) only): the columns E_1, E_2 are letters
+        #: r given (1 or 2: the claim is stated at that r only; 0: every r): the columns E_1, ..., E_r
+        #: of R^r are letters, and E_1 E_1^T + ... + E_r E_r^T = I_r a hypothesis of normal forms
+        if columns not in (0, 1, 2):
+            raise ValueError(f"columns: the fixed r, 1 or 2 (0 for every r), not {columns!r}")
         self.columns = columns
 
     field = property(lambda self: self._field, doc="the free algebra (read-only)")
@@ -433,22 +436,22 @@ class FreeScene(PaperObjects):
     def _column_letters(self) -> None:
         if "columns" not in self._extras:
             self._extras.add("columns")
-            for L in COLUMNS + COVECTORS:
+            for L in COLUMNS[:self.columns] + COVECTORS[:self.columns]:
                 self.system.order.add(L)
             hyps = column_hypotheses()
-            for i, Eit in enumerate(COVECTORS, start=1):
-                for j, Ej in enumerate(COLUMNS, start=1):
+            for i, Eit in enumerate(COVECTORS[:self.columns], start=1):
+                for j, Ej in enumerate(COLUMNS[:self.columns], start=1):
                     rhs = _i(SCALAR_T) if i == j else NCPoly.zero(SCALAR_T, SCALAR_T)
                     self.system.add_rule((Eit, Ej), rhs, f"E_{i}^T E_{j} = {int(i == j)} (the basis of R^r)",
                                          name=f"E{i}tE{j}", cofactors=[_by(hyps[f"E{i}tE{j}"])])
 
     def column(self, i: int) -> Mat:
-        """E_{i+1} ∈ ℝʳ (i = 0, 1) as an r×1 letter, for a claim stated at r = 2 only (the scene was made
-        with ``columns``: E₁E₁ᵀ + E₂E₂ᵀ = I_r is then a hypothesis of its normal forms)."""
+        """E_{i+1} ∈ ℝʳ (0 ≤ i < r) as an r×1 letter, for a claim stated at one r = 1 or 2 only (the scene was
+        made with ``columns=r``: E₁E₁ᵀ + … + E_rE_rᵀ = I_r is then a hypothesis of its normal forms)."""
         if not self.columns:
             raise refuse(f"the column e_{i + 1} = X E_{i + 1} (a basis vector of R^r) for every r", self.tracker)
-        if i not in (0, 1):
-            raise ValueError(f"E_{i + 1} is not a basis vector of R^2")
+        if not 0 <= i < self.columns:
+            raise ValueError(f"E_{i + 1} is not a basis vector of R^{self.columns}")
         self._column_letters()
         L = COLUMNS[i]
         self._named.setdefault(str(L), L)
@@ -830,20 +833,20 @@ class FreeScene(PaperObjects):
         the canonical form of :mod:`.columns` and the rules in turn until neither changes it."""
         p = x if isinstance(x, NCPoly) else NCPoly.scalar(x)
         if "columns" not in self._extras:
-            return self.system.reduce(p)
+            red = self.system.reduce(p)
+            if red.is_zero or not self.columns:
+                return red
+            self._column_letters()   # r is given: what the rules leave, in the basis of R^r
         rules: list = []
         q = p
         for _ in range(self.system.max_depth):
-            c, _cert = canonical(q, self._complete())
+            c, _cert = canonical(q, self.columns)
             red = self.system.reduce(c)
             rules += [r for r in red.rules if r not in rules]
             if red.normal_form == q:
                 return Reduction(p, red.normal_form, rules)
             q = red.normal_form
         raise RewritingError("the canonical form of the columns and the rules do not settle")
-
-    def _complete(self) -> Hypothesis:
-        return column_hypotheses()[COMPLETE]
 
     def certify(self, p: NCPoly, normal_form: NCPoly) -> Certificate:
         """p − nf(p) through the hypotheses (see :meth:`RewritingSystem.certify`); with the columns,
@@ -853,7 +856,7 @@ class FreeScene(PaperObjects):
         terms: list = []
         q = p
         for _ in range(self.system.max_depth):
-            c, cert = canonical(q, self._complete())
+            c, cert = canonical(q, self.columns)
             terms += cert
             step = self.system.certify(c)
             terms += step.terms
