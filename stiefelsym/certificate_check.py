@@ -23,9 +23,10 @@ rewriting system that found the certificate (it imports nothing of
     to rotation and transposition (tr w = tr wᵀ, with the sign of skew
     letters: tr ξ = 0).
 
-Columns E₁, E₂ of ℝʳ (r×1; E1t, E2t) have E_iᵀE_j = δ_ij and E₁E₁ᵀ + E₂E₂ᵀ = I_r (true at r = 2
-only; E₁E₁ᵀ = I_r at r = 1 only, with no E₂): a proof that uses it holds at that r (the report says
-so), and a 1×1 piece of a word is its own trace (u·E_i·(E_jᵀwE_k)·E_lᵀ·v = tr(E_jᵀwE_k)·u·E_iE_lᵀ·v).
+Columns E₁, E₂, E_r of ℝʳ (r×1; E1t, E2t, Ert) have E_iᵀE_j = δ_ij and E₁E₁ᵀ + E₂E₂ᵀ = I_r (true at
+r = 2 only; E₁E₁ᵀ = I_r at r = 1 only, with no E₂; XXᵀ = I_n at r = n only): a proof that uses it holds
+there (the report says so), and a 1×1 piece of a word is its own trace (u·E_i·(E_jᵀwE_k)·E_lᵀ·v =
+tr(E_jᵀwE_k)·u·E_iE_lᵀ·v).
 
 The only facts used besides the hypotheses are structural: the transposes of
 the letters (A = Aᵀ, R_μ = R_μᵀ, ξᵀ = −ξ), and tr(uv) = tr(vu), tr(w) = tr(wᵀ).
@@ -57,7 +58,7 @@ FIXED_LETTERS: dict[str, tuple[str, str, str, int]] = {
     "xi": ("n", "n", "xi", -1), "zeta": ("n", "n", "zeta", -1),
     "eta": ("r", "r", "eta", -1), "theta": ("r", "r", "theta", -1),
     "E1": ("r", "1", "E1t", 1), "E1t": ("1", "r", "E1", 1),
-    "E2": ("r", "1", "E2t", 1), "E2t": ("1", "r", "E2", 1),
+    "E2": ("r", "1", "E2t", 1), "E2t": ("1", "r", "E2", 1), "Er": ("r", "1", "Ert", 1), "Ert": ("1", "r", "Er", 1),
 }
 
 
@@ -98,7 +99,8 @@ def check_certificate(data: Any) -> CheckReport:
         return CheckReport(False, f"malformed certificate ({type(exc).__name__}: {exc})",
                            seconds=time.perf_counter() - t0)
     used = {t.get("hyp") for e in entries for t in e["terms"]}
-    at = "".join(f" (at r = {k} only: {h} holds exactly there)" for k, h in ((1, R1_ONLY), (2, R2_ONLY)) if h in used)
+    at = "".join(f" (at r = {k} only: {h} holds exactly there)" for k, h in ((1, R1_ONLY), (2, R2_ONLY), ("n", SQUARE))
+                 if h in used)
     if R1_ONLY in used and (_mentions(entries, {"E2", "E2t"}) or any("E2" in str(h) for h in used)):  # r = 1: no E_2
         return CheckReport(False, "E1E1t (r = 1) with a second column E2", seconds=time.perf_counter() - t0)
     return CheckReport(True, f"{len(entries)} entries, {terms} terms: every certificate expands to its residual{at}",
@@ -234,6 +236,8 @@ class Context:
 _ONE, _MINUS = se.Integer(1), se.Integer(-1)
 #: the hypotheses E₁E₁ᵀ = I_r and E₁E₁ᵀ + E₂E₂ᵀ = I_r: true at r = 1, resp. r = 2 only
 R1_ONLY, R2_ONLY = "E1E1t", "E1E1t+E2E2t"
+#: XXᵀ = I_n: true at r = n only
+SQUARE = "XXt"
 #: the fixed generators: name -> (row, col, terms)
 HYPOTHESES: dict[str, tuple[str, str, list[tuple[Any, tuple]]]] = {
     "XtX": ("r", "r", [(_ONE, ("Xt", "X")), (_MINUS, ())]),
@@ -243,6 +247,8 @@ HYPOTHESES: dict[str, tuple[str, str, list[tuple[Any, tuple]]]] = {
     "AAinv": ("n", "n", [(_ONE, ("A", "Ainv")), (_MINUS, ())]),
     "AinvA": ("n", "n", [(_ONE, ("Ainv", "A")), (_MINUS, ())]),
     **{f"E{i}tE{j}": ("1", "1", [(_ONE, (f"E{i}t", f"E{j}"))] + [(_MINUS, ())] * (i == j)) for i in (1, 2) for j in (1, 2)},
+    "ErtEr": ("1", "1", [(_ONE, ("Ert", "Er")), (_MINUS, ())]),
+    SQUARE: ("n", "n", [(_ONE, ("X", "Xt")), (_MINUS, ())]),
     R1_ONLY: ("r", "r", [(_ONE, ("E1", "E1t")), (_MINUS, ())]),
     R2_ONLY: ("r", "r", [(_ONE, ("E1", "E1t")), (_ONE, ("E2", "E2t")), (_MINUS, ())]),
 }

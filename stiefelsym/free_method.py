@@ -46,7 +46,8 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
     try:
         # a claim stated at one r = 1 or 2 alone may name the columns E_1, ..., E_r of R^r (their sum
         # E_1E_1^T + ... + E_rE_r^T = I_r is then a hypothesis)
-        scene = FreeScene(realization=claim.realization, lazy=True, columns=fixed_r(claim))
+        scene = FreeScene(realization=claim.realization, lazy=True, columns=fixed_r(claim),
+                          square=bool(getattr(claim.sizes, "r_is_n", False)))
     except NeedsCoordinates as exc:
         return undecided(f"needs coordinates: {exc.what}; decided by the fixed-size methods")
 
@@ -113,6 +114,11 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
                               f"E_i^T E_j = delta_ij, and, the claim being stated at r = {k} only, "
                               f"{' + '.join(f'E_{i + 1} E_{i + 1}^T' for i in range(k))} = I_r: every place where a "
                               "word passes through R^r is written in this basis, and a 1 x 1 piece is its own trace")
+    if scene.square:
+        res.reductions.append("the claim being stated at r = n only (T*SO(n)): X X^T = I_n and P X^T = -X P^T")
+    if "last" in scene._extras:
+        res.reductions.append("the last column E_r of I_r as a letter (r x 1), E_r^T E_r = 1; a 1 x 1 piece is its "
+                              "own trace")
     if scene.system.trace_fallbacks:
         return undecided("a trace normal form used a non-canonical representative")
     if open_entries:
@@ -155,6 +161,8 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
     res.verdict = "proved"
     res.seconds = time.perf_counter() - t0
     entries = f"{summary['entries']} residual entr{'y' if summary['entries'] == 1 else 'ies'}"
+    if "XXt" in summary["hypotheses"]:
+        entries += " (for every n at r = n, the only r the claim is stated for: it uses X X^T = I_n)"
     for k, name in COMPLETE.items():
         if name in summary["hypotheses"]:
             entries += (f" (for every n at r = {k}, the only r the claim is stated for: it uses "

@@ -307,7 +307,10 @@ def first_basis_vectors(s, k: int) -> Mat:
 
 
 def last_basis_vector(s) -> Mat:
-    """E_r ∈ ℝʳ: X E_r is the last column (e_n of 𝒳 ∈ SO(n) when r = n)."""
+    """E_r ∈ ℝʳ: X E_r is the last column (e_n of 𝒳 ∈ SO(n) when r = n); a letter of the dimension-free
+    backend (E_rᵀE_r = 1)."""
+    if _is_free(s):
+        return s.last_column()
     s = _scene(s, "the last column e_n = X E_n of X in SO(n)")
     return basis_vector(s, s.r - 1)
 
@@ -348,6 +351,6 @@ __all__ = ["magnetic_matrix", "ambient_bracket", "constraint_bracket_matrix", "b
 # the functions that need the engine's scene (its number system, its gradients and multipliers) are
 # single steps of a claim's graph; the coordinate helpers above are traced with the claim
 for _name in ("magnetic_matrix", "ambient_bracket", "constraint_bracket_matrix", "bracket", "ambient_flow", "flow",
-              "multiplier_flow", "form", "basis_vector"):
+              "multiplier_flow", "form", "basis_vector", "last_basis_vector"):
     globals()[_name] = primitive(globals()[_name])
 at_point = primitive(at_point, returns="scene")

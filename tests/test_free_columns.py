@@ -254,3 +254,69 @@ def test_the_checker_has_no_second_column_at_r_1():
     data["entries"][0]["terms"].append({"coef": "0", "traces": [], "left": [], "hyp": "E2tE2", "right": [],
                                         "in_trace": True, "word": []})
     assert not check_certificate(data).accepted
+
+
+# -- r = n: T*SO(n), X Xᵀ = I_n, and the last column e_n = XE_r ---------------------------------------------
+SO_N = ["rigid-body-euler-poisson", "ym-second-derivative"]
+
+
+@pytest.mark.parametrize("cid", SO_N)
+def test_rigid_body_claims_are_proved_for_every_n_at_r_n(cid):
+    claim = CATALOG.get(cid)
+    assert claim.sizes.r_is_n
+    res = _proved(run_free(claim))
+    if "XXt" in res.certificate_data["summary"]["hypotheses"]:
+        assert "r = n" in res.certificate and "r = n" in check_certificate(res.certificate_data).message
+
+
+def _orthogonal(t):
+    return {"XX^T = I_n": t.X @ t.X.T - t.In, "P X^T + X P^T": t.P @ t.X.T + t.X @ t.P.T}
+
+
+def test_x_xt_is_the_identity_at_r_n_only():
+    so_n = CATALOG.get("rigid-body-euler-poisson")
+    _proved(run_free(so_n, _orthogonal))
+    assert run_free(at_sizes(so_n, n_max=5, n_min=2), _orthogonal).verdict != "proved"
+    # the same sizes r = n, but read from a condition, not declared: not used
+    assert run_free(at_sizes(so_n, n_max=5, n_min=2, where=lambda n, r: r == n), _orthogonal).verdict != "proved"
+
+
+def euler_star_sign(s):
+    from stiefelsym.proofs.app1_magnetic_neumann import H_CP, last
+    e = last(s)
+    return {"(Euler*)": s.d(lambda t: t.Phi, s.dirac_flow(H_CP)) - comm(e @ e.T, s.A)}
+
+
+def body_velocity_is_space_momentum(s):
+    from stiefelsym.proofs.app1_magnetic_neumann import H_CP
+    return {"omega = M": s.X.T @ s.dirac_flow(H_CP).Xdot - s.X.T @ s.Phi}
+
+
+def last_column_orthogonal_to_p(s):
+    """(e_n, p_n) = 0 holds ((XᵀP)_rr = 0), but e_nᵀP = E_rᵀXᵀP is not 0."""
+    from stiefelsym.proofs.app1_magnetic_neumann import last
+    e = last(s)
+    return {"e_n^T P": e.T @ s.P}
+
+
+@pytest.mark.parametrize("func", [euler_star_sign, body_velocity_is_space_momentum,
+                                  last_column_orthogonal_to_p])
+def test_a_corrupted_rigid_body_claim_is_not_proved(func):
+    assert run_free(CATALOG.get("rigid-body-euler-poisson"), func).verdict in ("undecided", "fails")
+
+
+def test_the_last_column_is_a_unit_vector():
+    so_n = CATALOG.get("rigid-body-euler-poisson")
+    from stiefelsym.proofs.app1_magnetic_neumann import last
+    _proved(run_free(so_n, lambda t: {"(e_n, e_n) - 1": m.dot(t, last(t), last(t)) - 1,
+                                      "(e_n, p_n)": m.dot(t, last(t), t.P @ twisted.last_basis_vector(t))}))
+
+
+def test_the_checker_rejects_x_xt_for_xt_x():
+    data = copy.deepcopy(_proved(run_free(CATALOG.get("rigid-body-euler-poisson"), _orthogonal)).certificate_data)
+    assert "r = n" in check_certificate(data).message
+    for e in data["entries"]:
+        for t in e["terms"]:
+            if t["hyp"] == "XXt":
+                t["hyp"] = "XtX"
+    assert not check_certificate(data).accepted

@@ -31,6 +31,8 @@ E1, E1t = letter_pair("E1", "E1t", "r", SCALAR, "E_1", "E_1^{T}")
 E2, E2t = letter_pair("E2", "E2t", "r", SCALAR, "E_2", "E_2^{T}")
 COLUMNS = (E1, E2)
 COVECTORS = (E1t, E2t)
+#: the last column E_r of I_r (e_n = XE_n of X ∈ SO(n) when r = n): E_rᵀE_r = 1 for every r
+ER, ERt = letter_pair("Er", "Ert", "r", SCALAR, "E_r", "E_r^{T}")
 
 #: the name of the hypothesis E₁E₁ᵀ + … + E_rE_rᵀ − I_r (true at that r only), by r
 COMPLETE = {1: "E1E1t", 2: "E1E1t+E2E2t"}
@@ -44,6 +46,7 @@ def column_hypotheses() -> dict[str, Hypothesis]:
         for j, Ej in enumerate(COLUMNS, start=1):
             poly = w((Eit, Ej)) - (NCPoly.identity(SCALAR) if i == j else NCPoly.zero(SCALAR, SCALAR))
             out[f"E{i}tE{j}"] = Hypothesis(f"E{i}tE{j}", poly)
+    out["ErtEr"] = Hypothesis("ErtEr", w((ERt, ER)) - NCPoly.identity(SCALAR))
     for r, name in COMPLETE.items():
         poly = NCPoly.zero("r", "r")
         for E, Et in zip(COLUMNS[:r], COVECTORS[:r]):
@@ -128,11 +131,12 @@ def _extract(c: Any, tm: tuple, w: tuple) -> tuple[Any, tuple, tuple]:
 
 def canonical(p: NCPoly, r: int) -> tuple[NCPoly, list[CertTerm]]:
     """(q, terms): q the canonical form of p at r = 1 or 2 (every place in ℝʳ resolved, every 1×1 piece
-    a trace), and p − q = Σ terms up to the identity "a 1×1 matrix is its own trace"."""
-    hyp = column_hypotheses()[COMPLETE[r]]
+    a trace; r = 0: only the latter), and p − q = Σ terms up to the identity "a 1×1 matrix is its own trace"."""
     cert: list[CertTerm] = []
     out: dict = {}
-    for c, tm, w in _resolve(p, hyp, cert, r):
+    terms = _resolve(p, column_hypotheses()[COMPLETE[r]], cert, r) if r else \
+        [(c, tm, w) for (tm, w), c in p.terms.items()]   # r = 0: only the 1×1 pieces (the last column)
+    for c, tm, w in terms:
         c, tm, w = _extract(c, tm, w)
         if c == 0:
             continue

@@ -29,7 +29,7 @@ from .mat import FreeBackend, FreeDualBackend, entry_of, one_block
 from .rewriting import (_NONZERO_NUMBER_TYPES, _SIMPLE, Certificate, Cofactor, Hypothesis, Order, Reduction,
                         RewritingError, RewritingSystem, SharedMemos, nonzero_terms, simplify_coef)
 from .traces import gradient
-from .columns import COLUMNS, COVECTORS, canonical, column_hypotheses
+from .columns import COLUMNS, COVECTORS, ER, ERt, canonical, column_hypotheses
 
 Function = Callable[[Any], Any]
 
@@ -116,6 +116,7 @@ def hypothesis(name: str, R: Letter | None = None, mu: Any = None) -> Hypothesis
         "YtQ+QtY": lambda: _w(Yt, Q) + _w(Qt, Y),
         "AAinv": lambda: _w(A, AINV) - _i("n"),
         "AinvA": lambda: _w(AINV, A) - _i("n"),
+        "XXt": lambda: _w(X, Xt) - _i("n"),
     }
     if name not in polys:
         return column_hypotheses()[name]
@@ -320,7 +321,7 @@ class FreeScene(PaperObjects):
     realization = "standard"  # (cond_XP); other realizations raise NeedsCoordinates
 
     def __init__(self, tracker: CoordinateTracker | None = None, system: RewritingSystem | None = None,
-                 realization: str = "standard", lazy: bool = False, columns: int = 0) -> None:
+                 realization: str = "standard", lazy: bool = False, columns: int = 0, square: bool = False) -> None:
         if realization != "standard":
             raise NeedsCoordinates(f"the {realization!r} realization of T*V (its multipliers solve a "
                                    "Sylvester equation)")
@@ -339,6 +340,10 @@ class FreeScene(PaperObjects):
         if columns not in (0, 1, 2):
             raise ValueError(f"columns: the fixed r, 1 or 2 (0 for every r), not {columns!r}")
         self.columns = columns
+        #: r = n is given (T*SO(n) = T*V(n, n)): X X^T = I_n, and P X^T = -X P^T
+        self.square = square
+        if square:
+            self._square_rules()
 
     field = property(lambda self: self._field, doc="the free algebra (read-only)")
     tracker = property(lambda self: self._tracker, doc="the record of looks at coordinates (read-only)")
@@ -444,6 +449,27 @@ class FreeScene(PaperObjects):
                     rhs = _i(SCALAR_T) if i == j else NCPoly.zero(SCALAR_T, SCALAR_T)
                     self.system.add_rule((Eit, Ej), rhs, f"E_{i}^T E_{j} = {int(i == j)} (the basis of R^r)",
                                          name=f"E{i}tE{j}", cofactors=[_by(hyps[f"E{i}tE{j}"])])
+
+    def _square_rules(self) -> None:
+        """At r = n: XXᵀ → I_n (X is orthogonal) and PXᵀ → −XPᵀ, because
+        PXᵀ + XPᵀ = X(XᵀP + PᵀX)Xᵀ − (XXᵀ − I)PXᵀ − XPᵀ(XXᵀ − I)."""
+        h, g = hypothesis("XXt"), hypothesis("XtP+PtX")
+        why = "X X^T = I_n: X is square (r = n, the only r the claim is stated for)"
+        self.system.add_rule((X, Xt), _i("n"), why, name="XXt", cofactors=[_by(h)])
+        self.system.add_rule((P, Xt), -_w(X, Pt), "P X^T = -X P^T: X^T P is skew and X X^T = I_n (r = n)",
+                             name="PXt", cofactors=[_by(g, 1, left=(X,), right=(Xt,)), _by(h, -1, right=(P, Xt)),
+                                                    _by(h, -1, left=(X, Pt))])
+
+    def last_column(self) -> Mat:
+        """E_r, the last column of I_r, as an r×1 letter (E_rᵀE_r = 1): XE_r is the last column of X."""
+        if "last" not in self._extras:
+            self._extras.add("last")
+            self.system.order.add(ER)
+            self.system.order.add(ERt)
+            self.system.add_rule((ERt, ER), _i(SCALAR_T), "E_r^T E_r = 1 (the last column of I_r)", name="ErtEr",
+                                 cofactors=[_by(column_hypotheses()["ErtEr"])])
+        self._named.setdefault(str(ER), ER)
+        return self._cached("column:last", lambda: self._const_block(_w(ER), ("r", "?")))
 
     def column(self, i: int) -> Mat:
         """E_{i+1} ∈ ℝʳ (0 ≤ i < r) as an r×1 letter, for a claim stated at one r = 1 or 2 only (the scene was
@@ -832,10 +858,11 @@ class FreeScene(PaperObjects):
         """Normal form of one entry with the rules used (for reports); with the columns of V(n, 2),
         the canonical form of :mod:`.columns` and the rules in turn until neither changes it."""
         p = x if isinstance(x, NCPoly) else NCPoly.scalar(x)
-        if "columns" not in self._extras:
+        if "columns" not in self._extras and "last" not in self._extras:
             red = self.system.reduce(p)
             if red.is_zero or not self.columns:
                 return red
+        if self.columns:
             self._column_letters()   # r is given: what the rules leave, in the basis of R^r
         rules: list = []
         q = p
@@ -851,8 +878,8 @@ class FreeScene(PaperObjects):
     def certify(self, p: NCPoly, normal_form: NCPoly) -> Certificate:
         """p − nf(p) through the hypotheses (see :meth:`RewritingSystem.certify`); with the columns,
         the resolutions of :func:`.columns.canonical` and the rules' steps, in the order of :meth:`reduce`."""
-        if "columns" not in self._extras:
-            return self.system.certify(p, normal_form)
+        if ("columns" not in self._extras and "last" not in self._extras) or self.system.is_zero(p):
+            return self.system.certify(p, normal_form)   # the rules alone (as reduce found, or as they suffice)
         terms: list = []
         q = p
         for _ in range(self.system.max_depth):
@@ -882,6 +909,7 @@ class FreeTangentScene(FreeScene):
         self._extras = base._extras
         self._named = base._named
         self.columns = base.columns
+        self.square = base.square
 
     def _prim(self, key: str, poly: NCPoly) -> Mat:
         dot = self.flow.get(key)
