@@ -23,7 +23,7 @@ rewriting system that found the certificate (it imports nothing of
     to rotation and transposition (tr w = tr wᵀ, with the sign of skew
     letters: tr ξ = 0).
 
-Columns E₁, E₂, E_r of ℝʳ (r×1; E1t, E2t, Ert) have E_iᵀE_j = δ_ij and E₁E₁ᵀ + E₂E₂ᵀ = I_r (true at
+Columns E₁, E₂, E_r of ℝʳ (r×1; E1t, E2t, Ert) and E_{<r} (Elead: the first r − 1, r×(r−1)) have E_iᵀE_j = δ_ij and E₁E₁ᵀ + E₂E₂ᵀ = I_r (true at
 r = 2 only; E₁E₁ᵀ = I_r at r = 1 only, with no E₂; XXᵀ = I_n at r = n only): a proof that uses it holds
 there (the report says so), and a 1×1 piece of a word is its own trace (u·E_i·(E_jᵀwE_k)·E_lᵀ·v =
 tr(E_jᵀwE_k)·u·E_iE_lᵀ·v).
@@ -44,7 +44,7 @@ import symengine as se
 
 FORMAT = "stiefelsym-cofactor-1"
 #: the objects: ℝⁿ, ℝʳ, and "1" for scalars (trace forms)
-OBJECTS = ("n", "r")
+OBJECTS = ("n", "r", "r-1")
 SCALAR = "1"
 
 #: name -> (row object, column object, transpose, sign of the transpose)
@@ -59,6 +59,7 @@ FIXED_LETTERS: dict[str, tuple[str, str, str, int]] = {
     "eta": ("r", "r", "eta", -1), "theta": ("r", "r", "theta", -1),
     "E1": ("r", "1", "E1t", 1), "E1t": ("1", "r", "E1", 1),
     "E2": ("r", "1", "E2t", 1), "E2t": ("1", "r", "E2", 1), "Er": ("r", "1", "Ert", 1), "Ert": ("1", "r", "Er", 1),
+    "Elead": ("r", "r-1", "Eleadt", 1), "Eleadt": ("r-1", "r", "Elead", 1),
 }
 
 
@@ -140,7 +141,7 @@ class Context:
                 t, row, col = d["transpose"], d["row"], d["col"]
                 if not (name.startswith("gen:") and t.startswith("gen:")) or t == name or t in self.letters:
                     raise Rejected(f"generic letters are named gen:..., with a distinct transpose: {name}, {t}")
-                if row not in OBJECTS or col not in OBJECTS:
+                if row not in ("n", "r") or col not in ("n", "r"):
                     raise Rejected(f"the generic letter {name} is not an arrow between n and r")
                 self.letters[name] = (row, col, t, 1)
                 self.letters[t] = (col, row, name, 1)
@@ -248,6 +249,9 @@ HYPOTHESES: dict[str, tuple[str, str, list[tuple[Any, tuple]]]] = {
     "AinvA": ("n", "n", [(_ONE, ("Ainv", "A")), (_MINUS, ())]),
     **{f"E{i}tE{j}": ("1", "1", [(_ONE, (f"E{i}t", f"E{j}"))] + [(_MINUS, ())] * (i == j)) for i in (1, 2) for j in (1, 2)},
     "ErtEr": ("1", "1", [(_ONE, ("Ert", "Er")), (_MINUS, ())]),
+    "EleadtElead": ("r-1", "r-1", [(_ONE, ("Eleadt", "Elead")), (_MINUS, ())]),
+    "EleadtEr": ("r-1", "1", [(_ONE, ("Eleadt", "Er"))]), "ErtElead": ("1", "r-1", [(_ONE, ("Ert", "Elead"))]),
+    "EleadEleadt+ErErt": ("r", "r", [(_ONE, ("Elead", "Eleadt")), (_ONE, ("Er", "Ert")), (_MINUS, ())]),
     SQUARE: ("n", "n", [(_ONE, ("X", "Xt")), (_MINUS, ())]),
     R1_ONLY: ("r", "r", [(_ONE, ("E1", "E1t")), (_MINUS, ())]),
     R2_ONLY: ("r", "r", [(_ONE, ("E1", "E1t")), (_ONE, ("E2", "E2t")), (_MINUS, ())]),
@@ -348,7 +352,7 @@ def _words(x: Any) -> tuple:
 
 
 #: tr I_n = n, tr I_r = r
-_DIMS = {"n": se.Symbol("n"), "r": se.Symbol("r"), SCALAR: _ONE}
+_DIMS = {"n": se.Symbol("n"), "r": se.Symbol("r"), "r-1": se.Symbol("r") - 1, SCALAR: _ONE}
 
 
 def check_entry(entry: dict, ctx: Context) -> int:

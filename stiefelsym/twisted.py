@@ -316,7 +316,10 @@ def last_basis_vector(s) -> Mat:
 
 
 def leading_basis_vectors(s) -> Mat:
-    """(E_1, ..., E_{r−1}): X(E_1, ..., E_{r−1}) = (e_1, ..., e_{n−1}) when r = n (iden1)."""
+    """(E_1, ..., E_{r−1}): X(E_1, ..., E_{r−1}) = (e_1, ..., e_{n−1}) when r = n (iden1); a letter of the
+    dimension-free backend (its columns and E_r are those of I_r)."""
+    if _is_free(s):
+        return s.leading_columns()
     s = _scene(s, "the columns e_1, ..., e_(n-1) of X in SO(n)")
     return first_basis_vectors(s, s.r - 1)
 
@@ -351,6 +354,6 @@ __all__ = ["magnetic_matrix", "ambient_bracket", "constraint_bracket_matrix", "b
 # the functions that need the engine's scene (its number system, its gradients and multipliers) are
 # single steps of a claim's graph; the coordinate helpers above are traced with the claim
 for _name in ("magnetic_matrix", "ambient_bracket", "constraint_bracket_matrix", "bracket", "ambient_flow", "flow",
-              "multiplier_flow", "form", "basis_vector", "last_basis_vector"):
+              "multiplier_flow", "form", "basis_vector", "last_basis_vector", "leading_basis_vectors"):
     globals()[_name] = primitive(globals()[_name])
 at_point = primitive(at_point, returns="scene")

@@ -257,7 +257,7 @@ def test_the_checker_has_no_second_column_at_r_1():
 
 
 # -- r = n: T*SO(n), X Xᵀ = I_n, and the last column e_n = XE_r ---------------------------------------------
-SO_N = ["rigid-body-euler-poisson", "ym-second-derivative"]
+SO_N = ["rigid-body-euler-poisson", "ym-second-derivative", "clebsch-perelomov-hamiltonian"]
 
 
 @pytest.mark.parametrize("cid", SO_N)
@@ -319,4 +319,51 @@ def test_the_checker_rejects_x_xt_for_xt_x():
         for t in e["terms"]:
             if t["hyp"] == "XXt":
                 t["hyp"] = "XtX"
+    assert not check_certificate(data).accepted
+
+
+def test_the_rules_of_r_n_terminate_in_traces_and_are_confluent_on_words():
+    """XPᵀ → −PXᵀ in the order P < X (the other direction loops: tr(XᵀPXᵀP) → −tr(XᵀXPᵀP) → ...), with
+    XᵀPXᵀ → −Pᵀ and the completion PᵀPXᵀ → XᵀPPᵀ: every critical pair resolves but tr I_n = tr I_r."""
+    from stiefelsym.free.rewriting import critical_pairs
+    from stiefelsym.free.scene import P, Pt, X, Xt
+    s = FreeScene(square=True)
+    s.leading_columns()
+    assert s.system.trace_normal_form((Xt, P, Xt, P)) == s.system.trace_normal_form((Pt, P)) * -1
+    assert s.system.trace_normal_form((Pt, X, Xt, P)) == s.system.trace_normal_form((Pt, P))
+    bad = [p for p in critical_pairs(s.system) if not p.joinable]
+    assert {(p.a.name, p.b.name) for p in bad} <= {("XtX", "XXt"), ("XXt", "XtX")}
+
+
+def _leading(t):
+    from stiefelsym.proofs.app1_magnetic_neumann import last
+    E, e = twisted.leading_basis_vectors(t), last(t)
+    Xp = t.X @ E
+    return {"e e^T + X' X'^T = I_n": e @ e.T + Xp @ Xp.T - t.In, "X'^T e = 0": Xp.T @ e,
+            "X'^T X' = E^T E": Xp.T @ Xp - E.T @ E}
+
+
+def leading_dropped(t):
+    from stiefelsym.proofs.app1_magnetic_neumann import last
+    E, e = twisted.leading_basis_vectors(t), last(t)
+    return {"e e^T = X' X'^T": e @ e.T - t.X @ E @ E.T @ t.X.T}
+
+
+def leading_not_last(t):
+    from stiefelsym.proofs.app1_magnetic_neumann import last
+    E, e = twisted.leading_basis_vectors(t), last(t)
+    return {"X'^T X' P^T e": (t.X @ E).T @ t.P @ e}
+
+
+def test_the_leading_columns_and_the_last_are_the_identity():
+    so_n = CATALOG.get("clebsch-perelomov-hamiltonian")
+    res = _proved(run_free(so_n, _leading))
+    assert "EleadEleadt+ErErt" in res.certificate_data["summary"]["hypotheses"]
+    for func in (leading_dropped, leading_not_last):
+        assert run_free(so_n, func).verdict in ("undecided", "fails"), func.__name__
+    data = copy.deepcopy(res.certificate_data)
+    for e in data["entries"]:
+        for t in e["terms"]:
+            if t["hyp"] == "EleadEleadt+ErErt":
+                t["hyp"] = "E1E1t+E2E2t"
     assert not check_certificate(data).accepted

@@ -88,6 +88,9 @@ class Dimension(se.Dummy):
 
 #: dimension symbols: tr(I_n) = n, tr(I_r) = r
 DIMENSIONS = {"n": Dimension("n"), "r": Dimension("r"), SCALAR: se.Integer(1)}
+#: the object ℝʳ⁻¹ of the first r − 1 columns of I_r (the columns e_1, ..., e_{n−1} of X ∈ SO(n))
+LEADING = "r-1"
+DIMENSIONS[LEADING] = DIMENSIONS["r"] - 1
 
 Coef = Any  # a symengine expression
 

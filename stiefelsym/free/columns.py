@@ -24,7 +24,7 @@ from typing import Any
 
 import symengine as se
 
-from .algebra import SCALAR, NCPoly, cycle_rep, letter_pair, merge_traces
+from .algebra import LEADING, SCALAR, NCPoly, cycle_rep, letter_pair, merge_traces
 from .rewriting import CertTerm, Hypothesis
 
 E1, E1t = letter_pair("E1", "E1t", "r", SCALAR, "E_1", "E_1^{T}")
@@ -33,6 +33,8 @@ COLUMNS = (E1, E2)
 COVECTORS = (E1t, E2t)
 #: the last column E_r of I_r (e_n = XE_n of X ∈ SO(n) when r = n): E_rᵀE_r = 1 for every r
 ER, ERt = letter_pair("Er", "Ert", "r", SCALAR, "E_r", "E_r^{T}")
+#: the first r − 1 columns (E_1, ..., E_{r−1}) of I_r, an r×(r−1) matrix: its columns and E_r are I_r
+LEAD, LEADt = letter_pair("Elead", "Eleadt", "r", LEADING, r"E_{<r}", r"E_{<r}^{T}")
 
 #: the name of the hypothesis E₁E₁ᵀ + … + E_rE_rᵀ − I_r (true at that r only), by r
 COMPLETE = {1: "E1E1t", 2: "E1E1t+E2E2t"}
@@ -47,6 +49,10 @@ def column_hypotheses() -> dict[str, Hypothesis]:
             poly = w((Eit, Ej)) - (NCPoly.identity(SCALAR) if i == j else NCPoly.zero(SCALAR, SCALAR))
             out[f"E{i}tE{j}"] = Hypothesis(f"E{i}tE{j}", poly)
     out["ErtEr"] = Hypothesis("ErtEr", w((ERt, ER)) - NCPoly.identity(SCALAR))
+    out["EleadtElead"] = Hypothesis("EleadtElead", w((LEADt, LEAD)) - NCPoly.identity(LEADING))
+    out["EleadtEr"] = Hypothesis("EleadtEr", w((LEADt, ER)))
+    out["ErtElead"] = Hypothesis("ErtElead", w((ERt, LEAD)))
+    out["EleadEleadt+ErErt"] = Hypothesis("EleadEleadt+ErErt", w((LEAD, LEADt)) + w((ER, ERt)) - NCPoly.identity("r"))
     for r, name in COMPLETE.items():
         poly = NCPoly.zero("r", "r")
         for E, Et in zip(COLUMNS[:r], COVECTORS[:r]):

@@ -23,13 +23,13 @@ import symengine as se
 from ..fields import Dual, DualField, Field
 from ..matrix import CoordinateTracker, Mat, definite
 from ..scene import USER_SCALAR, Flow, PaperObjects, _number, map_entries
-from .algebra import (Letter, NCPoly, NeedsCoordinates, OperatorLetter, apply_operator, as_coef, coef_latex, derivation,
+from .algebra import (LEADING, Letter, NCPoly, NeedsCoordinates, OperatorLetter, apply_operator, as_coef, coef_latex, derivation,
                       letter_pair, record_refusal, refuse, skew_letter, substitute, symmetric_letter, trace)
 from .mat import FreeBackend, FreeDualBackend, entry_of, one_block
 from .rewriting import (_NONZERO_NUMBER_TYPES, _SIMPLE, Certificate, Cofactor, Hypothesis, Order, Reduction,
                         RewritingError, RewritingSystem, SharedMemos, nonzero_terms, simplify_coef)
 from .traces import gradient
-from .columns import COLUMNS, COVECTORS, ER, ERt, canonical, column_hypotheses
+from .columns import COLUMNS, COVECTORS, ER, LEAD, LEADt, ERt, canonical, column_hypotheses
 
 Function = Callable[[Any], Any]
 
@@ -325,7 +325,11 @@ class FreeScene(PaperObjects):
         if realization != "standard":
             raise NeedsCoordinates(f"the {realization!r} realization of T*V (its multipliers solve a "
                                    "Sylvester equation)")
-        self.system = system if system is not None else standard_system()
+        if system is None:
+            # r = n: the order P < X (for the rule XP^T -> -PX^T); the standard rules decrease in it too
+            system = (RewritingSystem(Order([P, X, A, Xt, Pt]), _standard_rules()) if square
+                      else standard_system())
+        self.system = system
         self._tracker = tracker if tracker is not None else CoordinateTracker()
         self._field: Field = FreeField(self.system, lazy, self._tracker)
         self.options: dict[str, Any] = {}
@@ -451,14 +455,22 @@ class FreeScene(PaperObjects):
                                          name=f"E{i}tE{j}", cofactors=[_by(hyps[f"E{i}tE{j}"])])
 
     def _square_rules(self) -> None:
-        """At r = n: XXᵀ → I_n (X is orthogonal) and PXᵀ → −XPᵀ, because
-        PXᵀ + XPᵀ = X(XᵀP + PᵀX)Xᵀ − (XXᵀ − I)PXᵀ − XPᵀ(XXᵀ − I)."""
+        """At r = n: XXᵀ → I_n (X is orthogonal) and XPᵀ → −PXᵀ, because
+        XPᵀ + PXᵀ = X(XᵀP + PᵀX)Xᵀ − (XXᵀ − I)PXᵀ − XPᵀ(XXᵀ − I) (in the order P < X of the scene at
+        r = n: the other direction loops in traces, tr(XᵀPXᵀP) → tr(XᵀXPᵀP) ↺)."""
         h, g = hypothesis("XXt"), hypothesis("XtP+PtX")
         why = "X X^T = I_n: X is square (r = n, the only r the claim is stated for)"
         self.system.add_rule((X, Xt), _i("n"), why, name="XXt", cofactors=[_by(h)])
-        self.system.add_rule((P, Xt), -_w(X, Pt), "P X^T = -X P^T: X^T P is skew and X X^T = I_n (r = n)",
-                             name="PXt", cofactors=[_by(g, 1, left=(X,), right=(Xt,)), _by(h, -1, right=(P, Xt)),
+        self.system.add_rule((X, Pt), -_w(P, Xt), "X P^T = -P X^T: X^T P is skew and X X^T = I_n (r = n)",
+                             name="XPt", cofactors=[_by(g, 1, left=(X,), right=(Xt,)), _by(h, -1, right=(P, Xt)),
                                                     _by(h, -1, left=(X, Pt))])
+        # XᵀPXᵀ + Pᵀ = (XᵀP + PᵀX)Xᵀ − Pᵀ(XXᵀ − I)
+        self.system.add_rule((Xt, P, Xt), -_w(Pt), "X^T P X^T = -P^T X X^T = -P^T (r = n)", name="XtPXt",
+                             cofactors=[_by(g, 1, right=(Xt,)), _by(h, -1, left=(Pt,))])
+        # the completion of P^T X P^T two ways (Knuth-Bendix: with it the word rules are confluent)
+        self.system.add_rule((Pt, P, Xt), _w(Xt, P, Pt), "P^T P X^T = X^T P P^T (r = n; completion of PtX, XPt)",
+                             name="PtPXt", cofactors=[_by(g, -1, right=(Pt,)), _by(g, 1, left=(Pt, X), right=(Xt,)),
+                                                      _by(h, -1, left=(Pt,), right=(P, Xt)), _by(h, -1, left=(Pt, X, Pt))])
 
     def last_column(self) -> Mat:
         """E_r, the last column of I_r, as an r×1 letter (E_rᵀE_r = 1): XE_r is the last column of X."""
@@ -470,6 +482,27 @@ class FreeScene(PaperObjects):
                                  cofactors=[_by(column_hypotheses()["ErtEr"])])
         self._named.setdefault(str(ER), ER)
         return self._cached("column:last", lambda: self._const_block(_w(ER), ("r", "?")))
+
+    def leading_columns(self) -> Mat:
+        """(E_1, ..., E_{r−1}), the first r − 1 columns of I_r, as an r×(r−1) letter E_{<r}, with the last
+        column E_r: E_{<r}ᵀE_{<r} = I_{r−1}, E_{<r}ᵀE_r = 0 and E_{<r}E_{<r}ᵀ = I_r − E_rE_rᵀ (for every r)."""
+        self.last_column()
+        if "leading" not in self._extras:
+            self._extras.add("leading")
+            self.system.order.add(LEAD)
+            self.system.order.add(LEADt)
+            hyps = column_hypotheses()
+            why = "the columns of I_r: its first r - 1 and its last"
+            self.system.add_rule((LEADt, LEAD), _i(LEADING), why, name="EleadtElead",
+                                 cofactors=[_by(hyps["EleadtElead"])])
+            self.system.add_rule((LEADt, ER), NCPoly.zero(LEADING, SCALAR_T), why, name="EleadtEr",
+                                 cofactors=[_by(hyps["EleadtEr"])])
+            self.system.add_rule((ERt, LEAD), NCPoly.zero(SCALAR_T, LEADING), why, name="ErtElead",
+                                 cofactors=[_by(hyps["ErtElead"])])
+            self.system.add_rule((LEAD, LEADt), _i("r") - _w(ER, ERt), why, name="EleadEleadt",
+                                 cofactors=[_by(hyps["EleadEleadt+ErErt"])])
+        self._named.setdefault(str(LEAD), LEAD)
+        return self._cached("column:leading", lambda: self._const_block(_w(LEAD), ("r", "?")))
 
     def column(self, i: int) -> Mat:
         """E_{i+1} ∈ ℝʳ (0 ≤ i < r) as an r×1 letter, for a claim stated at one r = 1 or 2 only (the scene was
