@@ -367,3 +367,11 @@ def test_the_leading_columns_and_the_last_are_the_identity():
             if t["hyp"] == "EleadEleadt+ErErt":
                 t["hyp"] = "E1E1t+E2E2t"
     assert not check_certificate(data).accepted
+
+
+def test_the_report_says_for_which_r_a_proof_holds():
+    from stiefelsym.report import free_scope
+    assert free_scope(_proved(run_free(CATALOG.get("magnetic-euclidean-flow")))) == "every n at r = 2"
+    assert free_scope(_proved(run_free(SPHERE))) == "every n at r = 1"
+    assert free_scope(_proved(run_free(CATALOG.get("rigid-body-euler-poisson")))) == "every n at r = n"
+    assert free_scope(_proved(run_free(CATALOG.get("magnetic-momentum-map-any-rank")))) == "all n, r"
