@@ -45,6 +45,8 @@ def _scene(s: Any, what: str) -> Scene:
 def magnetic_matrix(s) -> Mat:
     """F = E₁∧E₂ ∈ so(2) (the r×r matrix [[0, 1], [−1, 0]]): ω_mag = Σ_{j<k} F_jk de_j∧de_k = de₁∧de₂.
     (Dimension-free, for a claim stated at r = 2 only: E₁E₂ᵀ − E₂E₁ᵀ in the column letters.)"""
+    if _at_point(s):
+        return s.lift(magnetic_matrix(s.inner))
     if _is_free(s):
         E1, E2 = s.column(0), s.column(1)
         return s._cached("twisted:F", lambda: E1 @ E2.T - E2 @ E1.T)
@@ -162,9 +164,16 @@ def _dual_inverse(s: Scene, Ca: list[list[Any]], C0: list[list[Any]]) -> list[li
     return [[Dual(Ca[i][j], Y1[i, j]) for j in range(m)] for i in range(m)]
 
 
+def _at_point(s: Any) -> bool:
+    from .free.scene import FreePointScene
+    return isinstance(s, FreePointScene)
+
+
 def bracket(s, f: Function, g: Function, F: Mat | None = None) -> Any:
     """The Dirac bracket (Dirac_bracket) built from {,}_ε: the Poisson bracket of ω + ε π*ω_mag on T*V.
     (Dimension-free: the derivative of f along the twisted flow of g, for a field strength F of so(r).)"""
+    if _at_point(s):
+        return s.lift(bracket(s.inner, f, g, s._lower(F)))
     if _is_free(s):
         return s.d(f, _free_flow(s, g, F))
     s = _scene(s, "the twisted Dirac bracket")
@@ -196,6 +205,8 @@ def flow(s, H: Function, F: Mat | None = None) -> Flow:
     H for ω_ε = ω + ε π*ω_mag on T*V.  On the dimension-free scene (for a field strength F given as a
     letter of so(r), e.g. s.eta) it is the Lagrange form of :func:`multiplier_flow` with Λ, Π solved in
     the free algebra."""
+    if _at_point(s):
+        return s.lift(flow(s.inner, H, s._lower(F)))
     if _is_free(s):
         return _free_flow(s, H, F)
     s = _scene(s, "the Hamiltonian flow of the twisted form")
@@ -285,6 +296,8 @@ def basis_vector(s, i: int) -> Mat:
     """E_{i+1} ∈ ℝʳ as a column (index space ("r", "?")), so that XE_{i+1} = e_{i+1}: the appendix writes
     its flows column by column.  The dimension-free backend has the columns E₁, E₂ as letters for a
     claim stated at r = 2 only (NeedsCoordinates otherwise)."""
+    if _at_point(s):
+        return s.lift(basis_vector(s.inner, i))
     if _is_free(s):
         return s.column(i)
     s = _scene(s, f"the column e_{i + 1} = X E_{i + 1} (a basis vector of R^r)")
@@ -309,6 +322,8 @@ def first_basis_vectors(s, k: int) -> Mat:
 def last_basis_vector(s) -> Mat:
     """E_r ∈ ℝʳ: X E_r is the last column (e_n of 𝒳 ∈ SO(n) when r = n); a letter of the dimension-free
     backend (E_rᵀE_r = 1)."""
+    if _at_point(s):
+        return s.lift(last_basis_vector(s.inner))
     if _is_free(s):
         return s.last_column()
     s = _scene(s, "the last column e_n = X E_n of X in SO(n)")
@@ -318,6 +333,8 @@ def last_basis_vector(s) -> Mat:
 def leading_basis_vectors(s) -> Mat:
     """(E_1, ..., E_{r−1}): X(E_1, ..., E_{r−1}) = (e_1, ..., e_{n−1}) when r = n (iden1); a letter of the
     dimension-free backend (its columns and E_r are those of I_r)."""
+    if _at_point(s):
+        return s.lift(leading_basis_vectors(s.inner))
     if _is_free(s):
         return s.leading_columns()
     s = _scene(s, "the columns e_1, ..., e_(n-1) of X in SO(n)")
@@ -334,6 +351,8 @@ def at_point(s, X: Mat, P: Mat) -> Scene:
     """The scene's problem at another point (X, P) of T*V (same field, parameters and record): its
     gradients, brackets and flows, the twisted ones included, are taken at (X, P).  (X, P) must lie on
     T*V (a claim checks the constraints it relies on)."""
+    if _is_free(s):
+        return s.at_point(X, P)
     s = _scene(s, "the flows at another point (X, P) of T*V, given by matrices")
     if s.realization != "standard":
         raise ValueError("a scene at another point is offered for the realization (cond_XP) only")

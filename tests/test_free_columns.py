@@ -375,3 +375,50 @@ def test_the_report_says_for_which_r_a_proof_holds():
     assert free_scope(_proved(run_free(SPHERE))) == "every n at r = 1"
     assert free_scope(_proved(run_free(CATALOG.get("rigid-body-euler-poisson")))) == "every n at r = n"
     assert free_scope(_proved(run_free(CATALOG.get("magnetic-momentum-map-any-rank")))) == "all n, r"
+
+
+# -- the problem at another point of T*V (twisted.at_point) --------------------------------------------------
+def test_the_magnetic_grassmannian_flow_is_proved_at_the_horizontal_point():
+    _proved(run_free(CATALOG.get("magnetic-grassmannian-flow")))
+
+
+def _horizontal(t):
+    return t.X, (t.In - t.X @ t.X.T) @ t.P
+
+
+def test_values_at_the_point_are_the_base_scene_s():
+    """h.P is P_h = (I − XXᵀ)P, h.Psi is Ψ(X, P_h) = 0, the flow at h is the flow at (X, P_h)."""
+    def claim(t):
+        X, Ph = _horizontal(t)
+        h = twisted.at_point(t, X, Ph)
+        flow = h.dirac_flow(m.H_neumann_normal)
+        return {"h.P": h.P - Ph, "h.Psi": h.Psi, "h.Phi": h.Phi - (Ph @ X.T - X @ Ph.T),
+                "flow at h": flow.Xdot - (Ph - X @ Ph.T @ X), "d Psi along it": h.d(lambda u: u.Psi, flow)}
+    _proved(run_free(BASE, claim))
+
+
+def at_point_p_is_p(t):
+    h = twisted.at_point(t, *_horizontal(t))
+    return {"h.P - P": h.P - t.P}
+
+
+def at_point_flow_of_the_base(t):
+    """The flow at h is not the flow at (X, P)."""
+    h = twisted.at_point(t, *_horizontal(t))
+    return {"flows": h.dirac_flow(m.H_neumann_normal).Xdot - t.dirac_flow(m.H_neumann_normal).Xdot}
+
+
+def at_point_not_on_t_star_v(t):
+    h = twisted.at_point(t, t.X, t.P + t.X)          # XᵀP + PᵀX + 2I ≠ 0
+    return {"Psi": h.Psi - h.Psi}
+
+
+def at_point_base_tangent(t):
+    h = twisted.at_point(t, *_horizontal(t))
+    return {"d": h.d(lambda u: u.Psi, {"X": t.xi @ t.X, "P": t.xi @ t.P})}
+
+
+@pytest.mark.parametrize("func", [at_point_p_is_p, at_point_flow_of_the_base, at_point_not_on_t_star_v,
+                                  at_point_base_tangent])
+def test_a_corrupted_claim_at_another_point_is_not_proved(func):
+    assert run_free(BASE, func).verdict in ("undecided", "fails")

@@ -504,6 +504,17 @@ class FreeScene(PaperObjects):
         self._named.setdefault(str(LEAD), LEAD)
         return self._cached("column:leading", lambda: self._const_block(_w(LEAD), ("r", "?")))
 
+    def at_point(self, Xv: Mat, Pv: Mat) -> "FreePointScene":
+        """The problem at the point (Xv, Pv) of T*V (n×r blocks of this scene; refused unless they satisfy
+        (cond_XP) by the rules): see :class:`FreePointScene`."""
+        xs, ps = (entry_of(M) if isinstance(M, Mat) and M._shape() == (1, 1) else None for M in (Xv, Pv))
+        if not isinstance(xs, NCPoly) or not isinstance(ps, NCPoly) or xs.shape != ("n", "r") or ps.shape != ("n", "r"):
+            raise refuse("a point of T*V that is not given by two n×r blocks", self.tracker)
+        for rel in (xs.star() * xs - _i("r"), xs.star() * ps + ps.star() * xs):
+            if not self.reduce(rel).is_zero:
+                raise refuse("a point that the rules do not show to lie on T*V", self.tracker)
+        return FreePointScene(self, xs, ps)
+
     def column(self, i: int) -> Mat:
         """E_{i+1} ∈ ℝʳ (0 ≤ i < r) as an r×1 letter, for a claim stated at one r = 1 or 2 only (the scene was
         made with ``columns=r``: E₁E₁ᵀ + … + E_rE_rᵀ = I_r is then a hypothesis of its normal forms)."""
@@ -1044,3 +1055,71 @@ def _isolate(eq: NCPoly, U: Letter, unknowns: list[Letter]) -> NCPoly | None:
 def _operator_letters(y: Any) -> list[OperatorLetter]:
     polys = [y.a, y.b] if isinstance(y, Dual) else [y]
     return [L for q in polys for L in q.letters() if isinstance(L, OperatorLetter)]
+
+
+# ---------------------------------------------------------------------------
+class FreePointScene:
+    """The free scene's problem at another point (X₁, P₁) of T*V, given by polynomials of the scene.
+
+    Every value is computed at a generic point of a scene of its own (its letters X, P, the same rules,
+    parameters and record) and then evaluated at the point by the substitution X ↦ X₁, P ↦ P₁, which
+    maps every consequence of (cond_XP) to one, because (X₁, P₁) satisfies (cond_XP) (checked when the
+    scene is made).  Flows it hands out are remembered, so that a derivative along one of them is taken
+    at the generic point too; anything else given to it in the coordinates of the base scene is refused."""
+
+    def __init__(self, base: FreeScene, Xv: NCPoly, Pv: NCPoly) -> None:
+        self.base = base
+        self.inner = FreeScene(base.tracker, realization="standard", lazy=getattr(base.field, "lazy", False),
+                               columns=base.columns, square=base.square)
+        self.inner.params = base.params
+        self._images = {X: Xv, P: Pv}
+        self._flows: dict[int, tuple[Flow, Flow]] = {}
+
+    def lift(self, v: Any) -> Any:
+        """A value of the generic point, evaluated at the point."""
+        if isinstance(v, Flow):
+            out = Flow(self.lift(v.Xdot), self.lift(v.Pdot))
+            self._flows[id(out)] = (out, v)
+            return out
+        if isinstance(v, Mat):
+            return map_entries(v, lambda x: self._sub(x), self.base)
+        if isinstance(v, NCPoly):
+            return self._sub(v)
+        if isinstance(v, (list, tuple)):
+            return type(v)(self.lift(x) for x in v)
+        if isinstance(v, dict):
+            return {k: self.lift(x) for k, x in v.items()}
+        if callable(v):
+            return lambda *a, **k: self.lift(v(*[self._lower(x) for x in a], **{n: self._lower(x) for n, x in k.items()}))
+        return v
+
+    def _sub(self, x: Any) -> Any:
+        if isinstance(x, NCPoly):
+            return self.base.field.normalize(substitute(x, self._images))
+        if isinstance(x, Dual):
+            raise refuse("a value of a tangent scene at another point", self.base.tracker)
+        return x
+
+    def _lower(self, v: Any) -> Any:
+        """What the generic point's scene takes for an argument: its own flows, functions, scalars."""
+        if isinstance(v, Flow):
+            hit = self._flows.get(id(v))
+            if hit is None or hit[0] is not v:
+                raise refuse("a flow at another point that the point's scene did not make", self.base.tracker)
+            return hit[1]
+        if isinstance(v, (Mat, NCPoly, dict, list, tuple)):
+            raise refuse("a value in the base scene's coordinates handed to the scene at another point",
+                         self.base.tracker)
+        return v
+
+    #: what does not depend on the point: taken from the base scene (values given in its coordinates)
+    POINTLESS = frozenset({"tr", "killing", "q", "const", "zeros", "In", "Ir", "scalar_matrix", "mat", "A", "Ainv",
+                           "resolvent", "lam", "eps", "kappa", "scalar", "xi", "zeta", "eta", "theta", "generic",
+                           "n", "r", "field", "tracker", "column", "last_column", "leading_columns", "Y", "Q"})
+
+    def __getattr__(self, name: str) -> Any:
+        if name.startswith("_"):
+            raise AttributeError(name)
+        if name in self.POINTLESS:
+            return getattr(self.base, name)
+        return self.lift(getattr(self.inner, name))
