@@ -104,8 +104,16 @@ def test_the_free_twisted_flow_is_not_the_untwisted_one(catalog):
     assert res.verdict == "undecided" and "nonzero normal form" in res.message
 
 
-def test_the_twisted_form_needs_coordinates(catalog):
-    res = run_free(catalog.get("magnetic-euclidean-flow"))
+def test_the_twisted_form_is_proved_at_r_2_and_needs_coordinates_at_other_r(catalog):
+    """With the columns E_1, E_2 of R^2 as letters the magnetic flow is proved for every n at r = 2, the only r
+    it is stated for; stated for other r too, its columns need coordinates."""
+    import dataclasses
+
+    from stiefelsym import admissible
+    claim = catalog.get("magnetic-euclidean-flow")
+    res = run_free(claim)
+    assert res.verdict == "proved" and "r = 2" in res.certificate
+    res = run_free(dataclasses.replace(claim, sizes=admissible(n_max=4, r_min=2, r_max=3)))
     assert res.verdict == "undecided" and "needs coordinates" in res.message
 
 
