@@ -88,8 +88,14 @@ def test_the_magnetic_form_needs_two_columns():
         twisted.magnetic_matrix(s)
 
 
-#: proved for every n, r by rewriting (the twisted flow with a letter F of so(r) in the free algebra)
-FREE_PROVED = ("ym-reduced-neumann", "ym-charge", "magnetic-spectral-invariants-any-rank", "magnetic-momentum-map-any-rank", "magnetic-lax-any-rank")
+#: proved for every n, r by rewriting (the twisted flow with a letter F of so(r) in the free algebra), and for
+#: every n at the one r they are stated for: r = 2 (the columns E_1, E_2 as letters), r = n (X X^T = I_n)
+FREE_PROVED = ("ym-reduced-neumann", "ym-charge", "magnetic-spectral-invariants-any-rank", "magnetic-momentum-map-any-rank",
+               "magnetic-lax-any-rank", "magnetic-form-kirillov-kostant", "magnetic-momentum-map",
+               "magnetic-euclidean-flow", "magnetic-normal-flow", "magnetic-psi12-conserved", "magnetic-prep",
+               "magnetic-lax", "magnetic-grassmannian-momentum", "magnetic-grassmannian-flow",
+               "magnetic-spectral-invariants", "twisted-form-closed", "rigid-body-euler-poisson",
+               "ym-second-derivative", "clebsch-perelomov-hamiltonian")
 
 
 @pytest.mark.parametrize("cid", FREE_PROVED)
