@@ -491,6 +491,28 @@ class Scene(PaperObjects):
     def Q(self) -> Mat:
         return self._second_point()[1]
 
+    # -- a generic point (X, Y, Ẋ, Ẏ) of the double Neumann system: XᵀY = I_r, ẊᵀY + XᵀẎ = 0 ------------
+    def _double(self) -> dict:
+        from .systems import double_point_of
+        return self._cached("double point", lambda: double_point_of(self))
+
+    @property
+    def DX(self) -> Mat:
+        """X of a generic point of the double Neumann system (see :func:`stiefelsym.systems.double_point`)."""
+        return self._double()["X"]
+
+    @property
+    def DY(self) -> Mat:
+        return self._double()["Y"]
+
+    @property
+    def DXdot(self) -> Mat:
+        return self._double()["Xdot"]
+
+    @property
+    def DYdot(self) -> Mat:
+        return self._double()["Ydot"]
+
     # -- the complex Stiefel variety W(n, r), realified ---------------------------
     # A complex matrix U + iV is represented by the real block matrix [[U, -V], [V, U]]:
     # sums, products and the conjugate transpose (which becomes the transpose) are preserved.

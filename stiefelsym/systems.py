@@ -613,7 +613,13 @@ def _diag(s: Scene, values: Sequence[Any]) -> Mat:
 
 def double_point(s: Scene) -> dict[str, Mat]:
     """A generic point (X, Y, Ẋ, Ẏ) of the rank r double Neumann system: XᵀY = I_r,
-    ẊᵀY + XᵀẎ = 0 (keys "X", "Y", "Xdot", "Ydot").
+    ẊᵀY + XᵀẎ = 0 (keys "X", "Y", "Xdot", "Ydot"): the scene's matrices DX, DY, DXdot, DYdot
+    (built by :func:`double_point_of` on a coordinate scene, letters on the dimension-free one)."""
+    return {"X": s.DX, "Y": s.DY, "Xdot": s.DXdot, "Ydot": s.DYdot}
+
+
+def double_point_of(s: Scene) -> dict[str, Mat]:
+    """The generic point of :func:`double_point` of a coordinate scene.
 
     X = X₀DU with X₀ the scene's point of V(n, r), D diagonal and U unipotent upper triangular
     (every X of rank r, by the QR decomposition), Y = X₀D⁻¹U⁻ᵀ + (I − X₀X₀ᵀ)Z, Ẋ = V generic,
@@ -640,7 +646,7 @@ def double_point(s: Scene) -> dict[str, Mat]:
 #: the points of the appendix's phase spaces built from scalar parameters of their own, for a
 #: witness (stiefelsym.witness) to state: (the prefix of their parameters' names, the builder, the
 #: keys of the point and the letters a report names them by); such a point replaces the chart's X, P
-WITNESS_POINTS = (("double_", double_point, (("X", "X"), ("Y", "Y"), ("Xdot", "Ẋ"), ("Ydot", "Ẏ"))),)
+WITNESS_POINTS = (("double_", double_point_of, (("X", "X"), ("Y", "Y"), ("Xdot", "Ẋ"), ("Ydot", "Ẏ"))),)
 
 
 def coupled_point(s: Scene) -> dict[str, Mat]:

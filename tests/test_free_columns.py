@@ -287,9 +287,9 @@ def euler_star_sign(s):
     return {"(Euler*)": s.d(lambda t: t.Phi, s.dirac_flow(H_CP)) - comm(e @ e.T, s.A)}
 
 
-def body_velocity_is_space_momentum(s):
+def body_velocity_sign(s):
     from stiefelsym.proofs.app1_magnetic_neumann import H_CP
-    return {"omega = M": s.X.T @ s.dirac_flow(H_CP).Xdot - s.X.T @ s.Phi}
+    return {"omega = -m": s.X.T @ s.dirac_flow(H_CP).Xdot + s.X.T @ s.Phi @ s.X}
 
 
 def last_column_orthogonal_to_p(s):
@@ -299,7 +299,7 @@ def last_column_orthogonal_to_p(s):
     return {"e_n^T P": e.T @ s.P}
 
 
-@pytest.mark.parametrize("func", [euler_star_sign, body_velocity_is_space_momentum,
+@pytest.mark.parametrize("func", [euler_star_sign, body_velocity_sign,
                                   last_column_orthogonal_to_p])
 def test_a_corrupted_rigid_body_claim_is_not_proved(func):
     assert run_free(CATALOG.get("rigid-body-euler-poisson"), func).verdict in ("undecided", "fails")
@@ -350,9 +350,9 @@ def leading_dropped(t):
 
 
 def leading_not_last(t):
-    from stiefelsym.proofs.app1_magnetic_neumann import last
-    E, e = twisted.leading_basis_vectors(t), last(t)
-    return {"X'^T X' P^T e": (t.X @ E).T @ t.P @ e}
+    """X'ᵀP = E_{<r}ᵀXᵀP is not 0 (XᵀP is skew, not 0)."""
+    E = twisted.leading_basis_vectors(t)
+    return {"X'^T P": (t.X @ E).T @ t.P}
 
 
 def test_the_leading_columns_and_the_last_are_the_identity():
@@ -422,3 +422,76 @@ def at_point_base_tangent(t):
                                   at_point_base_tangent])
 def test_a_corrupted_claim_at_another_point_is_not_proved(func):
     assert run_free(BASE, func).verdict in ("undecided", "fails")
+
+
+# -- the double Neumann system: a generic point (X, Y, Ẋ, Ẏ) with (D0) as rules ----------------------------------
+DOUBLE = CATALOG.get("double-neumann-momentum")
+
+
+def test_the_double_system_s_momentum_and_corrected_lax_pair_are_proved():
+    _proved(run_free(DOUBLE))
+    lax = CATALOG.get("double-neumann-dual-lax")
+    (corr,) = lax.corrections
+    _proved(run_free(lax, corr.func))
+    assert run_free(lax).verdict == "undecided"        # as printed it fails at every size
+
+
+def double_potential_conserved(s):
+    from stiefelsym.systems import derivative, double_point
+    import stiefelsym.proofs.app2_double_coupled_complex as a
+    z = double_point(s)
+    return {"d tr(X^T A Y)/dt": derivative(s, lambda t, w: t.tr(w["X"].T @ t.A @ w["Y"]), z, a.flow_double(s, z))}
+
+
+def double_flow_without_transpose(s):
+    """Ẍ = −AX + XΛ (Λᵀ dropped) does not keep ẊᵀY + XᵀẎ = 0: the derivative along it is refused."""
+    from stiefelsym.systems import derivative, double_point
+    import stiefelsym.proofs.app2_double_coupled_complex as a
+    z = double_point(s)
+    flow = a.flow_double(s, z)
+    flow["Xdot"] = -(s.A @ z["X"]) + z["X"] @ a.Lambda_double(s, z)
+    return {"d(X^T Y' - Y^T X')/dt": derivative(s, lambda t, w: w["X"].T @ w["Ydot"] - w["Y"].T @ w["Xdot"], z, flow)}
+
+
+def double_velocities_product(s):
+    """XᵀẎ and YᵀẊ are conserved one by one (so is the printed integral), ẊᵀẎ is not."""
+    from stiefelsym.systems import derivative, double_point
+    import stiefelsym.proofs.app2_double_coupled_complex as a
+    z = double_point(s)
+    return {"d(X'^T Y')/dt": derivative(s, lambda t, w: w["Xdot"].T @ w["Ydot"], z, a.flow_double(s, z))}
+
+
+@pytest.mark.parametrize("func", [double_potential_conserved, double_flow_without_transpose,
+                                  double_velocities_product])
+def test_a_corrupted_double_claim_is_not_proved(func):
+    assert run_free(DOUBLE, func).verdict in ("undecided", "fails")
+
+
+def test_the_checker_knows_the_double_point():
+    data = copy.deepcopy(_proved(run_free(DOUBLE)).certificate_data)
+    assert {"DXtDY", "DXdtDY+DXtDYd"} & set(data["summary"]["hypotheses"])
+    for e in data["entries"]:
+        for t in e["terms"]:
+            if t["hyp"] == "DXdtDY+DXtDYd":
+                t["hyp"] = "DYtDXd+DYdtDX"
+            elif t["hyp"] == "DXtDY":
+                t["hyp"] = "XtX"
+    assert not check_certificate(data).accepted
+
+
+# -- every corrupted claim above that states something false fails at a fixed size ------------------------------
+FALSE_CONTROLS = [
+    ("magnetic-momentum-map", (3, 2), f) for f in (
+        momentum_map_swapped, momentum_map_dropped, euclidean_flow_lorentz_sign, euclidean_flow_swapped_columns,
+        prep_without_magnetic_term, lax_with_phi, psi12_not_invariant, form_sign, at_point_p_is_p,
+        at_point_flow_of_the_base)] + [
+    ("poisson-sphere-flow", (3, 1), f) for f in (sphere_flow_sign, sphere_flow_swapped)] + [
+    ("rigid-body-euler-poisson", (3, 3), f) for f in (euler_star_sign, body_velocity_sign, last_column_orthogonal_to_p)] + [
+    ("clebsch-perelomov-hamiltonian", (3, 3), f) for f in (leading_dropped, leading_not_last)] + [
+    ("double-neumann-momentum", (3, 2), f) for f in (double_potential_conserved, double_velocities_product)]
+
+
+@pytest.mark.parametrize("cid, size, func", FALSE_CONTROLS, ids=[f"{c}-{f.__name__}" for c, _, f in FALSE_CONTROLS])
+def test_the_corrupted_claims_fail_at_a_fixed_size(cid, size, func):
+    from stiefelsym.methods import run_exact
+    assert run_exact(CATALOG.get(cid), *size, 0, func=func).verdict == "fails"

@@ -44,6 +44,12 @@ A = symmetric_letter("A", "n", "A")
 Y, Yt = letter_pair("Y", "Yt", "n", "r", "Y", "Y^{T}")
 Q, Qt = letter_pair("Q", "Qt", "n", "r", "Q", "Q^{T}")
 AINV = symmetric_letter("Ainv", "n", "A^{-1}")
+#: a generic point (X, Y, Ẋ, Ẏ) of the double Neumann system: XᵀY = I_r, ẊᵀY + XᵀẎ = 0
+DX, DXt = letter_pair("DX", "DXt", "n", "r", "X", "X^{T}")
+DY, DYt = letter_pair("DY", "DYt", "n", "r", "Y", "Y^{T}")
+DXd, DXdt = letter_pair("DXd", "DXdt", "n", "r", r"\dot X", r"\dot X^{T}")
+DYd, DYdt = letter_pair("DYd", "DYdt", "n", "r", r"\dot Y", r"\dot Y^{T}")
+DOUBLE = {"X": DX, "Y": DY, "Xdot": DXd, "Ydot": DYd}
 PI = symmetric_letter("Pi", "r", r"\Pi")
 LAMBDA = symmetric_letter("Lambda", "r", r"\Lambda")
 
@@ -117,6 +123,10 @@ def hypothesis(name: str, R: Letter | None = None, mu: Any = None) -> Hypothesis
         "AAinv": lambda: _w(A, AINV) - _i("n"),
         "AinvA": lambda: _w(AINV, A) - _i("n"),
         "XXt": lambda: _w(X, Xt) - _i("n"),
+        "DXtDY": lambda: _w(DXt, DY) - _i("r"),
+        "DYtDX": lambda: _w(DYt, DX) - _i("r"),
+        "DXdtDY+DXtDYd": lambda: _w(DXdt, DY) + _w(DXt, DYd),
+        "DYtDXd+DYdtDX": lambda: _w(DYt, DXd) + _w(DYdt, DX),
     }
     if name not in polys:
         return column_hypotheses()[name]
@@ -504,6 +514,57 @@ class FreeScene(PaperObjects):
         self._named.setdefault(str(LEAD), LEAD)
         return self._cached("column:leading", lambda: self._const_block(_w(LEAD), ("r", "?")))
 
+    def _double(self, key: str) -> Mat:
+        """A generic point of the double Neumann system as letters: XᵀY → I_r, YᵀX → I_r, ẊᵀY → −XᵀẎ,
+        YᵀẊ → −ẎᵀX (its constraints and their transposes)."""
+        if "double" not in self._extras:
+            self._extras.add("double")
+            for L in (DX, DY, DXd, DYd, DXt, DYdt, DYt, DXdt):   # XᵀẎ < ẊᵀY, ẎᵀX < YᵀẊ
+                self.system.order.add(L)
+            self.system.add_rule((DXt, DY), _i("r"), "X^T Y = I_r (D0)", name="DXtDY", cofactors=[_by(hypothesis("DXtDY"))])
+            self.system.add_rule((DYt, DX), _i("r"), "Y^T X = I_r (D0)", name="DYtDX", cofactors=[_by(hypothesis("DYtDX"))])
+            self.system.add_rule((DXdt, DY), -_w(DXt, DYd), "X'^T Y + X^T Y' = 0 (D0, differentiated)", name="DXdtDY",
+                                 cofactors=[_by(hypothesis("DXdtDY+DXtDYd"))])
+            self.system.add_rule((DYt, DXd), -_w(DYdt, DX), "Y^T X' + Y'^T X = 0 (D0, differentiated)", name="DYtDXd",
+                                 cofactors=[_by(hypothesis("DYtDXd+DYdtDX"))])
+        L = DOUBLE[key]
+        self._named.setdefault(str(L), L)
+        return self._cached(f"double:{key}", lambda: self._const_block(_w(L), ("n", "r")))
+
+    @property
+    def DX(self) -> Mat:
+        return self._double("X")
+
+    @property
+    def DY(self) -> Mat:
+        return self._double("Y")
+
+    @property
+    def DXdot(self) -> Mat:
+        return self._double("Xdot")
+
+    @property
+    def DYdot(self) -> Mat:
+        return self._double("Ydot")
+
+    def _derivative_at_double_point(self, F: Callable[[Any, dict], Any], point: Mapping[str, Any],
+                                    tangent: Mapping[str, Any]) -> Any:
+        """d/dε F(t, z + ε·v) at the double point z: the derivation of the value F(z) (a polynomial in the
+        point's letters) that sends each letter to its component of v, for a v that keeps (D0) and its
+        derivative (checked by the rules: the derivative is then that of F on the constraint set)."""
+        images = {}
+        for k, v in tangent.items():
+            e = entry_of(v) if isinstance(v, Mat) and v._shape() == (1, 1) else None
+            if k not in DOUBLE or not isinstance(e, NCPoly) or e.shape != ("n", "r"):
+                raise refuse("a tangent vector of the double system that is not given by its n×r blocks", self.tracker)
+            images[DOUBLE[k]] = e
+        for rel in (hypothesis("DXtDY").poly, hypothesis("DXdtDY+DXtDYd").poly):
+            if not self.reduce(derivation(rel, images)).is_zero:
+                raise refuse("a derivative along a vector that does not keep (D0) and its derivative", self.tracker)
+        value = F(self, dict(point))
+        return map_entries(value, lambda x: self.field.normalize(derivation(x, images)) if isinstance(x, NCPoly)
+                           else se.Integer(0), self)
+
     def at_point(self, Xv: Mat, Pv: Mat) -> "FreePointScene":
         """The problem at the point (Xv, Pv) of T*V (n×r blocks of this scene; refused unless they satisfy
         (cond_XP) by the rules): see :class:`FreePointScene`."""
@@ -822,6 +883,8 @@ class FreeScene(PaperObjects):
                                 tangent: Mapping[str, Any]) -> Any:
         """d/dε F(t, point + ε·tangent) at ε = 0 for the scene's own point: the derivative of
         t ↦ F(t, {k: t.k}) along the tangent (letters not moved are constant)."""
+        if set(point) == set(DOUBLE) and all(point[k] is self._double(k) for k in DOUBLE):
+            return self._derivative_at_double_point(F, point, tangent)
         keys = self._own_point(point, "a derivative")
         return self.d(lambda t: F(t, {k: getattr(t, k) for k in keys}), dict(tangent))
 
