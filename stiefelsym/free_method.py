@@ -64,7 +64,7 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
         with recording(scene.tracker):   # every refusal goes to the run's record before it is raised
             checks = call_claim(func, scene)
     except NeedsCoordinates as exc:
-        return undecided(f"needs coordinates: {exc.what}; decided by the fixed-size methods")
+        return undecided(evaluation_needs_text(claim, func, exc.what))
     except TraceRefused as exc:
         return undecided(needs_text(claim, func, str(exc)))
     except (FreeSolveError, RewritingError) as exc:
@@ -182,6 +182,28 @@ def fixed_r(claim: Claim) -> int:
     if lo is None or lo != hi or lo not in (1, 2) or any(z.r != lo for z in spec):
         return 0
     return lo
+
+
+def evaluation_needs_text(claim: Claim, func: Callable, refusal: str) -> str:
+    """Why a claim whose graph traces with symbolic sizes is left to the fixed-size methods: what the
+    free scene refused, with what the claim's graph at a fixed size reads, when it names it."""
+    from .ir import compile_at_size
+    from .ir.passes import coordinate_needs
+    from .scene import REALIZATIONS
+    sizes = list(claim.sizes)
+    z = next((z for z in sizes if 1 < z.r < z.n), None) or next((z for z in sizes if z.n >= 3), None) or \
+        (sizes[-1] if sizes else None)
+    needs: list[str] = []
+    if z is not None and claim.realization in REALIZATIONS:
+        cons = REALIZATIONS[claim.realization]
+        try:
+            needs = coordinate_needs(compile_at_size(func, z.n, z.r, (cons.name, cons.build)))
+        except Exception:    # noqa: BLE001 - the refusal alone says it
+            needs = []
+    if not needs:
+        return f"needs coordinates: {refusal}; decided by the fixed-size methods"
+    return (f"needs coordinates (fixed n, r): {'; '.join(needs)} (the dimension-free scene refused: {refusal}); "
+            "decided by the fixed-size methods")
 
 
 def needs_text(claim: Claim, func: Callable, refusal: str) -> str:
