@@ -138,8 +138,18 @@ def _units(s: Scene) -> list[Mat]:
     return [u["X"] for k, u in enumerate(s._unit_tangents()) if k < nr]
 
 
+class _FreeCoordinates(tuple):
+    """What the dimension-free scene has for the coordinates of matrix variables: none (the steps that
+    take them solve in the free algebra or refuse)."""
+
+
+FREE_COORDINATES = _FreeCoordinates()
+
+
 def real_coordinates(s: Scene, names: Sequence[Hashable]) -> list[tuple[Hashable, Mat]]:
     """The coordinates of n×r real matrix variables: (name, E_ij) for each name."""
+    if not isinstance(s, (Scene, TraceScene)) and hasattr(s, "euler_lagrange_double"):
+        return FREE_COORDINATES   # type: ignore[return-value]
     _coordinate_scene(s, "coordinates of matrix variables")
     units = _units(s)
     return _UnitCoordinates([(name, E) for name in names for E in units], names, (s.n, s.r))
@@ -482,6 +492,8 @@ def euler_lagrange(s: Scene, T: Callable[[Scene, dict], Any], U: Callable[[Scene
     The matrix K of T is that of its polarization, T(b_k + b_l) − T(b_k) − T(b_l) + T(0), taken as
     the gradients of T at the basis vectors; with J = Dg, Y = K⁻¹[−∇U | Jᵀ], the multipliers solve
     (J Y₁) μ = −D²g(q̇, q̇) − J Y₀ and q̈ = Y₀ + Y₁ μ (whole-matrix products)."""
+    if coords is FREE_COORDINATES and hasattr(s, "euler_lagrange_double"):
+        return s.euler_lagrange_double(T, U, constraints, position, velocity)   # the dimension-free scene
     _coordinate_scene(s, "the Euler-Lagrange equations in coordinates")
     names = list(position)
     if set(velocity) != set(names):

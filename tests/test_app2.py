@@ -21,7 +21,8 @@ SEED = 0
 FREE_PROVED = ("coupled-corrected-flow-invariants", "coupled-dual-lax-along-corrected-flow",
                "coupled-big-lax-along-corrected-flow", "coupled-neumann-momentum", "coupled-dual-lax",
                "coupled-perturbed-dual-lax",
-               "double-neumann-momentum")   # the double point (X, Y, Ẋ, Ẏ) as letters with (D0) as rules
+               "double-neumann-momentum", "double-neumann-flow",   # the double point (X, Y, Ẋ, Ẏ) as letters
+               "double-neumann-diagonal")                           # with (D0) as rules, Euler-Lagrange solved there
 def coupled_constraints(t, z):
     """XᵀX = I_r, XᵀP + PᵀX = 0, YᵀY = I_r, YᵀQ + QᵀY = 0 (the constraints stiefel_pairs_flow imposes)."""
     X, P, Y, Q = z["X"], z["P"], z["Y"], z["Q"]

@@ -467,6 +467,51 @@ def test_a_corrupted_double_claim_is_not_proved(func):
     assert run_free(DOUBLE, func).verdict in ("undecided", "fails")
 
 
+@pytest.mark.parametrize("cid", ["double-neumann-flow", "double-neumann-diagonal"])
+def test_the_euler_lagrange_equations_of_the_double_system_are_solved_in_the_free_algebra(cid):
+    _proved(run_free(CATALOG.get(cid)))
+
+
+def _accelerations(s, z, T=None, U=None, constraints=None):
+    import stiefelsym.proofs.app2_double_coupled_complex as a
+    from stiefelsym.systems import euler_lagrange, real_coordinates
+    acc, _ = euler_lagrange(s, T or a.T_double, U or a.U_double, constraints or a.D0, {"X": z["X"], "Y": z["Y"]},
+                            {"X": z["Xdot"], "Y": z["Ydot"]}, real_coordinates(s, ["X", "Y"]))
+    return acc
+
+
+def el_potential_sign(s):
+    """(D-eq) against the Euler-Lagrange equations of tr(XᵀAY) + tr(ẊᵀẎ) (the potential's sign flipped)."""
+    import stiefelsym.proofs.app2_double_coupled_complex as a
+    from stiefelsym.systems import double_point
+    z = double_point(s)
+    acc = _accelerations(s, z, U=lambda t, q: -a.U_double(t, q))
+    return {"X''": acc["X"] - a.flow_double(s, z)["Xdot"]}
+
+
+def el_other_constraint(s):
+    """Constraints YᵀX = I_r written the other way: not the ones the free scene solves, refused."""
+    import stiefelsym.proofs.app2_double_coupled_complex as a
+    from stiefelsym.systems import double_point
+    z = double_point(s)
+    acc = _accelerations(s, z, constraints=lambda t, q: [q["Y"].T @ q["X"] - t.Ir])
+    return {"X''": acc["X"] - a.flow_double(s, z)["Xdot"]}
+
+
+def el_transposed_multiplier(s):
+    """(D-eq) with Λ in place of Λᵀ in Ẍ."""
+    import stiefelsym.proofs.app2_double_coupled_complex as a
+    from stiefelsym.systems import double_point
+    z = double_point(s)
+    acc = _accelerations(s, z)
+    return {"X''": acc["X"] - (-(s.A @ z["X"]) + z["X"] @ a.Lambda_double(s, z))}
+
+
+@pytest.mark.parametrize("func", [el_potential_sign, el_other_constraint, el_transposed_multiplier])
+def test_a_corrupted_euler_lagrange_claim_is_not_proved(func):
+    assert run_free(DOUBLE, func).verdict in ("undecided", "fails")
+
+
 def test_the_checker_knows_the_double_point():
     data = copy.deepcopy(_proved(run_free(DOUBLE)).certificate_data)
     assert {"DXtDY", "DXdtDY+DXtDYd"} & set(data["summary"]["hypotheses"])
@@ -488,7 +533,8 @@ FALSE_CONTROLS = [
     ("poisson-sphere-flow", (3, 1), f) for f in (sphere_flow_sign, sphere_flow_swapped)] + [
     ("rigid-body-euler-poisson", (3, 3), f) for f in (euler_star_sign, body_velocity_sign, last_column_orthogonal_to_p)] + [
     ("clebsch-perelomov-hamiltonian", (3, 3), f) for f in (leading_dropped, leading_not_last)] + [
-    ("double-neumann-momentum", (3, 2), f) for f in (double_potential_conserved, double_velocities_product)]
+    ("double-neumann-momentum", (3, 2), f) for f in (double_potential_conserved, double_velocities_product,
+                                                     el_potential_sign, el_transposed_multiplier)]
 
 
 @pytest.mark.parametrize("cid, size, func", FALSE_CONTROLS, ids=[f"{c}-{f.__name__}" for c, _, f in FALSE_CONTROLS])

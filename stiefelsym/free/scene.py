@@ -565,6 +565,73 @@ class FreeScene(PaperObjects):
         return map_entries(value, lambda x: self.field.normalize(derivation(x, images)) if isinstance(x, NCPoly)
                            else se.Integer(0), self)
 
+    def euler_lagrange_double(self, T: Callable, U: Callable, constraints: Callable, position: Mapping[str, Any],
+                              velocity: Mapping[str, Any]) -> tuple[dict[str, Mat], list]:
+        """The Euler–Lagrange equations d/dt ∂T/∂q̇ = −∂U/∂q + ∂tr(Mᵀg)/∂q, g = XᵀY − I_r = 0, of a Lagrangian
+        T(q̇) − U(q) on pairs (X, Y) of n×r matrices, solved in the free algebra at the generic point of the
+        double system (its letters and rules (D0)) and evaluated at the given point by substitution: the
+        accelerations from the equations (each c·q̈_k + terms free of q̈), the r×r multiplier M (or Mᵀ)
+        from g̈ = 0.  Refused unless the constraints are exactly XᵀY − I_r, T has constant coefficients,
+        and the point satisfies (D0) and its derivative."""
+        if set(position) != {"X", "Y"} or set(velocity) != {"X", "Y"}:
+            raise refuse("Euler-Lagrange equations of variables other than a pair (X, Y)", self.tracker)
+        q = {"X": self._double("X"), "Y": self._double("Y")}
+        v = {"X": self._double("Xdot"), "Y": self._double("Ydot")}
+        g = constraints(self, q)
+        g = g[0] if isinstance(g, (list, tuple)) and len(g) == 1 else g
+        D0 = _w(DXt, DY) - _i("r")
+        if not isinstance(g, Mat) or not isinstance(entry_of(g), NCPoly) or (entry_of(g) - D0).expand().terms:
+            raise refuse("Euler-Lagrange equations with constraints other than X^T Y = I_r", self.tracker)
+        images = {}
+        for key, L in (("X", DX), ("Y", DY)):
+            images[L] = entry_of(position[key]) if isinstance(position[key], Mat) else None
+            images[DOUBLE[key + "dot"]] = entry_of(velocity[key]) if isinstance(velocity[key], Mat) else None
+        if any(not isinstance(e, NCPoly) or e.shape != ("n", "r") for e in images.values()):
+            raise refuse("a point of the double system that is not given by n×r blocks", self.tracker)
+        for rel in (D0, hypothesis("DXdtDY+DXtDYd").poly):
+            if not self.reduce(substitute(rel, images)).is_zero:
+                raise refuse("a point that the rules do not show to satisfy (D0) and its derivative", self.tracker)
+        acc = {"X": Letter("ddX", "n", "r"), "Y": Letter("ddY", "n", "r")}
+        for L in acc.values():
+            L.adjoint = Letter(f"{L}t", "r", "n")
+            L.adjoint.adjoint = L
+        M = Letter("Mu", "r", "r")
+        M.adjoint = Letter("Mut", "r", "r")
+        M.adjoint.adjoint = M
+        kinetic, potential = self._trace_form(T(self, v)), self._trace_form(U(self, q))
+        force = trace(_w(M.adjoint) * D0)
+        to_acc = {DOUBLE[k + "dot"]: _w(acc[k]) for k in ("X", "Y")}
+        equations = []
+        for key, L in (("X", DX), ("Y", DY)):
+            momentum = gradient(kinetic, DOUBLE[key + "dot"])
+            if momentum.letters() & {DX, DY, DXt, DYt}:
+                raise refuse("a kinetic energy whose coefficients depend on the position", self.tracker)
+            equations.append(substitute(momentum, to_acc) + gradient(potential, L) - gradient(force, L))
+        nf = self.system.normal_form
+        solved = solve_multipliers([nf(e) for e in equations], list(acc.values()), self.system)
+        gdot = derivation(D0, {DX: _w(DXd), DY: _w(DYd)})
+        gddot = nf(substitute(derivation(gdot, {DX: _w(DXd), DY: _w(DYd), DXd: _w(acc["X"]), DYd: _w(acc["Y"])}),
+                              solved))
+        for unknown in (M, M.adjoint):
+            sol = _isolate(gddot, unknown, [M, M.adjoint])
+            if sol is not None:
+                mult = {unknown: nf(sol), unknown.adjoint: nf(sol).star()}
+                break
+        else:
+            raise refuse("the multiplier of X^T Y = I_r, not solvable in the free algebra", self.tracker)
+        out = {k: self._const_mat(self.field.normalize(substitute(nf(substitute(solved[acc[k]], mult)), images)))
+               for k in ("X", "Y")}
+        return out, []
+
+    def _trace_form(self, value: Any) -> NCPoly:
+        value = entry_of(value) if isinstance(value, Mat) and value._shape() == (1, 1) else value
+        if isinstance(value, NCPoly) and value.is_scalar:
+            return value
+        c = as_coef(value)
+        if c is None:
+            raise refuse("a Lagrangian that is not a trace form", self.tracker)
+        return NCPoly.scalar(c)
+
     def at_point(self, Xv: Mat, Pv: Mat) -> "FreePointScene":
         """The problem at the point (Xv, Pv) of T*V (n×r blocks of this scene; refused unless they satisfy
         (cond_XP) by the rules): see :class:`FreePointScene`."""
