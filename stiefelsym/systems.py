@@ -53,7 +53,7 @@ from . import scene as scene_module
 from .ir.trace import TraceScene, primitive
 from .matrix import Mat, _refused, block, definite
 from .reverse import Node, Rev, RevMat, Unsupported, gradient as rev_gradient, leaf as rev_leaf
-from .scene import ReverseScene, Scene, _LiftedScene
+from .scene import double_point_of, ReverseScene, Scene, _LiftedScene
 
 Point = Mapping[Hashable, Mat]
 Coordinates = Sequence[tuple[Hashable, Mat]]
@@ -616,11 +616,6 @@ def stiefel_pairs_flow(s: Scene, H: Callable[[Scene, dict], Any], point: Point,
 
 # -- generic points of the appendix's phase spaces ------------------------------------------------
 
-def _diag(s: Scene, values: Sequence[Any]) -> Mat:
-    r = len(values)
-    return s.mat([[values[i] if i == j else s.q(0) for j in range(r)] for i in range(r)], ("r", "r"))
-
-
 
 
 def double_point(s: Scene) -> dict[str, Mat]:
@@ -628,31 +623,6 @@ def double_point(s: Scene) -> dict[str, Mat]:
     ẊᵀY + XᵀẎ = 0 (keys "X", "Y", "Xdot", "Ydot"): the scene's matrices DX, DY, DXdot, DYdot
     (built by :func:`double_point_of` on a coordinate scene, letters on the dimension-free one)."""
     return {"X": s.DX, "Y": s.DY, "Xdot": s.DXdot, "Ydot": s.DYdot}
-
-
-def double_point_of(s: Scene) -> dict[str, Mat]:
-    """The generic point of :func:`double_point` of a coordinate scene.
-
-    X = X₀DU with X₀ the scene's point of V(n, r), D diagonal and U unipotent upper triangular
-    (every X of rank r, by the QR decomposition), Y = X₀D⁻¹U⁻ᵀ + (I − X₀X₀ᵀ)Z, Ẋ = V generic,
-    Ẏ = −Y VᵀY + (I − YXᵀ)W: every point of a dense open subset of the constraint set."""
-    _coordinate_scene(s, "a generic point of the double Neumann system")
-    r = s.r
-    d = [s.scalar(f"double_d{i + 1}") for i in range(r)]
-    N = [[s.scalar(f"double_u{i + 1}_{j + 1}") if j > i else s.q(0) for j in range(r)] for i in range(r)]
-    U = s.mat([[s.q(1) if i == j else N[i][j] for j in range(r)] for i in range(r)], ("r", "r"))
-    Nm = s.mat(N, ("r", "r"))
-    Uinv, power = s.Ir, s.Ir
-    for _ in range(r - 1):
-        power = power @ (-Nm)
-        Uinv = Uinv + power
-    X0 = s.X
-    X = X0 @ _diag(s, d) @ U
-    Y = (X0 @ _diag(s, [s.q(1) / x for x in d]) @ Uinv.T
-         + (s.In - X0 @ X0.T) @ s.general_params("double_Z", s.n, r, ("n", "r")))
-    V = s.general_params("double_V", s.n, r, ("n", "r"))
-    W = s.general_params("double_W", s.n, r, ("n", "r"))
-    return {"X": X, "Y": Y, "Xdot": V, "Ydot": -(Y @ V.T @ Y) + (s.In - Y @ X.T) @ W}
 
 
 #: the points of the appendix's phase spaces built from scalar parameters of their own, for a
