@@ -18,7 +18,7 @@ SECTION = "A1"
 #: V(n, 2): the magnetic form de_1 ∧ de_2 needs two columns
 ON_V_N2 = admissible(n_max=5, n_min=2, r_min=2, r_max=2, condition="r = 2")
 #: T*SO(n) realized as T*V(n, n) (both components of O(n) are sampled; the formulas hold on both)
-ON_SO_N = admissible(n_max=5, n_min=2, where=lambda n, r: r == n, condition="r = n: T*SO(n) = T*V(n, n)")
+ON_SO_N = admissible(n_max=5, n_min=2, r_is_n=True, condition="r = n: T*SO(n) = T*V(n, n)")
 #: T*V(n, n − 1), identified with T*SO(n) by (iden1)
 ON_V_NN1 = admissible(n_max=5, n_min=2, where=lambda n, r: r == n - 1, condition="r = n - 1")
 

@@ -92,9 +92,11 @@ class SizeSpec:
     condition: str = ""
     #: the largest n the claim is stated for (None: no upper bound)
     n_max: int | None = None
+    #: stated at r = n only (T*SO(n) = T*V(n, n)), declared rather than read from ``where``
+    r_is_n: bool = False
 
     def admits(self, n: int, r: int) -> bool:
-        if not (1 <= r <= n) or n < self.n_min or r < self.r_min:
+        if not (1 <= r <= n) or n < self.n_min or r < self.r_min or (self.r_is_n and r != n):
             return False
         if self.n_max is not None and n > self.n_max:
             return False
@@ -134,21 +136,22 @@ class SizeSpec:
 
 def admissible(n_max: int = 5, *, n_min: int = 1, r_min: int = 1, r_max: int | None = None,
                where: Callable[[int, int], bool] | None = None, condition: str = "",
-               stated_n_max: int | None = None) -> SizeSpec:
+               stated_n_max: int | None = None, r_is_n: bool = False) -> SizeSpec:
     """The sizes a claim is stated for: 1 <= r_min <= r <= min(n, r_max), n >= n_min, filtered by
     ``where``, and n <= stated_n_max if given (None: every n).  The catalog verifies them by
     default up to n = n_max; an explicit --size may go further, never outside the statement.
 
-    ``condition`` states the restriction in words for the report (e.g. "n >= 2r")."""
+    ``condition`` states the restriction in words for the report (e.g. "n >= 2r"); ``r_is_n`` declares
+    the statement to be about r = n only (which the dimension-free method may then use)."""
     if stated_n_max is not None and stated_n_max < n_max:
         n_max = stated_n_max
     out = []
-    spec = SizeSpec((), n_min, r_min, r_max, where, condition, stated_n_max)
+    spec = SizeSpec((), n_min, r_min, r_max, where, condition, stated_n_max, r_is_n)
     for n in range(max(n_min, 1), n_max + 1):
         for r in range(1, n + 1):
             if spec.admits(n, r):
                 out.append(Size(n, r))
-    return SizeSpec(tuple(out), n_min, r_min, r_max, where, condition, stated_n_max)
+    return SizeSpec(tuple(out), n_min, r_min, r_max, where, condition, stated_n_max, r_is_n)
 
 
 @dataclass

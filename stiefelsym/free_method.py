@@ -24,6 +24,7 @@ from .results import CheckOutcome, Result
 from .free import FreeScene, FreeSolveError, NeedsCoordinates, RewritingError
 from .free.algebra import REFUSED, OperatorLetter, recording, refusals
 from .free.certificates import CertificateWriter
+from .free.columns import COMPLETE
 from .free.rewriting import latex_text
 from .latex import tex_text, unicode_name
 from .ir import TraceRefused
@@ -43,7 +44,10 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
     if claim.expect == "nonzero":
         return undecided("rewriting proves vanishing only; a nonvanishing statement needs a witness")
     try:
-        scene = FreeScene(realization=claim.realization, lazy=True)
+        # a claim stated at one r = 1 or 2 alone may name the columns E_1, ..., E_r of R^r (their sum
+        # E_1E_1^T + ... + E_rE_r^T = I_r is then a hypothesis)
+        scene = FreeScene(realization=claim.realization, lazy=True, columns=fixed_r(claim),
+                          square=bool(getattr(claim.sizes, "r_is_n", False)))
     except NeedsCoordinates as exc:
         return undecided(f"needs coordinates: {exc.what}; decided by the fixed-size methods")
 
@@ -60,7 +64,7 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
         with recording(scene.tracker):   # every refusal goes to the run's record before it is raised
             checks = call_claim(func, scene)
     except NeedsCoordinates as exc:
-        return undecided(f"needs coordinates: {exc.what}; decided by the fixed-size methods")
+        return undecided(evaluation_needs_text(claim, func, exc.what))
     except TraceRefused as exc:
         return undecided(needs_text(claim, func, str(exc)))
     except (FreeSolveError, RewritingError) as exc:
@@ -104,6 +108,17 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
         res.reductions.append("a generic symmetric operator AA on so(n) as letters AA(w) = AA(skew w), one per word "
                               "w of its argument (linear, skew); its symmetry tr(AA(u) v) = tr(AA(v) u) as a "
                               "normal form of traces and in gradients; d AA(M) = AA(dM) along flows")
+    if "columns" in scene._extras:
+        k = scene.columns
+        res.reductions.append(f"the columns {', '.join(f'E_{i + 1}' for i in range(k))} of R^r as letters (r x 1), "
+                              f"E_i^T E_j = delta_ij, and, the claim being stated at r = {k} only, "
+                              f"{' + '.join(f'E_{i + 1} E_{i + 1}^T' for i in range(k))} = I_r: every place where a "
+                              "word passes through R^r is written in this basis, and a 1 x 1 piece is its own trace")
+    if scene.square:
+        res.reductions.append("the claim being stated at r = n only (T*SO(n)): X X^T = I_n and P X^T = -X P^T")
+    if "last" in scene._extras:
+        res.reductions.append("the last column E_r of I_r as a letter (r x 1), E_r^T E_r = 1; a 1 x 1 piece is its "
+                              "own trace")
     if scene.system.trace_fallbacks:
         return undecided("a trace normal form used a non-canonical representative")
     if open_entries:
@@ -146,11 +161,49 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
     res.verdict = "proved"
     res.seconds = time.perf_counter() - t0
     entries = f"{summary['entries']} residual entr{'y' if summary['entries'] == 1 else 'ies'}"
+    if "XXt" in summary["hypotheses"]:
+        entries += " (for every n at r = n, the only r the claim is stated for: it uses X X^T = I_n)"
+    for k, name in COMPLETE.items():
+        if name in summary["hypotheses"]:
+            entries += (f" (for every n at r = {k}, the only r the claim is stated for: it uses "
+                        f"{' + '.join(f'E_{i + 1}E_{i + 1}^T' for i in range(k))} = I_r)")
     res.certificate = (f"cofactor certificate of {entries} ({summary['terms']} terms "
                        f"in the hypotheses {', '.join(summary['hypotheses']) or '(none)'}), re-checked by the "
                        f"independent checker; every entry has normal form 0; rules "
                        f"applied while building and reducing the residual: {names}")
     return res
+
+
+def fixed_r(claim: Claim) -> int:
+    """r when the claim is stated at that one r (its statement's r_min = r_max, not merely its default
+    sizes) and it is 1 or 2, else 0."""
+    spec = claim.sizes
+    lo, hi = getattr(spec, "r_min", None), getattr(spec, "r_max", None)
+    if lo is None or lo != hi or lo not in (1, 2) or any(z.r != lo for z in spec):
+        return 0
+    return lo
+
+
+def evaluation_needs_text(claim: Claim, func: Callable, refusal: str) -> str:
+    """Why a claim whose graph traces with symbolic sizes is left to the fixed-size methods: what the
+    free scene refused, with what the claim's graph at a fixed size reads, when it names it."""
+    from .ir import compile_at_size
+    from .ir.passes import coordinate_needs
+    from .scene import REALIZATIONS
+    sizes = list(claim.sizes)
+    z = next((z for z in sizes if 1 < z.r < z.n), None) or next((z for z in sizes if z.n >= 3), None) or \
+        (sizes[-1] if sizes else None)
+    needs: list[str] = []
+    if z is not None and claim.realization in REALIZATIONS:
+        cons = REALIZATIONS[claim.realization]
+        try:
+            needs = coordinate_needs(compile_at_size(func, z.n, z.r, (cons.name, cons.build)))
+        except Exception:    # noqa: BLE001 - the refusal alone says it
+            needs = []
+    if not needs:
+        return f"needs coordinates: {refusal}; decided by the fixed-size methods"
+    return (f"needs coordinates (fixed n, r): {'; '.join(needs)} (the dimension-free scene refused: {refusal}); "
+            "decided by the fixed-size methods")
 
 
 def needs_text(claim: Claim, func: Callable, refusal: str) -> str:
@@ -204,7 +257,7 @@ def certify_entries(scene, entries) -> dict:
     """The certificate data of the entries (position, reduction, _) of a proof."""
     writer = CertificateWriter(scene._resolvents)
     for pos, red, _k in entries:
-        writer.add(pos, scene.system.certify(red.residual, red.normal_form))
+        writer.add(pos, scene.certify(red.residual, red.normal_form))
     return writer.data()
 
 

@@ -295,6 +295,17 @@ def planned_sizes(c: "ClaimResults") -> list[tuple[int, int]]:
     return sorted({(r.n, r.r) for r in c.printed if r.n is not None}, key=_size_key)
 
 
+def free_scope(r: Result) -> str:
+    """What a dimension-free proof covers: every n and r, or every n at the one r its claim is stated
+    for (a proof that used E₁E₁ᵀ + … = I_r or XXᵀ = I_n says so in its certificate line)."""
+    text = r.certificate or ""
+    for scope in ("every n at r = 1", "every n at r = 2", "every n at r = n"):
+        if f"(for {scope}," in text:
+            return scope
+    return "all n, r"
+
+
+
 def correction_summary(rs: list[Result], planned: Sequence[tuple[int, int]]) -> tuple[str, list[str]]:
     """The status of a candidate correction, aggregated over sizes, and one phrase per method.
 
@@ -315,7 +326,7 @@ def correction_summary(rs: list[Result], planned: Sequence[tuple[int, int]]) -> 
             if r.n is None:
                 if r.verdict == "proved":
                     free_proved = True
-                    phrases.append(f"proved for all n, r by {m}")
+                    phrases.append(f"proved for {free_scope(r)} by {m}")
                 elif r.verdict == "fails":
                     failed_at.add(None)
                     phrases.append(f"fails by {m}")

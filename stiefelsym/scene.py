@@ -511,6 +511,27 @@ class Scene(PaperObjects):
     def Q(self) -> Mat:
         return self._second_point()[1]
 
+    # -- a generic point (X, Y, Ẋ, Ẏ) of the double Neumann system: XᵀY = I_r, ẊᵀY + XᵀẎ = 0 ------------
+    def _double(self) -> dict:
+        return self._cached("double point", lambda: double_point_of(self))
+
+    @property
+    def DX(self) -> Mat:
+        """X of a generic point of the double Neumann system (see :func:`stiefelsym.systems.double_point`)."""
+        return self._double()["X"]
+
+    @property
+    def DY(self) -> Mat:
+        return self._double()["Y"]
+
+    @property
+    def DXdot(self) -> Mat:
+        return self._double()["Xdot"]
+
+    @property
+    def DYdot(self) -> Mat:
+        return self._double()["Ydot"]
+
     # -- the complex Stiefel variety W(n, r), realified ---------------------------
     # A complex matrix U + iV is represented by the real block matrix [[U, -V], [V, U]]:
     # sums, products and the conjugate transpose (which becomes the transpose) are preserved.
@@ -1458,3 +1479,32 @@ def _upper_mask(m: int, k: int) -> Any:
             _UPPER_MASKS.clear()
         mask = _UPPER_MASKS[(m, k)] = np.triu(np.ones((m, m), dtype=bool), k)
     return mask
+
+
+def _diagonal(s: "Scene", values: list) -> Mat:
+    r = len(values)
+    return s.mat([[values[i] if i == j else s.q(0) for j in range(r)] for i in range(r)], ("r", "r"))
+
+
+def double_point_of(s: "Scene") -> dict[str, Mat]:
+    """The generic point of :func:`double_point` of a coordinate scene.
+
+    X = X₀DU with X₀ the scene's point of V(n, r), D diagonal and U unipotent upper triangular
+    (every X of rank r, by the QR decomposition), Y = X₀D⁻¹U⁻ᵀ + (I − X₀X₀ᵀ)Z, Ẋ = V generic,
+    Ẏ = −Y VᵀY + (I − YXᵀ)W: every point of a dense open subset of the constraint set."""
+    r = s.r
+    d = [s.scalar(f"double_d{i + 1}") for i in range(r)]
+    N = [[s.scalar(f"double_u{i + 1}_{j + 1}") if j > i else s.q(0) for j in range(r)] for i in range(r)]
+    U = s.mat([[s.q(1) if i == j else N[i][j] for j in range(r)] for i in range(r)], ("r", "r"))
+    Nm = s.mat(N, ("r", "r"))
+    Uinv, power = s.Ir, s.Ir
+    for _ in range(r - 1):
+        power = power @ (-Nm)
+        Uinv = Uinv + power
+    X0 = s.X
+    X = X0 @ _diagonal(s, d) @ U
+    Y = (X0 @ _diagonal(s, [s.q(1) / x for x in d]) @ Uinv.T
+         + (s.In - X0 @ X0.T) @ s.general_params("double_Z", s.n, r, ("n", "r")))
+    V = s.general_params("double_V", s.n, r, ("n", "r"))
+    W = s.general_params("double_W", s.n, r, ("n", "r"))
+    return {"X": X, "Y": Y, "Xdot": V, "Ydot": -(Y @ V.T @ Y) + (s.In - Y @ X.T) @ W}

@@ -53,7 +53,7 @@ from . import scene as scene_module
 from .ir.trace import TraceScene, primitive
 from .matrix import Mat, _refused, block, definite
 from .reverse import Node, Rev, RevMat, Unsupported, gradient as rev_gradient, leaf as rev_leaf
-from .scene import ReverseScene, Scene, _LiftedScene
+from .scene import double_point_of, ReverseScene, Scene, _LiftedScene
 
 Point = Mapping[Hashable, Mat]
 Coordinates = Sequence[tuple[Hashable, Mat]]
@@ -138,8 +138,18 @@ def _units(s: Scene) -> list[Mat]:
     return [u["X"] for k, u in enumerate(s._unit_tangents()) if k < nr]
 
 
+class _FreeCoordinates(tuple):
+    """What the dimension-free scene has for the coordinates of matrix variables: none (the steps that
+    take them solve in the free algebra or refuse)."""
+
+
+FREE_COORDINATES = _FreeCoordinates()
+
+
 def real_coordinates(s: Scene, names: Sequence[Hashable]) -> list[tuple[Hashable, Mat]]:
     """The coordinates of n×r real matrix variables: (name, E_ij) for each name."""
+    if not isinstance(s, (Scene, TraceScene)) and hasattr(s, "euler_lagrange_double"):
+        return FREE_COORDINATES   # type: ignore[return-value]
     _coordinate_scene(s, "coordinates of matrix variables")
     units = _units(s)
     return _UnitCoordinates([(name, E) for name in names for E in units], names, (s.n, s.r))
@@ -482,6 +492,8 @@ def euler_lagrange(s: Scene, T: Callable[[Scene, dict], Any], U: Callable[[Scene
     The matrix K of T is that of its polarization, T(b_k + b_l) − T(b_k) − T(b_l) + T(0), taken as
     the gradients of T at the basis vectors; with J = Dg, Y = K⁻¹[−∇U | Jᵀ], the multipliers solve
     (J Y₁) μ = −D²g(q̇, q̇) − J Y₀ and q̈ = Y₀ + Y₁ μ (whole-matrix products)."""
+    if coords is FREE_COORDINATES and hasattr(s, "euler_lagrange_double"):
+        return s.euler_lagrange_double(T, U, constraints, position, velocity)   # the dimension-free scene
     _coordinate_scene(s, "the Euler-Lagrange equations in coordinates")
     names = list(position)
     if set(velocity) != set(names):
@@ -604,43 +616,19 @@ def stiefel_pairs_flow(s: Scene, H: Callable[[Scene, dict], Any], point: Point,
 
 # -- generic points of the appendix's phase spaces ------------------------------------------------
 
-def _diag(s: Scene, values: Sequence[Any]) -> Mat:
-    r = len(values)
-    return s.mat([[values[i] if i == j else s.q(0) for j in range(r)] for i in range(r)], ("r", "r"))
-
-
 
 
 def double_point(s: Scene) -> dict[str, Mat]:
     """A generic point (X, Y, Ẋ, Ẏ) of the rank r double Neumann system: XᵀY = I_r,
-    ẊᵀY + XᵀẎ = 0 (keys "X", "Y", "Xdot", "Ydot").
-
-    X = X₀DU with X₀ the scene's point of V(n, r), D diagonal and U unipotent upper triangular
-    (every X of rank r, by the QR decomposition), Y = X₀D⁻¹U⁻ᵀ + (I − X₀X₀ᵀ)Z, Ẋ = V generic,
-    Ẏ = −Y VᵀY + (I − YXᵀ)W: every point of a dense open subset of the constraint set."""
-    _coordinate_scene(s, "a generic point of the double Neumann system")
-    r = s.r
-    d = [s.scalar(f"double_d{i + 1}") for i in range(r)]
-    N = [[s.scalar(f"double_u{i + 1}_{j + 1}") if j > i else s.q(0) for j in range(r)] for i in range(r)]
-    U = s.mat([[s.q(1) if i == j else N[i][j] for j in range(r)] for i in range(r)], ("r", "r"))
-    Nm = s.mat(N, ("r", "r"))
-    Uinv, power = s.Ir, s.Ir
-    for _ in range(r - 1):
-        power = power @ (-Nm)
-        Uinv = Uinv + power
-    X0 = s.X
-    X = X0 @ _diag(s, d) @ U
-    Y = (X0 @ _diag(s, [s.q(1) / x for x in d]) @ Uinv.T
-         + (s.In - X0 @ X0.T) @ s.general_params("double_Z", s.n, r, ("n", "r")))
-    V = s.general_params("double_V", s.n, r, ("n", "r"))
-    W = s.general_params("double_W", s.n, r, ("n", "r"))
-    return {"X": X, "Y": Y, "Xdot": V, "Ydot": -(Y @ V.T @ Y) + (s.In - Y @ X.T) @ W}
+    ẊᵀY + XᵀẎ = 0 (keys "X", "Y", "Xdot", "Ydot"): the scene's matrices DX, DY, DXdot, DYdot
+    (built by :func:`double_point_of` on a coordinate scene, letters on the dimension-free one)."""
+    return {"X": s.DX, "Y": s.DY, "Xdot": s.DXdot, "Ydot": s.DYdot}
 
 
 #: the points of the appendix's phase spaces built from scalar parameters of their own, for a
 #: witness (stiefelsym.witness) to state: (the prefix of their parameters' names, the builder, the
 #: keys of the point and the letters a report names them by); such a point replaces the chart's X, P
-WITNESS_POINTS = (("double_", double_point, (("X", "X"), ("Y", "Y"), ("Xdot", "Ẋ"), ("Ydot", "Ẏ"))),)
+WITNESS_POINTS = (("double_", double_point_of, (("X", "X"), ("Y", "Y"), ("Xdot", "Ẋ"), ("Ydot", "Ẏ"))),)
 
 
 def coupled_point(s: Scene) -> dict[str, Mat]:

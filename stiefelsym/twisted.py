@@ -23,7 +23,7 @@ import copy
 from typing import Any, Callable, Mapping
 
 from .fields import DegenerateError, Dual, DualField
-from .matrix import Mat, NeedsCoordinates, _refused
+from .matrix import Mat, _refused
 from .scene import Flow, Scene
 from .ir.trace import TraceScene, primitive
 
@@ -43,7 +43,13 @@ def _scene(s: Any, what: str) -> Scene:
 
 
 def magnetic_matrix(s) -> Mat:
-    """F = E₁∧E₂ ∈ so(2) (the r×r matrix [[0, 1], [−1, 0]]): ω_mag = Σ_{j<k} F_jk de_j∧de_k = de₁∧de₂."""
+    """F = E₁∧E₂ ∈ so(2) (the r×r matrix [[0, 1], [−1, 0]]): ω_mag = Σ_{j<k} F_jk de_j∧de_k = de₁∧de₂.
+    (Dimension-free, for a claim stated at r = 2 only: E₁E₂ᵀ − E₂E₁ᵀ in the column letters.)"""
+    if _at_point(s):
+        return s.lift(magnetic_matrix(s.inner))
+    if _is_free(s):
+        E1, E2 = s.column(0), s.column(1)
+        return s._cached("twisted:F", lambda: E1 @ E2.T - E2 @ E1.T)
     s = _scene(s, "the magnetic form de_1 ∧ de_2 (a constant element of so(2))")
     if s.r != 2:
         raise ValueError(f"the magnetic form de_1 ∧ de_2 lives on V(n, 2), not on V({s.n}, {s.r})")
@@ -158,9 +164,16 @@ def _dual_inverse(s: Scene, Ca: list[list[Any]], C0: list[list[Any]]) -> list[li
     return [[Dual(Ca[i][j], Y1[i, j]) for j in range(m)] for i in range(m)]
 
 
+def _at_point(s: Any) -> bool:
+    from .free.scene import FreePointScene
+    return isinstance(s, FreePointScene)
+
+
 def bracket(s, f: Function, g: Function, F: Mat | None = None) -> Any:
     """The Dirac bracket (Dirac_bracket) built from {,}_ε: the Poisson bracket of ω + ε π*ω_mag on T*V.
     (Dimension-free: the derivative of f along the twisted flow of g, for a field strength F of so(r).)"""
+    if _at_point(s):
+        return s.lift(bracket(s.inner, f, g, s._lower(F)))
     if _is_free(s):
         return s.d(f, _free_flow(s, g, F))
     s = _scene(s, "the twisted Dirac bracket")
@@ -192,6 +205,8 @@ def flow(s, H: Function, F: Mat | None = None) -> Flow:
     H for ω_ε = ω + ε π*ω_mag on T*V.  On the dimension-free scene (for a field strength F given as a
     letter of so(r), e.g. s.eta) it is the Lagrange form of :func:`multiplier_flow` with Λ, Π solved in
     the free algebra."""
+    if _at_point(s):
+        return s.lift(flow(s.inner, H, s._lower(F)))
     if _is_free(s):
         return _free_flow(s, H, F)
     s = _scene(s, "the Hamiltonian flow of the twisted form")
@@ -220,7 +235,7 @@ def _free_flow(s, H: Function, F: Mat | None) -> Flow:
     """The twisted flow in the free algebra: Ẋ = H_P − XΠ, Ṗ = −H_X − εẊF + XΛ + PΠ, with Π, Λ solved
     from d/dt(XᵀX) = 0 and d/dt(XᵀP + PᵀX) = 0 (the same construction as the scene's Dirac flows)."""
     if F is None:
-        raise NeedsCoordinates("the magnetic form de_1 ∧ de_2 (a constant element of so(2))")
+        F = magnetic_matrix(s)   # the columns E_1, E_2 of a claim at r = 2 (refused otherwise)
     from .free.scene import LAMBDA, PI, P as LP, X as LX, _w, solve_multipliers
     from .free.algebra import substitute
 
@@ -270,7 +285,8 @@ def multiplier_flow(s, H: Function, F: Mat | None = None) -> Flow:
 def form(s, u: Mapping[str, Mat], v: Mapping[str, Mat], F: Mat | None = None) -> Any:
     """ω_ε(u, v) = (u_P, v_X) − (u_X, v_P) + ε Σ F_jk (u_j, v_k) for tangent vectors u, v (dicts with
     components "X", "P"); the canonical part is ω₀ = Σ dp∧de, the magnetic part ε Σ_{j<k} F_jk de_j∧de_k."""
-    s = _scene(s, "the twisted symplectic form")
+    if not _is_free(s):
+        s = _scene(s, "the twisted symplectic form")
     Fm = _field_strength(s, F)
     uX, uP, vX, vP = u["X"], u["P"], v["X"], v["P"]
     return s.field.normalize(s.tr(uP.T @ vX) - s.tr(uX.T @ vP) + s.eps * s.tr(uX @ Fm @ vX.T))
@@ -278,7 +294,12 @@ def form(s, u: Mapping[str, Mat], v: Mapping[str, Mat], F: Mat | None = None) ->
 
 def basis_vector(s, i: int) -> Mat:
     """E_{i+1} ∈ ℝʳ as a column (index space ("r", "?")), so that XE_{i+1} = e_{i+1}: the appendix writes
-    its flows column by column.  The dimension-free backend has no columns (NeedsCoordinates)."""
+    its flows column by column.  The dimension-free backend has the columns E₁, E₂ as letters for a
+    claim stated at r = 2 only (NeedsCoordinates otherwise)."""
+    if _at_point(s):
+        return s.lift(basis_vector(s.inner, i))
+    if _is_free(s):
+        return s.column(i)
     s = _scene(s, f"the column e_{i + 1} = X E_{i + 1} (a basis vector of R^r)")
     if not 0 <= i < s.r:
         raise ValueError(f"E_{i + 1} is not a basis vector of R^{s.r}")
@@ -299,13 +320,23 @@ def first_basis_vectors(s, k: int) -> Mat:
 
 
 def last_basis_vector(s) -> Mat:
-    """E_r ∈ ℝʳ: X E_r is the last column (e_n of 𝒳 ∈ SO(n) when r = n)."""
+    """E_r ∈ ℝʳ: X E_r is the last column (e_n of 𝒳 ∈ SO(n) when r = n); a letter of the dimension-free
+    backend (E_rᵀE_r = 1)."""
+    if _at_point(s):
+        return s.lift(last_basis_vector(s.inner))
+    if _is_free(s):
+        return s.last_column()
     s = _scene(s, "the last column e_n = X E_n of X in SO(n)")
     return basis_vector(s, s.r - 1)
 
 
 def leading_basis_vectors(s) -> Mat:
-    """(E_1, ..., E_{r−1}): X(E_1, ..., E_{r−1}) = (e_1, ..., e_{n−1}) when r = n (iden1)."""
+    """(E_1, ..., E_{r−1}): X(E_1, ..., E_{r−1}) = (e_1, ..., e_{n−1}) when r = n (iden1); a letter of the
+    dimension-free backend (its columns and E_r are those of I_r)."""
+    if _at_point(s):
+        return s.lift(leading_basis_vectors(s.inner))
+    if _is_free(s):
+        return s.leading_columns()
     s = _scene(s, "the columns e_1, ..., e_(n-1) of X in SO(n)")
     return first_basis_vectors(s, s.r - 1)
 
@@ -320,6 +351,8 @@ def at_point(s, X: Mat, P: Mat) -> Scene:
     """The scene's problem at another point (X, P) of T*V (same field, parameters and record): its
     gradients, brackets and flows, the twisted ones included, are taken at (X, P).  (X, P) must lie on
     T*V (a claim checks the constraints it relies on)."""
+    if _is_free(s):
+        return s.at_point(X, P)
     s = _scene(s, "the flows at another point (X, P) of T*V, given by matrices")
     if s.realization != "standard":
         raise ValueError("a scene at another point is offered for the realization (cond_XP) only")
@@ -340,6 +373,6 @@ __all__ = ["magnetic_matrix", "ambient_bracket", "constraint_bracket_matrix", "b
 # the functions that need the engine's scene (its number system, its gradients and multipliers) are
 # single steps of a claim's graph; the coordinate helpers above are traced with the claim
 for _name in ("magnetic_matrix", "ambient_bracket", "constraint_bracket_matrix", "bracket", "ambient_flow", "flow",
-              "multiplier_flow", "form"):
+              "multiplier_flow", "form", "basis_vector", "last_basis_vector", "leading_basis_vectors"):
     globals()[_name] = primitive(globals()[_name])
 at_point = primitive(at_point, returns="scene")

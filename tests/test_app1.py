@@ -88,8 +88,14 @@ def test_the_magnetic_form_needs_two_columns():
         twisted.magnetic_matrix(s)
 
 
-#: proved for every n, r by rewriting (the twisted flow with a letter F of so(r) in the free algebra)
-FREE_PROVED = ("ym-reduced-neumann", "ym-charge", "magnetic-spectral-invariants-any-rank", "magnetic-momentum-map-any-rank", "magnetic-lax-any-rank")
+#: proved for every n, r by rewriting (the twisted flow with a letter F of so(r) in the free algebra), and for
+#: every n at the one r they are stated for: r = 2 (the columns E_1, E_2 as letters), r = n (X X^T = I_n)
+FREE_PROVED = ("ym-reduced-neumann", "ym-charge", "magnetic-spectral-invariants-any-rank", "magnetic-momentum-map-any-rank",
+               "magnetic-lax-any-rank", "magnetic-form-kirillov-kostant", "magnetic-momentum-map",
+               "magnetic-euclidean-flow", "magnetic-normal-flow", "magnetic-psi12-conserved", "magnetic-prep",
+               "magnetic-lax", "magnetic-grassmannian-momentum", "magnetic-grassmannian-flow",
+               "magnetic-spectral-invariants", "twisted-form-closed", "rigid-body-euler-poisson",
+               "ym-second-derivative", "clebsch-perelomov-hamiltonian")
 
 
 @pytest.mark.parametrize("cid", FREE_PROVED)
@@ -104,8 +110,16 @@ def test_the_free_twisted_flow_is_not_the_untwisted_one(catalog):
     assert res.verdict == "undecided" and "nonzero normal form" in res.message
 
 
-def test_the_twisted_form_needs_coordinates(catalog):
-    res = run_free(catalog.get("magnetic-euclidean-flow"))
+def test_the_twisted_form_is_proved_at_r_2_and_needs_coordinates_at_other_r(catalog):
+    """With the columns E_1, E_2 of R^2 as letters the magnetic flow is proved for every n at r = 2, the only r
+    it is stated for; stated for other r too, its columns need coordinates."""
+    import dataclasses
+
+    from stiefelsym import admissible
+    claim = catalog.get("magnetic-euclidean-flow")
+    res = run_free(claim)
+    assert res.verdict == "proved" and "r = 2" in res.certificate
+    res = run_free(dataclasses.replace(claim, sizes=admissible(n_max=4, r_min=2, r_max=3)))
     assert res.verdict == "undecided" and "needs coordinates" in res.message
 
 

@@ -20,7 +20,9 @@ SEED = 0
 #: proved for every n, r by the dimension-free method (along (C-eq) with YΠ, a matrix expression)
 FREE_PROVED = ("coupled-corrected-flow-invariants", "coupled-dual-lax-along-corrected-flow",
                "coupled-big-lax-along-corrected-flow", "coupled-neumann-momentum", "coupled-dual-lax",
-               "coupled-perturbed-dual-lax")
+               "coupled-perturbed-dual-lax",
+               "double-neumann-momentum", "double-neumann-flow",   # the double point (X, Y, Ẋ, Ẏ) as letters
+               "double-neumann-diagonal")                           # with (D0) as rules, Euler-Lagrange solved there
 def coupled_constraints(t, z):
     """XᵀX = I_r, XᵀP + PᵀX = 0, YᵀY = I_r, YᵀQ + QᵀY = 0 (the constraints stiefel_pairs_flow imposes)."""
     X, P, Y, Q = z["X"], z["P"], z["Y"], z["Q"]
@@ -30,7 +32,7 @@ def coupled_constraints(t, z):
 
 #: fail as printed; their registered corrections are proved for every n and r
 FREE_CORRECTED = ("coupled-neumann-flow", "coupled-big-lax-normal", "coupled-perturbed-big-lax",
-                  "double-neumann-dual-lax-extends-la3")
+                  "double-neumann-dual-lax-extends-la3", "double-neumann-dual-lax")
 #: matrix expressions at a point of T*V, no flow: not proved for all n, r as printed, its correction is
 MATRIX_ONLY = ("double-neumann-dual-lax-extends-la3",)
 #: hold as printed

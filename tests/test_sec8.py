@@ -21,11 +21,12 @@ SEED = 0
 
 #: proved for every n, r by rewriting modulo (cond_XP)
 FREE_PROVED = ("neumann-dual-lax-normal", "neumann-dual-lax-euclidean", "dual-lax-symplectic-structure",
-               "dual-lax-spectral-invariants")
-#: need coordinates: r = 1 (1×1 products commute), the reflections S_i (the size n as a number), the
+               "dual-lax-spectral-invariants",
+               "poisson-sphere-flow")   # stated at r = 1: E_1E_1^T = I_r makes every r x r matrix a scalar
+#: need coordinates: the reflections S_i (the size n as a number), the
 #: spectral curve's coefficients (Newton's identities up to 2r, finite differences up to n), Plücker
 #: coordinates and determinants
-NEEDS_COORDINATES = ("poisson-sphere-flow", "dual-lax-reflections", "2r-integrals", "2r-integrals-conserved",
+NEEDS_COORDINATES = ("dual-lax-reflections", "2r-integrals", "2r-integrals-conserved",
                      "2r-integrals-explicit", "2r-integrals-general-line", "tangency", "gen-chasles",
                      "gen-chasles2", "mum-geod", "chasles-manakov", "poisson-sphere-chasles",
                      "vvb-left-factor-size", "gen-chasles-momentum-ranges", "dual-lax-determines-the-point",

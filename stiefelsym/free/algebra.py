@@ -88,6 +88,9 @@ class Dimension(se.Dummy):
 
 #: dimension symbols: tr(I_n) = n, tr(I_r) = r
 DIMENSIONS = {"n": Dimension("n"), "r": Dimension("r"), SCALAR: se.Integer(1)}
+#: the object ℝʳ⁻¹ of the first r − 1 columns of I_r (the columns e_1, ..., e_{n−1} of X ∈ SO(n))
+LEADING = "r-1"
+DIMENSIONS[LEADING] = DIMENSIONS["r"] - 1
 
 Coef = Any  # a symengine expression
 
@@ -563,8 +566,12 @@ class NCPoly:
     def _mul_poly(self, o: "NCPoly") -> "NCPoly":
         if self.row == SCALAR and self.col == SCALAR:
             row, col = o.row, o.col
+            if o.row != SCALAR and any(w for (_, w) in self.terms):   # a 1×1 word scales as its trace
+                return trace(self)._mul_poly(o)
         elif o.row == SCALAR and o.col == SCALAR:
             row, col = self.row, self.col
+            if self.col != SCALAR and any(w for (_, w) in o.terms):
+                return self._mul_poly(trace(o))
         elif self.col == o.row:
             row, col = self.row, o.col
         else:
@@ -726,7 +733,9 @@ def _signed_term(c: Coef, body: str) -> str:
 def trace(p: NCPoly) -> NCPoly:
     """tr(p) as a scalar polynomial (canonical cyclic representatives, no constraints)."""
     if p.is_scalar:
-        return p
+        if all(not w for (_, w) in p.terms):
+            return p
+        return _scalar_words_as_traces(p)   # a 1×1 word (through a column E_i) is its own trace
     if p.row != p.col:
         raise TypeError(f"trace of a non-square {p.row}×{p.col} polynomial")
     out: dict = {}
@@ -738,6 +747,22 @@ def trace(p: NCPoly) -> NCPoly:
             if s == 0:
                 continue
             k, v = (merge_traces(tm, (cw,)), ()), c * s
+        out[k] = out[k] + v if k in out else v
+    return NCPoly(out, SCALAR, SCALAR)
+
+
+def _scalar_words_as_traces(p: NCPoly) -> NCPoly:
+    """A 1×1 polynomial with every word (a path from the scalar object to itself) moved into the
+    traces: a 1×1 matrix is its own trace."""
+    out: dict = {}
+    for (tm, w), c in p.terms.items():
+        if w:
+            s, cw = cycle_rep(w)
+            if s == 0:
+                continue
+            k, v = (merge_traces(tm, (cw,)), ()), c * s
+        else:
+            k, v = (tm, ()), c
         out[k] = out[k] + v if k in out else v
     return NCPoly(out, SCALAR, SCALAR)
 

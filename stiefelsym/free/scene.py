@@ -23,12 +23,13 @@ import symengine as se
 from ..fields import Dual, DualField, Field
 from ..matrix import CoordinateTracker, Mat, definite
 from ..scene import USER_SCALAR, Flow, PaperObjects, _number, map_entries
-from .algebra import (Letter, NCPoly, NeedsCoordinates, OperatorLetter, apply_operator, as_coef, coef_latex, derivation,
+from .algebra import (LEADING, Letter, NCPoly, NeedsCoordinates, OperatorLetter, apply_operator, as_coef, coef_latex, derivation,
                       letter_pair, record_refusal, refuse, skew_letter, substitute, symmetric_letter, trace)
 from .mat import FreeBackend, FreeDualBackend, entry_of, one_block
-from .rewriting import (_NONZERO_NUMBER_TYPES, _SIMPLE, Cofactor, Hypothesis, Order, Reduction, RewritingSystem,
-                        SharedMemos, nonzero_terms, simplify_coef)
+from .rewriting import (_NONZERO_NUMBER_TYPES, _SIMPLE, Certificate, Cofactor, Hypothesis, Order, Reduction,
+                        RewritingError, RewritingSystem, SharedMemos, nonzero_terms, simplify_coef)
 from .traces import gradient
+from .columns import COLUMNS, COVECTORS, ER, LEAD, LEADt, ERt, canonical, column_hypotheses
 
 Function = Callable[[Any], Any]
 
@@ -43,9 +44,16 @@ A = symmetric_letter("A", "n", "A")
 Y, Yt = letter_pair("Y", "Yt", "n", "r", "Y", "Y^{T}")
 Q, Qt = letter_pair("Q", "Qt", "n", "r", "Q", "Q^{T}")
 AINV = symmetric_letter("Ainv", "n", "A^{-1}")
+#: a generic point (X, Y, Ẋ, Ẏ) of the double Neumann system: XᵀY = I_r, ẊᵀY + XᵀẎ = 0
+DX, DXt = letter_pair("DX", "DXt", "n", "r", "X", "X^{T}")
+DY, DYt = letter_pair("DY", "DYt", "n", "r", "Y", "Y^{T}")
+DXd, DXdt = letter_pair("DXd", "DXdt", "n", "r", r"\dot X", r"\dot X^{T}")
+DYd, DYdt = letter_pair("DYd", "DYdt", "n", "r", r"\dot Y", r"\dot Y^{T}")
+DOUBLE = {"X": DX, "Y": DY, "Xdot": DXd, "Ydot": DYd}
 PI = symmetric_letter("Pi", "r", r"\Pi")
 LAMBDA = symmetric_letter("Lambda", "r", r"\Lambda")
 
+SCALAR_T = "1"
 COND_XX = "X^T X = I_r (cond_XP)"
 COND_XP = "X^T P + P^T X = 0 (cond_XP)"
 
@@ -114,7 +122,14 @@ def hypothesis(name: str, R: Letter | None = None, mu: Any = None) -> Hypothesis
         "YtQ+QtY": lambda: _w(Yt, Q) + _w(Qt, Y),
         "AAinv": lambda: _w(A, AINV) - _i("n"),
         "AinvA": lambda: _w(AINV, A) - _i("n"),
+        "XXt": lambda: _w(X, Xt) - _i("n"),
+        "DXtDY": lambda: _w(DXt, DY) - _i("r"),
+        "DYtDX": lambda: _w(DYt, DX) - _i("r"),
+        "DXdtDY+DXtDYd": lambda: _w(DXdt, DY) + _w(DXt, DYd),
+        "DYtDXd+DYdtDX": lambda: _w(DYt, DXd) + _w(DYdt, DX),
     }
+    if name not in polys:
+        return column_hypotheses()[name]
     return Hypothesis(name, polys[name]())
 
 
@@ -316,11 +331,15 @@ class FreeScene(PaperObjects):
     realization = "standard"  # (cond_XP); other realizations raise NeedsCoordinates
 
     def __init__(self, tracker: CoordinateTracker | None = None, system: RewritingSystem | None = None,
-                 realization: str = "standard", lazy: bool = False) -> None:
+                 realization: str = "standard", lazy: bool = False, columns: int = 0, square: bool = False) -> None:
         if realization != "standard":
             raise NeedsCoordinates(f"the {realization!r} realization of T*V (its multipliers solve a "
                                    "Sylvester equation)")
-        self.system = system if system is not None else standard_system()
+        if system is None:
+            # r = n: the order P < X (for the rule XP^T -> -PX^T); the standard rules decrease in it too
+            system = (RewritingSystem(Order([P, X, A, Xt, Pt]), _standard_rules()) if square
+                      else standard_system())
+        self.system = system
         self._tracker = tracker if tracker is not None else CoordinateTracker()
         self._field: Field = FreeField(self.system, lazy, self._tracker)
         self.options: dict[str, Any] = {}
@@ -330,6 +349,15 @@ class FreeScene(PaperObjects):
         self._resolvents: dict[Letter, Any] = {}
         self._extras: set[str] = set()
         self._named: dict[str, Letter] = {}
+        #: r given (1 or 2: the claim is stated at that r only; 0: every r): the columns E_1, ..., E_r
+        #: of R^r are letters, and E_1 E_1^T + ... + E_r E_r^T = I_r a hypothesis of normal forms
+        if columns not in (0, 1, 2):
+            raise ValueError(f"columns: the fixed r, 1 or 2 (0 for every r), not {columns!r}")
+        self.columns = columns
+        #: r = n is given (T*SO(n) = T*V(n, n)): X X^T = I_n, and P X^T = -X P^T
+        self.square = square
+        if square:
+            self._square_rules()
 
     field = property(lambda self: self._field, doc="the free algebra (read-only)")
     tracker = property(lambda self: self._tracker, doc="the record of looks at coordinates (read-only)")
@@ -423,6 +451,209 @@ class FreeScene(PaperObjects):
     def Q(self) -> Mat:
         self._second_point()
         return self._letter(Q)
+
+    def _column_letters(self) -> None:
+        if "columns" not in self._extras:
+            self._extras.add("columns")
+            for L in COLUMNS[:self.columns] + COVECTORS[:self.columns]:
+                self.system.order.add(L)
+            hyps = column_hypotheses()
+            for i, Eit in enumerate(COVECTORS[:self.columns], start=1):
+                for j, Ej in enumerate(COLUMNS[:self.columns], start=1):
+                    rhs = _i(SCALAR_T) if i == j else NCPoly.zero(SCALAR_T, SCALAR_T)
+                    self.system.add_rule((Eit, Ej), rhs, f"E_{i}^T E_{j} = {int(i == j)} (the basis of R^r)",
+                                         name=f"E{i}tE{j}", cofactors=[_by(hyps[f"E{i}tE{j}"])])
+
+    def _square_rules(self) -> None:
+        """At r = n: XXᵀ → I_n (X is orthogonal) and XPᵀ → −PXᵀ, because
+        XPᵀ + PXᵀ = X(XᵀP + PᵀX)Xᵀ − (XXᵀ − I)PXᵀ − XPᵀ(XXᵀ − I) (in the order P < X of the scene at
+        r = n: the other direction loops in traces, tr(XᵀPXᵀP) → tr(XᵀXPᵀP) ↺)."""
+        h, g = hypothesis("XXt"), hypothesis("XtP+PtX")
+        why = "X X^T = I_n: X is square (r = n, the only r the claim is stated for)"
+        self.system.add_rule((X, Xt), _i("n"), why, name="XXt", cofactors=[_by(h)])
+        self.system.add_rule((X, Pt), -_w(P, Xt), "X P^T = -P X^T: X^T P is skew and X X^T = I_n (r = n)",
+                             name="XPt", cofactors=[_by(g, 1, left=(X,), right=(Xt,)), _by(h, -1, right=(P, Xt)),
+                                                    _by(h, -1, left=(X, Pt))])
+        # XᵀPXᵀ + Pᵀ = (XᵀP + PᵀX)Xᵀ − Pᵀ(XXᵀ − I)
+        self.system.add_rule((Xt, P, Xt), -_w(Pt), "X^T P X^T = -P^T X X^T = -P^T (r = n)", name="XtPXt",
+                             cofactors=[_by(g, 1, right=(Xt,)), _by(h, -1, left=(Pt,))])
+        # the completion of P^T X P^T two ways (Knuth-Bendix: with it the word rules are confluent)
+        self.system.add_rule((Pt, P, Xt), _w(Xt, P, Pt), "P^T P X^T = X^T P P^T (r = n; completion of PtX, XPt)",
+                             name="PtPXt", cofactors=[_by(g, -1, right=(Pt,)), _by(g, 1, left=(Pt, X), right=(Xt,)),
+                                                      _by(h, -1, left=(Pt,), right=(P, Xt)), _by(h, -1, left=(Pt, X, Pt))])
+
+    def last_column(self) -> Mat:
+        """E_r, the last column of I_r, as an r×1 letter (E_rᵀE_r = 1): XE_r is the last column of X."""
+        if "last" not in self._extras:
+            self._extras.add("last")
+            self.system.order.add(ER)
+            self.system.order.add(ERt)
+            self.system.add_rule((ERt, ER), _i(SCALAR_T), "E_r^T E_r = 1 (the last column of I_r)", name="ErtEr",
+                                 cofactors=[_by(column_hypotheses()["ErtEr"])])
+        self._named.setdefault(str(ER), ER)
+        return self._cached("column:last", lambda: self._const_block(_w(ER), ("r", "?")))
+
+    def leading_columns(self) -> Mat:
+        """(E_1, ..., E_{r−1}), the first r − 1 columns of I_r, as an r×(r−1) letter E_{<r}, with the last
+        column E_r: E_{<r}ᵀE_{<r} = I_{r−1}, E_{<r}ᵀE_r = 0 and E_{<r}E_{<r}ᵀ = I_r − E_rE_rᵀ (for every r)."""
+        self.last_column()
+        if "leading" not in self._extras:
+            self._extras.add("leading")
+            self.system.order.add(LEAD)
+            self.system.order.add(LEADt)
+            hyps = column_hypotheses()
+            why = "the columns of I_r: its first r - 1 and its last"
+            self.system.add_rule((LEADt, LEAD), _i(LEADING), why, name="EleadtElead",
+                                 cofactors=[_by(hyps["EleadtElead"])])
+            self.system.add_rule((LEADt, ER), NCPoly.zero(LEADING, SCALAR_T), why, name="EleadtEr",
+                                 cofactors=[_by(hyps["EleadtEr"])])
+            self.system.add_rule((ERt, LEAD), NCPoly.zero(SCALAR_T, LEADING), why, name="ErtElead",
+                                 cofactors=[_by(hyps["ErtElead"])])
+            self.system.add_rule((LEAD, LEADt), _i("r") - _w(ER, ERt), why, name="EleadEleadt",
+                                 cofactors=[_by(hyps["EleadEleadt+ErErt"])])
+        self._named.setdefault(str(LEAD), LEAD)
+        return self._cached("column:leading", lambda: self._const_block(_w(LEAD), ("r", "?")))
+
+    def _double(self, key: str) -> Mat:
+        """A generic point of the double Neumann system as letters: XᵀY → I_r, YᵀX → I_r, ẊᵀY → −XᵀẎ,
+        YᵀẊ → −ẎᵀX (its constraints and their transposes)."""
+        if "double" not in self._extras:
+            self._extras.add("double")
+            for L in (DX, DY, DXd, DYd, DXt, DYdt, DYt, DXdt):   # XᵀẎ < ẊᵀY, ẎᵀX < YᵀẊ
+                self.system.order.add(L)
+            self.system.add_rule((DXt, DY), _i("r"), "X^T Y = I_r (D0)", name="DXtDY", cofactors=[_by(hypothesis("DXtDY"))])
+            self.system.add_rule((DYt, DX), _i("r"), "Y^T X = I_r (D0)", name="DYtDX", cofactors=[_by(hypothesis("DYtDX"))])
+            self.system.add_rule((DXdt, DY), -_w(DXt, DYd), "X'^T Y + X^T Y' = 0 (D0, differentiated)", name="DXdtDY",
+                                 cofactors=[_by(hypothesis("DXdtDY+DXtDYd"))])
+            self.system.add_rule((DYt, DXd), -_w(DYdt, DX), "Y^T X' + Y'^T X = 0 (D0, differentiated)", name="DYtDXd",
+                                 cofactors=[_by(hypothesis("DYtDXd+DYdtDX"))])
+        L = DOUBLE[key]
+        self._named.setdefault(str(L), L)
+        return self._cached(f"double:{key}", lambda: self._const_block(_w(L), ("n", "r")))
+
+    @property
+    def DX(self) -> Mat:
+        return self._double("X")
+
+    @property
+    def DY(self) -> Mat:
+        return self._double("Y")
+
+    @property
+    def DXdot(self) -> Mat:
+        return self._double("Xdot")
+
+    @property
+    def DYdot(self) -> Mat:
+        return self._double("Ydot")
+
+    def _derivative_at_double_point(self, F: Callable[[Any, dict], Any], point: Mapping[str, Any],
+                                    tangent: Mapping[str, Any]) -> Any:
+        """d/dε F(t, z + ε·v) at the double point z: the derivation of the value F(z) (a polynomial in the
+        point's letters) that sends each letter to its component of v, for a v that keeps (D0) and its
+        derivative (checked by the rules: the derivative is then that of F on the constraint set)."""
+        images = {}
+        for k, v in tangent.items():
+            e = entry_of(v) if isinstance(v, Mat) and v._shape() == (1, 1) else None
+            if k not in DOUBLE or not isinstance(e, NCPoly) or e.shape != ("n", "r"):
+                raise refuse("a tangent vector of the double system that is not given by its n×r blocks", self.tracker)
+            images[DOUBLE[k]] = e
+        for rel in (hypothesis("DXtDY").poly, hypothesis("DXdtDY+DXtDYd").poly):
+            if not self.reduce(derivation(rel, images)).is_zero:
+                raise refuse("a derivative along a vector that does not keep (D0) and its derivative", self.tracker)
+        value = F(self, dict(point))
+        return map_entries(value, lambda x: self.field.normalize(derivation(x, images)) if isinstance(x, NCPoly)
+                           else se.Integer(0), self)
+
+    def euler_lagrange_double(self, T: Callable, U: Callable, constraints: Callable, position: Mapping[str, Any],
+                              velocity: Mapping[str, Any]) -> tuple[dict[str, Mat], list]:
+        """The Euler–Lagrange equations d/dt ∂T/∂q̇ = −∂U/∂q + ∂tr(Mᵀg)/∂q, g = XᵀY − I_r = 0, of a Lagrangian
+        T(q̇) − U(q) on pairs (X, Y) of n×r matrices, solved in the free algebra at the generic point of the
+        double system (its letters and rules (D0)) and evaluated at the given point by substitution: the
+        accelerations from the equations (each c·q̈_k + terms free of q̈), the r×r multiplier M (or Mᵀ)
+        from g̈ = 0.  Refused unless the constraints are exactly XᵀY − I_r, T has constant coefficients,
+        and the point satisfies (D0) and its derivative."""
+        if set(position) != {"X", "Y"} or set(velocity) != {"X", "Y"}:
+            raise refuse("Euler-Lagrange equations of variables other than a pair (X, Y)", self.tracker)
+        q = {"X": self._double("X"), "Y": self._double("Y")}
+        v = {"X": self._double("Xdot"), "Y": self._double("Ydot")}
+        g = constraints(self, q)
+        g = g[0] if isinstance(g, (list, tuple)) and len(g) == 1 else g
+        D0 = _w(DXt, DY) - _i("r")
+        if not isinstance(g, Mat) or not isinstance(entry_of(g), NCPoly) or (entry_of(g) - D0).expand().terms:
+            raise refuse("Euler-Lagrange equations with constraints other than X^T Y = I_r", self.tracker)
+        images = {}
+        for key, L in (("X", DX), ("Y", DY)):
+            images[L] = entry_of(position[key]) if isinstance(position[key], Mat) else None
+            images[DOUBLE[key + "dot"]] = entry_of(velocity[key]) if isinstance(velocity[key], Mat) else None
+        if any(not isinstance(e, NCPoly) or e.shape != ("n", "r") for e in images.values()):
+            raise refuse("a point of the double system that is not given by n×r blocks", self.tracker)
+        for rel in (D0, hypothesis("DXdtDY+DXtDYd").poly):
+            if not self.reduce(substitute(rel, images)).is_zero:
+                raise refuse("a point that the rules do not show to satisfy (D0) and its derivative", self.tracker)
+        acc = {"X": Letter("ddX", "n", "r"), "Y": Letter("ddY", "n", "r")}
+        for L in acc.values():
+            L.adjoint = Letter(f"{L}t", "r", "n")
+            L.adjoint.adjoint = L
+        M = Letter("Mu", "r", "r")
+        M.adjoint = Letter("Mut", "r", "r")
+        M.adjoint.adjoint = M
+        kinetic, potential = self._trace_form(T(self, v)), self._trace_form(U(self, q))
+        force = trace(_w(M.adjoint) * D0)
+        to_acc = {DOUBLE[k + "dot"]: _w(acc[k]) for k in ("X", "Y")}
+        equations = []
+        for key, L in (("X", DX), ("Y", DY)):
+            momentum = gradient(kinetic, DOUBLE[key + "dot"])
+            if momentum.letters() & {DX, DY, DXt, DYt}:
+                raise refuse("a kinetic energy whose coefficients depend on the position", self.tracker)
+            equations.append(substitute(momentum, to_acc) + gradient(potential, L) - gradient(force, L))
+        nf = self.system.normal_form
+        solved = solve_multipliers([nf(e) for e in equations], list(acc.values()), self.system)
+        gdot = derivation(D0, {DX: _w(DXd), DY: _w(DYd)})
+        gddot = nf(substitute(derivation(gdot, {DX: _w(DXd), DY: _w(DYd), DXd: _w(acc["X"]), DYd: _w(acc["Y"])}),
+                              solved))
+        for unknown in (M, M.adjoint):
+            sol = _isolate(gddot, unknown, [M, M.adjoint])
+            if sol is not None:
+                mult = {unknown: nf(sol), unknown.adjoint: nf(sol).star()}
+                break
+        else:
+            raise refuse("the multiplier of X^T Y = I_r, not solvable in the free algebra", self.tracker)
+        out = {k: self._const_mat(self.field.normalize(substitute(nf(substitute(solved[acc[k]], mult)), images)))
+               for k in ("X", "Y")}
+        return out, []
+
+    def _trace_form(self, value: Any) -> NCPoly:
+        value = entry_of(value) if isinstance(value, Mat) and value._shape() == (1, 1) else value
+        if isinstance(value, NCPoly) and value.is_scalar:
+            return value
+        c = as_coef(value)
+        if c is None:
+            raise refuse("a Lagrangian that is not a trace form", self.tracker)
+        return NCPoly.scalar(c)
+
+    def at_point(self, Xv: Mat, Pv: Mat) -> "FreePointScene":
+        """The problem at the point (Xv, Pv) of T*V (n×r blocks of this scene; refused unless they satisfy
+        (cond_XP) by the rules): see :class:`FreePointScene`."""
+        xs, ps = (entry_of(M) if isinstance(M, Mat) and M._shape() == (1, 1) else None for M in (Xv, Pv))
+        if not isinstance(xs, NCPoly) or not isinstance(ps, NCPoly) or xs.shape != ("n", "r") or ps.shape != ("n", "r"):
+            raise refuse("a point of T*V that is not given by two n×r blocks", self.tracker)
+        for rel in (xs.star() * xs - _i("r"), xs.star() * ps + ps.star() * xs):
+            if not self.reduce(rel).is_zero:
+                raise refuse("a point that the rules do not show to lie on T*V", self.tracker)
+        return FreePointScene(self, xs, ps)
+
+    def column(self, i: int) -> Mat:
+        """E_{i+1} ∈ ℝʳ (0 ≤ i < r) as an r×1 letter, for a claim stated at one r = 1 or 2 only (the scene was
+        made with ``columns=r``: E₁E₁ᵀ + … + E_rE_rᵀ = I_r is then a hypothesis of its normal forms)."""
+        if not self.columns:
+            raise refuse(f"the column e_{i + 1} = X E_{i + 1} (a basis vector of R^r) for every r", self.tracker)
+        if not 0 <= i < self.columns:
+            raise ValueError(f"E_{i + 1} is not a basis vector of R^{self.columns}")
+        self._column_letters()
+        L = COLUMNS[i]
+        self._named.setdefault(str(L), L)
+        return self._cached(f"column:{i}", lambda: self._const_block(_w(L), ("r", "?")))
 
     @property
     def Ainv(self) -> Mat:
@@ -586,6 +817,11 @@ class FreeScene(PaperObjects):
     def _const_mat(self, p: NCPoly) -> Mat:
         return one_block(p, self.field, p.shape, self.tracker)
 
+    def _const_block(self, p: NCPoly, tags: tuple) -> Mat:
+        """A constant of the scene (constant along every flow) with the given index spaces."""
+        x = Dual(p, NCPoly.zero(p.row, p.col)) if isinstance(self.field, DualField) else p
+        return one_block(x, self.field, tags, self.tracker)
+
     def tr(self, M: Any) -> Any:
         if isinstance(M, Mat):
             return _number(self, M._trace())
@@ -714,6 +950,8 @@ class FreeScene(PaperObjects):
                                 tangent: Mapping[str, Any]) -> Any:
         """d/dε F(t, point + ε·tangent) at ε = 0 for the scene's own point: the derivative of
         t ↦ F(t, {k: t.k}) along the tangent (letters not moved are constant)."""
+        if set(point) == set(DOUBLE) and all(point[k] is self._double(k) for k in DOUBLE):
+            return self._derivative_at_double_point(F, point, tangent)
         keys = self._own_point(point, "a derivative")
         return self.d(lambda t: F(t, {k: getattr(t, k) for k in keys}), dict(tangent))
 
@@ -791,8 +1029,45 @@ class FreeScene(PaperObjects):
         return self.d(F, self.dirac_flow(G))
 
     def reduce(self, x: Any) -> Reduction:
-        """Normal form of one entry with the rules used (for reports)."""
-        return self.system.reduce(x if isinstance(x, NCPoly) else NCPoly.scalar(x))
+        """Normal form of one entry with the rules used (for reports); with the columns of V(n, 2),
+        the canonical form of :mod:`.columns` and the rules in turn until neither changes it."""
+        p = x if isinstance(x, NCPoly) else NCPoly.scalar(x)
+        if "columns" not in self._extras and "last" not in self._extras:
+            red = self.system.reduce(p)
+            if red.is_zero or not self.columns:
+                return red
+        if self.columns:
+            self._column_letters()   # r is given: what the rules leave, in the basis of R^r
+        rules: list = []
+        q = p
+        for _ in range(self.system.max_depth):
+            c, _cert = canonical(q, self.columns)
+            red = self.system.reduce(c)
+            rules += [r for r in red.rules if r not in rules]
+            if red.normal_form == q:
+                return Reduction(p, red.normal_form, rules)
+            q = red.normal_form
+        raise RewritingError("the canonical form of the columns and the rules do not settle")
+
+    def certify(self, p: NCPoly, normal_form: NCPoly) -> Certificate:
+        """p − nf(p) through the hypotheses (see :meth:`RewritingSystem.certify`); with the columns,
+        the resolutions of :func:`.columns.canonical` and the rules' steps, in the order of :meth:`reduce`."""
+        if ("columns" not in self._extras and "last" not in self._extras) or self.system.is_zero(p):
+            return self.system.certify(p, normal_form)   # the rules alone (as reduce found, or as they suffice)
+        terms: list = []
+        q = p
+        for _ in range(self.system.max_depth):
+            c, cert = canonical(q, self.columns)
+            terms += cert
+            step = self.system.certify(c)
+            terms += step.terms
+            if step.normal_form == q:
+                q = step.normal_form
+                break
+            q = step.normal_form
+        if q != normal_form:
+            raise RewritingError("the certificate's normal form is not the reduction's")
+        return Certificate(p, q, terms)
 
 
 class FreeTangentScene(FreeScene):
@@ -807,6 +1082,8 @@ class FreeTangentScene(FreeScene):
         self._resolvents = base._resolvents
         self._extras = base._extras
         self._named = base._named
+        self.columns = base.columns
+        self.square = base.square
 
     def _prim(self, key: str, poly: NCPoly) -> Mat:
         dot = self.flow.get(key)
@@ -908,3 +1185,71 @@ def _isolate(eq: NCPoly, U: Letter, unknowns: list[Letter]) -> NCPoly | None:
 def _operator_letters(y: Any) -> list[OperatorLetter]:
     polys = [y.a, y.b] if isinstance(y, Dual) else [y]
     return [L for q in polys for L in q.letters() if isinstance(L, OperatorLetter)]
+
+
+# ---------------------------------------------------------------------------
+class FreePointScene:
+    """The free scene's problem at another point (X₁, P₁) of T*V, given by polynomials of the scene.
+
+    Every value is computed at a generic point of a scene of its own (its letters X, P, the same rules,
+    parameters and record) and then evaluated at the point by the substitution X ↦ X₁, P ↦ P₁, which
+    maps every consequence of (cond_XP) to one, because (X₁, P₁) satisfies (cond_XP) (checked when the
+    scene is made).  Flows it hands out are remembered, so that a derivative along one of them is taken
+    at the generic point too; anything else given to it in the coordinates of the base scene is refused."""
+
+    def __init__(self, base: FreeScene, Xv: NCPoly, Pv: NCPoly) -> None:
+        self.base = base
+        self.inner = FreeScene(base.tracker, realization="standard", lazy=getattr(base.field, "lazy", False),
+                               columns=base.columns, square=base.square)
+        self.inner.params = base.params
+        self._images = {X: Xv, P: Pv}
+        self._flows: dict[int, tuple[Flow, Flow]] = {}
+
+    def lift(self, v: Any) -> Any:
+        """A value of the generic point, evaluated at the point."""
+        if isinstance(v, Flow):
+            out = Flow(self.lift(v.Xdot), self.lift(v.Pdot))
+            self._flows[id(out)] = (out, v)
+            return out
+        if isinstance(v, Mat):
+            return map_entries(v, lambda x: self._sub(x), self.base)
+        if isinstance(v, NCPoly):
+            return self._sub(v)
+        if isinstance(v, (list, tuple)):
+            return type(v)(self.lift(x) for x in v)
+        if isinstance(v, dict):
+            return {k: self.lift(x) for k, x in v.items()}
+        if callable(v):
+            return lambda *a, **k: self.lift(v(*[self._lower(x) for x in a], **{n: self._lower(x) for n, x in k.items()}))
+        return v
+
+    def _sub(self, x: Any) -> Any:
+        if isinstance(x, NCPoly):
+            return self.base.field.normalize(substitute(x, self._images))
+        if isinstance(x, Dual):
+            raise refuse("a value of a tangent scene at another point", self.base.tracker)
+        return x
+
+    def _lower(self, v: Any) -> Any:
+        """What the generic point's scene takes for an argument: its own flows, functions, scalars."""
+        if isinstance(v, Flow):
+            hit = self._flows.get(id(v))
+            if hit is None or hit[0] is not v:
+                raise refuse("a flow at another point that the point's scene did not make", self.base.tracker)
+            return hit[1]
+        if isinstance(v, (Mat, NCPoly, dict, list, tuple)):
+            raise refuse("a value in the base scene's coordinates handed to the scene at another point",
+                         self.base.tracker)
+        return v
+
+    #: what does not depend on the point: taken from the base scene (values given in its coordinates)
+    POINTLESS = frozenset({"tr", "killing", "q", "const", "zeros", "In", "Ir", "scalar_matrix", "mat", "A", "Ainv",
+                           "resolvent", "lam", "eps", "kappa", "scalar", "xi", "zeta", "eta", "theta", "generic",
+                           "n", "r", "field", "tracker", "column", "last_column", "leading_columns", "Y", "Q"})
+
+    def __getattr__(self, name: str) -> Any:
+        if name.startswith("_"):
+            raise AttributeError(name)
+        if name in self.POINTLESS:
+            return getattr(self.base, name)
+        return self.lift(getattr(self.inner, name))

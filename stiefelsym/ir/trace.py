@@ -412,7 +412,8 @@ VALUE_ATTRS: dict[str, tuple[str, tuple | None]] = {
 MATRICES = {"X": ("n", "r"), "P": ("n", "r"), "A": ("n", "n"), "Ainv": ("n", "n"), "Phi": ("n", "n"),
             "Psi": ("r", "r"), "In": ("n", "n"), "Ir": ("r", "r"), "xi": ("n", "n"), "zeta": ("n", "n"),
             "eta": ("r", "r"), "theta": ("r", "r"), "Y": ("n", "r"), "Q": ("n", "r"), "Zc": ((2, "n"), (2, "r")),
-            "Zc_dot": ((2, "n"), (2, "r"))}
+            "Zc_dot": ((2, "n"), (2, "r")), "DX": ("n", "r"), "DY": ("n", "r"), "DXdot": ("n", "r"),
+            "DYdot": ("n", "r")}
 NUMBERS = ("lam", "kappa", "eps")
 #: the scene's methods, with the kind of what they return
 METHODS = frozenset("""tr killing resolvent q const scalar mat zeros identity scalar_matrix generic general_params
