@@ -93,20 +93,41 @@ class Evaluator:
         return memo[self.g.output.i]
 
     # -- values -----------------------------------------------------------------------------------
+    def _memo(self, i: int, frame: _Frame) -> dict:
+        """The memo of the frame that owns node i: the innermost enclosing call whose parameters it
+        reads (the root for a node that reads none)."""
+        deps = self.deps[i]
+        if not deps:
+            return self.root.memo
+        owner = frame
+        while owner.fn != 0 and owner.fn not in deps:
+            owner = owner.parent
+        return owner.memo
+
     def value(self, ref: Ref, frame: _Frame) -> Any:
         i = ref.i
-        deps = self.deps[i]
-        owner = frame
-        if deps:
-            while owner.fn != 0 and owner.fn not in deps:
-                owner = owner.parent
-        else:
-            owner = self.root
-        memo = owner.memo
+        memo = self._memo(i, frame)
         v = memo.get(i, _MISSING)
-        if v is _MISSING:
-            v = memo[i] = self._ops[self.g.ops[i]](self, self.g.args[i], frame)
-        return v
+        if v is not _MISSING:
+            return v
+        # the nodes below i first, with an explicit stack (a body may be a chain of thousands of
+        # nodes: a sum over a basis at n = 7), then i; a traced function's body waits for its calls
+        ops, args, g = self.g.ops, self.g.args, self.g
+        stack = [i]
+        while stack:
+            j = stack[-1]
+            mj = self._memo(j, frame)
+            if j in mj:
+                stack.pop()
+                continue
+            if ops[j] != "fn":
+                pending = [k for k in g.refs(j) if k not in self._memo(k, frame)]
+                if pending:
+                    stack.extend(pending)
+                    continue
+            mj[j] = self._ops[ops[j]](self, args[j], frame)
+            stack.pop()
+        return memo[i]
 
     def arg(self, a: Any, frame: _Frame) -> Any:
         t = type(a)
