@@ -858,14 +858,14 @@ class PointLoan:
 
 def _field_state(f: Any) -> tuple | None:
     """The mutable record of a field (a paired field's degree markers: the denominators and constants
-    met), copied; None for a field that keeps none."""
-    degrees = getattr(f, "degrees", None)
-    return degrees.record() if degrees is not None else None
+    met, and the constants it made), copied; None for a field that keeps none."""
+    record = getattr(f, "record", None)
+    return record() if record is not None else None
 
 
 def _restore_field(f: Any, state: tuple | None) -> None:
     if state is not None:
-        f.degrees.restore(state)
+        f.restore(state)
 
 
 _LOAN: PointLoan | None = None

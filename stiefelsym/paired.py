@@ -114,6 +114,18 @@ class PairField(Field):
             return self.const(x)
         raise TypeError(f"not a number of the paired field: {type(x).__name__}")
 
+    def record(self) -> tuple:
+        """What the degree markers met so far, and the constants made (whose markers name the
+        denominators met): see :meth:`restore`."""
+        return self.degrees.record(), dict(self._consts)
+
+    def restore(self, rec: tuple) -> None:
+        """Back to a :meth:`record`: a constant made since then is made again, with its denominator
+        registered again."""
+        degrees, consts = rec
+        self.degrees.restore(degrees)
+        self._consts = dict(consts)
+
     def const(self, q):
         x = self._consts.get(q)
         if x is None:    # a constant that vanishes mod p is refused by the value field (not kept)

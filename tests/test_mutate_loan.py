@@ -4,10 +4,11 @@ any order and any number of workers; a key that forgets part of a node is caught
 from __future__ import annotations
 
 import random
+from fractions import Fraction
 
 import pytest
 
-from stiefelsym.claims import load_catalog
+from stiefelsym.claims import Size, load_catalog
 from stiefelsym.fields import RationalField
 from stiefelsym.ir import evaluate as ev
 from stiefelsym.mutate import run_mutation
@@ -103,7 +104,19 @@ def test_every_loan_starts_from_the_baselines_record_of_denominators(monkeypatch
     before = dict(f1.degrees.factor_degree)
     f1.degrees.new_factor(3)                        # a mutant meets a denominator the baseline did not
     f1.degrees.const(7919)
+    f1.const(Fraction(1, 7919))                     # and makes a constant over it
     f2, s2 = loan.scene(("k",), build)
     assert f2 is f1 is f and s2 is not s1
     assert (f2.degrees.factor_degree == before) == restore
     assert (7919 not in f2.degrees.constants) == restore
+    assert (Fraction(1, 7919) not in f2._consts) == restore
+
+
+def test_two_mutants_that_make_the_same_new_constant():
+    """jensen-hamiltonian #21 and #50 both change a coefficient 1/2 to 1/3: the second must not read
+    the first one's constant, whose denominator the loan forgot (it ended in a KeyError)."""
+    claim = load_catalog().get("jensen-hamiltonian")
+    kw = dict(methods=("rational", "float"), sizes=[Size(4, 2)], only=[21, 50])
+    lent, fresh = run_mutation([claim], **kw), run_mutation([claim], lend=False, **kw)
+    assert outcomes(lent) == outcomes(fresh)
+    assert all("KeyError" not in x.message for c in lent.claims for o in c.mutants for x in o.cells)
