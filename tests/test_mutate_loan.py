@@ -120,3 +120,21 @@ def test_two_mutants_that_make_the_same_new_constant():
     lent, fresh = run_mutation([claim], **kw), run_mutation([claim], lend=False, **kw)
     assert outcomes(lent) == outcomes(fresh)
     assert all("KeyError" not in x.message for c in lent.claims for o in c.mutants for x in o.cells)
+
+
+@pytest.mark.parametrize("guard", [True, False])
+def test_a_scene_of_its_own_is_not_shared(monkeypatch, guard):
+    """magnetic-grassmannian-flow evaluates at another point of T*V, a scene of its own that builds
+    its objects lazily: shared between mutants, #132's A⁻¹ built there would be read by the next run
+    over a denominator the loan forgot.  Such values are not shared; the negative control shares
+    them, and the runs break."""
+    from stiefelsym.ir import evaluate
+    if not guard:
+        monkeypatch.setattr(evaluate, "shareable", lambda v: True)
+    claim = load_catalog().get("magnetic-grassmannian-flow")
+    kw = dict(methods=("rational", "float"), sizes=[Size(3, 2)], only=[132])
+    lent = run_mutation([claim], **kw)
+    broken = any("KeyError" in x.message for c in lent.claims for o in c.mutants for x in o.cells)
+    assert broken != guard
+    if guard:
+        assert outcomes(lent) == outcomes(run_mutation([claim], lend=False, **kw))

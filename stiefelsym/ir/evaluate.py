@@ -88,7 +88,9 @@ class Evaluator:
             k = keys[i]
             v = shared.get(k, _MISSING)
             if v is _MISSING:
-                v = shared[k] = kernel(memo, self)
+                v = kernel(memo, self)
+                if shareable(v):
+                    shared[k] = v
             memo[i] = v
         return memo[self.g.output.i]
 
@@ -240,6 +242,19 @@ class Evaluator:
 #: (bound per evaluation), containers (cheap to rebuild, and mutable), traced functions (closures
 #: over their own evaluation) and the rank and count statements
 UNSHARED = frozenset({"list", "tuple", "dict", "kw", "fn", "rank", "count", "scene", "param"})
+
+
+def shareable(v: Any) -> bool:
+    """Whether a node's value may be read by another graph's evaluation: a value, not an object that
+    builds and keeps things lazily (a scene of its own, e.g. at another point of T*V) or that acts
+    (an operator the engine handed out), whose later use by one graph would be seen by the next."""
+    if callable(v) or hasattr(v, "_cache"):
+        return False
+    if type(v) in (tuple, list):
+        return all(shareable(x) for x in v)
+    if type(v) is dict:
+        return all(shareable(x) for x in v.values())
+    return True
 
 
 def node_keys(g: Graph) -> list[bytes]:
