@@ -224,3 +224,110 @@ def test_operator_letter_misuse_is_never_proved_for_all_sizes():
 def test_operator_letter_misuse_fails_at_a_fixed_size(method):
     v = verdicts("operator_letter_misuse.py", method, size="3,2")
     assert all(v[c] == "fails" for c in OPERATOR_FALSE), v
+
+
+# -- N. r_is_n declared on a SizeSpec whose own sizes have r < n ----------------------------------
+
+ALL_LINES = re.compile(r"^(\S+) \((\d+),(\d+)\) (\w+): (\w+)")
+
+
+def default_size_verdicts(claims_file, method):
+    """{(claim id, n, r): verdict} of `stiefelsym verify` at the claims' own default sizes."""
+    run = cli("verify", "--claims", str(HERE / claims_file), "--method", method)
+    return {(m.group(1), int(m.group(2)), int(m.group(3))): m.group(5)
+            for m in map(ALL_LINES.match, run.stdout.splitlines()) if m}
+
+
+SQUARE_FALSE = ("adv-square-handbuilt", "adv-square-replace", "adv-square-xpt")
+
+
+@pytest.mark.xfail(strict=True, reason=(
+    "free_method builds FreeScene(square=claim.sizes.r_is_n) from the declaration alone: a SizeSpec with "
+    "r_is_n=True whose sizes include r < n (SizeSpec((Size(3,2), ...), r_is_n=True), or "
+    "dataclasses.replace(admissible(...), r_is_n=True)) gets X X^T = I_n and X P^T = -P X^T as rules, and "
+    "X X^T = I_n is 'proved' for every n at r = n while the claim's own default sizes (3,2), (2,1), ... fail "
+    "under every fixed-size method; nothing checks that the sizes of a SizeSpec satisfy its own admits()"))
+def test_r_is_n_with_sizes_r_less_than_n_is_not_proved():
+    v = verdicts("square_sizes_inconsistent.py", "free")
+    assert all(v[c] not in PASSING for c in SQUARE_FALSE), v
+
+
+@pytest.mark.parametrize("method", ["modular", "float"])
+def test_r_is_n_with_sizes_r_less_than_n_fails_at_its_sizes(method):
+    v = default_size_verdicts("square_sizes_inconsistent.py", method)
+    for c in SQUARE_FALSE:
+        assert v[(c, 3, 2)] == "fails", v
+        assert v[(c, 3, 3)] not in ("fails", "error"), v
+
+
+# -- O. a function handed to the scene closes over a value of the enclosing scene -------------------
+
+CAPTURED = ("adv-captured-grad", "adv-captured-at-point")
+
+
+@pytest.mark.xfail(strict=True, reason=(
+    "a function given to s.gradient (or to the scene of twisted.at_point) that refers to the enclosing "
+    "scene's P is traced with that node inside its body; the free scene evaluates it with the base scene's "
+    "letter P, which is the same letter as the function's own variable P, so the captured matrix is "
+    "differentiated (grad_P tr(P^T u.X) = X) and substituted at another point (P -> -P); read as a fixed "
+    "matrix, grad_P = 0 and grad_X = P everywhere; every fixed-size method stops with an error on these "
+    "claims, so 'proved (all n, r)' is the only verdict they get"))
+def test_captured_base_value_is_not_proved():
+    v = verdicts("captured_base_value.py", "free")
+    assert all(v[c] not in PASSING for c in CAPTURED), v
+
+
+@pytest.mark.parametrize("method", ["exact", "modular", "float"])
+def test_captured_base_value_is_not_passed_at_a_fixed_size(method):
+    v = verdicts("captured_base_value.py", method, size="3,2")
+    assert all(v[c] not in PASSING for c in CAPTURED), v
+
+
+# -- P. column letters at one r, the scene at another point, the letters at r = n (no hole found) -----
+
+COLUMNS_R2 = ("adv-cols-complete-in-n", "adv-cols-swapped", "adv-cols-range-r", "adv-cols-r23", "adv-cols-r2-trace",
+              "adv-cols-r2-phi", "adv-cols-r2-phi-sign", "adv-point-minusP-flow", "adv-point-off-TV",
+              "adv-point-scaled", "adv-point-rotated-r2", "adv-point-magnetic-reflected")
+COLUMNS_R1 = ("adv-cols-r1-e2", "adv-cols-r1-xxt", "adv-cols-r1-pt")
+SQUARE_R_N = ("adv-last-sign", "adv-square-xtp-zero", "adv-square-pxt-sym", "adv-last-lead-one")
+
+
+def test_column_letters_misuse_is_never_proved():
+    v = verdicts("columns_one_r.py", "free")
+    assert all(v[c] not in PASSING for c in COLUMNS_R2 + COLUMNS_R1), v
+    assert v["adv-point-reflected-control"] == "proved", v
+    v = verdicts("columns_square.py", "free")
+    assert all(v[c] not in PASSING for c in SQUARE_R_N + ("adv-last-every-r",)), v
+
+
+@pytest.mark.parametrize("method", ["exact", "modular", "float"])
+def test_column_letters_misuse_fails_at_a_fixed_size(method):
+    at_r2 = tuple(c for c in COLUMNS_R2 if c not in ("adv-cols-range-r", "adv-cols-r23"))   # true at r = 2
+    v = verdicts("columns_one_r.py", method, size="3,2", ids=at_r2 + ("adv-point-reflected-control",))
+    assert all(v[c] == "fails" for c in at_r2) and v["adv-point-reflected-control"] in PASSING, v
+    v = verdicts("columns_one_r.py", method, size="3,3", ids=("adv-cols-r23",))
+    assert v["adv-cols-r23"] == "fails", v
+    v = verdicts("columns_one_r.py", method, size="3,1", ids=COLUMNS_R1 + ("adv-cols-range-r",))
+    assert v["adv-cols-r1-xxt"] == "fails" and v["adv-cols-r1-pt"] == "fails", v
+    assert v["adv-cols-r1-e2"] not in PASSING and v["adv-cols-range-r"] not in PASSING, v
+    v = verdicts("columns_square.py", method, size="3,3", ids=SQUARE_R_N)
+    assert all(v[c] == "fails" for c in SQUARE_R_N), v
+    v = verdicts("columns_square.py", method, size="3,2", ids=("adv-last-every-r",))
+    assert v["adv-last-every-r"] == "fails", v
+
+
+def test_check_rejects_a_free_proof_grafted_onto_another_claim(tmp_path):
+    """The certificate of the proved control, copied into the record of a false claim at r = 2 with the
+    verdict proved: `check` re-runs free records and rejects it."""
+    out = tmp_path / "rep"
+    cli("verify", "adv-point-reflected-control", "adv-cols-r2-phi", "--claims", str(HERE / "columns_one_r.py"),
+        "--method", "free", "--report-dir", str(out))
+    payload = json.loads((out / "results.json").read_text())
+    recs = {r["claim"]: r for r in payload["results"]}
+    good, bad = recs["adv-point-reflected-control"], recs["adv-cols-r2-phi"]
+    assert good["verdict"] == "proved" and bad["verdict"] == "undecided"
+    for k in ("verdict", "certificate", "certificate_data", "checks", "message", "residual", "derivation"):
+        if k in good:
+            bad[k] = good[k]
+    (out / "forged.json").write_text(json.dumps(payload))
+    assert cli("check", str(out / "forged.json")).returncode == 1

@@ -1,0 +1,29 @@
+"""r_is_n declared on a SizeSpec whose sizes have r < n: the free method takes the declaration (and uses
+X X^T = I_n) while the claim's own default sizes, which every fixed-size method verifies, include r < n.
+Both specs are built through the public API (SizeSpec, dataclasses.replace on admissible(...))."""
+import dataclasses
+
+from stiefelsym import Size, SizeSpec, admissible, claim
+
+#: a hand-built spec: sizes (3,2), (3,3), (4,4), declared r = n
+SQ_HANDBUILT = SizeSpec((Size(3, 2), Size(3, 3), Size(4, 4)), r_is_n=True)
+#: every 2 <= n <= 4, r <= n (admissible's sizes), with r_is_n switched on afterwards
+SQ_REPLACED = dataclasses.replace(admissible(n_max=4, n_min=2), r_is_n=True)
+
+
+@claim("adv-square-handbuilt", kind="id", sizes=SQ_HANDBUILT, statement="X X^T = I_n")
+def square_handbuilt(s):
+    """False at (3,2), one of the claim's sizes."""
+    return {"r": s.X @ s.X.T - s.In}
+
+
+@claim("adv-square-replace", kind="id", sizes=SQ_REPLACED, statement="X X^T = I_n")
+def square_replaced(s):
+    """False at every size with r < n, among the claim's sizes."""
+    return {"r": s.X @ s.X.T - s.In}
+
+
+@claim("adv-square-xpt", kind="id", sizes=SQ_REPLACED, statement="X P^T + P X^T = 0")
+def square_xpt(s):
+    """False for r < n (X^T P skew gives X P^T skew only when X X^T = I_n)."""
+    return {"r": s.X @ s.P.T + s.P @ s.X.T}
