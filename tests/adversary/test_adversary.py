@@ -331,3 +331,64 @@ def test_check_rejects_a_free_proof_grafted_onto_another_claim(tmp_path):
             bad[k] = good[k]
     (out / "forged.json").write_text(json.dumps(payload))
     assert cli("check", str(out / "forged.json")).returncode == 1
+
+
+# -- Q. a scalar that vanishes at one stated size divides the residual ------------------------------
+
+POLE = ("adv-pole-n4", "adv-pole-n4-phi")
+
+
+@pytest.mark.xfail(strict=True, reason=(
+    "the free algebra's coefficients are rational functions of n, r, so (c*c)/c - c with c = tr(I_n) - 4 is 0 "
+    "for every n, and probe_divisions evaluates the claim at ONE size (the first with n >= 3: (3,1), where c = -1); "
+    "the claim's own sizes include n = 4, where it is 0/0 (exact: fails with nan; modular, float: inconclusive), "
+    "yet the free verdict is 'proved' for every n, r"))
+def test_division_by_a_scalar_vanishing_at_a_stated_size_is_not_proved():
+    v = verdicts("division_at_one_size.py", "free")
+    assert all(v[c] not in PASSING for c in POLE), v
+
+
+@pytest.mark.parametrize("method", ["exact", "modular", "float"])
+def test_division_by_zero_at_n4_is_not_passed(method):
+    v = verdicts("division_at_one_size.py", method, size="4,2")
+    assert all(v[c] not in PASSING for c in POLE), v
+
+
+# -- R. the independent checker: coefficients with a pole where the hypothesis holds -----------------
+
+def _term(coef, hyp, in_trace, left=(), right=()):
+    return {"coef": coef, "hyp": hyp, "in_trace": in_trace, "left": list(left), "right": list(right),
+            "word": [], "traces": [], "transposed": False}
+
+
+def _one_equals_zero(terms):
+    """A certificate of the residual 1 (a 1x1 entry): a proof of 1 = 0."""
+    return {"format": "stiefelsym-cofactor-1", "letters": {}, "entries": [{
+        "position": "r", "type": ["1", "1"], "residual": [{"coef": "1", "word": [], "traces": []}],
+        "terms": terms}]}
+
+
+#: 1 = -(r-2)^{-1} tr(E1E1^T + E2E2^T - I_r) + (r-2)^{-1}(E1^T E1 - 1) + (r-2)^{-1}(E2^T E2 - 1): an identity
+#: of rational functions of r, whose coefficients have their pole at r = 2, where the hypothesis holds
+ONE_AT_R2 = _one_equals_zero([_term("-1/(r-2)", "E1E1t+E2E2t", True), _term("1/(r-2)", "E1tE1", False),
+                              _term("1/(r-2)", "E2tE2", False)])
+#: 1 = (r-n)^{-1} (tr(X X^T - I_n) - tr(X^T X - I_r)): the pole at r = n, where X X^T = I_n holds
+ONE_AT_RN = _one_equals_zero([_term("1/(r-n)", "XXt", True), _term("-1/(r-n)", "XtX", True)])
+
+
+@pytest.mark.xfail(strict=True, reason=(
+    "certificate_check.coefficient rejects only a denominator that is the zero polynomial: a coefficient "
+    "1/(r-2) next to the hypothesis E1E1t+E2E2t (true at r = 2 only), or 1/(r-n) next to XXt (r = n only), "
+    "is accepted, and with them the residual 1 expands exactly (tr I_r = r, tr I_n = n), so the checker "
+    "accepts certificates of 1 = 0 'at r = 2 only' and 'at r = n only'"))
+@pytest.mark.parametrize("cert", [ONE_AT_R2, ONE_AT_RN], ids=["r2", "rn"])
+def test_checker_rejects_a_certificate_with_a_pole_where_its_hypothesis_holds(cert, tmp_path):
+    from stiefelsym.certificate_check import check_certificate
+
+    assert not check_certificate(cert).accepted
+    path = tmp_path / "forged.json"
+    path.write_text(json.dumps({"results": [{"claim": "adv-one", "method": "free", "verdict": "proved",
+                                             "certificate_data": cert}]}))
+    r = subprocess.run([sys.executable, "-m", "stiefelsym.certificate_check", str(path)], cwd=ROOT,
+                       capture_output=True, text=True, timeout=300)
+    assert r.returncode == 1, r.stdout
