@@ -128,3 +128,29 @@ def r1_xxt(s):
 def r1_pt(s):
     """X^T P = 0 holds at r = 1 (a skew 1x1 matrix); P = X does not."""
     return {"skew": s.X.T @ s.P, "r": s.P @ E(s, 0) @ E(s, 0).T - s.X}
+
+
+def H_operator(u):
+    AA = u.sym_operator("AA")
+    return u.tr(AA(u.Phi) @ u.Phi)
+
+
+@claim("adv-op-point-flow", kind="id", sizes=ALL, statement="the flow of tr(AA(Phi) Phi) at (X, -P) has Xdot = Xdot(X, P)")
+def op_point_flow(s):
+    """False: Xdot is odd in P (the operator's argument Phi must be substituted at the point too)."""
+    t = twisted.at_point(s, s.X, -s.P)
+    return {"r": t.dirac_flow(H_operator).Xdot - s.dirac_flow(H_operator).Xdot}
+
+
+@claim("adv-op-point-grad", kind="id", sizes=ALL, statement="grad_P tr(AA(Phi) Phi) at (X, P + X eta) = grad_P at (X, P)")
+def op_point_grad(s):
+    """False: Phi changes with P."""
+    t = twisted.at_point(s, s.X, s.P + s.X @ s.eta)
+    return {"r": t.gradient(H_operator)[1] - s.gradient(H_operator)[1]}
+
+
+@claim("adv-op-point-flow-control", kind="id", sizes=ALL, statement="the flow at (X, -P) has Xdot = -Xdot(X, P)")
+def op_point_flow_control(s):
+    """True: a control that the free method proves."""
+    t = twisted.at_point(s, s.X, -s.P)
+    return {"r": t.dirac_flow(H_operator).Xdot + s.dirac_flow(H_operator).Xdot}

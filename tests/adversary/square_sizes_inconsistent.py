@@ -27,3 +27,22 @@ def square_replaced(s):
 def square_xpt(s):
     """False for r < n (X^T P skew gives X P^T skew only when X X^T = I_n)."""
     return {"r": s.X @ s.P.T + s.P @ s.X.T}
+
+
+class AdmitsEverySize(SizeSpec):
+    """A SizeSpec (public) whose admits() says yes to every (n, r): its r_min = r_max = 2 are what the free
+    method reads, its admits() what an explicit --size is checked against."""
+
+    def admits(self, n, r):
+        return 1 <= r <= n
+
+
+R2_ADMITS_ALL = AdmitsEverySize((Size(3, 2), Size(4, 2)), r_min=2, r_max=2)
+
+
+@claim("adv-r2-admits-all", kind="id", sizes=R2_ADMITS_ALL, statement="E1 E1^T + E2 E2^T = I_r")
+def r2_admits_all(s):
+    """True at r = 2 only; --size 3,3 is admitted."""
+    from stiefelsym import twisted
+    E1, E2 = twisted.basis_vector(s, 0), twisted.basis_vector(s, 1)
+    return {"r": E1 @ E1.T + E2 @ E2.T - s.Ir}

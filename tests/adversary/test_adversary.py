@@ -239,6 +239,8 @@ def default_size_verdicts(claims_file, method):
 
 
 SQUARE_FALSE = ("adv-square-handbuilt", "adv-square-replace", "adv-square-xpt")
+#: r_min = r_max = 2 on a SizeSpec subclass whose admits() takes every size: --size 3,3 is admitted
+R2_ADMITS_ALL = "adv-r2-admits-all"
 
 
 @pytest.mark.xfail(strict=True, reason=(
@@ -246,10 +248,12 @@ SQUARE_FALSE = ("adv-square-handbuilt", "adv-square-replace", "adv-square-xpt")
     "r_is_n=True whose sizes include r < n (SizeSpec((Size(3,2), ...), r_is_n=True), or "
     "dataclasses.replace(admissible(...), r_is_n=True)) gets X X^T = I_n and X P^T = -P X^T as rules, and "
     "X X^T = I_n is 'proved' for every n at r = n while the claim's own default sizes (3,2), (2,1), ... fail "
-    "under every fixed-size method; nothing checks that the sizes of a SizeSpec satisfy its own admits()"))
+    "under every fixed-size method; nothing checks that the sizes of a SizeSpec satisfy its own admits(); "
+    "likewise fixed_r reads r_min = r_max = 2 of a SizeSpec subclass whose admits() takes (3,3), so "
+    "E1E1^T + E2E2^T = I_r is proved 'for every n at r = 2' and fails at --size 3,3"))
 def test_r_is_n_with_sizes_r_less_than_n_is_not_proved():
     v = verdicts("square_sizes_inconsistent.py", "free")
-    assert all(v[c] not in PASSING for c in SQUARE_FALSE), v
+    assert all(v[c] not in PASSING for c in SQUARE_FALSE + (R2_ADMITS_ALL,)), v
 
 
 @pytest.mark.parametrize("method", ["modular", "float"])
@@ -258,6 +262,7 @@ def test_r_is_n_with_sizes_r_less_than_n_fails_at_its_sizes(method):
     for c in SQUARE_FALSE:
         assert v[(c, 3, 2)] == "fails", v
         assert v[(c, 3, 3)] not in ("fails", "error"), v
+    assert verdicts("square_sizes_inconsistent.py", method, size="3,3", ids=(R2_ADMITS_ALL,))[R2_ADMITS_ALL] == "fails"
 
 
 # -- O. a function handed to the scene closes over a value of the enclosing scene -------------------
@@ -287,7 +292,8 @@ def test_captured_base_value_is_not_passed_at_a_fixed_size(method):
 
 COLUMNS_R2 = ("adv-cols-complete-in-n", "adv-cols-swapped", "adv-cols-range-r", "adv-cols-r23", "adv-cols-r2-trace",
               "adv-cols-r2-phi", "adv-cols-r2-phi-sign", "adv-point-minusP-flow", "adv-point-off-TV",
-              "adv-point-scaled", "adv-point-rotated-r2", "adv-point-magnetic-reflected")
+              "adv-point-scaled", "adv-point-rotated-r2", "adv-point-magnetic-reflected", "adv-op-point-flow",
+              "adv-op-point-grad")
 COLUMNS_R1 = ("adv-cols-r1-e2", "adv-cols-r1-xxt", "adv-cols-r1-pt")
 SQUARE_R_N = ("adv-last-sign", "adv-square-xtp-zero", "adv-square-pxt-sym", "adv-last-lead-one")
 
@@ -295,7 +301,7 @@ SQUARE_R_N = ("adv-last-sign", "adv-square-xtp-zero", "adv-square-pxt-sym", "adv
 def test_column_letters_misuse_is_never_proved():
     v = verdicts("columns_one_r.py", "free")
     assert all(v[c] not in PASSING for c in COLUMNS_R2 + COLUMNS_R1), v
-    assert v["adv-point-reflected-control"] == "proved", v
+    assert v["adv-point-reflected-control"] == "proved" and v["adv-op-point-flow-control"] == "proved", v
     v = verdicts("columns_square.py", "free")
     assert all(v[c] not in PASSING for c in SQUARE_R_N + ("adv-last-every-r",)), v
 
