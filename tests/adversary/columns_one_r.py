@@ -154,3 +154,16 @@ def op_point_flow_control(s):
     """True: a control that the free method proves."""
     t = twisted.at_point(s, s.X, -s.P)
     return {"r": t.dirac_flow(H_operator).Xdot + s.dirac_flow(H_operator).Xdot}
+
+
+@claim("adv-cols-nonzero-vanishes", kind="id", sizes=R2, expect="nonzero", statement="E1^T E2 does not vanish")
+def nonzero_vanishes(s):
+    """False: a statement of nonvanishing whose value is 0 (E1 and E2 are orthogonal)."""
+    return {"r": s.tr(E(s, 0).T @ E(s, 1))}
+
+
+@claim("adv-cols-nonzero-at-n2", kind="id", sizes=R2, expect="nonzero", statement="e1 e1^T + e2 e2^T - I_n does not vanish")
+def nonzero_at_n2(s):
+    """False at n = 2 (it vanishes there), true for n >= 3."""
+    e1, e2 = s.X @ E(s, 0), s.X @ E(s, 1)
+    return {"r": e1 @ e1.T + e2 @ e2.T - s.In}

@@ -336,6 +336,19 @@ def test_column_letters_misuse_fails_at_a_fixed_size(method):
     assert v["adv-last-every-r"] == "fails", v
 
 
+NONZERO_FALSE = ("adv-cols-nonzero-vanishes", "adv-cols-nonzero-at-n2")
+
+
+def test_false_nonvanishing_with_columns_is_not_passed():
+    """Statements of nonvanishing that are false at r = 2 (at every n, resp. at n = 2): the free method
+    leaves them undecided, every fixed-size method says fails at (2,2)."""
+    v = verdicts("columns_one_r.py", "free", ids=NONZERO_FALSE)
+    assert all(v[c] not in PASSING for c in NONZERO_FALSE), v
+    for method in ("exact", "modular", "float"):
+        v = verdicts("columns_one_r.py", method, size="2,2", ids=NONZERO_FALSE)
+        assert all(v[c] == "fails" for c in NONZERO_FALSE), (method, v)
+
+
 def test_check_rejects_a_free_proof_grafted_onto_another_claim(tmp_path):
     """The certificate of the proved control, copied into the record of a false claim at r = 2 with the
     verdict proved: `check` re-runs free records and rejects it."""
