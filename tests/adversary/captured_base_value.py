@@ -24,3 +24,22 @@ def captured_at_point(s):
     t = twisted.at_point(s, -s.X, -s.P)
     gX, _gP = t.gradient(lambda u: u.tr(s.P.T @ u.X))
     return {"r": gX + s.P}
+
+
+@claim("adv-captured-point-value", kind="id", sizes=ALL,
+       statement="at (-X, -P), grad_X tr(t.P^T u.X) = P, t.P = -P the point's momentum")
+def captured_point_value(s):
+    """False under either reading: t.P = -P as a fixed matrix gives grad_X = -P; as the point scene's own
+    variable (the function tr(u.P^T u.X) at the point) it gives the point's P, -P as well."""
+    t = twisted.at_point(s, -s.X, -s.P)
+    gX, _gP = t.gradient(lambda u: u.tr(t.P.T @ u.X))
+    return {"r": gX - s.P}
+
+
+@claim("adv-captured-scalar", kind="id", sizes=ALL,
+       statement="grad_P of c tr(u.X^T A u.X), c = tr(P^T P) of the base point, is 2 tr(X^T A X) P")
+def captured_scalar(s):
+    """False for c the number it is (the function does not depend on u.P: grad_P = 0)."""
+    c = s.tr(s.P.T @ s.P)
+    _gX, gP = s.gradient(lambda u: c * u.tr(u.X.T @ u.A @ u.X))
+    return {"r": gP - 2 * s.tr(s.X.T @ s.A @ s.X) * s.P}

@@ -281,7 +281,7 @@ def test_r_is_n_with_sizes_r_less_than_n_fails_at_its_sizes(method):
 
 # -- O. a function handed to the scene closes over a value of the enclosing scene -------------------
 
-CAPTURED = ("adv-captured-grad", "adv-captured-at-point")
+CAPTURED = ("adv-captured-grad", "adv-captured-at-point", "adv-captured-point-value", "adv-captured-scalar")
 
 
 @pytest.mark.xfail(strict=True, reason=(
@@ -289,8 +289,10 @@ CAPTURED = ("adv-captured-grad", "adv-captured-at-point")
     "scene's P is traced with that node inside its body; the free scene evaluates it with the base scene's "
     "letter P, which is the same letter as the function's own variable P, so the captured matrix is "
     "differentiated (grad_P tr(P^T u.X) = X) and substituted at another point (P -> -P); read as a fixed "
-    "matrix, grad_P = 0 and grad_X = P everywhere; every fixed-size method stops with an error on these "
-    "claims, so 'proved (all n, r)' is the only verdict they get"))
+    "matrix, grad_P = 0 and grad_X = P everywhere (a captured scalar c = tr(P^T P) is differentiated the same "
+    "way); adv-captured-point-value (t.P of the scene at (-X, -P) inside t.gradient's function) is false "
+    "under either reading and proved; every fixed-size method stops with an error on these claims, so "
+    "'proved (all n, r)' is the only verdict they get"))
 def test_captured_base_value_is_not_proved():
     v = verdicts("captured_base_value.py", "free")
     assert all(v[c] not in PASSING for c in CAPTURED), v
