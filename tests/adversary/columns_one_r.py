@@ -167,3 +167,22 @@ def nonzero_at_n2(s):
     """False at n = 2 (it vanishes there), true for n >= 3."""
     e1, e2 = s.X @ E(s, 0), s.X @ E(s, 1)
     return {"r": e1 @ e1.T + e2 @ e2.T - s.In}
+
+
+@claim("adv-mix-er-e2", kind="id", sizes=R2, statement="E2^T E_r = 0 at r = 2")
+def mix_er_e2(s):
+    """False: at r = 2 the last column E_r is E2."""
+    return {"r": s.tr(E(s, 1).T @ twisted.last_basis_vector(s))}
+
+
+@claim("adv-mix-lead-e2", kind="id", sizes=R2, statement="E_<r E_<r^T = E2 E2^T at r = 2")
+def mix_lead_e2(s):
+    """False: at r = 2, E_<r = E1."""
+    L = twisted.leading_basis_vectors(s)
+    return {"r": L @ L.T - E(s, 1) @ E(s, 1).T}
+
+
+@claim("adv-mix-er-e1-r1", kind="id", sizes=R1, statement="E_r^T E1 = 0 at r = 1")
+def mix_er_e1_r1(s):
+    """False: at r = 1, E_r = E1."""
+    return {"r": s.tr(twisted.last_basis_vector(s).T @ E(s, 0))}
