@@ -46,3 +46,12 @@ def r2_admits_all(s):
     from stiefelsym import twisted
     E1, E2 = twisted.basis_vector(s, 0), twisted.basis_vector(s, 1)
     return {"r": E1 @ E1.T + E2 @ E2.T - s.Ir}
+
+
+@claim("adv-square-set-while-traced", kind="id", sizes=admissible(n_max=4, n_min=2), statement="X X^T = I_n")
+def square_set_while_traced(s):
+    """Stated for every r <= n (a consistent spec); the claim's code declares r = n on its own registered claim
+    (frozen, but object.__setattr__) while it is traced, which is before the free method reads r_is_n."""
+    c = square_set_while_traced.claim
+    object.__setattr__(c, "sizes", dataclasses.replace(c.sizes, r_is_n=True))
+    return {"r": s.X @ s.X.T - s.In}
