@@ -17,3 +17,10 @@ def pole_n4_phi(s):
     """Undefined at n = 4, one of the claim's sizes."""
     c = s.tr(s.In) - 4
     return {"r": s.Phi * (c / c) - s.Phi}
+
+
+@claim("adv-pole-r-eq-n", kind="id", sizes=admissible(n_max=5), statement="X (c / c) = X for c = tr(I_n) - tr(I_r)")
+def pole_r_eq_n(s):
+    """Undefined at every r = n among the claim's sizes; the probe's size (3,1) has c = 2."""
+    c = s.tr(s.In) - s.tr(s.Ir)
+    return {"r": s.X * (c / c) - s.X}

@@ -373,22 +373,27 @@ def test_check_rejects_a_free_proof_grafted_onto_another_claim(tmp_path):
 # -- Q. a scalar that vanishes at one stated size divides the residual ------------------------------
 
 POLE = ("adv-pole-n4", "adv-pole-n4-phi")
+#: c = tr(I_n) - tr(I_r): 0 at every r = n, 2 at the probe's size (3,1)
+POLE_RN = "adv-pole-r-eq-n"
 
 
 @pytest.mark.xfail(strict=True, reason=(
     "the free algebra's coefficients are rational functions of n, r, so (c*c)/c - c with c = tr(I_n) - 4 is 0 "
     "for every n, and probe_divisions evaluates the claim at ONE size (the first with n >= 3: (3,1), where c = -1); "
     "the claim's own sizes include n = 4, where it is 0/0 (exact: fails with nan; modular, float: inconclusive), "
-    "yet the free verdict is 'proved' for every n, r"))
+    "yet the free verdict is 'proved' for every n, r (likewise X (c/c) - X with c = tr(I_n) - tr(I_r), 0/0 at "
+    "every r = n)"))
 def test_division_by_a_scalar_vanishing_at_a_stated_size_is_not_proved():
     v = verdicts("division_at_one_size.py", "free")
-    assert all(v[c] not in PASSING for c in POLE), v
+    assert all(v[c] not in PASSING for c in POLE + (POLE_RN,)), v
 
 
 @pytest.mark.parametrize("method", ["exact", "modular", "float"])
 def test_division_by_zero_at_n4_is_not_passed(method):
-    v = verdicts("division_at_one_size.py", method, size="4,2")
+    v = verdicts("division_at_one_size.py", method, size="4,2", ids=POLE)
     assert all(v[c] not in PASSING for c in POLE), v
+    v = verdicts("division_at_one_size.py", method, size="3,3", ids=(POLE_RN,))
+    assert v[POLE_RN] not in PASSING, v
 
 
 # -- R. the independent checker: coefficients with a pole where the hypothesis holds -----------------
