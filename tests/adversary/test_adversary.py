@@ -436,3 +436,20 @@ def test_checker_rejects_a_certificate_with_a_pole_where_its_hypothesis_holds(ce
     r = subprocess.run([sys.executable, "-m", "stiefelsym.certificate_check", str(path)], cwd=ROOT,
                        capture_output=True, text=True, timeout=300)
     assert r.returncode == 1, r.stdout
+
+
+# -- S. a true claim whose free certificate is rejected (operator letter, columns, another point) -----
+
+@pytest.mark.xfail(strict=True, reason=(
+    "the magnetic flow of tr(AA(X E1 E2^T P^T) Phi) + tr(E1^T X^T A X E1) at the rotated point (XJ, PJ), r = 2, "
+    "minus the free scene's own normal form of it: the free method reduces the residual to 0 but its "
+    "certificate does not expand to the residual (the checker finds a term AA(P*E2*E2t*Xt) ... tr(E1*E1t)^2 "
+    "tr(E1*E2t)^2 with coefficient -1 against 0), so the verdict is error; the operator letters of the normal "
+    "form keep unreduced arguments (AA(P E1 E2^T E2 E1^T ... X^T)); every fixed-size method checks the claim"))
+def test_true_claim_with_operator_columns_at_a_point_is_not_an_error():
+    assert _v("certificate_operator_columns_point.py", "free", "adv-cert-operator-columns-point") in ("proved", "undecided")
+
+
+@pytest.mark.parametrize("method", ["exact", "modular"])
+def test_true_claim_with_operator_columns_at_a_point_is_checked(method):
+    assert _v("certificate_operator_columns_point.py", method, "adv-cert-operator-columns-point") in PASSING
