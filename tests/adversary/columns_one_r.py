@@ -186,3 +186,27 @@ def mix_lead_e2(s):
 def mix_er_e1_r1(s):
     """False: at r = 1, E_r = E1."""
     return {"r": s.tr(twisted.last_basis_vector(s).T @ E(s, 0))}
+
+
+@claim("adv-r1-pxt", kind="id", sizes=R1, statement="P X^T = X P^T at r = 1")
+def r1_pxt(s):
+    """False: Phi does not vanish at r = 1."""
+    return {"r": s.P @ s.X.T - s.X @ s.P.T}
+
+
+@claim("adv-r1-xxtp", kind="id", sizes=R1, statement="X X^T P = P at r = 1")
+def r1_xxtp(s):
+    """False for n >= 2 (X X^T is a projector of rank 1)."""
+    return {"r": s.X @ s.X.T @ s.P - s.P}
+
+
+@claim("adv-r1-commute", kind="id", sizes=R1, statement="A P P^T = P P^T A at r = 1")
+def r1_commute(s):
+    """False: only the r x r words are scalars at r = 1, not the n x n ones."""
+    return {"r": s.A @ s.P @ s.P.T - s.P @ s.P.T @ s.A}
+
+
+@claim("adv-r1-scalar-control", kind="id", sizes=R1, statement="X^T A P = P^T A X at r = 1")
+def r1_scalar_control(s):
+    """True at r = 1 (a 1 x 1 matrix is its transpose): a control that the free method proves."""
+    return {"r": s.X.T @ s.A @ s.P - s.P.T @ s.A @ s.X}

@@ -312,7 +312,8 @@ COLUMNS_R2 = ("adv-cols-complete-in-n", "adv-cols-swapped", "adv-cols-range-r", 
               "adv-cols-r2-phi", "adv-cols-r2-phi-sign", "adv-point-minusP-flow", "adv-point-off-TV",
               "adv-point-scaled", "adv-point-rotated-r2", "adv-point-magnetic-reflected", "adv-op-point-flow",
               "adv-op-point-grad", "adv-mix-er-e2", "adv-mix-lead-e2")
-COLUMNS_R1 = ("adv-cols-r1-e2", "adv-cols-r1-xxt", "adv-cols-r1-pt", "adv-mix-er-e1-r1")
+COLUMNS_R1 = ("adv-cols-r1-e2", "adv-cols-r1-xxt", "adv-cols-r1-pt", "adv-mix-er-e1-r1", "adv-r1-pxt", "adv-r1-xxtp",
+              "adv-r1-commute")
 SQUARE_R_N = ("adv-last-sign", "adv-square-xtp-zero", "adv-square-pxt-sym", "adv-last-lead-one")
 
 
@@ -320,6 +321,7 @@ def test_column_letters_misuse_is_never_proved():
     v = verdicts("columns_one_r.py", "free")
     assert all(v[c] not in PASSING for c in COLUMNS_R2 + COLUMNS_R1), v
     assert v["adv-point-reflected-control"] == "proved" and v["adv-op-point-flow-control"] == "proved", v
+    assert v["adv-r1-scalar-control"] == "proved", v
     v = verdicts("columns_square.py", "free")
     assert all(v[c] not in PASSING for c in SQUARE_R_N + ("adv-last-every-r",)), v
 
@@ -334,6 +336,7 @@ def test_column_letters_misuse_fails_at_a_fixed_size(method):
     v = verdicts("columns_one_r.py", method, size="3,1", ids=COLUMNS_R1 + ("adv-cols-range-r",))
     assert v["adv-cols-r1-xxt"] == "fails" and v["adv-cols-r1-pt"] == "fails" and v["adv-mix-er-e1-r1"] == "fails", v
     assert v["adv-cols-r1-e2"] not in PASSING and v["adv-cols-range-r"] not in PASSING, v
+    assert all(v[c] == "fails" for c in ("adv-r1-pxt", "adv-r1-xxtp", "adv-r1-commute")), v
     v = verdicts("columns_square.py", method, size="3,3", ids=SQUARE_R_N)
     assert all(v[c] == "fails" for c in SQUARE_R_N), v
     v = verdicts("columns_square.py", method, size="3,2", ids=("adv-last-every-r",))
