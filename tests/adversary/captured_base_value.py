@@ -1,0 +1,45 @@
+"""A function handed to the scene (a Hamiltonian for s.gradient, for the scene at another point) that
+closes over a value of the enclosing scene (its P).  The free scene's letters X, P are shared by every
+scene, so the captured P is taken for the function's own variable P: its gradient in P is X, and at
+another point (-X, -P) the captured P is substituted by -P.  Read as the function of u it is, with P a
+fixed matrix, grad_P tr(P^T u.X) = 0 and grad_X = P at every point.  The fixed-size methods do not
+evaluate such a function (they stop with an error), so the free method is alone in deciding it."""
+from stiefelsym import admissible, claim
+from stiefelsym import twisted
+
+ALL = admissible(n_max=4, n_min=2)
+
+
+@claim("adv-captured-grad", kind="id", sizes=ALL, statement="grad_P tr(P^T u.X) = X, P the base point's")
+def captured_grad(s):
+    """False for the captured P as a constant (grad_P = 0)."""
+    gX, gP = s.gradient(lambda u: u.tr(s.P.T @ u.X))
+    return {"r": gP - s.X}
+
+
+@claim("adv-captured-at-point", kind="id", sizes=ALL,
+       statement="at (-X, -P), grad_X tr(P^T u.X) = -P, P the base point's")
+def captured_at_point(s):
+    """False for the captured P as a constant (grad_X = P at every point)."""
+    t = twisted.at_point(s, -s.X, -s.P)
+    gX, _gP = t.gradient(lambda u: u.tr(s.P.T @ u.X))
+    return {"r": gX + s.P}
+
+
+@claim("adv-captured-point-value", kind="id", sizes=ALL,
+       statement="at (-X, -P), grad_X tr(t.P^T u.X) = P, t.P = -P the point's momentum")
+def captured_point_value(s):
+    """False under either reading: t.P = -P as a fixed matrix gives grad_X = -P; as the point scene's own
+    variable (the function tr(u.P^T u.X) at the point) it gives the point's P, -P as well."""
+    t = twisted.at_point(s, -s.X, -s.P)
+    gX, _gP = t.gradient(lambda u: u.tr(t.P.T @ u.X))
+    return {"r": gX - s.P}
+
+
+@claim("adv-captured-scalar", kind="id", sizes=ALL,
+       statement="grad_P of c tr(u.X^T A u.X), c = tr(P^T P) of the base point, is 2 tr(X^T A X) P")
+def captured_scalar(s):
+    """False for c the number it is (the function does not depend on u.P: grad_P = 0)."""
+    c = s.tr(s.P.T @ s.P)
+    _gX, gP = s.gradient(lambda u: c * u.tr(u.X.T @ u.A @ u.X))
+    return {"r": gP - 2 * s.tr(s.X.T @ s.A @ s.X) * s.P}
