@@ -15,10 +15,10 @@ verdict is ``proved``; a certificate it rejects makes the verdict ``error``.
 from __future__ import annotations
 
 import time
-from typing import Callable
+from typing import Any, Callable
 
 from .certificate_check import check_certificate
-from .claims import Claim, Count, Rank
+from .claims import Claim, Count, Rank, Size
 from .methods import _base_result, division_probe, _entries, _short, call_claim
 from .results import CheckOutcome, Result
 from .free import FreeScene, FreeSolveError, NeedsCoordinates, RewritingError
@@ -43,11 +43,21 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
 
     if claim.expect == "nonzero":
         return undecided("rewriting proves vanishing only; a nonvanishing statement needs a witness")
+    # the hypotheses that hold at one r only (the columns of R^r at r = 1, 2; X X^T = I_n at r = n)
+    # are taken from the statement's declaration, read once here, and only when every size the
+    # statement admits, and every size it lists, has that r
+    spec = claim.sizes
+    columns, square = fixed_r(claim), bool(getattr(spec, "r_is_n", False))
+    if columns or square:
+        off = sizes_off_r(spec, columns, square)
+        if off is not None:
+            return undecided(f"the statement declares {'r = n' if square else f'r = {columns}'} but admits "
+                             f"(n, r) = ({off.n},{off.r}): the hypotheses that hold there only are not used; "
+                             "decided by the fixed-size methods")
     try:
         # a claim stated at one r = 1 or 2 alone may name the columns E_1, ..., E_r of R^r (their sum
         # E_1E_1^T + ... + E_rE_r^T = I_r is then a hypothesis)
-        scene = FreeScene(realization=claim.realization, lazy=True, columns=fixed_r(claim),
-                          square=bool(getattr(claim.sizes, "r_is_n", False)))
+        scene = FreeScene(realization=claim.realization, lazy=True, columns=columns, square=square)
     except NeedsCoordinates as exc:
         return undecided(f"needs coordinates: {exc.what}; decided by the fixed-size methods")
 
@@ -182,6 +192,25 @@ def fixed_r(claim: Claim) -> int:
     if lo is None or lo != hi or lo not in (1, 2) or any(z.r != lo for z in spec):
         return 0
     return lo
+
+
+#: sizes n <= this at which a declaration of one r is checked against the statement's admits()
+R_CHECK_N = 16
+
+
+def sizes_off_r(spec: Any, columns: int, square: bool) -> Size | None:
+    """A size that the statement admits or lists although its declaration fixes r (r = columns, or
+    r = n), or None: the declaration is believed only when the sizes say the same."""
+    def off(n: int, r: int) -> bool:
+        return (square and r != n) or (columns and r != columns)
+    for z in spec:
+        if off(z.n, z.r):
+            return Size(z.n, z.r)
+    for n in range(1, R_CHECK_N + 1):
+        for r in range(1, n + 1):
+            if off(n, r) and spec.admits(n, r):
+                return Size(n, r)
+    return None
 
 
 def evaluation_needs_text(claim: Claim, func: Callable, refusal: str) -> str:

@@ -95,6 +95,22 @@ DIMENSIONS[LEADING] = DIMENSIONS["r"] - 1
 Coef = Any  # a symengine expression
 
 
+def divisor(k: Coef) -> Coef:
+    """k, as a divisor: refused (recorded) when it depends on the sizes n, r and is not visibly
+    positive at every size (a polynomial in n, r with positive coefficients): a division by n − 4 or
+    by n − r holds for all n, r as a rational function, but is 0/0 at n = 4 or at r = n, so no
+    statement for every n, r follows from it."""
+    syms = getattr(k, "free_symbols", None)
+    if not syms or not any(d in syms for d in (DIMENSIONS["n"], DIMENSIONS["r"])):
+        return k
+    sizes = {DIMENSIONS["n"], DIMENSIONS["r"]}
+    for mono, c in se.expand(k).as_coefficients_dict().items():
+        if not (c.is_Number and c > 0) or not set(getattr(mono, "free_symbols", ())) <= sizes:
+            raise refuse(f"a division by {k}, an expression in the sizes that may vanish at some n, r")
+    return k
+
+
+
 class Letter(str):
     """A matrix letter: name (its identity), index types, adjoint partner and sign, LaTeX."""
 
@@ -557,11 +573,11 @@ class NCPoly:
 
     def __truediv__(self, o: Any):
         if isinstance(o, NCPoly):
-            return self._scale(se.Integer(1) / o.scalar_value())
+            return self._scale(se.Integer(1) / divisor(o.scalar_value()))
         k = as_coef(o)
         if k is None:
             return NotImplemented
-        return self._scale(se.Integer(1) / k)
+        return self._scale(se.Integer(1) / divisor(k))
 
     def _mul_poly(self, o: "NCPoly") -> "NCPoly":
         if self.row == SCALAR and self.col == SCALAR:
