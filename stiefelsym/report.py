@@ -941,8 +941,13 @@ def headline(claims: list[ClaimResults]) -> tuple[str, list[ClaimResults]]:
     free = [c for c in claims if any(r.n is None and r.verdict == "proved" for r in c.printed)]
     corrected_free = [c for c in claims
                       if any(r.n is None and r.verdict == "proved" for vs in c.variants.values() for r in vs)]
+    one_r = [c for c in free if any(r.n is None and r.verdict == "proved" and free_scope(r) != "all n, r"
+                                    for r in c.printed)]
+    at_once = (f"{len(free)} of them proved for every n and r at once" if not one_r else
+               f"{len(free)} of them proved for every size at once: {len(free) - len(one_r)} for every n and r, "
+               f"{len(one_r)} stated at one r for every n")
     text = (f"Of the paper's {len(claims)} checkable statements, {len(claims) - len(errata)} hold as printed at "
-            f"every size computed ({len(free)} of them proved for every n and r at once), and {len(errata)} "
+            f"every size computed ({at_once}), and {len(errata)} "
             f"fail as printed: each is an erratum with an exact witness, and where a correction is registered "
             f"it was verified ({len(corrected_free)} corrections proved for every n and r).")
     return text, errata
@@ -1047,7 +1052,7 @@ def _tex_section_table(claims: list[ClaimResults], meta: dict[str, Any]) -> list
     """The referee's summary: one row per section of the paper."""
     out = _toc_section("Summary")
     out += [tex_escape("Per section of the paper: its claims; those proved for every n and r at once "
-                       "(dimension-free, as printed); those that hold as printed at every size computed "
+                       "(dimension-free, as printed; for a statement made at one r, every n at that r); those that hold as printed at every size computed "
                        "(proved, or checked at random exact points); those that fail as printed (the errata); "
                        "and verdicts the catalog does not expect.  Each claim follows, by section."), "",
             r"\begin{center}\small", r"\begin{tabular}{@{}P{6.2cm}rrrrr@{}}", r"\toprule",
@@ -1072,8 +1077,8 @@ def _tex_claim_brief(c: ClaimResults) -> list[str]:
     free = next((r for r in c.printed if r.n is None), None)
     lines = []
     if free is not None:
-        lines.append("all n, r (dimension-free): " + (free.verdict if free.verdict == "proved"
-                                                      else f"{free.verdict} ({_brief_reason(free.message)})"))
+        lines.append(f"{free_scope(free)} (dimension-free): proved" if free.verdict == "proved" else
+                     f"all n, r (dimension-free): {free.verdict} ({_brief_reason(free.message)})")
     _, phrases = correction_summary([r for r in c.printed if r.n is not None], planned_sizes(c))
     lines += phrases
     if c.failures:
