@@ -107,9 +107,9 @@ def check_certificate(data: Any) -> CheckReport:
     if R1_ONLY in used and (_mentions(entries, {"E2", "E2t"}) or any("E2" in str(h) for h in used)):  # r = 1: no E_2
         return CheckReport(False, "E1E1t (r = 1) with a second column E2", seconds=time.perf_counter() - t0)
     n_, r_ = se.Symbol("n"), se.Symbol("r")   # a hypothesis of one r: every coefficient finite at that r
-    for h, at in ((R1_ONLY, {r_: 1}), (R2_ONLY, {r_: 2}), (SQUARE, {r_: n_})):
+    for h, where in ((R1_ONLY, {r_: 1}), (R2_ONLY, {r_: 2}), (SQUARE, {r_: n_})):
         bad = [t["coef"] for e in entries for t in e["residual"] + e["terms"] if h in used
-               and se.expand(coefficient(t["coef"]).as_numer_denom()[1].subs(at)) == 0]
+               and se.expand(coefficient(t["coef"]).as_numer_denom()[1].subs(where)) == 0]
         if bad:
             return CheckReport(False, f"the coefficient {bad[0]} has a pole where {h} holds", seconds=time.perf_counter() - t0)
     return CheckReport(True, f"{len(entries)} entries, {terms} terms: every certificate expands to its residual{at}",
