@@ -685,11 +685,16 @@ class Mat:
         if isinstance(out, np.ndarray):
             if out.ndim == 1:
                 out = out.reshape(1, -1) if isinstance(idx[0], (int, np.integer)) else out.reshape(-1, 1)
-            full = [isinstance(i, slice) and i == slice(None) for i in idx]
-            tags = tuple(t if f else UNTYPED for t, f in zip(self._tags, full))
-            return Mat._wrap(out.copy(), self._field, tags, self._tracker,
-                             self._coords or (self._tracker is None and indexed_by_Rn(self._tags)))
+            return Mat._wrap(out.copy(), self._field, self._block_tags(idx), self._tracker, self._block_coords())
         return out
+
+    def _block_tags(self, idx: tuple) -> tuple:
+        """The spaces of a block: a side read whole keeps its space, a part of it is untyped."""
+        full = [isinstance(i, slice) and i == slice(None) for i in idx]
+        return tuple(t if f else UNTYPED for t, f in zip(self._tags, full))
+
+    def _block_coords(self) -> bool:
+        return self._coords or (self._tracker is None and indexed_by_Rn(self._tags))
 
     def _take_native(self, idx: tuple) -> Any:
         """``self[idx]`` (integers and slices) read from the native storage, without building the
@@ -707,10 +712,7 @@ class Mat:
         sub = NotImplemented if take is None else take(self._n, np.atleast_1d(rows), np.atleast_1d(cols))
         if sub is NotImplemented:
             return NotImplemented
-        full = [isinstance(i, slice) and i == slice(None) for i in idx]
-        tags = tuple(t if f else UNTYPED for t, f in zip(self._tags, full))
-        return Mat._wrap_native(sub, self._field, tags, self._tracker,
-                                self._coords or (self._tracker is None and indexed_by_Rn(self._tags)))
+        return Mat._wrap_native(sub, self._field, self._block_tags(idx), self._tracker, self._block_coords())
 
     def __iter__(self):
         raise TypeError("a matrix is not iterable: read entries as M[i, j]")

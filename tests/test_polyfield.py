@@ -329,3 +329,19 @@ def test_a_native_read_that_returns_the_wrong_entry_is_caught(monkeypatch):
 
 
 native_entry = PolyBackend.entry
+
+
+def first_row_unit(s):
+    row = s.X[0:1, :]           # a block read from the native storage
+    return {"r": s.tr(row @ row.T) - 1}
+
+
+@pytest.mark.parametrize("method", ["exact", "rational", "modular", "float"])
+def test_a_row_read_as_a_block_is_not_taken_for_a_column(method):
+    """|first row of X| = 1 holds at r = n only (the columns of X are orthonormal, not its rows): a block
+    read natively must give the row, whatever the method."""
+    from stiefelsym.claims import Size
+    from stiefelsym.runner import run_one
+    c = Claim(id="first-row-unit", paper=(), kind="id", section="test", func=first_row_unit, sizes=admissible(4))
+    assert run_one(c, Size(3, 2), method, 0).verdict == "fails"
+    assert run_one(c, Size(3, 3), method, 0).verdict in ("proved", "checked", "numeric")
