@@ -856,6 +856,12 @@ class PointLoan:
         return out
 
 
+    def forget(self, claim_id: str) -> None:
+        """Drop the points kept for one claim (its mutants are done)."""
+        for key in [k for k in self._points if k[0] == claim_id]:
+            del self._points[key]
+
+
 def _field_state(f: Any) -> tuple | None:
     """The mutable record of a field (a paired field's degree markers: the denominators and constants
     met, and the constants it made), copied; None for a field that keeps none."""

@@ -1064,13 +1064,6 @@ def classify(outcome: MutantOutcome, baseline: MutantOutcome) -> MutantOutcome:
 _WORK: dict[str, Any] = {}
 
 
-def _work(task: tuple[int, int]) -> list[Cell]:
-    ci, mi = task
-    claim, plan, muts = _WORK["claims"][ci]
-    m = muts[mi]
-    return _run_cells(claim, plan, _WORK["seed"], m.func, m.description)
-
-
 def _select(muts: list[Mutant], limit: int | None, only: Iterable[int] | None) -> list[Mutant]:
     if only is not None:
         wanted = set(only)
@@ -1113,7 +1106,7 @@ def _run_mutation(claims, sizes, methods, seed, on_result, limit, only, jobs, lo
     if seed < 0:
         raise ValueError("the seed must be a non-negative integer")
     report = MutationReport()
-    work: list[tuple[Claim, list, list[Mutant]]] = []
+    work: list[tuple[Claim, list]] = []
     for claim in claims:
         if sizes is None:
             chosen = mutation_sizes(claim)
@@ -1122,70 +1115,105 @@ def _run_mutation(claims, sizes, methods, seed, on_result, limit, only, jobs, lo
         cm = ClaimMutation(claim=claim.id, paper=list(claim.paper), section=claim.section, kind=claim.kind,
                            sizes=[(s.n, s.r) for s in chosen], methods=list(methods))
         report.claims.append(cm)
-        muts = mutants(claim)
-        cm.mutant_count = len(muts)
-        plan = cells(claim, chosen, methods)
-        if claim.expect == "fails":
-            cm.skipped = ("the printed statement fails at every size (a documented erratum): a mutation "
-                          "analysis needs a true statement")
-        elif not muts:
-            cm.skipped = "the claim's source is not available, or offers no mutation site"
-        elif not plan:
-            cm.skipped = "no size at which the printed statement is expected to hold, and no method to run"
-        work.append((claim, plan, _select(muts, limit, only) if not cm.skipped else []))
+        work.append((claim, cells(claim, chosen, methods)))
 
-    # the baselines first (a mutant is classified against them)
-    for (claim, plan, muts), cm in zip(work, report.claims):
-        if cm.skipped:
-            continue
-        t0 = time.perf_counter()
-        loan.recording = True          # the baseline's points are kept for its mutants
-        try:
-            cm.baseline = MutantOutcome(claim.id, None, "the claim as printed", None, "", "",
-                                        _run_cells(claim, plan, seed, None, None), "baseline")
-        finally:
-            loan.recording = False
-        cm.seconds += time.perf_counter() - t0
-        if on_result is not None:
-            on_result(cm.baseline)
-
-    tasks = [(ci, mi) for ci, (_, _, muts) in enumerate(work) for mi in range(len(muts))]
+    # one task per claim (its mutants generated, its printed claim run first, then its mutants, in one
+    # process: the mutants borrow the printed claim's points there); the largest first, so that the
+    # workers finish together; the results are taken in the catalog's order whatever the schedule
+    order = sorted(range(len(work)), key=lambda ci: -_weight(*work[ci]))
     _WORK.clear()
-    _WORK.update(claims=work, seed=seed)
+    _WORK.update(claims=work, seed=seed, limit=limit, only=only, loan=loan)
+    done: dict[int, _ClaimRun] = {}
+    emitted = 0
     try:
-        for (ci, mi), (cells_, secs) in zip(tasks, _map(tasks, jobs)):
-            claim, _, muts = work[ci]
-            m, cm = muts[mi], report.claims[ci]
-            o = MutantOutcome(claim.id, m.index, m.description, m.lineno, m.operator, m.source, cells_)
-            classify(o, cm.baseline)
-            cm.mutants.append(o)
-            cm.seconds += secs
-            if on_result is not None:
-                on_result(o)
+        for ci, run in zip(order, _map(order, jobs)):
+            done[ci] = run
+            while emitted in done:
+                _take(report.claims[emitted], done.pop(emitted), on_result)
+                emitted += 1
     finally:
         _WORK.clear()
-    for cm in report.claims:
-        cm.seconds = round(cm.seconds, 2)
     return report
 
 
-def _timed(task: tuple[int, int]) -> tuple[list[Cell], float]:
+@dataclass
+class _ClaimRun:
+    """What a worker sends back of one claim: its mutants' count, why it was skipped, its outcomes."""
+    mutant_count: int
+    skipped: str
+    baseline: MutantOutcome | None
+    mutants: list[MutantOutcome]
+    seconds: float
+
+
+def _weight(claim: Claim, plan: list) -> int:
+    """A cheap estimate of a claim's share of the work (its source's length times its cells), to
+    schedule the largest first; no result depends on it."""
+    if claim.expect == "fails" or not plan:
+        return 0
+    try:
+        size = len(inspect.getsource(claim.func))
+    except (OSError, TypeError):
+        size = 0
+    return size * len(plan)
+
+
+def _take(cm: ClaimMutation, run: _ClaimRun, on_result: Callable[[MutantOutcome], None] | None) -> None:
+    cm.mutant_count, cm.skipped, cm.baseline, cm.mutants = run.mutant_count, run.skipped, run.baseline, run.mutants
+    cm.seconds = round(run.seconds, 2)
+    if on_result is not None and cm.baseline is not None:
+        on_result(cm.baseline)
+        for o in cm.mutants:
+            on_result(o)
+
+
+def _claim_task(ci: int) -> _ClaimRun:
+    """Claim number ci of _WORK: its mutants, the claim as printed (its points kept for the mutants),
+    then every selected mutant, classified against it."""
+    claim, plan = _WORK["claims"][ci]
+    seed, loan = _WORK["seed"], _WORK["loan"]
+    muts = mutants(claim)
+    if claim.expect == "fails":
+        skipped = ("the printed statement fails at every size (a documented erratum): a mutation "
+                   "analysis needs a true statement")
+    elif not muts:
+        skipped = "the claim's source is not available, or offers no mutation site"
+    elif not plan:
+        skipped = "no size at which the printed statement is expected to hold, and no method to run"
+    else:
+        skipped = ""
+    run = _ClaimRun(len(muts), skipped, None, [], 0.0)
+    if skipped:
+        return run
     t0 = time.perf_counter()
-    out = _work(task)
-    return out, time.perf_counter() - t0
+    loan.recording = True          # the baseline's points are kept for its mutants
+    try:
+        run.baseline = MutantOutcome(claim.id, None, "the claim as printed", None, "", "",
+                                     _run_cells(claim, plan, seed, None, None), "baseline")
+    finally:
+        loan.recording = False
+    try:
+        for m in _select(muts, _WORK["limit"], _WORK["only"]):
+            o = MutantOutcome(claim.id, m.index, m.description, m.lineno, m.operator, m.source,
+                              _run_cells(claim, plan, seed, m.func, m.description))
+            run.mutants.append(classify(o, run.baseline))
+    finally:
+        loan.forget(claim.id)      # its points serve no other claim
+    run.seconds = time.perf_counter() - t0
+    return run
 
 
-def _map(tasks: list[tuple[int, int]], jobs: int) -> Iterator[tuple[list[Cell], float]]:
-    """The tasks' cells, in order; in ``jobs`` forked workers when jobs > 1."""
-    if jobs <= 1 or len(tasks) <= 1:
-        for t in tasks:
-            yield _timed(t)
+def _map(order: list[int], jobs: int) -> Iterator[_ClaimRun]:
+    """The claims' runs, in the given order; in ``jobs`` forked workers when jobs > 1."""
+    if jobs <= 1 or len(order) <= 1:
+        for ci in order:
+            yield _claim_task(ci)
         return
     import multiprocessing
     from concurrent.futures import ProcessPoolExecutor
     with ProcessPoolExecutor(max_workers=jobs, mp_context=multiprocessing.get_context("fork")) as ex:
         try:
-            yield from ex.map(_timed, tasks, chunksize=1)
+            yield from ex.map(_claim_task, order, chunksize=1)
         except BaseException:
             ex.shutdown(wait=False, cancel_futures=True)
             raise

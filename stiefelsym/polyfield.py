@@ -189,6 +189,20 @@ class PolyRing:
         D = _merge_max(d1, d2)
         return (n1 * self.den_poly(_minus(D, d1)) + n2 * self.den_poly(_minus(D, d2)), D)
 
+    def rf_sum(self, parts: list):
+        """The sum of rational functions: the numerators over each denominator added pairwise in a
+        balanced tree (a sum of k terms one by one costs O(k²) in sparse polynomial additions), then
+        the groups over their common denominator (the result does not depend on the order)."""
+        groups: dict = {}
+        for n, d in parts:
+            groups.setdefault(d, []).append(n)
+        acc = None
+        for d, ns in groups.items():
+            while len(ns) > 1:
+                ns = [ns[k] + ns[k + 1] if k + 1 < len(ns) else ns[k] for k in range(0, len(ns), 2)]
+            acc = (ns[0], d) if acc is None else self.rf_add(acc, (ns[0], d))
+        return acc
+
     def rf_mul(self, a, b):
         return (a[0] * b[0], _merge_add(a[1], b[1]))
 
@@ -264,12 +278,13 @@ class PolyRing:
                 return (self.ctx.constant(flint.fmpq(int(x.p), int(x.q))), NODEN)
             raise NotRational(f"not a rational number: {x}")
         memo = self.memo
-        if x.is_Add or x.is_Mul:
-            combine = self.rf_add if x.is_Add else self.rf_mul
+        if x.is_Add:
+            return self.rf_sum([memo.get(t) or self._conv(t) for t in x.args])
+        if x.is_Mul:
             acc = None
             for t in x.args:
                 r = memo.get(t) or self._conv(t)
-                acc = r if acc is None else combine(acc, r)
+                acc = r if acc is None else self.rf_mul(acc, r)
             return acc
         if x.is_Pow:
             b, e = x.args

@@ -135,6 +135,49 @@ def _extract(c: Any, tm: tuple, w: tuple) -> tuple[Any, tuple, tuple]:
     return c, out, w
 
 
+#: canonical forms of single terms, (row, col, r, traces, word) -> (the term, [(sign, key), ...]): a term's
+#: form is a sum of ±1 times terms, the same whatever its coefficient (resolving and extracting only
+#: expand and multiply by ±1); letters compare by name, so a hit counts only for the very same letters
+_TERMS: dict = {}
+_TERMS_MAX = 50_000
+
+
+def _letters_of(key: tuple) -> list:
+    tm, w = key
+    return [L for c in tm for L in c] + list(w)
+
+
+def _term_form(row: str, col: str, r: int, tm: tuple, w: tuple) -> list[tuple[int, tuple]]:
+    memo_key = (row, col, r, tm, w)
+    hit = _TERMS.get(memo_key)
+    if hit is not None and all(a is b for a, b in zip(_letters_of(hit[0]), _letters_of((tm, w)))):
+        return hit[1]
+    one = se.Integer(1)
+    terms = _resolve(NCPoly({(tm, w): one}, row, col), column_hypotheses()[COMPLETE[r]], [], r) if r else \
+        [(one, tm, w)]
+    form: list[tuple[int, tuple]] = []
+    for c, tm2, w2 in terms:
+        c, tm2, w2 = _extract(c, tm2, w2)
+        if c != 0:
+            form.append((int(c), (tm2, w2)))
+    if len(_TERMS) >= _TERMS_MAX:
+        _TERMS.clear()
+    _TERMS[memo_key] = ((tm, w), form)
+    return form
+
+
+def canonical_form(p: NCPoly, r: int) -> NCPoly:
+    """The canonical form of :func:`canonical` without its certificate, term by term (remembered)."""
+    out: dict = {}
+    items = list(p.terms.items())
+    # the order of canonical()'s terms: its resolution is a stack (the last term first, each term's
+    # expansion in full before the next), and its extraction keeps that order
+    for (tm, w), c in (reversed(items) if r else items):
+        for s, key in _term_form(p.row, p.col, r, tm, w):
+            out[key] = out[key] + c * s if key in out else c * s
+    return NCPoly(out, p.row, p.col)
+
+
 def canonical(p: NCPoly, r: int) -> tuple[NCPoly, list[CertTerm]]:
     """(q, terms): q the canonical form of p at r = 1 or 2 (every place in ℝʳ resolved, every 1×1 piece
     a trace; r = 0: only the latter), and p − q = Σ terms up to the identity "a 1×1 matrix is its own trace"."""

@@ -29,7 +29,7 @@ from .mat import FreeBackend, FreeDualBackend, entry_of, one_block
 from .rewriting import (_NONZERO_NUMBER_TYPES, _SIMPLE, Certificate, Cofactor, Hypothesis, Order, Reduction,
                         RewritingError, RewritingSystem, SharedMemos, nonzero_terms, simplify_coef)
 from .traces import gradient
-from .columns import COLUMNS, COVECTORS, ER, LEAD, LEADt, ERt, canonical, column_hypotheses
+from .columns import COLUMNS, COVECTORS, ER, LEAD, LEADt, ERt, canonical, canonical_form, column_hypotheses
 
 Function = Callable[[Any], Any]
 
@@ -1041,8 +1041,7 @@ class FreeScene(PaperObjects):
         rules: list = []
         q = p
         for _ in range(self.system.max_depth):
-            c, _cert = canonical(q, self.columns)
-            red = self.system.reduce(c)
+            red = self.system.reduce(canonical_form(q, self.columns))
             rules += [r for r in red.rules if r not in rules]
             if red.normal_form == q:
                 return Reduction(p, red.normal_form, rules)
