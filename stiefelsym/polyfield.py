@@ -32,6 +32,7 @@ import numpy as np
 
 from ._lazy import lazy
 from .fields import DegenerateError, Field, SymbolicBudget
+from .matrix import engine_number_type
 from .native import Backend
 from . import ratmat
 from .denominators import NODEN, _merge_add, _merge_max, _minus  # noqa: F401 (ratmat's too)
@@ -240,7 +241,12 @@ class PolyRing:
         return (n, tuple(out))
 
     def from_se(self, x):
-        """A symengine expression as a reduced rational function (memoized)."""
+        """A symengine expression as a reduced rational function (memoized); a scalar of the backend
+        (:class:`_RF`) of this ring as it is."""
+        if type(x) is _RF:
+            if x.R is self:
+                return self.rf_reduce(x.rf())
+            x = x.to_se()
         try:
             hit = self.memo.get(x)
         except TypeError:      # an unhashable object: not an expression of this field
@@ -679,9 +685,151 @@ def _plain(o) -> bool:
     return isinstance(o, (se.Basic, int, Fraction))
 
 
+@engine_number_type
+class _RF:
+    """A scalar of the exact backend kept in flint: a rational function (numerator, denominator
+    atoms) of one ring, as a trace, a pairing or an entry of a matrix of the backend leaves it.
+
+    Sums, products, quotients and integer powers of such scalars, and with integers and fractions,
+    stay in flint; anything else meets the scalar as its symengine expression (:meth:`to_se`,
+    converted once and remembered by the ring for the way back).  So a scalar computed from
+    entries (a minor, a Plücker coordinate, a bracket's sum) and then put back into a matrix or
+    tested for zero is never converted to symengine and back.  The zero test is exact: the
+    numerator is the zero polynomial."""
+
+    __slots__ = ("R", "n", "d", "v", "s")
+
+    def __init__(self, R: "PolyRing", rf: tuple) -> None:
+        self.R, (self.n, self.d), self.v, self.s = R, rf, R.version, None
+
+    def _symengine_(self):
+        # what symengine sees of it (a symengine operand on the left, se.sympify, se.expand): its
+        # expression, so that symengine computes with the value itself
+        return self.to_se()
+
+    def _sympy_(self):
+        return self.to_se()._sympy_()
+
+    def rf(self) -> tuple:
+        """(numerator, atoms) in the ring's current context."""
+        if self.v != self.R.version:
+            self.n, self.v = self.R.lift(self.n), self.R.version
+        return (self.n, self.d)
+
+    def to_se(self):
+        if self.s is None:
+            self.s = self.R.to_se(self.R.rf_reduce(self.rf()))
+        return self.s
+
+    def is_zero(self) -> bool:
+        return self.n.is_zero()
+
+    def _of(self, o):
+        """o as a rational function of this ring, or None."""
+        t = type(o)
+        if t is _RF:
+            return o.rf() if o.R is self.R else None
+        if t is int or t is Fraction:
+            return (self.R.const(o), NODEN)
+        if isinstance(o, se.Basic):
+            try:
+                return self.R.from_se(o)
+            except NotRational:
+                return None
+        return None
+
+    def _new(self, rf: tuple) -> "_RF":
+        return _RF(self.R, rf)
+
+    def __add__(self, o):
+        b = self._of(o)
+        if b is None:
+            return self.to_se() + o if _plain(o) else NotImplemented
+        return self._new(self.R.rf_add(self.rf(), b))
+
+    __radd__ = __add__
+
+    def __neg__(self):
+        n, d = self.rf()
+        return self._new((-n, d))
+
+    def __pos__(self):
+        return self
+
+    def __sub__(self, o):
+        b = self._of(o)
+        if b is None:
+            return self.to_se() - o if _plain(o) else NotImplemented
+        return self._new(self.R.rf_add(self.rf(), (-b[0], b[1])))
+
+    def __rsub__(self, o):
+        b = self._of(o)
+        if b is None:
+            return o - self.to_se() if _plain(o) else NotImplemented
+        n, d = self.rf()
+        return self._new(self.R.rf_add(b, (-n, d)))
+
+    def __mul__(self, o):
+        b = self._of(o)
+        if b is None:
+            return self.to_se() * o if _plain(o) else NotImplemented
+        return self._new(self.R.rf_mul(self.rf(), b))
+
+    __rmul__ = __mul__
+
+    def _inverse(self, rf: tuple) -> tuple:
+        try:
+            return self.R.rf_inv(rf)
+        except ZeroDivisionError:
+            raise ZeroDivisionError("division by an identically zero expression") from None
+
+    def __truediv__(self, o):
+        b = self._of(o)
+        if b is None:
+            return self.to_se() / o if _plain(o) else NotImplemented
+        return self._new(self.R.rf_mul(self.rf(), self._inverse(b)))
+
+    def __rtruediv__(self, o):
+        b = self._of(o)
+        if b is None:
+            return o / self.to_se() if _plain(o) else NotImplemented
+        return self._new(self.R.rf_mul(b, self._inverse(self.rf())))
+
+    def __pow__(self, k):
+        if type(k) is not int:
+            return self.to_se() ** k
+        n, d = self.rf() if k >= 0 else self._inverse(self.rf())
+        k = abs(k)
+        return self._new((n ** k, tuple((a, m * k) for a, m in d)))
+
+    def __eq__(self, o):
+        b = self._of(o)
+        if b is None:
+            return self.to_se() == o
+        return self.R.rf_add(self.rf(), (-b[0], b[1]))[0].is_zero()
+
+    def __ne__(self, o):
+        return not self == o
+
+    def __hash__(self):
+        return hash(self.to_se())
+
+    def __float__(self):
+        return float(self.to_se())
+
+    def __int__(self):
+        return int(self.to_se())
+
+    def __str__(self):
+        return str(self.to_se())
+
+    def __repr__(self):
+        return f"_RF({self.to_se()})"
+
+
 def _se(x):
     """An entry of a generic matrix as a symengine expression."""
-    return x.to_se() if type(x) is _BigPoly else x
+    return x.to_se() if type(x) is _BigPoly or type(x) is _RF else x
 
 
 # ----------------------------------------------------------------------------- matrices
@@ -820,6 +968,7 @@ class PolyBackend(Backend):
                 v = R.version
                 rfs = [R.from_se(x) for x in a.flat]
         except NotRational:
+            a = np.vectorize(_se, otypes=[object])(a) if a.size else a    # no scalar of the backend in a generic matrix
             if len(R.syms) < MAX_VARS and not R.big:
                 return ObjMat(a.copy())
             # parameters beyond the ring's: entries in the encoded form where they are polynomials
@@ -890,7 +1039,7 @@ class PolyBackend(Backend):
         else:
             s = self._fix(s)
             x, e = s.a[i, j], s.den
-        return R.to_se(R.rf_reduce((x, e)) if e else (x, NODEN))
+        return _RF(R, R.rf_reduce((x, e)) if e else (x, NODEN))
 
     def accepts(self, x):
         return isinstance(x, (se.Basic, int, Fraction))
@@ -1059,7 +1208,7 @@ class PolyBackend(Backend):
 
     def _scalar(self, n, d):
         R = self.ring
-        return R.to_se(R.rf_reduce((n, d)))
+        return _RF(R, R.rf_reduce((n, d)))
 
     def trace(self, a):
         if type(a) is ObjMat:
@@ -1286,7 +1435,7 @@ class SymbolicField(Field):
     _encoded_type = None
 
     def normalize(self, x):
-        if type(x) is self._encoded_type:
+        if type(x) is self._encoded_type or type(x) is _RF:
             return x.to_se()
         return se.expand(x)
 
@@ -1310,7 +1459,7 @@ class SymbolicField(Field):
         cannot hold goes through symengine's expansion and SymPy's cancel)."""
         if isinstance(x, se.Basic) and x.is_Number:
             return x == 0
-        if type(x) is self._encoded_type:
+        if type(x) is self._encoded_type or type(x) is _RF:
             return x.is_zero()
         if self.native:
             try:

@@ -28,7 +28,9 @@ def fields():
 
 
 def same(x, y, points: int = 3) -> bool:
-    """x = y at random rational points (symengine substitution, independent of flint)."""
+    """x = y at random rational points (symengine substitution, independent of flint; a scalar the
+    backend keeps in flint is compared through its symengine expression)."""
+    x, y = se.sympify(x), se.sympify(y)
     syms = sorted((x - y).free_symbols, key=str)
     rng = random.Random(7)
     for _ in range(points):
@@ -78,6 +80,30 @@ def test_backend_is_used_and_agrees_with_symengine():
         assert all(same(x, y) for r1, r2 in zip(entries(K1), entries(K2)) for x, y in zip(r1, r2))
         assert same(t1, t2)
         assert same(i1, i2)
+
+
+def test_scalars_of_the_backend_stay_in_flint_and_agree_with_symengine():
+    """Traces, pairings and entries are flint rational functions (_RF): sums, products, quotients and
+    powers of them stay there, mixed with symengine they give the same value, and the zero test is exact."""
+    from stiefelsym.polyfield import _RF
+    F, G = fields()
+    x = [F.param(f"x{i}") for i in range(4)]
+
+    def scalars(K):
+        A = Mat._rows([[x[0], x[1]], [x[2], 1 + x[3]]], K)
+        B = Mat._rows([[x[3], se.Integer(1)], [x[0] * x[1], x[2]]], K)
+        AB = A @ B
+        return AB.trace(), A._inner(B), AB[0, 1], A.inv()[1, 0]
+    (t1, i1, e1, v1), (t2, i2, e2, v2) = scalars(F), scalars(G)
+    assert all(type(y) is _RF for y in (t1, i1, e1, v1))
+    y1 = (t1 * i1 - e1 / (t1 + 1)) ** 2 - Fraction(2, 3) * v1 ** -1
+    y2 = (t2 * i2 - e2 / (t2 + 1)) ** 2 - se.Rational(2, 3) * v2 ** -1
+    assert type(y1) is _RF and same(y1, y2)
+    assert same(x[0] * y1 + 1, y1 * x[0] + 1) and same(x[0] * y1, x[0] * y2)   # symengine on either side
+    assert F.is_zero(y1 - y1) and F.is_zero((t1 - t1) * e1) and F.is_zero(y1 - y2)
+    assert not F.is_zero(y1 - y2 + x[1])                 # negative control: a nonzero difference
+    assert y1 == y2 and y1 != y2 + 1
+    assert se.sympify(y1) == y1.to_se() and same(se.expand(y1), y2)
 
 
 def test_native_backend_hook():
