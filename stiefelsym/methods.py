@@ -274,9 +274,21 @@ def expected_verdict(claim: Claim, verdict: str, variant: str | None = None,
 # ---------------------------------------------------------------------------
 # the symbolic method
 
+def _symbolic_rows(M: Mat) -> list[list]:
+    """The entries of a matrix of the symbolic method as symengine expressions (a scalar the flint
+    backend keeps, e.g. an entry of a Jacobian built from traces, is converted)."""
+    f = M._field
+    return [[x if isinstance(x, _se_basic()) else f.normalize(x) for x in row] for row in M._view().tolist()]
+
+
+def _se_basic() -> type:
+    import symengine as se
+    return se.Basic
+
+
 def _sympy_rows(M: Mat):
     import sympy
-    return [[sympy.sympify(x) for x in row] for row in M._a.tolist()]
+    return [[sympy.sympify(x) for x in row] for row in _symbolic_rows(M)]
 
 
 def _function_field_rank(M: Mat) -> int:
@@ -296,7 +308,7 @@ def _function_field_rank(M: Mat) -> int:
 def _flint_polynomials(M: Mat):
     """The entries as flint fmpq_mpoly (None if an entry is not a polynomial)."""
     import symengine as se
-    rows = [[se.expand(se.sympify(x)) for x in row] for row in M._view().tolist()]
+    rows = [[se.expand(se.sympify(x)) for x in row] for row in _symbolic_rows(M)]
     syms = sorted({y for row in rows for x in row for y in x.free_symbols}, key=str)
     ctx = flint.fmpq_mpoly_ctx.get(tuple(f"v{i}" for i in range(max(1, len(syms)))), "degrevlex")
     gens = ctx.gens()
@@ -385,7 +397,7 @@ def _constant_minor_rank(M: Mat, field: Field) -> int:
     """Elimination using only nonzero numeric pivots: the product of the pivots is a
     constant (hence everywhere nonzero) minor of the returned size."""
     import symengine as se
-    rows = [list(r) for r in M._a.tolist()]
+    rows = _symbolic_rows(M)
     rank = 0
     if not rows:
         return 0
@@ -426,7 +438,7 @@ def _point_values(M: Mat, rng: random.Random, modulus: int | None):
     """The matrix's symbolic entries at a random integer point of its parameters: fmpq (modulus
     None) or residues mod p; None when the point is a pole of an entry."""
     import symengine as se
-    rows = M._view().tolist()
+    rows = _symbolic_rows(M)
     syms = set()
     for row in rows:
         for x in row:

@@ -703,9 +703,12 @@ class _RF:
         self.R, (self.n, self.d), self.v, self.s = R, rf, R.version, None
 
     def _symengine_(self):
-        # what symengine sees of it (a symengine operand on the left, se.sympify, se.expand): its
-        # expression, so that symengine computes with the value itself
-        return self.to_se()
+        # what symengine's arithmetic sees of it: a matrix (as for _BigPoly), so that with a symengine
+        # operand on the left symengine returns NotImplemented and the reflected operator below
+        # computes in flint (the operand converted, memoized); the engine converts a scalar to
+        # symengine only through normalize(), from_se() or to_se()
+        from ._lazy import symengine_opaque
+        return symengine_opaque()
 
     def _sympy_(self):
         return self.to_se()._sympy_()
@@ -1042,7 +1045,7 @@ class PolyBackend(Backend):
         return _RF(R, R.rf_reduce((x, e)) if e else (x, NODEN))
 
     def accepts(self, x):
-        return isinstance(x, (se.Basic, int, Fraction))
+        return isinstance(x, (se.Basic, int, Fraction)) or type(x) is _RF and x.R is self.ring
 
     # -- constructors -------------------------------------------------------------------
     def zeros(self, m, k):
