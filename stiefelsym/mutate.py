@@ -121,6 +121,14 @@ class Mutant:
     #: builds the mutant with each residual a − b replaced by its left side a (errata search: a
     #: candidate whose left sides vanish too is vacuous); None: no such test
     left: Callable[[], Callable | None] | None = field(default=None, repr=False, compare=False)
+    #: what changed in the paper's notation (:func:`notation`): one dict per change (where, old, new
+    #: and their LaTeX); filled in for the corrections :func:`search_corrections` returns
+    notation: tuple = ()
+
+    @property
+    def text(self) -> str:
+        """The change in the paper's notation, with the source edit in parentheses."""
+        return described(list(self.notation), self.description)
 
 
 @dataclass
@@ -773,6 +781,58 @@ def _mutated_many(defn: ast.FunctionDef, sites: Sequence[_Site]) -> ast.Function
     return clone
 
 
+# --------------------------------------------------------------------------- the paper's notation
+
+def notation(claim: Claim, m: Mutant, size: Size | None = None) -> list[dict[str, str]]:
+    """What the mutant (or correction) ``m`` changes in the claim's graph, in the paper's notation: one
+    dict per change (``where``: the output and its block; ``old``, ``new``: Unicode; ``old_tex``,
+    ``new_tex``: LaTeX math).  The two graphs are traced the same way (symbolic sizes, or ``size``);
+    empty when the mutant does not trace (it is refused or ill-typed) or changes the expectation only,
+    and ``[{"where": "", ...}]`` with old = new = "" when the graphs compute the same outputs."""
+    from .ir import graph_pair
+    from .ir.notation import diff
+    from .scene import REALIZATIONS
+    if m.expect is not None and m.func is claim.func:
+        return []
+    cons = REALIZATIONS[claim.realization]
+    if size is None:
+        size = notation_size([s for s in claim.sizes if not claim.expects_failure(s.n, s.r)] or list(claim.sizes))
+    try:
+        pair = graph_pair(claim.func, m.func, size.n if size else None, size.r if size else None,
+                          (cons.name, cons.build))
+    except Exception:   # noqa: BLE001 - a mutant that breaks the tracer has no notation; its runs say why
+        return []
+    if pair is None:
+        return []
+    changes = diff(*pair)
+    if not changes:
+        return [{"where": "", "old": "", "new": "", "old_tex": "", "new_tex": ""}]
+    return [c.to_json() for c in changes]
+
+
+def notation_size(sizes: Iterable[Size | None]) -> Size | None:
+    """The size at which a change is printed (a claim that reads coordinates traces per size): the
+    smallest n with 1 < r < n, else the smallest n (small explicit matrices read best)."""
+    fixed = sorted((s for s in sizes if s is not None), key=lambda s: (not 1 < s.r < s.n, s.n, s.r))
+    return fixed[0] if fixed else None
+
+
+def notation_text(changes: Sequence[dict[str, str]]) -> str:
+    """The changes in Unicode, one line ("" when there is no notation, "no change in the graph" when
+    the graphs agree)."""
+    if not changes:
+        return ""
+    if not changes[0].get("where") and not changes[0].get("old"):
+        return "no change in the graph"
+    return "; ".join(f"in {c['where']}: {c['old']} → {c['new']}" for c in changes)
+
+
+def described(changes: Sequence[dict[str, str]], description: str) -> str:
+    """The paper's notation first, the source edit after it in parentheses."""
+    text = notation_text(changes)
+    return f"{text} (source: {description})" if text else description
+
+
 # --------------------------------------------------------------------------- sizes and plan
 
 def mutation_sizes(claim: Claim, n_max: int = DEFAULT_N_MAX, count: int = DEFAULT_SIZE_COUNT) -> list[Size]:
@@ -861,6 +921,8 @@ class MutantOutcome:
     killed_by: dict[str, str] = field(default_factory=dict)
     #: methods that passed the mutant at a size where another method refuted it (free: proved it)
     survived: list[str] = field(default_factory=list)
+    #: what changed in the paper's notation (:func:`notation`)
+    notation: list[dict[str, str]] = field(default_factory=list)
 
     @property
     def label(self) -> str:
@@ -1064,11 +1126,12 @@ def classify(outcome: MutantOutcome, baseline: MutantOutcome) -> MutantOutcome:
 _WORK: dict[str, Any] = {}
 
 
-def _work(task: tuple[int, int]) -> list[Cell]:
+def _work(task: tuple[int, int]) -> tuple[list[Cell], list[dict[str, str]]]:
     ci, mi = task
     claim, plan, muts = _WORK["claims"][ci]
     m = muts[mi]
-    return _run_cells(claim, plan, _WORK["seed"], m.func, m.description)
+    cells_ = _run_cells(claim, plan, _WORK["seed"], m.func, m.description)
+    return cells_, notation(claim, m, notation_size(s for s, _ in plan))
 
 
 def _select(muts: list[Mutant], limit: int | None, only: Iterable[int] | None) -> list[Mutant]:
@@ -1153,10 +1216,11 @@ def _run_mutation(claims, sizes, methods, seed, on_result, limit, only, jobs, lo
     _WORK.clear()
     _WORK.update(claims=work, seed=seed)
     try:
-        for (ci, mi), (cells_, secs) in zip(tasks, _map(tasks, jobs)):
+        for (ci, mi), ((cells_, changes), secs) in zip(tasks, _map(tasks, jobs)):
             claim, _, muts = work[ci]
             m, cm = muts[mi], report.claims[ci]
-            o = MutantOutcome(claim.id, m.index, m.description, m.lineno, m.operator, m.source, cells_)
+            o = MutantOutcome(claim.id, m.index, m.description, m.lineno, m.operator, m.source, cells_,
+                              notation=changes)
             classify(o, cm.baseline)
             cm.mutants.append(o)
             cm.seconds += secs
@@ -1169,14 +1233,14 @@ def _run_mutation(claims, sizes, methods, seed, on_result, limit, only, jobs, lo
     return report
 
 
-def _timed(task: tuple[int, int]) -> tuple[list[Cell], float]:
+def _timed(task: tuple[int, int]) -> tuple[tuple[list[Cell], list[dict[str, str]]], float]:
     t0 = time.perf_counter()
     out = _work(task)
     return out, time.perf_counter() - t0
 
 
-def _map(tasks: list[tuple[int, int]], jobs: int) -> Iterator[tuple[list[Cell], float]]:
-    """The tasks' cells, in order; in ``jobs`` forked workers when jobs > 1."""
+def _map(tasks: list[tuple[int, int]], jobs: int) -> Iterator[tuple[tuple[list[Cell], list[dict[str, str]]], float]]:
+    """The tasks' cells and notations, in order; in ``jobs`` forked workers when jobs > 1."""
     if jobs <= 1 or len(tasks) <= 1:
         for t in tasks:
             yield _timed(t)
@@ -1249,6 +1313,7 @@ def search_corrections(claim: Claim, sizes: Sequence[Size] | None = None,
                 break
             ok = bool(plan) and all(passes(m, s, meth) for s, meth in plan) and not vacuous(m)
             if ok:
+                m = replace(m, notation=tuple(notation(claim, m, notation_size(s for s, _ in plan))))
                 found.append(m)
             if on_candidate is not None:
                 on_candidate(m, ok)
