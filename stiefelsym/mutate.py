@@ -784,30 +784,16 @@ def _mutated_many(defn: ast.FunctionDef, sites: Sequence[_Site]) -> ast.Function
 # --------------------------------------------------------------------------- the paper's notation
 
 def notation(claim: Claim, m: Mutant, size: Size | None = None) -> list[dict[str, str]]:
-    """What the mutant (or correction) ``m`` changes in the claim's graph, in the paper's notation: one
-    dict per change (``where``: the output and its block; ``old``, ``new``: Unicode; ``old_tex``,
-    ``new_tex``: LaTeX math).  The two graphs are traced the same way (symbolic sizes, or ``size``);
-    empty when the mutant does not trace (it is refused or ill-typed) or changes the expectation only,
-    and ``[{"where": "", ...}]`` with old = new = "" when the graphs compute the same outputs."""
-    from .ir import graph_pair
-    from .ir.notation import diff
-    from .scene import REALIZATIONS
+    """What the mutant (or correction) ``m`` changes in the claim's graph, in the paper's notation
+    (:func:`stiefelsym.runner.graph_change`; ``size``: where the graphs are traced when they need
+    fixed sizes, by default :func:`notation_size` of the claim's sizes).  [] for a mutant that does
+    not trace or that changes the expectation only."""
+    from .runner import graph_change
     if m.expect is not None and m.func is claim.func:
         return []
-    cons = REALIZATIONS[claim.realization]
     if size is None:
         size = notation_size([s for s in claim.sizes if not claim.expects_failure(s.n, s.r)] or list(claim.sizes))
-    try:
-        pair = graph_pair(claim.func, m.func, size.n if size else None, size.r if size else None,
-                          (cons.name, cons.build))
-    except Exception:   # noqa: BLE001 - a mutant that breaks the tracer has no notation; its runs say why
-        return []
-    if pair is None:
-        return []
-    changes = diff(*pair)
-    if not changes:
-        return [{"where": "", "old": "", "new": "", "old_tex": "", "new_tex": ""}]
-    return [c.to_json() for c in changes]
+    return graph_change(claim, m.func, size)
 
 
 def notation_size(sizes: Iterable[Size | None]) -> Size | None:
@@ -818,13 +804,9 @@ def notation_size(sizes: Iterable[Size | None]) -> Size | None:
 
 
 def notation_text(changes: Sequence[dict[str, str]]) -> str:
-    """The changes in Unicode, one line ("" when there is no notation, "no change in the graph" when
-    the graphs agree)."""
-    if not changes:
-        return ""
-    if not changes[0].get("where") and not changes[0].get("old"):
-        return "no change in the graph"
-    return "; ".join(f"in {c['where']}: {c['old']} → {c['new']}" for c in changes)
+    """The changes in Unicode, one line (:func:`stiefelsym.ir.notation.changes_text`)."""
+    from .ir.notation import changes_text
+    return changes_text(changes)
 
 
 def described(changes: Sequence[dict[str, str]], description: str) -> str:
@@ -939,7 +921,7 @@ class MutantOutcome:
         """One greppable line."""
         per = "; ".join(f"{m} {v}" for m, v in self.verdicts().items())
         tag = "  SURVIVOR of " + ", ".join(self.survived) if self.survived else ""
-        return f"{self.label} {self.classification}: {self.description} [{per}]{tag}"
+        return f"{self.label} {self.classification}: {described(self.notation, self.description)} [{per}]{tag}"
 
 
 @dataclass

@@ -74,7 +74,10 @@ ZERO = num(0)
 
 
 def post(op: str, base: Expr) -> Expr:
-    """A postfix: ``T`` (transpose), ``inv``, ``pow:k``, ``bar`` (complex conjugate)."""
+    """A postfix: ``T`` (transpose), ``inv``, ``pow:k``, ``bar`` (complex conjugate); (M⁻¹)⁻¹ = M,
+    (Mᵀ)ᵀ = M and the conjugate of a conjugate are written as M."""
+    if op in ("T", "inv", "bar") and base.kind == "post" and base.data == (op,):
+        return base.kids[0]
     return _mk("post", (op,), (base,))
 
 
@@ -720,6 +723,9 @@ def diff(old: Graph, new: Graph, cap: int = 24) -> list[Change]:
             continue
         ea = ro.arg(a) if name in dict(out_old) else atom("(no such check)", r"\text{(no such check)}")
         eb = rn.arg(b) if name in out_new else atom("(dropped)", r"\text{(dropped)}")
+        if ea.key == eb.key:      # another computation of the same expression (e.g. (Mᵀ)ᵀ for M)
+            found.append((f"{name} (written the same, computed another way)", (), ea, eb))
+            continue
         found += [(name, ctx, x, y) for ctx, x, y in _diff(ea, eb, ())]
     # one change per (old, new), with every output and block where it is made
     grouped: dict[tuple, dict[str, list[tuple]]] = {}
@@ -742,3 +748,13 @@ def diff(old: Graph, new: Graph, cap: int = 24) -> list[Change]:
 def describe(changes: Sequence[Change]) -> str:
     """The changes as one line ("no change" when there is none)."""
     return "; ".join(c.text() for c in changes) if changes else "no change"
+
+
+def changes_text(changes: Sequence[dict[str, str]] | None) -> str:
+    """Changes as :meth:`Change.to_json` gives them, in one line of Unicode ("" for none: the variant
+    does not trace; "no change in the graph" for one empty change: the graphs agree)."""
+    if not changes:
+        return ""
+    if not changes[0].get("where") and not changes[0].get("old"):
+        return "no change in the graph"
+    return "; ".join(f"in {c.get('where', '')}: {c.get('old', '')} → {c.get('new', '')}" for c in changes)
