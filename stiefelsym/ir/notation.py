@@ -34,6 +34,9 @@ CAP = 40
 #: a node with several changes below it and at most this many letters is reported as a whole
 SMALL = 10
 
+#: at most this many blocks are named where one change is made in several
+MAX_BLOCKS = 4
+
 SUM, PROD, ATOM = 1, 2, 3
 
 # ---------------------------------------------------------------------------------------------
@@ -329,10 +332,10 @@ class Reader:
             return x(a[2])
         if op == "kw":
             return _mk("tuple", (), [_mk("named", (k,), (x(v),)) for k, v in a])
-        if op == "rank":
-            return func("rank", [x(a[0])])
-        if op == "count":
-            return x(a[0])
+        if op == "rank":       # rank(M) = k (generically, or at every point)
+            return _mk("equals", ("" if a[2] else "everywhere",), (func("rank", [x(a[0])]), x(a[1])))
+        if op == "count":      # a number the claim computed = the printed number
+            return _mk("equals", ("",), (x(a[0]), x(a[1])))
         if op == "const":
             return x(a[0])
         return func(op, [x(v) for v in a])
@@ -370,10 +373,11 @@ class Reader:
             f = g.args[v.i][2][0]
             if type(f) is Ref and g.ops[f.i] == "fn":
                 body = g.args[f.i][2]
+                flow = self.arg(g.args[v.i][2][1])
                 if type(body) is Ref and g.ops[body.i] in ("list", "tuple") and type(key) is int:
-                    return _mk("deriv", (), (self.arg(g.args[body.i][key]),))
+                    return _mk("deriv", (), (self.arg(g.args[body.i][key]), flow))
                 if type(body) is Ref and g.ops[body.i] == "dict" and key in g.args[body.i][0]:
-                    return _mk("deriv", (), (self.arg(g.args[body.i][1][g.args[body.i][0].index(key)]),))
+                    return _mk("deriv", (), (self.arg(g.args[body.i][1][g.args[body.i][0].index(key)]), flow))
         if type(key) is str and key in GREEK:      # a multiplier of a flow: Λ, Π
             return name_atom(key)
         if self._is(v, "attr", "a") and type(key) is int:
@@ -411,8 +415,8 @@ class Reader:
             return func("mat", [x(rows)])
         if name == "conj":
             return post("bar", x(args[0]))
-        if name == "d":
-            return _mk("deriv", (), (x(args[0]),))
+        if name == "d":        # along a flow (written d/dt), or along a tangent vector (written so)
+            return _mk("deriv", (), (x(args[0]), x(args[1])))
         if name == "gradient":
             return func("∇", [x(args[0])], r"\nabla")
         if name == "bracket":
@@ -544,6 +548,11 @@ class Printer:
         name = (r"\mathrm{" + _tex_word(e.data[0]) + "}") if self.tex else e.data[0]
         return f"{name} = {self.show(e.kids[0], budget)[0]}", SUM
 
+    def _equals(self, e: Expr, budget: int) -> tuple[str, int]:
+        b = self._split_budget(e.kids, budget)
+        where = e.data[0] and ((r"\ \text{" + e.data[0] + "}") if self.tex else " " + e.data[0])
+        return f"{self.show(e.kids[0], b[0])[0]} = {self.show(e.kids[1], b[1])[0]}{where}", SUM
+
     def _tuple(self, e: Expr, budget: int) -> tuple[str, int]:
         return self.paren(self._args(e.kids, budget)), ATOM
 
@@ -559,6 +568,9 @@ class Printer:
 
     def _block(self, e: Expr, budget: int) -> tuple[str, int]:
         rows, cols = e.data
+        if e.size > budget and budget < 2 * len(e.kids):     # too many blocks to show any: the shape
+            return ((r"(%d \times %d\ \text{matrix})" % (rows, cols)) if self.tex
+                    else f"({rows}×{cols} matrix)"), ATOM
         cells = [self.show(k, b)[0] for k, b in zip(e.kids, self._split_budget(e.kids, budget))]
         grid = [cells[i * cols:(i + 1) * cols] for i in range(rows)]
         if self.tex:
@@ -590,7 +602,17 @@ class Printer:
         return self.sub(e.kids[0], b[0], ATOM) + "/" + self.sub(e.kids[1], b[1], ATOM), PROD
 
     def _deriv(self, e: Expr, budget: int) -> tuple[str, int]:
-        body = e.kids[0]
+        body, along = e.kids[0], e.kids[1] if len(e.kids) > 1 else None
+        if along is not None and along.kind == "tuple":       # a tangent vector (Ẋ, Ṗ) = (U, V)
+            b = self._split_budget(e.kids, budget)
+            names = [k.data[0] for k in along.kids if k.kind == "named"]
+            dots = [LETTERS.get(f"{nm}dot", (nm, nm))[1 if self.tex else 0] for nm in names]
+            vals = [self.show(k.kids[0], max(1, b[1] // max(1, len(names))))[0] for k in along.kids if k.kind == "named"]
+            text = self.show(body, b[0])[0]
+            if self.tex:
+                return (r"rac{d}{dt}" + self.paren(text) + r"\ 	ext{along}\ (" + ", ".join(dots) + ") = ("
+                        + ", ".join(vals) + ")"), SUM
+            return f"d/dt{self.paren(text)} along ({', '.join(dots)}) = ({', '.join(vals)})", SUM
         text, p = self.show(body, budget)
         if body.kind == "atom" and len(text) == 1 and text.isalpha() or (self.tex and body.kind == "atom"
                                                                          and not _scripted(text)):
@@ -603,7 +625,7 @@ class Printer:
         text, p = self.show(e.kids[0], budget)
         if self.tex:
             return r"\frac{\partial}{\partial " + e.data[0] + "}" + self.paren(text), ATOM
-        return f"∂{self.paren(text) if p < ATOM or e.kids[0].kind != 'atom' else text}/∂{e.data[0]}", ATOM
+        return f"∂{self.paren(text) if p < ATOM else text}/∂{e.data[0]}", ATOM
 
 
 def unicode(e: Expr, cap: int = CAP) -> str:
@@ -658,11 +680,23 @@ def _diff(a: Expr, b: Expr, ctx: tuple) -> list[tuple[tuple, Expr, Expr]]:
     if a.key == b.key:
         return []
     out: list[tuple[tuple, Expr, Expr]] = []
+    if a.kind == b.kind == "equals" and a.data == b.data and a.kids[0].key == b.kids[0].key:
+        # the printed number changed: "rank(M) = 6 → rank(M) = 8" (M cut short when it is large)
+        left = a.kids[0] if a.kids[0].size <= SMALL else (
+            func("rank", [atom("…", r"\dots")]) if a.kids[0].kind == "func" else atom("…", r"\dots"))
+        return [(ctx, _mk("equals", a.data, (left, a.kids[1])), _mk("equals", b.data, (left, b.kids[1])))]
     if a.kind == b.kind and a.kind not in ("atom", "num") and len(a.kids) == len(b.kids):
         if a.data == b.data:
-            for i, (x, y) in enumerate(zip(a.kids, b.kids)):
-                if x.key != y.key:
-                    out += _diff(x, y, ctx + _where(a, i))
+            changed = [i for i, (x, y) in enumerate(zip(a.kids, b.kids)) if x.key != y.key]
+            for i in changed:
+                out += _diff(a.kids[i], b.kids[i], ctx + _where(a, i))
+            if len({(x.key, y.key) for _, x, y in out}) <= 1:      # one change (perhaps repeated)
+                return out
+            # parts moved (operands swapped: a new part is an old part), or every part changed: the
+            # node is the change
+            old_parts = {k.key for k in a.kids}
+            if len(changed) > 1 and (len(changed) == len(a.kids) or any(b.kids[i].key in old_parts for i in changed)):
+                return [(ctx, a, b)]
         elif a.kind == "sum":
             for i, (s, t, x, y) in enumerate(zip(a.data[0], b.data[0], a.kids, b.kids)):
                 if x.key != y.key or s != t:
@@ -674,7 +708,7 @@ def _diff(a: Expr, b: Expr, ctx: tuple) -> list[tuple[tuple, Expr, Expr]]:
             return [(ctx, a, b)]
         else:
             return [(ctx, a, b)]
-        if len(out) > 1 and max(a.size, b.size) <= SMALL:
+        if len({(x.key, y.key) for _, x, y in out}) > 1 and max(a.size, b.size) <= SMALL:
             return [(ctx, a, b)]
         return out
     if a.kind == b.kind == "sum" and abs(len(a.kids) - len(b.kids)) == 1:
@@ -702,7 +736,10 @@ def _place(name: str, blocks: list[tuple]) -> str:
         return name
     if len(blocks) == 1:
         return f"{name}, block {' in '.join(reversed(blocks[0]))}"
-    return f"{name}, blocks {', '.join(' in '.join(reversed(b)) for b in blocks)}"
+    named = [' in '.join(reversed(b)) for b in blocks]
+    if len(named) > MAX_BLOCKS:
+        return f"{name}, blocks {', '.join(named[:MAX_BLOCKS - 1])} and {len(named) - MAX_BLOCKS + 1} more"
+    return f"{name}, blocks {', '.join(named)}"
 
 
 def diff(old: Graph, new: Graph, cap: int = 24) -> list[Change]:
