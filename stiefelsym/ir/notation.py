@@ -690,6 +690,9 @@ def _diff(a: Expr, b: Expr, ctx: tuple) -> list[tuple[tuple, Expr, Expr]]:
             changed = [i for i, (x, y) in enumerate(zip(a.kids, b.kids)) if x.key != y.key]
             for i in changed:
                 out += _diff(a.kids[i], b.kids[i], ctx + _where(a, i))
+            if (a.kind == "prod" and len(changed) == 1 and a.size <= SMALL and len(out) == 1
+                    and out[0][1].kind == out[0][2].kind == "atom"):
+                return [(ctx, a, b)]                  # a letter in a short product: QΠ → YΠ, not Q → Y
             if len({(x.key, y.key) for _, x, y in out}) <= 1:      # one change (perhaps repeated)
                 return out
             # parts moved (operands swapped: a new part is an old part), or every part changed: the
@@ -777,6 +780,8 @@ def diff(old: Graph, new: Graph, cap: int = 24) -> list[Change]:
             continue
         seen.add(k)
         places = [_place(nm, blocks) for nm, blocks in grouped[k].items()]
+        if len(places) > 2 and set(grouped[k]) == set(names) and all(b == [()] for b in grouped[k].values()):
+            places = [f"every check ({len(places)})"]
         where = ("; " if any(", block" in p for p in places) else ", ").join(places)
         changes.append(Change(where, po(x), po(y), pn(x), pn(y)))
     return changes
