@@ -129,7 +129,7 @@ def test_manakov_dual_lax_correction_in_the_papers_notation():
 
 @pytest.mark.parametrize("fragment, expected", [
     ("flip the sign of the term `s.lam * s.A` in `s.Phi + s.lam * s.A`", "in Lax: λA → −λA"),
-    ("replace `s.A` by `s.Ainv` in `s.lam * s.A`", "in Lax: A → A⁻¹"),
+    ("replace `s.A` by `s.Ainv` in `s.lam * s.A`", "in Lax: λA → λA⁻¹"),
     ("invert the matrix `s.Phi + s.lam * s.A`", "in Lax: Φ + λA → (Φ + λA)⁻¹"),
     # [𝔸(Φ) + λB, Φ + λA] → [Φ + λA, 𝔸(Φ) + λB], with 𝔸(Φ) an explicit 3 x 3 matrix (cut short)
     ("swap the operands of comm in `comm(M, L)`", "Φ + λA] → [Φ + λA, "),

@@ -674,17 +674,17 @@ class Change:
                 "new_tex": self.new_tex}
 
 
-def _diff(a: Expr, b: Expr, ctx: tuple) -> list[tuple[tuple, Expr, Expr]]:
-    """The topmost changed subexpressions of a → b under an unchanged context (ctx: the blocks on
-    the way down)."""
+def _diff(a: Expr, b: Expr, ctx: tuple) -> list[tuple]:
+    """The topmost changed subexpressions of a → b under an unchanged context: (ctx: the blocks on the
+    way down, old, new, and the short product a changed letter sits in, or None)."""
     if a.key == b.key:
         return []
-    out: list[tuple[tuple, Expr, Expr]] = []
+    out: list[tuple] = []
     if a.kind == b.kind == "equals" and a.data == b.data and a.kids[0].key == b.kids[0].key:
         # the printed number changed: "rank(M) = 6 → rank(M) = 8" (M cut short when it is large)
         left = a.kids[0] if a.kids[0].size <= SMALL else (
             func("rank", [atom("…", r"\dots")]) if a.kids[0].kind == "func" else atom("…", r"\dots"))
-        return [(ctx, _mk("equals", a.data, (left, a.kids[1])), _mk("equals", b.data, (left, b.kids[1])))]
+        return [(ctx, _mk("equals", a.data, (left, a.kids[1])), _mk("equals", b.data, (left, b.kids[1])), None)]
     if a.kind == b.kind and a.kind not in ("atom", "num") and len(a.kids) == len(b.kids):
         if a.data == b.data:
             changed = [i for i, (x, y) in enumerate(zip(a.kids, b.kids)) if x.key != y.key]
@@ -692,27 +692,27 @@ def _diff(a: Expr, b: Expr, ctx: tuple) -> list[tuple[tuple, Expr, Expr]]:
                 out += _diff(a.kids[i], b.kids[i], ctx + _where(a, i))
             if (a.kind == "prod" and len(changed) == 1 and a.size <= SMALL and len(out) == 1
                     and out[0][1].kind == out[0][2].kind == "atom"):
-                return [(ctx, a, b)]                  # a letter in a short product: QΠ → YΠ, not Q → Y
-            if len({(x.key, y.key) for _, x, y in out}) <= 1:      # one change (perhaps repeated)
+                return [out[0][:3] + ((a, b),)]       # a letter in a short product: QΠ → YΠ, not Q → Y
+            if len({(o[1].key, o[2].key) for o in out}) <= 1:      # one change (perhaps repeated)
                 return out
             # parts moved (operands swapped: a new part is an old part), or every part changed: the
             # node is the change
             old_parts = {k.key for k in a.kids}
             if len(changed) > 1 and (len(changed) == len(a.kids) or any(b.kids[i].key in old_parts for i in changed)):
-                return [(ctx, a, b)]
+                return [(ctx, a, b, None)]
         elif a.kind == "sum":
             for i, (s, t, x, y) in enumerate(zip(a.data[0], b.data[0], a.kids, b.kids)):
                 if x.key != y.key or s != t:
                     if s == t:
                         out += _diff(x, y, ctx)
                     else:
-                        out.append((ctx, signed(s, x), signed(t, y)))
+                        out.append((ctx, signed(s, x), signed(t, y), None))
         elif a.kind == "prod" and all(x.key == y.key for x, y in zip(a.kids, b.kids)):
-            return [(ctx, a, b)]
+            return [(ctx, a, b, None)]
         else:
-            return [(ctx, a, b)]
-        if len({(x.key, y.key) for _, x, y in out}) > 1 and max(a.size, b.size) <= SMALL:
-            return [(ctx, a, b)]
+            return [(ctx, a, b, None)]
+        if len({(o[1].key, o[2].key) for o in out}) > 1 and max(a.size, b.size) <= SMALL:
+            return [(ctx, a, b, None)]
         return out
     if a.kind == b.kind == "sum" and abs(len(a.kids) - len(b.kids)) == 1:
         longer, shorter = (a, b) if len(a.kids) > len(b.kids) else (b, a)
@@ -722,9 +722,9 @@ def _diff(a: Expr, b: Expr, ctx: tuple) -> list[tuple[tuple, Expr, Expr]]:
             if lt[:i] + lt[i + 1:] == st:
                 term = signed(longer.data[0][i], longer.kids[i])
                 if max(a.size, b.size) <= SMALL:
-                    return [(ctx, a, b)]
-                return [(ctx, term, ZERO) if longer is a else (ctx, ZERO, term)]
-    return [(ctx, a, b)]
+                    return [(ctx, a, b, None)]
+                return [(ctx, term, ZERO, None) if longer is a else (ctx, ZERO, term, None)]
+    return [(ctx, a, b, None)]
 
 
 def _where(e: Expr, i: int) -> tuple:
@@ -764,21 +764,26 @@ def diff(old: Graph, new: Graph, cap: int = 24) -> list[Change]:
         ea = ro.arg(a) if name in dict(out_old) else atom("(no such check)", r"\text{(no such check)}")
         eb = rn.arg(b) if name in out_new else atom("(dropped)", r"\text{(dropped)}")
         if ea.key == eb.key:      # another computation of the same expression (e.g. (Mᵀ)ᵀ for M)
-            found.append((f"{name} (written the same, computed another way)", (), ea, eb))
+            found.append((f"{name} (written the same, computed another way)", (), ea, eb, None))
             continue
-        found += [(name, ctx, x, y) for ctx, x, y in _diff(ea, eb, ())]
+        found += [(name,) + o for o in _diff(ea, eb, ())]
     # one change per (old, new), with every output and block where it is made
+    # (a changed letter is shown in its short product where that product is the same at every place)
     grouped: dict[tuple, dict[str, list[tuple]]] = {}
-    for name, ctx, x, y in found:
+    contexts: dict[tuple, set] = {}
+    for name, ctx, x, y, alt in found:
         places = grouped.setdefault((x.key, y.key), {}).setdefault(name, [])
         if ctx not in places:
             places.append(ctx)
+        contexts.setdefault((x.key, y.key), set()).add(None if alt is None else (alt[0].key, alt[1].key))
     changes, seen = [], set()
-    for name, ctx, x, y in found:
+    for name, ctx, x, y, alt in found:
         k = (x.key, y.key)
         if k in seen:
             continue
         seen.add(k)
+        if alt is not None and len(contexts[k]) == 1:
+            x, y = alt
         places = [_place(nm, blocks) for nm, blocks in grouped[k].items()]
         if len(places) > 2 and set(grouped[k]) == set(names) and all(b == [()] for b in grouped[k].values()):
             places = [f"every check ({len(places)})"]
