@@ -241,3 +241,26 @@ def test_registered_correction_records_carry_their_change_and_reports_show_it():
     assert md == render_markdown(results)
     tex = render_latex(results)
     assert r"in E: $[\Phi, A] \to [A, \Phi]$ {\small (registered as: the operands of the second" in tex
+
+
+def test_a_hand_edited_change_of_a_correction_is_caught():
+    """`stiefelsym check`: a correction's record carries its change of the graph, which the graphs of the
+    claim and the correction give again; an edited one is rejected, the honest one passes."""
+    from stiefelsym.claims import Registry
+    from stiefelsym.integrity import check_results
+    c = Claim(id="wrong-order", paper=("prep",), kind="id", section="2", func=wrong_sign,
+              sizes=admissible(3, n_min=3, r_min=2, r_max=2), expect="fails", erratum="an order")
+
+    @c.correction("the operands of the second commutator swapped")
+    def fixed(s):
+        return {"E": comm(s.Phi, s.A) + comm(s.A, s.Phi)}
+    reg = Registry()
+    reg.add(c)
+    results = verify([c], methods=("modular",), sizes=[Size(3, 2)], jobs=1, fork=False)
+    honest = [json.loads(json.dumps(r.to_json())) for r in results if r.variant is not None]
+    assert honest and honest[0]["change"]
+    lines: list[str] = []
+    assert check_results(honest, reg, echo=lines.append, rerun=False) == 0, lines
+    forged = [dict(honest[0], change=[dict(honest[0]["change"][0], new="[Φ, A]")])]
+    assert check_results(forged, reg, echo=lines.append, rerun=False) == 1
+    assert "change in the paper's notation" in lines[-2]
