@@ -1408,6 +1408,9 @@ def _tex_change(changes: Sequence[dict[str, str]] | None) -> str:
         return tex_escape("no change in the graph")
     parts = []
     for c in changes:
+        if c.get("more"):
+            parts.append(tex_escape(f"and {c['more']} more change{'s' * (c['more'] != 1)}"))
+            continue
         old, new = c.get("old_tex", ""), c.get("new_tex", "")
         math = (f"${old} \\to {new}$" if old and new and math_ok(old) and math_ok(new)
                 else tex_escape(f"{c.get('old', '')} → {c.get('new', '')}"))

@@ -264,3 +264,14 @@ def test_a_hand_edited_change_of_a_correction_is_caught():
     forged = [dict(honest[0], change=[dict(honest[0]["change"][0], new="[Φ, A]")])]
     assert check_results(forged, reg, echo=lines.append, rerun=False) == 1
     assert "change in the paper's notation" in lines[-2]
+
+
+def test_a_doubling_graph_is_read_in_linear_time():
+    """x ← x + x forty times: 2⁴⁰ terms if every shared sum were copied; printed cut short."""
+    def doubling(s):
+        x = s.X @ s.P.T
+        for _ in range(40):
+            x = x + x
+        return {"D": x}
+    text = _show(doubling, cap=10)["D"]
+    assert "…" in text and len(text) < 200

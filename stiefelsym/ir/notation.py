@@ -34,6 +34,10 @@ CAP = 40
 #: a node with several changes below it and at most this many letters is reported as a whole
 SMALL = 10
 
+#: at most this many changes are listed (then: "and k more changes")
+MAX_CHANGES = 4
+#: sums and products are flattened up to this many terms or factors (beyond, a part stays one term)
+FLAT_MAX = 256
 #: at most this many blocks are named where one change is made in several
 MAX_BLOCKS = 4
 
@@ -108,6 +112,8 @@ def prod(*xs: Expr) -> Expr:
     sign, coeff, factors = 1, Fraction(1), []
     for x in xs:
         s, c, f = _split(x)
+        if len(factors) + len(f) > FLAT_MAX:          # a shared product is not copied without end
+            s, c, f = 1, Fraction(1), (x,)
         sign, coeff = sign * s, coeff * c
         factors += f
     if coeff == 0:
@@ -129,7 +135,7 @@ def add(*terms: tuple[int, Expr]) -> Expr:
     """The sum of signed terms (flattened; a term's own sign taken into its sign)."""
     signs, kids = [], []
     for s, t in terms:
-        if t.kind == "sum":
+        if t.kind == "sum" and len(kids) + len(t.kids) <= FLAT_MAX:   # (a shared sum: not copied without end)
             signs += [s * u for u in t.data[0]]
             kids += t.kids
             continue
@@ -252,9 +258,6 @@ class Reader:
         if t is tuple:
             return _mk("tuple", (), [self.arg(x) for x in a])
         return atom(repr(a))
-
-    def _op(self, i: int) -> str:
-        return self.g.ops[i]
 
     def _is(self, a: Any, op: str, name: str | None = None) -> bool:
         if type(a) is not Ref:
@@ -665,18 +668,27 @@ class Change:
     new: str
     old_tex: str
     new_tex: str
+    #: not a change: the number of further changes left out
+    more: int = 0
 
     def text(self) -> str:
+        if self.more:
+            return f"and {self.more} more change{'s' * (self.more != 1)}"
         return f"in {self.where}: {self.old} → {self.new}"
 
-    def to_json(self) -> dict[str, str]:
-        return {"where": self.where, "old": self.old, "new": self.new, "old_tex": self.old_tex,
-                "new_tex": self.new_tex}
+    def to_json(self) -> dict[str, Any]:
+        d: dict[str, Any] = {"where": self.where, "old": self.old, "new": self.new, "old_tex": self.old_tex,
+                             "new_tex": self.new_tex}
+        if self.more:
+            d["more"] = self.more
+        return d
 
 
-def _diff(a: Expr, b: Expr, ctx: tuple) -> list[tuple]:
+def _diff(a: Expr, b: Expr, ctx: tuple, deep: bool = False) -> list[tuple]:
     """The topmost changed subexpressions of a → b under an unchanged context: (ctx: the blocks on the
-    way down, old, new, and the short product a changed letter sits in, or None)."""
+    way down, old, new, and the short product a changed letter sits in, or None).  A node whose parts
+    changed in several ways is the change (a swap, a small node), unless ``deep``: then the parts'
+    changes are listed (fewer when one change below repeats at many places)."""
     if a.key == b.key:
         return []
     out: list[tuple] = []
@@ -689,7 +701,7 @@ def _diff(a: Expr, b: Expr, ctx: tuple) -> list[tuple]:
         if a.data == b.data:
             changed = [i for i, (x, y) in enumerate(zip(a.kids, b.kids)) if x.key != y.key]
             for i in changed:
-                out += _diff(a.kids[i], b.kids[i], ctx + _where(a, i))
+                out += _diff(a.kids[i], b.kids[i], ctx + _where(a, i), deep)
             if (a.kind == "prod" and len(changed) == 1 and a.size <= SMALL and len(out) == 1
                     and out[0][1].kind == out[0][2].kind == "atom"):
                 return [out[0][:3] + ((a, b),)]       # a letter in a short product: QΠ → YΠ, not Q → Y
@@ -698,33 +710,42 @@ def _diff(a: Expr, b: Expr, ctx: tuple) -> list[tuple]:
             # parts moved (operands swapped: a new part is an old part), or every part changed: the
             # node is the change
             old_parts = {k.key for k in a.kids}
-            if len(changed) > 1 and (len(changed) == len(a.kids) or any(b.kids[i].key in old_parts for i in changed)):
+            if not deep and len(changed) > 1 and (len(changed) == len(a.kids) or any(b.kids[i].key in old_parts for i in changed)):
                 return [(ctx, a, b, None)]
         elif a.kind == "sum":
             for i, (s, t, x, y) in enumerate(zip(a.data[0], b.data[0], a.kids, b.kids)):
                 if x.key != y.key or s != t:
                     if s == t:
-                        out += _diff(x, y, ctx)
+                        out += _diff(x, y, ctx, deep)
                     else:
                         out.append((ctx, signed(s, x), signed(t, y), None))
         elif a.kind == "prod" and all(x.key == y.key for x, y in zip(a.kids, b.kids)):
             return [(ctx, a, b, None)]
         else:
             return [(ctx, a, b, None)]
-        if len({(o[1].key, o[2].key) for o in out}) > 1 and max(a.size, b.size) <= SMALL:
+        if not deep and len({(o[1].key, o[2].key) for o in out}) > 1 and max(a.size, b.size) <= SMALL:
             return [(ctx, a, b, None)]
         return out
-    if a.kind == b.kind == "sum" and abs(len(a.kids) - len(b.kids)) == 1:
-        longer, shorter = (a, b) if len(a.kids) > len(b.kids) else (b, a)
-        terms = lambda e: [(s, k.key) for s, k in zip(e.data[0], e.kids)]
-        lt, st = terms(longer), terms(shorter)
+    ta, tb = _terms(a), _terms(b)
+    if (a.kind == "sum" or b.kind == "sum") and abs(len(ta) - len(tb)) == 1:    # a term dropped or added
+        longer, shorter = (ta, tb) if len(ta) > len(tb) else (tb, ta)
+        lt, st = [(s, k.key) for s, k in longer], [(s, k.key) for s, k in shorter]
         for i in range(len(lt)):
             if lt[:i] + lt[i + 1:] == st:
-                term = signed(longer.data[0][i], longer.kids[i])
+                term = signed(*longer[i])
                 if max(a.size, b.size) <= SMALL:
                     return [(ctx, a, b, None)]
-                return [(ctx, term, ZERO, None) if longer is a else (ctx, ZERO, term, None)]
+                return [(ctx, term, ZERO, None) if longer is ta else (ctx, ZERO, term, None)]
     return [(ctx, a, b, None)]
+
+
+def _terms(e: Expr) -> list[tuple[int, Expr]]:
+    """e as signed terms (one term unless it is a sum)."""
+    if e.kind == "sum":
+        return list(zip(e.data[0], e.kids))
+    if e.kind == "prod" and e.data[0] == -1:
+        return [(-1, neg(e))]
+    return [(1, e)]
 
 
 def _where(e: Expr, i: int) -> tuple:
@@ -754,7 +775,9 @@ def diff(old: Graph, new: Graph, cap: int = 24) -> list[Change]:
     ro, rn = Reader(old), Reader(new)
     po, pn = Printer(False, cap), Printer(True, cap)
     out_old, out_new = outputs(old), dict(outputs(new))
-    found: list[tuple[str, tuple, Expr, Expr]] = []
+    found: list[tuple] = []
+    pairs: list[tuple[str, Expr, Expr]] = []
+    same: list[tuple] = []
     names = [n for n, _ in out_old] + [n for n in out_new if n not in dict(out_old)]
     for name in names:
         a = dict(out_old).get(name)
@@ -763,10 +786,19 @@ def diff(old: Graph, new: Graph, cap: int = 24) -> list[Change]:
             continue
         ea = ro.arg(a) if name in dict(out_old) else atom("(no such check)", r"\text{(no such check)}")
         eb = rn.arg(b) if name in out_new else atom("(dropped)", r"\text{(dropped)}")
-        if ea.key == eb.key:      # another computation of the same expression (e.g. (Mᵀ)ᵀ for M)
-            found.append((f"{name} (written the same, computed another way)", (), ea, eb, None))
+        if ea.key == eb.key:      # another computation of the same expression (e.g. (Mᵀ)ᵀ for M, or the
+            # claim's functions numbered otherwise): said only when nothing else changed
+            same.append((f"{name} (written the same, computed another way)", (), ea, eb, None))
             continue
-        found += [(name,) + o for o in _diff(ea, eb, ())]
+        pairs.append((name, ea, eb))
+    shallow = [(name,) + o for name, ea, eb in pairs for o in _diff(ea, eb, ())]
+    distinct = lambda fs: len({(f[2].key, f[3].key) for f in fs})
+    if distinct(shallow) > MAX_CHANGES:
+        # many changes: perhaps one change below them, made at many places
+        deep = [(name,) + o for name, ea, eb in pairs for o in _diff(ea, eb, (), True)]
+        if distinct(deep) < distinct(shallow):
+            shallow = deep
+    found += shallow or same
     # one change per (old, new), with every output and block where it is made
     # (a changed letter is shown in its short product where that product is the same at every place)
     grouped: dict[tuple, dict[str, list[tuple]]] = {}
@@ -789,6 +821,8 @@ def diff(old: Graph, new: Graph, cap: int = 24) -> list[Change]:
             places = [f"every check ({len(places)})"]
         where = ("; " if any(", block" in p for p in places) else ", ").join(places)
         changes.append(Change(where, po(x), po(y), pn(x), pn(y)))
+    if len(changes) > MAX_CHANGES:
+        return changes[:MAX_CHANGES - 1] + [Change("", "", "", "", "", more=len(changes) - MAX_CHANGES + 1)]
     return changes
 
 
@@ -804,4 +838,5 @@ def changes_text(changes: Sequence[dict[str, str]] | None) -> str:
         return ""
     if not changes[0].get("where") and not changes[0].get("old"):
         return "no change in the graph"
-    return "; ".join(f"in {c.get('where', '')}: {c.get('old', '')} → {c.get('new', '')}" for c in changes)
+    return "; ".join(f"and {c['more']} more change{'s' * (c['more'] != 1)}" if c.get("more")
+                     else f"in {c.get('where', '')}: {c.get('old', '')} → {c.get('new', '')}" for c in changes)
