@@ -684,11 +684,28 @@ class Change:
         return d
 
 
-def _diff(a: Expr, b: Expr, ctx: tuple, deep: bool = False) -> list[tuple]:
+def _diff(a: Expr, b: Expr, ctx: tuple, deep: bool = False, memo: dict | None = None) -> list[tuple]:
     """The topmost changed subexpressions of a → b under an unchanged context: (ctx: the blocks on the
     way down, old, new, and the short product a changed letter sits in, or None).  A node whose parts
     changed in several ways is the change (a swap, a small node), unless ``deep``: then the parts'
     changes are listed (fewer when one change below repeats at many places)."""
+    if memo is None:
+        memo = {}
+    k = (a.key, b.key)
+    found = memo.get(k)
+    if found is None:        # a shared part is compared once (the expressions are DAGs)
+        found, seen = [], set()
+        for o in _diff_at(a, b, deep, memo):       # the same change reached along two ways: once
+            key = (o[0], o[1].key, o[2].key)
+            if key not in seen:
+                seen.add(key)
+                found.append(o)
+        memo[k] = found
+    return [(ctx + o[0],) + o[1:] for o in found] if ctx else found
+
+
+def _diff_at(a: Expr, b: Expr, deep: bool, memo: dict) -> list[tuple]:
+    ctx: tuple = ()
     if a.key == b.key:
         return []
     out: list[tuple] = []
@@ -701,7 +718,7 @@ def _diff(a: Expr, b: Expr, ctx: tuple, deep: bool = False) -> list[tuple]:
         if a.data == b.data:
             changed = [i for i, (x, y) in enumerate(zip(a.kids, b.kids)) if x.key != y.key]
             for i in changed:
-                out += _diff(a.kids[i], b.kids[i], ctx + _where(a, i), deep)
+                out += _diff(a.kids[i], b.kids[i], _where(a, i), deep, memo)
             if (a.kind == "prod" and len(changed) == 1 and a.size <= SMALL and len(out) == 1
                     and out[0][1].kind == out[0][2].kind == "atom"):
                 return [out[0][:3] + ((a, b),)]       # a letter in a short product: QΠ → YΠ, not Q → Y
@@ -716,7 +733,7 @@ def _diff(a: Expr, b: Expr, ctx: tuple, deep: bool = False) -> list[tuple]:
             for i, (s, t, x, y) in enumerate(zip(a.data[0], b.data[0], a.kids, b.kids)):
                 if x.key != y.key or s != t:
                     if s == t:
-                        out += _diff(x, y, ctx, deep)
+                        out += _diff(x, y, (), deep, memo)
                     else:
                         out.append((ctx, signed(s, x), signed(t, y), None))
         elif a.kind == "prod" and all(x.key == y.key for x, y in zip(a.kids, b.kids)):
@@ -791,11 +808,13 @@ def diff(old: Graph, new: Graph, cap: int = 24) -> list[Change]:
             same.append((f"{name} (written the same, computed another way)", (), ea, eb, None))
             continue
         pairs.append((name, ea, eb))
-    shallow = [(name,) + o for name, ea, eb in pairs for o in _diff(ea, eb, ())]
+    memo: dict = {}
+    shallow = [(name,) + o for name, ea, eb in pairs for o in _diff(ea, eb, (), False, memo)]
     distinct = lambda fs: len({(f[2].key, f[3].key) for f in fs})
     if distinct(shallow) > MAX_CHANGES:
         # many changes: perhaps one change below them, made at many places
-        deep = [(name,) + o for name, ea, eb in pairs for o in _diff(ea, eb, (), True)]
+        memo = {}
+        deep = [(name,) + o for name, ea, eb in pairs for o in _diff(ea, eb, (), True, memo)]
         if distinct(deep) < distinct(shallow):
             shallow = deep
     found += shallow or same
