@@ -275,3 +275,23 @@ def test_a_doubling_graph_is_read_in_linear_time():
         return {"D": x}
     text = _show(doubling, cap=10)["D"]
     assert "…" in text and len(text) < 200
+
+
+def test_at_most_four_changes_are_listed():
+    old = _graph(lambda s: {f"c{k}": k * s.X for k in range(1, 7)})
+    new = _graph(lambda s: {f"c{k}": (k + 10) * s.X for k in range(1, 7)})
+    changes = diff(old, new)
+    assert describe(changes) == "in c1: X → 11X; in c2: 2X → 12X; in c3: 3X → 13X; and 3 more changes"
+    assert changes_text([c.to_json() for c in changes]).endswith("and 3 more changes")
+
+
+def test_one_change_below_many_places_is_found():
+    """neumann2-kernel: negating a term of a matrix whose entries fill a big block matrix changes every
+    block; the change is the term's sign, named once with its places."""
+    from stiefelsym.mutate import mutation_sizes, notation_size
+    c = load_catalog().get("neumann2-kernel")
+    m = mutants(c)[3]
+    assert "negate the term `P0 @ X.T - X @ P0.T`" in m.description
+    text = changes_text(notation(c, m, notation_size(mutation_sizes(c))))
+    assert text.startswith("in rank Lambda1(h+v) at Psi = 0, blocks (1,1), (1,2), (1,3) and ")
+    assert "(P − XXᵀP)Xᵀ → −(P − XXᵀP)Xᵀ" in text and len(text) < 400

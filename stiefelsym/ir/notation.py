@@ -719,8 +719,10 @@ def _diff_at(a: Expr, b: Expr, deep: bool, memo: dict) -> list[tuple]:
             changed = [i for i, (x, y) in enumerate(zip(a.kids, b.kids)) if x.key != y.key]
             for i in changed:
                 out += _diff(a.kids[i], b.kids[i], _where(a, i), deep, memo)
+            kid = a.kids[changed[0]] if changed else None
             if (a.kind == "prod" and len(changed) == 1 and a.size <= SMALL and len(out) == 1
-                    and out[0][1].kind == out[0][2].kind == "atom"):
+                    and out[0][1].kind == out[0][2].kind == "atom" and out[0][3] is None
+                    and out[0][1].key in (kid.key, kid.kids[0].key if kid.kind == "post" else None)):
                 return [out[0][:3] + ((a, b),)]       # a letter in a short product: QΠ → YΠ, not Q → Y
             if len({(o[1].key, o[2].key) for o in out}) <= 1:      # one change (perhaps repeated)
                 return out
