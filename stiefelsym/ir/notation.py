@@ -134,6 +134,7 @@ def neg(x: Expr) -> Expr:
 def add(*terms: tuple[int, Expr]) -> Expr:
     """The sum of signed terms (flattened; a term's own sign taken into its sign)."""
     signs, kids = [], []
+    terms = [(s, t) for s, t in terms if not (t.kind == "num" and t.data[0] == 0)] or [(1, ZERO)]   # 0 + x = x
     for s, t in terms:
         if t.kind == "sum" and len(kids) + len(t.kids) <= FLAT_MAX:   # (a shared sum: not copied without end)
             signs += [s * u for u in t.data[0]]
@@ -285,7 +286,8 @@ class Reader:
             return self._call(a[1], a[2], a[3])
         if op == "prim":
             short = a[0].qualname.rsplit(".", 1)[-1]
-            return func(short, [x(v) for v in a[1:] if not self._is(v, "kw")] + self._kws(a[1:]))
+            return func(short, [x(v) for v in a[1:] if not (self._is(v, "kw") or self._is(v, "scene"))]
+                        + self._kws(a[1:]))
         if op == "apply":
             return _mk("apply", (), [x(a[0])] + [x(v) for v in a[1:] if not self._is(v, "kw")] + self._kws(a[1:]))
         if op == "add":
@@ -308,10 +310,12 @@ class Reader:
             return prod(x(a[1]), x(a[0]))
         if op in ("div", "rdiv"):
             p, q = (a[0], a[1]) if op == "div" else (a[1], a[0])
-            d = x(q)
+            d, n_ = x(q), x(p)
             if d.kind == "num" and d.data[0] != 0:
-                return prod(x(p), num(1 / d.data[0]))
-            return _mk("frac", (), (x(p), d))
+                return prod(n_, num(1 / d.data[0]))
+            if n_.kind == "num" and d.kind == "atom":        # c/λ = cλ⁻¹
+                return prod(n_, post("inv", d))
+            return _mk("frac", (), (n_, d))
         if op == "pow":
             return post(f"pow:{a[1]}", x(a[0]))
         if op == "T":
@@ -381,6 +385,8 @@ class Reader:
                     return _mk("deriv", (), (self.arg(g.args[body.i][key]), flow))
                 if type(body) is Ref and g.ops[body.i] == "dict" and key in g.args[body.i][0]:
                     return _mk("deriv", (), (self.arg(g.args[body.i][1][g.args[body.i][0].index(key)]), flow))
+        if type(key) is str and key in LETTERS and self._is(v, "param"):   # z["X"] of a point z: X
+            return atom(*LETTERS[key])
         if type(key) is str and key in GREEK:      # a multiplier of a flow: Λ, Π
             return name_atom(key)
         if self._is(v, "attr", "a") and type(key) is int:
@@ -729,7 +735,8 @@ def _diff_at(a: Expr, b: Expr, deep: bool, memo: dict) -> list[tuple]:
             # parts moved (operands swapped: a new part is an old part), or every part changed: the
             # node is the change
             old_parts = {k.key for k in a.kids}
-            if not deep and len(changed) > 1 and (len(changed) == len(a.kids) or any(b.kids[i].key in old_parts for i in changed)):
+            every = len(changed) == len(a.kids) and max(a.size, b.size) <= 3 * SMALL
+            if not deep and len(changed) > 1 and (every or any(b.kids[i].key in old_parts for i in changed)):
                 return [(ctx, a, b, None)]
         elif a.kind == "sum":
             for i, (s, t, x, y) in enumerate(zip(a.data[0], b.data[0], a.kids, b.kids)):
@@ -841,7 +848,12 @@ def diff(old: Graph, new: Graph, cap: int = 24) -> list[Change]:
         if len(places) > 2 and set(grouped[k]) == set(names) and all(b == [()] for b in grouped[k].values()):
             places = [f"every check ({len(places)})"]
         where = ("; " if any(", block" in p for p in places) else ", ").join(places)
+        wide = cap
+        while po(x) == po(y) and x.key != y.key and wide < 4 * cap:   # cut short to the same text
+            wide *= 4
+            po, pn = Printer(False, wide), Printer(True, wide)
         changes.append(Change(where, po(x), po(y), pn(x), pn(y)))
+        po, pn = Printer(False, cap), Printer(True, cap)
     if len(changes) > MAX_CHANGES:
         return changes[:MAX_CHANGES - 1] + [Change("", "", "", "", "", more=len(changes) - MAX_CHANGES + 1)]
     return changes
