@@ -753,15 +753,19 @@ def _diff_at(a: Expr, b: Expr, deep: bool, memo: dict) -> list[tuple]:
             return [(ctx, a, b, None)]
         return out
     ta, tb = _terms(a), _terms(b)
-    if (a.kind == "sum" or b.kind == "sum") and abs(len(ta) - len(tb)) == 1:    # a term dropped or added
+    if (a.kind == "sum" or b.kind == "sum") and len(ta) != len(tb):    # terms dropped or added
         longer, shorter = (ta, tb) if len(ta) > len(tb) else (tb, ta)
-        lt, st = [(s, k.key) for s, k in longer], [(s, k.key) for s, k in shorter]
-        for i in range(len(lt)):
-            if lt[:i] + lt[i + 1:] == st:
-                term = signed(*longer[i])
-                if max(a.size, b.size) <= SMALL:
-                    return [(ctx, a, b, None)]
-                return [(ctx, term, ZERO, None) if longer is ta else (ctx, ZERO, term, None)]
+        extra, j = [], 0
+        for s_, k in longer:             # the shorter sum's terms, in order, among the longer's
+            if j < len(shorter) and (s_, k.key) == (shorter[j][0], shorter[j][1].key):
+                j += 1
+            else:
+                extra.append((s_, k))
+        if j == len(shorter):
+            if max(a.size, b.size) <= SMALL:
+                return [(ctx, a, b, None)]
+            term = add(*extra)
+            return [(ctx, term, ZERO, None) if longer is ta else (ctx, ZERO, term, None)]
     return [(ctx, a, b, None)]
 
 
@@ -849,7 +853,7 @@ def diff(old: Graph, new: Graph, cap: int = 24) -> list[Change]:
             places = [f"every check ({len(places)})"]
         where = ("; " if any(", block" in p for p in places) else ", ").join(places)
         wide = cap
-        while po(x) == po(y) and x.key != y.key and wide < 4 * cap:   # cut short to the same text
+        while po(x) == po(y) and x.key != y.key and wide < 2 * cap:   # cut short to the same text
             wide *= 4
             po, pn = Printer(False, wide), Printer(True, wide)
         changes.append(Change(where, po(x), po(y), pn(x), pn(y)))
