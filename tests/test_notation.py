@@ -11,7 +11,7 @@ from stiefelsym.claims import Claim, Size, admissible, load_catalog
 from stiefelsym.ir import compile_claim
 from stiefelsym.ir.notation import changes_text, describe, diff, outputs, render
 from stiefelsym.latex import math_ok
-from stiefelsym.mutate import Mutant, MutantOutcome, MutationReport, ClaimMutation, mutants, notation
+from stiefelsym.mutate import ClaimMutation, MutantOutcome, MutationReport, mutants, notation
 from stiefelsym.report import render_markdown, render_latex, render_mutation_markdown
 from stiefelsym.runner import graph_change, verify
 from stiefelsym.scene import REALIZATIONS

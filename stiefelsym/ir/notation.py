@@ -109,7 +109,7 @@ def _split(x: Expr) -> tuple[int, Fraction, tuple]:
 
 def prod(*xs: Expr) -> Expr:
     """The product of xs (flattened; signs and rational coefficients collected in front)."""
-    sign, coeff, factors = 1, Fraction(1), []
+    sign, coeff, factors = 1, Fraction(1), []  # type: tuple[int, Fraction, list[Expr]]
     for x in xs:
         s, c, f = _split(x)
         if len(factors) + len(f) > FLAT_MAX:          # a shared product is not copied without end
@@ -133,8 +133,9 @@ def neg(x: Expr) -> Expr:
 
 def add(*terms: tuple[int, Expr]) -> Expr:
     """The sum of signed terms (flattened; a term's own sign taken into its sign)."""
-    signs, kids = [], []
-    terms = [(s, t) for s, t in terms if not (t.kind == "num" and t.data[0] == 0)] or [(1, ZERO)]   # 0 + x = x
+    signs: list[int] = []
+    kids: list[Expr] = []
+    terms = tuple((s, t) for s, t in terms if not (t.kind == "num" and t.data[0] == 0)) or ((1, ZERO),)  # 0+x=x
     for s, t in terms:
         if t.kind == "sum" and len(kids) + len(t.kids) <= FLAT_MAX:   # (a shared sum: not copied without end)
             signs += [s * u for u in t.data[0]]
@@ -496,7 +497,8 @@ class Printer:
         return _frac(v, self.tex), (ATOM if v.denominator == 1 else PROD)
 
     def _sum(self, e: Expr, budget: int) -> tuple[str, int]:
-        out, used = [], 0
+        out: list[str] = []
+        used = 0
         minus = "-" if self.tex else "−"
         for k, (s, t) in enumerate(zip(e.data[0], e.kids)):
             room = budget - used
@@ -649,7 +651,7 @@ def latex(e: Expr, cap: int = CAP) -> str:
 
 def render(g: Graph, ref: Ref | int, tex: bool = False, cap: int = CAP) -> str:
     """Node ``ref`` of ``g`` in the paper's notation."""
-    e = Reader(g).node(ref if type(ref) is int else ref.i)
+    e = Reader(g).node(ref.i if isinstance(ref, Ref) else ref)
     return latex(e, cap) if tex else unicode(e, cap)
 
 
@@ -725,7 +727,7 @@ def _diff_at(a: Expr, b: Expr, deep: bool, memo: dict) -> list[tuple]:
             changed = [i for i, (x, y) in enumerate(zip(a.kids, b.kids)) if x.key != y.key]
             for i in changed:
                 out += _diff(a.kids[i], b.kids[i], _where(a, i), deep, memo)
-            kid = a.kids[changed[0]] if changed else None
+            kid = a.kids[changed[0]] if changed else a
             if (a.kind == "prod" and len(changed) == 1 and a.size <= SMALL and len(out) == 1
                     and out[0][1].kind == out[0][2].kind == "atom" and out[0][3] is None
                     and out[0][1].key in (kid.key, kid.kids[0].key if kid.kind == "post" else None)):
@@ -848,10 +850,10 @@ def diff(old: Graph, new: Graph, cap: int = 24) -> list[Change]:
         seen.add(k)
         if alt is not None and len(contexts[k]) == 1:
             x, y = alt
-        places = [_place(nm, blocks) for nm, blocks in grouped[k].items()]
-        if len(places) > 2 and set(grouped[k]) == set(names) and all(b == [()] for b in grouped[k].values()):
-            places = [f"every check ({len(places)})"]
-        where = ("; " if any(", block" in p for p in places) else ", ").join(places)
+        texts = [_place(nm, blocks) for nm, blocks in grouped[k].items()]
+        if len(texts) > 2 and set(grouped[k]) == set(names) and all(b == [()] for b in grouped[k].values()):
+            texts = [f"every check ({len(texts)})"]
+        where = ("; " if any(", block" in p for p in texts) else ", ").join(texts)
         wide = cap
         while po(x) == po(y) and x.key != y.key and wide < 2 * cap:   # cut short to the same text
             wide *= 4
