@@ -44,8 +44,9 @@ def test_products_and_transposes_by_juxtaposition():
 def test_sums_with_signs_and_coefficients_as_fractions():
     out = _show(lambda s: {"E": s.Phi - s.q(1, 2) * (s.X @ s.P.T) + 2 * s.A,
                            "F": s.A - (-(s.X @ s.X.T)), "G": s.Phi / 3, "D": s.Phi / s.lam,
-                           "C": s.q(-3, 4) * s.A})
-    assert out == {"E": "Φ − ½XPᵀ + 2A", "F": "A + XXᵀ", "G": "⅓Φ", "D": "Φ/λ", "C": "−¾A"}
+                           "C": s.q(-3, 4) * s.A, "Z": s.A - s.A + s.X @ s.P.T, "N": s.q(1, 1) / s.lam})
+    assert out == {"E": "Φ − ½XPᵀ + 2A", "F": "A + XXᵀ", "G": "⅓Φ", "D": "Φ/λ", "C": "−¾A", "Z": "XPᵀ",
+                   "N": "λ⁻¹"}
     tex = _show(lambda s: {"E": s.Phi - s.q(1, 2) * (s.X @ s.P.T), "D": s.Phi / s.lam}, tex=True)
     assert tex == {"E": r"\Phi - \tfrac{1}{2} X P^T", "D": r"\frac{\Phi}{\lambda}"}
 

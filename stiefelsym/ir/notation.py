@@ -147,6 +147,18 @@ def add(*terms: tuple[int, Expr]) -> Expr:
             s, t = -s, num(-t.data[0])
         signs.append(s)
         kids.append(t)
+    # A − A = 0: a letter and its negative cancel (a zero block written so); larger terms stay, so that a
+    # change that makes two terms cancel reads as the change of one of them
+    i = 0
+    while i < len(kids):
+        j = None if kids[i].kind != "atom" else next(
+            (j for j in range(i + 1, len(kids)) if kids[j].key == kids[i].key and signs[j] == -signs[i]), None)
+        if j is None:
+            i += 1
+            continue
+        del kids[j], signs[j], kids[i], signs[i]
+    if not kids:
+        return ZERO
     if len(kids) == 1 and signs[0] == 1:
         return kids[0]
     return _mk("sum", (tuple(signs),), kids)
@@ -282,6 +294,8 @@ class Reader:
                 return atom(*LETTERS[name])
             if name == "a" and self._is(obj, "scene"):
                 return atom("a", "a")
+            if name in LETTERS:         # a letter of another point: Φ(at_point(…))
+                return func(LETTERS[name][0], [x(obj)], LETTERS[name][1])
             return func(name, [x(obj)])
         if op == "call":
             return self._call(a[1], a[2], a[3])
