@@ -123,12 +123,31 @@ def graph_pair(printed: Callable, variant: Callable, n: int | None, r: int | Non
     """The graphs of a claim's function and of a variant of it (a mutant, a correction) traced the same
     way: both with symbolic sizes when both trace so, otherwise both at (n, r); None when either does
     not trace (a refused or ill-typed variant).  Traced once each (and shared with the runs' cache)."""
-    a, b = _compile(printed, None, None, constraints), _compile(variant, None, None, constraints)
+    a, b = _printed(printed, None, None, constraints), _compile(variant, None, None, constraints)
     if isinstance(a, Graph) and isinstance(b, Graph):
         return a, b
     if n is None:
         return None
-    a, b = _compile(printed, n, r, constraints), _compile(variant, n, r, constraints)
+    a, b = _printed(printed, n, r, constraints), _compile(variant, n, r, constraints)
     if isinstance(a, Graph) and isinstance(b, Graph):
         return a, b
     return None
+
+
+#: the graphs of the claims as printed that variants were compared with (a mutation analysis compares
+#: every mutant of a claim with one graph, which the runs' smaller cache may have dropped meanwhile)
+_PRINTED: "OrderedDict[tuple, Any]" = OrderedDict()
+PRINTED_CACHE_SIZE = 64
+
+
+def _printed(func: Callable, n: int | None, r: int | None, constraints: tuple[str, Callable]) -> Any:
+    key = (id(func), n, r, constraints[0])
+    hit = _PRINTED.get(key)
+    if hit is not None and hit[0] is func:
+        _PRINTED.move_to_end(key)
+        return hit[1]
+    out = _compile(func, n, r, constraints)
+    _PRINTED[key] = (func, out)
+    while len(_PRINTED) > PRINTED_CACHE_SIZE:
+        _PRINTED.popitem(last=False)
+    return out
