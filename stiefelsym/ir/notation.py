@@ -236,9 +236,15 @@ def identity(m: Any) -> Expr:
 class Reader:
     """The expressions of one graph's nodes (each node read once)."""
 
-    def __init__(self, g: Graph) -> None:
+    def __init__(self, g: Graph, twin: "Reader | None" = None) -> None:
         self.g = g
         self.memo: dict[int, Expr] = {}
+        # a graph read next to another (a mutant next to its claim): a node whose key the other graph
+        # has is that graph's expression, read once
+        self.twin = twin
+        if twin is not None:
+            self.keys = node_keys(g)
+            self.twin_index = {k: i for i, k in enumerate(node_keys(twin.g))}
 
     def node(self, i: int) -> Expr:
         if i not in self.memo:
@@ -248,6 +254,11 @@ class Reader:
                 j = stack.pop()
                 if j in todo or j in self.memo:
                     continue
+                if self.twin is not None:
+                    t = self.twin_index.get(self.keys[j])
+                    if t is not None:
+                        self.memo[j] = self.twin.node(t)
+                        continue
                 todo.add(j)
                 stack.extend(self.g.refs(j))
             for j in sorted(todo):
@@ -452,6 +463,14 @@ class Reader:
         if name == "constraint_bracket_matrix":
             return atom("C", "C")
         return func(name, [x(v) for v in args] + self._kws(kw))
+
+
+def reader(g: Graph) -> Reader:
+    """The graph's reader, kept with the graph (a claim as printed is compared with all its mutants)."""
+    r = g.cache.get("notation")
+    if r is None:
+        r = g.cache["notation"] = Reader(g)
+    return r
 
 
 # ---------------------------------------------------------------------------------------------
@@ -818,7 +837,8 @@ def diff(old: Graph, new: Graph, cap: int = 24) -> list[Change]:
     with the expression it replaced.  Equal changes at several places of one output are one change
     (with every block named).  Empty when the graphs compute the same outputs."""
     ko, kn = node_keys(old), node_keys(new)
-    ro, rn = Reader(old), Reader(new)
+    ro = reader(old)
+    rn = Reader(new, ro)
     po, pn = Printer(False, cap), Printer(True, cap)
     out_old, out_new = outputs(old), dict(outputs(new))
     found: list[tuple] = []
