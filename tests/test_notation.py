@@ -67,7 +67,8 @@ def test_commutator_trace_pairing_entry_and_block():
     tex = _show(lambda s: {"b": block([[s.X.T @ s.X, s.Ir], [s.Ir, -s.Ir]]), "k": s.killing(s.Phi, s.xi)},
                 tex=True)
     assert tex == {"b": r"\begin{pmatrix}X^T X & I_r\\ I_r & -I_r\end{pmatrix}", "k": r"\langle \Phi, \xi\rangle"}
-    assert _show(lambda s: {"e": s.X[0, 1] * s.P[1, 0]}, 3, 2) == {"e": "X₁₂P₂₁"}
+    assert _show(lambda s: {"e": s.X[0, 1] * s.P[1, 0], "b": s.X[0:2, :].T @ s.P[0:2, :]}, 3, 2) == \
+        {"e": "X₁₂P₂₁", "b": "X[1..2, :]ᵀP[1..2, :]"}
 
 
 def test_derivative_along_a_flow_and_gradient():

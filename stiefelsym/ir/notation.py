@@ -383,7 +383,7 @@ class Reader:
     def _entry(self, m: Expr, i: Any, j: Any) -> Expr:
         if type(i) is int and type(j) is int:
             u = f"{i + 1}{j + 1}" if i < 9 and j < 9 else f"{i + 1},{j + 1}"
-            return _mk("entry", (u.translate(_SUB_DIGITS).replace(",", "‚"), u), (m,))
+            return _mk("entry", (u.translate(_SUB_DIGITS), u), (m,))
 
         def part(p: Any) -> str:
             if type(p) is int:
@@ -632,7 +632,7 @@ class Printer:
     def _slice(self, e: Expr, budget: int) -> tuple[str, int]:
         base = self.sub(e.kids[0], budget, ATOM)
         if self.tex:
-            return base + r"_{[" + e.data[0].replace("..", r"..") + "]}", ATOM
+            return base + r"_{[" + e.data[0] + "]}", ATOM
         return base + "[" + e.data[0] + "]", ATOM
 
     def _index(self, e: Expr, budget: int) -> tuple[str, int]:
