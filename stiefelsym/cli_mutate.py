@@ -261,15 +261,17 @@ def _search(engine: Any, claims: Sequence[Claim], ids: Sequence[str], sizes: Seq
         def seen(m: Any, ok: bool) -> None:
             tried[0] += 1
             if ok and fmt == "text":
-                click.echo(f"{c.id}: correction passes: {m.description}")
+                click.echo(f"{c.id}: correction passes: {m.text}")
         try:
             found = engine.search_corrections(c, plan_sizes, methods, seed, on_candidate=seen)
         except ValueError as exc:
             raise MutateInputError(str(exc)) from None
         where = ", ".join(f"({s.n},{s.r})" for s in plan_sizes)
         out["claims"].append({"claim": c.id, "sizes": [[s.n, s.r] for s in plan_sizes], "candidates": tried[0],
-                              "corrections": [{"description": m.description, "operator": m.operator,
-                                               "source": m.source, "expect": m.expect} for m in found]})
+                              "corrections": [{"notation": engine.notation_text(m.notation),
+                                               "description": m.description, "operator": m.operator,
+                                               "source": m.source, "expect": m.expect,
+                                               "changes": list(m.notation)} for m in found]})
         if fmt == "text":
             click.echo(f"{c.id}: {len(found)} of {tried[0]} candidates pass every method ({', '.join(methods)}) "
                        f"at {where}, seed {seed}")

@@ -5,7 +5,8 @@ with symbolic sizes).  :func:`certificate_problems` refuses a dimension-free
 ``proved`` without a certificate, or with one the independent checker rejects;
 :func:`check_results` re-traces every record's claim, compares the digests, and
 re-derives every dimension-free certificate, so that a hand-edited file (a forged
-verdict, a certificate moved to another claim) is caught.
+verdict, a certificate moved to another claim, a correction's change in the paper's
+notation that is not its graph's) is caught.
 """
 from __future__ import annotations
 
@@ -90,6 +91,13 @@ def check_results(records: list[dict], registry: Registry, echo: Callable[[str],
                  f"claim's ({digest[:12] or 'it does not trace'})")
             bad += 1
             continue
+        if r.get("change") and func is not None:
+            from .runner import graph_change
+            if _canonical(graph_change(claim, func, size)) != _canonical(r.get("change")):
+                echo(f"REJECTED {where}: the record's change in the paper's notation is not what the graphs of "
+                     "the claim and its correction give")
+                bad += 1
+                continue
         if rerun and r.get("method") != "free":
             again_fixed = run_one(claim, size, r.get("method"), r.get("seed") or 0, func, hard=hard)
             if again_fixed.verdict != r.get("verdict"):

@@ -121,6 +121,14 @@ class Mutant:
     #: builds the mutant with each residual a − b replaced by its left side a (errata search: a
     #: candidate whose left sides vanish too is vacuous); None: no such test
     left: Callable[[], Callable | None] | None = field(default=None, repr=False, compare=False)
+    #: what changed in the paper's notation (:func:`notation`): one dict per change (where, old, new
+    #: and their LaTeX); filled in for the corrections :func:`search_corrections` returns
+    notation: tuple = ()
+
+    @property
+    def text(self) -> str:
+        """The change in the paper's notation, with the source edit in parentheses."""
+        return described(list(self.notation), self.description)
 
 
 @dataclass
@@ -773,6 +781,40 @@ def _mutated_many(defn: ast.FunctionDef, sites: Sequence[_Site]) -> ast.Function
     return clone
 
 
+# --------------------------------------------------------------------------- the paper's notation
+
+def notation(claim: Claim, m: Mutant, size: Size | None = None) -> list[dict[str, str]]:
+    """What the mutant (or correction) ``m`` changes in the claim's graph, in the paper's notation
+    (:func:`stiefelsym.runner.graph_change`; ``size``: where the graphs are traced when they need
+    fixed sizes, by default :func:`notation_size` of the claim's sizes).  [] for a mutant that does
+    not trace or that changes the expectation only."""
+    from .runner import graph_change
+    if m.expect is not None and m.func is claim.func:
+        return []
+    if size is None:
+        size = notation_size([s for s in claim.sizes if not claim.expects_failure(s.n, s.r)] or list(claim.sizes))
+    return graph_change(claim, m.func, size)
+
+
+def notation_size(sizes: Iterable[Size | None]) -> Size | None:
+    """The size at which a change is printed (a claim that reads coordinates traces per size): the
+    smallest n with 1 < r < n, else the smallest n (small explicit matrices read best)."""
+    fixed = sorted((s for s in sizes if s is not None), key=lambda s: (not 1 < s.r < s.n, s.n, s.r))
+    return fixed[0] if fixed else None
+
+
+def notation_text(changes: Sequence[dict[str, str]]) -> str:
+    """The changes in Unicode, one line (:func:`stiefelsym.ir.notation.changes_text`)."""
+    from .ir.notation import changes_text
+    return changes_text(changes)
+
+
+def described(changes: Sequence[dict[str, str]], description: str) -> str:
+    """The paper's notation first, the source edit after it in parentheses."""
+    text = notation_text(changes)
+    return f"{text} (source: {description})" if text else description
+
+
 # --------------------------------------------------------------------------- sizes and plan
 
 def mutation_sizes(claim: Claim, n_max: int = DEFAULT_N_MAX, count: int = DEFAULT_SIZE_COUNT) -> list[Size]:
@@ -861,6 +903,8 @@ class MutantOutcome:
     killed_by: dict[str, str] = field(default_factory=dict)
     #: methods that passed the mutant at a size where another method refuted it (free: proved it)
     survived: list[str] = field(default_factory=list)
+    #: what changed in the paper's notation (:func:`notation`)
+    notation: list[dict[str, str]] = field(default_factory=list)
 
     @property
     def label(self) -> str:
@@ -877,7 +921,7 @@ class MutantOutcome:
         """One greppable line."""
         per = "; ".join(f"{m} {v}" for m, v in self.verdicts().items())
         tag = "  SURVIVOR of " + ", ".join(self.survived) if self.survived else ""
-        return f"{self.label} {self.classification}: {self.description} [{per}]{tag}"
+        return f"{self.label} {self.classification}: {described(self.notation, self.description)} [{per}]{tag}"
 
 
 @dataclass
@@ -1192,10 +1236,12 @@ def _claim_task(ci: int) -> _ClaimRun:
                                      _run_cells(claim, plan, seed, None, None), "baseline")
     finally:
         loan.recording = False
+    where = notation_size(s for s, _ in plan)
     try:
         for m in _select(muts, _WORK["limit"], _WORK["only"]):
             o = MutantOutcome(claim.id, m.index, m.description, m.lineno, m.operator, m.source,
-                              _run_cells(claim, plan, seed, m.func, m.description))
+                              _run_cells(claim, plan, seed, m.func, m.description),
+                              notation=notation(claim, m, where))
             run.mutants.append(classify(o, run.baseline))
     finally:
         loan.forget(claim.id)      # its points serve no other claim
@@ -1277,6 +1323,7 @@ def search_corrections(claim: Claim, sizes: Sequence[Size] | None = None,
                 break
             ok = bool(plan) and all(passes(m, s, meth) for s, meth in plan) and not vacuous(m)
             if ok:
+                m = replace(m, notation=tuple(notation(claim, m, notation_size(s for s, _ in plan))))
                 found.append(m)
             if on_candidate is not None:
                 on_candidate(m, ok)

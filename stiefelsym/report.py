@@ -21,6 +21,7 @@ from typing import Any, Callable, Iterable, Sequence
 
 from . import paperref, sizerules
 from .latex import unicode_name, math_ok, split_math, tex_balanced, tex_display, tex_escape, tex_text
+from .ir.notation import changes_text as change_text
 from .results import PASSING, VERDICTS, Result
 
 DEFAULT_TITLE = ("Verification of Fedorov & Jovanović, "
@@ -121,6 +122,13 @@ class ClaimResults:
             self.printed.append(r)
         else:
             self.variants.setdefault(r.variant, []).append(r)
+
+    def change_of(self, variant: str) -> list[dict[str, str]]:
+        """What a correction changes in the claim's graph (paper notation), from its records: that of
+        symbolic sizes, else of the smallest size with 1 < r < n, else of the smallest size."""
+        rs = [r for r in self.variants.get(variant, []) if r.change]
+        rs.sort(key=lambda r: (r.n is not None, r.n is None or not 1 < r.r < r.n, r.n or 0, r.r or 0))
+        return rs[0].change if rs else []
 
     @property
     def failures(self) -> list[Result]:
@@ -700,7 +708,8 @@ def _errata_body(claims: list[ClaimResults], escape: Callable[[str], str], errat
 def _md_erratum(c: ClaimResults) -> list[str]:
     facts = _erratum_facts(c)
     out = [f"### `{c.id}` {_md_escape(labels(c.paper))}".rstrip(), ""]
-    out += [f"**Note for the authors.** {_md_escape(_erratum_note(c, facts))}", ""]
+    out += [f"**Note for the authors.** {_md_escape(_erratum_note(c, facts, correction=lambda v: _with_change(c, v)))}",
+            ""]
     st = _md_statement(c.statement)
     if st:
         out += ["As printed:", "", st, ""]
@@ -740,7 +749,7 @@ def _md_erratum_tail(c: ClaimResults, facts: dict[str, Any], w: Result, out: lis
         out.append("")
     if facts["verified"]:
         out += ["Corrections found (verified at every size of the claim): "
-                + "; ".join(f"{_md_escape(v)}" for v in facts["verified"]) + ".", ""]
+                + "; ".join(_md_with_change(c, v) for v in facts["verified"]) + ".", ""]
     return out + _md_corrections(c)
 
 
@@ -836,6 +845,23 @@ def _tex_letter(part: str) -> str:
     return part
 
 
+def _with_change(c: ClaimResults, variant: str) -> str:
+    """A registered correction, in Unicode: its change of the graph in the paper's notation, then its
+    own words (the catalog's, unchanged)."""
+    change = change_text(c.change_of(variant))
+    return f"{change} (registered as: {variant})" if change else variant
+
+
+def _md_with_change(c: ClaimResults, variant: str) -> str:
+    change = _md_change(c.change_of(variant))
+    return f"{change} (registered as: {_md_escape(variant)})" if change else _md_escape(variant)
+
+
+def _tex_with_change(c: ClaimResults, variant: str) -> str:
+    change = _tex_change(c.change_of(variant))
+    return (f"{change} {{\\small (registered as: {tex_text(variant)})}}" if change else tex_text(variant))
+
+
 def _md_corrections(c: ClaimResults) -> list[str]:
     if not c.variants:
         return ["No candidate correction was checked.", ""]
@@ -843,12 +869,14 @@ def _md_corrections(c: ClaimResults) -> list[str]:
     rows = []
     for var, rs in c.variants.items():
         status, phrases = correction_summary(rs, planned)
-        rows.append([_md_cell(var), f"**{status}**" if status == "verified" else status,
+        change = _md_change(c.change_of(var)).replace("|", r"\|")
+        rows.append([change or "–", _md_cell(var), f"**{status}**" if status == "verified" else status,
                      _md_cell("; ".join(phrases))])
     where = (f" The claim as printed was run at {len(planned)} size{'s' * (len(planned) != 1)} "
              f"{format_sizes(planned)}; a correction is verified only if it passes at every one of them "
              "and fails nowhere.") if planned else ""
-    return [f"Candidate corrections:{where}", ""] + _md_table(["correction", "status", "runs"], rows, "lll")
+    return [f"Candidate corrections:{where}", ""] + _md_table(["correction (in the graph)", "registered as", "status",
+                                                               "runs"], rows, "llll")
 
 
 # --------------------------------------------------------------------------- LaTeX
@@ -1192,7 +1220,7 @@ def _fit_derivation(chunk: str) -> str:
 def _tex_erratum(c: ClaimResults, reruns: int = MAX_ERRATUM_RERUNS) -> list[str]:
     facts = _erratum_facts(c)
     out = [_tex_claim_heading(c)]
-    out += [r"\textbf{Note for the authors.} " + _erratum_note(c, facts, tex_escape, tex_text), ""]
+    out += [r"\textbf{Note for the authors.} " + _erratum_note(c, facts, tex_escape, lambda v: _tex_with_change(c, v)), ""]
     if c.statement.strip():
         out += ["As printed:", tex_display(c.statement)]
     w = c.failures[0]
@@ -1230,7 +1258,7 @@ def _tex_erratum_tail(c: ClaimResults, facts: dict[str, Any], w: Result, out: li
             [_tt(x) for x in others[:reruns]] + [tex_escape(m) for m in more])
     if facts["verified"]:
         out += [tex_escape("Corrections found (verified at every size of the claim): ")
-                + "; ".join(tex_text(v) for v in facts["verified"]) + ".", ""]
+                + "; ".join(_tex_with_change(c, v) for v in facts["verified"]) + ".", ""]
     return out + _tex_corrections(c)
 
 
@@ -1241,7 +1269,7 @@ def _tex_corrections(c: ClaimResults) -> list[str]:
     items = []
     for var, rs in c.variants.items():
         status, phrases = correction_summary(rs, planned)
-        items.append(tex_text(var) + " --- " + (r"\textbf{verified}" if status == "verified" else status)
+        items.append(_tex_with_change(c, var) + " --- " + (r"\textbf{verified}" if status == "verified" else status)
                      + ". " + tex_escape("; ".join(phrases) + "."))
     intro = "Candidate corrections:"
     if planned:
@@ -1340,7 +1368,9 @@ def render_mutation_summary(mutation: Any) -> str:
     if surv:
         lines.append("survivors (a method passed a mutant another method refuted, or free proved it):")
         for o in surv:
-            lines.append(f"  {_mutant_label(o)} survived {', '.join(o['survived'])}: {o.get('description')}")
+            change = change_text(o.get("notation"))
+            lines.append(f"  {_mutant_label(o)} survived {', '.join(o['survived'])}: "
+                         + (f"{change} (source: {o.get('description')})" if change else f"{o.get('description')}"))
             lines.append(f"    {_mutant_verdicts(o)}")
     return "\n".join(lines) + "\n"
 
@@ -1365,8 +1395,44 @@ def _md_described(text: str) -> str:
     return "".join(_md_code(p) if i % 2 else _md_escape(p) for i, p in enumerate(parts))
 
 
+def _md_change(changes: Sequence[dict[str, str]] | None) -> str:
+    return _md_escape(change_text(changes)).replace("[", r"\[").replace("]", r"\]")
+
+
+def _tex_change(changes: Sequence[dict[str, str]] | None) -> str:
+    """The change in LaTeX: the place in text, old → new in math (Unicode escaped where the LaTeX of
+    an expression is not safe in math mode)."""
+    if not changes:
+        return ""
+    if not changes[0].get("where") and not changes[0].get("old"):
+        return tex_escape("no change in the graph")
+    parts = []
+    for c in changes:
+        if c.get("more"):
+            parts.append(tex_escape(f"and {c['more']} more change{'s' * (c['more'] != 1)}"))
+            continue
+        old, new = c.get("old_tex", ""), c.get("new_tex", "")
+        math = (f"${old} \\to {new}$" if old and new and all(math_ok(t) and t.isascii() for t in (old, new))
+                else tex_escape(f"{c.get('old', '')} → {c.get('new', '')}"))
+        parts.append(tex_escape(f"in {c.get('where', '')}: ") + math)
+    return "; ".join(parts)
+
+
+def _md_mutant_text(o: dict[str, Any]) -> str:
+    """The paper's notation first (where the mutant traces), the source edit after it."""
+    change = _md_change(o.get("notation"))
+    source = _md_described(o.get("description", ""))
+    return f"{change} (source: {source})" if change else source
+
+
+def _tex_mutant_text(o: dict[str, Any]) -> str:
+    change = _tex_change(o.get("notation"))
+    source = tex_escape(o.get("description", ""))
+    return f"{change} {{\\small (source: {source})}}" if change else source
+
+
 def _md_mutant_item(o: dict[str, Any], verdicts: bool = True) -> str:
-    text = f"- `{_mutant_label(o)}` {_md_described(o.get('description', ''))}"
+    text = f"- `{_mutant_label(o)}` {_md_mutant_text(o)}"
     if o.get("survived"):
         text += f": **survived {', '.join(o['survived'])}**"
     if verdicts:
@@ -1492,14 +1558,14 @@ def _tex_mutation_section(data: dict[str, Any]) -> list[str]:
         out.append(tex_escape(f"{len(surv)} survivors: a method passed a mutant that another method refuted "
                               "at the same size, or the dimension-free method proved a mutant that is not "
                               "equivalent."))
-        out += _tex_items([r"\texttt{" + tex_escape(_mutant_label(o)) + "} " + tex_escape(o.get("description", ""))
+        out += _tex_items([r"\texttt{" + tex_escape(_mutant_label(o)) + "} " + _tex_mutant_text(o)
                            + r": \textbf{survived " + tex_escape(", ".join(o["survived"])) + "} ("
                            + tex_escape(short(_mutant_verdicts(o), 300)) + ")" for o in surv])
     else:
         out.append("No survivor.")
     equiv = _mutants(data, "equivalent")
     out += ["", tex_escape(f"{len(equiv)} equivalent mutants (true statements)" + (":" if equiv else "."))]
-    out += _tex_items([r"\texttt{" + tex_escape(_mutant_label(o)) + "} " + tex_escape(o.get("description", ""))
+    out += _tex_items([r"\texttt{" + tex_escape(_mutant_label(o)) + "} " + _tex_mutant_text(o)
                        for o in equiv[:40]])
     if len(equiv) > 40:
         out.append(tex_escape(f"… and {len(equiv) - 40} more (in mutation.md)."))

@@ -66,6 +66,9 @@ class Result:
     certificate_data: dict[str, Any] | None = None
     #: the digest of the claim's graph (at this size, or with symbolic sizes) the verdict is about
     digest: str = ""
+    #: of a correction's record: what it changes in the claim's graph, in the paper's notation (one
+    #: dict per change: where, old, new and their LaTeX old_tex, new_tex; see stiefelsym.ir.notation)
+    change: list[dict[str, str]] = field(default_factory=list)
 
     @property
     def size(self) -> str:

@@ -139,6 +139,28 @@ def graph_digest(claim: Claim, size: Size | None, func: Callable | None = None) 
         return ""
 
 
+def graph_change(claim: Claim, func: Callable, size: Size | None) -> list[dict[str, str]]:
+    """What ``func`` (a correction or a mutant of the claim) changes in the claim's graph, in the paper's
+    notation (:func:`stiefelsym.ir.notation.diff`): one dict per change; both graphs traced with
+    symbolic sizes when both trace so, else at ``size``.  [] when either does not trace, and one
+    empty change (where = old = "") when the graphs compute the same outputs."""
+    from .ir import graph_pair
+    from .ir.notation import diff
+    from .scene import REALIZATIONS
+    cons = REALIZATIONS[claim.realization]
+    try:
+        pair = graph_pair(claim.func, func, size.n if size else None, size.r if size else None,
+                          (cons.name, cons.build))
+    except Exception:   # noqa: BLE001 - what does not trace has no notation; its runs say why
+        return []
+    if pair is None:
+        return []
+    changes = diff(*pair)
+    if not changes:
+        return [{"where": "", "old": "", "new": "", "old_tex": "", "new_tex": ""}]
+    return [c.to_json() for c in changes]
+
+
 def _blank(claim: Claim, size: Size | None, method: str, seed: int | None) -> Result:
     from .methods import _base_result
     label = "free" if size is None else method
@@ -259,6 +281,8 @@ def _settle(outcome: Outcome, task: Task, claims: list[Claim], seed: int, hard: 
         res.verdict = "inconclusive" if outcome.kind == "timeout" else "error"
         res.message = outcome.message
         res.seconds = outcome.seconds
+    if k >= 0:
+        res.change = graph_change(c, c.corrections[k].func, size)
     return _finish(res, c, variant, hard)
 
 

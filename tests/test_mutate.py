@@ -19,7 +19,7 @@ from stiefelsym.claims import Claim, Size, admissible, load_catalog
 from stiefelsym.cli_mutate import mutate as mutate_command
 from stiefelsym.mutate import (LETTER_SWAPS, OPERATORS, SEARCH_EXTRAS, Cell, MutantOutcome, MutationReport,
                                classify, correction_candidates, helper_functions, mutants, mutation_sizes,
-                               run_mutation, search_corrections)
+                               notation_text, run_mutation, search_corrections)
 from stiefelsym.report import render_mutation_markdown, render_mutation_summary
 from stiefelsym.runner import run_one
 
@@ -389,13 +389,16 @@ def test_search_recovers_the_catalogs_resolvent_erratum():
     assert [m.description for m in found] == [
         "in inverse_of_A_plus_lambda(), line 234: invert the resolvent `s.resolvent(-s.lam)` "
         "(μI − A in place of (μI − A)⁻¹) in `-s.resolvent(-s.lam)`"]
+    # and in the paper's notation: the inverse dropped in every block of 𝓐*_man(λ)
+    assert notation_text(found[0].notation) == "in MAN-LA, blocks (1,1), (1,2), (2,1), (2,2): (A + λIₙ)⁻¹ → λIₙ + A"
 
 
 def test_cli_corrections(tmp_path):
     res = CliRunner().invoke(mutate_command, ["manakov-dual-lax", "--corrections", "--size", "3,2",
                                               "--method", "rational"])
     assert res.exit_code == 0, res.output
-    assert "manakov-dual-lax: correction passes: in inverse_of_A_plus_lambda()" in res.output
+    assert ("manakov-dual-lax: correction passes: in MAN-LA, blocks (1,1), (1,2), (2,1), (2,2): (A + λIₙ)⁻¹ → "
+            "λIₙ + A (source: in inverse_of_A_plus_lambda(), line 234") in res.output
     assert "1 of " in res.output
     res = CliRunner().invoke(mutate_command, ["--corrections"])
     assert res.exit_code == 2

@@ -15,7 +15,7 @@ from .statements import Count, Rank
 from .trace import Dim, TraceRefused, Tracer, TraceScene, block, is_tracer, named, primitive, trace
 
 __all__ = ["Graph", "Named", "Ref", "Size", "Count", "Rank", "Dim", "TraceRefused", "Tracer", "TraceScene",
-           "block", "is_tracer", "named", "primitive", "trace", "compile_claim", "NotDeterministic"]
+           "block", "is_tracer", "named", "primitive", "trace", "compile_claim", "graph_pair", "NotDeterministic"]
 
 
 class NotDeterministic(ValueError):
@@ -116,3 +116,38 @@ def _check_refusals(g: Graph) -> None:
     if g.refusals:
         raise TraceRefused("the claim was refused: " + "; ".join(dict.fromkeys(g.refusals))
                            + " (a refusal the claim caught still counts)")
+
+
+def graph_pair(printed: Callable, variant: Callable, n: int | None, r: int | None,
+               constraints: tuple[str, Callable]) -> tuple[Graph, Graph] | None:
+    """The graphs of a claim's function and of a variant of it (a mutant, a correction) traced the same
+    way: both with symbolic sizes when both trace so, otherwise both at (n, r); None when either does
+    not trace (a refused or ill-typed variant).  Traced once each (and shared with the runs' cache)."""
+    a, b = _printed(printed, None, None, constraints), _compile(variant, None, None, constraints)
+    if isinstance(a, Graph) and isinstance(b, Graph):
+        return a, b
+    if n is None:
+        return None
+    a, b = _printed(printed, n, r, constraints), _compile(variant, n, r, constraints)
+    if isinstance(a, Graph) and isinstance(b, Graph):
+        return a, b
+    return None
+
+
+#: the graphs of the claims as printed that variants were compared with (a mutation analysis compares
+#: every mutant of a claim with one graph, which the runs' smaller cache may have dropped meanwhile)
+_PRINTED: "OrderedDict[tuple, Any]" = OrderedDict()
+PRINTED_CACHE_SIZE = 64
+
+
+def _printed(func: Callable, n: int | None, r: int | None, constraints: tuple[str, Callable]) -> Any:
+    key = (id(func), n, r, constraints[0])
+    hit = _PRINTED.get(key)
+    if hit is not None and hit[0] is func:
+        _PRINTED.move_to_end(key)
+        return hit[1]
+    out = _compile(func, n, r, constraints)
+    _PRINTED[key] = (func, out)
+    while len(_PRINTED) > PRINTED_CACHE_SIZE:
+        _PRINTED.popitem(last=False)
+    return out

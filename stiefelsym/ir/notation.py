@@ -1,0 +1,915 @@
+"""The paper's notation for a graph's nodes, and the smallest change between two graphs.
+
+A node of a graph (:mod:`.graph`) is read back as mathematics: the scene's
+letters (X, P, A, Φ, Ψ, λ, κ, ξ, η, Y, Q...), transposes Xᵀ, products by
+juxtaposition, sums with signs, rational coefficients as fractions, tr(…),
+⟨a, b⟩ = −½ tr(ab), inverses (…)⁻¹, the resolvent (λIₙ − A)⁻¹ (the scene's
+``resolvent(μ)`` is (μIₙ − A)⁻¹), commutators [a, b] (a sum ab − ba), block
+matrices, entries, d/dt along a flow (a dot on a letter), gradients and
+Poisson brackets.  An op or a scene method with no notation of its own is
+written as a function call.  Each node becomes an :class:`Expr` first (sums and
+products flattened, signs and coefficients collected), which is printed in
+Unicode (for Markdown and the terminal) or LaTeX (math mode); a subexpression
+above a size cap is cut short with an ellipsis.
+
+:func:`diff` compares two graphs of one claim at one size (the claim as printed
+and a mutant or a correction of it): per output, the topmost changed
+subexpressions under an unchanged context, each with the expression it
+replaced at the same place, and the block of a block matrix it sits in.
+Nothing here evaluates anything; the graphs are read as data.
+"""
+from __future__ import annotations
+
+import hashlib
+import re
+from dataclasses import dataclass
+from fractions import Fraction
+from typing import Any, Sequence
+
+from .graph import Graph, Named, Ref, Size
+from .evaluate import node_keys
+
+#: at most this many letters and numbers of an expression are printed (beyond: an ellipsis)
+CAP = 40
+#: a node with several changes below it and at most this many letters is reported as a whole
+SMALL = 10
+
+#: at most this many changes are listed (then: "and k more changes")
+MAX_CHANGES = 4
+#: sums and products are flattened up to this many terms or factors (beyond, a part stays one term)
+FLAT_MAX = 256
+#: at most this many blocks are named where one change is made in several
+MAX_BLOCKS = 4
+
+SUM, PROD, ATOM = 1, 2, 3
+
+# ---------------------------------------------------------------------------------------------
+# expressions
+
+
+@dataclass(frozen=True, eq=False)
+class Expr:
+    """A node of the notation: its kind, its own data, its parts, its number of letters and a digest
+    of the whole (equal digests: the same mathematics as printed)."""
+
+    kind: str
+    data: tuple
+    kids: tuple
+    size: int
+    key: bytes
+
+
+def _mk(kind: str, data: tuple = (), kids: Sequence[Expr] = ()) -> Expr:
+    kids = tuple(kids)
+    h = hashlib.blake2b(digest_size=16)
+    h.update(f"{kind}|{data!r}|".encode())
+    for k in kids:
+        h.update(k.key)
+    size = 1 if not kids else sum(k.size for k in kids)
+    return Expr(kind, data, kids, size, h.digest())
+
+
+def atom(u: str, tex: str | None = None) -> Expr:
+    return _mk("atom", (u, u if tex is None else tex))
+
+
+def num(q: Any) -> Expr:
+    return _mk("num", (Fraction(q),))
+
+
+ZERO = num(0)
+
+
+def post(op: str, base: Expr) -> Expr:
+    """A postfix: ``T`` (transpose), ``inv``, ``pow:k``, ``bar`` (complex conjugate); (M⁻¹)⁻¹ = M,
+    (Mᵀ)ᵀ = M and the conjugate of a conjugate are written as M."""
+    if op in ("T", "inv", "bar") and base.kind == "post" and base.data == (op,):
+        return base.kids[0]
+    return _mk("post", (op,), (base,))
+
+
+def func(u: str, args: Sequence[Expr], tex: str | None = None) -> Expr:
+    return _mk("func", (u, tex if tex is not None else r"\mathrm{" + _tex_word(u) + "}"), args)
+
+
+def bracket(kind: str, a: Expr, b: Expr) -> Expr:
+    """``comm`` [a, b], ``killing`` ⟨a, b⟩, ``poisson`` {a, b}, ``canonical`` {a, b}₀."""
+    return _mk("bracket", (kind,), (a, b))
+
+
+def _split(x: Expr) -> tuple[int, Fraction, tuple]:
+    """x as sign · coefficient · factors."""
+    if x.kind == "prod":
+        return x.data[0], x.data[1], x.kids
+    if x.kind == "num":
+        v = x.data[0]
+        return (-1 if v < 0 else 1), abs(v), ()
+    return 1, Fraction(1), (x,)
+
+
+def prod(*xs: Expr) -> Expr:
+    """The product of xs (flattened; signs and rational coefficients collected in front)."""
+    sign, coeff, factors = 1, Fraction(1), []  # type: tuple[int, Fraction, list[Expr]]
+    for x in xs:
+        s, c, f = _split(x)
+        if len(factors) + len(f) > FLAT_MAX:          # a shared product is not copied without end
+            s, c, f = 1, Fraction(1), (x,)
+        sign, coeff = sign * s, coeff * c
+        factors += f
+    if coeff == 0:
+        return ZERO
+    if not factors:
+        return num(sign * coeff)
+    if sign == 1 and coeff == 1 and len(factors) == 1:
+        return factors[0]
+    return _mk("prod", (sign, coeff), factors)
+
+
+def neg(x: Expr) -> Expr:
+    if x.kind == "sum":
+        return _mk("sum", (tuple(-s for s in x.data[0]),), x.kids)
+    return prod(num(-1), x)
+
+
+def add(*terms: tuple[int, Expr]) -> Expr:
+    """The sum of signed terms (flattened; a term's own sign taken into its sign)."""
+    signs: list[int] = []
+    kids: list[Expr] = []
+    terms = tuple((s, t) for s, t in terms if not (t.kind == "num" and t.data[0] == 0)) or ((1, ZERO),)  # 0+x=x
+    for s, t in terms:
+        if t.kind == "sum" and len(kids) + len(t.kids) <= FLAT_MAX:   # (a shared sum: not copied without end)
+            signs += [s * u for u in t.data[0]]
+            kids += t.kids
+            continue
+        if t.kind == "prod" and t.data[0] == -1:
+            s, t = -s, _mk("prod", (1, t.data[1]), t.kids) if (t.data[1] != 1 or len(t.kids) > 1) else t.kids[0]
+        elif t.kind == "num" and t.data[0] < 0:
+            s, t = -s, num(-t.data[0])
+        signs.append(s)
+        kids.append(t)
+    # A − A = 0: a letter and its negative cancel (a zero block written so); larger terms stay, so that a
+    # change that makes two terms cancel reads as the change of one of them
+    i = 0
+    while i < len(kids):
+        j = None if kids[i].kind != "atom" else next(
+            (j for j in range(i + 1, len(kids)) if kids[j].key == kids[i].key and signs[j] == -signs[i]), None)
+        if j is None:
+            i += 1
+            continue
+        del kids[j], signs[j], kids[i], signs[i]
+    if not kids:
+        return ZERO
+    if len(kids) == 1 and signs[0] == 1:
+        return kids[0]
+    return _mk("sum", (tuple(signs),), kids)
+
+
+def signed(s: int, t: Expr) -> Expr:
+    return t if s == 1 else neg(t)
+
+
+# ---------------------------------------------------------------------------------------------
+# the scene's letters
+
+#: scene attribute -> (Unicode, LaTeX)
+LETTERS: dict[str, tuple[str, str]] = {
+    "X": ("X", "X"), "P": ("P", "P"), "A": ("A", "A"), "Ainv": ("A⁻¹", "A^{-1}"), "Phi": ("Φ", r"\Phi"),
+    "Psi": ("Ψ", r"\Psi"), "In": ("Iₙ", "I_n"), "Ir": ("Iᵣ", "I_r"), "xi": ("ξ", r"\xi"),
+    "zeta": ("ζ", r"\zeta"), "eta": ("η", r"\eta"), "theta": ("θ", r"\theta"), "Y": ("Y", "Y"),
+    "Q": ("Q", "Q"), "Zc": ("Z", "Z"), "Zc_dot": ("Ż", r"\dot Z"), "DX": ("δX", r"\delta X"),
+    "DY": ("δY", r"\delta Y"), "DXdot": ("δẊ", r"\delta\dot X"), "DYdot": ("δẎ", r"\delta\dot Y"),
+    "lam": ("λ", r"\lambda"), "kappa": ("κ", r"\kappa"), "eps": ("ε", r"\varepsilon"),
+    # the components of a flow
+    "Xdot": ("Ẋ", r"\dot X"), "Pdot": ("Ṗ", r"\dot P"),
+}
+#: names a claim gives its own parameters (s.scalar, s.generic), when they are Greek
+GREEK = {"alpha": "α", "beta": "β", "gamma": "γ", "delta": "δ", "mu": "μ", "nu": "ν", "rho": "ρ", "sigma": "σ",
+         "tau": "τ", "omega": "ω", "lam": "λ", "kappa": "κ", "eps": "ε", "xi": "ξ", "eta": "η", "zeta": "ζ",
+         "theta": "θ", "phi": "φ", "psi": "ψ", "chi": "χ", "Omega": "Ω", "Lambda": "Λ", "Pi": "Π", "Sigma": "Σ",
+         "AA": "𝔸", "BB": "𝔹"}
+_GREEK_TEX = {"α": r"\alpha", "β": r"\beta", "γ": r"\gamma", "δ": r"\delta", "μ": r"\mu", "ν": r"\nu",
+              "ρ": r"\rho", "σ": r"\sigma", "τ": r"\tau", "ω": r"\omega", "λ": r"\lambda", "κ": r"\kappa",
+              "ε": r"\varepsilon", "ξ": r"\xi", "η": r"\eta", "ζ": r"\zeta", "θ": r"\theta", "φ": r"\varphi",
+              "ψ": r"\psi", "χ": r"\chi", "Ω": r"\Omega", "Λ": r"\Lambda", "Π": r"\Pi", "Σ": r"\Sigma",
+              "𝔸": r"\mathbb{A}", "𝔹": r"\mathbb{B}"}
+_SUB_DIGITS = str.maketrans("0123456789+-nr", "₀₁₂₃₄₅₆₇₈₉₊₋ₙᵣ")
+_SUP_DIGITS = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
+_VULGAR = {Fraction(1, 2): "½", Fraction(1, 3): "⅓", Fraction(2, 3): "⅔", Fraction(1, 4): "¼",
+           Fraction(3, 4): "¾", Fraction(1, 8): "⅛"}
+
+
+def _tex_word(s: str) -> str:
+    return "".join("\\" + c if c in "_&%$#{}" else c for c in s)
+
+
+def name_atom(name: str) -> Expr:
+    """A parameter a claim named (s.scalar("mu"), s.generic("G", ...)): Greek where it spells a Greek
+    letter, its own name otherwise."""
+    u = GREEK.get(name, name)
+    if u in _GREEK_TEX:
+        return atom(u, _GREEK_TEX[u])
+    m = re.fullmatch(r"([A-Za-z]+?)_?(\d+)", name)
+    if m and (len(m.group(1)) == 1 or m.group(1) in GREEK):
+        base = GREEK.get(m.group(1), m.group(1))
+        return atom(base + m.group(2).translate(_SUB_DIGITS), _GREEK_TEX.get(base, base) + "_{" + m.group(2) + "}")
+    if len(name) == 1:
+        return atom(name, name)
+    return atom(name, r"\mathrm{" + _tex_word(name) + "}")
+
+
+def _size_text(m: Any) -> tuple[str, str]:
+    if type(m) is Size:
+        return m.text(), m.text()
+    return str(m), str(m)
+
+
+def identity(m: Any) -> Expr:
+    u, tex = _size_text(m)
+    sub = u.translate(_SUB_DIGITS) if all(c in "0123456789nr" for c in u) else "_" + u
+    return atom("I" + sub, "I_{" + tex + "}")
+
+
+# ---------------------------------------------------------------------------------------------
+# graph -> expressions
+
+
+class Reader:
+    """The expressions of one graph's nodes (each node read once)."""
+
+    def __init__(self, g: Graph, twin: "Reader | None" = None) -> None:
+        self.g = g
+        self.memo: dict[int, Expr] = {}
+        # a graph read next to another (a mutant next to its claim): a node whose key the other graph
+        # has is that graph's expression, read once
+        self.twin = twin
+        if twin is not None:
+            self.keys = node_keys(g)
+            self.twin_index = {k: i for i, k in enumerate(node_keys(twin.g))}
+
+    def node(self, i: int) -> Expr:
+        if i not in self.memo:
+            # the nodes below i first, in order (their numbers are smaller): no deep recursion
+            todo, stack = set(), [i]
+            while stack:
+                j = stack.pop()
+                if j in todo or j in self.memo:
+                    continue
+                if self.twin is not None:
+                    t = self.twin_index.get(self.keys[j])
+                    if t is not None:
+                        self.memo[j] = self.twin.node(t)
+                        continue
+                todo.add(j)
+                stack.extend(self.g.refs(j))
+            for j in sorted(todo):
+                self.memo[j] = self._read(j)
+        return self.memo[i]
+
+    def arg(self, a: Any) -> Expr:
+        t = type(a)
+        if t is Ref:
+            return self.node(a.i)
+        if t is bool or a is None:
+            return atom(repr(a), r"\mathrm{" + repr(a) + "}")
+        if t is int or t is Fraction:
+            return num(a)
+        if t is str:
+            return name_atom(a)
+        if t is Size:
+            return atom(a.text())
+        if t is Named:
+            short = a.qualname.rsplit(".", 1)[-1]
+            return atom(short, r"\mathrm{" + _tex_word(short) + "}")
+        if t is tuple:
+            return _mk("tuple", (), [self.arg(x) for x in a])
+        return atom(repr(a))
+
+    def _is(self, a: Any, op: str, name: str | None = None) -> bool:
+        if type(a) is not Ref:
+            return False
+        if self.g.ops[a.i] != op:
+            return False
+        return name is None or self.g.args[a.i][1] == name
+
+    def _read(self, i: int) -> Expr:
+        op, a = self.g.ops[i], self.g.args[i]
+        x = self.arg
+        if op == "scene":
+            return atom("s")
+        if op == "param":
+            return atom("u" if a[1] == 1 else "u" + str(a[1]).translate(_SUB_DIGITS),
+                        "u" if a[1] == 1 else f"u_{{{a[1]}}}")
+        if op == "attr":
+            obj, name = a[0], a[1]
+            if name in LETTERS and (self._is(obj, "scene") or name in ("Xdot", "Pdot")):
+                return atom(*LETTERS[name])
+            if name == "a" and self._is(obj, "scene"):
+                return atom("a", "a")
+            if name in LETTERS:         # a letter of another point: Φ(at_point(…))
+                return func(LETTERS[name][0], [x(obj)], LETTERS[name][1])
+            return func(name, [x(obj)])
+        if op == "call":
+            return self._call(a[1], a[2], a[3])
+        if op == "prim":
+            short = a[0].qualname.rsplit(".", 1)[-1]
+            return func(short, [x(v) for v in a[1:] if not (self._is(v, "kw") or self._is(v, "scene"))]
+                        + self._kws(a[1:]))
+        if op == "apply":
+            return _mk("apply", (), [x(a[0])] + [x(v) for v in a[1:] if not self._is(v, "kw")] + self._kws(a[1:]))
+        if op == "add":
+            return add((1, x(a[0])), (1, x(a[1])))
+        if op == "sub":
+            p, q = a
+            if self._is(p, "matmul") and self._is(q, "matmul") and self.g.args[p.i] == self.g.args[q.i][::-1]:
+                return bracket("comm", x(self.g.args[p.i][0]), x(self.g.args[p.i][1]))
+            return add((1, x(p)), (-1, x(q)))
+        if op == "neg":
+            v = a[0]
+            if self._is(v, "call", "resolvent") and self._is(self.g.args[v.i][2][0], "neg"):
+                # −((−μ)Iₙ − A)⁻¹ = (A + μIₙ)⁻¹
+                mu = self.g.args[self.g.args[v.i][2][0].i][0]
+                return post("inv", add((1, atom(*LETTERS["A"])), (1, prod(x(mu), atom(*LETTERS["In"])))))
+            return neg(x(v))
+        if op in ("mul", "matmul"):
+            return prod(x(a[0]), x(a[1]))
+        if op == "rmul":
+            return prod(x(a[1]), x(a[0]))
+        if op in ("div", "rdiv"):
+            p, q = (a[0], a[1]) if op == "div" else (a[1], a[0])
+            d, n_ = x(q), x(p)
+            if d.kind == "num" and d.data[0] != 0:
+                return prod(n_, num(1 / d.data[0]))
+            if n_.kind == "num" and d.kind == "atom":        # c/λ = cλ⁻¹
+                return prod(n_, post("inv", d))
+            return _mk("frac", (), (n_, d))
+        if op == "pow":
+            return post(f"pow:{a[1]}", x(a[0]))
+        if op == "T":
+            return post("T", x(a[0]))
+        if op == "inv":
+            return post("inv", x(a[0]))
+        if op == "trace":
+            return func("tr", [x(a[0])])
+        if op == "entry":
+            return self._entry(x(a[0]), a[1], a[2])
+        if op == "item":
+            return self._item(a[0], a[1])
+        if op == "block":
+            rows, cols = a[0], a[1]
+            return _mk("block", (rows, cols), [x(v) for v in a[2]])
+        if op in ("list", "tuple"):
+            return _mk("tuple", (), [x(v) for v in a])
+        if op == "dict":
+            return _mk("tuple", (), [_mk("named", (k,), (x(v),)) for k, v in zip(a[0], a[1])])
+        if op == "fn":
+            return x(a[2])
+        if op == "kw":
+            return _mk("tuple", (), [_mk("named", (k,), (x(v),)) for k, v in a])
+        if op == "rank":       # rank(M) = k (generically, or at every point)
+            return _mk("equals", ("" if a[2] else "everywhere",), (func("rank", [x(a[0])]), x(a[1])))
+        if op == "count":      # a number the claim computed = the printed number
+            return _mk("equals", ("",), (x(a[0]), x(a[1])))
+        if op == "const":
+            return x(a[0])
+        return func(op, [x(v) for v in a])
+
+    def _kws(self, args: tuple) -> list[Expr]:
+        out: list[Expr] = []
+        for v in args:
+            if self._is(v, "kw"):
+                out += [_mk("named", (k,), (self.arg(w),)) for k, w in self.g.args[v.i]]
+        return out
+
+    def _entry(self, m: Expr, i: Any, j: Any) -> Expr:
+        if type(i) is int and type(j) is int:
+            u = f"{i + 1}{j + 1}" if i < 9 and j < 9 else f"{i + 1},{j + 1}"
+            return _mk("entry", (u.translate(_SUB_DIGITS), u), (m,))
+
+        def part(p: Any) -> str:
+            if type(p) is int:
+                return str(p + 1)
+            start, stop, step = p[1:]
+            if start is None and stop is None and step is None:
+                return ":"
+            lo = 1 if start is None else start + 1 if start >= 0 else f"end{start + 1:+d}".replace("+0", "")
+            hi = "end" if stop is None else stop if stop >= 0 else f"end{stop:+d}"
+            return f"{lo}..{hi}" + ("" if step in (None, 1) else f" step {step}")
+        text = f"{part(i)}, {part(j)}"
+        return _mk("slice", (text,), (m,))
+
+    def _item(self, v: Any, key: Any) -> Expr:
+        g = self.g
+        if self._is(v, "call", "gradient") and key in (0, 1):
+            body = self.arg(g.args[v.i][2][0])
+            return _mk("partial", (("X", "P")[key],), (body,))
+        if self._is(v, "call", "d"):
+            f = g.args[v.i][2][0]
+            if type(f) is Ref and g.ops[f.i] == "fn":
+                body = g.args[f.i][2]
+                flow = self.arg(g.args[v.i][2][1])
+                if type(body) is Ref and g.ops[body.i] in ("list", "tuple") and type(key) is int:
+                    return _mk("deriv", (), (self.arg(g.args[body.i][key]), flow))
+                if type(body) is Ref and g.ops[body.i] == "dict" and key in g.args[body.i][0]:
+                    return _mk("deriv", (), (self.arg(g.args[body.i][1][g.args[body.i][0].index(key)]), flow))
+        if type(key) is str and key in LETTERS and self._is(v, "param"):   # z["X"] of a point z: X
+            return atom(*LETTERS[key])
+        if type(key) is str and key in GREEK:      # a multiplier of a flow: Λ, Π
+            return name_atom(key)
+        if self._is(v, "attr", "a") and type(key) is int:
+            return atom("a" + str(key + 1).translate(_SUB_DIGITS), f"a_{{{key + 1}}}")
+        return _mk("index", (str(key + 1) if type(key) is int else str(key),), (self.arg(v),))
+
+    def _call(self, name: str, args: tuple, kw: tuple) -> Expr:
+        x = self.arg
+        A = atom(*LETTERS["A"])
+        if name == "tr":
+            return func("tr", [x(args[0])])
+        if name == "killing":
+            return bracket("killing", x(args[0]), x(args[1]))
+        if name == "resolvent":
+            return post("inv", add((1, prod(x(args[0]), atom(*LETTERS["In"]))), (-1, A)))
+        if name == "q":
+            return num(Fraction(args[0], args[1]))
+        if name == "const":
+            return num(args[0])
+        if name in ("scalar", "generic", "general_params", "sym_operator"):
+            return name_atom(args[0])
+        if name == "zeros":
+            return atom("0")
+        if name == "identity":
+            return identity(args[0])
+        if name == "scalar_matrix":
+            return prod(x(args[0]), identity(args[1]))
+        if name == "mat":
+            rows = args[0]
+            if type(rows) is Ref and self.g.ops[rows.i] == "list" and all(
+                    type(r) is Ref and self.g.ops[r.i] == "list" for r in self.g.args[rows.i]):
+                cells = [[x(c) for c in self.g.args[r.i]] for r in self.g.args[rows.i]]
+                if cells and cells[0]:
+                    return _mk("block", (len(cells), len(cells[0])), [c for row in cells for c in row])
+            return func("mat", [x(rows)])
+        if name == "conj":
+            return post("bar", x(args[0]))
+        if name == "d":        # along a flow (written d/dt), or along a tangent vector (written so)
+            return _mk("deriv", (), (x(args[0]), x(args[1])))
+        if name == "gradient":
+            return func("∇", [x(args[0])], r"\nabla")
+        if name == "bracket":
+            return bracket("poisson", x(args[0]), x(args[1]))
+        if name == "canonical_bracket":
+            return bracket("canonical", x(args[0]), x(args[1]))
+        if name in ("dirac_flow", "multiplier_flow", "canonical_flow"):
+            return func(name.replace("_", " "), [x(args[0])], r"\mathrm{" + name.replace("_", r"\ ") + "}")
+        if name == "constraint_bracket_matrix":
+            return atom("C", "C")
+        return func(name, [x(v) for v in args] + self._kws(kw))
+
+
+def reader(g: Graph) -> Reader:
+    """The graph's reader, kept with the graph (a claim as printed is compared with all its mutants)."""
+    r = g.cache.get("notation")
+    if r is None:
+        r = g.cache["notation"] = Reader(g)
+    return r
+
+
+# ---------------------------------------------------------------------------------------------
+# printing
+
+
+def _frac(q: Fraction, tex: bool) -> str:
+    if q.denominator == 1:
+        return str(q.numerator)
+    if tex:
+        return r"\tfrac{%d}{%d}" % (q.numerator, q.denominator)
+    return _VULGAR.get(q, f"({q.numerator}/{q.denominator})")
+
+
+def _scripted(tex: str) -> bool:
+    return "^" in tex or "_" in tex or tex.startswith(r"\dot") or tex.startswith(r"\overline")
+
+
+class Printer:
+    """Unicode (``tex=False``) or LaTeX math (``tex=True``) of expressions, at most ``cap`` letters each."""
+
+    def __init__(self, tex: bool = False, cap: int = CAP) -> None:
+        self.tex, self.cap = tex, cap
+        self.dots = r"\dots" if tex else "…"
+
+    def __call__(self, e: Expr) -> str:
+        return self.show(e, self.cap)[0]
+
+    def paren(self, text: str) -> str:
+        return (r"\left(" + text + r"\right)") if self.tex and ("frac" in text or "pmatrix" in text) \
+            else "(" + text + ")"
+
+    def show(self, e: Expr, budget: int) -> tuple[str, int]:
+        """(text, precedence)."""
+        if e.size > budget and budget < 2:
+            return self.dots, ATOM
+        return getattr(self, "_" + e.kind)(e, budget)
+
+    def sub(self, e: Expr, budget: int, prec: int) -> str:
+        text, p = self.show(e, budget)
+        return self.paren(text) if p < prec else text
+
+    def _split_budget(self, kids: tuple, budget: int) -> list[int]:
+        total = sum(k.size for k in kids)
+        if total <= budget:
+            return [k.size for k in kids]
+        return [max(1, budget // len(kids))] * len(kids)
+
+    # -- kinds ----------------------------------------------------------------------------------
+    def _atom(self, e: Expr, budget: int) -> tuple[str, int]:
+        return e.data[1 if self.tex else 0], ATOM
+
+    def _num(self, e: Expr, budget: int) -> tuple[str, int]:
+        v = e.data[0]
+        if v < 0:
+            return ("-" if self.tex else "−") + _frac(-v, self.tex), SUM
+        return _frac(v, self.tex), (ATOM if v.denominator == 1 else PROD)
+
+    def _sum(self, e: Expr, budget: int) -> tuple[str, int]:
+        out: list[str] = []
+        used = 0
+        minus = "-" if self.tex else "−"
+        for k, (s, t) in enumerate(zip(e.data[0], e.kids)):
+            room = budget - used
+            if t.size > room and (room < 3 or k > 0):
+                out.append(f" {'+' if s > 0 else minus} {self.dots}" if out else self.dots)
+                break
+            text = self.sub(t, min(room, t.size) if t.size <= room else room, PROD)
+            used += min(t.size, room)
+            out.append((minus if s < 0 else "") + text if not out else f" {'+' if s > 0 else minus} {text}")
+        return "".join(out), SUM
+
+    def _prod(self, e: Expr, budget: int) -> tuple[str, int]:
+        sign, coeff = e.data
+        parts = []
+        for k, b in zip(e.kids, self._split_budget(e.kids, budget)):
+            parts.append(self.sub(k, b, ATOM))
+        if self.tex:
+            body = " ".join(parts)
+        else:
+            body = ""
+            for p in parts:
+                body += ("·" if body and body[-1].isdigit() and p[:1].isdigit() else "") + p
+        c = "" if coeff == 1 else _frac(coeff, self.tex)
+        if c and (self.tex or c[-1].isdigit() and body[:1].isdigit()):
+            c += " " if self.tex else "·"
+        return (("-" if self.tex else "−") if sign < 0 else "") + c + body, PROD
+
+    def _post(self, e: Expr, budget: int) -> tuple[str, int]:
+        op = e.data[0]
+        base, p = self.show(e.kids[0], budget)
+        if op == "bar":
+            if self.tex:
+                return r"\overline{" + base + "}", ATOM
+            return (base + "\u0304" if p == ATOM and len(base) == 1 else "conj" + self.paren(base)), ATOM
+        if p < ATOM or (not self.tex and e.kids[0].kind == "num"):
+            base = self.paren(base)
+        elif self.tex and _scripted(base):
+            base = "{" + base + "}"
+        if op == "T":
+            return base + ("^T" if self.tex else "ᵀ"), ATOM
+        if op == "inv":
+            return base + ("^{-1}" if self.tex else "⁻¹"), ATOM
+        k = op.split(":", 1)[1]
+        return base + ("^{" + k + "}" if self.tex else k.translate(_SUP_DIGITS)), ATOM
+
+    def _args(self, kids: tuple, budget: int) -> str:
+        return ", ".join(self.show(k, b)[0] for k, b in zip(kids, self._split_budget(kids, budget)))
+
+    def _func(self, e: Expr, budget: int) -> tuple[str, int]:
+        name = e.data[1] if self.tex else e.data[0]
+        return name + self.paren(self._args(e.kids, budget)), ATOM
+
+    def _apply(self, e: Expr, budget: int) -> tuple[str, int]:
+        b = self._split_budget(e.kids, budget)
+        return self.sub(e.kids[0], b[0], ATOM) + self.paren(self._args(e.kids[1:], sum(b[1:]))), ATOM
+
+    def _named(self, e: Expr, budget: int) -> tuple[str, int]:
+        name = (r"\mathrm{" + _tex_word(e.data[0]) + "}") if self.tex else e.data[0]
+        return f"{name} = {self.show(e.kids[0], budget)[0]}", SUM
+
+    def _equals(self, e: Expr, budget: int) -> tuple[str, int]:
+        b = self._split_budget(e.kids, budget)
+        where = e.data[0] and ((r"\ \text{" + e.data[0] + "}") if self.tex else " " + e.data[0])
+        return f"{self.show(e.kids[0], b[0])[0]} = {self.show(e.kids[1], b[1])[0]}{where}", SUM
+
+    def _tuple(self, e: Expr, budget: int) -> tuple[str, int]:
+        return self.paren(self._args(e.kids, budget)), ATOM
+
+    def _bracket(self, e: Expr, budget: int) -> tuple[str, int]:
+        kind = e.data[0]
+        inner = self._args(e.kids, budget)
+        if kind == "comm":
+            return "[" + inner + "]", ATOM
+        if kind == "killing":
+            return (r"\langle " + inner + r"\rangle") if self.tex else "⟨" + inner + "⟩", ATOM
+        close = "}" if kind == "poisson" else ("}_0" if self.tex else "}₀")
+        return (r"\{" + inner + "\\" + close) if self.tex else "{" + inner + close, ATOM
+
+    def _block(self, e: Expr, budget: int) -> tuple[str, int]:
+        rows, cols = e.data
+        if e.size > budget and budget < 2 * len(e.kids):     # too many blocks to show any: the shape
+            return ((r"(%d \times %d\ \text{matrix})" % (rows, cols)) if self.tex
+                    else f"({rows}×{cols} matrix)"), ATOM
+        cells = [self.show(k, b)[0] for k, b in zip(e.kids, self._split_budget(e.kids, budget))]
+        grid = [cells[i * cols:(i + 1) * cols] for i in range(rows)]
+        if self.tex:
+            return r"\begin{pmatrix}" + r"\\ ".join(" & ".join(r) for r in grid) + r"\end{pmatrix}", ATOM
+        return "(" + "; ".join(", ".join(r) for r in grid) + ")", ATOM
+
+    def _entry(self, e: Expr, budget: int) -> tuple[str, int]:
+        base, p = self.show(e.kids[0], budget)
+        if p < ATOM or (e.kids[0].kind != "atom") or (self.tex and _scripted(base)):
+            base = self.paren(base) if not (self.tex and p == ATOM and e.kids[0].kind == "atom") else "{" + base + "}"
+        if self.tex:
+            return base + "_{" + e.data[1] + "}", ATOM
+        return base + e.data[0], ATOM
+
+    def _slice(self, e: Expr, budget: int) -> tuple[str, int]:
+        base = self.sub(e.kids[0], budget, ATOM)
+        if self.tex:
+            return base + r"_{[" + e.data[0] + "]}", ATOM
+        return base + "[" + e.data[0] + "]", ATOM
+
+    def _index(self, e: Expr, budget: int) -> tuple[str, int]:
+        return self.sub(e.kids[0], budget, ATOM) + (("_{[" + _tex_word(e.data[0]) + "]}") if self.tex
+                                                    else "[" + e.data[0] + "]"), ATOM
+
+    def _frac(self, e: Expr, budget: int) -> tuple[str, int]:
+        b = self._split_budget(e.kids, budget)
+        if self.tex:
+            return r"\frac{" + self.show(e.kids[0], b[0])[0] + "}{" + self.show(e.kids[1], b[1])[0] + "}", PROD
+        return self.sub(e.kids[0], b[0], ATOM) + "/" + self.sub(e.kids[1], b[1], ATOM), PROD
+
+    def _deriv(self, e: Expr, budget: int) -> tuple[str, int]:
+        body, along = e.kids[0], e.kids[1] if len(e.kids) > 1 else None
+        if along is not None and along.kind == "tuple":       # a tangent vector (Ẋ, Ṗ) = (U, V)
+            b = self._split_budget(e.kids, budget)
+            names = [k.data[0] for k in along.kids if k.kind == "named"]
+            dots = [LETTERS.get(f"{nm}dot", (nm, nm))[1 if self.tex else 0] for nm in names]
+            vals = [self.show(k.kids[0], max(1, b[1] // max(1, len(names))))[0] for k in along.kids if k.kind == "named"]
+            text = self.show(body, b[0])[0]
+            if self.tex:
+                return (r"rac{d}{dt}" + self.paren(text) + r"\ 	ext{along}\ (" + ", ".join(dots) + ") = ("
+                        + ", ".join(vals) + ")"), SUM
+            return f"d/dt{self.paren(text)} along ({', '.join(dots)}) = ({', '.join(vals)})", SUM
+        text, p = self.show(body, budget)
+        if body.kind == "atom" and len(text) == 1 and text.isalpha() or (self.tex and body.kind == "atom"
+                                                                         and not _scripted(text)):
+            return (r"\dot{" + text + "}") if self.tex else text + "\u0307", ATOM
+        if body.kind != "block":
+            text = self.paren(text)
+        return (r"\frac{d}{dt}" if self.tex else "d/dt") + text, ATOM
+
+    def _partial(self, e: Expr, budget: int) -> tuple[str, int]:
+        text, p = self.show(e.kids[0], budget)
+        if self.tex:
+            return r"\frac{\partial}{\partial " + e.data[0] + "}" + self.paren(text), ATOM
+        return f"∂{self.paren(text) if p < ATOM else text}/∂{e.data[0]}", ATOM
+
+
+def unicode(e: Expr, cap: int = CAP) -> str:
+    """The expression in Unicode (at most ``cap`` letters; beyond, an ellipsis)."""
+    return Printer(False, cap)(e)
+
+
+def latex(e: Expr, cap: int = CAP) -> str:
+    """The expression in LaTeX math mode."""
+    return Printer(True, cap)(e)
+
+
+def render(g: Graph, ref: Ref | int, tex: bool = False, cap: int = CAP) -> str:
+    """Node ``ref`` of ``g`` in the paper's notation."""
+    e = Reader(g).node(ref.i if isinstance(ref, Ref) else ref)
+    return latex(e, cap) if tex else unicode(e, cap)
+
+
+def outputs(g: Graph) -> list[tuple[str, Any]]:
+    """The claim's named outputs (name, argument of the output dict)."""
+    if g.output is None or g.ops[g.output.i] != "dict":
+        return []
+    names, vals = g.args[g.output.i]
+    return list(zip(names, vals))
+
+
+# ---------------------------------------------------------------------------------------------
+# the smallest change between two graphs
+
+
+@dataclass(frozen=True)
+class Change:
+    """One change of a graph: where (the output, the block), what it was and what it became."""
+
+    where: str
+    old: str
+    new: str
+    old_tex: str
+    new_tex: str
+    #: not a change: the number of further changes left out
+    more: int = 0
+
+    def text(self) -> str:
+        if self.more:
+            return f"and {self.more} more change{'s' * (self.more != 1)}"
+        return f"in {self.where}: {self.old} → {self.new}"
+
+    def to_json(self) -> dict[str, Any]:
+        d: dict[str, Any] = {"where": self.where, "old": self.old, "new": self.new, "old_tex": self.old_tex,
+                             "new_tex": self.new_tex}
+        if self.more:
+            d["more"] = self.more
+        return d
+
+
+def _diff(a: Expr, b: Expr, ctx: tuple, deep: bool = False, memo: dict | None = None) -> list[tuple]:
+    """The topmost changed subexpressions of a → b under an unchanged context: (ctx: the blocks on the
+    way down, old, new, and the short product a changed letter sits in, or None).  A node whose parts
+    changed in several ways is the change (a swap, a small node), unless ``deep``: then the parts'
+    changes are listed (fewer when one change below repeats at many places)."""
+    if memo is None:
+        memo = {}
+    k = (a.key, b.key)
+    found = memo.get(k)
+    if found is None:        # a shared part is compared once (the expressions are DAGs)
+        found, seen = [], set()
+        for o in _diff_at(a, b, deep, memo):       # the same change reached along two ways: once
+            key = (o[0], o[1].key, o[2].key)
+            if key not in seen:
+                seen.add(key)
+                found.append(o)
+        memo[k] = found
+    return [(ctx + o[0],) + o[1:] for o in found] if ctx else found
+
+
+def _diff_at(a: Expr, b: Expr, deep: bool, memo: dict) -> list[tuple]:
+    ctx: tuple = ()
+    if a.key == b.key:
+        return []
+    out: list[tuple] = []
+    if a.kind == b.kind == "equals" and a.data == b.data and a.kids[0].key == b.kids[0].key:
+        # the printed number changed: "rank(M) = 6 → rank(M) = 8" (M cut short when it is large)
+        left = a.kids[0] if a.kids[0].size <= SMALL else (
+            func("rank", [atom("…", r"\dots")]) if a.kids[0].kind == "func" else atom("…", r"\dots"))
+        return [(ctx, _mk("equals", a.data, (left, a.kids[1])), _mk("equals", b.data, (left, b.kids[1])), None)]
+    if a.kind == b.kind and a.kind not in ("atom", "num") and len(a.kids) == len(b.kids):
+        if a.data == b.data:
+            changed = [i for i, (x, y) in enumerate(zip(a.kids, b.kids)) if x.key != y.key]
+            for i in changed:
+                out += _diff(a.kids[i], b.kids[i], _where(a, i), deep, memo)
+            kid = a.kids[changed[0]] if changed else a
+            if (a.kind == "prod" and len(changed) == 1 and a.size <= SMALL and len(out) == 1
+                    and out[0][1].kind == out[0][2].kind == "atom" and out[0][3] is None
+                    and out[0][1].key in (kid.key, kid.kids[0].key if kid.kind == "post" else None)):
+                return [out[0][:3] + ((a, b),)]       # a letter in a short product: QΠ → YΠ, not Q → Y
+            if len({(o[1].key, o[2].key) for o in out}) <= 1:      # one change (perhaps repeated)
+                return out
+            # parts moved (operands swapped: a new part is an old part), or every part changed: the
+            # node is the change
+            old_parts = {k.key for k in a.kids}
+            every = len(changed) == len(a.kids) and max(a.size, b.size) <= 3 * SMALL
+            if not deep and len(changed) > 1 and (every or any(b.kids[i].key in old_parts for i in changed)):
+                return [(ctx, a, b, None)]
+        elif a.kind == "sum":
+            for i, (s, t, x, y) in enumerate(zip(a.data[0], b.data[0], a.kids, b.kids)):
+                if x.key != y.key or s != t:
+                    if s == t:
+                        out += _diff(x, y, (), deep, memo)
+                    else:
+                        out.append((ctx, signed(s, x), signed(t, y), None))
+        elif a.kind == "prod" and all(x.key == y.key for x, y in zip(a.kids, b.kids)):
+            return [(ctx, a, b, None)]
+        else:
+            return [(ctx, a, b, None)]
+        if not deep and len({(o[1].key, o[2].key) for o in out}) > 1 and max(a.size, b.size) <= SMALL:
+            return [(ctx, a, b, None)]
+        return out
+    ta, tb = _terms(a), _terms(b)
+    if (a.kind == "sum" or b.kind == "sum") and len(ta) != len(tb):    # terms dropped or added
+        longer, shorter = (ta, tb) if len(ta) > len(tb) else (tb, ta)
+        extra, j = [], 0
+        for s_, k in longer:             # the shorter sum's terms, in order, among the longer's
+            if j < len(shorter) and (s_, k.key) == (shorter[j][0], shorter[j][1].key):
+                j += 1
+            else:
+                extra.append((s_, k))
+        if j == len(shorter):
+            if max(a.size, b.size) <= SMALL:
+                return [(ctx, a, b, None)]
+            term = add(*extra)
+            return [(ctx, term, ZERO, None) if longer is ta else (ctx, ZERO, term, None)]
+    return [(ctx, a, b, None)]
+
+
+def _terms(e: Expr) -> list[tuple[int, Expr]]:
+    """e as signed terms (one term unless it is a sum)."""
+    if e.kind == "sum":
+        return list(zip(e.data[0], e.kids))
+    if e.kind == "prod" and e.data[0] == -1:
+        return [(-1, neg(e))]
+    return [(1, e)]
+
+
+def _where(e: Expr, i: int) -> tuple:
+    if e.kind == "block" and e.data[0] * e.data[1] > 1:
+        rows, cols = e.data
+        return (f"({i // cols + 1},{i % cols + 1})",)
+    return ()
+
+
+def _place(name: str, blocks: list[tuple]) -> str:
+    if not blocks or blocks == [()]:
+        return name
+    if len(blocks) == 1:
+        return f"{name}, block {' in '.join(reversed(blocks[0]))}"
+    named = [' in '.join(reversed(b)) for b in blocks]
+    if len(named) > MAX_BLOCKS:
+        return f"{name}, blocks {', '.join(named[:MAX_BLOCKS - 1])} and {len(named) - MAX_BLOCKS + 1} more"
+    return f"{name}, blocks {', '.join(named)}"
+
+
+def diff(old: Graph, new: Graph, cap: int = 24) -> list[Change]:
+    """The changes from ``old`` (the claim as printed) to ``new`` (a mutant or a correction traced at
+    the same size), per output: the topmost changed subexpressions under an unchanged context, each
+    with the expression it replaced.  Equal changes at several places of one output are one change
+    (with every block named).  Empty when the graphs compute the same outputs."""
+    ko, kn = node_keys(old), node_keys(new)
+    ro = reader(old)
+    rn = Reader(new, ro)
+    po, pn = Printer(False, cap), Printer(True, cap)
+    out_old, out_new = outputs(old), dict(outputs(new))
+    found: list[tuple] = []
+    pairs: list[tuple[str, Expr, Expr]] = []
+    same: list[tuple] = []
+    names = [n for n, _ in out_old] + [n for n in out_new if n not in dict(out_old)]
+    for name in names:
+        a = dict(out_old).get(name)
+        b = out_new.get(name)
+        if type(a) is Ref and type(b) is Ref and ko[a.i] == kn[b.i]:
+            continue
+        ea = ro.arg(a) if name in dict(out_old) else atom("(no such check)", r"\text{(no such check)}")
+        eb = rn.arg(b) if name in out_new else atom("(dropped)", r"\text{(dropped)}")
+        if ea.key == eb.key:      # another computation of the same expression (e.g. (Mᵀ)ᵀ for M, or the
+            # claim's functions numbered otherwise): said only when nothing else changed
+            same.append((f"{name} (written the same, computed another way)", (), ea, eb, None))
+            continue
+        pairs.append((name, ea, eb))
+    memo: dict = {}
+    shallow = [(name,) + o for name, ea, eb in pairs for o in _diff(ea, eb, (), False, memo)]
+    distinct = lambda fs: len({(f[2].key, f[3].key) for f in fs})
+    if distinct(shallow) > MAX_CHANGES:
+        # many changes: perhaps one change below them, made at many places
+        memo = {}
+        deep = [(name,) + o for name, ea, eb in pairs for o in _diff(ea, eb, (), True, memo)]
+        if distinct(deep) < distinct(shallow):
+            shallow = deep
+    found += shallow or same
+    # one change per (old, new), with every output and block where it is made
+    # (a changed letter is shown in its short product where that product is the same at every place)
+    grouped: dict[tuple, dict[str, list[tuple]]] = {}
+    contexts: dict[tuple, set] = {}
+    for name, ctx, x, y, alt in found:
+        places = grouped.setdefault((x.key, y.key), {}).setdefault(name, [])
+        if ctx not in places:
+            places.append(ctx)
+        contexts.setdefault((x.key, y.key), set()).add(None if alt is None else (alt[0].key, alt[1].key))
+    changes, seen = [], set()
+    for name, ctx, x, y, alt in found:
+        k = (x.key, y.key)
+        if k in seen:
+            continue
+        seen.add(k)
+        if alt is not None and len(contexts[k]) == 1:
+            x, y = alt
+        texts = [_place(nm, blocks) for nm, blocks in grouped[k].items()]
+        if len(texts) > 2 and set(grouped[k]) == set(names) and all(b == [()] for b in grouped[k].values()):
+            texts = [f"every check ({len(texts)})"]
+        where = ("; " if any(", block" in p for p in texts) else ", ").join(texts)
+        wide = cap
+        while po(x) == po(y) and x.key != y.key and wide < 2 * cap:   # cut short to the same text
+            wide *= 4
+            po, pn = Printer(False, wide), Printer(True, wide)
+        changes.append(Change(where, po(x), po(y), pn(x), pn(y)))
+        po, pn = Printer(False, cap), Printer(True, cap)
+    if len(changes) > MAX_CHANGES:
+        return changes[:MAX_CHANGES - 1] + [Change("", "", "", "", "", more=len(changes) - MAX_CHANGES + 1)]
+    return changes
+
+
+def describe(changes: Sequence[Change]) -> str:
+    """The changes as one line ("no change" when there is none)."""
+    return "; ".join(c.text() for c in changes) if changes else "no change"
+
+
+def changes_text(changes: Sequence[dict[str, str]] | None) -> str:
+    """Changes as :meth:`Change.to_json` gives them, in one line of Unicode ("" for none: the variant
+    does not trace; "no change in the graph" for one empty change: the graphs agree)."""
+    if not changes:
+        return ""
+    if not changes[0].get("where") and not changes[0].get("old"):
+        return "no change in the graph"
+    return "; ".join(f"and {c['more']} more change{'s' * (c['more'] != 1)}" if c.get("more")
+                     else f"in {c.get('where', '')}: {c.get('old', '')} → {c.get('new', '')}" for c in changes)
