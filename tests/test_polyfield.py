@@ -371,3 +371,12 @@ def test_a_row_read_as_a_block_is_not_taken_for_a_column(method):
     c = Claim(id="first-row-unit", paper=(), kind="id", section="test", func=first_row_unit, sizes=admissible(4))
     assert run_one(c, Size(3, 2), method, 0).verdict == "fails"
     assert run_one(c, Size(3, 3), method, 0).verdict in ("proved", "checked", "numeric")
+
+
+def test_a_rank_of_scalars_kept_in_flint():
+    """A rank statement of a matrix built from flint scalars (the Jacobian of the constraints' brackets)
+    is decided by the symbolic rank helpers, which read its entries as symengine expressions."""
+    from stiefelsym.claims import load_catalog
+    from stiefelsym.methods import run_exact
+    res = run_exact(load_catalog().get("dirac-bracket-multipliers"), 1, 1, 0)
+    assert res.verdict == "proved", res.message
