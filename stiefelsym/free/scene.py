@@ -871,11 +871,14 @@ class FreeScene(PaperObjects):
         """(∂H/∂X, ∂H/∂P) of the trace form H as the scene's arithmetic built it: on a lazy scene the
         polynomial as written (the ambient gradient), on an eager one H reduced modulo the
         constraints (which changes H only off T*V, so Dirac flows are unaffected, but the
-        canonical flow and the multipliers Λ, Π are those of the reduced form)."""
+        canonical flow and the multipliers Λ, Π are those of the reduced form).
+
+        H is evaluated on a scene of its own whose X, P are fresh letters (:class:`FunctionScene`):
+        a value of this scene that H closes over keeps the letters X, P and is a constant of H."""
         def build():
-            h = self._hamiltonian(H)
-            return (self._const_mat(self.system.normal_form(gradient(h, X))),
-                    self._const_mat(self.system.normal_form(gradient(h, P))))
+            u = FunctionScene(self)
+            h = u._hamiltonian(H)
+            return tuple(self._const_mat(self.system.normal_form(u.back(gradient(h, u.own(L))))) for L in (X, P))
         return self._cached_for("grad", H, build)
 
     def _dual_field(self) -> "FreeDualField":
@@ -966,13 +969,14 @@ class FreeScene(PaperObjects):
         if sorted(k for pq in pairs for k in pq) != sorted(keys) or any(len(pq) != 2 for pq in pairs):
             raise refuse("a Hamiltonian flow whose pairs are not the point's letters", self.tracker)
         letters = {k: self._named[k] for k in keys}
-        h = self._hamiltonian(lambda t: H(t, {k: getattr(t, k) for k in keys}))
+        u = FunctionScene(self)         # H's own letters: fresh (a value of this scene it closes over is a constant)
+        h = u._hamiltonian(lambda t: H(t, {k: getattr(t, k) for k in keys}))
         nf = self.system.normal_form
         out: dict[str, Mat] = {}
         for xk, pk in pairs:
             if (xk, pk) not in (("X", "P"), ("Y", "Q")):
                 raise refuse(f"a Hamiltonian flow with the pair ({xk}, {pk})", self.tracker)
-            HX, HP = nf(gradient(h, letters[xk])), nf(gradient(h, letters[pk]))
+            HX, HP = (nf(u.back(gradient(h, u.own(letters[k])))) for k in (xk, pk))
             Xd, Pd, _, _ = self._pair_multipliers(HX, HP, letters[xk], letters[pk])
             out[xk], out[pk] = self._const_mat(Xd), self._const_mat(Pd)
         return out
@@ -1111,6 +1115,76 @@ class FreeTangentScene(FreeScene):
         raise TypeError("flows are built on the base scene, not along a tangent")
 
 
+#: the letters of a point of T*V (and of a second point): a function handed to a scene gets fresh ones
+_POINT_LETTERS = (X, P, Y, Q)
+_FRESH = [0]
+
+
+class FunctionScene(FreeScene):
+    """The scene a function handed to a free scene (a Hamiltonian, a function to differentiate) is
+    evaluated on: the same field, rules, parameters and record, but its point is fresh letters X′, P′
+    (Y′, Q′), distinct for every such scene.  A value of the enclosing scene the function closes over
+    keeps its letters X, P and so stays a constant of the function; :meth:`back` renames the fresh
+    letters to the enclosing scene's own once the function's derivatives are taken."""
+
+    def __init__(self, base: FreeScene) -> None:
+        super().__init__(base.tracker, base.system)
+        self._field = base._field
+        self.params = base.params
+        self._resolvents = base._resolvents
+        self._extras = base._extras
+        self.columns = base.columns
+        self.square = base.square
+        _FRESH[0] += 1
+        k = _FRESH[0]
+        self._fresh: dict[Letter, Letter] = {}
+        for L in _POINT_LETTERS:
+            F, Ft = letter_pair(f"{L}'{k}", f"{L.adjoint}'{k}", L.row, L.col, L.latex, L.adjoint.latex)
+            self._fresh[L], self._fresh[L.adjoint] = F, Ft
+
+    def _letter(self, L: Letter) -> Mat:
+        return super()._letter(self._fresh.get(L, L))
+
+    def own(self, L: Letter) -> Letter:
+        """The fresh letter that stands for the enclosing scene's letter L."""
+        return self._fresh[L]
+
+    def back(self, p: NCPoly) -> NCPoly:
+        """p with the fresh letters renamed to the enclosing scene's X, P (Y, Q)."""
+        return substitute(p, {self._fresh[L]: _w(L) for L in _POINT_LETTERS})
+
+    def at_point(self, Xv: Mat, Pv: Mat) -> "FreePointScene":
+        raise refuse("a scene at another point inside a function handed to the scene", self.tracker)
+
+
+def _point_letters_in(v: Any, out: set) -> set:
+    """The letters X, P, Y, Q (and transposes) in a value of a free scene, operator arguments included."""
+    if isinstance(v, Mat):
+        for x in v._a.flat:
+            _point_letters_in(x, out)
+    elif isinstance(v, Dual):
+        _point_letters_in(v.a, out)
+        _point_letters_in(v.b, out)
+    elif isinstance(v, NCPoly):
+        stack = list(v.letters())
+        while stack:
+            L = stack.pop()
+            if isinstance(L, OperatorLetter):
+                stack.extend(L.argument)
+            elif any(L is M or L is M.adjoint for M in _POINT_LETTERS):
+                out.add(L)
+    elif isinstance(v, Flow):
+        _point_letters_in(v.Xdot, out)
+        _point_letters_in(v.Pdot, out)
+    elif isinstance(v, (list, tuple)):
+        for x in v:
+            _point_letters_in(x, out)
+    elif isinstance(v, dict):
+        for x in v.values():
+            _point_letters_in(x, out)
+    return out
+
+
 def _lift_mat(M: Mat, field: Field) -> Mat:
     a = np.empty(M._shape(), dtype=object)
     for idx, x in np.ndenumerate(M._view()):
@@ -1240,7 +1314,26 @@ class FreePointScene:
         if isinstance(v, (Mat, NCPoly, dict, list, tuple)):
             raise refuse("a value in the base scene's coordinates handed to the scene at another point",
                          self.base.tracker)
+        if callable(v) and self._closes_over_the_point(v):
+            raise refuse("a function handed to the scene at another point that closes over a value of the "
+                         "point X, P (the base scene's or the point's): read with the point's letters, it would be "
+                         "substituted as the function's own variable", self.base.tracker)
         return v
+
+    def _closes_over_the_point(self, f: Callable) -> bool:
+        """Whether f, evaluated on a scene whose point is fresh letters, returns the letters X, P (Y, Q):
+        they can only come from a value it closes over.  The scene at the point computes at the generic
+        point X, P and substitutes (X, P) ↦ (X₁, P₁), which would move such a value too."""
+        u = FunctionScene(self.inner)
+        for args in ((u,), (u, {"X": u.X, "P": u.P})):
+            try:
+                return bool(_point_letters_in(f(*args), set()))
+            except TypeError as exc:
+                if "called with" not in str(exc):
+                    return True
+            except Exception:
+                return True     # not evaluable on its own letters: not taken as a function of the point
+        return True
 
     #: what does not depend on the point: taken from the base scene (values given in its coordinates)
     POINTLESS = frozenset({"tr", "killing", "q", "const", "zeros", "In", "Ir", "scalar_matrix", "mat", "A", "Ainv",

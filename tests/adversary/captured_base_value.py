@@ -43,3 +43,29 @@ def captured_scalar(s):
     c = s.tr(s.P.T @ s.P)
     _gX, gP = s.gradient(lambda u: c * u.tr(u.X.T @ u.A @ u.X))
     return {"r": gP - 2 * s.tr(s.X.T @ s.A @ s.X) * s.P}
+
+
+@claim("adv-captured-default-flow", kind="id", sizes=ALL,
+       statement="the ambient flow of tr(P^T u.X), P the base point's (a default argument), has Xdot = X")
+def captured_default_flow(s):
+    """False for P the constant it is (H_P = 0, so Xdot = 0): the capture is a default argument."""
+    flow = s.canonical_flow(lambda u, Pc=s.P: u.tr(Pc.T @ u.X))
+    return {"r": flow.Xdot - s.X}
+
+
+@claim("adv-captured-d-at-point", kind="id", sizes=ALL,
+       statement="at (-X, -P), the derivative of tr(P^T u.X) along the flow of tr(u.P^T u.P)/2 is -tr(P^T P)")
+def captured_d_at_point(s):
+    """False for P the constant it is: along Xdot = P_t - X_t Pi = -P (at the point), d tr(P^T u.X) = -tr(P^T P);
+    read as the point's variable (P -> -P) it would give +tr(P^T P).  A derivative, not a gradient."""
+    t = twisted.at_point(s, -s.X, -s.P)
+    flow = t.dirac_flow(lambda u: u.tr(u.P.T @ u.P) / 2)
+    return {"r": t.d(lambda u: u.tr(s.P.T @ u.X), flow) - s.tr(s.P.T @ s.P)}
+
+
+@claim("adv-captured-control", kind="id", sizes=ALL,
+       statement="grad_X tr(P^T u.X) = P and grad_P = 0, P the base point's (true: P is a constant of u)")
+def captured_control(s):
+    """True: the captured P is a fixed matrix, so the gradient in u.X is P and the gradient in u.P vanishes."""
+    gX, gP = s.gradient(lambda u: u.tr(s.P.T @ u.X) + u.tr(u.X.T @ s.A @ u.X))
+    return {"grad_X": gX - s.P - 2 * s.A @ s.X, "grad_P": gP}

@@ -273,21 +273,17 @@ def test_r_is_n_with_sizes_r_less_than_n_fails_at_its_sizes(method):
 
 # -- O. a function handed to the scene closes over a value of the enclosing scene -------------------
 
-CAPTURED = ("adv-captured-grad", "adv-captured-at-point", "adv-captured-point-value", "adv-captured-scalar")
+CAPTURED = ("adv-captured-grad", "adv-captured-at-point", "adv-captured-point-value", "adv-captured-scalar",
+            "adv-captured-default-flow", "adv-captured-d-at-point")
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "a function given to s.gradient (or to the scene of twisted.at_point) that refers to the enclosing "
-    "scene's P is traced with that node inside its body; the free scene evaluates it with the base scene's "
-    "letter P, which is the same letter as the function's own variable P, so the captured matrix is "
-    "differentiated (grad_P tr(P^T u.X) = X) and substituted at another point (P -> -P); read as a fixed "
-    "matrix, grad_P = 0 and grad_X = P everywhere (a captured scalar c = tr(P^T P) is differentiated the same "
-    "way); adv-captured-point-value (t.P of the scene at (-X, -P) inside t.gradient's function) is false "
-    "under either reading and proved; every fixed-size method stops with an error on these claims, so "
-    "'proved (all n, r)' is the only verdict they get"))
 def test_captured_base_value_is_not_proved():
+    """The free scene evaluates a function it is handed on a scene of its own whose X, P are fresh letters,
+    so a captured base value stays a constant of the function (gradients, flows); the scene at another
+    point refuses a function that returns the letters X, P on fresh letters (a capture it would move)."""
     v = verdicts("captured_base_value.py", "free")
     assert all(v[c] not in PASSING for c in CAPTURED), v
+    assert v["adv-captured-control"] == "proved", v
 
 
 @pytest.mark.parametrize("method", ["exact", "modular", "float"])
