@@ -444,14 +444,31 @@ def test_checker_rejects_a_certificate_with_a_pole_where_its_hypothesis_holds(ce
 
 # -- S. a true claim whose free certificate is rejected (operator letter, columns, another point) -----
 
-@pytest.mark.xfail(strict=True, reason=(
-    "the magnetic flow of tr(AA(X E1 E2^T P^T) Phi) + tr(E1^T X^T A X E1) at the rotated point (XJ, PJ), r = 2, "
-    "minus the free scene's own normal form of it: the free method reduces the residual to 0 but its "
-    "certificate does not expand to the residual (the checker finds a term AA(P*E2*E2t*Xt) ... tr(E1*E1t)^2 "
-    "tr(E1*E2t)^2 with coefficient -1 against 0), so the verdict is error; the operator letters of the normal "
-    "form keep unreduced arguments (AA(P E1 E2^T E2 E1^T ... X^T)); every fixed-size method checks the claim"))
 def test_true_claim_with_operator_columns_at_a_point_is_not_an_error():
-    assert _v("certificate_operator_columns_point.py", "free", "adv-cert-operator-columns-point") in ("proved", "undecided")
+    """A 1x1 piece of an operator letter's argument (E2^T E2 after the rotation J) is taken out of it as a
+    scalar when the letter is made, so the letters of the normal form and of the certificate agree."""
+    assert _v("certificate_operator_columns_point.py", "free", "adv-cert-operator-columns-point") == "proved"
+
+
+OPCOLS_TRUE, OPCOLS_FALSE = ("adv-opcols-linear", "adv-opcols-unit-piece"), "adv-opcols-linear-sign"
+
+
+def test_operator_argument_pieces_are_proved_with_an_accepted_certificate(tmp_path):
+    out = tmp_path / "rep"
+    cli("verify", "--claims", str(HERE / "certificate_operator_columns_pieces.py"), "--method", "free",
+        "--report-dir", str(out))
+    recs = {r["claim"]: r for r in json.loads((out / "results.json").read_text())["results"]}
+    assert all(recs[c]["verdict"] == "proved" for c in OPCOLS_TRUE), recs
+    assert recs[OPCOLS_FALSE]["verdict"] not in PASSING, recs[OPCOLS_FALSE]
+    r = subprocess.run([sys.executable, "-m", "stiefelsym.certificate_check", str(out / "results.json")], cwd=ROOT,
+                       capture_output=True, text=True, timeout=300)
+    assert r.returncode == 0, r.stdout + r.stderr
+
+
+@pytest.mark.parametrize("method", ["exact", "modular", "float"])
+def test_operator_argument_pieces_at_a_fixed_size(method):
+    v = verdicts("certificate_operator_columns_pieces.py", method, size="3,2")
+    assert all(v[c] in PASSING for c in OPCOLS_TRUE) and v[OPCOLS_FALSE] == "fails", v
 
 
 @pytest.mark.parametrize("method", ["exact", "modular"])
