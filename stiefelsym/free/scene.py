@@ -561,9 +561,22 @@ class FreeScene(PaperObjects):
         for rel in (hypothesis("DXtDY").poly, hypothesis("DXdtDY+DXtDYd").poly):
             if not self.reduce(derivation(rel, images)).is_zero:
                 raise refuse("a derivative along a vector that does not keep (D0) and its derivative", self.tracker)
-        value = F(self, dict(point))
-        return map_entries(value, lambda x: self.field.normalize(derivation(x, images)) if isinstance(x, NCPoly)
-                           else se.Integer(0), self)
+        # F's own variables are fresh letters: a value of this scene F closes over (its DX, DY ...) keeps
+        # the point's letters and is a constant of F, not moved with the point
+        _FRESH[0] += 1
+        fresh, own = {}, {}
+        for k, L in DOUBLE.items():
+            Fl, Flt = letter_pair(f"{L}'{_FRESH[0]}", f"{L.adjoint}'{_FRESH[0]}", L.row, L.col, L.latex,
+                                  L.adjoint.latex)
+            fresh[k], own[Fl] = Fl, _w(L)
+        moved = {fresh[k]: images[L] for k, L in DOUBLE.items() if L in images}
+        value = F(self, {k: self._const_mat(_w(fresh[k])) if k in fresh else v for k, v in dict(point).items()})
+
+        def derivative(x: Any) -> Any:
+            if not isinstance(x, NCPoly):
+                return se.Integer(0)
+            return self.field.normalize(substitute(derivation(x, moved), own))
+        return map_entries(value, derivative, self)
 
     def euler_lagrange_double(self, T: Callable, U: Callable, constraints: Callable, position: Mapping[str, Any],
                               velocity: Mapping[str, Any]) -> tuple[dict[str, Mat], list]:
@@ -598,15 +611,25 @@ class FreeScene(PaperObjects):
         M = Letter("Mu", "r", "r")
         M.adjoint = Letter("Mut", "r", "r")
         M.adjoint.adjoint = M
-        kinetic, potential = self._trace_form(T(self, v)), self._trace_form(U(self, q))
+        # T and U are evaluated at fresh letters (their own variables): a value of this scene they close
+        # over keeps the point's letters and is a constant of theirs
+        _FRESH[0] += 1
+        fresh = {k: letter_pair(f"{L}'{_FRESH[0]}", f"{L.adjoint}'{_FRESH[0]}", L.row, L.col, L.latex,
+                                L.adjoint.latex)[0] for k, L in DOUBLE.items()}
+        back = {fresh[k]: _w(L) for k, L in DOUBLE.items()}
+        kinetic = self._trace_form(T(self, {k: self._const_mat(_w(fresh[k + "dot"])) for k in ("X", "Y")}))
+        potential = self._trace_form(U(self, {k: self._const_mat(_w(fresh[k])) for k in ("X", "Y")}))
         force = trace(_w(M.adjoint) * D0)
-        to_acc = {DOUBLE[k + "dot"]: _w(acc[k]) for k in ("X", "Y")}
         equations = []
         for key, L in (("X", DX), ("Y", DY)):
-            momentum = gradient(kinetic, DOUBLE[key + "dot"])
-            if momentum.letters() & {DX, DY, DXt, DYt}:
+            momentum = gradient(kinetic, fresh[key + "dot"])
+            if momentum.letters() & {DX, DY, DXt, DYt, fresh["X"], fresh["Y"], fresh["X"].adjoint,
+                                     fresh["Y"].adjoint}:
                 raise refuse("a kinetic energy whose coefficients depend on the position", self.tracker)
-            equations.append(substitute(momentum, to_acc) + gradient(potential, L) - gradient(force, L))
+            # d/dt ∂T/∂q̇ = ∂T/∂q̇ at q̇ ↦ q̈ (constant coefficients): F's own velocities only
+            momentum = substitute(momentum, {fresh[k + "dot"]: _w(acc[k]) for k in ("X", "Y")})
+            equations.append(substitute(momentum, back) + substitute(gradient(potential, fresh[key]), back)
+                             - gradient(force, L))
         nf = self.system.normal_form
         solved = solve_multipliers([nf(e) for e in equations], list(acc.values()), self.system)
         gdot = derivation(D0, {DX: _w(DXd), DY: _w(DYd)})

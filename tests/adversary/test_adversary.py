@@ -318,6 +318,17 @@ def test_captured_base_value_is_not_passed_at_a_fixed_size(method):
     assert all(v[c] not in PASSING for c in CAPTURED), v
 
 
+def test_captured_value_at_a_double_point_is_not_proved():
+    """The derivative at a point (X, Y, Xdot, Ydot) of the double system evaluates F at fresh letters too, so
+    the scene's DY that F closes over is not moved with the point (the derivative is r, not 0); the
+    Euler-Lagrange equations of the double system evaluate T and U at fresh letters the same way."""
+    v = verdicts("captured_double_point.py", "free")
+    assert v["adv-captured-double-derivative"] not in PASSING and v["adv-captured-double-control"] == "proved", v
+    for method in ("exact", "modular"):
+        v = verdicts("captured_double_point.py", method, size="3,2")
+        assert v["adv-captured-double-derivative"] not in PASSING and v["adv-captured-double-control"] in PASSING, v
+
+
 # -- P. column letters at one r, the scene at another point, the letters at r = n (no hole found) -----
 
 COLUMNS_R2 = ("adv-cols-complete-in-n", "adv-cols-swapped", "adv-cols-range-r", "adv-cols-r23", "adv-cols-r2-trace",
