@@ -173,7 +173,7 @@ def bracket(s, f: Function, g: Function, F: Mat | None = None) -> Any:
     """The Dirac bracket (Dirac_bracket) built from {,}_ε: the Poisson bracket of ω + ε π*ω_mag on T*V.
     (Dimension-free: the derivative of f along the twisted flow of g, for a field strength F of so(r).)"""
     if _at_point(s):
-        return s.lift(bracket(s.inner, f, g, s._lower(F)))
+        return s.lift(bracket(s.inner, s._lower(f), s._lower(g), s._lower(F)))   # functions checked for captures
     if _is_free(s):
         return s.d(f, _free_flow(s, g, F))
     s = _scene(s, "the twisted Dirac bracket")
@@ -206,7 +206,7 @@ def flow(s, H: Function, F: Mat | None = None) -> Flow:
     letter of so(r), e.g. s.eta) it is the Lagrange form of :func:`multiplier_flow` with Λ, Π solved in
     the free algebra."""
     if _at_point(s):
-        return s.lift(flow(s.inner, H, s._lower(F)))
+        return s.lift(flow(s.inner, s._lower(H), s._lower(F)))   # H checked for captures of the point
     if _is_free(s):
         return _free_flow(s, H, F)
     s = _scene(s, "the Hamiltonian flow of the twisted form")

@@ -69,3 +69,14 @@ def captured_control(s):
     """True: the captured P is a fixed matrix, so the gradient in u.X is P and the gradient in u.P vanishes."""
     gX, gP = s.gradient(lambda u: u.tr(s.P.T @ u.X) + u.tr(u.X.T @ s.A @ u.X))
     return {"grad_X": gX - s.P - 2 * s.A @ s.X, "grad_P": gP}
+
+
+@claim("adv-captured-twisted-flow-at-point", kind="id", sizes=admissible(n_max=4, n_min=2, r_min=2, r_max=2),
+       statement="at (-X, -P), the twisted flow of tr(P^T u.X), P the base point's, has Xdot = 0 and Pdot = P")
+def captured_twisted_flow_at_point(s):
+    """The twisted flow (an engine step that hands H to the scene of the generic point itself) at (-X, -P).
+    For P the constant it is, H_X = P and H_P = 0, so Xdot = 0, Lambda = sym((-X)^T P) = 0 and Pdot = -P:
+    false.  Moved with the point (P -> -P) it would give Pdot = P."""
+    t = twisted.at_point(s, -s.X, -s.P)
+    flow = twisted.flow(t, lambda u: u.tr(s.P.T @ u.X))
+    return {"Xdot": flow.Xdot, "Pdot": flow.Pdot - s.P}

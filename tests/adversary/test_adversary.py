@@ -300,7 +300,7 @@ def test_r_is_n_with_sizes_r_less_than_n_fails_at_its_sizes(method):
 # -- O. a function handed to the scene closes over a value of the enclosing scene -------------------
 
 CAPTURED = ("adv-captured-grad", "adv-captured-at-point", "adv-captured-point-value", "adv-captured-scalar",
-            "adv-captured-default-flow", "adv-captured-d-at-point")
+            "adv-captured-default-flow", "adv-captured-d-at-point", "adv-captured-twisted-flow-at-point")
 
 
 def test_captured_base_value_is_not_proved():
