@@ -888,21 +888,23 @@ class FreeScene(PaperObjects):
         """(∂H/∂X, ∂H/∂P) of the trace form H as written: the cyclic derivative of the polynomial
         the lazy scene built (each gradient then reduced, which changes it only off T*V)."""
         self._as_written("the ambient gradient of H, which depends on H off T*V")
-        return self._gradient(H)
+        return self._gradient(H, ambient=True)
 
-    def _gradient(self, H: Function) -> tuple[Mat, Mat]:
+    def _gradient(self, H: Function, ambient: bool = False) -> tuple[Mat, Mat]:
         """(∂H/∂X, ∂H/∂P) of the trace form H as the scene's arithmetic built it: on a lazy scene the
         polynomial as written (the ambient gradient), on an eager one H reduced modulo the
         constraints (which changes H only off T*V, so Dirac flows are unaffected, but the
         canonical flow and the multipliers Λ, Π are those of the reduced form).
 
         H is evaluated on a scene of its own whose X, P are fresh letters (:class:`FunctionScene`):
-        a value of this scene that H closes over keeps the letters X, P and is a constant of H."""
+        a value of this scene that H closes over keeps the letters X, P and is a constant of H.
+        ``ambient``: the gradient is used off T*V too (an ambient gradient or flow, not a Dirac flow), so H
+        may not hold a flow whose multipliers are solved on T*V (see :class:`FunctionScene`)."""
         def build():
-            u = FunctionScene(self)
+            u = FunctionScene(self, ambient)
             h = u._hamiltonian(H)
             return tuple(self._const_mat(self.system.normal_form(u.back(gradient(h, u.own(L))))) for L in (X, P))
-        return self._cached_for("grad", H, build)
+        return self._cached_for("grad:ambient" if ambient else "grad", H, build)
 
     def _dual_field(self) -> "FreeDualField":
         """The dual numbers over this scene's field (one for every tangent scene of this scene)."""
@@ -921,7 +923,7 @@ class FreeScene(PaperObjects):
         """The Hamiltonian vector field of H as written for the ambient bracket {,}_0:
         Ẋ = ∂H/∂P, Ṗ = −∂H/∂X."""
         self._as_written("the ambient (canonical) flow, which depends on H off T*V")
-        HX, HP = self._gradient(H)
+        HX, HP = self._gradient(H, ambient=True)
         return Flow(HP, -HX)
 
     def dirac_flow(self, H: Function) -> Flow:
@@ -1047,8 +1049,8 @@ class FreeScene(PaperObjects):
     def canonical_bracket(self, F: Function, G: Function) -> Any:
         """{F, G}_0 = tr(F_Xᵀ G_P) − tr(F_Pᵀ G_X) for F, G as written (see :meth:`_as_written`)."""
         self._as_written("the ambient bracket {F, G}_0, which depends on F, G off T*V")
-        FX, FP = self._gradient(F)
-        GX, GP = self._gradient(G)
+        FX, FP = self._gradient(F, ambient=True)
+        GX, GP = self._gradient(G, ambient=True)
         return self.tr(FX.T @ GP) - self.tr(FP.T @ GX)
 
     def bracket(self, F: Function, G: Function) -> Any:
@@ -1111,6 +1113,17 @@ class FreeTangentScene(FreeScene):
         self._named = base._named
         self.columns = base.columns
         self.square = base.square
+        #: the tangent scene of a function's scene (FunctionScene): that scene's own (fresh) letters
+        self._fresh = getattr(base, "_fresh", {})
+
+    def _letter(self, L: Letter) -> Mat:
+        F = self._fresh.get(L)
+        if F is None:
+            return super()._letter(L)
+        hit = self._letters.get(F)
+        if hit is None:
+            hit = self._letters[F] = self._prim(str(L), _w(F))    # moved by the flow's component for L
+        return hit
 
     def _prim(self, key: str, poly: NCPoly) -> Mat:
         dot = self.flow.get(key)
@@ -1150,8 +1163,11 @@ class FunctionScene(FreeScene):
     keeps its letters X, P and so stays a constant of the function; :meth:`back` renames the fresh
     letters to the enclosing scene's own once the function's derivatives are taken."""
 
-    def __init__(self, base: FreeScene) -> None:
+    def __init__(self, base: FreeScene, ambient: bool = False) -> None:
         super().__init__(base.tracker, base.system)
+        #: the function's ambient gradient is taken (here or in an enclosing function): a flow inside it
+        #: whose multipliers are solved modulo the constraints would change it off T*V, and is refused
+        self.ambient = ambient or getattr(base, "ambient", False)
         self._field = base._field
         self.params = base.params
         self._resolvents = base._resolvents
@@ -1164,6 +1180,9 @@ class FunctionScene(FreeScene):
         for L in _POINT_LETTERS:
             F, Ft = letter_pair(f"{L}'{k}", f"{L.adjoint}'{k}", L.row, L.col, L.latex, L.adjoint.latex)
             self._fresh[L], self._fresh[L.adjoint] = F, Ft
+        # back to the enclosing scene's own letters (those of an enclosing function scene, when nested)
+        outer = getattr(base, "_fresh", {})
+        self._back = {self._fresh[L]: _w(outer.get(L, L)) for L in _POINT_LETTERS}
 
     def _letter(self, L: Letter) -> Mat:
         return super()._letter(self._fresh.get(L, L))
@@ -1174,10 +1193,46 @@ class FunctionScene(FreeScene):
 
     def back(self, p: NCPoly) -> NCPoly:
         """p with the fresh letters renamed to the enclosing scene's X, P (Y, Q)."""
-        return substitute(p, {self._fresh[L]: _w(L) for L in _POINT_LETTERS})
+        return substitute(p, self._back)
 
     def at_point(self, Xv: Mat, Pv: Mat) -> "FreePointScene":
         raise refuse("a scene at another point inside a function handed to the scene", self.tracker)
+
+    # flows inside a function: their multipliers are solved with the rules of the point X, P; the
+    # function's point is its fresh letters, so the gradients are renamed to X, P for the solve and the
+    # flow renamed back (an isomorphism of the algebra when no value of the base point is among them)
+    def to_point(self, *polys: NCPoly) -> list[NCPoly]:
+        """The polynomials with this scene's letters renamed to X, P (Y, Q); refused when they hold the base
+        point's own letters too (a captured value, which the renaming would take for this scene's)."""
+        if _point_letters_in(list(polys), set()):
+            raise refuse("a flow inside a function handed to the scene, of a Hamiltonian that closes over a value "
+                         "of the scene's point", self.tracker)
+        return [substitute(q, {self._fresh[L]: _w(L) for L in _POINT_LETTERS}) for q in polys]
+
+    def from_point(self, *polys: NCPoly) -> list[NCPoly]:
+        """The inverse renaming of :meth:`to_point`."""
+        return [substitute(q, {L: _w(self._fresh[L]) for L in _POINT_LETTERS}) for q in polys]
+
+    def refuse_ambient_flow(self) -> None:
+        if self.ambient:
+            raise refuse("a flow inside a function whose ambient gradient is taken (its multipliers are solved "
+                         "modulo the constraints, which changes the function off T*V)", self.tracker)
+
+    def _multiplier_flow(self, H: Function) -> Flow:
+        self.refuse_ambient_flow()
+        HX, HP = self.to_point(*(entry_of(m) for m in self._gradient(H)))
+        Xd, Pd, Lam, Pi = self.from_point(*self._pair_multipliers(HX, HP, X, P))
+        return Flow(self._const_mat(Xd), self._const_mat(Pd),
+                    multipliers={"Pi": self._const_mat(Pi), "Lambda": self._const_mat(Lam)})
+
+    def pairs_dirac_flow(self, H, point, pairs):
+        raise refuse("a flow with multipliers inside a function handed to the scene", self.tracker)
+
+    def derivative_at_own_point(self, F, point, tangent):
+        raise refuse("a derivative at a point of a phase space inside a function handed to the scene", self.tracker)
+
+    def euler_lagrange_double(self, T, U, constraints, position, velocity):
+        raise refuse("Euler-Lagrange equations inside a function handed to the scene", self.tracker)
 
 
 def _point_letters_in(v: Any, out: set) -> set:

@@ -80,3 +80,56 @@ def captured_twisted_flow_at_point(s):
     t = twisted.at_point(s, -s.X, -s.P)
     flow = twisted.flow(t, lambda u: u.tr(s.P.T @ u.X))
     return {"Xdot": flow.Xdot, "Pdot": flow.Pdot - s.P}
+
+
+@claim("adv-nested-gradient", kind="id", sizes=ALL,
+       statement="grad_X of tr(G(u)^T u.X), G(u) = grad_X tr(u.X^T u.X) = 2 u.X taken inside, is 2X")
+def nested_gradient(s):
+    """False: G(u) = 2 u.X depends on u, so the gradient of tr(2 u.X^T u.X) is 4X (a nested function's letters
+    must be renamed back to the enclosing function's own, not to the base scene's)."""
+    gX, _gP = s.gradient(lambda u: u.tr(u.gradient(lambda w: w.tr(w.X.T @ w.X))[0].T @ u.X))
+    return {"r": gX - 2 * s.X}
+
+
+@claim("adv-nested-gradient-control", kind="id", sizes=ALL,
+       statement="grad_X of tr(G(u)^T u.X), G(u) = grad_X tr(u.X^T u.X) = 2 u.X taken inside, is 4X (true)")
+def nested_gradient_control(s):
+    """True: the gradient of tr(2 u.X^T u.X) is 4X."""
+    gX, _gP = s.gradient(lambda u: u.tr(u.gradient(lambda w: w.tr(w.X.T @ w.X))[0].T @ u.X))
+    return {"r": gX - 4 * s.X}
+
+
+@claim("adv-nested-derivative", kind="id", sizes=ALL,
+       statement="grad_X of H(u) = d/dt tr(u.X^T u.X)/2 along Xdot = u.P (a derivative taken inside) is 0")
+def nested_derivative(s):
+    """False: H(u) = tr(u.X^T u.P), so grad_X H = P (the tangent scene of a function's scene must keep the
+    function's own letters)."""
+    gX, _gP = s.gradient(lambda u: u.d(lambda w: w.tr(w.X.T @ w.X) / 2, {"X": u.P, "P": u.P}))
+    return {"r": gX}
+
+
+@claim("adv-nested-bracket", kind="id", sizes=ALL,
+       statement="grad_X of H(u) = {tr(X^T A X), tr(P^T P)/2}(u) (a bracket taken inside) is 0")
+def nested_bracket(s):
+    """False: along the Dirac flow of tr(P^T P)/2 (Xdot = P), d tr(X^T A X) = 2 tr(X^T A P), whose gradient in X is
+    2AP; the flow's multipliers need the rules of the scene's own point, so a flow inside a function is refused."""
+    gX, _gP = s.gradient(lambda u: u.bracket(lambda w: w.tr(w.X.T @ w.A @ w.X), lambda w: w.tr(w.P.T @ w.P) / 2))
+    return {"r": gX}
+
+
+@claim("adv-nested-derivative-control", kind="id", sizes=ALL,
+       statement="grad_X of H(u) = d/dt tr(u.X^T u.X)/2 along Xdot = u.P is P (true)")
+def nested_derivative_control(s):
+    """True: H(u) = tr(u.X^T u.P)."""
+    gX, _gP = s.gradient(lambda u: u.d(lambda w: w.tr(w.X.T @ w.X) / 2, {"X": u.P, "P": u.P}))
+    return {"r": gX - s.P}
+
+
+@claim("adv-nested-bracket-ambient", kind="id", sizes=ALL,
+       statement="grad_P of H(u) = {tr(X^T A X), tr(P^T P)/2}(u) is 2AX")
+def nested_bracket_ambient(s):
+    """False as an ambient gradient: the flow of tr(P^T P)/2 has Xdot = P - X Pi with Pi = sym(X^T P) as written,
+    which vanishes on T*V only, so grad_P of H = 2 tr(X^T A (P - X Pi)) is 2AX - 2 X X^T A X there; solving Pi modulo
+    the constraints (Pi = 0) inside the function, as a Dirac flow may, would prove it."""
+    _gX, gP = s.gradient(lambda u: u.bracket(lambda w: w.tr(w.X.T @ w.A @ w.X), lambda w: w.tr(w.P.T @ w.P) / 2))
+    return {"r": gP - 2 * s.A @ s.X}
