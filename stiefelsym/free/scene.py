@@ -903,8 +903,16 @@ class FreeScene(PaperObjects):
         def build():
             u = FunctionScene(self, ambient)
             h = u._hamiltonian(H)
+            self._cache[f"holds a flow:{id(H)}"] = (H, u.nested_flow)
             return tuple(self._const_mat(self.system.normal_form(u.back(gradient(h, u.own(L))))) for L in (X, P))
         return self._cached_for("grad:ambient" if ambient else "grad", H, build)
+
+    def _holds_flow(self, H: Function) -> bool:
+        """Whether H, as evaluated for its gradient, solved a flow's multipliers modulo the constraints (which
+        changes H off T*V: its Dirac flow stands, its ambient gradient and its multipliers Λ, Π do not)."""
+        self._gradient(H)
+        hit = self._cache.get(f"holds a flow:{id(H)}")
+        return hit is None or hit[0] is not H or hit[1]
 
     def _dual_field(self) -> "FreeDualField":
         """The dual numbers over this scene's field (one for every tangent scene of this scene)."""
@@ -930,7 +938,7 @@ class FreeScene(PaperObjects):
         """(dot_XP): Ẋ = H_P − XΠ, Ṗ = −H_X + XΛ + PΠ with Π, Λ solved in the free algebra."""
         def build():
             flow = self._multiplier_flow(H)
-            if getattr(self._field, "lazy", False):
+            if getattr(self._field, "lazy", False) and not self._holds_flow(H):
                 return flow                     # H as written: Λ, Π are H's own multipliers
             return Flow(flow.Xdot, flow.Pdot)   # the multipliers of the reduced form are not H's
         return self._cached_for("dflow", H, build)
@@ -938,6 +946,9 @@ class FreeScene(PaperObjects):
     def multiplier_flow(self, H: Function) -> Flow:
         """(dot_XP) with the Lagrange multipliers Λ, Π of H as written (see :meth:`_as_written`)."""
         self._as_written("the Lagrange multipliers, which depend on H off T*V")
+        if self._holds_flow(H):
+            raise refuse("the Lagrange multipliers of a Hamiltonian that holds a flow (solved modulo the constraints, "
+                         "which changes it off T*V)", self.tracker)
         return self.dirac_flow(H)
 
     def _multiplier_flow(self, H: Function) -> Flow:
@@ -1168,6 +1179,9 @@ class FunctionScene(FreeScene):
         #: the function's ambient gradient is taken (here or in an enclosing function): a flow inside it
         #: whose multipliers are solved modulo the constraints would change it off T*V, and is refused
         self.ambient = ambient or getattr(base, "ambient", False)
+        #: a flow's multipliers were solved inside the function (or a function inside it)
+        self.nested_flow = False
+        self._outer = base
         self._field = base._field
         self.params = base.params
         self._resolvents = base._resolvents
@@ -1214,6 +1228,11 @@ class FunctionScene(FreeScene):
         return [substitute(q, {L: _w(self._fresh[L]) for L in _POINT_LETTERS}) for q in polys]
 
     def refuse_ambient_flow(self) -> None:
+        """Refused in a function whose ambient gradient is taken; otherwise recorded (see ``nested_flow``)."""
+        s: Any = self
+        while isinstance(s, FunctionScene):
+            s.nested_flow = True
+            s = s._outer
         if self.ambient:
             raise refuse("a flow inside a function whose ambient gradient is taken (its multipliers are solved "
                          "modulo the constraints, which changes the function off T*V)", self.tracker)

@@ -332,6 +332,15 @@ def test_captured_value_at_a_double_point_is_not_proved():
         assert v["adv-captured-double-derivative"] not in PASSING and v["adv-captured-double-control"] in PASSING, v
 
 
+def test_multipliers_of_a_hamiltonian_holding_a_flow_are_not_proved():
+    """Inside a function the free scene solves a flow's multipliers modulo the constraints: the function's Dirac
+    flow is kept (proved, checked), its multipliers are refused (they depend on it off T*V)."""
+    v = verdicts("nested_flow_multipliers.py", "free")
+    assert v["adv-nested-multipliers"] not in PASSING and v["adv-nested-dirac-flow"] == "proved", v
+    v = verdicts("nested_flow_multipliers.py", "modular", size="3,2")
+    assert v["adv-nested-multipliers"] == "fails" and v["adv-nested-dirac-flow"] in PASSING, v
+
+
 # -- P. column letters at one r, the scene at another point, the letters at r = n (no hole found) -----
 
 COLUMNS_R2 = ("adv-cols-complete-in-n", "adv-cols-swapped", "adv-cols-range-r", "adv-cols-r23", "adv-cols-r2-trace",
