@@ -173,7 +173,7 @@ def bracket(s, f: Function, g: Function, F: Mat | None = None) -> Any:
     """The Dirac bracket (Dirac_bracket) built from {,}_ε: the Poisson bracket of ω + ε π*ω_mag on T*V.
     (Dimension-free: the derivative of f along the twisted flow of g, for a field strength F of so(r).)"""
     if _at_point(s):
-        return s.lift(bracket(s.inner, f, g, s._lower(F)))
+        return s.lift(bracket(s.inner, s._lower(f), s._lower(g), s._lower(F)))   # functions checked for captures
     if _is_free(s):
         return s.d(f, _free_flow(s, g, F))
     s = _scene(s, "the twisted Dirac bracket")
@@ -206,7 +206,7 @@ def flow(s, H: Function, F: Mat | None = None) -> Flow:
     letter of so(r), e.g. s.eta) it is the Lagrange form of :func:`multiplier_flow` with Λ, Π solved in
     the free algebra."""
     if _at_point(s):
-        return s.lift(flow(s.inner, H, s._lower(F)))
+        return s.lift(flow(s.inner, s._lower(H), s._lower(F)))   # H checked for captures of the point
     if _is_free(s):
         return _free_flow(s, H, F)
     s = _scene(s, "the Hamiltonian flow of the twisted form")
@@ -234,14 +234,19 @@ def _is_free(s: Any) -> bool:
 def _free_flow(s, H: Function, F: Mat | None) -> Flow:
     """The twisted flow in the free algebra: Ẋ = H_P − XΠ, Ṗ = −H_X − εẊF + XΛ + PΠ, with Π, Λ solved
     from d/dt(XᵀX) = 0 and d/dt(XᵀP + PᵀX) = 0 (the same construction as the scene's Dirac flows)."""
+    from .free.scene import LAMBDA, PI, P as LP, X as LX, FunctionScene, _w, solve_multipliers
+    own = isinstance(s, FunctionScene)  # inside a function: solved at X, P, renamed to its fresh letters
+    if own:
+        s.refuse_ambient_flow()
     if F is None:
         F = magnetic_matrix(s)   # the columns E_1, E_2 of a claim at r = 2 (refused otherwise)
-    from .free.scene import LAMBDA, PI, P as LP, X as LX, _w, solve_multipliers
     from .free.algebra import substitute
 
     def build():
         f = F._a[0, 0]
         HX, HP = (m._a[0, 0] for m in s._gradient(H))
+        if own:
+            HX, HP = s.to_point(HX, HP)
         nf = s.system.normal_form
         x, p = _w(LX), _w(LP)
         Pi, Lam = _w(PI), _w(LAMBDA)
@@ -251,6 +256,8 @@ def _free_flow(s, H: Function, F: Mat | None) -> Flow:
         eq_XP = nf(Xd.star() * p + x.star() * Pd + Pd.star() * x + p.star() * Xd)
         solved = solve_multipliers([eq_XX, eq_XP], [PI, LAMBDA], s.system)
         Xd, Pd = (nf(substitute(v, solved)) for v in (Xd, Pd))
+        if own:
+            Xd, Pd = s.from_point(Xd, Pd)
         return Flow(s._const_mat(Xd), s._const_mat(Pd))
     return s._cached_for("twisted:flow:" + str(f_key(F)), H, build)
 

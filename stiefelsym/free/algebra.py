@@ -960,13 +960,35 @@ def apply_operator(op: str, p: NCPoly) -> NCPoly:
         raise TypeError(f"the operator {op} acts on so(n), not on a {p.row}×{p.col} polynomial")
     out: dict = {}
     for (tm, w), c in p.terms.items():
+        tm, w, sp = _scalar_pieces(tm, w)
+        if sp == 0:
+            continue
         s, v = operator_rep(w)
+        s *= sp
         if s == 0:
             continue
         k = (tm, (operator_letter(op, v),))
         x = c if s == 1 else cneg(c)
         out[k] = csum(out[k], x) if k in out else x
     return NCPoly(nonzero_terms_raw(out), "n", "n")
+
+
+def _scalar_pieces(tm: Traces, w: Word) -> tuple[Traces, Word, int]:
+    """An argument word that passes through a 1×1 space twice, u·(x)·v with x 1×1, as tr(x)·u·v (a 1×1
+    matrix is its own trace, and 𝔸 is linear): (traces, word, sign), sign 0 when a piece vanishes.  So
+    the argument of an operator letter never holds a scalar piece (E₂ᵀE₂, E₁ᵀXᵀPE₂...), which the rules,
+    acting outside operator letters, would leave as it is."""
+    ks = [k for k in range(len(w)) if w[k].row == SCALAR]
+    if len(ks) < 2:
+        return tm, w, 1
+    sign = 1
+    for a, b in zip(ks, ks[1:]):
+        s, rep = cycle_rep(w[a:b])
+        if s == 0:
+            return tm, w, 0
+        sign *= s
+        tm = merge_traces(tm, (rep,))
+    return tm, w[:ks[0]] + w[ks[-1]:], sign
 
 
 def nonzero_terms_raw(terms: dict) -> dict:

@@ -561,9 +561,22 @@ class FreeScene(PaperObjects):
         for rel in (hypothesis("DXtDY").poly, hypothesis("DXdtDY+DXtDYd").poly):
             if not self.reduce(derivation(rel, images)).is_zero:
                 raise refuse("a derivative along a vector that does not keep (D0) and its derivative", self.tracker)
-        value = F(self, dict(point))
-        return map_entries(value, lambda x: self.field.normalize(derivation(x, images)) if isinstance(x, NCPoly)
-                           else se.Integer(0), self)
+        # F's own variables are fresh letters: a value of this scene F closes over (its DX, DY ...) keeps
+        # the point's letters and is a constant of F, not moved with the point
+        _FRESH[0] += 1
+        fresh, own = {}, {}
+        for k, L in DOUBLE.items():
+            Fl, Flt = letter_pair(f"{L}'{_FRESH[0]}", f"{L.adjoint}'{_FRESH[0]}", L.row, L.col, L.latex,
+                                  L.adjoint.latex)
+            fresh[k], own[Fl] = Fl, _w(L)
+        moved = {fresh[k]: images[L] for k, L in DOUBLE.items() if L in images}
+        value = F(self, {k: self._const_mat(_w(fresh[k])) if k in fresh else v for k, v in dict(point).items()})
+
+        def derivative(x: Any) -> Any:
+            if not isinstance(x, NCPoly):
+                return se.Integer(0)
+            return self.field.normalize(substitute(derivation(x, moved), own))
+        return map_entries(value, derivative, self)
 
     def euler_lagrange_double(self, T: Callable, U: Callable, constraints: Callable, position: Mapping[str, Any],
                               velocity: Mapping[str, Any]) -> tuple[dict[str, Mat], list]:
@@ -598,15 +611,25 @@ class FreeScene(PaperObjects):
         M = Letter("Mu", "r", "r")
         M.adjoint = Letter("Mut", "r", "r")
         M.adjoint.adjoint = M
-        kinetic, potential = self._trace_form(T(self, v)), self._trace_form(U(self, q))
+        # T and U are evaluated at fresh letters (their own variables): a value of this scene they close
+        # over keeps the point's letters and is a constant of theirs
+        _FRESH[0] += 1
+        fresh = {k: letter_pair(f"{L}'{_FRESH[0]}", f"{L.adjoint}'{_FRESH[0]}", L.row, L.col, L.latex,
+                                L.adjoint.latex)[0] for k, L in DOUBLE.items()}
+        back = {fresh[k]: _w(L) for k, L in DOUBLE.items()}
+        kinetic = self._trace_form(T(self, {k: self._const_mat(_w(fresh[k + "dot"])) for k in ("X", "Y")}))
+        potential = self._trace_form(U(self, {k: self._const_mat(_w(fresh[k])) for k in ("X", "Y")}))
         force = trace(_w(M.adjoint) * D0)
-        to_acc = {DOUBLE[k + "dot"]: _w(acc[k]) for k in ("X", "Y")}
         equations = []
         for key, L in (("X", DX), ("Y", DY)):
-            momentum = gradient(kinetic, DOUBLE[key + "dot"])
-            if momentum.letters() & {DX, DY, DXt, DYt}:
+            momentum = gradient(kinetic, fresh[key + "dot"])
+            if momentum.letters() & {DX, DY, DXt, DYt, fresh["X"], fresh["Y"], fresh["X"].adjoint,
+                                     fresh["Y"].adjoint}:
                 raise refuse("a kinetic energy whose coefficients depend on the position", self.tracker)
-            equations.append(substitute(momentum, to_acc) + gradient(potential, L) - gradient(force, L))
+            # d/dt ∂T/∂q̇ = ∂T/∂q̇ at q̇ ↦ q̈ (constant coefficients): F's own velocities only
+            momentum = substitute(momentum, {fresh[k + "dot"]: _w(acc[k]) for k in ("X", "Y")})
+            equations.append(substitute(momentum, back) + substitute(gradient(potential, fresh[key]), back)
+                             - gradient(force, L))
         nf = self.system.normal_form
         solved = solve_multipliers([nf(e) for e in equations], list(acc.values()), self.system)
         gdot = derivation(D0, {DX: _w(DXd), DY: _w(DYd)})
@@ -865,18 +888,31 @@ class FreeScene(PaperObjects):
         """(∂H/∂X, ∂H/∂P) of the trace form H as written: the cyclic derivative of the polynomial
         the lazy scene built (each gradient then reduced, which changes it only off T*V)."""
         self._as_written("the ambient gradient of H, which depends on H off T*V")
-        return self._gradient(H)
+        return self._gradient(H, ambient=True)
 
-    def _gradient(self, H: Function) -> tuple[Mat, Mat]:
+    def _gradient(self, H: Function, ambient: bool = False) -> tuple[Mat, Mat]:
         """(∂H/∂X, ∂H/∂P) of the trace form H as the scene's arithmetic built it: on a lazy scene the
         polynomial as written (the ambient gradient), on an eager one H reduced modulo the
         constraints (which changes H only off T*V, so Dirac flows are unaffected, but the
-        canonical flow and the multipliers Λ, Π are those of the reduced form)."""
+        canonical flow and the multipliers Λ, Π are those of the reduced form).
+
+        H is evaluated on a scene of its own whose X, P are fresh letters (:class:`FunctionScene`):
+        a value of this scene that H closes over keeps the letters X, P and is a constant of H.
+        ``ambient``: the gradient is used off T*V too (an ambient gradient or flow, not a Dirac flow), so H
+        may not hold a flow whose multipliers are solved on T*V (see :class:`FunctionScene`)."""
         def build():
-            h = self._hamiltonian(H)
-            return (self._const_mat(self.system.normal_form(gradient(h, X))),
-                    self._const_mat(self.system.normal_form(gradient(h, P))))
-        return self._cached_for("grad", H, build)
+            u = FunctionScene(self, ambient)
+            h = u._hamiltonian(H)
+            self._cache[f"holds a flow:{id(H)}"] = (H, u.nested_flow)
+            return tuple(self._const_mat(self.system.normal_form(u.back(gradient(h, u.own(L))))) for L in (X, P))
+        return self._cached_for("grad:ambient" if ambient else "grad", H, build)
+
+    def _holds_flow(self, H: Function) -> bool:
+        """Whether H, as evaluated for its gradient, solved a flow's multipliers modulo the constraints (which
+        changes H off T*V: its Dirac flow stands, its ambient gradient and its multipliers Λ, Π do not)."""
+        self._gradient(H)
+        hit = self._cache.get(f"holds a flow:{id(H)}")
+        return hit is None or hit[0] is not H or hit[1]
 
     def _dual_field(self) -> "FreeDualField":
         """The dual numbers over this scene's field (one for every tangent scene of this scene)."""
@@ -895,14 +931,14 @@ class FreeScene(PaperObjects):
         """The Hamiltonian vector field of H as written for the ambient bracket {,}_0:
         Ẋ = ∂H/∂P, Ṗ = −∂H/∂X."""
         self._as_written("the ambient (canonical) flow, which depends on H off T*V")
-        HX, HP = self._gradient(H)
+        HX, HP = self._gradient(H, ambient=True)
         return Flow(HP, -HX)
 
     def dirac_flow(self, H: Function) -> Flow:
         """(dot_XP): Ẋ = H_P − XΠ, Ṗ = −H_X + XΛ + PΠ with Π, Λ solved in the free algebra."""
         def build():
             flow = self._multiplier_flow(H)
-            if getattr(self._field, "lazy", False):
+            if getattr(self._field, "lazy", False) and not self._holds_flow(H):
                 return flow                     # H as written: Λ, Π are H's own multipliers
             return Flow(flow.Xdot, flow.Pdot)   # the multipliers of the reduced form are not H's
         return self._cached_for("dflow", H, build)
@@ -910,6 +946,9 @@ class FreeScene(PaperObjects):
     def multiplier_flow(self, H: Function) -> Flow:
         """(dot_XP) with the Lagrange multipliers Λ, Π of H as written (see :meth:`_as_written`)."""
         self._as_written("the Lagrange multipliers, which depend on H off T*V")
+        if self._holds_flow(H):
+            raise refuse("the Lagrange multipliers of a Hamiltonian that holds a flow (solved modulo the constraints, "
+                         "which changes it off T*V)", self.tracker)
         return self.dirac_flow(H)
 
     def _multiplier_flow(self, H: Function) -> Flow:
@@ -966,13 +1005,14 @@ class FreeScene(PaperObjects):
         if sorted(k for pq in pairs for k in pq) != sorted(keys) or any(len(pq) != 2 for pq in pairs):
             raise refuse("a Hamiltonian flow whose pairs are not the point's letters", self.tracker)
         letters = {k: self._named[k] for k in keys}
-        h = self._hamiltonian(lambda t: H(t, {k: getattr(t, k) for k in keys}))
+        u = FunctionScene(self)         # H's own letters: fresh (a value of this scene it closes over is a constant)
+        h = u._hamiltonian(lambda t: H(t, {k: getattr(t, k) for k in keys}))
         nf = self.system.normal_form
         out: dict[str, Mat] = {}
         for xk, pk in pairs:
             if (xk, pk) not in (("X", "P"), ("Y", "Q")):
                 raise refuse(f"a Hamiltonian flow with the pair ({xk}, {pk})", self.tracker)
-            HX, HP = nf(gradient(h, letters[xk])), nf(gradient(h, letters[pk]))
+            HX, HP = (nf(u.back(gradient(h, u.own(letters[k])))) for k in (xk, pk))
             Xd, Pd, _, _ = self._pair_multipliers(HX, HP, letters[xk], letters[pk])
             out[xk], out[pk] = self._const_mat(Xd), self._const_mat(Pd)
         return out
@@ -1020,8 +1060,8 @@ class FreeScene(PaperObjects):
     def canonical_bracket(self, F: Function, G: Function) -> Any:
         """{F, G}_0 = tr(F_Xᵀ G_P) − tr(F_Pᵀ G_X) for F, G as written (see :meth:`_as_written`)."""
         self._as_written("the ambient bracket {F, G}_0, which depends on F, G off T*V")
-        FX, FP = self._gradient(F)
-        GX, GP = self._gradient(G)
+        FX, FP = self._gradient(F, ambient=True)
+        GX, GP = self._gradient(G, ambient=True)
         return self.tr(FX.T @ GP) - self.tr(FP.T @ GX)
 
     def bracket(self, F: Function, G: Function) -> Any:
@@ -1083,6 +1123,17 @@ class FreeTangentScene(FreeScene):
         self._named = base._named
         self.columns = base.columns
         self.square = base.square
+        #: the tangent scene of a function's scene (FunctionScene): that scene's own (fresh) letters
+        self._fresh = getattr(base, "_fresh", {})
+
+    def _letter(self, L: Letter) -> Mat:
+        F = self._fresh.get(L)
+        if F is None:
+            return super()._letter(L)
+        hit = self._letters.get(F)
+        if hit is None:
+            hit = self._letters[F] = self._prim(str(L), _w(F))    # moved by the flow's component for L
+        return hit
 
     def _prim(self, key: str, poly: NCPoly) -> Mat:
         dot = self.flow.get(key)
@@ -1108,6 +1159,126 @@ class FreeTangentScene(FreeScene):
     def dirac_flow(self, H: Function) -> Flow:
         record_refusal("a flow built along a tangent", self.tracker)
         raise TypeError("flows are built on the base scene, not along a tangent")
+
+
+#: the letters of a point of T*V (and of a second point): a function handed to a scene gets fresh ones
+_POINT_LETTERS = (X, P, Y, Q)
+_FRESH = [0]
+
+
+class FunctionScene(FreeScene):
+    """The scene a function handed to a free scene (a Hamiltonian, a function to differentiate) is
+    evaluated on: the same field, rules, parameters and record, but its point is fresh letters X′, P′
+    (Y′, Q′), distinct for every such scene.  A value of the enclosing scene the function closes over
+    keeps its letters X, P and so stays a constant of the function; :meth:`back` renames the fresh
+    letters to the enclosing scene's own once the function's derivatives are taken."""
+
+    def __init__(self, base: FreeScene, ambient: bool = False) -> None:
+        super().__init__(base.tracker, base.system)
+        #: the function's ambient gradient is taken (here or in an enclosing function): a flow inside it
+        #: whose multipliers are solved modulo the constraints would change it off T*V, and is refused
+        self.ambient = ambient or getattr(base, "ambient", False)
+        #: a flow's multipliers were solved inside the function (or a function inside it)
+        self.nested_flow = False
+        self._outer = base
+        self._field = base._field
+        self.params = base.params
+        self._resolvents = base._resolvents
+        self._extras = base._extras
+        self.columns = base.columns
+        self.square = base.square
+        _FRESH[0] += 1
+        k = _FRESH[0]
+        self._fresh: dict[Letter, Letter] = {}
+        for L in _POINT_LETTERS:
+            F, Ft = letter_pair(f"{L}'{k}", f"{L.adjoint}'{k}", L.row, L.col, L.latex, L.adjoint.latex)
+            self._fresh[L], self._fresh[L.adjoint] = F, Ft
+        # back to the enclosing scene's own letters (those of an enclosing function scene, when nested)
+        outer = getattr(base, "_fresh", {})
+        self._back = {self._fresh[L]: _w(outer.get(L, L)) for L in _POINT_LETTERS}
+
+    def _letter(self, L: Letter) -> Mat:
+        return super()._letter(self._fresh.get(L, L))
+
+    def own(self, L: Letter) -> Letter:
+        """The fresh letter that stands for the enclosing scene's letter L."""
+        return self._fresh[L]
+
+    def back(self, p: NCPoly) -> NCPoly:
+        """p with the fresh letters renamed to the enclosing scene's X, P (Y, Q)."""
+        return substitute(p, self._back)
+
+    def at_point(self, Xv: Mat, Pv: Mat) -> "FreePointScene":
+        raise refuse("a scene at another point inside a function handed to the scene", self.tracker)
+
+    # flows inside a function: their multipliers are solved with the rules of the point X, P; the
+    # function's point is its fresh letters, so the gradients are renamed to X, P for the solve and the
+    # flow renamed back (an isomorphism of the algebra when no value of the base point is among them)
+    def to_point(self, *polys: NCPoly) -> list[NCPoly]:
+        """The polynomials with this scene's letters renamed to X, P (Y, Q); refused when they hold the base
+        point's own letters too (a captured value, which the renaming would take for this scene's)."""
+        if _point_letters_in(list(polys), set()):
+            raise refuse("a flow inside a function handed to the scene, of a Hamiltonian that closes over a value "
+                         "of the scene's point", self.tracker)
+        return [substitute(q, {self._fresh[L]: _w(L) for L in _POINT_LETTERS}) for q in polys]
+
+    def from_point(self, *polys: NCPoly) -> list[NCPoly]:
+        """The inverse renaming of :meth:`to_point`."""
+        return [substitute(q, {L: _w(self._fresh[L]) for L in _POINT_LETTERS}) for q in polys]
+
+    def refuse_ambient_flow(self) -> None:
+        """Refused in a function whose ambient gradient is taken; otherwise recorded (see ``nested_flow``)."""
+        s: Any = self
+        while isinstance(s, FunctionScene):
+            s.nested_flow = True
+            s = s._outer
+        if self.ambient:
+            raise refuse("a flow inside a function whose ambient gradient is taken (its multipliers are solved "
+                         "modulo the constraints, which changes the function off T*V)", self.tracker)
+
+    def _multiplier_flow(self, H: Function) -> Flow:
+        self.refuse_ambient_flow()
+        HX, HP = self.to_point(*(entry_of(m) for m in self._gradient(H)))
+        Xd, Pd, Lam, Pi = self.from_point(*self._pair_multipliers(HX, HP, X, P))
+        return Flow(self._const_mat(Xd), self._const_mat(Pd),
+                    multipliers={"Pi": self._const_mat(Pi), "Lambda": self._const_mat(Lam)})
+
+    def pairs_dirac_flow(self, H, point, pairs):
+        raise refuse("a flow with multipliers inside a function handed to the scene", self.tracker)
+
+    def derivative_at_own_point(self, F, point, tangent):
+        raise refuse("a derivative at a point of a phase space inside a function handed to the scene", self.tracker)
+
+    def euler_lagrange_double(self, T, U, constraints, position, velocity):
+        raise refuse("Euler-Lagrange equations inside a function handed to the scene", self.tracker)
+
+
+def _point_letters_in(v: Any, out: set) -> set:
+    """The letters X, P, Y, Q (and transposes) in a value of a free scene, operator arguments included."""
+    if isinstance(v, Mat):
+        for x in v._a.flat:
+            _point_letters_in(x, out)
+    elif isinstance(v, Dual):
+        _point_letters_in(v.a, out)
+        _point_letters_in(v.b, out)
+    elif isinstance(v, NCPoly):
+        stack = list(v.letters())
+        while stack:
+            L = stack.pop()
+            if isinstance(L, OperatorLetter):
+                stack.extend(L.argument)
+            elif any(L is M or L is M.adjoint for M in _POINT_LETTERS):
+                out.add(L)
+    elif isinstance(v, Flow):
+        _point_letters_in(v.Xdot, out)
+        _point_letters_in(v.Pdot, out)
+    elif isinstance(v, (list, tuple)):
+        for x in v:
+            _point_letters_in(x, out)
+    elif isinstance(v, dict):
+        for x in v.values():
+            _point_letters_in(x, out)
+    return out
 
 
 def _lift_mat(M: Mat, field: Field) -> Mat:
@@ -1239,7 +1410,26 @@ class FreePointScene:
         if isinstance(v, (Mat, NCPoly, dict, list, tuple)):
             raise refuse("a value in the base scene's coordinates handed to the scene at another point",
                          self.base.tracker)
+        if callable(v) and self._closes_over_the_point(v):
+            raise refuse("a function handed to the scene at another point that closes over a value of the "
+                         "point X, P (the base scene's or the point's): read with the point's letters, it would be "
+                         "substituted as the function's own variable", self.base.tracker)
         return v
+
+    def _closes_over_the_point(self, f: Callable) -> bool:
+        """Whether f, evaluated on a scene whose point is fresh letters, returns the letters X, P (Y, Q):
+        they can only come from a value it closes over.  The scene at the point computes at the generic
+        point X, P and substitutes (X, P) ↦ (X₁, P₁), which would move such a value too."""
+        u = FunctionScene(self.inner)
+        for args in ((u,), (u, {"X": u.X, "P": u.P})):
+            try:
+                return bool(_point_letters_in(f(*args), set()))
+            except TypeError as exc:
+                if "called with" not in str(exc):
+                    return True
+            except Exception:
+                return True     # not evaluable on its own letters: not taken as a function of the point
+        return True
 
     #: what does not depend on the point: taken from the base scene (values given in its coordinates)
     POINTLESS = frozenset({"tr", "killing", "q", "const", "zeros", "In", "Ir", "scalar_matrix", "mat", "A", "Ainv",

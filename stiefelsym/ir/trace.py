@@ -87,32 +87,47 @@ def is_tracer(x: Any) -> bool:
 # sizes
 
 class Dim:
-    """A size ``k·n`` or ``k·r`` as claim code sees it.  At a fixed size it is its int in every use;
-    traced with symbolic sizes, it may only be multiplied by an int and used as a size of the
-    scene's blocks, and every other use is refused (and recorded)."""
+    """A size ``k·n`` or ``k·r`` as claim code sees it.  It carries no number: it is the expression
+    k·d and the trace it belongs to.  Its number is given out by one door, :meth:`_int` (int(n),
+    range(n), n == 3, str(n), hash(n) ... all go through it), which asks the trace: at a fixed size
+    the trace answers, traced with symbolic sizes the use is refused (and recorded).  So a claim
+    that traces with symbolic sizes without a refusal read no size, and its graph at every size is
+    the same.  Apart from the door, a size may be multiplied by an int and used as a size of the
+    scene's blocks; any other attribute is refused."""
 
-    __slots__ = ("_size", "_trace")
+    __slots__ = ("_expr", "_owner")
 
     def __init__(self, size: Size, trace: "Trace") -> None:
-        object.__setattr__(self, "_size", size)
-        object.__setattr__(self, "_trace", trace)
+        object.__setattr__(self, "_expr", Size(size.k, size.d, None))
+        object.__setattr__(self, "_owner", trace)
 
     def __setattr__(self, name: str, value: Any) -> None:
         raise AttributeError("a size is read-only")
 
+    def __getattr__(self, name: str) -> Any:
+        if name.startswith("__"):
+            raise AttributeError(name)      # Python's probes of protocols
+        return self._owner.refuse(f"a size has no attribute {name!r} (its number is int(n), at fixed sizes)")
+
+    def __reduce__(self):
+        return self._owner.refuse("a size cannot be pickled (its number is int(n), at fixed sizes)")
+
+    def __copy__(self):
+        return self
+
+    def __deepcopy__(self, memo):
+        return self
+
     def _int(self, what: str = "as a number") -> int:
-        v = self._size.value
-        if v is None:
-            self._trace.refuse(f"a size ({self._size.text()}) used {what}: the claim needs fixed sizes")
-        return v
+        return self._owner.size_number(self._expr, what)
 
     def _statement_int(self, what: str) -> int:
         return self._int(f"in {what}")
 
     def __mul__(self, c: Any) -> Any:
         if type(c) is int and type(c) is not bool:
-            s = self._size
-            return Dim(Size(s.k * c, s.d, None if s.value is None else s.value * c), self._trace)
+            s = self._expr
+            return Dim(Size(s.k * c, s.d, None), self._owner)
         return self._int() * (c._int() if type(c) is Dim else c)
 
     __rmul__ = __mul__
@@ -139,28 +154,29 @@ for _name in ("__add__", "__radd__", "__sub__", "__rsub__", "__floordiv__", "__r
     setattr(Dim, _name, _dim_op(_name))
 
 
-def _val(a: Any) -> int | None:
-    """The value of a size (an int, a :class:`Size` at a fixed size), or None."""
-    return a if type(a) is int else a.value if type(a) is Size else None
+def _val(a: Any, t: "Trace") -> int | None:
+    """The value of a size (an int, a :class:`Size` at a fixed size: the trace's number), or None.
+    The engine's own checks of shapes (what they refuse is recorded), not a door for claim code."""
+    return a if type(a) is int else t._numbers(a) if type(a) is Size else None
 
 
-def _same_size(a: Any, b: Any) -> bool | None:
+def _same_size(a: Any, b: Any, t: "Trace") -> bool | None:
     """Whether two sizes agree (for sizes of the scene: the same multiple of the same space); None
     when it cannot be told."""
     if a is None or b is None:
         return None
     if type(a) is Size and type(b) is Size:
         return (a.k, a.d) == (b.k, b.d)
-    va, vb = _val(a), _val(b)
+    va, vb = _val(a, t), _val(b, t)
     if va is None or vb is None:
         return None
     return va == vb
 
 
-def _add_sizes(a: Any, b: Any) -> Any:
+def _add_sizes(t: "Trace", a: Any, b: Any) -> Any:
     if type(a) is Size and type(b) is Size and a.d == b.d:
-        return Size(a.k + b.k, a.d, None if a.value is None or b.value is None else a.value + b.value)
-    va, vb = _val(a), _val(b)
+        return Size(a.k + b.k, a.d, None)
+    va, vb = _val(a, t), _val(b, t)
     return None if va is None or vb is None else va + vb
 
 
@@ -209,9 +225,10 @@ class Tracer:
         return self._t.refuse(f"a traced {self._kind} is not iterable")
 
     def __repr__(self) -> str:
+        # the spaces of a matrix, never a number of a size (a text that differed between a trace at a
+        # fixed size and one with symbolic sizes would tell them apart without the door of Dim)
         if self._kind == MAT:
-            m, k = (("?" if x.value is None else x.value) if type(x) is Size else "?" if x is None else x
-                    for x in self._shape)
+            m, k = (x.text() if type(x) is Size else "?" for x in self._shape)
             return f"<traced {m}x{k} matrix>"
         return f"<traced {self._kind}>"
 
@@ -245,13 +262,13 @@ class Tracer:
 
     def inv(self) -> "Tracer":
         """The inverse of a square matrix."""
-        if self._kind == SCALAR or _same_size(*self._shape) is False:
+        if self._kind == SCALAR or _same_size(*self._shape, self._t) is False:
             return self._t.refuse("the inverse of a matrix that is not square")
         return self._t.new("inv", (self._r,), self._kind, self._shape[::-1])
 
     def trace(self) -> "Tracer":
         """The trace of a square matrix."""
-        if self._kind == SCALAR or _same_size(*self._shape) is False:
+        if self._kind == SCALAR or _same_size(*self._shape, self._t) is False:
             return self._t.refuse("the trace of a matrix that is not square")
         return self._t.new("trace", (self._r,), SCALAR if self._kind == MAT else ANY)
 
@@ -271,7 +288,7 @@ class Tracer:
             return t.refuse("a sum of a matrix and a number (write c·I for a multiple of the identity)")
         if self._kind == MAT and kind_o == MAT:
             for x, y in zip(self._shape, o._shape):
-                if _same_size(x, y) is False:
+                if _same_size(x, y, t) is False:
                     return t.refuse(f"a sum of matrices whose spaces do not match ({self!r}, {o!r})")
         shape = self._shape if self._kind == MAT else o._shape if kind_o == MAT else (None, None)
         if self._kind == MAT and None in shape and kind_o == MAT:
@@ -297,7 +314,7 @@ class Tracer:
             return t.refuse("a matrix product with something that is not a matrix of the scene")
         if SCALAR in (self._kind, o._kind):
             return t.refuse("a matrix product with a number (use *)")
-        if _same_size(self._shape[1], o._shape[0]) is False:
+        if _same_size(self._shape[1], o._shape[0], t) is False:
             return t.refuse(f"a product of matrices whose spaces do not match ({self!r} @ {o!r})")
         kind = MAT if self._kind == o._kind == MAT else ANY
         return t.new("matmul", (self._r, o._r), kind, (self._shape[0], o._shape[1]))
@@ -368,7 +385,7 @@ class Tracer:
                         return t.refuse("a slice of a matrix has int bounds")
                     parts.append(p)
                 enc.append(("slice",) + tuple(parts))
-                shape.append(len(range(*slice(*parts).indices(_val(ax)))) if _val(ax) is not None else None)
+                shape.append(len(range(*slice(*parts).indices(_val(ax, t)))) if _val(ax, t) is not None else None)
             else:
                 return t.refuse("a matrix index is an int or a slice")
         if all(type(e) is int for e in enc):
@@ -463,7 +480,7 @@ class TraceScene:
         if name in ("n", "r"):
             return Dim(t.size(1, name), t)
         if name == "a":
-            n = t.size(1, "n").value
+            n = t.size_number(Size(1, "n", None), None)
             if n is None:
                 return t.refuse("the eigenvalues a_i of A (they need fixed sizes and coordinates)")
             base = t.g.add("attr", (self._r, "a"))
@@ -482,7 +499,7 @@ def _m_tr(s, M):
     t = s._t
     if not isinstance(M, Tracer) or M._kind == SCALAR:
         return t.refuse("tr takes a matrix of the scene")
-    if M._kind == MAT and _same_size(*M._shape) is False:
+    if M._kind == MAT and _same_size(*M._shape, s._t) is False:
         return t.refuse(f"the trace of a matrix whose row and column spaces do not match ({M!r})")
     return _call(s, "tr", (M._r,), SCALAR)
 
@@ -534,7 +551,7 @@ def _tags(t: "Trace", tags: Any, k: int) -> tuple:
 
 def _size_arg(t: "Trace", m: Any, what: str) -> Any:
     if type(m) is Dim:
-        return m._size
+        return m._expr
     if type(m) is int and m >= 0:
         return m
     return t.refuse(f"{what} is a size (an int, or s.n, s.r and their multiples)")
@@ -558,7 +575,7 @@ def _m_mat(s, rows, tags=("?", "?")):
                 return t.refuse("the entries of s.mat are numbers")
             cells.append(t.arg(x))
         out.append(t.g.add("list", tuple(cells)))
-    shape = tuple(t.size(1, tg) if tg in ("n", "r") and _val(t.size(1, tg)) == m else m
+    shape = tuple(t.size(1, tg) if tg in ("n", "r") and _val(t.size(1, tg), t) == m else m
                   for tg, m in zip(tags, (len(rows), width)))
     return _call(s, "mat", (t.g.add("list", tuple(out)), tags), MAT, shape)
 
@@ -614,7 +631,7 @@ def _m_realify(s, U, V):
     t = s._t
     if not (isinstance(U, Tracer) and isinstance(V, Tracer)):
         return t.refuse("realify takes two matrices of the scene")
-    shape = tuple(_add_sizes(x, x) for x in U._shape)
+    shape = tuple(_add_sizes(t, x, x) for x in U._shape)
     return _call(s, "realify", (U._r, V._r), U._kind, shape)
 
 
@@ -665,7 +682,7 @@ def _components(t: "Trace", out: Any, symmetric: bool) -> int:
     if isinstance(out, Tracer):
         if out._kind == SCALAR:
             return 1
-        m, k = (_val(x) for x in out._shape)
+        m, k = (_val(x, t) for x in out._shape)
         if out._kind != MAT or m is None or k is None:
             return t.refuse("a Jacobian of a function whose value has no known shape")
         if symmetric:
@@ -684,7 +701,7 @@ def _m_jacobian(s, F, symmetric=None):
         symmetric = F is t.constraints[1]
     if type(symmetric) is not bool:
         return t.refuse("symmetric is a bool")
-    n, r = t.size(1, "n").value, t.size(1, "r").value
+    n, r = t.size_number(Size(1, "n", None), None), t.size_number(Size(1, "r", None), None)
     if n is None:
         return t.refuse("a Jacobian in the coordinates of X, P (it needs fixed sizes)")
     f, out = t.function(F, 1)
@@ -703,7 +720,7 @@ def _grid(t: "Trace", node: Ref, rows: int, cols: int) -> list:
 
 def _m_constraint_bracket_matrix(s):
     t = s._t
-    if t.size(1, "n").value is None:
+    if t.size_number(Size(1, "n", None), None) is None:
         return t.refuse("the matrix of constraint brackets (it needs fixed sizes)")
     _, out = t.function(t.constraints[1], 1)
     m = _components(t, out, True)
@@ -741,17 +758,18 @@ def block(rows: Any) -> Tracer:
     for row in rows:
         h = row[0]._shape[0]
         for b in row[1:]:
-            if _same_size(h, b._shape[0]) is False:
+            if _same_size(h, b._shape[0], t) is False:
                 return t.refuse("the blocks of a block row have different heights")
         heights.append(h)
     widths = []
     for j in range(len(rows[0])):
         w = rows[0][j]._shape[1]
         for row in rows[1:]:
-            if _same_size(w, row[j]._shape[1]) is False:
+            if _same_size(w, row[j]._shape[1], t) is False:
                 return t.refuse("the blocks of a block column have different widths")
         widths.append(w)
-    shape = (functools.reduce(_add_sizes, heights), functools.reduce(_add_sizes, widths))
+    add = functools.partial(_add_sizes, t)
+    shape = (functools.reduce(add, heights), functools.reduce(add, widths))
     kind = ANY if any(b._kind == ANY for row in rows for b in row) else MAT
     return t.new("block", (len(rows), len(rows[0]), tuple(b._r for row in rows for b in row)), kind, shape)
 
@@ -764,8 +782,9 @@ class Trace:
 
     def __init__(self, n: int | None, r: int | None, constraints: tuple[str, Callable]) -> None:
         self.g = Graph()
-        self.n, self.r = n, r
-        self.g.sizes = None if n is None else (n, r)
+        # the numbers of the sizes live here, in a function of the trace's own: no Size, Dim or
+        # tracer claim code reaches carries one, and the graph gets them when it is sealed
+        self._numbers = _size_numbers(n, r)
         self._like: dict = {}
         self.constraints = constraints
         self._functions: dict[int, tuple[Any, Ref, Any, Any]] = {}
@@ -779,8 +798,16 @@ class Trace:
         raise TraceRefused(f"refused: {what}")
 
     def size(self, k: int, d: str) -> Size:
-        v = self.n if d == "n" else self.r
-        return Size(k, d, None if v is None else k * v)
+        """The size expression k·d (it carries no number)."""
+        return Size(k, d, None)
+
+    def size_number(self, size: Size, what: str | None) -> int | None:
+        """The door of a size's number: at a fixed size its int; with symbolic sizes the use ``what``
+        is refused (and recorded), or None for the engine's own question (``what`` None)."""
+        v = self._numbers(size)
+        if v is None and what is not None:
+            self.refuse(f"a size ({size.text()}) used {what}: the claim needs fixed sizes")
+        return v
 
     def shape_of(self, spaces: tuple | None) -> tuple:
         if spaces is None:
@@ -799,7 +826,7 @@ class Trace:
         if tx is int or tx is bool or tx is Fraction or tx is str or x is None:
             return x
         if tx is Dim:
-            return x._size
+            return x._expr
         if tx is list or tx is tuple:
             return self.g.add("list" if tx is list else "tuple", tuple(self.arg(y, functions) for y in x))
         if tx is dict:
@@ -905,6 +932,13 @@ class Trace:
         return Tracer(self, ref, ANY)
 
 
+def _size_numbers(n: int | None, r: int | None) -> Callable[[Size], int | None]:
+    def number(size: Size) -> int | None:
+        v = n if size.d == "n" else r
+        return None if v is None else size.k * v
+    return number
+
+
 def trace(func: Callable, n: int | None, r: int | None, constraints: tuple[str, Callable]) -> Graph:
     """The graph of ``func`` at the size (n, r), or with symbolic sizes (n = r = None)."""
     t = Trace(n, r, constraints)
@@ -918,4 +952,6 @@ def trace(func: Callable, n: int | None, r: int | None, constraints: tuple[str, 
         t.g.output = t.g.add("dict", (tuple(out), tuple(t.structure(v) for v in out.values())))
     finally:
         _ACTIVE.pop()
-    return t.g.sealed()
+    g = t.g.sealed()
+    g.sizes = None if n is None else (n, r)
+    return g
