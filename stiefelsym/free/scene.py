@@ -1068,6 +1068,15 @@ class FreeScene(PaperObjects):
         """The Dirac bracket {F, G} = derivative of F along the Dirac flow of G."""
         return self.d(F, self.dirac_flow(G))
 
+    def _share(self, base: "FreeScene") -> None:
+        """What a scene made from ``base`` (its tangent scene, a function's scene) shares with it: the
+        parameters, the resolvents, the extra letters, the columns and the square case."""
+        self.params = base.params
+        self._resolvents = base._resolvents
+        self._extras = base._extras
+        self.columns = base.columns
+        self.square = base.square
+
     def reduce(self, x: Any) -> Reduction:
         """Normal form of one entry with the rules used (for reports); with the columns of V(n, 2),
         the canonical form of :mod:`.columns` and the rules in turn until neither changes it."""
@@ -1117,12 +1126,8 @@ class FreeTangentScene(FreeScene):
         self.base = base
         self.flow = dict(flow)
         self._field = base._dual_field()
-        self.params = base.params
-        self._resolvents = base._resolvents
-        self._extras = base._extras
+        self._share(base)
         self._named = base._named
-        self.columns = base.columns
-        self.square = base.square
         #: the tangent scene of a function's scene (FunctionScene): that scene's own (fresh) letters
         self._fresh = getattr(base, "_fresh", {})
 
@@ -1182,11 +1187,7 @@ class FunctionScene(FreeScene):
         self.nested_flow = False
         self._outer = base
         self._field = base._field
-        self.params = base.params
-        self._resolvents = base._resolvents
-        self._extras = base._extras
-        self.columns = base.columns
-        self.square = base.square
+        self._share(base)
         _FRESH[0] += 1
         k = _FRESH[0]
         self._fresh: dict[Letter, Letter] = {}
