@@ -1502,8 +1502,8 @@ BALL_CERTIFICATE = (
 def run_ball(claim: Claim, n: int, r: int, seed: int, func: Callable | None = None,
              options: dict | None = None) -> Result:
     """Rigorous ball arithmetic at the exact point the float method draws: float64 midpoint-radius
-    matrices first (:mod:`stiefelsym.midrad`), then arb at 53, 106, 212 and 424 bits, until the
-    enclosures decide: one that excludes 0 is a certified nonzero residual
+    matrices first from n = 16 on (:mod:`stiefelsym.midrad`), then arb at 53, 106, 212 and 424
+    bits, until the enclosures decide: one that excludes 0 is a certified nonzero residual
     (``fails``); all within 1e-8 of their term scales is ``numeric`` with the rigorous bound.
     When r = n both components of O(n) are evaluated."""
     options = _prepare(options)
@@ -1585,11 +1585,13 @@ def _ball_rng(seed: int, claim: Claim, n: int, r: int, comp: int) -> random.Rand
 def _ball_component(claim: Claim, n: int, r: int, seed: int, func: Callable, options: dict | None,
                     comp: int) -> _BallDecision:
     from .ball import BALL_LADDER, BallField, working_precision
-    from .midrad import MidRadField
+    from .midrad import MIDRAD_MIN_N, MidRadField
     run = _BallDecision("unresolved")
     nonzero_claim = claim.expect == "nonzero"
-    # float64 midpoint-radius pairs first (numpy, a-priori rounding bounds), then arb up the ladder
-    for field in [MidRadField()] + [BallField(prec) for prec in BALL_LADDER]:
+    # float64 midpoint-radius pairs first (numpy, a-priori rounding bounds) where matrices are large
+    # enough for numpy to pay, then arb up the ladder
+    first = [MidRadField()] if n >= MIDRAD_MIN_N else []
+    for field in first + [BallField(prec) for prec in BALL_LADDER]:
         with working_precision(field.prec):
             try:
                 scene = Scene(n, r, field, chart="cayley", rng=_ball_rng(seed, claim, n, r, comp), component=comp,

@@ -131,7 +131,8 @@ class MidRad:
         if self.rad is None:
             return a
         s = a + self.rad                        # s >= (1 − u)(|mid| + rad): one step up covers it
-        return np.nextafter(s, math.inf)
+        # an exact entry (radius 0) keeps |mid| itself: 0 for an exact zero
+        return np.where(self.rad == 0, a, np.nextafter(s, math.inf))
 
     def excludes_zero(self) -> np.ndarray:
         """Where every x in the ball is nonzero: |mid| > rad (a comparison of floats, exact)."""
@@ -194,8 +195,14 @@ def _skew_plus_diagonal(a: MidRad) -> Any:
     return flint.arb(_upper(flint.arb(1) / flint.arb(dmin)))
 
 
-#: from this many rows on, an inverse of the Cayley chart's kind is deferred (a solve is cheaper)
-DEFERRED_INVERSE_MIN = 24
+#: from this many rows on, an inverse of the Cayley chart's kind is deferred: a float64 solve with
+#: its residual bound is cheaper than arb's inverse at every size this rung runs at
+DEFERRED_INVERSE_MIN = 2
+
+#: the ball method starts with this rung from n = 16 on: below, a matrix operation costs more in
+#: numpy calls (several per operation) than in one arb call (LA1, CPU: 7.7 against 5.6 ms at
+#: (4,2), even at (16,8), 4.3 against 10.9 ms at (24,12), 39 against 470 ms at (200,100))
+MIDRAD_MIN_N = 16
 
 
 class MidRadField(BallField):
@@ -301,8 +308,13 @@ class MidRadBackend(Backend):
             x += a.rad
         if b.rad is not None:
             x += b.rad
+        # x = 0: both radii 0 and u |mid| = 0, so mid is 0 or below the normal range, where a sum is
+        # exact (Higham, §2.1): a ± b = mid exactly, radius 0
+        zero = x == 0
         rad = _inflate(x, 2, 1)
         _finite(mid, rad)
+        if np.any(zero):
+            rad[zero] = 0.0
         return MidRad(mid, rad, a.m + b.m)
 
     def add(self, a, b):
@@ -443,7 +455,8 @@ class MidRadBackend(Backend):
 
 
 def _product(a: MidRad, b: MidRad) -> MidRad:
-    """A BLAS product: mid = fl(Am Bm), radius by :func:`_product_radius`."""
+    """A BLAS product: mid = fl(Am Bm), radius by :func:`_product_radius`; an entry whose every
+    term has an exact zero factor (:func:`_structural_zeros`) is exactly 0, radius 0."""
     k = a.mid.shape[1]
     mid = a.mid @ b.mid
     absa, absb = np.abs(a.mid), np.abs(b.mid)
@@ -452,12 +465,30 @@ def _product(a: MidRad, b: MidRad) -> MidRad:
     Q2 = a.rad @ (absb + b.rad if b.rad is not None else absb) if a.rad is not None else None
     rad = _product_radius(P, Q1, Q2, k)
     _finite(mid, rad)
+    zero = P == 0
+    if np.any(zero):
+        _structural_zeros(rad, zero, absa, a.rad, absb, b.rad)
     return MidRad(mid, rad, a.m @ b.m)
+
+
+def _structural_zeros(rad: np.ndarray, zero: np.ndarray, absa: np.ndarray, ra: np.ndarray | None,
+                      absb: np.ndarray, rb: np.ndarray | None) -> None:
+    """Radius 0 where every term a_it b_tj has a factor that is exactly 0 (midpoint and radius 0):
+    the entry is then 0 for every matrix in the balls, and its floating-point sum of exact zeros is
+    ±0 exactly.  The terms that can be nonzero are counted by a float32 product of 0/1 matrices
+    (exact below 2^24 terms); only entries whose |Am||Bm| was computed as 0 are candidates."""
+    nza = (absa != 0) if ra is None else (absa != 0) | (ra != 0)
+    nzb = (absb != 0) if rb is None else (absb != 0) | (rb != 0)
+    if absa.shape[1] >= 2**24:
+        return
+    counts = nza.astype(np.float32) @ nzb.astype(np.float32)
+    rad[zero & (counts == 0)] = 0.0
 
 
 def _scaled(xm: np.ndarray, xr: np.ndarray | None, ym: np.ndarray, yr: np.ndarray | None,
             scales: np.ndarray) -> MidRad:
-    """Entrywise (broadcast) products x y, each one rounding: :func:`_product_radius` with k = 1."""
+    """Entrywise (broadcast) products x y, each one rounding: :func:`_product_radius` with k = 1;
+    where a factor is exactly 0 (midpoint and radius), the product is exactly ±0, radius 0."""
     mid = xm * ym
     ax, ay = np.abs(xm), np.abs(ym)
     P = np.multiply(ax, ay)
@@ -466,6 +497,11 @@ def _scaled(xm: np.ndarray, xr: np.ndarray | None, ym: np.ndarray, yr: np.ndarra
     rad = _product_radius(np.broadcast_to(P, mid.shape).copy() if P.shape != mid.shape else P,
                           Q1, Q2, 1)
     _finite(mid, rad)
+    zx = (xm == 0) if xr is None else (xm == 0) & (xr == 0)
+    zy = (ym == 0) if yr is None else (ym == 0) & (yr == 0)
+    exact = np.broadcast_to(zx | zy, mid.shape)
+    if np.any(exact):
+        rad[exact] = 0.0
     return MidRad(mid, rad, scales)
 
 

@@ -71,11 +71,21 @@ def _backend() -> MidRadBackend:
     return MidRadBackend(MidRadField())
 
 
-OPS = ["product", "product-exact", "sum", "difference", "sum-exact", "scalar", "diagonal"]
+OPS = ["product", "product-exact", "product-zero-blocks", "sum", "difference", "sum-exact", "scalar", "diagonal"]
 
 
 def _apply(op: str, rng: np.random.Generator, prng: random.Random, tiny: bool):
     be = _backend()
+    if op == "product-zero-blocks":
+        # exact zeros: a's last rows and b's last columns (entries exactly 0, radius 0), and
+        # a's first 20 columns against b's first 20 rows (terms with an exact zero factor)
+        a, b = _pair(rng, (6, 40), False, tiny), _pair(rng, (40, 5), True, tiny)
+        a.mid[4:], a.rad[4:], b.mid[:, 3:] = 0.0, 0.0, 0.0
+        a.mid[:, :20], a.rad[:, :20] = 0.0, 0.0
+        A, B = _corners(a, prng), _corners(b, prng)
+        c = be.matmul(a, b)
+        assert not np.any(c.rad[4:]) and not np.any(c.rad[:, 3:])
+        return c, _exact_product(A, B)
     if op.startswith("product"):
         a, b = _pair(rng, (6, 40), op == "product-exact", tiny), _pair(rng, (40, 5), op == "product-exact", tiny)
         A, B = _corners(a, prng), _corners(b, prng)
@@ -119,7 +129,8 @@ def test_shrunk_radii_leave_exact_results_outside(op):
     assert _outside(c, exact, shrink=1e-6)
 
 
-def test_the_cayley_chart_is_enclosed():
+@pytest.mark.parametrize("m, r", [(5, 2), (30, 7)])
+def test_the_cayley_chart_is_enclosed(m, r):
     """The deferred inverse of I + S (a verified solve) and the products with it contain the exact
     rational values at the same exact parameters (as the arb backend's test does)."""
     from test_ball import _cayley
@@ -129,7 +140,6 @@ def test_the_cayley_chart_is_enclosed():
         def param(self, name, rng):
             x = BallField().param(name, rng)
             return flint.fmpq(*Fraction(float(x.b.mid())).as_integer_ratio())
-    m, r = 30, 7
     with working_precision(53):
         out = _cayley(MidRadField(), m, r, random.Random(1))
         exact = _cayley(Replay(), m, r, random.Random(1))
@@ -139,6 +149,27 @@ def test_the_cayley_chart_is_enclosed():
             for j in range(Q._shape()[1]):
                 b, q = B._view()[i, j], Q._view()[i, j]
                 assert isinstance(b, BallNum) and b.b.contains(q)
+
+
+def test_a_general_inverse_is_enclosed():
+    """An inverse that is not of the Cayley kind goes through arb at 53 bits and back to an enclosing
+    pair: it contains the exact inverse (exact rational elimination)."""
+    rng = np.random.default_rng(3)
+    a = MidRad(rng.standard_normal((5, 5)), None, np.ones((5, 5)))
+    with working_precision(53):
+        z = _backend().inv(a)
+    A = [[Fraction(float(x)) for x in row] for row in a.mid]
+    n = len(A)
+    M = [row + [Fraction(int(i == j)) for j in range(n)] for i, row in enumerate(A)]
+    for c in range(n):
+        p = next(i for i in range(c, n) if M[i][c] != 0)
+        M[c], M[p] = M[p], M[c]
+        M[c] = [x / M[c][c] for x in M[c]]
+        for i in range(n):
+            if i != c and M[i][c] != 0:
+                M[i] = [x - M[i][c] * y for x, y in zip(M[i], M[c])]
+    assert not _outside(z, [row[n:] for row in M])
+    assert _outside(z, [row[n:] for row in M], shrink=1e-6)
 
 
 # -- over the catalog, against arb at 212 bits ---------------------------------------------------------
@@ -200,7 +231,7 @@ def test_shrunk_midpoint_radius_enclosures_are_caught(catalog, cid, size):
     assert _disjoint(c, size.n, size.r, shrink=1e-6)
 
 
-@pytest.mark.parametrize("size", [Size(8, 4), Size(40, 20)], ids=["n=8,r=4", "n=40,r=20"])
+@pytest.mark.parametrize("size", [Size(16, 8), Size(40, 20)], ids=["n=16,r=8", "n=40,r=20"])
 def test_a_corrupted_LA1_fails_at_the_midpoint_radius_rung(size):
     res = run_one(control_claim(), size, "ball", seed=SEED)
     assert res.verdict == "fails", res.message
