@@ -1502,7 +1502,7 @@ BALL_CERTIFICATE = (
 def run_ball(claim: Claim, n: int, r: int, seed: int, func: Callable | None = None,
              options: dict | None = None) -> Result:
     """Rigorous ball arithmetic at the exact point the float method draws: float64 midpoint-radius
-    matrices first from n = 16 on (:mod:`stiefelsym.midrad`), then arb at 53, 106, 212 and 424
+    matrices first from n = 32 on (:mod:`stiefelsym.midrad`), then arb at 53, 106, 212 and 424
     bits, until the enclosures decide: one that excludes 0 is a certified nonzero residual
     (``fails``); all within 1e-8 of their term scales is ``numeric`` with the rigorous bound.
     When r = n both components of O(n) are evaluated."""

@@ -81,7 +81,7 @@ def _inflate(x: np.ndarray, ops: int, unders: int) -> np.ndarray:
 
 def _finite(*arrays: np.ndarray | None) -> None:
     for a in arrays:
-        if a is not None and not np.all(np.isfinite(a)):
+        if a is not None and not np.isfinite(a).all():
             raise DegenerateError("a float64 midpoint or radius overflows (arb takes over)")
 
 
@@ -199,10 +199,12 @@ def _skew_plus_diagonal(a: MidRad) -> Any:
 #: its residual bound is cheaper than arb's inverse at every size this rung runs at
 DEFERRED_INVERSE_MIN = 2
 
-#: the ball method starts with this rung from n = 16 on: below, a matrix operation costs more in
-#: numpy calls (several per operation) than in one arb call (LA1, CPU: 7.7 against 5.6 ms at
-#: (4,2), even at (16,8), 4.3 against 10.9 ms at (24,12), 39 against 470 ms at (200,100))
-MIDRAD_MIN_N = 16
+#: the ball method starts with this rung from n = 32 on: a matrix operation here is several numpy
+#: calls (tens of microseconds of overhead, whatever the size), one arb call there (about 5 ns a
+#: multiply-add).  LA1, CPU: 7.7 against 5.6 ms at (4,2), even at (16,8), 4.3 against 10.9 ms at
+#: (24,12), 39 against 470 ms at (200,100); but a claim that sums over a basis of so(16) (tens of
+#: thousands of 16 x 16 products) took 7.8 s against arb's 2.8 s at n = 16
+MIDRAD_MIN_N = 32
 
 
 class MidRadField(BallField):
@@ -313,7 +315,7 @@ class MidRadBackend(Backend):
         zero = x == 0
         rad = _inflate(x, 2, 1)
         _finite(mid, rad)
-        if np.any(zero):
+        if zero.any():
             rad[zero] = 0.0
         return MidRad(mid, rad, a.m + b.m)
 
@@ -466,7 +468,7 @@ def _product(a: MidRad, b: MidRad) -> MidRad:
     rad = _product_radius(P, Q1, Q2, k)
     _finite(mid, rad)
     zero = P == 0
-    if np.any(zero):
+    if zero.any():
         _structural_zeros(rad, zero, absa, a.rad, absb, b.rad)
     return MidRad(mid, rad, a.m @ b.m)
 
@@ -500,7 +502,7 @@ def _scaled(xm: np.ndarray, xr: np.ndarray | None, ym: np.ndarray, yr: np.ndarra
     zx = (xm == 0) if xr is None else (xm == 0) & (xr == 0)
     zy = (ym == 0) if yr is None else (ym == 0) & (yr == 0)
     exact = np.broadcast_to(zx | zy, mid.shape)
-    if np.any(exact):
+    if exact.any():
         rad[exact] = 0.0
     return MidRad(mid, rad, scales)
 

@@ -231,7 +231,7 @@ def test_shrunk_midpoint_radius_enclosures_are_caught(catalog, cid, size):
     assert _disjoint(c, size.n, size.r, shrink=1e-6)
 
 
-@pytest.mark.parametrize("size", [Size(16, 8), Size(40, 20)], ids=["n=16,r=8", "n=40,r=20"])
+@pytest.mark.parametrize("size", [Size(32, 16), Size(40, 20)], ids=["n=32,r=16", "n=40,r=20"])
 def test_a_corrupted_LA1_fails_at_the_midpoint_radius_rung(size):
     res = run_one(control_claim(), size, "ball", seed=SEED)
     assert res.verdict == "fails", res.message
