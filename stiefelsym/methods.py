@@ -1513,14 +1513,15 @@ def _run_float(claim: Claim, n: int, r: int, seed: int, func: Callable, options:
 # ball arithmetic: rigorous enclosures at the float method's exact points
 
 BALL_CERTIFICATE = (
-    "ball arithmetic (arb): every residual entry is enclosed in a ball that contains its exact value at "
-    "this exact point of T*V (parameters k/2^40, exact constants), by the inclusion property of arb")
+    "ball arithmetic (float64 midpoint-radius pairs with a-priori rounding bounds, then arb): every residual "
+    "entry is enclosed in a ball that contains its exact value at this exact point of T*V (parameters k/2^40, exact constants), by the inclusion property of the balls")
 
 
 def run_ball(claim: Claim, n: int, r: int, seed: int, func: Callable | None = None,
              options: dict | None = None) -> Result:
-    """Rigorous ball arithmetic (arb) at the exact point the float method draws, at 53, 106, 212
-    and 424 bits until the enclosures decide: one that excludes 0 is a certified nonzero residual
+    """Rigorous ball arithmetic at the exact point the float method draws: float64 midpoint-radius
+    matrices first from n = 32 on (:mod:`stiefelsym.midrad`), then arb at 53, 106, 212 and 424
+    bits, until the enclosures decide: one that excludes 0 is a certified nonzero residual
     (``fails``); all within 1e-8 of their term scales is ``numeric`` with the rigorous bound.
     When r = n both components of O(n) are evaluated."""
     options = _prepare(options)
@@ -1531,27 +1532,54 @@ def run_ball(claim: Claim, n: int, r: int, seed: int, func: Callable | None = No
     return res
 
 
-def _ball_entries(value: Any, name: str) -> tuple[Callable[[int], str], list, list[float]]:
-    """The balls of a residual over the ball field, their term scales and the position of an
-    entry by its index (formatted only for the entry that decides)."""
+class _Enclosures:
+    """The enclosures of one check's residual entries, as the ball method reads them: ``ups``, an
+    upper bound of |x| for every x in each ball (float64, rounded up; 0 only for a ball that is
+    exactly 0), ``scales`` (their term scales), ``excludes()`` (where a ball excludes 0, computed
+    when asked), ``ball(i)`` (one enclosure as text) and ``pos(i)`` (the entry's position)."""
+
+    def __init__(self, pos: Callable[[int], str], ups: np.ndarray, scales: np.ndarray,
+                 excludes: Callable[[], np.ndarray], ball: Callable[[int], str], zero: bool) -> None:
+        self.pos, self.ups, self.scales, self.excludes, self.ball = pos, ups, scales, excludes, ball
+        #: every ball contains 0 (one native test), so none excludes it
+        self.zero = zero
+
+
+def _arb_enclosures(pos: Callable[[int], str], balls: list, scales: np.ndarray, zero: bool) -> _Enclosures:
+    # the upper end of |x| rounded up by one ulp of float64 (0 for the ball that is exactly 0); a
+    # ball excludes 0 where the lower end of |x| is positive (a positive float64 never rounds to 0
+    # above 2^-1075)
+    raw = np.array([float(b.abs_upper()) for b in balls])
+    ups = np.nextafter(raw, math.inf)
+    for i in np.flatnonzero(raw == 0).tolist():
+        if balls[i].is_zero():
+            ups[i] = 0.0
+    return _Enclosures(pos, ups, scales, lambda: np.array([float(b.abs_lower()) > 0 for b in balls], dtype=bool),
+                       lambda i: balls[i].str(17, radius=True), zero)
+
+
+def _ball_entries(value: Any, name: str, field: Any) -> _Enclosures:
+    """The enclosures of a residual over a ball field (arb balls, or float64 midpoint-radius
+    pairs read as whole arrays) with their term scales."""
     from .ball import Balls, entries_of
+    from .midrad import MidRad
+    if isinstance(value, Mat) and isinstance(value._n, MidRad):
+        s = backend(field)._forced(value._n)
+        cols = s.shape()[1]
+        return _Enclosures(lambda i: f"{name}[{i // cols + 1},{i % cols + 1}]", s.upper_abs().ravel(),
+                           s.m.ravel(), lambda: s.excludes_zero().ravel(),
+                           lambda i: s.ball(i).str(17, radius=True), backend(field).is_zero(s))
     if isinstance(value, Mat) and isinstance(value._n, Balls):
         balls, scales = entries_of(value._n)
         cols = value._n.shape()[1]
-        return (lambda i: f"{name}[{i // cols + 1},{i % cols + 1}]"), balls, scales.tolist()
+        return _arb_enclosures(lambda i: f"{name}[{i // cols + 1},{i % cols + 1}]", balls, np.array(scales),
+                               backend(field).is_zero(value._n))
     pairs = _entries(value, name)
     for pos, x in pairs:
         if not hasattr(x, "b"):
             raise TypeError(f"check {pos}: not a number of the ball field ({type(x).__name__})")
-    return (lambda i: pairs[i][0]), [x.b for _, x in pairs], [float(x.m) for _, x in pairs]
-
-
-def _contains_zero(value: Any) -> bool:
-    """Whether every ball of a native residual matrix contains 0 (False: look at the entries)."""
-    from .ball import Balls
-    if isinstance(value, Mat) and isinstance(value._n, Balls):
-        return backend(value._field).is_zero(value._n)
-    return False
+    return _arb_enclosures(lambda i: pairs[i][0], [x.b for _, x in pairs],
+                           np.array([float(x.m) for _, x in pairs], dtype=float), False)
 
 
 @dataclass
@@ -1575,18 +1603,20 @@ def _ball_rng(seed: int, claim: Claim, n: int, r: int, comp: int) -> random.Rand
 def _ball_component(claim: Claim, n: int, r: int, seed: int, func: Callable, options: dict | None,
                     comp: int) -> _BallDecision:
     from .ball import BALL_LADDER, BallField, working_precision
+    from .midrad import MIDRAD_MIN_N, MidRadField
     run = _BallDecision("unresolved")
     nonzero_claim = claim.expect == "nonzero"
-    for prec in BALL_LADDER:
-        field = BallField(prec)
-        with working_precision(prec):
+    # float64 midpoint-radius pairs first (numpy, a-priori rounding bounds) where matrices are large
+    # enough for numpy to pay, then arb up the ladder
+    first = [MidRadField()] if n >= MIDRAD_MIN_N else []
+    for field in first + [BallField(prec) for prec in BALL_LADDER]:
+        with working_precision(field.prec):
             try:
                 scene = Scene(n, r, field, chart="cayley", rng=_ball_rng(seed, claim, n, r, comp), component=comp,
                               realization=claim.realization, options=options)
                 checks = call_claim(func, scene)
-                balls, scale_list, ranks, counts = [], [], [], []
-                positions: list[tuple[int, Callable[[int], str]]] = []    # (first index, position of an index)
-                whole: list[bool] = []      # per check: every ball contains 0 (one native test)
+                encs: list[_Enclosures] = []
+                ranks, counts = [], []
                 for name, value in checks.items():
                     if isinstance(value, Rank):
                         ranks.append(name)
@@ -1595,11 +1625,7 @@ def _ball_component(claim: Claim, n: int, r: int, seed: int, func: Callable, opt
                             counts.append(f"{name}: {value.meaning + ': ' if value.meaning else ''}"
                                           f"{value.value} (paper: {value.expected})")
                     else:
-                        pos, bs, ms = _ball_entries(value, name)
-                        whole.append(_contains_zero(value))
-                        positions.append((len(balls), pos))
-                        balls.extend(bs)
-                        scale_list.extend(ms)
+                        encs.append(_ball_entries(value, name, field))
             except DegenerateError as exc:
                 run.log.append(f"{field.name}: {exc}")
                 continue
@@ -1608,37 +1634,29 @@ def _ball_component(claim: Claim, n: int, r: int, seed: int, func: Callable, opt
                 if release is not None:      # the evaluation is over: its remembered products may go
                     release()
             run.ranks, run.count_problems, run.field = ranks, counts, field.name
-            if not balls:
+            if not encs or not sum(len(x.ups) for x in encs):
                 run.status = "empty"
                 return run
-
-            def position(i: int) -> str:
-                first, pos = max((p for p in positions if p[0] <= i), key=lambda p: p[0])
-                return pos(i - first)
-            # e_i >= |x| for every x in the ball: the upper end, rounded up by one ulp of float64
-            # (0 for the ball that is exactly 0); a ball excludes 0 where the lower end of |x| is
-            # positive (a positive float64 never rounds to 0 above 2^-1075)
-            raw = np.array([float(b.abs_upper()) for b in balls])
-            clear = [] if all(contain for contain in whole) else np.flatnonzero(
-                np.array([float(b.abs_lower()) for b in balls]) > 0).tolist()
-            ups = np.nextafter(raw, math.inf)
-            for i in np.flatnonzero(raw == 0).tolist():
-                if balls[i].is_zero():
-                    ups[i] = 0.0
-            scales = np.array(scale_list)
+            ups = np.concatenate([x.ups for x in encs])
+            scales = np.concatenate([x.scales for x in encs]).astype(float)
+            # the first enclosure (check, index) that excludes 0, if any
+            clear = next(((x, int(ix[0])) for x in encs if not x.zero
+                          for ix in [np.flatnonzero(x.excludes())] if len(ix)), None)
+            total = len(ups)
             with np.errstate(all="ignore"):
                 resolves = np.isfinite(ups) & np.isfinite(scales) & (ups <= FLOAT_RESOLUTION * scales)
                 ratio = np.where(scales > 0, ups / np.where(scales > 0, scales, 1.0),
                                  np.where(ups == 0, 0.0, math.inf))
             k = int(np.argmax(ratio))
             run.worst, run.bound = (float(ups[k]), float(scales[k])), float(np.max(ups))
-            run.log.append(f"{field.name}: {len(clear)} of {len(balls)} enclosures exclude 0; largest bound "
+            excluded = sum(int(np.count_nonzero(x.excludes())) for x in encs if not x.zero) if clear else 0
+            run.log.append(f"{field.name}: {excluded} of {total} enclosures exclude 0; largest bound "
                            f"{run.bound:.2e}, worst resolution e = {ups[k]:.1e} at term scale m = {scales[k]:.1e}"
                            + ("" if np.all(np.isfinite(scales)) else
                               " (a term scale overflows float64: the resolution test cannot be made)"))
             if clear:
-                i = clear[0]
-                run.entry = (position(i), balls[i].str(17, radius=True))
+                enc, i = clear
+                run.entry = (enc.pos(i), enc.ball(i))
                 run.point = {name: field.describe(v) for name, v in scene._point_values().items()}
                 run.status = "nonzero" if nonzero_claim else "bad"
                 return run
@@ -1714,7 +1732,7 @@ def _run_ball(claim: Claim, n: int, r: int, seed: int, func: Callable, options: 
                            f"(a certified witness)")
         return done("fails")
     if any(run.status != "pass" for run in runs):
-        res.message = "precision ladder (53, 106, 212, 424 bits) exhausted without resolving enclosures: " + log
+        res.message = "precision ladder (float64 midpoint-radius, then arb at 53, 106, 212, 424 bits) exhausted without resolving enclosures: " + log
         return done("inconclusive")
     res.certificate = BALL_CERTIFICATE + "; " + "; ".join(
         f"{f'component {c + 1}, ' if len(comps) > 1 else ''}{run.field}: every enclosure contains 0 and "

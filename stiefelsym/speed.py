@@ -376,7 +376,7 @@ def evaluate_ball(claim: Any, n: int, r: int, seed: int = 0) -> dict[str, Any]:
     ok = run.status in ("pass", "zero")
     out.update(status="ok" if ok else run.status, seconds=time.perf_counter() - t0, bits=run.field,
                max_bound=run.bound, max_residual=None, exceed=0, resolved=ok,
-               note="rigorous enclosures (arb): every |exact residual| <= the bound")
+               note="rigorous enclosures (midpoint-radius or arb): every |exact residual| <= the bound")
     return out
 
 
@@ -453,7 +453,7 @@ def _precision_reached(text: str) -> str:
     hits = re.findall(r"(float64|mpmath\d+): max \|residual\|", text or "")
     if hits:
         return hits[-1]
-    balls = re.findall(r"\b(arb\d+)\b", text or "")       # the ball method's last precision (bits)
+    balls = re.findall(r"\b(midrad53|arb\d+)\b", text or "")       # the ball method's last rung
     if balls:
         return balls[-1]
     if "exactly" in (text or "") or "vanishes" in (text or ""):
@@ -629,7 +629,8 @@ def hard_markdown(rows: Sequence[dict[str, Any]], size_rows: Sequence[dict[str, 
              "passing verdict.  "
              "`precision` is the last precision of the float method's ladder that resolved the point "
              "(float64, then ball arithmetic and mpmath: escalation happens by itself), or for the ball method "
-             "the arb precision in bits whose enclosures decided (arb53 to arb424).  Where the float "
+             "the rung whose enclosures decided (midrad53: float64 midpoint-radius pairs; arb53 to arb424).  "
+             "Where the float "
              "method resolved a hard point, the same point is also evaluated exactly (rational arithmetic at the "
              "float method's own parameters): `actual error` = max |computed − exact| must stay below the "
              "predicted bound `e`, for the true claims and for the control alike; `exact residual` is the "
