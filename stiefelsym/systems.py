@@ -65,7 +65,7 @@ __all__ = ["derivative", "entries", "symmetric_entries", "hermitian_entries", "r
 
 def _coordinate_scene(s: Any, what: str) -> None:
     if isinstance(s, TraceScene):
-        if s._t.n is None:
+        if s._t.symbolic:
             s._t.refuse(f"{what} needs coordinates (fixed n, r)")
         return
     if not isinstance(s, Scene):

@@ -33,7 +33,7 @@ Function = Callable[[Any], Any]
 def _scene(s: Any, what: str) -> Scene:
     if isinstance(s, TraceScene):
         # a coordinate helper traced with the claim: it reads the sizes, so it needs fixed ones
-        if s._t.n is None:
+        if s._t.symbolic:
             s._t.refuse(f"{what} needs coordinates (fixed n, r)")
         return s
     s = s

@@ -809,6 +809,11 @@ class Trace:
             self.refuse(f"a size ({size.text()}) used {what}: the claim needs fixed sizes")
         return v
 
+    @property
+    def symbolic(self) -> bool:
+        """Whether the sizes are symbolic (the engine's question: nothing is recorded)."""
+        return self._numbers(Size(1, "n", None)) is None
+
     def shape_of(self, spaces: tuple | None) -> tuple:
         if spaces is None:
             return (None, None)
