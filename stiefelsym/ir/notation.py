@@ -840,17 +840,18 @@ def diff(old: Graph, new: Graph, cap: int = 24) -> list[Change]:
     ro = reader(old)
     rn = Reader(new, ro)
     po, pn = Printer(False, cap), Printer(True, cap)
-    out_old, out_new = outputs(old), dict(outputs(new))
+    listed_old, out_new = outputs(old), dict(outputs(new))
+    out_old = dict(listed_old)
     found: list[tuple] = []
     pairs: list[tuple[str, Expr, Expr]] = []
     same: list[tuple] = []
-    names = [n for n, _ in out_old] + [n for n in out_new if n not in dict(out_old)]
+    names = [n for n, _ in listed_old] + [n for n in out_new if n not in out_old]
     for name in names:
-        a = dict(out_old).get(name)
+        a = out_old.get(name)
         b = out_new.get(name)
         if type(a) is Ref and type(b) is Ref and ko[a.i] == kn[b.i]:
             continue
-        ea = ro.arg(a) if name in dict(out_old) else atom("(no such check)", r"\text{(no such check)}")
+        ea = ro.arg(a) if name in out_old else atom("(no such check)", r"\text{(no such check)}")
         eb = rn.arg(b) if name in out_new else atom("(dropped)", r"\text{(dropped)}")
         if ea.key == eb.key:      # another computation of the same expression (e.g. (Mᵀ)ᵀ for M, or the
             # claim's functions numbered otherwise): said only when nothing else changed
@@ -869,12 +870,10 @@ def diff(old: Graph, new: Graph, cap: int = 24) -> list[Change]:
     found += shallow or same
     # one change per (old, new), with every output and block where it is made
     # (a changed letter is shown in its short product where that product is the same at every place)
-    grouped: dict[tuple, dict[str, list[tuple]]] = {}
+    grouped: dict[tuple, dict[str, dict[tuple, None]]] = {}     # (ordered sets of places)
     contexts: dict[tuple, set] = {}
     for name, ctx, x, y, alt in found:
-        places = grouped.setdefault((x.key, y.key), {}).setdefault(name, [])
-        if ctx not in places:
-            places.append(ctx)
+        grouped.setdefault((x.key, y.key), {}).setdefault(name, {})[ctx] = None
         contexts.setdefault((x.key, y.key), set()).add(None if alt is None else (alt[0].key, alt[1].key))
     changes, seen = [], set()
     for name, ctx, x, y, alt in found:
@@ -884,8 +883,8 @@ def diff(old: Graph, new: Graph, cap: int = 24) -> list[Change]:
         seen.add(k)
         if alt is not None and len(contexts[k]) == 1:
             x, y = alt
-        texts = [_place(nm, blocks) for nm, blocks in grouped[k].items()]
-        if len(texts) > 2 and set(grouped[k]) == set(names) and all(b == [()] for b in grouped[k].values()):
+        texts = [_place(nm, list(blocks)) for nm, blocks in grouped[k].items()]
+        if len(texts) > 2 and set(grouped[k]) == set(names) and all(list(b) == [()] for b in grouped[k].values()):
             texts = [f"every check ({len(texts)})"]
         where = ("; " if any(", block" in p for p in texts) else ", ").join(texts)
         wide = cap
