@@ -104,6 +104,25 @@ MAX_DERIVATIONS = 20
 
 # --------------------------------------------------------------------------- grouping
 
+#: what a change of the graph says nothing with: a check added or dropped (the statement replaced as a
+#: whole), one written the same, a matrix shown only by its size, a computed number against a printed
+#: one (a count: the registered words say what is counted), an expression cut short
+_UNTELLING = ("(no such check)", "(dropped)", "written the same", "…", "matrix)")
+_COUNT = re.compile(r"^\d+ = \d+$")
+TELLING_WIDTH = 160
+
+
+def telling(changes: list[dict[str, str]]) -> list[dict[str, str]]:
+    """A correction's change of the graph where it tells the reader something, else [] (the correction
+    is then shown in its registered words alone)."""
+    for ch in changes:
+        old, new = ch.get("old", ""), ch.get("new", "")
+        if any(t in old + new + ch.get("where", "") for t in _UNTELLING) or (old == new and not ch.get("more")) \
+                or _COUNT.match(old) or _COUNT.match(new) or max(len(old), len(new)) > TELLING_WIDTH:
+            return []
+    return changes
+
+
 class ClaimResults:
     """All results of one claim: as printed, and per candidate correction."""
 
@@ -128,7 +147,7 @@ class ClaimResults:
         symbolic sizes, else of the smallest size with 1 < r < n, else of the smallest size."""
         rs = [r for r in self.variants.get(variant, []) if r.change]
         rs.sort(key=lambda r: (r.n is not None, r.n is None or not 1 < r.r < r.n, r.n or 0, r.r or 0))
-        return rs[0].change if rs else []
+        return telling(rs[0].change) if rs else []
 
     @property
     def failures(self) -> list[Result]:
