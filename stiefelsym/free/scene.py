@@ -589,7 +589,6 @@ class FreeScene(PaperObjects):
         if set(position) != {"X", "Y"} or set(velocity) != {"X", "Y"}:
             raise refuse("Euler-Lagrange equations of variables other than a pair (X, Y)", self.tracker)
         q = {"X": self._double("X"), "Y": self._double("Y")}
-        v = {"X": self._double("Xdot"), "Y": self._double("Ydot")}
         g = constraints(self, q)
         g = g[0] if isinstance(g, (list, tuple)) and len(g) == 1 else g
         D0 = _w(DXt, DY) - _i("r")
