@@ -272,16 +272,15 @@ def _mids(M: Any) -> np.ndarray:
     return np.array([float(x) for x in M.mid().entries()], dtype=float).reshape(m, k)
 
 
-class BallBackend(Backend):
-    """Whole ball matrices in flint's arb_mat at the working precision (see
-    :func:`working_precision`); the term scales follow the float method's rules (sums add, a
-    product's is the product of the scales, an inverse's is the size of its entries)."""
+class EnclosureBackend(Backend):
+    """What the two backends of the ball method share: scalars are balls (:class:`BallNum`), and the
+    products of one evaluation are remembered with their operands."""
 
     def __init__(self, field: BallField) -> None:
         self.field = field
         #: products computed in this evaluation: {(id(a), id(b)): (a, b, a b)} (the operands are
         #: kept, so an id is never reused while its entry lives); see :meth:`release`
-        self._products: dict[tuple[int, int], tuple[Balls, Balls, Balls]] = {}
+        self._products: dict[tuple[int, int], tuple] = {}
 
     def release(self) -> None:
         """Forget the remembered products and transposes (the method calls it when an evaluation
@@ -292,6 +291,12 @@ class BallBackend(Backend):
 
     def accepts(self, x):
         return type(x) is BallNum
+
+
+class BallBackend(EnclosureBackend):
+    """Whole ball matrices in flint's arb_mat at the working precision (see
+    :func:`working_precision`); the term scales follow the float method's rules (sums add, a
+    product's is the product of the scales, an inverse's is the size of its entries)."""
 
     def from_array(self, a):
         """Exact float64 inputs (a block of the chart's parameters)."""

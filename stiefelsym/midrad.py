@@ -50,7 +50,7 @@ import numpy as np
 
 import flint
 
-from .ball import BallBackend, BallField, BallNum, _upper
+from .ball import BallBackend, BallField, BallNum, EnclosureBackend, _upper
 from .fields import DegenerateError
 from .native import Backend, register_backend
 
@@ -216,23 +216,13 @@ class MidRadField(BallField):
         self.name = "midrad53"
 
 
-class MidRadBackend(Backend):
+class MidRadBackend(EnclosureBackend):
     """Whole matrices as float64 (mid, rad) pairs, every radius a rigorous bound (see the module's
     docstring); scalars and the rare general inverse in arb (:class:`BallBackend`'s rules)."""
 
     def __init__(self, field: MidRadField) -> None:
-        self.field = field
+        super().__init__(field)
         self._arb = BallBackend(field)
-        #: products computed in this evaluation: {(id(a), id(b)): (a, b, a b)} (see :meth:`release`)
-        self._products: dict[tuple[int, int], tuple] = {}
-
-    def release(self) -> None:
-        for a, b, c in self._products.values():
-            a.t = b.t = c.t = None
-        self._products = {}
-
-    def accepts(self, x):
-        return type(x) is BallNum
 
     # -- conversions ------------------------------------------------------------------------------
     def from_array(self, a):
