@@ -380,3 +380,24 @@ def test_a_rank_of_scalars_kept_in_flint():
     from stiefelsym.methods import run_exact
     res = run_exact(load_catalog().get("dirac-bracket-multipliers"), 1, 1, 0)
     assert res.verdict == "proved", res.message
+
+
+def test_a_minor_of_entries_is_decided_in_flint():
+    """Entries, their products and a matrix built from them stay flint scalars: a true statement about a
+    minor of X is proved, a false one (the same minor said to be 1) fails, under the exact method."""
+    from stiefelsym.methods import run_exact
+
+    def minors(s):
+        X = s.X
+        m = X[0, 0] * X[1, 1] - X[0, 1] * X[1, 0]
+        col = s.mat([[X[0, 0] * X[0, 0] + X[1, 0] * X[1, 0] + X[2, 0] * X[2, 0]]], ("?", "?"))
+        one = s.mat([[s.q(1)]], ("?", "?"))
+        return {"|column 1|^2 - 1": col - one, "minor - minor": s.mat([[m * m - m * m]], ("?", "?"))}
+
+    def minor_is_one(s):
+        X = s.X
+        return {"minor - 1": s.mat([[X[0, 0] * X[1, 1] - X[0, 1] * X[1, 0] - 1]], ("?", "?"))}
+    true = Claim(id="minor-true", paper=(), kind="id", section="test", func=minors, sizes=admissible(4))
+    false = Claim(id="minor-false", paper=(), kind="id", section="test", func=minor_is_one, sizes=admissible(4))
+    assert run_exact(true, 3, 2, 0).verdict == "proved"
+    assert run_exact(false, 3, 2, 0).verdict == "fails"
