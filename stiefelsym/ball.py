@@ -292,6 +292,20 @@ class EnclosureBackend(Backend):
     def accepts(self, x):
         return type(x) is BallNum
 
+    def _remembered(self, a, b):
+        """a b if this evaluation computed it, or its transpose (a b = (bᵀ aᵀ)ᵀ), else None (the same
+        enclosure either way: both backends' products are deterministic)."""
+        hit = self._products.get((id(a), id(b)))
+        if hit is not None:
+            return hit[2]
+        if a.t is not None and b.t is not None:
+            hit = self._products.get((id(b.t), id(a.t)))
+            if hit is not None:
+                out = self.T(hit[2])
+                self._products[(id(a), id(b))] = (a, b, out)
+                return out
+        return None
+
 
 class BallBackend(EnclosureBackend):
     """Whole ball matrices in flint's arb_mat at the working precision (see
@@ -362,15 +376,9 @@ class BallBackend(EnclosureBackend):
     def matmul(self, a, b):
         """a b; a product already computed in this evaluation, or its transpose (a b = (bᵀ aᵀ)ᵀ),
         is not computed again (the same balls: arb's product is deterministic)."""
-        hit = self._products.get((id(a), id(b)))
-        if hit is not None:
-            return hit[2]
-        if a.t is not None and b.t is not None:
-            hit = self._products.get((id(b.t), id(a.t)))
-            if hit is not None:
-                out = self.T(hit[2])
-                self._products[(id(a), id(b))] = (a, b, out)
-                return out
+        out = self._remembered(a, b)
+        if out is not None:
+            return out
         out = self._deferred_product(a, b)
         if out is None and (a.diag is not None or b.diag is not None) and a.defer is None and b.defer is None:
             out = _diagonal_product(a, b)

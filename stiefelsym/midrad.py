@@ -332,15 +332,9 @@ class MidRadBackend(EnclosureBackend):
     def matmul(self, a, b):
         """a b with the radius of :func:`_product_radius`; a product met again (or its transpose)
         is the stored one (the same pair: the computation is deterministic)."""
-        hit = self._products.get((id(a), id(b)))
-        if hit is not None:
-            return hit[2]
-        if a.t is not None and b.t is not None:
-            hit = self._products.get((id(b.t), id(a.t)))
-            if hit is not None:
-                out = self.T(hit[2])
-                self._products[(id(a), id(b))] = (a, b, out)
-                return out
+        out = self._remembered(a, b)
+        if out is not None:
+            return out
         out = self._deferred_product(a, b)
         if out is None:
             a, b = self._forced(a), self._forced(b)
