@@ -541,3 +541,28 @@ FALSE_CONTROLS = [
 def test_the_corrupted_claims_fail_at_a_fixed_size(cid, size, func):
     from stiefelsym.methods import run_exact
     assert run_exact(CATALOG.get(cid), *size, 0, func=func).verdict == "fails"
+
+
+def test_remembered_canonical_form_is_the_canonical_form(monkeypatch):
+    """The canonical form of the columns computed term by term and remembered gives the same terms, in the
+    same order, as the one with its certificate, on every call of a free proof at r = 2; and a polynomial
+    with one coefficient changed does not get the remembered form of the other (negative control)."""
+    from stiefelsym.claims import load_catalog
+    from stiefelsym.free import columns
+    from stiefelsym.runner import run_one
+    import stiefelsym.free.scene as scene_module
+    seen = []
+
+    def checked(p, r):
+        f = columns.canonical_form(p, r)
+        q, _ = columns.canonical(p, r)
+        assert list(f.terms.items()) == list(q.terms.items())
+        if p.terms:
+            key, c = next(iter(p.terms.items()))
+            other = columns.NCPoly({**p.terms, key: c + 1}, p.row, p.col)
+            assert columns.canonical_form(other, r) != f or columns.canonical(other, r)[0] == f
+        seen.append(p)
+        return f
+    monkeypatch.setattr(scene_module, "canonical_form", checked)
+    assert run_one(load_catalog().get("magnetic-normal-flow"), None, "free", 0).verdict == "proved"
+    assert seen

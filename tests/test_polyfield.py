@@ -401,3 +401,27 @@ def test_a_minor_of_entries_is_decided_in_flint():
     false = Claim(id="minor-false", paper=(), kind="id", section="test", func=minor_is_one, sizes=admissible(4))
     assert run_exact(true, 3, 2, 0).verdict == "proved"
     assert run_exact(false, 3, 2, 0).verdict == "fails"
+
+
+@pytest.mark.parametrize("method", ["exact", "modular"])
+def test_flint_scalars_cannot_be_steered(method):
+    """Tricks on the exact backend's flint scalars: a quotient by an identically zero trace, a symengine
+    parameter on the left of a flint scalar, a power of an entry.  None passes under any method."""
+    from stiefelsym.claims import Size
+    from stiefelsym.results import PASSING
+    from stiefelsym.runner import run_one
+
+    def div_zero(s):
+        z = s.tr(s.X.T @ s.X - s.Ir)
+        return {"q": s.mat([[s.q(1) / z - s.q(1) / z]], ("?", "?"))}
+
+    def lam_left(s):   # lam tr(XᵀAX) = tr(XᵀAX): false
+        t = s.tr(s.X.T @ s.A @ s.X)
+        return {"q": s.mat([[s.lam * t - t]], ("?", "?"))}
+
+    def entry_power(s):   # X₁₁² = X₁₁: false
+        x = s.X[0, 0]
+        return {"q": s.mat([[x ** 2 - x]], ("?", "?"))}
+    for f in (div_zero, lam_left, entry_power):
+        c = Claim(id=f"rf-{f.__name__}", paper=(), kind="id", section="test", func=f, sizes=admissible(4))
+        assert run_one(c, Size(3, 2), method, 0).verdict not in PASSING, f.__name__
