@@ -21,6 +21,7 @@ from typing import Any, Callable, Iterable, Sequence
 
 from . import paperref, sizerules
 from .latex import unicode_name, math_ok, split_math, tex_balanced, tex_display, tex_escape, tex_text
+from .ir import notation
 from .ir.notation import changes_text as change_text
 from .results import PASSING, VERDICTS, Result
 
@@ -107,7 +108,7 @@ MAX_DERIVATIONS = 20
 #: what a change of the graph says nothing with: a check added or dropped (the statement replaced as a
 #: whole), one written the same, a matrix shown only by its size, a computed number against a printed
 #: one (a count: the registered words say what is counted), an expression cut short
-_UNTELLING = ("(no such check)", "(dropped)", "written the same", "…", "matrix)")
+_UNTELLING = (notation.NO_SUCH_CHECK, notation.DROPPED, notation.SAME_TEXT, "…", notation.BIG_MATRIX)
 _COUNT = re.compile(r"^\d+ = \d+$")
 TELLING_WIDTH = 160
 

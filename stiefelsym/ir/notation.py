@@ -614,7 +614,7 @@ class Printer:
         rows, cols = e.data
         if e.size > budget and budget < 2 * len(e.kids):     # too many blocks to show any: the shape
             return ((r"(%d \times %d\ \text{matrix})" % (rows, cols)) if self.tex
-                    else f"({rows}×{cols} matrix)"), ATOM
+                    else f"({rows}×{cols} {BIG_MATRIX}"), ATOM
         cells = [self.show(k, b)[0] for k, b in zip(e.kids, self._split_budget(e.kids, budget))]
         grid = [cells[i * cols:(i + 1) * cols] for i in range(rows)]
         if self.tex:
@@ -831,6 +831,12 @@ def _place(name: str, blocks: list[tuple]) -> str:
     return f"{name}, blocks {', '.join(named)}"
 
 
+#: what a change says where a check was added or dropped, or where both sides print alike
+NO_SUCH_CHECK, DROPPED, SAME_TEXT = "(no such check)", "(dropped)", "written the same, computed another way"
+#: a matrix too big to show, as the printer writes it
+BIG_MATRIX = "matrix)"
+
+
 def diff(old: Graph, new: Graph, cap: int = 24) -> list[Change]:
     """The changes from ``old`` (the claim as printed) to ``new`` (a mutant or a correction traced at
     the same size), per output: the topmost changed subexpressions under an unchanged context, each
@@ -851,11 +857,11 @@ def diff(old: Graph, new: Graph, cap: int = 24) -> list[Change]:
         b = out_new.get(name)
         if type(a) is Ref and type(b) is Ref and ko[a.i] == kn[b.i]:
             continue
-        ea = ro.arg(a) if name in out_old else atom("(no such check)", r"\text{(no such check)}")
-        eb = rn.arg(b) if name in out_new else atom("(dropped)", r"\text{(dropped)}")
+        ea = ro.arg(a) if name in out_old else atom(NO_SUCH_CHECK, rf"\text{{{NO_SUCH_CHECK}}}")
+        eb = rn.arg(b) if name in out_new else atom(DROPPED, rf"\text{{{DROPPED}}}")
         if ea.key == eb.key:      # another computation of the same expression (e.g. (Mᵀ)ᵀ for M, or the
             # claim's functions numbered otherwise): said only when nothing else changed
-            same.append((f"{name} (written the same, computed another way)", (), ea, eb, None))
+            same.append((f"{name} ({SAME_TEXT})", (), ea, eb, None))
             continue
         pairs.append((name, ea, eb))
     memo: dict = {}
