@@ -52,12 +52,16 @@ DIM_NOTE = ("Dimensions are integers (exact ranks and counts): there is no round
 @click.option("--cap", type=click.FloatRange(min=0, min_open=True), default=None, metavar="SECONDS",
               help="Seconds one run of the cost model's series may take (default 20; the series stops before a "
                    "size predicted beyond it).")
+@click.option("--remeasure", "remeasure", multiple=True, metavar="METHOD",
+              type=click.Choice(["float", "modular", "ball", "exact", "rational"]),
+              help="With --cost-only and --records: measure this method's series again (repeatable) and fit them "
+                   "with the other methods' measurements kept from FILE (after a change to one method).")
 @click.option("--model-file", type=click.Path(dir_okay=False, path_type=Path), default=None, metavar="FILE",
               help="Where to write the fitted cost model (default: your user cache folder, where "
                    "stiefelsym then reads it; the installed package's fit is never written).")
 def speed(report_dir: Path | None, quick: bool, seed: int, no_hard: bool, model_file: Path | None = None,
           hard_only: bool = False, cost_only: bool = False, records_file: Path | None = None,
-          cap: float | None = None) -> int:
+          cap: float | None = None, remeasure: tuple[str, ...] = ()) -> int:
     """Residual and time against n and precision per family of claims, the fitted cost model
     (time against n per method), and the hard numerical cases."""
     import importlib.util
@@ -77,7 +81,9 @@ def speed(report_dir: Path | None, quick: bool, seed: int, no_hard: bool, model_
         raise InputError(f"cannot write the speed report to {report_dir}: {exc.strerror or exc}") from None
     if cost_only and (hard_only or quick):
         raise InputError("--cost-only excludes --hard-only and --quick")
-    if cap is not None and records_file is not None:
+    if remeasure and not (cost_only and records_file is not None):
+        raise InputError("--remeasure takes --cost-only and --records FILE (the measurements it keeps)")
+    if cap is not None and records_file is not None and not remeasure:
         raise InputError("--cap is the time of a measured run; --records measures nothing: give one of them")
     registry = load_catalog()
     say = lambda text: click.echo(text, err=True)  # noqa: E731
@@ -97,7 +103,8 @@ def speed(report_dir: Path | None, quick: bool, seed: int, no_hard: bool, model_
         say(f"hard cases: {len(hard_rows)} runs, {len(wrong)} wrong; reports in {report_dir}")
         return 1 if wrong else 0
 
-    cm_doc, accuracy = _cost_model(report_dir, quick, seed, registry, say, model_file, records_file, cap)
+    cm_doc, accuracy = _cost_model(report_dir, quick, seed, registry, say, model_file, records_file, cap,
+                                   remeasure)
     if cost_only:
         try:
             doc = json.loads((report_dir / "speed.json").read_text(encoding="utf-8"))
@@ -163,9 +170,11 @@ def speed(report_dir: Path | None, quick: bool, seed: int, no_hard: bool, model_
 
 
 def _cost_model(report_dir: Path, quick: bool, seed: int, registry: Any, say: Any, model_file: Path | None,
-                records_file: Path | None, cap: float | None) -> tuple[dict[str, Any], list[dict[str, Any]]]:
+                records_file: Path | None, cap: float | None,
+                remeasure: tuple[str, ...] = ()) -> tuple[dict[str, Any], list[dict[str, Any]]]:
     """Measure (or read from ``records_file``) the cost model's runs, fit, calibrate on the catalog's
-    own runs, save and plot; the model and its accuracy rows."""
+    own runs, save and plot; the model and its accuracy rows.  With ``remeasure``, those methods'
+    series are measured again and replace theirs in ``records_file``."""
     from . import costfit, costmodel
     if records_file is not None:
         try:
@@ -176,6 +185,15 @@ def _cost_model(report_dir: Path, quick: bool, seed: int, registry: Any, say: An
             raise InputError(f"{records_file} holds no cost model measurements (a costmodel.json with "
                              f"'records'): {exc}") from None
         say(f"fitting the {len(records)} measurements of {records_file} ...")
+        if remeasure:
+            cap = cap or costfit.SCALE_CAP
+            methods = [m for m in costfit.SCALE_METHODS if m in remeasure]
+            say(f"measuring {', '.join(methods)} again against n ({cap:g} s per run) ...")
+            fresh = costfit.measure_scale(methods=methods, cap=cap, seed=seed, registry=registry,
+                                          on_point=lambda r: say(f"  {r['family']:>10} {r['method']:>8} "
+                                                                 f"({r['n']},{r['r']}) {r['verdict']} {r['seconds']:.3f}s"))
+            records = [r for r in records if r["method"] not in remeasure] + fresh
+            note += f"; {', '.join(methods)} measured again by stiefelsym speed --remeasure, {cap:g} s per run"
     else:
         cap = cap or (2.0 if quick else costfit.SCALE_CAP)
         say(f"measuring time and peak memory against n (cost model, {cap:g} s per run) ...")
