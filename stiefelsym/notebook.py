@@ -7,9 +7,19 @@ from __future__ import annotations
 import re
 from typing import Any, Sequence
 
-from . import report as R
 from .latex import tex_escape
 from .results import Result
+
+
+class _Report:
+    """The report's module, imported at the first display (so that importing stiefelsym stays quick)."""
+
+    def __getattr__(self, name: str) -> Any:
+        from . import report
+        return getattr(report, name)
+
+
+R = _Report()
 
 
 def _tex_text(text: Any) -> str:
