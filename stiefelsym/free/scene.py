@@ -697,7 +697,8 @@ class FreeScene(PaperObjects):
 
     def sym_operator(self, name: str = "AA") -> Callable[[Mat], Mat]:
         """A generic symmetric operator 𝔸 on so(n) (for ⟨a, b⟩ = −½ tr(ab)), as letters: 𝔸(M) for an
-        n×n block M is Σ c·𝔸⟨w⟩ over the words w of M (linear in M; 𝔸 acts on the skew part, as
+        n×n block M is Σ c·𝔸⟨w⟩ over the words w of M (an r×r block M: the operator of that name on
+        so(r), r×r letters; linear in M; 𝔸 acts on the skew part, as
         the coordinate scenes' operator does), each 𝔸⟨w⟩ an opaque skew n×n letter.  Its symmetry
         is a normal form of traces (:func:`~stiefelsym.free.algebra.operator_pair_rep`) and the
         rule of gradients (:func:`~stiefelsym.free.traces.gradient`); along a flow d𝔸(M) = 𝔸(dM)."""
@@ -708,9 +709,10 @@ class FreeScene(PaperObjects):
 
         def apply(M: Any) -> Mat:
             if not isinstance(M, Mat) or M._shape() != (1, 1):
-                raise refuse(f"the operator {op} on a matrix that is not one n×n block", scene.tracker)
-            if tuple(M.tags) != ("n", "n"):
-                raise TypeError(f"the operator {op} acts on so(n), not on a {M.tags[0]}×{M.tags[1]} matrix")
+                raise refuse(f"the operator {op} on a matrix that is not one n×n or r×r block", scene.tracker)
+            if tuple(M.tags) not in (("n", "n"), ("r", "r")):
+                raise TypeError(f"the operator {op} acts on so(n) or so(r), not on a {M.tags[0]}×{M.tags[1]} matrix")
+            t = M.tags[0]
             x = entry_of(M)
             if isinstance(x, Dual):   # along a flow: d𝔸(M) = 𝔸(dM)
                 y: Any = Dual(apply_operator(op, x.a), apply_operator(op, x.b))
@@ -721,7 +723,7 @@ class FreeScene(PaperObjects):
             for L in _operator_letters(y):
                 scene._named.setdefault(str(L), L)
             f = M._field   # the operator is one for every scene: on a tangent scene, its dual numbers
-            return one_block(f.normalize(y), f, ("n", "n"), M.tracker)
+            return one_block(f.normalize(y), f, (t, t), M.tracker)
 
         return apply
 
