@@ -12,11 +12,6 @@ SECTION = "6"
 POWERS = (1, 2, 3)
 
 
-def powers(m):
-    """The powers k = 1, ..., min(m, 3) of the trace functions on an m x m matrix."""
-    return tuple(k for k in POWERS if k <= max(m, 1))
-
-
 def power_trace(s, M, k):
     """tr M^k."""
     acc = M
@@ -337,22 +332,9 @@ def bb(t, M, nu, k, B=None):
     return power_trace(t, M + nu * B, k)
 
 
-def so_r_coordinates(t, xi):
-    """The coordinates <ξ, E_i ∧ E_j> = ξ_ij (i < j) of ξ ∈ so(r) in the orthonormal basis."""
-    r = t.r
-    return [xi[i, j] for i in range(r) for j in range(i + 1, r)]
-
-
 def half_form_generic(t, xi):
-    """½<ξ, 𝔹ξ> = ½Σ β_kl c_k c_l for a generic operator 𝔹 on so(r), symmetric for <,>
-    (β symmetric: fresh parameters; c the coordinates of ξ)."""
-    c = so_r_coordinates(t, xi)
-    acc = t.q(0)
-    for k in range(len(c)):
-        for l in range(len(c)):
-            i, j = min(k, l), max(k, l)
-            acc = acc + t.scalar(f"beta_{i + 1}_{j + 1}") * c[k] * c[l]
-    return acc / 2
+    """½<ξ, 𝔹ξ> = −¼tr(ξ𝔹(ξ)) for a generic operator 𝔹 on so(r), symmetric for <,>."""
+    return -t.tr(xi @ t.sym_operator("BB")(xi)) / 4
 
 
 def H_B_generic(t):
@@ -399,9 +381,9 @@ def manakov_family_on_so_r(s):
 def cif_set_is_commutative_and_conserved(s):
     """Theorem CIF with the Manakov family (BB): 𝔅 = {tr(Ψ + μB)^k} and 𝔉 (FF) form a commutative set of SO(n)-invariant functions; for every symmetric 𝔹 on so(r) the geodesic flow of H_𝔹 (HB) has the integrals Φ and 𝔉, and for 𝔹(ξ) = Bξ + ξB also 𝔅 (k, m = 1, 2, 3; B generic symmetric, the diagonal B of the paper being a special case)."""
     checks = {}
-    for k in powers(s.r):
+    for k in POWERS:
         b_k = lambda t, k=k: bb(t, t.Psi, t.lam, k)   # noqa: E731
-        for m in powers(s.r):
+        for m in POWERS:
             if m >= k:
                 checks[f"{{BB_{k}(lambda), BB_{m}(mu)}}"] = s.bracket(b_k, lambda t, m=m: bb(t, t.Psi, mu(t), m))
         checks[f"{{BB_{k}, FF_2}}"] = s.bracket(b_k, lambda t: FF(t, mu(t), 2))
@@ -482,7 +464,7 @@ def neumann_with_b_metric_has_commuting_integrals(s):
         f = lambda t, k=k: perelomov(t, t.lam, k)   # noqa: E731
         checks[f"{{perelomov_{k}, H_neum,B}}"] = s.bracket(f, H_gen)
         checks[f"{{perelomov_{k}, BB_2}}"] = s.bracket(f, lambda t: bb(t, t.Psi, mu(t), 2))
-    for k in powers(s.r):
+    for k in POWERS:
         checks[f"{{BB_{k}, H_neum,B (Manakov)}}"] = s.bracket(lambda t, k=k: bb(t, t.Psi, t.lam, k), H_man)
     return checks
 
