@@ -380,7 +380,7 @@ def antisymmetry(s: Any, T: PoissonTensor, x: Mat, a: Mat, b: Mat) -> Scalar:
     return T(s, x, a, b) + T(s, x, b, a)
 
 
-def _form_gradient(s: Any, form: Callable[[Any, Mat], Scalar], point: Mat, kind: str, index: str) -> Mat:
+def form_gradient(s: Any, form: Callable[[Any, Mat], Scalar], point: Mat, kind: str, index: str) -> Mat:
     """The gradient G in the space kind(index) of an affine form y ↦ form(s, y) on it, for <,>:
     form(y) − form(0) = <G, y> for every y of the space (``point`` only gives the shape of y).
 
@@ -401,7 +401,7 @@ def _form_gradient(s: Any, form: Callable[[Any, Mat], Scalar], point: Mat, kind:
     return acc
 
 
-form_gradient = primitive(_form_gradient, like={"form": "point"}, returns=("like", "point"))
+form_gradient = primitive(form_gradient, like={"form": "point"}, returns=("like", "point"))
 
 
 def gradient_in_x(s: Any, T: PoissonTensor, x: Mat, b: Mat, c: Mat) -> Mat:
