@@ -395,13 +395,12 @@ def momentum_maps_are_poisson_for_nonlinear_functions(s):
         for n2, h2 in hs[i + 1:]:
             checks[f"{{{n1}, {n2}}} (+)"] = (s.bracket(h1.pullback(Phi), h2.pullback(Phi))
                                             - plus.bracket(s, h1, h2, s.Phi))
-    if s.r >= 2:
-        for i, (n1, f1) in enumerate(fs):
-            for n2, f2 in fs[i + 1:]:
-                checks[f"{{{n1}, {n2}}} (-)"] = (s.bracket(f1.pullback(Psi), f2.pullback(Psi))
-                                                - minus.bracket(s, f1, f2, s.Psi))
-        for n1, h in hs:
-            for n2, f in fs:
-                checks[f"{{{n1} o Phi, {n2} o Psi}}"] = s.bracket(h.pullback(Phi), f.pullback(Psi))
+    for i, (n1, f1) in enumerate(fs):
+        for n2, f2 in fs[i + 1:]:
+            checks[f"{{{n1}, {n2}}} (-)"] = (s.bracket(f1.pullback(Psi), f2.pullback(Psi))
+                                            - minus.bracket(s, f1, f2, s.Psi))
+    for n1, h in hs:
+        for n2, f in fs:
+            checks[f"{{{n1} o Phi, {n2} o Psi}}"] = s.bracket(h.pullback(Phi), f.pullback(Psi))
     return checks
 

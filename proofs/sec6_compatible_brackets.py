@@ -12,11 +12,6 @@ SECTION = "6"
 POWERS = (1, 2, 3)
 
 
-def powers(m):
-    """The powers k = 1, ..., min(m, 3) of the trace functions on an m x m matrix."""
-    return tuple(k for k in POWERS if k <= max(m, 1))
-
-
 def power_trace(s, M, k):
     """tr M^k."""
     acc = M
@@ -236,15 +231,20 @@ def J(t, k):
     return power_trace(t, t.Psi, 2 * k)
 
 
+#: the Casimirs J_k checked: k = 1, 2 at every r (the paper: k <= [r/2], which is k <= 2 at the sizes checked;
+#: for k > [r/2], J_k is a polynomial in the others, and the identities hold for it as well)
+CASIMIR_POWERS = (1, 2)
+
+
 @claim("reduced-bracket-casimirs", paper=("REDUCED_BRACKET", "torus"), kind="pb", exact_max_n=4,
        sizes=admissible(5, r_min=2, condition="r >= 2 (J_k exist for k <= [r/2])"),
        statement=r"X_{J_k}=(X\omega,P\omega),\ \omega=-4k\Psi^{2k-1}\in so(r);\quad \{J_k,\langle\Theta,a\rangle\}="
                  r"\{J_k,\Psi_\eta\}=\{\langle\Theta,a\rangle,\Psi_\eta\}=\{J_k,H_{neum,\kappa}\}=0,\quad J_k=\tr\Psi^{2k},\ k\le[r/2]")
 def psi_powers_are_casimirs_of_the_reduced_bracket(s):
-    """The Hamiltonian vector field of J_k = tr(Ψ^{2k}) (k ≤ [r/2]) is the infinitesimal right action of ω = −4kΨ^{2k−1} ∈ so(r), tangent to the SO(r)-orbits, so J_k commutes with every SO(r)-invariant function (j_k is a Casimir of the reduced bracket {,}′), in particular with the components of Θ, and is an integral of the Neumann flows (No); and the functions (torus) commute with Ψ."""
+    """The Hamiltonian vector field of J_k = tr(Ψ^{2k}) (k = 1, 2, which are the k ≤ [r/2] for r ≤ 5) is the infinitesimal right action of ω = −4kΨ^{2k−1} ∈ so(r), tangent to the SO(r)-orbits, so J_k commutes with every SO(r)-invariant function (j_k is a Casimir of the reduced bracket {,}′), in particular with the components of Θ, and is an integral of the Neumann flows (No); and the functions (torus) commute with Ψ."""
     Theta_a = lambda t: t.killing(Theta(t), gl_generic(t, "a"))   # noqa: E731
     checks = {"{<Theta, a>, Psi_eta}": s.bracket(Theta_a, Psi_eta)}
-    for k in range(1, s.r // 2 + 1):
+    for k in CASIMIR_POWERS:
         flow = s.dirac_flow(lambda t, k=k: J(t, k))
         omega = s.Psi
         for _ in range(2 * k - 2):
@@ -337,22 +337,9 @@ def bb(t, M, nu, k, B=None):
     return power_trace(t, M + nu * B, k)
 
 
-def so_r_coordinates(t, xi):
-    """The coordinates <ξ, E_i ∧ E_j> = ξ_ij (i < j) of ξ ∈ so(r) in the orthonormal basis."""
-    r = t.r
-    return [xi[i, j] for i in range(r) for j in range(i + 1, r)]
-
-
 def half_form_generic(t, xi):
-    """½<ξ, 𝔹ξ> = ½Σ β_kl c_k c_l for a generic operator 𝔹 on so(r), symmetric for <,>
-    (β symmetric: fresh parameters; c the coordinates of ξ)."""
-    c = so_r_coordinates(t, xi)
-    acc = t.q(0)
-    for k in range(len(c)):
-        for l in range(len(c)):
-            i, j = min(k, l), max(k, l)
-            acc = acc + t.scalar(f"beta_{i + 1}_{j + 1}") * c[k] * c[l]
-    return acc / 2
+    """½<ξ, 𝔹ξ> = −¼tr(ξ𝔹(ξ)) for a generic operator 𝔹 on so(r), symmetric for <,>."""
+    return -t.tr(xi @ t.sym_operator("BB")(xi)) / 4
 
 
 def H_B_generic(t):
@@ -399,9 +386,9 @@ def manakov_family_on_so_r(s):
 def cif_set_is_commutative_and_conserved(s):
     """Theorem CIF with the Manakov family (BB): 𝔅 = {tr(Ψ + μB)^k} and 𝔉 (FF) form a commutative set of SO(n)-invariant functions; for every symmetric 𝔹 on so(r) the geodesic flow of H_𝔹 (HB) has the integrals Φ and 𝔉, and for 𝔹(ξ) = Bξ + ξB also 𝔅 (k, m = 1, 2, 3; B generic symmetric, the diagonal B of the paper being a special case)."""
     checks = {}
-    for k in powers(s.r):
+    for k in POWERS:
         b_k = lambda t, k=k: bb(t, t.Psi, t.lam, k)   # noqa: E731
-        for m in powers(s.r):
+        for m in POWERS:
             if m >= k:
                 checks[f"{{BB_{k}(lambda), BB_{m}(mu)}}"] = s.bracket(b_k, lambda t, m=m: bb(t, t.Psi, mu(t), m))
         checks[f"{{BB_{k}, FF_2}}"] = s.bracket(b_k, lambda t: FF(t, mu(t), 2))
@@ -482,7 +469,7 @@ def neumann_with_b_metric_has_commuting_integrals(s):
         f = lambda t, k=k: perelomov(t, t.lam, k)   # noqa: E731
         checks[f"{{perelomov_{k}, H_neum,B}}"] = s.bracket(f, H_gen)
         checks[f"{{perelomov_{k}, BB_2}}"] = s.bracket(f, lambda t: bb(t, t.Psi, mu(t), 2))
-    for k in powers(s.r):
+    for k in POWERS:
         checks[f"{{BB_{k}, H_neum,B (Manakov)}}"] = s.bracket(lambda t, k=k: bb(t, t.Psi, t.lam, k), H_man)
     return checks
 

@@ -36,6 +36,7 @@ from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any, Callable, Sequence
 
+from .ir.trace import primitive
 from .matrix import Mat, comm
 
 Scalar = Any
@@ -330,10 +331,7 @@ class PoissonTensor:
     def sharp(self, s: Any, x: Mat, a: Mat) -> Mat:
         """The vector Λ_x(·, a)^♯: <Λ_x(·, a)^♯, c> = Λ_x(c, a) for every c (the Hamiltonian vector
         field of a function with gradient a at x: ẋ = sharp(x, ∇H))."""
-        acc = self.space.zero(s)
-        for e, dual in self.space.basis(s):
-            acc = acc + dual * self(s, x, e, a)
-        return acc
+        return form_gradient(s, lambda t, c: self(t, x, c, a), x, self.space.kind, self.space.index)
 
     def __add__(self, o: "PoissonTensor") -> "PoissonTensor":
         if o.space != self.space:
@@ -382,6 +380,30 @@ def antisymmetry(s: Any, T: PoissonTensor, x: Mat, a: Mat, b: Mat) -> Scalar:
     return T(s, x, a, b) + T(s, x, b, a)
 
 
+def form_gradient(s: Any, form: Callable[[Any, Mat], Scalar], point: Mat, kind: str, index: str) -> Mat:
+    """The gradient G in the space kind(index) of an affine form y ↦ form(s, y) on it, for <,>:
+    form(y) − form(0) = <G, y> for every y of the space (``point`` only gives the shape of y).
+
+    One step of the IR, so that a claim's graph holds no basis and is the same at every size.  A
+    coordinate scene sums dual_k·(form(e_k) − form(0)) over a basis e_k of the space; the
+    dimension-free scene differentiates the form, evaluated at a fresh letter, cyclically
+    (:meth:`~stiefelsym.free.FreeScene.form_gradient`), and projects onto the space (the forms of
+    this module project their arguments, so the projection changes nothing there)."""
+    space = Space(kind, index)
+    own = getattr(type(s), "form_gradient", None)
+    if own is not None:
+        return space.project(own(s, form, index))
+    zero = space.zero(s)
+    base = form(s, zero)
+    acc = zero
+    for e, dual in space.basis(s):
+        acc = acc + dual * (form(s, e) - base)
+    return acc
+
+
+form_gradient = primitive(form_gradient, like={"form": "point"}, returns=("like", "point"))
+
+
 def gradient_in_x(s: Any, T: PoissonTensor, x: Mat, b: Mat, c: Mat) -> Mat:
     """The gradient at x of the function y ↦ Λ(b, c)|_y, exact: one evaluation of the form over reverse
     numbers (x the independent variable) and one backward sweep, the adjoint ∂/∂x_ij = g_ij giving
@@ -389,10 +411,14 @@ def gradient_in_x(s: Any, T: PoissonTensor, x: Mat, b: Mat, c: Mat) -> Mat:
     interpolation of the polynomial t ↦ Λ(b, c)|_{x + t e_k} of degree <= T.degree at t = 0, ...,
     degree over a basis e_k (for an affine tensor the difference Λ(b, c)|_{e_k} − Λ(b, c)|_0).  Both
     are the exact derivative of a form that is a polynomial of degree <= T.degree in x, which
-    :func:`degree_residual` checks."""
+    :func:`degree_residual` checks.  A claim's graph holds, for an affine tensor, one step
+    :func:`form_gradient` (no basis: the same graph at every size, which the dimension-free method
+    evaluates by cyclic differentiation)."""
     G = _reverse_gradient_in_x(s, T, x, b, c)
     if G is not None:
         return G
+    if T.degree == 1:
+        return form_gradient(s, lambda t, y: T(t, y, b, c), x, T.space.kind, T.space.index)
     return _basis_gradient_in_x(s, T, x, b, c)
 
 
@@ -508,6 +534,6 @@ def poisson_map_residual(s: Any, bracket: PhaseBracket, moment: Callable[[Any], 
 
 __all__ = ["PhaseBracket", "canonical", "dirac", "metric_dirac", "dirac_bracket_for", "standard_constraints",
            "metric_constraints", "phase_jacobiator", "skew", "sym", "Space", "SO_N", "SO_R", "GL_N", "SYM_N",
-           "pairing", "MatrixFunction", "linear", "quadratic", "trace_power", "PoissonTensor", "lie_poisson",
+           "pairing", "MatrixFunction", "form_gradient", "linear", "quadratic", "trace_power", "PoissonTensor", "lie_poisson",
            "lambda1", "lambda2", "pencil", "antisymmetry", "gradient_in_x", "jacobiator", "degree_residual",
            "poisson_checks", "compatibility", "casimir_residual", "poisson_map_residual"]

@@ -31,7 +31,7 @@ tr(E_jᵀwE_k)·u·E_iE_lᵀ·v).
 The only facts used besides the hypotheses are structural: the transposes of
 the letters (A = Aᵀ, R_μ = R_μᵀ, ξᵀ = −ξ), and tr(uv) = tr(vu), tr(w) = tr(wᵀ).
 A declared operator letter AA(w) is 𝔸(skew w) for an n×n path w and a generic 𝔸 on so(n)
-symmetric for −½tr: it is n×n and skew, 𝔸(skew wᵀ) = −𝔸(skew w), 0 when wᵀ = w, and
+symmetric for −½tr (for an r×r path w, the operator of that name on so(r)): it is n×n (r×r) and skew, 𝔸(skew wᵀ) = −𝔸(skew w), 0 when wᵀ = w, and
 tr(𝔸(skew u)·v) = tr(𝔸(skew v)·u) (linearity and symmetry, for a trace with one such letter).
 """
 from __future__ import annotations
@@ -143,7 +143,9 @@ class Context:
                 if not (isinstance(op, str) and op[:1].isalpha() and op.isalnum() and arg
                         and name == f"{op}({'*'.join(arg)})"):
                     raise Rejected(f"an operator letter is named op(argument), op alphanumeric: {name}")
-                self.expect(arg, "n", "n", f"the argument of {name}")
+                span = self.span(arg)
+                if span is None or span[0] != span[1] or span[0] not in ("n", "r"):
+                    raise Rejected(f"the argument of {name} is not an n×n or r×r path")
                 self.add_operator(op, arg)
             elif d["kind"] == "generic":
                 t, row, col = d["transpose"], d["row"], d["col"]
@@ -157,12 +159,13 @@ class Context:
                 raise Rejected(f"unknown kind of letter {d['kind']!r} for {name}")
 
     def add_operator(self, op: str, arg: tuple) -> str:
-        """The letter op(arg), arg an n×n path: n×n, its transpose itself with sign −1."""
+        """The letter op(arg), arg an n×n (or r×r) path: n×n (r×r), its transpose itself with sign −1."""
         name = f"{op}({'*'.join(arg)})"
         if name not in self.operators:
             if name in self.letters:
                 raise Rejected(f"the operator letter {name} redeclares a letter")
-            self.letters[name], self.operators[name] = ("n", "n", name, -1), (op, arg)
+            t = self.span(arg)[0]
+            self.letters[name], self.operators[name] = (t, t, name, -1), (op, arg)
         return name
 
     def operator_canon(self, op: str, arg: tuple) -> tuple[int, str | None]:

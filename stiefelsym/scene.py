@@ -657,33 +657,36 @@ class Scene(PaperObjects):
         return self._cached(key, lambda: self._general_params(key, size[m], size[k], (m, k)))
 
     def sym_operator(self, name: str = "AA") -> Callable[[Mat], Mat]:
-        """A generic symmetric linear operator on so(n) (w.r.t. <,>), covariant parameter."""
+        """A generic symmetric linear operator on so(n) (w.r.t. <,>), covariant parameter; applied
+        to an r×r matrix, the operator of that name on so(r) (parameters of its own)."""
         basis, coeffs = self._operator_coefficients(name)
-        return self._operator_apply(basis, coeffs)
+        return _on_its_space(self._operator_apply(basis, coeffs),
+                             lambda: self._operator_apply(*self._operator_coefficients(name, "r"), "r"))
 
-    def _operator_coefficients(self, name: str) -> tuple[list[tuple[int, int]], Mat]:
-        """The basis E_i ∧ E_j of so(n) and the symmetric coefficient matrix of the operator
-        (one parameter per pair of basis elements, drawn once per scene and name)."""
+    def _operator_coefficients(self, name: str, space: str = "n") -> tuple[list[tuple[int, int]], Mat]:
+        """The basis E_i ∧ E_j of so(n) (or so(r)) and the symmetric coefficient matrix of the operator
+        (one parameter per pair of basis elements, drawn once per scene, name and space)."""
         def build():
-            basis = so_basis(self.n)
-            return basis, self._sym_params(USER_OPERATOR + user_name(name, "sym_operator"), len(basis), "so")
-        return self._cached(f"op:{name}", build)
+            basis = so_basis(self.n if space == "n" else self.r)
+            own = USER_OPERATOR + user_name(name, "sym_operator") + ("" if space == "n" else "@so(r)")
+            return basis, self._sym_params(own, len(basis), "so")
+        return self._cached(f"op:{name}" if space == "n" else f"op:{name}@so(r)", build)
 
-    def _operator_apply(self, basis: list[tuple[int, int]], coeffs: Mat) -> Callable[[Mat], Mat]:
-        n = self.n
+    def _operator_apply(self, basis: list[tuple[int, int]], coeffs: Mat, space: str = "n") -> Callable[[Mat], Mat]:
+        n = self.n if space == "n" else self.r
 
         def apply(xi: Mat) -> Mat:
             """AA applied to the skew part (xi - xi^T)/2 (an O(n)-equivariant extension to gl(n))."""
             if not isinstance(xi, Mat):
-                raise TypeError("the operator acts on matrices of so(n)")
-            unify(xi.tags[0], "n", "the operator on so(n)", xi.tracker)
-            unify(xi.tags[1], "n", "the operator on so(n)", xi.tracker)
+                raise TypeError(f"the operator acts on matrices of so({space})")
+            unify(xi.tags[0], space, f"the operator on so({space})", xi.tracker)
+            unify(xi.tags[1], space, f"the operator on so({space})", xi.tracker)
             f = xi._field
             half = f.const(Fraction(1, 2))
             a = xi._view()
             # coordinates of the skew part in the orthonormal basis E_i ∧ E_j
             comps = [f.normalize((a[i, j] - a[j, i]) * half) for (i, j) in basis]
-            out = Mat.zeros(n, n, f, ("n", "n"), xi.tracker)
+            out = Mat.zeros(n, n, f, (space, space), xi.tracker)
             out._coords = xi._coords
             o = out._a
             if f is coeffs._field:
@@ -1268,15 +1271,18 @@ class _LiftedScene(Scene):
 
     def sym_operator(self, name: str = "AA"):
         """The base scene's operator (the same parameters), its coefficients lifted to this field;
-        over reverse numbers, see :meth:`_reverse_operator_apply`."""
-        basis, coeffs = self.base._operator_coefficients(name)
-        lifted = self._cached(f"op:{name}", lambda: self._lift_primitive(coeffs, None))
-        generic = self._operator_apply(basis, lifted)
-        if isinstance(self._field, RevField):
-            return self._reverse_operator_apply(self.base._operator_apply(basis, coeffs), generic)
-        return generic
+        over reverse numbers, see :meth:`_reverse_operator_apply`.  On so(r) likewise."""
+        def on(space: str):
+            basis, coeffs = self.base._operator_coefficients(name, space)
+            key = f"op:{name}" if space == "n" else f"op:{name}@so(r)"
+            lifted = self._cached(key, lambda: self._lift_primitive(coeffs, None))
+            generic = self._operator_apply(basis, lifted, space)
+            if isinstance(self._field, RevField):
+                return self._reverse_operator_apply(self.base._operator_apply(basis, coeffs, space), generic, space)
+            return generic
+        return _on_its_space(on("n"), lambda: on("r"))
 
-    def _reverse_operator_apply(self, base_apply, generic):
+    def _reverse_operator_apply(self, base_apply, generic, space: str = "n"):
         """The operator on the tape of reverse mode as one node: its value is the base scene's
         operator applied to the value, and its adjoint g -> AA(g), since AA is self-adjoint for the
         Frobenius pairing (<g, AA(xi)> = 2 c(g)ᵀ C c(xi) = <AA(g), xi>, c the skew coordinates and
@@ -1286,11 +1292,11 @@ class _LiftedScene(Scene):
         def apply(xi: Mat) -> Mat:
             if not isinstance(xi, Mat) or xi._field is not self._field:
                 return generic(xi)
-            unify(xi.tags[0], "n", "the operator on so(n)", xi.tracker)
-            unify(xi.tags[1], "n", "the operator on so(n)", xi.tracker)
+            unify(xi.tags[0], space, f"the operator on so({space})", xi.tracker)
+            unify(xi.tags[1], space, f"the operator on so({space})", xi.tracker)
             s = xi._nat()
             out = rev_linear(s, base_apply(s.v)._untyped(), lambda g: base_apply(g)._untyped())
-            return Mat._wrap_native(out, self._field, ("n", "n"), xi.tracker, xi._coords)
+            return Mat._wrap_native(out, self._field, (space, space), xi.tracker, xi._coords)
         return apply
 
     def generic(self, name, m, k):
@@ -1421,6 +1427,20 @@ def _checked_tangent(base: Scene, flow: Mapping[str, Any]) -> dict[str, Mat]:
             base.tracker.touch("matrices built entrywise")
         out[key] = v
     return out
+
+
+def _on_its_space(on_n: Callable[[Mat], Mat], make_on_r: Callable[[], Callable[[Mat], Mat]]) -> Callable[[Mat], Mat]:
+    """An operator named once, acting on so(n), and on so(r) for an r×r argument (both index spaces
+    ℝʳ): the operator on so(r) is made on its first use."""
+    on_r: list = []
+
+    def apply(xi: Mat) -> Mat:
+        if isinstance(xi, Mat) and xi.tags[0] == "r" and xi.tags[1] == "r":
+            if not on_r:
+                on_r.append(make_on_r())
+            return on_r[0](xi)
+        return on_n(xi)
+    return apply
 
 
 def so_basis(n: int) -> list[tuple[int, int]]:

@@ -65,12 +65,16 @@ def test_the_operator_is_linear_and_acts_on_the_skew_part():
 
 
 def test_the_operator_is_typed():
+    """On n×n blocks the operator on so(n), on r×r blocks the operator of that name on so(r) (r×r
+    letters), on anything else an error."""
     s = FreeScene()
     AA = s.sym_operator("AA")
     with pytest.raises(TypeError):
         AA(s.X)
     with pytest.raises(TypeError):
-        AA(s.X.T @ s.P)
+        AA(s.X.T @ s.A)
+    assert tuple(AA(s.X.T @ s.P).tags) == ("r", "r")
+    assert tuple(AA(s.P @ s.X.T).tags) == ("n", "n")
     with pytest.raises(ValueError):
         s.sym_operator("A(")
 
@@ -238,3 +242,98 @@ def test_the_checker_knows_the_symmetry_of_traces(trace_certificate):
     other["entries"][0]["residual"] = [t if t["traces"] != [["AA(P*Xt)", "xi"]] else dict(t, traces=[["BB(P*Xt)", "xi"]])
                                        for t in other["entries"][0]["residual"]]
     assert not check_certificate(other).accepted
+
+
+# -- the operator of a name on so(r) -----------------------------------------------------------------------
+@pytest.mark.parametrize("cid", ["cif-integrals", "com-integrals"])
+def test_the_metrics_h_b_on_so_r_are_proved_for_every_n_and_r(cid):
+    """(CIF), (COM): the geodesic and Neumann flows of H_𝔹 = ½tr(PᵀP) + ½<Ψ, 𝔹Ψ> for a generic symmetric 𝔹
+    on so(r), as the operator's r×r letters."""
+    _proved(run_free(CATALOG.get(cid)))
+
+
+def _so_r_words_claim(s):
+    BB = s.sym_operator("BB")
+    return {"r": s.X @ BB(s.Psi) @ s.X.T @ s.X - s.X @ BB(s.Psi)}
+
+
+def bb_with_generic_metric(s):
+    """tr(Ψ + μB)³ is not conserved by H_𝔹 for a generic 𝔹 (only for the Manakov one)."""
+    from stiefelsym.proofs import sec6_compatible_brackets as sec6
+    return {"{BB_3, H_B}": s.bracket(lambda t: sec6.bb(t, t.Psi, t.lam, 3), sec6.H_B_generic)}
+
+
+def phi_not_conserved_by_the_neumann_metric(s):
+    """Φ is not conserved by H_neum,𝔹 (A breaks SO(n))."""
+    from stiefelsym.proofs import sec6_compatible_brackets as sec6
+    return {"{Phi_xi, H}": s.bracket(sec6.Phi_xi, lambda t: sec6.H_B_generic(t) + sec6.potential(t))}
+
+
+def symmetry_through_a_third_factor(s):
+    BB, G = s.sym_operator("BB"), s.generic("G", "r", "r")
+    return {"tr": s.tr(BB(s.eta) @ s.theta @ G) - s.tr(s.eta @ BB(s.theta) @ G)}
+
+
+def so_r_operator_is_not_the_so_n_one(s):
+    BB = s.sym_operator("BB")
+    return {"X BB(eta) X^T": s.X @ BB(s.eta) @ s.X.T - BB(s.X @ s.eta @ s.X.T)}
+
+
+def test_the_symmetry_on_so_r_is_a_normal_form_of_traces():
+    s = FreeScene()
+    BB = s.sym_operator("BB")
+    assert _zero(s, s.tr(BB(s.eta) @ s.theta) - s.tr(s.eta @ BB(s.theta)))
+    assert _zero(s, BB(s.Psi) + BB(s.Psi.T))
+    assert not _zero(s, s.tr(BB(s.eta) @ s.theta) + s.tr(s.eta @ BB(s.theta)))
+
+
+@pytest.mark.parametrize("func", [bb_with_generic_metric, phi_not_conserved_by_the_neumann_metric,
+                                  symmetry_through_a_third_factor, so_r_operator_is_not_the_so_n_one])
+def test_a_corrupted_claim_on_so_r_is_not_proved(func):
+    assert run_free(BASE, func).verdict in ("undecided", "fails")
+
+
+def test_the_corrupted_claims_on_so_r_fail_at_a_fixed_size():
+    import random
+    from stiefelsym.fields import ModularField
+    from stiefelsym.scene import Scene
+    s = Scene(4, 3, ModularField(), rng=random.Random("so(r) operator"))
+    for func in (bb_with_generic_metric, phi_not_conserved_by_the_neumann_metric, symmetry_through_a_third_factor,
+                 so_r_operator_is_not_the_so_n_one):
+        (v,) = func(s).values()
+        assert not (v.is_zero() if isinstance(v, Mat) else v == 0), func.__name__
+
+
+def test_the_coordinate_operator_on_so_r_is_symmetric_and_skew():
+    import random
+    from stiefelsym.fields import ModularField
+    from stiefelsym.scene import Scene
+    s = Scene(4, 3, ModularField(), rng=random.Random("so(r) operator|coordinates"))
+    BB = s.sym_operator("BB")
+    eta, theta = s.eta, s.theta
+    assert tuple(BB(eta).tags) == ("r", "r")
+    assert (BB(eta) + BB(eta).T).is_zero()
+    assert s.killing(BB(eta), theta) - s.killing(eta, BB(theta)) == 0
+    assert not (BB(eta) - eta).is_zero()
+
+
+def _renamed(data, old, new):
+    if isinstance(data, dict):
+        return {(new if k == old else k): _renamed(v, old, new) for k, v in data.items()}
+    if isinstance(data, list):
+        return [_renamed(x, old, new) for x in data]
+    return new if data == old else data
+
+
+def test_the_checker_types_operator_letters_on_so_r():
+    """The letter BB(Ψ-word) is r×r; declared with an n×n argument it no longer fits its words."""
+    res = run_free(BASE, _so_r_words_claim)
+    _proved(res)
+    data = res.certificate_data
+    ops = {k: d for k, d in data["letters"].items() if d["kind"] == "operator"}
+    assert ops
+    for name, decl in ops.items():
+        wrong = f"{decl['operator']}(X*Pt)"
+        bad = _renamed(copy.deepcopy(data), name, wrong)
+        bad["letters"][wrong] = dict(decl, argument=["X", "Pt"])
+        assert not check_certificate(bad).accepted

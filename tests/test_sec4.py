@@ -16,10 +16,10 @@ SEED = 0
 
 #: proved for every n, r by rewriting modulo (cond_XP)
 FREE_PROVED = ("jensen-integrals", "manakov-square", "manakov-square-flow", "manakov-square-lax",
-               "manakov-integrals", "noether-normal-metric", "jensen-invariants-conserved")
+               "manakov-integrals", "noether-normal-metric", "jensen-invariants-conserved", "euler-so-n")
 #: need coordinates: ranks and counts, the Manakov operator of a general diagonal B, the reflections S_i
 NEEDS_COORDINATES = ("invariant-tori-dimensions", "manakov-operator", "manakov-lax", "manakov-reflections",
-                     "gram-commutes-with-psi-if-r-is-1-or-n", "euler-so-n")
+                     "gram-commutes-with-psi-if-r-is-1-or-n")
 #: fail as printed (documented errata with a registered correction)
 ERRATA = ("manakov-dual-lax", "gram-not-in-involution-with-psi")
 

@@ -910,7 +910,8 @@ def derivation(p: NCPoly, images: Mapping[Letter, NCPoly]) -> NCPoly:
 # a generic symmetric operator on so(n) as typed letters
 class OperatorLetter(Letter):
     """𝔸⟨w⟩ = 𝔸(skew w): a generic linear operator 𝔸 on so(n), symmetric for the Killing form,
-    applied to the skew part (w − wᵀ)/2 of an n×n word w.  An opaque skew n×n letter whose name
+    applied to the skew part (w − wᵀ)/2 of an n×n word w (or, of an r×r word, the operator of that
+    name on so(r): an r×r letter).  An opaque skew n×n letter whose name
     says the operator and its argument, ``AA(X*Pt)``; :func:`apply_operator` makes only canonical
     ones (the argument is the least of w and its transpose word, see :func:`operator_rep`)."""
 
@@ -918,17 +919,20 @@ class OperatorLetter(Letter):
     argument: Word
 
 
-def operator_letter(op: str, arg: Word) -> OperatorLetter:
-    """The letter 𝔸⟨arg⟩ of the operator ``op`` (arg an n×n word, taken as it is)."""
+def operator_letter(op: str, arg: Word, t: str = "n") -> OperatorLetter:
+    """The letter 𝔸⟨arg⟩ of the operator ``op`` (arg an n×n or r×r word, taken as it is; t its type
+    when arg is empty).  The operator of a name on so(r) is another operator than the one on so(n):
+    its letters are r×r, and the type of the argument tells them apart."""
     arg = tuple(arg)
     key = (op, arg)
     hit = _OPERATOR_LETTERS.get(key)
-    if hit is not None and all(a is b for a, b in zip(hit.argument, arg)):
+    if hit is not None and all(a is b for a, b in zip(hit.argument, arg)) and (arg or hit.row == t):
         return hit
     check_word(arg)
-    if arg and (arg[0].row != "n" or arg[-1].col != "n"):
-        raise TypeError(f"the operator {op} acts on so(n): its argument {word_str(arg)} is not n×n")
-    L = OperatorLetter.__new__(OperatorLetter, f"{op}({word_str(arg)})", "n", "n",
+    t = arg[0].row if arg else t
+    if t not in ("n", "r") or (arg and arg[-1].col != t):
+        raise TypeError(f"the operator {op} acts on so(n) or so(r): its argument {word_str(arg)} is not square")
+    L = OperatorLetter.__new__(OperatorLetter, f"{op}({word_str(arg)})", t, t,
                                rf"\mathbb{{{op[0]}}}({word_latex(arg) or 'I'})")
     L.adjoint_sign = -1
     L.operator, L.argument = op, arg
@@ -954,10 +958,11 @@ def is_operator(L: Any) -> bool:
 
 
 def apply_operator(op: str, p: NCPoly) -> NCPoly:
-    """𝔸(p) for an n×n polynomial p: 𝔸(skew p), linear in p, one canonical letter per word
-    (traces are scalars and stay factors)."""
-    if (p.row, p.col) != ("n", "n"):
-        raise TypeError(f"the operator {op} acts on so(n), not on a {p.row}×{p.col} polynomial")
+    """𝔸(p) for an n×n (or r×r: the operator of that name on so(r)) polynomial p: 𝔸(skew p), linear
+    in p, one canonical letter per word (traces are scalars and stay factors)."""
+    if p.row != p.col or p.row not in ("n", "r"):
+        raise TypeError(f"the operator {op} acts on so(n) or so(r), not on a {p.row}×{p.col} polynomial")
+    t = p.row
     out: dict = {}
     for (tm, w), c in p.terms.items():
         tm, w, sp = _scalar_pieces(tm, w)
@@ -967,10 +972,10 @@ def apply_operator(op: str, p: NCPoly) -> NCPoly:
         s *= sp
         if s == 0:
             continue
-        k = (tm, (operator_letter(op, v),))
+        k = (tm, (operator_letter(op, v, t),))
         x = c if s == 1 else cneg(c)
         out[k] = csum(out[k], x) if k in out else x
-    return NCPoly(nonzero_terms_raw(out), "n", "n")
+    return NCPoly(nonzero_terms_raw(out), t, t)
 
 
 def _scalar_pieces(tm: Traces, w: Word) -> tuple[Traces, Word, int]:
@@ -1013,7 +1018,7 @@ def operator_pair_rep(w: Word) -> tuple[int, Word] | None:
     if s1 == 0 or s2 == 0:
         return 0, w
     a, b = sorted((u, v), key=lambda x: (operator_letters_in(x), word_key(x)))
-    return s1 * s2, (operator_letter(L.operator, a),) + b
+    return s1 * s2, (operator_letter(L.operator, a, L.row),) + b
 
 
 def operator_letters_in(w: Word) -> bool:
@@ -1032,7 +1037,7 @@ def _operator_images(p: NCPoly, full: dict, image: Any) -> None:
         for x in L.argument:
             moved = visit(x) or moved
         if moved:
-            full[L] = apply_operator(L.operator, image(NCPoly.word(L.argument, "n")))
+            full[L] = apply_operator(L.operator, image(NCPoly.word(L.argument, L.row)))
         return moved
 
     for L in p.letters():

@@ -697,7 +697,8 @@ class FreeScene(PaperObjects):
 
     def sym_operator(self, name: str = "AA") -> Callable[[Mat], Mat]:
         """A generic symmetric operator 𝔸 on so(n) (for ⟨a, b⟩ = −½ tr(ab)), as letters: 𝔸(M) for an
-        n×n block M is Σ c·𝔸⟨w⟩ over the words w of M (linear in M; 𝔸 acts on the skew part, as
+        n×n block M is Σ c·𝔸⟨w⟩ over the words w of M (an r×r block M: the operator of that name on
+        so(r), r×r letters; linear in M; 𝔸 acts on the skew part, as
         the coordinate scenes' operator does), each 𝔸⟨w⟩ an opaque skew n×n letter.  Its symmetry
         is a normal form of traces (:func:`~stiefelsym.free.algebra.operator_pair_rep`) and the
         rule of gradients (:func:`~stiefelsym.free.traces.gradient`); along a flow d𝔸(M) = 𝔸(dM)."""
@@ -708,9 +709,10 @@ class FreeScene(PaperObjects):
 
         def apply(M: Any) -> Mat:
             if not isinstance(M, Mat) or M._shape() != (1, 1):
-                raise refuse(f"the operator {op} on a matrix that is not one n×n block", scene.tracker)
-            if tuple(M.tags) != ("n", "n"):
-                raise TypeError(f"the operator {op} acts on so(n), not on a {M.tags[0]}×{M.tags[1]} matrix")
+                raise refuse(f"the operator {op} on a matrix that is not one n×n or r×r block", scene.tracker)
+            if tuple(M.tags) not in (("n", "n"), ("r", "r")):
+                raise TypeError(f"the operator {op} acts on so(n) or so(r), not on a {M.tags[0]}×{M.tags[1]} matrix")
+            t = M.tags[0]
             x = entry_of(M)
             if isinstance(x, Dual):   # along a flow: d𝔸(M) = 𝔸(dM)
                 y: Any = Dual(apply_operator(op, x.a), apply_operator(op, x.b))
@@ -721,7 +723,7 @@ class FreeScene(PaperObjects):
             for L in _operator_letters(y):
                 scene._named.setdefault(str(L), L)
             f = M._field   # the operator is one for every scene: on a tangent scene, its dual numbers
-            return one_block(f.normalize(y), f, ("n", "n"), M.tracker)
+            return one_block(f.normalize(y), f, (t, t), M.tracker)
 
         return apply
 
@@ -905,6 +907,37 @@ class FreeScene(PaperObjects):
             self._cache[f"holds a flow:{id(H)}"] = (H, u.nested_flow)
             return tuple(self._const_mat(self.system.normal_form(u.back(gradient(h, u.own(L))))) for L in (X, P))
         return self._cached_for("grad:ambient" if ambient else "grad", H, build)
+
+    def form_gradient(self, form: Callable[[Any, Mat], Any], index: str) -> Mat:
+        """The gradient G, for ⟨a, b⟩ = −½ tr(ab), of an affine form c ↦ form(self, c) on gl(m)
+        (m = n or r, ``index``): form(c) − form(0) = ⟨G, c⟩ for every c, with no basis of gl(m).
+
+        The form is evaluated at a fresh m×m letter C (with its transpose Cᵀ, no rule mentions
+        them) to a trace form F, and G = −2 (∂F/∂C)ᵀ by cyclic differentiation
+        (:func:`~stiefelsym.free.traces.gradient`: dF = tr((∂F/∂C)ᵀ dC) = ⟨−2(∂F/∂C)ᵀ, dC⟩).  A
+        gradient that still holds C means the form is not affine in c: refused."""
+        if index not in ("n", "r"):
+            raise ValueError(f"form_gradient: the index space is 'n' or 'r', not {index!r}")
+        global _FORM_LETTERS
+        _FORM_LETTERS += 1
+        C, _ = letter_pair(f"form:{_FORM_LETTERS}", f"form:{_FORM_LETTERS}^T", index, index, "C", "C^{T}")
+        value = _raw(form(self, self._prim(str(C), _w(C))))
+        if isinstance(value, Mat):
+            if value._shape() != (1, 1):
+                raise refuse("the gradient of a form whose value is not a number", self.tracker)
+            value = entry_of(value)
+        if not isinstance(value, NCPoly):
+            c = as_coef(value)
+            if c is None:
+                raise refuse(f"the gradient of a form whose value is not a trace form ({type(value).__name__})",
+                             self.tracker)
+            value = NCPoly.scalar(c)
+        if not value.is_scalar:
+            raise refuse("the gradient of a form whose value is not a number", self.tracker)
+        g = gradient(value, C)
+        if _holds_letter(g, C):
+            raise refuse("the gradient of a form that is not affine in its argument", self.tracker)
+        return self._const_mat(self.field.normalize(g.star() * se.Integer(-2)))
 
     def _holds_flow(self, H: Function) -> bool:
         """Whether H, as evaluated for its gradient, solved a flow's multipliers modulo the constraints (which
@@ -1251,6 +1284,17 @@ class FunctionScene(FreeScene):
 
     def euler_lagrange_double(self, T, U, constraints, position, velocity):
         raise refuse("Euler-Lagrange equations inside a function handed to the scene", self.tracker)
+
+
+#: fresh letters of the forms differentiated by :meth:`FreeScene.form_gradient` (one per form)
+_FORM_LETTERS = 0
+
+
+def _holds_letter(p: NCPoly, L: Letter) -> bool:
+    """L or its transpose occurs in p (in a word, a trace, or an operator letter's argument)."""
+    def hit(letters) -> bool:
+        return any(x == L or x == L.adjoint or (isinstance(x, OperatorLetter) and hit(x.argument)) for x in letters)
+    return any(hit(w) or any(hit(c) for c in tm) for tm, w in p.terms)
 
 
 def _point_letters_in(v: Any, out: set) -> set:

@@ -46,7 +46,7 @@ def _cycle_gradient(cyc: tuple, L: Letter) -> NCPoly:
         if isinstance(letter, OperatorLetter):
             if _mentions(letter, L):
                 V = cyc[j + 1:] + cyc[:j]   # tr(𝔸⟨u⟩ V) = tr(u 𝔸(V))
-                image = apply_operator(letter.operator, NCPoly.word(V, "n"))
+                image = apply_operator(letter.operator, NCPoly.word(V, letter.row))
                 for (_, vw), vc in image.terms.items():
                     out = out + _occurrences_gradient(letter.argument + vw, len(letter.argument), L) * vc
             continue

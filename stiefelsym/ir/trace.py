@@ -46,7 +46,8 @@ def primitive(f: Callable | None = None, *, returns: Any = None, like: dict[str,
     ``prim`` node (its function arguments traced once); otherwise it runs as written.
 
     ``returns``: the structure of its value for claim code (None: an engine value; k: a tuple of
-    k values; "scene": a scene).  ``like``: for a function argument, the argument whose structure
+    k values; "scene": a scene; ("like", name): the structure of the value of the function argument
+    ``name``, or, when ``name`` is a matrix argument, a matrix of its spaces).  ``like``: for a function argument, the argument whose structure
     its second parameter has (a point of a phase space of the caller's)."""
     if f is None:
         return lambda g: primitive(g, returns=returns, like=like)
@@ -930,6 +931,8 @@ class Trace:
             return TraceScene(self, ref)
         if type(returns) is tuple:              # ("like", name): shaped like a function argument's value
             f = (shapes or {}).get("__returns__")
+            if type(f) is Tracer and f._kind == MAT:   # ... or like a matrix argument: a matrix of its spaces
+                return Tracer(self, ref, MAT, f._shape)
             hit = self._functions.get(id(f)) if f is not None else None
             return self.mirror(hit[2], ref) if hit is not None else Tracer(self, ref, ANY)
         if type(returns) is int:
