@@ -62,6 +62,9 @@ FIXED_LETTERS: dict[str, tuple[str, str, str, int]] = {
     "Elead": ("r", "r-1", "Eleadt", 1), "Eleadt": ("r-1", "r", "Elead", 1),
     **{f"D{x}": ("n", "r", f"D{x}t", 1) for x in ("X", "Y", "Xd", "Yd")},
     **{f"D{x}t": ("r", "n", f"D{x}", 1) for x in ("X", "Y", "Xd", "Yd")},
+    # the complex point Z = U + iV, Ż = U̇ + iV̇ of W(n, r), realified: real n×r letters
+    **{x: ("n", "r", f"{x}t", 1) for x in ("U", "V", "Ud", "Vd")},
+    **{f"{x}t": ("r", "n", x, 1) for x in ("U", "V", "Ud", "Vd")},
 }
 
 
@@ -263,6 +266,13 @@ HYPOTHESES: dict[str, tuple[str, str, list[tuple[Any, tuple]]]] = {
     "DXtDY": ("r", "r", [(_ONE, ("DXt", "DY")), (_MINUS, ())]), "DYtDX": ("r", "r", [(_ONE, ("DYt", "DX")), (_MINUS, ())]),
     "DXdtDY+DXtDYd": ("r", "r", [(_ONE, ("DXdt", "DY")), (_ONE, ("DXt", "DYd"))]),
     "DYtDXd+DYdtDX": ("r", "r", [(_ONE, ("DYt", "DXd")), (_ONE, ("DYdt", "DX"))]),
+    # Z̄ᵀZ = I_r on W(n, r) and its derivative, real and imaginary parts (Z = U + iV, Ż = U̇ + iV̇)
+    "UtU+VtV": ("r", "r", [(_ONE, ("Ut", "U")), (_ONE, ("Vt", "V")), (_MINUS, ())]),
+    "UtV-VtU": ("r", "r", [(_ONE, ("Ut", "V")), (_MINUS, ("Vt", "U"))]),
+    "UdtU+UtUd+VdtV+VtVd": ("r", "r", [(_ONE, ("Udt", "U")), (_ONE, ("Ut", "Ud")), (_ONE, ("Vdt", "V")),
+                                        (_ONE, ("Vt", "Vd"))]),
+    "UdtV+UtVd-VdtU-VtUd": ("r", "r", [(_ONE, ("Udt", "V")), (_ONE, ("Ut", "Vd")), (_MINUS, ("Vdt", "U")),
+                                        (_MINUS, ("Vt", "Ud"))]),
     "EleadtElead": ("r-1", "r-1", [(_ONE, ("Eleadt", "Elead")), (_MINUS, ())]),
     "EleadtEr": ("r-1", "1", [(_ONE, ("Eleadt", "Er"))]), "ErtElead": ("1", "r-1", [(_ONE, ("Ert", "Elead"))]),
     "EleadEleadt+ErErt": ("r", "r", [(_ONE, ("Elead", "Eleadt")), (_ONE, ("Er", "Ert")), (_MINUS, ())]),

@@ -153,6 +153,26 @@ class PaperObjects:
         """The SO(r) momentum map Psi = X^T P - P^T X."""
         return self._cached("Psi", lambda: self.X.T @ self.P - self.P.T @ self.X)
 
+    # -- complex matrices, realified ----------------------------------------------
+    # A complex matrix U + iV is represented by the real block matrix [[U, -V], [V, U]]:
+    # sums, products and the conjugate transpose (which becomes the transpose) are preserved.  On
+    # the dimension-free scene the same code keeps a realified matrix as its 2×2 blocks.
+    def realify(self, U: Mat, V: Mat) -> Mat:
+        """The real 2m x 2k form of the complex matrix U + iV."""
+        return block([[U, -V], [V, U]])
+
+    def conj(self, M: Mat) -> Mat:
+        """The complex conjugate of a realified matrix (spaces V+V for V = R^n or R^r on each side)."""
+        for tag in M.tags:
+            atoms = definite(tag)
+            if atoms is None or len(atoms) != 2 or atoms[0] != atoms[1]:
+                raise TypeError(f"conj acts on realified matrices, indexed by n+n or r+r, not by {tag!r}")
+        m, k = M._a.shape[0] // 2, M._a.shape[1] // 2
+        a = M._a.copy()
+        a[:m, k:] = -a[:m, k:]
+        a[m:, :k] = -a[m:, :k]
+        return Mat._wrap(a, M._field, M.tags, M.tracker, M._coords)   # J M J, J = diag(I, -I): covariant
+
     def _lent(self) -> "Scene":
         """A copy of this scene in its present state (engine only: the mutation analysis lends the
         point of a claim as printed to its mutants).  The parameters drawn so far and the objects
@@ -532,25 +552,7 @@ class Scene(PaperObjects):
     def DYdot(self) -> Mat:
         return self._double()["Ydot"]
 
-    # -- the complex Stiefel variety W(n, r), realified ---------------------------
-    # A complex matrix U + iV is represented by the real block matrix [[U, -V], [V, U]]:
-    # sums, products and the conjugate transpose (which becomes the transpose) are preserved.
-    def realify(self, U: Mat, V: Mat) -> Mat:
-        """The real 2m x 2k form of the complex matrix U + iV."""
-        return block([[U, -V], [V, U]])
-
-    def conj(self, M: Mat) -> Mat:
-        """The complex conjugate of a realified matrix (spaces V+V for V = R^n or R^r on each side)."""
-        for tag in M.tags:
-            atoms = definite(tag)
-            if atoms is None or len(atoms) != 2 or atoms[0] != atoms[1]:
-                raise TypeError(f"conj acts on realified matrices, indexed by n+n or r+r, not by {tag!r}")
-        m, k = M._a.shape[0] // 2, M._a.shape[1] // 2
-        a = M._a.copy()
-        a[:m, k:] = -a[:m, k:]
-        a[m:, :k] = -a[m:, :k]
-        return Mat._wrap(a, M._field, M.tags, M.tracker, M._coords)   # J M J, J = diag(I, -I): covariant
-
+    # -- the complex Stiefel variety W(n, r), realified (realify, conj: see PaperObjects) ----
     def _complex_point(self):
         n, r = self.n, self.r
         S = self.realify(self._skew_params("cS", n, "n"), self._sym_params("cH", n, "n"))

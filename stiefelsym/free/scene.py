@@ -50,6 +50,17 @@ DY, DYt = letter_pair("DY", "DYt", "n", "r", "Y", "Y^{T}")
 DXd, DXdt = letter_pair("DXd", "DXdt", "n", "r", r"\dot X", r"\dot X^{T}")
 DYd, DYdt = letter_pair("DYd", "DYdt", "n", "r", r"\dot Y", r"\dot Y^{T}")
 DOUBLE = {"X": DX, "Y": DY, "Xdot": DXd, "Ydot": DYd}
+#: a generic point (Z, Ż) of the tangent bundle of the complex Stiefel variety W(n, r), realified:
+#: Z = U + iV, Ż = U̇ + iV̇ with U, V, U̇, V̇ real n×r letters, Z̄ᵀZ = I_r and Z̄ᵀŻ + Ż̄ᵀZ = 0, i.e.
+#: UᵀU + VᵀV = I_r, UᵀV − VᵀU = 0 and their derivatives (real and imaginary parts)
+CU, CUt = letter_pair("U", "Ut", "n", "r", "U", "U^{T}")
+CV, CVt = letter_pair("V", "Vt", "n", "r", "V", "V^{T}")
+CUd, CUdt = letter_pair("Ud", "Udt", "n", "r", r"\dot U", r"\dot U^{T}")
+CVd, CVdt = letter_pair("Vd", "Vdt", "n", "r", r"\dot V", r"\dot V^{T}")
+#: the keys of a complex point and the letters (real part, imaginary part) of each
+COMPLEX = {"Z": (CU, CV), "Zdot": (CUd, CVd)}
+#: the hypotheses of the complex point: Re and Im of Z̄ᵀZ − I_r and of its derivative
+COMPLEX_HYPOTHESES = ("UtU+VtV", "UtV-VtU", "UdtU+UtUd+VdtV+VtVd", "UdtV+UtVd-VdtU-VtUd")
 PI = symmetric_letter("Pi", "r", r"\Pi")
 LAMBDA = symmetric_letter("Lambda", "r", r"\Lambda")
 
@@ -127,6 +138,10 @@ def hypothesis(name: str, R: Letter | None = None, mu: Any = None) -> Hypothesis
         "DYtDX": lambda: _w(DYt, DX) - _i("r"),
         "DXdtDY+DXtDYd": lambda: _w(DXdt, DY) + _w(DXt, DYd),
         "DYtDXd+DYdtDX": lambda: _w(DYt, DXd) + _w(DYdt, DX),
+        "UtU+VtV": lambda: _w(CUt, CU) + _w(CVt, CV) - _i("r"),
+        "UtV-VtU": lambda: _w(CUt, CV) - _w(CVt, CU),
+        "UdtU+UtUd+VdtV+VtVd": lambda: _w(CUdt, CU) + _w(CUt, CUd) + _w(CVdt, CV) + _w(CVt, CVd),
+        "UdtV+UtVd-VdtU-VtUd": lambda: _w(CUdt, CV) + _w(CUt, CVd) - _w(CVdt, CU) - _w(CVt, CUd),
     }
     if name not in polys:
         return column_hypotheses()[name]
@@ -546,6 +561,86 @@ class FreeScene(PaperObjects):
     @property
     def DYdot(self) -> Mat:
         return self._double("Ydot")
+
+    def _complex(self, L: Letter) -> Mat:
+        """A part (U, V, U̇ or V̇) of the generic point of T W(n, r), realified, as an n×r letter, with
+        the rules of Z̄ᵀZ = I_r and of its derivative (real and imaginary parts): VᵀV → I_r − UᵀU,
+        VᵀU → UᵀV, V̇ᵀV → −U̇ᵀU − UᵀU̇ − VᵀV̇, V̇ᵀU → U̇ᵀV + UᵀV̇ − VᵀU̇.  No left-hand side ends with
+        a letter another one starts with, so the rules have no critical pairs: they are confluent, and
+        a normal form is 0 iff the polynomial is in the ideal of the constraints."""
+        if "complex" not in self._extras:
+            self._extras.add("complex")
+            for M in (CU, CV, CUd, CVd, CUt, CVt, CUdt, CVdt):   # V̇ᵀ, then Vᵀ are the largest letters
+                self.system.order.add(M)
+            h = {name: hypothesis(name) for name in COMPLEX_HYPOTHESES}
+            self.system.add_rule((CVt, CV), _i("r") - _w(CUt, CU), "U^T U + V^T V = I_r (W0, real part)",
+                                 name="VtV", cofactors=[_by(h["UtU+VtV"])])
+            self.system.add_rule((CVt, CU), _w(CUt, CV), "U^T V - V^T U = 0 (W0, imaginary part)",
+                                 name="VtU", cofactors=[_by(h["UtV-VtU"], -1)])
+            self.system.add_rule((CVdt, CV), -_w(CUdt, CU) - _w(CUt, CUd) - _w(CVt, CVd),
+                                 "U'^T U + U^T U' + V'^T V + V^T V' = 0 (W0 differentiated, real part)",
+                                 name="VdtV", cofactors=[_by(h["UdtU+UtUd+VdtV+VtVd"])])
+            self.system.add_rule((CVdt, CU), _w(CUdt, CV) + _w(CUt, CVd) - _w(CVt, CUd),
+                                 "U'^T V + U^T V' - V'^T U - V^T U' = 0 (W0 differentiated, imaginary part)",
+                                 name="VdtU", cofactors=[_by(h["UdtV+UtVd-VdtU-VtUd"], -1)])
+        self._named.setdefault(str(L), L)
+        return self._cached(f"complex:{L}", lambda: self._const_block(_w(L), ("n", "r")))
+
+    @property
+    def Zc(self) -> Mat:
+        """The generic point Z = U + iV of W(n, r), realified: the block matrix [[U, −V], [V, U]] of
+        letters (spaces ℝⁿ ⊕ ℝⁿ and ℝʳ ⊕ ℝʳ)."""
+        return self._cached("Zc", lambda: self.realify(self._complex(CU), self._complex(CV)))
+
+    @property
+    def Zc_dot(self) -> Mat:
+        """The generic tangent vector Ż = U̇ + iV̇ at Zc (Z̄ᵀŻ + Ż̄ᵀZ = 0), realified."""
+        return self._cached("Zc_dot", lambda: self.realify(self._complex(CUd), self._complex(CVd)))
+
+    def _complex_parts(self, M: Any, what: str) -> tuple[NCPoly, NCPoly]:
+        """(Re, Im) of a realified n×r complex matrix given by its blocks [[a, b], [c, d]]: refused unless
+        the rules show a = d and b = −c (the matrix is complex-linear)."""
+        a = M._view() if isinstance(M, Mat) and M._shape() == (2, 2) else None
+        if a is None or not all(isinstance(x, NCPoly) and x.shape == ("n", "r") for x in a.flat):
+            raise refuse(f"{what} that is not a realified n×r complex matrix of blocks", self.tracker)
+        if not (self.reduce(a[0, 0] - a[1, 1]).is_zero and self.reduce(a[0, 1] + a[1, 0]).is_zero):
+            raise refuse(f"{what} whose blocks are not those of a complex matrix [[U, -V], [V, U]]", self.tracker)
+        return a[0, 0], a[1, 0]
+
+    def _derivative_at_complex_point(self, F: Callable[[Any, dict], Any], point: Mapping[str, Any],
+                                     tangent: Mapping[str, Any]) -> Any:
+        """d/dε F(t, z + ε·v) at the generic complex point z = (Z, Ż): the derivation of the value F(z)
+        (a polynomial in the letters U, V, U̇, V̇) that sends each letter to its part of v, for a v that
+        keeps (W0) and its derivative (checked by the rules: the derivative is then that of F on the
+        constraint set)."""
+        images: dict[Letter, NCPoly] = {}
+        for k, v in tangent.items():
+            if k not in COMPLEX:
+                raise refuse(f"a tangent vector of the complex point that moves {k!r}", self.tracker)
+            images[COMPLEX[k][0]], images[COMPLEX[k][1]] = self._complex_parts(v, "a tangent vector")
+        for name in COMPLEX_HYPOTHESES:
+            if not self.reduce(derivation(hypothesis(name).poly, images)).is_zero:
+                raise refuse("a derivative along a vector that does not keep (W0) and its derivative", self.tracker)
+        # F's own variables are fresh letters: a value of this scene F closes over keeps the point's
+        # letters and is a constant of F, not moved with the point
+        _FRESH[0] += 1
+        fresh, own = {}, {}
+        for k, parts in COMPLEX.items():
+            fresh[k] = []
+            for L in parts:
+                Fl, _ = letter_pair(f"{L}'{_FRESH[0]}", f"{L.adjoint}'{_FRESH[0]}", L.row, L.col, L.latex,
+                                    L.adjoint.latex)
+                fresh[k].append(Fl)
+                own[Fl] = _w(L)
+        moved = {Fl: images[L] for k, parts in COMPLEX.items() for Fl, L in zip(fresh[k], parts) if L in images}
+        value = F(self, {k: self.realify(*(self._const_mat(_w(Fl)) for Fl in fresh[k])) if k in fresh else v
+                         for k, v in dict(point).items()})
+
+        def derivative(x: Any) -> Any:
+            if not isinstance(x, NCPoly):
+                return se.Integer(0)
+            return self.field.normalize(substitute(derivation(x, moved), own))
+        return map_entries(value, derivative, self)
 
     def _derivative_at_double_point(self, F: Callable[[Any, dict], Any], point: Mapping[str, Any],
                                     tangent: Mapping[str, Any]) -> Any:
@@ -1023,6 +1118,8 @@ class FreeScene(PaperObjects):
         t ↦ F(t, {k: t.k}) along the tangent (letters not moved are constant)."""
         if set(point) == set(DOUBLE) and all(point[k] is self._double(k) for k in DOUBLE):
             return self._derivative_at_double_point(F, point, tangent)
+        if set(point) == set(COMPLEX) and point["Z"] is self.Zc and point["Zdot"] is self.Zc_dot:
+            return self._derivative_at_complex_point(F, point, tangent)
         keys = self._own_point(point, "a derivative")
         return self.d(lambda t: F(t, {k: getattr(t, k) for k in keys}), dict(tangent))
 
