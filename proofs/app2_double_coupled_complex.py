@@ -473,6 +473,11 @@ def U_complex(t, q):
     return t.q(1, 2) * re_trace(t, ctranspose(t, Z) @ realify_real(t, t.A) @ t.conj(Z))
 
 
+def im_trace(t, M):
+    """Im tr M of a realified r×r complex matrix: Re tr(−iM), the sum of the imaginary parts of its diagonal."""
+    return re_trace(t, t.realify(_zero_r(t), -t.Ir) @ M)
+
+
 def W0(t, q):
     """(W0): Z̄ᵀZ − I_r, Hermitian: its r² independent real components."""
     Z = q["Z"]
@@ -511,7 +516,7 @@ def complex_neumann_flow(s):
     velocity_constraint = lambda t, w: (ctranspose(t, t.conj(w["Zdot"])) @ w["Z"]
                                         + ctranspose(t, t.conj(w["Z"])) @ w["Zdot"])
     return {
-        "Im tr(Z'^T conj Z' - Z^T A conj Z)": sum((im for _, im in complex_diagonal(kinetic)), s.q(0)),
+        "Im tr(Z'^T conj Z' - Z^T A conj Z)": im_trace(s, kinetic),
         "Z'' (W-Lag) - (W-eq)": acc - printed["Zdot"],
         "conj Z'' (W-Lag) - (W-eq)": s.conj(acc) - (-(A @ s.conj(Z)) + s.conj(Z) @ s.conj(Lam)),
         "Lambda - conj Lambda^T": Lam - ctranspose(s, s.conj(Lam)),

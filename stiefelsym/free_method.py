@@ -124,6 +124,12 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
                               f"E_i^T E_j = delta_ij, and, the claim being stated at r = {k} only, "
                               f"{' + '.join(f'E_{i + 1} E_{i + 1}^T' for i in range(k))} = I_r: every place where a "
                               "word passes through R^r is written in this basis, and a 1 x 1 piece is its own trace")
+    if "complex" in scene._extras:
+        res.reductions.append("the point Z = U + iV of the complex Stiefel variety W(n, r) and its velocity "
+                              "Z' = U' + iV' as real n x r letters U, V, U', V' (complex matrices realified, kept as "
+                              "their 2 x 2 blocks); Re and Im of conj(Z)^T Z = I_r and of its derivative as the rules "
+                              "V^T V -> I_r - U^T U, V^T U -> U^T V, V'^T V -> -U'^T U - U^T U' - V^T V', "
+                              "V'^T U -> U'^T V + U^T V' - V^T U' (no critical pairs)")
     if scene.square:
         res.reductions.append("the claim being stated at r = n only (T*SO(n)): X X^T = I_n and P X^T = -X P^T")
     if "last" in scene._extras:

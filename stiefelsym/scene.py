@@ -134,6 +134,20 @@ REALIZATIONS = {
 }
 
 
+class HermitianComponents:
+    """The independent real components of a realified Hermitian matrix M, on a backend without
+    coordinates (the dimension-free scene): not a list of scalars, only the matrix they are the
+    components of (an Euler–Lagrange solver in the free algebra reads it as the constraint M = 0)."""
+
+    __slots__ = ("matrix",)
+
+    def __init__(self, matrix: Mat) -> None:
+        self.matrix = matrix
+
+    def __repr__(self) -> str:
+        return "HermitianComponents(...)"
+
+
 class PaperObjects:
     """What every backend derives the same way from its primitives X, P and its parameters."""
 

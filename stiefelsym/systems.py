@@ -51,9 +51,9 @@ import numpy as np
 
 from . import scene as scene_module
 from .ir.trace import TraceScene, primitive
-from .matrix import Mat, _refused, block, definite
+from .matrix import Mat, _coordinates, _refused, block, definite
 from .reverse import Node, Rev, RevMat, Unsupported, gradient as rev_gradient, leaf as rev_leaf
-from .scene import double_point_of, ReverseScene, Scene, _LiftedScene
+from .scene import double_point_of, HermitianComponents, ReverseScene, Scene, _LiftedScene
 
 Point = Mapping[Hashable, Mat]
 Coordinates = Sequence[tuple[Hashable, Mat]]
@@ -110,6 +110,8 @@ def symmetric_entries(M: Mat) -> list[Any]:
 def hermitian_entries(M: Mat) -> list[Any]:
     """The independent real components of a realified Hermitian r×r matrix U + iV (U symmetric,
     V skew): the upper triangle of U and the strict upper triangle of V."""
+    if isinstance(M, Mat) and not _coordinates(M._field):
+        return HermitianComponents(M)   # type: ignore[return-value]
     m = M.shape[0] // 2
     return ([M[i, j] for i in range(m) for j in range(i, m)]
             + [M[m + i, j] for i in range(m) for j in range(i + 1, m)])
@@ -144,6 +146,8 @@ class _FreeCoordinates(tuple):
 
 
 FREE_COORDINATES = _FreeCoordinates()
+#: the same for realified complex matrix variables (the free scene's Euler–Lagrange equations on W(n, r))
+FREE_COMPLEX_COORDINATES = _FreeCoordinates()
 
 
 def real_coordinates(s: Scene, names: Sequence[Hashable]) -> list[tuple[Hashable, Mat]]:
@@ -157,6 +161,8 @@ def real_coordinates(s: Scene, names: Sequence[Hashable]) -> list[tuple[Hashable
 
 def complex_coordinates(s: Scene, names: Sequence[Hashable]) -> list[tuple[Hashable, Mat]]:
     """The real coordinates of realified complex n×r variables: (name, E_ij) and (name, iE_ij)."""
+    if not isinstance(s, (Scene, TraceScene)) and hasattr(s, "euler_lagrange_complex"):
+        return FREE_COMPLEX_COORDINATES   # type: ignore[return-value]
     _coordinate_scene(s, "coordinates of matrix variables")
     units = _units(s)
     out = []
@@ -494,6 +500,8 @@ def euler_lagrange(s: Scene, T: Callable[[Scene, dict], Any], U: Callable[[Scene
     (J Y₁) μ = −D²g(q̇, q̇) − J Y₀ and q̈ = Y₀ + Y₁ μ (whole-matrix products)."""
     if coords is FREE_COORDINATES and hasattr(s, "euler_lagrange_double"):
         return s.euler_lagrange_double(T, U, constraints, position, velocity)   # the dimension-free scene
+    if coords is FREE_COMPLEX_COORDINATES and hasattr(s, "euler_lagrange_complex"):
+        return s.euler_lagrange_complex(T, U, constraints, position, velocity)  # the dimension-free scene
     _coordinate_scene(s, "the Euler-Lagrange equations in coordinates")
     names = list(position)
     if set(velocity) != set(names):
@@ -678,3 +686,6 @@ hamiltonian_flow = primitive(hamiltonian_flow, returns=2, like={"H": "point", "c
 stiefel_pairs_flow = primitive(stiefel_pairs_flow, like={"H": "point"})
 real_coordinates = primitive(real_coordinates)
 complex_coordinates = primitive(complex_coordinates)
+# the components of a Hermitian constraint: a list of entries at a fixed size, the matrix itself on the
+# dimension-free scene (whose Euler–Lagrange solver reads it as the constraint)
+hermitian_entries = primitive(hermitian_entries)

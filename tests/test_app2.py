@@ -22,7 +22,9 @@ FREE_PROVED = ("coupled-corrected-flow-invariants", "coupled-dual-lax-along-corr
                "coupled-big-lax-along-corrected-flow", "coupled-neumann-momentum", "coupled-dual-lax",
                "coupled-perturbed-dual-lax",
                "double-neumann-momentum", "double-neumann-flow",   # the double point (X, Y, Ẋ, Ẏ) as letters
-               "double-neumann-diagonal")                           # with (D0) as rules, Euler-Lagrange solved there
+               "double-neumann-diagonal",                           # with (D0) as rules, Euler-Lagrange solved there
+               "complex-neumann-flow",        # Z = U + iV, Ż = U̇ + iV̇ as letters with (W0) and its derivative
+               "complex-neumann-real-data")   # as rules, Euler-Lagrange solved there with a Hermitian multiplier
 def coupled_constraints(t, z):
     """XᵀX = I_r, XᵀP + PᵀX = 0, YᵀY = I_r, YᵀQ + QᵀY = 0 (the constraints stiefel_pairs_flow imposes)."""
     X, P, Y, Q = z["X"], z["P"], z["Y"], z["Q"]
@@ -32,7 +34,7 @@ def coupled_constraints(t, z):
 
 #: fail as printed; their registered corrections are proved for every n and r
 FREE_CORRECTED = ("coupled-neumann-flow", "coupled-big-lax-normal", "coupled-perturbed-big-lax",
-                  "double-neumann-dual-lax-extends-la3", "double-neumann-dual-lax")
+                  "double-neumann-dual-lax-extends-la3", "double-neumann-dual-lax", "complex-neumann-dual-lax")
 #: matrix expressions at a point of T*V, no flow: not proved for all n, r as printed, its correction is
 MATRIX_ONLY = ("double-neumann-dual-lax-extends-la3",)
 #: hold as printed
@@ -244,8 +246,9 @@ def test_corrupted_claim_fails(catalog, cid, func):
 
 
 #: one corrupted claim of each system, and those of the claims proved for all n, r
-FREE_CONTROLS = [(c, f) for c, f in CORRUPTIONS if c in ("coupled-neumann-flow", "complex-neumann-flow")
-                 + FREE_PROVED + MATRIX_ONLY] + CORRUPTIONS[:1]
+FREE_CONTROLS = [(c, f) for c, f in CORRUPTIONS if c in ("coupled-neumann-flow", "complex-neumann-flow",
+                                                        "complex-neumann-dual-lax") + FREE_PROVED + MATRIX_ONLY] \
+    + CORRUPTIONS[:1]
 
 
 @pytest.mark.parametrize("cid, func", FREE_CONTROLS, ids=[f"{c}-{f.__name__}" for c, f in FREE_CONTROLS])

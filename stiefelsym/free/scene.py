@@ -22,7 +22,7 @@ import symengine as se
 
 from ..fields import Dual, DualField, Field
 from ..matrix import CoordinateTracker, Mat, definite
-from ..scene import USER_SCALAR, Flow, PaperObjects, _number, map_entries
+from ..scene import USER_SCALAR, Flow, HermitianComponents, PaperObjects, _number, map_entries
 from .algebra import (LEADING, Letter, NCPoly, NeedsCoordinates, OperatorLetter, apply_operator, as_coef, coef_latex, derivation,
                       letter_pair, record_refusal, refuse, skew_letter, substitute, symmetric_letter, trace)
 from .mat import FreeBackend, FreeDualBackend, entry_of, one_block
@@ -61,6 +61,10 @@ CVd, CVdt = letter_pair("Vd", "Vdt", "n", "r", r"\dot V", r"\dot V^{T}")
 COMPLEX = {"Z": (CU, CV), "Zdot": (CUd, CVd)}
 #: the hypotheses of the complex point: Re and Im of Z̄ᵀZ − I_r and of its derivative
 COMPLEX_HYPOTHESES = ("UtU+VtV", "UtV-VtU", "UdtU+UtUd+VdtV+VtVd", "UdtV+UtVd-VdtU-VtUd")
+#: the multipliers of Z̄ᵀZ = I_r in the Euler–Lagrange equations on W(n, r): a Hermitian r×r matrix, its
+#: real (symmetric) part and its imaginary (skew) part
+W0_RE = symmetric_letter("SigmaW", "r", r"\Sigma")
+W0_IM = skew_letter("KappaW", "r", r"K")
 PI = symmetric_letter("Pi", "r", r"\Pi")
 LAMBDA = symmetric_letter("Lambda", "r", r"\Lambda")
 
@@ -740,6 +744,79 @@ class FreeScene(PaperObjects):
                for k in ("X", "Y")}
         return out, []
 
+    def euler_lagrange_complex(self, T: Callable, U: Callable, constraints: Callable, position: Mapping[str, Any],
+                               velocity: Mapping[str, Any]) -> tuple[dict[str, Mat], list]:
+        """The Euler–Lagrange equations of a Lagrangian T(Ż) − U(Z) of a realified complex n×r matrix
+        Z = U + iV with the holonomic constraints Z̄ᵀZ = I_r, solved in the free algebra at the generic point
+        of T W(n, r) (its letters and rules) and evaluated at the given point by substitution.  The
+        constraint is a Hermitian r×r matrix: its real part g₁ = UᵀU + VᵀV − I_r (symmetric) and its
+        imaginary part g₂ = UᵀV − VᵀU (skew), with a symmetric multiplier Σ and a skew K:
+        d/dt ∂T/∂q̇ = −∂U/∂q + ∂tr(Σg₁ + Kg₂)/∂q for q = U, V gives the accelerations (each c·q̈ + terms
+        free of q̈), and g̈₁ = 0, g̈₂ = 0 give Σ and K (each c·Σ, c·K + terms free of both).  Refused unless
+        the constraints are exactly the Hermitian components of Z̄ᵀZ − I_r, T has constant coefficients, and
+        the point satisfies (W0) and its derivative."""
+        if set(position) != {"Z"} or set(velocity) != {"Z"}:
+            raise refuse("Euler-Lagrange equations of variables other than one complex matrix Z", self.tracker)
+        self._complex(CU)
+        hyp = {name: hypothesis(name).poly for name in COMPLEX_HYPOTHESES}
+        g1, g2 = hyp["UtU+VtV"], hyp["UtV-VtU"]
+        # T, U and the constraints are evaluated at fresh letters (their own variables): a value of this
+        # scene they close over keeps the point's letters and is a constant of theirs
+        _FRESH[0] += 1
+        fresh = {L: letter_pair(f"{L}'{_FRESH[0]}", f"{L.adjoint}'{_FRESH[0]}", L.row, L.col, L.latex,
+                                L.adjoint.latex)[0] for L in (CU, CV, CUd, CVd)}
+        back = {fresh[L]: _w(L) for L in fresh}
+
+        def at(re: Letter, im: Letter) -> Mat:
+            return self.realify(self._const_mat(_w(fresh[re])), self._const_mat(_w(fresh[im])))
+        g = constraints(self, {"Z": at(CU, CV)})
+        g = g[0] if isinstance(g, (list, tuple)) and len(g) == 1 else g
+        blocks = g.matrix._view() if isinstance(g, HermitianComponents) and g.matrix._shape() == (2, 2) else None
+        own = {L: _w(F) for L, F in fresh.items()}
+        want = [[substitute(g1, own), -substitute(g2, own)], [substitute(g2, own), substitute(g1, own)]]
+        if blocks is None or any(not isinstance(blocks[i, j], NCPoly) or (blocks[i, j] - want[i][j]).expand().terms
+                                 for i in range(2) for j in range(2)):
+            raise refuse("Euler-Lagrange equations with constraints other than the Hermitian components of "
+                         "conj(Z)^T Z - I_r", self.tracker)
+        images = {}
+        for where, (re, im) in ((position["Z"], COMPLEX["Z"]), (velocity["Z"], COMPLEX["Zdot"])):
+            images[re], images[im] = self._complex_parts(where, "a point of W(n, r)")
+        for h in hyp.values():
+            if not self.reduce(substitute(h, images)).is_zero:
+                raise refuse("a point that the rules do not show to satisfy (W0) and its derivative", self.tracker)
+        acc = {}
+        for L in (CU, CV):
+            acc[L] = Letter(f"dd{L}", "n", "r")
+            acc[L].adjoint = Letter(f"dd{L}t", "r", "n")
+            acc[L].adjoint.adjoint = acc[L]
+        kinetic = self._trace_form(T(self, {"Z": at(CUd, CVd)}))
+        potential = self._trace_form(U(self, {"Z": at(CU, CV)}))
+        force = trace(_w(W0_RE) * g1) + trace(_w(W0_IM) * g2)
+        positions = {CU, CV, CUt, CVt} | {x for L in (CU, CV) for x in (fresh[L], fresh[L].adjoint)}
+        equations = []
+        for q, qd in ((CU, CUd), (CV, CVd)):
+            momentum = gradient(kinetic, fresh[qd])
+            if momentum.letters() & positions:
+                raise refuse("a kinetic energy whose coefficients depend on the position", self.tracker)
+            # d/dt ∂T/∂q̇ = ∂T/∂q̇ at q̇ ↦ q̈ (constant coefficients): T's own velocities only
+            momentum = substitute(momentum, {fresh[CUd]: _w(acc[CU]), fresh[CVd]: _w(acc[CV])})
+            equations.append(substitute(momentum, back) + substitute(gradient(potential, fresh[q]), back)
+                             - gradient(force, q))
+        nf = self.system.normal_form
+        solved = solve_multipliers([nf(e) for e in equations], list(acc.values()), self.system)
+        first = {CU: _w(CUd), CV: _w(CVd)}
+        second = {**first, CUd: _w(acc[CU]), CVd: _w(acc[CV])}
+        mult = {}
+        for h, unknown in ((g1, W0_RE), (g2, W0_IM)):
+            hddot = nf(substitute(derivation(derivation(h, first), second), solved))
+            sol = _isolate(hddot, unknown, [W0_RE, W0_IM])
+            if sol is None:
+                raise refuse("the multipliers of conj(Z)^T Z = I_r, not solvable in the free algebra", self.tracker)
+            mult[unknown] = nf(sol)
+        out = [self._const_mat(self.field.normalize(substitute(nf(substitute(solved[acc[L]], mult)), images)))
+               for L in (CU, CV)]
+        return {"Z": self.realify(*out)}, []
+
     def _trace_form(self, value: Any) -> NCPoly:
         value = entry_of(value) if isinstance(value, Mat) and value._shape() == (1, 1) else value
         if isinstance(value, NCPoly) and value.is_scalar:
@@ -1380,6 +1457,9 @@ class FunctionScene(FreeScene):
         raise refuse("a derivative at a point of a phase space inside a function handed to the scene", self.tracker)
 
     def euler_lagrange_double(self, T, U, constraints, position, velocity):
+        raise refuse("Euler-Lagrange equations inside a function handed to the scene", self.tracker)
+
+    def euler_lagrange_complex(self, T, U, constraints, position, velocity):
         raise refuse("Euler-Lagrange equations inside a function handed to the scene", self.tracker)
 
 

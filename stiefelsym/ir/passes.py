@@ -349,8 +349,6 @@ def coordinate_needs(g: Graph) -> list[str]:
             out["the eigenvalues a_i of A"] = None
         elif op == "call" and a[1] in ("jacobian", "constraint_bracket_matrix"):
             out["a Jacobian in the coordinates of X, P"] = None
-        elif op == "call" and a[1] in ("Zc", "realify"):
-            out["complex matrices realified in coordinates"] = None
         elif op == "prim":
             name = a[0].qualname.rsplit(".", 1)[-1]
             if name in _STEP_NEEDS:
