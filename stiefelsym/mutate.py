@@ -33,6 +33,12 @@ pass says nothing about a mutant, and is not counted.  Then:
 * a mutant that is only killed by ``inconclusive``/``undecided`` verdicts and passes
   elsewhere is **unresolved**.
 
+With ``on="graphs"`` (``stiefelsym mutate --on graphs``) the mutants are made on each claim's
+graph instead (:mod:`stiefelsym.ir.mutants`, :func:`graph_mutants`): the same kinds of change,
+one node at a time, each mutant a graph the tracer typed (:class:`stiefelsym.ir.replay.GraphClaim`),
+described in the paper's notation; no Python of the claim runs again.  It covers the claims that
+trace with symbolic sizes (one graph for every size); the others are reported as not covered.
+
 The same machinery searches corrections of a printed formula that fails:
 :func:`search_corrections` returns the candidates that pass every method at every size.
 Its search space (:func:`correction_candidates`, :data:`SEARCH_EXTRAS`) is the same for
