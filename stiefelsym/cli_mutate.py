@@ -170,6 +170,7 @@ def mutate(ids: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str, ...
     Exit status: 0 no survivor, 1 some survivor, 2 bad input, 130 interrupted.
     """
     from . import mutate as engine
+    from .ir import mutants as on_graphs
     from .report import render_mutation_markdown, render_mutation_summary
 
     for m in methods:
@@ -225,9 +226,9 @@ def mutate(ids: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str, ...
         "limit": limit, "claims_file": claims_file,
         **({"on": on} if on != "source" else {}),
         "operators": ([{"name": name, "description": text} for name, text, _ in engine.OPERATORS] if on == "source"
-                      else [{"name": name, "description": text} for name, text in engine.GRAPH_OPERATORS]),
+                      else [{"name": name, "description": text} for name, text in on_graphs.OPERATORS]),
         "letter_swaps": {k: list(v) for k, v in (engine.LETTER_SWAPS if on == "source"
-                                                 else engine.GRAPH_LETTER_SWAPS).items()},
+                                                 else on_graphs.LETTER_SWAPS).items()},
         "date": started.strftime("%Y-%m-%d %H:%M:%S UTC"),
         "seconds": round(time.perf_counter() - t0, 2),
         "platform": platform.platform(terse=True), "commit": _git_commit(),

@@ -64,7 +64,6 @@ from pathlib import Path
 from typing import Any, Callable, Iterable, Iterator, Sequence
 
 from .claims import Claim, Size
-from .ir.mutants import LETTER_SWAPS as GRAPH_LETTER_SWAPS, OPERATORS as GRAPH_OPERATORS
 from .results import PASSING, Result
 
 SCHEMA_VERSION = 1

@@ -92,7 +92,7 @@ def test_no_mutant_computes_what_the_claim_computes():
     """A change of a node that no check reads (here: an unused product) leaves the checks as they are:
     no mutant is made of it; two changes that give the same checks make one mutant."""
     def claim(s):
-        unused = s.X.T @ s.P
+        _ = s.X.T @ s.P          # computed, read by no check
         return {"c": s.X + s.X}
     g = trace(claim, None, None, CONS)
     census = MutantCensus()
@@ -149,9 +149,10 @@ def _crafted(ops, args, output) -> Graph:
     return g
 
 
-def _verdicts(func, n_r=Size(3, 2)) -> set[tuple[str, str]]:
-    """(method, verdict) of every method on the claim whose function is ``func``."""
+def _verdicts(func) -> set[tuple[str, str]]:
+    """(method, verdict) of every method on the claim whose function is ``func`` (at (3,2), and free)."""
     c = toy_claim(func, "crafted")
+    n_r = Size(3, 2)
     out = {(m, run_one(c, n_r, m, 0).verdict) for m in ("exact", "rational", "modular", "float")}
     out.add(("free", run_one(c, None, "free", 0).verdict))
     return out

@@ -142,7 +142,7 @@ def sites(g: Graph) -> Iterator[Site]:
 
 
 def _call_sites(i: int, a: tuple, v: Callable) -> Iterator[Site]:
-    scene, name, cargs = a[0], a[1], a[2]
+    name, cargs = a[1], a[2]
 
     def call(rp, a, f, new_args):
         return getattr(v(rp, a[0], f), a[1])(*new_args)
