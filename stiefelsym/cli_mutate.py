@@ -92,8 +92,10 @@ def _git_commit() -> str | None:
 
 def _command(ids: Sequence[str], sizes: Sequence[str], methods: Sequence[str], seed: int,
              claims_file: str | None, report_dir: Path | None, limit: int | None,
-             only: Sequence[int], fresh: bool = False) -> str:
+             only: Sequence[int], fresh: bool = False, on: str = "source") -> str:
     parts = ["stiefelsym", "mutate", *ids]
+    if on != "source":
+        parts += ["--on", on]
     if fresh:
         parts.append("--fresh-points")
     for s in sizes:
@@ -136,6 +138,10 @@ def _command(ids: Sequence[str], sizes: Sequence[str], methods: Sequence[str], s
               help="Every mutant at points of its own, as a verify run of it would be.  By default the point "
                    "methods evaluate a mutant at the points of the claim as printed and recompute only what the "
                    "change reaches (several times faster; the classification is the same).")
+@click.option("--on", "on", type=click.Choice(["source", "graphs"]), default="source", show_default=True,
+              help="What is mutated: each claim's Python source (every mutant traced again), or each claim's "
+                   "graph (no Python of the claim runs again; claims traced per size are reported as not "
+                   "covered).")
 @click.option("--corrections", is_flag=True,
               help="Errata search instead of the mutation analysis: for each named CLAIM, the candidates of the "
                    "declared search space (every operator, in the claim and its helper functions, two signs at "
@@ -143,7 +149,7 @@ def _command(ids: Sequence[str], sizes: Sequence[str], methods: Sequence[str], s
                    "(default methods: rational, modular; default sizes: the claim's sizes with n <= 4).")
 def mutate(ids: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str, ...], seed: int,
            claims_file: str | None, report_dir: Path | None, fmt: str, limit: int | None,
-           only: tuple[int, ...], jobs: int, fresh_points: bool, corrections: bool) -> None:
+           only: tuple[int, ...], jobs: int, fresh_points: bool, on: str, corrections: bool) -> None:
     """Corrupt every claim in small ways and check that every method notices.
 
     Each mutant (one sign flipped, operands of @ or comm swapped, a factor
@@ -164,6 +170,7 @@ def mutate(ids: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str, ...
     Exit status: 0 no survivor, 1 some survivor, 2 bad input, 130 interrupted.
     """
     from . import mutate as engine
+    from .ir import mutants as on_graphs
     from .report import render_mutation_markdown, render_mutation_summary
 
     for m in methods:
@@ -206,7 +213,7 @@ def mutate(ids: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str, ...
     try:
         report = engine.run_mutation(claims, sizes=parsed_sizes or None, methods=methods, seed=seed,
                                      on_result=on_result, limit=limit, only=only or None,
-                                     jobs=jobs or os.cpu_count() or 1, lend=not fresh_points)
+                                     jobs=jobs or os.cpu_count() or 1, lend=not fresh_points, on=on)
     except KeyboardInterrupt:
         click.echo("stiefelsym mutate: interrupted; no report written", err=True)
         raise click.exceptions.Exit(EXIT_INTERRUPTED) from None
@@ -214,11 +221,14 @@ def mutate(ids: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str, ...
         raise MutateInputError(str(exc)) from None
     report.meta = {
         "command": _command(ids, sizes, methods if tuple(methods) != engine.METHODS else (), seed,
-                            claims_file, report_dir, limit, only, fresh_points),
+                            claims_file, report_dir, limit, only, fresh_points, on),
         "seed": seed, "methods": list(methods), "sizes": [f"{s.n},{s.r}" for s in parsed_sizes] or None,
         "limit": limit, "claims_file": claims_file,
-        "operators": [{"name": name, "description": text} for name, text, _ in engine.OPERATORS],
-        "letter_swaps": {k: list(v) for k, v in engine.LETTER_SWAPS.items()},
+        **({"on": on} if on != "source" else {}),
+        "operators": ([{"name": name, "description": text} for name, text, _ in engine.OPERATORS] if on == "source"
+                      else [{"name": name, "description": text} for name, text in on_graphs.OPERATORS]),
+        "letter_swaps": {k: list(v) for k, v in (engine.LETTER_SWAPS if on == "source"
+                                                 else on_graphs.LETTER_SWAPS).items()},
         "date": started.strftime("%Y-%m-%d %H:%M:%S UTC"),
         "seconds": round(time.perf_counter() - t0, 2),
         "platform": platform.platform(terse=True), "commit": _git_commit(),

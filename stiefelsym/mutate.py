@@ -33,6 +33,12 @@ pass says nothing about a mutant, and is not counted.  Then:
 * a mutant that is only killed by ``inconclusive``/``undecided`` verdicts and passes
   elsewhere is **unresolved**.
 
+With ``on="graphs"`` (``stiefelsym mutate --on graphs``) the mutants are made on each claim's
+graph instead (:mod:`stiefelsym.ir.mutants`, :func:`graph_mutants`): the same kinds of change,
+one node at a time, each mutant a graph the tracer typed (:class:`stiefelsym.ir.replay.GraphClaim`),
+described in the paper's notation; no Python of the claim runs again.  It covers the claims that
+trace with symbolic sizes (one graph for every size); the others are reported as not covered.
+
 The same machinery searches corrections of a printed formula that fails:
 :func:`search_corrections` returns the candidates that pass every method at every size.
 Its search space (:func:`correction_candidates`, :data:`SEARCH_EXTRAS`) is the same for
@@ -603,6 +609,35 @@ def mutants(claim: Claim | Callable, helpers: bool = False) -> list[Mutant]:
     return out
 
 
+# --------------------------------------------------------------------------- mutants of a graph
+
+#: what a mutation analysis mutates: the claims' Python source, or their graphs
+MUTATION_MODES = ("source", "graphs")
+
+
+def graph_mutants(claim: Claim) -> tuple[list[Mutant], str]:
+    """The mutants of the claim's graph with symbolic sizes (:func:`stiefelsym.ir.mutants.graph_mutants`),
+    each a :class:`Mutant` whose function is its graph (:class:`stiefelsym.ir.replay.GraphClaim`), with
+    its change in the paper's notation; and "" , or why the claim is not covered (it traces per size)."""
+    from .ir import compile_claim
+    from .ir.mutants import graph_mutants as on_graph
+    from .scene import REALIZATIONS
+    cons = REALIZATIONS[claim.realization]
+    try:
+        g = compile_claim(claim.func, None, None, (cons.name, cons.build))
+    except Exception as exc:    # noqa: BLE001 - the claim traces per size (or not at all)
+        why = " ".join(str(exc).removeprefix("refused: ").split())
+        return [], ("not covered on graphs: the claim has no graph with symbolic sizes (one graph per size; "
+                    f"its trace with symbolic sizes stopped at: {why[:200]}), and graphs traced per size are "
+                    "not mutated yet")
+    out = []
+    for gm in on_graph(g, (cons.name, cons.build)):
+        out.append(Mutant(description=gm.description(), lineno=0, func=gm.func, operator=gm.operator,
+                          index=gm.index, source=f"%{gm.node}",
+                          notation=tuple(c.to_json() for c in gm.changes)))
+    return out, ""
+
+
 # --------------------------------------------------------------------------- helpers of a claim
 
 def _referenced_names(fn: Callable) -> list[str]:
@@ -812,7 +847,9 @@ def notation_text(changes: Sequence[dict[str, str]]) -> str:
 def described(changes: Sequence[dict[str, str]], description: str) -> str:
     """The paper's notation first, the source edit after it in parentheses."""
     text = notation_text(changes)
-    return f"{text} (source: {description})" if text else description
+    if not text or description.startswith(text):   # a graph mutant's description is its notation
+        return description
+    return f"{text} (source: {description})"
 
 
 # --------------------------------------------------------------------------- sizes and plan
@@ -1125,7 +1162,7 @@ def run_mutation(claims: Sequence[Claim], sizes: Sequence[Size] | None = None,
                  methods: Sequence[str] = METHODS, seed: int = 0,
                  on_result: Callable[[MutantOutcome], None] | None = None, *,
                  limit: int | None = None, only: Iterable[int] | None = None,
-                 jobs: int = 1, lend: bool = True) -> MutationReport:
+                 jobs: int = 1, lend: bool = True, on: str = "source") -> MutationReport:
     """Run every mutant of every claim with every method; classify each mutant.
 
     ``sizes``: the fixed sizes (default: :func:`mutation_sizes` of each claim; given sizes
@@ -1135,14 +1172,19 @@ def run_mutation(claims: Sequence[Claim], sizes: Sequence[Size] | None = None,
     ``jobs`` > 1 runs mutants in that many forked worker processes.  ``lend``: the point methods
     evaluate each mutant at the points of the claim as printed, recomputing only the nodes of its
     graph that the change reaches (:class:`stiefelsym.methods.PointLoan`); False: every mutant on
-    points of its own, as a verify run of it would be (slower)."""
+    points of its own, as a verify run of it would be (slower).  ``on``: "source" mutates each claim's
+    Python source and traces every mutant (:func:`mutants`); "graphs" mutates the claim's graph
+    (:func:`graph_mutants`; no Python of the claim runs again), for the claims that trace with
+    symbolic sizes (the others are reported as not covered)."""
     from .methods import PointLoan, lending_points
+    if on not in MUTATION_MODES:
+        raise ValueError(f"unknown mutation mode {on!r} (one of {', '.join(MUTATION_MODES)})")
     loan = PointLoan(exact_seconds=MUTANT_EXACT_SECONDS)
     with lending_points(loan) if lend else contextlib.nullcontext():
-        return _run_mutation(claims, sizes, methods, seed, on_result, limit, only, jobs, loan)
+        return _run_mutation(claims, sizes, methods, seed, on_result, limit, only, jobs, loan, on)
 
 
-def _run_mutation(claims, sizes, methods, seed, on_result, limit, only, jobs, loan) -> MutationReport:
+def _run_mutation(claims, sizes, methods, seed, on_result, limit, only, jobs, loan, on="source") -> MutationReport:
     methods = list(dict.fromkeys(methods))
     for m in methods:
         if m not in METHODS:
@@ -1166,7 +1208,7 @@ def _run_mutation(claims, sizes, methods, seed, on_result, limit, only, jobs, lo
     # workers finish together; the results are taken in the catalog's order whatever the schedule
     order = sorted(range(len(work)), key=lambda ci: -_weight(*work[ci]))
     _WORK.clear()
-    _WORK.update(claims=work, seed=seed, limit=limit, only=only, loan=loan)
+    _WORK.update(claims=work, seed=seed, limit=limit, only=only, loan=loan, on=on)
     done: dict[int, _ClaimRun] = {}
     emitted = 0
     try:
@@ -1216,10 +1258,21 @@ def _claim_task(ci: int) -> _ClaimRun:
     then every selected mutant, classified against it."""
     claim, plan = _WORK["claims"][ci]
     seed, loan = _WORK["seed"], _WORK["loan"]
-    muts = mutants(claim)
+    on_graphs = _WORK.get("on") == "graphs"
+    uncovered = ""
+    if claim.expect == "fails":
+        muts = []
+    elif on_graphs:
+        muts, uncovered = graph_mutants(claim)
+    else:
+        muts = mutants(claim)
     if claim.expect == "fails":
         skipped = ("the printed statement fails at every size (a documented erratum): a mutation "
                    "analysis needs a true statement")
+    elif uncovered:
+        skipped = uncovered
+    elif not muts and on_graphs:
+        skipped = "the claim's graph offers no well-typed mutant"
     elif not muts:
         skipped = "the claim's source is not available, or offers no mutation site"
     elif not plan:
@@ -1239,9 +1292,9 @@ def _claim_task(ci: int) -> _ClaimRun:
     where = notation_size(s for s, _ in plan)
     try:
         for m in _select(muts, _WORK["limit"], _WORK["only"]):
-            o = MutantOutcome(claim.id, m.index, m.description, m.lineno, m.operator, m.source,
-                              _run_cells(claim, plan, seed, m.func, m.description),
-                              notation=notation(claim, m, where))
+            o = MutantOutcome(claim.id, m.index, m.description, m.lineno if not on_graphs else None, m.operator,
+                              m.source, _run_cells(claim, plan, seed, m.func, m.description),
+                              notation=list(m.notation) if on_graphs else notation(claim, m, where))
             run.mutants.append(classify(o, run.baseline))
     finally:
         loan.forget(claim.id)      # its points serve no other claim

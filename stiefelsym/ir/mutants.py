@@ -1,0 +1,253 @@
+"""Mutants of a graph: one small change of a claim's computation, made on its graph, not on its source.
+
+The changes (:data:`OPERATORS`), each at one node of the graph (so at every use of that
+node: a node is a subexpression, shared where the claim computed it once):
+
+* ``sign``: a + b ↔ a − b; the first term of a sum negated (−a + b); a unary minus removed;
+* ``swap``: the operands of a product a @ b, or of a Poisson bracket, swapped;
+* ``transpose``: one factor of a product transposed, or a transpose removed;
+* ``drop``: a term of a sum or difference dropped (a ± b → a, → ±b);
+* ``letter``: a leaf of the scene replaced by another of the same kind (the pairs of
+  :data:`LETTER_SWAPS`: X ↔ P, Y ↔ Q, Φ ↔ Ψ, λ ↔ κ, A ↔ A⁻¹, ...);
+* ``invert``: a resolvent (μI − A)⁻¹ replaced by μI − A, an explicit inverse M⁻¹ by M;
+* ``normalize``: a resolvent R(μ) = (μI − A)⁻¹ replaced by (A − μI)⁻¹ = −R(μ), (−μI − A)⁻¹ = R(−μ),
+  (A + μI)⁻¹ = −R(−μ) or (I − A/μ)⁻¹ = μR(μ);
+* ``coefficient``: an exact constant k (int or Fraction) of the algebra, of s.q, s.const,
+  s.scalar_matrix, a power, an expected rank or count, changed to k + 1 (s.q(a, b): a + 1 or b + 1).
+
+A mutant is made by replaying the graph with the one node changed
+(:class:`.replay.GraphClaim`): the tracer builds the mutant's graph, so an ill-typed change
+(a sum or product whose spaces do not match, Φ in place of Ψ where n ≠ r) is refused there and
+left out, and so is a change that computes the same outputs as the claim (the digest of the
+output's subgraph, :func:`.evaluate.node_keys`, equal to the claim's) or as an earlier mutant.
+Nothing here runs claim code or evaluates a value.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from fractions import Fraction
+from typing import Any, Callable, Iterator
+
+from .evaluate import node_keys
+from .graph import Graph, Ref
+from .replay import GraphClaim
+
+#: scene leaves and the leaves of the same kind that replace them (the source mutation's pairs)
+LETTER_SWAPS: dict[str, tuple[str, ...]] = {
+    "X": ("P",), "P": ("X",), "Y": ("Q",), "Q": ("Y",),
+    "xi": ("zeta",), "zeta": ("xi",), "eta": ("theta",), "theta": ("eta",),
+    "Phi": ("Psi",), "Psi": ("Phi",), "A": ("Ainv",), "Ainv": ("A",), "In": ("Ir",), "Ir": ("In",),
+    "lam": ("kappa",), "kappa": ("lam",), "Xdot": ("Pdot",), "Pdot": ("Xdot",),
+    "Lambda": ("Pi",), "Pi": ("Lambda",),
+}
+#: scene methods whose two arguments are swapped (antisymmetric brackets)
+SWAPPED_CALLS = ("bracket", "canonical_bracket")
+
+#: the declared space of changes: (name, what it does)
+OPERATORS: tuple[tuple[str, str], ...] = (
+    ("sign", "a + b <-> a - b; -a + b for a + b; a unary minus removed"),
+    ("swap", "the operands of a product @ or of a Poisson bracket swapped"),
+    ("transpose", "one factor of a product transposed (where the spaces allow), or a transpose removed"),
+    ("drop", "a term of a sum or difference dropped (a ± b -> a, -> ±b)"),
+    ("letter", "a leaf of the scene replaced by another of the same kind (LETTER_SWAPS)"),
+    ("invert", "a resolvent (μI − A)⁻¹ replaced by μI − A; an inverse M⁻¹ by M"),
+    ("normalize", "a resolvent (μI − A)⁻¹ replaced by (A − μI)⁻¹, (−μI − A)⁻¹, (A + μI)⁻¹ or (I − A/μ)⁻¹"),
+    ("coefficient", "an exact constant k of the algebra, of s.q, s.const, s.scalar_matrix, a power, an expected "
+                    "rank or count changed to k + 1"),
+)
+
+Edit = Callable[[Any, tuple, Any], Any]
+
+
+@dataclass(frozen=True)
+class Site:
+    """One change at one node: the operator, what it does (in words) and the edit of the node's value
+    (a function of the replay, the node's arguments and the replay's frame)."""
+
+    node: int
+    operator: str
+    text: str
+    edit: Edit = field(repr=False, compare=False)
+
+
+def _is_const(x: Any) -> bool:
+    return type(x) in (int, Fraction)
+
+
+def _bump(a: tuple, k: int) -> tuple:
+    return a[:k] + (a[k] + 1,) + a[k + 1:]
+
+
+def sites(g: Graph) -> Iterator[Site]:
+    """Every change of :data:`OPERATORS` the graph offers, node by node (a fixed order: mutants are
+    numbered by it).  Changes that do not type are only found out when the mutant is built."""
+    ops, args = g.ops, g.args
+
+    def v(rp, x, f):
+        return rp.arg(x, f)
+    for i, (op, a) in enumerate(zip(ops, args)):
+        if op in ("add", "sub"):
+            x, y = a
+            flip = "−" if op == "add" else "+"
+            yield Site(i, "sign", f"the sign of the second term flipped ({flip})",
+                       (lambda rp, a, f: v(rp, a[0], f) - v(rp, a[1], f)) if op == "add" else
+                       (lambda rp, a, f: v(rp, a[0], f) + v(rp, a[1], f)))
+            if type(x) is Ref and ops[x.i] != "neg":
+                yield Site(i, "sign", "the first term negated",
+                           (lambda rp, a, f: -v(rp, a[0], f) + v(rp, a[1], f)) if op == "add" else
+                           (lambda rp, a, f: -v(rp, a[0], f) - v(rp, a[1], f)))
+            yield Site(i, "drop", "the second term dropped", lambda rp, a, f: v(rp, a[0], f))
+            yield Site(i, "drop", "the first term dropped",
+                       (lambda rp, a, f: v(rp, a[1], f)) if op == "add" else (lambda rp, a, f: -v(rp, a[1], f)))
+            for k in (0, 1):
+                if _is_const(a[k]):
+                    yield Site(i, "coefficient", f"the constant {a[k]} changed to {a[k] + 1}",
+                               lambda rp, a, f, k=k: getattr(rp, "_" + ops[i])(_bump(a, k), f))
+        elif op == "neg":
+            yield Site(i, "sign", "a unary minus removed", lambda rp, a, f: v(rp, a[0], f))
+        elif op == "matmul":
+            x, y = a
+            if x != y:
+                yield Site(i, "swap", "the operands of a product swapped", lambda rp, a, f: v(rp, a[1], f) @ v(rp, a[0], f))
+            if not (type(x) is Ref and ops[x.i] == "T"):
+                yield Site(i, "transpose", "the left factor transposed", lambda rp, a, f: v(rp, a[0], f).T @ v(rp, a[1], f))
+            if not (type(y) is Ref and ops[y.i] == "T"):
+                yield Site(i, "transpose", "the right factor transposed", lambda rp, a, f: v(rp, a[0], f) @ v(rp, a[1], f).T)
+        elif op == "T":
+            yield Site(i, "transpose", "a transpose removed", lambda rp, a, f: v(rp, a[0], f))
+        elif op == "inv":
+            yield Site(i, "invert", "an inverse removed", lambda rp, a, f: v(rp, a[0], f))
+        elif op in ("mul", "div"):
+            for k in (0, 1):
+                if _is_const(a[k]):
+                    yield Site(i, "coefficient", f"the constant {a[k]} changed to {a[k] + 1}",
+                               lambda rp, a, f, k=k: getattr(rp, "_" + ops[i])(_bump(a, k), f))
+        elif op == "pow" and type(a[1]) is int:
+            yield Site(i, "coefficient", f"the exponent {a[1]} changed to {a[1] + 1}",
+                       lambda rp, a, f: v(rp, a[0], f) ** (a[1] + 1))
+        elif op == "attr" and a[1] in LETTER_SWAPS:
+            for alt in LETTER_SWAPS[a[1]]:
+                yield Site(i, "letter", f"{a[1]} replaced by {alt}", lambda rp, a, f, alt=alt: getattr(v(rp, a[0], f), alt))
+        elif op == "item" and type(a[1]) is str and a[1] in LETTER_SWAPS:
+            for alt in LETTER_SWAPS[a[1]]:
+                yield Site(i, "letter", f"[{a[1]!r}] replaced by [{alt!r}]", lambda rp, a, f, alt=alt: v(rp, a[0], f)[alt])
+        elif op == "call":
+            yield from _call_sites(i, a, v)
+        elif op == "rank" and type(a[1]) is int:
+            yield Site(i, "coefficient", f"the expected rank {a[1]} changed to {a[1] + 1}",
+                       lambda rp, a, f: rp._rank(_bump(a, 1), f))
+        elif op == "count" and type(a[1]) is int:
+            yield Site(i, "coefficient", f"the expected count {a[1]} changed to {a[1] + 1}",
+                       lambda rp, a, f: rp._count(_bump(a, 1), f))
+
+
+def _call_sites(i: int, a: tuple, v: Callable) -> Iterator[Site]:
+    name, cargs = a[1], a[2]
+
+    def call(rp, a, f, new_args):
+        return getattr(v(rp, a[0], f), a[1])(*new_args)
+    if name == "resolvent" and len(cargs) == 1:
+        def R(rp, a, f, mu=None):
+            mu = v(rp, a[2][0], f) if mu is None else mu
+            return v(rp, a[0], f).resolvent(mu)
+        yield Site(i, "invert", "the resolvent (μI − A)⁻¹ replaced by μI − A", lambda rp, a, f: R(rp, a, f).inv())
+        yield Site(i, "normalize", "(A − μI)⁻¹ in place of (μI − A)⁻¹", lambda rp, a, f: -R(rp, a, f))
+        yield Site(i, "normalize", "(−μI − A)⁻¹ in place of (μI − A)⁻¹",
+                   lambda rp, a, f: R(rp, a, f, -v(rp, a[2][0], f)))
+        yield Site(i, "normalize", "(A + μI)⁻¹ in place of (μI − A)⁻¹",
+                   lambda rp, a, f: -R(rp, a, f, -v(rp, a[2][0], f)))
+        yield Site(i, "normalize", "(I − A/μ)⁻¹ in place of (μI − A)⁻¹",
+                   lambda rp, a, f: v(rp, a[2][0], f) * R(rp, a, f))
+    elif name in SWAPPED_CALLS and len(cargs) == 2 and cargs[0] != cargs[1]:
+        yield Site(i, "swap", f"the arguments of {name} swapped",
+                   lambda rp, a, f: call(rp, a, f, [v(rp, a[2][1], f), v(rp, a[2][0], f)]))
+    elif name == "q" and len(cargs) == 2 and all(type(x) is int for x in cargs):
+        yield Site(i, "coefficient", f"q({cargs[0]}, {cargs[1]}) changed to q({cargs[0] + 1}, {cargs[1]})",
+                   lambda rp, a, f: call(rp, a, f, [a[2][0] + 1, a[2][1]]))
+        yield Site(i, "coefficient", f"q({cargs[0]}, {cargs[1]}) changed to q({cargs[0]}, {cargs[1] + 1})",
+                   lambda rp, a, f: call(rp, a, f, [a[2][0], a[2][1] + 1]))
+    elif name == "const" and len(cargs) == 1 and _is_const(cargs[0]):
+        yield Site(i, "coefficient", f"the constant {cargs[0]} changed to {cargs[0] + 1}",
+                   lambda rp, a, f: call(rp, a, f, [a[2][0] + 1]))
+    elif name == "scalar_matrix" and len(cargs) == 3 and _is_const(cargs[0]):
+        yield Site(i, "coefficient", f"the constant {cargs[0]} of a scalar matrix changed to {cargs[0] + 1}",
+                   lambda rp, a, f: call(rp, a, f, [a[2][0] + 1] + [v(rp, x, f) for x in a[2][1:]]))
+
+
+@dataclass
+class GraphMutant:
+    """One mutant of a graph: the change (operator, node, words), the mutant's graph, the digest of its
+    output's subgraph and the change in the paper's notation (:func:`.notation.diff`)."""
+
+    index: int
+    node: int
+    operator: str
+    text: str
+    graph: Graph
+    key: str
+    changes: list = field(default_factory=list)
+
+    @property
+    def func(self) -> GraphClaim:
+        """The mutant as a claim function (its graph, replayed by the tracer)."""
+        return GraphClaim(self.graph, name=f"mutant {self.index} (node %{self.node})")
+
+    def description(self) -> str:
+        from .notation import describe
+        return f"{describe(self.changes)} (graph: node %{self.node}, {self.operator}: {self.text})"
+
+
+@dataclass
+class MutantCensus:
+    """What became of the sites of one graph."""
+
+    sites: int = 0
+    ill_typed: int = 0
+    same_as_claim: int = 0
+    duplicates: int = 0
+    refusals: dict = field(default_factory=dict)
+
+
+def output_key(g: Graph) -> str:
+    """The digest of the subgraph of a graph's output: equal for two graphs that compute the same
+    outputs the same way, whatever their node numbers and their nodes that no output reads."""
+    return node_keys(g)[g.output.i].hex()
+
+
+def graph_mutants(g: Graph, constraints: tuple, census: MutantCensus | None = None,
+                  notation: bool = True) -> list[GraphMutant]:
+    """Every well-typed mutant of ``g`` (a graph traced with symbolic sizes; ``constraints``: the
+    realization it was traced with), in the order of :func:`sites`, without one that computes what the
+    claim or an earlier mutant computes."""
+    from . import _clean
+    from .notation import diff
+    from .trace import trace
+    census = census if census is not None else MutantCensus()
+    base = output_key(g)
+    seen = {base}
+    out: list[GraphMutant] = []
+    for site in sites(g):
+        census.sites += 1
+        try:
+            m = _clean(trace, GraphClaim(g, {site.node: site.edit}), g.sizes and g.sizes[0],
+                       g.sizes and g.sizes[1], constraints)
+            if m.refusals:
+                raise TypeError(m.refusals[0])
+        except Exception as exc:   # noqa: BLE001 - the tracer refused the change: ill-typed
+            census.ill_typed += 1
+            why = str(exc).removeprefix("refused: ").split(" (")[0][:80]
+            census.refusals[why] = census.refusals.get(why, 0) + 1
+            continue
+        key = output_key(m)
+        if key == base:
+            census.same_as_claim += 1
+            continue
+        if key in seen:
+            census.duplicates += 1
+            continue
+        seen.add(key)
+        gm = GraphMutant(len(out), site.node, site.operator, site.text, m, key)
+        if notation:
+            gm.changes = diff(g, m)
+        out.append(gm)
+    return out
