@@ -794,7 +794,7 @@ class Float64Backend(Backend):
         elif a.diag is not None or b.diag is not None:
             out = self._with_diagonal(a, b, 1.0)
         else:
-            out = None
+            out = self._transposed_sum(a, b, "+")
         if out is not None:
             memo[("+", id(b))] = (b, out)
             return out
@@ -817,7 +817,7 @@ class Float64Backend(Backend):
         elif a.diag is not None or b.diag is not None:
             out = self._with_diagonal(a, b, -1.0)
         else:
-            out = None
+            out = self._transposed_sum(a, b, "-")
         if out is not None:
             memo[("-", id(b))] = (b, out)
             return out
@@ -827,6 +827,19 @@ class Float64Backend(Backend):
             out = _with_scales(v, _up(a.e + b.e + U64 * nv + _uf(v.shape), 3), _scales_sum(a, b), nv)
         memo[("-", id(b))] = (b, out)
         return out
+
+    def _transposed_sum(self, a, b, op: str) -> F64 | None:
+        """a ± b as the transpose of aᵀ ± bᵀ (or of bᵀ + aᵀ) when that was computed (the derivative
+        of X Pᵀ along a flow is that of P Xᵀ transposed): entry for entry the same rounding, and the
+        same bound and scales, which depend only on the operands' bounds and scales and on the norm
+        of the result, all kept by a transpose; None when it was not."""
+        at, bt = a.t, b.t
+        if at is None or bt is None:
+            return None
+        hit = at.prods.get((op, id(bt))) if at.prods is not None else None
+        if hit is None and op == "+" and bt.prods is not None:
+            hit = bt.prods.get(("+", id(at)))         # floating-point addition commutes
+        return None if hit is None else self.T(hit[1])
 
     def neg(self, a):
         return _like(-a.v, a.e, a, a.nv)
