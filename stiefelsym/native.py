@@ -1014,9 +1014,8 @@ class Float64Backend(Backend):
         if hit is not None:
             return hit[1]
         if _exact_zero(a) and math.isfinite(cv) and math.isfinite(ce) and math.isfinite(cm):
-            out = self.zeros(*a.v.shape)      # 0 times a finite scalar: 0 exactly
-            memo[key] = (None, out)
-            return out
+            memo[key] = (None, a)             # 0 times a finite scalar: the same 0 exactly (values,
+            return a                          # scales and bound all 0), no new arrays
         if a.diag is not None and math.isfinite(cv) and math.isfinite(ce) and math.isfinite(cm):
             # a diagonal times a finite scalar: the zeros stay zeros (exactly), the diagonal is
             # scaled with the bound the full matrix would get (its norm is the diagonal's)
