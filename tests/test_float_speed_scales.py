@@ -297,6 +297,42 @@ def test_the_block_solve_is_used_and_its_errors_are_bounded_by_the_residual(monk
     assert _max_miss(X, Xq) <= 0 and X._n.e > 1e3 * e_good
 
 
+def test_a_sum_met_again_transposed_is_the_transpose_of_the_stored_one():
+    """aᵀ + bᵀ, bᵀ + aᵀ and aᵀ − bᵀ after a + b and a − b: the transposes of the stored results,
+    with the values, bound, norm and scales the same sum computed afresh has."""
+    def operands(seed):
+        rng = np.random.default_rng(seed)
+        be = native.backend(FloatField())
+        a, b = (be.matmul(be.from_array(rng.standard_normal((6, 3))), be.from_array(rng.standard_normal((3, 6))))
+                for _ in range(2))
+        return be, a, b
+
+    for name, swap in (("add", False), ("add", True), ("sub", False)):
+        be, a, b = operands(7)
+        stored = getattr(be, name)(a, b)
+        again = (be.T(b), be.T(a)) if swap else (be.T(a), be.T(b))
+        hit = getattr(be, name)(*again)
+        assert hit is be.T(stored)
+        be2, a2, b2 = operands(7)
+        fresh = getattr(be2, name)(*((be2.T(b2), be2.T(a2)) if swap else (be2.T(a2), be2.T(b2))))
+        assert np.array_equal(hit.v, fresh.v) and hit.e == fresh.e and hit.nv == fresh.nv
+        assert np.array_equal(hit.m, fresh.m)
+
+
+def test_the_block_inverse_inverts_matrices_with_a_positive_definite_symmetric_part():
+    """I + S (S skew) at sizes that split into leaves of every shape, and a Schur complement of
+    such a matrix: the block inverse is an inverse to rounding; a singular leading block raises."""
+    rng = np.random.default_rng(5)
+    for m in (1, 7, native.BLOCK_INVERSE_LEAF, native.BLOCK_INVERSE_LEAF + 1, 77, 100, 150):
+        S = np.triu(rng.standard_normal((m, m)), 1)
+        v = np.eye(m) + S - S.T
+        Z = native._block_inverse(v)
+        assert np.linalg.norm(np.eye(m) - v @ Z) <= 1e-12 * m
+    a = np.ones((80, 80))
+    with pytest.raises(np.linalg.LinAlgError):
+        native._block_inverse(a)
+
+
 def test_down32_is_nextafter_towards_zero_bit_for_bit():
     """The float32 term scales are rounded down by one unit in the bits (faster than np.nextafter): the
     same float32 as nextafter(x in float32, 0) for every nonnegative x, normal, subnormal, beyond
