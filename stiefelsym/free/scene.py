@@ -779,8 +779,8 @@ class FreeScene(PaperObjects):
             raise refuse("Euler-Lagrange equations with constraints other than the Hermitian components of "
                          "conj(Z)^T Z - I_r", self.tracker)
         images = {}
-        for where, (re, im) in ((position["Z"], COMPLEX["Z"]), (velocity["Z"], COMPLEX["Zdot"])):
-            images[re], images[im] = self._complex_parts(where, "a point of W(n, r)")
+        for where, (real, imag) in ((position["Z"], COMPLEX["Z"]), (velocity["Z"], COMPLEX["Zdot"])):
+            images[real], images[imag] = self._complex_parts(where, "a point of W(n, r)")
         for h in hyp.values():
             if not self.reduce(substitute(h, images)).is_zero:
                 raise refuse("a point that the rules do not show to satisfy (W0) and its derivative", self.tracker)
