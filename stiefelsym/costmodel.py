@@ -55,6 +55,9 @@ FAMILIES = {
 }
 #: the fastest to the slowest kind of answer: which method to suggest first
 SUGGEST_ORDER = ("modular", "float", "ball", "rational", "exact")
+#: what a verdict of each suggested method is worth, said with the suggestion
+GRADES = {"modular": "randomized exact", "rational": "randomized exact", "float": "numerical evidence, not proof",
+          "ball": "rigorous enclosures at a point, not proof", "exact": "symbolic proof"}
 #: a dimension-free run does not depend on n; its time is below this (measured: milliseconds)
 FREE_SECONDS = 5.0
 #: a prediction for a claim the model did not measure is the largest of the families' times this
@@ -266,8 +269,7 @@ class CostModel:
         parts = []
         if options:
             t, m = min(options)
-            grade = {"modular": "randomized exact", "rational": "randomized exact",
-                     "float": "numerical evidence, not proof", "exact": "symbolic proof"}[m]
+            grade = GRADES[m]
             within = "" if t <= budget else ", also beyond the budget"
             parts.append(f"try --method {m} (predicted {format_seconds(t)}, {grade}{within})")
         k = self.largest_n(method, claim, budget, r_of=lambda m: max(1, min(m, round(m * r / n))))

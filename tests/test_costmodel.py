@@ -251,3 +251,9 @@ def test_a_timed_run_reports_time_and_peak_memory_and_is_stopped_at_its_cap(cata
     assert rec["verdict"] == "numeric" and 0 < rec["seconds"] < 60 and rec["peak_bytes"] >= 8 * 300 * 300
     rec = costfit.timed_run(c, 400, 200, "exact", 0, 0.5)
     assert rec["verdict"] == "inconclusive" and rec["peak_bytes"] is None and rec["seconds"] < 5
+
+
+def test_every_suggested_method_has_a_grade():
+    """A refusal suggests the method predicted fastest, with what its verdict is worth: every method
+    it may suggest has its words (the ball method, once fastest after its float64 rung, had none)."""
+    assert set(costmodel.SUGGEST_ORDER) <= set(costmodel.GRADES)
