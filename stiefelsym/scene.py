@@ -1203,6 +1203,11 @@ class Scene(PaperObjects):
             target._a[i, j] = target._a[j, i] = c
         return Lam, Pi
 
+    def _gradient_pair(self, HX: Mat, HP: Mat) -> tuple[Mat, Mat]:
+        """A gradient (∂H/∂X, ∂H/∂P) the graph computed, handed on as :meth:`gradient` hands its own:
+        n x r matrices of the scene (see :mod:`stiefelsym.ir.derivative`)."""
+        return self._as_nr(HX), self._as_nr(HP)
+
     def _tangent_vector(self, flow: Flow | Mapping[str, Mat], keys: tuple) -> dict[str, Mat]:
         """The components ``keys`` of a flow, checked as :meth:`tangent` checks a flow, each with the
         spaces of the primitive it moves (0 where the flow does not move it): what the graph's

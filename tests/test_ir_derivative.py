@@ -39,20 +39,19 @@ def _same(a, b) -> bool:
 
 
 def _both(g, n, r, realization="standard", seed=1):
-    """The graph's value on a modular scene, evaluated as traced (dual numbers) and transformed, each
-    on a fresh scene at the same point: (outcome, value or error text, records) twice."""
-    out = []
+    """The graph's value on a modular scene, evaluated as traced (dual numbers, reverse mode) and
+    transformed, each on a fresh scene at the same point: (outcome, value or error text, records)
+    twice.  (The point's parameters are drawn on first use, and the transform may change the order
+    of first uses inside a function's body: the second scene gets the first one's parameters.)"""
+    out, drawn = [], {}
     for gg in (g, derivatives(g)):
         s = Scene(n, r, ModularField(P61), chart="cayley", rng=random.Random(seed), realization=realization)
-        # the point's parameters are drawn on first use, and the transform may change the order of first
-        # uses inside a function's body: draw them first, so that both graphs see one point
-        for name in ("X", "A", "lam", "kappa", "eta"):
-            getattr(s, name)
-        s.generic("B", "n", "r")
+        s._params.update(drawn)
         try:
             out.append(("ok", evaluate(gg, s), sorted(set(s.tracker.used))))
         except Exception as exc:     # noqa: BLE001 - the two evaluations must fail alike
             out.append(("error", type(exc).__name__, sorted(set(s.tracker.used))))
+        drawn = dict(s._params)
     return out
 
 
@@ -169,6 +168,51 @@ def test_random_functions_along_random_flows_agree_with_dual_numbers(seed):
     g = compile_claim(func, 3, 2, STANDARD)
     assert [why for _, why in coverage(g)] == [None]
     assert _agree(g, 3, 2)
+
+
+_NO_ADJOINT = ("'res_at'", "'entry'", "'block'")
+
+
+def _scalar_function(rng: random.Random, depth: int, banned=_NO_ADJOINT) -> tuple:
+    while True:
+        e = _expr(rng, "sc", depth)
+        if not any(w in repr(e) for w in banned) and ("'X'" in repr(e) or "'P'" in repr(e) or "'Phi'" in repr(e)
+                                                       or "'Psi'" in repr(e)):
+            return e
+
+
+@pytest.mark.parametrize("seed", range(24))
+def test_random_gradients_agree_with_reverse_mode(seed):
+    rng = random.Random(500 + seed)
+    H = _scalar_function(rng, 4)
+
+    def func(s):
+        HX, HP = s.gradient(lambda t: _build(t, H))
+        return {"HX": HX, "HP": HP}
+    g = compile_claim(func, 3, 2, STANDARD)
+    assert [why for _, why in coverage(g, "gradient")] == [None]
+    assert _agree(g, 3, 2)
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_random_gradients_agree_on_the_free_algebra(seed):
+    rng = random.Random(700 + seed)
+    H = _scalar_function(rng, 3, _NO_ADJOINT + ("'inv1'", "'div'"))
+
+    def func(s):
+        HX, HP = s.gradient(lambda t: _build(t, H))
+        return {"HX": HX, "HP": HP}
+    g = compile_claim(func, None, None, STANDARD)
+    assert [why for _, why in coverage(g, "gradient")] == [None]
+    outs = []
+    for gg in (g, derivatives(g)):
+        s = FreeScene(lazy=True)
+        v = evaluate(gg, s)
+        outs.append([(pos, str(s.reduce(x).normal_form)) for k in ("HX", "HP") for pos, x in _entries(v[k], k)])
+    assert outs[0] == outs[1]
+    for gg in (g, derivatives(g)):      # an eager scene has reduced H: its ambient gradient is refused
+        with pytest.raises(Exception, match="needs coordinates|ambient gradient"):
+            evaluate(gg, FreeScene(lazy=False))
 
 
 @pytest.mark.parametrize("seed", range(6))

@@ -1024,6 +1024,13 @@ class FreeScene(PaperObjects):
                                "(A and the resolvents are constant along flows)")
         return FreeTangentScene(self, flow)
 
+    def _gradient_pair(self, HX: Mat, HP: Mat) -> tuple[Mat, Mat]:
+        """A gradient (∂H/∂X, ∂H/∂P) of a trace form as written, computed by the graph, handed on as
+        :meth:`gradient` hands its own (refused by an eager scene, each gradient reduced; see
+        :mod:`stiefelsym.ir.derivative`)."""
+        self._as_written("the ambient gradient of H, which depends on H off T*V")
+        return tuple(self._const_mat(self.system.normal_form(entry_of(G))) for G in (HX, HP))
+
     def _tangent_vector(self, flow: Flow | Mapping[str, Mat], keys: tuple) -> dict[str, Mat]:
         """The components ``keys`` of a flow as the tangent scene reads them (its keys checked as
         :meth:`tangent` checks them, a component's block as the tangent scene checks it when the

@@ -1,4 +1,4 @@
-"""Forward-mode derivatives along flows as a graph transform.
+"""Derivatives along flows (forward mode) and gradients (reverse mode) as graph transforms.
 
 A claim's ``s.d(F, flow)`` is traced as a ``call`` node whose function
 argument is the traced body of F (a ``fn`` node).  :func:`derivatives` rewrites
@@ -32,12 +32,25 @@ the double point, a resolvent at a point-dependent μ) keeps its ``call`` node:
 the scene differentiates it as before.  :func:`coverage` says, per ``d`` node,
 whether it was transformed and, if not, why.
 
+``s.gradient(H)`` of a number H built by matrix operations is rewritten the
+same way, in reverse mode: the adjoint of each node of H's body, from H down to
+X and P, by the rules of the cyclic derivative of a trace form (for C = AB:
+Ā = C̄Bᵀ, B̄ = AᵀC̄; for C = Aᵀ: Ā = C̄ᵀ; for tr M: M̄ = I; for C = M⁻¹:
+M̄ = −CᵀC̄Cᵀ; Φ and Ψ by their formulas; a matrix's adjoint is a sum of matrices
+and a multiple of I, which a product absorbs).  Y, Q and everything else
+are constants of a gradient, as on the scene's reverse tape.  The pair is handed
+on by one engine step, :func:`gradient_pair`, which makes the scene's own
+checks (the dimension-free scene refuses an ambient gradient unless it keeps
+H as written) and gives the n x r spaces.  An entry or a block inside H (their
+adjoints need coordinates) keeps the call node.
+
 The digest of a claim stays the digest of its graph as traced (what
 results.json records and ``stiefelsym check`` re-traces); the transformed graph
 is derived from it, once per graph, and is what the methods evaluate.
 """
 from __future__ import annotations
 
+from fractions import Fraction
 from typing import Any
 
 from .graph import Graph, Named, Ref
@@ -97,11 +110,11 @@ def derivatives(g: Graph) -> Graph:
     return out
 
 
-def coverage(g: Graph) -> list[tuple[int, str | None]]:
-    """Per ``d`` node of the graph as traced: (node, None) when the pass differentiated it, (node,
-    reason) when the scene does."""
+def coverage(g: Graph, name: str = "d") -> list[tuple[int, str | None]]:
+    """Per ``d`` node (``name``: or ``gradient`` node) of the graph as traced: (node, None) when the
+    pass rewrote it, (node, reason) when the scene computes it."""
     derivatives(g)
-    return g.cache["derived_report"]
+    return [(i, why) for i, nm, why in g.cache["derived_report"] if nm == name]
 
 
 def _deps(g: Graph) -> list[frozenset]:
@@ -125,17 +138,17 @@ def _transform(g: Graph) -> tuple[Graph, list]:
 
     report: list = []
     for i, (op, a) in enumerate(zip(g.ops, g.args)):
-        if op == "call" and a[1] == "d":
+        if op == "call" and a[1] in _PASSES:
             try:
-                remap[i] = _Derivative(g, deps, new, remap, i).build()
-                report.append((i, None))
+                remap[i] = _PASSES[a[1]](g, deps, new, remap, i).build()
+                report.append((i, a[1], None))
                 continue
             except Unsupported as exc:
-                report.append((i, str(exc)))
+                report.append((i, a[1], str(exc)))
         remap[i] = new.add(op, m(a))
     if g.output is not None:
         new.output = remap[g.output.i]
-    if not any(why is None for _, why in report):
+    if not any(why is None for _, _, why in report):
         return g, report                # nothing rewritten: the graph itself (and what was computed of it)
     return _pruned(new), report
 
@@ -512,3 +525,343 @@ _NESTED = {"d": "derivative along a flow", "gradient": "gradient", "dirac_flow":
            "multiplier_flow": "flow", "canonical_flow": "flow", "bracket": "Poisson bracket",
            "canonical_bracket": "Poisson bracket", "jacobian": "Jacobian", "tangent": "tangent scene",
            "constraint_bracket_matrix": "matrix of constraint brackets", "sym_operator": "operator"}
+
+
+# ---------------------------------------------------------------------------------------------
+# gradients: reverse mode over the matrix operations (the cyclic derivative of a trace form)
+
+#: the engine step that hands a gradient over as the scene hands its own (registered below)
+GRADIENT = "stiefelsym.ir.derivative.gradient_pair"
+
+
+def gradient_pair(scene: Any, HX: Any, HP: Any) -> tuple:
+    """(∂H/∂X, ∂H/∂P) computed by the graph, as the scene's own gradient hands them on (the scene's
+    checks of a gradient made, the spaces n x r).  Engine step of the transformed graphs."""
+    f = getattr(scene, "_gradient_pair", None)
+    if f is None:
+        raise TypeError(f"a gradient on a {type(scene).__name__} (a scene with no gradients)")
+    return f(HX, HP)
+
+
+PRIMITIVES[GRADIENT] = gradient_pair
+
+_S, _M = "number", "matrix"
+#: scene matrices and numbers the gradient treats as constants (only X and P are its variables)
+_GRAD_CONSTANT_ATTRS = CONSTANT_ATTRS | {"Y", "Q", "Zc", "Zc_dot"}
+_MATRIX_CALLS = frozenset({"resolvent", "mat", "zeros", "identity", "scalar_matrix", "generic", "general_params",
+                           "conj", "realify"})
+_SCALAR_CALLS = frozenset({"tr", "killing", "q", "const", "scalar"})
+
+
+class _Gradient(_Derivative):
+    """(∂H/∂X, ∂H/∂P) of one ``gradient`` node's function H, a number built by matrix operations:
+    the adjoints of the body's nodes, from the value down to X and P (a matrix's adjoint is a sum of
+    matrices and of a multiple of I, which a trace makes and a product absorbs)."""
+
+    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, i: int) -> None:
+        self.g, self.deps, self.new, self.remap = g, deps, new, remap
+        scene, name, args, kw = g.args[i]
+        if kw or len(args) != 1:
+            raise Unsupported("a gradient with further arguments")
+        f = args[0]
+        if type(scene) is not Ref or g.ops[scene.i] != "scene" or g.args[scene.i] != (0,):
+            raise Unsupported("a gradient on a scene other than the claim's (inside a function of the scene)")
+        if type(f) is not Ref or g.ops[f.i] != "fn":
+            raise Unsupported("a gradient of something that is not a traced function")
+        self.k, arity, self.body = g.args[f.i]
+        if arity != 1 or type(self.body) is not Ref:
+            raise Unsupported("a gradient of a function of more than the scene")
+        self.S = remap[scene.i]
+        self.P: dict[int, Ref] = {}
+
+    def kind(self, a: Any) -> str:
+        if type(a) is not Ref:
+            return _S
+        return self.kinds.get(a.i) or self._kind_of(a.i)
+
+    def _kind_of(self, j: int) -> str:
+        g = self.g
+        op, a = g.ops[j], g.args[j]
+        if op in ("matmul", "T", "inv", "block"):
+            return _M
+        if op in ("trace", "pow", "const"):
+            return _S
+        if op in ("add", "sub", "neg", "div"):
+            return self.kind(a[0])
+        if op == "mul":
+            return _M if _M in (self.kind(a[0]), self.kind(a[1])) else _S
+        if op == "attr":
+            if a[1] in MATRICES:
+                return _M
+            if a[1] in NUMBERS:
+                return _S
+        if op == "call":
+            if a[1] in _MATRIX_CALLS:
+                return _M
+            if a[1] in _SCALAR_CALLS:
+                return _S
+        if op == "entry":
+            return _S if all(type(x) is int for x in a[1:]) else _M
+        if op == "item" and type(a[0]) is Ref and g.ops[a[0].i] == "attr" and g.args[a[0].i][1] == "a":
+            return _S
+        raise Unsupported(f"a {op} whose kind (number or matrix) the graph does not show")
+
+    def build(self) -> Ref:
+        g, k = self.g, self.k
+        todo, seen = [], set()
+        stack = [self.body]
+        while stack:
+            r = stack.pop()
+            if r.i in seen or k not in self.deps[r.i]:
+                continue
+            seen.add(r.i)
+            todo.append(r.i)
+            stack.extend(Ref(j) for j in g.refs(r.i))
+        todo.sort()
+        self.kinds: dict[int, str] = {}
+        self.moves_set: set[int] = set()
+        for j in todo:
+            if (g.ops[j] == "attr" and g.args[j][1] in ("X", "P", "Phi", "Psi")) or any(
+                    r in self.moves_set for r in g.refs(j)):
+                self.moves_set.add(j)
+        for j in todo:
+            if g.ops[j] != "scene":
+                self.kinds[j] = self._kind_of(j)
+                self.check(j)
+        if k in self.deps[self.body.i] and self.kinds[self.body.i] != _S:
+            raise Unsupported("a gradient of a function whose value is not a number")
+        # the point first, then the body's values (the scene's reverse mode makes its leaves X, P
+        # before it evaluates H: parameters drawn on first use are drawn in that order)
+        X, P = self.add("attr", (self.S, "X")), self.add("attr", (self.S, "P"))
+        for j in todo:
+            self.P[j] = self.S if g.ops[j] == "scene" else self.add(g.ops[j], self.primal(g.args[j]))
+        # adjoints, from the value down: a matrix's adjoint is (terms, coefficient of I), a number's a term list
+        adj: dict[int, tuple[list, list]] = {}
+        grads: dict[str, list] = {"X": [], "P": []}
+        if k in self.deps[self.body.i]:
+            adj[self.body.i] = ([1], [])
+        for j in reversed(todo):
+            if j not in adj or g.ops[j] == "scene":
+                continue
+            terms, ident = adj.pop(j)
+            self.propagate(j, terms, ident, adj, grads)
+        HX = self.total(grads["X"], X)
+        HP = self.total(grads["P"], P)
+        return self.add("prim", (Named(GRADIENT), self.S, HX, HP))
+
+    def check(self, j: int) -> None:
+        """Refuse (before anything is written) what the backward sweep has no rule for."""
+        g = self.g
+        op, a = g.ops[j], g.args[j]
+        if op == "attr":
+            if type(a[0]) is not Ref or g.ops[a[0].i] != "scene":
+                raise Unsupported(f"an attribute {a[1]!r} of an engine value that moves with the point")
+            if a[1] not in ("X", "P", "Phi", "Psi") and a[1] not in _GRAD_CONSTANT_ATTRS:
+                raise Unsupported(f"the scene's {a[1]} in a gradient")
+        elif op == "call":
+            if a[1] in CONSTANT_CALLS:
+                return
+            if a[1] == "resolvent" and not self.moving(a[2][0]):
+                return
+            if a[1] in ("tr", "killing"):
+                return
+            raise Unsupported(f"s.{a[1]} inside the function of a gradient")
+        elif op == "item":
+            if not (type(a[0]) is Ref and g.ops[a[0].i] == "attr" and g.args[a[0].i][1] == "a"):
+                raise Unsupported("a part of a value inside the function of a gradient")
+        elif op in ("entry", "block"):
+            raise Unsupported(f"an {op} inside the function of a gradient (its adjoint needs coordinates)")
+        elif op not in ("add", "sub", "neg", "matmul", "mul", "div", "pow", "T", "inv", "trace", "const"):
+            raise Unsupported(f"a {op} inside the function of a gradient")
+
+    def moving(self, a: Any) -> bool:
+        """Whether an argument reads X or P (through the function's scene)."""
+        return type(a) is Ref and a.i in self.moves_set
+
+    # -- the backward sweep -----------------------------------------------------------------------
+    def scalar_sum(self, terms: list) -> Any:
+        lits = [t for t in terms if type(t) is not Ref]
+        refs = [t for t in terms if type(t) is Ref]
+        c = sum(lits) if lits else 0
+        acc = None
+        for t in refs:
+            acc = t if acc is None else self.add("add", (acc, t))
+        if acc is None:
+            return c
+        return acc if c == 0 else self.add("add", (acc, self.lit(c)))
+
+    def lit(self, x: Any) -> Any:
+        """A literal number as an argument: an int as it is, a fraction as the scene's constant (the
+        backends' numbers take ints, not Fractions)."""
+        if type(x) is Ref or type(x) is int:
+            return x
+        x = Fraction(x)
+        if x.denominator == 1:
+            return int(x)
+        return self.add("call", (self.S, "const", (x,), ()))
+
+    def smul(self, x: Any, y: Any) -> Any:
+        """x·y for numbers (refs or literals), folding literal ones."""
+        if type(x) is not Ref and type(y) is not Ref:
+            return x * y
+        x, y = (v if type(v) is Ref or v == 1 else self.lit(v) for v in (x, y))
+        if type(x) is not Ref and x == 1:
+            return y
+        if type(y) is not Ref and y == 1:
+            return x
+        if type(x) is not Ref:
+            return self.add("mul", (x, y))
+        return self.add("mul", (x, y)) if type(y) is Ref else self.add("mul", (y, x))
+
+    def mat_sum(self, terms: list) -> Any:
+        acc = None
+        for t in terms:
+            acc = t if acc is None else self.add("add", (acc, t))
+        return acc
+
+    def send(self, adj: dict, a: Any, terms: list, ident: list = ()) -> None:
+        if not self.moving(a):
+            return
+        t, i = adj.setdefault(a.i, ([], []))
+        t.extend(terms)
+        i.extend(ident)
+
+    def leaf(self, grads: dict, name: str, terms: list) -> None:
+        grads[name].extend(terms)
+
+    def propagate(self, j: int, terms: list, ident: list, adj: dict, grads: dict) -> None:  # noqa: C901
+        g, add, p = self.g, self.add, self.primal
+        op, a = g.ops[j], g.args[j]
+        T = lambda x: add("T", (x,))                        # noqa: E731
+        mm = lambda x, y: add("matmul", (x, y))             # noqa: E731
+        if self.kinds[j] == _S:
+            s = self.scalar_sum(terms)
+            if type(s) is not Ref and s == 0:
+                return
+            if op == "add":
+                self.send(adj, a[0], [s])
+                self.send(adj, a[1], [s])
+            elif op == "sub":
+                self.send(adj, a[0], [s])
+                self.send(adj, a[1], [self.neg(s)])
+            elif op == "neg":
+                self.send(adj, a[0], [self.neg(s)])
+            elif op == "mul":                               # both numbers
+                self.send(adj, a[0], [self.smul(s, p(a[1]))])
+                self.send(adj, a[1], [self.smul(p(a[0]), s)])
+            elif op == "div":                               # v = x/c: x̄ = s/c, c̄ = −s·v/c
+                c = p(a[1])
+                self.send(adj, a[0], [self.div(s, c)])
+                self.send(adj, a[1], [self.div(self.neg(self.smul(s, self.P[j])), c)])
+            elif op == "pow":                               # (xᵉ)' = e·xᵉ⁻¹
+                e = a[1]
+                if e != 0:
+                    base = p(a[0]) if e == 2 else add("pow", (p(a[0]), e - 1))
+                    self.send(adj, a[0], [self.smul(s, self.smul(e, base))])
+            elif op in ("trace",) or (op == "call" and a[1] == "tr"):
+                M = a[0] if op == "trace" else a[2][0]
+                self.send(adj, M, [], [s])
+            elif op == "call" and a[1] == "killing":        # ⟨a, b⟩ = −½ tr(ab)
+                x, y = a[2]
+                h = self.smul(Fraction(-1, 2), s)
+                self.send(adj, x, [self.mscale(h, T(p(y)))])
+                self.send(adj, y, [self.mscale(h, T(p(x)))])
+            elif op == "attr" or op == "call" or op == "const" or op == "item":
+                return
+            else:
+                raise Unsupported(f"no rule for a {op} of numbers")
+            return
+        # a matrix node: adjoint Σ terms + (Σ ident)·I
+        M = self.mat_sum(terms)
+        c = self.scalar_sum(ident) if ident else 0
+        has_c = type(c) is Ref or c != 0
+        if M is None and not has_c:
+            return
+        if op == "add":
+            self.send(adj, a[0], [M] if M is not None else [], [c] if has_c else [])
+            self.send(adj, a[1], [M] if M is not None else [], [c] if has_c else [])
+        elif op in ("sub", "neg"):
+            nM = [add("neg", (M,))] if M is not None else []
+            nc = [self.neg(c)] if has_c else []
+            if op == "sub":
+                self.send(adj, a[0], [M] if M is not None else [], [c] if has_c else [])
+                self.send(adj, a[1], nM, nc)
+            else:
+                self.send(adj, a[0], nM, nc)
+        elif op == "T":
+            self.send(adj, a[0], [T(M)] if M is not None else [], [c] if has_c else [])
+        elif op == "matmul":                                # C = AB: Ā = C̄Bᵀ, B̄ = AᵀC̄
+            A, B = p(a[0]), p(a[1])
+            left = ([mm(M, T(B))] if M is not None else []) + ([self.mscale(c, T(B))] if has_c else [])
+            right = ([mm(T(A), M)] if M is not None else []) + ([self.mscale(c, T(A))] if has_c else [])
+            self.send(adj, a[0], left)
+            self.send(adj, a[1], right)
+        elif op == "mul":                                   # C = x·Y (x a number)
+            xs, ys = (a[0], a[1]) if self.kind(a[0]) == _S else (a[1], a[0])
+            x, Y = p(xs), p(ys)
+            self.send(adj, ys, [self.mscale(x, M)] if M is not None else [], [self.smul(x, c)] if has_c else [])
+            self.send(adj, xs, self.inner(M, c if has_c else None, Y))
+        elif op == "div":                                   # C = Y/x: Ȳ = C̄/x, x̄ = −⟨C̄, C⟩/x
+            x = p(a[1])
+            self.send(adj, a[0], [add("div", (M, x))] if M is not None else [],
+                      [self.div(c, x)] if has_c else [])
+            inner = self.inner(M, c if has_c else None, self.P[j])
+            if inner:
+                self.send(adj, a[1], [self.div(self.neg(self.scalar_sum(inner)), x)])
+        elif op == "inv":                                   # C = M⁻¹: M̄ = −Cᵀ C̄ Cᵀ
+            C = T(self.P[j])
+            parts = ([mm(mm(C, M), C)] if M is not None else []) + ([self.mscale(c, mm(C, C))] if has_c else [])
+            self.send(adj, a[0], [add("neg", (x,)) for x in parts])
+        elif op == "attr" and a[1] in ("X", "P"):
+            if has_c:
+                raise Unsupported("a multiple of I as the adjoint of X or P")
+            self.leaf(grads, a[1], [M])
+        elif op == "attr" and a[1] in ("Phi", "Psi"):
+            if M is None:
+                return                                      # c·I: Φ and Ψ are skew, ⟨I, dΦ⟩ = 0
+            X, P = self.add("attr", (self.S, "X")), self.add("attr", (self.S, "P"))
+            K = add("sub", (M, T(M)))
+            if a[1] == "Phi":                               # Φ = PXᵀ − XPᵀ: X̄ = −(C̄ − C̄ᵀ)P, P̄ = (C̄ − C̄ᵀ)X
+                self.leaf(grads, "X", [add("neg", (mm(K, P),))])
+                self.leaf(grads, "P", [mm(K, X)])
+            else:                                           # Ψ = XᵀP − PᵀX: X̄ = −P(C̄ − C̄ᵀ), P̄ = X(C̄ − C̄ᵀ)
+                self.leaf(grads, "X", [add("neg", (mm(P, K),))])
+                self.leaf(grads, "P", [mm(X, K)])
+        elif op in ("attr", "call", "const"):
+            return                                          # constants
+        else:
+            raise Unsupported(f"no rule for a {op} of matrices")
+
+    def div(self, s: Any, c: Any) -> Any:
+        """s/c for numbers (refs or exact literals)."""
+        if type(s) is not Ref and s == 0:
+            return 0
+        if type(s) is not Ref and type(c) is not Ref:
+            return Fraction(s) / c
+        return self.add("div", (self.lit(s), self.lit(c)))
+
+    def neg(self, s: Any) -> Any:
+        return -s if type(s) is not Ref else self.add("neg", (s,))
+
+    def mscale(self, x: Any, M: Ref) -> Ref:
+        """x·M (x a number, ref or literal)."""
+        if type(x) is not Ref and x == 1:
+            return M
+        return self.add("mul", (self.lit(x), M))
+
+    def inner(self, M: Any, c: Any, Y: Ref) -> list:
+        """⟨M + cI, Y⟩ = tr(MᵀY) + c·tr(Y), as terms."""
+        out = []
+        if M is not None:
+            out.append(self.add("call", (self.S, "tr", (self.add("matmul", (self.add("T", (M,)), Y)),), ())))
+        if c is not None:
+            out.append(self.smul(c, self.add("call", (self.S, "tr", (Y,), ()))))
+        return out
+
+    def total(self, terms: list, leaf: Ref) -> Ref:
+        M = self.mat_sum(terms)
+        return M if M is not None else self.add("mul", (leaf, 0))
+
+
+#: the calls the pass rewrites, by scene method
+_PASSES = {"d": _Derivative, "gradient": _Gradient}
