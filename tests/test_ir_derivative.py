@@ -421,3 +421,43 @@ def test_the_digest_is_the_digest_of_the_graph_as_traced():
     assert "call" not in {op for op, a in zip(t.ops, t.args) if op == "call" and a[1] == "d"}
     c = _claim(prep, "prep-digest")
     assert run_one(c, Size(4, 2), "modular", 0).digest == graph_digest(c, Size(4, 2)) == before
+
+
+def _legendre(s):
+    """∂/∂P ½tr(PᵀAP) = AP (A symmetric)."""
+    return {"dL/dP": s.gradient(lambda t: t.tr(t.P.T @ t.A @ t.P) / 2)[1] - s.A @ s.P}
+
+
+def test_a_wrong_adjoint_is_caught(monkeypatch):
+    """The adjoint of a product with its right factor's part dropped: the transformed gradient no
+    longer agrees with reverse mode, and a true claim fails under it."""
+    assert run_one(_claim(_legendre, "legendre"), Size(4, 2), "modular", 0).verdict == "checked"
+    real = deriv._Gradient.send
+
+    def dropping(self, adj, a, terms, ident=()):
+        j = self._current
+        if self.g.ops[j] == "matmul" and type(a) is type(self.g.args[j][1]) and a == self.g.args[j][1]:
+            return
+        return real(self, adj, a, terms, ident)
+    real_propagate = deriv._Gradient.propagate
+
+    def tracking(self, j, *args):
+        self._current = j
+        return real_propagate(self, j, *args)
+    monkeypatch.setattr(deriv._Gradient, "send", dropping)
+    monkeypatch.setattr(deriv._Gradient, "propagate", tracking)
+    func = lambda s: _legendre(s)      # noqa: E731 - a function object of its own: traced and transformed anew
+    g = compile_claim(func, 4, 2, STANDARD)
+    assert [why for _, why in coverage(g, "gradient")] == [None]
+    assert not _agree(g, 4, 2)
+    assert run_one(_claim(func, "legendre-dropped"), Size(4, 2), "modular", 0).verdict == "fails"
+
+
+def test_a_gradient_of_entries_falls_back_with_a_reason():
+    def func(s):
+        HX, HP = s.gradient(lambda t: (t.X.T @ t.P)[0, 1])
+        return {"HX": HX, "HP": HP}
+    g = compile_claim(func, 3, 2, STANDARD)
+    (_, why), = coverage(g, "gradient")
+    assert why is not None and "entry" in why
+    assert derivatives(g) is g and _agree(g, 3, 2)
