@@ -176,8 +176,9 @@ def _float_entries(value: Any, name: str, u: float) -> list[tuple[str, Any]]:
 
 def call_claim(func: Callable, scene: Any) -> dict[str, Any]:
     """A claim's checks on a method's scene: the claim's graph (traced once per size, never with
-    the scene's values) evaluated on the scene; the graph's looks at coordinates are recorded in
-    the scene's record first, whatever spaces the claim named."""
+    the scene's values), its derivatives along flows and gradients rewritten into ordinary nodes
+    where their bodies allow (:mod:`.ir.derivative`), evaluated on the scene; the graph's looks at
+    coordinates are recorded in the scene's record first, whatever spaces the claim named."""
     n, r = scene.n, scene.r
     free = type(n) is not int
     cons = REALIZATIONS[getattr(scene, "realization", None) or "standard"]
