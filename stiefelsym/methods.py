@@ -30,6 +30,7 @@ from .claims import Claim, Count, Rank, deadline
 from . import costmodel
 from .costmodel import BudgetError as BudgetError  # the methods raise it (re-exported)
 from .ir import compile_claim
+from .ir.derivative import derivatives
 from .ir.evaluate import evaluate
 from .ir.seal import verify as verify_engine
 from .ir.passes import BLOCK_SPLITTING, FLOAT_EXPONENT_LIMIT, coordinate_reads, outside_float_range
@@ -175,8 +176,9 @@ def _float_entries(value: Any, name: str, u: float) -> list[tuple[str, Any]]:
 
 def call_claim(func: Callable, scene: Any) -> dict[str, Any]:
     """A claim's checks on a method's scene: the claim's graph (traced once per size, never with
-    the scene's values) evaluated on the scene; the graph's looks at coordinates are recorded in
-    the scene's record first, whatever spaces the claim named."""
+    the scene's values), its derivatives along flows and gradients rewritten into ordinary nodes
+    where their bodies allow (:mod:`.ir.derivative`), evaluated on the scene; the graph's looks at
+    coordinates are recorded in the scene's record first, whatever spaces the claim named."""
     n, r = scene.n, scene.r
     free = type(n) is not int
     cons = REALIZATIONS[getattr(scene, "realization", None) or "standard"]
@@ -190,7 +192,7 @@ def call_claim(func: Callable, scene: Any) -> dict[str, Any]:
             if inv & watched_spaces:
                 tracker.touch(what)
     verify_engine("before an evaluation")
-    checks = evaluate(g, scene)
+    checks = evaluate(derivatives(g), scene)
     if not isinstance(checks, dict) or not checks:
         raise TypeError("a claim must return a non-empty dict of named checks")
     for k in checks:

@@ -1222,6 +1222,29 @@ class Scene(PaperObjects):
             target._a[i, j] = target._a[j, i] = c
         return Lam, Pi
 
+    def _gradient_pair(self, HX: Mat, HP: Mat) -> tuple[Mat, Mat]:
+        """A gradient (∂H/∂X, ∂H/∂P) the graph computed, handed on as :meth:`gradient` hands its own:
+        n x r matrices of the scene (see :mod:`stiefelsym.ir.derivative`)."""
+        return self._as_nr(HX), self._as_nr(HP)
+
+    def _tangent_vector(self, flow: Flow | Mapping[str, Mat], keys: tuple) -> dict[str, Mat]:
+        """The components ``keys`` of a flow, checked as :meth:`tangent` checks a flow, each with the
+        spaces of the primitive it moves (0 where the flow does not move it): what the graph's
+        derivatives along the flow read (see :mod:`stiefelsym.ir.derivative`)."""
+        tangent = flow.tangent() if isinstance(flow, Flow) else dict(flow)
+        checked = _checked_tangent(self, tangent)
+        out = {}
+        for key in keys:
+            prim = getattr(self, key)
+            v = checked.get(key)
+            if v is None:
+                v = Mat.zeros(*prim._shape(), self._field, prim.tags, self.tracker)
+            elif v.tags != prim.tags or v._coords != prim._coords:
+                v = v._retyped(v._field, prim.tags, self.tracker)
+            v._coords = prim._coords
+            out[key] = v
+        return out
+
     def d(self, F: Function, flow: Flow | Mapping[str, Mat]) -> Any:
         """The derivative of F (a function of the scene) along a flow."""
         tangent = flow.tangent() if isinstance(flow, Flow) else dict(flow)

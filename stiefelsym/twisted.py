@@ -380,6 +380,9 @@ __all__ = ["magnetic_matrix", "ambient_bracket", "constraint_bracket_matrix", "b
 # the functions that need the engine's scene (its number system, its gradients and multipliers) are
 # single steps of a claim's graph; the coordinate helpers above are traced with the claim
 for _name in ("magnetic_matrix", "ambient_bracket", "constraint_bracket_matrix", "bracket", "ambient_flow", "flow",
-              "multiplier_flow", "form", "basis_vector", "last_basis_vector", "leading_basis_vectors"):
+              "multiplier_flow", "form"):
     globals()[_name] = primitive(globals()[_name])
+# the basis vectors of R^r do not move with the point: their derivative along a flow is 0
+for _name in ("basis_vector", "last_basis_vector", "leading_basis_vectors"):
+    globals()[_name] = primitive(globals()[_name], constant=True)
 at_point = primitive(at_point, returns="scene")

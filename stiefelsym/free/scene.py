@@ -1231,6 +1231,38 @@ class FreeScene(PaperObjects):
                                "(A and the resolvents are constant along flows)")
         return FreeTangentScene(self, flow)
 
+    def _gradient_pair(self, HX: Mat, HP: Mat) -> tuple[Mat, Mat]:
+        """A gradient (∂H/∂X, ∂H/∂P) of a trace form as written, computed by the graph, handed on as
+        :meth:`gradient` hands its own (refused by an eager scene, each gradient reduced; see
+        :mod:`stiefelsym.ir.derivative`)."""
+        self._as_written("the ambient gradient of H, which depends on H off T*V")
+        return tuple(self._const_mat(self.system.normal_form(entry_of(G))) for G in (HX, HP))
+
+    def _tangent_vector(self, flow: Flow | Mapping[str, Mat], keys: tuple) -> dict[str, Mat]:
+        """The components ``keys`` of a flow as the tangent scene reads them (its keys checked as
+        :meth:`tangent` checks them, a component's block as the tangent scene checks it when the
+        letter is read; 0 where the flow does not move it): what the graph's derivatives along the
+        flow read (see :mod:`stiefelsym.ir.derivative`)."""
+        tangent = flow.tangent() if isinstance(flow, Flow) else dict(flow)
+        for key in tangent:
+            if key not in MOVABLE:
+                record_refusal(f"a tangent vector that moves {key!r}", self.tracker)
+                raise KeyError(f"a tangent vector moves {', '.join(MOVABLE)}, not {key!r} "
+                               "(A and the resolvents are constant along flows)")
+        out = {}
+        for key in keys:
+            poly = entry_of(getattr(self, key))
+            dot = tangent.get(key)
+            if dot is None:
+                b = NCPoly.zero(poly.row, poly.col)
+            else:
+                b = entry_of(dot) if isinstance(dot, Mat) else dot
+                if not isinstance(b, NCPoly) or b.shape != poly.shape:
+                    record_refusal(f"a flow whose {key}-component is not a {poly.row}×{poly.col} block", self.tracker)
+                    raise TypeError(f"the flow's {key}-component must be a {poly.row}×{poly.col} polynomial")
+            out[key] = one_block(b, self.field, poly.shape, self.tracker)
+        return out
+
     def d(self, F: Function | Any, flow: Flow | Mapping[str, Mat]) -> Any:
         """The derivative of F along a flow (X ↦ Ẋ, P ↦ Ṗ; A, R constant).
 

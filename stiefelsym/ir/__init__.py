@@ -1,8 +1,9 @@
 """The IR: claims traced once into a typed graph that every method evaluates.
 
 claim code → :func:`.trace.trace` (tracers, no values) → :class:`.graph.Graph`
-(pure data, a digest) → :mod:`.passes` → :func:`.evaluate.evaluate` on a
-method's scene.  See ``docs/architecture.md``.
+(pure data, a digest) → :mod:`.passes` and :mod:`.derivative` (derivatives
+along flows and gradients rewritten into ordinary nodes) →
+:func:`.evaluate.evaluate` on a method's scene.  See ``docs/architecture.md``.
 """
 from __future__ import annotations
 

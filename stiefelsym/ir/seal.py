@@ -35,6 +35,7 @@ _NOT_VERDICT = ("cli", "cli_", "notebook", "pytest_plugin", "distributed", "_das
 _LIBRARIES = ("numpy", "flint", "symengine", "fractions", "operator", "math", "mpmath", "random", "hashlib")
 #: registries (module, attribute) whose contents are fingerprinted
 _REGISTRIES = (("stiefelsym.ir.trace", "PRIMITIVES"), ("stiefelsym.ir.trace", "_NAMED"),
+               ("stiefelsym.ir.trace", "CONSTANT_PRIMITIVES"),
                ("stiefelsym.ir.trace", "VALUE_ATTRS"), ("stiefelsym.native", "_REGISTERED"),
                ("stiefelsym.methods", "_REGISTERED"), ("stiefelsym.ir.evaluate", "_ARITH"))
 

@@ -37,23 +37,31 @@ _ACTIVE: list["Trace"] = []
 
 #: engine functions recorded as single steps, by qualified name
 PRIMITIVES: dict[str, Callable] = {}
+#: engine steps whose value does not move with the point (their derivative along a flow is 0), by
+#: qualified name
+CONSTANT_PRIMITIVES: dict[str, Callable] = {}
 #: engine constants a claim may hand to a primitive, by identity
 _NAMED: dict[int, tuple[str, Any]] = {}
 
 
-def primitive(f: Callable | None = None, *, returns: Any = None, like: dict[str, str] | None = None) -> Any:
+def primitive(f: Callable | None = None, *, returns: Any = None, like: dict[str, str] | None = None,
+              constant: bool = False) -> Any:
     """Mark an engine function as one step of the IR: called while a claim is traced, it becomes a
     ``prim`` node (its function arguments traced once); otherwise it runs as written.
 
     ``returns``: the structure of its value for claim code (None: an engine value; k: a tuple of
     k values; "scene": a scene; ("like", name): the structure of the value of the function argument
-    ``name``, or, when ``name`` is a matrix argument, a matrix of its spaces).  ``like``: for a function argument, the argument whose structure
-    its second parameter has (a point of a phase space of the caller's)."""
+    ``name``, or, when ``name`` is a matrix argument, a matrix of its spaces).  ``like``: for a function
+    argument, the argument whose structure its second parameter has (a point of a phase space of the
+    caller's).  ``constant``: its value does not move with the point of the scene it is given (a
+    coordinate basis vector): its derivative along every flow is 0 (see :mod:`.derivative`)."""
     if f is None:
-        return lambda g: primitive(g, returns=returns, like=like)
+        return lambda g: primitive(g, returns=returns, like=like, constant=constant)
     refuse_registration("an engine step (primitive)")
     qual = f"{f.__module__}.{f.__qualname__}"
     PRIMITIVES[qual] = f
+    if constant:
+        CONSTANT_PRIMITIVES[qual] = f
     sig = inspect.signature(f)
 
     @functools.wraps(f)

@@ -1,0 +1,867 @@
+"""Derivatives along flows (forward mode) and gradients (reverse mode) as graph transforms.
+
+A claim's ``s.d(F, flow)`` is traced as a ``call`` node whose function
+argument is the traced body of F (a ``fn`` node).  :func:`derivatives` rewrites
+each such node whose body is built from operations with a known derivative
+into ordinary nodes of the graph, by the rules of the tangent map:
+
+* d(a ± b) = da ± db, d(−a) = −da, d(ab) = da·b + a·db (matrix and scalar
+  products), d(a/c) = da/c − (a/c)·dc/c, d(cᵏ) = k·cᵏ⁻¹·dc, d(Aᵀ) = (dA)ᵀ,
+  d(M⁻¹) = −M⁻¹·dM·M⁻¹, d tr M = tr dM, d⟨a, b⟩ = ⟨da, b⟩ + ⟨a, db⟩;
+  entries, blocks, block matrices, containers and realified or conjugated
+  matrices: taken part by part (all of these are linear);
+* the point's primitives X, P (Y, Q, Zc, Zc_dot) ↦ the flow's components,
+  Φ = PXᵀ − XPᵀ and Ψ = XᵀP − PᵀX by the product rule;
+* everything that does not depend on the point (A, the resolvents (μI − A)⁻¹
+  at a constant μ, λ, κ, ε, generic parameters, I, 0, constants, and values
+  of the enclosing scene the body closes over) ↦ 0.  Zeros are structural:
+  a sum with a zero term is the other term, and a zero is built (as ``x·0``)
+  only where a value must be handed on (a block, a part of a container, the
+  value of the whole derivative).
+
+The flow's components are read by one engine step, :func:`tangent_vector`, which
+checks the flow the way the scene's own tangent does (its keys, the shapes and
+spaces of its components) and gives each component the spaces of the
+primitive it moves.  So the transformed graph computes what the scene's dual
+numbers computed, in the scene's own arithmetic, and refuses what they
+refused.
+
+A body with an operation whose derivative the graph does not show (a nested
+derivative, gradient, flow or bracket, an engine step, an operator applied,
+the double point, a resolvent at a point-dependent μ) keeps its ``call`` node:
+the scene differentiates it as before.  :func:`coverage` says, per ``d`` node,
+whether it was transformed and, if not, why.
+
+``s.gradient(H)`` of a number H built by matrix operations is rewritten the
+same way, in reverse mode: the adjoint of each node of H's body, from H down to
+X and P, by the rules of the cyclic derivative of a trace form (for C = AB:
+Ā = C̄Bᵀ, B̄ = AᵀC̄; for C = Aᵀ: Ā = C̄ᵀ; for tr M: M̄ = I; for C = M⁻¹:
+M̄ = −CᵀC̄Cᵀ; Φ and Ψ by their formulas; a matrix's adjoint is a sum of matrices
+and a multiple of I, which a product absorbs).  Y, Q and everything else
+are constants of a gradient, as on the scene's reverse tape.  The pair is handed
+on by one engine step, :func:`gradient_pair`, which makes the scene's own
+checks (the dimension-free scene refuses an ambient gradient unless it keeps
+H as written) and gives the n x r spaces.  An entry or a block inside H (their
+adjoints need coordinates) keeps the call node.
+
+The digest of a claim stays the digest of its graph as traced (what
+results.json records and ``stiefelsym check`` re-traces); the transformed graph
+is derived from it, once per graph, and is what the methods evaluate.
+"""
+from __future__ import annotations
+
+from fractions import Fraction
+from typing import Any
+
+from .graph import Graph, Named, Ref
+from .trace import CONSTANT_PRIMITIVES, MATRICES, NUMBERS, PRIMITIVES
+
+#: the engine step that reads a flow's components (registered below)
+TANGENT = "stiefelsym.ir.derivative.tangent_vector"
+
+#: primitives of the point a flow moves (their components), and of the momentum maps built from X, P
+MOVED = ("X", "P", "Y", "Q", "Zc", "Zc_dot")
+#: matrices and numbers of the scene that do not move along any flow
+CONSTANT_ATTRS = frozenset({"A", "Ainv", "In", "Ir", "xi", "zeta", "eta", "theta"}) | frozenset(NUMBERS)
+#: scene methods whose value does not depend on the point
+CONSTANT_CALLS = frozenset({"q", "const", "scalar", "zeros", "identity", "generic", "general_params"})
+#: scene methods whose value is a number or a matrix (a zero of it may be built as x·0)
+NUMERIC_CALLS = frozenset({"tr", "killing", "resolvent", "q", "const", "scalar", "mat", "zeros", "identity",
+                           "scalar_matrix", "generic", "general_params", "conj", "realify"})
+#: ops whose value is a number or a matrix
+NUMERIC_OPS = frozenset({"add", "sub", "neg", "matmul", "mul", "div", "pow", "T", "inv", "trace", "entry",
+                         "block"})
+
+
+def tangent_vector(scene: Any, flow: Any, keys: tuple) -> dict:
+    """The components ``keys`` of a flow (a Flow of the engine, or a mapping from the moved primitives
+    to matrices) on ``scene``, checked as the scene's tangent checks them; a component the flow does not
+    give is 0.  Engine step of the transformed graphs (never handed to claim code)."""
+    f = getattr(scene, "_tangent_vector", None)
+    if f is None:
+        raise TypeError(f"a derivative along a flow on a {type(scene).__name__} (a scene with no tangent vectors)")
+    return f(flow, tuple(keys))
+
+
+PRIMITIVES[TANGENT] = tangent_vector
+
+
+class Unsupported(Exception):
+    """A body whose derivative the graph does not show (the reason, in a mathematician's terms)."""
+
+
+class _Container:
+    """The derivative of a list, tuple or dict of the body, kept part by part until it is handed on."""
+
+    __slots__ = ("op", "keys", "parts", "primals")
+
+    def __init__(self, op: str, keys: Any, parts: list, primals: list) -> None:
+        self.op, self.keys, self.parts, self.primals = op, keys, parts, primals
+
+
+def derivatives(g: Graph) -> Graph:
+    """The graph with every ``d`` node it can differentiate structurally rewritten into ordinary nodes
+    (computed once per graph; the graph itself and its digest are unchanged; the graph itself when
+    no node is rewritten)."""
+    out = g.cache.get("derived")
+    if out is None:
+        out, report = _transform(g)
+        g.cache["derived"], g.cache["derived_report"] = out, report
+    return out
+
+
+def coverage(g: Graph, name: str = "d") -> list[tuple[int, str | None]]:
+    """Per ``d`` node (``name``: or ``gradient`` node) of the graph as traced: (node, None) when the
+    pass rewrote it, (node, reason) when the scene computes it."""
+    derivatives(g)
+    return [(i, why) for i, nm, why in g.cache["derived_report"] if nm == name]
+
+
+def _deps(g: Graph) -> list[frozenset]:
+    from .evaluate import _deps as deps
+    return deps(g)
+
+
+def _transform(g: Graph) -> tuple[Graph, list]:
+    deps = _deps(g)
+    new = Graph()
+    new.refusals, new.fns, new.sizes = list(g.refusals), g.fns, g.sizes
+    remap: dict[int, Ref] = {}
+
+    def m(a: Any) -> Any:
+        t = type(a)
+        if t is Ref:
+            return remap[a.i]
+        if t is tuple:
+            return tuple(m(x) for x in a)
+        return a
+
+    report: list = []
+    for i, (op, a) in enumerate(zip(g.ops, g.args)):
+        if op == "call" and a[1] in _PASSES:
+            try:
+                remap[i] = _PASSES[a[1]](g, deps, new, remap, i).build()
+                report.append((i, a[1], None))
+                continue
+            except Unsupported as exc:
+                report.append((i, a[1], str(exc)))
+        remap[i] = new.add(op, m(a))
+    if g.output is not None:
+        new.output = remap[g.output.i]
+    if not any(why is None for _, _, why in report):
+        return g, report                # nothing rewritten: the graph itself (and what was computed of it)
+    return _pruned(new), report
+
+
+def _pruned(g: Graph) -> Graph:
+    """The nodes the output needs, renumbered in order (a differentiated function's body is dropped)."""
+    if g.output is None:
+        return g
+    need = set()
+    stack = [g.output.i]
+    while stack:
+        i = stack.pop()
+        if i in need:
+            continue
+        need.add(i)
+        stack.extend(g.refs(i))
+    order = sorted(need)
+    num = {i: k for k, i in enumerate(order)}
+
+    def m(a: Any) -> Any:
+        t = type(a)
+        if t is Ref:
+            return Ref(num[a.i])
+        if t is tuple:
+            return tuple(m(x) for x in a)
+        return a
+    out = Graph()
+    out.refusals, out.fns, out.sizes = g.refusals, g.fns, g.sizes
+    for i in order:
+        out.add(g.ops[i], m(g.args[i]))
+    out.output = Ref(num[g.output.i])
+    return out
+
+
+class _Derivative:
+    """The derivative of one ``d`` node's function along its flow, built into the new graph."""
+
+    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, i: int) -> None:
+        self.g, self.deps, self.new, self.remap = g, deps, new, remap
+        scene, name, args, kw = g.args[i]
+        if kw or len(args) != 2:
+            raise Unsupported("a derivative with further arguments")
+        f, flow = args
+        if type(scene) is not Ref or g.ops[scene.i] != "scene" or g.args[scene.i] != (0,):
+            raise Unsupported("a derivative on a scene other than the claim's (inside a function of the scene)")
+        if type(f) is not Ref or g.ops[f.i] != "fn" or type(flow) is not Ref:
+            raise Unsupported("a derivative of something that is not a traced function")
+        self.k, arity, self.body = g.args[f.i]
+        if arity != 1:
+            raise Unsupported("a derivative of a function of more than the scene")
+        self.S = remap[scene.i]
+        self.flow = flow
+        # the keys a flow given as a dict moves (other flows: the engine's Flow, whose keys are read)
+        self.keys = None
+        if g.ops[flow.i] == "dict":
+            self.keys = frozenset(g.args[flow.i][0])
+        self.P: dict[int, Ref] = {}
+        self.D: dict[int, Any] = {}
+        self.read: set[str] = set()
+        self._tangent: Ref | None = None
+
+    # -- the new graph's nodes ------------------------------------------------------------------
+    def add(self, op: str, args: tuple) -> Ref:
+        return self.new.add(op, args)
+
+    def primal(self, a: Any) -> Any:
+        """An argument of the body as the new graph holds it (the function's scene is the call's)."""
+        t = type(a)
+        if t is Ref:
+            if self.k in self.deps[a.i]:
+                return self.P[a.i]
+            return self.remap[a.i]
+        if t is tuple:
+            return tuple(self.primal(x) for x in a)
+        return a
+
+    def sum(self, x: Any, y: Any, op: str = "add") -> Any:
+        if y is None:
+            return x
+        if x is None:
+            return self.add("neg", (y,)) if op == "sub" else y
+        return self.add(op, (x, y))
+
+    def zero(self, j: Any) -> Ref:
+        """A zero shaped like the body's node j (or literal): x·0, or the scene's 0 for a literal."""
+        g = self.g
+        if type(j) is not Ref:
+            return self.add("call", (self.S, "const", (0,), ()))
+        op, a = g.ops[j.i], g.args[j.i]
+        if op == "const":
+            return self.add("call", (self.S, "const", (0,), ()))
+        if op in ("list", "tuple", "dict"):
+            return self.hand_on(None, j)
+        if op == "attr":
+            numeric = a[1] in MATRICES or a[1] in NUMBERS or a[1] in ("Xdot", "Pdot")
+        elif op == "call":
+            numeric = a[1] in NUMERIC_CALLS
+        elif op == "item":
+            base = a[0]
+            numeric = type(base) is Ref and g.ops[base.i] == "attr" and g.args[base.i][1] == "a"
+        else:
+            numeric = op in NUMERIC_OPS
+        if not numeric:
+            raise Unsupported(f"a value of the function that is not a number or a matrix ({op})")
+        return self.add("mul", (self.primal(j), 0))
+
+    def hand_on(self, d: Any, j: Any) -> Ref:
+        """The derivative d of the body's node (or literal) j as a node: zeros built, containers made."""
+        if d is None:
+            g = self.g
+            if type(j) is Ref and g.ops[j.i] in ("list", "tuple", "dict"):
+                a = g.args[j.i]
+                elems = a[1] if g.ops[j.i] == "dict" else a
+                d = _Container(g.ops[j.i], a[0] if g.ops[j.i] == "dict" else None, [None] * len(elems),
+                               list(elems))
+            else:
+                return self.zero(j)
+        if type(d) is _Container:
+            parts = tuple(self.hand_on(x, p) for x, p in zip(d.parts, d.primals))
+            return self.add(d.op, (d.keys, parts) if d.op == "dict" else parts)
+        return d
+
+    def component(self, key: str) -> Any:
+        """The flow's component moving ``key`` (None when a flow given as a dict does not move it)."""
+        if self.keys is not None and key not in self.keys:
+            return None
+        self.read.add(key)
+        return ("component", key)     # resolved once every key the body reads is known
+
+    # -- the rules ------------------------------------------------------------------------------
+    def build(self) -> Ref:
+        g, k = self.g, self.k
+        # the body's nodes that read the function's scene, in order
+        todo, seen = [], set()
+        stack = [self.body] if type(self.body) is Ref else []
+        while stack:
+            r = stack.pop()
+            if r.i in seen or k not in self.deps[r.i]:
+                continue
+            seen.add(r.i)
+            todo.append(r.i)
+            stack.extend(Ref(j) for j in g.refs(r.i))
+        todo.sort()
+        # first the rules (components stay placeholders), then the nodes: a placeholder is resolved
+        # when the derivative is written into the graph
+        self.plan: dict[int, Any] = {}
+        for j in todo:
+            plan = self.rule(j)
+            if type(plan) is tuple and plan[0] == g.ops[j] != "scene" and not any(self.moves(Ref(x)) for x in g.refs(j)):
+                plan = None                 # an operation on values that do not move
+            self.plan[j] = plan
+        if type(self.body) is not Ref:
+            raise Unsupported("a function whose value is a constant")
+        # the flow's components, read (and the flow checked) by one engine step
+        keys = tuple(sorted(self.read))
+        self._tangent = self.add("prim", (Named(TANGENT), self.S, self.remap[self.flow.i], keys))
+        for j in todo:
+            self.P[j] = self.S if g.ops[j] == "scene" else self.add(g.ops[j], self.primal(g.args[j]))
+            self.D[j] = self.emit(j, self.plan[j])
+        b = self.body.i
+        d = self.D.get(b) if k in self.deps[b] else None
+        value = self.hand_on(d, self.body)
+        # the derivative is the flow's check and the value: the flow is checked whatever the body reads
+        pair = self.add("tuple", (self._tangent, value))
+        return self.add("item", (pair, 1))
+
+    def rule(self, j: int) -> Any:
+        """The derivative of node j as a recipe over the derivatives of its arguments (D) and their
+        primal values (P), checked for support before anything is written."""
+        g = self.g
+        op, a = g.ops[j], g.args[j]
+        if op == "scene":
+            if a[0] != self.k:
+                raise Unsupported("a function that reads another function's scene")
+            return ("scene",)
+        if op == "attr":
+            base, name = a
+            if type(base) is not Ref or g.ops[base.i] != "scene":
+                raise Unsupported(f"an attribute {name!r} of an engine value that moves with the point")
+            if name in ("X", "P", "Y", "Q", "Zc", "Zc_dot"):
+                c = self.component(name)
+                return None if c is None else c
+            if name in ("Phi", "Psi"):
+                return (name, self.component("X"), self.component("P"))
+            if name in CONSTANT_ATTRS:
+                return None
+            if name == "a":
+                return None
+            raise Unsupported(f"the scene's {name} (its derivative along a flow is the scene's business)")
+        if op == "call":
+            scene, name, args, kw = a
+            if kw:
+                raise Unsupported(f"s.{name} with keyword arguments")
+            if type(scene) is not Ref or g.ops[scene.i] != "scene" or g.args[scene.i] != (self.k,):
+                raise Unsupported(f"s.{name} of another scene")
+            if name in CONSTANT_CALLS:
+                return None
+            if name in ("tr", "conj"):
+                return (op, name)
+            if name in ("killing", "realify", "scalar_matrix"):
+                return (op, name)
+            if name == "resolvent":
+                return (op, name) if self.moves(args[0]) else None
+            if name == "mat":
+                rows = args[0]
+                if type(rows) is not Ref or g.ops[rows.i] != "list" or any(
+                        type(x) is not Ref or g.ops[x.i] != "list" for x in g.args[rows.i]):
+                    raise Unsupported("a matrix of entries an engine step made")
+                return (op, name)
+            raise Unsupported(f"s.{name} inside the function (a nested {_NESTED.get(name, name)})")
+        if op in ("add", "sub", "neg", "matmul", "mul", "div", "pow", "T", "inv", "trace", "entry", "block",
+                  "list", "tuple", "dict"):
+            return (op,)
+        if op == "item":
+            base, key = a
+            if type(base) is Ref and g.ops[base.i] in ("list", "tuple", "dict"):
+                return (op,)
+            if type(base) is Ref and g.ops[base.i] == "attr" and g.args[base.i][1] == "a":
+                return None                 # an eigenvalue of A
+            raise Unsupported("a part of an engine value that moves with the point")
+        if op == "fn":
+            raise Unsupported("a function of the scene defined inside the function (a nested derivative, "
+                              "gradient, flow or bracket)")
+        if op == "prim" and type(a[0]) is Named and a[0].qualname in CONSTANT_PRIMITIVES:
+            if any(self.moves(x) for x in a[1:]):
+                raise Unsupported(f"an engine step ({a[0].qualname.rsplit('.', 1)[-1]}) at a moving argument")
+            return None                     # a coordinate basis vector: constant along every flow
+        if op in ("prim", "apply"):
+            what = a[0].qualname.rsplit(".", 1)[-1] if op == "prim" and type(a[0]) is Named else "an operator"
+            raise Unsupported(f"an engine step ({what}) that moves with the point")
+        raise Unsupported(f"a {op} inside the function")
+
+    def moves(self, a: Any) -> bool:
+        """Whether an argument of the body moves with the point (reads the function's scene through
+        something with a nonzero derivative)."""
+        if type(a) is not Ref:
+            return False
+        if self.k not in self.deps[a.i]:
+            return False
+        return self.plan.get(a.i) not in (None, ("scene",))
+
+    def d(self, a: Any) -> Any:
+        """The derivative of an argument (None: 0)."""
+        if type(a) is not Ref or self.k not in self.deps[a.i]:
+            return None
+        return self.D[a.i]
+
+    def dref(self, a: Any) -> Any:
+        """The derivative of an argument as a node (containers built), or None."""
+        x = self.d(a)
+        if type(x) is _Container:
+            return self.hand_on(x, a)
+        return x
+
+    def resolve(self, c: Any) -> Any:
+        if c is None:
+            return None
+        return self.add("item", (self._tangent, c[1]))
+
+    def emit(self, j: int, plan: Any) -> Any:
+        """Write the derivative of one node into the new graph (its arguments' derivatives written)."""
+        if plan is None or plan == ("scene",):
+            return None
+        if plan[0] == "component":
+            return self.resolve(plan)
+        if plan[0] in ("Phi", "Psi"):
+            dX, dP = self.resolve(plan[1]), self.resolve(plan[2])
+            X, P = self.add("attr", (self.S, "X")), self.add("attr", (self.S, "P"))
+            T = lambda x: None if x is None else self.add("T", (x,))      # noqa: E731
+            mm = lambda x, y: None if x is None or y is None else self.add("matmul", (x, y))   # noqa: E731
+            if plan[0] == "Phi":        # Φ = PXᵀ − XPᵀ
+                first = self.sum(mm(dP, self.add("T", (X,))), mm(P, T(dX)))
+                second = self.sum(mm(dX, self.add("T", (P,))), mm(X, T(dP)))
+            else:                       # Ψ = XᵀP − PᵀX
+                first = self.sum(mm(T(dX), P), mm(self.add("T", (X,)), dP))
+                second = self.sum(mm(T(dP), X), mm(self.add("T", (P,)), dX))
+            return self.sum(first, second, "sub")
+        return self._op(j)
+
+    def _op(self, j: int) -> Any:      # noqa: C901 - one branch per op, as in the evaluator
+        g, add, d, p = self.g, self.add, self.d, self.primal
+        op, a = g.ops[j], g.args[j]
+        if op in ("add", "sub"):
+            return self.sum(d(a[0]), d(a[1]), op)
+        if op == "neg":
+            x = d(a[0])
+            return None if x is None else add("neg", (x,))
+        if op in ("T", "trace"):
+            x = d(a[0])
+            return None if x is None else add(op, (x,))
+        if op in ("matmul", "mul"):
+            x, y = d(a[0]), d(a[1])
+            left = None if x is None else add(op, (x, p(a[1])))
+            right = None if y is None else add(op, (p(a[0]), y))
+            return self.sum(left, right)
+        if op == "div":                 # (a/c)' = a'/c − (a/c)·c'/c
+            x, y = d(a[0]), d(a[1])
+            c = p(a[1])
+            left = None if x is None else add("div", (x, c))
+            right = None if y is None else add("div", (add("mul", (self.P[j], y)), c))
+            return self.sum(left, right, "sub")
+        if op == "pow":                 # (cᵏ)' = k·cᵏ⁻¹·c'
+            x, e = d(a[0]), a[1]
+            if x is None or e == 0:
+                return None
+            if e == 1:
+                return x
+            return add("mul", (add("mul", (e, add("pow", (p(a[0]), e - 1)))), x))
+        if op == "inv":                 # (M⁻¹)' = −M⁻¹ M' M⁻¹
+            x = d(a[0])
+            if x is None:
+                return None
+            return add("neg", (add("matmul", (add("matmul", (self.P[j], x)), self.P[j])),))
+        if op == "entry":
+            x = self.dref(a[0])
+            return None if x is None else add("entry", (x,) + tuple(a[1:]))
+        if op == "block":
+            rows, cols, blocks = a
+            ds = [self.dref(b) for b in blocks]
+            if all(x is None for x in ds):
+                return None
+            return add("block", (rows, cols, tuple(x if x is not None else self.zero(b) for x, b in zip(ds, blocks))))
+        if op in ("list", "tuple", "dict"):
+            elems = a[1] if op == "dict" else a
+            parts = [d(x) for x in elems]
+            if all(x is None for x in parts):
+                return None
+            return _Container(op, a[0] if op == "dict" else None, parts, list(elems))
+        if op == "item":
+            base, key = a
+            bop, ba = g.ops[base.i], g.args[base.i]
+            if bop == "dict":
+                keys, vals = ba
+                return d(vals[keys.index(key)]) if key in keys else None
+            return d(ba[key]) if type(key) is int and -len(ba) <= key < len(ba) else None
+        if op == "call":
+            name, args = a[1], a[2]
+            S = self.S
+            if name in ("tr", "conj"):
+                x = self.dref(args[0])
+                return None if x is None else add("call", (S, name, (x,), ()))
+            if name == "resolvent":        # R(μ) = (μI − A)⁻¹: R' = −μ'·R²
+                x = self.dref(args[0])
+                if x is None:
+                    return None
+                R = self.P[j]
+                return add("neg", (add("mul", (x, add("matmul", (R, R)))),))
+            if name == "killing":
+                x, y = self.dref(args[0]), self.dref(args[1])
+                left = None if x is None else add("call", (S, "killing", (x, p(args[1])), ()))
+                right = None if y is None else add("call", (S, "killing", (p(args[0]), y), ()))
+                return self.sum(left, right)
+            if name == "realify":
+                x, y = self.dref(args[0]), self.dref(args[1])
+                if x is None and y is None:
+                    return None
+                x = x if x is not None else self.zero(args[0])
+                y = y if y is not None else self.zero(args[1])
+                return add("call", (S, "realify", (x, y), ()))
+            if name == "scalar_matrix":
+                x = self.dref(args[0])
+                return None if x is None else add("call", (S, "scalar_matrix", (x,) + tuple(p(args[1:])), ()))
+            if name == "mat":
+                rows, tags = args
+                cells = [[d(c) for c in g.args[row.i]] for row in g.args[rows.i]]
+                if all(c is None for row in cells for c in row):
+                    return None
+                new_rows = tuple(add("list", tuple(c if c is not None else 0 for c in row)) for row in cells)
+                return add("call", (S, "mat", (add("list", new_rows), tags), ()))
+        raise AssertionError(f"no rule for {op}")
+
+
+_NESTED = {"d": "derivative along a flow", "gradient": "gradient", "dirac_flow": "flow",
+           "multiplier_flow": "flow", "canonical_flow": "flow", "bracket": "Poisson bracket",
+           "canonical_bracket": "Poisson bracket", "jacobian": "Jacobian", "tangent": "tangent scene",
+           "constraint_bracket_matrix": "matrix of constraint brackets", "sym_operator": "operator"}
+
+
+# ---------------------------------------------------------------------------------------------
+# gradients: reverse mode over the matrix operations (the cyclic derivative of a trace form)
+
+#: the engine step that hands a gradient over as the scene hands its own (registered below)
+GRADIENT = "stiefelsym.ir.derivative.gradient_pair"
+
+
+def gradient_pair(scene: Any, HX: Any, HP: Any) -> tuple:
+    """(∂H/∂X, ∂H/∂P) computed by the graph, as the scene's own gradient hands them on (the scene's
+    checks of a gradient made, the spaces n x r).  Engine step of the transformed graphs."""
+    f = getattr(scene, "_gradient_pair", None)
+    if f is None:
+        raise TypeError(f"a gradient on a {type(scene).__name__} (a scene with no gradients)")
+    return f(HX, HP)
+
+
+PRIMITIVES[GRADIENT] = gradient_pair
+
+_S, _M = "number", "matrix"
+#: scene matrices and numbers the gradient treats as constants (only X and P are its variables)
+_GRAD_CONSTANT_ATTRS = CONSTANT_ATTRS | {"Y", "Q", "Zc", "Zc_dot"}
+_MATRIX_CALLS = frozenset({"resolvent", "mat", "zeros", "identity", "scalar_matrix", "generic", "general_params",
+                           "conj", "realify"})
+_SCALAR_CALLS = frozenset({"tr", "killing", "q", "const", "scalar"})
+
+
+class _Gradient(_Derivative):
+    """(∂H/∂X, ∂H/∂P) of one ``gradient`` node's function H, a number built by matrix operations:
+    the adjoints of the body's nodes, from the value down to X and P (a matrix's adjoint is a sum of
+    matrices and of a multiple of I, which a trace makes and a product absorbs)."""
+
+    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, i: int) -> None:
+        self.g, self.deps, self.new, self.remap = g, deps, new, remap
+        scene, name, args, kw = g.args[i]
+        if kw or len(args) != 1:
+            raise Unsupported("a gradient with further arguments")
+        f = args[0]
+        if type(scene) is not Ref or g.ops[scene.i] != "scene" or g.args[scene.i] != (0,):
+            raise Unsupported("a gradient on a scene other than the claim's (inside a function of the scene)")
+        if type(f) is not Ref or g.ops[f.i] != "fn":
+            raise Unsupported("a gradient of something that is not a traced function")
+        self.k, arity, self.body = g.args[f.i]
+        if arity != 1 or type(self.body) is not Ref:
+            raise Unsupported("a gradient of a function of more than the scene")
+        self.S = remap[scene.i]
+        self.P: dict[int, Ref] = {}
+
+    def kind(self, a: Any) -> str:
+        if type(a) is not Ref:
+            return _S
+        return self.kinds.get(a.i) or self._kind_of(a.i)
+
+    def _kind_of(self, j: int) -> str:
+        g = self.g
+        op, a = g.ops[j], g.args[j]
+        if op in ("matmul", "T", "inv", "block"):
+            return _M
+        if op in ("trace", "pow", "const"):
+            return _S
+        if op in ("add", "sub", "neg", "div"):
+            return self.kind(a[0])
+        if op == "mul":
+            return _M if _M in (self.kind(a[0]), self.kind(a[1])) else _S
+        if op == "attr":
+            if a[1] in MATRICES:
+                return _M
+            if a[1] in NUMBERS:
+                return _S
+        if op == "call":
+            if a[1] in _MATRIX_CALLS:
+                return _M
+            if a[1] in _SCALAR_CALLS:
+                return _S
+        if op == "entry":
+            return _S if all(type(x) is int for x in a[1:]) else _M
+        if op == "item" and type(a[0]) is Ref and g.ops[a[0].i] == "attr" and g.args[a[0].i][1] == "a":
+            return _S
+        raise Unsupported(f"a {op} whose kind (number or matrix) the graph does not show")
+
+    def build(self) -> Ref:
+        g, k = self.g, self.k
+        todo, seen = [], set()
+        stack = [self.body]
+        while stack:
+            r = stack.pop()
+            if r.i in seen or k not in self.deps[r.i]:
+                continue
+            seen.add(r.i)
+            todo.append(r.i)
+            stack.extend(Ref(j) for j in g.refs(r.i))
+        todo.sort()
+        self.kinds: dict[int, str] = {}
+        self.moves_set: set[int] = set()
+        for j in todo:
+            if (g.ops[j] == "attr" and g.args[j][1] in ("X", "P", "Phi", "Psi")) or any(
+                    r in self.moves_set for r in g.refs(j)):
+                self.moves_set.add(j)
+        for j in todo:
+            if g.ops[j] != "scene":
+                self.kinds[j] = self._kind_of(j)
+                self.check(j)
+        if k in self.deps[self.body.i] and self.kinds[self.body.i] != _S:
+            raise Unsupported("a gradient of a function whose value is not a number")
+        # the point first, then the body's values (the scene's reverse mode makes its leaves X, P
+        # before it evaluates H: parameters drawn on first use are drawn in that order)
+        X, P = self.add("attr", (self.S, "X")), self.add("attr", (self.S, "P"))
+        for j in todo:
+            self.P[j] = self.S if g.ops[j] == "scene" else self.add(g.ops[j], self.primal(g.args[j]))
+        # adjoints, from the value down: a matrix's adjoint is (terms, coefficient of I), a number's a term list
+        adj: dict[int, tuple[list, list]] = {}
+        grads: dict[str, list] = {"X": [], "P": []}
+        if k in self.deps[self.body.i]:
+            adj[self.body.i] = ([1], [])
+        for j in reversed(todo):
+            if j not in adj or g.ops[j] == "scene":
+                continue
+            terms, ident = adj.pop(j)
+            self.propagate(j, terms, ident, adj, grads)
+        HX = self.total(grads["X"], X)
+        HP = self.total(grads["P"], P)
+        return self.add("prim", (Named(GRADIENT), self.S, HX, HP))
+
+    def check(self, j: int) -> None:
+        """Refuse (before anything is written) what the backward sweep has no rule for."""
+        g = self.g
+        op, a = g.ops[j], g.args[j]
+        if op == "attr":
+            if type(a[0]) is not Ref or g.ops[a[0].i] != "scene":
+                raise Unsupported(f"an attribute {a[1]!r} of an engine value that moves with the point")
+            if a[1] not in ("X", "P", "Phi", "Psi") and a[1] not in _GRAD_CONSTANT_ATTRS:
+                raise Unsupported(f"the scene's {a[1]} in a gradient")
+        elif op == "call":
+            if a[1] in CONSTANT_CALLS:
+                return
+            if a[1] == "resolvent" and not self.moving(a[2][0]):
+                return
+            if a[1] in ("tr", "killing"):
+                return
+            raise Unsupported(f"s.{a[1]} inside the function of a gradient")
+        elif op == "item":
+            if not (type(a[0]) is Ref and g.ops[a[0].i] == "attr" and g.args[a[0].i][1] == "a"):
+                raise Unsupported("a part of a value inside the function of a gradient")
+        elif op in ("entry", "block"):
+            raise Unsupported(f"an {op} inside the function of a gradient (its adjoint needs coordinates)")
+        elif op not in ("add", "sub", "neg", "matmul", "mul", "div", "pow", "T", "inv", "trace", "const"):
+            raise Unsupported(f"a {op} inside the function of a gradient")
+
+    def moving(self, a: Any) -> bool:
+        """Whether an argument reads X or P (through the function's scene)."""
+        return type(a) is Ref and a.i in self.moves_set
+
+    # -- the backward sweep -----------------------------------------------------------------------
+    def scalar_sum(self, terms: list) -> Any:
+        lits = [t for t in terms if type(t) is not Ref]
+        refs = [t for t in terms if type(t) is Ref]
+        c = sum(lits) if lits else 0
+        acc = None
+        for t in refs:
+            acc = t if acc is None else self.add("add", (acc, t))
+        if acc is None:
+            return c
+        return acc if c == 0 else self.add("add", (acc, self.lit(c)))
+
+    def lit(self, x: Any) -> Any:
+        """A literal number as an argument: an int as it is, a fraction as the scene's constant (the
+        backends' numbers take ints, not Fractions)."""
+        if type(x) is Ref or type(x) is int:
+            return x
+        x = Fraction(x)
+        if x.denominator == 1:
+            return int(x)
+        return self.add("call", (self.S, "const", (x,), ()))
+
+    def smul(self, x: Any, y: Any) -> Any:
+        """x·y for numbers (refs or literals), folding literal ones."""
+        if type(x) is not Ref and type(y) is not Ref:
+            return x * y
+        x, y = (v if type(v) is Ref or v == 1 else self.lit(v) for v in (x, y))
+        if type(x) is not Ref and x == 1:
+            return y
+        if type(y) is not Ref and y == 1:
+            return x
+        if type(x) is not Ref:
+            return self.add("mul", (x, y))
+        return self.add("mul", (x, y)) if type(y) is Ref else self.add("mul", (y, x))
+
+    def mat_sum(self, terms: list) -> Any:
+        acc = None
+        for t in terms:
+            acc = t if acc is None else self.add("add", (acc, t))
+        return acc
+
+    def send(self, adj: dict, a: Any, terms: list, ident: list = ()) -> None:
+        if not self.moving(a):
+            return
+        t, i = adj.setdefault(a.i, ([], []))
+        t.extend(terms)
+        i.extend(ident)
+
+    def leaf(self, grads: dict, name: str, terms: list) -> None:
+        grads[name].extend(terms)
+
+    def propagate(self, j: int, terms: list, ident: list, adj: dict, grads: dict) -> None:  # noqa: C901
+        g, add, p = self.g, self.add, self.primal
+        op, a = g.ops[j], g.args[j]
+        T = lambda x: add("T", (x,))                        # noqa: E731
+        mm = lambda x, y: add("matmul", (x, y))             # noqa: E731
+        if self.kinds[j] == _S:
+            s = self.scalar_sum(terms)
+            if type(s) is not Ref and s == 0:
+                return
+            if op == "add":
+                self.send(adj, a[0], [s])
+                self.send(adj, a[1], [s])
+            elif op == "sub":
+                self.send(adj, a[0], [s])
+                self.send(adj, a[1], [self.neg(s)])
+            elif op == "neg":
+                self.send(adj, a[0], [self.neg(s)])
+            elif op == "mul":                               # both numbers
+                self.send(adj, a[0], [self.smul(s, p(a[1]))])
+                self.send(adj, a[1], [self.smul(p(a[0]), s)])
+            elif op == "div":                               # v = x/c: x̄ = s/c, c̄ = −s·v/c
+                c = p(a[1])
+                self.send(adj, a[0], [self.div(s, c)])
+                self.send(adj, a[1], [self.div(self.neg(self.smul(s, self.P[j])), c)])
+            elif op == "pow":                               # (xᵉ)' = e·xᵉ⁻¹
+                e = a[1]
+                if e != 0:
+                    base = p(a[0]) if e == 2 else add("pow", (p(a[0]), e - 1))
+                    self.send(adj, a[0], [self.smul(s, self.smul(e, base))])
+            elif op in ("trace",) or (op == "call" and a[1] == "tr"):
+                M = a[0] if op == "trace" else a[2][0]
+                self.send(adj, M, [], [s])
+            elif op == "call" and a[1] == "killing":        # ⟨a, b⟩ = −½ tr(ab)
+                x, y = a[2]
+                h = self.smul(Fraction(-1, 2), s)
+                self.send(adj, x, [self.mscale(h, T(p(y)))])
+                self.send(adj, y, [self.mscale(h, T(p(x)))])
+            elif op == "attr" or op == "call" or op == "const" or op == "item":
+                return
+            else:
+                raise Unsupported(f"no rule for a {op} of numbers")
+            return
+        # a matrix node: adjoint Σ terms + (Σ ident)·I
+        M = self.mat_sum(terms)
+        c = self.scalar_sum(ident) if ident else 0
+        has_c = type(c) is Ref or c != 0
+        if M is None and not has_c:
+            return
+        if op == "add":
+            self.send(adj, a[0], [M] if M is not None else [], [c] if has_c else [])
+            self.send(adj, a[1], [M] if M is not None else [], [c] if has_c else [])
+        elif op in ("sub", "neg"):
+            nM = [add("neg", (M,))] if M is not None else []
+            nc = [self.neg(c)] if has_c else []
+            if op == "sub":
+                self.send(adj, a[0], [M] if M is not None else [], [c] if has_c else [])
+                self.send(adj, a[1], nM, nc)
+            else:
+                self.send(adj, a[0], nM, nc)
+        elif op == "T":
+            self.send(adj, a[0], [T(M)] if M is not None else [], [c] if has_c else [])
+        elif op == "matmul":                                # C = AB: Ā = C̄Bᵀ, B̄ = AᵀC̄
+            A, B = p(a[0]), p(a[1])
+            left = ([mm(M, T(B))] if M is not None else []) + ([self.mscale(c, T(B))] if has_c else [])
+            right = ([mm(T(A), M)] if M is not None else []) + ([self.mscale(c, T(A))] if has_c else [])
+            self.send(adj, a[0], left)
+            self.send(adj, a[1], right)
+        elif op == "mul":                                   # C = x·Y (x a number)
+            xs, ys = (a[0], a[1]) if self.kind(a[0]) == _S else (a[1], a[0])
+            x, Y = p(xs), p(ys)
+            self.send(adj, ys, [self.mscale(x, M)] if M is not None else [], [self.smul(x, c)] if has_c else [])
+            self.send(adj, xs, self.inner(M, c if has_c else None, Y))
+        elif op == "div":                                   # C = Y/x: Ȳ = C̄/x, x̄ = −⟨C̄, C⟩/x
+            x = p(a[1])
+            self.send(adj, a[0], [add("div", (M, x))] if M is not None else [],
+                      [self.div(c, x)] if has_c else [])
+            inner = self.inner(M, c if has_c else None, self.P[j])
+            if inner:
+                self.send(adj, a[1], [self.div(self.neg(self.scalar_sum(inner)), x)])
+        elif op == "inv":                                   # C = M⁻¹: M̄ = −Cᵀ C̄ Cᵀ
+            C = T(self.P[j])
+            parts = ([mm(mm(C, M), C)] if M is not None else []) + ([self.mscale(c, mm(C, C))] if has_c else [])
+            self.send(adj, a[0], [add("neg", (x,)) for x in parts])
+        elif op == "attr" and a[1] in ("X", "P"):
+            if has_c:
+                raise Unsupported("a multiple of I as the adjoint of X or P")
+            self.leaf(grads, a[1], [M])
+        elif op == "attr" and a[1] in ("Phi", "Psi"):
+            if M is None:
+                return                                      # c·I: Φ and Ψ are skew, ⟨I, dΦ⟩ = 0
+            X, P = self.add("attr", (self.S, "X")), self.add("attr", (self.S, "P"))
+            K = add("sub", (M, T(M)))
+            if a[1] == "Phi":                               # Φ = PXᵀ − XPᵀ: X̄ = −(C̄ − C̄ᵀ)P, P̄ = (C̄ − C̄ᵀ)X
+                self.leaf(grads, "X", [add("neg", (mm(K, P),))])
+                self.leaf(grads, "P", [mm(K, X)])
+            else:                                           # Ψ = XᵀP − PᵀX: X̄ = −P(C̄ − C̄ᵀ), P̄ = X(C̄ − C̄ᵀ)
+                self.leaf(grads, "X", [add("neg", (mm(P, K),))])
+                self.leaf(grads, "P", [mm(X, K)])
+        elif op in ("attr", "call", "const"):
+            return                                          # constants
+        else:
+            raise Unsupported(f"no rule for a {op} of matrices")
+
+    def div(self, s: Any, c: Any) -> Any:
+        """s/c for numbers (refs or exact literals)."""
+        if type(s) is not Ref and s == 0:
+            return 0
+        if type(s) is not Ref and type(c) is not Ref:
+            return Fraction(s) / c
+        return self.add("div", (self.lit(s), self.lit(c)))
+
+    def neg(self, s: Any) -> Any:
+        return -s if type(s) is not Ref else self.add("neg", (s,))
+
+    def mscale(self, x: Any, M: Ref) -> Ref:
+        """x·M (x a number, ref or literal)."""
+        if type(x) is not Ref and x == 1:
+            return M
+        return self.add("mul", (self.lit(x), M))
+
+    def inner(self, M: Any, c: Any, Y: Ref) -> list:
+        """⟨M + cI, Y⟩ = tr(MᵀY) + c·tr(Y), as terms."""
+        out = []
+        if M is not None:
+            out.append(self.add("call", (self.S, "tr", (self.add("matmul", (self.add("T", (M,)), Y)),), ())))
+        if c is not None:
+            out.append(self.smul(c, self.add("call", (self.S, "tr", (Y,), ()))))
+        return out
+
+    def total(self, terms: list, leaf: Ref) -> Ref:
+        M = self.mat_sum(terms)
+        return M if M is not None else self.add("mul", (leaf, 0))
+
+
+#: the calls the pass rewrites, by scene method
+_PASSES = {"d": _Derivative, "gradient": _Gradient}

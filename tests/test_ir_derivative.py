@@ -1,0 +1,463 @@
+"""The derivative along a flow as a graph transform (stiefelsym.ir.derivative): it computes what the
+scene's dual numbers compute, on random functions and flows and on every claim of the catalog, with the
+same refusals; a wrong rule or a wrong flow is caught; a body it cannot differentiate is left to the
+scene with a reason; the digest of a claim stays the digest of its graph as traced."""
+from __future__ import annotations
+
+import random
+
+import pytest
+
+from stiefelsym import comm
+from stiefelsym.claims import Claim, Size, admissible
+from stiefelsym.fields import ModularField
+from stiefelsym.free import FreeScene
+from stiefelsym.ir import compile_claim
+from stiefelsym.ir import derivative as deriv
+from stiefelsym.ir.derivative import coverage, derivatives
+from stiefelsym.ir.evaluate import evaluate
+from stiefelsym.ir.statements import Rank
+from stiefelsym.matrix import Mat
+from stiefelsym.methods import _entries
+from stiefelsym.runner import graph_digest, run_one
+from stiefelsym.scene import REALIZATIONS, Scene
+
+P61 = 2 ** 61 - 1
+STANDARD = (REALIZATIONS["standard"].name, REALIZATIONS["standard"].build)
+
+
+def _same(a, b) -> bool:
+    if isinstance(a, Mat):
+        return isinstance(b, Mat) and a._shape() == b._shape() and a.tags == b.tags and (a - b).is_zero()
+    if isinstance(a, (list, tuple)):
+        return type(a) is type(b) and len(a) == len(b) and all(_same(x, y) for x, y in zip(a, b))
+    if isinstance(a, dict):
+        return a.keys() == b.keys() and all(_same(a[k], b[k]) for k in a)
+    if isinstance(a, Rank):
+        return _same(a.matrix, b.matrix) and a.expected == b.expected
+    return a == b
+
+
+def _both(g, n, r, realization="standard", seed=1):
+    """The graph's value on a modular scene, evaluated as traced (dual numbers, reverse mode) and
+    transformed, each on a fresh scene at the same point: (outcome, value or error text, records)
+    twice.  (The point's parameters are drawn on first use, and the transform may change the order
+    of first uses inside a function's body: the second scene gets the first one's parameters.)"""
+    out, drawn = [], {}
+    for gg in (g, derivatives(g)):
+        s = Scene(n, r, ModularField(P61), chart="cayley", rng=random.Random(seed), realization=realization)
+        s._params.update(drawn)
+        try:
+            out.append(("ok", evaluate(gg, s), sorted(set(s.tracker.used))))
+        except Exception as exc:     # noqa: BLE001 - the two evaluations must fail alike
+            out.append(("error", type(exc).__name__, sorted(set(s.tracker.used))))
+        drawn = dict(s._params)
+    return out
+
+
+def _agree(g, n, r, realization="standard", seed=1) -> bool:
+    (k0, v0, u0), (k1, v1, u1) = _both(g, n, r, realization, seed)
+    return k0 == k1 and u0 == u1 and (_same(v0, v1) if k0 == "ok" else v0 == v1)
+
+
+def _claim(func, cid="deriv-test", sizes=None):
+    return Claim(id=cid, paper=(), kind="id", section="test", func=func, sizes=sizes or admissible(4))
+
+
+# -- random functions along random flows ------------------------------------------------------
+
+def _expr(rng: random.Random, kind: str, depth: int) -> tuple:
+    """A random well-typed expression (a recipe, interpreted by :func:`_build`) of kind nr, rr, nn, sc."""
+    leaves = {"nr": [("X",), ("P",), ("gen",)], "rr": [("Psi",), ("Ir",), ("eta",)],
+              "nn": [("Phi",), ("A",), ("res",), ("In",)], "sc": [("lam",), ("q",), ("kappa",)]}
+    if depth <= 0 or rng.random() < 0.2:
+        return rng.choice(leaves[kind])
+    d = depth - 1
+    forms = {
+        "nr": [("mm", "nn", "nr"), ("mm", "nr", "rr"), ("add", "nr", "nr"), ("sub", "nr", "nr"),
+               ("smul", "sc", "nr"), ("neg", "nr"), ("div", "nr", "sc1")],
+        "rr": [("tmm", "nr", "nr"), ("add", "rr", "rr"), ("T", "rr"), ("inv1", "rr"), ("smul", "sc", "rr"),
+               ("block", "rr")],
+        "nn": [("mmT", "nr", "nr"), ("mm", "nn", "nn"), ("sub", "nn", "nn"), ("T", "nn"), ("smul", "sc", "nn"),
+               ("res_at", "sc")],
+        "sc": [("tr", "rr"), ("tr", "nn"), ("killing", "nn", "nn"), ("mul", "sc", "sc"), ("add", "sc", "sc"),
+               ("pow", "sc"), ("entry", "rr"), ("div", "sc", "sc1"), ("trace", "rr")],
+    }
+    form = rng.choice(forms[kind])
+    args = []
+    for a in form[1:]:
+        if a == "sc1":
+            args.append(_expr(rng, "sc", d - 1))
+        else:
+            args.append(_expr(rng, a, d))
+    return (form[0],) + tuple(args)
+
+
+def _build(t, e):
+    op, args = e[0], e[1:]
+    if op in ("X", "P", "Psi", "Ir", "eta", "Phi", "A", "In", "lam", "kappa"):
+        return getattr(t, op)
+    if op == "gen":
+        return t.generic("B", "n", "r")
+    if op == "res":
+        return t.resolvent(t.lam)
+    if op == "q":
+        return t.q(3, 7)
+    x = [_build(t, a) for a in args]
+    if op == "mm":
+        return x[0] @ x[1]
+    if op == "tmm":
+        return x[0].T @ x[1]
+    if op == "mmT":
+        return x[0] @ x[1].T
+    if op == "add":
+        return x[0] + x[1]
+    if op == "sub":
+        return x[0] - x[1]
+    if op == "smul":
+        return x[0] * x[1]
+    if op == "mul":
+        return x[0] * x[1]
+    if op == "neg":
+        return -x[0]
+    if op == "T":
+        return x[0].T
+    if op == "inv1":                    # I + MᵀM is invertible at a generic point
+        return (t.Ir + x[0].T @ x[0]).inv()
+    if op == "block":
+        from stiefelsym import block
+        return block([[x[0], t.Ir]]) @ block([[x[0].T], [x[0]]])
+    if op == "res_at":                  # a resolvent at a moving μ
+        return t.resolvent(t.lam + x[0])
+    if op == "tr":
+        return t.tr(x[0])
+    if op == "trace":
+        return x[0].trace()
+    if op == "killing":
+        return t.killing(x[0], x[1])
+    if op == "pow":
+        return x[0] ** 3
+    if op == "entry":
+        return x[0][0, 0]
+    if op == "div":
+        return x[0] / (t.q(1) + x[1] * x[1])
+    raise AssertionError(op)
+
+
+def _random_claim(seed: int):
+    rng = random.Random(seed)
+    body = [_expr(rng, k, 4) for k in ("nr", "rr", "nn", "sc")]
+    flow_kind = rng.choice(["dict", "dict-X", "dirac"])
+    comps = (_expr(rng, "nr", 2), _expr(rng, "nr", 2))
+    H = _expr(rng, "sc", 3)
+
+    def func(s):
+        if flow_kind == "dirac":
+            flow = s.dirac_flow(lambda t: _build(t, H))
+        elif flow_kind == "dict":
+            flow = {"X": _build(s, comps[0]), "P": _build(s, comps[1])}
+        else:
+            flow = {"X": _build(s, comps[0])}
+        return {"d": s.d(lambda t: [_build(t, e) for e in body], flow)}
+    return func, flow_kind
+
+
+@pytest.mark.parametrize("seed", range(24))
+def test_random_functions_along_random_flows_agree_with_dual_numbers(seed):
+    func, _ = _random_claim(seed)
+    g = compile_claim(func, 3, 2, STANDARD)
+    assert [why for _, why in coverage(g)] == [None]
+    assert _agree(g, 3, 2)
+
+
+_NO_ADJOINT = ("'res_at'", "'entry'", "'block'")
+
+
+def _scalar_function(rng: random.Random, depth: int, banned=_NO_ADJOINT) -> tuple:
+    while True:
+        e = _expr(rng, "sc", depth)
+        if not any(w in repr(e) for w in banned) and ("'X'" in repr(e) or "'P'" in repr(e) or "'Phi'" in repr(e)
+                                                       or "'Psi'" in repr(e)):
+            return e
+
+
+@pytest.mark.parametrize("seed", range(24))
+def test_random_gradients_agree_with_reverse_mode(seed):
+    rng = random.Random(500 + seed)
+    H = _scalar_function(rng, 4)
+
+    def func(s):
+        HX, HP = s.gradient(lambda t: _build(t, H))
+        return {"HX": HX, "HP": HP}
+    g = compile_claim(func, 3, 2, STANDARD)
+    assert [why for _, why in coverage(g, "gradient")] == [None]
+    assert _agree(g, 3, 2)
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_random_gradients_agree_on_the_free_algebra(seed):
+    rng = random.Random(700 + seed)
+    H = _scalar_function(rng, 3, _NO_ADJOINT + ("'inv1'", "'div'"))
+
+    def func(s):
+        HX, HP = s.gradient(lambda t: _build(t, H))
+        return {"HX": HX, "HP": HP}
+    g = compile_claim(func, None, None, STANDARD)
+    assert [why for _, why in coverage(g, "gradient")] == [None]
+    outs = []
+    for gg in (g, derivatives(g)):
+        s = FreeScene(lazy=True)
+        v = evaluate(gg, s)
+        outs.append([(pos, str(s.reduce(x).normal_form)) for k in ("HX", "HP") for pos, x in _entries(v[k], k)])
+    assert outs[0] == outs[1]
+    for gg in (g, derivatives(g)):      # an eager scene has reduced H: its ambient gradient is refused
+        with pytest.raises(Exception, match="needs coordinates|ambient gradient"):
+            evaluate(gg, FreeScene(lazy=False))
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_random_functions_agree_on_the_free_algebra(seed):
+    rng = random.Random(1000 + seed)
+    # the free algebra has no entries, inverses or quotients (they need coordinates)
+    free = ("'res_at'", "'entry'", "'inv1'", "'div'", "'block'")
+
+    def expr(kind, depth):
+        while True:
+            e = _expr(rng, kind, depth)
+            if not any(w in repr(e) for w in free):
+                return e
+    body = [expr(k, 3) for k in ("nr", "rr", "sc")]
+    comps = (expr("nr", 2), expr("nr", 2))
+
+    def func(s):
+        return {"d": s.d(lambda t: [_build(t, e) for e in body], {"X": _build(s, comps[0]), "P": _build(s, comps[1])})}
+    g = compile_claim(func, None, None, STANDARD)
+    outs = []
+    for gg in (g, derivatives(g)):
+        s = FreeScene(lazy=True)
+        v = evaluate(gg, s)
+        outs.append([(pos, str(s.reduce(x).normal_form)) for pos, x in _entries(v["d"], "d")])
+    assert outs[0] == outs[1]
+
+
+# -- the catalog ---------------------------------------------------------------------------------
+
+def _catalog_graphs(catalog, n, r):
+    for c in catalog:
+        cons = REALIZATIONS[c.realization]
+        try:
+            g = compile_claim(c.func, n, r, (cons.name, cons.build))
+        except Exception:   # noqa: BLE001 - a claim not traced at this size has no d nodes here
+            continue
+        if any(why is None for _, why in coverage(g)):
+            yield c, g
+
+
+def test_every_claim_of_the_catalog_evaluates_alike(catalog):
+    seen = 0
+    for c, g in _catalog_graphs(catalog, 4, 2):
+        assert _agree(g, 4, 2, c.realization), c.id
+        seen += 1
+    assert seen >= 50
+
+
+def test_coverage_of_the_catalog(catalog):
+    """At (4,2) the pass differentiates every d node but those inside a function of the scene."""
+    total = done = 0
+    reasons = set()
+    for c in catalog:
+        cons = REALIZATIONS[c.realization]
+        try:
+            g = compile_claim(c.func, 4, 2, (cons.name, cons.build))
+        except Exception:   # noqa: BLE001
+            continue
+        for _, why in coverage(g):
+            total += 1
+            done += why is None
+            if why is not None:
+                reasons.add(why)
+    assert total >= 150 and total - done <= 4
+    assert reasons <= {"a derivative on a scene other than the claim's (inside a function of the scene)"}
+
+
+# -- negative controls ---------------------------------------------------------------------------
+
+def H_neumann(s):
+    XtP = s.X.T @ s.P
+    return s.tr(s.P.T @ s.P) / 2 - (s.q(1, 2) + s.kappa) * s.tr(XtP @ XtP) + s.tr(s.X.T @ s.A @ s.X) / 2
+
+
+def prep(s):
+    flow = s.dirac_flow(H_neumann)
+    XX = s.X @ s.X.T
+    return {"dPhi/dt": s.d(lambda t: t.Phi, flow) - comm(XX, s.A),
+            "d(XX^T)/dt": s.d(lambda t: t.X @ t.X.T, flow) - comm(s.Phi, XX)}
+
+
+def prep_wrong_flow(s):
+    """(prep) along the flow with Ẋ and Ṗ swapped: false."""
+    f = s.dirac_flow(H_neumann)
+    flow = {"X": f.Pdot, "P": f.Xdot}
+    XX = s.X @ s.X.T
+    return {"dPhi/dt": s.d(lambda t: t.Phi, flow) - comm(XX, s.A),
+            "d(XX^T)/dt": s.d(lambda t: t.X @ t.X.T, flow) - comm(s.Phi, XX)}
+
+
+@pytest.mark.parametrize("method", ["exact", "modular", "float", "free"])
+def test_a_true_flow_claim_holds_and_a_wrong_flow_fails(method):
+    size = None if method == "free" else Size(4, 2)
+    ok = run_one(_claim(prep, "prep-test"), size, method, 0)
+    assert ok.verdict in ("proved", "checked", "numeric")
+    bad = run_one(_claim(prep_wrong_flow, "prep-wrong-flow"), size, method, 0)
+    assert bad.verdict in ("fails", "undecided") if method == "free" else bad.verdict == "fails"
+
+
+def test_a_wrong_rule_is_caught(monkeypatch):
+    """The product rule with its second term dropped: the transformed graph no longer agrees with
+    the dual numbers, and a true claim fails under it."""
+    g = compile_claim(prep, 4, 2, STANDARD)
+    assert _agree(g, 4, 2)
+    real = deriv._Derivative._op
+
+    def dropped(self, j):
+        op, a = self.g.ops[j], self.g.args[j]
+        if op == "matmul":
+            x = self.d(a[0])
+            return None if x is None else self.add("matmul", (x, self.primal(a[1])))
+        return real(self, j)
+    monkeypatch.setattr(deriv._Derivative, "_op", dropped)
+    g2 = compile_claim(lambda s: {"d(XX^T)/dt": prep(s)["d(XX^T)/dt"]}, 4, 2, STANDARD)
+    g2.cache.pop("derived", None)
+    assert not _agree(g2, 4, 2)
+    res = run_one(_claim(lambda s: {"d(XX^T)/dt": prep(s)["d(XX^T)/dt"]}, "prep-dropped"), Size(4, 2), "modular", 0)
+    assert res.verdict == "fails"
+
+
+def test_a_wrong_tangent_component_is_caught(monkeypatch):
+    """The flow's X component read as its P component: caught by the comparison and by the verdict."""
+    real = deriv._Derivative.resolve
+
+    def swapped(self, c):
+        if c is not None and c[1] in ("X", "P"):
+            c = ("component", "P" if c[1] == "X" else "X")
+            self.read.add(c[1])
+        return real(self, c)
+    monkeypatch.setattr(deriv._Derivative, "resolve", swapped)
+
+    def claim_fn(s):
+        flow = s.dirac_flow(H_neumann)
+        return {"d(XX^T)/dt": s.d(lambda t: t.X @ t.X.T, flow) - comm(s.Phi, s.X @ s.X.T)}
+    g = compile_claim(claim_fn, 4, 2, STANDARD)
+    # the keys the tangent step reads were fixed before the swap: read both
+    monkeypatch.setattr(deriv._Derivative, "component", lambda self, key: (self.read.update({"X", "P"}), ("component", key))[1])
+    g.cache.pop("derived", None)
+    assert not _agree(g, 4, 2)
+    assert run_one(_claim(claim_fn, "swapped-tangent"), Size(4, 2), "modular", 0).verdict == "fails"
+
+
+# -- what is left to the scene ------------------------------------------------------------------
+
+def test_a_nested_bracket_falls_back_with_a_reason():
+    def func(s):
+        flow = s.dirac_flow(H_neumann)
+        return {"d{Psi_12, H}": s.d(lambda t: t.bracket(lambda u: u.Psi[0, 1], H_neumann), flow)}
+    g = compile_claim(func, 3, 2, STANDARD)
+    (_, why), = coverage(g)
+    assert why is not None and "Poisson bracket" in why
+    assert derivatives(g) is g         # nothing rewritten
+    assert _agree(g, 3, 2)
+
+
+def test_an_engine_step_that_moves_falls_back():
+    from stiefelsym import twisted
+
+    def func(s):
+        return {"d": s.d(lambda t: twisted.form(t, {"X": t.X, "P": t.P}, {"X": t.P, "P": t.X}), {"X": s.P})}
+    g = compile_claim(func, 3, 2, STANDARD)
+    (_, why), = coverage(g)
+    assert why is not None and "engine step" in why
+
+
+# -- flows the scene refuses are refused alike ------------------------------------------------------
+
+def _bad_key(s):
+    return {"d": s.d(lambda t: t.X.T @ t.X, {"X": s.P, "Z": s.P})}
+
+
+def _bad_shape(s):
+    return {"d": s.d(lambda t: t.X.T @ t.X, {"X": s.Phi})}
+
+
+def _untouched_key(s):
+    """A flow moving only Y while the body reads X: the derivative is 0, the flow still checked."""
+    return {"d": s.d(lambda t: t.X.T @ t.X, {"Y": s.P})}
+
+
+@pytest.mark.parametrize("func", [_bad_key, _bad_shape, _untouched_key])
+def test_flows_are_checked_as_the_scene_checks_them(func):
+    g = compile_claim(func, 3, 2, STANDARD)
+    assert [why for _, why in coverage(g)] == [None]
+    (k0, v0, _), (k1, v1, _) = _both(g, 3, 2)
+    assert (k0, v0 if k0 == "error" else None) == (k1, v1 if k1 == "error" else None)
+    if func is not _untouched_key:
+        assert k1 == "error"
+
+
+@pytest.mark.parametrize("method", ["modular", "free"])
+def test_a_bad_flow_gives_the_same_verdict(method):
+    size = None if method == "free" else Size(3, 2)
+    for func in (_bad_key, _bad_shape):
+        res = run_one(_claim(func, "bad-flow"), size, method, 0)
+        assert res.verdict in ("error", "undecided")
+
+
+# -- the digest ------------------------------------------------------------------------------------
+
+def test_the_digest_is_the_digest_of_the_graph_as_traced():
+    g = compile_claim(prep, None, None, STANDARD)
+    before = g.digest()
+    t = derivatives(g)
+    assert g.digest() == before and t.digest() != before
+    assert "call" not in {op for op, a in zip(t.ops, t.args) if op == "call" and a[1] == "d"}
+    c = _claim(prep, "prep-digest")
+    assert run_one(c, Size(4, 2), "modular", 0).digest == graph_digest(c, Size(4, 2)) == before
+
+
+def _legendre(s):
+    """∂/∂P ½tr(PᵀAP) = AP (A symmetric)."""
+    return {"dL/dP": s.gradient(lambda t: t.tr(t.P.T @ t.A @ t.P) / 2)[1] - s.A @ s.P}
+
+
+def test_a_wrong_adjoint_is_caught(monkeypatch):
+    """The adjoint of a product with its right factor's part dropped: the transformed gradient no
+    longer agrees with reverse mode, and a true claim fails under it."""
+    assert run_one(_claim(_legendre, "legendre"), Size(4, 2), "modular", 0).verdict == "checked"
+    real = deriv._Gradient.send
+
+    def dropping(self, adj, a, terms, ident=()):
+        j = self._current
+        if self.g.ops[j] == "matmul" and type(a) is type(self.g.args[j][1]) and a == self.g.args[j][1]:
+            return
+        return real(self, adj, a, terms, ident)
+    real_propagate = deriv._Gradient.propagate
+
+    def tracking(self, j, *args):
+        self._current = j
+        return real_propagate(self, j, *args)
+    monkeypatch.setattr(deriv._Gradient, "send", dropping)
+    monkeypatch.setattr(deriv._Gradient, "propagate", tracking)
+    func = lambda s: _legendre(s)      # noqa: E731 - a function object of its own: traced and transformed anew
+    g = compile_claim(func, 4, 2, STANDARD)
+    assert [why for _, why in coverage(g, "gradient")] == [None]
+    assert not _agree(g, 4, 2)
+    assert run_one(_claim(func, "legendre-dropped"), Size(4, 2), "modular", 0).verdict == "fails"
+
+
+def test_a_gradient_of_entries_falls_back_with_a_reason():
+    def func(s):
+        HX, HP = s.gradient(lambda t: (t.X.T @ t.P)[0, 1])
+        return {"HX": HX, "HP": HP}
+    g = compile_claim(func, 3, 2, STANDARD)
+    (_, why), = coverage(g, "gradient")
+    assert why is not None and "entry" in why
+    assert derivatives(g) is g and _agree(g, 3, 2)
