@@ -278,20 +278,23 @@ class _Derivative:
         self.read.add(key)
         return ("component", key)     # resolved once every key the body reads is known
 
-    # -- the rules ------------------------------------------------------------------------------
-    def build(self) -> Ref:
-        g, k = self.g, self.k
-        # the body's nodes that read the function's scene, in order
+    def body_nodes(self) -> list[int]:
+        """The body's nodes that read the function's scene, in the graph's order."""
         todo, seen = [], set()
         stack = [self.body] if type(self.body) is Ref else []
         while stack:
             r = stack.pop()
-            if r.i in seen or k not in self.deps[r.i]:
+            if r.i in seen or self.k not in self.deps[r.i]:
                 continue
             seen.add(r.i)
             todo.append(r.i)
-            stack.extend(Ref(j) for j in g.refs(r.i))
-        todo.sort()
+            stack.extend(Ref(j) for j in self.g.refs(r.i))
+        return sorted(todo)
+
+    # -- the rules ------------------------------------------------------------------------------
+    def build(self) -> Ref:
+        g, k = self.g, self.k
+        todo = self.body_nodes()
         # first the rules (components stay placeholders), then the nodes: a placeholder is resolved
         # when the derivative is written into the graph
         self.plan: dict[int, Any] = {}
@@ -608,16 +611,7 @@ class _Gradient(_Derivative):
 
     def build(self) -> Ref:
         g, k = self.g, self.k
-        todo, seen = [], set()
-        stack = [self.body]
-        while stack:
-            r = stack.pop()
-            if r.i in seen or k not in self.deps[r.i]:
-                continue
-            seen.add(r.i)
-            todo.append(r.i)
-            stack.extend(Ref(j) for j in g.refs(r.i))
-        todo.sort()
+        todo = self.body_nodes()
         self.kinds: dict[int, str] = {}
         self.moves_set: set[int] = set()
         for j in todo:
