@@ -414,6 +414,8 @@ def _check_affine(s: Any, form: Callable[[Any, Mat], Scalar], space: Space, base
     follow).  Its homogeneous parts of degree k >= 2 in w vanish with it, so the form is affine."""
     field = getattr(s, "_field", None)
     name = getattr(field, "name", "")
+    while name.endswith(")") and name.startswith(("dual(", "reverse(")):  # along a flow: both parts checked;
+        name = name[name.index("(") + 1:-1]                                 # on a reverse tape: the value
     if not any(name == f or name.startswith(f) for f in _AFFINE_CHECKED):
         return
     m = space.size(s)

@@ -544,6 +544,8 @@ def test_form_gradient_of_a_form_that_is_not_affine_is_not_decided(method):
     of the engine's own) before they sum over a basis: refused, as the dimension-free scene refuses it."""
     v = verdicts("form_gradient_not_affine.py", method)
     assert v["adv-fg-quadratic-secant"] == v["adv-fg-quadratic-at-zero"] == "error", v
+    assert v["adv-fg-quadratic-along-flow"] == "error", v        # the dual part of the check
+    assert v["adv-fg-affine-in-gradient"] in PASSING and v["adv-fg-affine-along-flow"] in PASSING, v
 
 
 def test_form_gradient_of_a_form_that_is_not_affine_is_refused_by_free():
