@@ -551,3 +551,10 @@ def test_form_gradient_of_a_form_that_is_not_affine_is_not_decided(method):
 def test_form_gradient_of_a_form_that_is_not_affine_is_refused_by_free():
     v = verdicts("form_gradient_not_affine.py", "free")
     assert all(x not in PASSING for x in v.values()), v
+
+
+@pytest.mark.xfail(strict=True, reason="open: gradient_in_x interpolates at the degree a PoissonTensor declares "
+                   "without checking it (degree_residual is a separate check a claim must include)")
+@pytest.mark.parametrize("method", ["exact", "modular"])
+def test_gradient_in_x_of_a_tensor_with_a_wrong_declared_degree_is_not_failed(method):
+    assert _v("gradient_in_x_declared_degree.py", method, "adv-gradient-in-x-declared-degree", size="3,3") != "fails"
