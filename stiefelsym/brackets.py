@@ -398,7 +398,39 @@ def form_gradient(s: Any, form: Callable[[Any, Mat], Scalar], point: Mat, kind: 
     acc = zero
     for e, dual in space.basis(s):
         acc = acc + dual * (form(s, e) - base)
+    _check_affine(s, form, space, base, acc)
     return acc
+
+
+#: fields whose test of zero decides the affinity check of :func:`form_gradient` (exact, or an error bound)
+_AFFINE_CHECKED = ("symbolic", "rational", "modular", "float64", "mpmath", "arb")
+
+
+def _check_affine(s: Any, form: Callable[[Any, Mat], Scalar], space: Space, base: Any, G: Mat) -> None:
+    """Refuse a form that is not affine on the space, as the dimension-free scene refuses it: the sum
+    over a basis is the gradient only of an affine form (for any other it is a secant through the basis
+    vectors).  form(w) − form(0) − <G, w> must vanish at a generic element w of the space, whose
+    parameters are the engine's own (no claim can name them; drawn without changing the draws that
+    follow).  Its homogeneous parts of degree k >= 2 in w vanish with it, so the form is affine."""
+    field = getattr(s, "_field", None)
+    name = getattr(field, "name", "")
+    while name.endswith(")") and name.startswith(("dual(", "reverse(")):  # along a flow: both parts checked;
+        name = name[name.index("(") + 1:-1]                                 # on a reverse tape: the value
+    if not any(name == f or name.startswith(f) for f in _AFFINE_CHECKED):
+        return
+    m = space.size(s)
+    rng = getattr(s, "_rng", None)
+    state = rng.getstate() if rng is not None else None
+    try:
+        w = space.project(s._general_params(f"form_gradient:w:{space.name}", m, m, (space.index, space.index)))
+    finally:
+        if state is not None:
+            rng.setstate(state)
+    residual = form(s, w) - base - pairing(s, G, w)
+    if not field.is_zero(residual):
+        raise ValueError("form_gradient: the form is not affine on "
+                         f"{space.name} (its gradient is not the sum over a basis; refused, as the "
+                         "dimension-free scene refuses it)")
 
 
 form_gradient = primitive(form_gradient, like={"form": "point"}, returns=("like", "point"))

@@ -297,3 +297,22 @@ def test_twisted_jacobi_identity_fails_for_a_wrong_field_strength_term():
     assert B.phase_jacobiator(s, good, f, g, h) == 0
     bad = B.PhaseBracket("twisted + eps{,}", lambda t, F, G: twisted.bracket(t, F, G) + t.eps * t.canonical_bracket(F, G) * t.eps)
     assert B.phase_jacobiator(s, bad, f, g, h) != 0
+
+
+# -- form_gradient refuses a form that is not affine (the sum over a basis would be a secant) -------------
+
+@pytest.mark.parametrize("field", [ModularField, RationalField])
+def test_form_gradient_refuses_a_form_that_is_not_affine(field):
+    s = scene(3, 2, field=field())
+    with pytest.raises(ValueError, match="not affine"):
+        B.form_gradient(s, lambda t, y: t.killing(y, y) + t.killing(y, t.Psi), s.Psi, "so", "r")
+    # affine on so(r) (tr y = 0 there), though not on gl(r): accepted, the gradient is Psi
+    G = B.form_gradient(s, lambda t, y: t.tr(y) * t.tr(y) + t.killing(y, t.Psi), s.Psi, "so", "r")
+    assert (G - s.Psi).is_zero()
+
+
+def test_form_gradient_check_leaves_the_draws_that_follow_unchanged():
+    a, b = scene(3, 2), scene(3, 2)
+    a.Psi, b.Psi
+    B.form_gradient(a, lambda t, y: t.killing(y, t.Psi), a.Psi, "so", "r")
+    assert (a.generic("G", "n", "r") - b.generic("G", "n", "r")).is_zero()
