@@ -107,8 +107,8 @@ POINT_FLOWS = frozenset({"canonical_flow", "dirac_flow", "multiplier_flow", "bra
 def scene_flows(scene: Any) -> frozenset:
     """The flows (and brackets) the graph may compute on ``scene``: what the scene says
     (``_graph_flows``, decided without building its point), nothing for a scene that does not say."""
-    f = getattr(scene, "_graph_flows", None)
-    return frozenset() if f is None else frozenset(f())
+    f = getattr(type(scene), "_graph_flows", None)      # on the class: a scene's own lookup may refuse
+    return frozenset() if f is None else frozenset(f(scene))
 
 
 def derivatives(g: Graph, flows: frozenset = frozenset()) -> Graph:
