@@ -44,6 +44,15 @@ checks (the dimension-free scene refuses an ambient gradient unless it keeps
 H as written) and gives the n x r spaces.  An entry or a block inside H (their
 adjoints need coordinates) keeps the call node.
 
+``s.canonical_flow(H)``, ``s.dirac_flow(H)``, ``s.multiplier_flow(H)`` and ``s.bracket(F, G)`` are
+rewritten where the scene lets the graph compute them (:func:`scene_flows`: a point scene of the
+standard realization whose multipliers have closed forms): H's gradient by the reverse sweep, then
+(dot_XP) with Π = sym(XᵀH_P), Λ = sym(XᵀH_X − H_PᵀP + ΠK − KΠ), K = XᵀP (:class:`_Flow`), and the
+Dirac bracket as tr(F_Xᵀ Ẋ) + tr(F_Pᵀ Ṗ) along the Dirac flow of G (:class:`_Bracket`).  The flow is
+handed on by one engine step, :func:`graph_flow`, as the scene's method hands it.  Elsewhere (the
+metric realization, the free algebra) and for a Hamiltonian the reverse sweep refuses, the call
+node stays.
+
 The digest of a claim stays the digest of its graph as traced (what
 results.json records and ``stiefelsym check`` re-traces); the transformed graph
 is derived from it, once per graph, and is what the methods evaluate.
@@ -566,7 +575,8 @@ GRADIENT = "stiefelsym.ir.derivative.gradient_pair"
 
 def gradient_pair(scene: Any, HX: Any, HP: Any) -> tuple:
     """(∂H/∂X, ∂H/∂P) computed by the graph, as the scene's own gradient hands them on (the scene's
-    checks of a gradient made, the spaces n x r).  Engine step of the transformed graphs."""
+    checks of a gradient made, the spaces n x r; None: a zero gradient, the scene's exact zero).
+    Engine step of the transformed graphs."""
     f = getattr(scene, "_gradient_pair", None)
     if f is None:
         raise TypeError(f"a gradient on a {type(scene).__name__} (a scene with no gradients)")
@@ -894,9 +904,10 @@ class _Gradient(_Derivative):
             out.append(self.smul(c, self.add("call", (self.S, "tr", (Y,), ()))))
         return out
 
-    def total(self, terms: list, leaf: Ref) -> Ref:
-        M = self.mat_sum(terms)
-        return M if M is not None else self.add("mul", (leaf, 0))
+    def total(self, terms: list, leaf: Ref) -> Ref | None:
+        """The adjoint of X or P: None where H does not depend on it (the scene's exact zero then,
+        as its reverse tape gives it: no rounding error for float bounds to carry)."""
+        return self.mat_sum(terms)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -996,11 +1007,16 @@ class _Bracket:
         add, S = self.new.add, self.S
         pair = self.gradF.build()
         flow = self.flowG.build()
-        FX, FP = add("item", (pair, 0)), add("item", (pair, 1))
-        Xd, Pd = add("attr", (flow, "Xdot")), add("attr", (flow, "Pdot"))
-        tX = add("call", (S, "tr", (add("matmul", (add("T", (FX,)), Xd)),), ()))
-        tP = add("call", (S, "tr", (add("matmul", (add("T", (FP,)), Pd)),), ()))
-        return add("add", (tX, tP))
+        terms = []
+        for k, comp in enumerate(("Xdot", "Pdot")):
+            if self.new.args[pair.i][2 + k] is None:
+                continue                    # F does not depend on X (on P): no term, not a product with 0
+            G = add("item", (pair, k))
+            terms.append(add("call", (S, "tr", (add("matmul", (add("T", (G,)), add("attr", (flow, comp)))),), ())))
+        value = terms[0] if len(terms) == 1 else (add("add", tuple(terms)) if terms
+                                                   else add("call", (S, "const", (0,), ())))
+        # the value with the flow (made, and checked, whatever F reads)
+        return add("item", (add("tuple", (flow, value)), 1))
 
 
 #: the calls the pass rewrites, by scene method
