@@ -635,3 +635,15 @@ def test_a_gradient_of_entries_falls_back_with_a_reason():
     (_, why), = coverage(g, "gradient")
     assert why is not None and "entry" in why
     assert derivatives(g) is g and _agree(g, 3, 2)
+
+
+def test_off_V_the_scene_computes_the_flow():
+    """Where XᵀX = I_r failed over an exact field the closed forms do not hold: the engine step hands
+    on the scene's own flow (a wrong flow offered by the graph is not used)."""
+    s = Scene(3, 2, ModularField(P61), chart="cayley", rng=random.Random(2))
+    wrong = s.X * 0
+    s._cache["on V"] = False
+    flow = deriv.graph_flow(s, "dirac_flow", H_neumann, wrong, wrong)
+    assert _same(flow.Xdot, s.dirac_flow(H_neumann).Xdot) and not _same(flow.Xdot, wrong)
+    s._cache["on V"] = True
+    assert deriv.graph_flow(s, "dirac_flow", H_neumann, wrong, wrong).Xdot is wrong
