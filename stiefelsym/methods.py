@@ -30,7 +30,7 @@ from .claims import Claim, Count, Rank, deadline
 from . import costmodel
 from .costmodel import BudgetError as BudgetError  # the methods raise it (re-exported)
 from .ir import compile_claim
-from .ir.derivative import derivatives
+from .ir.derivative import derivatives, scene_flows
 from .ir.evaluate import evaluate
 from .ir.seal import verify as verify_engine
 from .ir.passes import BLOCK_SPLITTING, FLOAT_EXPONENT_LIMIT, coordinate_reads, outside_float_range
@@ -192,7 +192,7 @@ def call_claim(func: Callable, scene: Any) -> dict[str, Any]:
             if inv & watched_spaces:
                 tracker.touch(what)
     verify_engine("before an evaluation")
-    checks = evaluate(derivatives(g), scene)
+    checks = evaluate(derivatives(g, scene_flows(scene)), scene)
     if not isinstance(checks, dict) or not checks:
         raise TypeError("a claim must return a non-empty dict of named checks")
     for k in checks:

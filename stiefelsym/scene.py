@@ -1227,6 +1227,39 @@ class Scene(PaperObjects):
         n x r matrices of the scene (see :mod:`stiefelsym.ir.derivative`)."""
         return self._as_nr(HX), self._as_nr(HP)
 
+    def _approximates_point(self) -> bool:
+        """Floats, balls or degree markers: values that stand for the exact evaluation at the chart's
+        point, which is on V by construction (see :meth:`_closed_form_multipliers`)."""
+        return isinstance(self._field, (FloatField, DegreeField)) or getattr(self._field, "encloses_exact_point", False)
+
+    def _graph_flows(self) -> frozenset:
+        """The flows of a Hamiltonian the graph may compute on this scene (see
+        :mod:`stiefelsym.ir.derivative`): the canonical flow (H_P, −H_X) always; the Dirac and
+        multiplier flows and the Dirac bracket where the multipliers have the closed forms of
+        :meth:`_closed_form_multipliers`, decided without building the point (so parameters are
+        drawn in the order the claim uses them); XᵀX = I_r is checked exactly when the flow is handed
+        on (:meth:`_graph_flow`)."""
+        kinds = {"canonical_flow"}
+        approx = self._approximates_point()
+        if (CLOSED_FORM_MULTIPLIERS and self.realization == "standard" and self.chart in ("cayley", "equivariant")
+                and (self._field.exact or approx)
+                and not (isinstance(self._field, SymbolicField) and self.chart == "cayley" and not self._field.native)):
+            kinds |= {"dirac_flow", "multiplier_flow", "bracket"}
+        return frozenset(kinds)
+
+    def _graph_flow(self, kind: str, H: Function, Xd: Mat, Pd: Mat, Lam: Mat | None, Pi: Mat | None) -> Flow:
+        """A flow of H the graph computed (``kind``: canonical_flow, dirac_flow or multiplier_flow),
+        handed on as the scene's own method hands it: the Dirac flow without its multipliers, the
+        multiplier flow with Λ, Π.  The closed forms hold where XᵀX = I_r: checked exactly over an
+        exact field (a chart's point is on V by construction; elsewhere the scene's own flow)."""
+        if kind != "canonical_flow":
+            on_V = lambda: (self.X.T @ self.X - self.Ir).is_zero()      # noqa: E731
+            if not self._approximates_point() and not self._cached("on V", on_V):
+                return getattr(self, kind)(H)
+        if kind == "multiplier_flow":
+            return Flow(Xd, Pd, multipliers={"Lambda": Lam, "Pi": Pi})
+        return Flow(Xd, Pd)
+
     def _tangent_vector(self, flow: Flow | Mapping[str, Mat], keys: tuple) -> dict[str, Mat]:
         """The components ``keys`` of a flow, checked as :meth:`tangent` checks a flow, each with the
         spaces of the primitive it moves (0 where the flow does not move it): what the graph's

@@ -1236,6 +1236,7 @@ class FreeScene(PaperObjects):
         :meth:`gradient` hands its own (refused by an eager scene, each gradient reduced; see
         :mod:`stiefelsym.ir.derivative`)."""
         self._as_written("the ambient gradient of H, which depends on H off T*V")
+        HX, HP = (L * 0 if G is None else G for G, L in ((HX, self.X), (HP, self.P)))   # None: H does not read it
         return tuple(self._const_mat(self.system.normal_form(entry_of(G))) for G in (HX, HP))
 
     def _tangent_vector(self, flow: Flow | Mapping[str, Mat], keys: tuple) -> dict[str, Mat]:

@@ -44,6 +44,15 @@ checks (the dimension-free scene refuses an ambient gradient unless it keeps
 H as written) and gives the n x r spaces.  An entry or a block inside H (their
 adjoints need coordinates) keeps the call node.
 
+``s.canonical_flow(H)``, ``s.dirac_flow(H)``, ``s.multiplier_flow(H)`` and ``s.bracket(F, G)`` are
+rewritten where the scene lets the graph compute them (:func:`scene_flows`: a point scene of the
+standard realization whose multipliers have closed forms): H's gradient by the reverse sweep, then
+(dot_XP) with Π = sym(XᵀH_P), Λ = sym(XᵀH_X − H_PᵀP + ΠK − KΠ), K = XᵀP (:class:`_Flow`), and the
+Dirac bracket as tr(F_Xᵀ Ẋ) + tr(F_Pᵀ Ṗ) along the Dirac flow of G (:class:`_Bracket`).  The flow is
+handed on by one engine step, :func:`graph_flow`, as the scene's method hands it.  Elsewhere (the
+metric realization, the free algebra) and for a Hamiltonian the reverse sweep refuses, the call
+node stays.
+
 The digest of a claim stays the digest of its graph as traced (what
 results.json records and ``stiefelsym check`` re-traces); the transformed graph
 is derived from it, once per graph, and is what the methods evaluate.
@@ -99,22 +108,38 @@ class _Container:
         self.op, self.keys, self.parts, self.primals = op, keys, parts, primals
 
 
-def derivatives(g: Graph) -> Graph:
-    """The graph with every ``d`` node it can differentiate structurally rewritten into ordinary nodes
-    (computed once per graph; the graph itself and its digest are unchanged; the graph itself when
-    no node is rewritten)."""
-    out = g.cache.get("derived")
+#: the flows of a Hamiltonian (and the Dirac bracket) a point scene of the standard realization lets
+#: the graph compute (what ``Scene._graph_flows`` says there)
+POINT_FLOWS = frozenset({"canonical_flow", "dirac_flow", "multiplier_flow", "bracket"})
+
+
+def scene_flows(scene: Any) -> frozenset:
+    """The flows (and brackets) the graph may compute on ``scene``: what the scene says
+    (``_graph_flows``, decided without building its point), nothing for a scene that does not say."""
+    f = getattr(type(scene), "_graph_flows", None)      # on the class: a scene's own lookup may refuse
+    return frozenset() if f is None else frozenset(f(scene))
+
+
+def derivatives(g: Graph, flows: frozenset = frozenset()) -> Graph:
+    """The graph with every ``d`` and ``gradient`` node it can differentiate structurally rewritten
+    into ordinary nodes, and every flow of a Hamiltonian and Dirac bracket named in ``flows`` (see
+    :func:`scene_flows`) whose Hamiltonians allow it (computed once per graph and set of flows;
+    the graph itself and its digest are unchanged; the graph itself when no node is rewritten)."""
+    key = "derived:" + ",".join(sorted(flows))
+    out = g.cache.get(key)
     if out is None:
-        out, report = _transform(g)
-        g.cache["derived"], g.cache["derived_report"] = out, report
+        out, report = _transform(g, frozenset(flows))
+        g.cache[key], g.cache[key + ":report"] = out, report
     return out
 
 
-def coverage(g: Graph, name: str = "d") -> list[tuple[int, str | None]]:
-    """Per ``d`` node (``name``: or ``gradient`` node) of the graph as traced: (node, None) when the
-    pass rewrote it, (node, reason) when the scene computes it."""
-    derivatives(g)
-    return [(i, why) for i, nm, why in g.cache["derived_report"] if nm == name]
+def coverage(g: Graph, name: str = "d", flows: frozenset = POINT_FLOWS) -> list[tuple[int, str | None]]:
+    """Per ``d`` node (``name``: or ``gradient``, ``dirac_flow``, ``multiplier_flow``, ``canonical_flow``
+    or ``bracket`` node) of the graph as traced: (node, None) when the pass rewrote it, (node, reason)
+    when the scene computes it (``flows``: those the scene lets the graph compute, by default a
+    point scene's of the standard realization)."""
+    derivatives(g, flows)
+    return [(i, why) for i, nm, why in g.cache["derived:" + ",".join(sorted(flows)) + ":report"] if nm == name]
 
 
 def _deps(g: Graph) -> list[frozenset]:
@@ -122,7 +147,7 @@ def _deps(g: Graph) -> list[frozenset]:
     return deps(g)
 
 
-def _transform(g: Graph) -> tuple[Graph, list]:
+def _transform(g: Graph, flows: frozenset = frozenset()) -> tuple[Graph, list]:
     deps = _deps(g)
     new = Graph()
     new.refusals, new.fns, new.sizes = list(g.refusals), g.fns, g.sizes
@@ -145,6 +170,17 @@ def _transform(g: Graph) -> tuple[Graph, list]:
                 continue
             except Unsupported as exc:
                 report.append((i, a[1], str(exc)))
+        elif op == "call" and a[1] in _FLOW_PASSES:
+            if a[1] not in flows:
+                report.append((i, a[1], "the scene's own multipliers here (another realization, a chart or a "
+                                        "field without their closed forms, or the free algebra's solve)"))
+            else:
+                try:
+                    remap[i] = _FLOW_PASSES[a[1]](g, deps, new, remap, i).build()
+                    report.append((i, a[1], None))
+                    continue
+                except Unsupported as exc:
+                    report.append((i, a[1], str(exc)))
         remap[i] = new.add(op, m(a))
     if g.output is not None:
         new.output = remap[g.output.i]
@@ -539,7 +575,8 @@ GRADIENT = "stiefelsym.ir.derivative.gradient_pair"
 
 def gradient_pair(scene: Any, HX: Any, HP: Any) -> tuple:
     """(∂H/∂X, ∂H/∂P) computed by the graph, as the scene's own gradient hands them on (the scene's
-    checks of a gradient made, the spaces n x r).  Engine step of the transformed graphs."""
+    checks of a gradient made, the spaces n x r; None: a zero gradient, the scene's exact zero).
+    Engine step of the transformed graphs."""
     f = getattr(scene, "_gradient_pair", None)
     if f is None:
         raise TypeError(f"a gradient on a {type(scene).__name__} (a scene with no gradients)")
@@ -556,21 +593,29 @@ _MATRIX_CALLS = frozenset({"resolvent", "mat", "zeros", "identity", "scalar_matr
 _SCALAR_CALLS = frozenset({"tr", "killing", "q", "const", "scalar"})
 
 
+def _constant_vector(a: Any) -> bool:
+    """Whether an engine step is a coordinate basis vector of ℝʳ (a constant matrix)."""
+    return (type(a) is Named and a.qualname in CONSTANT_PRIMITIVES
+            and a.qualname.rsplit(".", 1)[-1] in ("basis_vector", "last_basis_vector"))
+
+
 class _Gradient(_Derivative):
     """(∂H/∂X, ∂H/∂P) of one ``gradient`` node's function H, a number built by matrix operations:
     the adjoints of the body's nodes, from the value down to X and P (a matrix's adjoint is a sum of
     matrices and of a multiple of I, which a trace makes and a product absorbs)."""
 
-    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, i: int) -> None:
+    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, i: int, f: Any = None) -> None:
         self.g, self.deps, self.new, self.remap = g, deps, new, remap
         scene, name, args, kw = g.args[i]
-        if kw or len(args) != 1:
-            raise Unsupported("a gradient with further arguments")
-        f = args[0]
+        what = _WHAT.get(name, "a gradient")
+        if f is None:
+            if kw or len(args) != 1:
+                raise Unsupported(f"{what} with further arguments")
+            f = args[0]
         if type(scene) is not Ref or g.ops[scene.i] != "scene" or g.args[scene.i] != (0,):
-            raise Unsupported("a gradient on a scene other than the claim's (inside a function of the scene)")
+            raise Unsupported(f"{what} on a scene other than the claim's (inside a function of the scene)")
         if type(f) is not Ref or g.ops[f.i] != "fn":
-            raise Unsupported("a gradient of something that is not a traced function")
+            raise Unsupported(f"{what} of something that is not a traced function")
         self.k, arity, self.body = g.args[f.i]
         if arity != 1 or type(self.body) is not Ref:
             raise Unsupported("a gradient of a function of more than the scene")
@@ -607,6 +652,10 @@ class _Gradient(_Derivative):
             return _S if all(type(x) is int for x in a[1:]) else _M
         if op == "item" and type(a[0]) is Ref and g.ops[a[0].i] == "attr" and g.args[a[0].i][1] == "a":
             return _S
+        if op == "attr" and a[1] == "a":
+            return _S                       # the eigenvalues of A, read one by one (constants)
+        if op == "prim" and _constant_vector(a[0]):
+            return _M                       # a coordinate basis vector (a constant)
         raise Unsupported(f"a {op} whose kind (number or matrix) the graph does not show")
 
     def build(self) -> Ref:
@@ -650,7 +699,7 @@ class _Gradient(_Derivative):
         if op == "attr":
             if type(a[0]) is not Ref or g.ops[a[0].i] != "scene":
                 raise Unsupported(f"an attribute {a[1]!r} of an engine value that moves with the point")
-            if a[1] not in ("X", "P", "Phi", "Psi") and a[1] not in _GRAD_CONSTANT_ATTRS:
+            if a[1] not in ("X", "P", "Phi", "Psi", "a") and a[1] not in _GRAD_CONSTANT_ATTRS:
                 raise Unsupported(f"the scene's {a[1]} in a gradient")
         elif op == "call":
             if a[1] in CONSTANT_CALLS:
@@ -665,6 +714,9 @@ class _Gradient(_Derivative):
                 raise Unsupported("a part of a value inside the function of a gradient")
         elif op in ("entry", "block"):
             raise Unsupported(f"an {op} inside the function of a gradient (its adjoint needs coordinates)")
+        elif op == "prim" and _constant_vector(a[0]):
+            if any(self.moving(x) for x in a[1:]):
+                raise Unsupported("a coordinate basis vector at a moving argument inside the function of a gradient")
         elif op not in ("add", "sub", "neg", "matmul", "mul", "div", "pow", "T", "inv", "trace", "const"):
             raise Unsupported(f"a {op} inside the function of a gradient")
 
@@ -852,10 +904,122 @@ class _Gradient(_Derivative):
             out.append(self.smul(c, self.add("call", (self.S, "tr", (Y,), ()))))
         return out
 
-    def total(self, terms: list, leaf: Ref) -> Ref:
-        M = self.mat_sum(terms)
-        return M if M is not None else self.add("mul", (leaf, 0))
+    def total(self, terms: list, leaf: Ref) -> Ref | None:
+        """The adjoint of X or P: None where H does not depend on it (the scene's exact zero then,
+        as its reverse tape gives it: no rounding error for float bounds to carry)."""
+        return self.mat_sum(terms)
+
+
+# ---------------------------------------------------------------------------------------------
+# flows of a Hamiltonian and the Dirac bracket: the gradient by reverse mode, the multipliers in
+# closed form
+
+FLOW = "stiefelsym.ir.derivative.graph_flow"
+
+_WHAT = {"gradient": "a gradient", "dirac_flow": "a Dirac flow", "multiplier_flow": "a multiplier flow",
+         "canonical_flow": "a canonical flow", "bracket": "a Dirac bracket"}
+
+
+def graph_flow(scene: Any, kind: str, H: Any, Xd: Any, Pd: Any, *multipliers: Any) -> Any:
+    """A flow of H (``kind``: canonical_flow, dirac_flow, multiplier_flow) the graph computed, handed on
+    as the scene's own method hands it (the closed forms' condition XᵀX = I_r checked there; the
+    multipliers Λ, Π with the multiplier flow).  Engine step of the transformed graphs."""
+    f = getattr(scene, "_graph_flow", None)
+    if f is None:
+        raise TypeError(f"a flow on a {type(scene).__name__} (a scene whose flows the graph does not compute)")
+    Lam, Pi = multipliers if multipliers else (None, None)
+    return f(kind, H, Xd, Pd, Lam, Pi)
+
+
+PRIMITIVES[FLOW] = graph_flow
+
+
+class _Flow:
+    """The flow of one ``dirac_flow``, ``multiplier_flow`` or ``canonical_flow`` node's Hamiltonian H
+    (or of the second function of a ``bracket`` node), built into the new graph: (H_X, H_P) by the
+    reverse mode of :class:`_Gradient` (which refuses what it cannot differentiate: then the scene
+    computes the flow), the canonical flow (H_P, −H_X), and for (dot_XP)
+
+        Ẋ = H_P − XΠ,   Ṗ = −H_X + XΛ + PΠ,
+        Π = sym(XᵀH_P),   Λ = sym(XᵀH_X − H_PᵀP + ΠK − KΠ),   K = XᵀP,   sym M = ½(M + Mᵀ),
+
+    the unique symmetric multipliers for which d/dt(XᵀX) = 0 and d/dt(XᵀP + PᵀX) = 0 where XᵀX = I_r
+    (with XᵀX = I: sym(XᵀẊ) = sym(XᵀH_P) − Π, and sym(ẊᵀP + XᵀṖ) = sym(H_PᵀP − ΠK − XᵀH_X + KΠ) + Λ).
+    The same products, in the same order, as the scene's closed forms."""
+
+    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, i: int, kind: str | None = None,
+                 f: Any = None) -> None:
+        self.g, self.deps, self.new, self.remap, self.i = g, deps, new, remap, i
+        scene, name, args, kw = g.args[i]
+        self.kind = kind or name
+        if f is None:
+            if kw or len(args) != 1:
+                raise Unsupported(f"{_WHAT[name]} with further arguments")
+            f = args[0]
+        self.f = f
+        self.grad = _Gradient(g, deps, new, remap, i, f)       # its checks made before anything is built
+        self.S = self.grad.S
+
+    def build(self) -> Ref:
+        add, S = self.new.add, self.S
+        pair = self.grad.build()
+        HX, HP = add("item", (pair, 0)), add("item", (pair, 1))
+        H = self.remap[self.f.i]
+        if self.kind == "canonical_flow":
+            return add("prim", (Named(FLOW), S, self.kind, H, HP, add("neg", (HX,))))
+        X, P = add("attr", (S, "X")), add("attr", (S, "P"))
+        XT = add("T", (X,))
+        half = add("call", (S, "q", (1, 2), ()))
+
+        def sym(M: Ref) -> Ref:
+            return add("mul", (add("add", (M, add("T", (M,)))), half))
+
+        Pi = sym(add("matmul", (XT, HP)))
+        K = add("matmul", (XT, P))
+        L = add("sub", (add("matmul", (XT, HX)), add("matmul", (add("T", (HP,)), P))))
+        L = add("sub", (add("add", (L, add("matmul", (Pi, K)))), add("matmul", (K, Pi))))
+        Lam = sym(L)
+        Xd = add("sub", (HP, add("matmul", (X, Pi))))
+        Pd = add("add", (add("add", (add("neg", (HX,)), add("matmul", (X, Lam)))), add("matmul", (P, Pi))))
+        extra = (Lam, Pi) if self.kind == "multiplier_flow" else ()
+        return add("prim", (Named(FLOW), S, self.kind, H, Xd, Pd) + extra)
+
+
+class _Bracket:
+    """The Dirac bracket {F, G} of one ``bracket`` node: the derivative of F along the Dirac flow of G
+    (the scene's (Dirac_bracket) {F, G}_0 + Σ {F_i, F}_0 C^{ij} {F_j, G}_0 is ⟨∇F, X_G⟩ for the Dirac
+    flow X_G = Ω∇G − Σ w_i Ω∇F_i, w = C{F, G}_0), as the scene computes it: ∇F by reverse mode (so a
+    function that is not a number is refused as the scene refuses it) and
+
+        {F, G} = tr(F_Xᵀ Ẋ) + tr(F_Pᵀ Ṗ),   (Ẋ, Ṗ) the Dirac flow of G (:class:`_Flow`)."""
+
+    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, i: int) -> None:
+        scene, name, args, kw = g.args[i]
+        if kw or len(args) != 2:
+            raise Unsupported("a Dirac bracket with further arguments")
+        F, G = args
+        self.new = new
+        self.gradF = _Gradient(g, deps, new, remap, i, F)
+        self.flowG = _Flow(g, deps, new, remap, i, "dirac_flow", G)
+        self.S = self.gradF.S
+
+    def build(self) -> Ref:
+        add, S = self.new.add, self.S
+        pair = self.gradF.build()
+        flow = self.flowG.build()
+        terms = []
+        for k, comp in enumerate(("Xdot", "Pdot")):
+            if self.new.args[pair.i][2 + k] is None:
+                continue                    # F does not depend on X (on P): no term, not a product with 0
+            G = add("item", (pair, k))
+            terms.append(add("call", (S, "tr", (add("matmul", (add("T", (G,)), add("attr", (flow, comp)))),), ())))
+        value = terms[0] if len(terms) == 1 else (add("add", tuple(terms)) if terms
+                                                   else add("call", (S, "const", (0,), ())))
+        # the value with the flow (made, and checked, whatever F reads)
+        return add("item", (add("tuple", (flow, value)), 1))
 
 
 #: the calls the pass rewrites, by scene method
 _PASSES = {"d": _Derivative, "gradient": _Gradient}
+#: the flows and brackets it rewrites where the scene lets the graph compute them (:func:`scene_flows`)
+_FLOW_PASSES = {"dirac_flow": _Flow, "multiplier_flow": _Flow, "canonical_flow": _Flow, "bracket": _Bracket}
