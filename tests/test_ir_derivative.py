@@ -270,16 +270,21 @@ def test_every_claim_of_the_catalog_evaluates_alike(catalog):
     assert seen >= 80
 
 
+def _graphs_at_4_2(catalog):
+    """(claim, graph at (4,2)) for every catalog claim that traces there."""
+    for c in catalog:
+        cons = REALIZATIONS[c.realization]
+        try:
+            yield c, compile_claim(c.func, 4, 2, (cons.name, cons.build))
+        except Exception:   # noqa: BLE001
+            continue
+
+
 def test_coverage_of_the_catalog(catalog):
     """At (4,2) the pass differentiates every d node but those inside a function of the scene."""
     total = done = 0
     reasons = set()
-    for c in catalog:
-        cons = REALIZATIONS[c.realization]
-        try:
-            g = compile_claim(c.func, 4, 2, (cons.name, cons.build))
-        except Exception:   # noqa: BLE001
-            continue
+    for c, g in _graphs_at_4_2(catalog):
         for _, why in coverage(g):
             total += 1
             done += why is None
@@ -297,12 +302,7 @@ def test_coverage_of_the_catalog_flows_and_brackets(catalog):
     list (the reverse sweep has no rule for them)."""
     counts: dict[str, list[int]] = {}
     reasons = set()
-    for c in catalog:
-        cons = REALIZATIONS[c.realization]
-        try:
-            g = compile_claim(c.func, 4, 2, (cons.name, cons.build))
-        except Exception:   # noqa: BLE001
-            continue
+    for c, g in _graphs_at_4_2(catalog):
         flows = POINT_FLOWS if c.realization == "standard" else frozenset({"canonical_flow"})
         for name in ("dirac_flow", "bracket", "multiplier_flow", "canonical_flow"):
             for _, why in coverage(g, name, flows):

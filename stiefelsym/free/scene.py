@@ -343,6 +343,19 @@ class FreeDualField(DualField):
 _CONSTANT_OBJECTS: dict[str, tuple | None] = {"Phi": None, "Psi": None}
 
 
+def _component(flow: Any, key: str, poly: NCPoly, tracker: Any) -> NCPoly:
+    """The flow's component for the letter ``key`` (the polynomial ``poly``), as a polynomial of its shape
+    (0 where the flow has none); a component of another shape is refused and recorded."""
+    dot = flow.get(key)
+    if dot is None:
+        return NCPoly.zero(poly.row, poly.col)
+    b = entry_of(dot) if isinstance(dot, Mat) else dot
+    if not isinstance(b, NCPoly) or b.shape != poly.shape:
+        record_refusal(f"a flow whose {key}-component is not a {poly.row}×{poly.col} block", tracker)
+        raise TypeError(f"the flow's {key}-component must be a {poly.row}×{poly.col} polynomial")
+    return b
+
+
 class FreeScene(PaperObjects):
     """T*V_{n,r} for all n, r at once: the scene interface over the free algebra."""
 
@@ -1253,15 +1266,7 @@ class FreeScene(PaperObjects):
         out = {}
         for key in keys:
             poly = entry_of(getattr(self, key))
-            dot = tangent.get(key)
-            if dot is None:
-                b = NCPoly.zero(poly.row, poly.col)
-            else:
-                b = entry_of(dot) if isinstance(dot, Mat) else dot
-                if not isinstance(b, NCPoly) or b.shape != poly.shape:
-                    record_refusal(f"a flow whose {key}-component is not a {poly.row}×{poly.col} block", self.tracker)
-                    raise TypeError(f"the flow's {key}-component must be a {poly.row}×{poly.col} polynomial")
-            out[key] = one_block(b, self.field, poly.shape, self.tracker)
+            out[key] = one_block(_component(tangent, key, poly, self.tracker), self.field, poly.shape, self.tracker)
         return out
 
     def d(self, F: Function | Any, flow: Flow | Mapping[str, Mat]) -> Any:
@@ -1380,15 +1385,8 @@ class FreeTangentScene(FreeScene):
         return hit
 
     def _prim(self, key: str, poly: NCPoly) -> Mat:
-        dot = self.flow.get(key)
-        if dot is None:
-            b = NCPoly.zero(poly.row, poly.col)
-        else:
-            b = entry_of(dot) if isinstance(dot, Mat) else dot
-            if not isinstance(b, NCPoly) or b.shape != poly.shape:
-                record_refusal(f"a flow whose {key}-component is not a {poly.row}×{poly.col} block", self.tracker)
-                raise TypeError(f"the flow's {key}-component must be a {poly.row}×{poly.col} polynomial")
-        return one_block(Dual(poly, b), self.field, poly.shape, self.tracker)
+        return one_block(Dual(poly, _component(self.flow, key, poly, self.tracker)), self.field, poly.shape,
+                         self.tracker)
 
     def _const_mat(self, p: NCPoly) -> Mat:
         return one_block(Dual(p, NCPoly.zero(p.row, p.col)), self.field, p.shape, self.tracker)

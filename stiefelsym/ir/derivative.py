@@ -163,24 +163,22 @@ def _transform(g: Graph, flows: frozenset = frozenset()) -> tuple[Graph, list]:
 
     report: list = []
     for i, (op, a) in enumerate(zip(g.ops, g.args)):
+        rewrite = None
         if op == "call" and a[1] in _PASSES:
+            rewrite = _PASSES[a[1]]
+        elif op == "call" and a[1] in _FLOW_PASSES:
+            if a[1] in flows:
+                rewrite = _FLOW_PASSES[a[1]]
+            else:
+                report.append((i, a[1], "the scene's own multipliers here (another realization, a chart or a "
+                                        "field without their closed forms, or the free algebra's solve)"))
+        if rewrite is not None:
             try:
-                remap[i] = _PASSES[a[1]](g, deps, new, remap, i).build()
+                remap[i] = rewrite(g, deps, new, remap, i).build()
                 report.append((i, a[1], None))
                 continue
             except Unsupported as exc:
                 report.append((i, a[1], str(exc)))
-        elif op == "call" and a[1] in _FLOW_PASSES:
-            if a[1] not in flows:
-                report.append((i, a[1], "the scene's own multipliers here (another realization, a chart or a "
-                                        "field without their closed forms, or the free algebra's solve)"))
-            else:
-                try:
-                    remap[i] = _FLOW_PASSES[a[1]](g, deps, new, remap, i).build()
-                    report.append((i, a[1], None))
-                    continue
-                except Unsupported as exc:
-                    report.append((i, a[1], str(exc)))
         remap[i] = new.add(op, m(a))
     if g.output is not None:
         new.output = remap[g.output.i]
