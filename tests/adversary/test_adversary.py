@@ -558,3 +558,13 @@ def test_form_gradient_of_a_form_that_is_not_affine_is_refused_by_free():
 @pytest.mark.parametrize("method", ["exact", "modular"])
 def test_gradient_in_x_of_a_tensor_with_a_wrong_declared_degree_is_not_failed(method):
     assert _v("gradient_in_x_declared_degree.py", method, "adv-gradient-in-x-declared-degree", size="3,3") != "fails"
+
+
+# -- a resolvent at a spectral parameter that moves with the point (the derivative passes) ----------
+
+@pytest.mark.parametrize("method", ["exact", "modular", "float", "ball", "free"])
+def test_a_moving_spectral_parameter_is_differentiated(method):
+    v = verdicts("resolvent_at_moving_point.py", method)
+    assert v["adv-moving-mu-gradient"] not in PASSING and v["adv-moving-mu-bracket"] not in PASSING, v
+    if method != "free":
+        assert v["adv-moving-mu-gradient"] == "fails" and v["adv-moving-mu-gradient-true"] in PASSING, v
