@@ -433,25 +433,91 @@ def _check_affine(s: Any, form: Callable[[Any, Mat], Scalar], space: Space, base
                          "dimension-free scene refuses it)")
 
 
+_affine_form_gradient = form_gradient
 form_gradient = primitive(form_gradient, like={"form": "point"}, returns=("like", "point"))
 
 
+#: the fields whose test of zero decides the degree in x that :func:`polynomial_gradient` derives (exact,
+#: or an error bound); on the others (the degree markers of the structural pass) it interpolates at the
+#: highest degree it takes, which bounds every lower one
+_DEGREE_DECIDED = _AFFINE_CHECKED + ("midrad",)
+#: the highest degree in x of a form :func:`polynomial_gradient` takes (one evaluation per degree and basis vector)
+MAX_FORM_DEGREE = 6
+
+
+def polynomial_gradient(s: Any, form: Callable[[Any, Mat], Scalar], point: Mat, kind: str, index: str) -> Mat:
+    """The gradient G at ``point`` in the space kind(index) of a polynomial form y ↦ form(s, y), for
+    <,>: d/dt form(point + t·e)|_{t=0} = <G, e> for every e of the space.
+
+    One step of the IR whose degree is the engine's, never a claim's: the degree d of the form in y is
+    derived here, as the least d <= MAX_FORM_DEGREE whose (d+1)-th finite difference
+    Δ_w^{d+1} form(point) vanishes along a generic element w of the space (parameters of the engine's
+    own, drawn without changing the draws that follow); for a polynomial of degree D > d its part of
+    degree D in w is a nonzero multiple of the top part of the form at w, so it does not vanish, and a
+    form that is not a polynomial has no such d and is refused.  The derivative along each basis vector
+    is then the exact interpolation of t ↦ form(point + t·e) at t = 0, ..., d (for d <= 1:
+    :func:`form_gradient`, the affine case).  The dimension-free scene differentiates the form
+    cyclically (:meth:`~stiefelsym.free.FreeScene.form_gradient`), which takes affine forms only."""
+    space = Space(kind, index)
+    own = getattr(type(s), "form_gradient", None)
+    if own is not None:
+        return space.project(own(s, form, index))
+    d = _form_degree(s, form, space, point)
+    if d <= 1:
+        return _affine_form_gradient(s, form, point, kind, index)
+    w = [s.q(q.numerator, q.denominator) for q in _derivative_weights(d)]
+    values0 = form(s, point)
+    acc = space.zero(s)
+    for e, dual in space.basis(s):
+        deriv = values0 * w[0]
+        for j in range(1, d + 1):
+            deriv = deriv + form(s, point + e * j) * w[j]
+        acc = acc + dual * deriv
+    return acc
+
+
+def _form_degree(s: Any, form: Callable[[Any, Mat], Scalar], space: Space, point: Mat) -> int:
+    """The degree in y of the polynomial form (see :func:`polynomial_gradient`): the least d whose
+    (d+1)-th finite difference along a generic element of the space vanishes at ``point``."""
+    from math import comb
+    field = getattr(s, "_field", None)
+    name = getattr(field, "name", "")
+    while name.endswith(")") and name.startswith(("dual(", "reverse(")):
+        name = name[name.index("(") + 1:-1]
+    if not any(name == f or name.startswith(f) for f in _DEGREE_DECIDED):
+        return MAX_FORM_DEGREE          # markers: the highest degree's interpolation bounds the others'
+    m = space.size(s)
+    rng = getattr(s, "_rng", None)
+    state = rng.getstate() if rng is not None else None
+    try:
+        w = space.project(s._general_params(f"polynomial_gradient:w:{space.name}", m, m, (space.index, space.index)))
+    finally:
+        if state is not None:
+            rng.setstate(state)
+    values = [form(s, point)]
+    for d in range(MAX_FORM_DEGREE + 1):
+        values.append(form(s, point + w * (d + 1)))
+        k = d + 1                       # the k-th difference of the values at t = 0, ..., k
+        diff = None
+        for j in range(k + 1):
+            term = values[j] * ((-1) ** (k - j) * comb(k, j))
+            diff = term if diff is None else diff + term
+        if field.is_zero(diff):
+            return d
+    raise ValueError(f"polynomial_gradient: the form is not a polynomial of degree <= {MAX_FORM_DEGREE} in "
+                     f"the point of {space.name} (refused: its gradient is not an interpolation)")
+
+
+polynomial_gradient = primitive(polynomial_gradient, like={"form": "point"}, returns=("like", "point"))
+
+
 def gradient_in_x(s: Any, T: PoissonTensor, x: Mat, b: Mat, c: Mat) -> Mat:
-    """The gradient at x of the function y ↦ Λ(b, c)|_y, exact: one evaluation of the form over reverse
-    numbers (x the independent variable) and one backward sweep, the adjoint ∂/∂x_ij = g_ij giving
-    the gradient −2gᵀ for <,> projected onto the space; where reverse mode does not apply, by
-    interpolation of the polynomial t ↦ Λ(b, c)|_{x + t e_k} of degree <= T.degree at t = 0, ...,
-    degree over a basis e_k (for an affine tensor the difference Λ(b, c)|_{e_k} − Λ(b, c)|_0).  Both
-    are the exact derivative of a form that is a polynomial of degree <= T.degree in x, which
-    :func:`degree_residual` checks.  A claim's graph holds, for an affine tensor, one step
-    :func:`form_gradient` (no basis: the same graph at every size, which the dimension-free method
-    evaluates by cyclic differentiation)."""
-    G = _reverse_gradient_in_x(s, T, x, b, c)
-    if G is not None:
-        return G
-    if T.degree == 1:
-        return form_gradient(s, lambda t, y: T(t, y, b, c), x, T.space.kind, T.space.index)
-    return _basis_gradient_in_x(s, T, x, b, c)
+    """The gradient at x of the function y ↦ Λ(b, c)|_y: one engine step :func:`polynomial_gradient`,
+    which derives the form's degree in x itself (T.degree, the tensor's declaration, is not read here:
+    :func:`degree_residual` checks it as a claim).  A claim's graph holds the step and the form's body
+    (no basis: the same graph at every size, which the dimension-free method evaluates by cyclic
+    differentiation)."""
+    return polynomial_gradient(s, lambda t, y: T(t, y, b, c), x, T.space.kind, T.space.index)
 
 
 def _reverse_gradient_in_x(s: Any, T: PoissonTensor, x: Mat, b: Mat, c: Mat) -> Mat | None:
@@ -567,5 +633,5 @@ def poisson_map_residual(s: Any, bracket: PhaseBracket, moment: Callable[[Any], 
 __all__ = ["PhaseBracket", "canonical", "dirac", "metric_dirac", "dirac_bracket_for", "standard_constraints",
            "metric_constraints", "phase_jacobiator", "skew", "sym", "Space", "SO_N", "SO_R", "GL_N", "SYM_N",
            "pairing", "MatrixFunction", "form_gradient", "linear", "quadratic", "trace_power", "PoissonTensor", "lie_poisson",
-           "lambda1", "lambda2", "pencil", "antisymmetry", "gradient_in_x", "jacobiator", "degree_residual",
+           "lambda1", "lambda2", "pencil", "antisymmetry", "polynomial_gradient", "gradient_in_x", "jacobiator", "degree_residual",
            "poisson_checks", "compatibility", "casimir_residual", "poisson_map_residual"]
