@@ -567,6 +567,26 @@ def test_gradient_in_x_does_not_read_the_declared_degree(method):
     assert v["adv-gradient-in-x-rational"] == "error", v
 
 
+# -- the derivative passes' rules, one expression each, and the degree of polynomial_gradient ----------
+
+@pytest.mark.parametrize("method", ["exact", "modular", "float", "free"])
+def test_the_derivative_rules_and_the_gradient_step_on_probes(method):
+    v = verdicts("derivative_pass_probes.py", method)
+    assert len(v) == 17, v
+    if method == "free":
+        assert all(x != "proved" for k, x in v.items() if not k.endswith("-true")), v
+        for k in ("adv-dp-d-realify-true", "adv-dp-d-Y-true", "adv-dp-grad-killing-rect-true"):
+            assert v[k] == "proved", v
+        return
+    for k, x in v.items():
+        if k.endswith("-true"):
+            assert x in PASSING, (k, v)
+        elif k.startswith("adv-dp-pg-"):
+            assert x == "error", (k, v)
+        else:
+            assert x == "fails", (k, v)
+
+
 # -- a resolvent at a spectral parameter that moves with the point (the derivative passes) ----------
 
 @pytest.mark.parametrize("method", ["exact", "modular", "float", "ball", "free"])
