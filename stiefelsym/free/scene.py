@@ -22,7 +22,7 @@ import symengine as se
 
 from ..fields import Dual, DualField, Field
 from ..matrix import CoordinateTracker, Mat, definite
-from ..scene import USER_SCALAR, Flow, HermitianComponents, PaperObjects, _number, map_entries
+from ..scene import TANGENT_KEYS, USER_SCALAR, Flow, HermitianComponents, PaperObjects, _number, map_entries
 from .algebra import (LEADING, Letter, NCPoly, NeedsCoordinates, OperatorLetter, apply_operator, as_coef, coef_latex, derivation,
                       letter_pair, record_refusal, refuse, skew_letter, substitute, symmetric_letter, trace)
 from .mat import FreeBackend, FreeDualBackend, entry_of, one_block
@@ -75,6 +75,20 @@ COND_XP = "X^T P + P^T X = 0 (cond_XP)"
 
 #: the letters a flow may move (the points of T*V); A, A^-1 and the resolvents are constants
 MOVABLE = ("X", "P", "Y", "Q")
+
+
+def _check_movable(key: Any, tracker: Any) -> None:
+    """A key of a tangent vector: one of the letters the algebra moves; the complex point (Zc, Zc_dot),
+    which the coordinate scenes move, is left to them (a refusal: undecided); any other key is refused
+    as the coordinate scenes refuse it (KeyError)."""
+    if key in MOVABLE:
+        return
+    if key in TANGENT_KEYS:
+        raise refuse(f"a tangent vector that moves the complex point ({key}): the dimension-free algebra "
+                     f"moves {', '.join(MOVABLE)}", tracker)
+    record_refusal(f"a tangent vector that moves {key!r}", tracker)
+    raise KeyError(f"a tangent vector moves {', '.join(MOVABLE)}, not {key!r} "
+                   "(A and the resolvents are constant along flows)")
 
 
 class FreeSize:
@@ -1238,10 +1252,7 @@ class FreeScene(PaperObjects):
 
     def tangent(self, flow: Mapping[str, Mat]) -> "FreeTangentScene":
         for key in dict(flow):
-            if key not in MOVABLE:
-                record_refusal(f"a tangent vector that moves {key!r}", self.tracker)
-                raise KeyError(f"a tangent vector moves {', '.join(MOVABLE)}, not {key!r} "
-                               "(A and the resolvents are constant along flows)")
+            _check_movable(key, self.tracker)
         return FreeTangentScene(self, flow)
 
     def _gradient_pair(self, HX: Mat, HP: Mat) -> tuple[Mat, Mat]:
@@ -1259,10 +1270,7 @@ class FreeScene(PaperObjects):
         flow read (see :mod:`stiefelsym.ir.derivative`)."""
         tangent = flow.tangent() if isinstance(flow, Flow) else dict(flow)
         for key in tangent:
-            if key not in MOVABLE:
-                record_refusal(f"a tangent vector that moves {key!r}", self.tracker)
-                raise KeyError(f"a tangent vector moves {', '.join(MOVABLE)}, not {key!r} "
-                               "(A and the resolvents are constant along flows)")
+            _check_movable(key, self.tracker)
         out = {}
         for key in keys:
             poly = entry_of(getattr(self, key))

@@ -587,6 +587,27 @@ def test_the_derivative_rules_and_the_gradient_step_on_probes(method):
             assert x == "fails", (k, v)
 
 
+# -- the complex point: conj, realify, and flows that move Zc ------------------------------------------
+
+@pytest.mark.parametrize("method", ["exact", "modular", "float", "free"])
+def test_the_complex_point_under_every_method(method):
+    v = verdicts("complex_point_probes.py", method)
+    assert len(v) == 14, v
+    assert v["adv-cz-d-bad-key"] == "error", v
+    if method == "free":
+        assert all(x != "proved" for k, x in v.items() if not k.endswith("-true")), v
+        assert v["adv-cz-d-true"] == v["adv-cz-d-conj-false"] == "undecided", v
+        assert v["adv-cz-conjZtconjZ-true"] == v["adv-cz-conj-product-true"] == "proved", v
+        return
+    # exact: the complex point's symbolic solve is beyond its budget at (3, 2) (inconclusive, never wrong)
+    budget = ("inconclusive",) if method == "exact" else ()
+    for k, x in v.items():
+        if k.endswith("-true"):
+            assert x in PASSING + budget, (k, v)
+        elif k != "adv-cz-d-bad-key":
+            assert x in ("fails",) + budget, (k, v)
+
+
 # -- a resolvent at a spectral parameter that moves with the point (the derivative passes) ----------
 
 @pytest.mark.parametrize("method", ["exact", "modular", "float", "ball", "free"])
