@@ -706,19 +706,6 @@ def downgrade_note(r: Result, memory: float | None) -> str | None:
     return None
 
 
-def _engine_methods(methods: Sequence[str], max_n: int | None) -> tuple[str, ...]:
-    """The methods to plan: with --max-n, auto keeps its dimension-free run (which a plan with
-    explicit sizes leaves out), in the same place as in a plan of the claims' own sizes."""
-    if max_n is None:
-        return tuple(methods)
-    out: list[str] = []
-    for m in methods:
-        if m == "auto" and "free" not in methods:
-            out.append("free")
-        out.append(m)
-    return tuple(out)
-
-
 def _remote(address: str) -> Any:
     """runner.verify on the dask cluster at ``address``; a cluster that cannot be used is bad input."""
     from . import distributed
@@ -805,11 +792,12 @@ def _verify(out: Any, ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tu
         if not claims:
             raise InputError("no claims to verify (0 claims loaded)")
         _check_costs(runner, claims, sizes, methods, budget, memory)
+        from .runner import engine_methods
         engine = runner.verify
         if scheduler is not None:
             engine = _remote(scheduler)
         try:
-            engine(claims, sizes=list(sizes) or None, methods=_engine_methods(methods, max_n), seed=seed,
+            engine(claims, sizes=list(sizes) or None, methods=engine_methods(methods, max_n), seed=seed,
                    on_result=on_result, on_plan=progress.plan, hard=hard,
                    timeout=timeout, memory=memory, jobs=jobs, strict_sizes=bool(ids) and max_n is None)
         finally:

@@ -34,12 +34,14 @@ def check(results_file: Path, no_rerun: bool, claims_files: tuple[str, ...]) -> 
     try:
         payload = json.loads(results_file.read_text(encoding="utf-8"))
         records = payload["results"]
-        meta = payload.get("meta", {})
+        meta = payload["meta"]
         if not isinstance(records, list) or not all(isinstance(r, dict) for r in records):
             raise TypeError("results is not a list of records")
+        if not isinstance(meta, dict):
+            raise TypeError("meta (the command the file is the run of) is not a mapping")
     except (OSError, UnicodeDecodeError, json.JSONDecodeError, KeyError, TypeError) as exc:
         raise InputError(f"{results_file} is not a stiefelsym results file: {exc}") from None
     files = list(claims_files) or list(meta.get("claims_files") or [])
     registry, _ = _registry(files or None)
-    bad = check_results(records, registry, echo=click.echo, rerun=not no_rerun, hard=meta.get("hard"))
+    bad = check_results(records, registry, echo=click.echo, rerun=not no_rerun, hard=meta.get("hard"), meta=meta)
     raise SystemExit(1 if bad else 0)

@@ -52,17 +52,69 @@ def _evidence_edits(record: dict, again: dict) -> list[str]:
     return [k for k in EVIDENCE if _canonical(record.get(k)) != _canonical(again.get(k))]
 
 
+def planned_runs(claim: Any, meta: dict) -> set[tuple[tuple[int, int] | None, str]]:
+    """The runs (size or None for the dimension-free run, method) of the printed claim that the command
+    a results file records planned (its methods, and --max-n or --size, or the claim's own sizes): what
+    :func:`stiefelsym.runner.plan` makes of them for this claim; ``auto`` stands for the method it chose."""
+    from .runner import _sizes_for, engine_methods
+    methods = list(meta.get("methods") or ["auto"])
+    max_n, listed = meta.get("max_n"), meta.get("sizes")
+    sizes: list[Size] | None = None
+    if max_n is not None:
+        sizes = [Size(n, r) for n in range(1, int(max_n) + 1) for r in range(1, n + 1)]
+    elif listed:
+        sizes = [Size(*(int(x) for x in str(t).split(","))) for t in listed]
+    out: set[tuple[tuple[int, int] | None, str]] = set()
+    for m in engine_methods(methods, max_n):
+        if m == "free" or (m == "auto" and sizes is None):
+            out.add((None, "free"))
+        if m == "free" or (m in ("float", "ball") and claim.kind == "dim"):
+            continue
+        for sz in _sizes_for(claim, sizes):
+            out.add(((sz.n, sz.r), m))
+    return out
+
+
+def missing_runs(records: list[dict], registry: Registry, meta: dict) -> list[str]:
+    """The runs a results file's command planned for a claim it has records of, and that it has no record
+    of: a file is the whole run of its command, so a record left out (a failing size, a method that
+    refuted the claim) is caught like an edited one."""
+    have: dict[str, set] = {}
+    for r in records:
+        if r.get("variant"):
+            continue
+        n = r.get("n")
+        have.setdefault(r.get("claim"), set()).add((None if n is None else (n, r.get("r")), r.get("method")))
+    out = []
+    for cid, cells in have.items():
+        if cid not in registry:
+            continue                    # refused below, record by record
+        sizes_with_a_record = {size for size, m in cells if size is not None}
+        for size, m in sorted(planned_runs(registry.get(cid), meta), key=lambda x: (x[0] or (0, 0), x[1])):
+            found = size in sizes_with_a_record if m == "auto" else (size, m) in cells
+            if not found:
+                where = "all n, r" if size is None else f"({size[0]},{size[1]})"
+                out.append(f"{cid} {where} {m}: no record of a run its command planned ({meta.get('command')!r})")
+    return out
+
+
 def check_results(records: list[dict], registry: Registry, echo: Callable[[str], None] = print,
-                  rerun: bool = True, hard: str | None = None) -> int:
+                  rerun: bool = True, hard: str | None = None, meta: dict | None = None) -> int:
     """Re-trace and re-check every record; the number of records that do not hold up.  With
     ``rerun`` every fixed-size record is also run again (its method, size and seed) and its verdict
-    compared: a hand-edited verdict is caught even where the digest is the claim's."""
+    compared: a hand-edited verdict is caught even where the digest is the claim's.  With the file's
+    ``meta`` (its command's methods and sizes), every run the command planned for a claim the file
+    has records of must have its record (:func:`missing_runs`)."""
     from .free_method import run_free
     from .runner import graph_digest, run_one
     bad = 0
     for p in certificate_problems(records):
         echo(f"REJECTED {p}")
         bad += 1
+    if meta is not None:
+        for p in missing_runs(records, registry, meta):
+            echo(f"REJECTED {p}")
+            bad += 1
     free_done: dict[str, Any] = {}
     for r in records:
         cid, n, rr = r.get("claim"), r.get("n"), r.get("r")

@@ -11,7 +11,7 @@ never by the code that ran the claim.
 from __future__ import annotations
 
 import shlex
-from typing import Callable, Iterable
+from typing import Callable, Iterable, Sequence
 
 from .claims import Claim, Registry, Size
 from .hard import hard_case
@@ -44,6 +44,19 @@ def _sizes_for(claim: Claim, sizes: list[Size] | None) -> list[Size]:
 def _spec_text(claim: Claim) -> str:
     describe = getattr(claim.sizes, "describe", None)
     return describe() if describe is not None else "its declared sizes"
+
+
+def engine_methods(methods: Sequence[str], max_n: int | None) -> tuple[str, ...]:
+    """The methods to plan: with --max-n, auto keeps its dimension-free run (which a plan with
+    explicit sizes leaves out), in the same place as in a plan of the claims' own sizes."""
+    if max_n is None:
+        return tuple(methods)
+    out: list[str] = []
+    for m in methods:
+        if m == "auto" and "free" not in methods:
+            out.append("free")
+        out.append(m)
+    return tuple(out)
 
 
 def plan(claims: list[Claim], sizes: list[Size] | None, methods: Iterable[str],

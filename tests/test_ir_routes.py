@@ -250,6 +250,29 @@ def test_a_hand_edited_verdict_is_caught_by_check(tmp_path):
     assert r.exit_code == 1 and "REJECTED" in r.output
 
 
+def test_a_record_left_out_is_caught_by_check(tmp_path):
+    """A results file is the whole run of its command: the failing records of a claim dropped (so that the
+    file shows only its passing sizes) are missing runs the command planned, with or without reruns."""
+    claims = tmp_path / "xxt.py"
+    claims.write_text("from stiefelsym import admissible, claim\n\n\n"
+                      "@claim('om-xxt', kind='id', sizes=admissible(n_max=3))\n"
+                      "def xxt(s):\n    \"\"\"X X^T = I_n (false unless r = n).\"\"\"\n"
+                      "    return {'v': s.X @ s.X.T - s.In}\n")
+    out = tmp_path / "rep"
+    r = _run_cli(["verify", "--claims", str(claims), "--method", "modular", "--report-dir", str(out)], tmp_path)
+    payload = json.loads((out / "results.json").read_text())
+    assert {x["verdict"] for x in payload["results"]} == {"checked", "fails"}, r.output
+    assert _run_cli(["check", str(out / "results.json")], tmp_path).exit_code == 0
+    payload["results"] = [x for x in payload["results"] if x["verdict"] != "fails"]
+    (out / "results.json").write_text(json.dumps(payload))
+    for extra in ([], ["--no-rerun"]):
+        r = _run_cli(["check", str(out / "results.json"), *extra], tmp_path)
+        assert r.exit_code == 1 and r.output.count("no record of a run its command planned") == 3, r.output
+    del payload["meta"]
+    (out / "results.json").write_text(json.dumps(payload))
+    assert _run_cli(["check", str(out / "results.json")], tmp_path).exit_code == 2
+
+
 def test_a_free_proof_without_a_certificate_is_refused(tmp_path):
     from stiefelsym.certificate_check import main as checker
     forged = {"results": [{"claim": "prep", "method": "free", "verdict": "proved", "certificate_data": None}]}
