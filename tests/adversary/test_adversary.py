@@ -608,6 +608,19 @@ def test_the_complex_point_under_every_method(method):
             assert x in ("fails",) + budget, (k, v)
 
 
+# -- the operator letter's rules (sym_operator) ----------------------------------------------------
+
+@pytest.mark.parametrize("method", ["modular", "free"])
+def test_the_operator_rules_under_free_and_a_fixed_size(method):
+    v = verdicts("operator_rules_probes.py", method)
+    assert len(v) == 13, v
+    for k, x in v.items():
+        if k.endswith("-true"):
+            assert x == ("proved" if method == "free" else "checked"), (k, v)
+        else:
+            assert x == ("undecided" if method == "free" else "fails"), (k, v)
+
+
 # -- a resolvent at a spectral parameter that moves with the point (the derivative passes) ----------
 
 @pytest.mark.parametrize("method", ["exact", "modular", "float", "ball", "free"])
