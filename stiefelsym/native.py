@@ -25,6 +25,7 @@ from __future__ import annotations
 import contextlib
 import math
 import threading
+import weakref
 from typing import Any
 
 import numpy as np
@@ -292,7 +293,7 @@ class F64:
     reassociated), each with a bound of its own."""
 
     __slots__ = ("_v", "_e", "_m", "nv", "t", "prods", "diag", "sel", "m32", "mf", "mtop", "msrc", "msym",
-                 "fac", "lazy", "defer")
+                 "fac", "lazy", "defer", "__weakref__")
 
     def __init__(self, v: np.ndarray, e: float, m: np.ndarray | None, nv: float | None = None) -> None:
         self._v, self._e, self._m, self.nv = v, e, m, nv
@@ -647,16 +648,35 @@ class Float64Backend(Backend):
 
     def __init__(self, field) -> None:
         self.field = field
-        #: the matrices holding a remembered product or transpose (see :meth:`release`)
-        self._holders: list[F64] = []
+        #: the matrices holding a remembered product or transpose, by id, weakly (see :meth:`release`):
+        #: a matrix nothing else refers to goes at once, with what it remembers
+        self._holders: dict[int, weakref.ref] = {}
 
     def release(self) -> None:
         """Forget every remembered product and transpose.  They tie matrices to each other in
         cycles, which only the garbage collector would free; the float method releases them when an
         evaluation is over, so its arrays go as soon as the scene does."""
-        holders, self._holders = self._holders, []
-        for a in holders:
-            a.prods = a.t = None
+        holders, self._holders = self._holders, {}
+        for ref in holders.values():
+            a = ref()
+            if a is not None:
+                a.prods = a.t = None
+
+    def forget(self, a: F64) -> None:
+        """The evaluation reads a no more (the graph evaluator's word, see
+        :func:`.ir.evaluate.release_plan`): forget what it remembers, its products, sums, multiples
+        and transpose, so that those arrays go as soon as nothing else reads them, not at the end
+        of the evaluation (a graph of LA1 at n = 200 otherwise keeps every 200 x 200 intermediate
+        alive to the end, and the allocator hands their pages back and faults them in again on
+        every run).  Only what is remembered goes: a, its values, bound and scales stay as they
+        are, and a later operation with a computes what it needs again."""
+        self._holders.pop(id(a), None)
+        a.prods = None
+        t = a.t
+        if t is not None:
+            a.t = None
+            if t.t is a:
+                t.t = None
 
     def accepts(self, x):
         return type(x) is ErrNum and isinstance(x.v, float)
@@ -741,7 +761,7 @@ class Float64Backend(Backend):
         prods = a.prods
         if prods is None:
             prods = a.prods = {}
-            self._holders.append(a)
+            self._holders[id(a)] = weakref.ref(a)
         return prods
 
     def _with_diagonal(self, a, b, sign: float) -> F64:
@@ -1049,7 +1069,8 @@ class Float64Backend(Backend):
         if t is None:
             t = a.t = _like(a.v.T, a.e, a, a.nv, transpose=True)
             t.t = a
-            self._holders += (a, t)
+            self._holders[id(a)] = weakref.ref(a)
+            self._holders[id(t)] = weakref.ref(t)
             if a.diag is not None:
                 t.diag = a.diag
         return t

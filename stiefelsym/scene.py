@@ -464,7 +464,9 @@ class Scene(PaperObjects):
             return X, P
         S = self._skew_params(f"{prefix}S", n, "n")
         In = self.identity(n, "n")
-        Q = (In - S) @ (In + S).inv()          # in O(n); det Q = 1
+        minus, plus = In - S, In + S
+        inverse = plus.inv()
+        Q = minus @ inverse                    # in O(n); det Q = 1
         # the first r columns (the first one negated on the second component of O(n)) as one
         # product with the constant n x r matrix [D; 0]
         D = np.zeros((n, r), dtype=np.int64)
@@ -475,9 +477,18 @@ class Scene(PaperObjects):
         X = Q @ J
         W = self._skew_params(f"{prefix}W", r, "r")
         Z = self._general_params(f"{prefix}Z", n, r, ("n", "r"))
-        P0 = X @ W + (In - X @ X.T) @ Z
+        XW, proj = X @ W, In - X @ X.T
+        Pz = proj @ Z
+        P0 = XW + Pz
         if self._realization == "metric":
             P0 = self.A @ P0
+        # what only the construction of the point read goes now, not with the scene (X keeps what
+        # it remembers: X Xᵀ is a term of the claims)
+        forget = getattr(backend(self._field), "forget", None)
+        if forget is not None:
+            for M in (S, In, minus, plus, inverse, Q, J, W, Z, XW, proj, Pz):
+                if M._n is not None:
+                    forget(M._n)
         return X, P0
 
     def equivariant_reduction(self) -> str | None:

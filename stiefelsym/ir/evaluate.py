@@ -14,6 +14,7 @@ import operator
 from fractions import Fraction
 from typing import Any, Callable
 
+from ..matrix import Mat
 from ..matrix import block as _block
 from .graph import Graph, Named, Ref, Size, _encode
 from .statements import Count, Rank
@@ -74,8 +75,28 @@ class Evaluator:
         memo = self.root.memo
         shared = getattr(self.root.bind[0], "_node_memo", None)
         if shared is None:
-            for i, kernel in _program(self.g, self.deps):
-                memo[i] = kernel(memo, self)
+            prog = _program(self.g, self.deps)
+            plan = release_plan(self.g, prog)
+            if plan is None:
+                for i, kernel in prog:
+                    memo[i] = kernel(memo, self)
+                return memo[self.g.output.i]
+            # every value goes once the last node that reads it is computed: its arrays are
+            # reused by the nodes after it instead of all living to the end of the evaluation
+            live: dict[int, int] = {}
+            for (i, kernel), dead in zip(prog, plan):
+                v = memo[i] = kernel(memo, self)
+                for x, _f in _natives(v):
+                    live[id(x)] = live.get(id(x), 0) + 1
+                for j in dead:
+                    for x, f in _natives(memo.pop(j)):
+                        k = id(x)
+                        c = live[k] - 1
+                        if c:
+                            live[k] = c
+                        else:
+                            del live[k]
+                            _forget(x, f)
             return memo[self.g.output.i]
         # values shared with other graphs evaluated on this very point, by the structure of the
         # node's whole subgraph (the mutation analysis: a mutant recomputes only what it changed)
@@ -349,6 +370,55 @@ def _program(g: Graph, deps: list) -> list:
             stack.extend(g.refs(i))
     prog = g.cache["program"] = [(i, _kernel(g.ops[i], g.args[i])) for i in sorted(need)]
     return prog
+
+
+def release_plan(g: Graph, prog: list) -> list | None:
+    """For every step of the program, the nodes whose values no later step reads (never the
+    output); None where values must stay to the end: a graph with a traced function, whose body
+    may read a top-level node whenever the function is called.  A ``kw`` node's arguments are read
+    by the node that takes the keywords (see :meth:`Evaluator._kw`), so they stay until it runs."""
+    if "release_plan" in g.cache:
+        return g.cache["release_plan"]
+    ops = g.ops
+    plan: list | None = None
+    if not any(ops[i] == "fn" for i, _k in prog):
+        last: dict[int, int] = {}
+        for step, (i, _k) in enumerate(prog):
+            for j in g.refs(i):
+                last[j] = step
+                if ops[j] == "kw":
+                    for k in g.refs(j):
+                        last[k] = step
+        plan = [[] for _ in prog]
+        out = g.output.i
+        for j, step in last.items():
+            if j != out:
+                plan[step].append(j)
+    g.cache["release_plan"] = plan
+    return plan
+
+
+def _natives(v: Any) -> tuple:
+    """The matrices in native storage a node's value holds (itself, or the members of a
+    container), as (native storage, field) pairs."""
+    t = type(v)
+    if t is Mat:
+        return () if v._n is None else ((v._n, v._field),)
+    if t is list or t is tuple:
+        xs = v
+    elif t is dict:
+        xs = v.values()
+    else:
+        return ()
+    return tuple((x._n, x._field) for x in xs if type(x) is Mat and x._n is not None)
+
+
+def _forget(x: Any, field: Any) -> None:
+    """Tell the backend of a native matrix that the evaluation reads it no more (see
+    :meth:`.native.Float64Backend.forget`); nothing for a backend that remembers nothing."""
+    forget = getattr(field.__dict__.get("_backend"), "forget", None)
+    if forget is not None:
+        forget(x)
 
 
 def evaluate(g: Graph, scene: Any) -> Any:
