@@ -83,20 +83,25 @@ class Evaluator:
                 return memo[self.g.output.i]
             # every value goes once the last node that reads it is computed: its arrays are
             # reused by the nodes after it instead of all living to the end of the evaluation
+            # (the native matrices a value held when it was computed: a matrix may change its
+            # storage later, and only what was counted is uncounted)
             live: dict[int, int] = {}
+            held: dict[int, tuple] = {}
             for (i, kernel), dead in zip(prog, plan):
                 v = memo[i] = kernel(memo, self)
-                for x, _f in _natives(v):
+                xs = held[i] = _natives(v)
+                for x, _f in xs:
                     live[id(x)] = live.get(id(x), 0) + 1
                 for j in dead:
-                    for x, f in _natives(memo.pop(j)):
+                    del memo[j]
+                    for x, f in held.pop(j):
                         k = id(x)
                         c = live[k] - 1
                         if c:
                             live[k] = c
                         else:
                             del live[k]
-                            _forget(x, f)
+                            _forget(x, f, live)
             return memo[self.g.output.i]
         # values shared with other graphs evaluated on this very point, by the structure of the
         # node's whole subgraph (the mutation analysis: a mutant recomputes only what it changed)
@@ -413,12 +418,13 @@ def _natives(v: Any) -> tuple:
     return tuple((x._n, x._field) for x in xs if type(x) is Mat and x._n is not None)
 
 
-def _forget(x: Any, field: Any) -> None:
-    """Tell the backend of a native matrix that the evaluation reads it no more (see
-    :meth:`.native.Float64Backend.forget`); nothing for a backend that remembers nothing."""
+def _forget(x: Any, field: Any, live: dict) -> None:
+    """Tell the backend of a native matrix that the evaluation reads it no more (``live``: the ids
+    of the native matrices it still reads; see :meth:`.native.Float64Backend.forget`); nothing for
+    a backend that remembers nothing."""
     forget = getattr(field.__dict__.get("_backend"), "forget", None)
     if forget is not None:
-        forget(x)
+        forget(x, live)
 
 
 def evaluate(g: Graph, scene: Any) -> Any:
