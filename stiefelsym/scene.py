@@ -475,6 +475,10 @@ class Scene(PaperObjects):
             D[0, 0] = -1
         J = Mat._consts(D, self._field, ("n", "r"), self.tracker)
         X = Q @ J
+        # what only the construction of the point reads goes as soon as it is read, not with the
+        # scene (X keeps what it remembers: X Xᵀ is a term of the claims)
+        self._done_with(S, In, minus, plus, inverse, Q, J)
+        del S, minus, plus, inverse, Q
         W = self._skew_params(f"{prefix}W", r, "r")
         Z = self._general_params(f"{prefix}Z", n, r, ("n", "r"))
         XW, proj = X @ W, In - X @ X.T
@@ -482,14 +486,17 @@ class Scene(PaperObjects):
         P0 = XW + Pz
         if self._realization == "metric":
             P0 = self.A @ P0
-        # what only the construction of the point read goes now, not with the scene (X keeps what
-        # it remembers: X Xᵀ is a term of the claims)
+        self._done_with(In, W, Z, XW, proj, Pz)
+        return X, P0
+
+    def _done_with(self, *mats: Mat) -> None:
+        """Tell the backend that the construction of the point reads these matrices no more (see
+        :meth:`.native.Float64Backend.forget`): what it remembers of them goes with them."""
         forget = getattr(backend(self._field), "forget", None)
         if forget is not None:
-            for M in (S, In, minus, plus, inverse, Q, J, W, Z, XW, proj, Pz):
+            for M in mats:
                 if M._n is not None:
                     forget(M._n)
-        return X, P0
 
     def equivariant_reduction(self) -> str | None:
         """What the equivariant chart assumes, stated for reports (engine only; None in the Cayley
