@@ -15,6 +15,7 @@ from fractions import Fraction
 from typing import Any, Callable
 
 from ..matrix import Mat
+from ..native import backend
 from ..matrix import block as _block
 from .graph import Graph, Named, Ref, Size, _encode
 from .statements import Count, Rank
@@ -76,7 +77,7 @@ class Evaluator:
         shared = getattr(self.root.bind[0], "_node_memo", None)
         if shared is None:
             prog = _program(self.g, self.deps)
-            plan = release_plan(self.g, prog)
+            plan = release_plan(self.g, prog) if _forgets(self.root.bind[0]) else None
             if plan is None:
                 for i, kernel in prog:
                     memo[i] = kernel(memo, self)
@@ -394,6 +395,7 @@ def release_plan(g: Graph, prog: list) -> list | None:
                 if ops[j] == "kw":
                     for k in g.refs(j):
                         last[k] = step
+        _transposes_live(g, prog, last)
         plan = [[] for _ in prog]
         out = g.output.i
         for j, step in last.items():
@@ -401,6 +403,48 @@ def release_plan(g: Graph, prog: list) -> list | None:
                 plan[step].append(j)
     g.cache["release_plan"] = plan
     return plan
+
+
+def _transposes_live(g: Graph, prog: list, last: dict) -> None:
+    """Keep a node, and the nodes it reads, up to every later node whose value is its transpose by
+    structure (Tᵀ = the node T reads; (x y)ᵀ = yᵀ xᵀ, (x ± y)ᵀ = xᵀ ± yᵀ, x + y = y + x): a backend
+    may find that value as the transpose of the earlier one, through what it remembers of the
+    earlier node and its operands (the float backend does, see
+    :meth:`.native.Float64Backend.forget`), which must not be forgotten before then."""
+    ops, args = g.ops, g.args
+    tr: dict[int, int] = {}
+    seen: dict[tuple, int] = {}
+    for step, (i, _k) in enumerate(prog):
+        op, a = ops[i], args[i]
+        if op == "T" and len(a) == 1 and type(a[0]) is Ref:
+            tr.setdefault(i, a[0].i)
+            tr.setdefault(a[0].i, i)
+            continue
+        if op not in ("matmul", "add", "sub") or len(a) != 2 or type(a[0]) is not Ref or type(a[1]) is not Ref:
+            continue
+        x, y = a[0].i, a[1].i
+        tx, ty = tr.get(x), tr.get(y)
+        if tx is not None and ty is not None:
+            cands = [(op, ty, tx)] if op == "matmul" else [(op, tx, ty)] + ([(op, ty, tx)] if op == "add" else [])
+            for key in cands:
+                j = seen.get(key)
+                if j is not None:
+                    tr.setdefault(i, j)
+                    tr.setdefault(j, i)
+                    for k in (j, *g.refs(j)):
+                        if last.get(k, -1) < step:
+                            last[k] = step
+                    break
+        seen.setdefault((op, x, y), i)
+
+
+def _forgets(scene: Any) -> bool:
+    """Whether the backend of the scene's number system frees what it remembers of a value the
+    evaluation reads no more (otherwise values are simply kept to the end: nothing to gain)."""
+    field = getattr(scene, "_field", None)
+    if field is None:
+        return False
+    return getattr(backend(field), "forget", None) is not None
 
 
 def _natives(v: Any) -> tuple:
