@@ -651,16 +651,15 @@ class Float64Backend(Backend):
         #: the matrices holding a remembered product or transpose, by id, weakly (see :meth:`release`):
         #: a matrix nothing else refers to goes at once, with what it remembers
         self._holders: dict[int, weakref.ref] = {}
-        #: where a matrix is remembered as the other operand, or as the result: {id: [(holder, key)]}
+        #: where a matrix is remembered as the other operand: {id(b): [(holder, key), ...]}
         self._as_operand: dict[int, list] = {}
-        self._as_result: dict[int, list] = {}
 
     def release(self) -> None:
         """Forget every remembered product and transpose.  They tie matrices to each other in
         cycles, which only the garbage collector would free; the float method releases them when an
         evaluation is over, so its arrays go as soon as the scene does."""
         holders, self._holders = self._holders, {}
-        self._as_operand, self._as_result = {}, {}
+        self._as_operand = {}
         for ref in holders.values():
             a = ref()
             if a is not None:
@@ -669,42 +668,41 @@ class Float64Backend(Backend):
     def forget(self, a: F64, live: Any = ()) -> None:
         """The evaluation reads a no more (the graph evaluator's word, see
         :func:`.ir.evaluate.release_plan`; ``live``: the ids of the matrices it still reads): forget
-        what a remembers (its products, sums, multiples and transpose) and every remembered result
-        that a is an operand of or is, so that those arrays go as soon as nothing else reads them,
+        what a remembers (its products, sums, multiples and transpose) and the results remembered
+        with a as the other operand, so that those arrays go as soon as nothing else reads them,
         not at the end of the evaluation (a graph of LA1 at n = 200 otherwise keeps every
         200 x 200 intermediate alive to the end, and the allocator hands their pages back and
         faults them in again on every run).  While a's transpose is still read, a stays as it
         is: a product or sum with the transpose is looked up through a ((A Bᵀ)ᵀ = B Aᵀ; the
-        evaluator keeps the nodes such a lookup finds).  Only what is remembered goes: a's values,
-        bound and scales stay, and a later operation with a computes what it needs again."""
+        evaluator keeps the nodes such a lookup finds).  A result stays while its operands do,
+        whatever becomes of it: a later product may find it (a chain reassociated through a
+        product already known, see :meth:`_reassociated`), and computing it again could take
+        another association.  Only what is remembered goes: a's values, bound and scales stay, and
+        a later operation with a computes what it needs again."""
         t = a.t
         if t is not None and id(t) in live:
             return
         for x in (a,) if t is None else (a, t):
             self._holders.pop(id(x), None)
             x.prods = None
-            for where, slot in ((self._as_operand, 0), (self._as_result, 1)):
-                for ref, key in where.pop(id(x), ()):
-                    h = ref()
-                    if h is not None and h.prods is not None:
-                        hit = h.prods.get(key)
-                        if hit is not None and hit[slot] is x:
-                            del h.prods[key]
+            for ref, key in self._as_operand.pop(id(x), ()):
+                h = ref()
+                if h is not None and h.prods is not None:
+                    hit = h.prods.get(key)
+                    if hit is not None and hit[0] is x:
+                        del h.prods[key]
         if t is not None:
             a.t = None
             if t.t is a:
                 t.t = None
 
-    def _remember(self, memo: dict, a: F64, key: Any, b: F64 | None, out: F64) -> None:
-        """memo[key] = (b, out) in a's memo, noted under b and under out (see :meth:`forget`)."""
+    def _remember(self, memo: dict, a: F64, key: Any, b: F64, out: F64) -> None:
+        """memo[key] = (b, out) in a's memo, noted under b (see :meth:`forget`)."""
         memo[key] = (b, out)
-        note = (weakref.ref(a), key)
-        for where, x in ((self._as_operand, b), (self._as_result, out)):
-            if x is not None and x is not a:
-                notes = where.get(id(x))
-                if notes is None:
-                    notes = where[id(x)] = []
-                notes.append(note)
+        notes = self._as_operand.get(id(b))
+        if notes is None:
+            notes = self._as_operand[id(b)] = []
+        notes.append((weakref.ref(a), key))
 
     def accepts(self, x):
         return type(x) is ErrNum and isinstance(x.v, float)
@@ -1073,7 +1071,7 @@ class Float64Backend(Backend):
                 nv = _fro(v)
                 e = _norm(a) * ce + a.e * abs(cv) + a.e * ce + U64 * nv + _uf((len(dv), len(dv)))
                 out = self._diagonal(v, dm * cm, _up(e, 6), nv)
-            self._remember(memo, a, key, None, out)
+            memo[key] = (None, out)
             return out
         with _quiet():
             v = a.v * cv
@@ -1089,7 +1087,7 @@ class Float64Backend(Backend):
                 out = _f32(v, _up(e, 6), a32 * c32, fa * _R32, ta * cm * (1.0 + 2.0**-22), nv)
             else:
                 out = F64(v, _up(e, 6), a.m * cm, nv)
-        self._remember(memo, a, key, None, out)
+        memo[key] = (None, out)
         return out
 
     def T(self, a):
