@@ -25,6 +25,7 @@ from __future__ import annotations
 import contextlib
 import math
 import threading
+import weakref
 from typing import Any
 
 import numpy as np
@@ -292,7 +293,7 @@ class F64:
     reassociated), each with a bound of its own."""
 
     __slots__ = ("_v", "_e", "_m", "nv", "t", "prods", "diag", "sel", "m32", "mf", "mtop", "msrc", "msym",
-                 "fac", "lazy", "defer")
+                 "fac", "lazy", "defer", "__weakref__")
 
     def __init__(self, v: np.ndarray, e: float, m: np.ndarray | None, nv: float | None = None) -> None:
         self._v, self._e, self._m, self.nv = v, e, m, nv
@@ -647,16 +648,61 @@ class Float64Backend(Backend):
 
     def __init__(self, field) -> None:
         self.field = field
-        #: the matrices holding a remembered product or transpose (see :meth:`release`)
-        self._holders: list[F64] = []
+        #: the matrices holding a remembered product or transpose, by id, weakly (see :meth:`release`):
+        #: a matrix nothing else refers to goes at once, with what it remembers
+        self._holders: dict[int, weakref.ref] = {}
+        #: where a matrix is remembered as the other operand: {id(b): [(holder, key), ...]}
+        self._as_operand: dict[int, list] = {}
 
     def release(self) -> None:
         """Forget every remembered product and transpose.  They tie matrices to each other in
         cycles, which only the garbage collector would free; the float method releases them when an
         evaluation is over, so its arrays go as soon as the scene does."""
-        holders, self._holders = self._holders, []
-        for a in holders:
-            a.prods = a.t = None
+        holders, self._holders = self._holders, {}
+        self._as_operand = {}
+        for ref in holders.values():
+            a = ref()
+            if a is not None:
+                a.prods = a.t = None
+
+    def forget(self, a: F64, live: Any = ()) -> None:
+        """The evaluation reads a no more (the graph evaluator's word, see
+        :func:`.ir.evaluate.release_plan`; ``live``: the ids of the matrices it still reads): forget
+        what a remembers (its products, sums, multiples and transpose) and the results remembered
+        with a as the other operand, so that those arrays go as soon as nothing else reads them,
+        not at the end of the evaluation (a graph of LA1 at n = 200 otherwise keeps every
+        200 x 200 intermediate alive to the end, and the allocator hands their pages back and
+        faults them in again on every run).  While a's transpose is still read, a stays as it
+        is: a product or sum with the transpose is looked up through a ((A Bᵀ)ᵀ = B Aᵀ; the
+        evaluator keeps the nodes such a lookup finds).  A result stays while its operands do,
+        whatever becomes of it: a later product may find it (a chain reassociated through a
+        product already known, see :meth:`_reassociated`), and computing it again could take
+        another association.  Only what is remembered goes: a's values, bound and scales stay, and
+        a later operation with a computes what it needs again."""
+        t = a.t
+        if t is not None and id(t) in live:
+            return
+        for x in (a,) if t is None else (a, t):
+            self._holders.pop(id(x), None)
+            x.prods = None
+            for ref, key in self._as_operand.pop(id(x), ()):
+                h = ref()
+                if h is not None and h.prods is not None:
+                    hit = h.prods.get(key)
+                    if hit is not None and hit[0] is x:
+                        del h.prods[key]
+        if t is not None:
+            a.t = None
+            if t.t is a:
+                t.t = None
+
+    def _remember(self, memo: dict, a: F64, key: Any, b: F64, out: F64) -> None:
+        """memo[key] = (b, out) in a's memo, noted under b (see :meth:`forget`)."""
+        memo[key] = (b, out)
+        notes = self._as_operand.get(id(b))
+        if notes is None:
+            notes = self._as_operand[id(b)] = []
+        notes.append((weakref.ref(a), key))
 
     def accepts(self, x):
         return type(x) is ErrNum and isinstance(x.v, float)
@@ -741,7 +787,7 @@ class Float64Backend(Backend):
         prods = a.prods
         if prods is None:
             prods = a.prods = {}
-            self._holders.append(a)
+            self._holders[id(a)] = weakref.ref(a)
         return prods
 
     def _with_diagonal(self, a, b, sign: float) -> F64:
@@ -796,13 +842,13 @@ class Float64Backend(Backend):
         else:
             out = self._transposed_sum(a, b, "+")
         if out is not None:
-            memo[("+", id(b))] = (b, out)
+            self._remember(memo, a, ("+", id(b)), b, out)
             return out
         with _quiet():
             v = a.v + b.v
             nv = _fro(v)
             out = _with_scales(v, _up(a.e + b.e + U64 * nv + _uf(v.shape), 3), _scales_sum(a, b), nv)
-        memo[("+", id(b))] = (b, out)
+        self._remember(memo, a, ("+", id(b)), b, out)
         return out
 
     def sub(self, a, b):
@@ -819,13 +865,13 @@ class Float64Backend(Backend):
         else:
             out = self._transposed_sum(a, b, "-")
         if out is not None:
-            memo[("-", id(b))] = (b, out)
+            self._remember(memo, a, ("-", id(b)), b, out)
             return out
         with _quiet():
             v = a.v - b.v
             nv = _fro(v)
             out = _with_scales(v, _up(a.e + b.e + U64 * nv + _uf(v.shape), 3), _scales_sum(a, b), nv)
-        memo[("-", id(b))] = (b, out)
+        self._remember(memo, a, ("-", id(b)), b, out)
         return out
 
     def _transposed_sum(self, a, b, op: str) -> F64 | None:
@@ -857,7 +903,7 @@ class Float64Backend(Backend):
             hit = bt.prods.get(id(at))
             if hit is not None:                      # a b = (bᵀ aᵀ)ᵀ, computed already
                 out = self.T(hit[1])
-                prods[id(b)] = (b, out)
+                self._remember(prods, a, id(b), b, out)
                 return out
         out = None
         if a.lazy is not None:
@@ -869,7 +915,7 @@ class Float64Backend(Backend):
             out = F64.deferred(lambda: self._product(a, b), ("prod", (ma, nb), a, b))
         if out is None:
             out = self._product(a, b)
-        prods[id(b)] = (b, out)
+        self._remember(prods, a, id(b), b, out)
         return out
 
     def _known(self, a, b):
@@ -1049,7 +1095,8 @@ class Float64Backend(Backend):
         if t is None:
             t = a.t = _like(a.v.T, a.e, a, a.nv, transpose=True)
             t.t = a
-            self._holders += (a, t)
+            self._holders[id(a)] = weakref.ref(a)
+            self._holders[id(t)] = weakref.ref(t)
             if a.diag is not None:
                 t.diag = a.diag
         return t

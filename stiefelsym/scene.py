@@ -464,7 +464,9 @@ class Scene(PaperObjects):
             return X, P
         S = self._skew_params(f"{prefix}S", n, "n")
         In = self.identity(n, "n")
-        Q = (In - S) @ (In + S).inv()          # in O(n); det Q = 1
+        minus, plus = In - S, In + S
+        inverse = plus.inv()
+        Q = minus @ inverse                    # in O(n); det Q = 1
         # the first r columns (the first one negated on the second component of O(n)) as one
         # product with the constant n x r matrix [D; 0]
         D = np.zeros((n, r), dtype=np.int64)
@@ -473,12 +475,28 @@ class Scene(PaperObjects):
             D[0, 0] = -1
         J = Mat._consts(D, self._field, ("n", "r"), self.tracker)
         X = Q @ J
+        # what only the construction of the point reads goes as soon as it is read, not with the
+        # scene (X keeps what it remembers: X Xᵀ is a term of the claims)
+        self._done_with(S, In, minus, plus, inverse, Q, J)
+        del S, minus, plus, inverse, Q
         W = self._skew_params(f"{prefix}W", r, "r")
         Z = self._general_params(f"{prefix}Z", n, r, ("n", "r"))
-        P0 = X @ W + (In - X @ X.T) @ Z
+        XW, proj = X @ W, In - X @ X.T
+        Pz = proj @ Z
+        P0 = XW + Pz
         if self._realization == "metric":
             P0 = self.A @ P0
+        self._done_with(In, W, Z, XW, proj, Pz)
         return X, P0
+
+    def _done_with(self, *mats: Mat) -> None:
+        """Tell the backend that the construction of the point reads these matrices no more (see
+        :meth:`.native.Float64Backend.forget`): what it remembers of them goes with them."""
+        forget = getattr(backend(self._field), "forget", None)
+        if forget is not None:
+            for M in mats:
+                if M._n is not None:
+                    forget(M._n)
 
     def equivariant_reduction(self) -> str | None:
         """What the equivariant chart assumes, stated for reports (engine only; None in the Cayley

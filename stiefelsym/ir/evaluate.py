@@ -14,6 +14,8 @@ import operator
 from fractions import Fraction
 from typing import Any, Callable
 
+from ..matrix import Mat
+from ..native import backend
 from ..matrix import block as _block
 from .graph import Graph, Named, Ref, Size, _encode
 from .statements import Count, Rank
@@ -74,8 +76,33 @@ class Evaluator:
         memo = self.root.memo
         shared = getattr(self.root.bind[0], "_node_memo", None)
         if shared is None:
-            for i, kernel in _program(self.g, self.deps):
-                memo[i] = kernel(memo, self)
+            prog = _program(self.g, self.deps)
+            plan = release_plan(self.g, prog) if _forgets(self.root.bind[0]) else None
+            if plan is None:
+                for i, kernel in prog:
+                    memo[i] = kernel(memo, self)
+                return memo[self.g.output.i]
+            # every value goes once the last node that reads it is computed: its arrays are
+            # reused by the nodes after it instead of all living to the end of the evaluation
+            # (the native matrices a value held when it was computed: a matrix may change its
+            # storage later, and only what was counted is uncounted)
+            live: dict[int, int] = {}
+            held: dict[int, tuple] = {}
+            for (i, kernel), dead in zip(prog, plan):
+                v = memo[i] = kernel(memo, self)
+                xs = held[i] = _natives(v)
+                for x, _f in xs:
+                    live[id(x)] = live.get(id(x), 0) + 1
+                for j in dead:
+                    del memo[j]
+                    for x, f in held.pop(j):
+                        k = id(x)
+                        c = live[k] - 1
+                        if c:
+                            live[k] = c
+                        else:
+                            del live[k]
+                            _forget(x, f, live)
             return memo[self.g.output.i]
         # values shared with other graphs evaluated on this very point, by the structure of the
         # node's whole subgraph (the mutation analysis: a mutant recomputes only what it changed)
@@ -349,6 +376,99 @@ def _program(g: Graph, deps: list) -> list:
             stack.extend(g.refs(i))
     prog = g.cache["program"] = [(i, _kernel(g.ops[i], g.args[i])) for i in sorted(need)]
     return prog
+
+
+def release_plan(g: Graph, prog: list) -> list | None:
+    """For every step of the program, the nodes whose values no later step reads (never the
+    output); None where values must stay to the end: a graph with a traced function, whose body
+    may read a top-level node whenever the function is called.  A ``kw`` node's arguments are read
+    by the node that takes the keywords (see :meth:`Evaluator._kw`), so they stay until it runs."""
+    if "release_plan" in g.cache:
+        return g.cache["release_plan"]
+    ops = g.ops
+    plan: list | None = None
+    if not any(ops[i] == "fn" for i, _k in prog):
+        last: dict[int, int] = {}
+        for step, (i, _k) in enumerate(prog):
+            for j in g.refs(i):
+                last[j] = step
+                if ops[j] == "kw":
+                    for k in g.refs(j):
+                        last[k] = step
+        _transposes_live(g, prog, last)
+        plan = [[] for _ in prog]
+        out = g.output.i
+        for j, step in last.items():
+            if j != out:
+                plan[step].append(j)
+    g.cache["release_plan"] = plan
+    return plan
+
+
+def _transposes_live(g: Graph, prog: list, last: dict) -> None:
+    """Keep a node, and the nodes it reads, up to every later node whose value is its transpose by
+    structure (Tᵀ = the node T reads; (x y)ᵀ = yᵀ xᵀ, (x ± y)ᵀ = xᵀ ± yᵀ, x + y = y + x): a backend
+    may find that value as the transpose of the earlier one, through what it remembers of the
+    earlier node and its operands (the float backend does, see
+    :meth:`.native.Float64Backend.forget`), which must not be forgotten before then."""
+    ops, args = g.ops, g.args
+    tr: dict[int, int] = {}
+    seen: dict[tuple, int] = {}
+    for step, (i, _k) in enumerate(prog):
+        op, a = ops[i], args[i]
+        if op == "T" and len(a) == 1 and type(a[0]) is Ref:
+            tr.setdefault(i, a[0].i)
+            tr.setdefault(a[0].i, i)
+            continue
+        if op not in ("matmul", "add", "sub") or len(a) != 2 or type(a[0]) is not Ref or type(a[1]) is not Ref:
+            continue
+        x, y = a[0].i, a[1].i
+        tx, ty = tr.get(x), tr.get(y)
+        if tx is not None and ty is not None:
+            cands = [(op, ty, tx)] if op == "matmul" else [(op, tx, ty)] + ([(op, ty, tx)] if op == "add" else [])
+            for key in cands:
+                j = seen.get(key)
+                if j is not None:
+                    tr.setdefault(i, j)
+                    tr.setdefault(j, i)
+                    for k in (j, *g.refs(j)):
+                        if last.get(k, -1) < step:
+                            last[k] = step
+                    break
+        seen.setdefault((op, x, y), i)
+
+
+def _forgets(scene: Any) -> bool:
+    """Whether the backend of the scene's number system frees what it remembers of a value the
+    evaluation reads no more (otherwise values are simply kept to the end: nothing to gain)."""
+    field = getattr(scene, "_field", None)
+    if field is None:
+        return False
+    return getattr(backend(field), "forget", None) is not None
+
+
+def _natives(v: Any) -> tuple:
+    """The matrices in native storage a node's value holds (itself, or the members of a
+    container), as (native storage, field) pairs."""
+    t = type(v)
+    if t is Mat:
+        return () if v._n is None else ((v._n, v._field),)
+    if t is list or t is tuple:
+        xs = v
+    elif t is dict:
+        xs = v.values()
+    else:
+        return ()
+    return tuple((x._n, x._field) for x in xs if type(x) is Mat and x._n is not None)
+
+
+def _forget(x: Any, field: Any, live: dict) -> None:
+    """Tell the backend of a native matrix that the evaluation reads it no more (``live``: the ids
+    of the native matrices it still reads; see :meth:`.native.Float64Backend.forget`); nothing for
+    a backend that remembers nothing."""
+    forget = getattr(field.__dict__.get("_backend"), "forget", None)
+    if forget is not None:
+        forget(x, live)
 
 
 def evaluate(g: Graph, scene: Any) -> Any:
