@@ -1,7 +1,7 @@
 """§6 Compatible Poisson brackets and integrability: the pencil Λ1, Λ2 on gl(n), the map Θ = Φ + XXᵀ, the Casimirs and the integrable families of the section."""
 from __future__ import annotations
 
-from stiefelsym import Rank, admissible, claim, comm
+from stiefelsym import Rank, admissible, claim, comm, twisted
 from stiefelsym.brackets import (SO_R, MatrixFunction, casimir_residual, compatibility, dirac, lambda1, lambda2,
                                  lie_poisson, linear, pencil, poisson_checks, poisson_map_residual, quadratic,
                                  skew, sym, trace_power)
@@ -395,25 +395,18 @@ def cif_set_is_commutative_and_conserved(s):
     return checks
 
 
-def blocks_of_r(r):
-    """The partition r = r₁ + r₂ of (EM3) used: r₁ = ⌈r/2⌉, r₂ = ⌊r/2⌋, as index ranges."""
-    r1 = (r + 1) // 2
-    return [(0, r1), (r1, r)]
-
-
-def block_of(M, block):
-    """ξ_i: the so(r_i) block of ξ ∈ so(r) (the orthogonal projection onto so(r_i), as an r_i x r_i matrix)."""
-    i0, i1 = block
-    return M[i0:i1, i0:i1]
+def block_parts(t, xi):
+    """ξ₁ = DξD, ξ₂ = (I − D)ξ(I − D): the orthogonal projections of ξ ∈ so(r) to so(r₁) ⊕ 0 and 0 ⊕ so(r₂),
+    D, I − D the projectors of ℝʳ = ℝ^{r₁} ⊕ ℝ^{r₂} (r₁ = ⌈r/2⌉ at fixed sizes, any two orthogonal blocks in
+    the free algebra); ⟨ξᵢ, ξᵢ⟩ and tr ξᵢ^k are those of the r_i × r_i block (a block of size 1 is 0)."""
+    return [twisted.block_projector(t, i) @ xi @ twisted.block_projector(t, i) for i in range(2)]
 
 
 def K_of(t, xi):
     """(EM3): K(ξ) = κ₀/2<ξ, ξ> + Σ κᵢ/2<ξᵢ, ξᵢ>."""
     acc = t.scalar("kappa_0") * t.killing(xi, xi) / 2
-    for i, block in enumerate(blocks_of_r(t.r)):
-        if block[1] - block[0] >= 2:
-            xi_i = block_of(xi, block)
-            acc = acc + t.scalar(f"kappa_{i + 1}") * t.killing(xi_i, xi_i) / 2
+    for i, xi_i in enumerate(block_parts(t, xi)):
+        acc = acc + t.scalar(f"kappa_{i + 1}") * t.killing(xi_i, xi_i) / 2
     return acc
 
 
@@ -422,14 +415,14 @@ def H_K(t):
     return t.killing(t.Phi, t.Phi) / 2 + K_of(t, t.Psi)
 
 
-def chain_functions(r):
-    """The chain functions of so(r₁) ⊕ so(r₂) ⊂ so(r): (name, f(t)) with f = tr Ψ^{2k}, tr Ψᵢ^{2k}."""
-    out = [(f"tr Psi^{2 * k}", lambda t, k=k: power_trace(t, t.Psi, 2 * k)) for k in (1, 2) if 2 * k <= r]
-    for i, block in enumerate(blocks_of_r(r)):
+def chain_functions():
+    """The chain functions of so(r₁) ⊕ so(r₂) ⊂ so(r): (name, f(t)) with f = tr Ψ^{2k}, tr Ψᵢ^{2k}, k = 1, 2
+    (for r or r_i < 2k a function of the lower ones, or 0: its brackets vanish all the same)."""
+    out = [(f"tr Psi^{2 * k}", lambda t, k=k: power_trace(t, t.Psi, 2 * k)) for k in (1, 2)]
+    for i in range(2):
         for k in (1, 2):
-            if 2 * k <= block[1] - block[0]:
-                out.append((f"tr Psi_{i + 1}^{2 * k}",
-                            lambda t, k=k, block=block: power_trace(t, block_of(t.Psi, block), 2 * k)))
+            out.append((f"tr Psi_{i + 1}^{2 * k}",
+                        lambda t, k=k, i=i: power_trace(t, block_parts(t, t.Psi)[i], 2 * k)))
     return out
 
 
@@ -438,11 +431,11 @@ def chain_functions(r):
        statement=r"H_K=\tfrac12\langle\Phi,\Phi\rangle+K\circ\Psi:\ \{\Phi_\xi,H_K\}=\{\mathfrak F,H_K\}=0,\ "
                  r"\{\tr\Psi^{2k},\cdot\}=\{\tr\Psi_i^{2k},\tr\Psi_j^{2m}\}=\{\tr\Psi_i^{2k},H_K\}=0")
 def einstein_metric_flows_have_commuting_integrals(s):
-    """Corollary nikinorov: the geodesic flow of H_K (EM2), (EM3) (here r = r₁ + r₂, r₁ = ⌈r/2⌉) has the integrals Φ and 𝔉 (FF), and the chain functions tr Ψ^{2k}, tr Ψᵢ^{2k} of so(r₁) ⊕ so(r₂) ⊂ so(r) commute with each other and with H_K (the bracket part of the statement)."""
+    """Corollary nikinorov: the geodesic flow of H_K (EM2), (EM3) (here r = r₁ + r₂ with r₁ = ⌈r/2⌉ at fixed sizes; dimension-free, every orthogonal splitting of ℝʳ) has the integrals Φ and 𝔉 (FF), and the chain functions tr Ψ^{2k}, tr Ψᵢ^{2k} of so(r₁) ⊕ so(r₂) ⊂ so(r) commute with each other and with H_K (the bracket part of the statement)."""
     checks = {"{Phi_xi, H_K}": s.bracket(Phi_xi, H_K)}
     for k in POWERS:
         checks[f"{{FF_{k}, H_K}}"] = s.bracket(lambda t, k=k: FF(t, t.lam, k), H_K)
-    chain = chain_functions(s.r)
+    chain = chain_functions()
     for i, (name, f) in enumerate(chain):
         checks[f"{{{name}, H_K}}"] = s.bracket(f, H_K)
         for name2, g in chain[i + 1:]:

@@ -20,7 +20,8 @@ MODULE = "stiefelsym.proofs.sec6_compatible_brackets"
 
 #: proved for every n, r by rewriting modulo (cond_XP)
 FREE_PROVED = ("symmetric-pair", "pencil-casimirs", "theta-poisson-map", "theta-factorization", "cpb-hamiltonian",
-               "cpb-flow", "ff-integrals", "bb-manakov-so-r", "lambda12-compatible", "cif-integrals", "com-integrals")
+               "cpb-flow", "ff-integrals", "bb-manakov-so-r", "lambda12-compatible", "cif-integrals", "com-integrals",
+               "nikinorov-integrals")
 
 #: the dimension statements of §6 (proofs/sec6_dimension_lemmas.py, another module)
 DIMENSION_LABELS = {"dimension", "LEMA1", "L1", "L2", "LEMA2", "A2", "LAMBDA", "L3", "L4", "L5", "L6", "L7", "L8",

@@ -29,7 +29,7 @@ from .mat import FreeBackend, FreeDualBackend, entry_of, one_block
 from .rewriting import (_NONZERO_NUMBER_TYPES, _SIMPLE, Certificate, Cofactor, Hypothesis, Order, Reduction,
                         RewritingError, RewritingSystem, SharedMemos, nonzero_terms, simplify_coef)
 from .traces import gradient
-from .columns import COLUMNS, COVECTORS, ER, LEAD, LEADt, ERt, canonical, canonical_form, column_hypotheses
+from .columns import COLUMNS, COVECTORS, SPLIT, ER, LEAD, LEADt, ERt, canonical, canonical_form, column_hypotheses
 
 Function = Callable[[Any], Any]
 
@@ -524,6 +524,27 @@ class FreeScene(PaperObjects):
                                  cofactors=[_by(column_hypotheses()["ErtEr"])])
         self._named.setdefault(str(ER), ER)
         return self._cached("column:last", lambda: self._const_block(_w(ER), ("r", "?")))
+
+    def split_projector(self, i: int) -> Mat:
+        """D (i = 0) or C (i = 1), the orthogonal projectors of ℝʳ onto the blocks of a splitting
+        ℝʳ = ℝ^{r₁} ⊕ ℝ^{r₂}, as r×r symmetric letters with the rules D² → D, C² → C, DC → 0, CD → 0 and
+        nothing else (not D + C = I_r): a proof holds for every pair of orthogonal blocks of ℝʳ."""
+        if i not in (0, 1):
+            raise ValueError(f"a splitting of R^r into two blocks has no block {i + 1}")
+        if "split" not in self._extras:
+            self._extras.add("split")
+            hyps = column_hypotheses()
+            for L in SPLIT:
+                self.system.order.add(L)
+            for L in SPLIT:
+                for M in SPLIT:
+                    rhs = _w(L) if L == M else NCPoly.zero("r", "r")
+                    self.system.add_rule((L, M), rhs, f"{L.latex}{M.latex} = {L.latex if L == M else 0} (the "
+                                         "projectors of two orthogonal blocks of R^r)", name=f"{L}{M}",
+                                         cofactors=[_by(hyps[f"{L}{M}"])])
+        L = SPLIT[i]
+        self._named.setdefault(str(L), L)
+        return self._cached(f"column:split{i}", lambda: self._const_block(_w(L), ("r", "r")))
 
     def leading_columns(self) -> Mat:
         """(E_1, ..., E_{r−1}), the first r − 1 columns of I_r, as an r×(r−1) letter E_{<r}, with the last
