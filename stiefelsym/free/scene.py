@@ -24,7 +24,7 @@ from ..fields import Dual, DualField, Field
 from ..matrix import CoordinateTracker, Mat, definite
 from ..scene import USER_SCALAR, Flow, HermitianComponents, PaperObjects, _number, map_entries
 from .algebra import (LEADING, Letter, NCPoly, NeedsCoordinates, OperatorLetter, apply_operator, as_coef, coef_latex, derivation,
-                      letter_pair, record_refusal, refuse, skew_letter, substitute, symmetric_letter, trace)
+                      letter_pair, mark_moving, record_refusal, refuse, skew_letter, substitute, symmetric_letter, trace)
 from .mat import FreeBackend, FreeDualBackend, entry_of, one_block
 from .rewriting import (_NONZERO_NUMBER_TYPES, _SIMPLE, Certificate, Cofactor, Hypothesis, Order, Reduction,
                         RewritingError, RewritingSystem, SharedMemos, nonzero_terms, simplify_coef)
@@ -379,6 +379,8 @@ class FreeScene(PaperObjects):
         self._cache: dict[str, Any] = {}
         self._letters: dict[Letter, Mat] = {}
         self._resolvents: dict[Letter, Any] = {}
+        #: the spectral parameters that move with the point: (normal form, the symbol standing for it)
+        self._moving: list[tuple[NCPoly, Any]] = []
         self._extras: set[str] = set()
         self._named: dict[str, Letter] = {}
         #: r given (1 or 2: the claim is stated at that r only; 0: every r): the columns E_1, ..., E_r
@@ -1060,8 +1062,36 @@ class FreeScene(PaperObjects):
 
     def resolvent(self, mu: Any) -> Mat:
         """(mu I_n − A)^{-1} as a letter R_mu with A R = R A = mu R − I."""
-        R = add_resolvent(self.system, _raw(mu), self._resolvents, ainv="ainv" in self._extras)
+        m = self._spectral_parameter(_raw(mu))
+        R = add_resolvent(self.system, m, self._resolvents, ainv="ainv" in self._extras)
+        if any(m is x for _, x in self._moving):
+            mark_moving(R)
         return self._letter(R)
+
+    def _spectral_parameter(self, mu: Any) -> Any:
+        """The coefficient of R_mu.  A scalar polynomial of the scene with no letter is its number; one that
+        moves with the point (a polynomial in traces, μ = tr(PᵀP) + λ) is a fresh symbol m standing for it,
+        the same for the same normal form: R_m's rules hold for every value of m, so an identity they give
+        holds at m = μ(X, P) (the derivatives of R along flows, −μ'R², are written by the derivative passes
+        of the graph, with the letter R of the same μ)."""
+        if as_coef(mu) is not None:
+            return mu
+        if isinstance(mu, Dual):
+            raise refuse("a resolvent at a spectral parameter that moves with the point, inside a derivative the "
+                         "free scene takes itself (a bracket or a flow of a function that holds it)", self.tracker)
+        if not (isinstance(mu, NCPoly) and mu.is_scalar):
+            raise refuse("a resolvent at a spectral parameter that is not a scalar polynomial of the scene",
+                         self.tracker)
+        nf = self.system.normal_form(mu)
+        if all(not t and not w for (t, w) in nf.terms):
+            return nf.scalar_value()
+        moving = self._moving
+        for q, m in moving:
+            if q == nf:
+                return m
+        m = se.Dummy(f"m{len(moving) + 1}")
+        moving.append((nf, m))
+        return m
 
     # -- flows ------------------------------------------------------------------
     def _hamiltonian(self, H: Function) -> NCPoly:
@@ -1338,6 +1368,7 @@ class FreeScene(PaperObjects):
         parameters, the resolvents, the extra letters, the columns and the square case."""
         self.params = base.params
         self._resolvents = base._resolvents
+        self._moving = base._moving
         self._extras = base._extras
         self.columns = base.columns
         self.square = base.square
