@@ -354,6 +354,19 @@ def block_projector(s, i: int) -> Mat:
                  ("r", "r"))
 
 
+def reflection(s) -> Mat:
+    """S₁ = diag(−1, 1, ..., 1), the reflection of ℝⁿ in the first coordinate hyperplane (it commutes with A
+    diagonal; every S_i is S₁ up to a relabelling of the coordinates).  A letter S of the dimension-free
+    backend with S = Sᵀ, S² = I_n, SA = AS and nothing else, so what is proved there holds for every orthogonal
+    symmetry that commutes with A (every S_i and every product of them)."""
+    if _at_point(s):
+        return s.lift(reflection(s.inner))
+    if _is_free(s):
+        return s.reflection()
+    s = _scene(s, "the reflection S_1 of R^n in the first coordinate hyperplane")
+    return s.mat([[(-1 if i == 0 else 1) if i == j else 0 for j in range(s.n)] for i in range(s.n)], ("n", "n"))
+
+
 def leading_basis_vectors(s) -> Mat:
     """(E_1, ..., E_{r−1}): X(E_1, ..., E_{r−1}) = (e_1, ..., e_{n−1}) when r = n (iden1); a letter of the
     dimension-free backend (its columns and E_r are those of I_r)."""
@@ -392,7 +405,7 @@ def at_point(s, X: Mat, P: Mat) -> Scene:
 
 __all__ = ["magnetic_matrix", "ambient_bracket", "constraint_bracket_matrix", "bracket", "ambient_flow",
            "flow", "multiplier_flow", "form", "basis_vector", "coordinate_projector", "first_basis_vectors",
-           "last_basis_vector", "leading_basis_vectors", "block_projector", "column_splittings", "at_point"]
+           "last_basis_vector", "leading_basis_vectors", "block_projector", "reflection", "column_splittings", "at_point"]
 
 # the functions that need the engine's scene (its number system, its gradients and multipliers) are
 # single steps of a claim's graph; the coordinate helpers above are traced with the claim
@@ -400,6 +413,6 @@ for _name in ("magnetic_matrix", "ambient_bracket", "constraint_bracket_matrix",
               "multiplier_flow", "form"):
     globals()[_name] = primitive(globals()[_name])
 # the basis vectors of R^r do not move with the point: their derivative along a flow is 0
-for _name in ("basis_vector", "last_basis_vector", "leading_basis_vectors", "block_projector"):
+for _name in ("basis_vector", "last_basis_vector", "leading_basis_vectors", "block_projector", "reflection"):
     globals()[_name] = primitive(globals()[_name], constant=True)
 at_point = primitive(at_point, returns="scene")

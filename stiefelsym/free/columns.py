@@ -42,6 +42,10 @@ DSPLIT = Letter("Dsplit", "r", "r", "D")
 CSPLIT = Letter("Csplit", "r", "r", "C")
 SPLIT = (DSPLIT, CSPLIT)
 
+#: an orthogonal symmetry S of ℝⁿ that commutes with A (S = Sᵀ, S² = I_n, SA = AS): a reflection S_i of a
+#: coordinate hyperplane when A is diagonal, and every element of the group they generate
+SREF = Letter("Sref", "n", "n", "S")
+
 #: the name of the hypothesis E₁E₁ᵀ + … + E_rE_rᵀ − I_r (true at that r only), by r
 COMPLETE = {1: "E1E1t", 2: "E1E1t+E2E2t"}
 
@@ -58,6 +62,7 @@ def column_hypotheses() -> dict[str, Hypothesis]:
     out["EleadtElead"] = Hypothesis("EleadtElead", w((LEADt, LEAD)) - NCPoly.identity(LEADING))
     out["EleadtEr"] = Hypothesis("EleadtEr", w((LEADt, ER)))
     out["ErtElead"] = Hypothesis("ErtElead", w((ERt, LEAD)))
+    out["SrefSref"] = Hypothesis("SrefSref", w((SREF, SREF)) - NCPoly.identity("n"))
     for a in SPLIT:
         for b in SPLIT:
             out[f"{a}{b}"] = Hypothesis(f"{a}{b}", w((a, b)) - (w((a,)) if a == b else NCPoly.zero("r", "r")))

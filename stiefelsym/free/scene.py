@@ -29,7 +29,7 @@ from .mat import FreeBackend, FreeDualBackend, entry_of, one_block
 from .rewriting import (_NONZERO_NUMBER_TYPES, _SIMPLE, Certificate, Cofactor, Hypothesis, Order, Reduction,
                         RewritingError, RewritingSystem, SharedMemos, nonzero_terms, simplify_coef)
 from .traces import gradient
-from .columns import COLUMNS, COVECTORS, SPLIT, ER, LEAD, LEADt, ERt, canonical, canonical_form, column_hypotheses
+from .columns import COLUMNS, COVECTORS, SPLIT, SREF, ER, LEAD, LEADt, ERt, canonical, canonical_form, column_hypotheses
 
 Function = Callable[[Any], Any]
 
@@ -138,6 +138,7 @@ def hypothesis(name: str, R: Letter | None = None, mu: Any = None) -> Hypothesis
         "AAinv": lambda: _w(A, AINV) - _i("n"),
         "AinvA": lambda: _w(AINV, A) - _i("n"),
         "XXt": lambda: _w(X, Xt) - _i("n"),
+        "SrefA": lambda: _w(SREF, A) - _w(A, SREF),
         "DXtDY": lambda: _w(DXt, DY) - _i("r"),
         "DYtDX": lambda: _w(DYt, DX) - _i("r"),
         "DXdtDY+DXtDYd": lambda: _w(DXdt, DY) + _w(DXt, DYd),
@@ -526,6 +527,34 @@ class FreeScene(PaperObjects):
                                  cofactors=[_by(column_hypotheses()["ErtEr"])])
         self._named.setdefault(str(ER), ER)
         return self._cached("column:last", lambda: self._const_block(_w(ER), ("r", "?")))
+
+    def reflection(self) -> Mat:
+        """S, an orthogonal symmetry of ℝⁿ that commutes with A, as an n×n symmetric letter ranked after every
+        other letter, with the rules S² → I_n, SA → AS and SR → RS for every resolvent R (from SA = AS and the
+        resolvent's definition): a proof holds for every S = Sᵀ with S² = I_n and SA = AS (with A diagonal:
+        every reflection S_i of a coordinate hyperplane, and every product of them)."""
+        if "reflection" not in self._extras:
+            self._extras.add("reflection")
+            self.system.order.add_last(SREF)
+            self.system.add_rule((SREF, SREF), _i("n"), "S^2 = I_n (S an orthogonal symmetry)", name="SrefSref",
+                                 cofactors=[_by(hypothesis("SrefSref"))])
+            self.system.add_rule((SREF, A), _w(A, SREF), "S A = A S (S commutes with A)", name="SrefA",
+                                 cofactors=[_by(hypothesis("SrefA"))])
+            for R in list(self._resolvents):
+                self._reflection_resolvent_rule(R)
+        self._named.setdefault(str(SREF), SREF)
+        return self._cached("reflection", lambda: self._const_block(_w(SREF), ("n", "n")))
+
+    def _reflection_resolvent_rule(self, R: Letter) -> None:
+        """S R → R S for R = (μI − A)⁻¹: SR − RS = R(SA − AS)R − [R(μI − A) − I]SR + RS[(μI − A)R − I]."""
+        if (SREF, R) in self.system._lhs:
+            return
+        mu = self._resolvents[R]
+        self.system.add_rule((SREF, R), _w(R, SREF), "S R = R S (S commutes with A, so with its resolvents)",
+                             name=f"Sref{R}", cofactors=[
+                                 _by(hypothesis("SrefA"), 1, left=(R,), right=(R,)),
+                                 _by(hypothesis("res_right", R, mu), -1, right=(SREF, R)),
+                                 _by(hypothesis("res_left", R, mu), 1, left=(R, SREF))])
 
     def split_projector(self, i: int) -> Mat:
         """D (i = 0) or C (i = 1), the orthogonal projectors of ℝʳ onto the blocks of a splitting
@@ -1066,6 +1095,8 @@ class FreeScene(PaperObjects):
         R = add_resolvent(self.system, m, self._resolvents, ainv="ainv" in self._extras)
         if any(m is x for _, x in self._moving):
             mark_moving(R)
+        if "reflection" in self._extras:
+            self._reflection_resolvent_rule(R)
         return self._letter(R)
 
     def _spectral_parameter(self, mu: Any) -> Any:
