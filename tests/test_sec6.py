@@ -21,7 +21,7 @@ MODULE = "stiefelsym.proofs.sec6_compatible_brackets"
 #: proved for every n, r by rewriting modulo (cond_XP)
 FREE_PROVED = ("symmetric-pair", "pencil-casimirs", "theta-poisson-map", "theta-factorization", "cpb-hamiltonian",
                "cpb-flow", "ff-integrals", "bb-manakov-so-r", "lambda12-compatible", "cif-integrals", "com-integrals",
-               "nikinorov-integrals")
+               "nikinorov-integrals", "reduced-bracket-casimirs")
 
 #: the dimension statements of §6 (proofs/sec6_dimension_lemmas.py, another module)
 DIMENSION_LABELS = {"dimension", "LEMA1", "L1", "L2", "LEMA2", "A2", "LAMBDA", "L3", "L4", "L5", "L6", "L7", "L8",
@@ -80,6 +80,12 @@ def J1_rotation_sign(s):
     """Corrupted: the flow of J₁ = tr Ψ² is the right action of +4Ψ."""
     flow = s.dirac_flow(lambda t: sec6.J(t, 1))
     return {"X": flow.Xdot - s.X @ (s.Psi * 4)}
+
+
+def J3_not_a_casimir(s):
+    """Corrupted: J₃ = tr Ψ⁶ commutes with a function that is not SO(r)-invariant, tr(G PᵀP)."""
+    return {"{J_3, tr(G P^T P)}": s.bracket(lambda t: sec6.J(t, 3),
+                                             lambda t: t.tr(t.generic("G", "r", "r") @ t.P.T @ t.P))}
 
 
 def cpb_potential_sign(s):
@@ -156,6 +162,7 @@ CORRUPTIONS = [
     ("theta-poisson-map", theta_with_minus_phi, (3, 2)),
     ("theta-factorization", phi_action_with_plus_sign, (3, 2)),
     ("reduced-bracket-casimirs", J1_rotation_sign, (3, 2)),
+    ("reduced-bracket-casimirs", J3_not_a_casimir, (4, 3)),   # (r = n: PᵀP = −Ψ²/4 is a function of Ψ)
     ("cpb-hamiltonian", cpb_potential_sign, (3, 2)),
     ("cpb-flow", cpb_flow_swapped, (3, 1)),
     ("ff-integrals", perelomov_not_geodesic_integral, (3, 2)),
