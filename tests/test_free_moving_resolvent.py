@@ -66,3 +66,15 @@ def test_a_derivative_that_drops_the_motion_is_not_proved():
 
 def test_the_true_derivative_holds_at_a_fixed_size():
     assert run_exact(CLAIM, 3, 2, 0, func=derivative_along_a_flow).verdict == "proved"
+
+
+def two_moving_parameters(s):
+    """R(tr PᵀP) R(tr XᵀAX) = (R(tr PᵀP) − R(tr XᵀAX))/(tr XᵀAX − tr PᵀP): the two parameters may coincide on
+    T*V, so the free scene refuses a second moving parameter rather than divide by their difference."""
+    R1, R2 = _R(s), s.resolvent(s.tr(s.X.T @ s.A @ s.X))
+    return {"x": R1 @ R2 - R2 @ R1}
+
+
+def test_a_second_moving_spectral_parameter_is_refused():
+    res = run_free(CLAIM, two_moving_parameters)
+    assert res.verdict == "undecided" and "two spectral parameters" in res.message

@@ -1120,6 +1120,8 @@ class FreeScene(PaperObjects):
         for q, m in moving:
             if q == nf:
                 return m
+        if moving:   # the resolvent identity between the two would divide by m1 − m2, which may vanish on T*V
+            raise refuse("resolvents at two spectral parameters that move with the point", self.tracker)
         m = se.Dummy(f"m{len(moving) + 1}")
         moving.append((nf, m))
         return m
