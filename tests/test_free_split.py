@@ -109,3 +109,20 @@ def test_the_fixed_size_blocks_are_the_coordinate_blocks():
     D, C = (twisted.block_projector(s, i) for i in range(2))
     assert [[int(D[i, j] != 0) for j in range(3)] for i in range(3)] == [[1, 0, 0], [0, 1, 0], [0, 0, 0]]
     assert [[int(C[i, j] != 0) for j in range(3)] for i in range(3)] == [[0, 0, 0], [0, 0, 0], [0, 0, 1]]
+
+
+# -- an eigenspace of A as an orthogonal projector D of R^n (singular-a-noether) ---------------------------
+
+def test_an_eigenspace_claim_is_proved_for_every_projector_and_not_its_rank():
+    c = CATALOG.get("singular-a-noether")
+    res = _proved(run_free(c))
+    assert "DnDn" in {t["hyp"] for e in res.certificate_data["entries"] for t in e["terms"]}
+    rank_two = lambda s: {"tr D - 2": s.tr(twisted.eigenspace_projector(s)) - 2}   # noqa: E731
+    assert run_free(c, rank_two).verdict == "undecided"            # true at fixed sizes only (D = diag(I_2, 0))
+    assert run_exact(c, 3, 2, 0, func=rank_two).verdict == "proved"
+    data = copy.deepcopy(res.certificate_data)
+    for e in data["entries"]:
+        for t in e["terms"]:
+            if t["hyp"] == "DnDn":
+                t["hyp"] = "DsplitDsplit"
+    assert not check_certificate(data).accepted

@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 from stiefelsym import Rank as B_Rank
-from stiefelsym import comm
+from stiefelsym import comm, twisted
 from stiefelsym import brackets as B
 from stiefelsym.free_method import run_free
 from stiefelsym.methods import run_exact, run_points
@@ -21,7 +21,8 @@ MODULE = "stiefelsym.proofs.sec6_compatible_brackets"
 #: proved for every n, r by rewriting modulo (cond_XP)
 FREE_PROVED = ("symmetric-pair", "pencil-casimirs", "theta-poisson-map", "theta-factorization", "cpb-hamiltonian",
                "cpb-flow", "ff-integrals", "bb-manakov-so-r", "lambda12-compatible", "cif-integrals", "com-integrals",
-               "nikinorov-integrals", "reduced-bracket-casimirs")
+               "nikinorov-integrals", "reduced-bracket-casimirs",
+               "singular-a-noether")   # an eigenspace of A as an orthogonal projector D of R^n
 
 #: the dimension statements of §6 (proofs/sec6_dimension_lemmas.py, another module)
 DIMENSION_LABELS = {"dimension", "LEMA1", "L1", "L2", "LEMA2", "A2", "LAMBDA", "L3", "L4", "L5", "L6", "L7", "L8",
@@ -130,9 +131,14 @@ def com_phi_not_conserved(s):
 
 
 def singular_a_whole_phi(s):
-    """Corrupted: the whole Φ is not conserved when A has the eigenspaces of the pairs."""
-    blocks = sec6.partitions_of_n(s.n)["pairs"]
-    return {"dPhi/dt": s.d(lambda t: t.Phi, s.dirac_flow(sec6.H_neum_singular(blocks)))}
+    """Corrupted: the whole Φ is not conserved when A has the eigenspace range D (only DΦD is)."""
+    return {"dPhi/dt": s.d(lambda t: t.Phi, s.dirac_flow(sec6.H_neum_eigenspace))}
+
+
+def singular_a_complement(s):
+    """Corrupted: the block (I − D)Φ(I − D) of the complement (not an eigenspace: B is generic) is not conserved."""
+    C = lambda t: t.In - twisted.eigenspace_projector(t)   # noqa: E731
+    return {"d(C Phi C)/dt": s.d(lambda t: C(t) @ t.Phi @ C(t), s.dirac_flow(sec6.H_neum_eigenspace))}
 
 
 def covariant_whole_phi(s):
@@ -171,6 +177,7 @@ CORRUPTIONS = [
     ("nikinorov-integrals", nikinorov_manakov_not_conserved, (4, 3)),
     ("com-integrals", com_phi_not_conserved, (3, 2)),
     ("singular-a-noether", singular_a_whole_phi, (3, 2)),
+    ("singular-a-noether", singular_a_complement, (4, 2)),
     ("singular-a-noether-covariant", covariant_whole_phi, (3, 1)),
     ("cif-completeness", cif_one_less, (3, 2)),
     ("com-completeness", com_one_less, (2, 2)),

@@ -45,6 +45,9 @@ SPLIT = (DSPLIT, CSPLIT)
 #: an orthogonal symmetry S of ℝⁿ that commutes with A (S = Sᵀ, S² = I_n, SA = AS): a reflection S_i of a
 #: coordinate hyperplane when A is diagonal, and every element of the group they generate
 SREF = Letter("Sref", "n", "n", "S")
+#: an orthogonal projector of ℝⁿ (D = Dᵀ = D²): the eigenspace of an eigenvalue of A in the claims that build A
+#: from it (A = αD + (I − D)B(I − D))
+DN = Letter("Dn", "n", "n", "D_n")
 
 #: the name of the hypothesis E₁E₁ᵀ + … + E_rE_rᵀ − I_r (true at that r only), by r
 COMPLETE = {1: "E1E1t", 2: "E1E1t+E2E2t"}
@@ -63,6 +66,7 @@ def column_hypotheses() -> dict[str, Hypothesis]:
     out["EleadtEr"] = Hypothesis("EleadtEr", w((LEADt, ER)))
     out["ErtElead"] = Hypothesis("ErtElead", w((ERt, LEAD)))
     out["SrefSref"] = Hypothesis("SrefSref", w((SREF, SREF)) - NCPoly.identity("n"))
+    out["DnDn"] = Hypothesis("DnDn", w((DN, DN)) - w((DN,)))
     for a in SPLIT:
         for b in SPLIT:
             out[f"{a}{b}"] = Hypothesis(f"{a}{b}", w((a, b)) - (w((a,)) if a == b else NCPoly.zero("r", "r")))

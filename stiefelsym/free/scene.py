@@ -29,7 +29,7 @@ from .mat import FreeBackend, FreeDualBackend, entry_of, one_block
 from .rewriting import (_NONZERO_NUMBER_TYPES, _SIMPLE, Certificate, Cofactor, Hypothesis, Order, Reduction,
                         RewritingError, RewritingSystem, SharedMemos, nonzero_terms, simplify_coef)
 from .traces import gradient
-from .columns import COLUMNS, COVECTORS, SPLIT, SREF, ER, LEAD, LEADt, ERt, canonical, canonical_form, column_hypotheses
+from .columns import COLUMNS, COVECTORS, DN, SPLIT, SREF, ER, LEAD, LEADt, ERt, canonical, canonical_form, column_hypotheses
 
 Function = Callable[[Any], Any]
 
@@ -527,6 +527,17 @@ class FreeScene(PaperObjects):
                                  cofactors=[_by(column_hypotheses()["ErtEr"])])
         self._named.setdefault(str(ER), ER)
         return self._cached("column:last", lambda: self._const_block(_w(ER), ("r", "?")))
+
+    def projector_n(self) -> Mat:
+        """D, an orthogonal projector of ℝⁿ, as an n×n symmetric letter with the rule D² → D and nothing else:
+        a proof holds for every orthogonal projector of ℝⁿ (every subspace, every rank)."""
+        if "projector_n" not in self._extras:
+            self._extras.add("projector_n")
+            self.system.order.add(DN)
+            self.system.add_rule((DN, DN), _w(DN), "D^2 = D (D an orthogonal projector of R^n)", name="DnDn",
+                                 cofactors=[_by(hypothesis("DnDn"))])
+        self._named.setdefault(str(DN), DN)
+        return self._cached("projector_n", lambda: self._const_block(_w(DN), ("n", "n")))
 
     def reflection(self) -> Mat:
         """S, an orthogonal symmetry of ℝⁿ that commutes with A, as an n×n symmetric letter ranked after every
