@@ -1,8 +1,8 @@
 """Appendix 2. Double, coupled and complex Neumann systems: the Lagrangian systems, their flows, conserved quantities and Lax pairs."""
 from __future__ import annotations
 
-from stiefelsym import admissible, block, claim, comm  # noqa: F401
-from stiefelsym.systems import (complex_coordinates, complex_diagonal, complex_point, coupled_point, ctranspose,
+from stiefelsym import admissible, block, claim, comm, twisted  # noqa: F401
+from stiefelsym.systems import (complex_coordinates, complex_point, coupled_point, ctranspose,
                                 derivative, double_point, euler_lagrange, hermitian_entries,
                                 re_trace, real_complex_point, real_coordinates, realify_real, stiefel_pairs_flow)
 
@@ -573,18 +573,19 @@ def complex_neumann_dual_lax_corrected(s):
        statement=r"\tfrac{d}{dt}\psi_0=0,\ \psi_0=Z^T\dot{\bar Z}-\dot Z^T\bar Z;\quad \tfrac{d}{dt}\psi_j=0,\ "
                  r"\psi_j=\sum_{i=1}^r\dot z_i^j\bar z_i^j-z_i^j\dot{\bar z}_i^j\ \text{along (W-eq)}")
 def complex_neumann_momenta(s):
-    """The momentum ψ₀ = ZᵀŻ̄ − ŻᵀZ̄ of the right U(r)-action and the momenta ψ_j of the left U(1)ⁿ-action (u(1)) (A diagonal) are conserved along (W-eq)."""
+    """The momentum ψ₀ = ZᵀŻ̄ − ŻᵀZ̄ of the right U(r)-action and the momenta ψ_j of the left U(1)ⁿ-action (u(1)) (A diagonal) are conserved along (W-eq).  ψ_j = tr(E_j(ŻZ̄ᵀ − ZŻ̄ᵀ)), E_j = E_jE_jᵀ = (I − S_j)/2 with S_j the reflection of the j-th coordinate hyperplane: checked for j = 1 at fixed sizes (every j is 1 up to a relabelling of the coordinates) and, dimension-free, for E = (I − S) with every orthogonal symmetry S that commutes with A (every j, and every sum of the ψ_j, at once)."""
     z = complex_point(s)
     flow = flow_complex(s, z)
     psi0 = lambda t, w: ctranspose(t, w["Z"]) @ t.conj(w["Zdot"]) - ctranspose(t, w["Zdot"]) @ t.conj(w["Z"])
-    # ψ_j = (Ż Z̄ᵀ − Z Ż̄ᵀ)_jj
-    psi = lambda t, w: [x for pair in complex_diagonal(w["Zdot"] @ ctranspose(t, t.conj(w["Z"]))
-                                                       - w["Z"] @ ctranspose(t, t.conj(w["Zdot"])))
-                        for x in pair]
-    checks = {"d psi_0/dt": derivative(s, psi0, z, flow)}
-    for j, x in enumerate(derivative(s, psi, z, flow)):
-        checks[f"d {'Im' if j % 2 else 'Re'} psi_{j // 2 + 1}/dt"] = x
-    return checks
+
+    def psi(t, w):
+        """Re and Im of ψ_j = tr(E_j M), M = ŻZ̄ᵀ − ZŻ̄ᵀ (Im tr(E M) = −Re tr(iE M))."""
+        M = w["Zdot"] @ ctranspose(t, t.conj(w["Z"])) - w["Z"] @ ctranspose(t, t.conj(w["Zdot"]))
+        E = realify_real(t, (t.In - twisted.reflection(t)) * t.q(1, 2))
+        i = t.realify(t.In - t.In, t.In)
+        return [re_trace(t, E @ M), re_trace(t, i @ E @ M)]
+    re, im = derivative(s, psi, z, flow)
+    return {"d psi_0/dt": derivative(s, psi0, z, flow), "d Re psi_j/dt": re, "d Im psi_j/dt": im}
 
 
 @claim("complex-neumann-real-data", paper=("W-eq", "W-Lag", "NE_XP"), kind="id",

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from functools import lru_cache
 
-from stiefelsym import Rank, admissible, claim
+from stiefelsym import Rank, admissible, claim, twisted
 
 SECTION = "3"
 
@@ -194,30 +194,19 @@ def jensen_hamiltonian_is_invariant(s):
     return {"left so(n)": s.d(H_jensen, left), "right so(r)": s.d(H_jensen, right)}
 
 
-def _blocks(r: int) -> list[tuple[int, int]]:
-    """A partition of r into consecutive blocks of sizes 2, 2, ..., (2 or 3)."""
-    if r <= 3:
-        return [(0, r)]
-    out, start = [], 0
-    while r - start > 3:
-        out.append((start, start + 2))
-        start += 2
-    out.append((start, r))
-    return out
-
-
-def _block_part(s, M, lo, hi):
-    """The orthogonal projection of M in so(r) to so(r_i) (the diagonal block lo..hi): E M E
-    with E the coordinate projector of R^r onto the block."""
-    E = s.mat([[s.q(1 if i == j and lo <= i < hi else 0) for j in range(s.r)] for i in range(s.r)], ("r", "r"))
-    return E @ M @ E
+def _block_part(s, M, i):
+    """The orthogonal projection of M in so(r) to so(r_i), i = 0, 1: D_i M D_i with D_i the projector of
+    ℝʳ = ℝ^{r₁} ⊕ ℝ^{r₂} onto its block i (r₁ = ⌈r/2⌉ at fixed sizes; any two orthogonal blocks of ℝʳ in
+    the free algebra)."""
+    D = twisted.block_projector(s, i)
+    return D @ M @ D
 
 
 def H_K(s):
     """(EM2), (EM3): H_K = ½⟨Φ,Φ⟩ + K(Ψ), K(ξ) = κ₀/2⟨ξ,ξ⟩ + Σ κᵢ/2⟨ξᵢ,ξᵢ⟩."""
     K = s.scalar("kappa_0") * s.killing(s.Psi, s.Psi) / 2
-    for i, (lo, hi) in enumerate(_blocks(s.r)):
-        Pi = _block_part(s, s.Psi, lo, hi)
+    for i in range(2):
+        Pi = _block_part(s, s.Psi, i)
         K = K + s.scalar(f"kappa_{i + 1}") * s.killing(Pi, Pi) / 2
     return s.killing(s.Phi, s.Phi) / 2 + K
 
@@ -226,11 +215,9 @@ def H_K(s):
        statement=r"H_K=\tfrac12\langle\Phi,\Phi\rangle+K(\Psi),\quad "
                  r"K(\xi)=\tfrac{\kappa_0}{2}\langle\xi,\xi\rangle+\sum_i\tfrac{\kappa_i}{2}\langle\xi_i,\xi_i\rangle")
 def block_jensen_hamiltonian(s):
-    """H_K is SO(n)-invariant and SO(r₁)×…×SO(r_k)-invariant and conserves Φ; the block parts ξᵢ are the orthogonal projections of ξ to so(rᵢ)."""
+    """H_K is SO(n)-invariant and SO(r₁)×SO(r₂)-invariant and conserves Φ; the block parts ξᵢ are the orthogonal projections of ξ to so(rᵢ) (two blocks, r₁ = ⌈r/2⌉, at fixed sizes; dimension-free, any two orthogonal blocks of ℝʳ)."""
     left = {"X": s.xi @ s.X, "P": s.xi @ s.P}
-    eta_b = s.zeros(s.r, s.r, ("r", "r"))
-    for lo, hi in _blocks(s.r):
-        eta_b = eta_b + _block_part(s, s.eta, lo, hi)
+    eta_b = _block_part(s, s.eta, 0) + _block_part(s, s.eta, 1)
     right = {"X": s.X @ eta_b, "P": s.P @ eta_b}
     flow = s.dirac_flow(H_K)
     checks = {
@@ -238,9 +225,9 @@ def block_jensen_hamiltonian(s):
         "right block subgroup": s.d(H_K, right),
         "Phi conserved": s.d(lambda t: t.Phi, flow),
     }
-    for i, (lo, hi) in enumerate(_blocks(s.r)):
-        part = _block_part(s, s.Psi, lo, hi)
-        checks[f"Psi - Psi_{i + 1} orthogonal to so(r_{i + 1})"] = s.killing(s.Psi - part, _block_part(s, s.eta, lo, hi))
+    for i in range(2):
+        part = _block_part(s, s.Psi, i)
+        checks[f"Psi - Psi_{i + 1} orthogonal to so(r_{i + 1})"] = s.killing(s.Psi - part, _block_part(s, s.eta, i))
     return checks
 
 

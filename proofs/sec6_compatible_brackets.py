@@ -1,7 +1,7 @@
 """§6 Compatible Poisson brackets and integrability: the pencil Λ1, Λ2 on gl(n), the map Θ = Φ + XXᵀ, the Casimirs and the integrable families of the section."""
 from __future__ import annotations
 
-from stiefelsym import Rank, admissible, claim, comm
+from stiefelsym import Rank, admissible, claim, comm, twisted
 from stiefelsym.brackets import (SO_R, MatrixFunction, casimir_residual, compatibility, dirac, lambda1, lambda2,
                                  lie_poisson, linear, pencil, poisson_checks, poisson_map_residual, quadratic,
                                  skew, sym, trace_power)
@@ -234,12 +234,13 @@ def J(t, k):
 @claim("reduced-bracket-casimirs", paper=("REDUCED_BRACKET", "torus"), kind="pb", exact_max_n=4,
        sizes=admissible(5, r_min=2, condition="r >= 2 (J_k exist for k <= [r/2])"),
        statement=r"X_{J_k}=(X\omega,P\omega),\ \omega=-4k\Psi^{2k-1}\in so(r);\quad \{J_k,\langle\Theta,a\rangle\}="
-                 r"\{J_k,\Psi_\eta\}=\{\langle\Theta,a\rangle,\Psi_\eta\}=\{J_k,H_{neum,\kappa}\}=0,\quad J_k=\tr\Psi^{2k},\ k\le[r/2]")
+                 r"\{J_k,\Psi_\eta\}=\{\langle\Theta,a\rangle,\Psi_\eta\}=\{J_k,H_{neum,\kappa}\}=0,\quad J_k=\tr\Psi^{2k},\ "
+                 r"k=1,2,3\ (\text{the paper: }k\le[r/2])")
 def psi_powers_are_casimirs_of_the_reduced_bracket(s):
-    """The Hamiltonian vector field of J_k = tr(Ψ^{2k}) (k ≤ [r/2]) is the infinitesimal right action of ω = −4kΨ^{2k−1} ∈ so(r), tangent to the SO(r)-orbits, so J_k commutes with every SO(r)-invariant function (j_k is a Casimir of the reduced bracket {,}′), in particular with the components of Θ, and is an integral of the Neumann flows (No); and the functions (torus) commute with Ψ."""
+    """The Hamiltonian vector field of J_k = tr(Ψ^{2k}) (k = 1, 2, 3, as the trace functions of this section; the paper: k ≤ [r/2], the independent ones; for larger k, J_k is a function of those and the identities hold all the same) is the infinitesimal right action of ω = −4kΨ^{2k−1} ∈ so(r), tangent to the SO(r)-orbits, so J_k commutes with every SO(r)-invariant function (j_k is a Casimir of the reduced bracket {,}′), in particular with the components of Θ, and is an integral of the Neumann flows (No); and the functions (torus) commute with Ψ."""
     Theta_a = lambda t: t.killing(Theta(t), gl_generic(t, "a"))   # noqa: E731
     checks = {"{<Theta, a>, Psi_eta}": s.bracket(Theta_a, Psi_eta)}
-    for k in range(1, s.r // 2 + 1):
+    for k in POWERS:
         flow = s.dirac_flow(lambda t, k=k: J(t, k))
         omega = s.Psi
         for _ in range(2 * k - 2):
@@ -395,25 +396,18 @@ def cif_set_is_commutative_and_conserved(s):
     return checks
 
 
-def blocks_of_r(r):
-    """The partition r = r₁ + r₂ of (EM3) used: r₁ = ⌈r/2⌉, r₂ = ⌊r/2⌋, as index ranges."""
-    r1 = (r + 1) // 2
-    return [(0, r1), (r1, r)]
-
-
-def block_of(M, block):
-    """ξ_i: the so(r_i) block of ξ ∈ so(r) (the orthogonal projection onto so(r_i), as an r_i x r_i matrix)."""
-    i0, i1 = block
-    return M[i0:i1, i0:i1]
+def block_parts(t, xi):
+    """ξ₁ = DξD, ξ₂ = (I − D)ξ(I − D): the orthogonal projections of ξ ∈ so(r) to so(r₁) ⊕ 0 and 0 ⊕ so(r₂),
+    D, I − D the projectors of ℝʳ = ℝ^{r₁} ⊕ ℝ^{r₂} (r₁ = ⌈r/2⌉ at fixed sizes, any two orthogonal blocks in
+    the free algebra); ⟨ξᵢ, ξᵢ⟩ and tr ξᵢ^k are those of the r_i × r_i block (a block of size 1 is 0)."""
+    return [twisted.block_projector(t, i) @ xi @ twisted.block_projector(t, i) for i in range(2)]
 
 
 def K_of(t, xi):
     """(EM3): K(ξ) = κ₀/2<ξ, ξ> + Σ κᵢ/2<ξᵢ, ξᵢ>."""
     acc = t.scalar("kappa_0") * t.killing(xi, xi) / 2
-    for i, block in enumerate(blocks_of_r(t.r)):
-        if block[1] - block[0] >= 2:
-            xi_i = block_of(xi, block)
-            acc = acc + t.scalar(f"kappa_{i + 1}") * t.killing(xi_i, xi_i) / 2
+    for i, xi_i in enumerate(block_parts(t, xi)):
+        acc = acc + t.scalar(f"kappa_{i + 1}") * t.killing(xi_i, xi_i) / 2
     return acc
 
 
@@ -422,14 +416,14 @@ def H_K(t):
     return t.killing(t.Phi, t.Phi) / 2 + K_of(t, t.Psi)
 
 
-def chain_functions(r):
-    """The chain functions of so(r₁) ⊕ so(r₂) ⊂ so(r): (name, f(t)) with f = tr Ψ^{2k}, tr Ψᵢ^{2k}."""
-    out = [(f"tr Psi^{2 * k}", lambda t, k=k: power_trace(t, t.Psi, 2 * k)) for k in (1, 2) if 2 * k <= r]
-    for i, block in enumerate(blocks_of_r(r)):
+def chain_functions():
+    """The chain functions of so(r₁) ⊕ so(r₂) ⊂ so(r): (name, f(t)) with f = tr Ψ^{2k}, tr Ψᵢ^{2k}, k = 1, 2
+    (for r or r_i < 2k a function of the lower ones, or 0: its brackets vanish all the same)."""
+    out = [(f"tr Psi^{2 * k}", lambda t, k=k: power_trace(t, t.Psi, 2 * k)) for k in (1, 2)]
+    for i in range(2):
         for k in (1, 2):
-            if 2 * k <= block[1] - block[0]:
-                out.append((f"tr Psi_{i + 1}^{2 * k}",
-                            lambda t, k=k, block=block: power_trace(t, block_of(t.Psi, block), 2 * k)))
+            out.append((f"tr Psi_{i + 1}^{2 * k}",
+                        lambda t, k=k, i=i: power_trace(t, block_parts(t, t.Psi)[i], 2 * k)))
     return out
 
 
@@ -438,11 +432,11 @@ def chain_functions(r):
        statement=r"H_K=\tfrac12\langle\Phi,\Phi\rangle+K\circ\Psi:\ \{\Phi_\xi,H_K\}=\{\mathfrak F,H_K\}=0,\ "
                  r"\{\tr\Psi^{2k},\cdot\}=\{\tr\Psi_i^{2k},\tr\Psi_j^{2m}\}=\{\tr\Psi_i^{2k},H_K\}=0")
 def einstein_metric_flows_have_commuting_integrals(s):
-    """Corollary nikinorov: the geodesic flow of H_K (EM2), (EM3) (here r = r₁ + r₂, r₁ = ⌈r/2⌉) has the integrals Φ and 𝔉 (FF), and the chain functions tr Ψ^{2k}, tr Ψᵢ^{2k} of so(r₁) ⊕ so(r₂) ⊂ so(r) commute with each other and with H_K (the bracket part of the statement)."""
+    """Corollary nikinorov: the geodesic flow of H_K (EM2), (EM3) (here r = r₁ + r₂ with r₁ = ⌈r/2⌉ at fixed sizes; dimension-free, every orthogonal splitting of ℝʳ) has the integrals Φ and 𝔉 (FF), and the chain functions tr Ψ^{2k}, tr Ψᵢ^{2k} of so(r₁) ⊕ so(r₂) ⊂ so(r) commute with each other and with H_K (the bracket part of the statement)."""
     checks = {"{Phi_xi, H_K}": s.bracket(Phi_xi, H_K)}
     for k in POWERS:
         checks[f"{{FF_{k}, H_K}}"] = s.bracket(lambda t, k=k: FF(t, t.lam, k), H_K)
-    chain = chain_functions(s.r)
+    chain = chain_functions()
     for i, (name, f) in enumerate(chain):
         checks[f"{{{name}, H_K}}"] = s.bracket(f, H_K)
         for name2, g in chain[i + 1:]:
@@ -471,31 +465,18 @@ def neumann_with_b_metric_has_commuting_integrals(s):
 
 # -- singular A: the Noether integrals Φ_A ---------------------------------------------------
 
-def partitions_of_n(n):
-    """The eigenspaces of A used (index ranges): pairs (a₁ = a₂, a₃ = a₄, ...) and A = αI."""
-    return {"pairs": [(i, min(i + 2, n)) for i in range(0, n, 2)], "scalar": [(0, n)]}
+def A_with_eigenspace(t):
+    """A = αD + (I − D)B(I − D), B a generic symmetric matrix: every symmetric A with the eigenvalue α on the range
+    of the orthogonal projector D (AD = DA = αD)."""
+    D, C = twisted.eigenspace_projector(t), t.In - twisted.eigenspace_projector(t)
+    B = t.generic("B", "n", "n")
+    return t.scalar("alpha") * D + C @ (B + B.T) @ C
 
 
-def isotropy_pairing(t, M, xi, blocks):
-    """<pr_{so(n)_A} M, ξ> = Σ <M_ii, ξ_ii> over the diagonal blocks (the eigenspaces of A)."""
-    acc = t.q(0)
-    for i0, i1 in blocks:
-        if i1 - i0 >= 2:
-            acc = acc + t.killing(M[i0:i1, i0:i1], xi[i0:i1, i0:i1])
-    return acc
-
-
-def H_neum_singular(blocks):
-    """(neumann) with κ free and A = diag(α₁I_{k₁}, α₂I_{k₂}, ...): ½tr(XᵀAX) = ½Σ αᵢ tr(XᵢᵀXᵢ),
-    Xᵢ the rows of X in the i-th eigenspace."""
-    def H(t):
-        XtP = t.X.T @ t.P
-        V = t.q(0)
-        for i, (i0, i1) in enumerate(blocks):
-            Xi = t.X[i0:i1, 0:t.r]
-            V = V + t.scalar(f"alpha_{i + 1}") * t.tr(Xi.T @ Xi)
-        return t.tr(t.P.T @ t.P) / 2 - (t.q(1, 2) + t.kappa) * t.tr(XtP @ XtP) + V / 2
-    return H
+def H_neum_eigenspace(t):
+    """(neumann) with κ free and A = αD + (I − D)B(I − D)."""
+    XtP = t.X.T @ t.P
+    return t.tr(t.P.T @ t.P) / 2 - (t.q(1, 2) + t.kappa) * t.tr(XtP @ XtP) + t.tr(t.X.T @ A_with_eigenspace(t) @ t.X) / 2
 
 
 @claim("singular-a-noether", paper=("No", "momentum_map", "Phi"), kind="pb", exact_max_n=2,
@@ -503,18 +484,16 @@ def H_neum_singular(blocks):
        statement=r"a_1=\dots=a_{k_1},\dots:\quad \tfrac{d}{dt}\Phi_A=0,\ \Phi_A=\pr_{so(n)_A}(PX^T-XP^T),\quad "
                  r"\{\langle\Phi,\xi_A\rangle,H_{neum,\kappa}\}=0,\ \xi_A\in so(n)_A")
 def isotropy_momentum_is_conserved(s):
-    """For A with repeated eigenvalues (here eigenspaces of dimension 2, and A = αI), the momentum map Φ_A = pr_{so(n)_A}Φ of the isotropy group SO(n)_A is conserved by the Neumann flows (No) for every κ, and the linear functions <Φ, ξ_A>, ξ_A ∈ so(n)_A, are Noether integrals commuting with H_neum,κ."""
-    checks = {}
-    for name, blocks in partitions_of_n(s.n).items():
-        H = H_neum_singular(blocks)
-        flow = s.dirac_flow(H)
-        for i0, i1 in blocks:
-            if i1 - i0 >= 2:
-                checks[f"{name}: d Phi_A/dt, block {i0 + 1}..{i1}"] = s.d(
-                    lambda t, i0=i0, i1=i1: t.Phi[i0:i1, i0:i1], flow)
-        checks[f"{name}: {{<Phi, xi_A>, H}}"] = s.bracket(
-            lambda t, blocks=blocks: isotropy_pairing(t, t.Phi, t.xi, blocks), H)
-    return checks
+    """For A with a repeated eigenvalue α, on the range of an orthogonal projector D (A = αD + (I − D)B(I − D), B generic symmetric: every symmetric A with that eigenspace), the block DΦD of Φ in so(range D) ⊂ so(n)_A is conserved by the Neumann flows (No) for every κ, and the linear functions <Φ, DξD> commute with H_neum,κ; summed over the eigenspaces of A, the momentum map Φ_A = pr_{so(n)_A}Φ of the isotropy group SO(n)_A is conserved and the <Φ, ξ_A>, ξ_A ∈ so(n)_A, are Noether integrals.  At fixed sizes D = diag(I_2, 0) (at n = 2, A = αI); dimension-free, every projector D (every eigenspace of every A) at once."""
+    H = H_neum_eigenspace
+    flow = s.dirac_flow(H)
+    block = lambda t, M: twisted.eigenspace_projector(t) @ M @ twisted.eigenspace_projector(t)   # noqa: E731
+    return {
+        "A D - alpha D": A_with_eigenspace(s) @ twisted.eigenspace_projector(s)
+        - s.scalar("alpha") * twisted.eigenspace_projector(s),
+        "d(D Phi D)/dt": s.d(lambda t: block(t, t.Phi), flow),
+        "{<Phi, D xi D>, H}": s.bracket(lambda t: t.killing(t.Phi, block(t, t.xi)), H),
+    }
 
 
 def adjugate(s, M):

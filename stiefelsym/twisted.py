@@ -337,6 +337,49 @@ def last_basis_vector(s) -> Mat:
     return basis_vector(s, s.r - 1)
 
 
+def block_projector(s, i: int) -> Mat:
+    """The orthogonal projector of ℝʳ = ℝ^{r₁} ⊕ ℝ^{r₂} (r₁ = ⌈r/2⌉, r₂ = ⌊r/2⌋) onto its first (i = 0:
+    diag(I_{r₁}, 0)) or second (i = 1: diag(0, I_{r₂})) block.  Letters D, C of the dimension-free backend
+    with D = Dᵀ = D², C = Cᵀ = C², DC = CD = 0 and nothing else, so what is proved there holds for every
+    pair of orthogonal blocks of ℝʳ."""
+    if _at_point(s):
+        return s.lift(block_projector(s.inner, i))
+    if _is_free(s):
+        return s.split_projector(i)
+    s = _scene(s, "the splitting of R^r into its first ceil(r/2) and last floor(r/2) coordinates")
+    if i not in (0, 1):
+        raise ValueError(f"a splitting of R^r into two blocks has no block {i + 1}")
+    r1 = (s.r + 1) // 2
+    return s.mat([[1 if j == k and (j < r1) == (i == 0) else 0 for k in range(s.r)] for j in range(s.r)],
+                 ("r", "r"))
+
+
+def reflection(s) -> Mat:
+    """S₁ = diag(−1, 1, ..., 1), the reflection of ℝⁿ in the first coordinate hyperplane (it commutes with A
+    diagonal; every S_i is S₁ up to a relabelling of the coordinates).  A letter S of the dimension-free
+    backend with S = Sᵀ, S² = I_n, SA = AS and nothing else, so what is proved there holds for every orthogonal
+    symmetry that commutes with A (every S_i and every product of them)."""
+    if _at_point(s):
+        return s.lift(reflection(s.inner))
+    if _is_free(s):
+        return s.reflection()
+    s = _scene(s, "the reflection S_1 of R^n in the first coordinate hyperplane")
+    return s.mat([[(-1 if i == 0 else 1) if i == j else 0 for j in range(s.n)] for i in range(s.n)], ("n", "n"))
+
+
+def eigenspace_projector(s) -> Mat:
+    """D = diag(I_2, 0) on ℝⁿ (n ≥ 2; I_2 at n = 2): the projector onto the span of the first two coordinate
+    vectors, an eigenspace of the matrices A = αD + (I − D)B(I − D) a claim builds with it.  A letter D of the
+    dimension-free backend with D = Dᵀ = D² and nothing else, so what is proved there holds for every
+    orthogonal projector of ℝⁿ (every eigenspace of every symmetric A)."""
+    if _at_point(s):
+        return s.lift(eigenspace_projector(s.inner))
+    if _is_free(s):
+        return s.projector_n()
+    s = _scene(s, "the projector of R^n onto its first two coordinates")
+    return s.mat([[1 if i == j and i < 2 else 0 for j in range(s.n)] for i in range(s.n)], ("n", "n"))
+
+
 def leading_basis_vectors(s) -> Mat:
     """(E_1, ..., E_{r−1}): X(E_1, ..., E_{r−1}) = (e_1, ..., e_{n−1}) when r = n (iden1); a letter of the
     dimension-free backend (its columns and E_r are those of I_r)."""
@@ -375,7 +418,8 @@ def at_point(s, X: Mat, P: Mat) -> Scene:
 
 __all__ = ["magnetic_matrix", "ambient_bracket", "constraint_bracket_matrix", "bracket", "ambient_flow",
            "flow", "multiplier_flow", "form", "basis_vector", "coordinate_projector", "first_basis_vectors",
-           "last_basis_vector", "leading_basis_vectors", "column_splittings", "at_point"]
+           "last_basis_vector", "leading_basis_vectors", "block_projector", "reflection", "eigenspace_projector",
+           "column_splittings", "at_point"]
 
 # the functions that need the engine's scene (its number system, its gradients and multipliers) are
 # single steps of a claim's graph; the coordinate helpers above are traced with the claim
@@ -383,6 +427,7 @@ for _name in ("magnetic_matrix", "ambient_bracket", "constraint_bracket_matrix",
               "multiplier_flow", "form"):
     globals()[_name] = primitive(globals()[_name])
 # the basis vectors of R^r do not move with the point: their derivative along a flow is 0
-for _name in ("basis_vector", "last_basis_vector", "leading_basis_vectors"):
+for _name in ("basis_vector", "last_basis_vector", "leading_basis_vectors", "block_projector", "reflection",
+              "eigenspace_projector"):
     globals()[_name] = primitive(globals()[_name], constant=True)
 at_point = primitive(at_point, returns="scene")

@@ -256,16 +256,20 @@ def monopole_both_signs_wrong(s):
 
 
 def cpb_euler_commutator_swapped(s):
-    """Corrupted (Euler): Ω̇ = [A, Σ e_i⊗e_i]."""
-    k, H = app1.cpb_hamiltonians(s)[0]
-    v = s.X @ app1.projector(s, k) @ s.X.T
-    return {"(Euler)": s.d(lambda t: t.Phi, s.dirac_flow(H)) - comm(s.A, v)}
+    """Corrupted (Euler): Ω̇ = [A, Σ e_i⊗e_i] (the block projector: the free method evaluates it too)."""
+    v = s.X @ twisted.block_projector(s, 0) @ s.X.T
+    return {"(Euler)": s.d(lambda t: t.Phi, s.dirac_flow(app1.H_CPB_blocks)) - comm(s.A, v)}
 
 
 def cpb_full_psi_conserved(s):
     """Corrupted: the whole body momentum 𝒳ᵀM𝒳 conserved (only its so(r) ⊕ so(n−r) blocks are)."""
-    k, H = app1.cpb_hamiltonians(s)[0]
-    return {"d m/dt": s.d(lambda t: t.X.T @ t.Phi @ t.X, s.dirac_flow(H))}
+    return {"d m/dt": s.d(lambda t: t.X.T @ t.Phi @ t.X, s.dirac_flow(app1.H_CPB_blocks))}
+
+
+def cpb_mixed_block_conserved(s):
+    """Corrupted: the mixed block D𝒳ᵀM𝒳C of the body momentum conserved (the free method evaluates it)."""
+    D, C = twisted.block_projector(s, 0), twisted.block_projector(s, 1)
+    return {"d (D m C)/dt": s.d(lambda t: D @ t.X.T @ t.Phi @ t.X @ C, s.dirac_flow(app1.H_CPB_blocks))}
 
 
 def cpb_reduction_potential_sign(s):
@@ -332,6 +336,7 @@ CORRUPTIONS = [
     ("ym-monopole", monopole_both_signs_wrong),
     ("cpb-euler", cpb_euler_commutator_swapped),
     ("cpb-right-momentum", cpb_full_psi_conserved),
+    ("cpb-right-momentum", cpb_mixed_block_conserved),
     ("cpb-reduction-stiefel", cpb_reduction_potential_sign),
 ]
 

@@ -5,7 +5,7 @@ on T*V × T*V) agree with the printed ones; a corrupted copy of each claim FAILS
 controls), and nothing here is claimed for all n, r (the systems need coordinates)."""
 import pytest
 
-from stiefelsym import block, comm
+from stiefelsym import block, comm, twisted
 from stiefelsym.claims import Size
 from stiefelsym.free_method import run_free
 from stiefelsym.methods import run_exact, run_points
@@ -24,7 +24,8 @@ FREE_PROVED = ("coupled-corrected-flow-invariants", "coupled-dual-lax-along-corr
                "double-neumann-momentum", "double-neumann-flow",   # the double point (X, Y, Ẋ, Ẏ) as letters
                "double-neumann-diagonal",                           # with (D0) as rules, Euler-Lagrange solved there
                "complex-neumann-flow",        # Z = U + iV, Ż = U̇ + iV̇ as letters with (W0) and its derivative
-               "complex-neumann-real-data")   # as rules, Euler-Lagrange solved there with a Hermitian multiplier
+               "complex-neumann-real-data",   # as rules, Euler-Lagrange solved there with a Hermitian multiplier
+               "complex-neumann-momenta")     # psi_j with E_j = (I - S)/2, S a symmetry commuting with A
 def coupled_constraints(t, z):
     """XᵀX = I_r, XᵀP + PᵀX = 0, YᵀY = I_r, YᵀQ + QᵀY = 0 (the constraints stiefel_pairs_flow imposes)."""
     X, P, Y, Q = z["X"], z["P"], z["Y"], z["Q"]
@@ -173,6 +174,28 @@ def complex_momentum_without_bars(s):
     return {"d/dt": derivative(s, f, z, a.flow_complex(s, z))}
 
 
+def complex_diagonal_momentum_symmetrized(s):
+    """Corrupted ψ_j: tr(E_j(ŻZ̄ᵀ + ZŻ̄ᵀ)) (the derivative of tr(E_jZZ̄ᵀ)) is not conserved."""
+    z = a.complex_point(s)
+
+    def f(t, w):
+        M = w["Zdot"] @ a.ctranspose(t, t.conj(w["Z"])) + w["Z"] @ a.ctranspose(t, t.conj(w["Zdot"]))
+        return a.re_trace(t, a.realify_real(t, (t.In - twisted.reflection(t)) * t.q(1, 2)) @ M)
+    return {"d/dt": derivative(s, f, z, a.flow_complex(s, z))}
+
+
+def complex_momentum_of_a_generic_direction(s):
+    """Corrupted ψ: Im tr(G(ŻZ̄ᵀ − ZŻ̄ᵀ)) for a generic symmetric G (it does not commute with A) is not conserved
+    (d/dt = Im tr([A, G]ZZ̄ᵀ); the real part is, for every symmetric G)."""
+    z = a.complex_point(s)
+
+    def f(t, w):
+        M = w["Zdot"] @ a.ctranspose(t, t.conj(w["Z"])) - w["Z"] @ a.ctranspose(t, t.conj(w["Zdot"]))
+        G = t.generic("G", "n", "n")
+        return a.re_trace(t, t.realify(t.In - t.In, t.In) @ a.realify_real(t, G + G.T) @ M)
+    return {"d/dt": derivative(s, f, z, a.flow_complex(s, z))}
+
+
 def complex_real_data_sign(s):
     """Corrupted (NE_XP): +AX."""
     acc = a.complex_acceleration(s, a.real_complex_point(s))
@@ -221,6 +244,8 @@ CORRUPTIONS = [
     ("complex-neumann-flow", complex_flow_conjugate_multiplier),
     ("complex-neumann-dual-lax", complex_lax_without_bar),
     ("complex-neumann-momenta", complex_momentum_without_bars),
+    ("complex-neumann-momenta", complex_diagonal_momentum_symmetrized),
+    ("complex-neumann-momenta", complex_momentum_of_a_generic_direction),
     ("complex-neumann-real-data", complex_real_data_sign),
     ("coupled-corrected-flow-invariants", printed_flow_loses_a_constraint),
     ("coupled-dual-lax-along-corrected-flow", dual_lax_along_the_printed_flow),

@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 from stiefelsym import Rank as B_Rank
-from stiefelsym import comm
+from stiefelsym import comm, twisted
 from stiefelsym import brackets as B
 from stiefelsym.free_method import run_free
 from stiefelsym.methods import run_exact, run_points
@@ -20,7 +20,9 @@ MODULE = "stiefelsym.proofs.sec6_compatible_brackets"
 
 #: proved for every n, r by rewriting modulo (cond_XP)
 FREE_PROVED = ("symmetric-pair", "pencil-casimirs", "theta-poisson-map", "theta-factorization", "cpb-hamiltonian",
-               "cpb-flow", "ff-integrals", "bb-manakov-so-r", "lambda12-compatible", "cif-integrals", "com-integrals")
+               "cpb-flow", "ff-integrals", "bb-manakov-so-r", "lambda12-compatible", "cif-integrals", "com-integrals",
+               "nikinorov-integrals", "reduced-bracket-casimirs",
+               "singular-a-noether")   # an eigenspace of A as an orthogonal projector D of R^n
 
 #: the dimension statements of §6 (proofs/sec6_dimension_lemmas.py, another module)
 DIMENSION_LABELS = {"dimension", "LEMA1", "L1", "L2", "LEMA2", "A2", "LAMBDA", "L3", "L4", "L5", "L6", "L7", "L8",
@@ -81,6 +83,12 @@ def J1_rotation_sign(s):
     return {"X": flow.Xdot - s.X @ (s.Psi * 4)}
 
 
+def J3_not_a_casimir(s):
+    """Corrupted: J₃ = tr Ψ⁶ commutes with a function that is not SO(r)-invariant, tr(G PᵀP)."""
+    return {"{J_3, tr(G P^T P)}": s.bracket(lambda t: sec6.J(t, 3),
+                                             lambda t: t.tr(t.generic("G", "r", "r") @ t.P.T @ t.P))}
+
+
 def cpb_potential_sign(s):
     """Corrupted: H_neum₀ = ½<h, h> + <A, v> on Θ."""
     Th = sec6.Theta(s)
@@ -123,9 +131,14 @@ def com_phi_not_conserved(s):
 
 
 def singular_a_whole_phi(s):
-    """Corrupted: the whole Φ is not conserved when A has the eigenspaces of the pairs."""
-    blocks = sec6.partitions_of_n(s.n)["pairs"]
-    return {"dPhi/dt": s.d(lambda t: t.Phi, s.dirac_flow(sec6.H_neum_singular(blocks)))}
+    """Corrupted: the whole Φ is not conserved when A has the eigenspace range D (only DΦD is)."""
+    return {"dPhi/dt": s.d(lambda t: t.Phi, s.dirac_flow(sec6.H_neum_eigenspace))}
+
+
+def singular_a_complement(s):
+    """Corrupted: the block (I − D)Φ(I − D) of the complement (not an eigenspace: B is generic) is not conserved."""
+    C = lambda t: t.In - twisted.eigenspace_projector(t)   # noqa: E731
+    return {"d(C Phi C)/dt": s.d(lambda t: C(t) @ t.Phi @ C(t), s.dirac_flow(sec6.H_neum_eigenspace))}
 
 
 def covariant_whole_phi(s):
@@ -155,6 +168,7 @@ CORRUPTIONS = [
     ("theta-poisson-map", theta_with_minus_phi, (3, 2)),
     ("theta-factorization", phi_action_with_plus_sign, (3, 2)),
     ("reduced-bracket-casimirs", J1_rotation_sign, (3, 2)),
+    ("reduced-bracket-casimirs", J3_not_a_casimir, (4, 3)),   # (r = n: PᵀP = −Ψ²/4 is a function of Ψ)
     ("cpb-hamiltonian", cpb_potential_sign, (3, 2)),
     ("cpb-flow", cpb_flow_swapped, (3, 1)),
     ("ff-integrals", perelomov_not_geodesic_integral, (3, 2)),
@@ -163,6 +177,7 @@ CORRUPTIONS = [
     ("nikinorov-integrals", nikinorov_manakov_not_conserved, (4, 3)),
     ("com-integrals", com_phi_not_conserved, (3, 2)),
     ("singular-a-noether", singular_a_whole_phi, (3, 2)),
+    ("singular-a-noether", singular_a_complement, (4, 2)),
     ("singular-a-noether-covariant", covariant_whole_phi, (3, 1)),
     ("cif-completeness", cif_one_less, (3, 2)),
     ("com-completeness", com_one_less, (2, 2)),

@@ -8,7 +8,7 @@ from math import factorial
 
 import pytest
 
-from stiefelsym import Count, Rank, block, comm
+from stiefelsym import Count, Rank, block, comm, twisted
 from stiefelsym.free_method import run_free
 from stiefelsym.methods import run_exact, run_points
 
@@ -22,11 +22,12 @@ SEED = 0
 #: proved for every n, r by rewriting modulo (cond_XP)
 FREE_PROVED = ("neumann-dual-lax-normal", "neumann-dual-lax-euclidean", "dual-lax-symplectic-structure",
                "dual-lax-spectral-invariants",
-               "poisson-sphere-flow")   # stated at r = 1: E_1E_1^T = I_r makes every r x r matrix a scalar
-#: need coordinates: the reflections S_i (the size n as a number), the
+               "poisson-sphere-flow",   # stated at r = 1: E_1E_1^T = I_r makes every r x r matrix a scalar
+               "dual-lax-reflections")  # the reflection as a letter S = S^T, S^2 = I, SA = AS
+#: need coordinates: the
 #: spectral curve's coefficients (Newton's identities up to 2r, finite differences up to n), Plücker
 #: coordinates and determinants
-NEEDS_COORDINATES = ("dual-lax-reflections", "2r-integrals", "2r-integrals-conserved",
+NEEDS_COORDINATES = ("2r-integrals", "2r-integrals-conserved",
                      "2r-integrals-explicit", "2r-integrals-general-line", "tangency", "gen-chasles",
                      "gen-chasles2", "mum-geod", "chasles-manakov", "poisson-sphere-chasles",
                      "vvb-left-factor-size", "gen-chasles-momentum-ranges", "dual-lax-determines-the-point",
@@ -116,7 +117,7 @@ def poisson_sphere_sign(s):
 
 def reflection_of_X_only(s):
     """Corrupted (reflections): X ↦ S_iX with P fixed does not leave 𝓛* invariant."""
-    S = sec8.reflection(s, 0)
+    S = twisted.reflection(s)   # S_1 at fixed sizes, the letter S of the free algebra
     return {"S_1: L*": sec8.L_dual_at(s, S @ s.X, s.P) - sec8.L_dual(s)}
 
 

@@ -173,7 +173,7 @@ def test_a_claim_left_to_the_fixed_size_methods_says_what_it_reads():
     cat = load_catalog()
     expect = {"pencil-rank-a1": "a rank", "quartic": "the eigenvalues a_i of A",
               "neumann-torus-dimension": "a Jacobian", "gen-chasles-momentum-ranges": "a count of dimensions",
-              "complex-neumann-momenta": "entries of a matrix on R^n",
+              "gen-chasles2": "entries of a matrix on R^n",
               "2r-integrals": "its statement depends on the sizes"}
     for cid, what in expect.items():
         res = run_free(cat.get(cid))

@@ -869,11 +869,37 @@ def evaluate(p: NCPoly, matrices: Mapping[str, Any], scalars: Mapping[Any, Any] 
     return total
 
 
+#: whether a letter that moves with the point in a way the free scene does not differentiate (a resolvent at
+#: a spectral parameter that moves, see FreeScene.resolvent) was ever made: until then no polynomial is searched
+MOVING_LETTERS: list[bool] = [False]
+
+
+def mark_moving(L: Letter) -> Letter:
+    """Mark L as moving with the point by a derivative the free scene's own derivations do not know (they
+    refuse a polynomial that holds it; the derivative passes of the graph write its derivative)."""
+    L.moving = True             # type: ignore[attr-defined]
+    MOVING_LETTERS[0] = True
+    return L
+
+
+def refuse_moving(p: "NCPoly", what: str, tracker: Any = None) -> None:
+    """Refuse (recorded) to differentiate a polynomial that holds a letter marked by :func:`mark_moving`."""
+    if not MOVING_LETTERS[0]:
+        return
+
+    def moving(L: Letter) -> bool:
+        return getattr(L, "moving", False) or (isinstance(L, OperatorLetter) and any(moving(x) for x in L.argument))
+    if any(moving(L) for L in p.letters()):
+        raise refuse(f"{what} of a resolvent at a spectral parameter that moves with the point (its derivative "
+                     "is written by the graph's derivative passes, not by the free scene's own)", tracker)
+
+
 def derivation(p: NCPoly, images: Mapping[Letter, NCPoly]) -> NCPoly:
     """The derivation D with D(L) = images[L], D(L*) = images[L]* (with sign), other letters ↦ 0.
 
     Traces: D tr(c) = tr(D c).  D is well defined on a quotient only if it maps
     the relations into the ideal (for a flow: the flow is tangent to T*V)."""
+    refuse_moving(p, "a derivative along a flow")
     full: dict[Letter, NCPoly] = {}
     for L, v in images.items():
         if v.shape != (L.row, L.col):

@@ -24,7 +24,7 @@ from typing import Any
 
 import symengine as se
 
-from .algebra import LEADING, SCALAR, NCPoly, cycle_rep, letter_pair, merge_traces
+from .algebra import LEADING, SCALAR, Letter, NCPoly, cycle_rep, letter_pair, merge_traces
 from .rewriting import CertTerm, Hypothesis
 
 E1, E1t = letter_pair("E1", "E1t", "r", SCALAR, "E_1", "E_1^{T}")
@@ -35,6 +35,19 @@ COVECTORS = (E1t, E2t)
 ER, ERt = letter_pair("Er", "Ert", "r", SCALAR, "E_r", "E_r^{T}")
 #: the first r − 1 columns (E_1, ..., E_{r−1}) of I_r, an r×(r−1) matrix: its columns and E_r are I_r
 LEAD, LEADt = letter_pair("Elead", "Eleadt", "r", LEADING, r"E_{<r}", r"E_{<r}^{T}")
+
+#: the orthogonal projectors D, C of ℝʳ onto the two blocks of a splitting ℝʳ = ℝ^{r₁} ⊕ ℝ^{r₂}: symmetric,
+#: D² = D, C² = C, DC = CD = 0 (not D + C = I_r: a proof holds for every pair of orthogonal blocks)
+DSPLIT = Letter("Dsplit", "r", "r", "D")
+CSPLIT = Letter("Csplit", "r", "r", "C")
+SPLIT = (DSPLIT, CSPLIT)
+
+#: an orthogonal symmetry S of ℝⁿ that commutes with A (S = Sᵀ, S² = I_n, SA = AS): a reflection S_i of a
+#: coordinate hyperplane when A is diagonal, and every element of the group they generate
+SREF = Letter("Sref", "n", "n", "S")
+#: an orthogonal projector of ℝⁿ (D = Dᵀ = D²): the eigenspace of an eigenvalue of A in the claims that build A
+#: from it (A = αD + (I − D)B(I − D))
+DN = Letter("Dn", "n", "n", "D_n")
 
 #: the name of the hypothesis E₁E₁ᵀ + … + E_rE_rᵀ − I_r (true at that r only), by r
 COMPLETE = {1: "E1E1t", 2: "E1E1t+E2E2t"}
@@ -52,6 +65,11 @@ def column_hypotheses() -> dict[str, Hypothesis]:
     out["EleadtElead"] = Hypothesis("EleadtElead", w((LEADt, LEAD)) - NCPoly.identity(LEADING))
     out["EleadtEr"] = Hypothesis("EleadtEr", w((LEADt, ER)))
     out["ErtElead"] = Hypothesis("ErtElead", w((ERt, LEAD)))
+    out["SrefSref"] = Hypothesis("SrefSref", w((SREF, SREF)) - NCPoly.identity("n"))
+    out["DnDn"] = Hypothesis("DnDn", w((DN, DN)) - w((DN,)))
+    for a in SPLIT:
+        for b in SPLIT:
+            out[f"{a}{b}"] = Hypothesis(f"{a}{b}", w((a, b)) - (w((a,)) if a == b else NCPoly.zero("r", "r")))
     out["EleadEleadt+ErErt"] = Hypothesis("EleadEleadt+ErErt", w((LEAD, LEADt)) + w((ER, ERt)) - NCPoly.identity("r"))
     for r, name in COMPLETE.items():
         poly = NCPoly.zero("r", "r")

@@ -137,6 +137,13 @@ class Order:
             self._rank[letter] = len(self._rank)
         return self._rank[letter]
 
+    def add_last(self, letter: str) -> int:
+        """Rank ``letter`` after every letter listed now or later (a letter that commutes with others
+        by rules L·x → x·L, whichever x comes later)."""
+        if letter not in self._rank:
+            self._rank[letter] = (1 << 30) + len(self._rank)
+        return self._rank[letter]
+
     def key(self, w: Word) -> tuple:
         rank = self._rank
         return (len(w), tuple(rank[L] if L in rank else self.add(L) for L in w))

@@ -24,12 +24,12 @@ from ..fields import Dual, DualField, Field
 from ..matrix import CoordinateTracker, Mat, definite
 from ..scene import TANGENT_KEYS, USER_SCALAR, Flow, HermitianComponents, PaperObjects, _number, map_entries
 from .algebra import (LEADING, Letter, NCPoly, NeedsCoordinates, OperatorLetter, apply_operator, as_coef, coef_latex, derivation,
-                      letter_pair, record_refusal, refuse, skew_letter, substitute, symmetric_letter, trace)
+                      letter_pair, mark_moving, record_refusal, refuse, skew_letter, substitute, symmetric_letter, trace)
 from .mat import FreeBackend, FreeDualBackend, entry_of, one_block
 from .rewriting import (_NONZERO_NUMBER_TYPES, _SIMPLE, Certificate, Cofactor, Hypothesis, Order, Reduction,
                         RewritingError, RewritingSystem, SharedMemos, nonzero_terms, simplify_coef)
 from .traces import gradient
-from .columns import COLUMNS, COVECTORS, ER, LEAD, LEADt, ERt, canonical, canonical_form, column_hypotheses
+from .columns import COLUMNS, COVECTORS, DN, SPLIT, SREF, ER, LEAD, LEADt, ERt, canonical, canonical_form, column_hypotheses
 
 Function = Callable[[Any], Any]
 
@@ -152,6 +152,7 @@ def hypothesis(name: str, R: Letter | None = None, mu: Any = None) -> Hypothesis
         "AAinv": lambda: _w(A, AINV) - _i("n"),
         "AinvA": lambda: _w(AINV, A) - _i("n"),
         "XXt": lambda: _w(X, Xt) - _i("n"),
+        "SrefA": lambda: _w(SREF, A) - _w(A, SREF),
         "DXtDY": lambda: _w(DXt, DY) - _i("r"),
         "DYtDX": lambda: _w(DYt, DX) - _i("r"),
         "DXdtDY+DXtDYd": lambda: _w(DXdt, DY) + _w(DXt, DYd),
@@ -393,6 +394,8 @@ class FreeScene(PaperObjects):
         self._cache: dict[str, Any] = {}
         self._letters: dict[Letter, Mat] = {}
         self._resolvents: dict[Letter, Any] = {}
+        #: the spectral parameters that move with the point: (normal form, the symbol standing for it)
+        self._moving: list[tuple[NCPoly, Any]] = []
         self._extras: set[str] = set()
         self._named: dict[str, Letter] = {}
         #: r given (1 or 2: the claim is stated at that r only; 0: every r): the columns E_1, ..., E_r
@@ -538,6 +541,66 @@ class FreeScene(PaperObjects):
                                  cofactors=[_by(column_hypotheses()["ErtEr"])])
         self._named.setdefault(str(ER), ER)
         return self._cached("column:last", lambda: self._const_block(_w(ER), ("r", "?")))
+
+    def projector_n(self) -> Mat:
+        """D, an orthogonal projector of ℝⁿ, as an n×n symmetric letter with the rule D² → D and nothing else:
+        a proof holds for every orthogonal projector of ℝⁿ (every subspace, every rank)."""
+        if "projector_n" not in self._extras:
+            self._extras.add("projector_n")
+            self.system.order.add(DN)
+            self.system.add_rule((DN, DN), _w(DN), "D^2 = D (D an orthogonal projector of R^n)", name="DnDn",
+                                 cofactors=[_by(hypothesis("DnDn"))])
+        self._named.setdefault(str(DN), DN)
+        return self._cached("projector_n", lambda: self._const_block(_w(DN), ("n", "n")))
+
+    def reflection(self) -> Mat:
+        """S, an orthogonal symmetry of ℝⁿ that commutes with A, as an n×n symmetric letter ranked after every
+        other letter, with the rules S² → I_n, SA → AS and SR → RS for every resolvent R (from SA = AS and the
+        resolvent's definition): a proof holds for every S = Sᵀ with S² = I_n and SA = AS (with A diagonal:
+        every reflection S_i of a coordinate hyperplane, and every product of them)."""
+        if "reflection" not in self._extras:
+            self._extras.add("reflection")
+            self.system.order.add_last(SREF)
+            self.system.add_rule((SREF, SREF), _i("n"), "S^2 = I_n (S an orthogonal symmetry)", name="SrefSref",
+                                 cofactors=[_by(hypothesis("SrefSref"))])
+            self.system.add_rule((SREF, A), _w(A, SREF), "S A = A S (S commutes with A)", name="SrefA",
+                                 cofactors=[_by(hypothesis("SrefA"))])
+            for R in list(self._resolvents):
+                self._reflection_resolvent_rule(R)
+        self._named.setdefault(str(SREF), SREF)
+        return self._cached("reflection", lambda: self._const_block(_w(SREF), ("n", "n")))
+
+    def _reflection_resolvent_rule(self, R: Letter) -> None:
+        """S R → R S for R = (μI − A)⁻¹: SR − RS = R(SA − AS)R − [R(μI − A) − I]SR + RS[(μI − A)R − I]."""
+        if (SREF, R) in self.system._lhs:
+            return
+        mu = self._resolvents[R]
+        self.system.add_rule((SREF, R), _w(R, SREF), "S R = R S (S commutes with A, so with its resolvents)",
+                             name=f"Sref{R}", cofactors=[
+                                 _by(hypothesis("SrefA"), 1, left=(R,), right=(R,)),
+                                 _by(hypothesis("res_right", R, mu), -1, right=(SREF, R)),
+                                 _by(hypothesis("res_left", R, mu), 1, left=(R, SREF))])
+
+    def split_projector(self, i: int) -> Mat:
+        """D (i = 0) or C (i = 1), the orthogonal projectors of ℝʳ onto the blocks of a splitting
+        ℝʳ = ℝ^{r₁} ⊕ ℝ^{r₂}, as r×r symmetric letters with the rules D² → D, C² → C, DC → 0, CD → 0 and
+        nothing else (not D + C = I_r): a proof holds for every pair of orthogonal blocks of ℝʳ."""
+        if i not in (0, 1):
+            raise ValueError(f"a splitting of R^r into two blocks has no block {i + 1}")
+        if "split" not in self._extras:
+            self._extras.add("split")
+            hyps = column_hypotheses()
+            for L in SPLIT:
+                self.system.order.add(L)
+            for L in SPLIT:
+                for M in SPLIT:
+                    rhs = _w(L) if L == M else NCPoly.zero("r", "r")
+                    self.system.add_rule((L, M), rhs, f"{L.latex}{M.latex} = {L.latex if L == M else 0} (the "
+                                         "projectors of two orthogonal blocks of R^r)", name=f"{L}{M}",
+                                         cofactors=[_by(hyps[f"{L}{M}"])])
+        L = SPLIT[i]
+        self._named.setdefault(str(L), L)
+        return self._cached(f"column:split{i}", lambda: self._const_block(_w(L), ("r", "r")))
 
     def leading_columns(self) -> Mat:
         """(E_1, ..., E_{r−1}), the first r − 1 columns of I_r, as an r×(r−1) letter E_{<r}, with the last
@@ -1053,8 +1116,40 @@ class FreeScene(PaperObjects):
 
     def resolvent(self, mu: Any) -> Mat:
         """(mu I_n − A)^{-1} as a letter R_mu with A R = R A = mu R − I."""
-        R = add_resolvent(self.system, _raw(mu), self._resolvents, ainv="ainv" in self._extras)
+        m = self._spectral_parameter(_raw(mu))
+        R = add_resolvent(self.system, m, self._resolvents, ainv="ainv" in self._extras)
+        if any(m is x for _, x in self._moving):
+            mark_moving(R)
+        if "reflection" in self._extras:
+            self._reflection_resolvent_rule(R)
         return self._letter(R)
+
+    def _spectral_parameter(self, mu: Any) -> Any:
+        """The coefficient of R_mu.  A scalar polynomial of the scene with no letter is its number; one that
+        moves with the point (a polynomial in traces, μ = tr(PᵀP) + λ) is a fresh symbol m standing for it,
+        the same for the same normal form: R_m's rules hold for every value of m, so an identity they give
+        holds at m = μ(X, P) (the derivatives of R along flows, −μ'R², are written by the derivative passes
+        of the graph, with the letter R of the same μ)."""
+        if as_coef(mu) is not None:
+            return mu
+        if isinstance(mu, Dual):
+            raise refuse("a resolvent at a spectral parameter that moves with the point, inside a derivative the "
+                         "free scene takes itself (a bracket or a flow of a function that holds it)", self.tracker)
+        if not (isinstance(mu, NCPoly) and mu.is_scalar):
+            raise refuse("a resolvent at a spectral parameter that is not a scalar polynomial of the scene",
+                         self.tracker)
+        nf = self.system.normal_form(mu)
+        if all(not t and not w for (t, w) in nf.terms):
+            return nf.scalar_value()
+        moving = self._moving
+        for q, m in moving:
+            if q == nf:
+                return m
+        if moving:   # the resolvent identity between the two would divide by m1 − m2, which may vanish on T*V
+            raise refuse("resolvents at two spectral parameters that move with the point", self.tracker)
+        m = se.Dummy(f"m{len(moving) + 1}")
+        moving.append((nf, m))
+        return m
 
     # -- flows ------------------------------------------------------------------
     def _hamiltonian(self, H: Function) -> NCPoly:
@@ -1325,6 +1420,7 @@ class FreeScene(PaperObjects):
         parameters, the resolvents, the extra letters, the columns and the square case."""
         self.params = base.params
         self._resolvents = base._resolvents
+        self._moving = base._moving
         self._extras = base._extras
         self.columns = base.columns
         self.square = base.square

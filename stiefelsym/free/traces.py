@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import symengine as se
 
-from .algebra import SCALAR, Letter, NCPoly, OperatorLetter, apply_operator
+from .algebra import SCALAR, Letter, NCPoly, OperatorLetter, apply_operator, refuse_moving
 
 
 def gradient(H: NCPoly, L: Letter) -> NCPoly:
@@ -31,6 +31,7 @@ def gradient(H: NCPoly, L: Letter) -> NCPoly:
         raise TypeError("gradients are taken of scalar trace forms")
     if L.adjoint == L:
         raise TypeError(f"{L} is self-adjoint: its gradient is not defined for a general variation")
+    refuse_moving(H, "a gradient")
     out = NCPoly.zero(L.row, L.col)
     for (tm, w), c in H.terms.items():
         for i, cyc in enumerate(tm):

@@ -592,9 +592,11 @@ _SCALAR_CALLS = frozenset({"tr", "killing", "q", "const", "scalar"})
 
 
 def _constant_vector(a: Any) -> bool:
-    """Whether an engine step is a coordinate basis vector of ℝʳ (a constant matrix)."""
+    """Whether an engine step is a constant matrix of coordinates: a basis vector of ℝʳ, the projector of a
+    block of ℝʳ, a reflection of ℝⁿ."""
     return (type(a) is Named and a.qualname in CONSTANT_PRIMITIVES
-            and a.qualname.rsplit(".", 1)[-1] in ("basis_vector", "last_basis_vector"))
+            and a.qualname.rsplit(".", 1)[-1] in ("basis_vector", "last_basis_vector", "block_projector",
+                                                  "reflection", "eigenspace_projector"))
 
 
 class _Gradient(_Derivative):
