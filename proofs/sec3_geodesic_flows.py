@@ -246,7 +246,7 @@ def metric_legendre_transform(s):
     }
 
 
-@claim("metric-flow", paper=("A_XP",), kind="id", realization="metric", exact_max_n=6,
+@claim("metric-flow", paper=("A_XP",), kind="id", realization="metric",
        statement=r"\dot X=A^{-1}P,\ \dot P=X\Lambda,\quad \Lambda X^TA^{-1}X+X^TA^{-1}X\Lambda+2P^TA^{-2}P=0")
 def metric_geodesic_flow(s):
     """The Dirac flow of H_A = ½tr(PᵀA⁻¹P) on (cond_XP2) is Ẋ = A⁻¹P, Ṗ = XΛ with Λ symmetric solving the printed equation."""

@@ -175,7 +175,7 @@ def psi_pencil(s, x, c):
 
 # -- the Poisson map Θ ------------------------------------------------------------------
 
-@claim("theta-poisson-map", paper=("LAMBDA12", "right_action", "perelomov", "central"), kind="pb", exact_max_n=4,
+@claim("theta-poisson-map", paper=("LAMBDA12", "right_action", "perelomov", "central"), kind="pb",
        statement=r"\{\langle\Theta,a\rangle,\langle\Theta,b\rangle\}=\Lambda_1(a,b)|_{\Theta},\ \Theta=\Phi+XX^T;\quad "
                  r"\Theta(XQ,PQ)=\Theta(X,P)=\Theta(-X,-P);\quad \mathfrak F=\Theta^*\mathcal F")
 def theta_is_a_poisson_map(s):
@@ -202,7 +202,7 @@ def theta2_semidirect_bracket(s, a, b, mu_, Y):
     return (s.killing(mu_, comm(alpha_a, alpha_b)) - s.tr(U_b.T @ alpha_a @ Y) + s.tr(U_a.T @ alpha_b @ Y))
 
 
-@claim("theta-factorization", paper=("LAMBDA12", "momentum_map"), kind="pb", exact_max_n=4,
+@claim("theta-factorization", paper=("LAMBDA12", "momentum_map"), kind="pb",
        statement=r"\Theta=\Theta_2\circ\Theta_1,\ \Theta_1=\Phi+X,\ \Theta_2(\xi,Y)=\xi+YY^T:\quad "
                  r"\{\Phi_\xi,\Phi_\zeta\}=\langle\Phi,[\xi,\zeta]\rangle,\ \{\Phi_\xi,\tr(U^TX)\}=-\tr(U^T\xi X),\ "
                  r"\{\tr(U^TX),\tr(V^TX)\}=0;\ \Theta_2\ \text{Poisson into}\ (so(n)\oplus_{\ad}Sym(n))^*")
@@ -231,7 +231,7 @@ def J(t, k):
     return power_trace(t, t.Psi, 2 * k)
 
 
-@claim("reduced-bracket-casimirs", paper=("REDUCED_BRACKET", "torus"), kind="pb", exact_max_n=4,
+@claim("reduced-bracket-casimirs", paper=("REDUCED_BRACKET", "torus"), kind="pb",
        sizes=admissible(5, r_min=2, condition="r >= 2 (J_k exist for k <= [r/2])"),
        statement=r"X_{J_k}=(X\omega,P\omega),\ \omega=-4k\Psi^{2k-1}\in so(r);\quad \{J_k,\langle\Theta,a\rangle\}="
                  r"\{J_k,\Psi_\eta\}=\{\langle\Theta,a\rangle,\Psi_\eta\}=\{J_k,H_{neum,\kappa}\}=0,\quad J_k=\tr\Psi^{2k},\ "
@@ -270,7 +270,7 @@ def neumann_normal_hamiltonian_is_pulled_back(s):
     }
 
 
-@claim("cpb-flow", paper=("CPB", "central", "LAMBDA12"), kind="pb", exact_max_n=5,
+@claim("cpb-flow", paper=("CPB", "central", "LAMBDA12"), kind="pb",
        statement=r"\dot x=\Lambda_1(\cdot,\nabla H)^\sharp\iff\dot h=[v,A],\ \dot v=[h,v];\quad "
                  r"\{\tr(\lambda h+v-\lambda^2A)^k,H\}_{\Lambda_1}=0,\ k\le3")
 def cpb_is_the_hamiltonian_flow_of_H(s):
@@ -288,7 +288,7 @@ def cpb_is_the_hamiltonian_flow_of_H(s):
 
 # -- A = 0: the integrals (FF) of the geodesic flows ---------------------------------------
 
-@claim("ff-integrals", paper=("FF", "so(n)+so(r)", "EM"), kind="pb", exact_max_n=4,
+@claim("ff-integrals", paper=("FF", "so(n)+so(r)", "EM"), kind="pb",
        statement=r"\{\tr(\lambda\Phi+XX^T)^k,\tr(\mu\Phi+XX^T)^m\}=\{\tr(\lambda\Phi+XX^T)^k,\Phi_\xi\}="
                  r"\{\tr(\lambda\Phi+XX^T)^k,\Psi_\eta\}=\{\tr(\lambda\Phi+XX^T)^k,H_\kappa\}=0,\ k,m\le3")
 def ff_commute_and_are_integrals(s):
@@ -353,7 +353,7 @@ def potential(t):
     return t.tr(t.X.T @ t.A @ t.X) / 2
 
 
-@claim("bb-manakov-so-r", paper=("BB", "e-so(r)"), kind="pb", exact_max_n=5,
+@claim("bb-manakov-so-r", paper=("BB", "e-so(r)"), kind="pb",
        sizes=admissible(5, r_min=2, condition="r >= 2 (so(1) = 0)"),
        statement=r"\dot\xi=\{\xi,h_{\mathbb B}\}^-_{so(r)}=[\xi,\mathbb B\xi],\ \mathbb B\xi=B\xi+\xi B;\quad "
                  r"\{\tr(\xi+\mu B)^k,\tr(\xi+\nu B)^m\}^-=\{\tr(\xi+\mu B)^k,h_{\mathbb B}\}^-=0,\ k,m\le3")
@@ -427,7 +427,7 @@ def chain_functions():
     return out
 
 
-@claim("nikinorov-integrals", paper=("nikinorov", "EM2", "EM3", "FF"), kind="pb", exact_max_n=4,
+@claim("nikinorov-integrals", paper=("nikinorov", "EM2", "EM3", "FF"), kind="pb",
        sizes=admissible(5, r_min=2, condition="r >= 2 (so(1) = 0)"),
        statement=r"H_K=\tfrac12\langle\Phi,\Phi\rangle+K\circ\Psi:\ \{\Phi_\xi,H_K\}=\{\mathfrak F,H_K\}=0,\ "
                  r"\{\tr\Psi^{2k},\cdot\}=\{\tr\Psi_i^{2k},\tr\Psi_j^{2m}\}=\{\tr\Psi_i^{2k},H_K\}=0")

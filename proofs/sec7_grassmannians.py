@@ -82,7 +82,7 @@ def flow_N0_at(s, X, P):
 
 
 @claim("neumann-flows-coincide-on-psi-zero", paper=("grassmannian", "N0_XP2", "NE_XP"), kind="id",
-       sizes=admissible(n_max=5), exact_max_n=3,
+       sizes=admissible(n_max=5),
        statement=r"(\dot X,\dot P)_{\kappa=0}-(\dot X,\dot P)_{\kappa=-\frac12}=\tfrac12(X\Psi,P\Psi),\qquad "
                  r"\text{(N0\_XP2)}=\text{(NE\_XP)}\ \text{on}\ \Psi^{-1}(0)=\{X^TP=0\}")
 def neumann_flows_coincide_on_psi_zero(s):
@@ -150,7 +150,7 @@ def neum_gras_rhs(s, X, Xdot):
 
 
 @claim("neum-gras", paper=("neum-gras", "gras-velocities", "NE_XP"), kind="id",
-       sizes=admissible(n_max=5, r_max=3), exact_max_n=3,
+       sizes=admissible(n_max=5, r_max=3),
        equivariance="the Plücker coordinates of a rotated plane are those of the plane under the induced "
                     "linear action of SO(n) on the r-th exterior power, so the residual is covariant",
        statement=r"\tfrac{d^2}{dt^2}(e_1\wedge\dots\wedge e_r)=-\sum_{i}e_1\wedge\dots\wedge Ae_i\wedge\dots\wedge e_r"
@@ -259,7 +259,7 @@ def quartic_hamiltonian_for_r_1(s):
 
 
 @claim("quartic-psi-zero-invariant", paper=("quartic", "grassmannian"), kind="pb",
-       sizes=admissible(n_max=5), exact_max_n=3,
+       sizes=admissible(n_max=5),
        statement=r"\tfrac{d}{dt}\Psi=0\ \text{along the Dirac flow of}\ H=\tfrac12\tr(P^TP)+\tr(X^TA^2X)-\tr(X^TAXX^TAX)")
 def quartic_flow_keeps_psi(s):
     """The quartic Hamiltonian (quartic) is right SO(r)-invariant, so its Dirac flow conserves Ψ and leaves the invariant manifold Ψ⁻¹(0) ⊂ T*V_{n,r}, on which it is reduced to T*G_{n,r}."""

@@ -122,6 +122,11 @@ class Field:
     def normalize(self, x: Any) -> Any:
         return x
 
+    def pairing(self, x: Any) -> Any:
+        """A scalar a pairing or trace of matrices computed, as the scene hands it on (by default
+        normalized; a backend may keep a scalar of its own that computes exactly as it is)."""
+        return self.normalize(x)
+
     def exact_input(self, x: Any) -> Any:
         """A computed value taken as an exact input of the problem (hard cases)."""
         return x

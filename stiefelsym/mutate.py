@@ -459,16 +459,6 @@ def _body(defn: ast.FunctionDef) -> list[ast.stmt]:
     return body
 
 
-class _Replace(ast.NodeTransformer):
-    def __init__(self, target: ast.AST, replacement: ast.AST) -> None:
-        self.target, self.replacement = target, replacement
-
-    def visit(self, node: ast.AST) -> ast.AST:
-        if node is self.target:
-            return ast.copy_location(copy.deepcopy(self.replacement), node)
-        return self.generic_visit(node)
-
-
 def _compile(fn: Callable, defn: ast.FunctionDef, filename: str) -> Callable:
     """The mutated definition as a function of the claim's module (same globals, same closure values)."""
     freevars = fn.__code__.co_freevars
@@ -808,12 +798,34 @@ def _mutated(defn: ast.FunctionDef, site: _Site) -> ast.FunctionDef:
 
 
 def _mutated_many(defn: ast.FunctionDef, sites: Sequence[_Site]) -> ast.FunctionDef:
-    """A copy of defn with the (non-nested) nodes of several sites replaced."""
-    memo: dict[int, Any] = {}
-    clone = copy.deepcopy(defn, memo)
-    for site in sites:
-        clone = _Replace(memo[id(site.node)], site.replacement).visit(clone)
-    return clone
+    """A copy of defn with the (non-nested) nodes of several sites replaced: the nodes on the paths
+    from the root to the sites are copied, every other subtree is shared with defn (never changed in
+    place: a caller that edits a mutated tree copies it first), each replacement is a deep copy."""
+    targets = {id(site.node): site for site in sites}
+
+    def rebuild(node: ast.AST) -> ast.AST:
+        site = targets.get(id(node))
+        if site is not None and site.node is node:
+            return ast.copy_location(copy.deepcopy(site.replacement), node)
+        changed: dict[str, Any] = {}
+        for name, value in ast.iter_fields(node):
+            if isinstance(value, list):
+                new = [rebuild(v) if isinstance(v, ast.AST) else v for v in value]
+                if any(a is not b for a, b in zip(new, value)):
+                    changed[name] = new
+            elif isinstance(value, ast.AST):
+                new_node = rebuild(value)
+                if new_node is not value:
+                    changed[name] = new_node
+        if not changed:
+            return node
+        clone = copy.copy(node)
+        for name, value in changed.items():
+            setattr(clone, name, value)
+        return clone
+
+    out = rebuild(defn)
+    return out if out is not defn else copy.copy(defn)
 
 
 # --------------------------------------------------------------------------- the paper's notation

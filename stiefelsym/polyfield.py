@@ -1442,6 +1442,13 @@ class SymbolicField(Field):
             return x.to_se()
         return se.expand(x)
 
+    def pairing(self, x):
+        # a flint scalar stays in flint: sums, products, quotients and the zero test are exact there,
+        # and it meets symengine (converted once) only where an expression needs it
+        if type(x) is _RF:
+            return x
+        return self.normalize(x)
+
     def poly_ring(self):
         """The flint rational-function ring of this field's symbols (created on first use)."""
         if self._poly_ring is None:

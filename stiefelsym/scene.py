@@ -207,7 +207,7 @@ class PaperObjects:
 
     def killing(self, a: Mat, b: Mat) -> Scalar:
         """<a, b> = -1/2 tr(ab)."""
-        x = self._field.normalize((a @ b)._trace() * self._field.const(Fraction(-1, 2)))
+        x = self._field.pairing((a @ b)._trace() * self._field.const(Fraction(-1, 2)))
         return _number(self, x)
 
     def scalar(self, name: str) -> Scalar:
@@ -272,7 +272,7 @@ class Scene(PaperObjects):
             raise ValueError(f"cannot pair {(m, k1)} with {(k2, k)} by the trace of their product")
         unify(a.tags[1], b.tags[0], "a product", a.tracker)
         unify(a.tags[0], b.tags[1], "a trace", a.tracker)
-        x = self._field.normalize(a._inner(b.T) * self._field.const(Fraction(-1, 2)))
+        x = self._field.pairing(a._inner(b.T) * self._field.const(Fraction(-1, 2)))
         return _number(self, x)
 
     @property
@@ -861,7 +861,7 @@ class Scene(PaperObjects):
 
     # gradients as pairs (d/dX, d/dP) of n x r matrices: <u, v> = tr(u_Xᵀ v_X) + tr(u_Pᵀ v_P)
     def _pair_dot(self, u: tuple[Mat, Mat], v: tuple[Mat, Mat]) -> Scalar:
-        return self._field.normalize(u[0]._inner(v[0]) + u[1]._inner(v[1]))
+        return self._field.pairing(u[0]._inner(v[0]) + u[1]._inner(v[1]))
 
     @staticmethod
     def _pair_omega(u: tuple[Mat, Mat]) -> tuple[Mat, Mat]:
@@ -921,7 +921,7 @@ class Scene(PaperObjects):
         acc = self.const(0)
         for x, y in zip(u, v):
             acc = acc + x * y
-        return self._field.normalize(acc)
+        return self._field.pairing(acc)
 
     def canonical_bracket(self, F: Function, G: Function) -> Scalar:
         """{F, G}_0 = sum (dF/de, dG/dp) - (dF/dp, dG/de)."""
@@ -951,7 +951,7 @@ class Scene(PaperObjects):
         for i in range(len(Gs)):
             for j in range(len(Gs)):
                 acc = acc + FiF[i] * C[i][j] * FjG[j]
-        x = self._field.normalize(acc)
+        x = self._field.pairing(acc)
         return _number(self, x)
 
     def canonical_flow(self, H: Function) -> Flow:

@@ -143,6 +143,33 @@ def test_mutants_keep_the_original_function_intact():
     assert all(np.allclose(before[k], after[k]) for k in before)
 
 
+def test_a_mutated_definition_is_the_deep_copy_with_the_site_replaced():
+    """Each mutant copies only the path to its site: the same tree as a deep copy with the node replaced
+    (every field and position), and the definition it came from is never changed."""
+    import ast
+    import copy
+    from stiefelsym.mutate import _bound_names, _function_ast, _function_sites, _mutated
+
+    defn, _ = _function_ast(toy_identities)
+    before = ast.dump(defn, include_attributes=True)
+    sites = list(_function_sites(defn, _bound_names(defn)))
+    assert sites
+    for site in sites:
+        memo: dict = {}
+        deep = copy.deepcopy(defn, memo)
+        target = memo[id(site.node)]
+
+        class Put(ast.NodeTransformer):
+            def visit(self, node):
+                if node is target:
+                    return ast.copy_location(copy.deepcopy(site.replacement), node)
+                return self.generic_visit(node)
+        expected = ast.dump(Put().visit(deep), include_attributes=True)
+        assert ast.dump(_mutated(defn, site), include_attributes=True) == expected
+        assert expected != before
+    assert ast.dump(defn, include_attributes=True) == before
+
+
 def test_mutants_of_a_closure():
     offset = 2
 

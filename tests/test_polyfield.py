@@ -106,6 +106,21 @@ def test_scalars_of_the_backend_stay_in_flint_and_agree_with_symengine():
     assert F.normalize(y1) == y1.to_se() and same(F.normalize(y1), y2)
 
 
+def test_pairings_of_a_scene_stay_in_flint_and_decide_exactly():
+    """<a, b> of the exact scene is a flint scalar (Field.pairing keeps it there, no trip through
+    symengine), equal to -1/2 tr(ab) computed as a product and a trace, and a nonzero pairing is nonzero."""
+    from stiefelsym.polyfield import _RF
+    F = SymbolicField()
+    s = Scene(3, 2, F, chart="equivariant")
+    a, b = s.generic("a", "n", "n"), s.generic("b", "n", "n")
+    kab, kba, kaa = s.killing(a, b), s.killing(b, a), s.killing(a, a)
+    assert type(kab) is _RF and type(kaa) is _RF
+    by_product = (a @ b).trace() * Fraction(-1, 2)
+    assert F.is_zero(kab - kba) and F.is_zero(kab - by_product) and same(kab, by_product.to_se())
+    assert not F.is_zero(kaa) and not F.is_zero(kab - kaa) and not F.is_zero(kab + by_product)   # controls
+    assert SymbolicField().pairing(se.Integer(3)) == 3           # anything else is normalized as before
+
+
 def test_native_backend_hook():
     F, G = fields()
     assert isinstance(native.backend(F), PolyBackend)
