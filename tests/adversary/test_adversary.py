@@ -568,3 +568,52 @@ def test_a_moving_spectral_parameter_is_differentiated(method):
     assert v["adv-moving-mu-gradient"] not in PASSING and v["adv-moving-mu-bracket"] not in PASSING, v
     if method != "free":
         assert v["adv-moving-mu-gradient"] == "fails" and v["adv-moving-mu-gradient-true"] in PASSING, v
+
+
+# -- V. the new letters of the free algebra (issue 23/20): S, D, C, Dn and R at a moving mu ---------
+
+NEW_LETTERS = "new_letters_probes.py"
+#: true for every S commuting with A, every pair of orthogonal blocks, every resolvent: proved everywhere
+NEW_TRUE = ("adv-refl-commutes-A", "adv-refl-commutes-moving-resolvent", "adv-split-D-plus-C-idempotent",
+            "adv-refl-derivative", "adv-refl-gradient", "adv-split-bracket")
+#: false at (3,2): S against objects it does not commute with, a factor dropped, mu taken for its value
+NEW_FALSE = ("adv-refl-commutes-A-plus-XXt", "adv-refl-commutes-Phi", "adv-moving-mu-vs-parameter",
+             "adv-refl-derivative-zero", "adv-refl-bracket", "adv-refl-gradient-half")
+#: true at the fixed-size objects only (S_1, diag(I_2, 0), A diagonal, D + C = I_r), not for every such letter
+NEW_FIXED_ONLY = ("adv-refl-Dn-commute", "adv-Dn-commutes-A", "adv-split-D-minus-C-square")
+
+
+def test_new_letters_free_verdicts():
+    """No rule of S, D, C, Dn, R_m is used beyond its objects: S does not pass A + XXᵀ, Φ, Dn; Dn does not
+    commute with A; D + C = I_r is not assumed; S is constant under s.d / s.gradient / s.bracket."""
+    v = verdicts(NEW_LETTERS, "free")
+    assert all(v[c] == "proved" for c in NEW_TRUE), v
+    assert all(v[c] not in PASSING for c in NEW_FALSE + NEW_FIXED_ONLY + ("adv-split-bracket-mixed",)), v
+    # (mu I - A) R(mu) = I with mu written out: mu is not its symbol m (undecided, never wrong)
+    assert v["adv-moving-mu-rayleigh"] not in PASSING and v["adv-moving-mu-trA"] not in PASSING, v
+
+
+@pytest.mark.parametrize("method", ["exact", "modular"])
+def test_new_letters_fixed_size_verdicts(method):
+    v = verdicts(NEW_LETTERS, method, size="3,2")
+    assert all(v[c] in PASSING for c in NEW_TRUE + NEW_FIXED_ONLY), v
+    assert all(v[c] == "fails" for c in NEW_FALSE), v
+    v = verdicts(NEW_LETTERS, method, size="4,3", ids=("adv-split-bracket-mixed", "adv-split-bracket"))
+    assert v["adv-split-bracket-mixed"] == "fails" and v["adv-split-bracket"] in PASSING, v
+
+
+@pytest.mark.parametrize("method", ["exact", "modular"])
+def test_a_resolvent_at_the_eigenvalue_tr_a_is_not_passed_at_n1(method):
+    """At n = 1, mu = tr A = a_1 is the eigenvalue of A: R(mu) exists at no point of that stated size."""
+    v = verdicts(NEW_LETTERS, method, size="1,1", ids=("adv-moving-mu-trA-commutes",))
+    assert v["adv-moving-mu-trA-commutes"] not in PASSING, v
+
+
+@pytest.mark.xfail(strict=True, reason=(
+    "open: a moving spectral parameter mu (a trace polynomial) becomes a free symbol m with A R = R A = mR - I; "
+    "the rules hold for every m that is not an eigenvalue of A, but mu = tr A IS the eigenvalue a_1 at n = 1 "
+    "(a stated size of admissible(n_max=3)), so R(tr A) exists at no point there; the free method proves "
+    "A R(tr A) = R(tr A) A for every n, r (n = 1 included) while exact and modular at (1,1) answer error "
+    "(singular system)"))
+def test_a_resolvent_at_the_eigenvalue_tr_a_is_not_proved_for_every_n():
+    assert _v(NEW_LETTERS, "free", "adv-moving-mu-trA-commutes") not in PASSING

@@ -1,0 +1,154 @@
+"""Probes of the free algebra's new letters (issue 23/20): the reflection S of R^n commuting with A, the
+projectors D, C of two orthogonal blocks of R^r, the projector Dn of R^n and the resolvent at a spectral
+parameter that moves with the point, used where their rules may not hold."""
+from stiefelsym import admissible, claim, twisted
+
+
+def _S(s):
+    return twisted.reflection(s)
+
+
+@claim("adv-refl-commutes-A", kind="id", sizes=admissible(n_max=3), statement="S A = A S")
+def refl_commutes_a(s):
+    """True control: S commutes with A."""
+    S = _S(s)
+    return {"r": S @ s.A - s.A @ S}
+
+
+@claim("adv-refl-commutes-A-plus-XXt", kind="id", sizes=admissible(n_max=3), statement="S (A + X X^T) = (A + X X^T) S")
+def refl_commutes_a_plus(s):
+    """False: S does not commute with A + XX^T."""
+    S, B = _S(s), s.A + s.X @ s.X.T
+    return {"r": S @ B - B @ S}
+
+
+@claim("adv-refl-commutes-Phi", kind="id", sizes=admissible(n_max=3), statement="S Phi = Phi S")
+def refl_commutes_phi(s):
+    """False."""
+    S = _S(s)
+    return {"r": S @ s.Phi - s.Phi @ S}
+
+
+@claim("adv-refl-commutes-moving-resolvent", kind="id", sizes=admissible(n_max=3), statement="S R(mu) = R(mu) S, mu = tr P^T P")
+def refl_moving(s):
+    """True control: S commutes with every resolvent of A."""
+    S, R = _S(s), s.resolvent(s.tr(s.P.T @ s.P))
+    return {"r": S @ R - R @ S}
+
+
+@claim("adv-refl-Dn-commute", kind="id", sizes=admissible(n_max=3), statement="S Dn = Dn S")
+def refl_dn(s):
+    """True at fixed sizes (S_1, diag(I_2, 0)) only."""
+    S, D = _S(s), twisted.eigenspace_projector(s)
+    return {"r": S @ D - D @ S}
+
+
+@claim("adv-Dn-commutes-A", kind="id", sizes=admissible(n_max=3), statement="Dn A = A Dn")
+def dn_a(s):
+    """True at fixed sizes (A diagonal) only."""
+    D = twisted.eigenspace_projector(s)
+    return {"r": D @ s.A - s.A @ D}
+
+
+@claim("adv-split-D-plus-C-idempotent", kind="id", sizes=admissible(n_max=3), statement="(D + C)^2 = D + C")
+def split_sum(s):
+    """True control: D + C is a projector."""
+    D, C = twisted.block_projector(s, 0), twisted.block_projector(s, 1)
+    return {"r": (D + C) @ (D + C) - (D + C)}
+
+
+@claim("adv-split-D-minus-C-square", kind="id", sizes=admissible(n_max=3), statement="(D - C)^2 = I_r")
+def split_diff(s):
+    """True at fixed sizes only (D + C = I_r there)."""
+    D, C = twisted.block_projector(s, 0), twisted.block_projector(s, 1)
+    return {"r": (D - C) @ (D - C) - s.Ir}
+
+
+@claim("adv-moving-mu-trA", kind="id", sizes=admissible(n_max=3), statement="(mu I - A) R(mu) = I, mu = tr A")
+def moving_tr_a(s):
+    """Undefined at n = 1 (mu = a_1 is the eigenvalue of A), true for n >= 2."""
+    mu = s.tr(s.A)
+    R = s.resolvent(mu)
+    return {"r": (s.In * mu - s.A) @ R - s.In}
+
+
+@claim("adv-moving-mu-rayleigh", kind="id", sizes=admissible(n_max=3), statement="(mu I - A) R(mu) = I, mu = tr X^T A X")
+def moving_rayleigh(s):
+    """Undefined at n = r = 1 (mu = a_1)."""
+    mu = s.tr(s.X.T @ s.A @ s.X)
+    R = s.resolvent(mu)
+    return {"r": (s.In * mu - s.A) @ R - s.In}
+
+
+@claim("adv-moving-mu-vs-parameter", kind="id", sizes=admissible(n_max=3), statement="R(mu) - R(mu) = 0 with mu given as its value")
+def moving_mu_value(s):
+    """False: tr(A R(mu)) = mu tr R(mu) - n, written with a different mu."""
+    mu = s.tr(s.P.T @ s.P)
+    R = s.resolvent(mu)
+    return {"r": s.tr(s.A @ R) - (mu + 1) * s.tr(R) + s.tr(s.In)}
+
+
+@claim("adv-moving-mu-trA-commutes", kind="id", sizes=admissible(n_max=3), statement="A R(mu) = R(mu) A, mu = tr A")
+def moving_tr_a_commutes(s):
+    """At n = 1, mu = tr A = a_1 is the eigenvalue of A: R(mu) does not exist at any point of a stated size."""
+    R = s.resolvent(s.tr(s.A))
+    return {"r": s.A @ R - R @ s.A}
+
+
+def _H(t):
+    """The Neumann Hamiltonian (kinetic and potential)."""
+    return (t.tr(t.P.T @ t.P) + t.tr(t.X.T @ t.A @ t.X)) / 2
+
+
+@claim("adv-refl-derivative", kind="id", sizes=admissible(n_max=3), statement="d/dt tr(X^T S X) = 2 tr(Xdot^T S X)")
+def refl_derivative(s):
+    """True control: S is constant along a flow."""
+    flow = s.dirac_flow(_H)
+    return {"r": s.d(lambda t: t.tr(t.X.T @ _S(t) @ t.X), flow) - 2 * s.tr(flow.Xdot.T @ _S(s) @ s.X)}
+
+
+@claim("adv-refl-derivative-zero", kind="id", sizes=admissible(n_max=3), statement="d/dt tr(X^T S X) = 0")
+def refl_derivative_zero(s):
+    """False: tr(X^T S X) is not conserved by the Neumann flow."""
+    return {"r": s.d(lambda t: t.tr(t.X.T @ _S(t) @ t.X), s.dirac_flow(_H))}
+
+
+@claim("adv-refl-bracket", kind="id", sizes=admissible(n_max=3), statement="{tr(X^T S A X), H} = 0")
+def refl_bracket(s):
+    """False."""
+    return {"r": s.bracket(lambda t: t.tr(t.X.T @ _S(t) @ t.A @ t.X), _H)}
+
+
+@claim("adv-refl-gradient", kind="id", sizes=admissible(n_max=3), statement="grad_X tr(X^T S X) = 2 S X")
+def refl_gradient(s):
+    """True control (the ambient gradient)."""
+    gX, _ = s.gradient(lambda t: t.tr(t.X.T @ _S(t) @ t.X))
+    return {"r": gX - 2 * _S(s) @ s.X}
+
+
+@claim("adv-refl-gradient-half", kind="id", sizes=admissible(n_max=3), statement="grad_X tr(X^T S X) = S X")
+def refl_gradient_half(s):
+    """False (a factor 2 dropped)."""
+    gX, _ = s.gradient(lambda t: t.tr(t.X.T @ _S(t) @ t.X))
+    return {"r": gX - _S(s) @ s.X}
+
+
+@claim("adv-split-bracket", kind="id", sizes=admissible(n_max=3), statement="{tr(D Psi D Psi), tr(C Psi C Psi)} = 0")
+def split_bracket(s):
+    """The block Casimirs of the two blocks commute (true control)."""
+    def f(t, i):
+        B = twisted.block_projector(t, i)
+        return t.tr(B @ t.Psi @ B @ t.Psi)
+    return {"r": s.bracket(lambda t: f(t, 0), lambda t: f(t, 1))}
+
+
+@claim("adv-split-bracket-mixed", kind="id", sizes=admissible(n_max=3), statement="{tr(D Psi C eta), tr(D Psi D Psi)} = 0")
+def split_bracket_mixed(s):
+    """False: the mixed block D Psi C is rotated by SO(r_1) (at r >= 2)."""
+    def mixed(t):
+        D, C = twisted.block_projector(t, 0), twisted.block_projector(t, 1)
+        return t.tr(D @ t.Psi @ C @ t.eta)
+    def block(t):
+        D = twisted.block_projector(t, 0)
+        return t.tr(D @ t.Psi @ D @ t.Psi)
+    return {"r": s.bracket(mixed, block)}
