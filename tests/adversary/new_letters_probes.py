@@ -152,3 +152,85 @@ def split_bracket_mixed(s):
         D = twisted.block_projector(t, 0)
         return t.tr(D @ t.Psi @ D @ t.Psi)
     return {"r": s.bracket(mixed, block)}
+
+
+def _first_eigenvalue(s):
+    """(tr Dn A − tr Dn A S)/2 = tr(Dn A (I − S)/2): at fixed sizes (Dn = diag(I_2, 0), S = S_1, A = diag(a))
+    (I − S)/2 = e_1 e_1^T and this is exactly a_1, an eigenvalue of A at every size."""
+    D = twisted.eigenspace_projector(s)
+    return (s.tr(D @ s.A) - s.tr(D @ s.A @ _S(s))) / 2
+
+
+@claim("adv-moving-mu-eigenvalue-commutes", kind="id", sizes=admissible(n_max=3),
+       statement="A R(mu) = R(mu) A, mu = tr(Dn A (I - S))/2")
+def moving_eigenvalue_commutes(s):
+    """R(mu) exists at no point of any stated size (mu = a_1 there)."""
+    R = s.resolvent(_first_eigenvalue(s))
+    return {"r": s.A @ R - R @ s.A}
+
+
+@claim("adv-moving-mu-eigenvalue-reflection", kind="id", sizes=admissible(n_max=3),
+       statement="S R(mu) = R(mu) S, mu = tr(Dn A (I - S))/2")
+def moving_eigenvalue_reflection(s):
+    """R(mu) exists at no point of any stated size (mu = a_1 there)."""
+    S, R = _S(s), s.resolvent(_first_eigenvalue(s))
+    return {"r": S @ R - R @ S}
+
+
+@claim("adv-moving-mu-eigenvalue-trace", kind="id", sizes=admissible(n_max=3),
+       statement="tr(A R(mu)) tr(R(mu) ... ) : the resolvent identity with lam", )
+def moving_eigenvalue_identity(s):
+    """R(mu) R(lam) (mu - lam) = R(lam) - R(mu) at mu = a_1: undefined at every stated size."""
+    R, Rl = s.resolvent(_first_eigenvalue(s)), s.resolvent(s.lam)
+    return {"r": s.A @ R @ Rl - R @ Rl @ s.A}
+
+
+def _eigenvalue_off_the_probe(s):
+    """a_1 + (n − 1)(n − 2)(1 − tr C)/2 at fixed sizes (tr C = ⌊r/2⌋): a_1, an eigenvalue of A, at every
+    listed size but (3,1) (and at every size with r >= 2); at (3,1) a_1 + 1."""
+    n, C = s.tr(s.In), twisted.block_projector(s, 1)
+    return _first_eigenvalue(s) + (n - 1) * (n - 2) * (1 - s.tr(C)) / 2
+
+
+@claim("adv-moving-mu-eigenvalue-off-probe", kind="id", sizes=admissible(n_max=3),
+       statement="A R(mu) = R(mu) A, mu = tr(Dn A (I - S))/2 + (n - 1)(n - 2)(1 - tr C)/2")
+def moving_eigenvalue_off_probe(s):
+    """R(mu) exists at no point of any listed size but (3,1)."""
+    R = s.resolvent(_eigenvalue_off_the_probe(s))
+    return {"r": s.A @ R - R @ s.A}
+
+
+@claim("adv-split-conjugated-idempotent", kind="id", sizes=admissible(n_max=3), statement="(X D X^T)^2 = X D X^T")
+def split_conjugated(s):
+    """True control: X D X^T is a projector of R^n (X^T X = I_r)."""
+    D = twisted.block_projector(s, 0)
+    M = s.X @ D @ s.X.T
+    return {"r": M @ M - M}
+
+
+@claim("adv-refl-conjugated-involution", kind="id", sizes=admissible(n_max=3), statement="(X^T S X)^2 = I_r")
+def refl_conjugated(s):
+    """False for r < n (true at r = n, where X X^T = I_n)."""
+    M = s.X.T @ _S(s) @ s.X
+    return {"r": M @ M - s.Ir}
+
+
+@claim("adv-new-letters-symmetric", kind="id", sizes=admissible(n_max=3), statement="S^T = S, D^T = D, C^T = C, Dn^T = Dn")
+def new_symmetric(s):
+    """True control: the four letters are symmetric."""
+    S, D, C, Dn = _S(s), twisted.block_projector(s, 0), twisted.block_projector(s, 1), twisted.eigenspace_projector(s)
+    return {"S": S.T - S, "D": D.T - D, "C": C.T - C, "Dn": Dn.T - Dn}
+
+
+@claim("adv-new-letters-skew-wrong", kind="id", sizes=admissible(n_max=3), statement="X^T S P + P^T S X = 0")
+def new_skew_wrong(s):
+    """False: X^T S P is not skew (S is not I)."""
+    S = _S(s)
+    return {"r": s.X.T @ S @ s.P + s.P.T @ S @ s.X}
+
+
+@claim("adv-refl-trace-SA", kind="id", sizes=admissible(n_max=3), statement="tr(S A) = tr(A S)")
+def refl_trace(s):
+    """True (a trace of a product of two symmetric matrices)."""
+    S = _S(s)
+    return {"r": s.tr(S @ s.A) - s.tr(s.A @ S)}
