@@ -656,3 +656,18 @@ def test_tr_sa_is_never_wrong():
     loops and it answers undecided today (an incompleteness, not a hole); never fails, and modular passes it."""
     assert _v(NEW_LETTERS, "free", "adv-refl-trace-SA", ids=("adv-refl-trace-SA",)) != "fails"
     assert _v(NEW_LETTERS, "modular", "adv-refl-trace-SA", ids=("adv-refl-trace-SA",)) in PASSING
+
+
+def test_a_grafted_certificate_with_the_reflection_letter_is_rejected_by_check(tmp_path):
+    """The certificate of S A = A S (hypothesis SrefA) grafted onto the record of (D + C)^2 = D + C, a claim with
+    no S: the independent checker accepts it (it proves its own residual, which names S), `stiefelsym check`
+    re-derives the claim's certificate and rejects the record."""
+    run = cli("verify", "adv-refl-commutes-A", "adv-split-D-plus-C-idempotent", "--claims", str(HERE / NEW_LETTERS),
+              "--method", "free", "--format", "json")
+    payload = json.loads(run.stdout)
+    by = {r["claim"]: r for r in payload["results"]}
+    by["adv-split-D-plus-C-idempotent"]["certificate_data"] = by["adv-refl-commutes-A"]["certificate_data"]
+    forged = tmp_path / "forged.json"
+    forged.write_text(json.dumps(payload), encoding="utf-8")
+    checked = cli("check", str(forged))
+    assert checked.returncode == 1 and "REJECTED adv-split-D-plus-C-idempotent" in checked.stdout, checked.stdout
