@@ -234,3 +234,23 @@ def refl_trace(s):
     """True (a trace of a product of two symmetric matrices)."""
     S = _S(s)
     return {"r": s.tr(S @ s.A) - s.tr(s.A @ S)}
+
+
+@claim("adv-moving-mu-same-twice", kind="id", sizes=admissible(n_max=3), statement="R(tr P^T P) = R(tr P^T S S P)")
+def moving_same_twice(s):
+    """True control: two resolvents at one moving parameter, built separately (the second through S^2 = I)."""
+    S = _S(s)
+    return {"r": s.resolvent(s.tr(s.P.T @ s.P)) - s.resolvent(s.tr(s.P.T @ S @ S @ s.P))}
+
+
+@claim("adv-moving-mu-two-values", kind="id", sizes=admissible(n_max=3), statement="R(tr P^T P) = R(tr P^T Dn P)")
+def moving_two_values(s):
+    """False: two different moving parameters (Dn is not I)."""
+    D = twisted.eigenspace_projector(s)
+    return {"r": s.resolvent(s.tr(s.P.T @ s.P)) - s.resolvent(s.tr(s.P.T @ D @ s.P))}
+
+
+@claim("adv-mu-constant-through-XtX", kind="id", sizes=admissible(n_max=3), statement="d/dt R(tr X^T X) = 0")
+def mu_constant(s):
+    """True control: tr X^T X = r does not move; R(r) is constant along a flow."""
+    return {"r": s.d(lambda t: t.resolvent(t.tr(t.X.T @ t.X)), s.dirac_flow(_H))}

@@ -576,7 +576,7 @@ NEW_LETTERS = "new_letters_probes.py"
 #: true for every S commuting with A, every pair of orthogonal blocks, every resolvent: proved everywhere
 NEW_TRUE = ("adv-refl-commutes-A", "adv-refl-commutes-moving-resolvent", "adv-split-D-plus-C-idempotent",
             "adv-refl-derivative", "adv-refl-gradient", "adv-split-bracket", "adv-split-conjugated-idempotent",
-            "adv-new-letters-symmetric")
+            "adv-new-letters-symmetric", "adv-moving-mu-same-twice", "adv-mu-constant-through-XtX")
 #: false at (3,2): S against objects it does not commute with, a factor dropped, mu taken for its value
 NEW_FALSE = ("adv-refl-commutes-A-plus-XXt", "adv-refl-commutes-Phi", "adv-moving-mu-vs-parameter",
              "adv-refl-derivative-zero", "adv-refl-bracket", "adv-refl-gradient-half", "adv-refl-conjugated-involution",
@@ -591,17 +591,24 @@ def test_new_letters_free_verdicts():
     v = verdicts(NEW_LETTERS, "free")
     assert all(v[c] == "proved" for c in NEW_TRUE), v
     assert all(v[c] not in PASSING for c in NEW_FALSE + NEW_FIXED_ONLY + ("adv-split-bracket-mixed",)), v
+    assert v["adv-moving-mu-two-values"] not in PASSING, v      # a second moving parameter: refused
     # (mu I - A) R(mu) = I with mu written out: mu is not its symbol m (undecided, never wrong)
     assert v["adv-moving-mu-rayleigh"] not in PASSING and v["adv-moving-mu-trA"] not in PASSING, v
 
 
 @pytest.mark.parametrize("method", ["exact", "modular"])
 def test_new_letters_fixed_size_verdicts(method):
-    v = verdicts(NEW_LETTERS, method, size="3,2")
+    v = verdicts(NEW_LETTERS, method, size="3,2", ids=NEW_TRUE + NEW_FIXED_ONLY + NEW_FALSE)
     assert all(v[c] in PASSING for c in NEW_TRUE + NEW_FIXED_ONLY), v
     assert all(v[c] == "fails" for c in NEW_FALSE), v
     v = verdicts(NEW_LETTERS, method, size="4,3", ids=("adv-split-bracket-mixed", "adv-split-bracket"))
     assert v["adv-split-bracket-mixed"] == "fails" and v["adv-split-bracket"] in PASSING, v
+
+
+def test_two_moving_parameters_fail_at_a_fixed_size():
+    """R(tr PᵀP) = R(tr PᵀDnP) (false; refused by free): modular fails it (exact's symbolic inverse of the
+    difference exceeds its budget at (3,2))."""
+    assert _v(NEW_LETTERS, "modular", "adv-moving-mu-two-values", ids=("adv-moving-mu-two-values",)) == "fails"
 
 
 @pytest.mark.parametrize("method", ["exact", "modular"])
