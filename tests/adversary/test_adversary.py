@@ -629,3 +629,113 @@ def test_a_moving_spectral_parameter_is_differentiated(method):
     assert v["adv-moving-mu-gradient"] not in PASSING and v["adv-moving-mu-bracket"] not in PASSING, v
     if method != "free":
         assert v["adv-moving-mu-gradient"] == "fails" and v["adv-moving-mu-gradient-true"] in PASSING, v
+
+
+# -- V. the new letters of the free algebra (issue 23/20): S, D, C, Dn and R at a moving mu ---------
+
+NEW_LETTERS = "new_letters_probes.py"
+#: true for every S commuting with A, every pair of orthogonal blocks, every resolvent: proved everywhere
+NEW_TRUE = ("adv-refl-commutes-A", "adv-refl-commutes-moving-resolvent", "adv-split-D-plus-C-idempotent",
+            "adv-refl-derivative", "adv-refl-gradient", "adv-split-bracket", "adv-split-conjugated-idempotent",
+            "adv-new-letters-symmetric", "adv-moving-mu-same-twice", "adv-mu-constant-through-XtX")
+#: false at (3,2): S against objects it does not commute with, a factor dropped, mu taken for its value
+NEW_FALSE = ("adv-refl-commutes-A-plus-XXt", "adv-refl-commutes-Phi", "adv-moving-mu-vs-parameter",
+             "adv-refl-derivative-zero", "adv-refl-bracket", "adv-refl-gradient-half", "adv-refl-conjugated-involution",
+             "adv-new-letters-skew-wrong")
+#: true at the fixed-size objects only (S_1, diag(I_2, 0), A diagonal, D + C = I_r), not for every such letter
+NEW_FIXED_ONLY = ("adv-refl-Dn-commute", "adv-Dn-commutes-A", "adv-split-D-minus-C-square")
+
+
+def test_new_letters_free_verdicts():
+    """No rule of S, D, C, Dn, R_m is used beyond its objects: S does not pass A + XXᵀ, Φ, Dn; Dn does not
+    commute with A; D + C = I_r is not assumed; S is constant under s.d / s.gradient / s.bracket."""
+    v = verdicts(NEW_LETTERS, "free")
+    assert all(v[c] == "proved" for c in NEW_TRUE), v
+    assert all(v[c] not in PASSING for c in NEW_FALSE + NEW_FIXED_ONLY + ("adv-split-bracket-mixed",)), v
+    assert v["adv-moving-mu-two-values"] not in PASSING, v      # a second moving parameter: refused
+    # (mu I - A) R(mu) = I with mu written out: mu is not its symbol m (undecided, never wrong)
+    assert v["adv-moving-mu-rayleigh"] not in PASSING and v["adv-moving-mu-trA"] not in PASSING, v
+
+
+@pytest.mark.parametrize("method", ["exact", "modular"])
+def test_new_letters_fixed_size_verdicts(method):
+    v = verdicts(NEW_LETTERS, method, size="3,2", ids=NEW_TRUE + NEW_FIXED_ONLY + NEW_FALSE)
+    assert all(v[c] in PASSING for c in NEW_TRUE + NEW_FIXED_ONLY), v
+    assert all(v[c] == "fails" for c in NEW_FALSE), v
+    v = verdicts(NEW_LETTERS, method, size="4,3", ids=("adv-split-bracket-mixed", "adv-split-bracket"))
+    assert v["adv-split-bracket-mixed"] == "fails" and v["adv-split-bracket"] in PASSING, v
+
+
+def test_two_moving_parameters_fail_at_a_fixed_size():
+    """R(tr PᵀP) = R(tr PᵀDnP) (false; refused by free): modular fails it (exact's symbolic inverse of the
+    difference exceeds its budget at (3,2))."""
+    assert _v(NEW_LETTERS, "modular", "adv-moving-mu-two-values", ids=("adv-moving-mu-two-values",)) == "fails"
+
+
+@pytest.mark.parametrize("method", ["exact", "modular"])
+def test_a_resolvent_at_the_eigenvalue_tr_a_is_not_passed_at_n1(method):
+    """At n = 1, mu = tr A = a_1 is the eigenvalue of A: R(mu) exists at no point of that stated size."""
+    v = verdicts(NEW_LETTERS, method, size="1,1", ids=("adv-moving-mu-trA-commutes",))
+    assert v["adv-moving-mu-trA-commutes"] not in PASSING, v
+
+
+@pytest.mark.xfail(strict=True, reason=(
+    "open: a moving spectral parameter mu (a trace polynomial) becomes a free symbol m with A R = R A = mR - I; "
+    "the rules hold for every m that is not an eigenvalue of A, but mu = tr A IS the eigenvalue a_1 at n = 1 "
+    "(a stated size of admissible(n_max=3)), so R(tr A) exists at no point there; the free method proves "
+    "A R(tr A) = R(tr A) A for every n, r (n = 1 included) while exact and modular at (1,1) answer error "
+    "(singular system)"))
+def test_a_resolvent_at_the_eigenvalue_tr_a_is_not_proved_for_every_n():
+    assert _v(NEW_LETTERS, "free", "adv-moving-mu-trA-commutes") not in PASSING
+
+
+#: mu = tr(Dn A (I - S))/2 is a_1 at every fixed size (Dn = diag(I_2, 0), S = S_1, A = diag(a))
+EIGEN = ("adv-moving-mu-eigenvalue-commutes", "adv-moving-mu-eigenvalue-reflection", "adv-moving-mu-eigenvalue-trace")
+EIGEN_OFF_PROBE = "adv-moving-mu-eigenvalue-off-probe"
+
+
+def test_a_resolvent_at_an_eigenvalue_at_the_probe_size_is_not_proved():
+    """The division probe of the free method (one size, (3,1)) finds R(a_1) singular: error, not proved."""
+    v = verdicts(NEW_LETTERS, "free", ids=EIGEN)
+    assert all(v[c] not in PASSING for c in EIGEN), v
+
+
+@pytest.mark.parametrize("method", ["exact", "modular", "float"])
+def test_a_resolvent_at_an_eigenvalue_is_not_passed_at_a_fixed_size(method):
+    for size in ("3,2", "2,2"):
+        v = verdicts(NEW_LETTERS, method, size=size, ids=EIGEN + (EIGEN_OFF_PROBE,))
+        assert all(v[c] not in PASSING for c in EIGEN + (EIGEN_OFF_PROBE,)), (size, v)
+    assert _v(NEW_LETTERS, method, EIGEN_OFF_PROBE, size="3,1", ids=(EIGEN_OFF_PROBE,)) in PASSING
+
+
+@pytest.mark.xfail(strict=True, reason=(
+    "open: mu = tr(Dn A (I - S))/2 + (n - 1)(n - 2)(1 - tr C)/2 is, at fixed sizes, a_1 (an eigenvalue of A) at "
+    "every listed size but (3,1) and at every size with r >= 2; the free scene makes it a symbol m whose "
+    "resolvent rules hold for m not in spec A (a hypothesis neither checked nor recorded: the certificate says "
+    "parameter m1 and the checker and `stiefelsym check` accept it), and its division probe evaluates (3,1) only, "
+    "where R exists: A R = R A is proved for every n, r while exact, modular and float answer error or "
+    "inconclusive at (2,2) and (3,2)"))
+def test_a_resolvent_at_an_eigenvalue_off_the_probe_size_is_not_proved():
+    assert _v(NEW_LETTERS, "free", EIGEN_OFF_PROBE, ids=(EIGEN_OFF_PROBE,)) not in PASSING
+
+
+def test_tr_sa_is_never_wrong():
+    """tr(SA) = tr(AS) (true): the free scene ranks S last with S A -> A S, so the cyclic reduction of tr(AS)
+    loops and it answers undecided today (an incompleteness, not a hole); never fails, and modular passes it."""
+    assert _v(NEW_LETTERS, "free", "adv-refl-trace-SA", ids=("adv-refl-trace-SA",)) != "fails"
+    assert _v(NEW_LETTERS, "modular", "adv-refl-trace-SA", ids=("adv-refl-trace-SA",)) in PASSING
+
+
+def test_a_grafted_certificate_with_the_reflection_letter_is_rejected_by_check(tmp_path):
+    """The certificate of S A = A S (hypothesis SrefA) grafted onto the record of (D + C)^2 = D + C, a claim with
+    no S: the independent checker accepts it (it proves its own residual, which names S), `stiefelsym check`
+    re-derives the claim's certificate and rejects the record."""
+    run = cli("verify", "adv-refl-commutes-A", "adv-split-D-plus-C-idempotent", "--claims", str(HERE / NEW_LETTERS),
+              "--method", "free", "--format", "json")
+    payload = json.loads(run.stdout)
+    by = {r["claim"]: r for r in payload["results"]}
+    by["adv-split-D-plus-C-idempotent"]["certificate_data"] = by["adv-refl-commutes-A"]["certificate_data"]
+    forged = tmp_path / "forged.json"
+    forged.write_text(json.dumps(payload), encoding="utf-8")
+    checked = cli("check", str(forged))
+    assert checked.returncode == 1 and "REJECTED adv-split-D-plus-C-idempotent" in checked.stdout, checked.stdout
