@@ -151,7 +151,7 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
         return res
     # symbolic coefficients do not raise on a division by an identically zero expression: probe
     # the same claim code at an exact point of a fixed size first
-    why = probe_divisions(claim, func)
+    why = probe_divisions(claim, func, every_size=bool(scene._moving))
     if why:
         res.verdict, res.message = "error", why
         res.seconds = time.perf_counter() - t0
@@ -183,6 +183,11 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
         if name in summary["hypotheses"]:
             entries += (f" (for every n at r = {k}, the only r the claim is stated for: it uses "
                         f"{' + '.join(f'E_{i + 1}E_{i + 1}^T' for i in range(k))} = I_r)")
+    if scene._moving:
+        entries += (" (for every n, r at which the resolvent at the spectral parameter that moves with the point, "
+                    f"{', '.join(str(m) for _, m in scene._moving)} = {'; '.join(_short(q) for q, _ in scene._moving)},"
+                    " exists: its rules A R = R A = mR - I hold where m is not an eigenvalue of A; the division probe"
+                    " found it defined at every size the claim is stated for)")
     res.certificate = (f"cofactor certificate of {entries} ({summary['terms']} terms "
                        f"in the hypotheses {', '.join(summary['hypotheses']) or '(none)'}), re-checked by the "
                        f"independent checker; every entry has normal form 0; rules "
@@ -281,11 +286,22 @@ def same_graph_at_fixed_sizes(claim: Claim, func: Callable) -> str:
     return ""
 
 
-def probe_divisions(claim: Claim, func: Callable) -> str:
-    """The division probe of ``func`` at the first size of the claim with n ≥ 3 (memoized by
-    :func:`~stiefelsym.methods.division_probe`)."""
-    probe_size = next((z for z in claim.sizes if z.n >= 3), None) or list(claim.sizes)[-1]
-    return division_probe(claim, probe_size.n, probe_size.r, func, strict=True)
+def probe_divisions(claim: Claim, func: Callable, every_size: bool = False) -> str:
+    """The division probe of ``func`` at the first size of the claim with n ≥ 3, or with ``every_size`` at
+    every size the claim is stated for (memoized by :func:`~stiefelsym.methods.division_probe`).
+
+    ``every_size`` is for a proof that used a resolvent at a spectral parameter μ moving with the point:
+    its letter's rules A R = R A = mR − I hold where μ is not an eigenvalue of A, which a trace polynomial
+    of the constant letters or of the sizes can be at some sizes only (tr A at n = 1).  The proof is then
+    for every n, r at which R(μ) exists, and the probe shows it exists at every stated size."""
+    sizes = list(claim.sizes)
+    if not every_size:
+        sizes = [next((z for z in sizes if z.n >= 3), None) or sizes[-1]]
+    for z in sizes:
+        why = division_probe(claim, z.n, z.r, func, strict=True)
+        if why:
+            return why
+    return ""
 
 
 def certify_entries(scene, entries) -> dict:

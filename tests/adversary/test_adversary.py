@@ -679,13 +679,9 @@ def test_a_resolvent_at_the_eigenvalue_tr_a_is_not_passed_at_n1(method):
     assert v["adv-moving-mu-trA-commutes"] not in PASSING, v
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "open: a moving spectral parameter mu (a trace polynomial) becomes a free symbol m with A R = R A = mR - I; "
-    "the rules hold for every m that is not an eigenvalue of A, but mu = tr A IS the eigenvalue a_1 at n = 1 "
-    "(a stated size of admissible(n_max=3)), so R(tr A) exists at no point there; the free method proves "
-    "A R(tr A) = R(tr A) A for every n, r (n = 1 included) while exact and modular at (1,1) answer error "
-    "(singular system)"))
 def test_a_resolvent_at_the_eigenvalue_tr_a_is_not_proved_for_every_n():
+    """A proof with a resolvent at a moving spectral parameter holds where that resolvent exists; the free
+    method probes every stated size for it, and mu = tr A is the eigenvalue a_1 at n = 1: error."""
     assert _v(NEW_LETTERS, "free", "adv-moving-mu-trA-commutes") not in PASSING
 
 
@@ -695,7 +691,7 @@ EIGEN_OFF_PROBE = "adv-moving-mu-eigenvalue-off-probe"
 
 
 def test_a_resolvent_at_an_eigenvalue_at_the_probe_size_is_not_proved():
-    """The division probe of the free method (one size, (3,1)) finds R(a_1) singular: error, not proved."""
+    """The division probe of the free method finds R(a_1) singular: error, not proved."""
     v = verdicts(NEW_LETTERS, "free", ids=EIGEN)
     assert all(v[c] not in PASSING for c in EIGEN), v
 
@@ -708,14 +704,9 @@ def test_a_resolvent_at_an_eigenvalue_is_not_passed_at_a_fixed_size(method):
     assert _v(NEW_LETTERS, method, EIGEN_OFF_PROBE, size="3,1", ids=(EIGEN_OFF_PROBE,)) in PASSING
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "open: mu = tr(Dn A (I - S))/2 + (n - 1)(n - 2)(1 - tr C)/2 is, at fixed sizes, a_1 (an eigenvalue of A) at "
-    "every listed size but (3,1) and at every size with r >= 2; the free scene makes it a symbol m whose "
-    "resolvent rules hold for m not in spec A (a hypothesis neither checked nor recorded: the certificate says "
-    "parameter m1 and the checker and `stiefelsym check` accept it), and its division probe evaluates (3,1) only, "
-    "where R exists: A R = R A is proved for every n, r while exact, modular and float answer error or "
-    "inconclusive at (2,2) and (3,2)"))
 def test_a_resolvent_at_an_eigenvalue_off_the_probe_size_is_not_proved():
+    """mu is a_1 at every stated size but (3,1): the probe at every stated size (a proof that used a moving
+    spectral parameter) finds R(mu) singular at (2,2): error, not proved."""
     assert _v(NEW_LETTERS, "free", EIGEN_OFF_PROBE, ids=(EIGEN_OFF_PROBE,)) not in PASSING
 
 
