@@ -134,7 +134,7 @@ class Context:
         self.letters = dict(FIXED_LETTERS)
         self.resolvents: dict[str, Any] = {}
         self.operators: dict[str, tuple[str, tuple]] = {}   # name -> (operator, argument path)
-        self.canon: dict[tuple, tuple] = {}   # (word, *traces) -> (sign, canonical key) (see _add)
+        self.canon: dict[tuple, tuple] = {}   # (word, *traces) or a trace -> (sign, canonical form) (_add)
         for name, d in declared.items():
             if name in self.letters:
                 raise Rejected(f"the letter {name} is declared twice or redeclares a fixed letter")
@@ -364,9 +364,10 @@ def _add(poly: dict, c: Any, traces: list, word: tuple, ctx: Context) -> None:
         keys, (s, w) = [], ctx.canon_word(word)
         pieces, w = _scalar_pieces(w, ctx, False)
         for t in pieces + [p for t in traces for p in _scalar_pieces(tuple(t), ctx, True)[0]]:
-            s2, t = ctx.canon_word(tuple(t))
-            s3, rep = ctx.cyclic(t)
-            s, keys = s * s2 * s3, keys + [rep]
+            if t not in ctx.canon:   # tr(t): its sign and representative, once a check as well
+                s2, t2 = ctx.canon_word(t)
+                ctx.canon[t] = (s2 * (cy := ctx.cyclic(t2))[0], cy[1])
+            s, keys = s * ctx.canon[t][0], keys + [ctx.canon[t][1]]
         hit = ctx.canon[memo] = (s, (tuple(sorted(keys)), w) if s else None)
     s, key = hit
     if s:
