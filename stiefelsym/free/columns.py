@@ -139,8 +139,24 @@ def _scalar_places(w: tuple, cyclic: bool) -> list[int]:
     return places
 
 
+#: the extractions of single terms, (traces, word) -> (the term, (sign, traces, word)) (letters by identity,
+#: as in _TERMS): the extraction only cuts words and multiplies the coefficient by ±1 or 0
+_EXTRACTS: dict = {}
+
+
 def _extract(c: Any, tm: tuple, w: tuple) -> tuple[Any, tuple, tuple]:
     """c·T·w with every 1×1 piece of w and of the traces made a trace of its own (c = 0: it vanishes)."""
+    hit = _EXTRACTS.get((tm, w))
+    if hit is None or not all(a is b for a, b in zip(_letters_of(hit[0]), _letters_of((tm, w)))):
+        if len(_EXTRACTS) >= _TERMS_MAX:
+            _EXTRACTS.clear()
+        hit = _EXTRACTS[(tm, w)] = ((tm, w), _extracted(tm, w))
+    s, out, rest = hit[1]
+    return (se.Integer(0), (), rest) if s == 0 else (c if s == 1 else -c, out, rest)
+
+
+def _extracted(tm: tuple, w: tuple) -> tuple[int, tuple, tuple]:
+    """(s, traces, word) of :func:`_extract` for the coefficient 1."""
     pieces: list[tuple] = []
     ks = _scalar_places(w, False)
     if len(ks) > 1:
@@ -155,13 +171,14 @@ def _extract(c: Any, tm: tuple, w: tuple) -> tuple[Any, tuple, tuple]:
         else:
             pieces.append(cyc)
     out: tuple = ()
+    sign = 1
     for piece in pieces:
         s, rep = cycle_rep(piece)
         if s == 0:
-            return se.Integer(0), (), w
-        c = c * s
+            return 0, (), w
+        sign *= s
         out = merge_traces(out, (rep,))
-    return c, out, w
+    return sign, out, w
 
 
 #: canonical forms of single terms, (row, col, r, traces, word) -> (the term, [(sign, key), ...]): a term's
