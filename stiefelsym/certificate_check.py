@@ -134,6 +134,7 @@ class Context:
         self.letters = dict(FIXED_LETTERS)
         self.resolvents: dict[str, Any] = {}
         self.operators: dict[str, tuple[str, tuple]] = {}   # name -> (operator, argument path)
+        self.canon: dict[tuple, tuple] = {}   # (word, *traces) or a trace -> (sign, canonical form) (_add)
         for name, d in declared.items():
             if name in self.letters:
                 raise Rejected(f"the letter {name} is declared twice or redeclares a fixed letter")
@@ -357,18 +358,20 @@ def _scalar_pieces(word: tuple, ctx: Context, closed: bool) -> tuple[list, tuple
 
 
 def _add(poly: dict, c: Any, traces: list, word: tuple, ctx: Context) -> None:
-    """poly += c · Π tr(traces) · word, traces in canonical form (1×1 pieces as traces of their own)."""
-    keys, (s, word) = [], ctx.canon_word(word)
-    pieces, word = _scalar_pieces(word, ctx, False)
-    traces = pieces + [p for t in traces for p in _scalar_pieces(tuple(t), ctx, True)[0]]
-    for t in traces:
-        s2, t = ctx.canon_word(tuple(t))
-        s3, rep = ctx.cyclic(t)
-        s, keys = s * s2 * s3, keys + [rep]
-    if s == 0:
-        return
-    key = (tuple(sorted(keys)), word)
-    poly[key] = poly[key] + c * s if key in poly else c * s
+    """poly += c · Π tr(traces) · word, traces in canonical form (1×1 pieces: traces of their own; once a check)."""
+    hit = ctx.canon.get(memo := (word, *map(tuple, traces)))
+    if hit is None:
+        keys, (s, w) = [], ctx.canon_word(word)
+        pieces, w = _scalar_pieces(w, ctx, False)
+        for t in pieces + [p for t in traces for p in _scalar_pieces(tuple(t), ctx, True)[0]]:
+            if t not in ctx.canon:   # tr(t): its sign and representative, once a check as well
+                s2, t2 = ctx.canon_word(t)
+                ctx.canon[t] = (s2 * (cy := ctx.cyclic(t2))[0], cy[1])
+            s, keys = s * ctx.canon[t][0], keys + [ctx.canon[t][1]]
+        hit = ctx.canon[memo] = (s, (tuple(sorted(keys)), w) if s else None)
+    s, key = hit
+    if s:
+        poly[key] = poly[key] + c * s if key in poly else c * s
 
 
 def _words(x: Any) -> tuple:
@@ -386,7 +389,6 @@ def check_entry(entry: dict, ctx: Context) -> int:
     row, col = entry["type"]
     if row not in OBJECTS + (SCALAR,) or col not in OBJECTS + (SCALAR,):
         raise Rejected(f"the entry's type {row}x{col} is not a pair of objects")
-    dims = _DIMS
     target: dict = {}
     for t in entry["residual"]:
         word, traces = _words(t["word"]), [_words(c) for c in t["traces"]]
@@ -421,14 +423,12 @@ def check_entry(entry: dict, ctx: Context) -> int:
                     if cw:
                         _add(total, c * hc, traces + [cw], word, ctx)
                     else:
-                        _add(total, c * hc * dims[start], traces, word, ctx)
+                        _add(total, c * hc * _DIMS[start], traces, word, ctx)
         except Rejected as exc:
             raise Rejected(f"term {k + 1}: {exc}") from None
     for key in set(target) | set(total):
-        a, b = target.get(key), total.get(key)
-        if a is not None and b is not None and a == b:   # the same expression: the difference is 0
-            continue
-        if not is_zero(target.get(key, 0) - total.get(key, 0)):
+        a, b = target.get(key, 0), total.get(key, 0)
+        if a != b and not is_zero(a - b):   # (the same expression: the difference is 0)
             traces, word = key
             shown = "*".join(f"tr({'*'.join(c)})" for c in traces) + ("*" if traces and word else "") \
                 + ("*".join(word) if word else ("" if traces else "I"))

@@ -4,7 +4,7 @@ from __future__ import annotations
 import json
 import os
 import tempfile
-from dataclasses import MISSING, asdict, dataclass, field, fields
+from dataclasses import MISSING, asdict, dataclass, field, fields, replace
 from pathlib import Path
 from typing import Any, Iterable
 
@@ -112,7 +112,11 @@ class Result:
     # stiefelsym.notebook, which renders with the report's code (this module sits below the report)
 
     def to_json(self) -> dict[str, Any]:
-        d = asdict(self)
+        """The record as JSON data: a deep copy of every field but the certificates, which are JSON data
+        already (lists, dicts, strings, numbers, booleans; the bulk of a dimension-free pass) and are
+        handed out as they are, to be read, not changed."""
+        d = asdict(replace(self, certificate_data=None))
+        d["certificate_data"] = self.certificate_data
         return d
 
     @classmethod

@@ -79,6 +79,17 @@ def column_hypotheses() -> dict[str, Hypothesis]:
     return out
 
 
+#: E₁E₁ᵀ + … + E_rE_rᵀ − I_r by r, built once (the hypothesis every resolution of a place in ℝʳ uses)
+_COMPLETE_HYPS: dict[int, Hypothesis] = {}
+
+
+def _complete(r: int) -> Hypothesis:
+    h = _COMPLETE_HYPS.get(r)
+    if h is None:
+        h = _COMPLETE_HYPS[r] = column_hypotheses()[COMPLETE[r]]
+    return h
+
+
 def _open_at(w: tuple, k: int, row: str) -> bool:
     """Whether place k of the word w (before w[k]) is in ℝʳ with no column next to it."""
     t = w[k].row if k < len(w) else (w[-1].col if w else row)
@@ -128,8 +139,24 @@ def _scalar_places(w: tuple, cyclic: bool) -> list[int]:
     return places
 
 
+#: the extractions of single terms, (traces, word) -> (the term, (sign, traces, word)) (letters by identity,
+#: as in _TERMS): the extraction only cuts words and multiplies the coefficient by ±1 or 0
+_EXTRACTS: dict = {}
+
+
 def _extract(c: Any, tm: tuple, w: tuple) -> tuple[Any, tuple, tuple]:
     """c·T·w with every 1×1 piece of w and of the traces made a trace of its own (c = 0: it vanishes)."""
+    hit = _EXTRACTS.get((tm, w))
+    if hit is None or not all(a is b for a, b in zip(_letters_of(hit[0]), _letters_of((tm, w)))):
+        if len(_EXTRACTS) >= _TERMS_MAX:
+            _EXTRACTS.clear()
+        hit = _EXTRACTS[(tm, w)] = ((tm, w), _extracted(tm, w))
+    s, out, rest = hit[1]
+    return (se.Integer(0), (), rest) if s == 0 else (c if s == 1 else -c, out, rest)
+
+
+def _extracted(tm: tuple, w: tuple) -> tuple[int, tuple, tuple]:
+    """(s, traces, word) of :func:`_extract` for the coefficient 1."""
     pieces: list[tuple] = []
     ks = _scalar_places(w, False)
     if len(ks) > 1:
@@ -144,13 +171,14 @@ def _extract(c: Any, tm: tuple, w: tuple) -> tuple[Any, tuple, tuple]:
         else:
             pieces.append(cyc)
     out: tuple = ()
+    sign = 1
     for piece in pieces:
         s, rep = cycle_rep(piece)
         if s == 0:
-            return se.Integer(0), (), w
-        c = c * s
+            return 0, (), w
+        sign *= s
         out = merge_traces(out, (rep,))
-    return c, out, w
+    return sign, out, w
 
 
 #: canonical forms of single terms, (row, col, r, traces, word) -> (the term, [(sign, key), ...]): a term's
@@ -171,7 +199,7 @@ def _term_form(row: str, col: str, r: int, tm: tuple, w: tuple) -> list[tuple[in
     if hit is not None and all(a is b for a, b in zip(_letters_of(hit[0]), _letters_of((tm, w)))):
         return hit[1]
     one = se.Integer(1)
-    terms = _resolve(NCPoly({(tm, w): one}, row, col), column_hypotheses()[COMPLETE[r]], [], r) if r else \
+    terms = _resolve(NCPoly({(tm, w): one}, row, col), _complete(r), [], r) if r else \
         [(one, tm, w)]
     form: list[tuple[int, tuple]] = []
     for c, tm2, w2 in terms:
@@ -201,7 +229,7 @@ def canonical(p: NCPoly, r: int) -> tuple[NCPoly, list[CertTerm]]:
     a trace; r = 0: only the latter), and p − q = Σ terms up to the identity "a 1×1 matrix is its own trace"."""
     cert: list[CertTerm] = []
     out: dict = {}
-    terms = _resolve(p, column_hypotheses()[COMPLETE[r]], cert, r) if r else \
+    terms = _resolve(p, _complete(r), cert, r) if r else \
         [(c, tm, w) for (tm, w), c in p.terms.items()]   # r = 0: only the 1×1 pieces (the last column)
     for c, tm, w in terms:
         c, tm, w = _extract(c, tm, w)

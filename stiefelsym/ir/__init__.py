@@ -53,9 +53,11 @@ def compile_claim(func: Callable, n: int | None, r: int | None, constraints: tup
     raise _fresh(g)
 
 
-def compile_at_size(func: Callable, n: int, r: int, constraints: tuple[str, Callable]) -> Graph:
-    """The graph traced at (n, r) itself (to compare with the graph of symbolic sizes)."""
-    g = _compile(func, n, r, constraints)
+def compile_at_size(func: Callable, n: int, r: int, constraints: tuple[str, Callable], twice: bool = True) -> Graph:
+    """The graph traced at (n, r) itself (to compare with the graph of symbolic sizes); traced once
+    only (``twice=False``) where it is only compared with the graph of symbolic sizes, which was
+    traced twice."""
+    g = _compile(func, n, r, constraints, twice=twice)
     if isinstance(g, Graph):
         return g
     raise _fresh(g)
@@ -65,11 +67,14 @@ def _compile(func: Callable, n: int | None, r: int | None, constraints: tuple[st
              twice: bool = True) -> Any:
     """The graph, or the exception that refused it (both cached per process); traced twice and
     compared, or once where it is only compared with the graph of symbolic sizes (which was)."""
-    key = (id(func), n, r, constraints[0])     # by identity: a callable's own __eq__ is never asked
-    hit = _GRAPHS.get(key)
-    if hit is not None and hit[0] is func:
-        _GRAPHS.move_to_end(key)
-        return hit[1]
+    # by identity: a callable's own __eq__ is never asked; a graph traced once is kept apart from one
+    # traced twice (a trace compared with itself is no determinism check)
+    key = (id(func), n, r, constraints[0], twice)
+    for k in (key,) if twice else (key[:-1] + (True,), key):
+        hit = _GRAPHS.get(k)
+        if hit is not None and hit[0] is func:
+            _GRAPHS.move_to_end(k)
+            return hit[1]
     try:
         first = _clean(trace, func, n, r, constraints)
         _check_refusals(first)

@@ -80,21 +80,21 @@ def _encode(a: Any) -> str:
     claim did the same thing."""
     t = type(a)
     if t is Ref:
-        return f"%{a.i}"
+        return f"%{a[0]}"
+    if t is tuple:
+        return "(" + ",".join(map(_encode, a)) + ")"
+    if t is str:
+        return repr(a)
     if t is Size:
         return f"<{a.k}{a.d}>"
     if t is Named:
         return f"@{a.qualname!r}"     # quoted: a name cannot pose as more of the line
-    if t is tuple:
-        return "(" + ",".join(_encode(x) for x in a) + ")"
     if t is Fraction:
         return f"{a.numerator}/{a.denominator}"
     if t is bool or a is None:
         return repr(a)
     if t is int:
         return str(a)
-    if t is str:
-        return repr(a)
     raise TypeError(f"not an IR argument: {type(a).__name__}")
 
 
