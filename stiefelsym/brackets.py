@@ -413,24 +413,36 @@ def _check_affine(s: Any, form: Callable[[Any, Mat], Scalar], space: Space, base
     parameters are the engine's own (no claim can name them; drawn without changing the draws that
     follow).  Its homogeneous parts of degree k >= 2 in w vanish with it, so the form is affine."""
     field = getattr(s, "_field", None)
-    name = getattr(field, "name", "")
-    while name.endswith(")") and name.startswith(("dual(", "reverse(")):  # along a flow: both parts checked;
-        name = name[name.index("(") + 1:-1]                                 # on a reverse tape: the value
-    if not any(name == f or name.startswith(f) for f in _AFFINE_CHECKED):
+    if not _field_in(s, _AFFINE_CHECKED):
         return
-    m = space.size(s)
-    rng = getattr(s, "_rng", None)
-    state = rng.getstate() if rng is not None else None
-    try:
-        w = space.project(s._general_params(f"form_gradient:w:{space.name}", m, m, (space.index, space.index)))
-    finally:
-        if state is not None:
-            rng.setstate(state)
+    w = _engine_element(s, space, "form_gradient")
     residual = form(s, w) - base - pairing(s, G, w)
     if not field.is_zero(residual):
         raise ValueError("form_gradient: the form is not affine on "
                          f"{space.name} (its gradient is not the sum over a basis; refused, as the "
                          "dimension-free scene refuses it)")
+
+
+def _field_in(s: Any, fields: tuple[str, ...]) -> bool:
+    """Whether the scene's number system (under the dual numbers of a flow, or on a reverse tape: the
+    field of the values) is one of ``fields`` (names or their prefixes)."""
+    name = getattr(getattr(s, "_field", None), "name", "")
+    while name.endswith(")") and name.startswith(("dual(", "reverse(")):
+        name = name[name.index("(") + 1:-1]
+    return any(name == f or name.startswith(f) for f in fields)
+
+
+def _engine_element(s: Any, space: Space, tag: str) -> Mat:
+    """A generic element of the space whose parameters are the engine's own (named by ``tag``, which no
+    claim can name), drawn without changing the draws that follow."""
+    m = space.size(s)
+    rng = getattr(s, "_rng", None)
+    state = rng.getstate() if rng is not None else None
+    try:
+        return space.project(s._general_params(f"{tag}:w:{space.name}", m, m, (space.index, space.index)))
+    finally:
+        if state is not None:
+            rng.setstate(state)
 
 
 _affine_form_gradient = form_gradient
@@ -480,20 +492,10 @@ def _form_degree(s: Any, form: Callable[[Any, Mat], Scalar], space: Space, point
     """The degree in y of the polynomial form (see :func:`polynomial_gradient`): the least d whose
     (d+1)-th finite difference along a generic element of the space vanishes at ``point``."""
     from math import comb
-    field = getattr(s, "_field", None)
-    name = getattr(field, "name", "")
-    while name.endswith(")") and name.startswith(("dual(", "reverse(")):
-        name = name[name.index("(") + 1:-1]
-    if not any(name == f or name.startswith(f) for f in _DEGREE_DECIDED):
+    if not _field_in(s, _DEGREE_DECIDED):
         return MAX_FORM_DEGREE          # markers: the highest degree's interpolation bounds the others'
-    m = space.size(s)
-    rng = getattr(s, "_rng", None)
-    state = rng.getstate() if rng is not None else None
-    try:
-        w = space.project(s._general_params(f"polynomial_gradient:w:{space.name}", m, m, (space.index, space.index)))
-    finally:
-        if state is not None:
-            rng.setstate(state)
+    field = s._field
+    w = _engine_element(s, space, "polynomial_gradient")
     values = [form(s, point)]
     for d in range(MAX_FORM_DEGREE + 1):
         values.append(form(s, point + w * (d + 1)))

@@ -16,3 +16,15 @@ def random_word(rng: random.Random, letters, row: str, col: str, length: int) ->
     if t != col:
         out.append(X if t == "n" else Xt)
     return tuple(out)
+
+
+def forged(data: dict, renames: dict[str, str]) -> tuple[dict, bool]:
+    """A deep copy of certificate data with the hypotheses of its terms renamed (``renames``: old -> new),
+    and whether any term was renamed: a forged certificate the checker must reject."""
+    import copy
+    out, changed = copy.deepcopy(data), False
+    for e in out["entries"]:
+        for t in e["terms"]:
+            if t["hyp"] in renames:
+                t["hyp"], changed = renames[t["hyp"]], True
+    return out, changed

@@ -4,7 +4,6 @@ are then proved for every n, r and every such pair of blocks (at fixed sizes: r�
 Clebsch–Perelomov–Bogoyavlenski bodies on T*SO(n) for every splitting ℝⁿ = ℝʳ ⊕ ℝⁿ⁻ʳ at once; corrupted copies of
 them are not (and fail at a fixed size), D + C = I_r is not assumed, and the checker rejects a forged
 certificate."""
-import copy
 
 import pytest
 
@@ -15,6 +14,7 @@ from stiefelsym.free_method import run_free
 from stiefelsym.methods import run_exact
 from stiefelsym.proofs import sec3_geodesic_flows as s3
 from stiefelsym.proofs import sec6_compatible_brackets as s6
+from free_words import forged
 
 CATALOG = load_catalog()
 SPLIT_HYPS = {"DsplitDsplit", "CsplitCsplit", "DsplitCsplit", "CsplitDsplit"}
@@ -90,14 +90,8 @@ def test_the_blocks_are_not_assumed_to_fill_r():
 
 
 def test_the_checker_rejects_a_forged_block_hypothesis():
-    data = copy.deepcopy(_proved(run_free(CATALOG.get("block-jensen-hamiltonian"))).certificate_data)
-    changed = False
-    for e in data["entries"]:
-        for t in e["terms"]:
-            if t["hyp"] == "DsplitCsplit":
-                t["hyp"], changed = "DsplitDsplit", True
-            elif t["hyp"] == "CsplitCsplit":
-                t["hyp"], changed = "CsplitDsplit", True
+    data, changed = forged(_proved(run_free(CATALOG.get("block-jensen-hamiltonian"))).certificate_data,
+                           {"DsplitCsplit": "DsplitDsplit", "CsplitCsplit": "CsplitDsplit"})
     assert changed
     assert not check_certificate(data).accepted
 
@@ -120,9 +114,5 @@ def test_an_eigenspace_claim_is_proved_for_every_projector_and_not_its_rank():
     rank_two = lambda s: {"tr D - 2": s.tr(twisted.eigenspace_projector(s)) - 2}   # noqa: E731
     assert run_free(c, rank_two).verdict == "undecided"            # true at fixed sizes only (D = diag(I_2, 0))
     assert run_exact(c, 3, 2, 0, func=rank_two).verdict == "proved"
-    data = copy.deepcopy(res.certificate_data)
-    for e in data["entries"]:
-        for t in e["terms"]:
-            if t["hyp"] == "DnDn":
-                t["hyp"] = "DsplitDsplit"
+    data, _ = forged(res.certificate_data, {"DnDn": "DsplitDsplit"})
     assert not check_certificate(data).accepted
