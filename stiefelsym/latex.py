@@ -250,3 +250,39 @@ def tex_display(statement: str) -> str:
             + body + "\n$}\\end{center}\n")
 
 
+
+
+#: a script in ASCII notation in plain words: ^{...} or _{...} (one level of nested braces), ^ and digits
+#: (an optional minus), ^⊥, or _ and one letter or digit that no letter or digit follows (I_n, F_Ω; not
+#: the underscore inside a name such as N0_XP2)
+_ASCII_SCRIPT = re.compile(r"(\^|_)(\{(?:[^{}]|\{[^{}]*\})*\}|-?\d+(?![^\W_])|⊥|[^\W_](?![^\W_]))")
+
+
+def tex_words(text: str) -> str:
+    """Plain words that write scripts in ASCII (I_n, (A + λI_n)^{-1}, (e_1 ^ p_1)_{I_2}^2, as the
+    registered words of a correction do) to LaTeX text: each script set as one, a spaced ^ as the wedge,
+    ``$...$`` as mathematics (:func:`tex_text`); everything else as :func:`tex_escape` sets it."""
+    out = []
+    for is_math, seg in split_math(str(text)):
+        if is_math and math_ok(seg):
+            out.append("$" + tex_math(seg) + "$")
+        else:
+            out.append(_ascii_scripts(f"${seg}$" if is_math else seg))
+    return "".join(out)
+
+
+def _ascii_scripts(text: str) -> str:
+    text = text.replace(" ^ ", " ∧ ")
+    out, at = [], 0
+    for m in _ASCII_SCRIPT.finditer(text):
+        if m.start() == 0 or text[m.start() - 1] == " ":
+            continue                      # a script needs a base before it
+        body = m.group(2)
+        if body.startswith("{"):
+            body = body[1:-1]
+        body = body.replace("-", "−")     # a script is mathematics: n-r, -1 with minus signs
+        out.append(tex_escape(text[at:m.start()]))
+        out.append(r"\ensuremath{" + m.group(1) + "{" + _ascii_scripts(body) + "}}")
+        at = m.end()
+    out.append(tex_escape(text[at:]))
+    return "".join(out)

@@ -20,7 +20,7 @@ from collections import Counter
 from typing import Any, Callable, Iterable, Sequence
 
 from . import paperref, sizerules
-from .latex import unicode_name, math_ok, split_math, tex_balanced, tex_display, tex_escape, tex_text
+from .latex import unicode_name, math_ok, split_math, tex_balanced, tex_display, tex_escape, tex_text, tex_words
 from .ir import notation
 from .ir.notation import changes_text as change_text
 from .results import PASSING, VERDICTS, Result
@@ -879,7 +879,7 @@ def _md_with_change(c: ClaimResults, variant: str) -> str:
 
 def _tex_with_change(c: ClaimResults, variant: str) -> str:
     change = _tex_change(c.change_of(variant))
-    return (f"{change} {{\\small (registered as: {tex_text(variant)})}}" if change else tex_text(variant))
+    return (f"{change} {{\\small (registered as: {tex_words(variant)})}}" if change else tex_words(variant))
 
 
 def _md_corrections(c: ClaimResults) -> list[str]:
@@ -1026,7 +1026,7 @@ def render_latex(results: Sequence[Result], meta: dict[str, Any] | None = None, 
     if errata:
         out += [tex_escape("Fails as printed:")]
         out += _tex_items([r"\texttt{" + tex_escape(c.id) + "} " + tex_labels(c.paper)
-                           + ("; correction: " + tex_text(next(iter(c.variants))) if c.variants else "")
+                           + ("; correction: " + tex_words(next(iter(c.variants))) if c.variants else "")
                            for c in errata])
     if not detail:
         out += [tex_escape("Every run, residual and certificate is in the companion document "

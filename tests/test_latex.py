@@ -79,3 +79,13 @@ def test_check_names_read_as_mathematics():
     assert unicode_name("dPsi/dt") == "dΨ/dt" and unicode_name("H_kappa") == "H_κ"
     assert unicode_name("derivative along the printed flow") == "derivative along the printed flow"
     assert tex_text("Ẋ") == r"\.{X}"
+
+
+def test_the_registered_words_of_a_correction_set_their_scripts():
+    """(A + λI_n)^{-1} in the words of a correction is a subscript and a superscript in the PDF, not the
+    characters ^{-1}; a spaced ^ is the wedge; an underscore inside a name stays one."""
+    from stiefelsym.latex import tex_words
+    tex = tex_words("(A + λI_n)^{-1} and (e_1 ^ p_1)_{I_2}^2, N0_XP2")
+    assert r"I\ensuremath{_{n}}" in tex and r"\ensuremath{^{\ensuremath{-}1}}" in tex
+    assert r"\wedge" in tex and r"\ensuremath{_{I\ensuremath{_{2}}}}" in tex
+    assert r"N0\_XP2" in tex and "\\^{}" not in tex
