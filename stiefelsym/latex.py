@@ -220,14 +220,16 @@ def unicode_name(name: str) -> str:
     return re.sub(r"\[(\d+),(\d+)\]$", r", entry (\1,\2)", name)
 
 
-def tex_text(text: str) -> str:
-    """Running text that may contain ``$...$`` math (docstrings)."""
+def tex_text(text: str, plain: Any = None) -> str:
+    """Running text that may contain ``$...$`` math (docstrings); the text around the math set by
+    ``plain`` (default :func:`tex_escape`)."""
+    plain = plain or tex_escape
     out = []
-    for is_math, seg in split_math(text):
+    for is_math, seg in split_math(str(text)):
         if is_math and math_ok(seg):
             out.append("$" + tex_math(seg) + "$")
         else:
-            out.append(tex_escape(f"${seg}$" if is_math else seg))
+            out.append(plain(f"${seg}$" if is_math else seg))
     return "".join(out)
 
 
@@ -261,14 +263,8 @@ _ASCII_SCRIPT = re.compile(r"(\^|_)(\{(?:[^{}]|\{[^{}]*\})*\}|-?\d+(?![^\W_])|âŠ
 def tex_words(text: str) -> str:
     """Plain words that write scripts in ASCII (I_n, (A + Î»I_n)^{-1}, (e_1 ^ p_1)_{I_2}^2, as the
     registered words of a correction do) to LaTeX text: each script set as one, a spaced ^ as the wedge,
-    ``$...$`` as mathematics (:func:`tex_text`); everything else as :func:`tex_escape` sets it."""
-    out = []
-    for is_math, seg in split_math(str(text)):
-        if is_math and math_ok(seg):
-            out.append("$" + tex_math(seg) + "$")
-        else:
-            out.append(_ascii_scripts(f"${seg}$" if is_math else seg))
-    return "".join(out)
+    ``$...$`` as mathematics; everything else as :func:`tex_escape` sets it."""
+    return tex_text(text, _ascii_scripts)
 
 
 def _ascii_scripts(text: str) -> str:
