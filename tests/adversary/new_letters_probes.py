@@ -254,3 +254,13 @@ def moving_two_values(s):
 def mu_constant(s):
     """True control: tr X^T X = r does not move; R(r) is constant along a flow."""
     return {"r": s.d(lambda t: t.resolvent(t.tr(t.X.T @ t.X)), s.dirac_flow(_H))}
+
+
+@claim("adv-moving-mu-eigenvalue-beyond", kind="id", sizes=admissible(n_max=4),
+       statement="A R(mu) = R(mu) A, mu = tr(Dn A (I - S))/2 + (tr I_n - 7) tr(X^T X)")
+def moving_eigenvalue_beyond_the_stated_sizes(s):
+    """mu is a_1 (an eigenvalue of A) at n = 7 only, a size the claim is not stated for: there R(mu) does not
+    exist, and the statement holds wherever it does."""
+    mu = s.tr(twisted.eigenspace_projector(s) @ s.A @ (s.In - _S(s))) / 2 + (s.tr(s.In) - 7) * s.tr(s.X.T @ s.X)
+    R = s.resolvent(mu)
+    return {"AR - RA": s.A @ R - R @ s.A}

@@ -730,3 +730,16 @@ def test_a_grafted_certificate_with_the_reflection_letter_is_rejected_by_check(t
     forged.write_text(json.dumps(payload), encoding="utf-8")
     checked = cli("check", str(forged))
     assert checked.returncode == 1 and "REJECTED adv-split-D-plus-C-idempotent" in checked.stdout, checked.stdout
+
+
+def test_a_proof_at_a_moving_mu_says_where_it_holds(tmp_path):
+    """mu = a_1 at n = 7 only, beyond the stated sizes: the free proof is for every n, r at which R(mu)
+    exists, and its certificate says so; at n = 7 no fixed-size method passes the claim."""
+    cid = "adv-moving-mu-eigenvalue-beyond"
+    run = cli("verify", cid, "--claims", str(HERE / NEW_LETTERS), "--method", "free", "--report-dir", str(tmp_path))
+    import json
+    (rec,) = json.loads((tmp_path / "results.json").read_text())["results"]
+    assert run.returncode == 0 and rec["verdict"] == "proved", run.stdout
+    assert "for every n, r at which the resolvent at the spectral parameter that moves with the point" \
+        in rec["certificate"], rec["certificate"]
+    assert _v(NEW_LETTERS, "modular", cid, size="7,2", ids=(cid,)) not in PASSING
