@@ -968,8 +968,13 @@ def _source(c: Claim) -> str:
 @click.option("--report-dir", type=str, callback=_report_dir, metavar="DIR",
               help="Where to write verification.md and verification.tex (default: the results "
                    "file's directory).")
-def report(results_file: Path | None, report_dir: Path | None) -> None:
-    """Re-render the Markdown and LaTeX reports from a JSON results file."""
+@click.option("--claims", "claims_files", multiple=True, type=click.Path(),
+              help="claims files the run used (default: those the results file names)")
+def report(results_file: Path | None, report_dir: Path | None, claims_files: tuple[str, ...] = ()) -> None:
+    """Re-render the Markdown and LaTeX reports from a JSON results file.  Every record is bound to its
+    registered claim (the catalog's, or the claims files the run named): a record whose claim is not
+    found, or whose statement, title or labels are not the claim's, is refused, and so is a proof for
+    every n, r without a valid certificate (``stiefelsym check`` also runs every record again)."""
     source = results_file or (report_dir or DEFAULT_REPORT_DIR) / "results.json"
     if not source.is_file():
         raise InputError(f"results file not found: {source} (run `stiefelsym verify` first)")
@@ -977,11 +982,22 @@ def report(results_file: Path | None, report_dir: Path | None) -> None:
         meta, results = load_results(source)
     except (OSError, UnicodeDecodeError, ValueError, KeyError, TypeError, AttributeError) as exc:
         raise InputError(f"{source} is not a stiefelsym results file: {_one_line(exc)}") from None
-    from .integrity import certificate_problems
+    from .integrity import certificate_problems, claim_field_edits
     problems = certificate_problems(results)
     if problems:
         raise InputError(f"{source}: refused, {len(problems)} record(s) without a valid certificate: {problems[0]} "
                          "(`stiefelsym check` re-checks every record)")
+    registry, _ = _registry(list(claims_files) or list((meta or {}).get("claims_files") or []) or None)
+    for r in results:
+        cid = getattr(r, "claim", None)
+        if cid not in registry:
+            raise InputError(f"{source}: refused, record of {cid!r}: no such claim in the catalog or the claims "
+                             "files the run named (pass them with --claims)")
+        edits = claim_field_edits(r.to_json(), registry.get(cid))
+        if edits:
+            raise InputError(f"{source}: refused, record of {cid!r}: its {', '.join(edits)} "
+                             f"{'is' if len(edits) == 1 else 'are'} not the claim's (`stiefelsym check` re-checks "
+                             "every record)")
     target = report_dir or source.parent
     _check_report_dir(target)
     mutation = _mutation(source.parent)

@@ -17,16 +17,24 @@ from .certificate_check import check_certificate
 from .claims import Registry, Size
 
 
+def proof_for_every_size(get: Callable[[str], Any]) -> bool:
+    """Whether a record states a proof for every n, r at once: a ``proved`` of the dimension-free method,
+    or any ``proved`` with no size (whatever method the record names: ``auto`` reports the method it
+    chose, and a record's method is not evidence)."""
+    return get("verdict") == "proved" and (get("method") == "free" or get("n") is None or get("r") is None)
+
+
 def certificate_problems(records: Iterable[Any]) -> list[str]:
-    """Every dimension-free proof whose certificate is missing or rejected by the checker."""
+    """Every proof for all n, r (:func:`proof_for_every_size`) whose certificate is missing or rejected
+    by the checker."""
     out = []
     for r in records:
         get = r.get if isinstance(r, dict) else (lambda k, r=r: getattr(r, k, None))
-        if get("method") != "free" or get("verdict") != "proved":
+        if not proof_for_every_size(get):
             continue
         data = get("certificate_data")
         if data is None:
-            out.append(f"{get('claim')}: a dimension-free proof without a certificate")
+            out.append(f"{get('claim')}: a proof for every n, r without a certificate")
             continue
         rep = check_certificate(data)
         if not rep.accepted:
@@ -42,6 +50,19 @@ def _canonical(x: Any) -> str:
 #: messages and the rerun line are left out
 EVIDENCE = ("expected", "seed", "reductions", "certificate", "residual", "false_pass_bound", "checks", "witness",
             "erratum", "certificate_data", "derivation")
+
+
+#: the fields of a record that state what the claim is (its labels and words): a run copies them from
+#: the registered claim, and a record must carry them unchanged
+CLAIM_FIELDS = ("paper", "section", "kind", "title", "statement")
+
+
+def claim_field_edits(record: dict, claim: Any) -> list[str]:
+    """The fields of ``CLAIM_FIELDS`` in which a record differs from its registered claim (a record whose
+    statement or labels were edited names another claim than the one whose graph was verified)."""
+    own = {"paper": list(claim.paper), "section": claim.section, "kind": claim.kind, "title": claim.title,
+           "statement": claim.statement}
+    return [k for k in CLAIM_FIELDS if _canonical(record.get(k)) != _canonical(own[k])]
 
 
 def _evidence_edits(record: dict, again: dict) -> list[str]:
@@ -124,6 +145,12 @@ def check_results(records: list[dict], registry: Registry, echo: Callable[[str],
             bad += 1
             continue
         claim = registry.get(cid)
+        edits = claim_field_edits(r, claim)
+        if edits:
+            echo(f"REJECTED {where}: the record's {', '.join(edits)} {'is' if len(edits) == 1 else 'are'} not "
+                 "the claim's (the words of a record are its claim's, not the file's)")
+            bad += 1
+            continue
         size = None if n is None else Size(n, rr)
         func = None
         if r.get("variant"):
