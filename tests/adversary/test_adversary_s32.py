@@ -204,3 +204,38 @@ def test_report_does_not_render_a_forged_statement(tmp_path):
     r = cli("report", "--results", str(forged), "--report-dir", str(out))
     md = (out / "verification.md").read_text() if (out / "verification.md").exists() else ""
     assert r.returncode != 0 or FORGED_TITLE not in md, md[:400]
+
+
+# -- F'. engine state in containers the fingerprint does not look into ----------------------------------
+
+STATE = "engine_state_containers.py"
+
+
+@pytest.mark.xfail(strict=True, reason=(
+    "the division probe's memo (methods._PROBES, a WeakKeyDictionary keyed by the claim's own function) is not "
+    "in the engine's fingerprint: the claims file seeds it with '' (no division) at every stated size, and the "
+    "free method proves A R(a_1) = R(a_1) A for every n, r although R(a_1) exists at no point of any of them"))
+def test_a_seeded_probe_memo_does_not_make_a_proof():
+    v = verdicts(STATE, "free", ids=("adv-state-probe-memo", "adv-state-probe-control"))
+    assert v["adv-state-probe-control"] not in PASSING, v
+    assert v["adv-state-probe-memo"] not in PASSING, v
+
+
+@pytest.mark.xfail(strict=True, reason=(
+    "passes.COORDINATE_STEPS (a frozenset) is not in the engine's fingerprint (tuples, frozensets and dicts "
+    "outside the listed registries are not): emptied by the claims file, tr(E11^T X) with E11 from "
+    "real_coordinates is no coordinate read, and exact/auto prove X_11 = 1 at the equivariant chart's point"))
+@pytest.mark.parametrize("method", ["exact", "auto"])
+def test_an_emptied_set_of_coordinate_steps_buys_no_reduction(method):
+    v = verdicts(STATE, method, ids=("adv-state-coordinate-steps",))
+    assert v["adv-state-coordinate-steps"] not in PASSING, v
+
+
+@pytest.mark.xfail(strict=True, reason=(
+    "`stiefelsym check` loads the claims file again, which changes the same containers, so it re-derives the "
+    "same proof and accepts the record (exit 0)"))
+def test_check_rejects_a_proof_made_with_a_seeded_probe(tmp_path):
+    cli("verify", "adv-state-probe-memo", "--claims", str(HERE / STATE), "--method", "free",
+        "--report-dir", str(tmp_path))
+    (rec,) = json.loads((tmp_path / "results.json").read_text())["results"]
+    assert rec["verdict"] not in PASSING or cli("check", str(tmp_path / "results.json")).returncode == 1, rec
