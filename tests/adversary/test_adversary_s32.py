@@ -275,3 +275,26 @@ def test_report_refuses_a_proof_for_every_size_without_a_certificate_under_auto(
     checker = subprocess.run([sys.executable, "-m", "stiefelsym.certificate_check", str(forged)], cwd=ROOT,
                              capture_output=True, text=True, timeout=300)
     assert r.returncode != 0 and checker.returncode == 1, (r.returncode, checker.returncode)
+
+
+# -- L'. a profile hook of the claims file runs in the engine's frames at evaluation --------------------
+
+HOOK = "profile_hook_evaluation.py"
+
+
+@pytest.mark.xfail(strict=True, reason=(
+    "the claims file is imported into the process that evaluates its graphs, and sys.setprofile / "
+    "threading.setprofile hooks are no part of the engine's fingerprint: the hook rewrites the residual dict "
+    "call_claim returns (X * 0), so X = 0 is proved (exact, free: an empty-residual certificate the checker "
+    "accepts), checked (modular) and numeric (float)"))
+@pytest.mark.parametrize("method", ["free", "exact", "modular", "float"])
+def test_a_profile_hook_of_the_claims_file_cannot_pass_a_false_claim(method):
+    assert verdicts(HOOK, method)["adv-profile-hook"] not in PASSING
+
+
+@pytest.mark.xfail(strict=True, reason=(
+    "`stiefelsym check` imports the same file (the hook again) and re-derives the same proof: accepted (exit 0)"))
+def test_check_rejects_a_proof_made_by_a_profile_hook(tmp_path):
+    cli("verify", "--claims", str(HERE / HOOK), "--method", "free", "--report-dir", str(tmp_path))
+    (rec,) = json.loads((tmp_path / "results.json").read_text())["results"]
+    assert rec["verdict"] not in PASSING or cli("check", str(tmp_path / "results.json")).returncode == 1, rec
