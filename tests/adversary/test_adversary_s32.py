@@ -77,15 +77,16 @@ FIXED = (
 )
 
 
+@pytest.mark.parametrize("size,good,bad", FIXED, ids=[z for z, _, _ in FIXED])
 @pytest.mark.parametrize("method", ["exact", "modular"])
-def test_new_letters_second_round_fixed_sizes(method):
-    for size, good, bad in FIXED:
-        v = verdicts(LETTERS, method, size=size)
-        assert all(v[c] in PASSING for c in good), (size, v)
-        assert all(v[c] == "fails" for c in bad), (size, v)
-        assert all(v[c] not in PASSING for c in EIGEN_INSIDE), (size, v)
-    if method == "modular":    # exact's symbolic solve of the metric multipliers is beyond its budget here
-        assert verdicts(LETTERS, method, ids=("s32-refl-metric-flow",))["s32-refl-metric-flow"] in PASSING
+def test_new_letters_second_round_fixed_sizes(method, size, good, bad):
+    extra = ("s32-refl-metric-flow",) if method == "modular" and size == "3,2" else ()
+    v = verdicts(LETTERS, method, size=size, ids=good + bad + EIGEN_INSIDE + extra)
+    assert all(v[c] in PASSING for c in good + extra), v
+    assert all(v[c] == "fails" for c in bad), v
+    assert all(v[c] not in PASSING for c in EIGEN_INSIDE), v
+    # (exact's symbolic solve of the metric multipliers is beyond its budget at (3,2), and at (3,1) it answers
+    # error for the metric flow with S: a 1x1 product it does not add; neither is asserted here)
 
 
 # -- W. a claims file marks its own claims as the reviewed catalog's ---------------------------------
