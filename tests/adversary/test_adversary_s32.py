@@ -299,3 +299,19 @@ def test_check_rejects_a_proof_made_by_a_profile_hook(tmp_path):
     cli("verify", "--claims", str(HERE / HOOK), "--method", "free", "--report-dir", str(tmp_path))
     (rec,) = json.loads((tmp_path / "results.json").read_text())["results"]
     assert rec["verdict"] not in PASSING or cli("check", str(tmp_path / "results.json")).returncode == 1, rec
+
+
+# -- N'. a SizeSpec whose iteration is empty ----------------------------------------------------------
+
+@pytest.mark.xfail(strict=True, reason=(
+    "a SizeSpec subclass with an empty __iter__ (its sizes field and len() say (3,2)) passes the 'no sizes' "
+    "check, and the free method's loops over the stated sizes (same graph at each size; the division probe at "
+    "every size for a moving spectral parameter) run over nothing: A R(a_1) = R(a_1) A is proved for every n, r "
+    "although R(a_1) exists at no point of (3,2)"))
+def test_a_hollow_size_spec_does_not_skip_the_probe():
+    assert verdicts("sizes_hollow_iteration.py", "free")["adv-hollow-moving-eigenvalue"] not in PASSING
+
+
+def test_a_hollow_size_spec_is_not_passed_at_its_size():
+    """The control: at (3,2) every point is a pole (modular: inconclusive, never a passing verdict)."""
+    assert verdicts("sizes_hollow_iteration.py", "modular")["adv-hollow-moving-eigenvalue"] not in PASSING
