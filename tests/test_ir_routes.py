@@ -318,9 +318,13 @@ def test_a_passing_verdict_for_a_claim_that_does_not_trace_is_rejected():
         return {"x": s.X * 0.5}
     reg = Registry()
     reg.add(_claim(untraceable, cid="untraceable"))
-    forged = {"claim": "untraceable", "n": 3, "r": 2, "method": "modular", "verdict": "checked", "digest": ""}
+    c = reg.get("untraceable")
+    words = {"paper": list(c.paper), "section": c.section, "kind": c.kind, "title": c.title, "statement": c.statement}
+    forged = {"claim": "untraceable", "n": 3, "r": 2, "method": "modular", "verdict": "checked", "digest": "", **words}
     lines = []
     assert check_results([forged], reg, echo=lines.append) == 1 and "does not trace" in lines[0]
+    # a record without its claim's words is refused before anything else
+    assert check_results([dict(forged, statement="X = 0")], reg, echo=lines.append) == 1 and "statement" in lines[-2]
     honest = dict(forged, verdict="error")
     assert check_results([honest], reg, echo=lines.append) == 0
 
