@@ -496,27 +496,9 @@ def isotropy_momentum_is_conserved(s):
     }
 
 
-def adjugate(s, M):
-    """adj M of an r x r matrix (cofactors; M adj M = det M · I)."""
-    m = M.shape[0]
-
-    def det(rows, cols):
-        if not rows:
-            return s.q(1)
-        acc = s.q(0)
-        for j, c in enumerate(cols):
-            minor = det(rows[1:], cols[:j] + cols[j + 1:])
-            term = M[rows[0], c] * minor
-            acc = acc + term if j % 2 == 0 else acc - term
-        return acc
-    idx = list(range(m))
-    return s.mat([[det([k for k in idx if k != j], [k for k in idx if k != i]) * (1 if (i + j) % 2 == 0 else -1)
-                   for j in idx] for i in idx], ("r", "r"))
-
-
 def W_point(t):
     """A generic constant n x r matrix W (parameters of the claim's own)."""
-    return t.generic("W", "n", "r")
+    return twisted.kernel_frame(t)
 
 
 def H_neum_W(t):
@@ -532,18 +514,12 @@ def H_neum_W(t):
        statement=r"A=\alpha\mathbf I+\beta WW^T:\ so(n)_A\supset so(\ker W^T),\quad "
                  r"\tfrac{d}{dt}\,Q\Phi Q=0\ \text{along (No)},\ Q=\det(W^TW)\mathbf I-W\,\mathrm{adj}(W^TW)W^T")
 def isotropy_momentum_is_conserved_covariantly(s):
-    """For A = αI + βWWᵀ (W a generic constant n x r matrix: the eigenvalue α has multiplicity n − r, on ker Wᵀ), the component QΦQ of Φ in so(ker Wᵀ) ⊂ so(n)_A (Q = det(WᵀW)·(the projector onto ker Wᵀ)) is conserved by the Neumann flows (No) for every κ: the Noether integrals of the SO(n − r) ⊂ SO(n)_A symmetry, stated covariantly so that the exact method may take X = X₀."""
+    """For A = αI + βWWᵀ (W a generic constant n x r matrix: the eigenvalue α has multiplicity n − r, on ker Wᵀ), the component QΦQ of Φ in so(ker Wᵀ) ⊂ so(n)_A (Q = det(WᵀW)·(the projector onto ker Wᵀ)) is conserved by the Neumann flows (No) for every κ: the Noether integrals of the SO(n − r) ⊂ SO(n)_A symmetry, stated covariantly so that the exact method may take X = X₀.  Dimension-free, Q is every symmetric matrix with QW = 0 (the projector onto ker Wᵀ among them)."""
     W = W_point(s)
-    G = W.T @ W
-    Q = det_of(s, G) * s.In - W @ adjugate(s, G) @ W.T
+    Q = twisted.kernel_annihilator(s)   # det(WᵀW)I − W adj(WᵀW)Wᵀ
     flow = s.dirac_flow(H_neum_W)
     dPhi = s.d(lambda t: t.Phi, flow)
     return {"Q W": Q @ W, "d(Q Phi Q)/dt": Q @ dPhi @ Q}
-
-
-def det_of(s, M):
-    """det M of an r x r matrix (first row expansion, through the adjugate: (M adj M)_11)."""
-    return (M @ adjugate(s, M))[0, 0]
 
 
 # -- completeness: the numbers of independent functions ---------------------------------------

@@ -673,19 +673,27 @@ def planes_tangent_to_confocal_cones_manakov(s):
     return checks
 
 
+def line_pair_tangency(t):
+    """det(UᵀR_λU) for U = (e, p) at r = 1, as the Gram determinant (e, R_λe)(p, R_λp) − (e, R_λp)(p, R_λe)
+    of the 2×2 matrix UᵀR_λU (its entries are the 1×1 products, so no entry is read)."""
+    e, p, R = t.X, t.P, t.resolvent(t.lam)
+    return (e.T @ R @ e) @ (p.T @ R @ p) - (e.T @ R @ p) @ (p.T @ R @ e)
+
+
 @claim("poisson-sphere-chasles", paper=("Chasles-Manakov", "sp1", "P_q"), kind="geo",
        sizes=admissible(n_max=5, n_min=2, r_max=1, condition="r = 1, n >= 2"), exact_max_n=3,
        statement=r"r=1,\ B=-A^{-1}:\ A\dot e=(A^{-1}e,e)\,p-(A^{-1}e,p)\,e,\ \ \Sigma=\mathrm{span}\{e,p\}="
-                 r"\mathrm{span}\{e,A\dot e\},\ \ \tfrac{d}{dt}\det(U^TR_\lambda U)=0")
+                 r"\mathrm{span}\{e,A\dot e\},\ \ \tfrac{d}{dt}\det(U^TR_\lambda U)=0,\ "
+                 r"\det(U^TR_\lambda U)=(e,R_\lambda e)(p,R_\lambda p)-(e,R_\lambda p)^2")
 def poisson_sphere_planes(s):
-    """The corollary of Theorem Chasles-Manakov: along a geodesic of the Poisson-sphere metric (sp1), Aė = (A⁻¹e, e)p − (A⁻¹e, p)e, so the 2-plane span{e, p} is span{e, Aė}, and its tangency polynomial det(UᵀR_λU) is conserved (tangent to n − 2 fixed cones of Q_0(λ))."""
+    """The corollary of Theorem Chasles-Manakov: along a geodesic of the Poisson-sphere metric (sp1), Aė = (A⁻¹e, e)p − (A⁻¹e, p)e, so the 2-plane span{e, p} is span{e, Aė}, and its tangency polynomial det(UᵀR_λU), U = (e, p), the Gram determinant (e, R_λe)(p, R_λp) − (e, R_λp)², is conserved (tangent to n − 2 fixed cones of Q_0(λ))."""
     flow = s.dirac_flow(H_poisson_sphere)
     e, p, Ai = s.X, s.P, s.Ainv
-    k = (e.T @ Ai @ e)[0, 0]
-    m = (e.T @ Ai @ p)[0, 0]
+    k = e.T @ Ai @ e
+    m = e.T @ Ai @ p
     return {
-        "A de/dt - (A^{-1}e, e) p + (A^{-1}e, p) e": s.A @ flow.Xdot - k * p + m * e,
-        "d det(U^T R U)/dt": s.d(manakov_tangency, flow),
+        "A de/dt - (A^{-1}e, e) p + (A^{-1}e, p) e": s.A @ flow.Xdot - p @ k + e @ m,
+        "d det(U^T R U)/dt": s.d(line_pair_tangency, flow),
     }
 
 

@@ -28,7 +28,7 @@ r = 2 only; E₁E₁ᵀ = I_r at r = 1 only, with no E₂; XXᵀ = I_n at r = n 
 there (the report says so), and a 1×1 piece of a word is its own trace (u·E_i·(E_jᵀwE_k)·E_lᵀ·v =
 tr(E_jᵀwE_k)·u·E_iE_lᵀ·v).
 Projectors D, C of orthogonal blocks of ℝʳ (Dsplit, Csplit: D² = D, C² = C, DC = CD = 0) and an orthogonal
-symmetry S of ℝⁿ commuting with A (Sref: S² = I_n, SA = AS), a projector Dn of ℝⁿ (Dn² = Dn): symmetric letters.
+symmetry S of ℝⁿ commuting with A (Sref: S² = I_n, SA = AS), projector Dn of ℝⁿ, Kw with Kw·Wk = 0: symmetric.
 
 The only facts used besides the hypotheses are structural: the transposes of
 the letters (A = Aᵀ, R_μ = R_μᵀ, ξᵀ = −ξ), and tr(uv) = tr(vu), tr(w) = tr(wᵀ).
@@ -61,8 +61,8 @@ FIXED_LETTERS: dict[str, tuple[str, str, str, int]] = {
     "eta": ("r", "r", "eta", -1), "theta": ("r", "r", "theta", -1),
     "E1": ("r", "1", "E1t", 1), "E1t": ("1", "r", "E1", 1),
     "E2": ("r", "1", "E2t", 1), "E2t": ("1", "r", "E2", 1), "Er": ("r", "1", "Ert", 1), "Ert": ("1", "r", "Er", 1),
-    "Elead": ("r", "r-1", "Eleadt", 1), "Eleadt": ("r-1", "r", "Elead", 1),
-    "Dsplit": ("r", "r", "Dsplit", 1), "Csplit": ("r", "r", "Csplit", 1), "Sref": ("n", "n", "Sref", 1), "Dn": ("n", "n", "Dn", 1),
+    "Elead": ("r", "r-1", "Eleadt", 1), "Eleadt": ("r-1", "r", "Elead", 1), "Wk": ("n", "r", "Wkt", 1), "Wkt": ("r", "n", "Wk", 1),
+    "Dsplit": ("r", "r", "Dsplit", 1), "Csplit": ("r", "r", "Csplit", 1), "Sref": ("n", "n", "Sref", 1), "Dn": ("n", "n", "Dn", 1), "Kw": ("n", "n", "Kw", 1),
     # the double point X, Y, Ẋ, Ẏ and the complex point Z = U + iV, Ż = U̇ + iV̇ of W(n, r): real n×r letters
     **{x: ("n", "r", f"{x}t", 1) for x in ("DX", "DY", "DXd", "DYd", "U", "V", "Ud", "Vd")},
     **{f"{x}t": ("r", "n", x, 1) for x in ("DX", "DY", "DXd", "DYd", "U", "V", "Ud", "Vd")},
@@ -277,8 +277,8 @@ HYPOTHESES: dict[str, tuple[str, str, list[tuple[Any, tuple]]]] = {
     "EleadtEr": ("r-1", "1", [(_ONE, ("Eleadt", "Er"))]), "ErtElead": ("1", "r-1", [(_ONE, ("Ert", "Elead"))]),
     **{f"{a}{b}": ("r", "r", [(_ONE, (a, b))] + [(_MINUS, (a,))] * (a == b)) for a in ("Dsplit", "Csplit") for b in ("Dsplit", "Csplit")},
     "SrefSref": ("n", "n", [(_ONE, ("Sref", "Sref")), (_MINUS, ())]), "SrefA": ("n", "n", [(_ONE, ("Sref", "A")), (_MINUS, ("A", "Sref"))]),
-    "DnDn": ("n", "n", [(_ONE, ("Dn", "Dn")), (_MINUS, ("Dn",))]),
-    "EleadEleadt+ErErt": ("r", "r", [(_ONE, ("Elead", "Eleadt")), (_ONE, ("Er", "Ert")), (_MINUS, ())]),
+    "DnDn": ("n", "n", [(_ONE, ("Dn", "Dn")), (_MINUS, ("Dn",))]), "KwWk": ("n", "r", [(_ONE, ("Kw", "Wk"))]),
+    "EleadEleadt+ErErt": ("r", "r", [(_ONE, ("Elead", "Eleadt")), (_ONE, ("Er", "Ert")), (_MINUS, ())]), "WktKw": ("r", "n", [(_ONE, ("Wkt", "Kw"))]),
     SQUARE: ("n", "n", [(_ONE, ("X", "Xt")), (_MINUS, ())]),
     R1_ONLY: ("r", "r", [(_ONE, ("E1", "E1t")), (_MINUS, ())]),
     R2_ONLY: ("r", "r", [(_ONE, ("E1", "E1t")), (_ONE, ("E2", "E2t")), (_MINUS, ())]),

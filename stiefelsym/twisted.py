@@ -380,6 +380,48 @@ def eigenspace_projector(s) -> Mat:
     return s.mat([[1 if i == j and i < 2 else 0 for j in range(s.n)] for i in range(s.n)], ("n", "n"))
 
 
+def kernel_frame(s) -> Mat:
+    """W, a generic constant n×r matrix (the claim's parameters W_ij at fixed sizes): the frame whose
+    orthogonal complement ker Wᵀ is the subspace :func:`kernel_annihilator` annihilates.  A letter W of the
+    dimension-free backend (with its transpose), tied to that annihilator."""
+    if _at_point(s):
+        return s.lift(kernel_frame(s.inner))
+    if _is_free(s):
+        return s.kernel_frame()
+    s = _scene(s, "a generic constant n x r matrix W")
+    return s.generic("W", "n", "r")
+
+
+def _det(rows: list) -> Any:
+    """det of a square list of lists of scalars (first-row expansion; 1 for the empty matrix)."""
+    if not rows:
+        return 1
+    acc = 0
+    for j in range(len(rows)):
+        minor = _det([row[:j] + row[j + 1:] for row in rows[1:]])
+        acc = acc + rows[0][j] * minor if j % 2 == 0 else acc - rows[0][j] * minor
+    return acc
+
+
+def kernel_annihilator(s) -> Mat:
+    """K = det(WᵀW)·I_n − W adj(WᵀW) Wᵀ for W = :func:`kernel_frame`: det(WᵀW) times the orthogonal projector
+    onto ker Wᵀ, a polynomial in W (symmetric, KW = 0).  A symmetric letter K of the dimension-free backend
+    with KW = 0 (and WᵀK = 0) and nothing else, so what is proved there holds for every symmetric K with
+    KW = 0 (the projector onto ker Wᵀ and its multiples among them)."""
+    if _at_point(s):
+        return s.lift(kernel_annihilator(s.inner))
+    if _is_free(s):
+        return s.kernel_annihilator()
+    s = _scene(s, "the projector onto ker W^T, W a generic n x r matrix")
+    W = kernel_frame(s)
+    G = W.T @ W
+    g = [[G[i, j] for j in range(s.r)] for i in range(s.r)]
+    idx = range(s.r)
+    adj = s.mat([[_det([[g[a][b] for b in idx if b != i] for a in idx if a != j]) * (1 if (i + j) % 2 == 0 else -1)
+                  for j in idx] for i in idx], ("r", "r"))
+    return s.scalar_matrix(_det(g), s.n, "n") - W @ adj @ W.T
+
+
 def leading_basis_vectors(s) -> Mat:
     """(E_1, ..., E_{r−1}): X(E_1, ..., E_{r−1}) = (e_1, ..., e_{n−1}) when r = n (iden1); a letter of the
     dimension-free backend (its columns and E_r are those of I_r)."""
@@ -419,7 +461,7 @@ def at_point(s, X: Mat, P: Mat) -> Scene:
 __all__ = ["magnetic_matrix", "ambient_bracket", "constraint_bracket_matrix", "bracket", "ambient_flow",
            "flow", "multiplier_flow", "form", "basis_vector", "coordinate_projector", "first_basis_vectors",
            "last_basis_vector", "leading_basis_vectors", "block_projector", "reflection", "eigenspace_projector",
-           "column_splittings", "at_point"]
+           "kernel_frame", "kernel_annihilator", "column_splittings", "at_point"]
 
 # the functions that need the engine's scene (its number system, its gradients and multipliers) are
 # single steps of a claim's graph; the coordinate helpers above are traced with the claim
@@ -428,6 +470,6 @@ for _name in ("magnetic_matrix", "ambient_bracket", "constraint_bracket_matrix",
     globals()[_name] = primitive(globals()[_name])
 # the basis vectors of R^r do not move with the point: their derivative along a flow is 0
 for _name in ("basis_vector", "last_basis_vector", "leading_basis_vectors", "block_projector", "reflection",
-              "eigenspace_projector"):
+              "eigenspace_projector", "kernel_frame", "kernel_annihilator"):
     globals()[_name] = primitive(globals()[_name], constant=True)
 at_point = primitive(at_point, returns="scene")

@@ -116,3 +116,54 @@ def test_an_eigenspace_claim_is_proved_for_every_projector_and_not_its_rank():
     assert run_exact(c, 3, 2, 0, func=rank_two).verdict == "proved"
     data, _ = forged(res.certificate_data, {"DnDn": "DsplitDsplit"})
     assert not check_certificate(data).accepted
+
+
+# -- ker Wᵀ through a symmetric K with KW = 0 (singular-a-noether-covariant) -------------------------------
+
+def test_the_kernel_claim_is_proved_for_every_annihilator_and_the_checker_needs_both_hypotheses():
+    c = CATALOG.get("singular-a-noether-covariant")
+    res = _proved(run_free(c))
+    used = {t["hyp"] for e in res.certificate_data["entries"] for t in e["terms"]}
+    assert used <= {"KwWk", "WktKw", "XtX", "XtP+PtX"} and used & {"KwWk", "WktKw"}
+    assert {"KwWk", "WktKw"} <= used
+    for old, new in (("KwWk", "DnDn"), ("WktKw", "KwWk")):
+        data, changed = forged(res.certificate_data, {old: new})
+        assert changed
+        assert not check_certificate(data).accepted
+
+
+def kernel_one_sided_block(s):
+    """Corrupted: d(KΦ)/dt, one side only, is not zero."""
+    K = twisted.kernel_annihilator(s)
+    return {"d(K Phi)/dt": K @ s.d(lambda t: t.Phi, s.dirac_flow(s6.H_neum_W))}
+
+
+def kernel_with_the_generic_a(s):
+    """Corrupted: the block KΦK with the Neumann flow of the generic A (not αI + βWWᵀ) is not conserved."""
+    K = twisted.kernel_annihilator(s)
+    return {"d(K Phi K)/dt": K @ s.d(lambda t: t.Phi, s.dirac_flow(H_neumann_generic)) @ K}
+
+
+def H_neumann_generic(t):
+    """H_neum,κ with the generic A."""
+    XtP = t.X.T @ t.P
+    return t.tr(t.P.T @ t.P) / 2 - (t.q(1, 2) + t.kappa) * t.tr(XtP @ XtP) + t.tr(t.X.T @ t.A @ t.X) / 2
+
+
+@pytest.mark.parametrize("func", [kernel_one_sided_block, kernel_with_the_generic_a])
+def test_a_corrupted_kernel_claim_is_not_proved_and_fails_at_a_fixed_size(func):
+    c = CATALOG.get("singular-a-noether-covariant")
+    assert run_free(c, func).verdict == "undecided"
+    assert run_exact(c, 3, 1, 0, func=func).verdict == "fails"
+
+
+def test_what_holds_for_the_fixed_annihilator_only_is_not_proved():
+    """K² = det(WᵀW)K holds for the annihilator built at fixed sizes, not for every symmetric K with KW = 0."""
+    c = CATALOG.get("singular-a-noether-covariant")
+
+    def square(s):
+        W, K = twisted.kernel_frame(s), twisted.kernel_annihilator(s)
+        G = W.T @ W
+        return {"K^2 - det(W^T W) K": K @ K - G[0, 0] * K}
+    assert run_free(c, square).verdict == "undecided"
+    assert run_exact(c, 3, 1, 0, func=square).verdict == "proved"

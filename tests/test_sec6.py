@@ -22,7 +22,8 @@ MODULE = "stiefelsym.proofs.sec6_compatible_brackets"
 FREE_PROVED = ("symmetric-pair", "pencil-casimirs", "theta-poisson-map", "theta-factorization", "cpb-hamiltonian",
                "cpb-flow", "ff-integrals", "bb-manakov-so-r", "lambda12-compatible", "cif-integrals", "com-integrals",
                "nikinorov-integrals", "reduced-bracket-casimirs",
-               "singular-a-noether")   # an eigenspace of A as an orthogonal projector D of R^n
+               "singular-a-noether",   # an eigenspace of A as an orthogonal projector D of R^n
+               "singular-a-noether-covariant")   # ker W^T through a symmetric K with KW = 0
 
 #: the dimension statements of §6 (proofs/sec6_dimension_lemmas.py, another module)
 DIMENSION_LABELS = {"dimension", "LEMA1", "L1", "L2", "LEMA2", "A2", "LAMBDA", "L3", "L4", "L5", "L6", "L7", "L8",

@@ -23,13 +23,14 @@ SEED = 0
 FREE_PROVED = ("neumann-dual-lax-normal", "neumann-dual-lax-euclidean", "dual-lax-symplectic-structure",
                "dual-lax-spectral-invariants",
                "poisson-sphere-flow",   # stated at r = 1: E_1E_1^T = I_r makes every r x r matrix a scalar
-               "dual-lax-reflections")  # the reflection as a letter S = S^T, S^2 = I, SA = AS
+               "dual-lax-reflections",  # the reflection as a letter S = S^T, S^2 = I, SA = AS
+               "poisson-sphere-chasles")  # r = 1: det(U^T R U) is the Gram determinant of 1x1 products
 #: need coordinates: the
 #: spectral curve's coefficients (Newton's identities up to 2r, finite differences up to n), Plücker
 #: coordinates and determinants
 NEEDS_COORDINATES = ("2r-integrals", "2r-integrals-conserved",
                      "2r-integrals-explicit", "2r-integrals-general-line", "tangency", "gen-chasles",
-                     "gen-chasles2", "mum-geod", "chasles-manakov", "poisson-sphere-chasles",
+                     "gen-chasles2", "mum-geod", "chasles-manakov",
                      "vvb-left-factor-size", "gen-chasles-momentum-ranges", "dual-lax-determines-the-point",
                      "dual-invariants-manakov-r-n", "chasles-cones-real", "manakov-dual-integrals",
                      "manakov-j2r-vanishes")

@@ -48,6 +48,10 @@ SREF = Letter("Sref", "n", "n", "S")
 #: an orthogonal projector of ℝⁿ (D = Dᵀ = D²): the eigenspace of an eigenvalue of A in the claims that build A
 #: from it (A = αD + (I − D)B(I − D))
 DN = Letter("Dn", "n", "n", "D_n")
+#: a generic constant n×r matrix W and a symmetric K of ℝⁿ with KW = 0 (so WᵀK = 0): det(WᵀW) times the
+#: projector onto ker Wᵀ in the claims that build A = αI + βWWᵀ from W (the eigenspace ker Wᵀ of α)
+WK, WKt = letter_pair("Wk", "Wkt", "n", "r", "W", "W^{T}")
+KW = Letter("Kw", "n", "n", "K_W")
 
 #: the name of the hypothesis E₁E₁ᵀ + … + E_rE_rᵀ − I_r (true at that r only), by r
 COMPLETE = {1: "E1E1t", 2: "E1E1t+E2E2t"}
@@ -67,6 +71,8 @@ def column_hypotheses() -> dict[str, Hypothesis]:
     out["ErtElead"] = Hypothesis("ErtElead", w((ERt, LEAD)))
     out["SrefSref"] = Hypothesis("SrefSref", w((SREF, SREF)) - NCPoly.identity("n"))
     out["DnDn"] = Hypothesis("DnDn", w((DN, DN)) - w((DN,)))
+    out["KwWk"] = Hypothesis("KwWk", w((KW, WK)))
+    out["WktKw"] = Hypothesis("WktKw", w((WKt, KW)))
     for a in SPLIT:
         for b in SPLIT:
             out[f"{a}{b}"] = Hypothesis(f"{a}{b}", w((a, b)) - (w((a,)) if a == b else NCPoly.zero("r", "r")))

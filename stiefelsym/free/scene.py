@@ -29,7 +29,7 @@ from .mat import FreeBackend, FreeDualBackend, entry_of, one_block
 from .rewriting import (_NONZERO_NUMBER_TYPES, _SIMPLE, Certificate, Cofactor, Hypothesis, Order, Reduction,
                         RewritingError, RewritingSystem, SharedMemos, nonzero_terms, simplify_coef)
 from .traces import gradient
-from .columns import COLUMNS, COVECTORS, DN, SPLIT, SREF, ER, LEAD, LEADt, ERt, canonical, canonical_form, column_hypotheses
+from .columns import COLUMNS, COVECTORS, DN, KW, WK, WKt, SPLIT, SREF, ER, LEAD, LEADt, ERt, canonical, canonical_form, column_hypotheses
 
 Function = Callable[[Any], Any]
 
@@ -552,6 +552,31 @@ class FreeScene(PaperObjects):
                                  cofactors=[_by(hypothesis("DnDn"))])
         self._named.setdefault(str(DN), DN)
         return self._cached("projector_n", lambda: self._const_block(_w(DN), ("n", "n")))
+
+    def _kernel_letters(self) -> None:
+        """W (n×r) and K (n×n symmetric) with the rules KW → 0 and WᵀK → 0 and nothing else."""
+        if "kernel" not in self._extras:
+            self._extras.add("kernel")
+            for L in (WK, KW, WKt):
+                self.system.order.add(L)
+            self.system.add_rule((KW, WK), NCPoly.zero("n", "r"), "K W = 0 (K annihilates W)", name="KwWk",
+                                 cofactors=[_by(hypothesis("KwWk"))])
+            self.system.add_rule((WKt, KW), NCPoly.zero("r", "n"), "W^T K = 0 (the transpose of K W = 0)",
+                                 name="WktKw", cofactors=[_by(hypothesis("WktKw"))])
+        for L in (WK, WKt, KW):
+            self._named.setdefault(str(L), L)
+
+    def kernel_frame(self) -> Mat:
+        """W, a generic constant n×r matrix, as a letter (with Wᵀ) tied to the annihilator K of
+        :meth:`kernel_annihilator` by KW = 0 and nothing else."""
+        self._kernel_letters()
+        return self._cached("kernel:W", lambda: self._const_block(_w(WK), ("n", "r")))
+
+    def kernel_annihilator(self) -> Mat:
+        """K, a symmetric n×n letter with KW = 0 (and WᵀK = 0) and nothing else: a proof holds for every
+        symmetric K that annihilates W (the projector onto ker Wᵀ and its multiples among them)."""
+        self._kernel_letters()
+        return self._cached("kernel:K", lambda: self._const_block(_w(KW), ("n", "n")))
 
     def reflection(self) -> Mat:
         """S, an orthogonal symmetry of ℝⁿ that commutes with A, as an n×n symmetric letter ranked after every

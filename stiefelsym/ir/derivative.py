@@ -596,7 +596,8 @@ def _constant_vector(a: Any) -> bool:
     block of ℝʳ, a reflection of ℝⁿ."""
     return (type(a) is Named and a.qualname in CONSTANT_PRIMITIVES
             and a.qualname.rsplit(".", 1)[-1] in ("basis_vector", "last_basis_vector", "block_projector",
-                                                  "reflection", "eigenspace_projector"))
+                                                  "reflection", "eigenspace_projector", "kernel_frame",
+                                                  "kernel_annihilator"))
 
 
 class _Gradient(_Derivative):

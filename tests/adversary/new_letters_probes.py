@@ -264,3 +264,54 @@ def moving_eigenvalue_beyond_the_stated_sizes(s):
     mu = s.tr(twisted.eigenspace_projector(s) @ s.A @ (s.In - _S(s))) / 2 + (s.tr(s.In) - 7) * s.tr(s.X.T @ s.X)
     R = s.resolvent(mu)
     return {"AR - RA": s.A @ R - R @ s.A}
+
+
+# -- W and a symmetric K with KW = 0 (det(W^T W) times the projector onto ker W^T at fixed sizes) ----------
+
+def _WK(s):
+    return twisted.kernel_frame(s), twisted.kernel_annihilator(s)
+
+
+@claim("adv-kernel-annihilates", kind="id", sizes=admissible(n_max=3), statement="K W = 0, W^T K W W^T = 0")
+def kernel_annihilates(s):
+    """True control: K annihilates W on both sides."""
+    W, K = _WK(s)
+    return {"KW": K @ W, "W^T K W W^T": W.T @ K @ W @ W.T, "(K W W^T K)": K @ W @ W.T @ K}
+
+
+@claim("adv-kernel-block-derivative", kind="id", sizes=admissible(n_max=3),
+       statement="d(K X)/dt = K dX/dt along a flow")
+def kernel_block_derivative(s):
+    """True control: K and W are constant along a flow."""
+    W, K = _WK(s)
+    flow = s.dirac_flow(_H)
+    return {"r": s.d(lambda t: twisted.kernel_annihilator(t) @ t.X @ twisted.kernel_frame(t).T @ t.X, flow)
+            - K @ flow.Xdot @ W.T @ s.X - K @ s.X @ W.T @ flow.Xdot}
+
+
+@claim("adv-kernel-annihilates-X", kind="id", sizes=admissible(n_max=3), statement="K X = 0")
+def kernel_annihilates_x(s):
+    """False: K annihilates W, not X."""
+    _, K = _WK(s)
+    return {"r": K @ s.X}
+
+
+@claim("adv-kernel-commutes-A", kind="id", sizes=admissible(n_max=3), statement="K A = A K")
+def kernel_commutes_a(s):
+    """False: K is built from W, not from A."""
+    _, K = _WK(s)
+    return {"r": K @ s.A - s.A @ K}
+
+
+@claim("adv-kernel-idempotent", kind="id", sizes=admissible(n_max=3), statement="K^2 = K")
+def kernel_idempotent(s):
+    """False: K is det(W^T W) times a projector."""
+    _, K = _WK(s)
+    return {"r": K @ K - K}
+
+
+@claim("adv-kernel-multiple-of-projector", kind="id", sizes=admissible(n_max=3), statement="K^3 tr K = K^2 tr K^2")
+def kernel_multiple_of_projector(s):
+    """True for K = c times a projector (fixed sizes), not for every symmetric K with KW = 0."""
+    _, K = _WK(s)
+    return {"r": K @ K @ K * s.tr(K) - K @ K * s.tr(K @ K)}

@@ -637,13 +637,14 @@ NEW_LETTERS = "new_letters_probes.py"
 #: true for every S commuting with A, every pair of orthogonal blocks, every resolvent: proved everywhere
 NEW_TRUE = ("adv-refl-commutes-A", "adv-refl-commutes-moving-resolvent", "adv-split-D-plus-C-idempotent",
             "adv-refl-derivative", "adv-refl-gradient", "adv-split-bracket", "adv-split-conjugated-idempotent",
-            "adv-new-letters-symmetric", "adv-moving-mu-same-twice", "adv-mu-constant-through-XtX")
+            "adv-new-letters-symmetric", "adv-moving-mu-same-twice", "adv-mu-constant-through-XtX",
+            "adv-kernel-annihilates", "adv-kernel-block-derivative")
 #: false at (3,2): S against objects it does not commute with, a factor dropped, mu taken for its value
 NEW_FALSE = ("adv-refl-commutes-A-plus-XXt", "adv-refl-commutes-Phi", "adv-moving-mu-vs-parameter",
              "adv-refl-derivative-zero", "adv-refl-bracket", "adv-refl-gradient-half", "adv-refl-conjugated-involution",
-             "adv-new-letters-skew-wrong")
+             "adv-new-letters-skew-wrong", "adv-kernel-annihilates-X", "adv-kernel-commutes-A", "adv-kernel-idempotent")
 #: true at the fixed-size objects only (S_1, diag(I_2, 0), A diagonal, D + C = I_r), not for every such letter
-NEW_FIXED_ONLY = ("adv-refl-Dn-commute", "adv-Dn-commutes-A", "adv-split-D-minus-C-square")
+NEW_FIXED_ONLY = ("adv-refl-Dn-commute", "adv-Dn-commutes-A", "adv-split-D-minus-C-square", "adv-kernel-multiple-of-projector")
 
 
 def test_new_letters_free_verdicts():
