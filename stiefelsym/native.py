@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import contextlib
 import math
+import sys
 import threading
 import weakref
 from typing import Any
@@ -350,6 +351,116 @@ class F64:
         return m
 
 
+#: arrays of the float backend from this many bytes up to POOL_MAX_BYTES come from a pool of its own
+#: (see :func:`_buf`); below, the allocator's heap serves them without page faults
+POOL_MIN_BYTES = 1 << 16
+POOL_MAX_BYTES = 1 << 22
+#: at most this many bytes are pooled per thread; beyond, arrays are allocated as usual
+POOL_TOTAL_BYTES = 1 << 26
+#: whether the pool is used (the tests compare every value, bound and scale with it and without it)
+POOL = True
+
+
+class _Pool(threading.local):
+    """The arrays the float backend reuses, by (shape, dtype), per thread."""
+
+    def __init__(self) -> None:
+        self.bufs: dict[tuple, list] = {}
+        self.total = 0
+
+
+_POOL = _Pool()
+
+
+def _refs_when_free() -> int:
+    """The reference count :func:`_buf` sees for a pooled array nothing else refers to (the pool's
+    list, the loop's name and the argument of sys.getrefcount), measured the way _buf measures it."""
+    bufs = [np.empty(1)]
+    for b in bufs:
+        return sys.getrefcount(b)
+    raise AssertionError
+
+
+_FREE_REFS = _refs_when_free()
+
+
+def _buf(shape: tuple, dtype: Any = np.float64) -> np.ndarray:
+    """An uninitialised C-contiguous array (a view of a pooled one): from the pool when one of that
+    shape and type is free, that is when nothing but the pool refers to it (every array made from
+    a pooled one, a view, a transpose, a slice, refers to it through its base).  A fresh 200 x 200
+    array is otherwise paged in from the kernel on every evaluation (the allocator returns the
+    heap's top when the evaluation frees its values); a pooled one is reused.  The arrays are only
+    where the results go: every value is computed by the same numpy or BLAS call as without the
+    pool, into an array of the same layout."""
+    dt = np.dtype(dtype)
+    nbytes = shape[0] * shape[1] * dt.itemsize
+    if not (POOL and POOL_MIN_BYTES <= nbytes <= POOL_MAX_BYTES):
+        return np.empty(shape, dtype=dt)
+    pool = _POOL
+    key = (shape, dt)
+    bufs = pool.bufs.get(key)
+    if bufs is None:
+        bufs = pool.bufs[key] = []
+    for b in bufs:
+        if sys.getrefcount(b) == _FREE_REFS:
+            return b[...]
+    out = np.empty(shape, dtype=dt)
+    if pool.total + nbytes <= POOL_TOTAL_BYTES:
+        bufs.append(out)
+        pool.total += nbytes
+        return out[...]
+    return out
+
+
+def _out_like(x: np.ndarray, dtype: Any = None) -> np.ndarray | None:
+    """A pooled array for the result of an elementwise operation on x (and operands of x's
+    layout), in the layout numpy gives it (order K: C for C-contiguous x, the transpose of a C
+    array for a transposed one); None for another layout (numpy then allocates)."""
+    dt = x.dtype if dtype is None else dtype
+    if x.ndim != 2:
+        return None
+    if x.flags.c_contiguous:
+        return _buf(x.shape, dt)
+    if x.flags.f_contiguous:
+        return _buf((x.shape[1], x.shape[0]), dt).T
+    return None
+
+
+def _same_layout(x: np.ndarray, y: np.ndarray) -> bool:
+    """Whether x and y are both C-contiguous or both transposes of C-contiguous arrays (numpy's
+    order K then lays their elementwise result out as they are)."""
+    fx, fy = x.flags, y.flags
+    return (fx.c_contiguous and fy.c_contiguous) or (fx.f_contiguous and fy.f_contiguous
+                                                     and not fx.c_contiguous and not fy.c_contiguous)
+
+
+def _binop(f: Any, x: np.ndarray, y: np.ndarray) -> np.ndarray:
+    """f(x, y) for a numpy ufunc f and two arrays of one shape and type, into a pooled array where
+    numpy's result would have the operands' layout."""
+    if x.shape == y.shape and x.dtype == y.dtype and _same_layout(x, y):
+        out = _out_like(x)
+        if out is not None:
+            return f(x, y, out=out)
+    return f(x, y)
+
+
+def _matmul(x: np.ndarray, y: np.ndarray) -> np.ndarray:
+    """x @ y into a pooled C-contiguous array (numpy's own result is C-contiguous: the same BLAS
+    call writes it)."""
+    if x.ndim == 2 and y.ndim == 2 and x.dtype == y.dtype and x.dtype in (np.float64, np.float32):
+        return np.matmul(x, y, out=_buf((x.shape[0], y.shape[1]), x.dtype))
+    return x @ y
+
+
+def _copy(x: np.ndarray) -> np.ndarray:
+    """x.copy() (C order) into a pooled array."""
+    if x.ndim != 2:
+        return x.copy()
+    out = _buf(x.shape, x.dtype)
+    np.copyto(out, x)
+    return out
+
+
 def _gamma(k: int) -> float:
     """γ_k = k u / (1 − k u), the dot-product rounding constant (Higham, Thm 3.5), padded for the
     rounding of the bound's own evaluation."""
@@ -415,7 +526,12 @@ def _f32(v: np.ndarray, e: float, m32: np.ndarray, mf: float, top: float, nv: fl
 def _down32(x: np.ndarray) -> np.ndarray:
     """x (float64, >= 0) in float32 rounded down, entry by entry, also below float32's normal range
     (rounded to nearest, then one step towards 0)."""
-    y = x.astype(np.float32)
+    out = _out_like(x, np.float32)
+    if out is None:
+        y = x.astype(np.float32)
+    else:
+        y = out                                  # the same conversion, into a pooled array of astype's layout
+        np.copyto(y, x, casting="unsafe")
     # one step towards 0 is one unit less in the bits of a positive float32 (+inf becomes the largest
     # finite float32, as nextafter does); 0 and -0 stay; ten times faster than np.nextafter
     bits = y.view(np.int32)
@@ -508,7 +624,7 @@ def _scale_product(a: F64, b: F64) -> tuple:
         return a.m @ b.m, None, None, None, None
     (a32, fa, ta), (b32, fb, tb) = sa, sb
     g = 2.0 * (k + 4) * 2.0**-24
-    return None, a32 @ b32, fa * fb * (1.0 - g) * (1.0 - 2.0**-50), k * ta * tb * (1.0 + g), None
+    return None, _matmul(a32, b32), fa * fb * (1.0 - g) * (1.0 - 2.0**-50), k * ta * tb * (1.0 + g), None
 
 
 def _scales_sum(a: F64, b: F64) -> tuple:
@@ -524,8 +640,8 @@ def _scales_sum(a: F64, b: F64) -> tuple:
         sb = _s32(b, _S32_MAX) if sa is not None else None
         if sb is not None:
             (a32, fa, ta), (b32, fb, tb) = sa, sb
-            return None, a32 + b32, min(fa, fb) * _R32, (ta + tb) * (1.0 + 2.0**-22), None
-    return a.m + b.m, None, None, None, None
+            return None, _binop(np.add, a32, b32), min(fa, fb) * _R32, (ta + tb) * (1.0 + 2.0**-22), None
+    return _binop(np.add, a.m, b.m), None, None, None, None
 
 
 def _with_scales(v: np.ndarray, e: float, sc: tuple, nv: float | None = None) -> F64:
@@ -805,12 +921,12 @@ class Float64Backend(Backend):
             if b.diag is not None:
                 dv, dm = b.diag
                 full = a
-                v = a.v.copy()
+                v = _copy(a.v)
                 v[i, i] = a.v[i, i] + dv if sign > 0 else a.v[i, i] - dv
             else:
                 dv, dm = a.diag
                 full = b
-                v = b.v.copy() if sign > 0 else -b.v
+                v = _copy(b.v) if sign > 0 else np.negative(b.v, out=_out_like(b.v))
                 v[i, i] = dv + b.v[i, i] if sign > 0 else dv - b.v[i, i]
             nv = _fro(v)
             e = _up(a.e + b.e + U64 * nv + _uf(v.shape), 3)
@@ -820,10 +936,10 @@ class Float64Backend(Backend):
                 # in float32 (a float64 operand's scales converted once, see _s32): dm rounded down,
                 # the sum rounded once on the diagonal, the rest copied
                 f32, ff, ft = sf
-                m32 = f32.copy()
+                m32 = _copy(f32)
                 m32[i, i] = f32[i, i] + _down32(dm)
                 return _f32(v, e, m32, min(ff, 1.0) * _R32, (ft + dtop) * (1.0 + 2.0**-22), nv)
-            m = full.m.copy()
+            m = _copy(full.m)
             m[i, i] = full.m[i, i] + dm
             return F64(v, e, m, nv)
 
@@ -845,7 +961,7 @@ class Float64Backend(Backend):
             self._remember(memo, a, ("+", id(b)), b, out)
             return out
         with _quiet():
-            v = a.v + b.v
+            v = _binop(np.add, a.v, b.v)
             nv = _fro(v)
             out = _with_scales(v, _up(a.e + b.e + U64 * nv + _uf(v.shape), 3), _scales_sum(a, b), nv)
         self._remember(memo, a, ("+", id(b)), b, out)
@@ -868,7 +984,7 @@ class Float64Backend(Backend):
             self._remember(memo, a, ("-", id(b)), b, out)
             return out
         with _quiet():
-            v = a.v - b.v
+            v = _binop(np.subtract, a.v, b.v)
             nv = _fro(v)
             out = _with_scales(v, _up(a.e + b.e + U64 * nv + _uf(v.shape), 3), _scales_sum(a, b), nv)
         self._remember(memo, a, ("-", id(b)), b, out)
@@ -888,7 +1004,7 @@ class Float64Backend(Backend):
         return None if hit is None else self.T(hit[1])
 
     def neg(self, a):
-        return _like(-a.v, a.e, a, a.nv)
+        return _like(np.negative(a.v, out=_out_like(a.v)), a.e, a, a.nv)
 
     def matmul(self, a, b):
         (ma, k), (_kb, nb) = self.shape(a), self.shape(b)
@@ -989,7 +1105,7 @@ class Float64Backend(Backend):
             if np.any(h):
                 return None
             rows, signs = j.sel
-            w = 2.0 * y.v
+            w = np.multiply(2.0, y.v, out=_out_like(y.v))
             cols = np.arange(w.shape[1])
             w[rows, cols] -= signs
             nw = _fro(w)
@@ -1017,7 +1133,7 @@ class Float64Backend(Backend):
                 v = a.v[:, rows] * signs
                 sc = self._scaled(a, np.abs(signs), 1, rows)
             else:
-                v = a.v @ b.v
+                v = _matmul(a.v, b.v)
                 back = b.prods.get(id(a)) if b.prods is not None else None
                 if back is not None and back[1].lazy is None and _msym(a) and _msym(b):
                     # |A|_m |B|_m = (|B|_m |A|_m)ᵀ for symmetric scales (the two products of a
@@ -1074,7 +1190,7 @@ class Float64Backend(Backend):
             memo[key] = (None, out)
             return out
         with _quiet():
-            v = a.v * cv
+            v = np.multiply(a.v, cv, out=_out_like(a.v))
             nv = _fro(v)
             e = _norm(a) * ce + a.e * abs(cv) + a.e * ce + U64 * nv + _uf(v.shape)
             sa = None
@@ -1084,7 +1200,7 @@ class Float64Backend(Backend):
                 # in float32: cm rounded down to float32, the product rounded once
                 a32, fa, ta = sa
                 c32 = np.nextafter(np.float32(cm), np.float32(0.0))
-                out = _f32(v, _up(e, 6), a32 * c32, fa * _R32, ta * cm * (1.0 + 2.0**-22), nv)
+                out = _f32(v, _up(e, 6), np.multiply(a32, c32, out=_out_like(a32)), fa * _R32, ta * cm * (1.0 + 2.0**-22), nv)
             else:
                 out = F64(v, _up(e, 6), a.m * cm, nv)
         memo[key] = (None, out)

@@ -55,3 +55,59 @@ def test_freeing_values_changes_no_residual(monkeypatch, cid, n, r):
         assert np.array_equal(m0, m1), name
     if n >= 40:
         assert peak_freed < peak_kept
+
+
+def _pooled_residuals(claim, n, r, monkeypatch, pool: bool, min_bytes: int) -> list:
+    """The claim's residual matrices at one float64 point with the backend's array pool on (every
+    array from min_bytes) or off."""
+    from stiefelsym import native
+    with monkeypatch.context() as mp:
+        mp.setattr(native, "POOL", pool)
+        mp.setattr(native, "POOL_MIN_BYTES", min_bytes)
+        out, _peak = _residuals(claim, n, r, False, monkeypatch)
+    return out
+
+
+@pytest.mark.parametrize("cid, n, r, min_bytes", [
+    ("neumann-lax", 6, 3, 0), ("neumann-flow", 7, 3, 0), ("coupled-dual-lax-along-corrected-flow", 4, 3, 0),
+    ("neumann-lax", 40, 20, 0), ("neumann-lax", 120, 60, 1 << 16)])
+def test_pooled_arrays_change_no_residual(monkeypatch, cid, n, r, min_bytes):
+    """Results written into the float backend's pooled arrays (reused once nothing refers to them,
+    across evaluations) are those numpy allocates, bit for bit: values, bounds and term scales, on
+    a second evaluation too (the pool then hands out arrays holding the first one's numbers)."""
+    claim = load_catalog().get(cid)
+    plain = _pooled_residuals(claim, n, r, monkeypatch, False, min_bytes)
+    for _ in range(2):
+        pooled = _pooled_residuals(claim, n, r, monkeypatch, True, min_bytes)
+        assert [x[0] for x in plain] == [x[0] for x in pooled]
+        for (name, v0, e0, m0), (_name, v1, e1, m1) in zip(plain, pooled):
+            assert np.array_equal(v0, v1) and np.array_equal(np.signbit(v0), np.signbit(v1)), name
+            assert e0 == e1, name
+            assert np.array_equal(m0, m1), name
+
+
+def test_a_pooled_array_is_reused_only_when_nothing_refers_to_it(monkeypatch):
+    """The pool hands an array out again only once every view of it (a transpose, a slice) is gone."""
+    from stiefelsym import native
+    monkeypatch.setattr(native, "POOL", True)
+    monkeypatch.setattr(native, "_POOL", native._Pool())
+    a = native._buf((300, 300))
+    a[...] = 1.0
+    t = a.T
+    del a
+    b = native._buf((300, 300))
+    b[...] = 2.0
+    assert np.all(t == 1.0)                        # t's array was not handed out again
+    s = b[10:20]
+    del b
+    c = native._buf((300, 300))
+    assert not np.shares_memory(c, s) and not np.shares_memory(c, t)
+    del t, s, c
+    d = native._buf((300, 300))
+    assert np.shares_memory(d, native._POOL.bufs[((300, 300), np.dtype(np.float64))][0])
+    # the layouts numpy gives its own results
+    x = np.ones((300, 200))
+    for y in (x, x.T):
+        assert native._binop(np.add, y, y).strides == (y + y).strides
+        assert native._matmul(y, y.T).strides == (y @ y.T).strides
+        assert native._down32(y).strides == y.astype(np.float32).strides
