@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import contextlib
 import math
+import mmap
 import sys
 import threading
 import weakref
@@ -353,7 +354,7 @@ class F64:
 
 
 #: arrays of the float backend from this many bytes up to POOL_MAX_BYTES come from a pool of its own
-#: (see :func:`_buf`); below, the allocator's heap serves them without page faults
+#: (see :func:`_buf`); smaller ones come from the allocator's heap, without page faults
 POOL_MIN_BYTES = 1 << 16
 POOL_MAX_BYTES = 1 << 22
 #: at most this many bytes are pooled per thread, and this many arrays of one shape and type (a
@@ -393,9 +394,11 @@ def _buf(shape: tuple, dtype: Any = np.float64) -> np.ndarray:
     shape and type is free, that is when nothing but the pool refers to it (every array made from
     a pooled one, a view, a transpose, a slice, refers to it through its base).  A fresh 200 x 200
     array is otherwise paged in from the kernel on every evaluation (the allocator returns the
-    heap's top when the evaluation frees its values); a pooled one is reused.  The arrays are only
-    where the results go: every value is computed by the same numpy or BLAS call as without the
-    pool, into an array of the same layout."""
+    heap's top when the evaluation frees its values); a pooled one is reused.  Each pooled array is
+    an anonymous mapping of its own, so that the pool pins no part of the allocator's heap (which
+    the arrays of the rest of the process reuse).  The arrays are only where the results go: every
+    value is computed by the same numpy or BLAS call as without the pool, into an array of the
+    same layout."""
     if not POOL:
         return np.empty(shape, dtype=dtype)
     if isinstance(dtype, np.dtype):
@@ -410,16 +413,22 @@ def _buf(shape: tuple, dtype: Any = np.float64) -> np.ndarray:
         return np.empty(shape, dtype=dtype)
     for b in bufs:
         if sys.getrefcount(b) == _FREE_REFS:
-            return b[...]
-    out = np.empty(shape, dtype=dtype)
-    if len(bufs) < POOL_PER_SHAPE and pool.total + out.nbytes <= POOL_TOTAL_BYTES:
-        bufs.append(out)
-        pool.total += out.nbytes
-        return out[...]
-    return out
+            return b.reshape(shape)
+    dt = np.dtype(dtype)
+    nbytes = math.prod(shape) * dt.itemsize
+    if _PRIVATE is not None and len(bufs) < POOL_PER_SHAPE and pool.total + nbytes <= POOL_TOTAL_BYTES:
+        # a private anonymous mapping of its own (copied on write in a forked process, never shared),
+        # outside the allocator's heap (which the pool would otherwise pin)
+        root = np.frombuffer(mmap.mmap(-1, nbytes, flags=_PRIVATE), dtype=dt)
+        bufs.append(root)
+        pool.total += nbytes
+        return root.reshape(shape)
+    return np.empty(shape, dtype=dtype)
 
 
 _MISSING = object()
+#: mmap's flag of a private mapping (None where mmap has none: the pool then keeps nothing)
+_PRIVATE = getattr(mmap, "MAP_PRIVATE", None)
 
 
 def _out_like(x: np.ndarray, dtype: Any = None) -> np.ndarray | None:

@@ -210,3 +210,22 @@ def test_float64_scales_from_float32_in_a_pooled_array():
         got = _f32(np.zeros(a.shape), 0.0, a, 0.9999997, 10.0).m
         want = np.multiply(a, 0.9999997 * (1.0 - 2.0**-40), dtype=np.float64)
         assert np.array_equal(got, want) and got.strides == want.strides
+
+
+def test_pooled_arrays_are_not_shared_with_a_forked_process(monkeypatch):
+    """A pooled array is a private mapping: a process forked while it is pooled (the worker pool)
+    writes into its own copy, never into the parent's."""
+    import os
+    from stiefelsym import native
+    if not hasattr(os, "fork"):
+        pytest.skip("no fork")
+    monkeypatch.setattr(native, "POOL", True)
+    monkeypatch.setattr(native, "_POOL", native._Pool())
+    a = native._buf((300, 300))
+    a[...] = 1.0
+    pid = os.fork()
+    if pid == 0:                                   # the child writes into its copy and leaves
+        a[...] = 2.0
+        os._exit(0)
+    os.waitpid(pid, 0)
+    assert np.all(a == 1.0)
