@@ -116,6 +116,10 @@ class Field:
     def param_from_raw(self, x: Any) -> Any:
         raise NotImplementedError
 
+    def params_from_raw(self, vals: "np.ndarray") -> list:
+        """[param_from_raw(x) for x in vals], in order."""
+        return [self.param_from_raw(x) for x in vals.tolist()]
+
     def is_zero(self, x: Any) -> bool:
         raise NotImplementedError
 
@@ -456,6 +460,13 @@ class FloatField(Field):
 
     def param_from_raw(self, x):
         return ErrNum(float(x), 0, abs(float(x)), self.u)
+
+    def params_from_raw(self, vals):
+        if type(self).param_from_raw is not FloatField.param_from_raw:
+            return Field.params_from_raw(self, vals)
+        u = self.u
+        # vals.tolist() gives Python floats: float(x) is x itself
+        return [ErrNum(x, 0, abs(x), u) for x in vals.astype(float).tolist()]
 
     def param(self, name, rng):
         k = rng.randint(-2**40, 2**40)

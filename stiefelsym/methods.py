@@ -39,7 +39,7 @@ from .fields import (PRIME_LOW, PRIMES_IN_RANGE_LOWER, ConstantDegenerate, Degen
                      ErrNum, Field, FloatField, ModularField, RationalField, SymbolicBudget, random_prime)
 from .polyfield import SymbolicField
 from .matrix import Mat, is_scene_number
-from .native import F64, DegMat, backend, one_blas_thread, quiet_numpy
+from .native import F64, DegMat, _buf, backend, one_blas_thread, quiet_numpy
 from .paired import PairField, marker_of
 from .results import CheckOutcome, Result
 from .scene import CoordinateAccess, Scene, SizeError
@@ -142,17 +142,17 @@ def _float_entries(value: Any, name: str, u: float) -> list[tuple[str, Any]]:
     e1 = float(s.e)
     cols = s.v.shape[1]
     with np.errstate(all="ignore"):
-        av = np.abs(v)
-        fast = math.isfinite(e1) and math.isfinite(float(np.sum(av))) and math.isfinite(float(np.sum(m)))
+        av = np.abs(v, out=_buf(v.shape))            # (the arrays of this test are the backend's pooled ones)
+        fast = math.isfinite(e1) and math.isfinite(float(av.sum())) and math.isfinite(float(m.sum()))
     if fast:
         # every value, bound and scale finite (the sums would be inf or nan otherwise), the bound the
         # same for every entry: the same picks from fewer passes (the largest e/m is e over the
         # scales, inf where a scale is 0; the ratio is 0 everywhere when e = 0; the largest e is the
         # first entry's)
         with np.errstate(all="ignore"):
-            picks = {int(np.argmax(av)), 0, int(np.argmax(e1 / m)) if e1 > 0.0 else 0}
+            picks = {int(np.argmax(av)), 0, int(np.argmax(np.divide(e1, m, out=_buf(m.shape)))) if e1 > 0.0 else 0}
             clear = av > e1
-            resolves = e1 <= FLOAT_RESOLUTION * m
+            resolves = e1 <= np.multiply(FLOAT_RESOLUTION, m, out=_buf(m.shape))
             for mask in (clear, clear & resolves, ~resolves):
                 i = int(np.argmax(mask))
                 if mask[i]:

@@ -24,13 +24,15 @@ from __future__ import annotations
 
 import contextlib
 import math
+import mmap
+import sys
 import threading
 import weakref
 from typing import Any
 
 import numpy as np
 
-from .fields import FLOAT_UNDERFLOW, DegenerateError, Deg, Dual, ErrNum, log2_add, log2_up
+from .fields import FLOAT_UNDERFLOW, DegenerateError, Deg, Dual, ErrNum, FloatField, log2_add, log2_up
 
 U64 = 2.0**-53
 
@@ -345,9 +347,170 @@ class F64:
             else:
                 # float64 of mf·m32, rounded down: the float32 entries are exact in float64, and
                 # the factor 1 − 2⁻⁴⁰ covers the roundings of mf·(1 − 2⁻⁴⁰) and of the product
-                m = np.multiply(self.m32, self.mf * (1.0 - 2.0**-40), dtype=np.float64)
+                m = np.multiply(self.m32, self.mf * (1.0 - 2.0**-40), dtype=np.float64,
+                                out=_out_like(self.m32, np.float64))
             self._m = m
         return m
+
+
+#: arrays of the float backend from this many bytes up to POOL_MAX_BYTES come from a pool of its own
+#: (see :func:`_buf`); smaller ones come from the allocator's heap, without page faults
+POOL_MIN_BYTES = 1 << 16
+POOL_MAX_BYTES = 1 << 22
+#: at most this many bytes are pooled per thread, and this many arrays of one shape and type (a
+#: search for a free one looks at each); beyond, arrays are allocated as usual
+POOL_TOTAL_BYTES = 1 << 26
+POOL_PER_SHAPE = 32
+#: whether the pool is used (the tests compare every value, bound and scale with it and without it)
+POOL = True
+
+
+class _Pool(threading.local):
+    """The arrays the float backend reuses, by (shape, dtype) as the callers name them, per thread:
+    the list of arrays of that kind, or None for a size outside the pool's range."""
+
+    def __init__(self) -> None:
+        self.bufs: dict[tuple, list | None] = {}
+        self.total = 0
+
+
+_POOL = _Pool()
+
+
+def _refs_when_free() -> int:
+    """The reference count :func:`_buf` sees for a pooled array nothing else refers to (the pool's
+    list, the loop's name and the argument of sys.getrefcount), measured the way _buf measures it."""
+    bufs = [np.empty(1)]
+    for b in bufs:
+        return sys.getrefcount(b)
+    raise AssertionError
+
+
+_FREE_REFS = _refs_when_free()
+
+
+def _buf(shape: tuple, dtype: Any = np.float64) -> np.ndarray:
+    """An uninitialised C-contiguous array (a view of a pooled one): from the pool when one of that
+    shape and type is free, that is when nothing but the pool refers to it (every array made from
+    a pooled one, a view, a transpose, a slice, refers to it through its base).  A fresh 200 x 200
+    array is otherwise paged in from the kernel on every evaluation (the allocator returns the
+    heap's top when the evaluation frees its values); a pooled one is reused.  Each pooled array is
+    an anonymous mapping of its own, so that the pool pins no part of the allocator's heap (which
+    the arrays of the rest of the process reuse).  The arrays are only where the results go: every
+    value is computed by the same numpy or BLAS call as without the pool, into an array of the
+    same layout."""
+    if not POOL:
+        return np.empty(shape, dtype=dtype)
+    if isinstance(dtype, np.dtype):
+        dtype = dtype.type                  # one pool for np.float64 and np.dtype("float64")
+    pool = _POOL
+    key = (shape, dtype)
+    bufs = pool.bufs.get(key, _MISSING)
+    if bufs is _MISSING:
+        nbytes = math.prod(shape) * np.dtype(dtype).itemsize
+        bufs = pool.bufs[key] = [] if POOL_MIN_BYTES <= nbytes <= POOL_MAX_BYTES else None
+    if bufs is None:
+        return np.empty(shape, dtype=dtype)
+    for b in bufs:
+        if sys.getrefcount(b) == _FREE_REFS:
+            return b.reshape(shape)
+    dt = np.dtype(dtype)
+    nbytes = math.prod(shape) * dt.itemsize
+    if _PRIVATE is not None and len(bufs) < POOL_PER_SHAPE and pool.total + nbytes <= POOL_TOTAL_BYTES:
+        # a private anonymous mapping of its own (copied on write in a forked process, never shared),
+        # outside the allocator's heap (which the pool would otherwise pin)
+        root = np.frombuffer(mmap.mmap(-1, nbytes, flags=_PRIVATE), dtype=dt)
+        bufs.append(root)
+        pool.total += nbytes
+        return root.reshape(shape)
+    return np.empty(shape, dtype=dtype)
+
+
+_MISSING = object()
+#: mmap's flag of a private mapping (None where mmap has none: the pool then keeps nothing)
+_PRIVATE = getattr(mmap, "MAP_PRIVATE", None)
+
+
+def _out_like(x: np.ndarray, dtype: Any = None) -> np.ndarray | None:
+    """A pooled array for the result of an elementwise operation on x (and operands of x's
+    layout), in the layout numpy gives it (order K: C for C-contiguous x, the transpose of a C
+    array for a transposed one); None for another layout (numpy then allocates)."""
+    dt = x.dtype if dtype is None else dtype
+    if x.ndim != 2:
+        return None
+    if x.flags.c_contiguous:
+        return _buf(x.shape, dt)
+    if x.flags.f_contiguous:
+        return _buf((x.shape[1], x.shape[0]), dt).T
+    return None
+
+
+def _same_layout(x: np.ndarray, y: np.ndarray) -> bool:
+    """Whether x and y are both C-contiguous or both transposes of C-contiguous arrays (numpy's
+    order K then lays their elementwise result out as they are)."""
+    fx, fy = x.flags, y.flags
+    return (fx.c_contiguous and fy.c_contiguous) or (fx.f_contiguous and fy.f_contiguous
+                                                     and not fx.c_contiguous and not fy.c_contiguous)
+
+
+def _mixed_layout_is_c() -> bool:
+    """Whether numpy lays out the elementwise result of a C-contiguous and a transposed
+    (F-contiguous) operand in C order, either way round (order K; measured once)."""
+    c, f = np.ones((2, 3)), np.ones((3, 2)).T
+    return bool(np.add(c, f).flags.c_contiguous and np.add(f, c).flags.c_contiguous)
+
+
+_MIXED_C = _mixed_layout_is_c()
+
+
+def _binop(f: Any, x: np.ndarray, y: np.ndarray) -> np.ndarray:
+    """f(x, y) for a numpy ufunc f and two arrays of one shape and type, into a pooled array of the
+    layout numpy's own result would have (the operands', or C order for one C-contiguous and one
+    transposed operand where numpy chooses it)."""
+    if x.shape == y.shape and x.dtype == y.dtype and x.ndim == 2:
+        if _same_layout(x, y):
+            out = _out_like(x)
+            if out is not None:
+                return f(x, y, out=out)
+        elif _MIXED_C and ((x.flags.c_contiguous and y.flags.f_contiguous)
+                           or (x.flags.f_contiguous and y.flags.c_contiguous)):
+            return f(x, y, out=_buf(x.shape, x.dtype))
+    return f(x, y)
+
+
+def _matmul(x: np.ndarray, y: np.ndarray) -> np.ndarray:
+    """x @ y into a pooled C-contiguous array (numpy's own result is C-contiguous: the same BLAS
+    call writes it)."""
+    if x.ndim == 2 and y.ndim == 2 and x.dtype == y.dtype and x.dtype in (np.float64, np.float32):
+        return np.matmul(x, y, out=_buf((x.shape[0], y.shape[1]), x.dtype))
+    return x @ y
+
+
+#: identity matrices of the float backend, read-only, by size (up to POOL_MAX_BYTES each, the last few sizes)
+_EYES: dict[int, np.ndarray] = {}
+
+
+def _eye(m: int) -> np.ndarray:
+    """np.eye(m), shared and read-only (an identity's values are never written into; a write would
+    raise) up to POOL_MAX_BYTES."""
+    i = _EYES.get(m)
+    if i is None:
+        i = np.eye(m)
+        if POOL and i.nbytes <= POOL_MAX_BYTES:
+            i.flags.writeable = False
+            if len(_EYES) >= 8:
+                del _EYES[next(iter(_EYES))]
+            _EYES[m] = i
+    return i
+
+
+def _copy(x: np.ndarray) -> np.ndarray:
+    """x.copy() (C order) into a pooled array."""
+    if x.ndim != 2:
+        return x.copy()
+    out = _buf(x.shape, x.dtype)
+    np.copyto(out, x)
+    return out
 
 
 def _gamma(k: int) -> float:
@@ -415,11 +578,16 @@ def _f32(v: np.ndarray, e: float, m32: np.ndarray, mf: float, top: float, nv: fl
 def _down32(x: np.ndarray) -> np.ndarray:
     """x (float64, >= 0) in float32 rounded down, entry by entry, also below float32's normal range
     (rounded to nearest, then one step towards 0)."""
-    y = x.astype(np.float32)
+    out = _out_like(x, np.float32)
+    if out is None:
+        y = x.astype(np.float32)
+    else:
+        y = out                                  # the same conversion, into a pooled array of astype's layout
+        np.copyto(y, x, casting="unsafe")
     # one step towards 0 is one unit less in the bits of a positive float32 (+inf becomes the largest
     # finite float32, as nextafter does); 0 and -0 stay; ten times faster than np.nextafter
     bits = y.view(np.int32)
-    np.subtract(bits, 1, out=bits, where=bits > 0)
+    bits -= bits > 0                     # 1 where the bits are positive, 0 elsewhere (twice as fast as where=)
     return y
 
 
@@ -442,7 +610,7 @@ def _s32(a: F64, limit: float = _M32_MAX) -> tuple[np.ndarray, float, float] | N
         else:
             m = a._m
             with _quiet():
-                top = float(np.max(m)) if m.size else 0.0
+                top = float(m.max()) if m.size else 0.0
             if 0.0 <= top < _M32_MAX:
                 m32, a.mf, a.mtop = _down32(m), _R32, top * (1.0 + 2.0**-20)
             else:
@@ -453,7 +621,7 @@ def _s32(a: F64, limit: float = _M32_MAX) -> tuple[np.ndarray, float, float] | N
     if not a.mtop < limit:
         # the stored top is a bound grown by products: the largest entry itself (one pass)
         with _quiet():
-            top = float(np.max(m32)) if m32.size else 0.0
+            top = float(m32.max()) if m32.size else 0.0
         if not 0.0 <= top < math.inf:
             return None
         a.mtop = top
@@ -508,7 +676,7 @@ def _scale_product(a: F64, b: F64) -> tuple:
         return a.m @ b.m, None, None, None, None
     (a32, fa, ta), (b32, fb, tb) = sa, sb
     g = 2.0 * (k + 4) * 2.0**-24
-    return None, a32 @ b32, fa * fb * (1.0 - g) * (1.0 - 2.0**-50), k * ta * tb * (1.0 + g), None
+    return None, _matmul(a32, b32), fa * fb * (1.0 - g) * (1.0 - 2.0**-50), k * ta * tb * (1.0 + g), None
 
 
 def _scales_sum(a: F64, b: F64) -> tuple:
@@ -524,8 +692,8 @@ def _scales_sum(a: F64, b: F64) -> tuple:
         sb = _s32(b, _S32_MAX) if sa is not None else None
         if sb is not None:
             (a32, fa, ta), (b32, fb, tb) = sa, sb
-            return None, a32 + b32, min(fa, fb) * _R32, (ta + tb) * (1.0 + 2.0**-22), None
-    return a.m + b.m, None, None, None, None
+            return None, _binop(np.add, a32, b32), min(fa, fb) * _R32, (ta + tb) * (1.0 + 2.0**-22), None
+    return _binop(np.add, a.m, b.m), None, None, None, None
 
 
 def _with_scales(v: np.ndarray, e: float, sc: tuple, nv: float | None = None) -> F64:
@@ -538,7 +706,7 @@ def _with_scales(v: np.ndarray, e: float, sc: tuple, nv: float | None = None) ->
 def _exact_zero(a: F64) -> bool:
     """Whether a is the zero matrix exactly (a selection of zero columns with no error)."""
     sel = a.sel
-    return sel is not None and a.lazy is None and a._e == 0.0 and not np.any(sel[1])
+    return sel is not None and a.lazy is None and a._e == 0.0 and not sel[1].any()
 
 
 def _uf(shape) -> float:
@@ -569,10 +737,10 @@ def _block_inverse(a: np.ndarray) -> np.ndarray:
     h = n // 2
     a12, a21 = a[:h, h:], a[h:, :h]
     i11 = _block_inverse(a[:h, :h])
-    t = a21 @ i11                       # A21 A11⁻¹
-    out = np.empty((n, n))
-    out[h:, h:] = _block_inverse(a[h:, h:] - t @ a12)
-    u = i11 @ a12                       # A11⁻¹ A12
+    t = _matmul(a21, i11)               # A21 A11⁻¹
+    out = _buf((n, n))
+    out[h:, h:] = _block_inverse(a[h:, h:] - _matmul(t, a12))
+    u = _matmul(i11, a12)               # A11⁻¹ A12
     np.matmul(u, out[h:, h:], out=out[:h, h:])
     np.negative(out[:h, h:], out=out[:h, h:])             # −A11⁻¹ A12 Σ⁻¹
     np.matmul(out[h:, h:], t, out=out[h:, :h])
@@ -594,15 +762,15 @@ def _solve_top(v: np.ndarray, sel: tuple) -> np.ndarray | None:
     if not 0 < r < n or v.shape[1] != n or not np.array_equal(rows, np.arange(r)):
         return None
     try:
-        W = _block_inverse(v[r:, r:]) @ v[r:, :r]
-        C = v[:r, :r] - v[:r, r:] @ W
-        Y = np.empty((n, r))
+        W = _matmul(_block_inverse(v[r:, r:]), v[r:, :r])
+        C = v[:r, :r] - _matmul(v[:r, r:], W)
+        Y = _buf((n, r))
         np.multiply(_block_inverse(C), signs, out=Y[:r])   # C⁻¹ D: columns times ±1 or 0, exactly
     except np.linalg.LinAlgError:
         return None
     np.matmul(W, Y[:r], out=Y[r:])
     np.negative(Y[r:], out=Y[r:])
-    if not np.all(np.isfinite(Y)):
+    if not np.isfinite(Y).all():
         return None
     return Y
 
@@ -618,13 +786,13 @@ def _skew_plus_diagonal(a: F64) -> tuple[float, float] | None:
     xᵀ v x = Σ d_i x_i² ≥ min d ‖x‖², so σ_min(v) ≥ min d and σ_min(A) ≥ min d − e.  None
     otherwise, or when e is not below min d / 2."""
     v = a.v
-    d = float(np.min(np.diagonal(v)))
+    d = float(np.diagonal(v).min())
     if not d > 0.0 or not a.e < 0.5 * d:
         return None
     with _quiet():
-        h = v + v.T
+        h = np.add(v, v.T, out=_buf(v.shape))         # only tested for zeros (any layout)
     np.fill_diagonal(h, 0.0)
-    if np.any(h):
+    if h.any():
         return None
     beta0 = _up(1.0 / d, 1)
     beta = _up(1.0 / ((d - a.e) * (1.0 - 4 * U64)), 2)
@@ -709,11 +877,20 @@ class Float64Backend(Backend):
 
     def from_array(self, a):
         """Native storage of exact float64 inputs (a block of parameters): no error, scale |v|."""
-        v = np.array(a, dtype=float)
-        return F64(v, 0.0, np.abs(v))
+        out = _out_like(a, np.dtype(np.float64)) if isinstance(a, np.ndarray) else None
+        if out is None:
+            v = np.array(a, dtype=float)
+        else:
+            v = out                     # np.array's copy (and conversion), into a pooled array of its layout
+            np.copyto(v, a, casting="unsafe")
+        return F64(v, 0.0, np.abs(v, out=_out_like(v)))
 
     def from_consts(self, a):
-        top = np.max(np.abs(a), initial=0)
+        # max(0, max |a|) without the array of |a| (its negation of a.min() wraps as abs does)
+        if a.dtype.kind in "if":
+            top = max(0, a.max(initial=0), -a.min(initial=0))
+        else:
+            top = np.max(np.abs(a), initial=0)
         if top >= 2**53:
             return Backend.from_consts(self, a)
         out = self.from_array(a)
@@ -750,7 +927,7 @@ class Float64Backend(Backend):
         return out
 
     def identity(self, m):
-        i = np.eye(m)                        # values and scales: one array (never written into)
+        i = _eye(m)                          # values and scales: one array (never written into)
         out = F64(i, 0.0, i)
         out.diag = (np.ones(m), np.ones(m))
         out.sel = (np.arange(m), np.ones(m))
@@ -771,6 +948,16 @@ class Float64Backend(Backend):
         dv = np.array([float(x.v) for x in xs])
         dm = np.array([float(x.m) for x in xs])
         return self._diagonal(dv, dm, _fro(np.array([float(x.e) for x in xs])), None)
+
+    def diag_from_raw(self, field: Any, vals: np.ndarray) -> F64 | None:
+        """:meth:`diag` of ``field.params_from_raw(vals)`` (parameters drawn at once) from the array
+        itself: values vals, scales |vals|, bound 0 (an exact parameter's), as :meth:`diag` reads
+        them from those numbers; None unless they are the float64 field's own parameters."""
+        if (type(field).param_from_raw is not FloatField.param_from_raw or field.dps is not None
+                or vals.ndim != 1 or vals.dtype != np.float64):
+            return None
+        dv = vals.copy()
+        return self._diagonal(dv, np.abs(dv), _fro(np.zeros(len(dv))), None)
 
     def _diagonal(self, dv: np.ndarray, dm: np.ndarray, e: float, nv: float | None) -> F64:
         """The diagonal matrix of dv (term scales dm, bound e), whose full arrays are made only when
@@ -805,25 +992,25 @@ class Float64Backend(Backend):
             if b.diag is not None:
                 dv, dm = b.diag
                 full = a
-                v = a.v.copy()
+                v = _copy(a.v)
                 v[i, i] = a.v[i, i] + dv if sign > 0 else a.v[i, i] - dv
             else:
                 dv, dm = a.diag
                 full = b
-                v = b.v.copy() if sign > 0 else -b.v
+                v = _copy(b.v) if sign > 0 else np.negative(b.v, out=_out_like(b.v))
                 v[i, i] = dv + b.v[i, i] if sign > 0 else dv - b.v[i, i]
             nv = _fro(v)
             e = _up(a.e + b.e + U64 * nv + _uf(v.shape), 3)
-            dtop = float(np.max(dm)) if k else 0.0
+            dtop = float(dm.max()) if k else 0.0
             sf = _s32(full, _S32_MAX) if 0.0 <= dtop < _S32_MAX else None
             if sf is not None:
                 # in float32 (a float64 operand's scales converted once, see _s32): dm rounded down,
                 # the sum rounded once on the diagonal, the rest copied
                 f32, ff, ft = sf
-                m32 = f32.copy()
+                m32 = _copy(f32)
                 m32[i, i] = f32[i, i] + _down32(dm)
                 return _f32(v, e, m32, min(ff, 1.0) * _R32, (ft + dtop) * (1.0 + 2.0**-22), nv)
-            m = full.m.copy()
+            m = _copy(full.m)
             m[i, i] = full.m[i, i] + dm
             return F64(v, e, m, nv)
 
@@ -845,7 +1032,7 @@ class Float64Backend(Backend):
             self._remember(memo, a, ("+", id(b)), b, out)
             return out
         with _quiet():
-            v = a.v + b.v
+            v = _binop(np.add, a.v, b.v)
             nv = _fro(v)
             out = _with_scales(v, _up(a.e + b.e + U64 * nv + _uf(v.shape), 3), _scales_sum(a, b), nv)
         self._remember(memo, a, ("+", id(b)), b, out)
@@ -868,7 +1055,7 @@ class Float64Backend(Backend):
             self._remember(memo, a, ("-", id(b)), b, out)
             return out
         with _quiet():
-            v = a.v - b.v
+            v = _binop(np.subtract, a.v, b.v)
             nv = _fro(v)
             out = _with_scales(v, _up(a.e + b.e + U64 * nv + _uf(v.shape), 3), _scales_sum(a, b), nv)
         self._remember(memo, a, ("-", id(b)), b, out)
@@ -888,7 +1075,7 @@ class Float64Backend(Backend):
         return None if hit is None else self.T(hit[1])
 
     def neg(self, a):
-        return _like(-a.v, a.e, a, a.nv)
+        return _like(np.negative(a.v, out=_out_like(a.v)), a.e, a, a.nv)
 
     def matmul(self, a, b):
         (ma, k), (_kb, nb) = self.shape(a), self.shape(b)
@@ -981,15 +1168,15 @@ class Float64Backend(Backend):
             return None
         k = c.v.shape[0]
         with _quiet():
-            h = c.v + src.v                  # 0 exactly where c_ij = −A_ij exactly
+            h = _binop(np.add, c.v, src.v)   # 0 exactly where c_ij = −A_ij exactly
             dc, ds = np.diagonal(c.v), np.diagonal(src.v)
-            if not (np.all(dc == 1.0) and np.all(ds == 1.0)):
+            if not ((dc == 1.0).all() and (ds == 1.0).all()):
                 return None
             np.fill_diagonal(h, 0.0)
-            if np.any(h):
+            if h.any():
                 return None
             rows, signs = j.sel
-            w = 2.0 * y.v
+            w = np.multiply(2.0, y.v, out=_out_like(y.v))
             cols = np.arange(w.shape[1])
             w[rows, cols] -= signs
             nw = _fro(w)
@@ -1006,18 +1193,18 @@ class Float64Backend(Backend):
             sc = None
             if a.diag is not None:
                 dv, dm = a.diag
-                v = dv[:, None] * b.v
+                v = np.multiply(dv[:, None], b.v, out=_buf(b.v.shape) if b.v.flags.c_contiguous else None)
                 sc = self._scaled(b, dm, 0)
             elif b.diag is not None:
                 dv, dm = b.diag
-                v = a.v * dv
+                v = np.multiply(a.v, dv, out=_buf(a.v.shape) if a.v.flags.c_contiguous else None)
                 sc = self._scaled(a, dm, 1)
             elif b.sel is not None:
                 rows, signs = b.sel
                 v = a.v[:, rows] * signs
                 sc = self._scaled(a, np.abs(signs), 1, rows)
             else:
-                v = a.v @ b.v
+                v = _matmul(a.v, b.v)
                 back = b.prods.get(id(a)) if b.prods is not None else None
                 if back is not None and back[1].lazy is None and _msym(a) and _msym(b):
                     # |A|_m |B|_m = (|B|_m |A|_m)ᵀ for symmetric scales (the two products of a
@@ -1039,7 +1226,7 @@ class Float64Backend(Backend):
         when given): in float32 when a keeps its scales there (d rounded down to float32, the
         product rounded once, inside the factor 1 − 2⁻²²), in float64 otherwise."""
         with _quiet():
-            dtop = float(np.max(d)) if d.size else 0.0
+            dtop = float(d.max()) if d.size else 0.0
         if a.lazy is None and a._m is None and 0.0 <= dtop < 2.0**60:
             sa = _s32(a, 2.0**60)
             if sa is not None:
@@ -1047,7 +1234,8 @@ class Float64Backend(Backend):
                 d32 = _down32(d)
                 if rows is not None:
                     a32 = a32[:, rows]
-                m32 = d32[:, None] * a32 if axis == 0 else a32 * d32
+                out = _buf(a32.shape, np.float32) if a32.flags.c_contiguous else None
+                m32 = np.multiply(d32[:, None], a32, out=out) if axis == 0 else np.multiply(a32, d32, out=out)
                 return None, m32, fa * _R32, ta * dtop * (1.0 + 2.0**-22), None
         m = a.m if rows is None else a.m[:, rows]
         return (d[:, None] * m if axis == 0 else m * d), None, None, None, None
@@ -1074,7 +1262,7 @@ class Float64Backend(Backend):
             memo[key] = (None, out)
             return out
         with _quiet():
-            v = a.v * cv
+            v = np.multiply(a.v, cv, out=_out_like(a.v))
             nv = _fro(v)
             e = _norm(a) * ce + a.e * abs(cv) + a.e * ce + U64 * nv + _uf(v.shape)
             sa = None
@@ -1084,7 +1272,7 @@ class Float64Backend(Backend):
                 # in float32: cm rounded down to float32, the product rounded once
                 a32, fa, ta = sa
                 c32 = np.nextafter(np.float32(cm), np.float32(0.0))
-                out = _f32(v, _up(e, 6), a32 * c32, fa * _R32, ta * cm * (1.0 + 2.0**-22), nv)
+                out = _f32(v, _up(e, 6), np.multiply(a32, c32, out=_out_like(a32)), fa * _R32, ta * cm * (1.0 + 2.0**-22), nv)
             else:
                 out = F64(v, _up(e, 6), a.m * cm, nv)
         memo[key] = (None, out)
@@ -1122,7 +1310,7 @@ class Float64Backend(Backend):
         inverse exists, and is deferred (see :class:`F64`), computed only if read; a product
         with it is a solve (:meth:`_solve`)."""
         m = a.v.shape[0]
-        if not np.all(np.isfinite(a.v)) or not math.isfinite(a.e):
+        if not np.isfinite(a.v).all() or not math.isfinite(a.e):
             return F64(np.zeros((m, m)), math.inf, np.full((m, m), math.inf))
         if m >= DEFERRED_INVERSE_MIN:
             beta = _skew_plus_diagonal(a)
@@ -1168,14 +1356,14 @@ class Float64Backend(Backend):
             ny = _fro(Y)                         # inf or nan unless every entry is finite
             if not math.isfinite(ny):
                 return F64(Y, math.inf, np.full(shape, math.inf))
-            R = bv - a.v @ Y
+            R = _binop(np.subtract, bv, _matmul(a.v, Y))
             r = _fro(R) + _gamma(k + 1) * (nb + _norm(a) * ny) + (k + 1) * _uf(shape)
             delta = _up(beta0 * r, 4)
             e = _up(beta * eb + beta * a.e * (ny + delta) + delta, 8)
             if e < _S32_MAX and ny < _S32_MAX:
                 # the scales |Y| + e in float32: |Y| rounded down, e rounded to nearest and the sum
                 # once (inside the factor 1 − 2⁻²²); every entry at most ‖Y‖_F + e
-                m32 = _down32(np.abs(Y))
+                m32 = _down32(np.abs(Y, out=_out_like(Y)))
                 m32 += np.float32(e)
                 return _f32(Y, e, m32, _R32, (ny + e) * (1.0 + 2.0**-22), ny)
             return F64(Y, e, np.abs(Y) + e, ny)

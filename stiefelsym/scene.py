@@ -29,7 +29,7 @@ import numpy as np
 from .fields import DegreeField, Dual, DualField, Field, FloatField, DegenerateError
 from .polyfield import SymbolicField
 from .matrix import CoordinateTracker, Mat, block, check_element, definite, scalar_matrix, unify
-from .native import backend
+from .native import _binop, _buf, backend
 from .reverse import Rev, RevField, RevMat, Unsupported, gradient as rev_gradient, leaf as rev_leaf
 
 Scalar = Any
@@ -374,9 +374,12 @@ class Scene(PaperObjects):
         else:
             # the upper triangle row by row (a boolean mask selects in that order, as triu_indices
             # lists it), then mirrored: the lower triangle is 0 there, so the sums are exact
-            arr = np.zeros((m, m), dtype=vals.dtype)
+            # (the arrays of the float backend's pool: np.zeros's numbers, and numpy's layout of
+            # the difference)
+            arr = _buf((m, m), vals.dtype)
+            arr.fill(0)
             arr[_upper_mask(m, 1 if kind == "skew" else 0)] = vals
-            arr = arr - arr.T if kind == "skew" else arr + np.triu(arr, 1).T
+            arr = _binop(np.subtract, arr, arr.T) if kind == "skew" else arr + np.triu(arr, 1).T
         self._param_blocks.append((name, (kind, m, k), vals))
         return Mat._wrap_native(be.from_array(arr), self._field, tags, self.tracker)
 
@@ -469,7 +472,8 @@ class Scene(PaperObjects):
         Q = minus @ inverse                    # in O(n); det Q = 1
         # the first r columns (the first one negated on the second component of O(n)) as one
         # product with the constant n x r matrix [D; 0]
-        D = np.zeros((n, r), dtype=np.int64)
+        D = _buf((n, r), np.int64)
+        D.fill(0)
         D[range(r), range(r)] = 1
         if self.component % 2 == 1:
             D[0, 0] = -1
@@ -624,9 +628,11 @@ class Scene(PaperObjects):
                 and "a_1" not in self._params):
             vals = f.param_values(self._rng, n)
             if vals is not None:
-                xs = [f.param_from_raw(v) for v in vals.tolist()]
+                xs = f.params_from_raw(vals)
+                params = self._params
                 for i, x in enumerate(xs):
-                    self._params[f"a_{i + 1}"] = x
+                    params[f"a_{i + 1}"] = x
+                self._cache["a raw"] = vals     # the same numbers as one array (see A)
                 return xs
         return [self._param(f"a_{i + 1}") for i in range(n)]
 
@@ -641,7 +647,10 @@ class Scene(PaperObjects):
             xs = self._cached("a", self._eigenvalues)
             be = backend(self._field)
             if be is not None:
-                return Mat._wrap_native(be.diag(xs), self._field, ("n", "n"), self.tracker)
+                raw = self._cache.get("a raw")
+                from_raw = getattr(be, "diag_from_raw", None)
+                d = from_raw(self._field, raw) if raw is not None and from_raw is not None else None
+                return Mat._wrap_native(be.diag(xs) if d is None else d, self._field, ("n", "n"), self.tracker)
             M = self.zeros(self.n, self.n, ("n", "n"))
             a = M._a
             for i, x in enumerate(xs):
