@@ -42,6 +42,9 @@ class FreeBackend(Backend):
     """The operations of :class:`Mat` on the storage described above, over a free field (or the
     dual numbers over it): each one computes what the generic path computes."""
 
+    #: :meth:`T` applies ``field.star`` to every entry, as the generic path of ``Mat.T`` does
+    stars = True
+
     def __init__(self, field: Any) -> None:
         self.field = field
         self._nf = field.normalize
