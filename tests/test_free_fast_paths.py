@@ -2,9 +2,10 @@
 
 The native transpose of the free backend (it applies the involution, as the generic path of
 ``Mat.T`` does), the evaluator's scalar · matrix product (the matrix's reflected product at once
-for a scalar type whose own product gives way), and the checker's canonical forms kept across
-checks: each against the general path, and a corrupted certificate still rejected after a good
-one filled the shared forms.
+for a scalar type whose own product gives way), the checker's canonical forms kept across checks,
+the memo of a lazy free field's arithmetic and the memo of normal forms of polynomials: each
+against the general path; a corrupted certificate still rejected after a good one filled the shared
+forms; the arithmetic memo off once the engine is sealed for a claims file.
 """
 from __future__ import annotations
 
@@ -71,3 +72,90 @@ def test_a_forged_certificate_is_rejected_after_good_ones_filled_the_shared_form
             entry["residual"][0]["word"] = list(reversed(entry["residual"][0]["word"]))
         assert not check_certificate(bad).accepted, forge
     assert check_certificate(data).accepted
+
+
+def _values_off():
+    from stiefelsym.free import mat
+    mat.VALUE_MEMO = 0
+    mat.forget_values()
+
+
+def test_the_memo_of_free_arithmetic_returns_what_is_computed_without_it():
+    from stiefelsym.free import mat
+    from stiefelsym.methods import call_claim
+    claim = load_catalog().get("neumann-lax")
+    warm = [call_claim(claim.func, _scene()) for _ in range(3)]
+    assert len(mat._VALUES) > 0
+    _values_off()
+    cold = call_claim(claim.func, _scene())
+    assert not mat._VALUES
+    for k, v in cold.items():
+        for w in warm:
+            assert w[k]._n == v._n and w[k]._tags == v._tags
+
+
+def test_the_memo_keys_polynomials_by_identity_and_scalars_by_type_and_value():
+    from stiefelsym.free import mat
+    s = _scene()
+    be = mat.FreeBackend(s.field, values=True)
+    a, b = s.X._n, s.P.T._n
+    first = be.matmul(a, b)
+    assert be.matmul(a, b) is first
+    a2 = a * 1   # an equal polynomial, another object: computed again, the same value
+    assert be.matmul(a2, b) is not first and be.matmul(a2, b) == first
+    assert be.smul(a, 2) is be.smul(a, 2) and be.smul(a, Fraction(1, 2)) == a * Fraction(1, 2)
+    assert be.neg(a) is be.neg(a) and be.neg(a) == -a
+    # a field that is not lazy (its normalize applies the rules) is not memoized
+    eager = FreeScene(realization="standard", lazy=False)
+    assert not mat.FreeBackend(eager.field, values=True)._memo()
+
+
+def test_sealing_switches_the_memo_off_and_the_seal_sees_it_switched_on():
+    import pytest
+    from stiefelsym.free import mat
+    from stiefelsym.ir import seal
+    seal.seal()
+    assert mat.VALUE_MEMO == 0 and not mat._VALUES
+    run_one(load_catalog().get("neumann-lax"), None, "free", 0)
+    assert not mat._VALUES
+    mat.VALUE_MEMO = 1
+    with pytest.raises(seal.EngineChanged):
+        seal.verify("test")
+
+
+def test_the_normal_form_memo_gives_the_reduction_of_a_fresh_system():
+    from stiefelsym.free.scene import standard_system
+    from stiefelsym.methods import _entries, call_claim
+    claim = load_catalog().get("neumann-lax")
+    s = _scene()
+    checks = call_claim(claim.func, s)
+    for name, value in checks.items():
+        for _pos, x in _entries(value, name):
+            p = x._n if isinstance(x, Mat) else x
+            first, again = s.system.reduce(p), standard_system().reduce(p)
+            assert again.normal_form == first.normal_form and again.rules == first.rules
+            assert _fresh_nf(p) == first.normal_form
+
+
+def _fresh_nf(p):
+    from stiefelsym.free.rewriting import RewritingSystem
+    from stiefelsym.free.scene import standard_system
+    shared = standard_system()
+    own = RewritingSystem(shared.order.copy(), shared.rules)   # memos of its own, empty
+    return own.reduce(p).normal_form
+
+
+def test_the_certificate_memo_gives_the_certificate_of_a_fresh_system():
+    from stiefelsym.free.rewriting import RewritingSystem
+    from stiefelsym.free.scene import standard_system
+    from stiefelsym.methods import _entries, call_claim
+    claim = load_catalog().get("neumann-lax")
+    s = _scene()
+    for name, value in call_claim(claim.func, s).items():
+        for _pos, x in _entries(value, name):
+            p = x._n if isinstance(x, Mat) else x
+            first, again = s.system.certify(p), standard_system().certify(p)
+            shared = standard_system()
+            fresh = RewritingSystem(shared.order.copy(), shared.rules).certify(p)
+            assert [str(t) for t in again.terms] == [str(t) for t in first.terms] == [str(t) for t in fresh.terms]
+            assert again.terms is not first.terms   # a list of its own
