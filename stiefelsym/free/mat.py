@@ -48,7 +48,7 @@ def _out(a: np.ndarray) -> Any:
 # coefficient is keyed by its type and value.  Only values are stored: an operation that raises (a
 # refusal, recorded as it is raised) stores nothing, and one that succeeds has no other effect.
 _VALUES: dict = {}
-_VALUES_MAX = 50_000
+_VALUES_MAX = 4096   # (entries hold polynomials: a bound on memory, not a cache of whole catalogs)
 #: 1 while the memo is used; 0 once the engine is sealed for a user's claims file (:func:`_on_seal`):
 #: claim code could otherwise write into the memo (this constant is in the seal's fingerprint)
 VALUE_MEMO = 1

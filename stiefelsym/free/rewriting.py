@@ -122,6 +122,9 @@ def nonzero_terms(terms: dict) -> dict:
     return out
 
 
+#: entries of a system's memo of polynomials (reduce, certify) before it is emptied: they hold whole
+#: polynomials (an eager scene reduces every intermediate one), so few
+POLY_MEMO_MAX = 4096
 #: the trace factors of a term without traces, as a normal form (read only)
 _NO_TRACES = {(): se.Integer(1)}
 
@@ -591,7 +594,7 @@ class RewritingSystem:
         rules = [r for r in self.rules if r.name in used]
         nf = NCPoly(terms, p.row, p.col)
         if self._applied is None or self._fallback_events == events:
-            if len(self._poly_memo) >= SharedMemos.LIMIT:
+            if len(self._poly_memo) >= POLY_MEMO_MAX:
                 self._poly_memo.clear()
             self._poly_memo[id(p)] = (p, nf, frozenset(used))
         return Reduction(p, nf, rules)
@@ -761,7 +764,7 @@ class RewritingSystem:
             if v != 0:
                 out.append(CertTerm(v, left, hyps[name], right, in_trace, factors, w))
         if plain:
-            if len(self._poly_memo) >= SharedMemos.LIMIT:
+            if len(self._poly_memo) >= POLY_MEMO_MAX:
                 self._poly_memo.clear()
             self._poly_memo[("cert", id(p))] = (p, tuple(out))
         return Certificate(p, self.normal_form(p) if normal_form is None else normal_form, out)
