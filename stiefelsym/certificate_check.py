@@ -134,7 +134,7 @@ class Context:
         self.letters = dict(FIXED_LETTERS)
         self.resolvents: dict[str, Any] = {}
         self.operators: dict[str, tuple[str, tuple]] = {}   # name -> (operator, argument path)
-        self.canon: dict[tuple, tuple] = {}   # (word, *traces) or a trace -> (sign, canonical form) (_add)
+        self.canon: dict[tuple, tuple] = _FIXED_CANON if not declared and len(_FIXED_CANON) < 10**5 else {}
         for name, d in declared.items():
             if name in self.letters:
                 raise Rejected(f"the letter {name} is declared twice or redeclares a fixed letter")
@@ -250,7 +250,10 @@ class Context:
         m1, m2 = min(rots), min(srots)
         return (sign, m1) if m1 < m2 else (sign * s, m2)
 
-_ONE, _MINUS = se.Integer(1), se.Integer(-1)
+_ONE, _MINUS, _ZERO = se.Integer(1), se.Integer(-1), se.Integer(0)
+#: Context.canon, (word, *traces) or a trace -> (sign, canonical form) (see _add): with no declared letter a
+#: function of the words alone (the letters are the fixed table, no operator letter arises), shared by checks
+_FIXED_CANON: dict[tuple, tuple] = {}
 #: the hypotheses E₁E₁ᵀ = I_r and E₁E₁ᵀ + E₂E₂ᵀ = I_r: true at r = 1, resp. r = 2 only
 R1_ONLY, R2_ONLY = "E1E1t", "E1E1t+E2E2t"
 #: XXᵀ = I_n: true at r = n only
@@ -330,9 +333,6 @@ def _rational_function(e: Any, text: str) -> None:
     raise Rejected(f"the coefficient {text} is not a rational function of the scalars ({type(e).__name__})")
 
 
-_ZERO = se.Integer(0)
-
-
 def is_zero(c: Any) -> bool:
     """Exact zero test of a rational function: its expanded numerator is 0."""
     e = se.expand(c)
@@ -368,7 +368,7 @@ def _add(poly: dict, c: Any, traces: list, word: tuple, ctx: Context) -> None:
                 s2, t2 = ctx.canon_word(t)
                 ctx.canon[t] = (s2 * (cy := ctx.cyclic(t2))[0], cy[1])
             s, keys = s * ctx.canon[t][0], keys + [ctx.canon[t][1]]
-        hit = ctx.canon[memo] = (s, (tuple(sorted(keys)), w) if s else None)
+        hit = ctx.canon[memo] = (se.Integer(s) if s else 0, (tuple(sorted(keys)), w) if s else None)   # (c * s: symengine)
     s, key = hit
     if s:
         poly[key] = poly[key] + c * s if key in poly else c * s

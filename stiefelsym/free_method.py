@@ -14,6 +14,7 @@ verdict is ``proved``; a certificate it rejects makes the verdict ``error``.
 """
 from __future__ import annotations
 
+import functools
 import time
 from typing import Any, Callable
 
@@ -104,7 +105,7 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
                 else:
                     proved_entries.append((pos, red, len(derivations) if red.rules else None))
                 if red.rules or not red.is_zero:
-                    derivations.append(f"\\paragraph{{{tex_text(unicode_name(pos))}}}\n{red.latex()}")
+                    derivations.append(f"\\paragraph{{{entry_title(pos)}}}\n{red.latex()}")
             outcomes.append(CheckOutcome(name, "zero" if not bad else "open",
                                          "" if not bad else f"{bad} entries with nonzero normal form"))
     except RewritingError as exc:
@@ -193,6 +194,12 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
                        f"independent checker; every entry has normal form 0; rules "
                        f"applied while building and reducing the residual: {names}")
     return res
+
+
+@functools.lru_cache(maxsize=4096)
+def entry_title(pos: str) -> str:
+    """The title of a residual entry's derivation, in LaTeX (a function of the position's text)."""
+    return tex_text(unicode_name(pos))
 
 
 def fixed_r(claim: Claim) -> int:

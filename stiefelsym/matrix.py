@@ -479,8 +479,12 @@ class Mat:
     def T(self) -> "Mat":
         tags = (self._tags[1], self._tags[0])
         star = self._field.star
-        if star is None and self._n is not None:
-            return self._new_n(backend(self._field).T(self._n), tags)
+        if self._n is not None:
+            be = backend(self._field)
+            # a backend whose transpose applies the field's involution to every entry (what the
+            # generic path below does) takes the native path over a field with one as well
+            if star is None or getattr(be, "stars", False):
+                return self._new_n(be.T(self._n), tags)
         a = self._view().T.copy()
         if star is not None:
             for idx, x in np.ndenumerate(a):

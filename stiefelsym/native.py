@@ -67,6 +67,10 @@ class quiet_numpy:
 class Backend:
     """Whole-matrix operations over one field (storage is backend-specific)."""
 
+    #: whether :meth:`T` applies the field's involution ``field.star`` to every entry (a field with an
+    #: involution takes the native transpose only from a backend that does)
+    stars = False
+
     def from_obj(self, a: np.ndarray) -> Any:
         raise NotImplementedError
 

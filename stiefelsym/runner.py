@@ -10,6 +10,7 @@ never by the code that ran the claim.
 """
 from __future__ import annotations
 
+import functools
 import shlex
 from typing import Callable, Iterable, Sequence
 
@@ -411,5 +412,11 @@ def rerun_command(result: Result, hard: str | None = None) -> str:
             hard = next((k for k, v in HARD_CASES.items() if v.description in text), None)
     if hard:
         parts += ["--hard", hard]
+    return _command_line(tuple(parts))
+
+
+@functools.lru_cache(maxsize=4096)
+def _command_line(parts: tuple[str, ...]) -> str:
+    """The words quoted for a shell and joined (a function of the words)."""
     return " ".join(shlex.quote(p) for p in parts)
 

@@ -40,7 +40,13 @@ def catalog():
 @pytest.fixture(autouse=True)
 def _engine_unsealed_after_each_test():
     """A test that loads a claims file seals the engine for its process (stiefelsym.ir.seal); the next
-    test starts unsealed, so that tests may replace engine functions with monkeypatch."""
+    test starts unsealed, so that tests may replace engine functions with monkeypatch.  The memo of the
+    free field's arithmetic (stiefelsym.free.mat, switched off by sealing) starts empty and on in every
+    test: a value computed before a test replaced an engine function is never returned in it."""
+    from stiefelsym.free import mat
+    mat.forget_values()
     yield
     from stiefelsym.ir import seal
     seal._STATE.update(modules=None, print=None)
+    mat.VALUE_MEMO = 1
+    mat.forget_values()

@@ -38,13 +38,57 @@ def _out(a: np.ndarray) -> Any:
     return a[0, 0] if a.shape == (1, 1) else a
 
 
+# The arithmetic of a lazy free field, memoized.  On a lazy field the value of a + b, a − b, a·b, −a
+# and c·a for polynomials a, b (immutable) and a coefficient c is a function of the operands alone:
+# the polynomial arithmetic of :mod:`.algebra` followed by the collection of coefficients (no rule of
+# the scene's rewriting system is applied), both pure.  Every lazy scene builds its expressions from
+# the same letter polynomials, so a warm run meets the very operands of the last one: the memo
+# returns the very value.  Polynomials are keyed by identity, and an entry holds its operands, so an
+# id cannot be reused while its entry lives, and a hit is an operation on the same objects; a
+# coefficient is keyed by its type and value.  Only values are stored: an operation that raises (a
+# refusal, recorded as it is raised) stores nothing, and one that succeeds has no other effect.
+_VALUES: dict = {}
+_VALUES_MAX = 4096   # (entries hold polynomials: a bound on memory, not a cache of whole catalogs)
+#: 1 while the memo is used; 0 once the engine is sealed for a user's claims file (:func:`_on_seal`):
+#: claim code could otherwise write into the memo (this constant is in the seal's fingerprint)
+VALUE_MEMO = 1
+
+
+def forget_values() -> None:
+    """Empty the memo (tests that replace engine functions start from an empty one)."""
+    _VALUES.clear()
+
+
+def _on_seal() -> None:
+    """Called by :func:`stiefelsym.ir.seal.seal` before the first user claims file runs."""
+    global VALUE_MEMO
+    VALUE_MEMO = 0
+    _VALUES.clear()
+
+
+def _remember(key: tuple, a: Any, b: Any, value: Any) -> Any:
+    if len(_VALUES) >= _VALUES_MAX:
+        _VALUES.clear()
+    _VALUES[key] = (a, b, value)
+    return value
+
+
 class FreeBackend(Backend):
     """The operations of :class:`Mat` on the storage described above, over a free field (or the
     dual numbers over it): each one computes what the generic path computes."""
 
-    def __init__(self, field: Any) -> None:
+    #: :meth:`T` applies ``field.star`` to every entry, as the generic path of ``Mat.T`` does
+    stars = True
+
+    def __init__(self, field: Any, values: bool = False) -> None:
         self.field = field
         self._nf = field.normalize
+        #: the field is a plain free field (not dual numbers over one): its arithmetic is memoized
+        #: while it is lazy (see _VALUES)
+        self._values = values and type(self) is FreeBackend
+
+    def _memo(self) -> bool:
+        return self._values and VALUE_MEMO == 1 and self.field.lazy is True
 
     # -- storage ---------------------------------------------------------------
     def from_obj(self, a: np.ndarray) -> Any:
@@ -65,24 +109,63 @@ class FreeBackend(Backend):
 
     # -- arithmetic --------------------------------------------------------------
     def add(self, a: Any, b: Any) -> Any:
+        if type(a) is NCPoly and type(b) is NCPoly:
+            if self._memo():
+                key = ("+", id(a), id(b))
+                hit = _VALUES.get(key)
+                if hit is not None and hit[0] is a and hit[1] is b:
+                    return hit[2]
+                return _remember(key, a, b, self._nf(a.__add__(b)))
+            return self._nf(a.__add__(b))   # (what a + b calls)
         if type(a) is not np.ndarray and type(b) is not np.ndarray:
             return self._nf(a + b)
         return self._norm(_arr(a) + _arr(b))
 
     def sub(self, a: Any, b: Any) -> Any:
+        if type(a) is NCPoly and type(b) is NCPoly:
+            if self._memo():
+                key = ("-", id(a), id(b))
+                hit = _VALUES.get(key)
+                if hit is not None and hit[0] is a and hit[1] is b:
+                    return hit[2]
+                return _remember(key, a, b, self._nf(a.__sub__(b)))
+            return self._nf(a.__sub__(b))   # (what a - b calls)
         if type(a) is not np.ndarray and type(b) is not np.ndarray:
             return self._nf(a - b)
         return self._norm(_arr(a) - _arr(b))
 
     def neg(self, a: Any) -> Any:
+        if type(a) is NCPoly and self._memo():
+            key = ("neg", id(a))
+            hit = _VALUES.get(key)
+            if hit is not None and hit[0] is a:
+                return hit[2]
+            return _remember(key, a, None, -a)
         return -a
 
     def matmul(self, a: Any, b: Any) -> Any:
+        if type(a) is NCPoly and type(b) is NCPoly:
+            if self._memo():
+                key = ("*", id(a), id(b))
+                hit = _VALUES.get(key)
+                if hit is not None and hit[0] is a and hit[1] is b:
+                    return hit[2]
+                return _remember(key, a, b, self._nf(a._mul_poly(b)))
+            return self._nf(a._mul_poly(b))   # (what a * b calls)
         if type(a) is not np.ndarray and type(b) is not np.ndarray:
             return self._nf(a * b)
         return self._norm(np.dot(_arr(a), _arr(b)))
 
     def smul(self, a: Any, c: Any) -> Any:
+        if type(a) is NCPoly and self._memo():
+            key = ("c*", id(a), type(c), c)
+            try:
+                hit = _VALUES.get(key)
+            except TypeError:   # an unhashable scalar: no memo
+                return self._nf(a * c)
+            if hit is not None and hit[0] is a:
+                return hit[2]
+            return _remember(key, a, c, self._nf(a * c))
         if type(a) is not np.ndarray:
             return self._nf(a * c)
         nf = self._nf

@@ -122,6 +122,13 @@ def nonzero_terms(terms: dict) -> dict:
     return out
 
 
+#: entries of a system's memo of polynomials (reduce, certify) before it is emptied: they hold whole
+#: polynomials (an eager scene reduces every intermediate one), so few
+POLY_MEMO_MAX = 4096
+#: the trace factors of a term without traces, as a normal form (read only)
+_NO_TRACES = {(): se.Integer(1)}
+
+
 class Order:
     """Deg-lex order on words: longer is larger, equal lengths compare letter ranks left to right.
 
@@ -209,7 +216,11 @@ class Rule:
         return rf"{word_latex(self.lhs)} \to {self.rhs.latex()}"
 
     def __str__(self) -> str:
-        return f"{self.name}: {word_str(self.lhs)} -> {self.rhs}   [{self.reason}]"
+        text = self.__dict__.get("_text")   # (a function of the rule's fields, which are frozen)
+        if text is None:
+            text = f"{self.name}: {word_str(self.lhs)} -> {self.rhs}   [{self.reason}]"
+            object.__setattr__(self, "_text", text)
+        return text
 
 
 @dataclass
@@ -295,10 +306,13 @@ class SharedMemos:
         self.cycle: dict = {}
         self.trace: dict = {}
         self.cert: tuple[dict, dict, dict] = ({}, {}, {})
+        #: normal forms of polynomials, by identity: id -> (polynomial, normal form, rules used), and
+        #: certificates of polynomials without traces: ("cert", id) -> (polynomial, terms)
+        self.poly: dict = {}
 
     def bound(self) -> None:
         """Empty the memos when they outgrow LIMIT entries (between two systems' uses)."""
-        memos = (self.word, self.cycle, self.trace) + self.cert
+        memos = (self.word, self.cycle, self.trace, self.poly) + self.cert
         if sum(len(m) for m in memos) > self.LIMIT:
             for m in memos:
                 m.clear()
@@ -327,6 +341,7 @@ class RewritingSystem:
         if shared is not None:
             shared.bound()
             self._word_memo, self._cycle_memo, self._trace_memo = shared.word, shared.cycle, shared.trace
+            self._poly_memo = shared.poly
             self._cert_memos = shared.cert
             self._applied = set()
 
@@ -334,6 +349,7 @@ class RewritingSystem:
         self._word_memo: dict[Word, tuple[dict, frozenset]] = {}
         self._cycle_memo: dict[Word, tuple[dict, frozenset]] = {}
         self._trace_memo: dict[Word, tuple[dict, frozenset]] = {}
+        self._poly_memo: dict[int, tuple] = {}
         #: certificates of words, cyclic reductions and trace normal forms (see certify)
         self._cert_memos: tuple[dict, dict, dict] = ({}, {}, {})
         #: the rule names this system's reductions used, while its memos are shared (the memos then
@@ -550,7 +566,14 @@ class RewritingSystem:
         return [r for r in self.rules if r.name in names]
 
     def reduce(self, p: NCPoly) -> Reduction:
-        """Normal form of p with the rules used."""
+        """Normal form of p with the rules used (memoized by the polynomial, which is immutable and
+        which the memo holds, so that its id is not reused: like the memos of words and traces, a
+        function of the rules; a reduction that met a trace fallback is not kept in a shared memo)."""
+        hit = self._poly_memo.get(id(p))
+        if hit is not None and hit[0] is p:
+            self._track(hit[2])
+            return Reduction(p, hit[1], [r for r in self.rules if r.name in hit[2]])
+        events = self._fallback_events
         out: dict = {}
         used: set[str] = set()
         for (tm, w), c in p.terms.items():
@@ -560,7 +583,7 @@ class RewritingSystem:
                 tn, u2 = self._traces_nf(tm)
                 used |= u2
             else:
-                tn = {(): se.Integer(1)}
+                tn = _NO_TRACES
             for w2, c2 in wn.items():
                 for t2, c3 in tn.items():
                     k = (t2, w2)
@@ -569,7 +592,12 @@ class RewritingSystem:
         terms = nonzero_terms(out)
         self._track(used)
         rules = [r for r in self.rules if r.name in used]
-        return Reduction(p, NCPoly(terms, p.row, p.col), rules)
+        nf = NCPoly(terms, p.row, p.col)
+        if self._applied is None or self._fallback_events == events:
+            if len(self._poly_memo) >= POLY_MEMO_MAX:
+                self._poly_memo.clear()
+            self._poly_memo[id(p)] = (p, nf, frozenset(used))
+        return Reduction(p, nf, rules)
 
     def normal_form(self, p: NCPoly) -> NCPoly:
         return self.reduce(p).normal_form
@@ -695,6 +723,12 @@ class RewritingSystem:
         ``normal_form``: nf(p) when the caller has it (from :meth:`reduce` of this system).
 
         Raises :class:`CertificateError` if a rule used has no cofactor expansion."""
+        # without traces, the terms are a function of p and the rules (the certificates of its words,
+        # memoized, record nothing): kept with the normal forms, by the polynomial (see reduce)
+        plain = all(not tm for tm, _w in p.terms)
+        hit = self._poly_memo.get(("cert", id(p))) if plain else None
+        if hit is not None and hit[0] is p:
+            return Certificate(p, self.normal_form(p) if normal_form is None else normal_form, list(hit[1]))
         steps: dict = {}   # (in_trace, trace factors, word, pre, rule name, post) -> coefficient
         for (tm, w), c in p.terms.items():
             if tm:
@@ -704,7 +738,7 @@ class RewritingSystem:
                 tn, used = self._traces_nf(tm)
                 self._track(used)
             else:
-                tn = {(): se.Integer(1)}
+                tn = _NO_TRACES
             wc = self._word_cert(w)
             if wc:
                 for t2, c3 in tn.items():
@@ -729,6 +763,10 @@ class RewritingSystem:
             v = simplify_coef(v)
             if v != 0:
                 out.append(CertTerm(v, left, hyps[name], right, in_trace, factors, w))
+        if plain:
+            if len(self._poly_memo) >= POLY_MEMO_MAX:
+                self._poly_memo.clear()
+            self._poly_memo[("cert", id(p))] = (p, tuple(out))
         return Certificate(p, self.normal_form(p) if normal_form is None else normal_form, out)
 
 

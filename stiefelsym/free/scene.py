@@ -183,6 +183,9 @@ def _standard_rules() -> tuple:
     return _STANDARD_RULES
 
 
+#: the size of the memo of simplified coefficients up to which nonzero numbers are added to it
+_SIMPLE_NUMBERS_MAX = 50_000
+
 _STANDARD_RULES: tuple | None = None
 #: the polynomial of each letter (the word of one letter)
 _LETTER_POLYS: dict = {}
@@ -286,7 +289,7 @@ class FreeField(Field):
 
     def native_backend(self) -> FreeBackend:
         """The whole-matrix backend (:mod:`.mat`): the matrices stay :class:`Mat`."""
-        return FreeBackend(self)
+        return FreeBackend(self, values=type(self) is FreeField)
 
     def const(self, q: int | Fraction) -> Any:
         return as_coef(Fraction(q))
@@ -299,9 +302,14 @@ class FreeField(Field):
             if self.lazy:   # collect coefficients only
                 numbers, simple = _NONZERO_NUMBER_TYPES, _SIMPLE   # is_simplified, inlined
                 try:
+                    if simple.issuperset(x.terms.values()):   # every coefficient (one pass in C)
+                        return x
                     for c in x.terms.values():
-                        if type(c) not in numbers and c not in simple:
-                            return NCPoly._raw(nonzero_terms(x.terms), x.row, x.col)
+                        if c not in simple:
+                            if type(c) not in numbers:
+                                return NCPoly._raw(nonzero_terms(x.terms), x.row, x.col)
+                            if len(simple) < _SIMPLE_NUMBERS_MAX:
+                                simple.add(c)   # a nonzero number: simplify_coef returns it unchanged
                 except TypeError:   # an unhashable coefficient: not known to be simplified
                     return NCPoly._raw(nonzero_terms(x.terms), x.row, x.col)
                 return x    # polynomials are immutable: nothing to collect, the same one

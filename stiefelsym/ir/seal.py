@@ -120,6 +120,10 @@ def seal() -> None:
         for attr, v in list(vars(sys.modules[name]).items()):
             if type(v).__name__ == "_LazyModule":
                 getattr(v, "__name__", None)
+    for name in names:              # memos a claims file could write into are switched off (e.g. free.mat)
+        hook = vars(sys.modules[name]).get("_on_seal")
+        if isinstance(hook, types.FunctionType):
+            hook()
     modules = names + [m for m in _LIBRARIES if m in sys.modules]
     _STATE["print"] = _fingerprint(modules)
     _STATE["modules"] = modules
