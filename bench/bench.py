@@ -126,6 +126,48 @@ def la1_numpy(n: int, r: int, rng: Any) -> Any:
     return dL - (M @ L - L @ M)
 
 
+def la1_flint(n: int, r: int, p: int, rng: Any) -> Any:
+    """The residual of LA1 at a random point of the Cayley chart over GF(p), written by hand with flint's
+    ``nmod_mat``: the products of :func:`la1_numpy` (the Cayley point, the flow, the residual), with no degree
+    markers, no scene and no verdict (the baseline of the modular method's overhead per point)."""
+    from flint import nmod, nmod_mat
+
+    def rand(m: int, k: int) -> Any:
+        return nmod_mat(m, k, [rng.randrange(p) for _ in range(m * k)], p)
+
+    def skew(m: int) -> Any:
+        M = nmod_mat(m, m, p)
+        for i in range(m):
+            for j in range(i + 1, m):
+                x = rng.randrange(p)
+                M[i, j], M[j, i] = x, p - x
+        return M
+
+    def diag(m: int, k: int, xs: list[int]) -> Any:
+        M = nmod_mat(m, k, p)
+        for i, x in enumerate(xs):
+            M[i, i] = x
+        return M
+
+    S, W, Z = skew(n), skew(r), rand(n, r)
+    A = diag(n, n, [rng.randrange(p) for _ in range(n)])
+    lam, kappa = nmod(rng.randrange(p), p), nmod(rng.randrange(p), p)
+    E = diag(n, r, [1] * min(n, r))
+    X = (diag(n, n, [1] * n) + S).solve(E) * 2 - E
+    XT = X.transpose()
+    P = X * W + Z - X * (XT * Z)
+    PT = P.transpose()
+    k = 1 + 2 * kappa
+    Xd = P - X * (PT * X) * k
+    Pd = -(A * X) - X * (PT * P) + P * (XT * P) * k + X * ((XT * A) * X)
+    Phi = P * XT - X * PT
+    XXt = X * XT
+    L = Phi * lam + XXt - A * (lam * lam)
+    M = Phi - A * lam
+    dL = (Pd * XT + P * Xd.transpose() - Xd * PT - X * Pd.transpose()) * lam + Xd * XT + X * Xd.transpose()
+    return dL - (M * L - L * M)
+
+
 # --------------------------------------------------------------------------- helpers
 
 class NotYet(Exception):
@@ -378,6 +420,35 @@ def main(argv=None) -> int:
         return run
     bench.target("modular LA1 per point, (8,4)", 1.0, "ms", "lower", modular(8, 4))
     bench.target("modular LA1 per point, (100,50)", 50.0, "ms", "lower", modular(100, 50))
+
+    # 4b. the modular point of LA1 against the same products written by hand with flint's nmod_mat
+    def modular_over_flint(n: int, r: int) -> Callable[[], tuple[float, str]]:
+        def run() -> tuple[float, str]:
+            import random as _random
+            from stiefelsym.fields import random_prime
+            size = Size(n, r)
+            rng = _random.Random(0)
+            p = random_prime(rng)
+            for _ in range(2):
+                run_one(LA1, size, "modular", seed=0)
+                la1_flint(n, r, p, rng)
+            k = max(5, args.repeat)
+            cpu = {"modular": math.inf, "flint": math.inf}
+            for _ in range(k):
+                c0 = time.process_time()
+                res = run_one(LA1, size, "modular", seed=0)
+                cpu["modular"] = min(cpu["modular"], (time.process_time() - c0) / _points(res))
+                c0 = time.process_time()
+                la1_flint(n, r, p, rng)
+                cpu["flint"] = min(cpu["flint"], time.process_time() - c0)
+            if res.verdict != "checked":
+                raise NotYet(f"modular {res.verdict}: {(res.message or '')[:120]}")
+            return cpu["modular"] / cpu["flint"], (
+                f"CPU per point: modular {1e3 * cpu['modular']:.1f} ms (a whole run over its {_points(res)} points), "
+                f"hand-written nmod_mat {1e3 * cpu['flint']:.1f} ms (the Cayley point, the flow and the residual of "
+                f"LA1 at a prime of [2^60, 2^61); best of {k} interleaved warm runs)")
+        return run
+    bench.target("modular LA1 point / hand-written flint, (100,50)", 1.5, "x", "lower", modular_over_flint(100, 50))
 
     # 5. a float check of a Lax claim at n = 200
     def float200() -> tuple[float, str]:

@@ -128,7 +128,7 @@ def double_lax_at_the_diagonal(s, flipped):
             "A(lambda) - A*_neum(lambda)": A_dual_double(s, z) - A_dual_euclidean(s)}
 
 
-@claim("double-neumann-dual-lax-extends-la3", paper=("dual-D", "LA3*D", "LA3", "LA4"), kind="id",
+@claim("double-neumann-dual-lax-extends-la3", paper=("dual-D", "LA3*D", "LA3", "LA4"), kind="id", exact_max_n=3,
        fails_at=lambda n, r: True,
        erratum="""The text before Theorem dual-D says that (LA3*D) extends the Lax representation (LA3): at X = Y,
        X' = Y' = P the printed L(lambda) of (LA3*D) is not L*_neum(lambda) of (LA3), because of the (I_n - lambda

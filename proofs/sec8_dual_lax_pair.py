@@ -111,7 +111,7 @@ def dual_lax_pair_euclidean_metric(s):
 # -- the spectral curve (2r-integrals) ------------------------------------------------------
 
 @claim("dual-lax-symplectic-structure", paper=("LA4", "2r-integrals"), kind="id",
-       sizes=admissible(n_max=5),
+       sizes=admissible(n_max=5), exact_max_n=5,
        statement=r"(J\mathcal L^*_{neum}(\lambda))^T=J\mathcal L^*_{neum}(\lambda),\ "
                  r"J=\begin{pmatrix}0&\mathbf I_r\\-\mathbf I_r&0\end{pmatrix},\qquad "
                  r"\tr\mathcal L^*_{neum}(\lambda)^k=0\ (k=1,3)")

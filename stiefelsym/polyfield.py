@@ -1285,7 +1285,7 @@ class PolyBackend(Backend):
         if m == 0:
             return self.zeros(0, 0)
         N = [[a.a[i, j] for j in range(m)] for i in range(m)]
-        if m > self.field.max_solve and (a.den or not _numeric_pivots(N)):
+        if m > self.field.max_solve and not _small_core(N, self.field.max_solve) and (a.den or not _numeric_pivots(N)):
             raise SymbolicBudget(f"a symbolic {m}x{m} linear solve")
         rows = [N[i] + [R.one if j == i else R.zero for j in range(m)] for i in range(m)]
         prev = R.one
@@ -1384,6 +1384,39 @@ def _dot(a: np.ndarray, b: np.ndarray, zero) -> np.ndarray:
             out[pos] = zero if acc is None else acc
             pos += 1
     return out.reshape(m, n)
+
+
+def _small_core(N, k: int) -> bool:
+    """Whether at most k rows (with their columns) carry every nonzero entry off the diagonal of N
+    (a vertex cover of its pattern).  Each row outside such a cover has one nonzero entry outside
+    the cover's columns, its diagonal: eliminating those rows divides by diagonal entries only, and
+    what is left is a symbolic k x k system on the cover (its Schur complement), within the budget
+    of a k x k solve.  An arrowhead (μI − A with the chart's diagonal blocks A11, A22 and r or
+    n − r at most k) is such a matrix."""
+    m = len(N)
+    nbr: dict[int, set[int]] = {}
+    for i in range(m):
+        for j in range(i + 1, m):
+            if not (N[i][j].is_zero() and N[j][i].is_zero()):
+                nbr.setdefault(i, set()).add(j)
+                nbr.setdefault(j, set()).add(i)
+    if any(N[i][i].is_zero() for i in range(m) if i not in nbr):
+        return False                            # a zero pivot outside the core: leave it to the general rule
+
+    def cover(nbr: dict[int, set[int]], k: int) -> bool:
+        if not nbr:
+            return True
+        if k == 0:
+            return False
+        v = max(nbr, key=lambda u: len(nbr[u]))
+        # an edge (v, u) is covered by v, or else by every neighbour of v
+        options = [[v]] + ([sorted(nbr[v])] if len(nbr[v]) <= k else [])
+        for take in options:
+            rest = {u: ws - set(take) for u, ws in nbr.items() if u not in take}
+            if cover({u: ws for u, ws in rest.items() if ws}, k - len(take)):
+                return True
+        return False
+    return cover(nbr, k)
 
 
 def _numeric_pivots(N) -> bool:

@@ -240,7 +240,7 @@ class Scene(PaperObjects):
     def __init__(self, n: int, r: int, field: Field, *, chart: str = "cayley",
                  rng: random.Random | None = None, component: int = 0,
                  realization: str = "standard", options: Mapping[str, Any] | None = None,
-                 tracker: CoordinateTracker | None = None) -> None:
+                 tracker: CoordinateTracker | None = None, right_reduction: bool = False) -> None:
         if not isinstance(n, int) or not isinstance(r, int):
             raise SizeError("n and r must be integers")
         if r < 1:
@@ -257,7 +257,10 @@ class Scene(PaperObjects):
         self._realization = realization
         self._options = dict(options or {})
         self._tracker = tracker if tracker is not None else CoordinateTracker({"n": n, "r": r})
-        if chart == "equivariant" and realization == "metric" and tracker is None:
+        #: the equivariant chart of the standard realization also reduces by O(r) acting on the right
+        #: (A11 diagonal); the metric realization's chart always does
+        self._right_reduction = chart == "equivariant" and (realization == "metric" or right_reduction)
+        if self._right_reduction and tracker is None:
             self._tracker.watch_r()               # the chart's reduction uses O(r) as well
         self._params: dict[str, Any] = {}
         self._param_blocks: list[tuple[str, Any, Any]] = []
@@ -514,7 +517,37 @@ class Scene(PaperObjects):
                     "stabilizer diag(R, S) of X0, with R in O(r) acting on the right as well, diagonalizes "
                     "B11 and B22; the residuals are covariant under (X, P, A) -> (gXh^T, gPh^T, gAg^T), "
                     "g in O(n), h in O(r), because {why}")
+        if self._right_reduction:
+            return ("equivariance: X = X0 = (E_1..E_r), P = (W; Z) with W skew, A symmetric with its diagonal "
+                    "blocks A11 (r x r) and A22 ((n - r) x (n - r)) diagonal and A12 generic; O(n) moves X0 to "
+                    "every point of V(n, r) and the stabilizer diag(R, S) of X0, with R in O(r) acting on the "
+                    "right as well, keeps P in the chart and diagonalizes A11 and A22; the residuals are "
+                    "covariant under (X, P, A) -> (gXh^T, gPh^T, gAg^T), g in O(n), h in O(r), because {why}")
+        if self.n - self.r >= 2:
+            return ("equivariance: X = X0 = (E_1..E_r), P = (W; Z) with W skew, A symmetric with its block A22 "
+                    "((n - r) x (n - r)) diagonal and A11, A12 generic; O(n) moves X0 to every point of V(n, r) "
+                    "and the stabilizer diag(I_r, S), S in O(n - r), of X0 keeps P in the chart and "
+                    "diagonalizes A22; the residuals are covariant under (X, P, A) -> (gX, gP, gAg^T), g in "
+                    "O(n), because {why}")
         return None
+
+    def _equivariant_A(self) -> Mat:
+        """A of the equivariant chart of the standard realization: symmetric, with its block A22
+        ((n − r) × (n − r)) diagonal and A12 generic.  The chart's reduction: the stabilizer of
+        X0 in O(n), Q = diag(I_r, S) with S ∈ O(n − r), fixes X0, keeps P = (W; Z) in the chart (Z
+        generic) and diagonalizes A22 ↦ S A22 Sᵀ; the claims are covariant under O(n).  With the
+        O(r) reduction (``right_reduction``: claims covariant under X ↦ QXRᵀ, P ↦ QPRᵀ, A ↦ QAQᵀ as
+        well), Q = diag(R, S) with the same R ∈ O(r) keeps X0 and P = (RWRᵀ; SZRᵀ) in the chart and
+        diagonalizes A11 ↦ R A11 Rᵀ too."""
+        n, r = self.n, self.r
+        A = self.zeros(n, n, ("n", "n"))
+        a = A._a
+        for i in range(n):
+            for j in range(i, n):
+                if i != j and (i >= r or (j < r and self._right_reduction)):
+                    continue                     # A22 is diagonal, and so is A11 with the O(r) reduction
+                a[i, j] = a[j, i] = self._param(param_name("A", i, j))
+        return A
 
     def _Z_block(self, prefix: str, n: int, r: int) -> np.ndarray:
         """The (n − r) × r block Z of P at X0: entries named by their rows in P (r..n−1)."""
@@ -643,7 +676,7 @@ class Scene(PaperObjects):
             if self._chart == "equivariant":
                 if self._realization == "metric":
                     return self.Ainv.inv()
-                return self._sym_params("A", self.n, "n")
+                return self._equivariant_A()
             xs = self._cached("a", self._eigenvalues)
             be = backend(self._field)
             if be is not None:

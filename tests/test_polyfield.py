@@ -146,11 +146,30 @@ def test_inverse_and_singular_and_budget():
     S = Mat._rows([[x, y], [2 * x, 2 * y]], F)
     with pytest.raises(DegenerateError):
         S.inv()
+    # a dense 4x4 is one diagonal pivot and a 3x3 core (within budget); a dense 5x5 is not
     B4 = Mat._rows([[x if i == j else y + i * j for j in range(4)] for i in range(4)], F)
+    assert (B4 @ B4.inv() - Mat.identity(4, F)).is_zero()
+    B5 = Mat._rows([[x if i == j else y + i * j for j in range(5)] for i in range(5)], F)
     with pytest.raises(SymbolicBudget):
-        B4.inv()
+        B5.inv()
     N4 = Mat._rows([[1 if i == j else (x if j > i else 0) for j in range(4)] for i in range(4)], F)
     assert (N4 @ N4.inv() - Mat.identity(4, F)).is_zero()
+
+
+def test_budget_admits_a_small_core():
+    """A 7x7 arrowhead (nonzeros off the diagonal only in 3 rows and their columns) is a 3x3 symbolic
+    solve after diagonal pivots: inverted exactly; with a 4-row border it is refused."""
+    F = SymbolicField()
+
+    def arrow(m, k):
+        ps = [F.param(f"p{i}") for i in range(m)]
+        qs = {(i, j): F.param(f"q{i}_{j}") for i in range(k) for j in range(k, m)}
+        return Mat._rows([[ps[i] if i == j else qs.get((min(i, j), max(i, j)), 0) if min(i, j) < k else 0
+                           for j in range(m)] for i in range(m)], F)
+    A = arrow(7, 3)
+    assert (A @ A.inv() - Mat.identity(7, F)).is_zero()
+    with pytest.raises(SymbolicBudget):
+        arrow(8, 4).inv()
 
 
 def test_zero_test_is_exact():
