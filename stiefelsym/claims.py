@@ -166,6 +166,10 @@ class Correction:
     expect: str | None = None
 
 
+#: what a claim id may be (it starts every verdict line and names the claim in every report)
+_ID = re.compile(r"[A-Za-z0-9][A-Za-z0-9._+-]{0,99}")
+
+
 @dataclass(frozen=True)
 class Claim:
     """A registered claim; frozen, so that nothing (a claims file included) rewrites what was
@@ -205,6 +209,9 @@ class Claim:
             return bool(self.fails_at(n, r if r is not None else n))
 
     def __post_init__(self) -> None:
+        if not isinstance(self.id, str) or not _ID.fullmatch(self.id):
+            raise ValueError(f"claim id {self.id!r}: an id is 1 to 100 letters, digits and . _ + - (starting with a "
+                             "letter or digit; no spaces or line breaks: it names the claim on every output line)")
         if self.kind not in KINDS:
             raise ValueError(f"claim {self.id}: unknown kind {self.kind!r} (one of {', '.join(KINDS)})")
         if self.expect not in ("holds", "nonzero", "fails"):

@@ -554,13 +554,19 @@ CAYLEY_REDUCTION = (
     "(S, W skew, Z arbitrary), A = diag(a); dense in T*V(n, r){comp}")
 
 
-def _reads_coordinates(claim: Claim, n: int, r: int, func: Callable) -> bool:
-    """Whether the claim's graph visibly reads coordinates (then the chart that also reduces by O(r)
-    is not tried: the claim would fall back to O(n) alone after one wasted evaluation).  Only a
-    shortcut: a read found while evaluating falls back just the same."""
+def _reads_coordinates(claim: Claim, n: int, r: int, func: Callable) -> list[str]:
+    """What the claim's graph visibly reads of coordinates: an entry or a block of any matrix, a matrix
+    of given entries, an engine step indexed by a basis (the constraints, the coordinates of a phase
+    space).  A chart that also reduces by O(r) acting on the right (A11, or B11 in the metric
+    realization, diagonal) is used only for a graph that reads none: O(r) mixes the coordinates of
+    R^r and of Sym(r), and what a graph reads through an engine step or an opaque space is not
+    always seen by the scene's record while evaluating."""
     cons = REALIZATIONS[claim.realization]
     g = compile_claim(func, n, r, (cons.name, cons.build))
-    return bool(coordinate_reads(g)) or any(not w.startswith(("a rank", "a count")) for w in coordinate_needs(g))
+    out = [w for w in coordinate_needs(g) if not w.startswith(("a rank", "a count"))]
+    if "entry" in g.ops:
+        out.append("an entry or a block of a matrix")
+    return out
 
 
 def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = None,
@@ -573,9 +579,14 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
             randomized = _RandomizedRank()
             charts: list[tuple[Scene, str]] = []
             # the standard realization's chart reduces by O(r) acting on the right as well (A11
-            # diagonal) when the claim reads no coordinates of R^n or R^r; otherwise by O(n) alone
-            for right in ((True, False) if claim.realization == "standard" and not _reads_coordinates(claim, n, r, func)
-                          else (False,)):
+            # diagonal) when the claim's graph reads no coordinates; otherwise by O(n) alone.  The
+            # metric realization's chart always reduces by O(r): a graph that reads coordinates
+            # goes to the Cayley chart (below)
+            visible = _reads_coordinates(claim, n, r, func)
+            for right in ((True, False) if claim.realization == "standard" and not visible else (False,)):
+                if claim.realization == "metric" and visible:
+                    scene, coords, missing = None, list(visible), True
+                    break
                 field = SymbolicField()
                 scene = Scene(n, r, field, chart="equivariant", realization=claim.realization,
                               right_reduction=right)
@@ -591,7 +602,7 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
             # a stated reason is relied on only for the reviewed catalog: a user's claims file
             # cannot buy the reduction with a sentence
             reason = claim.equivariance if claim.reviewed else ""
-            if scene.tracker.spaces != ("n",):
+            if scene is None or scene.tracker.spaces != ("n",):
                 reason = ""      # a stated reason speaks of O(n); this chart also reduces by O(r)
             if not missing and (not coords or reason):
                 why = (covariant_by_construction(scene.tracker.spaces) if not coords else

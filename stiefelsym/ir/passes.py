@@ -331,6 +331,8 @@ _STEP_NEEDS = {
     "real_coordinates": "the coordinates of the matrices of a phase space",
     "hamiltonian_flow": "a Hamiltonian flow solved in coordinates",
     "euler_lagrange": "Euler–Lagrange equations solved in coordinates",
+    # the twisted brackets of the scalar constraints, indexed by a basis of Sym(r)
+    "constraint_bracket_matrix": "a Jacobian in the coordinates of X, P",
 }
 
 
