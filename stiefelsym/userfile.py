@@ -34,6 +34,7 @@ Where ``os.fork`` is not available the file is loaded in-process as before
 from __future__ import annotations
 
 import builtins
+import dataclasses
 import itertools
 import json
 import os
@@ -412,6 +413,7 @@ class _Lookup:
 
     def __init__(self, what: str, rows: Any) -> None:
         self.what = what
+        self.bounds_only = False
         self.table: dict[tuple[int, int], Any] = {}
         if type(rows) is not list:
             raise WireError(f"the {what} table is not a list")
@@ -431,6 +433,24 @@ class _Lookup:
         return v
 
 
+class TabledSizes(SizeSpec):
+    """A size statement rebuilt from a child's data: its fields as sent, and ``admits`` the child's own answer
+    (the claim's ``admits``, whatever it overrides) at every size of the table; beyond the table, the fields'
+    bounds when the statement has no further condition, else an error."""
+
+    def admits(self, n: int, r: int) -> bool:
+        table = getattr(self.where, "table", None)
+        if table is not None and (n, r) in table:
+            return bool(self.where(n, r))                   # type: ignore[misc]
+        if self.where is not None and not getattr(self.where, "bounds_only", False):
+            return bool(self.where(n, r))                   # raises: a size outside the table
+        return SizeSpec.admits(dataclasses.replace(self, where=None), n, r)
+
+    def describe(self) -> str:
+        plain = getattr(self.where, "bounds_only", False)
+        return SizeSpec.describe(dataclasses.replace(self, where=None) if plain else self)
+
+
 def _opt_int(d: dict, key: str) -> int | None:
     return _get(d, key, int, optional=True)
 
@@ -441,11 +461,12 @@ def _claim(d: Any, path: str) -> Claim:
     if not all(type(p) is list and len(p) == 2 and all(type(x) is int for x in p) for p in pairs):
         raise WireError("a size that is not (n, r)")
     admits = _Lookup("size condition", _get(spec_d, "admits", list))
-    spec = SizeSpec(tuple(Size(n, r) for n, r in pairs), n_min=_get(spec_d, "n_min", int),
-                    r_min=_get(spec_d, "r_min", int), r_max=_opt_int(spec_d, "r_max"),
-                    where=admits if _get(spec_d, "where", bool) else None,
-                    condition=_get(spec_d, "condition", str), n_max=_opt_int(spec_d, "n_max"),
-                    r_is_n=_get(spec_d, "r_is_n", bool))
+    admits.bounds_only = not _get(spec_d, "where", bool)
+    spec = TabledSizes(tuple(Size(n, r) for n, r in pairs), n_min=_get(spec_d, "n_min", int),
+                       r_min=_get(spec_d, "r_min", int), r_max=_opt_int(spec_d, "r_max"),
+                       where=admits,
+                       condition=_get(spec_d, "condition", str), n_max=_opt_int(spec_d, "n_max"),
+                       r_is_n=_get(spec_d, "r_is_n", bool))
     realization = _get(d, "realization", str)
     src_path, line, name = _get(d, "path", str), _get(d, "line", int), _get(d, "name", str)
     fails = _get(d, "fails_at", list, optional=True)
