@@ -35,6 +35,7 @@ from __future__ import annotations
 
 import builtins
 import dataclasses
+import gc
 import itertools
 import json
 import os
@@ -225,6 +226,7 @@ def _claim_data(c: Claim, needed: Sequence[tuple[int, int]]) -> dict:
 def _fork_bytes(make: Callable[[], bytes], seconds: float) -> bytes | None:
     """make() in a forked child, its bytes read back (None: it died or ran out of time)."""
     rfd, wfd = os.pipe()
+    gc.freeze()     # the parent's objects stay out of the child's collections (fewer copied pages)
     pid = os.fork()
     if pid == 0:
         os.close(rfd)
@@ -239,6 +241,7 @@ def _fork_bytes(make: Callable[[], bytes], seconds: float) -> bytes | None:
         finally:
             os._exit(code)
     os.close(wfd)
+    gc.unfreeze()
     chunks: list[bytes] = []
     deadline = time.monotonic() + seconds
     try:
@@ -363,6 +366,7 @@ class TracedFunction:
 
     def __init__(self, name: str, realization: str, entries: list, path: str, line: int) -> None:
         from .ir.replay import GraphClaim
+        self._replay: Callable[..., Any]
         self.__name__ = self.__qualname__ = name
         self.realization, self.path, self.line = realization, path, line
         self._table: dict[Any, Any] = {}
@@ -374,8 +378,10 @@ class TracedFunction:
                 if type(key) is not list or len(key) != 2 or not all(type(x) is int for x in key):
                     raise WireError("a graph's key that is not (n, r)")
                 key = tuple(key)
-            self._table[key] = _Recorded(data) if type(data) is dict and "error" in data \
-                else GraphClaim(_graph(data), name=name)
+            if type(data) is not dict:
+                raise WireError("a graph entry that is not a mapping")
+            self._table[key] = _Recorded(data) if "error" in data else data   # a graph: decoded when asked for
+        self._replay = GraphClaim
 
     def sizes(self) -> list:
         return sorted(k for k in self._table if k is not None)
@@ -399,6 +405,8 @@ class TracedFunction:
                           f"at the sizes the command needed only ({have})")
         if type(entry) is _Recorded:
             entry.throw()
+        if type(entry) is dict:
+            entry = self._table[key] = self._replay(_graph(entry), name=self.__name__)
         return entry(s)
 
     def __repr__(self) -> str:
@@ -489,6 +497,13 @@ def _claim(d: Any, path: str) -> Claim:
                  erratum=_get(d, "erratum", str), equivariance=_get(d, "equivariance", str), reviewed=False)
 
 
+def _preload() -> None:
+    """The engine's modules, imported here before the children are forked (the child seals them before the
+    file runs, and this process evaluates with them afterwards: imported once, not once in each)."""
+    from .ir.seal import import_engine
+    import_engine()
+
+
 def load_claims_isolated(path: str | Path, sizes: Iterable[Any] = ()) -> Registry:
     """The claims of a user's file, imported and traced in child processes (see the module docstring),
     at their listed sizes and at ``sizes`` (Size or (n, r)) where they admit them.  Raises
@@ -504,6 +519,7 @@ def load_claims_isolated(path: str | Path, sizes: Iterable[Any] = ()) -> Registr
     p = Path(path)
     if not p.is_file():
         raise CatalogError(f"claims file not found: {p}")
+    _preload()
     sys.stdout.flush()
     sys.stderr.flush()
     data = _fork_bytes(lambda: _tracer(str(p), needed), FILE_SECONDS)
