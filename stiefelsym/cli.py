@@ -25,7 +25,7 @@ from typing import Any, Sequence
 import click
 
 from ._lazy import lazy
-from .claims import CATALOG, CatalogError, ClaimTimeout, Claim, Registry, Size, load_catalog, load_claims_file
+from .claims import CATALOG, CatalogError, ClaimTimeout, Claim, Registry, Size, load_catalog
 from .hard import HARD_CASES
 from .pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT, Terminated, raise_on_sigterm
 from .results import Result, dump_results, load_results, write_atomic
@@ -244,8 +244,12 @@ def _catalog() -> Registry:
         raise InputError(f"cannot load the catalog of claims: {exc}") from exc
 
 
-def _user_claims(paths: str | Sequence[str]) -> Registry:
-    """The claims of one or more files, in order; an id defined twice is refused."""
+def _user_claims(paths: str | Sequence[str], sizes: Sequence[Any] = (),
+                 budget: tuple[float, float | None] = (DEFAULT_TIMEOUT, DEFAULT_MEMORY_GIB)) -> Registry:
+    """The claims of one or more files, in order; an id defined twice is refused.  Each file is imported and
+    its claims traced in child processes only, at their listed sizes and at ``sizes`` (see
+    :mod:`stiefelsym.userfile`): no code of a user's file runs in this process."""
+    from .userfile import load_claims_isolated
     if isinstance(paths, str):
         paths = [paths]
     merged, origin = Registry(), {}
@@ -256,7 +260,7 @@ def _user_claims(paths: str | Sequence[str]) -> Registry:
             continue
         seen.add(key)
         try:
-            reg = load_claims_file(path)
+            reg = load_claims_isolated(path, sizes, *budget)
         except CatalogError as exc:
             raise InputError(str(exc)) from exc
         for c in reg:
@@ -290,8 +294,9 @@ def _shadowing_note(user: Registry) -> None:
                        "and replaces it in this run; give it an id of its own", err=True)
 
 
-def _registry(claims_files: str | Sequence[str] | None,
-              ids: Sequence[str] = ()) -> tuple[Registry, Registry | None]:
+def _registry(claims_files: str | Sequence[str] | None, ids: Sequence[str] = (), sizes: Sequence[Any] = (),
+              budget: tuple[float, float | None] = (DEFAULT_TIMEOUT, DEFAULT_MEMORY_GIB)
+              ) -> tuple[Registry, Registry | None]:
     """The registry to look claims up in, and the user's registry (if any).
 
     The users' files alone when they define every named claim (or none is named);
@@ -299,7 +304,7 @@ def _registry(claims_files: str | Sequence[str] | None,
     catalog claims of the same id."""
     if isinstance(claims_files, str):
         claims_files = [claims_files]
-    user = _user_claims(claims_files) if claims_files else None
+    user = _user_claims(claims_files, sizes, budget) if claims_files else None
     if user is not None and all(cid in user for cid in ids):
         _shadowing_note(user)
         return user, user
@@ -736,7 +741,15 @@ def _verify(out: Any, ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tu
     if target is not None:
         _check_report_dir(target)
     runner = _runner()
-    registry, user = _registry(claims_files, ids)
+    needed = sizes if max_n is None else tuple(Size(n, r) for n in range(1, max_n + 1) for r in range(1, n + 1))
+    try:
+        registry, user = _registry(claims_files, ids, needed, (timeout, memory))
+    except (KeyboardInterrupt, Terminated) as exc:     # while the claims files are traced (in children)
+        what = "interrupted" if isinstance(exc, KeyboardInterrupt) else "terminated"
+        click.echo(f"{chr(10) if _isatty(sys.stderr) else ''}stiefelsym: {what} after 0 of ? runs "
+                   "(while tracing the claims files); no report written", err=True)
+        raise click.exceptions.Exit(EXIT_INTERRUPTED if isinstance(exc, KeyboardInterrupt)
+                                    else EXIT_TERMINATED) from None
     if ids:
         try:
             claims = runner.select(registry, list(ids))
@@ -947,9 +960,15 @@ def derive(claim_id: str, claims_files: tuple[str, ...]) -> None:
 
 
 def _source(c: Claim) -> str:
+    from .userfile import TracedFunction
     try:
-        path = inspect.getsourcefile(c.func)
-        line = inspect.getsourcelines(c.func)[1]
+        if isinstance(c.func, TracedFunction):     # a user's claim: where its child found it
+            path, line = c.func.path, c.func.line
+            if not path:
+                return c.source or "?"
+        else:
+            path = inspect.getsourcefile(c.func)
+            line = inspect.getsourcelines(c.func)[1]
     except (OSError, TypeError):
         return c.source or "?"
     if path:
