@@ -25,7 +25,7 @@ from typing import Any, Sequence
 import click
 
 from ._lazy import lazy
-from .claims import CATALOG, CatalogError, ClaimTimeout, Claim, Registry, Size, load_catalog, load_claims_file
+from .claims import CATALOG, CatalogError, ClaimTimeout, Claim, Registry, Size, load_catalog
 from .hard import HARD_CASES
 from .pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT, Terminated, raise_on_sigterm
 from .results import Result, dump_results, load_results, write_atomic
@@ -244,8 +244,11 @@ def _catalog() -> Registry:
         raise InputError(f"cannot load the catalog of claims: {exc}") from exc
 
 
-def _user_claims(paths: str | Sequence[str]) -> Registry:
-    """The claims of one or more files, in order; an id defined twice is refused."""
+def _user_claims(paths: str | Sequence[str], sizes: Sequence[Any] = ()) -> Registry:
+    """The claims of one or more files, in order; an id defined twice is refused.  Each file is imported and
+    its claims traced in child processes only, at their listed sizes and at ``sizes`` (see
+    :mod:`stiefelsym.userfile`): no code of a user's file runs in this process."""
+    from .userfile import load_claims_isolated
     if isinstance(paths, str):
         paths = [paths]
     merged, origin = Registry(), {}
@@ -256,7 +259,7 @@ def _user_claims(paths: str | Sequence[str]) -> Registry:
             continue
         seen.add(key)
         try:
-            reg = load_claims_file(path)
+            reg = load_claims_isolated(path, sizes)
         except CatalogError as exc:
             raise InputError(str(exc)) from exc
         for c in reg:
@@ -290,8 +293,8 @@ def _shadowing_note(user: Registry) -> None:
                        "and replaces it in this run; give it an id of its own", err=True)
 
 
-def _registry(claims_files: str | Sequence[str] | None,
-              ids: Sequence[str] = ()) -> tuple[Registry, Registry | None]:
+def _registry(claims_files: str | Sequence[str] | None, ids: Sequence[str] = (),
+              sizes: Sequence[Any] = ()) -> tuple[Registry, Registry | None]:
     """The registry to look claims up in, and the user's registry (if any).
 
     The users' files alone when they define every named claim (or none is named);
@@ -299,7 +302,7 @@ def _registry(claims_files: str | Sequence[str] | None,
     catalog claims of the same id."""
     if isinstance(claims_files, str):
         claims_files = [claims_files]
-    user = _user_claims(claims_files) if claims_files else None
+    user = _user_claims(claims_files, sizes) if claims_files else None
     if user is not None and all(cid in user for cid in ids):
         _shadowing_note(user)
         return user, user
@@ -736,7 +739,8 @@ def _verify(out: Any, ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tu
     if target is not None:
         _check_report_dir(target)
     runner = _runner()
-    registry, user = _registry(claims_files, ids)
+    needed = sizes if max_n is None else tuple(Size(n, r) for n in range(1, max_n + 1) for r in range(1, n + 1))
+    registry, user = _registry(claims_files, ids, needed)
     if ids:
         try:
             claims = runner.select(registry, list(ids))

@@ -42,6 +42,8 @@ def check(results_file: Path, no_rerun: bool, claims_files: tuple[str, ...]) -> 
     except (OSError, UnicodeDecodeError, json.JSONDecodeError, KeyError, TypeError) as exc:
         raise InputError(f"{results_file} is not a stiefelsym results file: {exc}") from None
     files = list(claims_files) or list(meta.get("claims_files") or [])
-    registry, _ = _registry(files or None)
+    # the sizes the records were run at: a user's claims are traced there (in child processes)
+    sizes = [(r.get("n"), r.get("r")) for r in records]
+    registry, _ = _registry(files or None, (), [(n, r) for n, r in sizes if type(n) is int and type(r) is int])
     bad = check_results(records, registry, echo=click.echo, rerun=not no_rerun, hard=meta.get("hard"), meta=meta)
     raise SystemExit(1 if bad else 0)

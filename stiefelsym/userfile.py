@@ -1,0 +1,510 @@
+"""A user's claims file, imported and traced in child processes only.
+
+A claims file is Python: once imported into a process, its code can reach
+anything there (profile hooks, the engine's memos and containers, the fields of
+its own claims, module state shared by its claims).  So the process that plans
+and verifies never imports it.  :func:`load_claims_isolated`:
+
+1. forks a tracer child before anything of the file runs; the child imports the
+   file (:func:`stiefelsym.claims.load_claims_file`: sealed engine, deadline,
+   standard output to standard error) and, for each claim, forks a grandchild
+   that traces that claim alone (no claim's graph can depend on another claim
+   having been traced before it), twice and compared as in
+   :func:`stiefelsym.ir.compile_claim`, with symbolic sizes and at every size
+   needed (the sizes its size statement lists and the sizes the command asks
+   for), and the same for each correction; the grandchild also evaluates the
+   claim's metadata callables (the size condition, the erratum sizes) into tables;
+2. the children send back pure data as JSON: the metadata fields, the sizes as
+   an explicit list with the bounds and an admits table, the erratum table, and
+   per (size | symbolic) either the graph's state or the refusal (exception class
+   name, message, the claim's file and line);
+3. this process decodes it with a strict decoder (:func:`_value`: only int, str,
+   bool, None, lists, tuples, Fraction and the IR's Ref, Size and Named come out;
+   nothing is unpickled) and builds ordinary :class:`~stiefelsym.claims.Claim`
+   objects: the function is a :class:`TracedFunction` that replays the graph
+   traced at the size the engine's tracer asks for (engine code only, so the
+   graph is re-typed and its digest recomputed here), re-raises the recorded
+   refusal, or raises :class:`NoGraph` (verdict ``error``) at a size or
+   realization it has no graph for; ``where`` and ``fails_at`` are table lookups;
+   ``reviewed`` is always False.
+
+Where ``os.fork`` is not available the file is loaded in-process as before
+(:func:`~stiefelsym.claims.load_claims_file`).
+"""
+from __future__ import annotations
+
+import builtins
+import itertools
+import json
+import os
+import select
+import signal
+import sys
+import time
+import traceback
+from fractions import Fraction
+from pathlib import Path
+from typing import Any, Callable, Iterable, Sequence
+
+from .claims import CatalogError, Claim, ClaimTimeout, Correction, Registry, Size, SizeSpec, load_claims_file
+
+#: sizes n <= this get an entry in the admits table (the free method checks a declared r up to here)
+TABLE_N = 16
+#: at most this many sizes in a claim's size statement
+MAX_SIZES = 2000
+#: seconds the tracing of one claim (every size, its corrections) may take, and the whole file
+CLAIM_SECONDS = 300.0
+FILE_SECONDS = 3600.0
+
+
+class NoGraph(ValueError):
+    """The claims file was traced in a child process, and not at the size or realization asked for."""
+
+
+# --------------------------------------------------------------------------- the wire format
+
+def _enc(v: Any) -> Any:
+    """An IR value as JSON (tagged where JSON has no such type)."""
+    from .ir.graph import Named, Ref, Size as GSize
+    t = type(v)
+    if v is None or t in (bool, int, str):
+        return v
+    if t is Ref:
+        return {"r": v[0]}
+    if t is tuple:
+        return {"t": [_enc(x) for x in v]}
+    if t is list:
+        return {"l": [_enc(x) for x in v]}
+    if t is Fraction:
+        return {"f": [v.numerator, v.denominator]}
+    if t is GSize:
+        return {"s": [v.k, v.d, v.value]}
+    if t is Named:
+        return {"q": v.qualname}
+    raise TypeError(f"not a value of the IR: {t.__name__}")
+
+
+class WireError(ValueError):
+    """What a child sent is not the data this module expects."""
+
+
+def _value(x: Any) -> Any:
+    """The strict decoder of :func:`_enc`: int, str, bool, None, lists, tuples, Fraction, Ref, Size, Named."""
+    from .ir.graph import Named, Ref, Size as GSize
+    t = type(x)
+    if x is None or t in (bool, int, str):
+        return x
+    if t is not dict or len(x) != 1:
+        raise WireError("a value that is not of the IR")
+    (tag, v), = x.items()
+    if tag == "r" and type(v) is int and v >= 0:
+        return Ref(v)
+    if tag in ("t", "l") and type(v) is list:
+        items = [_value(y) for y in v]
+        return tuple(items) if tag == "t" else items
+    if tag == "f" and type(v) is list and len(v) == 2 and all(type(y) is int for y in v) and v[1] > 0:
+        return Fraction(v[0], v[1])
+    if tag == "s" and type(v) is list and len(v) == 3 and type(v[0]) is int and v[1] in ("n", "r") \
+            and (v[2] is None or type(v[2]) is int):
+        return GSize(v[0], v[1], v[2])
+    if tag == "q" and type(v) is str:
+        return Named(v)
+    raise WireError(f"a value of the IR with an unknown tag {tag!r}")
+
+
+def _no_float(text: str) -> Any:
+    raise WireError("a number that is not an int")
+
+
+def _loads(data: bytes) -> Any:
+    try:
+        return json.loads(data.decode("utf-8"), parse_float=_no_float, parse_constant=_no_float)
+    except (UnicodeDecodeError, json.JSONDecodeError, RecursionError) as exc:
+        raise WireError(f"not JSON: {exc}") from None
+
+
+def _get(d: Any, key: str, *types_: type, optional: bool = False) -> Any:
+    if type(d) is not dict:
+        raise WireError("a record that is not a mapping")
+    if key not in d:
+        if optional:
+            return None
+        raise WireError(f"the field {key!r} is missing")
+    v = d[key]
+    if optional and v is None:
+        return None
+    if type(v) not in types_:
+        raise WireError(f"the field {key!r} is a {type(v).__name__}")
+    return v
+
+
+# --------------------------------------------------------------------------- the children
+
+def _graph_state(g: Any) -> Any:
+    ops, args, output, refusals, fns, sizes = g.__getstate__()
+    return {"ops": list(ops), "args": [_enc(a) for a in args], "output": _enc(output), "fns": fns,
+            "sizes": None if sizes is None else list(sizes)}
+
+
+def _refusal(exc: BaseException) -> dict:
+    tb = getattr(exc, "_first_traceback", None) or exc.__traceback__
+    frames = [f for f in traceback.extract_tb(tb) if "/stiefelsym/" not in f.filename]
+    where = [frames[-1].filename, frames[-1].lineno or 1] if frames else None
+    try:
+        message = str(exc)
+    except Exception:   # noqa: BLE001 - a message that does not print
+        message = "(no message)"
+    return {"error": [type(exc).__name__, message], "at": where}
+
+
+def _traced(func: Callable, realization: str, sizes: Iterable[tuple[int, int]]) -> list:
+    """[key, graph or refusal] for the symbolic sizes (key None) and each size."""
+    from .ir import Graph, _compile
+    from .scene import REALIZATIONS
+    cons = REALIZATIONS.get(realization)
+    if cons is None:
+        return []
+    constraints = (cons.name, cons.build)
+    out = []
+    free = _compile(func, None, None, constraints)
+    has_free = isinstance(free, Graph)
+    for key in [None, *sizes]:
+        g = free if key is None else _compile(func, key[0], key[1], constraints, twice=not has_free)
+        out.append([None if key is None else list(key), _graph_state(g) if isinstance(g, Graph) else _refusal(g)])
+    return out
+
+
+def _table(f: Callable[[int, int], Any], pairs: Iterable[tuple[int, int]]) -> list:
+    out = []
+    for n, r in pairs:
+        try:
+            out.append([n, r, bool(f(n, r))])
+        except Exception as exc:    # noqa: BLE001 - raised again where the engine asks
+            out.append([n, r, _refusal(exc)])
+    return out
+
+
+def _claim_data(c: Claim, needed: Sequence[tuple[int, int]]) -> dict:
+    """Everything the verifying process needs of one claim (run in the claim's own child)."""
+    spec = c.sizes
+    listed = []
+    for z in itertools.islice(iter(spec), MAX_SIZES + 1):
+        if not isinstance(z, Size) or type(z.n) is not int or type(z.r) is not int:
+            raise ValueError(f"claim {c.id}: its sizes are not Size(n, r) of ints")
+        listed.append((z.n, z.r))
+    if len(listed) > MAX_SIZES:
+        raise ValueError(f"claim {c.id}: more than {MAX_SIZES} sizes")
+    top = max([TABLE_N] + [n for n, _ in listed] + [n for n, _ in needed])
+    domain = [(n, r) for n in range(1, top + 1) for r in range(1, n + 1)]
+    admits = _table(spec.admits, domain)
+    admitted = [(n, r) for n, r, v in admits if v is True]
+    traced = list(dict.fromkeys(listed + [p for p in needed if p in set(admitted)]))
+    fails = None if c.fails_at is None else _table(c.expects_failure, list(dict.fromkeys(admitted + listed)))
+    try:
+        path = os.path.realpath(sys.modules[c.func.__module__].__file__ or "")
+    except (AttributeError, KeyError, TypeError):
+        path = ""
+    line = getattr(getattr(c.func, "__code__", None), "co_firstlineno", 0)
+    return {
+        "id": c.id, "paper": list(c.paper), "kind": c.kind, "section": c.section, "statement": c.statement,
+        "title": c.title, "realization": c.realization, "expect": c.expect, "exact_max_n": c.exact_max_n,
+        "erratum": c.erratum, "equivariance": c.equivariance, "source": c.source, "path": path,
+        "line": line if type(line) is int else 0, "name": getattr(c.func, "__name__", c.id),
+        "sizes": {"list": [list(p) for p in listed], "n_min": spec.n_min, "r_min": spec.r_min,
+                  "r_max": spec.r_max, "n_max": spec.n_max, "r_is_n": bool(spec.r_is_n),
+                  "condition": spec.condition, "where": spec.where is not None or type(spec) is not SizeSpec,
+                  "admits": admits},
+        "fails_at": fails,
+        "graphs": _traced(c.func, c.realization, traced),
+        "corrections": [{"description": k.description, "changes": k.changes, "expect": k.expect,
+                         "graphs": _traced(k.func, c.realization, traced)} for k in c.corrections],
+    }
+
+
+def _fork_bytes(make: Callable[[], bytes], seconds: float) -> bytes | None:
+    """make() in a forked child, its bytes read back (None: it died or ran out of time)."""
+    rfd, wfd = os.pipe()
+    pid = os.fork()
+    if pid == 0:
+        os.close(rfd)
+        code = 0
+        try:
+            data = make()
+            view = memoryview(data)
+            while view:
+                view = view[os.write(wfd, view):]
+        except BaseException:   # noqa: BLE001 - the parent sees no result
+            code = 1
+        finally:
+            os._exit(code)
+    os.close(wfd)
+    chunks: list[bytes] = []
+    deadline = time.monotonic() + seconds
+    try:
+        while True:
+            left = deadline - time.monotonic()
+            if left <= 0:
+                _kill(pid)
+                return None
+            ready, _, _ = select.select([rfd], [], [], left)
+            if ready:
+                chunk = os.read(rfd, 1 << 16)
+                if not chunk:
+                    break
+                chunks.append(chunk)
+    except BaseException:
+        _kill(pid)
+        raise
+    finally:
+        os.close(rfd)
+    _, status = os.waitpid(pid, 0)
+    if status != 0:
+        return None
+    return b"".join(chunks)
+
+
+def _kill(pid: int) -> None:
+    try:
+        os.kill(pid, signal.SIGKILL)
+        os.waitpid(pid, 0)
+    except (ProcessLookupError, ChildProcessError):
+        pass
+
+
+def _tracer(path: str, needed: Sequence[tuple[int, int]]) -> bytes:
+    """The tracer child: import the file, then trace each claim in a grandchild of its own."""
+    sys.stdout.flush()
+    os.dup2(2, 1)           # whatever the file prints goes to standard error
+    try:
+        reg = load_claims_file(path)
+    except CatalogError as exc:
+        return json.dumps({"error": str(exc)}).encode()
+    parts = []
+    for c in reg:
+        def one(c: Claim = c) -> bytes:
+            try:
+                return json.dumps({"claim": _claim_data(c, needed)}).encode()
+            except Exception as exc:    # noqa: BLE001 - reported as the file's error
+                return json.dumps({"failed": [c.id, f"{type(exc).__name__}: {exc}"]}).encode()
+        data = _fork_bytes(one, CLAIM_SECONDS)
+        if data is None:
+            data = json.dumps({"failed": [c.id, "its tracing ended without a result (the process died or took "
+                                          f"more than {CLAIM_SECONDS:.0f} s)"]}).encode()
+        parts.append(data)
+    return b'{"claims": [' + b",".join(parts) + b"]}"
+
+
+# --------------------------------------------------------------------------- the verifying process
+
+class _Recorded:
+    """A refusal recorded in a child: raised again with the same class name and message, from the
+    claim's file and line (so that a run's message reads as it does when the claim is traced here)."""
+
+    __slots__ = ("name", "message", "at")
+
+    def __init__(self, data: Any) -> None:
+        err = _get(data, "error", list)
+        if len(err) != 2 or not all(type(x) is str for x in err) or not err[0].isidentifier():
+            raise WireError("a refusal that is not (class name, message)")
+        self.name, self.message = err
+        at = _get(data, "at", list, optional=True)
+        if at is not None and (len(at) != 2 or type(at[0]) is not str or type(at[1]) is not int or at[1] < 1):
+            raise WireError("a refusal's place that is not (file, line)")
+        self.at = at
+
+    def exception(self) -> BaseException:
+        from .ir import NotDeterministic, TraceRefused
+        from .ir.replay import ReplayError
+        known = {"TraceRefused": TraceRefused, "NotDeterministic": NotDeterministic, "ReplayError": ReplayError,
+                 "ClaimTimeout": ClaimTimeout, "NoGraph": NoGraph}
+        base = known.get(self.name)
+        if base is None:
+            b = getattr(builtins, self.name, None)
+            base = b if isinstance(b, type) and issubclass(b, Exception) else Exception
+        message = self.message
+        for cls in (base, Exception):
+            try:
+                kind = type(self.name, (cls,), {"__str__": lambda self: message, "__module__": cls.__module__})
+                exc = kind(message)
+                break
+            except TypeError:
+                continue
+        return exc
+
+    def throw(self) -> None:
+        exc = self.exception()
+        if self.at is None:
+            raise exc
+        path, line = self.at
+        code = compile("\n" * (min(line, 10 ** 6) - 1) + "raise __recorded", path, "exec")
+        exec(code, {"__recorded": exc})
+
+
+def _graph(data: Any) -> Any:
+    from .ir import Graph
+    ops = _get(data, "ops", list)
+    args = [_value(a) for a in _get(data, "args", list)]
+    if not all(type(o) is str for o in ops) or not all(type(a) is tuple for a in args):
+        raise WireError("a graph whose ops are not strings or whose arguments are not tuples")
+    sizes = _get(data, "sizes", list, optional=True)
+    if sizes is not None and (len(sizes) != 2 or not all(type(x) is int for x in sizes)):
+        raise WireError("a graph's size that is not (n, r)")
+    fns = _get(data, "fns", int)
+    g = Graph()
+    g.__setstate__((ops, args, _value(_get(data, "output", dict)), [], fns, None if sizes is None else tuple(sizes)))
+    return g
+
+
+class TracedFunction:
+    """A claim's function (or a correction's) as traced in the claims file's child: called by the
+    engine's tracer, it replays the graph traced at the trace's size (:class:`~stiefelsym.ir.replay.GraphClaim`),
+    raises the refusal recorded there, or raises :class:`NoGraph`.  No code of the file runs here."""
+
+    def __init__(self, name: str, realization: str, entries: list, path: str, line: int) -> None:
+        from .ir.replay import GraphClaim
+        self.__name__ = self.__qualname__ = name
+        self.realization, self.path, self.line = realization, path, line
+        self._table: dict[Any, Any] = {}
+        for entry in entries:
+            if type(entry) is not list or len(entry) != 2:
+                raise WireError("a graph entry that is not (size, graph)")
+            key, data = entry
+            if key is not None:
+                if type(key) is not list or len(key) != 2 or not all(type(x) is int for x in key):
+                    raise WireError("a graph's key that is not (n, r)")
+                key = tuple(key)
+            self._table[key] = _Recorded(data) if type(data) is dict and "error" in data \
+                else GraphClaim(_graph(data), name=name)
+
+    def sizes(self) -> list:
+        return sorted(k for k in self._table if k is not None)
+
+    def __call__(self, s: Any) -> Any:
+        from .ir.graph import Size as GSize
+        from .ir.trace import _ACTIVE
+        if not _ACTIVE:
+            raise NoGraph(f"{self.__name__} is a traced claim: only the engine's tracer calls it")
+        t = _ACTIVE[-1]
+        n, r = t._numbers(GSize(1, "n", None)), t._numbers(GSize(1, "r", None))
+        key = None if n is None else (n, r)
+        if t.constraints[0] != self.realization:
+            raise NoGraph(f"{self.__name__} was traced in the {self.realization} realization only, "
+                          f"not in the {t.constraints[0]} one")
+        entry = self._table.get(key)
+        if entry is None:
+            where = "with symbolic sizes" if key is None else f"at ({n},{r})"
+            have = ", ".join(f"({a},{b})" for a, b in self.sizes()) or "none"
+            raise NoGraph(f"{self.__name__} has no graph {where}: its claims file was traced in a child process "
+                          f"at the sizes the command needed only ({have})")
+        if type(entry) is _Recorded:
+            entry.throw()
+        return entry(s)
+
+    def __repr__(self) -> str:
+        return f"<traced claim function {self.__name__}>"
+
+    def __reduce__(self):
+        raise TypeError("a traced claim function is not pickled")
+
+
+class _Lookup:
+    """A metadata callable of the claim as a table computed in its child (a size outside it: an error)."""
+
+    def __init__(self, what: str, rows: Any) -> None:
+        self.what = what
+        self.table: dict[tuple[int, int], Any] = {}
+        if type(rows) is not list:
+            raise WireError(f"the {what} table is not a list")
+        for row in rows:
+            if type(row) is not list or len(row) != 3 or type(row[0]) is not int or type(row[1]) is not int:
+                raise WireError(f"a row of the {what} table that is not (n, r, value)")
+            v = row[2]
+            self.table[(row[0], row[1])] = v if type(v) is bool else _Recorded(v)
+
+    def __call__(self, n: int, r: int) -> bool:
+        v = self.table.get((n, r))
+        if v is None:
+            raise NoGraph(f"the claim's {self.what} was evaluated in its claims file's child process at the sizes "
+                          f"the command needed only, not at ({n},{r})")
+        if type(v) is _Recorded:
+            v.throw()
+        return v
+
+
+def _opt_int(d: dict, key: str) -> int | None:
+    return _get(d, key, int, optional=True)
+
+
+def _claim(d: Any, path: str) -> Claim:
+    spec_d = _get(d, "sizes", dict)
+    pairs = _get(spec_d, "list", list)
+    if not all(type(p) is list and len(p) == 2 and all(type(x) is int for x in p) for p in pairs):
+        raise WireError("a size that is not (n, r)")
+    admits = _Lookup("size condition", _get(spec_d, "admits", list))
+    spec = SizeSpec(tuple(Size(n, r) for n, r in pairs), n_min=_get(spec_d, "n_min", int),
+                    r_min=_get(spec_d, "r_min", int), r_max=_opt_int(spec_d, "r_max"),
+                    where=admits if _get(spec_d, "where", bool) else None,
+                    condition=_get(spec_d, "condition", str), n_max=_opt_int(spec_d, "n_max"),
+                    r_is_n=_get(spec_d, "r_is_n", bool))
+    realization = _get(d, "realization", str)
+    src_path, line, name = _get(d, "path", str), _get(d, "line", int), _get(d, "name", str)
+    fails = _get(d, "fails_at", list, optional=True)
+    corrections = []
+    for k in _get(d, "corrections", list):
+        desc = _get(k, "description", str)
+        corrections.append(Correction(desc, TracedFunction(f"{name} ({desc})", realization, _get(k, "graphs", list),
+                                                           src_path, line),
+                                      _get(k, "changes", int), _get(k, "expect", str, optional=True)))
+    paper = _get(d, "paper", list)
+    if not all(type(p) is str for p in paper):
+        raise WireError("a paper label that is not a string")
+    return Claim(id=_get(d, "id", str), paper=tuple(paper), kind=_get(d, "kind", str),
+                 section=_get(d, "section", str),
+                 func=TracedFunction(name, realization, _get(d, "graphs", list), src_path, line),
+                 sizes=spec, statement=_get(d, "statement", str), title=_get(d, "title", str),
+                 realization=realization, expect=_get(d, "expect", str), exact_max_n=_get(d, "exact_max_n", int),
+                 corrections=corrections, source=_get(d, "source", str),
+                 fails_at=None if fails is None else _Lookup("erratum sizes (fails_at)", fails),
+                 erratum=_get(d, "erratum", str), equivariance=_get(d, "equivariance", str), reviewed=False)
+
+
+def load_claims_isolated(path: str | Path, sizes: Iterable[Any] = ()) -> Registry:
+    """The claims of a user's file, imported and traced in child processes (see the module docstring),
+    at their listed sizes and at ``sizes`` (Size or (n, r)) where they admit them.  Raises
+    :class:`~stiefelsym.claims.CatalogError` as :func:`~stiefelsym.claims.load_claims_file` does."""
+    if not (hasattr(os, "fork") and hasattr(os, "dup2")):
+        return load_claims_file(path)
+    needed = []
+    for s in sizes:
+        n, r = (s.n, s.r) if isinstance(s, Size) else tuple(s)
+        if type(n) is int and type(r) is int and 1 <= r <= n:
+            needed.append((n, r))
+    needed = list(dict.fromkeys(needed))
+    p = Path(path)
+    if not p.is_file():
+        raise CatalogError(f"claims file not found: {p}")
+    sys.stdout.flush()
+    sys.stderr.flush()
+    data = _fork_bytes(lambda: _tracer(str(p), needed), FILE_SECONDS)
+    if data is None:
+        raise CatalogError(f"{p}: loading and tracing the file ended without a result (its process died or took "
+                           f"more than {FILE_SECONDS:.0f} s)")
+    try:
+        payload = _loads(data)
+        if type(payload) is dict and "error" in payload:
+            raise CatalogError(_get(payload, "error", str))
+        reg = Registry()
+        for item in _get(payload, "claims", list):
+            if type(item) is dict and "failed" in item:
+                failed = _get(item, "failed", list)
+                if len(failed) != 2 or not all(type(x) is str for x in failed):
+                    raise WireError("a failure that is not (claim, message)")
+                raise CatalogError(f"{p}: claim {failed[0]}: {failed[1]}")
+            reg.add(_claim(_get(item, "claim", dict), str(p)))
+    except (WireError, ValueError, TypeError, RecursionError) as exc:
+        if isinstance(exc, CatalogError):
+            raise
+        raise CatalogError(f"{p}: {exc}") from None
+    if not len(reg):
+        raise CatalogError(f"{p}: defines no claims (use the @claim decorator)")
+    return reg

@@ -1,0 +1,57 @@
+"""A user's claims file runs in child processes only (stiefelsym.userfile): what comes back is pure data."""
+import os
+import subprocess
+import sys
+from fractions import Fraction
+from pathlib import Path
+
+import pytest
+
+from stiefelsym.ir.graph import Named, Ref, Size
+from stiefelsym.userfile import NoGraph, WireError, _enc, _loads, _value, load_claims_isolated
+
+ROOT = Path(__file__).resolve().parents[1]
+ADV = ROOT / "tests" / "adversary"
+
+
+def test_module_code_of_a_claims_file_never_runs_in_the_cli_process(tmp_path):
+    pids = tmp_path / "pids"
+    env = dict(os.environ, STIEFELSYM_TEST_PID_FILE=str(pids))
+    p = subprocess.Popen([sys.executable, "-m", "stiefelsym", "verify", "--claims", str(ADV / "module_code_pid.py"),
+                          "--method", "modular", "--size", "3,2"], cwd=ROOT, env=env, stdout=subprocess.PIPE,
+                         stderr=subprocess.PIPE, text=True)
+    out, err = p.communicate(timeout=300)
+    assert p.returncode == 0, out + err
+    assert "adv-pid-orthonormal (3,2) modular: checked" in out
+    ran = {int(x) for x in pids.read_text().split()}
+    assert ran and p.pid not in ran, (p.pid, ran)
+
+
+def test_the_wire_decoder_gives_ir_values_only():
+    for v in (None, True, 3, "x", (Ref(2), Size(2, "r", None), Named("a.b")), [Fraction(-3, 4), (1, "n")]):
+        assert _value(_enc(v)) == v and type(_value(_enc(v))) is type(v)
+    for bad in ({"f": [1, 0]}, {"s": [1, "m", None]}, {"x": 1}, {"r": -1}, {"t": [1], "l": []}, [1], 1.5):
+        with pytest.raises(WireError):
+            _value(bad)
+    with pytest.raises(WireError):
+        _loads(b'{"a": 1.0}')
+    with pytest.raises(WireError):
+        _loads(b'{"a": NaN}')
+
+
+def test_claims_of_a_file_are_built_here_unreviewed_with_graphs_at_the_needed_sizes():
+    from stiefelsym.ir import compile_claim
+    from stiefelsym.scene import REALIZATIONS
+    for c in load_claims_isolated(ADV / "reviewed_flag_spoofed.py", [(4, 2)]):
+        assert c.reviewed is False
+    (c,) = load_claims_isolated(ADV / "fixed_size_only.py", [(4, 2), (2, 3)])
+    assert c.func.sizes() == [(1, 1), (2, 1), (2, 2), (3, 1), (3, 2), (3, 3), (4, 2)]   # (2,3): no size
+    cons = REALIZATIONS[c.realization]
+    assert compile_claim(c.func, 4, 2, (cons.name, cons.build)).digest()
+    with pytest.raises(Exception, match="needs fixed sizes"):
+        compile_claim(c.func, None, None, (cons.name, cons.build))     # the refusal recorded in the child
+    with pytest.raises(NoGraph, match="no graph at \\(5,2\\)"):
+        compile_claim(c.func, 5, 2, (cons.name, cons.build))
+    with pytest.raises(NoGraph):
+        compile_claim(c.func, 3, 2, ("metric", cons.build))
+    assert c.sizes.admits(3, 2) and c.sizes.admits(16, 16) and not c.sizes.admits(2, 3)
