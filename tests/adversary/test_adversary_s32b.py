@@ -58,6 +58,24 @@ def test_the_opaque_entry_picking_is_sound():
         == "proved"
 
 
+COND = "s32b_constraint_basis_entries.py"
+
+
+@pytest.mark.xfail(strict=True, reason=(
+    "open: the entries of twisted.constraint_bracket_matrix are coordinates of Sym(r) (the constraints in a "
+    "fixed basis), which O(r) acting on the right mixes; neither the scene's record nor coordinate_reads() "
+    "counts an item of an engine step's matrix as a read of R^r, so the chart with A11 diagonal is used and "
+    "an entry that is a multiple of (XᵀAX)_12 (F = XᵀAX) is proved 0"))
+@pytest.mark.parametrize("method", ["exact", "auto"])
+def test_an_entry_of_the_constraint_bracket_matrix_is_not_proved(method):
+    assert verdicts(COND, method)["adv-s32b-cond-entry"] not in PASSING
+
+
+def test_the_constraint_bracket_entry_claim_is_false():
+    """The control: modular (Cayley chart, A = diag(a), no reduction) refutes it."""
+    assert verdicts(COND, "modular")["adv-s32b-cond-entry"] == "fails"
+
+
 # -- 2. sealed loading: the API still imports a claims file in the verifying process --------------------
 
 API_RUN = """
