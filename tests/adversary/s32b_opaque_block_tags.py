@@ -28,3 +28,11 @@ def opaque_control(s):
     """True (XᵀX = I_r): the entry picking itself is sound."""
     return {"r": pick(s, s.X.T @ s.X, 0, 1)}
 
+
+
+@claim("adv-s32b-opaque-offdiag-metric", kind="id", sizes=R2, realization="metric",
+       statement="(XᵀA⁻¹X)_12 = 0")
+def opaque_offdiag_metric(s):
+    """False: the same entry picking in the metric realization, whose chart has long diagonalized B11
+    (B = A⁻¹) by O(r) acting on the right."""
+    return {"r": pick(s, s.X.T @ s.Ainv @ s.X, 0, 1)}
