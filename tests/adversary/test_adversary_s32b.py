@@ -3,6 +3,7 @@
 file (imported and traced in child processes, pure data to the verifying process).  As in
 test_adversary.py: every run is in a fresh process, each test asserts the CORRECT outcome, and a route that
 is open today is a strict xfail."""
+import os
 import re
 import subprocess
 import sys
@@ -118,6 +119,39 @@ def test_a_forged_answer_of_the_child_buys_no_passing_verdict(method):
 def test_a_forged_answer_proves_only_its_symbolic_graph():
     """free proves the symbolic graph the child sent (XᵀX = I_r, true): never X_11 = 1."""
     assert verdicts(FORGED, "free") == {"adv-s32b-forged": "proved"}
+
+
+CHILD = "s32b_child_output.py"
+
+
+@pytest.mark.parametrize("mode", ["", "exit", "stray"])
+def test_what_the_child_prints_or_how_it_leaves_is_never_a_verdict(mode):
+    """Forged verdict lines printed at import and while tracing (also to sys.__stdout__) go to standard
+    error, never to the verdicts; a child that leaves early (status 0, no answer) or writes stray bytes to
+    the pipe before its answer is an error of the file (exit 2), not a file of claims."""
+    env = dict(os.environ, STIEFELSYM_S32B_CHILD=mode)
+    out = cli("verify", "--claims", str(HERE / CHILD), "--method", "exact", "--size", "3,2", env=env)
+    assert "exact: proved" not in out.stdout, out.stdout
+    if mode:
+        assert out.returncode == 2 and not LINE.search(out.stdout), (out.returncode, out.stdout)
+    else:
+        assert [m.group(2) for m in map(LINE.match, out.stdout.splitlines()) if m] == ["fails"], out.stdout
+
+
+PLUGIN_ARGS = ("--stiefelsym-method", "exact", "--stiefelsym-size", "3,2", "-q", "-p", "no:cacheprovider",
+               "-c", os.devnull)
+
+
+@pytest.mark.xfail(strict=True, reason=(
+    "open: the pytest plugin (ClaimsFile._claims) calls claims.load_claims_file in the pytest process, not "
+    "userfile.load_claims_isolated: the file's module code runs there and marks its claims reviewed, and the "
+    "exact method relies on the stated equivariance: X_11 = 1 proved, its items pass"))
+def test_the_pytest_plugin_does_not_honour_a_review_flag_set_by_the_file(tmp_path):
+    f = tmp_path / "spoofed_claims.py"
+    f.write_text((HERE / "reviewed_flag_spoofed.py").read_text())
+    out = subprocess.run([sys.executable, "-m", "pytest", "--stiefelsym", f.name, *PLUGIN_ARGS, "--rootdir",
+                          str(tmp_path)], cwd=tmp_path, capture_output=True, text=True, timeout=300)
+    assert "2 failed" in out.stdout, out.stdout[-2000:]
 
 
 # -- 4. the strict decoder --------------------------------------------------------------------------------
