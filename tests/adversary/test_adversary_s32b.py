@@ -80,6 +80,19 @@ def test_the_constraint_bracket_entry_claim_is_false():
     assert verdicts(COND, "modular")["adv-s32b-cond-entry"] == "fails"
 
 
+CORE = "s32b_small_core.py"
+
+
+def test_solves_beyond_3x3_taken_by_the_small_core_rule():
+    """The rule changes the budget, not the elimination (Bareiss with a pivot nonzero as a polynomial): the
+    5x5 resolvent identity is proved (inconclusive before the rule), a false factor fails, and a singular
+    matrix whose pattern 3 rows cover is refused as singular (error), never inverted."""
+    v = verdicts(CORE, "exact", size="5,2", ids=("adv-s32b-core-resolvent", "adv-s32b-core-resolvent-false"))
+    assert v == {"adv-s32b-core-resolvent": "proved", "adv-s32b-core-resolvent-false": "fails"}, v
+    v = verdicts(CORE, "exact", size="4,2", ids=("adv-s32b-core-singular",))
+    assert v["adv-s32b-core-singular"] not in PASSING, v
+
+
 # -- 2. sealed loading: the API still imports a claims file in the verifying process --------------------
 
 API_RUN = """
