@@ -233,7 +233,7 @@ def block_jensen_hamiltonian(s):
 
 # -- SO(r)-invariant metrics L_A ----------------------------------------------
 
-@claim("metric-legendre", paper=("leg2", "cond_XP2"), kind="id", exact_max_n=3,
+@claim("metric-legendre", paper=("leg2", "cond_XP2"), kind="id",
        statement=r"P=\frac{\partial L_A}{\partial\dot X}=A\dot X,\qquad X^TA^{-1}P+P^TA^{-1}X=0")
 def metric_legendre_transform(s):
     """The Legendre transform of L_A = ½tr(ẊᵀAẊ) is P = AẊ, and it maps TV onto (cond_XP2)."""

@@ -34,6 +34,8 @@ Where ``os.fork`` is not available the file is loaded in-process as before
 from __future__ import annotations
 
 import builtins
+import dataclasses
+import gc
 import itertools
 import json
 import os
@@ -224,6 +226,7 @@ def _claim_data(c: Claim, needed: Sequence[tuple[int, int]]) -> dict:
 def _fork_bytes(make: Callable[[], bytes], seconds: float) -> bytes | None:
     """make() in a forked child, its bytes read back (None: it died or ran out of time)."""
     rfd, wfd = os.pipe()
+    gc.freeze()     # the parent's objects stay out of the child's collections (fewer copied pages)
     pid = os.fork()
     if pid == 0:
         os.close(rfd)
@@ -238,6 +241,7 @@ def _fork_bytes(make: Callable[[], bytes], seconds: float) -> bytes | None:
         finally:
             os._exit(code)
     os.close(wfd)
+    gc.unfreeze()
     chunks: list[bytes] = []
     deadline = time.monotonic() + seconds
     try:
@@ -362,6 +366,7 @@ class TracedFunction:
 
     def __init__(self, name: str, realization: str, entries: list, path: str, line: int) -> None:
         from .ir.replay import GraphClaim
+        self._replay: Callable[..., Any]
         self.__name__ = self.__qualname__ = name
         self.realization, self.path, self.line = realization, path, line
         self._table: dict[Any, Any] = {}
@@ -373,8 +378,10 @@ class TracedFunction:
                 if type(key) is not list or len(key) != 2 or not all(type(x) is int for x in key):
                     raise WireError("a graph's key that is not (n, r)")
                 key = tuple(key)
-            self._table[key] = _Recorded(data) if type(data) is dict and "error" in data \
-                else GraphClaim(_graph(data), name=name)
+            if type(data) is not dict:
+                raise WireError("a graph entry that is not a mapping")
+            self._table[key] = _Recorded(data) if "error" in data else data   # a graph: decoded when asked for
+        self._replay = GraphClaim
 
     def sizes(self) -> list:
         return sorted(k for k in self._table if k is not None)
@@ -398,6 +405,8 @@ class TracedFunction:
                           f"at the sizes the command needed only ({have})")
         if type(entry) is _Recorded:
             entry.throw()
+        if type(entry) is dict:
+            entry = self._table[key] = self._replay(_graph(entry), name=self.__name__)
         return entry(s)
 
     def __repr__(self) -> str:
@@ -412,6 +421,7 @@ class _Lookup:
 
     def __init__(self, what: str, rows: Any) -> None:
         self.what = what
+        self.bounds_only = False
         self.table: dict[tuple[int, int], Any] = {}
         if type(rows) is not list:
             raise WireError(f"the {what} table is not a list")
@@ -431,6 +441,24 @@ class _Lookup:
         return v
 
 
+class TabledSizes(SizeSpec):
+    """A size statement rebuilt from a child's data: its fields as sent, and ``admits`` the child's own answer
+    (the claim's ``admits``, whatever it overrides) at every size of the table; beyond the table, the fields'
+    bounds when the statement has no further condition, else an error."""
+
+    def admits(self, n: int, r: int) -> bool:
+        table = getattr(self.where, "table", None)
+        if table is not None and (n, r) in table:
+            return bool(self.where(n, r))                   # type: ignore[misc]
+        if self.where is not None and not getattr(self.where, "bounds_only", False):
+            return bool(self.where(n, r))                   # raises: a size outside the table
+        return SizeSpec.admits(dataclasses.replace(self, where=None), n, r)
+
+    def describe(self) -> str:
+        plain = getattr(self.where, "bounds_only", False)
+        return SizeSpec.describe(dataclasses.replace(self, where=None) if plain else self)
+
+
 def _opt_int(d: dict, key: str) -> int | None:
     return _get(d, key, int, optional=True)
 
@@ -441,11 +469,12 @@ def _claim(d: Any, path: str) -> Claim:
     if not all(type(p) is list and len(p) == 2 and all(type(x) is int for x in p) for p in pairs):
         raise WireError("a size that is not (n, r)")
     admits = _Lookup("size condition", _get(spec_d, "admits", list))
-    spec = SizeSpec(tuple(Size(n, r) for n, r in pairs), n_min=_get(spec_d, "n_min", int),
-                    r_min=_get(spec_d, "r_min", int), r_max=_opt_int(spec_d, "r_max"),
-                    where=admits if _get(spec_d, "where", bool) else None,
-                    condition=_get(spec_d, "condition", str), n_max=_opt_int(spec_d, "n_max"),
-                    r_is_n=_get(spec_d, "r_is_n", bool))
+    admits.bounds_only = not _get(spec_d, "where", bool)
+    spec = TabledSizes(tuple(Size(n, r) for n, r in pairs), n_min=_get(spec_d, "n_min", int),
+                       r_min=_get(spec_d, "r_min", int), r_max=_opt_int(spec_d, "r_max"),
+                       where=admits,
+                       condition=_get(spec_d, "condition", str), n_max=_opt_int(spec_d, "n_max"),
+                       r_is_n=_get(spec_d, "r_is_n", bool))
     realization = _get(d, "realization", str)
     src_path, line, name = _get(d, "path", str), _get(d, "line", int), _get(d, "name", str)
     fails = _get(d, "fails_at", list, optional=True)
@@ -468,6 +497,13 @@ def _claim(d: Any, path: str) -> Claim:
                  erratum=_get(d, "erratum", str), equivariance=_get(d, "equivariance", str), reviewed=False)
 
 
+def _preload() -> None:
+    """The engine's modules, imported here before the children are forked (the child seals them before the
+    file runs, and this process evaluates with them afterwards: imported once, not once in each)."""
+    from .ir.seal import import_engine
+    import_engine()
+
+
 def load_claims_isolated(path: str | Path, sizes: Iterable[Any] = ()) -> Registry:
     """The claims of a user's file, imported and traced in child processes (see the module docstring),
     at their listed sizes and at ``sizes`` (Size or (n, r)) where they admit them.  Raises
@@ -483,6 +519,7 @@ def load_claims_isolated(path: str | Path, sizes: Iterable[Any] = ()) -> Registr
     p = Path(path)
     if not p.is_file():
         raise CatalogError(f"claims file not found: {p}")
+    _preload()
     sys.stdout.flush()
     sys.stderr.flush()
     data = _fork_bytes(lambda: _tracer(str(p), needed), FILE_SECONDS)

@@ -109,10 +109,8 @@ def _fingerprint(modules: list[str]) -> str:
     return h.hexdigest()
 
 
-def seal() -> None:
-    """Record the engine's fingerprint (once per process; before the first user claims file runs)."""
-    if sealed():
-        return
+def import_engine() -> list[str]:
+    """Import every module a verdict depends on (and those they import on first use); their names."""
     names = _verdict_modules()
     for name in names:
         importlib.import_module(name)
@@ -120,6 +118,14 @@ def seal() -> None:
         for attr, v in list(vars(sys.modules[name]).items()):
             if type(v).__name__ == "_LazyModule":
                 getattr(v, "__name__", None)
+    return names
+
+
+def seal() -> None:
+    """Record the engine's fingerprint (once per process; before the first user claims file runs)."""
+    if sealed():
+        return
+    names = import_engine()
     modules = names + [m for m in _LIBRARIES if m in sys.modules]
     _STATE["print"] = _fingerprint(modules)
     _STATE["modules"] = modules
