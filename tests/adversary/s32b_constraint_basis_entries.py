@@ -17,3 +17,10 @@ def cond_entry(s):
     C1 = twisted.constraint_bracket_matrix(s, F)
     C0 = twisted.constraint_bracket_matrix(s, s.zeros(2, 2, ("r", "r")))
     return {"r": C1[3][4] - C0[3][4]}
+
+
+@claim("adv-s32b-cond-entry-metric", kind="id", sizes=R2, realization="metric", statement="{φ_1, φ_5}_0 = 0")
+def cond_entry_metric(s):
+    """False: an entry of the metric realization's constraint bracket matrix (s.constraint_bracket_matrix(),
+    no field strength), 0 in the metric chart, which has long reduced by O(r) acting on the right."""
+    return {"r": s.constraint_bracket_matrix()[0][4]}
