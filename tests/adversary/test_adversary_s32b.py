@@ -170,6 +170,16 @@ def test_the_pytest_plugin_does_not_honour_a_review_flag_set_by_the_file(tmp_pat
     assert "2 failed" in out.stdout, out.stdout[-2000:]
 
 
+@pytest.mark.xfail(strict=True, reason=(
+    "open: a claim id is any string (neither @claim, Claim.__post_init__ nor the wire decoder checks it): an id "
+    "with a line break and a forged verdict line prints `adv-s32b-nl (3,2) exact: proved` for a claim that "
+    "fails (the summary still counts it unexpected)"))
+def test_a_claim_id_cannot_print_a_forged_verdict_line():
+    out = cli("verify", "--claims", str(HERE / "s32b_claim_id_newline.py"), "--method", "exact", "--size", "3,2")
+    passing = [m.group(0) for m in map(LINE.match, out.stdout.splitlines()) if m and m.group(2) in PASSING]
+    assert not passing and "fails" in out.stdout, out.stdout
+
+
 # -- 4. the strict decoder --------------------------------------------------------------------------------
 
 DECODER = """
