@@ -3,6 +3,7 @@
 file (imported and traced in child processes, pure data to the verifying process).  As in
 test_adversary.py: every run is in a fresh process, each test asserts the CORRECT outcome, and a route that
 is open today is a strict xfail."""
+import json
 import os
 import re
 import subprocess
@@ -94,6 +95,17 @@ def test_solves_beyond_3x3_taken_by_the_small_core_rule():
     assert v == {"adv-s32b-core-resolvent": "proved", "adv-s32b-core-resolvent-false": "fails"}, v
     v = verdicts(CORE, "exact", size="4,2", ids=("adv-s32b-core-singular",))
     assert v["adv-s32b-core-singular"] not in PASSING, v
+
+
+@pytest.mark.xfail(strict=True, reason=(
+    "open: `stiefelsym check` runs the same chart again and accepts both false 'proved' records (its re-run "
+    "has the same blind spot as the run)"))
+def test_check_rejects_the_chart_proofs_of_unrecorded_reads(tmp_path):
+    cli("verify", "adv-s32b-opaque-offdiag", "adv-s32b-cond-entry", "--claims", str(HERE / OPAQUE), "--claims",
+        str(HERE / COND), "--method", "exact", "--size", "3,2", "--report-dir", str(tmp_path))
+    recs = json.loads((tmp_path / "results.json").read_text())["results"]
+    passed = [r["claim"] for r in recs if r["verdict"] in PASSING]
+    assert not passed or cli("check", str(tmp_path / "results.json")).returncode == 1, passed
 
 
 # -- 2. sealed loading: the API still imports a claims file in the verifying process --------------------
