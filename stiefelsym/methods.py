@@ -33,7 +33,7 @@ from .ir import compile_claim
 from .ir.derivative import derivatives, scene_flows
 from .ir.evaluate import evaluate
 from .ir.seal import verify as verify_engine
-from .ir.passes import BLOCK_SPLITTING, FLOAT_EXPONENT_LIMIT, coordinate_reads, outside_float_range
+from .ir.passes import BLOCK_SPLITTING, FLOAT_EXPONENT_LIMIT, coordinate_needs, coordinate_reads, outside_float_range
 from .scene import REALIZATIONS
 from .fields import (PRIME_LOW, PRIMES_IN_RANGE_LOWER, ConstantDegenerate, DegenerateError, DegreeField,
                      ErrNum, Field, FloatField, ModularField, RationalField, SymbolicBudget, random_prime)
@@ -554,6 +554,15 @@ CAYLEY_REDUCTION = (
     "(S, W skew, Z arbitrary), A = diag(a); dense in T*V(n, r){comp}")
 
 
+def _reads_coordinates(claim: Claim, n: int, r: int, func: Callable) -> bool:
+    """Whether the claim's graph visibly reads coordinates (then the chart that also reduces by O(r)
+    is not tried: the claim would fall back to O(n) alone after one wasted evaluation).  Only a
+    shortcut: a read found while evaluating falls back just the same."""
+    cons = REALIZATIONS[claim.realization]
+    g = compile_claim(func, n, r, (cons.name, cons.build))
+    return bool(coordinate_reads(g)) or any(not w.startswith(("a rank", "a count")) for w in coordinate_needs(g))
+
+
 def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = None,
               time_budget: float | None = EXACT_TIME_LIMIT) -> Result:
     func = func or claim.func
@@ -565,7 +574,8 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
             charts: list[tuple[Scene, str]] = []
             # the standard realization's chart reduces by O(r) acting on the right as well (A11
             # diagonal) when the claim reads no coordinates of R^n or R^r; otherwise by O(n) alone
-            for right in ((True, False) if claim.realization == "standard" else (False,)):
+            for right in ((True, False) if claim.realization == "standard" and not _reads_coordinates(claim, n, r, func)
+                          else (False,)):
                 field = SymbolicField()
                 scene = Scene(n, r, field, chart="equivariant", realization=claim.realization,
                               right_reduction=right)

@@ -42,12 +42,14 @@ import os
 import select
 import signal
 import sys
+import tempfile
 import time
 import traceback
 from fractions import Fraction
 from pathlib import Path
 from typing import Any, Callable, Iterable, Sequence
 
+from .pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT, GIB
 from .claims import CatalogError, Claim, ClaimTimeout, Correction, Registry, Size, SizeSpec, load_claims_file
 
 #: sizes n <= this get an entry in the admits table (the free method checks a declared r up to here)
@@ -57,6 +59,8 @@ MAX_SIZES = 2000
 #: seconds the tracing of one claim (every size, its corrections) may take, and the whole file
 CLAIM_SECONDS = 300.0
 FILE_SECONDS = 3600.0
+#: at most this much of what the file's processes print is shown
+CAPTURE_BYTES = 1 << 22
 
 
 class NoGraph(ValueError):
@@ -159,21 +163,18 @@ def _refusal(exc: BaseException) -> dict:
     return {"error": [type(exc).__name__, message], "at": where}
 
 
-def _traced(func: Callable, realization: str, sizes: Iterable[tuple[int, int]]) -> list:
-    """[key, graph or refusal] for the symbolic sizes (key None) and each size."""
+def _trace_one(func: Callable, realization: str, key: Any, has_free: bool) -> Any:
+    """The graph's state, or the refusal, of one function at one key (None: symbolic sizes)."""
     from .ir import Graph, _compile
     from .scene import REALIZATIONS
-    cons = REALIZATIONS.get(realization)
-    if cons is None:
-        return []
+    cons = REALIZATIONS[realization]
     constraints = (cons.name, cons.build)
-    out = []
-    free = _compile(func, None, None, constraints)
-    has_free = isinstance(free, Graph)
-    for key in [None, *sizes]:
-        g = free if key is None else _compile(func, key[0], key[1], constraints, twice=not has_free)
-        out.append([None if key is None else list(key), _graph_state(g) if isinstance(g, Graph) else _refusal(g)])
-    return out
+    try:
+        g = _compile(func, None, None, constraints) if key is None else \
+            _compile(func, key[0], key[1], constraints, twice=not has_free)
+    except BaseException as exc:   # noqa: BLE001 - SystemExit, KeyboardInterrupt, anything: recorded
+        return _refusal(exc)
+    return _graph_state(g) if isinstance(g, Graph) else _refusal(g)
 
 
 def _table(f: Callable[[int, int], Any], pairs: Iterable[tuple[int, int]]) -> list:
@@ -217,9 +218,9 @@ def _claim_data(c: Claim, needed: Sequence[tuple[int, int]]) -> dict:
                   "condition": spec.condition, "where": spec.where is not None or type(spec) is not SizeSpec,
                   "admits": admits},
         "fails_at": fails,
-        "graphs": _traced(c.func, c.realization, traced),
-        "corrections": [{"description": k.description, "changes": k.changes, "expect": k.expect,
-                         "graphs": _traced(k.func, c.realization, traced)} for k in c.corrections],
+        "keys": [None] + [list(p) for p in traced],
+        "corrections": [{"description": k.description, "changes": k.changes, "expect": k.expect}
+                        for k in c.corrections],
     }
 
 
@@ -248,7 +249,7 @@ def _fork_bytes(make: Callable[[], bytes], seconds: float) -> bytes | None:
         while True:
             left = deadline - time.monotonic()
             if left <= 0:
-                _kill(pid)
+                _kill_group(pid)
                 return None
             ready, _, _ = select.select([rfd], [], [], left)
             if ready:
@@ -257,45 +258,231 @@ def _fork_bytes(make: Callable[[], bytes], seconds: float) -> bytes | None:
                     break
                 chunks.append(chunk)
     except BaseException:
-        _kill(pid)
+        _kill_group(pid)
         raise
     finally:
         os.close(rfd)
     _, status = os.waitpid(pid, 0)
+    _kill_group(pid)            # what the file started and left running
     if status != 0:
         return None
     return b"".join(chunks)
 
 
-def _kill(pid: int) -> None:
+def _kill_group(pid: int) -> None:
     try:
-        os.kill(pid, signal.SIGKILL)
-        os.waitpid(pid, 0)
-    except (ProcessLookupError, ChildProcessError):
+        os.killpg(pid, signal.SIGKILL)
+    except OSError:
+        pass
+    _kill(pid)
+
+
+def _limit_memory(memory: int | None) -> None:
+    if memory is None:
+        return
+    import resource
+    soft, hard = resource.getrlimit(resource.RLIMIT_AS)
+    limit = memory if hard == resource.RLIM_INFINITY else min(memory, hard)
+    resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
+
+
+def _die_with_parent() -> None:
+    from .pool import _death_signal_setup
+    prctl = _death_signal_setup()
+    if prctl:
+        prctl(1, signal.SIGKILL)                # PR_SET_PDEATHSIG
+
+
+def _jobs_lines(c: Claim, needed: Sequence[tuple[int, int]], jobs: list, start: int, has_free: dict,
+                memory: int | None, wfd: int) -> None:
+    """A grandchild: the claim's jobs from ``start`` on, one JSON line each, written as each is done."""
+    _die_with_parent()
+    _limit_memory(memory)
+
+    def write(obj: Any) -> None:
+        view = memoryview(json.dumps(obj).encode() + b"\n")
+        while view:
+            view = view[os.write(wfd, view):]
+    funcs = [c.func] + [k.func for k in c.corrections]
+    jobs = list(jobs)
+    i = start
+    while i < len(jobs):
+        job = jobs[i]
+        i += 1
+        if job[0] == "meta":
+            try:
+                meta = _claim_data(c, needed)
+            except Exception as exc:    # noqa: BLE001 - reported as the file's error
+                write({"failed": f"{type(exc).__name__}: {exc}"})
+                return
+            jobs += _trace_jobs(c, meta)
+            write({"meta": meta})
+            continue
+        _, f, key = job
+        out = _trace_one(funcs[f], c.realization, key, has_free.get(f, False))
+        write({"job": out})
+
+
+def _trace_jobs(c: Claim, meta: dict) -> list:
+    """(f, key) for the claim's function (f = 0) and each correction, at every key of the metadata."""
+    from .scene import REALIZATIONS
+    if c.realization not in REALIZATIONS:
+        return []
+    keys = [None if k is None else tuple(k) for k in meta["keys"]]
+    return [("f", f, k) for f in range(1 + len(c.corrections)) for k in keys]
+
+
+def _run_claim(c: Claim, needed: Sequence[tuple[int, int]], timeout: float, memory: int | None) -> dict:
+    """In the tracer child: the claim's metadata and its graphs, each function traced at each key in
+    grandchildren (one at a time; a grandchild that dies or runs out of time is replaced for the jobs after
+    the one it did not finish).  A key whose tracing ran out of time or died is recorded as such."""
+    jobs: list = [("meta",)]
+    meta: dict | None = None
+    results: list = []
+    has_free: dict = {}
+    i = 0
+    while i < len(jobs):
+        rfd, wfd = os.pipe()
+        gc.freeze()
+        pid = os.fork()
+        if pid == 0:
+            os.close(rfd)
+            code = 0
+            try:
+                _jobs_lines(c, needed, jobs, i, has_free, memory, wfd)
+            except BaseException:   # noqa: BLE001 - the parent sees where it stopped
+                code = 1
+            finally:
+                _flush()
+                os._exit(code)
+        os.close(wfd)
+        gc.unfreeze()
+        buf = b""
+        timed_out = False
+        deadline = time.monotonic() + timeout
+        try:
+            while i < len(jobs):
+                left = deadline - time.monotonic()
+                if left <= 0:
+                    timed_out = True
+                    break
+                ready, _, _ = select.select([rfd], [], [], left)
+                if not ready:
+                    continue
+                chunk = os.read(rfd, 1 << 16)
+                if not chunk:
+                    break
+                buf += chunk
+                while b"\n" in buf and i < len(jobs):
+                    line, buf = buf.split(b"\n", 1)
+                    item = json.loads(line)
+                    if jobs[i][0] == "meta":
+                        if "failed" in item:
+                            raise ValueError(item["failed"])
+                        meta = item["meta"]
+                        jobs += _trace_jobs(c, meta)
+                    else:
+                        _, f, key = jobs[i]
+                        if key is None:
+                            has_free[f] = "error" not in item["job"]
+                        results.append([f, None if key is None else list(key), item["job"]])
+                    i += 1
+                    deadline = time.monotonic() + timeout
+        finally:
+            os.close(rfd)
+            _kill(pid, wait=not timed_out and i >= 0)
+        if i >= len(jobs):
+            break
+        if jobs[i][0] == "meta":
+            raise ValueError("its size statement or erratum sizes did not finish (the process died or ran out "
+                             "of time)")
+        _, f, key = jobs[i]
+        mark = {"budget": "timeout"} if timed_out else {"budget": "died", "how": _status_text(pid)}
+        results.append([f, None if key is None else list(key), mark])
+        i += 1
+        if timed_out:       # the function's other keys: not tried again (one budget per function)
+            while i < len(jobs) and jobs[i][1] == f:
+                _, f2, k2 = jobs[i]
+                results.append([f2, None if k2 is None else list(k2), mark])
+                i += 1
+    assert meta is not None
+    del meta["keys"]
+    meta["graphs"] = [[k, e] for f, k, e in results if f == 0]
+    for j, corr in enumerate(meta["corrections"], 1):
+        corr["graphs"] = [[k, e] for f, k, e in results if f == j]
+    return meta
+
+
+_STATUS: dict[int, str] = {}
+
+
+def _status_text(pid: int) -> str:
+    return _STATUS.pop(pid, "the process vanished")
+
+
+def _kill(pid: int, wait: bool = False) -> None:
+    """Kill and reap a child (``wait``: one that ended or is ending, waited for a moment first); its wait
+    status is kept for :func:`_status_text`."""
+    try:
+        done, status = os.waitpid(pid, os.WNOHANG)
+        for _ in range(200 if wait and done == 0 else 0):
+            time.sleep(0.005)
+            done, status = os.waitpid(pid, os.WNOHANG)
+            if done:
+                break
+        if done == 0:
+            os.kill(pid, signal.SIGKILL)
+            done, status = os.waitpid(pid, 0)
+            _STATUS[pid] = "killed"
+            return
+        if os.WIFSIGNALED(status):
+            _STATUS[pid] = f"killed by {signal.Signals(os.WTERMSIG(status)).name}"
+        else:
+            _STATUS[pid] = f"exited with status {os.WEXITSTATUS(status)}"
+    except (ProcessLookupError, ChildProcessError, ValueError):
         pass
 
 
-def _tracer(path: str, needed: Sequence[tuple[int, int]]) -> bytes:
-    """The tracer child: import the file, then trace each claim in a grandchild of its own."""
+def _tracer(path: str, needed: Sequence[tuple[int, int]], timeout: float, memory: int | None,
+            capture: int) -> bytes:
+    """The tracer child: import the file, then trace each claim in grandchildren of its own."""
+    _die_with_parent()
+    try:
+        os.setpgid(0, 0)        # its own process group: killed as a whole (with what the file started)
+    except OSError:
+        pass
     sys.stdout.flush()
-    os.dup2(2, 1)           # whatever the file prints goes to standard error
+    sys.stderr.flush()
+    os.dup2(capture, 1)     # whatever the file prints goes to the capture (shown on standard error)
+    os.dup2(capture, 2)
+    sys.stdout = open(1, "w", closefd=False, errors="replace")     # not the caller's streams (a test's capture)
+    sys.stderr = open(2, "w", closefd=False, errors="replace")
     try:
         reg = load_claims_file(path)
     except CatalogError as exc:
         return json.dumps({"error": str(exc)}).encode()
     parts = []
     for c in reg:
-        def one(c: Claim = c) -> bytes:
-            try:
-                return json.dumps({"claim": _claim_data(c, needed)}).encode()
-            except Exception as exc:    # noqa: BLE001 - reported as the file's error
-                return json.dumps({"failed": [c.id, f"{type(exc).__name__}: {exc}"]}).encode()
-        data = _fork_bytes(one, CLAIM_SECONDS)
-        if data is None:
-            data = json.dumps({"failed": [c.id, "its tracing ended without a result (the process died or took "
-                                          f"more than {CLAIM_SECONDS:.0f} s)"]}).encode()
+        try:
+            data = json.dumps({"claim": _run_claim(c, needed, timeout, memory)}).encode()
+        except Exception as exc:    # noqa: BLE001 - reported as the file's error
+            data = json.dumps({"failed": [c.id, f"{type(exc).__name__}: {exc}"]}).encode()
         parts.append(data)
+    try:
+        import atexit
+        atexit._run_exitfuncs()     # the file's exit handlers run where the file ran
+    except BaseException:   # noqa: BLE001 - they change no result
+        pass
+    _flush()
     return b'{"claims": [' + b",".join(parts) + b"]}"
+
+
+def _flush() -> None:
+    for stream in (sys.stdout, sys.stderr):
+        try:
+            stream.flush()
+        except BaseException:   # noqa: BLE001 - a stream the file replaced or closed
+            pass
 
 
 # --------------------------------------------------------------------------- the verifying process
@@ -344,6 +531,32 @@ class _Recorded:
         exec(code, {"__recorded": exc})
 
 
+class _Budget:
+    """A trace that did not finish in the child: it ran out of the run's time budget, or its process died.
+    Replayed as it happened (the computation does not finish here either, or its process dies the same
+    way), so that the run's budgets give the verdict they give a claim traced in the run's worker."""
+
+    __slots__ = ("what", "how")
+
+    def __init__(self, data: dict) -> None:
+        self.what = _get(data, "budget", str)
+        self.how = _get(data, "how", str, optional=True) or ""
+        if self.what not in ("timeout", "died"):
+            raise WireError(f"an unknown budget outcome {self.what!r}")
+
+    def throw(self) -> None:
+        if self.what == "timeout":
+            while True:             # the budget of the process that asked ends it
+                time.sleep(3600)
+        sig = self.how.removeprefix("killed by ")
+        if sig != self.how and sig.isidentifier() and isinstance(getattr(signal, sig, None), signal.Signals):
+            os.kill(os.getpid(), getattr(signal, sig))
+            time.sleep(5)
+        if self.how.startswith("exited with status ") and self.how.rsplit(" ", 1)[-1].isdigit():
+            os._exit(int(self.how.rsplit(" ", 1)[-1]) & 0xFF)
+        raise NoGraph(f"the tracing of the claim ended without a result ({self.how or 'its process died'})")
+
+
 def _graph(data: Any) -> Any:
     from .ir import Graph
     ops = _get(data, "ops", list)
@@ -380,7 +593,10 @@ class TracedFunction:
                 key = tuple(key)
             if type(data) is not dict:
                 raise WireError("a graph entry that is not a mapping")
-            self._table[key] = _Recorded(data) if "error" in data else data   # a graph: decoded when asked for
+            if "budget" in data:
+                self._table[key] = _Budget(data)
+            else:
+                self._table[key] = _Recorded(data) if "error" in data else data   # a graph: decoded when asked
         self._replay = GraphClaim
 
     def sizes(self) -> list:
@@ -403,7 +619,7 @@ class TracedFunction:
             have = ", ".join(f"({a},{b})" for a, b in self.sizes()) or "none"
             raise NoGraph(f"{self.__name__} has no graph {where}: its claims file was traced in a child process "
                           f"at the sizes the command needed only ({have})")
-        if type(entry) is _Recorded:
+        if type(entry) in (_Recorded, _Budget):
             entry.throw()
         if type(entry) is dict:
             entry = self._table[key] = self._replay(_graph(entry), name=self.__name__)
@@ -504,9 +720,11 @@ def _preload() -> None:
     import_engine()
 
 
-def load_claims_isolated(path: str | Path, sizes: Iterable[Any] = ()) -> Registry:
+def load_claims_isolated(path: str | Path, sizes: Iterable[Any] = (), timeout: float = DEFAULT_TIMEOUT,
+                         memory: float | None = DEFAULT_MEMORY_GIB) -> Registry:
     """The claims of a user's file, imported and traced in child processes (see the module docstring),
-    at their listed sizes and at ``sizes`` (Size or (n, r)) where they admit them.  Raises
+    at their listed sizes and at ``sizes`` (Size or (n, r)) where they admit them; each trace has the run's
+    ``timeout`` (seconds) and ``memory`` (GiB) as a run in a worker has.  Raises
     :class:`~stiefelsym.claims.CatalogError` as :func:`~stiefelsym.claims.load_claims_file` does."""
     if not (hasattr(os, "fork") and hasattr(os, "dup2")):
         return load_claims_file(path)
@@ -522,7 +740,16 @@ def load_claims_isolated(path: str | Path, sizes: Iterable[Any] = ()) -> Registr
     _preload()
     sys.stdout.flush()
     sys.stderr.flush()
-    data = _fork_bytes(lambda: _tracer(str(p), needed), FILE_SECONDS)
+    limit = None if memory is None else int(memory * GIB)
+    with tempfile.TemporaryFile() as capture:
+        try:
+            data = _fork_bytes(lambda: _tracer(str(p), needed, timeout, limit, capture.fileno()), FILE_SECONDS)
+        finally:
+            capture.seek(0)
+            printed = capture.read(CAPTURE_BYTES)
+            if printed:
+                sys.stderr.write(printed.decode("utf-8", "replace"))
+                sys.stderr.flush()
     if data is None:
         raise CatalogError(f"{p}: loading and tracing the file ended without a result (its process died or took "
                            f"more than {FILE_SECONDS:.0f} s)")

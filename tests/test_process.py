@@ -417,7 +417,10 @@ def test_subprocess_signal_kills_every_worker_and_writes_no_report(tmp_path, sig
             proc.wait()
     assert proc.returncode == status, err
     assert "Traceback" not in err
-    assert err.strip().splitlines()[-1] == f"stiefelsym: {word} after 0 of 1 runs; no report written"
+    # the claims file is traced in child processes before the plan is made (no code of it runs in the CLI)
+    assert err.strip().splitlines()[-1] in (f"stiefelsym: {word} after 0 of 1 runs; no report written",
+                                            f"stiefelsym: {word} after 0 of ? runs (while tracing the claims "
+                                            "files); no report written")
     assert not (tmp_path / "out").exists()
     deadline = time.monotonic() + 10
     while not all(_gone(p) for p in pids) and time.monotonic() < deadline:
