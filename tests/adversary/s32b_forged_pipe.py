@@ -40,9 +40,10 @@ if os.environ.get("STIEFELSYM_S32B_FORGE") != "0":
     fd = _pipe_fd()
     if fd is not None:                      # only in the tracer child (the verifying process has no such pipe)
         d = _uf._claim_data(forged.claim, [])
-        true_graphs = {tuple(k) if k else None: g for k, g in _uf._traced(forged, "standard", [(2, 2)])}
-        false_graphs = {tuple(k): g for k, g in _uf._traced(_false, "standard", [(3, 2)]) if k}
-        d["graphs"] = [[None, true_graphs[None]], [[2, 2], true_graphs[(2, 2)]], [[3, 2], false_graphs[(3, 2)]]]
+        d.pop("keys", None)
+        d["graphs"] = [[None, _uf._trace_one(forged, "standard", None, False)],
+                       [[2, 2], _uf._trace_one(forged, "standard", (2, 2), True)],
+                       [[3, 2], _uf._trace_one(_false, "standard", (3, 2), False)]]
         d["sizes"]["list"] = [[2, 2]]
         d["sizes"]["admits"] = [[n, r, (n, r) in ((2, 2), (3, 2))] for n in range(1, 17) for r in range(1, n + 1)]
         d["sizes"]["where"] = True
