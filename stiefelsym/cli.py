@@ -960,9 +960,15 @@ def derive(claim_id: str, claims_files: tuple[str, ...]) -> None:
 
 
 def _source(c: Claim) -> str:
+    from .userfile import TracedFunction
     try:
-        path = inspect.getsourcefile(c.func)
-        line = inspect.getsourcelines(c.func)[1]
+        if isinstance(c.func, TracedFunction):     # a user's claim: where its child found it
+            path, line = c.func.path, c.func.line
+            if not path:
+                return c.source or "?"
+        else:
+            path = inspect.getsourcefile(c.func)
+            line = inspect.getsourcelines(c.func)[1]
     except (OSError, TypeError):
         return c.source or "?"
     if path:
