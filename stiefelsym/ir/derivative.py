@@ -62,7 +62,7 @@ from __future__ import annotations
 from fractions import Fraction
 from typing import Any
 
-from .graph import Graph, Named, Ref
+from .graph import Graph, Named, Ref, _ref
 from .trace import CONSTANT_PRIMITIVES, MATRICES, NUMBERS, PRIMITIVES
 
 #: the engine step that reads a flow's components (registered below)
@@ -156,9 +156,9 @@ def _transform(g: Graph, flows: frozenset = frozenset()) -> tuple[Graph, list]:
     def m(a: Any) -> Any:
         t = type(a)
         if t is Ref:
-            return remap[a.i]
+            return remap[a[0]]
         if t is tuple:
-            return tuple(m(x) for x in a)
+            return tuple([remap[x[0]] if type(x) is Ref else m(x) if type(x) is tuple else x for x in a])
         return a
 
     report: list = []
@@ -205,9 +205,9 @@ def _pruned(g: Graph) -> Graph:
     def m(a: Any) -> Any:
         t = type(a)
         if t is Ref:
-            return Ref(num[a.i])
+            return _ref(num[a[0]])
         if t is tuple:
-            return tuple(m(x) for x in a)
+            return tuple([_ref(num[x[0]]) if type(x) is Ref else m(x) if type(x) is tuple else x for x in a])
         return a
     out = Graph()
     out.refusals, out.fns, out.sizes = g.refusals, g.fns, g.sizes

@@ -203,10 +203,10 @@ class Tracer:
     __array_priority__ = 1000
 
     def __init__(self, t: "Trace", r: Ref, kind: str, shape: tuple = (None, None)) -> None:
-        object.__setattr__(self, "_t", t)
-        object.__setattr__(self, "_r", r)
-        object.__setattr__(self, "_kind", kind)
-        object.__setattr__(self, "_shape", shape)
+        _SET_T(self, t)
+        _SET_R(self, r)
+        _SET_KIND(self, kind)
+        _SET_SHAPE(self, shape)
 
     def __setattr__(self, name: str, value: Any) -> None:
         raise AttributeError("a traced value is read-only")
@@ -456,6 +456,24 @@ class TraceConstraints:
 
     def __init__(self, name: str, build: Callable) -> None:
         self.name, self.build = name, build
+
+
+#: the slots of a tracer, set by the engine only (its __setattr__ refuses)
+_SET_T, _SET_R, _SET_KIND, _SET_SHAPE = (Tracer._t.__set__, Tracer._r.__set__,   # type: ignore[attr-defined]
+                                         Tracer._kind.__set__, Tracer._shape.__set__)  # type: ignore[attr-defined]
+
+
+def _tracer(t: "Trace", r: Ref, kind: str, shape: tuple = (None, None)) -> Tracer:
+    """Tracer(t, r, kind, shape), made without the call of __init__."""
+    x = _NEW(Tracer)
+    _SET_T(x, t)
+    _SET_R(x, r)
+    _SET_KIND(x, kind)
+    _SET_SHAPE(x, shape)
+    return x
+
+
+_NEW = object.__new__
 
 
 class TraceScene:
@@ -800,7 +818,7 @@ class Trace:
 
     # -- nodes ----------------------------------------------------------------------------------
     def new(self, op: str, args: tuple, kind: str, shape: tuple = (None, None)) -> Tracer:
-        return Tracer(self, self.g.add(op, args), kind, shape)
+        return _tracer(self, self.g.add(op, args), kind, shape)
 
     def refuse(self, what: str) -> Any:
         self.g.refusals.append(what)
