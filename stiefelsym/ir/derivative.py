@@ -59,6 +59,7 @@ is derived from it, once per graph, and is what the methods evaluate.
 """
 from __future__ import annotations
 
+import itertools
 from fractions import Fraction
 from typing import Any
 
@@ -162,7 +163,17 @@ def _transform(g: Graph, flows: frozenset = frozenset()) -> tuple[Graph, list]:
         return a
 
     report: list = []
-    for i, (op, a) in enumerate(zip(g.ops, g.args)):
+    # the nodes before the first that a pass may rewrite are copied as they are (the same numbers: the
+    # graph is hash-consed, each node once), without going through add one by one
+    start = 0
+    if len(g.index) == len(g.ops):
+        start = next((i for i, (op, a) in enumerate(zip(g.ops, g.args))
+                      if op == "call" and (a[1] in _PASSES or a[1] in _FLOW_PASSES)), len(g.ops))
+        new.ops, new.args = g.ops[:start], g.args[:start]
+        new.index = dict(itertools.islice(g.index.items(), start))
+        remap.update((i, _ref(i)) for i in range(start))
+    for i in range(start, len(g.ops)):
+        op, a = g.ops[i], g.args[i]
         rewrite = None
         if op == "call" and a[1] in _PASSES:
             rewrite = _PASSES[a[1]]
