@@ -73,14 +73,18 @@ class Size:
 
 LITERALS = (int, Fraction, str, bool, type(None))
 
-#: the references made so far, by number (a Ref is immutable: one object per number serves every graph)
+#: the references made so far, by number (a Ref is immutable: one object per number serves every graph),
+#: and their text in a digest
 _REFS: list[Ref] = []
+_REF_TEXT: list[str] = []
 
 
 def _ref(i: int) -> Ref:
     """Ref(i), shared."""
     if i >= len(_REFS):
-        _REFS.extend(Ref(k) for k in range(len(_REFS), 2 * i + 1024))
+        more = range(len(_REFS), 2 * i + 1024)
+        _REF_TEXT.extend(f"%{k}" for k in more)
+        _REFS.extend(Ref(k) for k in more)
     return _REFS[i]
 
 
@@ -113,10 +117,13 @@ def _encode_args(a: tuple) -> str:
     if type(a) is not tuple:
         return _encode(a)
     parts = []
+    texts = _REF_TEXT
+    known = len(texts)
     for x in a:
         t = type(x)
         if t is Ref:
-            parts.append(f"%{x[0]}")
+            k = x[0]
+            parts.append(texts[k] if k < known else f"%{k}")
         elif t is str:
             parts.append(repr(x))
         elif t is int:
@@ -158,7 +165,7 @@ class Graph:
         return len(self.ops)
 
     def lines(self) -> list[str]:
-        return [f"%{i} = {op}{_encode_args(a)}" for i, (op, a) in enumerate(zip(self.ops, self.args))] + \
+        return [f"%{i} = {op}{_encode_args(a)}" for i, op, a in zip(range(len(self.ops)), self.ops, self.args)] + \
                [f"out {_encode(self.output) if self.output is not None else '-'}"]
 
     def digest(self) -> str:

@@ -24,7 +24,7 @@ from fractions import Fraction
 from typing import Any, Callable
 
 from .seal import refuse_registration
-from .graph import Graph, Named, Ref, Size
+from .graph import _REFS, Graph, Named, Ref, Size, _ref
 from .statements import Count, Rank
 
 
@@ -818,14 +818,32 @@ class Trace:
 
     # -- nodes ----------------------------------------------------------------------------------
     def new(self, op: str, args: tuple, kind: str, shape: tuple = (None, None)) -> Tracer:
-        return _tracer(self, self.g.add(op, args), kind, shape)
+        # Graph.add and _tracer, in line (the tracer's innermost step)
+        g = self.g
+        key = (op, args)
+        i = g.index.get(key)
+        if i is None:
+            i = g.index[key] = len(g.ops)
+            g.ops.append(op)
+            g.args.append(args)
+        x = _NEW(Tracer)
+        _SET_T(x, self)
+        _SET_R(x, _REFS[i] if i < len(_REFS) else _ref(i))
+        _SET_KIND(x, kind)
+        _SET_SHAPE(x, shape)
+        return x
 
     def refuse(self, what: str) -> Any:
         self.g.refusals.append(what)
         raise TraceRefused(f"refused: {what}")
 
     def size(self, k: int, d: str) -> Size:
-        """The size expression k·d (it carries no number)."""
+        """The size expression k·d (it carries no number; one object per k·d, a Size is immutable)."""
+        if type(k) is int and type(d) is str:
+            hit = _SIZE_MEMO.get((k, d))
+            if hit is None:
+                hit = _SIZE_MEMO[(k, d)] = Size(k, d, None)
+            return hit
         return Size(k, d, None)
 
     def size_number(self, size: Size, what: str | None) -> int | None:
@@ -964,6 +982,10 @@ class Trace:
         if type(returns) is int:
             return tuple(self.new("item", (ref, i), ANY) for i in range(returns))
         return Tracer(self, ref, ANY)
+
+
+#: the size expressions k·d made so far (see Trace.size)
+_SIZE_MEMO: dict[tuple[int, str], Size] = {}
 
 
 def _size_numbers(n: int | None, r: int | None) -> Callable[[Size], int | None]:
