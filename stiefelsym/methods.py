@@ -681,9 +681,9 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
         if nonzero:
             res.residual = f"{nonzero[0][1]} = {_short(_exact_text(nonzero[0][3], nonzero[0][2]))}"
             res.certificate = "the residual is a nonzero function on the chart"
-            point = run_points(claim, n, r, "rational", seed, func, trials=1)
-            if point.witness:
-                res.witness, res.seed = point.witness, seed
+            witness = _rational_witness(claim, n, r, seed, func)
+            if witness:
+                res.witness, res.seed = witness, seed
                 res.certificate += "; exact rational witness point attached"
         else:
             res.certificate = "; ".join(problems)
@@ -697,6 +697,18 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
         return res
     res.verdict = "proved"
     return res
+
+
+def _rational_witness(claim: Claim, n: int, r: int, seed: int, func: Callable) -> dict | None:
+    """The witness of a one-point rational run (``run_points(..., trials=1)``), for the exact method's
+    refutations.  On lent points (the mutation analysis) the rational run of the same function at
+    the same size has evaluated those very points, each a copy of the same snapshot, and kept what
+    they gave (:attr:`PointLoan.witnesses`): taken from there, not computed twice."""
+    if _LOAN is not None and not _LOAN.recording:
+        hit = _LOAN.witnesses.get((claim.id, claim.realization, n, r, seed, id(func)))
+        if hit is not None and hit[0] is func:
+            return hit[1]
+    return run_points(claim, n, r, "rational", seed, func, trials=1).witness
 
 
 #: three primes, one per probe point (a divisor that is not identically zero vanishes at a random
@@ -873,6 +885,11 @@ class PointLoan:
         self._points: dict[tuple, list] = {}
         #: the symbolic method's time budget per run while lending (None: its own, EXACT_TIME_LIMIT)
         self.exact_seconds = exact_seconds
+        #: (claim, realization, n, r, seed, id of the function) -> (function, witness): the witness of
+        #: the first point (of each component) of a rational run on lent points, which is what the
+        #: exact method's one-point rational run for its witness computes, on the same lent points
+        #: (see :func:`_rational_witness`)
+        self.witnesses: dict[tuple, tuple] = {}
 
     def scene(self, key: tuple, build: Callable[[], tuple]) -> tuple:
         """``build()``'s (fields..., scene) for this key: built and kept while recording, lent (a copy
@@ -901,6 +918,8 @@ class PointLoan:
         """Drop the points kept for one claim (its mutants are done)."""
         for key in [k for k in self._points if k[0] == claim_id]:
             del self._points[key]
+        for key in [k for k in self.witnesses if k[0] == claim_id]:
+            del self.witnesses[key]
 
 
 def _field_state(f: Any) -> tuple | None:
@@ -1134,6 +1153,11 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
             if kind == "modular":
                 witness["prime"] = field.p
         t += 1
+        if t == components and kind == "rational" and trials is None and not options \
+                and _LOAN is not None and not _LOAN.recording:
+            # the first point of each component is done: what a one-point run on these lent points
+            # (the exact method's witness) would find
+            _LOAN.witnesses[(claim.id, claim.realization, n, r, seed, id(func))] = (func, witness)
     points = min(len(p) for p in per_point) if point_degs else points
     if point_degs:
         deg = DegreeBound(max(d.numerator for d in point_degs), max(d.denominator for d in point_degs),

@@ -552,9 +552,10 @@ def _left_sides(fn: Callable, defn: ast.FunctionDef | None = None, filename: str
     return _compile(fn, ast.fix_missing_locations(new), filename) if tr.changed else None
 
 
-def _function_mutants(fn: Callable) -> list[tuple[str, int, Callable, str, str, bool]]:
+def _function_mutants(fn: Callable, vacuity: bool = True) -> list[tuple[str, int, Callable, str, str, bool]]:
     """(description, line, mutated function, operator, source, vacuous) for every one-step mutant of
-    fn, in source order, without duplicates; [] when the source is not available."""
+    fn, in source order, without duplicates; [] when the source is not available (``vacuity``
+    False: vacuous is not looked at, and False: the mutation analysis runs every mutant)."""
     try:
         defn, filename = _function_ast(fn)
     except (OSError, TypeError, SyntaxError, StopIteration):
@@ -575,7 +576,7 @@ def _function_mutants(fn: Callable) -> list[tuple[str, int, Callable, str, str, 
         if repeats[description] > 1:   # the same text at another place of the line
             description += f" (occurrence {repeats[description]})"
         out.append((description, lineno, _compile(fn, mutated, filename), site.operator,
-                    " ".join(ast.unparse(site.replacement).split()), _vacuous(mutated),
+                    " ".join(ast.unparse(site.replacement).split()), vacuity and _vacuous(mutated),
                     (lambda m=mutated: _left_sides(fn, m, filename))))
     return out
 
@@ -588,12 +589,12 @@ def mutants(claim: Claim | Callable, helpers: bool = False) -> list[Mutant]:
     Returns [] when the function's source is not available."""
     fn = claim.func if isinstance(claim, Claim) else claim
     out: list[Mutant] = []
-    for description, lineno, func, op, source, _, _ in _function_mutants(fn):
+    for description, lineno, func, op, source, _, _ in _function_mutants(fn, vacuity=False):
         out.append(Mutant(description=description, lineno=lineno, func=func, operator=op,
                           index=len(out), source=source))
     if helpers:
         for name, helper in helper_functions(fn):
-            for description, lineno, func, op, source, _, _ in _function_mutants(helper):
+            for description, lineno, func, op, source, _, _ in _function_mutants(helper, vacuity=False):
                 out.append(Mutant(description=f"in {name}(), {description}", lineno=lineno,
                                   func=_patched(fn, helper, func), operator=op, index=len(out), source=source))
     return out
@@ -1111,8 +1112,18 @@ class MutationReport:
 
 def _run_cells(claim: Claim, plan: Sequence[tuple[Size | None, str]], seed: int,
                func: Callable | None, variant: str | None) -> list[Cell]:
+    """The cells of the plan, in its order.  A mutant's symbolic runs come after its other runs: a
+    refutation attaches the witness of a rational point, which the rational run at the same size has
+    computed on the same lent points (:func:`stiefelsym.methods._rational_witness`); every run of a
+    mutant is independent of the others (each lent point a copy of the same snapshot), so the order
+    changes no verdict.  The printed claim's runs (which record the points) keep the plan's order."""
     from .runner import run_one
-    return [Cell.of(run_one(claim, s, m, seed, func=func, variant=variant)) for s, m in plan]
+    order = sorted(range(len(plan)), key=lambda k: func is not None and plan[k][1] == "exact")
+    out: dict[int, Cell] = {}
+    for k in order:
+        s, m = plan[k]
+        out[k] = Cell.of(run_one(claim, s, m, seed, func=func, variant=variant))
+    return [out[k] for k in range(len(plan))]
 
 
 def classify(outcome: MutantOutcome, baseline: MutantOutcome) -> MutantOutcome:

@@ -138,3 +138,40 @@ def test_a_scene_of_its_own_is_not_shared(monkeypatch, guard):
     assert broken != guard
     if guard:
         assert outcomes(lent) == outcomes(run_mutation([claim], lend=False, **kw))
+
+
+def test_the_exact_witness_taken_from_the_rational_run_is_that_of_a_one_point_run(monkeypatch):
+    """A refutation by the exact method attaches the witness of a one-point rational run; on lent points
+    it is taken from the rational run of the same mutant at the same size (PointLoan.witnesses): the
+    very witness the one-point run computes (compared here run by run), taken for most refutations."""
+    from stiefelsym import methods as M
+    real = M._rational_witness
+    seen = {"memo": 0, "runs": 0}
+
+    def compared(claim, n, r, seed, func):
+        loan = M._LOAN
+        hit = loan.witnesses.get((claim.id, claim.realization, n, r, seed, id(func))) if loan else None
+        got = real(claim, n, r, seed, func)
+        direct = M.run_points(claim, n, r, "rational", seed, func, trials=1).witness
+        assert got == direct
+        seen["memo" if hit is not None and hit[0] is func and not loan.recording else "runs"] += 1
+        return got
+    monkeypatch.setattr(M, "_rational_witness", compared)
+    reg = load_catalog()
+    run_mutation([reg.get("neumann-lax"), reg.get("euclidean-flow"), reg.get("normal-momentum-of-velocity")],
+                 methods=("exact", "rational"), limit=8)
+    assert seen["memo"] >= 5 and seen["memo"] > seen["runs"]
+
+
+def test_a_witness_kept_for_another_function_is_not_taken():
+    """Negative control: a kept witness is taken only for the function it was computed for (by identity)."""
+    from stiefelsym import methods as M
+    reg = load_catalog()
+    claim = reg.get("neumann-lax")
+    loan = M.PointLoan()
+
+    def other(s):
+        return claim.func(s)
+    loan.witnesses[(claim.id, claim.realization, 4, 2, 0, id(other))] = (claim.func, {"forged": True})
+    with M.lending_points(loan):
+        assert M._rational_witness(claim, 4, 2, 0, other) != {"forged": True}

@@ -59,10 +59,11 @@ is derived from it, once per graph, and is what the methods evaluate.
 """
 from __future__ import annotations
 
+import itertools
 from fractions import Fraction
 from typing import Any
 
-from .graph import Graph, Named, Ref
+from .graph import Graph, Named, Ref, _ref
 from .trace import CONSTANT_PRIMITIVES, MATRICES, NUMBERS, PRIMITIVES
 
 #: the engine step that reads a flow's components (registered below)
@@ -156,13 +157,23 @@ def _transform(g: Graph, flows: frozenset = frozenset()) -> tuple[Graph, list]:
     def m(a: Any) -> Any:
         t = type(a)
         if t is Ref:
-            return remap[a.i]
+            return remap[a[0]]
         if t is tuple:
-            return tuple(m(x) for x in a)
+            return tuple([remap[x[0]] if type(x) is Ref else m(x) if type(x) is tuple else x for x in a])
         return a
 
     report: list = []
-    for i, (op, a) in enumerate(zip(g.ops, g.args)):
+    # the nodes before the first that a pass may rewrite are copied as they are (the same numbers: the
+    # graph is hash-consed, each node once), without going through add one by one
+    start = 0
+    if len(g.index) == len(g.ops):
+        start = next((i for i, (op, a) in enumerate(zip(g.ops, g.args))
+                      if op == "call" and (a[1] in _PASSES or a[1] in _FLOW_PASSES)), len(g.ops))
+        new.ops, new.args = g.ops[:start], g.args[:start]
+        new.index = dict(itertools.islice(g.index.items(), start))
+        remap.update((i, _ref(i)) for i in range(start))
+    for i in range(start, len(g.ops)):
+        op, a = g.ops[i], g.args[i]
         rewrite = None
         if op == "call" and a[1] in _PASSES:
             rewrite = _PASSES[a[1]]
@@ -205,9 +216,9 @@ def _pruned(g: Graph) -> Graph:
     def m(a: Any) -> Any:
         t = type(a)
         if t is Ref:
-            return Ref(num[a.i])
+            return _ref(num[a[0]])
         if t is tuple:
-            return tuple(m(x) for x in a)
+            return tuple([_ref(num[x[0]]) if type(x) is Ref else m(x) if type(x) is tuple else x for x in a])
         return a
     out = Graph()
     out.refusals, out.fns, out.sizes = g.refusals, g.fns, g.sizes

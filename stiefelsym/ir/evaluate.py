@@ -35,14 +35,19 @@ def _deps(g: Graph) -> list[frozenset]:
     if cached is not None:
         return cached
     deps: list[frozenset] = []
+    empty: frozenset = frozenset()
     for i, (op, args) in enumerate(zip(g.ops, g.args)):
+        below = [deps[j] for j in g.refs(i) if deps[j]]
+        if op != "scene" and op != "param" and op != "fn" and len(below) <= 1:
+            deps.append(below[0] if below else empty)      # the common case: no set to build
+            continue
         d: set = set()
         if op == "scene" and args[0] != 0:
             d.add(args[0])
         elif op == "param":
             d.add(args[0])
-        for j in g.refs(i):
-            d |= deps[j]
+        for x in below:
+            d |= x
         if op == "fn":
             d.discard(args[0])
         deps.append(frozenset(d))
@@ -292,15 +297,20 @@ def node_keys(g: Graph) -> list[bytes]:
     if keys is None:
         keys = []
 
+        hexes: list[str] = []
+
         def enc(a: Any) -> str:
             t = type(a)
             if t is Ref:
-                return "%" + keys[a.i].hex()
+                return "%" + hexes[a[0]]
             if t is tuple:
-                return "(" + ",".join(enc(x) for x in a) + ")"
+                return "(" + ",".join(["%" + hexes[x[0]] if type(x) is Ref else enc(x) for x in a]) + ")"
             return _encode(a)
+        blake2b = hashlib.blake2b
         for op, a in zip(g.ops, g.args):
-            keys.append(hashlib.blake2b((op + enc(a)).encode(), digest_size=20).digest())
+            k = blake2b((op + enc(a)).encode(), digest_size=20).digest()
+            keys.append(k)
+            hexes.append(k.hex())
         g.cache["node_keys"] = keys
     return keys
 

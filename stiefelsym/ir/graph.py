@@ -73,6 +73,20 @@ class Size:
 
 LITERALS = (int, Fraction, str, bool, type(None))
 
+#: the references made so far, by number (a Ref is immutable: one object per number serves every graph),
+#: and their text in a digest
+_REFS: list[Ref] = []
+_REF_TEXT: list[str] = []
+
+
+def _ref(i: int) -> Ref:
+    """Ref(i), shared."""
+    if i >= len(_REFS):
+        more = range(len(_REFS), 2 * i + 1024)
+        _REF_TEXT.extend(f"%{k}" for k in more)
+        _REFS.extend(Ref(k) for k in more)
+    return _REFS[i]
+
 
 def _encode(a: Any) -> str:
     """Canonical text of an argument (what the digest hashes); the value of a size is left out, so
@@ -96,6 +110,27 @@ def _encode(a: Any) -> str:
     if t is int:
         return str(a)
     raise TypeError(f"not an IR argument: {type(a).__name__}")
+
+
+def _encode_args(a: tuple) -> str:
+    """_encode(a) of a node's argument tuple, with the common arguments encoded in line (the same text)."""
+    if type(a) is not tuple:
+        return _encode(a)
+    parts = []
+    texts = _REF_TEXT
+    known = len(texts)
+    for x in a:
+        t = type(x)
+        if t is Ref:
+            k = x[0]
+            parts.append(texts[k] if k < known else f"%{k}")
+        elif t is str:
+            parts.append(repr(x))
+        elif t is int:
+            parts.append(str(x))
+        else:
+            parts.append(_encode(x))
+    return "(" + ",".join(parts) + ")"
 
 
 class Graph:
@@ -124,42 +159,46 @@ class Graph:
             i = self.index[key] = len(self.ops)
             self.ops.append(op)
             self.args.append(args)
-        return Ref(i)
+        return _REFS[i] if i < len(_REFS) else _ref(i)
 
     def __len__(self) -> int:
         return len(self.ops)
 
     def lines(self) -> list[str]:
-        return [f"%{i} = {op}{_encode(a)}" for i, (op, a) in enumerate(zip(self.ops, self.args))] + \
+        return [f"%{i} = {op}{_encode_args(a)}" for i, op, a in zip(range(len(self.ops)), self.ops, self.args)] + \
                [f"out {_encode(self.output) if self.output is not None else '-'}"]
 
     def digest(self) -> str:
         d = self.cache.get("digest")
         if d is not None:
             return d
-        h = hashlib.sha256()
-        for line in self.lines():
-            h.update(line.encode())
-            h.update(b"\n")
-        d = self.cache["digest"] = h.hexdigest()
+        # every line followed by a newline, hashed in one piece (the same bytes as line by line)
+        text = "\n".join(self.lines()) + "\n"
+        d = self.cache["digest"] = hashlib.sha256(text.encode()).hexdigest()
         return d
 
     def sealed(self) -> "Graph":
         """A copy of the graph that no object of the trace refers to (claim code that kept a handle on
         the graph being traced cannot change this one or its cache)."""
-        g = Graph()
-        g.__setstate__((list(self.ops), list(self.args), self.output, list(self.refusals), self.fns, self.sizes))
+        g = Graph.__new__(Graph)
+        g.ops, g.args, g.output, g.refusals, g.fns, g.sizes = (list(self.ops), list(self.args), self.output,
+                                                               list(self.refusals), self.fns, self.sizes)
+        g.index = dict(self.index)      # the same keys: a copy, not a rebuild
+        g.cache = {}
         return g
 
-    def refs(self, i: int):
-        """The nodes node ``i`` reads."""
+    def refs(self, i: int) -> list[int]:
+        """The nodes node ``i`` reads (last argument first, nested tuples likewise)."""
+        out: list[int] = []
         stack = list(self.args[i])
         while stack:
             a = stack.pop()
-            if type(a) is Ref:
-                yield a.i
-            elif type(a) is tuple:
+            t = type(a)
+            if t is Ref:
+                out.append(a[0])
+            elif t is tuple:
                 stack.extend(a)
+        return out
 
     def __getstate__(self):
         return (self.ops, self.args, self.output, self.refusals, self.fns, self.sizes)

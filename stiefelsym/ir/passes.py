@@ -271,7 +271,7 @@ def coordinate_reads(g: Graph) -> dict[str, frozenset]:
     # nodes the claim's own algebra reads (an engine step handed a coordinate basis uses it inside a
     # covariant construction, e.g. Euler–Lagrange equations in coordinates; claim algebra on it reads
     # coordinates)
-    claim_uses = {j for k, op in enumerate(g.ops) if op != "prim" for j in g.refs(k)}
+    claim_uses: set | None = None      # computed when a coordinate step is met
     for i, (op, a) in enumerate(zip(g.ops, g.args)):
         if op == "entry":
             sd = sides[a[0].i] if type(a[0]) is Ref else None
@@ -282,8 +282,11 @@ def coordinate_reads(g: Graph) -> dict[str, frozenset]:
             inv = spaces_of(sides[i]) & {"n"}
             if inv:
                 add("a constant matrix on R^n", inv)
-        elif op == "prim" and a[0].qualname in COORDINATE_STEPS and i in claim_uses:
-            add("the coordinate basis of R^n (an engine step)", {"n"})
+        elif op == "prim" and a[0].qualname in COORDINATE_STEPS:
+            if claim_uses is None:
+                claim_uses = {j for k, op_k in enumerate(g.ops) if op_k != "prim" for j in g.refs(k)}
+            if i in claim_uses:
+                add("the coordinate basis of R^n (an engine step)", {"n"})
         elif op == "block" and sides[i]:
             if any(S.atom[S.find(x)] in ("n", "opaque") for x in sides[i]):
                 add(BLOCK_SPLITTING, {"n"})

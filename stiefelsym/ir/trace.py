@@ -24,7 +24,7 @@ from fractions import Fraction
 from typing import Any, Callable
 
 from .seal import refuse_registration
-from .graph import Graph, Named, Ref, Size
+from .graph import _REFS, Graph, Named, Ref, Size, _ref
 from .statements import Count, Rank
 
 
@@ -203,10 +203,10 @@ class Tracer:
     __array_priority__ = 1000
 
     def __init__(self, t: "Trace", r: Ref, kind: str, shape: tuple = (None, None)) -> None:
-        object.__setattr__(self, "_t", t)
-        object.__setattr__(self, "_r", r)
-        object.__setattr__(self, "_kind", kind)
-        object.__setattr__(self, "_shape", shape)
+        _SET_T(self, t)
+        _SET_R(self, r)
+        _SET_KIND(self, kind)
+        _SET_SHAPE(self, shape)
 
     def __setattr__(self, name: str, value: Any) -> None:
         raise AttributeError("a traced value is read-only")
@@ -456,6 +456,24 @@ class TraceConstraints:
 
     def __init__(self, name: str, build: Callable) -> None:
         self.name, self.build = name, build
+
+
+#: the slots of a tracer, set by the engine only (its __setattr__ refuses)
+_SET_T, _SET_R, _SET_KIND, _SET_SHAPE = (Tracer._t.__set__, Tracer._r.__set__,   # type: ignore[attr-defined]
+                                         Tracer._kind.__set__, Tracer._shape.__set__)  # type: ignore[attr-defined]
+
+
+def _tracer(t: "Trace", r: Ref, kind: str, shape: tuple = (None, None)) -> Tracer:
+    """Tracer(t, r, kind, shape), made without the call of __init__."""
+    x = _NEW(Tracer)
+    _SET_T(x, t)
+    _SET_R(x, r)
+    _SET_KIND(x, kind)
+    _SET_SHAPE(x, shape)
+    return x
+
+
+_NEW = object.__new__
 
 
 class TraceScene:
@@ -800,14 +818,32 @@ class Trace:
 
     # -- nodes ----------------------------------------------------------------------------------
     def new(self, op: str, args: tuple, kind: str, shape: tuple = (None, None)) -> Tracer:
-        return Tracer(self, self.g.add(op, args), kind, shape)
+        # Graph.add and _tracer, in line (the tracer's innermost step)
+        g = self.g
+        key = (op, args)
+        i = g.index.get(key)
+        if i is None:
+            i = g.index[key] = len(g.ops)
+            g.ops.append(op)
+            g.args.append(args)
+        x = _NEW(Tracer)
+        _SET_T(x, self)
+        _SET_R(x, _REFS[i] if i < len(_REFS) else _ref(i))
+        _SET_KIND(x, kind)
+        _SET_SHAPE(x, shape)
+        return x
 
     def refuse(self, what: str) -> Any:
         self.g.refusals.append(what)
         raise TraceRefused(f"refused: {what}")
 
     def size(self, k: int, d: str) -> Size:
-        """The size expression k·d (it carries no number)."""
+        """The size expression k·d (it carries no number; one object per k·d, a Size is immutable)."""
+        if type(k) is int and type(d) is str:
+            hit = _SIZE_MEMO.get((k, d))
+            if hit is None:
+                hit = _SIZE_MEMO[(k, d)] = Size(k, d, None)
+            return hit
         return Size(k, d, None)
 
     def size_number(self, size: Size, what: str | None) -> int | None:
@@ -946,6 +982,10 @@ class Trace:
         if type(returns) is int:
             return tuple(self.new("item", (ref, i), ANY) for i in range(returns))
         return Tracer(self, ref, ANY)
+
+
+#: the size expressions k·d made so far (see Trace.size)
+_SIZE_MEMO: dict[tuple[int, str], Size] = {}
 
 
 def _size_numbers(n: int | None, r: int | None) -> Callable[[Size], int | None]:
