@@ -6,7 +6,7 @@ import os
 from pathlib import Path
 from typing import Iterable, Sequence, Union
 
-from .claims import Claim, Registry, Size, load_catalog, load_claims_file
+from .claims import Claim, Registry, Size, load_catalog
 from .pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT
 from .results import ResultList
 
@@ -31,13 +31,21 @@ def claims_files(paths: PathLike | Iterable[PathLike]) -> list[Path]:
     return out
 
 
-def load(files: PathLike | Iterable[PathLike] = (), catalog: bool | None = None) -> Registry:
+def load(files: PathLike | Iterable[PathLike] = (), catalog: bool | None = None,
+         sizes: Iterable[tuple[int, int] | Size] = ()) -> Registry:
     """The claims of ``files`` (files or directories), followed by the catalog's when ``catalog``
-    (default: only when no file is given).  An id defined twice is refused (ValueError)."""
+    (default: only when no file is given).  An id defined twice is refused (ValueError).
+
+    A file is imported and its claims traced in child processes, as ``stiefelsym verify --claims``
+    does (:func:`stiefelsym.userfile.load_claims_isolated`): at the sizes each claim lists and at
+    ``sizes``; nothing of the file runs in the calling process.  To import a file in this process
+    (its claims as written, e.g. to call their functions), use :func:`stiefelsym.load_claims_file`."""
+    from .userfile import load_claims_isolated
     merged = Registry()
     paths = claims_files(files)
+    wanted = list(sizes)
     for f in paths:
-        for c in load_claims_file(f):
+        for c in load_claims_isolated(f, wanted):
             if c.id in merged:
                 raise ValueError(f"claim {c.id!r} is defined twice (again in {f})")
             merged.add(c)
@@ -76,9 +84,10 @@ def verify(claims: ClaimRef | Iterable[ClaimRef] | None = None, *,
     ids = [c for c in named or () if isinstance(c, str)]
     registry = Registry()
     if named is None or ids:
-        registry = load(files, catalog=False) if files else Registry()
+        wanted = list(sizes or ())
+        registry = load(files, catalog=False, sizes=wanted) if files else Registry()
         if not len(registry) or any(i not in registry for i in ids):
-            registry = load(files, catalog=True)
+            registry = load(files, catalog=True, sizes=wanted)
     selected = [registry.get(c) if isinstance(c, str) else c for c in (named if named is not None else registry)]
     if not selected:
         raise ValueError("no claims to verify (0 claims loaded)")

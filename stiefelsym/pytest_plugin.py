@@ -67,13 +67,18 @@ class ClaimsFile(pytest.File):
     """A claims file (or a module of the catalog): its claims' runs."""
 
     def _claims(self) -> list[Any]:
-        from .claims import CATALOG, CatalogError, load_catalog, load_claims_file
+        from .claims import CATALOG, CatalogError, load_catalog
         catalog = _catalog_dir()
         if catalog is not None and self.path.resolve().parent == catalog:
             module = f"{CATALOG}.{self.path.stem}"
             return [c for c in load_catalog() if c.source == module]
         try:
-            return list(load_claims_file(self.path))
+            # imported and traced in child processes, as `stiefelsym verify --claims` does: nothing of the
+            # file runs in the pytest process
+            from .userfile import load_claims_isolated
+            sizes = [tuple(int(x) for x in s.split(",")) for s in self.config.getoption("stiefelsym_size") or ()
+                     if s.count(",") == 1 and all(x.strip().isdigit() for x in s.split(","))]
+            return list(load_claims_isolated(self.path, sizes))
         except CatalogError as exc:
             raise self.CollectError(str(exc)) from None
 

@@ -50,10 +50,6 @@ def test_an_entry_of_XtAX_through_an_opaque_space_is_not_proved(method):
     assert v["adv-s32b-opaque-offdiag"] not in PASSING, v
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "open: the metric realization's chart (B11 diagonal by O(r) on the right, since before s32) does not fall "
-    "back: the same opaque-space picking proves the false (XᵀA⁻¹X)_12 = 0 (definite('r+so') is None, so neither "
-    "the scene's record nor coordinate_reads() sees R^r)"))
 @pytest.mark.parametrize("method", ["exact", "auto"])
 def test_an_entry_of_XtAinvX_through_an_opaque_space_is_not_proved_metric(method):
     v = verdicts(OPAQUE, method, ids=("adv-s32b-opaque-offdiag-metric",))
@@ -72,12 +68,6 @@ def test_the_opaque_entry_picking_is_sound():
 COND = "s32b_constraint_basis_entries.py"
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "open: the entries of twisted.constraint_bracket_matrix are coordinates of Sym(r) (the constraints in a "
-    "fixed basis), which O(r) acting on the right mixes; neither the scene's record nor coordinate_reads() "
-    "counts an item of an engine step's matrix as a read of R^r, so the chart with A11 diagonal is used and "
-    "an entry that is a multiple of (XᵀAX)_12 (F = XᵀAX) is proved 0; the same for an entry of the metric "
-    "realization's s.constraint_bracket_matrix() (its chart has long reduced by O(r); open on main too)"))
 @pytest.mark.parametrize("cid", ["adv-s32b-cond-entry", "adv-s32b-cond-entry-metric"])
 @pytest.mark.parametrize("method", ["exact", "auto"])
 def test_an_entry_of_the_constraint_bracket_matrix_is_not_proved(method, cid):
@@ -103,9 +93,6 @@ def test_solves_beyond_3x3_taken_by_the_small_core_rule():
     assert v["adv-s32b-core-singular"] not in PASSING, v
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "open: `stiefelsym check` runs the same chart again and accepts the false 'proved' record of the "
-    "constraint-basis entry (its re-run has the same blind spot as the run)"))
 def test_check_rejects_the_chart_proofs_of_unrecorded_reads(tmp_path):
     cli("verify", "adv-s32b-opaque-offdiag", "adv-s32b-cond-entry", "--claims", str(HERE / OPAQUE), "--claims",
         str(HERE / COND), "--method", "exact", "--size", "3,2", "--report-dir", str(tmp_path))
@@ -124,10 +111,6 @@ for r in res:
 """
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "open: stiefelsym.api.load (api.verify(files=...)) calls claims.load_claims_file in the calling process, "
-    "not userfile.load_claims_isolated: the file's module code runs there and marks its claims reviewed, and "
-    "the exact method relies on the stated equivariance: X_11 = 1 proved (the CLI refuses the same spoof)"))
 def test_api_verify_does_not_honour_a_review_flag_set_by_the_file():
     out = subprocess.run([sys.executable, "-c", API_RUN.format(path=str(HERE / "reviewed_flag_spoofed.py"))],
                          cwd=ROOT, capture_output=True, text=True, timeout=300)
@@ -176,10 +159,6 @@ PLUGIN_ARGS = ("--stiefelsym-method", "exact", "--stiefelsym-size", "3,2", "-q",
                "-c", os.devnull)
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "open: the pytest plugin (ClaimsFile._claims) calls claims.load_claims_file in the pytest process, not "
-    "userfile.load_claims_isolated: the file's module code runs there and marks its claims reviewed, and the "
-    "exact method relies on the stated equivariance: X_11 = 1 proved, its items pass"))
 def test_the_pytest_plugin_does_not_honour_a_review_flag_set_by_the_file(tmp_path):
     f = tmp_path / "spoofed_claims.py"
     f.write_text((HERE / "reviewed_flag_spoofed.py").read_text())
@@ -188,14 +167,11 @@ def test_the_pytest_plugin_does_not_honour_a_review_flag_set_by_the_file(tmp_pat
     assert "2 failed" in out.stdout, out.stdout[-2000:]
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "open: a claim id is any string (neither @claim, Claim.__post_init__ nor the wire decoder checks it): an id "
-    "with a line break and a forged verdict line prints `adv-s32b-nl (3,2) exact: proved` for a claim that "
-    "fails (the summary still counts it unexpected)"))
 def test_a_claim_id_cannot_print_a_forged_verdict_line():
     out = cli("verify", "--claims", str(HERE / "s32b_claim_id_newline.py"), "--method", "exact", "--size", "3,2")
     passing = [m.group(0) for m in map(LINE.match, out.stdout.splitlines()) if m and m.group(2) in PASSING]
-    assert not passing and "fails" in out.stdout, out.stdout
+    # an id names the claim on every output line: one with a line break is refused when the claim is made
+    assert not passing and out.returncode == 2 and "claim id" in out.stderr, out.stdout + out.stderr
 
 
 # -- 4. the strict decoder --------------------------------------------------------------------------------
