@@ -43,13 +43,30 @@ def run_isolated(fn: Callable[[], Any], seconds: float, describe: Callable[[Base
             os._exit(0)
     os.close(wfd)
     gc.unfreeze()
+    data = read_pipe(rfd, seconds, lambda: _kill(pid))
+    if data is None:
+        raise HardTimeout()
+    os.waitpid(pid, 0)
+    if not data:
+        raise ChildError("the computation ended without a result (the child process died)")
+    kind, value = pickle.loads(data)
+    if kind == "error":
+        raise ChildError(value)
+    return value
+
+
+def read_pipe(rfd: int, seconds: float, on_fail: Callable[[], None]) -> bytes | None:
+    """Everything a child writes to ``rfd`` until it closes it, or None once ``seconds`` have passed;
+    ``rfd`` is closed, and ``on_fail()`` (which kills the child) is called on a timeout or when the
+    wait is interrupted."""
     chunks: list[bytes] = []
     deadline = time.monotonic() + seconds
     try:
         while True:
             left = deadline - time.monotonic()
             if left <= 0:
-                raise HardTimeout()
+                on_fail()
+                return None
             ready, _, _ = select.select([rfd], [], [], left)
             if ready:
                 chunk = os.read(rfd, 1 << 16)
@@ -57,17 +74,11 @@ def run_isolated(fn: Callable[[], Any], seconds: float, describe: Callable[[Base
                     break
                 chunks.append(chunk)
     except BaseException:
-        _kill(pid)
+        on_fail()
         raise
     finally:
         os.close(rfd)
-    os.waitpid(pid, 0)
-    if not chunks:
-        raise ChildError("the computation ended without a result (the child process died)")
-    kind, value = pickle.loads(b"".join(chunks))
-    if kind == "error":
-        raise ChildError(value)
-    return value
+    return b"".join(chunks)
 
 
 def _kill(pid: int) -> None:

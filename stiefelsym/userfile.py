@@ -49,6 +49,7 @@ from fractions import Fraction
 from pathlib import Path
 from typing import Any, Callable, Iterable, Sequence
 
+from .isolate import read_pipe
 from .pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT, GIB
 from .claims import CatalogError, Claim, ClaimTimeout, Correction, Registry, Size, SizeSpec, load_claims_file
 
@@ -243,30 +244,14 @@ def _fork_bytes(make: Callable[[], bytes], seconds: float) -> bytes | None:
             os._exit(code)
     os.close(wfd)
     gc.unfreeze()
-    chunks: list[bytes] = []
-    deadline = time.monotonic() + seconds
-    try:
-        while True:
-            left = deadline - time.monotonic()
-            if left <= 0:
-                _kill_group(pid)
-                return None
-            ready, _, _ = select.select([rfd], [], [], left)
-            if ready:
-                chunk = os.read(rfd, 1 << 16)
-                if not chunk:
-                    break
-                chunks.append(chunk)
-    except BaseException:
-        _kill_group(pid)
-        raise
-    finally:
-        os.close(rfd)
+    data = read_pipe(rfd, seconds, lambda: _kill_group(pid))
+    if data is None:
+        return None
     _, status = os.waitpid(pid, 0)
     _kill_group(pid)            # what the file started and left running
     if status != 0:
         return None
-    return b"".join(chunks)
+    return data
 
 
 def _kill_group(pid: int) -> None:

@@ -12,7 +12,7 @@ Index spaces, shapes and the record of looks at coordinates stay ``Mat``'s.
 """
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, Callable
 
 import numpy as np
 
@@ -73,6 +73,16 @@ def _remember(key: tuple, a: Any, b: Any, value: Any) -> Any:
     return value
 
 
+def _memoized(op: str, a: Any, b: Any, compute: Callable[[], Any]) -> Any:
+    """compute() of two polynomials, remembered by the operands' identity (each entry keeps its
+    operands alive, so their ids are not reused while it stands)."""
+    key = (op, id(a), id(b))
+    hit = _VALUES.get(key)
+    if hit is not None and hit[0] is a and hit[1] is b:
+        return hit[2]
+    return _remember(key, a, b, compute())
+
+
 class FreeBackend(Backend):
     """The operations of :class:`Mat` on the storage described above, over a free field (or the
     dual numbers over it): each one computes what the generic path computes."""
@@ -111,11 +121,7 @@ class FreeBackend(Backend):
     def add(self, a: Any, b: Any) -> Any:
         if type(a) is NCPoly and type(b) is NCPoly:
             if self._memo():
-                key = ("+", id(a), id(b))
-                hit = _VALUES.get(key)
-                if hit is not None and hit[0] is a and hit[1] is b:
-                    return hit[2]
-                return _remember(key, a, b, self._nf(a.__add__(b)))
+                return _memoized("+", a, b, lambda: self._nf(a.__add__(b)))
             return self._nf(a.__add__(b))   # (what a + b calls)
         if type(a) is not np.ndarray and type(b) is not np.ndarray:
             return self._nf(a + b)
@@ -124,11 +130,7 @@ class FreeBackend(Backend):
     def sub(self, a: Any, b: Any) -> Any:
         if type(a) is NCPoly and type(b) is NCPoly:
             if self._memo():
-                key = ("-", id(a), id(b))
-                hit = _VALUES.get(key)
-                if hit is not None and hit[0] is a and hit[1] is b:
-                    return hit[2]
-                return _remember(key, a, b, self._nf(a.__sub__(b)))
+                return _memoized("-", a, b, lambda: self._nf(a.__sub__(b)))
             return self._nf(a.__sub__(b))   # (what a - b calls)
         if type(a) is not np.ndarray and type(b) is not np.ndarray:
             return self._nf(a - b)
@@ -146,11 +148,7 @@ class FreeBackend(Backend):
     def matmul(self, a: Any, b: Any) -> Any:
         if type(a) is NCPoly and type(b) is NCPoly:
             if self._memo():
-                key = ("*", id(a), id(b))
-                hit = _VALUES.get(key)
-                if hit is not None and hit[0] is a and hit[1] is b:
-                    return hit[2]
-                return _remember(key, a, b, self._nf(a._mul_poly(b)))
+                return _memoized("*", a, b, lambda: self._nf(a._mul_poly(b)))
             return self._nf(a._mul_poly(b))   # (what a * b calls)
         if type(a) is not np.ndarray and type(b) is not np.ndarray:
             return self._nf(a * b)
