@@ -117,6 +117,7 @@ def test_threaded_workers_give_the_verdicts_of_a_local_run(catalog):
     assert {r.verdict for r in remote} >= {"proved", "checked"}
 
 
+@pytest.mark.slow   # a worker killed mid-run (24 s): run by `make verify-all`
 def test_a_worker_killed_mid_run_changes_no_verdict(tmp_path):
     import os
     import signal

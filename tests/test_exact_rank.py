@@ -42,6 +42,7 @@ def two_l(n, r):
     return n * (n - 1) // 2 - n // 2 if n <= 2 * r + 1 else 2 * r * (n - r - 1)
 
 
+@pytest.mark.slow   # sympy's rank as the reference (10 s): run by `make verify-all`
 def test_bareiss_rank_agrees_with_sympy():
     rng = random.Random(1)
     x = sp.symbols("x0:4")

@@ -239,6 +239,7 @@ def test_magnetic_flow_needs_r_2():
 
 # --------------------------------------------------------------------------- the command
 
+@pytest.mark.slow   # the whole flows command (12 s): run by `make verify-all`
 def test_flows_command_writes_its_files(run, tmp_path):
     pytest.importorskip("matplotlib")
     res = run("flows", "--quick", "--report-dir", "out")
