@@ -6,38 +6,19 @@ import json
 import re
 import subprocess
 import sys
-from pathlib import Path
 
 import pytest
 
-HERE = Path(__file__).resolve().parent
-ROOT = HERE.parents[1]
-PASSING = ("proved", "checked", "numeric")
-#: "claim (n,r) method: verdict" or "claim all n, r free: verdict" (auto prints the method it chose)
-LINE = re.compile(r"^(\S+) (?:\(\d+,\d+\)|all n, r) \w+: (\w+)")
-
-
-def cli(*args, cwd=ROOT):
-    return subprocess.run([sys.executable, "-m", "stiefelsym", *args], cwd=cwd, capture_output=True,
-                          text=True, timeout=300)
+from adversary_cli import HERE, LINE, PASSING, ROOT, cli, parse, run_verify  # noqa: E402,F401
 
 
 def verdicts(claims_file, method, size="3,2", ids=()):
-    """{claim id: verdict} of one `stiefelsym verify` run."""
-    args = ["verify", *ids, "--claims", str(HERE / claims_file), "--method", method]
-    if method != "free":
-        args += ["--size", size]
-    run = cli(*args)
-    out = run.stdout
-    found = {}
+    """{claim id: verdict} of one `stiefelsym verify` run; a file the engine refused when it was loaded
+    has no verdict at all, for any of its claims."""
+    run = run_verify(claims_file, method, size, ids)
     if run.returncode == 2 and ("registered by the engine" in run.stderr or "engine was changed" in run.stderr):
-        # the claims file was refused when it was loaded: no verdict at all, for any of its claims
         return {cid: "refused" for cid in ids} | {"*": "refused"}
-    for line in out.splitlines():
-        m = LINE.match(line)
-        if m:
-            found[m.group(1)] = m.group(2)
-    return found
+    return parse(run.stdout)
 
 
 def _v(claims_file, method, cid, size="3,2", ids=()):

@@ -5,35 +5,12 @@ test_adversary.py: every run is in a fresh process, each test asserts the CORREC
 is open today is a strict xfail."""
 import json
 import os
-import re
 import subprocess
 import sys
-from pathlib import Path
 
 import pytest
 
-HERE = Path(__file__).resolve().parent
-ROOT = HERE.parents[1]
-PASSING = ("proved", "checked", "numeric")
-LINE = re.compile(r"^(\S+) (?:\(\d+,\d+\)|all n, r) \w+: (\w+)")
-
-
-def cli(*args, env=None):
-    return subprocess.run([sys.executable, "-m", "stiefelsym", *args], cwd=ROOT, capture_output=True, text=True,
-                          timeout=300, env=env)
-
-
-def verdicts(claims_file, method, size="3,2", ids=()):
-    """{claim id: verdict} of one `stiefelsym verify` run (the dimension-free method has no size)."""
-    args = ["verify", *ids, "--claims", str(HERE / claims_file), "--method", method]
-    if method != "free":
-        args += ["--size", size]
-    out = {}
-    for line in cli(*args).stdout.splitlines():
-        m = LINE.match(line)
-        if m:
-            out[m.group(1)] = m.group(2)
-    return out
+from adversary_cli import HERE, LINE, PASSING, ROOT, cli, verdicts  # noqa: E402,F401
 
 
 # -- 1. the O(r) reduction of the exact chart: entries of XᵀAX picked through an opaque space ----------
