@@ -89,7 +89,10 @@ def check_certificate(data: Any) -> CheckReport:
     try:
         if not isinstance(data, dict) or data.get("format") != FORMAT:
             raise Rejected(f"not a certificate of format {FORMAT}")
-        ctx = Context(data.get("letters", {}))
+        realization = data.get("realization", "standard")
+        if realization not in REALIZATION_HYPOTHESES:
+            raise Rejected(f"unknown realization {realization!r}")
+        ctx = Context(data.get("letters", {}), realization)
         entries = data["entries"]
         if not isinstance(entries, list):
             raise Rejected("entries must be a list")
@@ -128,11 +131,15 @@ def _mentions(entries: list, letters: set) -> bool:
 
 # ---------------------------------------------------------------------------
 class Context:
-    """The letters (fixed table plus declared resolvents and generic letters)."""
+    """The letters (fixed table plus declared resolvents and generic letters) of a realization."""
 
-    def __init__(self, declared: dict) -> None:
+    def __init__(self, declared: dict, realization: str = "standard") -> None:
+        self.realization = realization
         self.letters = dict(FIXED_LETTERS)
         self.resolvents: dict[str, Any] = {}
+        #: the multipliers of the metric realization's flows: name -> relation ρ as (coef, word) terms
+        self.sylvester: dict[str, list] = {}
+        pending: dict[str, dict] = {}
         self.operators: dict[str, tuple[str, tuple]] = {}   # name -> (operator, argument path)
         self.canon: dict[tuple, tuple] = _FIXED_CANON if not declared and len(_FIXED_CANON) < 10**5 else {}
         for name, d in declared.items():
@@ -160,8 +167,18 @@ class Context:
                     raise Rejected(f"the generic letter {name} is not an arrow between n and r")
                 self.letters[name] = (row, col, t, 1)
                 self.letters[t] = (col, row, name, 1)
+            elif d["kind"] == "sylvester":
+                if realization != "metric":
+                    raise Rejected(f"the multiplier {name} of a metric flow in a certificate of the {realization} "
+                                   "realization")
+                if not (name.startswith("Lambda:") and d.get("row") == "r"):
+                    raise Rejected(f"a multiplier of a metric flow is an r×r letter named Lambda:..., not {name}")
+                self.letters[name] = ("r", "r", name, 1)
+                pending[name] = d
             else:
                 raise Rejected(f"unknown kind of letter {d['kind']!r} for {name}")
+        for name, d in pending.items():   # once every letter is known (a flow may hold another declared letter)
+            self.sylvester[name] = check_sylvester(name, d, self)
 
     def add_operator(self, op: str, arg: tuple) -> str:
         """The letter op(arg), arg an n×n (or r×r) path: n×n (r×r), its transpose itself with sign −1."""
@@ -265,6 +282,7 @@ HYPOTHESES: dict[str, tuple[str, str, list[tuple[Any, tuple]]]] = {
     "YtY": ("r", "r", [(_ONE, ("Yt", "Y")), (_MINUS, ())]),
     "YtQ+QtY": ("r", "r", [(_ONE, ("Yt", "Q")), (_ONE, ("Qt", "Y"))]),
     "AAinv": ("n", "n", [(_ONE, ("A", "Ainv")), (_MINUS, ())]),
+    "XtAinvP+PtAinvX": ("r", "r", [(_ONE, ("Xt", "Ainv", "P")), (_ONE, ("Pt", "Ainv", "X"))]),
     "AinvA": ("n", "n", [(_ONE, ("Ainv", "A")), (_MINUS, ())]),
     **{f"E{i}tE{j}": ("1", "1", [(_ONE, (f"E{i}t", f"E{j}"))] + [(_MINUS, ())] * (i == j)) for i in (1, 2) for j in (1, 2)},
     "ErtEr": ("1", "1", [(_ONE, ("Ert", "Er")), (_MINUS, ())]),
@@ -298,7 +316,121 @@ def hypothesis(name: str, ctx: Context) -> tuple[str, str, list[tuple[Any, tuple
         mu = ctx.resolvents[R]   # (mu I - A) R - I, resp. R (mu I - A) - I
         AR = ("A", R) if kind == "res_left" else (R, "A")
         return ("n", "n", [(mu, (R,)), (_MINUS, AR), (_MINUS, ())])
+    if kind == "rho" and R in ctx.sylvester:
+        return ("r", "r", ctx.sylvester[R])
     raise Rejected(f"unknown hypothesis {name!r}")
+
+
+# ---------------------------------------------------------------------------
+# the metric realization: XᵀX = I_r, XᵀA⁻¹P + PᵀA⁻¹X = 0, and the multipliers of its Dirac flows
+#: the hypotheses a certificate may use, by its realization (the rest of the table: both); rho:Λ are the
+#: relations of declared multipliers, of the metric realization only
+METRIC_HYP = "XtAinvP+PtAinvX"
+REALIZATION_HYPOTHESES = {"standard": {"XtP+PtX", "YtQ+QtY", "XXt"}, "metric": {METRIC_HYP}}
+
+
+def allowed_hypothesis(name: Any, realization: str) -> bool:
+    """Whether a certificate of the realization may name the hypothesis (a constraint of another
+    realization is not a hypothesis of this one)."""
+    for other, names in REALIZATION_HYPOTHESES.items():
+        if other != realization and name in names:
+            return False
+    return not (realization != "metric" and str(name).startswith("rho:"))
+
+
+def _poly(terms: Any, ctx: Context, row: str, col: str, what: str) -> list[tuple[Any, list, tuple]]:
+    """(coef, traces, word) terms of a polynomial written as a residual, each word a row×col path."""
+    if not isinstance(terms, list):
+        raise Rejected(f"{what} is a list of terms")
+    out = []
+    for t in terms:
+        word, traces = _words(t["word"]), [_words(c) for c in t["traces"]]
+        ctx.expect(word, row, col, what)
+        for c in traces:
+            ctx.cyclic(c)
+        out.append((coefficient(t["coef"]), traces, word))
+    return out
+
+
+def _star_terms(terms: list, ctx: Context) -> list:
+    """The transpose of a polynomial of (coef, traces, word) terms (traces are their own transposes)."""
+    out = []
+    for c, traces, w in terms:
+        s, ws = ctx.star(w)
+        out.append((c * s, traces, ws))
+    return out
+
+
+def _canonical(terms: list, ctx: Context) -> dict:
+    out: dict = {}
+    for c, traces, word in terms:
+        _add(out, c, traces, word, ctx)
+    return {k: v for k, v in out.items() if not is_zero(v)}
+
+
+def _same(a: list, b: list, ctx: Context) -> bool:
+    return not _canonical(a + [(-c, t, w) for c, t, w in b], ctx)
+
+
+def _holds(terms: Any, names: set) -> bool:
+    return any(L in names for _c, traces, w in terms for x in [w, *traces] for L in x)
+
+
+def leibniz(words: list[tuple[Any, tuple]], images: dict[str, list], ctx: Context) -> list:
+    """The derivative of Σ c·word (no traces) for the derivation with X ↦ images["X"], P ↦ images["P"] (their
+    transposes ↦ the transposed images; every other letter constant), as (coef, traces, word) terms."""
+    full = dict(images)
+    full.update({f"{k}t": _star_terms(v, ctx) for k, v in images.items()})
+    out = []
+    for c, word in words:
+        for i, L in enumerate(word):
+            for c2, traces, w2 in full.get(L, []):
+                out.append((c * c2, traces, word[:i] + w2 + word[i + 1:]))
+    return out
+
+
+def check_sylvester(name: str, d: dict, ctx: Context) -> list[tuple[Any, tuple]]:
+    """Check a declared multiplier Λ of a Dirac flow of the metric realization and return its relation ρ:
+
+    - the flow: Ẋ and Ṗ − XΛ are n×r and hold no multiplier of a flow;
+    - ρ is d/dt (XᵀA⁻¹P + PᵀA⁻¹X) along the flow (recomputed here, Leibniz over the letters);
+    - ρ − (ΛM + MΛ), M = XᵀA⁻¹X, holds no multiplier (ρ = ΛM + MΛ − C), ρ has no traces, and ρᵀ = ρ:
+      with M positive definite (A is), Λ is the unique solution of ρ = 0 and it is symmetric;
+    - d/dt XᵀX along the flow lies in the ideal of the hypotheses (a certificate entry, its residual
+      recomputed here): the flow keeps XᵀX = I_r, so its other multiplier, of ΠM + MΠ = 0, is 0."""
+    if d.get("constraint") != METRIC_HYP:
+        raise Rejected(f"the multiplier {name} is of the constraint {METRIC_HYP}, not {d.get('constraint')!r}")
+    multipliers = {L for L, v in ctx.letters.items() if L.startswith("Lambda:") and v[2] == L}
+    flow = d["flow"]
+    Xd = _poly(flow["X"], ctx, "n", "r", f"the flow X' of {name}")
+    Pd = _poly(flow["P"], ctx, "n", "r", f"the flow P' of {name}")
+    if _holds(Xd, multipliers):
+        raise Rejected(f"the flow X' of {name} holds a multiplier")
+    rest = _canonical(Pd + [(_MINUS, [], ("X", name))], ctx)
+    if any(L in multipliers for (traces, w) in rest for x in [w, *traces] for L in x):
+        raise Rejected(f"the flow P' of {name} is not X {name} + (terms free of the multipliers)")
+    rho = _poly(d["relation"], ctx, "r", "r", f"the relation of {name}")
+    if any(traces for _c, traces, _w in rho):
+        raise Rejected(f"the relation of {name} has traces")
+    derived = leibniz([(_ONE, ("Xt", "Ainv", "P")), (_ONE, ("Pt", "Ainv", "X"))], {"X": Xd, "P": Pd}, ctx)
+    if not _same(derived, rho, ctx):
+        raise Rejected(f"the relation of {name} is not d/dt (X^T A^-1 P + P^T A^-1 X) along its flow")
+    C = _canonical(rho + [(_MINUS, [], (name, "Xt", "Ainv", "X")), (_MINUS, [], ("Xt", "Ainv", "X", name))], ctx)
+    if any(L in multipliers for (traces, w) in C for x in [w, *traces] for L in x):
+        raise Rejected(f"the relation of {name} is not {name} M + M {name} - C with C free of the multipliers")
+    if not _same(_star_terms(rho, ctx), rho, ctx):
+        raise Rejected(f"the relation of {name} is not symmetric")
+    keeps = d["keeps"]["XtX"]
+    if any(t.get("hyp", "").startswith("rho:") for t in keeps["terms"]):
+        raise Rejected(f"the flow of {name} keeps X^T X = I_r by its own relations only")
+    kx = leibniz([(_ONE, ("Xt", "X"))], {"X": Xd}, ctx)
+    if keeps.get("type") != ["r", "r"] or not _same(kx, _poly(keeps["residual"], ctx, "r", "r", "d(XtX)/dt"), ctx):
+        raise Rejected(f"the entry d/dt X^T X of {name} is not the derivative along its flow")
+    try:
+        check_entry(keeps, ctx)
+    except Rejected as exc:
+        raise Rejected(f"d/dt X^T X along the flow of {name}: {exc}") from None
+    return [(c, w) for c, _t, w in rho]
 
 
 #: parsed coefficients: text -> expression (parsing and its checks are a function of the text)
@@ -400,6 +532,8 @@ def check_entry(entry: dict, ctx: Context) -> int:
             c = coefficient(t["coef"])
             left, right, word = _words(t["left"]), _words(t["right"]), _words(t["word"])
             traces = [_words(x) for x in t["traces"]]
+            if not allowed_hypothesis(t["hyp"], ctx.realization):
+                raise Rejected(f"the hypothesis {t['hyp']} is not one of the {ctx.realization} realization")
             h_row, h_col, h_terms = hypothesis(t["hyp"], ctx)
             if not isinstance(t["in_trace"], bool) or not isinstance(t.get("transposed", False), bool):
                 raise Rejected("in_trace and transposed are true or false")
