@@ -109,7 +109,7 @@ def metric_multipliers(system: RewritingSystem, HX: NCPoly, HP: NCPoly,
     right-hand side 0 (else FreeSolveError), Λ a fresh letter with its relation ρ (FreeSolveError when ρ is
     not ΛM + MΛ − C with C free of Λ, symmetric and without traces)."""
     nf = system.normal_form
-    x, p, ainv = _w(X), _w(P), _w(AINV)
+    x, ainv = _w(X), _w(AINV)
     M = _w(Xt, AINV, X)
     # keeping X^T X = I_r along Xdot = H_P - A^{-1} X Pi:  H_P^T X + X^T H_P - (Pi M + M Pi)
     Pi = symmetric_letter("Pi:metric", "r", r"\Pi")
