@@ -30,6 +30,10 @@ tr(E_jᵀwE_k)·u·E_iE_lᵀ·v).
 Projectors D, C of orthogonal blocks of ℝʳ (Dsplit, Csplit: D² = D, C² = C, DC = CD = 0) and an orthogonal
 symmetry S of ℝⁿ commuting with A (Sref: S² = I_n, SA = AS), projector Dn of ℝⁿ, Kw with Kw·Wk = 0: symmetric.
 
+A certificate names its realization: "standard" (cond_XP, the default) or "metric" (cond_XP2, A positive
+definite: XᵀA⁻¹P + PᵀA⁻¹X replaces XᵀP + PᵀX); a hypothesis of the other one is rejected.  A declared Λ
+(``Lambda:k``) of the metric realization is the multiplier of a flow, ``rho:Λ`` its relation: see check_sylvester.
+
 The only facts used besides the hypotheses are structural: the transposes of
 the letters (A = Aᵀ, R_μ = R_μᵀ, ξᵀ = −ξ), and tr(uv) = tr(vu), tr(w) = tr(wᵀ).
 A declared operator letter AA(w) is 𝔸(skew w) for an n×n path w and a generic 𝔸 on so(n)
@@ -322,43 +326,32 @@ def hypothesis(name: str, ctx: Context) -> tuple[str, str, list[tuple[Any, tuple
 
 
 # ---------------------------------------------------------------------------
-# the metric realization: XᵀX = I_r, XᵀA⁻¹P + PᵀA⁻¹X = 0, and the multipliers of its Dirac flows
-#: the hypotheses a certificate may use, by its realization (the rest of the table: both); rho:Λ are the
-#: relations of declared multipliers, of the metric realization only
+# the metric realization: XᵀX = I_r, XᵀA⁻¹P + PᵀA⁻¹X = 0, and the multipliers Λ of its Dirac flows
 METRIC_HYP = "XtAinvP+PtAinvX"
+#: the hypotheses of one realization only (rho:Λ, the relations of declared multipliers, are the metric's)
 REALIZATION_HYPOTHESES = {"standard": {"XtP+PtX", "YtQ+QtY", "XXt"}, "metric": {METRIC_HYP}}
 
 
 def allowed_hypothesis(name: Any, realization: str) -> bool:
-    """Whether a certificate of the realization may name the hypothesis (a constraint of another
-    realization is not a hypothesis of this one)."""
-    for other, names in REALIZATION_HYPOTHESES.items():
-        if other != realization and name in names:
-            return False
-    return not (realization != "metric" and str(name).startswith("rho:"))
+    """Whether a certificate of the realization may name the hypothesis (not one of another realization)."""
+    if any(name in hs for other, hs in REALIZATION_HYPOTHESES.items() if other != realization):
+        return False
+    return realization == "metric" or not str(name).startswith("rho:")
 
 
 def _poly(terms: Any, ctx: Context, row: str, col: str, what: str) -> list[tuple[Any, list, tuple]]:
     """(coef, traces, word) terms of a polynomial written as a residual, each word a row×col path."""
-    if not isinstance(terms, list):
-        raise Rejected(f"{what} is a list of terms")
-    out = []
-    for t in terms:
-        word, traces = _words(t["word"]), [_words(c) for c in t["traces"]]
-        ctx.expect(word, row, col, what)
+    out = [(coefficient(t["coef"]), [_words(c) for c in t["traces"]], _words(t["word"])) for t in terms]
+    for _c, traces, w in out:
+        ctx.expect(w, row, col, what)
         for c in traces:
             ctx.cyclic(c)
-        out.append((coefficient(t["coef"]), traces, word))
     return out
 
 
 def _star_terms(terms: list, ctx: Context) -> list:
-    """The transpose of a polynomial of (coef, traces, word) terms (traces are their own transposes)."""
-    out = []
-    for c, traces, w in terms:
-        s, ws = ctx.star(w)
-        out.append((c * s, traces, ws))
-    return out
+    """The transpose of a polynomial of (coef, traces, word) terms."""
+    return [(c * s, traces, ws) for c, traces, w in terms for s, ws in [ctx.star(w)]]
 
 
 def _canonical(terms: list, ctx: Context) -> dict:
@@ -372,60 +365,43 @@ def _same(a: list, b: list, ctx: Context) -> bool:
     return not _canonical(a + [(-c, t, w) for c, t, w in b], ctx)
 
 
-def _holds(terms: Any, names: set) -> bool:
-    return any(L in names for _c, traces, w in terms for x in [w, *traces] for L in x)
+def _holds(poly: dict, names: set) -> bool:
+    return any(L in names for (traces, w) in poly for x in [w, *traces] for L in x)
 
 
 def leibniz(words: list[tuple[Any, tuple]], images: dict[str, list], ctx: Context) -> list:
-    """The derivative of Σ c·word (no traces) for the derivation with X ↦ images["X"], P ↦ images["P"] (their
-    transposes ↦ the transposed images; every other letter constant), as (coef, traces, word) terms."""
-    full = dict(images)
-    full.update({f"{k}t": _star_terms(v, ctx) for k, v in images.items()})
-    out = []
-    for c, word in words:
-        for i, L in enumerate(word):
-            for c2, traces, w2 in full.get(L, []):
-                out.append((c * c2, traces, word[:i] + w2 + word[i + 1:]))
-    return out
+    """The derivative of Σ c·word (no traces) with X ↦ images["X"], P ↦ images["P"], Xt, Pt ↦ their
+    transposes, every other letter constant (Leibniz over the letters)."""
+    full = {**images, **{f"{k}t": _star_terms(v, ctx) for k, v in images.items()}}
+    return [(c * c2, traces, word[:i] + w2 + word[i + 1:]) for c, word in words for i, L in enumerate(word)
+            for c2, traces, w2 in full.get(L, [])]
 
 
 def check_sylvester(name: str, d: dict, ctx: Context) -> list[tuple[Any, tuple]]:
-    """Check a declared multiplier Λ of a Dirac flow of the metric realization and return its relation ρ:
-
-    - the flow: Ẋ and Ṗ − XΛ are n×r and hold no multiplier of a flow;
-    - ρ is d/dt (XᵀA⁻¹P + PᵀA⁻¹X) along the flow (recomputed here, Leibniz over the letters);
-    - ρ − (ΛM + MΛ), M = XᵀA⁻¹X, holds no multiplier (ρ = ΛM + MΛ − C), ρ has no traces, and ρᵀ = ρ:
-      with M positive definite (A is), Λ is the unique solution of ρ = 0 and it is symmetric;
-    - d/dt XᵀX along the flow lies in the ideal of the hypotheses (a certificate entry, its residual
-      recomputed here): the flow keeps XᵀX = I_r, so its other multiplier, of ΠM + MΠ = 0, is 0."""
+    """Check a declared multiplier Λ of a Dirac flow of the metric realization; its relation ρ.  The flow:
+    Ẋ and Ṗ − XΛ free of multipliers; ρ = d/dt (XᵀA⁻¹P + PᵀA⁻¹X) along it (recomputed), without traces,
+    ρ − ΛM − MΛ (M = XᵀA⁻¹X) free of multipliers, ρᵀ = ρ (so Λ is the unique, symmetric solution of ρ = 0);
+    and d/dt XᵀX along it in the ideal (its certificate checked, its residual recomputed): Π = 0."""
     if d.get("constraint") != METRIC_HYP:
         raise Rejected(f"the multiplier {name} is of the constraint {METRIC_HYP}, not {d.get('constraint')!r}")
-    multipliers = {L for L, v in ctx.letters.items() if L.startswith("Lambda:") and v[2] == L}
-    flow = d["flow"]
-    Xd = _poly(flow["X"], ctx, "n", "r", f"the flow X' of {name}")
-    Pd = _poly(flow["P"], ctx, "n", "r", f"the flow P' of {name}")
-    if _holds(Xd, multipliers):
+    lams = {L for L, v in ctx.letters.items() if L.startswith("Lambda:") and v[2] == L}
+    Xd, Pd = (_poly(d["flow"][k], ctx, "n", "r", f"the flow {k}' of {name}") for k in ("X", "P"))
+    if _holds(_canonical(Xd, ctx), lams):
         raise Rejected(f"the flow X' of {name} holds a multiplier")
-    rest = _canonical(Pd + [(_MINUS, [], ("X", name))], ctx)
-    if any(L in multipliers for (traces, w) in rest for x in [w, *traces] for L in x):
+    if _holds(_canonical(Pd + [(_MINUS, [], ("X", name))], ctx), lams):
         raise Rejected(f"the flow P' of {name} is not X {name} + (terms free of the multipliers)")
     rho = _poly(d["relation"], ctx, "r", "r", f"the relation of {name}")
     if any(traces for _c, traces, _w in rho):
         raise Rejected(f"the relation of {name} has traces")
-    derived = leibniz([(_ONE, ("Xt", "Ainv", "P")), (_ONE, ("Pt", "Ainv", "X"))], {"X": Xd, "P": Pd}, ctx)
-    if not _same(derived, rho, ctx):
+    if not _same(leibniz([(_ONE, ("Xt", "Ainv", "P")), (_ONE, ("Pt", "Ainv", "X"))], {"X": Xd, "P": Pd}, ctx), rho, ctx):
         raise Rejected(f"the relation of {name} is not d/dt (X^T A^-1 P + P^T A^-1 X) along its flow")
-    C = _canonical(rho + [(_MINUS, [], (name, "Xt", "Ainv", "X")), (_MINUS, [], ("Xt", "Ainv", "X", name))], ctx)
-    if any(L in multipliers for (traces, w) in C for x in [w, *traces] for L in x):
-        raise Rejected(f"the relation of {name} is not {name} M + M {name} - C with C free of the multipliers")
-    if not _same(_star_terms(rho, ctx), rho, ctx):
-        raise Rejected(f"the relation of {name} is not symmetric")
+    if _holds(_canonical(rho + [(_MINUS, [], (name, "Xt", "Ainv", "X")), (_MINUS, [], ("Xt", "Ainv", "X", name))],
+                         ctx), lams) or not _same(_star_terms(rho, ctx), rho, ctx):
+        raise Rejected(f"the relation of {name} is not {name} M + M {name} - C with C symmetric, free of multipliers")
     keeps = d["keeps"]["XtX"]
-    if any(t.get("hyp", "").startswith("rho:") for t in keeps["terms"]):
-        raise Rejected(f"the flow of {name} keeps X^T X = I_r by its own relations only")
-    kx = leibniz([(_ONE, ("Xt", "X"))], {"X": Xd}, ctx)
-    if keeps.get("type") != ["r", "r"] or not _same(kx, _poly(keeps["residual"], ctx, "r", "r", "d(XtX)/dt"), ctx):
-        raise Rejected(f"the entry d/dt X^T X of {name} is not the derivative along its flow")
+    if any(str(t.get("hyp")).startswith("rho:") for t in keeps["terms"]) or keeps.get("type") != ["r", "r"] or \
+            not _same(leibniz([(_ONE, ("Xt", "X"))], {"X": Xd}, ctx), _poly(keeps["residual"], ctx, "r", "r", "d(XtX)"), ctx):
+        raise Rejected(f"the entry d/dt X^T X of {name} is not the derivative along its flow, in the constraints")
     try:
         check_entry(keeps, ctx)
     except Rejected as exc:

@@ -3,7 +3,8 @@
 A claim runs unchanged on :class:`~stiefelsym.free.FreeScene`; every residual
 entry is reduced to normal form by a confluent, terminating rewriting system
 whose rules are consequences of the constraints.  Normal form 0 for every
-entry proves the claim for every n, r and every symmetric A.  A nonzero normal
+entry proves the claim for every n, r and every symmetric A (positive definite in the metric
+realization, see :mod:`stiefelsym.free.metric`).  A nonzero normal
 form proves nothing (the rules may be incomplete, and small sizes have extra
 identities): the verdict is then ``undecided`` and the fixed-size methods decide.
 
@@ -160,6 +161,7 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
         res.seconds = time.perf_counter() - t0
         return res
     applied = scene.system.rules_applied()
+    applied += [r for r in rules if r.name.startswith("rho:") and r not in applied]   # (metric: Λ's steps)
     names = "; ".join(f"{r} " for r in applied).strip() or "none"
     try:
         data = certify_entries(scene, proved_entries)
