@@ -1463,7 +1463,8 @@ class FreeScene(PaperObjects):
         if "second" in self._extras:
             relations += [(_w(Yt, Y), "Y^T Y = I_r"), (_w(Yt, Q) + _w(Qt, Y), "Y^T Q + Q^T Y = 0")]
         for rel, why in relations:
-            if not self.reduce(derivation(rel, images)).is_zero:
+            d = derivation(rel, images)   # (along a metric flow: modulo the relation of its multiplier too)
+            if not (self.reduce(d).is_zero if self._sylvester else self.system.is_zero(d)):
                 record_refusal(f"the derivative of a value along a flow that does not preserve {why}", self.tracker)
                 raise ValueError(f"the flow does not preserve {why}: differentiate a function of the "
                                  "scene (d(lambda s: ..., flow)) instead of a value")
