@@ -229,3 +229,21 @@ def test_a_standard_certificate_may_not_use_the_metric_constraint():
     assert check_certificate(copy.deepcopy(data)).accepted
     data["entries"][0]["terms"][0]["hyp"] = METRIC_HYP
     _rejected(data, "not one of the standard realization")
+
+
+@pytest.mark.parametrize("touch", [
+    lambda s: s.Y,
+    lambda s: s.at_point(s.X, s.P),
+    lambda s: s.pairs_dirac_flow(lambda t, z: t.tr(z["P"].T @ z["P"]), {"X": s.X, "P": s.P}, [("X", "P")]),
+    lambda s: s.d(lambda t: t.dirac_flow(H_metric_A).Xdot, s.dirac_flow(H_metric_A)),
+], ids=["a second point", "another point", "a flow on pairs", "a flow along a tangent"])
+def test_what_the_free_scene_offers_for_cond_XP_only_is_refused_in_the_metric_realization(touch):
+    s = FreeScene(realization="metric", lazy=True)
+    with pytest.raises((NeedsCoordinates, TypeError)):
+        touch(s)
+
+
+def test_a_flow_inside_a_function_of_the_metric_scene_is_refused():
+    s = FreeScene(realization="metric", lazy=True)
+    with pytest.raises(NeedsCoordinates, match="inside a function"):
+        s.gradient(lambda t: t.tr(t.X.T @ t.dirac_flow(H_metric_A).Pdot))

@@ -497,7 +497,14 @@ class FreeScene(PaperObjects):
     def A(self) -> Mat:
         return self._letter(A)
 
+    def _standard_only(self, what: str) -> None:
+        """Refuse (recorded) what the free scene offers for the standard realization (cond_XP) only."""
+        if self.realization != "standard":
+            raise refuse(f"{what} in the {self.realization} realization of T*V (offered for (cond_XP) only)",
+                         self.tracker)
+
     def _second_point(self) -> None:
+        self._standard_only("a second point Y, Q")
         if "second" not in self._extras:
             self._extras.add("second")
             self.system.order.add(Y)
@@ -963,6 +970,7 @@ class FreeScene(PaperObjects):
     def at_point(self, Xv: Mat, Pv: Mat) -> "FreePointScene":
         """The problem at the point (Xv, Pv) of T*V (n×r blocks of this scene; refused unless they satisfy
         (cond_XP) by the rules): see :class:`FreePointScene`."""
+        self._standard_only("a scene at another point")
         xs, ps = (entry_of(M) if isinstance(M, Mat) and M._shape() == (1, 1) else None for M in (Xv, Pv))
         if not isinstance(xs, NCPoly) or not isinstance(ps, NCPoly) or xs.shape != ("n", "r") or ps.shape != ("n", "r"):
             raise refuse("a point of T*V that is not given by two n×r blocks", self.tracker)
@@ -1389,6 +1397,7 @@ class FreeScene(PaperObjects):
         momentum) pair of the scene's own letters, each with its constraints (cond_XP): the
         constraints of a pair involve only its own letters, so each pair has its own multipliers,
         ẋ = H_p − xΠ, ṗ = −H_x + xΛ + pΠ, solved in the free algebra."""
+        self._standard_only("a Dirac flow on pairs of points")
         keys = self._own_point(point, "a Hamiltonian flow")
         pairs = [tuple(pq) for pq in pairs]
         if sorted(k for pq in pairs for k in pq) != sorted(keys) or any(len(pq) != 2 for pq in pairs):
