@@ -197,6 +197,8 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
                        f"in the hypotheses {', '.join(summary['hypotheses']) or '(none)'}), re-checked by the "
                        f"independent checker; every entry has normal form 0; rules "
                        f"applied while building and reducing the residual: {names}")
+    if summary.get("assumes"):
+        res.certificate += f"; it assumes (the {summary['realization']} realization): {'; '.join(summary['assumes'])}"
     return res
 
 

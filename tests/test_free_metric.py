@@ -113,8 +113,11 @@ def test_metric_flow_is_proved_for_every_n_r_with_an_accepted_certificate(metric
     (name, decl), = data["letters"].items()
     assert name.startswith("Lambda:") and decl["kind"] == "sylvester"
     used = set(data["summary"]["hypotheses"])
-    assert f"rho:{name}" in used and "XtX" in used
+    assert {f"rho:{name}", "XtX", METRIC_HYP} <= used     # (the metric constraint: in the flow keeping X^T X)
     assert not used & {"XtP+PtX"}
+    assumes = " ".join(data["summary"]["assumes"])
+    assert "positive definite" in assumes and "Pi = 0 by uniqueness" in assumes and f"solution of rho:{name}" in assumes
+    assert "Pi = 0 by uniqueness" in r.certificate and "Pi = 0 by uniqueness" in rep.message
     text = " ".join(r.reductions)
     assert "positive definite" in text and "Pi = 0 by uniqueness" in text and "rho" in text
 

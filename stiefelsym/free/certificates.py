@@ -118,6 +118,8 @@ class CertificateWriter:
             decl["flow"] = {"X": self.residual(m.Xdot), "P": self.residual(m.Pdot)}
             decl["relation"] = self.residual(m.relation)
             decl["keeps"] = {"XtX": self.entry("d(X^T X)/dt", m.keeps_certificate)}
+            decl["assumes"] = [f"{name} is the solution of rho:{name} = 0, unique and symmetric (M = X^T A^-1 X "
+                               "positive definite)", "Pi = 0 by uniqueness: Pi M + M Pi = 0 (keeps: X^T X = I_r)"]
         elif name.startswith("gen:") and L.adjoint != L:
             G = L if not name.endswith("^T") else L.adjoint
             if str(G) not in self.letters:
@@ -161,8 +163,12 @@ class CertificateWriter:
 
     def data(self) -> dict:
         terms = sum(len(e["terms"]) for e in self.entries)
-        used = sorted({h for e in self.entries for h in e["hypotheses"]})
+        used = {h for e in self.entries for h in e["hypotheses"]}
+        declared = [d for d in self.letters.values() if d.get("kind") == "sylvester"]
+        used |= {h for d in declared for h in d["keeps"]["XtX"]["hypotheses"]}
+        summary = {"entries": len(self.entries), "terms": terms, "hypotheses": sorted(used)}
+        if self.realization != "standard":
+            summary["realization"] = self.realization
+            summary["assumes"] = ["A symmetric positive definite"] + [a for d in declared for a in d["assumes"]]
         return {"format": FORMAT, "realization": self.realization, "symbols": dict(self.meaning),
-                "letters": dict(self.letters),
-                "entries": self.entries,
-                "summary": {"entries": len(self.entries), "terms": terms, "hypotheses": used}}
+                "letters": dict(self.letters), "entries": self.entries, "summary": summary}
