@@ -57,6 +57,15 @@ def test_the_rules_of_cond_XP2_decrease_and_every_critical_pair_resolves():
     assert is_confluent(system)
 
 
+def test_with_resolvents_every_critical_pair_of_the_metric_system_still_resolves():
+    s = FreeScene(realization="metric", lazy=True)
+    s.resolvent(s.lam)
+    s.resolvent(0)          # R_0 -> -A^{-1}
+    pairs = critical_pairs(s.system)
+    assert len(pairs) > 4 and not [str(p) for p in pairs if not p.joinable]
+    assert {"XtX", "PtAinvX", "AAinv", "AinvA"} <= {r.name for r in s.system.rules}
+
+
 def test_the_metric_constraint_reduces_to_0_and_the_standard_one_does_not():
     system = metric_system()
     assert system.is_zero(_w(Xt, AINV, P) + _w(Pt, AINV, X))
