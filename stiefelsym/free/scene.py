@@ -9,7 +9,8 @@ normalizes entries with the standard rewriting system (the constraints
 (cond_XP) and the resolvent identities), which is confluent (see the tests),
 so a residual is zero for every n, r and every symmetric A iff its normal form
 is 0, up to consequences of the constraints that the rules do not generate.
-Objects that need coordinates raise :class:`NeedsCoordinates`.
+The metric realization (cond_XP2) has its own rules and the multipliers of its
+flows (:mod:`.metric`).  Objects that need coordinates raise :class:`NeedsCoordinates`.
 """
 from __future__ import annotations
 
