@@ -3,7 +3,8 @@
 A claim runs unchanged on :class:`~stiefelsym.free.FreeScene`; every residual
 entry is reduced to normal form by a confluent, terminating rewriting system
 whose rules are consequences of the constraints.  Normal form 0 for every
-entry proves the claim for every n, r and every symmetric A.  A nonzero normal
+entry proves the claim for every n, r and every symmetric A (positive definite in the metric
+realization, see :mod:`stiefelsym.free.metric`).  A nonzero normal
 form proves nothing (the rules may be incomplete, and small sizes have extra
 identities): the verdict is then ``undecided`` and the fixed-size methods decide.
 
@@ -115,6 +116,8 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
     res.reductions = ["free algebra with involution: X, P, A, resolvents as letters; rules are consequences "
                       "of X^T X = I, X^T P + P^T X = 0, A = A^T and the resolvent identity; the rule set is "
                       "terminating (deg-lex order) and confluent (all critical pairs resolve)"]
+    if scene.realization == "metric":
+        res.reductions = metric_reductions(scene)
     if any(isinstance(L, OperatorLetter) for L in scene._named.values()):
         res.reductions.append("a generic symmetric operator AA on so(n) as letters AA(w) = AA(skew w), one per word "
                               "w of its argument (linear, skew); its symmetry tr(AA(u) v) = tr(AA(v) u) as a "
@@ -158,6 +161,7 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
         res.seconds = time.perf_counter() - t0
         return res
     applied = scene.system.rules_applied()
+    applied += [r for r in rules if r.name.startswith("rho:") and r not in applied]   # (metric: Λ's steps)
     names = "; ".join(f"{r} " for r in applied).strip() or "none"
     try:
         data = certify_entries(scene, proved_entries)
@@ -193,6 +197,8 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
                        f"in the hypotheses {', '.join(summary['hypotheses']) or '(none)'}), re-checked by the "
                        f"independent checker; every entry has normal form 0; rules "
                        f"applied while building and reducing the residual: {names}")
+    if summary.get("assumes"):
+        res.certificate += f"; it assumes (the {summary['realization']} realization): {'; '.join(summary['assumes'])}"
     return res
 
 
@@ -272,6 +278,25 @@ def needs_text(claim: Claim, func: Callable, refusal: str) -> str:
             f"{refusal.removeprefix('refused: ')}); decided by the fixed-size methods")
 
 
+def metric_reductions(scene: Any) -> list[str]:
+    """What a proof in the metric realization used (see :mod:`stiefelsym.free.metric`)."""
+    out = ["free algebra with involution: X, P, A, A^(-1), resolvents as letters; the metric realization "
+           "(cond_XP2): rules X^T X -> I_r, P^T A^(-1) X -> -X^T A^(-1) P, A A^(-1) = A^(-1) A -> I_n, consequences "
+           "of X^T X = I_r, X^T A^(-1) P + P^T A^(-1) X = 0, A = A^T invertible; terminating (deg-lex order) and "
+           "confluent (all critical pairs resolve)"]
+    if scene._sylvester:
+        names = ", ".join(str(L) for L in scene._sylvester)
+        out.append("the Dirac flow X' = H_P - A^(-1) X Pi, P' = -H_X + X Lambda + A^(-1) P Pi, its multipliers solving "
+                   "Sylvester equations with M = X^T A^(-1) X: A is symmetric positive definite (a metric), so M is, "
+                   "and Y -> Y M + M Y is invertible (eigenvalues m_i + m_j > 0); keeping X^T X = I_r gives "
+                   "Pi M + M Pi = H_P^T X + X^T H_P, which reduces to 0, so Pi = 0 by uniqueness; keeping (cond_XP2) "
+                   f"gives rho = Lambda M + M Lambda - C = 0: the multiplier{'s' if len(scene._sylvester) > 1 else ''} "
+                   f"{names} stay{'' if len(scene._sylvester) > 1 else 's'} a symmetric letter, the unique (symmetric) "
+                   "solution, and rho joins the ideal as a generator, used as the step Lambda M -> -M Lambda + C on "
+                   "words (never inside a trace)")
+    return out
+
+
 def same_graph_at_fixed_sizes(claim: Claim, func: Callable) -> str:
     """"" when the claim's graph with symbolic sizes is also the graph it gives when traced at every size
     it is stated for (the digest leaves the values of sizes out); otherwise why not.  (Every method evaluates
@@ -313,7 +338,7 @@ def probe_divisions(claim: Claim, func: Callable, every_size: bool = False) -> s
 
 def certify_entries(scene, entries) -> dict:
     """The certificate data of the entries (position, reduction, _) of a proof."""
-    writer = CertificateWriter(scene._resolvents)
+    writer = CertificateWriter(scene._resolvents, scene._sylvester, scene.realization)
     for pos, red, _k in entries:
         writer.add(pos, scene.certify(red.residual, red.normal_form))
     return writer.data()

@@ -340,8 +340,9 @@ def test_the_checker_does_not_import_the_rewriting_system():
     imported |= {n.module.split(".")[0] for n in ast.walk(tree) if isinstance(n, ast.ImportFrom) and n.module}
     assert not any(isinstance(n, ast.ImportFrom) and n.level for n in ast.walk(tree))   # no relative imports
     assert imported <= {"__future__", "time", "dataclasses", "typing", "symengine", "sympy", "json", "sys"}
-    # small enough to read in one sitting (with the table of the double and complex points)
-    assert len(path.read_text(encoding="utf-8").splitlines()) < 470
+    # small enough to read in one sitting (with the table of the double and complex points, and the
+    # re-derivation of the Sylvester relations of the metric realization's multipliers: about 110 lines)
+    assert len(path.read_text(encoding="utf-8").splitlines()) < 590
 
 
 ZERO = "((kappa + 1)**2 - kappa**2 - 2*kappa - 1)"   # the zero polynomial, not written as 0
