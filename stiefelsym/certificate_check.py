@@ -49,6 +49,9 @@ from typing import Any
 import symengine as se
 
 FORMAT = "stiefelsym-cofactor-1"
+#: a certificate of cases: a claim stated at a union of one-r families (r = 1 and r = n, ...), one
+#: certificate of FORMAT per family, each checked on its own (see check_cases)
+CASES = "stiefelsym-cofactor-cases-1"
 #: the objects: ℝⁿ, ℝʳ, and "1" for scalars (trace forms)
 OBJECTS = ("n", "r", "r-1")
 SCALAR = "1"
@@ -88,6 +91,8 @@ class CheckReport:
 
 def check_certificate(data: Any) -> CheckReport:
     """Check every entry of a certificate (the JSON form written by the free method)."""
+    if isinstance(data, dict) and data.get("format") == CASES:
+        return check_cases(data)
     t0 = time.perf_counter()
     terms = 0
     try:
@@ -128,6 +133,46 @@ def check_certificate(data: Any) -> CheckReport:
                "relations rho, re-derived from the flows; Pi = 0 by uniqueness)")
     return CheckReport(True, f"{len(entries)} entries, {terms} terms: every certificate expands to its residual{at}",
                        len(entries), terms, time.perf_counter() - t0)
+
+
+def check_cases(data: dict) -> CheckReport:
+    """A certificate of cases: two or more families of sizes, each r = k (k >= 1) or r = n for every n >= n_min,
+    distinct, each with a certificate of FORMAT that is accepted, and whose hypotheses of one r (E1E1t at
+    r = 1, E1E1t+E2E2t at r = 2, XXt at r = n) are those of its own family only."""
+    t0 = time.perf_counter()
+    entries = terms = 0
+    said = []
+    try:
+        cases = data["cases"]
+        if not isinstance(cases, list) or len(cases) < 2:
+            raise Rejected("a certificate of cases has a list of two or more cases")
+        seen: set = set()
+        for case in cases:
+            r, n_min = case["sizes"]["r"], case["sizes"]["n_min"]
+            if not (r == "n" or (type(r) is int and r >= 1)) or type(n_min) is not int or \
+                    n_min < (r if type(r) is int else 1):
+                raise Rejected(f"a case is a family r = k >= 1 or r = n, for every n >= n_min >= r, not {case['sizes']!r}")
+            if r in seen:
+                raise Rejected(f"two cases of the family r = {r}")
+            seen.add(r)
+            cert = case["certificate"]
+            if not isinstance(cert, dict) or cert.get("format") != FORMAT:
+                raise Rejected(f"the case r = {r}: its certificate is not of format {FORMAT}")
+            rep = check_certificate(cert)
+            if not rep.accepted:
+                raise Rejected(f"the case r = {r}: {rep.message}")
+            used = {t.get("hyp") for e in cert["entries"] for t in e["terms"]}
+            for h, at in ((R1_ONLY, 1), (R2_ONLY, 2), (SQUARE, "n")):
+                if h in used and at != r:
+                    raise Rejected(f"the case r = {r} uses {h}, which holds at r = {at} only")
+            entries, terms = entries + rep.entries, terms + rep.terms
+            said.append(f"case r = {r} (every n >= {n_min}): {rep.message}")
+    except Rejected as exc:
+        return CheckReport(False, str(exc), seconds=time.perf_counter() - t0)
+    except (KeyError, TypeError, ValueError, AttributeError, RuntimeError) as exc:
+        return CheckReport(False, f"malformed certificate of cases ({type(exc).__name__}: {exc})",
+                           seconds=time.perf_counter() - t0)
+    return CheckReport(True, "; ".join(said), entries, terms, time.perf_counter() - t0)
 
 
 def _mentions(entries: list, letters: set) -> bool:
