@@ -49,9 +49,7 @@ from typing import Any
 import symengine as se
 
 FORMAT = "stiefelsym-cofactor-1"
-#: a certificate of cases: a claim stated at a union of one-r families (r = 1 and r = n, ...), one
-#: certificate of FORMAT per family, each checked on its own (see check_cases)
-CASES = "stiefelsym-cofactor-cases-1"
+CASES = "stiefelsym-cofactor-cases-1"    # a claim stated at r = 1 and at r = n (...): one certificate per family
 #: the objects: ℝⁿ, ℝʳ, and "1" for scalars (trace forms)
 OBJECTS = ("n", "r", "r-1")
 SCALAR = "1"
@@ -90,7 +88,7 @@ class CheckReport:
 
 
 def check_certificate(data: Any) -> CheckReport:
-    """Check every entry of a certificate (the JSON form written by the free method)."""
+    """Check every entry of a certificate (the JSON form written by the free method), or every case of one."""
     if isinstance(data, dict) and data.get("format") == CASES:
         return check_cases(data)
     t0 = time.perf_counter()
@@ -136,42 +134,26 @@ def check_certificate(data: Any) -> CheckReport:
 
 
 def check_cases(data: dict) -> CheckReport:
-    """A certificate of cases: two or more families of sizes, each r = k (k >= 1) or r = n for every n >= n_min,
-    distinct, each with a certificate of FORMAT that is accepted, and whose hypotheses of one r (E1E1t at
-    r = 1, E1E1t+E2E2t at r = 2, XXt at r = n) are those of its own family only."""
-    t0 = time.perf_counter()
-    entries = terms = 0
-    said = []
+    """A certificate of cases: two or more distinct families r = k >= 1 or r = n (every n >= n_min >= k), each with
+    an accepted certificate of FORMAT whose hypotheses of one r (E1E1t, E1E1t+E2E2t, XXt) are of its own r."""
+    t0, said, entries, terms = time.perf_counter(), [], 0, 0
     try:
-        cases = data["cases"]
-        if not isinstance(cases, list) or len(cases) < 2:
-            raise Rejected("a certificate of cases has a list of two or more cases")
-        seen: set = set()
-        for case in cases:
-            r, n_min = case["sizes"]["r"], case["sizes"]["n_min"]
-            if not (r == "n" or (type(r) is int and r >= 1)) or type(n_min) is not int or \
-                    n_min < (r if type(r) is int else 1):
-                raise Rejected(f"a case is a family r = k >= 1 or r = n, for every n >= n_min >= r, not {case['sizes']!r}")
-            if r in seen:
-                raise Rejected(f"two cases of the family r = {r}")
-            seen.add(r)
-            cert = case["certificate"]
-            if not isinstance(cert, dict) or cert.get("format") != FORMAT:
-                raise Rejected(f"the case r = {r}: its certificate is not of format {FORMAT}")
-            rep = check_certificate(cert)
-            if not rep.accepted:
-                raise Rejected(f"the case r = {r}: {rep.message}")
-            used = {t.get("hyp") for e in cert["entries"] for t in e["terms"]}
-            for h, at in ((R1_ONLY, 1), (R2_ONLY, 2), (SQUARE, "n")):
-                if h in used and at != r:
-                    raise Rejected(f"the case r = {r} uses {h}, which holds at r = {at} only")
-            entries, terms = entries + rep.entries, terms + rep.terms
-            said.append(f"case r = {r} (every n >= {n_min}): {rep.message}")
+        fams = [(c["sizes"]["r"], c["sizes"]["n_min"], c["certificate"]) for c in data["cases"]]
+        if len(fams) < 2 or len({r for r, _k, _c in fams}) < len(fams) or not all(
+                (r == "n" or (type(r) is int and r >= 1)) and type(k) is int and k >= (1 if r == "n" else r)
+                and isinstance(c, dict) and c.get("format") == FORMAT for r, k, c in fams):
+            raise Rejected(f"cases are two or more distinct families r = k or r = n, every n >= n_min, of {FORMAT}")
+        for r, k, c in fams:
+            rep, used = check_certificate(c), {t.get("hyp") for e in c["entries"] for t in e["terms"]}
+            wrong = [h for h, at in ((R1_ONLY, 1), (R2_ONLY, 2), (SQUARE, "n")) if h in used and at != r]
+            if not rep.accepted or wrong:
+                raise Rejected(f"the case r = {r}: " + (rep.message if not rep.accepted else f"it uses {wrong[0]}, "
+                                                        "a hypothesis of another r"))
+            entries, terms, said = entries + rep.entries, terms + rep.terms, said + [f"case r = {r}, n >= {k}: {rep.message}"]
     except Rejected as exc:
         return CheckReport(False, str(exc), seconds=time.perf_counter() - t0)
     except (KeyError, TypeError, ValueError, AttributeError, RuntimeError) as exc:
-        return CheckReport(False, f"malformed certificate of cases ({type(exc).__name__}: {exc})",
-                           seconds=time.perf_counter() - t0)
+        return CheckReport(False, f"malformed certificate of cases ({type(exc).__name__}: {exc})", seconds=time.perf_counter() - t0)
     return CheckReport(True, "; ".join(said), entries, terms, time.perf_counter() - t0)
 
 
