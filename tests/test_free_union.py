@@ -232,3 +232,31 @@ def test_a_malformed_certificate_of_cases_is_rejected(edit):
     data = _cases()
     edit(data)
     assert not check_certificate(data).accepted
+
+
+# -- the results file ------------------------------------------------------------------------------------------
+def _cli(*args):
+    from click.testing import CliRunner
+    from stiefelsym.cli import main
+    return CliRunner().invoke(main, list(args), catch_exceptions=False)
+
+
+def test_the_proof_of_the_union_survives_the_results_file(tmp_path):
+    """The record of the union's proof carries the digest of its graphs on its families (it has no graph on every
+    size); `stiefelsym check` accepts it, and rejects it with a case's certificate cut or its digest edited."""
+    out = tmp_path / "rep"
+    r = _cli("verify", GRAM.id, "--method", "free", "--report-dir", str(out))
+    assert r.exit_code == 0, r.output
+    path = out / "results.json"
+    payload = json.loads(path.read_text())
+    record, = payload["results"]
+    assert record["verdict"] == "proved" and len(record["digest"]) == 64
+    assert _cli("check", str(path)).exit_code == 0
+    for edit in (lambda x: next(e for e in x["certificate_data"]["cases"][0]["certificate"]["entries"]
+                                if e["terms"])["terms"].pop(),
+                 lambda x: x.update(digest="0" * 64)):
+        bad = copy.deepcopy(payload)
+        edit(bad["results"][0])
+        path.write_text(json.dumps(bad))
+        r = _cli("check", str(path))
+        assert r.exit_code == 1 and "REJECTED" in r.output, r.output
