@@ -260,3 +260,23 @@ def test_the_proof_of_the_union_survives_the_results_file(tmp_path):
         path.write_text(json.dumps(bad))
         r = _cli("check", str(path))
         assert r.exit_code == 1 and "REJECTED" in r.output, r.output
+
+
+# -- one declared r is one family: the same answers ------------------------------------------------------------
+def orthogonal_if_square(s):
+    """X X^T = I_n where r == n (the only branch at r = n), X^T X = I_r otherwise."""
+    return {"XX^T": s.X @ s.X.T - s.In} if s.r == s.n else {"X^TX": s.X.T @ s.X - s.Ir}
+
+
+def test_a_claim_stated_at_r_n_alone_may_ask_whether_r_is_n():
+    square = dataclasses.replace(GRAM, func=orthogonal_if_square, sizes=admissible(4, r_is_n=True))
+    res = _proved(run_free(square))
+    assert "XXt" in res.certificate_data["summary"]["hypotheses"] and free_scope(res) == "every n at r = n"
+
+
+def test_r_1_with_n_1_does_not_decide_whether_r_is_n():
+    """Stated at r = 1 for every n >= 1: r == n holds at (1,1) only, so the comparison is refused; from n = 2 on
+    it is false and the claim (X^T X = I_r there) is proved."""
+    res = run_free(dataclasses.replace(GRAM, func=orthogonal_if_square, sizes=admissible(4, r_max=1)))
+    assert res.verdict == "undecided" and "a comparison of sizes (r == n)" in res.message
+    _proved(run_free(dataclasses.replace(GRAM, func=orthogonal_if_square, sizes=admissible(4, n_min=2, r_max=1))))
