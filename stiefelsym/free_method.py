@@ -12,6 +12,13 @@ Every proof carries a cofactor certificate per residual entry (the entry as a
 combination of the hypotheses, traced through the reductions), which the
 independent checker :mod:`stiefelsym.certificate_check` re-expands before the
 verdict is ``proved``; a certificate it rejects makes the verdict ``error``.
+
+A claim stated at one r (r = 1, 2 or r = n, declared) is proved on that family of
+sizes, for every n, with the hypotheses of that r; a claim stated at a union of them
+(``admissible(r_in=(1, "n"))``) family by family, each with its own scene and
+certificate, and a certificate of cases for the checker.  The claim is traced on each
+family (:mod:`stiefelsym.ir.families`): a comparison of sizes it makes is answered
+where the family decides it, refused otherwise.
 """
 from __future__ import annotations
 
