@@ -384,17 +384,29 @@ def main(argv=None) -> int:
     catalog = _catalog()
 
     def exact12(claim: Claim) -> Callable[[], tuple[float, str]]:
+        def cpu_of_run(r: int) -> tuple[float, Any]:
+            # run_one runs the symbolic method at n = 12 in a forked child: its CPU seconds are the
+            # parent's and the reaped child's (RUSAGE_CHILDREN), fork included
+            t0 = time.process_time()
+            c0 = resource.getrusage(resource.RUSAGE_CHILDREN)
+            res = run_one(claim, Size(12, r), "exact", seed=0)
+            c1 = resource.getrusage(resource.RUSAGE_CHILDREN)
+            return (time.process_time() - t0 + c1.ru_utime - c0.ru_utime + c1.ru_stime - c0.ru_stime), res
+
         def run() -> tuple[float, str]:
-            worst, where = 0.0, None
+            worst, where, wall = 0.0, None, 0.0
             for r in range(1, 13):
                 if not claim.sizes.admits(12, r):
                     continue
                 res = _budgeted(claim, 12, r, "exact", args.per_run)
                 if res.verdict != "proved":
                     raise NotYet(f"(12,{r}): {res.verdict}")
-                if res.seconds >= worst:
-                    worst, where = res.seconds, r
-            return worst, f"slowest r = {where}; all proved"
+                # CPU seconds, best of 2 (a wall time on a shared machine measures its load)
+                cpu = min(cpu_of_run(r)[0] for _ in range(2))
+                if cpu >= worst:
+                    worst, where, wall = cpu, r, res.seconds
+            return worst, (f"CPU seconds of the run (best of 2, fork included); slowest r = {where} (wall "
+                           f"{wall:.3f} s in a budgeted worker); all proved")
         return run
     bench.target("exact LA1 at n = 12, slowest r", 1.0, "s", "lower", exact12(LA1))
     for cid in SEC3_FLOWS:
