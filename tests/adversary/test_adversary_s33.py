@@ -138,3 +138,119 @@ def test_the_claims_declared_at_one_r_fail_at_17_2_which_their_statements_admit(
     # (auto runs modular here: its lines name modular)
     assert len(got) == 16 and set(got.values()) == {"fails"}, got
     assert verdicts(BEYOND, "free", ids=("adv-s33-beyond-control",)) == {"adv-s33-beyond-control": "proved"}
+
+
+# -- AC. malformed results files: a traceback or a hang instead of a clear refusal -------------------------
+
+RECORDS = "s33_records_base.py"
+
+
+@pytest.fixture(scope="module")
+def honest_results(tmp_path_factory):
+    """The honest results of the two claims of s33_records_base.py (exact at (3,2), and free)."""
+    out = tmp_path_factory.mktemp("records")
+    cli("verify", "--claims", str(HERE / RECORDS), "--method", "exact", "--method", "free", "--size", "3,2",
+        "--report-dir", str(out))
+    payload = json.loads((out / "results.json").read_text())
+    got = {(r["claim"], r["method"]): r["verdict"] for r in payload["results"]}
+    assert got == {("adv-s33-rec-true", "exact"): "proved", ("adv-s33-rec-true", "free"): "proved",
+                   ("adv-s33-rec-false", "exact"): "fails", ("adv-s33-rec-false", "free"): "undecided"}, got
+    return payload
+
+
+def _forge(payload, tmp_path, record=None, meta=None):
+    """The payload with the false claim's exact record made `proved` and edited by ``record``, the meta by
+    ``meta``; written to a file."""
+    d = json.loads(json.dumps(payload))
+    for r in d["results"]:
+        if r["claim"] == "adv-s33-rec-false" and r["method"] == "exact":
+            r["verdict"] = "proved"
+            r.update(record or {})
+    d["meta"].update(meta or {})
+    path = tmp_path / "forged.json"
+    path.write_text(json.dumps(d))
+    return path
+
+
+def _refused_cleanly(out):
+    return out.returncode in (1, 2) and "Traceback" not in out.stderr
+
+
+#: malformed fields and the command that answers them with a traceback today (ValueError, TypeError, KeyError
+#: out of integrity.missing_runs / planned_runs, hard.hard_case, Registry.__contains__, report.py)
+MALFORMED = {
+    "claim-list": ({"claim": ["adv-s33-rec-false"]}, None),
+    "claim-dict": ({"claim": {"id": "adv-s33-rec-false"}}, None),
+    "n-list": ({"n": [3]}, None),
+    "r-dict": ({"r": {"r": 2}}, None),
+    "method-list": ({"method": ["exact"]}, None),
+    "meta-sizes-three": (None, {"sizes": ["3,2,1"]}),
+    "meta-sizes-int": (None, {"sizes": [32]}),
+    "meta-methods-dict": (None, {"methods": [{"m": "exact"}]}),
+    "meta-hard-list": (None, {"hard": ["near-pole"]}),
+    "meta-hard-unknown": (None, {"hard": "no-such-case"}),
+}
+#: the ones `stiefelsym report` answers with a traceback (it reads no meta sizes, methods or hard case)
+MALFORMED_REPORT = ("claim-list", "claim-dict", "n-list", "r-dict", "method-list")
+FAST = ("claim-list", "meta-hard-unknown")
+
+
+def _open(reason):
+    return pytest.mark.xfail(strict=True, reason=f"open (AC): {reason}")
+
+
+@pytest.mark.parametrize("case", [pytest.param(c, marks=[_open("check answers a malformed record or meta field with "
+                                                               "a Python traceback")]
+                                               + ([] if c in FAST else [pytest.mark.slow])) for c in MALFORMED])
+def test_check_refuses_a_malformed_results_file_without_a_traceback(honest_results, tmp_path, case):
+    record, meta = MALFORMED[case]
+    out = cli("check", str(_forge(honest_results, tmp_path, record, meta)))
+    assert _refused_cleanly(out), (out.returncode, out.stderr[-800:])
+
+
+@pytest.mark.parametrize("case", [pytest.param(c, marks=[_open("report answers a malformed record with a Python "
+                                                               "traceback")]
+                                               + ([] if c in FAST else [pytest.mark.slow])) for c in MALFORMED_REPORT])
+def test_report_refuses_a_malformed_results_file_without_a_traceback(honest_results, tmp_path, case):
+    record, meta = MALFORMED[case]
+    out = cli("report", "--results", str(_forge(honest_results, tmp_path, record, meta)), "--report-dir",
+              str(tmp_path / "rep"))
+    assert _refused_cleanly(out), (out.returncode, out.stderr[-800:])
+
+
+@pytest.mark.parametrize("edit", [{"n": 3.0}, {"n": "3"}, {"n": True, "r": True}, {"method": "EXACT"},
+                                  {"seed": "0"}, {"seed": 10 ** 30}, {"variant": ""}, {"n": -3, "r": -2},
+                                  {"r": None}, {"digest": 5}, {"witness": "small"}])
+@pytest.mark.slow
+def test_check_rejects_a_forged_proved_with_odd_field_types(honest_results, tmp_path, edit):
+    """Closed (no hole found): a forged `proved` whose size, method, seed, variant, digest or witness has an odd
+    type or value is rejected (exit 1), with no traceback."""
+    out = cli("check", str(_forge(honest_results, tmp_path, edit)))
+    assert out.returncode == 1 and "Traceback" not in out.stderr and "rejected" in out.stdout, \
+        (out.returncode, out.stdout[-500:], out.stderr[-500:])
+
+
+def test_check_rejects_a_forged_proved_with_another_claims_certificate(honest_results, tmp_path):
+    """Closed: the true claim's (valid) free certificate on the false claim's record, made a proof for every
+    n, r (n = r = None, or method free): the checker accepts the certificate, the re-derivation does not."""
+    cert = next(r["certificate_data"] for r in honest_results["results"]
+                if r["claim"] == "adv-s33-rec-true" and r["method"] == "free")
+    for edit in ({"n": None, "r": None, "certificate_data": cert},
+                 {"method": "free", "n": None, "r": None, "certificate_data": cert}):
+        out = cli("check", str(_forge(honest_results, tmp_path, edit)))
+        assert out.returncode == 1 and "REJECTED adv-s33-rec-false" in out.stdout, (edit.keys(), out.stdout[-800:])
+
+
+@pytest.mark.slow
+@_open("check enumerates every size up to the meta's max_n (integrity.planned_runs): max_n = 100000 does not "
+       "finish in a minute (a hang on a forged file)")
+def test_check_of_a_results_file_with_a_huge_max_n_finishes(honest_results, tmp_path):
+    import subprocess
+    import sys
+    path = _forge(honest_results, tmp_path, meta={"max_n": 100000})
+    try:
+        out = subprocess.run([sys.executable, "-m", "stiefelsym", "check", str(path)], cwd=ROOT, capture_output=True,
+                             text=True, timeout=60)
+    except subprocess.TimeoutExpired:
+        pytest.fail("check did not finish in 60 s")
+    assert _refused_cleanly(out), (out.returncode, out.stderr[-800:])
