@@ -254,3 +254,44 @@ def test_check_of_a_results_file_with_a_huge_max_n_finishes(honest_results, tmp_
     except subprocess.TimeoutExpired:
         pytest.fail("check did not finish in 60 s")
     assert _refused_cleanly(out), (out.returncode, out.stderr[-800:])
+
+
+# -- AD. honest records that `check` rejects, and a statement that makes `derive` print a traceback --------
+
+HONEST = "s33_honest_errors.py"
+RAISES = "s33_statement_raises.py"
+
+
+def _honest_results(tmp_path):
+    out = tmp_path / "honest"
+    cli("verify", "--claims", str(HERE / HONEST), "--method", "exact", "--method", "free", "--size", "3,2",
+        "--report-dir", str(out))
+    payload = json.loads((out / "results.json").read_text())
+    got = {(r["claim"], r["method"]): r["verdict"] for r in payload["results"]}
+    assert got[("adv-s33-honest-divzero", "exact")] == "error", got
+    assert got[("adv-s33-honest-statement", "free")] == "error", got
+    return out / "results.json"
+
+
+@pytest.mark.xfail(strict=True, reason="open (AD): an error record has no graph digest (runner._guarded builds the "
+                   "error without one) and check compares digests: an honest results file is rejected")
+def test_check_accepts_the_honest_records_of_runs_that_ended_in_error(tmp_path):
+    out = cli("check", str(_honest_results(tmp_path)))
+    assert out.returncode == 0, out.stdout[-1500:]
+
+
+@pytest.mark.xfail(strict=True, reason="open (AD): derive runs the dimension-free method unguarded in its own "
+                   "process: a size statement that raises is a Python traceback")
+@pytest.mark.parametrize("cid", ["adv-s33-raises-value", "adv-s33-raises-zerodiv"])
+def test_derive_answers_a_raising_statement_without_a_traceback(cid):
+    out = cli("derive", cid, "--claims", str(HERE / RAISES))
+    assert out.returncode == 1 and "Traceback" not in out.stderr, out.stderr[-800:]
+
+
+def test_verify_answers_a_raising_statement_with_error():
+    """The control: in `verify` the raising statement is the free run's error; the fixed-size methods decide at
+    (3,2) (the true claim proved or checked, the false one fails)."""
+    got = run_all(RAISES, methods=("exact", "modular", "float"))
+    assert got[("adv-s33-raises-value", "free")] == got[("adv-s33-raises-zerodiv", "free")] == "error", got
+    assert got[("adv-s33-raises-value", "exact")] == "proved", got
+    assert {got[("adv-s33-raises-zerodiv", m)] for m in ("exact", "modular", "float")} == {"fails"}, got
