@@ -132,6 +132,7 @@ def test_a_declared_r_contradicted_beyond_16_is_not_proved_for_every_size(method
     assert set(got) == set(BEYOND_FALSE) and not set(got.values()) & set(PASSING), got
 
 
+@pytest.mark.slow
 def test_the_claims_declared_at_one_r_fail_at_17_2_which_their_statements_admit():
     """The control: (17, 2) is one of the claims' sizes (an explicit --size is checked against the statement
     and admitted), and every fixed-size method refutes them there (exact: beyond its time budget at n = 17);
@@ -325,6 +326,7 @@ def test_absorbed_terms_are_not_numeric_under_a_hard_case():
     assert len(got) == 6 and not set(got.values()) & set(PASSING), got
 
 
+@pytest.mark.slow
 def test_absorbed_terms_fail_where_exact_arithmetic_looks():
     """The controls: at (13,2) modular, rational and auto refute the claims; at (3,2) without a hard case float
     and ball are confirmed at exact points and refute them; exact refutes them at (3,2)."""
@@ -376,3 +378,18 @@ def test_the_polynomial_vanishing_at_the_drawn_points_is_false():
     """The controls: exact, modular and ball refute it."""
     got = run_all(POINTS, methods=("exact", "modular", "ball"), free=False)
     assert len(got) == 3 and set(got.values()) == {"fails"}, got
+
+
+@pytest.mark.slow
+@pytest.mark.xfail(strict=True, reason="open (AA): a tracing that outlasts its budget (300 s) is recorded as "
+                   "'timeout' and replayed in derive's own process as a sleep without end (userfile._Budget.throw)")
+def test_derive_of_a_claim_whose_tracing_outlasts_its_budget_finishes():
+    import subprocess
+    import sys
+    try:
+        out = subprocess.run([sys.executable, "-m", "stiefelsym", "derive", "adv-s33-budget-ender", "--claims",
+                              str(HERE / BUDGET)], cwd=ROOT, capture_output=True, text=True, timeout=480,
+                             env=_budget_env("sleep"))
+    except subprocess.TimeoutExpired:
+        pytest.fail("derive did not finish in 480 s (the tracing budget is 300 s)")
+    assert out.returncode == 1, (out.returncode, out.stderr[-800:])
