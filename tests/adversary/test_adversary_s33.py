@@ -294,11 +294,18 @@ def test_derive_answers_a_raising_statement_without_a_traceback(cid):
     assert out.returncode == 1 and "Traceback" not in out.stderr, out.stderr[-800:]
 
 
+@pytest.mark.xfail(strict=True, reason="open (AD): `show` evaluates the erratum sizes (fails_at) in its own process, "
+                   "unguarded: a fails_at that raises is a Python traceback")
+def test_show_answers_a_raising_erratum_without_a_traceback():
+    out = cli("show", "adv-s33-raises-erratum", "--claims", str(HERE / RAISES))
+    assert out.returncode in (0, 2) and "Traceback" not in out.stderr, out.stderr[-800:]
+
+
 @pytest.mark.slow
 def test_verify_answers_a_raising_statement_with_error():
     """The control: in `verify` the raising statement is the free run's error; the fixed-size methods decide at
     (3,2) (the true claim proved or checked, the false one fails)."""
-    got = run_all(RAISES, methods=("exact", "modular", "float"))
+    got = run_all(RAISES, ids=("adv-s33-raises-value", "adv-s33-raises-zerodiv"), methods=("exact", "modular", "float"))
     assert got[("adv-s33-raises-value", "free")] == got[("adv-s33-raises-zerodiv", "free")] == "error", got
     assert got[("adv-s33-raises-value", "exact")] == "proved", got
     assert {got[("adv-s33-raises-zerodiv", m)] for m in ("exact", "modular", "float")} == {"fails"}, got
