@@ -415,6 +415,7 @@ def test_a_divisor_that_is_a_multiple_of_the_probe_primes_is_not_an_error():
     assert len(got) == 4 and "error" not in got.values(), got
 
 
+@pytest.mark.slow
 def test_the_probe_prime_claims_pass_the_point_methods():
     """The control: modular, rational, float and ball pass the two true claims."""
     got = run_all(PROBE, methods=("modular", "rational", "float", "ball"), free=False)
