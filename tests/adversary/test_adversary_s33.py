@@ -364,6 +364,13 @@ def test_an_absorbed_multiple_of_the_drawn_primes_is_not_numeric():
     assert got and not set(got.values()) & set(PASSING), got
 
 
+@pytest.mark.xfail(strict=True, reason="open (AF): at (13,2) auto chooses the modular method, whose primes the file "
+                   "computed: `checked` for a false claim")
+def test_auto_does_not_pass_a_multiple_of_the_drawn_primes_at_13_2():
+    got = run_all(SEEDED, ids=("adv-s33-seeded-auto",), size="13,2", methods=("auto",), free=False)
+    assert got and not set(got.values()) & set(PASSING), got
+
+
 def test_the_seeded_claims_are_false():
     """The controls: exact and rational refute all four (over Q the residual is M·tr(PᵀP), M·X, (M/3)·X, M·X)."""
     got = run_all(SEEDED, ids=SEEDED_IDS, methods=("exact", "rational"), free=False)
