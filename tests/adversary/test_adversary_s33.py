@@ -371,6 +371,7 @@ def test_auto_does_not_pass_a_multiple_of_the_drawn_primes_at_13_2():
     assert got and not set(got.values()) & set(PASSING), got
 
 
+@pytest.mark.slow
 def test_the_seeded_claims_are_false():
     """The controls: exact and rational refute all four (over Q the residual is M·tr(PᵀP), M·X, (M/3)·X, M·X)."""
     got = run_all(SEEDED, ids=SEEDED_IDS, methods=("exact", "rational"), free=False)
@@ -388,6 +389,7 @@ def test_a_polynomial_vanishing_at_the_drawn_points_is_not_checked_by_rational()
     assert got and not set(got.values()) & set(PASSING), got
 
 
+@pytest.mark.slow
 def test_the_polynomial_vanishing_at_the_drawn_points_is_false():
     """The controls: exact, modular and ball refute it."""
     got = run_all(POINTS, methods=("exact", "modular", "ball"), free=False)
