@@ -59,6 +59,7 @@ def run_all(claims_file, ids=(), size="3,2", methods=ALL_METHODS, env=None, free
     return got
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("mode", ["exit0", pytest.param("exit1", marks=pytest.mark.slow),
                                   pytest.param("kill", marks=pytest.mark.slow)])
 def test_verify_answers_error_for_a_claim_whose_tracing_ends_its_process(mode):
@@ -124,7 +125,7 @@ BEYOND_FALSE = ("adv-s33-beyond-col1", "adv-s33-beyond-square", "adv-s33-beyond-
 @pytest.mark.xfail(strict=True, reason="open (AB): free_method.sizes_off_r checks a declared r (r_min = r_max, "
                    "r_is_n) against admits() at n <= 16 only, so a statement admitting (17, 2) buys the r = 1 / "
                    "r = n hypotheses: proved for all n, r, false at (17,2)")
-@pytest.mark.parametrize("method", ["free", "auto"])
+@pytest.mark.parametrize("method", ["free", pytest.param("auto", marks=pytest.mark.slow)])
 def test_a_declared_r_contradicted_beyond_16_is_not_proved_for_every_size(method):
     v = verdicts(BEYOND, method, ids=BEYOND_FALSE) if method == "free" else \
         parse_all(cli("verify", *BEYOND_FALSE, "--claims", str(HERE / BEYOND), "--method", "auto").stdout)
@@ -196,7 +197,7 @@ MALFORMED = {
 }
 #: the ones `stiefelsym report` answers with a traceback (it reads no meta sizes, methods or hard case)
 MALFORMED_REPORT = ("claim-list", "claim-dict", "n-list", "r-dict", "method-list")
-FAST = ("claim-list", "meta-hard-unknown")
+FAST = ("claim-list",)
 
 
 def _open(reason):
@@ -357,6 +358,7 @@ def test_a_multiple_of_the_drawn_primes_is_not_checked_by_modular():
     assert len(got) == 4 and not set(got.values()) & set(PASSING), got
 
 
+@pytest.mark.slow
 @pytest.mark.xfail(strict=True, reason="open (AF): float's `numeric` is confirmed at exact points modulo the same "
                    "drawn primes, where the absorbed term M·X vanishes")
 def test_an_absorbed_multiple_of_the_drawn_primes_is_not_numeric():
@@ -364,6 +366,7 @@ def test_an_absorbed_multiple_of_the_drawn_primes_is_not_numeric():
     assert got and not set(got.values()) & set(PASSING), got
 
 
+@pytest.mark.slow
 @pytest.mark.xfail(strict=True, reason="open (AF): at (13,2) auto chooses the modular method, whose primes the file "
                    "computed: `checked` for a false claim")
 def test_auto_does_not_pass_a_multiple_of_the_drawn_primes_at_13_2():
@@ -416,6 +419,7 @@ def test_derive_of_a_claim_whose_tracing_outlasts_its_budget_finishes():
 PROBE = "s33_probe_primes.py"
 
 
+@pytest.mark.slow
 @pytest.mark.xfail(strict=True, reason="open (AG): the division probe works modulo three fixed public primes "
                    "(methods.PROBE_PRIMES): a divisor 1 + (P − 1), P their product, is a nonzero number that the "
                    "probe takes for a division by zero: exact, auto and free answer error for true claims")
@@ -438,7 +442,8 @@ def test_the_probe_prime_claims_pass_the_point_methods():
                    "never says them) and counts the false claim as holding at every size computed")
 @pytest.mark.parametrize("edit", [{"n": None, "r": None, "method": "modular", "verdict": "checked",
                                    "false_pass_bound": 1e-30},
-                                  {"n": None, "r": None, "method": "free", "verdict": "numeric"}])
+                                  pytest.param({"n": None, "r": None, "method": "free", "verdict": "numeric"},
+                                               marks=pytest.mark.slow)])
 def test_report_refuses_a_passing_verdict_for_every_size_that_no_method_gives(honest_results, tmp_path, edit):
     forged = _forge(honest_results, tmp_path, edit)
     out = cli("report", "--results", str(forged), "--report-dir", str(tmp_path / "rep"))
