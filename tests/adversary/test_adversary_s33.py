@@ -460,3 +460,34 @@ def test_report_refuses_a_results_file_with_a_planned_run_dropped(honest_results
     path.write_text(json.dumps(d))
     out = cli("report", "--results", str(path), "--report-dir", str(tmp_path / "rep"))
     assert out.returncode == 2, (out.returncode, out.stderr[-800:])
+
+
+# -- AI. the engine's source on disk, rewritten by the file's child -----------------------------------------
+
+DISK = "s33_engine_on_disk.py"
+
+
+def _scratch_engine(tmp_path):
+    """A copy of the package under tmp_path, marked as the scratch copy s33_engine_on_disk.py may rewrite."""
+    import shutil
+    root = tmp_path / "copy"
+    shutil.copytree(ROOT / "stiefelsym", root / "stiefelsym", ignore=shutil.ignore_patterns("__pycache__"))
+    (root / "stiefelsym" / "S33_SCRATCH_COPY").write_text("")
+    return root
+
+
+@pytest.mark.xfail(strict=True, reason="open (AI): the file's child rewrites stiefelsym/report.py on disk; the "
+                   "verifying process imports report lazily after the child ran, so the file's code runs there and "
+                   "turns the false claim's fails into proved in the summary, results.json and the exit status")
+def test_a_claims_file_that_rewrites_the_engine_on_disk_changes_no_verdict(tmp_path):
+    import subprocess
+    import sys
+    root = _scratch_engine(tmp_path)
+    env = dict(os.environ, PYTHONPATH=str(root))
+    out = subprocess.run([sys.executable, "-m", "stiefelsym", "verify", "--claims", str(HERE / DISK), "--method",
+                          "exact", "--size", "3,2", "--report-dir", str(tmp_path / "rep")], cwd=root, env=env,
+                         capture_output=True, text=True, timeout=300)
+    assert "S33 PAYLOAD" not in (ROOT / "stiefelsym" / "report.py").read_text()    # the engine itself untouched
+    assert "S33 PAYLOAD" in (root / "stiefelsym" / "report.py").read_text(), out.stderr[-800:]   # the copy was
+    recs = json.loads((tmp_path / "rep" / "results.json").read_text())["results"]
+    assert [r["verdict"] for r in recs] == ["fails"] and out.returncode == 1, (recs, out.returncode)
