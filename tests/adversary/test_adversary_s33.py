@@ -491,3 +491,22 @@ def test_a_claims_file_that_rewrites_the_engine_on_disk_changes_no_verdict(tmp_p
     assert "S33 PAYLOAD" in (root / "stiefelsym" / "report.py").read_text(), out.stderr[-800:]   # the copy was
     recs = json.loads((tmp_path / "rep" / "results.json").read_text())["results"]
     assert [r["verdict"] for r in recs] == ["fails"] and out.returncode == 1, (recs, out.returncode)
+
+
+LATER = "s33_results_rewritten_later.py"
+
+
+@pytest.mark.xfail(strict=True, reason="open (AI): a process the file's child leaves behind in a session of its own "
+                   "escapes the process-group kill, waits for the verifying process to end and rewrites its "
+                   "results.json (fails -> proved)")
+def test_the_results_file_of_a_run_is_not_rewritten_after_it(tmp_path):
+    import time
+    out = cli("verify", "--claims", str(HERE / LATER), "--method", "exact", "--size", "3,2", "--report-dir",
+              str(tmp_path / "rep"), env=dict(os.environ, STIEFELSYM_S33_DAEMON="1"))
+    assert "exact: fails" in out.stdout, out.stdout
+    verdicts_seen = set()
+    for _ in range(30):                 # the process it left lives 30 s at most, and acts within a second
+        time.sleep(0.2)
+        recs = json.loads((tmp_path / "rep" / "results.json").read_text())["results"]
+        verdicts_seen |= {r["verdict"] for r in recs}
+    assert verdicts_seen == {"fails"}, verdicts_seen
