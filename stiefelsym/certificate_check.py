@@ -30,6 +30,10 @@ tr(E_jᵀwE_k)·u·E_iE_lᵀ·v).
 Projectors D, C of orthogonal blocks of ℝʳ (Dsplit, Csplit: D² = D, C² = C, DC = CD = 0) and an orthogonal
 symmetry S of ℝⁿ commuting with A (Sref: S² = I_n, SA = AS), projector Dn of ℝⁿ, Kw with Kw·Wk = 0: symmetric.
 
+A certificate names its realization: "standard" (cond_XP, the default) or "metric" (cond_XP2, A positive
+definite: XᵀA⁻¹P + PᵀA⁻¹X replaces XᵀP + PᵀX); a hypothesis of the other one is rejected.  A declared Λ
+(``Lambda:k``) of the metric realization is the multiplier of a flow, ``rho:Λ`` its relation: see check_sylvester.
+
 The only facts used besides the hypotheses are structural: the transposes of
 the letters (A = Aᵀ, R_μ = R_μᵀ, ξᵀ = −ξ), and tr(uv) = tr(vu), tr(w) = tr(wᵀ).
 A declared operator letter AA(w) is 𝔸(skew w) for an n×n path w and a generic 𝔸 on so(n)
@@ -45,6 +49,7 @@ from typing import Any
 import symengine as se
 
 FORMAT = "stiefelsym-cofactor-1"
+CASES = "stiefelsym-cofactor-cases-1"    # a claim stated at r = 1 and at r = n (...): one certificate per family
 #: the objects: ℝⁿ, ℝʳ, and "1" for scalars (trace forms)
 OBJECTS = ("n", "r", "r-1")
 SCALAR = "1"
@@ -83,13 +88,18 @@ class CheckReport:
 
 
 def check_certificate(data: Any) -> CheckReport:
-    """Check every entry of a certificate (the JSON form written by the free method)."""
+    """Check every entry of a certificate (the JSON form written by the free method), or every case of one."""
+    if isinstance(data, dict) and data.get("format") == CASES:
+        return check_cases(data)
     t0 = time.perf_counter()
     terms = 0
     try:
         if not isinstance(data, dict) or data.get("format") != FORMAT:
             raise Rejected(f"not a certificate of format {FORMAT}")
-        ctx = Context(data.get("letters", {}))
+        realization = data.get("realization", "standard")
+        if realization not in REALIZATION_HYPOTHESES:
+            raise Rejected(f"unknown realization {realization!r}")
+        ctx = Context(data.get("letters", {}), realization)
         entries = data["entries"]
         if not isinstance(entries, list):
             raise Rejected("entries must be a list")
@@ -116,8 +126,35 @@ def check_certificate(data: Any) -> CheckReport:
                and se.expand(coefficient(t["coef"]).as_numer_denom()[1].subs(where)) == 0]
         if bad:
             return CheckReport(False, f"the coefficient {bad[0]} has a pole where {h} holds", seconds=time.perf_counter() - t0)
+    if ctx.sylvester:   # (what the multipliers' relations rest on)
+        at += (f" (metric realization, A positive definite: {', '.join(ctx.sylvester)} the unique solutions of their "
+               "relations rho, re-derived from the flows; Pi = 0 by uniqueness)")
     return CheckReport(True, f"{len(entries)} entries, {terms} terms: every certificate expands to its residual{at}",
                        len(entries), terms, time.perf_counter() - t0)
+
+
+def check_cases(data: dict) -> CheckReport:
+    """A certificate of cases: two or more distinct families r = k >= 1 or r = n (every n >= n_min >= k), each with
+    an accepted certificate of FORMAT whose hypotheses of one r (E1E1t, E1E1t+E2E2t, XXt) are of its own r."""
+    t0, said, entries, terms = time.perf_counter(), [], 0, 0
+    try:
+        fams = [(c["sizes"]["r"], c["sizes"]["n_min"], c["certificate"]) for c in data["cases"]]
+        if len(fams) < 2 or len({r for r, _k, _c in fams}) < len(fams) or not all(
+                (r == "n" or (type(r) is int and r >= 1)) and type(k) is int and k >= (1 if r == "n" else r)
+                and isinstance(c, dict) and c.get("format") == FORMAT for r, k, c in fams):
+            raise Rejected(f"cases are two or more distinct families r = k or r = n, every n >= n_min, of {FORMAT}")
+        for r, k, c in fams:
+            rep, used = check_certificate(c), {t.get("hyp") for e in c["entries"] for t in e["terms"]}
+            wrong = [h for h, at in ((R1_ONLY, 1), (R2_ONLY, 2), (SQUARE, "n")) if h in used and at != r]
+            if not rep.accepted or wrong:
+                raise Rejected(f"the case r = {r}: " + (rep.message if not rep.accepted else f"it uses {wrong[0]}, "
+                                                        "a hypothesis of another r"))
+            entries, terms, said = entries + rep.entries, terms + rep.terms, said + [f"case r = {r}, n >= {k}: {rep.message}"]
+    except Rejected as exc:
+        return CheckReport(False, str(exc), seconds=time.perf_counter() - t0)
+    except (KeyError, TypeError, ValueError, AttributeError, RuntimeError) as exc:
+        return CheckReport(False, f"malformed certificate of cases ({type(exc).__name__}: {exc})", seconds=time.perf_counter() - t0)
+    return CheckReport(True, "; ".join(said), entries, terms, time.perf_counter() - t0)
 
 
 def _mentions(entries: list, letters: set) -> bool:
@@ -128,11 +165,15 @@ def _mentions(entries: list, letters: set) -> bool:
 
 # ---------------------------------------------------------------------------
 class Context:
-    """The letters (fixed table plus declared resolvents and generic letters)."""
+    """The letters (fixed table plus declared resolvents and generic letters) of a realization."""
 
-    def __init__(self, declared: dict) -> None:
+    def __init__(self, declared: dict, realization: str = "standard") -> None:
+        self.realization = realization
         self.letters = dict(FIXED_LETTERS)
         self.resolvents: dict[str, Any] = {}
+        #: the multipliers of the metric realization's flows: name -> relation ρ as (coef, word) terms
+        self.sylvester: dict[str, list] = {}
+        pending: dict[str, dict] = {}
         self.operators: dict[str, tuple[str, tuple]] = {}   # name -> (operator, argument path)
         self.canon: dict[tuple, tuple] = _FIXED_CANON if not declared and len(_FIXED_CANON) < 10**5 else {}
         for name, d in declared.items():
@@ -160,8 +201,18 @@ class Context:
                     raise Rejected(f"the generic letter {name} is not an arrow between n and r")
                 self.letters[name] = (row, col, t, 1)
                 self.letters[t] = (col, row, name, 1)
+            elif d["kind"] == "sylvester":
+                if realization != "metric":
+                    raise Rejected(f"the multiplier {name} of a metric flow in a certificate of the {realization} "
+                                   "realization")
+                if not (name.startswith("Lambda:") and d.get("row") == "r"):
+                    raise Rejected(f"a multiplier of a metric flow is an r×r letter named Lambda:..., not {name}")
+                self.letters[name] = ("r", "r", name, 1)
+                pending[name] = d
             else:
                 raise Rejected(f"unknown kind of letter {d['kind']!r} for {name}")
+        for name, d in pending.items():   # once every letter is known (a flow may hold another declared letter)
+            self.sylvester[name] = check_sylvester(name, d, self)
 
     def add_operator(self, op: str, arg: tuple) -> str:
         """The letter op(arg), arg an n×n (or r×r) path: n×n (r×r), its transpose itself with sign −1."""
@@ -265,6 +316,7 @@ HYPOTHESES: dict[str, tuple[str, str, list[tuple[Any, tuple]]]] = {
     "YtY": ("r", "r", [(_ONE, ("Yt", "Y")), (_MINUS, ())]),
     "YtQ+QtY": ("r", "r", [(_ONE, ("Yt", "Q")), (_ONE, ("Qt", "Y"))]),
     "AAinv": ("n", "n", [(_ONE, ("A", "Ainv")), (_MINUS, ())]),
+    "XtAinvP+PtAinvX": ("r", "r", [(_ONE, ("Xt", "Ainv", "P")), (_ONE, ("Pt", "Ainv", "X"))]),
     "AinvA": ("n", "n", [(_ONE, ("Ainv", "A")), (_MINUS, ())]),
     **{f"E{i}tE{j}": ("1", "1", [(_ONE, (f"E{i}t", f"E{j}"))] + [(_MINUS, ())] * (i == j)) for i in (1, 2) for j in (1, 2)},
     "ErtEr": ("1", "1", [(_ONE, ("Ert", "Er")), (_MINUS, ())]),
@@ -298,7 +350,93 @@ def hypothesis(name: str, ctx: Context) -> tuple[str, str, list[tuple[Any, tuple
         mu = ctx.resolvents[R]   # (mu I - A) R - I, resp. R (mu I - A) - I
         AR = ("A", R) if kind == "res_left" else (R, "A")
         return ("n", "n", [(mu, (R,)), (_MINUS, AR), (_MINUS, ())])
+    if kind == "rho" and R in ctx.sylvester:
+        return ("r", "r", ctx.sylvester[R])
     raise Rejected(f"unknown hypothesis {name!r}")
+
+
+# ---------------------------------------------------------------------------
+# the metric realization: XᵀX = I_r, XᵀA⁻¹P + PᵀA⁻¹X = 0, and the multipliers Λ of its Dirac flows
+METRIC_HYP = "XtAinvP+PtAinvX"
+#: the hypotheses of one realization only (rho:Λ, the relations of declared multipliers, are the metric's)
+REALIZATION_HYPOTHESES = {"standard": {"XtP+PtX", "YtQ+QtY", "XXt"}, "metric": {METRIC_HYP}}
+
+
+def allowed_hypothesis(name: Any, realization: str) -> bool:
+    """Whether a certificate of the realization may name the hypothesis (not one of another realization)."""
+    if any(name in hs for other, hs in REALIZATION_HYPOTHESES.items() if other != realization):
+        return False
+    return realization == "metric" or not str(name).startswith("rho:")
+
+
+def _poly(terms: Any, ctx: Context, row: str, col: str, what: str) -> list[tuple[Any, list, tuple]]:
+    """(coef, traces, word) terms of a polynomial written as a residual, each word a row×col path."""
+    out = [(coefficient(t["coef"]), [_words(c) for c in t["traces"]], _words(t["word"])) for t in terms]
+    for _c, traces, w in out:
+        ctx.expect(w, row, col, what)
+        for c in traces:
+            ctx.cyclic(c)
+    return out
+
+
+def _star_terms(terms: list, ctx: Context) -> list:
+    """The transpose of a polynomial of (coef, traces, word) terms."""
+    return [(c * s, traces, ws) for c, traces, w in terms for s, ws in [ctx.star(w)]]
+
+
+def _canonical(terms: list, ctx: Context) -> dict:
+    out: dict = {}
+    for c, traces, word in terms:
+        _add(out, c, traces, word, ctx)
+    return {k: v for k, v in out.items() if not is_zero(v)}
+
+
+def _same(a: list, b: list, ctx: Context) -> bool:
+    return not _canonical(a + [(-c, t, w) for c, t, w in b], ctx)
+
+
+def _holds(poly: dict, names: set) -> bool:
+    return any(L in names for (traces, w) in poly for x in [w, *traces] for L in x)
+
+
+def leibniz(words: list[tuple[Any, tuple]], images: dict[str, list], ctx: Context) -> list:
+    """The derivative of Σ c·word (no traces) with X ↦ images["X"], P ↦ images["P"], Xt, Pt ↦ their
+    transposes, every other letter constant (Leibniz over the letters)."""
+    full = {**images, **{f"{k}t": _star_terms(v, ctx) for k, v in images.items()}}
+    return [(c * c2, traces, word[:i] + w2 + word[i + 1:]) for c, word in words for i, L in enumerate(word)
+            for c2, traces, w2 in full.get(L, [])]
+
+
+def check_sylvester(name: str, d: dict, ctx: Context) -> list[tuple[Any, tuple]]:
+    """Check a declared multiplier Λ of a Dirac flow of the metric realization; its relation ρ.  The flow:
+    Ẋ and Ṗ − XΛ free of multipliers; ρ = d/dt (XᵀA⁻¹P + PᵀA⁻¹X) along it (recomputed), without traces,
+    ρ − ΛM − MΛ (M = XᵀA⁻¹X) free of multipliers, ρᵀ = ρ (so Λ is the unique, symmetric solution of ρ = 0);
+    and d/dt XᵀX along it in the ideal (its certificate checked, its residual recomputed): Π = 0."""
+    if d.get("constraint") != METRIC_HYP:
+        raise Rejected(f"the multiplier {name} is of the constraint {METRIC_HYP}, not {d.get('constraint')!r}")
+    lams = {L for L, v in ctx.letters.items() if L.startswith("Lambda:") and v[2] == L}
+    Xd, Pd = (_poly(d["flow"][k], ctx, "n", "r", f"the flow {k}' of {name}") for k in ("X", "P"))
+    if _holds(_canonical(Xd, ctx), lams):
+        raise Rejected(f"the flow X' of {name} holds a multiplier")
+    if _holds(_canonical(Pd + [(_MINUS, [], ("X", name))], ctx), lams):
+        raise Rejected(f"the flow P' of {name} is not X {name} + (terms free of the multipliers)")
+    rho = _poly(d["relation"], ctx, "r", "r", f"the relation of {name}")
+    if any(traces for _c, traces, _w in rho):
+        raise Rejected(f"the relation of {name} has traces")
+    if not _same(leibniz([(_ONE, ("Xt", "Ainv", "P")), (_ONE, ("Pt", "Ainv", "X"))], {"X": Xd, "P": Pd}, ctx), rho, ctx):
+        raise Rejected(f"the relation of {name} is not d/dt (X^T A^-1 P + P^T A^-1 X) along its flow")
+    if _holds(_canonical(rho + [(_MINUS, [], (name, "Xt", "Ainv", "X")), (_MINUS, [], ("Xt", "Ainv", "X", name))],
+                         ctx), lams) or not _same(_star_terms(rho, ctx), rho, ctx):
+        raise Rejected(f"the relation of {name} is not {name} M + M {name} - C with C symmetric, free of multipliers")
+    keeps = d["keeps"]["XtX"]
+    if any(str(t.get("hyp")).startswith("rho:") for t in keeps["terms"]) or keeps.get("type") != ["r", "r"] or \
+            not _same(leibniz([(_ONE, ("Xt", "X"))], {"X": Xd}, ctx), _poly(keeps["residual"], ctx, "r", "r", "d(XtX)"), ctx):
+        raise Rejected(f"the entry d/dt X^T X of {name} is not the derivative along its flow, in the constraints")
+    try:
+        check_entry(keeps, ctx)
+    except Rejected as exc:
+        raise Rejected(f"d/dt X^T X along the flow of {name}: {exc}") from None
+    return [(c, w) for c, _t, w in rho]
 
 
 #: parsed coefficients: text -> expression (parsing and its checks are a function of the text)
@@ -400,6 +538,8 @@ def check_entry(entry: dict, ctx: Context) -> int:
             c = coefficient(t["coef"])
             left, right, word = _words(t["left"]), _words(t["right"]), _words(t["word"])
             traces = [_words(x) for x in t["traces"]]
+            if not allowed_hypothesis(t["hyp"], ctx.realization):
+                raise Rejected(f"the hypothesis {t['hyp']} is not one of the {ctx.realization} realization")
             h_row, h_col, h_terms = hypothesis(t["hyp"], ctx)
             if not isinstance(t["in_trace"], bool) or not isinstance(t.get("transposed", False), bool):
                 raise Rejected("in_trace and transposed are true or false")

@@ -511,7 +511,7 @@ def test_derive_prints_a_latex_derivation_or_exits_1():
     from stiefelsym.cli import main
     ok = CliRunner().invoke(main, ["derive", "normal-flow"])
     assert ok.exit_code == 0 and "\\operatorname{nf}(R) &= 0" in ok.output and "proved for all n, r" in ok.output
-    no = CliRunner().invoke(main, ["derive", "metric-flow"])
+    no = CliRunner().invoke(main, ["derive", "invariant-metrics"])
     assert no.exit_code == 1 and "undecided" in no.output
     bad = CliRunner().invoke(main, ["derive", "nosuch"])
     assert bad.exit_code == 2

@@ -890,8 +890,9 @@ def refuse_moving(p: "NCPoly", what: str, tracker: Any = None) -> None:
     def moving(L: Letter) -> bool:
         return getattr(L, "moving", False) or (isinstance(L, OperatorLetter) and any(moving(x) for x in L.argument))
     if any(moving(L) for L in p.letters()):
-        raise refuse(f"{what} of a resolvent at a spectral parameter that moves with the point (its derivative "
-                     "is written by the graph's derivative passes, not by the free scene's own)", tracker)
+        raise refuse(f"{what} of a letter that moves with the point (a resolvent at a moving spectral parameter, "
+                     "or the multiplier of a flow of the metric realization: its derivative is not the free scene's "
+                     "own)", tracker)
 
 
 def derivation(p: NCPoly, images: Mapping[Letter, NCPoly]) -> NCPoly:

@@ -65,8 +65,12 @@ def _base_name(s: Any) -> str:
 class CertificateWriter:
     """Serializes the entries of one scene (one naming of symbols and letters)."""
 
-    def __init__(self, resolvents: Mapping[Letter, Any]) -> None:
+    def __init__(self, resolvents: Mapping[Letter, Any], sylvester: Mapping[Letter, Any] | None = None,
+                 realization: str = "standard") -> None:
         self.resolvents = dict(resolvents)
+        #: the multipliers of the metric realization's flows (letters declared with their flow and relation)
+        self.sylvester = dict(sylvester or {})
+        self.realization = realization
         self.symbols: dict[Any, str] = {DIMENSIONS["n"]: "n", DIMENSIONS["r"]: "r"}
         self.meaning: dict[str, str] = {"n": "the dimension n (tr I_n)", "r": "the dimension r (tr I_r)"}
         self.letters: dict[str, dict] = {}
@@ -107,6 +111,15 @@ class CertificateWriter:
             self.letters[name] = {"kind": "operator", "operator": L.operator, "argument": argument}
         elif L in self.resolvents:
             self.letters[name] = {"kind": "resolvent", "parameter": self.coef(self.resolvents[L])}
+        elif L in self.sylvester:
+            m = self.sylvester[L]
+            decl = self.letters[name] = {"kind": "sylvester", "row": L.row, "constraint": m.hypothesis_of_constraint}
+            # (declared before its flow is written: the flow holds the letter itself)
+            decl["flow"] = {"X": self.residual(m.Xdot), "P": self.residual(m.Pdot)}
+            decl["relation"] = self.residual(m.relation)
+            decl["keeps"] = {"XtX": self.entry("d(X^T X)/dt", m.keeps_certificate)}
+            decl["assumes"] = [f"{name} is the solution of rho:{name} = 0, unique and symmetric (M = X^T A^-1 X "
+                               "positive definite)", "Pi = 0 by uniqueness: Pi M + M Pi = 0 (keeps: X^T X = I_r)"]
         elif name.startswith("gen:") and L.adjoint != L:
             G = L if not name.endswith("^T") else L.adjoint
             if str(G) not in self.letters:
@@ -119,7 +132,7 @@ class CertificateWriter:
         if names is not None:
             return list(names)
         out = [self.letter(L) for L in w]
-        if not any(x.startswith(("R[", "gen:")) or "(" in x for x in out):   # no letter to declare: any writer's names
+        if not any(x.startswith(("R[", "gen:", "Lambda:")) or "(" in x for x in out):   # no letter to declare: any writer's names
             memo_put(_PLAIN_WORDS, w, tuple(out), 100_000)
         return out
 
@@ -129,6 +142,12 @@ class CertificateWriter:
                 for (tm, w), c in p.expand().terms.items()]
 
     def add(self, position: str, cert: Certificate) -> dict:
+        entry = self.entry(position, cert)
+        self.entries.append(entry)
+        return entry
+
+    def entry(self, position: str, cert: Certificate) -> dict:
+        """The JSON form of one entry's certificate (not added to the entries)."""
         p = cert.residual
         by_name = {str(R): R for R in self.resolvents}
         for t in cert.terms:   # a hypothesis res_left:R / res_right:R needs R declared, in a word or not
@@ -140,12 +159,16 @@ class CertificateWriter:
                             "left": self.word(t.left), "hyp": t.hyp.name, "right": self.word(t.right),
                             "in_trace": t.in_trace, "word": self.word(t.word)} for t in cert.terms],
                  "hypotheses": cert.hypotheses()}
-        self.entries.append(entry)
         return entry
 
     def data(self) -> dict:
         terms = sum(len(e["terms"]) for e in self.entries)
-        used = sorted({h for e in self.entries for h in e["hypotheses"]})
-        return {"format": FORMAT, "symbols": dict(self.meaning), "letters": dict(self.letters),
-                "entries": self.entries,
-                "summary": {"entries": len(self.entries), "terms": terms, "hypotheses": used}}
+        used = {h for e in self.entries for h in e["hypotheses"]}
+        declared = [d for d in self.letters.values() if d.get("kind") == "sylvester"]
+        used |= {h for d in declared for h in d["keeps"]["XtX"]["hypotheses"]}
+        summary = {"entries": len(self.entries), "terms": terms, "hypotheses": sorted(used)}
+        if self.realization != "standard":
+            summary["realization"] = self.realization
+            summary["assumes"] = ["A symmetric positive definite"] + [a for d in declared for a in d["assumes"]]
+        return {"format": FORMAT, "realization": self.realization, "symbols": dict(self.meaning),
+                "letters": dict(self.letters), "entries": self.entries, "summary": summary}

@@ -9,7 +9,8 @@ normalizes entries with the standard rewriting system (the constraints
 (cond_XP) and the resolvent identities), which is confluent (see the tests),
 so a residual is zero for every n, r and every symmetric A iff its normal form
 is 0, up to consequences of the constraints that the rules do not generate.
-Objects that need coordinates raise :class:`NeedsCoordinates`.
+The metric realization (cond_XP2) has its own rules and the multipliers of its
+flows (:mod:`.metric`).  Objects that need coordinates raise :class:`NeedsCoordinates`.
 """
 from __future__ import annotations
 
@@ -147,6 +148,7 @@ def hypothesis(name: str, R: Letter | None = None, mu: Any = None) -> Hypothesis
     polys = {
         "XtX": lambda: _w(Xt, X) - _i("r"),
         "XtP+PtX": lambda: _w(Xt, P) + _w(Pt, X),
+        "XtAinvP+PtAinvX": lambda: _w(Xt, AINV, P) + _w(Pt, AINV, X),
         "YtY": lambda: _w(Yt, Y) - _i("r"),
         "YtQ+QtY": lambda: _w(Yt, Q) + _w(Qt, Y),
         "AAinv": lambda: _w(A, AINV) - _i("n"),
@@ -383,13 +385,18 @@ class FreeScene(PaperObjects):
     """T*V_{n,r} for all n, r at once: the scene interface over the free algebra."""
 
     chart = "free"
-    realization = "standard"  # (cond_XP); other realizations raise NeedsCoordinates
+    #: (cond_XP), or "metric": (cond_XP2) with A positive definite (see :mod:`.metric`)
+    realization = "standard"
 
     def __init__(self, tracker: CoordinateTracker | None = None, system: RewritingSystem | None = None,
                  realization: str = "standard", lazy: bool = False, columns: int = 0, square: bool = False) -> None:
-        if realization != "standard":
-            raise NeedsCoordinates(f"the {realization!r} realization of T*V (its multipliers solve a "
-                                   "Sylvester equation)")
+        if realization not in ("standard", "metric"):
+            raise NeedsCoordinates(f"the {realization!r} realization of T*V")
+        if realization == "metric" and (columns or square):
+            raise NeedsCoordinates("the metric realization of T*V with the columns of R^r or at r = n")
+        if realization == "metric" and system is None:
+            from .metric import metric_system
+            system = metric_system()
         if system is None:
             # r = n: the order P < X (for the rule XP^T -> -PX^T); the standard rules decrease in it too
             system = (RewritingSystem(Order([P, X, A, Xt, Pt]), _standard_rules()) if square
@@ -406,6 +413,11 @@ class FreeScene(PaperObjects):
         self._moving: list[tuple[NCPoly, Any]] = []
         self._extras: set[str] = set()
         self._named: dict[str, Letter] = {}
+        #: the multipliers Λ of the metric realization's flows, letters with their Sylvester relations ρ
+        self._sylvester: dict = {}
+        if realization == "metric":
+            self.realization = "metric"
+            self._extras |= {"metric", "ainv"}   # A^{-1} and its rules belong to the metric system
         #: r given (1 or 2: the claim is stated at that r only; 0: every r): the columns E_1, ..., E_r
         #: of R^r are letters, and E_1 E_1^T + ... + E_r E_r^T = I_r a hypothesis of normal forms
         if columns not in (0, 1, 2):
@@ -486,7 +498,14 @@ class FreeScene(PaperObjects):
     def A(self) -> Mat:
         return self._letter(A)
 
+    def _standard_only(self, what: str) -> None:
+        """Refuse (recorded) what the free scene offers for the standard realization (cond_XP) only."""
+        if self.realization != "standard":
+            raise refuse(f"{what} in the {self.realization} realization of T*V (offered for (cond_XP) only)",
+                         self.tracker)
+
     def _second_point(self) -> None:
+        self._standard_only("a second point Y, Q")
         if "second" not in self._extras:
             self._extras.add("second")
             self.system.order.add(Y)
@@ -526,7 +545,7 @@ class FreeScene(PaperObjects):
         XPᵀ + PXᵀ = X(XᵀP + PᵀX)Xᵀ − (XXᵀ − I)PXᵀ − XPᵀ(XXᵀ − I) (in the order P < X of the scene at
         r = n: the other direction loops in traces, tr(XᵀPXᵀP) → tr(XᵀXPᵀP) ↺)."""
         h, g = hypothesis("XXt"), hypothesis("XtP+PtX")
-        why = "X X^T = I_n: X is square (r = n, the only r the claim is stated for)"
+        why = "X X^T = I_n: X is square (r = n, where the claim is stated)"
         self.system.add_rule((X, Xt), _i("n"), why, name="XXt", cofactors=[_by(h)])
         self.system.add_rule((X, Pt), -_w(P, Xt), "X P^T = -P X^T: X^T P is skew and X X^T = I_n (r = n)",
                              name="XPt", cofactors=[_by(g, 1, left=(X,), right=(Xt,)), _by(h, -1, right=(P, Xt)),
@@ -952,6 +971,7 @@ class FreeScene(PaperObjects):
     def at_point(self, Xv: Mat, Pv: Mat) -> "FreePointScene":
         """The problem at the point (Xv, Pv) of T*V (n×r blocks of this scene; refused unless they satisfy
         (cond_XP) by the rules): see :class:`FreePointScene`."""
+        self._standard_only("a scene at another point")
         xs, ps = (entry_of(M) if isinstance(M, Mat) and M._shape() == (1, 1) else None for M in (Xv, Pv))
         if not isinstance(xs, NCPoly) or not isinstance(ps, NCPoly) or xs.shape != ("n", "r") or ps.shape != ("n", "r"):
             raise refuse("a point of T*V that is not given by two n×r blocks", self.tracker)
@@ -1312,9 +1332,26 @@ class FreeScene(PaperObjects):
 
     def _multiplier_flow(self, H: Function) -> Flow:
         HX, HP = (entry_of(m) for m in self._gradient(H))
+        if self.realization == "metric":
+            return self._metric_flow(HX, HP)
         Xd, Pd, Lam, Pi = self._pair_multipliers(HX, HP, X, P)
         return Flow(self._const_mat(Xd), self._const_mat(Pd),
                     multipliers={"Pi": self._const_mat(Pi), "Lambda": self._const_mat(Lam)})
+
+    def _metric_flow(self, HX: NCPoly, HP: NCPoly) -> Flow:
+        """The Dirac flow of the gradient (H_X, H_P) on (cond_XP2): Ẋ = H_P − A⁻¹XΠ, Ṗ = −H_X + XΛ + A⁻¹PΠ with
+        Π = 0 by the uniqueness of the solution of its Sylvester equation, Λ a letter whose relation ρ joins
+        the ideal (see :mod:`.metric`); refused where a multiplier equation is of neither form."""
+        from .metric import metric_multipliers
+        try:
+            m = metric_multipliers(self.system, HX, HP, self._sylvester)
+        except FreeSolveError as exc:   # a refusal: recorded before it reaches claim code
+            record_refusal(f"the Lagrange multipliers of a Hamiltonian on (cond_XP2) ({exc})", self.tracker)
+            raise NeedsCoordinates(f"the multipliers of the metric realization: {exc}") from None
+        self._sylvester[m.letter] = m
+        self._named[str(m.letter)] = m.letter
+        return Flow(self._const_mat(m.Xdot), self._const_mat(m.Pdot),
+                    multipliers={"Pi": self._const_mat(NCPoly.zero("r", "r")), "Lambda": self._const_mat(_w(m.letter))})
 
     def _pair_multipliers(self, HX: NCPoly, HP: NCPoly, x_letter: Letter, p_letter: Letter) -> tuple:
         """(dot_XP) for one pair (x, p) of T*V: ẋ = H_p − xΠ, ṗ = −H_x + xΛ + pΠ with the symmetric Π, Λ
@@ -1361,6 +1398,7 @@ class FreeScene(PaperObjects):
         momentum) pair of the scene's own letters, each with its constraints (cond_XP): the
         constraints of a pair involve only its own letters, so each pair has its own multipliers,
         ẋ = H_p − xΠ, ṗ = −H_x + xΛ + pΠ, solved in the free algebra."""
+        self._standard_only("a Dirac flow on pairs of points")
         keys = self._own_point(point, "a Hamiltonian flow")
         pairs = [tuple(pq) for pq in pairs]
         if sorted(k for pq in pairs for k in pq) != sorted(keys) or any(len(pq) != 2 for pq in pairs):
@@ -1427,11 +1465,16 @@ class FreeScene(PaperObjects):
                 record_refusal(f"a flow that moves {key!r}", self.tracker)
                 raise KeyError(f"the flow moves {key!r}, which is not a letter of this scene")
             images[self._named[key]] = entry_of(v) if isinstance(v, Mat) else v
-        relations = [(_w(Xt, X), COND_XX), (_w(Xt, P) + _w(Pt, X), COND_XP)]
+        if self.realization == "metric":
+            from .metric import constraint_polys
+            relations = constraint_polys()
+        else:
+            relations = [(_w(Xt, X), COND_XX), (_w(Xt, P) + _w(Pt, X), COND_XP)]
         if "second" in self._extras:
             relations += [(_w(Yt, Y), "Y^T Y = I_r"), (_w(Yt, Q) + _w(Qt, Y), "Y^T Q + Q^T Y = 0")]
         for rel, why in relations:
-            if not self.system.is_zero(derivation(rel, images)):
+            d = derivation(rel, images)   # (along a metric flow: modulo the relation of its multiplier too)
+            if not (self.reduce(d).is_zero if self._sylvester else self.system.is_zero(d)):
                 record_refusal(f"the derivative of a value along a flow that does not preserve {why}", self.tracker)
                 raise ValueError(f"the flow does not preserve {why}: differentiate a function of the "
                                  "scene (d(lambda s: ..., flow)) instead of a value")
@@ -1454,6 +1497,8 @@ class FreeScene(PaperObjects):
         self.params = base.params
         self._resolvents = base._resolvents
         self._moving = base._moving
+        self._sylvester = base._sylvester
+        self.realization = base.realization
         self._extras = base._extras
         self.columns = base.columns
         self.square = base.square
@@ -1462,6 +1507,8 @@ class FreeScene(PaperObjects):
         """Normal form of one entry with the rules used (for reports); with the columns of V(n, 2),
         the canonical form of :mod:`.columns` and the rules in turn until neither changes it."""
         p = x if isinstance(x, NCPoly) else NCPoly.scalar(x)
+        if self._sylvester:
+            return self._sylvester_reduce(p)
         if "columns" not in self._extras and "last" not in self._extras:
             red = self.system.reduce(p)
             if red.is_zero or not self.columns:
@@ -1478,9 +1525,38 @@ class FreeScene(PaperObjects):
             q = red.normal_form
         raise RewritingError("the canonical form of the columns and the rules do not settle")
 
+    def _sylvester_reduce(self, p: NCPoly, certify: bool = False) -> Any:
+        """The rules and the steps ΛM → −MΛ + C of the multipliers of the metric realization in turn until
+        neither changes p (see :mod:`.metric`): the Reduction, or with ``certify`` the Certificate."""
+        from .metric import sylvester_step
+        rules: list = []
+        terms: list = []
+        q = p
+        for _ in range(self.system.max_depth):
+            if certify:
+                step = self.system.certify(q)
+                terms += step.terms
+                red_nf = step.normal_form
+            else:
+                red = self.system.reduce(q)
+                rules += [r for r in red.rules if r not in rules]
+                red_nf = red.normal_form
+            nxt, cert, used = sylvester_step(red_nf, self._sylvester)
+            terms += cert
+            rules += [r for r in used if r not in rules]
+            if not cert:
+                return Certificate(p, red_nf, terms) if certify else Reduction(p, red_nf, rules)
+            q = nxt
+        raise RewritingError("the rules and the Sylvester relations of the multipliers do not settle")
+
     def certify(self, p: NCPoly, normal_form: NCPoly) -> Certificate:
         """p − nf(p) through the hypotheses (see :meth:`RewritingSystem.certify`); with the columns,
         the resolutions of :func:`.columns.canonical` and the rules' steps, in the order of :meth:`reduce`."""
+        if self._sylvester:
+            cert = self._sylvester_reduce(p, certify=True)
+            if cert.normal_form != normal_form:
+                raise RewritingError("the certificate's normal form is not the reduction's")
+            return cert
         if ("columns" not in self._extras and "last" not in self._extras) or self.system.is_zero(p):
             return self.system.certify(p, normal_form)   # the rules alone (as reduce found, or as they suffice)
         terms: list = []
@@ -1612,6 +1688,9 @@ class FunctionScene(FreeScene):
                          "modulo the constraints, which changes the function off T*V)", self.tracker)
 
     def _multiplier_flow(self, H: Function) -> Flow:
+        if self.realization == "metric":
+            raise refuse("a flow of the metric realization inside a function handed to the scene (its multiplier "
+                         "is a letter, constant for the function)", self.tracker)
         self.refuse_ambient_flow()
         HX, HP = self.to_point(*(entry_of(m) for m in self._gradient(H)))
         Xd, Pd, Lam, Pi = self.from_point(*self._pair_multipliers(HX, HP, X, P))
