@@ -105,7 +105,9 @@ def test_check_is_not_killed_by_the_files_child(tmp_path):
                    "the replayed 'exited with status 0' leaves it with status 0 (its status for a proof)")
 def test_derive_of_a_false_claim_whose_tracing_exits_0_is_not_status_0():
     out = cli("derive", "adv-s33-budget-ender", "--claims", str(HERE / BUDGET), env=_budget_env("exit0"))
-    assert out.returncode != 0, (out.returncode, out.stdout, out.stderr[-1500:])
+    # what derive says of a claim it cannot prove: exit 1, its "% <claim> ..." line, no traceback
+    assert out.returncode == 1 and out.stdout.startswith("% adv-s33-budget-ender") and "Traceback" not in out.stderr, \
+        (out.returncode, out.stdout, out.stderr[-1500:])
 
 
 @pytest.mark.slow
