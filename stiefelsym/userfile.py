@@ -229,8 +229,9 @@ def _fork_bytes(make: Callable[[], bytes], seconds: float) -> bytes | None:
     """make() in a forked child, its bytes read back (None: it died or ran out of time).
 
     Everything the child starts stays under this process (:class:`~stiefelsym.confine.Confined`: a subreaper)
-    and is killed once the child has ended, before the rest of the child's answer is read: its answer is
-    what it wrote before it exited, read without waiting for an end of file that a process it left holds."""
+    and is killed once the child has ended, before this function returns (so before anything of the run is
+    written); the child's answer is what it wrote before it exited, read without waiting for an end of file
+    that a process it left could hold."""
     from .confine import Confined
     with Confined():
         rfd, wfd = os.pipe()
@@ -254,7 +255,7 @@ def _fork_bytes(make: Callable[[], bytes], seconds: float) -> bytes | None:
             chunks, status = _read_until_exit(pid, rfd, seconds)
         finally:
             _kill_group(pid)            # the child, and what the file started in its group
-    if status is None or status != 0:
+    if status != 0:                 # None: out of time
         return None
     return b"".join(chunks)
 
