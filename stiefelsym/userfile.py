@@ -487,6 +487,7 @@ def _tracer(path: str, needed: Sequence[tuple[int, int]], timeout: float, memory
             capture: int) -> bytes:
     """The tracer child: import the file, then trace each claim in grandchildren of its own."""
     _die_with_parent()
+    sys.dont_write_bytecode = True      # an honest import here writes no byte code into the engine's folders
     try:
         os.setpgid(0, 0)        # its own process group: killed as a whole (with what the file started)
     except OSError:
