@@ -143,13 +143,8 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
         res.residual = f"{pos}: nf = {_short(red.normal_form)}"
         return undecided(f"{len(open_entries)} residual entries have a nonzero normal form "
                          f"(e.g. {res.residual}); the fixed-size methods decide")
-    # the proof is about the graph traced with symbolic sizes: it must be the graph every fixed-size
-    # method evaluates (a claim that behaves otherwise when its sizes are symbols proves nothing)
-    why = same_graph_at_fixed_sizes(claim, func)
-    if why:
-        res.verdict, res.message = "error", why
-        res.seconds = time.perf_counter() - t0
-        return res
+    # the proof is about the graph traced with symbolic sizes, which is the graph every fixed-size method
+    # evaluates: a claim that traces so is never traced at a number (see stiefelsym.ir._compile)
     # symbolic coefficients do not raise on a division by an identically zero expression: probe
     # the same claim code at an exact point of a fixed size first
     why = probe_divisions(claim, func, every_size=bool(scene._moving))
@@ -233,18 +228,15 @@ def sizes_off_r(spec: Any, columns: int, square: bool) -> Size | None:
 
 def evaluation_needs_text(claim: Claim, func: Callable, refusal: str) -> str:
     """Why a claim whose graph traces with symbolic sizes is left to the fixed-size methods: what the
-    free scene refused, with what the claim's graph at a fixed size reads, when it names it."""
-    from .ir import compile_at_size
+    free scene refused, with what the claim's graph reads, when it names it."""
+    from .ir import compile_claim
     from .ir.passes import coordinate_needs
     from .scene import REALIZATIONS
-    sizes = list(claim.sizes)
-    z = next((z for z in sizes if 1 < z.r < z.n), None) or next((z for z in sizes if z.n >= 3), None) or \
-        (sizes[-1] if sizes else None)
     needs: list[str] = []
-    if z is not None and claim.realization in REALIZATIONS:
+    if claim.realization in REALIZATIONS:
         cons = REALIZATIONS[claim.realization]
-        try:
-            needs = coordinate_needs(compile_at_size(func, z.n, z.r, (cons.name, cons.build)))
+        try:        # its graph with symbolic sizes (the claim's graph at every size)
+            needs = coordinate_needs(compile_claim(func, None, None, (cons.name, cons.build)))
         except Exception:    # noqa: BLE001 - the refusal alone says it
             needs = []
     if not needs:
@@ -257,40 +249,19 @@ def needs_text(claim: Claim, func: Callable, refusal: str) -> str:
     """Why a claim that does not trace with symbolic sizes is left to the fixed-size methods, read
     from its graph at a fixed size (what it states and reads there), with the refusal that stopped
     the symbolic trace."""
-    from .ir import compile_at_size
+    from .ir import compile_claim
     from .ir.passes import coordinate_needs
     from .scene import REALIZATIONS
     cons = REALIZATIONS[claim.realization]
     sizes = list(claim.sizes)
     z = next((z for z in sizes if 1 < z.r < z.n), None) or next((z for z in sizes if z.n >= 3), sizes[-1])
     try:
-        needs = coordinate_needs(compile_at_size(func, z.n, z.r, (cons.name, cons.build)))
+        needs = coordinate_needs(compile_claim(func, z.n, z.r, (cons.name, cons.build)))
     except Exception:    # noqa: BLE001 - the refusal alone says it
         needs = []
     what = "; ".join(needs) if needs else "its statement depends on the sizes (a loop or a condition over n, r)"
     return (f"needs coordinates (fixed n, r): {what} (the trace with symbolic sizes stopped at: "
             f"{refusal.removeprefix('refused: ')}); decided by the fixed-size methods")
-
-
-def same_graph_at_fixed_sizes(claim: Claim, func: Callable) -> str:
-    """"" when the claim's graph with symbolic sizes is also the graph it gives when traced at every size
-    it is stated for (the digest leaves the values of sizes out); otherwise why not.  (Every method evaluates
-    the graph of symbolic sizes when there is one; a claim that tells the two tracings apart is
-    reported, not believed.)"""
-    from .ir import compile_at_size, compile_claim
-    from .scene import REALIZATIONS
-    cons = REALIZATIONS[claim.realization]
-    free = compile_claim(func, None, None, (cons.name, cons.build)).digest()
-    for z in claim.sizes:      # every size the claim is stated for (each traced once, in milliseconds)
-        try:
-            fixed = compile_at_size(func, z.n, z.r, (cons.name, cons.build), twice=False).digest()
-        except Exception as exc:    # noqa: BLE001 - a claim that does not trace at a size proves nothing
-            return f"the claim does not trace at ({z.n},{z.r}): {type(exc).__name__}: {exc}"
-        if fixed != free:
-            return (f"the claim's graph with symbolic sizes differs from its graph at ({z.n},{z.r}) (digest "
-                    f"{free[:12]} against {fixed[:12]}): it depends on whether its sizes are numbers, so a proof "
-                    "for every n, r would be about another computation than the fixed-size methods check")
-    return ""
 
 
 def probe_divisions(claim: Claim, func: Callable, every_size: bool = False) -> str:

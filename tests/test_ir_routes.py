@@ -178,11 +178,38 @@ def test_every_method_evaluates_one_graph():
         return {"x": s.X.T @ s.X - s.Ir}
     c = _claim(counted)
     assert run_one(c, Size(3, 2), "modular", 0).verdict in PASSING
-    traced = len(calls)             # twice with symbolic sizes (compared), once at (3, 2) (compared)
-    assert traced == 3
+    traced = len(calls)             # twice with symbolic sizes (compared), never at (3, 2)
+    assert traced == 2
     for m in ("exact", "rational", "float", "auto"):
         assert run_one(c, Size(3, 2), m, 0).verdict in PASSING
     assert len(calls) == traced     # then only evaluated, by every method
+
+
+def test_a_claim_with_a_graph_of_symbolic_sizes_is_never_traced_at_a_number():
+    """The trace of such a claim holds no number of a size: not in its state, not in the frames of its
+    thread; its graph at (7, 2) is its graph with symbolic sizes.  A claim refused with symbolic sizes (it
+    reads int(n)) is traced at (7, 2), with the number."""
+    from stiefelsym.ir.graph import Size as GSize
+    seen = []
+
+    def introspecting(s):
+        t = object.__getattribute__(s, "_t")
+        f, local = sys._getframe(), []
+        while f is not None:
+            local += [v for k, v in f.f_locals.items() if k in ("n", "r")]
+            f = f.f_back
+        seen.append((t._numbers(GSize(1, "n", None)), t._numbers(GSize(1, "r", None)), tuple(local)))
+        return {"x": s.X.T @ s.X - s.Ir}
+    g = compile_claim(introspecting, 7, 2, STANDARD)
+    assert g.digest() == compile_claim(introspecting, None, None, STANDARD).digest()
+    assert len(seen) == 2 and all(x[:2] == (None, None) and 7 not in x[2] and 2 not in x[2] for x in seen), seen
+
+    def reading(s):
+        seen.append(int(s.n))
+        return {"x": s.X.T @ s.X - s.Ir}
+    seen.clear()
+    compile_claim(reading, 7, 2, STANDARD)
+    assert 7 in seen
 
 
 # -- 5. a constant outside the float range ----------------------------------------------------------

@@ -33,52 +33,39 @@ GRAPH_CACHE_SIZE = 24
 def compile_claim(func: Callable, n: int | None, r: int | None, constraints: tuple[str, Callable]) -> Graph:
     """The graph of a claim's function: traced once with symbolic sizes when it can be (then that one
     graph is the claim at every size: every fixed-size method and the dimension-free method evaluate
-    the same graph), otherwise at (n, r).  Each graph is traced twice; a claim whose two graphs
-    differ is refused, and so is a claim whose trace met a refusal, even one it caught.  A claim
-    whose graph at (n, r) is not its graph with symbolic sizes is refused at (n, r) (and the
-    dimension-free method compares the two at every size the claim is stated for)."""
-    free = _compile(func, None, None, constraints)
-    if isinstance(free, Graph):
-        if n is not None:
-            fixed = _compile(func, n, r, constraints, twice=False)
-            if not isinstance(fixed, Graph) or fixed.digest() != free.digest():
-                raise NotDeterministic(f"the claim's graph at ({n},{r}) is not its graph with symbolic sizes: it "
-                                       "tells symbolic sizes from numbers, so no verdict rests on it")
-        return free
-    if n is None:
-        raise _fresh(free)
+    the same graph, and the claim's code never runs at a number), otherwise at (n, r).  Each graph is
+    traced twice; a claim whose two graphs differ is refused, and so is a claim whose trace met a
+    refusal, even one it caught."""
     g = _compile(func, n, r, constraints)
     if isinstance(g, Graph):
         return g
     raise _fresh(g)
 
 
-def compile_at_size(func: Callable, n: int, r: int, constraints: tuple[str, Callable], twice: bool = True) -> Graph:
-    """The graph traced at (n, r) itself (to compare with the graph of symbolic sizes); traced once
-    only (``twice=False``) where it is only compared with the graph of symbolic sizes, which was
-    traced twice."""
-    g = _compile(func, n, r, constraints, twice=twice)
-    if isinstance(g, Graph):
-        return g
-    raise _fresh(g)
+def _compile(func: Callable, n: int | None, r: int | None, constraints: tuple[str, Callable]) -> Any:
+    """The graph, or the exception that refused it (both cached per process), traced twice and compared.
 
-
-def _compile(func: Callable, n: int | None, r: int | None, constraints: tuple[str, Callable],
-             twice: bool = True) -> Any:
-    """The graph, or the exception that refused it (both cached per process); traced twice and
-    compared, or once where it is only compared with the graph of symbolic sizes (which was)."""
-    # by identity: a callable's own __eq__ is never asked; a graph traced once is kept apart from one
-    # traced twice (a trace compared with itself is no determinism check)
-    key = (id(func), n, r, constraints[0], twice)
-    for k in (key,) if twice else (key[:-1] + (True,), key):
-        hit = _GRAPHS.get(k)
-        if hit is not None and hit[0] is func:
-            _GRAPHS.move_to_end(k)
-            return hit[1]
+    At a fixed size the claim is first traced with symbolic sizes: when that succeeds, its graph is the
+    claim's graph at (n, r) too, and the claim is never traced at (n, r).  So no trace of a claim that
+    has a graph for every size holds a number of a size (not in a size, a tracer, the trace's state or
+    the frames of its thread): claim code that reads one by introspection reads nothing, and cannot
+    give a graph at an unlisted size other than the one a proof for every n, r is about.  Only a claim
+    refused with symbolic sizes (it read a size through the door of :class:`~.trace.Dim`, or asked for
+    coordinates) is traced at (n, r), and it has no proof for every n, r."""
+    if n is not None:
+        free = _compile(func, None, None, constraints)
+        if isinstance(free, Graph):
+            return free
+    # by identity: a callable's own __eq__ is never asked
+    key = (id(func), n, r, constraints[0])
+    hit = _GRAPHS.get(key)
+    if hit is not None and hit[0] is func:
+        _GRAPHS.move_to_end(key)
+        return hit[1]
     try:
         first = _clean(trace, func, n, r, constraints)
         _check_refusals(first)
-        second = _clean(trace, func, n, r, constraints) if twice else first
+        second = _clean(trace, func, n, r, constraints)
         _check_refusals(second)
         if first.digest() != second.digest():
             raise NotDeterministic("the claim is not deterministic: two tracings at the same size gave "
@@ -127,8 +114,9 @@ def _check_refusals(g: Graph) -> None:
 def graph_pair(printed: Callable, variant: Callable, n: int | None, r: int | None,
                constraints: tuple[str, Callable]) -> tuple[Graph, Graph] | None:
     """The graphs of a claim's function and of a variant of it (a mutant, a correction) traced the same
-    way: both with symbolic sizes when both trace so, otherwise both at (n, r); None when either does
-    not trace (a refused or ill-typed variant).  Traced once each (and shared with the runs' cache)."""
+    way: both with symbolic sizes when both trace so, otherwise both as graphs at (n, r) (a function that
+    traces with symbolic sizes has that graph there too); None when either does not trace (a refused or
+    ill-typed variant).  Shared with the runs' cache."""
     a, b = _printed(printed, None, None, constraints), _compile(variant, None, None, constraints)
     if isinstance(a, Graph) and isinstance(b, Graph):
         return a, b
