@@ -1525,7 +1525,7 @@ class SymbolicField(Field):
         return sympy.cancel(sympy.together(sympy.sympify(e))) == 0
 
     def pivot_cost(self, x):
-        e = se.expand(x)
+        e = se.expand(_se(x))
         if e == 0:
             return math.inf
         if e.is_Number:
@@ -1536,7 +1536,7 @@ class SymbolicField(Field):
 
     def _numeric_pivots(self, M) -> bool:
         """Whether Gaussian elimination finds a nonzero numeric pivot at every step."""
-        rows = [[se.expand(x) for x in row] for row in M]
+        rows = [[se.expand(_se(x)) for x in row] for row in M]
         m = len(rows)
         for col in range(m):
             piv = next((i for i in range(col, m) if rows[i][col].is_Number and rows[i][col] != 0), None)
@@ -1556,10 +1556,11 @@ class SymbolicField(Field):
         """Elimination when numeric pivots suffice (then no fractions appear); otherwise
         Y = adj(M) B / det(M) with determinants by fraction-free elimination."""
         m = len(M)
-        enc = self._encoded_type
-        if enc is not None:
-            M = [[x.to_se() if type(x) is enc else x for x in row] for row in M]
-            B = [[x.to_se() if type(x) is enc else x for x in row] for row in B]
+        # the backend's scalars as symengine expressions, every kind of them (an encoded polynomial, a
+        # rational function kept in flint): symengine would take either for an empty matrix (its
+        # conversion, symengine_opaque) and return 0x0 matrices as the solution's entries
+        M = [[_se(x) for x in row] for row in M]
+        B = [[_se(x) for x in row] for row in B]
         if all(se.expand(x).is_Number for row in M for x in row) or self._numeric_pivots(M):
             return Field.solve(self, M, B)
         if m > self.max_solve:

@@ -121,6 +121,28 @@ def test_pairings_of_a_scene_stay_in_flint_and_decide_exactly():
     assert SymbolicField().pairing(se.Integer(3)) == 3           # anything else is normalized as before
 
 
+def test_a_symbolic_solve_takes_flint_scalars_on_either_side():
+    """SymbolicField.solve with flint scalars (_RF: traces, pairings) in the matrix and the right-hand side
+    gives scalars, the solution of the system (before, symengine took an _RF for an empty matrix and every
+    entry of the solution was a 0x0 matrix: the exact metric Dirac flow at (3,1) with the reflection S)."""
+    from stiefelsym.polyfield import _RF
+    F, G = fields()
+    x = [F.param(f"x{i}") for i in range(4)]
+
+    def system(K):
+        A = Mat._rows([[x[0], x[1]], [x[2], 1 + x[3]]], K)
+        t, e = (A @ A).trace(), (A @ A)[0, 1]
+        return [[se.Integer(0), t], [-t, se.Integer(0)]], [[e], [t * e + 1]]
+    (M1, B1), (M2, B2) = system(F), system(G)
+    assert type(B1[0][0]) is _RF and type(M1[0][1]) is _RF
+    Y1 = F.solve(M1, B1)
+    for i in range(2):      # M Y = B, and the same Y as the system written in symengine
+        assert not isinstance(Y1[i][0], se.DenseMatrix), Y1
+        assert F.is_zero(sum((M1[i][k] * Y1[k][0] for k in range(2)), se.Integer(0)) - B1[i][0])
+        assert same(Y1[i][0], G.solve(M2, B2)[i][0])
+    assert not F.is_zero(Y1[0][0] - Y1[1][0])          # negative control: a nonzero difference
+
+
 def test_native_backend_hook():
     F, G = fields()
     assert isinstance(native.backend(F), PolyBackend)
