@@ -26,6 +26,7 @@ from fractions import Fraction
 from typing import Any
 
 import math
+import re
 import os
 
 import numpy as np
@@ -80,6 +81,18 @@ def _context(cap: int) -> tuple:
         ctx = flint.fmpq_mpoly_ctx.get(tuple(f"x{i}" for i in range(cap)), "degrevlex")
         hit = _CONTEXTS[cap] = (ctx, ctx.gens(), ctx.from_dict({}), ctx.constant(1))
     return hit
+
+
+def _name_key(name: str) -> tuple:
+    """A variable's name in natural order (A_1,2 before A_1,10; every part a (kind, value) pair, so that
+    texts and numbers compare)."""
+    return tuple((0, int(t)) if t.isdigit() else (1, t) for t in re.split(r"(\d+)", name) if t)
+
+
+def _term_key(term: tuple) -> tuple:
+    """Degree-lexicographic order of a monomial ((name, exponent), ...), highest first."""
+    mono = term[0]
+    return (-sum(e for _, e in mono), tuple((_name_key(nm), -e) for nm, e in mono))
 
 
 class PolyRing:
@@ -325,34 +338,64 @@ class PolyRing:
         return se.Add(*terms) if len(terms) > 1 else terms[0]
 
     def poly_text(self, p) -> str:
-        """p as text, its terms in flint's order (degree reverse lexicographic in the variables'
-        order of first use): the same in every process, unlike a symengine expression's text,
-        which orders the terms by hashes of the parameters (their symbols are unique per process)."""
-        if p.is_zero():
-            return "0"
-        syms = self.syms
+        """p as text in a canonical order (:meth:`_terms`): the same in every process and whatever the
+        order in which the ring met its variables (a symengine expression's text orders its terms by
+        hashes of the parameters, whose symbols are unique per process; flint's own order follows the
+        variables' order of first use, which depends on what the process computed before)."""
+        return self._terms_text(self._terms(p))
+
+    def _terms(self, p) -> list:
+        """The terms of p as (monomial, coefficient), a monomial a tuple of (name, exponent) in the
+        natural order of the variables' names; the terms in degree-lexicographic order of the
+        monomials, highest first (the order depends on the names only)."""
+        names = [str(x) for x in self.syms]
         out = []
         for exps, c in p.terms():
-            mono = "*".join(str(syms[i]) if e == 1 else f"{syms[i]}**{int(e)}" for i, e in enumerate(exps) if e)
+            mono = tuple(sorted(((names[i], int(e)) for i, e in enumerate(exps) if e),
+                                key=lambda t: _name_key(t[0])))
+            out.append((mono, c))
+        out.sort(key=_term_key)
+        return out
+
+    @staticmethod
+    def _terms_text(terms: list) -> str:
+        if not terms:
+            return "0"
+        out = []
+        for mono, c in terms:
+            text = "*".join(name if e == 1 else f"{name}**{e}" for name, e in mono)
             neg = c < 0
             c = -c if neg else c
-            if not mono:
+            if not text:
                 t = str(c)
             elif c == 1:
-                t = mono
+                t = text
             else:
-                t = f"{c}*{mono}"
+                t = f"{c}*{text}"
             out.append(("- " if neg else "+ ") + t if out else ("-" if neg else "") + t)
         return " ".join(out)
 
     def text(self, r) -> str:
-        """A rational function (numerator, denominator atoms) as text in a canonical order."""
+        """A rational function (numerator, denominator atoms) as text in a canonical order: the terms of
+        each polynomial as :meth:`poly_text` orders them, each factor of the denominator with a positive
+        leading coefficient in that order (its sign moved to the numerator), the factors sorted by text."""
         n, d = self.rf_reduce(r)
-        num = self.poly_text(n)
+        num = self._terms(n)
         if not d:
-            return num
-        den = "*".join(f"({self.poly_text(self.atoms[k])})" + (f"**{e}" if e > 1 else "") for k, e in d)
-        return f"({num})/({den})" if len(n) > 1 else f"{num}/({den})"
+            return self._terms_text(num)
+        flip = False
+        dens = []
+        for k, e in d:
+            terms = self._terms(self.atoms[k])
+            if terms and terms[0][1] < 0:
+                terms = [(m, -c) for m, c in terms]
+                flip ^= e % 2 == 1
+            dens.append((self._terms_text(terms), e))
+        if flip:
+            num = [(m, -c) for m, c in num]
+        den = "*".join(f"({t})" + (f"**{e}" if e > 1 else "") for t, e in sorted(dens))
+        text = self._terms_text(num)
+        return f"({text})/({den})" if len(num) > 1 else f"{text}/({den})"
 
     def atom_se(self, k: int):
         s = self._atom_se.get(k)

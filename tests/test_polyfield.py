@@ -143,6 +143,28 @@ def test_a_symbolic_solve_takes_flint_scalars_on_either_side():
     assert not F.is_zero(Y1[0][0] - Y1[1][0])          # negative control: a nonzero difference
 
 
+def test_the_text_of_a_rational_function_does_not_depend_on_the_order_of_the_ring_variables():
+    """The exact residual's text (PolyRing.text): terms in degree-lexicographic order of the variables'
+    names, each denominator factor with a positive leading coefficient, the factors sorted; the same text
+    whatever order the ring met its variables in (before: flint's order of first use, which depends on
+    what the process computed before, e.g. the mutants run before one in a mutation analysis)."""
+    texts = []
+    for names in (("b_1", "a_10", "a_2"), ("a_2", "a_10", "b_1"), ("a_10", "b_1", "a_2")):
+        F = SymbolicField()
+        R = F.poly_ring()
+        v = {name: F.param(name) for name in names}
+        a, b, c = v["b_1"], v["a_10"], v["a_2"]
+        x = (a ** 2 * b - 3 * c + b * c ** 2 - 1) / ((c - a) * (a + 1) ** 2)
+        y = -(a ** 2 * b - 3 * c + b * c ** 2 - 1) / ((a - c) * (a + 1) ** 2)       # the same function
+        z = (a ** 2 * b - 3 * c + b * c ** 2 + 1) / ((c - a) * (a + 1) ** 2)       # another one
+        texts.append((R.text(R.from_se(x)), R.text(R.from_se(y)), R.text(R.from_se(z)), R.poly_text(
+            R.from_se(se.expand(b * c ** 2 + a * b - c ** 3))[0])))
+    assert len(set(texts)) == 1, texts
+    tx, ty, tz, tp = texts[0]
+    assert tx == ty == "(a_2**2*a_10 + a_10*b_1**2 - 3*a_2 - 1)/((a_2 - b_1)*(b_1 + 1)**2)", tx
+    assert tz != tx and tp == "-a_2**3 + a_2**2*a_10 + a_10*b_1", tp      # negative control; natural order
+
+
 def test_native_backend_hook():
     F, G = fields()
     assert isinstance(native.backend(F), PolyBackend)
