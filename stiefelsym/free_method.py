@@ -144,7 +144,13 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
         return undecided(f"{len(open_entries)} residual entries have a nonzero normal form "
                          f"(e.g. {res.residual}); the fixed-size methods decide")
     # the proof is about the graph traced with symbolic sizes, which is the graph every fixed-size method
-    # evaluates: a claim that traces so is never traced at a number (see stiefelsym.ir._compile)
+    # evaluates (a claim that traces so is never traced at a number, see stiefelsym.ir._compile): it must
+    # type at every size the claim is stated for (a size written as an int is checked there only)
+    why = typed_at_stated_sizes(claim, func)
+    if why:
+        res.verdict, res.message = "error", why
+        res.seconds = time.perf_counter() - t0
+        return res
     # symbolic coefficients do not raise on a division by an identically zero expression: probe
     # the same claim code at an exact point of a fixed size first
     why = probe_divisions(claim, func, every_size=bool(scene._moving))
@@ -262,6 +268,21 @@ def needs_text(claim: Claim, func: Callable, refusal: str) -> str:
     what = "; ".join(needs) if needs else "its statement depends on the sizes (a loop or a condition over n, r)"
     return (f"needs coordinates (fixed n, r): {what} (the trace with symbolic sizes stopped at: "
             f"{refusal.removeprefix('refused: ')}); decided by the fixed-size methods")
+
+
+def typed_at_stated_sizes(claim: Claim, func: Callable) -> str:
+    """"" when the claim's graph with symbolic sizes types at every size it is stated for (replayed there by
+    the tracer, :func:`stiefelsym.ir._typed_at`: no code of the claim runs); otherwise why not."""
+    from .ir import compile_claim
+    from .scene import REALIZATIONS
+    cons = REALIZATIONS[claim.realization]
+    for z in claim.sizes:
+        try:
+            compile_claim(func, z.n, z.r, (cons.name, cons.build))
+        except Exception as exc:    # noqa: BLE001 - a graph that does not type at a stated size proves nothing
+            return (f"the claim's graph is not a graph at ({z.n},{z.r}), a size it is stated for: "
+                    f"{type(exc).__name__}: {exc}")
+    return ""
 
 
 def probe_divisions(claim: Claim, func: Callable, every_size: bool = False) -> str:

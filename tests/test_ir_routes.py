@@ -368,3 +368,26 @@ def test_a_hand_edited_verdict_with_the_right_digest_is_caught(tmp_path):
     (out / "results.json").write_text(json.dumps(payload))
     r = _run_cli(["check", str(out / "results.json")], tmp_path)
     assert r.exit_code == 1 and "a run again says 'fails'" in r.output
+
+
+def int_size_block(s):
+    """X − X + 0 with the zero block written 3 x 2: a graph at n = 3 only (with symbolic sizes the int 3
+    cannot be told from n)."""
+    return {"r": s.X - s.X + s.zeros(3, 2)}
+
+
+def test_a_graph_of_symbolic_sizes_is_typed_at_each_size_without_running_the_claim():
+    """The graph at (n, r) of a claim with a graph of symbolic sizes is that graph replayed at (n, r) by the
+    tracer: a block written 3 x 2 types at (3,2) and is refused at (4,2), where no method evaluates it, and
+    the dimension-free method proves nothing for a claim stated at (4,2) too."""
+    assert compile_claim(int_size_block, 3, 2, STANDARD) is compile_claim(int_size_block, None, None, STANDARD)
+    with pytest.raises(TraceRefused, match=r"does not type at \(4,2\)"):
+        compile_claim(int_size_block, 4, 2, STANDARD)
+    c = _claim(int_size_block, sizes=admissible(n_max=4, n_min=3, r_min=2, r_max=2))
+    assert run_one(c, Size(4, 2), "exact", 0).verdict == "error"
+    assert run_one(c, Size(3, 2), "exact", 0).verdict == "proved"
+    assert run_one(c, None, "free", 0).verdict not in PASSING      # (the free scene refuses a 3 x 2 block)
+    from stiefelsym.free_method import typed_at_stated_sizes    # and the proof's own check of the stated sizes
+    assert "not a graph at (4,2)" in typed_at_stated_sizes(c, int_size_block)
+    assert typed_at_stated_sizes(_claim(int_size_block, sizes=admissible(n_max=3, n_min=3, r_min=2, r_max=2)),
+                                 int_size_block) == ""

@@ -46,7 +46,8 @@ def _compile(func: Callable, n: int | None, r: int | None, constraints: tuple[st
     """The graph, or the exception that refused it (both cached per process), traced twice and compared.
 
     At a fixed size the claim is first traced with symbolic sizes: when that succeeds, its graph is the
-    claim's graph at (n, r) too, and the claim is never traced at (n, r).  So no trace of a claim that
+    claim's graph at (n, r) too (once it types there: :func:`_typed_at`), and the claim is never traced at
+    (n, r).  So no trace of a claim that
     has a graph for every size holds a number of a size (not in a size, a tracer, the trace's state or
     the frames of its thread): claim code that reads one by introspection reads nothing, and cannot
     give a graph at an unlisted size other than the one a proof for every n, r is about.  Only a claim
@@ -55,7 +56,7 @@ def _compile(func: Callable, n: int | None, r: int | None, constraints: tuple[st
     if n is not None:
         free = _compile(func, None, None, constraints)
         if isinstance(free, Graph):
-            return free
+            return _typed_at(func, free, n, r, constraints)
     # by identity: a callable's own __eq__ is never asked
     key = (id(func), n, r, constraints[0])
     hit = _GRAPHS.get(key)
@@ -72,6 +73,36 @@ def _compile(func: Callable, n: int | None, r: int | None, constraints: tuple[st
                                    "different graphs")
         out: Any = first
     except Exception as exc:      # noqa: BLE001 - the claim's own failure, reported by the caller
+        exc._first_traceback = exc.__traceback__      # type: ignore[attr-defined]
+        out = exc
+    _GRAPHS[key] = (func, out)
+    while len(_GRAPHS) > GRAPH_CACHE_SIZE:
+        _GRAPHS.popitem(last=False)
+    return out
+
+
+def _typed_at(func: Callable, free: Graph, n: int, r: int, constraints: tuple[str, Callable]) -> Any:
+    """The graph of symbolic sizes ``free`` as the claim's graph at (n, r), once it types there, or the
+    refusal.  A size the claim wrote as an int (s.zeros(3, 2)) cannot be told from n, r with symbolic
+    sizes; at (n, r) the graph is replayed by the tracer (:class:`.replay.GraphClaim`: engine code, no code
+    of the claim runs, no trace of the claim holds a number), which checks every shape with the numbers."""
+    from .replay import GraphClaim
+    key = (id(func), n, r, constraints[0], "typed")
+    hit = _GRAPHS.get(key)
+    if hit is not None and hit[0] is func:
+        _GRAPHS.move_to_end(key)
+        return hit[1]
+    try:
+        try:
+            g = _clean(trace, GraphClaim(free, name=getattr(func, "__name__", "claim")), n, r, constraints)
+            _check_refusals(g)
+        except TraceRefused as exc:
+            raise TraceRefused(f"the claim's graph with symbolic sizes does not type at ({n},{r}): "
+                               f"{str(exc).removeprefix('refused: ')}") from None
+        if g.digest() != free.digest():
+            raise NotDeterministic(f"the claim's graph with symbolic sizes replays to another graph at ({n},{r})")
+        out: Any = free
+    except Exception as exc:      # noqa: BLE001 - reported by the caller
         exc._first_traceback = exc.__traceback__      # type: ignore[attr-defined]
         out = exc
     _GRAPHS[key] = (func, out)
