@@ -34,7 +34,16 @@ VERDICT_MEANING = {
                "computation reduced every residual to zero on the constraint set.  "
                "At size “all n, r”: a dimension-free computation with the letters "
                "X, Xᵀ, P, Pᵀ, A, … of a free noncommutative algebra proves it for "
-               "every n and r at once."),
+               "every n and r at once.  A statement the paper makes only at one r is "
+               "proved for every n at that r, with the relation that holds there alone "
+               "(at r = n, XXᵀ = Iₙ; at r = k = 1 or 2, E₁E₁ᵀ + … + EₖEₖᵀ = Iᵣ for the "
+               "standard basis E₁, …, Eₖ of ℝʳ), and the verdict says so (“every n at r = n”); "
+               "one made at r = 1 and at r = n is proved for every n at each, with one "
+               "certificate per case.  In the metric realization (the constraint "
+               "XᵀA⁻¹P + PᵀA⁻¹X = 0 of the metric given by A) a proof assumes A symmetric "
+               "positive definite: the flow's Lagrange multipliers then solve Sylvester "
+               "equations with a unique solution, which gives Π = 0 and Λ as a symmetric "
+               "letter bound by its Sylvester equation."),
     "checked": ("Randomized exact check: every residual vanished exactly (no rounding) "
                 "at independent random points over ℚ or a prime field.  A false "
                 "statement passes with probability at most the stated bound p "
@@ -69,6 +78,23 @@ KIND_MEANING = {
     "geo": "a geometric statement, checked through its algebraic form",
 }
 
+#: what each method does, for a mathematician reading "passes at … by modular"
+METHOD_MEANING = {
+    "exact": ("exact symbolic computation at a size (n, r): the residuals reduced to zero on the "
+              "constraint set, or a rank or count computed exactly over the field of the chart's "
+              "parameters; proves or refutes."),
+    "rational": "random exact points over ℚ; passes with the bound p below.",
+    "modular": "random exact points over prime fields (primes near 2⁶⁰); passes with the bound p below.",
+    "auto": "the fastest proof-grade method for the claim at that size.",
+    "float": "floating point at random real points, with a running error bound and precision escalation.",
+    "ball": ("rigorous interval (ball) arithmetic at the float method's points: a certified nonzero "
+             "residual refutes, otherwise it is evidence."),
+    "free": ("the dimension-free method: the letters of a free noncommutative algebra reduced by the "
+             "constraints of T*V (a terminating, confluent rewriting system); a proof is a cofactor "
+             "certificate that an independent checker re-expands.  It does not apply to statements that "
+             "read coordinates (an entry, a rank, a count)."),
+}
+
 BOUND_EXPLANATION = (
     "Schwartz–Zippel lemma: a nonzero polynomial of total degree d, evaluated at a "
     "point whose coordinates are drawn independently and uniformly from a finite set "
@@ -95,6 +121,20 @@ ERRATA_INTRO = (
     "count the exactly computed value against the printed one.  Then the candidate "
     "corrections that were checked.")
 NO_POINT = "no witness point: the computed value below contradicts the printed one"
+#: the witness of a statement that something does NOT hold, found to hold identically
+NOT_ZERO_WITNESS = ("no witness point: the statement says this is not identically zero, and exact "
+                    "computation finds it identically zero")
+
+
+def no_point_text(w: Result) -> str:
+    """What stands in a failing run's witness list where it has no point: the computed value against
+    the printed one (a rank or count, listed below), or, for a statement that something does not hold,
+    the exact proof that it does."""
+    if any(ch.status in DIMENSION_STATUSES for ch in w.checks):
+        return NO_POINT
+    if w.kind == "not":
+        return NOT_ZERO_WITNESS + (f": {w.certificate}" if w.certificate else "")
+    return "no witness point recorded"
 
 #: the paper's operator names, expanded for Markdown viewers that do not know them
 OPERATORS = {"tr": "tr", "diag": "diag", "ad": "ad", "Ad": "Ad", "rank": "rank",
@@ -338,6 +378,10 @@ def free_scope(r: Result) -> str:
 
 
 
+def _method_name(m: str) -> str:
+    return "the dimension-free method" if m == "free" else m
+
+
 def correction_summary(rs: list[Result], planned: Sequence[tuple[int, int]]) -> tuple[str, list[str]]:
     """The status of a candidate correction, aggregated over sizes, and one phrase per method.
 
@@ -358,12 +402,12 @@ def correction_summary(rs: list[Result], planned: Sequence[tuple[int, int]]) -> 
             if r.n is None:
                 if r.verdict == "proved":
                     free_proved = True
-                    phrases.append(f"proved for {free_scope(r)} by {m}")
+                    phrases.append(f"proved for {free_scope(r)} by {_method_name(m)}")
                 elif r.verdict == "fails":
                     failed_at.add(None)
-                    phrases.append(f"fails by {m}")
+                    phrases.append(f"fails by {_method_name(m)}")
                 else:
-                    phrases.append(f"{r.verdict} by {m} (all n, r)")
+                    phrases.append(f"{r.verdict} by {_method_name(m)} (all n, r)")
             elif r.verdict not in PASSING and r.verdict != "fails":
                 other.setdefault(r.verdict, set()).add((r.n, r.r))
         passed_at.update(ok)
@@ -626,6 +670,8 @@ def render_markdown(results: Sequence[Result], meta: dict[str, Any] | None = Non
     out += [_md_escape(f) for f in _run_facts(meta)] + [""]
     out += ["## What the verdicts mean", ""]
     out += [f"- **{v}**: {_md_escape(VERDICT_MEANING[v])}" for v in VERDICTS]
+    out += ["", "**The methods** (“passes at (4,2) by modular”):", ""]
+    out += [f"- **{m}**: {_md_escape(t)}" for m, t in METHOD_MEANING.items()]
     out += ["", f"**The bound p.** {_md_escape(BOUND_EXPLANATION)}", "",
             f"**Expected verdicts.** {_md_escape(EXPECTED_EXPLANATION)}", ""]
     if mutation:
@@ -749,7 +795,7 @@ def _md_erratum(c: ClaimResults) -> list[str]:
         return _md_erratum_tail(c, facts, w, out)
     out += [_md_escape(_witness_heading(w)), ""]
     out += [f"- {_md_escape(k)}: {_md_code(v)}" for k, v in witness_lines(w.witness)] \
-        or [f"- ({NO_POINT})"]
+        or [f"- ({_md_escape(no_point_text(w))})"]
     if w.residual:
         out.append(f"- residual: {_md_code(short(w.residual, WITNESS_WIDTH))}")
     out += [f"- check {_md_escape(ch.name)}: {ch.status}" + (f", {_md_escape(ch.detail)}"
@@ -993,11 +1039,13 @@ def headline(claims: list[ClaimResults]) -> tuple[str, list[ClaimResults]]:
     free = [c for c in claims if any(r.n is None and r.verdict == "proved" for r in c.printed)]
     corrected_free = [c for c in claims
                       if any(r.n is None and r.verdict == "proved" for vs in c.variants.values() for r in vs)]
-    one_r = [c for c in free if any(r.n is None and r.verdict == "proved" and free_scope(r) != "all n, r"
-                                    for r in c.printed)]
+    scopes = Counter(next(free_scope(r) for r in c.printed if r.n is None and r.verdict == "proved") for c in free)
+    # the claims stated at one r (or at r = 1 and at r = n) by that scope, the unions last
+    one_r = sorted(((k, v) for k, v in scopes.items() if k != "all n, r"), key=lambda kv: (" and " in kv[0], kv[0]))
     at_once = (f"{len(free)} of them proved for every n and r at once" if not one_r else
-               f"{len(free)} of them proved for every size at once: {len(free) - len(one_r)} for every n and r, "
-               f"{len(one_r)} stated at one r (or at a union of them, as r = 1 and r = n) for every n at each")
+               f"{len(free)} of them proved for every size at once: {scopes['all n, r']} for every n and r, "
+               "and, stated at particular r, for every n: "
+               + ", ".join(f"{v} {k.removeprefix('every n ')}" for k, v in one_r))
     text = (f"Of the paper's {len(claims)} checkable statements, {len(claims) - len(errata)} hold as printed at "
             f"every size computed ({at_once}), and {len(errata)} "
             f"fail as printed: each is an erratum with an exact witness, and where a correction is registered "
@@ -1058,6 +1106,9 @@ def render_latex(results: Sequence[Result], meta: dict[str, Any] | None = None, 
     out += _toc_section("What the verdicts mean") + [r"\begin{description}"]
     out += [f"\\item[{v}] {tex_escape(VERDICT_MEANING[v])}" for v in VERDICTS]
     out += [r"\end{description}",
+            r"\paragraph{The methods} " + tex_escape("(“passes at (4,2) by modular”).") + r"\begin{description}"]
+    out += [f"\\item[{m}] {tex_escape(t)}" for m, t in METHOD_MEANING.items()]
+    out += [r"\end{description}",
             r"\paragraph{The bound $p$.} " + tex_escape(BOUND_EXPLANATION),
             r"\paragraph{Expected verdicts.} " + tex_escape(EXPECTED_EXPLANATION), ""]
     if mutation:
@@ -1104,7 +1155,7 @@ def _tex_section_table(claims: list[ClaimResults], meta: dict[str, Any]) -> list
     """The referee's summary: one row per section of the paper."""
     out = _toc_section("Summary")
     out += [tex_escape("Per section of the paper: its claims; those proved for every n and r at once "
-                       "(dimension-free, as printed; for a statement made at one r, every n at that r); those that hold as printed at every size computed "
+                       "(dimension-free, as printed; for a statement made at one r, every n at that r, and for one made at r = 1 and at r = n, every n at each); those that hold as printed at every size computed "
                        "(proved, or checked at random exact points); those that fail as printed (the errata); "
                        "and verdicts the catalog does not expect.  Each claim follows, by section."), "",
             r"\begin{center}\small", r"\begin{tabular}{@{}P{6.2cm}rrrrr@{}}", r"\toprule",
@@ -1254,7 +1305,7 @@ def _tex_erratum(c: ClaimResults, reruns: int = MAX_ERRATUM_RERUNS) -> list[str]
     w = c.failures[0]
     out += [tex_escape("Failing runs: " + ", ".join(f"{r.size} {r.method}" for r in c.failures) + "."), ""]
     if w.erratum:
-        out += [tex_escape("What is wrong: " + w.erratum), ""]
+        out += ["What is wrong: " + tex_words(w.erratum), ""]
     out += _tex_small_witness(c)
     if small_witness_of(c) is not None and "point" in (w.witness or {}):
         out += [tex_escape(f"The seeded run that found the failure: size {w.size}, method {w.method}"
@@ -1264,7 +1315,7 @@ def _tex_erratum(c: ClaimResults, reruns: int = MAX_ERRATUM_RERUNS) -> list[str]
     out += [tex_escape(_witness_heading(w))]
     items = [tex_escape(k) + ": " + _tt(v) for k, v in witness_lines(w.witness)]
     if not items:
-        items = [f"({NO_POINT})"]
+        items = [tex_escape(f"({no_point_text(w)})")]
     if w.residual:
         items.append("residual: " + _tt(short(w.residual, WITNESS_WIDTH)))
     items += [tex_escape(f"check {ch.name}: {ch.status}" + (f", {ch.detail}" if ch.detail else ""))

@@ -437,3 +437,48 @@ def test_kill_rate_is_never_rounded_up_to_100_percent():
     assert kill_rate({"total": 5, "killed": 0, "equivalent": 5}) == "–"
     assert kill_rate({"total": 5, "killed": 5, "equivalent": 0, "baseline_passes": False}) == "–"
 
+
+
+# --------------------------------------------------------------------------- words a referee reads
+
+def test_the_dimension_free_method_is_named_not_by_its_identifier():
+    """A correction's verdict for every n, r reads "by the dimension-free method", never "by free"."""
+    rs = [_corr(3, 1, "exact", "proved"), result("claim", None, None, "free", "undecided", variant="fix",
+                                                 expected=False)]
+    _, phrases = correction_summary(rs, [(3, 1)])
+    assert "undecided by the dimension-free method (all n, r)" in phrases
+    assert not any(p.endswith("by free") or "by free " in p for p in phrases)
+
+
+def test_every_method_named_in_a_verdict_is_explained():
+    from stiefelsym.report import METHOD_MEANING
+    rs = [result("prep", 4, 2, "modular", "checked"), result("prep", 3, 1, "exact", "proved")]
+    md, tex = render_markdown(rs), render_latex(rs)
+    for m in ("exact", "modular", "rational", "float", "ball", "free"):
+        assert m in METHOD_MEANING
+        assert f"- **{m}**: " in md and f"\\item[{m}] " in tex
+    assert "primes near 2⁶⁰" in md
+
+
+def test_a_statement_that_something_does_not_hold_found_identically_zero_says_so():
+    """The witness of a "not" claim that fails is the exact proof that it vanishes identically: the report
+    says so, instead of pointing at a computed value below that is not there."""
+    rs = [result("not-claim", 2, 1, "exact", "fails", kind="not", expected=True,
+                 certificate="the residual vanishes identically on the chart", erratum="It holds for r >= 2.")]
+    md, tex = render_markdown(rs), render_latex(rs)
+    for doc in (md, tex):
+        assert "computed value below" not in doc
+        assert "not identically zero, and exact computation finds it identically zero: the residual vanishes" in doc
+    assert r"What is wrong: It holds for r \ensuremath{\ge} 2." in tex
+
+
+def test_the_headline_counts_the_claims_proved_at_particular_r_by_their_r():
+    """The headline's count of dimension-free proofs splits by scope, and the parts add up."""
+    from stiefelsym.report import headline
+    cert = "cofactor certificate of 1 residual entry (for every n at r = n, the only r the claim is stated for: it uses X X^T = I_n)"
+    union = "cofactor certificates of cases (for every n at r = 1 and at r = n, the sizes the claim is stated for: 2 cases)"
+    rs = [result("a", None, None, "free", "proved"), result("b", None, None, "free", "proved", certificate=cert),
+          result("c", None, None, "free", "proved", certificate=union), result("d", 3, 1, "exact", "proved")]
+    text, _ = headline(group_by_claim(rs))
+    assert ("3 of them proved for every size at once: 1 for every n and r, and, stated at particular r, "
+            "for every n: 1 at r = n, 1 at r = 1 and at r = n)") in text
