@@ -1174,13 +1174,15 @@ def _tex_claim_brief(c: ClaimResults) -> list[str]:
     """A claim in a few lines: its statement, the verdict for all n, r, and its sizes by method."""
     out = [_tex_claim_heading(c)]
     if c.title:
-        out += [tex_text(c.title), ""]
+        out += [tex_words(c.title), ""]
     if c.statement.strip():
         out.append(tex_display(c.statement))
     free = next((r for r in c.printed if r.n is None), None)
     lines = []
     if free is not None:
-        lines.append(f"{free_scope(free)} (dimension-free): proved" if free.verdict == "proved" else
+        assumes = free_assumptions(free)
+        lines.append(f"{free_scope(free)} (dimension-free): proved"
+                     + (f", assuming {'; '.join(assumes)}" if assumes else "") if free.verdict == "proved" else
                      f"all n, r (dimension-free): {free.verdict} ({_brief_reason(free.message)})")
     _, phrases = correction_summary([r for r in c.printed if r.n is not None], planned_sizes(c))
     lines += phrases
@@ -1206,7 +1208,7 @@ def _tex_claim_heading(c: ClaimResults) -> str:
 def _tex_claim(c: ClaimResults) -> list[str]:
     out = [_tex_claim_heading(c)]
     if c.title:
-        out += [tex_text(c.title), ""]
+        out += [tex_words(c.title), ""]
     if c.statement.strip():
         out.append(tex_display(c.statement))
     out += [tex_escape(f"Kind: {c.kind}, {KIND_MEANING.get(c.kind, '')}."), ""]
@@ -1235,6 +1237,26 @@ def _tex_claim(c: ClaimResults) -> list[str]:
     return out
 
 
+def free_assumptions(r: Result) -> list[str]:
+    """What a dimension-free proof assumes beyond the constraints (the metric realization: A positive
+    definite, and the flow's multipliers the unique solutions of their Sylvester equations), in words:
+    the engine's names of the multipliers (``Lambda:1``) and of their relations (``rho:Lambda:1``) as Λ."""
+    data = r.certificate_data
+    if r.verdict != "proved" or not isinstance(data, dict) or not isinstance(data.get("summary"), dict):
+        return []
+    assumes = [str(a) for a in data["summary"].get("assumes") or ()]
+    letters = sorted(set(re.findall(r"(?<!rho:)Lambda:(\d+)", " ".join(assumes))), key=int)
+    name = {k: "Λ" if len(letters) == 1 else "Λ" + k.translate(str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉"))
+            for k in letters}
+    out = []
+    for a in assumes:
+        a = re.sub(r"rho:Lambda:(\d+) = 0", "its Sylvester equation", a)
+        a = re.sub(r"Lambda:(\d+)", lambda m: name.get(m.group(1), "Λ"), a)
+        a = a.replace("A^-1", "A⁻¹").replace("I_r", "Iᵣ").replace("I_n", "Iₙ").replace("(keeps: ", "(to keep ")
+        out.append(unicode_name(a))
+    return out
+
+
 def certificate_summary(r: Result) -> str:
     """One line on a dimension-free proof's cofactor certificate (its terms are in results.json)."""
     data = r.certificate_data
@@ -1247,14 +1269,18 @@ def certificate_summary(r: Result) -> str:
     if data.get("cases"):   # a claim stated at a union of one-r families: one certificate per family
         entries += " in " + " and ".join(f"the case r = {c['sizes']['r']} (every n >= {c['sizes']['n_min']})"
                                          for c in data["cases"])
-    checked = "re-checked by the independent checker (stiefelsym.certificate_check)"
+    checked = "re-checked by an independent checker (a small separate program that re-expands it)"
+    assumes = free_assumptions(r)
+    if assumes:
+        checked += f"; it assumes (the {sm.get('realization', 'metric')} realization): {'; '.join(assumes)}"
     if not sm["terms"]:
         verb = "vanishes" if sm["entries"] == 1 else "vanish"
         return (f"Cofactor certificate ({r.method}): empty, the {entries} already {verb} in the free algebra "
                 f"as built; {checked}")
     sizes = ", ".join(map(str, per[:12])) + (", ..." if len(per) > 12 else "")
     return (f"Cofactor certificate ({r.method}): {sm['terms']} terms over {entries} (per entry: {sizes}), "
-            f"in the hypotheses {', '.join(sm['hypotheses'])}; {checked}; the terms are in results.json")
+            f"in {len(sm['hypotheses'])} relation{'' if len(sm['hypotheses']) == 1 else 's'} of the ideal "
+            f"({', '.join(sm['hypotheses'])}, as results.json names them); {checked}; the terms are in results.json")
 
 
 def _tex_derivations(c: ClaimResults) -> list[str]:

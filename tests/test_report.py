@@ -482,3 +482,24 @@ def test_the_headline_counts_the_claims_proved_at_particular_r_by_their_r():
     text, _ = headline(group_by_claim(rs))
     assert ("3 of them proved for every size at once: 1 for every n and r, and, stated at particular r, "
             "for every n: 1 at r = n, 1 at r = 1 and at r = n)") in text
+
+
+def test_a_proof_in_the_metric_realization_states_what_it_assumes_in_words():
+    """The referee's verdict line and the certificate line of a proof in the metric realization say that A is
+    positive definite, Π = 0 and Λ by Sylvester uniqueness, with Λ for the engine's name Lambda:1; a proof
+    with no assumption says none."""
+    from stiefelsym.report import certificate_summary
+    data = {"summary": {"entries": 1, "terms": 2, "hypotheses": ["XtX", "rho:Lambda:1"], "realization": "metric",
+                        "assumes": ["A symmetric positive definite",
+                                    "Lambda:1 is the solution of rho:Lambda:1 = 0, unique and symmetric "
+                                    "(M = X^T A^-1 X positive definite)",
+                                    "Pi = 0 by uniqueness: Pi M + M Pi = 0 (keeps: X^T X = I_r)"]},
+            "entries": [{"terms": [1, 2]}]}
+    proof = result("metric", None, None, "free", "proved", certificate_data=data)
+    line = certificate_summary(proof)
+    assert "it assumes (the metric realization): A symmetric positive definite; Λ is the solution of its " \
+           "Sylvester equation" in line and "Π = 0 by uniqueness" in line and "Lambda:1" not in line.split("(XtX")[0]
+    tex = render_latex([proof, result("metric", 3, 1, "exact", "proved")])
+    assert r"proved, assuming A symmetric positive definite; \ensuremath{\Lambda} is the solution" in tex
+    plain = dict(data, summary=dict(data["summary"], assumes=[]))
+    assert "assum" not in certificate_summary(result("metric", None, None, "free", "proved", certificate_data=plain))
