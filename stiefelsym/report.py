@@ -333,6 +333,18 @@ def _run_facts(meta: dict[str, Any]) -> list[str]:
     return facts
 
 
+#: a check's status in a failing run's witness list, in words
+CHECK_STATUS_WORDS = {"rank": "rank as printed", "rank-mismatch": "rank not as printed",
+                      "count": "count as printed", "count-mismatch": "count not as printed",
+                      "nonzero": "residual nonzero"}
+
+
+def check_line(ch: Any) -> str:
+    """One check of a failing run: its name as mathematics, its status in words, its detail."""
+    return (f"check {unicode_name(ch.name)}: {CHECK_STATUS_WORDS.get(ch.status, ch.status)}"
+            + (f", {ch.detail}" if ch.detail else ""))
+
+
 def _witness_heading(w: Result) -> str:
     seed = f", seed {w.seed}" if w.seed is not None else ""
     return f"Witness at size {w.size}, method {w.method}{seed}:"
@@ -798,9 +810,7 @@ def _md_erratum(c: ClaimResults) -> list[str]:
         or [f"- ({_md_escape(no_point_text(w))})"]
     if w.residual:
         out.append(f"- residual: {_md_code(short(w.residual, WITNESS_WIDTH))}")
-    out += [f"- check {_md_escape(ch.name)}: {ch.status}" + (f", {_md_escape(ch.detail)}"
-                                                             if ch.detail else "")
-            for ch in w.checks if ch.status != "zero"][:10]
+    out += [f"- {_md_escape(check_line(ch))}" for ch in w.checks if ch.status != "zero"][:10]
     if w.message:
         out.append(f"- {_md_escape(w.message)}")
     if w.rerun:
@@ -1344,8 +1354,7 @@ def _tex_erratum(c: ClaimResults, reruns: int = MAX_ERRATUM_RERUNS) -> list[str]
         items = [tex_escape(f"({no_point_text(w)})")]
     if w.residual:
         items.append("residual: " + _tt(short(w.residual, WITNESS_WIDTH)))
-    items += [tex_escape(f"check {ch.name}: {ch.status}" + (f", {ch.detail}" if ch.detail else ""))
-              for ch in w.checks if ch.status != "zero"][:10]
+    items += [tex_escape(check_line(ch)) for ch in w.checks if ch.status != "zero"][:10]
     if w.message:
         items.append(tex_escape(w.message))
     if w.rerun:

@@ -137,7 +137,7 @@ def test_errata_lists_failing_claim_with_witness_and_corrections(results):
     assert "Witness at size (3,1), method rational, seed 0:" in errata
     assert "- entry: `(1, 2)`" in errata and "- value: `3/7`" in errata
     assert "- point: `a_1 = 1/2; S_12 = -3; W#1 = x_1`" in errata
-    assert "- check dL/dt: nonzero, entry (1, 2) = 3/7" in errata
+    assert "- check dL/dt: residual nonzero, entry (1, 2) = 3/7" in errata
     assert "- rerun: `stiefelsym verify neumann-lax --size 3,1 --method rational --seed 0`" in errata
     assert "the claim as printed was run at 2 sizes (3,1), (4,2)" in errata.lower()
     assert r"| sign of $\lambda A$ flipped | **verified** | verified at all 2 computed sizes by rational " \
@@ -503,3 +503,10 @@ def test_a_proof_in_the_metric_realization_states_what_it_assumes_in_words():
     assert r"proved, assuming A symmetric positive definite; \ensuremath{\Lambda} is the solution" in tex
     plain = dict(data, summary=dict(data["summary"], assumes=[]))
     assert "assum" not in certificate_summary(result("metric", None, None, "free", "proved", certificate_data=plain))
+
+
+def test_a_failing_checks_status_is_in_words():
+    from stiefelsym.report import check_line
+    assert check_line(CheckOutcome("regular iff n <= 2r+1", "count-mismatch", "1 (paper: 0)")) \
+        == "check regular iff n <= 2r+1: count not as printed, 1 (paper: 0)"
+    assert check_line(CheckOutcome("rank ad_Phi", "rank", "= 4")) == "check rank ad_Φ: rank as printed, = 4"
