@@ -892,7 +892,7 @@ def _tex_small_witness(c: ClaimResults) -> list[str]:
     # three letters a line, the whole shrunk to the line's width when wider
     out += [r"\begin{center}\resizebox{\ifdim\width>\linewidth\linewidth\else\width\fi}{!}{$\displaystyle"
             r"\begin{gathered}" + r"\\[2pt]".join(rows) + r"\end{gathered}$}\end{center}"]
-    out += [tex_text(f"There the residual {_entry_words(w['entry'])} is ") + f"${value} \\neq 0$."
+    out += [tex_words(f"There the residual {_entry_words(w['entry'])} is ") + f"${value} \\neq 0$."
             + ((tex_escape(" A self-contained script (Python with sympy, no stiefelsym) rebuilds this point and "
                            "evaluates the printed formula and the correction: ")
                 + _tt(f"{WITNESS_SCRIPT_DIR}/{c.id}.py") + ".") if _has_script(c) else ""), ""]
@@ -1354,7 +1354,7 @@ def _tex_erratum(c: ClaimResults, reruns: int = MAX_ERRATUM_RERUNS) -> list[str]
         items = [tex_escape(f"({no_point_text(w)})")]
     if w.residual:
         items.append("residual: " + _tt(short(w.residual, WITNESS_WIDTH)))
-    items += [tex_escape(check_line(ch)) for ch in w.checks if ch.status != "zero"][:10]
+    items += [tex_words(check_line(ch)) for ch in w.checks if ch.status != "zero"][:10]
     if w.message:
         items.append(tex_escape(w.message))
     if w.rerun:
@@ -1384,7 +1384,7 @@ def _tex_corrections(c: ClaimResults) -> list[str]:
     for var, rs in c.variants.items():
         status, phrases = correction_summary(rs, planned)
         items.append(_tex_with_change(c, var) + " --- " + (r"\textbf{verified}" if status == "verified" else status)
-                     + ". " + tex_escape("; ".join(phrases) + "."))
+                     + tex_escape(" (" + "; ".join(phrases) + ")."))
     intro = "Candidate corrections:"
     if planned:
         intro += tex_escape(f" the claim as printed was run at {len(planned)} size{'s' * (len(planned) != 1)} "
