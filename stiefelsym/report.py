@@ -419,7 +419,7 @@ def correction_summary(rs: list[Result], planned: Sequence[tuple[int, int]]) -> 
                     failed_at.add(None)
                     phrases.append(f"fails by {_method_name(m)}")
                 else:
-                    phrases.append(f"{r.verdict} by {_method_name(m)} (all n, r)")
+                    phrases.append(f"{r.verdict} for all n, r by {_method_name(m)}")
             elif r.verdict not in PASSING and r.verdict != "fails":
                 other.setdefault(r.verdict, set()).add((r.n, r.r))
         passed_at.update(ok)
@@ -952,9 +952,7 @@ def _md_corrections(c: ClaimResults) -> list[str]:
         change = _md_change(c.change_of(var)).replace("|", r"\|")
         rows.append([change or "–", _md_cell(var), f"**{status}**" if status == "verified" else status,
                      _md_cell("; ".join(phrases))])
-    where = (f" The claim as printed was run at {len(planned)} size{'s' * (len(planned) != 1)} "
-             f"{format_sizes(planned)}; a correction is verified only if it passes at every one of them "
-             "and fails nowhere.") if planned else ""
+    where = f" {_corrections_rule(planned)[0].upper()}{_corrections_rule(planned)[1:]}" if planned else ""
     return [f"Candidate corrections:{where}", ""] + _md_table(["correction (in the graph)", "registered as", "status",
                                                                "runs"], rows, "llll")
 
@@ -1376,6 +1374,15 @@ def _tex_erratum_tail(c: ClaimResults, facts: dict[str, Any], w: Result, out: li
     return out + _tex_corrections(c)
 
 
+def _corrections_rule(planned: Sequence[tuple[int, int]]) -> str:
+    """Where the claim as printed was run, and so where a correction must pass."""
+    if len(planned) == 1:
+        return (f"the claim as printed was run at the one size {format_sizes(planned)}; a correction is "
+                "verified only if it passes there.")
+    return (f"the claim as printed was run at {len(planned)} sizes {format_sizes(planned)}; a correction is "
+            "verified only if it passes at every one of them and fails nowhere.")
+
+
 def _tex_corrections(c: ClaimResults) -> list[str]:
     if not c.variants:
         return ["No candidate correction was checked.", ""]
@@ -1387,9 +1394,7 @@ def _tex_corrections(c: ClaimResults) -> list[str]:
                      + tex_escape(" (" + "; ".join(phrases) + ")."))
     intro = "Candidate corrections:"
     if planned:
-        intro += tex_escape(f" the claim as printed was run at {len(planned)} size{'s' * (len(planned) != 1)} "
-                            f"{format_sizes(planned)}; a correction is verified only if it passes at every "
-                            "one of them and fails nowhere.")
+        intro += tex_escape(" " + _corrections_rule(planned))
     return [intro] + _tex_items(items)
 
 

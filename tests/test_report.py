@@ -446,7 +446,7 @@ def test_the_dimension_free_method_is_named_not_by_its_identifier():
     rs = [_corr(3, 1, "exact", "proved"), result("claim", None, None, "free", "undecided", variant="fix",
                                                  expected=False)]
     _, phrases = correction_summary(rs, [(3, 1)])
-    assert "undecided by the dimension-free method (all n, r)" in phrases
+    assert "undecided for all n, r by the dimension-free method" in phrases
     assert not any(p.endswith("by free") or "by free " in p for p in phrases)
 
 
