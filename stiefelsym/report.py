@@ -20,7 +20,7 @@ from collections import Counter
 from typing import Any, Callable, Iterable, Sequence
 
 from . import paperref, sizerules
-from .latex import unicode_name, math_ok, split_math, tex_balanced, tex_display, tex_escape, tex_text, tex_words
+from .latex import unicode_name, math_ok, split_math, tex_balanced, tex_display, tex_escape, tex_words
 from .ir import notation
 from .ir.notation import changes_text as change_text
 from .results import PASSING, VERDICTS, Result
