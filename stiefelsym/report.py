@@ -320,7 +320,7 @@ def _run_facts(meta: dict[str, Any]) -> list[str]:
     facts = []
     if meta.get("seed") is not None:
         facts.append(f"Seed {meta['seed']}: every random choice (points, primes) is drawn from "
-                     "it, so the command reproduces every verdict, witness and bound below.")
+                     "it, so the command reproduces every verdict, witness and bound of this report.")
     run = [f"on {meta['date']}" if meta.get("date") else "",
            f"in {format_seconds(meta['seconds'])}" if meta.get("seconds") is not None else "",
            f"at commit {meta['commit']}" if meta.get("commit") else "",
@@ -1196,7 +1196,7 @@ def _tex_claim_brief(c: ClaimResults) -> list[str]:
     lines += phrases
     if c.failures:
         lines.append("fails as printed: see the Errata")
-    out += [r"\noindent\textit{Verdict:} " + tex_escape("; ".join(lines) + "."), ""]
+    out += [r"\noindent\textit{Verdict:} " + tex_words("; ".join(lines) + "."), ""]
     return out
 
 
@@ -1206,6 +1206,11 @@ def _brief_reason(message: str | None) -> str:
     text = (message or "").split(" (e.g.")[0].split("; ")[0]
     head, sep, rest = text.partition(": ")
     text = head + sep + rest.split(" (")[0] if sep else text
+    # in words a mathematician reads: what the statement needs, what the rewriting left
+    text = text.replace("needs coordinates (fixed n, r): ", "needs fixed n, r: ")
+    text = re.sub(r"^(\d+) residual entr(?:y has|ies have) a nonzero normal form$",
+                  lambda m: f"{m.group(1)} residual entr{'y does' if m.group(1) == '1' else 'ies do'} not reduce to 0 "
+                            "by the rewriting rules", text)
     return short(text, 90)
 
 

@@ -510,3 +510,13 @@ def test_a_failing_checks_status_is_in_words():
     assert check_line(CheckOutcome("regular iff n <= 2r+1", "count-mismatch", "1 (paper: 0)")) \
         == "check regular iff n <= 2r+1: count not as printed, 1 (paper: 0)"
     assert check_line(CheckOutcome("rank ad_Phi", "rank", "= 4")) == "check rank ad_Φ: rank as printed, = 4"
+
+
+def test_the_referees_verdict_line_gives_the_reason_for_undecided_in_words():
+    from stiefelsym.report import _brief_reason
+    assert _brief_reason("needs coordinates (fixed n, r): a constant matrix on R^n (e.g. E_1); decided at "
+                         "fixed sizes") == "needs fixed n, r: a constant matrix on R^n"
+    assert _brief_reason("4 residual entries have a nonzero normal form; e.g. ...") \
+        == "4 residual entries do not reduce to 0 by the rewriting rules"
+    assert _brief_reason("1 residual entry has a nonzero normal form") \
+        == "1 residual entry does not reduce to 0 by the rewriting rules"
