@@ -80,7 +80,7 @@ KIND_MEANING = {
 
 #: what each method does, for a mathematician reading "passes at … by modular"
 METHOD_MEANING = {
-    "exact": ("exact symbolic computation at a size (n, r): the residuals reduced to zero on the "
+    "exact": ("symbolic computation at a size (n, r), exact: the residuals reduced to zero on the "
               "constraint set, or a rank or count computed exactly over the field of the chart's "
               "parameters; proves or refutes."),
     "rational": "random exact points over ℚ; passes with the bound p below.",
@@ -94,6 +94,8 @@ METHOD_MEANING = {
              "certificate that an independent checker re-expands.  It does not apply to statements that "
              "read coordinates (an entry, a rank, a count)."),
 }
+
+METHODS_INTRO = "Each verdict names the method that reached it (“passes at (4,2) by modular”):"
 
 BOUND_EXPLANATION = (
     "Schwartz–Zippel lemma: a nonzero polynomial of total degree d, evaluated at a "
@@ -682,7 +684,7 @@ def render_markdown(results: Sequence[Result], meta: dict[str, Any] | None = Non
     out += [_md_escape(f) for f in _run_facts(meta)] + [""]
     out += ["## What the verdicts mean", ""]
     out += [f"- **{v}**: {_md_escape(VERDICT_MEANING[v])}" for v in VERDICTS]
-    out += ["", "**The methods** (“passes at (4,2) by modular”):", ""]
+    out += ["", f"**The methods.** {METHODS_INTRO}", ""]
     out += [f"- **{m}**: {_md_escape(t)}" for m, t in METHOD_MEANING.items()]
     out += ["", f"**The bound p.** {_md_escape(BOUND_EXPLANATION)}", "",
             f"**Expected verdicts.** {_md_escape(EXPECTED_EXPLANATION)}", ""]
@@ -1114,7 +1116,7 @@ def render_latex(results: Sequence[Result], meta: dict[str, Any] | None = None, 
     out += _toc_section("What the verdicts mean") + [r"\begin{description}"]
     out += [f"\\item[{v}] {tex_escape(VERDICT_MEANING[v])}" for v in VERDICTS]
     out += [r"\end{description}",
-            r"\paragraph{The methods} " + tex_escape("(“passes at (4,2) by modular”).") + r"\begin{description}"]
+            r"\paragraph{The methods.} " + tex_escape(METHODS_INTRO), r"\begin{description}"]
     out += [f"\\item[{m}] {tex_escape(t)}" for m, t in METHOD_MEANING.items()]
     out += [r"\end{description}",
             r"\paragraph{The bound $p$.} " + tex_escape(BOUND_EXPLANATION),
