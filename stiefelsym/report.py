@@ -80,8 +80,8 @@ KIND_MEANING = {
 
 #: what each method does, for a mathematician reading "passes at … by modular"
 METHOD_MEANING = {
-    "exact": ("symbolic computation at a size (n, r), exact: the residuals reduced to zero on the "
-              "constraint set, or a rank or count computed exactly over the field of the chart's "
+    "exact": ("symbolic computation at one size (n, r) in exact arithmetic: the residuals reduced to "
+              "zero on the constraint set, or a rank or count computed over the field of the chart's "
               "parameters; proves or refutes."),
     "rational": "random exact points over ℚ; passes with the bound p below.",
     "modular": "random exact points over prime fields (primes near 2⁶⁰); passes with the bound p below.",
