@@ -1290,10 +1290,10 @@ def certificate_summary(r: Result) -> str:
         checked += f"; it assumes (the {sm.get('realization', 'metric')} realization): {'; '.join(assumes)}"
     if not sm["terms"]:
         verb = "vanishes" if sm["entries"] == 1 else "vanish"
-        return (f"Cofactor certificate ({r.method}): empty, the {entries} already {verb} in the free algebra "
+        return (f"Cofactor certificate ({_method_name(r.method)}): empty, the {entries} already {verb} in the free algebra "
                 f"as built; {checked}")
     sizes = ", ".join(map(str, per[:12])) + (", ..." if len(per) > 12 else "")
-    return (f"Cofactor certificate ({r.method}): {sm['terms']} terms over {entries} (per entry: {sizes}), "
+    return (f"Cofactor certificate ({_method_name(r.method)}): {sm['terms']} terms over {entries} (per entry: {sizes}), "
             f"in {len(sm['hypotheses'])} relation{'' if len(sm['hypotheses']) == 1 else 's'} of the ideal "
             f"({', '.join(sm['hypotheses'])}, as results.json names them); {checked}; the terms are in results.json")
 
