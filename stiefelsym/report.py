@@ -634,7 +634,10 @@ def _summary_rows(claims: list[ClaimResults]) -> tuple[list[str], list[tuple[Cla
     rows = []
     for c in claims:
         cnt = Counter(r.verdict for r in sized(c))
-        free = next((r.verdict for r in c.printed if r.n is None), "–")
+        fr = next((r for r in c.printed if r.n is None), None)
+        # a proof at particular r says where ("proved, every n at r = n"), as the headline counts it
+        free = "–" if fr is None else fr.verdict if fr.verdict != "proved" or free_scope(fr) == "all n, r" \
+            else f"proved, {free_scope(fr)}"
         bad = len(c.unexpected)
         rows.append((c, [free] + [cnt[v] for v in present],
                      "as expected" if not bad else f"{bad} unexpected"))

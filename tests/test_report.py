@@ -520,3 +520,9 @@ def test_the_referees_verdict_line_gives_the_reason_for_undecided_in_words():
         == "4 residual entries do not reduce to 0 by the rewriting rules"
     assert _brief_reason("1 residual entry has a nonzero normal form") \
         == "1 residual entry does not reduce to 0 by the rewriting rules"
+
+
+def test_the_summary_table_says_where_a_proof_at_particular_r_holds():
+    cert = "cofactor certificate of 1 residual entry (for every n at r = n, the only r the claim is stated for: it uses X X^T = I_n)"
+    md = render_markdown([result("b", None, None, "free", "proved", certificate=cert), result("b", 2, 2, "exact", "proved")])
+    assert "| proved, every n at r = n |" in md
