@@ -1059,8 +1059,15 @@ def headline(claims: list[ClaimResults]) -> tuple[str, list[ClaimResults]]:
                f"{len(free)} of them proved for every size at once: {scopes['all n, r']} for every n and r, "
                "and, stated at particular r, for every n: "
                + ", ".join(f"{v} {k.removeprefix('every n ')}" for k, v in one_r))
-    text = (f"Of the paper's {len(claims)} checkable statements, {len(claims) - len(errata)} hold as printed at "
-            f"every size computed ({at_once}), and {len(errata)} "
+    holds = sum(map(holds_at_every_size, claims))
+    # a claim that no method decided at some computed size is not said to hold there
+    open_ = [c.id for c in claims if not c.failures and not holds_at_every_size(c)]
+    named = ", ".join(open_[:5]) + (f" and {len(open_) - 5} more" if len(open_) > 5 else "")
+    text = (f"Of the paper's {len(claims)} checkable statements, {holds} hold as printed at "
+            f"every size computed ({at_once}), "
+            + (f"{len(open_)} {'holds' if len(open_) == 1 else 'hold'} where decided but "
+               f"{'was' if len(open_) == 1 else 'were'} left undecided at some size ({named}), " if open_ else "")
+            + f"and {len(errata)} "
             f"fail as printed: each is an erratum with an exact witness, and where a correction is registered "
             f"it was verified ({len(corrected_free)} corrections proved for every n and r).")
     return text, errata
@@ -1153,13 +1160,24 @@ def _tex_claim_table(claims: list[ClaimResults]) -> list[str]:
     return out + [r"\bottomrule", r"\end{longtable}", "}", ""]
 
 
+def holds_at_every_size(c: ClaimResults) -> bool:
+    """The claim as printed holds at every size it was computed at: proved for every size at once, or
+    passed (proved or checked) by some method at each computed size; a size that no method decided
+    (only undecided or inconclusive runs) is not counted as holding."""
+    if c.failures:
+        return False
+    if any(r.n is None and r.verdict == "proved" for r in c.printed):
+        return True
+    sizes = {(r.n, r.r) for r in c.printed if r.n is not None}
+    return bool(sizes) and sizes <= {(r.n, r.r) for r in c.printed if r.n is not None and r.verdict in PASSING}
+
+
 def section_counts(cs: list[ClaimResults]) -> dict[str, int]:
     """Per section: its claims, those proved for every n, r as printed, those that hold as printed
     at every computed size, those that fail as printed, and those with a verdict not expected."""
     free = sum(any(r.n is None and r.verdict == "proved" for r in c.printed) for c in cs)
     fails = sum(bool(c.failures) for c in cs)
-    holds = sum(not c.failures and all(r.verdict in PASSING for r in c.printed if r.n is not None)
-                and any(r.n is not None for r in c.printed) for c in cs)
+    holds = sum(map(holds_at_every_size, cs))
     return {"claims": len(cs), "all n, r": free, "every size": holds, "fail as printed": fails,
             "unexpected": sum(bool(c.unexpected) for c in cs)}
 

@@ -526,3 +526,16 @@ def test_the_summary_table_says_where_a_proof_at_particular_r_holds():
     cert = "cofactor certificate of 1 residual entry (for every n at r = n, the only r the claim is stated for: it uses X X^T = I_n)"
     md = render_markdown([result("b", None, None, "free", "proved", certificate=cert), result("b", 2, 2, "exact", "proved")])
     assert "| proved, every n at r = n |" in md
+
+
+def test_the_headline_and_the_summary_table_count_the_same_claims_as_holding():
+    """A claim that no method decided at one computed size is not said to hold at every size computed: the
+    headline names it, and its count agrees with the summary table's column."""
+    from stiefelsym.report import headline, section_counts
+    rs = [result("a", 3, 1, "exact", "proved"), result("a", 6, 1, "modular", "undecided", expected=True),
+          result("b", 3, 1, "exact", "proved"), result("b", 6, 1, "modular", "checked")]
+    claims = group_by_claim(rs)
+    text, _ = headline(claims)
+    assert text.startswith("Of the paper's 2 checkable statements, 1 hold as printed at every size computed")
+    assert "1 holds where decided but was left undecided at some size (a)" in text
+    assert section_counts(claims)["every size"] == 1
