@@ -958,7 +958,7 @@ def _md_corrections(c: ClaimResults) -> list[str]:
         rows.append([change or "–", _md_cell(var), f"**{status}**" if status == "verified" else status,
                      _md_cell("; ".join(phrases))])
     where = f" {_corrections_rule(planned)[0].upper()}{_corrections_rule(planned)[1:]}" if planned else ""
-    return [f"Candidate corrections:{where}", ""] + _md_table(["correction (in the graph)", "registered as", "status",
+    return [f"Candidate corrections:{where}", ""] + _md_table(["correction (change of the formula)", "registered as", "status",
                                                                "runs"], rows, "llll")
 
 
@@ -1552,7 +1552,7 @@ def _tex_change(changes: Sequence[dict[str, str]] | None) -> str:
     if not changes:
         return ""
     if not changes[0].get("where") and not changes[0].get("old"):
-        return tex_escape("no change in the graph")
+        return tex_escape("no change in the formula")
     parts = []
     for c in changes:
         if c.get("more"):
