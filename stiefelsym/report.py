@@ -1442,7 +1442,7 @@ MUTATION_EXPLANATION = (
     "is not equivalent.  Survivors are soundness or sensitivity problems.  Kill rate = killed / "
     "(mutants - equivalent).  Unless the command says --fresh-points, the point methods (rational, "
     "modular, float) evaluate a mutant at the random points of the claim as printed and recompute "
-    "only the nodes of its graph that the change reaches (parameters the printed claim never drew "
+    "only the subexpressions of its formula that the change reaches (parameters the printed claim never drew "
     "are drawn afresh), and the symbolic method has 30 s per run of a mutant; the verdicts are those of "
     "fresh points, which the tests check.")
 MUTATION_COLUMNS = ("mutants", "killed", "fails", "error", "other", "survived", "equivalent",
