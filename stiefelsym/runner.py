@@ -203,13 +203,16 @@ def _error(claim: Claim, size: Size | None, method: str, seed: int, message: str
 
 
 def _exact_runner(in_worker: bool, budget: float | None) -> Callable[..., Result]:
-    """The symbolic method: in a worker it runs right there (the worker is the killable
-    process); elsewhere in its own killable child."""
+    """The symbolic method: in a worker, a small attempt runs right there (the worker is the
+    killable process) and a heavy one in its own forked child with the run's memory budget, so
+    that the worker survives it (:func:`stiefelsym.methods.isolates`); elsewhere in its own
+    killable child."""
     if not in_worker:
         return METHOD_RUNNERS["exact"]
-    from .methods import EXACT_TIME_LIMIT, run_exact
+    from .methods import EXACT_TIME_LIMIT, run_exact_isolated
     limit = EXACT_TIME_LIMIT if budget is None else min(EXACT_TIME_LIMIT, budget)
-    return lambda c, n, r, seed, func=None, options=None: run_exact(c, n, r, seed, func, limit)
+    return lambda c, n, r, seed, func=None, options=None: run_exact_isolated(c, n, r, seed, func, limit,
+                                                                             in_worker=True)
 
 
 def _dispatch(claim: Claim, size: Size | None, method: str, seed: int, func: Callable | None,

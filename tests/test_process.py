@@ -574,3 +574,78 @@ def test_an_erratum_predicate_that_breaks_is_an_error_not_a_crash():
     c = _claim("c", _ok, fails_at=lambda n, r: 1 / 0, erratum="broken predicate")
     res = runner._finish(_result("fails"), c, None)
     assert res.verdict == "error" and not res.expected and "ZeroDivisionError" in res.message
+
+
+# --------------------------------------------------------------------------- heavy symbolic attempts in workers
+
+def _falsely_orthonormal(s):
+    return {"XtX = 2 I": s.X.T @ s.X - 2 * s.Ir}
+
+
+def _hoard(*args, **kwargs):
+    """Stands for a symbolic attempt that exhausts the memory budget (Python's allocator)."""
+    hoard = []
+    while True:
+        hoard.append(bytes(1 << 28))
+
+
+def _abort(*args, **kwargs):
+    """Stands for flint aborting when a native allocation fails under the memory budget."""
+    import faulthandler
+    faulthandler.disable()          # (pytest's dump of the aborting child would only be noise)
+    os.abort()
+
+
+def _attempt_in_a_worker(task):
+    from stiefelsym.methods import run_exact_isolated
+    res = run_exact_isolated(_claim("ok", _ok, sizes=admissible(n_max=6)), 6, 2, 0, time_budget=20,
+                             in_worker=True)
+    return os.getpid(), res.verdict, res.message
+
+
+@needs_fork
+def test_small_symbolic_attempts_stay_in_the_worker_and_heavy_ones_are_forked():
+    from stiefelsym import methods
+    ok = _claim("ok", _ok, sizes=admissible(n_max=6))
+    assert not methods.isolates(ok, 4, 2, in_worker=True)
+    assert methods.isolates(ok, methods.ISOLATE_MIN_N, 2, in_worker=True)
+    assert methods.isolates(ok, 4, 2) and not methods.isolates(ok, 3, 2)   # outside a worker: the hard time limit
+
+
+@needs_fork
+@pytest.mark.parametrize("dies", [_hoard, _abort], ids=["MemoryError", "SIGABRT"])
+def test_a_symbolic_attempt_that_exceeds_memory_in_a_worker_leaves_the_worker_alive(monkeypatch, dies):
+    from stiefelsym import methods
+    monkeypatch.setattr(methods, "run_exact", dies)
+    with WorkerPool(_attempt_in_a_worker, workers=1, timeout=60, memory=3 * GIB) as pool:
+        outcomes = [o for _, o in pool.run(["first", "second"])]
+    assert [o.kind for o in outcomes] == ["ok", "ok"]
+    (pid1, verdict1, message1), (pid2, verdict2, message2) = (o.value for o in outcomes)
+    assert pid1 == pid2                         # the same worker ran both: it survived the first
+    assert verdict1 == verdict2 == "inconclusive"
+    assert message1.startswith("the symbolic attempt ended without a verdict: the child process ")
+    assert ("ran out of memory" if dies is _hoard else "killed by SIGABRT") in message1
+
+
+@needs_fork
+@pytest.mark.parametrize("dies", [_hoard, _abort], ids=["MemoryError", "SIGABRT"])
+def test_auto_falls_back_to_modular_when_the_symbolic_attempt_dies(monkeypatch, dies):
+    from stiefelsym import methods
+    monkeypatch.setattr(methods, "run_exact", dies)
+    claims = [_claim("ok", _ok, sizes=admissible(n_max=6)), _claim("false", _falsely_orthonormal,
+                                                                    sizes=admissible(n_max=6))]
+    res = runner.verify(claims, sizes=[Size(6, 2)], methods=("auto",), timeout=60, memory=3, seed=0)
+    by = {r.claim: r for r in res}
+    assert by["ok"].method == "modular" and by["ok"].verdict == "checked" and by["ok"].expected
+    assert by["ok"].message.startswith("exact: the symbolic attempt ended without a verdict: the child process ")
+    assert by["false"].verdict == "fails" and not by["false"].expected
+
+
+@needs_fork
+def test_a_forked_symbolic_attempt_in_a_worker_still_proves_and_refutes():
+    claims = [_claim("ok", _ok, sizes=admissible(n_max=6)), _claim("false", _falsely_orthonormal,
+                                                                    sizes=admissible(n_max=6))]
+    res = runner.verify(claims, sizes=[Size(6, 2)], methods=("exact",), timeout=60, seed=0)
+    by = {r.claim: r for r in res}
+    assert by["ok"].verdict == "proved" and by["ok"].expected
+    assert by["false"].verdict == "fails" and not by["false"].expected
