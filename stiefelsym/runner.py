@@ -235,14 +235,16 @@ def _dispatch(claim: Claim, size: Size | None, method: str, seed: int, func: Cal
 def _run_auto(claim: Claim, size: Size, seed: int, func: Callable | None,
               exact: Callable[..., Result] | None = None) -> Result:
     exact = exact or METHOD_RUNNERS["exact"]
-    if size.n <= claim.exact_max_n:
+    if claim.exact_at(size.n, size.r):
         res = exact(claim, size.n, size.r, seed, func)
         if res.verdict != "inconclusive":
             return res
         reason = res.message
         spent = res.seconds
     else:
-        reason, spent = f"n = {size.n} is above this claim's symbolic budget (n <= {claim.exact_max_n})", 0.0
+        reason, spent = (f"({size.n},{size.r}) is above this claim's symbolic budget "
+                         f"({claim.exact_budget_text()})" if claim.exact_max_r else
+                         f"n = {size.n} is above this claim's symbolic budget (n <= {claim.exact_max_n})"), 0.0
     res = METHOD_RUNNERS["modular"](claim, size.n, size.r, seed, func)
     res.message = "; ".join(m for m in (f"exact: {reason}" if reason else "", res.message) if m)
     res.seconds += spent

@@ -649,3 +649,35 @@ def test_a_forked_symbolic_attempt_in_a_worker_still_proves_and_refutes():
     by = {r.claim: r for r in res}
     assert by["ok"].verdict == "proved" and by["ok"].expected
     assert by["false"].verdict == "fails" and not by["false"].expected
+
+
+# --------------------------------------------------------------------------- a symbolic budget in n and r
+
+def test_auto_tries_the_symbolic_method_within_the_budget_in_r():
+    kw = dict(sizes=admissible(n_max=3), exact_max_n=2, exact_max_r=((3, 2),))
+    claims = [_claim("ok", _ok, **kw), _claim("false", _falsely_orthonormal, **kw)]
+    res = runner.verify(claims, sizes=[Size(3, 2), Size(3, 3)], methods=("auto",), seed=0)
+    by = {(r.claim, r.n, r.r): r for r in res}
+    assert (by["ok", 3, 2].method, by["ok", 3, 2].verdict) == ("exact", "proved")
+    assert (by["false", 3, 2].method, by["false", 3, 2].verdict) == ("exact", "fails")
+    assert (by["ok", 3, 3].method, by["ok", 3, 3].verdict) == ("modular", "checked")
+    assert by["ok", 3, 3].message.startswith("exact: (3,3) is above this claim's symbolic budget "
+                                             "(n <= 2; r <= 2 at n = 3)")
+    assert by["false", 3, 3].verdict == "fails"
+
+
+@pytest.mark.parametrize("pairs", [((2, 1),), ((4, 5),), ((4, 0),), (("4", 2),), ((4,),)])
+def test_a_budget_in_r_is_given_at_sizes_above_exact_max_n(pairs):
+    with pytest.raises(ValueError, match="exact_max_r"):
+        _claim("c", _ok, exact_max_n=3, exact_max_r=pairs)
+
+
+def test_a_budget_in_r_reaches_a_claims_file(tmp_path):
+    from stiefelsym.api import load
+    path = tmp_path / "budget.py"
+    path.write_text("from stiefelsym import admissible, claim\n"
+                    "@claim('c', paper='t', kind='id', section='9', sizes=admissible(n_max=5), exact_max_n=4,\n"
+                    "       exact_max_r={5: 3})\n"
+                    "def c(s):\n    return {'XtX': s.X.T @ s.X - s.Ir}\n")
+    c = load([path], catalog=False).get("c")
+    assert c.exact_max_r == ((5, 3),) and c.exact_at(5, 3) and not c.exact_at(5, 4) and c.exact_at(4, 4)
