@@ -32,12 +32,19 @@ def run_isolated(fn: Callable[[], Any], seconds: float, describe: Callable[[Base
     """fn() in a forked child, killed after ``seconds``; its exceptions come back as ChildError."""
     if not hasattr(os, "fork"):
         return fn()
+    from .pool import _death_signal_setup
+    prctl = _death_signal_setup()
+    parent = os.getpid()
     rfd, wfd = os.pipe()
     gc.freeze()    # keep the parent's objects out of the child's collections (fewer copied pages)
     pid = os.fork()
     if pid == 0:   # the child: compute, send, exit without running the parent's cleanup
         os.close(rfd)
         try:
+            if prctl:
+                prctl(1, signal.SIGKILL)     # PR_SET_PDEATHSIG: die with the parent, never outlive it
+                if os.getppid() != parent:
+                    os._exit(0)
             try:
                 payload = pickle.dumps(("ok", fn()))
             except MemoryError as exc:

@@ -681,3 +681,38 @@ def test_a_budget_in_r_reaches_a_claims_file(tmp_path):
                     "def c(s):\n    return {'XtX': s.X.T @ s.X - s.Ir}\n")
     c = load([path], catalog=False).get("c")
     assert c.exact_max_r == ((5, 3),) and c.exact_at(5, 3) and not c.exact_at(5, 4) and c.exact_at(4, 4)
+
+
+def _alive(pid: int) -> bool:
+    try:
+        with open(f"/proc/{pid}/status") as f:
+            return not any(line.startswith("State:") and ("Z" in line or "X" in line) for line in f)
+    except FileNotFoundError:
+        return False
+
+
+@needs_fork
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="PR_SET_PDEATHSIG is Linux's")
+def test_an_isolated_attempt_dies_with_the_process_that_forked_it():
+    r, w = os.pipe()
+    pid = os.fork()
+    if pid == 0:       # stands for a worker (or the command line) killed while its attempt runs
+        try:
+            os.close(r)
+            from stiefelsym.isolate import run_isolated
+
+            def attempt():
+                os.write(w, f"{os.getpid()}\n".encode())
+                time.sleep(60)
+            run_isolated(attempt, 60, str)
+        finally:
+            os._exit(0)
+    os.close(w)
+    with os.fdopen(r) as f:
+        child = int(f.readline())
+    os.kill(pid, signal.SIGKILL)
+    os.waitpid(pid, 0)
+    deadline = time.monotonic() + 10
+    while _alive(child) and time.monotonic() < deadline:
+        time.sleep(0.05)
+    assert not _alive(child)
