@@ -915,7 +915,7 @@ def mutation_sizes(claim: Claim, n_max: int = DEFAULT_N_MAX, count: int = DEFAUL
 
 
 def _exact_ok(claim: Claim, size: Size) -> bool:
-    return size.n <= claim.exact_max_n
+    return claim.exact_at(size.n, size.r)
 
 
 def cells(claim: Claim, sizes: Sequence[Size], methods: Sequence[str]) -> list[tuple[Size | None, str]]:

@@ -147,6 +147,12 @@ def _get(d: Any, key: str, *types_: type, optional: bool = False) -> Any:
     return v
 
 
+def _exact_pairs(pairs: list) -> tuple[tuple[int, int], ...]:
+    if not all(type(p) is list and len(p) == 2 and all(type(x) is int for x in p) for p in pairs):
+        raise WireError("the field 'exact_max_r' is not a list of [n, r] pairs")
+    return tuple((p[0], p[1]) for p in pairs)
+
+
 # --------------------------------------------------------------------------- the children
 
 def _graph_state(g: Any) -> Any:
@@ -213,6 +219,7 @@ def _claim_data(c: Claim, needed: Sequence[tuple[int, int]]) -> dict:
     return {
         "id": c.id, "paper": list(c.paper), "kind": c.kind, "section": c.section, "statement": c.statement,
         "title": c.title, "realization": c.realization, "expect": c.expect, "exact_max_n": c.exact_max_n,
+        "exact_max_r": [list(p) for p in c.exact_max_r],
         "erratum": c.erratum, "equivariance": c.equivariance, "source": c.source, "path": path,
         "line": line if type(line) is int else 0, "name": getattr(c.func, "__name__", c.id),
         "sizes": {"list": [list(p) for p in listed], "n_min": spec.n_min, "r_min": spec.r_min,
@@ -712,6 +719,7 @@ def _claim(d: Any, path: str) -> Claim:
                  func=TracedFunction(name, realization, _get(d, "graphs", list), src_path, line),
                  sizes=spec, statement=_get(d, "statement", str), title=_get(d, "title", str),
                  realization=realization, expect=_get(d, "expect", str), exact_max_n=_get(d, "exact_max_n", int),
+                 exact_max_r=_exact_pairs(_get(d, "exact_max_r", list)),
                  corrections=corrections, source=_get(d, "source", str),
                  fails_at=None if fails is None else _Lookup("erratum sizes (fails_at)", fails),
                  erratum=_get(d, "erratum", str), equivariance=_get(d, "equivariance", str), reviewed=False)
