@@ -51,8 +51,8 @@ from fractions import Fraction
 from pathlib import Path
 from typing import Any, Callable, Iterable, Sequence
 
-from .isolate import read_pipe
 from .pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT, GIB
+from .confine import ProcessesLeft
 from .claims import CatalogError, Claim, ClaimTimeout, Correction, Registry, Size, SizeSpec, load_claims_file
 
 #: sizes n <= this get an entry in the admits table (the free method checks a declared r up to here)
@@ -234,32 +234,87 @@ def _claim_data(c: Claim, needed: Sequence[tuple[int, int]]) -> dict:
 
 
 def _fork_bytes(make: Callable[[], bytes], seconds: float) -> bytes | None:
-    """make() in a forked child, its bytes read back (None: it died or ran out of time)."""
-    rfd, wfd = os.pipe()
-    gc.freeze()     # the parent's objects stay out of the child's collections (fewer copied pages)
-    pid = os.fork()
-    if pid == 0:
-        os.close(rfd)
-        code = 0
+    """make() in a forked child, its bytes read back (None: it died or ran out of time).
+
+    Everything the child starts stays under this process (:class:`~stiefelsym.confine.Confined`: a subreaper)
+    and is killed once the child has ended, before this function returns (so before anything of the run is
+    written); the child's answer is what it wrote before it exited, read without waiting for an end of file
+    that a process it left could hold."""
+    from .confine import Confined
+    with Confined():
+        rfd, wfd = os.pipe()
+        gc.freeze()     # the parent's objects stay out of the child's collections (fewer copied pages)
+        pid = os.fork()
+        if pid == 0:
+            os.close(rfd)
+            code = 0
+            try:
+                data = make()
+                view = memoryview(data)
+                while view:
+                    view = view[os.write(wfd, view):]
+            except BaseException:   # noqa: BLE001 - the parent sees no result
+                code = 1
+            finally:
+                os._exit(code)
+        os.close(wfd)
+        gc.unfreeze()
         try:
-            data = make()
-            view = memoryview(data)
-            while view:
-                view = view[os.write(wfd, view):]
-        except BaseException:   # noqa: BLE001 - the parent sees no result
-            code = 1
+            chunks, status = _read_until_exit(pid, rfd, seconds)
         finally:
-            os._exit(code)
-    os.close(wfd)
-    gc.unfreeze()
-    data = read_pipe(rfd, seconds, lambda: _kill_group(pid))
-    if data is None:
+            _kill_group(pid)            # the child, and what the file started in its group
+    if status != 0:                 # None: out of time
         return None
-    _, status = os.waitpid(pid, 0)
-    _kill_group(pid)            # what the file started and left running
-    if status != 0:
-        return None
-    return data
+    return b"".join(chunks)
+
+
+def _read_until_exit(pid: int, rfd: int, seconds: float) -> tuple[list[bytes], int | None]:
+    """What the child ``pid`` writes to ``rfd`` until it has exited (and all it wrote is read), and its wait
+    status; None after ``seconds``.  ``rfd`` is closed."""
+    chunks: list[bytes] = []
+    deadline = time.monotonic() + seconds
+    pidfd = -1
+    if hasattr(os, "pidfd_open"):
+        try:
+            pidfd = os.pidfd_open(pid)
+        except OSError:
+            pidfd = -1
+    eof = False
+    try:
+        os.set_blocking(rfd, False)
+        while True:
+            left = deadline - time.monotonic()
+            if left <= 0:
+                return chunks, None
+            watch = ([] if eof else [rfd]) + ([pidfd] if pidfd >= 0 else [])
+            ready, _, _ = select.select(watch, [], [], left if pidfd >= 0 else min(left, 0.02))
+            if rfd in ready:
+                try:
+                    chunk = os.read(rfd, 1 << 16)
+                except BlockingIOError:
+                    chunk = None
+                if chunk:
+                    chunks.append(chunk)
+                    continue
+                eof = eof or chunk == b""
+            done, status = os.waitpid(pid, os.WNOHANG)
+            if done:
+                while True:             # what it wrote before it exited is all in the pipe
+                    chunk = _read_some(rfd)
+                    if not chunk:
+                        return chunks, status
+                    chunks.append(chunk)
+    finally:
+        os.close(rfd)
+        if pidfd >= 0:
+            os.close(pidfd)
+
+
+def _read_some(fd: int) -> bytes:
+    try:
+        return os.read(fd, 1 << 16)
+    except BlockingIOError:
+        return b""
 
 
 def _kill_group(pid: int) -> None:
@@ -458,6 +513,7 @@ def _tracer(path: str, needed: Sequence[tuple[int, int]], timeout: float, memory
             capture: int) -> bytes:
     """The tracer child: import the file, then trace each claim in grandchildren of its own."""
     _die_with_parent()
+    sys.dont_write_bytecode = True      # an honest import here writes no byte code into the engine's folders
     try:
         os.setpgid(0, 0)        # its own process group: killed as a whole (with what the file started)
     except OSError:
@@ -725,11 +781,27 @@ def _claim(d: Any, path: str) -> Claim:
                  erratum=_get(d, "erratum", str), equivariance=_get(d, "equivariance", str), reviewed=False)
 
 
-def _preload() -> None:
-    """The engine's modules, imported here before the children are forked (the child seals them before the
-    file runs, and this process evaluates with them afterwards: imported once, not once in each)."""
+def _preload() -> dict[str, str]:
+    """Before the first child is forked: every module of the engine imported here (the child seals the
+    verdict modules before the file runs; this process evaluates, renders and writes with the whole package
+    afterwards, and reads none of it from disk once a file's child has run), and the digest of every file
+    of the package (:func:`stiefelsym.confine.engine_files`), compared when the child returns."""
+    from .confine import engine_files, import_package
     from .ir.seal import import_engine
     import_engine()
+    import_package()
+    return engine_files()
+
+
+def _engine_unchanged(before: dict[str, str], path: Path) -> None:
+    """Raise :class:`CatalogError` when a file of the package changed while the claims file's child ran."""
+    from .confine import changed_files, engine_files
+    changed = changed_files(before, engine_files())
+    if changed:
+        shown = ", ".join(changed[:5]) + (f" and {len(changed) - 5} more" if len(changed) > 5 else "")
+        raise CatalogError(f"{path}: the engine's files changed on disk while the claims file ran ({shown}): no "
+                           "verdict is given, and later runs would use the changed code: restore the package "
+                           "(e.g. git checkout, or reinstall it) before running again")
 
 
 def load_claims_isolated(path: str | Path, sizes: Iterable[Any] = (), timeout: float = DEFAULT_TIMEOUT,
@@ -749,19 +821,22 @@ def load_claims_isolated(path: str | Path, sizes: Iterable[Any] = (), timeout: f
     p = Path(path)
     if not p.is_file():
         raise CatalogError(f"claims file not found: {p}")
-    _preload()
+    engine = _preload()
     sys.stdout.flush()
     sys.stderr.flush()
     limit = None if memory is None else int(memory * GIB)
     with tempfile.TemporaryFile() as capture:
         try:
             data = _fork_bytes(lambda: _tracer(str(p), needed, timeout, limit, capture.fileno()), FILE_SECONDS)
+        except ProcessesLeft as exc:
+            raise CatalogError(f"{p}: {exc}") from None
         finally:
             capture.seek(0)
             printed = capture.read(CAPTURE_BYTES)
             if printed:
                 sys.stderr.write(printed.decode("utf-8", "replace"))
                 sys.stderr.flush()
+            _engine_unchanged(engine, p)
     if data is None:
         raise CatalogError(f"{p}: loading and tracing the file ended without a result (its process died or took "
                            f"more than {FILE_SECONDS:.0f} s)")

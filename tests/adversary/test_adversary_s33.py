@@ -5,6 +5,7 @@ each test asserts the CORRECT outcome, and a route that is open today is a stric
 import json
 import os
 import re
+import sys
 
 import pytest
 
@@ -478,10 +479,10 @@ def _scratch_engine(tmp_path):
     return root
 
 
-@pytest.mark.xfail(strict=True, reason="open (AI): the file's child rewrites stiefelsym/report.py on disk; the "
-                   "verifying process imports report lazily after the child ran, so the file's code runs there and "
-                   "turns the false claim's fails into proved in the summary, results.json and the exit status")
 def test_a_claims_file_that_rewrites_the_engine_on_disk_changes_no_verdict(tmp_path):
+    """Closed (AI): the verifying process imports the whole package and takes the digest of its files before
+    the first fork; a file changed when the child returns stops the run (exit 2, the file named, nothing
+    written), and no module is read from disk after the child ran."""
     import subprocess
     import sys
     root = _scratch_engine(tmp_path)
@@ -491,17 +492,19 @@ def test_a_claims_file_that_rewrites_the_engine_on_disk_changes_no_verdict(tmp_p
                          capture_output=True, text=True, timeout=300)
     assert "S33 PAYLOAD" not in (ROOT / "stiefelsym" / "report.py").read_text()    # the engine itself untouched
     assert "S33 PAYLOAD" in (root / "stiefelsym" / "report.py").read_text(), out.stderr[-800:]   # the copy was
-    recs = json.loads((tmp_path / "rep" / "results.json").read_text())["results"]
-    assert [r["verdict"] for r in recs] == ["fails"] and out.returncode == 1, (recs, out.returncode)
+    assert out.returncode == 2, (out.returncode, out.stderr[-800:])
+    assert "changed on disk" in out.stderr and "report.py" in out.stderr and "Traceback" not in out.stderr
+    assert not (tmp_path / "rep" / "results.json").exists()
+    assert "proved" not in out.stdout
 
 
 LATER = "s33_results_rewritten_later.py"
 
 
-@pytest.mark.xfail(strict=True, reason="open (AI): a process the file's child leaves behind in a session of its own "
-                   "escapes the process-group kill, waits for the verifying process to end and rewrites its "
-                   "results.json (fails -> proved)")
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="the child subreaper is Linux's")
 def test_the_results_file_of_a_run_is_not_rewritten_after_it(tmp_path):
+    """Closed (AI'): the verifying process is a child subreaper while the file's child runs, and kills every
+    process left under it (found in /proc) when the child has ended, before anything is written."""
     import time
     out = cli("verify", "--claims", str(HERE / LATER), "--method", "exact", "--size", "3,2", "--report-dir",
               str(tmp_path / "rep"), env=dict(os.environ, STIEFELSYM_S33_DAEMON="1"))

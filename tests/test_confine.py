@@ -1,0 +1,162 @@
+"""What a claims file's child leaves behind: processes (ended when the child ends) and edits to the engine's
+files (the run stops)."""
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+import textwrap
+import time
+from pathlib import Path
+
+import pytest
+
+from stiefelsym.claims import CatalogError
+from stiefelsym.confine import Confined, changed_files, engine_files, package_roots
+from stiefelsym.userfile import load_claims_isolated
+
+LINUX = pytest.mark.skipif(not sys.platform.startswith("linux") or not os.path.isdir("/proc/self"),
+                           reason="the subreaper and /proc are Linux's")
+
+CLAIM = '''
+from stiefelsym import admissible, claim
+
+
+@claim("confine-true", kind="id", sizes=admissible(n_max=3, n_min=3, r_min=2, r_max=2, condition="(3,2)"),
+       statement="X^T X = I_r")
+def true(s):
+    """True."""
+    return {"r": s.X.T @ s.X - s.Ir}
+'''
+
+
+def _alive(pid: int) -> bool:
+    try:
+        with open(f"/proc/{pid}/stat") as f:
+            return f.read().rpartition(")")[2].split()[0] not in ("Z", "X")
+    except OSError:
+        return False
+
+
+def _daemon_file(tmp_path: Path, close_fds: bool) -> tuple[Path, Path]:
+    """A claims file whose child leaves a process in a session of its own (double fork, setsid) that sleeps a
+    minute, holding (or not) every descriptor it inherited, the pipe to the verifying process included."""
+    pidfile = tmp_path / "daemon.pid"
+    closing = "os.closerange(3, 4096)" if close_fds else "pass"
+    src = textwrap.dedent(f'''
+        import os
+        import time
+        if os.fork() == 0:
+            os.setsid()
+            if os.fork() == 0:
+                try:
+                    {closing}
+                    with open({str(pidfile)!r}, "w") as f:
+                        f.write(str(os.getpid()))
+                    time.sleep(60)
+                finally:
+                    os._exit(0)
+            os._exit(0)
+        time.sleep(0.3)         # the grandchild has written its pid
+    ''') + CLAIM
+    path = tmp_path / "daemon_claims.py"
+    path.write_text(src)
+    return path, pidfile
+
+
+@LINUX
+@pytest.mark.parametrize("close_fds", [False, True])
+def test_a_process_the_file_leaves_is_ended_with_its_child_and_does_not_hold_the_run(tmp_path, close_fds):
+    path, pidfile = _daemon_file(tmp_path, close_fds)
+    t = time.monotonic()
+    reg = load_claims_isolated(path, [(3, 2)])
+    took = time.monotonic() - t
+    assert list(reg.ids()) == ["confine-true"]
+    assert took < 30, took                      # the process holding the pipe sleeps 60 s
+    pid = int(pidfile.read_text())
+    assert not _alive(pid), f"the process {pid} the file left is still running"
+
+
+@LINUX
+def test_children_the_process_had_before_are_left_alone(tmp_path):
+    mine = subprocess.Popen([sys.executable, "-c", "import time; time.sleep(60)"])
+    try:
+        path, _ = _daemon_file(tmp_path, True)
+        load_claims_isolated(path, [(3, 2)])
+        assert mine.poll() is None and _alive(mine.pid)
+    finally:
+        mine.kill()
+        mine.wait()
+
+
+@LINUX
+def test_confined_kills_a_whole_subtree_but_not_the_older_children():
+    older = subprocess.Popen([sys.executable, "-c", "import time; time.sleep(60)"])
+    try:
+        with Confined() as c:
+            assert c.active
+            pid = os.fork()
+            if pid == 0:                        # a child that leaves a grandchild in a session of its own
+                if os.fork() == 0:
+                    os.setsid()
+                    time.sleep(60)
+                    os._exit(0)
+                os._exit(0)
+            os.waitpid(pid, 0)
+            deadline = time.monotonic() + 10
+            while not c.descendants() and time.monotonic() < deadline:
+                time.sleep(0.01)
+            left = c.descendants()
+            assert left and older.pid not in left
+        assert all(not _alive(p) for p in left), left
+        assert older.poll() is None
+    finally:
+        older.kill()
+        older.wait()
+
+
+def test_engine_files_see_a_change_an_addition_and_a_removal(tmp_path):
+    pkg = tmp_path / "pkg"
+    (pkg / "sub").mkdir(parents=True)
+    (pkg / "a.py").write_text("x = 1\n")
+    (pkg / "sub" / "b.py").write_text("y = 2\n")
+    before = engine_files([pkg])
+    assert changed_files(before, engine_files([pkg])) == []
+    (pkg / "a.py").write_text("x = 1\nx = 2\n")
+    (pkg / "sub" / "c.py").write_text("")
+    (pkg / "sub" / "b.py").unlink()
+    changed = changed_files(before, engine_files([pkg]))
+    assert changed == sorted(str(pkg / p) for p in ("a.py", "sub/b.py", "sub/c.py"))
+
+
+def test_the_package_roots_hold_the_engine_and_the_catalog():
+    import stiefelsym
+    roots = package_roots()
+    assert Path(os.path.realpath(stiefelsym.__path__[0])) in roots
+    files = engine_files(roots)
+    assert any(p.endswith(os.sep + "report.py") for p in files)
+
+
+def test_a_claims_file_whose_child_edits_the_engine_is_refused(tmp_path, monkeypatch):
+    """The digest check on its own (the module's roots pointed at a scratch directory the file edits)."""
+    import stiefelsym.confine as confine
+    scratch = tmp_path / "engine"
+    scratch.mkdir()
+    (scratch / "mod.py").write_text("x = 1\n")
+    monkeypatch.setattr(confine, "package_roots", lambda: [scratch])
+    path = tmp_path / "edits.py"
+    path.write_text(f"open({str(scratch / 'mod.py')!r}, 'a').write('x = 2\\n')\n" + CLAIM)
+    with pytest.raises(CatalogError, match="changed on disk.*mod.py"):
+        load_claims_isolated(path, [(3, 2)])
+    honest = tmp_path / "honest.py"
+    honest.write_text(CLAIM)
+    assert list(load_claims_isolated(honest, [(3, 2)]).ids()) == ["confine-true"]
+
+
+def test_the_verifying_process_imports_the_whole_package_before_the_fork():
+    code = ("import sys; from stiefelsym.userfile import _preload; _preload(); "
+            "print(all(m in sys.modules for m in ('stiefelsym.report', 'stiefelsym.cli_check', "
+            "'stiefelsym.flows_report', 'stiefelsym.speed', 'stiefelsym.mutate')))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120,
+                         env=dict(os.environ, PYTHONPATH=str(Path(__file__).resolve().parents[1])))
+    assert out.stdout.strip() == "True", out.stderr[-800:]
