@@ -122,17 +122,19 @@ def test_a_corrupted_claim_fails_with_a_certified_witness(claim, size):
 
 
 def test_numeric_is_not_a_proof_of_the_identity():
-    """A residual of 10⁻¹⁴ of its terms is nonzero, but below the resolution 10⁻⁸ of the term scale:
-    beyond the sizes where it is confirmed at exact points, the ball method says ``numeric`` with a
-    rigorous bound on it at this point, which is all it claims; where an exact point costs little
-    (n <= FLOAT_CONFIRM_N) the confirmation refutes it, as the exact methods do."""
-    from stiefelsym.methods import FLOAT_CONFIRM_N
-    n = FLOAT_CONFIRM_N + 2
-    res = run_one(SLIGHTLY_WRONG, Size(n, 2), "ball", seed=SEED)
-    assert res.verdict == "numeric"
-    bound = float(res.certificate.rsplit("|exact residual| <= ", 1)[1].split()[0])
+    """A residual of 10⁻¹⁴ of its terms is nonzero, but below the resolution 10⁻⁸ of the term scale: the
+    ball enclosure alone says ``numeric`` with a rigorous bound on it at this point, which is all it
+    claims; the confirmation at exact points mod p, which runs at every size, refutes it, as the exact
+    methods do."""
+    from stiefelsym.methods import _run_ball
+    n = 14
+    alone = _run_ball(SLIGHTLY_WRONG, n, 2, SEED, SLIGHTLY_WRONG.func, None)
+    assert alone.verdict == "numeric"
+    bound = float(alone.certificate.rsplit("|exact residual| <= ", 1)[1].split()[0])
     assert 0 < bound < 1e-8
-    assert run_one(SLIGHTLY_WRONG, Size(5, 2), "ball", seed=SEED).verdict == "fails"
+    for size in (Size(n, 2), Size(5, 2)):
+        res = run_one(SLIGHTLY_WRONG, size, "ball", seed=SEED)
+        assert res.verdict == "fails" and "exact points mod p" in res.message
     assert run_one(SLIGHTLY_WRONG, Size(5, 2), "modular", seed=SEED).verdict == "fails"
 
 

@@ -309,16 +309,15 @@ ABSORB = "s33_numeric_unconfirmed.py"
 ABSORB_IDS = ("adv-s33-absorb-X", "adv-s33-absorb-trace", "adv-s33-absorb-phi")
 
 
-@pytest.mark.xfail(strict=True, reason="open (AE): a `numeric` verdict is confirmed at exact points only at n <= 12 "
-                   "(methods.FLOAT_CONFIRM_N): at (13,2) float and ball pass (cX + X) - cX = 0, c = 10^20")
 def test_absorbed_terms_are_not_numeric_at_13_2():
+    """Closed (AE): float's and ball's `numeric` is confirmed at exact points mod p at every n."""
     got = run_all(ABSORB, size="13,2", methods=("float", "ball"), free=False)
     assert len(got) == 6 and not set(got.values()) & set(PASSING), got
 
 
-@pytest.mark.xfail(strict=True, reason="open (AE): the confirmation is skipped whenever a --hard case is given, even "
-                   "one that changes no parameter of the claim (an ordinary random point)")
 def test_absorbed_terms_are_not_numeric_under_a_hard_case():
+    """Closed (AE): under a hard case the confirmation runs at the hard point's exact parameters (here the
+    case changes no parameter of the claim: at random points)."""
     out = cli("verify", "--claims", str(HERE / ABSORB), "--method", "float", "--method", "ball", "--size", "3,2",
               "--hard", "near-pole")
     got = parse_all(out.stdout)
@@ -340,17 +339,16 @@ SEEDED = "s33_seeded_primes.py"
 SEEDED_IDS = ("adv-s33-seeded-sum", "adv-s33-seeded-matrix", "adv-s33-seeded-fraction", "adv-s33-seeded-absorbed")
 
 
-@pytest.mark.xfail(strict=True, reason="open (AF): the primes of the modular method are a function of the seed, the "
-                   "claim's id and the size (methods._prime_field), so a claim can be a multiple of their product: "
-                   "`checked` with a bound of 1e-43 for a false claim")
 def test_a_multiple_of_the_drawn_primes_is_not_checked_by_modular():
+    """Closed (AF): every draw comes from methods.draw_key, the seed with the digest of the claim's traced
+    graph; the primes the file computes at import are those of another key (its constant M is in the
+    digest), so they are not the run's primes."""
     got = run_all(SEEDED, ids=SEEDED_IDS, methods=("modular",), free=False)
     assert len(got) == 4 and not set(got.values()) & set(PASSING), got
 
 
-@pytest.mark.xfail(strict=True, reason="open (AF): float's `numeric` is confirmed at exact points modulo the same "
-                   "drawn primes, where the absorbed term M·X vanishes")
 def test_an_absorbed_multiple_of_the_drawn_primes_is_not_numeric():
+    """Closed (AF): the confirmation's modular points come from the claim's own digest too."""
     got = run_all(SEEDED, ids=("adv-s33-seeded-absorbed",), methods=("float",), free=False)
     assert got and not set(got.values()) & set(PASSING), got
 
@@ -364,10 +362,8 @@ def test_the_seeded_claims_are_false():
 POINTS = "s33_seeded_points.py"
 
 
-@pytest.mark.xfail(strict=True, reason="open (AF): the rational method's points are a function of the seed, the "
-                   "claim's id and the size: a claims file builds the same scenes at import and states a product "
-                   "of (tr PᵀP − v_t) that vanishes at each of them (`checked`, bound 1e-34)")
 def test_a_polynomial_vanishing_at_the_drawn_points_is_not_checked_by_rational():
+    """Closed (AF): the rational points are drawn from the digest of the graph that holds the v_t."""
     got = run_all(POINTS, methods=("rational",), free=False)
     assert got and not set(got.values()) & set(PASSING), got
 
