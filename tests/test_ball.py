@@ -138,6 +138,24 @@ def test_numeric_is_not_a_proof_of_the_identity():
     assert run_one(SLIGHTLY_WRONG, Size(5, 2), "modular", seed=SEED).verdict == "fails"
 
 
+@pytest.mark.parametrize("method", ["float", "ball"])
+def test_numeric_without_an_exact_point_is_not_a_pass(monkeypatch, method):
+    """Where the confirmation cannot evaluate the claim at one exact point mod p, float's or ball's
+    `numeric` is not reported as a pass: `inconclusive`, with the reason."""
+    import stiefelsym.methods as methods
+    real = methods.run_points
+
+    def no_point(*args, **kw):
+        res = real(*args, **kw)
+        res.verdict, res.message, res.checks = "error", "no exact point", []
+        return res
+    monkeypatch.setattr(methods, "run_points", no_point)
+    true = Claim(id="true-LA1", paper=("LA1",), kind="lax", section="5",
+                 func=_lax_along_a_wrong_flow(Fraction(0)), sizes=admissible(8))
+    res = run_one(true, Size(4, 2), method, seed=SEED)
+    assert res.verdict == "inconclusive" and "could not decide (error: no exact point)" in res.message
+
+
 def test_a_corrupted_claim_fails_at_n_200():
     res = run_one(control_claim(), Size(200, 2), "ball", seed=SEED)
     assert res.verdict == "fails", res.message
