@@ -20,7 +20,7 @@ import time
 from typing import Any, Callable
 
 from .certificate_check import check_certificate
-from .claims import Claim, Count, Rank, Size
+from .claims import Claim, Count, Rank, SizeSpec
 from .methods import _base_result, division_probe, _entries, _short, call_claim
 from .results import CheckOutcome, Result
 from .free import FreeScene, FreeSolveError, NeedsCoordinates, RewritingError
@@ -53,9 +53,8 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
     if columns or square:
         off = sizes_off_r(spec, columns, square)
         if off is not None:
-            return undecided(f"the statement declares {'r = n' if square else f'r = {columns}'} but admits "
-                             f"(n, r) = ({off.n},{off.r}): the hypotheses that hold there only are not used; "
-                             "decided by the fixed-size methods")
+            return undecided(f"the statement declares {'r = n' if square else f'r = {columns}'} but {off}: the "
+                             "hypotheses that hold there only are not used; decided by the fixed-size methods")
     try:
         # a claim stated at one r = 1 or 2 alone may name the columns E_1, ..., E_r of R^r (their sum
         # E_1E_1^T + ... + E_rE_r^T = I_r is then a hypothesis)
@@ -218,22 +217,25 @@ def fixed_r(claim: Claim) -> int:
     return lo
 
 
-#: sizes n <= this at which a declaration of one r is checked against the statement's admits()
-R_CHECK_N = 16
+def declared_by_fields(spec: Any) -> bool:
+    """The statement's admits() is decided by its declared fields before anything else: a plain
+    :class:`SizeSpec` (its condition ``where`` only narrows what r_min, r_max, r_is_n admit), or a user's
+    plain statement rebuilt from its child (:class:`.userfile.TabledSizes` with ``fields_first``).  A
+    subclass's admits() is its own code, which may admit any size at any n."""
+    from .userfile import TabledSizes
+    return type(spec) is SizeSpec or (type(spec) is TabledSizes and spec.fields_first is True)
 
 
-def sizes_off_r(spec: Any, columns: int, square: bool) -> Size | None:
-    """A size that the statement admits or lists although its declaration fixes r (r = columns, or
-    r = n), or None: the declaration is believed only when the sizes say the same."""
-    def off(n: int, r: int) -> bool:
-        return (square and r != n) or (columns and r != columns)
+def sizes_off_r(spec: Any, columns: int, square: bool) -> str | None:
+    """Why the statement's declaration that fixes r (r = columns, or r = n) is not believed, or None: it is
+    believed only when every size the statement lists has that r and its admits() is decided by the
+    declared fields (:func:`declared_by_fields`), so that every size it admits, at every n, has it."""
     for z in spec:
-        if off(z.n, z.r):
-            return Size(z.n, z.r)
-    for n in range(1, R_CHECK_N + 1):
-        for r in range(1, n + 1):
-            if off(n, r) and spec.admits(n, r):
-                return Size(n, r)
+        if (square and z.r != z.n) or (columns and z.r != columns):
+            return f"lists (n, r) = ({z.n},{z.r})"
+    if not declared_by_fields(spec):
+        return ("its admits() is its own code (a subclass of SizeSpec), so the declared r is not known to hold "
+                "at every size it admits")
     return None
 
 

@@ -217,7 +217,7 @@ def _claim_data(c: Claim, needed: Sequence[tuple[int, int]]) -> dict:
         "sizes": {"list": [list(p) for p in listed], "n_min": spec.n_min, "r_min": spec.r_min,
                   "r_max": spec.r_max, "n_max": spec.n_max, "r_is_n": bool(spec.r_is_n),
                   "condition": spec.condition, "where": spec.where is not None or type(spec) is not SizeSpec,
-                  "admits": admits},
+                  "fields_first": type(spec) is SizeSpec, "admits": admits},
         "fails_at": fails,
         "keys": [None] + [list(p) for p in traced],
         "corrections": [{"description": k.description, "changes": k.changes, "expect": k.expect}
@@ -642,12 +642,20 @@ class _Lookup:
         return v
 
 
+@dataclasses.dataclass(frozen=True)
 class TabledSizes(SizeSpec):
     """A size statement rebuilt from a child's data: its fields as sent, and ``admits`` the child's own answer
     (the claim's ``admits``, whatever it overrides) at every size of the table; beyond the table, the fields'
-    bounds when the statement has no further condition, else an error."""
+    bounds when the statement has no further condition, else an error.  A statement that was a plain
+    :class:`SizeSpec` in the child (``fields_first``: its admits() reads its declared fields before its
+    condition) admits here only what its fields admit, whatever the table says: its declared r (r_min = r_max,
+    r_is_n) holds at every size it admits, by construction."""
+
+    fields_first: bool = False
 
     def admits(self, n: int, r: int) -> bool:
+        if self.fields_first and not SizeSpec.admits(dataclasses.replace(self, where=None), n, r):
+            return False
         table = getattr(self.where, "table", None)
         if table is not None and (n, r) in table:
             return bool(self.where(n, r))                   # type: ignore[misc]
@@ -675,7 +683,7 @@ def _claim(d: Any, path: str) -> Claim:
                        r_min=_get(spec_d, "r_min", int), r_max=_opt_int(spec_d, "r_max"),
                        where=admits,
                        condition=_get(spec_d, "condition", str), n_max=_opt_int(spec_d, "n_max"),
-                       r_is_n=_get(spec_d, "r_is_n", bool))
+                       r_is_n=_get(spec_d, "r_is_n", bool), fields_first=_get(spec_d, "fields_first", bool))
     realization = _get(d, "realization", str)
     src_path, line, name = _get(d, "path", str), _get(d, "line", int), _get(d, "name", str)
     fails = _get(d, "fails_at", list, optional=True)

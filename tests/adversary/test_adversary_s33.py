@@ -121,11 +121,11 @@ BEYOND_FALSE = ("adv-s33-beyond-col1", "adv-s33-beyond-square", "adv-s33-beyond-
                 "adv-s33-beyond-square-where")
 
 
-@pytest.mark.xfail(strict=True, reason="open (AB): free_method.sizes_off_r checks a declared r (r_min = r_max, "
-                   "r_is_n) against admits() at n <= 16 only, so a statement admitting (17, 2) buys the r = 1 / "
-                   "r = n hypotheses: proved for all n, r, false at (17,2)")
 @pytest.mark.parametrize("method", ["free", "auto"])
 def test_a_declared_r_contradicted_beyond_16_is_not_proved_for_every_size(method):
+    """Closed (AB): a declared r is believed only when admits() is decided by the declared fields (a plain
+    SizeSpec, or a user's plain statement rebuilt with `fields_first`, whose admits() conjoins them); a
+    subclass's own admits() leaves the claim to the fixed-size methods."""
     v = verdicts(BEYOND, method, ids=BEYOND_FALSE) if method == "free" else \
         parse_all(cli("verify", *BEYOND_FALSE, "--claims", str(HERE / BEYOND), "--method", "auto").stdout)
     got = {c: x for c, x in v.items()} if method == "free" else {c: x for (c, m), x in v.items() if m == "free"}
