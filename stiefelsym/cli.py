@@ -947,10 +947,10 @@ def show(claim_id: str, claims_files: tuple[str, ...]) -> None:
 def derive(claim_id: str, claims_files: tuple[str, ...]) -> None:
     """Print the dimension-free proof of CLAIM as LaTeX: each residual, the rules that
     reduce it, its normal form.  Exit status 1 when the claim is not proved for all n, r."""
-    from .free_method import run_free
+    from .runner import run_free_guarded
     registry, _ = _registry(claims_files, (claim_id,))
     c = _lookup(registry, claim_id)
-    res = run_free(c)
+    res = run_free_guarded(c)
     click.echo(f"% {c.id} ({', '.join(c.paper)}): {res.verdict} for all n, r", err=False)
     if res.verdict != "proved":
         click.echo(f"% {res.message}")

@@ -126,8 +126,7 @@ def check_results(records: list[dict], registry: Registry, echo: Callable[[str],
     compared: a hand-edited verdict is caught even where the digest is the claim's.  With the file's
     ``meta`` (its command's methods and sizes), every run the command planned for a claim the file
     has records of must have its record (:func:`missing_runs`)."""
-    from .free_method import run_free
-    from .runner import graph_digest, run_one
+    from .runner import graph_digest, run_free_guarded, run_one
     bad = 0
     for p in certificate_problems(records):
         echo(f"REJECTED {p}")
@@ -207,7 +206,7 @@ def check_results(records: list[dict], registry: Registry, echo: Callable[[str],
             key = (cid, r.get("variant"))
             again = free_done.get(key)
             if again is None:
-                again = free_done[key] = run_free(claim, func)
+                again = free_done[key] = run_free_guarded(claim, func)
             if again.verdict != r.get("verdict"):
                 echo(f"REJECTED {where}: the record says {r.get('verdict')!r}, the dimension-free method again "
                      f"says {again.verdict!r}")
@@ -217,7 +216,7 @@ def check_results(records: list[dict], registry: Registry, echo: Callable[[str],
             key = (cid, r.get("variant"))
             again = free_done.get(key)
             if again is None:
-                again = free_done[key] = run_free(claim, func)
+                again = free_done[key] = run_free_guarded(claim, func)
             if again.verdict != "proved" or _canonical(again.certificate_data) != _canonical(r.get("certificate_data")):
                 echo(f"REJECTED {where}: the certificate is not the one the claim's graph gives "
                      f"(re-derived: {again.verdict})")

@@ -68,6 +68,10 @@ class NoGraph(ValueError):
     """The claims file was traced in a child process, and not at the size or realization asked for."""
 
 
+class TraceEnded(NoGraph):
+    """The claim's tracing in its claims file's child process ran out of time or ended its process."""
+
+
 # --------------------------------------------------------------------------- the wire format
 
 def _enc(v: Any) -> Any:
@@ -518,8 +522,9 @@ class _Recorded:
 
 class _Budget:
     """A trace that did not finish in the child: it ran out of the run's time budget, or its process died.
-    Replayed as it happened (the computation does not finish here either, or its process dies the same
-    way), so that the run's budgets give the verdict they give a claim traced in the run's worker."""
+    Replayed as an exception (:class:`TraceEnded`) in whatever process asks for the graph: never as the
+    process's own end (a replay that exited or killed itself would let the file choose the exit status of
+    ``check`` or ``derive``, which run it in their own process), so the run's verdict is ``error``."""
 
     __slots__ = ("what", "how")
 
@@ -531,15 +536,10 @@ class _Budget:
 
     def throw(self) -> None:
         if self.what == "timeout":
-            while True:             # the budget of the process that asked ends it
-                time.sleep(3600)
-        sig = self.how.removeprefix("killed by ")
-        if sig != self.how and sig.isidentifier() and isinstance(getattr(signal, sig, None), signal.Signals):
-            os.kill(os.getpid(), getattr(signal, sig))
-            time.sleep(5)
-        if self.how.startswith("exited with status ") and self.how.rsplit(" ", 1)[-1].isdigit():
-            os._exit(int(self.how.rsplit(" ", 1)[-1]) & 0xFF)
-        raise NoGraph(f"the tracing of the claim ended without a result ({self.how or 'its process died'})")
+            raise TraceEnded("the tracing of the claim did not finish within its time budget in its claims "
+                             "file's child process")
+        raise TraceEnded(f"the tracing of the claim ended without a result ({self.how or 'its process died'}) in "
+                         "its claims file's child process")
 
 
 def _graph(data: Any) -> Any:
