@@ -60,3 +60,13 @@ def seeded_absorbed(s):
     """False: the residual is M·X; float and ball absorb it into c·X, and the confirmation of their `numeric` at
     exact points modulo the drawn primes sees M·X ≡ 0 there."""
     return {"r": (s.X * _C4 + (s.X + s.X * (_M4 - 1))) - s.X * _C4}
+
+
+_M5 = _product("adv-s33-seeded-auto", 13, 2)
+
+
+@claim("adv-s33-seeded-auto", kind="id", sizes=admissible(n_max=13, n_min=13, r_min=2, r_max=2, condition="(13,2)"),
+       statement="X + (M - 1) X = 0 at (13,2)")
+def seeded_auto(s):
+    """False: the residual is M·X; at (13,2) auto chooses the modular method (exact is beyond its budget there)."""
+    return {"r": s.X + s.X * (_M5 - 1)}

@@ -36,3 +36,14 @@ def raises_zerodiv(s):
     """False at r = 2."""
     E1, E2 = twisted.basis_vector(s, 0), twisted.basis_vector(s, 1)
     return {"r": E1 @ E1.T + E2 @ E2.T - 2 * s.Ir}
+
+
+def _fails_nowhere_known(n, r):
+    raise ValueError("this erratum has no answer at any size")
+
+
+@claim("adv-s33-raises-erratum", kind="id", sizes=RaisesAtFiveThree((Size(2, 2), Size(3, 2)), r_min=2, r_max=2),
+       statement="X^T X = I_r", fails_at=_fails_nowhere_known, erratum="(its erratum sizes raise)")
+def raises_erratum(s):
+    """True; its erratum sizes (fails_at) raise: `verify` says error, `show` prints a traceback."""
+    return {"r": s.X.T @ s.X - s.Ir}

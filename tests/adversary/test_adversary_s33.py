@@ -59,6 +59,7 @@ def run_all(claims_file, ids=(), size="3,2", methods=ALL_METHODS, env=None, free
     return got
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("mode", ["exit0", pytest.param("exit1", marks=pytest.mark.slow),
                                   pytest.param("kill", marks=pytest.mark.slow)])
 def test_verify_answers_error_for_a_claim_whose_tracing_ends_its_process(mode):
@@ -117,7 +118,7 @@ BEYOND_FALSE = ("adv-s33-beyond-col1", "adv-s33-beyond-square", "adv-s33-beyond-
                 "adv-s33-beyond-square-where")
 
 
-@pytest.mark.parametrize("method", ["free", "auto"])
+@pytest.mark.parametrize("method", ["free", pytest.param("auto", marks=pytest.mark.slow)])
 def test_a_declared_r_contradicted_beyond_16_is_not_proved_for_every_size(method):
     """Closed (AB): a declared r is believed only when admits() is decided by the declared fields (a plain
     SizeSpec, or a user's plain statement rebuilt with `fields_first`, whose admits() conjoins them); a
@@ -128,6 +129,7 @@ def test_a_declared_r_contradicted_beyond_16_is_not_proved_for_every_size(method
     assert set(got) == set(BEYOND_FALSE) and not set(got.values()) & set(PASSING), got
 
 
+@pytest.mark.slow
 def test_the_claims_declared_at_one_r_fail_at_17_2_which_their_statements_admit():
     """The control: (17, 2) is one of the claims' sizes (an explicit --size is checked against the statement
     and admitted), and every fixed-size method refutes them there (exact: beyond its time budget at n = 17);
@@ -191,7 +193,7 @@ MALFORMED = {
 }
 #: the ones `stiefelsym report` answers with a traceback (it reads no meta sizes, methods or hard case)
 MALFORMED_REPORT = ("claim-list", "claim-dict", "n-list", "r-dict", "method-list")
-FAST = ("claim-list", "meta-hard-unknown")
+FAST = ("claim-list",)
 
 
 @pytest.mark.parametrize("case", [pytest.param(c, marks=[] if c in FAST else [pytest.mark.slow]) for c in MALFORMED])
@@ -284,12 +286,19 @@ def test_derive_answers_a_raising_statement_without_a_traceback(cid):
     assert out.returncode == 1 and "Traceback" not in out.stderr, out.stderr[-800:]
 
 
+@pytest.mark.xfail(strict=True, reason="open (AD): `show` evaluates the erratum sizes (fails_at) in its own process, "
+                   "unguarded: a fails_at that raises is a Python traceback")
+def test_show_answers_a_raising_erratum_without_a_traceback():
+    out = cli("show", "adv-s33-raises-erratum", "--claims", str(HERE / RAISES))
+    assert out.returncode in (0, 2) and "Traceback" not in out.stderr, out.stderr[-800:]
+
+
 @pytest.mark.slow
 def test_verify_answers_a_raising_statement_with_error():
     """The control: in `verify` the free run never passes (since AB was closed it does not consult a subclass's
     admits(), so the statement that raises is not asked: undecided); the fixed-size methods decide at (3,2)
     (the true claim proved or checked, the false one fails)."""
-    got = run_all(RAISES, methods=("exact", "modular", "float"))
+    got = run_all(RAISES, ids=("adv-s33-raises-value", "adv-s33-raises-zerodiv"), methods=("exact", "modular", "float"))
     assert got[("adv-s33-raises-value", "free")] == got[("adv-s33-raises-zerodiv", "free")] == "undecided", got
     assert got[("adv-s33-raises-value", "exact")] == "proved", got
     assert {got[("adv-s33-raises-zerodiv", m)] for m in ("exact", "modular", "float")} == {"fails"}, got
@@ -316,6 +325,7 @@ def test_absorbed_terms_are_not_numeric_under_a_hard_case():
     assert len(got) == 6 and not set(got.values()) & set(PASSING), got
 
 
+@pytest.mark.slow
 def test_absorbed_terms_fail_where_exact_arithmetic_looks():
     """The controls: at (13,2) modular, rational and auto refute the claims; at (3,2) without a hard case float
     and ball are confirmed at exact points and refute them; exact refutes them at (3,2)."""
@@ -339,12 +349,22 @@ def test_a_multiple_of_the_drawn_primes_is_not_checked_by_modular():
     assert len(got) == 4 and not set(got.values()) & set(PASSING), got
 
 
+@pytest.mark.slow
 def test_an_absorbed_multiple_of_the_drawn_primes_is_not_numeric():
     """Closed (AF): the confirmation's modular points come from the claim's own digest too."""
     got = run_all(SEEDED, ids=("adv-s33-seeded-absorbed",), methods=("float",), free=False)
     assert got and not set(got.values()) & set(PASSING), got
 
 
+@pytest.mark.slow
+@pytest.mark.xfail(strict=True, reason="open (AF): at (13,2) auto chooses the modular method, whose primes the file "
+                   "computed: `checked` for a false claim")
+def test_auto_does_not_pass_a_multiple_of_the_drawn_primes_at_13_2():
+    got = run_all(SEEDED, ids=("adv-s33-seeded-auto",), size="13,2", methods=("auto",), free=False)
+    assert got and not set(got.values()) & set(PASSING), got
+
+
+@pytest.mark.slow
 def test_the_seeded_claims_are_false():
     """The controls: exact and rational refute all four (over Q the residual is M·tr(PᵀP), M·X, (M/3)·X, M·X)."""
     got = run_all(SEEDED, ids=SEEDED_IDS, methods=("exact", "rational"), free=False)
@@ -360,7 +380,102 @@ def test_a_polynomial_vanishing_at_the_drawn_points_is_not_checked_by_rational()
     assert got and not set(got.values()) & set(PASSING), got
 
 
+@pytest.mark.slow
 def test_the_polynomial_vanishing_at_the_drawn_points_is_false():
     """The controls: exact, modular and ball refute it."""
     got = run_all(POINTS, methods=("exact", "modular", "ball"), free=False)
     assert len(got) == 3 and set(got.values()) == {"fails"}, got
+
+
+@pytest.mark.slow
+@pytest.mark.xfail(strict=True, reason="open (AA): a tracing that outlasts its budget (300 s) is recorded as "
+                   "'timeout' and replayed in derive's own process as a sleep without end (userfile._Budget.throw)")
+def test_derive_of_a_claim_whose_tracing_outlasts_its_budget_finishes():
+    import subprocess
+    import sys
+    try:
+        out = subprocess.run([sys.executable, "-m", "stiefelsym", "derive", "adv-s33-budget-ender", "--claims",
+                              str(HERE / BUDGET)], cwd=ROOT, capture_output=True, text=True, timeout=480,
+                             env=_budget_env("sleep"))
+    except subprocess.TimeoutExpired:
+        pytest.fail("derive did not finish in 480 s (the tracing budget is 300 s)")
+    assert out.returncode == 1, (out.returncode, out.stderr[-800:])
+
+
+# -- AG. the division probe's fixed primes ------------------------------------------------------------------
+
+PROBE = "s33_probe_primes.py"
+
+
+@pytest.mark.slow
+@pytest.mark.xfail(strict=True, reason="open (AG): the division probe works modulo three fixed public primes "
+                   "(methods.PROBE_PRIMES): a divisor 1 + (P − 1), P their product, is a nonzero number that the "
+                   "probe takes for a division by zero: exact, auto and free answer error for true claims")
+def test_a_divisor_that_is_a_multiple_of_the_probe_primes_is_not_an_error():
+    got = run_all(PROBE, methods=("exact", "auto"))
+    assert len(got) == 4 and "error" not in got.values(), got
+
+
+@pytest.mark.slow
+def test_the_probe_prime_claims_pass_the_point_methods():
+    """The control: modular, rational, float and ball pass the two true claims."""
+    got = run_all(PROBE, methods=("modular", "rational", "float", "ball"), free=False)
+    assert len(got) == 8 and set(got.values()) <= set(PASSING), got
+
+
+# -- AH. a passing verdict for every n, r that no method gives, rendered by report -------------------------
+
+@pytest.mark.xfail(strict=True, reason="open (AH): report refuses a `proved` with no size without a certificate, "
+                   "but renders `checked` / `numeric` with no size (no fixed-size method runs without a size, free "
+                   "never says them) and counts the false claim as holding at every size computed")
+@pytest.mark.parametrize("edit", [{"n": None, "r": None, "method": "modular", "verdict": "checked",
+                                   "false_pass_bound": 1e-30},
+                                  pytest.param({"n": None, "r": None, "method": "free", "verdict": "numeric"},
+                                               marks=pytest.mark.slow)])
+def test_report_refuses_a_passing_verdict_for_every_size_that_no_method_gives(honest_results, tmp_path, edit):
+    forged = _forge(honest_results, tmp_path, edit)
+    out = cli("report", "--results", str(forged), "--report-dir", str(tmp_path / "rep"))
+    assert out.returncode == 2, (out.returncode, out.stderr[-800:])
+
+
+@pytest.mark.xfail(strict=True, reason="open (AH): report does not ask for the runs the file's command planned "
+                   "(integrity.missing_runs, which check applies): with the false claim's failing record dropped, "
+                   "its headline counts the claim among those that hold and says every verdict is as expected")
+def test_report_refuses_a_results_file_with_a_planned_run_dropped(honest_results, tmp_path):
+    d = json.loads(json.dumps(honest_results))
+    d["results"] = [r for r in d["results"] if (r["claim"], r["method"]) != ("adv-s33-rec-false", "exact")]
+    path = tmp_path / "dropped.json"
+    path.write_text(json.dumps(d))
+    out = cli("report", "--results", str(path), "--report-dir", str(tmp_path / "rep"))
+    assert out.returncode == 2, (out.returncode, out.stderr[-800:])
+
+
+# -- AI. the engine's source on disk, rewritten by the file's child -----------------------------------------
+
+DISK = "s33_engine_on_disk.py"
+
+
+def _scratch_engine(tmp_path):
+    """A copy of the package under tmp_path, marked as the scratch copy s33_engine_on_disk.py may rewrite."""
+    import shutil
+    root = tmp_path / "copy"
+    shutil.copytree(ROOT / "stiefelsym", root / "stiefelsym", ignore=shutil.ignore_patterns("__pycache__"))
+    (root / "stiefelsym" / "S33_SCRATCH_COPY").write_text("")
+    return root
+
+
+@pytest.mark.xfail(strict=True, reason="open (AI): the file's child rewrites stiefelsym/report.py on disk; the "
+                   "verifying process imports report lazily after the child ran, so the file's code runs there and "
+                   "turns the false claim's fails into proved in the summary, results.json and the exit status")
+def test_a_claims_file_that_rewrites_the_engine_on_disk_changes_no_verdict(tmp_path):
+    import subprocess
+    import sys
+    root = _scratch_engine(tmp_path)
+    env = dict(os.environ, PYTHONPATH=str(root))
+    out = subprocess.run([sys.executable, "-m", "stiefelsym", "verify", "--claims", str(HERE / DISK), "--method",
+                          "exact", "--size", "3,2", "--report-dir", str(tmp_path / "rep")], cwd=root, env=env,
+                         capture_output=True, text=True, timeout=300)
+    assert "S33 PAYLOAD" not in (ROOT / "stiefelsym" / "report.py").read_text()    # the engine itself untouched
+    assert "S33 PAYLOAD" in (root / "stiefelsym" / "report.py").read_text(), out.stderr[-800:]   # the copy was
+    recs = json.loads((tmp_path / "rep" / "results.json").read_text())["results"]
+    assert [r["verdict"] for r in recs] == ["fails"] and out.returncode == 1, (recs, out.returncode)
