@@ -723,13 +723,14 @@ def _rational_witness(claim: Claim, n: int, r: int, seed: int, func: Callable) -
     return run_points(claim, n, r, "rational", seed, func, trials=1).witness
 
 
-#: three primes, one per probe point (a divisor that is not identically zero vanishes at a random
-#: point modulo all three with negligible probability)
-PROBE_PRIMES = (2**61 - 1, 2**62 - 57, 2**60 - 93)
+#: the probe's points, each over its own prime drawn from the run's :func:`draw_key` (a divisor that is not
+#: identically zero vanishes at a random point modulo all of them with negligible probability; drawn, not
+#: fixed, so that no claim can be written with a divisor that is a nonzero multiple of the probe's primes)
+PROBE_POINTS = 3
 
 
 #: the outcome of the division probe per claim function and (claim, realization, size, seed, strict):
-#: a pure function of these (its points come from the seed, the claim's id and the size), so it
+#: a pure function of these (its points come from the seed and the claim's graph: draw_key), so it
 #: runs once per claim function, like the cached degree bound of the randomized methods
 _PROBES: "weakref.WeakKeyDictionary[Callable, dict]" = weakref.WeakKeyDictionary()
 
@@ -770,7 +771,8 @@ def _division_probe(claim: Claim, n: int, r: int, func: Callable | None = None, 
             return (f"the division probe could not trace the claim at (n={n}, r={r}) ({type(exc).__name__}: "
                     f"{exc}), so a division by an identically zero expression cannot be excluded")
         return ""
-    for attempt, p in enumerate(PROBE_PRIMES):
+    for attempt in range(PROBE_POINTS):
+        p = random_prime(random.Random(f"{key}|division-probe|prime|{attempt}"))
         rng = random.Random(f"{key}|division-probe|{attempt}")
         scene = Scene(n, r, ModularField(p), chart="cayley", rng=rng, component=attempt % 2 if r == n else 0,
                       realization=claim.realization)

@@ -357,9 +357,8 @@ def test_an_absorbed_multiple_of_the_drawn_primes_is_not_numeric():
 
 
 @pytest.mark.slow
-@pytest.mark.xfail(strict=True, reason="open (AF): at (13,2) auto chooses the modular method, whose primes the file "
-                   "computed: `checked` for a false claim")
 def test_auto_does_not_pass_a_multiple_of_the_drawn_primes_at_13_2():
+    """Closed (AF): auto's modular run draws its primes from the claim's own digest."""
     got = run_all(SEEDED, ids=("adv-s33-seeded-auto",), size="13,2", methods=("auto",), free=False)
     assert got and not set(got.values()) & set(PASSING), got
 
@@ -388,9 +387,8 @@ def test_the_polynomial_vanishing_at_the_drawn_points_is_false():
 
 
 @pytest.mark.slow
-@pytest.mark.xfail(strict=True, reason="open (AA): a tracing that outlasts its budget (300 s) is recorded as "
-                   "'timeout' and replayed in derive's own process as a sleep without end (userfile._Budget.throw)")
 def test_derive_of_a_claim_whose_tracing_outlasts_its_budget_finishes():
+    """Closed (AA): a replayed 'timeout' raises userfile.TraceEnded: derive answers error, exit 1."""
     import subprocess
     import sys
     try:
@@ -408,10 +406,8 @@ PROBE = "s33_probe_primes.py"
 
 
 @pytest.mark.slow
-@pytest.mark.xfail(strict=True, reason="open (AG): the division probe works modulo three fixed public primes "
-                   "(methods.PROBE_PRIMES): a divisor 1 + (P − 1), P their product, is a nonzero number that the "
-                   "probe takes for a division by zero: exact, auto and free answer error for true claims")
 def test_a_divisor_that_is_a_multiple_of_the_probe_primes_is_not_an_error():
+    """Closed (AG): the probe's primes are drawn from methods.draw_key (seed and graph digest), not fixed."""
     got = run_all(PROBE, methods=("exact", "auto"))
     assert len(got) == 4 and "error" not in got.values(), got
 
