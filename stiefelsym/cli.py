@@ -926,7 +926,11 @@ def show(claim_id: str, claims_files: tuple[str, ...]) -> None:
     if c.title:
         click.echo(f"docstring:   {c.title}")
     click.echo(f"statement:   {c.statement or '(none given)'}")
-    failing = [f"({z.n},{z.r})" for z in c.sizes if c.expects_failure(z.n, z.r)]
+    try:
+        failing = [f"({z.n},{z.r})" for z in c.sizes if c.expects_failure(z.n, z.r)]
+        unanswered = ""
+    except Exception as exc:    # noqa: BLE001 - the claim's erratum sizes (fails_at) raise: shown, not a traceback
+        failing, unanswered = [], f"{type(exc).__name__}: {_one_line(str(exc))}"
     exception = "; except where the erratum below says" if failing and c.expect == "holds" else ""
     click.echo(f"expect:      {EXPECT_MEANING.get(c.expect, c.expect)}{exception}")
     click.echo(f"realization: {c.realization}")
@@ -935,6 +939,8 @@ def show(claim_id: str, claims_files: tuple[str, ...]) -> None:
     if failing:
         click.echo(f"erratum:     fails as printed at {' '.join(failing)}"
                    + (f": {_one_line(c.erratum)}" if c.erratum else ""))
+    if unanswered:
+        click.echo(f"erratum:     its sizes (fails_at) cannot be evaluated at the listed sizes ({unanswered})")
     for corr in c.corrections:
         click.echo(f"correction:  {corr.description}")
     click.echo(f"source:      {_source(c)}")

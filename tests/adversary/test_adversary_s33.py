@@ -286,9 +286,8 @@ def test_derive_answers_a_raising_statement_without_a_traceback(cid):
     assert out.returncode == 1 and "Traceback" not in out.stderr, out.stderr[-800:]
 
 
-@pytest.mark.xfail(strict=True, reason="open (AD): `show` evaluates the erratum sizes (fails_at) in its own process, "
-                   "unguarded: a fails_at that raises is a Python traceback")
 def test_show_answers_a_raising_erratum_without_a_traceback():
+    """Closed (AD): show evaluates the erratum sizes guarded and says that they raise."""
     out = cli("show", "adv-s33-raises-erratum", "--claims", str(HERE / RAISES))
     assert out.returncode in (0, 2) and "Traceback" not in out.stderr, out.stderr[-800:]
 
