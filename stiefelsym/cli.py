@@ -1007,7 +1007,18 @@ def report(results_file: Path | None, report_dir: Path | None, claims_files: tup
         meta, results = load_results(source)
     except (OSError, UnicodeDecodeError, ValueError, KeyError, TypeError, AttributeError) as exc:
         raise InputError(f"{source} is not a stiefelsym results file: {_one_line(exc)}") from None
-    from .integrity import certificate_problems, claim_field_edits
+    from .integrity import (MAX_N_CHECKED, certificate_problems, claim_field_edits, missing_runs,
+                            size_method_problems)
+    from .hard import HARD_CASES
+    from .results import meta_problems
+    bad_meta = meta_problems(meta, _runner().METHODS, tuple(HARD_CASES), MAX_N_CHECKED)
+    if bad_meta:
+        raise InputError(f"{source}: refused, its meta (the command the file is the run of) is malformed: "
+                         f"{'; '.join(bad_meta)}")
+    for r in results:
+        odd = size_method_problems(r.to_json())
+        if odd:
+            raise InputError(f"{source}: refused, record of {r.claim!r}: {odd[0]}")
     problems = certificate_problems(results)
     if problems:
         raise InputError(f"{source}: refused, {len(problems)} record(s) without a valid certificate: {problems[0]} "
@@ -1023,6 +1034,10 @@ def report(results_file: Path | None, report_dir: Path | None, claims_files: tup
             raise InputError(f"{source}: refused, record of {cid!r}: its {', '.join(edits)} "
                              f"{'is' if len(edits) == 1 else 'are'} not the claim's (`stiefelsym check` re-checks "
                              "every record)")
+    missing = missing_runs([r.to_json() for r in results], registry, meta) if meta else []
+    if missing:
+        raise InputError(f"{source}: refused, {len(missing)} run(s) its command planned have no record: {missing[0]} "
+                         "(a results file is the whole run of its command)")
     target = report_dir or source.parent
     _check_report_dir(target)
     mutation = _mutation(source.parent)

@@ -73,6 +73,25 @@ def _evidence_edits(record: dict, again: dict) -> list[str]:
     return [k for k in EVIDENCE if _canonical(record.get(k)) != _canonical(again.get(k))]
 
 
+#: the verdicts the dimension-free method gives (a record with no size is its record)
+FREE_VERDICTS = ("proved", "undecided", "error", "inconclusive")
+
+
+def size_method_problems(r: dict) -> list[str]:
+    """A record whose size and method do not fit: a record with no size is the dimension-free method's, with
+    one of its verdicts (no fixed-size method runs without a size, and `free` never says `checked` or
+    `numeric`); a record with a size is a fixed-size method's."""
+    n, method, verdict = r.get("n"), r.get("method"), r.get("verdict")
+    if n is None and method != "free":
+        return [f"a {method!r} record with no size (only the dimension-free method runs for every n, r)"]
+    if n is None and verdict not in FREE_VERDICTS:
+        return [f"the verdict {verdict!r} for every n, r (the dimension-free method says one of "
+                f"{', '.join(FREE_VERDICTS)})"]
+    if n is not None and method == "free":
+        return ["a dimension-free record with a size"]
+    return []
+
+
 #: the largest --max-n of a results file that `stiefelsym check` lists the planned runs of (every size up to
 #: it is asked of each claim's statement)
 MAX_N_CHECKED = 256
@@ -142,7 +161,7 @@ def check_results(records: list[dict], registry: Registry, echo: Callable[[str],
     total = len(records)
     well_formed = []
     for i, r in enumerate(records):
-        problems = record_problems(r)
+        problems = record_problems(r) or size_method_problems(r)
         if problems:
             echo(f"REJECTED record {i + 1}: malformed: {'; '.join(problems)}")
             bad += 1

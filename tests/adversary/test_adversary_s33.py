@@ -420,23 +420,19 @@ def test_the_probe_prime_claims_pass_the_point_methods():
 
 # -- AH. a passing verdict for every n, r that no method gives, rendered by report -------------------------
 
-@pytest.mark.xfail(strict=True, reason="open (AH): report refuses a `proved` with no size without a certificate, "
-                   "but renders `checked` / `numeric` with no size (no fixed-size method runs without a size, free "
-                   "never says them) and counts the false claim as holding at every size computed")
 @pytest.mark.parametrize("edit", [{"n": None, "r": None, "method": "modular", "verdict": "checked",
                                    "false_pass_bound": 1e-30},
                                   pytest.param({"n": None, "r": None, "method": "free", "verdict": "numeric"},
                                                marks=pytest.mark.slow)])
 def test_report_refuses_a_passing_verdict_for_every_size_that_no_method_gives(honest_results, tmp_path, edit):
+    """Closed (AH): a record with no size is the dimension-free method's, with one of its verdicts (integrity.size_method_problems): report refuses it (exit 2), check rejects it."""
     forged = _forge(honest_results, tmp_path, edit)
     out = cli("report", "--results", str(forged), "--report-dir", str(tmp_path / "rep"))
     assert out.returncode == 2, (out.returncode, out.stderr[-800:])
 
 
-@pytest.mark.xfail(strict=True, reason="open (AH): report does not ask for the runs the file's command planned "
-                   "(integrity.missing_runs, which check applies): with the false claim's failing record dropped, "
-                   "its headline counts the claim among those that hold and says every verdict is as expected")
 def test_report_refuses_a_results_file_with_a_planned_run_dropped(honest_results, tmp_path):
+    """Closed (AH): report applies integrity.missing_runs as check does (exit 2)."""
     d = json.loads(json.dumps(honest_results))
     d["results"] = [r for r in d["results"] if (r["claim"], r["method"]) != ("adv-s33-rec-false", "exact")]
     path = tmp_path / "dropped.json"
