@@ -312,7 +312,7 @@ def gram_does_not_commute_with_psi_squared(s):
 
 
 @claim("gram-commutes-with-psi-if-r-is-1-or-n", paper=("so(n)+so(r)", "SO(n)-inv"), kind="pb",
-       sizes=admissible(5, where=lambda n, r: r in (1, n), condition="r = 1 or r = n"),
+       sizes=admissible(5, where=lambda n, r: r in (1, n), condition="r = 1 or r = n", r_in=(1, "n")),
        statement=r"r=n:\ P^TP=-\tfrac14\Psi^2;\quad r=1:\ \Psi=0;\quad \{(p_i,p_j),\langle\Psi,\Psi\rangle\}=0")
 def gram_commutes_with_psi_in_the_exceptional_cases(s):
     """For r = n, PᵀP = −Ψ²/4 on T*V, and for r = 1, Ψ = 0, so in both cases the functions (p_i, p_j) Poisson-commute with ⟨Ψ, Ψ⟩ (the sizes where the remark after Theorem ET fails)."""

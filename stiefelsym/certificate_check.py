@@ -49,6 +49,7 @@ from typing import Any
 import symengine as se
 
 FORMAT = "stiefelsym-cofactor-1"
+CASES = "stiefelsym-cofactor-cases-1"    # a claim stated at r = 1 and at r = n (...): one certificate per family
 #: the objects: ℝⁿ, ℝʳ, and "1" for scalars (trace forms)
 OBJECTS = ("n", "r", "r-1")
 SCALAR = "1"
@@ -87,7 +88,9 @@ class CheckReport:
 
 
 def check_certificate(data: Any) -> CheckReport:
-    """Check every entry of a certificate (the JSON form written by the free method)."""
+    """Check every entry of a certificate (the JSON form written by the free method), or every case of one."""
+    if isinstance(data, dict) and data.get("format") == CASES:
+        return check_cases(data)
     t0 = time.perf_counter()
     terms = 0
     try:
@@ -128,6 +131,30 @@ def check_certificate(data: Any) -> CheckReport:
                "relations rho, re-derived from the flows; Pi = 0 by uniqueness)")
     return CheckReport(True, f"{len(entries)} entries, {terms} terms: every certificate expands to its residual{at}",
                        len(entries), terms, time.perf_counter() - t0)
+
+
+def check_cases(data: dict) -> CheckReport:
+    """A certificate of cases: two or more distinct families r = k >= 1 or r = n (every n >= n_min >= k), each with
+    an accepted certificate of FORMAT whose hypotheses of one r (E1E1t, E1E1t+E2E2t, XXt) are of its own r."""
+    t0, said, entries, terms = time.perf_counter(), [], 0, 0
+    try:
+        fams = [(c["sizes"]["r"], c["sizes"]["n_min"], c["certificate"]) for c in data["cases"]]
+        if len(fams) < 2 or len({r for r, _k, _c in fams}) < len(fams) or not all(
+                (r == "n" or (type(r) is int and r >= 1)) and type(k) is int and k >= (1 if r == "n" else r)
+                and isinstance(c, dict) and c.get("format") == FORMAT for r, k, c in fams):
+            raise Rejected(f"cases are two or more distinct families r = k or r = n, every n >= n_min, of {FORMAT}")
+        for r, k, c in fams:
+            rep, used = check_certificate(c), {t.get("hyp") for e in c["entries"] for t in e["terms"]}
+            wrong = [h for h, at in ((R1_ONLY, 1), (R2_ONLY, 2), (SQUARE, "n")) if h in used and at != r]
+            if not rep.accepted or wrong:
+                raise Rejected(f"the case r = {r}: " + (rep.message if not rep.accepted else f"it uses {wrong[0]}, "
+                                                        "a hypothesis of another r"))
+            entries, terms, said = entries + rep.entries, terms + rep.terms, said + [f"case r = {r}, n >= {k}: {rep.message}"]
+    except Rejected as exc:
+        return CheckReport(False, str(exc), seconds=time.perf_counter() - t0)
+    except (KeyError, TypeError, ValueError, AttributeError, RuntimeError) as exc:
+        return CheckReport(False, f"malformed certificate of cases ({type(exc).__name__}: {exc})", seconds=time.perf_counter() - t0)
+    return CheckReport(True, "; ".join(said), entries, terms, time.perf_counter() - t0)
 
 
 def _mentions(entries: list, letters: set) -> bool:

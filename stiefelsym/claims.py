@@ -94,9 +94,14 @@ class SizeSpec:
     n_max: int | None = None
     #: stated at r = n only (T*SO(n) = T*V(n, n)), declared rather than read from ``where``
     r_is_n: bool = False
+    #: stated at these r only, a union of one-r families: ints (r = 1, r = 2) and "n" (r = n), declared
+    #: rather than read from ``where`` (the dimension-free method proves each family on its own)
+    r_in: tuple = ()
 
     def admits(self, n: int, r: int) -> bool:
         if not (1 <= r <= n) or n < self.n_min or r < self.r_min or (self.r_is_n and r != n):
+            return False
+        if self.r_in and not any(r == (n if v == "n" else v) for v in self.r_in):
             return False
         if self.n_max is not None and n > self.n_max:
             return False
@@ -136,22 +141,26 @@ class SizeSpec:
 
 def admissible(n_max: int = 5, *, n_min: int = 1, r_min: int = 1, r_max: int | None = None,
                where: Callable[[int, int], bool] | None = None, condition: str = "",
-               stated_n_max: int | None = None, r_is_n: bool = False) -> SizeSpec:
+               stated_n_max: int | None = None, r_is_n: bool = False, r_in: tuple = ()) -> SizeSpec:
     """The sizes a claim is stated for: 1 <= r_min <= r <= min(n, r_max), n >= n_min, filtered by
     ``where``, and n <= stated_n_max if given (None: every n).  The catalog verifies them by
     default up to n = n_max; an explicit --size may go further, never outside the statement.
 
     ``condition`` states the restriction in words for the report (e.g. "n >= 2r"); ``r_is_n`` declares
-    the statement to be about r = n only (which the dimension-free method may then use)."""
+    the statement to be about r = n only (which the dimension-free method may then use); ``r_in`` declares
+    it to be about a union of such r: (1, "n") for r = 1 or r = n (each proved with its own hypotheses)."""
+    r_in = tuple(r_in)
+    if any(v != "n" and (type(v) is not int or v < 1) for v in r_in) or len(set(r_in)) != len(r_in):
+        raise ValueError(f"r_in lists distinct values of r: ints >= 1 and 'n' (r = n), not {r_in!r}")
     if stated_n_max is not None and stated_n_max < n_max:
         n_max = stated_n_max
     out = []
-    spec = SizeSpec((), n_min, r_min, r_max, where, condition, stated_n_max, r_is_n)
+    spec = SizeSpec((), n_min, r_min, r_max, where, condition, stated_n_max, r_is_n, r_in)
     for n in range(max(n_min, 1), n_max + 1):
         for r in range(1, n + 1):
             if spec.admits(n, r):
                 out.append(Size(n, r))
-    return SizeSpec(tuple(out), n_min, r_min, r_max, where, condition, stated_n_max, r_is_n)
+    return SizeSpec(tuple(out), n_min, r_min, r_max, where, condition, stated_n_max, r_is_n, r_in)
 
 
 @dataclass

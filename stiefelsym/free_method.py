@@ -12,15 +12,23 @@ Every proof carries a cofactor certificate per residual entry (the entry as a
 combination of the hypotheses, traced through the reductions), which the
 independent checker :mod:`stiefelsym.certificate_check` re-expands before the
 verdict is ``proved``; a certificate it rejects makes the verdict ``error``.
+
+A claim stated at one r (r = 1, 2 or r = n, declared) is proved on that family of
+sizes, for every n, with the hypotheses of that r; a claim stated at a union of them
+(``admissible(r_in=(1, "n"))``) family by family, each with its own scene and
+certificate, and a certificate of cases for the checker.  The claim is traced on each
+family (:mod:`stiefelsym.ir.families`): a comparison of sizes it makes is answered
+where the family decides it, refused otherwise.
 """
 from __future__ import annotations
 
+import dataclasses
 import functools
 import time
 from typing import Any, Callable
 
-from .certificate_check import check_certificate
-from .claims import Claim, Count, Rank, SizeSpec
+from .certificate_check import CASES, check_certificate
+from .claims import Claim, Count, Rank, Size, SizeSpec
 from .methods import _base_result, division_probe, _entries, _short, call_claim
 from .results import CheckOutcome, Result
 from .free import FreeScene, FreeSolveError, NeedsCoordinates, RewritingError
@@ -29,11 +37,35 @@ from .free.certificates import CertificateWriter
 from .free.columns import COMPLETE
 from .free.rewriting import latex_text
 from .latex import tex_text, unicode_name
-from .ir import TraceRefused
+from .ir import SizeFamily, TraceRefused
 
 
 def run_free(claim: Claim, func: Callable | None = None) -> Result:
     func = func or claim.func
+    t0 = time.perf_counter()
+    if claim.expect == "nonzero":
+        res = _base_result(claim, None, None, "free", None)
+        res.verdict, res.seconds = "undecided", time.perf_counter() - t0
+        res.message = "rewriting proves vanishing only; a nonvanishing statement needs a witness"
+        return res
+    # the hypotheses that hold at one r only (the columns of R^r at r = 1, 2; X X^T = I_n at r = n)
+    # are taken from the statement's declaration, read once here, and only when every size the
+    # statement admits, and every size it lists, has one of the declared r
+    families, why = size_families(claim)
+    if why:
+        res = _base_result(claim, None, None, "free", None)
+        res.verdict, res.message, res.seconds = "undecided", why, time.perf_counter() - t0
+        return res
+    if len(families) == 1:
+        return run_free_on(claim, func, families[0])
+    return run_free_union(claim, func, families, t0)
+
+
+def run_free_on(claim: Claim, func: Callable, family: SizeFamily | None, alone: bool = True) -> Result:
+    """The dimension-free run of ``func`` on every n, r (``family`` None) or on one family of sizes: the scene
+    with the family's own hypotheses, the claim traced on the family (a comparison of sizes it makes is
+    answered where the family decides it).  ``alone``: the family is the only one the claim is stated for
+    (otherwise it is one case of a union, see :func:`run_free_union`)."""
     res = _base_result(claim, None, None, "free", None)
     t0 = time.perf_counter()
 
@@ -43,18 +75,8 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
         res.seconds = time.perf_counter() - t0
         return res
 
-    if claim.expect == "nonzero":
-        return undecided("rewriting proves vanishing only; a nonvanishing statement needs a witness")
-    # the hypotheses that hold at one r only (the columns of R^r at r = 1, 2; X X^T = I_n at r = n)
-    # are taken from the statement's declaration, read once here, and only when every size the
-    # statement admits, and every size it lists, has that r
-    spec = claim.sizes
-    columns, square = fixed_r(claim), bool(getattr(spec, "r_is_n", False))
-    if columns or square:
-        off = sizes_off_r(spec, columns, square)
-        if off is not None:
-            return undecided(f"the statement declares {'r = n' if square else f'r = {columns}'} but {off}: the "
-                             "hypotheses that hold there only are not used; decided by the fixed-size methods")
+    columns = family.r if family is not None and family.r in COMPLETE else 0
+    square = family is not None and family.r is None
     try:
         # a claim stated at one r = 1 or 2 alone may name the columns E_1, ..., E_r of R^r (their sum
         # E_1E_1^T + ... + E_rE_r^T = I_r is then a hypothesis)
@@ -73,11 +95,11 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
 
     try:
         with recording(scene.tracker):   # every refusal goes to the run's record before it is raised
-            checks = call_claim(func, scene)
+            checks = call_claim(func, scene, family)
     except NeedsCoordinates as exc:
         return undecided(evaluation_needs_text(claim, func, exc.what))
     except TraceRefused as exc:
-        return undecided(needs_text(claim, func, str(exc)))
+        return undecided(needs_text(claim, func, str(exc), family))
     except (FreeSolveError, RewritingError) as exc:
         return touched() or undecided(f"outside the rewriting backend: {exc}")
     except (TypeError, ValueError, AttributeError, ArithmeticError) as exc:
@@ -124,7 +146,8 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
     if "columns" in scene._extras:
         k = scene.columns
         res.reductions.append(f"the columns {', '.join(f'E_{i + 1}' for i in range(k))} of R^r as letters (r x 1), "
-                              f"E_i^T E_j = delta_ij, and, the claim being stated at r = {k} only, "
+                              f"E_i^T E_j = delta_ij, and, the claim being stated at r = {k}"
+                              f"{' only' if alone else ' (one family of its sizes)'}, "
                               f"{' + '.join(f'E_{i + 1} E_{i + 1}^T' for i in range(k))} = I_r: every place where a "
                               "word passes through R^r is written in this basis, and a 1 x 1 piece is its own trace")
     if "complex" in scene._extras:
@@ -134,7 +157,8 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
                               "V^T V -> I_r - U^T U, V^T U -> U^T V, V'^T V -> -U'^T U - U^T U' - V^T V', "
                               "V'^T U -> U'^T V + U^T V' - V^T U' (no critical pairs)")
     if scene.square:
-        res.reductions.append("the claim being stated at r = n only (T*SO(n)): X X^T = I_n and P X^T = -X P^T")
+        res.reductions.append(f"the claim being stated at r = n{' only' if alone else ' (one family of its sizes)'} "
+                              "(T*SO(n)): X X^T = I_n and P X^T = -X P^T")
     if "last" in scene._extras:
         res.reductions.append("the last column E_r of I_r as a letter (r x 1), E_r^T E_r = 1; a 1 x 1 piece is its "
                               "own trace")
@@ -147,14 +171,14 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
                          f"(e.g. {res.residual}); the fixed-size methods decide")
     # the proof is about the graph traced with symbolic sizes: it must be the graph every fixed-size
     # method evaluates (a claim that behaves otherwise when its sizes are symbols proves nothing)
-    why = same_graph_at_fixed_sizes(claim, func)
+    why = same_graph_at_fixed_sizes(claim, func, family)
     if why:
         res.verdict, res.message = "error", why
         res.seconds = time.perf_counter() - t0
         return res
     # symbolic coefficients do not raise on a division by an identically zero expression: probe
     # the same claim code at an exact point of a fixed size first
-    why = probe_divisions(claim, func, every_size=bool(scene._moving))
+    why = probe_divisions(claim, func, every_size=bool(scene._moving), family=family)
     if why:
         res.verdict, res.message = "error", why
         res.seconds = time.perf_counter() - t0
@@ -181,11 +205,12 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
     res.verdict = "proved"
     res.seconds = time.perf_counter() - t0
     entries = f"{summary['entries']} residual entr{'y' if summary['entries'] == 1 else 'ies'}"
+    only = "the only r the claim is stated for" if alone else f"n >= {family.n_min if family else 1}"
     if "XXt" in summary["hypotheses"]:
-        entries += " (for every n at r = n, the only r the claim is stated for: it uses X X^T = I_n)"
+        entries += f" (for every n at r = n, {only}: it uses X X^T = I_n)"
     for k, name in COMPLETE.items():
         if name in summary["hypotheses"]:
-            entries += (f" (for every n at r = {k}, the only r the claim is stated for: it uses "
+            entries += (f" (for every n at r = {k}, {only}: it uses "
                         f"{' + '.join(f'E_{i + 1}E_{i + 1}^T' for i in range(k))} = I_r)")
     if scene._moving:
         entries += (" (for every n, r at which the resolvent at the spectral parameter that moves with the point, "
@@ -226,17 +251,103 @@ def declared_by_fields(spec: Any) -> bool:
     return type(spec) is SizeSpec or (type(spec) is TabledSizes and spec.fields_first is True)
 
 
-def sizes_off_r(spec: Any, columns: int, square: bool) -> str | None:
-    """Why the statement's declaration that fixes r (r = columns, or r = n) is not believed, or None: it is
-    believed only when every size the statement lists has that r and its admits() is decided by the
-    declared fields (:func:`declared_by_fields`), so that every size it admits, at every n, has it."""
-    for z in spec:
-        if (square and z.r != z.n) or (columns and z.r != columns):
-            return f"lists (n, r) = ({z.n},{z.r})"
+#: sizes n <= this at which the statement's admits() gives each declared family its smallest n
+R_CHECK_N = 16
+
+
+def size_families(claim: Claim) -> tuple[list[SizeFamily | None], str]:
+    """The families of sizes the claim is proved on, and "" (or [], why not).
+
+    [None] for a claim stated at every r.  A claim that declares one r (r_min = r_max = 1 or 2, or
+    r_is_n) or a union of them (r_in, e.g. (1, "n")) gets one family per declared r, each for every n
+    from the smallest n at which the claim admits or lists a size of it (the size (k, k) belongs to the
+    family r = n when r = n is declared).  The declaration is believed only when the statement's admits()
+    is decided by its declared fields (:func:`declared_by_fields`: then every size it admits, at every n,
+    is in a declared family) and the sizes it lists say the same; the sizes it admits up to R_CHECK_N
+    give each family its smallest n."""
+    spec = claim.sizes
+    columns, square = fixed_r(claim), bool(getattr(spec, "r_is_n", False))
+    declared = tuple(getattr(spec, "r_in", ()) or ())
+    if not declared:
+        declared = ("n",) if square else (columns,) if columns else ()
+    if not declared:
+        return [None], ""
+    if any(v != "n" and (type(v) is not int or v < 1) for v in declared):
+        return [], f"the statement declares r in {declared!r}, which is not a list of r = k >= 1 and r = n"
     if not declared_by_fields(spec):
-        return ("its admits() is its own code (a subclass of SizeSpec), so the declared r is not known to hold "
-                "at every size it admits")
-    return None
+        said = " or ".join(f"r = {v}" for v in declared)
+        return [], (f"the statement declares {said} but its admits() is its own code (a subclass of SizeSpec), so "
+                    "the declared r is not known to hold at every size it admits: the hypotheses that hold there "
+                    "only are not used; decided by the fixed-size methods")
+
+    def family_of(n: int, r: int) -> Any:
+        return "n" if r == n and "n" in declared else r if r in declared else None
+    lowest: dict[Any, int] = {}
+    admitted = [(z.n, z.r) for z in spec]
+    admitted += [(n, r) for n in range(1, R_CHECK_N + 1) for r in range(1, n + 1) if spec.admits(n, r)]
+    for n, r in admitted:
+        v = family_of(n, r)
+        if v is None:
+            said = " or ".join(f"r = {v}" for v in declared)
+            return [], (f"the statement declares {said} but admits (n, r) = ({n},{r}): the hypotheses that hold "
+                        "there only are not used; decided by the fixed-size methods")
+        lowest[v] = min(lowest.get(v, n), n)
+    out: list[SizeFamily | None] = []
+    for v in declared:     # a declared family with no size up to R_CHECK_N: from its smallest n
+        least = 1 if v == "n" else v + 1 if "n" in declared else v
+        out.append(SizeFamily(None if v == "n" else v, max(lowest.get(v, least), least)))
+    return out, ""
+
+
+def family_sizes(claim: Claim, family: SizeFamily | None) -> list[Size]:
+    """The sizes the claim lists in the family (all of them for None), or the family's smallest size."""
+    if family is None:
+        return list(claim.sizes)
+    return [z for z in claim.sizes if family.holds(z.n, z.r)] or \
+        [Size(family.n_min, family.n_min if family.r is None else family.r)]
+
+
+def run_free_union(claim: Claim, func: Callable, families: list[SizeFamily], t0: float) -> Result:
+    """A claim stated at a union of one-r families: proved iff every family is, each on its own scene with
+    its own hypotheses and its own certificate; the record states every case (its reductions, its
+    derivations) and one certificate of cases that the independent checker re-checks case by case."""
+    res = _base_result(claim, None, None, "free", None)
+    cases = [(f, run_free_on(claim, func, f, alone=False)) for f in families]
+    where = lambda f: f"at {f.r_text} (every n >= {f.n_min})"    # noqa: E731
+    for f, r in cases:
+        if r.verdict != "proved":
+            res.verdict, res.checks, res.residual = r.verdict, r.checks, r.residual
+            res.message = f"{where(f)}: {r.message}"
+            res.seconds = time.perf_counter() - t0
+            return res
+    scopes = " and at ".join(f.r_text for f in families)
+    res.reductions = [f"the claim is stated at {scopes} (declared), a union of families of sizes each for every n: "
+                      f"{'; '.join(str(f) for f in families)} (a size in two families belongs to r = n); each is "
+                      "proved on its own, with the hypotheses of its r and a certificate of its own; a comparison of "
+                      "sizes the claim makes is answered on a family when it has one truth value at all its sizes "
+                      "(r == n is true at r = n, false at r = 1, n >= 2) and refused otherwise"]
+    res.checks, res.derivation = [], []
+    for f, r in cases:
+        res.reductions += [f"{where(f)}: {x}" for x in r.reductions]
+        res.checks += [dataclasses.replace(c, name=f"{f.r_text}: {c.name}") for c in r.checks]
+        res.derivation += [f"\\paragraph{{The case ${f.r_text}$, every $n \\geq {f.n_min}$}}"]
+        res.derivation += r.derivation
+    data = {"format": CASES, "cases": [{"sizes": {"r": "n" if f.r is None else f.r, "n_min": f.n_min},
+                                        "certificate": r.certificate_data} for f, r in cases]}
+    subs = [r.certificate_data["summary"] for _f, r in cases]
+    data["summary"] = {"entries": sum(x["entries"] for x in subs), "terms": sum(x["terms"] for x in subs),
+                       "hypotheses": sorted({h for x in subs for h in x["hypotheses"]}), "cases": len(cases)}
+    report = check_certificate(data)
+    res.certificate_data = data
+    res.seconds = time.perf_counter() - t0
+    if not report.accepted:
+        res.verdict, res.message = "error", f"certificate rejected: {report.message}"
+        return res
+    res.verdict = "proved"
+    res.certificate = (f"cofactor certificates of cases (for every n at {scopes}, the sizes the claim is stated for: "
+                       f"{'; '.join(str(f) for f in families)}), each re-checked by the independent checker: "
+                       + "; ".join(f"{where(f)}: {r.certificate}" for f, r in cases))
+    return res
 
 
 def evaluation_needs_text(claim: Claim, func: Callable, refusal: str) -> str:
@@ -261,15 +372,15 @@ def evaluation_needs_text(claim: Claim, func: Callable, refusal: str) -> str:
             "decided by the fixed-size methods")
 
 
-def needs_text(claim: Claim, func: Callable, refusal: str) -> str:
-    """Why a claim that does not trace with symbolic sizes is left to the fixed-size methods, read
-    from its graph at a fixed size (what it states and reads there), with the refusal that stopped
-    the symbolic trace."""
+def needs_text(claim: Claim, func: Callable, refusal: str, family: SizeFamily | None = None) -> str:
+    """Why a claim that does not trace with symbolic sizes (on its family of sizes) is left to the
+    fixed-size methods, read from its graph at a fixed size (what it states and reads there), with the
+    refusal that stopped the symbolic trace."""
     from .ir import compile_at_size
     from .ir.passes import coordinate_needs
     from .scene import REALIZATIONS
     cons = REALIZATIONS[claim.realization]
-    sizes = list(claim.sizes)
+    sizes = family_sizes(claim, family)
     z = next((z for z in sizes if 1 < z.r < z.n), None) or next((z for z in sizes if z.n >= 3), sizes[-1])
     try:
         needs = coordinate_needs(compile_at_size(func, z.n, z.r, (cons.name, cons.build)))
@@ -299,16 +410,16 @@ def metric_reductions(scene: Any) -> list[str]:
     return out
 
 
-def same_graph_at_fixed_sizes(claim: Claim, func: Callable) -> str:
+def same_graph_at_fixed_sizes(claim: Claim, func: Callable, family: SizeFamily | None = None) -> str:
     """"" when the claim's graph with symbolic sizes is also the graph it gives when traced at every size
     it is stated for (the digest leaves the values of sizes out); otherwise why not.  (Every method evaluates
     the graph of symbolic sizes when there is one; a claim that tells the two tracings apart is
-    reported, not believed.)"""
+    reported, not believed.)  On a family of sizes: its graph on the family, at the sizes of the family."""
     from .ir import compile_at_size, compile_claim
     from .scene import REALIZATIONS
     cons = REALIZATIONS[claim.realization]
-    free = compile_claim(func, None, None, (cons.name, cons.build)).digest()
-    for z in claim.sizes:      # every size the claim is stated for (each traced once, in milliseconds)
+    free = compile_claim(func, None, None, (cons.name, cons.build), family=family).digest()
+    for z in family_sizes(claim, family):   # every size it is stated for (each traced once, in milliseconds)
         try:
             fixed = compile_at_size(func, z.n, z.r, (cons.name, cons.build), twice=False).digest()
         except Exception as exc:    # noqa: BLE001 - a claim that does not trace at a size proves nothing
@@ -320,15 +431,16 @@ def same_graph_at_fixed_sizes(claim: Claim, func: Callable) -> str:
     return ""
 
 
-def probe_divisions(claim: Claim, func: Callable, every_size: bool = False) -> str:
+def probe_divisions(claim: Claim, func: Callable, every_size: bool = False, family: SizeFamily | None = None) -> str:
     """The division probe of ``func`` at the first size of the claim with n ≥ 3, or with ``every_size`` at
     every size the claim is stated for (memoized by :func:`~stiefelsym.methods.division_probe`).
 
     ``every_size`` is for a proof that used a resolvent at a spectral parameter μ moving with the point:
     its letter's rules A R = R A = mR − I hold where μ is not an eigenvalue of A, which a trace polynomial
     of the constant letters or of the sizes can be at some sizes only (tr A at n = 1).  The proof is then
-    for every n, r at which R(μ) exists, and the probe shows it exists at every stated size."""
-    sizes = list(claim.sizes)
+    for every n, r at which R(μ) exists, and the probe shows it exists at every stated size.  On a family of
+    sizes: at its sizes."""
+    sizes = family_sizes(claim, family)
     if not every_size:
         sizes = [next((z for z in sizes if z.n >= 3), None) or sizes[-1]]
     for z in sizes:

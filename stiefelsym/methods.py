@@ -174,15 +174,19 @@ def _float_entries(value: Any, name: str, u: float) -> list[tuple[str, Any]]:
             for i in sorted(picks)]
 
 
-def call_claim(func: Callable, scene: Any) -> dict[str, Any]:
+def call_claim(func: Callable, scene: Any, family: Any = None) -> dict[str, Any]:
     """A claim's checks on a method's scene: the claim's graph (traced once per size, never with
     the scene's values), its derivatives along flows and gradients rewritten into ordinary nodes
     where their bodies allow (:mod:`.ir.derivative`), evaluated on the scene; the graph's looks at
-    coordinates are recorded in the scene's record first, whatever spaces the claim named."""
+    coordinates are recorded in the scene's record first, whatever spaces the claim named.  A
+    dimension-free scene may be given a family of sizes (:class:`~stiefelsym.ir.SizeFamily`): the graph
+    is then the one traced on that family."""
     n, r = scene.n, scene.r
     free = type(n) is not int
+    if family is not None and not free:
+        raise ValueError("a family of sizes is for a dimension-free scene")
     cons = REALIZATIONS[getattr(scene, "realization", None) or "standard"]
-    g = compile_claim(func, None if free else n, None if free else r, (cons.name, cons.build))
+    g = compile_claim(func, None if free else n, None if free else r, (cons.name, cons.build), family=family)
     tracker = getattr(scene, "tracker", None)
     if tracker is not None:
         watched_spaces = {"?"} | set(tracker.spaces)

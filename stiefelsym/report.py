@@ -325,8 +325,12 @@ def planned_sizes(c: "ClaimResults") -> list[tuple[int, int]]:
 
 def free_scope(r: Result) -> str:
     """What a dimension-free proof covers: every n and r, or every n at the one r its claim is stated
-    for (a proof that used E₁E₁ᵀ + … = I_r or XXᵀ = I_n says so in its certificate line)."""
+    for (a proof that used E₁E₁ᵀ + … = I_r or XXᵀ = I_n says so in its certificate line), or every n at
+    each r of a union of them (a certificate of cases, e.g. "every n at r = 1 and at r = n")."""
     text = r.certificate or ""
+    union = re.match(r"cofactor certificates of cases \(for (every n at r = \w+(?: and at r = \w+)+),", text)
+    if union:
+        return union.group(1)
     for scope in ("every n at r = 1", "every n at r = 2", "every n at r = n"):
         if f"(for {scope}," in text:
             return scope
@@ -993,7 +997,7 @@ def headline(claims: list[ClaimResults]) -> tuple[str, list[ClaimResults]]:
                                     for r in c.printed)]
     at_once = (f"{len(free)} of them proved for every n and r at once" if not one_r else
                f"{len(free)} of them proved for every size at once: {len(free) - len(one_r)} for every n and r, "
-               f"{len(one_r)} stated at one r for every n")
+               f"{len(one_r)} stated at one r (or at a union of them, as r = 1 and r = n) for every n at each")
     text = (f"Of the paper's {len(claims)} checkable statements, {len(claims) - len(errata)} hold as printed at "
             f"every size computed ({at_once}), and {len(errata)} "
             f"fail as printed: each is an erratum with an exact witness, and where a correction is registered "
@@ -1186,8 +1190,12 @@ def certificate_summary(r: Result) -> str:
     if r.verdict != "proved" or not isinstance(data, dict) or "summary" not in data:
         return ""
     sm = data["summary"]
-    per = [len(e.get("terms", ())) for e in data.get("entries", ())]
+    certs = [c.get("certificate", {}) for c in data.get("cases", ())] or [data]    # (a certificate of cases: each)
+    per = [len(e.get("terms", ())) for d in certs for e in d.get("entries", ())]
     entries = f"{sm['entries']} residual entr{'y' if sm['entries'] == 1 else 'ies'}"
+    if data.get("cases"):   # a claim stated at a union of one-r families: one certificate per family
+        entries += " in " + " and ".join(f"the case r = {c['sizes']['r']} (every n >= {c['sizes']['n_min']})"
+                                         for c in data["cases"])
     checked = "re-checked by the independent checker (stiefelsym.certificate_check)"
     if not sm["terms"]:
         verb = "vanishes" if sm["entries"] == 1 else "vanish"

@@ -11,6 +11,7 @@ never by the code that ran the claim.
 from __future__ import annotations
 
 import functools
+import hashlib
 import shlex
 from typing import Callable, Iterable, Sequence
 
@@ -161,7 +162,9 @@ def _digest_or_none(claim: Claim, size: Size | None, func: Callable | None) -> s
 
 def graph_digest(claim: Claim, size: Size | None, func: Callable | None = None) -> str:
     """The digest of the claim's graph at ``size`` (None: symbolic sizes), "" when it does not trace
-    (traced once per process and size: a cache hit after the run)."""
+    (traced once per process and size: a cache hit after the run).  With symbolic sizes, a claim stated at
+    families of sizes (r = 1 and r = n, ...) that traces on each family but not on every size has the
+    digest of its graphs on its families (those the dimension-free method proves it on)."""
     from .ir import compile_claim
     from .scene import REALIZATIONS
     cons = REALIZATIONS[claim.realization]
@@ -169,7 +172,21 @@ def graph_digest(claim: Claim, size: Size | None, func: Callable | None = None) 
         return compile_claim(func or claim.func, size.n if size else None, size.r if size else None,
                              (cons.name, cons.build)).digest()
     except Exception:   # noqa: BLE001 - the run's verdict already says why the claim does not trace
+        if size is not None:
+            return ""
+    from .free_method import size_families
+    try:
+        families, _why = size_families(claim)
+    except Exception:   # noqa: BLE001 - the statement's admits() raised: the run's verdict says it
         return ""
+    if not families or None in families:
+        return ""
+    try:
+        graphs = [(f, compile_claim(func or claim.func, None, None, (cons.name, cons.build), family=f).digest())
+                  for f in families]
+    except Exception:   # noqa: BLE001 - as above
+        return ""
+    return hashlib.sha256("\n".join(f"{f}: {d}" for f, d in graphs).encode()).hexdigest()
 
 
 def graph_change(claim: Claim, func: Callable, size: Size | None) -> list[dict[str, str]]:

@@ -545,7 +545,7 @@ class FreeScene(PaperObjects):
         XPᵀ + PXᵀ = X(XᵀP + PᵀX)Xᵀ − (XXᵀ − I)PXᵀ − XPᵀ(XXᵀ − I) (in the order P < X of the scene at
         r = n: the other direction loops in traces, tr(XᵀPXᵀP) → tr(XᵀXPᵀP) ↺)."""
         h, g = hypothesis("XXt"), hypothesis("XtP+PtX")
-        why = "X X^T = I_n: X is square (r = n, the only r the claim is stated for)"
+        why = "X X^T = I_n: X is square (r = n, where the claim is stated)"
         self.system.add_rule((X, Xt), _i("n"), why, name="XXt", cofactors=[_by(h)])
         self.system.add_rule((X, Pt), -_w(P, Xt), "X P^T = -P X^T: X^T P is skew and X X^T = I_n (r = n)",
                              name="XPt", cofactors=[_by(g, 1, left=(X,), right=(Xt,)), _by(h, -1, right=(P, Xt)),

@@ -11,11 +11,12 @@ import threading
 from collections import OrderedDict
 from typing import Any, Callable
 
+from .families import SizeFamily
 from .graph import Graph, Named, Ref, Size
 from .statements import Count, Rank
 from .trace import Dim, TraceRefused, Tracer, TraceScene, block, is_tracer, named, primitive, trace
 
-__all__ = ["Graph", "Named", "Ref", "Size", "Count", "Rank", "Dim", "TraceRefused", "Tracer", "TraceScene",
+__all__ = ["Graph", "Named", "Ref", "Size", "SizeFamily", "Count", "Rank", "Dim", "TraceRefused", "Tracer", "TraceScene",
            "block", "is_tracer", "named", "primitive", "trace", "compile_claim", "graph_pair", "NotDeterministic"]
 
 
@@ -30,13 +31,24 @@ _GRAPHS: "OrderedDict[tuple, Any]" = OrderedDict()
 GRAPH_CACHE_SIZE = 24
 
 
-def compile_claim(func: Callable, n: int | None, r: int | None, constraints: tuple[str, Callable]) -> Graph:
+def compile_claim(func: Callable, n: int | None, r: int | None, constraints: tuple[str, Callable],
+                  family: SizeFamily | None = None) -> Graph:
     """The graph of a claim's function: traced once with symbolic sizes when it can be (then that one
     graph is the claim at every size: every fixed-size method and the dimension-free method evaluate
     the same graph), otherwise at (n, r).  Each graph is traced twice; a claim whose two graphs
     differ is refused, and so is a claim whose trace met a refusal, even one it caught.  A claim
     whose graph at (n, r) is not its graph with symbolic sizes is refused at (n, r) (and the
-    dimension-free method compares the two at every size the claim is stated for)."""
+    dimension-free method compares the two at every size the claim is stated for).
+
+    With a ``family`` of sizes (n = r = None): the graph traced with symbolic sizes on that family alone
+    (see :mod:`.families`), for the dimension-free method's proof on the family."""
+    if family is not None:
+        if n is not None or r is not None:
+            raise ValueError("a graph is compiled at a size or on a family of sizes, not both")
+        g = _compile(func, None, None, constraints, family=family)
+        if isinstance(g, Graph):
+            return g
+        raise _fresh(g)
     free = _compile(func, None, None, constraints)
     if isinstance(free, Graph):
         if n is not None:
@@ -64,21 +76,21 @@ def compile_at_size(func: Callable, n: int, r: int, constraints: tuple[str, Call
 
 
 def _compile(func: Callable, n: int | None, r: int | None, constraints: tuple[str, Callable],
-             twice: bool = True) -> Any:
+             twice: bool = True, family: SizeFamily | None = None) -> Any:
     """The graph, or the exception that refused it (both cached per process); traced twice and
     compared, or once where it is only compared with the graph of symbolic sizes (which was)."""
     # by identity: a callable's own __eq__ is never asked; a graph traced once is kept apart from one
     # traced twice (a trace compared with itself is no determinism check)
-    key = (id(func), n, r, constraints[0], twice)
+    key = (id(func), n, r, family, constraints[0], twice)
     for k in (key,) if twice else (key[:-1] + (True,), key):
         hit = _GRAPHS.get(k)
         if hit is not None and hit[0] is func:
             _GRAPHS.move_to_end(k)
             return hit[1]
     try:
-        first = _clean(trace, func, n, r, constraints)
+        first = _clean(trace, func, n, r, constraints, family)
         _check_refusals(first)
-        second = _clean(trace, func, n, r, constraints) if twice else first
+        second = _clean(trace, func, n, r, constraints, family) if twice else first
         _check_refusals(second)
         if first.digest() != second.digest():
             raise NotDeterministic("the claim is not deterministic: two tracings at the same size gave "

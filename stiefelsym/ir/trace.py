@@ -24,6 +24,7 @@ from fractions import Fraction
 from typing import Any, Callable
 
 from .seal import refuse_registration
+from .families import COMPARISONS, SYMBOLS, SizeFamily
 from .graph import _REFS, Graph, Named, Ref, Size, _ref
 from .statements import Count, Rank
 
@@ -156,11 +157,24 @@ def _dim_op(name: str):
     return op
 
 
+def _dim_comparison(name: str):
+    """A comparison of a size with a size of the same trace or an int: one question to the trace (see
+    :meth:`Trace.size_compare`); with anything else, the numbers of the sizes."""
+    def op(self, other):
+        if (type(other) is Dim and other._owner is self._owner) or type(other) is int:
+            return self._owner.size_compare(self._expr, name, other._expr if type(other) is Dim else other)
+        return getattr(self._int(), name)(other._int() if type(other) is Dim else other)
+    op.__name__ = name
+    return op
+
+
 for _name in ("__add__", "__radd__", "__sub__", "__rsub__", "__floordiv__", "__rfloordiv__", "__truediv__",
               "__rtruediv__", "__mod__", "__rmod__", "__pow__", "__rpow__", "__neg__", "__pos__", "__abs__",
-              "__int__", "__index__", "__float__", "__bool__", "__eq__", "__ne__", "__lt__", "__le__", "__gt__",
-              "__ge__", "__str__", "__format__", "__divmod__", "__rdivmod__", "__round__", "__complex__"):
+              "__int__", "__index__", "__float__", "__bool__", "__str__", "__format__", "__divmod__", "__rdivmod__",
+              "__round__", "__complex__"):
     setattr(Dim, _name, _dim_op(_name))
+for _name in COMPARISONS:
+    setattr(Dim, _name, _dim_comparison(_name))
 
 
 def _val(a: Any, t: "Trace") -> int | None:
@@ -807,11 +821,17 @@ def block(rows: Any) -> Tracer:
 class Trace:
     """One tracing of one claim at one size (or with symbolic sizes)."""
 
-    def __init__(self, n: int | None, r: int | None, constraints: tuple[str, Callable]) -> None:
+    def __init__(self, n: int | None, r: int | None, constraints: tuple[str, Callable],
+                 family: SizeFamily | None = None) -> None:
         self.g = Graph()
         # the numbers of the sizes live here, in a function of the trace's own: no Size, Dim or
-        # tracer claim code reaches carries one, and the graph gets them when it is sealed
-        self._numbers = _size_numbers(n, r)
+        # tracer claim code reaches carries one, and the graph gets them when it is sealed.  Traced
+        # with a family of sizes (symbolic sizes), a size has a number when it has the same one at
+        # every size of the family (r at r = 1)
+        if family is not None and (n is not None or r is not None):
+            raise ValueError("a trace is at a size or with a family of sizes, not both")
+        self._family = family
+        self._numbers = family.number if family is not None else _size_numbers(n, r)
         self._like: dict = {}
         self.constraints = constraints
         self._functions: dict[int, tuple[Any, Ref, Any, Any]] = {}
@@ -853,6 +873,23 @@ class Trace:
         if v is None and what is not None:
             self.refuse(f"a size ({size.text()}) used {what}: the claim needs fixed sizes")
         return v
+
+    def size_compare(self, a: Size | int, name: str, b: Size | int) -> bool:
+        """The door of a comparison of sizes: at a fixed size the comparison of their numbers; traced with a
+        family of sizes its truth value when that is the same at every size of the family; otherwise
+        refused (and recorded)."""
+        va = a if type(a) is int else self._numbers(a)
+        vb = b if type(b) is int else self._numbers(b)
+        if va is not None and vb is not None:
+            return COMPARISONS[name](va, vb)
+        if self._family is None:
+            return self.size_number(a if va is None else b, "as a number")
+        decided = self._family.decide(a, name, b)
+        if decided is None:
+            text = lambda x: str(x) if type(x) is int else x.text()    # noqa: E731
+            return self.refuse(f"a comparison of sizes ({text(a)} {SYMBOLS[name]} {text(b)}) that is not the same "
+                               f"at every size of the family {self._family}: the claim needs fixed sizes")
+        return decided
 
     @property
     def symbolic(self) -> bool:
@@ -995,9 +1032,11 @@ def _size_numbers(n: int | None, r: int | None) -> Callable[[Size], int | None]:
     return number
 
 
-def trace(func: Callable, n: int | None, r: int | None, constraints: tuple[str, Callable]) -> Graph:
-    """The graph of ``func`` at the size (n, r), or with symbolic sizes (n = r = None)."""
-    t = Trace(n, r, constraints)
+def trace(func: Callable, n: int | None, r: int | None, constraints: tuple[str, Callable],
+          family: SizeFamily | None = None) -> Graph:
+    """The graph of ``func`` at the size (n, r), or with symbolic sizes (n = r = None), on every size or
+    on the sizes of a ``family`` (see :mod:`.families`)."""
+    t = Trace(n, r, constraints, family)
     _ACTIVE.append(t)
     try:
         out = func(TraceScene(t, t.g.add("scene", (0,))))
