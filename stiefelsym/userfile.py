@@ -68,8 +68,10 @@ class NoGraph(ValueError):
     """The claims file was traced in a child process, and not at the size or realization asked for."""
 
 
-class TraceEnded(NoGraph):
-    """The claim's tracing in its claims file's child process ran out of time or ended its process."""
+class TraceEnded(RuntimeError):
+    """The claim's tracing in its claims file's child process ran out of time or ended its process: no graph,
+    and no reading of the claim either (a run that meets it is an ``error``, never a claim that merely does not
+    run on some backend)."""
 
 
 # --------------------------------------------------------------------------- the wire format
