@@ -1034,7 +1034,7 @@ def report(results_file: Path | None, report_dir: Path | None, claims_files: tup
             raise InputError(f"{source}: refused, record of {cid!r}: its {', '.join(edits)} "
                              f"{'is' if len(edits) == 1 else 'are'} not the claim's (`stiefelsym check` re-checks "
                              "every record)")
-    missing = missing_runs([r.to_json() for r in results], registry, meta) if meta else []
+    missing = missing_runs([r.to_json() for r in results], registry, meta)
     if missing:
         raise InputError(f"{source}: refused, {len(missing)} run(s) its command planned have no record: {missing[0]} "
                          "(a results file is the whole run of its command)")
