@@ -710,9 +710,10 @@ def _claim(d: Any, path: str) -> Claim:
 
 def _preload() -> None:
     """The engine's modules, imported here before the children are forked (the child seals them before the
-    file runs, and this process evaluates with them afterwards: imported once, not once in each)."""
-    from .ir.seal import import_engine
-    import_engine()
+    file runs, and this process evaluates with them afterwards: imported once, not once in each); every other
+    module of the package too (the report, the commands), so that none is read from disk after a child ran."""
+    from .ir.seal import import_package
+    import_package()
 
 
 def load_claims_isolated(path: str | Path, sizes: Iterable[Any] = (), timeout: float = DEFAULT_TIMEOUT,

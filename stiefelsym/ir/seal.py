@@ -121,6 +121,22 @@ def import_engine() -> list[str]:
     return names
 
 
+def import_package() -> None:
+    """Import every module of the engine's package, not only those a verdict depends on: the renderers, the
+    commands and the tools too (a module that needs an optional library it lacks is left out).  Called before a
+    claims file's child is forked, so that nothing the verifying process imports afterwards is read from disk,
+    where the child's code could have rewritten it."""
+    import_engine()
+    root = str(Path(__file__).resolve().parents[1])
+    for info in pkgutil.walk_packages([root], "stiefelsym."):
+        if info.name in sys.modules or info.name.rsplit(".", 1)[-1] == "__main__" or ".proofs" in info.name:
+            continue
+        try:
+            importlib.import_module(info.name)
+        except ImportError:
+            continue
+
+
 def seal() -> None:
     """Record the engine's fingerprint (once per process; before the first user claims file runs)."""
     if sealed():

@@ -455,10 +455,10 @@ def _scratch_engine(tmp_path):
     return root
 
 
-@pytest.mark.xfail(strict=True, reason="open (AI): the file's child rewrites stiefelsym/report.py on disk; the "
-                   "verifying process imports report lazily after the child ran, so the file's code runs there and "
-                   "turns the false claim's fails into proved in the summary, results.json and the exit status")
 def test_a_claims_file_that_rewrites_the_engine_on_disk_changes_no_verdict(tmp_path):
+    """Closed for the run itself (AI): the verifying process imports every module of the package before the
+    child is forked (ir.seal.import_package), so the rewritten report.py is never read by it.  Still open: the
+    rewrite stays on disk for the next command (see the README)."""
     import subprocess
     import sys
     root = _scratch_engine(tmp_path)
