@@ -101,7 +101,9 @@ def test_check_is_not_killed_by_the_files_child(tmp_path):
 def test_derive_of_a_false_claim_whose_tracing_exits_0_is_not_status_0():
     """Closed (AA): the replay raises; derive runs the free method guarded (an error, exit 1)."""
     out = cli("derive", "adv-s33-budget-ender", "--claims", str(HERE / BUDGET), env=_budget_env("exit0"))
-    assert out.returncode != 0, (out.returncode, out.stdout, out.stderr[-1500:])
+    # what derive says of a claim it cannot prove: exit 1, its "% <claim> ..." line, no traceback
+    assert out.returncode == 1 and out.stdout.startswith("% adv-s33-budget-ender") and "Traceback" not in out.stderr, \
+        (out.returncode, out.stdout, out.stderr[-1500:])
 
 
 @pytest.mark.slow
@@ -470,3 +472,22 @@ def test_a_claims_file_that_rewrites_the_engine_on_disk_changes_no_verdict(tmp_p
     assert "S33 PAYLOAD" in (root / "stiefelsym" / "report.py").read_text(), out.stderr[-800:]   # the copy was
     recs = json.loads((tmp_path / "rep" / "results.json").read_text())["results"]
     assert [r["verdict"] for r in recs] == ["fails"] and out.returncode == 1, (recs, out.returncode)
+
+
+LATER = "s33_results_rewritten_later.py"
+
+
+@pytest.mark.xfail(strict=True, reason="open (AI): a process the file's child leaves behind in a session of its own "
+                   "escapes the process-group kill, waits for the verifying process to end and rewrites its "
+                   "results.json (fails -> proved)")
+def test_the_results_file_of_a_run_is_not_rewritten_after_it(tmp_path):
+    import time
+    out = cli("verify", "--claims", str(HERE / LATER), "--method", "exact", "--size", "3,2", "--report-dir",
+              str(tmp_path / "rep"), env=dict(os.environ, STIEFELSYM_S33_DAEMON="1"))
+    assert "exact: fails" in out.stdout, out.stdout
+    verdicts_seen = set()
+    for _ in range(10):                 # the process it left acts within 0.1 s of the end of the run
+        time.sleep(0.2)
+        recs = json.loads((tmp_path / "rep" / "results.json").read_text())["results"]
+        verdicts_seen |= {r["verdict"] for r in recs}
+    assert verdicts_seen == {"fails"}, verdicts_seen
