@@ -234,6 +234,8 @@ def _claim_data(c: Claim, needed: Sequence[tuple[int, int]]) -> dict:
 def _fork_bytes(make: Callable[[], bytes], seconds: float) -> bytes | None:
     """make() in a forked child, its bytes read back (None: it died or ran out of time)."""
     rfd, wfd = os.pipe()
+    subreaper = _become_subreaper()
+    before = _children() if subreaper else set()
     gc.freeze()     # the parent's objects stay out of the child's collections (fewer copied pages)
     pid = os.fork()
     if pid == 0:
@@ -250,14 +252,64 @@ def _fork_bytes(make: Callable[[], bytes], seconds: float) -> bytes | None:
             os._exit(code)
     os.close(wfd)
     gc.unfreeze()
-    data = read_pipe(rfd, seconds, lambda: _kill_group(pid))
-    if data is None:
-        return None
-    _, status = os.waitpid(pid, 0)
-    _kill_group(pid)            # what the file started and left running
-    if status != 0:
-        return None
-    return data
+    try:
+        data = read_pipe(rfd, seconds, lambda: _kill_group(pid))
+        if data is None:
+            return None
+        _, status = os.waitpid(pid, 0)
+        _kill_group(pid)            # what the file started and left running
+        if status != 0:
+            return None
+        return data
+    finally:
+        if subreaper:
+            _kill_descendants(before)
+
+
+_SUBREAPER: list[bool] = []
+
+
+def _become_subreaper() -> bool:
+    """Make this process the reaper of its orphaned descendants (Linux PR_SET_CHILD_SUBREAPER), once: a process
+    the file's child leaves behind, even in a session of its own (out of reach of the group kill), becomes our
+    child when its parents end, and is ended with the child (:func:`_kill_descendants`)."""
+    if not _SUBREAPER:
+        from .pool import _death_signal_setup
+        prctl = _death_signal_setup()
+        _SUBREAPER.append(bool(prctl) and prctl(36, 1, 0, 0, 0) == 0 and os.path.isdir("/proc"))
+    return _SUBREAPER[0]
+
+
+def _children() -> set[int]:
+    """The pids of this process's children (read from /proc)."""
+    me, out = os.getpid(), set()
+    for entry in os.listdir("/proc"):
+        if not entry.isdigit():
+            continue
+        try:
+            with open(f"/proc/{entry}/stat", "rb") as f:
+                fields = f.read().rsplit(b")", 1)[1].split()
+        except (OSError, IndexError):
+            continue
+        if len(fields) > 1 and fields[1].isdigit() and int(fields[1]) == me:
+            out.add(int(entry))
+    return out
+
+
+def _kill_descendants(before: set[int], rounds: int = 50) -> None:
+    """Kill and reap every child this process did not have before the file's child was forked: the processes
+    that child left behind, reparented here (each round reaps those whose parents the last round ended)."""
+    for _ in range(rounds):
+        left = _children() - before
+        if not left:
+            return
+        for p in left:
+            try:
+                os.kill(p, signal.SIGKILL)
+                os.waitpid(p, 0)
+            except OSError:
+                pass
+        time.sleep(0.005)
 
 
 def _kill_group(pid: int) -> None:

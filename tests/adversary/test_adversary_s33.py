@@ -477,10 +477,9 @@ def test_a_claims_file_that_rewrites_the_engine_on_disk_changes_no_verdict(tmp_p
 LATER = "s33_results_rewritten_later.py"
 
 
-@pytest.mark.xfail(strict=True, reason="open (AI): a process the file's child leaves behind in a session of its own "
-                   "escapes the process-group kill, waits for the verifying process to end and rewrites its "
-                   "results.json (fails -> proved)")
 def test_the_results_file_of_a_run_is_not_rewritten_after_it(tmp_path):
+    """Closed (AI'): the verifying process is the subreaper of what the file's child leaves behind
+    (PR_SET_CHILD_SUBREAPER): every process it did not have before the fork is killed when the child is done."""
     import time
     out = cli("verify", "--claims", str(HERE / LATER), "--method", "exact", "--size", "3,2", "--report-dir",
               str(tmp_path / "rep"), env=dict(os.environ, STIEFELSYM_S33_DAEMON="1"))
