@@ -85,6 +85,7 @@ def double_lax_residual(s, flipped):
 
 
 @claim("double-neumann-flow", paper=("D-Lag", "D0", "D-eq", "D-L"), kind="id", exact_max_n=5,
+       exact_max_r={6: 5, 7: 5},
        statement=r"L=\tr(\dot X^T\dot Y)-\tr(X^TAY),\ X^TY=\mathbf I_r:\quad "
                  r"\ddot X=-AX+X\Lambda^T,\ \ddot Y=-AY+Y\Lambda,\ \Lambda=X^TAY-\dot X^T\dot Y")
 def double_neumann_flow(s):
@@ -149,6 +150,7 @@ def double_neumann_dual_lax_extends_la3_corrected(s):
 
 
 @claim("double-neumann-momentum", paper=("dual-D", "D-Lag", "D0", "D-eq"), kind="pb", exact_max_n=5,
+       exact_max_r={6: 5, 7: 5},
        statement=r"\tfrac{d}{dt}\left(X^T\dot Y-Y^T\dot X\right)=0\ \text{along (D-eq)};\ "
                  r"(X,Y)\mapsto(XR^T,YR^{-1})\ \text{preserves (D-Lag), (D0)},\ "
                  r"\tfrac{d}{dt}\left(X^T\dot Y-\dot X^TY\right)=0")

@@ -339,6 +339,7 @@ def generic_adjoint_orbit_is_regular_iff_corrected(s):
 
 
 @claim("chain-algebra-commutative", paper=("com", "hat", "hat2", "iso"), kind="pb", exact_max_n=6,
+       exact_max_r={7: 4},
        equivariance="the statement is about a generic element of the subspace v of so(n); no point of T*V enters",
        sizes=admissible(n_max=5, n_min=2, condition="n >= 2 (so(1) = 0 has no invariants)"),
        statement=r"\{\tr\xi_{(m)}^{2k},\tr\xi_{(m')}^{2k'}\}_{\mathfrak v}(\xi)="
@@ -380,7 +381,7 @@ def _so_r_functions():
 
 
 @claim("momentum-maps-poisson-nonlinear", paper=("Phi", "momentum_map", "momentum_right_map"), kind="pb",
-       exact_max_n=3,
+       exact_max_n=5, exact_max_r={6: 4, 7: 4},
        statement=r"\{h_1\circ\Phi,h_2\circ\Phi\}=\{h_1,h_2\}^+_{so(n)}(\Phi),\ "
                  r"\{f_1\circ\Psi,f_2\circ\Psi\}=\{f_1,f_2\}^-_{so(r)}(\Psi),\ \{h\circ\Phi,f\circ\Psi\}=0,\ "
                  r"\{h_1,h_2\}^\pm(\mu)=\pm\langle\mu,[\nabla h_1,\nabla h_2]\rangle")

@@ -374,7 +374,7 @@ def manakov_family_on_so_r(s):
     return checks
 
 
-@claim("cif-integrals", paper=("CIF", "HB", "BB", "FF"), kind="pb", exact_max_n=4,
+@claim("cif-integrals", paper=("CIF", "HB", "BB", "FF"), kind="pb", exact_max_n=7,
        sizes=admissible(5, r_min=2, condition="r >= 2 (so(1) = 0)"),
        statement=r"\{\mathfrak B,\mathfrak B\}=\{\mathfrak B,\mathfrak F\}=\{\mathfrak B,\Phi_\xi\}=0,\ "
                  r"\mathfrak B=\{\tr(\Psi+\mu B)^k\};\quad \{\Phi_\xi,H_{\mathbb B}\}=\{\mathfrak F,H_{\mathbb B}\}=0;\ "
@@ -444,7 +444,7 @@ def einstein_metric_flows_have_commuting_integrals(s):
     return checks
 
 
-@claim("com-integrals", paper=("COM", "perelomov", "BB"), kind="pb", exact_max_n=4,
+@claim("com-integrals", paper=("COM", "perelomov", "BB"), kind="pb", exact_max_n=7,
        sizes=admissible(5, r_min=2, condition="r >= 2 (so(1) = 0)"),
        statement=r"H_{neum,\mathbb B}=H_{\mathbb B}+\tfrac12\tr(X^TAX):\ \{\mathfrak F,H_{neum,\mathbb B}\}="
                  r"\{\mathfrak F,\mathfrak B\}=0,\ \mathfrak F\ \text{(perelomov)};\ \{\mathfrak B,H_{neum,\mathbb B}\}=0\ "

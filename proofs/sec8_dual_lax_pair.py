@@ -159,7 +159,7 @@ def flow_poisson_sphere(s):
 
 
 @claim("poisson-sphere-flow", paper=("sp1", "P_q", "P_p"), kind="id",
-       sizes=admissible(n_max=5, r_max=1, condition="r = 1"), exact_max_n=3,
+       sizes=admissible(n_max=5, r_max=1, condition="r = 1"),
        statement=r"r=1,\ B=-A^{-1}:\quad \dot e=(A^{-1}e,e)A^{-1}p-(A^{-1}e,p)A^{-1}e,\quad "
                  r"\dot p=(A^{-1}e,p)A^{-1}p-(A^{-1}p,p)A^{-1}e,\quad "
                  r"\tfrac{1}{\langle A^{-1}e,e\rangle}\sum_{i=1}^n a_i\dot e_i^2=2H")
@@ -681,7 +681,7 @@ def line_pair_tangency(t):
 
 
 @claim("poisson-sphere-chasles", paper=("Chasles-Manakov", "sp1", "P_q"), kind="geo",
-       sizes=admissible(n_max=5, n_min=2, r_max=1, condition="r = 1, n >= 2"), exact_max_n=3,
+       sizes=admissible(n_max=5, n_min=2, r_max=1, condition="r = 1, n >= 2"),
        statement=r"r=1,\ B=-A^{-1}:\ A\dot e=(A^{-1}e,e)\,p-(A^{-1}e,p)\,e,\ \ \Sigma=\mathrm{span}\{e,p\}="
                  r"\mathrm{span}\{e,A\dot e\},\ \ \tfrac{d}{dt}\det(U^TR_\lambda U)=0,\ "
                  r"\det(U^TR_\lambda U)=(e,R_\lambda e)(p,R_\lambda p)-(e,R_\lambda p)^2")

@@ -198,6 +198,8 @@ class Claim:
     expect: str = "holds"
     #: largest n for the symbolic exact method (beyond: randomized exact only)
     exact_max_n: int = 7
+    #: beyond exact_max_n, (n, largest r) pairs at which the symbolic method is still tried first
+    exact_max_r: tuple[tuple[int, int], ...] = ()
     corrections: list[Correction] = field(default_factory=list)
     source: str = ""
     #: sizes at which the printed statement is known to fail (a documented erratum)
@@ -217,6 +219,19 @@ class Claim:
         with deadline(METADATA_SECONDS, "the claim's erratum sizes (fails_at)"):
             return bool(self.fails_at(n, r if r is not None else n))
 
+    def exact_at(self, n: int, r: int) -> bool:
+        """Whether ``auto`` tries the symbolic method first at (n, r): n <= exact_max_n, or r at most
+        the largest r that exact_max_r gives at this n."""
+        return n <= self.exact_max_n or r <= dict(self.exact_max_r).get(n, 0)
+
+    def exact_budget_text(self) -> str:
+        """The symbolic budget in words, e.g. ``n <= 5; r <= 5 at n = 6, 7``."""
+        by_r: dict[int, list[int]] = {}
+        for n, r in self.exact_max_r:
+            by_r.setdefault(r, []).append(n)
+        return "; ".join([f"n <= {self.exact_max_n}"] + [f"r <= {r} at n = {', '.join(map(str, ns))}"
+                                                          for r, ns in by_r.items()])
+
     def __post_init__(self) -> None:
         if not isinstance(self.id, str) or not _ID.fullmatch(self.id):
             raise ValueError(f"claim id {self.id!r}: an id is 1 to 100 letters, digits and . _ + - (starting with a "
@@ -227,6 +242,11 @@ class Claim:
             raise ValueError(f"claim {self.id}: expect must be 'holds', 'nonzero' or 'fails'")
         if not self.sizes:
             raise ValueError(f"claim {self.id}: no sizes")
+        for pair in self.exact_max_r:
+            if (not isinstance(pair, tuple) or len(pair) != 2 or any(type(x) is not int for x in pair)
+                    or pair[0] <= self.exact_max_n or not 1 <= pair[1] <= pair[0]):
+                raise ValueError(f"claim {self.id}: exact_max_r gives the largest r (1 <= r <= n) at sizes n above "
+                                 f"exact_max_n = {self.exact_max_n}, as {{n: r}}; {pair!r} is not one")
         if (self.expect == "fails" or self.fails_at is not None) and not self.erratum.strip():
             raise ValueError(f"claim {self.id}: a statement expected to fail must be a documented erratum "
                              "(say what is wrong with erratum=...)")
@@ -316,16 +336,26 @@ IDENTITY_EXACT_MAX_N = 7
 DIM_EXACT_MAX_N = 5
 
 
+def _pairs(by_n: dict[int, int] | None) -> tuple[tuple[int, int], ...]:
+    if by_n is None:
+        return ()
+    if not isinstance(by_n, dict):
+        raise ValueError(f"exact_max_r is a dict {{n: largest r}}, not {type(by_n).__name__}")
+    return tuple(sorted((n, r) for n, r in by_n.items()))
+
+
 def claim(id: str, *, paper: str | Iterable[str] = (), kind: str, section: str | None = None,
           sizes: SizeSpec | Iterable[tuple[int, int] | Size] | None = None, statement: str = "", realization: str = "standard",
-          expect: str = "holds", exact_max_n: int | None = None,
+          expect: str = "holds", exact_max_n: int | None = None, exact_max_r: dict[int, int] | None = None,
           fails_at: Callable[[int, int], bool] | None = None, erratum: str = "", equivariance: str = ""):
     """Register a claim.  The function's docstring (one sentence) goes into the report.
 
     ``paper``: the paper's equation labels the claim checks; a user's own claim may have none.
     ``exact_max_n``: the largest n at which ``auto`` tries the symbolic exact method first (default:
     7 for identities, whose residuals are matrix products the exact backends prove quickly; 5 for
-    dimension statements, whose exact ranks are randomized beyond small sizes anyway)."""
+    dimension statements, whose exact ranks are randomized beyond small sizes anyway).
+    ``exact_max_r``: {n: r} for sizes n above exact_max_n at which ``auto`` still tries the symbolic
+    method first, up to that r (a claim whose cost grows mainly with r)."""
     if exact_max_n is None:
         exact_max_n = DIM_EXACT_MAX_N if kind == "dim" else IDENTITY_EXACT_MAX_N
 
@@ -338,7 +368,7 @@ def claim(id: str, *, paper: str | Iterable[str] = (), kind: str, section: str |
         c = Claim(id=id, paper=labels, kind=kind, section=str(sec), func=fn,
                   sizes=_size_spec(id, sizes), statement=statement.strip(),
                   title=(inspect.getdoc(fn) or "").strip(), realization=realization,
-                  expect=expect, exact_max_n=exact_max_n, source=fn.__module__,
+                  expect=expect, exact_max_n=exact_max_n, exact_max_r=_pairs(exact_max_r), source=fn.__module__,
                   fails_at=fails_at, erratum=" ".join(erratum.split()), equivariance=" ".join(equivariance.split()),
                   reviewed=_ACTIVE[-1].reviewed)
         _ACTIVE[-1].add(c)

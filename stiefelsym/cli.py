@@ -935,7 +935,8 @@ def show(claim_id: str, claims_files: tuple[str, ...]) -> None:
     click.echo(f"expect:      {EXPECT_MEANING.get(c.expect, c.expect)}{exception}")
     click.echo(f"realization: {c.realization}")
     click.echo(f"sizes:       {_sizes_text(c.sizes, limit=len(c.sizes))}")
-    click.echo(f"exact symbolic method up to n = {c.exact_max_n}")
+    click.echo(f"exact symbolic method up to n = {c.exact_max_n}"
+               + "".join(f"; up to r = {r} at n = {n}" for n, r in c.exact_max_r))
     if failing:
         click.echo(f"erratum:     fails as printed at {' '.join(failing)}"
                    + (f": {_one_line(c.erratum)}" if c.erratum else ""))

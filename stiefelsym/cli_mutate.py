@@ -25,7 +25,7 @@ import click
 
 from .cli import InputError, standalone_command
 
-from .claims import CatalogError, Claim, Registry, Size, load_catalog, load_claims_file
+from .claims import CatalogError, Claim, Registry, Size, load_catalog
 from .results import write_atomic
 
 EXIT_OK, EXIT_SURVIVORS, EXIT_INPUT, EXIT_INTERRUPTED = 0, 1, 2, 130
@@ -51,8 +51,10 @@ def _parse_size(text: str) -> Size:
     return Size(n, r)
 
 
-def _registry(claims_file: str | None) -> Registry:
-    """The catalog, or the user's claims followed by the catalog's (the user's shadow the catalog's)."""
+def _registry(claims_file: str | None, sizes: Sequence[Size] = ()) -> Registry:
+    """The catalog, or the user's claims followed by the catalog's (the user's shadow the catalog's).  A
+    user's file is imported and traced in child processes (:func:`stiefelsym.userfile.load_claims_isolated`,
+    at its listed sizes and at ``sizes``): its claims are their graphs, and no code of the file runs here."""
     try:
         catalog = load_catalog()
     except (ImportError, CatalogError, ValueError) as exc:
@@ -61,8 +63,9 @@ def _registry(claims_file: str | None) -> Registry:
         catalog = Registry()
     if claims_file is None:
         return catalog
+    from .userfile import load_claims_isolated
     try:
-        user = load_claims_file(claims_file)
+        user = load_claims_isolated(claims_file, sizes=sizes)
     except CatalogError as exc:
         raise MutateInputError(str(exc)) from None
     merged = Registry()
@@ -138,18 +141,20 @@ def _command(ids: Sequence[str], sizes: Sequence[str], methods: Sequence[str], s
               help="Every mutant at points of its own, as a verify run of it would be.  By default the point "
                    "methods evaluate a mutant at the points of the claim as printed and recompute only what the "
                    "change reaches (several times faster; the classification is the same).")
-@click.option("--on", "on", type=click.Choice(["source", "graphs"]), default="source", show_default=True,
+@click.option("--on", "on", type=click.Choice(["source", "graphs"]), default=None,
               help="What is mutated: each claim's Python source (every mutant traced again), or each claim's "
                    "graph (no Python of the claim runs again; claims traced per size are reported as not "
-                   "covered).")
+                   "covered).  Default: source; graphs with --claims (a user's file is traced in a child "
+                   "process, and only its graphs reach this one).")
 @click.option("--corrections", is_flag=True,
               help="Errata search instead of the mutation analysis: for each named CLAIM, the candidates of the "
                    "declared search space (every operator, in the claim and its helper functions, two signs at "
                    "once, the expectation of a 'does not hold') that pass every method at every size "
-                   "(default methods: rational, modular; default sizes: the claim's sizes with n <= 4).")
+                   "(default methods: rational, modular; default sizes: the claim's sizes with n <= 4).  A claim "
+                   "of a --claims file is searched on its graph (the changes of --on graphs, one at a time).")
 def mutate(ids: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str, ...], seed: int,
            claims_file: str | None, report_dir: Path | None, fmt: str, limit: int | None,
-           only: tuple[int, ...], jobs: int, fresh_points: bool, on: str, corrections: bool) -> None:
+           only: tuple[int, ...], jobs: int, fresh_points: bool, on: str | None, corrections: bool) -> None:
     """Corrupt every claim in small ways and check that every method notices.
 
     Each mutant (one sign flipped, operands of @ or comm swapped, a factor
@@ -179,10 +184,14 @@ def mutate(ids: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str, ...
     parsed_sizes = [_parse_size(s) for s in sizes]
     if only and len(ids) != 1:
         raise MutateInputError("--mutant K names a mutant of one claim: give exactly one CLAIM")
+    if claims_file is not None and on == "source":
+        raise MutateInputError("--on source mutates Python source, and a --claims file's Python never runs in this "
+                               "process (it is traced in a child process): use --on graphs (the default with --claims)")
+    on = on or ("graphs" if claims_file is not None else "source")
     target = report_dir         # written only where --report-dir says (make mutate: reports/)
     if target is not None:
         _check_report_dir(target)
-    registry = _registry(claims_file)
+    registry = _registry(claims_file, parsed_sizes)
     try:
         claims: list[Claim] = [registry.get(i) for i in ids] if ids else list(registry)
     except KeyError as exc:
@@ -257,27 +266,36 @@ def _search(engine: Any, claims: Sequence[Claim], ids: Sequence[str], sizes: Seq
     """``mutate --corrections``: the errata search of the named claims; exits 0."""
     import json
 
+    from .ir import mutants as on_graphs
     if not ids:
         raise MutateInputError("--corrections searches corrections of named claims: give at least one CLAIM")
     out: dict[str, Any] = {"seed": seed, "methods": list(methods),
                            "search_space": [{"name": name, "description": text} for name, text, _ in engine.OPERATORS]
                            + [{"name": name, "description": text} for name, text in engine.SEARCH_EXTRAS],
                            "claims": []}
+    from .userfile import TracedFunction
     for c in claims:
         chosen = [s for s in sizes if c.sizes.admits(s.n, s.r)] or None
         plan_sizes = chosen or [s for s in c.sizes if s.n <= engine.DEFAULT_N_MAX] or list(c.sizes)[:1]
         tried = [0]
+        candidates = None
+        if isinstance(c.func, TracedFunction):      # a claim of a --claims file: its graph is what is here
+            candidates, why = engine.graph_mutants(c)
+            if why:
+                raise MutateInputError(f"--corrections on {c.id}: {why}")
+            out["graph_search_space"] = [{"name": name, "description": text} for name, text in on_graphs.OPERATORS]
 
         def seen(m: Any, ok: bool) -> None:
             tried[0] += 1
             if ok and fmt == "text":
                 click.echo(f"{c.id}: correction passes: {m.text}")
         try:
-            found = engine.search_corrections(c, plan_sizes, methods, seed, on_candidate=seen)
+            found = engine.search_corrections(c, plan_sizes, methods, seed, candidates=candidates, on_candidate=seen)
         except ValueError as exc:
             raise MutateInputError(str(exc)) from None
         where = ", ".join(f"({s.n},{s.r})" for s in plan_sizes)
-        out["claims"].append({"claim": c.id, "sizes": [[s.n, s.r] for s in plan_sizes], "candidates": tried[0],
+        out["claims"].append({"claim": c.id, "on": "graphs" if candidates is not None else "source",
+                              "sizes": [[s.n, s.r] for s in plan_sizes], "candidates": tried[0],
                               "corrections": [{"notation": engine.notation_text(m.notation),
                                                "description": m.description, "operator": m.operator,
                                                "source": m.source, "expect": m.expect,

@@ -204,6 +204,8 @@ class CostModel:
             # the exact attempt with its modular fallback up to the claim's symbolic budget, modular
             # beyond; kept monotone in n (a size beyond the budget is never predicted cheaper)
             k = min(n, getattr(claim, "exact_max_n", 5), _exact_cap())
+            if n > k and n <= _exact_cap() and getattr(claim, "exact_at", lambda n, r: False)(n, r):
+                k = n        # within the claim's symbolic budget in r (exact_max_r)
             below = self.predict("exact", claim, k, min(r, k)) + self.predict("modular", claim, k, min(r, k))
             return max(below, self.predict("modular", claim, n, r))
         if method == "ball" and not self.fits.get("ball"):
@@ -231,6 +233,8 @@ class CostModel:
             return 0.0
         if method == "auto":
             k = min(n, getattr(claim, "exact_max_n", 5), _exact_cap())
+            if n > k and n <= _exact_cap() and getattr(claim, "exact_at", lambda n, r: False)(n, r):
+                k = n
             return max(self.predict_memory("exact", claim, k, min(r, k)), self.predict_memory("modular", claim, n, r))
         floor = float(_SQUARE_MATRICES * n * n * _ENTRY_BYTES.get(method, 8))
         fits = self.memory.get(method) or {}

@@ -169,9 +169,11 @@ def run_free_on(claim: Claim, func: Callable, family: SizeFamily | None, alone: 
         res.residual = f"{pos}: nf = {_short(red.normal_form)}"
         return undecided(f"{len(open_entries)} residual entries have a nonzero normal form "
                          f"(e.g. {res.residual}); the fixed-size methods decide")
-    # the proof is about the graph traced with symbolic sizes: it must be the graph every fixed-size
-    # method evaluates (a claim that behaves otherwise when its sizes are symbols proves nothing)
-    why = same_graph_at_fixed_sizes(claim, func, family)
+    # the proof is about the graph traced with symbolic sizes, which is the graph every fixed-size method
+    # evaluates (a claim that traces so is never traced at a number, see stiefelsym.ir._compile): it must
+    # type at every size the claim is stated for (a size written as an int is checked there only); a graph
+    # on a family of sizes is compared with the claim's graphs at the family's sizes
+    why = typed_at_stated_sizes(claim, func) if family is None else graph_of_the_family(claim, func, family)
     if why:
         res.verdict, res.message = "error", why
         res.seconds = time.perf_counter() - t0
@@ -352,18 +354,15 @@ def run_free_union(claim: Claim, func: Callable, families: list[SizeFamily], t0:
 
 def evaluation_needs_text(claim: Claim, func: Callable, refusal: str) -> str:
     """Why a claim whose graph traces with symbolic sizes is left to the fixed-size methods: what the
-    free scene refused, with what the claim's graph at a fixed size reads, when it names it."""
-    from .ir import compile_at_size
+    free scene refused, with what the claim's graph reads, when it names it."""
+    from .ir import compile_claim
     from .ir.passes import coordinate_needs
     from .scene import REALIZATIONS
-    sizes = list(claim.sizes)
-    z = next((z for z in sizes if 1 < z.r < z.n), None) or next((z for z in sizes if z.n >= 3), None) or \
-        (sizes[-1] if sizes else None)
     needs: list[str] = []
-    if z is not None and claim.realization in REALIZATIONS:
+    if claim.realization in REALIZATIONS:
         cons = REALIZATIONS[claim.realization]
-        try:
-            needs = coordinate_needs(compile_at_size(func, z.n, z.r, (cons.name, cons.build)))
+        try:        # its graph with symbolic sizes (the claim's graph at every size)
+            needs = coordinate_needs(compile_claim(func, None, None, (cons.name, cons.build)))
         except Exception:    # noqa: BLE001 - the refusal alone says it
             needs = []
     if not needs:
@@ -376,14 +375,14 @@ def needs_text(claim: Claim, func: Callable, refusal: str, family: SizeFamily | 
     """Why a claim that does not trace with symbolic sizes (on its family of sizes) is left to the
     fixed-size methods, read from its graph at a fixed size (what it states and reads there), with the
     refusal that stopped the symbolic trace."""
-    from .ir import compile_at_size
+    from .ir import compile_claim
     from .ir.passes import coordinate_needs
     from .scene import REALIZATIONS
     cons = REALIZATIONS[claim.realization]
     sizes = family_sizes(claim, family)
     z = next((z for z in sizes if 1 < z.r < z.n), None) or next((z for z in sizes if z.n >= 3), sizes[-1])
     try:
-        needs = coordinate_needs(compile_at_size(func, z.n, z.r, (cons.name, cons.build)))
+        needs = coordinate_needs(compile_claim(func, z.n, z.r, (cons.name, cons.build)))
     except Exception:    # noqa: BLE001 - the refusal alone says it
         needs = []
     what = "; ".join(needs) if needs else "its statement depends on the sizes (a loop or a condition over n, r)"
@@ -411,10 +410,10 @@ def metric_reductions(scene: Any) -> list[str]:
 
 
 def same_graph_at_fixed_sizes(claim: Claim, func: Callable, family: SizeFamily | None = None) -> str:
-    """"" when the claim's graph with symbolic sizes is also the graph it gives when traced at every size
-    it is stated for (the digest leaves the values of sizes out); otherwise why not.  (Every method evaluates
-    the graph of symbolic sizes when there is one; a claim that tells the two tracings apart is
-    reported, not believed.)  On a family of sizes: its graph on the family, at the sizes of the family."""
+    """"" when the claim's graph on a family of sizes is also the graph it gives when traced at every size
+    of the family it is stated for (the digest leaves the values of sizes out); otherwise why not.  (A claim
+    with a graph on a family only is traced at the numbers of each size; one that tells the two tracings
+    apart is reported, not believed.)"""
     from .ir import compile_at_size, compile_claim
     from .scene import REALIZATIONS
     cons = REALIZATIONS[claim.realization]
@@ -428,6 +427,42 @@ def same_graph_at_fixed_sizes(claim: Claim, func: Callable, family: SizeFamily |
             return (f"the claim's graph with symbolic sizes differs from its graph at ({z.n},{z.r}) (digest "
                     f"{free[:12]} against {fixed[:12]}): it depends on whether its sizes are numbers, so a proof "
                     "for every n, r would be about another computation than the fixed-size methods check")
+    return ""
+
+
+def graph_of_the_family(claim: Claim, func: Callable, family: SizeFamily) -> str:
+    """"" when the claim's graph on a family of sizes is the graph every method evaluates at the family's
+    sizes; otherwise why not.  When the claim also traces with plain symbolic sizes, its graph on the family
+    must be that graph (a comparison of sizes is refused there, so the two agree for an honest claim), which
+    is then replayed at the stated sizes, never traced at a number; a claim that traces on its family only
+    (it compares its sizes) is traced at the family's sizes and compared (:func:`same_graph_at_fixed_sizes`)."""
+    from .ir import compile_claim
+    from .scene import REALIZATIONS
+    cons = REALIZATIONS[claim.realization]
+    try:
+        plain = compile_claim(func, None, None, (cons.name, cons.build)).digest()
+    except Exception:    # noqa: BLE001 - no graph with plain symbolic sizes: compared at the family's sizes
+        return same_graph_at_fixed_sizes(claim, func, family)
+    on_family = compile_claim(func, None, None, (cons.name, cons.build), family=family).digest()
+    if on_family != plain:
+        return (f"the claim's graph on its sizes {family} differs from its graph with symbolic sizes (digest "
+                f"{on_family[:12]} against {plain[:12]}): a proof on the family would be about another "
+                "computation than the fixed-size methods check")
+    return typed_at_stated_sizes(claim, func)
+
+
+def typed_at_stated_sizes(claim: Claim, func: Callable) -> str:
+    """"" when the claim's graph with symbolic sizes types at every size it is stated for (replayed there by
+    the tracer, :func:`stiefelsym.ir._typed_at`: no code of the claim runs); otherwise why not."""
+    from .ir import compile_claim
+    from .scene import REALIZATIONS
+    cons = REALIZATIONS[claim.realization]
+    for z in claim.sizes:
+        try:
+            compile_claim(func, z.n, z.r, (cons.name, cons.build))
+        except Exception as exc:    # noqa: BLE001 - a graph that does not type at a stated size proves nothing
+            return (f"the claim's graph is not a graph at ({z.n},{z.r}), a size it is stated for: "
+                    f"{type(exc).__name__}: {exc}")
     return ""
 
 

@@ -23,18 +23,32 @@ class ChildError(Exception):
     """The computation raised in the child; the message says what and where."""
 
 
+class ChildDied(ChildError):
+    """The child ended without a result: it ran out of memory (MemoryError, or a native allocation
+    that failed and aborted) or was killed; the message says how it ended."""
+
+
 def run_isolated(fn: Callable[[], Any], seconds: float, describe: Callable[[BaseException], str]) -> Any:
     """fn() in a forked child, killed after ``seconds``; its exceptions come back as ChildError."""
     if not hasattr(os, "fork"):
         return fn()
+    from .pool import _death_signal_setup
+    prctl = _death_signal_setup()
+    parent = os.getpid()
     rfd, wfd = os.pipe()
     gc.freeze()    # keep the parent's objects out of the child's collections (fewer copied pages)
     pid = os.fork()
     if pid == 0:   # the child: compute, send, exit without running the parent's cleanup
         os.close(rfd)
         try:
+            if prctl:
+                prctl(1, signal.SIGKILL)     # PR_SET_PDEATHSIG: die with the parent, never outlive it
+                if os.getppid() != parent:
+                    os._exit(0)
             try:
                 payload = pickle.dumps(("ok", fn()))
+            except MemoryError as exc:
+                payload = pickle.dumps(("memory", describe(exc)))
             except BaseException as exc:  # noqa: BLE001 - everything goes back to the parent
                 payload = pickle.dumps(("error", describe(exc)))
             with os.fdopen(wfd, "wb") as out:
@@ -46,13 +60,31 @@ def run_isolated(fn: Callable[[], Any], seconds: float, describe: Callable[[Base
     data = read_pipe(rfd, seconds, lambda: _kill(pid))
     if data is None:
         raise HardTimeout()
-    os.waitpid(pid, 0)
+    _, status = os.waitpid(pid, 0)
     if not data:
-        raise ChildError("the computation ended without a result (the child process died)")
+        raise ChildDied(f"the child process died ({how_it_ended(status)})")
     kind, value = pickle.loads(data)
+    if kind == "memory":
+        raise ChildDied(f"the child process ran out of memory ({value})")
     if kind == "error":
         raise ChildError(value)
     return value
+
+
+def how_it_ended(status: int) -> str:
+    """A wait status in words: the signal that killed the process, or its exit status."""
+    if os.WIFSIGNALED(status):
+        sig = os.WTERMSIG(status)
+        try:
+            name = signal.Signals(sig).name
+        except ValueError:
+            name = f"signal {sig}"
+        hint = ("; a native library aborted, as flint does when an allocation fails under the memory budget"
+                if sig == signal.SIGABRT else "")
+        return f"killed by {name}{hint}"
+    if os.WIFEXITED(status):
+        return f"exit status {os.WEXITSTATUS(status)}"
+    return f"wait status {status}"
 
 
 def read_pipe(rfd: int, seconds: float, on_fail: Callable[[], None]) -> bytes | None:

@@ -263,12 +263,12 @@ _ASCII_SCRIPT = re.compile(r"(\^|_)(\{(?:[^{}]|\{[^{}]*\})*\}|-?\d+(?![^\W_])|�
 def tex_words(text: str) -> str:
     """Plain words that write scripts in ASCII (I_n, (A + λI_n)^{-1}, (e_1 ^ p_1)_{I_2}^2, as the
     registered words of a correction do) to LaTeX text: each script set as one, a spaced ^ as the wedge,
-    ``$...$`` as mathematics; everything else as :func:`tex_escape` sets it."""
+    a spaced <= and >= as ≤ and ≥, ``$...$`` as mathematics; everything else as :func:`tex_escape` sets it."""
     return tex_text(text, _ascii_scripts)
 
 
 def _ascii_scripts(text: str) -> str:
-    text = text.replace(" ^ ", " ∧ ")
+    text = re.sub(r"(?<=\s)([<>])=(?=\s)", lambda m: "≤" if m.group(1) == "<" else "≥", text.replace(" ^ ", " ∧ "))
     out, at = [], 0
     for m in _ASCII_SCRIPT.finditer(text):
         if m.start() == 0 or text[m.start() - 1] == " ":

@@ -16,6 +16,7 @@ and a check without entries is an error under every method.
 from __future__ import annotations
 
 import math
+import os
 import random
 import weakref
 import time
@@ -1843,29 +1844,58 @@ def _run_ball(claim: Claim, n: int, r: int, seed: int, func: Callable, options: 
     return done("numeric")
 
 
+#: in a worker, a symbolic attempt runs in its own forked child from this n on, or when the cost model
+#: predicts at least ISOLATE_SECONDS: a heavy attempt must not leave the long-lived worker bloated
+#: (native memory that fragments and grows) or dead.  Measured in a worker-sized process (77 MiB): a
+#: fork costs 4-5 ms CPU (10 ms wall); the runs below both thresholds take milliseconds to a few
+#: tenths of a second and stay in the worker
+ISOLATE_MIN_N = 6
+ISOLATE_SECONDS = 0.5
+
+
+def isolates(claim: Claim, n: int, r: int, in_worker: bool = False) -> bool:
+    """Whether the symbolic attempt at (n, r) runs in its own forked child.  Outside a worker: from
+    n = 4 on (n = 5 while lending points to the mutation analysis, :class:`PointLoan`, whose thousands
+    of small runs at n <= 4 would spend more time forking than computing), for the hard time limit.
+    In a worker (the worker is killable, but must survive a heavy attempt): from n = ISOLATE_MIN_N on,
+    or when the cost model predicts at least ISOLATE_SECONDS."""
+    if not hasattr(os, "fork"):
+        return False
+    if not in_worker:
+        return n > (4 if _LOAN is not None else 3)
+    if n >= ISOLATE_MIN_N:
+        return True
+    try:
+        return costmodel.predict("exact", claim, n, r) >= ISOLATE_SECONDS
+    except (ValueError, SizeError):
+        return False
+
+
 def run_exact_isolated(claim: Claim, n: int, r: int, seed: int, func: Callable | None = None,
-                       time_budget: float = EXACT_TIME_LIMIT) -> Result:
-    """run_exact in a child process that is killed when it exceeds its budget (no hang, ever).
-    Sizes n <= 3 stay in-process: their symbolic work is small and the fork would dominate; so does
-    n = 4 in the mutation analysis (:class:`PointLoan`), whose thousands of small runs at n <= 4
-    would spend more time forking than computing.  In-process, the budget is the deadline of
-    :func:`time_limit`."""
+                       time_budget: float = EXACT_TIME_LIMIT, in_worker: bool = False) -> Result:
+    """run_exact in a forked child (see :func:`isolates`) that is killed when it exceeds its budget
+    (no hang, ever); the child inherits the memory budget (RLIMIT_AS) of the process it is forked
+    from, a worker's is the run's.  A child that runs out of memory or dies gives ``inconclusive``
+    with how it ended (``auto`` then goes on with the modular method), the parent is untouched.
+    In-process, the budget is the deadline of :func:`time_limit`."""
     if _LOAN is not None and _LOAN.exact_seconds is not None:
         time_budget = min(time_budget, _LOAN.exact_seconds)
-    if n <= (4 if _LOAN is not None else 3):
+    if not isolates(claim, n, r, in_worker):
         return run_exact(claim, n, r, seed, func, time_budget)
-    from .isolate import HardTimeout, run_isolated
+    from .isolate import ChildDied, HardTimeout, run_isolated
     import sympy.polys.matrices  # noqa: F401 (imported once here, not in every child)
     t0 = time.perf_counter()
+    res = _base_result(claim, n, r, "exact", None)
+    res.verdict = "inconclusive"
     try:
         return run_isolated(lambda: run_exact(claim, n, r, seed, func, time_budget),
                             1.1 * time_budget + 1, _describe)
     except HardTimeout:
-        res = _base_result(claim, n, r, "exact", None)
-        res.verdict = "inconclusive"
         res.message = f"symbolic computation exceeded its budget of {time_budget:.0f} s (stopped)"
-        res.seconds = time.perf_counter() - t0
-        return res
+    except ChildDied as exc:
+        res.message = f"the symbolic attempt ended without a verdict: {exc}"
+    res.seconds = time.perf_counter() - t0
+    return res
 
 
 def _describe(exc: BaseException) -> str:

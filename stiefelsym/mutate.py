@@ -53,6 +53,7 @@ from __future__ import annotations
 import ast
 import contextlib
 import copy
+import functools
 import inspect
 import json
 import sys
@@ -625,8 +626,29 @@ def graph_mutants(claim: Claim) -> tuple[list[Mutant], str]:
     for gm in on_graph(g, (cons.name, cons.build)):
         out.append(Mutant(description=gm.description(), lineno=0, func=gm.func, operator=gm.operator,
                           index=gm.index, source=f"%{gm.node}",
+                          left=functools.partial(_graph_left_sides, gm.graph),
                           notation=tuple(c.to_json() for c in gm.changes)))
     return out, ""
+
+
+def _graph_left_sides(g: Any) -> Callable | None:
+    """The graph ``g`` with each of its checks a − b replaced by its left side a (the errata search: a
+    candidate whose left sides vanish too is vacuous), as a claim function; None when no check is a
+    difference."""
+    from .ir.graph import Ref
+    from .ir.replay import GraphClaim
+    edits: dict[int, Callable] = {}
+    stack = list(g.args[g.output.i][1])
+    while stack:
+        x = stack.pop()
+        if type(x) is not Ref:
+            continue
+        op = g.ops[x.i]
+        if op == "sub":
+            edits[x.i] = lambda rp, a, f: rp.arg(a[0], f)
+        elif op in ("list", "tuple"):
+            stack.extend(g.args[x.i])
+    return GraphClaim(g, edits, name="left sides") if edits else None
 
 
 # --------------------------------------------------------------------------- helpers of a claim
@@ -893,7 +915,7 @@ def mutation_sizes(claim: Claim, n_max: int = DEFAULT_N_MAX, count: int = DEFAUL
 
 
 def _exact_ok(claim: Claim, size: Size) -> bool:
-    return size.n <= claim.exact_max_n
+    return claim.exact_at(size.n, size.r)
 
 
 def cells(claim: Claim, sizes: Sequence[Size], methods: Sequence[str]) -> list[tuple[Size | None, str]]:
@@ -1399,7 +1421,8 @@ def search_corrections(claim: Claim, sizes: Sequence[Size] | None = None,
                 break
             ok = bool(plan) and all(passes(m, s, meth) for s, meth in plan) and not vacuous(m)
             if ok:
-                m = replace(m, notation=tuple(notation(claim, m, notation_size(s for s, _ in plan))))
+                if not m.notation:          # (a mutant of the graph carries its change already)
+                    m = replace(m, notation=tuple(notation(claim, m, notation_size(s for s, _ in plan))))
                 found.append(m)
             if on_candidate is not None:
                 on_candidate(m, ok)

@@ -26,6 +26,7 @@ from fractions import Fraction
 from typing import Any
 
 import math
+import re
 import os
 
 import numpy as np
@@ -80,6 +81,18 @@ def _context(cap: int) -> tuple:
         ctx = flint.fmpq_mpoly_ctx.get(tuple(f"x{i}" for i in range(cap)), "degrevlex")
         hit = _CONTEXTS[cap] = (ctx, ctx.gens(), ctx.from_dict({}), ctx.constant(1))
     return hit
+
+
+def _name_key(name: str) -> tuple:
+    """A variable's name in natural order (A_1,2 before A_1,10; every part a (kind, value) pair, so that
+    texts and numbers compare)."""
+    return tuple((0, int(t)) if t.isdigit() else (1, t) for t in re.split(r"(\d+)", name) if t)
+
+
+def _term_key(term: tuple) -> tuple:
+    """Degree-lexicographic order of a monomial ((name, exponent), ...), highest first."""
+    mono = term[0]
+    return (-sum(e for _, e in mono), tuple((_name_key(nm), -e) for nm, e in mono))
 
 
 class PolyRing:
@@ -325,34 +338,64 @@ class PolyRing:
         return se.Add(*terms) if len(terms) > 1 else terms[0]
 
     def poly_text(self, p) -> str:
-        """p as text, its terms in flint's order (degree reverse lexicographic in the variables'
-        order of first use): the same in every process, unlike a symengine expression's text,
-        which orders the terms by hashes of the parameters (their symbols are unique per process)."""
-        if p.is_zero():
-            return "0"
-        syms = self.syms
+        """p as text in a canonical order (:meth:`_terms`): the same in every process and whatever the
+        order in which the ring met its variables (a symengine expression's text orders its terms by
+        hashes of the parameters, whose symbols are unique per process; flint's own order follows the
+        variables' order of first use, which depends on what the process computed before)."""
+        return self._terms_text(self._terms(p))
+
+    def _terms(self, p) -> list:
+        """The terms of p as (monomial, coefficient), a monomial a tuple of (name, exponent) in the
+        natural order of the variables' names; the terms in degree-lexicographic order of the
+        monomials, highest first (the order depends on the names only)."""
+        names = [str(x) for x in self.syms]
         out = []
         for exps, c in p.terms():
-            mono = "*".join(str(syms[i]) if e == 1 else f"{syms[i]}**{int(e)}" for i, e in enumerate(exps) if e)
+            mono = tuple(sorted(((names[i], int(e)) for i, e in enumerate(exps) if e),
+                                key=lambda t: _name_key(t[0])))
+            out.append((mono, c))
+        out.sort(key=_term_key)
+        return out
+
+    @staticmethod
+    def _terms_text(terms: list) -> str:
+        if not terms:
+            return "0"
+        out = []
+        for mono, c in terms:
+            text = "*".join(name if e == 1 else f"{name}**{e}" for name, e in mono)
             neg = c < 0
             c = -c if neg else c
-            if not mono:
+            if not text:
                 t = str(c)
             elif c == 1:
-                t = mono
+                t = text
             else:
-                t = f"{c}*{mono}"
+                t = f"{c}*{text}"
             out.append(("- " if neg else "+ ") + t if out else ("-" if neg else "") + t)
         return " ".join(out)
 
     def text(self, r) -> str:
-        """A rational function (numerator, denominator atoms) as text in a canonical order."""
+        """A rational function (numerator, denominator atoms) as text in a canonical order: the terms of
+        each polynomial as :meth:`poly_text` orders them, each factor of the denominator with a positive
+        leading coefficient in that order (its sign moved to the numerator), the factors sorted by text."""
         n, d = self.rf_reduce(r)
-        num = self.poly_text(n)
+        num = self._terms(n)
         if not d:
-            return num
-        den = "*".join(f"({self.poly_text(self.atoms[k])})" + (f"**{e}" if e > 1 else "") for k, e in d)
-        return f"({num})/({den})" if len(n) > 1 else f"{num}/({den})"
+            return self._terms_text(num)
+        flip = False
+        dens = []
+        for k, e in d:
+            terms = self._terms(self.atoms[k])
+            if terms and terms[0][1] < 0:
+                terms = [(m, -c) for m, c in terms]
+                flip ^= e % 2 == 1
+            dens.append((self._terms_text(terms), e))
+        if flip:
+            num = [(m, -c) for m, c in num]
+        den = "*".join(f"({t})" + (f"**{e}" if e > 1 else "") for t, e in sorted(dens))
+        text = self._terms_text(num)
+        return f"({text})/({den})" if len(num) > 1 else f"{text}/({den})"
 
     def atom_se(self, k: int):
         s = self._atom_se.get(k)
@@ -1525,7 +1568,7 @@ class SymbolicField(Field):
         return sympy.cancel(sympy.together(sympy.sympify(e))) == 0
 
     def pivot_cost(self, x):
-        e = se.expand(x)
+        e = se.expand(_se(x))
         if e == 0:
             return math.inf
         if e.is_Number:
@@ -1536,7 +1579,7 @@ class SymbolicField(Field):
 
     def _numeric_pivots(self, M) -> bool:
         """Whether Gaussian elimination finds a nonzero numeric pivot at every step."""
-        rows = [[se.expand(x) for x in row] for row in M]
+        rows = [[se.expand(_se(x)) for x in row] for row in M]
         m = len(rows)
         for col in range(m):
             piv = next((i for i in range(col, m) if rows[i][col].is_Number and rows[i][col] != 0), None)
@@ -1556,10 +1599,11 @@ class SymbolicField(Field):
         """Elimination when numeric pivots suffice (then no fractions appear); otherwise
         Y = adj(M) B / det(M) with determinants by fraction-free elimination."""
         m = len(M)
-        enc = self._encoded_type
-        if enc is not None:
-            M = [[x.to_se() if type(x) is enc else x for x in row] for row in M]
-            B = [[x.to_se() if type(x) is enc else x for x in row] for row in B]
+        # the backend's scalars as symengine expressions, every kind of them (an encoded polynomial, a
+        # rational function kept in flint): symengine would take either for an empty matrix (its
+        # conversion, symengine_opaque) and return 0x0 matrices as the solution's entries
+        M = [[_se(x) for x in row] for row in M]
+        B = [[_se(x) for x in row] for row in B]
         if all(se.expand(x).is_Number for row in M for x in row) or self._numeric_pivots(M):
             return Field.solve(self, M, B)
         if m > self.max_solve:

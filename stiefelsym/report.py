@@ -20,7 +20,7 @@ from collections import Counter
 from typing import Any, Callable, Iterable, Sequence
 
 from . import paperref, sizerules
-from .latex import unicode_name, math_ok, split_math, tex_balanced, tex_display, tex_escape, tex_text, tex_words
+from .latex import unicode_name, math_ok, split_math, tex_balanced, tex_display, tex_escape, tex_words
 from .ir import notation
 from .ir.notation import changes_text as change_text
 from .results import PASSING, VERDICTS, Result
@@ -34,7 +34,16 @@ VERDICT_MEANING = {
                "computation reduced every residual to zero on the constraint set.  "
                "At size “all n, r”: a dimension-free computation with the letters "
                "X, Xᵀ, P, Pᵀ, A, … of a free noncommutative algebra proves it for "
-               "every n and r at once."),
+               "every n and r at once.  A statement the paper makes only at one r is "
+               "proved for every n at that r, with the relation that holds there alone "
+               "(at r = n, XXᵀ = Iₙ; at r = k = 1 or 2, E₁E₁ᵀ + … + EₖEₖᵀ = Iᵣ for the "
+               "standard basis E₁, …, Eₖ of ℝʳ), and the verdict says so (“every n at r = n”); "
+               "one made at r = 1 and at r = n is proved for every n at each, with one "
+               "certificate per case.  In the metric realization (the constraint "
+               "XᵀA⁻¹P + PᵀA⁻¹X = 0 of the metric given by A) a proof assumes A symmetric "
+               "positive definite: the flow's Lagrange multipliers then solve Sylvester "
+               "equations with a unique solution, which gives Π = 0 and Λ as a symmetric "
+               "letter bound by its Sylvester equation."),
     "checked": ("Randomized exact check: every residual vanished exactly (no rounding) "
                 "at independent random points over ℚ or a prime field.  A false "
                 "statement passes with probability at most the stated bound p "
@@ -69,6 +78,25 @@ KIND_MEANING = {
     "geo": "a geometric statement, checked through its algebraic form",
 }
 
+#: what each method does, for a mathematician reading "passes at … by modular"
+METHOD_MEANING = {
+    "exact": ("symbolic computation at one size (n, r) in exact arithmetic: the residuals reduced to "
+              "zero on the constraint set, or a rank or count computed over the field of the chart's "
+              "parameters; proves or refutes."),
+    "rational": "random exact points over ℚ; passes with the bound p below.",
+    "modular": "random exact points over prime fields (primes near 2⁶⁰); passes with the bound p below.",
+    "auto": "the fastest proof-grade method for the claim at that size.",
+    "float": "floating point at random real points, with a running error bound and precision escalation.",
+    "ball": ("rigorous interval (ball) arithmetic at the float method's points: a certified nonzero "
+             "residual refutes, otherwise it is evidence."),
+    "free": ("the dimension-free method: the letters of a free noncommutative algebra reduced by the "
+             "constraints of T*V (a terminating, confluent rewriting system); a proof is a cofactor "
+             "certificate that an independent checker re-expands.  It does not apply to statements that "
+             "read coordinates (an entry, a rank, a count)."),
+}
+
+METHODS_INTRO = "Each verdict names the method that reached it (“passes at (4,2) by modular”):"
+
 BOUND_EXPLANATION = (
     "Schwartz–Zippel lemma: a nonzero polynomial of total degree d, evaluated at a "
     "point whose coordinates are drawn independently and uniformly from a finite set "
@@ -95,6 +123,20 @@ ERRATA_INTRO = (
     "count the exactly computed value against the printed one.  Then the candidate "
     "corrections that were checked.")
 NO_POINT = "no witness point: the computed value below contradicts the printed one"
+#: the witness of a statement that something does NOT hold, found to hold identically
+NOT_ZERO_WITNESS = ("no witness point: the statement says this is not identically zero, and exact "
+                    "computation finds it identically zero")
+
+
+def no_point_text(w: Result) -> str:
+    """What stands in a failing run's witness list where it has no point: the computed value against
+    the printed one (a rank or count, listed below), or, for a statement that something does not hold,
+    the exact proof that it does."""
+    if any(ch.status in DIMENSION_STATUSES for ch in w.checks):
+        return NO_POINT
+    if w.kind == "not":
+        return NOT_ZERO_WITNESS + (f": {w.certificate}" if w.certificate else "")
+    return "no witness point recorded"
 
 #: the paper's operator names, expanded for Markdown viewers that do not know them
 OPERATORS = {"tr": "tr", "diag": "diag", "ad": "ad", "Ad": "Ad", "rank": "rank",
@@ -280,7 +322,7 @@ def _run_facts(meta: dict[str, Any]) -> list[str]:
     facts = []
     if meta.get("seed") is not None:
         facts.append(f"Seed {meta['seed']}: every random choice (points, primes) is drawn from "
-                     "it, so the command reproduces every verdict, witness and bound below.")
+                     "it, so the command reproduces every verdict, witness and bound of this report.")
     run = [f"on {meta['date']}" if meta.get("date") else "",
            f"in {format_seconds(meta['seconds'])}" if meta.get("seconds") is not None else "",
            f"at commit {meta['commit']}" if meta.get("commit") else "",
@@ -291,6 +333,18 @@ def _run_facts(meta: dict[str, Any]) -> list[str]:
     if versions:
         facts.append("Versions: " + ", ".join(f"{k} {v}" for k, v in versions.items()) + ".")
     return facts
+
+
+#: a check's status in a failing run's witness list, in words
+CHECK_STATUS_WORDS = {"rank": "rank as printed", "rank-mismatch": "rank not as printed",
+                      "count": "count as printed", "count-mismatch": "count not as printed",
+                      "nonzero": "residual nonzero"}
+
+
+def check_line(ch: Any) -> str:
+    """One check of a failing run: its name as mathematics, its status in words, its detail."""
+    return (f"check {unicode_name(ch.name)}: {CHECK_STATUS_WORDS.get(ch.status, ch.status)}"
+            + (f", {ch.detail}" if ch.detail else ""))
 
 
 def _witness_heading(w: Result) -> str:
@@ -338,6 +392,10 @@ def free_scope(r: Result) -> str:
 
 
 
+def _method_name(m: str) -> str:
+    return "the dimension-free method" if m == "free" else m
+
+
 def correction_summary(rs: list[Result], planned: Sequence[tuple[int, int]]) -> tuple[str, list[str]]:
     """The status of a candidate correction, aggregated over sizes, and one phrase per method.
 
@@ -358,12 +416,12 @@ def correction_summary(rs: list[Result], planned: Sequence[tuple[int, int]]) -> 
             if r.n is None:
                 if r.verdict == "proved":
                     free_proved = True
-                    phrases.append(f"proved for {free_scope(r)} by {m}")
+                    phrases.append(f"proved for {free_scope(r)} by {_method_name(m)}")
                 elif r.verdict == "fails":
                     failed_at.add(None)
-                    phrases.append(f"fails by {m}")
+                    phrases.append(f"fails by {_method_name(m)}")
                 else:
-                    phrases.append(f"{r.verdict} by {m} (all n, r)")
+                    phrases.append(f"{r.verdict} for all n, r by {_method_name(m)}")
             elif r.verdict not in PASSING and r.verdict != "fails":
                 other.setdefault(r.verdict, set()).add((r.n, r.r))
         passed_at.update(ok)
@@ -576,7 +634,10 @@ def _summary_rows(claims: list[ClaimResults]) -> tuple[list[str], list[tuple[Cla
     rows = []
     for c in claims:
         cnt = Counter(r.verdict for r in sized(c))
-        free = next((r.verdict for r in c.printed if r.n is None), "–")
+        fr = next((r for r in c.printed if r.n is None), None)
+        # a proof at particular r says where ("proved, every n at r = n"), as the headline counts it
+        free = "–" if fr is None else fr.verdict if fr.verdict != "proved" or free_scope(fr) == "all n, r" \
+            else f"proved, {free_scope(fr)}"
         bad = len(c.unexpected)
         rows.append((c, [free] + [cnt[v] for v in present],
                      "as expected" if not bad else f"{bad} unexpected"))
@@ -626,6 +687,8 @@ def render_markdown(results: Sequence[Result], meta: dict[str, Any] | None = Non
     out += [_md_escape(f) for f in _run_facts(meta)] + [""]
     out += ["## What the verdicts mean", ""]
     out += [f"- **{v}**: {_md_escape(VERDICT_MEANING[v])}" for v in VERDICTS]
+    out += ["", f"**The methods.** {METHODS_INTRO}", ""]
+    out += [f"- **{m}**: {_md_escape(t)}" for m, t in METHOD_MEANING.items()]
     out += ["", f"**The bound p.** {_md_escape(BOUND_EXPLANATION)}", "",
             f"**Expected verdicts.** {_md_escape(EXPECTED_EXPLANATION)}", ""]
     if mutation:
@@ -749,12 +812,10 @@ def _md_erratum(c: ClaimResults) -> list[str]:
         return _md_erratum_tail(c, facts, w, out)
     out += [_md_escape(_witness_heading(w)), ""]
     out += [f"- {_md_escape(k)}: {_md_code(v)}" for k, v in witness_lines(w.witness)] \
-        or [f"- ({NO_POINT})"]
+        or [f"- ({_md_escape(no_point_text(w))})"]
     if w.residual:
         out.append(f"- residual: {_md_code(short(w.residual, WITNESS_WIDTH))}")
-    out += [f"- check {_md_escape(ch.name)}: {ch.status}" + (f", {_md_escape(ch.detail)}"
-                                                             if ch.detail else "")
-            for ch in w.checks if ch.status != "zero"][:10]
+    out += [f"- {_md_escape(check_line(ch))}" for ch in w.checks if ch.status != "zero"][:10]
     if w.message:
         out.append(f"- {_md_escape(w.message)}")
     if w.rerun:
@@ -836,7 +897,7 @@ def _tex_small_witness(c: ClaimResults) -> list[str]:
     # three letters a line, the whole shrunk to the line's width when wider
     out += [r"\begin{center}\resizebox{\ifdim\width>\linewidth\linewidth\else\width\fi}{!}{$\displaystyle"
             r"\begin{gathered}" + r"\\[2pt]".join(rows) + r"\end{gathered}$}\end{center}"]
-    out += [tex_text(f"There the residual {_entry_words(w['entry'])} is ") + f"${value} \\neq 0$."
+    out += [tex_words(f"There the residual {_entry_words(w['entry'])} is ") + f"${value} \\neq 0$."
             + ((tex_escape(" A self-contained script (Python with sympy, no stiefelsym) rebuilds this point and "
                            "evaluates the printed formula and the correction: ")
                 + _tt(f"{WITNESS_SCRIPT_DIR}/{c.id}.py") + ".") if _has_script(c) else ""), ""]
@@ -896,10 +957,8 @@ def _md_corrections(c: ClaimResults) -> list[str]:
         change = _md_change(c.change_of(var)).replace("|", r"\|")
         rows.append([change or "–", _md_cell(var), f"**{status}**" if status == "verified" else status,
                      _md_cell("; ".join(phrases))])
-    where = (f" The claim as printed was run at {len(planned)} size{'s' * (len(planned) != 1)} "
-             f"{format_sizes(planned)}; a correction is verified only if it passes at every one of them "
-             "and fails nowhere.") if planned else ""
-    return [f"Candidate corrections:{where}", ""] + _md_table(["correction (in the graph)", "registered as", "status",
+    where = f" {_corrections_rule(planned)[0].upper()}{_corrections_rule(planned)[1:]}" if planned else ""
+    return [f"Candidate corrections:{where}", ""] + _md_table(["correction (change of the formula)", "registered as", "status",
                                                                "runs"], rows, "llll")
 
 
@@ -993,13 +1052,22 @@ def headline(claims: list[ClaimResults]) -> tuple[str, list[ClaimResults]]:
     free = [c for c in claims if any(r.n is None and r.verdict == "proved" for r in c.printed)]
     corrected_free = [c for c in claims
                       if any(r.n is None and r.verdict == "proved" for vs in c.variants.values() for r in vs)]
-    one_r = [c for c in free if any(r.n is None and r.verdict == "proved" and free_scope(r) != "all n, r"
-                                    for r in c.printed)]
+    scopes = Counter(next(free_scope(r) for r in c.printed if r.n is None and r.verdict == "proved") for c in free)
+    # the claims stated at one r (or at r = 1 and at r = n) by that scope, the unions last
+    one_r = sorted(((k, v) for k, v in scopes.items() if k != "all n, r"), key=lambda kv: (" and " in kv[0], kv[0]))
     at_once = (f"{len(free)} of them proved for every n and r at once" if not one_r else
-               f"{len(free)} of them proved for every size at once: {len(free) - len(one_r)} for every n and r, "
-               f"{len(one_r)} stated at one r (or at a union of them, as r = 1 and r = n) for every n at each")
-    text = (f"Of the paper's {len(claims)} checkable statements, {len(claims) - len(errata)} hold as printed at "
-            f"every size computed ({at_once}), and {len(errata)} "
+               f"{len(free)} of them proved for every size at once: {scopes['all n, r']} for every n and r, "
+               "and, stated at particular r, for every n: "
+               + ", ".join(f"{v} {k.removeprefix('every n ')}" for k, v in one_r))
+    holds = sum(map(holds_at_every_size, claims))
+    # a claim that no method decided at some computed size is not said to hold there
+    open_ = [c.id for c in claims if not c.failures and not holds_at_every_size(c)]
+    named = ", ".join(open_[:5]) + (f" and {len(open_) - 5} more" if len(open_) > 5 else "")
+    text = (f"Of the paper's {len(claims)} checkable statements, {holds} hold as printed at "
+            f"every size computed ({at_once}), "
+            + (f"{len(open_)} {'holds' if len(open_) == 1 else 'hold'} where decided but "
+               f"{'was' if len(open_) == 1 else 'were'} left undecided at some size ({named}), " if open_ else "")
+            + f"and {len(errata)} "
             f"fail as printed: each is an erratum with an exact witness, and where a correction is registered "
             f"it was verified ({len(corrected_free)} corrections proved for every n and r).")
     return text, errata
@@ -1058,6 +1126,9 @@ def render_latex(results: Sequence[Result], meta: dict[str, Any] | None = None, 
     out += _toc_section("What the verdicts mean") + [r"\begin{description}"]
     out += [f"\\item[{v}] {tex_escape(VERDICT_MEANING[v])}" for v in VERDICTS]
     out += [r"\end{description}",
+            r"\paragraph{The methods.} " + tex_escape(METHODS_INTRO), r"\begin{description}"]
+    out += [f"\\item[{m}] {tex_escape(t)}" for m, t in METHOD_MEANING.items()]
+    out += [r"\end{description}",
             r"\paragraph{The bound $p$.} " + tex_escape(BOUND_EXPLANATION),
             r"\paragraph{Expected verdicts.} " + tex_escape(EXPECTED_EXPLANATION), ""]
     if mutation:
@@ -1089,13 +1160,24 @@ def _tex_claim_table(claims: list[ClaimResults]) -> list[str]:
     return out + [r"\bottomrule", r"\end{longtable}", "}", ""]
 
 
+def holds_at_every_size(c: ClaimResults) -> bool:
+    """The claim as printed holds at every size it was computed at: proved for every size at once, or
+    passed (proved or checked) by some method at each computed size; a size that no method decided
+    (only undecided or inconclusive runs) is not counted as holding."""
+    if c.failures:
+        return False
+    if any(r.n is None and r.verdict == "proved" for r in c.printed):
+        return True
+    sizes = {(r.n, r.r) for r in c.printed if r.n is not None}
+    return bool(sizes) and sizes <= {(r.n, r.r) for r in c.printed if r.n is not None and r.verdict in PASSING}
+
+
 def section_counts(cs: list[ClaimResults]) -> dict[str, int]:
     """Per section: its claims, those proved for every n, r as printed, those that hold as printed
     at every computed size, those that fail as printed, and those with a verdict not expected."""
     free = sum(any(r.n is None and r.verdict == "proved" for r in c.printed) for c in cs)
     fails = sum(bool(c.failures) for c in cs)
-    holds = sum(not c.failures and all(r.verdict in PASSING for r in c.printed if r.n is not None)
-                and any(r.n is not None for r in c.printed) for c in cs)
+    holds = sum(map(holds_at_every_size, cs))
     return {"claims": len(cs), "all n, r": free, "every size": holds, "fail as printed": fails,
             "unexpected": sum(bool(c.unexpected) for c in cs)}
 
@@ -1104,7 +1186,7 @@ def _tex_section_table(claims: list[ClaimResults], meta: dict[str, Any]) -> list
     """The referee's summary: one row per section of the paper."""
     out = _toc_section("Summary")
     out += [tex_escape("Per section of the paper: its claims; those proved for every n and r at once "
-                       "(dimension-free, as printed; for a statement made at one r, every n at that r); those that hold as printed at every size computed "
+                       "(dimension-free, as printed; for a statement made at one r, every n at that r, and for one made at r = 1 and at r = n, every n at each); those that hold as printed at every size computed "
                        "(proved, or checked at random exact points); those that fail as printed (the errata); "
                        "and verdicts the catalog does not expect.  Each claim follows, by section."), "",
             r"\begin{center}\small", r"\begin{tabular}{@{}P{6.2cm}rrrrr@{}}", r"\toprule",
@@ -1123,19 +1205,21 @@ def _tex_claim_brief(c: ClaimResults) -> list[str]:
     """A claim in a few lines: its statement, the verdict for all n, r, and its sizes by method."""
     out = [_tex_claim_heading(c)]
     if c.title:
-        out += [tex_text(c.title), ""]
+        out += [tex_words(c.title), ""]
     if c.statement.strip():
         out.append(tex_display(c.statement))
     free = next((r for r in c.printed if r.n is None), None)
     lines = []
     if free is not None:
-        lines.append(f"{free_scope(free)} (dimension-free): proved" if free.verdict == "proved" else
+        assumes = free_assumptions(free)
+        lines.append(f"{free_scope(free)} (dimension-free): proved"
+                     + (f", assuming {'; '.join(assumes)}" if assumes else "") if free.verdict == "proved" else
                      f"all n, r (dimension-free): {free.verdict} ({_brief_reason(free.message)})")
     _, phrases = correction_summary([r for r in c.printed if r.n is not None], planned_sizes(c))
     lines += phrases
     if c.failures:
         lines.append("fails as printed: see the Errata")
-    out += [r"\noindent\textit{Verdict:} " + tex_escape("; ".join(lines) + "."), ""]
+    out += [r"\noindent\textit{Verdict:} " + tex_words("; ".join(lines) + "."), ""]
     return out
 
 
@@ -1145,6 +1229,11 @@ def _brief_reason(message: str | None) -> str:
     text = (message or "").split(" (e.g.")[0].split("; ")[0]
     head, sep, rest = text.partition(": ")
     text = head + sep + rest.split(" (")[0] if sep else text
+    # in words a mathematician reads: what the statement needs, what the rewriting left
+    text = text.replace("needs coordinates (fixed n, r): ", "needs fixed n, r: ")
+    text = re.sub(r"^(\d+) residual entr(?:y has|ies have) a nonzero normal form$",
+                  lambda m: f"{m.group(1)} residual entr{'y does' if m.group(1) == '1' else 'ies do'} not reduce to 0 "
+                            "by the rewriting rules", text)
     return short(text, 90)
 
 
@@ -1155,7 +1244,7 @@ def _tex_claim_heading(c: ClaimResults) -> str:
 def _tex_claim(c: ClaimResults) -> list[str]:
     out = [_tex_claim_heading(c)]
     if c.title:
-        out += [tex_text(c.title), ""]
+        out += [tex_words(c.title), ""]
     if c.statement.strip():
         out.append(tex_display(c.statement))
     out += [tex_escape(f"Kind: {c.kind}, {KIND_MEANING.get(c.kind, '')}."), ""]
@@ -1184,6 +1273,26 @@ def _tex_claim(c: ClaimResults) -> list[str]:
     return out
 
 
+def free_assumptions(r: Result) -> list[str]:
+    """What a dimension-free proof assumes beyond the constraints (the metric realization: A positive
+    definite, and the flow's multipliers the unique solutions of their Sylvester equations), in words:
+    the engine's names of the multipliers (``Lambda:1``) and of their relations (``rho:Lambda:1``) as Λ."""
+    data = r.certificate_data
+    if r.verdict != "proved" or not isinstance(data, dict) or not isinstance(data.get("summary"), dict):
+        return []
+    assumes = [str(a) for a in data["summary"].get("assumes") or ()]
+    letters = sorted(set(re.findall(r"(?<!rho:)Lambda:(\d+)", " ".join(assumes))), key=int)
+    name = {k: "Λ" if len(letters) == 1 else "Λ" + k.translate(str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉"))
+            for k in letters}
+    out = []
+    for a in assumes:
+        a = re.sub(r"rho:Lambda:(\d+) = 0", "its Sylvester equation", a)
+        a = re.sub(r"Lambda:(\d+)", lambda m: name.get(m.group(1), "Λ"), a)
+        a = a.replace("A^-1", "A⁻¹").replace("I_r", "Iᵣ").replace("I_n", "Iₙ").replace("(keeps: ", "(to keep ")
+        out.append(unicode_name(a))
+    return out
+
+
 def certificate_summary(r: Result) -> str:
     """One line on a dimension-free proof's cofactor certificate (its terms are in results.json)."""
     data = r.certificate_data
@@ -1196,14 +1305,18 @@ def certificate_summary(r: Result) -> str:
     if data.get("cases"):   # a claim stated at a union of one-r families: one certificate per family
         entries += " in " + " and ".join(f"the case r = {c['sizes']['r']} (every n >= {c['sizes']['n_min']})"
                                          for c in data["cases"])
-    checked = "re-checked by the independent checker (stiefelsym.certificate_check)"
+    checked = "re-checked by an independent checker (a small separate program that re-expands it)"
+    assumes = free_assumptions(r)
+    if assumes:
+        checked += f"; it assumes (the {sm.get('realization', 'metric')} realization): {'; '.join(assumes)}"
     if not sm["terms"]:
         verb = "vanishes" if sm["entries"] == 1 else "vanish"
-        return (f"Cofactor certificate ({r.method}): empty, the {entries} already {verb} in the free algebra "
+        return (f"Cofactor certificate ({_method_name(r.method)}): empty, the {entries} already {verb} in the free algebra "
                 f"as built; {checked}")
     sizes = ", ".join(map(str, per[:12])) + (", ..." if len(per) > 12 else "")
-    return (f"Cofactor certificate ({r.method}): {sm['terms']} terms over {entries} (per entry: {sizes}), "
-            f"in the hypotheses {', '.join(sm['hypotheses'])}; {checked}; the terms are in results.json")
+    return (f"Cofactor certificate ({_method_name(r.method)}): {sm['terms']} terms over {entries} (per entry: {sizes}), "
+            f"in {len(sm['hypotheses'])} relation{'' if len(sm['hypotheses']) == 1 else 's'} of the ideal "
+            f"({', '.join(sm['hypotheses'])}, as results.json names them); {checked}; the terms are in results.json")
 
 
 def _tex_derivations(c: ClaimResults) -> list[str]:
@@ -1254,7 +1367,7 @@ def _tex_erratum(c: ClaimResults, reruns: int = MAX_ERRATUM_RERUNS) -> list[str]
     w = c.failures[0]
     out += [tex_escape("Failing runs: " + ", ".join(f"{r.size} {r.method}" for r in c.failures) + "."), ""]
     if w.erratum:
-        out += [tex_escape("What is wrong: " + w.erratum), ""]
+        out += ["What is wrong: " + tex_words(w.erratum), ""]
     out += _tex_small_witness(c)
     if small_witness_of(c) is not None and "point" in (w.witness or {}):
         out += [tex_escape(f"The seeded run that found the failure: size {w.size}, method {w.method}"
@@ -1264,11 +1377,10 @@ def _tex_erratum(c: ClaimResults, reruns: int = MAX_ERRATUM_RERUNS) -> list[str]
     out += [tex_escape(_witness_heading(w))]
     items = [tex_escape(k) + ": " + _tt(v) for k, v in witness_lines(w.witness)]
     if not items:
-        items = [f"({NO_POINT})"]
+        items = [tex_escape(f"({no_point_text(w)})")]
     if w.residual:
         items.append("residual: " + _tt(short(w.residual, WITNESS_WIDTH)))
-    items += [tex_escape(f"check {ch.name}: {ch.status}" + (f", {ch.detail}" if ch.detail else ""))
-              for ch in w.checks if ch.status != "zero"][:10]
+    items += [tex_words(check_line(ch)) for ch in w.checks if ch.status != "zero"][:10]
     if w.message:
         items.append(tex_escape(w.message))
     if w.rerun:
@@ -1290,6 +1402,15 @@ def _tex_erratum_tail(c: ClaimResults, facts: dict[str, Any], w: Result, out: li
     return out + _tex_corrections(c)
 
 
+def _corrections_rule(planned: Sequence[tuple[int, int]]) -> str:
+    """Where the claim as printed was run, and so where a correction must pass."""
+    if len(planned) == 1:
+        return (f"the claim as printed was run at the one size {format_sizes(planned)}; a correction is "
+                "verified only if it passes there.")
+    return (f"the claim as printed was run at {len(planned)} sizes {format_sizes(planned)}; a correction is "
+            "verified only if it passes at every one of them and fails nowhere.")
+
+
 def _tex_corrections(c: ClaimResults) -> list[str]:
     if not c.variants:
         return ["No candidate correction was checked.", ""]
@@ -1298,12 +1419,10 @@ def _tex_corrections(c: ClaimResults) -> list[str]:
     for var, rs in c.variants.items():
         status, phrases = correction_summary(rs, planned)
         items.append(_tex_with_change(c, var) + " --- " + (r"\textbf{verified}" if status == "verified" else status)
-                     + ". " + tex_escape("; ".join(phrases) + "."))
+                     + tex_escape(" (" + "; ".join(phrases) + ")."))
     intro = "Candidate corrections:"
     if planned:
-        intro += tex_escape(f" the claim as printed was run at {len(planned)} size{'s' * (len(planned) != 1)} "
-                            f"{format_sizes(planned)}; a correction is verified only if it passes at every "
-                            "one of them and fails nowhere.")
+        intro += tex_escape(" " + _corrections_rule(planned))
     return [intro] + _tex_items(items)
 
 
@@ -1323,7 +1442,7 @@ MUTATION_EXPLANATION = (
     "is not equivalent.  Survivors are soundness or sensitivity problems.  Kill rate = killed / "
     "(mutants - equivalent).  Unless the command says --fresh-points, the point methods (rational, "
     "modular, float) evaluate a mutant at the random points of the claim as printed and recompute "
-    "only the nodes of its graph that the change reaches (parameters the printed claim never drew "
+    "only the subexpressions of its formula that the change reaches (parameters the printed claim never drew "
     "are drawn afresh), and the symbolic method has 30 s per run of a mutant; the verdicts are those of "
     "fresh points, which the tests check.")
 MUTATION_COLUMNS = ("mutants", "killed", "fails", "error", "other", "survived", "equivalent",
@@ -1433,7 +1552,7 @@ def _tex_change(changes: Sequence[dict[str, str]] | None) -> str:
     if not changes:
         return ""
     if not changes[0].get("where") and not changes[0].get("old"):
-        return tex_escape("no change in the graph")
+        return tex_escape("no change in the formula")
     parts = []
     for c in changes:
         if c.get("more"):
@@ -1442,7 +1561,7 @@ def _tex_change(changes: Sequence[dict[str, str]] | None) -> str:
         old, new = c.get("old_tex", ""), c.get("new_tex", "")
         math = (f"${old} \\to {new}$" if old and new and all(math_ok(t) and t.isascii() for t in (old, new))
                 else tex_escape(f"{c.get('old', '')} → {c.get('new', '')}"))
-        parts.append(tex_escape(f"in {c.get('where', '')}: ") + math)
+        parts.append(tex_words(f"in {unicode_name(c.get('where', ''))}: ") + math)
     return "; ".join(parts)
 
 

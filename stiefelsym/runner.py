@@ -225,13 +225,16 @@ def _error(claim: Claim, size: Size | None, method: str, seed: int, message: str
 
 
 def _exact_runner(in_worker: bool, budget: float | None) -> Callable[..., Result]:
-    """The symbolic method: in a worker it runs right there (the worker is the killable
-    process); elsewhere in its own killable child."""
+    """The symbolic method: in a worker, a small attempt runs right there (the worker is the
+    killable process) and a heavy one in its own forked child with the run's memory budget, so
+    that the worker survives it (:func:`stiefelsym.methods.isolates`); elsewhere in its own
+    killable child."""
     if not in_worker:
         return METHOD_RUNNERS["exact"]
-    from .methods import EXACT_TIME_LIMIT, run_exact
+    from .methods import EXACT_TIME_LIMIT, run_exact_isolated
     limit = EXACT_TIME_LIMIT if budget is None else min(EXACT_TIME_LIMIT, budget)
-    return lambda c, n, r, seed, func=None, options=None: run_exact(c, n, r, seed, func, limit)
+    return lambda c, n, r, seed, func=None, options=None: run_exact_isolated(c, n, r, seed, func, limit,
+                                                                             in_worker=True)
 
 
 def _dispatch(claim: Claim, size: Size | None, method: str, seed: int, func: Callable | None,
@@ -254,14 +257,16 @@ def _dispatch(claim: Claim, size: Size | None, method: str, seed: int, func: Cal
 def _run_auto(claim: Claim, size: Size, seed: int, func: Callable | None,
               exact: Callable[..., Result] | None = None) -> Result:
     exact = exact or METHOD_RUNNERS["exact"]
-    if size.n <= claim.exact_max_n:
+    if claim.exact_at(size.n, size.r):
         res = exact(claim, size.n, size.r, seed, func)
         if res.verdict != "inconclusive":
             return res
         reason = res.message
         spent = res.seconds
     else:
-        reason, spent = f"n = {size.n} is above this claim's symbolic budget (n <= {claim.exact_max_n})", 0.0
+        reason, spent = (f"({size.n},{size.r}) is above this claim's symbolic budget "
+                         f"({claim.exact_budget_text()})" if claim.exact_max_r else
+                         f"n = {size.n} is above this claim's symbolic budget (n <= {claim.exact_max_n})"), 0.0
     res = METHOD_RUNNERS["modular"](claim, size.n, size.r, seed, func)
     res.message = "; ".join(m for m in (f"exact: {reason}" if reason else "", res.message) if m)
     res.seconds += spent

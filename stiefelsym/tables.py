@@ -1325,8 +1325,10 @@ def verdict_markdown(verdicts: dict[str, Any]) -> list[str]:
 def _tex(text: str) -> str:
     repl = {"\\": r"\textbackslash{}", "_": r"\_", "&": r"\&", "%": r"\%", "#": r"\#", "$": r"\$",
             "{": r"\{", "}": r"\}", "^": r"\^{}", "~": r"\~{}"}
-    repl.update({"−": "-", "–": "--", "≤": r"$\le$", "≥": r"$\ge$", "≠": r"$\ne$"})
-    return "".join(repl.get(c, c) for c in text)
+    repl.update({"−": "-", "–": "--", "≤": r"$\le$", "≥": r"$\ge$", "≠": r"$\ne$",
+                 # in the default (OT1) text font < and > would print as ¡ and ¿; ² is a bitmap (TS1) glyph
+                 "<": "$<$", ">": "$>$", "|": "$|$", "²": "$^2$", "³": "$^3$", "·": r"$\cdot$"})
+    return "".join(repl.get(c, c) for c in text.replace("<=", "≤").replace(">=", "≥"))
 
 
 def render_latex(T: Tables, verdicts: dict[str, Any]) -> str:
@@ -1379,16 +1381,16 @@ def render_latex(T: Tables, verdicts: dict[str, Any]) -> str:
 
 
 def _tex_title(title: str) -> str:
-    return (title.replace("§", r"\S").replace("Λ1", r"$\Lambda_1$").replace("Λ2", r"$\Lambda_2$")
+    return (title.replace("§", r"\ensuremath{\S}").replace("Λ1", r"$\Lambda_1$").replace("Λ2", r"$\Lambda_2$")
             .replace("SO(n)", r"$SO(n)$").replace("–", "--"))
 
 
 STANDALONE = r"""% Compile with: pdflatex tables-standalone.tex  (in the directory of tables.tex)
 \documentclass[10pt]{article}
-\usepackage[T1]{fontenc}
-\usepackage[utf8]{inputenc}
 \usepackage[landscape,margin=1.5cm]{geometry}
 \usepackage{booktabs,longtable,amssymb}
+% the default bullet comes from a TS1 font that Debian's texlive-latex-base has only as bitmaps
+\renewcommand{\labelitemi}{$\bullet$}
 \begin{document}
 \input{tables}
 \end{document}

@@ -10,10 +10,12 @@ and verifies never imports it.  :func:`load_claims_isolated`:
    standard output to standard error) and, for each claim, forks a grandchild
    that traces that claim alone (no claim's graph can depend on another claim
    having been traced before it), twice and compared as in
-   :func:`stiefelsym.ir.compile_claim`, with symbolic sizes and at every size
-   needed (the sizes its size statement lists and the sizes the command asks
-   for), and the same for each correction; the grandchild also evaluates the
-   claim's metadata callables (the size condition, the erratum sizes) into tables;
+   :func:`stiefelsym.ir.compile_claim`, with symbolic sizes and, only when that
+   trace is refused, at every size needed (the sizes its size statement lists
+   and the sizes the command asks for), and the same for each correction (a
+   function with a graph of symbolic sizes is never traced at a number); the
+   grandchild also evaluates the claim's metadata callables (the size
+   condition, the erratum sizes) into tables;
 2. the children send back pure data as JSON: the metadata fields, the sizes as
    an explicit list with the bounds and an admits table, the erratum table, and
    per (size | symbolic) either the graph's state or the refusal (exception class
@@ -151,6 +153,12 @@ def _get(d: Any, key: str, *types_: type, optional: bool = False) -> Any:
     return v
 
 
+def _exact_pairs(pairs: list) -> tuple[tuple[int, int], ...]:
+    if not all(type(p) is list and len(p) == 2 and all(type(x) is int for x in p) for p in pairs):
+        raise WireError("the field 'exact_max_r' is not a list of [n, r] pairs")
+    return tuple((p[0], p[1]) for p in pairs)
+
+
 # --------------------------------------------------------------------------- the children
 
 def _graph_state(g: Any) -> Any:
@@ -170,15 +178,14 @@ def _refusal(exc: BaseException) -> dict:
     return {"error": [type(exc).__name__, message], "at": where}
 
 
-def _trace_one(func: Callable, realization: str, key: Any, has_free: bool) -> Any:
+def _trace_one(func: Callable, realization: str, key: Any) -> Any:
     """The graph's state, or the refusal, of one function at one key (None: symbolic sizes)."""
     from .ir import Graph, _compile
     from .scene import REALIZATIONS
     cons = REALIZATIONS[realization]
     constraints = (cons.name, cons.build)
     try:
-        g = _compile(func, None, None, constraints) if key is None else \
-            _compile(func, key[0], key[1], constraints, twice=not has_free)
+        g = _compile(func, None, None, constraints) if key is None else _compile(func, key[0], key[1], constraints)
     except BaseException as exc:   # noqa: BLE001 - SystemExit, KeyboardInterrupt, anything: recorded
         return _refusal(exc)
     return _graph_state(g) if isinstance(g, Graph) else _refusal(g)
@@ -218,6 +225,7 @@ def _claim_data(c: Claim, needed: Sequence[tuple[int, int]]) -> dict:
     return {
         "id": c.id, "paper": list(c.paper), "kind": c.kind, "section": c.section, "statement": c.statement,
         "title": c.title, "realization": c.realization, "expect": c.expect, "exact_max_n": c.exact_max_n,
+        "exact_max_r": [list(p) for p in c.exact_max_r],
         "erratum": c.erratum, "equivariance": c.equivariance, "source": c.source, "path": path,
         "line": line if type(line) is int else 0, "name": getattr(c.func, "__name__", c.id),
         "sizes": {"list": [list(p) for p in listed], "n_min": spec.n_min, "r_min": spec.r_min,
@@ -362,8 +370,25 @@ def _jobs_lines(c: Claim, needed: Sequence[tuple[int, int]], jobs: list, start: 
             write({"meta": meta})
             continue
         _, f, key = job
-        out = _trace_one(funcs[f], c.realization, key, has_free.get(f, False))
+        if _skipped(job, has_free):
+            continue
+        out = _trace_one(funcs[f], c.realization, key)
+        if key is None:
+            has_free[f] = "error" not in out
         write({"job": out})
+
+
+def _skipped(job: tuple, has_free: dict) -> bool:
+    """Whether a job is not done: the function at a fixed size when it has a graph with symbolic sizes
+    (that graph is its graph at every size, and it is never traced at a number: see
+    :func:`stiefelsym.ir._compile`).  Asked alike by the grandchild and by its parent."""
+    return job[0] == "f" and job[2] is not None and has_free.get(job[1], False)
+
+
+def _next_job(jobs: list, i: int, has_free: dict) -> int:
+    while i < len(jobs) and _skipped(jobs[i], has_free):
+        i += 1
+    return i
 
 
 def _trace_jobs(c: Claim, meta: dict) -> list:
@@ -429,7 +454,7 @@ def _run_claim(c: Claim, needed: Sequence[tuple[int, int]], timeout: float, memo
                         if key is None:
                             has_free[f] = "error" not in item["job"]
                         results.append([f, None if key is None else list(key), item["job"]])
-                    i += 1
+                    i = _next_job(jobs, i + 1, has_free)
                     deadline = time.monotonic() + timeout
         finally:
             os.close(rfd)
@@ -448,6 +473,7 @@ def _run_claim(c: Claim, needed: Sequence[tuple[int, int]], timeout: float, memo
                 _, f2, k2 = jobs[i]
                 results.append([f2, None if k2 is None else list(k2), mark])
                 i += 1
+        i = _next_job(jobs, i, has_free)
     assert meta is not None
     del meta["keys"]
     meta["graphs"] = [[k, e] for f, k, e in results if f == 0]
@@ -755,6 +781,7 @@ def _claim(d: Any, path: str) -> Claim:
                  func=TracedFunction(name, realization, _get(d, "graphs", list), src_path, line),
                  sizes=spec, statement=_get(d, "statement", str), title=_get(d, "title", str),
                  realization=realization, expect=_get(d, "expect", str), exact_max_n=_get(d, "exact_max_n", int),
+                 exact_max_r=_exact_pairs(_get(d, "exact_max_r", list)),
                  corrections=corrections, source=_get(d, "source", str),
                  fails_at=None if fails is None else _Lookup("erratum sizes (fails_at)", fails),
                  erratum=_get(d, "erratum", str), equivariance=_get(d, "equivariance", str), reviewed=False)

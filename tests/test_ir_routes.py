@@ -178,11 +178,38 @@ def test_every_method_evaluates_one_graph():
         return {"x": s.X.T @ s.X - s.Ir}
     c = _claim(counted)
     assert run_one(c, Size(3, 2), "modular", 0).verdict in PASSING
-    traced = len(calls)             # twice with symbolic sizes (compared), once at (3, 2) (compared)
-    assert traced == 3
+    traced = len(calls)             # twice with symbolic sizes (compared), never at (3, 2)
+    assert traced == 2
     for m in ("exact", "rational", "float", "auto"):
         assert run_one(c, Size(3, 2), m, 0).verdict in PASSING
     assert len(calls) == traced     # then only evaluated, by every method
+
+
+def test_a_claim_with_a_graph_of_symbolic_sizes_is_never_traced_at_a_number():
+    """The trace of such a claim holds no number of a size: not in its state, not in the frames of its
+    thread; its graph at (7, 2) is its graph with symbolic sizes.  A claim refused with symbolic sizes (it
+    reads int(n)) is traced at (7, 2), with the number."""
+    from stiefelsym.ir.graph import Size as GSize
+    seen = []
+
+    def introspecting(s):
+        t = object.__getattribute__(s, "_t")
+        f, local = sys._getframe(), []
+        while f is not None:
+            local += [v for k, v in f.f_locals.items() if k in ("n", "r")]
+            f = f.f_back
+        seen.append((t._numbers(GSize(1, "n", None)), t._numbers(GSize(1, "r", None)), tuple(local)))
+        return {"x": s.X.T @ s.X - s.Ir}
+    g = compile_claim(introspecting, 7, 2, STANDARD)
+    assert g.digest() == compile_claim(introspecting, None, None, STANDARD).digest()
+    assert len(seen) == 2 and all(x[:2] == (None, None) and 7 not in x[2] and 2 not in x[2] for x in seen), seen
+
+    def reading(s):
+        seen.append(int(s.n))
+        return {"x": s.X.T @ s.X - s.Ir}
+    seen.clear()
+    compile_claim(reading, 7, 2, STANDARD)
+    assert 7 in seen
 
 
 # -- 5. a constant outside the float range ----------------------------------------------------------
@@ -299,14 +326,15 @@ def test_a_certificate_moved_to_another_claim_is_caught(tmp_path):
     assert check_results([rec], cat, echo=lines.append) == 1, lines
 
 
-def test_free_and_fixed_graphs_agree_for_the_catalog_sample():
+def test_the_graph_at_a_size_is_the_graph_of_symbolic_sizes_for_the_catalog_sample():
+    """A claim that traces with symbolic sizes is not traced at a size: its graph there is that graph."""
     from stiefelsym.claims import load_catalog
     cat = load_catalog()
     for cid in ("prep", "neumann-lax", "euclidean-flow"):
         c = cat.get(cid)
         z = next(iter(c.sizes))
-        free = compile_claim(c.func, None, None, STANDARD).digest()
-        assert compile_claim(c.func, z.n, z.r, STANDARD).digest() == free
+        free = compile_claim(c.func, None, None, STANDARD)
+        assert compile_claim(c.func, z.n, z.r, STANDARD) is free and free.sizes is None
 
 
 def test_a_passing_verdict_for_a_claim_that_does_not_trace_is_rejected():
@@ -340,3 +368,26 @@ def test_a_hand_edited_verdict_with_the_right_digest_is_caught(tmp_path):
     (out / "results.json").write_text(json.dumps(payload))
     r = _run_cli(["check", str(out / "results.json")], tmp_path)
     assert r.exit_code == 1 and "a run again says 'fails'" in r.output
+
+
+def int_size_block(s):
+    """X − X + 0 with the zero block written 3 x 2: a graph at n = 3 only (with symbolic sizes the int 3
+    cannot be told from n)."""
+    return {"r": s.X - s.X + s.zeros(3, 2)}
+
+
+def test_a_graph_of_symbolic_sizes_is_typed_at_each_size_without_running_the_claim():
+    """The graph at (n, r) of a claim with a graph of symbolic sizes is that graph replayed at (n, r) by the
+    tracer: a block written 3 x 2 types at (3,2) and is refused at (4,2), where no method evaluates it, and
+    the dimension-free method proves nothing for a claim stated at (4,2) too."""
+    assert compile_claim(int_size_block, 3, 2, STANDARD) is compile_claim(int_size_block, None, None, STANDARD)
+    with pytest.raises(TraceRefused, match=r"does not type at \(4,2\)"):
+        compile_claim(int_size_block, 4, 2, STANDARD)
+    c = _claim(int_size_block, sizes=admissible(n_max=4, n_min=3, r_min=2, r_max=2))
+    assert run_one(c, Size(4, 2), "exact", 0).verdict == "error"
+    assert run_one(c, Size(3, 2), "exact", 0).verdict == "proved"
+    assert run_one(c, None, "free", 0).verdict not in PASSING      # (the free scene refuses a 3 x 2 block)
+    from stiefelsym.free_method import typed_at_stated_sizes    # and the proof's own check of the stated sizes
+    assert "not a graph at (4,2)" in typed_at_stated_sizes(c, int_size_block)
+    assert typed_at_stated_sizes(_claim(int_size_block, sizes=admissible(n_max=3, n_min=3, r_min=2, r_max=2)),
+                                 int_size_block) == ""

@@ -89,3 +89,12 @@ def test_the_registered_words_of_a_correction_set_their_scripts():
     assert r"I\ensuremath{_{n}}" in tex and r"\ensuremath{^{\ensuremath{-}1}}" in tex
     assert r"\wedge" in tex and r"\ensuremath{_{I\ensuremath{_{2}}}}" in tex
     assert r"N0\_XP2" in tex and "\\^{}" not in tex
+
+
+def test_the_registered_words_set_a_spaced_inequality_as_one():
+    """n <= 2r + 2 in the words of a correction or of what is wrong is n ≤ 2r + 2 in the PDF; a bracket
+    <a, b> (no = after <) and <= inside a word stay as they are."""
+    from stiefelsym.latex import tex_words
+    tex = tex_words("regular iff n <= 2r + 2; rank >= 5; <axial(P1), P2>; a<=b")
+    assert r"n \ensuremath{\le} 2r" in tex and r"rank \ensuremath{\ge} 5" in tex
+    assert r"\ensuremath{<}axial" in tex and r"a\ensuremath{<}=b" in tex

@@ -128,3 +128,31 @@ def test_metric_flow_exact_at_n_12_and_a_corrupted_lambda_equation_fails():
     for r in (4, 8):
         assert run_exact(load_catalog().get("metric-flow"), 12, r, 0).verdict == "proved", r
     assert run_one(bad, Size(12, 3), "exact", 0).verdict == "fails"
+
+
+def _reflection_flow(s, c):
+    """d tr(XᵀSX)/dt − c·tr(ẊᵀSX) along the metric Dirac flow of the Neumann Hamiltonian (S the reflection
+    S₁, an orthogonal symmetry commuting with A): zero for c = 2."""
+    from stiefelsym import twisted
+
+    def H(t):
+        return t.tr(t.P.T @ t.P) / 2 + t.tr(t.X.T @ t.A @ t.X) / 2
+    flow = s.dirac_flow(H)
+    return {"r": s.d(lambda t: t.tr(t.X.T @ twisted.reflection(t) @ t.X), flow)
+            - c * s.tr(flow.Xdot.T @ twisted.reflection(s) @ s.X)}
+
+
+def test_metric_flow_with_the_reflection_at_r_1_is_proved_and_a_corrupted_factor_fails():
+    """The exact method at (3,1) on the metric Dirac flow with S: its multipliers come from a symbolic solve
+    whose right-hand side holds flint scalars (pairings); it was answered error (0x0 matrices from that solve),
+    a true claim.  Proved; with the factor 2 replaced by 3 it fails (negative control)."""
+    from stiefelsym import admissible
+    from stiefelsym.claims import Claim, Size
+    from stiefelsym.runner import run_one
+
+    def claim(c):
+        return Claim(id=f"refl-metric-flow-{c}", paper=("A_XP",), kind="id", section="t", sizes=admissible(3),
+                     func=lambda s: _reflection_flow(s, c), realization="metric")
+    res = run_one(claim(2), Size(3, 1), "exact", 0)
+    assert res.verdict == "proved", res.message
+    assert run_one(claim(3), Size(3, 1), "exact", 0).verdict == "fails"

@@ -574,3 +574,145 @@ def test_an_erratum_predicate_that_breaks_is_an_error_not_a_crash():
     c = _claim("c", _ok, fails_at=lambda n, r: 1 / 0, erratum="broken predicate")
     res = runner._finish(_result("fails"), c, None)
     assert res.verdict == "error" and not res.expected and "ZeroDivisionError" in res.message
+
+
+# --------------------------------------------------------------------------- heavy symbolic attempts in workers
+
+def _falsely_orthonormal(s):
+    return {"XtX = 2 I": s.X.T @ s.X - 2 * s.Ir}
+
+
+def _hoard(*args, **kwargs):
+    """Stands for a symbolic attempt that exhausts the memory budget (Python's allocator)."""
+    hoard = []
+    while True:
+        hoard.append(bytes(1 << 28))
+
+
+def _abort(*args, **kwargs):
+    """Stands for flint aborting when a native allocation fails under the memory budget."""
+    import faulthandler
+    faulthandler.disable()          # (pytest's dump of the aborting child would only be noise)
+    os.abort()
+
+
+def _attempt_in_a_worker(task):
+    from stiefelsym.methods import run_exact_isolated
+    res = run_exact_isolated(_claim("ok", _ok, sizes=admissible(n_max=6)), 6, 2, 0, time_budget=20,
+                             in_worker=True)
+    return os.getpid(), res.verdict, res.message
+
+
+@needs_fork
+def test_small_symbolic_attempts_stay_in_the_worker_and_heavy_ones_are_forked():
+    from stiefelsym import methods
+    ok = _claim("ok", _ok, sizes=admissible(n_max=6))
+    assert not methods.isolates(ok, 4, 2, in_worker=True)
+    assert methods.isolates(ok, methods.ISOLATE_MIN_N, 2, in_worker=True)
+    assert methods.isolates(ok, 4, 2) and not methods.isolates(ok, 3, 2)   # outside a worker: the hard time limit
+
+
+@needs_fork
+@pytest.mark.parametrize("dies", [_hoard, _abort], ids=["MemoryError", "SIGABRT"])
+def test_a_symbolic_attempt_that_exceeds_memory_in_a_worker_leaves_the_worker_alive(monkeypatch, dies):
+    from stiefelsym import methods
+    monkeypatch.setattr(methods, "run_exact", dies)
+    with WorkerPool(_attempt_in_a_worker, workers=1, timeout=60, memory=3 * GIB) as pool:
+        outcomes = [o for _, o in pool.run(["first", "second"])]
+    assert [o.kind for o in outcomes] == ["ok", "ok"]
+    (pid1, verdict1, message1), (pid2, verdict2, message2) = (o.value for o in outcomes)
+    assert pid1 == pid2                         # the same worker ran both: it survived the first
+    assert verdict1 == verdict2 == "inconclusive"
+    assert message1.startswith("the symbolic attempt ended without a verdict: the child process ")
+    assert ("ran out of memory" if dies is _hoard else "killed by SIGABRT") in message1
+
+
+@needs_fork
+@pytest.mark.parametrize("dies", [_hoard, _abort], ids=["MemoryError", "SIGABRT"])
+def test_auto_falls_back_to_modular_when_the_symbolic_attempt_dies(monkeypatch, dies):
+    from stiefelsym import methods
+    monkeypatch.setattr(methods, "run_exact", dies)
+    claims = [_claim("ok", _ok, sizes=admissible(n_max=6)), _claim("false", _falsely_orthonormal,
+                                                                    sizes=admissible(n_max=6))]
+    res = runner.verify(claims, sizes=[Size(6, 2)], methods=("auto",), timeout=60, memory=3, seed=0)
+    by = {r.claim: r for r in res}
+    assert by["ok"].method == "modular" and by["ok"].verdict == "checked" and by["ok"].expected
+    assert by["ok"].message.startswith("exact: the symbolic attempt ended without a verdict: the child process ")
+    assert by["false"].verdict == "fails" and not by["false"].expected
+
+
+@needs_fork
+def test_a_forked_symbolic_attempt_in_a_worker_still_proves_and_refutes():
+    claims = [_claim("ok", _ok, sizes=admissible(n_max=6)), _claim("false", _falsely_orthonormal,
+                                                                    sizes=admissible(n_max=6))]
+    res = runner.verify(claims, sizes=[Size(6, 2)], methods=("exact",), timeout=60, seed=0)
+    by = {r.claim: r for r in res}
+    assert by["ok"].verdict == "proved" and by["ok"].expected
+    assert by["false"].verdict == "fails" and not by["false"].expected
+
+
+# --------------------------------------------------------------------------- a symbolic budget in n and r
+
+def test_auto_tries_the_symbolic_method_within_the_budget_in_r():
+    kw = dict(sizes=admissible(n_max=3), exact_max_n=2, exact_max_r=((3, 2),))
+    claims = [_claim("ok", _ok, **kw), _claim("false", _falsely_orthonormal, **kw)]
+    res = runner.verify(claims, sizes=[Size(3, 2), Size(3, 3)], methods=("auto",), seed=0)
+    by = {(r.claim, r.n, r.r): r for r in res}
+    assert (by["ok", 3, 2].method, by["ok", 3, 2].verdict) == ("exact", "proved")
+    assert (by["false", 3, 2].method, by["false", 3, 2].verdict) == ("exact", "fails")
+    assert (by["ok", 3, 3].method, by["ok", 3, 3].verdict) == ("modular", "checked")
+    assert by["ok", 3, 3].message.startswith("exact: (3,3) is above this claim's symbolic budget "
+                                             "(n <= 2; r <= 2 at n = 3)")
+    assert by["false", 3, 3].verdict == "fails"
+
+
+@pytest.mark.parametrize("pairs", [((2, 1),), ((4, 5),), ((4, 0),), (("4", 2),), ((4,),)])
+def test_a_budget_in_r_is_given_at_sizes_above_exact_max_n(pairs):
+    with pytest.raises(ValueError, match="exact_max_r"):
+        _claim("c", _ok, exact_max_n=3, exact_max_r=pairs)
+
+
+def test_a_budget_in_r_reaches_a_claims_file(tmp_path):
+    from stiefelsym.api import load
+    path = tmp_path / "budget.py"
+    path.write_text("from stiefelsym import admissible, claim\n"
+                    "@claim('c', paper='t', kind='id', section='9', sizes=admissible(n_max=5), exact_max_n=4,\n"
+                    "       exact_max_r={5: 3})\n"
+                    "def c(s):\n    return {'XtX': s.X.T @ s.X - s.Ir}\n")
+    c = load([path], catalog=False).get("c")
+    assert c.exact_max_r == ((5, 3),) and c.exact_at(5, 3) and not c.exact_at(5, 4) and c.exact_at(4, 4)
+
+
+def _alive(pid: int) -> bool:
+    try:
+        with open(f"/proc/{pid}/status") as f:
+            return not any(line.startswith("State:") and ("Z" in line or "X" in line) for line in f)
+    except FileNotFoundError:
+        return False
+
+
+@needs_fork
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="PR_SET_PDEATHSIG is Linux's")
+def test_an_isolated_attempt_dies_with_the_process_that_forked_it():
+    r, w = os.pipe()
+    pid = os.fork()
+    if pid == 0:       # stands for a worker (or the command line) killed while its attempt runs
+        try:
+            os.close(r)
+            from stiefelsym.isolate import run_isolated
+
+            def attempt():
+                os.write(w, f"{os.getpid()}\n".encode())
+                time.sleep(60)
+            run_isolated(attempt, 60, str)
+        finally:
+            os._exit(0)
+    os.close(w)
+    with os.fdopen(r) as f:
+        child = int(f.readline())
+    os.kill(pid, signal.SIGKILL)
+    os.waitpid(pid, 0)
+    deadline = time.monotonic() + 10
+    while _alive(child) and time.monotonic() < deadline:
+        time.sleep(0.05)
+    assert not _alive(child)

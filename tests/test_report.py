@@ -137,7 +137,7 @@ def test_errata_lists_failing_claim_with_witness_and_corrections(results):
     assert "Witness at size (3,1), method rational, seed 0:" in errata
     assert "- entry: `(1, 2)`" in errata and "- value: `3/7`" in errata
     assert "- point: `a_1 = 1/2; S_12 = -3; W#1 = x_1`" in errata
-    assert "- check dL/dt: nonzero, entry (1, 2) = 3/7" in errata
+    assert "- check dL/dt: residual nonzero, entry (1, 2) = 3/7" in errata
     assert "- rerun: `stiefelsym verify neumann-lax --size 3,1 --method rational --seed 0`" in errata
     assert "the claim as printed was run at 2 sizes (3,1), (4,2)" in errata.lower()
     assert r"| sign of $\lambda A$ flipped | **verified** | verified at all 2 computed sizes by rational " \
@@ -319,7 +319,7 @@ def test_errata_table_aggregates_corrections_across_sizes():
     assert "| n \\<= 2r + 2 | **verified** | verified at all 5 computed sizes by exact |" in md
     assert "| n \\<= 2r | rejected | passes at (2,1), (3,1), (3,2) by exact; fails at (4,2), (5,2) by exact |" in md
     tex = render_latex(rs, detail=True)
-    assert r"\textbf{verified}. verified at all 5 computed sizes by exact." in tex
+    assert r"\textbf{verified} (verified at all 5 computed sizes by exact)." in tex
 
 
 # --------------------------------------------------------------------------- rank and count statements
@@ -437,3 +437,105 @@ def test_kill_rate_is_never_rounded_up_to_100_percent():
     assert kill_rate({"total": 5, "killed": 0, "equivalent": 5}) == "–"
     assert kill_rate({"total": 5, "killed": 5, "equivalent": 0, "baseline_passes": False}) == "–"
 
+
+
+# --------------------------------------------------------------------------- words a referee reads
+
+def test_the_dimension_free_method_is_named_not_by_its_identifier():
+    """A correction's verdict for every n, r reads "by the dimension-free method", never "by free"."""
+    rs = [_corr(3, 1, "exact", "proved"), result("claim", None, None, "free", "undecided", variant="fix",
+                                                 expected=False)]
+    _, phrases = correction_summary(rs, [(3, 1)])
+    assert "undecided for all n, r by the dimension-free method" in phrases
+    assert not any(p.endswith("by free") or "by free " in p for p in phrases)
+
+
+def test_every_method_named_in_a_verdict_is_explained():
+    from stiefelsym.report import METHOD_MEANING
+    rs = [result("prep", 4, 2, "modular", "checked"), result("prep", 3, 1, "exact", "proved")]
+    md, tex = render_markdown(rs), render_latex(rs)
+    for m in ("exact", "modular", "rational", "float", "ball", "free"):
+        assert m in METHOD_MEANING
+        assert f"- **{m}**: " in md and f"\\item[{m}] " in tex
+    assert "primes near 2⁶⁰" in md
+
+
+def test_a_statement_that_something_does_not_hold_found_identically_zero_says_so():
+    """The witness of a "not" claim that fails is the exact proof that it vanishes identically: the report
+    says so, instead of pointing at a computed value below that is not there."""
+    rs = [result("not-claim", 2, 1, "exact", "fails", kind="not", expected=True,
+                 certificate="the residual vanishes identically on the chart", erratum="It holds for r >= 2.")]
+    md, tex = render_markdown(rs), render_latex(rs)
+    for doc in (md, tex):
+        assert "computed value below" not in doc
+        assert "not identically zero, and exact computation finds it identically zero: the residual vanishes" in doc
+    assert r"What is wrong: It holds for r \ensuremath{\ge} 2." in tex
+
+
+def test_the_headline_counts_the_claims_proved_at_particular_r_by_their_r():
+    """The headline's count of dimension-free proofs splits by scope, and the parts add up."""
+    from stiefelsym.report import headline
+    cert = "cofactor certificate of 1 residual entry (for every n at r = n, the only r the claim is stated for: it uses X X^T = I_n)"
+    union = "cofactor certificates of cases (for every n at r = 1 and at r = n, the sizes the claim is stated for: 2 cases)"
+    rs = [result("a", None, None, "free", "proved"), result("b", None, None, "free", "proved", certificate=cert),
+          result("c", None, None, "free", "proved", certificate=union), result("d", 3, 1, "exact", "proved")]
+    text, _ = headline(group_by_claim(rs))
+    assert ("3 of them proved for every size at once: 1 for every n and r, and, stated at particular r, "
+            "for every n: 1 at r = n, 1 at r = 1 and at r = n)") in text
+
+
+def test_a_proof_in_the_metric_realization_states_what_it_assumes_in_words():
+    """The referee's verdict line and the certificate line of a proof in the metric realization say that A is
+    positive definite, Π = 0 and Λ by Sylvester uniqueness, with Λ for the engine's name Lambda:1; a proof
+    with no assumption says none."""
+    from stiefelsym.report import certificate_summary
+    data = {"summary": {"entries": 1, "terms": 2, "hypotheses": ["XtX", "rho:Lambda:1"], "realization": "metric",
+                        "assumes": ["A symmetric positive definite",
+                                    "Lambda:1 is the solution of rho:Lambda:1 = 0, unique and symmetric "
+                                    "(M = X^T A^-1 X positive definite)",
+                                    "Pi = 0 by uniqueness: Pi M + M Pi = 0 (keeps: X^T X = I_r)"]},
+            "entries": [{"terms": [1, 2]}]}
+    proof = result("metric", None, None, "free", "proved", certificate_data=data)
+    line = certificate_summary(proof)
+    assert "it assumes (the metric realization): A symmetric positive definite; Λ is the solution of its " \
+           "Sylvester equation" in line and "Π = 0 by uniqueness" in line and "Lambda:1" not in line.split("(XtX")[0]
+    tex = render_latex([proof, result("metric", 3, 1, "exact", "proved")])
+    assert r"proved, assuming A symmetric positive definite; \ensuremath{\Lambda} is the solution" in tex
+    plain = dict(data, summary=dict(data["summary"], assumes=[]))
+    assert "assum" not in certificate_summary(result("metric", None, None, "free", "proved", certificate_data=plain))
+
+
+def test_a_failing_checks_status_is_in_words():
+    from stiefelsym.report import check_line
+    assert check_line(CheckOutcome("regular iff n <= 2r+1", "count-mismatch", "1 (paper: 0)")) \
+        == "check regular iff n <= 2r+1: count not as printed, 1 (paper: 0)"
+    assert check_line(CheckOutcome("rank ad_Phi", "rank", "= 4")) == "check rank ad_Φ: rank as printed, = 4"
+
+
+def test_the_referees_verdict_line_gives_the_reason_for_undecided_in_words():
+    from stiefelsym.report import _brief_reason
+    assert _brief_reason("needs coordinates (fixed n, r): a constant matrix on R^n (e.g. E_1); decided at "
+                         "fixed sizes") == "needs fixed n, r: a constant matrix on R^n"
+    assert _brief_reason("4 residual entries have a nonzero normal form; e.g. ...") \
+        == "4 residual entries do not reduce to 0 by the rewriting rules"
+    assert _brief_reason("1 residual entry has a nonzero normal form") \
+        == "1 residual entry does not reduce to 0 by the rewriting rules"
+
+
+def test_the_summary_table_says_where_a_proof_at_particular_r_holds():
+    cert = "cofactor certificate of 1 residual entry (for every n at r = n, the only r the claim is stated for: it uses X X^T = I_n)"
+    md = render_markdown([result("b", None, None, "free", "proved", certificate=cert), result("b", 2, 2, "exact", "proved")])
+    assert "| proved, every n at r = n |" in md
+
+
+def test_the_headline_and_the_summary_table_count_the_same_claims_as_holding():
+    """A claim that no method decided at one computed size is not said to hold at every size computed: the
+    headline names it, and its count agrees with the summary table's column."""
+    from stiefelsym.report import headline, section_counts
+    rs = [result("a", 3, 1, "exact", "proved"), result("a", 6, 1, "modular", "undecided", expected=True),
+          result("b", 3, 1, "exact", "proved"), result("b", 6, 1, "modular", "checked")]
+    claims = group_by_claim(rs)
+    text, _ = headline(claims)
+    assert text.startswith("Of the paper's 2 checkable statements, 1 hold as printed at every size computed")
+    assert "1 holds where decided but was left undecided at some size (a)" in text
+    assert section_counts(claims)["every size"] == 1

@@ -2,6 +2,9 @@
 r = n − 1 (iden1), (iden2), (neum-gras**), and the quartic Hamiltonian hold at small sizes; those
 built from matrix products are proved for every n, r; a corrupted copy of each FAILS (negative
 controls)."""
+import random
+from fractions import Fraction
+
 import pytest
 
 from stiefelsym import Rank
@@ -196,3 +199,31 @@ def test_the_sphere_vector_is_the_plucker_vector():
               sizes=admissible(4, where=lambda n, r: r == n - 1))
     assert run_exact(c, 3, 2, SEED).verdict == "proved"
     assert run_points(c, 4, 3, "modular", SEED).verdict == "checked"
+
+
+class _Numbers:
+    """A scene's scalar interface over the rationals (s.q), for the determinant helper alone."""
+    q = staticmethod(Fraction)
+
+
+@pytest.mark.parametrize("m", range(1, 13))
+def test_det_is_the_determinant_by_either_expansion(m):
+    """det(s, rows) (Laplace up to m = 9, Berkowitz's division-free recursion from m = 10 on) is the
+    determinant, on matrices with zeros on the diagonal (no pivot is ever divided by); both
+    expansions agree at every m, and one changed entry changes the value by its cofactor (a negative
+    control: neither expansion ignores an entry)."""
+    import sympy
+    rng = random.Random(f"det|{m}")
+    rows = [[Fraction(rng.randint(-4, 4)) for _ in range(m)] for _ in range(m)]
+    for i in range(0, m, 2):
+        rows[i][i] = Fraction(0)
+    expected = Fraction(int(sympy.Matrix(rows).det()))
+    assert sec7.det(_Numbers, rows) == expected
+    assert sec7._det_berkowitz(_Numbers, rows) == expected
+    assert (2 * sec7._berkowitz_products(m) <= sec7._laplace_products(m)) == (m >= 10)
+    k = rng.randrange(m)
+    minor = [[rows[i][j] for j in range(m) if j != k] for i in range(1, m)]
+    rows[0][k] += 1        # det changes by the cofactor of (0, k)
+    cofactor = (-1) ** k * (Fraction(int(sympy.Matrix(minor).det())) if m > 1 else Fraction(1))
+    assert sec7.det(_Numbers, rows) == expected + cofactor
+    assert sec7._det_berkowitz(_Numbers, rows) == expected + cofactor

@@ -165,3 +165,13 @@ def test_the_latex_compiles_on_its_own(run, tmp_path):
                           cwd=out, capture_output=True, text=True, timeout=120)
     assert proc.returncode == 0, proc.stdout[-2000:]
     assert (out / "tables-standalone.pdf").is_file()
+
+
+def test_tables_text_prints_inequalities_and_squares_in_the_default_font():
+    """In the default (OT1) text font a bare < prints as ¡ and ² needs a bitmap font: the tables' words set
+    them in math; the standalone wrapper asks for no font package whose glyphs are bitmaps here."""
+    from stiefelsym.tables import STANDALONE, _tex, _tex_title
+    assert _tex("r = 1 and n <= 2 (2l = n² - n), r >= 3, a < b") == \
+        r"r = 1 and n $\le$ 2 (2l = n$^2$ - n), r $\ge$ 3, a $<$ b"
+    assert _tex_title("§2–§4") == r"\ensuremath{\S}2--\ensuremath{\S}4"
+    assert "fontenc" not in STANDALONE and r"\labelitemi" in STANDALONE

@@ -55,3 +55,15 @@ def test_claims_of_a_file_are_built_here_unreviewed_with_graphs_at_the_needed_si
     with pytest.raises(NoGraph):
         compile_claim(c.func, 3, 2, ("metric", cons.build))
     assert c.sizes.admits(3, 2) and c.sizes.admits(16, 16) and not c.sizes.admits(2, 3)
+
+
+def test_a_claim_with_a_graph_of_symbolic_sizes_is_traced_in_the_child_at_no_size():
+    """Its graph with symbolic sizes is its graph at every size: the child sends no graph for a size (none was
+    traced with a number), and the size the command asks for gets that graph."""
+    from stiefelsym.ir import compile_claim
+    from stiefelsym.scene import REALIZATIONS
+    for c in load_claims_isolated(ADV / "size_read_by_introspection.py", [(7, 2)]):
+        assert c.func.sizes() == [], c.func.sizes()
+        cons = REALIZATIONS[c.realization]
+        free = compile_claim(c.func, None, None, (cons.name, cons.build))
+        assert compile_claim(c.func, 7, 2, (cons.name, cons.build)) is free

@@ -35,50 +35,49 @@ def compile_claim(func: Callable, n: int | None, r: int | None, constraints: tup
                   family: SizeFamily | None = None) -> Graph:
     """The graph of a claim's function: traced once with symbolic sizes when it can be (then that one
     graph is the claim at every size: every fixed-size method and the dimension-free method evaluate
-    the same graph), otherwise at (n, r).  Each graph is traced twice; a claim whose two graphs
-    differ is refused, and so is a claim whose trace met a refusal, even one it caught.  A claim
-    whose graph at (n, r) is not its graph with symbolic sizes is refused at (n, r) (and the
-    dimension-free method compares the two at every size the claim is stated for).
+    the same graph, and the claim's code never runs at a number), otherwise at (n, r).  Each graph is
+    traced twice; a claim whose two graphs differ is refused, and so is a claim whose trace met a
+    refusal, even one it caught.
 
     With a ``family`` of sizes (n = r = None): the graph traced with symbolic sizes on that family alone
     (see :mod:`.families`), for the dimension-free method's proof on the family."""
-    if family is not None:
-        if n is not None or r is not None:
-            raise ValueError("a graph is compiled at a size or on a family of sizes, not both")
-        g = _compile(func, None, None, constraints, family=family)
-        if isinstance(g, Graph):
-            return g
-        raise _fresh(g)
-    free = _compile(func, None, None, constraints)
-    if isinstance(free, Graph):
-        if n is not None:
-            fixed = _compile(func, n, r, constraints, twice=False)
-            if not isinstance(fixed, Graph) or fixed.digest() != free.digest():
-                raise NotDeterministic(f"the claim's graph at ({n},{r}) is not its graph with symbolic sizes: it "
-                                       "tells symbolic sizes from numbers, so no verdict rests on it")
-        return free
-    if n is None:
-        raise _fresh(free)
-    g = _compile(func, n, r, constraints)
+    if family is not None and (n is not None or r is not None):
+        raise ValueError("a graph is compiled at a size or on a family of sizes, not both")
+    g = _compile(func, n, r, constraints, family=family)
     if isinstance(g, Graph):
         return g
     raise _fresh(g)
 
 
 def compile_at_size(func: Callable, n: int, r: int, constraints: tuple[str, Callable], twice: bool = True) -> Graph:
-    """The graph traced at (n, r) itself (to compare with the graph of symbolic sizes); traced once
-    only (``twice=False``) where it is only compared with the graph of symbolic sizes, which was
-    traced twice."""
-    g = _compile(func, n, r, constraints, twice=twice)
+    """The graph traced at (n, r) itself, the claim's code running at the numbers: only to compare a
+    claim's graph on a family of sizes with its graphs at the family's sizes (a claim that traces with
+    plain symbolic sizes is never traced at a number, see :func:`_compile`); traced once only
+    (``twice=False``) where it is only compared with a graph that was traced twice."""
+    g = _compile(func, n, r, constraints, twice=twice, at_numbers=True)
     if isinstance(g, Graph):
         return g
     raise _fresh(g)
 
 
 def _compile(func: Callable, n: int | None, r: int | None, constraints: tuple[str, Callable],
-             twice: bool = True, family: SizeFamily | None = None) -> Any:
-    """The graph, or the exception that refused it (both cached per process); traced twice and
-    compared, or once where it is only compared with the graph of symbolic sizes (which was)."""
+             twice: bool = True, family: SizeFamily | None = None, at_numbers: bool = False) -> Any:
+    """The graph, or the exception that refused it (both cached per process), traced twice and compared
+    (once where it is only compared with a graph that was: ``twice=False``).
+
+    At a fixed size the claim is first traced with symbolic sizes: when that succeeds, its graph is the
+    claim's graph at (n, r) too (once it types there: :func:`_typed_at`), and the claim is never traced at
+    (n, r).  So no trace of a claim that
+    has a graph for every size holds a number of a size (not in a size, a tracer, the trace's state or
+    the frames of its thread): claim code that reads one by introspection reads nothing, and cannot
+    give a graph at an unlisted size other than the one a proof for every n, r is about.  Only a claim
+    refused with symbolic sizes (it read a size through the door of :class:`~.trace.Dim`, or asked for
+    coordinates) is traced at (n, r), and it has no proof for every n, r (``at_numbers``: traced at
+    (n, r) whatever, for :func:`compile_at_size`)."""
+    if n is not None and not at_numbers:
+        free = _compile(func, None, None, constraints)
+        if isinstance(free, Graph):
+            return _typed_at(func, free, n, r, constraints)
     # by identity: a callable's own __eq__ is never asked; a graph traced once is kept apart from one
     # traced twice (a trace compared with itself is no determinism check)
     key = (id(func), n, r, family, constraints[0], twice)
@@ -97,6 +96,36 @@ def _compile(func: Callable, n: int | None, r: int | None, constraints: tuple[st
                                    "different graphs")
         out: Any = first
     except Exception as exc:      # noqa: BLE001 - the claim's own failure, reported by the caller
+        exc._first_traceback = exc.__traceback__      # type: ignore[attr-defined]
+        out = exc
+    _GRAPHS[key] = (func, out)
+    while len(_GRAPHS) > GRAPH_CACHE_SIZE:
+        _GRAPHS.popitem(last=False)
+    return out
+
+
+def _typed_at(func: Callable, free: Graph, n: int, r: int, constraints: tuple[str, Callable]) -> Any:
+    """The graph of symbolic sizes ``free`` as the claim's graph at (n, r), once it types there, or the
+    refusal.  A size the claim wrote as an int (s.zeros(3, 2)) cannot be told from n, r with symbolic
+    sizes; at (n, r) the graph is replayed by the tracer (:class:`.replay.GraphClaim`: engine code, no code
+    of the claim runs, no trace of the claim holds a number), which checks every shape with the numbers."""
+    from .replay import GraphClaim
+    key = (id(func), n, r, constraints[0], "typed")
+    hit = _GRAPHS.get(key)
+    if hit is not None and hit[0] is func:
+        _GRAPHS.move_to_end(key)
+        return hit[1]
+    try:
+        try:
+            g = _clean(trace, GraphClaim(free, name=getattr(func, "__name__", "claim")), n, r, constraints)
+            _check_refusals(g)
+        except TraceRefused as exc:
+            raise TraceRefused(f"the claim's graph with symbolic sizes does not type at ({n},{r}): "
+                               f"{str(exc).removeprefix('refused: ')}") from None
+        if g.digest() != free.digest():
+            raise NotDeterministic(f"the claim's graph with symbolic sizes replays to another graph at ({n},{r})")
+        out: Any = free
+    except Exception as exc:      # noqa: BLE001 - reported by the caller
         exc._first_traceback = exc.__traceback__      # type: ignore[attr-defined]
         out = exc
     _GRAPHS[key] = (func, out)
@@ -139,8 +168,9 @@ def _check_refusals(g: Graph) -> None:
 def graph_pair(printed: Callable, variant: Callable, n: int | None, r: int | None,
                constraints: tuple[str, Callable]) -> tuple[Graph, Graph] | None:
     """The graphs of a claim's function and of a variant of it (a mutant, a correction) traced the same
-    way: both with symbolic sizes when both trace so, otherwise both at (n, r); None when either does
-    not trace (a refused or ill-typed variant).  Traced once each (and shared with the runs' cache)."""
+    way: both with symbolic sizes when both trace so, otherwise both as graphs at (n, r) (a function that
+    traces with symbolic sizes has that graph there too); None when either does not trace (a refused or
+    ill-typed variant).  Shared with the runs' cache."""
     a, b = _printed(printed, None, None, constraints), _compile(variant, None, None, constraints)
     if isinstance(a, Graph) and isinstance(b, Graph):
         return a, b

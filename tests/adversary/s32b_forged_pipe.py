@@ -41,9 +41,9 @@ if os.environ.get("STIEFELSYM_S32B_FORGE") != "0":
     if fd is not None:                      # only in the tracer child (the verifying process has no such pipe)
         d = _uf._claim_data(forged.claim, [])
         d.pop("keys", None)
-        d["graphs"] = [[None, _uf._trace_one(forged, "standard", None, False)],
-                       [[2, 2], _uf._trace_one(forged, "standard", (2, 2), True)],
-                       [[3, 2], _uf._trace_one(_false, "standard", (3, 2), False)]]
+        d["graphs"] = [[None, _uf._trace_one(forged, "standard", None)],
+                       [[2, 2], _uf._trace_one(forged, "standard", (2, 2))],
+                       [[3, 2], _uf._trace_one(_false, "standard", (3, 2))]]
         d["sizes"]["list"] = [[2, 2]]
         d["sizes"]["admits"] = [[n, r, (n, r) in ((2, 2), (3, 2))] for n in range(1, 17) for r in range(1, n + 1)]
         d["sizes"]["where"] = True

@@ -1,6 +1,8 @@
-"""Attacks on the fix of route A' (sizes carry no number): the number lives with the trace, and Python's
-introspection reaches the trace.  Each claim states X^T X = I except at n = 7 (beyond its listed sizes,
-inside its statement), where it states X = 0 (false)."""
+"""Attacks on the fix of route A' (sizes carry no number): the number lived with the trace, and Python's
+introspection reaches the trace.  Each claim states X^T X = I unless its trace holds the number 7 (beyond
+its listed sizes, inside its statement), where it would state X = 0 (false).  Closed: a claim that traces
+with symbolic sizes is never traced at a number (its graph with symbolic sizes is its graph at every
+size), so neither read finds 7 and both claims are X^T X = I at every size."""
 import sys
 
 from stiefelsym import admissible, claim
@@ -25,11 +27,11 @@ def _seven_by_frames(s):
 
 @claim("adv-size-by-trace", kind="id", sizes=admissible(n_max=5))
 def size_by_trace(s):
-    """X^T X = I at every n except n = 7, read from the trace's private state: X = 0 there (false)."""
+    """X^T X = I, unless the trace's private state holds n = 7: X = 0 there (false)."""
     return {"X": s.X} if _seven_by_the_trace(s) else {"XtX - I": s.X.T @ s.X - s.Ir}
 
 
 @claim("adv-size-by-frames", kind="id", sizes=admissible(n_max=5))
 def size_by_frames(s):
-    """X^T X = I at every n except n = 7, read from the engine's frames: X = 0 there (false)."""
+    """X^T X = I, unless the engine's frames hold n = 7: X = 0 there (false)."""
     return {"X": s.X} if _seven_by_frames(s) else {"XtX - I": s.X.T @ s.X - s.Ir}

@@ -101,13 +101,14 @@ FORGED = "s32b_forged_pipe.py"
 
 
 @pytest.mark.parametrize("method", ["exact", "modular"])
-def test_a_forged_answer_of_the_child_buys_no_passing_verdict(method):
+def test_a_forged_answer_of_the_child_evaluates_only_its_symbolic_graph(method):
     """The file writes, from its import in the tracer child, a well-formed payload with reviewed = true, an
-    admits table of its own and at (3,2) the graph of X_11 = 1 under a claim whose symbolic graph is XᵀX = I:
-    the verifying process compares the graph at (3,2) with the symbolic one and refuses it (error), and the
-    review flag is not read from the wire."""
+    admits table of its own and at (3,2) the graph of X_11 = 1 (false there) under a claim whose symbolic graph
+    is XᵀX = I: a claim with a graph of symbolic sizes is that graph at every size, so the graph sent for (3,2)
+    is never evaluated (the verdict at (3,2) is XᵀX = I's, passing, where X_11 = 1 would fail: the same graph
+    the free method proves), and the review flag is not read from the wire."""
     v = verdicts(FORGED, method)
-    assert v and all(x not in PASSING for x in v.values()), v
+    assert v == {"adv-s32b-forged": "proved" if method == "exact" else "checked"}, v
 
 
 def test_a_forged_answer_proves_only_its_symbolic_graph():

@@ -1,0 +1,30 @@
+"""A small claims file for `stiefelsym mutate --claims` (tests/test_mutate_claims.py): its module code records
+the process it runs in; one claim traces with symbolic sizes, one is a documented erratum with a sign error,
+one reads its size as a number (traced per size)."""
+import os
+
+from stiefelsym import admissible, claim
+
+_OUT = os.environ.get("STIEFELSYM_TEST_PID_FILE")
+if _OUT:
+    with open(_OUT, "a") as fh:
+        fh.write(f"{os.getpid()}\n")
+
+
+@claim("mc-psi-skew", paper="prep", kind="id", section="t", sizes=admissible(n_max=3))
+def psi_is_skew(s):
+    """Ψ = XᵀP − PᵀX is skew."""
+    return {"Psi + Psi^T": s.Psi + s.Psi.T}
+
+
+@claim("mc-wrong-sign", paper="prep", kind="id", section="t", sizes=admissible(n_max=3), expect="fails",
+       erratum="the two terms of Ψ are swapped")
+def wrong_sign(s):
+    """Ψ = PᵀX − XᵀP (printed with the terms swapped: fails)."""
+    return {"Psi": s.Psi - (s.P.T @ s.X - s.X.T @ s.P)}
+
+
+@claim("mc-per-size", paper="prep", kind="id", section="t", sizes=admissible(n_max=3))
+def per_size(s):
+    """tr(XᵀX) = r, with r read as a number (traced per size)."""
+    return {"tr": s.tr(s.X.T @ s.X) - int(s.r)}

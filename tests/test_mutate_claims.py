@@ -1,0 +1,78 @@
+"""`stiefelsym mutate --claims FILE`: the file is imported and traced in child processes
+(stiefelsym.userfile), and its claims are mutated, and corrected, on their graphs."""
+import json
+import os
+from pathlib import Path
+
+from click.testing import CliRunner
+
+from stiefelsym.cli_mutate import mutate as mutate_command
+
+FILE = str(Path(__file__).resolve().parent / "claims_for_mutate.py")
+
+
+def _invoke(args, monkeypatch, tmp_path):
+    pids = tmp_path / "pids"
+    monkeypatch.setenv("STIEFELSYM_TEST_PID_FILE", str(pids))
+    res = CliRunner().invoke(mutate_command, ["--claims", FILE, *args])
+    ran = {int(x) for x in pids.read_text().split()} if pids.exists() else set()
+    assert os.getpid() not in ran, "the claims file ran in the verifying process"
+    return res, ran
+
+
+def test_a_users_claims_are_mutated_on_their_graphs_and_the_file_never_runs_here(monkeypatch, tmp_path):
+    res, ran = _invoke(["mc-psi-skew", "--method", "modular", "--jobs", "1", "--format", "json"], monkeypatch,
+                       tmp_path)
+    assert res.exit_code == 0, res.output
+    assert ran, "the file was not imported at all"
+    data = json.loads(res.stdout)
+    assert data["meta"]["on"] == "graphs"
+    (c,) = data["claims"]
+    assert c["claim"] == "mc-psi-skew" and c["mutants"], c
+    assert all("(graph: node %" in m["description"] for m in c["mutants"]), c["mutants"]
+    # the mutants are corruptions the method notices: every one is killed or a true statement
+    assert {m["classification"] for m in c["mutants"]} <= {"killed", "equivalent"}, c["mutants"]
+    assert any(m["classification"] == "killed" for m in c["mutants"])
+
+
+def test_a_claim_traced_per_size_is_not_covered(monkeypatch, tmp_path):
+    res, _ = _invoke(["mc-per-size", "--method", "modular", "--jobs", "1", "--format", "json"], monkeypatch, tmp_path)
+    assert res.exit_code == 0, res.output
+    (c,) = json.loads(res.stdout)["claims"]
+    assert "no graph with symbolic sizes" in c["skipped"] and not c["mutants"], c
+
+
+def test_the_correction_search_of_a_users_claim_works_on_its_graph(monkeypatch, tmp_path):
+    res, _ = _invoke(["mc-wrong-sign", "--corrections", "--format", "json"], monkeypatch, tmp_path)
+    assert res.exit_code == 0, res.output
+    out = json.loads(res.stdout)
+    (c,) = out["claims"]
+    assert c["on"] == "graphs" and out["graph_search_space"], out
+    assert [k["operator"] for k in c["corrections"]] == ["sign"], c
+    assert "Ψ + PᵀX − XᵀP" in c["corrections"][0]["notation"], c
+
+
+def test_the_correction_search_refuses_a_users_claim_without_a_graph_of_symbolic_sizes(monkeypatch, tmp_path):
+    res, _ = _invoke(["mc-per-size", "--corrections"], monkeypatch, tmp_path)
+    assert res.exit_code == 2 and "--corrections on mc-per-size: not covered on graphs" in res.stderr, res.output
+
+
+def test_source_mutation_of_a_users_file_is_refused(monkeypatch, tmp_path):
+    res, ran = _invoke(["mc-psi-skew", "--on", "source"], monkeypatch, tmp_path)
+    assert res.exit_code == 2 and "--on graphs" in res.stderr and not ran, res.output
+
+
+def test_the_left_sides_of_a_graph_candidate_are_its_checks_without_their_right_sides():
+    """The errata search leaves out a candidate whose left sides vanish too (0 = 0): on graphs, each check
+    a − b (also inside a list) is replaced by a."""
+    from stiefelsym.ir import compile_claim
+    from stiefelsym.ir.mutants import output_key
+    from stiefelsym.mutate import _graph_left_sides
+    from stiefelsym.scene import REALIZATIONS
+    cons = REALIZATIONS["standard"]
+    cons = (cons.name, cons.build)
+    g = compile_claim(lambda s: {"a": s.X.T @ s.X - s.Ir, "b": [s.Psi - s.Psi.T, s.Phi]}, None, None, cons)
+    left = compile_claim(_graph_left_sides(g), None, None, cons)
+    want = compile_claim(lambda s: {"a": s.X.T @ s.X, "b": [s.Psi, s.Phi]}, None, None, cons)
+    assert output_key(left) == output_key(want)       # (the replay keeps the nodes no output reads)
+    assert _graph_left_sides(compile_claim(lambda s: {"a": s.Psi + s.Psi.T}, None, None, cons)) is None
