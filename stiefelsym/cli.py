@@ -926,7 +926,11 @@ def show(claim_id: str, claims_files: tuple[str, ...]) -> None:
     if c.title:
         click.echo(f"docstring:   {c.title}")
     click.echo(f"statement:   {c.statement or '(none given)'}")
-    failing = [f"({z.n},{z.r})" for z in c.sizes if c.expects_failure(z.n, z.r)]
+    try:
+        failing = [f"({z.n},{z.r})" for z in c.sizes if c.expects_failure(z.n, z.r)]
+        unanswered = ""
+    except Exception as exc:    # noqa: BLE001 - the claim's erratum sizes (fails_at) raise: shown, not a traceback
+        failing, unanswered = [], f"{type(exc).__name__}: {_one_line(str(exc))}"
     exception = "; except where the erratum below says" if failing and c.expect == "holds" else ""
     click.echo(f"expect:      {EXPECT_MEANING.get(c.expect, c.expect)}{exception}")
     click.echo(f"realization: {c.realization}")
@@ -936,6 +940,8 @@ def show(claim_id: str, claims_files: tuple[str, ...]) -> None:
     if failing:
         click.echo(f"erratum:     fails as printed at {' '.join(failing)}"
                    + (f": {_one_line(c.erratum)}" if c.erratum else ""))
+    if unanswered:
+        click.echo(f"erratum:     its sizes (fails_at) cannot be evaluated at the listed sizes ({unanswered})")
     for corr in c.corrections:
         click.echo(f"correction:  {corr.description}")
     click.echo(f"source:      {_source(c)}")
@@ -948,10 +954,10 @@ def show(claim_id: str, claims_files: tuple[str, ...]) -> None:
 def derive(claim_id: str, claims_files: tuple[str, ...]) -> None:
     """Print the dimension-free proof of CLAIM as LaTeX: each residual, the rules that
     reduce it, its normal form.  Exit status 1 when the claim is not proved for all n, r."""
-    from .free_method import run_free
+    from .runner import run_free_guarded
     registry, _ = _registry(claims_files, (claim_id,))
     c = _lookup(registry, claim_id)
-    res = run_free(c)
+    res = run_free_guarded(c)
     click.echo(f"% {c.id} ({', '.join(c.paper)}): {res.verdict} for all n, r", err=False)
     if res.verdict != "proved":
         click.echo(f"% {res.message}")
@@ -1002,7 +1008,18 @@ def report(results_file: Path | None, report_dir: Path | None, claims_files: tup
         meta, results = load_results(source)
     except (OSError, UnicodeDecodeError, ValueError, KeyError, TypeError, AttributeError) as exc:
         raise InputError(f"{source} is not a stiefelsym results file: {_one_line(exc)}") from None
-    from .integrity import certificate_problems, claim_field_edits
+    from .integrity import (MAX_N_CHECKED, certificate_problems, claim_field_edits, missing_runs,
+                            size_method_problems)
+    from .hard import HARD_CASES
+    from .results import meta_problems
+    bad_meta = meta_problems(meta, _runner().METHODS, tuple(HARD_CASES), MAX_N_CHECKED)
+    if bad_meta:
+        raise InputError(f"{source}: refused, its meta (the command the file is the run of) is malformed: "
+                         f"{'; '.join(bad_meta)}")
+    for r in results:
+        odd = size_method_problems(r.to_json())
+        if odd:
+            raise InputError(f"{source}: refused, record of {r.claim!r}: {odd[0]}")
     problems = certificate_problems(results)
     if problems:
         raise InputError(f"{source}: refused, {len(problems)} record(s) without a valid certificate: {problems[0]} "
@@ -1018,6 +1035,10 @@ def report(results_file: Path | None, report_dir: Path | None, claims_files: tup
             raise InputError(f"{source}: refused, record of {cid!r}: its {', '.join(edits)} "
                              f"{'is' if len(edits) == 1 else 'are'} not the claim's (`stiefelsym check` re-checks "
                              "every record)")
+    missing = missing_runs([r.to_json() for r in results], registry, meta)
+    if missing:
+        raise InputError(f"{source}: refused, {len(missing)} run(s) its command planned have no record: {missing[0]} "
+                         "(a results file is the whole run of its command)")
     target = report_dir or source.parent
     _check_report_dir(target)
     mutation = _mutation(source.parent)

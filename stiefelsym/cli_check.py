@@ -15,7 +15,10 @@ from pathlib import Path
 import click
 
 from .cli import InputError, _registry, standalone_command
-from .integrity import check_results
+from .hard import HARD_CASES
+from .integrity import MAX_N_CHECKED, check_results
+from .results import meta_problems
+from .runner import METHODS
 
 _Command = standalone_command("stiefelsym check")
 
@@ -41,6 +44,10 @@ def check(results_file: Path, no_rerun: bool, claims_files: tuple[str, ...]) -> 
             raise TypeError("meta (the command the file is the run of) is not a mapping")
     except (OSError, UnicodeDecodeError, json.JSONDecodeError, KeyError, TypeError) as exc:
         raise InputError(f"{results_file} is not a stiefelsym results file: {exc}") from None
+    problems = meta_problems(meta, METHODS, tuple(HARD_CASES), MAX_N_CHECKED)
+    if problems:
+        raise InputError(f"{results_file}: its meta (the command the file is the run of) is malformed: "
+                         f"{'; '.join(problems)}")
     files = list(claims_files) or list(meta.get("claims_files") or [])
     # the sizes the records were run at: a user's claims are traced there (in child processes)
     sizes = [(r.get("n"), r.get("r")) for r in records]

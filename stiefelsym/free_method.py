@@ -28,7 +28,7 @@ import time
 from typing import Any, Callable
 
 from .certificate_check import CASES, check_certificate
-from .claims import Claim, Count, Rank, Size
+from .claims import Claim, Count, Rank, Size, SizeSpec
 from .methods import _base_result, division_probe, _entries, _short, call_claim
 from .results import CheckOutcome, Result
 from .free import FreeScene, FreeSolveError, NeedsCoordinates, RewritingError
@@ -244,7 +244,16 @@ def fixed_r(claim: Claim) -> int:
     return lo
 
 
-#: sizes n <= this at which a declaration of one r is checked against the statement's admits()
+def declared_by_fields(spec: Any) -> bool:
+    """The statement's admits() is decided by its declared fields before anything else: a plain
+    :class:`SizeSpec` (its condition ``where`` only narrows what r_min, r_max, r_is_n admit), or a user's
+    plain statement rebuilt from its child (:class:`.userfile.TabledSizes` with ``fields_first``).  A
+    subclass's admits() is its own code, which may admit any size at any n."""
+    from .userfile import TabledSizes
+    return type(spec) is SizeSpec or (type(spec) is TabledSizes and spec.fields_first is True)
+
+
+#: sizes n <= this at which the statement's admits() gives each declared family its smallest n
 R_CHECK_N = 16
 
 
@@ -254,8 +263,10 @@ def size_families(claim: Claim) -> tuple[list[SizeFamily | None], str]:
     [None] for a claim stated at every r.  A claim that declares one r (r_min = r_max = 1 or 2, or
     r_is_n) or a union of them (r_in, e.g. (1, "n")) gets one family per declared r, each for every n
     from the smallest n at which the claim admits or lists a size of it (the size (k, k) belongs to the
-    family r = n when r = n is declared).  The declaration is believed only when the sizes say the same:
-    a size the statement admits (n <= R_CHECK_N) or lists at another r makes the run undecided."""
+    family r = n when r = n is declared).  The declaration is believed only when the statement's admits()
+    is decided by its declared fields (:func:`declared_by_fields`: then every size it admits, at every n,
+    is in a declared family) and the sizes it lists say the same; the sizes it admits up to R_CHECK_N
+    give each family its smallest n."""
     spec = claim.sizes
     columns, square = fixed_r(claim), bool(getattr(spec, "r_is_n", False))
     declared = tuple(getattr(spec, "r_in", ()) or ())
@@ -265,6 +276,11 @@ def size_families(claim: Claim) -> tuple[list[SizeFamily | None], str]:
         return [None], ""
     if any(v != "n" and (type(v) is not int or v < 1) for v in declared):
         return [], f"the statement declares r in {declared!r}, which is not a list of r = k >= 1 and r = n"
+    if not declared_by_fields(spec):
+        said = " or ".join(f"r = {v}" for v in declared)
+        return [], (f"the statement declares {said} but its admits() is its own code (a subclass of SizeSpec), so "
+                    "the declared r is not known to hold at every size it admits: the hypotheses that hold there "
+                    "only are not used; decided by the fixed-size methods")
 
     def family_of(n: int, r: int) -> Any:
         return "n" if r == n and "n" in declared else r if r in declared else None

@@ -73,6 +73,30 @@ def _evidence_edits(record: dict, again: dict) -> list[str]:
     return [k for k in EVIDENCE if _canonical(record.get(k)) != _canonical(again.get(k))]
 
 
+#: the verdicts the dimension-free method gives (a record with no size is its record)
+FREE_VERDICTS = ("proved", "undecided", "error", "inconclusive")
+
+
+def size_method_problems(r: dict) -> list[str]:
+    """A record whose size and method do not fit: a record with no size is the dimension-free method's, with
+    one of its verdicts (no fixed-size method runs without a size, and `free` never says `checked` or
+    `numeric`); a record with a size is a fixed-size method's."""
+    n, method, verdict = r.get("n"), r.get("method"), r.get("verdict")
+    if n is None and method != "free":
+        return [f"a {method!r} record with no size (only the dimension-free method runs for every n, r)"]
+    if n is None and verdict not in FREE_VERDICTS:
+        return [f"the verdict {verdict!r} for every n, r (the dimension-free method says one of "
+                f"{', '.join(FREE_VERDICTS)})"]
+    if n is not None and method == "free":
+        return ["a dimension-free record with a size"]
+    return []
+
+
+#: the largest --max-n of a results file that `stiefelsym check` lists the planned runs of (every size up to
+#: it is asked of each claim's statement)
+MAX_N_CHECKED = 256
+
+
 def planned_runs(claim: Any, meta: dict) -> set[tuple[tuple[int, int] | None, str]]:
     """The runs (size or None for the dimension-free run, method) of the printed claim that the command
     a results file records planned (its methods, and --max-n or --size, or the claim's own sizes): what
@@ -111,7 +135,12 @@ def missing_runs(records: list[dict], registry: Registry, meta: dict) -> list[st
         if cid not in registry:
             continue                    # refused below, record by record
         sizes_with_a_record = {size for size, m in cells if size is not None}
-        for size, m in sorted(planned_runs(registry.get(cid), meta), key=lambda x: (x[0] or (0, 0), x[1])):
+        try:
+            planned = planned_runs(registry.get(cid), meta)
+        except Exception as exc:    # noqa: BLE001 - the claim's statement cannot say which sizes were planned
+            out.append(f"{cid}: the runs its command planned cannot be listed ({type(exc).__name__}: {exc})")
+            continue
+        for size, m in sorted(planned, key=lambda x: (x[0] or (0, 0), x[1])):
             found = size in sizes_with_a_record if m == "auto" else (size, m) in cells
             if not found:
                 where = "all n, r" if size is None else f"({size[0]},{size[1]})"
@@ -126,9 +155,19 @@ def check_results(records: list[dict], registry: Registry, echo: Callable[[str],
     compared: a hand-edited verdict is caught even where the digest is the claim's.  With the file's
     ``meta`` (its command's methods and sizes), every run the command planned for a claim the file
     has records of must have its record (:func:`missing_runs`)."""
-    from .free_method import run_free
-    from .runner import graph_digest, run_one
+    from .results import record_problems
+    from .runner import graph_digest, run_free_guarded, run_one
     bad = 0
+    total = len(records)
+    well_formed = []
+    for i, r in enumerate(records):
+        problems = record_problems(r) or size_method_problems(r)
+        if problems:
+            echo(f"REJECTED record {i + 1}: malformed: {'; '.join(problems)}")
+            bad += 1
+        else:
+            well_formed.append(r)
+    records = well_formed
     for p in certificate_problems(records):
         echo(f"REJECTED {p}")
         bad += 1
@@ -207,7 +246,7 @@ def check_results(records: list[dict], registry: Registry, echo: Callable[[str],
             key = (cid, r.get("variant"))
             again = free_done.get(key)
             if again is None:
-                again = free_done[key] = run_free(claim, func)
+                again = free_done[key] = run_free_guarded(claim, func)
             if again.verdict != r.get("verdict"):
                 echo(f"REJECTED {where}: the record says {r.get('verdict')!r}, the dimension-free method again "
                      f"says {again.verdict!r}")
@@ -217,10 +256,10 @@ def check_results(records: list[dict], registry: Registry, echo: Callable[[str],
             key = (cid, r.get("variant"))
             again = free_done.get(key)
             if again is None:
-                again = free_done[key] = run_free(claim, func)
+                again = free_done[key] = run_free_guarded(claim, func)
             if again.verdict != "proved" or _canonical(again.certificate_data) != _canonical(r.get("certificate_data")):
                 echo(f"REJECTED {where}: the certificate is not the one the claim's graph gives "
                      f"(re-derived: {again.verdict})")
                 bad += 1
-    echo(f"{len(records)} records checked, {bad} rejected")
+    echo(f"{total} records checked, {bad} rejected")
     return bad

@@ -206,6 +206,17 @@ def call_claim(func: Callable, scene: Any, family: Any = None) -> dict[str, Any]
     return checks
 
 
+def draw_key(claim: Claim, n: int, r: int, seed: int, func: Callable | None = None) -> str:
+    """The source of every random draw of a verification of ``func`` (the claim, or a variant of it) at
+    (n, r): the seed, the digest of the graph the run evaluates, the claim's id and the size.  The
+    points, primes and probe points are a function of what the claim states (Fiat-Shamir): a claim
+    cannot be written to vanish at its own points, because every constant it would need to compute
+    them enters the digest they are drawn from.  The same commit, claim and seed give the same draws."""
+    cons = REALIZATIONS[claim.realization or "standard"]
+    g = compile_claim(func or claim.func, n, r, (cons.name, cons.build))
+    return f"{seed}|{g.digest()}|{claim.id}|{n}|{r}"
+
+
 @dataclass
 class Evaluation:
     outcomes: list[CheckOutcome]
@@ -484,14 +495,14 @@ def _rank_at_point(M: Mat, rng: random.Random, modulus: int | None = None) -> in
 
 
 def _exact_rank(R: Rank, field: Field, randomized: _RandomizedRank | None = None,
-                minor_degree: Callable[[], int] | None = None, seed: int = 0) -> tuple[str, Any]:
+                minor_degree: Callable[[], int] | None = None, key: str = "0") -> tuple[str, Any]:
     """Two-sided rank certificates.  Lower bound: the exact rank at a random integer point (a
     nonzero minor there is a nonzero polynomial).  Upper bound: full rank, or the rank over the
     function field (symbolic, within SYMBOLIC_RANK_SECONDS), or, beyond that, the rank at random
     points of prime fields with a Schwartz-Zippel bound from the degree of the next minors
-    (status "randomized": the verdict is then ``checked``)."""
+    (status "randomized": the verdict is then ``checked``).  ``key``: the run's :func:`draw_key`."""
     M = R.matrix
-    rng = random.Random(f"{seed}|rank|{M._shape()}")
+    rng = random.Random(f"{key}|rank|{M._shape()}")
     if R.generic:
         lower = _rank_at_point(M, rng)
         if lower is not None and lower > R.expected:
@@ -581,6 +592,7 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
     t0 = time.perf_counter()
     try:
         with time_limit(time_budget):
+            key = draw_key(claim, n, r, seed, func)
             randomized = _RandomizedRank()
             charts: list[tuple[Scene, str]] = []
             # the standard realization's chart reduces by O(r) acting on the right as well (A11
@@ -615,7 +627,7 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                 stated = scene.equivariant_reduction() or EQUIVARIANT_REDUCTION
                 charts.append((scene, stated.format(why=why)))
                 evaluations = [_evaluate(checks, field, lambda R: _exact_rank(
-                    R, field, randomized, lambda: degree_bound(claim, n, r, func).numerator, seed))]
+                    R, field, randomized, lambda: degree_bound(claim, n, r, func).numerator, key))]
             else:
                 if n > EXACT_CAYLEY_MAX_N:
                     res.verdict = "inconclusive"
@@ -633,7 +645,7 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                     sc = Scene(n, r, f2, chart="cayley", component=comp, realization=claim.realization)
                     ch = call_claim(func, sc)
                     evaluations.append(_evaluate(ch, f2, lambda R, f2=f2: _exact_rank(
-                        R, f2, randomized, lambda: degree_bound(claim, n, r, func).numerator, seed)))
+                        R, f2, randomized, lambda: degree_bound(claim, n, r, func).numerator, key)))
                     desc = CAYLEY_REDUCTION.format(
                         D=" D" if r == n else "",
                         comp=(f"; component {comp + 1} of O(n) (D = {'I' if comp == 0 else 'diag(-1,1,..,1)'})"
@@ -716,13 +728,14 @@ def _rational_witness(claim: Claim, n: int, r: int, seed: int, func: Callable) -
     return run_points(claim, n, r, "rational", seed, func, trials=1).witness
 
 
-#: three primes, one per probe point (a divisor that is not identically zero vanishes at a random
-#: point modulo all three with negligible probability)
-PROBE_PRIMES = (2**61 - 1, 2**62 - 57, 2**60 - 93)
+#: the probe's points, each over its own prime drawn from the run's :func:`draw_key` (a divisor that is not
+#: identically zero vanishes at a random point modulo all of them with negligible probability; drawn, not
+#: fixed, so that no claim can be written with a divisor that is a nonzero multiple of the probe's primes)
+PROBE_POINTS = 3
 
 
 #: the outcome of the division probe per claim function and (claim, realization, size, seed, strict):
-#: a pure function of these (its points come from the seed, the claim's id and the size), so it
+#: a pure function of these (its points come from the seed and the claim's graph: draw_key), so it
 #: runs once per claim function, like the cached degree bound of the randomized methods
 _PROBES: "weakref.WeakKeyDictionary[Callable, dict]" = weakref.WeakKeyDictionary()
 
@@ -756,8 +769,16 @@ def _division_probe(claim: Claim, n: int, r: int, func: Callable | None = None, 
     take place, and that is the reason."""
     func = func or claim.func
     last: BaseException | None = None
-    for attempt, p in enumerate(PROBE_PRIMES):
-        rng = random.Random(f"{seed}|{claim.id}|{n}|{r}|division-probe|{attempt}")
+    try:
+        key = draw_key(claim, n, r, seed, func)
+    except Exception as exc:   # noqa: BLE001 - the claim's graph is refused: the symbolic run reports it
+        if strict:
+            return (f"the division probe could not trace the claim at (n={n}, r={r}) ({type(exc).__name__}: "
+                    f"{exc}), so a division by an identically zero expression cannot be excluded")
+        return ""
+    for attempt in range(PROBE_POINTS):
+        p = random_prime(random.Random(f"{key}|division-probe|prime|{attempt}"))
+        rng = random.Random(f"{key}|division-probe|{attempt}")
         scene = Scene(n, r, ModularField(p), chart="cayley", rng=rng, component=attempt % 2 if r == n else 0,
                       realization=claim.realization)
         try:
@@ -1063,8 +1084,9 @@ def run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callabl
     return _hard_or_random(lambda o: _run_points(claim, n, r, kind, seed, func or claim.func, trials, o), options)
 
 
-def _prime_field(claim: Claim, n: int, r: int, seed: int, t: int, attempt: int) -> ModularField:
-    rng = random.Random(f"{seed}|{claim.id}|{n}|{r}|modular|{t}|prime|{attempt}")
+def _prime_field(key: str, t: int, attempt: int) -> ModularField:
+    """The prime of point ``t`` (its ``attempt``-th draw), from the run's :func:`draw_key`."""
+    rng = random.Random(f"{key}|modular|{t}|prime|{attempt}")
     return ModularField(random_prime(rng))
 
 
@@ -1072,6 +1094,7 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
                 trials: int | None, options: dict | None) -> Result:
     res = _base_result(claim, n, r, kind, seed)
     t0 = time.perf_counter()
+    key = draw_key(claim, n, r, seed, func)
     hard = bool(options and options.get("hard"))
     deg, eps = None, 1.0
     if hard:
@@ -1107,10 +1130,10 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
             and _points_needed(max(e for p in per_point for e in p)) is not None):
         comp = t % components
         prime_attempt = 0
-        value_field = rational if kind == "rational" else _prime_field(claim, n, r, seed, t, prime_attempt)
+        value_field = rational if kind == "rational" else _prime_field(key, t, prime_attempt)
         for attempt in range(MAX_RESAMPLE):
             def build(value_field=value_field, attempt=attempt) -> tuple:
-                rng = random.Random(f"{seed}|{claim.id}|{n}|{r}|{kind}|{t}|{attempt}")
+                rng = random.Random(f"{key}|{kind}|{t}|{attempt}")
                 field = value_field if hard else PairField(value_field)
                 return value_field, field, Scene(n, r, field, chart="cayley", rng=rng, component=comp,
                                                  realization=claim.realization, options=options)
@@ -1129,7 +1152,7 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
                 # a constant of the claim vanishes mod p: this prime is not admissible, draw another
                 primes_redrawn += 1
                 prime_attempt += 1
-                value_field = _prime_field(claim, n, r, seed, t, prime_attempt)
+                value_field = _prime_field(key, t, prime_attempt)
                 continue
             except (DegenerateError, ZeroDivisionError):
                 resampled += 1
@@ -1328,25 +1351,41 @@ def run_float(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
     options = _prepare(options)
     with one_blas_thread(), quiet_numpy():
         res = _hard_or_random(lambda o: _run_float(claim, n, r, seed, func or claim.func, o), options)
-    if res.verdict == "numeric" and n <= FLOAT_CONFIRM_N and not options:
-        res = _confirm_numeric(res, claim, n, r, seed, func)
+    if res.verdict == "numeric":
+        res = _confirm_numeric(res, claim, n, r, seed, func, options)
     return res
 
 
-#: up to this n a `numeric` verdict is confirmed at exact points modulo a prime (milliseconds there):
-#: a residual far below the scale of the terms (a term absorbed by a much larger one) passes float64's
-#: relative tolerance, and only exact arithmetic sees it
-FLOAT_CONFIRM_N = 12
+#: a `numeric` verdict is confirmed at this many exact points mod p per component, at every size: a
+#: residual far below the scale of the terms (a term absorbed by a much larger one) passes float64's
+#: relative tolerance, and only exact arithmetic sees it (a point mod p costs about what the float
+#: run costs)
+CONFIRM_POINTS = POINTS_MIN
 
 
 def _confirm_numeric(res: Result, claim: Claim, n: int, r: int, seed: int, func: Callable | None,
-                     method: str = "float") -> Result:
-    exact = run_points(claim, n, r, "modular", seed, func)
+                     options: dict | None, method: str = "float") -> Result:
+    """The float or ball run's ``numeric``, confirmed at exact points modulo primes (of the hard case, at
+    its exact parameters, when one was asked for and changed a parameter; random points otherwise).  A
+    nonzero residual there refutes the claim; where no exact point can be evaluated the float verdict
+    is not a pass (``inconclusive``, with the reason)."""
+    what = "float64" if method == "float" else "the ball enclosure"
+    hard = {k: v for k, v in options.items() if k != "hard_hits"} if options else None
+    exact = run_points(claim, n, r, "modular", seed, func, trials=CONFIRM_POINTS, options=hard)
+    if exact.verdict != "fails" and exact.checks and exact.verdict != "error":
+        # the residuals vanished at the exact points (the bound of so few points is not the question:
+        # a nonzero residual below float64's resolution is what the confirmation looks for)
+        return res
     if exact.verdict != "fails":
+        res.verdict = "inconclusive"
+        res.message = (f"{what} passed within its tolerance relative to the terms' scale, but the confirmation "
+                       f"at exact points mod p could not decide ({exact.verdict}"
+                       + (f": {exact.message}" if exact.message else "") +
+                       "), and a residual below float64's resolution of the terms is seen only there")
         return res
     exact.method = method
-    exact.message = (f"{'float64' if method == 'float' else 'the ball enclosure'} passed within its tolerance relative to the terms' scale, but the residual is not 0 at "
-                     "exact points mod p: it lies below float64's resolution of those terms"
+    exact.message = (f"{what} passed within its tolerance relative to the terms' scale, but the residual is "
+                     "not 0 at exact points mod p: it lies below float64's resolution of those terms"
                      + (f" ({exact.message})" if exact.message else ""))
     return exact
 
@@ -1383,6 +1422,7 @@ def _float_component(claim: Claim, n: int, r: int, seed: int, func: Callable, op
     nonzero_claim = claim.expect == "nonzero"
     cons = REALIZATIONS[claim.realization]
     wide = outside_float_range(compile_claim(func, n, r, (cons.name, cons.build)))
+    key = draw_key(claim, n, r, seed, func)
     for dps in ladder:
         if dps is None and wide:
             run.log.append(f"float64 skipped: the constant {wide[0]} is outside its range "
@@ -1390,7 +1430,7 @@ def _float_component(claim: Claim, n: int, r: int, seed: int, func: Callable, op
             continue
         def build(dps=dps) -> tuple:
             field = FloatField(dps)
-            rng = random.Random(f"{seed}|{claim.id}|{n}|{r}|float" + (f"|component {comp}" if comp else ""))
+            rng = random.Random(f"{key}|float" + (f"|component {comp}" if comp else ""))
             return field, Scene(n, r, field, chart="cayley", rng=rng, component=comp,
                                 realization=claim.realization, options=options)
         if _LOAN is not None and not options and dps is None:
@@ -1585,8 +1625,8 @@ def run_ball(claim: Claim, n: int, r: int, seed: int, func: Callable | None = No
     options = _prepare(options)
     with one_blas_thread(), quiet_numpy():
         res = _hard_or_random(lambda o: _run_ball(claim, n, r, seed, func or claim.func, o), options)
-    if res.verdict == "numeric" and n <= FLOAT_CONFIRM_N and not options:
-        res = _confirm_numeric(res, claim, n, r, seed, func, "ball")
+    if res.verdict == "numeric":
+        res = _confirm_numeric(res, claim, n, r, seed, func, options, "ball")
     return res
 
 
@@ -1653,9 +1693,9 @@ class _BallDecision:
     point: dict[str, str] = dc_field(default_factory=dict)
 
 
-def _ball_rng(seed: int, claim: Claim, n: int, r: int, comp: int) -> random.Random:
+def _ball_rng(seed: int, claim: Claim, n: int, r: int, comp: int, func: Callable) -> random.Random:
     """The float method's random source: the ball method evaluates at the float method's point."""
-    return random.Random(f"{seed}|{claim.id}|{n}|{r}|float" + (f"|component {comp}" if comp else ""))
+    return random.Random(f"{draw_key(claim, n, r, seed, func)}|float" + (f"|component {comp}" if comp else ""))
 
 
 def _ball_component(claim: Claim, n: int, r: int, seed: int, func: Callable, options: dict | None,
@@ -1670,8 +1710,8 @@ def _ball_component(claim: Claim, n: int, r: int, seed: int, func: Callable, opt
     for field in first + [BallField(prec) for prec in BALL_LADDER]:
         with working_precision(field.prec):
             try:
-                scene = Scene(n, r, field, chart="cayley", rng=_ball_rng(seed, claim, n, r, comp), component=comp,
-                              realization=claim.realization, options=options)
+                scene = Scene(n, r, field, chart="cayley", rng=_ball_rng(seed, claim, n, r, comp, func),
+                              component=comp, realization=claim.realization, options=options)
                 checks = call_claim(func, scene)
                 encs: list[_Enclosures] = []
                 ranks, counts = [], []

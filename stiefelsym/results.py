@@ -177,6 +177,69 @@ def dump_results(results: Iterable[Result], meta: dict[str, Any]) -> str:
     return json.dumps(payload, indent=1, sort_keys=False, default=str) + "\n"
 
 
+def _is_int(x: Any) -> bool:
+    return type(x) is int
+
+
+def record_problems(d: Any) -> list[str]:
+    """What is malformed in one record of a results file, field by field (the fields that name the run: its
+    claim, size, method, verdict, variant and seed), before anything reads them; [] for a well-formed
+    record.  A value of the right type can still be the wrong one: that is `stiefelsym check`'s to find."""
+    if not isinstance(d, dict):
+        return ["it is not an object"]
+    out = []
+    for key in ("claim", "method", "verdict"):
+        if key in d and type(d[key]) is not str:
+            out.append(f"{key} is a {type(d[key]).__name__}, not a string")
+    n, r = d.get("n"), d.get("r")
+    if (n is None) != (r is None):
+        out.append("one of n, r is null and the other not")
+    elif n is not None and not (_is_int(n) and _is_int(r) and 1 <= r <= n):
+        out.append(f"the size (n, r) = ({n!r}, {r!r}) is not integers 1 <= r <= n")
+    if d.get("variant") is not None and type(d["variant"]) is not str:
+        out.append(f"variant is a {type(d['variant']).__name__}, not a string")
+    if d.get("seed") is not None and not _is_int(d["seed"]):
+        out.append(f"seed is a {type(d['seed']).__name__}, not an integer")
+    return out
+
+
+def meta_problems(meta: Any, methods: Iterable[str], hard_cases: Iterable[str], max_n: int) -> list[str]:
+    """What is malformed in a results file's ``meta`` (the command the file is the run of), field by field:
+    its methods, sizes, --max-n (at most ``max_n``: every size up to it is listed when the file is
+    checked), hard case and claims files."""
+    if not isinstance(meta, dict):
+        return ["meta is not an object"]
+    out = []
+    ms = meta.get("methods")
+    if ms is not None and not (isinstance(ms, list) and all(type(m) is str and m in methods for m in ms)):
+        out.append(f"meta methods {_short_repr(ms)} is not a list of methods ({', '.join(methods)})")
+    sizes = meta.get("sizes")
+    if sizes is not None and not (isinstance(sizes, list) and all(_size_text(t) for t in sizes)):
+        out.append(f"meta sizes {_short_repr(sizes)} is not a list of sizes \"n,r\" with 1 <= r <= n")
+    mx = meta.get("max_n")
+    if mx is not None and not (_is_int(mx) and 1 <= mx <= max_n):
+        out.append(f"meta max_n {_short_repr(mx)} is not an integer from 1 to {max_n}")
+    hard = meta.get("hard")
+    if hard is not None and not (type(hard) is str and hard in hard_cases):
+        out.append(f"meta hard {_short_repr(hard)} is not a hard case ({', '.join(hard_cases)})")
+    files = meta.get("claims_files")
+    if files is not None and not (isinstance(files, list) and all(type(f) is str for f in files)):
+        out.append(f"meta claims_files {_short_repr(files)} is not a list of paths")
+    return out
+
+
+def _size_text(t: Any) -> bool:
+    if type(t) is not str or t.count(",") != 1:
+        return False
+    a, b = t.split(",")
+    return a.strip().isdigit() and b.strip().isdigit() and 1 <= int(b) <= int(a)
+
+
+def _short_repr(x: Any, limit: int = 60) -> str:
+    text = repr(x)
+    return text if len(text) <= limit else text[:limit] + "..."
+
+
 def load_results(path: str | Path) -> tuple[dict[str, Any], list[Result]]:
     """The meta data and the results of a results file (``stiefelsym verify --format json``,
     reports/results.json); ValueError, in one line, for anything else."""
@@ -193,6 +256,9 @@ def load_results(path: str | Path) -> tuple[dict[str, Any], list[Result]]:
         if not isinstance(d, dict) or not required <= d.keys():
             missing = sorted(required - d.keys()) if isinstance(d, dict) else ["(not an object)"]
             raise ValueError(f"result {i + 1} lacks {', '.join(missing[:4])}{', ...' if len(missing) > 4 else ''}")
+        problems = record_problems(d)
+        if problems:
+            raise ValueError(f"result {i + 1}: {'; '.join(problems)}")
         out.append(Result.from_json({k: v for k, v in d.items() if k in names}))
     meta = payload.get("meta", {})
     return meta if isinstance(meta, dict) else {}, out

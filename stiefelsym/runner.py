@@ -134,11 +134,30 @@ def _guarded(claim: Claim, size: Size | None, method: str, seed: int, func: Call
     except MemoryError:
         if in_worker:
             raise
-        return _error(claim, size, method, seed, "MemoryError: the computation ran out of memory")
+        res = _error(claim, size, method, seed, "MemoryError: the computation ran out of memory")
     except BaseException as exc:  # noqa: BLE001 - a bug in the claim (or the engine), SystemExit included
         from .isolate import ChildError
         from .methods import _describe
-        return _error(claim, size, method, seed, str(exc) if isinstance(exc, ChildError) else _describe(exc))
+        res = _error(claim, size, method, seed, str(exc) if isinstance(exc, ChildError) else _describe(exc))
+    # an error is bound to the graph it was met on like any verdict ("" when the claim does not trace)
+    res.digest = _digest_or_none(claim, size, func)
+    return res
+
+
+def run_free_guarded(claim: Claim, func: Callable | None = None) -> Result:
+    """The dimension-free method in this process, whatever the claim raises an ``error`` (for ``derive`` and
+    ``check``, which run it outside the pool): the raw result, its verdict policy not applied."""
+    return _guarded(claim, None, "free", 0, func, None)
+
+
+def _digest_or_none(claim: Claim, size: Size | None, func: Callable | None) -> str:
+    """:func:`graph_digest`, "" when even asking for it raises (what a run that ended in error met)."""
+    try:
+        return graph_digest(claim, size, func)
+    except (KeyboardInterrupt, Terminated):
+        raise
+    except BaseException:  # noqa: BLE001 - the error's message already says why
+        return ""
 
 
 def graph_digest(claim: Claim, size: Size | None, func: Callable | None = None) -> str:
@@ -156,7 +175,10 @@ def graph_digest(claim: Claim, size: Size | None, func: Callable | None = None) 
         if size is not None:
             return ""
     from .free_method import size_families
-    families, _why = size_families(claim)
+    try:
+        families, _why = size_families(claim)
+    except Exception:   # noqa: BLE001 - the statement's admits() raised: the run's verdict says it
+        return ""
     if not families or None in families:
         return ""
     try:

@@ -92,10 +92,10 @@ def exact_entries(claim: Any, n: int, r: int, seed: int = 0, hard: str | None = 
     """The claim's residual entries, exactly, at the very point the float method evaluates (at
     precision ``dps``: float64 and mpmath draw their points differently)."""
     from .claims import Count, Rank
-    from .methods import _entries, call_claim
+    from .methods import _entries, call_claim, draw_key
     from .scene import Scene
     field = _float_point_field(dps)
-    rng = random.Random(f"{seed}|{claim.id}|{n}|{r}|float" + (f"|component {component}" if component else ""))
+    rng = random.Random(f"{draw_key(claim, n, r, seed)}|float" + (f"|component {component}" if component else ""))
     options = None
     if hard:
         from .hard import hard_case
@@ -192,10 +192,10 @@ def evaluate(claim: Any, n: int, r: int, dps: int | None = None, seed: int = 0, 
     import mpmath
     import numpy as np
     from .fields import FloatField
-    from .methods import call_claim
+    from .methods import call_claim, draw_key
     from .scene import Scene
     field = FloatField(dps)
-    rng = random.Random(f"{seed}|{claim.id}|{n}|{r}|float" + (f"|component {component}" if component else ""))
+    rng = random.Random(f"{draw_key(claim, n, r, seed)}|float" + (f"|component {component}" if component else ""))
     options = None
     if hard:
         from .hard import hard_case

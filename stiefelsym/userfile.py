@@ -70,6 +70,12 @@ class NoGraph(ValueError):
     """The claims file was traced in a child process, and not at the size or realization asked for."""
 
 
+class TraceEnded(RuntimeError):
+    """The claim's tracing in its claims file's child process ran out of time or ended its process: no graph,
+    and no reading of the claim either (a run that meets it is an ``error``, never a claim that merely does not
+    run on some backend)."""
+
+
 # --------------------------------------------------------------------------- the wire format
 
 def _enc(v: Any) -> Any:
@@ -225,7 +231,7 @@ def _claim_data(c: Claim, needed: Sequence[tuple[int, int]]) -> dict:
         "sizes": {"list": [list(p) for p in listed], "n_min": spec.n_min, "r_min": spec.r_min,
                   "r_max": spec.r_max, "n_max": spec.n_max, "r_is_n": bool(spec.r_is_n),
                   "condition": spec.condition, "where": spec.where is not None or type(spec) is not SizeSpec,
-                  "admits": admits},
+                  "fields_first": type(spec) is SizeSpec, "admits": admits},
         "fails_at": fails,
         "keys": [None] + [list(p) for p in traced],
         "corrections": [{"description": k.description, "changes": k.changes, "expect": k.expect}
@@ -600,8 +606,9 @@ class _Recorded:
 
 class _Budget:
     """A trace that did not finish in the child: it ran out of the run's time budget, or its process died.
-    Replayed as it happened (the computation does not finish here either, or its process dies the same
-    way), so that the run's budgets give the verdict they give a claim traced in the run's worker."""
+    Replayed as an exception (:class:`TraceEnded`) in whatever process asks for the graph: never as the
+    process's own end (a replay that exited or killed itself would let the file choose the exit status of
+    ``check`` or ``derive``, which run it in their own process), so the run's verdict is ``error``."""
 
     __slots__ = ("what", "how")
 
@@ -613,15 +620,10 @@ class _Budget:
 
     def throw(self) -> None:
         if self.what == "timeout":
-            while True:             # the budget of the process that asked ends it
-                time.sleep(3600)
-        sig = self.how.removeprefix("killed by ")
-        if sig != self.how and sig.isidentifier() and isinstance(getattr(signal, sig, None), signal.Signals):
-            os.kill(os.getpid(), getattr(signal, sig))
-            time.sleep(5)
-        if self.how.startswith("exited with status ") and self.how.rsplit(" ", 1)[-1].isdigit():
-            os._exit(int(self.how.rsplit(" ", 1)[-1]) & 0xFF)
-        raise NoGraph(f"the tracing of the claim ended without a result ({self.how or 'its process died'})")
+            raise TraceEnded("the tracing of the claim did not finish within its time budget in its claims "
+                             "file's child process")
+        raise TraceEnded(f"the tracing of the claim ended without a result ({self.how or 'its process died'}) in "
+                         "its claims file's child process")
 
 
 def _graph(data: Any) -> Any:
@@ -724,12 +726,20 @@ class _Lookup:
         return v
 
 
+@dataclasses.dataclass(frozen=True)
 class TabledSizes(SizeSpec):
     """A size statement rebuilt from a child's data: its fields as sent, and ``admits`` the child's own answer
     (the claim's ``admits``, whatever it overrides) at every size of the table; beyond the table, the fields'
-    bounds when the statement has no further condition, else an error."""
+    bounds when the statement has no further condition, else an error.  A statement that was a plain
+    :class:`SizeSpec` in the child (``fields_first``: its admits() reads its declared fields before its
+    condition) admits here only what its fields admit, whatever the table says: its declared r (r_min = r_max,
+    r_is_n) holds at every size it admits, by construction."""
+
+    fields_first: bool = False
 
     def admits(self, n: int, r: int) -> bool:
+        if self.fields_first and not SizeSpec.admits(dataclasses.replace(self, where=None), n, r):
+            return False
         table = getattr(self.where, "table", None)
         if table is not None and (n, r) in table:
             return bool(self.where(n, r))                   # type: ignore[misc]
@@ -757,7 +767,7 @@ def _claim(d: Any, path: str) -> Claim:
                        r_min=_get(spec_d, "r_min", int), r_max=_opt_int(spec_d, "r_max"),
                        where=admits,
                        condition=_get(spec_d, "condition", str), n_max=_opt_int(spec_d, "n_max"),
-                       r_is_n=_get(spec_d, "r_is_n", bool))
+                       r_is_n=_get(spec_d, "r_is_n", bool), fields_first=_get(spec_d, "fields_first", bool))
     realization = _get(d, "realization", str)
     src_path, line, name = _get(d, "path", str), _get(d, "line", int), _get(d, "name", str)
     fails = _get(d, "fails_at", list, optional=True)

@@ -122,18 +122,38 @@ def test_a_corrupted_claim_fails_with_a_certified_witness(claim, size):
 
 
 def test_numeric_is_not_a_proof_of_the_identity():
-    """A residual of 10⁻¹⁴ of its terms is nonzero, but below the resolution 10⁻⁸ of the term scale:
-    beyond the sizes where it is confirmed at exact points, the ball method says ``numeric`` with a
-    rigorous bound on it at this point, which is all it claims; where an exact point costs little
-    (n <= FLOAT_CONFIRM_N) the confirmation refutes it, as the exact methods do."""
-    from stiefelsym.methods import FLOAT_CONFIRM_N
-    n = FLOAT_CONFIRM_N + 2
-    res = run_one(SLIGHTLY_WRONG, Size(n, 2), "ball", seed=SEED)
-    assert res.verdict == "numeric"
-    bound = float(res.certificate.rsplit("|exact residual| <= ", 1)[1].split()[0])
+    """A residual of 10⁻¹⁴ of its terms is nonzero, but below the resolution 10⁻⁸ of the term scale: the
+    ball enclosure alone says ``numeric`` with a rigorous bound on it at this point, which is all it
+    claims; the confirmation at exact points mod p, which runs at every size, refutes it, as the exact
+    methods do."""
+    from stiefelsym.methods import _run_ball
+    n = 14
+    alone = _run_ball(SLIGHTLY_WRONG, n, 2, SEED, SLIGHTLY_WRONG.func, None)
+    assert alone.verdict == "numeric"
+    bound = float(alone.certificate.rsplit("|exact residual| <= ", 1)[1].split()[0])
     assert 0 < bound < 1e-8
-    assert run_one(SLIGHTLY_WRONG, Size(5, 2), "ball", seed=SEED).verdict == "fails"
+    for size in (Size(n, 2), Size(5, 2)):
+        res = run_one(SLIGHTLY_WRONG, size, "ball", seed=SEED)
+        assert res.verdict == "fails" and "exact points mod p" in res.message
     assert run_one(SLIGHTLY_WRONG, Size(5, 2), "modular", seed=SEED).verdict == "fails"
+
+
+@pytest.mark.parametrize("method", ["float", "ball"])
+def test_numeric_without_an_exact_point_is_not_a_pass(monkeypatch, method):
+    """Where the confirmation cannot evaluate the claim at one exact point mod p, float's or ball's
+    `numeric` is not reported as a pass: `inconclusive`, with the reason."""
+    import stiefelsym.methods as methods
+    real = methods.run_points
+
+    def no_point(*args, **kw):
+        res = real(*args, **kw)
+        res.verdict, res.message, res.checks = "error", "no exact point", []
+        return res
+    monkeypatch.setattr(methods, "run_points", no_point)
+    true = Claim(id="true-LA1", paper=("LA1",), kind="lax", section="5",
+                 func=_lax_along_a_wrong_flow(Fraction(0)), sizes=admissible(8))
+    res = run_one(true, Size(4, 2), method, seed=SEED)
+    assert res.verdict == "inconclusive" and "could not decide (error: no exact point)" in res.message
 
 
 def test_a_corrupted_claim_fails_at_n_200():

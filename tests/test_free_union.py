@@ -123,13 +123,18 @@ class AdmitsEveryR(SizeSpec):
 
 @pytest.mark.parametrize("spec", [
     SizeSpec((Size(3, 1), Size(3, 2), Size(3, 3)), r_in=(1, "n")),                 # lists (3,2)
-    AdmitsEveryR((Size(3, 1), Size(3, 3)), r_in=(1, "n")),                          # admits (3,2)
     dataclasses.replace(admissible(4), r_in=(1, "n")),                              # lists every r <= n
 ])
 def test_a_claim_whose_sizes_admit_another_r_is_not_a_union(spec):
     res = run_free(dataclasses.replace(GRAM, sizes=spec))
     assert res.verdict == "undecided"
     assert "declares r = 1 or r = n but admits" in res.message and ",2)" in res.message
+
+
+def test_a_union_declared_with_an_admits_of_its_own_is_not_believed():
+    """A subclass's admits() may admit another r at any n (here every r): the declaration is not believed."""
+    res = run_free(dataclasses.replace(GRAM, sizes=AdmitsEveryR((Size(3, 1), Size(3, 3)), r_in=(1, "n"))))
+    assert res.verdict == "undecided" and "declares r = 1 or r = n but its admits() is its own code" in res.message
 
 
 def test_the_declaration_restricts_the_statement():

@@ -12,7 +12,7 @@ from stiefelsym.fields import (PRIME_HIGH, PRIME_LOW, PRIMES_IN_RANGE_LOWER, Con
                                FloatField, ModularField, primes_in_range_lower_bound,
                                random_prime)
 from stiefelsym.methods import (POINTS_CAP, POINTS_TARGET, _per_point_bound, _points_needed, _prime_field,
-                                degree_bound, run_exact, run_float, run_points)
+                                degree_bound, draw_key, run_exact, run_float, run_points)
 from stiefelsym.runner import run_one
 
 PASSING = ("proved", "checked", "numeric")
@@ -63,19 +63,50 @@ def test_a_constant_multiple_of_the_old_prime_fails(func):
     assert res.verdict == "fails" and PRIME_LOW <= res.witness["prime"] < PRIME_HIGH
 
 
-def test_a_claim_aimed_at_the_seeds_primes_has_them_redrawn():
-    """A constant divisible by the primes seed 0 draws first: those primes are redrawn, the claim fails."""
+def test_a_claim_aimed_at_the_seeds_primes_meets_other_primes():
+    """A constant divisible by the primes seed 0 draws for another statement of the same id: the primes
+    are drawn from the digest of the aimed claim's own graph (which holds the constant), so they are
+    other primes, and the claim fails."""
     probe = _claim(mersenne_multiple)
+    key = draw_key(probe, 3, 2, 0)
     c = 1
     for t in range(6):
         for attempt in range(3):
-            c *= _prime_field(probe, 3, 2, 0, t, attempt).p
+            c *= _prime_field(key, t, attempt).p
 
     def aimed(s):
         return {"cX": s.X * c}
-    res = run_points(_claim(aimed, cid=probe.id), 3, 2, "modular", 0)
-    assert res.verdict == "fails"
-    assert c % res.witness["prime"] != 0 and "primes dividing a constant of the claim redrawn" in res.certificate + res.message
+    aimed_claim = _claim(aimed, cid=probe.id)
+    assert draw_key(aimed_claim, 3, 2, 0) != key
+    res = run_points(aimed_claim, 3, 2, "modular", 0)
+    assert res.verdict == "fails" and c % res.witness["prime"] != 0
+
+
+def test_the_draws_follow_the_seed_and_the_claims_graph():
+    """Fiat-Shamir: the key of every draw is a function of the seed, the size and the traced graph (the
+    same claim gives the same key; another constant, another seed or another size gives another)."""
+    def times(c):
+        def f(s):
+            return {"cX": s.X * c}
+        return f
+    one, same, other = _claim(times(3)), _claim(times(3)), _claim(times(5))
+    assert draw_key(one, 3, 2, 0) == draw_key(same, 3, 2, 0)
+    assert len({draw_key(one, 3, 2, 0), draw_key(other, 3, 2, 0), draw_key(one, 3, 2, 1),
+                draw_key(one, 4, 2, 0)}) == 4
+
+
+def test_a_prime_dividing_a_constant_of_the_claim_is_redrawn(monkeypatch):
+    """The redraw itself: when the first draw of every point is the prime 2^61 - 1, a claim with the
+    constant 2^61 - 1 has that prime redrawn (the constant would vanish mod p) and fails."""
+    import stiefelsym.methods as methods
+    drawn = methods._prime_field
+
+    def first_mersenne(key, t, attempt):
+        return ModularField(2**61 - 1) if attempt == 0 else drawn(key, t, attempt)
+    monkeypatch.setattr(methods, "_prime_field", first_mersenne)
+    res = run_points(_claim(mersenne_multiple), 3, 2, "modular", 0)
+    assert res.verdict == "fails" and res.witness["prime"] != 2**61 - 1
+    assert "primes dividing a constant of the claim redrawn" in res.certificate + res.message
 
 
 def test_the_height_bound_sees_big_constants():
@@ -118,7 +149,8 @@ def _stateful_fermat():
     def claim(s):
         calls[0] += 1
         x = s.X[0, 0]
-        p = _prime_field(c, 3, 1, 0, calls[0] - 1, 0).p
+        # (the key of the earlier draws, without the graph's digest: the claim cannot know its own)
+        p = _prime_field(f"0|{c.id}|3|1", calls[0] - 1, 0).p
         return {"r": x ** p - x}
     c = _claim(claim)
     return c, calls

@@ -73,12 +73,10 @@ def test_verify_answers_error_for_a_claim_whose_tracing_ends_its_process(mode):
     assert false and not set(false.values()) & set(PASSING), false
 
 
-@pytest.mark.xfail(strict=True, reason="open (AA): `check` replays the child's 'exited with status 0' in its own "
-                   "process (userfile._Budget.throw calls os._exit), so the file sets check's exit status")
 def test_check_exit_status_is_not_the_files_choice(tmp_path):
     """A forged `proved` of a false claim, in a results file whose other claim's tracing leaves its process
-    with status 0: check must reject the forged record and exit 1.  Today it prints the rejection, then the
-    next record's graph is replayed in check's own process, which leaves with status 0 (all records held up)."""
+    with status 0: check must reject the forged record and exit 1.  Closed (AA): the replay of the child's exit
+    raises (userfile.TraceEnded), so check's own process goes on and exits 1."""
     forged = _forged_budget_results(tmp_path, "exit0")
     out = cli("check", str(forged), env=_budget_env("exit0"))
     assert out.returncode == 1, (out.returncode, out.stdout[-1500:])
@@ -94,17 +92,15 @@ def test_check_rejects_the_forged_record_when_the_file_does_not_end_its_process(
 
 
 @pytest.mark.slow
-@pytest.mark.xfail(strict=True, reason="open (AA): `check` replays 'killed by SIGKILL' in its own process: it "
-                   "dies without a verdict (exit -9) instead of rejecting the records")
 def test_check_is_not_killed_by_the_files_child(tmp_path):
+    """Closed (AA): the replayed SIGKILL is an exception in check, not a signal to itself."""
     forged = _forged_budget_results(tmp_path, "kill")
     out = cli("check", str(forged), env=_budget_env("kill"))
     assert out.returncode == 1 and "records checked" in out.stdout, (out.returncode, out.stdout[-1500:])
 
 
-@pytest.mark.xfail(strict=True, reason="open (AA): `derive` runs the dimension-free method in its own process; "
-                   "the replayed 'exited with status 0' leaves it with status 0 (its status for a proof)")
 def test_derive_of_a_false_claim_whose_tracing_exits_0_is_not_status_0():
+    """Closed (AA): the replay raises; derive runs the free method guarded (an error, exit 1)."""
     out = cli("derive", "adv-s33-budget-ender", "--claims", str(HERE / BUDGET), env=_budget_env("exit0"))
     # what derive says of a claim it cannot prove: exit 1, its "% <claim> ..." line, no traceback
     assert out.returncode == 1 and out.stdout.startswith("% adv-s33-budget-ender") and "Traceback" not in out.stderr, \
@@ -125,11 +121,11 @@ BEYOND_FALSE = ("adv-s33-beyond-col1", "adv-s33-beyond-square", "adv-s33-beyond-
                 "adv-s33-beyond-square-where")
 
 
-@pytest.mark.xfail(strict=True, reason="open (AB): free_method.sizes_off_r checks a declared r (r_min = r_max, "
-                   "r_is_n) against admits() at n <= 16 only, so a statement admitting (17, 2) buys the r = 1 / "
-                   "r = n hypotheses: proved for all n, r, false at (17,2)")
 @pytest.mark.parametrize("method", ["free", pytest.param("auto", marks=pytest.mark.slow)])
 def test_a_declared_r_contradicted_beyond_16_is_not_proved_for_every_size(method):
+    """Closed (AB): a declared r is believed only when admits() is decided by the declared fields (a plain
+    SizeSpec, or a user's plain statement rebuilt with `fields_first`, whose admits() conjoins them); a
+    subclass's own admits() leaves the claim to the fixed-size methods."""
     v = verdicts(BEYOND, method, ids=BEYOND_FALSE) if method == "free" else \
         parse_all(cli("verify", *BEYOND_FALSE, "--claims", str(HERE / BEYOND), "--method", "auto").stdout)
     got = {c: x for c, x in v.items()} if method == "free" else {c: x for (c, m), x in v.items() if m == "free"}
@@ -203,23 +199,19 @@ MALFORMED_REPORT = ("claim-list", "claim-dict", "n-list", "r-dict", "method-list
 FAST = ("claim-list",)
 
 
-def _open(reason):
-    return pytest.mark.xfail(strict=True, reason=f"open (AC): {reason}")
-
-
-@pytest.mark.parametrize("case", [pytest.param(c, marks=[_open("check answers a malformed record or meta field with "
-                                                               "a Python traceback")]
-                                               + ([] if c in FAST else [pytest.mark.slow])) for c in MALFORMED])
+@pytest.mark.parametrize("case", [pytest.param(c, marks=[] if c in FAST else [pytest.mark.slow]) for c in MALFORMED])
 def test_check_refuses_a_malformed_results_file_without_a_traceback(honest_results, tmp_path, case):
+    """Closed (AC): check validates the meta field by field first (exit 2, results.meta_problems) and rejects a
+    malformed record with its reason (exit 1, results.record_problems)."""
     record, meta = MALFORMED[case]
     out = cli("check", str(_forge(honest_results, tmp_path, record, meta)))
     assert _refused_cleanly(out), (out.returncode, out.stderr[-800:])
 
 
-@pytest.mark.parametrize("case", [pytest.param(c, marks=[_open("report answers a malformed record with a Python "
-                                                               "traceback")]
-                                               + ([] if c in FAST else [pytest.mark.slow])) for c in MALFORMED_REPORT])
+@pytest.mark.parametrize("case", [pytest.param(c, marks=[] if c in FAST else [pytest.mark.slow])
+                                  for c in MALFORMED_REPORT])
 def test_report_refuses_a_malformed_results_file_without_a_traceback(honest_results, tmp_path, case):
+    """Closed (AC): report refuses a malformed record in one line (exit 2, results.record_problems)."""
     record, meta = MALFORMED[case]
     out = cli("report", "--results", str(_forge(honest_results, tmp_path, record, meta)), "--report-dir",
               str(tmp_path / "rep"))
@@ -251,9 +243,8 @@ def test_check_rejects_a_forged_proved_with_another_claims_certificate(honest_re
 
 
 @pytest.mark.slow
-@_open("check enumerates every size up to the meta's max_n (integrity.planned_runs): max_n = 100000 does not "
-       "finish in a minute (a hang on a forged file)")
 def test_check_of_a_results_file_with_a_huge_max_n_finishes(honest_results, tmp_path):
+    """Closed (AC): a meta max_n beyond integrity.MAX_N_CHECKED is refused (exit 2) before any size is listed."""
     import subprocess
     import sys
     path = _forge(honest_results, tmp_path, meta={"max_n": 100000})
@@ -278,39 +269,39 @@ def _honest_results(tmp_path):
     payload = json.loads((out / "results.json").read_text())
     got = {(r["claim"], r["method"]): r["verdict"] for r in payload["results"]}
     assert got[("adv-s33-honest-divzero", "exact")] == "error", got
-    assert got[("adv-s33-honest-statement", "free")] == "error", got
+    # (since AB was closed the free method does not consult a subclass's admits(): the statement that raises
+    # at (5,3) leaves the claim undecided, not in error)
+    assert got[("adv-s33-honest-statement", "free")] == "undecided", got
     return out / "results.json"
 
 
-@pytest.mark.xfail(strict=True, reason="open (AD): an error record has no graph digest (runner._guarded builds the "
-                   "error without one) and check compares digests: an honest results file is rejected")
 def test_check_accepts_the_honest_records_of_runs_that_ended_in_error(tmp_path):
+    """Closed (AD): an error record carries the digest of the graph it was met on (runner._guarded); check re-runs the free method guarded."""
     out = cli("check", str(_honest_results(tmp_path)))
     assert out.returncode == 0, out.stdout[-1500:]
 
 
-@pytest.mark.xfail(strict=True, reason="open (AD): derive runs the dimension-free method unguarded in its own "
-                   "process: a size statement that raises is a Python traceback")
 @pytest.mark.parametrize("cid", ["adv-s33-raises-value",
                                  pytest.param("adv-s33-raises-zerodiv", marks=pytest.mark.slow)])
 def test_derive_answers_a_raising_statement_without_a_traceback(cid):
+    """Closed (AD): derive runs the free method guarded (runner.run_free_guarded): an error, exit 1."""
     out = cli("derive", cid, "--claims", str(HERE / RAISES))
     assert out.returncode == 1 and "Traceback" not in out.stderr, out.stderr[-800:]
 
 
-@pytest.mark.xfail(strict=True, reason="open (AD): `show` evaluates the erratum sizes (fails_at) in its own process, "
-                   "unguarded: a fails_at that raises is a Python traceback")
 def test_show_answers_a_raising_erratum_without_a_traceback():
+    """Closed (AD): show evaluates the erratum sizes guarded and says that they raise."""
     out = cli("show", "adv-s33-raises-erratum", "--claims", str(HERE / RAISES))
     assert out.returncode in (0, 2) and "Traceback" not in out.stderr, out.stderr[-800:]
 
 
 @pytest.mark.slow
 def test_verify_answers_a_raising_statement_with_error():
-    """The control: in `verify` the raising statement is the free run's error; the fixed-size methods decide at
-    (3,2) (the true claim proved or checked, the false one fails)."""
+    """The control: in `verify` the free run never passes (since AB was closed it does not consult a subclass's
+    admits(), so the statement that raises is not asked: undecided); the fixed-size methods decide at (3,2)
+    (the true claim proved or checked, the false one fails)."""
     got = run_all(RAISES, ids=("adv-s33-raises-value", "adv-s33-raises-zerodiv"), methods=("exact", "modular", "float"))
-    assert got[("adv-s33-raises-value", "free")] == got[("adv-s33-raises-zerodiv", "free")] == "error", got
+    assert got[("adv-s33-raises-value", "free")] == got[("adv-s33-raises-zerodiv", "free")] == "undecided", got
     assert got[("adv-s33-raises-value", "exact")] == "proved", got
     assert {got[("adv-s33-raises-zerodiv", m)] for m in ("exact", "modular", "float")} == {"fails"}, got
 
@@ -321,16 +312,15 @@ ABSORB = "s33_numeric_unconfirmed.py"
 ABSORB_IDS = ("adv-s33-absorb-X", "adv-s33-absorb-trace", "adv-s33-absorb-phi")
 
 
-@pytest.mark.xfail(strict=True, reason="open (AE): a `numeric` verdict is confirmed at exact points only at n <= 12 "
-                   "(methods.FLOAT_CONFIRM_N): at (13,2) float and ball pass (cX + X) - cX = 0, c = 10^20")
 def test_absorbed_terms_are_not_numeric_at_13_2():
+    """Closed (AE): float's and ball's `numeric` is confirmed at exact points mod p at every n."""
     got = run_all(ABSORB, size="13,2", methods=("float", "ball"), free=False)
     assert len(got) == 6 and not set(got.values()) & set(PASSING), got
 
 
-@pytest.mark.xfail(strict=True, reason="open (AE): the confirmation is skipped whenever a --hard case is given, even "
-                   "one that changes no parameter of the claim (an ordinary random point)")
 def test_absorbed_terms_are_not_numeric_under_a_hard_case():
+    """Closed (AE): under a hard case the confirmation runs at the hard point's exact parameters (here the
+    case changes no parameter of the claim: at random points)."""
     out = cli("verify", "--claims", str(HERE / ABSORB), "--method", "float", "--method", "ball", "--size", "3,2",
               "--hard", "near-pole")
     got = parse_all(out.stdout)
@@ -353,26 +343,24 @@ SEEDED = "s33_seeded_primes.py"
 SEEDED_IDS = ("adv-s33-seeded-sum", "adv-s33-seeded-matrix", "adv-s33-seeded-fraction", "adv-s33-seeded-absorbed")
 
 
-@pytest.mark.xfail(strict=True, reason="open (AF): the primes of the modular method are a function of the seed, the "
-                   "claim's id and the size (methods._prime_field), so a claim can be a multiple of their product: "
-                   "`checked` with a bound of 1e-43 for a false claim")
 def test_a_multiple_of_the_drawn_primes_is_not_checked_by_modular():
+    """Closed (AF): every draw comes from methods.draw_key, the seed with the digest of the claim's traced
+    graph; the primes the file computes at import are those of another key (its constant M is in the
+    digest), so they are not the run's primes."""
     got = run_all(SEEDED, ids=SEEDED_IDS, methods=("modular",), free=False)
     assert len(got) == 4 and not set(got.values()) & set(PASSING), got
 
 
 @pytest.mark.slow
-@pytest.mark.xfail(strict=True, reason="open (AF): float's `numeric` is confirmed at exact points modulo the same "
-                   "drawn primes, where the absorbed term M·X vanishes")
 def test_an_absorbed_multiple_of_the_drawn_primes_is_not_numeric():
+    """Closed (AF): the confirmation's modular points come from the claim's own digest too."""
     got = run_all(SEEDED, ids=("adv-s33-seeded-absorbed",), methods=("float",), free=False)
     assert got and not set(got.values()) & set(PASSING), got
 
 
 @pytest.mark.slow
-@pytest.mark.xfail(strict=True, reason="open (AF): at (13,2) auto chooses the modular method, whose primes the file "
-                   "computed: `checked` for a false claim")
 def test_auto_does_not_pass_a_multiple_of_the_drawn_primes_at_13_2():
+    """Closed (AF): auto's modular run draws its primes from the claim's own digest."""
     got = run_all(SEEDED, ids=("adv-s33-seeded-auto",), size="13,2", methods=("auto",), free=False)
     assert got and not set(got.values()) & set(PASSING), got
 
@@ -387,10 +375,8 @@ def test_the_seeded_claims_are_false():
 POINTS = "s33_seeded_points.py"
 
 
-@pytest.mark.xfail(strict=True, reason="open (AF): the rational method's points are a function of the seed, the "
-                   "claim's id and the size: a claims file builds the same scenes at import and states a product "
-                   "of (tr PᵀP − v_t) that vanishes at each of them (`checked`, bound 1e-34)")
 def test_a_polynomial_vanishing_at_the_drawn_points_is_not_checked_by_rational():
+    """Closed (AF): the rational points are drawn from the digest of the graph that holds the v_t."""
     got = run_all(POINTS, methods=("rational",), free=False)
     assert got and not set(got.values()) & set(PASSING), got
 
@@ -403,9 +389,8 @@ def test_the_polynomial_vanishing_at_the_drawn_points_is_false():
 
 
 @pytest.mark.slow
-@pytest.mark.xfail(strict=True, reason="open (AA): a tracing that outlasts its budget (300 s) is recorded as "
-                   "'timeout' and replayed in derive's own process as a sleep without end (userfile._Budget.throw)")
 def test_derive_of_a_claim_whose_tracing_outlasts_its_budget_finishes():
+    """Closed (AA): a replayed 'timeout' raises userfile.TraceEnded: derive answers error, exit 1."""
     import subprocess
     import sys
     try:
@@ -423,10 +408,8 @@ PROBE = "s33_probe_primes.py"
 
 
 @pytest.mark.slow
-@pytest.mark.xfail(strict=True, reason="open (AG): the division probe works modulo three fixed public primes "
-                   "(methods.PROBE_PRIMES): a divisor 1 + (P − 1), P their product, is a nonzero number that the "
-                   "probe takes for a division by zero: exact, auto and free answer error for true claims")
 def test_a_divisor_that_is_a_multiple_of_the_probe_primes_is_not_an_error():
+    """Closed (AG): the probe's primes are drawn from methods.draw_key (seed and graph digest), not fixed."""
     got = run_all(PROBE, methods=("exact", "auto"))
     assert len(got) == 4 and "error" not in got.values(), got
 
@@ -440,23 +423,19 @@ def test_the_probe_prime_claims_pass_the_point_methods():
 
 # -- AH. a passing verdict for every n, r that no method gives, rendered by report -------------------------
 
-@pytest.mark.xfail(strict=True, reason="open (AH): report refuses a `proved` with no size without a certificate, "
-                   "but renders `checked` / `numeric` with no size (no fixed-size method runs without a size, free "
-                   "never says them) and counts the false claim as holding at every size computed")
 @pytest.mark.parametrize("edit", [{"n": None, "r": None, "method": "modular", "verdict": "checked",
                                    "false_pass_bound": 1e-30},
                                   pytest.param({"n": None, "r": None, "method": "free", "verdict": "numeric"},
                                                marks=pytest.mark.slow)])
 def test_report_refuses_a_passing_verdict_for_every_size_that_no_method_gives(honest_results, tmp_path, edit):
+    """Closed (AH): a record with no size is the dimension-free method's, with one of its verdicts (integrity.size_method_problems): report refuses it (exit 2), check rejects it."""
     forged = _forge(honest_results, tmp_path, edit)
     out = cli("report", "--results", str(forged), "--report-dir", str(tmp_path / "rep"))
     assert out.returncode == 2, (out.returncode, out.stderr[-800:])
 
 
-@pytest.mark.xfail(strict=True, reason="open (AH): report does not ask for the runs the file's command planned "
-                   "(integrity.missing_runs, which check applies): with the false claim's failing record dropped, "
-                   "its headline counts the claim among those that hold and says every verdict is as expected")
 def test_report_refuses_a_results_file_with_a_planned_run_dropped(honest_results, tmp_path):
+    """Closed (AH): report applies integrity.missing_runs as check does (exit 2)."""
     d = json.loads(json.dumps(honest_results))
     d["results"] = [r for r in d["results"] if (r["claim"], r["method"]) != ("adv-s33-rec-false", "exact")]
     path = tmp_path / "dropped.json"
