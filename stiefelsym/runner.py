@@ -138,7 +138,10 @@ def _guarded(claim: Claim, size: Size | None, method: str, seed: int, func: Call
     except BaseException as exc:  # noqa: BLE001 - a bug in the claim (or the engine), SystemExit included
         from .isolate import ChildError
         from .methods import _describe
+        from .userfile import TraceEnded
         res = _error(claim, size, method, seed, str(exc) if isinstance(exc, ChildError) else _describe(exc))
+        if isinstance(exc, TraceEnded) and exc.timeout:     # out of its time budget: undecided, not a bug
+            res.verdict, res.message = "inconclusive", str(exc)
     # an error is bound to the graph it was met on like any verdict ("" when the claim does not trace)
     res.digest = _digest_or_none(claim, size, func)
     return res

@@ -72,8 +72,12 @@ class NoGraph(ValueError):
 
 class TraceEnded(RuntimeError):
     """The claim's tracing in its claims file's child process ran out of time or ended its process: no graph,
-    and no reading of the claim either (a run that meets it is an ``error``, never a claim that merely does not
-    run on some backend)."""
+    and no reading of the claim either (a run that meets it is ``inconclusive`` when the time budget ran out,
+    else an ``error``; never a claim that merely does not run on some backend)."""
+
+    def __init__(self, message: str, timeout: bool = False) -> None:
+        super().__init__(message)
+        self.timeout = timeout
 
 
 # --------------------------------------------------------------------------- the wire format
@@ -608,7 +612,8 @@ class _Budget:
     """A trace that did not finish in the child: it ran out of the run's time budget, or its process died.
     Replayed as an exception (:class:`TraceEnded`) in whatever process asks for the graph: never as the
     process's own end (a replay that exited or killed itself would let the file choose the exit status of
-    ``check`` or ``derive``, which run it in their own process), so the run's verdict is ``error``."""
+    ``check`` or ``derive``, which run it in their own process), so the run's verdict is ``inconclusive`` (out of
+    time) or ``error``."""
 
     __slots__ = ("what", "how")
 
@@ -620,8 +625,8 @@ class _Budget:
 
     def throw(self) -> None:
         if self.what == "timeout":
-            raise TraceEnded("the tracing of the claim did not finish within its time budget in its claims "
-                             "file's child process")
+            raise TraceEnded("exceeded its time budget while its claims file's child process traced it",
+                             timeout=True)
         raise TraceEnded(f"the tracing of the claim ended without a result ({self.how or 'its process died'}) in "
                          "its claims file's child process")
 
