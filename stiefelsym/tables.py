@@ -1181,8 +1181,8 @@ def tables_json(T: Tables, verdicts: dict[str, Any]) -> dict:
         "schema": "stiefelsym-tables/1", "n_max": T.n_max, "extended_n_max": T.extended_n_max, "seed": T.seed,
         "extended_quantities": list(EXTENDED),
         "quantities": {k: {"label": v[0], "meaning": v[1]} for k, v in QUANTITIES.items()},
-        "sizes": [{"n": n, "r": r, "seconds": round(T.seconds.get((n, r), 0.0), 3),
-                   "rows": [row.as_dict() for row in rows]} for (n, r), rows in sorted(T.rows.items())],
+        # no timings: the file is committed, and the same command on the same commit writes the same bytes
+        "sizes": [{"n": n, "r": r, "rows": [row.as_dict() for row in rows]} for (n, r), rows in sorted(T.rows.items())],
         "disagreements": T.formula_check(),
         "undecided": {k: v for k, v in T.undecided().items()},
         "max_false_probability": max((row.cert.false_probability for rows in T.rows.values() for row in rows), default=0.0),
