@@ -50,8 +50,7 @@ def import_package() -> None:
     use, so that the verifying process reads no engine module from disk after a claims file's child ran."""
     import pkgutil
 
-    import stiefelsym
-    for info in pkgutil.walk_packages(stiefelsym.__path__, "stiefelsym.", onerror=lambda name: None):
+    for info in pkgutil.walk_packages(_package_path(), "stiefelsym.", onerror=lambda name: None):
         if info.name in NOT_PRELOADED or info.name in sys.modules:
             continue
         try:
@@ -68,13 +67,17 @@ def import_package() -> None:
                         pass
 
 
+def _package_path() -> list[str]:
+    """The package's ``__path__`` (read from the loaded package: this module is one of its modules)."""
+    return list(sys.modules["stiefelsym"].__path__)
+
+
 def package_roots() -> list[Path]:
     """The directories the engine's modules are imported from: the package's, and the catalog's
     (``stiefelsym.proofs``, which an editable install may map elsewhere)."""
     import importlib.util
 
-    import stiefelsym
-    roots = [Path(p) for p in stiefelsym.__path__]
+    roots = [Path(p) for p in _package_path()]
     try:
         spec = importlib.util.find_spec("stiefelsym.proofs")
     except (ImportError, ValueError):

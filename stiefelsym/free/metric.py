@@ -29,7 +29,7 @@ import symengine as se
 
 from .algebra import SCALAR, Letter, NCPoly, derivation, mark_moving, symmetric_letter
 from .rewriting import Certificate, CertTerm, Cofactor, Hypothesis, Order, RewritingSystem, Rule, cofactor_sum, simplify_coef
-from .scene import AINV, A, FreeSolveError, P, Pt, X, Xt, _by, _holds_letter, hypothesis
+from .letters import AINV, A, FreeSolveError, P, Pt, X, Xt, _by, _holds_letter, hypothesis
 
 #: the name of the hypothesis XᵀA⁻¹P + PᵀA⁻¹X (the second constraint of the metric realization)
 METRIC_HYP = "XtAinvP+PtAinvX"
