@@ -74,14 +74,11 @@ def run_isolated(fn: Callable[[], Any], seconds: float, describe: Callable[[Base
 def how_it_ended(status: int) -> str:
     """A wait status in words: the signal that killed the process, or its exit status."""
     if os.WIFSIGNALED(status):
+        from .pool import signal_name
         sig = os.WTERMSIG(status)
-        try:
-            name = signal.Signals(sig).name
-        except ValueError:
-            name = f"signal {sig}"
         hint = ("; a native library aborted, as flint does when an allocation fails under the memory budget"
                 if sig == signal.SIGABRT else "")
-        return f"killed by {name}{hint}"
+        return f"killed by {signal_name(sig)}{hint}"
     if os.WIFEXITED(status):
         return f"exit status {os.WEXITSTATUS(status)}"
     return f"wait status {status}"

@@ -273,14 +273,17 @@ class _Worker:
         self.buffer = bytearray()
 
 
+def signal_name(sig: int) -> str:
+    """A signal's name (SIGKILL), or its number."""
+    try:
+        return signal.Signals(sig).name
+    except ValueError:
+        return f"signal {sig}"
+
+
 def _died(status: int) -> str:
     if os.WIFSIGNALED(status):
-        sig = os.WTERMSIG(status)
-        try:
-            name = signal.Signals(sig).name
-        except ValueError:
-            name = f"signal {sig}"
-        return f"killed by {name}"
+        return f"killed by {signal_name(os.WTERMSIG(status))}"
     if os.WIFEXITED(status):
         return f"the worker process exited with status {os.WEXITSTATUS(status)}"
     return f"wait status {status}"

@@ -98,10 +98,7 @@ def _compile(func: Callable, n: int | None, r: int | None, constraints: tuple[st
     except Exception as exc:      # noqa: BLE001 - the claim's own failure, reported by the caller
         exc._first_traceback = exc.__traceback__      # type: ignore[attr-defined]
         out = exc
-    _GRAPHS[key] = (func, out)
-    while len(_GRAPHS) > GRAPH_CACHE_SIZE:
-        _GRAPHS.popitem(last=False)
-    return out
+    return _remember(key, func, out)
 
 
 def _typed_at(func: Callable, free: Graph, n: int, r: int, constraints: tuple[str, Callable]) -> Any:
@@ -128,6 +125,11 @@ def _typed_at(func: Callable, free: Graph, n: int, r: int, constraints: tuple[st
     except Exception as exc:      # noqa: BLE001 - reported by the caller
         exc._first_traceback = exc.__traceback__      # type: ignore[attr-defined]
         out = exc
+    return _remember(key, func, out)
+
+
+def _remember(key: tuple, func: Callable, out: Any) -> Any:
+    """``out`` (a graph or a refusal) cached under ``key`` for ``func``, the oldest entries dropped."""
     _GRAPHS[key] = (func, out)
     while len(_GRAPHS) > GRAPH_CACHE_SIZE:
         _GRAPHS.popitem(last=False)
