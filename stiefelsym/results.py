@@ -194,7 +194,7 @@ def record_problems(d: Any) -> list[str]:
     n, r = d.get("n"), d.get("r")
     if (n is None) != (r is None):
         out.append("one of n, r is null and the other not")
-    elif n is not None and not (_is_int(n) and _is_int(r) and 1 <= r <= n):
+    elif n is not None and r is not None and not (_is_int(n) and _is_int(r) and 1 <= r <= n):
         out.append(f"the size (n, r) = ({n!r}, {r!r}) is not integers 1 <= r <= n")
     if d.get("variant") is not None and type(d["variant"]) is not str:
         out.append(f"variant is a {type(d['variant']).__name__}, not a string")
