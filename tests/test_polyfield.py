@@ -4,6 +4,7 @@ entries flint cannot hold, and identical verdicts on claims."""
 from __future__ import annotations
 
 import random
+import re
 from fractions import Fraction
 
 import pytest
@@ -160,7 +161,8 @@ def test_the_text_of_a_rational_function_does_not_depend_on_the_order_of_the_rin
         texts.append((R.text(R.from_se(x)), R.text(R.from_se(y)), R.text(R.from_se(z)), R.poly_text(
             R.from_se(se.expand(b * c ** 2 + a * b - c ** 3))[0])))
     assert len(set(texts)) == 1, texts
-    tx, ty, tz, tp = texts[0]
+    # the parameters' own names (an older python-flint or symengine prints them with a leading underscore)
+    tx, ty, tz, tp = (re.sub(r"(?<![\w])_(?=[ab]_)", "", t) for t in texts[0])
     assert tx == ty == "(a_2**2*a_10 + a_10*b_1**2 - 3*a_2 - 1)/((a_2 - b_1)*(b_1 + 1)**2)", tx
     assert tz != tx and tp == "-a_2**3 + a_2**2*a_10 + a_10*b_1", tp      # negative control; natural order
 
