@@ -494,3 +494,18 @@ def test_the_results_file_of_a_run_is_not_rewritten_after_it(tmp_path):
         recs = json.loads((tmp_path / "rep" / "results.json").read_text())["results"]
         verdicts_seen |= {r["verdict"] for r in recs}
     assert verdicts_seen == {"fails"}, verdicts_seen
+
+
+# -- the metric realization's multiplier letter (closed this session by design: Lambda is bound only by its relation)
+
+METRIC_TRICKS = "s33_metric_tricks.py"
+METRIC_FALSE = ("adv-s33-metric-lambda-closed-form", "adv-s33-metric-M-conserved", "adv-s33-metric-trace-lambda")
+
+
+@pytest.mark.parametrize("method", ["free", "exact", "modular", "float"])
+def test_false_statements_about_the_metric_flow_pass_under_no_method(method):
+    """Λ in closed form (−PᵀA⁻²P, true only where XᵀA⁻¹X = I), XᵀA⁻¹X conserved, and tr(ΛM) with the wrong
+    factor: the free method leaves them undecided (nonzero normal forms), the fixed-size methods refute them."""
+    got = verdicts(METRIC_TRICKS, method)
+    assert set(got) == set(METRIC_FALSE), got
+    assert not any(v in PASSING for v in got.values()), got
