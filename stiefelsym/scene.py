@@ -470,17 +470,35 @@ class Scene(PaperObjects):
             return X, P
         S = self._skew_params(f"{prefix}S", n, "n")
         In = self.identity(n, "n")
-        minus, plus = In - S, In + S
+        plus = In + S
         inverse = plus.inv()
-        Q = minus @ inverse                    # in O(n); det Q = 1
         # the first r columns (the first one negated on the second component of O(n)) as one
-        # product with the constant n x r matrix [D; 0]
+        # product with the constant n x r matrix J = [D; 0]
         D = _buf((n, r), np.int64)
         D.fill(0)
         D[range(r), range(r)] = 1
         if self.component % 2 == 1:
             D[0, 0] = -1
         J = Mat._consts(D, self._field, ("n", "r"), self.tracker)
+        if self._field.exact:
+            # Q = (I - S)(I + S)^-1 = 2(I + S)^-1 - I exactly (I - S = 2I - (I + S) commutes with
+            # (I + S)^-1): X = QJ = 2(I + S)^-1 J - J, one n x n x r product instead of an n x n x n
+            # product and an n x n x r one; and P = XW + (I - XXᵀ)Z = XW + Z - X(XᵀZ), two n x r x r
+            # products instead of two n x n x r ones.  Over a float field the rounding (and the
+            # error bounds) of the printed construction is kept
+            X = (inverse @ J) * 2 - J
+            self._done_with(S, plus, inverse, J)
+            del S, plus, inverse
+            W = self._skew_params(f"{prefix}W", r, "r")
+            Z = self._general_params(f"{prefix}Z", n, r, ("n", "r"))
+            XW = X @ W
+            P0 = XW + (Z - X @ (X.T @ Z))
+            if self._realization == "metric":
+                P0 = self.A @ P0
+            self._done_with(In, W, Z, XW)
+            return X, P0
+        minus = In - S
+        Q = minus @ inverse                    # in O(n); det Q = 1
         X = Q @ J
         # what only the construction of the point reads goes as soon as it is read, not with the
         # scene (X keeps what it remembers: X Xᵀ is a term of the claims)
