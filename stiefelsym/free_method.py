@@ -29,6 +29,7 @@ from typing import Any, Callable
 
 from .certificate_check import CASES, check_certificate
 from .claims import Claim, Count, Rank, Size, SizeSpec
+from .ir.statements import InverseIdentities
 from .methods import _base_result, division_probe, _entries, _short, call_claim
 from .results import CheckOutcome, Result
 from .free import FreeScene, FreeSolveError, NeedsCoordinates, RewritingError
@@ -128,8 +129,9 @@ def run_free_on(claim: Claim, func: Callable, family: SizeFamily | None, alone: 
                     proved_entries.append((pos, red, len(derivations) if red.rules else None))
                 if red.rules or not red.is_zero:
                     derivations.append(f"\\paragraph{{{entry_title(pos)}}}\n{red.latex()}")
+            said = value.describe() if isinstance(value, InverseIdentities) else ""
             outcomes.append(CheckOutcome(name, "zero" if not bad else "open",
-                                         "" if not bad else f"{bad} entries with nonzero normal form"))
+                                         said if not bad else f"{bad} entries with nonzero normal form"))
     except RewritingError as exc:
         return undecided(f"rewriting did not terminate: {exc}")
     res.checks = outcomes

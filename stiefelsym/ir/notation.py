@@ -367,6 +367,9 @@ class Reader:
             return _mk("tuple", (), [_mk("named", (k,), (x(v),)) for k, v in a])
         if op == "rank":       # rank(M) = k (generically, or at every point)
             return _mk("equals", ("" if a[2] else "everywhere",), (func("rank", [x(a[0])]), x(a[1])))
+        if op == "inverse":    # op(inv(y)) = y and inv(op(x)) = x for generic x, y of the spaces, everywhere
+            return _mk("tuple", (), [_mk("equals", ("everywhere",), (x(u), x(v)))
+                                     for us, vs in ((a[2], a[0]), (a[5], a[3])) for u, v in zip(us, vs)])
         if op == "count":      # a number the claim computed = the printed number
             return _mk("equals", ("",), (x(a[0]), x(a[1])))
         if op == "const":

@@ -1,0 +1,178 @@
+"""Inverse statements: "this operator on Sym(r) × Sym(r) (so(n), R^{n×r}, ...) is invertible at every
+point of T*V, with this inverse", decided as the identities op(inv(y)) = y and inv(op(x)) = x in generic
+elements x, y (and op(x), inv(y) in the space).  The operators {F_i, F_j}_0 and the multiplier system of
+(dot_XP) are proved invertible for every n, r by rewriting, with certificates; a wrong inverse (a sign, a
+missing term), a map that is not invertible and a map that leaves the space are rejected by every
+method, and by the independent checker when its certificate is altered."""
+import copy
+from fractions import Fraction
+
+import pytest
+
+from stiefelsym import Inverse
+from stiefelsym.certificate_check import check_certificate
+from stiefelsym.claims import load_catalog
+from stiefelsym.free_method import run_free
+from stiefelsym.ir import TraceRefused, trace
+from stiefelsym.ir.replay import GraphClaim
+from stiefelsym.methods import REALIZATIONS, run_ball, run_exact, run_float, run_points
+
+CATALOG = load_catalog()
+CLAIM = CATALOG.get("dirac-bracket-multipliers")
+STANDARD = (REALIZATIONS["standard"].name, REALIZATIONS["standard"].build)
+SYM2 = ("Sym(r)", "Sym(r)")
+
+
+def cond(t):
+    return [t.X.T @ t.X - t.Ir, t.X.T @ t.P + t.P.T @ t.X]
+
+
+def multipliers(s, Lam, Pi):
+    """(Λ, Π) ↦ d(F_1, F_2) along (−XΠ, XΛ + PΠ): (−2Π, 2Λ + 2(KΠ − ΠK)) on T*V, K = XᵀP."""
+    return tuple(s.d(cond, {"X": -(s.X @ Pi), "P": s.X @ Lam + s.P @ Pi}))
+
+
+def multipliers_inverse(s, a, b):
+    K = s.X.T @ s.P
+    return (b + K @ a - a @ K) / 2, -a / 2
+
+
+def inverse_wrong_sign(s, a, b):
+    K = s.X.T @ s.P
+    return (b - K @ a + a @ K) / 2, -a / 2
+
+
+def inverse_missing_term(s, a, b):
+    return b / 2, -a / 2
+
+
+def forgets_lambda(s, Lam, Pi):
+    """Not invertible: Λ only through its skew part, which is 0 on Sym(r)."""
+    return Lam - Lam.T + Pi, Pi
+
+
+def translate(s, x):
+    """x ↦ x + Ψ: inverted by y ↦ y − Ψ, but it leaves Sym(r)."""
+    return x + s.X.T @ s.P - s.P.T @ s.X
+
+
+def untranslate(s, y):
+    return y - s.X.T @ s.P + s.P.T @ s.X
+
+
+def statement(op, inv, on=SYM2):
+    def claim_func(s):
+        return {"invertible": Inverse(op, inv, on=on, meaning="test")}
+    return claim_func
+
+
+GOOD = statement(multipliers, multipliers_inverse)
+WRONG = {
+    "sign": statement(multipliers, inverse_wrong_sign),
+    "missing term": statement(multipliers, inverse_missing_term),
+    "not invertible": statement(forgets_lambda, lambda s, a, b: (a - b, b)),
+    "leaves Sym(r)": statement(translate, untranslate, on="Sym(r)"),
+}
+
+
+# -- the catalog's claim -----------------------------------------------------------------------------
+
+def test_the_dirac_bracket_claim_is_proved_for_every_n_r_with_a_certificate():
+    res = run_free(CLAIM)
+    assert res.verdict == "proved", res.message
+    assert check_certificate(res.certificate_data).accepted
+    details = {c.name: c.detail for c in res.checks}
+    for name in ("{F_i, F_j}_0 invertible", "Lambda, Pi unique"):
+        assert "op invertible on Sym(r) × Sym(r)" in details[name]
+
+
+@pytest.mark.parametrize("size", [(3, 2), (4, 3)])
+def test_the_dirac_bracket_claim_is_proved_at_fixed_sizes(size):
+    res = run_exact(CLAIM, *size, seed=0)
+    assert res.verdict == "proved", res.message
+    assert all(c.status == "zero" for c in res.checks)
+
+
+def test_the_statement_replays_to_the_same_graph():
+    g = trace(CLAIM.func, None, None, STANDARD)
+    assert trace(GraphClaim(g), None, None, STANDARD).digest() == g.digest()
+    assert trace(GraphClaim(g), 4, 2, STANDARD).digest() == trace(GraphClaim(g), 4, 2, STANDARD).digest()
+
+
+# -- a true statement, and wrong ones, under every method -----------------------------------------------
+
+def test_a_true_inverse_is_proved_by_every_method():
+    assert run_free(CLAIM, GOOD).verdict == "proved"
+    assert run_exact(CLAIM, 4, 2, 0, func=GOOD).verdict == "proved"
+    assert run_points(CLAIM, 4, 2, "modular", 0, func=GOOD).verdict == "checked"
+    assert run_float(CLAIM, 4, 2, 0, func=GOOD).verdict == "numeric"
+
+
+@pytest.mark.parametrize("what", list(WRONG))
+def test_a_wrong_inverse_is_rejected_by_every_method(what):
+    func = WRONG[what]
+    res = run_free(CLAIM, func)
+    assert res.verdict == "undecided" and "nonzero normal form" in res.message, res.message
+    assert run_exact(CLAIM, 3, 2, 0, func=func).verdict == "fails"
+    assert run_points(CLAIM, 3, 2, "modular", 0, func=func).verdict == "fails"
+    assert run_float(CLAIM, 3, 2, 0, func=func).verdict == "fails"
+    assert run_ball(CLAIM, 3, 2, 0, func=func).verdict == "fails"
+
+
+def test_a_wrong_inverse_that_is_right_at_r_1_is_proved_only_there():
+    """At r = 1, KΠ − ΠK = 0: the inverse without that term is right there, and only there."""
+    func = WRONG["missing term"]
+    assert run_exact(CLAIM, 3, 1, 0, func=func).verdict == "proved"
+    assert run_exact(CLAIM, 3, 2, 0, func=func).verdict == "fails"
+
+
+def test_the_checker_rejects_a_certificate_whose_inverse_was_altered():
+    """The certificate of a proof, with one identity of the inverse replaced by that of a wrong inverse
+    (the terms in XᵀP negated: the commutator's sign), is rejected."""
+    data = run_free(CLAIM, GOOD).certificate_data
+    assert check_certificate(data).accepted
+    bad = copy.deepcopy(data)
+    hit = 0
+    for entry in bad["entries"]:
+        if entry["position"].startswith("invertible#3"):
+            for term in entry["residual"]:
+                if "P" in term["word"] or "Pt" in term["word"]:
+                    term["coef"] = str(-Fraction(term["coef"]))
+                    hit += 1
+    assert hit
+    report = check_certificate(bad)
+    assert not report.accepted, report.message
+
+
+# -- what the tracer refuses ---------------------------------------------------------------------------
+
+def test_an_inverse_that_reads_an_element_of_the_statement_is_refused():
+    """op = const y and inv = const x would pass both identities: the elements have reserved names."""
+    func = statement(lambda s, a, b: (a, b), lambda s, a, b: (s.generic("InverseX1", "r", "r"), b))
+    with pytest.raises(TraceRefused, match="generic elements of an Inverse"):
+        trace(func, None, None, STANDARD)
+
+
+def test_an_inverse_with_the_wrong_number_of_parts_is_refused():
+    with pytest.raises(TraceRefused, match="one matrix per space"):
+        trace(statement(lambda s, a, b: a, multipliers_inverse), None, None, STANDARD)
+
+
+def test_an_inverse_inside_a_list_is_refused():
+    def func(s):
+        return {"x": [Inverse(multipliers, multipliers_inverse, on=SYM2)]}
+    with pytest.raises(TraceRefused):
+        trace(func, None, None, STANDARD)
+
+
+def test_an_inverse_on_an_unknown_space_is_a_type_error():
+    with pytest.raises(TypeError, match="on is a space"):
+        Inverse(multipliers, multipliers_inverse, on="Sym(k)")
+    with pytest.raises(TypeError, match="functions"):
+        Inverse(1, multipliers_inverse, on=SYM2)
+
+
+def test_an_element_of_another_shape_is_refused_where_it_is_written():
+    """op maps Sym(r) to n×r matrices: op(x) − x does not type."""
+    with pytest.raises(TraceRefused):
+        trace(statement(lambda s, a: s.X @ a, lambda s, y: y, on="Sym(r)"), None, None, STANDARD)
