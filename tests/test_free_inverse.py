@@ -176,3 +176,64 @@ def test_an_element_of_another_shape_is_refused_where_it_is_written():
     """op maps Sym(r) to n×r matrices: op(x) − x does not type."""
     with pytest.raises(TraceRefused):
         trace(statement(lambda s, a: s.X @ a, lambda s, y: y, on="Sym(r)"), None, None, STANDARD)
+
+
+# -- the operators are the paper's matrices -------------------------------------------------------------
+
+def _sym_units(s):
+    """The basis E_ab + E_ba (a < b), E_aa of Sym(r), with the weight of each in tr(S·F) (2 or 1)."""
+    r = s.r
+    out = []
+    for a in range(r):
+        for b in range(a, r):
+            E = s.mat([[s.q(1) if (i, j) in ((a, b), (b, a)) else s.q(0) for j in range(r)] for i in range(r)],
+                      ("r", "r"))
+            out.append((E, 1 if a == b else 2))
+    return out
+
+
+def _upper(M):
+    m = M.shape[0]
+    return [M[i, j] for i in range(m) for j in range(i, m)]
+
+
+def _twisted_wrong_sign(s, S, T):
+    """Negative control: Ṗ = −h_X + ε h_P F."""
+    import stiefelsym.proofs.app1_magnetic_neumann as app1
+    from stiefelsym import twisted
+
+    def h(t):
+        F1, F2 = app1.cond_XP(t)
+        return t.tr(S @ F1) + t.tr(T @ F2)
+    canonical = s.canonical_flow(h)
+    F = twisted.magnetic_matrix(s)
+    return tuple(s.d(app1.cond_XP, {"X": canonical.Xdot, "P": canonical.Pdot + s.eps * (canonical.Xdot @ F)}))
+
+
+@pytest.mark.parametrize("which", ["standard", "twisted", "twisted, wrong sign"])
+def test_the_operator_is_the_matrix_of_constraint_brackets(which):
+    """At a point of T*V(3, 2): the operator applied to the coefficients of h = tr(S F_1) + tr(T F_2) is the
+    engine's matrix {F_i, F_j} (untwisted, or for ω₀ + ε de₁∧de₂) times those coefficients, column by column."""
+    import random
+
+    from stiefelsym import twisted
+    from stiefelsym.fields import ModularField
+    from stiefelsym.scene import Scene
+    import stiefelsym.proofs.app1_magnetic_neumann as app1
+    import stiefelsym.proofs.sec2_hamiltonian_flows as sec2
+
+    s = Scene(3, 2, ModularField(), rng=random.Random("inverse|matrix"))
+    if which == "standard":
+        op, C = sec2.constraint_brackets, s.constraint_bracket_matrix()
+    else:
+        op = app1.twisted_constraint_brackets if which == "twisted" else _twisted_wrong_sign
+        C = twisted.constraint_bracket_matrix(s)
+    zero = s.zeros(2, 2, ("r", "r"))
+    units = _sym_units(s)
+    columns = [(E, zero, w) for E, w in units] + [(zero, E, w) for E, w in units]
+    agree = True
+    for i, (S, T, w) in enumerate(columns):
+        a, b = op(s, S, T)
+        column = _upper(a) + _upper(b)
+        agree &= all(s.field.is_zero(x - C[j][i] * w) for j, x in enumerate(column))
+    assert agree == ("wrong" not in which)

@@ -1032,8 +1032,9 @@ class Trace:
         def image(f: Callable, args: tuple, what: str) -> tuple:
             out = f(scene, *args)
             out = (out,) if type(out) is Tracer else out
+            # a matrix of the scene (or a value an engine step made, typed when it is evaluated)
             if type(out) not in (tuple, list) or len(out) != len(on) or any(
-                    type(x) is not Tracer or x._kind != MAT for x in out):
+                    type(x) is not Tracer or x._kind == SCALAR for x in out):
                 return self.refuse(f"Inverse: {what} returns one matrix per space of {' × '.join(on)}")
             return tuple(out)
 
