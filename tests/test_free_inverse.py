@@ -237,3 +237,36 @@ def test_the_operator_is_the_matrix_of_constraint_brackets(which):
         column = _upper(a) + _upper(b)
         agree &= all(s.field.is_zero(x - C[j][i] * w) for j, x in enumerate(column))
     assert agree == ("wrong" not in which)
+
+
+def test_a_crafted_inverse_node_gets_the_verdict_of_its_parts():
+    """A graph whose inverse node names other residuals (here the membership residual, which vanishes, in
+    place of op(inv(y)) − y, which does not) is replayed: the tracer makes the statement again from its parts,
+    so the crafted residuals are not what the methods evaluate."""
+    from stiefelsym.ir.graph import Graph
+
+    g = trace(WRONG["sign"], None, None, STANDARD)
+    i = g.ops.index("inverse")
+    a = g.args[i]
+    zero = a[6][-1]                       # inv(y)ᵀ − inv(y)... : 0 on T*V
+    forged = Graph()
+    forged.ops, forged.args = list(g.ops), list(g.args)
+    forged.args[i] = a[:6] + (tuple(zero for _ in a[6]),) + a[7:]
+    forged.output = g.output
+    assert run_exact(CLAIM, 3, 2, 0, func=GraphClaim(forged)).verdict == "fails"
+    assert run_exact(CLAIM, 3, 2, 0, func=GraphClaim(g)).verdict == "fails"
+
+
+def test_a_crafted_inverse_whose_op_reads_y_itself_is_refused():
+    """op(inv(y)) taken as y itself (op = const y): refused when the graph is replayed."""
+    from stiefelsym.ir.graph import Graph
+
+    g = trace(WRONG["not invertible"], None, None, STANDARD)
+    i = g.ops.index("inverse")
+    a = g.args[i]
+    forged = Graph()
+    forged.ops, forged.args = list(g.ops), list(g.args)
+    forged.args[i] = a[:2] + (a[0],) + a[3:5] + (a[3],) + a[6:]
+    forged.output = g.output
+    with pytest.raises(TraceRefused, match="other than through its argument"):
+        trace(GraphClaim(forged), None, None, STANDARD)
