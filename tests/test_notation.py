@@ -177,6 +177,8 @@ def test_a_directional_derivative_names_its_tangent_vector():
     assert changes_text(notation(c, m, Size(3, 2))) == "in dX/dt = xi X, equivariance: ξX → ξP"
     g = _graph(lambda s: {"D": s.d(lambda t: t.X.T @ t.X, {"X": s.P, "P": s.zeros(s.n, s.r, ("n", "r"))})})
     assert render(g, outputs(g)[0][1]) == "d/dt(XᵀX) along (Ẋ, Ṗ) = (P, 0)"
+    tex = render(g, outputs(g)[0][1], tex=True)
+    assert tex.startswith(r"\frac{d}{dt}") and r"\ \text{along}\ " in tex and math_ok(tex)
 
 
 def test_the_diff_is_deterministic():

@@ -657,7 +657,7 @@ class Printer:
             vals = [self.show(k.kids[0], max(1, b[1] // max(1, len(names))))[0] for k in along.kids if k.kind == "named"]
             text = self.show(body, b[0])[0]
             if self.tex:
-                return (r"rac{d}{dt}" + self.paren(text) + r"\ 	ext{along}\ (" + ", ".join(dots) + ") = ("
+                return (r"\frac{d}{dt}" + self.paren(text) + r"\ \text{along}\ (" + ", ".join(dots) + ") = ("
                         + ", ".join(vals) + ")"), SUM
             return f"d/dt{self.paren(text)} along ({', '.join(dots)}) = ({', '.join(vals)})", SUM
         text, p = self.show(body, budget)
