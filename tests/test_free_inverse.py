@@ -270,3 +270,22 @@ def test_a_crafted_inverse_whose_op_reads_y_itself_is_refused():
     forged.output = g.output
     with pytest.raises(TraceRefused, match="other than through its argument"):
         trace(GraphClaim(forged), None, None, STANDARD)
+
+
+def test_a_claims_file_whose_inverse_reaches_the_elements_passes_nowhere(tmp_path):
+    """tests/adversary/inverse_elements.py: the elements by name, and an argument kept by op for inv."""
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parents[1]
+    for method in ("auto", "free"):
+        p = subprocess.run([sys.executable, "-m", "stiefelsym", "verify", "--claims",
+                            str(root / "tests" / "adversary" / "inverse_elements.py"), "--size", "3,2", "--method",
+                            method, "--jobs", "1", "--report-dir", str(tmp_path / method)],
+                           cwd=root, capture_output=True, text=True, timeout=300)
+        lines = [x for x in p.stdout.splitlines() if x.startswith("adv-inverse-")]
+        assert len(lines) == 2, p.stdout + p.stderr
+        assert all((": error" in x) if method == "auto" else (": undecided" in x) for x in lines), p.stdout
+        assert "the names Inverse... are the generic elements" in p.stdout, p.stdout
+        assert "inv(op(x)) reads a generic element of the statement other than through its argument" in p.stdout
