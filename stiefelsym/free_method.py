@@ -385,8 +385,9 @@ def needs_text(claim: Claim, func: Callable, refusal: str, family: SizeFamily | 
     z = next((z for z in sizes if 1 < z.r < z.n), None) or next((z for z in sizes if z.n >= 3), sizes[-1])
     try:
         needs = coordinate_needs(compile_claim(func, z.n, z.r, (cons.name, cons.build)))
-    except Exception:    # noqa: BLE001 - the refusal alone says it
-        needs = []
+    except Exception as exc:    # noqa: BLE001 - refused at a fixed size too: no coordinate would help
+        return (f"the claim is refused with symbolic sizes and at ({z.n},{z.r}) too ({type(exc).__name__}): "
+                f"{refusal.removeprefix('refused: ')}; an error at the fixed sizes")
     what = "; ".join(needs) if needs else "its statement depends on the sizes (a loop or a condition over n, r)"
     return (f"needs coordinates (fixed n, r): {what} (the trace with symbolic sizes stopped at: "
             f"{refusal.removeprefix('refused: ')}); decided by the fixed-size methods")
