@@ -79,12 +79,6 @@ def unit(s, m, k, a, b):
     return s.mat([[s.q(1) if (i, j) == (a, b) else s.q(0) for j in range(k)] for i in range(m)])
 
 
-def sym_unit(s, a, b):
-    """E_ab + E_ba (a != b) or E_aa: a basis of the symmetric r x r matrices."""
-    E = unit(s, s.r, s.r, a, b)
-    return E if a == b else E + E.T
-
-
 def wedge_basis(s, m):
     """The orthonormal basis E_i ∧ E_j (i < j) of so(m) for <,>."""
     return [unit(s, m, m, i, j) - unit(s, m, m, j, i) for i in range(m) for j in range(i + 1, m)]
