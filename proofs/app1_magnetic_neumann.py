@@ -8,7 +8,7 @@ in the n = 3 monopole remark (ym-monopole), and the condition η_so(r) = 0 (for 
 reduction of the symmetric CPB body to V(n, r) (cpb-reduction-stiefel)."""
 from __future__ import annotations
 
-from stiefelsym import Rank, admissible, claim, comm
+from stiefelsym import Inverse, admissible, claim, comm
 from stiefelsym import twisted
 
 from .sec5_neumann import H_neumann_euclidean, H_neumann_normal, cond_XP
@@ -97,19 +97,39 @@ def tangent_vector(s):
     return {"X": s.xi @ s.X, "P": s.xi @ s.P + s.X @ s.eta + (s.In - s.X @ s.X.T) @ Z}
 
 
+def twisted_constraint_brackets(s, S, T):
+    """{F_i, F_j}_ε as an operator on Sym(r) × Sym(r): (S, T) ↦ dF(X^ε_h) for h = tr(S F_1) + tr(T F_2) and
+    X^ε_h its Hamiltonian vector field for ω₀ + ε de₁∧de₂ on ℝ^{4n}, Ẋ = h_P, Ṗ = −h_X − ε h_P F (as
+    twisted.ambient_flow): the matrix {F_i, F_j}_ε applied to the coefficients of h."""
+    def h(t):
+        F1, F2 = cond_XP(t)
+        return t.tr(S @ F1) + t.tr(T @ F2)
+    canonical = s.canonical_flow(h)    # (h_P, −h_X)
+    F = twisted.magnetic_matrix(s)
+    return tuple(s.d(cond_XP, {"X": canonical.Xdot, "P": canonical.Pdot - s.eps * (canonical.Xdot @ F)}))
+
+
+def twisted_constraint_brackets_inverse(s, a, b):
+    """Its inverse on T*V_{n,2}: T = a/4, S = (aK − Ka − b)/4 − ε(aF − Fa)/8 with K = XᵀP, F = E₁∧E₂ (the
+    operator is (4T, 4(TK − KT) − 4S − 2ε(TF − FT)) there)."""
+    K = s.X.T @ s.P
+    F = twisted.magnetic_matrix(s)
+    return (a @ K - K @ a - b) / 4 - s.eps * (a @ F - F @ a) / 8, a / 4
+
+
 @claim("twisted-form", paper=("twisted",), kind="pb", sizes=ON_V_N2,
-       equivariance="the rank concerns the O(n)-invariant matrix {F_i, F_j}_eps of the O(n)-invariant constraints for the O(n)-invariant form; no coordinate of R^n is read",
+       equivariance="the operator {F_i, F_j}_eps on Sym(r) x Sym(r) of the O(n)-invariant constraints for the O(n)-invariant form, and its inverse, are matrix expressions in X, P; no coordinate of R^n is read",
        statement=r"\omega_\epsilon=\omega+\epsilon\,\pi^*\omega_{mag},\ \omega_{mag}=de_1\wedge de_2:\quad "
                  r"\det\big(\{F_i,F_j\}_\epsilon\big)\ne0,\quad X_H\in T(T^*V_{n,2}),\quad "
                  r"\omega_\epsilon(X_H,v)=-dH(v)\ \ \forall v\in T(T^*V_{n,2})")
 def twisted_form_is_symplectic(s):
     """The twisted form ω_ε = ω + ε π*ω_mag is symplectic on T*V_{n,2}: ω₀ + ε de₁∧de₂ is a constant (closed, nondegenerate) form on ℝ^{4n}, the constraints (cond_XP) stay second class for its bracket, and the Dirac flow of every H (a linear H with generic differential suffices) is tangent to T*V and satisfies ω_ε(X_H, v) = −dH(v) for every v tangent to T*V, so the twisted Dirac bracket is the Poisson bracket of ω_ε."""
-    r = s.r
     XH = twisted.flow(s, H_linear)
     v = tangent_vector(s)
     return {
-        "{F_i, F_j}_eps invertible": Rank(s.mat(twisted.constraint_bracket_matrix(s)), r * (r + 1), generic=False,
-                                          meaning="T*V is a symplectic submanifold for the twisted ambient form"),
+        "{F_i, F_j}_eps invertible": Inverse(twisted_constraint_brackets, twisted_constraint_brackets_inverse,
+                                             on=("Sym(r)", "Sym(r)"),
+                                             meaning="T*V is a symplectic submanifold for the twisted ambient form"),
         "X_H tangent to T*V": s.d(cond_XP, XH),
         "v tangent to T*V": s.d(cond_XP, v),
         "omega_eps(X_H, v) + dH(v)": twisted.form(s, XH.tangent(), v) + s.d(H_linear, v),

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from itertools import combinations
 
-from stiefelsym import Count, Rank, admissible, claim, comm
+from stiefelsym import Count, Inverse, Rank, admissible, claim, comm
 
 SECTION = "2"
 
@@ -79,12 +79,6 @@ def unit(s, m, k, a, b):
     return s.mat([[s.q(1) if (i, j) == (a, b) else s.q(0) for j in range(k)] for i in range(m)])
 
 
-def sym_unit(s, a, b):
-    """E_ab + E_ba (a != b) or E_aa: a basis of the symmetric r x r matrices."""
-    E = unit(s, s.r, s.r, a, b)
-    return E if a == b else E + E.T
-
-
 def wedge_basis(s, m):
     """The orthonormal basis E_i ∧ E_j (i < j) of so(m) for <,>."""
     return [unit(s, m, m, i, j) - unit(s, m, m, j, i) for i in range(m) for j in range(i + 1, m)]
@@ -148,37 +142,50 @@ def constraints_are_independent(s):
 
 # -- the Dirac bracket and the Lagrange-multiplier form -----------------------------
 
+def constraint_brackets(s, S, T):
+    """{F_i, F_j}_0 as an operator on Sym(r) × Sym(r): (S, T) ↦ ({F_1, h}_0, {F_2, h}_0) = dF(X⁰_h) for
+    h = tr(S F_1) + tr(T F_2), the matrix {F_i, F_j}_0 applied to the coefficients of h."""
+    def h(t):
+        F1, F2 = cond_XP(t)
+        return t.tr(S @ F1) + t.tr(T @ F2)
+    return tuple(s.d(cond_XP, s.canonical_flow(h)))
+
+
+def constraint_brackets_inverse(s, a, b):
+    """Its inverse on T*V: T = a/4, S = (aK − Ka − b)/4 with K = XᵀP (the operator is (4T, 4(TK − KT) − 4S) there)."""
+    K = s.X.T @ s.P
+    return (a @ K - K @ a - b) / 4, a / 4
+
+
+def multiplier_system(s, Lam, Pi):
+    """(Λ, Π) ↦ the derivative of the constraints (F_1, F_2) along the multiplier directions
+    (δX, δP) = (−XΠ, XΛ + PΠ) of (dot_XP): the linear system the multipliers solve."""
+    return tuple(s.d(cond_XP, {"X": -(s.X @ Pi), "P": s.X @ Lam + s.P @ Pi}))
+
+
+def multiplier_system_inverse(s, a, b):
+    """Its inverse on T*V: Π = −a/2, Λ = (b + Ka − aK)/2 with K = XᵀP (the system is (−2Π, 2Λ + 2(KΠ − ΠK)) there)."""
+    K = s.X.T @ s.P
+    return (b + K @ a - a @ K) / 2, -a / 2
+
+
 @claim("dirac-bracket-multipliers", paper=("Dirac_bracket", "dot_XP"), kind="pb",
-       equivariance="the ranks concern the O(n)-invariant matrices {F_i, F_j}_0 and the multiplier system, written in a fixed basis of the symmetric r x r matrices (no coordinate of R^n)",
+       equivariance="the operators {F_i, F_j}_0 and the multiplier system act on Sym(r) x Sym(r) (O(n)-invariant); "
+                    "their inverses are matrix expressions in X, P; the flows are covariant",
        statement=r"\det\big(\{F_i,F_j\}_0\big)\ne0 \text{ on } T^*V_{n,r};\quad \dot f=\{f,H\}\iff "
                  r"\dot X=\tfrac{\partial H}{\partial P}-X\Pi,\ \dot P=-\tfrac{\partial H}{\partial X}+X\Lambda+P\Pi,"
                  r"\ \Lambda^T=\Lambda,\ \Pi^T=\Pi \text{ unique}")
 def dirac_flow_is_the_multiplier_form(s):
     """The matrix {F_i, F_j}_0 is invertible on T*V, and the Dirac flow of any H is (dot_XP) with unique symmetric multipliers Λ, Π (both sides depend linearly on dH at the point, so H = tr(UᵀX) + tr(VᵀP) with generic U, V suffices)."""
-    n, r = s.n, s.r
     dirac = s.dirac_flow(H_linear)
     mult = s.multiplier_flow(H_linear)
     Lam, Pi = mult["Lambda"], mult["Pi"]
     HX, HP = s.gradient(H_linear)
-    zero = s.zeros(n, r, ("n", "r"))
-    # the linear system for (Λ, Π): derivatives of the constraints along the multiplier directions
-    columns = []
-    for a in range(r):
-        for b in range(a, r):
-            E = sym_unit(s, a, b)
-            dF = s.d(s.constraints.build, {"X": zero, "P": s.X @ E})
-            columns.append(upper(dF[0]) + upper(dF[1]))
-    for a in range(r):
-        for b in range(a, r):
-            E = sym_unit(s, a, b)
-            dF = s.d(s.constraints.build, {"X": -(s.X @ E), "P": s.P @ E})
-            columns.append(upper(dF[0]) + upper(dF[1]))
-    system = s.mat([list(row) for row in zip(*columns)])
     return {
-        "{F_i, F_j}_0 invertible": Rank(s.mat(s.constraint_bracket_matrix()), r * (r + 1), generic=False,
-                                        meaning="the Dirac bracket is defined on T*V"),
-        "Lambda, Pi unique": Rank(system, r * (r + 1), generic=False,
-                                  meaning="the multipliers are determined by the constraints"),
+        "{F_i, F_j}_0 invertible": Inverse(constraint_brackets, constraint_brackets_inverse, on=("Sym(r)", "Sym(r)"),
+                                           meaning="the Dirac bracket is defined on T*V"),
+        "Lambda, Pi unique": Inverse(multiplier_system, multiplier_system_inverse, on=("Sym(r)", "Sym(r)"),
+                                     meaning="the multipliers are determined by the constraints"),
         "dX/dt": dirac.Xdot - (HP - s.X @ Pi),
         "dP/dt": dirac.Pdot - (-HX + s.X @ Lam + s.P @ Pi),
         "constraints kept by the Dirac flow": s.d(s.constraints.build, dirac),

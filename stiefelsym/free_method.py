@@ -29,6 +29,7 @@ from typing import Any, Callable
 
 from .certificate_check import CASES, check_certificate
 from .claims import Claim, Count, Rank, Size, SizeSpec
+from .ir.statements import InverseIdentities
 from .methods import _base_result, division_probe, _entries, _short, call_claim
 from .results import CheckOutcome, Result
 from .free import FreeScene, FreeSolveError, NeedsCoordinates, RewritingError
@@ -128,8 +129,9 @@ def run_free_on(claim: Claim, func: Callable, family: SizeFamily | None, alone: 
                     proved_entries.append((pos, red, len(derivations) if red.rules else None))
                 if red.rules or not red.is_zero:
                     derivations.append(f"\\paragraph{{{entry_title(pos)}}}\n{red.latex()}")
+            said = value.describe() if isinstance(value, InverseIdentities) else ""
             outcomes.append(CheckOutcome(name, "zero" if not bad else "open",
-                                         "" if not bad else f"{bad} entries with nonzero normal form"))
+                                         said if not bad else f"{bad} entries with nonzero normal form"))
     except RewritingError as exc:
         return undecided(f"rewriting did not terminate: {exc}")
     res.checks = outcomes
@@ -383,8 +385,9 @@ def needs_text(claim: Claim, func: Callable, refusal: str, family: SizeFamily | 
     z = next((z for z in sizes if 1 < z.r < z.n), None) or next((z for z in sizes if z.n >= 3), sizes[-1])
     try:
         needs = coordinate_needs(compile_claim(func, z.n, z.r, (cons.name, cons.build)))
-    except Exception:    # noqa: BLE001 - the refusal alone says it
-        needs = []
+    except Exception as exc:    # noqa: BLE001 - refused at a fixed size too: no coordinate would help
+        return (f"the claim is refused with symbolic sizes and at ({z.n},{z.r}) too ({type(exc).__name__}): "
+                f"{refusal.removeprefix('refused: ')}; an error at the fixed sizes")
     what = "; ".join(needs) if needs else "its statement depends on the sizes (a loop or a condition over n, r)"
     return (f"needs coordinates (fixed n, r): {what} (the trace with symbolic sizes stopped at: "
             f"{refusal.removeprefix('refused: ')}); decided by the fixed-size methods")

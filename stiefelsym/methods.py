@@ -29,6 +29,7 @@ import numpy as np
 
 from ._lazy import lazy
 from .claims import Claim, Count, Rank, deadline
+from .ir.statements import InverseIdentities
 from . import costmodel
 from .costmodel import BudgetError as BudgetError  # the methods raise it (re-exported)
 from .ir import compile_claim
@@ -264,15 +265,18 @@ def _evaluate(checks: dict[str, Any], field: Field, rank_fn: Callable[[Rank], tu
             elif status == "every-point":
                 every_point.append(name)
             continue
+        # an Inverse statement is its identities (residuals); its outcome says what they prove
+        said = value.describe() if isinstance(value, InverseIdentities) else ""
         if _natively_zero(value):
-            outcomes.append(CheckOutcome(name, "zero"))
+            outcomes.append(CheckOutcome(name, "zero", said))
             continue
         bad = [(pos, x) for pos, x in _entries(value, name) if not field.is_zero(x)]
         if bad:
             nonzero.extend((name, pos, x) for pos, x in bad)
-            outcomes.append(CheckOutcome(name, "nonzero", f"{len(bad)} nonzero entries"))
+            outcomes.append(CheckOutcome(name, "nonzero", f"{len(bad)} nonzero entries"
+                                         + (" (op is not inverted by inv)" if said else "")))
         else:
-            outcomes.append(CheckOutcome(name, "zero"))
+            outcomes.append(CheckOutcome(name, "zero", said))
     return Evaluation(outcomes, nonzero, rank_problems, count_problems, rank_certain, every_point)
 
 

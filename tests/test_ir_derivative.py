@@ -296,7 +296,8 @@ def test_coverage_of_the_catalog(catalog):
 
 def test_coverage_of_the_catalog_flows_and_brackets(catalog):
     """At (4,2) on a point scene: 46 of the 52 Dirac flows, 122 of the 143 Dirac brackets, 3 of the 4
-    multiplier flows and both canonical flows are graph nodes.  The rest stay with the scene: the
+    multiplier flows and all 6 canonical flows (2 of them the Hamiltonian vector fields of the constraints
+    in the Inverse statements of {F_i, F_j}_0 and {F_i, F_j}_eps, each used twice) are graph nodes.  The rest stay with the scene: the
     metric realization's flow (its multipliers solve Lyapunov equations), Hamiltonians of entries,
     blocks or given matrices (their gradients need coordinates), and of a symmetric operator or a
     list (the reverse sweep has no rule for them)."""
@@ -312,7 +313,7 @@ def test_coverage_of_the_catalog_flows_and_brackets(catalog):
                 if why is not None:
                     reasons.add((c.realization, why))
     assert counts == {"dirac_flow": [46, 52], "bracket": [122, 143], "multiplier_flow": [3, 4],
-                      "canonical_flow": [2, 2]}
+                      "canonical_flow": [6, 6]}
     assert {why for real, why in reasons if real == "metric"} == {
         "the scene's own multipliers here (another realization, a chart or a field without their closed forms, "
         "or the free algebra's solve)"}

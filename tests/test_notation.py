@@ -156,9 +156,9 @@ def test_an_ill_typed_mutant_has_no_notation_and_dead_code_no_change():
                     sizes=admissible(3, n_min=3, r_min=2, r_max=2))
     assert changes_text(graph_change(printed, _with_other_dead_code, Size(3, 2))) == "no change in the graph"
     # a changed printed number: the statement it is part of
-    c = load_catalog().get("dirac-bracket-multipliers")
+    c = load_catalog().get("constraints-independent")
     rank = next(m for m in mutants(c) if "change the coefficient 1 to 2 in `r + 1`" in m.description)
-    assert changes_text(notation(c, rank, Size(3, 2))) == "in {F_i, F_j}_0 invertible: rank(…) = 6 everywhere → rank(…) = 8 everywhere"
+    assert changes_text(notation(c, rank, Size(3, 2))) == "in rank d(F, G): rank(…) = 6 everywhere → rank(…) = 8 everywhere"
 
 
 def _with_dead_code(s):
@@ -172,12 +172,13 @@ def _with_other_dead_code(s):
 
 
 def test_a_directional_derivative_names_its_tangent_vector():
-    c = load_catalog().get("dirac-bracket-multipliers")
-    m = next(m for m in mutants(c) if "line 169: replace `s.X` by `s.P` in `s.X @ E`" in m.description)
-    assert changes_text(notation(c, m, Size(3, 2))) == \
-        "in Lambda, Pi unique, blocks (1,1), (1,2), (1,3) and 15 more: X → P"
+    c = load_catalog().get("left-momentum-map")
+    m = next(m for m in mutants(c) if "replace `s.X` by `s.P` in `s.xi @ s.X`" in m.description)
+    assert changes_text(notation(c, m, Size(3, 2))) == "in dX/dt = xi X, equivariance: ξX → ξP"
     g = _graph(lambda s: {"D": s.d(lambda t: t.X.T @ t.X, {"X": s.P, "P": s.zeros(s.n, s.r, ("n", "r"))})})
     assert render(g, outputs(g)[0][1]) == "d/dt(XᵀX) along (Ẋ, Ṗ) = (P, 0)"
+    tex = render(g, outputs(g)[0][1], tex=True)
+    assert tex.startswith(r"\frac{d}{dt}") and r"\ \text{along}\ " in tex and math_ok(tex)
 
 
 def test_the_diff_is_deterministic():

@@ -367,6 +367,9 @@ class Reader:
             return _mk("tuple", (), [_mk("named", (k,), (x(v),)) for k, v in a])
         if op == "rank":       # rank(M) = k (generically, or at every point)
             return _mk("equals", ("" if a[2] else "everywhere",), (func("rank", [x(a[0])]), x(a[1])))
+        if op == "inverse":    # op(inv(y)) = y and inv(op(x)) = x for generic x, y of the spaces, everywhere
+            return _mk("tuple", (), [_mk("equals", ("everywhere",), (x(u), x(v)))
+                                     for us, vs in ((a[2], a[0]), (a[5], a[3])) for u, v in zip(us, vs)])
         if op == "count":      # a number the claim computed = the printed number
             return _mk("equals", ("",), (x(a[0]), x(a[1])))
         if op == "const":
@@ -654,7 +657,7 @@ class Printer:
             vals = [self.show(k.kids[0], max(1, b[1] // max(1, len(names))))[0] for k in along.kids if k.kind == "named"]
             text = self.show(body, b[0])[0]
             if self.tex:
-                return (r"rac{d}{dt}" + self.paren(text) + r"\ 	ext{along}\ (" + ", ".join(dots) + ") = ("
+                return (r"\frac{d}{dt}" + self.paren(text) + r"\ \text{along}\ (" + ", ".join(dots) + ") = ("
                         + ", ".join(vals) + ")"), SUM
             return f"d/dt{self.paren(text)} along ({', '.join(dots)}) = ({', '.join(vals)})", SUM
         text, p = self.show(body, budget)

@@ -27,12 +27,12 @@ from fractions import Fraction
 from typing import Any, Callable
 
 from .graph import Graph, Named, Ref, Size
-from .statements import Count, Rank
-from .trace import TraceRefused, _NAMED, block
+from .statements import Count, Inverse, Rank
+from .trace import INVERSE_ELEMENTS, TraceRefused, _NAMED, block
 
 #: the ops a graph may hold (:mod:`.graph`)
 OPS = frozenset("""scene param attr call prim apply add sub neg matmul mul div pow T inv trace entry item block
-    list tuple dict kw fn const rank count""".split())
+    list tuple dict kw fn const rank count inverse""".split())
 
 
 class ReplayError(TraceRefused):
@@ -200,6 +200,17 @@ class _Replay:
         kw = a[3] if len(a) > 3 else ()
         if type(args) is not tuple or type(kw) is not tuple:
             raise ReplayError("refused: a call whose arguments are not a tuple")
+        if name == "generic" and args and type(args[0]) is str and args[0].startswith(INVERSE_ELEMENTS):
+            # an element of an Inverse statement, made again before the statement (which checks that its
+            # op and inv read the elements through their arguments only)
+            t = getattr(scene, "_t", None)
+            if t is None:
+                raise ReplayError("refused: a graph replayed on a scene that is not traced")
+            t._elements = True
+            try:
+                return scene.generic(*args)
+            finally:
+                t._elements = False
         return getattr(scene, name)(*[self.arg(x, frame) for x in args],
                                     **{k: self.arg(v, frame) for k, v in kw})
 
@@ -268,6 +279,29 @@ class _Replay:
 
     def _count(self, a, frame):
         return Count(*a)
+
+    def _inverse(self, a, frame):
+        """The statement again, with op and inv the graph's values: op maps inv(y) (and x) to the graph's
+        op(inv(y)) (op(x)), inv maps y (and op(x)) to inv(y) (inv(op(x))), the arguments known by their
+        nodes (the tracer makes y and x again, the same nodes)."""
+        ys, inv_y, op_inv_y, xs, op_x, inv_op_x = (self.arg(p, frame) for p in a[:6])
+        if type(a[7]) is not tuple or type(a[8]) is not str:
+            raise ReplayError("refused: an inverse statement whose spaces or meaning are not literals")
+
+        def table(pairs: list) -> Callable:
+            def f(s: Any, *args: Any) -> Any:
+                key = tuple(getattr(x, "_r", None) for x in args)
+                for arg, value in pairs:
+                    if key == tuple(getattr(x, "_r", None) for x in arg):
+                        return value
+                raise ReplayError("refused: an inverse statement applied to other arguments than the graph's")
+            return f
+        statement = Inverse(table([(inv_y, op_inv_y), (xs, op_x)]), table([(ys, inv_y), (op_x, inv_op_x)]), a[7], a[8])
+        t = getattr(self.scene, "_t", None)
+        if t is None:
+            raise ReplayError("refused: a graph replayed on a scene that is not traced")
+        t.inverse(statement)    # its node now, in the graph's order (the claim's dict finds it made)
+        return statement
 
     def _fn(self, a, frame):
         k, arity, body = a

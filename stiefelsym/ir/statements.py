@@ -53,3 +53,55 @@ class Count:
                             "equals anything is refused)")
         if type(self.meaning) is not str:
             raise TypeError("Count: the meaning is a string")
+
+
+#: the spaces an :class:`Inverse` may act on: a generic element of each, as the methods build it
+#: (a generic matrix G of its shape, symmetrized or skewed: every symmetric y is G + Gᵀ with G = y/2)
+DOMAINS: dict[str, tuple[str, str, str]] = {
+    "Sym(r)": ("r", "r", "sym"), "Sym(n)": ("n", "n", "sym"),
+    "so(r)": ("r", "r", "skew"), "so(n)": ("n", "n", "skew"),
+    "R^{n×r}": ("n", "r", "general"), "R^{r×n}": ("r", "n", "general"),
+    "R^{r×r}": ("r", "r", "general"), "R^{n×n}": ("n", "n", "general"),
+}
+
+
+@dataclass(frozen=True)
+class Inverse:
+    """The map ``op`` on the product of the spaces ``on`` is invertible at every point of T*V, with
+    inverse ``inv``.
+
+    ``op(s, *x)`` and ``inv(s, *y)`` are functions of the scene and of one matrix per factor of
+    ``on`` (names of :data:`DOMAINS`: "Sym(r)", "so(n)", "R^{n×r}", ...), returning one matrix per
+    factor (a matrix, or a tuple of them).  The statement is decided as identities in generic
+    elements x, y of the product, at every point of T*V: op(inv(y)) = y, inv(op(x)) = x, and
+    op(x), inv(y) lie in the product (symmetric, skew) — so op is a bijection of the product onto
+    itself at every point, with inverse inv (a proof for every point, where a rank is one point's)."""
+
+    op: Any
+    inv: Any
+    on: Any
+    meaning: str = ""
+
+    def __post_init__(self) -> None:
+        on = (self.on,) if type(self.on) is str else self.on
+        if type(on) not in (tuple, list) or not on or any(type(d) is not str or d not in DOMAINS for d in on):
+            raise TypeError(f"Inverse: on is a space or a tuple of spaces among {', '.join(DOMAINS)}")
+        object.__setattr__(self, "on", tuple(on))
+        if not callable(self.op) or not callable(self.inv):
+            raise TypeError("Inverse: op and inv are functions of the scene and of one matrix per space")
+        if type(self.meaning) is not str:
+            raise TypeError("Inverse: the meaning is a string")
+
+
+class InverseIdentities(list):
+    """An :class:`Inverse` statement as a method evaluates it: its residuals (op(inv(y)) − y,
+    inv(op(x)) − x and the membership residuals), which must all vanish, with the spaces."""
+
+    def __init__(self, residuals: Any, on: tuple, meaning: str) -> None:
+        super().__init__(residuals)
+        self.on, self.meaning = tuple(on), meaning
+
+    def describe(self) -> str:
+        space = " × ".join(self.on)
+        return (f"{self.meaning + ': ' if self.meaning else ''}op(inv(y)) = y and inv(op(x)) = x for generic "
+                f"x, y in {space}, at every point (op invertible on {space})")

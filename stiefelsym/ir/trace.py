@@ -26,7 +26,7 @@ from typing import Any, Callable
 from .seal import refuse_registration
 from .families import COMPARISONS, SYMBOLS, SizeFamily
 from .graph import _REFS, Graph, Named, Ref, Size, _ref
-from .statements import Count, Rank
+from .statements import DOMAINS, Count, Inverse, Rank
 
 
 class TraceRefused(TypeError):
@@ -639,10 +639,16 @@ def _m_scalar_matrix(s, c, m, tag="?"):
     return _call(s, "scalar_matrix", (t.arg(c), m, _tags(t, tag, 1)[0]), MAT, (m, m))
 
 
+#: the names of the generic elements an Inverse statement is decided on (no claim code may name them)
+INVERSE_ELEMENTS = "Inverse"
+
+
 def _m_generic(s, name, m, k):
     t = s._t
     if not all(type(x) is str for x in (name, m, k)) or not {m, k} <= {"n", "r"}:
         return t.refuse("s.generic(name, m, k): a name and the spaces 'n' or 'r'")
+    if name.startswith(INVERSE_ELEMENTS) and not t._elements:
+        return t.refuse(f"the names {INVERSE_ELEMENTS}... are the generic elements of an Inverse statement")
     return _call(s, "generic", (name, m, k), MAT, t.shape_of((m, k)))
 
 
@@ -835,6 +841,7 @@ class Trace:
         self._like: dict = {}
         self.constraints = constraints
         self._functions: dict[int, tuple[Any, Ref, Any, Any]] = {}
+        self._elements = False     # the generic elements of an Inverse statement are being made
 
     # -- nodes ----------------------------------------------------------------------------------
     def new(self, op: str, args: tuple, kind: str, shape: tuple = (None, None)) -> Tracer:
@@ -986,6 +993,8 @@ class Trace:
             return self.g.add("rank", (m._r, v.expected, v.generic, v.meaning))
         if tv is Count:
             return self.g.add("count", (v.value, v.expected, v.meaning))
+        if tv is Inverse:
+            return self.refuse("an Inverse statement is a check of the claim (a value of the dict it returns)")
         if tv is int or tv is Fraction:
             return self.g.add("const", (v,))
         return self.arg(v)
@@ -1000,6 +1009,77 @@ class Trace:
         if type(out) is dict:
             return {k: self.mirror(x, self.g.add("item", (node, k))) for k, x in out.items()}
         return Tracer(self, node, ANY)
+
+    def inverse(self, v: Inverse) -> Ref:
+        """The node of an Inverse statement: op and inv applied, in the claim's scene, to generic
+        elements y and x of the product of spaces (fresh generic letters G, symmetrized or skewed), and
+        the residuals op(inv(y)) − y, inv(op(x)) − x and those that say op(x), inv(y) are in the product."""
+        scene = TraceScene(self, self.g.add("scene", (0,)))
+        on = v.on
+
+        def elements(letter: str) -> tuple:
+            self._elements = True
+            try:
+                out = []
+                for i, d in enumerate(on):
+                    m, k, kind = DOMAINS[d]
+                    G = scene.generic(f"{INVERSE_ELEMENTS}{letter}{i + 1}", m, k)
+                    out.append(G + G.T if kind == "sym" else G - G.T if kind == "skew" else G)
+                return tuple(out)
+            finally:
+                self._elements = False
+
+        def image(f: Callable, args: tuple, what: str) -> tuple:
+            out = f(scene, *args)
+            out = (out,) if type(out) is Tracer else out
+            # a matrix of the scene (or a value an engine step made, typed when it is evaluated)
+            if type(out) not in (tuple, list) or len(out) != len(on) or any(
+                    type(x) is not Tracer or x._kind == SCALAR for x in out):
+                return self.refuse(f"Inverse: {what} returns one matrix per space of {' × '.join(on)}")
+            return tuple(out)
+
+        def member(x: Tracer, d: str) -> Tracer | None:
+            kind = DOMAINS[d][2]
+            return x - x.T if kind == "sym" else x + x.T if kind == "skew" else None
+
+        ys = elements("Y")
+        inv_y = image(v.inv, ys, "inv")
+        op_inv_y = image(v.op, inv_y, "op")
+        xs = elements("X")
+        op_x = image(v.op, xs, "op")
+        inv_op_x = image(v.inv, op_x, "inv")
+        # op and inv see the elements through their arguments only: op(inv(y)) reads y through inv(y),
+        # inv(op(x)) reads x through op(x), inv(y) reads no x and op(x) no y (a function that read an
+        # element itself would make the identities say nothing: op = const y, inv = const x)
+        for out, stop, what in ((inv_y, ys, "inv(y)"), (op_inv_y, inv_y, "op(inv(y))"), (op_x, xs, "op(x)"),
+                                (inv_op_x, op_x, "inv(op(x))")):
+            if self._reads_elements(out, stop):
+                return self.refuse(f"Inverse: {what} reads a generic element of the statement other than "
+                                   "through its argument")
+        residuals = [a - b for a, b in zip(op_inv_y, ys)] + [a - b for a, b in zip(inv_op_x, xs)]
+        residuals += [m for m in (member(x, d) for x, d in zip(inv_y + op_x, on + on)) if m is not None]
+        # the parts as tuples of references (no container node: the statement's node is the first node
+        # made after its subgraph, as when a graph is replayed)
+        parts = tuple(tuple(x._r for x in p) for p in (ys, inv_y, op_inv_y, xs, op_x, inv_op_x, residuals))
+        return self.g.add("inverse", parts + (on, v.meaning))
+
+    def _reads_elements(self, outs: tuple, args: tuple) -> bool:
+        """Whether a node of ``outs`` reads a generic element of an Inverse statement other than through
+        the nodes ``args`` (the function's arguments)."""
+        g, stop = self.g, {a._r.i for a in args}
+        seen: set[int] = set()
+        stack = [x._r.i for x in outs]
+        while stack:
+            i = stack.pop()
+            if i in seen or i in stop:
+                continue
+            seen.add(i)
+            a = g.args[i]
+            if (g.ops[i] == "call" and a[1] == "generic" and type(a[2]) is tuple and type(a[2][0]) is str
+                    and a[2][0].startswith(INVERSE_ELEMENTS)):
+                return True
+            stack.extend(g.refs(i))
+        return False
 
     # -- engine primitives --------------------------------------------------------------------------
     def prim(self, qual: str, args: tuple, kw: dict, returns: Any = None, shapes: dict | None = None) -> Any:
@@ -1044,7 +1124,8 @@ def trace(func: Callable, n: int | None, r: int | None, constraints: tuple[str, 
             t.refuse("a claim returns a non-empty dict of named checks")
         if any(type(k) is not str for k in out):
             t.refuse("check names are strings")
-        t.g.output = t.g.add("dict", (tuple(out), tuple(t.structure(v) for v in out.values())))
+        t.g.output = t.g.add("dict", (tuple(out), tuple(t.inverse(v) if type(v) is Inverse else t.structure(v)
+                                                        for v in out.values())))
     finally:
         _ACTIVE.pop()
     g = t.g.sealed()
