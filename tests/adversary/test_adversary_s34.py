@@ -1,0 +1,226 @@
+"""Fourth round: the dimension-free certificates bound to their claims in `stiefelsym report`, the metric
+realization's multipliers, claims stated at a union of one-r families in a user's file, rank statements next to
+residuals under the float confirmation, and sizes written as ints in a graph of symbolic sizes.  As before: every
+run is the CLI in a fresh process, each test asserts the CORRECT outcome, and a route open today is a strict
+xfail."""
+import json
+import re
+
+import pytest
+
+from adversary_cli import HERE, PASSING, cli
+
+#: a verdict line with its method: "<claim> (n,r) <method>: <verdict>" or "<claim> all n, r free: <verdict>"
+METHOD_LINE = re.compile(r"^(\S+) (?:\(\d+,\d+\)|all n, r) (\w+): (\w+)")
+FIXED = ("exact", "modular", "rational", "float", "ball", "auto")
+
+
+def parse_all(stdout):
+    """{(claim, method): verdict} of the verdict lines of a run's standard output."""
+    return {(m.group(1), m.group(2)): m.group(3) for m in map(METHOD_LINE.match, stdout.splitlines()) if m}
+
+
+def run_fixed(claims_file, size="3,2", ids=()):
+    """{(claim, method): verdict} of one run of every fixed-size method at one size."""
+    args = ["verify", *ids, "--claims", str(HERE / claims_file), "--size", size, "--jobs", "1"]
+    for m in FIXED:
+        args += ["--method", m]
+    return parse_all(cli(*args).stdout)
+
+
+def run_free(claims_file, ids=()):
+    return {c: v for (c, _m), v in parse_all(cli("verify", *ids, "--claims", str(HERE / claims_file), "--method",
+                                                 "free", "--jobs", "1").stdout).items()}
+
+
+def of(got, cid):
+    return {m: v for (c, m), v in got.items() if c == cid}
+
+
+def never_passes(got, cid):
+    cells = of(got, cid)
+    assert cells and not set(cells.values()) & set(PASSING), (cid, cells)
+
+
+def never_fails(got, cid):
+    cells = of(got, cid)
+    assert cells and "fails" not in cells.values(), (cid, cells)
+
+
+# -- AJ. a dimension-free certificate moved to another claim ---------------------------------------------------
+
+GRAFT = "s34_grafted_certificate.py"
+GRAFTS = [("adv-s34-graft-true", "adv-s34-graft-false"), ("adv-s34-graft-true-metric", "adv-s34-graft-false-metric"),
+          ("adv-s34-graft-true", "adv-s34-graft-false-metric")]
+
+
+@pytest.fixture(scope="module")
+def graft_run(tmp_path_factory):
+    out = tmp_path_factory.mktemp("graft") / "run"
+    run = cli("verify", "--claims", str(HERE / GRAFT), "--method", "free", "--jobs", "1", "--report-dir", str(out))
+    got = {c: v for (c, _m), v in parse_all(run.stdout).items()}
+    assert got == {"adv-s34-graft-true": "proved", "adv-s34-graft-false": "undecided",
+                   "adv-s34-graft-true-metric": "proved", "adv-s34-graft-false-metric": "undecided"}, got
+    return out / "results.json"
+
+
+def _graft(results, donor, target, path):
+    payload = json.loads(results.read_text())
+    rs = {r["claim"]: r for r in payload["results"]}
+    for k in ("verdict", "certificate", "certificate_data", "reductions", "derivation", "checks", "residual",
+              "message"):
+        rs[target][k] = rs[donor].get(k)
+    path.write_text(json.dumps(payload))
+    return path
+
+
+@pytest.mark.parametrize("donor,target", GRAFTS)
+def test_report_refuses_a_certificate_moved_to_another_claim(graft_run, tmp_path, donor, target):
+    """The checker accepts the moved certificate (it expands to its own residual); `report` rendered the false
+    claim as proved for every n and r and counted it among the statements that hold.  Closed: `report`
+    re-derives every proof for all n, r on its registered claim and compares certificates, as `check` does."""
+    forged = _graft(graft_run, donor, target, tmp_path / "forged.json")
+    out = cli("report", "--results", str(forged), "--report-dir", str(tmp_path / "rep"))
+    assert out.returncode == 2 and "certificate is not the one the claim's graph gives" in out.stderr, \
+        (out.returncode, out.stdout[-800:], out.stderr[-800:])
+    assert not (tmp_path / "rep" / "verification.md").exists()
+
+
+def test_the_honest_results_are_rendered(graft_run, tmp_path):
+    """The control: the run's own results file is rendered (the re-derived certificates are the recorded ones)."""
+    out = cli("report", "--results", str(graft_run), "--report-dir", str(tmp_path / "rep"))
+    assert out.returncode == 0, out.stderr[-800:]
+    assert "adv-s34-graft-true" in (tmp_path / "rep" / "verification.md").read_text()
+
+
+@pytest.mark.slow
+def test_check_rejects_the_moved_certificate(graft_run, tmp_path):
+    forged = _graft(graft_run, *GRAFTS[0], tmp_path / "forged.json")
+    out = cli("check", str(forged))
+    assert out.returncode == 1 and "REJECTED adv-s34-graft-false" in out.stdout, (out.returncode, out.stdout)
+
+
+def test_the_checker_alone_does_not_bind_a_certificate_to_its_claim(graft_run, tmp_path):
+    """What the route rests on (and why `report` and `check` re-derive): the independent checker says accepted."""
+    forged = _graft(graft_run, *GRAFTS[0], tmp_path / "forged.json")
+    import subprocess
+    import sys
+    out = subprocess.run([sys.executable, "-m", "stiefelsym.certificate_check", str(forged)], capture_output=True,
+                         text=True, timeout=120)
+    assert "adv-s34-graft-false: accepted" in out.stdout, out.stdout
+
+
+# -- AK. the multipliers of the metric realization --------------------------------------------------------------
+
+METRIC = "s34_metric_multipliers.py"
+METRIC_FALSE = ("adv-s34-metric-pi-zero", "adv-s34-metric-trace-lambda", "adv-s34-metric-lambda-square")
+METRIC_TRUE = ("adv-s34-metric-two-lambdas", "adv-s34-metric-relation")
+
+
+@pytest.fixture(scope="module")
+def metric_runs():
+    return run_fixed(METRIC), run_free(METRIC)
+
+
+@pytest.mark.parametrize("cid", METRIC_FALSE)
+def test_false_statements_about_the_metric_multipliers_pass_under_no_method(metric_runs, cid):
+    fixed, free = metric_runs
+    never_passes(fixed, cid)
+    assert of(fixed, cid).get("modular") == "fails"
+    assert free[cid] == "undecided", free
+
+
+@pytest.mark.parametrize("cid", METRIC_TRUE)
+def test_true_statements_about_the_metric_multipliers_never_fail(metric_runs, cid):
+    fixed, free = metric_runs
+    never_fails(fixed, cid)
+    assert free[cid] in ("proved", "undecided"), free
+
+
+def test_the_relation_of_the_multiplier_is_proved_for_every_n_r(metric_runs):
+    assert metric_runs[1]["adv-s34-metric-relation"] == "proved"
+
+
+def test_a_multiplier_flow_with_pi_not_zero_is_left_to_the_fixed_size_methods(metric_runs):
+    """The free scene refuses Π != 0 (no closed form); the fixed-size scene's multiplier flow has the form of
+    (dot_XP) (X' = H_P − XΠ) also in the metric realization, not the Dirac flow's X' = H_P − A⁻¹XΠ: it fails there.
+    No verdict contradicts the free method's (it proves nothing where Π != 0)."""
+    fixed, free = metric_runs
+    assert free["adv-s34-metric-mflow-is-dflow"] == "undecided"
+    assert of(fixed, "adv-s34-metric-mflow-is-dflow").get("modular") == "fails"
+
+
+# -- AL. a union of one-r families in a user's file -------------------------------------------------------------
+
+UNION = "s34_union_sizes.py"
+#: (claim, a size where it is false)
+UNION_FALSE = [("adv-s34-union-xxtp", "3,1"), ("adv-s34-union-psi", "3,3"), ("adv-s34-union-psi-12", "3,2"),
+               ("adv-s34-union-xxtp-2n", "3,2")]
+UNION_TRUE = [("adv-s34-union-true", "3,1"), ("adv-s34-union-true", "3,3"), ("adv-s34-union-r1-true", "3,1")]
+
+
+@pytest.fixture(scope="module")
+def union_free():
+    return run_free(UNION)
+
+
+@pytest.mark.parametrize("cid,size", UNION_FALSE)
+def test_a_union_of_r_does_not_lend_one_familys_hypothesis_to_another(union_free, cid, size):
+    assert union_free[cid] == "undecided", union_free
+    got = run_fixed(UNION, size, ids=(cid,))
+    never_passes(got, cid)
+    assert of(got, cid).get("modular") == "fails"
+
+
+@pytest.mark.parametrize("cid,size", UNION_TRUE)
+def test_a_claim_true_on_its_union_never_fails(union_free, cid, size):
+    assert union_free[cid] in ("proved", "undecided"), union_free
+    never_fails(run_fixed(UNION, size, ids=(cid,)), cid)
+
+
+@pytest.mark.parametrize("size", ["3,2", "17,5"])
+def test_a_size_outside_the_union_is_refused(size):
+    """(3,2) and (17,5) are outside r in (1, n): refused (exit 2), also beyond the child's table of sizes."""
+    out = cli("verify", "adv-s34-union-true", "--claims", str(HERE / UNION), "--size", size, "--method", "modular")
+    assert out.returncode == 2 and "outside" in out.stderr, (out.returncode, out.stdout[-500:], out.stderr[-500:])
+
+
+# -- AM. rank statements next to residuals: the float confirmation ---------------------------------------------
+
+RANKS = "s34_rank_with_residuals.py"
+RANK_FALSE = ("adv-s34-rank-every-point", "adv-s34-rank-too-high", "adv-s34-rank-too-low")
+
+
+@pytest.fixture(scope="module")
+def rank_runs():
+    return run_fixed(RANKS), run_free(RANKS)
+
+
+@pytest.mark.parametrize("cid", RANK_FALSE)
+def test_a_false_rank_next_to_a_true_residual_passes_under_no_method(rank_runs, cid):
+    fixed, free = rank_runs
+    never_passes(fixed, cid)
+    assert of(fixed, cid)["exact"] == "fails" and of(fixed, cid)["float"] == "undecided"
+    assert free[cid] == "undecided"
+
+
+# -- AN. sizes written as ints in a graph of symbolic sizes -----------------------------------------------------
+
+INTS = "s34_int_sized_blocks.py"
+
+
+def test_an_int_sized_block_is_not_proved_for_every_n_r():
+    free = run_free(INTS)
+    assert set(free.values()) == {"undecided"}, free
+
+
+def test_an_int_sized_block_beyond_the_listed_sizes_is_an_error():
+    got = run_fixed(INTS, "4,2", ids=("adv-s34-int-size-n",))
+    assert set(of(got, "adv-s34-int-size-n").values()) == {"error"}, got
+
+
+def test_int_sized_blocks_at_a_listed_size():
+    got = run_fixed(INTS)
+    never_fails(got, "adv-s34-int-size-n")
+    never_fails(got, "adv-s34-int-size-r")
+    never_passes(got, "adv-s34-int-size-false")
