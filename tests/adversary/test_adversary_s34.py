@@ -8,7 +8,7 @@ import re
 
 import pytest
 
-from adversary_cli import HERE, PASSING, cli
+from adversary_cli import HERE, PASSING, ROOT, cli
 
 #: a verdict line with its method: "<claim> (n,r) <method>: <verdict>" or "<claim> all n, r free: <verdict>"
 METHOD_LINE = re.compile(r"^(\S+) (?:\(\d+,\d+\)|all n, r) (\w+): (\w+)")
@@ -224,3 +224,54 @@ def test_int_sized_blocks_at_a_listed_size():
     never_fails(got, "adv-s34-int-size-n")
     never_fails(got, "adv-s34-int-size-r")
     never_passes(got, "adv-s34-int-size-false")
+
+
+# -- AO. a module of a lazily imported library's name on the import path ---------------------------------------
+
+ON_PATH = "s34_module_on_the_path.py"
+
+
+def _scratch_cwd(tmp_path):
+    cwd = tmp_path / "cwd"
+    cwd.mkdir()
+    (cwd / "S34_SCRATCH_CWD").write_text("")
+    return cwd
+
+
+def _verify_in(cwd, tmp_path, *methods):
+    import os
+    import subprocess
+    import sys
+    args = [sys.executable, "-m", "stiefelsym", "verify", "--claims", str(HERE / ON_PATH), "--size", "3,2",
+            "--jobs", "1", "--report-dir", str(tmp_path / "rep")]
+    for m in methods:
+        args += ["--method", m]
+    env = dict(os.environ, PYTHONPATH=str(ROOT))
+    return subprocess.run(args, cwd=cwd, env=env, capture_output=True, text=True, timeout=300)
+
+
+@pytest.mark.parametrize("method", ["exact", "free", "auto"])
+def test_a_module_put_on_the_import_path_by_the_files_child_changes_no_verdict(tmp_path, method):
+    """The child writes platformdirs.py and sympy.py into the working directory (sys.path[0] under python -m);
+    the verifying process imported them after the child had run (the cost model's platformdirs, the exact
+    method's sympy), and their profile hook made Xᵀ X = 2 I_r `proved` (exact: proved, exit 0, results.json
+    proved).  Closed: the digest of every top-level module on the import path (confine.path_modules) is taken
+    before the first fork and compared when the child returns, as the package's files are: exit 2, the files
+    named, nothing imported from them, nothing written."""
+    cwd = _scratch_cwd(tmp_path)
+    out = _verify_in(cwd, tmp_path, method)
+    assert (cwd / "sympy.py").is_file() and (cwd / "platformdirs.py").is_file()     # the child wrote them
+    assert out.returncode == 2, (out.returncode, out.stdout[-800:], out.stderr[-800:])
+    assert "changed on disk" in out.stderr and "sympy.py" in out.stderr and "Traceback" not in out.stderr
+    assert not list(cwd.glob("S34_IMPORTED_IN_*")), "a module the child wrote was imported"
+    assert not (tmp_path / "rep" / "results.json").exists()
+    assert "proved" not in out.stdout
+
+
+def test_the_claim_of_the_module_route_fails_where_the_file_writes_nothing(tmp_path):
+    """The control: without the scratch marker the file writes nothing and its false claim fails."""
+    cwd = tmp_path / "plain"
+    cwd.mkdir()
+    out = _verify_in(cwd, tmp_path, "exact")
+    assert "adv-s34-path-false (3,2) exact: fails" in out.stdout, (out.stdout[-800:], out.stderr[-800:])
+    assert not list(cwd.iterdir())
