@@ -275,3 +275,31 @@ def test_the_claim_of_the_module_route_fails_where_the_file_writes_nothing(tmp_p
     out = _verify_in(cwd, tmp_path, "exact")
     assert "adv-s34-path-false (3,2) exact: fails" in out.stdout, (out.stdout[-800:], out.stderr[-800:])
     assert not list(cwd.iterdir())
+
+
+# -- AP. the other fields of a record, malformed ----------------------------------------------------------------
+
+ODD_FIELDS = [("reductions", 5), ("seconds", "fast"), ("false_pass_bound", "tiny"), ("message", {"a": 1}),
+              ("expected", "yes"), ("witness", "x"), ("derivation", "a derivation"), ("certificate", [1]),
+              ("residual", [1, 2]), ("digest", [1]), ("certificate_data", [1]), ("change", 7),
+              ("checks", [{"name": "x", "status": "zero", "degree": "high"}])]
+
+
+@pytest.mark.parametrize("key,value", ODD_FIELDS)
+def test_report_and_check_refuse_a_record_with_a_malformed_field(graft_run, tmp_path, key, value):
+    """A record's fields beyond those that name the run (AC): `report` answered a Python traceback for reductions,
+    seconds, false_pass_bound and message of the wrong type, and rendered the others (a witness that is a string,
+    an `expected` flag that is "yes").  Closed: `results.record_problems` checks the type of every field a run
+    writes; `report` refuses the file (exit 2), `check` rejects the record."""
+    payload = json.loads(graft_run.read_text())
+    for r in payload["results"]:
+        if r["claim"] == "adv-s34-graft-false":
+            r[key] = value
+    odd = tmp_path / "odd.json"
+    odd.write_text(json.dumps(payload))
+    out = cli("report", "--results", str(odd), "--report-dir", str(tmp_path / "rep"))
+    assert out.returncode == 2 and "Traceback" not in out.stderr and key in out.stderr, \
+        (out.returncode, out.stderr[-800:])
+    out = cli("check", str(odd), "--no-rerun")
+    assert out.returncode == 1 and "malformed" in out.stdout and "Traceback" not in out.stderr, \
+        (out.returncode, out.stdout[-800:], out.stderr[-800:])
