@@ -63,3 +63,28 @@ def relation(s):
     L = s.multiplier_flow(H_A).multipliers["Lambda"]
     M = s.X.T @ s.Ainv @ s.X
     return {"rho": L @ M + M @ L + 2 * (s.P.T @ s.Ainv @ s.Ainv @ s.P)}
+
+
+def H_neumann(t):
+    """½ tr(PᵀA⁻¹P) + tr(XᵀAX): a Hamiltonian with a gradient in X too."""
+    return t.tr(t.P.T @ t.Ainv @ t.P) / 2 + t.tr(t.X.T @ t.A @ t.X)
+
+
+@claim("adv-s34-metric-energy", paper="t", kind="id", sizes=S, realization="metric")
+def energy(s):
+    """True: H is conserved along its own Dirac flow."""
+    return {"dH/dt": s.d(H_neumann, s.dirac_flow(H_neumann))}
+
+
+@claim("adv-s34-metric-potential-conserved", paper="t", kind="id", sizes=S, realization="metric")
+def potential(s):
+    """False: tr(XᵀAX) alone is conserved along the flow of H."""
+    return {"dV/dt": s.d(lambda t: t.tr(t.X.T @ t.A @ t.X), s.dirac_flow(H_neumann))}
+
+
+@claim("adv-s34-metric-lambda-of-neumann", paper="t", kind="id", sizes=S, realization="metric")
+def lambda_of_neumann(s):
+    """False: the multiplier of H is that of ½tr(PᵀA⁻¹P) (the potential adds −(XᵀAX M + M XᵀAX)-type terms)."""
+    L1 = s.multiplier_flow(H_neumann).multipliers["Lambda"]
+    L2 = s.multiplier_flow(H_A).multipliers["Lambda"]
+    return {"Lambda": L1 - L2}
