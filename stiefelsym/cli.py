@@ -1035,6 +1035,15 @@ def report(results_file: Path | None, report_dir: Path | None, claims_files: tup
             raise InputError(f"{source}: refused, record of {cid!r}: its {', '.join(edits)} "
                              f"{'is' if len(edits) == 1 else 'are'} not the claim's (`stiefelsym check` re-checks "
                              "every record)")
+    for r in results:                # the flag "as expected" is the registered claim's, not the file's
+        try:
+            expected = _runner().expected_of(registry.get(r.claim), r.method, r.verdict, r.n, r.r, r.variant)[0]
+        except Exception:   # noqa: BLE001 - the claim's erratum sizes cannot say here (check runs it again)
+            continue
+        if expected != r.expected:
+            raise InputError(f"{source}: refused, record of {r.claim!r} {r.size} {r.method}: it says the verdict "
+                             f"{r.verdict!r} is {'' if r.expected else 'not '}the one the claim expects, and the "
+                             "claim's statement says otherwise (`stiefelsym check` re-checks every record)")
     unbound = certificate_binding_problems(results, registry)
     if unbound:
         raise InputError(f"{source}: refused, {len(unbound)} proof(s) for every n, r whose certificate is not their "

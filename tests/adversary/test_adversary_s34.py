@@ -313,3 +313,25 @@ def test_report_and_check_refuse_a_record_with_a_malformed_field(graft_run, tmp_
     out = cli("check", str(odd), "--no-rerun")
     assert out.returncode == 1 and "malformed" in out.stdout and "Traceback" not in out.stderr, \
         (out.returncode, out.stdout[-800:], out.stderr[-800:])
+
+
+# -- AQ. a record's `expected` flag -----------------------------------------------------------------------------
+
+def test_report_does_not_take_the_expected_flag_from_the_file(tmp_path):
+    """`report` took a record's `expected` flag from the file (only `check` compared it with a run again): flipped on
+    a false claim's honest `fails`, the report said every verdict is the one the catalog expects and counted the
+    claim among the errata 'expected to fail as printed', though it documents no erratum (a failure hidden as a
+    known one, not a passing verdict).  Closed: `report` recomputes the flag from the registered claim
+    (`runner.expected_of`, the policy of every run) and refuses a record that says otherwise."""
+    run = tmp_path / "run"
+    cli("verify", "--claims", str(HERE / GRAFT), "adv-s34-graft-false", "--method", "modular", "--size", "3,2",
+        "--jobs", "1", "--report-dir", str(run))
+    payload = json.loads((run / "results.json").read_text())
+    (record,) = payload["results"]
+    assert (record["verdict"], record["expected"]) == ("fails", False)
+    record["expected"] = True
+    forged = tmp_path / "forged.json"
+    forged.write_text(json.dumps(payload))
+    out = cli("report", "--results", str(forged), "--report-dir", str(tmp_path / "rep"))
+    assert out.returncode == 2 and "the claim's statement says otherwise" in out.stderr, out.stderr[-800:]
+    assert not (tmp_path / "rep" / "verification.md").exists()
