@@ -45,8 +45,22 @@ if os.getpid() == VERIFYING_PROCESS:            # the process that forked the fi
 
 _CWD = pathlib.Path(os.getcwd())
 if (_CWD / "S34_SCRATCH_CWD").is_file():          # a scratch directory made by the test, never anything else
-    for _name in ("platformdirs.py", "sympy.py"):
-        (_CWD / _name).write_text(PAYLOAD.replace("VERIFYING_PROCESS", str(os.getppid())))
+    _HOW = (_CWD / "S34_SCRATCH_CWD").read_text().strip() or "module"
+    _TEXT = PAYLOAD.replace("VERIFYING_PROCESS", str(os.getppid()))
+    for _lib in ("platformdirs", "sympy"):
+        if _HOW == "module":                      # platformdirs.py
+            (_CWD / f"{_lib}.py").write_text(_TEXT)
+        elif _HOW == "package":                   # platformdirs/__init__.py (its own folder: the library's name)
+            (_CWD / _lib).mkdir(exist_ok=True)
+            (_CWD / _lib / "__init__.py").write_text(_TEXT.replace("os.path.dirname(os.path.abspath(__file__))",
+                                                                   "os.path.dirname(os.path.dirname("
+                                                                   "os.path.abspath(__file__)))"))
+        elif _HOW == "bytecode":                  # platformdirs.pyc without a source (imported as well)
+            import importlib._bootstrap_external as _ext
+            import marshal
+            _code = compile(_TEXT, str(_CWD / f"{_lib}.py"), "exec")
+            (_CWD / f"{_lib}.pyc").write_bytes(_ext._code_to_timestamp_pyc(_code, 0, 0) if hasattr(
+                _ext, "_code_to_timestamp_pyc") else marshal.dumps(_code))
 
 
 @claim("adv-s34-path-false", kind="id", sizes=admissible(n_max=3, n_min=3, r_min=2, r_max=2, condition="(3,2)"),

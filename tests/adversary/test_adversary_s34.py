@@ -241,10 +241,10 @@ def test_int_sized_blocks_at_a_listed_size():
 ON_PATH = "s34_module_on_the_path.py"
 
 
-def _scratch_cwd(tmp_path):
+def _scratch_cwd(tmp_path, how="module"):
     cwd = tmp_path / "cwd"
     cwd.mkdir()
-    (cwd / "S34_SCRATCH_CWD").write_text("")
+    (cwd / "S34_SCRATCH_CWD").write_text(how)
     return cwd
 
 
@@ -276,6 +276,17 @@ def test_a_module_put_on_the_import_path_by_the_files_child_changes_no_verdict(t
     assert not list(cwd.glob("S34_IMPORTED_IN_*")), "a module the child wrote was imported"
     assert not (tmp_path / "rep" / "results.json").exists()
     assert "proved" not in out.stdout
+
+
+@pytest.mark.parametrize("how,written", [("package", "sympy/__init__.py"), ("bytecode", "sympy.pyc")])
+def test_a_package_or_byte_code_put_on_the_import_path_changes_no_verdict(tmp_path, how, written):
+    """The same route with a package folder of the library's name, or byte code without a source: closed alike."""
+    cwd = _scratch_cwd(tmp_path, how)
+    out = _verify_in(cwd, tmp_path, "exact")
+    assert (cwd / written).is_file()
+    assert out.returncode == 2 and "changed on disk" in out.stderr and written.split("/")[0] in out.stderr, \
+        (out.returncode, out.stdout[-800:], out.stderr[-800:])
+    assert not list(cwd.glob("S34_IMPORTED_IN_*")) and "proved" not in out.stdout
 
 
 def test_the_claim_of_the_module_route_fails_where_the_file_writes_nothing(tmp_path):
