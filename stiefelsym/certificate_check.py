@@ -409,9 +409,9 @@ def leibniz(words: list[tuple[Any, tuple]], images: dict[str, list], ctx: Contex
 
 def check_sylvester(name: str, d: dict, ctx: Context) -> list[tuple[Any, tuple]]:
     """Check a declared multiplier Λ of a Dirac flow of the metric realization; its relation ρ.  The flow:
-    Ẋ and Ṗ − XΛ free of multipliers; ρ = d/dt (XᵀA⁻¹P + PᵀA⁻¹X) along it (recomputed), without traces,
-    ρ − ΛM − MΛ (M = XᵀA⁻¹X) free of multipliers, ρᵀ = ρ (so Λ is the unique, symmetric solution of ρ = 0);
-    and d/dt XᵀX along it in the ideal (its certificate checked, its residual recomputed): Π = 0."""
+    Ẋ and Ṗ − XΛ free of multipliers; ρ = d/dt (XᵀA⁻¹P + PᵀA⁻¹X) along it (recomputed) modulo the constraints
+    (``derived``: their difference, with no ρ, certified), no traces, ρ − ΛM − MΛ (M = XᵀA⁻¹X) free of multipliers,
+    ρᵀ = ρ (Λ the unique, symmetric solution of ρ = 0); d/dt XᵀX along it in the ideal (certified): Π = 0."""
     if d.get("constraint") != METRIC_HYP:
         raise Rejected(f"the multiplier {name} is of the constraint {METRIC_HYP}, not {d.get('constraint')!r}")
     lams = {L for L, v in ctx.letters.items() if L.startswith("Lambda:") and v[2] == L}
@@ -423,19 +423,21 @@ def check_sylvester(name: str, d: dict, ctx: Context) -> list[tuple[Any, tuple]]
     rho = _poly(d["relation"], ctx, "r", "r", f"the relation of {name}")
     if any(traces for _c, traces, _w in rho):
         raise Rejected(f"the relation of {name} has traces")
-    if not _same(leibniz([(_ONE, ("Xt", "Ainv", "P")), (_ONE, ("Pt", "Ainv", "X"))], {"X": Xd, "P": Pd}, ctx), rho, ctx):
-        raise Rejected(f"the relation of {name} is not d/dt (X^T A^-1 P + P^T A^-1 X) along its flow")
+    link, keeps = d.get("derived") or {"type": ["r", "r"], "residual": [], "terms": []}, d["keeps"]["XtX"]
+    for entry, target, what in ((link, leibniz([(_ONE, ("Xt", "Ainv", "P")), (_ONE, ("Pt", "Ainv", "X"))], {"X": Xd, "P": Pd},
+                                               ctx) + [(-c, t, w) for c, t, w in rho], f"the relation of {name} is not d/dt "
+                                 "(X^T A^-1 P + P^T A^-1 X) along its flow"), (keeps, leibniz([(_ONE, ("Xt", "X"))], {"X": Xd},
+                                 ctx), f"the entry d/dt X^T X of {name} is not the derivative along its flow")):
+        if any(str(t.get("hyp")).startswith("rho:") for t in entry["terms"]) or entry.get("type") != ["r", "r"] or \
+                not _same(target, _poly(entry["residual"], ctx, "r", "r", "a derivative"), ctx):
+            raise Rejected(f"{what}, in the constraints")
+        try:
+            check_entry(entry, ctx)
+        except Rejected as exc:
+            raise Rejected(f"{what.replace(' is not ', ' as ')}: {exc}") from None
     if _holds(_canonical(rho + [(_MINUS, [], (name, "Xt", "Ainv", "X")), (_MINUS, [], ("Xt", "Ainv", "X", name))],
                          ctx), lams) or not _same(_star_terms(rho, ctx), rho, ctx):
         raise Rejected(f"the relation of {name} is not {name} M + M {name} - C with C symmetric, free of multipliers")
-    keeps = d["keeps"]["XtX"]
-    if any(str(t.get("hyp")).startswith("rho:") for t in keeps["terms"]) or keeps.get("type") != ["r", "r"] or \
-            not _same(leibniz([(_ONE, ("Xt", "X"))], {"X": Xd}, ctx), _poly(keeps["residual"], ctx, "r", "r", "d(XtX)"), ctx):
-        raise Rejected(f"the entry d/dt X^T X of {name} is not the derivative along its flow, in the constraints")
-    try:
-        check_entry(keeps, ctx)
-    except Rejected as exc:
-        raise Rejected(f"d/dt X^T X along the flow of {name}: {exc}") from None
     return [(c, w) for c, _t, w in rho]
 
 

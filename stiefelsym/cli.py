@@ -1008,8 +1008,8 @@ def report(results_file: Path | None, report_dir: Path | None, claims_files: tup
         meta, results = load_results(source)
     except (OSError, UnicodeDecodeError, ValueError, KeyError, TypeError, AttributeError) as exc:
         raise InputError(f"{source} is not a stiefelsym results file: {_one_line(exc)}") from None
-    from .integrity import (MAX_N_CHECKED, certificate_problems, claim_field_edits, missing_runs,
-                            size_method_problems)
+    from .integrity import (MAX_N_CHECKED, certificate_binding_problems, certificate_problems, claim_field_edits,
+                            missing_runs, size_method_problems)
     from .hard import HARD_CASES
     from .results import meta_problems
     bad_meta = meta_problems(meta, _runner().METHODS, tuple(HARD_CASES), MAX_N_CHECKED)
@@ -1035,6 +1035,19 @@ def report(results_file: Path | None, report_dir: Path | None, claims_files: tup
             raise InputError(f"{source}: refused, record of {cid!r}: its {', '.join(edits)} "
                              f"{'is' if len(edits) == 1 else 'are'} not the claim's (`stiefelsym check` re-checks "
                              "every record)")
+    for r in results:                # the flag "as expected" is the registered claim's, not the file's
+        try:
+            expected = _runner().expected_of(registry.get(r.claim), r.method, r.verdict, r.n, r.r, r.variant)[0]
+        except Exception:   # noqa: BLE001 - the claim's erratum sizes cannot say here (check runs it again)
+            continue
+        if expected != r.expected:
+            raise InputError(f"{source}: refused, record of {r.claim!r} {r.size} {r.method}: it says the verdict "
+                             f"{r.verdict!r} is {'' if r.expected else 'not '}the one the claim expects, and the "
+                             "claim's statement says otherwise (`stiefelsym check` re-checks every record)")
+    unbound = certificate_binding_problems(results, registry)
+    if unbound:
+        raise InputError(f"{source}: refused, {len(unbound)} proof(s) for every n, r whose certificate is not their "
+                         f"claim's: {unbound[0]} (`stiefelsym check` re-checks every record)")
     missing = missing_runs([r.to_json() for r in results], registry, meta)
     if missing:
         raise InputError(f"{source}: refused, {len(missing)} run(s) its command planned have no record: {missing[0]} "

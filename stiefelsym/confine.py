@@ -13,8 +13,12 @@ reaching a verdict of the verifying process:
 * :func:`engine_files` is a digest of every file of the package (``stiefelsym`` and its ``proofs``),
   taken before the first fork and compared when the child returns: an engine module rewritten on disk by
   the file's child stops the run (:class:`EngineFilesChanged`).  The verifying process has also imported
-  every module it can need later before that fork (:func:`import_package`), so nothing it runs afterwards
-  is read from disk.
+  every module of the package before that fork (:func:`import_package`), so no engine module it runs
+  afterwards is read from disk.  The libraries it imports lazily (sympy, platformdirs) are found on the
+  import path when first used, possibly after the child ran: :func:`path_modules`, compared likewise, stamps
+  every top-level module of the directories on ``sys.path`` (inode, size, modification and status-change
+  times; the working directory under ``python -m``), so a module of a library's name put before the library
+  itself stops the run too.
 """
 from __future__ import annotations
 
@@ -109,6 +113,49 @@ def engine_files(roots: list[Path] | None = None) -> dict[str, str]:
                         out[path] = hashlib.sha256(f.read()).hexdigest()
                 except OSError as exc:
                     out[path] = f"unreadable: {exc.strerror or exc}"
+    return out
+
+
+def _stamp(path: str) -> str:
+    """A file's identity and change stamp (inode, size, modification and status-change times, in ns): any write
+    changes its status-change time, which a process cannot set back; read without reading the file."""
+    try:
+        st = os.lstat(path)
+    except OSError as exc:
+        return f"unreadable: {exc.strerror or exc}"
+    return f"{st.st_ino}:{st.st_size}:{st.st_mtime_ns}:{st.st_ctime_ns}"
+
+
+def path_modules(entries: list[str] | None = None) -> dict[str, str]:
+    """Path -> stamp of every top-level module a later ``import name`` could load from a directory of the import
+    path (``sys.path``, the working directory included where it is on it): the files with a module's suffix
+    (sources, byte code, extensions) and ``.pth`` files, and the packages by their ``__init__``.  A module the
+    verifying process imports only after a claims file's child ran (a library the engine imports lazily) is
+    found through this path: a file of that name put into a directory before the library's own shadows it
+    (what lies deeper inside a library's own folder is not looked at)."""
+    import importlib.machinery
+
+    suffixes = tuple(importlib.machinery.all_suffixes()) + (".pth",)
+    out: dict[str, str] = {}
+    seen: set[str] = set()
+    for entry in sys.path if entries is None else entries:
+        folder = os.path.realpath(entry or os.getcwd())
+        if folder in seen or not os.path.isdir(folder):
+            continue
+        seen.add(folder)
+        try:
+            names = sorted(os.listdir(folder))
+        except OSError as exc:
+            out[folder] = f"unreadable: {exc.strerror or exc}"
+            continue
+        for name in names:
+            path = os.path.join(folder, name)
+            if name.endswith(suffixes) and not os.path.isdir(path):
+                out[path] = "link:" + os.readlink(path) if os.path.islink(path) else _stamp(path)
+            elif name.isidentifier() and os.path.isdir(path):
+                for init in ("__init__" + x for x in suffixes if x != ".pth"):
+                    if os.path.isfile(os.path.join(path, init)):
+                        out[os.path.join(path, init)] = _stamp(os.path.join(path, init))
     return out
 
 

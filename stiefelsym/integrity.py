@@ -46,6 +46,38 @@ def _canonical(x: Any) -> str:
     return json.dumps(x, sort_keys=True, separators=(",", ":"))
 
 
+def certificate_binding_problems(records: Iterable[Any], registry: Registry) -> list[str]:
+    """Every proof for all n, r (:func:`proof_for_every_size`) whose certificate is not the one its claim's graph
+    gives: the dimension-free method run again on the registered claim (or its correction) must prove it with
+    the same certificate.  The checker accepts any certificate that expands to its own residual, so a certificate
+    moved from another claim (or another correction) is accepted by it and caught only here, as `check` does."""
+    from .runner import run_free_guarded
+    out: list[str] = []
+    done: dict[tuple, Any] = {}
+    for r in records:
+        get = r.get if isinstance(r, dict) else (lambda k, r=r: getattr(r, k, None))
+        if not proof_for_every_size(get):
+            continue
+        cid, variant = get("claim"), get("variant")
+        if cid not in registry:
+            continue                    # refused with its own reason by the caller
+        claim, func = registry.get(cid), None
+        if variant:
+            k = next((k for k, c in enumerate(claim.corrections) if c.description == variant), None)
+            if k is None:
+                out.append(f"{cid}: the claim has no correction {variant!r}")
+                continue
+            func, claim = claim.corrections[k].func, claim.corrected(k)
+        key = (cid, variant)
+        if key not in done:
+            done[key] = run_free_guarded(claim, func)
+        again = done[key]
+        if again.verdict != "proved" or _canonical(again.certificate_data) != _canonical(get("certificate_data")):
+            out.append(f"{cid}{f' ({variant})' if variant else ''}: the certificate is not the one the claim's graph "
+                       f"gives (the dimension-free method again: {again.verdict})")
+    return out
+
+
 #: the fields of a decided record that a run again must reproduce exactly (its evidence); timings,
 #: messages and the rerun line are left out
 EVIDENCE = ("expected", "seed", "reductions", "certificate", "residual", "false_pass_bound", "checks", "witness",

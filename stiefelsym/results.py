@@ -2,11 +2,12 @@
 from __future__ import annotations
 
 import json
+import math
 import os
 import tempfile
 from dataclasses import MISSING, asdict, dataclass, field, fields, replace
 from pathlib import Path
-from typing import Any, Iterable
+from typing import Any, Callable, Iterable
 
 VERDICTS = ("proved", "checked", "numeric", "fails", "inconclusive", "undecided", "error")
 #: verdicts that establish a claim (proof grade: proved, checked)
@@ -200,7 +201,46 @@ def record_problems(d: Any) -> list[str]:
         out.append(f"variant is a {type(d['variant']).__name__}, not a string")
     if d.get("seed") is not None and not _is_int(d["seed"]):
         out.append(f"seed is a {type(d['seed']).__name__}, not an integer")
+    for key, ok, what in _FIELD_TYPES:
+        if key in d and not ok(d[key]):
+            out.append(f"{key} is {_short_repr(d[key], 40)}, not {what}")
     return out
+
+
+def _number(x: Any) -> bool:
+    return type(x) in (int, float) and math.isfinite(x)
+
+
+def _strings(x: Any) -> bool:
+    return type(x) is list and all(type(y) is str for y in x)
+
+
+def _check_outcome(x: Any) -> bool:
+    return (type(x) is dict and {"name", "status"} <= x.keys() <= {"name", "status", "detail", "degree"}
+            and type(x["name"]) is str and type(x["status"]) is str and type(x.get("detail", "")) is str
+            and (x.get("degree") is None or _is_int(x["degree"])))
+
+
+#: the other fields of a record, each with the type a run writes (what renders it and `check` compare)
+_FIELD_TYPES: tuple[tuple[str, Callable[[Any], bool], str], ...] = (
+    ("paper", _strings, "a list of labels"),
+    ("section", lambda x: type(x) is str, "a string"), ("kind", lambda x: type(x) is str, "a string"),
+    ("title", lambda x: type(x) is str, "a string"), ("statement", lambda x: type(x) is str, "a string"),
+    ("expected", lambda x: type(x) is bool, "true or false"),
+    ("seconds", lambda x: x is None or (_number(x) and x >= 0), "a number of seconds or null"),
+    ("reductions", _strings, "a list of strings"), ("derivation", _strings, "a list of strings"),
+    ("certificate", lambda x: type(x) is str, "a string"), ("rerun", lambda x: type(x) is str, "a string"),
+    ("message", lambda x: type(x) is str, "a string"), ("erratum", lambda x: type(x) is str, "a string"),
+    ("digest", lambda x: type(x) is str, "a string"),
+    ("residual", lambda x: x is None or type(x) is str, "a string or null"),
+    ("false_pass_bound", lambda x: x is None or (_number(x) and 0 <= x), "a probability or null"),
+    ("checks", lambda x: type(x) is list and all(map(_check_outcome, x)), "a list of checks"),
+    ("witness", lambda x: x is None or type(x) is dict, "an object or null"),
+    ("certificate_data", lambda x: x is None or type(x) is dict, "an object or null"),
+    ("change", lambda x: type(x) is list and all(type(c) is dict and all(type(v) is str or _is_int(v)
+                                                                         for v in c.values()) for c in x),
+     "a list of changes"),
+)
 
 
 def meta_problems(meta: Any, methods: Iterable[str], hard_cases: Iterable[str], max_n: int) -> list[str]:

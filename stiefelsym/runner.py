@@ -276,6 +276,23 @@ def _run_auto(claim: Claim, size: Size, seed: int, func: Callable | None,
     return res
 
 
+def expected_of(claim: Claim, method: str, verdict: str, n: int | None, r: int | None,
+                variant: str | None) -> tuple[bool, bool]:
+    """(whether the verdict is the one the catalog expects, whether the size is a documented erratum of the
+    claim): the policy of :func:`_finish`, a function of the registered claim and the run (raises what the
+    claim's fails_at raises)."""
+    erratum = variant is None and bool(claim.erratum) and claim.expects_failure(n, r)
+    if verdict == "undecided":
+        return True, erratum
+    if verdict in NEVER_EXPECTED:
+        return False, erratum
+    if method == "free":
+        return verdict == "proved" and (variant is not None or claim.expect != "fails"), erratum
+    if erratum:                       # a documented erratum: expected to fail as printed, here
+        return verdict == "fails", erratum
+    return verdict in PASSING, erratum
+
+
 def _finish(res: Result, claim: Claim, variant: str | None, hard: str | None = None) -> Result:
     """The verdict policy: which verdicts the catalog expects.
 
@@ -286,24 +303,14 @@ def _finish(res: Result, claim: Claim, variant: str | None, hard: str | None = N
     if res.verdict == "inconclusive" and res.message.startswith("not applicable"):
         res.verdict = "undecided"     # the method has nothing to say here, e.g. float on a pure rank claim
     try:
-        erratum = variant is None and bool(claim.erratum) and claim.expects_failure(res.n, res.r)
+        res.expected, erratum = expected_of(claim, res.method, res.verdict, res.n, res.r, variant)
     except (KeyboardInterrupt, Terminated):
         raise
     except BaseException as exc:  # noqa: BLE001 - the claim's own fails_at broke
         from .methods import _describe
         res.verdict = "error"
         res.message = f"the claim's erratum sizes (fails_at) could not be evaluated: {_describe(exc)}"
-        erratum = False
-    if res.verdict == "undecided":
-        res.expected = True
-    elif res.verdict in NEVER_EXPECTED:
-        res.expected = False
-    elif res.method == "free":
-        res.expected = res.verdict == "proved" and (variant is not None or claim.expect != "fails")
-    elif erratum:                     # a documented erratum: expected to fail as printed, here
-        res.expected = res.verdict == "fails"
-    else:
-        res.expected = res.verdict in PASSING
+        res.expected, erratum = False, False
     if erratum:
         res.erratum = claim.erratum
     res.rerun = rerun_command(res, hard)

@@ -800,23 +800,27 @@ def _preload() -> dict[str, str]:
     """Before the first child is forked: every module of the engine imported here (the child seals the
     verdict modules before the file runs; this process evaluates, renders and writes with the whole package
     afterwards, and reads none of it from disk once a file's child has run), and the digest of every file
-    of the package (:func:`stiefelsym.confine.engine_files`), compared when the child returns."""
-    from .confine import engine_files, import_package
+    of the package (:func:`stiefelsym.confine.engine_files`) and of every top-level module on the import path
+    (:func:`stiefelsym.confine.path_modules`: a lazily imported library's name put before it), compared when
+    the child returns."""
+    from .confine import engine_files, import_package, path_modules
     from .ir.seal import import_engine
     import_engine()
     import_package()
-    return engine_files()
+    return {**engine_files(), **path_modules()}
 
 
 def _engine_unchanged(before: dict[str, str], path: Path) -> None:
-    """Raise :class:`CatalogError` when a file of the package changed while the claims file's child ran."""
-    from .confine import changed_files, engine_files
-    changed = changed_files(before, engine_files())
+    """Raise :class:`CatalogError` when a file of the package, or a top-level module on the import path, changed
+    while the claims file's child ran."""
+    from .confine import changed_files, engine_files, path_modules
+    changed = changed_files(before, {**engine_files(), **path_modules()})
     if changed:
         shown = ", ".join(changed[:5]) + (f" and {len(changed) - 5} more" if len(changed) > 5 else "")
-        raise CatalogError(f"{path}: the engine's files changed on disk while the claims file ran ({shown}): no "
-                           "verdict is given, and later runs would use the changed code: restore the package "
-                           "(e.g. git checkout, or reinstall it) before running again")
+        raise CatalogError(f"{path}: the engine's files or the modules on its import path changed on disk while "
+                           f"the claims file ran ({shown}): no verdict is given, and later runs would use the changed "
+                           "code: restore the package (e.g. git checkout, or reinstall it) and remove the files the "
+                           "claims file added before running again")
 
 
 def load_claims_isolated(path: str | Path, sizes: Iterable[Any] = (), timeout: float = DEFAULT_TIMEOUT,

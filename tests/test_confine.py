@@ -12,7 +12,7 @@ from pathlib import Path
 import pytest
 
 from stiefelsym.claims import CatalogError
-from stiefelsym.confine import Confined, changed_files, engine_files, package_roots
+from stiefelsym.confine import Confined, changed_files, engine_files, package_roots, path_modules
 from stiefelsym.userfile import load_claims_isolated
 
 LINUX = pytest.mark.skipif(not sys.platform.startswith("linux") or not os.path.isdir("/proc/self"),
@@ -160,3 +160,24 @@ def test_the_verifying_process_imports_the_whole_package_before_the_fork():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120,
                          env=dict(os.environ, PYTHONPATH=str(Path(__file__).resolve().parents[1])))
     assert out.stdout.strip() == "True", out.stderr[-800:]
+
+
+def test_path_modules_sees_a_module_put_before_a_library(tmp_path):
+    """A top-level module, byte code, extension, .pth file or package __init__ added to (or changed in) a directory
+    of the import path is a change; a plain folder (a namespace portion, which never shadows a module found later
+    on the path), a data file and a file deep inside a package are not."""
+    (tmp_path / "pkg").mkdir()
+    (tmp_path / "pkg" / "__init__.py").write_text("")
+    (tmp_path / "pkg" / "deep.py").write_text("")
+    before = path_modules([str(tmp_path)])
+    assert str(tmp_path / "pkg" / "__init__.py") in before
+    (tmp_path / "data.json").write_text("{}")
+    (tmp_path / "folder").mkdir()
+    (tmp_path / "pkg" / "deep.py").write_text("x = 1")
+    assert changed_files(before, path_modules([str(tmp_path)])) == []
+    for name in ("sympy.py", "numpy.pyc", "flint.cpython-311-x86_64-linux-gnu.so", "evil.pth"):
+        (tmp_path / name).write_text("")
+        assert changed_files(before, path_modules([str(tmp_path)])) == [str(tmp_path / name)]
+        (tmp_path / name).unlink()
+    (tmp_path / "pkg" / "__init__.py").write_text("import os")
+    assert changed_files(before, path_modules([str(tmp_path)])) == [str(tmp_path / "pkg" / "__init__.py")]

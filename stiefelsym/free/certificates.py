@@ -118,6 +118,9 @@ class CertificateWriter:
             decl["flow"] = {"X": self.residual(m.Xdot), "P": self.residual(m.Pdot)}
             decl["relation"] = self.residual(m.relation)
             decl["keeps"] = {"XtX": self.entry("d(X^T X)/dt", m.keeps_certificate)}
+            if getattr(m, "relation_certificate", None) is not None and m.relation_certificate.residual.expand().terms:
+                # the derivative of the constraint as derived minus rho (its normal form), in the constraints
+                decl["derived"] = self.entry("d(X^T A^-1 P + P^T A^-1 X)/dt - rho", m.relation_certificate)
             decl["assumes"] = [f"{name} is the solution of rho:{name} = 0, unique and symmetric (M = X^T A^-1 X "
                                "positive definite)", "Pi = 0 by uniqueness: Pi M + M Pi = 0 (keeps: X^T X = I_r)"]
         elif name.startswith("gen:") and L.adjoint != L:
@@ -166,6 +169,7 @@ class CertificateWriter:
         used = {h for e in self.entries for h in e["hypotheses"]}
         declared = [d for d in self.letters.values() if d.get("kind") == "sylvester"]
         used |= {h for d in declared for h in d["keeps"]["XtX"]["hypotheses"]}
+        used |= {h for d in declared for h in d.get("derived", {}).get("hypotheses", [])}
         summary = {"entries": len(self.entries), "terms": terms, "hypotheses": sorted(used)}
         if self.realization != "standard":
             summary["realization"] = self.realization

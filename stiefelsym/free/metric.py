@@ -89,6 +89,9 @@ class SylvesterMultiplier:
     keeps_certificate: Certificate
     #: the constraint whose preservation gives ρ (the name of its hypothesis)
     hypothesis_of_constraint: str = METRIC_HYP
+    #: d/dt (XᵀA⁻¹P + PᵀA⁻¹X) along the flow, as derived, minus ρ (its normal form), through the hypotheses of
+    #: the constraints (normal form 0): ρ is the derivative on T*V, reduced by the rules
+    relation_certificate: Certificate | None = None
 
 
 _LAMBDAS = [0]
@@ -132,7 +135,10 @@ def metric_multipliers(system: RewritingSystem, HX: NCPoly, HP: NCPoly,
     keeps = system.certify(derivation(_w(Xt, X), images))
     if keeps.normal_form.terms:   # (the same as S = 0 above: a self-check)
         raise FreeSolveError("the flow with Pi = 0 does not keep X^T X = I_r")
-    rho = nf(derivation(_w(Xt, AINV, P) + _w(Pt, AINV, X), images))
+    derived = derivation(_w(Xt, AINV, P) + _w(Pt, AINV, X), images)
+    rho = nf(derived)
+    linked = system.certify(derived, rho)
+    relation_certificate = Certificate(derived - rho, NCPoly.zero("r", "r"), linked.terms)
     C = nf(_w(Lam) * M + M * _w(Lam) - rho)
     if _holds_letter(C, Lam):
         raise FreeSolveError(f"the equation of the multiplier Lambda of (cond_XP2) is not Lambda M + M Lambda = C "
@@ -152,7 +158,7 @@ def metric_multipliers(system: RewritingSystem, HX: NCPoly, HP: NCPoly,
     reason = (f"{Lam} is the solution of {Lam} M + M {Lam} = C, M = X^T A^(-1) X (unique and symmetric: "
               "M positive definite, C symmetric); C from the flow keeping (cond_XP2)")
     rule = Rule(f"rho:{Lam}", lhs, rule_rhs, reason, cofactors)
-    return SylvesterMultiplier(Lam, Xd, Pd, rho, hyp, rule, keeps)
+    return SylvesterMultiplier(Lam, Xd, Pd, rho, hyp, rule, keeps, relation_certificate=relation_certificate)
 
 
 def _find(w: tuple, lhs: tuple) -> int | None:
