@@ -1036,6 +1036,13 @@ class Trace:
             if type(out) not in (tuple, list) or len(out) != len(on) or any(
                     type(x) is not Tracer or x._kind == SCALAR for x in out):
                 return self.refuse(f"Inverse: {what} returns one matrix per space of {' × '.join(on)}")
+            # ... of the space's own shape: a map of the product into itself (xᵀ on R^{n×r} maps it to
+            # R^{r×n}, and is its own inverse there)
+            for x, d in zip(out, on):
+                want = (self.size(1, DOMAINS[d][0]), self.size(1, DOMAINS[d][1]))
+                if x._kind == MAT and any(_same_size(a, b, self) is not True for a, b in zip(x._shape, want)):
+                    return self.refuse(f"Inverse: {what} returns a {x!r} where {d} has {want[0].d}×{want[1].d} "
+                                       "matrices (a map of the product into itself)")
             return tuple(out)
 
         def member(x: Tracer, d: str) -> Tracer | None:
@@ -1056,12 +1063,69 @@ class Trace:
             if self._reads_elements(out, stop):
                 return self.refuse(f"Inverse: {what} reads a generic element of the statement other than "
                                    "through its argument")
+            # the identities hold as rational functions, so they prove op invertible only where every
+            # divisor is nonzero: a divisor that is not a constant (tr PᵀP, (PᵀP)⁻¹, x⁻¹, a resolvent)
+            # may vanish at some point of T*V or some element, and "at every point" would not follow
+            why = self._divisor(out, stop)
+            if why:
+                return self.refuse(f"Inverse: {what} divides by {why}, which may vanish at some point of T*V "
+                                   "or some element (op(inv(y)) = y and inv(op(x)) = x would prove op "
+                                   "invertible only where it does not): only constant divisors")
         residuals = [a - b for a, b in zip(op_inv_y, ys)] + [a - b for a, b in zip(inv_op_x, xs)]
         residuals += [m for m in (member(x, d) for x, d in zip(inv_y + op_x, on + on)) if m is not None]
         # the parts as tuples of references (no container node: the statement's node is the first node
         # made after its subgraph, as when a graph is replayed)
         parts = tuple(tuple(x._r for x in p) for p in (ys, inv_y, op_inv_y, xs, op_x, inv_op_x, residuals))
         return self.g.add("inverse", parts + (on, v.meaning))
+
+    def _divisor(self, outs: tuple, args: tuple) -> str:
+        """What a node of ``outs`` (down to the nodes ``args``) divides by when it is not a constant: a
+        division by a number, a matrix inverse, a negative power or a resolvent ("" when there is none)."""
+        g, stop = self.g, {a._r.i for a in args}
+        seen: set[int] = set()
+        stack = [x._r.i for x in outs]
+        while stack:
+            i = stack.pop()
+            if i in seen or i in stop:
+                continue
+            seen.add(i)
+            op, a = g.ops[i], g.args[i]
+            if op == "div" and not self._constant(a[1]):
+                return "a number that is not a constant"
+            if op == "inv" and not self._constant(a[0]):
+                return "a matrix that is not constant (an inverse)"
+            if op == "pow" and not (type(a[1]) is int and a[1] >= 0) and not self._constant(a[0]):
+                return "a number that is not a constant (a negative power)"
+            if op == "call" and a[1] == "resolvent":
+                return "a resolvent (μI − A)"
+            stack.extend(g.refs(i))
+        return ""
+
+    #: the nodes a constant divisor is made of: numbers and their arithmetic (no scene value, no
+    #: parameter, no element, no engine step)
+    _CONSTANT_OPS = frozenset({"const", "add", "sub", "mul", "div", "neg", "pow", "matmul", "T", "trace", "inv"})
+    _CONSTANT_CALLS = frozenset({"q", "const", "identity", "zeros", "scalar_matrix", "tr"})
+
+    def _constant(self, a: Any) -> bool:
+        """Whether the argument ``a`` (a literal or a node) is made of constants only."""
+        if type(a) is not Ref:
+            return type(a) in (int, Fraction, Size) and a != 0
+        g, seen, stack = self.g, set(), [a.i]
+        while stack:
+            i = stack.pop()
+            if i in seen:
+                continue
+            seen.add(i)
+            op, args = g.ops[i], g.args[i]
+            if op == "call":
+                if args[1] not in self._CONSTANT_CALLS:
+                    return False
+                stack.extend(j for j in g.refs(i) if g.ops[j] != "scene")
+                continue
+            if op not in self._CONSTANT_OPS:
+                return False
+            stack.extend(g.refs(i))
+        return True
 
     def _reads_elements(self, outs: tuple, args: tuple) -> bool:
         """Whether a node of ``outs`` reads a generic element of an Inverse statement other than through

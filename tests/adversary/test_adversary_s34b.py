@@ -1,0 +1,67 @@
+"""Round 4b: the `Inverse` statement (an operator invertible at every point of T*V, with its inverse) and
+the exact confirmation of a `numeric` verdict at one point mod p per component.  As in the earlier rounds
+every run is the CLI in a fresh process, each test asserts the CORRECT outcome, and a route that is open
+today is a strict xfail with its reason."""
+
+from adversary_cli import PASSING
+from test_adversary_s33 import run_all
+
+FIXED = ("exact", "modular", "rational", "float", "ball", "auto")
+
+
+def by_claim(got):
+    """{claim: {method: verdict}} of run_all's {(claim, method): verdict} (auto's line names the method it
+    chose, so a method may hold two runs: its verdicts are the set of both)."""
+    out: dict = {}
+    for (c, m), v in got.items():
+        out.setdefault(c, {})[m] = v
+    return out
+
+
+def fixed(verdicts):
+    """The verdicts of the fixed-size methods of one claim."""
+    return {v for m, v in verdicts.items() if m != "free"}
+
+
+# -- 4b-A. an inverse that divides by something vanishing somewhere ---------------------------------------
+
+DIVISIONS = ("adv-s34b-inv-div-trace", "adv-s34b-inv-div-sphere", "adv-s34b-inv-pow", "adv-s34b-inv-congruence-ptp",
+             "adv-s34b-inv-congruence-xax", "adv-s34b-inv-element-inverse", "adv-s34b-inv-element-sphere")
+
+
+def test_an_inverse_with_a_vanishing_divisor_is_never_passed():
+    """op(inv(y)) = y and inv(op(x)) = x hold as rational functions, which proves op invertible only where
+    the divisors (tr PᵀP, tr PᵀP − 1, (PᵀP)⁻¹, (XᵀAX)⁻¹, x⁻¹, 1/tr(xxᵀ)) do not vanish: every fixed-size
+    method said proved / checked / numeric before.  Closed: a divisor in op or inv that is not a constant is
+    refused when the statement is made (error at fixed sizes, undecided by free)."""
+    got = by_claim(run_all("s34b_inverse_divisions.py"))
+    assert set(got) == set(DIVISIONS), got
+    for c, verdicts in got.items():
+        assert len(verdicts) >= len(FIXED), (c, verdicts)
+        assert not set(verdicts.values()) & set(PASSING), (c, verdicts)
+        assert fixed(verdicts) == {"error"} and verdicts["free"] == "undecided", (c, verdicts)
+
+
+def test_an_op_that_leaves_the_shape_of_its_space_is_never_passed():
+    """xᵀ on R^{n×r} (and a swapped pair of transposes) is its own inverse, but maps R^{n×r} to R^{r×n}: no
+    membership residual is made for a general space, so exact, modular, float, ball and free passed it.
+    Closed: op(x) and inv(y) must have the shape of their space (refused otherwise)."""
+    got = by_claim(run_all("s34b_inverse_spaces.py"))
+    for c, verdicts in got.items():
+        assert len(verdicts) >= len(FIXED), (c, verdicts)
+        assert not set(verdicts.values()) & set(PASSING), (c, verdicts)
+
+
+def test_resolvents_hidden_divisions_and_maps_that_are_not_linear():
+    """A resolvent at μ = tr PᵀP, a division inside a function the engine differentiates (s.d, a Dirac
+    flow's Hamiltonian): passed before, now refused.  A map that is not injective and an inverse valid at
+    r = 1 only fail at (3,2) and are undecided by free; a true triangular map that is not linear is
+    passed by every method."""
+    got = by_claim(run_all("s34b_inverse_probes.py"))
+    for c in ("adv-s34b-inv-resolvent", "adv-s34b-inv-hidden-quotient", "adv-s34b-inv-hidden-flow"):
+        assert fixed(got[c]) == {"error"} and got[c]["free"] == "undecided", (c, got[c])
+    for c in ("adv-s34b-inv-not-linear", "adv-s34b-inv-r1-only"):
+        assert fixed(got[c]) == {"fails"} and got[c]["free"] == "undecided", (c, got[c])
+    true = got["adv-s34b-inv-triangular-true"]
+    assert true["exact"] == "proved" and true["free"] == "proved", true
+    assert true["modular"] == true["rational"] == "checked" and true["float"] == true["ball"] == "numeric", true
