@@ -3,10 +3,23 @@ the exact confirmation of a `numeric` verdict at one point mod p per component. 
 every run is the CLI in a fresh process, each test asserts the CORRECT outcome, and a route that is open
 today is a strict xfail with its reason."""
 
-from adversary_cli import PASSING
-from test_adversary_s33 import run_all
+from adversary_cli import HERE, PASSING, cli
+from test_adversary_s33 import ALL_METHODS, parse_all
 
-FIXED = ("exact", "modular", "rational", "float", "ball", "auto")
+FIXED = ALL_METHODS
+
+
+def run_all(claims_file, ids=(), size="3,2", methods=ALL_METHODS, free=True, extra=()):
+    """{(claim, method): verdict} of one run of the fixed-size methods at one size (and one of free), one
+    worker each."""
+    args = ["verify", *ids, "--claims", str(HERE / claims_file), "--size", size, "--jobs", "1", *extra]
+    for m in methods:
+        args += ["--method", m]
+    got = parse_all(cli(*args).stdout)
+    if free:
+        got.update(parse_all(cli("verify", *ids, "--claims", str(HERE / claims_file), "--method", "free",
+                                 "--jobs", "1").stdout))
+    return got
 
 
 def by_claim(got):
@@ -65,3 +78,30 @@ def test_resolvents_hidden_divisions_and_maps_that_are_not_linear():
     true = got["adv-s34b-inv-triangular-true"]
     assert true["exact"] == "proved" and true["free"] == "proved", true
     assert true["modular"] == true["rational"] == "checked" and true["float"] == true["ball"] == "numeric", true
+
+
+# -- 4b-B. the exact confirmation of a float / ball `numeric` ---------------------------------------------
+
+def test_a_residual_on_one_component_of_o_n_is_refuted_by_the_confirmation():
+    """det X = 1 and X_11 = its cofactor, hidden from float64 by an absorption (cu + R) − cu: true on SO(n)
+    only.  The confirmation evaluates one point mod p on each component of O(n) (r = n) and refutes
+    them (no hole found)."""
+    for ids, size in ((("adv-s34b-comp-det2",), "2,2"), (("adv-s34b-comp-cofactor",), "3,3")):
+        got = by_claim(run_all("s34b_confirm_component.py", ids=ids, size=size, methods=("float", "ball", "auto"),
+                               free=False))
+        for c, verdicts in got.items():
+            assert fixed(verdicts) == {"fails"}, (c, size, verdicts)
+
+
+def test_hard_cases_do_not_confirm_a_false_numeric():
+    """Under --hard the confirmation is at the hard case's chosen exact point, where vanishing is no
+    evidence: a residual that vanishes exactly at the near-pole λ, and a "nonzero" residual float64 sees
+    only through an absorption, are not passed by float or ball (no hole found: float cannot resolve λ
+    next to the pole, ball's dyadic point is not the hard point, and a vanishing hard point leaves a
+    "nonzero" claim inconclusive)."""
+    for hard in ("near-pole", "near-pole-1e-8", "far-chart"):
+        got = by_claim(run_all("s34b_confirm_hard.py", methods=("float", "ball"), free=False,
+                               extra=("--hard", hard)))
+        assert len(got) == 4, (hard, got)
+        for c, verdicts in got.items():
+            assert not set(verdicts.values()) & set(PASSING), (hard, c, verdicts)
