@@ -1098,6 +1098,9 @@ class Trace:
                 return "a number that is not a constant (a negative power)"
             if op == "call" and a[1] == "resolvent":
                 return "a resolvent (μI − A)"
+            if op == "prim" and type(a[0]) is Named and a[0].qualname in self._SOLVING_STEPS:
+                return (f"the determinant of a linear system of the claim's own ({a[0].qualname.rsplit('.', 1)[-1]}: "
+                        "its matrix, from the claim's constraints or kinetic form, may be singular)")
             stack.extend(g.refs(i))
         return ""
 
@@ -1105,6 +1108,12 @@ class Trace:
     #: parameter, no element, no engine step)
     _CONSTANT_OPS = frozenset({"const", "add", "sub", "mul", "div", "neg", "pow", "matmul", "T", "trace", "inv"})
     _CONSTANT_CALLS = frozenset({"q", "const", "identity", "zeros", "scalar_matrix", "tr"})
+    #: engine steps that solve a linear system built from the claim's own functions or matrices (the
+    #: multipliers of its constraints, the inverse of its kinetic form, the twisted bracket matrix of
+    #: its magnetic matrix, the flows at a point it chooses): a division by their determinant
+    _SOLVING_STEPS = frozenset({"stiefelsym.systems.hamiltonian_flow", "stiefelsym.systems.euler_lagrange",
+                                "stiefelsym.twisted.bracket", "stiefelsym.twisted.flow",
+                                "stiefelsym.twisted.multiplier_flow", "stiefelsym.twisted.at_point"})
 
     def _constant(self, a: Any) -> bool:
         """Whether the argument ``a`` (a literal or a node) is made of constants only."""

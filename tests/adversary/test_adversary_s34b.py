@@ -80,6 +80,19 @@ def test_resolvents_hidden_divisions_and_maps_that_are_not_linear():
     assert true["modular"] == true["rational"] == "checked" and true["float"] == true["ball"] == "numeric", true
 
 
+def test_a_division_inside_an_engine_step_is_never_passed():
+    """The multipliers of `systems.hamiltonian_flow` with the claim's own constraints F₁ = tr(XᵀP),
+    F₂ = tr(PᵀP)/2 solve {F_i, F_j} μ = b, and {F₁, F₂} = tr(PᵀP) vanishes at P = 0: x ↦ μ₂x with a
+    polynomial inverse tr(PᵀP)y/2 was proved / checked / numeric (the engine step is one opaque node).
+    Closed: an engine step that solves a system built from the claim's own functions or matrices
+    (hamiltonian_flow, euler_lagrange, the twisted bracket, flow, multiplier flow, at_point) is refused
+    inside op and inv."""
+    got = by_claim(run_all("s34b_inverse_engine_division.py", size="3,2"))
+    assert len(got) == 2, got
+    for c, verdicts in got.items():
+        assert fixed(verdicts) == {"error"} and verdicts["free"] == "undecided", (c, verdicts)
+
+
 # -- 4b-B. the exact confirmation of a float / ball `numeric` ---------------------------------------------
 
 def test_a_residual_on_one_component_of_o_n_is_refuted_by_the_confirmation():
