@@ -3,6 +3,9 @@ the exact confirmation of a `numeric` verdict at one point mod p per component. 
 every run is the CLI in a fresh process, each test asserts the CORRECT outcome, and a route that is open
 today is a strict xfail with its reason."""
 
+import copy
+import json
+
 from adversary_cli import HERE, PASSING, cli
 from test_adversary_s33 import ALL_METHODS, parse_all
 
@@ -118,3 +121,24 @@ def test_hard_cases_do_not_confirm_a_false_numeric():
         assert len(got) == 4, (hard, got)
         for c, verdicts in got.items():
             assert not set(verdicts.values()) & set(PASSING), (hard, c, verdicts)
+
+
+def test_a_certificate_moved_to_a_false_inverse_is_rejected(tmp_path):
+    """The free record of a true Inverse statement (the triangular map) grafted onto the false one (an
+    inverse valid at r = 1 only), verdict `proved`: `check` runs the free method again and rejects it
+    (no hole found)."""
+    out = tmp_path / "run"
+    ids = ("adv-s34b-inv-triangular-true", "adv-s34b-inv-r1-only")
+    cli("verify", *ids, "--claims", str(HERE / "s34b_inverse_probes.py"), "--method", "free", "--jobs", "1",
+        "--report-dir", str(out))
+    payload = json.loads((out / "results.json").read_text())
+    records = {r["claim"]: r for r in payload["results"]}
+    assert records[ids[0]]["verdict"] == "proved" and records[ids[1]]["verdict"] == "undecided", records
+    true = records[ids[0]]
+    for key in ("verdict", "reductions", "certificate", "checks", "certificate_data", "message", "seconds"):
+        records[ids[1]][key] = copy.deepcopy(true[key])
+    forged = tmp_path / "forged.json"
+    forged.write_text(json.dumps(payload))
+    res = cli("check", str(forged))
+    assert res.returncode == 1 and f"REJECTED {ids[1]}" in res.stdout and "re-derived" in res.stdout, (
+        res.returncode, res.stdout[-2000:])
