@@ -1392,9 +1392,12 @@ def _confirm_numeric(res: Result, claim: Claim, n: int, r: int, seed: int, func:
     else:
         exact = run_points(claim, n, r, "modular", seed, func, options=hard, target=CONFIRM_TARGET, least=1)
     res.seconds += exact.seconds           # the record's time is the whole check's, confirmation included
-    if exact.verdict != "fails" and exact.checks and exact.verdict != "error":
+    if exact.checks and (exact.verdict in ("checked", "proved") if not (hard and hard.get("hard"))
+                         else exact.verdict not in ("fails", "error")):
         # the residuals vanished at the exact points (a nonzero residual below float64's resolution
-        # is what the confirmation looks for); the chance that one which is not identically 0 did
+        # is what the confirmation looks for); at random points the chance that one which is not
+        # identically 0 did is bounded (checked, not an `inconclusive` whose bound is too weak); at a
+        # hard case's chosen points there is no such bound (the verdict is modular's "not applicable")
         res.certificate = (res.certificate + "; " if res.certificate else "") + _confirm_text(exact)
         return res
     if exact.verdict != "fails":

@@ -85,3 +85,25 @@ def test_the_exact_cayley_point_is_on_the_cotangent_bundle(field, n, r, componen
     assert (X.T @ X - eye).is_zero()
     assert (X.T @ P + P.T @ X).is_zero()
     assert not (X.T @ P).is_zero()
+
+
+def test_a_confirmation_whose_bound_is_too_weak_is_no_pass(monkeypatch):
+    """Outside hard cases `numeric` stands only on a `checked` (or `proved`) confirmation: an exact run at
+    random points whose residuals vanished but whose false-pass bound is above the target (`inconclusive`)
+    leaves the float verdict `inconclusive`, with the reason."""
+    from stiefelsym import methods
+    from stiefelsym.results import Result
+
+    real = methods.run_points
+
+    def weak(*args, **kw):
+        res = real(*args, **kw)
+        assert res.verdict == "checked" and res.checks
+        res.verdict, res.false_pass_bound = "inconclusive", None
+        res.message = "every residual vanishes at 1 point, but the false-pass bound is too weak"
+        return res
+
+    monkeypatch.setattr(methods, "run_points", weak)
+    res = run_one(LA1, Size(4, 2), "float", seed=SEED)
+    assert res.verdict == "inconclusive" and "too weak" in res.message, (res.verdict, res.message)
+    assert isinstance(res, Result)
