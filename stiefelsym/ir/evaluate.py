@@ -223,7 +223,10 @@ class Evaluator:
 
     def _binary(f):
         def op(self, a, frame):
-            return f(self.arg(a[0], frame), self.arg(a[1], frame))
+            x, y = self.arg(a[0], frame), self.arg(a[1], frame)
+            if type(x) is Fraction or type(y) is Fraction:
+                x, y = _fractions(self, x, y)
+            return f(x, y)
         return op
 
     _ops: dict = {
@@ -344,12 +347,18 @@ def _kernel(op: str, a: tuple) -> Callable:
             if op == "mul":
                 return lambda m, ev: _scale(m[i], m[j])
             return lambda m, ev: f(m[i], m[j])
-        if type(x) is Ref and type(y) in (int, Fraction):
+        if type(x) is Ref and type(y) is int:
             i = x.i
             return lambda m, ev: f(m[i], y)
-        if type(y) is Ref and type(x) in (int, Fraction):
+        if type(y) is Ref and type(x) is int:
             j = y.i
             return lambda m, ev: f(x, m[j])
+        if type(x) is Ref and type(y) is Fraction:
+            i = x.i
+            return lambda m, ev: f(*_fractions(ev, m[i], y))
+        if type(y) is Ref and type(x) is Fraction:
+            j = y.i
+            return lambda m, ev: f(*_fractions(ev, x, m[j]))
     if op == "neg" and type(a[0]) is Ref:
         i = a[0].i
         return lambda m, ev: -m[i]
@@ -366,6 +375,19 @@ def _kernel(op: str, a: tuple) -> Callable:
         i, name = a[0].i, a[1]
         return lambda m, ev: getattr(m[i], name)
     return lambda m, ev: ev._ops[op](ev, a, ev.root)
+
+
+def _fractions(ev: "Evaluator", x: Any, y: Any) -> tuple[Any, Any]:
+    """The operands of an arithmetic op where one is a Fraction constant: next to a number of the scene
+    (not a matrix, which converts constants itself) the constant becomes that scene's own element
+    (``scene.const``), since number types such as nmod, fmpq or a symengine symbol do not mix with a
+    Fraction."""
+    scene = ev.root.bind[0]
+    if type(x) is Fraction and type(y) is not Fraction and not isinstance(y, Mat) and x.denominator != 1:
+        return scene.const(x), y
+    if type(y) is Fraction and type(x) is not Fraction and not isinstance(x, Mat) and y.denominator != 1:
+        return x, scene.const(y)
+    return x, y
 
 
 def _scale(x: Any, y: Any) -> Any:
