@@ -604,9 +604,11 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                 if claim.realization == "metric" and visible:
                     scene, coords, missing = None, list(visible), True
                     break
-                field = SymbolicField()
-                scene = Scene(n, r, field, chart="equivariant", realization=claim.realization,
-                              right_reduction=right)
+                def build(right=right) -> tuple:
+                    f = SymbolicField()
+                    return f, Scene(n, r, f, chart="equivariant", realization=claim.realization,
+                                    right_reduction=right)
+                field, scene = _symbolic_chart((claim.id, claim.realization, "exact", n, r, "equivariant", right), build)
                 missing = False   # the equivariant chart cannot provide an object (a_i, a second point)
                 try:
                     checks = call_claim(func, scene)
@@ -641,8 +643,10 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                     return res
                 evaluations = []
                 for comp in ((0, 1) if r == n else (0,)):
-                    f2 = SymbolicField()
-                    sc = Scene(n, r, f2, chart="cayley", component=comp, realization=claim.realization)
+                    def build_cayley(comp=comp) -> tuple:
+                        f = SymbolicField()
+                        return f, Scene(n, r, f, chart="cayley", component=comp, realization=claim.realization)
+                    f2, sc = _symbolic_chart((claim.id, claim.realization, "exact", n, r, "cayley", comp), build_cayley)
                     ch = call_claim(func, sc)
                     evaluations.append(_evaluate(ch, f2, lambda R, f2=f2: _exact_rank(
                         R, f2, randomized, lambda: degree_bound(claim, n, r, func).numerator, key)))
@@ -714,6 +718,14 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
         return res
     res.verdict = "proved"
     return res
+
+
+def _symbolic_chart(key: tuple, build: Callable[[], tuple]) -> tuple:
+    """``build()``'s (field, scene) of a chart of the symbolic method; in the mutation analysis, the
+    chart of the claim as printed with its node values, lent (:meth:`PointLoan.chart`)."""
+    if _LOAN is None:
+        return build()
+    return _LOAN.chart(key, build)
 
 
 def _rational_witness(claim: Claim, n: int, r: int, seed: int, func: Callable) -> dict | None:
@@ -935,6 +947,35 @@ class PointLoan:
         out = build()
         if self.recording:
             memo: dict = {}
+            out[-1]._node_memo = memo
+            self._points[key] = [*out, memo, None]
+        return out
+
+    def chart(self, key: tuple, build: Callable[[], tuple]) -> tuple:
+        """``build()``'s (field, scene) for the symbolic method: built and kept while recording, lent
+        otherwise (a scene of the same chart over the same field, with the same symbols).
+
+        The chart has no random draw, so the printed claim's node values are the values of the same
+        subgraphs in a mutant's graph.  A lent scene builds its objects again from the shared symbols
+        (a build records its own looks at coordinates) and records its looks at coordinates in the
+        kept scene's record, emptied first: the matrices of earlier evaluations (the shared node
+        values) record into that very object, and a shared value records again what its computation
+        recorded (:meth:`.ir.evaluate.Evaluator.run`).  So the lent scene's record, from which the
+        method decides its chart, is that of a run on a scene of its own."""
+        hit = self._points.get(key)
+        if hit is not None and not self.recording:
+            field, scene, memo, snapshot = hit
+            if snapshot is None:
+                snapshot = hit[-1] = scene._lent()     # the symbols the printed claim's run drew
+            lent = snapshot._lent()
+            lent._cache = {}
+            lent._tracker = scene._tracker
+            lent._tracker.restart()
+            lent._node_memo = dict(memo)
+            return field, lent
+        out = build()
+        if self.recording:
+            memo = {}
             out[-1]._node_memo = memo
             self._points[key] = [*out, memo, None]
         return out
