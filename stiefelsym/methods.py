@@ -15,6 +15,7 @@ and a check without entries is an error under every method.
 """
 from __future__ import annotations
 
+import dataclasses
 import math
 import os
 import random
@@ -928,6 +929,10 @@ class PointLoan:
         #: exact method's one-point rational run for its witness computes, on the same lent points
         #: (see :func:`_rational_witness`)
         self.witnesses: dict[tuple, tuple] = {}
+        #: (claim, realization, n, r, seed, id of the function) -> (function, evaluations): the checks of
+        #: a run no parameter entered, evaluated over Q (the same for its rational and modular runs, see
+        #: :func:`_constant_evaluations`)
+        self.constants: dict[tuple, tuple] = {}
 
     def scene(self, key: tuple, build: Callable[[], tuple]) -> tuple:
         """``build()``'s (fields..., scene) for this key: built and kept while recording, lent (a copy
@@ -987,6 +992,8 @@ class PointLoan:
             del self._points[key]
         for key in [k for k in self.witnesses if k[0] == claim_id]:
             del self.witnesses[key]
+        for key in [k for k in self.constants if k[0] == claim_id]:
+            del self.constants[key]
 
 
 def _field_state(f: Any) -> tuple | None:
@@ -1339,15 +1346,34 @@ def _cap_text(eps: float) -> str:
             f"{POINTS_TARGET:.0e} ({POINTS_CAP} points give {eps ** POINTS_CAP:.1e})")
 
 
+def _constant_evaluations(claim: Claim, n: int, r: int, seed: int, func: Callable, options: dict | None,
+                          field: RationalField) -> list[tuple[int, Evaluation]]:
+    """The checks of a run that no parameter entered, evaluated over Q at the point the seed gives (one
+    per component).  A pure function of the function, the size and the seed: on lent points (the
+    mutation analysis) the rational and the modular run of the same mutant at the same size both come
+    here, and the second takes the first one's evaluations (:attr:`PointLoan.constants`, keyed by the
+    function's identity) instead of computing them again; each run gets copies of the outcomes."""
+    loan = _LOAN if not options else None
+    key = (claim.id, claim.realization, n, r, seed, id(func))
+    hit = loan.constants.get(key) if loan is not None else None
+    if hit is None or hit[0] is not func:
+        evaluations = []
+        for comp in ((0, 1) if r == n else (0,)):
+            scene = Scene(n, r, field, chart="cayley", rng=random.Random(seed), component=comp,
+                          realization=claim.realization, options=options)
+            evaluations.append((comp, _evaluate(call_claim(func, scene), field, _constant_rank)))
+        hit = (func, evaluations)
+        if loan is not None:
+            loan.constants[key] = hit
+    return [(comp, dataclasses.replace(e, outcomes=[dataclasses.replace(o) for o in e.outcomes]))
+            for comp, e in hit[1]]
+
+
 def _run_constant(claim: Claim, n: int, r: int, seed: int, func: Callable, options: dict | None,
                   res: Result, t0: float) -> Result:
     """No parameter entered the checks: they are constants, decided exactly over Q (no probability)."""
     field = RationalField(RATIONAL_BOUND)
-    evaluations = []
-    for comp in ((0, 1) if r == n else (0,)):
-        scene = Scene(n, r, field, chart="cayley", rng=random.Random(seed), component=comp,
-                      realization=claim.realization, options=options)
-        evaluations.append((comp, _evaluate(call_claim(func, scene), field, _constant_rank)))
+    evaluations = _constant_evaluations(claim, n, r, seed, func, options, field)
     res.seconds = time.perf_counter() - t0
     res.checks = [o for _, e in evaluations for o in e.outcomes]
     nonzero = [(comp, z) for comp, e in evaluations for z in e.nonzero]
