@@ -34,11 +34,15 @@ from .native import backend
 class CoordinateTracker:
     """Records, append-only, how claim code looked at coordinates of ℝⁿ; knows the sizes n, r."""
 
-    __slots__ = ("_used", "dims", "_sizes", "_refused", "_spaces")
+    __slots__ = ("_used", "dims", "_sizes", "_refused", "_spaces", "_log")
 
     def __init__(self, dims: dict[str, int] | None = None) -> None:
         self._used: list[str] = []
         self._refused: list[str] = []
+        #: while a node of a graph is evaluated for values shared between graphs (the mutation
+        #: analysis), every look at coordinates and every refusal, in order, repeats included: what a
+        #: graph that takes the node's value instead of computing it records again (engine only)
+        self._log: list[tuple[bool, str]] | None = None
         #: the spaces whose coordinates are recorded: ℝⁿ, and ℝʳ too where the chart's reduction
         #: also uses O(r) (the equivariant chart of the metric realization)
         self._spaces: tuple[str, ...] = ("n",)
@@ -55,6 +59,8 @@ class CoordinateTracker:
             return v
 
     def touch(self, what: str) -> None:
+        if self._log is not None:
+            self._log.append((True, what))
         if what not in self._used:
             self._used.append(what)
 
@@ -74,12 +80,28 @@ class CoordinateTracker:
     def refuse(self, what: str) -> None:
         """Record something the engine refused to claim code (before the refusal is raised):
         the record outlives the exception, whatever the claim does with it."""
+        if self._log is not None:
+            self._log.append((False, what))
         if what not in self._refused:
             self._refused.append(what)
 
     @property
     def refused(self) -> tuple[str, ...]:
         return tuple(self._refused)
+
+    def replay(self, log: tuple[tuple[bool, str], ...]) -> None:
+        """Record again what a log of :attr:`_log` recorded (looks at coordinates, refusals), in order."""
+        for looked, what in log:
+            if looked:
+                self.touch(what)
+            else:
+                self.refuse(what)
+
+    def restart(self) -> None:
+        """Forget every record (engine only: a chart lent again to the next graph evaluated on it, whose
+        matrices of earlier evaluations record into this very object)."""
+        self._used.clear()
+        self._refused.clear()
 
 
 class NeedsCoordinates(Exception):

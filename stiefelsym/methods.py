@@ -15,6 +15,7 @@ and a check without entries is an error under every method.
 """
 from __future__ import annotations
 
+import dataclasses
 import math
 import os
 import random
@@ -609,9 +610,11 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                 if claim.realization == "metric" and visible:
                     scene, coords, missing = None, list(visible), True
                     break
-                field = SymbolicField()
-                scene = Scene(n, r, field, chart="equivariant", realization=claim.realization,
-                              right_reduction=right)
+                def build(right=right) -> tuple:
+                    f = SymbolicField()
+                    return f, Scene(n, r, f, chart="equivariant", realization=claim.realization,
+                                    right_reduction=right)
+                field, scene = _symbolic_chart((claim.id, claim.realization, "exact", n, r, "equivariant", right), build)
                 missing = False   # the equivariant chart cannot provide an object (a_i, a second point)
                 try:
                     checks = call_claim(func, scene)
@@ -646,8 +649,10 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                     return res
                 evaluations = []
                 for comp in ((0, 1) if r == n else (0,)):
-                    f2 = SymbolicField()
-                    sc = Scene(n, r, f2, chart="cayley", component=comp, realization=claim.realization)
+                    def build_cayley(comp=comp) -> tuple:
+                        f = SymbolicField()
+                        return f, Scene(n, r, f, chart="cayley", component=comp, realization=claim.realization)
+                    f2, sc = _symbolic_chart((claim.id, claim.realization, "exact", n, r, "cayley", comp), build_cayley)
                     ch = call_claim(func, sc)
                     evaluations.append(_evaluate(ch, f2, lambda R, f2=f2: _exact_rank(
                         R, f2, randomized, lambda: degree_bound(claim, n, r, func).numerator, key)))
@@ -719,6 +724,14 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
         return res
     res.verdict = "proved"
     return res
+
+
+def _symbolic_chart(key: tuple, build: Callable[[], tuple]) -> tuple:
+    """``build()``'s (field, scene) of a chart of the symbolic method; in the mutation analysis, the
+    chart of the claim as printed with its node values, lent (:meth:`PointLoan.chart`)."""
+    if _LOAN is None:
+        return build()
+    return _LOAN.chart(key, build)
 
 
 def _rational_witness(claim: Claim, n: int, r: int, seed: int, func: Callable) -> dict | None:
@@ -921,6 +934,10 @@ class PointLoan:
         #: exact method's one-point rational run for its witness computes, on the same lent points
         #: (see :func:`_rational_witness`)
         self.witnesses: dict[tuple, tuple] = {}
+        #: (claim, realization, n, r, seed, id of the function) -> (function, evaluations): the checks of
+        #: a run no parameter entered, evaluated over Q (the same for its rational and modular runs, see
+        #: :func:`_constant_evaluations`)
+        self.constants: dict[tuple, tuple] = {}
 
     def scene(self, key: tuple, build: Callable[[], tuple]) -> tuple:
         """``build()``'s (fields..., scene) for this key: built and kept while recording, lent (a copy
@@ -944,6 +961,35 @@ class PointLoan:
             self._points[key] = [*out, memo, None]
         return out
 
+    def chart(self, key: tuple, build: Callable[[], tuple]) -> tuple:
+        """``build()``'s (field, scene) for the symbolic method: built and kept while recording, lent
+        otherwise (a scene of the same chart over the same field, with the same symbols).
+
+        The chart has no random draw, so the printed claim's node values are the values of the same
+        subgraphs in a mutant's graph.  A lent scene builds its objects again from the shared symbols
+        (a build records its own looks at coordinates) and records its looks at coordinates in the
+        kept scene's record, emptied first: the matrices of earlier evaluations (the shared node
+        values) record into that very object, and a shared value records again what its computation
+        recorded (:meth:`.ir.evaluate.Evaluator.run`).  So the lent scene's record, from which the
+        method decides its chart, is that of a run on a scene of its own."""
+        hit = self._points.get(key)
+        if hit is not None and not self.recording:
+            field, scene, memo, snapshot = hit
+            if snapshot is None:
+                snapshot = hit[-1] = scene._lent()     # the symbols the printed claim's run drew
+            lent = snapshot._lent()
+            lent._cache = {}
+            lent._tracker = scene._tracker
+            lent._tracker.restart()
+            lent._node_memo = dict(memo)
+            return field, lent
+        out = build()
+        if self.recording:
+            memo = {}
+            out[-1]._node_memo = memo
+            self._points[key] = [*out, memo, None]
+        return out
+
 
     def forget(self, claim_id: str) -> None:
         """Drop the points kept for one claim (its mutants are done)."""
@@ -951,6 +997,8 @@ class PointLoan:
             del self._points[key]
         for key in [k for k in self.witnesses if k[0] == claim_id]:
             del self.witnesses[key]
+        for key in [k for k in self.constants if k[0] == claim_id]:
+            del self.constants[key]
 
 
 def _field_state(f: Any) -> tuple | None:
@@ -1309,15 +1357,34 @@ def _cap_text(eps: float, target: float = POINTS_TARGET) -> str:
             f"{target:.0e} ({POINTS_CAP} points give {eps ** POINTS_CAP:.1e})")
 
 
+def _constant_evaluations(claim: Claim, n: int, r: int, seed: int, func: Callable, options: dict | None,
+                          field: RationalField) -> list[tuple[int, Evaluation]]:
+    """The checks of a run that no parameter entered, evaluated over Q at the point the seed gives (one
+    per component).  A pure function of the function, the size and the seed: on lent points (the
+    mutation analysis) the rational and the modular run of the same mutant at the same size both come
+    here, and the second takes the first one's evaluations (:attr:`PointLoan.constants`, keyed by the
+    function's identity) instead of computing them again; each run gets copies of the outcomes."""
+    loan = _LOAN if not options else None
+    key = (claim.id, claim.realization, n, r, seed, id(func))
+    hit = loan.constants.get(key) if loan is not None else None
+    if hit is None or hit[0] is not func:
+        evaluations = []
+        for comp in ((0, 1) if r == n else (0,)):
+            scene = Scene(n, r, field, chart="cayley", rng=random.Random(seed), component=comp,
+                          realization=claim.realization, options=options)
+            evaluations.append((comp, _evaluate(call_claim(func, scene), field, _constant_rank)))
+        hit = (func, evaluations)
+        if loan is not None:
+            loan.constants[key] = hit
+    return [(comp, dataclasses.replace(e, outcomes=[dataclasses.replace(o) for o in e.outcomes]))
+            for comp, e in hit[1]]
+
+
 def _run_constant(claim: Claim, n: int, r: int, seed: int, func: Callable, options: dict | None,
                   res: Result, t0: float) -> Result:
     """No parameter entered the checks: they are constants, decided exactly over Q (no probability)."""
     field = RationalField(RATIONAL_BOUND)
-    evaluations = []
-    for comp in ((0, 1) if r == n else (0,)):
-        scene = Scene(n, r, field, chart="cayley", rng=random.Random(seed), component=comp,
-                      realization=claim.realization, options=options)
-        evaluations.append((comp, _evaluate(call_claim(func, scene), field, _constant_rank)))
+    evaluations = _constant_evaluations(claim, n, r, seed, func, options, field)
     res.seconds = time.perf_counter() - t0
     res.checks = [o for _, e in evaluations for o in e.outcomes]
     nonzero = [(comp, z) for comp, e in evaluations for z in e.nonzero]

@@ -54,6 +54,7 @@ import ast
 import contextlib
 import copy
 import functools
+import gc
 import inspect
 import json
 import sys
@@ -1257,14 +1258,38 @@ def _run_mutation(claims, sizes, methods, seed, on_result, limit, only, jobs, lo
     done: dict[int, _ClaimRun] = {}
     emitted = 0
     try:
-        for ci, run in zip(order, _map(order, jobs)):
-            done[ci] = run
-            while emitted in done:
-                _take(report.claims[emitted], done.pop(emitted), on_result)
-                emitted += 1
+        with _collector_for_many_runs():
+            for ci, run in zip(order, _map(order, jobs)):
+                done[ci] = run
+                while emitted in done:
+                    _take(report.claims[emitted], done.pop(emitted), on_result)
+                    emitted += 1
     finally:
         _WORK.clear()
     return report
+
+
+#: the cyclic garbage collector's thresholds during a mutation analysis (see _collector_for_many_runs)
+COLLECTOR_THRESHOLDS = (20_000, 20, 20)
+
+
+@contextlib.contextmanager
+def _collector_for_many_runs() -> Iterator[None]:
+    """Python's cyclic garbage collector scheduled for thousands of short runs (inherited by forked
+    workers): what exists before them (the engine, the libraries, the catalog, the claims' graphs) is
+    frozen out of its passes, and its youngest generation is collected every 20,000 allocations, not
+    every 700.  At the default schedule the collector took about a quarter of the CPU time (the
+    analyses of ym-second-derivative and pencil-rank-a1: 7.0 of 25 s, with 37 full passes; so: 1.9 of
+    17 s, none).  Nothing is freed that would not be freed anyway, only later; no result depends on it."""
+    old = gc.get_threshold()
+    gc.collect()
+    gc.freeze()
+    gc.set_threshold(*COLLECTOR_THRESHOLDS)
+    try:
+        yield
+    finally:
+        gc.set_threshold(*old)
+        gc.unfreeze()
 
 
 @dataclass

@@ -14,7 +14,7 @@ import operator
 from fractions import Fraction
 from typing import Any, Callable
 
-from ..matrix import Mat
+from ..matrix import CoordinateTracker, Mat
 from ..native import backend
 from ..matrix import block as _block
 from .graph import Graph, Named, Ref, Size, _encode
@@ -111,18 +111,38 @@ class Evaluator:
             return memo[self.g.output.i]
         # values shared with other graphs evaluated on this very point, by the structure of the
         # node's whole subgraph (the mutation analysis: a mutant recomputes only what it changed)
+        # Each shared value keeps the looks at coordinates (and refusals) its computation recorded, in
+        # order and repeats included, and a graph that takes the value records them again: the record
+        # of the scene is the one a computation of every node would give (the exact method decides its
+        # chart from it)
         keys = node_keys(self.g)
         ops = self.g.ops
+        tracker = getattr(self.root.bind[0], "_tracker", None)
+        if type(tracker) is not CoordinateTracker:
+            tracker = None
         for i, kernel in _program(self.g, self.deps):
             if ops[i] in UNSHARED:
                 memo[i] = kernel(memo, self)
                 continue
             k = keys[i]
-            v = shared.get(k, _MISSING)
-            if v is _MISSING:
-                v = kernel(memo, self)
+            hit = shared.get(k, _MISSING)
+            if hit is _MISSING:
+                if tracker is None:
+                    v, log = kernel(memo, self), ()
+                else:
+                    outer, tracker._log = tracker._log, []
+                    try:
+                        v = kernel(memo, self)
+                    finally:
+                        log, tracker._log = tuple(tracker._log), outer
+                        if outer is not None:
+                            outer.extend(log)
                 if shareable(v):
-                    shared[k] = v
+                    shared[k] = (v, log)
+            else:
+                v, log = hit
+                if log and tracker is not None:
+                    tracker.replay(log)
             memo[i] = v
         return memo[self.g.output.i]
 
