@@ -625,9 +625,21 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                 why = (covariant_by_construction(scene.tracker.spaces) if not coords else
                        f"(the claim reads {', '.join(coords)}) {reason}")
                 stated = scene.equivariant_reduction() or EQUIVARIANT_REDUCTION
-                charts.append((scene, stated.format(why=why)))
+                second = scene.second_point_text()
+                charts.append((scene, stated.format(why=why) + second))
                 evaluations = [_evaluate(checks, field, lambda R: _exact_rank(
                     R, field, randomized, lambda: degree_bound(claim, n, r, func).numerator, key))]
+                if second and n == r:
+                    # Y on the other component of O(n): the same chart, Y times diag(-1, 1, .., 1)
+                    f1 = SymbolicField()
+                    sc1 = Scene(n, r, f1, chart="equivariant", realization=claim.realization,
+                                right_reduction=scene.right_reduction, component=1)
+                    ch1 = call_claim(func, sc1)
+                    if list(sc1.tracker.used) != coords:
+                        raise DegenerateError("the two components of the second point read different coordinates")
+                    evaluations.append(_evaluate(ch1, f1, lambda R, f1=f1: _exact_rank(
+                        R, f1, randomized, lambda: degree_bound(claim, n, r, func).numerator, key)))
+                    charts.append((sc1, stated.format(why=why) + sc1.second_point_text()))
             else:
                 if n > EXACT_CAYLEY_MAX_N:
                     res.verdict = "inconclusive"

@@ -254,6 +254,7 @@ class Scene(PaperObjects):
         self._chart = chart
         self._rng = rng
         self._component = component
+        self._second_point_read = False
         self._realization = realization
         self._options = dict(options or {})
         self._tracker = tracker if tracker is not None else CoordinateTracker({"n": n, "r": r})
@@ -586,10 +587,67 @@ class Scene(PaperObjects):
 
     def _second_point(self):
         if self.chart == "equivariant":
-            # the reduction moves one point to X0; a second point stays generic
-            self.tracker.touch("a second point (Y, Q)")
-            raise CoordinateAccess("a second point (Y, Q)")
+            if self._realization == "metric":
+                # the metric chart's reduction by O(r) fixes B11 = X0ᵀ A⁻¹ X0 diagonal: a second
+                # point has no chart of its own here
+                self.tracker.touch("a second point (Y, Q)")
+                raise CoordinateAccess("a second point (Y, Q)")
+            # the reduction moves the first point to X0; the second stays generic
+            self._second_point_read = True
+            return self._cached("point2", self._equivariant_second_point)
         return self._cached("point2", lambda: self._stiefel_point("second_"))
+
+    right_reduction = _engine_property("_right_reduction", "whether the chart reduces by O(r) as well")
+
+    def second_point_text(self) -> str:
+        """The reduction's statement of the second point, when the claim read one (else '')."""
+        if not self._second_point_read:
+            return ""
+        comp = ""
+        if self.n == self.r:
+            comp = (f"; component {self.component % 2 + 1} of O(n) for Y "
+                    f"(D = {'I' if self.component % 2 == 0 else 'diag(-1,1,..,1)'})")
+        return ("; the second point (Y, Q) of T*V(n, r) generic: (g, h) act on it as on (X, P) and leave "
+                "it anywhere, Y = [I - S11 - K^T K; -2K] M^{-1} D, M = I + S11 + K^T K (the first r columns "
+                "of the Cayley transform of [[S11, -K^T], [K, 0]], S11 skew, K generic; dense in V(n, r)"
+                + comp + "), Q = YW' + (I - YY^T)Z' (W' skew, Z' generic)")
+
+    def _equivariant_second_point(self) -> tuple[Mat, Mat]:
+        """A generic second point (Y, Q) of T*V(n, r) on the equivariant chart: the first r columns
+        of the Cayley transform (I − S)(I + S)⁻¹ of the skew S = [[S11, −Kᵀ], [K, 0]] (S11 skew r × r,
+        K generic (n − r) × r), which are Y = [I − S11 − KᵀK; −2K] M⁻¹ with M = I + S11 + KᵀK
+        (Schur complement of the block I: one r × r inverse, where the full Cayley chart needs an
+        n × n one), times D = diag(−1, 1, .., 1) on the second component of O(n) when r = n;
+        Q = YW + (I − YYᵀ)Z (W skew, Z generic).  YᵀY = I_r identically (MᵀM = (I − S11 − KᵀK)ᵀ(I −
+        S11 − KᵀK) + 4KᵀK), and the map (S11, K) ↦ Y has the injective differential (S11, K) ↦
+        −2(S11; K) at 0 between spaces of the dimension of V(n, r): its image contains an open set of
+        the irreducible V(n, r) (of the component of O(n) for r = n), so it is Zariski dense there.
+        The O(n) reduction of the chart acts on both points: fixing X0 (and diagonalizing A22 by
+        the stabilizer of X0) leaves Y anywhere on V(n, r)."""
+        n, r = self.n, self.r
+        tr = self._tracker
+        Ir = self.identity(r, "r")
+        S11 = self._skew_params("second_S", r, "r")
+        Kfull = self.zeros(n, r, ("n", "r"))
+        for i in range(r, n):
+            for j in range(r):
+                Kfull._a[i, j] = self._param(param_name("second_K", i, j))
+        KtK = Kfull.T @ Kfull
+        M = Ir + S11 + KtK
+        D0 = np.eye(n, r, dtype=np.int64)
+        E = Mat._consts(D0, self._field, ("n", "r"), tr)
+        N = E @ (Ir - S11 - KtK) - Kfull * self.const(2)
+        Y = N @ M.inv()
+        if n == r and self.component % 2 == 1:
+            Dr = np.eye(r, dtype=np.int64)
+            Dr[0, 0] = -1
+            Y = Y @ Mat._consts(Dr, self._field, ("r", "r"), tr)
+        W = self._skew_params("second_W", r, "r")
+        Z = self._general_params("second_Z", n, r, ("n", "r"))
+        In = self.identity(n, "n")
+        Q = Y @ W + (In - Y @ Y.T) @ Z
+        self._done_with(Ir, S11, Kfull, KtK, M, E, N, W, Z, In)
+        return Y, Q
 
     @property
     def Y(self) -> Mat:
