@@ -629,7 +629,7 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                 charts.append((scene, stated.format(why=why) + second))
                 evaluations = [_evaluate(checks, field, lambda R: _exact_rank(
                     R, field, randomized, lambda: degree_bound(claim, n, r, func).numerator, key))]
-                if second and n == r:
+                if scene.second_point_read and n == r:
                     # Y on the other component of O(n): the same chart, Y times diag(-1, 1, .., 1)
                     f1 = SymbolicField()
                     sc1 = Scene(n, r, f1, chart="equivariant", realization=claim.realization,

@@ -255,6 +255,7 @@ class Scene(PaperObjects):
         self._rng = rng
         self._component = component
         self._second_point_read = False
+        self._complex_point_read = False
         self._realization = realization
         self._options = dict(options or {})
         self._tracker = tracker if tracker is not None else CoordinateTracker({"n": n, "r": r})
@@ -598,11 +599,20 @@ class Scene(PaperObjects):
         return self._cached("point2", lambda: self._stiefel_point("second_"))
 
     right_reduction = _engine_property("_right_reduction", "whether the chart reduces by O(r) as well")
+    second_point_read = _engine_property("_second_point_read", "whether the evaluation read (Y, Q)")
 
     def second_point_text(self) -> str:
-        """The reduction's statement of the second point, when the claim read one (else '')."""
+        """The reduction's statement of the second point and of the complex point, when the claim
+        read them (else '')."""
+        out = ""
+        if self._complex_point_read:
+            out = ("; the point (Z, Zdot) of TW(n, r), realified, generic: real (g, h) act on it as "
+                   "realify(g) Z realify(h)^T and leave it anywhere, Z = [I - S11 - K*K; -2K] M^{-1}, "
+                   "M = I + S11 + K*K (the first r columns of the unitary Cayley transform of "
+                   "[[S11, -K*], [K, 0]], S11 skew-Hermitian, K generic complex; dense in W(n, r)), "
+                   "Zdot = ZW' + (I - ZZ*)Y' (W' skew-Hermitian, Y' generic)")
         if not self._second_point_read:
-            return ""
+            return out
         comp = ""
         if self.n == self.r:
             comp = (f"; component {self.component % 2 + 1} of O(n) for Y "
@@ -610,7 +620,7 @@ class Scene(PaperObjects):
         return ("; the second point (Y, Q) of T*V(n, r) generic: (g, h) act on it as on (X, P) and leave "
                 "it anywhere, Y = [I - S11 - K^T K; -2K] M^{-1} D, M = I + S11 + K^T K (the first r columns "
                 "of the Cayley transform of [[S11, -K^T], [K, 0]], S11 skew, K generic; dense in V(n, r)"
-                + comp + "), Q = YW' + (I - YY^T)Z' (W' skew, Z' generic)")
+                + comp + "), Q = YW' + (I - YY^T)Z' (W' skew, Z' generic)" + out)
 
     def _equivariant_second_point(self) -> tuple[Mat, Mat]:
         """A generic second point (Y, Q) of T*V(n, r) on the equivariant chart: the first r columns
@@ -682,6 +692,9 @@ class Scene(PaperObjects):
     # -- the complex Stiefel variety W(n, r), realified (realify, conj: see PaperObjects) ----
     def _complex_point(self):
         n, r = self.n, self.r
+        if self.chart == "equivariant" and self._realization == "standard":
+            self._complex_point_read = True
+            return self._equivariant_complex_point()
         S = self.realify(self._skew_params("cS", n, "n"), self._sym_params("cH", n, "n"))
         I2 = self.identity(2 * n, "n+n")
         Q = Mat._rows(self._field.solve((I2 + S).T._a.tolist(), (I2 - S).T._a.tolist()),
@@ -690,6 +703,36 @@ class Scene(PaperObjects):
         Z = Mat._wrap(Q._a[:, cols].copy(), self._field, ("n+n", "r+r"), self.tracker)
         W = self.realify(self._skew_params("cW", r, "r"), self._sym_params("cK", r, "r"))
         Y = self.realify(self._general_params("cY", n, r, ("n", "r")), self._general_params("cV", n, r, ("n", "r")))
+        return Z, Z @ W + (I2 - Z @ Z.T) @ Y
+
+    def _equivariant_complex_point(self) -> tuple[Mat, Mat]:
+        """A generic point (Z, Ż) of the tangent bundle of W(n, r), realified, on the equivariant
+        chart: the first r columns of the unitary Cayley transform (I − S)(I + S)⁻¹ of the
+        skew-Hermitian S = [[S11, −K*], [K, 0]] (S11 skew-Hermitian r × r, K generic complex
+        (n − r) × r), Z = [I − S11 − K*K; −2K] M⁻¹ with M = I + S11 + K*K (one complex r × r
+        inverse, as for the second point (Y, Q) of :meth:`_equivariant_second_point`); Ż = ZW +
+        (I − ZZ*)Y (W skew-Hermitian, Y generic).  The map (S11, K) ↦ Z has the injective differential
+        (S11, K) ↦ −2(S11; K) at 0 between spaces of the real dimension 2nr − r² of W(n, r), the
+        image of the connected U(n): its image is Zariski dense.  Real g in O(n) and h in O(r) act
+        on it as realify(g) Z realify(h)ᵀ, and the chart's reduction leaves Z anywhere on W(n, r)."""
+        n, r = self.n, self.r
+        f, tr = self._field, self._tracker
+        S11 = self.realify(self._skew_params("cS", r, "r"), self._sym_params("cH", r, "r"))
+        Kre, Kim = self.zeros(n, r, ("n", "r")), self.zeros(n, r, ("n", "r"))
+        for i in range(r, n):
+            for j in range(r):
+                Kre._a[i, j] = self._param(param_name("cKre", i, j))
+                Kim._a[i, j] = self._param(param_name("cKim", i, j))
+        Kc = self.realify(Kre, Kim)
+        I2r = self.identity(2 * r, "r+r")
+        KtK = Kc.T @ Kc
+        M = I2r + S11 + KtK
+        E0 = np.eye(n, r, dtype=np.int64)
+        E = self.realify(Mat._consts(E0, f, ("n", "r"), tr), Mat._consts(0 * E0, f, ("n", "r"), tr))
+        Z = (E @ (I2r - S11 - KtK) - Kc * self.const(2)) @ M.inv()
+        W = self.realify(self._skew_params("cW", r, "r"), self._sym_params("cK", r, "r"))
+        Y = self.realify(self._general_params("cY", n, r, ("n", "r")), self._general_params("cV", n, r, ("n", "r")))
+        I2 = self.identity(2 * n, "n+n")
         return Z, Z @ W + (I2 - Z @ Z.T) @ Y
 
     @property
@@ -1438,6 +1481,36 @@ class _LiftedScene(Scene):
     @property
     def A(self) -> Mat:
         return self._cached("A", lambda: self._lift_primitive(self.base.A, None))
+
+    def _equivariant_complex_point(self) -> tuple[Mat, Mat]:
+        """A generic point (Z, Ż) of the tangent bundle of W(n, r), realified, on the equivariant
+        chart: the first r columns of the unitary Cayley transform (I − S)(I + S)⁻¹ of the
+        skew-Hermitian S = [[S11, −K*], [K, 0]] (S11 skew-Hermitian r × r, K generic complex
+        (n − r) × r), Z = [I − S11 − K*K; −2K] M⁻¹ with M = I + S11 + K*K (one complex r × r
+        inverse, as for the second point (Y, Q) of :meth:`_equivariant_second_point`); Ż = ZW +
+        (I − ZZ*)Y (W skew-Hermitian, Y generic).  The map (S11, K) ↦ Z has the injective differential
+        (S11, K) ↦ −2(S11; K) at 0 between spaces of the real dimension 2nr − r² of W(n, r), the
+        image of the connected U(n): its image is Zariski dense.  Real g in O(n) and h in O(r) act
+        on it as realify(g) Z realify(h)ᵀ, and the chart's reduction leaves Z anywhere on W(n, r)."""
+        n, r = self.n, self.r
+        f, tr = self._field, self._tracker
+        S11 = self.realify(self._skew_params("cS", r, "r"), self._sym_params("cH", r, "r"))
+        Kre, Kim = self.zeros(n, r, ("n", "r")), self.zeros(n, r, ("n", "r"))
+        for i in range(r, n):
+            for j in range(r):
+                Kre._a[i, j] = self._param(param_name("cKre", i, j))
+                Kim._a[i, j] = self._param(param_name("cKim", i, j))
+        Kc = self.realify(Kre, Kim)
+        I2r = self.identity(2 * r, "r+r")
+        KtK = Kc.T @ Kc
+        M = I2r + S11 + KtK
+        E0 = np.eye(n, r, dtype=np.int64)
+        E = self.realify(Mat._consts(E0, f, ("n", "r"), tr), Mat._consts(0 * E0, f, ("n", "r"), tr))
+        Z = (E @ (I2r - S11 - KtK) - Kc * self.const(2)) @ M.inv()
+        W = self.realify(self._skew_params("cW", r, "r"), self._sym_params("cK", r, "r"))
+        Y = self.realify(self._general_params("cY", n, r, ("n", "r")), self._general_params("cV", n, r, ("n", "r")))
+        I2 = self.identity(2 * n, "n+n")
+        return Z, Z @ W + (I2 - Z @ Z.T) @ Y
 
     @property
     def Zc(self) -> Mat:

@@ -108,3 +108,36 @@ def test_coupled_flow_proved_beyond_the_cayley_chart_and_the_printed_one_fails(n
     assert good.verdict == "proved", good.message
     bad = run_exact(_claim(lambda s: a.coupled_flow_checks(s, Q_Pi=True)), n, r, 0)
     assert bad.verdict == "fails", bad.message
+
+
+def _complex_on_W(s):
+    Z, V = s.Zc, s.Zc_dot
+    return {"Z*Z - I": Z.T @ Z - s.identity(2 * s.r, "r+r"), "Z*V + V*Z": Z.T @ V + V.T @ Z}
+
+
+def _complex_false(s):
+    """Z Z* = I_n: false for r < n."""
+    return {"ZZ* - I": s.Zc @ s.Zc.T - s.identity(2 * s.n, "n+n")}
+
+
+def test_the_complex_point_of_the_equivariant_chart_is_on_W_and_a_false_claim_fails():
+    res = run_exact(_claim(_complex_on_W), 4, 1, 0)
+    assert res.verdict == "proved", res.message
+    assert any("(Z, Zdot) of TW(n, r)" in d for d in res.reductions), res.reductions
+    assert run_exact(_claim(_complex_false), 3, 1, 0).verdict == "fails"
+    good = run_exact(a.complex_neumann_flow.claim, 4, 1, 0)
+    assert good.verdict == "proved", good.message
+
+
+def _complex_flow_corrupted(s):
+    """(W-eq) with Λ replaced by its conjugate transpose's negative: Z'' = −AZ − ZΛ."""
+    z = a.complex_point(s)
+    acc = a.complex_acceleration(s, z)
+    A = a.realify_real(s, s.A)
+    return {"Z'' - corrupted (W-eq)": acc - (-(A @ z["Z"]) - z["Z"] @ a.Lambda_complex(s, z))}
+
+
+def test_a_corrupted_complex_flow_fails_on_the_equivariant_chart():
+    res = run_exact(_claim(_complex_flow_corrupted), 3, 1, 0)
+    assert res.verdict == "fails", res.message
+    assert any("(Z, Zdot) of TW(n, r)" in d for d in res.reductions), res.reductions
