@@ -48,7 +48,7 @@ from .scene import CoordinateAccess, Scene, SizeError
 flint = lazy("flint", globals())
 mpmath = lazy("mpmath", globals())
 
-EXACT_CAYLEY_MAX_N = 3       # the symbolic Cayley chart (used when coordinates are read)
+EXACT_CAYLEY_MAX_N = 7       # the symbolic Cayley chart (used when coordinates are read; one r x r inverse for r < n)
 EXACT_TIME_LIMIT = 120.0      # seconds per (claim, size) for the symbolic method
 MAX_RESAMPLE = 8
 FLOAT_RESOLUTION = 1e-8       # a pass must be able to see a relative residual this small
@@ -568,6 +568,12 @@ def covariant_by_construction(spaces: tuple[str, ...]) -> str:
 CAYLEY_REDUCTION = (
     "rational parametrization: X = first r columns of (I - S)(I + S)^{{-1}}{D}, P = XW + (I - XX^T)Z "
     "(S, W skew, Z arbitrary), A = diag(a); dense in T*V(n, r){comp}")
+#: the symbolic method's Cayley chart for r < n (Scene._reduced_cayley_point)
+REDUCED_CAYLEY_REDUCTION = (
+    "rational parametrization: X = first r columns of (I - S)(I + S)^{-1} for S = [[S11, -K^T], [K, 0]] "
+    "(S11 skew r x r, K generic (n - r) x r), i.e. X = [I - S11 - K^T K; -2K] M^{-1}, M = I + S11 + K^T K; "
+    "P = XW + (I - XX^T)Z (W skew, Z arbitrary), A = diag(a); the map (S11, K) -> X has an injective "
+    "differential at 0 onto the tangent space of the irreducible V(n, r): dense in T*V(n, r)")
 
 
 def _reads_coordinates(claim: Claim, n: int, r: int, func: Callable) -> list[str]:
@@ -658,7 +664,7 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                     ch = call_claim(func, sc)
                     evaluations.append(_evaluate(ch, f2, lambda R, f2=f2: _exact_rank(
                         R, f2, randomized, lambda: degree_bound(claim, n, r, func).numerator, key)))
-                    desc = CAYLEY_REDUCTION.format(
+                    desc = REDUCED_CAYLEY_REDUCTION if r < n else CAYLEY_REDUCTION.format(
                         D=" D" if r == n else "",
                         comp=(f"; component {comp + 1} of O(n) (D = {'I' if comp == 0 else 'diag(-1,1,..,1)'})"
                               if r == n else ""))

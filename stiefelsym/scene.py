@@ -470,6 +470,8 @@ class Scene(PaperObjects):
                             acc = acc - B[i, k] * P._a[k, j]
                         P._a[i, j] = f.normalize(acc / B[i, i])
             return X, P
+        if isinstance(self._field, SymbolicField) and r < n:
+            return self._reduced_cayley_point(prefix)
         S = self._skew_params(f"{prefix}S", n, "n")
         In = self.identity(n, "n")
         minus, plus = In - S, In + S
@@ -496,6 +498,31 @@ class Scene(PaperObjects):
         if self._realization == "metric":
             P0 = self.A @ P0
         self._done_with(In, W, Z, XW, proj, Pz)
+        return X, P0
+
+    def _reduced_cayley_point(self, prefix: str) -> tuple[Mat, Mat]:
+        """The Cayley chart of the symbolic method: the first r columns of the Cayley transform of
+        the skew S = [[S11, −Kᵀ], [K, 0]] (S11 skew r × r, K generic (n − r) × r), X = [I − S11 −
+        KᵀK; −2K] M⁻¹ with M = I + S11 + KᵀK (one r × r inverse), P = XW + (I − XXᵀ)Z as in the full
+        chart (A @ that in the metric realization).  Dense in T*V(n, r) for r < n (see
+        :meth:`_equivariant_second_point`); the points of the sampling methods keep the full S."""
+        n, r = self.n, self.r
+        tr = self._tracker
+        Ir = self.identity(r, "r")
+        S11 = self._skew_params(f"{prefix}S", r, "r")
+        Kfull = self.zeros(n, r, ("n", "r"))
+        for i in range(r, n):
+            for j in range(r):
+                Kfull._a[i, j] = self._param(param_name(f"{prefix}K", i, j))
+        KtK = Kfull.T @ Kfull
+        E = Mat._consts(np.eye(n, r, dtype=np.int64), self._field, ("n", "r"), tr)
+        X = (E @ (Ir - S11 - KtK) - Kfull * self.const(2)) @ (Ir + S11 + KtK).inv()
+        W = self._skew_params(f"{prefix}W", r, "r")
+        Z = self._general_params(f"{prefix}Z", n, r, ("n", "r"))
+        In = self.identity(n, "n")
+        P0 = X @ W + (In - X @ X.T) @ Z
+        if self._realization == "metric":
+            P0 = self.A @ P0
         return X, P0
 
     def _done_with(self, *mats: Mat) -> None:

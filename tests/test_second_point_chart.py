@@ -141,3 +141,23 @@ def test_a_corrupted_complex_flow_fails_on_the_equivariant_chart():
     res = run_exact(_claim(_complex_flow_corrupted), 3, 1, 0)
     assert res.verdict == "fails", res.message
     assert any("(Z, Zdot) of TW(n, r)" in d for d in res.reductions), res.reductions
+
+
+def _rows_weighted(s, corrupt=False):
+    """tr(XᵀAX) = Σ_i a_i |row_i X|² with A = diag(a) (reads entries and the a_i); ``corrupt``:
+    the last weight a_n replaced by a_1."""
+    X, a_ = s.X, s.a
+    acc = s.q(0)
+    for i in range(s.n):
+        w = a_[0] if corrupt and i == s.n - 1 else a_[i]
+        for j in range(s.r):
+            acc = acc + w * X[i, j] * X[i, j]
+    return {"tr(X^T A X) - sum": s.tr(X.T @ s.A @ X) - acc}
+
+
+@pytest.mark.parametrize("n,r", [(6, 2), (5, 3)])
+def test_the_reduced_cayley_chart_proves_a_coordinate_claim_and_rejects_its_corruption(n, r):
+    res = run_exact(_claim(_rows_weighted), n, r, 0)
+    assert res.verdict == "proved", res.message
+    assert "S = [[S11, -K^T], [K, 0]]" in res.reductions[0]
+    assert run_exact(_claim(lambda s: _rows_weighted(s, corrupt=True)), n, r, 0).verdict == "fails"
