@@ -120,7 +120,7 @@ def flow_XP3(s):
     return flow_XP3_at(s, s.X, s.P)
 
 
-@claim("manakov-operator", paper=("Manakov", "Manakov*"), kind="id", exact_max_n=3,
+@claim("manakov-operator", paper=("Manakov", "Manakov*"), kind="id", exact_max_n=7,
        statement=r"\mathbb A(E_i\wedge E_j)=\tfrac{b_i-b_j}{a_i-a_j}E_i\wedge E_j\iff\mathbb A(\xi)=\ad_A^{-1}\ad_B\xi;"
                  r"\quad B=A^2:\ \mathbb A(\xi)=A\xi+\xi A")
 def manakov_operator_is_ad_inverse(s):

@@ -137,7 +137,7 @@ def pencil_is_poisson_and_compatible(s):
     return checks
 
 
-@claim("pencil-casimirs", paper=("central", "LAMBDA12"), kind="pb", exact_max_n=3,
+@claim("pencil-casimirs", paper=("central", "LAMBDA12"), kind="pb", exact_max_n=7,
        statement=r"\Lambda_{\lambda_1,\lambda_2}\big(\nabla\tr(\sqrt{\tfrac{\lambda_2}{\lambda_1+\lambda_2}}h+v-"
                  r"\tfrac{\lambda_2}{\lambda_1+\lambda_2}A)^k,\cdot\big)=0,\ \Lambda_{\lambda_1,\lambda_2}\cong gl(n);\quad "
                  r"\{\tr(\lambda h+v-\lambda^2A)^k,\tr(\mu h+v-\mu^2A)^m\}_{\Lambda_{\lambda_1,\lambda_2}}=0,\ k,m\le3")
@@ -480,6 +480,7 @@ def H_neum_eigenspace(t):
 
 
 @claim("singular-a-noether", paper=("No", "momentum_map", "Phi"), kind="pb", exact_max_n=2,
+       exact_max_r={3: 2, 4: 2, 5: 1, 6: 1, 7: 1},
        sizes=admissible(5, n_min=2, condition="n >= 2 (so(1) = 0)"),
        statement=r"a_1=\dots=a_{k_1},\dots:\quad \tfrac{d}{dt}\Phi_A=0,\ \Phi_A=\pr_{so(n)_A}(PX^T-XP^T),\quad "
                  r"\{\langle\Phi,\xi_A\rangle,H_{neum,\kappa}\}=0,\ \xi_A\in so(n)_A")
