@@ -244,7 +244,7 @@ def A_man_dual(s):
     return A_man_dual_at(s, s.X, s.P, inverse_of_A_plus_lambda(s))
 
 
-@claim("manakov-dual-lax", paper=("man-dual", "MAN-LA", "MAN-LA2", "LA-MAN3"), kind="lax", exact_max_n=2, exact_max_r={3: 1, 4: 1},
+@claim("manakov-dual-lax", paper=("man-dual", "MAN-LA", "MAN-LA2", "LA-MAN3"), kind="lax", exact_max_n=2, exact_max_r={3: 2, 4: 1, 5: 1, 6: 1},
        fails_at=lambda n, r: n >= 2,
        erratum="""Theorem man-dual: with the printed (LA-MAN3), whose entries contain (A + λI_n)^{-1}, the
        flow (dot_XP3*) does not imply (MAN-LA).  It does with (A + λI_n) in place of (A + λI_n)^{-1}:

@@ -182,7 +182,7 @@ def poisson_sphere_geodesic_flow(s):
 
 # -- the reflections (reflections) ----------------------------------------------------------
 
-@claim("dual-lax-reflections", paper=("DUAL", "reflections", "LA3", "LA4"), kind="id", exact_max_n=3, exact_max_r={4: 1, 5: 1},
+@claim("dual-lax-reflections", paper=("DUAL", "reflections", "LA3", "LA4"), kind="id", exact_max_n=3, exact_max_r={4: 2, 5: 1, 6: 1, 7: 1},
        sizes=admissible(n_max=5),
        statement=r"(X,P)\mapsto(S_iX,S_iP):\quad \mathcal L^*_{neum}(\lambda),\ \mathcal A^*_{neum}(\lambda)\ "
                  r"\text{are invariant},\quad i=1,\dots,n")
@@ -377,7 +377,7 @@ def I2l_general_line(s, l):
 
 
 @claim("2r-integrals-general-line", paper=("2r-integrals",), kind="id",
-       sizes=admissible(n_max=5, n_min=2, condition="n >= 2"), exact_max_n=1, exact_max_r={2: 1, 3: 1, 4: 1},
+       sizes=admissible(n_max=5, n_min=2, condition="n >= 2"), exact_max_n=2, exact_max_r={3: 2, 4: 1},
        fails_at=lambda n, r: r >= 2,
        erratum="""The general line of (2r-integrals), I_{2l} = sum_{I_l} a/prod(lambda - a_i) sum_{J_l}
        (e_{j_1}^...^e_{j_l})^2_{I_l} + sum_{I_{l+1}} a/prod(lambda - a_i) sum_{J_l, 1<=i<=r}
@@ -453,7 +453,7 @@ def cone_equation(s, V, b):
 
 
 @claim("tangency", paper=("tangency", "cone0"), kind="geo",
-       sizes=admissible(n_max=5), exact_max_n=3, exact_max_r={4: 1, 5: 1},
+       sizes=admissible(n_max=5), exact_max_n=3, exact_max_r={4: 2, 5: 2, 6: 1, 7: 1},
        statement=r"\det(V^TBV)=\sum_I|B|^I_IG_I^2,\qquad V^TB\,v=\det(V^TBV)\,E_1,\ \ "
                  r"\langle v,Bv\rangle=\det(V^TBV)\,\mathrm{adj}(V^TBV)_{11},\ \ v=V\,\mathrm{adj}(V^TBV)E_1")
 def planes_tangent_to_a_cone(s):
@@ -515,7 +515,7 @@ def tangency_determinant(t):
 
 
 @claim("gen-chasles", paper=("Gen_Chasles", "conf0", "VV", "cone0", "tangency", "2r-integrals"), kind="geo",
-       sizes=admissible(n_max=5), exact_max_n=1, exact_max_r={2: 1, 3: 1},
+       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 1},
        statement=r"a(\lambda)\det(\mathcal V^TB(\lambda)\mathcal V)=a(\lambda)\sum_{I}|B(\lambda)|^I_IG_I(\mathcal V)^2"
                  r"=\mathcal I_{2r}(\lambda)=a(\lambda)\det\mathcal L^*_{neum}(\lambda),\quad "
                  r"\tfrac{d}{dt}\det(\mathcal V^TB(\lambda)\mathcal V)=0\ \text{along (N0\_XP2), (NE\_XP)}")
@@ -541,7 +541,7 @@ def rotation(s):
 
 
 @claim("gen-chasles2", paper=("Gen_Chasles2", "VVB", "conf", "conf0"), kind="geo",
-       sizes=admissible(n_max=5), exact_max_n=1, exact_max_r={2: 1, 3: 1},
+       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 1, 4: 1, 5: 1},
        statement=r"\mathcal V(XB,PB)\begin{pmatrix}B^{-1}&0\\0&B^{-1}\end{pmatrix}=\begin{pmatrix}\mathbf I_n&0\\0&B^{-1}"
                  r"\end{pmatrix}\mathcal V(X,P),\ \det(\mathcal V(XB,PB)^TB(\lambda)\mathcal V(XB,PB))="
                  r"\det(\mathcal V^TB(\lambda)\mathcal V),\ B\in SO(r);\quad \mathfrak i(x)\in\bar Q(\lambda)\iff "
