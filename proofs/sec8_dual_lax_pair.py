@@ -250,7 +250,7 @@ def finite_difference(s, values, d):
 
 
 @claim("2r-integrals", paper=("2r-integrals", "LA3", "LA4"), kind="id",
-       sizes=admissible(n_max=5), exact_max_n=1,
+       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 1, 4: 1},
        statement=r"|a(\lambda)\mathcal L^*_{neum}(\lambda)-w\mathbf I|=w^{2r}+w^{2r-2}a\mathcal I_2+\dots"
                  r"+a^{2r-1}\mathcal I_{2r}:\ \text{no odd powers of }w,\ \deg_\lambda\mathcal I_{2l}=n-l,\ "
                  r"\text{leading coefficient of }\mathcal I_{2l}=\tbinom rl\ \text{on}\ V")
@@ -274,7 +274,7 @@ def spectral_curve_coefficients(s):
 
 
 @claim("2r-integrals-conserved", paper=("2r-integrals", "LA3", "LA4"), kind="pb",
-       sizes=admissible(n_max=5), exact_max_n=1,
+       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 2, 4: 1},
        statement=r"\tfrac{d}{dt}\mathcal I_{2l}(\lambda)=0\ \text{along (N0\_XP2) and (NE\_XP)},\quad "
                  r"\tfrac{d}{d\epsilon}\mathcal I_{2l}(\lambda)\big|_{(Xe^{\epsilon\eta},Pe^{\epsilon\eta})}=0,"
                  r"\ \eta\in so(r),\ l=1,\dots,r")
@@ -333,7 +333,7 @@ def I2r_printed(s, mu):
 
 
 @claim("2r-integrals-explicit", paper=("2r-integrals", "LA3"), kind="id",
-       sizes=admissible(n_max=5), exact_max_n=1,
+       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 1, 4: 1},
        statement=r"\mathcal I_2=\sum_i\frac{a(\lambda)}{\lambda-a_i}\big((e^i_1)^2+\dots+(e^i_r)^2\big)"
                  r"+\sum_{i<j}\frac{a(\lambda)\,\Phi_{ij}^2}{(\lambda-a_i)(\lambda-a_j)},\quad "
                  r"\mathcal I_{2r}=\sum_{k}\sum_{I_{r+k}}\frac{a(\lambda)}{\prod(\lambda-a_{i})}\sum_{i_1<\dots<i_k}"
@@ -597,7 +597,7 @@ def line_tangency(s, mu):
 
 
 @claim("mum-geod", paper=("Mum_geod",), kind="pb",
-       sizes=admissible(n_max=5, n_min=2, r_max=1, condition="r = 1, n >= 2"), exact_max_n=3,
+       sizes=admissible(n_max=5, n_min=2, r_max=1, condition="r = 1, n >= 2"), exact_max_n=4,
        statement=r"r=1:\ \{F_i,F_j\}=0,\ \ \mathrm{disc}_{l(t)}Q(\lambda)=-\sum_i\frac{F_i}{\lambda-a_i}"
                  r"=-\mathcal I_2(\lambda)/a(\lambda),\ \ \mathrm{disc}_{l(t)}Q(0)=\sum_iF_i/a_i")
 def moser_chasles_for_the_neumann_system(s):
