@@ -126,7 +126,7 @@ def dual_lax_matrix_is_hamiltonian(s):
 
 
 @claim("dual-lax-spectral-invariants", paper=("LA3", "LA4", "2r-integrals"), kind="pb",
-       sizes=admissible(n_max=5), exact_max_n=2,
+       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 2, 4: 1},
        statement=r"\tfrac{d}{dt}\tr\mathcal L^*_{neum}(\lambda)^k=0\ \text{along (N0\_XP2) and (NE\_XP)},\quad "
                  r"\tfrac{d}{d\epsilon}\tr\mathcal L^*_{neum}(\lambda)^k\big|_{(Xe^{\epsilon\eta},Pe^{\epsilon\eta})}=0,"
                  r"\ \eta\in so(r),\ k=2,4")
