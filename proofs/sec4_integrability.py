@@ -120,7 +120,7 @@ def flow_XP3(s):
     return flow_XP3_at(s, s.X, s.P)
 
 
-@claim("manakov-operator", paper=("Manakov", "Manakov*"), kind="id", exact_max_n=3,
+@claim("manakov-operator", paper=("Manakov", "Manakov*"), kind="id", exact_max_n=7,
        statement=r"\mathbb A(E_i\wedge E_j)=\tfrac{b_i-b_j}{a_i-a_j}E_i\wedge E_j\iff\mathbb A(\xi)=\ad_A^{-1}\ad_B\xi;"
                  r"\quad B=A^2:\ \mathbb A(\xi)=A\xi+\xi A")
 def manakov_operator_is_ad_inverse(s):
@@ -165,7 +165,7 @@ def manakov_flow_for_a_squared(s):
     }
 
 
-@claim("manakov-lax", paper=("Manakov", "dot_XP2", "man"), kind="lax", exact_max_n=2,
+@claim("manakov-lax", paper=("Manakov", "dot_XP2", "man"), kind="lax", exact_max_n=2, exact_max_r={3: 1},
        statement=r"\tfrac{d}{dt}\mathcal L_{man}(\lambda)=[\mathcal A_{man}(\lambda),\mathcal L_{man}(\lambda)],\quad "
                  r"\mathcal L_{man}=\Phi+\lambda A,\ \mathcal A_{man}=\mathbb A(\Phi)+\lambda B;\quad "
                  r"\tfrac{d}{dt}\tr\big(\lambda A+\textstyle\sum_i p_i\wedge e_i\big)^k=0")
@@ -244,7 +244,7 @@ def A_man_dual(s):
     return A_man_dual_at(s, s.X, s.P, inverse_of_A_plus_lambda(s))
 
 
-@claim("manakov-dual-lax", paper=("man-dual", "MAN-LA", "MAN-LA2", "LA-MAN3"), kind="lax", exact_max_n=2,
+@claim("manakov-dual-lax", paper=("man-dual", "MAN-LA", "MAN-LA2", "LA-MAN3"), kind="lax", exact_max_n=2, exact_max_r={3: 2, 4: 1, 5: 1, 6: 1},
        fails_at=lambda n, r: n >= 2,
        erratum="""Theorem man-dual: with the printed (LA-MAN3), whose entries contain (A + λI_n)^{-1}, the
        flow (dot_XP3*) does not imply (MAN-LA).  It does with (A + λI_n) in place of (A + λI_n)^{-1}:
@@ -274,6 +274,7 @@ def reflection(s, i):
 
 
 @claim("manakov-reflections", paper=("reflections", "man-dual"), kind="id", exact_max_n=2,
+       exact_max_r={3: 1, 4: 1, 5: 1, 6: 1, 7: 1},
        statement=r"(X,P)\mapsto(S_iX,S_iP):\quad (\text{dot\_XP3*})\ \text{is equivariant},\quad "
                  r"\mathcal L^*_{man}(\lambda),\ \mathcal A^*_{man}(\lambda)\ \text{are invariant},\quad i=1,\dots,n")
 def reflections_are_symmetries_of_the_dual_pair(s):

@@ -137,7 +137,7 @@ def pencil_is_poisson_and_compatible(s):
     return checks
 
 
-@claim("pencil-casimirs", paper=("central", "LAMBDA12"), kind="pb", exact_max_n=3,
+@claim("pencil-casimirs", paper=("central", "LAMBDA12"), kind="pb", exact_max_n=6,
        statement=r"\Lambda_{\lambda_1,\lambda_2}\big(\nabla\tr(\sqrt{\tfrac{\lambda_2}{\lambda_1+\lambda_2}}h+v-"
                  r"\tfrac{\lambda_2}{\lambda_1+\lambda_2}A)^k,\cdot\big)=0,\ \Lambda_{\lambda_1,\lambda_2}\cong gl(n);\quad "
                  r"\{\tr(\lambda h+v-\lambda^2A)^k,\tr(\mu h+v-\mu^2A)^m\}_{\Lambda_{\lambda_1,\lambda_2}}=0,\ k,m\le3")
@@ -479,7 +479,8 @@ def H_neum_eigenspace(t):
     return t.tr(t.P.T @ t.P) / 2 - (t.q(1, 2) + t.kappa) * t.tr(XtP @ XtP) + t.tr(t.X.T @ A_with_eigenspace(t) @ t.X) / 2
 
 
-@claim("singular-a-noether", paper=("No", "momentum_map", "Phi"), kind="pb", exact_max_n=2,
+@claim("singular-a-noether", paper=("No", "momentum_map", "Phi"), kind="pb", exact_max_n=3,
+       exact_max_r={4: 2, 5: 1, 6: 1, 7: 1},
        sizes=admissible(5, n_min=2, condition="n >= 2 (so(1) = 0)"),
        statement=r"a_1=\dots=a_{k_1},\dots:\quad \tfrac{d}{dt}\Phi_A=0,\ \Phi_A=\pr_{so(n)_A}(PX^T-XP^T),\quad "
                  r"\{\langle\Phi,\xi_A\rangle,H_{neum,\kappa}\}=0,\ \xi_A\in so(n)_A")
@@ -509,7 +510,7 @@ def H_neum_W(t):
     return t.tr(t.P.T @ t.P) / 2 - (t.q(1, 2) + t.kappa) * t.tr(XtP @ XtP) + t.tr(t.X.T @ A @ t.X) / 2
 
 
-@claim("singular-a-noether-covariant", paper=("No", "momentum_map", "Phi"), kind="pb", exact_max_n=4,
+@claim("singular-a-noether-covariant", paper=("No", "momentum_map", "Phi"), kind="pb", exact_max_n=4, exact_max_r={5: 2, 6: 1, 7: 1},
        sizes=admissible(5, where=lambda n, r: n - r >= 2, condition="n - r >= 2 (so(n - r) != 0)"),
        statement=r"A=\alpha\mathbf I+\beta WW^T:\ so(n)_A\supset so(\ker W^T),\quad "
                  r"\tfrac{d}{dt}\,Q\Phi Q=0\ \text{along (No)},\ Q=\det(W^TW)\mathbf I-W\,\mathrm{adj}(W^TW)W^T")

@@ -297,7 +297,7 @@ def H_quartic(s):
 
 
 @claim("quartic", paper=("quartic",), kind="id",
-       sizes=admissible(n_max=5, r_max=1, condition="r = 1"), exact_max_n=3,
+       sizes=admissible(n_max=5, r_max=1, condition="r = 1"), exact_max_n=7,
        statement=r"r=1:\ \tfrac12\tr(P^TP)+\tr(X^TA^2X)-\tr(X^TAXX^TAX)=\tfrac12(p,p)+\sum_i a_i^2e_i^2"
                  r"-\Big(\sum_ia_ie_i^2\Big)^2")
 def quartic_hamiltonian_for_r_1(s):

@@ -126,7 +126,7 @@ def dual_lax_matrix_is_hamiltonian(s):
 
 
 @claim("dual-lax-spectral-invariants", paper=("LA3", "LA4", "2r-integrals"), kind="pb",
-       sizes=admissible(n_max=5), exact_max_n=2,
+       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 2, 4: 1},
        statement=r"\tfrac{d}{dt}\tr\mathcal L^*_{neum}(\lambda)^k=0\ \text{along (N0\_XP2) and (NE\_XP)},\quad "
                  r"\tfrac{d}{d\epsilon}\tr\mathcal L^*_{neum}(\lambda)^k\big|_{(Xe^{\epsilon\eta},Pe^{\epsilon\eta})}=0,"
                  r"\ \eta\in so(r),\ k=2,4")
@@ -182,7 +182,7 @@ def poisson_sphere_geodesic_flow(s):
 
 # -- the reflections (reflections) ----------------------------------------------------------
 
-@claim("dual-lax-reflections", paper=("DUAL", "reflections", "LA3", "LA4"), kind="id", exact_max_n=3,
+@claim("dual-lax-reflections", paper=("DUAL", "reflections", "LA3", "LA4"), kind="id", exact_max_n=3, exact_max_r={4: 2, 5: 1, 6: 1, 7: 1},
        sizes=admissible(n_max=5),
        statement=r"(X,P)\mapsto(S_iX,S_iP):\quad \mathcal L^*_{neum}(\lambda),\ \mathcal A^*_{neum}(\lambda)\ "
                  r"\text{are invariant},\quad i=1,\dots,n")
@@ -250,7 +250,7 @@ def finite_difference(s, values, d):
 
 
 @claim("2r-integrals", paper=("2r-integrals", "LA3", "LA4"), kind="id",
-       sizes=admissible(n_max=5), exact_max_n=1,
+       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 1, 4: 1},
        statement=r"|a(\lambda)\mathcal L^*_{neum}(\lambda)-w\mathbf I|=w^{2r}+w^{2r-2}a\mathcal I_2+\dots"
                  r"+a^{2r-1}\mathcal I_{2r}:\ \text{no odd powers of }w,\ \deg_\lambda\mathcal I_{2l}=n-l,\ "
                  r"\text{leading coefficient of }\mathcal I_{2l}=\tbinom rl\ \text{on}\ V")
@@ -274,7 +274,7 @@ def spectral_curve_coefficients(s):
 
 
 @claim("2r-integrals-conserved", paper=("2r-integrals", "LA3", "LA4"), kind="pb",
-       sizes=admissible(n_max=5), exact_max_n=1,
+       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 2, 4: 1},
        statement=r"\tfrac{d}{dt}\mathcal I_{2l}(\lambda)=0\ \text{along (N0\_XP2) and (NE\_XP)},\quad "
                  r"\tfrac{d}{d\epsilon}\mathcal I_{2l}(\lambda)\big|_{(Xe^{\epsilon\eta},Pe^{\epsilon\eta})}=0,"
                  r"\ \eta\in so(r),\ l=1,\dots,r")
@@ -333,7 +333,7 @@ def I2r_printed(s, mu):
 
 
 @claim("2r-integrals-explicit", paper=("2r-integrals", "LA3"), kind="id",
-       sizes=admissible(n_max=5), exact_max_n=1,
+       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 1, 4: 1},
        statement=r"\mathcal I_2=\sum_i\frac{a(\lambda)}{\lambda-a_i}\big((e^i_1)^2+\dots+(e^i_r)^2\big)"
                  r"+\sum_{i<j}\frac{a(\lambda)\,\Phi_{ij}^2}{(\lambda-a_i)(\lambda-a_j)},\quad "
                  r"\mathcal I_{2r}=\sum_{k}\sum_{I_{r+k}}\frac{a(\lambda)}{\prod(\lambda-a_{i})}\sum_{i_1<\dots<i_k}"
@@ -377,7 +377,7 @@ def I2l_general_line(s, l):
 
 
 @claim("2r-integrals-general-line", paper=("2r-integrals",), kind="id",
-       sizes=admissible(n_max=5, n_min=2, condition="n >= 2"), exact_max_n=1,
+       sizes=admissible(n_max=5, n_min=2, condition="n >= 2"), exact_max_n=2, exact_max_r={3: 2, 4: 1},
        fails_at=lambda n, r: r >= 2,
        erratum="""The general line of (2r-integrals), I_{2l} = sum_{I_l} a/prod(lambda - a_i) sum_{J_l}
        (e_{j_1}^...^e_{j_l})^2_{I_l} + sum_{I_{l+1}} a/prod(lambda - a_i) sum_{J_l, 1<=i<=r}
@@ -453,7 +453,7 @@ def cone_equation(s, V, b):
 
 
 @claim("tangency", paper=("tangency", "cone0"), kind="geo",
-       sizes=admissible(n_max=5), exact_max_n=3,
+       sizes=admissible(n_max=5), exact_max_n=3, exact_max_r={4: 2, 5: 2, 6: 1, 7: 1},
        statement=r"\det(V^TBV)=\sum_I|B|^I_IG_I^2,\qquad V^TB\,v=\det(V^TBV)\,E_1,\ \ "
                  r"\langle v,Bv\rangle=\det(V^TBV)\,\mathrm{adj}(V^TBV)_{11},\ \ v=V\,\mathrm{adj}(V^TBV)E_1")
 def planes_tangent_to_a_cone(s):
@@ -515,7 +515,7 @@ def tangency_determinant(t):
 
 
 @claim("gen-chasles", paper=("Gen_Chasles", "conf0", "VV", "cone0", "tangency", "2r-integrals"), kind="geo",
-       sizes=admissible(n_max=5), exact_max_n=1,
+       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 1},
        statement=r"a(\lambda)\det(\mathcal V^TB(\lambda)\mathcal V)=a(\lambda)\sum_{I}|B(\lambda)|^I_IG_I(\mathcal V)^2"
                  r"=\mathcal I_{2r}(\lambda)=a(\lambda)\det\mathcal L^*_{neum}(\lambda),\quad "
                  r"\tfrac{d}{dt}\det(\mathcal V^TB(\lambda)\mathcal V)=0\ \text{along (N0\_XP2), (NE\_XP)}")
@@ -541,7 +541,7 @@ def rotation(s):
 
 
 @claim("gen-chasles2", paper=("Gen_Chasles2", "VVB", "conf", "conf0"), kind="geo",
-       sizes=admissible(n_max=5), exact_max_n=1,
+       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 1, 4: 1, 5: 1},
        statement=r"\mathcal V(XB,PB)\begin{pmatrix}B^{-1}&0\\0&B^{-1}\end{pmatrix}=\begin{pmatrix}\mathbf I_n&0\\0&B^{-1}"
                  r"\end{pmatrix}\mathcal V(X,P),\ \det(\mathcal V(XB,PB)^TB(\lambda)\mathcal V(XB,PB))="
                  r"\det(\mathcal V^TB(\lambda)\mathcal V),\ B\in SO(r);\quad \mathfrak i(x)\in\bar Q(\lambda)\iff "
@@ -597,7 +597,7 @@ def line_tangency(s, mu):
 
 
 @claim("mum-geod", paper=("Mum_geod",), kind="pb",
-       sizes=admissible(n_max=5, n_min=2, r_max=1, condition="r = 1, n >= 2"), exact_max_n=2,
+       sizes=admissible(n_max=5, n_min=2, r_max=1, condition="r = 1, n >= 2"), exact_max_n=4,
        statement=r"r=1:\ \{F_i,F_j\}=0,\ \ \mathrm{disc}_{l(t)}Q(\lambda)=-\sum_i\frac{F_i}{\lambda-a_i}"
                  r"=-\mathcal I_2(\lambda)/a(\lambda),\ \ \mathrm{disc}_{l(t)}Q(0)=\sum_iF_i/a_i")
 def moser_chasles_for_the_neumann_system(s):
@@ -643,7 +643,7 @@ def J2r_printed(s, mu):
 
 
 @claim("chasles-manakov", paper=("Chasles-Manakov", "man-dual", "MAN-LA2"), kind="geo",
-       sizes=admissible(n_max=5, where=lambda n, r: n >= 2 * r, condition="n >= 2r"), exact_max_n=1,
+       sizes=admissible(n_max=5, where=lambda n, r: n >= 2 * r, condition="n >= 2r"), exact_max_n=3,
        statement=r"a(\lambda)\det\mathcal L^*_{man}(\lambda)=\mathcal J_{2r}(\lambda)=\sum_{I_{2r}}"
                  r"\frac{a(\lambda)|\Phi|^{I_{2r}}_{I_{2r}}}{\prod(\lambda-a_i)},\ \deg\mathcal J_{2r}=n-2r,\ "
                  r"\det(U^T(A-\lambda)^{-1}U)=\det(U^TR_\lambda U)=\det\mathcal L^*_{man},\ "
@@ -751,7 +751,7 @@ def dual_invariants_are_manakov_integrals_for_r_n(s):
 # -- the Chasles cones are real ------------------------------------------------------------------------
 
 @claim("chasles-cones-real", paper=("Gen_Chasles", "2r-integrals", "conf0"), kind="geo",
-       sizes=admissible(n_max=5), exact_max_n=2,
+       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 1, 4: 1},
        statement=r"\lambda^r\,\mathcal I_{2r}(\lambda)=\det\big(\lambda\mathbf I_n-Q(A-PP^T)Q\big),\ Q=\mathbf I_n-XX^T"
                  r"\ \Rightarrow\ c_1,\dots,c_{n-r}\in\mathbb R\ \text{for real}\ (X,P)")
 def chasles_cones_are_real(s):
@@ -779,7 +779,7 @@ def manakov_coefficients(t, mu):
 
 
 @claim("manakov-dual-integrals", paper=("Chasles-Manakov", "man-dual", "MAN-LA2", "Manakov"), kind="pb",
-       sizes=admissible(n_max=5, where=lambda n, r: 2 * r < n, condition="2r < n"), exact_max_n=1,
+       sizes=admissible(n_max=5, where=lambda n, r: 2 * r < n, condition="2r < n"), exact_max_n=3,
        statement=r"2r<n:\ |a(\lambda)\mathcal L^*_{man}(\lambda)-w\mathbf I|=\sum_l w^{2r-2l}\mathcal J_{2l}(\lambda),\ "
                  r"\{\mathcal J_{2l}(\lambda),\mathcal J_{2m}(\mu)\}=0,\ \tfrac{d}{dt}\mathcal J_{2l}(\lambda)=0\ "
                  r"\text{along (dot\_XP2), (Manakov) for a generic }B\text{ and along (dot\_XP3*)},\ l,m=1,\dots,r")

@@ -51,7 +51,7 @@ from .scene import CoordinateAccess, Scene, SizeError
 flint = lazy("flint", globals())
 mpmath = lazy("mpmath", globals())
 
-EXACT_CAYLEY_MAX_N = 3       # the symbolic Cayley chart (used when coordinates are read)
+EXACT_CAYLEY_MAX_N = 7       # the symbolic Cayley chart (used when coordinates are read; one r x r inverse for r < n)
 EXACT_TIME_LIMIT = 120.0      # seconds per (claim, size) for the symbolic method
 MAX_RESAMPLE = 8
 FLOAT_RESOLUTION = 1e-8       # a pass must be able to see a relative residual this small
@@ -574,6 +574,12 @@ def covariant_by_construction(spaces: tuple[str, ...]) -> str:
 CAYLEY_REDUCTION = (
     "rational parametrization: X = first r columns of (I - S)(I + S)^{{-1}}{D}, P = XW + (I - XX^T)Z "
     "(S, W skew, Z arbitrary), A = diag(a); dense in T*V(n, r){comp}")
+#: the symbolic method's Cayley chart for r < n (Scene._reduced_cayley_point)
+REDUCED_CAYLEY_REDUCTION = (
+    "rational parametrization: X = first r columns of (I - S)(I + S)^{-1} for S = [[S11, -K^T], [K, 0]] "
+    "(S11 skew r x r, K generic (n - r) x r), i.e. X = [I - S11 - K^T K; -2K] M^{-1}, M = I + S11 + K^T K; "
+    "P = XW + (I - XX^T)Z (W skew, Z arbitrary), A = diag(a); the map (S11, K) -> X has an injective "
+    "differential at 0 onto the tangent space of the irreducible V(n, r): dense in T*V(n, r)")
 
 
 def _reads_coordinates(claim: Claim, n: int, r: int, func: Callable) -> list[str]:
@@ -633,9 +639,21 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                 why = (covariant_by_construction(scene.tracker.spaces) if not coords else
                        f"(the claim reads {', '.join(coords)}) {reason}")
                 stated = scene.equivariant_reduction() or EQUIVARIANT_REDUCTION
-                charts.append((scene, stated.format(why=why)))
+                second = scene.second_point_text()
+                charts.append((scene, stated.format(why=why) + second))
                 evaluations = [_evaluate(checks, field, lambda R: _exact_rank(
                     R, field, randomized, lambda: degree_bound(claim, n, r, func).numerator, key))]
+                if scene.second_point_read and n == r:
+                    # Y on the other component of O(n): the same chart, Y times diag(-1, 1, .., 1)
+                    f1 = SymbolicField()
+                    sc1 = Scene(n, r, f1, chart="equivariant", realization=claim.realization,
+                                right_reduction=scene.right_reduction, component=1)
+                    ch1 = call_claim(func, sc1)
+                    if list(sc1.tracker.used) != coords:
+                        raise DegenerateError("the two components of the second point read different coordinates")
+                    evaluations.append(_evaluate(ch1, f1, lambda R, f1=f1: _exact_rank(
+                        R, f1, randomized, lambda: degree_bound(claim, n, r, func).numerator, key)))
+                    charts.append((sc1, stated.format(why=why) + sc1.second_point_text()))
             else:
                 if n > EXACT_CAYLEY_MAX_N:
                     res.verdict = "inconclusive"
@@ -656,7 +674,7 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                     ch = call_claim(func, sc)
                     evaluations.append(_evaluate(ch, f2, lambda R, f2=f2: _exact_rank(
                         R, f2, randomized, lambda: degree_bound(claim, n, r, func).numerator, key)))
-                    desc = CAYLEY_REDUCTION.format(
+                    desc = REDUCED_CAYLEY_REDUCTION if r < n else CAYLEY_REDUCTION.format(
                         D=" D" if r == n else "",
                         comp=(f"; component {comp + 1} of O(n) (D = {'I' if comp == 0 else 'diag(-1,1,..,1)'})"
                               if r == n else ""))

@@ -254,6 +254,8 @@ class Scene(PaperObjects):
         self._chart = chart
         self._rng = rng
         self._component = component
+        self._second_point_read = False
+        self._complex_point_read = False
         self._realization = realization
         self._options = dict(options or {})
         self._tracker = tracker if tracker is not None else CoordinateTracker({"n": n, "r": r})
@@ -468,6 +470,8 @@ class Scene(PaperObjects):
                             acc = acc - B[i, k] * P._a[k, j]
                         P._a[i, j] = f.normalize(acc / B[i, i])
             return X, P
+        if isinstance(self._field, SymbolicField) and r < n:
+            return self._reduced_cayley_point(prefix)
         S = self._skew_params(f"{prefix}S", n, "n")
         In = self.identity(n, "n")
         plus = In + S
@@ -512,6 +516,31 @@ class Scene(PaperObjects):
         if self._realization == "metric":
             P0 = self.A @ P0
         self._done_with(In, W, Z, XW, proj, Pz)
+        return X, P0
+
+    def _reduced_cayley_point(self, prefix: str) -> tuple[Mat, Mat]:
+        """The Cayley chart of the symbolic method: the first r columns of the Cayley transform of
+        the skew S = [[S11, −Kᵀ], [K, 0]] (S11 skew r × r, K generic (n − r) × r), X = [I − S11 −
+        KᵀK; −2K] M⁻¹ with M = I + S11 + KᵀK (one r × r inverse), P = XW + (I − XXᵀ)Z as in the full
+        chart (A @ that in the metric realization).  Dense in T*V(n, r) for r < n (see
+        :meth:`_equivariant_second_point`); the points of the sampling methods keep the full S."""
+        n, r = self.n, self.r
+        tr = self._tracker
+        Ir = self.identity(r, "r")
+        S11 = self._skew_params(f"{prefix}S", r, "r")
+        Kfull = self.zeros(n, r, ("n", "r"))
+        for i in range(r, n):
+            for j in range(r):
+                Kfull._a[i, j] = self._param(param_name(f"{prefix}K", i, j))
+        KtK = Kfull.T @ Kfull
+        E = Mat._consts(np.eye(n, r, dtype=np.int64), self._field, ("n", "r"), tr)
+        X = (E @ (Ir - S11 - KtK) - Kfull * self.const(2)) @ (Ir + S11 + KtK).inv()
+        W = self._skew_params(f"{prefix}W", r, "r")
+        Z = self._general_params(f"{prefix}Z", n, r, ("n", "r"))
+        In = self.identity(n, "n")
+        P0 = X @ W + (In - X @ X.T) @ Z
+        if self._realization == "metric":
+            P0 = self.A @ P0
         return X, P0
 
     def _done_with(self, *mats: Mat) -> None:
@@ -604,10 +633,76 @@ class Scene(PaperObjects):
 
     def _second_point(self):
         if self.chart == "equivariant":
-            # the reduction moves one point to X0; a second point stays generic
-            self.tracker.touch("a second point (Y, Q)")
-            raise CoordinateAccess("a second point (Y, Q)")
+            if self._realization == "metric":
+                # the metric chart's reduction by O(r) fixes B11 = X0ᵀ A⁻¹ X0 diagonal: a second
+                # point has no chart of its own here
+                self.tracker.touch("a second point (Y, Q)")
+                raise CoordinateAccess("a second point (Y, Q)")
+            # the reduction moves the first point to X0; the second stays generic
+            self._second_point_read = True
+            return self._cached("point2", self._equivariant_second_point)
         return self._cached("point2", lambda: self._stiefel_point("second_"))
+
+    right_reduction = _engine_property("_right_reduction", "whether the chart reduces by O(r) as well")
+    second_point_read = _engine_property("_second_point_read", "whether the evaluation read (Y, Q)")
+
+    def second_point_text(self) -> str:
+        """The reduction's statement of the second point and of the complex point, when the claim
+        read them (else '')."""
+        out = ""
+        if self._complex_point_read:
+            out = ("; the point (Z, Zdot) of TW(n, r), realified, generic: real (g, h) act on it as "
+                   "realify(g) Z realify(h)^T and leave it anywhere, Z = [I - S11 - K*K; -2K] M^{-1}, "
+                   "M = I + S11 + K*K (the first r columns of the unitary Cayley transform of "
+                   "[[S11, -K*], [K, 0]], S11 skew-Hermitian, K generic complex; dense in W(n, r)), "
+                   "Zdot = ZW' + (I - ZZ*)Y' (W' skew-Hermitian, Y' generic)")
+        if not self._second_point_read:
+            return out
+        comp = ""
+        if self.n == self.r:
+            comp = (f"; component {self.component % 2 + 1} of O(n) for Y "
+                    f"(D = {'I' if self.component % 2 == 0 else 'diag(-1,1,..,1)'})")
+        return ("; the second point (Y, Q) of T*V(n, r) generic: (g, h) act on it as on (X, P) and leave "
+                "it anywhere, Y = [I - S11 - K^T K; -2K] M^{-1} D, M = I + S11 + K^T K (the first r columns "
+                "of the Cayley transform of [[S11, -K^T], [K, 0]], S11 skew, K generic; dense in V(n, r)"
+                + comp + "), Q = YW' + (I - YY^T)Z' (W' skew, Z' generic)" + out)
+
+    def _equivariant_second_point(self) -> tuple[Mat, Mat]:
+        """A generic second point (Y, Q) of T*V(n, r) on the equivariant chart: the first r columns
+        of the Cayley transform (I − S)(I + S)⁻¹ of the skew S = [[S11, −Kᵀ], [K, 0]] (S11 skew r × r,
+        K generic (n − r) × r), which are Y = [I − S11 − KᵀK; −2K] M⁻¹ with M = I + S11 + KᵀK
+        (Schur complement of the block I: one r × r inverse, where the full Cayley chart needs an
+        n × n one), times D = diag(−1, 1, .., 1) on the second component of O(n) when r = n;
+        Q = YW + (I − YYᵀ)Z (W skew, Z generic).  YᵀY = I_r identically (MᵀM = (I − S11 − KᵀK)ᵀ(I −
+        S11 − KᵀK) + 4KᵀK), and the map (S11, K) ↦ Y has the injective differential (S11, K) ↦
+        −2(S11; K) at 0 between spaces of the dimension of V(n, r): its image contains an open set of
+        the irreducible V(n, r) (of the component of O(n) for r = n), so it is Zariski dense there.
+        The O(n) reduction of the chart acts on both points: fixing X0 (and diagonalizing A22 by
+        the stabilizer of X0) leaves Y anywhere on V(n, r)."""
+        n, r = self.n, self.r
+        tr = self._tracker
+        Ir = self.identity(r, "r")
+        S11 = self._skew_params("second_S", r, "r")
+        Kfull = self.zeros(n, r, ("n", "r"))
+        for i in range(r, n):
+            for j in range(r):
+                Kfull._a[i, j] = self._param(param_name("second_K", i, j))
+        KtK = Kfull.T @ Kfull
+        M = Ir + S11 + KtK
+        D0 = np.eye(n, r, dtype=np.int64)
+        E = Mat._consts(D0, self._field, ("n", "r"), tr)
+        N = E @ (Ir - S11 - KtK) - Kfull * self.const(2)
+        Y = N @ M.inv()
+        if n == r and self.component % 2 == 1:
+            Dr = np.eye(r, dtype=np.int64)
+            Dr[0, 0] = -1
+            Y = Y @ Mat._consts(Dr, self._field, ("r", "r"), tr)
+        W = self._skew_params("second_W", r, "r")
+        Z = self._general_params("second_Z", n, r, ("n", "r"))
+        In = self.identity(n, "n")
+        Q = Y @ W + (In - Y @ Y.T) @ Z
+        self._done_with(Ir, S11, Kfull, KtK, M, E, N, W, Z, In)
+        return Y, Q
 
     @property
     def Y(self) -> Mat:
@@ -642,6 +737,9 @@ class Scene(PaperObjects):
     # -- the complex Stiefel variety W(n, r), realified (realify, conj: see PaperObjects) ----
     def _complex_point(self):
         n, r = self.n, self.r
+        if self.chart == "equivariant" and self._realization == "standard":
+            self._complex_point_read = True
+            return self._equivariant_complex_point()
         S = self.realify(self._skew_params("cS", n, "n"), self._sym_params("cH", n, "n"))
         I2 = self.identity(2 * n, "n+n")
         Q = Mat._rows(self._field.solve((I2 + S).T._a.tolist(), (I2 - S).T._a.tolist()),
@@ -650,6 +748,36 @@ class Scene(PaperObjects):
         Z = Mat._wrap(Q._a[:, cols].copy(), self._field, ("n+n", "r+r"), self.tracker)
         W = self.realify(self._skew_params("cW", r, "r"), self._sym_params("cK", r, "r"))
         Y = self.realify(self._general_params("cY", n, r, ("n", "r")), self._general_params("cV", n, r, ("n", "r")))
+        return Z, Z @ W + (I2 - Z @ Z.T) @ Y
+
+    def _equivariant_complex_point(self) -> tuple[Mat, Mat]:
+        """A generic point (Z, Ż) of the tangent bundle of W(n, r), realified, on the equivariant
+        chart: the first r columns of the unitary Cayley transform (I − S)(I + S)⁻¹ of the
+        skew-Hermitian S = [[S11, −K*], [K, 0]] (S11 skew-Hermitian r × r, K generic complex
+        (n − r) × r), Z = [I − S11 − K*K; −2K] M⁻¹ with M = I + S11 + K*K (one complex r × r
+        inverse, as for the second point (Y, Q) of :meth:`_equivariant_second_point`); Ż = ZW +
+        (I − ZZ*)Y (W skew-Hermitian, Y generic).  The map (S11, K) ↦ Z has the injective differential
+        (S11, K) ↦ −2(S11; K) at 0 between spaces of the real dimension 2nr − r² of W(n, r), the
+        image of the connected U(n): its image is Zariski dense.  Real g in O(n) and h in O(r) act
+        on it as realify(g) Z realify(h)ᵀ, and the chart's reduction leaves Z anywhere on W(n, r)."""
+        n, r = self.n, self.r
+        f, tr = self._field, self._tracker
+        S11 = self.realify(self._skew_params("cS", r, "r"), self._sym_params("cH", r, "r"))
+        Kre, Kim = self.zeros(n, r, ("n", "r")), self.zeros(n, r, ("n", "r"))
+        for i in range(r, n):
+            for j in range(r):
+                Kre._a[i, j] = self._param(param_name("cKre", i, j))
+                Kim._a[i, j] = self._param(param_name("cKim", i, j))
+        Kc = self.realify(Kre, Kim)
+        I2r = self.identity(2 * r, "r+r")
+        KtK = Kc.T @ Kc
+        M = I2r + S11 + KtK
+        E0 = np.eye(n, r, dtype=np.int64)
+        E = self.realify(Mat._consts(E0, f, ("n", "r"), tr), Mat._consts(0 * E0, f, ("n", "r"), tr))
+        Z = (E @ (I2r - S11 - KtK) - Kc * self.const(2)) @ M.inv()
+        W = self.realify(self._skew_params("cW", r, "r"), self._sym_params("cK", r, "r"))
+        Y = self.realify(self._general_params("cY", n, r, ("n", "r")), self._general_params("cV", n, r, ("n", "r")))
+        I2 = self.identity(2 * n, "n+n")
         return Z, Z @ W + (I2 - Z @ Z.T) @ Y
 
     @property
@@ -1398,6 +1526,36 @@ class _LiftedScene(Scene):
     @property
     def A(self) -> Mat:
         return self._cached("A", lambda: self._lift_primitive(self.base.A, None))
+
+    def _equivariant_complex_point(self) -> tuple[Mat, Mat]:
+        """A generic point (Z, Ż) of the tangent bundle of W(n, r), realified, on the equivariant
+        chart: the first r columns of the unitary Cayley transform (I − S)(I + S)⁻¹ of the
+        skew-Hermitian S = [[S11, −K*], [K, 0]] (S11 skew-Hermitian r × r, K generic complex
+        (n − r) × r), Z = [I − S11 − K*K; −2K] M⁻¹ with M = I + S11 + K*K (one complex r × r
+        inverse, as for the second point (Y, Q) of :meth:`_equivariant_second_point`); Ż = ZW +
+        (I − ZZ*)Y (W skew-Hermitian, Y generic).  The map (S11, K) ↦ Z has the injective differential
+        (S11, K) ↦ −2(S11; K) at 0 between spaces of the real dimension 2nr − r² of W(n, r), the
+        image of the connected U(n): its image is Zariski dense.  Real g in O(n) and h in O(r) act
+        on it as realify(g) Z realify(h)ᵀ, and the chart's reduction leaves Z anywhere on W(n, r)."""
+        n, r = self.n, self.r
+        f, tr = self._field, self._tracker
+        S11 = self.realify(self._skew_params("cS", r, "r"), self._sym_params("cH", r, "r"))
+        Kre, Kim = self.zeros(n, r, ("n", "r")), self.zeros(n, r, ("n", "r"))
+        for i in range(r, n):
+            for j in range(r):
+                Kre._a[i, j] = self._param(param_name("cKre", i, j))
+                Kim._a[i, j] = self._param(param_name("cKim", i, j))
+        Kc = self.realify(Kre, Kim)
+        I2r = self.identity(2 * r, "r+r")
+        KtK = Kc.T @ Kc
+        M = I2r + S11 + KtK
+        E0 = np.eye(n, r, dtype=np.int64)
+        E = self.realify(Mat._consts(E0, f, ("n", "r"), tr), Mat._consts(0 * E0, f, ("n", "r"), tr))
+        Z = (E @ (I2r - S11 - KtK) - Kc * self.const(2)) @ M.inv()
+        W = self.realify(self._skew_params("cW", r, "r"), self._sym_params("cK", r, "r"))
+        Y = self.realify(self._general_params("cY", n, r, ("n", "r")), self._general_params("cV", n, r, ("n", "r")))
+        I2 = self.identity(2 * n, "n+n")
+        return Z, Z @ W + (I2 - Z @ Z.T) @ Y
 
     @property
     def Zc(self) -> Mat:

@@ -45,6 +45,7 @@ Zᵀ is ``ctranspose``, the conjugate Z̄ is ``Scene.conj``.
 """
 from __future__ import annotations
 
+from fractions import Fraction
 from typing import Any, Callable, Hashable, Mapping, Sequence
 
 import numpy as np
@@ -613,6 +614,10 @@ def stiefel_pairs_flow(s: Scene, H: Callable[[Scene, dict], Any], point: Point,
     if not isinstance(s, (Scene, TraceScene)) and hasattr(s, "pairs_dirac_flow"):
         return s.pairs_dirac_flow(H, point, pairs)
 
+    closed = _closed_form_pairs_flow(s, H, point, pairs)
+    if closed is not None:
+        return closed
+
     def constraints(t, z):
         out: list = []
         for x, p in pairs:
@@ -620,6 +625,58 @@ def stiefel_pairs_flow(s: Scene, H: Callable[[Scene, dict], Any], point: Point,
             out += symmetric_entries(X.T @ X - t.Ir) + symmetric_entries(X.T @ P + P.T @ X)
         return out
     return hamiltonian_flow(s, H, constraints, point, pairs)[0]
+
+
+def _closed_form_pairs_flow(s: Scene, H: Callable[[Scene, dict], Any], point: Point,
+                            pairs: Sequence[tuple[Hashable, Hashable]]) -> dict[Hashable, Mat] | None:
+    """The flow of :func:`stiefel_pairs_flow` by the closed forms of its multipliers, where they
+    hold: over an exact field, at a point whose every position x is n x r with xᵀx = I_r exactly.
+    The constraints of a pair involve only its own letters, so the bracket matrix {F_i, F_j}_0 is
+    block diagonal and each pair has its own multipliers, the unique symmetric Π, Λ that keep
+    xᵀx = I_r and xᵀp + pᵀx = 0 (d/dt of each, with xᵀx = I_r): ẋ = H_p − xΠ, ṗ = −H_x + xΛ + pΠ,
+    Π = sym(xᵀH_p), Λ = sym(xᵀH_x − H_pᵀp + ΠK − KΠ), K = xᵀp, sym M = ½(M + Mᵀ) (the forms of
+    the Dirac flow of a single point, :meth:`Scene._closed_form_multipliers`).  The gradient of H
+    is the reverse sweep of :func:`hamiltonian_flow`.  None where any condition fails (then the
+    general solve of :func:`hamiltonian_flow`)."""
+    if type(s) is not Scene or not s.field.exact or not _reverse_applies(s):
+        return None
+    names = [k for pair in pairs for k in pair]
+    if len(set(names)) != len(names) or set(names) != set(point):
+        return None
+    n, r = s.n, s.r
+    f = s.field
+    I = Mat.identity(r, f)
+    for x, p in pairs:
+        X, P = point[x], point[p]
+        if not (isinstance(X, Mat) and isinstance(P, Mat)) or X._shape() != (n, r) or P._shape() != (n, r):
+            return None
+        Xu = X._untyped()
+        if not (Xu.T @ Xu - I).is_zero():
+            return None
+
+    def scalar_H(t, z):
+        value = H(t, z)
+        if isinstance(value, (Mat, list, tuple, dict)):
+            raise TypeError("a Hamiltonian must be a scalar function, not a " + type(value).__name__)
+        return [value]
+    try:
+        grads = _reverse_gradients(s, scalar_H, point, list(point))[0]
+    except Unsupported:
+        return None
+    half = s.const(Fraction(1, 2))
+    sym = lambda M: (M + M.T) * half          # noqa: E731
+    out: dict[Hashable, Mat] = {}
+    for x, p in pairs:
+        X, P = point[x]._untyped(), point[p]._untyped()
+        zero = Mat.zeros(n, r, f)
+        Hx = grads[x]._untyped() if grads[x] is not None else zero
+        Hp = grads[p]._untyped() if grads[p] is not None else zero
+        K = X.T @ P
+        Pi = sym(X.T @ Hp)
+        Lam = sym(X.T @ Hx - Hp.T @ P + Pi @ K - K @ Pi)
+        out[x] = (Hp - X @ Pi)._retyped(f, point[x].tags, s.tracker)
+        out[p] = (-Hx + X @ Lam + P @ Pi)._retyped(f, point[p].tags, s.tracker)
+    return out
 
 
 # -- generic points of the appendix's phase spaces ------------------------------------------------

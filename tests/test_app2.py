@@ -48,6 +48,12 @@ ERRATA = ("double-neumann-dual-lax", "double-neumann-dual-lax-extends-la3", "cou
 NOT = ("coupled-big-lax-not-euclidean",)
 #: proved symbolically at small sizes (the others: modular, their multipliers are beyond the symbolic budget)
 EXACT = ("double-neumann-flow", "double-neumann-momentum", "double-neumann-diagonal", "complex-neumann-real-data")
+#: proved symbolically beyond n = 1 on the equivariant chart with a generic second point (Y, Q) or complex
+#: point, and the closed-form multipliers of the coupled flow: their corruptions fail there too
+EXACT_SECOND_POINT = {"coupled-neumann-flow": (3, 2), "coupled-neumann-momentum": (4, 2),
+                      "coupled-corrected-flow-invariants": (4, 2), "coupled-big-lax-along-corrected-flow": (3, 2)}
+# (complex-neumann-flow is exact for r = 1 only, where its corruption Λ̄ for Λ changes nothing: Λ is real;
+# tests/test_second_point_chart.py corrupts it otherwise)
 
 
 def _appendix2(catalog):
@@ -268,6 +274,13 @@ def test_corrupted_claim_fails(catalog, cid, func):
     if cid in EXACT or cid.startswith("double"):     # (r = n: tr(XᵀAY) = tr A is constant on (D0))
         n, r = (2, 1) if cid == "double-neumann-dual-lax" else (3, 2)
         assert run_exact(c, n, r, SEED, func=func).verdict == "fails"
+    if cid in EXACT_SECOND_POINT:
+        n, r = EXACT_SECOND_POINT[cid]
+        assert c.exact_at(n, r)
+        res = run_exact(c, n, r, SEED, func=func)
+        assert res.verdict == "fails", res.line()
+        assert any("X = X0" in d for d in res.reductions), res.reductions
+        assert run_exact(c, n, r, SEED).verdict == ("fails" if c.expects_failure(n, r) else "proved")
 
 
 #: one corrupted claim of each system, and those of the claims proved for all n, r
