@@ -328,10 +328,13 @@ def _drop_capabilities(libc: Any) -> None:
 
 def _keep(path: str) -> list[str]:
     """The folders under /tmp the interpreter reads from (hidden by the private tmpfs otherwise): the claims
-    file's, and those of the search path (the package itself may be a copy there), outermost only."""
+    file's, the interpreter's, and those of the search path (the package itself may be a copy there),
+    outermost only."""
     tmp = os.path.realpath("/tmp")
     found = []
-    for p in [os.path.dirname(os.path.realpath(path))] + [os.path.realpath(x) for x in sys.path if x]:
+    here = [os.path.dirname(os.path.realpath(path)), os.path.dirname(os.path.realpath(sys.executable)),
+            sys.prefix, sys.base_prefix]
+    for p in [os.path.realpath(x) for x in here + [x for x in sys.path if x]]:
         if (p == tmp or p.startswith(tmp + os.sep)) and os.path.isdir(p):
             found.append(p)
     out: list[str] = []

@@ -1,26 +1,33 @@
-"""A user's claims file, imported and traced in child processes only.
+"""A user's claims file, imported and traced in fresh interpreters only.
 
 A claims file is Python: once imported into a process, its code can reach
 anything there (profile hooks, the engine's memos and containers, the fields of
-its own claims, module state shared by its claims).  So the process that plans
-and verifies never imports it.  :func:`load_claims_isolated`:
+its own claims, module state shared by its claims, the process's memory, command
+line and environment).  So the process that plans and verifies never imports it,
+and the process that does knows nothing of the run.  :func:`load_claims_isolated`:
 
-1. forks a tracer child before anything of the file runs; the child imports the
-   file (:func:`stiefelsym.claims.load_claims_file`: sealed engine, deadline,
-   standard output to standard error) and, for each claim, forks a grandchild
-   that traces that claim alone (no claim's graph can depend on another claim
-   having been traced before it), twice and compared as in
+1. spawns a fresh interpreter (:mod:`stiefelsym.sandbox`: neutral argv, minimal
+   environment, confined in namespaces where the platform has them) and gives it
+   on its standard input the file's path and the budgets, *no size*: the first
+   phase.  It imports the file (:func:`stiefelsym.claims.load_claims_file`:
+   sealed engine, deadline, standard output to standard error) and, for each
+   claim, forks a child that traces that claim alone (no claim's graph can depend
+   on another claim having been traced before it), twice and compared as in
    :func:`stiefelsym.ir.compile_claim`, with symbolic sizes and, only when that
-   trace is refused, at every size needed (the sizes its size statement lists
-   and the sizes the command asks for), and the same for each correction (a
-   function with a graph of symbolic sizes is never traced at a number); the
-   grandchild also evaluates the claim's metadata callables (the size
-   condition, the erratum sizes) into tables;
-2. the children send back pure data as JSON: the metadata fields, the sizes as
+   trace is refused, at the sizes its size statement lists, and the same for each
+   correction (a function with a graph of symbolic sizes is never traced at a
+   number); the child also evaluates the claim's metadata callables (the size
+   condition, the erratum sizes) into tables (n <= 16 and the listed sizes);
+2. only when the command asks for sizes that the first phase could not answer (a
+   function refused with symbolic sizes: it used a size's number, so it has no
+   proof for every n, r; or a size beyond the tables) a second interpreter is
+   spawned the same way and given, for those claims only, the sizes they need
+   (:func:`_second_phase`); what it sends adds rows and graphs, never replaces one;
+3. the interpreters send back pure data as JSON: the metadata fields, the sizes as
    an explicit list with the bounds and an admits table, the erratum table, and
    per (size | symbolic) either the graph's state or the refusal (exception class
    name, message, the claim's file and line);
-3. this process decodes it with a strict decoder (:func:`_value`: only int, str,
+4. this process decodes it with a strict decoder (:func:`_value`: only int, str,
    bool, None, lists, tuples, Fraction and the IR's Ref, Size and Named come out;
    nothing is unpickled) and builds ordinary :class:`~stiefelsym.claims.Claim`
    objects: the function is a :class:`TracedFunction` that replays the graph
@@ -28,10 +35,11 @@ and verifies never imports it.  :func:`load_claims_isolated`:
    graph is re-typed and its digest recomputed here), re-raises the recorded
    refusal, or raises :class:`NoGraph` (verdict ``error``) at a size or
    realization it has no graph for; ``where`` and ``fails_at`` are table lookups;
-   ``reviewed`` is always False.
+   ``reviewed`` is always False; the confinement the file was traced under is the
+   function's ``confinement`` (a record of a file traced without namespaces says so).
 
-Where ``os.fork`` is not available the file is loaded in-process as before
-(:func:`~stiefelsym.claims.load_claims_file`).
+Where ``os.fork`` or ``os.posix_spawn`` is not available the file is loaded
+in-process as before (:func:`~stiefelsym.claims.load_claims_file`).
 """
 from __future__ import annotations
 
