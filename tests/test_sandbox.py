@@ -188,3 +188,59 @@ def test_the_first_phase_knows_no_size_and_the_second_only_what_needs_one(tmp_pa
     assert free.func.sizes() == [] and free.sizes.admits(20, 2) and not free.sizes.admits(21, 2)
     assert (20, 2) in number.func.sizes() and (21, 2) in number.func.sizes() and (5, 2) in number.func.sizes()
     assert (4, 2) not in number.func.sizes()      # neither listed (n <= 3) nor asked
+
+
+@NAMESPACES
+@pytest.mark.parametrize("body", ["import os\nos._exit(3)\n",
+                                  "import os\nos.write(3, b'{\"confined\": \"spawn\"}\\n{\"claims\": []}')\nos._exit(0)\n",
+                                  "raise SystemExit(1)\n"])
+def test_a_file_cannot_ask_for_the_fallback(tmp_path, monkeypatch, body):
+    """The confinement line is written before the file runs: a file that dies, exits with the setup's status
+    or writes a line of its own is an error of the file, and the namespaces stay in use for the next file."""
+    import stiefelsym.sandbox as sandbox
+    from stiefelsym.claims import CatalogError
+    monkeypatch.setattr(sandbox, "_available", {})
+    bad = tmp_path / "bad.py"
+    bad.write_text(body)
+    with pytest.raises(CatalogError):
+        load_claims_isolated(bad, [(3, 2)])
+    assert sandbox._available.get(sandbox.NAMESPACES) is True
+    good = tmp_path / "good.py"
+    good.write_text(textwrap.dedent('''
+        from stiefelsym import admissible, claim
+
+
+        @claim("sbx-good", kind="id", sizes=admissible(n_max=3))
+        def good(s):
+            """X^T X = I."""
+            return {"r": s.X.T @ s.X - s.Ir}
+    '''))
+    (c,) = load_claims_isolated(good, [(3, 2)])
+    assert c.func.confinement == sandbox.NAMESPACES
+
+
+def test_the_second_phase_adds_only_what_it_was_asked_for():
+    """What the second interpreter sends may add rows for the sizes it was asked about and graphs of the
+    functions it was asked to trace; an answer about another claim, another function or a graph with symbolic
+    sizes is refused, and a row or a graph the first phase had is kept."""
+    from stiefelsym.userfile import WireError, _merge, _second_phase
+    claims = [{"id": "a", "sizes": {"admits": [[3, 2, True], [4, 2, False]], "list": [[3, 2]]},
+               "graphs": [[None, {"error": ["TraceRefused", "needs a number"], "at": None}], [[3, 2], {"ops": []}]],
+               "corrections": [], "fails_at": [[3, 2, False]]},
+              {"id": "b", "sizes": {"admits": [[3, 2, True], [4, 2, True]], "list": [[3, 2]]},
+               "graphs": [[None, {"ops": []}]], "corrections": [], "fails_at": None}]
+    more = _second_phase(claims, [(3, 2), (4, 2), (20, 2)])
+    assert more == {"a": {"table": [[20, 2]], "trace": [], "funcs": [0]},
+                    "b": {"table": [[20, 2]], "trace": [], "funcs": []}}, more
+    good = [{"id": "a", "admits": [[20, 2, True], [3, 2, False]], "fails_at": [[20, 2, True], [3, 2, True]],
+             "results": [[0, [20, 2], {"ops": ["x"]}], [0, [3, 2], {"ops": ["forged"]}]]}]
+    _merge(claims, good, more)
+    a = claims[0]
+    assert a["sizes"]["admits"] == [[3, 2, True], [4, 2, False], [20, 2, True]]
+    assert a["fails_at"] == [[3, 2, False], [20, 2, True]]
+    assert a["graphs"][1] == [[3, 2], {"ops": []}] and a["graphs"][2] == [[20, 2], {"ops": ["x"]}]
+    for bad in ([{"id": "c", "admits": [], "fails_at": None, "results": []}],
+                [{"id": "b", "admits": [], "fails_at": None, "results": [[0, [20, 2], {"ops": []}]]}],
+                [{"id": "a", "admits": [], "fails_at": None, "results": [[0, None, {"ops": []}]]}]):
+        with pytest.raises(WireError):
+            _merge(claims, bad, more)
