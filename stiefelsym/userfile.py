@@ -793,7 +793,7 @@ def _refused(entries: list) -> bool:
 
 def _second_phase(claims: list, needed: list[tuple[int, int]]) -> dict:
     """What the second phase is asked, per claim id (see :func:`_claim_more`): the needed sizes beyond the
-    first phase's tables, and, for the functions that have no graph with symbolic sizes, the needed sizes they
+    first phase's tables (when the claim's answer there depends on the file), and, for the functions that have no graph with symbolic sizes, the needed sizes they
     are traced at (admitted, not listed: the listed ones were traced in the first phase)."""
     more: dict = {}
     for d in claims:
@@ -801,10 +801,13 @@ def _second_phase(claims: list, needed: list[tuple[int, int]]) -> dict:
         rows = {(row[0], row[1]): row[2] for row in _get(spec, "admits", list)
                 if type(row) is list and len(row) == 3}
         listed = {tuple(p) for p in _get(spec, "list", list) if type(p) is list}
-        table = [p for p in needed if p not in rows]
         funcs = [f for f, entries in enumerate([_get(d, "graphs", list)] + [_get(k, "graphs", list) for k in
                                                                            _get(d, "corrections", list)])
                  if _refused(entries)]
+        # beyond the tables: asked only where an answer depends on the file (a condition of its own, erratum
+        # sizes, a function traced per size); a statement of bounds only is decided here by its bounds
+        tabled = _get(spec, "where", bool) or d.get("fails_at") is not None or funcs
+        table = [p for p in needed if p not in rows] if tabled else []
         trace = [p for p in needed if rows.get(p) is True and p not in listed] if funcs else []
         if table or trace:
             more[_get(d, "id", str)] = {"table": [list(p) for p in table], "trace": [list(p) for p in trace],

@@ -224,12 +224,15 @@ def test_the_second_phase_adds_only_what_it_was_asked_for():
     functions it was asked to trace; an answer about another claim, another function or a graph with symbolic
     sizes is refused, and a row or a graph the first phase had is kept."""
     from stiefelsym.userfile import WireError, _merge, _second_phase
-    claims = [{"id": "a", "sizes": {"admits": [[3, 2, True], [4, 2, False]], "list": [[3, 2]]},
+    claims = [{"id": "a", "sizes": {"admits": [[3, 2, True], [4, 2, False]], "list": [[3, 2]], "where": False},
                "graphs": [[None, {"error": ["TraceRefused", "needs a number"], "at": None}], [[3, 2], {"ops": []}]],
                "corrections": [], "fails_at": [[3, 2, False]]},
-              {"id": "b", "sizes": {"admits": [[3, 2, True], [4, 2, True]], "list": [[3, 2]]},
+              {"id": "b", "sizes": {"admits": [[3, 2, True], [4, 2, True]], "list": [[3, 2]], "where": True},
+               "graphs": [[None, {"ops": []}]], "corrections": [], "fails_at": None},
+              {"id": "c", "sizes": {"admits": [[3, 2, True], [4, 2, True]], "list": [[3, 2]], "where": False},
                "graphs": [[None, {"ops": []}]], "corrections": [], "fails_at": None}]
     more = _second_phase(claims, [(3, 2), (4, 2), (20, 2)])
+    # a: refused with symbolic sizes; b: a condition of its own beyond the table; c: bounds only, nothing to ask
     assert more == {"a": {"table": [[20, 2]], "trace": [], "funcs": [0]},
                     "b": {"table": [[20, 2]], "trace": [], "funcs": []}}, more
     good = [{"id": "a", "admits": [[20, 2, True], [3, 2, False]], "fails_at": [[20, 2, True], [3, 2, True]],
@@ -244,3 +247,40 @@ def test_the_second_phase_adds_only_what_it_was_asked_for():
                 [{"id": "a", "admits": [], "fails_at": None, "results": [[0, None, {"ops": []}]]}]):
         with pytest.raises(WireError):
             _merge(claims, bad, more)
+
+
+def test_a_file_whose_claims_have_graphs_of_symbolic_sizes_is_traced_once(tmp_path, monkeypatch):
+    """Sizes beyond the first phase's tables need no second interpreter when the statement is bounds only and
+    every function has a graph of symbolic sizes; a claim that reads its size as a number needs one."""
+    import stiefelsym.sandbox as sandbox
+    calls = []
+    real = sandbox.run
+
+    def counted(config, capture, seconds):
+        calls.append(config["more"])
+        return real(config, capture, seconds)
+    monkeypatch.setattr(sandbox, "run", counted)
+    body = textwrap.dedent('''
+        from stiefelsym import admissible, claim
+
+
+        @claim("once-free", kind="id", sizes=admissible(n_max=3))
+        def free(s):
+            """X^T X = I."""
+            return {"r": s.X.T @ s.X - s.Ir}
+    ''')
+    path = tmp_path / "once.py"
+    path.write_text(body)
+    (c,) = load_claims_isolated(path, [(20, 2), (5, 2)])
+    assert calls == [None] and c.sizes.admits(20, 2) and c.func.sizes() == []
+    path.write_text(body + textwrap.dedent('''
+
+        @claim("once-number", kind="id", sizes=admissible(n_max=3))
+        def number(s):
+            """tr(X^T X) = r, r read as a number."""
+            return {"tr": s.tr(s.X.T @ s.X) - int(s.r)}
+    '''))
+    calls.clear()
+    reg = load_claims_isolated(path, [(20, 2), (5, 2)])
+    assert calls == [None, {"once-number": {"table": [[20, 2]], "trace": [[5, 2]], "funcs": [0]}}], calls
+    assert (20, 2) in reg.get("once-number").func.sizes() and reg.get("once-free").func.sizes() == []
