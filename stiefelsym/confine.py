@@ -1,21 +1,23 @@
-"""What a user's claims file may leave behind once its child has run: processes, and edits to the engine.
+"""What a user's claims file may leave behind once its interpreter has run: processes, and edits to the engine.
 
-A claims file is imported in a forked child (:mod:`stiefelsym.userfile`), but the child runs with the
-user's rights: it can start processes that outlive it, and write files.  Two things keep that from
-reaching a verdict of the verifying process:
+A claims file is imported in a spawned interpreter (:mod:`stiefelsym.userfile`, :mod:`stiefelsym.sandbox`).
+In namespaces (where the platform has them) that interpreter writes nowhere but a private /tmp and its
+processes end with its pid namespace; without them it runs with the user's rights: it can start processes
+that outlive it, and write files.  Two things keep that from reaching a verdict of the verifying process,
+whichever confinement was used:
 
 * :class:`Confined` makes the verifying process a *child subreaper* (Linux ``prctl(PR_SET_CHILD_SUBREAPER)``)
-  while the file's child runs, so that every process the file starts stays a descendant of this process
+  while the file's interpreter runs, so that every process the file starts stays a descendant of this process
   whatever it does (a double fork, ``setsid``: an orphan is re-parented to the subreaper, not to init); when
-  the child has ended, :meth:`Confined.end_the_rest` kills every process of that subtree (found in
+  the interpreter has ended, :meth:`Confined.end_the_rest` kills every process of that subtree (found in
   ``/proc``) before anything of the run is written.  Where there is no subreaper or no ``/proc`` only the
-  child's process group is killed (the README's security notes say so).
+  interpreter's process group is killed (the README's security notes say so).
 * :func:`engine_files` is a digest of every file of the package (``stiefelsym`` and its ``proofs``),
-  taken before the first fork and compared when the child returns: an engine module rewritten on disk by
-  the file's child stops the run (:class:`EngineFilesChanged`).  The verifying process has also imported
-  every module of the package before that fork (:func:`import_package`), so no engine module it runs
+  taken before the first interpreter is spawned and compared when it returns: an engine module rewritten on
+  disk by the file stops the run (:class:`EngineFilesChanged`).  The verifying process has also imported
+  every module it can need later before that (:func:`import_package`), so no engine module it runs
   afterwards is read from disk.  The libraries it imports lazily (sympy, platformdirs) are found on the
-  import path when first used, possibly after the child ran: :func:`path_modules`, compared likewise, stamps
+  import path when first used, possibly after the file ran: :func:`path_modules`, compared likewise, stamps
   every top-level module of the directories on ``sys.path`` (inode, size, modification and status-change
   times; the working directory under ``python -m``), so a module of a library's name put before the library
   itself stops the run too.

@@ -128,7 +128,7 @@ def _guarded(claim: Claim, size: Size | None, method: str, seed: int, func: Call
         res = _dispatch(claim, size, method, seed, func, options, in_worker, timeout)
         if not res.digest:
             res.digest = graph_digest(claim, size, func)
-        return res
+        return _confinement_stated(res, func or claim.func)
     except (KeyboardInterrupt, Terminated):
         raise
     except MemoryError:
@@ -144,6 +144,14 @@ def _guarded(claim: Claim, size: Size | None, method: str, seed: int, func: Call
             res.verdict, res.message = "inconclusive", str(exc)
     # an error is bound to the graph it was met on like any verdict ("" when the claim does not trace)
     res.digest = _digest_or_none(claim, size, func)
+    return _confinement_stated(res, func or claim.func)
+
+
+def _confinement_stated(res: Result, func: Callable) -> Result:
+    """A claims file traced with less than the full confinement (stiefelsym.sandbox) says so in every record."""
+    note = getattr(func, "confinement_note", "") if type(func).__name__ == "TracedFunction" else ""
+    if note and note not in res.reductions:
+        res.reductions.append(note)
     return res
 
 

@@ -1,26 +1,33 @@
-"""A user's claims file, imported and traced in child processes only.
+"""A user's claims file, imported and traced in fresh interpreters only.
 
 A claims file is Python: once imported into a process, its code can reach
 anything there (profile hooks, the engine's memos and containers, the fields of
-its own claims, module state shared by its claims).  So the process that plans
-and verifies never imports it.  :func:`load_claims_isolated`:
+its own claims, module state shared by its claims, the process's memory, command
+line and environment).  So the process that plans and verifies never imports it,
+and the process that does knows nothing of the run.  :func:`load_claims_isolated`:
 
-1. forks a tracer child before anything of the file runs; the child imports the
-   file (:func:`stiefelsym.claims.load_claims_file`: sealed engine, deadline,
-   standard output to standard error) and, for each claim, forks a grandchild
-   that traces that claim alone (no claim's graph can depend on another claim
-   having been traced before it), twice and compared as in
+1. spawns a fresh interpreter (:mod:`stiefelsym.sandbox`: neutral argv, minimal
+   environment, confined in namespaces where the platform has them) and gives it
+   on its standard input the file's path and the budgets, *no size*: the first
+   phase.  It imports the file (:func:`stiefelsym.claims.load_claims_file`:
+   sealed engine, deadline, standard output to standard error) and, for each
+   claim, forks a child that traces that claim alone (no claim's graph can depend
+   on another claim having been traced before it), twice and compared as in
    :func:`stiefelsym.ir.compile_claim`, with symbolic sizes and, only when that
-   trace is refused, at every size needed (the sizes its size statement lists
-   and the sizes the command asks for), and the same for each correction (a
-   function with a graph of symbolic sizes is never traced at a number); the
-   grandchild also evaluates the claim's metadata callables (the size
-   condition, the erratum sizes) into tables;
-2. the children send back pure data as JSON: the metadata fields, the sizes as
+   trace is refused, at the sizes its size statement lists, and the same for each
+   correction (a function with a graph of symbolic sizes is never traced at a
+   number); the child also evaluates the claim's metadata callables (the size
+   condition, the erratum sizes) into tables (n <= 16 and the listed sizes);
+2. only when the command asks for sizes that the first phase could not answer (a
+   function refused with symbolic sizes: it used a size's number, so it has no
+   proof for every n, r; or a size beyond the tables) a second interpreter is
+   spawned the same way and given, for those claims only, the sizes they need
+   (:func:`_second_phase`); what it sends adds rows and graphs, never replaces one;
+3. the interpreters send back pure data as JSON: the metadata fields, the sizes as
    an explicit list with the bounds and an admits table, the erratum table, and
    per (size | symbolic) either the graph's state or the refusal (exception class
    name, message, the claim's file and line);
-3. this process decodes it with a strict decoder (:func:`_value`: only int, str,
+4. this process decodes it with a strict decoder (:func:`_value`: only int, str,
    bool, None, lists, tuples, Fraction and the IR's Ref, Size and Named come out;
    nothing is unpickled) and builds ordinary :class:`~stiefelsym.claims.Claim`
    objects: the function is a :class:`TracedFunction` that replays the graph
@@ -28,10 +35,11 @@ and verifies never imports it.  :func:`load_claims_isolated`:
    graph is re-typed and its digest recomputed here), re-raises the recorded
    refusal, or raises :class:`NoGraph` (verdict ``error``) at a size or
    realization it has no graph for; ``where`` and ``fails_at`` are table lookups;
-   ``reviewed`` is always False.
+   ``reviewed`` is always False; the confinement the file was traced under is the
+   function's ``confinement`` (a record of a file traced without namespaces says so).
 
-Where ``os.fork`` is not available the file is loaded in-process as before
-(:func:`~stiefelsym.claims.load_claims_file`).
+Where ``os.fork`` or ``os.posix_spawn`` is not available the file is loaded
+in-process as before (:func:`~stiefelsym.claims.load_claims_file`).
 """
 from __future__ import annotations
 
@@ -205,8 +213,9 @@ def _table(f: Callable[[int, int], Any], pairs: Iterable[tuple[int, int]]) -> li
     return out
 
 
-def _claim_data(c: Claim, needed: Sequence[tuple[int, int]]) -> dict:
-    """Everything the verifying process needs of one claim (run in the claim's own child)."""
+def _claim_data(c: Claim, needed: Sequence[tuple[int, int]] = ()) -> dict:
+    """Everything the verifying process needs of one claim (run in the claim's own child; the first phase
+    passes no ``needed`` sizes: it knows none)."""
     spec = c.sizes
     listed = []
     for z in itertools.islice(iter(spec), MAX_SIZES + 1):
@@ -243,96 +252,17 @@ def _claim_data(c: Claim, needed: Sequence[tuple[int, int]]) -> dict:
     }
 
 
-def _fork_bytes(make: Callable[[], bytes], seconds: float) -> bytes | None:
-    """make() in a forked child, its bytes read back (None: it died or ran out of time).
-
-    Everything the child starts stays under this process (:class:`~stiefelsym.confine.Confined`: a subreaper)
-    and is killed once the child has ended, before this function returns (so before anything of the run is
-    written); the child's answer is what it wrote before it exited, read without waiting for an end of file
-    that a process it left could hold."""
-    from .confine import Confined
-    with Confined():
-        rfd, wfd = os.pipe()
-        gc.freeze()     # the parent's objects stay out of the child's collections (fewer copied pages)
-        pid = os.fork()
-        if pid == 0:
-            os.close(rfd)
-            code = 0
-            try:
-                data = make()
-                view = memoryview(data)
-                while view:
-                    view = view[os.write(wfd, view):]
-            except BaseException:   # noqa: BLE001 - the parent sees no result
-                code = 1
-            finally:
-                os._exit(code)
-        os.close(wfd)
-        gc.unfreeze()
-        try:
-            chunks, status = _read_until_exit(pid, rfd, seconds)
-        finally:
-            _kill_group(pid)            # the child, and what the file started in its group
-    if status != 0:                 # None: out of time
-        return None
-    return b"".join(chunks)
-
-
-def _read_until_exit(pid: int, rfd: int, seconds: float) -> tuple[list[bytes], int | None]:
-    """What the child ``pid`` writes to ``rfd`` until it has exited (and all it wrote is read), and its wait
-    status; None after ``seconds``.  ``rfd`` is closed."""
-    chunks: list[bytes] = []
-    deadline = time.monotonic() + seconds
-    pidfd = -1
-    if hasattr(os, "pidfd_open"):
-        try:
-            pidfd = os.pidfd_open(pid)
-        except OSError:
-            pidfd = -1
-    eof = False
-    try:
-        os.set_blocking(rfd, False)
-        while True:
-            left = deadline - time.monotonic()
-            if left <= 0:
-                return chunks, None
-            watch = ([] if eof else [rfd]) + ([pidfd] if pidfd >= 0 else [])
-            ready, _, _ = select.select(watch, [], [], left if pidfd >= 0 else min(left, 0.02))
-            if rfd in ready:
-                try:
-                    chunk = os.read(rfd, 1 << 16)
-                except BlockingIOError:
-                    chunk = None
-                if chunk:
-                    chunks.append(chunk)
-                    continue
-                eof = eof or chunk == b""
-            done, status = os.waitpid(pid, os.WNOHANG)
-            if done:
-                while True:             # what it wrote before it exited is all in the pipe
-                    chunk = _read_some(rfd)
-                    if not chunk:
-                        return chunks, status
-                    chunks.append(chunk)
-    finally:
-        os.close(rfd)
-        if pidfd >= 0:
-            os.close(pidfd)
-
-
-def _read_some(fd: int) -> bytes:
-    try:
-        return os.read(fd, 1 << 16)
-    except BlockingIOError:
-        return b""
-
-
-def _kill_group(pid: int) -> None:
-    try:
-        os.killpg(pid, signal.SIGKILL)
-    except OSError:
-        pass
-    _kill(pid)
+def _claim_more(c: Claim, more: dict) -> dict:
+    """The second phase's data of one claim: its size condition and erratum sizes at the sizes ``table`` (beyond
+    the first phase's table), and the keys its functions ``funcs`` (refused with symbolic sizes) are traced at:
+    the sizes ``trace`` (admitted, per the first phase's table) and those of ``table`` it admits."""
+    table = [(n, r) for n, r in more.get("table", [])]
+    admits = _table(c.sizes.admits, table)
+    admitted = [(n, r) for n, r, v in admits if v is True]
+    fails = None if c.fails_at is None else _table(c.expects_failure, admitted)
+    keys = list(dict.fromkeys([tuple(p) for p in more.get("trace", [])] + admitted))
+    return {"id": c.id, "admits": admits, "fails_at": fails,
+            "keys": [list(p) for p in keys] if more.get("funcs") else [], "funcs": list(more.get("funcs", []))}
 
 
 def _limit_memory(memory: int | None) -> None:
@@ -351,7 +281,7 @@ def _die_with_parent() -> None:
         prctl(1, signal.SIGKILL)                # PR_SET_PDEATHSIG
 
 
-def _jobs_lines(c: Claim, needed: Sequence[tuple[int, int]], jobs: list, start: int, has_free: dict,
+def _jobs_lines(c: Claim, more: dict | None, jobs: list, start: int, has_free: dict,
                 memory: int | None, wfd: int) -> None:
     """A grandchild: the claim's jobs from ``start`` on, one JSON line each, written as each is done."""
     _die_with_parent()
@@ -369,7 +299,7 @@ def _jobs_lines(c: Claim, needed: Sequence[tuple[int, int]], jobs: list, start: 
         i += 1
         if job[0] == "meta":
             try:
-                meta = _claim_data(c, needed)
+                meta = _claim_data(c) if more is None else _claim_more(c, more)
             except Exception as exc:    # noqa: BLE001 - reported as the file's error
                 write({"failed": f"{type(exc).__name__}: {exc}"})
                 return
@@ -399,16 +329,19 @@ def _next_job(jobs: list, i: int, has_free: dict) -> int:
 
 
 def _trace_jobs(c: Claim, meta: dict) -> list:
-    """(f, key) for the claim's function (f = 0) and each correction, at every key of the metadata."""
+    """(f, key) for the claim's function (f = 0) and each correction (or the functions ``funcs`` of the second
+    phase), at every key of the metadata."""
     from .scene import REALIZATIONS
     if c.realization not in REALIZATIONS:
         return []
     keys = [None if k is None else tuple(k) for k in meta["keys"]]
-    return [("f", f, k) for f in range(1 + len(c.corrections)) for k in keys]
+    funcs = meta.get("funcs", range(1 + len(c.corrections)))
+    return [("f", f, k) for f in funcs if type(f) is int and 0 <= f <= len(c.corrections) for k in keys]
 
 
-def _run_claim(c: Claim, needed: Sequence[tuple[int, int]], timeout: float, memory: int | None) -> dict:
-    """In the tracer child: the claim's metadata and its graphs, each function traced at each key in
+def _run_claim(c: Claim, more: dict | None, timeout: float, memory: int | None) -> dict:
+    """In the tracer process: the claim's metadata and its graphs (``more``: the second phase's, see
+    :func:`_claim_more`), each function traced at each key in
     grandchildren (one at a time; a grandchild that dies or runs out of time is replaced for the jobs after
     the one it did not finish).  A key whose tracing ran out of time or died is recorded as such."""
     jobs: list = [("meta",)]
@@ -424,7 +357,7 @@ def _run_claim(c: Claim, needed: Sequence[tuple[int, int]], timeout: float, memo
             os.close(rfd)
             code = 0
             try:
-                _jobs_lines(c, needed, jobs, i, has_free, memory, wfd)
+                _jobs_lines(c, more, jobs, i, has_free, memory, wfd)
             except BaseException:   # noqa: BLE001 - the parent sees where it stopped
                 code = 1
             finally:
@@ -483,6 +416,9 @@ def _run_claim(c: Claim, needed: Sequence[tuple[int, int]], timeout: float, memo
         i = _next_job(jobs, i, has_free)
     assert meta is not None
     del meta["keys"]
+    if more is not None:
+        meta["results"] = results
+        return meta
     meta["graphs"] = [[k, e] for f, k, e in results if f == 0]
     for j, corr in enumerate(meta["corrections"], 1):
         corr["graphs"] = [[k, e] for f, k, e in results if f == j]
@@ -519,32 +455,29 @@ def _kill(pid: int, wait: bool = False) -> None:
         pass
 
 
-def _tracer(path: str, needed: Sequence[tuple[int, int]], timeout: float, memory: int | None,
-            capture: int) -> bytes:
-    """The tracer child: import the file, then trace each claim in grandchildren of its own."""
+def _tracer(path: str, more: dict | None, timeout: float, memory: int | None) -> bytes:
+    """The spawned interpreter's work (:func:`stiefelsym.sandbox.host`): import the file, then trace each claim
+    in children of its own; ``more`` (the second phase): claim id -> what :func:`_claim_more` needs, and only
+    those claims."""
     _die_with_parent()
     sys.dont_write_bytecode = True      # an honest import here writes no byte code into the engine's folders
     try:
         os.setpgid(0, 0)        # its own process group: killed as a whole (with what the file started)
     except OSError:
         pass
-    sys.stdout.flush()
-    sys.stderr.flush()
-    os.dup2(capture, 1)     # whatever the file prints goes to the capture (shown on standard error)
-    os.dup2(capture, 2)
-    sys.stdout = open(1, "w", closefd=False, errors="replace")     # not the caller's streams (a test's capture)
-    sys.stderr = open(2, "w", closefd=False, errors="replace")
     try:
         reg = load_claims_file(path)
     except CatalogError as exc:
         return json.dumps({"error": str(exc)}).encode()
     parts = []
     for c in reg:
+        if more is not None and c.id not in more:
+            continue
         try:
-            data = json.dumps({"claim": _run_claim(c, needed, timeout, memory)}).encode()
+            data = json.dumps({"claim": _run_claim(c, None if more is None else more[c.id], timeout, memory)})
         except Exception as exc:    # noqa: BLE001 - reported as the file's error
-            data = json.dumps({"failed": [c.id, f"{type(exc).__name__}: {exc}"]}).encode()
-        parts.append(data)
+            data = json.dumps({"failed": [c.id, f"{type(exc).__name__}: {exc}"]})
+        parts.append(data.encode())
     try:
         import atexit
         atexit._run_exitfuncs()     # the file's exit handlers run where the file ran
@@ -651,11 +584,16 @@ class TracedFunction:
     engine's tracer, it replays the graph traced at the trace's size (:class:`~stiefelsym.ir.replay.GraphClaim`),
     raises the refusal recorded there, or raises :class:`NoGraph`.  No code of the file runs here."""
 
-    def __init__(self, name: str, realization: str, entries: list, path: str, line: int) -> None:
+    def __init__(self, name: str, realization: str, entries: list, path: str, line: int,
+                 confinement: str = "namespaces") -> None:
         from .ir.replay import GraphClaim
+        from .sandbox import note
         self._replay: Callable[..., Any]
         self.__name__ = self.__qualname__ = name
         self.realization, self.path, self.line = realization, path, line
+        #: how the file was confined while traced (stiefelsym.sandbox), and what its records say of it
+        self.confinement = confinement
+        self.confinement_note = note(confinement)
         self._table: dict[Any, Any] = {}
         for entry in entries:
             if type(entry) is not list or len(entry) != 2:
@@ -761,7 +699,7 @@ def _opt_int(d: dict, key: str) -> int | None:
     return _get(d, key, int, optional=True)
 
 
-def _claim(d: Any, path: str) -> Claim:
+def _claim(d: Any, path: str, confinement: str = "namespaces") -> Claim:
     spec_d = _get(d, "sizes", dict)
     pairs = _get(spec_d, "list", list)
     if not all(type(p) is list and len(p) == 2 and all(type(x) is int for x in p) for p in pairs):
@@ -780,14 +718,14 @@ def _claim(d: Any, path: str) -> Claim:
     for k in _get(d, "corrections", list):
         desc = _get(k, "description", str)
         corrections.append(Correction(desc, TracedFunction(f"{name} ({desc})", realization, _get(k, "graphs", list),
-                                                           src_path, line),
+                                                           src_path, line, confinement),
                                       _get(k, "changes", int), _get(k, "expect", str, optional=True)))
     paper = _get(d, "paper", list)
     if not all(type(p) is str for p in paper):
         raise WireError("a paper label that is not a string")
     return Claim(id=_get(d, "id", str), paper=tuple(paper), kind=_get(d, "kind", str),
                  section=_get(d, "section", str),
-                 func=TracedFunction(name, realization, _get(d, "graphs", list), src_path, line),
+                 func=TracedFunction(name, realization, _get(d, "graphs", list), src_path, line, confinement),
                  sizes=spec, statement=_get(d, "statement", str), title=_get(d, "title", str),
                  realization=realization, expect=_get(d, "expect", str), exact_max_n=_get(d, "exact_max_n", int),
                  exact_max_r=_exact_pairs(_get(d, "exact_max_r", list)),
@@ -823,13 +761,102 @@ def _engine_unchanged(before: dict[str, str], path: Path) -> None:
                            "claims file added before running again")
 
 
+def _phase(path: Path, more: dict | None, timeout: float, limit: int | None, capture: int) -> tuple[Any, str]:
+    """One phase in a fresh interpreter (:func:`stiefelsym.sandbox.run`): its decoded answer, and the
+    confinement it ran under."""
+    from .sandbox import run
+    config = {"file": str(path), "more": more, "timeout": timeout, "memory": limit}
+    try:
+        data, how = run(config, capture, FILE_SECONDS)
+    except ProcessesLeft as exc:
+        raise CatalogError(f"{path}: {exc}") from None
+    if data is None:
+        raise CatalogError(f"{path}: loading and tracing the file ended without a result (its process died or "
+                           f"took more than {FILE_SECONDS:.0f} s)")
+    payload = _loads(data)
+    if type(payload) is dict and "error" in payload:
+        raise CatalogError(_get(payload, "error", str))
+    items = _get(payload, "claims", list)
+    for item in items:
+        if type(item) is dict and "failed" in item:
+            failed = _get(item, "failed", list)
+            if len(failed) != 2 or not all(type(x) is str for x in failed):
+                raise WireError("a failure that is not (claim, message)")
+            raise CatalogError(f"{path}: claim {failed[0]}: {failed[1]}")
+    return [_get(item, "claim", dict) for item in items], how
+
+
+def _refused(entries: list) -> bool:
+    """Whether a function's graphs hold no graph with symbolic sizes (refused there, or its process died)."""
+    for entry in entries:
+        if type(entry) is list and len(entry) == 2 and entry[0] is None:
+            data = entry[1]
+            return type(data) is dict and ("error" in data or data.get("budget") == "died")
+    return False
+
+
+def _second_phase(claims: list, needed: list[tuple[int, int]]) -> dict:
+    """What the second phase is asked, per claim id (see :func:`_claim_more`): the needed sizes beyond the
+    first phase's tables (when the claim's answer there depends on the file), and, for the functions that have no graph with symbolic sizes, the needed sizes they
+    are traced at (admitted, not listed: the listed ones were traced in the first phase)."""
+    more: dict = {}
+    for d in claims:
+        spec = _get(d, "sizes", dict)
+        rows = {(row[0], row[1]): row[2] for row in _get(spec, "admits", list)
+                if type(row) is list and len(row) == 3}
+        listed = {tuple(p) for p in _get(spec, "list", list) if type(p) is list}
+        funcs = [f for f, entries in enumerate([_get(d, "graphs", list)] + [_get(k, "graphs", list) for k in
+                                                                           _get(d, "corrections", list)])
+                 if _refused(entries)]
+        # beyond the tables: asked only where an answer depends on the file (a condition of its own, erratum
+        # sizes, a function traced per size); a statement of bounds only is decided here by its bounds
+        tabled = _get(spec, "where", bool) or d.get("fails_at") is not None or funcs
+        table = [p for p in needed if p not in rows] if tabled else []
+        trace = [p for p in needed if rows.get(p) is True and p not in listed] if funcs else []
+        if table or trace:
+            more[_get(d, "id", str)] = {"table": [list(p) for p in table], "trace": [list(p) for p in trace],
+                                         "funcs": funcs}
+    return more
+
+
+def _merge(claims: list, extra: list, more: dict) -> None:
+    """The second phase's rows and graphs added to the first phase's claims (never replacing one of them)."""
+    by_id = {d["id"]: d for d in claims}
+    for e in extra:
+        cid = _get(e, "id", str)
+        if cid not in more or cid not in by_id:
+            raise WireError(f"the second phase answered for a claim it was not asked about ({cid!r})")
+        d = by_id[cid]
+        spec = d["sizes"]
+        asked = {tuple(p) for p in more[cid]["table"]}
+        known = {(row[0], row[1]) for row in spec["admits"]}
+        for row in _get(e, "admits", list):
+            if type(row) is list and len(row) == 3 and (row[0], row[1]) in asked - known:
+                spec["admits"].append(row)
+        fails = _get(e, "fails_at", list, optional=True)
+        if d.get("fails_at") is not None and fails is not None:
+            have = {(row[0], row[1]) for row in d["fails_at"]}
+            d["fails_at"] += [row for row in fails if type(row) is list and len(row) == 3
+                              and (row[0], row[1]) in asked - have]
+        graphs = [d["graphs"]] + [k["graphs"] for k in d["corrections"]]
+        funcs = set(more[cid]["funcs"])
+        for res in _get(e, "results", list):
+            if type(res) is not list or len(res) != 3 or type(res[0]) is not int or res[0] not in funcs \
+                    or res[1] is None:
+                raise WireError("a second phase's graph that is not (function, size, graph)")
+            f, key, entry = res
+            if any(type(g) is list and len(g) == 2 and g[0] == key for g in graphs[f]):
+                continue
+            graphs[f].append([key, entry])
+
+
 def load_claims_isolated(path: str | Path, sizes: Iterable[Any] = (), timeout: float = DEFAULT_TIMEOUT,
                          memory: float | None = DEFAULT_MEMORY_GIB) -> Registry:
-    """The claims of a user's file, imported and traced in child processes (see the module docstring),
+    """The claims of a user's file, imported and traced in fresh interpreters (see the module docstring),
     at their listed sizes and at ``sizes`` (Size or (n, r)) where they admit them; each trace has the run's
     ``timeout`` (seconds) and ``memory`` (GiB) as a run in a worker has.  Raises
     :class:`~stiefelsym.claims.CatalogError` as :func:`~stiefelsym.claims.load_claims_file` does."""
-    if not (hasattr(os, "fork") and hasattr(os, "dup2")):
+    if not (hasattr(os, "fork") and hasattr(os, "posix_spawn")):
         return load_claims_file(path)
     needed = []
     for s in sizes:
@@ -846,8 +873,15 @@ def load_claims_isolated(path: str | Path, sizes: Iterable[Any] = (), timeout: f
     limit = None if memory is None else int(memory * GIB)
     with tempfile.TemporaryFile() as capture:
         try:
-            data = _fork_bytes(lambda: _tracer(str(p), needed, timeout, limit, capture.fileno()), FILE_SECONDS)
-        except ProcessesLeft as exc:
+            claims, how = _phase(p, None, timeout, limit, capture.fileno())     # no size of the run
+            more = _second_phase(claims, needed)
+            if more:                                                          # only what needs a size
+                extra, how2 = _phase(p, more, timeout, limit, capture.fileno())
+                _merge(claims, extra, more)
+                how = how if how2 == how else f"{how}, then {how2}"
+        except (WireError, ValueError, TypeError, RecursionError) as exc:
+            if isinstance(exc, CatalogError):
+                raise
             raise CatalogError(f"{p}: {exc}") from None
         finally:
             capture.seek(0)
@@ -856,21 +890,10 @@ def load_claims_isolated(path: str | Path, sizes: Iterable[Any] = (), timeout: f
                 sys.stderr.write(printed.decode("utf-8", "replace"))
                 sys.stderr.flush()
             _engine_unchanged(engine, p)
-    if data is None:
-        raise CatalogError(f"{p}: loading and tracing the file ended without a result (its process died or took "
-                           f"more than {FILE_SECONDS:.0f} s)")
     try:
-        payload = _loads(data)
-        if type(payload) is dict and "error" in payload:
-            raise CatalogError(_get(payload, "error", str))
         reg = Registry()
-        for item in _get(payload, "claims", list):
-            if type(item) is dict and "failed" in item:
-                failed = _get(item, "failed", list)
-                if len(failed) != 2 or not all(type(x) is str for x in failed):
-                    raise WireError("a failure that is not (claim, message)")
-                raise CatalogError(f"{p}: claim {failed[0]}: {failed[1]}")
-            reg.add(_claim(_get(item, "claim", dict), str(p)))
+        for d in claims:
+            reg.add(_claim(d, str(p), how))
     except (WireError, ValueError, TypeError, RecursionError) as exc:
         if isinstance(exc, CatalogError):
             raise

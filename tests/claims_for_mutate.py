@@ -1,14 +1,12 @@
-"""A small claims file for `stiefelsym mutate --claims` (tests/test_mutate_claims.py): its module code records
+"""A small claims file for `stiefelsym mutate --claims` (tests/test_mutate_claims.py): its module code prints
 the process it runs in; one claim traces with symbolic sizes, one is a documented erratum with a sign error,
 one reads its size as a number (traced per size)."""
 import os
+import sys
 
 from stiefelsym import admissible, claim
 
-_OUT = os.environ.get("STIEFELSYM_TEST_PID_FILE")
-if _OUT:
-    with open(_OUT, "a") as fh:
-        fh.write(f"{os.getpid()}\n")
+print(f"claims-for-mutate-pid {os.getpid()}", file=sys.stderr)     # shown by the verifying process
 
 
 @claim("mc-psi-skew", paper="prep", kind="id", section="t", sizes=admissible(n_max=3))

@@ -38,47 +38,85 @@ def _alive(pid: int) -> bool:
         return False
 
 
-def _daemon_file(tmp_path: Path, close_fds: bool) -> tuple[Path, Path]:
+def _with_marker(marker: str) -> list[int]:
+    """The processes whose command line holds ``marker``."""
+    out = []
+    for entry in os.listdir("/proc"):
+        if entry.isdigit():
+            try:
+                with open(f"/proc/{entry}/cmdline", "rb") as f:
+                    if marker.encode() in f.read() and _alive(int(entry)):
+                        out.append(int(entry))
+            except OSError:
+                pass
+    return out
+
+
+@pytest.fixture(params=["spawn", "namespaces"])
+def confinement(request, monkeypatch):
+    """Each test once with the plain spawn (the subreaper and the digest are what confine the file) and once in
+    namespaces (skipped where they are not available)."""
+    import stiefelsym.sandbox as sandbox
+    monkeypatch.setattr(sandbox, "_available", {})
+    if request.param == "spawn":
+        monkeypatch.setenv(sandbox.CONFINE_ENV, "spawn")
+    elif not namespaces_available():
+        pytest.skip("no user + pid + mount namespaces here (unshare)")
+    return request.param
+
+
+def namespaces_available() -> bool:
+    import stiefelsym.sandbox as sandbox
+    if os.environ.get(sandbox.CONFINE_ENV) == "spawn" or sandbox._unshare() is None:
+        return False
+    out = subprocess.run([sandbox._unshare(), "--user", "--map-root-user", "--pid", "--fork", "--mount",
+                          "--mount-proc", "--net", "true"], capture_output=True, timeout=60)
+    return out.returncode == 0
+
+
+def _daemon_file(tmp_path: Path, close_fds: bool) -> tuple[Path, str]:
     """A claims file whose child leaves a process in a session of its own (double fork, setsid) that sleeps a
-    minute, holding (or not) every descriptor it inherited, the pipe to the verifying process included."""
-    pidfile = tmp_path / "daemon.pid"
+    minute (a program whose command line holds a marker), holding (or not) every descriptor it inherited, the
+    pipe to the verifying process included."""
+    marker = f"60.{os.getpid()}{int(time.time() * 1000) % 10 ** 6:06d}{int(close_fds)}"
     closing = "os.closerange(3, 4096)" if close_fds else "pass"
     src = textwrap.dedent(f'''
         import os
+        import sys
         import time
         if os.fork() == 0:
             os.setsid()
             if os.fork() == 0:
                 try:
+                    print("daemon-started", file=sys.stderr, flush=True)
                     {closing}
-                    with open({str(pidfile)!r}, "w") as f:
-                        f.write(str(os.getpid()))
-                    time.sleep(60)
+                    os.execv("/bin/sleep", ["sleep", {marker!r}])
                 finally:
                     os._exit(0)
             os._exit(0)
-        time.sleep(0.3)         # the grandchild has written its pid
+        time.sleep(0.3)         # the grandchild runs
     ''') + CLAIM
     path = tmp_path / "daemon_claims.py"
     path.write_text(src)
-    return path, pidfile
+    return path, marker
 
 
 @LINUX
 @pytest.mark.parametrize("close_fds", [False, True])
-def test_a_process_the_file_leaves_is_ended_with_its_child_and_does_not_hold_the_run(tmp_path, close_fds):
-    path, pidfile = _daemon_file(tmp_path, close_fds)
+def test_a_process_the_file_leaves_is_ended_with_its_child_and_does_not_hold_the_run(tmp_path, close_fds,
+                                                                                      confinement, capfd):
+    path, marker = _daemon_file(tmp_path, close_fds)
     t = time.monotonic()
     reg = load_claims_isolated(path, [(3, 2)])
     took = time.monotonic() - t
     assert list(reg.ids()) == ["confine-true"]
     assert took < 30, took                      # the process holding the pipe sleeps 60 s
-    pid = int(pidfile.read_text())
-    assert not _alive(pid), f"the process {pid} the file left is still running"
+    assert "daemon-started" in capfd.readouterr().err
+    assert _with_marker(marker) == [], "the process the file left is still running"
 
 
 @LINUX
-def test_children_the_process_had_before_are_left_alone(tmp_path):
+def test_children_the_process_had_before_are_left_alone(tmp_path, confinement):
     mine = subprocess.Popen([sys.executable, "-c", "import time; time.sleep(60)"])
     try:
         path, _ = _daemon_file(tmp_path, True)
@@ -137,8 +175,9 @@ def test_the_package_roots_hold_the_engine_and_the_catalog():
     assert any(p.endswith(os.sep + "report.py") for p in files)
 
 
-def test_a_claims_file_whose_child_edits_the_engine_is_refused(tmp_path, monkeypatch):
-    """The digest check on its own (the module's roots pointed at a scratch directory the file edits)."""
+def test_a_claims_file_whose_child_edits_the_engine_is_refused(tmp_path, monkeypatch, confinement):
+    """The digest check on its own (the module's roots pointed at a scratch directory the file edits); in
+    namespaces the edit itself fails (the file system is read-only there) and the file is refused for it."""
     import stiefelsym.confine as confine
     scratch = tmp_path / "engine"
     scratch.mkdir()
@@ -146,11 +185,14 @@ def test_a_claims_file_whose_child_edits_the_engine_is_refused(tmp_path, monkeyp
     monkeypatch.setattr(confine, "package_roots", lambda: [scratch])
     path = tmp_path / "edits.py"
     path.write_text(f"open({str(scratch / 'mod.py')!r}, 'a').write('x = 2\\n')\n" + CLAIM)
-    with pytest.raises(CatalogError, match="changed on disk.*mod.py"):
+    refusal = "changed on disk.*mod.py" if confinement == "spawn" else "Read-only file system"
+    with pytest.raises(CatalogError, match=refusal):
         load_claims_isolated(path, [(3, 2)])
+    assert (scratch / "mod.py").read_text() == ("x = 1\n" if confinement == "namespaces" else "x = 1\nx = 2\n")
     honest = tmp_path / "honest.py"
     honest.write_text(CLAIM)
-    assert list(load_claims_isolated(honest, [(3, 2)]).ids()) == ["confine-true"]
+    (c,) = load_claims_isolated(honest, [(3, 2)])
+    assert c.id == "confine-true" and c.func.confinement == confinement
 
 
 def test_the_verifying_process_imports_the_whole_package_before_the_fork():

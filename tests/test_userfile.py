@@ -15,16 +15,22 @@ ADV = ROOT / "tests" / "adversary"
 
 
 def test_module_code_of_a_claims_file_never_runs_in_the_cli_process(tmp_path):
-    pids = tmp_path / "pids"
-    env = dict(os.environ, STIEFELSYM_TEST_PID_FILE=str(pids))
+    """The file runs in a spawned interpreter: not the CLI's process, none of the run's environment, and its
+    parent's command line is not the run's (in namespaces it has no parent it can see)."""
+    env = dict(os.environ, STIEFELSYM_TEST_PID_FILE="marker-of-the-run")
     p = subprocess.Popen([sys.executable, "-m", "stiefelsym", "verify", "--claims", str(ADV / "module_code_pid.py"),
-                          "--method", "modular", "--size", "3,2"], cwd=ROOT, env=env, stdout=subprocess.PIPE,
-                         stderr=subprocess.PIPE, text=True)
+                          "--method", "modular", "--size", "3,2", "--report-dir", str(tmp_path)],
+                         cwd=ROOT, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     out, err = p.communicate(timeout=300)
     assert p.returncode == 0, out + err
-    assert "adv-pid-orthonormal (3,2) modular: checked" in out
-    ran = {int(x) for x in pids.read_text().split()}
-    assert ran and p.pid not in ran, (p.pid, ran)
+    assert "adv-pid-orthonormal (3,2) modular: checked" in out, out + err
+    seen = [line for line in err.splitlines() if line.startswith("claims-file-pid ")]
+    assert seen, err
+    for line in seen:
+        pid = int(line.split()[1])
+        assert pid != p.pid, (p.pid, line)
+        assert "STIEFELSYM_TEST_PID_FILE" not in line and "marker-of-the-run" not in line, line
+        assert "3,2" not in line and "modular" not in line and "--claims" not in line, line
 
 
 def test_the_wire_decoder_gives_ir_values_only():

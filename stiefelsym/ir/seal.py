@@ -27,10 +27,11 @@ import types
 from pathlib import Path
 from typing import Any
 
-#: modules a verdict does not depend on (renderers, the CLI, optional integrations): not imported at
+#: modules a verdict does not depend on (renderers, the CLI, optional integrations, the flows report's numerical
+#: integration with scipy, which registers nothing and costs most of a sealing's imports): not imported at
 #: sealing time (a claims file that changes one of them changes no verdict)
 _NOT_VERDICT = ("cli", "cli_", "notebook", "pytest_plugin", "distributed", "_dask_plugin", "speed", "costfit",
-                "report", "latex", "flows_report", "mutate", "discover", "__main__", "proofs")
+                "report", "latex", "flows_report", "integrate", "mutate", "discover", "__main__", "proofs")
 #: third-party modules whose top-level attributes the backends call
 _LIBRARIES = ("numpy", "flint", "symengine", "fractions", "operator", "math", "mpmath", "random", "hashlib")
 #: registries (module, attribute) whose contents are fingerprinted

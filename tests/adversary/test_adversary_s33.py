@@ -458,21 +458,29 @@ def _scratch_engine(tmp_path):
     return root
 
 
-def test_a_claims_file_that_rewrites_the_engine_on_disk_changes_no_verdict(tmp_path):
+@pytest.mark.parametrize("confinement", ["spawn", "namespaces"])
+def test_a_claims_file_that_rewrites_the_engine_on_disk_changes_no_verdict(tmp_path, confinement):
     """Closed (AI): the verifying process imports the whole package and takes the digest of its files before
     the first fork; a file changed when the child returns stops the run (exit 2, the file named, nothing
-    written), and no module is read from disk after the child ran."""
+    written), and no module is read from disk after the child ran.  In namespaces the file cannot write the
+    package at all (read-only there): its import fails, the run stops (exit 2), the copy is untouched."""
     import subprocess
     import sys
     root = _scratch_engine(tmp_path)
     env = dict(os.environ, PYTHONPATH=str(root))
+    env.pop("STIEFELSYM_CONFINE", None)
+    if confinement == "spawn":
+        env["STIEFELSYM_CONFINE"] = "spawn"
     out = subprocess.run([sys.executable, "-m", "stiefelsym", "verify", "--claims", str(HERE / DISK), "--method",
                           "exact", "--size", "3,2", "--report-dir", str(tmp_path / "rep")], cwd=root, env=env,
                          capture_output=True, text=True, timeout=300)
     assert "S33 PAYLOAD" not in (ROOT / "stiefelsym" / "report.py").read_text()    # the engine itself untouched
-    assert "S33 PAYLOAD" in (root / "stiefelsym" / "report.py").read_text(), out.stderr[-800:]   # the copy was
     assert out.returncode == 2, (out.returncode, out.stderr[-800:])
-    assert "changed on disk" in out.stderr and "report.py" in out.stderr and "Traceback" not in out.stderr
+    if confinement == "spawn" or "Read-only file system" not in out.stderr:
+        assert "S33 PAYLOAD" in (root / "stiefelsym" / "report.py").read_text(), out.stderr[-800:]  # the copy was
+        assert "changed on disk" in out.stderr and "report.py" in out.stderr and "Traceback" not in out.stderr
+    else:
+        assert "S33 PAYLOAD" not in (root / "stiefelsym" / "report.py").read_text()
     assert not (tmp_path / "rep" / "results.json").exists()
     assert "proved" not in out.stdout
 
@@ -481,17 +489,27 @@ LATER = "s33_results_rewritten_later.py"
 
 
 @pytest.mark.skipif(not sys.platform.startswith("linux"), reason="the child subreaper is Linux's")
-def test_the_results_file_of_a_run_is_not_rewritten_after_it(tmp_path):
-    """Closed (AI'): the verifying process is a child subreaper while the file's child runs, and kills every
-    process left under it (found in /proc) when the child has ended, before anything is written."""
+@pytest.mark.parametrize("confinement", ["spawn", "namespaces"])
+def test_the_results_file_of_a_run_is_not_rewritten_after_it(tmp_path, confinement):
+    """Closed (AI'): the verifying process is a child subreaper while the file's interpreter runs, and kills
+    every process left under it (found in /proc) when it has ended, before anything is written; in namespaces
+    the file's processes end with its pid namespace and cannot write the report folder (read-only there).
+    The file is given the run's command line as its own sys.argv (it no longer inherits it)."""
     import time
-    out = cli("verify", "--claims", str(HERE / LATER), "--method", "exact", "--size", "3,2", "--report-dir",
-              str(tmp_path / "rep"), env=dict(os.environ, STIEFELSYM_S33_DAEMON="1"))
+    from adversary_cli import baked
+    rep = tmp_path / "rep"
+    args = ["verify", "--claims", None, "--method", "exact", "--size", "3,2", "--report-dir", str(rep)]
+    args[2] = str(baked(HERE / LATER, {"STIEFELSYM_S33_DAEMON": "1"}, argv=["stiefelsym", *args[:2], *args[3:]]))
+    env = dict(os.environ)
+    env.pop("STIEFELSYM_CONFINE", None)
+    if confinement == "spawn":
+        env["STIEFELSYM_CONFINE"] = "spawn"
+    out = cli(*args, env=env)
     assert "exact: fails" in out.stdout, out.stdout
     verdicts_seen = set()
     for _ in range(10):                 # the process it left acts within 0.1 s of the end of the run
         time.sleep(0.2)
-        recs = json.loads((tmp_path / "rep" / "results.json").read_text())["results"]
+        recs = json.loads((rep / "results.json").read_text())["results"]
         verdicts_seen |= {r["verdict"] for r in recs}
     assert verdicts_seen == {"fails"}, verdicts_seen
 

@@ -1,0 +1,286 @@
+"""A claims file is traced in a spawned interpreter that knows nothing of the run (stiefelsym.sandbox): no
+command line, no environment, no parsed options; in namespaces it sees no process of the run and writes
+nowhere but a private /tmp.  Without namespaces (STIEFELSYM_CONFINE=spawn, or a platform without them) every
+record of the file says so."""
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+import textwrap
+import uuid
+from pathlib import Path
+
+import pytest
+
+from stiefelsym.sandbox import CONFINE_ENV, NOTES, SPAWN, _unshare
+from stiefelsym.userfile import load_claims_isolated
+
+ROOT = Path(__file__).resolve().parents[1]
+READ = ROOT / "tests" / "adversary" / "sandbox_run_read.py"
+PASSING = ("proved", "checked", "numeric")
+WAYS = ("parent", "processes", "environ", "objects", "argv")
+
+
+def _namespaces() -> bool:
+    if os.environ.get(CONFINE_ENV) == SPAWN or _unshare() is None:
+        return False
+    out = subprocess.run([_unshare() or "unshare", "--user", "--map-root-user", "--pid", "--fork", "--mount",
+                          "--mount-proc", "--net", "true"], capture_output=True, timeout=60)
+    return out.returncode == 0
+
+
+NAMESPACES = pytest.mark.skipif(not _namespaces(), reason="no user + pid + mount namespaces here (unshare): the "
+                                "file's interpreter is spawned without them, sees /proc and writes with the "
+                                "user's rights (its records say so)")
+
+
+def _env(confinement: str, **extra: str) -> dict:
+    env = {k: v for k, v in os.environ.items() if k != CONFINE_ENV}
+    if confinement == SPAWN:
+        env[CONFINE_ENV] = SPAWN
+    env.update(extra)
+    return env
+
+
+def _verify(claims: Path, *args: str, env: dict, report: Path) -> tuple[dict, subprocess.CompletedProcess]:
+    out = subprocess.run([sys.executable, "-m", "stiefelsym", "verify", "--claims", str(claims), *args, "--jobs", "1",
+                          "--report-dir", str(report)], cwd=ROOT, env=env, capture_output=True, text=True,
+                         timeout=600)
+    recs = json.loads((report / "results.json").read_text())["results"] if (report / "results.json").exists() else []
+    return {r["claim"]: r for r in recs}, out
+
+
+@pytest.mark.parametrize("confinement", ["namespaces", SPAWN])
+def test_a_file_that_looks_for_the_run_traces_one_graph_in_every_run(tmp_path, confinement):
+    """The free run proves X^T X = I for every claim; the run at (7,2) (with a variable holding "7,2" in its
+    environment) passes the same graph: no way of the file sees the run.  Without namespaces the file can read
+    the verifying process's command line in /proc: those two ways still tell the runs apart (the fallback's
+    stated limit), and every record says which confinement was used."""
+    if confinement == "namespaces" and not _namespaces():
+        pytest.skip("no user + pid + mount namespaces here")
+    free, out1 = _verify(READ, "--method", "free", env=_env(confinement), report=tmp_path / "free")
+    at7, out2 = _verify(READ, "--method", "exact", "--size", "7,2", report=tmp_path / "at7",
+                        env=_env(confinement, SIZE_HINT="7,2", STIEFELSYM_SIZE_HINT="7,2"))
+    assert set(free) == set(at7) == {f"adv-sbx-{w}" for w in WAYS}, (out1.stderr[-800:], out2.stderr[-800:])
+    open_ways = ("parent", "processes") if confinement == SPAWN else ()
+    for w in WAYS:
+        f, s = free[f"adv-sbx-{w}"], at7[f"adv-sbx-{w}"]
+        if not (w == "processes" and confinement == SPAWN):    # there: any process of the machine
+            assert f["verdict"] == "proved", (w, f["verdict"], f["message"])
+        if w in open_ways:
+            assert s["verdict"] == "fails", (w, s["verdict"])      # the fallback's limit, as documented
+        else:
+            assert s["verdict"] in PASSING and s["n"] == 7, (w, s["verdict"], s["message"])
+        for rec in (f, s):
+            assert (NOTES[SPAWN] in rec["reductions"]) == (confinement == SPAWN), (w, rec["reductions"])
+
+
+@NAMESPACES
+def test_a_file_cannot_write_outside_its_private_tmp(tmp_path):
+    """Module code and claim code try to write: a file next to the test's folder, a file in /tmp, the run's
+    report folder (its results.json), the claims file itself, the user's home folder; none
+    is written, the run's verdicts are the claims', and the results file is the run's own."""
+    mark = uuid.uuid4().hex
+    report = tmp_path / "rep"
+    report.mkdir()
+    outside, in_tmp = tmp_path / f"outside-{mark}", Path("/tmp") / f"stiefelsym-sbx-{mark}"
+    home = Path(os.path.expanduser("~")) / f".stiefelsym-sbx-{mark}"
+    claims = tmp_path / "writer.py"
+    claims.write_text(textwrap.dedent(f'''
+        import os
+        import sys
+
+        from stiefelsym import admissible, claim
+
+        TARGETS = [{str(outside)!r}, {str(in_tmp)!r}, {str(report / "results.json")!r}, {str(report / "x")!r},
+                   __file__, {str(home)!r}]
+
+
+        def attempt(where):
+            for t in TARGETS:
+                try:
+                    with open(t, "a") as f:
+                        f.write("written by the claims file\\n")
+                    print(f"WROTE {{where}} {{t}}", file=sys.stderr)
+                except OSError as exc:
+                    print(f"refused {{where}} {{t}}: {{exc.strerror}}", file=sys.stderr)
+
+
+        attempt("import")
+
+
+        @claim("sbx-writer", kind="id", sizes=admissible(n_max=3))
+        def writer(s):
+            """X^T X = I, traced after trying to write everywhere."""
+            attempt("trace")
+            return {{"r": s.X.T @ s.X - s.Ir}}
+    '''))
+    source = claims.read_text()
+    recs, out = _verify(claims, "--method", "free", "--method", "exact", "--size", "3,2", env=_env("namespaces"),
+                        report=report)
+    assert out.returncode == 0, out.stdout + out.stderr[-2000:]
+    assert {r["verdict"] for r in recs.values()} == {"proved"}
+    # a write to /tmp goes to the interpreter's private tmpfs, gone with it; every other one is refused
+    wrote = [x for x in out.stderr.splitlines() if x.startswith("WROTE")]
+    assert wrote and all(x.endswith(str(in_tmp)) for x in wrote), out.stderr[-2000:]
+    assert out.stderr.count("refused import") == 5 and "Read-only file system" in out.stderr, out.stderr[-2000:]
+    assert not outside.exists() and not in_tmp.exists() and not (report / "x").exists() and not home.exists()
+    assert claims.read_text() == source
+    assert "written by the claims file" not in (report / "results.json").read_text()
+    assert all(NOTES[SPAWN] not in r["reductions"] for r in recs.values())
+
+
+@NAMESPACES
+def test_a_file_sees_no_process_and_no_network_of_the_run(tmp_path, capfd):
+    path = tmp_path / "looks.py"
+    path.write_text(textwrap.dedent('''
+        import os
+        import socket
+        import sys
+
+        from stiefelsym import admissible, claim
+
+        procs = sorted(int(p) for p in os.listdir("/proc") if p.isdigit())
+        try:
+            socket.create_connection(("127.0.0.1", 9), timeout=1)
+            net = "connected"
+        except OSError as exc:
+            net = type(exc).__name__
+        print(f"LOOK pid={os.getpid()} ppid={os.getppid()} procs={procs} net={net}", file=sys.stderr)
+
+
+        @claim("sbx-looks", kind="id", sizes=admissible(n_max=3))
+        def looks(s):
+            """X^T X = I."""
+            return {"r": s.X.T @ s.X - s.Ir}
+    '''))
+    (c,) = load_claims_isolated(path, [(3, 2)])
+    assert c.func.confinement == "namespaces"
+    line = next(x for x in capfd.readouterr().err.splitlines() if x.startswith("LOOK"))
+    assert "pid=1 ppid=0 procs=[1]" in line and "net=connected" not in line, line
+
+
+def test_the_first_phase_knows_no_size_and_the_second_only_what_needs_one(tmp_path):
+    """A claim with a graph of symbolic sizes is traced once, at no size, whatever the command asks; a claim
+    that reads its size as a number (no dimension-free proof) and a size condition asked beyond the first
+    phase's table (n = 20) are answered by a second interpreter given those sizes only."""
+    path = tmp_path / "phases.py"
+    path.write_text(textwrap.dedent('''
+        from stiefelsym import admissible, claim
+
+
+        @claim("ph-free", kind="id", sizes=admissible(n_max=3, where=lambda n, r: n % 2 == 0 or n < 4,
+                                                      condition="n even or n < 4"))
+        def free(s):
+            """X^T X = I."""
+            return {"r": s.X.T @ s.X - s.Ir}
+
+
+        @claim("ph-number", kind="id", sizes=admissible(n_max=3))
+        def number(s):
+            """tr(X^T X) = r, r read as a number."""
+            return {"tr": s.tr(s.X.T @ s.X) - int(s.r)}
+    '''))
+    reg = load_claims_isolated(path, [(20, 2), (21, 2), (5, 2)])
+    free, number = reg.get("ph-free"), reg.get("ph-number")
+    assert free.func.sizes() == [] and free.sizes.admits(20, 2) and not free.sizes.admits(21, 2)
+    assert (20, 2) in number.func.sizes() and (21, 2) in number.func.sizes() and (5, 2) in number.func.sizes()
+    assert (4, 2) not in number.func.sizes()      # neither listed (n <= 3) nor asked
+
+
+@NAMESPACES
+@pytest.mark.parametrize("body", ["import os\nos._exit(3)\n",
+                                  "import os\nos.write(3, b'{\"confined\": \"spawn\"}\\n{\"claims\": []}')\nos._exit(0)\n",
+                                  "raise SystemExit(1)\n"])
+def test_a_file_cannot_ask_for_the_fallback(tmp_path, monkeypatch, body):
+    """The confinement line is written before the file runs: a file that dies, exits with the setup's status
+    or writes a line of its own is an error of the file, and the namespaces stay in use for the next file."""
+    import stiefelsym.sandbox as sandbox
+    from stiefelsym.claims import CatalogError
+    monkeypatch.setattr(sandbox, "_available", {})
+    bad = tmp_path / "bad.py"
+    bad.write_text(body)
+    with pytest.raises(CatalogError):
+        load_claims_isolated(bad, [(3, 2)])
+    assert sandbox._available.get(sandbox.NAMESPACES) is True
+    good = tmp_path / "good.py"
+    good.write_text(textwrap.dedent('''
+        from stiefelsym import admissible, claim
+
+
+        @claim("sbx-good", kind="id", sizes=admissible(n_max=3))
+        def good(s):
+            """X^T X = I."""
+            return {"r": s.X.T @ s.X - s.Ir}
+    '''))
+    (c,) = load_claims_isolated(good, [(3, 2)])
+    assert c.func.confinement == sandbox.NAMESPACES
+
+
+def test_the_second_phase_adds_only_what_it_was_asked_for():
+    """What the second interpreter sends may add rows for the sizes it was asked about and graphs of the
+    functions it was asked to trace; an answer about another claim, another function or a graph with symbolic
+    sizes is refused, and a row or a graph the first phase had is kept."""
+    from stiefelsym.userfile import WireError, _merge, _second_phase
+    claims = [{"id": "a", "sizes": {"admits": [[3, 2, True], [4, 2, False]], "list": [[3, 2]], "where": False},
+               "graphs": [[None, {"error": ["TraceRefused", "needs a number"], "at": None}], [[3, 2], {"ops": []}]],
+               "corrections": [], "fails_at": [[3, 2, False]]},
+              {"id": "b", "sizes": {"admits": [[3, 2, True], [4, 2, True]], "list": [[3, 2]], "where": True},
+               "graphs": [[None, {"ops": []}]], "corrections": [], "fails_at": None},
+              {"id": "c", "sizes": {"admits": [[3, 2, True], [4, 2, True]], "list": [[3, 2]], "where": False},
+               "graphs": [[None, {"ops": []}]], "corrections": [], "fails_at": None}]
+    more = _second_phase(claims, [(3, 2), (4, 2), (20, 2)])
+    # a: refused with symbolic sizes; b: a condition of its own beyond the table; c: bounds only, nothing to ask
+    assert more == {"a": {"table": [[20, 2]], "trace": [], "funcs": [0]},
+                    "b": {"table": [[20, 2]], "trace": [], "funcs": []}}, more
+    good = [{"id": "a", "admits": [[20, 2, True], [3, 2, False]], "fails_at": [[20, 2, True], [3, 2, True]],
+             "results": [[0, [20, 2], {"ops": ["x"]}], [0, [3, 2], {"ops": ["forged"]}]]}]
+    _merge(claims, good, more)
+    a = claims[0]
+    assert a["sizes"]["admits"] == [[3, 2, True], [4, 2, False], [20, 2, True]]
+    assert a["fails_at"] == [[3, 2, False], [20, 2, True]]
+    assert a["graphs"][1] == [[3, 2], {"ops": []}] and a["graphs"][2] == [[20, 2], {"ops": ["x"]}]
+    for bad in ([{"id": "c", "admits": [], "fails_at": None, "results": []}],
+                [{"id": "b", "admits": [], "fails_at": None, "results": [[0, [20, 2], {"ops": []}]]}],
+                [{"id": "a", "admits": [], "fails_at": None, "results": [[0, None, {"ops": []}]]}]):
+        with pytest.raises(WireError):
+            _merge(claims, bad, more)
+
+
+def test_a_file_whose_claims_have_graphs_of_symbolic_sizes_is_traced_once(tmp_path, monkeypatch):
+    """Sizes beyond the first phase's tables need no second interpreter when the statement is bounds only and
+    every function has a graph of symbolic sizes; a claim that reads its size as a number needs one."""
+    import stiefelsym.sandbox as sandbox
+    calls = []
+    real = sandbox.run
+
+    def counted(config, capture, seconds):
+        calls.append(config["more"])
+        return real(config, capture, seconds)
+    monkeypatch.setattr(sandbox, "run", counted)
+    body = textwrap.dedent('''
+        from stiefelsym import admissible, claim
+
+
+        @claim("once-free", kind="id", sizes=admissible(n_max=3))
+        def free(s):
+            """X^T X = I."""
+            return {"r": s.X.T @ s.X - s.Ir}
+    ''')
+    path = tmp_path / "once.py"
+    path.write_text(body)
+    (c,) = load_claims_isolated(path, [(20, 2), (5, 2)])
+    assert calls == [None] and c.sizes.admits(20, 2) and c.func.sizes() == []
+    path.write_text(body + textwrap.dedent('''
+
+        @claim("once-number", kind="id", sizes=admissible(n_max=3))
+        def number(s):
+            """tr(X^T X) = r, r read as a number."""
+            return {"tr": s.tr(s.X.T @ s.X) - int(s.r)}
+    '''))
+    calls.clear()
+    reg = load_claims_isolated(path, [(20, 2), (5, 2)])
+    assert calls == [None, {"once-number": {"table": [[20, 2]], "trace": [[5, 2]], "funcs": [0]}}], calls
+    assert (20, 2) in reg.get("once-number").func.sizes() and reg.get("once-free").func.sizes() == []
