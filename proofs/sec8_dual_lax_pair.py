@@ -182,7 +182,7 @@ def poisson_sphere_geodesic_flow(s):
 
 # -- the reflections (reflections) ----------------------------------------------------------
 
-@claim("dual-lax-reflections", paper=("DUAL", "reflections", "LA3", "LA4"), kind="id", exact_max_n=3, exact_max_r={4: 2, 5: 1, 6: 1, 7: 1},
+@claim("dual-lax-reflections", paper=("DUAL", "reflections", "LA3", "LA4"), kind="id", exact_max_n=3, exact_max_r={4: 1, 5: 1, 6: 1, 7: 1},
        sizes=admissible(n_max=5),
        statement=r"(X,P)\mapsto(S_iX,S_iP):\quad \mathcal L^*_{neum}(\lambda),\ \mathcal A^*_{neum}(\lambda)\ "
                  r"\text{are invariant},\quad i=1,\dots,n")
@@ -751,7 +751,7 @@ def dual_invariants_are_manakov_integrals_for_r_n(s):
 # -- the Chasles cones are real ------------------------------------------------------------------------
 
 @claim("chasles-cones-real", paper=("Gen_Chasles", "2r-integrals", "conf0"), kind="geo",
-       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 1, 4: 1},
+       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 1},
        statement=r"\lambda^r\,\mathcal I_{2r}(\lambda)=\det\big(\lambda\mathbf I_n-Q(A-PP^T)Q\big),\ Q=\mathbf I_n-XX^T"
                  r"\ \Rightarrow\ c_1,\dots,c_{n-r}\in\mathbb R\ \text{for real}\ (X,P)")
 def chasles_cones_are_real(s):
