@@ -216,6 +216,10 @@ def run_free_on(claim: Claim, func: Callable, family: SizeFamily | None, alone: 
         if name in summary["hypotheses"]:
             entries += (f" (for every n at r = {k}, {only}: it uses "
                         f"{' + '.join(f'E_{i + 1}E_{i + 1}^T' for i in range(k))} = I_r)")
+    if family is not None and alone and "(for every n at r = " not in entries:
+        # traced on the family (r = k or r = n) of the only sizes the claim is stated for: the proof is
+        # about those sizes, whether or not it used a hypothesis of the family
+        entries += f" (for every n at {family.r_text}, {only})"
     if scene._moving:
         entries += (" (for every n, r at which the resolvent at the spectral parameter that moves with the point, "
                     f"{', '.join(str(m) for _, m in scene._moving)} = {'; '.join(_short(q) for q, _ in scene._moving)},"

@@ -563,3 +563,17 @@ def test_remembered_canonical_form_is_the_canonical_form(monkeypatch):
     monkeypatch.setattr(scene_module, "canonical_form", checked)
     assert run_one(load_catalog().get("magnetic-normal-flow"), None, "free", 0).verdict == "proved"
     assert seen
+
+
+def test_a_claim_stated_at_one_r_is_proved_at_that_r_whatever_its_hypotheses():
+    """A claim stated on V(n, 2) only is traced on the family r = 2; its proof is about every n at r = 2,
+    and says so (the report counts it there, not among the claims proved for every n and r), also when the
+    proof used no hypothesis of the family (twisted-form: no E_1E_1^T + E_2E_2^T = I_r)."""
+    from stiefelsym.claims import load_catalog
+    from stiefelsym.report import free_scope
+    from stiefelsym.runner import run_one
+
+    res = run_one(load_catalog().get("twisted-form"), None, "free", 0)
+    assert res.verdict == "proved", res.message
+    assert "E_1E_1^T + E_2E_2^T = I_r" not in res.certificate
+    assert free_scope(res) == "every n at r = 2", res.certificate
