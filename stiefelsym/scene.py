@@ -1527,36 +1527,6 @@ class _LiftedScene(Scene):
     def A(self) -> Mat:
         return self._cached("A", lambda: self._lift_primitive(self.base.A, None))
 
-    def _equivariant_complex_point(self) -> tuple[Mat, Mat]:
-        """A generic point (Z, Ż) of the tangent bundle of W(n, r), realified, on the equivariant
-        chart: the first r columns of the unitary Cayley transform (I − S)(I + S)⁻¹ of the
-        skew-Hermitian S = [[S11, −K*], [K, 0]] (S11 skew-Hermitian r × r, K generic complex
-        (n − r) × r), Z = [I − S11 − K*K; −2K] M⁻¹ with M = I + S11 + K*K (one complex r × r
-        inverse, as for the second point (Y, Q) of :meth:`_equivariant_second_point`); Ż = ZW +
-        (I − ZZ*)Y (W skew-Hermitian, Y generic).  The map (S11, K) ↦ Z has the injective differential
-        (S11, K) ↦ −2(S11; K) at 0 between spaces of the real dimension 2nr − r² of W(n, r), the
-        image of the connected U(n): its image is Zariski dense.  Real g in O(n) and h in O(r) act
-        on it as realify(g) Z realify(h)ᵀ, and the chart's reduction leaves Z anywhere on W(n, r)."""
-        n, r = self.n, self.r
-        f, tr = self._field, self._tracker
-        S11 = self.realify(self._skew_params("cS", r, "r"), self._sym_params("cH", r, "r"))
-        Kre, Kim = self.zeros(n, r, ("n", "r")), self.zeros(n, r, ("n", "r"))
-        for i in range(r, n):
-            for j in range(r):
-                Kre._a[i, j] = self._param(param_name("cKre", i, j))
-                Kim._a[i, j] = self._param(param_name("cKim", i, j))
-        Kc = self.realify(Kre, Kim)
-        I2r = self.identity(2 * r, "r+r")
-        KtK = Kc.T @ Kc
-        M = I2r + S11 + KtK
-        E0 = np.eye(n, r, dtype=np.int64)
-        E = self.realify(Mat._consts(E0, f, ("n", "r"), tr), Mat._consts(0 * E0, f, ("n", "r"), tr))
-        Z = (E @ (I2r - S11 - KtK) - Kc * self.const(2)) @ M.inv()
-        W = self.realify(self._skew_params("cW", r, "r"), self._sym_params("cK", r, "r"))
-        Y = self.realify(self._general_params("cY", n, r, ("n", "r")), self._general_params("cV", n, r, ("n", "r")))
-        I2 = self.identity(2 * n, "n+n")
-        return Z, Z @ W + (I2 - Z @ Z.T) @ Y
-
     @property
     def Zc(self) -> Mat:
         return self._cached("Zc", lambda: self._lift_primitive(self.base.Zc, "Zc"))

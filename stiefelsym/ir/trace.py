@@ -21,7 +21,7 @@ from __future__ import annotations
 import functools
 import inspect
 from fractions import Fraction
-from typing import Any, Callable
+from typing import Any, Callable, Iterator
 
 from .seal import refuse_registration
 from .families import COMPARISONS, SYMBOLS, SizeFamily
@@ -1081,14 +1081,8 @@ class Trace:
     def _divisor(self, outs: tuple, args: tuple) -> str:
         """What a node of ``outs`` (down to the nodes ``args``) divides by when it is not a constant: a
         division by a number, a matrix inverse, a negative power or a resolvent ("" when there is none)."""
-        g, stop = self.g, {a._r.i for a in args}
-        seen: set[int] = set()
-        stack = [x._r.i for x in outs]
-        while stack:
-            i = stack.pop()
-            if i in seen or i in stop:
-                continue
-            seen.add(i)
+        g = self.g
+        for i in self._below(outs, args):
             op, a = g.ops[i], g.args[i]
             if op == "div" and not self._constant(a[1]):
                 return "a number that is not a constant"
@@ -1101,8 +1095,20 @@ class Trace:
             if op == "prim" and type(a[0]) is Named and a[0].qualname in self._SOLVING_STEPS:
                 return (f"the determinant of a linear system of the claim's own ({a[0].qualname.rsplit('.', 1)[-1]}: "
                         "its matrix, from the claim's constraints or kinetic form, may be singular)")
-            stack.extend(g.refs(i))
         return ""
+
+    def _below(self, outs: tuple, args: tuple) -> Iterator[int]:
+        """The nodes of ``outs`` and below them, down to (not including) the nodes ``args``."""
+        g, stop = self.g, {a._r.i for a in args}
+        seen: set[int] = set()
+        stack = [x._r.i for x in outs]
+        while stack:
+            i = stack.pop()
+            if i in seen or i in stop:
+                continue
+            seen.add(i)
+            yield i
+            stack.extend(g.refs(i))
 
     #: the nodes a constant divisor is made of: numbers and their arithmetic (no scene value, no
     #: parameter, no element, no engine step)
@@ -1139,19 +1145,12 @@ class Trace:
     def _reads_elements(self, outs: tuple, args: tuple) -> bool:
         """Whether a node of ``outs`` reads a generic element of an Inverse statement other than through
         the nodes ``args`` (the function's arguments)."""
-        g, stop = self.g, {a._r.i for a in args}
-        seen: set[int] = set()
-        stack = [x._r.i for x in outs]
-        while stack:
-            i = stack.pop()
-            if i in seen or i in stop:
-                continue
-            seen.add(i)
+        g = self.g
+        for i in self._below(outs, args):
             a = g.args[i]
             if (g.ops[i] == "call" and a[1] == "generic" and type(a[2]) is tuple and type(a[2][0]) is str
                     and a[2][0].startswith(INVERSE_ELEMENTS)):
                 return True
-            stack.extend(g.refs(i))
         return False
 
     # -- engine primitives --------------------------------------------------------------------------
