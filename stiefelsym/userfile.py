@@ -243,7 +243,7 @@ def _claim_data(c: Claim, needed: Sequence[tuple[int, int]] = ()) -> dict:
         "line": line if type(line) is int else 0, "name": getattr(c.func, "__name__", c.id),
         "sizes": {"list": [list(p) for p in listed], "n_min": spec.n_min, "r_min": spec.r_min,
                   "r_max": spec.r_max, "n_max": spec.n_max, "r_is_n": bool(spec.r_is_n),
-                  "condition": spec.condition, "where": spec.where is not None or type(spec) is not SizeSpec,
+                  "condition": spec.condition, "where": spec.where is not None or type(spec) is not SizeSpec or bool(getattr(spec, "r_in", ())),
                   "fields_first": type(spec) is SizeSpec, "admits": admits},
         "fails_at": fails,
         "keys": [None] + [list(p) for p in traced],

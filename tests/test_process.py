@@ -398,7 +398,8 @@ def test_subprocess_signal_kills_every_worker_and_writes_no_report(tmp_path, sig
     (tmp_path / "slow.py").write_text(SLOW)
     proc = subprocess.Popen([sys.executable, "-m", "stiefelsym", "verify", "--claims", "slow.py",
                              "--method", "modular", "--report-dir", "out", "--timeout", "120"],
-                            cwd=tmp_path, env=_env(), stdin=subprocess.DEVNULL,
+                            # the plain spawn: the file tells the test its pids through its working directory
+                            cwd=tmp_path, env=dict(_env(), STIEFELSYM_CONFINE="spawn"), stdin=subprocess.DEVNULL,
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                             # as from an interactive shell: a background test run inherits SIGINT ignored
                             preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))

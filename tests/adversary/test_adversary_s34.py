@@ -248,16 +248,49 @@ def _scratch_cwd(tmp_path, how="module"):
     return cwd
 
 
-def _verify_in(cwd, tmp_path, *methods):
+def _verify_in(cwd, tmp_path, *methods, confine="spawn"):
+    """The run in ``cwd``; with the plain spawn (``confine="spawn"``), where the file writes with the user's
+    rights, or in namespaces, where it writes nowhere but its own private /tmp."""
     import os
     import subprocess
     import sys
+
+    from stiefelsym.sandbox import CONFINE_ENV
     args = [sys.executable, "-m", "stiefelsym", "verify", "--claims", str(HERE / ON_PATH), "--size", "3,2",
             "--jobs", "1", "--report-dir", str(tmp_path / "rep")]
     for m in methods:
         args += ["--method", m]
     env = dict(os.environ, PYTHONPATH=str(ROOT))
+    env.pop(CONFINE_ENV, None)
+    if confine == "spawn":
+        env[CONFINE_ENV] = "spawn"
     return subprocess.run(args, cwd=cwd, env=env, capture_output=True, text=True, timeout=300)
+
+
+def _namespaces() -> bool:
+    import os
+    import subprocess
+
+    import stiefelsym.sandbox as sandbox
+    if os.environ.get(sandbox.CONFINE_ENV) == "spawn" or sandbox._unshare() is None:
+        return False
+    out = subprocess.run([sandbox._unshare(), "--user", "--map-root-user", "--pid", "--fork", "--mount",
+                          "--mount-proc", "--net", "true"], capture_output=True, timeout=60)
+    return out.returncode == 0
+
+
+@pytest.mark.parametrize("method", ["exact", "free", "auto"])
+def test_in_namespaces_the_file_puts_no_module_on_the_import_path(tmp_path, method):
+    """In namespaces the same file writes nothing the verifying process can see (its /tmp is private, every
+    other mount read-only): no module appears in the working directory, and its false claim is not passed."""
+    if not _namespaces():
+        pytest.skip("no user + pid + mount namespaces here (unshare)")
+    cwd = _scratch_cwd(tmp_path)
+    out = _verify_in(cwd, tmp_path, method, confine="namespaces")
+    assert not (cwd / "sympy.py").exists() and not (cwd / "platformdirs.py").exists()
+    assert not list(cwd.glob("S34_IMPORTED_IN_*")) and "Traceback" not in out.stderr
+    assert "adv-s34-path-false (3,2)" not in out.stdout or ": proved" not in out.stdout, out.stdout[-800:]
+    assert out.returncode != 0, (out.stdout[-800:], out.stderr[-800:])
 
 
 @pytest.mark.parametrize("method", ["exact", "free", "auto"])
