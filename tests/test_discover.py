@@ -168,9 +168,11 @@ def test_the_general_line_of_the_spectral_integrals_is_the_only_one_of_its_shape
 
 
 def test_the_general_line_holds_at_every_l_up_to_n_4():
+    """At random points mod p (auto proves it exactly at the sizes within the claim's symbolic budget, which
+    takes two minutes: the slow test up to n = 6 runs auto)."""
     from stiefelsym.discover_ansatze import sweep_general_line
-    res = sweep_general_line(4)
-    assert len(res) == 20 and all(v in ("proved", "checked") for *_, v in res), res
+    res = sweep_general_line(4, method="modular")
+    assert len(res) == 20 and all(v == "checked" for *_, v in res), res
 
 
 @pytest.mark.slow
