@@ -1559,7 +1559,7 @@ def _tex_change(changes: Sequence[dict[str, str]] | None) -> str:
             parts.append(tex_escape(f"and {c['more']} more change{'s' * (c['more'] != 1)}"))
             continue
         old, new = c.get("old_tex", ""), c.get("new_tex", "")
-        math = (f"${old} \\to {new}$" if old and new and all(math_ok(t) and t.isascii() for t in (old, new))
+        math = (f"${old}$ $\\to$ ${new}$" if old and new and all(math_ok(t) and t.isascii() for t in (old, new))
                 else tex_escape(f"{c.get('old', '')} → {c.get('new', '')}"))
         parts.append(tex_words(f"in {unicode_name(c.get('where', ''))}: ") + math)
     return "; ".join(parts)
