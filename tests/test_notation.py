@@ -219,7 +219,7 @@ def test_mutation_report_prints_the_notation_first_and_the_source_after():
     assert md == render_mutation_markdown(MutationReport.from_json(json.loads(rep.dumps())))
     from stiefelsym.report import _tex_mutant_text
     tex = _tex_mutant_text(rep.to_json()["claims"][0]["mutants"][0])
-    assert tex.startswith(r"in Lax: $\lambda A \to -\lambda A$ {\small (source: line 7:")
+    assert tex.startswith(r"in Lax: $\lambda A$ $\to$ $-\lambda A$ {\small (source: line 7:")
 
 
 def wrong_sign(s):
@@ -243,7 +243,7 @@ def test_registered_correction_records_carry_their_change_and_reports_show_it():
             "swapped)") in md
     assert md == render_markdown(results)
     tex = render_latex(results)
-    assert r"in E: $[\Phi, A] \to [A, \Phi]$ {\small (registered as: the operands of the second" in tex
+    assert r"in E: $[\Phi, A]$ $\to$ $[A, \Phi]$ {\small (registered as: the operands of the second" in tex
 
 
 def test_a_hand_edited_change_of_a_correction_is_caught():
