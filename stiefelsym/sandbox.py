@@ -32,6 +32,7 @@ import json
 import os
 import select
 import shutil
+import subprocess
 import signal
 import sys
 import time
@@ -79,6 +80,17 @@ def _unshare() -> str | None:
     if _available.get(NAMESPACES) is False:
         return None
     return shutil.which("unshare", path=SYSTEM_PATH)
+
+
+def namespaces_available() -> bool:
+    """Whether a claims file would be traced in namespaces here: Linux, ``unshare`` found, not switched off
+    by $STIEFELSYM_CONFINE=spawn, and a user + pid + mount + net namespace can be made (tried once)."""
+    unshare = _unshare()
+    if unshare is None:
+        return False
+    out = subprocess.run([unshare, "--user", "--map-root-user", "--pid", "--fork", "--mount", "--mount-proc",
+                          "--net", "true"], capture_output=True, timeout=60)
+    return out.returncode == 0
 
 
 def _search_path() -> list[str]:

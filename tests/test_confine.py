@@ -66,12 +66,8 @@ def confinement(request, monkeypatch):
 
 
 def namespaces_available() -> bool:
-    import stiefelsym.sandbox as sandbox
-    if os.environ.get(sandbox.CONFINE_ENV) == "spawn" or sandbox._unshare() is None:
-        return False
-    out = subprocess.run([sandbox._unshare(), "--user", "--map-root-user", "--pid", "--fork", "--mount",
-                          "--mount-proc", "--net", "true"], capture_output=True, timeout=60)
-    return out.returncode == 0
+    from stiefelsym.sandbox import namespaces_available as available
+    return available()
 
 
 def _daemon_file(tmp_path: Path, close_fds: bool) -> tuple[Path, str]:

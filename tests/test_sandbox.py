@@ -14,7 +14,7 @@ from pathlib import Path
 
 import pytest
 
-from stiefelsym.sandbox import CONFINE_ENV, NOTES, SPAWN, _unshare
+from stiefelsym.sandbox import CONFINE_ENV, NOTES, SPAWN
 from stiefelsym.userfile import load_claims_isolated
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -24,11 +24,8 @@ WAYS = ("parent", "processes", "environ", "objects", "argv")
 
 
 def _namespaces() -> bool:
-    if os.environ.get(CONFINE_ENV) == SPAWN or _unshare() is None:
-        return False
-    out = subprocess.run([_unshare() or "unshare", "--user", "--map-root-user", "--pid", "--fork", "--mount",
-                          "--mount-proc", "--net", "true"], capture_output=True, timeout=60)
-    return out.returncode == 0
+    from stiefelsym.sandbox import namespaces_available
+    return namespaces_available()
 
 
 NAMESPACES = pytest.mark.skipif(not _namespaces(), reason="no user + pid + mount namespaces here (unshare): the "

@@ -268,15 +268,8 @@ def _verify_in(cwd, tmp_path, *methods, confine="spawn"):
 
 
 def _namespaces() -> bool:
-    import os
-    import subprocess
-
-    import stiefelsym.sandbox as sandbox
-    if os.environ.get(sandbox.CONFINE_ENV) == "spawn" or sandbox._unshare() is None:
-        return False
-    out = subprocess.run([sandbox._unshare(), "--user", "--map-root-user", "--pid", "--fork", "--mount",
-                          "--mount-proc", "--net", "true"], capture_output=True, timeout=60)
-    return out.returncode == 0
+    from stiefelsym.sandbox import namespaces_available
+    return namespaces_available()
 
 
 @pytest.mark.parametrize("method", ["exact", "free", "auto"])
