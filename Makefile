@@ -73,13 +73,13 @@ flows: venv
 ## speed: residual and time against n and precision, the cost model and its fit, in reports/speed/ (the
 ## cost model's series go to 20 s per run: about 30 minutes)
 speed: venv
-	$(BIN)/stiefelsym speed --report-dir reports/speed --model-file stiefelsym/costmodel.json
+	$(BIN)/stiefelsym speed --report-dir reports/speed --model-file stiefelsym/methods/costmodel.json
 
 ## costmodel: refit the cost model from its stored measurements (byte for byte: the same fit, plots and tables)
 .PHONY: costmodel
 costmodel: venv
-	$(BIN)/stiefelsym speed --cost-only --records stiefelsym/costmodel.json --report-dir reports/speed \
-		--model-file stiefelsym/costmodel.json
+	$(BIN)/stiefelsym speed --cost-only --records stiefelsym/methods/costmodel.json --report-dir reports/speed \
+		--model-file stiefelsym/methods/costmodel.json
 
 ## check: re-trace every record of reports/results.json, compare the graph digests, re-derive and
 ## re-check every dimension-free certificate (a hand-edited or stale results file fails)

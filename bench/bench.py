@@ -2,7 +2,7 @@
 
 Every target is printed with its measured value, its goal and the ratio measured/goal, and
 written to ``reports/bench.json`` and ``reports/bench.md``.  The engine is reached through its
-public entry points only (``stiefelsym.runner``: ``run_one`` in this process, ``verify`` in
+public entry points only (``stiefelsym.run.runner``: ``run_one`` in this process, ``verify`` in
 budgeted worker processes; the ``stiefelsym`` command in subprocesses), so the numbers follow
 the engine as it improves.  A target the engine cannot run yet (a size refused by the current
 size caps, a run past its time budget) is reported as "not yet" with the reason, never a crash.
@@ -38,7 +38,7 @@ sys.path.insert(0, str(ROOT))
 
 from stiefelsym import admissible, comm  # noqa: E402
 from stiefelsym.claims import Claim, Size  # noqa: E402
-from stiefelsym.runner import run_one  # noqa: E402
+from stiefelsym.run.runner import run_one  # noqa: E402
 
 GIB = 1 << 30
 #: the §3 claims that are flows (derived Dirac flow against the printed one) or their multipliers
@@ -181,7 +181,7 @@ def _catalog():
 
 def _budgeted(claim: Claim, n: int, r: int | None, method: str, timeout: float) -> Any:
     """One run in a budgeted worker (runner.verify); NotYet when refused or not decided in time."""
-    from stiefelsym.runner import BudgetError, verify
+    from stiefelsym.run.runner import BudgetError, verify
     from stiefelsym.scene import SizeError
     try:
         results = verify([claim], sizes=None if r is None else [Size(n, r)], methods=(method,), timeout=timeout)
@@ -207,7 +207,7 @@ def _bare_modular(n: int, r: int, repeat: int = 3) -> str:
     try:
         import random as _random
         from stiefelsym import Scene
-        from stiefelsym.fields import ModularField
+        from stiefelsym.backends.fields import ModularField
         best = None
         for k in range(repeat):
             t0 = time.perf_counter()
@@ -223,8 +223,8 @@ def _float_evaluation(claim: Claim, n: int, r: int, seed: int = 0) -> Any:
     """The float method's float64 evaluation alone (its values, error bounds and term scales, and the
     verdict they support), without the exact confirmation of a `numeric` that ``run_one(..., "float")``
     adds: a private entry of the engine, used for the side-by-side measure of the evaluation only."""
-    from stiefelsym.methods import _run_float
-    from stiefelsym.native import one_blas_thread, quiet_numpy
+    from stiefelsym.methods.fixed_size import _run_float
+    from stiefelsym.backends.native import one_blas_thread, quiet_numpy
     with one_blas_thread(), quiet_numpy():
         return _run_float(claim, n, r, seed, claim.func, None)
 
@@ -430,7 +430,7 @@ def main(argv=None) -> int:
     def modular(n: int, r: int) -> Callable[[], tuple[float, str]]:
         def run() -> tuple[float, str]:
             cold = _budgeted(LA1, n, r, "modular", args.per_run if n <= 12 else 4 * args.per_run)
-            # every point carries its own degree markers beside its values (stiefelsym/paired.py):
+            # every point carries its own degree markers beside its values (stiefelsym/backends/paired.py):
             # nothing is cached between runs but the interpreter's warm state.  CPU seconds, best of
             # 20 warm runs after 10 as in the other in-process targets: a wall time over 3 runs on a
             # shared machine measured the machine's load (1.06 to 1.6 ms at unchanged code)
@@ -450,7 +450,7 @@ def main(argv=None) -> int:
         def run() -> tuple[float, str]:
             import random as _random
             import numpy as np
-            from stiefelsym.fields import random_prime
+            from stiefelsym.backends.fields import random_prime
             size = Size(n, r)
             p = random_prime(_random.Random(0))
             rng = np.random.default_rng(0)
@@ -518,7 +518,7 @@ def main(argv=None) -> int:
     def float_over_numpy(n: int, r: int) -> Callable[[], tuple[float, str]]:
         def run() -> tuple[float, str]:
             import numpy as np
-            from stiefelsym.blas import one_blas_thread
+            from stiefelsym.backends.blas import one_blas_thread
             rng = np.random.default_rng(0)
             with one_blas_thread():
                 for _ in range(2):
@@ -549,8 +549,8 @@ def main(argv=None) -> int:
         def run() -> tuple[float, str]:
             import numpy as np
             import random as _random
-            from stiefelsym.blas import one_blas_thread
-            from stiefelsym.fields import random_prime
+            from stiefelsym.backends.blas import one_blas_thread
+            from stiefelsym.backends.fields import random_prime
             size = Size(n, r)
             rng = np.random.default_rng(0)
             p = random_prime(_random.Random(0))

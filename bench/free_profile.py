@@ -46,9 +46,9 @@ def main(argv: list[str] | None = None) -> int:
     from bench import LA1  # the claim make bench measures
     from stiefelsym.certificate_check import check_certificate
     from stiefelsym.free import FreeScene
-    from stiefelsym.free_method import certify_entries
-    from stiefelsym.methods import _entries, call_claim, division_probe
-    from stiefelsym.runner import run_one
+    from stiefelsym.methods.dimension_free import certify_entries
+    from stiefelsym.methods.fixed_size import _entries, call_claim, division_probe
+    from stiefelsym.run.runner import run_one
 
     assert Path(stiefelsym.__file__).resolve().is_relative_to(root), stiefelsym.__file__
     res = run_one(LA1, None, "free", seed=0)

@@ -44,8 +44,8 @@ sys.path.insert(0, str(ROOT / "bench"))
 from bench import LA1, _commit, _warm_best, neumann_flow  # noqa: E402
 from stiefelsym import comm  # noqa: E402
 from stiefelsym.claims import Size  # noqa: E402
-from stiefelsym.methods import run_exact  # noqa: E402
-from stiefelsym.runner import run_one  # noqa: E402
+from stiefelsym.methods.fixed_size import run_exact  # noqa: E402
+from stiefelsym.run.runner import run_one  # noqa: E402
 
 SIZES = ((3, 1), (4, 2), (5, 2), (6, 2), (4, 4))
 

@@ -11,7 +11,7 @@ XXᵀAP − XPᵀAX (XᵀP and XᵀAP − PᵀAX are skew on T*V: they rotate th
 too), verified by the usual methods and by the dimension-free one for every n, r.
 """
 from stiefelsym.claims import Size
-from stiefelsym.discover import CorrectionAnsatz, Term, correction_space
+from stiefelsym.analyses.discover import CorrectionAnsatz, Term, correction_space
 
 WORDS = {
     "XXᵀAX": (r"XX^TAX", lambda s, w: w["X"] @ w["X"].T @ s.A @ w["X"]),

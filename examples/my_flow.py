@@ -7,7 +7,7 @@ From the shell:
 or from Python (``python examples/my_flow.py``):
 
     from stiefelsym.claims import Size
-    from stiefelsym.discover import conserved
+    from stiefelsym.analyses.discover import conserved
     for line in conserved(flow_A2, Size(4, 2), degree=2, max_a=2).lines():
         print(line)
 """
@@ -21,6 +21,6 @@ def flow_A2(s):
 
 if __name__ == "__main__":
     from stiefelsym.claims import Size
-    from stiefelsym.discover import conserved
+    from stiefelsym.analyses.discover import conserved
     for line in conserved(flow_A2, Size(4, 2), degree=2, max_a=2).lines():
         print(line)

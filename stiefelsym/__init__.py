@@ -15,15 +15,15 @@ Running claims from Python (the results ``stiefelsym verify`` prints, as records
     results = verify(["euclidean-flow"], sizes=[(4, 2)], methods=["modular"])
     results.ok, results[0].verdict
 """
-from ._version import __version__
-from .api import verify
-from .claims import Checks, Claim, Registry, Size, SizeSpec, admissible, claim, load_catalog, load_claims_file
-from .ir import block
-from .ir.statements import Count, Inverse, Rank
-from .matrix import Mat, comm
-from .results import Result, ResultList
-from . import notebook as _notebook  # noqa: F401,E402 (installs the displays of results and claims)
-from .scene import Flow, Scene
+from stiefelsym._version import __version__
+from stiefelsym.api import verify
+from stiefelsym.claims import Checks, Claim, Registry, Size, SizeSpec, admissible, claim, load_catalog, load_claims_file
+from stiefelsym.ir import block
+from stiefelsym.ir.statements import Count, Inverse, Rank
+from stiefelsym.backends.matrix import Mat, comm
+from stiefelsym.results import Result, ResultList
+from stiefelsym.reports import notebook as _notebook  # noqa: F401,E402 (installs the displays of results and claims)
+from stiefelsym.scene import Flow, Scene
 
 __all__ = ["claim", "admissible", "comm", "block", "Rank", "Count", "Inverse", "Checks", "Claim", "Registry", "Size",
            "SizeSpec", "Mat", "Scene", "Flow", "load_catalog", "load_claims_file", "verify", "Result",

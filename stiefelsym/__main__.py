@@ -1,5 +1,5 @@
 """``python -m stiefelsym``: the command line."""
-from .cli import main
+from stiefelsym.cli import main
 
 if __name__ == "__main__":
     main(prog_name="stiefelsym")

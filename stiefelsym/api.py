@@ -6,9 +6,9 @@ import os
 from pathlib import Path
 from typing import Iterable, Sequence, Union
 
-from .claims import Claim, Registry, Size, load_catalog
-from .pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT
-from .results import ResultList
+from stiefelsym.claims import Claim, Registry, Size, load_catalog
+from stiefelsym.run.pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT
+from stiefelsym.results import ResultList
 
 PathLike = Union[str, "os.PathLike[str]"]
 ClaimRef = Union[str, Claim]
@@ -37,10 +37,10 @@ def load(files: PathLike | Iterable[PathLike] = (), catalog: bool | None = None,
     (default: only when no file is given).  An id defined twice is refused (ValueError).
 
     A file is imported and its claims traced in child processes, as ``stiefelsym verify --claims``
-    does (:func:`stiefelsym.userfile.load_claims_isolated`): at the sizes each claim lists and at
+    does (:func:`stiefelsym.run.userfile.load_claims_isolated`): at the sizes each claim lists and at
     ``sizes``; nothing of the file runs in the calling process.  To import a file in this process
     (its claims as written, e.g. to call their functions), use :func:`stiefelsym.load_claims_file`."""
-    from .userfile import load_claims_isolated
+    from stiefelsym.run.userfile import load_claims_isolated
     merged = Registry()
     paths = claims_files(files)
     wanted = list(sizes)
@@ -76,7 +76,8 @@ def verify(claims: ClaimRef | Iterable[ClaimRef] | None = None, *,
     Bad input (an unknown claim or method, a size outside a named claim's statement, a run beyond
     the budget) raises ValueError (KeyError for an unknown id); a claim that fails is a result,
     never an exception: see ``result.verdict`` and ``result.expected``, or ``results.ok``."""
-    from . import costmodel, runner
+    from stiefelsym.run import runner
+    from stiefelsym.methods import costmodel
     if isinstance(methods, str):
         methods = (methods,)
     methods = tuple(methods)
@@ -107,7 +108,7 @@ def verify(claims: ClaimRef | Iterable[ClaimRef] | None = None, *,
                         costmodel.check(m, c, s.n, s.r, budget)
     engine = runner.verify
     if scheduler is not None:
-        from . import distributed
+        from stiefelsym.run import distributed
         engine = distributed.verifier(scheduler)
     results = engine(selected, sizes=size_list, methods=methods, seed=seed, timeout=timeout, memory=memory,
                      jobs=jobs, strict_sizes=named is not None)

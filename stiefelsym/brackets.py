@@ -36,8 +36,8 @@ from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any, Callable, Sequence
 
-from .ir.trace import primitive
-from .matrix import Mat, comm
+from stiefelsym.ir.trace import primitive
+from stiefelsym.backends.matrix import Mat, comm
 
 Scalar = Any
 Function = Callable[[Any], Any]
@@ -525,8 +525,8 @@ def gradient_in_x(s: Any, T: PoissonTensor, x: Mat, b: Mat, c: Mat) -> Mat:
 def _reverse_gradient_in_x(s: Any, T: PoissonTensor, x: Mat, b: Mat, c: Mat) -> Mat | None:
     """The gradient of y ↦ Λ(b, c)|_y at x by reverse mode over the matrix operations of the form, or
     None when the scene or an operation of the form is not one reverse mode differentiates."""
-    from .reverse import Rev, RevMat, Unsupported, gradient, leaf
-    from .scene import ReverseScene, Scene
+    from stiefelsym.backends.reverse import Rev, RevMat, Unsupported, gradient, leaf
+    from stiefelsym.scene import ReverseScene, Scene
     s = s
     if type(s) is not Scene or s.field.name not in _REVERSE_FIELDS:
         return None

@@ -25,7 +25,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Callable, Iterable, Mapping
 
-from .ir.statements import Count as Count, Inverse as Inverse, Rank as Rank  # the statements a claim returns (re-exported)
+from stiefelsym.ir.statements import Count as Count, Inverse as Inverse, Rank as Rank  # the statements a claim returns (re-exported)
 
 
 #: seconds a claim's own metadata code (size conditions, erratum sizes) may take per call,
@@ -419,7 +419,7 @@ def load_claims_file(path: str | Path) -> Registry:
     Whatever the file raises while it is imported (SystemExit included; not a
     Ctrl-C or SIGTERM) is a :class:`CatalogError`, and whatever it prints goes to
     standard error: standard output is left to the command's own output."""
-    from .pool import Terminated, stdout_to_stderr
+    from stiefelsym.run.pool import Terminated, stdout_to_stderr
     p = Path(path)
     if not p.is_file():
         raise CatalogError(f"claims file not found: {p}")
@@ -428,7 +428,7 @@ def load_claims_file(path: str | Path) -> Registry:
     if other and Path(other).resolve() != p.resolve():   # two files of the same name: keep both modules
         name += "_" + hashlib.sha1(str(p.resolve()).encode("utf-8", "surrogateescape")).hexdigest()[:8]
 
-    from .ir.seal import EngineChanged, seal, verify
+    from stiefelsym.ir.seal import EngineChanged, seal, verify
     seal()      # the engine as it is before the file runs (see stiefelsym.ir.seal)
 
     def loader():

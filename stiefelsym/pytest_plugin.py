@@ -67,7 +67,7 @@ class ClaimsFile(pytest.File):
     """A claims file (or a module of the catalog): its claims' runs."""
 
     def _claims(self) -> list[Any]:
-        from .claims import CATALOG, CatalogError, load_catalog
+        from stiefelsym.claims import CATALOG, CatalogError, load_catalog
         catalog = _catalog_dir()
         if catalog is not None and self.path.resolve().parent == catalog:
             module = f"{CATALOG}.{self.path.stem}"
@@ -75,7 +75,7 @@ class ClaimsFile(pytest.File):
         try:
             # imported and traced in child processes, as `stiefelsym verify --claims` does: nothing of the
             # file runs in the pytest process
-            from .userfile import load_claims_isolated
+            from stiefelsym.run.userfile import load_claims_isolated
             sizes = [tuple(int(x) for x in s.split(",")) for s in self.config.getoption("stiefelsym_size") or ()
                      if s.count(",") == 1 and all(x.strip().isdigit() for x in s.split(","))]
             return list(load_claims_isolated(self.path, sizes))
@@ -83,10 +83,10 @@ class ClaimsFile(pytest.File):
             raise self.CollectError(str(exc)) from None
 
     def collect(self) -> Iterator[Any]:
-        from . import runner
-        from .claims import Size
-        from .report import case_name
-        from .results import Result
+        from stiefelsym.run import runner
+        from stiefelsym.claims import Size
+        from stiefelsym.reports.report import case_name
+        from stiefelsym.results import Result
         config = self.config
         methods = config.getoption("stiefelsym_method") or ["auto"]
         sizes = None
@@ -122,7 +122,7 @@ class ClaimItem(pytest.Item):
         self.add_marker("stiefelsym")
 
     def runtest(self) -> None:
-        from . import runner
+        from stiefelsym.run import runner
         config = self.config
         results = runner.verify([self.claim], sizes=None if self.size is None else [self.size],
                                 methods=["free" if self.size is None else self.method],
@@ -141,7 +141,7 @@ class ClaimItem(pytest.Item):
     def repr_failure(self, excinfo: Any, style: Any = None) -> Any:
         if not isinstance(excinfo.value, ClaimFailed) or self.result is None:
             return super().repr_failure(excinfo)
-        from .report import witness_lines
+        from stiefelsym.reports.report import witness_lines
         r = self.result
         lines = [r.line(limit=400)]
         if r.message and r.message not in lines[0]:

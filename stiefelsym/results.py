@@ -110,7 +110,7 @@ class Result:
         return self.expected
 
     # residual_sympy() and the Jupyter displays (_repr_markdown_, _repr_latex_) are installed by
-    # stiefelsym.notebook, which renders with the report's code (this module sits below the report)
+    # stiefelsym.reports.notebook, which renders with the report's code (this module sits below the report)
 
     def to_json(self) -> dict[str, Any]:
         """The record as JSON data: a deep copy of every field but the certificates, which are JSON data
@@ -140,7 +140,7 @@ class ResultList(list[Result]):
     def unexpected(self) -> list[Result]:
         return [r for r in self if not r.expected]
 
-    # summary() and the Jupyter displays are installed by stiefelsym.notebook
+    # summary() and the Jupyter displays are installed by stiefelsym.reports.notebook
 
 
 def _umask() -> int:

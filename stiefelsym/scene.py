@@ -1,7 +1,7 @@
 """Scenes: one problem (n, r, field, parameters), built lazily.
 
 A scene hands claims the paper's objects (X, P, A, Phi, Psi, lambda, kappa,
-...) as :class:`~stiefelsym.matrix.Mat` over its field, and the Hamiltonian
+...) as :class:`~stiefelsym.backends.matrix.Mat` over its field, and the Hamiltonian
 machinery on T*V_{n,r}: gradients, the Dirac bracket, Dirac flows and the
 Lagrange-multiplier form.  Everything is built on first use and cached.
 
@@ -26,11 +26,11 @@ from typing import Any, Callable, Mapping
 
 import numpy as np
 
-from .fields import DegreeField, Dual, DualField, Field, FloatField, DegenerateError
-from .polyfield import SymbolicField
-from .matrix import CoordinateTracker, Mat, block, check_element, definite, scalar_matrix, unify
-from .native import _binop, _buf, backend
-from .reverse import Rev, RevField, RevMat, Unsupported, gradient as rev_gradient, leaf as rev_leaf
+from stiefelsym.backends.fields import DegreeField, Dual, DualField, Field, FloatField, DegenerateError
+from stiefelsym.backends.polyfield import SymbolicField
+from stiefelsym.backends.matrix import CoordinateTracker, Mat, block, check_element, definite, scalar_matrix, unify
+from stiefelsym.backends.native import _binop, _buf, backend
+from stiefelsym.backends.reverse import Rev, RevField, RevMat, Unsupported, gradient as rev_gradient, leaf as rev_leaf
 
 Scalar = Any
 Function = Callable[["Scene"], Any]
@@ -1236,7 +1236,7 @@ class Scene(PaperObjects):
 
     def _lyapunov_native(self, m: list[Any], C: Mat) -> Mat | None:
         """:meth:`_lyapunov_diagonal` where C is held by the exact field's flint backend (numerators
-        over one denominator D, or entry by entry over their own, :class:`~stiefelsym.ratmat.RatMat`):
+        over one denominator D, or entry by entry over their own, :class:`~stiefelsym.backends.ratmat.RatMat`):
         Y_ij = C_ij / (m_i + m_j) is formed in flint, each entry over its own denominator
         D_ij (m_i + m_j) (the factors of m_i + m_j registered once as atoms, the entry reduced
         exactly).  One common denominator for Y would be D times every distinct m_i + m_j,
@@ -1249,8 +1249,8 @@ class Scene(PaperObjects):
         if ring is None or not isinstance(self._field, SymbolicField):
             return NotImplemented
         from math import comb
-        from .polyfield import NODEN, NotRational, PolyMat, _merge_add, _merge_max, _minus
-        from .ratmat import RatMat, fix, make
+        from stiefelsym.backends.polyfield import NODEN, NotRational, PolyMat, _merge_add, _merge_max, _minus
+        from stiefelsym.backends.ratmat import RatMat, fix, make
         s = C._nat()
         if type(s) is not PolyMat and type(s) is not RatMat:
             return NotImplemented
@@ -1565,7 +1565,7 @@ class _LiftedScene(Scene):
         operator applied to the value, and its adjoint g -> AA(g), since AA is self-adjoint for the
         Frobenius pairing (<g, AA(xi)> = 2 c(g)ᵀ C c(xi) = <AA(g), xi>, c the skew coordinates and
         C the symmetric coefficient matrix).  A matrix of another field takes the generic path."""
-        from .reverse import linear as rev_linear
+        from stiefelsym.backends.reverse import linear as rev_linear
 
         def apply(xi: Mat) -> Mat:
             if not isinstance(xi, Mat) or xi._field is not self._field:

@@ -50,11 +50,11 @@ from typing import Any, Callable, Hashable, Mapping, Sequence
 
 import numpy as np
 
-from . import scene as scene_module
-from .ir.trace import TraceScene, primitive
-from .matrix import Mat, _coordinates, _refused, block, definite
-from .reverse import Node, Rev, RevMat, Unsupported, gradient as rev_gradient, leaf as rev_leaf
-from .scene import double_point_of, HermitianComponents, ReverseScene, Scene, _LiftedScene
+from stiefelsym import scene as scene_module
+from stiefelsym.ir.trace import TraceScene, primitive
+from stiefelsym.backends.matrix import Mat, _coordinates, _refused, block, definite
+from stiefelsym.backends.reverse import Node, Rev, RevMat, Unsupported, gradient as rev_gradient, leaf as rev_leaf
+from stiefelsym.scene import double_point_of, HermitianComponents, ReverseScene, Scene, _LiftedScene
 
 Point = Mapping[Hashable, Mat]
 Coordinates = Sequence[tuple[Hashable, Mat]]
@@ -228,7 +228,7 @@ class _Algebra:
 
     def solve(self, M: Any, B: Any, what: str) -> Any:
         """Y with M Y = B (the field's solver)."""
-        from .fields import DegenerateError
+        from stiefelsym.backends.fields import DegenerateError
         try:
             sol = self.s.field.solve(self.array(M).tolist(), self.array(B).tolist())
         except DegenerateError as exc:
@@ -691,7 +691,7 @@ def double_point(s: Scene) -> dict[str, Mat]:
 
 
 #: the points of the appendix's phase spaces built from scalar parameters of their own, for a
-#: witness (stiefelsym.witness) to state: (the prefix of their parameters' names, the builder, the
+#: witness (stiefelsym.methods.witness) to state: (the prefix of their parameters' names, the builder, the
 #: keys of the point and the letters a report names them by); such a point replaces the chart's X, P
 WITNESS_POINTS = (("double_", double_point_of, (("X", "X"), ("Y", "Y"), ("Xdot", "Ẋ"), ("Ydot", "Ẏ"))),)
 

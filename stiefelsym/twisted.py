@@ -22,10 +22,10 @@ from __future__ import annotations
 import copy
 from typing import Any, Callable, Mapping
 
-from .fields import DegenerateError, Dual, DualField
-from .matrix import Mat, _refused
-from .scene import Flow, Scene
-from .ir.trace import TraceScene, primitive
+from stiefelsym.backends.fields import DegenerateError, Dual, DualField
+from stiefelsym.backends.matrix import Mat, _refused
+from stiefelsym.scene import Flow, Scene
+from stiefelsym.ir.trace import TraceScene, primitive
 
 Function = Callable[[Any], Any]
 
@@ -145,7 +145,7 @@ def _inverse(s: Scene, F: Mat | None) -> list[list[Any]]:
 def _dual_base(s: Scene, F: Mat | None) -> Scene | None:
     """For a scene over dual numbers a + bε lifted from a base scene (a derivative along a tangent
     vector), that base scene (whose values are the a parts of this one's), else None."""
-    from .scene import TangentScene
+    from stiefelsym.scene import TangentScene
     s = s
     if F is not None or not isinstance(s, TangentScene) or not isinstance(s.field, DualField):
         return None
@@ -165,7 +165,7 @@ def _dual_inverse(s: Scene, Ca: list[list[Any]], C0: list[list[Any]]) -> list[li
 
 
 def _at_point(s: Any) -> bool:
-    from .free.scene import FreePointScene
+    from stiefelsym.free.scene import FreePointScene
     return isinstance(s, FreePointScene)
 
 
@@ -227,20 +227,20 @@ def flow(s, H: Function, F: Mat | None = None) -> Flow:
 
 
 def _is_free(s: Any) -> bool:
-    from .free import FreeScene
+    from stiefelsym.free import FreeScene
     return isinstance(s, FreeScene)
 
 
 def _free_flow(s, H: Function, F: Mat | None) -> Flow:
     """The twisted flow in the free algebra: Ẋ = H_P − XΠ, Ṗ = −H_X − εẊF + XΛ + PΠ, with Π, Λ solved
     from d/dt(XᵀX) = 0 and d/dt(XᵀP + PᵀX) = 0 (the same construction as the scene's Dirac flows)."""
-    from .free.scene import LAMBDA, PI, P as LP, X as LX, FunctionScene, _w, solve_multipliers
+    from stiefelsym.free.scene import LAMBDA, PI, P as LP, X as LX, FunctionScene, _w, solve_multipliers
     own = isinstance(s, FunctionScene)  # inside a function: solved at X, P, renamed to its fresh letters
     if own:
         s.refuse_ambient_flow()
     if F is None:
         F = magnetic_matrix(s)   # the columns E_1, E_2 of a claim at r = 2 (refused otherwise)
-    from .free.algebra import substitute
+    from stiefelsym.free.algebra import substitute
 
     def build():
         f = F._a[0, 0]

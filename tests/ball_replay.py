@@ -11,12 +11,12 @@ from dataclasses import dataclass
 import flint
 import numpy as np
 
-from stiefelsym.ball import BallField, Balls, BallNum, working_precision
+from stiefelsym.backends.ball import BallField, Balls, BallNum, working_precision
 from stiefelsym.claims import Count, Rank
-from stiefelsym.fields import DegenerateError, ErrNum, FloatField
-from stiefelsym.matrix import Mat
-from stiefelsym.methods import _entries, _flatten, call_claim
-from stiefelsym.native import F64, one_blas_thread, quiet_numpy
+from stiefelsym.backends.fields import DegenerateError, ErrNum, FloatField
+from stiefelsym.backends.matrix import Mat
+from stiefelsym.methods.fixed_size import _entries, _flatten, call_claim
+from stiefelsym.backends.native import F64, one_blas_thread, quiet_numpy
 from stiefelsym.scene import Scene
 
 #: the balls of the reference evaluation: far tighter than any float64 bound
@@ -61,7 +61,7 @@ def float_model_errors(claim, n: int, r: int, seed: int = 0, func=None, hard: st
     """For every finite float64 residual entry at the float method's point(s) of (claim, n, r) (at
     the hard case ``hard``, if named): its value, its float64 bound and a rigorous lower bound of
     its true error (the distance to the ball of the exact value at the same point)."""
-    from stiefelsym.hard import hard_case
+    from stiefelsym.methods.hard import hard_case
     func = func or claim.func
     out = []
     for comp in ((0, 1) if r == n else (0,)):

@@ -7,7 +7,7 @@ from fractions import Fraction
 
 import flint
 
-from stiefelsym.fields import RationalField
+from stiefelsym.backends.fields import RationalField
 
 
 def entries(M):

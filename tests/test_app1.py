@@ -5,8 +5,8 @@ method rejects (negative controls)."""
 import pytest
 
 from stiefelsym import Inverse, comm, twisted
-from stiefelsym.free_method import run_free
-from stiefelsym.methods import run_exact, run_points
+from stiefelsym.methods.dimension_free import run_free
+from stiefelsym.methods.fixed_size import run_exact, run_points
 
 import stiefelsym.proofs.app1_magnetic_neumann as app1
 import stiefelsym.proofs.sec2_hamiltonian_flows as sec2
@@ -82,7 +82,7 @@ def test_twisted_flow_derivations_agree(catalog):
 
 
 def test_the_magnetic_form_needs_two_columns():
-    from stiefelsym import fields
+    from stiefelsym.backends import fields
     from stiefelsym.scene import Scene
     s = Scene(3, 1, fields.RationalField())
     with pytest.raises(ValueError, match="V\\(n, 2\\)"):

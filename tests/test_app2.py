@@ -7,9 +7,9 @@ import pytest
 
 from stiefelsym import block, comm, twisted
 from stiefelsym.claims import Size
-from stiefelsym.free_method import run_free
-from stiefelsym.methods import run_exact, run_points
-from stiefelsym.runner import run_one
+from stiefelsym.methods.dimension_free import run_free
+from stiefelsym.methods.fixed_size import run_exact, run_points
+from stiefelsym.run.runner import run_one
 from stiefelsym.systems import (coupled_point, derivative, double_point, euler_lagrange, hamiltonian_flow,
                                 real_coordinates, symmetric_entries)
 
@@ -363,7 +363,7 @@ def test_so_n_n_pair_holds_as_printed_only_for_n_1(catalog):
 # -- the derived flows ---------------------------------------------------------------------------
 
 def test_double_point_lies_on_the_constraint_set():
-    from stiefelsym.fields import ModularField
+    from stiefelsym.backends.fields import ModularField
     from stiefelsym.scene import Scene
     import random
     s = Scene(4, 3, ModularField(2**61 - 1), rng=random.Random(SEED))
@@ -375,7 +375,7 @@ def test_double_point_lies_on_the_constraint_set():
 # -- the flows by reverse mode and by forward mode -----------------------------------------------
 
 def _modular_scene(n, r, seed=SEED):
-    from stiefelsym.fields import ModularField
+    from stiefelsym.backends.fields import ModularField
     from stiefelsym.scene import Scene
     import random
     return Scene(n, r, ModularField(2**61 - 1), rng=random.Random(seed))
@@ -476,7 +476,7 @@ def test_float_flows_agree_within_their_error_bounds(monkeypatch):
     scale of the flow, and a wrong coefficient of the Hamiltonian is seen above them."""
     import random
     import stiefelsym.scene as scene_mod
-    from stiefelsym.fields import FloatField
+    from stiefelsym.backends.fields import FloatField
     from stiefelsym.scene import Scene
     s = Scene(4, 2, FloatField(), rng=random.Random(SEED))
     flows = []

@@ -20,13 +20,13 @@ import numpy as np
 import pytest
 
 from stiefelsym import admissible, comm
-from stiefelsym.ball import BallField, BallNum, working_precision
+from stiefelsym.backends.ball import BallField, BallNum, working_precision
 from stiefelsym.claims import Claim, Size
-from stiefelsym.hard import HARD_CASES
-from stiefelsym.matrix import Mat
+from stiefelsym.methods.hard import HARD_CASES
+from stiefelsym.backends.matrix import Mat
 from stiefelsym.results import PASSING
-from stiefelsym.runner import run_one
-from stiefelsym.speed import control_claim
+from stiefelsym.run.runner import run_one
+from stiefelsym.analyses.speed import control_claim
 
 from ball_replay import float_model_errors, optimistic
 
@@ -126,7 +126,7 @@ def test_numeric_is_not_a_proof_of_the_identity():
     ball enclosure alone says ``numeric`` with a rigorous bound on it at this point, which is all it
     claims; the confirmation at exact points mod p, which runs at every size, refutes it, as the exact
     methods do."""
-    from stiefelsym.methods import _run_ball
+    from stiefelsym.methods.fixed_size import _run_ball
     n = 14
     alone = _run_ball(SLIGHTLY_WRONG, n, 2, SEED, SLIGHTLY_WRONG.func, None)
     assert alone.verdict == "numeric"
@@ -142,7 +142,7 @@ def test_numeric_is_not_a_proof_of_the_identity():
 def test_numeric_without_an_exact_point_is_not_a_pass(monkeypatch, method):
     """Where the confirmation cannot evaluate the claim at one exact point mod p, float's or ball's
     `numeric` is not reported as a pass: `inconclusive`, with the reason."""
-    import stiefelsym.methods as methods
+    import stiefelsym.methods.fixed_size as methods
     real = methods.run_points
 
     def no_point(*args, **kw):
@@ -183,7 +183,7 @@ def _cayley(F, m, r, rng):
 def test_ball_matrices_enclose_the_exact_values(bits, m, r):
     """The deferred Cayley inverse (a solve with a residual bound) and arb's own products and
     inverses contain the exact rational values at the same exact parameters."""
-    from stiefelsym.fields import RationalField
+    from stiefelsym.backends.fields import RationalField
 
     class Replay(RationalField):
         def param(self, name, rng):
@@ -277,7 +277,7 @@ def test_the_python_api_runs_the_ball_method():
 
 
 def test_the_ball_method_is_refused_on_dimension_claims(catalog):
-    from stiefelsym.runner import plan
+    from stiefelsym.run.runner import plan
     dims = [c for c in catalog if c.kind == "dim"][:1]
     assert dims and plan(dims, None, ["ball"]) == []
 

@@ -7,8 +7,8 @@ import random
 import pytest
 
 from stiefelsym import brackets as B
-from stiefelsym.fields import ModularField, RationalField
-from stiefelsym.matrix import comm
+from stiefelsym.backends.fields import ModularField, RationalField
+from stiefelsym.backends.matrix import comm
 from stiefelsym.scene import Scene
 
 SIZES = [(2, 1), (3, 2), (3, 3), (4, 2)]
@@ -205,7 +205,7 @@ def test_poisson_map_residual_detects_a_non_poisson_map():
 # -- the fast paths agree with the definitions --------------------------------------------------
 
 def _symbolic_scene(n, r):
-    from stiefelsym.polyfield import SymbolicField
+    from stiefelsym.backends.polyfield import SymbolicField
     return Scene(n, r, SymbolicField(), chart="equivariant")
 
 
@@ -235,7 +235,7 @@ def test_reverse_gradient_in_x_is_the_basis_gradient(name, make):
 
 def test_gradient_in_x_falls_back_to_the_basis_where_reverse_mode_does_not_apply():
     """On a scene over another number system (float) the basis gradient is taken, with the same value."""
-    from stiefelsym.fields import FloatField
+    from stiefelsym.backends.fields import FloatField
     s = scene(3, 2, field=FloatField())
     T = B.lambda1()
     x, b, c = (T.space.generic(s, nm) for nm in ("Tx", "Tb", "Tc"))

@@ -55,7 +55,7 @@ def test_every_listed_label_is_covered(catalog, section):
 
 
 def test_table_only_labels_are_in_the_tables():
-    from stiefelsym import tables
+    from stiefelsym.reports import tables
     source = Path(tables.__file__).read_text(encoding="utf-8")
     for lab in TABLE_ONLY:
         assert f'"{lab}"' in source, lab
@@ -70,7 +70,7 @@ def test_claims_are_documented(catalog):
 
 
 def test_every_claim_appears_in_the_report(catalog):
-    from stiefelsym.report import render_latex, render_markdown
+    from stiefelsym.reports.report import render_latex, render_markdown
     from stiefelsym.results import Result
     results = [Result(claim=c.id, paper=list(c.paper), section=c.section, kind=c.kind, title=c.title,
                       statement=c.statement, n=3, r=1, method="modular", verdict="checked", expected=True,
@@ -81,7 +81,7 @@ def test_every_claim_appears_in_the_report(catalog):
 
 
 def _run_catalog(catalog, n_max, methods):
-    from stiefelsym.runner import verify
+    from stiefelsym.run.runner import verify
     sizes = sorted({s for c in catalog for s in c.sizes if s.n <= n_max}, key=lambda s: (s.n, s.r))
     return verify(list(catalog), sizes=sizes, methods=methods, seed=0)
 
@@ -97,7 +97,7 @@ def test_catalog_verdicts_are_as_expected_for_small_sizes(catalog):
 def test_catalog_verdicts_are_as_expected_with_every_method(catalog):
     """Every method at every size n <= 5; the exact method within each claim's symbolic budget
     (exact_max_n, as `auto` uses it: beyond it a forced exact run may spend its whole time limit)."""
-    from stiefelsym.runner import verify
+    from stiefelsym.run.runner import verify
     results = _run_catalog(catalog, 5, ("modular", "rational", "float", "free"))
     for c in catalog:
         sizes = [z for z in c.sizes if z.n <= min(5, c.exact_max_n)]

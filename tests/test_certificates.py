@@ -26,7 +26,7 @@ from stiefelsym.free.algebra import NCPoly, trace
 from stiefelsym.free.certificates import CertificateWriter
 from stiefelsym.free.rewriting import CertificateError, Hypothesis, Order, RewritingSystem
 from stiefelsym.free.scene import AINV, A, FreeScene, P, Pt, X, Xt
-from stiefelsym.runner import run_one
+from stiefelsym.run.runner import run_one
 
 sys.path.insert(0, str(Path(__file__).parent))
 from test_free_rewriting import random_poly  # noqa: E402
@@ -318,7 +318,7 @@ def test_skew_letters_have_vanishing_traces_and_dimensions_come_from_the_identit
 
 # ---------------------------------------------------------------------------
 def test_the_free_method_refuses_a_proof_whose_certificate_is_rejected(monkeypatch):
-    import stiefelsym.free_method as fm
+    import stiefelsym.methods.dimension_free as fm
 
     claim = load_catalog().get("neumann-lax")
     assert run_one(claim, None, "free", 0).verdict == "proved"

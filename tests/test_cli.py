@@ -26,7 +26,7 @@ EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "my_claims.py"
 # --------------------------------------------------------------------------- fakes
 
 class FakeRunner:
-    """The runner API of stiefelsym.runner, with verdicts chosen per claim id."""
+    """The runner API of stiefelsym.run.runner, with verdicts chosen per claim id."""
 
     METHODS = ("auto", "exact", "rational", "modular", "float", "free")
 
@@ -387,7 +387,7 @@ def test_report_rerenders_from_results(fake, run, tmp_path, monkeypatch):
     # the fake runner runs two sizes of each claim, not every run its command plans: report refuses the file
     # (it asks for every planned run, as check does); the rendering is tested with that test left out
     assert "its command planned have no record" in _one_line_error(run("report", "--results", "r/results.json"))
-    from stiefelsym import integrity
+    from stiefelsym.run import integrity
     monkeypatch.setattr(integrity, "missing_runs", lambda records, registry, meta: [])
     result = run("report", "--results", "r/results.json")
     assert result.exit_code == 0, result.output
@@ -406,12 +406,12 @@ def test_report_bad_results_file_is_one_line(run, tmp_path):
 
 def test_every_kind_is_explained():
     from stiefelsym.claims import KINDS
-    from stiefelsym.report import KIND_MEANING
+    from stiefelsym.reports.report import KIND_MEANING
     assert set(KIND_MEANING) == set(KINDS)
 
 
 def test_method_help_names_every_runner_method():
-    from stiefelsym import runner
+    from stiefelsym.run import runner
     for m in runner.METHODS:
         assert f"{m}:" in cli.METHOD_HELP
 

@@ -12,8 +12,8 @@ from pathlib import Path
 import pytest
 
 from stiefelsym.claims import CatalogError
-from stiefelsym.confine import Confined, changed_files, engine_files, package_roots, path_modules
-from stiefelsym.userfile import load_claims_isolated
+from stiefelsym.run.confine import Confined, changed_files, engine_files, package_roots, path_modules
+from stiefelsym.run.userfile import load_claims_isolated
 
 LINUX = pytest.mark.skipif(not sys.platform.startswith("linux") or not os.path.isdir("/proc/self"),
                            reason="the subreaper and /proc are Linux's")
@@ -56,7 +56,7 @@ def _with_marker(marker: str) -> list[int]:
 def confinement(request, monkeypatch):
     """Each test once with the plain spawn (the subreaper and the digest are what confine the file) and once in
     namespaces (skipped where they are not available)."""
-    import stiefelsym.sandbox as sandbox
+    import stiefelsym.run.sandbox as sandbox
     monkeypatch.setattr(sandbox, "_available", {})
     if request.param == "spawn":
         monkeypatch.setenv(sandbox.CONFINE_ENV, "spawn")
@@ -66,7 +66,7 @@ def confinement(request, monkeypatch):
 
 
 def namespaces_available() -> bool:
-    from stiefelsym.sandbox import namespaces_available as available
+    from stiefelsym.run.sandbox import namespaces_available as available
     return available()
 
 
@@ -174,7 +174,7 @@ def test_the_package_roots_hold_the_engine_and_the_catalog():
 def test_a_claims_file_whose_child_edits_the_engine_is_refused(tmp_path, monkeypatch, confinement):
     """The digest check on its own (the module's roots pointed at a scratch directory the file edits); in
     namespaces the edit itself fails (the file system is read-only there) and the file is refused for it."""
-    import stiefelsym.confine as confine
+    import stiefelsym.run.confine as confine
     scratch = tmp_path / "engine"
     scratch.mkdir()
     (scratch / "mod.py").write_text("x = 1\n")
@@ -192,9 +192,9 @@ def test_a_claims_file_whose_child_edits_the_engine_is_refused(tmp_path, monkeyp
 
 
 def test_the_verifying_process_imports_the_whole_package_before_the_fork():
-    code = ("import sys; from stiefelsym.userfile import _preload; _preload(); "
-            "print(all(m in sys.modules for m in ('stiefelsym.report', 'stiefelsym.cli_check', "
-            "'stiefelsym.flows_report', 'stiefelsym.speed', 'stiefelsym.mutate')))")
+    code = ("import sys; from stiefelsym.run.userfile import _preload; _preload(); "
+            "print(all(m in sys.modules for m in ('stiefelsym.reports.report', 'stiefelsym.cli.check', "
+            "'stiefelsym.reports.flows_report', 'stiefelsym.analyses.speed', 'stiefelsym.analyses.mutate')))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120,
                          env=dict(os.environ, PYTHONPATH=str(Path(__file__).resolve().parents[1])))
     assert out.stdout.strip() == "True", out.stderr[-800:]

@@ -1,7 +1,7 @@
 """The tables of conserved quantities: the space found is verified, the paper's named integrals
 span it, and both computations can fail (negative controls)."""
 from stiefelsym.claims import Size
-from stiefelsym import conserved_tables as ct
+from stiefelsym.reports import conserved_tables as ct
 
 
 def _family(key):

@@ -6,7 +6,7 @@ import pytest
 
 from stiefelsym import admissible, comm
 from stiefelsym.claims import Claim, Size
-from stiefelsym.runner import verify
+from stiefelsym.run.runner import verify
 
 
 def _registered(func, expect):

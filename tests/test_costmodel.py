@@ -6,8 +6,8 @@ import math
 
 import pytest
 
-from stiefelsym import costmodel
-from stiefelsym.methods import BudgetError
+from stiefelsym.methods import costmodel
+from stiefelsym.methods.fixed_size import BudgetError
 
 
 @pytest.mark.parametrize("method", ["exact", "rational", "modular", "float", "ball", "auto"])
@@ -193,9 +193,9 @@ def test_cli_runs_within_the_memory_budget(run):
 def test_exact_predictions_beyond_the_measured_sizes_are_pessimistic():
     """Extrapolated from n <= 8, exact neumann-lax at (300,2) was predicted at 3 s and died of memory
     after 73 s: beyond the measured sizes an exact prediction grows by an extra (n / n_measured)^2."""
-    from stiefelsym import costmodel
+    from stiefelsym.methods import costmodel
     from stiefelsym.claims import load_catalog
-    from stiefelsym.methods import BudgetError
+    from stiefelsym.methods.fixed_size import BudgetError
     c = load_catalog().get("neumann-lax")
     assert costmodel.predict("exact", c, 300, 2) > 600
     with pytest.raises(BudgetError, match="predicted"):
@@ -245,7 +245,7 @@ def test_calibration_is_a_staircase_in_n_and_r():
 def test_a_timed_run_reports_time_and_peak_memory_and_is_stopped_at_its_cap(catalog):
     """The cost model's measurements: a run in a fresh process gives its verdict, seconds and peak memory
     (its n x n matrices at least); the control: a run past its cap is killed and inconclusive."""
-    from stiefelsym import costfit
+    from stiefelsym.analyses import costfit
     c = catalog.get("neumann-lax")
     rec = costfit.timed_run(c, 300, 2, "float", 0, 60.0)
     assert rec["verdict"] == "numeric" and 0 < rec["seconds"] < 60 and rec["peak_bytes"] >= 8 * 300 * 300

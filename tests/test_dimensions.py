@@ -1,4 +1,4 @@
-"""Two-sided certificates of dimension statements (stiefelsym.dimensions) on known cases, and the §6
+"""Two-sided certificates of dimension statements (stiefelsym.methods.dimensions) on known cases, and the §6
 dimension lemmas of the catalog: each holds at small sizes (the errata fail where registered) and a
 corrupted copy of each FAILS (negative controls)."""
 from fractions import Fraction
@@ -8,10 +8,10 @@ import pytest
 
 from stiefelsym import Rank
 from stiefelsym.claims import Size
-from stiefelsym.dimensions import (Certificate, Side, exact, generic_rank, rank_at_point, symbolic_kernel_bound,
+from stiefelsym.methods.dimensions import (Certificate, Side, exact, generic_rank, rank_at_point, symbolic_kernel_bound,
                                    verified_kernel)
-from stiefelsym.methods import run_exact, run_points
-from stiefelsym.runner import run_one
+from stiefelsym.methods.fixed_size import run_exact, run_points
+from stiefelsym.run.runner import run_one
 
 import stiefelsym.proofs.sec6_dimension_lemmas as sec6
 
@@ -203,7 +203,7 @@ def test_differentials_by_gradients_are_the_jacobian_rows(n, r):
     import random
 
     from stiefelsym import Scene
-    from stiefelsym.fields import ModularField
+    from stiefelsym.backends.fields import ModularField
     s = Scene(n, r, ModularField(2305843009213693951), chart="cayley", rng=random.Random(7))
     funcs = sec6.torus_functions(s)
     by_gradients = sec6.differentials(s, funcs)
@@ -230,7 +230,7 @@ def test_strict_leaf_inequality_fails_only_at_the_smallest_sizes(catalog):
 
 def _modular_scene(n, r, seed=0):
     import random
-    from stiefelsym.fields import ModularField
+    from stiefelsym.backends.fields import ModularField
     from stiefelsym.scene import Scene
     return Scene(n, r, ModularField(), rng=random.Random(f"dimensions|{n}|{r}|{seed}"))
 

@@ -3,8 +3,8 @@ points sampled, and a corrupted flow or a corrupted integral is told apart."""
 from fractions import Fraction
 
 from stiefelsym.claims import Claim, Size, admissible
-from stiefelsym.discover import Integral, Monomial, ansatz, closed_words, conserved, resolve_flow
-from stiefelsym.runner import run_one
+from stiefelsym.analyses.discover import Integral, Monomial, ansatz, closed_words, conserved, resolve_flow
+from stiefelsym.run.runner import run_one
 
 
 def test_closed_words_are_one_per_trace_class_and_reduced():
@@ -56,7 +56,7 @@ def test_a_users_flow_from_a_file_through_the_command_line(tmp_path):
 
 
 def test_the_lax_partner_of_la2_is_found_and_proved_for_all_sizes():
-    from stiefelsym.discover import LAX, lax_partner, resolve_function
+    from stiefelsym.analyses.discover import LAX, lax_partner, resolve_function
     flow, _ = resolve_flow("neumann-normal")
     space, verdicts = lax_partner(resolve_function("LA2", LAX), flow, Size(4, 2), degree=2)
     assert space.text() == "−XPᵀ + PXᵀ − λ·A"
@@ -65,7 +65,7 @@ def test_the_lax_partner_of_la2_is_found_and_proved_for_all_sizes():
 
 
 def test_an_empty_space_is_certified_by_a_rank():
-    from stiefelsym.discover import lax_partner
+    from stiefelsym.analyses.discover import lax_partner
     flow, _ = resolve_flow("geodesic-normal")
     space, verdicts = lax_partner(lambda s: s.X @ s.X.T, flow, Size(4, 2), degree=0)
     assert space.particular is None and not verdicts
@@ -80,8 +80,8 @@ import pytest  # noqa: E402
 
 
 def _space(name, **kw):
-    from stiefelsym.discover import correction_space
-    from stiefelsym.discover_ansatze import CORRECTIONS
+    from stiefelsym.analyses.discover import correction_space
+    from stiefelsym.analyses.discover_ansatze import CORRECTIONS
     return correction_space(CORRECTIONS[name](), **kw)
 
 
@@ -128,8 +128,8 @@ def test_so_nn_reordered_space_holds_the_registered_correction_only():
 def test_a_corrupted_lax_matrix_has_no_partner_of_the_man_la_shape():
     """Negative control: with the (1,1) block of 𝓛*_man(λ) negated, no 𝓐 of the ansatz holds."""
     from stiefelsym import block, comm
-    from stiefelsym.discover import _catalog_module, correction_space
-    from stiefelsym.discover_ansatze import manakov_dual_lax
+    from stiefelsym.analyses.discover import _catalog_module, correction_space
+    from stiefelsym.analyses.discover_ansatze import manakov_dual_lax
     sec4 = _catalog_module("sec4_integrability")
 
     def L_bad(s):
@@ -150,8 +150,8 @@ def test_a_corrupted_lax_matrix_has_no_partner_of_the_man_la_shape():
 def test_a_corrupted_c_eq_does_not_return_the_corruption():
     """Negative control: the printed QΠ is never a solution, and the Q̇ of a corrupted flow (−AX with the
     wrong sign) has no last term of the shape that repairs it."""
-    from stiefelsym.discover import correction_space
-    from stiefelsym.discover_ansatze import coupled_neumann_flow
+    from stiefelsym.analyses.discover import correction_space
+    from stiefelsym.analyses.discover_ansatze import coupled_neumann_flow
     a = coupled_neumann_flow()
 
     def residual(s, slot):
@@ -170,14 +170,14 @@ def test_the_general_line_of_the_spectral_integrals_is_the_only_one_of_its_shape
 def test_the_general_line_holds_at_every_l_up_to_n_4():
     """At random points mod p (auto proves it exactly at the sizes within the claim's symbolic budget, which
     takes two minutes: the slow test up to n = 6 runs auto)."""
-    from stiefelsym.discover_ansatze import sweep_general_line
+    from stiefelsym.analyses.discover_ansatze import sweep_general_line
     res = sweep_general_line(4, method="modular")
     assert len(res) == 20 and all(v == "checked" for *_, v in res), res
 
 
 @pytest.mark.slow
 def test_the_general_line_holds_at_every_l_up_to_n_6():
-    from stiefelsym.discover_ansatze import sweep_general_line
+    from stiefelsym.analyses.discover_ansatze import sweep_general_line
     res = sweep_general_line(6)
     assert len(res) == 56 and all(v in ("proved", "checked") for *_, v in res), res
 
@@ -211,7 +211,7 @@ def test_a_users_own_correction_search_through_the_command_line_and_the_api():
     from pathlib import Path
     from click.testing import CliRunner
     from stiefelsym.cli import main
-    from stiefelsym.discover import correction_space, load_object
+    from stiefelsym.analyses.discover import correction_space, load_object
     example = Path(__file__).resolve().parent.parent / "examples" / "my_correction.py"
     r = CliRunner().invoke(main, ["discover", "--correct", f"{example}:ANSATZ"])
     assert r.exit_code == 0, r.output

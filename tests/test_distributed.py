@@ -10,8 +10,8 @@ import pytest
 
 pytest.importorskip("distributed")
 
-from stiefelsym import distributed as D  # noqa: E402
-from stiefelsym import runner  # noqa: E402
+from stiefelsym.run import distributed as D  # noqa: E402
+from stiefelsym.run import runner  # noqa: E402
 from stiefelsym.claims import Size  # noqa: E402
 
 CLAIMS = ["neumann-flow", "invariant-metrics", "adjoint-orbit-regularity"]

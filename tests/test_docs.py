@@ -13,7 +13,7 @@ ROOT = Path(__file__).resolve().parent.parent
 
 def test_the_readme_is_short_and_its_first_claim_is_proved(tmp_path):
     from stiefelsym.claims import Size, load_claims_file
-    from stiefelsym.runner import run_one
+    from stiefelsym.run.runner import run_one
     text = (ROOT / "README.md").read_text(encoding="utf-8")
     assert len(text.splitlines()) < 200
     code = re.search(r"```python\n(# my_claims.py\n.*?)```", text, re.S).group(1)

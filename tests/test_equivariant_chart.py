@@ -8,8 +8,8 @@ import pytest
 import stiefelsym.proofs.sec8_dual_lax_pair as sec8
 from stiefelsym import admissible, block
 from stiefelsym.claims import Claim, Size
-from stiefelsym.polyfield import SymbolicField
-from stiefelsym.runner import run_one
+from stiefelsym.backends.polyfield import SymbolicField
+from stiefelsym.run.runner import run_one
 from stiefelsym.proofs.sec5_neumann import H_neumann_normal
 from stiefelsym.scene import Scene
 

@@ -9,12 +9,12 @@ from fractions import Fraction
 import numpy as np
 import pytest
 
-from stiefelsym import native
+from stiefelsym.backends import native
 from stiefelsym.claims import ClaimTimeout, Size, deadline
-from stiefelsym.fields import ModularField, RationalField
-from stiefelsym.polyfield import SymbolicField
-from stiefelsym.matrix import comm
-from stiefelsym.runner import run_one
+from stiefelsym.backends.fields import ModularField, RationalField
+from stiefelsym.backends.polyfield import SymbolicField
+from stiefelsym.backends.matrix import comm
+from stiefelsym.run.runner import run_one
 from stiefelsym.scene import Scene
 
 SIZES = [(2, 1), (3, 1), (3, 2), (4, 2), (3, 3)]

@@ -9,11 +9,11 @@ import pytest
 import sympy as sp
 
 from stiefelsym import Rank, admissible
-from stiefelsym import methods
+from stiefelsym.methods import fixed_size as methods
 from stiefelsym.claims import Claim
-from stiefelsym.polyfield import SymbolicField
-from stiefelsym.matrix import Mat
-from stiefelsym.methods import ExactTimeout, _bareiss_rank, _flint_polynomials, run_exact
+from stiefelsym.backends.polyfield import SymbolicField
+from stiefelsym.backends.matrix import Mat
+from stiefelsym.methods.fixed_size import ExactTimeout, _bareiss_rank, _flint_polynomials, run_exact
 
 
 def _claim(func, cid="rank-trick"):

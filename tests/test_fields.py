@@ -4,9 +4,9 @@ from fractions import Fraction
 
 import pytest
 
-from stiefelsym.fields import DegenerateError, Deg, DegreeField, Dual, FloatField, ModularField, RationalField
-from stiefelsym.polyfield import SymbolicField
-from stiefelsym.matrix import Mat
+from stiefelsym.backends.fields import DegenerateError, Deg, DegreeField, Dual, FloatField, ModularField, RationalField
+from stiefelsym.backends.polyfield import SymbolicField
+from stiefelsym.backends.matrix import Mat
 
 
 def _poly_program(F, x, y):
@@ -323,7 +323,7 @@ def test_height_bound_dominates_the_numerator_of_random_programs(seed):
 
 
 def test_modular_constants_divisible_by_p_are_degenerate():
-    from stiefelsym.fields import ConstantDegenerate
+    from stiefelsym.backends.fields import ConstantDegenerate
     P = ModularField(101)
     for q in (101, -202, Fraction(3, 101), Fraction(101, 7)):
         with pytest.raises(ConstantDegenerate):

@@ -8,9 +8,9 @@ from fractions import Fraction
 import numpy as np
 import pytest
 
-from stiefelsym import native
-from stiefelsym.fields import FloatField
-from stiefelsym.matrix import Mat
+from stiefelsym.backends import native
+from stiefelsym.backends.fields import FloatField
+from stiefelsym.backends.matrix import Mat
 
 from float_replay import assert_within_bounds, entries, replay_field
 
@@ -89,7 +89,7 @@ def test_an_inverse_without_the_structure_is_computed_at_once(monkeypatch):
     assert A.inv()._n.lazy is None
     S = skew(F, 5, rng)
     assert (Mat.identity(5, F) * F.const(-1) + S).inv()._n.lazy is None     # symmetric part −I
-    from stiefelsym.fields import DegenerateError
+    from stiefelsym.backends.fields import DegenerateError
     with pytest.raises(DegenerateError):
         Mat.zeros(5, 5, F).inv()
 
@@ -97,8 +97,8 @@ def test_an_inverse_without_the_structure_is_computed_at_once(monkeypatch):
 def _reference_entries(s, name, u):
     """The float method's deciding entries as they were found before the fast path (every array
     in full)."""
-    from stiefelsym.fields import ErrNum
-    from stiefelsym.methods import FLOAT_RESOLUTION
+    from stiefelsym.backends.fields import ErrNum
+    from stiefelsym.methods.fixed_size import FLOAT_RESOLUTION
     v, m = s.v.ravel(), s.m.ravel()
     e = np.full(v.shape, float(s.e))
     with np.errstate(all="ignore"):
@@ -120,7 +120,7 @@ def test_the_deciding_entries_are_those_of_the_full_arrays():
     """The float method's entry picks (largest |v|, e and e/m, first non-finite, clear, clear and
     resolving, not resolving) are the same with the fast path, on matrices with zero scales, zero
     bounds, entries above the bound, unresolved entries, infinities and nan."""
-    from stiefelsym.methods import _float_entries
+    from stiefelsym.methods.fixed_size import _float_entries
     F = FloatField()
     rng = np.random.default_rng(3)
     for trial in range(60):
@@ -180,7 +180,7 @@ def test_a_sum_or_multiple_met_again_is_the_stored_one():
 
 
 def ErrNumLike(c):
-    from stiefelsym.fields import ErrNum
+    from stiefelsym.backends.fields import ErrNum
     return ErrNum(c.v, c.e, c.m, c.u)
 
 
@@ -222,6 +222,6 @@ def test_a_diagonal_times_a_scalar_stays_diagonal_and_equals_the_full_multiple()
     full = be.smul(native.F64(d.v.copy(), d.e, d.m.copy()), c)
     assert np.array_equal(s.v, full.v) and np.array_equal(s.m, full.m)
     assert abs(s.e - full.e) <= 1e-12 * full.e
-    from stiefelsym.fields import ErrNum
+    from stiefelsym.backends.fields import ErrNum
     bad = be.smul(be.diag(xs), ErrNum(float("inf"), 0.0, float("inf"), F.u))
     assert not np.all(np.isfinite(bad.v))

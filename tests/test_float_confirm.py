@@ -11,8 +11,8 @@ import pytest
 
 from stiefelsym import admissible, comm
 from stiefelsym.claims import Claim, Size
-from stiefelsym.fields import ModularField, RationalField
-from stiefelsym.runner import run_one
+from stiefelsym.backends.fields import ModularField, RationalField
+from stiefelsym.run.runner import run_one
 from stiefelsym.scene import Scene
 
 SEED = 11
@@ -58,7 +58,7 @@ def test_numeric_is_confirmed_at_one_point_per_component_with_its_bound(method, 
 
 def test_a_stricter_target_takes_more_points(monkeypatch):
     """The number of points follows the bound: at a target one point cannot reach, two are taken."""
-    import stiefelsym.methods as methods
+    import stiefelsym.methods.fixed_size as methods
     monkeypatch.setattr(methods, "CONFIRM_TARGET", 1e-20)
     monkeypatch.setattr(methods, "_confirm_text", lambda exact: exact.certificate)
     res = run_one(LA1, Size(5, 2), "float", seed=SEED)
@@ -91,7 +91,7 @@ def test_a_confirmation_whose_bound_is_too_weak_is_no_pass(monkeypatch):
     """Outside hard cases `numeric` stands only on a `checked` (or `proved`) confirmation: an exact run at
     random points whose residuals vanished but whose false-pass bound is above the target (`inconclusive`)
     leaves the float verdict `inconclusive`, with the reason."""
-    from stiefelsym import methods
+    from stiefelsym.methods import fixed_size as methods
     from stiefelsym.results import Result
 
     real = methods.run_points

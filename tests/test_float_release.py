@@ -1,5 +1,5 @@
 """The float evaluation frees each value after its last use (:func:`stiefelsym.ir.evaluate.release_plan`,
-:meth:`stiefelsym.native.Float64Backend.forget`): what it frees is only what the backend remembers,
+:meth:`stiefelsym.backends.native.Float64Backend.forget`): what it frees is only what the backend remembers,
 so the residuals, their bounds and their term scales are those of an evaluation that keeps every
 value to the end, bit for bit, and the peak memory is lower."""
 from __future__ import annotations
@@ -11,10 +11,10 @@ import numpy as np
 import pytest
 
 from stiefelsym.claims import load_catalog
-from stiefelsym.fields import FloatField
+from stiefelsym.backends.fields import FloatField
 from stiefelsym.ir import evaluate as ev
-from stiefelsym.methods import call_claim, quiet_numpy
-from stiefelsym.native import backend
+from stiefelsym.methods.fixed_size import call_claim, quiet_numpy
+from stiefelsym.backends.native import backend
 from stiefelsym.scene import Scene
 
 
@@ -60,7 +60,7 @@ def test_freeing_values_changes_no_residual(monkeypatch, cid, n, r):
 def _pooled_residuals(claim, n, r, monkeypatch, pool, min_bytes: int) -> list:
     """The claim's residual matrices at one float64 point with the backend's array pool ``pool``
     (every array from min_bytes), or with none (pool None)."""
-    from stiefelsym import native
+    from stiefelsym.backends import native
     with monkeypatch.context() as mp:
         mp.setattr(native, "POOL", pool is not None)
         mp.setattr(native, "POOL_MIN_BYTES", min_bytes)
@@ -77,7 +77,7 @@ def test_pooled_arrays_change_no_residual(monkeypatch, cid, n, r, min_bytes):
     """Results written into the float backend's pooled arrays (reused once nothing refers to them,
     across evaluations) are those numpy allocates, bit for bit: values, bounds and term scales, on
     a second evaluation too (the pool then hands out arrays holding the first one's numbers)."""
-    from stiefelsym import native
+    from stiefelsym.backends import native
     claim = load_catalog().get(cid)
     plain = _pooled_residuals(claim, n, r, monkeypatch, None, min_bytes)
     pool = native._Pool()
@@ -93,7 +93,7 @@ def test_pooled_arrays_change_no_residual(monkeypatch, cid, n, r, min_bytes):
 
 def test_a_pooled_array_is_reused_only_when_nothing_refers_to_it(monkeypatch):
     """The pool hands an array out again only once every view of it (a transpose, a slice) is gone."""
-    from stiefelsym import native
+    from stiefelsym.backends import native
     monkeypatch.setattr(native, "POOL", True)
     monkeypatch.setattr(native, "_POOL", native._Pool())
     assert native._buf((10, 10)).base is None       # below the pool's range: numpy's own
@@ -158,7 +158,7 @@ def test_float32_rounding_down_is_one_step_towards_zero():
     positive ones) is the rounding to nearest moved one step towards 0 where positive: the numbers
     of the masked subtraction, and of np.nextafter, entry by entry (0, -0, subnormals, float32's
     overflow to inf, inf, nan of either sign)."""
-    from stiefelsym.native import _down32
+    from stiefelsym.backends.native import _down32
     rng = np.random.default_rng(3)
     x = np.abs(rng.standard_normal((70, 90))) * 10.0 ** rng.integers(-50, 50, size=(70, 90))
     x.flat[:9] = [0.0, -0.0, 1e-45, 1e-40, 3.5e38, 1e300, np.inf, np.nan, -np.nan]
@@ -176,7 +176,7 @@ def test_float32_rounding_down_is_one_step_towards_zero():
 def test_constants_take_the_same_path_and_storage():
     """from_consts reads the largest |entry| without the array of |a|: the same storage, bound,
     scales and signed selection as before, and the generic path from 2^53 on."""
-    from stiefelsym import native
+    from stiefelsym.backends import native
     F = FloatField(None)
     be = backend(F)
     D = np.zeros((7, 4), dtype=np.int64)
@@ -202,7 +202,7 @@ def test_constants_take_the_same_path_and_storage():
 def test_float64_scales_from_float32_in_a_pooled_array():
     """F64.m from float32 scales (one product, into a pooled array of numpy's layout) is numpy's own
     mixed-type product, bit for bit."""
-    from stiefelsym.native import _f32
+    from stiefelsym.backends.native import _f32
     rng = np.random.default_rng(2)
     m32 = np.abs(rng.standard_normal((300, 250))).astype(np.float32)
     m32[0, 0] = np.float32(1e-42)
@@ -216,7 +216,7 @@ def test_pooled_arrays_are_not_shared_with_a_forked_process(monkeypatch):
     """A pooled array is a private mapping: a process forked while it is pooled (the worker pool)
     writes into its own copy, never into the parent's."""
     import os
-    from stiefelsym import native
+    from stiefelsym.backends import native
     if not hasattr(os, "fork"):
         pytest.skip("no fork")
     monkeypatch.setattr(native, "POOL", True)

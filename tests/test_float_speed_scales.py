@@ -10,9 +10,9 @@ from fractions import Fraction
 import numpy as np
 import pytest
 
-from stiefelsym import native
-from stiefelsym.fields import FloatField
-from stiefelsym.matrix import Mat
+from stiefelsym.backends import native
+from stiefelsym.backends.fields import FloatField
+from stiefelsym.backends.matrix import Mat
 
 from float_replay import replay_field
 
@@ -339,7 +339,7 @@ def test_down32_is_nextafter_towards_zero_bit_for_bit():
     float32's range and 0; never above x.  The control: the cast alone (rounded to nearest) is above x
     somewhere."""
     import numpy as np
-    from stiefelsym.native import _down32
+    from stiefelsym.backends.native import _down32
     rng = np.random.default_rng(3)
     x = np.concatenate([np.abs(rng.standard_normal(20000)) * 10.0 ** rng.integers(-50, 40, 20000),
                         [0.0, np.inf, 1e-45, 1e-46, 3e38, 3.5e38, 1e-40, 2.0**-149, 2.0**-126]])

@@ -8,7 +8,7 @@ import dataclasses
 import numpy as np
 import pytest
 
-from stiefelsym import integrate as ig
+from stiefelsym.analyses import integrate as ig
 
 A4 = np.diag([0.5, 1.3, 2.1, 3.4])
 B4 = np.diag([0.1, 0.9, 1.2, 2.8])

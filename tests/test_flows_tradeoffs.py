@@ -5,7 +5,7 @@ import math
 
 import pytest
 
-from stiefelsym import flows_report as fr
+from stiefelsym.reports import flows_report as fr
 
 
 def run(method, seconds, H, lax=float("nan"), constraint=1e-15, step=None, tol=None, flow="f"):

@@ -9,7 +9,7 @@ import pytest
 
 from stiefelsym import admissible
 from stiefelsym.claims import Claim, Size
-from stiefelsym.runner import run_one
+from stiefelsym.run.runner import run_one
 
 EIGHTH = Fraction(1, 8)
 

@@ -10,11 +10,11 @@ import pytest
 from stiefelsym import brackets as B
 from stiefelsym.certificate_check import check_certificate
 from stiefelsym.claims import load_catalog
-from stiefelsym.fields import ModularField
+from stiefelsym.backends.fields import ModularField
 from stiefelsym.free import FreeScene
 from stiefelsym.free.mat import entry_of
-from stiefelsym.free_method import run_free
-from stiefelsym.matrix import comm
+from stiefelsym.methods.dimension_free import run_free
+from stiefelsym.backends.matrix import comm
 from stiefelsym.scene import Scene
 
 CATALOG = load_catalog()

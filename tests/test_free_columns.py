@@ -14,8 +14,8 @@ from stiefelsym.certificate_check import check_certificate
 from stiefelsym.claims import load_catalog
 from stiefelsym.free import FreeScene
 from stiefelsym.free.mat import entry_of
-from stiefelsym.free_method import run_free
-from stiefelsym.matrix import Mat
+from stiefelsym.methods.dimension_free import run_free
+from stiefelsym.backends.matrix import Mat
 from stiefelsym.proofs import app1_magnetic_neumann as m
 from stiefelsym.proofs.sec5_neumann import H_neumann_euclidean
 from free_words import forged
@@ -367,7 +367,7 @@ def test_the_leading_columns_and_the_last_are_the_identity():
 
 
 def test_the_report_says_for_which_r_a_proof_holds():
-    from stiefelsym.report import free_scope
+    from stiefelsym.reports.report import free_scope
     assert free_scope(_proved(run_free(CATALOG.get("magnetic-euclidean-flow")))) == "every n at r = 2"
     assert free_scope(_proved(run_free(SPHERE))) == "every n at r = 1"
     assert free_scope(_proved(run_free(CATALOG.get("rigid-body-euler-poisson")))) == "every n at r = n"
@@ -536,7 +536,7 @@ FALSE_CONTROLS = [
 
 @pytest.mark.parametrize("cid, size, func", FALSE_CONTROLS, ids=[f"{c}-{f.__name__}" for c, _, f in FALSE_CONTROLS])
 def test_the_corrupted_claims_fail_at_a_fixed_size(cid, size, func):
-    from stiefelsym.methods import run_exact
+    from stiefelsym.methods.fixed_size import run_exact
     assert run_exact(CATALOG.get(cid), *size, 0, func=func).verdict == "fails"
 
 
@@ -546,7 +546,7 @@ def test_remembered_canonical_form_is_the_canonical_form(monkeypatch):
     with one coefficient changed does not get the remembered form of the other (negative control)."""
     from stiefelsym.claims import load_catalog
     from stiefelsym.free import columns
-    from stiefelsym.runner import run_one
+    from stiefelsym.run.runner import run_one
     import stiefelsym.free.scene as scene_module
     seen = []
 
@@ -570,8 +570,8 @@ def test_a_claim_stated_at_one_r_is_proved_at_that_r_whatever_its_hypotheses():
     and says so (the report counts it there, not among the claims proved for every n and r), also when the
     proof used no hypothesis of the family (twisted-form: no E_1E_1^T + E_2E_2^T = I_r)."""
     from stiefelsym.claims import load_catalog
-    from stiefelsym.report import free_scope
-    from stiefelsym.runner import run_one
+    from stiefelsym.reports.report import free_scope
+    from stiefelsym.run.runner import run_one
 
     res = run_one(load_catalog().get("twisted-form"), None, "free", 0)
     assert res.verdict == "proved", res.message

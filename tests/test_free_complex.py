@@ -14,7 +14,7 @@ from stiefelsym.free import FreeScene
 from stiefelsym.free.algebra import NeedsCoordinates, recording
 from stiefelsym.free.rewriting import critical_pairs
 from stiefelsym.free.scene import COMPLEX_HYPOTHESES, hypothesis
-from stiefelsym.free_method import run_free
+from stiefelsym.methods.dimension_free import run_free
 from stiefelsym.systems import derivative, euler_lagrange, complex_coordinates, ctranspose, realify_real, entries
 
 import stiefelsym.proofs.app2_double_coupled_complex as a
@@ -194,7 +194,7 @@ def test_a_derivative_along_a_vector_that_leaves_the_variety_is_refused():
 def test_hermitian_entries_keep_their_coordinates_at_a_fixed_size():
     """At a fixed size the constraint is still its r² independent real components."""
     import random
-    from stiefelsym.fields import ModularField
+    from stiefelsym.backends.fields import ModularField
     from stiefelsym.scene import Scene
     s = Scene(3, 2, ModularField(2**61 - 1), rng=random.Random(0))
     z = a.complex_point(s)

@@ -19,8 +19,8 @@ from stiefelsym.certificate_check import check_certificate
 from stiefelsym.claims import load_catalog
 from stiefelsym.free.scene import FreeScene
 from stiefelsym.ir import evaluate as ev
-from stiefelsym.matrix import Mat
-from stiefelsym.runner import run_one
+from stiefelsym.backends.matrix import Mat
+from stiefelsym.run.runner import run_one
 
 
 def _scene() -> FreeScene:
@@ -82,7 +82,7 @@ def _values_off():
 
 def test_the_memo_of_free_arithmetic_returns_what_is_computed_without_it():
     from stiefelsym.free import mat
-    from stiefelsym.methods import call_claim
+    from stiefelsym.methods.fixed_size import call_claim
     claim = load_catalog().get("neumann-lax")
     warm = [call_claim(claim.func, _scene()) for _ in range(3)]
     assert len(mat._VALUES) > 0
@@ -125,7 +125,7 @@ def test_sealing_switches_the_memo_off_and_the_seal_sees_it_switched_on():
 
 def test_the_normal_form_memo_gives_the_reduction_of_a_fresh_system():
     from stiefelsym.free.scene import standard_system
-    from stiefelsym.methods import _entries, call_claim
+    from stiefelsym.methods.fixed_size import _entries, call_claim
     claim = load_catalog().get("neumann-lax")
     s = _scene()
     checks = call_claim(claim.func, s)
@@ -148,7 +148,7 @@ def _fresh_nf(p):
 def test_the_certificate_memo_gives_the_certificate_of_a_fresh_system():
     from stiefelsym.free.rewriting import RewritingSystem
     from stiefelsym.free.scene import standard_system
-    from stiefelsym.methods import _entries, call_claim
+    from stiefelsym.methods.fixed_size import _entries, call_claim
     claim = load_catalog().get("neumann-lax")
     s = _scene()
     for name, value in call_claim(claim.func, s).items():

@@ -12,10 +12,10 @@ import pytest
 from stiefelsym import Inverse
 from stiefelsym.certificate_check import check_certificate
 from stiefelsym.claims import load_catalog
-from stiefelsym.free_method import run_free
+from stiefelsym.methods.dimension_free import run_free
 from stiefelsym.ir import TraceRefused, trace
 from stiefelsym.ir.replay import GraphClaim
-from stiefelsym.methods import REALIZATIONS, run_ball, run_exact, run_float, run_points
+from stiefelsym.methods.fixed_size import REALIZATIONS, run_ball, run_exact, run_float, run_points
 
 CATALOG = load_catalog()
 CLAIM = CATALOG.get("dirac-bracket-multipliers")
@@ -217,7 +217,7 @@ def test_the_operator_is_the_matrix_of_constraint_brackets(which):
     import random
 
     from stiefelsym import twisted
-    from stiefelsym.fields import ModularField
+    from stiefelsym.backends.fields import ModularField
     from stiefelsym.scene import Scene
     import stiefelsym.proofs.app1_magnetic_neumann as app1
     import stiefelsym.proofs.sec2_hamiltonian_flows as sec2

@@ -19,7 +19,7 @@ from stiefelsym.free.mat import entry_of
 from stiefelsym.free.metric import METRIC_HYP, metric_system
 from stiefelsym.free.rewriting import critical_pairs, is_confluent
 from stiefelsym.free.scene import AINV, P, Pt, X, Xt
-from stiefelsym.runner import run_one
+from stiefelsym.run.runner import run_one
 
 
 def _w(*letters):

@@ -12,7 +12,7 @@ import pytest
 from stiefelsym import admissible
 from stiefelsym.certificate_check import check_certificate
 from stiefelsym.claims import Claim
-from stiefelsym.runner import run_one
+from stiefelsym.run.runner import run_one
 
 
 def H_neumann(t):

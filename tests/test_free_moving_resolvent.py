@@ -5,8 +5,8 @@ the free scene would take itself (gradients, brackets, flows of a function that 
 statement that drops the motion of μ is never proved, the true one is, with a certificate the checker accepts."""
 from stiefelsym.certificate_check import check_certificate
 from stiefelsym.claims import load_catalog
-from stiefelsym.free_method import run_free
-from stiefelsym.methods import run_exact
+from stiefelsym.methods.dimension_free import run_free
+from stiefelsym.methods.fixed_size import run_exact
 
 CLAIM = load_catalog().get("neumann-dual-lax-normal")
 

@@ -10,8 +10,8 @@ from stiefelsym.certificate_check import check_certificate
 from stiefelsym.claims import load_catalog
 from stiefelsym.free import FreeScene
 from stiefelsym.free.mat import entry_of
-from stiefelsym.free_method import run_free
-from stiefelsym.matrix import Mat
+from stiefelsym.methods.dimension_free import run_free
+from stiefelsym.backends.matrix import Mat
 from stiefelsym.proofs import sec3_geodesic_flows as g
 
 CATALOG = load_catalog()
@@ -295,7 +295,7 @@ def test_a_corrupted_claim_on_so_r_is_not_proved(func):
 
 def test_the_corrupted_claims_on_so_r_fail_at_a_fixed_size():
     import random
-    from stiefelsym.fields import ModularField
+    from stiefelsym.backends.fields import ModularField
     from stiefelsym.scene import Scene
     s = Scene(4, 3, ModularField(), rng=random.Random("so(r) operator"))
     for func in (bb_with_generic_metric, phi_not_conserved_by_the_neumann_metric, symmetry_through_a_third_factor,
@@ -306,7 +306,7 @@ def test_the_corrupted_claims_on_so_r_fail_at_a_fixed_size():
 
 def test_the_coordinate_operator_on_so_r_is_symmetric_and_skew():
     import random
-    from stiefelsym.fields import ModularField
+    from stiefelsym.backends.fields import ModularField
     from stiefelsym.scene import Scene
     s = Scene(4, 3, ModularField(), rng=random.Random("so(r) operator|coordinates"))
     BB = s.sym_operator("BB")

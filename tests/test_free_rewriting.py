@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 import symengine as se
 
-from stiefelsym.fields import RationalField
+from stiefelsym.backends.fields import RationalField
 from stiefelsym.free.algebra import DIMENSIONS, NCPoly, evaluate, symmetric_letter, trace
 from stiefelsym.free.rewriting import (Order, RewritingError, RewritingSystem, SharedMemos, complete, critical_pairs,
                                        is_confluent)

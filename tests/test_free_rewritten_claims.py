@@ -6,8 +6,8 @@ import pytest
 
 from stiefelsym.certificate_check import check_certificate
 from stiefelsym.claims import load_catalog
-from stiefelsym.free_method import run_free
-from stiefelsym.methods import run_exact
+from stiefelsym.methods.dimension_free import run_free
+from stiefelsym.methods.fixed_size import run_exact
 from stiefelsym.proofs import sec8_dual_lax_pair as sec8
 
 CATALOG = load_catalog()

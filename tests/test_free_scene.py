@@ -16,10 +16,10 @@ import numpy as np
 import pytest
 import symengine as se
 
-from stiefelsym.fields import Dual, RationalField
+from stiefelsym.backends.fields import Dual, RationalField
 from stiefelsym.free.algebra import DIMENSIONS, NCPoly, evaluate
 from stiefelsym.free.scene import LAMBDA, FreeScene, NeedsCoordinates
-from stiefelsym.matrix import Mat, block, comm
+from stiefelsym.backends.matrix import Mat, block, comm
 from stiefelsym.scene import Flow, Scene
 
 from test_free_rewriting import exact_point

@@ -10,8 +10,8 @@ import pytest
 from stiefelsym import twisted
 from stiefelsym.certificate_check import check_certificate
 from stiefelsym.claims import load_catalog
-from stiefelsym.free_method import run_free
-from stiefelsym.methods import run_exact
+from stiefelsym.methods.dimension_free import run_free
+from stiefelsym.methods.fixed_size import run_exact
 from stiefelsym.proofs import sec3_geodesic_flows as s3
 from stiefelsym.proofs import sec6_compatible_brackets as s6
 from free_words import forged
@@ -97,7 +97,7 @@ def test_the_checker_rejects_a_forged_block_hypothesis():
 
 
 def test_the_fixed_size_blocks_are_the_coordinate_blocks():
-    from stiefelsym import fields
+    from stiefelsym.backends import fields
     from stiefelsym.scene import Scene
     s = Scene(5, 3, fields.RationalField())
     D, C = (twisted.block_projector(s, i) for i in range(2))

@@ -2,7 +2,7 @@
 gets `fails`, the corrupted big Lax equation never gets a pass (at a plain random point it is
 refuted), and a size the cost model predicts beyond the run's budget is not run (`refused`, never a
 wrong verdict)."""
-from stiefelsym import speed as sp
+from stiefelsym.analyses import speed as sp
 
 
 def test_r_equals_n_and_n_minus_1(catalog):

@@ -1,4 +1,4 @@
-"""The integrators of stiefelsym.integrate: orders, constraints, closed forms, Lax spectra, bad input,
+"""The integrators of stiefelsym.analyses.integrate: orders, constraints, closed forms, Lax spectra, bad input,
 and the ``stiefelsym flows`` command (quick mode)."""
 from __future__ import annotations
 
@@ -8,7 +8,7 @@ import json
 import numpy as np
 import pytest
 
-from stiefelsym import integrate as ig
+from stiefelsym.analyses import integrate as ig
 
 A4 = np.diag([0.5, 1.3, 2.1, 3.4])
 
@@ -290,7 +290,7 @@ def test_default_tolerance_and_step():
 def test_dual_lax_pair_extends_to_every_kappa():
     """(LA3) with 𝓐*_κ = [[(1+2κ)XᵀP, I], [Λ − λI, −(1+2κ)PᵀX]] along (No) for every κ; the normal-metric 𝓐*
     of (LA4) fails off κ = 0 (negative control)."""
-    from stiefelsym.flows_report import collect_dual_every_kappa
+    from stiefelsym.reports.flows_report import collect_dual_every_kappa
     for row in collect_dual_every_kappa(True, lambda s: None):
         assert row["residual_A_kappa"] < 1e-12
         if row["kappa"] != 0.0:
@@ -300,7 +300,7 @@ def test_dual_lax_pair_extends_to_every_kappa():
 def test_every_lax_matrix_of_the_report_names_claims_of_the_catalog(catalog):
     """The spectra table looks the algebraic verdicts up by claim id: every id must exist, with a paper
     label in common with the Lax matrix or its flow."""
-    from stiefelsym.flows_report import _params, catalog_claims, spectra_cases
+    from stiefelsym.reports.flows_report import _params, catalog_claims, spectra_cases
     ids = {c.id for c in catalog}
     for quick in (False,):
         for case in spectra_cases(quick):
@@ -316,7 +316,7 @@ def test_every_lax_matrix_of_the_report_names_claims_of_the_catalog(catalog):
 
 
 def test_algebraic_verdicts_are_read_from_results_json(tmp_path):
-    from stiefelsym.flows_report import algebraic_verdicts
+    from stiefelsym.reports.flows_report import algebraic_verdicts
     doc = {"results": [
         {"claim": "neumann-lax", "paper": ["Neumann_LA", "LA1", "LA2"], "kind": "lax", "method": "free", "verdict": "proved"},
         {"claim": "neumann-lax", "paper": ["Neumann_LA", "LA1", "LA2"], "kind": "lax", "method": "exact", "verdict": "proved"},

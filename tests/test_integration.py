@@ -83,7 +83,7 @@ def test_residual_sympy(wrong_file):
     exact, modular = res
     e = exact.residual_sympy()
     assert isinstance(e, sympy.Expr) and e != 0
-    from stiefelsym.notebook import _sympy_text
+    from stiefelsym.reports.notebook import _sympy_text
     W13, W23, W14, W24 = (sympy.Symbol(x) for x in ("W_1,3", "W_2,3", "W_1,4", "W_2,4"))
     assert _sympy_text("-4*W_1,3*W_2,3 - 4*W_1,4*W_2,4") == -4 * W13 * W23 - 4 * W14 * W24
     assert _sympy_text("(A_1,1*lambda - 1)/(A_1,1)") == (sympy.Symbol("A_1,1") * sympy.Symbol("lambda") - 1) \
@@ -197,7 +197,7 @@ def test_a_run_of_no_claims_exits_2(tmp_path, run):
 
 
 def test_the_users_cost_model_goes_to_the_user_cache(tmp_path, monkeypatch):
-    from stiefelsym import costmodel
+    from stiefelsym.methods import costmodel
     monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
     monkeypatch.delenv(costmodel.MODEL_ENV, raising=False)
     package = costmodel.MODEL_FILE.read_bytes()

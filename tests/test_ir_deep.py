@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 
 from stiefelsym.claims import Claim, Size, admissible
-from stiefelsym.runner import run_one
+from stiefelsym.run.runner import run_one
 
 DEPTH = 1500        # well beyond Python's recursion limit of 1000 frames
 

@@ -10,16 +10,16 @@ import pytest
 
 from stiefelsym import comm
 from stiefelsym.claims import Claim, Size, admissible
-from stiefelsym.fields import ModularField
+from stiefelsym.backends.fields import ModularField
 from stiefelsym.free import FreeScene
 from stiefelsym.ir import compile_claim
 from stiefelsym.ir import derivative as deriv
 from stiefelsym.ir.derivative import POINT_FLOWS, coverage, derivatives, scene_flows
 from stiefelsym.ir.evaluate import evaluate
 from stiefelsym.ir.statements import Rank
-from stiefelsym.matrix import Mat
-from stiefelsym.methods import _entries
-from stiefelsym.runner import graph_digest, run_one
+from stiefelsym.backends.matrix import Mat
+from stiefelsym.methods.fixed_size import _entries
+from stiefelsym.run.runner import graph_digest, run_one
 from stiefelsym.scene import REALIZATIONS, Scene
 
 P61 = 2 ** 61 - 1

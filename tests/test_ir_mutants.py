@@ -6,14 +6,14 @@ import pytest
 from click.testing import CliRunner
 
 from stiefelsym.claims import Claim, Size, admissible, load_catalog
-from stiefelsym.cli_mutate import mutate as mutate_command
+from stiefelsym.cli.mutate import mutate as mutate_command
 from stiefelsym.ir import compile_claim
 from stiefelsym.ir.graph import Graph, Named, Ref
 from stiefelsym.ir.mutants import OPERATORS, MutantCensus, graph_mutants, output_key, sites
 from stiefelsym.ir.replay import GraphClaim, ReplayError
 from stiefelsym.ir.trace import trace
-from stiefelsym.mutate import run_mutation
-from stiefelsym.runner import run_one
+from stiefelsym.analyses.mutate import run_mutation
+from stiefelsym.run.runner import run_one
 from stiefelsym.scene import REALIZATIONS
 
 CONS = (REALIZATIONS["standard"].name, REALIZATIONS["standard"].build)

@@ -13,7 +13,7 @@ import pytest
 from stiefelsym import admissible, block
 from stiefelsym.claims import Claim
 from stiefelsym.ir import TraceRefused, compile_claim, trace
-from stiefelsym.runner import run_one
+from stiefelsym.run.runner import run_one
 from stiefelsym.claims import Size
 from stiefelsym.scene import REALIZATIONS
 
@@ -242,7 +242,7 @@ def spoofed_engine_frame(s):
     """False: a claim that names its module after the engine and reads the private state it finds."""
     g = sys._getframe().f_globals
     old = g["__name__"]
-    g["__name__"] = "stiefelsym.methods"
+    g["__name__"] = "stiefelsym.methods.fixed_size"
     try:
         raw = getattr(s, "_field", None) or getattr(s.X, "_a", None)
         if raw is not None:
@@ -314,8 +314,8 @@ def test_a_free_proof_without_a_certificate_is_refused(tmp_path):
 
 def test_a_certificate_moved_to_another_claim_is_caught(tmp_path):
     from stiefelsym.claims import load_catalog
-    from stiefelsym.integrity import check_results
-    from stiefelsym.runner import run_one as run
+    from stiefelsym.run.integrity import check_results
+    from stiefelsym.run.runner import run_one as run
     cat = load_catalog()
     true = run(cat.get("prep"), None, "free", 0)
     assert true.verdict == "proved"
@@ -339,7 +339,7 @@ def test_the_graph_at_a_size_is_the_graph_of_symbolic_sizes_for_the_catalog_samp
 
 def test_a_passing_verdict_for_a_claim_that_does_not_trace_is_rejected():
     from stiefelsym.claims import Registry
-    from stiefelsym.integrity import check_results
+    from stiefelsym.run.integrity import check_results
 
     def untraceable(s):
         """Refused at every size: a float constant."""
@@ -387,7 +387,7 @@ def test_a_graph_of_symbolic_sizes_is_typed_at_each_size_without_running_the_cla
     assert run_one(c, Size(4, 2), "exact", 0).verdict == "error"
     assert run_one(c, Size(3, 2), "exact", 0).verdict == "proved"
     assert run_one(c, None, "free", 0).verdict not in PASSING      # (the free scene refuses a 3 x 2 block)
-    from stiefelsym.free_method import typed_at_stated_sizes    # and the proof's own check of the stated sizes
+    from stiefelsym.methods.dimension_free import typed_at_stated_sizes    # and the proof's own check of the stated sizes
     assert "not a graph at (4,2)" in typed_at_stated_sizes(c, int_size_block)
     assert typed_at_stated_sizes(_claim(int_size_block, sizes=admissible(n_max=3, n_min=3, r_min=2, r_max=2)),
                                  int_size_block) == ""

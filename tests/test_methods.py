@@ -3,9 +3,9 @@ import pytest
 
 from stiefelsym import Count, Rank, admissible, comm
 from stiefelsym.claims import Claim, Size
-from stiefelsym.methods import run_exact, run_float, run_points
-from stiefelsym.free_method import run_free
-from stiefelsym.runner import run_one
+from stiefelsym.methods.fixed_size import run_exact, run_float, run_points
+from stiefelsym.methods.dimension_free import run_free
+from stiefelsym.run.runner import run_one
 
 
 def H_normal(s):
@@ -265,7 +265,7 @@ def stuck_in_native_code(s):
 
 def test_exact_method_never_hangs():
     import time
-    from stiefelsym.methods import run_exact_isolated
+    from stiefelsym.methods.fixed_size import run_exact_isolated
     t0 = time.perf_counter()
     res = run_exact_isolated(_claim(stuck_in_native_code), 4, 2, 0, time_budget=1)
     assert res.verdict == "inconclusive" and "budget" in res.message

@@ -1,14 +1,14 @@
 """The exact (flint) Lyapunov solve of the metric realization's equivariant chart: entry by entry
-over each entry's own denominator (stiefelsym.ratmat, whose sums and products stay in flint), one
+over each entry's own denominator (stiefelsym.backends.ratmat, whose sums and products stay in flint), one
 common denominator only for few new factors."""
 import random
 
 import pytest
 import symengine as se
 
-from stiefelsym.polyfield import SymbolicField
-from stiefelsym.polyfield import ObjMat, PolyMat
-from stiefelsym.ratmat import RatMat
+from stiefelsym.backends.polyfield import SymbolicField
+from stiefelsym.backends.polyfield import ObjMat, PolyMat
+from stiefelsym.backends.ratmat import RatMat
 from stiefelsym.scene import Scene
 
 
@@ -91,7 +91,7 @@ def test_metric_flow_exact_and_a_corrupted_lambda_equation_fails(common, monkeyp
     the factor 2 of its last term replaced by 1 fails (negative control)."""
     from stiefelsym import admissible
     from stiefelsym.claims import Claim, Size
-    from stiefelsym.runner import run_one
+    from stiefelsym.run.runner import run_one
     monkeypatch.setattr(Scene, "_LYAPUNOV_COMMON", common)
 
     def residual(s, c):
@@ -115,8 +115,8 @@ def test_metric_flow_exact_at_n_12_and_a_corrupted_lambda_equation_fails():
     nonzero residual for the witness dominates the time of a failure)."""
     from stiefelsym import admissible
     from stiefelsym.claims import Claim, Size, load_catalog
-    from stiefelsym.methods import run_exact
-    from stiefelsym.runner import run_one
+    from stiefelsym.methods.fixed_size import run_exact
+    from stiefelsym.run.runner import run_one
 
     def residual(s, c):
         F = s.dirac_flow(lambda t: t.tr(t.P.T @ t.Ainv @ t.P) * t.q(1, 2))
@@ -148,7 +148,7 @@ def test_metric_flow_with_the_reflection_at_r_1_is_proved_and_a_corrupted_factor
     a true claim.  Proved; with the factor 2 replaced by 3 it fails (negative control)."""
     from stiefelsym import admissible
     from stiefelsym.claims import Claim, Size
-    from stiefelsym.runner import run_one
+    from stiefelsym.run.runner import run_one
 
     def claim(c):
         return Claim(id=f"refl-metric-flow-{c}", paper=("A_XP",), kind="id", section="t", sizes=admissible(3),

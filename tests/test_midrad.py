@@ -1,4 +1,4 @@
-"""The float64 midpoint-radius rung of the ball method (stiefelsym.midrad) against exact arithmetic.
+"""The float64 midpoint-radius rung of the ball method (stiefelsym.backends.midrad) against exact arithmetic.
 
 Soundness: every pair (mid, rad) an operation returns contains the exact result for the extreme
 points of its operands' balls (exact rationals), also for entries below float64's normal range;
@@ -14,15 +14,15 @@ import flint
 import numpy as np
 import pytest
 
-from stiefelsym.ball import BallField, Balls, BallNum, working_precision
+from stiefelsym.backends.ball import BallField, Balls, BallNum, working_precision
 from stiefelsym.claims import Count, Rank, Size
-from stiefelsym.matrix import Mat
-from stiefelsym.methods import _flatten, call_claim
-from stiefelsym.midrad import MidRad, MidRadBackend, MidRadField
-from stiefelsym.native import one_blas_thread, quiet_numpy
-from stiefelsym.runner import run_one
+from stiefelsym.backends.matrix import Mat
+from stiefelsym.methods.fixed_size import _flatten, call_claim
+from stiefelsym.backends.midrad import MidRad, MidRadBackend, MidRadField
+from stiefelsym.backends.native import one_blas_thread, quiet_numpy
+from stiefelsym.run.runner import run_one
 from stiefelsym.scene import Scene
-from stiefelsym.speed import control_claim
+from stiefelsym.analyses.speed import control_claim
 
 SEED = 0
 
@@ -134,7 +134,7 @@ def test_the_cayley_chart_is_enclosed(m, r):
     """The deferred inverse of I + S (a verified solve) and the products with it contain the exact
     rational values at the same exact parameters (as the arb backend's test does)."""
     from test_ball import _cayley
-    from stiefelsym.fields import RationalField
+    from stiefelsym.backends.fields import RationalField
 
     class Replay(RationalField):
         def param(self, name, rng):
@@ -240,7 +240,7 @@ def test_a_corrupted_LA1_fails_at_the_midpoint_radius_rung(size):
 
 def test_an_overflow_goes_on_to_arb():
     """A midpoint beyond float64 is never enclosed by this rung: it raises, and arb takes over."""
-    from stiefelsym.fields import DegenerateError
+    from stiefelsym.backends.fields import DegenerateError
     be = _backend()
     big = MidRad(np.full((2, 2), 1e300), None, np.full((2, 2), 1e300))
     with pytest.raises(DegenerateError), np.errstate(all="ignore"):

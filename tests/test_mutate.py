@@ -16,12 +16,12 @@ from click.testing import CliRunner
 
 from stiefelsym import comm
 from stiefelsym.claims import Claim, Size, admissible, load_catalog
-from stiefelsym.cli_mutate import mutate as mutate_command
-from stiefelsym.mutate import (LETTER_SWAPS, OPERATORS, SEARCH_EXTRAS, Cell, MutantOutcome, MutationReport,
+from stiefelsym.cli.mutate import mutate as mutate_command
+from stiefelsym.analyses.mutate import (LETTER_SWAPS, OPERATORS, SEARCH_EXTRAS, Cell, MutantOutcome, MutationReport,
                                classify, correction_candidates, helper_functions, mutants, mutation_sizes,
                                notation_text, run_mutation, search_corrections)
-from stiefelsym.report import render_mutation_markdown, render_mutation_summary
-from stiefelsym.runner import run_one
+from stiefelsym.reports.report import render_mutation_markdown, render_mutation_summary
+from stiefelsym.run.runner import run_one
 
 
 # --------------------------------------------------------------------------- a hand-written claim
@@ -148,7 +148,7 @@ def test_a_mutated_definition_is_the_deep_copy_with_the_site_replaced():
     (every field and position), and the definition it came from is never changed."""
     import ast
     import copy
-    from stiefelsym.mutate import _bound_names, _function_ast, _function_sites, _mutated
+    from stiefelsym.analyses.mutate import _bound_names, _function_ast, _function_sites, _mutated
 
     defn, _ = _function_ast(toy_identities)
     before = ast.dump(defn, include_attributes=True)
@@ -547,14 +547,14 @@ def test_cli_bad_input_is_one_line_and_exit_2(args, message):
 
 
 def test_cli_exits_1_when_a_mutant_survives(monkeypatch, tmp_path):
-    import stiefelsym.mutate as engine
+    import stiefelsym.analyses.mutate as engine
 
     def fake(claims, **kw):
         base = MutantOutcome("c", None, "as printed", None, "", "", _cells(BASE), "baseline")
         o = classify(MutantOutcome("c", 7, "line 3: flip", 3, "sign", "", _cells(
             {((3, 2), "exact"): "fails", ((3, 2), "rational"): "checked", ((3, 1), "rational"): "checked",
              (None, "free"): "undecided"})), base)
-        from stiefelsym.mutate import ClaimMutation
+        from stiefelsym.analyses.mutate import ClaimMutation
         cm = ClaimMutation("c", ["c"], "", "id", [(3, 2), (3, 1)], ["exact", "rational", "free"], 1, base, [o])
         kw["on_result"](o)
         return MutationReport([cm])
@@ -598,7 +598,7 @@ def _erratum_results():
 
 
 def test_errata_section_reads_like_a_referees_report():
-    from stiefelsym.report import render_latex, render_markdown
+    from stiefelsym.reports.report import render_latex, render_markdown
     md = render_markdown(_erratum_results())
     errata = md[md.index("## Errata"):md.index("## Summary")]
     note = next(line for line in errata.splitlines() if line.startswith("**Note for the authors.**"))

@@ -1,12 +1,12 @@
 """`stiefelsym mutate --claims FILE`: the file is imported and traced in child processes
-(stiefelsym.userfile), and its claims are mutated, and corrected, on their graphs."""
+(stiefelsym.run.userfile), and its claims are mutated, and corrected, on their graphs."""
 import json
 import os
 from pathlib import Path
 
 from click.testing import CliRunner
 
-from stiefelsym.cli_mutate import mutate as mutate_command
+from stiefelsym.cli.mutate import mutate as mutate_command
 
 FILE = str(Path(__file__).resolve().parent / "claims_for_mutate.py")
 
@@ -69,7 +69,7 @@ def test_the_left_sides_of_a_graph_candidate_are_its_checks_without_their_right_
     a − b (also inside a list) is replaced by a."""
     from stiefelsym.ir import compile_claim
     from stiefelsym.ir.mutants import output_key
-    from stiefelsym.mutate import _graph_left_sides
+    from stiefelsym.analyses.mutate import _graph_left_sides
     from stiefelsym.scene import REALIZATIONS
     cons = REALIZATIONS["standard"]
     cons = (cons.name, cons.build)

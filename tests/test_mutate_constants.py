@@ -1,13 +1,13 @@
 """The checks of a mutant's run that no parameter entered are evaluated over Q once per function, size
-and seed, for its rational and its modular run alike (stiefelsym.methods.PointLoan.constants): the
+and seed, for its rational and its modular run alike (stiefelsym.methods.fixed_size.PointLoan.constants): the
 report of evaluating them every time; an evaluation kept for another function is caught."""
 from __future__ import annotations
 
 import pytest
 
-from stiefelsym import methods as M
+from stiefelsym.methods import fixed_size as M
 from stiefelsym.claims import Size, load_catalog
-from stiefelsym.mutate import run_mutation
+from stiefelsym.analyses.mutate import run_mutation
 
 
 def cells(report):

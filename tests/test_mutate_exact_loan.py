@@ -1,15 +1,15 @@
 """The symbolic method evaluates a mutant on the chart of the claim as printed and takes the values of
-the subgraphs the change does not reach (stiefelsym.methods.PointLoan.chart): every result the same as
+the subgraphs the change does not reach (stiefelsym.methods.fixed_size.PointLoan.chart): every result the same as
 on a chart of its own, the chart decided from the mutant's own looks at coordinates; a shared value
 that does not record again what its computation looked at is caught."""
 from __future__ import annotations
 
 import pytest
 
-from stiefelsym import methods as M
+from stiefelsym.methods import fixed_size as M
 from stiefelsym.claims import Size, load_catalog
-from stiefelsym.matrix import CoordinateTracker
-from stiefelsym.mutate import run_mutation
+from stiefelsym.backends.matrix import CoordinateTracker
+from stiefelsym.analyses.mutate import run_mutation
 
 #: claims on the equivariant chart (with and without a stated reason, a rank) and on the Cayley chart
 #: (eigenvalues a_i of A, entries), a few mutants each
@@ -55,7 +55,7 @@ def test_a_lent_chart_gives_the_results_of_a_chart_of_its_own(claims, fresh, mon
 
 def test_the_lent_chart_shares_the_values(claims, monkeypatch):
     """The mutants' runs take most of their symbolic products from the printed claim's run."""
-    from stiefelsym.polyfield import PolyBackend
+    from stiefelsym.backends.polyfield import PolyBackend
     count = [0]
     real = PolyBackend.matmul
 
@@ -80,7 +80,7 @@ def test_a_shared_value_that_does_not_record_its_looks_again_is_caught(claims, f
 def test_the_record_of_a_lent_chart_starts_empty():
     """A lent chart's record is the kept scene's record object (the shared matrices record into it),
     emptied: what the printed claim or an earlier mutant looked at is not seen."""
-    from stiefelsym.polyfield import SymbolicField
+    from stiefelsym.backends.polyfield import SymbolicField
     from stiefelsym.scene import Scene
     loan = M.PointLoan()
 

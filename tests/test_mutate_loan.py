@@ -1,5 +1,5 @@
 """The mutation analysis evaluates a mutant at the points of the claim as printed and recomputes only
-the nodes its change reaches (stiefelsym.methods.PointLoan): the same verdicts as fresh points, in
+the nodes its change reaches (stiefelsym.methods.fixed_size.PointLoan): the same verdicts as fresh points, in
 any order and any number of workers; a key that forgets part of a node is caught."""
 from __future__ import annotations
 
@@ -9,10 +9,10 @@ from fractions import Fraction
 import pytest
 
 from stiefelsym.claims import Size, load_catalog
-from stiefelsym.fields import RationalField
+from stiefelsym.backends.fields import RationalField
 from stiefelsym.ir import evaluate as ev
-from stiefelsym.mutate import run_mutation
-from stiefelsym.paired import PairField
+from stiefelsym.analyses.mutate import run_mutation
+from stiefelsym.backends.paired import PairField
 from stiefelsym.scene import Scene
 
 #: claims with flows, brackets, resolvents and an operator letter, a few mutants each
@@ -88,7 +88,7 @@ def test_a_lent_scene_draws_its_own_parameters_and_leaves_the_original_alone():
 def test_every_loan_starts_from_the_baselines_record_of_denominators(monkeypatch, restore):
     """What a mutant's degree markers meet (a new denominator, a new constant) is not seen by the next
     mutant; the negative control (no restore) shows that it would be."""
-    from stiefelsym import methods
+    from stiefelsym.methods import fixed_size as methods
     if not restore:
         monkeypatch.setattr(methods, "_restore_field", lambda f, state: None)
     loan = methods.PointLoan()
@@ -144,7 +144,7 @@ def test_the_exact_witness_taken_from_the_rational_run_is_that_of_a_one_point_ru
     """A refutation by the exact method attaches the witness of a one-point rational run; on lent points
     it is taken from the rational run of the same mutant at the same size (PointLoan.witnesses): the
     very witness the one-point run computes (compared here run by run), taken for most refutations."""
-    from stiefelsym import methods as M
+    from stiefelsym.methods import fixed_size as M
     real = M._rational_witness
     seen = {"memo": 0, "runs": 0}
 
@@ -165,7 +165,7 @@ def test_the_exact_witness_taken_from_the_rational_run_is_that_of_a_one_point_ru
 
 def test_a_witness_kept_for_another_function_is_not_taken():
     """Negative control: a kept witness is taken only for the function it was computed for (by identity)."""
-    from stiefelsym import methods as M
+    from stiefelsym.methods import fixed_size as M
     reg = load_catalog()
     claim = reg.get("neumann-lax")
     loan = M.PointLoan()

@@ -11,11 +11,11 @@ import os
 
 import pytest
 
-from stiefelsym import native
+from stiefelsym.backends import native
 from stiefelsym import scene as scene_mod
-from stiefelsym.fields import DegreeField, Dual, DualField, ErrNum, FloatField, ModularField, RationalField
-from stiefelsym.matrix import Mat, block
-from stiefelsym.methods import degree_bound, run_points
+from stiefelsym.backends.fields import DegreeField, Dual, DualField, ErrNum, FloatField, ModularField, RationalField
+from stiefelsym.backends.matrix import Mat, block
+from stiefelsym.methods.fixed_size import degree_bound, run_points
 from stiefelsym.scene import Scene
 
 from float_replay import assert_within_bounds, entries, replay_field
@@ -180,7 +180,7 @@ def _flow_claim(c_num, c_den):
 
 @pytest.mark.parametrize("method", ["modular", "rational", "float"])
 def test_an_entrywise_hamiltonian_is_differentiated_exactly(method):
-    from stiefelsym.methods import METHOD_RUNNERS
+    from stiefelsym.methods.fixed_size import METHOD_RUNNERS
     run = METHOD_RUNNERS[method]
     assert run(_flow_claim(1, 2), 3, 2, 0).verdict in ("checked", "numeric")
     assert run(_flow_claim(1, 3), 3, 2, 0).verdict == "fails"       # the wrong coefficient is refuted
@@ -375,7 +375,7 @@ def test_degree_markers_of_diagonals_and_constants_equal_the_entrywise_sum():
 def test_one_blas_thread_limits_and_restores():
     """The float method's BLAS setting (threadpoolctl) is one thread inside and the previous count
     after (also when the run raises)."""
-    from stiefelsym import blas
+    from stiefelsym.backends import blas
     ctl = blas.controller()
     if ctl is None or blas.blas_threads() is None:
         pytest.skip("threadpoolctl finds no BLAS here")
@@ -394,7 +394,7 @@ def test_importing_stiefelsym_leaves_the_environment_alone():
     """Importing the package sets no environment variable and no thread count (a subprocess)."""
     import subprocess
     import sys
-    code = ("import os; before = dict(os.environ); import stiefelsym, stiefelsym.native; "
+    code = ("import os; before = dict(os.environ); import stiefelsym, stiefelsym.backends.native; "
             "assert dict(os.environ) == before, set(os.environ) ^ set(before)")
     env = {k: v for k, v in os.environ.items() if not k.endswith("_NUM_THREADS")}
     subprocess.run([sys.executable, "-c", code], check=True, env=env)

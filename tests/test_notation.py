@@ -11,9 +11,9 @@ from stiefelsym.claims import Claim, Size, admissible, load_catalog
 from stiefelsym.ir import compile_claim
 from stiefelsym.ir.notation import changes_text, describe, diff, outputs, render
 from stiefelsym.latex import math_ok
-from stiefelsym.mutate import ClaimMutation, MutantOutcome, MutationReport, mutants, notation
-from stiefelsym.report import render_markdown, render_latex, render_mutation_markdown
-from stiefelsym.runner import graph_change, verify
+from stiefelsym.analyses.mutate import ClaimMutation, MutantOutcome, MutationReport, mutants, notation
+from stiefelsym.reports.report import render_markdown, render_latex, render_mutation_markdown
+from stiefelsym.run.runner import graph_change, verify
 from stiefelsym.scene import REALIZATIONS
 
 CONS = REALIZATIONS["standard"]
@@ -217,7 +217,7 @@ def test_mutation_report_prints_the_notation_first_and_the_source_after():
     md = render_mutation_markdown(rep)
     assert "- `c#3` in Lax: λA → −λA (source: line 7: flip the sign of the term `s.lam * s.A`)" in md
     assert md == render_mutation_markdown(MutationReport.from_json(json.loads(rep.dumps())))
-    from stiefelsym.report import _tex_mutant_text
+    from stiefelsym.reports.report import _tex_mutant_text
     tex = _tex_mutant_text(rep.to_json()["claims"][0]["mutants"][0])
     assert tex.startswith(r"in Lax: $\lambda A$ $\to$ $-\lambda A$ {\small (source: line 7:")
 
@@ -250,7 +250,7 @@ def test_a_hand_edited_change_of_a_correction_is_caught():
     """`stiefelsym check`: a correction's record carries its change of the graph, which the graphs of the
     claim and the correction give again; an edited one is rejected, the honest one passes."""
     from stiefelsym.claims import Registry
-    from stiefelsym.integrity import check_results
+    from stiefelsym.run.integrity import check_results
     c = Claim(id="wrong-order", paper=("prep",), kind="id", section="2", func=wrong_sign,
               sizes=admissible(3, n_min=3, r_min=2, r_max=2), expect="fails", erratum="an order")
 
@@ -291,7 +291,7 @@ def test_at_most_four_changes_are_listed():
 def test_one_change_below_many_places_is_found():
     """neumann2-kernel: negating a term of a matrix whose entries fill a big block matrix changes every
     block; the change is the term's sign, named once with its places."""
-    from stiefelsym.mutate import mutation_sizes, notation_size
+    from stiefelsym.analyses.mutate import mutation_sizes, notation_size
     c = load_catalog().get("neumann2-kernel")
     m = mutants(c)[3]
     assert "negate the term `P0 @ X.T - X @ P0.T`" in m.description

@@ -7,8 +7,8 @@ import pytest
 
 from stiefelsym import admissible
 from stiefelsym.claims import Claim, Size
-from stiefelsym.polyfield import SymbolicField
-from stiefelsym.runner import run_one
+from stiefelsym.backends.polyfield import SymbolicField
+from stiefelsym.run.runner import run_one
 from stiefelsym.scene import Scene
 
 
@@ -88,14 +88,14 @@ def test_operator_flow_negative_control(method):
 
 def _small_ring(monkeypatch, cap):
     """A fresh exact field whose flint ring holds only ``cap`` parameters: the rest are encoded."""
-    from stiefelsym import polyfield
+    from stiefelsym.backends import polyfield
     monkeypatch.setattr(polyfield, "MAX_VARS", cap)
     return SymbolicField()
 
 
 def _mat(f, rows):
     import numpy as np
-    from stiefelsym.matrix import Mat
+    from stiefelsym.backends.matrix import Mat
     a = np.empty((len(rows), len(rows[0])), dtype=object)
     for i, row in enumerate(rows):
         for j, x in enumerate(row):
@@ -165,7 +165,7 @@ def test_encoded_arithmetic_agrees_with_symengine(monkeypatch, seed):
 def test_operator_flow_with_encoded_coefficients(func, verdict):
     """At (6, 3) the operator's 120 coefficients and the chart's 12 parameters exceed the flint
     ring's 128: the coefficients are encoded, and the exact verdicts are those of the small sizes."""
-    from stiefelsym.methods import run_exact
+    from stiefelsym.methods.fixed_size import run_exact
     res = run_exact(_claim(func), 6, 3, 0)
     assert res.verdict == verdict, res.message
     f = SymbolicField()

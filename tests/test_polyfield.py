@@ -1,4 +1,4 @@
-"""The exact method's flint backend (stiefelsym.polyfield) against the symengine representation:
+"""The exact method's flint backend (stiefelsym.backends.polyfield) against the symengine representation:
 the same matrices, exact zero tests, cancellation, inverses, growing contexts, the fallback for
 entries flint cannot hold, and identical verdicts on claims."""
 from __future__ import annotations
@@ -10,13 +10,15 @@ from fractions import Fraction
 import pytest
 import symengine as se
 
-from stiefelsym import admissible, comm, native
+from stiefelsym import admissible, comm
+
+from stiefelsym.backends import native
 from stiefelsym.claims import Claim
-from stiefelsym.fields import DegenerateError, DualField, SymbolicBudget
-from stiefelsym.polyfield import SymbolicField
-from stiefelsym.matrix import Mat, block
-from stiefelsym.methods import run_exact
-from stiefelsym.polyfield import ObjMat, PolyBackend, PolyMat
+from stiefelsym.backends.fields import DegenerateError, DualField, SymbolicBudget
+from stiefelsym.backends.polyfield import SymbolicField
+from stiefelsym.backends.matrix import Mat, block
+from stiefelsym.methods.fixed_size import run_exact
+from stiefelsym.backends.polyfield import ObjMat, PolyBackend, PolyMat
 from stiefelsym.scene import Scene
 
 
@@ -86,7 +88,7 @@ def test_backend_is_used_and_agrees_with_symengine():
 def test_scalars_of_the_backend_stay_in_flint_and_agree_with_symengine():
     """Traces, pairings and entries are flint rational functions (_RF): sums, products, quotients and
     powers of them stay there, mixed with symengine they give the same value, and the zero test is exact."""
-    from stiefelsym.polyfield import _RF
+    from stiefelsym.backends.polyfield import _RF
     F, G = fields()
     x = [F.param(f"x{i}") for i in range(4)]
 
@@ -110,7 +112,7 @@ def test_scalars_of_the_backend_stay_in_flint_and_agree_with_symengine():
 def test_pairings_of_a_scene_stay_in_flint_and_decide_exactly():
     """<a, b> of the exact scene is a flint scalar (Field.pairing keeps it there, no trip through
     symengine), equal to -1/2 tr(ab) computed as a product and a trace, and a nonzero pairing is nonzero."""
-    from stiefelsym.polyfield import _RF
+    from stiefelsym.backends.polyfield import _RF
     F = SymbolicField()
     s = Scene(3, 2, F, chart="equivariant")
     a, b = s.generic("a", "n", "n"), s.generic("b", "n", "n")
@@ -126,7 +128,7 @@ def test_a_symbolic_solve_takes_flint_scalars_on_either_side():
     """SymbolicField.solve with flint scalars (_RF: traces, pairings) in the matrix and the right-hand side
     gives scalars, the solution of the system (before, symengine took an _RF for an empty matrix and every
     entry of the solution was a 0x0 matrix: the exact metric Dirac flow at (3,1) with the reflection S)."""
-    from stiefelsym.polyfield import _RF
+    from stiefelsym.backends.polyfield import _RF
     F, G = fields()
     x = [F.param(f"x{i}") for i in range(4)]
 
@@ -315,7 +317,7 @@ def test_sparse_entrywise_operations_and_products_agree_with_numpy():
     outer products: on random sparse polynomial matrices (zeros, ones, outer products, zero rows)
     they give numpy's entrywise results exactly."""
     import numpy as np
-    from stiefelsym import polyfield as pf
+    from stiefelsym.backends import polyfield as pf
     R = SymbolicField().poly_ring()
     xs = [R.var(se.Symbol(f"t{i}")) for i in range(4)]
     rng = random.Random(11)
@@ -350,7 +352,7 @@ def _printed_value_errors() -> int:
     """How many of a set of random rational functions print (PolyRing.text) as a different value:
     the text is read back by symengine and compared with the expression it came from at random
     rational points."""
-    from stiefelsym.polyfield import PolyRing
+    from stiefelsym.backends.polyfield import PolyRing
     R = PolyRing()
     xs = [se.Symbol(f"x{i}") for i in range(4)]
     rng = random.Random(11)
@@ -376,7 +378,7 @@ def test_an_exact_residual_prints_its_own_value():
 
 
 def test_a_printer_that_loses_a_sign_is_caught(monkeypatch):
-    from stiefelsym.polyfield import PolyRing
+    from stiefelsym.backends.polyfield import PolyRing
     real = PolyRing.text
 
     def wrong(self, r):
@@ -447,7 +449,7 @@ def test_a_row_read_as_a_block_is_not_taken_for_a_column(method):
     """|first row of X| = 1 holds at r = n only (the columns of X are orthonormal, not its rows): a block
     read natively must give the row, whatever the method."""
     from stiefelsym.claims import Size
-    from stiefelsym.runner import run_one
+    from stiefelsym.run.runner import run_one
     c = Claim(id="first-row-unit", paper=(), kind="id", section="test", func=first_row_unit, sizes=admissible(4))
     assert run_one(c, Size(3, 2), method, 0).verdict == "fails"
     assert run_one(c, Size(3, 3), method, 0).verdict in ("proved", "checked", "numeric")
@@ -457,7 +459,7 @@ def test_a_rank_of_scalars_kept_in_flint():
     """A rank statement of a matrix built from flint scalars (the Jacobian of the constraints' brackets)
     is decided by the symbolic rank helpers, which read its entries as symengine expressions."""
     from stiefelsym.claims import load_catalog
-    from stiefelsym.methods import run_exact
+    from stiefelsym.methods.fixed_size import run_exact
     from stiefelsym import Rank
 
     def constraint_brackets_invertible(s):
@@ -469,7 +471,7 @@ def test_a_rank_of_scalars_kept_in_flint():
 def test_a_minor_of_entries_is_decided_in_flint():
     """Entries, their products and a matrix built from them stay flint scalars: a true statement about a
     minor of X is proved, a false one (the same minor said to be 1) fails, under the exact method."""
-    from stiefelsym.methods import run_exact
+    from stiefelsym.methods.fixed_size import run_exact
 
     def minors(s):
         X = s.X
@@ -493,7 +495,7 @@ def test_flint_scalars_cannot_be_steered(method):
     parameter on the left of a flint scalar, a power of an entry.  None passes under any method."""
     from stiefelsym.claims import Size
     from stiefelsym.results import PASSING
-    from stiefelsym.runner import run_one
+    from stiefelsym.run.runner import run_one
 
     def div_zero(s):
         z = s.tr(s.X.T @ s.X - s.Ir)

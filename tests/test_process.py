@@ -14,9 +14,11 @@ from pathlib import Path
 
 import pytest
 
-from stiefelsym import cli, runner
+from stiefelsym import cli
+
+from stiefelsym.run import runner
 from stiefelsym.claims import Claim, Count, Rank, Size, admissible
-from stiefelsym.pool import GIB, WorkerPool
+from stiefelsym.run.pool import GIB, WorkerPool
 from stiefelsym.results import Result, load_results, write_atomic
 
 needs_fork = pytest.mark.skipif(not hasattr(os, "fork"), reason="workers need os.fork")
@@ -537,7 +539,7 @@ def test_mutate_is_loaded_only_when_asked_for(run, monkeypatch, tmp_path):
 def test_list_does_not_import_the_mutate_command(tmp_path):
     code = ("import sys\nfrom stiefelsym.cli import main\n"
             "code = main(['list'], standalone_mode=False)\n"
-            "print('MUTATE-LOADED' if 'stiefelsym.cli_mutate' in sys.modules else 'MUTATE-NOT-LOADED',"
+            "print('MUTATE-LOADED' if 'stiefelsym.cli.mutate' in sys.modules else 'MUTATE-NOT-LOADED',"
             " file=sys.stderr)\n")
     proc = subprocess.run([sys.executable, "-c", code], cwd=Path(__file__).resolve().parents[1], env=_env(),
                           capture_output=True, text=True, timeout=120)
@@ -598,7 +600,7 @@ def _abort(*args, **kwargs):
 
 
 def _attempt_in_a_worker(task):
-    from stiefelsym.methods import run_exact_isolated
+    from stiefelsym.methods.fixed_size import run_exact_isolated
     res = run_exact_isolated(_claim("ok", _ok, sizes=admissible(n_max=6)), 6, 2, 0, time_budget=20,
                              in_worker=True)
     return os.getpid(), res.verdict, res.message
@@ -606,7 +608,7 @@ def _attempt_in_a_worker(task):
 
 @needs_fork
 def test_small_symbolic_attempts_stay_in_the_worker_and_heavy_ones_are_forked():
-    from stiefelsym import methods
+    from stiefelsym.methods import fixed_size as methods
     ok = _claim("ok", _ok, sizes=admissible(n_max=6))
     assert not methods.isolates(ok, 4, 2, in_worker=True)
     assert methods.isolates(ok, methods.ISOLATE_MIN_N, 2, in_worker=True)
@@ -616,7 +618,7 @@ def test_small_symbolic_attempts_stay_in_the_worker_and_heavy_ones_are_forked():
 @needs_fork
 @pytest.mark.parametrize("dies", [_hoard, _abort], ids=["MemoryError", "SIGABRT"])
 def test_a_symbolic_attempt_that_exceeds_memory_in_a_worker_leaves_the_worker_alive(monkeypatch, dies):
-    from stiefelsym import methods
+    from stiefelsym.methods import fixed_size as methods
     monkeypatch.setattr(methods, "run_exact", dies)
     with WorkerPool(_attempt_in_a_worker, workers=1, timeout=60, memory=3 * GIB) as pool:
         outcomes = [o for _, o in pool.run(["first", "second"])]
@@ -631,7 +633,7 @@ def test_a_symbolic_attempt_that_exceeds_memory_in_a_worker_leaves_the_worker_al
 @needs_fork
 @pytest.mark.parametrize("dies", [_hoard, _abort], ids=["MemoryError", "SIGABRT"])
 def test_auto_falls_back_to_modular_when_the_symbolic_attempt_dies(monkeypatch, dies):
-    from stiefelsym import methods
+    from stiefelsym.methods import fixed_size as methods
     monkeypatch.setattr(methods, "run_exact", dies)
     claims = [_claim("ok", _ok, sizes=admissible(n_max=6)), _claim("false", _falsely_orthonormal,
                                                                     sizes=admissible(n_max=6))]
@@ -700,7 +702,7 @@ def test_an_isolated_attempt_dies_with_the_process_that_forked_it():
     if pid == 0:       # stands for a worker (or the command line) killed while its attempt runs
         try:
             os.close(r)
-            from stiefelsym.isolate import run_isolated
+            from stiefelsym.run.isolate import run_isolated
 
             def attempt():
                 os.write(w, f"{os.getpid()}\n".encode())

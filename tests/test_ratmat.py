@@ -1,4 +1,4 @@
-"""Matrices of the exact backend whose entries carry their own denominators (stiefelsym.ratmat)
+"""Matrices of the exact backend whose entries carry their own denominators (stiefelsym.backends.ratmat)
 against the same operations on symengine entries: sums over the lcm of two denominators, products,
 scalar multiples, traces, pairings, blocks; the exact zero test; corrupted results rejected."""
 from __future__ import annotations
@@ -7,11 +7,11 @@ import numpy as np
 import pytest
 import symengine as se
 
-from stiefelsym import native
-from stiefelsym import ratmat as rm
-from stiefelsym.polyfield import SymbolicField
-from stiefelsym.polyfield import PolyMat
-from stiefelsym.ratmat import RatMat
+from stiefelsym.backends import native
+from stiefelsym.backends import ratmat as rm
+from stiefelsym.backends.polyfield import SymbolicField
+from stiefelsym.backends.polyfield import PolyMat
+from stiefelsym.backends.ratmat import RatMat
 
 a, b, c, x, y = se.symbols("a b c x y")
 
@@ -132,7 +132,7 @@ def test_a_product_cancels_the_factors_of_each_denominator():
 def test_the_backend_dispatches_entrywise_matrices():
     """PolyBackend's operations on a RatMat: entrywise in flint, generic (symengine) beside a
     generic operand or a constant flint cannot hold, the inverse over one denominator."""
-    from stiefelsym.polyfield import ObjMat
+    from stiefelsym.backends.polyfield import ObjMat
     F, be = setup()
     A, B = ratmat(be, A_ROWS), ratmat(be, B_ROWS)
     EA, EB = objs(A_ROWS), objs(B_ROWS)

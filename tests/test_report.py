@@ -8,7 +8,7 @@ import xml.etree.ElementTree as ET
 
 import pytest
 
-from stiefelsym.report import (case_name, render_junit, render_latex, render_markdown,
+from stiefelsym.reports.report import (case_name, render_junit, render_latex, render_markdown,
                                render_mutation_markdown, render_summary)
 from stiefelsym.results import CheckOutcome, Result, dump_results, load_results
 
@@ -245,9 +245,9 @@ def test_latex_report_of_real_catalog_runs_compiles(tmp_path):
     if shutil.which("pdflatex") is None:
         pytest.skip("pdflatex is not installed (Debian: texlive-latex-base texlive-latex-recommended)")
     from stiefelsym.claims import Size, load_catalog
-    from stiefelsym.runner import verify
+    from stiefelsym.run.runner import verify
     cat = load_catalog()
-    from stiefelsym.witness import attach_small_witnesses
+    from stiefelsym.methods.witness import attach_small_witnesses
     ids = ["euclidean-invariance", "normal-flow", "jensen-invariance", "invariant-metrics",
            "adjoint-orbit-regularity", "metric-flow", "double-neumann-dual-lax"]
     results = verify([cat.get(i) for i in ids], sizes=[Size(4, 1), Size(4, 2), Size(3, 2)],
@@ -272,7 +272,7 @@ def test_latex_report_of_real_catalog_runs_compiles(tmp_path):
 
 # --------------------------------------------------------------------------- corrections across sizes
 
-from stiefelsym.report import correction_summary, dimension_checks, group_by_claim  # noqa: E402
+from stiefelsym.reports.report import correction_summary, dimension_checks, group_by_claim  # noqa: E402
 
 ALL12 = [(n, r) for n in range(1, 6) for r in range(1, n + 1)][:12] + []
 
@@ -431,7 +431,7 @@ def test_mutation_section_in_latex_compiles(results, tmp_path):
 
 
 def test_kill_rate_is_never_rounded_up_to_100_percent():
-    from stiefelsym.report import kill_rate
+    from stiefelsym.reports.report import kill_rate
     assert kill_rate({"total": 1001, "killed": 1000, "equivalent": 0}) == "99.9%"
     assert kill_rate({"total": 5, "killed": 4, "equivalent": 1}) == "100%"
     assert kill_rate({"total": 5, "killed": 0, "equivalent": 5}) == "–"
@@ -451,7 +451,7 @@ def test_the_dimension_free_method_is_named_not_by_its_identifier():
 
 
 def test_every_method_named_in_a_verdict_is_explained():
-    from stiefelsym.report import METHOD_MEANING
+    from stiefelsym.reports.report import METHOD_MEANING
     rs = [result("prep", 4, 2, "modular", "checked"), result("prep", 3, 1, "exact", "proved")]
     md, tex = render_markdown(rs), render_latex(rs)
     for m in ("exact", "modular", "rational", "float", "ball", "free"):
@@ -474,7 +474,7 @@ def test_a_statement_that_something_does_not_hold_found_identically_zero_says_so
 
 def test_the_headline_counts_the_claims_proved_at_particular_r_by_their_r():
     """The headline's count of dimension-free proofs splits by scope, and the parts add up."""
-    from stiefelsym.report import headline
+    from stiefelsym.reports.report import headline
     cert = "cofactor certificate of 1 residual entry (for every n at r = n, the only r the claim is stated for: it uses X X^T = I_n)"
     union = "cofactor certificates of cases (for every n at r = 1 and at r = n, the sizes the claim is stated for: 2 cases)"
     rs = [result("a", None, None, "free", "proved"), result("b", None, None, "free", "proved", certificate=cert),
@@ -488,7 +488,7 @@ def test_a_proof_in_the_metric_realization_states_what_it_assumes_in_words():
     """The referee's verdict line and the certificate line of a proof in the metric realization say that A is
     positive definite, Π = 0 and Λ by Sylvester uniqueness, with Λ for the engine's name Lambda:1; a proof
     with no assumption says none."""
-    from stiefelsym.report import certificate_summary
+    from stiefelsym.reports.report import certificate_summary
     data = {"summary": {"entries": 1, "terms": 2, "hypotheses": ["XtX", "rho:Lambda:1"], "realization": "metric",
                         "assumes": ["A symmetric positive definite",
                                     "Lambda:1 is the solution of rho:Lambda:1 = 0, unique and symmetric "
@@ -506,14 +506,14 @@ def test_a_proof_in_the_metric_realization_states_what_it_assumes_in_words():
 
 
 def test_a_failing_checks_status_is_in_words():
-    from stiefelsym.report import check_line
+    from stiefelsym.reports.report import check_line
     assert check_line(CheckOutcome("regular iff n <= 2r+1", "count-mismatch", "1 (paper: 0)")) \
         == "check regular iff n <= 2r+1: count not as printed, 1 (paper: 0)"
     assert check_line(CheckOutcome("rank ad_Phi", "rank", "= 4")) == "check rank ad_Φ: rank as printed, = 4"
 
 
 def test_the_referees_verdict_line_gives_the_reason_for_undecided_in_words():
-    from stiefelsym.report import _brief_reason
+    from stiefelsym.reports.report import _brief_reason
     assert _brief_reason("needs coordinates (fixed n, r): a constant matrix on R^n (e.g. E_1); decided at "
                          "fixed sizes") == "needs fixed n, r: a constant matrix on R^n"
     assert _brief_reason("4 residual entries have a nonzero normal form; e.g. ...") \
@@ -531,7 +531,7 @@ def test_the_summary_table_says_where_a_proof_at_particular_r_holds():
 def test_the_headline_and_the_summary_table_count_the_same_claims_as_holding():
     """A claim that no method decided at one computed size is not said to hold at every size computed: the
     headline names it, and its count agrees with the summary table's column."""
-    from stiefelsym.report import headline, section_counts
+    from stiefelsym.reports.report import headline, section_counts
     rs = [result("a", 3, 1, "exact", "proved"), result("a", 6, 1, "modular", "undecided", expected=True),
           result("b", 3, 1, "exact", "proved"), result("b", 6, 1, "modular", "checked")]
     claims = group_by_claim(rs)

@@ -1,4 +1,4 @@
-"""A claims file is traced in a spawned interpreter that knows nothing of the run (stiefelsym.sandbox): no
+"""A claims file is traced in a spawned interpreter that knows nothing of the run (stiefelsym.run.sandbox): no
 command line, no environment, no parsed options; in namespaces it sees no process of the run and writes
 nowhere but a private /tmp.  Without namespaces (STIEFELSYM_CONFINE=spawn, or a platform without them) every
 record of the file says so."""
@@ -14,8 +14,8 @@ from pathlib import Path
 
 import pytest
 
-from stiefelsym.sandbox import CONFINE_ENV, NOTES, SPAWN
-from stiefelsym.userfile import load_claims_isolated
+from stiefelsym.run.sandbox import CONFINE_ENV, NOTES, SPAWN
+from stiefelsym.run.userfile import load_claims_isolated
 
 ROOT = Path(__file__).resolve().parents[1]
 READ = ROOT / "tests" / "adversary" / "sandbox_run_read.py"
@@ -24,7 +24,7 @@ WAYS = ("parent", "processes", "environ", "objects", "argv")
 
 
 def _namespaces() -> bool:
-    from stiefelsym.sandbox import namespaces_available
+    from stiefelsym.run.sandbox import namespaces_available
     return namespaces_available()
 
 
@@ -194,7 +194,7 @@ def test_the_first_phase_knows_no_size_and_the_second_only_what_needs_one(tmp_pa
 def test_a_file_cannot_ask_for_the_fallback(tmp_path, monkeypatch, body):
     """The confinement line is written before the file runs: a file that dies, exits with the setup's status
     or writes a line of its own is an error of the file, and the namespaces stay in use for the next file."""
-    import stiefelsym.sandbox as sandbox
+    import stiefelsym.run.sandbox as sandbox
     from stiefelsym.claims import CatalogError
     monkeypatch.setattr(sandbox, "_available", {})
     bad = tmp_path / "bad.py"
@@ -220,7 +220,7 @@ def test_the_second_phase_adds_only_what_it_was_asked_for():
     """What the second interpreter sends may add rows for the sizes it was asked about and graphs of the
     functions it was asked to trace; an answer about another claim, another function or a graph with symbolic
     sizes is refused, and a row or a graph the first phase had is kept."""
-    from stiefelsym.userfile import WireError, _merge, _second_phase
+    from stiefelsym.run.userfile import WireError, _merge, _second_phase
     claims = [{"id": "a", "sizes": {"admits": [[3, 2, True], [4, 2, False]], "list": [[3, 2]], "where": False},
                "graphs": [[None, {"error": ["TraceRefused", "needs a number"], "at": None}], [[3, 2], {"ops": []}]],
                "corrections": [], "fails_at": [[3, 2, False]]},
@@ -249,7 +249,7 @@ def test_the_second_phase_adds_only_what_it_was_asked_for():
 def test_a_file_whose_claims_have_graphs_of_symbolic_sizes_is_traced_once(tmp_path, monkeypatch):
     """Sizes beyond the first phase's tables need no second interpreter when the statement is bounds only and
     every function has a graph of symbolic sizes; a claim that reads its size as a number needs one."""
-    import stiefelsym.sandbox as sandbox
+    import stiefelsym.run.sandbox as sandbox
     calls = []
     real = sandbox.run
 

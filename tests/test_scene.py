@@ -3,8 +3,8 @@ import random
 
 import pytest
 
-from stiefelsym.fields import ModularField, RationalField
-from stiefelsym.polyfield import SymbolicField
+from stiefelsym.backends.fields import ModularField, RationalField
+from stiefelsym.backends.polyfield import SymbolicField
 from stiefelsym.scene import Scene, SizeError
 
 SIZES = [(2, 1), (3, 2), (4, 2), (3, 3)]
@@ -131,7 +131,7 @@ def test_metric_closed_form_dirac_flow_is_the_solved_one(n, r, field, monkeypatc
 def test_metric_flow_is_proved_in_the_reduced_chart_and_a_corrupted_one_fails():
     from stiefelsym import admissible
     from stiefelsym.claims import Claim, Size
-    from stiefelsym.runner import run_one
+    from stiefelsym.run.runner import run_one
 
     def flow(s, sign):
         H = lambda t: t.tr(t.P.T @ t.Ainv @ t.P) * t.q(1, 2)  # noqa: E731

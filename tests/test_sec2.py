@@ -2,8 +2,8 @@
 import pytest
 
 from stiefelsym import Count, Inverse, Rank, comm
-from stiefelsym.free_method import run_free
-from stiefelsym.methods import run_exact, run_points
+from stiefelsym.methods.dimension_free import run_free
+from stiefelsym.methods.fixed_size import run_exact, run_points
 
 import stiefelsym.proofs.sec2_hamiltonian_flows as sec2
 

@@ -4,8 +4,8 @@ import pytest
 from stiefelsym.proofs import sec3_geodesic_flows as g
 from stiefelsym import Rank, admissible
 from stiefelsym.claims import Claim, load_catalog
-from stiefelsym.free_method import run_free
-from stiefelsym.methods import run_exact, run_points
+from stiefelsym.methods.dimension_free import run_free
+from stiefelsym.methods.fixed_size import run_exact, run_points
 
 
 def corrupted(cid, func, **kw):

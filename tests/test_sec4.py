@@ -7,9 +7,9 @@ import pytest
 
 from stiefelsym import Count, comm, twisted
 from stiefelsym.claims import Size
-from stiefelsym.free_method import run_free
-from stiefelsym.methods import run_exact, run_points
-from stiefelsym.runner import run_one
+from stiefelsym.methods.dimension_free import run_free
+from stiefelsym.methods.fixed_size import run_exact, run_points
+from stiefelsym.run.runner import run_one
 
 import stiefelsym.proofs.sec4_integrability as sec4
 

@@ -4,8 +4,8 @@ controls; for the Lax pair, the commutator in the other order)."""
 import pytest
 
 from stiefelsym import comm
-from stiefelsym.free_method import run_free
-from stiefelsym.methods import run_exact, run_points
+from stiefelsym.methods.dimension_free import run_free
+from stiefelsym.methods.fixed_size import run_exact, run_points
 
 import stiefelsym.proofs.sec5_neumann as sec5
 

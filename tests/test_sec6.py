@@ -10,8 +10,8 @@ import pytest
 from stiefelsym import Rank as B_Rank
 from stiefelsym import comm, twisted
 from stiefelsym import brackets as B
-from stiefelsym.free_method import run_free
-from stiefelsym.methods import run_exact, run_points
+from stiefelsym.methods.dimension_free import run_free
+from stiefelsym.methods.fixed_size import run_exact, run_points
 
 import stiefelsym.proofs.sec6_compatible_brackets as sec6
 

@@ -8,8 +8,8 @@ from fractions import Fraction
 import pytest
 
 from stiefelsym import Rank
-from stiefelsym.free_method import run_free
-from stiefelsym.methods import run_exact, run_points
+from stiefelsym.methods.dimension_free import run_free
+from stiefelsym.methods.fixed_size import run_exact, run_points
 
 import stiefelsym.proofs.sec7_grassmannians as sec7
 from stiefelsym.proofs.sec5_neumann import H_neumann_euclidean, H_neumann_normal

@@ -9,8 +9,8 @@ from math import factorial
 import pytest
 
 from stiefelsym import Count, Rank, block, comm, twisted
-from stiefelsym.free_method import run_free
-from stiefelsym.methods import run_exact, run_points
+from stiefelsym.methods.dimension_free import run_free
+from stiefelsym.methods.fixed_size import run_exact, run_points
 
 import stiefelsym.proofs.sec7_grassmannians as sec7
 import stiefelsym.proofs.sec8_dual_lax_pair as sec8

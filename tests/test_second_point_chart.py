@@ -15,9 +15,9 @@ import pytest
 import stiefelsym.proofs.app2_double_coupled_complex as a
 from stiefelsym import admissible
 from stiefelsym.claims import Claim
-from stiefelsym.fields import ModularField
-from stiefelsym.methods import run_exact
-from stiefelsym.polyfield import SymbolicField
+from stiefelsym.backends.fields import ModularField
+from stiefelsym.methods.fixed_size import run_exact
+from stiefelsym.backends.polyfield import SymbolicField
 from stiefelsym.scene import Scene
 from stiefelsym.systems import (_closed_form_pairs_flow, coupled_point, hamiltonian_flow, stiefel_pairs_flow,
                                 symmetric_entries)

@@ -2,7 +2,7 @@
 size it speaks of, and a list is never shortened to an ellipsis."""
 import pytest
 
-from stiefelsym.report import format_sizes
+from stiefelsym.reports.report import format_sizes
 from stiefelsym.sizerules import _atoms, fails_holds_text, rule
 
 SIZES = [(n, r) for n in range(1, 7) for r in range(1, n + 1)]

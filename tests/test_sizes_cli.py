@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from stiefelsym import runner
+from stiefelsym.run import runner
 from stiefelsym.claims import Claim, Size, SizeSpec, admissible
 from stiefelsym.scene import SizeError
 

@@ -8,12 +8,12 @@ import pytest
 
 from stiefelsym import Count, Rank, admissible
 from stiefelsym.claims import Claim, Size
-from stiefelsym.fields import (PRIME_HIGH, PRIME_LOW, PRIMES_IN_RANGE_LOWER, ConstantDegenerate, ErrNum,
+from stiefelsym.backends.fields import (PRIME_HIGH, PRIME_LOW, PRIMES_IN_RANGE_LOWER, ConstantDegenerate, ErrNum,
                                FloatField, ModularField, primes_in_range_lower_bound,
                                random_prime)
-from stiefelsym.methods import (POINTS_CAP, POINTS_TARGET, _per_point_bound, _points_needed, _prime_field,
+from stiefelsym.methods.fixed_size import (POINTS_CAP, POINTS_TARGET, _per_point_bound, _points_needed, _prime_field,
                                 degree_bound, draw_key, run_exact, run_float, run_points)
-from stiefelsym.runner import run_one
+from stiefelsym.run.runner import run_one
 
 PASSING = ("proved", "checked", "numeric")
 
@@ -98,7 +98,7 @@ def test_the_draws_follow_the_seed_and_the_claims_graph():
 def test_a_prime_dividing_a_constant_of_the_claim_is_redrawn(monkeypatch):
     """The redraw itself: when the first draw of every point is the prime 2^61 - 1, a claim with the
     constant 2^61 - 1 has that prime redrawn (the constant would vanish mod p) and fails."""
-    import stiefelsym.methods as methods
+    import stiefelsym.methods.fixed_size as methods
     drawn = methods._prime_field
 
     def first_mersenne(key, t, attempt):

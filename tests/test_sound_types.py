@@ -9,14 +9,14 @@ import random
 import numpy as np
 import pytest
 
-from stiefelsym.methods import EXACT_CAYLEY_MAX_N
+from stiefelsym.methods.fixed_size import EXACT_CAYLEY_MAX_N
 import symengine as se
 
 from stiefelsym import Mat, admissible, block
 from stiefelsym.claims import Claim, Size
-from stiefelsym.fields import RationalField
-from stiefelsym.matrix import NeedsCoordinates
-from stiefelsym.runner import run_one
+from stiefelsym.backends.fields import RationalField
+from stiefelsym.backends.matrix import NeedsCoordinates
+from stiefelsym.run.runner import run_one
 from stiefelsym.scene import Scene, param_name
 
 PASSING = ("proved", "checked", "numeric")
@@ -266,7 +266,7 @@ def operator_named_like_a(s):
 
 def tracker_swapped(s):
     """False: X = (I; 0), hiding the entry reads by swapping the record."""
-    from stiefelsym.matrix import CoordinateTracker
+    from stiefelsym.backends.matrix import CoordinateTracker
     residual = s.X[0, 0] - s.q(1)
     s.tracker = CoordinateTracker()
     return {"X_11": residual}
@@ -509,7 +509,7 @@ def _frozen_float(s):
 @pytest.mark.parametrize("method, func", [("modular", _frozen_entry), ("rational", _frozen_entry),
                                           ("float", _frozen_float)])
 def test_a_claim_that_reads_the_sampled_values_is_refused_by_the_structural_pass(method, func):
-    from stiefelsym.runner import run_one
+    from stiefelsym.run.runner import run_one
     c = Claim(id="frozen", paper=("t",), kind="id", section="t", func=func, sizes=admissible(4))
     res = run_one(c, Size(4, 2), method, 0)
     assert res.verdict == "error", (res.verdict, res.message)

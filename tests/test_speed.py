@@ -5,7 +5,7 @@ import json
 
 import pytest
 
-from stiefelsym import speed as sp
+from stiefelsym.analyses import speed as sp
 
 
 @pytest.mark.parametrize("cid", ["neumann-flow", "neumann-lax", "neumann-dual-lax-normal", "momentum-maps-poisson"])
@@ -97,7 +97,7 @@ def test_committed_report_has_no_residual_over_its_bound():
     assert rows and not [r for r in rows if r["judgement"].startswith("WRONG")]
     assert not [r for r in rows if r["truth"] == "true" and r["verdict"] == "fails"]
     assert not [r for r in rows if r["truth"] == "false" and r["verdict"] in ("numeric", "checked", "proved")]
-    from stiefelsym.hard import HARD_CASES
+    from stiefelsym.methods.hard import HARD_CASES
     at200 = {r["case"] for r in rows if r["n"] == 200}
     assert all(f"n = 200 + {case}" in at200 for case in HARD_CASES), sorted(at200)
     sizes = {(r["n"], r["r"]) for r in rows}
@@ -168,7 +168,7 @@ def test_overflow_escalates_and_keeps_the_bound(catalog):
 
 
 def test_every_hard_case_rewrites_some_parameter(catalog):
-    from stiefelsym.hard import HARD_CASES
+    from stiefelsym.methods.hard import HARD_CASES
     for case in HARD_CASES:
         touched = []
         for cid in ("neumann-lax", "manakov-lax"):

@@ -10,8 +10,8 @@ from pathlib import Path
 
 import pytest
 
-from stiefelsym import tables
-from stiefelsym.dimensions import exact
+from stiefelsym.reports import tables
+from stiefelsym.methods.dimensions import exact
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -170,7 +170,7 @@ def test_the_latex_compiles_on_its_own(run, tmp_path):
 def test_tables_text_prints_inequalities_and_squares_in_the_default_font():
     """In the default (OT1) text font a bare < prints as ¡ and ² needs a bitmap font: the tables' words set
     them in math; the standalone wrapper asks for no font package whose glyphs are bitmaps here."""
-    from stiefelsym.tables import STANDALONE, _tex, _tex_title
+    from stiefelsym.reports.tables import STANDALONE, _tex, _tex_title
     assert _tex("r = 1 and n <= 2 (2l = n² - n), r >= 3, a < b") == \
         r"r = 1 and n $\le$ 2 (2l = n$^2$ - n), r $\ge$ 3, a $<$ b"
     assert _tex_title("§2–§4") == r"\ensuremath{\S}2--\ensuremath{\S}4"

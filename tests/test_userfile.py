@@ -1,4 +1,4 @@
-"""A user's claims file runs in child processes only (stiefelsym.userfile): what comes back is pure data."""
+"""A user's claims file runs in child processes only (stiefelsym.run.userfile): what comes back is pure data."""
 import os
 import subprocess
 import sys
@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 from stiefelsym.ir.graph import Named, Ref, Size
-from stiefelsym.userfile import NoGraph, WireError, _enc, _loads, _value, load_claims_isolated
+from stiefelsym.run.userfile import NoGraph, WireError, _enc, _loads, _value, load_claims_isolated
 
 ROOT = Path(__file__).resolve().parents[1]
 ADV = ROOT / "tests" / "adversary"

@@ -10,8 +10,8 @@ from pathlib import Path
 import pytest
 
 from stiefelsym.claims import load_catalog
-from stiefelsym.witness import decoded, encoded, small_witness
-from stiefelsym.witness_scripts import run_script, script_text, template, template_check
+from stiefelsym.methods.witness import decoded, encoded, small_witness
+from stiefelsym.methods.witness_scripts import run_script, script_text, template, template_check
 
 ROOT = Path(__file__).resolve().parents[1]
 REPORTS = ROOT / "reports"
@@ -58,7 +58,7 @@ def test_the_script_confirms_the_report_and_a_wrong_one_does_not(witness):
 
 
 def test_a_template_whose_correction_is_wrong_is_caught(witness, monkeypatch):
-    import stiefelsym.witness_scripts as ws
+    import stiefelsym.methods.witness_scripts as ws
     body = template(CID).replace("+ Y * Pi", "- Y * Pi")
     monkeypatch.setattr(ws, "template", lambda cid: body)
     status, out = run_script(ws.script_text(CID, "", 1, 1, encoded(witness)))
@@ -88,9 +88,9 @@ def test_the_integrity_check_recomputes_the_small_witness():
     """A hand-edited small witness (another point, another value) is caught by `stiefelsym check`;
     the honest record passes."""
     from stiefelsym.claims import Size
-    from stiefelsym.integrity import check_results
-    from stiefelsym.runner import verify
-    from stiefelsym.witness import attach_small_witnesses
+    from stiefelsym.run.integrity import check_results
+    from stiefelsym.run.runner import verify
+    from stiefelsym.methods.witness import attach_small_witnesses
     cat = load_catalog()
     claim = cat.get(CID)
     res = [r for r in verify([claim], sizes=[Size(1, 1)], methods=("exact",), seed=0) if not r.variant]

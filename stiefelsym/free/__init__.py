@@ -8,12 +8,12 @@ certified as a combination of the hypotheses (:meth:`RewritingSystem.certify`),
 written as data by :mod:`.certificates` and re-checked by
 :mod:`stiefelsym.certificate_check`.
 """
-from .algebra import Letter, NCPoly, letter_pair, skew_letter, substitute, symmetric_letter, trace
-from .rewriting import (Certificate, CertificateError, CertTerm, Cofactor, CompletionResult, CriticalPair, Hypothesis,
+from stiefelsym.free.algebra import Letter, NCPoly, letter_pair, skew_letter, substitute, symmetric_letter, trace
+from stiefelsym.free.rewriting import (Certificate, CertificateError, CertTerm, Cofactor, CompletionResult, CriticalPair, Hypothesis,
                         Order, Reduction, RewritingError, RewritingSystem, Rule, complete, critical_pairs,
                         is_confluent)
-from .scene import FreeField, FreeScene, FreeSolveError, NeedsCoordinates, standard_system
-from .traces import gradient
+from stiefelsym.free.scene import FreeField, FreeScene, FreeSolveError, NeedsCoordinates, standard_system
+from stiefelsym.free.traces import gradient
 
 __all__ = [
     "Letter", "NCPoly", "letter_pair", "skew_letter", "symmetric_letter", "substitute", "trace",

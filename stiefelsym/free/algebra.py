@@ -20,8 +20,8 @@ from typing import Any, Iterable, Iterator, Mapping
 
 import symengine as se
 
-from ..fields import Dual
-from ..matrix import NeedsCoordinates, engine_number_type  # noqa: F401 (one exception for every backend)
+from stiefelsym.backends.fields import Dual
+from stiefelsym.backends.matrix import NeedsCoordinates, engine_number_type  # noqa: F401 (one exception for every backend)
 
 # ---------------------------------------------------------------------------
 # the one door of refusals: a refusal of the dimension-free scene is recorded in the run's record

@@ -25,8 +25,8 @@ from typing import Any, Iterable, Mapping
 
 import symengine as se
 
-from .algebra import DIMENSIONS, Letter, NCPoly, OperatorLetter, memo_put
-from .rewriting import Certificate
+from stiefelsym.free.algebra import DIMENSIONS, Letter, NCPoly, OperatorLetter, memo_put
+from stiefelsym.free.rewriting import Certificate
 
 FORMAT = "stiefelsym-cofactor-1"
 

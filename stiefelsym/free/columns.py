@@ -24,8 +24,8 @@ from typing import Any
 
 import symengine as se
 
-from .algebra import LEADING, SCALAR, Letter, NCPoly, cycle_rep, letter_pair, merge_traces
-from .rewriting import CertTerm, Hypothesis
+from stiefelsym.free.algebra import LEADING, SCALAR, Letter, NCPoly, cycle_rep, letter_pair, merge_traces
+from stiefelsym.free.rewriting import CertTerm, Hypothesis
 
 E1, E1t = letter_pair("E1", "E1t", "r", SCALAR, "E_1", "E_1^{T}")
 E2, E2t = letter_pair("E2", "E2t", "r", SCALAR, "E_2", "E_2^{T}")

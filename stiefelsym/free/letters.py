@@ -10,9 +10,9 @@ from __future__ import annotations
 
 from typing import Any
 
-from .algebra import Letter, NCPoly, OperatorLetter, as_coef, letter_pair, skew_letter, symmetric_letter
-from .columns import SREF, column_hypotheses
-from .rewriting import Cofactor, Hypothesis
+from stiefelsym.free.algebra import Letter, NCPoly, OperatorLetter, as_coef, letter_pair, skew_letter, symmetric_letter
+from stiefelsym.free.columns import SREF, column_hypotheses
+from stiefelsym.free.rewriting import Cofactor, Hypothesis
 
 X, Xt = letter_pair("X", "Xt", "n", "r", "X", "X^{T}")
 P, Pt = letter_pair("P", "Pt", "n", "r", "P", "P^{T}")

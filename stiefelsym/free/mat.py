@@ -1,9 +1,9 @@
 """The whole-matrix backend of the dimension-free field: one block without per-entry array machinery.
 
 Almost every matrix of a dimension-free claim is one block (X, P, A, Φ, a flow's components).
-The matrices of the free scene are plain :class:`~stiefelsym.matrix.Mat`, of the same class as
+The matrices of the free scene are plain :class:`~stiefelsym.backends.matrix.Mat`, of the same class as
 those of every other scene; their field brings this backend (``FreeField.native_backend``, the
-hook of :func:`stiefelsym.native._make`), so ``Mat`` runs its native path: the storage of a 1×1
+hook of :func:`stiefelsym.backends.native._make`), so ``Mat`` runs its native path: the storage of a 1×1
 matrix is its entry itself (a word polynomial, a dual number over them, a scalar), and sums,
 products, transposes and scalings of such blocks compute the one entry directly, with the same
 arithmetic and the same normalization as the generic path of ``Mat``.  A block matrix (k×k
@@ -16,10 +16,10 @@ from typing import Any, Callable
 
 import numpy as np
 
-from ..fields import Dual
-from ..matrix import Mat
-from ..native import Backend
-from .algebra import NCPoly
+from stiefelsym.backends.fields import Dual
+from stiefelsym.backends.matrix import Mat
+from stiefelsym.backends.native import Backend
+from stiefelsym.free.algebra import NCPoly
 
 
 def _one(x: Any) -> np.ndarray:

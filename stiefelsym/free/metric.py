@@ -27,9 +27,9 @@ from dataclasses import dataclass
 
 import symengine as se
 
-from .algebra import SCALAR, Letter, NCPoly, derivation, mark_moving, symmetric_letter
-from .rewriting import Certificate, CertTerm, Cofactor, Hypothesis, Order, RewritingSystem, Rule, cofactor_sum, simplify_coef
-from .letters import AINV, A, FreeSolveError, P, Pt, X, Xt, _by, _holds_letter, hypothesis
+from stiefelsym.free.algebra import SCALAR, Letter, NCPoly, derivation, mark_moving, symmetric_letter
+from stiefelsym.free.rewriting import Certificate, CertTerm, Cofactor, Hypothesis, Order, RewritingSystem, Rule, cofactor_sum, simplify_coef
+from stiefelsym.free.letters import AINV, A, FreeSolveError, P, Pt, X, Xt, _by, _holds_letter, hypothesis
 
 #: the name of the hypothesis XᵀA⁻¹P + PᵀA⁻¹X (the second constraint of the metric realization)
 METRIC_HYP = "XtAinvP+PtAinvX"

@@ -29,7 +29,7 @@ from typing import Iterable, Sequence
 
 import symengine as se
 
-from .algebra import (DIMENSIONS, SCALAR, Coef, Letter, NCPoly, Word, check_word, cprod, csum, cycle_rep,
+from stiefelsym.free.algebra import (DIMENSIONS, SCALAR, Coef, Letter, NCPoly, Word, check_word, cprod, csum, cycle_rep,
                       memo_put, merge_traces, min_rotation, operator_letters_in, record_refusal, star_word, trace,
                       word_key, word_latex, word_str)
 

@@ -2,7 +2,7 @@
 
 :class:`FreeScene` offers the matrix interface of
 :class:`stiefelsym.scene.Scene` (X, P, A, Φ, Ψ, λ, κ, ε, traces, resolvents,
-Dirac flows, derivatives along flows) with 1×1 :class:`~stiefelsym.matrix.Mat`
+Dirac flows, derivatives along flows) with 1×1 :class:`~stiefelsym.backends.matrix.Mat`
 whose entry is a word polynomial (an n×r, r×n, n×n or r×r block), and 2×2
 ``Mat`` of them for 2r×2r block matrices.  The field :class:`FreeField`
 normalizes entries with the standard rewriting system (the constraints
@@ -21,17 +21,17 @@ from typing import Any, Callable, Mapping
 import numpy as np
 import symengine as se
 
-from ..fields import Dual, DualField, Field
-from ..matrix import CoordinateTracker, Mat, definite
-from ..scene import TANGENT_KEYS, USER_SCALAR, Flow, HermitianComponents, PaperObjects, _number, map_entries
-from .algebra import (LEADING, Letter, NCPoly, NeedsCoordinates, OperatorLetter, apply_operator, as_coef, coef_latex, derivation,
+from stiefelsym.backends.fields import Dual, DualField, Field
+from stiefelsym.backends.matrix import CoordinateTracker, Mat, definite
+from stiefelsym.scene import TANGENT_KEYS, USER_SCALAR, Flow, HermitianComponents, PaperObjects, _number, map_entries
+from stiefelsym.free.algebra import (LEADING, Letter, NCPoly, NeedsCoordinates, OperatorLetter, apply_operator, as_coef, coef_latex, derivation,
                       letter_pair, mark_moving, record_refusal, refuse, skew_letter, substitute, symmetric_letter, trace)
-from .mat import FreeBackend, FreeDualBackend, entry_of, one_block
-from .rewriting import (_NONZERO_NUMBER_TYPES, _SIMPLE, Certificate, Order, Reduction,
+from stiefelsym.free.mat import FreeBackend, FreeDualBackend, entry_of, one_block
+from stiefelsym.free.rewriting import (_NONZERO_NUMBER_TYPES, _SIMPLE, Certificate, Order, Reduction,
                         RewritingError, RewritingSystem, SharedMemos, nonzero_terms, simplify_coef)
-from .traces import gradient
-from .columns import COLUMNS, COVECTORS, DN, KW, WK, WKt, SPLIT, SREF, ER, LEAD, LEADt, ERt, canonical, canonical_form, column_hypotheses
-from .letters import (X, Xt, P, Pt, A, Y, Yt, Q, Qt, AINV, DX, DXt, DY, DYt, DXd, DXdt, DYd, DYdt, DOUBLE, CU, CUt,
+from stiefelsym.free.traces import gradient
+from stiefelsym.free.columns import COLUMNS, COVECTORS, DN, KW, WK, WKt, SPLIT, SREF, ER, LEAD, LEADt, ERt, canonical, canonical_form, column_hypotheses
+from stiefelsym.free.letters import (X, Xt, P, Pt, A, Y, Yt, Q, Qt, AINV, DX, DXt, DY, DYt, DXd, DXdt, DYd, DYdt, DOUBLE, CU, CUt,
                       CV, CVt, CUd, CUdt, CVd, CVdt, COMPLEX, COMPLEX_HYPOTHESES, W0_RE, W0_IM, PI, LAMBDA,
                       FreeSolveError, _i, _w, hypothesis, _by, _holds_letter)
 
@@ -317,7 +317,7 @@ class FreeScene(PaperObjects):
         if realization == "metric" and (columns or square):
             raise NeedsCoordinates("the metric realization of T*V with the columns of R^r or at r = n")
         if realization == "metric" and system is None:
-            from .metric import metric_system
+            from stiefelsym.free.metric import metric_system
             system = metric_system()
         if system is None:
             # r = n: the order P < X (for the rule XP^T -> -PX^T); the standard rules decrease in it too
@@ -355,7 +355,7 @@ class FreeScene(PaperObjects):
 
     def __getattr__(self, name: str) -> Any:
         """Coordinate-scene API this backend does not offer (jacobian, general_params, ...)."""
-        from ..scene import Scene
+        from stiefelsym.scene import Scene
 
         if not name.startswith("__") and hasattr(Scene, name):
             raise refuse(f"Scene.{name}", self.__dict__.get("_tracker"))
@@ -1264,7 +1264,7 @@ class FreeScene(PaperObjects):
         """The Dirac flow of the gradient (H_X, H_P) on (cond_XP2): Ẋ = H_P − A⁻¹XΠ, Ṗ = −H_X + XΛ + A⁻¹PΠ with
         Π = 0 by the uniqueness of the solution of its Sylvester equation, Λ a letter whose relation ρ joins
         the ideal (see :mod:`.metric`); refused where a multiplier equation is of neither form."""
-        from .metric import metric_multipliers
+        from stiefelsym.free.metric import metric_multipliers
         try:
             m = metric_multipliers(self.system, HX, HP, self._sylvester)
         except FreeSolveError as exc:   # a refusal: recorded before it reaches claim code
@@ -1388,7 +1388,7 @@ class FreeScene(PaperObjects):
                 raise KeyError(f"the flow moves {key!r}, which is not a letter of this scene")
             images[self._named[key]] = entry_of(v) if isinstance(v, Mat) else v
         if self.realization == "metric":
-            from .metric import constraint_polys
+            from stiefelsym.free.metric import constraint_polys
             relations = constraint_polys()
         else:
             relations = [(_w(Xt, X), COND_XX), (_w(Xt, P) + _w(Pt, X), COND_XP)]
@@ -1450,7 +1450,7 @@ class FreeScene(PaperObjects):
     def _sylvester_reduce(self, p: NCPoly, certify: bool = False) -> Any:
         """The rules and the steps ΛM → −MΛ + C of the multipliers of the metric realization in turn until
         neither changes p (see :mod:`.metric`): the Reduction, or with ``certify`` the Certificate."""
-        from .metric import sylvester_step
+        from stiefelsym.free.metric import sylvester_step
         rules: list = []
         terms: list = []
         q = p

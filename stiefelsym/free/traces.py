@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import symengine as se
 
-from .algebra import SCALAR, Letter, NCPoly, OperatorLetter, apply_operator, refuse_moving
+from stiefelsym.free.algebra import SCALAR, Letter, NCPoly, OperatorLetter, apply_operator, refuse_moving
 
 
 def gradient(H: NCPoly, L: Letter) -> NCPoly:

@@ -11,10 +11,10 @@ import threading
 from collections import OrderedDict
 from typing import Any, Callable
 
-from .families import SizeFamily
-from .graph import Graph, Named, Ref, Size
-from .statements import Count, Inverse, Rank
-from .trace import Dim, TraceRefused, Tracer, TraceScene, block, is_tracer, named, primitive, trace
+from stiefelsym.ir.families import SizeFamily
+from stiefelsym.ir.graph import Graph, Named, Ref, Size
+from stiefelsym.ir.statements import Count, Inverse, Rank
+from stiefelsym.ir.trace import Dim, TraceRefused, Tracer, TraceScene, block, is_tracer, named, primitive, trace
 
 __all__ = ["Graph", "Named", "Ref", "Size", "SizeFamily", "Count", "Inverse", "Rank", "Dim", "TraceRefused", "Tracer", "TraceScene",
            "block", "is_tracer", "named", "primitive", "trace", "compile_claim", "graph_pair", "NotDeterministic"]
@@ -106,7 +106,7 @@ def _typed_at(func: Callable, free: Graph, n: int, r: int, constraints: tuple[st
     refusal.  A size the claim wrote as an int (s.zeros(3, 2)) cannot be told from n, r with symbolic
     sizes; at (n, r) the graph is replayed by the tracer (:class:`.replay.GraphClaim`: engine code, no code
     of the claim runs, no trace of the claim holds a number), which checks every shape with the numbers."""
-    from .replay import GraphClaim
+    from stiefelsym.ir.replay import GraphClaim
     key = (id(func), n, r, constraints[0], "typed")
     hit = _GRAPHS.get(key)
     if hit is not None and hit[0] is func:

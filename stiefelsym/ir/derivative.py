@@ -63,8 +63,8 @@ import itertools
 from fractions import Fraction
 from typing import Any
 
-from .graph import Graph, Named, Ref, _ref
-from .trace import CONSTANT_PRIMITIVES, MATRICES, NUMBERS, PRIMITIVES
+from stiefelsym.ir.graph import Graph, Named, Ref, _ref
+from stiefelsym.ir.trace import CONSTANT_PRIMITIVES, MATRICES, NUMBERS, PRIMITIVES
 
 #: the engine step that reads a flow's components (registered below)
 TANGENT = "stiefelsym.ir.derivative.tangent_vector"
@@ -144,7 +144,7 @@ def coverage(g: Graph, name: str = "d", flows: frozenset = POINT_FLOWS) -> list[
 
 
 def _deps(g: Graph) -> list[frozenset]:
-    from .evaluate import _deps as deps
+    from stiefelsym.ir.evaluate import _deps as deps
     return deps(g)
 
 

@@ -14,12 +14,12 @@ import operator
 from fractions import Fraction
 from typing import Any, Callable
 
-from ..matrix import CoordinateTracker, Mat
-from ..native import backend
-from ..matrix import block as _block
-from .graph import Graph, Named, Ref, Size, _encode
-from .statements import Count, InverseIdentities, Rank
-from .trace import API, PRIMITIVES, VALUE_ATTRS
+from stiefelsym.backends.matrix import CoordinateTracker, Mat
+from stiefelsym.backends.native import backend
+from stiefelsym.backends.matrix import block as _block
+from stiefelsym.ir.graph import Graph, Named, Ref, Size, _encode
+from stiefelsym.ir.statements import Count, InverseIdentities, Rank
+from stiefelsym.ir.trace import API, PRIMITIVES, VALUE_ATTRS
 
 
 class GraphError(ValueError):

@@ -15,7 +15,7 @@ import operator
 from dataclasses import dataclass
 from typing import Any
 
-from .graph import Size
+from stiefelsym.ir.graph import Size
 
 #: the comparisons of sizes a family may decide, by the name of their method
 COMPARISONS = {"__eq__": operator.eq, "__ne__": operator.ne, "__lt__": operator.lt, "__le__": operator.le,

@@ -28,9 +28,9 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any, Callable, Iterator
 
-from .evaluate import node_keys
-from .graph import Graph, Ref
-from .replay import GraphClaim
+from stiefelsym.ir.evaluate import node_keys
+from stiefelsym.ir.graph import Graph, Ref
+from stiefelsym.ir.replay import GraphClaim
 
 #: scene leaves and the leaves of the same kind that replace them (the source mutation's pairs)
 LETTER_SWAPS: dict[str, tuple[str, ...]] = {
@@ -193,7 +193,7 @@ class GraphMutant:
         return GraphClaim(self.graph, name=f"mutant {self.index} (node %{self.node})")
 
     def description(self) -> str:
-        from .notation import describe
+        from stiefelsym.ir.notation import describe
         return f"{describe(self.changes)} (graph: node %{self.node}, {self.operator}: {self.text})"
 
 
@@ -219,9 +219,9 @@ def graph_mutants(g: Graph, constraints: tuple, census: MutantCensus | None = No
     """Every well-typed mutant of ``g`` (a graph traced with symbolic sizes; ``constraints``: the
     realization it was traced with), in the order of :func:`sites`, without one that computes what the
     claim or an earlier mutant computes."""
-    from . import _clean
-    from .notation import diff
-    from .trace import trace
+    from stiefelsym.ir import _clean
+    from stiefelsym.ir.notation import diff
+    from stiefelsym.ir.trace import trace
     census = census if census is not None else MutantCensus()
     base = output_key(g)
     seen = {base}

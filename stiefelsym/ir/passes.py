@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from fractions import Fraction
 
-from .graph import Graph, Ref, Size
+from stiefelsym.ir.graph import Graph, Ref, Size
 
 _N, _R = "n", "r"
 

@@ -26,9 +26,9 @@ import inspect
 from fractions import Fraction
 from typing import Any, Callable
 
-from .graph import Graph, Named, Ref, Size
-from .statements import Count, Inverse, Rank
-from .trace import INVERSE_ELEMENTS, TraceRefused, _NAMED, block
+from stiefelsym.ir.graph import Graph, Named, Ref, Size
+from stiefelsym.ir.statements import Count, Inverse, Rank
+from stiefelsym.ir.trace import INVERSE_ELEMENTS, TraceRefused, _NAMED, block
 
 #: the ops a graph may hold (:mod:`.graph`)
 OPS = frozenset("""scene param attr call prim apply add sub neg matmul mul div pow T inv trace entry item block
@@ -330,7 +330,7 @@ _DISPATCH: dict[str, Callable] = {op: getattr(_Replay, "_" + op) for op in OPS}
 def _deps(ops: tuple, args: tuple) -> list[frozenset]:
     g = Graph()
     g.ops, g.args = list(ops), list(args)
-    from .evaluate import _deps as deps
+    from stiefelsym.ir.evaluate import _deps as deps
     return deps(g)
 
 

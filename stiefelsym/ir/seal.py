@@ -37,8 +37,8 @@ _LIBRARIES = ("numpy", "flint", "symengine", "fractions", "operator", "math", "m
 #: registries (module, attribute) whose contents are fingerprinted
 _REGISTRIES = (("stiefelsym.ir.trace", "PRIMITIVES"), ("stiefelsym.ir.trace", "_NAMED"),
                ("stiefelsym.ir.trace", "CONSTANT_PRIMITIVES"),
-               ("stiefelsym.ir.trace", "VALUE_ATTRS"), ("stiefelsym.native", "_REGISTERED"),
-               ("stiefelsym.methods", "_REGISTERED"), ("stiefelsym.ir.evaluate", "_ARITH"))
+               ("stiefelsym.ir.trace", "VALUE_ATTRS"), ("stiefelsym.backends.native", "_REGISTERED"),
+               ("stiefelsym.methods.fixed_size", "_REGISTERED"), ("stiefelsym.ir.evaluate", "_ARITH"))
 
 
 #: module attributes watched: code, classes, modules and public constants (a tolerance, a limit);

@@ -23,10 +23,10 @@ import inspect
 from fractions import Fraction
 from typing import Any, Callable, Iterator
 
-from .seal import refuse_registration
-from .families import COMPARISONS, SYMBOLS, SizeFamily
-from .graph import _REFS, Graph, Named, Ref, Size, _ref
-from .statements import DOMAINS, Count, Inverse, Rank
+from stiefelsym.ir.seal import refuse_registration
+from stiefelsym.ir.families import COMPARISONS, SYMBOLS, SizeFamily
+from stiefelsym.ir.graph import _REFS, Graph, Named, Ref, Size, _ref
+from stiefelsym.ir.statements import DOMAINS, Count, Inverse, Rank
 
 
 class TraceRefused(TypeError):
@@ -794,7 +794,7 @@ def block(rows: Any) -> Tracer:
     """A block matrix of traced matrices (its sizes the sums of the blocks' sizes)."""
     t = next((b._t for row in rows for b in row if isinstance(b, Tracer)), None)
     if t is None:               # the engine's own matrices (engine code, tests)
-        from ..matrix import block as engine_block
+        from stiefelsym.backends.matrix import block as engine_block
         return engine_block(rows)
     rows = [list(row) for row in rows]
     if not rows or not rows[0] or any(len(row) != len(rows[0]) for row in rows):

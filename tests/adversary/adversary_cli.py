@@ -19,7 +19,7 @@ BAKED_PREFIXES = ("STIEFELSYM_S3", "STIEFELSYM_TEST_")
 def baked(path, variables, argv=None):
     """A copy of the claims file ``path`` that sets ``variables`` in its own environment (and ``argv`` as its
     sys.argv) before its code runs: a claims file is traced in a fresh interpreter with a minimal environment
-    (stiefelsym.sandbox), so what a test means it to see is written into the file.  The copy's path depends on
+    (stiefelsym.run.sandbox), so what a test means it to see is written into the file.  The copy's path depends on
     what it holds only (a later `check` of the run's results finds it again)."""
     import hashlib
     import json

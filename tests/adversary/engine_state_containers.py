@@ -1,9 +1,10 @@
 """Engine state held in containers that the engine's fingerprint does not look into (it watches code, types,
 modules, public scalar constants and the listed registries): the division probe's memo
-(``stiefelsym.methods._PROBES``, keyed by the claim's own function) seeded with "no division" for the claim's
+(``stiefelsym.methods.fixed_size._PROBES``, keyed by the claim's own function) seeded with "no division" for the claim's
 sizes, and the set of coordinate-basis engine steps (``stiefelsym.ir.passes.COORDINATE_STEPS``, a frozenset)
 replaced by an empty one."""
-from stiefelsym import admissible, claim, methods, twisted
+from stiefelsym import admissible, claim, twisted
+from stiefelsym.methods import fixed_size as methods
 from stiefelsym.ir import passes
 from stiefelsym.systems import real_coordinates
 

@@ -1,9 +1,9 @@
 """A false claim checked (and every claim of the process with it, the catalog's included): the claims
-file registers a whole-matrix backend for GF(p) through ``stiefelsym.native.register_backend`` (the
+file registers a whole-matrix backend for GF(p) through ``stiefelsym.backends.native.register_backend`` (the
 public hook the engine's own modules use); its zero test says yes to every matrix."""
 from stiefelsym import admissible, claim
-from stiefelsym.fields import ModularField
-from stiefelsym.native import ModularBackend, register_backend
+from stiefelsym.backends.fields import ModularField
+from stiefelsym.backends.native import ModularBackend, register_backend
 
 
 class _Backend(ModularBackend):

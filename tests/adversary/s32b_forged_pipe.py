@@ -9,7 +9,7 @@ import os
 import stat
 
 from stiefelsym import admissible, claim
-from stiefelsym import userfile as _uf
+from stiefelsym.run import userfile as _uf
 
 SIZES = admissible(n_max=3, n_min=2, r_min=2, r_max=2, condition="r = 2")
 

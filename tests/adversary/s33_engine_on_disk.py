@@ -1,5 +1,5 @@
 """A claims file that rewrites a module of the engine on disk: the verifying process never imports the file,
-but it imports `stiefelsym.report` lazily, after the file's child has run (report is not among the modules
+but it imports `stiefelsym.reports.report` lazily, after the file's child has run (report is not among the modules
 `ir.seal.import_engine` imports before the fork).  The appended code runs in the verifying process when the
 summary is rendered and edits the results there: the false claim's `fails` becomes `proved` in the summary,
 results.json and the exit status.

@@ -7,8 +7,8 @@ claim, not after it)."""
 import random
 
 from stiefelsym import admissible, claim
-from stiefelsym.fields import RationalField
-from stiefelsym.paired import PairField
+from stiefelsym.backends.fields import RationalField
+from stiefelsym.backends.paired import PairField
 from stiefelsym.scene import Scene
 
 #: the points of one run covered (the run takes far fewer)

@@ -7,7 +7,7 @@ see it).  Modular answers `checked` with a false-pass bound of the order of 1e-3
 import random
 
 from stiefelsym import admissible, claim
-from stiefelsym.fields import random_prime
+from stiefelsym.backends.fields import random_prime
 
 #: the points and prime redraws of one run covered (the run takes far fewer)
 POINTS, ATTEMPTS = 48, 2

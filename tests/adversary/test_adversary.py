@@ -69,7 +69,7 @@ def test_size_read_by_introspection_reads_no_number(method):
         assert set(v.values()) == {"proved"}, v
 def test_size_read_from_the_command_is_one_graph_in_every_run():
     """Closed: the file is traced in a spawned interpreter whose command line is neutral (python -I -B -c ...),
-    which holds none of the run's options and, in namespaces, sees no process of the run (stiefelsym.sandbox):
+    which holds none of the run's options and, in namespaces, sees no process of the run (stiefelsym.run.sandbox):
     X^T X - I in every run, proved for every n and passed at (7,2)."""
     free = _v("size_read_from_the_command.py", "free", "adv-size-by-command")
     at7 = _v("size_read_from_the_command.py", "exact", "adv-size-by-command", size="7,2")

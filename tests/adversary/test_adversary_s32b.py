@@ -156,7 +156,7 @@ def test_a_claim_id_cannot_print_a_forged_verdict_line():
 
 DECODER = """
 import sys
-from stiefelsym.userfile import WireError, _loads, _value, _graph
+from stiefelsym.run.userfile import WireError, _loads, _value, _graph
 bad = [b'1.5', b'NaN', b'[1e400]', b'{{"x": Infinity}}', b'\\xff', b'[' * 100000 + b']' * 100000]
 for data in bad:
     try:

@@ -255,7 +255,7 @@ def _verify_in(cwd, tmp_path, *methods, confine="spawn"):
     import subprocess
     import sys
 
-    from stiefelsym.sandbox import CONFINE_ENV
+    from stiefelsym.run.sandbox import CONFINE_ENV
     args = [sys.executable, "-m", "stiefelsym", "verify", "--claims", str(HERE / ON_PATH), "--size", "3,2",
             "--jobs", "1", "--report-dir", str(tmp_path / "rep")]
     for m in methods:
@@ -268,7 +268,7 @@ def _verify_in(cwd, tmp_path, *methods, confine="spawn"):
 
 
 def _namespaces() -> bool:
-    from stiefelsym.sandbox import namespaces_available
+    from stiefelsym.run.sandbox import namespaces_available
     return namespaces_available()
 
 

@@ -1,0 +1,904 @@
+"""Discovery: the exact space of conserved quantities of a flow in a space of trace polynomials.
+
+A mathematician who asks "which functions of this shape are integrals of this flow?"
+asks a linear question.  The ansatz is a list of trace monomials F₁, …, F_N in the
+letters X, Xᵀ, P, Pᵀ, A (closed words, one per class under rotation and transposition,
+and products of two of them) with unknown coefficients c; the flow's derivative of
+Σ cᵢFᵢ is linear in c.  So:
+
+1. the claim ``{Fᵢ, dFᵢ/dt}`` is traced once (:mod:`stiefelsym.ir`) and its graph
+   evaluated at K > N random points of T*V over a prime field p ≈ 2⁶¹;
+2. the null spaces of the two K × N systems give V₁ = {c : d(ΣcᵢFᵢ)/dt = 0} and
+   V₀ = {c : ΣcᵢFᵢ constant on T*V} (V₀ ⊆ V₁: what is constant on T*V is conserved
+   for a trivial reason);
+3. a basis of V₁ modulo V₀ is put in reduced echelon form and its coefficients are
+   reconstructed as rationals (they must be: the flow and the ansatz are rational);
+4. every basis element is then a claim of its own, verified by the usual methods at
+   the sizes asked for, and by the dimension-free method for all n, r.
+
+The number dim V₁ − dim V₀ is reported per size; a false pass of step 1–2 is caught by
+step 4 (no element is reported without its verdicts).
+"""
+from __future__ import annotations
+
+import itertools
+import random
+from dataclasses import dataclass, field
+from fractions import Fraction
+from typing import Any, Callable, Sequence
+
+from stiefelsym.claims import Claim, Size, admissible
+from stiefelsym.ir import block
+
+#: the letters: (name, rows, columns, transpose, LaTeX)
+LETTERS = {"X": ("n", "r", "Xt", "X"), "Xt": ("r", "n", "X", "X^T"), "P": ("n", "r", "Pt", "P"),
+           "Pt": ("r", "n", "P", "P^T"), "A": ("n", "n", "A", "A")}
+
+PRIME = 2**61 - 1
+
+
+def _canonical(word: tuple[str, ...]) -> tuple[str, ...]:
+    """The representative of tr(word) under rotation and transposition (tr w = tr wᵀ)."""
+    t = tuple(LETTERS[x][2] for x in reversed(word))
+    return min(w[i:] + w[:i] for w in (word, t) for i in range(len(w)))
+
+
+def closed_words(degree: int, max_a: int = 1) -> list[tuple[str, ...]]:
+    """The closed words in X, Xᵀ, P, Pᵀ (and at most ``max_a`` letters A) of 1..degree letters X, P,
+    one per class of tr under rotation and transposition, leaving out those that contain XᵀX
+    (cyclically): on T*V they are shorter words."""
+    out = set()
+    for length in range(1, degree + max_a + 1):
+        for word in itertools.product(LETTERS, repeat=length):
+            if not 1 <= sum(x != "A" for x in word) <= degree or word.count("A") > max_a:
+                continue
+            if any(LETTERS[a][1] != LETTERS[b][0] for a, b in zip(word, word[1:])):
+                continue
+            if LETTERS[word[-1]][1] != LETTERS[word[0]][0]:
+                continue
+            if any(a == "Xt" and b == "X" for a, b in zip(word, word[1:] + word[:1])):
+                continue        # XᵀX = I_r on T*V: the word reduces to a shorter one
+            out.add(_canonical(word))
+    return sorted(out, key=lambda w: (len(w), w))
+
+
+@dataclass(frozen=True)
+class Monomial:
+    """A product of traces of closed words."""
+
+    words: tuple[tuple[str, ...], ...]
+
+    @property
+    def degree(self) -> int:
+        return sum(sum(x != "A" for x in w) for w in self.words)
+
+    def latex(self) -> str:
+        return "".join(r"\operatorname{tr}(" + " ".join(LETTERS[x][3] for x in w) + ")" for w in self.words)
+
+    def text(self) -> str:
+        names = {"X": "X", "Xt": "Xᵀ", "P": "P", "Pt": "Pᵀ", "A": "A"}
+        return "·".join("tr(" + "".join(names[x] for x in w) + ")" for w in self.words)
+
+    def __call__(self, s: Any) -> Any:
+        acc = None
+        for w in self.words:
+            M = None
+            for x in w:
+                L = {"X": s.X, "Xt": s.X.T, "P": s.P, "Pt": s.P.T, "A": s.A}[x]
+                M = L if M is None else M @ L
+            t = s.tr(M)
+            acc = t if acc is None else acc * t
+        return acc
+
+
+def ansatz(degree: int, max_a: int = 1, products: bool = True) -> list[Monomial]:
+    """The trace monomials of degree <= ``degree`` (in X, P; at most ``max_a`` letters A per trace):
+    single traces, and products of two when ``products``."""
+    words = closed_words(degree, max_a)
+    out = [Monomial((w,)) for w in words]
+    if products:
+        for a, b in itertools.combinations_with_replacement(words, 2):
+            m = Monomial((a, b))
+            if m.degree <= degree and sum(w.count("A") for w in m.words) <= max_a:
+                out.append(m)
+    # the most composite first: the echelon forms below put their pivots there, so that each integral
+    # is written with the simplest monomials
+    return sorted(out, key=lambda m: (-len(m.words), -m.degree, m.words))
+
+
+def _rational(a: int, p: int) -> Fraction | None:
+    """The rational u/v with |u|, v < sqrt(p/2) congruent to a mod p (None if there is none)."""
+    bound = int((p // 2) ** 0.5)
+    r0, r1, t0, t1 = p, a % p, 0, 1
+    while r1 > bound:
+        q = r0 // r1
+        r0, r1, t0, t1 = r1, r0 - q * r1, t1, t0 - q * t1
+    if t1 == 0 or abs(t1) > bound:
+        return None
+    return Fraction(r1, t1)
+
+
+@dataclass
+class Integral:
+    """One conserved quantity found: its coefficients on the ansatz and its verdicts."""
+
+    terms: list[tuple[Fraction, Monomial]]
+    verdicts: dict[str, str] = field(default_factory=dict)
+
+    def text(self) -> str:
+        out = []
+        for c, m in self.terms:
+            sign = "−" if c < 0 else "+"
+            a = abs(c)
+            coef = "" if a == 1 else f"{a}·"
+            out.append(f"{sign} {coef}{m.text()}")
+        s = " ".join(out)
+        return s[2:] if s.startswith("+ ") else "−" + s[2:]
+
+    def latex(self) -> str:
+        out = []
+        for c, m in self.terms:
+            a = abs(c)
+            coef = "" if a == 1 else (rf"\tfrac{{{a.numerator}}}{{{a.denominator}}}" if a.denominator != 1 else str(a))
+            out.append(("-" if c < 0 else "+") + coef + m.latex())
+        s = "".join(out)
+        return s[1:] if s.startswith("+") else s
+
+    def function(self) -> Callable[[Any], Any]:
+        terms = list(self.terms)
+
+        def F(s):
+            acc = None
+            for c, m in terms:
+                v = m(s) * s.q(c.numerator, c.denominator)
+                acc = v if acc is None else acc + v
+            return acc
+        return F
+
+    @property
+    def verified(self) -> bool:
+        return bool(self.verdicts) and all(v in ("proved", "checked", "numeric") for v in self.verdicts.values())
+
+
+@dataclass
+class Discovery:
+    """The space of conserved quantities of ``flow`` in the ansatz, at one size."""
+
+    flow: str
+    size: Size
+    ansatz: list[Monomial]
+    conserved_dim: int          # dim V1
+    constant_dim: int           # dim V0 (constant on T*V)
+    integrals: list[Integral]
+    points: int
+    seed: int
+
+    def lines(self) -> list[str]:
+        n, r = self.size.n, self.size.r
+        out = [f"flow {self.flow}, (n, r) = ({n}, {r}): ansatz of {len(self.ansatz)} trace monomials "
+               f"(degree <= {max(m.degree for m in self.ansatz)}); {self.points} points of GF(2^61 - 1), seed {self.seed}",
+               f"  conserved: dim {self.conserved_dim}; constant on T*V: dim {self.constant_dim}; "
+               f"independent integrals modulo constants: {len(self.integrals)}"]
+        for k, I in enumerate(self.integrals, 1):
+            v = ", ".join(f"{m} {x}" for m, x in I.verdicts.items())
+            out.append(f"  I{k} = {I.text()}    [{v}]")
+        return out
+
+
+def _nullspace(rows: list[list[int]], N: int, p: int) -> list[list[int]]:
+    """A basis of {c : rows · c = 0} over GF(p), as the rows of a reduced echelon matrix."""
+    import flint
+    if not rows:
+        return [[int(i == j) for j in range(N)] for i in range(N)]
+    X, nullity = flint.nmod_mat(rows, p).nullspace()
+    basis = [[int(X[i, j]) for i in range(N)] for j in range(nullity)]
+    if not basis:
+        return []
+    R = flint.nmod_mat(basis, p).rref()[0]
+    return [[int(R[i, j]) for j in range(N)] for i in range(nullity)]
+
+
+def _quotient(V1: list[list[int]], V0: list[list[int]], p: int) -> list[list[int]]:
+    """A basis of span(V1) modulo span(V0) (V0 in reduced echelon form): each row of V1 with the
+    pivot columns of V0 eliminated, the result in reduced echelon form."""
+    import flint
+    pivots = [(row.index(next(x for x in row if x)), row) for row in V0]
+    reduced = []
+    for v in V1:
+        v = list(v)
+        for j, row in pivots:
+            if v[j]:
+                c = v[j]
+                v = [(x - c * y) % p for x, y in zip(v, row)]
+        if any(v):
+            reduced.append(v)
+    if not reduced:
+        return []
+    R = flint.nmod_mat(reduced, p).rref()
+    M, rank = R
+    return [[int(M[i, j]) for j in range(len(V1[0]))] for i in range(rank)]
+
+
+def conserved(flow: Callable[[Any], Any], size: Size, degree: int = 4, *, max_a: int = 1,
+              products: bool = True, seed: int = 0, name: str = "", verify: Sequence[str] = ("auto", "free"),
+              terms: Sequence[Monomial] | None = None, realization: str = "standard") -> Discovery:
+    """The conserved quantities of ``flow`` (a function of the scene giving the tangent vector
+    {"X": Ẋ, "P": Ṗ}) among the trace monomials of degree <= ``degree``, at ``size``; each basis
+    element verified by the methods ``verify`` (the dimension-free one for all n, r)."""
+    from stiefelsym.ir import compile_claim
+    from stiefelsym.ir.evaluate import evaluate
+    from stiefelsym.backends.fields import ModularField
+    from stiefelsym.run.runner import run_one
+    from stiefelsym.scene import REALIZATIONS, Scene
+
+    mons = list(terms) if terms is not None else ansatz(degree, max_a, products)
+    N = len(mons)
+
+    def probe(s):
+        tangent = flow(s)
+        out = {}
+        for i, m in enumerate(mons):
+            out[f"F{i}"] = m(s)
+            out[f"dF{i}"] = s.d(m, tangent)
+        return out
+    cons = REALIZATIONS[realization]
+    g = compile_claim(probe, size.n, size.r, (cons.name, cons.build))
+    rng = random.Random(f"{seed}|discover|{name}|{size.n}|{size.r}")
+    K = N + 8
+    values, derivs = [], []
+    for k in range(K + 1):
+        scene = Scene(size.n, size.r, ModularField(PRIME), chart="cayley", rng=rng,
+                      component=k % 2 if size.r == size.n else 0, realization=realization)
+        out = evaluate(g, scene)
+        values.append([int(out[f"F{i}"]) for i in range(N)])
+        derivs.append([int(out[f"dF{i}"]) for i in range(N)])
+    base = values[0]
+    V0 = _nullspace([[(v - b) % PRIME for v, b in zip(row, base)] for row in values[1:]], N, PRIME)
+    V1 = _nullspace(derivs[1:], N, PRIME)
+    kept = _quotient(V1, V0, PRIME)
+    integrals = []
+    for v in kept:
+        coeffs = [_rational(x, PRIME) if x else Fraction(0) for x in v]
+        if any(c is None for c in coeffs):
+            continue
+        integrals.append(Integral([(c, m) for c, m in zip(coeffs, mons) if c]))
+    for k, I in enumerate(integrals, 1):
+        F = I.function()
+        tangent_of = flow
+
+        def check(s, F=F):
+            return {"dI/dt": s.d(F, tangent_of(s))}
+        check.__doc__ = f"d/dt ({I.text()}) = 0 along {name or 'the flow'}."
+        claim = Claim(id=f"discovered-{k}", paper=("discover",), kind="id", section="discover", func=check,
+                      sizes=admissible(max(size.n, 1)), realization=realization)
+        for m in verify:
+            res = run_one(claim, None if m == "free" else size, m, seed)
+            I.verdicts[m if m != "free" else "free (all n, r)"] = res.verdict
+    return Discovery(name or getattr(flow, "__name__", "flow"), size, mons, len(V1), len(V0), integrals, K, seed)
+
+
+def hamiltonian_flow(H: Callable[[Any], Any]) -> Callable[[Any], Any]:
+    """The tangent vector of the Dirac flow of a Hamiltonian H, as a function of the scene."""
+    def flow(s):
+        return s.dirac_flow(H).tangent()
+    flow.__name__ = f"dirac_flow({getattr(H, '__name__', 'H')})"
+    return flow
+
+
+#: the catalog's Lax matrices by the paper's label: (module, function)
+LAX = {"LA2": ("sec5_neumann", "L_neum")}
+
+#: the catalog's flows by name: (module of the catalog, function, how to make the tangent, reference)
+FLOWS = {
+    "neumann-normal": ("sec5_neumann", "flow_N0", "tangent", "(N0_XP2): the Neumann flow of the normal metric"),
+    "neumann-euclidean": ("sec5_neumann", "flow_NE", "tangent", "(NE_XP): the Neumann flow of the Euclidean metric"),
+    "geodesic-normal": ("sec3_geodesic_flows", "H_normal", "hamiltonian", "the geodesic flow of the normal metric"),
+    "geodesic-euclidean": ("sec3_geodesic_flows", "H_euclidean", "hamiltonian",
+                           "the geodesic flow of the Euclidean metric"),
+}
+
+
+def _catalog_module(name: str) -> Any:
+    import importlib
+    for pkg in ("stiefelsym.proofs", "proofs"):
+        try:
+            return importlib.import_module(f"{pkg}.{name}")
+        except ImportError:
+            continue
+    raise ImportError(f"the catalog module {name!r} is not available")
+
+
+def resolve_function(spec: str, table: dict[str, tuple[str, str]]) -> Callable[[Any], Any]:
+    """A function of the scene by catalog name, ``module:function`` or ``file.py:function``."""
+    if spec in table:
+        mod, fn = table[spec]
+        return getattr(_catalog_module(mod), fn)
+    f, _ = resolve_flow(spec)
+    return f
+
+
+def load_object(mod: str, name: str) -> Any:
+    """The object ``name`` of a module (dotted name) or of a file ``something.py``."""
+    import importlib
+    try:
+        if mod.endswith(".py"):
+            import importlib.util
+            mspec = importlib.util.spec_from_file_location(f"_discover_{abs(hash(mod))}", mod)
+            if mspec is None or mspec.loader is None:
+                raise ImportError(f"no such file: {mod}")
+            module = importlib.util.module_from_spec(mspec)
+            mspec.loader.exec_module(module)
+        else:
+            module = importlib.import_module(mod)
+        return getattr(module, name)
+    except (ImportError, AttributeError, OSError, SyntaxError) as exc:
+        raise ValueError(f"cannot load {mod}:{name}: {exc}") from None
+
+
+def resolve_flow(spec: str) -> tuple[Callable[[Any], Any], str]:
+    """A flow by catalog name, by ``module:function`` or ``file.py:function`` (a function of the scene
+    giving {"X": Ẋ, "P": Ṗ}), or by ``hamiltonian:module:function`` (the Dirac flow of a Hamiltonian)."""
+    if spec in FLOWS:
+        mod, fn, how, text = FLOWS[spec]
+        f = getattr(_catalog_module(mod), fn)
+        return (hamiltonian_flow(f) if how == "hamiltonian" else f), text
+    parts = spec.split(":")
+    if len(parts) in (2, 3) and all(parts):
+        how = parts[0] if len(parts) == 3 else "tangent"
+        if how not in ("tangent", "hamiltonian"):
+            raise ValueError(f"unknown kind of flow {how!r} (tangent or hamiltonian)")
+        f = load_object(parts[-2], parts[-1])
+        return (hamiltonian_flow(f) if how == "hamiltonian" else f), spec
+    raise ValueError(f"unknown flow {spec!r}: a catalog flow ({', '.join(FLOWS)}), module:function or "
+                     "hamiltonian:module:function")
+
+
+# ---------------------------------------------------------------------------------------------
+# affine spaces: Σ cⱼ Tⱼ = R identically on T*V (Lax partners, corrections of printed formulas)
+
+def open_words(degree: int, rows: str = "n", cols: str = "n", max_a: int = 1) -> list[tuple[str, ...]]:
+    """The words in X, Xᵀ, P, Pᵀ, A from ℝ^cols to ℝ^rows (a matrix rows × cols) with at most ``degree``
+    letters X, P and ``max_a`` letters A, none containing XᵀX (the empty word: the identity)."""
+    out = [()] if rows == cols else []
+    for length in range(1, degree + max_a + 1):
+        for word in itertools.product(LETTERS, repeat=length):
+            if sum(x != "A" for x in word) > degree or word.count("A") > max_a:
+                continue
+            if LETTERS[word[0]][0] != rows or LETTERS[word[-1]][1] != cols:
+                continue
+            if any(LETTERS[a][1] != LETTERS[b][0] for a, b in zip(word, word[1:])):
+                continue
+            if any(a == "Xt" and b == "X" for a, b in zip(word, word[1:])):
+                continue
+            out.append(word)
+    return out
+
+
+def word_matrix(s: Any, word: tuple[str, ...], rows: str = "n") -> Any:
+    if not word:
+        return s.In if rows == "n" else s.Ir
+    M = None
+    for x in word:
+        L = {"X": s.X, "Xt": s.X.T, "P": s.P, "Pt": s.P.T, "A": s.A}[x]
+        M = L if M is None else M @ L
+    return M
+
+
+def word_text(word: tuple[str, ...], rows: str = "n") -> str:
+    names = {"X": "X", "Xt": "Xᵀ", "P": "P", "Pt": "Pᵀ", "A": "A"}
+    return "".join(names[x] for x in word) or f"I_{rows}"
+
+
+@dataclass
+class AffineSpace:
+    """The solutions c of Σ cⱼ Tⱼ = R found at random points: a particular solution (None: there is
+    none, certified by a rank) and a basis of the homogeneous solutions."""
+
+    names: list[str]
+    particular: list[Fraction] | None
+    basis: list[list[Fraction]]
+    equations: int
+    rank: int
+    rank_augmented: int
+
+    def certificate(self) -> str:
+        if self.particular is None:
+            return (f"no formula in this {len(self.names)}-term space holds: over GF(2^61 - 1) the "
+                    f"{self.equations} x {len(self.names)} system has rank {self.rank} and its augmented "
+                    f"matrix rank {self.rank_augmented}")
+        return (f"a {len(self.basis)}-dimensional affine space of solutions in the {len(self.names)}-term space "
+                f"(rank {self.rank} of {len(self.names)})")
+
+    def text(self, c: Sequence[Fraction] | None = None) -> str:
+        c = self.particular if c is None else c
+        if c is None:
+            return "(none)"
+        out = []
+        for x, name in zip(c, self.names):
+            if x:
+                a = abs(x)
+                out.append(f"{'−' if x < 0 else '+'} {'' if a == 1 else f'{a}·'}{name}")
+        s = " ".join(out) or "0"
+        return s[2:] if s.startswith("+ ") else "−" + s[2:] if s.startswith("− ") else s
+
+
+def solve_affine(terms: Sequence[tuple[str, Callable[[Any], Any]]], target: Callable[[Any], Any], size: Size,
+                 *, seed: int = 0, points: int | None = None, realization: str = "standard") -> AffineSpace:
+    """Every c with Σ cⱼ Tⱼ(s) = R(s) at random points of T*V over GF(2^61 − 1) (matrices: entry by
+    entry), with rational coefficients reconstructed; a verdict on any solution is for the caller."""
+    import flint
+    from stiefelsym.ir import compile_claim
+    from stiefelsym.ir.evaluate import evaluate
+    from stiefelsym.backends.fields import ModularField
+    from stiefelsym.scene import REALIZATIONS, Scene
+
+    N = len(terms)
+
+    def probe(s):
+        out = {f"T{j}": f(s) for j, (_, f) in enumerate(terms)}
+        out["R"] = target(s)
+        return out
+    cons = REALIZATIONS[realization]
+    g = compile_claim(probe, size.n, size.r, (cons.name, cons.build))
+    rng = random.Random(f"{seed}|affine|{size.n}|{size.r}|{N}")
+    rows: list[list[int]] = []
+    for k in range(points or max(4, N // max(1, size.n * size.n) + 4)):
+        scene = Scene(size.n, size.r, ModularField(PRIME), chart="cayley", rng=rng,
+                      component=k % 2 if size.r == size.n else 0, realization=realization)
+        out = evaluate(g, scene)
+        cols = [_entries_mod(out[f"T{j}"]) for j in range(N)] + [_entries_mod(out["R"])]
+        for e in range(len(cols[-1])):
+            rows.append([c[e] for c in cols[:-1]] + [(-cols[-1][e]) % PRIME])
+    M = flint.nmod_mat(rows, PRIME)
+    rank_aug = M.rank()
+    rank = flint.nmod_mat([r[:-1] for r in rows], PRIME).rank() if N else 0
+    names = [name for name, _ in terms]
+    if rank != rank_aug:
+        return AffineSpace(names, None, [], len(rows), rank, rank_aug)
+    X, nullity = M.nullspace()
+    vecs = [[int(X[i, j]) for i in range(N + 1)] for j in range(nullity)]
+    R = flint.nmod_mat(vecs, PRIME).rref()[0] if vecs else None
+    vecs = [[int(R[i, j]) for j in range(N + 1)] for i in range(nullity)] if vecs else []
+    # the row whose last coordinate is nonzero gives the particular solution (scaled to 1)
+    part = next((v for v in vecs if v[-1]), None)
+    particular = None
+    if part is not None:
+        inv = pow(part[-1], PRIME - 2, PRIME)
+        particular = [_rational(x * inv % PRIME, PRIME) if x else Fraction(0) for x in part[:-1]]
+    basis = [[_rational(x, PRIME) if x else Fraction(0) for x in v[:-1]] for v in vecs if not v[-1]]
+    if particular is not None and any(x is None for x in particular):
+        particular = None
+    basis = [b for b in basis if all(x is not None for x in b)]
+    return AffineSpace(names, particular, basis, len(rows), rank, rank_aug)
+
+
+def _entries_mod(v: Any) -> list[int]:
+    if hasattr(v, "_view"):
+        return [int(x) for x in v._view().flat]
+    return [int(v)]
+
+
+def lax_partner(L: Callable[[Any], Any], flow: Callable[[Any], Any], size: Size, *, degree: int = 2,
+                lam_powers: int = 2, max_a: int = 1, seed: int = 0,
+                verify: Sequence[str] = ("auto", "free")) -> tuple[AffineSpace, dict[str, str]]:
+    """Every A(λ) = Σ cⱼ λᵏ Wⱼ (words Wⱼ : ℝⁿ → ℝⁿ of degree <= ``degree``, k < ``lam_powers``) with
+    dL/dt = [A, L] along ``flow``; the particular solution found is verified by ``verify``."""
+    from stiefelsym.backends.matrix import comm as _comm
+    from stiefelsym.run.runner import run_one
+    words = open_words(degree, "n", "n", max_a)
+    shapes = [(k, w) for k in range(lam_powers) for w in words]
+
+    def partner(s, coeffs):
+        acc = None
+        for c, (k, w) in coeffs:
+            W = word_matrix(s, w)
+            W = W * (s.lam ** k) if k else W
+            W = W * s.q(c.numerator, c.denominator) if c != 1 else W
+            acc = W if acc is None else acc + W
+        return acc
+
+    terms = [((("" if k == 0 else "λ·" if k == 1 else f"λ^{k}·") + word_text(w)),
+              lambda s, k=k, w=w: _comm(partner(s, [(Fraction(1), (k, w))]), L(s))) for k, w in shapes]
+    space = solve_affine(terms, lambda s: s.d(L, flow(s)), size, seed=seed)
+    verdicts: dict[str, str] = {}
+    if space.particular is not None:
+        coeffs = [(c, kw) for c, kw in zip(space.particular, shapes) if c]
+
+        def check(s):
+            A = partner(s, coeffs) if coeffs else s.zeros(s.n, s.n, ("n", "n"))
+            return {"dL/dt - [A, L]": s.d(L, flow(s)) - _comm(A, L(s))}
+        claim = Claim(id="discovered-lax-partner", paper=("discover",), kind="lax", section="discover",
+                      func=check, sizes=admissible(max(size.n, 1)))
+        for m in verify:
+            res = run_one(claim, None if m == "free" else size, m, seed)
+            verdicts[m if m != "free" else "free (all n, r)"] = res.verdict
+    return space, verdicts
+
+
+# ---------------------------------------------------------------------------------------------
+# corrections: the formulas of the printed shape that hold, as an exact affine space
+
+@dataclass(frozen=True)
+class Term:
+    """One term of a correction ansatz: its value at a point (a function of the scene and of the point),
+    its name in the paper's notation, and the block of the slot it fills (None: the slot is one block)."""
+
+    text: str
+    latex: str
+    value: Callable[[Any, Any], Any]
+    block: tuple[int, int] | None = None
+
+    @property
+    def key(self) -> str:
+        """The term's name, with its block when the slot is a block matrix."""
+        return self.text if self.block is None else f"{self.text} in block ({self.block[0] + 1},{self.block[1] + 1})"
+
+
+@dataclass
+class CorrectionAnsatz:
+    """The space searched for a correction of one printed formula of a claim.
+
+    ``residual(s, slot)`` is the claim's residual (a matrix, or a dict of them) with the formula under
+    correction given by ``slot``, a function of (scene, point) as ``Term.value``; it must be affine in the
+    slot.  ``terms`` are listed most natural first (the printed shape before the rest): the solution is
+    written, modulo the homogeneous solutions, with the most natural terms.  ``printed`` and
+    ``registered`` are the coefficients (by term text) of the printed formula and of the registered
+    correction, when they lie in the ansatz."""
+
+    claim: str
+    label: str
+    slot: str
+    slot_latex: str
+    terms: list[Term]
+    residual: Callable[[Any, Callable[[Any, Any], Any]], Any]
+    point: Callable[[Any], Any]
+    description: str
+    description_latex: str
+    printed: dict[str, Fraction] | None = None
+    registered: dict[str, Fraction] | None = None
+    size: Size = field(default_factory=lambda: Size(3, 2))
+    realization: str = "standard"
+    blocks: tuple[int, int] = (1, 1)
+    #: whether the dimension-free method applies (the claim lives on T*V itself)
+    free: bool = False
+    #: what ``registered`` is
+    registered_name: str = "the registered correction"
+    #: the sizes besides the search's at which each solution is verified
+    verify_sizes: tuple[Size, ...] = ()
+
+    def vector(self, coeffs: dict[str, Fraction]) -> list[Fraction]:
+        names = [t.key for t in self.terms]
+        unknown = set(coeffs) - set(names)
+        if unknown:
+            raise KeyError(f"not terms of the ansatz of {self.claim}: {sorted(unknown)}")
+        return [Fraction(coeffs.get(x, 0)) for x in names]
+
+
+def combination(terms: Sequence[Term], coeffs: Sequence[Fraction]) -> Callable[[Any, Any], Any]:
+    """Σ cⱼ Tⱼ as a function of (scene, point); the empty sum is 0 · T₁ (a zero of the slot's shape)."""
+    pairs = [(c, t) for c, t in zip(coeffs, terms) if c]
+
+    def slot(s, w):
+        if not pairs:
+            return terms[0].value(s, w) * s.q(0)
+        acc = None
+        for c, t in pairs:
+            v = t.value(s, w)
+            v = v if c == 1 else v * s.q(c.numerator, c.denominator)
+            acc = v if acc is None else acc + v
+        return acc
+    return slot
+
+
+def _flat(v: Any) -> list[Any]:
+    """The matrices of a residual (a matrix, a scalar, or a dict/list of them) in a fixed order."""
+    if isinstance(v, dict):
+        return [x for k in v for x in _flat(v[k])]
+    if isinstance(v, (list, tuple)):
+        return [x for e in v for x in _flat(e)]
+    return [v]
+
+
+@dataclass
+class CorrectionSpace:
+    """The solutions of one correction ansatz at one size: an affine space modulo the combinations that
+    vanish identically on the phase space (certified empty when the sampled system is inconsistent)."""
+
+    ansatz: CorrectionAnsatz
+    size: Size
+    particular: list[Fraction] | None
+    basis: list[list[Fraction]]
+    zero_dim: int
+    equations: int
+    rank: int
+    rank_augmented: int
+    seed: int
+    seconds: float = 0.0
+    verdicts: dict[str, str] = field(default_factory=dict)
+    contains_registered: bool | None = None
+    contains_printed: bool | None = None
+
+    @property
+    def N(self) -> int:
+        return len(self.ansatz.terms)
+
+    @property
+    def empty(self) -> bool:
+        return self.particular is None
+
+    @property
+    def dimension(self) -> int | None:
+        """The dimension of the affine space of solutions (modulo what vanishes on the phase space)."""
+        return None if self.particular is None else len(self.basis)
+
+    @property
+    def verified(self) -> bool:
+        return bool(self.verdicts) and all(v in ("proved", "checked") for v in self.verdicts.values())
+
+    def certificate(self) -> str:
+        if self.particular is None:
+            return (f"no formula in this {self.N}-term space holds: over GF(2^61 - 1) the {self.equations} x "
+                    f"{self.N} system has rank {self.rank} and its augmented matrix rank {self.rank_augmented}")
+        what = ("exactly one formula holds" if not self.basis else
+                f"a {len(self.basis)}-dimensional affine space of formulas holds")
+        return (f"{what} in this {self.N}-term space, modulo the {self.zero_dim} independent combinations that "
+                f"vanish on the phase space (the {self.equations} x {self.N} system has rank {self.rank})")
+
+    def text(self, c: Sequence[Fraction] | None = None) -> str:
+        """Σ cⱼ Tⱼ in the paper's notation, block by block when the slot is a block matrix."""
+        c = self.particular if c is None else c
+        if c is None:
+            return "(none)"
+        return _render(self.ansatz, c, latex=False)
+
+    def latex(self, c: Sequence[Fraction] | None = None) -> str:
+        c = self.particular if c is None else c
+        if c is None:
+            return r"\text{(none)}"
+        return _render(self.ansatz, c, latex=True)
+
+    def lines(self) -> list[str]:
+        a, z = self.ansatz, self.size
+        out = [f"{a.claim} {a.label}, (n, r) = ({z.n}, {z.r}): {a.slot} in the {self.N}-term space {a.description}",
+               f"  {self.certificate()}"]
+        if self.particular is not None:
+            v = ", ".join(f"{m} {x}" for m, x in self.verdicts.items())
+            out.append(f"  {a.slot} = {self.text()}" + (f"    [{v}]" if v else ""))
+            for b in self.basis:
+                out.append(f"  + any multiple of {self.text(b)}")
+        if self.contains_printed is not None:
+            out.append(f"  the printed formula {'holds' if self.contains_printed else 'is not in the space'}")
+        if self.contains_registered is not None:
+            out.append(f"  {a.registered_name} {'is in the space' if self.contains_registered else 'is NOT in the space'}")
+        out.append(f"  searched and verified in {self.seconds:.2f} s (seed {self.seed})")
+        return out
+
+
+def _sum_text(parts: list[tuple[Fraction, Term]], latex: bool) -> str:
+    out = []
+    for x, t in parts:
+        a = abs(x)
+        if latex:
+            coef = "" if a == 1 else (rf"\tfrac{{{a.numerator}}}{{{a.denominator}}}" if a.denominator != 1 else str(a))
+            out.append(("-" if x < 0 else "+") + coef + t.latex)
+        else:
+            out.append(f"{'−' if x < 0 else '+'} {'' if a == 1 else f'{a}·'}{t.text}")
+    if not out:
+        return "0"
+    s = ("" if latex else " ").join(out)
+    if latex:
+        return s[1:] if s.startswith("+") else s
+    return s[2:] if s.startswith("+ ") else "−" + s[2:]
+
+
+def _render(a: CorrectionAnsatz, c: Sequence[Fraction], latex: bool) -> str:
+    parts = [(x, t) for x, t in zip(c, a.terms) if x]
+    if a.blocks == (1, 1):
+        return _sum_text([(x, t) for x, t in parts], latex)
+    rows, cols = a.blocks
+    grid = [[_sum_text([(x, t) for x, t in parts if t.block == (i, j)], latex) for j in range(cols)]
+            for i in range(rows)]
+    if latex:
+        return r"\begin{pmatrix}" + r"\\".join("&".join(row) for row in grid) + r"\end{pmatrix}"
+    return "[" + "; ".join(", ".join(row) for row in grid) + "]"
+
+
+def _in_span(v: Sequence[Fraction], basis: Sequence[Sequence[Fraction]]) -> bool:
+    """Whether v lies in the span of ``basis`` (exact rational ranks)."""
+    import flint
+    if not any(v):
+        return True
+    if not basis:
+        return False
+    B = flint.fmpq_mat([[flint.fmpq(x.numerator, x.denominator) for x in b] for b in basis])
+    Bv = flint.fmpq_mat([[flint.fmpq(x.numerator, x.denominator) for x in b] for b in list(basis) + [list(v)]])
+    return Bv.rank() == B.rank()
+
+
+def _reduce(v: list[int], echelon: list[list[int]], p: int) -> list[int]:
+    """v with the pivot columns of the reduced echelon rows ``echelon`` eliminated (mod p)."""
+    v = list(v)
+    for row in echelon:
+        j = next(k for k, x in enumerate(row) if x)
+        if v[j]:
+            c = v[j]
+            v = [(x - c * y) % p for x, y in zip(v, row)]
+    return v
+
+
+def _rref(rows: list[list[int]], N: int, p: int) -> list[list[int]]:
+    import flint
+    if not rows:
+        return []
+    R, rank = flint.nmod_mat(rows, p).rref()
+    return [[int(R[i, j]) for j in range(N)] for i in range(rank)]
+
+
+def correction_space(ansatz: CorrectionAnsatz, size: Size | None = None, *, seed: int = 0,
+                     verify: Sequence[str] = ("auto",), points: int | None = None) -> CorrectionSpace:
+    """Every formula Σ cⱼ Tⱼ of the ansatz that makes the claim's residual vanish on the phase space:
+    the residual of each term is sampled at random points over GF(2^61 − 1), the affine system solved,
+    the combinations that vanish on the phase space quotiented out, the coefficients reconstructed as
+    rationals, and the solution (and each direction of the space) verified by ``verify`` with the
+    catalog's claim.  An inconsistent sampled system certifies that the space is empty."""
+    import time
+
+    import flint
+    from stiefelsym.claims import load_catalog
+    from stiefelsym.backends.fields import ModularField
+    from stiefelsym.ir import compile_claim
+    from stiefelsym.ir.evaluate import evaluate
+    from stiefelsym.run.runner import run_one
+    from stiefelsym.scene import REALIZATIONS, Scene
+
+    t0 = time.perf_counter()
+    size = size or ansatz.size
+    terms, N = ansatz.terms, len(ansatz.terms)
+    # the least natural terms first, so that the reduced echelon forms put their pivots there
+    order = list(reversed(range(N)))
+
+    def probe(s):
+        w = ansatz.point(s)
+        out = {}
+        for j, t in enumerate(terms):
+            out[f"S{j}"] = t.value(s, w)
+        zero = combination(terms, [Fraction(0)] * N)
+        for e, v in enumerate(_flat(ansatz.residual(s, zero))):
+            out[f"R|{e}"] = v
+        for j, t in enumerate(terms):
+            for e, v in enumerate(_flat(ansatz.residual(s, t.value))):
+                out[f"R{j}|{e}"] = v
+        return out
+    cons = REALIZATIONS[ansatz.realization]
+    g = compile_claim(probe, size.n, size.r, (cons.name, cons.build))
+    rng = random.Random(f"{seed}|correct|{ansatz.claim}|{size.n}|{size.r}|{N}")
+    slot_rows: list[list[int]] = []
+    rows: list[list[int]] = []
+    k, stable, last = 0, 0, (-1, -1)
+    # sample until the ranks of both systems stop growing (two more points change neither)
+    while True:
+        scene = Scene(size.n, size.r, ModularField(PRIME), chart="cayley", rng=rng,
+                      component=k % 2 if size.r == size.n else 0, realization=ansatz.realization)
+        out = evaluate(g, scene)
+        k += 1
+        S = [_entries_mod(out[f"S{j}"]) for j in order]
+        slot_rows += [[c[e] for c in S] for e in range(len(S[0]))]
+        keys = sorted((x for x in out if x.startswith("R|")), key=lambda x: int(x[2:]))
+        R0 = [e for x in keys for e in _entries_mod(out[x])]
+        cols = [[(a - b) % PRIME for a, b in zip((e for x in keys for e in _entries_mod(out[f"R{j}|{x[2:]}"])), R0)]
+                for j in order]
+        # Σ cⱼ (Rⱼ − R₀) = −R₀: a null vector (c, t) of [Rⱼ − R₀ | R₀] with t ≠ 0 gives c / t
+        rows += [[c[e] for c in cols] + [R0[e]] for e in range(len(R0))]
+        if len(rows) >= N + 8 and len(slot_rows) >= N + 8:
+            ranks = (flint.nmod_mat(rows, PRIME).rank(), flint.nmod_mat(slot_rows, PRIME).rank())
+            stable = stable + 1 if ranks == last else 0
+            last = ranks
+            if stable >= 2 and k >= (points or 3):
+                break
+    M = flint.nmod_mat(rows, PRIME)
+    rank_aug = M.rank()
+    rank = flint.nmod_mat([r[:-1] for r in rows], PRIME).rank()
+    Z = _rref(_nullspace(slot_rows, N, PRIME), N, PRIME)
+
+    def unorder(v: Sequence[Any]) -> list[Any]:
+        out = [None] * N
+        for pos, j in enumerate(order):
+            out[j] = v[pos]
+        return out
+
+    space = CorrectionSpace(ansatz, size, None, [], len(Z), len(rows), rank, rank_aug, seed)
+    if rank == rank_aug:
+        full = _nullspace(rows, N + 1, PRIME)
+        part = next((v for v in full if v[-1]), None)
+        homogeneous = [v[:-1] for v in full if not v[-1]]
+        H = _quotient(homogeneous, Z, PRIME) if homogeneous else []
+        if part is not None:
+            inv = pow(part[-1], PRIME - 2, PRIME)
+            p0 = [x * inv % PRIME for x in part[:-1]]
+            p0 = _reduce(p0, _rref(H + Z, N, PRIME), PRIME)
+            particular = [_rational(x, PRIME) if x else Fraction(0) for x in p0]
+            basis = [[_rational(x, PRIME) if x else Fraction(0) for x in h] for h in H]
+            if all(x is not None for x in particular) and all(x is not None for b in basis for x in b):
+                space.particular = unorder(particular)
+                space.basis = [unorder(b) for b in basis]
+    zero_basis = [unorder([_rational(x, PRIME) if x else Fraction(0) for x in z]) for z in Z]
+    if space.particular is not None:
+        span = space.basis + [z for z in zero_basis if all(x is not None for x in z)]
+        for name, coeffs in (("registered", ansatz.registered), ("printed", ansatz.printed)):
+            if coeffs is not None:
+                d = [a - b for a, b in zip(ansatz.vector(coeffs), space.particular)]
+                setattr(space, f"contains_{name}", _in_span(d, span))
+        try:
+            claim = load_catalog().get(ansatz.claim)
+        except KeyError:        # a search of one's own: its residual is the whole claim
+            claim = Claim(id=ansatz.claim, paper=("discover",), kind="id", section="discover",
+                          func=lambda s: {}, sizes=admissible(max(size.n, 1)), realization=ansatz.realization)
+        checks = {"": space.particular} | {f" + direction {i + 1}": [a + b for a, b in zip(space.particular, h)]
+                                            for i, h in enumerate(space.basis)}
+        at = [size] + [z for z in ansatz.verify_sizes if z != size]
+        for m in verify:
+            if m == "free" and not ansatz.free:
+                continue
+            verdicts = []
+            for c in checks.values():
+                slot = combination(terms, c)
+
+                def func(s, slot=slot):
+                    r = ansatz.residual(s, slot)
+                    return r if isinstance(r, dict) else {f"{ansatz.label} corrected": r}
+                for z in ([None] if m == "free" else at):
+                    verdicts.append(run_one(claim, z, m, seed, func=func).verdict)
+            key = "free (all n, r)" if m == "free" else (
+                m if len(at) == 1 else f"{m} at " + ", ".join(f"({z.n},{z.r})" for z in at))
+            space.verdicts[key] = next((v for v in verdicts if v not in ("proved", "checked")), verdicts[0])
+    elif ansatz.printed is not None:
+        space.contains_printed = False
+    if ansatz.registered is not None and space.particular is None:
+        space.contains_registered = False
+    space.seconds = time.perf_counter() - t0
+    return space
+
+
+@dataclass(frozen=True)
+class Factor:
+    """A factor of a sandwich UᵀMV: its text, its LaTeX and its value (a function of (scene, point) for
+    the outer factors, of the scene for the middle one); a middle factor may carry a scalar prefix."""
+
+    text: str
+    latex: str
+    value: Callable[..., Any]
+    prefix: str = ""
+    prefix_latex: str = ""
+
+
+def sandwich_terms(left: Sequence[Factor], right: Sequence[Factor], middles: Sequence[Factor],
+                   blocks: Sequence[tuple[int, int]], grid: tuple[int, int], zero: Callable[[Any], Any],
+                   preferred: Callable[[tuple[int, int], Factor, Factor, Factor], int] | None = None,
+                   extra: Sequence[tuple[Factor, tuple[int, int]]] = (),
+                   identities: dict[str, tuple[str, str]] | None = None) -> list[Term]:
+    """The terms (prefix)·U M V placed in one block of a ``grid`` of blocks (``zero(s)`` elsewhere), for
+    every block of ``blocks``, U in ``left``, V in ``right`` and M in ``middles``, and the ``extra``
+    single-block terms; sorted by ``preferred`` (smaller first), then in the order given.  ``identities``
+    renames a word that is simpler on the phase space (its text -> the simpler text and LaTeX)."""
+    rows, cols = grid
+
+    def placed(pos, f):
+        def value(s, w):
+            Z = zero(s)
+            return block([[f(s, w) if (i, j) == pos else Z for j in range(cols)] for i in range(rows)])
+        return value
+    out = []
+    for pos in blocks:
+        for U in left:
+            for V in right:
+                for M in middles:
+                    word = f"{U.text}{M.text}{V.text}"
+                    simple = (identities or {}).get(word)
+                    text = M.prefix + (simple[0] if simple else word)
+                    latex = M.prefix_latex + (simple[1] if simple else f"{U.latex}{M.latex}{V.latex}")
+                    f = (lambda s, w, U=U, V=V, M=M: U.value(s, w) @ M.value(s) @ V.value(s, w))
+                    key = preferred(pos, U, M, V) if preferred else 0
+                    out.append((key, Term(text, latex, placed(pos, f), pos)))
+    for F, pos in extra:
+        out.append((-1, Term(F.text, F.latex, placed(pos, F.value), pos)))
+    return [t for _, (_, t) in sorted(enumerate(out), key=lambda e: (e[1][0], e[0]))]

@@ -1,0 +1,1 @@
+"""Number systems: each evaluates the IR's primitive operations over whole matrices."""

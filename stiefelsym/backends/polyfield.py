@@ -1,0 +1,1625 @@
+"""The exact method's whole-matrix backend: rational functions over flint's multivariate polynomials.
+
+A matrix over :class:`SymbolicField` (below) is kept as a numpy array of flint
+``fmpq_mpoly`` numerators over ONE common denominator, a product of powers of *atoms*: monic
+irreducible polynomials registered once per field (flint factors every new divisor: a
+determinant, λ − aᵢ, aᵢ, ...).  Because the atoms are irreducible, common denominators are
+exact least common multiples without any gcd (the larger exponent of every atom), and a
+numerator cancels against the denominator only by an atom dividing every entry, which is tested
+after every product and inverse (one exact division per atom).
+
+The zero test of a matrix is exact: every numerator is the zero polynomial.  Nothing is
+"probably zero", and no SymPy is involved.  Scalars cross the boundary as symengine expressions
+(the field's elements): traces and pairings are converted to symengine, symengine scalars that
+multiply a matrix are converted to rational functions (memoized per field).  An entry flint
+cannot represent (a non-integer power, a float, an infinity) sends that matrix to the generic
+representation (:class:`ObjMat`: numpy arrays of symengine expressions, expanded entrywise,
+exactly what :mod:`stiefelsym.backends.matrix` does without a backend).
+
+flint contexts have a fixed number of variables while parameters appear on the fly: the ring
+starts with 16 variables and doubles its context when it runs out, lifting every stored matrix
+to the new context the next time it is used (by generator names, which never change).
+"""
+from __future__ import annotations
+
+from fractions import Fraction
+from typing import Any
+
+import math
+import re
+import os
+
+import numpy as np
+
+from stiefelsym._lazy import lazy
+from stiefelsym.backends.fields import DegenerateError, Field, SymbolicBudget
+from stiefelsym.backends.matrix import engine_number_type
+from stiefelsym.backends.native import Backend
+from stiefelsym.backends import ratmat
+from stiefelsym.backends.denominators import NODEN, _merge_add, _merge_max, _minus  # noqa: F401 (ratmat's too)
+from stiefelsym.backends.ratmat import RatMat
+
+flint = lazy("flint", globals())
+se = lazy("symengine", globals(), "se")
+
+_INITIAL_VARS = 16
+#: beyond this many parameters (a generic operator on so(n) brings n(n-1)/2 (n(n-1)/2 + 1)/2 of
+#: them) a monomial costs a byte per parameter in flint: new matrices stay symengine expressions
+MAX_VARS = 128
+
+
+class NotRational(TypeError):
+    """A symbolic expression that is not a rational function with rational coefficients."""
+
+
+#: flint's exception classes, imported on first use (flint loads lazily)
+_FLINT_ERRORS: list = []
+
+
+def _flint_errors() -> list:
+    if not _FLINT_ERRORS:
+        from flint.utils.flint_exceptions import DomainError, IncompatibleContextError
+        _FLINT_ERRORS[:] = [DomainError, IncompatibleContextError]
+    return _FLINT_ERRORS
+
+
+def _domain_error():
+    return (_FLINT_ERRORS or _flint_errors())[0]
+
+
+def _incompatible_error():
+    return (_FLINT_ERRORS or _flint_errors())[1]
+
+
+_CONTEXTS: dict[int, tuple] = {}
+
+
+def _context(cap: int) -> tuple:
+    """The flint context with ``cap`` variables x0, x1, ..., its generators, 0 and 1 (shared)."""
+    hit = _CONTEXTS.get(cap)
+    if hit is None:
+        ctx = flint.fmpq_mpoly_ctx.get(tuple(f"x{i}" for i in range(cap)), "degrevlex")
+        hit = _CONTEXTS[cap] = (ctx, ctx.gens(), ctx.from_dict({}), ctx.constant(1))
+    return hit
+
+
+def _name_key(name: str) -> tuple:
+    """A variable's name in natural order (A_1,2 before A_1,10; every part a (kind, value) pair, so that
+    texts and numbers compare)."""
+    return tuple((0, int(t)) if t.isdigit() else (1, t) for t in re.split(r"(\d+)", name) if t)
+
+
+def _term_key(term: tuple) -> tuple:
+    """Degree-lexicographic order of a monomial ((name, exponent), ...), highest first."""
+    mono = term[0]
+    return (-sum(e for _, e in mono), tuple((_name_key(nm), -e) for nm, e in mono))
+
+
+class PolyRing:
+    """The variables, the flint context, the denominator atoms and the conversions of one field."""
+
+    def __init__(self) -> None:
+        self.syms: list = []               # symengine symbol of each variable index
+        self.index: dict = {}              # symengine symbol -> variable index
+        self.atoms: list = []              # monic irreducible polynomials (current context)
+        self.atom_key: dict[str, int] = {}  # str(atom) -> atom id
+        self._atom_se: dict[int, Any] = {}
+        self._pow: dict[tuple[int, int], Any] = {}
+        self._factor_memo: dict[str, tuple] = {}
+        self.memo: dict = {}               # symengine expression -> (numerator, denominator)
+        self.version = 0                   # bumped when the context grows
+        self.ctx = None
+        self._set_ctx(_INITIAL_VARS)
+        # parameters beyond MAX_VARS, in the encoded form of :class:`_BigPoly` (never ring variables)
+        self.big: dict = {}                # symengine symbol -> index of the parameter
+        self.big_syms: list = []
+        self.big_memo: dict = {}           # symengine expression -> _BigPoly (or None: not representable)
+        self._big = None                   # (key, shell bound S, context, generators)
+        self._big_name_memo: dict = {}
+
+    # -- context ------------------------------------------------------------------
+    def _set_ctx(self, cap: int) -> None:
+        old = self.ctx
+        self.cap = cap
+        self.ctx, self.gens, self.zero, self.one = _context(cap)
+        if old is not None:
+            self.version += 1
+            self._big = None                   # the encoded form's context follows the ring's
+            self.atoms = [p.project_to_context(self.ctx) for p in self.atoms]
+            self._pow.clear()
+            self._factor_memo.clear()
+            self.memo.clear()
+
+    def lift(self, p):
+        """A polynomial of an older context in the current one."""
+        return p.project_to_context(self.ctx)
+
+    def var(self, sym) -> Any:
+        i = self.index.get(sym)
+        if i is None:
+            if sym in self.big:
+                raise NotRational("a parameter held in the encoded form of the parameters beyond the ring's")
+            i = len(self.syms)
+            if i >= MAX_VARS:
+                raise NotRational(f"more than {MAX_VARS} parameters (flint's exponent vectors are dense)")
+            if i >= self.cap:
+                self._set_ctx(2 * self.cap)
+            self.syms.append(sym)
+            self.index[sym] = i
+        return self.gens[i]
+
+    def const(self, q) -> Any:
+        if isinstance(q, int):
+            return self.ctx.constant(q)
+        return self.ctx.constant(flint.fmpq(q.numerator, q.denominator))
+
+    # -- denominator atoms ------------------------------------------------------------
+    def atom_pow(self, k: int, e: int):
+        key = (k, e)
+        p = self._pow.get(key)
+        if p is None:
+            p = self.atoms[k] ** e
+            self._pow[key] = p
+        return p
+
+    def den_poly(self, d: tuple):
+        out = self.one
+        for k, e in d:
+            out = out * self.atom_pow(k, e)
+        return out
+
+    def factor(self, p) -> tuple[Any, tuple]:
+        """p = c * prod atom^e: the rational content c (a constant polynomial) and the atoms."""
+        key = str(p)
+        hit = self._factor_memo.get(key)
+        if hit is not None:
+            return hit
+        c, facs = p.factor()
+        den = {}
+        for f, e in facs:
+            if f.is_constant():
+                c = c * f.leading_coefficient() ** e
+                continue
+            lc = f.leading_coefficient()
+            if lc != 1:
+                f = f / lc
+                c = c * lc ** e
+            fk = str(f)
+            k = self.atom_key.get(fk)
+            if k is None:
+                k = len(self.atoms)
+                self.atoms.append(f)
+                self.atom_key[fk] = k
+            den[k] = den.get(k, 0) + e
+        out = (self.ctx.constant(c), tuple(sorted(den.items())))
+        self._factor_memo[key] = out
+        return out
+
+    # -- scalar rational functions: (numerator, denominator atoms) ----------------------
+    def rf_add(self, a, b):
+        (n1, d1), (n2, d2) = a, b
+        if d1 == d2:
+            return (n1 + n2, d1)
+        D = _merge_max(d1, d2)
+        return (n1 * self.den_poly(_minus(D, d1)) + n2 * self.den_poly(_minus(D, d2)), D)
+
+    def rf_sum(self, parts: list):
+        """The sum of rational functions: the numerators over each denominator added pairwise in a
+        balanced tree (a sum of k terms one by one costs O(k²) in sparse polynomial additions), then
+        the groups over their common denominator (the result does not depend on the order)."""
+        groups: dict = {}
+        for n, d in parts:
+            groups.setdefault(d, []).append(n)
+        acc = None
+        for d, ns in groups.items():
+            while len(ns) > 1:
+                ns = [ns[k] + ns[k + 1] if k + 1 < len(ns) else ns[k] for k in range(0, len(ns), 2)]
+            acc = (ns[0], d) if acc is None else self.rf_add(acc, (ns[0], d))
+        return acc
+
+    def rf_mul(self, a, b):
+        return (a[0] * b[0], _merge_add(a[1], b[1]))
+
+    def rf_inv(self, a):
+        n, d = a
+        if n.is_zero():
+            raise ZeroDivisionError("division by an identically zero expression")
+        c, atoms = self.factor(n)
+        return (self.den_poly(d) / c, atoms)
+
+    def rf_reduce(self, a):
+        n, d = a
+        if not d:
+            return a
+        if n.is_zero():
+            return (self.zero, NODEN)
+        return self.cancel(n, d)
+
+    def cancel(self, n, d: tuple, only=None) -> tuple:
+        """(n', d'): n over the atoms d (with exponents), every atom (of ``only``, if given)
+        divided out of n as often as it divides it (exact divisions)."""
+        DomainError = _domain_error()
+        out = []
+        for k, e in d:
+            if only is None or k in only:
+                f = self.atoms[k]
+                while e > 0:
+                    try:
+                        n = n / f
+                    except DomainError:
+                        break
+                    e -= 1
+            if e:
+                out.append((k, e))
+        return (n, tuple(out))
+
+    def from_se(self, x):
+        """A symengine expression as a reduced rational function (memoized); a scalar of the backend
+        (:class:`_RF`) of this ring as it is."""
+        if type(x) is _RF:
+            if x.R is self:
+                return self.rf_reduce(x.rf())
+            x = x.to_se()
+        try:
+            hit = self.memo.get(x)
+        except TypeError:      # an unhashable object: not an expression of this field
+            raise NotRational(f"not a symbolic expression: {type(x).__name__}") from None
+        if hit is not None:
+            return hit
+        Incompatible = _incompatible_error()
+        while True:
+            v = self.version
+            try:
+                r = self._conv(x)
+            except Incompatible:
+                if v == self.version:
+                    raise
+                continue               # the context grew on the way: convert again in the new one
+            if v == self.version:
+                break
+        r = self.rf_reduce(r)
+        self.memo[x] = r
+        return r
+
+    def _conv(self, x):
+        if not isinstance(x, se.Basic):
+            if isinstance(x, int):
+                return (self.ctx.constant(x), NODEN)
+            if isinstance(x, Fraction):
+                return (self.const(x), NODEN)
+            raise NotRational(f"not a symbolic expression: {type(x).__name__}")
+        if x.is_Symbol:
+            return (self.var(x), NODEN)
+        if x.is_Number:
+            if x.is_Integer:
+                return (self.ctx.constant(int(x)), NODEN)
+            if x.is_Rational:
+                return (self.ctx.constant(flint.fmpq(int(x.p), int(x.q))), NODEN)
+            raise NotRational(f"not a rational number: {x}")
+        memo = self.memo
+        if x.is_Add:
+            return self.rf_sum([memo.get(t) or self._conv(t) for t in x.args])
+        if x.is_Mul:
+            acc = None
+            for t in x.args:
+                r = memo.get(t) or self._conv(t)
+                acc = r if acc is None else self.rf_mul(acc, r)
+            return acc
+        if x.is_Pow:
+            b, e = x.args
+            if not e.is_Integer:
+                raise NotRational(f"a non-integer power: {x}")
+            k = int(e)
+            r = memo.get(b) or self._conv(b)
+            if k < 0:
+                try:
+                    r = self.rf_inv(r)
+                except ZeroDivisionError as exc:
+                    raise NotRational(str(exc)) from None
+                k = -k
+            return (r[0] ** k, tuple((a, m * k) for a, m in r[1]))
+        raise NotRational(f"not a rational function: {type(x).__name__}")
+
+    # -- back to symengine ------------------------------------------------------------
+    def poly_se(self, p):
+        if p.is_zero():
+            return se.Integer(0)
+        syms = self.syms
+        used = [i for i, d in enumerate(p.degrees()) if d]
+        terms = []
+        for exps, c in p.terms():
+            cf = se.Integer(int(c.p)) if c.q == 1 else se.Rational(int(c.p), int(c.q))
+            fs = [cf]
+            for i in used:
+                e = exps[i]
+                if e:
+                    fs.append(syms[i] if e == 1 else se.Pow(syms[i], int(e)))
+            terms.append(se.Mul(*fs) if len(fs) > 1 else cf)
+        return se.Add(*terms) if len(terms) > 1 else terms[0]
+
+    def poly_text(self, p) -> str:
+        """p as text in a canonical order (:meth:`_terms`): the same in every process and whatever the
+        order in which the ring met its variables (a symengine expression's text orders its terms by
+        hashes of the parameters, whose symbols are unique per process; flint's own order follows the
+        variables' order of first use, which depends on what the process computed before)."""
+        return self._terms_text(self._terms(p))
+
+    def _terms(self, p) -> list:
+        """The terms of p as (monomial, coefficient), a monomial a tuple of (name, exponent) in the
+        natural order of the variables' names; the terms in degree-lexicographic order of the
+        monomials, highest first (the order depends on the names only)."""
+        names = [str(x) for x in self.syms]
+        out = []
+        for exps, c in p.terms():
+            mono = tuple(sorted(((names[i], int(e)) for i, e in enumerate(exps) if e),
+                                key=lambda t: _name_key(t[0])))
+            out.append((mono, c))
+        out.sort(key=_term_key)
+        return out
+
+    @staticmethod
+    def _terms_text(terms: list) -> str:
+        if not terms:
+            return "0"
+        out = []
+        for mono, c in terms:
+            text = "*".join(name if e == 1 else f"{name}**{e}" for name, e in mono)
+            neg = c < 0
+            c = -c if neg else c
+            if not text:
+                t = str(c)
+            elif c == 1:
+                t = text
+            else:
+                t = f"{c}*{text}"
+            out.append(("- " if neg else "+ ") + t if out else ("-" if neg else "") + t)
+        return " ".join(out)
+
+    def text(self, r) -> str:
+        """A rational function (numerator, denominator atoms) as text in a canonical order: the terms of
+        each polynomial as :meth:`poly_text` orders them, each factor of the denominator with a positive
+        leading coefficient in that order (its sign moved to the numerator), the factors sorted by text."""
+        n, d = self.rf_reduce(r)
+        num = self._terms(n)
+        if not d:
+            return self._terms_text(num)
+        flip = False
+        dens = []
+        for k, e in d:
+            terms = self._terms(self.atoms[k])
+            if terms and terms[0][1] < 0:
+                terms = [(m, -c) for m, c in terms]
+                flip ^= e % 2 == 1
+            dens.append((self._terms_text(terms), e))
+        if flip:
+            num = [(m, -c) for m, c in num]
+        den = "*".join(f"({t})" + (f"**{e}" if e > 1 else "") for t, e in sorted(dens))
+        text = self._terms_text(num)
+        return f"({text})/({den})" if len(num) > 1 else f"{text}/({den})"
+
+    def atom_se(self, k: int):
+        s = self._atom_se.get(k)
+        if s is None:
+            s = self._atom_se[k] = self.poly_se(self.atoms[k])
+        return s
+
+    def to_se(self, r):
+        """A rational function as a symengine expression (remembered for the way back)."""
+        n, d = r
+        out = self.poly_se(n)
+        if d and not n.is_zero():
+            den = [self.atom_se(k) if e == 1 else se.Pow(self.atom_se(k), e) for k, e in d]
+            out = out / (se.Mul(*den) if len(den) > 1 else den[0])
+        elif d:
+            r = (n, NODEN)
+        self.memo.setdefault(out, r)
+        return out
+
+
+    # -- parameters beyond the ring's: the encoded form (see _BigPoly) ----------------
+    def big_ctx(self) -> tuple:
+        """The context of the encoded form: the ring's variables x0.., then u0..u(S-1), v0..v(S-1)
+        (S² >= the number of encoded parameters), as (key, S, context, generators); rebuilt when
+        the ring or the number of encoded parameters grows (values are lifted by name)."""
+        hit = self._big
+        if hit is not None and len(self.big_syms) <= hit[1] * hit[1]:
+            return hit
+        from math import isqrt
+        need = isqrt(max(len(self.big_syms) - 1, 0)) + 1
+        S = max(need, 8, 2 * hit[1] if hit is not None else 0)
+        names = tuple(f"x{i}" for i in range(self.cap)) + tuple(f"u{a}" for a in range(S)) \
+            + tuple(f"v{b}" for b in range(S))
+        ctx = flint.fmpq_mpoly_ctx.get(names, "degrevlex")
+        self._big = (object(), S, ctx, ctx.gens())
+        return self._big
+
+    def big_register(self, a: np.ndarray) -> None:
+        """Enter the new parameters that are entries of a matrix in the encoded form at once (in the
+        order they occur), so that the encoded context grows once, not once per doubling."""
+        if len(self.syms) < MAX_VARS:
+            return
+        index, big, new = self.index, self.big, {}
+        for x in a.flat:                       # a matrix of parameters (the parameters of other
+            if isinstance(x, se.Symbol) and x not in index and x not in big:   # entries: one by one)
+                new[x] = None
+        for y in new:
+            big[y] = len(self.big_syms)
+            self.big_syms.append(y)
+        self.big_ctx()
+
+    def big_var(self, sym):
+        """The encoded parameter u_a v_b of a symbol that is not (and never will be) a ring variable:
+        parameter k is the pair (a, b) of the square-shell enumeration (k = b² + a for a < b,
+        k = a² + a + b otherwise), the same at every S."""
+        k = self.big.get(sym)
+        if k is None:
+            k = self.big[sym] = len(self.big_syms)
+            self.big_syms.append(sym)
+        _, S, ctx, gens = self.big_ctx()
+        a, b = _unpair(k)
+        return gens[self.cap + a] * gens[self.cap + S + b]
+
+    def big_from_se(self, x) -> "_BigPoly":
+        """A symengine expression as a :class:`_BigPoly` (memoized), or NotRational: a non-polynomial
+        expression, or one of degree > 1 in the encoded parameters (where the encoding is not faithful)."""
+        try:
+            hit = self.big_memo[x]
+        except KeyError:
+            hit = False
+        except TypeError:
+            raise NotRational(f"not a symbolic expression: {type(x).__name__}") from None
+        if hit is None:
+            raise NotRational("not representable in the encoded form")
+        if hit is not False:
+            return hit
+        r = self.memo.get(x) if isinstance(x, se.Basic) else None
+        if r is not None and not r[1]:
+            out = _BigPoly(self, r[0].project_to_context(self.big_ctx()[2]), False)
+        else:
+            Incompatible = _incompatible_error()
+            while True:
+                key = self._big_key()
+                try:
+                    p, lin = self._big_conv(x, {})
+                except NotRational:
+                    self.big_memo[x] = None
+                    raise
+                except _Restart:
+                    continue
+                except Incompatible:
+                    if key == self._big_key():
+                        raise
+                    continue
+                if key == self._big_key():
+                    break
+            out = _BigPoly(self, p, lin)
+        self.big_memo[x] = out
+        return out
+
+    def _big_key(self):
+        return self.big_ctx()[0]
+
+    def _big_conv(self, x, memo):
+        """(polynomial in the encoded context, whether it involves an encoded parameter)."""
+        _, S, ctx, gens = self.big_ctx()
+        if isinstance(x, int):
+            return ctx.constant(x), False
+        if isinstance(x, Fraction):
+            return ctx.constant(flint.fmpq(x.numerator, x.denominator)), False
+        if not isinstance(x, se.Basic):
+            raise NotRational(f"not a symbolic expression: {type(x).__name__}")
+        hit = memo.get(x)
+        if hit is not None:
+            return hit
+        if x.is_Symbol:
+            i = self.index.get(x)
+            if i is None and x not in self.big and len(self.syms) < MAX_VARS:
+                v = self.version
+                self.var(x)                            # a ring variable while there is room
+                if v != self.version:
+                    raise _Restart()
+                i = self.index[x]
+            out = (self.big_ctx()[3][i], False) if i is not None else (self.big_var(x), True)
+        elif x.is_Number:
+            if x.is_Integer:
+                out = (ctx.constant(int(x)), False)
+            elif x.is_Rational:
+                out = (ctx.constant(flint.fmpq(int(x.p), int(x.q))), False)
+            else:
+                raise NotRational(f"not a rational number: {x}")
+        elif x.is_Add:
+            acc, lin = None, False
+            for t in x.args:
+                p, l = self._big_conv(t, memo)
+                acc = p if acc is None else acc + p
+                lin = lin or l
+            out = (acc, lin)
+        elif x.is_Mul:
+            acc, lin = None, False
+            for t in x.args:
+                p, l = self._big_conv(t, memo)
+                if l and lin:
+                    raise NotRational("of degree > 1 in the encoded parameters")
+                acc = p if acc is None else acc * p
+                lin = lin or l
+            out = (acc, lin)
+        elif x.is_Pow:
+            b, e = x.args
+            if not e.is_Integer or int(e) < 0:
+                raise NotRational(f"not a polynomial: {x}")
+            p, l = self._big_conv(b, memo)
+            k = int(e)
+            if l and k > 1:
+                raise NotRational("of degree > 1 in the encoded parameters")
+            out = (p ** k, l and k == 1)
+        else:
+            raise NotRational(f"not a polynomial: {type(x).__name__}")
+        memo[x] = out
+        return out
+
+    def _big_name(self, nm: str):
+        """A variable name of an encoded context: ("x", symbol), ("u", a) or ("v", b) (memoized)."""
+        hit = self._big_name_memo.get(nm)
+        if hit is None:
+            if nm[0] == "x":
+                hit = ("x", self.syms[int(nm[1:])])
+            elif nm[0] in "uv":
+                hit = (nm[0], int(nm[1:]))
+            else:
+                raise AssertionError(f"an unknown variable {nm!r} in the encoded form")
+            self._big_name_memo[nm] = hit
+        return hit
+
+    def big_to_se(self, p):
+        """An encoded polynomial (of degree <= 1 in the encoded parameters) as a symengine expression,
+        read from flint's text of it (terms "c*x0^2*u3*v5" joined by " + " and " - ")."""
+        if p.is_zero():
+            return se.Integer(0)
+        name = self._big_name
+        big_syms = self.big_syms
+        terms = []
+        for tok in str(p).replace(" - ", " + -").split(" + "):
+            neg = tok[0] == "-"
+            fs = (tok[1:] if neg else tok).split("*")
+            head = fs[0]
+            if head[0].isdigit():
+                num, _, den = head.partition("/")
+                c = se.Integer(int(num)) if not den else se.Rational(int(num), int(den))
+                fs = fs[1:]
+            else:
+                c = se.Integer(1)
+            out = [-c if neg else c]
+            ua = vb = None
+            for f in fs:
+                nm, _, e = f.partition("^")
+                kind, v = name(nm)
+                if kind == "x":
+                    out.append(v if not e else se.Pow(v, int(e)))
+                elif e or (ua if kind == "u" else vb) is not None:
+                    raise AssertionError("an encoded term of degree > 1 in the encoded parameters")
+                elif kind == "u":
+                    ua = v
+                else:
+                    vb = v
+            if (ua is None) != (vb is None):
+                raise AssertionError("an encoded term with half a parameter")
+            if ua is not None:
+                out.append(big_syms[_pair(ua, vb)])
+            terms.append(se.Mul(*out) if len(out) > 1 else out[0])
+        return se.Add(*terms) if len(terms) > 1 else terms[0]
+
+
+class _Restart(Exception):
+    """The ring grew during a conversion to the encoded form: convert again."""
+
+
+def _pair(a: int, b: int) -> int:
+    return b * b + a if a < b else a * a + a + b
+
+
+def _unpair(k: int) -> tuple[int, int]:
+    from math import isqrt
+    s = isqrt(k)
+    t = k - s * s
+    return (t, s) if t < s else (s, t - s)
+
+
+class _BigPoly:
+    """An entry of a generic (:class:`ObjMat`) matrix that involves parameters beyond the ring's
+    MAX_VARS (a generic operator's coefficients): a flint polynomial in the ring's variables and
+    2S more, u_0..u_(S-1), v_0..v_(S-1), where parameter k is u_a v_b ((a, b) = _unpair(k)).
+
+    The map is a ring homomorphism that is injective on polynomials of degree <= 1 in the encoded
+    parameters (their monomials u_a v_b are distinct and no ring variable is encoded), so the zero
+    test of such a value is exact.  Every value is kept of degree <= 1: ``lin`` says (possibly
+    conservatively) that it involves an encoded parameter, a product of two such values, a power
+    or a quotient is computed as a symengine expression instead (the generic path, exact), and so
+    is any operation with an expression that is not a polynomial of degree <= 1."""
+
+    __slots__ = ("R", "p", "key", "lin", "s")
+
+    def __init__(self, R: PolyRing, p, lin: bool, key=None) -> None:
+        self.R, self.p, self.lin, self.s = R, p, lin, None
+        self.key = key if key is not None else R.big_ctx()[0]
+
+    def _symengine_(self):
+        from stiefelsym._lazy import symengine_opaque
+        return symengine_opaque()
+
+    def _cur(self):
+        big = self.R._big
+        if big is None or self.key is not big[0] or len(self.R.big_syms) > big[1] * big[1]:
+            big = self.R.big_ctx()
+            if self.key is not big[0]:
+                self.p = self.p.project_to_context(big[2])
+                self.key = big[0]
+        return self.p
+
+    def _of(self, o):
+        if type(o) is _BigPoly:
+            return o
+        try:
+            return self.R.big_from_se(o)
+        except NotRational:
+            return None
+
+    def to_se(self):
+        if self.s is None:
+            self.s = self.R.big_to_se(self._cur())
+            self.R.big_memo[self.s] = self     # the way back (a value read and converted again)
+        return self.s
+
+    def is_zero(self) -> bool:
+        return self.p.is_zero()
+
+    def __bool__(self) -> bool:
+        return not self.p.is_zero()
+
+    def _new(self, p, lin):
+        return _BigPoly(self.R, p, lin, self.key)
+
+    def __add__(self, o):
+        b = self._of(o)
+        if b is None:
+            return self.to_se() + o if _plain(o) else NotImplemented
+        return self._new(self._cur() + b._cur(), self.lin or b.lin)
+
+    __radd__ = __add__
+
+    def __sub__(self, o):
+        b = self._of(o)
+        if b is None:
+            return self.to_se() - o if _plain(o) else NotImplemented
+        return self._new(self._cur() - b._cur(), self.lin or b.lin)
+
+    def __rsub__(self, o):
+        b = self._of(o)
+        if b is None:
+            return o - self.to_se() if _plain(o) else NotImplemented
+        return self._new(b._cur() - self._cur(), self.lin or b.lin)
+
+    def __neg__(self):
+        return self._new(-self._cur(), self.lin)
+
+    def __mul__(self, o):
+        b = self._of(o)
+        if b is None:
+            return self.to_se() * o if _plain(o) else NotImplemented
+        if self.lin and b.lin:                 # degree 2 in the encoded parameters: not faithful
+            return self.to_se() * b.to_se()
+        return self._new(self._cur() * b._cur(), self.lin or b.lin)
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, o):
+        return self.to_se() / (o.to_se() if type(o) is _BigPoly else o)
+
+    def __rtruediv__(self, o):
+        return o / self.to_se()
+
+    def __pow__(self, k):
+        return self.to_se() ** k
+
+    def __repr__(self):
+        return f"_BigPoly({self.to_se()})"
+
+
+def _plain(o) -> bool:
+    return isinstance(o, (se.Basic, int, Fraction))
+
+
+@engine_number_type
+class _RF:
+    """A scalar of the exact backend kept in flint: a rational function (numerator, denominator
+    atoms) of one ring, as a trace, a pairing or an entry of a matrix of the backend leaves it.
+
+    Sums, products, quotients and integer powers of such scalars, and with integers and fractions,
+    stay in flint; anything else meets the scalar as its symengine expression (:meth:`to_se`,
+    converted once and remembered by the ring for the way back).  So a scalar computed from
+    entries (a minor, a Plücker coordinate, a bracket's sum) and then put back into a matrix or
+    tested for zero is never converted to symengine and back.  The zero test is exact: the
+    numerator is the zero polynomial."""
+
+    __slots__ = ("R", "n", "d", "v", "s")
+
+    def __init__(self, R: "PolyRing", rf: tuple) -> None:
+        self.R, (self.n, self.d), self.v, self.s = R, rf, R.version, None
+
+    def _symengine_(self):
+        # what symengine's arithmetic sees of it: a matrix (as for _BigPoly), so that with a symengine
+        # operand on the left symengine returns NotImplemented and the reflected operator below
+        # computes in flint (the operand converted, memoized); the engine converts a scalar to
+        # symengine only through normalize(), from_se() or to_se()
+        from stiefelsym._lazy import symengine_opaque
+        return symengine_opaque()
+
+    def _sympy_(self):
+        return self.to_se()._sympy_()
+
+    def rf(self) -> tuple:
+        """(numerator, atoms) in the ring's current context."""
+        if self.v != self.R.version:
+            self.n, self.v = self.R.lift(self.n), self.R.version
+        return (self.n, self.d)
+
+    def to_se(self):
+        if self.s is None:
+            self.s = self.R.to_se(self.R.rf_reduce(self.rf()))
+        return self.s
+
+    def is_zero(self) -> bool:
+        return self.n.is_zero()
+
+    def _of(self, o):
+        """o as a rational function of this ring, or None."""
+        t = type(o)
+        if t is _RF:
+            return o.rf() if o.R is self.R else None
+        if t is int or t is Fraction:
+            return (self.R.const(o), NODEN)
+        if isinstance(o, se.Basic):
+            try:
+                return self.R.from_se(o)
+            except NotRational:
+                return None
+        return None
+
+    def _new(self, rf: tuple) -> "_RF":
+        return _RF(self.R, rf)
+
+    def __add__(self, o):
+        b = self._of(o)
+        if b is None:
+            return self.to_se() + o if _plain(o) else NotImplemented
+        return self._new(self.R.rf_add(self.rf(), b))
+
+    __radd__ = __add__
+
+    def __neg__(self):
+        n, d = self.rf()
+        return self._new((-n, d))
+
+    def __pos__(self):
+        return self
+
+    def __sub__(self, o):
+        b = self._of(o)
+        if b is None:
+            return self.to_se() - o if _plain(o) else NotImplemented
+        return self._new(self.R.rf_add(self.rf(), (-b[0], b[1])))
+
+    def __rsub__(self, o):
+        b = self._of(o)
+        if b is None:
+            return o - self.to_se() if _plain(o) else NotImplemented
+        n, d = self.rf()
+        return self._new(self.R.rf_add(b, (-n, d)))
+
+    def __mul__(self, o):
+        b = self._of(o)
+        if b is None:
+            return self.to_se() * o if _plain(o) else NotImplemented
+        return self._new(self.R.rf_mul(self.rf(), b))
+
+    __rmul__ = __mul__
+
+    def _inverse(self, rf: tuple) -> tuple:
+        try:
+            return self.R.rf_inv(rf)
+        except ZeroDivisionError:
+            raise ZeroDivisionError("division by an identically zero expression") from None
+
+    def __truediv__(self, o):
+        b = self._of(o)
+        if b is None:
+            return self.to_se() / o if _plain(o) else NotImplemented
+        return self._new(self.R.rf_mul(self.rf(), self._inverse(b)))
+
+    def __rtruediv__(self, o):
+        b = self._of(o)
+        if b is None:
+            return o / self.to_se() if _plain(o) else NotImplemented
+        return self._new(self.R.rf_mul(b, self._inverse(self.rf())))
+
+    def __pow__(self, k):
+        if type(k) is not int:
+            return self.to_se() ** k
+        n, d = self.rf() if k >= 0 else self._inverse(self.rf())
+        k = abs(k)
+        return self._new((n ** k, tuple((a, m * k) for a, m in d)))
+
+    def __eq__(self, o):
+        b = self._of(o)
+        if b is None:
+            return self.to_se() == o
+        return self.R.rf_add(self.rf(), (-b[0], b[1]))[0].is_zero()
+
+    def __ne__(self, o):
+        return not self == o
+
+    def __hash__(self):
+        return hash(self.to_se())
+
+    def __float__(self):
+        return float(self.to_se())
+
+    def __int__(self):
+        return int(self.to_se())
+
+    def __str__(self):
+        return str(self.to_se())
+
+    def __repr__(self):
+        return f"_RF({self.to_se()})"
+
+
+def _se(x):
+    """An entry of a generic matrix as a symengine expression."""
+    return x.to_se() if type(x) is _BigPoly or type(x) is _RF else x
+
+
+# ----------------------------------------------------------------------------- matrices
+class PolyMat:
+    """A matrix of polynomial numerators (numpy object array) over one denominator (atoms)."""
+
+    __slots__ = ("a", "den", "ctx", "z", "o")
+
+    def __init__(self, a: np.ndarray, den: tuple, ctx, z: bool = False) -> None:
+        #: z: known to be the zero matrix (derivatives of constants: products skip it)
+        self.a, self.den, self.ctx, self.z = a, den, ctx, z
+        #: the entries as symengine expressions, once computed (read only)
+        self.o = None
+
+
+class ObjMat:
+    """The generic representation for a matrix flint cannot hold: symengine expressions."""
+
+    __slots__ = ("a",)
+
+    def __init__(self, a: np.ndarray) -> None:
+        self.a = a
+
+
+def _scalar_array(x) -> np.ndarray:
+    out = np.empty((), dtype=object)
+    out[()] = x
+    return out
+
+
+class PolyBackend(Backend):
+    """Whole-matrix operations over rational functions in flint (see the module docstring)."""
+
+    def __init__(self, field, ring: PolyRing) -> None:
+        self.field, self.ring = field, ring
+        #: results of operations, keyed by the operation and its operands' identities (see _remember)
+        self._memo: dict = {}
+
+    # -- helpers ---------------------------------------------------------------------
+    def _fix(self, s):
+        """A PolyMat or RatMat in the ring's current context (its numerators lifted once when the
+        context grew)."""
+        R = self.ring
+        if s.ctx is not R.ctx:
+            lift = R.lift
+            out = np.empty(s.a.shape, dtype=object)
+            for idx, x in np.ndenumerate(s.a):
+                out[idx] = lift(x)
+            s.a, s.ctx = out, R.ctx
+        return s
+
+    def _fill(self, m: int, k: int, x) -> np.ndarray:
+        a = np.empty((m, k), dtype=object)
+        a.fill(x)
+        return a
+
+    def _pm(self, a: np.ndarray, den: tuple) -> PolyMat:
+        return PolyMat(a, den, self.ring.ctx)
+
+    def _scale(self, a: np.ndarray, f) -> np.ndarray:
+        return _ew_scale(a, f)
+
+    def _to(self, s: PolyMat, D: tuple) -> np.ndarray:
+        """The numerators of s over the larger denominator D."""
+        if s.den == D:
+            return s.a
+        f = self.ring.den_poly(_minus(D, s.den))
+        return self._scale(s.a, f)
+
+    def _reduce(self, a: np.ndarray, den: tuple) -> PolyMat:
+        """Cancel every atom that divides every numerator (exact divisions, smallest entry first:
+        an atom that does not divide usually fails at the first try)."""
+        if not den:
+            return self._pm(a, den)
+        R = self.ring
+        nz = [(i, x) for i, x in enumerate(a.flat) if not x.is_zero()]
+        if not nz:
+            return self._pm(a, NODEN)
+        DomainError = _domain_error()
+        nz.sort(key=lambda t: len(t[1]))
+        out, changed = [], False
+        for k, e in den:
+            f = R.atoms[k]
+            while e > 0:
+                try:
+                    q = [(i, x / f) for i, x in nz]
+                except DomainError:
+                    break
+                nz, e, changed = q, e - 1, True
+            if e:
+                out.append((k, e))
+        if changed:
+            a = self._fill(a.shape[0], a.shape[1], R.zero)
+            flat = a.reshape(-1)
+            for i, x in nz:
+                flat[i] = x
+        return self._pm(a, tuple(out))
+
+    def _obj(self, s) -> np.ndarray:
+        """The entries as symengine expressions, read only (converted once per matrix)."""
+        if type(s) is ObjMat:
+            return s.a
+        if s.o is None:
+            s.o = self._to_obj(s)
+        return s.o
+
+    def _generic(self, a: np.ndarray):
+        """The result of an operation on generic matrices: symengine entries expanded, encoded ones
+        (:class:`_BigPoly`) kept; a matrix whose entries are all encoded without an encoded
+        parameter goes back to flint's representation."""
+        f = self.field.normalize
+        out = np.empty(a.shape, dtype=object)
+        polys = True
+        for idx, x in np.ndenumerate(a):
+            if type(x) is _BigPoly:
+                polys = polys and not x.lin
+                out[idx] = x
+            else:
+                out[idx] = f(x)
+                polys = False
+        if polys and out.size:
+            ctx = self.ring.ctx
+            for idx, x in np.ndenumerate(out):
+                out[idx] = x._cur().project_to_context(ctx)
+            return self._pm(out, NODEN)
+        return ObjMat(out)
+
+    # -- conversions -------------------------------------------------------------------
+    def from_obj(self, a):
+        R = self.ring
+        m, k = a.shape
+        try:
+            v = R.version
+            rfs = [R.from_se(x) for x in a.flat]
+            while v != R.version:      # the context grew on the way
+                v = R.version
+                rfs = [R.from_se(x) for x in a.flat]
+        except NotRational:
+            a = np.vectorize(_se, otypes=[object])(a) if a.size else a    # no scalar of the backend in a generic matrix
+            if len(R.syms) < MAX_VARS and not R.big:
+                return ObjMat(a.copy())
+            # parameters beyond the ring's: entries in the encoded form where they are polynomials
+            # of degree <= 1 in those parameters (see _BigPoly), symengine expressions otherwise
+            R.big_register(a)
+            out = np.empty(a.shape, dtype=object)
+            for idx, x in np.ndenumerate(a):
+                try:
+                    out[idx] = R.big_from_se(x)
+                except NotRational:
+                    out[idx] = x
+            return ObjMat(out)
+        D = NODEN
+        for r in rfs:
+            if r[1] and r[1] != D:
+                D = _merge_max(D, r[1])
+        out = np.empty((m, k), dtype=object)
+        flat = out.reshape(-1) if out.size else out
+        for i, (n, d) in enumerate(rfs):
+            flat[i] = n if d == D else n * R.den_poly(_minus(D, d))
+        return self._pm(out, D)
+
+    def to_obj(self, s):
+        if type(s) is PolyMat and s.z:          # a zero matrix about to be filled in (scene charts)
+            return self._fill(s.a.shape[0], s.a.shape[1], self.field.const(0))
+        if type(s) is ObjMat:
+            out = np.empty(s.a.shape, dtype=object)
+            for idx, x in np.ndenumerate(s.a):
+                out[idx] = _se(x)
+            return out
+        return self._obj(s).copy()
+
+    def _to_obj(self, s):
+        if type(s) is RatMat:
+            return ratmat.to_obj(self, s)
+        s = self._fix(s)
+        R = self.ring
+        out = np.empty(s.a.shape, dtype=object)
+        for idx, x in np.ndenumerate(s.a):
+            out[idx] = R.to_se(R.rf_reduce((x, s.den)) if s.den else (x, NODEN))
+        return out
+
+    def shape(self, s):
+        return s.a.shape
+
+    def take(self, s, rows, cols):
+        """A block without converting the rest of the matrix: numerators sliced over the same
+        denominator (then reduced), or the generic entries sliced."""
+        ix = np.ix_(rows, cols)
+        if type(s) is ObjMat:
+            return ObjMat(s.a[ix].copy())
+        if type(s) is RatMat:
+            s = ratmat.fix(self, s)
+            return ratmat.make(self, s.a[ix].copy(), s.d[ix].copy())
+        s = self._fix(s)
+        return self._reduce(s.a[ix].copy(), s.den)
+
+    def entry(self, s, i, j):
+        """One entry, converted alone (the generic representation of the rest is not built)."""
+        if type(s) is ObjMat:
+            return _se(s.a[i, j])
+        if s.o is not None:
+            return s.o[i, j]
+        R = self.ring
+        if type(s) is RatMat:
+            s = ratmat.fix(self, s)
+            x, e = s.a[i, j], s.d[i, j]
+        else:
+            s = self._fix(s)
+            x, e = s.a[i, j], s.den
+        return _RF(R, R.rf_reduce((x, e)) if e else (x, NODEN))
+
+    def accepts(self, x):
+        return isinstance(x, (se.Basic, int, Fraction)) or type(x) is _RF and x.R is self.ring
+
+    # -- constructors -------------------------------------------------------------------
+    def zeros(self, m, k):
+        return PolyMat(self._fill(m, k, self.ring.zero), NODEN, self.ring.ctx, True)
+
+    def identity(self, m):
+        a = self._fill(m, m, self.ring.zero)
+        one = self.ring.one
+        for i in range(m):
+            a[i, i] = one
+        return self._pm(a, NODEN)
+
+    def from_consts(self, a):
+        R = self.ring
+        out = np.empty(a.shape, dtype=object)
+        for idx, x in np.ndenumerate(a):
+            out[idx] = R.ctx.constant(int(x))
+        return self._pm(out, NODEN)
+
+    # sparse, diag, unit: the generic constructors (from_obj of symengine entries)
+
+    # -- arithmetic -------------------------------------------------------------------
+    def add(self, a, b):
+        if type(a) is ObjMat or type(b) is ObjMat:
+            return self._generic(self._obj(a) + self._obj(b))
+        if type(a) is RatMat or type(b) is RatMat:
+            return ratmat.add(self, a, b)
+        if a.z:
+            return b
+        if b.z:
+            return a
+        return self._entrywise("+", _ew_add, a, b)
+
+    def sub(self, a, b):
+        if type(a) is ObjMat or type(b) is ObjMat:
+            return self._generic(self._obj(a) - self._obj(b))
+        if type(a) is RatMat or type(b) is RatMat:
+            return ratmat.sub(self, a, b)
+        if b.z:
+            return a
+        if a.z:
+            return self.neg(b)
+        return self._entrywise("-", _ew_sub, a, b)
+
+    def _entrywise(self, op: str, ew, a, b):
+        """a op b for two PolyMats (op "+" or "-", ew its entrywise form), over the larger of
+        their denominators; the stored result when the same operands were met before."""
+        key = (op, id(a), id(b))
+        hit = self._memo.get(key)
+        if hit is not None and hit[0] is a and hit[1] is b:
+            return hit[2]
+        ctx = self.ring.ctx
+        if a.ctx is not ctx or b.ctx is not ctx:
+            a, b = self._fix(a), self._fix(b)
+        if a.den == b.den:
+            out = PolyMat(ew(a.a, b.a), a.den, ctx)
+        else:
+            D = _merge_max(a.den, b.den)
+            out = self._pm(ew(self._to(a, D), self._to(b, D)), D)
+        return self._remember(key, (a, b, out))
+
+    def neg(self, a):
+        if type(a) is ObjMat:
+            return ObjMat(-a.a)
+        if type(a) is RatMat:
+            return ratmat.neg(self, a)
+        if a.z:
+            return a
+        a = self._fix(a)
+        return self._pm(-a.a, a.den)
+
+    def matmul(self, a, b):
+        if type(a) is ObjMat or type(b) is ObjMat:
+            A, B = self._obj(a), self._obj(b)
+            if A.shape[1] == 0:
+                return ObjMat(self._fill(A.shape[0], B.shape[1], self.field.const(0)))
+            return self._generic(np.dot(A, B))
+        if type(a) is RatMat or type(b) is RatMat:
+            return ratmat.matmul(self, a, b)
+        (m, k), n = a.a.shape, b.a.shape[1]
+        if a.z or b.z or k == 0 or m == 0 or n == 0:
+            return self.zeros(m, n)
+        key = ("@", id(a), id(b))
+        hit = self._memo.get(key)
+        if hit is not None and hit[0] is a and hit[1] is b:
+            return hit[2]
+        R = self.ring
+        if a.ctx is not R.ctx or b.ctx is not R.ctx:
+            a, b = self._fix(a), self._fix(b)
+        prod = _dot(a.a, b.a, R.zero)
+        if a.den or b.den:
+            out = self._reduce(prod, _merge_add(a.den, b.den))
+        else:
+            out = PolyMat(prod, NODEN, R.ctx)
+        return self._remember(key, (a, b, out))
+
+    def smul(self, a, c):
+        if type(a) is RatMat:
+            try:
+                n, d = self.ring.from_se(c)
+            except NotRational:
+                a = ObjMat(self._obj(a))       # the generic product below
+            else:
+                return ratmat.smul(self, a, n, d)
+        if type(a) is PolyMat and a.z:
+            return a
+        if type(a) is not ObjMat:
+            try:
+                n, d = self.ring.from_se(c)
+            except NotRational:
+                pass
+            else:
+                key = ("*", id(a), c)
+                try:
+                    hit = self._memo.get(key)
+                except TypeError:           # an unhashable constant: not remembered
+                    key, hit = None, None
+                if hit is not None and hit[0] is a:
+                    return hit[2]
+                if a.ctx is not self.ring.ctx:
+                    a = self._fix(a)
+                if n.is_zero():
+                    return self.zeros(*a.a.shape)
+                out = self._scale(a.a, n)
+                out = self._reduce(out, _merge_add(a.den, d)) if d else self._pm(out, a.den)
+                return out if key is None else self._remember(key, (a, None, out))
+        A = self._obj(a)
+        out = np.empty(A.shape, dtype=object)
+        for idx, x in np.ndenumerate(A):
+            out[idx] = x * c
+        return self._generic(out)
+
+    def T(self, a):
+        if type(a) is ObjMat:
+            return ObjMat(a.a.T.copy())
+        if type(a) is RatMat:
+            return ratmat.T(self, a)
+        if a.z:
+            return self.zeros(a.a.shape[1], a.a.shape[0])
+        key = ("T", id(a))
+        hit = self._memo.get(key)
+        if hit is not None and hit[0] is a:
+            return hit[2]                      # the same transpose: its products meet the memo too
+        if a.ctx is not self.ring.ctx:
+            a = self._fix(a)
+        out = PolyMat(a.a.T, a.den, a.ctx)    # a view: storage is never written in place
+        return self._remember(key, (a, None, out))
+
+    def _remember(self, key, entry):
+        """An operation's result, kept for the same operands met again within this field (a
+        PolyMat's storage is never written in place; the operands are kept alive with it, so
+        their ids are not reused); at most 128 results, of small matrices only, are kept."""
+        out = entry[2]
+        if out.a.size <= 64:
+            memo = self._memo
+            if len(memo) >= 128:
+                memo = self._memo = {}
+            try:
+                memo[key] = entry
+            except TypeError:                  # an unhashable constant of smul: not remembered
+                pass
+        return out
+
+    def _scalar(self, n, d):
+        R = self.ring
+        return _RF(R, R.rf_reduce((n, d)))
+
+    def trace(self, a):
+        if type(a) is ObjMat:
+            acc = self.field.const(0)
+            for i in range(a.a.shape[0]):
+                acc = acc + a.a[i, i]
+            return self.field.normalize(acc)
+        if type(a) is RatMat:
+            return ratmat.trace(self, a)
+        a = self._fix(a)
+        acc = self.ring.zero
+        for i in range(a.a.shape[0]):
+            acc = acc + a.a[i, i]
+        return self._scalar(acc, a.den)
+
+    def inner(self, a, b):
+        if type(a) is ObjMat or type(b) is ObjMat:
+            acc = self.field.const(0)
+            for x, y in zip(self._obj(a).flat, self._obj(b).flat):
+                acc = acc + x * y
+            return self.field.normalize(acc)
+        if type(a) is RatMat or type(b) is RatMat:
+            return ratmat.inner(self, a, b)
+        a, b = self._fix(a), self._fix(b)
+        acc = self.ring.zero
+        for x, y in zip(a.a.flat, b.a.flat):
+            acc = acc + x * y
+        return self._scalar(acc, _merge_add(a.den, b.den))
+
+    def is_zero(self, a):
+        if type(a) is ObjMat:
+            return all(self.field.is_zero(x) for x in a.a.flat)
+        if type(a) is RatMat:
+            return ratmat.is_zero(self, a)
+        return a.z or not any(a.a.flat)
+
+    def block(self, grid):
+        if any(type(b) is ObjMat for row in grid for b in row):
+            return self._generic(np.concatenate([np.concatenate([self._obj(b) for b in row], axis=1)
+                                                 for row in grid], axis=0))
+        if any(type(b) is RatMat for row in grid for b in row):
+            return ratmat.block(self, grid)
+        grid = [[self._fix(b) for b in row] for row in grid]
+        D = NODEN
+        for row in grid:
+            for b in row:
+                D = _merge_max(D, b.den)
+        a = np.concatenate([np.concatenate([self._to(b, D) for b in row], axis=1) for row in grid], axis=0)
+        return self._pm(a, D)
+
+    def inv(self, a):
+        """N/D inverted as D adj(N)/det(N): fraction-free Gauss-Jordan (Bareiss) on [N | I],
+        every division exact; the same budget as the symbolic solve (systems beyond
+        ``field.max_solve`` only when numeric pivots suffice)."""
+        if type(a) is ObjMat:
+            m = a.a.shape[0]
+            I = self._fill(m, m, self.field.const(0))
+            for i in range(m):
+                I[i, i] = self.field.const(1)
+            sol = self.field.solve(a.a.tolist(), I.tolist())
+            out = np.empty((m, m), dtype=object)
+            for i in range(m):
+                for j in range(m):
+                    out[i, j] = sol[i][j]
+            return ObjMat(out)
+        if type(a) is RatMat:
+            a = ratmat.common(self, a)          # the inverse over one denominator
+        a = self._fix(a)
+        R = self.ring
+        m = a.a.shape[0]
+        if m == 0:
+            return self.zeros(0, 0)
+        N = [[a.a[i, j] for j in range(m)] for i in range(m)]
+        if m > self.field.max_solve and not _small_core(N, self.field.max_solve) and (a.den or not _numeric_pivots(N)):
+            raise SymbolicBudget(f"a symbolic {m}x{m} linear solve")
+        rows = [N[i] + [R.one if j == i else R.zero for j in range(m)] for i in range(m)]
+        prev = R.one
+        for k in range(m):
+            piv = None
+            for i in range(k, m):
+                x = rows[i][k]
+                if not x.is_zero() and (piv is None or len(x) < len(rows[piv][k])):
+                    piv = i
+            if piv is None:
+                raise DegenerateError("singular symbolic linear system")
+            rows[k], rows[piv] = rows[piv], rows[k]
+            rk = rows[k]
+            p = rk[k]
+            for i in range(m):
+                if i == k:
+                    continue
+                ri = rows[i]
+                f = ri[k]
+                if f.is_zero():
+                    if prev.is_one() and p.is_one():
+                        continue
+                    rows[i] = [x if j == k else (p * x) / prev for j, x in enumerate(ri)]
+                    continue
+                rows[i] = [R.zero if j == k else (p * x - f * rk[j]) / prev for j, x in enumerate(ri)]
+            prev = p
+        det = rows[0][0]                       # every diagonal entry is det(PN) now
+        c, atoms = R.factor(det)
+        num = R.den_poly(a.den) / c
+        out = np.empty((m, m), dtype=object)
+        for i in range(m):
+            for j in range(m):
+                out[i, j] = rows[i][m + j] * num
+        return self._reduce(out, atoms)
+
+
+# Entrywise operations that skip zero entries: a flint operation costs about half a microsecond
+# however small its operands, and the chart's matrices are sparse (X = (E_1..E_r), Phi, derivatives
+# along a flow).  A zero operand is passed through (entries are never modified in place).
+def _ew_add(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    out = np.empty(a.size, dtype=object)
+    for i, x, y in zip(range(a.size), a.flat, b.flat):
+        out[i] = (x + y if y else x) if x else y
+    return out.reshape(a.shape)
+
+
+def _ew_sub(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    out = np.empty(a.size, dtype=object)
+    for i, x, y in zip(range(a.size), a.flat, b.flat):
+        out[i] = (x - y if y else x) if x else (-y if y else x)
+    return out.reshape(a.shape)
+
+
+def _ew_scale(a: np.ndarray, f) -> np.ndarray:
+    out = np.empty(a.size, dtype=object)
+    for i, x in zip(range(a.size), a.flat):
+        out[i] = x * f if x else x
+    return out.reshape(a.shape)
+
+
+def _dot(a: np.ndarray, b: np.ndarray, zero) -> np.ndarray:
+    """The product of two arrays of polynomials, skipping zero entries (structural zeros are
+    common: X = (E_1..E_r), derivatives of constants, block matrices) and products by one in
+    outer products (X X^T, X P^T at X = (E_1..E_r))."""
+    m, k = a.shape
+    n = b.shape[1]
+    out = np.empty(m * n, dtype=object)
+    if k == 1:
+        row = b[0].tolist()
+        pos = 0
+        for x in a[:, 0].tolist():
+            if not x:
+                out[pos:pos + n].fill(zero)
+            elif x.is_one():
+                for j, y in enumerate(row):
+                    out[pos + j] = y
+            else:
+                for j, y in enumerate(row):
+                    out[pos + j] = x * y if y else zero
+            pos += n
+        return out.reshape(m, n)
+    bt = b.T.tolist()
+    pos = 0
+    for ai in a.tolist():
+        nz = [(i, x) for i, x in enumerate(ai) if x]
+        if not nz:
+            out[pos:pos + n].fill(zero)
+            pos += n
+            continue
+        for bj in bt:
+            acc = None
+            for i, x in nz:
+                y = bj[i]
+                if y:
+                    acc = x * y if acc is None else acc + x * y
+            out[pos] = zero if acc is None else acc
+            pos += 1
+    return out.reshape(m, n)
+
+
+def _small_core(N, k: int) -> bool:
+    """Whether at most k rows (with their columns) carry every nonzero entry off the diagonal of N
+    (a vertex cover of its pattern).  Each row outside such a cover has one nonzero entry outside
+    the cover's columns, its diagonal: eliminating those rows divides by diagonal entries only, and
+    what is left is a symbolic k x k system on the cover (its Schur complement), within the budget
+    of a k x k solve.  An arrowhead (μI − A with the chart's diagonal blocks A11, A22 and r or
+    n − r at most k) is such a matrix."""
+    m = len(N)
+    nbr: dict[int, set[int]] = {}
+    for i in range(m):
+        for j in range(i + 1, m):
+            if not (N[i][j].is_zero() and N[j][i].is_zero()):
+                nbr.setdefault(i, set()).add(j)
+                nbr.setdefault(j, set()).add(i)
+    if any(N[i][i].is_zero() for i in range(m) if i not in nbr):
+        return False                            # a zero pivot outside the core: leave it to the general rule
+
+    def cover(nbr: dict[int, set[int]], k: int) -> bool:
+        if not nbr:
+            return True
+        if k == 0:
+            return False
+        v = max(nbr, key=lambda u: len(nbr[u]))
+        # an edge (v, u) is covered by v, or else by every neighbour of v
+        options = [[v]] + ([sorted(nbr[v])] if len(nbr[v]) <= k else [])
+        for take in options:
+            rest = {u: ws - set(take) for u, ws in nbr.items() if u not in take}
+            if cover({u: ws for u, ws in rest.items() if ws}, k - len(take)):
+                return True
+        return False
+    return cover(nbr, k)
+
+
+def _numeric_pivots(N) -> bool:
+    """Whether Gaussian elimination finds a nonzero constant pivot at every step (then no
+    fractions appear); the rule of :meth:`SymbolicField.solve`."""
+    rows = [list(r) for r in N]
+    m = len(rows)
+    for col in range(m):
+        piv = next((i for i in range(col, m) if rows[i][col].is_constant() and not rows[i][col].is_zero()), None)
+        if piv is None:
+            return False
+        rows[col], rows[piv] = rows[piv], rows[col]
+        p = rows[col][col]
+        for i in range(col + 1, m):
+            f = rows[i][col]
+            if not f.is_zero():
+                f = f / p
+                rows[i] = [a - f * b for a, b in zip(rows[i], rows[col])]
+    return True
+
+
+# ---------------------------------------------------------------------------------------------
+# the number system whose matrices this module keeps
+
+class SymbolicField(Field):
+    """symengine expressions in the chart parameters; zero means identically zero."""
+
+    name = "symbolic"
+
+    #: matrices live in flint (:mod:`stiefelsym.backends.polyfield`); False (or the environment variable
+    #: STIEFELSYM_EXACT_BACKEND=symengine): numpy arrays of symengine expressions, as before
+    native = os.environ.get("STIEFELSYM_EXACT_BACKEND", "flint") != "symengine"
+
+    def __init__(self) -> None:
+        self.symbols: dict[str, se.Symbol] = {}
+        self._poly_ring = None
+
+    def const(self, q):
+        if type(q) is int:
+            return se.Integer(q)
+        q = Fraction(q)
+        return se.Integer(q.numerator) / se.Integer(q.denominator)
+
+    def param(self, name, rng=None):
+        s = se.Dummy(name)   # unforgeable: a symbol a claim makes with this name is another one
+        self.symbols[name] = s
+        return s
+
+    #: the type of the encoded entries of the exact backend's generic matrices
+    #: (:class:`stiefelsym.backends.polyfield._BigPoly`, set with the first ring): converted to symengine
+    #: where they leave the backend
+    _encoded_type = None
+
+    def normalize(self, x):
+        if type(x) is self._encoded_type or type(x) is _RF:
+            return x.to_se()
+        return se.expand(x)
+
+    def pairing(self, x):
+        # a flint scalar stays in flint: sums, products, quotients and the zero test are exact there,
+        # and it meets symengine (converted once) only where an expression needs it
+        if type(x) is _RF:
+            return x
+        return self.normalize(x)
+
+    def poly_ring(self):
+        """The flint rational-function ring of this field's symbols (created on first use)."""
+        if self._poly_ring is None:
+            if SymbolicField._encoded_type is None:
+                # set once: assigning a class attribute invalidates the interpreter's attribute caches
+                SymbolicField._encoded_type = _BigPoly
+            self._poly_ring = PolyRing()
+        return self._poly_ring
+
+    def native_backend(self):
+        """Whole matrices as flint polynomial numerators over one common denominator."""
+        if not self.native:
+            return None
+        return PolyBackend(self, self.poly_ring())
+
+    def is_zero(self, x):
+        """Exact: x as a rational function over flint has the zero numerator (an expression flint
+        cannot hold goes through symengine's expansion and SymPy's cancel)."""
+        if isinstance(x, se.Basic) and x.is_Number:
+            return x == 0
+        if type(x) is self._encoded_type or type(x) is _RF:
+            return x.is_zero()
+        if self.native:
+            try:
+                return self.poly_ring().from_se(x)[0].is_zero()
+            except NotRational:
+                pass
+        return self._is_zero_sympy(x)
+
+    @staticmethod
+    def _is_zero_sympy(x):
+        e = se.expand(x)
+        if e == 0:
+            return True
+        if e.is_Number:
+            return False
+        num, _den = e.as_numer_denom()
+        if se.expand(num) == 0:
+            return True
+        import sympy
+        return sympy.cancel(sympy.together(sympy.sympify(e))) == 0
+
+    def pivot_cost(self, x):
+        e = se.expand(_se(x))
+        if e == 0:
+            return math.inf
+        if e.is_Number:
+            return 0.0
+        if self.is_zero(e):
+            return math.inf
+        return float(len(str(e)))
+
+    def _numeric_pivots(self, M) -> bool:
+        """Whether Gaussian elimination finds a nonzero numeric pivot at every step."""
+        rows = [[se.expand(_se(x)) for x in row] for row in M]
+        m = len(rows)
+        for col in range(m):
+            piv = next((i for i in range(col, m) if rows[i][col].is_Number and rows[i][col] != 0), None)
+            if piv is None:
+                return False
+            rows[col], rows[piv] = rows[piv], rows[col]
+            for i in range(col + 1, m):
+                f = rows[i][col] / rows[col][col]
+                if f != 0:
+                    rows[i] = [se.expand(a - f * b) for a, b in zip(rows[i], rows[col])]
+        return True
+
+    #: largest system solved by cofactors (larger ones raise SymbolicBudget)
+    max_solve = 3
+
+    def solve(self, M, B):
+        """Elimination when numeric pivots suffice (then no fractions appear); otherwise
+        Y = adj(M) B / det(M) with determinants by fraction-free elimination."""
+        m = len(M)
+        # the backend's scalars as symengine expressions, every kind of them (an encoded polynomial, a
+        # rational function kept in flint): symengine would take either for an empty matrix (its
+        # conversion, symengine_opaque) and return 0x0 matrices as the solution's entries
+        M = [[_se(x) for x in row] for row in M]
+        B = [[_se(x) for x in row] for row in B]
+        if all(se.expand(x).is_Number for row in M for x in row) or self._numeric_pivots(M):
+            return Field.solve(self, M, B)
+        if m > self.max_solve:
+            raise SymbolicBudget(f"a symbolic {m}x{m} linear solve")
+        A = se.DenseMatrix(m, m, [se.expand(x) for row in M for x in row])
+        det = se.expand(A.det())
+        if self.is_zero(det):
+            raise DegenerateError("singular symbolic linear system")
+        adj = [[None] * m for _ in range(m)]
+        for i in range(m):
+            for j in range(m):
+                rows = [k for k in range(m) if k != j]
+                cols = [k for k in range(m) if k != i]
+                minor = se.DenseMatrix(m - 1, m - 1, [A[a, b] for a in rows for b in cols]) if m > 1 else None
+                cof = se.expand(minor.det()) if minor is not None else se.Integer(1)
+                adj[i][j] = cof if (i + j) % 2 == 0 else -cof
+        k = len(B[0]) if B else 0
+        return [[se.expand(sum((adj[i][l] * B[l][j] for l in range(m)), se.Integer(0))) / det
+                 for j in range(k)] for i in range(m)]

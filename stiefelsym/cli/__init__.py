@@ -1,0 +1,1083 @@
+"""The command line: ``stiefelsym verify | list | show | derive | report``.
+
+Exit status: 0 when every verdict is the one the catalog expects, 1 when some
+verdict is not, 2 on bad input (one line on stderr, never a traceback), 130 when
+interrupted with Ctrl-C and 143 when terminated with SIGTERM (no report is
+written, no worker process is left behind).
+"""
+from __future__ import annotations
+
+import importlib
+import inspect
+import json
+import os
+import platform
+import re
+import shlex
+import subprocess
+import sys
+import tempfile
+import time
+from datetime import datetime, timezone
+from pathlib import Path
+from typing import Any, Sequence
+
+import click
+
+from stiefelsym._lazy import lazy
+from stiefelsym.claims import CATALOG, CatalogError, ClaimTimeout, Claim, Registry, Size, load_catalog
+from stiefelsym.methods.hard import HARD_CASES
+from stiefelsym.run.pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT, Terminated, raise_on_sigterm
+from stiefelsym.results import Result, dump_results, load_results, write_atomic
+from stiefelsym.scene import SizeError
+
+_report = lazy("stiefelsym.reports.report", globals(), "_report")
+
+EXIT_OK, EXIT_UNEXPECTED, EXIT_INPUT, EXIT_INTERRUPTED, EXIT_TERMINATED = 0, 1, 2, 130, 143
+#: the default of --budget: seconds a single run may be predicted to take (see stiefelsym.methods.costmodel)
+DEFAULT_BUDGET = 3600.0
+DEFAULT_REPORT_DIR = Path("reports")
+REPORT_FILES = ("results.json", "verification.md", "verification.tex", "verification-runs.tex", "run-log.json")
+#: the distributions whose versions a report records
+VERSIONED = ("stiefelsym", "sympy", "symengine", "numpy", "python-flint", "mpmath", "click")
+EXPECT_MEANING = {
+    "holds": "holds (the printed statement is true)",
+    "nonzero": "nonzero (the paper says this does not vanish)",
+    "fails": "fails as printed (a known erratum; corrections are registered)",
+}
+
+
+class SeedType(click.ParamType):
+    """A non-negative integer, or "random": a fresh seed from the operating system."""
+
+    name = "seed"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> int:
+        if isinstance(value, int) and value >= 0:
+            return value
+        text = str(value).strip()
+        if text == "random":
+            import secrets
+            seed = secrets.randbits(48)
+            click.echo(f"seed: {seed}", err=True)
+            return seed
+        if text.isdigit():
+            return int(text)
+        self.fail(f"{value!r} is not a non-negative integer or 'random'", param, ctx)
+
+
+class InputError(click.ClickException):
+    """Bad input: reported as one line on stderr, exit status 2."""
+
+    exit_code = EXIT_INPUT
+
+    def __init__(self, message: str) -> None:
+        super().__init__(message)
+        self.ctx = click.get_current_context(silent=True)
+
+
+# --------------------------------------------------------------------------- the group
+
+def _one_line(text: str) -> str:
+    return " ".join(str(text).split())
+
+
+class _Main(click.Group):
+    """Turns every error into one line on stderr and a documented exit status.
+
+    Commands listed in ``lazy`` are imported only when they are asked for (or the
+    commands are listed), so that start-up stays fast; a module that is missing
+    is skipped silently."""
+
+    lazy: dict[str, tuple[str, str]] = {}
+
+    def _load(self, name: str) -> click.Command | None:
+        module, attr = self.lazy.get(name, ("", ""))
+        if not module or name in self.commands:
+            return self.commands.get(name)
+        try:
+            cmd = getattr(importlib.import_module(module), attr)
+        except (ImportError, AttributeError):
+            self.lazy.pop(name, None)
+            return None
+        self.add_command(cmd, name)
+        return cmd
+
+    def get_command(self, ctx: click.Context, cmd_name: str) -> click.Command | None:
+        return super().get_command(ctx, cmd_name) or self._load(cmd_name)
+
+    def list_commands(self, ctx: click.Context) -> list[str]:
+        for name in list(self.lazy):
+            self._load(name)
+        return super().list_commands(ctx)
+
+    def main(self, args: Sequence[str] | None = None, prog_name: str | None = None,
+             complete_var: str | None = None, standalone_mode: bool = True, **extra: Any) -> Any:
+        return run_reporting_errors(
+            lambda: super(_Main, self).main(args, prog_name or "stiefelsym", complete_var,
+                                            standalone_mode=False, **extra),
+            prog_name or "stiefelsym", standalone_mode)
+
+
+def run_reporting_errors(invoke: Any, prog: str, standalone_mode: bool) -> int:
+    """Run a command; every error is one line on stderr and a documented exit status."""
+    try:
+        rv = invoke()
+        code = rv if isinstance(rv, int) else EXIT_OK
+    except click.ClickException as exc:
+        ctx = getattr(exc, "ctx", None)
+        where = ctx.command_path if ctx is not None else prog
+        hint = f" (see '{where} --help')" if isinstance(exc, click.UsageError) else ""
+        click.echo(f"{where}: error: {_one_line(exc.format_message())}{hint}", err=True)
+        code = EXIT_INPUT
+    except (click.Abort, KeyboardInterrupt):
+        click.echo(f"{prog}: interrupted", err=True)
+        code = EXIT_INTERRUPTED
+    except Terminated:
+        click.echo(f"{prog}: terminated", err=True)
+        code = EXIT_TERMINATED
+    if standalone_mode:
+        sys.exit(code)
+    return code
+
+
+
+def standalone_command(prog: str) -> type:
+    """A command class for the subcommands that live in modules of their own: run standalone,
+    every error is one line on stderr with a documented exit status (inside the ``stiefelsym``
+    group, the group does the same)."""
+    class Standalone(click.Command):
+        def main(self, args: Sequence[str] | None = None, prog_name: str | None = None,
+                 complete_var: str | None = None, standalone_mode: bool = True, **extra: Any) -> Any:
+            return run_reporting_errors(
+                lambda: click.Command.main(self, args, prog_name or prog, complete_var,
+                                           standalone_mode=False, **extra),
+                prog_name or prog, standalone_mode)
+    return Standalone
+
+@click.group(cls=_Main, invoke_without_command=True,
+             context_settings={"help_option_names": ["-h", "--help"], "max_content_width": 100})
+@click.version_option(package_name="stiefelsym", prog_name="stiefelsym")
+@click.pass_context
+def main(ctx: click.Context) -> None:
+    """Mechanically prove or refute the identities of Fedorov & Jovanović,
+    "Geodesic Flows and Neumann Systems on Stiefel Varieties".
+
+    \b
+      stiefelsym list                              the catalog of claims
+      stiefelsym show euclidean-flow               statement, sizes, source
+      stiefelsym verify                            the catalog; writes reports/
+      stiefelsym verify euclidean-flow --size 4,2  one claim, one size
+      stiefelsym verify --claims my_claims.py      your own claims
+      stiefelsym report                            re-render reports/
+      stiefelsym derive normal-flow                the proof for all n, r, as LaTeX
+
+    Exit status: 0 every verdict as expected, 1 some verdict unexpected, 2 bad
+    input, 130 interrupted (Ctrl-C), 143 terminated (SIGTERM).
+    """
+    if ctx.invoked_subcommand is None:
+        click.echo(ctx.get_help())
+
+
+# --------------------------------------------------------------------------- parameters
+
+class SizeType(click.ParamType):
+    """``n,r`` with integers 1 <= r <= n."""
+
+    name = "n,r"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Size:
+        if isinstance(value, Size):
+            return value
+        m = re.fullmatch(r"\s*(?:n\s*=\s*)?([+-]?\d+)\s*,\s*(?:r\s*=\s*)?([+-]?\d+)\s*", str(value))
+        if not m:
+            self.fail(f"{value!r} is not a size; write n,r with integers 1 <= r <= n, e.g. 4,2",
+                      param, ctx)
+        n, r = int(m.group(1)), int(m.group(2))
+        if r < 1:
+            self.fail(f"{value!r}: r = {r}, but the Stiefel variety V(n,r) needs r >= 1", param, ctx)
+        if r > n:
+            self.fail(f"{value!r}: r = {r} > n = {n}, but the Stiefel variety V(n,r) needs r <= n",
+                      param, ctx)
+        return Size(n, r)
+
+
+class MethodType(click.ParamType):
+    """A verification method, checked against the runner's list."""
+
+    name = "method"
+
+    def get_metavar(self, param: click.Parameter, ctx: click.Context | None = None) -> str:
+        return "METHOD"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> str:
+        methods = _runner().METHODS
+        if value not in methods:
+            self.fail(f"unknown method {value!r}; choose from {', '.join(methods)}", param, ctx)
+        return value
+
+
+METHOD_HELP = ("Verification method, repeatable (default: auto).  auto: the fastest "
+               "proof-grade method for each claim; exact: symbolic, every point; rational: "
+               "random exact points over Q; modular: random points over a prime field; "
+               "float: floating point with precision escalation (evidence, not proof); ball: rigorous "
+               "arb enclosures at the float method's exact points (a certified nonzero residual fails; "
+               "numeric bounds the residual at that point, it does not prove the identity); free: "
+               "dimension-free algebra, all n and r at once.")
+
+
+# --------------------------------------------------------------------------- loading
+
+def _runner():
+    """The runner module (imported lazily: it pulls in the algebra backends)."""
+    try:
+        from stiefelsym.run import runner
+    except ImportError as exc:
+        raise InputError(f"the verification engine is not available: {exc}") from exc
+    return runner
+
+
+def _catalog() -> Registry:
+    try:
+        return load_catalog()
+    except (ImportError, CatalogError, ValueError) as exc:
+        raise InputError(f"cannot load the catalog of claims: {exc}") from exc
+
+
+def _user_claims(paths: str | Sequence[str], sizes: Sequence[Any] = (),
+                 budget: tuple[float, float | None] = (DEFAULT_TIMEOUT, DEFAULT_MEMORY_GIB)) -> Registry:
+    """The claims of one or more files, in order; an id defined twice is refused.  Each file is imported and
+    its claims traced in child processes only, at their listed sizes and at ``sizes`` (see
+    :mod:`stiefelsym.run.userfile`): no code of a user's file runs in this process."""
+    from stiefelsym.run.userfile import load_claims_isolated
+    if isinstance(paths, str):
+        paths = [paths]
+    merged, origin = Registry(), {}
+    seen: set[str] = set()
+    for path in claims_paths(paths):
+        key = os.path.realpath(path)
+        if key in seen:         # the same file twice: load it once
+            continue
+        seen.add(key)
+        try:
+            reg = load_claims_isolated(path, sizes, *budget)
+        except CatalogError as exc:
+            raise InputError(str(exc)) from exc
+        for c in reg:
+            if c.id in merged:
+                raise InputError(f"claim {c.id!r} is defined in both {origin[c.id]} and {path}")
+            merged.add(c)
+            origin[c.id] = path
+    merged.origin = origin     # type: ignore[attr-defined]  (claim id -> its file)
+    return merged
+
+
+def claims_paths(paths: Sequence[str]) -> list[str]:
+    """The claims files named: a directory stands for its ``*.py`` files (see
+    :func:`stiefelsym.api.claims_files`); a directory without any is bad input."""
+    from stiefelsym.api import claims_files
+    try:
+        return [str(p) for p in claims_files(paths)]
+    except FileNotFoundError as exc:
+        raise InputError(str(exc)) from None
+
+
+def _shadowing_note(user: Registry) -> None:
+    """Warn (stderr) about a claim of the user's files that has the id of a catalog claim."""
+    try:
+        catalog_ids = set(load_catalog().ids())
+    except (ImportError, CatalogError, ValueError):
+        return
+    for cid in user.ids():
+        if cid in catalog_ids:
+            click.echo(f"warning: claim {cid!r} of {user.origin[cid]} has the id of a catalog claim "  # type: ignore[attr-defined]
+                       "and replaces it in this run; give it an id of its own", err=True)
+
+
+def _registry(claims_files: str | Sequence[str] | None, ids: Sequence[str] = (), sizes: Sequence[Any] = (),
+              budget: tuple[float, float | None] = (DEFAULT_TIMEOUT, DEFAULT_MEMORY_GIB)
+              ) -> tuple[Registry, Registry | None]:
+    """The registry to look claims up in, and the user's registry (if any).
+
+    The users' files alone when they define every named claim (or none is named);
+    otherwise the users' claims followed by the catalog's, the users' shadowing
+    catalog claims of the same id."""
+    if isinstance(claims_files, str):
+        claims_files = [claims_files]
+    user = _user_claims(claims_files, sizes, budget) if claims_files else None
+    if user is not None and all(cid in user for cid in ids):
+        _shadowing_note(user)
+        return user, user
+    catalog = _catalog()
+    if user is None:
+        return catalog, None
+    merged = Registry()
+    for c in user:
+        merged.add(c)
+    for c in catalog:
+        if c.id in merged:
+            click.echo(f"warning: claim {c.id!r} of {user.origin[c.id]} has the id of a catalog claim "  # type: ignore[attr-defined]
+                       "and replaces it in this run; give it an id of its own", err=True)
+        else:
+            merged.add(c)
+    return merged, user
+
+
+def _lookup(registry: Registry, cid: str) -> Claim:
+    try:
+        return registry.get(cid)
+    except KeyError as exc:
+        raise InputError(exc.args[0] if exc.args else f"unknown claim {cid!r}") from None
+
+
+# --------------------------------------------------------------------------- report files
+
+def _check_report_dir(d: Path) -> None:
+    """Check, before any run, that reports can be written to ``d``.
+
+    Probes the nearest existing directory on the way to ``d`` with a temporary
+    file (so read-only directories are caught even where permission bits say
+    nothing, as for root); ``write_atomic`` creates missing directories later."""
+    p = Path(os.path.abspath(d))
+    while not p.exists():
+        if p.is_symlink():
+            raise InputError(f"cannot write reports to {d}: {p} is a broken symbolic link")
+        p = p.parent
+    if not p.is_dir():
+        raise InputError(f"cannot write reports to {d}: {p} is not a directory")
+    try:
+        fd, probe = tempfile.mkstemp(dir=p, prefix=".stiefelsym-probe-")
+        os.close(fd)
+        os.unlink(probe)
+    except OSError as exc:
+        raise InputError(f"cannot write reports to {d}: {p} is not writable "
+                         f"({exc.strerror or exc})") from None
+    for name in REPORT_FILES:
+        if (Path(d) / name).is_dir():
+            raise InputError(f"cannot write reports to {d}: {Path(d) / name} is a directory")
+
+
+def _mutation(d: Path) -> dict[str, Any] | None:
+    """The mutation analysis next to the results (written by `stiefelsym mutate`), if any."""
+    p = Path(d) / "mutation.json"
+    try:
+        return json.loads(p.read_text(encoding="utf-8")) if p.is_file() else None
+    except (OSError, UnicodeDecodeError, json.JSONDecodeError):
+        return None
+
+
+#: what changes between identical runs: it goes to the run log (run-log.json, not committed), and
+#: the committed reports leave it out, so that a regeneration changes them only where a verdict does
+VOLATILE_META = ("date", "seconds", "platform", "jobs", "scheduler")
+
+
+def stable(results: list[Result], meta: dict[str, Any]) -> tuple[list[Result], dict[str, Any]]:
+    """The results and meta data without timings, dates and the host."""
+    import dataclasses
+    return ([dataclasses.replace(r, seconds=None) for r in results],   # type: ignore[arg-type]
+            {k: v for k, v in meta.items() if k not in VOLATILE_META})
+
+
+def _run_log(results: list[Result], meta: dict[str, Any]) -> str:
+    log = {"meta": {k: meta.get(k) for k in VOLATILE_META + ("command", "commit")},
+           "seconds": [[r.claim, r.n, r.r, r.method, r.variant, r.seconds] for r in results]}
+    return json.dumps(log, indent=0) + "\n"
+
+
+def _write_reports(d: Path, results: list[Result], meta: dict[str, Any]) -> list[Path]:
+    """Render everything first, then write each file atomically."""
+    mutation = _mutation(d)
+    fixed, fixed_meta = stable(results, meta)
+    texts = {"results.json": dump_results(fixed, fixed_meta),
+             "verification.md": _report.render_markdown(fixed, fixed_meta, mutation=mutation),
+             "verification.tex": _report.render_latex(fixed, fixed_meta),
+             "verification-runs.tex": _report.render_latex(fixed, fixed_meta, mutation=mutation, detail=True),
+             "run-log.json": _run_log(results, meta)}
+    from stiefelsym.methods.witness_scripts import TEMPLATE_DIR, scripts
+    for name, text in scripts(fixed, lambda r: _report.labels(r.paper)).items():
+        texts[f"{TEMPLATE_DIR}/{name}"] = text
+    paths = []
+    for name, text in texts.items():
+        (Path(d) / name).parent.mkdir(parents=True, exist_ok=True)
+        write_atomic(Path(d) / name, text)
+        paths.append(Path(d) / name)
+    return paths
+
+
+# --------------------------------------------------------------------------- run metadata
+
+def _versions() -> dict[str, str]:
+    import importlib.metadata
+    out = {"python": platform.python_version()}
+    for dist in VERSIONED:
+        try:
+            out[dist] = importlib.metadata.version(dist)
+        except importlib.metadata.PackageNotFoundError:
+            pass
+    return out
+
+
+#: the code a report is about: the engine, the catalog and the package's metadata
+CODE_PATHS = ("stiefelsym", "proofs", "pyproject.toml")
+
+
+def _commit() -> str | None:
+    """The last git commit of the code that produced a report (the engine and the catalog, not the
+    reports themselves), ``+dirty`` if that code has uncommitted changes."""
+    try:
+        head = subprocess.run(["git", "log", "-1", "--format=%h", "--abbrev=12", "--", *CODE_PATHS],
+                              capture_output=True, text=True, timeout=5)
+        if head.returncode or not head.stdout.strip():
+            return None
+        dirty = subprocess.run(["git", "status", "--porcelain", "--untracked-files=no", "--", *CODE_PATHS],
+                               capture_output=True, text=True, timeout=10)
+        return head.stdout.strip() + ("+dirty" if dirty.stdout.strip() else "")
+    except (OSError, subprocess.SubprocessError):
+        return None
+
+
+def _section_titles() -> dict[str, str]:
+    """Section titles the catalog may declare as ``stiefelsym.proofs.SECTION_TITLES``."""
+    mod = sys.modules.get(CATALOG)
+    titles = getattr(mod, "SECTION_TITLES", None) if mod else None
+    return {str(k): str(v) for k, v in titles.items()} if isinstance(titles, dict) else {}
+
+
+def _command(ids: Sequence[str], claims_files: Sequence[str], sizes: Sequence[Size],
+             methods: Sequence[str], seed: int, report_dir: Path | None,
+             budgets: Sequence[str] = ()) -> str:
+    parts = ["stiefelsym", "verify", *ids]
+    for f in claims_files:
+        parts += ["--claims", f]
+    parts += list(budgets)
+    for s in sizes:
+        parts += ["--size", f"{s.n},{s.r}"]
+    for m in methods:
+        parts += ["--method", m]
+    parts += ["--seed", str(seed)]
+    if report_dir is not None:
+        parts += ["--report-dir", str(report_dir)]
+    return shlex.join(parts)
+
+
+# --------------------------------------------------------------------------- progress
+
+class _Progress:
+    """A progress bar on stderr, only when stderr is a terminal.
+
+    Before anything else is printed the bar's line is erased, so the one line
+    per result is never garbled, whether stdout is the same terminal or not."""
+
+    def __init__(self, enabled: bool) -> None:
+        self.enabled = enabled
+        self.bar: Any = None
+        self.total = 0
+        self.done = 0
+
+    def plan(self, total: int) -> None:
+        self.total = total
+        if self.enabled and total > 0:
+            self.bar = click.progressbar(length=total, label="verifying", file=sys.stderr,
+                                         show_pos=True, show_eta=True)
+            self.bar.render_progress()
+
+    def clear(self) -> None:
+        if self.bar is not None:
+            sys.stderr.write("\r\033[K")
+            sys.stderr.flush()
+
+    def advance(self, result: Result) -> None:
+        if result.variant is not None:  # corrections run on top of the plan
+            return
+        self.done += 1
+        if self.bar is not None:
+            self.bar.update(1)
+
+    def close(self) -> None:
+        if self.bar is not None:
+            sys.stderr.write("\r\033[K\033[?25h")  # erase the bar, show the cursor again
+            sys.stderr.flush()
+            self.bar = None
+
+
+def _isatty(stream: Any) -> bool:
+    try:
+        return stream.isatty()
+    except (AttributeError, ValueError):
+        return False
+
+
+# --------------------------------------------------------------------------- verify
+
+P_LEGEND = ("p<=: the Schwartz-Zippel bound of a randomized exact check (rational, modular): a false "
+            "statement would pass all of its random points with probability at most p.")
+
+
+def _budget_help() -> str:
+    """How sizes are limited (only when help is shown)."""
+    return ("Sizes: any 1 <= r <= n.  Before it starts, each run's time and peak memory are predicted by the "
+            "cost model (sums of monomials in n and r fitted per method and family of claims to measured runs, "
+            "`stiefelsym speed --cost-only`); a run predicted beyond --budget seconds is refused with the "
+            "prediction and a faster method, one predicted beyond --memory with the largest n that fits.  "
+            "auto is exact up to each claim's symbolic budget (see `stiefelsym show CLAIM`), then modular; "
+            "free: every n and r at once.")
+
+
+class _VerifyCommand(click.Command):
+    """``verify``, whose help ends with what p means and the methods' budgets."""
+
+    def format_epilog(self, ctx: click.Context, formatter: click.HelpFormatter) -> None:
+        paragraphs = [
+            "p: after a `checked` verdict, p<=BOUND is the Schwartz-Zippel false-pass bound: the "
+            "residual is a rational function of degree at most d in the chart parameters, so a false "
+            "statement vanishes at a uniformly random point of a set S with probability at most "
+            "d/(|S| - d_den), and at all of the independent points with probability at most their "
+            "product p.",
+            _budget_help(),
+            "Time and memory: every run (claim, size, method) executes in a worker process with "
+            "--timeout seconds of wall time (auto: exact and its modular fallback together) and "
+            "--memory GiB of address space.  A run past its time is inconclusive; one that runs out "
+            "of memory, crashes, or exits is an error; the other runs go on either way.",
+        ]
+        for text in paragraphs:
+            if text:
+                formatter.write_paragraph()
+                formatter.write_text(text)
+
+
+def _report_dir(ctx: click.Context, param: click.Parameter, value: str | None) -> Path | None:
+    if value is None:
+        return None
+    if not value.strip():
+        raise click.BadParameter("the report directory is empty; give one, for example reports",
+                                 ctx, param)
+    return Path(value)
+
+
+class _Stdout:
+    """The command's own standard output, kept apart from anything a claim writes.
+
+    Meanwhile ``sys.stdout`` and file descriptor 1 point at stderr, so nothing a
+    claims file prints (at import, in a claim, at exit) reaches stdout; the
+    command writes to the stream this returns, a duplicate of the original
+    descriptor.  In a real process descriptor 1 stays pointed at stderr afterwards
+    (atexit handlers or threads a claims file left behind cannot write to stdout
+    either); an in-memory stdout (a test runner's) is simply restored."""
+
+    def __enter__(self) -> Any:
+        from stiefelsym.run.pool import _redirect_fd1
+        self.original = sys.stdout
+        try:
+            fd = sys.stdout.fileno()
+        except (AttributeError, OSError, ValueError):
+            fd = None
+        try:
+            sys.stdout.flush()
+        except (AttributeError, OSError, ValueError):
+            pass
+        self.stream = sys.stdout
+        if fd == 1:
+            try:
+                self.stream = open(os.dup(1), "w", encoding=sys.stdout.encoding,
+                                   errors=sys.stdout.errors,
+                                   buffering=1 if sys.stdout.line_buffering else -1)
+            except (OSError, AttributeError):
+                self.stream = sys.stdout
+        self.saved_fd = _redirect_fd1()
+        sys.stdout = sys.stderr
+        return self.stream
+
+    def __exit__(self, *exc: Any) -> None:
+        try:
+            self.stream.flush()
+        except (OSError, ValueError, AttributeError):
+            pass
+        sys.stdout = self.original
+        if self.stream is not self.original:
+            self.stream.close()
+            if self.saved_fd is not None:
+                os.close(self.saved_fd)
+        elif self.saved_fd is not None:
+            os.dup2(self.saved_fd, 1)
+            os.close(self.saved_fd)
+
+
+@main.command(cls=_VerifyCommand, short_help="Verify claims (default: the catalog); write reports.")
+@click.argument("ids", nargs=-1, metavar="[CLAIM]...")
+@click.option("--size", "sizes", type=SizeType(), multiple=True, metavar="n,r",
+              help="Problem size, repeatable (default: each claim's own sizes).  A size outside "
+                   "the sizes a named claim is stated for is refused; without named claims, the "
+                   "claims that are not stated for it skip it.")
+@click.option("--max-n", "max_n", type=click.IntRange(min=1), default=None, metavar="N",
+              help="Every size n,r with n <= N that each claim is stated for (instead of each "
+                   "claim's own default sizes); a catalog run with --max-n is still a full run.")
+@click.option("--method", "methods", type=MethodType(), multiple=True, help=METHOD_HELP)
+@click.option("--seed", type=SeedType(), default="0", show_default=True, metavar="N|random",
+              help="Seed of every random choice; the same seed reproduces every verdict.  'random' draws "
+                   "a fresh seed (printed in every result): use it for claims you did not write, since a "
+                   "claim that knows the seed could be built to vanish exactly at its random points.")
+@click.option("--claims", "claims_files", metavar="FILE", multiple=True,
+              help="A Python file of your own claims (written with @claim); verifies them all, "
+                   "or those named.  Repeatable (an id defined in two files is refused).")
+@click.option("--report-dir", type=str, callback=_report_dir, metavar="DIR",
+              help="Write the reports here (default: reports/, full catalog runs only).")
+@click.option("--format", "fmt", type=click.Choice(["text", "json", "junit"]), default="text",
+              show_default=True,
+              help="stdout: one line per result and a summary, or the JSON results, or JUnit XML.")
+@click.option("--no-report", is_flag=True, help="Write no report files.")
+@click.option("--hard", type=click.Choice(sorted(HARD_CASES)), default=None,
+              help="Evaluate at a hard numerical case (rational, modular, float and ball methods): "
+                   + "; ".join(f"{k}: {v.description}" for k, v in sorted(HARD_CASES.items())) + ".")
+@click.option("--timeout", type=click.FloatRange(min=0, min_open=True), default=DEFAULT_TIMEOUT,
+              show_default=True, metavar="SECONDS",
+              help="Wall-time budget of each run (auto as a whole); past it the run's worker is "
+                   "killed and the verdict is inconclusive.")
+@click.option("--memory", type=click.FloatRange(min=0, min_open=True), default=DEFAULT_MEMORY_GIB,
+              show_default=True, metavar="GIB",
+              help="Memory budget (address space, GiB) of each run's worker: a run whose peak memory "
+                   "predicted by the cost model exceeds it is refused before anything runs (exit 2, with the "
+                   "prediction and the largest n that fits); a run that exceeds it while running is an error.")
+@click.option("--jobs", type=click.IntRange(min=1), default=1, show_default=True, metavar="N",
+              help="Runs computed in parallel (worker processes); the results come in the same "
+                   "order with the same verdicts whatever N.")
+@click.option("--budget", type=click.FloatRange(min=0, min_open=True), default=DEFAULT_BUDGET,
+              show_default=True, metavar="SECONDS",
+              help="Refuse, before anything runs (exit 2), a run (claim, size, method) whose time "
+                   "predicted by the cost model (`stiefelsym speed`) exceeds SECONDS; the refusal "
+                   "gives the prediction and a faster method.")
+@click.option("--scheduler", default=None, metavar="ADDRESS",
+              help="Run the plan on a dask.distributed cluster (e.g. tcp://host:8786; needs the "
+                   "optional extra stiefelsym[dask]); the same budgets per run, the same verdicts "
+                   "and order as a local run; reports are written once, here.")
+def verify(ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tuple[str, ...], seed: int,
+           claims_files: tuple[str, ...], report_dir: Path | None, fmt: str, no_report: bool,
+           hard: str | None, timeout: float, memory: float, jobs: int,
+           budget: float = DEFAULT_BUDGET, scheduler: str | None = None, max_n: int | None = None) -> int:
+    """Verify claims (default: the whole catalog) and print one line per result.
+
+    CLAIM is a claim id (see `stiefelsym list`).  With --claims FILE the claims of
+    your own file are verified, optionally together with catalog claims named as
+    CLAIM; a claim of FILE shadows a catalog claim of the same id.  A failure is
+    printed with its witness in short, an undecided, inconclusive or error verdict
+    with its reason, and after every failure or unexpected verdict the command that
+    reruns it.  When a claim fails as printed, each of its registered corrections is
+    then verified at every size the claim was run at.
+
+    Reports (results.json, verification.md, verification.tex) are written only after
+    the run has finished, each file atomically, and not at all when interrupted.  A
+    full catalog run (no CLAIM, --claims or --size) writes them to reports/; a partial
+    run writes them only to a --report-dir given explicitly, so that a subset never
+    silently overwrites the catalog's reports.
+
+    With --format json or junit, stdout holds only that document; the result lines
+    and the summary go to stderr.  Whatever claims print goes to stderr.  A progress
+    bar is shown on stderr when it is a terminal.
+
+    Exit status: 0 every verdict as expected, 1 some verdict unexpected, 2 bad
+    input, 130 interrupted (Ctrl-C), 143 terminated (SIGTERM).
+    """
+    with _Stdout() as out, raise_on_sigterm():
+        return _verify(out, ids, sizes, methods, seed, claims_files, report_dir, fmt, no_report,
+                       hard, timeout, memory, jobs, budget, scheduler, max_n)
+
+
+def _check_costs(runner: Any, claims: list[Claim], sizes: tuple[Size, ...], methods: Sequence[str],
+                 budget: float, memory: float | None = None) -> None:
+    """Refuse (BudgetError, exit 2) a planned run whose predicted time exceeds the budget, or
+    whose predicted peak memory exceeds the memory budget (--memory)."""
+    from stiefelsym.methods import costmodel
+    for c in claims:
+        for m in methods:
+            if m == "free":
+                continue
+            for s in (sizes or tuple(c.sizes)):
+                if s.r < 1 or s.r > s.n or (sizes and not c.sizes.admits(s.n, s.r)):
+                    continue          # refused (or skipped) with its own reason by the plan
+                costmodel.check_memory(m, c, s.n, s.r, memory)
+                costmodel.check(m, c, s.n, s.r, budget)
+
+
+#: what an ``auto`` run says when its symbolic attempt ran out of memory (then modular decided)
+_EXACT_OUT_OF_MEMORY = "exact: the symbolic computation exceeded the memory budget"
+
+
+def downgrade_note(r: Result, memory: float | None) -> str | None:
+    """The note for an ``auto`` run whose exact attempt exceeded the memory budget, so that a
+    randomized verdict stood in for a proof (None for any other result)."""
+    if r.method == "modular" and _EXACT_OUT_OF_MEMORY in (r.message or ""):
+        budget = "no limit" if memory is None else f"{memory:g} GiB"
+        return (f"note: {r.claim} {r.size}: the exact method ran out of memory (--memory {budget}), so auto "
+                f"fell back to modular ({r.verdict}, not proved); give more --memory for a proof")
+    return None
+
+
+def _remote(address: str) -> Any:
+    """runner.verify on the dask cluster at ``address``; a cluster that cannot be used is bad input."""
+    from stiefelsym.run import distributed
+    remote = distributed.verifier(address)
+
+    def engine(*args: Any, **kw: Any) -> Any:
+        try:
+            return remote(*args, **kw)
+        except distributed.DistributedError as exc:
+            raise InputError(str(exc)) from None
+    return engine
+
+
+def _verify(out: Any, ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tuple[str, ...],
+            seed: int, claims_files: tuple[str, ...], report_dir: Path | None, fmt: str,
+            no_report: bool, hard: str | None, timeout: float, memory: float, jobs: int,
+            budget: float = DEFAULT_BUDGET, scheduler: str | None = None, max_n: int | None = None) -> int:
+    if no_report and report_dir is not None:
+        raise InputError("--no-report and --report-dir contradict each other")
+    if max_n is not None and sizes:
+        raise InputError("--max-n and --size contradict each other: give one of them")
+    if hard is not None and set(methods or ("auto",)) & {"exact", "free"}:
+        raise InputError("--hard evaluates sampled points: use it with --method rational, modular, float, ball "
+                         "or auto")
+    # reports are written only where --report-dir says (make verify: reports/), never by default, so
+    # that a run of a few claims never overwrites the committed appendix
+    target = None if no_report else report_dir
+    if target is not None:
+        _check_report_dir(target)
+    runner = _runner()
+    needed = sizes if max_n is None else tuple(Size(n, r) for n in range(1, max_n + 1) for r in range(1, n + 1))
+    try:
+        registry, user = _registry(claims_files, ids, needed, (timeout, memory))
+    except (KeyboardInterrupt, Terminated) as exc:     # while the claims files are traced (in children)
+        what = "interrupted" if isinstance(exc, KeyboardInterrupt) else "terminated"
+        click.echo(f"{chr(10) if _isatty(sys.stderr) else ''}stiefelsym: {what} after 0 of ? runs "
+                   "(while tracing the claims files); no report written", err=True)
+        raise click.exceptions.Exit(EXIT_INTERRUPTED if isinstance(exc, KeyboardInterrupt)
+                                    else EXIT_TERMINATED) from None
+    if ids:
+        try:
+            claims = runner.select(registry, list(ids))
+        except KeyError as exc:
+            raise InputError(exc.args[0] if exc.args else str(exc)) from None
+    else:
+        claims = list(registry)
+    if max_n is not None:     # every size up to max_n that some selected claim is stated for
+        sizes = tuple(Size(n, r) for n in range(1, max_n + 1) for r in range(1, n + 1)
+                      if any(c.sizes.admits(n, r) for c in claims))
+    origin: dict[str, str] = getattr(user, "origin", {}) if user is not None else {}
+    user_ids = set(origin)
+    methods = methods or ("auto",)
+    budgets: list[str] = []
+    if timeout != DEFAULT_TIMEOUT:
+        budgets += ["--timeout", f"{timeout:g}"]
+    if budget != DEFAULT_BUDGET:
+        budgets += ["--budget", f"{budget:g}"]
+    if memory != DEFAULT_MEMORY_GIB:
+        budgets += ["--memory", f"{memory:g}"]
+    dest = out if fmt == "text" else sys.stderr   # result lines go to stderr when stdout is a document
+    progress = _Progress(_isatty(sys.stderr))
+    results: list[Result] = []
+
+    def say(text: str, nl: bool = True) -> None:
+        click.echo(text, file=dest, nl=nl)
+
+    def on_result(r: Result) -> None:
+        if not r.rerun:
+            r.rerun = runner.rerun_command(r)
+        if r.claim in user_ids and "--claims" not in r.rerun:
+            r.rerun += " --claims " + shlex.quote(origin[r.claim])
+        if budgets and budgets[0] not in r.rerun:
+            r.rerun += " " + shlex.join(budgets)
+        results.append(r)
+        progress.clear()
+        say(r.line())
+        reason = r.reason(None)
+        if reason and reason != r.reason():
+            say(f"  {_shorten(reason, 2000)}")        # the whole reason, which the line had to cut
+        if r.verdict == "fails" and r.message and _one_line(r.message) not in reason:
+            say(f"  {_shorten(_one_line(r.message), 2000)}")
+        if r.verdict in ("fails", "error", "inconclusive") or not r.expected:
+            say(f"  rerun: {r.rerun}")
+        note = downgrade_note(r, memory)
+        if note:
+            click.echo(note, err=True)
+        progress.advance(r)
+
+    started = datetime.now(timezone.utc)
+    t0 = time.perf_counter()
+    try:
+        if not claims:
+            raise InputError("no claims to verify (0 claims loaded)")
+        _check_costs(runner, claims, sizes, methods, budget, memory)
+        from stiefelsym.run.runner import engine_methods
+        engine = runner.verify
+        if scheduler is not None:
+            engine = _remote(scheduler)
+        try:
+            engine(claims, sizes=list(sizes) or None, methods=engine_methods(methods, max_n), seed=seed,
+                   on_result=on_result, on_plan=progress.plan, hard=hard,
+                   timeout=timeout, memory=memory, jobs=jobs, strict_sizes=bool(ids) and max_n is None)
+        finally:
+            progress.close()
+        meta = {
+            "title": _title(claims_files, user_ids, claims),
+            "command": _command(ids, claims_files, () if max_n is not None else sizes, methods, seed,
+                                report_dir, budgets + (["--max-n", str(max_n)] if max_n is not None else [])),
+            "seed": seed, "methods": list(methods), "hard": hard, "max_n": max_n,
+            "sizes": None if max_n is not None else ([f"{s.n},{s.r}" for s in sizes] or None),
+            "claims_file": claims_files[0] if claims_files else None,
+            "claims_files": list(claims_files),
+            "timeout": timeout, "memory_gib": memory, "jobs": jobs, "budget": budget,
+            "scheduler": scheduler,
+            "date": started.strftime("%Y-%m-%d %H:%M:%S UTC"),
+            "seconds": round(time.perf_counter() - t0, 2),
+            "versions": _versions(), "platform": platform.platform(terse=True),
+            "commit": _commit(), "sections": _section_titles(),
+        }
+        if target is not None:
+            from stiefelsym.methods.witness import attach_small_witnesses
+            attach_small_witnesses(results, {c.id: c for c in claims})
+        summary = _report.render_summary(results)
+        if fmt == "json":
+            click.echo(dump_results(results, meta), file=out, nl=False)
+        elif fmt == "junit":
+            click.echo(_report.render_junit(results, meta), file=out, nl=False)
+        say(summary, nl=False)
+        if any(r.false_pass_bound is not None for r in results):
+            say(P_LEGEND)
+        if hard:
+            untouched = sorted({r.claim for r in results if "changed no parameter" in (r.message or "")})
+            if untouched:
+                click.echo(f"note: the hard case {hard} changed no parameter of {len(untouched)} "
+                           f"claim{'s' if len(untouched) > 1 else ''} ({', '.join(untouched[:6])}"
+                           f"{', ...' if len(untouched) > 6 else ''}): there it is an ordinary random point",
+                           err=True)
+        if target is not None:
+            try:
+                paths = _write_reports(target, results, meta)
+            except OSError as exc:  # the disk filled up or the directory vanished meanwhile
+                raise InputError(f"cannot write reports to {target}: {exc.strerror or exc}") from None
+            click.echo(f"reports: {', '.join(str(p) for p in paths)}", err=True)
+        elif not no_report:
+            click.echo("note: no report written (give --report-dir DIR to write "
+                       "one)", err=True)
+    except (SizeError, runner.BudgetError, ClaimTimeout) as exc:
+        raise InputError(str(exc)) from None
+    except (KeyboardInterrupt, Terminated) as exc:
+        lead = "\n" if _isatty(sys.stderr) else ""
+        what = "interrupted" if isinstance(exc, KeyboardInterrupt) else "terminated"
+        click.echo(f"{lead}stiefelsym: {what} after {progress.done} of "
+                   f"{progress.total or '?'} runs; no report written", err=True)
+        raise click.exceptions.Exit(EXIT_INTERRUPTED if isinstance(exc, KeyboardInterrupt)
+                                    else EXIT_TERMINATED) from None
+    if not results:
+        raise InputError("nothing was run: no planned (claim, size, method)")
+    return EXIT_UNEXPECTED if any(not r.expected for r in results) else EXIT_OK
+
+
+def _shorten(text: str, limit: int) -> str:
+    return text if len(text) <= limit else text[: limit - 3] + "..."
+
+
+def _title(claims_files: Sequence[str], user_ids: set[str], claims: list[Claim]) -> str | None:
+    """None (the paper's title) unless user claims were verified."""
+    if not claims_files:
+        return None
+    names = ", ".join(dict.fromkeys(Path(f).name for f in claims_files))
+    if all(c.id in user_ids for c in claims):
+        return f"Verification of the claims of {names}"
+    return f"Verification of the claims of {names} and of the paper's catalog"
+
+
+# --------------------------------------------------------------------------- list, show
+
+def _sizes_text(sizes: Sequence[Size], limit: int = 4) -> str:
+    """The sizes a claim is verified at, listed or summarized, with its stated condition."""
+    if len(sizes) <= limit:
+        text = " ".join(f"({s.n},{s.r})" for s in sizes)
+    else:
+        ns, rs = [s.n for s in sizes], [s.r for s in sizes]
+        text = f"{len(sizes)} sizes, n {min(ns)}..{max(ns)}, r {min(rs)}..{max(rs)}"
+    condition = getattr(sizes, "condition", "")
+    return f"{text}; {condition}" if condition else text
+
+
+@main.command("list")
+@click.option("--claims", "claims_files", metavar="FILE", multiple=True,
+              help="List the claims of this file (repeatable).")
+def list_claims(claims_files: tuple[str, ...]) -> None:
+    """List the claims: id, paper label(s), kind, section, sizes."""
+    registry = _user_claims(claims_files) if claims_files else _catalog()
+    rows = [("id", "paper", "kind", "§", "sizes")]
+    rows += [(c.id, ", ".join(c.paper), c.kind, c.section or "-", _sizes_text(c.sizes))
+             for c in registry]
+    widths = [max(len(row[i]) for row in rows) for i in range(4)]
+    for row in rows:
+        click.echo("  ".join(cell.ljust(w) for cell, w in zip(row, widths)) + "  " + row[4])
+    click.echo(f"{len(registry)} claims", err=True)
+
+
+@main.command()
+@click.argument("claim_id", metavar="CLAIM")
+@click.option("--claims", "claims_files", metavar="FILE", multiple=True,
+              help="Look the claim up in this file first (repeatable).")
+def show(claim_id: str, claims_files: tuple[str, ...]) -> None:
+    """Show one claim: statement, docstring, sizes, source."""
+    registry, _ = _registry(claims_files, (claim_id,))
+    c = _lookup(registry, claim_id)
+    click.echo(f"{c.id}  (paper: {', '.join(c.paper)})  §{c.section or '-'}")
+    click.echo(f"kind:        {c.kind}: {_report.KIND_MEANING.get(c.kind, '')}")
+    if c.title:
+        click.echo(f"docstring:   {c.title}")
+    click.echo(f"statement:   {c.statement or '(none given)'}")
+    try:
+        failing = [f"({z.n},{z.r})" for z in c.sizes if c.expects_failure(z.n, z.r)]
+        unanswered = ""
+    except Exception as exc:    # noqa: BLE001 - the claim's erratum sizes (fails_at) raise: shown, not a traceback
+        failing, unanswered = [], f"{type(exc).__name__}: {_one_line(str(exc))}"
+    exception = "; except where the erratum below says" if failing and c.expect == "holds" else ""
+    click.echo(f"expect:      {EXPECT_MEANING.get(c.expect, c.expect)}{exception}")
+    click.echo(f"realization: {c.realization}")
+    click.echo(f"sizes:       {_sizes_text(c.sizes, limit=len(c.sizes))}")
+    click.echo(f"exact symbolic method up to n = {c.exact_max_n}"
+               + "".join(f"; up to r = {r} at n = {n}" for n, r in c.exact_max_r))
+    if failing:
+        click.echo(f"erratum:     fails as printed at {' '.join(failing)}"
+                   + (f": {_one_line(c.erratum)}" if c.erratum else ""))
+    if unanswered:
+        click.echo(f"erratum:     its sizes (fails_at) cannot be evaluated at the listed sizes ({unanswered})")
+    for corr in c.corrections:
+        click.echo(f"correction:  {corr.description}")
+    click.echo(f"source:      {_source(c)}")
+
+
+@main.command()
+@click.argument("claim_id", metavar="CLAIM")
+@click.option("--claims", "claims_files", metavar="FILE", multiple=True,
+              help="Look the claim up in this file first (repeatable).")
+def derive(claim_id: str, claims_files: tuple[str, ...]) -> None:
+    """Print the dimension-free proof of CLAIM as LaTeX: each residual, the rules that
+    reduce it, its normal form.  Exit status 1 when the claim is not proved for all n, r."""
+    from stiefelsym.run.runner import run_free_guarded
+    registry, _ = _registry(claims_files, (claim_id,))
+    c = _lookup(registry, claim_id)
+    res = run_free_guarded(c)
+    click.echo(f"% {c.id} ({', '.join(c.paper)}): {res.verdict} for all n, r", err=False)
+    if res.verdict != "proved":
+        click.echo(f"% {res.message}")
+        raise click.exceptions.Exit(EXIT_UNEXPECTED)
+    click.echo(f"% {res.certificate}")
+    click.echo("\n\n".join(res.derivation) if res.derivation else "% every residual is 0 as built")
+
+
+def _source(c: Claim) -> str:
+    from stiefelsym.run.userfile import TracedFunction
+    try:
+        if isinstance(c.func, TracedFunction):     # a user's claim: where its child found it
+            path, line = c.func.path, c.func.line
+            if not path:
+                return c.source or "?"
+        else:
+            path = inspect.getsourcefile(c.func)
+            line = inspect.getsourcelines(c.func)[1]
+    except (OSError, TypeError):
+        return c.source or "?"
+    if path:
+        try:
+            path = os.path.relpath(path)
+        except ValueError:
+            pass
+    return f"{c.source} ({path}:{line})"
+
+
+# --------------------------------------------------------------------------- report
+
+@main.command()
+@click.option("--results", "results_file", type=click.Path(path_type=Path), metavar="FILE",
+              help="The JSON results (default: DIR/results.json, DIR defaulting to reports/).")
+@click.option("--report-dir", type=str, callback=_report_dir, metavar="DIR",
+              help="Where to write verification.md and verification.tex (default: the results "
+                   "file's directory).")
+@click.option("--claims", "claims_files", multiple=True, type=click.Path(),
+              help="claims files the run used (default: those the results file names)")
+def report(results_file: Path | None, report_dir: Path | None, claims_files: tuple[str, ...] = ()) -> None:
+    """Re-render the Markdown and LaTeX reports from a JSON results file.  Every record is bound to its
+    registered claim (the catalog's, or the claims files the run named): a record whose claim is not
+    found, or whose statement, title or labels are not the claim's, is refused, and so is a proof for
+    every n, r without a valid certificate (``stiefelsym check`` also runs every record again)."""
+    source = results_file or (report_dir or DEFAULT_REPORT_DIR) / "results.json"
+    if not source.is_file():
+        raise InputError(f"results file not found: {source} (run `stiefelsym verify` first)")
+    try:
+        meta, results = load_results(source)
+    except (OSError, UnicodeDecodeError, ValueError, KeyError, TypeError, AttributeError) as exc:
+        raise InputError(f"{source} is not a stiefelsym results file: {_one_line(exc)}") from None
+    from stiefelsym.run.integrity import (MAX_N_CHECKED, certificate_binding_problems, certificate_problems, claim_field_edits,
+                            missing_runs, size_method_problems)
+    from stiefelsym.methods.hard import HARD_CASES
+    from stiefelsym.results import meta_problems
+    bad_meta = meta_problems(meta, _runner().METHODS, tuple(HARD_CASES), MAX_N_CHECKED)
+    if bad_meta:
+        raise InputError(f"{source}: refused, its meta (the command the file is the run of) is malformed: "
+                         f"{'; '.join(bad_meta)}")
+    for r in results:
+        odd = size_method_problems(r.to_json())
+        if odd:
+            raise InputError(f"{source}: refused, record of {r.claim!r}: {odd[0]}")
+    problems = certificate_problems(results)
+    if problems:
+        raise InputError(f"{source}: refused, {len(problems)} record(s) without a valid certificate: {problems[0]} "
+                         "(`stiefelsym check` re-checks every record)")
+    registry, _ = _registry(list(claims_files) or list((meta or {}).get("claims_files") or []) or None)
+    for r in results:
+        cid = getattr(r, "claim", None)
+        if cid not in registry:
+            raise InputError(f"{source}: refused, record of {cid!r}: no such claim in the catalog or the claims "
+                             "files the run named (pass them with --claims)")
+        edits = claim_field_edits(r.to_json(), registry.get(cid))
+        if edits:
+            raise InputError(f"{source}: refused, record of {cid!r}: its {', '.join(edits)} "
+                             f"{'is' if len(edits) == 1 else 'are'} not the claim's (`stiefelsym check` re-checks "
+                             "every record)")
+    for r in results:                # the flag "as expected" is the registered claim's, not the file's
+        try:
+            expected = _runner().expected_of(registry.get(r.claim), r.method, r.verdict, r.n, r.r, r.variant)[0]
+        except Exception:   # noqa: BLE001 - the claim's erratum sizes cannot say here (check runs it again)
+            continue
+        if expected != r.expected:
+            raise InputError(f"{source}: refused, record of {r.claim!r} {r.size} {r.method}: it says the verdict "
+                             f"{r.verdict!r} is {'' if r.expected else 'not '}the one the claim expects, and the "
+                             "claim's statement says otherwise (`stiefelsym check` re-checks every record)")
+    unbound = certificate_binding_problems(results, registry)
+    if unbound:
+        raise InputError(f"{source}: refused, {len(unbound)} proof(s) for every n, r whose certificate is not their "
+                         f"claim's: {unbound[0]} (`stiefelsym check` re-checks every record)")
+    missing = missing_runs([r.to_json() for r in results], registry, meta)
+    if missing:
+        raise InputError(f"{source}: refused, {len(missing)} run(s) its command planned have no record: {missing[0]} "
+                         "(a results file is the whole run of its command)")
+    target = report_dir or source.parent
+    _check_report_dir(target)
+    mutation = _mutation(source.parent)
+    texts = {"verification.md": _report.render_markdown(results, meta, mutation=mutation),
+             "verification.tex": _report.render_latex(results, meta),
+             "verification-runs.tex": _report.render_latex(results, meta, mutation=mutation, detail=True)}
+    try:
+        for name, text in texts.items():
+            write_atomic(target / name, text)
+    except OSError as exc:
+        raise InputError(f"cannot write reports to {target}: {exc.strerror or exc}") from None
+    click.echo(f"reports: {', '.join(str(target / n) for n in texts)} "
+               f"({len(results)} results)", err=True)
+
+
+# --------------------------------------------------------------------------- mutate
+
+# ``stiefelsym mutate`` lives in its own module, imported only when it is asked for (or the
+# commands are listed); if the module is missing the command is simply not there.
+main.lazy = {"mutate": ("stiefelsym.cli.mutate", "mutate"),
+             "tables": ("stiefelsym.cli.tables", "tables"),
+             "flows": ("stiefelsym.cli.flows", "flows"),
+             "speed": ("stiefelsym.cli.speed", "speed"),
+             "check": ("stiefelsym.cli.check", "check"),
+             "discover": ("stiefelsym.cli.discover", "discover")}
+
+
+if __name__ == "__main__":  # pragma: no cover
+    main()

@@ -1,0 +1,56 @@
+"""``stiefelsym check results.json``: every record re-traced and re-checked.
+
+Each record names the digest of the graph its verdict is about; the claim (from the
+catalog, or the claims files the run named) is traced again and the digests compared,
+and every dimension-free certificate is re-derived and re-checked by the independent
+checker.  A hand-edited or stale results file is caught.
+
+Exit status: 0 every record holds up; 1 some record does not; 2 bad input.
+"""
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import click
+
+from stiefelsym.cli import InputError, _registry, standalone_command
+from stiefelsym.methods.hard import HARD_CASES
+from stiefelsym.run.integrity import MAX_N_CHECKED, check_results
+from stiefelsym.results import meta_problems
+from stiefelsym.run.runner import METHODS
+
+_Command = standalone_command("stiefelsym check")
+
+
+@click.command("check", cls=_Command, short_help="Re-trace every record of a results file and re-check it.")
+@click.argument("results_file", type=click.Path(path_type=Path))
+@click.option("--no-rerun", is_flag=True, help="compare digests and certificates only (no method runs again)")
+@click.option("--claims", "claims_files", multiple=True, type=click.Path(),
+              help="claims files the run used (default: those the results file names)")
+def check(results_file: Path, no_rerun: bool, claims_files: tuple[str, ...]) -> None:
+    """Re-trace every record's claim, compare the graph digests, run every fixed-size record again
+    (its method, size and seed) and compare the verdicts, re-derive and re-check every
+    dimension-free certificate; exit 1 if any record does not hold up."""
+    if not results_file.is_file():
+        raise InputError(f"results file not found: {results_file}")
+    try:
+        payload = json.loads(results_file.read_text(encoding="utf-8"))
+        records = payload["results"]
+        meta = payload["meta"]
+        if not isinstance(records, list) or not all(isinstance(r, dict) for r in records):
+            raise TypeError("results is not a list of records")
+        if not isinstance(meta, dict):
+            raise TypeError("meta (the command the file is the run of) is not a mapping")
+    except (OSError, UnicodeDecodeError, json.JSONDecodeError, KeyError, TypeError) as exc:
+        raise InputError(f"{results_file} is not a stiefelsym results file: {exc}") from None
+    problems = meta_problems(meta, METHODS, tuple(HARD_CASES), MAX_N_CHECKED)
+    if problems:
+        raise InputError(f"{results_file}: its meta (the command the file is the run of) is malformed: "
+                         f"{'; '.join(problems)}")
+    files = list(claims_files) or list(meta.get("claims_files") or [])
+    # the sizes the records were run at: a user's claims are traced there (in child processes)
+    sizes = [(r.get("n"), r.get("r")) for r in records]
+    registry, _ = _registry(files or None, (), [(n, r) for n, r in sizes if type(n) is int and type(r) is int])
+    bad = check_results(records, registry, echo=click.echo, rerun=not no_rerun, hard=meta.get("hard"), meta=meta)
+    raise SystemExit(1 if bad else 0)

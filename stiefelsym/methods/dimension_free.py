@@ -1,0 +1,510 @@
+"""The dimension-free method: rewriting modulo the constraints (all n, r at once).
+
+A claim runs unchanged on :class:`~stiefelsym.free.FreeScene`; every residual
+entry is reduced to normal form by a confluent, terminating rewriting system
+whose rules are consequences of the constraints.  Normal form 0 for every
+entry proves the claim for every n, r and every symmetric A (positive definite in the metric
+realization, see :mod:`stiefelsym.free.metric`).  A nonzero normal
+form proves nothing (the rules may be incomplete, and small sizes have extra
+identities): the verdict is then ``undecided`` and the fixed-size methods decide.
+
+Every proof carries a cofactor certificate per residual entry (the entry as a
+combination of the hypotheses, traced through the reductions), which the
+independent checker :mod:`stiefelsym.certificate_check` re-expands before the
+verdict is ``proved``; a certificate it rejects makes the verdict ``error``.
+
+A claim stated at one r (r = 1, 2 or r = n, declared) is proved on that family of
+sizes, for every n, with the hypotheses of that r; a claim stated at a union of them
+(``admissible(r_in=(1, "n"))``) family by family, each with its own scene and
+certificate, and a certificate of cases for the checker.  The claim is traced on each
+family (:mod:`stiefelsym.ir.families`): a comparison of sizes it makes is answered
+where the family decides it, refused otherwise.
+"""
+from __future__ import annotations
+
+import dataclasses
+import functools
+import time
+from typing import Any, Callable
+
+from stiefelsym.certificate_check import CASES, check_certificate
+from stiefelsym.claims import Claim, Count, Rank, Size, SizeSpec
+from stiefelsym.ir.statements import InverseIdentities
+from stiefelsym.methods.fixed_size import _base_result, division_probe, _entries, _short, call_claim
+from stiefelsym.results import CheckOutcome, Result
+from stiefelsym.free import FreeScene, FreeSolveError, NeedsCoordinates, RewritingError
+from stiefelsym.free.algebra import REFUSED, OperatorLetter, recording, refusals
+from stiefelsym.free.certificates import CertificateWriter
+from stiefelsym.free.columns import COMPLETE
+from stiefelsym.free.rewriting import latex_text
+from stiefelsym.latex import tex_text, unicode_name
+from stiefelsym.ir import SizeFamily, TraceRefused
+
+
+def run_free(claim: Claim, func: Callable | None = None) -> Result:
+    func = func or claim.func
+    t0 = time.perf_counter()
+    if claim.expect == "nonzero":
+        res = _base_result(claim, None, None, "free", None)
+        res.verdict, res.seconds = "undecided", time.perf_counter() - t0
+        res.message = "rewriting proves vanishing only; a nonvanishing statement needs a witness"
+        return res
+    # the hypotheses that hold at one r only (the columns of R^r at r = 1, 2; X X^T = I_n at r = n)
+    # are taken from the statement's declaration, read once here, and only when every size the
+    # statement admits, and every size it lists, has one of the declared r
+    families, why = size_families(claim)
+    if why:
+        res = _base_result(claim, None, None, "free", None)
+        res.verdict, res.message, res.seconds = "undecided", why, time.perf_counter() - t0
+        return res
+    if len(families) == 1:
+        return run_free_on(claim, func, families[0])
+    return run_free_union(claim, func, families, t0)
+
+
+def run_free_on(claim: Claim, func: Callable, family: SizeFamily | None, alone: bool = True) -> Result:
+    """The dimension-free run of ``func`` on every n, r (``family`` None) or on one family of sizes: the scene
+    with the family's own hypotheses, the claim traced on the family (a comparison of sizes it makes is
+    answered where the family decides it).  ``alone``: the family is the only one the claim is stated for
+    (otherwise it is one case of a union, see :func:`run_free_union`)."""
+    res = _base_result(claim, None, None, "free", None)
+    t0 = time.perf_counter()
+
+    def undecided(msg: str) -> Result:
+        res.verdict = "undecided"
+        res.message = msg
+        res.seconds = time.perf_counter() - t0
+        return res
+
+    columns = family.r if family is not None and family.r in COMPLETE else 0
+    square = family is not None and family.r is None
+    try:
+        # a claim stated at one r = 1 or 2 alone may name the columns E_1, ..., E_r of R^r (their sum
+        # E_1E_1^T + ... + E_rE_r^T = I_r is then a hypothesis)
+        scene = FreeScene(realization=claim.realization, lazy=True, columns=columns, square=square)
+    except NeedsCoordinates as exc:
+        return undecided(f"needs coordinates: {exc.what}; decided by the fixed-size methods")
+
+    def touched() -> Result | None:
+        """Undecided when the run's record holds a refusal of the free scene, whatever the claim
+        did with the exception (caught it and went on, or failed on something else)."""
+        refused = refusals(scene.tracker)
+        if not refused:
+            return None
+        return undecided(f"the claim touched {'; '.join(refused)}, which needs coordinates (refused by the "
+                         "dimension-free scene, recorded before it was raised); decided by the fixed-size methods")
+
+    try:
+        with recording(scene.tracker):   # every refusal goes to the run's record before it is raised
+            checks = call_claim(func, scene, family)
+    except NeedsCoordinates as exc:
+        return undecided(evaluation_needs_text(claim, func, exc.what))
+    except TraceRefused as exc:
+        return undecided(needs_text(claim, func, str(exc), family))
+    except (FreeSolveError, RewritingError) as exc:
+        return touched() or undecided(f"outside the rewriting backend: {exc}")
+    except (TypeError, ValueError, AttributeError, ArithmeticError) as exc:
+        return touched() or undecided(f"the claim does not run on the free algebra ({type(exc).__name__}: {exc})")
+    refused = touched()
+    if refused is not None:
+        return refused
+    used = [u for u in scene.tracker.used if not u.endswith(REFUSED)]
+    if used:
+        return undecided(f"the claim reads {', '.join(used)}")
+    if any(isinstance(v, (Rank, Count)) for v in checks.values()):
+        return undecided("ranks and counts need coordinates; decided by the fixed-size methods")
+    rules, outcomes, derivations, open_entries, proved_entries = [], [], [], [], []
+    try:
+        for name, value in checks.items():
+            bad = 0
+            for pos, x in _entries(value, name):
+                red = scene.reduce(x)
+                for rule in red.rules:
+                    if rule not in rules:
+                        rules.append(rule)
+                if not red.is_zero:
+                    bad += 1
+                    open_entries.append((pos, red))
+                else:
+                    proved_entries.append((pos, red, len(derivations) if red.rules else None))
+                if red.rules or not red.is_zero:
+                    derivations.append(f"\\paragraph{{{entry_title(pos)}}}\n{red.latex()}")
+            said = value.describe() if isinstance(value, InverseIdentities) else ""
+            outcomes.append(CheckOutcome(name, "zero" if not bad else "open",
+                                         said if not bad else f"{bad} entries with nonzero normal form"))
+    except RewritingError as exc:
+        return undecided(f"rewriting did not terminate: {exc}")
+    res.checks = outcomes
+    res.derivation = derivations
+    res.reductions = ["free algebra with involution: X, P, A, resolvents as letters; rules are consequences "
+                      "of X^T X = I, X^T P + P^T X = 0, A = A^T and the resolvent identity; the rule set is "
+                      "terminating (deg-lex order) and confluent (all critical pairs resolve)"]
+    if scene.realization == "metric":
+        res.reductions = metric_reductions(scene)
+    if any(isinstance(L, OperatorLetter) for L in scene._named.values()):
+        res.reductions.append("a generic symmetric operator AA on so(n) as letters AA(w) = AA(skew w), one per word "
+                              "w of its argument (linear, skew); its symmetry tr(AA(u) v) = tr(AA(v) u) as a "
+                              "normal form of traces and in gradients; d AA(M) = AA(dM) along flows")
+    if "columns" in scene._extras:
+        k = scene.columns
+        res.reductions.append(f"the columns {', '.join(f'E_{i + 1}' for i in range(k))} of R^r as letters (r x 1), "
+                              f"E_i^T E_j = delta_ij, and, the claim being stated at r = {k}"
+                              f"{' only' if alone else ' (one family of its sizes)'}, "
+                              f"{' + '.join(f'E_{i + 1} E_{i + 1}^T' for i in range(k))} = I_r: every place where a "
+                              "word passes through R^r is written in this basis, and a 1 x 1 piece is its own trace")
+    if "complex" in scene._extras:
+        res.reductions.append("the point Z = U + iV of the complex Stiefel variety W(n, r) and its velocity "
+                              "Z' = U' + iV' as real n x r letters U, V, U', V' (complex matrices realified, kept as "
+                              "their 2 x 2 blocks); Re and Im of conj(Z)^T Z = I_r and of its derivative as the rules "
+                              "V^T V -> I_r - U^T U, V^T U -> U^T V, V'^T V -> -U'^T U - U^T U' - V^T V', "
+                              "V'^T U -> U'^T V + U^T V' - V^T U' (no critical pairs)")
+    if scene.square:
+        res.reductions.append(f"the claim being stated at r = n{' only' if alone else ' (one family of its sizes)'} "
+                              "(T*SO(n)): X X^T = I_n and P X^T = -X P^T")
+    if "last" in scene._extras:
+        res.reductions.append("the last column E_r of I_r as a letter (r x 1), E_r^T E_r = 1; a 1 x 1 piece is its "
+                              "own trace")
+    if scene.system.trace_fallbacks:
+        return undecided("a trace normal form used a non-canonical representative")
+    if open_entries:
+        pos, red = open_entries[0]
+        res.residual = f"{pos}: nf = {_short(red.normal_form)}"
+        return undecided(f"{len(open_entries)} residual entries have a nonzero normal form "
+                         f"(e.g. {res.residual}); the fixed-size methods decide")
+    # the proof is about the graph traced with symbolic sizes, which is the graph every fixed-size method
+    # evaluates (a claim that traces so is never traced at a number, see stiefelsym.ir._compile): it must
+    # type at every size the claim is stated for (a size written as an int is checked there only); a graph
+    # on a family of sizes is compared with the claim's graphs at the family's sizes
+    why = typed_at_stated_sizes(claim, func) if family is None else graph_of_the_family(claim, func, family)
+    if why:
+        res.verdict, res.message = "error", why
+        res.seconds = time.perf_counter() - t0
+        return res
+    # symbolic coefficients do not raise on a division by an identically zero expression: probe
+    # the same claim code at an exact point of a fixed size first
+    why = probe_divisions(claim, func, every_size=bool(scene._moving), family=family)
+    if why:
+        res.verdict, res.message = "error", why
+        res.seconds = time.perf_counter() - t0
+        return res
+    applied = scene.system.rules_applied()
+    applied += [r for r in rules if r.name.startswith("rho:") and r not in applied]   # (metric: Λ's steps)
+    names = "; ".join(f"{r} " for r in applied).strip() or "none"
+    try:
+        data = certify_entries(scene, proved_entries)
+    except RewritingError as exc:   # a rule without cofactors: an engine fault, never a proof
+        res.verdict, res.message = "error", f"no certificate: {exc}"
+        res.seconds = time.perf_counter() - t0
+        return res
+    report = check_certificate(data)
+    res.certificate_data = data
+    if not report.accepted:
+        res.verdict, res.message = "error", f"certificate rejected: {report.message}"
+        res.seconds = time.perf_counter() - t0
+        return res
+    for (_pos, red, k), entry in zip(proved_entries, data["entries"]):
+        if k is not None:
+            derivations[k] += "\n\n" + latex_text(certificate_line(entry))
+    summary = data["summary"]
+    res.verdict = "proved"
+    res.seconds = time.perf_counter() - t0
+    entries = f"{summary['entries']} residual entr{'y' if summary['entries'] == 1 else 'ies'}"
+    only = "the only r the claim is stated for" if alone else f"n >= {family.n_min if family else 1}"
+    if "XXt" in summary["hypotheses"]:
+        entries += f" (for every n at r = n, {only}: it uses X X^T = I_n)"
+    for k, name in COMPLETE.items():
+        if name in summary["hypotheses"]:
+            entries += (f" (for every n at r = {k}, {only}: it uses "
+                        f"{' + '.join(f'E_{i + 1}E_{i + 1}^T' for i in range(k))} = I_r)")
+    if family is not None and alone and "(for every n at r = " not in entries:
+        # traced on the family (r = k or r = n) of the only sizes the claim is stated for: the proof is
+        # about those sizes, whether or not it used a hypothesis of the family
+        entries += f" (for every n at {family.r_text}, {only})"
+    if scene._moving:
+        entries += (" (for every n, r at which the resolvent at the spectral parameter that moves with the point, "
+                    f"{', '.join(str(m) for _, m in scene._moving)} = {'; '.join(_short(q) for q, _ in scene._moving)},"
+                    " exists: its rules A R = R A = mR - I hold where m is not an eigenvalue of A; the division probe"
+                    " found it defined at every size the claim is stated for)")
+    res.certificate = (f"cofactor certificate of {entries} ({summary['terms']} terms "
+                       f"in the hypotheses {', '.join(summary['hypotheses']) or '(none)'}), re-checked by the "
+                       f"independent checker; every entry has normal form 0; rules "
+                       f"applied while building and reducing the residual: {names}")
+    if summary.get("assumes"):
+        res.certificate += f"; it assumes (the {summary['realization']} realization): {'; '.join(summary['assumes'])}"
+    return res
+
+
+@functools.lru_cache(maxsize=4096)
+def entry_title(pos: str) -> str:
+    """The title of a residual entry's derivation, in LaTeX (a function of the position's text)."""
+    return tex_text(unicode_name(pos))
+
+
+def fixed_r(claim: Claim) -> int:
+    """r when the claim is stated at that one r (its statement's r_min = r_max, not merely its default
+    sizes) and it is 1 or 2, else 0."""
+    spec = claim.sizes
+    lo, hi = getattr(spec, "r_min", None), getattr(spec, "r_max", None)
+    if lo is None or lo != hi or lo not in (1, 2) or any(z.r != lo for z in spec):
+        return 0
+    return lo
+
+
+def declared_by_fields(spec: Any) -> bool:
+    """The statement's admits() is decided by its declared fields before anything else: a plain
+    :class:`SizeSpec` (its condition ``where`` only narrows what r_min, r_max, r_is_n admit), or a user's
+    plain statement rebuilt from its child (:class:`.userfile.TabledSizes` with ``fields_first``).  A
+    subclass's admits() is its own code, which may admit any size at any n."""
+    from stiefelsym.run.userfile import TabledSizes
+    return type(spec) is SizeSpec or (type(spec) is TabledSizes and spec.fields_first is True)
+
+
+#: sizes n <= this at which the statement's admits() gives each declared family its smallest n
+R_CHECK_N = 16
+
+
+def size_families(claim: Claim) -> tuple[list[SizeFamily | None], str]:
+    """The families of sizes the claim is proved on, and "" (or [], why not).
+
+    [None] for a claim stated at every r.  A claim that declares one r (r_min = r_max = 1 or 2, or
+    r_is_n) or a union of them (r_in, e.g. (1, "n")) gets one family per declared r, each for every n
+    from the smallest n at which the claim admits or lists a size of it (the size (k, k) belongs to the
+    family r = n when r = n is declared).  The declaration is believed only when the statement's admits()
+    is decided by its declared fields (:func:`declared_by_fields`: then every size it admits, at every n,
+    is in a declared family) and the sizes it lists say the same; the sizes it admits up to R_CHECK_N
+    give each family its smallest n."""
+    spec = claim.sizes
+    columns, square = fixed_r(claim), bool(getattr(spec, "r_is_n", False))
+    declared = tuple(getattr(spec, "r_in", ()) or ())
+    if not declared:
+        declared = ("n",) if square else (columns,) if columns else ()
+    if not declared:
+        return [None], ""
+    if any(v != "n" and (type(v) is not int or v < 1) for v in declared):
+        return [], f"the statement declares r in {declared!r}, which is not a list of r = k >= 1 and r = n"
+    if not declared_by_fields(spec):
+        said = " or ".join(f"r = {v}" for v in declared)
+        return [], (f"the statement declares {said} but its admits() is its own code (a subclass of SizeSpec), so "
+                    "the declared r is not known to hold at every size it admits: the hypotheses that hold there "
+                    "only are not used; decided by the fixed-size methods")
+
+    def family_of(n: int, r: int) -> Any:
+        return "n" if r == n and "n" in declared else r if r in declared else None
+    lowest: dict[Any, int] = {}
+    admitted = [(z.n, z.r) for z in spec]
+    admitted += [(n, r) for n in range(1, R_CHECK_N + 1) for r in range(1, n + 1) if spec.admits(n, r)]
+    for n, r in admitted:
+        v = family_of(n, r)
+        if v is None:
+            said = " or ".join(f"r = {v}" for v in declared)
+            return [], (f"the statement declares {said} but admits (n, r) = ({n},{r}): the hypotheses that hold "
+                        "there only are not used; decided by the fixed-size methods")
+        lowest[v] = min(lowest.get(v, n), n)
+    out: list[SizeFamily | None] = []
+    for v in declared:     # a declared family with no size up to R_CHECK_N: from its smallest n
+        least = 1 if v == "n" else v + 1 if "n" in declared else v
+        out.append(SizeFamily(None if v == "n" else v, max(lowest.get(v, least), least)))
+    return out, ""
+
+
+def family_sizes(claim: Claim, family: SizeFamily | None) -> list[Size]:
+    """The sizes the claim lists in the family (all of them for None), or the family's smallest size."""
+    if family is None:
+        return list(claim.sizes)
+    return [z for z in claim.sizes if family.holds(z.n, z.r)] or \
+        [Size(family.n_min, family.n_min if family.r is None else family.r)]
+
+
+def run_free_union(claim: Claim, func: Callable, families: list[SizeFamily], t0: float) -> Result:
+    """A claim stated at a union of one-r families: proved iff every family is, each on its own scene with
+    its own hypotheses and its own certificate; the record states every case (its reductions, its
+    derivations) and one certificate of cases that the independent checker re-checks case by case."""
+    res = _base_result(claim, None, None, "free", None)
+    cases = [(f, run_free_on(claim, func, f, alone=False)) for f in families]
+    where = lambda f: f"at {f.r_text} (every n >= {f.n_min})"    # noqa: E731
+    for f, r in cases:
+        if r.verdict != "proved":
+            res.verdict, res.checks, res.residual = r.verdict, r.checks, r.residual
+            res.message = f"{where(f)}: {r.message}"
+            res.seconds = time.perf_counter() - t0
+            return res
+    scopes = " and at ".join(f.r_text for f in families)
+    res.reductions = [f"the claim is stated at {scopes} (declared), a union of families of sizes each for every n: "
+                      f"{'; '.join(str(f) for f in families)} (a size in two families belongs to r = n); each is "
+                      "proved on its own, with the hypotheses of its r and a certificate of its own; a comparison of "
+                      "sizes the claim makes is answered on a family when it has one truth value at all its sizes "
+                      "(r == n is true at r = n, false at r = 1, n >= 2) and refused otherwise"]
+    res.checks, res.derivation = [], []
+    for f, r in cases:
+        res.reductions += [f"{where(f)}: {x}" for x in r.reductions]
+        res.checks += [dataclasses.replace(c, name=f"{f.r_text}: {c.name}") for c in r.checks]
+        res.derivation += [f"\\paragraph{{The case ${f.r_text}$, every $n \\geq {f.n_min}$}}"]
+        res.derivation += r.derivation
+    data = {"format": CASES, "cases": [{"sizes": {"r": "n" if f.r is None else f.r, "n_min": f.n_min},
+                                        "certificate": r.certificate_data} for f, r in cases]}
+    subs = [r.certificate_data["summary"] for _f, r in cases]
+    data["summary"] = {"entries": sum(x["entries"] for x in subs), "terms": sum(x["terms"] for x in subs),
+                       "hypotheses": sorted({h for x in subs for h in x["hypotheses"]}), "cases": len(cases)}
+    report = check_certificate(data)
+    res.certificate_data = data
+    res.seconds = time.perf_counter() - t0
+    if not report.accepted:
+        res.verdict, res.message = "error", f"certificate rejected: {report.message}"
+        return res
+    res.verdict = "proved"
+    res.certificate = (f"cofactor certificates of cases (for every n at {scopes}, the sizes the claim is stated for: "
+                       f"{'; '.join(str(f) for f in families)}), each re-checked by the independent checker: "
+                       + "; ".join(f"{where(f)}: {r.certificate}" for f, r in cases))
+    return res
+
+
+def evaluation_needs_text(claim: Claim, func: Callable, refusal: str) -> str:
+    """Why a claim whose graph traces with symbolic sizes is left to the fixed-size methods: what the
+    free scene refused, with what the claim's graph reads, when it names it."""
+    from stiefelsym.ir import compile_claim
+    from stiefelsym.ir.passes import coordinate_needs
+    from stiefelsym.scene import REALIZATIONS
+    needs: list[str] = []
+    if claim.realization in REALIZATIONS:
+        cons = REALIZATIONS[claim.realization]
+        try:        # its graph with symbolic sizes (the claim's graph at every size)
+            needs = coordinate_needs(compile_claim(func, None, None, (cons.name, cons.build)))
+        except Exception:    # noqa: BLE001 - the refusal alone says it
+            needs = []
+    if not needs:
+        return f"needs coordinates: {refusal}; decided by the fixed-size methods"
+    return (f"needs coordinates (fixed n, r): {'; '.join(needs)} (the dimension-free scene refused: {refusal}); "
+            "decided by the fixed-size methods")
+
+
+def needs_text(claim: Claim, func: Callable, refusal: str, family: SizeFamily | None = None) -> str:
+    """Why a claim that does not trace with symbolic sizes (on its family of sizes) is left to the
+    fixed-size methods, read from its graph at a fixed size (what it states and reads there), with the
+    refusal that stopped the symbolic trace."""
+    from stiefelsym.ir import compile_claim
+    from stiefelsym.ir.passes import coordinate_needs
+    from stiefelsym.scene import REALIZATIONS
+    cons = REALIZATIONS[claim.realization]
+    sizes = family_sizes(claim, family)
+    z = next((z for z in sizes if 1 < z.r < z.n), None) or next((z for z in sizes if z.n >= 3), sizes[-1])
+    try:
+        needs = coordinate_needs(compile_claim(func, z.n, z.r, (cons.name, cons.build)))
+    except Exception as exc:    # noqa: BLE001 - refused at a fixed size too: no coordinate would help
+        return (f"the claim is refused with symbolic sizes and at ({z.n},{z.r}) too ({type(exc).__name__}): "
+                f"{refusal.removeprefix('refused: ')}; an error at the fixed sizes")
+    what = "; ".join(needs) if needs else "its statement depends on the sizes (a loop or a condition over n, r)"
+    return (f"needs coordinates (fixed n, r): {what} (the trace with symbolic sizes stopped at: "
+            f"{refusal.removeprefix('refused: ')}); decided by the fixed-size methods")
+
+
+def metric_reductions(scene: Any) -> list[str]:
+    """What a proof in the metric realization used (see :mod:`stiefelsym.free.metric`)."""
+    out = ["free algebra with involution: X, P, A, A^(-1), resolvents as letters; the metric realization "
+           "(cond_XP2): rules X^T X -> I_r, P^T A^(-1) X -> -X^T A^(-1) P, A A^(-1) = A^(-1) A -> I_n, consequences "
+           "of X^T X = I_r, X^T A^(-1) P + P^T A^(-1) X = 0, A = A^T invertible; terminating (deg-lex order) and "
+           "confluent (all critical pairs resolve)"]
+    if scene._sylvester:
+        names = ", ".join(str(L) for L in scene._sylvester)
+        out.append("the Dirac flow X' = H_P - A^(-1) X Pi, P' = -H_X + X Lambda + A^(-1) P Pi, its multipliers solving "
+                   "Sylvester equations with M = X^T A^(-1) X: A is symmetric positive definite (a metric), so M is, "
+                   "and Y -> Y M + M Y is invertible (eigenvalues m_i + m_j > 0); keeping X^T X = I_r gives "
+                   "Pi M + M Pi = H_P^T X + X^T H_P, which reduces to 0, so Pi = 0 by uniqueness; keeping (cond_XP2) "
+                   f"gives rho = Lambda M + M Lambda - C = 0: the multiplier{'s' if len(scene._sylvester) > 1 else ''} "
+                   f"{names} stay{'' if len(scene._sylvester) > 1 else 's'} a symmetric letter, the unique (symmetric) "
+                   "solution, and rho joins the ideal as a generator, used as the step Lambda M -> -M Lambda + C on "
+                   "words (never inside a trace)")
+    return out
+
+
+def same_graph_at_fixed_sizes(claim: Claim, func: Callable, family: SizeFamily | None = None) -> str:
+    """"" when the claim's graph on a family of sizes is also the graph it gives when traced at every size
+    of the family it is stated for (the digest leaves the values of sizes out); otherwise why not.  (A claim
+    with a graph on a family only is traced at the numbers of each size; one that tells the two tracings
+    apart is reported, not believed.)"""
+    from stiefelsym.ir import compile_at_size, compile_claim
+    from stiefelsym.scene import REALIZATIONS
+    cons = REALIZATIONS[claim.realization]
+    free = compile_claim(func, None, None, (cons.name, cons.build), family=family).digest()
+    for z in family_sizes(claim, family):   # every size it is stated for (each traced once, in milliseconds)
+        try:
+            fixed = compile_at_size(func, z.n, z.r, (cons.name, cons.build), twice=False).digest()
+        except Exception as exc:    # noqa: BLE001 - a claim that does not trace at a size proves nothing
+            return f"the claim does not trace at ({z.n},{z.r}): {type(exc).__name__}: {exc}"
+        if fixed != free:
+            return (f"the claim's graph with symbolic sizes differs from its graph at ({z.n},{z.r}) (digest "
+                    f"{free[:12]} against {fixed[:12]}): it depends on whether its sizes are numbers, so a proof "
+                    "for every n, r would be about another computation than the fixed-size methods check")
+    return ""
+
+
+def graph_of_the_family(claim: Claim, func: Callable, family: SizeFamily) -> str:
+    """"" when the claim's graph on a family of sizes is the graph every method evaluates at the family's
+    sizes; otherwise why not.  When the claim also traces with plain symbolic sizes, its graph on the family
+    must be that graph (a comparison of sizes is refused there, so the two agree for an honest claim), which
+    is then replayed at the stated sizes, never traced at a number; a claim that traces on its family only
+    (it compares its sizes) is traced at the family's sizes and compared (:func:`same_graph_at_fixed_sizes`)."""
+    from stiefelsym.ir import compile_claim
+    from stiefelsym.scene import REALIZATIONS
+    cons = REALIZATIONS[claim.realization]
+    try:
+        plain = compile_claim(func, None, None, (cons.name, cons.build)).digest()
+    except Exception:    # noqa: BLE001 - no graph with plain symbolic sizes: compared at the family's sizes
+        return same_graph_at_fixed_sizes(claim, func, family)
+    on_family = compile_claim(func, None, None, (cons.name, cons.build), family=family).digest()
+    if on_family != plain:
+        return (f"the claim's graph on its sizes {family} differs from its graph with symbolic sizes (digest "
+                f"{on_family[:12]} against {plain[:12]}): a proof on the family would be about another "
+                "computation than the fixed-size methods check")
+    return typed_at_stated_sizes(claim, func)
+
+
+def typed_at_stated_sizes(claim: Claim, func: Callable) -> str:
+    """"" when the claim's graph with symbolic sizes types at every size it is stated for (replayed there by
+    the tracer, :func:`stiefelsym.ir._typed_at`: no code of the claim runs); otherwise why not."""
+    from stiefelsym.ir import compile_claim
+    from stiefelsym.scene import REALIZATIONS
+    cons = REALIZATIONS[claim.realization]
+    for z in claim.sizes:
+        try:
+            compile_claim(func, z.n, z.r, (cons.name, cons.build))
+        except Exception as exc:    # noqa: BLE001 - a graph that does not type at a stated size proves nothing
+            return (f"the claim's graph is not a graph at ({z.n},{z.r}), a size it is stated for: "
+                    f"{type(exc).__name__}: {exc}")
+    return ""
+
+
+def probe_divisions(claim: Claim, func: Callable, every_size: bool = False, family: SizeFamily | None = None) -> str:
+    """The division probe of ``func`` at the first size of the claim with n ≥ 3, or with ``every_size`` at
+    every size the claim is stated for (memoized by :func:`~stiefelsym.methods.fixed_size.division_probe`).
+
+    ``every_size`` is for a proof that used a resolvent at a spectral parameter μ moving with the point:
+    its letter's rules A R = R A = mR − I hold where μ is not an eigenvalue of A, which a trace polynomial
+    of the constant letters or of the sizes can be at some sizes only (tr A at n = 1).  The proof is then
+    for every n, r at which R(μ) exists, and the probe shows it exists at every stated size.  On a family of
+    sizes: at its sizes."""
+    sizes = family_sizes(claim, family)
+    if not every_size:
+        sizes = [next((z for z in sizes if z.n >= 3), None) or sizes[-1]]
+    for z in sizes:
+        why = division_probe(claim, z.n, z.r, func, strict=True)
+        if why:
+            return why
+    return ""
+
+
+def certify_entries(scene, entries) -> dict:
+    """The certificate data of the entries (position, reduction, _) of a proof."""
+    writer = CertificateWriter(scene._resolvents, scene._sylvester, scene.realization)
+    for pos, red, _k in entries:
+        writer.add(pos, scene.certify(red.residual, red.normal_form))
+    return writer.data()
+
+
+def certificate_line(entry: dict) -> str:
+    """One line for a derivation: the size of an entry's certificate and the hypotheses it uses."""
+    n = len(entry["terms"])
+    if not n:
+        return ("Certificate: empty (the entry vanishes in the free algebra as built); "
+                "re-checked by the independent checker.")
+    return (f"Certificate: {n} term{'s' if n != 1 else ''} in the hypotheses {', '.join(entry['hypotheses'])}; "
+            "re-checked by the independent checker.")

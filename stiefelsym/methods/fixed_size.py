@@ -1,0 +1,2042 @@
+"""Verification methods: each turns (claim, n, r, seed) into one Result.
+
+* ``exact``    symbolic (symengine): the residual is identically zero on a chart
+               of the constraint set; the reduction used is stated.
+* ``rational`` exact rationals at seeded random points of the Cayley chart
+               (integers in [-2^62, 2^62]), with the Schwartz-Zippel false-pass
+               bound from a degree bound; as many points as the bound 1e-30 needs.
+* ``modular``  the same over GF(p), a fresh prime p in [2^60, 2^61) per point,
+               with a height bound for the primes that divide the numerator.
+* ``float``    float64 with a running error bound; mpmath escalation.
+* ``ball``     rigorous ball arithmetic (arb) at the float method's exact points, 53 to 424 bits.
+
+Sampled methods never decide a rank "at every point" (verdict ``undecided``),
+and a check without entries is an error under every method.
+"""
+from __future__ import annotations
+
+import dataclasses
+import math
+import os
+import random
+import re
+import weakref
+import time
+from dataclasses import dataclass, field as dc_field
+from fractions import Fraction
+from typing import Any, Callable
+
+import numpy as np
+
+from stiefelsym._lazy import lazy
+from stiefelsym.claims import Claim, Count, Rank, deadline
+from stiefelsym.ir.statements import InverseIdentities
+from stiefelsym.methods import costmodel
+from stiefelsym.methods.costmodel import BudgetError as BudgetError  # the methods raise it (re-exported)
+from stiefelsym.ir import compile_claim
+from stiefelsym.ir.derivative import derivatives, scene_flows
+from stiefelsym.ir.evaluate import evaluate
+from stiefelsym.ir.seal import verify as verify_engine
+from stiefelsym.ir.passes import BLOCK_SPLITTING, FLOAT_EXPONENT_LIMIT, coordinate_needs, coordinate_reads, outside_float_range
+from stiefelsym.scene import REALIZATIONS
+from stiefelsym.backends.fields import (PRIME_LOW, PRIMES_IN_RANGE_LOWER, ConstantDegenerate, DegenerateError, DegreeField,
+                     ErrNum, Field, FloatField, ModularField, RationalField, SymbolicBudget, random_prime)
+from stiefelsym.backends.polyfield import SymbolicField
+from stiefelsym.backends.matrix import Mat, is_scene_number
+from stiefelsym.backends.native import F64, DegMat, _buf, backend, one_blas_thread, quiet_numpy
+from stiefelsym.backends.paired import PairField, marker_of
+from stiefelsym.results import CheckOutcome, Result
+from stiefelsym.scene import CoordinateAccess, Scene, SizeError
+
+flint = lazy("flint", globals())
+mpmath = lazy("mpmath", globals())
+
+EXACT_CAYLEY_MAX_N = 7       # the symbolic Cayley chart (used when coordinates are read; one r x r inverse for r < n)
+EXACT_TIME_LIMIT = 120.0      # seconds per (claim, size) for the symbolic method
+MAX_RESAMPLE = 8
+FLOAT_RESOLUTION = 1e-8       # a pass must be able to see a relative residual this small
+#: float64, then mpmath at 30, 60, 120 digits with the same error model.  For an identity, when
+#: float64's bounds cannot decide, the rigorous ball method decides first (arb at 53 to 424 bits at the
+#: same exact point); mpmath is the last resort only where the balls stay inconclusive (float64 term
+#: scales that overflow)
+FLOAT_LADDER = (None, 30, 60, 120)
+
+
+class ExactTimeout(Exception):
+    pass
+
+
+def check_budget(method: str, n: int, r: int, claim: Claim | None = None, budget: float | None = None) -> float:
+    """The size must be a Stiefel variety (1 <= r <= n); with a claim and a budget, the cost
+    model's predicted seconds of the run must fit the budget (BudgetError otherwise, with the
+    prediction and a faster method).  Returns the prediction (0 without a claim)."""
+    if r < 1:
+        raise SizeError(f"r = {r} < 1: a Stiefel variety V(n, r) needs r >= 1")
+    if r > n:
+        raise SizeError(f"r = {r} > n = {n}: V(n, r) needs r <= n")
+    if claim is None or budget is None or method == "free":
+        return 0.0
+    return costmodel.check(method, claim, n, r, budget)
+
+
+def time_limit(seconds: float | None):
+    """Interrupt a symbolic computation that exceeds its budget (main thread only)."""
+    return deadline(seconds, "the symbolic computation", lambda message: ExactTimeout(message))
+
+
+# ---------------------------------------------------------------------------
+# flattening checks
+
+def _entries(value: Any, prefix: str = "") -> list[tuple[str, Any]]:
+    """(position, scalar) pairs of a residual: a Mat, a scalar, or a list/tuple/dict of them.
+
+    A check without a single entry (an empty list or dict, a 0 x 0 matrix) is vacuous: it
+    would pass under every method without saying anything, so it is an error."""
+    out = _flatten(value, prefix)
+    if not out:
+        raise TypeError(f"check {prefix or 'value'} has no entries (an empty matrix, list or dict): "
+                        "a vacuous check proves nothing")
+    return out
+
+
+def _flatten(value: Any, prefix: str) -> list[tuple[str, Any]]:
+    if isinstance(value, Mat):
+        a = value._view()
+        rows, cols = a.shape
+        return [(f"{prefix}[{i + 1},{j + 1}]", a[i, j]) for i in range(rows) for j in range(cols)]
+    if isinstance(value, dict):
+        out = []
+        for k, v in value.items():
+            out.extend(_flatten(v, f"{prefix}.{k}"))
+        return out
+    if isinstance(value, (list, tuple)):
+        out = []
+        for k, v in enumerate(value):
+            out.extend(_flatten(v, f"{prefix}#{k + 1}"))
+        return out
+    if not is_scene_number(value):
+        raise TypeError(f"check {prefix or 'value'}: a residual must be a matrix or a scalar of the scene "
+                        f"(use s.q(num, den) for constants), not {type(value).__name__}")
+    return [(prefix or "value", value)]
+
+
+def _natively_zero(value: Any) -> bool:
+    """Whether a residual matrix held by an exact whole-matrix backend is zero (one native
+    comparison; False sends the caller to the entries)."""
+    if not isinstance(value, Mat) or value._n is None:
+        return False
+    be = backend(value.field)
+    if be is None or not value.field.exact or not all(value._shape()):
+        return False
+    return be.is_zero(value._n)
+
+
+def _float_entries(value: Any, name: str, u: float) -> list[tuple[str, Any]]:
+    """The entries of a float64 residual that decide the float method's verdict.
+
+    Every decision of the float method is a maximum, an "every entry" or a "first entry such
+    that" over the entries; for a matrix in native float64 storage these are found with whole-
+    array operations and only the deciding entries are returned, in their order (the largest
+    |v|, e and e/m, the first non-finite, the first clear, the first clear that resolves, the
+    first that does not resolve)."""
+    if not (isinstance(value, Mat) and value._n is not None and type(value._n) is F64 and all(value._shape())):
+        return _entries(value, name)
+    s = value._n
+    v, m = s.v.ravel(), s.m.ravel()
+    e1 = float(s.e)
+    cols = s.v.shape[1]
+    with np.errstate(all="ignore"):
+        av = np.abs(v, out=_buf(v.shape))            # (the arrays of this test are the backend's pooled ones)
+        fast = math.isfinite(e1) and math.isfinite(float(av.sum())) and math.isfinite(float(m.sum()))
+    if fast:
+        # every value, bound and scale finite (the sums would be inf or nan otherwise), the bound the
+        # same for every entry: the same picks from fewer passes (the largest e/m is e over the
+        # scales, inf where a scale is 0; the ratio is 0 everywhere when e = 0; the largest e is the
+        # first entry's)
+        with np.errstate(all="ignore"):
+            picks = {int(np.argmax(av)), 0, int(np.argmax(np.divide(e1, m, out=_buf(m.shape)))) if e1 > 0.0 else 0}
+            clear = av > e1
+            resolves = e1 <= np.multiply(FLOAT_RESOLUTION, m, out=_buf(m.shape))
+            for mask in (clear, clear & resolves, ~resolves):
+                i = int(np.argmax(mask))
+                if mask[i]:
+                    picks.add(i)
+        return [(f"{name}[{i // cols + 1},{i % cols + 1}]", ErrNum(float(v[i]), e1, float(m[i]), u))
+                for i in sorted(picks)]
+    e = np.full(v.shape, e1)
+    with np.errstate(all="ignore"):
+        finite = np.isfinite(v) & np.isfinite(e) & np.isfinite(m)
+        clear = np.abs(v) > e
+        resolves = finite & (e <= FLOAT_RESOLUTION * m)
+        ratio = np.where(m != 0, e / np.where(m != 0, m, 1.0), np.where(e == 0, 0.0, np.inf))
+    picks = {int(np.argmax(np.abs(v))), int(np.argmax(e)), int(np.argmax(ratio))}
+    for mask in (~finite, clear, clear & resolves, ~resolves):
+        hit = np.flatnonzero(mask)
+        if hit.size:
+            picks.add(int(hit[0]))
+    return [(f"{name}[{i // cols + 1},{i % cols + 1}]", ErrNum(float(v[i]), float(e[i]), float(m[i]), u))
+            for i in sorted(picks)]
+
+
+def call_claim(func: Callable, scene: Any, family: Any = None) -> dict[str, Any]:
+    """A claim's checks on a method's scene: the claim's graph (traced once per size, never with
+    the scene's values), its derivatives along flows and gradients rewritten into ordinary nodes
+    where their bodies allow (:mod:`.ir.derivative`), evaluated on the scene; the graph's looks at
+    coordinates are recorded in the scene's record first, whatever spaces the claim named.  A
+    dimension-free scene may be given a family of sizes (:class:`~stiefelsym.ir.SizeFamily`): the graph
+    is then the one traced on that family."""
+    n, r = scene.n, scene.r
+    free = type(n) is not int
+    if family is not None and not free:
+        raise ValueError("a family of sizes is for a dimension-free scene")
+    cons = REALIZATIONS[getattr(scene, "realization", None) or "standard"]
+    g = compile_claim(func, None if free else n, None if free else r, (cons.name, cons.build), family=family)
+    tracker = getattr(scene, "tracker", None)
+    if tracker is not None:
+        watched_spaces = {"?"} | set(tracker.spaces)
+        for what, inv in coordinate_reads(g).items():
+            if free and what == BLOCK_SPLITTING:
+                continue    # the free algebra keeps a block matrix as its blocks, each for every n, r
+            if inv & watched_spaces:
+                tracker.touch(what)
+    verify_engine("before an evaluation")
+    checks = evaluate(derivatives(g, scene_flows(scene)), scene)
+    if not isinstance(checks, dict) or not checks:
+        raise TypeError("a claim must return a non-empty dict of named checks")
+    for k in checks:
+        if not isinstance(k, str):
+            raise TypeError("check names must be strings")
+    return checks
+
+
+def draw_key(claim: Claim, n: int, r: int, seed: int, func: Callable | None = None) -> str:
+    """The source of every random draw of a verification of ``func`` (the claim, or a variant of it) at
+    (n, r): the seed, the digest of the graph the run evaluates, the claim's id and the size.  The
+    points, primes and probe points are a function of what the claim states (Fiat-Shamir): a claim
+    cannot be written to vanish at its own points, because every constant it would need to compute
+    them enters the digest they are drawn from.  The same commit, claim and seed give the same draws."""
+    cons = REALIZATIONS[claim.realization or "standard"]
+    g = compile_claim(func or claim.func, n, r, (cons.name, cons.build))
+    return f"{seed}|{g.digest()}|{claim.id}|{n}|{r}"
+
+
+@dataclass
+class Evaluation:
+    outcomes: list[CheckOutcome]
+    nonzero: list[tuple[str, str, Any]]   # (check, position, value) of failing residual entries
+    rank_problems: list[str]              # every rank that does not match (certain or not)
+    count_problems: list[str]
+    rank_certain: list[str] = dc_field(default_factory=list)   # rank mismatches that are certain
+    every_point: list[str] = dc_field(default_factory=list)    # "at every point" ranks this method cannot decide
+
+
+#: what a rank function may say about a Rank statement (True/False: the exact method's "ok"/"mismatch")
+RANK_STATUSES = ("ok", "mismatch", "certain", "every-point")
+
+
+def _evaluate(checks: dict[str, Any], field: Field, rank_fn: Callable[[Rank], tuple[str, Any]] | None) -> Evaluation:
+    outcomes, nonzero, rank_problems, count_problems = [], [], [], []
+    rank_certain, every_point = [], []
+    for name, value in checks.items():
+        if isinstance(value, Count):
+            ok = value.value == value.expected
+            detail = f"{value.meaning + ': ' if value.meaning else ''}{value.value} (paper: {value.expected})"
+            outcomes.append(CheckOutcome(name, "count" if ok else "count-mismatch", detail))
+            if not ok:
+                count_problems.append(f"{name}: {detail}")
+            continue
+        if isinstance(value, Rank):
+            if rank_fn is None:
+                outcomes.append(CheckOutcome(name, "skipped", "ranks are decided by exact methods"))
+                rank_problems.append(f"{name}: rank not decided by this method")
+                continue
+            detail, status = rank_fn(value)
+            if status is True or status is False:
+                status = "ok" if status else "mismatch"
+            if status not in RANK_STATUSES:
+                raise ValueError(f"unknown rank status {status!r}")
+            ok = status in ("ok", "every-point")
+            if value.meaning:
+                detail = f"{value.meaning}: {detail}"
+            outcomes.append(CheckOutcome(name, "rank" if ok else "rank-mismatch", detail))
+            if not ok:
+                rank_problems.append(f"{name}: {detail}")
+            if status == "certain":
+                rank_certain.append(f"{name}: {detail}")
+            elif status == "every-point":
+                every_point.append(name)
+            continue
+        # an Inverse statement is its identities (residuals); its outcome says what they prove
+        said = value.describe() if isinstance(value, InverseIdentities) else ""
+        if _natively_zero(value):
+            outcomes.append(CheckOutcome(name, "zero", said))
+            continue
+        bad = [(pos, x) for pos, x in _entries(value, name) if not field.is_zero(x)]
+        if bad:
+            nonzero.extend((name, pos, x) for pos, x in bad)
+            outcomes.append(CheckOutcome(name, "nonzero", f"{len(bad)} nonzero entries"
+                                         + (" (op is not inverted by inv)" if said else "")))
+        else:
+            outcomes.append(CheckOutcome(name, "zero", said))
+    return Evaluation(outcomes, nonzero, rank_problems, count_problems, rank_certain, every_point)
+
+
+def _base_result(claim: Claim, n: int | None, r: int | None, method: str, seed: int | None) -> Result:
+    return Result(claim=claim.id, paper=list(claim.paper), section=claim.section, kind=claim.kind,
+                  title=claim.title, statement=claim.statement, n=n, r=r, method=method,
+                  verdict="error", expected=False, seconds=0.0, seed=seed)
+
+
+def expected_verdict(claim: Claim, verdict: str, variant: str | None = None,
+                     n: int | None = None, r: int | None = None) -> bool:
+    """Whether a verdict is the one the catalog expects (documented errata fail)."""
+    if variant is None and claim.expects_failure(n, r):
+        return verdict == "fails"
+    return verdict in ("proved", "checked", "numeric")
+
+
+# ---------------------------------------------------------------------------
+# the symbolic method
+
+def _symbolic_rows(M: Mat) -> list[list]:
+    """The entries of a matrix of the symbolic method as symengine expressions (a scalar the flint
+    backend keeps, e.g. an entry of a Jacobian built from traces, is converted)."""
+    f = M._field
+    return [[x if isinstance(x, _se_basic()) else f.normalize(x) for x in row] for row in M._view().tolist()]
+
+
+def _se_basic() -> type:
+    import symengine as se
+    return se.Basic
+
+
+def _sympy_rows(M: Mat):
+    import sympy
+    return [[sympy.sympify(x) for x in row] for row in _symbolic_rows(M)]
+
+
+def _function_field_rank(M: Mat) -> int:
+    """The rank over the field of rational functions of the chart parameters: fraction-free
+    (Bareiss) elimination over flint's multivariate polynomials when the entries are
+    polynomials, sympy's DomainMatrix otherwise."""
+    polys = _flint_polynomials(M)
+    if polys is not None:
+        if all(p.is_constant() for row in polys for p in row):     # a matrix of rational numbers
+            return flint.fmpq_mat([[p.leading_coefficient() if p != 0 else 0 for p in row]
+                                   for row in polys]).rank() if polys and polys[0] else 0
+        return _bareiss_rank(polys)
+    dM = _domain_matrix(M)
+    return 0 if dM is None else len(dM.rref_den()[2])   # fraction-free: pivots of the reduced form
+
+
+def _flint_polynomials(M: Mat):
+    """The entries as flint fmpq_mpoly (None if an entry is not a polynomial)."""
+    import symengine as se
+    rows = [[se.expand(se.sympify(x)) for x in row] for row in _symbolic_rows(M)]
+    syms = sorted({y for row in rows for x in row for y in x.free_symbols}, key=str)
+    ctx = flint.fmpq_mpoly_ctx.get(tuple(f"v{i}" for i in range(max(1, len(syms)))), "degrevlex")
+    gens = ctx.gens()
+    index = {s: i for i, s in enumerate(syms)}
+    zero = ctx.from_dict({})
+
+    def conv(x):
+        if x.is_Symbol:
+            return gens[index[x]]
+        if x.is_Number:
+            if not x.is_Rational:
+                raise TypeError("not a rational number")
+            q = Fraction(str(x))
+            return zero + flint.fmpq(q.numerator, q.denominator)
+        if x.is_Add:
+            out = zero
+            for a in x.args:
+                out = out + conv(a)
+            return out
+        if x.is_Mul:
+            out = zero + 1
+            for a in x.args:
+                out = out * conv(a)
+            return out
+        if x.is_Pow:
+            b, e = x.args
+            if not (e.is_Integer and int(e) >= 0):
+                raise TypeError("not a polynomial")
+            return conv(b) ** int(e)
+        raise TypeError("not a polynomial")
+
+    try:
+        return [[conv(x) for x in row] for row in rows]
+    except TypeError:
+        return None
+
+
+def _bareiss_rank(P) -> int:
+    """Rank by fraction-free Gaussian elimination (every division is exact)."""
+    P = [list(row) for row in P]
+    if not P or not P[0]:
+        return 0
+    m, k = len(P), len(P[0])
+    rank, prev = 0, None
+    for col in range(k):
+        piv = next((i for i in range(rank, m) if P[i][col] != 0), None)
+        if piv is None:
+            continue
+        P[rank], P[piv] = P[piv], P[rank]
+        p = P[rank][col]
+        for i in range(rank + 1, m):
+            a = P[i][col]
+            for j in range(col + 1, k):
+                v = p * P[i][j] - a * P[rank][j]
+                P[i][j] = v if prev is None else v / prev
+            P[i][col] = P[i][col] * 0
+        prev, rank = p, rank + 1
+    return rank
+
+
+def _domain_matrix(M: Mat):
+    from sympy.polys.matrices import DomainMatrix
+    rows = _sympy_rows(M)
+    if not rows or not rows[0]:
+        return None
+    return DomainMatrix.from_list_sympy(len(rows), len(rows[0]), rows)
+
+
+def _kernel_certificate(M: Mat, limit: int = 3) -> str:
+    """Explicit kernel vectors over the function field, each checked to be annihilated by M."""
+    dM = _domain_matrix(M)
+    if dM is None:
+        return ""
+    K = dM.to_field().nullspace()
+    vecs = K.to_Matrix().tolist() if K.shape[0] else []
+    for v in vecs:
+        import sympy
+        if any(sympy.simplify(x) != 0 for x in (dM.to_Matrix() * sympy.Matrix(v))):
+            return ""
+    shown = "; ".join("(" + ", ".join(str(x) for x in v) + ")" for v in vecs[:limit])
+    more = f" and {len(vecs) - limit} more" if len(vecs) > limit else ""
+    return f"; explicit kernel ({len(vecs)} vectors, each checked M v = 0): {_short(shown + more, 400)}"
+
+
+def _constant_minor_rank(M: Mat, field: Field) -> int:
+    """Elimination using only nonzero numeric pivots: the product of the pivots is a
+    constant (hence everywhere nonzero) minor of the returned size."""
+    import symengine as se
+    rows = _symbolic_rows(M)
+    rank = 0
+    if not rows:
+        return 0
+    for col in range(len(rows[0])):
+        piv = None
+        for i in range(rank, len(rows)):
+            x = se.expand(rows[i][col])
+            if x.is_Number and x != 0:
+                piv = i
+                break
+        if piv is None:
+            continue
+        rows[rank], rows[piv] = rows[piv], rows[rank]
+        p = rows[rank][col]
+        for i in range(len(rows)):
+            if i != rank:
+                f = se.expand(rows[i][col] / p)
+                if f != 0:
+                    rows[i] = [se.expand(a - f * b) for a, b in zip(rows[i], rows[rank])]
+        rank += 1
+    return rank
+
+
+#: seconds the symbolic function-field rank may take before the upper bound is taken at random
+#: points of prime fields instead (the lower bound is always exact)
+SYMBOLIC_RANK_SECONDS = 5.0
+
+
+class _RandomizedRank:
+    """The exact method's rank at random points when the function-field rank is out of reach:
+    collects the upper bounds' false-pass probabilities for the verdict."""
+
+    def __init__(self) -> None:
+        self.bounds: list[float] = []
+
+
+def _point_values(M: Mat, rng: random.Random, modulus: int | None):
+    """The matrix's symbolic entries at a random integer point of its parameters: fmpq (modulus
+    None) or residues mod p; None when the point is a pole of an entry."""
+    import symengine as se
+    rows = _symbolic_rows(M)
+    syms = set()
+    for row in rows:
+        for x in row:
+            syms |= se.sympify(x).free_symbols
+    syms = sorted(syms, key=str)
+    bound = 2**62 if modulus is None else modulus
+    point = {s: rng.randrange(-bound, bound) if modulus is None else rng.randrange(modulus) for s in syms}
+    out = []
+    for row in rows:
+        out_row = []
+        for x in row:
+            v = se.sympify(x).subs(point)
+            if not v.is_Number or not v.is_finite:
+                return None
+            q = Fraction(int(v.p), int(v.q)) if hasattr(v, "p") else Fraction(str(v))
+            if modulus is None:
+                out_row.append(flint.fmpq(q.numerator, q.denominator))
+            else:
+                if q.denominator % modulus == 0:
+                    return None
+                out_row.append(flint.nmod(q.numerator, modulus) / flint.nmod(q.denominator, modulus))
+        out.append(out_row)
+    return out
+
+
+def _rank_at_point(M: Mat, rng: random.Random, modulus: int | None = None) -> int | None:
+    for _ in range(8):
+        vals = _point_values(M, rng, modulus)
+        if vals is not None:
+            if not vals or not vals[0]:
+                return 0
+            if modulus is None:
+                return flint.fmpq_mat(vals).rank()
+            return flint.nmod_mat(vals, modulus).rank()
+    return None
+
+
+def _exact_rank(R: Rank, field: Field, randomized: _RandomizedRank | None = None,
+                minor_degree: Callable[[], int] | None = None, key: str = "0") -> tuple[str, Any]:
+    """Two-sided rank certificates.  Lower bound: the exact rank at a random integer point (a
+    nonzero minor there is a nonzero polynomial).  Upper bound: full rank, or the rank over the
+    function field (symbolic, within SYMBOLIC_RANK_SECONDS), or, beyond that, the rank at random
+    points of prime fields with a Schwartz-Zippel bound from the degree of the next minors
+    (status "randomized": the verdict is then ``checked``).  ``key``: the run's :func:`draw_key`."""
+    M = R.matrix
+    rng = random.Random(f"{key}|rank|{M._shape()}")
+    if R.generic:
+        lower = _rank_at_point(M, rng)
+        if lower is not None and lower > R.expected:
+            return (f"rank {lower} at an exact rational point, so rank >= {lower} over the function field "
+                    f"(paper: {R.expected})", "certain")
+        if lower is not None and lower == R.expected == min(M._shape()):
+            return (f"rank {lower} at an exact rational point: full rank over the function field "
+                    f"(paper: {R.expected})", True)
+        try:
+            with deadline(SYMBOLIC_RANK_SECONDS if randomized is not None else None, "the function-field rank",
+                          lambda message: ExactTimeout(message)):
+                generic = _function_field_rank(M)
+        except ExactTimeout:
+            generic = None
+        if generic is not None:
+            ok = generic == R.expected
+            kernel = _kernel_certificate(M) if generic < R.expected else ""
+            return (f"rank over the function field Q(chart parameters) = {generic} "
+                    f"(paper: {R.expected}); two-sided: exact rank of the generic matrix{kernel}", ok)
+        # the upper bound at random points of prime fields
+        if lower is None or lower < R.expected:
+            # a point can be special: without the function-field rank a lower rank is not certain
+            raise ExactTimeout(f"the function-field rank exceeded {SYMBOLIC_RANK_SECONDS:.0f} s, and the rank "
+                               f"at an exact rational point, {lower}, is below the printed {R.expected}")
+        D = max(1, minor_degree() if minor_degree else 1)
+        joint, pts = 1.0, 0
+        while joint > POINTS_TARGET and pts < POINTS_CAP:
+            p = random_prime(rng)
+            rk = _rank_at_point(M, rng, p)
+            if rk is None:
+                continue
+            if rk > R.expected:
+                return (f"rank {rk} at a point of GF({p}), so rank >= {rk} over the function field "
+                        f"(paper: {R.expected})", "certain")
+            joint *= min(1.0, D / p)
+            pts += 1
+        if joint > POINTS_TARGET:
+            return (f"rank {R.expected} at {pts} random points of prime fields, but the ({R.expected + 1})-minors "
+                    f"have degree <= {D}: the false-pass bound {joint:.1e} stays above {POINTS_TARGET:.0e}", False)
+        randomized.bounds.append(joint)
+        return (f"rank >= {lower} (exact rank at a rational point) and rank <= {R.expected} with false-pass "
+                f"probability <= {joint:.1e} (rank {R.expected} at {pts} random points of prime fields "
+                f"p > 2^60; the ({R.expected + 1})-minors have degree <= {D}; the symbolic function-field rank "
+                f"exceeded {SYMBOLIC_RANK_SECONDS:.0f} s); paper: {R.expected}", "ok")
+    const = _constant_minor_rank(M, field)
+    if const == R.expected == min(M.shape):
+        return (f"a constant nonzero {const}x{const} minor: rank {const} at every point (full rank); "
+                f"paper: {R.expected}", True)
+    generic = _function_field_rank(M)
+    ok = generic == R.expected and const == R.expected
+    kernel = _kernel_certificate(M) if generic < R.expected else ""
+    return (f"a constant nonzero {const}x{const} minor (rank >= {const} at every point) and rank "
+            f"{generic} over the function field (rank <= {generic} at every point); paper: {R.expected}{kernel}", ok)
+
+
+EQUIVARIANT_REDUCTION = (
+    "equivariance: X = X0 = (E_1..E_r), P = (W; Z) with W skew, A generic symmetric; O(n) moves X0 to "
+    "every point of V(n, r), and the residuals are covariant under (X, P, A) -> (gX, gP, gAg^T), g in O(n), "
+    "because {why}")
+def covariant_by_construction(spaces: tuple[str, ...]) -> str:
+    """Why a claim that read no coordinates of the recorded spaces is covariant."""
+    return f"the claim read no coordinates of {' or '.join('R^' + x for x in spaces)} (recorded by the engine)"
+CAYLEY_REDUCTION = (
+    "rational parametrization: X = first r columns of (I - S)(I + S)^{{-1}}{D}, P = XW + (I - XX^T)Z "
+    "(S, W skew, Z arbitrary), A = diag(a); dense in T*V(n, r){comp}")
+#: the symbolic method's Cayley chart for r < n (Scene._reduced_cayley_point)
+REDUCED_CAYLEY_REDUCTION = (
+    "rational parametrization: X = first r columns of (I - S)(I + S)^{-1} for S = [[S11, -K^T], [K, 0]] "
+    "(S11 skew r x r, K generic (n - r) x r), i.e. X = [I - S11 - K^T K; -2K] M^{-1}, M = I + S11 + K^T K; "
+    "P = XW + (I - XX^T)Z (W skew, Z arbitrary), A = diag(a); the map (S11, K) -> X has an injective "
+    "differential at 0 onto the tangent space of the irreducible V(n, r): dense in T*V(n, r)")
+
+
+def _reads_coordinates(claim: Claim, n: int, r: int, func: Callable) -> list[str]:
+    """What the claim's graph visibly reads of coordinates: an entry or a block of any matrix, a matrix
+    of given entries, an engine step indexed by a basis (the constraints, the coordinates of a phase
+    space).  A chart that also reduces by O(r) acting on the right (A11, or B11 in the metric
+    realization, diagonal) is used only for a graph that reads none: O(r) mixes the coordinates of
+    R^r and of Sym(r), and what a graph reads through an engine step or an opaque space is not
+    always seen by the scene's record while evaluating."""
+    cons = REALIZATIONS[claim.realization]
+    g = compile_claim(func, n, r, (cons.name, cons.build))
+    out = [w for w in coordinate_needs(g) if not w.startswith(("a rank", "a count"))]
+    if "entry" in g.ops:
+        out.append("an entry or a block of a matrix")
+    return out
+
+
+def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = None,
+              time_budget: float | None = EXACT_TIME_LIMIT) -> Result:
+    func = func or claim.func
+    res = _base_result(claim, n, r, "exact", None)
+    t0 = time.perf_counter()
+    try:
+        with time_limit(time_budget):
+            key = draw_key(claim, n, r, seed, func)
+            randomized = _RandomizedRank()
+            charts: list[tuple[Scene, str]] = []
+            # the standard realization's chart reduces by O(r) acting on the right as well (A11
+            # diagonal) when the claim's graph reads no coordinates; otherwise by O(n) alone.  The
+            # metric realization's chart always reduces by O(r): a graph that reads coordinates
+            # goes to the Cayley chart (below)
+            visible = _reads_coordinates(claim, n, r, func)
+            for right in ((True, False) if claim.realization == "standard" and not visible else (False,)):
+                if claim.realization == "metric" and visible:
+                    scene, coords, missing = None, list(visible), True
+                    break
+                def build(right=right) -> tuple:
+                    f = SymbolicField()
+                    return f, Scene(n, r, f, chart="equivariant", realization=claim.realization,
+                                    right_reduction=right)
+                field, scene = _symbolic_chart((claim.id, claim.realization, "exact", n, r, "equivariant", right), build)
+                missing = False   # the equivariant chart cannot provide an object (a_i, a second point)
+                try:
+                    checks = call_claim(func, scene)
+                    coords = list(scene.tracker.used)
+                except CoordinateAccess:
+                    coords = list(scene.tracker.used) or ["coordinates"]
+                    missing = True
+                if not (coords or missing):
+                    break
+            # a stated reason is relied on only for the reviewed catalog: a user's claims file
+            # cannot buy the reduction with a sentence
+            reason = claim.equivariance if claim.reviewed else ""
+            if scene is None or scene.tracker.spaces != ("n",):
+                reason = ""      # a stated reason speaks of O(n); this chart also reduces by O(r)
+            if not missing and (not coords or reason):
+                why = (covariant_by_construction(scene.tracker.spaces) if not coords else
+                       f"(the claim reads {', '.join(coords)}) {reason}")
+                stated = scene.equivariant_reduction() or EQUIVARIANT_REDUCTION
+                second = scene.second_point_text()
+                charts.append((scene, stated.format(why=why) + second))
+                evaluations = [_evaluate(checks, field, lambda R: _exact_rank(
+                    R, field, randomized, lambda: degree_bound(claim, n, r, func).numerator, key))]
+                if scene.second_point_read and n == r:
+                    # Y on the other component of O(n): the same chart, Y times diag(-1, 1, .., 1)
+                    f1 = SymbolicField()
+                    sc1 = Scene(n, r, f1, chart="equivariant", realization=claim.realization,
+                                right_reduction=scene.right_reduction, component=1)
+                    ch1 = call_claim(func, sc1)
+                    if list(sc1.tracker.used) != coords:
+                        raise DegenerateError("the two components of the second point read different coordinates")
+                    evaluations.append(_evaluate(ch1, f1, lambda R, f1=f1: _exact_rank(
+                        R, f1, randomized, lambda: degree_bound(claim, n, r, func).numerator, key)))
+                    charts.append((sc1, stated.format(why=why) + sc1.second_point_text()))
+            else:
+                if n > EXACT_CAYLEY_MAX_N:
+                    res.verdict = "inconclusive"
+                    unrelied = (" (a stated reason is relied on only for the reviewed catalog)"
+                                if claim.equivariance and not claim.reviewed else "")
+                    res.message = (f"the claim reads {', '.join(coords)}, so the equivariance reduction does not "
+                                   f"apply{unrelied}, and the symbolic Cayley chart is limited to "
+                                   f"n <= {EXACT_CAYLEY_MAX_N}")
+                    res.seconds = time.perf_counter() - t0
+                    res.rerun = ""
+                    return res
+                evaluations = []
+                for comp in ((0, 1) if r == n else (0,)):
+                    def build_cayley(comp=comp) -> tuple:
+                        f = SymbolicField()
+                        return f, Scene(n, r, f, chart="cayley", component=comp, realization=claim.realization)
+                    f2, sc = _symbolic_chart((claim.id, claim.realization, "exact", n, r, "cayley", comp), build_cayley)
+                    ch = call_claim(func, sc)
+                    evaluations.append(_evaluate(ch, f2, lambda R, f2=f2: _exact_rank(
+                        R, f2, randomized, lambda: degree_bound(claim, n, r, func).numerator, key)))
+                    desc = REDUCED_CAYLEY_REDUCTION if r < n else CAYLEY_REDUCTION.format(
+                        D=" D" if r == n else "",
+                        comp=(f"; component {comp + 1} of O(n) (D = {'I' if comp == 0 else 'diag(-1,1,..,1)'})"
+                              if r == n else ""))
+                    charts.append((sc, desc))
+    except ExactTimeout as exc:
+        res.verdict = "inconclusive"
+        res.message = (str(exc) if str(exc).startswith("the function-field rank") else
+                       f"symbolic computation exceeded its budget of {time_budget:.0f} s")
+        res.seconds = time.perf_counter() - t0
+        return res
+    except SymbolicBudget as exc:
+        res.verdict = "inconclusive"
+        res.message = f"{exc} is beyond the symbolic method's budget"
+        res.seconds = time.perf_counter() - t0
+        return res
+    except MemoryError:
+        res.verdict = "inconclusive"
+        res.message = "the symbolic computation exceeded the memory budget"
+        res.seconds = time.perf_counter() - t0
+        return res
+    except DegenerateError as exc:
+        res.verdict = "error"
+        res.message = f"degenerate: {exc}"
+        res.seconds = time.perf_counter() - t0
+        return res
+    res.seconds = time.perf_counter() - t0
+    res.reductions = [d for _, d in charts]
+    res.checks = [o for e in evaluations for o in e.outcomes]
+    # (check, position, value, field of the value)
+    nonzero = [z + (sc._field,) for (sc, _), e in zip(charts, evaluations) for z in e.nonzero]
+    problems = [p for e in evaluations for p in e.rank_problems + e.count_problems]
+    if (claim.expect == "nonzero" and nonzero) or not (nonzero or problems or claim.expect == "nonzero"):
+        why = division_probe(claim, n, r, func, seed)
+        res.seconds = time.perf_counter() - t0       # the probe is part of the method's work
+        if why:
+            res.verdict, res.message = "error", why
+            return res
+    if claim.expect == "nonzero":
+        if nonzero:
+            res.verdict = "proved"
+            res.certificate = (f"the residual is not identically zero: {nonzero[0][1]} = "
+                               f"{_short(_exact_text(nonzero[0][3], nonzero[0][2]))}")
+        else:
+            res.verdict = "fails"
+            res.certificate = "the residual vanishes identically on the chart"
+        return res
+    if nonzero or problems:
+        res.verdict = "fails"
+        if nonzero:
+            res.residual = f"{nonzero[0][1]} = {_short(_exact_text(nonzero[0][3], nonzero[0][2]))}"
+            res.certificate = "the residual is a nonzero function on the chart"
+            witness = _rational_witness(claim, n, r, seed, func)
+            if witness:
+                res.witness, res.seed = witness, seed
+                res.certificate += "; exact rational witness point attached"
+        else:
+            res.certificate = "; ".join(problems)
+        return res
+    res.certificate = "; ".join(o.detail for o in res.checks if o.detail) or "every residual entry is identically 0"
+    if randomized.bounds:
+        # every residual is identically zero and every lower bound exact; an upper bound on a rank
+        # was taken at random points: randomized exact
+        res.verdict = "checked"
+        res.false_pass_bound = min(1.0, sum(randomized.bounds))
+        return res
+    res.verdict = "proved"
+    return res
+
+
+def _symbolic_chart(key: tuple, build: Callable[[], tuple]) -> tuple:
+    """``build()``'s (field, scene) of a chart of the symbolic method; in the mutation analysis, the
+    chart of the claim as printed with its node values, lent (:meth:`PointLoan.chart`)."""
+    if _LOAN is None:
+        return build()
+    return _LOAN.chart(key, build)
+
+
+def _rational_witness(claim: Claim, n: int, r: int, seed: int, func: Callable) -> dict | None:
+    """The witness of a one-point rational run (``run_points(..., trials=1)``), for the exact method's
+    refutations.  On lent points (the mutation analysis) the rational run of the same function at
+    the same size has evaluated those very points, each a copy of the same snapshot, and kept what
+    they gave (:attr:`PointLoan.witnesses`): taken from there, not computed twice."""
+    if _LOAN is not None and not _LOAN.recording:
+        hit = _LOAN.witnesses.get((claim.id, claim.realization, n, r, seed, id(func)))
+        if hit is not None and hit[0] is func:
+            return hit[1]
+    return run_points(claim, n, r, "rational", seed, func, trials=1).witness
+
+
+#: the probe's points, each over its own prime drawn from the run's :func:`draw_key` (a divisor that is not
+#: identically zero vanishes at a random point modulo all of them with negligible probability; drawn, not
+#: fixed, so that no claim can be written with a divisor that is a nonzero multiple of the probe's primes)
+PROBE_POINTS = 3
+
+
+#: the outcome of the division probe per claim function and (claim, realization, size, seed, strict):
+#: a pure function of these (its points come from the seed and the claim's graph: draw_key), so it
+#: runs once per claim function, like the cached degree bound of the randomized methods
+_PROBES: "weakref.WeakKeyDictionary[Callable, dict]" = weakref.WeakKeyDictionary()
+
+
+def division_probe(claim: Claim, n: int, r: int, func: Callable | None = None, seed: int = 0,
+                   strict: bool = False) -> str:
+    """The division probe of the claim at (n, r) (see :func:`_division_probe`), memoized."""
+    func = func or claim.func
+    key = (claim.id, claim.realization, n, r, seed, strict)
+    try:
+        memo = _PROBES.setdefault(func, {})
+    except TypeError:   # a callable without weak references: no memo
+        memo = {}
+    why = memo.get(key)
+    if why is None:
+        why = memo[key] = _division_probe(claim, n, r, func, seed, strict)
+    return why
+
+
+def _division_probe(claim: Claim, n: int, r: int, func: Callable | None = None, seed: int = 0,
+                    strict: bool = False) -> str:
+    """"" when the claim evaluates at a random point of T*V (over a prime field) without dividing by zero;
+    otherwise the reason.
+
+    Symbolic arithmetic does not raise on a division by an identically zero expression: it makes
+    an infinity that a later division turns into 0.  So every symbolic proof is preceded by this
+    probe; a division by zero at each of three random points means a divisor that vanishes
+    identically (or at a pole the claim put itself on).  Any other exception is the symbolic
+    run's to report (it meets the same code), except with ``strict`` (a caller that does not run
+    the claim at this size itself, such as the dimension-free method): then the probe did not
+    take place, and that is the reason."""
+    func = func or claim.func
+    last: BaseException | None = None
+    try:
+        key = draw_key(claim, n, r, seed, func)
+    except Exception as exc:   # noqa: BLE001 - the claim's graph is refused: the symbolic run reports it
+        if strict:
+            return (f"the division probe could not trace the claim at (n={n}, r={r}) ({type(exc).__name__}: "
+                    f"{exc}), so a division by an identically zero expression cannot be excluded")
+        return ""
+    for attempt in range(PROBE_POINTS):
+        p = random_prime(random.Random(f"{key}|division-probe|prime|{attempt}"))
+        rng = random.Random(f"{key}|division-probe|{attempt}")
+        scene = Scene(n, r, ModularField(p), chart="cayley", rng=rng, component=attempt % 2 if r == n else 0,
+                      realization=claim.realization)
+        try:
+            call_claim(func, scene)
+            return ""
+        except (DegenerateError, ZeroDivisionError) as exc:
+            last = exc
+        except Exception as exc:   # noqa: BLE001 - anything else is the symbolic run's to report
+            if strict:
+                return (f"the division probe could not evaluate the claim at a point of T*V(n={n}, r={r}) "
+                        f"over GF(p) ({type(exc).__name__}: {exc}), so a division by an identically zero "
+                        "expression cannot be excluded")
+            return ""
+    return (f"the claim divides by zero at every one of 3 random points of T*V(n={n}, r={r}) over GF(p) "
+            f"({type(last).__name__}: {last}): a divisor that vanishes identically, so a symbolic "
+            "'proof' would only have divided by zero")
+
+
+def _short(x: Any, limit: int = 160) -> str:
+    s = str(x)
+    return s if len(s) <= limit else s[: limit - 3] + "..."
+
+
+def _exact_text(field: Any, x: Any) -> str:
+    """An exact residual entry as text, the same in every run: through the flint ring in its
+    canonical term order where the entry is a rational function there (a symengine expression
+    orders its terms by hashes that differ between processes), else symengine's text."""
+    ring = field.poly_ring() if getattr(field, "native", False) and hasattr(field, "poly_ring") else None
+    if ring is not None:
+        from stiefelsym.backends.polyfield import NotRational
+        try:
+            return ring.text(ring.from_se(x))
+        except NotRational:
+            pass
+    return str(x)
+
+
+# ---------------------------------------------------------------------------
+# degree and height bounds (for Schwartz-Zippel and the choice of primes)
+
+@dataclass
+class DegreeBound:
+    numerator: int          # max numerator degree over residual entries / rank minors
+    denominator: int        # total degree of all denominators met (for resampling)
+    height: float = 0.0     # max log2 of the L1 norm of an integer numerator polynomial (entries, minors)
+    constant_bits: float = 0.0   # sum of log2|a| + log2 b over the constants a/b of the claim
+
+
+#: degree bounds computed in this process, per (claim, function, size): a claim's bound is
+#: computed once however many methods, points or components use it
+_DEGREE_CACHE: dict[tuple, DegreeBound] = {}
+
+
+def degree_bound(claim: Claim, n: int, r: int, func: Callable | None = None) -> DegreeBound:
+    """Bounds on the degree and height of the numerators of a claim's residuals at size (n, r),
+    from the structure of its expressions: the claim runs once over degree markers, one marker
+    per matrix (see :class:`~stiefelsym.backends.native.DegreeBackend`); cached."""
+    from stiefelsym.backends import native
+    key = (claim.id, func or claim.func, claim.realization, n, r, native.ENABLED)
+    if key not in _DEGREE_CACHE:
+        _DEGREE_CACHE[key] = _degree_bound(claim, n, r, func)
+    return _DEGREE_CACHE[key]
+
+
+def _degree_bound(claim: Claim, n: int, r: int, func: Callable | None = None) -> DegreeBound:
+    field = DegreeField()
+    # with a generator the scene draws its parameter matrices as blocks, one marker each (the
+    # markers ignore the draws): O(1) per parameter matrix instead of one marker per entry
+    scene = Scene(n, r, field, chart="cayley", realization=claim.realization, rng=random.Random(0))
+    checks = call_claim(func or claim.func, scene)
+    one = lambda v: v._n.d if isinstance(v, Mat) and type(v._n) is DegMat and all(v._shape()) else None
+    return _read_bound(checks, field, field._lift, one)
+
+
+def _paired_bound(checks: dict[str, Any], field: PairField) -> DegreeBound:
+    """The degree and height bounds of what one sampled evaluation computed: the markers its
+    numbers carried (see :mod:`.paired`), read as a structural pass is read."""
+    return _read_bound(checks, field.degrees, field.marker, lambda v: marker_of(v, field))
+
+
+def _read_bound(checks: dict[str, Any], deg: DegreeField, marker: Callable, matrix_marker: Callable) -> DegreeBound:
+    """Degree and height bounds of a claim's residuals and rank minors from their markers:
+    ``marker`` gives an entry's, ``matrix_marker`` the one marker bounding every entry of a matrix
+    held natively (or None: its entries are read)."""
+    num, height = 0, 0.0
+    for name, value in checks.items():
+        if isinstance(value, Count):
+            continue
+        if isinstance(value, Rank):
+            d, h = _rank_minor_bound(value, deg, marker)
+            num, height = max(num, d), max(height, h)
+            continue
+        one = matrix_marker(value)
+        markers = [one] if one is not None else [marker(x) for _pos, x in _entries(value, name)]
+        for x in markers:
+            if not x.zero:
+                num, height = max(num, x.num), max(height, x.h)
+    return DegreeBound(num, sum(deg.factor_degree.values()), height, deg.constant_bits)
+
+
+def _rank_minor_bound(R: Rank, field: DegreeField, marker: Callable) -> tuple[int, float]:
+    """Degree and height bounds of the (k+1)-minors of the matrix, k the printed rank: a sampled
+    rank k is the generic rank unless such a minor, a nonzero polynomial, vanishes at the point."""
+    rows = [[marker(x) for x in row] for row in R.matrix._a.tolist()]
+    if not rows or not rows[0] or R.expected + 1 > min(len(rows), len(rows[0])):
+        return 0, 0.0      # no (k+1)-minor: rank <= k holds everywhere
+    _common, cleared = field.cleared(rows)
+    return field.minor_bound(cleared, R.expected + 1)
+
+
+# ---------------------------------------------------------------------------
+# randomized exact methods
+
+POINTS_TARGET = 1e-30     # `checked` needs a false-pass probability at most this
+class PointLoan:
+    """The points of a claim as printed, lent to its mutants (the mutation analysis only).
+
+    While :attr:`recording`, every scene a point method builds (the baseline's) is kept, keyed by
+    everything that chose it: the claim, the method, the size, the seed, the point's number, the
+    attempt and the prime.  Afterwards a run that asks for the same point gets a copy of that scene
+    in the state the baseline left it (its parameters, its built objects), with the node values of
+    the baseline's graph keyed by the structure of their subgraphs (:func:`.ir.evaluate.node_keys`):
+    a mutant's graph recomputes only the nodes its change reaches.  Parameters the baseline did not
+    draw come from a copy of its generator: the point is as random as a fresh one, and the same
+    whatever other mutants ran before (each copy starts from the same snapshot).  Hard cases and
+    the exact method never borrow."""
+
+    def __init__(self, exact_seconds: float | None = None) -> None:
+        self.recording = False
+        self._points: dict[tuple, list] = {}
+        #: the symbolic method's time budget per run while lending (None: its own, EXACT_TIME_LIMIT)
+        self.exact_seconds = exact_seconds
+        #: (claim, realization, n, r, seed, id of the function) -> (function, witness): the witness of
+        #: the first point (of each component) of a rational run on lent points, which is what the
+        #: exact method's one-point rational run for its witness computes, on the same lent points
+        #: (see :func:`_rational_witness`)
+        self.witnesses: dict[tuple, tuple] = {}
+        #: (claim, realization, n, r, seed, id of the function) -> (function, evaluations): the checks of
+        #: a run no parameter entered, evaluated over Q (the same for its rational and modular runs, see
+        #: :func:`_constant_evaluations`)
+        self.constants: dict[tuple, tuple] = {}
+
+    def scene(self, key: tuple, build: Callable[[], tuple]) -> tuple:
+        """``build()``'s (fields..., scene) for this key: built and kept while recording, lent (a copy
+        of the kept scene's state when its run was over) otherwise."""
+        hit = self._points.get(key)
+        if hit is not None and not self.recording:
+            if hit[-1] is None:
+                # the first loan: the state in which the baseline's run left the scene and its
+                # fields, taken once (later runs may reach the kept scene through its objects)
+                hit[-1] = (hit[-3]._lent(), [(f, _field_state(f)) for f in hit[:-3]])
+            snapshot, states = hit[-1]
+            for f, state in states:
+                _restore_field(f, state)      # what the fields counted so far: the baseline's only
+            lent = snapshot._lent()
+            lent._node_memo = dict(hit[-2])
+            return (*hit[:-3], lent)
+        out = build()
+        if self.recording:
+            memo: dict = {}
+            out[-1]._node_memo = memo
+            self._points[key] = [*out, memo, None]
+        return out
+
+    def chart(self, key: tuple, build: Callable[[], tuple]) -> tuple:
+        """``build()``'s (field, scene) for the symbolic method: built and kept while recording, lent
+        otherwise (a scene of the same chart over the same field, with the same symbols).
+
+        The chart has no random draw, so the printed claim's node values are the values of the same
+        subgraphs in a mutant's graph.  A lent scene builds its objects again from the shared symbols
+        (a build records its own looks at coordinates) and records its looks at coordinates in the
+        kept scene's record, emptied first: the matrices of earlier evaluations (the shared node
+        values) record into that very object, and a shared value records again what its computation
+        recorded (:meth:`.ir.evaluate.Evaluator.run`).  So the lent scene's record, from which the
+        method decides its chart, is that of a run on a scene of its own."""
+        hit = self._points.get(key)
+        if hit is not None and not self.recording:
+            field, scene, memo, snapshot = hit
+            if snapshot is None:
+                snapshot = hit[-1] = scene._lent()     # the symbols the printed claim's run drew
+            lent = snapshot._lent()
+            lent._cache = {}
+            lent._tracker = scene._tracker
+            lent._tracker.restart()
+            lent._node_memo = dict(memo)
+            return field, lent
+        out = build()
+        if self.recording:
+            memo = {}
+            out[-1]._node_memo = memo
+            self._points[key] = [*out, memo, None]
+        return out
+
+
+    def forget(self, claim_id: str) -> None:
+        """Drop the points kept for one claim (its mutants are done)."""
+        for key in [k for k in self._points if k[0] == claim_id]:
+            del self._points[key]
+        for key in [k for k in self.witnesses if k[0] == claim_id]:
+            del self.witnesses[key]
+        for key in [k for k in self.constants if k[0] == claim_id]:
+            del self.constants[key]
+
+
+def _field_state(f: Any) -> tuple | None:
+    """The mutable record of a field (a paired field's degree markers: the denominators and constants
+    met, and the constants it made), copied; None for a field that keeps none."""
+    record = getattr(f, "record", None)
+    return record() if record is not None else None
+
+
+def _restore_field(f: Any, state: tuple | None) -> None:
+    if state is not None:
+        f.restore(state)
+
+
+_LOAN: PointLoan | None = None
+
+
+class lending_points:
+    """A context in which the point methods borrow the points of :class:`PointLoan` (mutation
+    analysis)."""
+
+    def __init__(self, loan: PointLoan) -> None:
+        self.loan = loan
+
+    def __enter__(self) -> PointLoan:
+        global _LOAN
+        self._old, _LOAN = _LOAN, self.loan
+        return self.loan
+
+    def __exit__(self, *exc: Any) -> None:
+        global _LOAN
+        _LOAN = self._old
+
+
+POINTS_MIN = 2            # points per component, at least
+POINTS_CAP = 24           # points per component, at most
+RATIONAL_BOUND = 2**62    # rational points: integers uniform in [-B, B] (fewest points for the target)
+PRIME_BOUND_TEXT = (f"K >= {PRIMES_IN_RANGE_LOWER:.2g} primes in [2^60, 2^61) (Rosser-Schoenfeld: "
+                    "x/ln x < pi(x) < 1.25506 x/ln x)")
+
+
+def _per_point_bound(kind: str, deg: DegreeBound) -> float:
+    """The probability that one point passes a false claim.
+
+    rational: Schwartz-Zippel over S = [-B, B], conditioned on the point avoiding the denominators:
+    d/(|S| - d_den).  modular: a fresh prime p, uniform among the primes of [2^60, 2^61), then a
+    uniform point of GF(p)^k.  The integer numerator N != 0 vanishes mod p only if p divides its
+    content; a nonzero coefficient c has |c| <= ||N||_1 <= 2^h, so at most floor(h/60) primes >= 2^60
+    divide it, out of K_eff >= K - floor(constant bits/60) admissible primes (a prime dividing a
+    constant of the claim is redrawn).  Otherwise N mod p is a nonzero polynomial of degree <= d:
+    Schwartz-Zippel d/(p - d_den) <= d/(2^60 - d_den)."""
+    d = max(deg.numerator, 0)
+    if kind == "rational":
+        S = 2 * RATIONAL_BOUND + 1
+        return 0.0 if d == 0 else min(1.0, d / max(S - deg.denominator, 1))
+    k_eff = PRIMES_IN_RANGE_LOWER - math.floor(deg.constant_bits / 60)
+    content = math.floor(deg.height / 60) / k_eff
+    zippel = 0.0 if d == 0 else d / max(PRIME_LOW - deg.denominator, 1)
+    return min(1.0, content + zippel)
+
+
+def _points_needed(eps: float, target: float = POINTS_TARGET, least: int = POINTS_MIN) -> int | None:
+    """The least number of independent points (>= ``least``) whose joint bound eps^k is at most
+    ``target``; None when POINTS_CAP points cannot reach it."""
+    if eps <= 0:
+        return least
+    if eps >= 1:
+        return None
+    k = max(least, math.ceil(math.log(target) / math.log(eps)))
+    while k > least and eps ** (k - 1) <= target:
+        k -= 1
+    while eps ** k > target:
+        k += 1
+    return k if k <= POINTS_CAP else None
+
+
+def _point_rank(R: Rank, field: Field, bound_text: str) -> tuple[str, str]:
+    rk = field.rank(R.matrix._a.tolist())
+    exact = field.name == "rational"
+    where = "at this exact point" if exact else f"at this point mod p = {field.p}"
+    if rk > R.expected:
+        return f"rank {rk} {where} exceeds the paper's {R.expected} (certain: generic rank >= {rk})", "certain"
+    if rk < R.expected:
+        if exact and not R.generic:
+            return (f"rank {rk} {where} of T*V, below the rank {R.expected} the paper states at every point "
+                    f"(certain)"), "certain"
+        return f"rank {rk} {where} (paper: {R.expected}); a special point or a wrong count", "mismatch"
+    generic = (f"rank {rk} {where}: generic rank >= {rk} (certain); generic rank <= {rk} "
+               f"unless a ({rk + 1})-minor ({bound_text}) vanishes here")
+    if not R.generic:
+        return (generic + f"; rank {rk} at EVERY point does not follow from sampled points "
+                          "(needs the exact method)"), "every-point"
+    return generic, "ok"
+
+
+def _constant_rank(R: Rank) -> tuple[str, str]:
+    rk = RationalField().rank(R.matrix._a.tolist())
+    return (f"the matrix is constant (no parameter enters); its exact rank over Q is {rk} at every point "
+            f"(paper: {R.expected})", "ok" if rk == R.expected else "certain")
+
+
+def _prepare(options: dict | None) -> dict | None:
+    if options and options.get("hard"):
+        options.setdefault("hard_hits", [])   # the scene appends the parameters a hard case rewrites
+    return options
+
+
+def _untouched(options: dict | None) -> bool:
+    """A hard case was asked for and changed no parameter of the claim (after a run with it)."""
+    return bool(options and options.get("hard") and not options.get("hard_hits"))
+
+
+def _hard_or_random(run: Callable[[dict | None], Result], options: dict | None) -> Result:
+    """The run at the hard case; when the case changed no parameter of the claim, its point was an
+    ordinary random point, so the claim is verified as without the case (random points, with their
+    bounds and verdicts), and the result says so."""
+    res = run(options)
+    if not _untouched(options):
+        return res
+    plain = {k: v for k, v in options.items() if k not in ("hard", "hard_hits")} or None
+    res = run(plain)
+    note = (f"the hard case {options['hard'].name} changed no parameter of this claim: verified at random "
+            f"points as without it")
+    res.message = f"{res.message}; {note}" if res.message else note
+    return res
+
+
+def run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callable | None = None,
+               trials: int | None = None, options: dict | None = None, target: float = POINTS_TARGET,
+               least: int = POINTS_MIN) -> Result:
+    """Exact evaluation at seeded random points (kind "rational" or "modular").
+
+    The number of points per component is chosen so that the false-pass bound is at most
+    ``target`` (POINTS_TARGET for a `checked`; a weaker target with ``least`` = 1 for the confirmation
+    of a float verdict), at least ``least`` of them (``trials`` fixes the number instead: a witness
+    search, whose passes claim no more than their bound).  Hard cases are evaluated at POINTS_MIN
+    points (or ``trials``), with no bound."""
+    options = _prepare(options)
+    return _hard_or_random(lambda o: _run_points(claim, n, r, kind, seed, func or claim.func, trials, o,
+                                                 target, least), options)
+
+
+def _prime_field(key: str, t: int, attempt: int) -> ModularField:
+    """The prime of point ``t`` (its ``attempt``-th draw), from the run's :func:`draw_key`."""
+    rng = random.Random(f"{key}|modular|{t}|prime|{attempt}")
+    return ModularField(random_prime(rng))
+
+
+def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callable,
+                trials: int | None, options: dict | None, target: float = POINTS_TARGET,
+                least: int = POINTS_MIN) -> Result:
+    res = _base_result(claim, n, r, kind, seed)
+    t0 = time.perf_counter()
+    key = draw_key(claim, n, r, seed, func)
+    hard = bool(options and options.get("hard"))
+    deg, eps = None, 1.0
+    if hard:
+        # a hard point is chosen, not random: no bound is claimed; the structural pass still
+        # refuses a claim that reads values and describes the degree in the report
+        try:
+            deg = degree_bound(claim, n, r, func)
+        except CoordinateAccess as exc:
+            res.verdict, res.message = "error", str(exc)
+            return res
+        eps = _per_point_bound(kind, deg)
+    # the number of points: at least ``least`` per component (or ``trials``; a hard case POINTS_MIN),
+    # then more while the product of the points' own bounds is above the target and the cap can
+    # still reach it
+    points = trials if trials is not None else POINTS_MIN if hard else least
+    res.reductions = [CAYLEY_REDUCTION.format(D=" D" if r == n else "",
+                                              comp="; both components of O(n) alternate" if r == n else "")]
+    if hard:
+        res.reductions.append(f"hard case: {options['hard'].description} (not uniform: no Schwartz-Zippel bound)")
+    evaluations, resampled, primes_redrawn = [], 0, 0
+    witness, primes = None, []
+    rational = RationalField(RATIONAL_BOUND)
+    # for r = n the constraint set has two components (det X = +-1): each gets ``points`` points
+    components = 2 if r == n else 1
+    # each point's own bound: its numbers carry degree markers (paired), so the degree bound is
+    # that of the very expression evaluated there, whatever the claim did on other calls
+    per_point: list[list[float]] = [[] for _ in range(components)]
+    point_degs: list[DegreeBound] = []
+    scene = None
+    t = 0
+    while t < points * components or (
+            trials is None and not hard and t < POINTS_CAP * components
+            and max(math.prod(p) for p in per_point) > target
+            and _points_needed(max(e for p in per_point for e in p), target, least) is not None):
+        comp = t % components
+        prime_attempt = 0
+        value_field = rational if kind == "rational" else _prime_field(key, t, prime_attempt)
+        for attempt in range(MAX_RESAMPLE):
+            def build(value_field=value_field, attempt=attempt) -> tuple:
+                rng = random.Random(f"{key}|{kind}|{t}|{attempt}")
+                field = value_field if hard else PairField(value_field)
+                return value_field, field, Scene(n, r, field, chart="cayley", rng=rng, component=comp,
+                                                 realization=claim.realization, options=options)
+            if _LOAN is not None and not options:
+                value_field, field, scene = _LOAN.scene(
+                    (claim.id, claim.realization, kind, n, r, seed, t, attempt, prime_attempt, comp), build)
+            else:
+                value_field, field, scene = build()
+            try:
+                checks = call_claim(func, scene)
+                point_deg = deg if hard else _paired_bound(checks, field)
+                bound_text = _bound_text(kind, point_deg)
+                ev = _evaluate(checks, field, lambda R: _point_rank(R, field, bound_text))
+                break
+            except ConstantDegenerate:
+                # a constant of the claim vanishes mod p: this prime is not admissible, draw another
+                primes_redrawn += 1
+                prime_attempt += 1
+                value_field = _prime_field(key, t, prime_attempt)
+                continue
+            except (DegenerateError, ZeroDivisionError):
+                resampled += 1
+                continue
+        else:
+            res.verdict = "inconclusive"
+            res.message = f"every one of {MAX_RESAMPLE} sampled points was degenerate (a pole or singular system)"
+            res.seconds = time.perf_counter() - t0
+            return res
+        # no parameter entered the checks (on a lent point, whose parameters the printed claim drew,
+        # the markers of the checks say it: all of degree 0)
+        if t == 0 and (point_deg.numerator == 0 if getattr(scene, "_loaned", False) and not hard
+                       else not scene._has_params()):
+            return _run_constant(claim, n, r, seed, func, options, res, t0)
+        if not hard:
+            point_degs.append(point_deg)
+            per_point[comp].append(_per_point_bound(kind, point_deg))
+        evaluations.append(ev)
+        if kind == "modular":
+            primes.append(field.p)
+        if ev.nonzero and witness is None:
+            check, pos, val = ev.nonzero[0]
+            witness = {"seed": seed, "trial": t, "attempt": attempt, "component": comp, "field": field.name,
+                       "check": check, "entry": pos, "value": field.describe(val),
+                       "point": {k: field.describe(v) for k, v in scene._point_values().items()}}
+            if kind == "modular":
+                witness["prime"] = field.p
+        t += 1
+        if t == components and kind == "rational" and trials is None and not options \
+                and _LOAN is not None and not _LOAN.recording:
+            # the first point of each component is done: what a one-point run on these lent points
+            # (the exact method's witness) would find
+            _LOAN.witnesses[(claim.id, claim.realization, n, r, seed, id(func))] = (func, witness)
+    points = min(len(p) for p in per_point) if point_degs else points
+    if point_degs:
+        deg = DegreeBound(max(d.numerator for d in point_degs), max(d.denominator for d in point_degs),
+                          max(d.height for d in point_degs), max(d.constant_bits for d in point_degs))
+        eps = max(e for p in per_point for e in p)
+    res.seconds = time.perf_counter() - t0
+    res.checks = [o for e in evaluations for o in e.outcomes]
+    nonzero = [z for e in evaluations for z in e.nonzero]
+    rank_mismatch = list(dict.fromkeys(p for e in evaluations for p in e.rank_problems))
+    rank_certain = list(dict.fromkeys(p for e in evaluations for p in e.rank_certain))
+    count_bad = list(dict.fromkeys(p for e in evaluations for p in e.count_problems))
+    every_point = list(dict.fromkeys(p for e in evaluations for p in e.every_point))
+    for o in res.checks:
+        o.degree = deg.numerator
+    notes = []
+    if resampled:
+        notes.append(f"{resampled} degenerate samples redrawn")
+    if primes_redrawn:
+        notes.append(f"{primes_redrawn} primes dividing a constant of the claim redrawn")
+    if len({d.numerator for d in point_degs}) > 1:
+        notes.append(f"the points' own degree bounds differ, from {min(d.numerator for d in point_degs)} to "
+                     f"{deg.numerator}: each point's bound is that of its own evaluation")
+    note = f" ({'; '.join(notes)})" if notes else ""
+    per = f" on each of the {components} components of T*V" if components == 2 else ""
+    joint = max(math.prod(p) for p in per_point) if point_degs else eps ** points
+    if kind == "modular":
+        how = (f"each point over its own prime p, drawn uniformly from the primes in [2^60, 2^61) by the seed "
+               f"(uniform odd integers until one is prime), parameters uniform in GF(p); primes: "
+               f"{', '.join(str(p) for p in primes)}; numerator degree <= d = {deg.numerator}, log2 of its L1 norm "
+               f"<= h = {deg.height:.1f}; per point: a false pass needs p | N (at most floor(h/60) of the "
+               f"{PRIME_BOUND_TEXT}) or N(x) = 0 mod p (Schwartz-Zippel): <= floor(h/60)/K + d/(2^60 - d_den) "
+               f"= {eps:.1e}")
+    else:
+        how = (f"parameters uniform integers in [-2^{RATIONAL_BOUND.bit_length() - 1}, "
+               f"2^{RATIONAL_BOUND.bit_length() - 1}] (|S| = {_size(2 * RATIONAL_BOUND + 1)}); numerator degree "
+               f"<= d = {deg.numerator}; per point (Schwartz-Zippel) d/(|S| - d_den) = {eps:.1e}")
+    if claim.expect == "nonzero":
+        if nonzero:
+            res.verdict = "proved"
+            res.witness = witness
+            res.certificate = (f"nonzero value at a seeded point{' mod p' if kind == 'modular' else ''}: "
+                               f"{witness['entry']} = {witness['value']}{note}")
+        elif hard or joint > target:
+            res.verdict = "inconclusive"
+            res.message = (f"vanished at {points * components} points, but that does not bound the chance that a "
+                           f"nonzero residual vanished there ({'hard points are not uniform' if hard else _cap_text(eps, target)})")
+        else:
+            res.verdict = "fails"
+            res.false_pass_bound = joint
+            res.certificate = f"vanished at {points} random points{per}; {how}; probability <= {joint:.1e}{note}"
+        return res
+    if nonzero or count_bad or rank_certain:
+        res.verdict = "fails"
+        res.witness = witness
+        if nonzero:
+            res.residual = f"{witness['entry']} = {witness['value']}"
+            modnote = (f" (mod p = {witness['prime']}: the numerator polynomial is nonzero)"
+                       if kind == "modular" else "")
+            res.certificate = f"exact nonzero residual at a seeded point of T*V{modnote}{note}"
+        else:
+            res.certificate = "; ".join(count_bad + rank_certain)
+        return res
+    if rank_mismatch:
+        res.verdict = "inconclusive"
+        res.message = "; ".join(rank_mismatch)
+        return res
+    established = "every residual vanishes" + (" and the generic ranks are as printed" if any(
+        o.status == "rank" for o in res.checks) else "")
+    if hard:
+        # a hard point is chosen, not random: vanishing there says nothing of the statement's truth
+        res.verdict = "undecided"
+        res.message = (f"not applicable: {established} exactly at the {points * components} hard points; "
+                       f"they are chosen, not random, so no verdict on the statement follows{note}")
+    elif joint > target:
+        res.verdict = "inconclusive"
+        res.message = (f"{established} at {points} points{per}, but the false-pass bound is too weak: "
+                       f"{_cap_text(eps, target)}; {how}{note}")
+        return res
+    else:
+        res.verdict = "checked"
+        res.false_pass_bound = joint
+        res.certificate = (f"{points} independent points{per} (chosen so that the bound is <= {target:.0e}); "
+                           f"{how}; false-pass probability <= {_joint_text(per_point, eps, points, joint)}{note}")
+    if every_point:
+        res.verdict = "undecided"
+        res.message = (f"not applicable: {', '.join(every_point)}: a rank at every point of T*V does not follow "
+                       f"from sampled points; it needs the exact method (a constant nonzero maximal minor). "
+                       f"Established here: {res.certificate}")
+        res.false_pass_bound = None
+    return res
+
+
+def _bound_text(kind: str, deg: DegreeBound) -> str:
+    return (f"degree <= {deg.numerator}" if kind == "rational"
+            else f"degree <= {deg.numerator}, log2 height <= {deg.height:.0f}")
+
+
+def _joint_text(per_point: list[list[float]], eps: float, points: int, joint: float) -> str:
+    """The joint bound: eps^k when every point has the same bound, else the product per component."""
+    if all(len(p) == points and all(e == eps for e in p) for p in per_point):
+        return f"{eps:.1e}^{points} = {joint:.1e}"
+    return (f"{joint:.1e} (the product over each component's points of their own bounds, the largest "
+            f"{eps:.1e})")
+
+
+def _cap_text(eps: float, target: float = POINTS_TARGET) -> str:
+    if eps >= 1:
+        return f"the per-point bound is {eps:.1e} >= 1"
+    return (f"the per-point bound {eps:.1e} would need more than {POINTS_CAP} points per component to reach "
+            f"{target:.0e} ({POINTS_CAP} points give {eps ** POINTS_CAP:.1e})")
+
+
+def _constant_evaluations(claim: Claim, n: int, r: int, seed: int, func: Callable, options: dict | None,
+                          field: RationalField) -> list[tuple[int, Evaluation]]:
+    """The checks of a run that no parameter entered, evaluated over Q at the point the seed gives (one
+    per component).  A pure function of the function, the size and the seed: on lent points (the
+    mutation analysis) the rational and the modular run of the same mutant at the same size both come
+    here, and the second takes the first one's evaluations (:attr:`PointLoan.constants`, keyed by the
+    function's identity) instead of computing them again; each run gets copies of the outcomes."""
+    loan = _LOAN if not options else None
+    key = (claim.id, claim.realization, n, r, seed, id(func))
+    hit = loan.constants.get(key) if loan is not None else None
+    if hit is None or hit[0] is not func:
+        evaluations = []
+        for comp in ((0, 1) if r == n else (0,)):
+            scene = Scene(n, r, field, chart="cayley", rng=random.Random(seed), component=comp,
+                          realization=claim.realization, options=options)
+            evaluations.append((comp, _evaluate(call_claim(func, scene), field, _constant_rank)))
+        hit = (func, evaluations)
+        if loan is not None:
+            loan.constants[key] = hit
+    return [(comp, dataclasses.replace(e, outcomes=[dataclasses.replace(o) for o in e.outcomes]))
+            for comp, e in hit[1]]
+
+
+def _run_constant(claim: Claim, n: int, r: int, seed: int, func: Callable, options: dict | None,
+                  res: Result, t0: float) -> Result:
+    """No parameter entered the checks: they are constants, decided exactly over Q (no probability)."""
+    field = RationalField(RATIONAL_BOUND)
+    evaluations = _constant_evaluations(claim, n, r, seed, func, options, field)
+    res.seconds = time.perf_counter() - t0
+    res.checks = [o for _, e in evaluations for o in e.outcomes]
+    nonzero = [(comp, z) for comp, e in evaluations for z in e.nonzero]
+    problems = list(dict.fromkeys(p for _, e in evaluations for p in e.count_problems + e.rank_problems))
+    if nonzero:
+        comp, (check, pos, val) = nonzero[0]
+        res.witness = {"seed": seed, "trial": 0, "attempt": 0, "component": comp, "field": field.name,
+                       "check": check, "entry": pos, "value": field.describe(val), "point": {}}
+    if claim.expect == "nonzero":
+        res.verdict = "proved" if nonzero else "fails"
+        res.certificate = ("no parameter enters the checks: " +
+                           (f"the constant {res.witness['entry']} = {res.witness['value']} is not zero" if nonzero
+                            else "every entry is the constant 0 (exact over Q)"))
+        return res
+    if nonzero or problems:
+        res.verdict = "fails"
+        if nonzero:
+            res.residual = f"{res.witness['entry']} = {res.witness['value']}"
+        res.certificate = "no parameter enters the checks; exact over Q: " + (
+            "a nonzero constant residual" if nonzero else "; ".join(problems))
+        return res
+    res.verdict = "checked"
+    res.false_pass_bound = 0.0
+    res.certificate = ("no parameter enters the checks: they are constants, evaluated exactly over Q "
+                       "(ranks of constant matrices hold at every point); no probability involved")
+    return res
+
+
+def _size(S: int) -> str:
+    if S > 10**6:
+        return f"{S:.3g}"
+    return str(S)
+
+
+# ---------------------------------------------------------------------------
+# floating point with error model and escalation
+
+def run_float(claim: Claim, n: int, r: int, seed: int, func: Callable | None = None,
+              options: dict | None = None) -> Result:
+    """float64 with a running error bound; mpmath at 30, 60, 120 digits when float64 cannot decide.
+    When r = n both components of O(n) are evaluated."""
+    options = _prepare(options)
+    with one_blas_thread(), quiet_numpy():
+        res = _hard_or_random(lambda o: _run_float(claim, n, r, seed, func or claim.func, o), options)
+    if res.verdict == "numeric":
+        res = _confirm_numeric(res, claim, n, r, seed, func, options)
+    return res
+
+
+#: a `numeric` verdict is confirmed at exact random points mod p, at every size: a residual far below
+#: the scale of the terms (a term absorbed by a much larger one) passes float64's relative tolerance,
+#: and only exact arithmetic sees it.  As many points per component as make the chance that a residual
+#: which is not identically 0 vanishes at all of them at most CONFIRM_TARGET (Schwartz-Zippel with each
+#: point's own prime and degree bound, as for `checked`): one point per component wherever its bound
+#: is below 2^-40 (every claim of the catalog, up to n = 200 at least: LA1 at (200,100) has degree
+#: <= 1205 and a bound of 6e-15 per point), more where it is not
+CONFIRM_TARGET = 2.0 ** -40
+#: a hard case (chosen, not random, points: no bound) is confirmed at this many points per component
+CONFIRM_POINTS = POINTS_MIN
+
+
+def _confirm_numeric(res: Result, claim: Claim, n: int, r: int, seed: int, func: Callable | None,
+                     options: dict | None, method: str = "float") -> Result:
+    """The float or ball run's ``numeric``, confirmed at exact points modulo primes (of the hard case, at
+    its exact parameters, when one was asked for and changed a parameter; random points otherwise).  A
+    nonzero residual there refutes the claim; where no exact point can be evaluated the float verdict
+    is not a pass (``inconclusive``, with the reason)."""
+    what = "float64" if method == "float" else "the ball enclosure"
+    hard = {k: v for k, v in options.items() if k != "hard_hits"} if options else None
+    if hard and hard.get("hard"):
+        exact = run_points(claim, n, r, "modular", seed, func, trials=CONFIRM_POINTS, options=hard)
+    else:
+        exact = run_points(claim, n, r, "modular", seed, func, options=hard, target=CONFIRM_TARGET, least=1)
+    res.seconds += exact.seconds           # the record's time is the whole check's, confirmation included
+    if exact.checks and (exact.verdict in ("checked", "proved") if not (hard and hard.get("hard"))
+                         else exact.verdict not in ("fails", "error")):
+        # the residuals vanished at the exact points (a nonzero residual below float64's resolution
+        # is what the confirmation looks for); at random points the chance that one which is not
+        # identically 0 did is bounded (checked, not an `inconclusive` whose bound is too weak); at a
+        # hard case's chosen points there is no such bound (the verdict is modular's "not applicable")
+        res.certificate = (res.certificate + "; " if res.certificate else "") + _confirm_text(exact)
+        return res
+    if exact.verdict != "fails":
+        res.verdict = "inconclusive"
+        res.message = (f"{what} passed within its tolerance relative to the terms' scale, but the confirmation "
+                       f"at exact points mod p could not decide ({exact.verdict}"
+                       + (f": {exact.message}" if exact.message else "") +
+                       "), and a residual below float64's resolution of the terms is seen only there")
+        return res
+    exact.method, exact.seconds = method, res.seconds
+    exact.message = (f"{what} passed within its tolerance relative to the terms' scale, but the residual is "
+                     "not 0 at exact points mod p: it lies below float64's resolution of those terms"
+                     + (f" ({exact.message})" if exact.message else ""))
+    return exact
+
+
+def _confirm_text(exact: Result) -> str:
+    """What the exact confirmation of a float verdict established, with its false-pass bound."""
+    if exact.verdict == "checked" and exact.false_pass_bound is not None:
+        m = re.match(r"(\d+) independent points( on each of the 2 components of T\*V)?", exact.certificate)
+        where = (f"{m.group(1)} random point{'s' if m.group(1) != '1' else ''} mod p"
+                 f"{' per component' if m.group(2) else ''}" if m else "random points mod p")
+        if exact.false_pass_bound == 0 and not m:
+            return f"confirmed exactly: {exact.certificate}"
+        degree = max((o.degree for o in exact.checks if o.degree is not None), default=None)
+        return (f"confirmed exactly: every residual is 0 at {where} (a point over its own prime in [2^60, 2^61)); "
+                f"a residual that is not identically 0 vanishes there with probability <= "
+                f"{exact.false_pass_bound:.1e} <= 2^{math.log2(CONFIRM_TARGET):.0f} (Schwartz-Zippel with each "
+                f"point's own bound{f', numerator degree <= {degree}' if degree is not None else ''})")
+    return (f"the exact confirmation mod p did not bound the chance of a missed residual "
+            f"({exact.verdict}: {_short(exact.message or exact.certificate, 240)})")
+
+
+@dataclass
+class _FloatRun:
+    status: str                 # "pass", "bad", "nonzero", "zero", "unresolved", "empty"
+    field: str = ""
+    log: list[str] = dc_field(default_factory=list)
+    entry: tuple[str, Any] | None = None
+    worst_e: Any = 0.0
+    worst_m: Any = 0.0
+    ranks: list[str] = dc_field(default_factory=list)
+    count_problems: list[str] = dc_field(default_factory=list)
+
+
+def _resolves(x: ErrNum) -> bool:
+    """The bound e could see a residual far below the scale of the terms (e <= 1e-8 m, all finite)."""
+    return _finite(x) and x.e <= FLOAT_RESOLUTION * x.m
+
+
+def _finite(x: ErrNum) -> bool:
+    if type(x.v) is float and type(x.e) is float and type(x.m) is float:
+        return math.isfinite(x.v) and math.isfinite(x.e) and math.isfinite(x.m)
+    try:
+        return all(mpmath.isfinite(y) for y in (x.v, x.e, x.m))
+    except (TypeError, ValueError):
+        return False
+
+
+def _float_component(claim: Claim, n: int, r: int, seed: int, func: Callable, options: dict | None,
+                     comp: int, ladder: tuple = FLOAT_LADDER) -> _FloatRun:
+    run = _FloatRun("unresolved")
+    nonzero_claim = claim.expect == "nonzero"
+    cons = REALIZATIONS[claim.realization]
+    wide = outside_float_range(compile_claim(func, n, r, (cons.name, cons.build)))
+    key = draw_key(claim, n, r, seed, func)
+    for dps in ladder:
+        if dps is None and wide:
+            run.log.append(f"float64 skipped: the constant {wide[0]} is outside its range "
+                           f"(2^-{FLOAT_EXPONENT_LIMIT}, 2^{FLOAT_EXPONENT_LIMIT})")
+            continue
+        def build(dps=dps) -> tuple:
+            field = FloatField(dps)
+            rng = random.Random(f"{key}|float" + (f"|component {comp}" if comp else ""))
+            return field, Scene(n, r, field, chart="cayley", rng=rng, component=comp,
+                                realization=claim.realization, options=options)
+        if _LOAN is not None and not options and dps is None:
+            field, scene = _LOAN.scene((claim.id, claim.realization, "float", n, r, seed, comp), build)
+        else:
+            field, scene = build()        # (a scene builds its objects when they are first asked for)
+        ctx = mpmath.workdps(dps) if dps else np.errstate(over="ignore", invalid="ignore")
+        try:
+            with ctx:
+                checks = call_claim(func, scene)
+                entries, ranks, counts = [], [], []
+                for name, value in checks.items():
+                    if isinstance(value, Rank):
+                        ranks.append(name)
+                    elif isinstance(value, Count):
+                        if value.value != value.expected:
+                            counts.append(f"{name}: {value.meaning + ': ' if value.meaning else ''}"
+                                          f"{value.value} (paper: {value.expected})")
+                    else:
+                        for pos, x in _float_entries(value, name, field.u):
+                            if not isinstance(x, ErrNum):
+                                x = field.const(x)       # an exact int or Fraction
+                            entries.append((pos, x))
+        except OverflowError as exc:
+            run.log.append(f"{field.name}: unresolved ({exc})")
+            continue
+        except DegenerateError as exc:
+            run.log.append(f"{field.name}: {exc}")
+            continue
+        finally:
+            release = getattr(field.__dict__.get("_backend"), "release", None)
+            if release is not None:      # the evaluation is over: its remembered products may go
+                release()
+        run.ranks, run.count_problems, run.field = ranks, counts, field.name
+        if not entries:
+            run.status = "empty"
+            return run
+        finite = all(_finite(x) for _, x in entries)
+        if not finite:   # never a pass: nan or inf anywhere voids the error model
+            run.log.append(f"{field.name}: unresolved (a non-finite value, error bound or term scale: overflow)")
+            continue
+        worst = max(entries, key=lambda px: abs(px[1].v))[1]
+        ratio = max(entries, key=lambda px: (px[1].e / px[1].m) if px[1].m else (0 if px[1].e == 0 else math.inf))[1]
+        run.worst_e, run.worst_m = ratio.e, ratio.m
+        run.log.append(f"{field.name}: max |residual| {float(abs(worst.v)):.2e}, error bound up to "
+                       f"{float(max(x.e for _, x in entries)):.2e}, worst resolution e = {float(ratio.e):.1e} at "
+                       f"term scale m = {float(ratio.m):.1e}")
+        clear = [(pos, x) for pos, x in entries if abs(x.v) > x.e]
+        if nonzero_claim:
+            hit = [(pos, x) for pos, x in clear if _resolves(x)]
+            if hit:
+                run.status, run.entry = "nonzero", hit[0]
+                return run
+            if not clear and all(_resolves(x) for _, x in entries):
+                run.status = "zero"
+                return run
+            continue
+        if clear:
+            run.status, run.entry = "bad", clear[0]
+            return run
+        if all(_resolves(x) for _, x in entries):
+            run.status = "pass"
+            return run
+    run.status = "unresolved"
+    return run
+
+
+def _run_float(claim: Claim, n: int, r: int, seed: int, func: Callable, options: dict | None) -> Result:
+    res = _base_result(claim, n, r, "float", seed)
+    t0 = time.perf_counter()
+    # no separate structural pass: a claim that reads the values of the scene's numbers is refused
+    # (on record) in this very run, every number it gets being an opaque Scalar
+    comps = (0, 1) if r == n else (0,)
+    res.reductions = [CAYLEY_REDUCTION.format(
+        D=" D" if r == n else "", comp="; both components of O(n)" if r == n else "")
+        + "; running error analysis of every operation"]
+    if options and options.get("hard"):
+        res.reductions.append(f"hard case: {options['hard'].description}")
+    identity = claim.expect != "nonzero"
+    first = FLOAT_LADDER[:1] if identity else FLOAT_LADDER
+    runs = [_float_component(claim, n, r, seed, func, options, c, first) for c in comps]
+    log = "; ".join((f"component {c + 1}: " if len(comps) > 1 else "") + "; ".join(run.log)
+                    for c, run in zip(comps, runs))
+    decided = None
+    if identity and any(run.status == "unresolved" for run in runs) and not any(run.status == "bad" for run in runs):
+        ball = _run_ball(claim, n, r, seed, func, options)
+        if ball.verdict in ("numeric", "fails"):
+            for k in ("certificate", "residual", "witness", "false_pass_bound"):
+                setattr(res, k, getattr(ball, k))
+            res.reductions += [x for x in ball.reductions if x not in res.reductions]
+            res.message = (f"float64 could not resolve the residual ({log}); ball arithmetic at the same exact "
+                           f"point decided: {ball.message or ball.certificate}")
+            decided = ball.verdict
+        else:
+            runs = [_float_component(claim, n, r, seed, func, options, c, FLOAT_LADDER[1:]) for c in comps]
+            log += (f"; ball arithmetic: {ball.verdict} ({ball.message}); "
+                    + "; ".join((f"component {c + 1}: " if len(comps) > 1 else "") + "; ".join(run.log)
+                                for c, run in zip(comps, runs)))
+
+    def done(verdict: str) -> Result:
+        if verdict == "numeric" and options and options.get("hard"):
+            # resolved at a chosen (not random) point: a test of the error model, not of the statement
+            verdict = "undecided"
+            res.message = ("not applicable: resolved at the hard point, which is chosen, not random, so no "
+                           "verdict on the statement follows; " + (res.message or res.certificate))
+        res.verdict = verdict
+        res.seconds = time.perf_counter() - t0
+        return res
+
+    if decided is not None:
+        return done(decided)
+    counts = list(dict.fromkeys(p for run in runs for p in run.count_problems))
+    if counts:
+        res.certificate = "; ".join(counts) + " (integers, exact)"
+        return done("fails")
+    if any(run.status == "empty" for run in runs):
+        res.message = "not applicable: no residuals to evaluate in floating point (ranks are decided exactly)"
+        return done("inconclusive")
+    ranks = list(dict.fromkeys(name for run in runs for name in run.ranks))
+
+    if claim.expect == "nonzero":
+        hit = next(((c, run) for c, run in zip(comps, runs) if run.status == "nonzero"), None)
+        res.message = log
+        if hit is not None:
+            c, run = hit
+            pos, x = run.entry
+            res.residual = f"{pos} = {x!r}"
+            res.certificate = (f"{run.field}{f' (component {c + 1})' if len(comps) > 1 else ''}: {pos} = {x!r}, "
+                               f"|value| > its error bound, which resolves 1e-8 of the term scale")
+            return done("numeric")
+        ex = run_points(claim, n, r, "rational", seed, func, options=options)
+        if ex.verdict == "proved":
+            res.witness = ex.witness
+            res.certificate = ("not clearly nonzero in floating point; an exact rational point confirms it: "
+                               f"{ex.certificate}")
+            return done("numeric")
+        if ex.verdict == "fails":
+            res.witness, res.false_pass_bound = ex.witness, ex.false_pass_bound
+            res.certificate = f"no entry is nonzero in floating point; exact rational points: {ex.certificate}"
+            return done("fails")
+        res.message = f"neither floating point nor exact rational points decide ({ex.verdict}: {ex.message}) | {log}"
+        return done("inconclusive")
+
+    bad = next(((c, run) for c, run in zip(comps, runs) if run.status == "bad"), None)
+    if bad is not None:
+        c, run = bad
+        pos, x = run.entry
+        res.residual = f"{pos} = {x!r}"
+        ex = run_points(claim, n, r, "rational", seed, func, trials=1, options=options)
+        if ex.verdict == "fails":
+            res.witness = ex.witness
+            res.certificate = (f"{run.field} residual exceeds its error bound; confirmed by an exact "
+                               f"rational witness")
+            res.message = log
+            return done("fails")
+        res.message = ("the floating-point residual exceeds its first-order error bound but the exact "
+                       f"check passed ({ex.verdict}): the bound is too optimistic here | {log}")
+        return done("inconclusive")
+    if any(run.status != "pass" for run in runs):
+        res.message = "precision ladder exhausted without a resolving bound: " + log
+        return done("inconclusive")
+    res.false_pass_bound = None
+    res.residual = None
+    res.certificate = "; ".join(
+        f"{f'component {c + 1}, ' if len(comps) > 1 else ''}{run.field}: every residual entry |v| <= its error "
+        f"bound e, and e <= 1e-8 x its term scale m (worst e = {float(run.worst_e):.1e} at m = "
+        f"{float(run.worst_m):.1e}); so |exact residual| <= 2e at this point" for c, run in zip(comps, runs))
+    res.message = log
+    if ranks:
+        res.message = (f"not applicable: {', '.join(ranks)}: ranks are decided by exact arithmetic (methods exact, "
+                       f"rational, modular); floating point cannot. The residuals pass numerically: "
+                       f"{res.certificate} | {log}")
+        return done("undecided")
+    return done("numeric")
+
+
+# ---------------------------------------------------------------------------
+# ball arithmetic: rigorous enclosures at the float method's exact points
+
+BALL_CERTIFICATE = (
+    "ball arithmetic (float64 midpoint-radius pairs with a-priori rounding bounds, then arb): every residual "
+    "entry is enclosed in a ball that contains its exact value at this exact point of T*V (parameters k/2^40, exact constants), by the inclusion property of the balls")
+
+
+def run_ball(claim: Claim, n: int, r: int, seed: int, func: Callable | None = None,
+             options: dict | None = None) -> Result:
+    """Rigorous ball arithmetic at the exact point the float method draws: float64 midpoint-radius
+    matrices first from n = 32 on (:mod:`stiefelsym.backends.midrad`), then arb at 53, 106, 212 and 424
+    bits, until the enclosures decide: one that excludes 0 is a certified nonzero residual
+    (``fails``); all within 1e-8 of their term scales is ``numeric`` with the rigorous bound.
+    When r = n both components of O(n) are evaluated."""
+    options = _prepare(options)
+    with one_blas_thread(), quiet_numpy():
+        res = _hard_or_random(lambda o: _run_ball(claim, n, r, seed, func or claim.func, o), options)
+    if res.verdict == "numeric":
+        res = _confirm_numeric(res, claim, n, r, seed, func, options, "ball")
+    return res
+
+
+class _Enclosures:
+    """The enclosures of one check's residual entries, as the ball method reads them: ``ups``, an
+    upper bound of |x| for every x in each ball (float64, rounded up; 0 only for a ball that is
+    exactly 0), ``scales`` (their term scales), ``excludes()`` (where a ball excludes 0, computed
+    when asked), ``ball(i)`` (one enclosure as text) and ``pos(i)`` (the entry's position)."""
+
+    def __init__(self, pos: Callable[[int], str], ups: np.ndarray, scales: np.ndarray,
+                 excludes: Callable[[], np.ndarray], ball: Callable[[int], str], zero: bool) -> None:
+        self.pos, self.ups, self.scales, self.excludes, self.ball = pos, ups, scales, excludes, ball
+        #: every ball contains 0 (one native test), so none excludes it
+        self.zero = zero
+
+
+def _arb_enclosures(pos: Callable[[int], str], balls: list, scales: np.ndarray, zero: bool) -> _Enclosures:
+    # the upper end of |x| rounded up by one ulp of float64 (0 for the ball that is exactly 0); a
+    # ball excludes 0 where the lower end of |x| is positive (a positive float64 never rounds to 0
+    # above 2^-1075)
+    raw = np.array([float(b.abs_upper()) for b in balls])
+    ups = np.nextafter(raw, math.inf)
+    for i in np.flatnonzero(raw == 0).tolist():
+        if balls[i].is_zero():
+            ups[i] = 0.0
+    return _Enclosures(pos, ups, scales, lambda: np.array([float(b.abs_lower()) > 0 for b in balls], dtype=bool),
+                       lambda i: balls[i].str(17, radius=True), zero)
+
+
+def _ball_entries(value: Any, name: str, field: Any) -> _Enclosures:
+    """The enclosures of a residual over a ball field (arb balls, or float64 midpoint-radius
+    pairs read as whole arrays) with their term scales."""
+    from stiefelsym.backends.ball import Balls, entries_of
+    from stiefelsym.backends.midrad import MidRad
+    if isinstance(value, Mat) and isinstance(value._n, MidRad):
+        s = backend(field)._forced(value._n)
+        cols = s.shape()[1]
+        return _Enclosures(lambda i: f"{name}[{i // cols + 1},{i % cols + 1}]", s.upper_abs().ravel(),
+                           s.m.ravel(), lambda: s.excludes_zero().ravel(),
+                           lambda i: s.ball(i).str(17, radius=True), backend(field).is_zero(s))
+    if isinstance(value, Mat) and isinstance(value._n, Balls):
+        balls, scales = entries_of(value._n)
+        cols = value._n.shape()[1]
+        return _arb_enclosures(lambda i: f"{name}[{i // cols + 1},{i % cols + 1}]", balls, np.array(scales),
+                               backend(field).is_zero(value._n))
+    pairs = _entries(value, name)
+    for pos, x in pairs:
+        if not hasattr(x, "b"):
+            raise TypeError(f"check {pos}: not a number of the ball field ({type(x).__name__})")
+    return _arb_enclosures(lambda i: pairs[i][0], [x.b for _, x in pairs],
+                           np.array([float(x.m) for _, x in pairs], dtype=float), False)
+
+
+@dataclass
+class _BallDecision:
+    status: str                  # "pass", "bad", "nonzero", "zero", "unresolved", "empty"
+    field: str = ""
+    log: list[str] = dc_field(default_factory=list)
+    entry: tuple[str, str] | None = None          # (position, enclosure) of the deciding entry
+    worst: tuple[float, float] = (0.0, 0.0)       # the bound e and scale m of the worst e/m
+    bound: float = 0.0                            # the largest bound over all entries
+    ranks: list[str] = dc_field(default_factory=list)
+    count_problems: list[str] = dc_field(default_factory=list)
+    point: dict[str, str] = dc_field(default_factory=dict)
+
+
+def _ball_rng(seed: int, claim: Claim, n: int, r: int, comp: int, func: Callable) -> random.Random:
+    """The float method's random source: the ball method evaluates at the float method's point."""
+    return random.Random(f"{draw_key(claim, n, r, seed, func)}|float" + (f"|component {comp}" if comp else ""))
+
+
+def _ball_component(claim: Claim, n: int, r: int, seed: int, func: Callable, options: dict | None,
+                    comp: int) -> _BallDecision:
+    from stiefelsym.backends.ball import BALL_LADDER, BallField, working_precision
+    from stiefelsym.backends.midrad import MIDRAD_MIN_N, MidRadField
+    run = _BallDecision("unresolved")
+    nonzero_claim = claim.expect == "nonzero"
+    # float64 midpoint-radius pairs first (numpy, a-priori rounding bounds) where matrices are large
+    # enough for numpy to pay, then arb up the ladder
+    first = [MidRadField()] if n >= MIDRAD_MIN_N else []
+    for field in first + [BallField(prec) for prec in BALL_LADDER]:
+        with working_precision(field.prec):
+            try:
+                scene = Scene(n, r, field, chart="cayley", rng=_ball_rng(seed, claim, n, r, comp, func),
+                              component=comp, realization=claim.realization, options=options)
+                checks = call_claim(func, scene)
+                encs: list[_Enclosures] = []
+                ranks, counts = [], []
+                for name, value in checks.items():
+                    if isinstance(value, Rank):
+                        ranks.append(name)
+                    elif isinstance(value, Count):
+                        if value.value != value.expected:
+                            counts.append(f"{name}: {value.meaning + ': ' if value.meaning else ''}"
+                                          f"{value.value} (paper: {value.expected})")
+                    else:
+                        encs.append(_ball_entries(value, name, field))
+            except DegenerateError as exc:
+                run.log.append(f"{field.name}: {exc}")
+                continue
+            finally:
+                release = getattr(field.__dict__.get("_backend"), "release", None)
+                if release is not None:      # the evaluation is over: its remembered products may go
+                    release()
+            run.ranks, run.count_problems, run.field = ranks, counts, field.name
+            if not encs or not sum(len(x.ups) for x in encs):
+                run.status = "empty"
+                return run
+            ups = np.concatenate([x.ups for x in encs])
+            scales = np.concatenate([x.scales for x in encs]).astype(float)
+            # the first enclosure (check, index) that excludes 0, if any
+            clear = next(((x, int(ix[0])) for x in encs if not x.zero
+                          for ix in [np.flatnonzero(x.excludes())] if len(ix)), None)
+            total = len(ups)
+            with np.errstate(all="ignore"):
+                resolves = np.isfinite(ups) & np.isfinite(scales) & (ups <= FLOAT_RESOLUTION * scales)
+                ratio = np.where(scales > 0, ups / np.where(scales > 0, scales, 1.0),
+                                 np.where(ups == 0, 0.0, math.inf))
+            k = int(np.argmax(ratio))
+            run.worst, run.bound = (float(ups[k]), float(scales[k])), float(np.max(ups))
+            excluded = sum(int(np.count_nonzero(x.excludes())) for x in encs if not x.zero) if clear else 0
+            run.log.append(f"{field.name}: {excluded} of {total} enclosures exclude 0; largest bound "
+                           f"{run.bound:.2e}, worst resolution e = {ups[k]:.1e} at term scale m = {scales[k]:.1e}"
+                           + ("" if np.all(np.isfinite(scales)) else
+                              " (a term scale overflows float64: the resolution test cannot be made)"))
+            if clear:
+                enc, i = clear
+                run.entry = (enc.pos(i), enc.ball(i))
+                run.point = {name: field.describe(v) for name, v in scene._point_values().items()}
+                run.status = "nonzero" if nonzero_claim else "bad"
+                return run
+            if bool(np.all(resolves)):
+                run.status = "zero" if nonzero_claim else "pass"
+                return run
+    run.status = "unresolved"
+    return run
+
+
+def _run_ball(claim: Claim, n: int, r: int, seed: int, func: Callable, options: dict | None) -> Result:
+    res = _base_result(claim, n, r, "ball", seed)
+    t0 = time.perf_counter()
+    comps = (0, 1) if r == n else (0,)
+    res.reductions = [CAYLEY_REDUCTION.format(
+        D=" D" if r == n else "", comp="; both components of O(n)" if r == n else "")
+        + "; the float method's exact point (parameters k/2^40); rigorous ball arithmetic (arb)"]
+    if options and options.get("hard"):
+        res.reductions.append(f"hard case: {options['hard'].description} (the hard value's ball midpoint, "
+                              f"taken as an exact input)")
+    runs = [_ball_component(claim, n, r, seed, func, options, c) for c in comps]
+    log = "; ".join((f"component {c + 1}: " if len(comps) > 1 else "") + "; ".join(run.log)
+                    for c, run in zip(comps, runs))
+    where = lambda c: f" (component {c + 1})" if len(comps) > 1 else ""  # noqa: E731
+
+    def done(verdict: str) -> Result:
+        if verdict in ("numeric", "proved") and options and options.get("hard"):
+            verdict = "undecided"
+            res.message = ("not applicable: resolved at the hard point, which is chosen, not random, so no "
+                           "verdict on the statement follows; " + (res.certificate or res.message))
+        res.verdict = verdict
+        res.seconds = time.perf_counter() - t0
+        return res
+
+    def witness(c: int, run: _BallDecision) -> dict[str, Any]:
+        pos, ball = run.entry
+        return {"seed": seed, "trial": 0, "attempt": 0, "component": c, "field": run.field,
+                "check": pos.split("[")[0], "entry": pos, "value": ball, "point": run.point}
+
+    counts = list(dict.fromkeys(p for run in runs for p in run.count_problems))
+    if counts:
+        res.certificate = "; ".join(counts) + " (integers, exact)"
+        return done("fails")
+    if any(run.status == "empty" for run in runs):
+        res.message = "not applicable: no residuals to enclose (ranks are decided exactly)"
+        return done("inconclusive")
+    ranks = list(dict.fromkeys(name for run in runs for name in run.ranks))
+    res.message = log
+    if claim.expect == "nonzero":
+        hit = next(((c, run) for c, run in zip(comps, runs) if run.status == "nonzero"), None)
+        if hit is not None:
+            c, run = hit
+            res.witness = witness(c, run)
+            res.residual = f"{run.entry[0]} in {run.entry[1]}"
+            res.certificate = (f"{BALL_CERTIFICATE}; {run.field}{where(c)}: {run.entry[0]} lies in "
+                               f"{run.entry[1]}, which excludes 0: the residual is not identically zero "
+                               f"(certified at this point)")
+            return done("proved")
+        ex = run_points(claim, n, r, "rational", seed, func, options=options)
+        if ex.verdict in ("proved", "fails"):
+            res.witness, res.false_pass_bound = ex.witness, ex.false_pass_bound
+            res.certificate = f"no enclosure excludes 0; exact rational points: {ex.certificate}"
+            return done(ex.verdict)
+        res.message = f"neither the enclosures nor exact rational points decide ({ex.verdict}: {ex.message}) | {log}"
+        return done("inconclusive")
+    bad = next(((c, run) for c, run in zip(comps, runs) if run.status == "bad"), None)
+    if bad is not None:
+        c, run = bad
+        res.witness = witness(c, run)
+        res.residual = f"{run.entry[0]} in {run.entry[1]}"
+        res.certificate = (f"{BALL_CERTIFICATE}; {run.field}{where(c)}: the enclosure {run.entry[1]} of "
+                           f"{run.entry[0]} excludes 0, so the exact residual is nonzero at this point "
+                           f"(a certified witness)")
+        return done("fails")
+    if any(run.status != "pass" for run in runs):
+        res.message = "precision ladder (float64 midpoint-radius, then arb at 53, 106, 212, 424 bits) exhausted without resolving enclosures: " + log
+        return done("inconclusive")
+    res.certificate = BALL_CERTIFICATE + "; " + "; ".join(
+        f"{f'component {c + 1}, ' if len(comps) > 1 else ''}{run.field}: every enclosure contains 0 and "
+        f"lies in [-e, e] with e <= 1e-8 x its term scale (largest e = {run.bound:.1e}; worst e/m: "
+        f"{run.worst[0]:.1e} at m = {run.worst[1]:.1e}); so |exact residual| <= {run.bound:.1e} at this point"
+        for c, run in zip(comps, runs))
+    if ranks:
+        res.message = (f"not applicable: {', '.join(ranks)}: ranks are decided by exact arithmetic (methods exact, "
+                       f"rational, modular); balls cannot. The residuals are enclosed: {res.certificate} | {log}")
+        return done("undecided")
+    return done("numeric")
+
+
+#: in a worker, a symbolic attempt runs in its own forked child from this n on, or when the cost model
+#: predicts at least ISOLATE_SECONDS: a heavy attempt must not leave the long-lived worker bloated
+#: (native memory that fragments and grows) or dead.  Measured in a worker-sized process (77 MiB): a
+#: fork costs 4-5 ms CPU (10 ms wall); the runs below both thresholds take milliseconds to a few
+#: tenths of a second and stay in the worker
+ISOLATE_MIN_N = 6
+ISOLATE_SECONDS = 0.5
+
+
+def isolates(claim: Claim, n: int, r: int, in_worker: bool = False) -> bool:
+    """Whether the symbolic attempt at (n, r) runs in its own forked child.  Outside a worker: from
+    n = 4 on (n = 5 while lending points to the mutation analysis, :class:`PointLoan`, whose thousands
+    of small runs at n <= 4 would spend more time forking than computing), for the hard time limit.
+    In a worker (the worker is killable, but must survive a heavy attempt): from n = ISOLATE_MIN_N on,
+    or when the cost model predicts at least ISOLATE_SECONDS."""
+    if not hasattr(os, "fork"):
+        return False
+    if not in_worker:
+        return n > (4 if _LOAN is not None else 3)
+    if n >= ISOLATE_MIN_N:
+        return True
+    try:
+        return costmodel.predict("exact", claim, n, r) >= ISOLATE_SECONDS
+    except (ValueError, SizeError):
+        return False
+
+
+def run_exact_isolated(claim: Claim, n: int, r: int, seed: int, func: Callable | None = None,
+                       time_budget: float = EXACT_TIME_LIMIT, in_worker: bool = False) -> Result:
+    """run_exact in a forked child (see :func:`isolates`) that is killed when it exceeds its budget
+    (no hang, ever); the child inherits the memory budget (RLIMIT_AS) of the process it is forked
+    from, a worker's is the run's.  A child that runs out of memory or dies gives ``inconclusive``
+    with how it ended (``auto`` then goes on with the modular method), the parent is untouched.
+    In-process, the budget is the deadline of :func:`time_limit`."""
+    if _LOAN is not None and _LOAN.exact_seconds is not None:
+        time_budget = min(time_budget, _LOAN.exact_seconds)
+    if not isolates(claim, n, r, in_worker):
+        return run_exact(claim, n, r, seed, func, time_budget)
+    from stiefelsym.run.isolate import ChildDied, HardTimeout, run_isolated
+    import sympy.polys.matrices  # noqa: F401 (imported once here, not in every child)
+    t0 = time.perf_counter()
+    res = _base_result(claim, n, r, "exact", None)
+    res.verdict = "inconclusive"
+    try:
+        return run_isolated(lambda: run_exact(claim, n, r, seed, func, time_budget),
+                            1.1 * time_budget + 1, _describe)
+    except HardTimeout:
+        res.message = f"symbolic computation exceeded its budget of {time_budget:.0f} s (stopped)"
+    except ChildDied as exc:
+        res.message = f"the symbolic attempt ended without a verdict: {exc}"
+    res.seconds = time.perf_counter() - t0
+    return res
+
+
+def _describe(exc: BaseException) -> str:
+    import traceback
+    frames = [f for f in traceback.extract_tb(exc.__traceback__) if "/stiefelsym/" not in f.filename]
+    where = f" (at {frames[-1].filename}:{frames[-1].lineno})" if frames else ""
+    return f"{type(exc).__name__}: {exc}{where}"
+
+
+METHOD_RUNNERS = {
+    "exact": lambda c, n, r, seed, func=None, options=None: run_exact_isolated(c, n, r, seed, func),
+    "rational": lambda c, n, r, seed, func=None, options=None: run_points(c, n, r, "rational", seed, func,
+                                                                          options=options),
+    "modular": lambda c, n, r, seed, func=None, options=None: run_points(c, n, r, "modular", seed, func,
+                                                                         options=options),
+    "float": lambda c, n, r, seed, func=None, options=None: run_float(c, n, r, seed, func, options),
+    "ball": lambda c, n, r, seed, func=None, options=None: run_ball(c, n, r, seed, func, options),
+}

@@ -1,0 +1,1 @@
+"""Renderers: results to terminal, Markdown, LaTeX, tables and notebook displays."""

@@ -1,0 +1,171 @@
+"""Rich displays for Jupyter: results, lists of results and claims as Markdown and LaTeX (the
+``_repr_markdown_`` and ``_repr_latex_`` of :class:`~stiefelsym.results.Result`,
+:class:`~stiefelsym.results.ResultList` and :class:`~stiefelsym.claims.Claim`), built from the
+report's own renderers (:mod:`stiefelsym.reports.report`), and the witness residual as a sympy object."""
+from __future__ import annotations
+
+import re
+from typing import Any, Sequence
+
+from stiefelsym.latex import tex_escape
+from stiefelsym.results import Result
+
+
+class _Report:
+    """The report's module, imported at the first display (so that importing stiefelsym stays quick)."""
+
+    def __getattr__(self, name: str) -> Any:
+        from stiefelsym.reports import report
+        return getattr(report, name)
+
+
+R = _Report()
+
+
+def _tex_text(text: Any) -> str:
+    """Text inside math mode (MathJax, KaTeX and LaTeX alike): ``\\text{...}``."""
+    return r"\text{" + tex_escape(" ".join(str(text).split())) + "}"
+
+
+# --------------------------------------------------------------------------- results
+
+def _md_witness(r: Result) -> list[str]:
+    lines = []
+    reason = r.reason(None)
+    if reason:
+        lines += ["", f"{'Witness' if r.verdict == 'fails' else 'Reason'}: {R._md_cell(reason)}"]
+    if r.verdict == "fails":
+        lines += [f"- {R._md_cell(k)}: {R._md_code(v)}" for k, v in R.witness_lines(r.witness)
+                  if k not in ("entry", "value")]
+    if r.rerun and (r.verdict in ("fails", "error", "inconclusive") or not r.expected):
+        lines += ["", f"Rerun: {R._md_code(r.rerun)}"]
+    return lines
+
+
+def result_markdown(r: Result) -> str:
+    head = f"**{R._md_cell(R.case_name(r))}** {R._md_cell(R.labels(r.paper))}: {R._md_cell(r.title)}"
+    return "\n".join([head, ""] + R._md_results([r]) + _md_witness(r)).rstrip() + "\n"
+
+
+def results_markdown(results: Sequence[Result]) -> str:
+    if not results:
+        return "*no results*\n"
+    out = ["```", R.render_summary(results).rstrip(), "```", ""]
+    for c in R.group_by_claim(results):
+        rs = list(c.printed) + [r for v in c.variants.values() for r in v]
+        first = rs[0]
+        out += [f"**{R._md_cell(first.claim)}** {R._md_cell(R.labels(first.paper))}: {R._md_cell(first.title)}",
+                ""] + R._md_results(rs)
+        for r in rs:
+            if r.verdict == "fails" or not r.expected:
+                out += [f"*{R._md_cell(R.case_name(r))}*"] + _md_witness(r) + [""]
+    return "\n".join(out).rstrip() + "\n"
+
+
+def _tex_rows(results: Sequence[Result]) -> list[str]:
+    rows = []
+    for r in results:
+        cells = [_tex_text(r.claim), _tex_text(r.size), _tex_text(r.method), _tex_text(r.verdict)
+                 + ("" if r.expected else r"\ \textbf{unexpected}"), _tex_text(R.format_seconds(r.seconds)),
+                 _tex_text(r.reason(80) or R.short(r.certificate, 80) or "--")]
+        rows.append(" & ".join(cells) + r" \\")
+    return rows
+
+
+def results_latex(results: Sequence[Result]) -> str:
+    head = " & ".join(_tex_text(h) for h in ("claim", "size (n,r)", "method", "verdict", "time", "witness / certificate"))
+    return ("$$\\begin{array}{llllrl}\n" + head + r" \\ \hline" + "\n" + "\n".join(_tex_rows(results))
+            + "\n\\end{array}$$")
+
+
+# --------------------------------------------------------------------------- claims
+
+def claim_markdown(c: Any) -> str:
+    out = [f"**{R._md_cell(c.id)}** {R._md_cell(R.labels(c.paper))} · {c.kind} · §{R._md_cell(c.section or '-')}",
+           "", R._md_cell(c.title)]
+    statement = R._md_statement(c.statement)
+    if statement:
+        out += ["", statement]
+    out += ["", f"Sizes: {R._md_cell(c.sizes.describe())}; expected: {c.expect}"]
+    if c.erratum:
+        out += ["", f"Erratum: {R._md_cell(c.erratum)}"]
+    return "\n".join(out) + "\n"
+
+
+def claim_latex(c: Any) -> str:
+    head = _tex_text(f"{c.id} {R.labels(c.paper)}: {c.title}")
+    statement = c.statement.strip()
+    if statement and R.math_ok(statement) and "\\begin" not in statement:
+        return f"$$\\begin{{gathered}}{head} \\\\ {R._md_math(statement)}\\end{{gathered}}$$"
+    return f"$${head}$$"
+
+
+# --------------------------------------------------------------------------- sympy
+
+_NAME = re.compile(r"\b[A-Za-z][A-Za-z0-9]*_\d+,\d+\b|\b[A-Za-z_][A-Za-z0-9_]*\b")
+_MOD = re.compile(r"^\s*(-?\d+)\s*\(mod\s+(\d+)\)\s*$")
+
+
+def _sympy_text(text: str) -> Any:
+    """An engine's residual or value text as sympy: chart coordinates such as ``Z_2,1`` become
+    symbols of that name, ``v (mod p)`` the residue v (an Integer)."""
+    import sympy
+    m = _MOD.match(text)
+    if m:
+        return sympy.Integer(int(m.group(1)) % int(m.group(2)))
+    names: dict[str, Any] = {}
+    keys: dict[str, str] = {}
+
+    def name(mt: re.Match) -> str:
+        word = mt.group(0)
+        if word not in keys:              # every name a symbol of that name (lambda included)
+            keys[word] = f"_s{len(keys)}"
+            names[keys[word]] = sympy.Symbol(word)
+        return keys[word]
+    code = _NAME.sub(name, text)
+    return sympy.parse_expr(code, local_dict=names, evaluate=True)
+
+
+def residual_sympy(r: Result) -> Any:
+    """The witness residual of a failing result as a sympy expression: the residual entry as a
+    function of the chart's coordinates when the result holds it in full (the exact method), else
+    its value at the witness point (a Rational; for the modular method the residue modulo
+    ``witness['prime']``; for floating point the Float)."""
+    if r.residual and not r.residual.endswith("...") and " = " in r.residual:
+        text = r.residual.rpartition(" = ")[2]
+        try:
+            return _sympy_text(text)
+        except (SyntaxError, TypeError, ValueError):
+            pass
+    w = r.witness or {}
+    if w.get("value") is not None:
+        return _sympy_text(str(w["value"]))
+    raise ValueError(f"{R.case_name(r)}: {r.verdict}, no residual witness to convert")
+
+
+def _install() -> None:
+    """The displays and conveniences of results, result lists and claims (this module renders with
+    the report's code, which the results and claims modules sit below)."""
+    from stiefelsym.claims import Claim
+    from stiefelsym.results import ResultList
+
+    def summary(self: ResultList) -> str:
+        """The summary table ``stiefelsym verify`` prints."""
+        return R.render_summary(self)
+
+    def result_residual_sympy(self: Result) -> Any:
+        """The witness residual of a failure as a sympy expression (see :func:`residual_sympy`);
+        ValueError when there is none."""
+        return residual_sympy(self)
+
+    Result.residual_sympy = result_residual_sympy                  # type: ignore[attr-defined]
+    Result._repr_markdown_ = result_markdown                       # type: ignore[attr-defined]
+    Result._repr_latex_ = lambda self: results_latex([self])       # type: ignore[attr-defined]
+    ResultList.summary = summary                                   # type: ignore[attr-defined]
+    ResultList._repr_markdown_ = results_markdown                  # type: ignore[attr-defined]
+    ResultList._repr_latex_ = results_latex                        # type: ignore[attr-defined]
+    Claim._repr_markdown_ = claim_markdown                         # type: ignore[attr-defined]
+    Claim._repr_latex_ = claim_latex                               # type: ignore[attr-defined]
+
+
+_install()

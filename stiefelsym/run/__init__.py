@@ -1,0 +1,1 @@
+"""Running verifications: the plan, the worker pool, budgets, the confined interpreter, the cost model."""

@@ -1,0 +1,297 @@
+"""What a results file may claim: every verdict bound to the graph it is about.
+
+A record of ``results.json`` names the digest of the claim's graph (at its size, or
+with symbolic sizes).  :func:`certificate_problems` refuses a dimension-free
+``proved`` without a certificate, or with one the independent checker rejects;
+:func:`check_results` re-traces every record's claim, compares the digests, and
+re-derives every dimension-free certificate, so that a hand-edited file (a forged
+verdict, a certificate moved to another claim, a correction's change in the paper's
+notation that is not its graph's) is caught.
+"""
+from __future__ import annotations
+
+import json
+from typing import Any, Callable, Iterable
+
+from stiefelsym.certificate_check import check_certificate
+from stiefelsym.claims import Registry, Size
+
+
+def proof_for_every_size(get: Callable[[str], Any]) -> bool:
+    """Whether a record states a proof for every n, r at once: a ``proved`` of the dimension-free method,
+    or any ``proved`` with no size (whatever method the record names: ``auto`` reports the method it
+    chose, and a record's method is not evidence)."""
+    return get("verdict") == "proved" and (get("method") == "free" or get("n") is None or get("r") is None)
+
+
+def certificate_problems(records: Iterable[Any]) -> list[str]:
+    """Every proof for all n, r (:func:`proof_for_every_size`) whose certificate is missing or rejected
+    by the checker."""
+    out = []
+    for r in records:
+        get = r.get if isinstance(r, dict) else (lambda k, r=r: getattr(r, k, None))
+        if not proof_for_every_size(get):
+            continue
+        data = get("certificate_data")
+        if data is None:
+            out.append(f"{get('claim')}: a proof for every n, r without a certificate")
+            continue
+        rep = check_certificate(data)
+        if not rep.accepted:
+            out.append(f"{get('claim')}: certificate rejected by the independent checker: {rep.message}")
+    return out
+
+
+def _canonical(x: Any) -> str:
+    return json.dumps(x, sort_keys=True, separators=(",", ":"))
+
+
+def certificate_binding_problems(records: Iterable[Any], registry: Registry) -> list[str]:
+    """Every proof for all n, r (:func:`proof_for_every_size`) whose certificate is not the one its claim's graph
+    gives: the dimension-free method run again on the registered claim (or its correction) must prove it with
+    the same certificate.  The checker accepts any certificate that expands to its own residual, so a certificate
+    moved from another claim (or another correction) is accepted by it and caught only here, as `check` does."""
+    from stiefelsym.run.runner import run_free_guarded
+    out: list[str] = []
+    done: dict[tuple, Any] = {}
+    for r in records:
+        get = r.get if isinstance(r, dict) else (lambda k, r=r: getattr(r, k, None))
+        if not proof_for_every_size(get):
+            continue
+        cid, variant = get("claim"), get("variant")
+        if cid not in registry:
+            continue                    # refused with its own reason by the caller
+        claim, func = registry.get(cid), None
+        if variant:
+            k = next((k for k, c in enumerate(claim.corrections) if c.description == variant), None)
+            if k is None:
+                out.append(f"{cid}: the claim has no correction {variant!r}")
+                continue
+            func, claim = claim.corrections[k].func, claim.corrected(k)
+        key = (cid, variant)
+        if key not in done:
+            done[key] = run_free_guarded(claim, func)
+        again = done[key]
+        if again.verdict != "proved" or _canonical(again.certificate_data) != _canonical(get("certificate_data")):
+            out.append(f"{cid}{f' ({variant})' if variant else ''}: the certificate is not the one the claim's graph "
+                       f"gives (the dimension-free method again: {again.verdict})")
+    return out
+
+
+#: the fields of a decided record that a run again must reproduce exactly (its evidence); timings,
+#: messages and the rerun line are left out
+EVIDENCE = ("expected", "seed", "reductions", "certificate", "residual", "false_pass_bound", "checks", "witness",
+            "erratum", "certificate_data", "derivation")
+
+
+#: the fields of a record that state what the claim is (its labels and words): a run copies them from
+#: the registered claim, and a record must carry them unchanged
+CLAIM_FIELDS = ("paper", "section", "kind", "title", "statement")
+
+
+def claim_field_edits(record: dict, claim: Any) -> list[str]:
+    """The fields of ``CLAIM_FIELDS`` in which a record differs from its registered claim (a record whose
+    statement or labels were edited names another claim than the one whose graph was verified)."""
+    own = {"paper": list(claim.paper), "section": claim.section, "kind": claim.kind, "title": claim.title,
+           "statement": claim.statement}
+    return [k for k in CLAIM_FIELDS if _canonical(record.get(k)) != _canonical(own[k])]
+
+
+def _evidence_edits(record: dict, again: dict) -> list[str]:
+    """The evidence fields of a decided record that differ from a run again (none for a verdict that
+    depends on time: inconclusive, error)."""
+    if record.get("verdict") not in ("proved", "checked", "numeric", "fails", "undecided"):
+        return []
+    return [k for k in EVIDENCE if _canonical(record.get(k)) != _canonical(again.get(k))]
+
+
+#: the verdicts the dimension-free method gives (a record with no size is its record)
+FREE_VERDICTS = ("proved", "undecided", "error", "inconclusive")
+
+
+def size_method_problems(r: dict) -> list[str]:
+    """A record whose size and method do not fit: a record with no size is the dimension-free method's, with
+    one of its verdicts (no fixed-size method runs without a size, and `free` never says `checked` or
+    `numeric`); a record with a size is a fixed-size method's."""
+    n, method, verdict = r.get("n"), r.get("method"), r.get("verdict")
+    if n is None and method != "free":
+        return [f"a {method!r} record with no size (only the dimension-free method runs for every n, r)"]
+    if n is None and verdict not in FREE_VERDICTS:
+        return [f"the verdict {verdict!r} for every n, r (the dimension-free method says one of "
+                f"{', '.join(FREE_VERDICTS)})"]
+    if n is not None and method == "free":
+        return ["a dimension-free record with a size"]
+    return []
+
+
+#: the largest --max-n of a results file that `stiefelsym check` lists the planned runs of (every size up to
+#: it is asked of each claim's statement)
+MAX_N_CHECKED = 256
+
+
+def planned_runs(claim: Any, meta: dict) -> set[tuple[tuple[int, int] | None, str]]:
+    """The runs (size or None for the dimension-free run, method) of the printed claim that the command
+    a results file records planned (its methods, and --max-n or --size, or the claim's own sizes): what
+    :func:`stiefelsym.run.runner.plan` makes of them for this claim; ``auto`` stands for the method it chose."""
+    from stiefelsym.run.runner import _sizes_for, engine_methods
+    methods = list(meta.get("methods") or ["auto"])
+    max_n, listed = meta.get("max_n"), meta.get("sizes")
+    sizes: list[Size] | None = None
+    if max_n is not None:
+        sizes = [Size(n, r) for n in range(1, int(max_n) + 1) for r in range(1, n + 1)]
+    elif listed:
+        sizes = [Size(*(int(x) for x in str(t).split(","))) for t in listed]
+    out: set[tuple[tuple[int, int] | None, str]] = set()
+    for m in engine_methods(methods, max_n):
+        if m == "free" or (m == "auto" and sizes is None):
+            out.add((None, "free"))
+        if m == "free" or (m in ("float", "ball") and claim.kind == "dim"):
+            continue
+        for sz in _sizes_for(claim, sizes):
+            out.add(((sz.n, sz.r), m))
+    return out
+
+
+def missing_runs(records: list[dict], registry: Registry, meta: dict) -> list[str]:
+    """The runs a results file's command planned for a claim it has records of, and that it has no record
+    of: a file is the whole run of its command, so a record left out (a failing size, a method that
+    refuted the claim) is caught like an edited one."""
+    have: dict[str, set] = {}
+    for r in records:
+        if r.get("variant"):
+            continue
+        n = r.get("n")
+        have.setdefault(r.get("claim"), set()).add((None if n is None else (n, r.get("r")), r.get("method")))
+    out = []
+    for cid, cells in have.items():
+        if cid not in registry:
+            continue                    # refused below, record by record
+        sizes_with_a_record = {size for size, m in cells if size is not None}
+        try:
+            planned = planned_runs(registry.get(cid), meta)
+        except Exception as exc:    # noqa: BLE001 - the claim's statement cannot say which sizes were planned
+            out.append(f"{cid}: the runs its command planned cannot be listed ({type(exc).__name__}: {exc})")
+            continue
+        for size, m in sorted(planned, key=lambda x: (x[0] or (0, 0), x[1])):
+            found = size in sizes_with_a_record if m == "auto" else (size, m) in cells
+            if not found:
+                where = "all n, r" if size is None else f"({size[0]},{size[1]})"
+                out.append(f"{cid} {where} {m}: no record of a run its command planned ({meta.get('command')!r})")
+    return out
+
+
+def check_results(records: list[dict], registry: Registry, echo: Callable[[str], None] = print,
+                  rerun: bool = True, hard: str | None = None, meta: dict | None = None) -> int:
+    """Re-trace and re-check every record; the number of records that do not hold up.  With
+    ``rerun`` every fixed-size record is also run again (its method, size and seed) and its verdict
+    compared: a hand-edited verdict is caught even where the digest is the claim's.  With the file's
+    ``meta`` (its command's methods and sizes), every run the command planned for a claim the file
+    has records of must have its record (:func:`missing_runs`)."""
+    from stiefelsym.results import record_problems
+    from stiefelsym.run.runner import graph_digest, run_free_guarded, run_one
+    bad = 0
+    total = len(records)
+    well_formed = []
+    for i, r in enumerate(records):
+        problems = record_problems(r) or size_method_problems(r)
+        if problems:
+            echo(f"REJECTED record {i + 1}: malformed: {'; '.join(problems)}")
+            bad += 1
+        else:
+            well_formed.append(r)
+    records = well_formed
+    for p in certificate_problems(records):
+        echo(f"REJECTED {p}")
+        bad += 1
+    if meta is not None:
+        for p in missing_runs(records, registry, meta):
+            echo(f"REJECTED {p}")
+            bad += 1
+    free_done: dict[str, Any] = {}
+    for r in records:
+        cid, n, rr = r.get("claim"), r.get("n"), r.get("r")
+        where = f"{cid} {'all n, r' if n is None else f'({n},{rr})'} {r.get('method')}"
+        if cid not in registry:
+            echo(f"REJECTED {where}: no such claim in the catalog or the claims files")
+            bad += 1
+            continue
+        claim = registry.get(cid)
+        edits = claim_field_edits(r, claim)
+        if edits:
+            echo(f"REJECTED {where}: the record's {', '.join(edits)} {'is' if len(edits) == 1 else 'are'} not "
+                 "the claim's (the words of a record are its claim's, not the file's)")
+            bad += 1
+            continue
+        size = None if n is None else Size(n, rr)
+        func = None
+        if r.get("variant"):
+            k = next((k for k, c in enumerate(claim.corrections) if c.description == r["variant"]), None)
+            if k is None:
+                echo(f"REJECTED {where}: the claim has no correction {r['variant']!r}")
+                bad += 1
+                continue
+            func, claim = claim.corrections[k].func, claim.corrected(k)
+        digest = graph_digest(claim, size, func)
+        if not digest and r.get("verdict") not in ("error", "undecided", "inconclusive"):
+            echo(f"REJECTED {where}: a verdict {r.get('verdict')!r} for a claim that does not trace at this size")
+            bad += 1
+            continue
+        if (r.get("digest") or "") != digest:
+            echo(f"REJECTED {where}: the record's graph digest {str(r.get('digest'))[:12] or '(none)'} is not the "
+                 f"claim's ({digest[:12] or 'it does not trace'})")
+            bad += 1
+            continue
+        if r.get("change") and func is not None:
+            from stiefelsym.run.runner import graph_change
+            if _canonical(graph_change(claim, func, size)) != _canonical(r.get("change")):
+                echo(f"REJECTED {where}: the record's change in the paper's notation is not what the graphs of "
+                     "the claim and its correction give")
+                bad += 1
+                continue
+        if rerun and r.get("method") != "free":
+            again_fixed = run_one(claim, size, r.get("method"), r.get("seed") or 0, func, hard=hard)
+            if again_fixed.verdict != r.get("verdict"):
+                echo(f"REJECTED {where}: the record says {r.get('verdict')!r}, a run again says "
+                     f"{again_fixed.verdict!r}")
+                bad += 1
+                continue
+            small = (r.get("witness") or {}).get("small") if isinstance(r.get("witness"), dict) else None
+            record = dict(r, witness={k: v for k, v in r["witness"].items() if k != "small"}) if small else r
+            edited = _evidence_edits(record, again_fixed.to_json())
+            if small is not None and not edited:
+                from stiefelsym.methods.witness import encoded, small_witness
+                from stiefelsym.methods.witness_scripts import count_values, template_check
+                if small.get("kind") == "count":     # a number of the checks, which were compared above
+                    values = next((count_values(ch.get("detail") or "") for ch in r.get("checks") or []
+                                   if ch.get("name") == small.get("check")), None)
+                    ok = values == (small.get("value"), small.get("paper"))
+                else:
+                    found = small_witness(claim, n, rr, func, check=template_check(cid))
+                    ok = found is not None and _canonical(encoded(found)) == _canonical(small)
+                if not ok:
+                    edited = ["witness (the small witness)"]
+            if edited:
+                echo(f"REJECTED {where}: its evidence is not what a run again gives ({', '.join(edited)})")
+                bad += 1
+                continue
+        if r.get("method") == "free" and r.get("verdict") != "proved":
+            key = (cid, r.get("variant"))
+            again = free_done.get(key)
+            if again is None:
+                again = free_done[key] = run_free_guarded(claim, func)
+            if again.verdict != r.get("verdict"):
+                echo(f"REJECTED {where}: the record says {r.get('verdict')!r}, the dimension-free method again "
+                     f"says {again.verdict!r}")
+                bad += 1
+                continue
+        if r.get("method") == "free" and r.get("verdict") == "proved":
+            key = (cid, r.get("variant"))
+            again = free_done.get(key)
+            if again is None:
+                again = free_done[key] = run_free_guarded(claim, func)
+            if again.verdict != "proved" or _canonical(again.certificate_data) != _canonical(r.get("certificate_data")):
+                echo(f"REJECTED {where}: the certificate is not the one the claim's graph gives "
+                     f"(re-derived: {again.verdict})")
+                bad += 1
+    echo(f"{total} records checked, {bad} rejected")
+    return bad

@@ -1,0 +1,118 @@
+"""Run a computation in a forked child with a hard time limit.
+
+Symbolic expansion inside symengine's C++ code cannot be interrupted by a
+signal handler; a child process can always be killed.  Where fork is not
+available the computation runs in-process (with the signal-based limit only).
+"""
+from __future__ import annotations
+
+import gc
+import os
+import pickle
+import select
+import signal
+import time
+from typing import Any, Callable
+
+
+class HardTimeout(Exception):
+    """The child exceeded its time limit and was killed."""
+
+
+class ChildError(Exception):
+    """The computation raised in the child; the message says what and where."""
+
+
+class ChildDied(ChildError):
+    """The child ended without a result: it ran out of memory (MemoryError, or a native allocation
+    that failed and aborted) or was killed; the message says how it ended."""
+
+
+def run_isolated(fn: Callable[[], Any], seconds: float, describe: Callable[[BaseException], str]) -> Any:
+    """fn() in a forked child, killed after ``seconds``; its exceptions come back as ChildError."""
+    if not hasattr(os, "fork"):
+        return fn()
+    from stiefelsym.run.pool import _death_signal_setup
+    prctl = _death_signal_setup()
+    parent = os.getpid()
+    rfd, wfd = os.pipe()
+    gc.freeze()    # keep the parent's objects out of the child's collections (fewer copied pages)
+    pid = os.fork()
+    if pid == 0:   # the child: compute, send, exit without running the parent's cleanup
+        os.close(rfd)
+        try:
+            if prctl:
+                prctl(1, signal.SIGKILL)     # PR_SET_PDEATHSIG: die with the parent, never outlive it
+                if os.getppid() != parent:
+                    os._exit(0)
+            try:
+                payload = pickle.dumps(("ok", fn()))
+            except MemoryError as exc:
+                payload = pickle.dumps(("memory", describe(exc)))
+            except BaseException as exc:  # noqa: BLE001 - everything goes back to the parent
+                payload = pickle.dumps(("error", describe(exc)))
+            with os.fdopen(wfd, "wb") as out:
+                out.write(payload)
+        finally:
+            os._exit(0)
+    os.close(wfd)
+    gc.unfreeze()
+    data = read_pipe(rfd, seconds, lambda: _kill(pid))
+    if data is None:
+        raise HardTimeout()
+    _, status = os.waitpid(pid, 0)
+    if not data:
+        raise ChildDied(f"the child process died ({how_it_ended(status)})")
+    kind, value = pickle.loads(data)
+    if kind == "memory":
+        raise ChildDied(f"the child process ran out of memory ({value})")
+    if kind == "error":
+        raise ChildError(value)
+    return value
+
+
+def how_it_ended(status: int) -> str:
+    """A wait status in words: the signal that killed the process, or its exit status."""
+    if os.WIFSIGNALED(status):
+        from stiefelsym.run.pool import signal_name
+        sig = os.WTERMSIG(status)
+        hint = ("; a native library aborted, as flint does when an allocation fails under the memory budget"
+                if sig == signal.SIGABRT else "")
+        return f"killed by {signal_name(sig)}{hint}"
+    if os.WIFEXITED(status):
+        return f"exit status {os.WEXITSTATUS(status)}"
+    return f"wait status {status}"
+
+
+def read_pipe(rfd: int, seconds: float, on_fail: Callable[[], None]) -> bytes | None:
+    """Everything a child writes to ``rfd`` until it closes it, or None once ``seconds`` have passed;
+    ``rfd`` is closed, and ``on_fail()`` (which kills the child) is called on a timeout or when the
+    wait is interrupted."""
+    chunks: list[bytes] = []
+    deadline = time.monotonic() + seconds
+    try:
+        while True:
+            left = deadline - time.monotonic()
+            if left <= 0:
+                on_fail()
+                return None
+            ready, _, _ = select.select([rfd], [], [], left)
+            if ready:
+                chunk = os.read(rfd, 1 << 16)
+                if not chunk:
+                    break
+                chunks.append(chunk)
+    except BaseException:
+        on_fail()
+        raise
+    finally:
+        os.close(rfd)
+    return b"".join(chunks)
+
+
+def _kill(pid: int) -> None:
+    try:
+        os.kill(pid, signal.SIGKILL)
+        os.waitpid(pid, 0)
+    except (ProcessLookupError, ChildProcessError):
+        pass

@@ -1,0 +1,481 @@
+"""Plans and runs verifications: claims x sizes x methods -> Result records.
+
+Every (claim, size, method) of a plan runs in a forked worker process with a
+wall-time budget and a memory budget (:mod:`stiefelsym.run.pool`); ``auto`` (exact,
+then modular) is budgeted as a whole.  A run that exceeds its time is
+``inconclusive``; one that crashes, raises anything (``SystemExit`` included),
+exhausts its memory or kills its process is an ``error``, and the plan goes on.
+Whether a verdict is the expected one is decided here, in the parent process,
+never by the code that ran the claim.
+"""
+from __future__ import annotations
+
+import functools
+import hashlib
+import shlex
+from typing import Callable, Iterable, Sequence
+
+from stiefelsym.claims import Claim, Registry, Size
+from stiefelsym.methods.hard import hard_case
+from stiefelsym.methods.fixed_size import METHOD_RUNNERS, BudgetError, check_budget, expected_verdict  # noqa: F401 (BudgetError is part of the runner API)
+from stiefelsym.run.pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT, GIB, Outcome, Terminated, WorkerPool  # noqa: F401
+from stiefelsym.results import PASSING, VERDICTS, Result
+from stiefelsym.scene import SizeError
+
+METHODS = ("auto", "exact", "rational", "modular", "float", "ball", "free")
+#: the verdicts that are never expected: the method could not decide, or the check broke
+NEVER_EXPECTED = ("inconclusive", "error")
+
+Task = tuple  # (claim index, n or None, r or None, method, correction index or -1)
+
+
+def select(registry: Registry, ids: Iterable[str]) -> list[Claim]:
+    """The claims named by ids (all claims when ids is empty)."""
+    ids = list(ids)
+    if not ids:
+        return list(registry)
+    return [registry.get(i) for i in ids]
+
+
+def _sizes_for(claim: Claim, sizes: list[Size] | None) -> list[Size]:
+    if sizes is None:
+        return list(claim.sizes)
+    return [s for s in sizes if claim.sizes.admits(s.n, s.r)]
+
+
+def _spec_text(claim: Claim) -> str:
+    describe = getattr(claim.sizes, "describe", None)
+    return describe() if describe is not None else "its declared sizes"
+
+
+def engine_methods(methods: Sequence[str], max_n: int | None) -> tuple[str, ...]:
+    """The methods to plan: with --max-n, auto keeps its dimension-free run (which a plan with
+    explicit sizes leaves out), in the same place as in a plan of the claims' own sizes."""
+    if max_n is None:
+        return tuple(methods)
+    out: list[str] = []
+    for m in methods:
+        if m == "auto" and "free" not in methods:
+            out.append("free")
+        out.append(m)
+    return tuple(out)
+
+
+def plan(claims: list[Claim], sizes: list[Size] | None, methods: Iterable[str],
+         strict: bool = False) -> list[tuple[Claim, Size | None, str]]:
+    """Every (claim, size, method) to run; size None is a dimension-free run.
+
+    With ``strict`` (the claims were named explicitly) a size outside a claim's
+    declared sizes is refused; otherwise such a claim skips that size, and a size
+    that no claim admits is refused."""
+    methods = list(methods)
+    for m in methods:
+        if m not in METHODS:
+            raise ValueError(f"unknown method {m!r} (one of {', '.join(METHODS)})")
+    if sizes is not None:
+        for s in sizes:
+            for m in methods:
+                if m != "free":
+                    check_budget(m, s.n, s.r)
+        if any(m != "free" for m in methods):
+            if strict:
+                for c in claims:
+                    for s in sizes:
+                        if not c.sizes.admits(s.n, s.r):
+                            raise SizeError(f"claim {c.id} is stated for sizes {_spec_text(c)}; "
+                                            f"({s.n},{s.r}) is outside")
+            for s in sizes:
+                if not any(c.sizes.admits(s.n, s.r) for c in claims):
+                    raise SizeError(f"no selected claim is stated for size ({s.n},{s.r})")
+    runs: list[tuple[Claim, Size | None, str]] = []
+    for c in claims:
+        for m in methods:
+            if m == "free" or (m == "auto" and sizes is None):
+                runs.append((c, None, "free"))
+            if m == "free" or (m in ("float", "ball") and c.kind == "dim"):
+                continue   # dimensions are integers: floating point has nothing to say about them
+            for s in _sizes_for(c, sizes):
+                runs.append((c, s, m))
+    seen, out = set(), []
+    for c, s, m in runs:
+        key = (c.id, None if s is None else (s.n, s.r), m)
+        if key not in seen:
+            seen.add(key)
+            out.append((c, s, m))
+    return out
+
+
+# --------------------------------------------------------------------------- one run
+
+def run_one(claim: Claim, size: Size | None, method: str, seed: int, func: Callable | None = None,
+            variant: str | None = None, hard: str | None = None) -> Result:
+    """One result for one (claim, size, method), computed in this process (no budgets but the
+    symbolic method's own); ``hard`` names a hard numerical case."""
+    return _finish(_guarded(claim, size, method, seed, func, hard), claim, variant, hard)
+
+
+def _guarded(claim: Claim, size: Size | None, method: str, seed: int, func: Callable | None,
+             hard: str | None, in_worker: bool = False, timeout: float | None = None) -> Result:
+    """The raw result (verdict policy not applied); whatever the claim raises is an ``error``.
+
+    In a worker, MemoryError is left to the pool (which reports the memory budget and
+    replaces the worker)."""
+    options = {"hard": hard_case(hard)} if hard else None
+    try:
+        # the claim is traced before any method builds its scene or runs (the graph is cached for the
+        # method): claim code never runs while a scene of a method is alive
+        graph_digest(claim, size, func)
+        res = _dispatch(claim, size, method, seed, func, options, in_worker, timeout)
+        if not res.digest:
+            res.digest = graph_digest(claim, size, func)
+        return _confinement_stated(res, func or claim.func)
+    except (KeyboardInterrupt, Terminated):
+        raise
+    except MemoryError:
+        if in_worker:
+            raise
+        res = _error(claim, size, method, seed, "MemoryError: the computation ran out of memory")
+    except BaseException as exc:  # noqa: BLE001 - a bug in the claim (or the engine), SystemExit included
+        from stiefelsym.run.isolate import ChildError
+        from stiefelsym.methods.fixed_size import _describe
+        from stiefelsym.run.userfile import TraceEnded
+        res = _error(claim, size, method, seed, str(exc) if isinstance(exc, ChildError) else _describe(exc))
+        if isinstance(exc, TraceEnded) and exc.timeout:     # out of its time budget: undecided, not a bug
+            res.verdict, res.message = "inconclusive", str(exc)
+    # an error is bound to the graph it was met on like any verdict ("" when the claim does not trace)
+    res.digest = _digest_or_none(claim, size, func)
+    return _confinement_stated(res, func or claim.func)
+
+
+def _confinement_stated(res: Result, func: Callable) -> Result:
+    """A claims file traced with less than the full confinement (stiefelsym.run.sandbox) says so in every record."""
+    note = getattr(func, "confinement_note", "") if type(func).__name__ == "TracedFunction" else ""
+    if note and note not in res.reductions:
+        res.reductions.append(note)
+    return res
+
+
+def run_free_guarded(claim: Claim, func: Callable | None = None) -> Result:
+    """The dimension-free method in this process, whatever the claim raises an ``error`` (for ``derive`` and
+    ``check``, which run it outside the pool): the raw result, its verdict policy not applied."""
+    return _guarded(claim, None, "free", 0, func, None)
+
+
+def _digest_or_none(claim: Claim, size: Size | None, func: Callable | None) -> str:
+    """:func:`graph_digest`, "" when even asking for it raises (what a run that ended in error met)."""
+    try:
+        return graph_digest(claim, size, func)
+    except (KeyboardInterrupt, Terminated):
+        raise
+    except BaseException:  # noqa: BLE001 - the error's message already says why
+        return ""
+
+
+def graph_digest(claim: Claim, size: Size | None, func: Callable | None = None) -> str:
+    """The digest of the claim's graph at ``size`` (None: symbolic sizes), "" when it does not trace
+    (traced once per process and size: a cache hit after the run).  With symbolic sizes, a claim stated at
+    families of sizes (r = 1 and r = n, ...) that traces on each family but not on every size has the
+    digest of its graphs on its families (those the dimension-free method proves it on)."""
+    from stiefelsym.ir import compile_claim
+    from stiefelsym.scene import REALIZATIONS
+    cons = REALIZATIONS[claim.realization]
+    try:
+        return compile_claim(func or claim.func, size.n if size else None, size.r if size else None,
+                             (cons.name, cons.build)).digest()
+    except Exception:   # noqa: BLE001 - the run's verdict already says why the claim does not trace
+        if size is not None:
+            return ""
+    from stiefelsym.methods.dimension_free import size_families
+    try:
+        families, _why = size_families(claim)
+    except Exception:   # noqa: BLE001 - the statement's admits() raised: the run's verdict says it
+        return ""
+    if not families or None in families:
+        return ""
+    try:
+        graphs = [(f, compile_claim(func or claim.func, None, None, (cons.name, cons.build), family=f).digest())
+                  for f in families]
+    except Exception:   # noqa: BLE001 - as above
+        return ""
+    return hashlib.sha256("\n".join(f"{f}: {d}" for f, d in graphs).encode()).hexdigest()
+
+
+def graph_change(claim: Claim, func: Callable, size: Size | None) -> list[dict[str, str]]:
+    """What ``func`` (a correction or a mutant of the claim) changes in the claim's graph, in the paper's
+    notation (:func:`stiefelsym.ir.notation.diff`): one dict per change; both graphs traced with
+    symbolic sizes when both trace so, else at ``size``.  [] when either does not trace, and one
+    empty change (where = old = "") when the graphs compute the same outputs."""
+    from stiefelsym.ir import graph_pair
+    from stiefelsym.ir.notation import diff
+    from stiefelsym.scene import REALIZATIONS
+    cons = REALIZATIONS[claim.realization]
+    try:
+        pair = graph_pair(claim.func, func, size.n if size else None, size.r if size else None,
+                          (cons.name, cons.build))
+    except Exception:   # noqa: BLE001 - what does not trace has no notation; its runs say why
+        return []
+    if pair is None:
+        return []
+    changes = diff(*pair)
+    if not changes:
+        return [{"where": "", "old": "", "new": "", "old_tex": "", "new_tex": ""}]
+    return [c.to_json() for c in changes]
+
+
+def _blank(claim: Claim, size: Size | None, method: str, seed: int | None) -> Result:
+    from stiefelsym.methods.fixed_size import _base_result
+    label = "free" if size is None else method
+    return _base_result(claim, size.n if size else None, size.r if size else None, label,
+                        None if label in ("exact", "free") else seed)
+
+
+def _error(claim: Claim, size: Size | None, method: str, seed: int, message: str) -> Result:
+    res = _blank(claim, size, method, seed)
+    res.verdict, res.message = "error", message
+    return res
+
+
+def _exact_runner(in_worker: bool, budget: float | None) -> Callable[..., Result]:
+    """The symbolic method: in a worker, a small attempt runs right there (the worker is the
+    killable process) and a heavy one in its own forked child with the run's memory budget, so
+    that the worker survives it (:func:`stiefelsym.methods.fixed_size.isolates`); elsewhere in its own
+    killable child."""
+    if not in_worker:
+        return METHOD_RUNNERS["exact"]
+    from stiefelsym.methods.fixed_size import EXACT_TIME_LIMIT, run_exact_isolated
+    limit = EXACT_TIME_LIMIT if budget is None else min(EXACT_TIME_LIMIT, budget)
+    return lambda c, n, r, seed, func=None, options=None: run_exact_isolated(c, n, r, seed, func, limit,
+                                                                             in_worker=True)
+
+
+def _dispatch(claim: Claim, size: Size | None, method: str, seed: int, func: Callable | None,
+              options: dict | None, in_worker: bool = False, timeout: float | None = None) -> Result:
+    if method == "free" or size is None:
+        from stiefelsym.methods.dimension_free import run_free
+        return run_free(claim, func)
+    if method == "auto":
+        if options:
+            return METHOD_RUNNERS["rational"](claim, size.n, size.r, seed, func, options)
+        # the whole of auto shares one budget: the symbolic attempt gets half of it
+        return _run_auto(claim, size, seed, func, _exact_runner(in_worker, None if timeout is None else timeout / 2))
+    if method == "exact":
+        if options:
+            raise ValueError("hard cases are sampled points: use --method rational, modular or float")
+        return _exact_runner(in_worker, timeout)(claim, size.n, size.r, seed, func)
+    return METHOD_RUNNERS[method](claim, size.n, size.r, seed, func, options)
+
+
+def _run_auto(claim: Claim, size: Size, seed: int, func: Callable | None,
+              exact: Callable[..., Result] | None = None) -> Result:
+    exact = exact or METHOD_RUNNERS["exact"]
+    if claim.exact_at(size.n, size.r):
+        res = exact(claim, size.n, size.r, seed, func)
+        if res.verdict != "inconclusive":
+            return res
+        reason = res.message
+        spent = res.seconds
+    else:
+        reason, spent = (f"({size.n},{size.r}) is above this claim's symbolic budget "
+                         f"({claim.exact_budget_text()})" if claim.exact_max_r else
+                         f"n = {size.n} is above this claim's symbolic budget (n <= {claim.exact_max_n})"), 0.0
+    res = METHOD_RUNNERS["modular"](claim, size.n, size.r, seed, func)
+    res.message = "; ".join(m for m in (f"exact: {reason}" if reason else "", res.message) if m)
+    res.seconds += spent
+    return res
+
+
+def expected_of(claim: Claim, method: str, verdict: str, n: int | None, r: int | None,
+                variant: str | None) -> tuple[bool, bool]:
+    """(whether the verdict is the one the catalog expects, whether the size is a documented erratum of the
+    claim): the policy of :func:`_finish`, a function of the registered claim and the run (raises what the
+    claim's fails_at raises)."""
+    erratum = variant is None and bool(claim.erratum) and claim.expects_failure(n, r)
+    if verdict == "undecided":
+        return True, erratum
+    if verdict in NEVER_EXPECTED:
+        return False, erratum
+    if method == "free":
+        return verdict == "proved" and (variant is not None or claim.expect != "fails"), erratum
+    if erratum:                       # a documented erratum: expected to fail as printed, here
+        return verdict == "fails", erratum
+    return verdict in PASSING, erratum
+
+
+def _finish(res: Result, claim: Claim, variant: str | None, hard: str | None = None) -> Result:
+    """The verdict policy: which verdicts the catalog expects.
+
+    ``undecided`` (the method does not apply here) is expected of every method;
+    ``inconclusive`` (could not be decided numerically, or a budget was hit) and
+    ``error`` never are; ``fails`` only where a documented erratum says so."""
+    res.variant = variant
+    if res.verdict == "inconclusive" and res.message.startswith("not applicable"):
+        res.verdict = "undecided"     # the method has nothing to say here, e.g. float on a pure rank claim
+    try:
+        res.expected, erratum = expected_of(claim, res.method, res.verdict, res.n, res.r, variant)
+    except (KeyboardInterrupt, Terminated):
+        raise
+    except BaseException as exc:  # noqa: BLE001 - the claim's own fails_at broke
+        from stiefelsym.methods.fixed_size import _describe
+        res.verdict = "error"
+        res.message = f"the claim's erratum sizes (fails_at) could not be evaluated: {_describe(exc)}"
+        res.expected, erratum = False, False
+    if erratum:
+        res.erratum = claim.erratum
+    res.rerun = rerun_command(res, hard)
+    return res
+
+
+# --------------------------------------------------------------------------- the plan, in workers
+
+def _execute(claims: list[Claim], seed: int, hard: str | None, timeout: float, in_worker: bool,
+             task: Task) -> Result:
+    """Run one task (in a worker, unless fork is not available): the raw result."""
+    ci, n, r, method, k = task
+    c = claims[ci]
+    func = c.corrections[k].func if k >= 0 else None
+    if k >= 0:
+        c = c.corrected(k)
+    return _guarded(c, None if n is None else Size(n, r), method, seed, func, hard, in_worker=in_worker,
+                    timeout=timeout)
+
+
+def _settle(outcome: Outcome, task: Task, claims: list[Claim], seed: int, hard: str | None) -> Result:
+    """The finished result of a task, from what the pool reported (in the parent)."""
+    ci, n, r, method, k = task
+    c = claims[ci]
+    size = None if n is None else Size(n, r)
+    variant = c.corrections[k].description if k >= 0 else None
+    res = outcome.value if outcome.kind == "ok" else None
+    if res is not None and not (isinstance(res, Result) and res.verdict in VERDICTS
+                                and res.claim == c.id and (res.n, res.r) == (n, r)):
+        res = _error(c, size, method, seed, "the run did not return a result record for this claim and size")
+    if res is None:
+        res = _blank(c, size, method, seed)
+        res.verdict = "inconclusive" if outcome.kind == "timeout" else "error"
+        res.message = outcome.message
+        res.seconds = outcome.seconds
+    if k >= 0:
+        res.change = graph_change(c, c.corrections[k].func, size)
+    return _finish(res, c, variant, hard)
+
+
+def _preload(tasks: list[Task]) -> None:
+    """Import, before forking, what the workers will need (so a fresh worker starts ready)."""
+    if any(t[1] is None for t in tasks):
+        import sympy  # noqa: F401  (the LaTeX of symbolic coefficients in every derivation)
+        from stiefelsym import free  # noqa: F401
+        from stiefelsym.methods import dimension_free as free_method  # noqa: F401
+    if any(t[3] in ("auto", "exact") for t in tasks):
+        import sympy.polys.matrices  # noqa: F401
+
+
+def verify(claims: list[Claim], *, sizes: list[Size] | None = None, methods: Iterable[str] = ("auto",),
+           seed: int = 0, on_result: Callable[[Result], None] | None = None,
+           on_plan: Callable[[int], None] | None = None, hard: str | None = None,
+           timeout: float = DEFAULT_TIMEOUT, memory: float | None = DEFAULT_MEMORY_GIB, jobs: int = 1,
+           strict_sizes: bool = False, fork: bool | None = None) -> list[Result]:
+    """Run the plan, in order, in ``jobs`` worker processes; ``timeout`` seconds and ``memory``
+    GiB (None: no limit) per run.
+
+    Then, for every (claim, method) whose printed statement fails at some size, each
+    registered correction is run at every planned size of that claim for that method:
+    a correction is verified only where it holds everywhere.  ``on_result`` sees the
+    results in that order (the plan first, then the corrections)."""
+    if jobs < 1:
+        raise ValueError("--jobs must be at least 1")
+    methods = checked_options(seed, timeout, memory, hard, methods)
+    claims = list(claims)
+    runs = plan(claims, sizes, methods, strict=strict_sizes)
+    if on_plan is not None:
+        on_plan(len(runs))
+    index = {id(c): i for i, c in enumerate(claims)}
+    tasks: list[Task] = [(index[id(c)], None if s is None else s.n, None if s is None else s.r, m, -1)
+                         for c, s, m in runs]
+    memory_bytes = None if memory is None else int(memory * GIB)
+    results: list[Result] = []
+
+    def execute(task: Task) -> Result:
+        return _execute(claims, seed, hard, timeout, pool.forking, task)
+
+    def deliver(res: Result) -> None:
+        results.append(res)
+        if on_result is not None:
+            on_result(res)
+
+    if not tasks:
+        return results
+    _preload(tasks)
+    from stiefelsym.methods.fixed_size import _describe
+    with WorkerPool(execute, workers=min(jobs, len(tasks)), timeout=timeout, memory=memory_bytes,
+                    describe=_describe, fork=fork) as pool:
+        run_with_corrections(pool.run, tasks, claims, seed, hard, deliver)
+    return results
+
+
+def checked_options(seed: int, timeout: float, memory: float | None, hard: str | None,
+                    methods: Iterable[str]) -> list[str]:
+    """The checks every way of running a plan makes of its options; the methods to run (a hard
+    case has nothing to say to the dimension-free method and refuses the symbolic one)."""
+    if seed < 0:
+        raise ValueError("the seed must be a non-negative integer")
+    if not timeout or timeout <= 0:
+        raise ValueError("the time budget must be a positive number of seconds")
+    if memory is not None and memory <= 0:
+        raise ValueError("the memory budget must be a positive number of GiB")
+    methods = list(methods)
+    if hard is not None:
+        hard_case(hard)
+        methods = [m for m in methods if m != "free"]
+        if "exact" in methods:
+            raise ValueError("hard cases are sampled points: use --method rational, modular or float")
+    return methods
+
+
+def run_with_corrections(run: Callable[[list[Task]], Iterable[tuple[int, Outcome]]], tasks: list[Task],
+                         claims: list[Claim], seed: int, hard: str | None,
+                         deliver: Callable[[Result], None]) -> None:
+    """Run the plan with ``run`` (local workers or a cluster: it yields (task index, outcome)),
+    then every registered correction of each (claim, method) that failed somewhere, at every
+    planned size of that claim and method, and of each claim the dimension-free method did not
+    prove as printed (a correction proved for all n, r)."""
+    failed: dict[tuple[int, str], None] = {}
+    corrections: list[Task] = []
+    for i, outcome in run(tasks):
+        res = _settle(outcome, tasks[i], claims, seed, hard)
+        deliver(res)
+        ci, n, _, m, _ = tasks[i]
+        if res.verdict == "fails" and n is not None and claims[ci].corrections:
+            failed.setdefault((ci, m))
+        if n is None and res.verdict != "proved":
+            corrections += [(ci, None, None, m, k) for k in range(len(claims[ci].corrections))]
+    for ci, m in failed:
+        planned = [(t[1], t[2]) for t in tasks if t[0] == ci and t[3] == m and t[1] is not None]
+        for k in range(len(claims[ci].corrections)):
+            corrections += [(ci, n, r, m, k) for n, r in planned]
+    if corrections:
+        for i, outcome in run(corrections):
+            deliver(_settle(outcome, corrections[i], claims, seed, hard))
+
+
+def rerun_command(result: Result, hard: str | None = None) -> str:
+    parts = ["stiefelsym", "verify", result.claim]
+    if result.n is not None:
+        parts += ["--size", f"{result.n},{result.r}"]
+    parts += ["--method", result.method]
+    if result.seed is not None:
+        parts += ["--seed", str(result.seed)]
+    if hard is None:
+        text = next((h for h in result.reductions if h.startswith("hard case: ")), None)
+        if text is not None:
+            from stiefelsym.methods.hard import HARD_CASES
+            hard = next((k for k, v in HARD_CASES.items() if v.description in text), None)
+    if hard:
+        parts += ["--hard", hard]
+    return _command_line(tuple(parts))
+
+
+@functools.lru_cache(maxsize=4096)
+def _command_line(parts: tuple[str, ...]) -> str:
+    """The words quoted for a shell and joined (a function of the words)."""
+    return " ".join(shlex.quote(p) for p in parts)
+

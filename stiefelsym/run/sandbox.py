@@ -1,0 +1,390 @@
+"""A fresh, confined interpreter for a user's claims file.
+
+:func:`stiefelsym.run.userfile.load_claims_isolated` never lets a claims file run in a process that knows the
+run: :func:`run` *spawns* (never forks) ``python -I -B -c BOOT`` with a neutral argv, a minimal environment
+(no ``STIEFELSYM_*``, no user variable), its standard input carrying only what the phase needs (the file's
+path, the search path of the package, the budgets, and in the second phase the sizes of the claims that
+need them), and its standard output carrying the answer.  So the process that imports the file holds no
+parsed option, no command line and no environment of the run in its memory.
+
+Where the platform allows it (Linux, util-linux ``unshare``, user namespaces), the interpreter runs in new
+user, pid, mount and network namespaces with its own ``/proc`` (the verifying process and every process
+outside are not visible: no ``/proc/<ppid>/cmdline``), and, before anything of the file is read, it makes
+every mount read-only, mounts a private tmpfs on ``/tmp`` (the claims file's own folder bound read-only
+into it when it lives there) and locks that view by entering a user namespace of its own (mounts inherited
+from a more privileged namespace cannot be made writable again, nor unmounted, from a less privileged one).
+The file then writes nowhere but its private ``/tmp`` (and the pipes it was given), reaches no network and
+no process outside, and when the namespace's first process ends the kernel ends every process in it.
+
+Where that is not available (not Linux, no ``unshare``, user namespaces disabled, ``STIEFELSYM_CONFINE=spawn``)
+the same interpreter is spawned without namespaces (:data:`SPAWN`): it still holds nothing of the run, but
+it can read ``/proc/<ppid>/cmdline`` and write with the user's rights; every record of such a file says so
+(:func:`note`).
+
+The first line the interpreter writes is its confinement, written before anything of the file runs: a
+setup that fails there falls back to the plain spawn, a file cannot ask for that fallback.
+"""
+from __future__ import annotations
+
+import ctypes
+import errno
+import json
+import os
+import select
+import shutil
+import subprocess
+import signal
+import sys
+import time
+from typing import Any
+
+#: the confinements, in the order they are tried
+NAMESPACES = "namespaces"
+SPAWN = "spawn"
+#: what a record of a claims file says about the process that traced it
+NOTES = {
+    NAMESPACES: "",
+    SPAWN: ("claims file traced in a spawned interpreter without namespaces (none available here): it could "
+            "read the verifying process's command line in /proc and write with the user's rights"),
+}
+#: $STIEFELSYM_CONFINE=spawn: no namespaces even where they are available (read by the verifying process only)
+CONFINE_ENV = "STIEFELSYM_CONFINE"
+#: the private /tmp of a confined interpreter
+TMP_OPTIONS = b"size=64m,mode=1777"
+#: where the unshare program is looked for (not the user's PATH)
+SYSTEM_PATH = "/usr/bin:/bin:/usr/sbin:/sbin"
+
+#: the interpreter's program: this module loaded from its file alone (the first line of standard input: its
+#: path and the package's search path), then host(), which confines the process before the package (numpy and
+#: its threads: a threaded process cannot enter a user namespace) is imported
+BOOT = ("import sys,json,importlib.util as u;b=json.loads(sys.stdin.buffer.readline());sys.path[:0]=b[1];"
+        "s=u.spec_from_file_location('stiefelsym_sandbox_host',b[0]);m=u.module_from_spec(s);"
+        "s.loader.exec_module(m);m.host()")
+
+_available: dict[str, bool] = {}
+
+
+class SandboxError(RuntimeError):
+    """The confined interpreter could not be set up (raised inside it, before the file is read)."""
+
+
+def note(confinement: str) -> str:
+    return NOTES.get(confinement, f"claims file traced under an unknown confinement {confinement!r}")
+
+
+# --------------------------------------------------------------------------- the verifying process
+
+def _unshare() -> str | None:
+    if not sys.platform.startswith("linux") or os.environ.get(CONFINE_ENV, "") == SPAWN:
+        return None
+    if _available.get(NAMESPACES) is False:
+        return None
+    return shutil.which("unshare", path=SYSTEM_PATH)
+
+
+def namespaces_available() -> bool:
+    """Whether a claims file would be traced in namespaces here: Linux, ``unshare`` found, not switched off
+    by $STIEFELSYM_CONFINE=spawn, and a user + pid + mount + net namespace can be made (tried once)."""
+    unshare = _unshare()
+    if unshare is None:
+        return False
+    out = subprocess.run([unshare, "--user", "--map-root-user", "--pid", "--fork", "--mount", "--mount-proc",
+                          "--net", "true"], capture_output=True, timeout=60)
+    return out.returncode == 0
+
+
+def _search_path() -> list[str]:
+    """The directory the loaded package comes from, then this process's search path (absolute)."""
+    pkg = os.path.dirname(os.path.dirname(os.path.abspath(sys.modules["stiefelsym"].__file__ or "")))
+    out = [pkg]
+    for p in sys.path:
+        if p and os.path.isabs(p) and p not in out:
+            out.append(p)
+    return out
+
+
+def _environment() -> dict[str, str]:
+    return {"PATH": SYSTEM_PATH, "LC_ALL": "C.UTF-8", "HOME": "/tmp"}
+
+
+def run(config: dict[str, Any], capture: int, seconds: float) -> tuple[bytes | None, str]:
+    """``config`` (JSON) to a fresh interpreter running :func:`host`, its answer back: (bytes, or None when it
+    died or ran out of ``seconds``; the confinement used).  What it prints goes to ``capture``.  The
+    namespaces are given up (for this process's later files too) only when the interpreter did not write its
+    confinement line, i.e. before anything of the file ran."""
+    unshare = _unshare()
+    if unshare is not None:
+        raw, status = _spawn(config, capture, seconds, unshare)
+        head = _line(NAMESPACES)
+        if raw.startswith(head):
+            _available[NAMESPACES] = True
+            return (raw[len(head):] if status == 0 else None), NAMESPACES
+        if _available.get(NAMESPACES):      # it worked before: this file's process died before its line
+            return None, NAMESPACES
+        _available[NAMESPACES] = False
+    raw, status = _spawn(config, capture, seconds, None)
+    head = _line(SPAWN)
+    return (raw[len(head):] if status == 0 and raw.startswith(head) else None), SPAWN
+
+
+def _line(confinement: str) -> bytes:
+    return json.dumps({"confined": confinement}).encode() + b"\n"
+
+
+def _spawn(config: dict[str, Any], capture: int, seconds: float, unshare: str | None) -> tuple[bytes, int | None]:
+    """Spawn the interpreter (in namespaces when ``unshare`` is given): what it wrote, and its wait status
+    (None: it ran out of time, or could not be started)."""
+    from stiefelsym.run.confine import Confined
+    argv = [sys.executable, "-I", "-B", "-c", BOOT]
+    if unshare is not None:
+        argv = [unshare, "--user", "--map-root-user", "--pid", "--fork", "--kill-child", "--mount",
+                "--mount-proc", "--net", "--propagation", "private"] + argv
+    conf = dict(config, confine=unshare is not None)
+    stdin = (json.dumps([os.path.abspath(__file__), _search_path()]) + "\n" + json.dumps(conf)).encode()
+    with Confined():
+        r0, w0 = os.pipe()
+        r1, w1 = os.pipe()
+        try:
+            pid = os.posix_spawn(argv[0], argv, _environment(), setsid=True,
+                                 file_actions=[(os.POSIX_SPAWN_DUP2, r0, 0), (os.POSIX_SPAWN_DUP2, w1, 1),
+                                               (os.POSIX_SPAWN_DUP2, capture, 2)])
+        except OSError:
+            for fd in (r0, w0, r1, w1):
+                os.close(fd)
+            return b"", None
+        os.close(r0)
+        os.close(w1)
+        try:
+            view = memoryview(stdin)
+            while view:
+                view = view[os.write(w0, view):]
+        except OSError:
+            pass
+        finally:
+            os.close(w0)
+        try:
+            chunks, status = _read_until_exit(pid, r1, seconds)
+        finally:
+            _kill_group(pid)
+    return b"".join(chunks), status
+
+
+def _read_until_exit(pid: int, rfd: int, seconds: float) -> tuple[list[bytes], int | None]:
+    """What the child ``pid`` writes to ``rfd`` until it has exited (and all it wrote is read), and its wait
+    status; None after ``seconds``.  ``rfd`` is closed."""
+    chunks: list[bytes] = []
+    deadline = time.monotonic() + seconds
+    pidfd = -1
+    if hasattr(os, "pidfd_open"):
+        try:
+            pidfd = os.pidfd_open(pid)
+        except OSError:
+            pidfd = -1
+    eof = False
+    try:
+        os.set_blocking(rfd, False)
+        while True:
+            left = deadline - time.monotonic()
+            if left <= 0:
+                return chunks, None
+            watch = ([] if eof else [rfd]) + ([pidfd] if pidfd >= 0 else [])
+            ready, _, _ = select.select(watch, [], [], left if pidfd >= 0 else min(left, 0.02))
+            if rfd in ready:
+                try:
+                    chunk = os.read(rfd, 1 << 16)
+                except BlockingIOError:
+                    chunk = None
+                if chunk:
+                    chunks.append(chunk)
+                    continue
+                eof = eof or chunk == b""
+            done, status = os.waitpid(pid, os.WNOHANG)
+            if done:
+                while True:             # what it wrote before it exited is all in the pipe
+                    chunk = _read_some(rfd)
+                    if not chunk:
+                        return chunks, status
+                    chunks.append(chunk)
+    finally:
+        os.close(rfd)
+        if pidfd >= 0:
+            os.close(pidfd)
+
+
+def _read_some(fd: int) -> bytes:
+    try:
+        return os.read(fd, 1 << 16)
+    except BlockingIOError:
+        return b""
+
+
+def _kill_group(pid: int) -> None:
+    """Kill the process group ``pid`` (the interpreter and what it started in its session) and reap ``pid``."""
+    try:
+        os.killpg(pid, signal.SIGKILL)
+    except OSError:
+        pass
+    try:
+        os.kill(pid, signal.SIGKILL)
+        os.waitpid(pid, 0)
+    except (ProcessLookupError, ChildProcessError):
+        pass
+
+
+# --------------------------------------------------------------------------- the interpreter
+
+MS_RDONLY, MS_NOSUID, MS_NODEV, MS_NOEXEC = 1, 2, 4, 8
+MS_REMOUNT, MS_NOATIME, MS_NODIRATIME, MS_BIND = 32, 1024, 2048, 4096
+MS_REC, MS_PRIVATE, MS_RELATIME, MS_STRICTATIME = 1 << 14, 1 << 18, 1 << 21, 1 << 24
+PR_CAPBSET_DROP, PR_SET_NO_NEW_PRIVS, PR_CAP_AMBIENT, PR_CAP_AMBIENT_CLEAR_ALL = 24, 38, 47, 4
+_LINUX_CAPABILITY_VERSION_3 = 0x20080522
+_FLAGS = {"nosuid": MS_NOSUID, "nodev": MS_NODEV, "noexec": MS_NOEXEC, "noatime": MS_NOATIME,
+          "nodiratime": MS_NODIRATIME, "relatime": MS_RELATIME, "strictatime": MS_STRICTATIME}
+def _libc() -> Any:
+    return ctypes.CDLL(None, use_errno=True)
+
+
+def _mount(libc: Any, source: bytes | None, target: bytes, fstype: bytes | None, flags: int,
+           data: bytes | None) -> None:
+    if libc.mount(source, target, fstype, ctypes.c_ulong(flags), data) != 0:
+        err = ctypes.get_errno()
+        raise OSError(err, f"mount {target.decode(errors='replace')}: {os.strerror(err)}")
+
+
+def _unescape(field: str) -> bytes:
+    """A path of /proc/self/mountinfo (spaces and the like as \\ooo)."""
+    out, i = bytearray(), 0
+    raw = field.encode("utf-8", "surrogateescape")
+    while i < len(raw):
+        if raw[i:i + 1] == b"\\" and raw[i + 1:i + 4].isdigit():
+            out.append(int(raw[i + 1:i + 4], 8))
+            i += 4
+        else:
+            out.append(raw[i])
+            i += 1
+    return bytes(out)
+
+
+def _mounts() -> list[tuple[bytes, int, str]]:
+    """(mount point, its per-mount flags, file system type) of every mount of this namespace."""
+    out = []
+    with open("/proc/self/mountinfo") as f:
+        for line in f:
+            left, _, right = line.partition(" - ")
+            fields = left.split()
+            if len(fields) < 6:
+                continue
+            flags = 0
+            for opt in fields[5].split(","):
+                flags |= _FLAGS.get(opt, 0)
+            out.append((_unescape(fields[4]), flags, (right.split() or ["?"])[0]))
+    return out
+
+
+def lock_down(keep: list[str]) -> None:
+    """In fresh user + mount namespaces (as root there), before any thread is started: every mount read-only,
+    without devices and set-uid programs, a private tmpfs on /tmp (``keep``, folders under /tmp, bound
+    read-only into it), then every capability dropped for good (bounding set, permitted, effective, ambient;
+    no new privileges), so that no mount can be changed again, in this namespace or in one the file creates
+    (there the mounts made here are locked).  Raises :class:`SandboxError` when any step fails."""
+    libc = _libc()
+    try:
+        _mount(libc, None, b"/", None, MS_REC | MS_PRIVATE, None)
+        for target, flags, _fstype in _mounts():
+            try:
+                _mount(libc, None, target, None, MS_REMOUNT | MS_BIND | MS_RDONLY | MS_NODEV | MS_NOSUID | flags,
+                       None)
+            except OSError as exc:
+                if not os.path.ismount(target) and exc.errno == errno.EINVAL:
+                    continue        # a mount hidden under another one (its mount point resolves to that one)
+                raise
+        held = [(folder, os.open(folder, os.O_PATH | os.O_DIRECTORY)) for folder in keep]
+        _mount(libc, b"tmpfs", b"/tmp", b"tmpfs", MS_NOSUID | MS_NODEV, TMP_OPTIONS)
+        for folder, fd in held:
+            os.makedirs(folder, exist_ok=True)
+            path = folder.encode()
+            _mount(libc, f"/proc/self/fd/{fd}".encode(), path, None, MS_BIND | MS_REC, None)
+            _mount(libc, None, path, None, MS_REMOUNT | MS_BIND | MS_RDONLY | MS_NOSUID | MS_NODEV, None)
+            os.close(fd)
+        _drop_capabilities(libc)
+        if libc.mount(None, b"/", None, ctypes.c_ulong(MS_REMOUNT | MS_BIND), None) == 0:
+            raise OSError(0, "the root could be made writable again")
+    except OSError as exc:
+        raise SandboxError(str(exc)) from None
+
+
+class _CapHeader(ctypes.Structure):
+    _fields_ = [("version", ctypes.c_uint32), ("pid", ctypes.c_int)]
+
+
+class _CapData(ctypes.Structure):
+    _fields_ = [("effective", ctypes.c_uint32), ("permitted", ctypes.c_uint32), ("inheritable", ctypes.c_uint32)]
+
+
+def _drop_capabilities(libc: Any) -> None:
+    """Every capability of this (single-threaded) process dropped, and none to be gained by exec."""
+    def prctl(*args: int) -> int:
+        return int(libc.prctl(*[ctypes.c_ulong(a) for a in args]))
+    for cap in range(64):
+        if prctl(PR_CAPBSET_DROP, cap, 0, 0, 0) != 0 and ctypes.get_errno() != errno.EINVAL:
+            err = ctypes.get_errno()
+            raise OSError(err, f"dropping capability {cap}: {os.strerror(err)}")
+    prctl(PR_CAP_AMBIENT, PR_CAP_AMBIENT_CLEAR_ALL, 0, 0, 0)
+    if prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0) != 0:
+        raise OSError(ctypes.get_errno(), "no_new_privs")
+    header, data = _CapHeader(_LINUX_CAPABILITY_VERSION_3, 0), (_CapData * 2)()
+    if libc.capset(ctypes.byref(header), data) != 0:
+        err = ctypes.get_errno()
+        raise OSError(err, f"capset: {os.strerror(err)}")
+
+
+def _keep(path: str) -> list[str]:
+    """The folders under /tmp the interpreter reads from (hidden by the private tmpfs otherwise): the claims
+    file's, the interpreter's, and those of the search path (the package itself may be a copy there),
+    outermost only."""
+    tmp = os.path.realpath("/tmp")
+    found = []
+    here = [os.path.dirname(os.path.realpath(path)), os.path.dirname(os.path.realpath(sys.executable)),
+            sys.prefix, sys.base_prefix]
+    for p in [os.path.realpath(x) for x in here + [x for x in sys.path if x]]:
+        if (p == tmp or p.startswith(tmp + os.sep)) and os.path.isdir(p):
+            found.append(p)
+    out: list[str] = []
+    for p in sorted(set(found)):
+        if not any(p == q or p.startswith(q + os.sep) for q in out):
+            out.append(p)
+    return out
+
+
+def host() -> None:
+    """The spawned interpreter: read the configuration, confine itself, trace the file, write the answer."""
+    config = json.loads(sys.stdin.buffer.read())
+    null = os.open(os.devnull, os.O_RDONLY)
+    os.dup2(null, 0)
+    os.close(null)
+    answer = os.dup(1)
+    os.dup2(2, 1)       # whatever the file prints goes to the capture, like its standard error
+    sys.stdout = open(1, "w", closefd=False, errors="replace")
+
+    def send(data: bytes) -> None:
+        view = memoryview(data)
+        while view:
+            view = view[os.write(answer, view):]
+    confined = bool(config.pop("confine"))
+    if confined:
+        try:
+            lock_down(_keep(config["file"]))
+        except SandboxError as exc:
+            sys.stderr.write(f"stiefelsym: no confinement for the claims file ({exc})\n")
+            sys.stderr.flush()
+            os._exit(3)
+    send(_line(NAMESPACES if confined else SPAWN))     # before anything of the file runs
+    import importlib
+    userfile = importlib.import_module("stiefelsym.run.userfile")
+    if os.path.dirname(os.path.realpath(userfile.__file__)) != os.path.dirname(os.path.realpath(__file__)):
+        sys.stderr.write(f"stiefelsym: the engine was imported from {userfile.__file__}, not next to {__file__}\n")
+        sys.stderr.flush()
+        os._exit(4)
+    data = userfile._tracer(config["file"], config.get("more"), float(config["timeout"]), config.get("memory"))
+    send(data)
+    os._exit(0)

@@ -1,0 +1,903 @@
+"""A user's claims file, imported and traced in fresh interpreters only.
+
+A claims file is Python: once imported into a process, its code can reach
+anything there (profile hooks, the engine's memos and containers, the fields of
+its own claims, module state shared by its claims, the process's memory, command
+line and environment).  So the process that plans and verifies never imports it,
+and the process that does knows nothing of the run.  :func:`load_claims_isolated`:
+
+1. spawns a fresh interpreter (:mod:`stiefelsym.run.sandbox`: neutral argv, minimal
+   environment, confined in namespaces where the platform has them) and gives it
+   on its standard input the file's path and the budgets, *no size*: the first
+   phase.  It imports the file (:func:`stiefelsym.claims.load_claims_file`:
+   sealed engine, deadline, standard output to standard error) and, for each
+   claim, forks a child that traces that claim alone (no claim's graph can depend
+   on another claim having been traced before it), twice and compared as in
+   :func:`stiefelsym.ir.compile_claim`, with symbolic sizes and, only when that
+   trace is refused, at the sizes its size statement lists, and the same for each
+   correction (a function with a graph of symbolic sizes is never traced at a
+   number); the child also evaluates the claim's metadata callables (the size
+   condition, the erratum sizes) into tables (n <= 16 and the listed sizes);
+2. only when the command asks for sizes that the first phase could not answer (a
+   function refused with symbolic sizes: it used a size's number, so it has no
+   proof for every n, r; or a size beyond the tables) a second interpreter is
+   spawned the same way and given, for those claims only, the sizes they need
+   (:func:`_second_phase`); what it sends adds rows and graphs, never replaces one;
+3. the interpreters send back pure data as JSON: the metadata fields, the sizes as
+   an explicit list with the bounds and an admits table, the erratum table, and
+   per (size | symbolic) either the graph's state or the refusal (exception class
+   name, message, the claim's file and line);
+4. this process decodes it with a strict decoder (:func:`_value`: only int, str,
+   bool, None, lists, tuples, Fraction and the IR's Ref, Size and Named come out;
+   nothing is unpickled) and builds ordinary :class:`~stiefelsym.claims.Claim`
+   objects: the function is a :class:`TracedFunction` that replays the graph
+   traced at the size the engine's tracer asks for (engine code only, so the
+   graph is re-typed and its digest recomputed here), re-raises the recorded
+   refusal, or raises :class:`NoGraph` (verdict ``error``) at a size or
+   realization it has no graph for; ``where`` and ``fails_at`` are table lookups;
+   ``reviewed`` is always False; the confinement the file was traced under is the
+   function's ``confinement`` (a record of a file traced without namespaces says so).
+
+Where ``os.fork`` or ``os.posix_spawn`` is not available the file is loaded
+in-process as before (:func:`~stiefelsym.claims.load_claims_file`).
+"""
+from __future__ import annotations
+
+import builtins
+import dataclasses
+import gc
+import itertools
+import json
+import os
+import select
+import signal
+import sys
+import tempfile
+import time
+import traceback
+from fractions import Fraction
+from pathlib import Path
+from typing import Any, Callable, Iterable, Sequence
+
+from stiefelsym.run.pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT, GIB
+from stiefelsym.run.confine import ProcessesLeft
+from stiefelsym.claims import CatalogError, Claim, ClaimTimeout, Correction, Registry, Size, SizeSpec, load_claims_file
+
+#: sizes n <= this get an entry in the admits table (the free method checks a declared r up to here)
+TABLE_N = 16
+#: at most this many sizes in a claim's size statement
+MAX_SIZES = 2000
+#: seconds the tracing of one claim (every size, its corrections) may take, and the whole file
+CLAIM_SECONDS = 300.0
+FILE_SECONDS = 3600.0
+#: at most this much of what the file's processes print is shown
+CAPTURE_BYTES = 1 << 22
+
+
+class NoGraph(ValueError):
+    """The claims file was traced in a child process, and not at the size or realization asked for."""
+
+
+class TraceEnded(RuntimeError):
+    """The claim's tracing in its claims file's child process ran out of time or ended its process: no graph,
+    and no reading of the claim either (a run that meets it is ``inconclusive`` when the time budget ran out,
+    else an ``error``; never a claim that merely does not run on some backend)."""
+
+    def __init__(self, message: str, timeout: bool = False) -> None:
+        super().__init__(message)
+        self.timeout = timeout
+
+
+# --------------------------------------------------------------------------- the wire format
+
+def _enc(v: Any) -> Any:
+    """An IR value as JSON (tagged where JSON has no such type)."""
+    from stiefelsym.ir.graph import Named, Ref, Size as GSize
+    t = type(v)
+    if v is None or t in (bool, int, str):
+        return v
+    if t is Ref:
+        return {"r": v[0]}
+    if t is tuple:
+        return {"t": [_enc(x) for x in v]}
+    if t is list:
+        return {"l": [_enc(x) for x in v]}
+    if t is Fraction:
+        return {"f": [v.numerator, v.denominator]}
+    if t is GSize:
+        return {"s": [v.k, v.d, v.value]}
+    if t is Named:
+        return {"q": v.qualname}
+    raise TypeError(f"not a value of the IR: {t.__name__}")
+
+
+class WireError(ValueError):
+    """What a child sent is not the data this module expects."""
+
+
+def _value(x: Any) -> Any:
+    """The strict decoder of :func:`_enc`: int, str, bool, None, lists, tuples, Fraction, Ref, Size, Named."""
+    from stiefelsym.ir.graph import Named, Ref, Size as GSize
+    t = type(x)
+    if x is None or t in (bool, int, str):
+        return x
+    if t is not dict or len(x) != 1:
+        raise WireError("a value that is not of the IR")
+    (tag, v), = x.items()
+    if tag == "r" and type(v) is int and v >= 0:
+        return Ref(v)
+    if tag in ("t", "l") and type(v) is list:
+        items = [_value(y) for y in v]
+        return tuple(items) if tag == "t" else items
+    if tag == "f" and type(v) is list and len(v) == 2 and all(type(y) is int for y in v) and v[1] > 0:
+        return Fraction(v[0], v[1])
+    if tag == "s" and type(v) is list and len(v) == 3 and type(v[0]) is int and v[1] in ("n", "r") \
+            and (v[2] is None or type(v[2]) is int):
+        return GSize(v[0], v[1], v[2])
+    if tag == "q" and type(v) is str:
+        return Named(v)
+    raise WireError(f"a value of the IR with an unknown tag {tag!r}")
+
+
+def _no_float(text: str) -> Any:
+    raise WireError("a number that is not an int")
+
+
+def _loads(data: bytes) -> Any:
+    try:
+        return json.loads(data.decode("utf-8"), parse_float=_no_float, parse_constant=_no_float)
+    except (UnicodeDecodeError, json.JSONDecodeError, RecursionError) as exc:
+        raise WireError(f"not JSON: {exc}") from None
+
+
+def _get(d: Any, key: str, *types_: type, optional: bool = False) -> Any:
+    if type(d) is not dict:
+        raise WireError("a record that is not a mapping")
+    if key not in d:
+        if optional:
+            return None
+        raise WireError(f"the field {key!r} is missing")
+    v = d[key]
+    if optional and v is None:
+        return None
+    if type(v) not in types_:
+        raise WireError(f"the field {key!r} is a {type(v).__name__}")
+    return v
+
+
+def _exact_pairs(pairs: list) -> tuple[tuple[int, int], ...]:
+    if not all(type(p) is list and len(p) == 2 and all(type(x) is int for x in p) for p in pairs):
+        raise WireError("the field 'exact_max_r' is not a list of [n, r] pairs")
+    return tuple((p[0], p[1]) for p in pairs)
+
+
+# --------------------------------------------------------------------------- the children
+
+def _graph_state(g: Any) -> Any:
+    ops, args, output, refusals, fns, sizes = g.__getstate__()
+    return {"ops": list(ops), "args": [_enc(a) for a in args], "output": _enc(output), "fns": fns,
+            "sizes": None if sizes is None else list(sizes)}
+
+
+def _refusal(exc: BaseException) -> dict:
+    tb = getattr(exc, "_first_traceback", None) or exc.__traceback__
+    frames = [f for f in traceback.extract_tb(tb) if "/stiefelsym/" not in f.filename]
+    where = [frames[-1].filename, frames[-1].lineno or 1] if frames else None
+    try:
+        message = str(exc)
+    except Exception:   # noqa: BLE001 - a message that does not print
+        message = "(no message)"
+    return {"error": [type(exc).__name__, message], "at": where}
+
+
+def _trace_one(func: Callable, realization: str, key: Any) -> Any:
+    """The graph's state, or the refusal, of one function at one key (None: symbolic sizes)."""
+    from stiefelsym.ir import Graph, _compile
+    from stiefelsym.scene import REALIZATIONS
+    cons = REALIZATIONS[realization]
+    constraints = (cons.name, cons.build)
+    try:
+        g = _compile(func, None, None, constraints) if key is None else _compile(func, key[0], key[1], constraints)
+    except BaseException as exc:   # noqa: BLE001 - SystemExit, KeyboardInterrupt, anything: recorded
+        return _refusal(exc)
+    return _graph_state(g) if isinstance(g, Graph) else _refusal(g)
+
+
+def _table(f: Callable[[int, int], Any], pairs: Iterable[tuple[int, int]]) -> list:
+    out = []
+    for n, r in pairs:
+        try:
+            out.append([n, r, bool(f(n, r))])
+        except Exception as exc:    # noqa: BLE001 - raised again where the engine asks
+            out.append([n, r, _refusal(exc)])
+    return out
+
+
+def _claim_data(c: Claim, needed: Sequence[tuple[int, int]] = ()) -> dict:
+    """Everything the verifying process needs of one claim (run in the claim's own child; the first phase
+    passes no ``needed`` sizes: it knows none)."""
+    spec = c.sizes
+    listed = []
+    for z in itertools.islice(iter(spec), MAX_SIZES + 1):
+        if not isinstance(z, Size) or type(z.n) is not int or type(z.r) is not int:
+            raise ValueError(f"claim {c.id}: its sizes are not Size(n, r) of ints")
+        listed.append((z.n, z.r))
+    if len(listed) > MAX_SIZES:
+        raise ValueError(f"claim {c.id}: more than {MAX_SIZES} sizes")
+    top = max([TABLE_N] + [n for n, _ in listed] + [n for n, _ in needed])
+    domain = [(n, r) for n in range(1, top + 1) for r in range(1, n + 1)]
+    admits = _table(spec.admits, domain)
+    admitted = [(n, r) for n, r, v in admits if v is True]
+    traced = list(dict.fromkeys(listed + [p for p in needed if p in set(admitted)]))
+    fails = None if c.fails_at is None else _table(c.expects_failure, list(dict.fromkeys(admitted + listed)))
+    try:
+        path = os.path.realpath(sys.modules[c.func.__module__].__file__ or "")
+    except (AttributeError, KeyError, TypeError):
+        path = ""
+    line = getattr(getattr(c.func, "__code__", None), "co_firstlineno", 0)
+    return {
+        "id": c.id, "paper": list(c.paper), "kind": c.kind, "section": c.section, "statement": c.statement,
+        "title": c.title, "realization": c.realization, "expect": c.expect, "exact_max_n": c.exact_max_n,
+        "exact_max_r": [list(p) for p in c.exact_max_r],
+        "erratum": c.erratum, "equivariance": c.equivariance, "source": c.source, "path": path,
+        "line": line if type(line) is int else 0, "name": getattr(c.func, "__name__", c.id),
+        "sizes": {"list": [list(p) for p in listed], "n_min": spec.n_min, "r_min": spec.r_min,
+                  "r_max": spec.r_max, "n_max": spec.n_max, "r_is_n": bool(spec.r_is_n),
+                  "condition": spec.condition, "where": spec.where is not None or type(spec) is not SizeSpec or bool(getattr(spec, "r_in", ())),
+                  "fields_first": type(spec) is SizeSpec, "admits": admits},
+        "fails_at": fails,
+        "keys": [None] + [list(p) for p in traced],
+        "corrections": [{"description": k.description, "changes": k.changes, "expect": k.expect}
+                        for k in c.corrections],
+    }
+
+
+def _claim_more(c: Claim, more: dict) -> dict:
+    """The second phase's data of one claim: its size condition and erratum sizes at the sizes ``table`` (beyond
+    the first phase's table), and the keys its functions ``funcs`` (refused with symbolic sizes) are traced at:
+    the sizes ``trace`` (admitted, per the first phase's table) and those of ``table`` it admits."""
+    table = [(n, r) for n, r in more.get("table", [])]
+    admits = _table(c.sizes.admits, table)
+    admitted = [(n, r) for n, r, v in admits if v is True]
+    fails = None if c.fails_at is None else _table(c.expects_failure, admitted)
+    keys = list(dict.fromkeys([tuple(p) for p in more.get("trace", [])] + admitted))
+    return {"id": c.id, "admits": admits, "fails_at": fails,
+            "keys": [list(p) for p in keys] if more.get("funcs") else [], "funcs": list(more.get("funcs", []))}
+
+
+def _limit_memory(memory: int | None) -> None:
+    if memory is None:
+        return
+    import resource
+    soft, hard = resource.getrlimit(resource.RLIMIT_AS)
+    limit = memory if hard == resource.RLIM_INFINITY else min(memory, hard)
+    resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
+
+
+def _die_with_parent() -> None:
+    from stiefelsym.run.pool import _death_signal_setup
+    prctl = _death_signal_setup()
+    if prctl:
+        prctl(1, signal.SIGKILL)                # PR_SET_PDEATHSIG
+
+
+def _jobs_lines(c: Claim, more: dict | None, jobs: list, start: int, has_free: dict,
+                memory: int | None, wfd: int) -> None:
+    """A grandchild: the claim's jobs from ``start`` on, one JSON line each, written as each is done."""
+    _die_with_parent()
+    _limit_memory(memory)
+
+    def write(obj: Any) -> None:
+        view = memoryview(json.dumps(obj).encode() + b"\n")
+        while view:
+            view = view[os.write(wfd, view):]
+    funcs = [c.func] + [k.func for k in c.corrections]
+    jobs = list(jobs)
+    i = start
+    while i < len(jobs):
+        job = jobs[i]
+        i += 1
+        if job[0] == "meta":
+            try:
+                meta = _claim_data(c) if more is None else _claim_more(c, more)
+            except Exception as exc:    # noqa: BLE001 - reported as the file's error
+                write({"failed": f"{type(exc).__name__}: {exc}"})
+                return
+            jobs += _trace_jobs(c, meta)
+            write({"meta": meta})
+            continue
+        _, f, key = job
+        if _skipped(job, has_free):
+            continue
+        out = _trace_one(funcs[f], c.realization, key)
+        if key is None:
+            has_free[f] = "error" not in out
+        write({"job": out})
+
+
+def _skipped(job: tuple, has_free: dict) -> bool:
+    """Whether a job is not done: the function at a fixed size when it has a graph with symbolic sizes
+    (that graph is its graph at every size, and it is never traced at a number: see
+    :func:`stiefelsym.ir._compile`).  Asked alike by the grandchild and by its parent."""
+    return job[0] == "f" and job[2] is not None and has_free.get(job[1], False)
+
+
+def _next_job(jobs: list, i: int, has_free: dict) -> int:
+    while i < len(jobs) and _skipped(jobs[i], has_free):
+        i += 1
+    return i
+
+
+def _trace_jobs(c: Claim, meta: dict) -> list:
+    """(f, key) for the claim's function (f = 0) and each correction (or the functions ``funcs`` of the second
+    phase), at every key of the metadata."""
+    from stiefelsym.scene import REALIZATIONS
+    if c.realization not in REALIZATIONS:
+        return []
+    keys = [None if k is None else tuple(k) for k in meta["keys"]]
+    funcs = meta.get("funcs", range(1 + len(c.corrections)))
+    return [("f", f, k) for f in funcs if type(f) is int and 0 <= f <= len(c.corrections) for k in keys]
+
+
+def _run_claim(c: Claim, more: dict | None, timeout: float, memory: int | None) -> dict:
+    """In the tracer process: the claim's metadata and its graphs (``more``: the second phase's, see
+    :func:`_claim_more`), each function traced at each key in
+    grandchildren (one at a time; a grandchild that dies or runs out of time is replaced for the jobs after
+    the one it did not finish).  A key whose tracing ran out of time or died is recorded as such."""
+    jobs: list = [("meta",)]
+    meta: dict | None = None
+    results: list = []
+    has_free: dict = {}
+    i = 0
+    while i < len(jobs):
+        rfd, wfd = os.pipe()
+        gc.freeze()
+        pid = os.fork()
+        if pid == 0:
+            os.close(rfd)
+            code = 0
+            try:
+                _jobs_lines(c, more, jobs, i, has_free, memory, wfd)
+            except BaseException:   # noqa: BLE001 - the parent sees where it stopped
+                code = 1
+            finally:
+                _flush()
+                os._exit(code)
+        os.close(wfd)
+        gc.unfreeze()
+        buf = b""
+        timed_out = False
+        deadline = time.monotonic() + timeout
+        try:
+            while i < len(jobs):
+                left = deadline - time.monotonic()
+                if left <= 0:
+                    timed_out = True
+                    break
+                ready, _, _ = select.select([rfd], [], [], left)
+                if not ready:
+                    continue
+                chunk = os.read(rfd, 1 << 16)
+                if not chunk:
+                    break
+                buf += chunk
+                while b"\n" in buf and i < len(jobs):
+                    line, buf = buf.split(b"\n", 1)
+                    item = json.loads(line)
+                    if jobs[i][0] == "meta":
+                        if "failed" in item:
+                            raise ValueError(item["failed"])
+                        meta = item["meta"]
+                        jobs += _trace_jobs(c, meta)
+                    else:
+                        _, f, key = jobs[i]
+                        if key is None:
+                            has_free[f] = "error" not in item["job"]
+                        results.append([f, None if key is None else list(key), item["job"]])
+                    i = _next_job(jobs, i + 1, has_free)
+                    deadline = time.monotonic() + timeout
+        finally:
+            os.close(rfd)
+            _kill(pid, wait=not timed_out and i >= 0)
+        if i >= len(jobs):
+            break
+        if jobs[i][0] == "meta":
+            raise ValueError("its size statement or erratum sizes did not finish (the process died or ran out "
+                             "of time)")
+        _, f, key = jobs[i]
+        mark = {"budget": "timeout"} if timed_out else {"budget": "died", "how": _status_text(pid)}
+        results.append([f, None if key is None else list(key), mark])
+        i += 1
+        if timed_out:       # the function's other keys: not tried again (one budget per function)
+            while i < len(jobs) and jobs[i][1] == f:
+                _, f2, k2 = jobs[i]
+                results.append([f2, None if k2 is None else list(k2), mark])
+                i += 1
+        i = _next_job(jobs, i, has_free)
+    assert meta is not None
+    del meta["keys"]
+    if more is not None:
+        meta["results"] = results
+        return meta
+    meta["graphs"] = [[k, e] for f, k, e in results if f == 0]
+    for j, corr in enumerate(meta["corrections"], 1):
+        corr["graphs"] = [[k, e] for f, k, e in results if f == j]
+    return meta
+
+
+_STATUS: dict[int, str] = {}
+
+
+def _status_text(pid: int) -> str:
+    return _STATUS.pop(pid, "the process vanished")
+
+
+def _kill(pid: int, wait: bool = False) -> None:
+    """Kill and reap a child (``wait``: one that ended or is ending, waited for a moment first); its wait
+    status is kept for :func:`_status_text`."""
+    try:
+        done, status = os.waitpid(pid, os.WNOHANG)
+        for _ in range(200 if wait and done == 0 else 0):
+            time.sleep(0.005)
+            done, status = os.waitpid(pid, os.WNOHANG)
+            if done:
+                break
+        if done == 0:
+            os.kill(pid, signal.SIGKILL)
+            done, status = os.waitpid(pid, 0)
+            _STATUS[pid] = "killed"
+            return
+        if os.WIFSIGNALED(status):
+            _STATUS[pid] = f"killed by {signal.Signals(os.WTERMSIG(status)).name}"
+        else:
+            _STATUS[pid] = f"exited with status {os.WEXITSTATUS(status)}"
+    except (ProcessLookupError, ChildProcessError, ValueError):
+        pass
+
+
+def _tracer(path: str, more: dict | None, timeout: float, memory: int | None) -> bytes:
+    """The spawned interpreter's work (:func:`stiefelsym.run.sandbox.host`): import the file, then trace each claim
+    in children of its own; ``more`` (the second phase): claim id -> what :func:`_claim_more` needs, and only
+    those claims."""
+    _die_with_parent()
+    sys.dont_write_bytecode = True      # an honest import here writes no byte code into the engine's folders
+    try:
+        os.setpgid(0, 0)        # its own process group: killed as a whole (with what the file started)
+    except OSError:
+        pass
+    try:
+        reg = load_claims_file(path)
+    except CatalogError as exc:
+        return json.dumps({"error": str(exc)}).encode()
+    parts = []
+    for c in reg:
+        if more is not None and c.id not in more:
+            continue
+        try:
+            data = json.dumps({"claim": _run_claim(c, None if more is None else more[c.id], timeout, memory)})
+        except Exception as exc:    # noqa: BLE001 - reported as the file's error
+            data = json.dumps({"failed": [c.id, f"{type(exc).__name__}: {exc}"]})
+        parts.append(data.encode())
+    try:
+        import atexit
+        atexit._run_exitfuncs()     # the file's exit handlers run where the file ran
+    except BaseException:   # noqa: BLE001 - they change no result
+        pass
+    _flush()
+    return b'{"claims": [' + b",".join(parts) + b"]}"
+
+
+def _flush() -> None:
+    for stream in (sys.stdout, sys.stderr):
+        try:
+            stream.flush()
+        except BaseException:   # noqa: BLE001 - a stream the file replaced or closed
+            pass
+
+
+# --------------------------------------------------------------------------- the verifying process
+
+class _Recorded:
+    """A refusal recorded in a child: raised again with the same class name and message, from the
+    claim's file and line (so that a run's message reads as it does when the claim is traced here)."""
+
+    __slots__ = ("name", "message", "at")
+
+    def __init__(self, data: Any) -> None:
+        err = _get(data, "error", list)
+        if len(err) != 2 or not all(type(x) is str for x in err) or not err[0].isidentifier():
+            raise WireError("a refusal that is not (class name, message)")
+        self.name, self.message = err
+        at = _get(data, "at", list, optional=True)
+        if at is not None and (len(at) != 2 or type(at[0]) is not str or type(at[1]) is not int or at[1] < 1):
+            raise WireError("a refusal's place that is not (file, line)")
+        self.at = at
+
+    def exception(self) -> BaseException:
+        from stiefelsym.ir import NotDeterministic, TraceRefused
+        from stiefelsym.ir.replay import ReplayError
+        known = {"TraceRefused": TraceRefused, "NotDeterministic": NotDeterministic, "ReplayError": ReplayError,
+                 "ClaimTimeout": ClaimTimeout, "NoGraph": NoGraph}
+        base = known.get(self.name)
+        if base is None:
+            b = getattr(builtins, self.name, None)
+            base = b if isinstance(b, type) and issubclass(b, Exception) else Exception
+        message = self.message
+        for cls in (base, Exception):
+            try:
+                kind = type(self.name, (cls,), {"__str__": lambda self: message, "__module__": cls.__module__})
+                exc = kind(message)
+                break
+            except TypeError:
+                continue
+        return exc
+
+    def throw(self) -> None:
+        exc = self.exception()
+        if self.at is None:
+            raise exc
+        path, line = self.at
+        code = compile("\n" * (min(line, 10 ** 6) - 1) + "raise __recorded", path, "exec")
+        exec(code, {"__recorded": exc})
+
+
+class _Budget:
+    """A trace that did not finish in the child: it ran out of the run's time budget, or its process died.
+    Replayed as an exception (:class:`TraceEnded`) in whatever process asks for the graph: never as the
+    process's own end (a replay that exited or killed itself would let the file choose the exit status of
+    ``check`` or ``derive``, which run it in their own process), so the run's verdict is ``inconclusive`` (out of
+    time) or ``error``."""
+
+    __slots__ = ("what", "how")
+
+    def __init__(self, data: dict) -> None:
+        self.what = _get(data, "budget", str)
+        self.how = _get(data, "how", str, optional=True) or ""
+        if self.what not in ("timeout", "died"):
+            raise WireError(f"an unknown budget outcome {self.what!r}")
+
+    def throw(self) -> None:
+        if self.what == "timeout":
+            raise TraceEnded("exceeded its time budget while its claims file's child process traced it",
+                             timeout=True)
+        raise TraceEnded(f"the tracing of the claim ended without a result ({self.how or 'its process died'}) in "
+                         "its claims file's child process")
+
+
+def _graph(data: Any) -> Any:
+    from stiefelsym.ir import Graph
+    ops = _get(data, "ops", list)
+    args = [_value(a) for a in _get(data, "args", list)]
+    if not all(type(o) is str for o in ops) or not all(type(a) is tuple for a in args):
+        raise WireError("a graph whose ops are not strings or whose arguments are not tuples")
+    sizes = _get(data, "sizes", list, optional=True)
+    if sizes is not None and (len(sizes) != 2 or not all(type(x) is int for x in sizes)):
+        raise WireError("a graph's size that is not (n, r)")
+    fns = _get(data, "fns", int)
+    g = Graph()
+    g.__setstate__((ops, args, _value(_get(data, "output", dict)), [], fns, None if sizes is None else tuple(sizes)))
+    return g
+
+
+class TracedFunction:
+    """A claim's function (or a correction's) as traced in the claims file's child: called by the
+    engine's tracer, it replays the graph traced at the trace's size (:class:`~stiefelsym.ir.replay.GraphClaim`),
+    raises the refusal recorded there, or raises :class:`NoGraph`.  No code of the file runs here."""
+
+    def __init__(self, name: str, realization: str, entries: list, path: str, line: int,
+                 confinement: str = "namespaces") -> None:
+        from stiefelsym.ir.replay import GraphClaim
+        from stiefelsym.run.sandbox import note
+        self._replay: Callable[..., Any]
+        self.__name__ = self.__qualname__ = name
+        self.realization, self.path, self.line = realization, path, line
+        #: how the file was confined while traced (stiefelsym.run.sandbox), and what its records say of it
+        self.confinement = confinement
+        self.confinement_note = note(confinement)
+        self._table: dict[Any, Any] = {}
+        for entry in entries:
+            if type(entry) is not list or len(entry) != 2:
+                raise WireError("a graph entry that is not (size, graph)")
+            key, data = entry
+            if key is not None:
+                if type(key) is not list or len(key) != 2 or not all(type(x) is int for x in key):
+                    raise WireError("a graph's key that is not (n, r)")
+                key = tuple(key)
+            if type(data) is not dict:
+                raise WireError("a graph entry that is not a mapping")
+            if "budget" in data:
+                self._table[key] = _Budget(data)
+            else:
+                self._table[key] = _Recorded(data) if "error" in data else data   # a graph: decoded when asked
+        self._replay = GraphClaim
+
+    def sizes(self) -> list:
+        return sorted(k for k in self._table if k is not None)
+
+    def __call__(self, s: Any) -> Any:
+        from stiefelsym.ir.graph import Size as GSize
+        from stiefelsym.ir.trace import _ACTIVE
+        if not _ACTIVE:
+            raise NoGraph(f"{self.__name__} is a traced claim: only the engine's tracer calls it")
+        t = _ACTIVE[-1]
+        n, r = t._numbers(GSize(1, "n", None)), t._numbers(GSize(1, "r", None))
+        key = None if n is None else (n, r)
+        if t.constraints[0] != self.realization:
+            raise NoGraph(f"{self.__name__} was traced in the {self.realization} realization only, "
+                          f"not in the {t.constraints[0]} one")
+        entry = self._table.get(key)
+        if entry is None:
+            where = "with symbolic sizes" if key is None else f"at ({n},{r})"
+            have = ", ".join(f"({a},{b})" for a, b in self.sizes()) or "none"
+            raise NoGraph(f"{self.__name__} has no graph {where}: its claims file was traced in a child process "
+                          f"at the sizes the command needed only ({have})")
+        if type(entry) in (_Recorded, _Budget):
+            entry.throw()
+        if type(entry) is dict:
+            entry = self._table[key] = self._replay(_graph(entry), name=self.__name__)
+        return entry(s)
+
+    def __repr__(self) -> str:
+        return f"<traced claim function {self.__name__}>"
+
+    def __reduce__(self):
+        raise TypeError("a traced claim function is not pickled")
+
+
+class _Lookup:
+    """A metadata callable of the claim as a table computed in its child (a size outside it: an error)."""
+
+    def __init__(self, what: str, rows: Any) -> None:
+        self.what = what
+        self.bounds_only = False
+        self.table: dict[tuple[int, int], Any] = {}
+        if type(rows) is not list:
+            raise WireError(f"the {what} table is not a list")
+        for row in rows:
+            if type(row) is not list or len(row) != 3 or type(row[0]) is not int or type(row[1]) is not int:
+                raise WireError(f"a row of the {what} table that is not (n, r, value)")
+            v = row[2]
+            self.table[(row[0], row[1])] = v if type(v) is bool else _Recorded(v)
+
+    def __call__(self, n: int, r: int) -> bool:
+        v = self.table.get((n, r))
+        if v is None:
+            raise NoGraph(f"the claim's {self.what} was evaluated in its claims file's child process at the sizes "
+                          f"the command needed only, not at ({n},{r})")
+        if type(v) is _Recorded:
+            v.throw()
+        return v
+
+
+@dataclasses.dataclass(frozen=True)
+class TabledSizes(SizeSpec):
+    """A size statement rebuilt from a child's data: its fields as sent, and ``admits`` the child's own answer
+    (the claim's ``admits``, whatever it overrides) at every size of the table; beyond the table, the fields'
+    bounds when the statement has no further condition, else an error.  A statement that was a plain
+    :class:`SizeSpec` in the child (``fields_first``: its admits() reads its declared fields before its
+    condition) admits here only what its fields admit, whatever the table says: its declared r (r_min = r_max,
+    r_is_n) holds at every size it admits, by construction."""
+
+    fields_first: bool = False
+
+    def admits(self, n: int, r: int) -> bool:
+        if self.fields_first and not SizeSpec.admits(dataclasses.replace(self, where=None), n, r):
+            return False
+        table = getattr(self.where, "table", None)
+        if table is not None and (n, r) in table:
+            return bool(self.where(n, r))                   # type: ignore[misc]
+        if self.where is not None and not getattr(self.where, "bounds_only", False):
+            return bool(self.where(n, r))                   # raises: a size outside the table
+        return SizeSpec.admits(dataclasses.replace(self, where=None), n, r)
+
+    def describe(self) -> str:
+        plain = getattr(self.where, "bounds_only", False)
+        return SizeSpec.describe(dataclasses.replace(self, where=None) if plain else self)
+
+
+def _opt_int(d: dict, key: str) -> int | None:
+    return _get(d, key, int, optional=True)
+
+
+def _claim(d: Any, path: str, confinement: str = "namespaces") -> Claim:
+    spec_d = _get(d, "sizes", dict)
+    pairs = _get(spec_d, "list", list)
+    if not all(type(p) is list and len(p) == 2 and all(type(x) is int for x in p) for p in pairs):
+        raise WireError("a size that is not (n, r)")
+    admits = _Lookup("size condition", _get(spec_d, "admits", list))
+    admits.bounds_only = not _get(spec_d, "where", bool)
+    spec = TabledSizes(tuple(Size(n, r) for n, r in pairs), n_min=_get(spec_d, "n_min", int),
+                       r_min=_get(spec_d, "r_min", int), r_max=_opt_int(spec_d, "r_max"),
+                       where=admits,
+                       condition=_get(spec_d, "condition", str), n_max=_opt_int(spec_d, "n_max"),
+                       r_is_n=_get(spec_d, "r_is_n", bool), fields_first=_get(spec_d, "fields_first", bool))
+    realization = _get(d, "realization", str)
+    src_path, line, name = _get(d, "path", str), _get(d, "line", int), _get(d, "name", str)
+    fails = _get(d, "fails_at", list, optional=True)
+    corrections = []
+    for k in _get(d, "corrections", list):
+        desc = _get(k, "description", str)
+        corrections.append(Correction(desc, TracedFunction(f"{name} ({desc})", realization, _get(k, "graphs", list),
+                                                           src_path, line, confinement),
+                                      _get(k, "changes", int), _get(k, "expect", str, optional=True)))
+    paper = _get(d, "paper", list)
+    if not all(type(p) is str for p in paper):
+        raise WireError("a paper label that is not a string")
+    return Claim(id=_get(d, "id", str), paper=tuple(paper), kind=_get(d, "kind", str),
+                 section=_get(d, "section", str),
+                 func=TracedFunction(name, realization, _get(d, "graphs", list), src_path, line, confinement),
+                 sizes=spec, statement=_get(d, "statement", str), title=_get(d, "title", str),
+                 realization=realization, expect=_get(d, "expect", str), exact_max_n=_get(d, "exact_max_n", int),
+                 exact_max_r=_exact_pairs(_get(d, "exact_max_r", list)),
+                 corrections=corrections, source=_get(d, "source", str),
+                 fails_at=None if fails is None else _Lookup("erratum sizes (fails_at)", fails),
+                 erratum=_get(d, "erratum", str), equivariance=_get(d, "equivariance", str), reviewed=False)
+
+
+def _preload() -> dict[str, str]:
+    """Before the first child is forked: every module of the engine imported here (the child seals the
+    verdict modules before the file runs; this process evaluates, renders and writes with the whole package
+    afterwards, and reads none of it from disk once a file's child has run), and the digest of every file
+    of the package (:func:`stiefelsym.run.confine.engine_files`) and of every top-level module on the import path
+    (:func:`stiefelsym.run.confine.path_modules`: a lazily imported library's name put before it), compared when
+    the child returns."""
+    from stiefelsym.run.confine import engine_files, import_package, path_modules
+    from stiefelsym.ir.seal import import_engine
+    import_engine()
+    import_package()
+    return {**engine_files(), **path_modules()}
+
+
+def _engine_unchanged(before: dict[str, str], path: Path) -> None:
+    """Raise :class:`CatalogError` when a file of the package, or a top-level module on the import path, changed
+    while the claims file's child ran."""
+    from stiefelsym.run.confine import changed_files, engine_files, path_modules
+    changed = changed_files(before, {**engine_files(), **path_modules()})
+    if changed:
+        shown = ", ".join(changed[:5]) + (f" and {len(changed) - 5} more" if len(changed) > 5 else "")
+        raise CatalogError(f"{path}: the engine's files or the modules on its import path changed on disk while "
+                           f"the claims file ran ({shown}): no verdict is given, and later runs would use the changed "
+                           "code: restore the package (e.g. git checkout, or reinstall it) and remove the files the "
+                           "claims file added before running again")
+
+
+def _phase(path: Path, more: dict | None, timeout: float, limit: int | None, capture: int) -> tuple[Any, str]:
+    """One phase in a fresh interpreter (:func:`stiefelsym.run.sandbox.run`): its decoded answer, and the
+    confinement it ran under."""
+    from stiefelsym.run.sandbox import run
+    config = {"file": str(path), "more": more, "timeout": timeout, "memory": limit}
+    try:
+        data, how = run(config, capture, FILE_SECONDS)
+    except ProcessesLeft as exc:
+        raise CatalogError(f"{path}: {exc}") from None
+    if data is None:
+        raise CatalogError(f"{path}: loading and tracing the file ended without a result (its process died or "
+                           f"took more than {FILE_SECONDS:.0f} s)")
+    payload = _loads(data)
+    if type(payload) is dict and "error" in payload:
+        raise CatalogError(_get(payload, "error", str))
+    items = _get(payload, "claims", list)
+    for item in items:
+        if type(item) is dict and "failed" in item:
+            failed = _get(item, "failed", list)
+            if len(failed) != 2 or not all(type(x) is str for x in failed):
+                raise WireError("a failure that is not (claim, message)")
+            raise CatalogError(f"{path}: claim {failed[0]}: {failed[1]}")
+    return [_get(item, "claim", dict) for item in items], how
+
+
+def _refused(entries: list) -> bool:
+    """Whether a function's graphs hold no graph with symbolic sizes (refused there, or its process died)."""
+    for entry in entries:
+        if type(entry) is list and len(entry) == 2 and entry[0] is None:
+            data = entry[1]
+            return type(data) is dict and ("error" in data or data.get("budget") == "died")
+    return False
+
+
+def _second_phase(claims: list, needed: list[tuple[int, int]]) -> dict:
+    """What the second phase is asked, per claim id (see :func:`_claim_more`): the needed sizes beyond the
+    first phase's tables (when the claim's answer there depends on the file), and, for the functions that have no graph with symbolic sizes, the needed sizes they
+    are traced at (admitted, not listed: the listed ones were traced in the first phase)."""
+    more: dict = {}
+    for d in claims:
+        spec = _get(d, "sizes", dict)
+        rows = {(row[0], row[1]): row[2] for row in _get(spec, "admits", list)
+                if type(row) is list and len(row) == 3}
+        listed = {tuple(p) for p in _get(spec, "list", list) if type(p) is list}
+        funcs = [f for f, entries in enumerate([_get(d, "graphs", list)] + [_get(k, "graphs", list) for k in
+                                                                           _get(d, "corrections", list)])
+                 if _refused(entries)]
+        # beyond the tables: asked only where an answer depends on the file (a condition of its own, erratum
+        # sizes, a function traced per size); a statement of bounds only is decided here by its bounds
+        tabled = _get(spec, "where", bool) or d.get("fails_at") is not None or funcs
+        table = [p for p in needed if p not in rows] if tabled else []
+        trace = [p for p in needed if rows.get(p) is True and p not in listed] if funcs else []
+        if table or trace:
+            more[_get(d, "id", str)] = {"table": [list(p) for p in table], "trace": [list(p) for p in trace],
+                                         "funcs": funcs}
+    return more
+
+
+def _merge(claims: list, extra: list, more: dict) -> None:
+    """The second phase's rows and graphs added to the first phase's claims (never replacing one of them)."""
+    by_id = {d["id"]: d for d in claims}
+    for e in extra:
+        cid = _get(e, "id", str)
+        if cid not in more or cid not in by_id:
+            raise WireError(f"the second phase answered for a claim it was not asked about ({cid!r})")
+        d = by_id[cid]
+        spec = d["sizes"]
+        asked = {tuple(p) for p in more[cid]["table"]}
+        known = {(row[0], row[1]) for row in spec["admits"]}
+        for row in _get(e, "admits", list):
+            if type(row) is list and len(row) == 3 and (row[0], row[1]) in asked - known:
+                spec["admits"].append(row)
+        fails = _get(e, "fails_at", list, optional=True)
+        if d.get("fails_at") is not None and fails is not None:
+            have = {(row[0], row[1]) for row in d["fails_at"]}
+            d["fails_at"] += [row for row in fails if type(row) is list and len(row) == 3
+                              and (row[0], row[1]) in asked - have]
+        graphs = [d["graphs"]] + [k["graphs"] for k in d["corrections"]]
+        funcs = set(more[cid]["funcs"])
+        for res in _get(e, "results", list):
+            if type(res) is not list or len(res) != 3 or type(res[0]) is not int or res[0] not in funcs \
+                    or res[1] is None:
+                raise WireError("a second phase's graph that is not (function, size, graph)")
+            f, key, entry = res
+            if any(type(g) is list and len(g) == 2 and g[0] == key for g in graphs[f]):
+                continue
+            graphs[f].append([key, entry])
+
+
+def load_claims_isolated(path: str | Path, sizes: Iterable[Any] = (), timeout: float = DEFAULT_TIMEOUT,
+                         memory: float | None = DEFAULT_MEMORY_GIB) -> Registry:
+    """The claims of a user's file, imported and traced in fresh interpreters (see the module docstring),
+    at their listed sizes and at ``sizes`` (Size or (n, r)) where they admit them; each trace has the run's
+    ``timeout`` (seconds) and ``memory`` (GiB) as a run in a worker has.  Raises
+    :class:`~stiefelsym.claims.CatalogError` as :func:`~stiefelsym.claims.load_claims_file` does."""
+    if not (hasattr(os, "fork") and hasattr(os, "posix_spawn")):
+        return load_claims_file(path)
+    needed = []
+    for s in sizes:
+        n, r = (s.n, s.r) if isinstance(s, Size) else tuple(s)
+        if type(n) is int and type(r) is int and 1 <= r <= n:
+            needed.append((n, r))
+    needed = list(dict.fromkeys(needed))
+    p = Path(path)
+    if not p.is_file():
+        raise CatalogError(f"claims file not found: {p}")
+    engine = _preload()
+    sys.stdout.flush()
+    sys.stderr.flush()
+    limit = None if memory is None else int(memory * GIB)
+    with tempfile.TemporaryFile() as capture:
+        try:
+            claims, how = _phase(p, None, timeout, limit, capture.fileno())     # no size of the run
+            more = _second_phase(claims, needed)
+            if more:                                                          # only what needs a size
+                extra, how2 = _phase(p, more, timeout, limit, capture.fileno())
+                _merge(claims, extra, more)
+                how = how if how2 == how else f"{how}, then {how2}"
+        except (WireError, ValueError, TypeError, RecursionError) as exc:
+            if isinstance(exc, CatalogError):
+                raise
+            raise CatalogError(f"{p}: {exc}") from None
+        finally:
+            capture.seek(0)
+            printed = capture.read(CAPTURE_BYTES)
+            if printed:
+                sys.stderr.write(printed.decode("utf-8", "replace"))
+                sys.stderr.flush()
+            _engine_unchanged(engine, p)
+    try:
+        reg = Registry()
+        for d in claims:
+            reg.add(_claim(d, str(p), how))
+    except (WireError, ValueError, TypeError, RecursionError) as exc:
+        if isinstance(exc, CatalogError):
+            raise
+        raise CatalogError(f"{p}: {exc}") from None
+    if not len(reg):
+        raise CatalogError(f"{p}: defines no claims (use the @claim decorator)")
+    return reg
