@@ -66,6 +66,13 @@ DOMAINS: dict[str, tuple[str, str, str]] = {
 }
 
 
+#: the dimension of each space of :data:`DOMAINS`, as a formula in n, r
+DIMENSIONS: dict[str, str] = {
+    "Sym(r)": "r(r+1)/2", "Sym(n)": "n(n+1)/2", "so(r)": "r(r-1)/2", "so(n)": "n(n-1)/2",
+    "R^{n×r}": "nr", "R^{r×n}": "nr", "R^{r×r}": "r²", "R^{n×n}": "n²",
+}
+
+
 @dataclass(frozen=True)
 class Inverse:
     """The map ``op`` on the product of the spaces ``on`` is invertible at every point of T*V, with
@@ -150,5 +157,6 @@ class RightInverseIdentities(InverseIdentities):
 
     def describe(self) -> str:
         source, target = " × ".join(self.on), " × ".join(self.to)
+        dim = " + ".join(DIMENSIONS[d] for d in self.to)
         return (f"{self.meaning + ': ' if self.meaning else ''}op(inv(y)) = y for generic y in {target}, "
-                f"at every point (op maps {source} onto {target}: full rank dim({target}))")
+                f"at every point (op maps {source} onto {target}: full rank dim({target}) = {dim})")
