@@ -173,3 +173,18 @@ def test_a_crafted_right_inverse_node_gets_the_verdict_of_its_parts():
     forged.args[i] = a[:5] + (tuple(zero for _ in a[5]),) + a[6:]
     forged.output = g.output
     assert run_exact(CLAIM, 3, 2, 0, func=GraphClaim(forged)).verdict == "fails"
+
+
+def test_a_crafted_right_inverse_whose_op_reads_y_itself_is_refused():
+    """op(inv(y)) taken as y itself (op = const y): refused when the graph is replayed."""
+    from stiefelsym.ir.graph import Graph
+
+    g = trace(WRONG["not onto"], None, None, STANDARD)
+    i = g.ops.index("right_inverse")
+    a = g.args[i]
+    forged = Graph()
+    forged.ops, forged.args = list(g.ops), list(g.args)
+    forged.args[i] = a[:2] + (a[0],) + a[3:]
+    forged.output = g.output
+    with pytest.raises(TraceRefused, match="other than through its argument"):
+        trace(GraphClaim(forged), None, None, STANDARD)
