@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from itertools import combinations
 
-from stiefelsym import Count, Inverse, Rank, admissible, claim, comm
+from stiefelsym import Count, Inverse, Rank, RightInverse, admissible, claim, comm
 
 SECTION = "2"
 
@@ -122,21 +122,31 @@ def chain_gradient(s, xi, m, k):
 # -- the cotangent bundle as a constraint set -------------------------------------
 
 @claim("constraints-independent", paper=("cond_XP", "scalar"), kind="dim",
-       equivariance="the rank of the differential of the O(n)-invariant constraint map is O(n)-invariant; the matrix only lists that differential in the coordinates of R^{2nr}",
-       statement=r"\rank\frac{\partial(F_{ij},G_{ij})}{\partial(X,P)}=r(r+1)\ \text{on } T^*V_{n,r},\quad "
-                 r"\dim V_{n,r}=rn-\tfrac{r(r+1)}{2}")
+       equivariance="the differential of the constraint map (cond_XP) is a matrix expression in X, P, "
+                    "and its right inverse too (O(n)-covariant)",
+       statement=r"d(F_1,F_2)\ \text{maps } \mathbb R^{n\times r}\times\mathbb R^{n\times r} \text{ onto "
+                 r"Sym}(r)\times\text{Sym}(r) \text{ on } T^*V_{n,r}:\ \rank\frac{\partial(F_{ij},G_{ij})}"
+                 r"{\partial(X,P)}=r(r+1),\quad \dim V_{n,r}=rn-\tfrac{r(r+1)}{2}")
 def constraints_are_independent(s):
-    """The r(r+1) scalar constraints (scalar) have independent differentials at every point of T*V, and X^T X = I_r cuts out V(n, r) of dimension rn − r(r+1)/2."""
-    n, r = s.n, s.r
-    # columns ordered (P, X): the same rank, with constant pivots first at X0 (the function-field
-    # rank of the engine is slow with the X columns first, from n = 5, r = 4)
-    J = [row[n * r:] + row[:n * r] for row in s.jacobian(s.constraints.build)]
-    JX = s.jacobian(lambda t: t.X.T @ t.X)
+    """The r(r+1) scalar constraints (scalar) have independent differentials at every point of T*V (dF maps onto Sym(r) × Sym(r), of dimension r(r+1): it has a right inverse), and X^T X = I_r cuts out V(n, r) of dimension rn − r(r+1)/2 (d(XᵀX) maps onto Sym(r) at every point of V)."""
+    def dF(t, dX, dP):      # (δX, δP) ↦ (δXᵀX + XᵀδX, δXᵀP + XᵀδP + δPᵀX + PᵀδX), into Sym(r) × Sym(r)
+        return tuple(t.d(cond_XP, {"X": dX, "P": dP}))
+
+    def dF_right(t, a, b):  # on T*V, with K = XᵀP: aK − Ka is symmetric and dF(δX, δP) = (a, b)
+        K = t.X.T @ t.P
+        return t.X @ a / 2, t.X @ (b / 2 - (a @ K - K @ a) / 4)
+
+    def dG(t, dX):          # d(XᵀX): δX ↦ δXᵀX + XᵀδX, into Sym(r)
+        return t.d(lambda u: u.X.T @ u.X, {"X": dX, "P": t.zeros(t.n, t.r, ("n", "r"))})
+
+    def dG_right(t, a):
+        return t.X @ a / 2
+
     return {
-        "rank d(F, G)": Rank(s.mat(J), r * (r + 1), generic=False,
-                             meaning="the constraints (scalar) are independent on T*V"),
-        "dim V": Rank(s.mat(JX), n * r - dim_V(n, r), generic=False,
-                      meaning="nr - dim V = rank of d(X^T X) on V"),
+        "rank d(F, G)": RightInverse(dF, dF_right, on=("R^{n×r}", "R^{n×r}"), to=("Sym(r)", "Sym(r)"),
+                                     meaning="the constraints (scalar) are independent on T*V"),
+        "dim V": RightInverse(dG, dG_right, on="R^{n×r}", to="Sym(r)",
+                              meaning="X^T X = I_r is a regular level: nr - dim V = dim Sym(r) = r(r+1)/2"),
     }
 
 

@@ -302,11 +302,10 @@ def H_quartic(s):
                  r"-\Big(\sum_ia_ie_i^2\Big)^2")
 def quartic_hamiltonian_for_r_1(s):
     """For r = 1 the quartic Hamiltonian (quartic) takes the form ½(p, p) + Σ a_i²e_i² − (Σ a_i e_i²)² of the Neumann system with a potential of degree 4."""
-    a, e, p = s.a, s.X, s.P
-    n = s.n
-    pp = sum((p[i, 0] * p[i, 0] for i in range(1, n)), p[0, 0] * p[0, 0])
-    quad = sum((a[i] * a[i] * e[i, 0] * e[i, 0] for i in range(1, n)), a[0] * a[0] * e[0, 0] * e[0, 0])
-    mean = sum((a[i] * e[i, 0] * e[i, 0] for i in range(1, n)), a[0] * e[0, 0] * e[0, 0])
+    e, p, A = s.X, s.P, s.A          # r = 1: the columns e, p of R^n, A = diag(a_1, …, a_n)
+    pp = s.tr(p.T @ p)               # (p, p)
+    quad = s.tr(e.T @ A @ A @ e)     # Σ a_i² e_i² = (e, A²e)
+    mean = s.tr(e.T @ A @ e)         # Σ a_i e_i² = (e, Ae)
     return {"(quartic), r = 1": H_quartic(s) - (pp / 2 + quad - mean * mean)}
 
 

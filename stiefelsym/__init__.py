@@ -7,7 +7,7 @@ The public API for writing claims:
 
 A claim is a function of a scene ``s`` returning a dict of named checks:
 residual matrices or scalars that must vanish on T*V(n, r), ``Rank``,
-``Count`` or ``Inverse`` statements.
+``Count``, ``Inverse`` or ``RightInverse`` statements.
 
 Running claims from Python (the results ``stiefelsym verify`` prints, as records):
 
@@ -19,12 +19,12 @@ from stiefelsym._version import __version__
 from stiefelsym.api import verify
 from stiefelsym.claims import Checks, Claim, Registry, Size, SizeSpec, admissible, claim, load_catalog, load_claims_file
 from stiefelsym.ir import block
-from stiefelsym.ir.statements import Count, Inverse, Rank
+from stiefelsym.ir.statements import Count, Inverse, Rank, RightInverse
 from stiefelsym.backends.matrix import Mat, comm
 from stiefelsym.results import Result, ResultList
 from stiefelsym.reports import notebook as _notebook  # noqa: F401,E402 (installs the displays of results and claims)
 from stiefelsym.scene import Flow, Scene
 
-__all__ = ["claim", "admissible", "comm", "block", "Rank", "Count", "Inverse", "Checks", "Claim", "Registry", "Size",
+__all__ = ["claim", "admissible", "comm", "block", "Rank", "Count", "Inverse", "RightInverse", "Checks", "Claim", "Registry", "Size",
            "SizeSpec", "Mat", "Scene", "Flow", "load_catalog", "load_claims_file", "verify", "Result",
            "ResultList", "__version__"]

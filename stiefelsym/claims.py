@@ -25,7 +25,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Callable, Iterable, Mapping
 
-from stiefelsym.ir.statements import Count as Count, Inverse as Inverse, Rank as Rank  # the statements a claim returns (re-exported)
+from stiefelsym.ir.statements import Count as Count, Inverse as Inverse, Rank as Rank, RightInverse as RightInverse  # the statements a claim returns (re-exported)
 
 
 #: seconds a claim's own metadata code (size conditions, erratum sizes) may take per call,

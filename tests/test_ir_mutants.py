@@ -265,7 +265,7 @@ def test_a_graph_claim_is_not_pickled_and_holds_no_graph_object():
 # --------------------------------------------------------------------------- the command
 
 def test_cli_mutate_on_graphs(catalog):
-    res = CliRunner().invoke(mutate_command, ["invariants-so-n", "constraints-independent", "--on", "graphs",
+    res = CliRunner().invoke(mutate_command, ["invariants-so-n", "invariants-complete", "--on", "graphs",
                                               "--method", "rational", "--size", "3,2", "--limit", "4",
                                               "--jobs", "1", "--format", "json"])
     assert res.exit_code == 0, res.output
@@ -273,7 +273,7 @@ def test_cli_mutate_on_graphs(catalog):
     data = json.loads(res.stdout)
     assert data["meta"]["on"] == "graphs" and "--on graphs" in data["meta"]["command"]
     by_id = {c["claim"]: c for c in data["claims"]}
-    assert by_id["constraints-independent"]["skipped"].startswith("not covered on graphs: the claim has no graph "
+    assert by_id["invariants-complete"]["skipped"].startswith("not covered on graphs: the claim has no graph "
                                                                    "with symbolic sizes")
     inv = by_id["invariants-so-n"]
     assert not inv["skipped"] and len(inv["mutants"]) == 4

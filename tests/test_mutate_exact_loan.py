@@ -13,7 +13,7 @@ from stiefelsym.analyses.mutate import run_mutation
 
 #: claims on the equivariant chart (with and without a stated reason, a rank) and on the Cayley chart
 #: (eigenvalues a_i of A, entries), a few mutants each
-CLAIMS = ("euclidean-flow", "neumann-lax", "euler-so-n", "quartic", "adjoint-orbit-dimension")
+CLAIMS = ("euclidean-flow", "neumann-lax", "euler-so-n", "mum-geod", "adjoint-orbit-dimension")
 
 
 def symbolic_runs(claims, monkeypatch, lend=True, **kw):

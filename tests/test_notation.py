@@ -156,9 +156,14 @@ def test_an_ill_typed_mutant_has_no_notation_and_dead_code_no_change():
                     sizes=admissible(3, n_min=3, r_min=2, r_max=2))
     assert changes_text(graph_change(printed, _with_other_dead_code, Size(3, 2))) == "no change in the graph"
     # a changed printed number: the statement it is part of
+    c = load_catalog().get("invariant-metrics")
+    rank = next(m for m in mutants(c) if "drop the term `span` from `unknowns - span`" in m.description)
+    assert changes_text(notation(c, rank, Size(3, 2))) == "in invariant forms: rank(…) = 4 everywhere → rank(…) = 6 everywhere"
+    # a changed right inverse: the identity op(inv(y)) = y it is part of
     c = load_catalog().get("constraints-independent")
-    rank = next(m for m in mutants(c) if "change the coefficient 1 to 2 in `r + 1`" in m.description)
-    assert changes_text(notation(c, rank, Size(3, 2))) == "in rank d(F, G): rank(…) = 6 everywhere → rank(…) = 8 everywhere"
+    right = next(m for m in mutants(c) if "change the coefficient 4 to 5" in m.description)
+    assert changes_text(notation(c, right, Size(3, 2))) == (
+        "in rank d(F, G): ¼[InverseY1 + InverseY1ᵀ, XᵀP] → (1/5)[InverseY1 + InverseY1ᵀ, XᵀP]")
 
 
 def _with_dead_code(s):

@@ -16,8 +16,8 @@ from stiefelsym.proofs.sec5_neumann import H_neumann_euclidean, H_neumann_normal
 
 SEED = 0
 
-FREE_PROVED = ("neumann-flows-coincide-on-psi-zero", "quartic-psi-zero-invariant")
-NEEDS_COORDINATES = ("neum-gras", "neum-gras-sphere", "quartic", "neumann2-kernel")
+FREE_PROVED = ("neumann-flows-coincide-on-psi-zero", "quartic-psi-zero-invariant", "quartic")
+NEEDS_COORDINATES = ("neum-gras", "neum-gras-sphere", "neumann2-kernel")
 #: (exact sizes, modular sizes) of each claim as printed
 SIZES = {
     "neumann-flows-coincide-on-psi-zero": ([(2, 1), (3, 2)], [(3, 2), (4, 2), (4, 4)]),
@@ -107,6 +107,13 @@ def quartic_coefficient(s):
     return {"(quartic)": sec7.H_quartic(s) - (pp / 2 + quad - 2 * mean * mean)}
 
 
+def quartic_trace_of_the_square(s):
+    """Corrupted (quartic), written with products as the claim is: −2(e, Ae)² in place of −(e, Ae)²."""
+    e, p, A = s.X, s.P, s.A
+    mean = s.tr(e.T @ A @ e)
+    return {"(quartic)": sec7.H_quartic(s) - (s.tr(p.T @ p) / 2 + s.tr(e.T @ A @ A @ e) - 2 * mean * mean)}
+
+
 def quartic_plus_a_non_invariant_term(s):
     """Corrupted: a Hamiltonian with tr(XᵀAXG), G generic (not SO(r)-invariant), does not keep Ψ."""
     H = lambda t: sec7.H_quartic(t) + t.tr(t.X.T @ t.A @ t.X @ t.generic("G", "r", "r"))
@@ -130,6 +137,7 @@ CORRUPTIONS = [
     ("neum-gras-sphere", sphere_with_plus_trace, ((2, 1), (4, 3))),
     ("neum-gras-sphere", sphere_at_a_point_off_psi_zero, (None, (4, 3))),
     ("quartic", quartic_coefficient, ((2, 1), (4, 1))),
+    ("quartic", quartic_trace_of_the_square, ((2, 1), (4, 1))),
     ("quartic-psi-zero-invariant", quartic_plus_a_non_invariant_term, ((3, 2), (4, 2))),
     ("neumann2-kernel", neumann2_kernel_off_psi_zero, ((3, 3), (4, 3))),
 ]

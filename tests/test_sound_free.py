@@ -171,7 +171,7 @@ def test_a_claim_left_to_the_fixed_size_methods_says_what_it_reads():
     from stiefelsym.claims import load_catalog
     from stiefelsym.methods.dimension_free import run_free
     cat = load_catalog()
-    expect = {"pencil-rank-a1": "a rank", "quartic": "the eigenvalues a_i of A",
+    expect = {"pencil-rank-a1": "a rank", "mum-geod": "the eigenvalues a_i of A",
               "neumann-torus-dimension": "a Jacobian", "gen-chasles-momentum-ranges": "a count of dimensions",
               "gen-chasles2": "entries of a matrix on R^n",
               "2r-integrals": "its statement depends on the sizes"}

@@ -13,10 +13,10 @@ from typing import Any, Callable
 
 from stiefelsym.ir.families import SizeFamily
 from stiefelsym.ir.graph import Graph, Named, Ref, Size
-from stiefelsym.ir.statements import Count, Inverse, Rank
+from stiefelsym.ir.statements import Count, Inverse, Rank, RightInverse
 from stiefelsym.ir.trace import Dim, TraceRefused, Tracer, TraceScene, block, is_tracer, named, primitive, trace
 
-__all__ = ["Graph", "Named", "Ref", "Size", "SizeFamily", "Count", "Inverse", "Rank", "Dim", "TraceRefused", "Tracer", "TraceScene",
+__all__ = ["Graph", "Named", "Ref", "Size", "SizeFamily", "Count", "Inverse", "Rank", "RightInverse", "Dim", "TraceRefused", "Tracer", "TraceScene",
            "block", "is_tracer", "named", "primitive", "trace", "compile_claim", "graph_pair", "NotDeterministic"]
 
 

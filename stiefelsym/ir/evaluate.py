@@ -18,7 +18,7 @@ from stiefelsym.backends.matrix import CoordinateTracker, Mat
 from stiefelsym.backends.native import backend
 from stiefelsym.backends.matrix import block as _block
 from stiefelsym.ir.graph import Graph, Named, Ref, Size, _encode
-from stiefelsym.ir.statements import Count, InverseIdentities, Rank
+from stiefelsym.ir.statements import Count, InverseIdentities, Rank, RightInverseIdentities
 from stiefelsym.ir.trace import API, PRIMITIVES, VALUE_ATTRS
 
 
@@ -270,6 +270,7 @@ class Evaluator:
         "rank": lambda self, a, frame: Rank(self.arg(a[0], frame), a[1], a[2], a[3]),
         "count": lambda self, a, frame: Count(a[0], a[1], a[2]),
         "inverse": lambda self, a, frame: InverseIdentities(self.arg(a[6], frame), a[7], a[8]),
+        "right_inverse": lambda self, a, frame: RightInverseIdentities(self.arg(a[5], frame), a[6], a[7], a[8]),
     }
     del _binary
 
@@ -296,8 +297,9 @@ class Evaluator:
 
 #: ops whose values are never shared between graphs: the scene itself and a function's parameters
 #: (bound per evaluation), containers (cheap to rebuild, and mutable), traced functions (closures
-#: over their own evaluation) and the rank, count and inverse statements
-UNSHARED = frozenset({"list", "tuple", "dict", "kw", "fn", "rank", "count", "inverse", "scene", "param"})
+#: over their own evaluation) and the rank, count, inverse and right inverse statements
+UNSHARED = frozenset({"list", "tuple", "dict", "kw", "fn", "rank", "count", "inverse", "right_inverse", "scene",
+                      "param"})
 
 
 def shareable(v: Any) -> bool:

@@ -370,6 +370,8 @@ class Reader:
         if op == "inverse":    # op(inv(y)) = y and inv(op(x)) = x for generic x, y of the spaces, everywhere
             return _mk("tuple", (), [_mk("equals", ("everywhere",), (x(u), x(v)))
                                      for us, vs in ((a[2], a[0]), (a[5], a[3])) for u, v in zip(us, vs)])
+        if op == "right_inverse":    # op(inv(y)) = y for generic y of the target spaces, everywhere
+            return _mk("tuple", (), [_mk("equals", ("everywhere",), (x(u), x(v))) for u, v in zip(a[2], a[0])])
         if op == "count":      # a number the claim computed = the printed number
             return _mk("equals", ("",), (x(a[0]), x(a[1])))
         if op == "const":

@@ -27,12 +27,12 @@ from fractions import Fraction
 from typing import Any, Callable
 
 from stiefelsym.ir.graph import Graph, Named, Ref, Size
-from stiefelsym.ir.statements import Count, Inverse, Rank
+from stiefelsym.ir.statements import Count, Inverse, Rank, RightInverse
 from stiefelsym.ir.trace import INVERSE_ELEMENTS, TraceRefused, _NAMED, block
 
 #: the ops a graph may hold (:mod:`.graph`)
 OPS = frozenset("""scene param attr call prim apply add sub neg matmul mul div pow T inv trace entry item block
-    list tuple dict kw fn const rank count inverse""".split())
+    list tuple dict kw fn const rank count inverse right_inverse""".split())
 
 
 class ReplayError(TraceRefused):
@@ -297,6 +297,28 @@ class _Replay:
                 raise ReplayError("refused: an inverse statement applied to other arguments than the graph's")
             return f
         statement = Inverse(table([(inv_y, op_inv_y), (xs, op_x)]), table([(ys, inv_y), (op_x, inv_op_x)]), a[7], a[8])
+        t = getattr(self.scene, "_t", None)
+        if t is None:
+            raise ReplayError("refused: a graph replayed on a scene that is not traced")
+        t.inverse(statement)    # its node now, in the graph's order (the claim's dict finds it made)
+        return statement
+
+    def _right_inverse(self, a, frame):
+        """A right inverse statement again, as :meth:`_inverse` makes an inverse statement: op maps inv(y)
+        (and x) to the graph's op(inv(y)) (op(x)), inv maps y to inv(y)."""
+        ys, inv_y, op_inv_y, xs, op_x = (self.arg(p, frame) for p in a[:5])
+        if type(a[6]) is not tuple or type(a[7]) is not tuple or type(a[8]) is not str:
+            raise ReplayError("refused: a right inverse statement whose spaces or meaning are not literals")
+
+        def table(pairs: list) -> Callable:
+            def f(s: Any, *args: Any) -> Any:
+                key = tuple(getattr(x, "_r", None) for x in args)
+                for arg, value in pairs:
+                    if key == tuple(getattr(x, "_r", None) for x in arg):
+                        return value
+                raise ReplayError("refused: a right inverse statement applied to other arguments than the graph's")
+            return f
+        statement = RightInverse(table([(inv_y, op_inv_y), (xs, op_x)]), table([(ys, inv_y)]), a[6], a[7], a[8])
         t = getattr(self.scene, "_t", None)
         if t is None:
             raise ReplayError("refused: a graph replayed on a scene that is not traced")

@@ -1,4 +1,5 @@
-"""The statements a claim returns besides residuals: a rank and an integer count.
+"""The statements a claim returns besides residuals: a rank, an integer count, an inverse and a right
+inverse.
 
 They hold a traced matrix (and ints) when claim code makes them, and the
 evaluated matrix when a method rebuilds them from the graph."""
@@ -65,6 +66,13 @@ DOMAINS: dict[str, tuple[str, str, str]] = {
 }
 
 
+#: the dimension of each space of :data:`DOMAINS`, as a formula in n, r
+DIMENSIONS: dict[str, str] = {
+    "Sym(r)": "r(r+1)/2", "Sym(n)": "n(n+1)/2", "so(r)": "r(r-1)/2", "so(n)": "n(n-1)/2",
+    "R^{n×r}": "nr", "R^{r×n}": "nr", "R^{r×r}": "r²", "R^{n×n}": "n²",
+}
+
+
 @dataclass(frozen=True)
 class Inverse:
     """The map ``op`` on the product of the spaces ``on`` is invertible at every point of T*V, with
@@ -93,6 +101,38 @@ class Inverse:
             raise TypeError("Inverse: the meaning is a string")
 
 
+@dataclass(frozen=True)
+class RightInverse:
+    """The map ``op`` from the product of the spaces ``on`` to the product of the spaces ``to`` is onto at
+    every point of T*V, with right inverse ``inv``.
+
+    ``op(s, *x)`` takes one matrix per factor of ``on`` and returns one per factor of ``to``; ``inv(s, *y)``
+    the other way round (names of :data:`DOMAINS`).  The statement is decided as identities in generic
+    elements y of ``to`` and x of ``on``, at every point of T*V: op(inv(y)) = y, inv(y) lies in ``on`` and
+    op(x) in ``to`` (symmetric, skew).  So op maps the product ``on`` onto the product ``to`` at every
+    point; a linear op (a differential) has there the full rank dim(``to``).  Nothing is said of
+    inv(op(x)): op need not be injective."""
+
+    op: Any
+    inv: Any
+    on: Any
+    to: Any
+    meaning: str = ""
+
+    def __post_init__(self) -> None:
+        for name in ("on", "to"):
+            spaces = getattr(self, name)
+            spaces = (spaces,) if type(spaces) is str else spaces
+            if type(spaces) not in (tuple, list) or not spaces or any(
+                    type(d) is not str or d not in DOMAINS for d in spaces):
+                raise TypeError(f"RightInverse: {name} is a space or a tuple of spaces among {', '.join(DOMAINS)}")
+            object.__setattr__(self, name, tuple(spaces))
+        if not callable(self.op) or not callable(self.inv):
+            raise TypeError("RightInverse: op and inv are functions of the scene and of one matrix per space")
+        if type(self.meaning) is not str:
+            raise TypeError("RightInverse: the meaning is a string")
+
+
 class InverseIdentities(list):
     """An :class:`Inverse` statement as a method evaluates it: its residuals (op(inv(y)) − y,
     inv(op(x)) − x and the membership residuals), which must all vanish, with the spaces."""
@@ -105,3 +145,18 @@ class InverseIdentities(list):
         space = " × ".join(self.on)
         return (f"{self.meaning + ': ' if self.meaning else ''}op(inv(y)) = y and inv(op(x)) = x for generic "
                 f"x, y in {space}, at every point (op invertible on {space})")
+
+
+class RightInverseIdentities(InverseIdentities):
+    """A :class:`RightInverse` statement as a method evaluates it: its residuals (op(inv(y)) − y and the
+    membership residuals of inv(y) and op(x)), which must all vanish, with the spaces."""
+
+    def __init__(self, residuals: Any, on: tuple, to: tuple, meaning: str) -> None:
+        super().__init__(residuals, on, meaning)
+        self.to = tuple(to)
+
+    def describe(self) -> str:
+        source, target = " × ".join(self.on), " × ".join(self.to)
+        dim = " + ".join(DIMENSIONS[d] for d in self.to)
+        return (f"{self.meaning + ': ' if self.meaning else ''}op(inv(y)) = y for generic y in {target}, "
+                f"at every point (op maps {source} onto {target}: full rank dim({target}) = {dim})")

@@ -26,7 +26,7 @@ from typing import Any, Callable, Iterator
 from stiefelsym.ir.seal import refuse_registration
 from stiefelsym.ir.families import COMPARISONS, SYMBOLS, SizeFamily
 from stiefelsym.ir.graph import _REFS, Graph, Named, Ref, Size, _ref
-from stiefelsym.ir.statements import DOMAINS, Count, Inverse, Rank
+from stiefelsym.ir.statements import DOMAINS, Count, Inverse, Rank, RightInverse
 
 
 class TraceRefused(TypeError):
@@ -993,8 +993,8 @@ class Trace:
             return self.g.add("rank", (m._r, v.expected, v.generic, v.meaning))
         if tv is Count:
             return self.g.add("count", (v.value, v.expected, v.meaning))
-        if tv is Inverse:
-            return self.refuse("an Inverse statement is a check of the claim (a value of the dict it returns)")
+        if tv is Inverse or tv is RightInverse:
+            return self.refuse(f"an {tv.__name__} statement is a check of the claim (a value of the dict it returns)")
         if tv is int or tv is Fraction:
             return self.g.add("const", (v,))
         return self.arg(v)
@@ -1010,18 +1010,23 @@ class Trace:
             return {k: self.mirror(x, self.g.add("item", (node, k))) for k, x in out.items()}
         return Tracer(self, node, ANY)
 
-    def inverse(self, v: Inverse) -> Ref:
+    def inverse(self, v: Inverse | RightInverse) -> Ref:
         """The node of an Inverse statement: op and inv applied, in the claim's scene, to generic
         elements y and x of the product of spaces (fresh generic letters G, symmetrized or skewed), and
-        the residuals op(inv(y)) − y, inv(op(x)) − x and those that say op(x), inv(y) are in the product."""
+        the residuals op(inv(y)) − y, inv(op(x)) − x and those that say op(x), inv(y) are in the product.
+        For a RightInverse (op from the spaces ``on`` to the spaces ``to``), y is an element of ``to`` and
+        x of ``on``, and the residuals are op(inv(y)) − y and those of inv(y) in ``on``, op(x) in ``to``."""
         scene = TraceScene(self, self.g.add("scene", (0,)))
+        right = type(v) is RightInverse
         on = v.on
+        to = v.to if right else v.on
+        name = type(v).__name__
 
-        def elements(letter: str) -> tuple:
+        def elements(letter: str, spaces: tuple) -> tuple:
             self._elements = True
             try:
                 out = []
-                for i, d in enumerate(on):
+                for i, d in enumerate(spaces):
                     m, k, kind = DOMAINS[d]
                     G = scene.generic(f"{INVERSE_ELEMENTS}{letter}{i + 1}", m, k)
                     out.append(G + G.T if kind == "sym" else G - G.T if kind == "skew" else G)
@@ -1029,52 +1034,59 @@ class Trace:
             finally:
                 self._elements = False
 
-        def image(f: Callable, args: tuple, what: str) -> tuple:
+        def image(f: Callable, args: tuple, what: str, spaces: tuple) -> tuple:
             out = f(scene, *args)
             out = (out,) if type(out) is Tracer else out
             # a matrix of the scene (or a value an engine step made, typed when it is evaluated)
-            if type(out) not in (tuple, list) or len(out) != len(on) or any(
+            if type(out) not in (tuple, list) or len(out) != len(spaces) or any(
                     type(x) is not Tracer or x._kind == SCALAR for x in out):
-                return self.refuse(f"Inverse: {what} returns one matrix per space of {' × '.join(on)}")
+                return self.refuse(f"{name}: {what} returns one matrix per space of {' × '.join(spaces)}")
             # ... of the space's own shape: a map of the product into itself (xᵀ on R^{n×r} maps it to
-            # R^{r×n}, and is its own inverse there)
-            for x, d in zip(out, on):
+            # R^{r×n}, and is its own inverse there), or of ``on`` into ``to`` for a right inverse
+            for x, d in zip(out, spaces):
                 want = (self.size(1, DOMAINS[d][0]), self.size(1, DOMAINS[d][1]))
                 if x._kind == MAT and any(_same_size(a, b, self) is not True for a, b in zip(x._shape, want)):
-                    return self.refuse(f"Inverse: {what} returns a {x!r} where {d} has {want[0].d}×{want[1].d} "
-                                       "matrices (a map of the product into itself)")
+                    return self.refuse(f"{name}: {what} returns a {x!r} where {d} has {want[0].d}×{want[1].d} "
+                                       "matrices (a map of the product into " + ("the product of its spaces to)"
+                                                                                 if right else "itself)"))
             return tuple(out)
 
         def member(x: Tracer, d: str) -> Tracer | None:
             kind = DOMAINS[d][2]
             return x - x.T if kind == "sym" else x + x.T if kind == "skew" else None
 
-        ys = elements("Y")
-        inv_y = image(v.inv, ys, "inv")
-        op_inv_y = image(v.op, inv_y, "op")
-        xs = elements("X")
-        op_x = image(v.op, xs, "op")
-        inv_op_x = image(v.inv, op_x, "inv")
+        ys = elements("Y", to)
+        inv_y = image(v.inv, ys, "inv", on)
+        op_inv_y = image(v.op, inv_y, "op", to)
+        xs = elements("X", on)
+        op_x = image(v.op, xs, "op", to)
+        inv_op_x = () if right else image(v.inv, op_x, "inv", on)
         # op and inv see the elements through their arguments only: op(inv(y)) reads y through inv(y),
         # inv(op(x)) reads x through op(x), inv(y) reads no x and op(x) no y (a function that read an
         # element itself would make the identities say nothing: op = const y, inv = const x)
         for out, stop, what in ((inv_y, ys, "inv(y)"), (op_inv_y, inv_y, "op(inv(y))"), (op_x, xs, "op(x)"),
                                 (inv_op_x, op_x, "inv(op(x))")):
+            if not out:
+                continue
             if self._reads_elements(out, stop):
-                return self.refuse(f"Inverse: {what} reads a generic element of the statement other than "
+                return self.refuse(f"{name}: {what} reads a generic element of the statement other than "
                                    "through its argument")
             # the identities hold as rational functions, so they prove op invertible only where every
             # divisor is nonzero: a divisor that is not a constant (tr PᵀP, (PᵀP)⁻¹, x⁻¹, a resolvent)
             # may vanish at some point of T*V or some element, and "at every point" would not follow
             why = self._divisor(out, stop)
             if why:
-                return self.refuse(f"Inverse: {what} divides by {why}, which may vanish at some point of T*V "
-                                   "or some element (op(inv(y)) = y and inv(op(x)) = x would prove op "
-                                   "invertible only where it does not): only constant divisors")
+                return self.refuse(f"{name}: {what} divides by {why}, which may vanish at some point of T*V "
+                                   "or some element (op(inv(y)) = y" + ("" if right else " and inv(op(x)) = x")
+                                   + " would prove op " + ("onto" if right else "invertible")
+                                   + " only where it does not): only constant divisors")
         residuals = [a - b for a, b in zip(op_inv_y, ys)] + [a - b for a, b in zip(inv_op_x, xs)]
-        residuals += [m for m in (member(x, d) for x, d in zip(inv_y + op_x, on + on)) if m is not None]
+        residuals += [m for m in (member(x, d) for x, d in zip(inv_y + op_x, on + to)) if m is not None]
         # the parts as tuples of references (no container node: the statement's node is the first node
         # made after its subgraph, as when a graph is replayed)
+        if right:
+            parts = tuple(tuple(x._r for x in p) for p in (ys, inv_y, op_inv_y, xs, op_x, residuals))
+            return self.g.add("right_inverse", parts + (on, to, v.meaning))
         parts = tuple(tuple(x._r for x in p) for p in (ys, inv_y, op_inv_y, xs, op_x, inv_op_x, residuals))
         return self.g.add("inverse", parts + (on, v.meaning))
 
@@ -1196,7 +1208,8 @@ def trace(func: Callable, n: int | None, r: int | None, constraints: tuple[str, 
             t.refuse("a claim returns a non-empty dict of named checks")
         if any(type(k) is not str for k in out):
             t.refuse("check names are strings")
-        t.g.output = t.g.add("dict", (tuple(out), tuple(t.inverse(v) if type(v) is Inverse else t.structure(v)
+        statements = (Inverse, RightInverse)
+        t.g.output = t.g.add("dict", (tuple(out), tuple(t.inverse(v) if type(v) in statements else t.structure(v)
                                                         for v in out.values())))
     finally:
         _ACTIVE.pop()
