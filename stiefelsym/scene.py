@@ -1807,8 +1807,10 @@ def double_point_of(s: "Scene") -> dict[str, Mat]:
     (every X of rank r, by the QR decomposition), Y = X₀D⁻¹U⁻ᵀ + (I − X₀X₀ᵀ)Z, Ẋ = V generic,
     Ẏ = −Y VᵀY + (I − YXᵀ)W: every point of a dense open subset of the constraint set."""
     r = s.r
-    d = [s.scalar(f"double_d{i + 1}") for i in range(r)]
-    N = [[s.scalar(f"double_u{i + 1}_{j + 1}") if j > i else s.q(0) for j in range(r)] for i in range(r)]
+    # parameters of the engine's names (s.scalar, s.general_params name the claim's own: a claim's
+    # s.scalar("double_d1") was the D of this point)
+    d = [_number(s, s._param(f"double_d{i + 1}")) for i in range(r)]
+    N = [[_number(s, s._param(f"double_u{i + 1}_{j + 1}")) if j > i else s.q(0) for j in range(r)] for i in range(r)]
     U = s.mat([[s.q(1) if i == j else N[i][j] for j in range(r)] for i in range(r)], ("r", "r"))
     Nm = s.mat(N, ("r", "r"))
     Uinv, power = s.Ir, s.Ir
@@ -1818,7 +1820,7 @@ def double_point_of(s: "Scene") -> dict[str, Mat]:
     X0 = s._double_base()
     X = X0 @ _diagonal(s, d) @ U
     Y = (X0 @ _diagonal(s, [s.q(1) / x for x in d]) @ Uinv.T
-         + (s.In - X0 @ X0.T) @ s.general_params("double_Z", s.n, r, ("n", "r")))
-    V = s.general_params("double_V", s.n, r, ("n", "r"))
-    W = s.general_params("double_W", s.n, r, ("n", "r"))
+         + (s.In - X0 @ X0.T) @ s._general_params("double_Z", s.n, r, ("n", "r")))
+    V = s._general_params("double_V", s.n, r, ("n", "r"))
+    W = s._general_params("double_W", s.n, r, ("n", "r"))
     return {"X": X, "Y": Y, "Xdot": V, "Ydot": -(Y @ V.T @ Y) + (s.In - Y @ X.T) @ W}

@@ -37,3 +37,16 @@ def dx_not_moved_by_a_flow_of_x(s):
 def dx_in_the_span_of_y(s):
     """False for r < n (control, the second point): Y Yᵀ DX = DX."""
     return {"r": s.Y @ s.Y.T @ s.DX - s.DX}
+
+
+@claim("adv-s35-scalar-named-like-d", kind="id", sizes=SIZES)
+def scalar_named_like_the_double_points(s):
+    """False: for a free scalar ν of the claim's own, named double_d1, tr(DXᵀDX) = ν² at r = 1."""
+    nu = s.scalar("double_d1")
+    return {"r": s.tr(s.DX.T @ s.DX) - nu * nu}
+
+
+@claim("adv-s35-params-named-like-v", kind="id", sizes=SIZES)
+def params_named_like_the_double_points(s):
+    """False: for a generic n×r matrix G of the claim's own, named double_V, DẊ = G."""
+    return {"r": s.DXdot - s.general_params("double_V", s.n, s.r, ("n", "r"))}

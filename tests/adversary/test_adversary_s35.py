@@ -8,6 +8,7 @@ from test_adversary_s34b import by_claim, fixed, run_all
 
 DOUBLE_FALSE = ("adv-s35-dx-in-the-span-of-x", "adv-s35-dx-dy-against-x", "adv-s35-dx-against-p",
                 "adv-s35-dx-in-the-span-of-y")
+DOUBLE_TRUE = "adv-s35-dx-not-moved-by-x"
 
 
 def test_the_double_point_is_independent_of_the_scenes_point():
@@ -15,8 +16,19 @@ def test_the_double_point_is_independent_of_the_scenes_point():
     proved / checked / numeric at (3,2) by every fixed-size method (free: undecided, DX is a letter of its
     own), and dDX/dt = 0 along a flow of (X, P), true, failed under every fixed-size method (free: proved).
     Closed: the double point is built on a point of V(n, r) of its own (Scene._double_base)."""
-    got = by_claim(run_all("s35_double_point.py"))
+    got = by_claim(run_all("s35_double_point.py", ids=(*DOUBLE_FALSE, DOUBLE_TRUE)))
     for c in DOUBLE_FALSE:
         assert fixed(got[c]) == {"fails"} and got[c]["free"] == "undecided", (c, got[c])
-    true = got["adv-s35-dx-not-moved-by-x"]
+    true = got[DOUBLE_TRUE]
     assert fixed(true) <= set(PASSING) and true["free"] == "proved", true
+
+
+def test_the_double_points_parameters_are_not_the_claims_own():
+    """The double point's D, U, Z, V, W were drawn by s.scalar("double_d1") ... and s.general_params("double_V",
+    ...), the claim's own names: a claim's s.scalar("double_d1") was D's entry, so tr(DXᵀDX) = ν² at r = 1 and
+    DẊ = G (G = s.general_params("double_V", n, r)) were proved / checked / numeric by every fixed-size method.
+    Closed: the double point's parameters are the engine's (names a claim cannot spell)."""
+    got = by_claim(run_all("s35_double_point.py", ids=("adv-s35-scalar-named-like-d", "adv-s35-params-named-like-v"),
+                           size="3,1"))
+    for c in ("adv-s35-scalar-named-like-d", "adv-s35-params-named-like-v"):
+        assert fixed(got[c]) == {"fails"} and got[c]["free"] == "undecided", (c, got[c])
