@@ -3,6 +3,8 @@ divisors (constants that vanish at some size), and what else was tried (tests/ad
 table).  As before: every run is the CLI in a fresh process, each test asserts the CORRECT outcome, and a route
 open today is a strict xfail."""
 
+import pytest
+
 from adversary_cli import PASSING
 from test_adversary_s34b import by_claim, fixed, run_all
 
@@ -32,3 +34,16 @@ def test_the_double_points_parameters_are_not_the_claims_own():
                            size="3,1"))
     for c in ("adv-s35-scalar-named-like-d", "adv-s35-params-named-like-v"):
         assert fixed(got[c]) == {"fails"} and got[c]["free"] == "undecided", (c, got[c])
+
+
+@pytest.mark.xfail(strict=True, reason="open: poisson_checks decides at one generic point whose parameters a claim "
+                   "can name (Bkx) or read from a first call with a tensor that keeps its argument; a tensor "
+                   "that differs from Lie-Poisson by |x - x0|^2<a, b> passes at x0")
+def test_a_tensor_built_on_the_test_point_is_not_passed():
+    """Λ_x(a, b) = ⟨x, [a, b]⟩ + |x − x₀|²⟨a, b⟩ on so(n) is not antisymmetric where x ≠ x₀; with x₀ the test
+    point of poisson_checks (s.generic("Bkx", "n", "n") projected, or spied from a first call) every fixed-size
+    method says proved / checked / numeric at (3,2); with x₀ of another name every one fails (control)."""
+    got = by_claim(run_all("s35_poisson_test_point.py", free=False))
+    assert fixed(got["adv-s35-poisson-control"]) == {"fails"}, got["adv-s35-poisson-control"]
+    for c in ("adv-s35-poisson-named-test-point", "adv-s35-poisson-spied-test-point"):
+        assert not fixed(got[c]) & set(PASSING), (c, got[c])
