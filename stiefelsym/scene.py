@@ -621,7 +621,15 @@ class Scene(PaperObjects):
         return B
 
     def _point(self):
+        if self.chart == "equivariant" and "double base" in self._cache and "point" not in self._cache:
+            self._double_and_own_point()
         return self._cached("point", lambda: self._stiefel_point(""))
+
+    def _double_and_own_point(self) -> None:
+        """The equivariant chart spends its O(n) reduction on one point of V(n, r): the scene's (X, P) or
+        the double point's X₀, not both (they are independent points)."""
+        self.tracker.touch("the double point next to the point (X, P)")
+        raise CoordinateAccess("the double point next to the point (X, P)")
 
     @property
     def X(self) -> Mat:
@@ -720,13 +728,16 @@ class Scene(PaperObjects):
     def _double_base(self) -> Mat:
         """The point X₀ of V(n, r) that the double point X = X₀DU is built on: a generic point of its
         own, independent of the scene's (X, P) and (Y, Q) (the dimension-free scene's DX, DY, DẊ, DẎ
-        are letters of their own, with (D0) only).  On the equivariant chart the O(n) reduction has
-        moved the scene's X to X₀ = E already, so the double point's X₀ is the first r columns of a
-        Cayley transform as for the second point (dense in V(n, r); DU with D diagonal of any signs
-        reaches both components of O(n) at r = n); elsewhere the chart's own construction."""
+        are letters of their own, with (D0) only): the chart's own construction.  On the equivariant
+        chart the O(n) reduction moves X₀ to E (and the stabilizer of E diagonalizes A22, and A11 with
+        the O(r) reduction), as it moves the scene's own X there: a claim that reads both points
+        leaves the chart (:class:`CoordinateAccess`; the symbolic method then takes the Cayley chart,
+        where the two points are independent)."""
         def build() -> Mat:
             if self.chart == "equivariant":
-                return self._equivariant_second_point("double_base_")[0]
+                if "point" in self._cache:
+                    self._double_and_own_point()
+                return self._stiefel_point("double_base_")[0]      # X₀ = E (the chart's reduction)
             return self._stiefel_point("double_base_")[0]
         return self._cached("double base", build)
 
