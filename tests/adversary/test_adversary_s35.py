@@ -47,3 +47,29 @@ def test_a_tensor_built_on_the_test_point_is_not_passed():
     assert fixed(got["adv-s35-poisson-control"]) == {"fails"}, got["adv-s35-poisson-control"]
     for c in ("adv-s35-poisson-named-test-point", "adv-s35-poisson-spied-test-point"):
         assert not fixed(got[c]) & set(PASSING), (c, got[c])
+
+
+def test_the_scope_of_a_free_proof_cannot_be_widened_by_its_text(tmp_path):
+    """magnetic-psi12-conserved is proved for every n at r = 2 (its certificate uses E₁E₁ᵀ + E₂E₂ᵀ = I_r); its
+    record's certificate text edited from "(for every n at r = 2, the only r the claim is stated for: it uses
+    ...)" to "(for every n and r)" was rendered by `report` as "proved" in the table and counted in the headline
+    among "proved for every n and r at once", and `check` accepted it (it compared the certificate's data only).
+    Closed: `report` and `check` compare the certificate's text with the one derived again."""
+    import json
+
+    from adversary_cli import cli
+    out = tmp_path / "run"
+    cli("verify", "magnetic-psi12-conserved", "--method", "free", "--jobs", "1", "--report-dir", str(out))
+    payload = json.loads((out / "results.json").read_text())
+    record = payload["results"][0]
+    assert record["verdict"] == "proved" and "(for every n at r = 2" in record["certificate"], record["certificate"]
+    assert cli("check", str(out / "results.json")).returncode == 0
+    start = record["certificate"].index("(for every n at r = 2")
+    end = record["certificate"].index(")", start) + 1
+    record["certificate"] = record["certificate"][:start] + "(for every n and r)" + record["certificate"][end:]
+    forged = tmp_path / "forged.json"
+    forged.write_text(json.dumps(payload))
+    res = cli("check", str(forged))
+    assert res.returncode == 1 and "REJECTED magnetic-psi12-conserved" in res.stdout, (res.returncode, res.stdout[-1500:])
+    rep = cli("report", "--results", str(forged), "--report-dir", str(tmp_path / "rep"))
+    assert rep.returncode == 2 and not (tmp_path / "rep" / "verification.md").exists(), (rep.returncode, rep.stderr[-800:])
