@@ -73,3 +73,12 @@ def test_the_scope_of_a_free_proof_cannot_be_widened_by_its_text(tmp_path):
     assert res.returncode == 1 and "REJECTED magnetic-psi12-conserved" in res.stdout, (res.returncode, res.stdout[-1500:])
     rep = cli("report", "--results", str(forged), "--report-dir", str(tmp_path / "rep"))
     assert rep.returncode == 2 and not (tmp_path / "rep" / "verification.md").exists(), (rep.returncode, rep.stderr[-800:])
+
+
+def test_a_generic_matrix_named_w_is_not_the_kernel_frame():
+    """K G = 0 with K = twisted.kernel_annihilator(s) and G = s.generic("W", "n", "r") (a generic matrix of the
+    claim's own) was proved / checked / numeric at (3,1) by every fixed-size method: kernel_frame drew W by
+    s.generic("W", "n", "r"); free: undecided (two letters).  Closed: the frame's parameters are the engine's."""
+    got = by_claim(run_all("s35_kernel_frame_named.py", size="3,1"))
+    for c in ("adv-s35-kernel-frame-named-w", "adv-s35-kernel-frame-named-v"):
+        assert fixed(got[c]) == {"fails"} and got[c]["free"] == "undecided", (c, got[c])
