@@ -621,7 +621,15 @@ class Scene(PaperObjects):
         return B
 
     def _point(self):
+        if self.chart == "equivariant" and "double base" in self._cache and "point" not in self._cache:
+            self._double_and_own_point()
         return self._cached("point", lambda: self._stiefel_point(""))
+
+    def _double_and_own_point(self) -> None:
+        """The equivariant chart spends its O(n) reduction on one point of V(n, r): the scene's (X, P) or
+        the double point's X₀, not both (they are independent points)."""
+        self.tracker.touch("the double point next to the point (X, P)")
+        raise CoordinateAccess("the double point next to the point (X, P)")
 
     @property
     def X(self) -> Mat:
@@ -667,7 +675,7 @@ class Scene(PaperObjects):
                 "of the Cayley transform of [[S11, -K^T], [K, 0]], S11 skew, K generic; dense in V(n, r)"
                 + comp + "), Q = YW' + (I - YY^T)Z' (W' skew, Z' generic)" + out)
 
-    def _equivariant_second_point(self) -> tuple[Mat, Mat]:
+    def _equivariant_second_point(self, prefix: str = "second_") -> tuple[Mat, Mat]:
         """A generic second point (Y, Q) of T*V(n, r) on the equivariant chart: the first r columns
         of the Cayley transform (I − S)(I + S)⁻¹ of the skew S = [[S11, −Kᵀ], [K, 0]] (S11 skew r × r,
         K generic (n − r) × r), which are Y = [I − S11 − KᵀK; −2K] M⁻¹ with M = I + S11 + KᵀK
@@ -682,11 +690,11 @@ class Scene(PaperObjects):
         n, r = self.n, self.r
         tr = self._tracker
         Ir = self.identity(r, "r")
-        S11 = self._skew_params("second_S", r, "r")
+        S11 = self._skew_params(f"{prefix}S", r, "r")
         Kfull = self.zeros(n, r, ("n", "r"))
         for i in range(r, n):
             for j in range(r):
-                Kfull._a[i, j] = self._param(param_name("second_K", i, j))
+                Kfull._a[i, j] = self._param(param_name(f"{prefix}K", i, j))
         KtK = Kfull.T @ Kfull
         M = Ir + S11 + KtK
         D0 = np.eye(n, r, dtype=np.int64)
@@ -697,8 +705,8 @@ class Scene(PaperObjects):
             Dr = np.eye(r, dtype=np.int64)
             Dr[0, 0] = -1
             Y = Y @ Mat._consts(Dr, self._field, ("r", "r"), tr)
-        W = self._skew_params("second_W", r, "r")
-        Z = self._general_params("second_Z", n, r, ("n", "r"))
+        W = self._skew_params(f"{prefix}W", r, "r")
+        Z = self._general_params(f"{prefix}Z", n, r, ("n", "r"))
         In = self.identity(n, "n")
         Q = Y @ W + (In - Y @ Y.T) @ Z
         self._done_with(Ir, S11, Kfull, KtK, M, E, N, W, Z, In)
@@ -716,6 +724,22 @@ class Scene(PaperObjects):
     # -- a generic point (X, Y, Ẋ, Ẏ) of the double Neumann system: XᵀY = I_r, ẊᵀY + XᵀẎ = 0 ------------
     def _double(self) -> dict:
         return self._cached("double point", lambda: double_point_of(self))
+
+    def _double_base(self) -> Mat:
+        """The point X₀ of V(n, r) that the double point X = X₀DU is built on: a generic point of its
+        own, independent of the scene's (X, P) and (Y, Q) (the dimension-free scene's DX, DY, DẊ, DẎ
+        are letters of their own, with (D0) only): the chart's own construction.  On the equivariant
+        chart the O(n) reduction moves X₀ to E (and the stabilizer of E diagonalizes A22, and A11 with
+        the O(r) reduction), as it moves the scene's own X there: a claim that reads both points
+        leaves the chart (:class:`CoordinateAccess`; the symbolic method then takes the Cayley chart,
+        where the two points are independent)."""
+        def build() -> Mat:
+            if self.chart == "equivariant":
+                if "point" in self._cache:
+                    self._double_and_own_point()
+                return self._stiefel_point("double_base_")[0]      # X₀ = E (the chart's reduction)
+            return self._stiefel_point("double_base_")[0]
+        return self._cached("double base", build)
 
     @property
     def DX(self) -> Mat:
@@ -1539,6 +1563,9 @@ class _LiftedScene(Scene):
     def Ainv(self) -> Mat:
         return self._cached("Ainv", lambda: self._lift_primitive(self.base.Ainv, None))
 
+    def _double_base(self) -> Mat:
+        return self._cached("double base", lambda: self._lift_primitive(self.base._double_base(), None))
+
     @property
     def a(self):
         xs = self._cached("a", lambda: self._lift_primitive(self.base.a, None))
@@ -1787,22 +1814,24 @@ def _diagonal(s: "Scene", values: list) -> Mat:
 def double_point_of(s: "Scene") -> dict[str, Mat]:
     """The generic point of :func:`double_point` of a coordinate scene.
 
-    X = X₀DU with X₀ the scene's point of V(n, r), D diagonal and U unipotent upper triangular
+    X = X₀DU with X₀ a point of V(n, r) of its own (:meth:`Scene._double_base`), D diagonal and U unipotent upper triangular
     (every X of rank r, by the QR decomposition), Y = X₀D⁻¹U⁻ᵀ + (I − X₀X₀ᵀ)Z, Ẋ = V generic,
     Ẏ = −Y VᵀY + (I − YXᵀ)W: every point of a dense open subset of the constraint set."""
     r = s.r
-    d = [s.scalar(f"double_d{i + 1}") for i in range(r)]
-    N = [[s.scalar(f"double_u{i + 1}_{j + 1}") if j > i else s.q(0) for j in range(r)] for i in range(r)]
+    # parameters of the engine's names (s.scalar, s.general_params name the claim's own: a claim's
+    # s.scalar("double_d1") was the D of this point)
+    d = [_number(s, s._param(f"double_d{i + 1}")) for i in range(r)]
+    N = [[_number(s, s._param(f"double_u{i + 1}_{j + 1}")) if j > i else s.q(0) for j in range(r)] for i in range(r)]
     U = s.mat([[s.q(1) if i == j else N[i][j] for j in range(r)] for i in range(r)], ("r", "r"))
     Nm = s.mat(N, ("r", "r"))
     Uinv, power = s.Ir, s.Ir
     for _ in range(r - 1):
         power = power @ (-Nm)
         Uinv = Uinv + power
-    X0 = s.X
+    X0 = s._double_base()
     X = X0 @ _diagonal(s, d) @ U
     Y = (X0 @ _diagonal(s, [s.q(1) / x for x in d]) @ Uinv.T
-         + (s.In - X0 @ X0.T) @ s.general_params("double_Z", s.n, r, ("n", "r")))
-    V = s.general_params("double_V", s.n, r, ("n", "r"))
-    W = s.general_params("double_W", s.n, r, ("n", "r"))
+         + (s.In - X0 @ X0.T) @ s._general_params("double_Z", s.n, r, ("n", "r")))
+    V = s._general_params("double_V", s.n, r, ("n", "r"))
+    W = s._general_params("double_W", s.n, r, ("n", "r"))
     return {"X": X, "Y": Y, "Xdot": V, "Ydot": -(Y @ V.T @ Y) + (s.In - Y @ X.T) @ W}

@@ -381,15 +381,16 @@ def eigenspace_projector(s) -> Mat:
 
 
 def kernel_frame(s) -> Mat:
-    """W, a generic constant n×r matrix (the claim's parameters W_ij at fixed sizes): the frame whose
-    orthogonal complement ker Wᵀ is the subspace :func:`kernel_annihilator` annihilates.  A letter W of the
-    dimension-free backend (with its transpose), tied to that annihilator."""
+    """W, a generic constant n×r matrix (parameters of the engine's at fixed sizes, W_ij, which no claim can
+    name: a claim's s.generic("W", "n", "r") is a matrix of its own, as on the dimension-free backend): the
+    frame whose orthogonal complement ker Wᵀ is the subspace :func:`kernel_annihilator` annihilates.  A letter W
+    of the dimension-free backend (with its transpose), tied to that annihilator."""
     if _at_point(s):
         return s.lift(kernel_frame(s.inner))
     if _is_free(s):
         return s.kernel_frame()
     s = _scene(s, "a generic constant n x r matrix W")
-    return s.generic("W", "n", "r")
+    return s._cached("kernel frame", lambda: s._general_params("kernel_W", s.n, s.r, ("n", "r")))
 
 
 def _det(rows: list) -> Any:

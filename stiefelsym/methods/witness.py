@@ -65,7 +65,7 @@ def _letters(scene: Any) -> dict[str, Any]:
             except (AttributeError, TypeError, ValueError):
                 continue
     params = scene._point_values()
-    built = [w for w in WITNESS_POINTS if any(k.startswith("scalar:" + w[0]) for k in params)]
+    built = [w for w in WITNESS_POINTS if any(k.startswith(w[0]) for k in params)]
     for _, builder, keys in built:
         # a point the claim built from parameters of its own (the double Neumann system's (X, Y, Ẋ, Ẏ)),
         # rebuilt from them (named, so the same values); it replaces the chart's X0, P
@@ -89,7 +89,7 @@ def _letters(scene: Any) -> dict[str, Any]:
         out["A"] = [[_fraction(params[f"a_{i + 1}"]) if i == j else Fraction(0) for j in range(n)]
                     for i in range(n)]
     for key, v in params.items():              # the claim's own scalars (ν, ...), but not a point's parameters
-        if key.startswith("scalar:") and not any(key.startswith("scalar:" + w[0]) for w in WITNESS_POINTS):
+        if key.startswith("scalar:"):
             out[key.split(":", 1)[1]] = _fraction(v)
     return out
 

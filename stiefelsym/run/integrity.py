@@ -72,7 +72,10 @@ def certificate_binding_problems(records: Iterable[Any], registry: Registry) -> 
         if key not in done:
             done[key] = run_free_guarded(claim, func)
         again = done[key]
-        if again.verdict != "proved" or _canonical(again.certificate_data) != _canonical(get("certificate_data")):
+        # the certificate's data and its text (the text states the proof's scope: every n and r, or every n
+        # at one r where it uses a hypothesis of that r; the report renders it)
+        if again.verdict != "proved" or _canonical(again.certificate_data) != _canonical(get("certificate_data")) \
+                or again.certificate != get("certificate"):
             out.append(f"{cid}{f' ({variant})' if variant else ''}: the certificate is not the one the claim's graph "
                        f"gives (the dimension-free method again: {again.verdict})")
     return out
@@ -292,6 +295,15 @@ def check_results(records: list[dict], registry: Registry, echo: Callable[[str],
             if again.verdict != "proved" or _canonical(again.certificate_data) != _canonical(r.get("certificate_data")):
                 echo(f"REJECTED {where}: the certificate is not the one the claim's graph gives "
                      f"(re-derived: {again.verdict})")
+                bad += 1
+                continue
+            # ... and its words: the certificate's text states the scope of the proof (for every n and r,
+            # or for every n at r = 2 where it uses a hypothesis of that r), which the report renders
+            # (its `expected` is the run's policy, set when the run finishes, not the method's)
+            edited = [k for k in _evidence_edits(r, again.to_json()) if k != "expected"]
+            if edited:
+                echo(f"REJECTED {where}: its evidence is not what the dimension-free method again gives "
+                     f"({', '.join(edited)})")
                 bad += 1
     echo(f"{total} records checked, {bad} rejected")
     return bad
