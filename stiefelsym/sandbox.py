@@ -10,8 +10,9 @@ parsed option, no command line and no environment of the run in its memory.
 Where the platform allows it (Linux, util-linux ``unshare``, user namespaces), the interpreter runs in new
 user, pid, mount and network namespaces with its own ``/proc`` (the verifying process and every process
 outside are not visible: no ``/proc/<ppid>/cmdline``), and, before anything of the file is read, it makes
-every mount read-only, mounts a private tmpfs on ``/tmp`` (the claims file's own folder bound read-only
-into it when it lives there) and locks that view by entering a user namespace of its own (mounts inherited
+every mount read-only, mounts a private tmpfs on ``/tmp`` (what the interpreter reads there bound
+read-only into it: the claims file's folder, or the file alone when it lies in /tmp itself, never the host's
+whole /tmp; see :func:`_keep`), enters its working directory again by path in that view and locks that view by entering a user namespace of its own (mounts inherited
 from a more privileged namespace cannot be made writable again, nor unmounted, from a less privileged one).
 The file then writes nowhere but its private ``/tmp`` (and the pipes it was given), reaches no network and
 no process outside, and when the namespace's first process ends the kernel ends every process in it.
@@ -283,10 +284,11 @@ def _mounts() -> list[tuple[bytes, int, str]]:
 
 def lock_down(keep: list[str]) -> None:
     """In fresh user + mount namespaces (as root there), before any thread is started: every mount read-only,
-    without devices and set-uid programs, a private tmpfs on /tmp (``keep``, folders under /tmp, bound
-    read-only into it), then every capability dropped for good (bounding set, permitted, effective, ambient;
-    no new privileges), so that no mount can be changed again, in this namespace or in one the file creates
-    (there the mounts made here are locked).  Raises :class:`SandboxError` when any step fails."""
+    without devices and set-uid programs, a private tmpfs on /tmp (``keep``, folders and files under /tmp,
+    bound read-only into it: see :func:`_keep`), then every capability dropped for good (bounding set,
+    permitted, effective, ambient; no new privileges), so that no mount can be changed again, in this namespace
+    or in one the file creates (there the mounts made here are locked).  Raises :class:`SandboxError` when any
+    step fails."""
     libc = _libc()
     try:
         _mount(libc, None, b"/", None, MS_REC | MS_PRIVATE, None)
@@ -298,12 +300,17 @@ def lock_down(keep: list[str]) -> None:
                 if not os.path.ismount(target) and exc.errno == errno.EINVAL:
                     continue        # a mount hidden under another one (its mount point resolves to that one)
                 raise
-        held = [(folder, os.open(folder, os.O_PATH | os.O_DIRECTORY)) for folder in keep]
+        # held before the tmpfs hides them; a folder is bound with what is mounted below it (never /tmp itself,
+        # whose mounts below would then include the private tmpfs), a file alone
+        held = [(p, os.path.isdir(p), os.open(p, os.O_PATH | (os.O_DIRECTORY if os.path.isdir(p) else 0)))
+                for p in keep]
         _mount(libc, b"tmpfs", b"/tmp", b"tmpfs", MS_NOSUID | MS_NODEV, TMP_OPTIONS)
-        for folder, fd in held:
-            os.makedirs(folder, exist_ok=True)
-            path = folder.encode()
-            _mount(libc, f"/proc/self/fd/{fd}".encode(), path, None, MS_BIND | MS_REC, None)
+        for target, folder, fd in held:
+            os.makedirs(target if folder else os.path.dirname(target), exist_ok=True)
+            if not folder:
+                os.close(os.open(target, os.O_WRONLY | os.O_CREAT, 0o444))     # the mount point of a file
+            path = target.encode()
+            _mount(libc, f"/proc/self/fd/{fd}".encode(), path, None, MS_BIND | (MS_REC if folder else 0), None)
             _mount(libc, None, path, None, MS_REMOUNT | MS_BIND | MS_RDONLY | MS_NOSUID | MS_NODEV, None)
             os.close(fd)
         _drop_capabilities(libc)
@@ -339,21 +346,44 @@ def _drop_capabilities(libc: Any) -> None:
 
 
 def _keep(path: str) -> list[str]:
-    """The folders under /tmp the interpreter reads from (hidden by the private tmpfs otherwise): the claims
-    file's, the interpreter's, and those of the search path (the package itself may be a copy there),
-    outermost only."""
+    """What the interpreter reads under /tmp (hidden by the private tmpfs otherwise), outermost only: the folders
+    under /tmp of the claims file, of the interpreter and of the search path (the package itself may be a copy
+    there), each whole; never /tmp itself: of /tmp, the claims file when it lies there, and when /tmp is on the
+    search path (a command run from /tmp with ``python -m``) what an import can load from it, the files of a
+    module's suffix and the folders of a package (with an ``__init__``; a namespace package there is not seen),
+    a symbolic link as its target."""
+    import importlib.machinery
     tmp = os.path.realpath("/tmp")
-    found = []
-    here = [os.path.dirname(os.path.realpath(path)), os.path.dirname(os.path.realpath(sys.executable)),
-            sys.prefix, sys.base_prefix]
-    for p in [os.path.realpath(x) for x in here + [x for x in sys.path if x]]:
-        if (p == tmp or p.startswith(tmp + os.sep)) and os.path.isdir(p):
-            found.append(p)
+    file = os.path.realpath(path)
+    here = [os.path.dirname(file), os.path.dirname(os.path.realpath(sys.executable)), sys.prefix, sys.base_prefix]
+    found = [p for p in (os.path.realpath(x) for x in here + [x for x in sys.path if x])
+             if p.startswith(tmp + os.sep) and os.path.isdir(p)]
+    if os.path.dirname(file) == tmp and os.path.isfile(file):
+        found.append(file)
+    if any(os.path.realpath(x) == tmp for x in sys.path if x):
+        suffixes = tuple(importlib.machinery.all_suffixes())
+        for name in sorted(os.listdir(tmp)):
+            entry = os.path.join(tmp, name)
+            if name.endswith(suffixes) and os.path.isfile(entry):
+                found.append(entry)
+            elif name.isidentifier() and os.path.isdir(entry) and any(
+                    os.path.isfile(os.path.join(entry, "__init__" + x)) for x in suffixes):
+                found.append(entry)
     out: list[str] = []
     for p in sorted(set(found)):
         if not any(p == q or p.startswith(q + os.sep) for q in out):
             out.append(p)
     return out
+
+
+def _enter(folder: str) -> None:
+    """The working directory entered again by its path in the confined view (a directory entered before the
+    mounts would still see what they hide: the host's /tmp through a working directory there), or / when that
+    path is not in the view."""
+    try:
+        os.chdir(folder)
+    except OSError:
+        os.chdir("/")
 
 
 def host() -> None:
@@ -373,8 +403,10 @@ def host() -> None:
     confined = bool(config.pop("confine"))
     if confined:
         try:
+            here = os.getcwd()
             lock_down(_keep(config["file"]))
-        except SandboxError as exc:
+            _enter(here)
+        except (SandboxError, OSError) as exc:
             sys.stderr.write(f"stiefelsym: no confinement for the claims file ({exc})\n")
             sys.stderr.flush()
             os._exit(3)

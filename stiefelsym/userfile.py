@@ -765,7 +765,7 @@ def _phase(path: Path, more: dict | None, timeout: float, limit: int | None, cap
     """One phase in a fresh interpreter (:func:`stiefelsym.sandbox.run`): its decoded answer, and the
     confinement it ran under."""
     from .sandbox import run
-    config = {"file": str(path), "more": more, "timeout": timeout, "memory": limit}
+    config = {"file": os.path.realpath(path), "more": more, "timeout": timeout, "memory": limit}
     try:
         data, how = run(config, capture, FILE_SECONDS)
     except ProcessesLeft as exc:

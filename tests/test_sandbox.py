@@ -283,21 +283,97 @@ def test_a_file_whose_claims_have_graphs_of_symbolic_sizes_is_traced_once(tmp_pa
     assert (20, 2) in reg.get("once-number").func.sizes() and reg.get("once-free").func.sizes() == []
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "a claims file directly in /tmp (its folder is /tmp itself, where the interpreter's private tmpfs is "
-    "mounted) is not seen by the confined interpreter: 'claims file not found' (a file in a folder under /tmp "
-    "is bound back and found)"))
+CLAIM_IN_TMP = textwrap.dedent('''
+    from stiefelsym import admissible, claim
+    {imports}
+
+    @claim("{cid}", kind="id", sizes=admissible(n_max=3))
+    def c(s):
+        """X^T X = I{what}."""
+        return {{"XtX - I": s.X.T @ s.X - {identity}}}
+''')
+
+
+def _in_tmp(*names: str) -> list[Path]:
+    mark = uuid.uuid4().hex
+    return [Path("/tmp") / f"stiefelsym_top_{mark}_{name}" for name in names]
+
+
+def _verify_here(claims: str, cwd: str, cid: str) -> subprocess.CompletedProcess:
+    out = subprocess.run([sys.executable, "-m", "stiefelsym", "verify", "--claims", claims, "--size", "3,2",
+                          "--method", "modular", "--jobs", "1", "--report-dir", f"/tmp/stiefelsym-rep-{uuid.uuid4().hex}"],
+                         cwd=cwd, capture_output=True, text=True, timeout=300,
+                         env=dict(_env("namespaces"), PYTHONPATH=str(ROOT)))
+    assert f"{cid} (3,2) modular: checked" in out.stdout, (out.stdout[-500:], out.stderr[-800:])
+    return out
+
+
 def test_a_claims_file_directly_in_tmp_is_traced(tmp_path):
-    import shutil
-    src = tmp_path / "one.py"
-    src.write_text("from stiefelsym import admissible, claim\n\n"
-                   "@claim('tmp-top', kind='id', sizes=admissible(n_max=3))\n"
-                   "def c(s):\n    return {'XtX - I': s.X.T @ s.X - s.Ir}\n")
-    top = Path("/tmp") / f"stiefelsym-top-{uuid.uuid4().hex}.py"
-    shutil.copy(src, top)
+    """/tmp itself is never bound into the interpreter's view: the claims file alone is, read-only."""
+    top, = _in_tmp("one.py")
+    top.write_text(CLAIM_IN_TMP.format(cid="tmp-top", imports="", what="", identity="s.Ir"))
     try:
-        out = subprocess.run([sys.executable, "-m", "stiefelsym", "verify", "--claims", str(top), "--size", "3,2",
-                              "--method", "modular", "--jobs", "1"], capture_output=True, text=True, timeout=300)
+        _verify_here(str(top), str(ROOT), "tmp-top")
     finally:
         top.unlink()
-    assert "tmp-top (3,2) modular: checked" in out.stdout, (out.stdout[-500:], out.stderr[-500:])
+
+
+def test_a_claims_file_in_tmp_imports_a_sibling_module_when_tmp_is_on_the_search_path():
+    """Run from /tmp with ``python -m`` (so /tmp is on the search path, as any working directory would be), a
+    claims file given by a relative path imports a module next to it, as it would in any other folder; its
+    working directory in the interpreter is the confined view's /tmp, not the host's."""
+    top, helper = _in_tmp("two.py", "helper.py")
+    helper.write_text("def unit(s):\n    return s.Ir\n")
+    top.write_text(CLAIM_IN_TMP.format(cid="tmp-sibling", imports=f"import {helper.stem} as helper",
+                                       what=" (I from a sibling module)", identity="helper.unit(s)"))
+    try:
+        _verify_here(top.name, "/tmp", "tmp-sibling")
+    finally:
+        top.unlink()
+        helper.unlink()
+
+
+@NAMESPACES
+def test_what_of_tmp_the_interpreter_sees_is_the_file_and_the_modules_it_may_import(tmp_path):
+    """Of the host's /tmp the interpreter sees (read-only) the claims file and, when /tmp is on the search path,
+    the modules there only: not another file of /tmp, not through its working directory, and it writes none of
+    them."""
+    top, other, helper = _in_tmp("look.py", "secret.txt", "mod.py")
+    other.write_text("host data\n")
+    helper.write_text("X = 1\n")
+    top.write_text(textwrap.dedent(f'''
+        import os
+        import sys
+
+        from stiefelsym import admissible, claim
+
+        seen = sorted(os.listdir("/tmp"))
+        try:
+            open({other.name!r}).read()
+            relative = "read"
+        except OSError as exc:
+            relative = type(exc).__name__
+        try:
+            with open({str(helper)!r}, "a") as f:
+                f.write("#")
+            wrote = "wrote"
+        except OSError as exc:
+            wrote = type(exc).__name__
+        print(f"LOOK cwd={{os.getcwd()}} seen={{seen}} relative={{relative}} wrote={{wrote}}", file=sys.stderr)
+
+
+        @claim("tmp-look", kind="id", sizes=admissible(n_max=3))
+        def look(s):
+            """X^T X = I."""
+            return {{"r": s.X.T @ s.X - s.Ir}}
+    '''))
+    try:
+        out = _verify_here(top.name, "/tmp", "tmp-look")
+        line = next(x for x in out.stderr.splitlines() if x.startswith("LOOK"))
+        assert helper.read_text() == "X = 1\n"
+    finally:
+        for p in (top, other, helper):
+            p.unlink()
+    assert "cwd=/tmp" in line and "relative=FileNotFoundError" in line and "wrote=OSError" in line, line
+    seen = line.split("seen=")[1].split(" relative=")[0]
+    assert top.name in seen and helper.name in seen and other.name not in seen, line
