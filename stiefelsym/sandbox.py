@@ -3,7 +3,8 @@
 :func:`stiefelsym.userfile.load_claims_isolated` never lets a claims file run in a process that knows the
 run: :func:`run` *spawns* (never forks) ``python -I -B -c BOOT`` with a neutral argv, a minimal environment
 (no ``STIEFELSYM_*``, no user variable), its standard input carrying only what the phase needs (the file's
-path, the search path of the package, the budgets, and in the second phase the sizes of the claims that
+path, the search path of the package, the engine's tracing budgets (never the run's), and in the second
+phase the sizes of the claims that
 need them), and its standard output carrying the answer.  So the process that imports the file holds no
 parsed option, no command line and no environment of the run in its memory.
 

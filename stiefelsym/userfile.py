@@ -8,7 +8,7 @@ and the process that does knows nothing of the run.  :func:`load_claims_isolated
 
 1. spawns a fresh interpreter (:mod:`stiefelsym.sandbox`: neutral argv, minimal
    environment, confined in namespaces where the platform has them) and gives it
-   on its standard input the file's path and the budgets, *no size*: the first
+   on its standard input the file's path, *no size*, no budget of the run: the first
    phase.  It imports the file (:func:`stiefelsym.claims.load_claims_file`:
    sealed engine, deadline, standard output to standard error) and, for each
    claim, forks a child that traces that claim alone (no claim's graph can depend
@@ -59,7 +59,7 @@ from fractions import Fraction
 from pathlib import Path
 from typing import Any, Callable, Iterable, Sequence
 
-from .pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT, GIB
+from .pool import DEFAULT_MEMORY_GIB, GIB
 from .confine import ProcessesLeft
 from .claims import CatalogError, Claim, ClaimTimeout, Correction, Registry, Size, SizeSpec, load_claims_file
 
@@ -67,8 +67,12 @@ from .claims import CatalogError, Claim, ClaimTimeout, Correction, Registry, Siz
 TABLE_N = 16
 #: at most this many sizes in a claim's size statement
 MAX_SIZES = 2000
-#: seconds the tracing of one claim (every size, its corrections) may take, and the whole file
+#: the tracing budgets: seconds the tracing of one function at one size may take, and the address space (GiB)
+#: of the process that traces it; and seconds the whole file may take.  They are the engine's, the same in
+#: every run: the run's budgets (--timeout, --memory) never reach the interpreter, where the file could read
+#: them (its frames, its objects, getrlimit) and trace another graph in another run
 CLAIM_SECONDS = 300.0
+CLAIM_MEMORY_GIB = DEFAULT_MEMORY_GIB
 FILE_SECONDS = 3600.0
 #: at most this much of what the file's processes print is shown
 CAPTURE_BYTES = 1 << 22
@@ -542,7 +546,7 @@ class _Recorded:
 
 
 class _Budget:
-    """A trace that did not finish in the child: it ran out of the run's time budget, or its process died.
+    """A trace that did not finish in the child: it ran out of the tracing time budget (:data:`CLAIM_SECONDS`), or its process died.
     Replayed as an exception (:class:`TraceEnded`) in whatever process asks for the graph: never as the
     process's own end (a replay that exited or killed itself would let the file choose the exit status of
     ``check`` or ``derive``, which run it in their own process), so the run's verdict is ``inconclusive`` (out of
@@ -761,11 +765,14 @@ def _engine_unchanged(before: dict[str, str], path: Path) -> None:
                            "claims file added before running again")
 
 
-def _phase(path: Path, more: dict | None, timeout: float, limit: int | None, capture: int) -> tuple[Any, str]:
+def _phase(path: Path, more: dict | None, capture: int) -> tuple[Any, str]:
     """One phase in a fresh interpreter (:func:`stiefelsym.sandbox.run`): its decoded answer, and the
-    confinement it ran under."""
+    confinement it ran under.  It is given the file and, in the second phase, ``more``, the sizes it is
+    asked about; the tracing budgets are the engine's constants (:data:`CLAIM_SECONDS`,
+    :data:`CLAIM_MEMORY_GIB`), nothing of the run."""
     from .sandbox import run
-    config = {"file": os.path.realpath(path), "more": more, "timeout": timeout, "memory": limit}
+    config = {"file": os.path.realpath(path), "more": more, "timeout": CLAIM_SECONDS,
+              "memory": int(CLAIM_MEMORY_GIB * GIB)}
     try:
         data, how = run(config, capture, FILE_SECONDS)
     except ProcessesLeft as exc:
@@ -850,11 +857,10 @@ def _merge(claims: list, extra: list, more: dict) -> None:
             graphs[f].append([key, entry])
 
 
-def load_claims_isolated(path: str | Path, sizes: Iterable[Any] = (), timeout: float = DEFAULT_TIMEOUT,
-                         memory: float | None = DEFAULT_MEMORY_GIB) -> Registry:
+def load_claims_isolated(path: str | Path, sizes: Iterable[Any] = ()) -> Registry:
     """The claims of a user's file, imported and traced in fresh interpreters (see the module docstring),
-    at their listed sizes and at ``sizes`` (Size or (n, r)) where they admit them; each trace has the run's
-    ``timeout`` (seconds) and ``memory`` (GiB) as a run in a worker has.  Raises
+    at their listed sizes and at ``sizes`` (Size or (n, r)) where they admit them; each trace has the engine's
+    budgets (:data:`CLAIM_SECONDS`, :data:`CLAIM_MEMORY_GIB`), the same in every run.  Raises
     :class:`~stiefelsym.claims.CatalogError` as :func:`~stiefelsym.claims.load_claims_file` does."""
     if not (hasattr(os, "fork") and hasattr(os, "posix_spawn")):
         return load_claims_file(path)
@@ -870,13 +876,12 @@ def load_claims_isolated(path: str | Path, sizes: Iterable[Any] = (), timeout: f
     engine = _preload()
     sys.stdout.flush()
     sys.stderr.flush()
-    limit = None if memory is None else int(memory * GIB)
     with tempfile.TemporaryFile() as capture:
         try:
-            claims, how = _phase(p, None, timeout, limit, capture.fileno())     # no size of the run
+            claims, how = _phase(p, None, capture.fileno())     # no size of the run
             more = _second_phase(claims, needed)
             if more:                                                          # only what needs a size
-                extra, how2 = _phase(p, more, timeout, limit, capture.fileno())
+                extra, how2 = _phase(p, more, capture.fileno())
                 _merge(claims, extra, more)
                 how = how if how2 == how else f"{how}, then {how2}"
         except (WireError, ValueError, TypeError, RecursionError) as exc:

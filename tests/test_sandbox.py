@@ -377,3 +377,74 @@ def test_what_of_tmp_the_interpreter_sees_is_the_file_and_the_modules_it_may_imp
     assert "cwd=/tmp" in line and "relative=FileNotFoundError" in line and "wrote=OSError" in line, line
     seen = line.split("seen=")[1].split(" relative=")[0]
     assert top.name in seen and helper.name in seen and other.name not in seen, line
+
+
+LOOKS_FOR_THE_RUN = textwrap.dedent('''
+    import gc
+    import os
+    import resource
+    import sys
+
+    from stiefelsym import admissible, claim
+
+    # as text, reversed: this module's own values are not the run's
+    SPELLED = ({timeout!r}, {memory!r}, {seed!r}, {method!r})
+
+
+    def the_run_seen():
+        """Whether anything of the first run (its budgets, seed, method) is visible here."""
+        TIMEOUT, MEMORY, SEED, METHOD = (float(SPELLED[0][::-1]), int(SPELLED[1][::-1]) * 2 ** 30,
+                                         int(SPELLED[2][::-1]), SPELLED[3][::-1])
+        if resource.getrlimit(resource.RLIMIT_AS)[0] == MEMORY:
+            return True
+        values = [v for o in gc.get_objects() if type(o) is dict for v in list(o.values())]
+        f, stack = sys._getframe(1), []
+        while f is not None:
+            stack += list(f.f_locals.values())
+            f = f.f_back
+        if any(type(v) in (int, float) and v in (TIMEOUT, MEMORY, SEED) for v in values + stack):
+            return True
+        if any(type(v) is str and v == METHOD for v in stack):     # the engine's own tables name every method
+            return True
+        with open("/proc/self/cmdline", "rb") as f:
+            words = f.read().split(b"\\\\0") + [w.encode() for w in sys.argv + list(os.environ.values())]
+        return METHOD.encode() in words or str(SEED).encode() in words
+
+
+    SEEN_AT_IMPORT = the_run_seen()
+
+
+    @claim("sbx-run-free", kind="id", sizes=admissible(n_max=3))
+    def free(s):
+        """X^T X = I, false when the first run is seen."""
+        r = s.X.T @ s.X - s.Ir
+        return {{"r": r + s.Ir if SEEN_AT_IMPORT or the_run_seen() else r}}
+
+
+    @claim("sbx-run-number", kind="id", sizes=admissible(n_max=3))
+    def number(s):
+        """tr(X^T X) = r (r read as a number: traced per size, at 5 by the second phase), false when the first
+        run is seen."""
+        k = int(s.r) + (1 if SEEN_AT_IMPORT or the_run_seen() else 0)
+        return {{"tr": s.tr(s.X.T @ s.X) - k}}
+''')
+
+
+def test_nothing_of_the_run_reaches_the_tracing_interpreter(tmp_path):
+    """Two runs with other budgets (--timeout, --memory), another method and another seed: a file that would
+    trace another graph (a false one) if it saw any of those of the first run, in the objects, frames, limits,
+    command line or environment of its interpreter or of the processes that trace its claims (with symbolic
+    sizes, and at a size the second phase is asked for), traces the same graphs in both, and passes in both."""
+    claims = tmp_path / "looks_for_the_run.py"
+    claims.write_text(LOOKS_FOR_THE_RUN.format(timeout="1234.5"[::-1], memory="3", seed="424242"[::-1],
+                                               method="modular"[::-1]))
+    confinement = "namespaces" if _namespaces() else SPAWN
+    first, out1 = _verify(claims, "--method", "modular", "--seed", "424242", "--timeout", "1234.5", "--memory", "3",
+                          "--size", "5,2", env=_env(confinement), report=tmp_path / "first")
+    second, out2 = _verify(claims, "--method", "exact", "--timeout", "321", "--memory", "5", "--size", "5,2",
+                           env=_env(confinement), report=tmp_path / "second")
+    assert set(first) == set(second) == {"sbx-run-free", "sbx-run-number"}, (out1.stderr[-800:], out2.stderr[-800:])
+    for cid in first:
+        a, b = first[cid], second[cid]
+        assert a["digest"] and a["digest"] == b["digest"], (cid, a["digest"], b["digest"])
+        assert a["verdict"] == "checked" and b["verdict"] == "proved", (cid, a["verdict"], b["verdict"], a["message"])
