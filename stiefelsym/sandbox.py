@@ -20,8 +20,9 @@ no process outside, and when the namespace's first process ends the kernel ends 
 
 Where that is not available (not Linux, no ``unshare``, user namespaces disabled, ``STIEFELSYM_CONFINE=spawn``)
 the same interpreter is spawned without namespaces (:data:`SPAWN`): it still holds nothing of the run, but
-it can read ``/proc/<ppid>/cmdline`` and write with the user's rights; every record of such a file says so
-(:func:`note`).
+it can read ``/proc/<ppid>/cmdline``, write with the user's rights, reach the network and connect to any Unix
+socket the user can (only the descriptors it would inherit are closed, as in namespaces); every record of
+such a file says so (:func:`note`).
 
 The first line the interpreter writes is its confinement, written before anything of the file runs: a
 setup that fails there falls back to the plain spawn, a file cannot ask for that fallback.
@@ -36,6 +37,7 @@ import select
 import shutil
 import subprocess
 import signal
+import stat
 import sys
 import time
 from typing import Any
@@ -47,12 +49,15 @@ SPAWN = "spawn"
 NOTES = {
     NAMESPACES: "",
     SPAWN: ("claims file traced in a spawned interpreter without namespaces (none available here): it could "
-            "read the verifying process's command line in /proc and write with the user's rights"),
+            "read the verifying process's command line in /proc, write with the user's rights, and reach the "
+            "network and the Unix sockets of the user's processes"),
 }
 #: $STIEFELSYM_CONFINE=spawn: no namespaces even where they are available (read by the verifying process only)
 CONFINE_ENV = "STIEFELSYM_CONFINE"
 #: the private /tmp of a confined interpreter
 TMP_OPTIONS = b"size=64m,mode=1777"
+#: at most this many Unix sockets of the file system are masked in a confined interpreter (see :func:`_sockets`)
+MAX_MASKED = 4096
 #: where the unshare program is looked for (not the user's PATH)
 SYSTEM_PATH = "/usr/bin:/bin:/usr/sbin:/sbin"
 
@@ -105,6 +110,29 @@ def _search_path() -> list[str]:
     return out
 
 
+def _sockets() -> list[str]:
+    """The paths of the Unix sockets bound in the file system as this process's network namespace lists them
+    (``/proc/net/unix``: every socket a process of this namespace bound to a path, the verifying process's own
+    included), that are sockets now: a confined interpreter masks each (:func:`lock_down`), since a socket
+    file can be connected to on a read-only mount.  Not listed: a socket bound by a process of another network
+    namespace, or after this list is taken, and one bound to a relative path."""
+    try:
+        with open("/proc/net/unix", "rb") as f:
+            lines = f.read().decode("utf-8", "surrogateescape").splitlines()[1:]
+    except OSError:
+        return []
+    out = set()
+    for line in lines:
+        fields = line.split(None, 7)
+        if len(fields) == 8 and fields[7].startswith("/"):
+            try:
+                if stat.S_ISSOCK(os.lstat(fields[7]).st_mode):
+                    out.add(fields[7])
+            except OSError:
+                continue
+    return sorted(out)[:MAX_MASKED]
+
+
 def _environment() -> dict[str, str]:
     return {"PATH": SYSTEM_PATH, "LC_ALL": "C.UTF-8", "HOME": "/tmp"}
 
@@ -141,7 +169,7 @@ def _spawn(config: dict[str, Any], capture: int, seconds: float, unshare: str | 
     if unshare is not None:
         argv = [unshare, "--user", "--map-root-user", "--pid", "--fork", "--kill-child", "--mount",
                 "--mount-proc", "--net", "--propagation", "private"] + argv
-    conf = dict(config, confine=unshare is not None)
+    conf = dict(config, confine=unshare is not None, sockets=_sockets() if unshare is not None else [])
     stdin = (json.dumps([os.path.abspath(__file__), _search_path()]) + "\n" + json.dumps(conf)).encode()
     with Confined():
         r0, w0 = os.pipe()
@@ -283,10 +311,11 @@ def _mounts() -> list[tuple[bytes, int, str]]:
     return out
 
 
-def lock_down(keep: list[str]) -> None:
+def lock_down(keep: list[str], sockets: list[str] | None = None) -> None:
     """In fresh user + mount namespaces (as root there), before any thread is started: every mount read-only,
     without devices and set-uid programs, a private tmpfs on /tmp (``keep``, folders and files under /tmp,
-    bound read-only into it: see :func:`_keep`), then every capability dropped for good (bounding set,
+    bound read-only into it: see :func:`_keep`), an empty file mounted read-only over each of the Unix
+    sockets ``sockets`` (:func:`_sockets`) that is one in this view, then every capability dropped for good (bounding set,
     permitted, effective, ambient; no new privileges), so that no mount can be changed again, in this namespace
     or in one the file creates (there the mounts made here are locked).  Raises :class:`SandboxError` when any
     step fails."""
@@ -314,11 +343,32 @@ def lock_down(keep: list[str]) -> None:
             _mount(libc, f"/proc/self/fd/{fd}".encode(), path, None, MS_BIND | (MS_REC if folder else 0), None)
             _mount(libc, None, path, None, MS_REMOUNT | MS_BIND | MS_RDONLY | MS_NOSUID | MS_NODEV, None)
             os.close(fd)
+        _mask(libc, sockets or [])
         _drop_capabilities(libc)
         if libc.mount(None, b"/", None, ctypes.c_ulong(MS_REMOUNT | MS_BIND), None) == 0:
             raise OSError(0, "the root could be made writable again")
     except OSError as exc:
         raise SandboxError(str(exc)) from None
+
+
+def _mask(libc: Any, sockets: list[str]) -> None:
+    """An empty file mounted read-only over each of ``sockets`` that is a Unix socket in this view: a connection
+    to it is refused (it is not a socket), and no mount can be changed once the capabilities are dropped."""
+    blank = "/tmp/.stiefelsym-masked-socket"
+    os.close(os.open(blank, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0))
+    try:
+        for path in sockets:
+            try:
+                if not stat.S_ISSOCK(os.lstat(path).st_mode):
+                    continue
+            except OSError:
+                continue
+            target = path.encode("utf-8", "surrogateescape")
+            _mount(libc, blank.encode(), target, None, MS_BIND, None)
+            _mount(libc, None, target, None, MS_REMOUNT | MS_BIND | MS_RDONLY | MS_NOSUID | MS_NODEV | MS_NOEXEC,
+                   None)
+    finally:
+        os.unlink(blank)
 
 
 class _CapHeader(ctypes.Structure):
@@ -377,6 +427,22 @@ def _keep(path: str) -> list[str]:
     return out
 
 
+def _close_inherited(keep: int) -> None:
+    """Every file descriptor above standard error closed but ``keep`` (the answer's pipe), before anything of
+    the file runs: what the verifying process's own caller left inheritable (a socket, a pipe to a service) is
+    not the file's."""
+    try:
+        fds = [int(x) for x in os.listdir("/proc/self/fd")]
+    except OSError:
+        fds = list(range(3, 1 << 16))
+    for fd in fds:
+        if fd > 2 and fd != keep:
+            try:
+                os.close(fd)
+            except OSError:
+                pass
+
+
 def _enter(folder: str) -> None:
     """The working directory entered again by its path in the confined view (a directory entered before the
     mounts would still see what they hide: the host's /tmp through a working directory there), or / when that
@@ -394,6 +460,7 @@ def host() -> None:
     os.dup2(null, 0)
     os.close(null)
     answer = os.dup(1)
+    _close_inherited(answer)
     os.dup2(2, 1)       # whatever the file prints goes to the capture, like its standard error
     sys.stdout = open(1, "w", closefd=False, errors="replace")
 
@@ -405,7 +472,7 @@ def host() -> None:
     if confined:
         try:
             here = os.getcwd()
-            lock_down(_keep(config["file"]))
+            lock_down(_keep(config["file"]), config.pop("sockets"))
             _enter(here)
         except (SandboxError, OSError) as exc:
             sys.stderr.write(f"stiefelsym: no confinement for the claims file ({exc})\n")

@@ -448,3 +448,110 @@ def test_nothing_of_the_run_reaches_the_tracing_interpreter(tmp_path):
         a, b = first[cid], second[cid]
         assert a["digest"] and a["digest"] == b["digest"], (cid, a["digest"], b["digest"])
         assert a["verdict"] == "checked" and b["verdict"] == "proved", (cid, a["verdict"], b["verdict"], a["message"])
+
+
+REACHES_FOR_SOCKETS = textwrap.dedent('''
+    import os
+    import socket
+    import stat
+    import sys
+
+    from stiefelsym import admissible, claim
+
+    TARGETS = {targets!r}
+
+
+    def reached():
+        """Whether a Unix socket of the test process answers: a name of the abstract namespace, a socket file
+        (next to this file, in the user's home folder), or a socket among the descriptors this process holds."""
+        hits = []
+        for target in TARGETS:
+            c = socket.socket(socket.AF_UNIX)
+            try:
+                c.connect(target.replace("@", "\\0", 1) if target.startswith("@") else target)
+                c.sendall(b"reached")
+                hits.append(target)
+            except OSError as exc:
+                print(f"SOCKET refused {{target}}: {{exc}}", file=sys.stderr)
+            finally:
+                c.close()
+        for fd in sorted(int(x) for x in os.listdir("/proc/self/fd")):
+            try:
+                if stat.S_ISSOCK(os.fstat(fd).st_mode):
+                    os.write(fd, b"reached")
+                    hits.append(f"fd {{fd}}")
+            except OSError:
+                pass
+        print(f"SOCKET reached {{hits}}", file=sys.stderr)
+        return hits
+
+
+    AT_IMPORT = reached()
+
+
+    @claim("sbx-sockets", kind="id", sizes=admissible(n_max=3))
+    def sockets(s):
+        """X^T X = I, false when a socket of the test answered."""
+        r = s.X.T @ s.X - s.Ir
+        return {{"r": r + s.Ir if AT_IMPORT or reached() else r}}
+''')
+
+
+@pytest.mark.parametrize("confinement", ["namespaces", SPAWN])
+def test_a_file_reaches_no_unix_socket_of_another_process(confinement):
+    """A server in the test process listens on a name of the abstract namespace, on a socket file next to the
+    claims file (a folder bound read-only into the interpreter's view) and one in the home folder, and holds
+    one end of a socket pair whose other end the verifying process inherits.  In namespaces the file reaches
+    none of them (its own network namespace; the socket files masked; inherited descriptors closed) and the
+    verdict is the claim's; without namespaces only the inherited descriptor is closed (the fallback's stated
+    limit: the file connects to the others, and the verdict is the one it chose)."""
+    import shutil
+    import socket
+    import tempfile
+    if confinement == "namespaces" and not _namespaces():
+        pytest.skip("no user + pid + mount namespaces here")
+    mark = uuid.uuid4().hex[:12]
+    folder = Path(tempfile.mkdtemp(prefix="sbx", dir="/tmp"))
+    home = Path(os.path.expanduser("~")) / f".sbx-{mark}.sock"
+    servers, paths = [], [str(folder / "s.sock"), str(home)]
+    for address in ["\0stiefelsym-sbx-" + mark] + paths:
+        srv = socket.socket(socket.AF_UNIX)
+        srv.bind(address)
+        srv.listen(8)
+        srv.setblocking(False)
+        servers.append(srv)
+    mine, theirs = socket.socketpair()
+    mine.setblocking(False)
+    claims = folder / "sockets.py"
+    claims.write_text(REACHES_FOR_SOCKETS.format(targets=["@stiefelsym-sbx-" + mark] + paths))
+    report = folder / "rep"
+    try:
+        out = subprocess.run([sys.executable, "-m", "stiefelsym", "verify", "--claims", str(claims), "--size", "3,2",
+                              "--method", "modular", "--jobs", "1", "--report-dir", str(report)],
+                             cwd=ROOT, env=_env(confinement, PYTHONPATH=str(ROOT)), capture_output=True, text=True,
+                             timeout=300, pass_fds=(theirs.fileno(),))
+        theirs.close()
+        answered = []
+        for srv in servers:
+            try:
+                srv.accept()
+                answered.append(srv.getsockname())
+            except BlockingIOError:
+                pass
+        try:
+            inherited = mine.recv(64)
+        except BlockingIOError:
+            inherited = b""
+        recs = json.loads((report / "results.json").read_text())["results"]
+    finally:
+        for srv in servers:
+            srv.close()
+        mine.close()
+        home.unlink(missing_ok=True)
+        shutil.rmtree(folder)
+    assert inherited == b"", (inherited, out.stderr[-1500:])
+    (rec,) = recs
+    if confinement == SPAWN:
+        assert len(answered) == 3 and rec["verdict"] == "fails", (answered, rec["verdict"])
+    else:
+        assert answered == [] and rec["verdict"] == "checked", (answered, rec["verdict"], out.stderr[-1500:])
