@@ -49,7 +49,6 @@ import gc
 import itertools
 import json
 import os
-import select
 import signal
 import sys
 import tempfile
@@ -61,6 +60,7 @@ from typing import Any, Callable, Iterable, Sequence
 
 from .pool import DEFAULT_MEMORY_GIB, GIB
 from .confine import ProcessesLeft
+from .isolate import next_chunk
 from .claims import CatalogError, Claim, ClaimTimeout, Correction, Registry, Size, SizeSpec, load_claims_file
 
 #: sizes n <= this get an entry in the admits table (the free method checks a declared r up to here)
@@ -374,14 +374,10 @@ def _run_claim(c: Claim, more: dict | None, timeout: float, memory: int | None) 
         deadline = time.monotonic() + timeout
         try:
             while i < len(jobs):
-                left = deadline - time.monotonic()
-                if left <= 0:
+                chunk = next_chunk(rfd, deadline)
+                if chunk is None:
                     timed_out = True
                     break
-                ready, _, _ = select.select([rfd], [], [], left)
-                if not ready:
-                    continue
-                chunk = os.read(rfd, 1 << 16)
                 if not chunk:
                     break
                 buf += chunk
@@ -771,7 +767,8 @@ def _phase(path: Path, more: dict | None, capture: int) -> tuple[Any, str]:
     asked about; the tracing budgets are the engine's constants (:data:`CLAIM_SECONDS`,
     :data:`CLAIM_MEMORY_GIB`), nothing of the run."""
     from .sandbox import run
-    config = {"file": os.path.realpath(path), "more": more, "timeout": CLAIM_SECONDS,
+    real = os.path.realpath(path)      # what the interpreter opens (a link or a relative path may not be in its view)
+    config = {"file": real, "more": more, "timeout": CLAIM_SECONDS,
               "memory": int(CLAIM_MEMORY_GIB * GIB)}
     try:
         data, how = run(config, capture, FILE_SECONDS)
@@ -782,7 +779,7 @@ def _phase(path: Path, more: dict | None, capture: int) -> tuple[Any, str]:
                            f"took more than {FILE_SECONDS:.0f} s)")
     payload = _loads(data)
     if type(payload) is dict and "error" in payload:
-        raise CatalogError(_get(payload, "error", str))
+        raise CatalogError(_get(payload, "error", str).replace(real, str(path)))     # the path as the user gave it
     items = _get(payload, "claims", list)
     for item in items:
         if type(item) is dict and "failed" in item:
