@@ -20,9 +20,11 @@ and the process that does knows nothing of the run.  :func:`load_claims_isolated
    condition, the erratum sizes) into tables (n <= 16 and the listed sizes);
 2. only when the command asks for sizes that the first phase could not answer (a
    function refused with symbolic sizes: it used a size's number, so it has no
-   proof for every n, r; or a size beyond the tables) a second interpreter is
-   spawned the same way and given, for those claims only, the sizes they need
-   (:func:`_second_phase`); what it sends adds rows and graphs, never replaces one;
+   proof for every n, r; or a size beyond the tables) a second phase follows: one
+   interpreter per such size, spawned the same way and given that size only, for
+   the claims that need it (:func:`_second_phase`, :func:`_by_size`: what a
+   function traced at a size sees depends on the file and that size, never on
+   the run's other sizes); what it sends adds rows and graphs, never replaces one;
 3. the interpreters send back pure data as JSON: the metadata fields, the sizes as
    an explicit list with the bounds and an admits table, the erratum table, and
    per (size | symbolic) either the graph's state or the refusal (exception class
@@ -823,6 +825,22 @@ def _second_phase(claims: list, needed: list[tuple[int, int]]) -> dict:
     return more
 
 
+def _by_size(more: dict) -> list[dict]:
+    """The second phase (:func:`_second_phase`) split by size: one interpreter per size, asked at that size only,
+    so that a function traced there, or a size condition evaluated there, sees no other size of the run (what
+    it is asked at a size depends on the file and that size alone)."""
+    sizes = sorted({(p[0], p[1]) for m in more.values() for p in m["table"] + m["trace"]})
+    out = []
+    for z in sizes:
+        part = {}
+        for cid, m in more.items():
+            table, trace = [list(z)] if list(z) in m["table"] else [], [list(z)] if list(z) in m["trace"] else []
+            if table or trace:
+                part[cid] = {"table": table, "trace": trace, "funcs": m["funcs"]}
+        out.append(part)
+    return out
+
+
 def _merge(claims: list, extra: list, more: dict) -> None:
     """The second phase's rows and graphs added to the first phase's claims (never replacing one of them)."""
     by_id = {d["id"]: d for d in claims}
@@ -876,11 +894,10 @@ def load_claims_isolated(path: str | Path, sizes: Iterable[Any] = ()) -> Registr
     with tempfile.TemporaryFile() as capture:
         try:
             claims, how = _phase(p, None, capture.fileno())     # no size of the run
-            more = _second_phase(claims, needed)
-            if more:                                                          # only what needs a size
-                extra, how2 = _phase(p, more, capture.fileno())
-                _merge(claims, extra, more)
-                how = how if how2 == how else f"{how}, then {how2}"
+            for part in _by_size(_second_phase(claims, needed)):      # only what needs a size, one size each
+                extra, how2 = _phase(p, part, capture.fileno())
+                _merge(claims, extra, part)
+                how = how if how2 in how.split(", then ") else f"{how}, then {how2}"
         except (WireError, ValueError, TypeError, RecursionError) as exc:
             if isinstance(exc, CatalogError):
                 raise

@@ -279,7 +279,8 @@ def test_a_file_whose_claims_have_graphs_of_symbolic_sizes_is_traced_once(tmp_pa
     '''))
     calls.clear()
     reg = load_claims_isolated(path, [(20, 2), (5, 2)])
-    assert calls == [None, {"once-number": {"table": [[20, 2]], "trace": [[5, 2]], "funcs": [0]}}], calls
+    assert calls == [None, {"once-number": {"table": [], "trace": [[5, 2]], "funcs": [0]}},
+                     {"once-number": {"table": [[20, 2]], "trace": [], "funcs": [0]}}], calls
     assert (20, 2) in reg.get("once-number").func.sizes() and reg.get("once-free").func.sizes() == []
 
 
@@ -555,3 +556,55 @@ def test_a_file_reaches_no_unix_socket_of_another_process(confinement):
         assert len(answered) == 3 and rec["verdict"] == "fails", (answered, rec["verdict"])
     else:
         assert answered == [] and rec["verdict"] == "checked", (answered, rec["verdict"], out.stderr[-1500:])
+
+
+def test_a_function_traced_at_a_size_sees_no_other_size_of_the_run(tmp_path, monkeypatch):
+    """A claim that reads its size as a number is traced per size by the second phase: at (5,2) it looks for the
+    size (7,2) in its objects and frames, and traces a false graph when it is there.  Each size has its own
+    interpreter, asked about that size only: the graph at (5,2) is the same whether the run asks (7,2) too."""
+    import stiefelsym.sandbox as sandbox
+    calls = []
+    real = sandbox.run
+
+    def counted(config, capture, seconds):
+        calls.append(config["more"])
+        return real(config, capture, seconds)
+    monkeypatch.setattr(sandbox, "run", counted)
+    path = tmp_path / "other_sizes.py"
+    path.write_text(textwrap.dedent('''
+        import gc
+        import sys
+
+        from stiefelsym import admissible, claim
+
+
+        def other_size_seen():
+            wanted = [3 + 4, 2]             # not written as the literal pair
+            values = [v for o in gc.get_objects() if type(o) is dict for v in list(o.values())]
+            f = sys._getframe(1)
+            while f is not None:
+                values += list(f.f_locals.values())
+                f = f.f_back
+            return any(type(v) in (list, tuple) and (list(v) == wanted or wanted in [list(x) for x in v
+                       if type(x) in (list, tuple)]) for v in values)
+
+
+        @claim("sbx-other-sizes", kind="id", sizes=admissible(n_max=3))
+        def number(s):
+            """tr(X^T X) = r, r read as a number; false at n = 5 when (7,2) is seen."""
+            k = int(s.r) + (1 if int(s.n) == 5 and other_size_seen() else 0)
+            return {"tr": s.tr(s.X.T @ s.X) - k}
+    '''))
+    from stiefelsym.ir import compile_at_size
+    from stiefelsym.scene import REALIZATIONS
+    cons = REALIZATIONS["standard"]
+
+    def digest_at_5(sizes):
+        (c,) = load_claims_isolated(path, sizes)
+        assert (5, 2) in c.func.sizes()
+        return compile_at_size(c.func, 5, 2, (cons.name, cons.build), twice=False).digest()
+    alone = digest_at_5([(5, 2)])
+    both = digest_at_5([(5, 2), (7, 2)])
+    assert alone == both
+    assert calls[-2:] == [{"sbx-other-sizes": {"table": [], "trace": [[5, 2]], "funcs": [0]}},
+                          {"sbx-other-sizes": {"table": [], "trace": [[7, 2]], "funcs": [0]}}], calls
