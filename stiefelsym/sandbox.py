@@ -4,8 +4,8 @@
 run: :func:`run` *spawns* (never forks) ``python -I -B -c BOOT`` with a neutral argv, a minimal environment
 (no ``STIEFELSYM_*``, no user variable), its standard input carrying only what the phase needs (the file's
 path, the search path of the package, the engine's tracing budgets (never the run's), and in the second
-phase the sizes of the claims that
-need them), and its standard output carrying the answer.  So the process that imports the file holds no
+phase the number of sizes, each size then read by a process of its own on descriptor 3), and its standard
+output carrying the answer.  So the process that imports the file holds no
 parsed option, no command line and no environment of the run in its memory.
 
 Where the platform allows it (Linux, util-linux ``unshare``, user namespaces), the interpreter runs in new
@@ -39,6 +39,7 @@ import subprocess
 import signal
 import stat
 import sys
+import threading
 import time
 from typing import Any
 
@@ -135,14 +136,14 @@ def _environment() -> dict[str, str]:
     return {"PATH": SYSTEM_PATH, "LC_ALL": "C.UTF-8", "HOME": "/tmp"}
 
 
-def run(config: dict[str, Any], capture: int, seconds: float) -> tuple[bytes | None, str]:
+def run(config: dict[str, Any], capture: int, seconds: float, requests: bytes = b"") -> tuple[bytes | None, str]:
     """``config`` (JSON) to a fresh interpreter running :func:`host`, its answer back: (bytes, or None when it
     died or ran out of ``seconds``; the confinement used).  What it prints goes to ``capture``.  The
     namespaces are given up (for this process's later files too) only when the interpreter did not write its
     confinement line, i.e. before anything of the file ran."""
     unshare = _unshare()
     if unshare is not None:
-        raw, status = _spawn(config, capture, seconds, unshare)
+        raw, status = _spawn(config, capture, seconds, unshare, requests)
         head = _line(NAMESPACES)
         if raw.startswith(head):
             _available[NAMESPACES] = True
@@ -150,7 +151,7 @@ def run(config: dict[str, Any], capture: int, seconds: float) -> tuple[bytes | N
         if _available.get(NAMESPACES):      # it worked before: this file's process died before its line
             return None, NAMESPACES
         _available[NAMESPACES] = False
-    raw, status = _spawn(config, capture, seconds, None)
+    raw, status = _spawn(config, capture, seconds, None, requests)
     head = _line(SPAWN)
     return (raw[len(head):] if status == 0 and raw.startswith(head) else None), SPAWN
 
@@ -159,7 +160,8 @@ def _line(confinement: str) -> bytes:
     return json.dumps({"confined": confinement}).encode() + b"\n"
 
 
-def _spawn(config: dict[str, Any], capture: int, seconds: float, unshare: str | None) -> tuple[bytes, int | None]:
+def _spawn(config: dict[str, Any], capture: int, seconds: float, unshare: str | None,
+           requests: bytes = b"") -> tuple[bytes, int | None]:
     """Spawn the interpreter (in namespaces when ``unshare`` is given): what it wrote, and its wait status
     (None: it ran out of time, or could not be started)."""
     from .confine import Confined
@@ -172,29 +174,49 @@ def _spawn(config: dict[str, Any], capture: int, seconds: float, unshare: str | 
     with Confined():
         r0, w0 = os.pipe()
         r1, w1 = os.pipe()
+        r3, w3 = _pipe_above(3)
         try:
             pid = os.posix_spawn(argv[0], argv, _environment(), setsid=True,
                                  file_actions=[(os.POSIX_SPAWN_DUP2, r0, 0), (os.POSIX_SPAWN_DUP2, w1, 1),
-                                               (os.POSIX_SPAWN_DUP2, capture, 2)])
+                                               (os.POSIX_SPAWN_DUP2, capture, 2), (os.POSIX_SPAWN_DUP2, r3, 3)])
         except OSError:
-            for fd in (r0, w0, r1, w1):
+            for fd in (r0, w0, r1, w1, r3, w3):
                 os.close(fd)
             return b"", None
-        os.close(r0)
-        os.close(w1)
-        try:
-            view = memoryview(stdin)
-            while view:
-                view = view[os.write(w0, view):]
-        except OSError:
-            pass
-        finally:
-            os.close(w0)
+        for fd in (r0, w1, r3):
+            os.close(fd)
+        writer = threading.Thread(target=_write_all, args=(w3, requests), daemon=True)
+        writer.start()      # (read by the interpreter only after its forks: never in the way of the answer)
+        _write_all(w0, stdin)
         try:
             chunks, status = _read_until_exit(pid, r1, seconds)
         finally:
             _kill_group(pid)
     return b"".join(chunks), status
+
+
+def _pipe_above(low: int) -> tuple[int, int]:
+    """A pipe both of whose ends are above ``low`` (a duplication onto itself would keep close-on-exec)."""
+    r, w = os.pipe()
+    if min(r, w) > low:
+        return r, w
+    r2, w2 = os.dup(r) if r <= low else r, os.dup(w) if w <= low else w
+    for fd, new in ((r, r2), (w, w2)):
+        if new != fd:
+            os.close(fd)
+    return _pipe_above(low) if min(r2, w2) <= low else (r2, w2)
+
+
+def _write_all(fd: int, data: bytes) -> None:
+    """``data`` to ``fd``, then ``fd`` closed (a reader that is gone ends the writing)."""
+    try:
+        view = memoryview(data)
+        while view:
+            view = view[os.write(fd, view):]
+    except OSError:
+        pass
+    finally:
+        os.close(fd)
 
 
 def _read_until_exit(pid: int, rfd: int, seconds: float) -> tuple[list[bytes], int | None]:
@@ -425,16 +447,16 @@ def _keep(path: str) -> list[str]:
     return out
 
 
-def _close_inherited(keep: int) -> None:
-    """Every file descriptor above standard error closed but ``keep`` (the answer's pipe), before anything of
-    the file runs: what the verifying process's own caller left inheritable (a socket, a pipe to a service) is
-    not the file's."""
+def _close_inherited(keep: set[int]) -> None:
+    """Every file descriptor above standard error closed but ``keep`` (the answer's pipe, the requests'), before
+    anything of the file runs: what the verifying process's own caller left inheritable (a socket, a pipe to a
+    service) is not the file's."""
     try:
         fds = [int(x) for x in os.listdir("/proc/self/fd")]
     except OSError:
         fds = list(range(3, 1 << 16))
     for fd in fds:
-        if fd > 2 and fd != keep:
+        if fd > 2 and fd not in keep:
             try:
                 os.close(fd)
             except OSError:
@@ -458,7 +480,8 @@ def host() -> None:
     os.dup2(null, 0)
     os.close(null)
     answer = os.dup(1)
-    _close_inherited(answer)
+    requests = 3 if config.get("parts") is not None else -1     # the second phase's requests (sandbox.run)
+    _close_inherited({answer, requests})
     os.dup2(2, 1)       # whatever the file prints goes to the capture, like its standard error
     sys.stdout = open(1, "w", closefd=False, errors="replace")
 
@@ -483,6 +506,10 @@ def host() -> None:
         sys.stderr.write(f"stiefelsym: the engine was imported from {userfile.__file__}, not next to {__file__}\n")
         sys.stderr.flush()
         os._exit(4)
-    data = userfile._tracer(config["file"], config.get("more"), float(config["timeout"]), config.get("memory"))
+    if requests < 0:
+        data = userfile._tracer(config["file"], None, float(config["timeout"]), config.get("memory"))
+    else:
+        data = userfile._tracer_by_size(config["file"], int(config["parts"]), requests, float(config["timeout"]),
+                                         config.get("memory"))
     send(data)
     os._exit(0)

@@ -20,11 +20,12 @@ and the process that does knows nothing of the run.  :func:`load_claims_isolated
    condition, the erratum sizes) into tables (n <= 16 and the listed sizes);
 2. only when the command asks for sizes that the first phase could not answer (a
    function refused with symbolic sizes: it used a size's number, so it has no
-   proof for every n, r; or a size beyond the tables) a second phase follows: one
-   interpreter per such size, spawned the same way and given that size only, for
-   the claims that need it (:func:`_second_phase`, :func:`_by_size`: what a
-   function traced at a size sees depends on the file and that size, never on
-   the run's other sizes); what it sends adds rows and graphs, never replaces one;
+   proof for every n, r; or a size beyond the tables) a second interpreter is
+   spawned the same way; it forks one process per such size before it reads any
+   size, then gives each its own (:func:`_second_phase`, :func:`_by_size`,
+   :func:`_tracer_by_size`: each imports the file itself, and what a function
+   traced at a size sees depends on the file and that size, never on the run's
+   other sizes); what they send adds rows and graphs, never replaces one;
 3. the interpreters send back pure data as JSON: the metadata fields, the sizes as
    an explicit list with the bounds and an admits table, the erratum table, and
    per (size | symbolic) either the graph's state or the refusal (exception class
@@ -489,6 +490,70 @@ def _tracer(path: str, more: dict | None, timeout: float, memory: int | None) ->
     return b'{"claims": [' + b",".join(parts) + b"]}"
 
 
+def _tracer_by_size(path: str, count: int, requests: int, timeout: float, memory: int | None) -> bytes:
+    """The second phase's interpreter (:func:`stiefelsym.sandbox.host`): ``count`` children forked before it reads
+    any request (so none holds another's), then each given its own request (one line of ``requests``: what
+    :func:`_tracer` is asked at one size) and run to its end in turn; their answers, as a JSON list."""
+    from .ir.seal import import_engine
+    from .isolate import read_pipe
+    _die_with_parent()
+    import_engine()                     # once, before the forks: each child imports the file alone
+    _flush()
+    kids = []
+    for _ in range(count):
+        r_req, w_req = os.pipe()
+        r_ans, w_ans = os.pipe()
+        pid = os.fork()
+        if pid == 0:
+            code = 0
+            try:
+                from .sandbox import _close_inherited
+                for fd in (w_req, r_ans):
+                    os.close(fd)
+                _close_inherited({r_req, w_ans})
+                request = b""
+                while True:
+                    chunk = os.read(r_req, 1 << 16)
+                    if not chunk:
+                        break
+                    request += chunk
+                os.close(r_req)
+                data = _tracer(path, json.loads(request), timeout, memory)
+                view = memoryview(data)
+                while view:
+                    view = view[os.write(w_ans, view):]
+            except BaseException:   # noqa: BLE001 - the zygote sees an answer that is not JSON
+                code = 1
+            finally:
+                _flush()
+                os._exit(code)
+        os.close(r_req)
+        os.close(w_ans)
+        kids.append((pid, w_req, r_ans))
+    lines = b""
+    while True:
+        chunk = os.read(requests, 1 << 16)
+        if not chunk:
+            break
+        lines += chunk
+    os.close(requests)
+    asked = lines.split(b"\n")
+    outs = []
+    for k, (pid, w_req, r_ans) in enumerate(kids):
+        try:
+            view = memoryview(asked[k] if k < len(asked) else b"null")
+            while view:
+                view = view[os.write(w_req, view):]
+        except OSError:
+            pass
+        os.close(w_req)
+        data = read_pipe(r_ans, FILE_SECONDS, lambda pid=pid: _kill(pid))
+        _kill(pid, wait=True)
+        outs.append(data if data else json.dumps({"error": f"the tracing at one size ended without a result "
+                                                           f"({_status_text(pid)})"}).encode())
+    return b"[" + b",".join(outs) + b"]"
+
+
 def _flush() -> None:
     for stream in (sys.stdout, sys.stderr):
         try:
@@ -763,33 +828,41 @@ def _engine_unchanged(before: dict[str, str], path: Path) -> None:
                            "claims file added before running again")
 
 
-def _phase(path: Path, more: dict | None, capture: int) -> tuple[Any, str]:
-    """One phase in a fresh interpreter (:func:`stiefelsym.sandbox.run`): its decoded answer, and the
-    confinement it ran under.  It is given the file and, in the second phase, ``more``, the sizes it is
-    asked about; the tracing budgets are the engine's constants (:data:`CLAIM_SECONDS`,
-    :data:`CLAIM_MEMORY_GIB`), nothing of the run."""
+def _phase(path: Path, parts: list[dict] | None, capture: int) -> tuple[list, str]:
+    """One phase in a fresh interpreter (:func:`stiefelsym.sandbox.run`): its decoded answer (per part, for the
+    second phase), and the confinement it ran under.  It is given the file and the engine's tracing budgets
+    (:data:`CLAIM_SECONDS`, :data:`CLAIM_MEMORY_GIB`), nothing of the run; in the second phase the number of
+    ``parts`` (one per size, :func:`_by_size`) with the config, and each part apart, on a pipe the interpreter
+    reads only once it has forked a child for each (:func:`_tracer_by_size`)."""
     from .sandbox import run
     real = os.path.realpath(path)      # what the interpreter opens (a link or a relative path may not be in its view)
-    config = {"file": real, "more": more, "timeout": CLAIM_SECONDS,
+    config = {"file": real, "parts": None if parts is None else len(parts), "timeout": CLAIM_SECONDS,
               "memory": int(CLAIM_MEMORY_GIB * GIB)}
+    requests = b"" if parts is None else b"\n".join(json.dumps(m).encode() for m in parts)
     try:
-        data, how = run(config, capture, FILE_SECONDS)
+        data, how = run(config, capture, FILE_SECONDS, requests)
     except ProcessesLeft as exc:
         raise CatalogError(f"{path}: {exc}") from None
     if data is None:
         raise CatalogError(f"{path}: loading and tracing the file ended without a result (its process died or "
                            f"took more than {FILE_SECONDS:.0f} s)")
     payload = _loads(data)
-    if type(payload) is dict and "error" in payload:
-        raise CatalogError(_get(payload, "error", str).replace(real, str(path)))     # the path as the user gave it
-    items = _get(payload, "claims", list)
-    for item in items:
-        if type(item) is dict and "failed" in item:
-            failed = _get(item, "failed", list)
-            if len(failed) != 2 or not all(type(x) is str for x in failed):
-                raise WireError("a failure that is not (claim, message)")
-            raise CatalogError(f"{path}: claim {failed[0]}: {failed[1]}")
-    return [_get(item, "claim", dict) for item in items], how
+    answers = [payload] if parts is None else payload
+    if type(answers) is not list or (parts is not None and len(answers) != len(parts)):
+        raise WireError("a second phase's answer that is not one per size")
+    out = []
+    for answer in answers:
+        if type(answer) is dict and "error" in answer:
+            raise CatalogError(_get(answer, "error", str).replace(real, str(path)))   # the path as the user gave it
+        items = _get(answer, "claims", list)
+        for item in items:
+            if type(item) is dict and "failed" in item:
+                failed = _get(item, "failed", list)
+                if len(failed) != 2 or not all(type(x) is str for x in failed):
+                    raise WireError("a failure that is not (claim, message)")
+                raise CatalogError(f"{path}: claim {failed[0]}: {failed[1]}")
+        out.append([_get(item, "claim", dict) for item in items])
+    return out, how
 
 
 def _refused(entries: list) -> bool:
@@ -893,11 +966,13 @@ def load_claims_isolated(path: str | Path, sizes: Iterable[Any] = ()) -> Registr
     sys.stderr.flush()
     with tempfile.TemporaryFile() as capture:
         try:
-            claims, how = _phase(p, None, capture.fileno())     # no size of the run
-            for part in _by_size(_second_phase(claims, needed)):      # only what needs a size, one size each
-                extra, how2 = _phase(p, part, capture.fileno())
-                _merge(claims, extra, part)
-                how = how if how2 in how.split(", then ") else f"{how}, then {how2}"
+            (claims,), how = _phase(p, None, capture.fileno())     # no size of the run
+            parts = _by_size(_second_phase(claims, needed))         # only what needs a size, one size each
+            if parts:
+                extras, how2 = _phase(p, parts, capture.fileno())
+                for part, extra in zip(parts, extras):
+                    _merge(claims, extra, part)
+                how = how if how2 == how else f"{how}, then {how2}"
         except (WireError, ValueError, TypeError, RecursionError) as exc:
             if isinstance(exc, CatalogError):
                 raise

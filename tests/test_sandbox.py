@@ -253,9 +253,10 @@ def test_a_file_whose_claims_have_graphs_of_symbolic_sizes_is_traced_once(tmp_pa
     calls = []
     real = sandbox.run
 
-    def counted(config, capture, seconds):
-        calls.append(config["more"])
-        return real(config, capture, seconds)
+    def counted(config, capture, seconds, requests=b""):
+        calls.append(None if config["parts"] is None else [json.loads(x) for x in requests.split(b"\n")])
+        assert config["parts"] == (None if calls[-1] is None else len(calls[-1]))
+        return real(config, capture, seconds, requests)
     monkeypatch.setattr(sandbox, "run", counted)
     body = textwrap.dedent('''
         from stiefelsym import admissible, claim
@@ -279,8 +280,8 @@ def test_a_file_whose_claims_have_graphs_of_symbolic_sizes_is_traced_once(tmp_pa
     '''))
     calls.clear()
     reg = load_claims_isolated(path, [(20, 2), (5, 2)])
-    assert calls == [None, {"once-number": {"table": [], "trace": [[5, 2]], "funcs": [0]}},
-                     {"once-number": {"table": [[20, 2]], "trace": [], "funcs": [0]}}], calls
+    assert calls == [None, [{"once-number": {"table": [], "trace": [[5, 2]], "funcs": [0]}},
+                            {"once-number": {"table": [[20, 2]], "trace": [], "funcs": [0]}}]], calls
     assert (20, 2) in reg.get("once-number").func.sizes() and reg.get("once-free").func.sizes() == []
 
 
@@ -561,14 +562,16 @@ def test_a_file_reaches_no_unix_socket_of_another_process(confinement):
 def test_a_function_traced_at_a_size_sees_no_other_size_of_the_run(tmp_path, monkeypatch):
     """A claim that reads its size as a number is traced per size by the second phase: at (5,2) it looks for the
     size (7,2) in its objects and frames, and traces a false graph when it is there.  Each size has its own
-    interpreter, asked about that size only: the graph at (5,2) is the same whether the run asks (7,2) too."""
+    process, forked before any size is read and asked about that size only: the graph at (5,2) is the same
+    whether the run asks (7,2) too."""
     import stiefelsym.sandbox as sandbox
     calls = []
     real = sandbox.run
 
-    def counted(config, capture, seconds):
-        calls.append(config["more"])
-        return real(config, capture, seconds)
+    def counted(config, capture, seconds, requests=b""):
+        calls.append(None if config["parts"] is None else [json.loads(x) for x in requests.split(b"\n")])
+        assert config["parts"] == (None if calls[-1] is None else len(calls[-1]))
+        return real(config, capture, seconds, requests)
     monkeypatch.setattr(sandbox, "run", counted)
     path = tmp_path / "other_sizes.py"
     path.write_text(textwrap.dedent('''
@@ -606,5 +609,5 @@ def test_a_function_traced_at_a_size_sees_no_other_size_of_the_run(tmp_path, mon
     alone = digest_at_5([(5, 2)])
     both = digest_at_5([(5, 2), (7, 2)])
     assert alone == both
-    assert calls[-2:] == [{"sbx-other-sizes": {"table": [], "trace": [[5, 2]], "funcs": [0]}},
-                          {"sbx-other-sizes": {"table": [], "trace": [[7, 2]], "funcs": [0]}}], calls
+    assert calls[-1] == [{"sbx-other-sizes": {"table": [], "trace": [[5, 2]], "funcs": [0]}},
+                         {"sbx-other-sizes": {"table": [], "trace": [[7, 2]], "funcs": [0]}}], calls
