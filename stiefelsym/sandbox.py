@@ -4,8 +4,8 @@
 run: :func:`run` *spawns* (never forks) ``python -I -B -c BOOT`` with a neutral argv, a minimal environment
 (no ``STIEFELSYM_*``, no user variable), its standard input carrying only what the phase needs (the file's
 path, the search path of the package, the engine's tracing budgets (never the run's), and in the second
-phase the number of sizes, each size then read by a process of its own on descriptor 3), and its standard
-output carrying the answer.  So the process that imports the file holds no
+phase one size per line on descriptor 3, each read by a process of its own), and its standard output
+carrying the answer.  So the process that imports the file holds no
 parsed option, no command line and no environment of the run in its memory.
 
 Where the platform allows it (Linux, util-linux ``unshare``, user namespaces), the interpreter runs in new
@@ -480,7 +480,7 @@ def host() -> None:
     os.dup2(null, 0)
     os.close(null)
     answer = os.dup(1)
-    requests = 3 if config.get("parts") is not None else -1     # the second phase's requests (sandbox.run)
+    requests = 3 if config.get("second") else -1     # the second phase's requests (sandbox.run)
     _close_inherited({answer, requests})
     os.dup2(2, 1)       # whatever the file prints goes to the capture, like its standard error
     sys.stdout = open(1, "w", closefd=False, errors="replace")
@@ -508,8 +508,8 @@ def host() -> None:
         os._exit(4)
     if requests < 0:
         data = userfile._tracer(config["file"], None, float(config["timeout"]), config.get("memory"))
-    else:
-        data = userfile._tracer_by_size(config["file"], int(config["parts"]), requests, float(config["timeout"]),
-                                         config.get("memory"))
+    else:       # each of its children writes its own answer
+        userfile._tracer_by_size(config["file"], requests, answer, float(config["timeout"]), config.get("memory"))
+        data = b""
     send(data)
     os._exit(0)

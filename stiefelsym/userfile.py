@@ -21,8 +21,8 @@ and the process that does knows nothing of the run.  :func:`load_claims_isolated
 2. only when the command asks for sizes that the first phase could not answer (a
    function refused with symbolic sizes: it used a size's number, so it has no
    proof for every n, r; or a size beyond the tables) a second interpreter is
-   spawned the same way; it forks one process per such size before it reads any
-   size, then gives each its own (:func:`_second_phase`, :func:`_by_size`,
+   spawned the same way; it reads no size itself: one child at a time reads its
+   own size and answers (:func:`_second_phase`, :func:`_by_size`,
    :func:`_tracer_by_size`: each imports the file itself, and what a function
    traced at a size sees depends on the file and that size, never on the run's
    other sizes); what they send adds rows and graphs, never replaces one;
@@ -490,68 +490,63 @@ def _tracer(path: str, more: dict | None, timeout: float, memory: int | None) ->
     return b'{"claims": [' + b",".join(parts) + b"]}"
 
 
-def _tracer_by_size(path: str, count: int, requests: int, timeout: float, memory: int | None) -> bytes:
-    """The second phase's interpreter (:func:`stiefelsym.sandbox.host`): ``count`` children forked before it reads
-    any request (so none holds another's), then each given its own request (one line of ``requests``: what
-    :func:`_tracer` is asked at one size) and run to its end in turn; their answers, as a JSON list."""
+#: the exit status of a second phase's process that found no request left
+NO_MORE = 5
+
+
+def _tracer_by_size(path: str, requests: int, answer: int, timeout: float, memory: int | None) -> None:
+    """The second phase's interpreter (:func:`stiefelsym.sandbox.host`): one child at a time, each forked before
+    its request is read, reading its own request (one line of ``requests``: what :func:`_tracer` is asked at one
+    size) and writing its answer (one line) to ``answer`` itself, until a child finds no request left.  This
+    process reads no request and no answer, and is not dumpable (no child reads its memory or descriptors through
+    /proc): a function traced at a size sees that size only, not the run's other sizes, nor how many there are."""
+    import ctypes
     from .ir.seal import import_engine
-    from .isolate import read_pipe
     _die_with_parent()
-    import_engine()                     # once, before the forks: each child imports the file alone
+    if ctypes.CDLL(None, use_errno=True).prctl(4, 0, 0, 0, 0) != 0:       # PR_SET_DUMPABLE, 0
+        raise OSError(ctypes.get_errno(), "the second phase's process could not be made non-dumpable")
+    import_engine()                     # once, before the forks: each child imports the file itself
     _flush()
-    kids = []
-    for _ in range(count):
-        r_req, w_req = os.pipe()
-        r_ans, w_ans = os.pipe()
+    while True:
         pid = os.fork()
         if pid == 0:
             code = 0
             try:
-                from .sandbox import _close_inherited
-                for fd in (w_req, r_ans):
-                    os.close(fd)
-                _close_inherited({r_req, w_ans})
-                request = b""
-                while True:
-                    chunk = os.read(r_req, 1 << 16)
-                    if not chunk:
+                line = b""
+                while not line.endswith(b"\n"):
+                    byte = os.read(requests, 1)      # one line only: the next is the next child's
+                    if not byte:
                         break
-                    request += chunk
-                os.close(r_req)
-                data = _tracer(path, json.loads(request), timeout, memory)
-                view = memoryview(data)
-                while view:
-                    view = view[os.write(w_ans, view):]
-            except BaseException:   # noqa: BLE001 - the zygote sees an answer that is not JSON
+                    line += byte
+                os.close(requests)
+                if not line.strip():
+                    code = NO_MORE
+                else:
+                    data = _tracer(path, json.loads(line), timeout, memory) + b"\n"
+                    view = memoryview(data)
+                    while view:
+                        view = view[os.write(answer, view):]
+            except BaseException:   # noqa: BLE001 - the verifying process sees a missing answer
                 code = 1
             finally:
                 _flush()
                 os._exit(code)
-        os.close(r_req)
-        os.close(w_ans)
-        kids.append((pid, w_req, r_ans))
-    lines = b""
-    while True:
-        chunk = os.read(requests, 1 << 16)
-        if not chunk:
-            break
-        lines += chunk
-    os.close(requests)
-    asked = lines.split(b"\n")
-    outs = []
-    for k, (pid, w_req, r_ans) in enumerate(kids):
-        try:
-            view = memoryview(asked[k] if k < len(asked) else b"null")
-            while view:
-                view = view[os.write(w_req, view):]
-        except OSError:
-            pass
-        os.close(w_req)
-        data = read_pipe(r_ans, FILE_SECONDS, lambda pid=pid: _kill(pid))
-        _kill(pid, wait=True)
-        outs.append(data if data else json.dumps({"error": f"the tracing at one size ended without a result "
-                                                           f"({_status_text(pid)})"}).encode())
-    return b"[" + b",".join(outs) + b"]"
+        _, status = os.waitpid(pid, 0)
+        if os.WIFEXITED(status) and os.WEXITSTATUS(status) == NO_MORE:
+            return
+        if not (os.WIFEXITED(status) and os.WEXITSTATUS(status) == 0):
+            _kill_tree_of(pid)
+            how = "killed" if os.WIFSIGNALED(status) else f"exit status {os.WEXITSTATUS(status)}"
+            data = json.dumps({"error": f"the tracing at one size ended without a result ({how})"}).encode()
+            os.write(answer, b"\n" + data + b"\n")
+
+
+def _kill_tree_of(pid: int) -> None:
+    """(the process group a dead child of the second phase left: its own tracer's children)"""
+    try:
+        os.killpg(pid, signal.SIGKILL)
+    except OSError:
+        pass
 
 
 def _flush() -> None:
@@ -831,14 +826,14 @@ def _engine_unchanged(before: dict[str, str], path: Path) -> None:
 def _phase(path: Path, parts: list[dict] | None, capture: int) -> tuple[list, str]:
     """One phase in a fresh interpreter (:func:`stiefelsym.sandbox.run`): its decoded answer (per part, for the
     second phase), and the confinement it ran under.  It is given the file and the engine's tracing budgets
-    (:data:`CLAIM_SECONDS`, :data:`CLAIM_MEMORY_GIB`), nothing of the run; in the second phase the number of
-    ``parts`` (one per size, :func:`_by_size`) with the config, and each part apart, on a pipe the interpreter
-    reads only once it has forked a child for each (:func:`_tracer_by_size`)."""
+    (:data:`CLAIM_SECONDS`, :data:`CLAIM_MEMORY_GIB`), nothing of the run; in the second phase the ``parts``
+    (one per size, :func:`_by_size`), one line each on a pipe that each of its children reads one line of
+    (:func:`_tracer_by_size`), its answer one line per part."""
     from .sandbox import run
     real = os.path.realpath(path)      # what the interpreter opens (a link or a relative path may not be in its view)
-    config = {"file": real, "parts": None if parts is None else len(parts), "timeout": CLAIM_SECONDS,
+    config = {"file": real, "second": parts is not None, "timeout": CLAIM_SECONDS,
               "memory": int(CLAIM_MEMORY_GIB * GIB)}
-    requests = b"" if parts is None else b"\n".join(json.dumps(m).encode() for m in parts)
+    requests = b"".join(json.dumps(m).encode() + b"\n" for m in parts or [])
     try:
         data, how = run(config, capture, FILE_SECONDS, requests)
     except ProcessesLeft as exc:
@@ -846,9 +841,8 @@ def _phase(path: Path, parts: list[dict] | None, capture: int) -> tuple[list, st
     if data is None:
         raise CatalogError(f"{path}: loading and tracing the file ended without a result (its process died or "
                            f"took more than {FILE_SECONDS:.0f} s)")
-    payload = _loads(data)
-    answers = [payload] if parts is None else payload
-    if type(answers) is not list or (parts is not None and len(answers) != len(parts)):
+    answers = [_loads(data)] if parts is None else [_loads(x) for x in data.split(b"\n") if x.strip()]
+    if parts is not None and len(answers) != len(parts):
         raise WireError("a second phase's answer that is not one per size")
     out = []
     for answer in answers:
