@@ -23,6 +23,14 @@ rewriting system that found the certificate (it imports nothing of
     to rotation and transposition (tr w = tr wᵀ, with the sign of skew
     letters: tr ξ = 0).
 
+Run on a results file (:func:`main`) it also binds each certificate to the record it sits in: the certificate's
+``about`` (the claim id and the digest of the graph it was derived from, written by the free method) must be the
+record's claim and digest, and it prints what each accepted certificate proves (every residual entry p = 0
+modulo the hypotheses it names).  What it cannot bind, having no claim to trace: that the record's digest is the
+graph of the claim's code, and that the residuals are that graph's; a certificate moved with its ``about``
+rewritten passes it.  ``stiefelsym check`` (and ``report``) bind those: they trace the claim again, compare the
+digest and derive the certificate again from the graph.
+
 Columns E₁, E₂, E_r of ℝʳ (r×1; E1t, E2t, Ert) and E_{<r} (Elead: the first r − 1, r×(r−1)) have E_iᵀE_j = δ_ij and E₁E₁ᵀ + E₂E₂ᵀ = I_r (true at
 r = 2 only; E₁E₁ᵀ = I_r at r = 1 only, with no E₂; XXᵀ = I_n at r = n only): a proof that uses it holds
 there (the report says so), and a 1×1 piece of a word is its own trace (u·E_i·(E_jᵀwE_k)·E_lᵀ·v =
@@ -572,16 +580,52 @@ def check_entry(entry: dict, ctx: Context) -> int:
         a, b = target.get(key, 0), total.get(key, 0)
         if a != b and not is_zero(a - b):   # (the same expression: the difference is 0)
             traces, word = key
-            shown = "*".join(f"tr({'*'.join(c)})" for c in traces) + ("*" if traces and word else "") \
-                + ("*".join(word) if word else ("" if traces else "I"))
-            raise Rejected(f"the certificate does not expand to the residual: the coefficient of {shown} "
+            raise Rejected(f"the certificate does not expand to the residual: the coefficient of {_shown(traces, word)} "
                            f"is {total.get(key, 0)} in the certificate, {target.get(key, 0)} in the residual")
     return len(entry["terms"])
 
 
+def _shown(traces: Any, word: Any) -> str:
+    return "*".join(f"tr({'*'.join(c)})" for c in traces) + ("*" if traces and word else "") \
+        + ("*".join(word) if word else ("" if traces else "I"))
+
+
+def statement(data: dict, width: int = 160) -> list[str]:
+    """What an accepted certificate proves, one line per residual entry: ``position: p = 0`` modulo the
+    hypotheses (of each case, for a certificate of cases), p its residual as written there (cut at ``width``)."""
+    if data.get("format") == CASES:
+        return [f"r = {c['sizes']['r']}, n >= {c['sizes']['n_min']}: {x}" for c in data["cases"]
+                for x in statement(c["certificate"], width)]
+    out = []
+    for e in data["entries"]:
+        p = " + ".join(f"({t['coef']})*{_shown([_words(c) for c in t['traces']], _words(t['word']))}"
+                       for t in e["residual"])
+        out.append(f"{e.get('position', '?')}: {p[:width] + ' ...' if len(p) > width else p} = 0")
+    return out
+
+
+def _used(data: dict) -> set:
+    if data.get("format") == CASES:
+        return set().union(*(_used(c["certificate"]) for c in data["cases"]))
+    return {str(t["hyp"]) for e in data["entries"] for t in e["terms"]}
+
+
+def bound(data: dict, record: dict) -> str:
+    """Why a certificate is not the one of the record it sits in ("" when it is): its ``about`` (the claim id
+    and the digest of the graph it was derived from, written by the free method) must name the record's."""
+    about = data.get("about")
+    if not isinstance(about, dict) or not about.get("claim") or not about.get("digest"):
+        return "the certificate does not say which claim and graph it is about"
+    if (about["claim"], about["digest"]) != (record.get("claim"), record.get("digest")):
+        return (f"the certificate is about claim {about['claim']} (graph {str(about['digest'])[:12]}), the record "
+                f"about claim {record.get('claim')} (graph {str(record.get('digest'))[:12]})")
+    return ""
+
+
 def main(argv: list[str] | None = None) -> int:
     """python -m stiefelsym.certificate_check results.json: re-check every certificate in a results file
-    (this file also runs on its own: python certificate_check.py results.json)."""
+    (this file also runs on its own: python certificate_check.py results.json), bind it to its record (its
+    claim id and graph digest, :func:`bound`) and print what it proves (:func:`statement`)."""
     import json
     import sys
 
@@ -600,10 +644,15 @@ def main(argv: list[str] | None = None) -> int:
                     bad += 1
                     print(f"{r.get('claim', path)}: REJECTED: a proof for every n, r without a certificate")
                 continue
-            rep = check_certificate(data)
-            bad += not rep.accepted
-            verdict = "accepted" if rep.accepted else f"REJECTED: {rep.message}"
+            rep, why = check_certificate(data), bound(data, r)
+            bad += not rep.accepted or bool(why)
+            verdict = f"REJECTED: {why or rep.message}" if why or not rep.accepted else "accepted"
             print(f"{r.get('claim', path)}: {verdict} ({rep.entries} entries, {rep.terms} terms, {rep.seconds:.3f}s)")
+            if rep.accepted and not why:
+                print(f"  proves, for the graph {r.get('digest')} of claim {r.get('claim')}"
+                      f"{' (' + r['variant'] + ')' if r.get('variant') else ''}, modulo the hypotheses "
+                      f"{', '.join(sorted(_used(data))) or '(none)'}:")
+                print("\n".join(f"    {x}" for x in statement(data)))
     return 1 if bad else 0
 
 

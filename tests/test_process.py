@@ -302,7 +302,8 @@ def test_float_on_a_pure_rank_claim_is_undecided():
 # --------------------------------------------------------------------------- the command line
 
 @needs_fork
-def test_tricks_each_get_their_verdict_and_the_run_goes_on(run, tricks):
+def test_tricks_each_get_their_verdict_and_the_run_goes_on(run, tricks, monkeypatch):
+    monkeypatch.setattr("stiefelsym.run.userfile.CLAIM_SECONDS", 2.0)    # the engine's tracing budget, not --timeout
     result = run("verify", "--claims", str(tricks), "--method", "modular", "--timeout", "2",
                  "--memory", "3", "--jobs", "2", "--format", "json")
     assert result.exit_code == 1, result.output
@@ -448,7 +449,8 @@ def test_result_lines_give_the_witness_or_the_reason():
 
 
 @needs_fork
-def test_cli_prints_reasons_rerun_and_the_legend(run, tricks):
+def test_cli_prints_reasons_rerun_and_the_legend(run, tricks, monkeypatch):
+    monkeypatch.setattr("stiefelsym.run.userfile.CLAIM_SECONDS", 2.0)    # the engine's tracing budget, not --timeout
     result = run("verify", "good", "loops-forever", "--claims", str(tricks), "--method", "modular",
                  "--timeout", "2")
     assert result.exit_code == 1

@@ -253,9 +253,10 @@ def test_a_file_whose_claims_have_graphs_of_symbolic_sizes_is_traced_once(tmp_pa
     calls = []
     real = sandbox.run
 
-    def counted(config, capture, seconds):
-        calls.append(config["more"])
-        return real(config, capture, seconds)
+    def counted(config, capture, seconds, requests=b""):
+        calls.append([json.loads(x) for x in requests.splitlines()] if config["second"] else None)
+        assert config["second"] == bool(requests) and "parts" not in config
+        return real(config, capture, seconds, requests)
     monkeypatch.setattr(sandbox, "run", counted)
     body = textwrap.dedent('''
         from stiefelsym import admissible, claim
@@ -279,25 +280,358 @@ def test_a_file_whose_claims_have_graphs_of_symbolic_sizes_is_traced_once(tmp_pa
     '''))
     calls.clear()
     reg = load_claims_isolated(path, [(20, 2), (5, 2)])
-    assert calls == [None, {"once-number": {"table": [[20, 2]], "trace": [[5, 2]], "funcs": [0]}}], calls
+    assert calls == [None, [{"once-number": {"table": [], "trace": [[5, 2]], "funcs": [0]}},
+                            {"once-number": {"table": [[20, 2]], "trace": [], "funcs": [0]}}]], calls
     assert (20, 2) in reg.get("once-number").func.sizes() and reg.get("once-free").func.sizes() == []
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "a claims file directly in /tmp (its folder is /tmp itself, where the interpreter's private tmpfs is "
-    "mounted) is not seen by the confined interpreter: 'claims file not found' (a file in a folder under /tmp "
-    "is bound back and found)"))
+CLAIM_IN_TMP = textwrap.dedent('''
+    from stiefelsym import admissible, claim
+    {imports}
+
+    @claim("{cid}", kind="id", sizes=admissible(n_max=3))
+    def c(s):
+        """X^T X = I{what}."""
+        return {{"XtX - I": s.X.T @ s.X - {identity}}}
+''')
+
+
+def _in_tmp(*names: str) -> list[Path]:
+    mark = uuid.uuid4().hex
+    return [Path("/tmp") / f"stiefelsym_top_{mark}_{name}" for name in names]
+
+
+def _verify_here(claims: str, cwd: str, cid: str) -> subprocess.CompletedProcess:
+    out = subprocess.run([sys.executable, "-m", "stiefelsym", "verify", "--claims", claims, "--size", "3,2",
+                          "--method", "modular", "--jobs", "1", "--report-dir", f"/tmp/stiefelsym-rep-{uuid.uuid4().hex}"],
+                         cwd=cwd, capture_output=True, text=True, timeout=300,
+                         env=dict(_env("namespaces"), PYTHONPATH=str(ROOT)))
+    assert f"{cid} (3,2) modular: checked" in out.stdout, (out.stdout[-500:], out.stderr[-800:])
+    return out
+
+
 def test_a_claims_file_directly_in_tmp_is_traced(tmp_path):
-    import shutil
-    src = tmp_path / "one.py"
-    src.write_text("from stiefelsym import admissible, claim\n\n"
-                   "@claim('tmp-top', kind='id', sizes=admissible(n_max=3))\n"
-                   "def c(s):\n    return {'XtX - I': s.X.T @ s.X - s.Ir}\n")
-    top = Path("/tmp") / f"stiefelsym-top-{uuid.uuid4().hex}.py"
-    shutil.copy(src, top)
+    """/tmp itself is never bound into the interpreter's view: the claims file alone is, read-only."""
+    top, = _in_tmp("one.py")
+    top.write_text(CLAIM_IN_TMP.format(cid="tmp-top", imports="", what="", identity="s.Ir"))
     try:
-        out = subprocess.run([sys.executable, "-m", "stiefelsym", "verify", "--claims", str(top), "--size", "3,2",
-                              "--method", "modular", "--jobs", "1"], capture_output=True, text=True, timeout=300)
+        _verify_here(str(top), str(ROOT), "tmp-top")
     finally:
         top.unlink()
-    assert "tmp-top (3,2) modular: checked" in out.stdout, (out.stdout[-500:], out.stderr[-500:])
+
+
+def test_a_claims_file_in_tmp_imports_a_sibling_module_when_tmp_is_on_the_search_path():
+    """Run from /tmp with ``python -m`` (so /tmp is on the search path, as any working directory would be), a
+    claims file given by a relative path imports a module next to it, as it would in any other folder; its
+    working directory in the interpreter is the confined view's /tmp, not the host's."""
+    top, helper = _in_tmp("two.py", "helper.py")
+    helper.write_text("def unit(s):\n    return s.Ir\n")
+    top.write_text(CLAIM_IN_TMP.format(cid="tmp-sibling", imports=f"import {helper.stem} as helper",
+                                       what=" (I from a sibling module)", identity="helper.unit(s)"))
+    try:
+        _verify_here(top.name, "/tmp", "tmp-sibling")
+    finally:
+        top.unlink()
+        helper.unlink()
+
+
+@NAMESPACES
+def test_what_of_tmp_the_interpreter_sees_is_the_file_and_the_modules_it_may_import(tmp_path):
+    """Of the host's /tmp the interpreter sees (read-only) the claims file and, when /tmp is on the search path,
+    the modules there only: not another file of /tmp, not through its working directory, and it writes none of
+    them."""
+    top, other, helper = _in_tmp("look.py", "secret.txt", "mod.py")
+    other.write_text("host data\n")
+    helper.write_text("X = 1\n")
+    top.write_text(textwrap.dedent(f'''
+        import os
+        import sys
+
+        from stiefelsym import admissible, claim
+
+        seen = sorted(os.listdir("/tmp"))
+        try:
+            open({other.name!r}).read()
+            relative = "read"
+        except OSError as exc:
+            relative = type(exc).__name__
+        try:
+            with open({str(helper)!r}, "a") as f:
+                f.write("#")
+            wrote = "wrote"
+        except OSError as exc:
+            wrote = type(exc).__name__
+        print(f"LOOK cwd={{os.getcwd()}} seen={{seen}} relative={{relative}} wrote={{wrote}}", file=sys.stderr)
+
+
+        @claim("tmp-look", kind="id", sizes=admissible(n_max=3))
+        def look(s):
+            """X^T X = I."""
+            return {{"r": s.X.T @ s.X - s.Ir}}
+    '''))
+    try:
+        out = _verify_here(top.name, "/tmp", "tmp-look")
+        line = next(x for x in out.stderr.splitlines() if x.startswith("LOOK"))
+        assert helper.read_text() == "X = 1\n"
+    finally:
+        for p in (top, other, helper):
+            p.unlink()
+    assert "cwd=/tmp" in line and "relative=FileNotFoundError" in line and "wrote=OSError" in line, line
+    seen = line.split("seen=")[1].split(" relative=")[0]
+    assert top.name in seen and helper.name in seen and other.name not in seen, line
+
+
+LOOKS_FOR_THE_RUN = textwrap.dedent('''
+    import gc
+    import os
+    import resource
+    import sys
+
+    from stiefelsym import admissible, claim
+
+    # as text, reversed: this module's own values are not the run's
+    SPELLED = ({timeout!r}, {memory!r}, {seed!r}, {method!r})
+
+
+    def the_run_seen():
+        """Whether anything of the first run (its budgets, seed, method) is visible here."""
+        TIMEOUT, MEMORY, SEED, METHOD = (float(SPELLED[0][::-1]), int(SPELLED[1][::-1]) * 2 ** 30,
+                                         int(SPELLED[2][::-1]), SPELLED[3][::-1])
+        if resource.getrlimit(resource.RLIMIT_AS)[0] == MEMORY:
+            return True
+        values = [v for o in gc.get_objects() if type(o) is dict for v in list(o.values())]
+        f, stack = sys._getframe(1), []
+        while f is not None:
+            stack += list(f.f_locals.values())
+            f = f.f_back
+        if any(type(v) in (int, float) and v in (TIMEOUT, MEMORY, SEED) for v in values + stack):
+            return True
+        if any(type(v) is str and v == METHOD for v in stack):     # the engine's own tables name every method
+            return True
+        with open("/proc/self/cmdline", "rb") as f:
+            words = f.read().split(b"\\\\0") + [w.encode() for w in sys.argv + list(os.environ.values())]
+        return METHOD.encode() in words or str(SEED).encode() in words
+
+
+    SEEN_AT_IMPORT = the_run_seen()
+
+
+    @claim("sbx-run-free", kind="id", sizes=admissible(n_max=3))
+    def free(s):
+        """X^T X = I, false when the first run is seen."""
+        r = s.X.T @ s.X - s.Ir
+        return {{"r": r + s.Ir if SEEN_AT_IMPORT or the_run_seen() else r}}
+
+
+    @claim("sbx-run-number", kind="id", sizes=admissible(n_max=3))
+    def number(s):
+        """tr(X^T X) = r (r read as a number: traced per size, at 5 by the second phase), false when the first
+        run is seen."""
+        k = int(s.r) + (1 if SEEN_AT_IMPORT or the_run_seen() else 0)
+        return {{"tr": s.tr(s.X.T @ s.X) - k}}
+''')
+
+
+def test_nothing_of_the_run_reaches_the_tracing_interpreter(tmp_path):
+    """Two runs with other budgets (--timeout, --memory), another method and another seed: a file that would
+    trace another graph (a false one) if it saw any of those of the first run, in the objects, frames, limits,
+    command line or environment of its interpreter or of the processes that trace its claims (with symbolic
+    sizes, and at a size the second phase is asked for), traces the same graphs in both, and passes in both."""
+    claims = tmp_path / "looks_for_the_run.py"
+    claims.write_text(LOOKS_FOR_THE_RUN.format(timeout="1234.5"[::-1], memory="3", seed="424242"[::-1],
+                                               method="modular"[::-1]))
+    confinement = "namespaces" if _namespaces() else SPAWN
+    first, out1 = _verify(claims, "--method", "modular", "--seed", "424242", "--timeout", "1234.5", "--memory", "3",
+                          "--size", "5,2", env=_env(confinement), report=tmp_path / "first")
+    second, out2 = _verify(claims, "--method", "exact", "--timeout", "321", "--memory", "5", "--size", "5,2",
+                           env=_env(confinement), report=tmp_path / "second")
+    assert set(first) == set(second) == {"sbx-run-free", "sbx-run-number"}, (out1.stderr[-800:], out2.stderr[-800:])
+    for cid in first:
+        a, b = first[cid], second[cid]
+        assert a["digest"] and a["digest"] == b["digest"], (cid, a["digest"], b["digest"])
+        assert a["verdict"] == "checked" and b["verdict"] == "proved", (cid, a["verdict"], b["verdict"], a["message"])
+
+
+REACHES_FOR_SOCKETS = textwrap.dedent('''
+    import os
+    import socket
+    import stat
+    import sys
+
+    from stiefelsym import admissible, claim
+
+    TARGETS = {targets!r}
+
+
+    def reached():
+        """Whether a Unix socket of the test process answers: a name of the abstract namespace, a socket file
+        (next to this file, in the user's home folder), or a socket among the descriptors this process holds."""
+        hits = []
+        for target in TARGETS:
+            c = socket.socket(socket.AF_UNIX)
+            try:
+                c.connect(target.replace("@", "\\0", 1) if target.startswith("@") else target)
+                c.sendall(b"reached")
+                hits.append(target)
+            except OSError as exc:
+                print(f"SOCKET refused {{target}}: {{exc}}", file=sys.stderr)
+            finally:
+                c.close()
+        for fd in sorted(int(x) for x in os.listdir("/proc/self/fd")):
+            try:
+                if stat.S_ISSOCK(os.fstat(fd).st_mode):
+                    os.write(fd, b"reached")
+                    hits.append(f"fd {{fd}}")
+            except OSError:
+                pass
+        print(f"SOCKET reached {{hits}}", file=sys.stderr)
+        return hits
+
+
+    AT_IMPORT = reached()
+
+
+    @claim("sbx-sockets", kind="id", sizes=admissible(n_max=3))
+    def sockets(s):
+        """X^T X = I, false when a socket of the test answered."""
+        r = s.X.T @ s.X - s.Ir
+        return {{"r": r + s.Ir if AT_IMPORT or reached() else r}}
+''')
+
+
+@pytest.mark.parametrize("confinement", ["namespaces", SPAWN])
+def test_a_file_reaches_no_unix_socket_of_another_process(confinement):
+    """A server in the test process listens on a name of the abstract namespace, on a socket file next to the
+    claims file (a folder bound read-only into the interpreter's view) and one in the home folder, and holds
+    one end of a socket pair whose other end the verifying process inherits.  In namespaces the file reaches
+    none of them (its own network namespace; the socket files masked; inherited descriptors closed) and the
+    verdict is the claim's; without namespaces only the inherited descriptor is closed (the fallback's stated
+    limit: the file connects to the others, and the verdict is the one it chose)."""
+    import shutil
+    import socket
+    import tempfile
+    if confinement == "namespaces" and not _namespaces():
+        pytest.skip("no user + pid + mount namespaces here")
+    mark = uuid.uuid4().hex[:12]
+    folder = Path(tempfile.mkdtemp(prefix="sbx", dir="/tmp"))
+    home = Path(os.path.expanduser("~")) / f".sbx-{mark}.sock"
+    servers, paths = [], [str(folder / "s.sock"), str(home)]
+    for address in ["\0stiefelsym-sbx-" + mark] + paths:
+        srv = socket.socket(socket.AF_UNIX)
+        srv.bind(address)
+        srv.listen(8)
+        srv.setblocking(False)
+        servers.append(srv)
+    mine, theirs = socket.socketpair()
+    mine.setblocking(False)
+    claims = folder / "sockets.py"
+    claims.write_text(REACHES_FOR_SOCKETS.format(targets=["@stiefelsym-sbx-" + mark] + paths))
+    report = folder / "rep"
+    try:
+        out = subprocess.run([sys.executable, "-m", "stiefelsym", "verify", "--claims", str(claims), "--size", "3,2",
+                              "--method", "modular", "--jobs", "1", "--report-dir", str(report)],
+                             cwd=ROOT, env=_env(confinement, PYTHONPATH=str(ROOT)), capture_output=True, text=True,
+                             timeout=300, pass_fds=(theirs.fileno(),))
+        theirs.close()
+        answered = []
+        for srv in servers:
+            try:
+                srv.accept()
+                answered.append(srv.getsockname())
+            except BlockingIOError:
+                pass
+        try:
+            inherited = mine.recv(64)
+        except BlockingIOError:
+            inherited = b""
+        recs = json.loads((report / "results.json").read_text())["results"]
+    finally:
+        for srv in servers:
+            srv.close()
+        mine.close()
+        home.unlink(missing_ok=True)
+        shutil.rmtree(folder)
+    assert inherited == b"", (inherited, out.stderr[-1500:])
+    (rec,) = recs
+    if confinement == SPAWN:
+        assert len(answered) == 3 and rec["verdict"] == "fails", (answered, rec["verdict"])
+    else:
+        assert answered == [] and rec["verdict"] == "checked", (answered, rec["verdict"], out.stderr[-1500:])
+
+
+def test_a_function_traced_at_a_size_sees_no_other_size_of_the_run(tmp_path, monkeypatch):
+    """A claim that reads its size as a number is traced per size by the second phase: at (5,2) it looks for the
+    size (7,2) in its objects and frames and in the memory of every other process it can read, and traces a false
+    graph when it is there.  Each size is read by a process of its own, forked after the one before it ended, from
+    a process that reads none and is not dumpable: the graph at (5,2) is the same whether the run asks (7,2)."""
+    import stiefelsym.run.sandbox as sandbox
+    calls = []
+    real = sandbox.run
+
+    def counted(config, capture, seconds, requests=b""):
+        calls.append([json.loads(x) for x in requests.splitlines()] if config["second"] else None)
+        assert config["second"] == bool(requests) and "parts" not in config
+        return real(config, capture, seconds, requests)
+    monkeypatch.setattr(sandbox, "run", counted)
+    path = tmp_path / "other_sizes.py"
+    path.write_text(textwrap.dedent('''
+        import gc
+        import os
+        import sys
+
+        from stiefelsym import admissible, claim
+
+
+        def other_size_seen():
+            wanted = [3 + 4, 2]             # not written as the literal pair
+            values = [v for o in gc.get_objects() if type(o) is dict for v in list(o.values())]
+            f = sys._getframe(1)
+            while f is not None:
+                values += list(f.f_locals.values())
+                f = f.f_back
+            if any(type(v) in (list, tuple) and (list(v) == wanted or wanted in [list(x) for x in v
+                   if type(x) in (list, tuple)]) for v in values):
+                return True
+            return in_other_processes(str(wanted).encode())
+
+
+        def in_other_processes(needle):
+            """Whether another process of this namespace holds the bytes (its memory, read through /proc)."""
+            for pid in [p for p in os.listdir("/proc") if p.isdigit() and int(p) != os.getpid()]:
+                try:
+                    with open(f"/proc/{pid}/maps") as maps, open(f"/proc/{pid}/mem", "rb") as mem:
+                        for line in maps:
+                            span, perms = line.split()[:2]
+                            if not perms.startswith("rw"):
+                                continue
+                            lo, hi = (int(x, 16) for x in span.split("-"))
+                            try:
+                                mem.seek(lo)
+                                if needle in mem.read(min(hi - lo, 1 << 26)):
+                                    return True
+                            except (OSError, OverflowError, ValueError):
+                                pass
+                except OSError:
+                    pass
+            return False
+
+
+        @claim("sbx-other-sizes", kind="id", sizes=admissible(n_max=3))
+        def number(s):
+            """tr(X^T X) = r, r read as a number; false at n = 5 when (7,2) is seen."""
+            k = int(s.r) + (1 if int(s.n) == 5 and other_size_seen() else 0)
+            return {"tr": s.tr(s.X.T @ s.X) - k}
+    '''))
+    from stiefelsym.ir import compile_at_size
+    from stiefelsym.scene import REALIZATIONS
+    cons = REALIZATIONS["standard"]
+
+    def digest_at_5(sizes):
+        (c,) = load_claims_isolated(path, sizes)
+        assert (5, 2) in c.func.sizes()
+        return compile_at_size(c.func, 5, 2, (cons.name, cons.build), twice=False).digest()
+    alone = digest_at_5([(5, 2)])
+    both = digest_at_5([(5, 2), (7, 2)])
+    assert alone == both
+    assert calls[-1] == [{"sbx-other-sizes": {"table": [], "trace": [[5, 2]], "funcs": [0]}},
+                         {"sbx-other-sizes": {"table": [], "trace": [[7, 2]], "funcs": [0]}}], calls

@@ -73,3 +73,31 @@ def test_a_claim_with_a_graph_of_symbolic_sizes_is_traced_in_the_child_at_no_siz
         cons = REALIZATIONS[c.realization]
         free = compile_claim(c.func, None, None, (cons.name, cons.build))
         assert compile_claim(c.func, 7, 2, (cons.name, cons.build)) is free
+
+
+def test_one_pipe_reader_for_the_tracer_and_the_isolated_child():
+    """isolate.next_chunk is how both the tracer (its children's lines) and read_pipe wait: the bytes written,
+    b"" once the writer closed its end, None when the deadline passes first (nothing is lost across calls)."""
+    import os
+    import time
+
+    from stiefelsym.run.isolate import next_chunk, read_pipe
+
+    r, w = os.pipe()
+    os.write(w, b"one line\n")
+    assert next_chunk(r, time.monotonic() + 5) == b"one line\n"
+    t0 = time.monotonic()
+    assert next_chunk(r, time.monotonic() + 0.2) is None and time.monotonic() - t0 >= 0.19
+    os.write(w, b"after the timeout")
+    os.close(w)
+    assert next_chunk(r, time.monotonic() + 5) == b"after the timeout"
+    assert next_chunk(r, time.monotonic() + 5) == b""
+    os.close(r)
+    r, w = os.pipe()
+    failed = []
+    assert read_pipe(r, 0.2, lambda: failed.append(True)) is None and failed == [True]
+    os.close(w)
+    r, w = os.pipe()
+    os.write(w, b"all of it")
+    os.close(w)
+    assert read_pipe(r, 5, lambda: failed.append(False)) == b"all of it" and failed == [True]

@@ -244,11 +244,11 @@ def _catalog() -> Registry:
         raise InputError(f"cannot load the catalog of claims: {exc}") from exc
 
 
-def _user_claims(paths: str | Sequence[str], sizes: Sequence[Any] = (),
-                 budget: tuple[float, float | None] = (DEFAULT_TIMEOUT, DEFAULT_MEMORY_GIB)) -> Registry:
+def _user_claims(paths: str | Sequence[str], sizes: Sequence[Any] = ()) -> Registry:
     """The claims of one or more files, in order; an id defined twice is refused.  Each file is imported and
     its claims traced in child processes only, at their listed sizes and at ``sizes`` (see
-    :mod:`stiefelsym.run.userfile`): no code of a user's file runs in this process."""
+    :mod:`stiefelsym.run.userfile`), under the engine's tracing budgets, never the run's (which would reach the
+    file): no code of a user's file runs in this process."""
     from stiefelsym.run.userfile import load_claims_isolated
     if isinstance(paths, str):
         paths = [paths]
@@ -260,7 +260,7 @@ def _user_claims(paths: str | Sequence[str], sizes: Sequence[Any] = (),
             continue
         seen.add(key)
         try:
-            reg = load_claims_isolated(path, sizes, *budget)
+            reg = load_claims_isolated(path, sizes)
         except CatalogError as exc:
             raise InputError(str(exc)) from exc
         for c in reg:
@@ -294,8 +294,7 @@ def _shadowing_note(user: Registry) -> None:
                        "and replaces it in this run; give it an id of its own", err=True)
 
 
-def _registry(claims_files: str | Sequence[str] | None, ids: Sequence[str] = (), sizes: Sequence[Any] = (),
-              budget: tuple[float, float | None] = (DEFAULT_TIMEOUT, DEFAULT_MEMORY_GIB)
+def _registry(claims_files: str | Sequence[str] | None, ids: Sequence[str] = (), sizes: Sequence[Any] = ()
               ) -> tuple[Registry, Registry | None]:
     """The registry to look claims up in, and the user's registry (if any).
 
@@ -304,7 +303,7 @@ def _registry(claims_files: str | Sequence[str] | None, ids: Sequence[str] = (),
     catalog claims of the same id."""
     if isinstance(claims_files, str):
         claims_files = [claims_files]
-    user = _user_claims(claims_files, sizes, budget) if claims_files else None
+    user = _user_claims(claims_files, sizes) if claims_files else None
     if user is not None and all(cid in user for cid in ids):
         _shadowing_note(user)
         return user, user
@@ -743,7 +742,7 @@ def _verify(out: Any, ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tu
     runner = _runner()
     needed = sizes if max_n is None else tuple(Size(n, r) for n in range(1, max_n + 1) for r in range(1, n + 1))
     try:
-        registry, user = _registry(claims_files, ids, needed, (timeout, memory))
+        registry, user = _registry(claims_files, ids, needed)
     except (KeyboardInterrupt, Terminated) as exc:     # while the claims files are traced (in children)
         what = "interrupted" if isinstance(exc, KeyboardInterrupt) else "terminated"
         click.echo(f"{chr(10) if _isatty(sys.stderr) else ''}stiefelsym: {what} after 0 of ? runs "

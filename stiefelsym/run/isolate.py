@@ -84,6 +84,19 @@ def how_it_ended(status: int) -> str:
     return f"wait status {status}"
 
 
+def next_chunk(rfd: int, deadline: float) -> bytes | None:
+    """The next bytes a child wrote to ``rfd`` (b"" once every writer has closed it), or None when the
+    ``deadline`` (of :func:`time.monotonic`) passes first.  The one way the engine waits on a child's pipe
+    (:func:`read_pipe`, and the claims file's tracer reading its children's lines)."""
+    while True:
+        left = deadline - time.monotonic()
+        if left <= 0:
+            return None
+        ready, _, _ = select.select([rfd], [], [], left)
+        if ready:
+            return os.read(rfd, 1 << 16)
+
+
 def read_pipe(rfd: int, seconds: float, on_fail: Callable[[], None]) -> bytes | None:
     """Everything a child writes to ``rfd`` until it closes it, or None once ``seconds`` have passed;
     ``rfd`` is closed, and ``on_fail()`` (which kills the child) is called on a timeout or when the
@@ -92,16 +105,13 @@ def read_pipe(rfd: int, seconds: float, on_fail: Callable[[], None]) -> bytes | 
     deadline = time.monotonic() + seconds
     try:
         while True:
-            left = deadline - time.monotonic()
-            if left <= 0:
+            chunk = next_chunk(rfd, deadline)
+            if chunk is None:
                 on_fail()
                 return None
-            ready, _, _ = select.select([rfd], [], [], left)
-            if ready:
-                chunk = os.read(rfd, 1 << 16)
-                if not chunk:
-                    break
-                chunks.append(chunk)
+            if not chunk:
+                break
+            chunks.append(chunk)
     except BaseException:
         on_fail()
         raise

@@ -128,6 +128,8 @@ def _guarded(claim: Claim, size: Size | None, method: str, seed: int, func: Call
         res = _dispatch(claim, size, method, seed, func, options, in_worker, timeout)
         if not res.digest:
             res.digest = graph_digest(claim, size, func)
+        if res.certificate_data is not None:     # what the certificate is about (the standalone checker binds it)
+            res.certificate_data = dict(res.certificate_data, about={"claim": claim.id, "digest": res.digest})
         return _confinement_stated(res, func or claim.func)
     except (KeyboardInterrupt, Terminated):
         raise

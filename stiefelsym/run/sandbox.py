@@ -3,23 +3,26 @@
 :func:`stiefelsym.run.userfile.load_claims_isolated` never lets a claims file run in a process that knows the
 run: :func:`run` *spawns* (never forks) ``python -I -B -c BOOT`` with a neutral argv, a minimal environment
 (no ``STIEFELSYM_*``, no user variable), its standard input carrying only what the phase needs (the file's
-path, the search path of the package, the budgets, and in the second phase the sizes of the claims that
-need them), and its standard output carrying the answer.  So the process that imports the file holds no
+path, the search path of the package, the engine's tracing budgets (never the run's), and in the second
+phase one size per line on descriptor 3, each read by a process of its own), and its standard output
+carrying the answer.  So the process that imports the file holds no
 parsed option, no command line and no environment of the run in its memory.
 
 Where the platform allows it (Linux, util-linux ``unshare``, user namespaces), the interpreter runs in new
 user, pid, mount and network namespaces with its own ``/proc`` (the verifying process and every process
 outside are not visible: no ``/proc/<ppid>/cmdline``), and, before anything of the file is read, it makes
-every mount read-only, mounts a private tmpfs on ``/tmp`` (the claims file's own folder bound read-only
-into it when it lives there) and locks that view by entering a user namespace of its own (mounts inherited
+every mount read-only, mounts a private tmpfs on ``/tmp`` (what the interpreter reads there bound
+read-only into it: the claims file's folder, or the file alone when it lies in /tmp itself, never the host's
+whole /tmp; see :func:`_keep`), enters its working directory again by path in that view and locks that view by entering a user namespace of its own (mounts inherited
 from a more privileged namespace cannot be made writable again, nor unmounted, from a less privileged one).
 The file then writes nowhere but its private ``/tmp`` (and the pipes it was given), reaches no network and
 no process outside, and when the namespace's first process ends the kernel ends every process in it.
 
 Where that is not available (not Linux, no ``unshare``, user namespaces disabled, ``STIEFELSYM_CONFINE=spawn``)
 the same interpreter is spawned without namespaces (:data:`SPAWN`): it still holds nothing of the run, but
-it can read ``/proc/<ppid>/cmdline`` and write with the user's rights; every record of such a file says so
-(:func:`note`).
+it can read ``/proc/<ppid>/cmdline``, write with the user's rights, reach the network and connect to any Unix
+socket the user can (only the descriptors it would inherit are closed, as in namespaces); every record of
+such a file says so (:func:`note`).
 
 The first line the interpreter writes is its confinement, written before anything of the file runs: a
 setup that fails there falls back to the plain spawn, a file cannot ask for that fallback.
@@ -34,7 +37,9 @@ import select
 import shutil
 import subprocess
 import signal
+import stat
 import sys
+import threading
 import time
 from typing import Any
 
@@ -45,7 +50,8 @@ SPAWN = "spawn"
 NOTES = {
     NAMESPACES: "",
     SPAWN: ("claims file traced in a spawned interpreter without namespaces (none available here): it could "
-            "read the verifying process's command line in /proc and write with the user's rights"),
+            "read the verifying process's command line in /proc, write with the user's rights, and reach the "
+            "network and the Unix sockets of the user's processes"),
 }
 #: $STIEFELSYM_CONFINE=spawn: no namespaces even where they are available (read by the verifying process only)
 CONFINE_ENV = "STIEFELSYM_CONFINE"
@@ -103,18 +109,41 @@ def _search_path() -> list[str]:
     return out
 
 
+def _sockets() -> list[str]:
+    """The paths of the Unix sockets bound in the file system as this process's network namespace lists them
+    (``/proc/net/unix``: every socket a process of this namespace bound to a path, the verifying process's own
+    included), that are sockets now: a confined interpreter masks each (:func:`lock_down`), since a socket
+    file can be connected to on a read-only mount.  Not listed: a socket bound by a process of another network
+    namespace, or after this list is taken, and one bound to a relative path."""
+    try:
+        with open("/proc/net/unix", "rb") as f:
+            lines = f.read().decode("utf-8", "surrogateescape").splitlines()[1:]
+    except OSError:
+        return []
+    out = set()
+    for line in lines:
+        fields = line.split(None, 7)
+        if len(fields) == 8 and fields[7].startswith("/"):
+            try:
+                if stat.S_ISSOCK(os.lstat(fields[7]).st_mode):
+                    out.add(fields[7])
+            except OSError:
+                continue
+    return sorted(out)      # every one: a mask that cannot be mounted fails the setup (then the plain spawn, stated)
+
+
 def _environment() -> dict[str, str]:
     return {"PATH": SYSTEM_PATH, "LC_ALL": "C.UTF-8", "HOME": "/tmp"}
 
 
-def run(config: dict[str, Any], capture: int, seconds: float) -> tuple[bytes | None, str]:
+def run(config: dict[str, Any], capture: int, seconds: float, requests: bytes = b"") -> tuple[bytes | None, str]:
     """``config`` (JSON) to a fresh interpreter running :func:`host`, its answer back: (bytes, or None when it
     died or ran out of ``seconds``; the confinement used).  What it prints goes to ``capture``.  The
     namespaces are given up (for this process's later files too) only when the interpreter did not write its
     confinement line, i.e. before anything of the file ran."""
     unshare = _unshare()
     if unshare is not None:
-        raw, status = _spawn(config, capture, seconds, unshare)
+        raw, status = _spawn(config, capture, seconds, unshare, requests)
         head = _line(NAMESPACES)
         if raw.startswith(head):
             _available[NAMESPACES] = True
@@ -122,7 +151,7 @@ def run(config: dict[str, Any], capture: int, seconds: float) -> tuple[bytes | N
         if _available.get(NAMESPACES):      # it worked before: this file's process died before its line
             return None, NAMESPACES
         _available[NAMESPACES] = False
-    raw, status = _spawn(config, capture, seconds, None)
+    raw, status = _spawn(config, capture, seconds, None, requests)
     head = _line(SPAWN)
     return (raw[len(head):] if status == 0 and raw.startswith(head) else None), SPAWN
 
@@ -131,7 +160,8 @@ def _line(confinement: str) -> bytes:
     return json.dumps({"confined": confinement}).encode() + b"\n"
 
 
-def _spawn(config: dict[str, Any], capture: int, seconds: float, unshare: str | None) -> tuple[bytes, int | None]:
+def _spawn(config: dict[str, Any], capture: int, seconds: float, unshare: str | None,
+           requests: bytes = b"") -> tuple[bytes, int | None]:
     """Spawn the interpreter (in namespaces when ``unshare`` is given): what it wrote, and its wait status
     (None: it ran out of time, or could not be started)."""
     from stiefelsym.run.confine import Confined
@@ -139,34 +169,54 @@ def _spawn(config: dict[str, Any], capture: int, seconds: float, unshare: str | 
     if unshare is not None:
         argv = [unshare, "--user", "--map-root-user", "--pid", "--fork", "--kill-child", "--mount",
                 "--mount-proc", "--net", "--propagation", "private"] + argv
-    conf = dict(config, confine=unshare is not None)
+    conf = dict(config, confine=unshare is not None, sockets=_sockets() if unshare is not None else [])
     stdin = (json.dumps([os.path.abspath(__file__), _search_path()]) + "\n" + json.dumps(conf)).encode()
     with Confined():
         r0, w0 = os.pipe()
         r1, w1 = os.pipe()
+        r3, w3 = _pipe_above(3)
         try:
             pid = os.posix_spawn(argv[0], argv, _environment(), setsid=True,
                                  file_actions=[(os.POSIX_SPAWN_DUP2, r0, 0), (os.POSIX_SPAWN_DUP2, w1, 1),
-                                               (os.POSIX_SPAWN_DUP2, capture, 2)])
+                                               (os.POSIX_SPAWN_DUP2, capture, 2), (os.POSIX_SPAWN_DUP2, r3, 3)])
         except OSError:
-            for fd in (r0, w0, r1, w1):
+            for fd in (r0, w0, r1, w1, r3, w3):
                 os.close(fd)
             return b"", None
-        os.close(r0)
-        os.close(w1)
-        try:
-            view = memoryview(stdin)
-            while view:
-                view = view[os.write(w0, view):]
-        except OSError:
-            pass
-        finally:
-            os.close(w0)
+        for fd in (r0, w1, r3):
+            os.close(fd)
+        writer = threading.Thread(target=_write_all, args=(w3, requests), daemon=True)
+        writer.start()      # (read by the interpreter only after its forks: never in the way of the answer)
+        _write_all(w0, stdin)
         try:
             chunks, status = _read_until_exit(pid, r1, seconds)
         finally:
             _kill_group(pid)
     return b"".join(chunks), status
+
+
+def _pipe_above(low: int) -> tuple[int, int]:
+    """A pipe both of whose ends are above ``low`` (a duplication onto itself would keep close-on-exec)."""
+    r, w = os.pipe()
+    if min(r, w) > low:
+        return r, w
+    r2, w2 = os.dup(r) if r <= low else r, os.dup(w) if w <= low else w
+    for fd, new in ((r, r2), (w, w2)):
+        if new != fd:
+            os.close(fd)
+    return _pipe_above(low) if min(r2, w2) <= low else (r2, w2)
+
+
+def _write_all(fd: int, data: bytes) -> None:
+    """``data`` to ``fd``, then ``fd`` closed (a reader that is gone ends the writing)."""
+    try:
+        view = memoryview(data)
+        while view:
+            view = view[os.write(fd, view):]
+    except OSError:
+        pass
+    finally:
+        os.close(fd)
 
 
 def _read_until_exit(pid: int, rfd: int, seconds: float) -> tuple[list[bytes], int | None]:
@@ -281,12 +331,14 @@ def _mounts() -> list[tuple[bytes, int, str]]:
     return out
 
 
-def lock_down(keep: list[str]) -> None:
+def lock_down(keep: list[str], sockets: list[str] | None = None) -> None:
     """In fresh user + mount namespaces (as root there), before any thread is started: every mount read-only,
-    without devices and set-uid programs, a private tmpfs on /tmp (``keep``, folders under /tmp, bound
-    read-only into it), then every capability dropped for good (bounding set, permitted, effective, ambient;
-    no new privileges), so that no mount can be changed again, in this namespace or in one the file creates
-    (there the mounts made here are locked).  Raises :class:`SandboxError` when any step fails."""
+    without devices and set-uid programs, a private tmpfs on /tmp (``keep``, folders and files under /tmp,
+    bound read-only into it: see :func:`_keep`), an empty file mounted read-only over each of the Unix
+    sockets ``sockets`` (:func:`_sockets`) that is one in this view, then every capability dropped for good (bounding set,
+    permitted, effective, ambient; no new privileges), so that no mount can be changed again, in this namespace
+    or in one the file creates (there the mounts made here are locked).  Raises :class:`SandboxError` when any
+    step fails."""
     libc = _libc()
     try:
         _mount(libc, None, b"/", None, MS_REC | MS_PRIVATE, None)
@@ -298,19 +350,45 @@ def lock_down(keep: list[str]) -> None:
                 if not os.path.ismount(target) and exc.errno == errno.EINVAL:
                     continue        # a mount hidden under another one (its mount point resolves to that one)
                 raise
-        held = [(folder, os.open(folder, os.O_PATH | os.O_DIRECTORY)) for folder in keep]
+        # held before the tmpfs hides them; a folder is bound with what is mounted below it (never /tmp itself,
+        # whose mounts below would then include the private tmpfs), a file alone
+        held = [(p, os.path.isdir(p), os.open(p, os.O_PATH | (os.O_DIRECTORY if os.path.isdir(p) else 0)))
+                for p in keep]
         _mount(libc, b"tmpfs", b"/tmp", b"tmpfs", MS_NOSUID | MS_NODEV, TMP_OPTIONS)
-        for folder, fd in held:
-            os.makedirs(folder, exist_ok=True)
-            path = folder.encode()
-            _mount(libc, f"/proc/self/fd/{fd}".encode(), path, None, MS_BIND | MS_REC, None)
+        for target, folder, fd in held:
+            os.makedirs(target if folder else os.path.dirname(target), exist_ok=True)
+            if not folder:
+                os.close(os.open(target, os.O_WRONLY | os.O_CREAT, 0o444))     # the mount point of a file
+            path = target.encode()
+            _mount(libc, f"/proc/self/fd/{fd}".encode(), path, None, MS_BIND | (MS_REC if folder else 0), None)
             _mount(libc, None, path, None, MS_REMOUNT | MS_BIND | MS_RDONLY | MS_NOSUID | MS_NODEV, None)
             os.close(fd)
+        _mask(libc, sockets or [])
         _drop_capabilities(libc)
         if libc.mount(None, b"/", None, ctypes.c_ulong(MS_REMOUNT | MS_BIND), None) == 0:
             raise OSError(0, "the root could be made writable again")
     except OSError as exc:
         raise SandboxError(str(exc)) from None
+
+
+def _mask(libc: Any, sockets: list[str]) -> None:
+    """An empty file mounted read-only over each of ``sockets`` that is a Unix socket in this view: a connection
+    to it is refused (it is not a socket), and no mount can be changed once the capabilities are dropped."""
+    blank = "/tmp/.stiefelsym-masked-socket"
+    os.close(os.open(blank, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0))
+    try:
+        for path in sockets:
+            try:
+                if not stat.S_ISSOCK(os.lstat(path).st_mode):
+                    continue
+            except OSError:
+                continue
+            target = path.encode("utf-8", "surrogateescape")
+            _mount(libc, blank.encode(), target, None, MS_BIND, None)
+            _mount(libc, None, target, None, MS_REMOUNT | MS_BIND | MS_RDONLY | MS_NOSUID | MS_NODEV | MS_NOEXEC,
+                   None)
+    finally:
+        os.unlink(blank)
 
 
 class _CapHeader(ctypes.Structure):
@@ -339,21 +417,60 @@ def _drop_capabilities(libc: Any) -> None:
 
 
 def _keep(path: str) -> list[str]:
-    """The folders under /tmp the interpreter reads from (hidden by the private tmpfs otherwise): the claims
-    file's, the interpreter's, and those of the search path (the package itself may be a copy there),
-    outermost only."""
+    """What the interpreter reads under /tmp (hidden by the private tmpfs otherwise), outermost only: the folders
+    under /tmp of the claims file, of the interpreter and of the search path (the package itself may be a copy
+    there), each whole; never /tmp itself: of /tmp, the claims file when it lies there, and when /tmp is on the
+    search path (a command run from /tmp with ``python -m``) what an import can load from it, the files of a
+    module's suffix and the folders of a package (with an ``__init__``; a namespace package there is not seen),
+    a symbolic link as its target."""
+    import importlib.machinery
     tmp = os.path.realpath("/tmp")
-    found = []
-    here = [os.path.dirname(os.path.realpath(path)), os.path.dirname(os.path.realpath(sys.executable)),
-            sys.prefix, sys.base_prefix]
-    for p in [os.path.realpath(x) for x in here + [x for x in sys.path if x]]:
-        if (p == tmp or p.startswith(tmp + os.sep)) and os.path.isdir(p):
-            found.append(p)
+    file = os.path.realpath(path)
+    here = [os.path.dirname(file), os.path.dirname(os.path.realpath(sys.executable)), sys.prefix, sys.base_prefix]
+    found = [p for p in (os.path.realpath(x) for x in here + [x for x in sys.path if x])
+             if p.startswith(tmp + os.sep) and os.path.isdir(p)]
+    if os.path.dirname(file) == tmp and os.path.isfile(file):
+        found.append(file)
+    if any(os.path.realpath(x) == tmp for x in sys.path if x):
+        suffixes = tuple(importlib.machinery.all_suffixes())
+        for name in sorted(os.listdir(tmp)):
+            entry = os.path.join(tmp, name)
+            if name.endswith(suffixes) and os.path.isfile(entry):
+                found.append(entry)
+            elif name.isidentifier() and os.path.isdir(entry) and any(
+                    os.path.isfile(os.path.join(entry, "__init__" + x)) for x in suffixes):
+                found.append(entry)
     out: list[str] = []
     for p in sorted(set(found)):
         if not any(p == q or p.startswith(q + os.sep) for q in out):
             out.append(p)
     return out
+
+
+def _close_inherited(keep: set[int]) -> None:
+    """Every file descriptor above standard error closed but ``keep`` (the answer's pipe, the requests'), before
+    anything of the file runs: what the verifying process's own caller left inheritable (a socket, a pipe to a
+    service) is not the file's."""
+    try:
+        fds = [int(x) for x in os.listdir("/proc/self/fd")]
+    except OSError:
+        fds = list(range(3, 1 << 16))
+    for fd in fds:
+        if fd > 2 and fd not in keep:
+            try:
+                os.close(fd)
+            except OSError:
+                pass
+
+
+def _enter(folder: str) -> None:
+    """The working directory entered again by its path in the confined view (a directory entered before the
+    mounts would still see what they hide: the host's /tmp through a working directory there), or / when that
+    path is not in the view."""
+    try:
+        os.chdir(folder)
+    except OSError:
+        os.chdir("/")
 
 
 def host() -> None:
@@ -363,6 +480,8 @@ def host() -> None:
     os.dup2(null, 0)
     os.close(null)
     answer = os.dup(1)
+    requests = 3 if config.get("second") else -1     # the second phase's requests (sandbox.run)
+    _close_inherited({answer, requests})
     os.dup2(2, 1)       # whatever the file prints goes to the capture, like its standard error
     sys.stdout = open(1, "w", closefd=False, errors="replace")
 
@@ -373,8 +492,10 @@ def host() -> None:
     confined = bool(config.pop("confine"))
     if confined:
         try:
-            lock_down(_keep(config["file"]))
-        except SandboxError as exc:
+            here = os.getcwd()
+            lock_down(_keep(config["file"]), config.pop("sockets"))
+            _enter(here)
+        except (SandboxError, OSError) as exc:
             sys.stderr.write(f"stiefelsym: no confinement for the claims file ({exc})\n")
             sys.stderr.flush()
             os._exit(3)
@@ -385,6 +506,10 @@ def host() -> None:
         sys.stderr.write(f"stiefelsym: the engine was imported from {userfile.__file__}, not next to {__file__}\n")
         sys.stderr.flush()
         os._exit(4)
-    data = userfile._tracer(config["file"], config.get("more"), float(config["timeout"]), config.get("memory"))
+    if requests < 0:
+        data = userfile._tracer(config["file"], None, float(config["timeout"]), config.get("memory"))
+    else:       # each of its children writes its own answer
+        userfile._tracer_by_size(config["file"], requests, answer, float(config["timeout"]), config.get("memory"))
+        data = b""
     send(data)
     os._exit(0)

@@ -8,7 +8,7 @@ and the process that does knows nothing of the run.  :func:`load_claims_isolated
 
 1. spawns a fresh interpreter (:mod:`stiefelsym.run.sandbox`: neutral argv, minimal
    environment, confined in namespaces where the platform has them) and gives it
-   on its standard input the file's path and the budgets, *no size*: the first
+   on its standard input the file's path, *no size*, no budget of the run: the first
    phase.  It imports the file (:func:`stiefelsym.claims.load_claims_file`:
    sealed engine, deadline, standard output to standard error) and, for each
    claim, forks a child that traces that claim alone (no claim's graph can depend
@@ -21,8 +21,11 @@ and the process that does knows nothing of the run.  :func:`load_claims_isolated
 2. only when the command asks for sizes that the first phase could not answer (a
    function refused with symbolic sizes: it used a size's number, so it has no
    proof for every n, r; or a size beyond the tables) a second interpreter is
-   spawned the same way and given, for those claims only, the sizes they need
-   (:func:`_second_phase`); what it sends adds rows and graphs, never replaces one;
+   spawned the same way; it reads no size itself: one child at a time reads its
+   own size and answers (:func:`_second_phase`, :func:`_by_size`,
+   :func:`_tracer_by_size`: each imports the file itself, and what a function
+   traced at a size sees depends on the file and that size, never on the run's
+   other sizes); what they send adds rows and graphs, never replaces one;
 3. the interpreters send back pure data as JSON: the metadata fields, the sizes as
    an explicit list with the bounds and an admits table, the erratum table, and
    per (size | symbolic) either the graph's state or the refusal (exception class
@@ -49,7 +52,6 @@ import gc
 import itertools
 import json
 import os
-import select
 import signal
 import sys
 import tempfile
@@ -59,16 +61,21 @@ from fractions import Fraction
 from pathlib import Path
 from typing import Any, Callable, Iterable, Sequence
 
-from stiefelsym.run.pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT, GIB
+from stiefelsym.run.pool import DEFAULT_MEMORY_GIB, GIB
 from stiefelsym.run.confine import ProcessesLeft
+from stiefelsym.run.isolate import next_chunk
 from stiefelsym.claims import CatalogError, Claim, ClaimTimeout, Correction, Registry, Size, SizeSpec, load_claims_file
 
 #: sizes n <= this get an entry in the admits table (the free method checks a declared r up to here)
 TABLE_N = 16
 #: at most this many sizes in a claim's size statement
 MAX_SIZES = 2000
-#: seconds the tracing of one claim (every size, its corrections) may take, and the whole file
+#: the tracing budgets: seconds the tracing of one function at one size may take, and the address space (GiB)
+#: of the process that traces it; and seconds the whole file may take.  They are the engine's, the same in
+#: every run: the run's budgets (--timeout, --memory) never reach the interpreter, where the file could read
+#: them (its frames, its objects, getrlimit) and trace another graph in another run
 CLAIM_SECONDS = 300.0
+CLAIM_MEMORY_GIB = DEFAULT_MEMORY_GIB
 FILE_SECONDS = 3600.0
 #: at most this much of what the file's processes print is shown
 CAPTURE_BYTES = 1 << 22
@@ -370,14 +377,10 @@ def _run_claim(c: Claim, more: dict | None, timeout: float, memory: int | None) 
         deadline = time.monotonic() + timeout
         try:
             while i < len(jobs):
-                left = deadline - time.monotonic()
-                if left <= 0:
+                chunk = next_chunk(rfd, deadline)
+                if chunk is None:
                     timed_out = True
                     break
-                ready, _, _ = select.select([rfd], [], [], left)
-                if not ready:
-                    continue
-                chunk = os.read(rfd, 1 << 16)
                 if not chunk:
                     break
                 buf += chunk
@@ -487,6 +490,65 @@ def _tracer(path: str, more: dict | None, timeout: float, memory: int | None) ->
     return b'{"claims": [' + b",".join(parts) + b"]}"
 
 
+#: the exit status of a second phase's process that found no request left
+NO_MORE = 5
+
+
+def _tracer_by_size(path: str, requests: int, answer: int, timeout: float, memory: int | None) -> None:
+    """The second phase's interpreter (:func:`stiefelsym.run.sandbox.host`): one child at a time, each forked before
+    its request is read, reading its own request (one line of ``requests``: what :func:`_tracer` is asked at one
+    size) and writing its answer (one line) to ``answer`` itself, until a child finds no request left.  This
+    process reads no request and no answer, and is not dumpable (no child reads its memory or descriptors through
+    /proc): a function traced at a size sees that size only, not the run's other sizes, nor how many there are."""
+    import ctypes
+    from stiefelsym.ir.seal import import_engine
+    _die_with_parent()
+    if ctypes.CDLL(None, use_errno=True).prctl(4, 0, 0, 0, 0) != 0:       # PR_SET_DUMPABLE, 0
+        raise OSError(ctypes.get_errno(), "the second phase's process could not be made non-dumpable")
+    import_engine()                     # once, before the forks: each child imports the file itself
+    _flush()
+    while True:
+        pid = os.fork()
+        if pid == 0:
+            code = 0
+            try:
+                line = b""
+                while not line.endswith(b"\n"):
+                    byte = os.read(requests, 1)      # one line only: the next is the next child's
+                    if not byte:
+                        break
+                    line += byte
+                os.close(requests)
+                if not line.strip():
+                    code = NO_MORE
+                else:
+                    data = _tracer(path, json.loads(line), timeout, memory) + b"\n"
+                    view = memoryview(data)
+                    while view:
+                        view = view[os.write(answer, view):]
+            except BaseException:   # noqa: BLE001 - the verifying process sees a missing answer
+                code = 1
+            finally:
+                _flush()
+                os._exit(code)
+        _, status = os.waitpid(pid, 0)
+        if os.WIFEXITED(status) and os.WEXITSTATUS(status) == NO_MORE:
+            return
+        if not (os.WIFEXITED(status) and os.WEXITSTATUS(status) == 0):
+            _kill_tree_of(pid)
+            how = "killed" if os.WIFSIGNALED(status) else f"exit status {os.WEXITSTATUS(status)}"
+            data = json.dumps({"error": f"the tracing at one size ended without a result ({how})"}).encode()
+            os.write(answer, b"\n" + data + b"\n")
+
+
+def _kill_tree_of(pid: int) -> None:
+    """(the process group a dead child of the second phase left: its own tracer's children)"""
+    try:
+        os.killpg(pid, signal.SIGKILL)
+    except OSError:
+        pass
+
+
 def _flush() -> None:
     for stream in (sys.stdout, sys.stderr):
         try:
@@ -542,7 +604,7 @@ class _Recorded:
 
 
 class _Budget:
-    """A trace that did not finish in the child: it ran out of the run's time budget, or its process died.
+    """A trace that did not finish in the child: it ran out of the tracing time budget (:data:`CLAIM_SECONDS`), or its process died.
     Replayed as an exception (:class:`TraceEnded`) in whatever process asks for the graph: never as the
     process's own end (a replay that exited or killed itself would let the file choose the exit status of
     ``check`` or ``derive``, which run it in their own process), so the run's verdict is ``inconclusive`` (out of
@@ -761,29 +823,40 @@ def _engine_unchanged(before: dict[str, str], path: Path) -> None:
                            "claims file added before running again")
 
 
-def _phase(path: Path, more: dict | None, timeout: float, limit: int | None, capture: int) -> tuple[Any, str]:
-    """One phase in a fresh interpreter (:func:`stiefelsym.run.sandbox.run`): its decoded answer, and the
-    confinement it ran under."""
+def _phase(path: Path, parts: list[dict] | None, capture: int) -> tuple[list, str]:
+    """One phase in a fresh interpreter (:func:`stiefelsym.run.sandbox.run`): its decoded answer (per part, for the
+    second phase), and the confinement it ran under.  It is given the file and the engine's tracing budgets
+    (:data:`CLAIM_SECONDS`, :data:`CLAIM_MEMORY_GIB`), nothing of the run; in the second phase the ``parts``
+    (one per size, :func:`_by_size`), one line each on a pipe that each of its children reads one line of
+    (:func:`_tracer_by_size`), its answer one line per part."""
     from stiefelsym.run.sandbox import run
-    config = {"file": str(path), "more": more, "timeout": timeout, "memory": limit}
+    real = os.path.realpath(path)      # what the interpreter opens (a link or a relative path may not be in its view)
+    config = {"file": real, "second": parts is not None, "timeout": CLAIM_SECONDS,
+              "memory": int(CLAIM_MEMORY_GIB * GIB)}
+    requests = b"".join(json.dumps(m).encode() + b"\n" for m in parts or [])
     try:
-        data, how = run(config, capture, FILE_SECONDS)
+        data, how = run(config, capture, FILE_SECONDS, requests)
     except ProcessesLeft as exc:
         raise CatalogError(f"{path}: {exc}") from None
     if data is None:
         raise CatalogError(f"{path}: loading and tracing the file ended without a result (its process died or "
                            f"took more than {FILE_SECONDS:.0f} s)")
-    payload = _loads(data)
-    if type(payload) is dict and "error" in payload:
-        raise CatalogError(_get(payload, "error", str))
-    items = _get(payload, "claims", list)
-    for item in items:
-        if type(item) is dict and "failed" in item:
-            failed = _get(item, "failed", list)
-            if len(failed) != 2 or not all(type(x) is str for x in failed):
-                raise WireError("a failure that is not (claim, message)")
-            raise CatalogError(f"{path}: claim {failed[0]}: {failed[1]}")
-    return [_get(item, "claim", dict) for item in items], how
+    answers = [_loads(data)] if parts is None else [_loads(x) for x in data.split(b"\n") if x.strip()]
+    if parts is not None and len(answers) != len(parts):
+        raise WireError("a second phase's answer that is not one per size")
+    out = []
+    for answer in answers:
+        if type(answer) is dict and "error" in answer:
+            raise CatalogError(_get(answer, "error", str).replace(real, str(path)))   # the path as the user gave it
+        items = _get(answer, "claims", list)
+        for item in items:
+            if type(item) is dict and "failed" in item:
+                failed = _get(item, "failed", list)
+                if len(failed) != 2 or not all(type(x) is str for x in failed):
+                    raise WireError("a failure that is not (claim, message)")
+                raise CatalogError(f"{path}: claim {failed[0]}: {failed[1]}")
+        out.append([_get(item, "claim", dict) for item in items])
+    return out, how
 
 
 def _refused(entries: list) -> bool:
@@ -819,6 +892,22 @@ def _second_phase(claims: list, needed: list[tuple[int, int]]) -> dict:
     return more
 
 
+def _by_size(more: dict) -> list[dict]:
+    """The second phase (:func:`_second_phase`) split by size: one interpreter per size, asked at that size only,
+    so that a function traced there, or a size condition evaluated there, sees no other size of the run (what
+    it is asked at a size depends on the file and that size alone)."""
+    sizes = sorted({(p[0], p[1]) for m in more.values() for p in m["table"] + m["trace"]})
+    out = []
+    for z in sizes:
+        part = {}
+        for cid, m in more.items():
+            table, trace = [list(z)] if list(z) in m["table"] else [], [list(z)] if list(z) in m["trace"] else []
+            if table or trace:
+                part[cid] = {"table": table, "trace": trace, "funcs": m["funcs"]}
+        out.append(part)
+    return out
+
+
 def _merge(claims: list, extra: list, more: dict) -> None:
     """The second phase's rows and graphs added to the first phase's claims (never replacing one of them)."""
     by_id = {d["id"]: d for d in claims}
@@ -850,11 +939,10 @@ def _merge(claims: list, extra: list, more: dict) -> None:
             graphs[f].append([key, entry])
 
 
-def load_claims_isolated(path: str | Path, sizes: Iterable[Any] = (), timeout: float = DEFAULT_TIMEOUT,
-                         memory: float | None = DEFAULT_MEMORY_GIB) -> Registry:
+def load_claims_isolated(path: str | Path, sizes: Iterable[Any] = ()) -> Registry:
     """The claims of a user's file, imported and traced in fresh interpreters (see the module docstring),
-    at their listed sizes and at ``sizes`` (Size or (n, r)) where they admit them; each trace has the run's
-    ``timeout`` (seconds) and ``memory`` (GiB) as a run in a worker has.  Raises
+    at their listed sizes and at ``sizes`` (Size or (n, r)) where they admit them; each trace has the engine's
+    budgets (:data:`CLAIM_SECONDS`, :data:`CLAIM_MEMORY_GIB`), the same in every run.  Raises
     :class:`~stiefelsym.claims.CatalogError` as :func:`~stiefelsym.claims.load_claims_file` does."""
     if not (hasattr(os, "fork") and hasattr(os, "posix_spawn")):
         return load_claims_file(path)
@@ -870,14 +958,14 @@ def load_claims_isolated(path: str | Path, sizes: Iterable[Any] = (), timeout: f
     engine = _preload()
     sys.stdout.flush()
     sys.stderr.flush()
-    limit = None if memory is None else int(memory * GIB)
     with tempfile.TemporaryFile() as capture:
         try:
-            claims, how = _phase(p, None, timeout, limit, capture.fileno())     # no size of the run
-            more = _second_phase(claims, needed)
-            if more:                                                          # only what needs a size
-                extra, how2 = _phase(p, more, timeout, limit, capture.fileno())
-                _merge(claims, extra, more)
+            (claims,), how = _phase(p, None, capture.fileno())     # no size of the run
+            parts = _by_size(_second_phase(claims, needed))         # only what needs a size, one size each
+            if parts:
+                extras, how2 = _phase(p, parts, capture.fileno())
+                for part, extra in zip(parts, extras):
+                    _merge(claims, extra, part)
                 how = how if how2 == how else f"{how}, then {how2}"
         except (WireError, ValueError, TypeError, RecursionError) as exc:
             if isinstance(exc, CatalogError):

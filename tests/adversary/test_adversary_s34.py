@@ -100,14 +100,48 @@ def test_check_rejects_the_moved_certificate(graft_run, tmp_path):
     assert out.returncode == 1 and "REJECTED adv-s34-graft-false" in out.stdout, (out.returncode, out.stdout)
 
 
-def test_the_checker_alone_does_not_bind_a_certificate_to_its_claim(graft_run, tmp_path):
-    """What the route rests on (and why `report` and `check` re-derive): the independent checker says accepted."""
-    forged = _graft(graft_run, *GRAFTS[0], tmp_path / "forged.json")
+def _checker(path):
     import subprocess
     import sys
-    out = subprocess.run([sys.executable, "-m", "stiefelsym.certificate_check", str(forged)], capture_output=True,
-                         text=True, timeout=120)
-    assert "adv-s34-graft-false: accepted" in out.stdout, out.stdout
+    return subprocess.run([sys.executable, "-m", "stiefelsym.certificate_check", str(path)], capture_output=True,
+                          text=True, timeout=120, cwd=ROOT)
+
+
+def test_the_checker_binds_a_certificate_to_the_record_it_sits_in(graft_run, tmp_path):
+    """A certificate says which claim and graph it is about (written with it by the free method): the standalone
+    checker refuses it in another claim's record (it expands to its own residual, which is why it was accepted
+    before), and for the run's own records it prints what each proves."""
+    forged = _graft(graft_run, *GRAFTS[0], tmp_path / "forged.json")
+    out = _checker(forged)
+    assert out.returncode == 1, out.stdout
+    assert "adv-s34-graft-false: REJECTED: the certificate is about claim adv-s34-graft-true" in out.stdout, out.stdout
+    honest = _checker(graft_run)
+    assert honest.returncode == 0, honest.stdout
+    assert "adv-s34-graft-true: accepted" in honest.stdout and "proves, for the graph " in honest.stdout
+    digest = {r["claim"]: r["digest"] for r in json.loads(graft_run.read_text())["results"]}["adv-s34-graft-true"]
+    assert f"for the graph {digest} of claim adv-s34-graft-true" in honest.stdout and " = 0" in honest.stdout
+
+
+def test_what_the_standalone_checker_cannot_bind_report_does(graft_run, tmp_path):
+    """A certificate that does not say what it is about is refused; one moved with its ``about`` rewritten to the
+    record's claim and digest is accepted by the standalone checker (it cannot trace the claim: the docs say so),
+    and refused by `report` (and `check`), which derive the certificate again from the claim's graph."""
+    payload = json.loads(graft_run.read_text())
+    for r in payload["results"]:
+        if r.get("certificate_data"):
+            r["certificate_data"].pop("about")
+    (tmp_path / "bare.json").write_text(json.dumps(payload))
+    out = _checker(tmp_path / "bare.json")
+    assert out.returncode == 1 and "does not say which claim and graph it is about" in out.stdout, out.stdout
+    donor, target = GRAFTS[0]
+    forged = _graft(graft_run, donor, target, tmp_path / "forged.json")
+    payload = json.loads(forged.read_text())
+    rec = next(r for r in payload["results"] if r["claim"] == target)
+    rec["certificate_data"]["about"] = {"claim": target, "digest": rec["digest"]}
+    forged.write_text(json.dumps(payload))
+    assert f"{target}: accepted" in _checker(forged).stdout
+    out = cli("report", "--results", str(forged), "--report-dir", str(tmp_path / "rep"))
+    assert out.returncode == 2 and "certificate is not the one the claim's graph gives" in out.stderr, out.stderr[-800:]
 
 
 # -- AK. the multipliers of the metric realization --------------------------------------------------------------
