@@ -11,7 +11,7 @@ import os  # noqa: E402
 import pytest  # noqa: E402
 
 # the tests predict with the package's cost model, whatever fit `stiefelsym speed` left in the user's cache
-os.environ.setdefault("STIEFELSYM_COSTMODEL", str(ROOT / "stiefelsym" / "costmodel.json"))
+os.environ.setdefault("STIEFELSYM_COSTMODEL", str(ROOT / "stiefelsym" / "methods" / "costmodel.json"))
 
 
 @pytest.fixture

@@ -185,7 +185,7 @@ def test_cost_model_refit_from_its_records_is_byte_for_byte(run, tmp_path):
     pytest.importorskip("matplotlib")
     from pathlib import Path
     root = Path(__file__).resolve().parents[1]
-    stored = root / "stiefelsym" / "costmodel.json"
+    stored = root / "stiefelsym" / "methods" / "costmodel.json"
     for f in ("all/results.json", "results.json"):           # the catalog runs the claims are calibrated on
         (tmp_path / "reports" / f).parent.mkdir(parents=True, exist_ok=True)
         (tmp_path / "reports" / f).write_bytes((root / "reports" / f).read_bytes())

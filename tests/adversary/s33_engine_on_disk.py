@@ -32,7 +32,7 @@ _s33_forge()
 
 _PKG = pathlib.Path(stiefelsym.__file__).resolve().parent
 if (_PKG / "S33_SCRATCH_COPY").is_file():         # a scratch copy made by the test, never the engine itself
-    _TARGET = _PKG / "report.py"
+    _TARGET = _PKG / "reports" / "report.py"
     _SRC = _TARGET.read_text()
     if "S33 PAYLOAD" not in _SRC:
         _TARGET.write_text(_SRC + PAYLOAD)

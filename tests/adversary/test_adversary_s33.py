@@ -474,13 +474,13 @@ def test_a_claims_file_that_rewrites_the_engine_on_disk_changes_no_verdict(tmp_p
     out = subprocess.run([sys.executable, "-m", "stiefelsym", "verify", "--claims", str(HERE / DISK), "--method",
                           "exact", "--size", "3,2", "--report-dir", str(tmp_path / "rep")], cwd=root, env=env,
                          capture_output=True, text=True, timeout=300)
-    assert "S33 PAYLOAD" not in (ROOT / "stiefelsym" / "report.py").read_text()    # the engine itself untouched
+    assert "S33 PAYLOAD" not in (ROOT / "stiefelsym" / "reports" / "report.py").read_text()    # the engine itself untouched
     assert out.returncode == 2, (out.returncode, out.stderr[-800:])
     if confinement == "spawn" or "Read-only file system" not in out.stderr:
-        assert "S33 PAYLOAD" in (root / "stiefelsym" / "report.py").read_text(), out.stderr[-800:]  # the copy was
+        assert "S33 PAYLOAD" in (root / "stiefelsym" / "reports" / "report.py").read_text(), out.stderr[-800:]  # the copy was
         assert "changed on disk" in out.stderr and "report.py" in out.stderr and "Traceback" not in out.stderr
     else:
-        assert "S33 PAYLOAD" not in (root / "stiefelsym" / "report.py").read_text()
+        assert "S33 PAYLOAD" not in (root / "stiefelsym" / "reports" / "report.py").read_text()
     assert not (tmp_path / "rep" / "results.json").exists()
     assert "proved" not in out.stdout
 
