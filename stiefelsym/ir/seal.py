@@ -60,16 +60,25 @@ def sealed() -> bool:
     return _STATE["modules"] is not None
 
 
+def _excluded(name: str) -> bool:
+    return any(last == x or (x.endswith("_") and last.startswith(x))
+               for last in name.split(".")[1:] for x in _NOT_VERDICT)
+
+
 def _verdict_modules() -> list[str]:
+    """The engine's modules a verdict depends on, found on disk (a package that is not one of them, e.g.
+    the command line's, is neither imported nor walked into)."""
     names = []
-    root = str(Path(__file__).resolve().parents[1])     # the engine's package folder
-    for info in pkgutil.walk_packages([root], "stiefelsym."):
-        last = info.name.rsplit(".", 1)[-1]
-        if any(last == x or (x.endswith("_") and last.startswith(x)) for x in _NOT_VERDICT):
-            continue
-        if ".proofs" in info.name:
-            continue
-        names.append(info.name)
+
+    def walk(folder: str, prefix: str) -> None:
+        for info in pkgutil.iter_modules([folder]):
+            name = prefix + info.name
+            if _excluded(name):
+                continue
+            names.append(name)
+            if info.ispkg:
+                walk(str(Path(folder) / info.name), name + ".")
+    walk(str(Path(__file__).resolve().parents[1]), "stiefelsym.")      # the engine's package folder
     return names
 
 
