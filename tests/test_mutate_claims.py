@@ -37,11 +37,16 @@ def test_a_users_claims_are_mutated_on_their_graphs_and_the_file_never_runs_here
     assert any(m["classification"] == "killed" for m in c["mutants"])
 
 
-def test_a_claim_traced_per_size_is_not_covered(monkeypatch, tmp_path):
+def test_a_claim_traced_per_size_is_mutated_on_its_graph_at_each_size(monkeypatch, tmp_path):
+    """tr(XᵀX) = r with r read as a number: its graphs at (3,2), (3,1), (3,3) (the file's, traced in the child)
+    are one computation, so each mutant is one change at the same node of each; all are noticed."""
     res, _ = _invoke(["mc-per-size", "--method", "modular", "--jobs", "1", "--format", "json"], monkeypatch, tmp_path)
     assert res.exit_code == 0, res.output
     (c,) = json.loads(res.stdout)["claims"]
-    assert "no graph with symbolic sizes" in c["skipped"] and not c["mutants"], c
+    assert not c["skipped"] and c["on"] == "graphs per size" and c["mutants"], c
+    assert all("(graphs at (3,2), (3,1), (3,3): node %" in m["description"] for m in c["mutants"]), c["mutants"]
+    assert {m["classification"] for m in c["mutants"]} <= {"killed", "equivalent"}, c["mutants"]
+    assert any(m["classification"] == "killed" for m in c["mutants"])
 
 
 def test_the_correction_search_of_a_users_claim_works_on_its_graph(monkeypatch, tmp_path):
