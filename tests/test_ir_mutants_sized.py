@@ -10,6 +10,7 @@ from stiefelsym.ir import compile_claim
 from stiefelsym.ir.mutants import MutantCensus, SkeletonMismatch, sized_graph_mutants, skeleton
 from stiefelsym.ir.replay import GraphClaim, SizedGraphClaim
 from stiefelsym.ir.trace import TraceRefused, trace
+from stiefelsym.reports.report import render_mutation_markdown, render_mutation_summary
 from stiefelsym.run.runner import run_one
 from stiefelsym.scene import REALIZATIONS
 
@@ -120,6 +121,14 @@ def test_graphs_that_are_not_one_computation_fall_back_to_the_source():
     assert cm.on == ON_SOURCE and "graphs per size differ" in cm.fallback and not cm.skipped
     assert cm.mutants and all(o.lineno for o in cm.mutants) and rep.ok()    # source mutants, by line
     assert any(o.classification == "killed" for o in cm.mutants)
+    # the reports say so
+    summary, md = render_mutation_summary(rep.to_json()), render_mutation_markdown(rep.to_json())
+    assert "mutants made on: source: 1 claim (1 fell back from graphs to the source)" in summary
+    assert "Claims mutated on their source because their graphs could not be:" in md
+    assert "`toy-loop`: the claim has no graph with symbolic sizes" in md and "graphs per size differ" in md
+    # a source run says nothing of graphs
+    assert "made on" not in render_mutation_summary(run_mutation([c], sizes=SIZES[:1], methods=("rational",),
+                                                                 limit=1).to_json())
 
 
 def test_the_catalogs_graphs_per_size_replay_to_themselves():

@@ -37,7 +37,11 @@ With ``on="graphs"`` (``stiefelsym mutate --on graphs``) the mutants are made on
 graph instead (:mod:`stiefelsym.ir.mutants`, :func:`graph_mutants`): the same kinds of change,
 one node at a time, each mutant a graph the tracer typed (:class:`stiefelsym.ir.replay.GraphClaim`),
 described in the paper's notation; no Python of the claim runs again.  It covers the claims that
-trace with symbolic sizes (one graph for every size); the others are reported as not covered.
+trace with symbolic sizes (one graph for every size), and the claims traced per size whose graphs at the
+sizes run have one skeleton (:func:`stiefelsym.ir.mutants.sized_graph_mutants`: one change at the same
+node of every size's graph); the others (a loop or a condition over the sizes) are reported as not
+covered.  With ``on="auto"`` those are mutated on their source instead, and the claim's record says
+what its mutants were made on (``on``) and why it fell back (``fallback``).
 
 The same machinery searches corrections of a printed formula that fails:
 :func:`search_corrections` returns the candidates that pass every method at every size.
@@ -1270,8 +1274,9 @@ def run_mutation(claims: Sequence[Claim], sizes: Sequence[Size] | None = None,
     graph that the change reaches (:class:`stiefelsym.methods.fixed_size.PointLoan`); False: every mutant on
     points of its own, as a verify run of it would be (slower).  ``on``: "source" mutates each claim's
     Python source and traces every mutant (:func:`mutants`); "graphs" mutates the claim's graph
-    (:func:`graph_mutants`; no Python of the claim runs again), for the claims that trace with
-    symbolic sizes (the others are reported as not covered)."""
+    (:func:`graph_mutants`; no Python of the claim runs again), or its graphs per size where they have
+    one skeleton (the others are reported as not covered); "auto": graphs where they can be, the source
+    otherwise."""
     from stiefelsym.methods.fixed_size import PointLoan, lending_points
     if on not in MUTATION_MODES:
         raise ValueError(f"unknown mutation mode {on!r} (one of {', '.join(MUTATION_MODES)})")
