@@ -284,7 +284,9 @@ def _search(engine: Any, claims: Sequence[Claim], ids: Sequence[str], sizes: Seq
         tried = [0]
         candidates = None
         if isinstance(c.func, TracedFunction):      # a claim of a --claims file: its graph is what is here
-            candidates, why = engine.graph_mutants(c)
+            # (a claim traced per size: its graphs at the sizes searched, written at the first)
+            where = engine.notation_size(plan_sizes)
+            candidates, why = engine.graph_mutants(c, list(dict.fromkeys(([where] if where else []) + plan_sizes)))
             if why:
                 raise MutateInputError(f"--corrections on {c.id}: {why}")
             out["graph_search_space"] = [{"name": name, "description": text} for name, text in on_graphs.OPERATORS]
