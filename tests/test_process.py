@@ -727,6 +727,9 @@ def test_a_correction_budget_reaches_a_claims_file(tmp_path):
     c = load([path], catalog=False).get("c")
     assert c.corrections[0].exact_max_r == ((5, 3),) and not c.exact_at(5, 3)
     assert c.corrected(0).exact_at(5, 3) and not c.corrected(0).exact_at(5, 4)
+    from click.testing import CliRunner
+    out = CliRunner().invoke(cli.main, ["show", "--claims", str(path), "c"]).output
+    assert "correction:  I_r in place of 2 I_r; exact symbolic method also up to r = 3 at n = 5" in out
 
 
 def test_a_budget_in_r_reaches_a_claims_file(tmp_path):
