@@ -355,7 +355,7 @@ def test_a_pairing_of_symmetric_or_skew_matrices_sums_half_the_products_and_noth
     (or skew but for one entry, or skew with one diagonal entry) is summed in full, so the one
     entry that breaks the pattern is still counted."""
     import numpy as np
-    from stiefelsym import polyfield as pf
+    from stiefelsym.backends import polyfield as pf
     R = SymbolicField().poly_ring()
     xs = [R.var(se.Symbol(f"t{i}")) for i in range(4)]
     rng = random.Random(5)
