@@ -100,7 +100,7 @@ def test_poisson_checks_draw_fresh_elements_at_every_call():
 
 def test_a_tensor_that_keeps_a_point_keeps_a_parameter():
     """The form is traced as a function of (x, a, b) at each evaluation: a point it keeps is a parameter of that
-    function, which the graph cannot use elsewhere (refused at a fixed size, never a verdict)."""
+    function, which the graph cannot use elsewhere: the tracer refuses it (error, never a verdict)."""
     def keeper(s):
         seen = []
 
@@ -113,6 +113,19 @@ def test_a_tensor_that_keeps_a_point_keeps_a_parameter():
     for method in ("exact", "modular", "float"):
         assert run_one(c, Size(3, 2), method, 0).verdict == "error", method
     assert run_one(c, None, "free", 0).verdict not in ("proved", "checked", "numeric")
+
+
+def test_a_parameter_kept_from_another_function_is_refused_when_traced():
+    def kept(s):
+        seen = []
+
+        def spy(t, x, a, b):
+            seen.append(x)
+            return t.tr(x.T @ (a @ b - b @ a))
+        B.poisson_checks(s, B.PoissonTensor(B.SO_N, spy, 1, "spy"))
+        return {"kept": seen[-1] - s.generic("G", "n", "n")}
+    with pytest.raises(TraceRefused, match="parameter used outside the function"):
+        _graph(kept)
 
 
 def test_graph_mutants_of_a_claim_with_fresh_elements():

@@ -857,6 +857,8 @@ class Trace:
         self._functions: dict[int, tuple[Any, Ref, Any, Any]] = {}
         self._elements = False     # the generic elements of an Inverse statement are being made
         self._fresh = 0            # the fresh elements made so far (s.fresh)
+        self._open = [0]           # the functions being traced (0: the claim), innermost last
+        self._parents: dict[int, frozenset] = {}   # per function, those open when it was traced
 
     # -- nodes ----------------------------------------------------------------------------------
     def new(self, op: str, args: tuple, kind: str, shape: tuple = (None, None)) -> Tracer:
@@ -972,7 +974,12 @@ class Trace:
                 extra = [self.mirror(like, self.g.add("param", (k, 1, self.arg(like))))]
             else:
                 extra = [self.new("param", (k, i), ANY) for i in range(1, arity)]
-            if self.structure(f(scene, *extra)) != body:
+            self._open.append(k)
+            try:
+                again = self.structure(f(scene, *extra))
+            finally:
+                self._open.pop()
+            if again != body:
                 return self.refuse("a function that traces to another graph when it is used again (its state "
                                    "changed between two uses)")
             return hit[1], hit[2]
@@ -991,11 +998,41 @@ class Trace:
             extra = [self.mirror(like, self.g.add("param", (k, 1, self.arg(like))))]
         else:
             extra = [self.new("param", (k, i), ANY) for i in range(1, arity)]
-        out = f(scene, *extra)
-        body = self.structure(out)
+        self._parents[k] = frozenset(self._open)
+        self._open.append(k)
+        try:
+            out = f(scene, *extra)
+            body = self.structure(out)
+        finally:
+            self._open.pop()
         ref = self.g.add("fn", (k, arity, body))
         self._functions[id(f)] = (f, ref, out, like)
         return ref, out
+
+    def check_parameters(self) -> None:
+        """Refuse a graph in which a function's body, or the claim's checks, read a parameter (or the scene)
+        of a function that does not enclose it: a value kept from the trace of another function (a Poisson
+        tensor that keeps a point it was evaluated at, a list a function appends its argument to), which no
+        evaluation binds."""
+        g, empty = self.g, frozenset()
+        deps: list[frozenset] = []
+        for op, a in zip(g.ops, g.args):
+            below = [deps[j] for j in g.refs(len(deps)) if deps[j]]
+            if op != "scene" and op != "param" and op != "fn" and len(below) <= 1:
+                deps.append(below[0] if below else empty)
+                continue
+            d: set = set().union(*below)
+            if op == "param" or (op == "scene" and a[0] != 0):
+                d.add(a[0])
+            if op == "fn":
+                d.discard(a[0])
+                if not d <= self._parents.get(a[0], empty):
+                    self.refuse("a function's parameter used outside the function (a value kept from the trace "
+                                "of another function)")
+            deps.append(frozenset(d))
+        if g.output is not None and deps[g.output.i]:
+            self.refuse("a function's parameter used outside the function (a value kept from the trace of a "
+                        "function, in the claim's checks)")
 
     # -- structured values ------------------------------------------------------------------------
     def structure(self, v: Any) -> Any:
@@ -1226,6 +1263,7 @@ def trace(func: Callable, n: int | None, r: int | None, constraints: tuple[str, 
         statements = (Inverse, RightInverse)
         t.g.output = t.g.add("dict", (tuple(out), tuple(t.inverse(v) if type(v) in statements else t.structure(v)
                                                         for v in out.values())))
+        t.check_parameters()
     finally:
         _ACTIVE.pop()
     g = t.g.sealed()

@@ -41,8 +41,8 @@ def test_a_tensor_built_on_the_test_point_is_not_passed():
     method said proved / checked / numeric at (3,2).  Closed: the test elements are fresh (s.fresh: numbered by
     the engine, new at every call, no claim's name), and the tensor is traced as a function of (x, a, b) at
     each evaluation, so a point a tensor keeps is a parameter of that function: the named point and the
-    control fail under every fixed-size method, the spied one is refused (error: a function's parameter used
-    outside the function); free is undecided for all three (a form not affine in x)."""
+    control fail under every fixed-size method, the spied one is refused by the tracer (error: a function's
+    parameter used outside the function); free is undecided for all three."""
     got = by_claim(run_all("s35_poisson_test_point.py"))
     for c in ("adv-s35-poisson-control", "adv-s35-poisson-named-test-point"):
         assert fixed(got[c]) == {"fails"}, (c, got[c])
