@@ -216,6 +216,12 @@ class _Replay:
                 return scene.generic(*args)
             finally:
                 t._elements = False
+        if name == "fresh":
+            # a fresh element: the tracer numbers it again (the graph's number is no argument of s.fresh;
+            # a graph in the order of a trace gets the same numbers)
+            if len(args) != 3 or type(args[0]) is not int or kw:
+                raise ReplayError("refused: a fresh element is call fresh (number, m, k)")
+            return scene.fresh(*args[1:])
         return getattr(scene, name)(*[self.arg(x, frame) for x in args],
                                     **{k: self.arg(v, frame) for k, v in kw})
 
