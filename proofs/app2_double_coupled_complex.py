@@ -146,7 +146,8 @@ def double_neumann_dual_lax_extends_la3(s):
 
 
 @double_neumann_dual_lax_extends_la3.claim.correction(
-    "(LA3*D): (λI_n − A)⁻¹ in place of (I_n − λA)⁻¹ in the off-diagonal blocks")
+    "(LA3*D): (λI_n − A)⁻¹ in place of (I_n − λA)⁻¹ in the off-diagonal blocks",
+    exact_max_r={4: 4, 5: 5, 6: 6, 7: 7})
 def double_neumann_dual_lax_extends_la3_corrected(s):
     return double_lax_at_the_diagonal(s, lambda t: t.resolvent(t.lam))
 

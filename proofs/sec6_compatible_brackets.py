@@ -510,7 +510,7 @@ def H_neum_W(t):
     return t.tr(t.P.T @ t.P) / 2 - (t.q(1, 2) + t.kappa) * t.tr(XtP @ XtP) + t.tr(t.X.T @ A @ t.X) / 2
 
 
-@claim("singular-a-noether-covariant", paper=("No", "momentum_map", "Phi"), kind="pb", exact_max_n=4, exact_max_r={5: 2, 6: 1, 7: 1},
+@claim("singular-a-noether-covariant", paper=("No", "momentum_map", "Phi"), kind="pb", exact_max_n=4, exact_max_r={5: 2, 6: 2, 7: 2},
        sizes=admissible(5, where=lambda n, r: n - r >= 2, condition="n - r >= 2 (so(n - r) != 0)"),
        statement=r"A=\alpha\mathbf I+\beta WW^T:\ so(n)_A\supset so(\ker W^T),\quad "
                  r"\tfrac{d}{dt}\,Q\Phi Q=0\ \text{along (No)},\ Q=\det(W^TW)\mathbf I-W\,\mathrm{adj}(W^TW)W^T")

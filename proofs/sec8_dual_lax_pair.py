@@ -111,7 +111,7 @@ def dual_lax_pair_euclidean_metric(s):
 # -- the spectral curve (2r-integrals) ------------------------------------------------------
 
 @claim("dual-lax-symplectic-structure", paper=("LA4", "2r-integrals"), kind="id",
-       sizes=admissible(n_max=5), exact_max_n=5,
+       sizes=admissible(n_max=5), exact_max_n=5, exact_max_r={6: 1, 7: 1},
        statement=r"(J\mathcal L^*_{neum}(\lambda))^T=J\mathcal L^*_{neum}(\lambda),\ "
                  r"J=\begin{pmatrix}0&\mathbf I_r\\-\mathbf I_r&0\end{pmatrix},\qquad "
                  r"\tr\mathcal L^*_{neum}(\lambda)^k=0\ (k=1,3)")
@@ -274,7 +274,7 @@ def spectral_curve_coefficients(s):
 
 
 @claim("2r-integrals-conserved", paper=("2r-integrals", "LA3", "LA4"), kind="pb",
-       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 2, 4: 1},
+       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 2, 4: 1, 5: 1, 6: 1, 7: 1},
        statement=r"\tfrac{d}{dt}\mathcal I_{2l}(\lambda)=0\ \text{along (N0\_XP2) and (NE\_XP)},\quad "
                  r"\tfrac{d}{d\epsilon}\mathcal I_{2l}(\lambda)\big|_{(Xe^{\epsilon\eta},Pe^{\epsilon\eta})}=0,"
                  r"\ \eta\in so(r),\ l=1,\dots,r")
@@ -453,7 +453,7 @@ def cone_equation(s, V, b):
 
 
 @claim("tangency", paper=("tangency", "cone0"), kind="geo",
-       sizes=admissible(n_max=5), exact_max_n=3, exact_max_r={4: 2, 5: 2, 6: 1, 7: 1},
+       sizes=admissible(n_max=5), exact_max_n=3, exact_max_r={4: 2, 5: 4, 6: 3, 7: 3},
        statement=r"\det(V^TBV)=\sum_I|B|^I_IG_I^2,\qquad V^TB\,v=\det(V^TBV)\,E_1,\ \ "
                  r"\langle v,Bv\rangle=\det(V^TBV)\,\mathrm{adj}(V^TBV)_{11},\ \ v=V\,\mathrm{adj}(V^TBV)E_1")
 def planes_tangent_to_a_cone(s):

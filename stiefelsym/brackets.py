@@ -26,6 +26,12 @@ degree along x + t·e_k, over a basis e_k of the space), :func:`compatibility`,
 a matrix space is Poisson), :func:`phase_jacobiator` (the Jacobi identity of a
 bracket of functions of the scene, through nested brackets).
 
+:func:`poisson_checks` and :func:`compatibility` decide statements for every x, a, b, c: they evaluate
+them at fresh elements of the space (``s.fresh``: numbered by the engine, new at every call, no name a
+claim can spell), and the tensor as one engine step per evaluation (:func:`checked_tensor`), its form
+traced as a function of (x, a, b): a tensor that keeps a point it was evaluated at keeps a parameter of
+that function, never the test point.
+
 For a tensor affine in x (every tensor of this module), the Jacobi identity for
 linear functions with generic covectors a, b, c is the Jacobi identity (the
 Jacobiator of coordinate functions is the Schouten bracket [Λ, Λ], a tensor).
@@ -161,6 +167,11 @@ class Space:
     def generic(self, s: Any, name: str) -> Mat:
         """A generic element (parameters of the claim's own)."""
         return self.project(s.generic(name, self.index, self.index) * 2)
+
+    def fresh(self, s: Any) -> Mat:
+        """A fresh generic element (``s.fresh``: parameters no claim can name, new at every call), for a
+        statement about every element of the space."""
+        return self.project(s.fresh(self.index, self.index) * 2)
 
     def zero(self, s: Any) -> Mat:
         """The zero of the space."""
@@ -592,12 +603,33 @@ def degree_residual(s: Any, T: PoissonTensor, x: Mat, e: Mat, b: Mat, c: Mat) ->
     return acc
 
 
+def tensor_value(s: Any, form: Callable[[Any, tuple], Scalar], args: tuple) -> Scalar:
+    """form(s, (x, a, b)): one step of the IR whose function ``form`` is traced as a function of its
+    argument (x, a, b) alone, at each use (see :func:`checked_tensor`)."""
+    return form(s, args)
+
+
+tensor_value = primitive(tensor_value, like={"form": "args"}, returns=("like", "form"))
+
+
+def checked_tensor(T: PoissonTensor) -> PoissonTensor:
+    """T with each evaluation Λ(a, b)|_x one step :func:`tensor_value`: in a claim's graph the tensor is a
+    function of its arguments x, a, b, traced at each evaluation with parameters of its own, so a tensor
+    that keeps a point it was evaluated at (state kept between evaluations) keeps a parameter of another
+    function, never the point of a check (the graph is then not evaluable: an error, never a verdict)."""
+    def form(s: Any, x: Mat, a: Mat, b: Mat) -> Scalar:
+        return tensor_value(s, lambda t, v: T(t, v[0], v[1], v[2]), (x, a, b))
+    return PoissonTensor(T.space, form, T.degree, T.name)
+
+
 def poisson_checks(s: Any, T: PoissonTensor, prefix: str = "") -> dict[str, Scalar]:
     """Antisymmetry, polynomial degree and the Jacobi identity of T at a generic point x with
-    generic covectors a, b, c (parameters of the claim's own)."""
+    generic covectors a, b, c and a direction e: fresh elements of the space (:meth:`Space.fresh`), new at
+    every call, which the claim can neither name nor keep from another call (the checks say "for every
+    x, a, b, c": a tensor built on the test point would be wrong only away from it)."""
     sp = T.space
-    x, a, b, c = (sp.generic(s, f"Bk{nm}") for nm in ("x", "a", "b", "c"))
-    e = sp.generic(s, "Bke")
+    x, a, b, c, e = (sp.fresh(s) for _ in range(5))
+    T = checked_tensor(T)
     p = f"{prefix}: " if prefix else ""
     return {
         f"{p}Λ(a, b) + Λ(b, a)": antisymmetry(s, T, x, a, b),
@@ -608,10 +640,10 @@ def poisson_checks(s: Any, T: PoissonTensor, prefix: str = "") -> dict[str, Scal
 
 def compatibility(s: Any, T1: PoissonTensor, T2: PoissonTensor, prefix: str = "") -> dict[str, Scalar]:
     """Jacobi identity of T1 + T2 (compatibility, given that T1 and T2 are Poisson) at a generic
-    point with generic covectors."""
+    point with generic covectors (fresh elements, new at every call, as in :func:`poisson_checks`)."""
     sp = T1.space
-    T = T1 + T2
-    x, a, b, c = (sp.generic(s, f"Bk{nm}") for nm in ("x", "a", "b", "c"))
+    T = checked_tensor(T1 + T2)
+    x, a, b, c = (sp.fresh(s) for _ in range(4))
     p = f"{prefix}: " if prefix else ""
     return {f"{p}Jacobi identity of {T1.name} + {T2.name}": jacobiator(s, T, x, a, b, c)}
 
@@ -636,4 +668,4 @@ __all__ = ["PhaseBracket", "canonical", "dirac", "metric_dirac", "dirac_bracket_
            "metric_constraints", "phase_jacobiator", "skew", "sym", "Space", "SO_N", "SO_R", "GL_N", "SYM_N",
            "pairing", "MatrixFunction", "form_gradient", "linear", "quadratic", "trace_power", "PoissonTensor", "lie_poisson",
            "lambda1", "lambda2", "pencil", "antisymmetry", "polynomial_gradient", "gradient_in_x", "jacobiator", "degree_residual",
-           "poisson_checks", "compatibility", "casimir_residual", "poisson_map_residual"]
+           "poisson_checks", "compatibility", "checked_tensor", "tensor_value", "casimir_residual", "poisson_map_residual"]

@@ -173,6 +173,10 @@ class Correction:
     #: what the corrected statement expects, when the correction changes it (a printed "does not
     #: hold" that does hold: expect="holds"); None keeps the claim's
     expect: str | None = None
+    #: (n, largest r) pairs beyond the claim's exact_max_n at which ``auto`` tries the symbolic method
+    #: first for the corrected statement (besides the claim's own): a corrected formula may be proved
+    #: fast where the printed one, which fails, is not worth a symbolic run (a witness refutes it)
+    exact_max_r: tuple[tuple[int, int], ...] = ()
 
 
 #: what a claim id may be (it starts every verdict line and names the claim in every report)
@@ -251,21 +255,32 @@ class Claim:
             raise ValueError(f"claim {self.id}: a statement expected to fail must be a documented erratum "
                              "(say what is wrong with erratum=...)")
 
-    def correction(self, description: str, changes: int = 1, expect: str | None = None):
+    def correction(self, description: str, changes: int = 1, expect: str | None = None,
+                   exact_max_r: dict[int, int] | None = None):
         """Decorator registering a candidate correction of this claim (errata search); ``expect``
-        changes what the corrected statement asserts ("holds" or "nonzero")."""
+        changes what the corrected statement asserts ("holds" or "nonzero"); ``exact_max_r``
+        ({n: largest r}, n above the claim's exact_max_n) widens the symbolic budget of the corrected
+        statement alone."""
         if expect not in (None, "holds", "nonzero"):
             raise ValueError(f"a correction expects 'holds' or 'nonzero', not {expect!r}")
+        pairs = _pairs(exact_max_r)
+        dataclasses.replace(self, exact_max_r=_widened(self.exact_max_r, pairs))   # validated as the claim's
 
         def deco(fn):
-            self.corrections.append(Correction(description, fn, changes, expect))
+            self.corrections.append(Correction(description, fn, changes, expect, pairs))
             return fn
         return deco
 
     def corrected(self, k: int) -> "Claim":
-        """The claim as its k-th correction states it (same id; its function is passed apart)."""
-        expect = self.corrections[k].expect
-        return self if expect is None or expect == self.expect else dataclasses.replace(self, expect=expect)
+        """The claim as its k-th correction states it (same id; its function is passed apart): its
+        expected verdict, and its symbolic budget widened by the correction's own."""
+        corr = self.corrections[k]
+        changes: dict[str, Any] = {}
+        if corr.expect is not None and corr.expect != self.expect:
+            changes["expect"] = corr.expect
+        if corr.exact_max_r:
+            changes["exact_max_r"] = _widened(self.exact_max_r, corr.exact_max_r)
+        return dataclasses.replace(self, **changes) if changes else self
 
 
 class Registry:
@@ -334,6 +349,14 @@ def _size_spec(cid: str, sizes: Any) -> SizeSpec:
 #: the default symbolic budget of ``auto`` (see :func:`claim`)
 IDENTITY_EXACT_MAX_N = 7
 DIM_EXACT_MAX_N = 5
+
+
+def _widened(a: tuple[tuple[int, int], ...], b: tuple[tuple[int, int], ...]) -> tuple[tuple[int, int], ...]:
+    """The (n, largest r) pairs of two budgets, the larger r at each n."""
+    by_n = dict(a)
+    for n, r in b:
+        by_n[n] = max(r, by_n.get(n, 0))
+    return tuple(sorted(by_n.items()))
 
 
 def _pairs(by_n: dict[int, int] | None) -> tuple[tuple[int, int], ...]:

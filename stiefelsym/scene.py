@@ -41,7 +41,20 @@ USER_SCALAR = "scalar:"
 USER_GENERIC = "generic:"
 USER_PARAMS = "params:"
 USER_OPERATOR = "operator:"
+#: the prefix of the parameters of a fresh element (s.fresh): numbered by the engine, no claim's name
+FRESH = "fresh:"
 NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
+
+
+def _fresh_key(scene: Any, args: tuple, spaces: Any) -> str:
+    """The name of the parameters of a fresh element: ``fresh:i`` for the number i of a graph's
+    ``call fresh (i, m, k)``, ``fresh:direct j`` for the j-th fresh(m, k) of engine code on the scene itself."""
+    if len(args) == 3 and type(args[0]) is int and args[0] >= 1 and args[1] in spaces and args[2] in spaces:
+        return f"{FRESH}{args[0]}[{args[1]}x{args[2]}]"
+    if len(args) == 2 and args[0] in spaces and args[1] in spaces:
+        scene._fresh_direct = getattr(scene, "_fresh_direct", 0) + 1
+        return f"{FRESH}direct{scene._fresh_direct}[{args[0]}x{args[1]}]"
+    raise ValueError(f"fresh{args!r}: (an engine number,) the index spaces 'n' or 'r'")
 
 
 def user_name(name: Any, what: str) -> str:
@@ -902,6 +915,15 @@ class Scene(PaperObjects):
         key = f"{USER_GENERIC}{user_name(name, 'generic')}[{m}x{k}]"
         return self._cached(key, lambda: self._general_params(key, size[m], size[k], (m, k)))
 
+    def fresh(self, *args: Any) -> Mat:
+        """fresh(index, m, k): the fresh element number ``index`` of a graph (a claim's ``s.fresh(m, k)``, numbered
+        by the engine), a generic matrix of parameters with index labels m, k in {'n', 'r'} that no claim can
+        name; fresh(m, k), engine code called on the scene itself (not traced): the next of the scene's own."""
+        size = {"n": self.n, "r": self.r}
+        key = _fresh_key(self, args, size)
+        m, k = args[-2:]
+        return self._cached(key, lambda: self._general_params(key, size[m], size[k], (m, k)))
+
     def sym_operator(self, name: str = "AA") -> Callable[[Mat], Mat]:
         """A generic symmetric linear operator on so(n) (w.r.t. <,>), covariant parameter; applied
         to an r×r matrix, the operator of that name on so(r) (parameters of its own)."""
@@ -1606,6 +1628,11 @@ class _LiftedScene(Scene):
 
     def generic(self, name, m, k):
         return self._cached(f"gen:{name}[{m}x{k}]", lambda: self._lift_primitive(self.base.generic(name, m, k), None))
+
+    def fresh(self, *args):
+        if len(args) == 2:
+            return self._lift_primitive(self.base.fresh(*args), None)
+        return self._cached(f"{FRESH}{args}", lambda: self._lift_primitive(self.base.fresh(*args), None))
 
     def _skew_params(self, name, m, tag):
         return self._lift_primitive(self.base._skew_params(name, m, tag), None)

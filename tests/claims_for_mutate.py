@@ -1,6 +1,6 @@
 """A small claims file for `stiefelsym mutate --claims` (tests/test_mutate_claims.py): its module code prints
 the process it runs in; one claim traces with symbolic sizes, one is a documented erratum with a sign error,
-one reads its size as a number (traced per size)."""
+two read their size as a number (traced per size), the second an erratum with a sign error."""
 import os
 import sys
 
@@ -26,3 +26,10 @@ def wrong_sign(s):
 def per_size(s):
     """tr(XᵀX) = r, with r read as a number (traced per size)."""
     return {"tr": s.tr(s.X.T @ s.X) - int(s.r)}
+
+
+@claim("mc-per-size-wrong-sign", paper="prep", kind="id", section="t", sizes=admissible(n_max=3), expect="fails",
+       erratum="the sign of r")
+def per_size_wrong_sign(s):
+    """tr(XᵀX) = −r (printed with the wrong sign: fails), with r read as a number (traced per size)."""
+    return {"tr": s.tr(s.X.T @ s.X) + int(s.r)}

@@ -273,8 +273,10 @@ def test_cli_mutate_on_graphs(catalog):
     data = json.loads(res.stdout)
     assert data["meta"]["on"] == "graphs" and "--on graphs" in data["meta"]["command"]
     by_id = {c["claim"]: c for c in data["claims"]}
-    assert by_id["invariants-complete"]["skipped"].startswith("not covered on graphs: the claim has no graph "
-                                                                   "with symbolic sizes")
+    # traced per size (at the one size asked for here): mutated on its graph there
+    ci = by_id["invariants-complete"]
+    assert not ci["skipped"] and ci["on"] == "graphs per size" and len(ci["mutants"]) == 4
+    assert all("(graphs at (3,2): node %" in o["description"] and o["notation"] for o in ci["mutants"])
     inv = by_id["invariants-so-n"]
     assert not inv["skipped"] and len(inv["mutants"]) == 4
     assert all("(graph: node %" in o["description"] and o["notation"] for o in inv["mutants"])

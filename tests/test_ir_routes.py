@@ -277,6 +277,27 @@ def test_a_hand_edited_verdict_is_caught_by_check(tmp_path):
     assert r.exit_code == 1 and "REJECTED" in r.output
 
 
+def test_a_correction_record_is_run_again_as_the_correction(tmp_path):
+    """check runs a correction's record again as that correction (its expected verdict and erratum are the
+    corrected statement's, not the printed one's): an honest file of an erratum and its correction passes,
+    and the correction's record with its verdict or its expectation edited is rejected."""
+    out = tmp_path / "rep"
+    r = _run_cli(["verify", "manakov-dual-lax", "--size", "3,2", "--size", "4,3", "--report-dir", str(out)], tmp_path)
+    assert r.exit_code == 0, r.output
+    payload = json.loads((out / "results.json").read_text())
+    fixed = [i for i, x in enumerate(payload["results"]) if x["variant"]]
+    assert {payload["results"][i]["verdict"] for i in fixed} == {"proved"}, r.output
+    assert {x["verdict"] for x in payload["results"] if not x["variant"]} == {"fails"}
+    r = _run_cli(["check", str(out / "results.json")], tmp_path)
+    assert r.exit_code == 0 and "0 rejected" in r.output, r.output
+    for field, value in (("verdict", "checked"), ("expected", False)):
+        edited = json.loads(json.dumps(payload))
+        edited["results"][fixed[0]][field] = value
+        (out / "results.json").write_text(json.dumps(edited))
+        r = _run_cli(["check", str(out / "results.json")], tmp_path)
+        assert r.exit_code == 1 and "REJECTED manakov-dual-lax" in r.output, (field, r.output)
+
+
 def test_a_record_left_out_is_caught_by_check(tmp_path):
     """A results file is the whole run of its command: the failing records of a claim dropped (so that the
     file shows only its passing sizes) are missing runs the command planned, with or without reruns."""

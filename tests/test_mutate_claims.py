@@ -37,11 +37,16 @@ def test_a_users_claims_are_mutated_on_their_graphs_and_the_file_never_runs_here
     assert any(m["classification"] == "killed" for m in c["mutants"])
 
 
-def test_a_claim_traced_per_size_is_not_covered(monkeypatch, tmp_path):
+def test_a_claim_traced_per_size_is_mutated_on_its_graph_at_each_size(monkeypatch, tmp_path):
+    """tr(XᵀX) = r with r read as a number: its graphs at (3,2), (3,1), (3,3) (the file's, traced in the child)
+    are one computation, so each mutant is one change at the same node of each; all are noticed."""
     res, _ = _invoke(["mc-per-size", "--method", "modular", "--jobs", "1", "--format", "json"], monkeypatch, tmp_path)
     assert res.exit_code == 0, res.output
     (c,) = json.loads(res.stdout)["claims"]
-    assert "no graph with symbolic sizes" in c["skipped"] and not c["mutants"], c
+    assert not c["skipped"] and c["on"] == "graphs per size" and c["mutants"], c
+    assert all("(graphs at (3,2), (3,1), (3,3): node %" in m["description"] for m in c["mutants"]), c["mutants"]
+    assert {m["classification"] for m in c["mutants"]} <= {"killed", "equivalent"}, c["mutants"]
+    assert any(m["classification"] == "killed" for m in c["mutants"])
 
 
 def test_the_correction_search_of_a_users_claim_works_on_its_graph(monkeypatch, tmp_path):
@@ -54,9 +59,17 @@ def test_the_correction_search_of_a_users_claim_works_on_its_graph(monkeypatch, 
     assert "Ψ + PᵀX − XᵀP" in c["corrections"][0]["notation"], c
 
 
-def test_the_correction_search_refuses_a_users_claim_without_a_graph_of_symbolic_sizes(monkeypatch, tmp_path):
-    res, _ = _invoke(["mc-per-size", "--corrections"], monkeypatch, tmp_path)
-    assert res.exit_code == 2 and "--corrections on mc-per-size: not covered on graphs" in res.stderr, res.output
+def test_the_correction_search_of_a_users_claim_traced_per_size_works_on_its_graphs(monkeypatch, tmp_path):
+    """tr(XᵀX) = −r, traced per size: the candidates are one change at the same node of its graph at every
+    size searched; the sign of r is the correction, written in the paper's notation."""
+    res, _ = _invoke(["mc-per-size-wrong-sign", "--corrections", "--format", "json"], monkeypatch, tmp_path)
+    assert res.exit_code == 0, res.output
+    (c,) = json.loads(res.stdout)["claims"]
+    assert c["on"] == "graphs" and c["candidates"] > 0 and c["corrections"], c
+    assert all(k["operator"] == "sign" and "(graphs at (3,2), " in k["description"]
+               for k in c["corrections"]), c
+    # written at (3,2), where r = 2: tr(XᵀX) + 2 → tr(XᵀX) − 2; and tr(XᵀX) → −tr(XᵀX), the same equation
+    assert [k["notation"] for k in c["corrections"]] == ["in tr: 2 → −2", "in tr: tr(XᵀX) → −tr(XᵀX)"], c
 
 
 def test_source_mutation_of_a_users_file_is_refused(monkeypatch, tmp_path):

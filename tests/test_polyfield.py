@@ -348,6 +348,55 @@ def test_sparse_entrywise_operations_and_products_agree_with_numpy():
         assert (pf._dot(a.T.copy()[:, :m].T.copy(), c, R.zero) == np.dot(a, c)).all()
 
 
+def test_a_pairing_of_symmetric_or_skew_matrices_sums_half_the_products_and_nothing_else():
+    """The Frobenius sum of two symmetric (or two skew) matrices is summed over one triangle and
+    doubled, and is zero off the diagonal for a symmetric against a skew one: on random matrices of
+    each kind it equals the sum of all n^2 products; a matrix that is symmetric but for one entry
+    (or skew but for one entry, or skew with one diagonal entry) is summed in full, so the one
+    entry that breaks the pattern is still counted."""
+    import numpy as np
+    from stiefelsym.backends import polyfield as pf
+    R = SymbolicField().poly_ring()
+    xs = [R.var(se.Symbol(f"t{i}")) for i in range(4)]
+    rng = random.Random(5)
+
+    def entry():
+        return R.zero if rng.random() < 0.2 else rng.choice(xs) * rng.randint(-3, 3) + R.one * rng.randint(-2, 2)
+
+    def mat(m, kind):
+        a = np.empty((m, m), dtype=object)
+        for i in range(m):
+            a[i, i] = R.zero if kind == "skew" else entry()
+            for j in range(i + 1, m):
+                a[i, j] = entry()
+                a[j, i] = a[i, j] if kind == "sym" else (-a[i, j] if kind == "skew" else entry())
+        return a
+
+    def full(a, b):
+        acc = R.zero
+        for x, y in zip(a.flat, b.flat):
+            acc = acc + x * y
+        return acc
+
+    seen = set()
+    for _ in range(80):
+        m = rng.randint(1, 5)
+        ka, kb = rng.choice(["sym", "skew", "gen"]), rng.choice(["sym", "skew", "gen"])
+        a, b = mat(m, ka), mat(m, kb)
+        if m > 1 and rng.random() < 0.3:                   # one entry breaks the pattern of a
+            i, j = rng.sample(range(m), 2) if rng.random() < 0.7 else (0, 0)
+            a[i, j] = a[i, j] + xs[3] + R.one
+        seen.add((pf._parity(a), pf._parity(b)))
+        assert pf._frobenius(a, b, R.zero) == full(a, b)
+    assert {(1, 1), (-1, -1), (1, -1), (-1, 1), (0, 0)} <= seen
+    s, k = mat(4, "sym"), mat(4, "skew")
+    k[1, 2], k[2, 1] = xs[1] + R.one, -(xs[1] + R.one)
+    broken = s.copy()
+    broken[2, 1] = broken[2, 1] + xs[0]                       # symmetric but for one entry
+    assert pf._parity(s) == 1 and pf._parity(k) == -1 and pf._parity(broken) == 0
+    assert pf._frobenius(s, k, R.zero) == 0 and pf._frobenius(broken, k, R.zero) != 0
+
+
 def _printed_value_errors() -> int:
     """How many of a set of random rational functions print (PolyRing.text) as a different value:
     the text is read back by symengine and compared with the expression it came from at random

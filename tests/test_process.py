@@ -677,6 +677,65 @@ def test_a_budget_in_r_is_given_at_sizes_above_exact_max_n(pairs):
         _claim("c", _ok, exact_max_n=3, exact_max_r=pairs)
 
 
+def _printed_twice_the_identity(s):
+    return {"XtX": s.X.T @ s.X - 2 * s.Ir}
+
+
+def _corrected_identity(s):
+    return {"XtX": s.X.T @ s.X - s.Ir}
+
+
+def _corrected_but_false(s):
+    return {"XtX": s.X.T @ s.X - s.Ir + s.X.T @ s.P}
+
+
+def test_a_correction_widens_the_symbolic_budget_of_the_corrected_statement_alone():
+    """A correction's exact_max_r: auto proves the corrected statement symbolically where the printed one
+    (above its budget) is refuted by a modular witness, refutes a false correction with the same budget
+    symbolically, and leaves a correction without one to the modular method."""
+    c = _claim("printed", _printed_twice_the_identity, sizes=admissible(n_max=3), exact_max_n=2,
+               fails_at=lambda n, r: True, erratum="X^T X is I_r, not 2 I_r.")
+    c.correction("I_r in place of 2 I_r", exact_max_r={3: 2})(_corrected_identity)
+    c.correction("I_r and a term X^T P", exact_max_r={3: 3})(_corrected_but_false)
+    c.correction("I_r in place of 2 I_r, no budget of its own")(_corrected_identity)
+    assert not c.exact_at(3, 2) and c.corrected(0).exact_at(3, 2) and not c.corrected(0).exact_at(3, 3)
+    assert c.corrected(2) is c and c.corrected(0).expect == c.expect
+    res = runner.verify([c], sizes=[Size(3, 2), Size(3, 3)], methods=("auto",), seed=0)
+    by = {(r.variant, r.n, r.r): r for r in res}
+    printed, good, false, plain = (None, *(k.description for k in c.corrections))
+    assert (by[printed, 3, 2].method, by[printed, 3, 2].verdict) == ("modular", "fails")
+    assert (by[good, 3, 2].method, by[good, 3, 2].verdict) == ("exact", "proved")
+    assert (by[good, 3, 3].method, by[good, 3, 3].verdict) == ("modular", "checked")
+    assert (by[false, 3, 2].method, by[false, 3, 2].verdict) == ("exact", "fails")
+    assert (by[false, 3, 3].method, by[false, 3, 3].verdict) == ("exact", "fails")
+    assert (by[plain, 3, 2].method, by[plain, 3, 2].verdict) == ("modular", "checked")
+
+
+@pytest.mark.parametrize("pairs", [{2: 1}, {4: 5}, {3: 0}])
+def test_a_correction_budget_in_r_is_given_at_sizes_above_the_claims_exact_max_n(pairs):
+    c = _claim("printed", _printed_twice_the_identity, sizes=admissible(n_max=3), exact_max_n=2,
+               fails_at=lambda n, r: True, erratum="X^T X is I_r, not 2 I_r.")
+    with pytest.raises(ValueError, match="exact_max_r"):
+        c.correction("I_r in place of 2 I_r", exact_max_r=pairs)
+
+
+def test_a_correction_budget_reaches_a_claims_file(tmp_path):
+    from stiefelsym.api import load
+    path = tmp_path / "budget.py"
+    path.write_text("from stiefelsym import admissible, claim\n"
+                    "@claim('c', paper='t', kind='id', section='9', sizes=admissible(n_max=5), exact_max_n=4,\n"
+                    "       fails_at=lambda n, r: True, erratum='X^T X is I_r, not 2 I_r.')\n"
+                    "def c(s):\n    return {'XtX': s.X.T @ s.X - 2 * s.Ir}\n"
+                    "@c.claim.correction('I_r in place of 2 I_r', exact_max_r={5: 3})\n"
+                    "def c_corrected(s):\n    return {'XtX': s.X.T @ s.X - s.Ir}\n")
+    c = load([path], catalog=False).get("c")
+    assert c.corrections[0].exact_max_r == ((5, 3),) and not c.exact_at(5, 3)
+    assert c.corrected(0).exact_at(5, 3) and not c.corrected(0).exact_at(5, 4)
+    from click.testing import CliRunner
+    out = CliRunner().invoke(cli.main, ["show", "--claims", str(path), "c"]).output
+    assert "correction:  I_r in place of 2 I_r; exact symbolic method also up to r = 3 at n = 5" in out
+
+
 def test_a_budget_in_r_reaches_a_claims_file(tmp_path):
     from stiefelsym.api import load
     path = tmp_path / "budget.py"

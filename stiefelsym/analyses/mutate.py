@@ -37,7 +37,11 @@ With ``on="graphs"`` (``stiefelsym mutate --on graphs``) the mutants are made on
 graph instead (:mod:`stiefelsym.ir.mutants`, :func:`graph_mutants`): the same kinds of change,
 one node at a time, each mutant a graph the tracer typed (:class:`stiefelsym.ir.replay.GraphClaim`),
 described in the paper's notation; no Python of the claim runs again.  It covers the claims that
-trace with symbolic sizes (one graph for every size); the others are reported as not covered.
+trace with symbolic sizes (one graph for every size), and the claims traced per size whose graphs at the
+sizes run have one skeleton (:func:`stiefelsym.ir.mutants.sized_graph_mutants`: one change at the same
+node of every size's graph); the others (a loop or a condition over the sizes) are reported as not
+covered.  With ``on="auto"`` those are mutated on their source instead, and the claim's record says
+what its mutants were made on (``on``) and why it fell back (``fallback``).
 
 The same machinery searches corrections of a printed formula that fails:
 :func:`search_corrections` returns the candidates that pass every method at every size.
@@ -604,40 +608,83 @@ def mutants(claim: Claim | Callable, helpers: bool = False) -> list[Mutant]:
 
 # --------------------------------------------------------------------------- mutants of a graph
 
-#: what a mutation analysis mutates: the claims' Python source, or their graphs
-MUTATION_MODES = ("source", "graphs")
+#: what a mutation analysis mutates: the claims' Python source, their graphs, or their graphs where they
+#: can be (with symbolic sizes, or per size with one skeleton) and their source otherwise
+MUTATION_MODES = ("source", "graphs", "auto")
+#: how the mutants of a claim were made (ClaimMutation.on)
+ON_GRAPH, ON_GRAPHS_PER_SIZE, ON_SOURCE = "graph", "graphs per size", "source"
 
 
-def graph_mutants(claim: Claim) -> tuple[list[Mutant], str]:
-    """The mutants of the claim's graph with symbolic sizes (:func:`stiefelsym.ir.mutants.graph_mutants`),
-    each a :class:`Mutant` whose function is its graph (:class:`stiefelsym.ir.replay.GraphClaim`), with
-    its change in the paper's notation; and "" , or why the claim is not covered (it traces per size)."""
+def graph_mutants(claim: Claim, sizes: Sequence[Size] | None = None,
+                  census: Any = None) -> tuple[list[Mutant], str]:
+    """The mutants of the claim's graph (:func:`stiefelsym.ir.mutants.graph_mutants`), each a
+    :class:`Mutant` whose function is its graph (:class:`stiefelsym.ir.replay.GraphClaim`), with its
+    change in the paper's notation; and "", or why the claim is not covered.  A claim with no graph
+    with symbolic sizes is mutated on its graphs at ``sizes`` (the first: where its changes are written)
+    when they have one skeleton (:func:`stiefelsym.ir.mutants.sized_graph_mutants`: one change at the same
+    node of every size's graph); where they do not, it is not covered, and the reason says so."""
+    return _graph_mutants(claim, sizes, census)[:2]
+
+
+def _graph_mutants(claim: Claim, sizes: Sequence[Size] | None = None,
+                   census: Any = None) -> tuple[list[Mutant], str, str]:
+    """:func:`graph_mutants`, and how they were made (:data:`ON_GRAPH`, :data:`ON_GRAPHS_PER_SIZE`)."""
     from stiefelsym.ir import compile_claim
+    from stiefelsym.ir.mutants import SkeletonMismatch, sized_graph_mutants
     from stiefelsym.ir.mutants import graph_mutants as on_graph
     from stiefelsym.scene import REALIZATIONS
     cons = REALIZATIONS[claim.realization]
+    constraints = (cons.name, cons.build)
     try:
-        g = compile_claim(claim.func, None, None, (cons.name, cons.build))
+        g = compile_claim(claim.func, None, None, constraints)
     except Exception as exc:    # noqa: BLE001 - the claim traces per size (or not at all)
-        why = " ".join(str(exc).removeprefix("refused: ").split())
-        return [], ("not covered on graphs: the claim has no graph with symbolic sizes (one graph per size; "
-                    f"its trace with symbolic sizes stopped at: {why[:200]}), and graphs traced per size are "
-                    "not mutated yet")
-    out = []
-    for gm in on_graph(g, (cons.name, cons.build)):
-        out.append(Mutant(description=gm.description(), lineno=0, func=gm.func, operator=gm.operator,
-                          index=gm.index, source=f"%{gm.node}",
-                          left=functools.partial(_graph_left_sides, gm.graph),
-                          notation=tuple(c.to_json() for c in gm.changes)))
-    return out, ""
+        why = " ".join(str(exc).removeprefix("refused: ").split())[:200]
+        at = list(dict.fromkeys((z.n, z.r) for z in sizes or () if z is not None))
+        head = f"not covered on graphs: the claim has no graph with symbolic sizes (its trace stopped at: {why})"
+        if not at:
+            return [], head + ", and no size to trace it at", ""
+        graphs = {}
+        for n, r in at:
+            try:
+                graphs[(n, r)] = compile_claim(claim.func, n, r, constraints)
+            except Exception as exc:    # noqa: BLE001 - no graph at that size
+                return [], f"{head}, and no graph at ({n},{r}): {str(exc).removeprefix('refused: ')[:160]}", ""
+        try:
+            made = sized_graph_mutants(graphs, constraints, census)
+        except SkeletonMismatch as exc:
+            return [], f"{head}; its graphs per size differ: {exc}", ""
+        return [_as_mutant(gm, functools.partial(_sized_left_sides, gm, constraints)) for gm in made], "", \
+            ON_GRAPHS_PER_SIZE
+    return [_as_mutant(gm, functools.partial(_graph_left_sides, gm.graph))
+            for gm in on_graph(g, constraints, census)], "", ON_GRAPH
+
+
+def _as_mutant(gm: Any, left: Callable) -> Mutant:
+    return Mutant(description=gm.description(), lineno=0, func=gm.func, operator=gm.operator,
+                  index=gm.index, source=f"%{gm.node}", left=left,
+                  notation=tuple(c.to_json() for c in gm.changes))
+
+
+def _sized_left_sides(gm: Any, constraints: tuple) -> Callable | None:
+    """:func:`_graph_left_sides` of a mutant of a claim traced per size (its graphs traced again), as one
+    claim function."""
+    from stiefelsym.ir.replay import SizedGraphClaim
+    graphs = gm.graphs(constraints)
+    edits = {z: _left_edits(g) for z, g in graphs.items()}
+    return SizedGraphClaim(graphs, edits, name="left sides") if any(edits.values()) else None
 
 
 def _graph_left_sides(g: Any) -> Callable | None:
     """The graph ``g`` with each of its checks a − b replaced by its left side a (the errata search: a
     candidate whose left sides vanish too is vacuous), as a claim function; None when no check is a
     difference."""
-    from stiefelsym.ir.graph import Ref
     from stiefelsym.ir.replay import GraphClaim
+    edits = _left_edits(g)
+    return GraphClaim(g, edits, name="left sides") if edits else None
+
+
+def _left_edits(g: Any) -> dict[int, Callable]:
+    from stiefelsym.ir.graph import Ref
     edits: dict[int, Callable] = {}
     stack = list(g.args[g.output.i][1])
     while stack:
@@ -649,7 +696,7 @@ def _graph_left_sides(g: Any) -> Callable | None:
             edits[x.i] = lambda rp, a, f: rp.arg(a[0], f)
         elif op in ("list", "tuple"):
             stack.extend(g.args[x.i])
-    return GraphClaim(g, edits, name="left sides") if edits else None
+    return edits
 
 
 # --------------------------------------------------------------------------- helpers of a claim
@@ -1013,6 +1060,13 @@ class ClaimMutation:
     #: why the claim was not mutated (empty when it was)
     skipped: str = ""
     seconds: float = 0.0
+    #: what its mutants were made on: "graph" (its graph with symbolic sizes), "graphs per size" (one
+    #: change at the same node of its graph at each size) or "source" (its Python source)
+    on: str = ""
+    #: why a mutation on graphs fell back to the source (``on="auto"``)
+    fallback: str = ""
+    #: what became of the changes of its graphs (sites, ill_typed, same_as_claim, duplicates, ...)
+    census: dict = field(default_factory=dict)
 
     def counted(self) -> set[tuple[int | None, int | None, str]]:
         """The cells where the printed claim passes (free: always counted)."""
@@ -1220,8 +1274,9 @@ def run_mutation(claims: Sequence[Claim], sizes: Sequence[Size] | None = None,
     graph that the change reaches (:class:`stiefelsym.methods.fixed_size.PointLoan`); False: every mutant on
     points of its own, as a verify run of it would be (slower).  ``on``: "source" mutates each claim's
     Python source and traces every mutant (:func:`mutants`); "graphs" mutates the claim's graph
-    (:func:`graph_mutants`; no Python of the claim runs again), for the claims that trace with
-    symbolic sizes (the others are reported as not covered)."""
+    (:func:`graph_mutants`; no Python of the claim runs again), or its graphs per size where they have
+    one skeleton (the others are reported as not covered); "auto": graphs where they can be, the source
+    otherwise."""
     from stiefelsym.methods.fixed_size import PointLoan, lending_points
     if on not in MUTATION_MODES:
         raise ValueError(f"unknown mutation mode {on!r} (one of {', '.join(MUTATION_MODES)})")
@@ -1300,6 +1355,9 @@ class _ClaimRun:
     baseline: MutantOutcome | None
     mutants: list[MutantOutcome]
     seconds: float
+    on: str = ""
+    fallback: str = ""
+    census: dict = field(default_factory=dict)
 
 
 def _weight(claim: Claim, plan: list) -> int:
@@ -1317,6 +1375,7 @@ def _weight(claim: Claim, plan: list) -> int:
 def _take(cm: ClaimMutation, run: _ClaimRun, on_result: Callable[[MutantOutcome], None] | None) -> None:
     cm.mutant_count, cm.skipped, cm.baseline, cm.mutants = run.mutant_count, run.skipped, run.baseline, run.mutants
     cm.seconds = round(run.seconds, 2)
+    cm.on, cm.fallback, cm.census = run.on, run.fallback, run.census
     if on_result is not None and cm.baseline is not None:
         on_result(cm.baseline)
         for o in cm.mutants:
@@ -1328,14 +1387,25 @@ def _claim_task(ci: int) -> _ClaimRun:
     then every selected mutant, classified against it."""
     claim, plan = _WORK["claims"][ci]
     seed, loan = _WORK["seed"], _WORK["loan"]
-    on_graphs = _WORK.get("on") == "graphs"
-    uncovered = ""
+    mode = _WORK.get("on", "source")
+    uncovered, made_on, fallback = "", "", ""
+    census = None
     if claim.expect == "fails":
         muts = []
-    elif on_graphs:
-        muts, uncovered = graph_mutants(claim)
+    elif mode in ("graphs", "auto"):
+        from stiefelsym.ir.mutants import MutantCensus
+        census = MutantCensus()
+        # the sizes of the plan, the one the changes are written at first
+        at = [s for s, _ in plan if s is not None]
+        where = notation_size(at)
+        at = list(dict.fromkeys(([where] if where is not None else []) + at))
+        muts, uncovered, made_on = _graph_mutants(claim, at, census)
+        if uncovered and mode == "auto":
+            fallback, uncovered, census = uncovered.removeprefix("not covered on graphs: "), "", None
+            muts, made_on = mutants(claim), ON_SOURCE
     else:
-        muts = mutants(claim)
+        muts, made_on = mutants(claim), ON_SOURCE
+    on_graphs = made_on in (ON_GRAPH, ON_GRAPHS_PER_SIZE)
     if claim.expect == "fails":
         skipped = ("the printed statement fails at every size (a documented erratum): a mutation "
                    "analysis needs a true statement")
@@ -1349,7 +1419,8 @@ def _claim_task(ci: int) -> _ClaimRun:
         skipped = "no size at which the printed statement is expected to hold, and no method to run"
     else:
         skipped = ""
-    run = _ClaimRun(len(muts), skipped, None, [], 0.0)
+    run = _ClaimRun(len(muts), skipped, None, [], 0.0, "" if skipped else made_on, fallback,
+                    {} if census is None else {k: v for k, v in asdict(census).items() if k != "refusals"})
     if skipped:
         return run
     t0 = time.perf_counter()

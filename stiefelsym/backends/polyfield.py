@@ -1279,10 +1279,7 @@ class PolyBackend(Backend):
         if type(a) is RatMat or type(b) is RatMat:
             return ratmat.inner(self, a, b)
         a, b = self._fix(a), self._fix(b)
-        acc = self.ring.zero
-        for x, y in zip(a.a.flat, b.a.flat):
-            acc = acc + x * y
-        return self._scalar(acc, _merge_add(a.den, b.den))
+        return self._scalar(_frobenius(a.a, b.a, self.ring.zero), _merge_add(a.den, b.den))
 
     def is_zero(self, a):
         if type(a) is ObjMat:
@@ -1427,6 +1424,54 @@ def _dot(a: np.ndarray, b: np.ndarray, zero) -> np.ndarray:
             out[pos] = zero if acc is None else acc
             pos += 1
     return out.reshape(m, n)
+
+
+def _parity(a: np.ndarray) -> int:
+    """+1 when the square array of polynomials is symmetric, -1 when it is skew (with a zero
+    diagonal), 0 otherwise (or when it is not square); every comparison is exact."""
+    m, k = a.shape
+    if m != k or m < 2:
+        return 0
+    sym = skew = True
+    for i in range(m):
+        if skew and a[i, i]:
+            skew = False
+        for j in range(i + 1, m):
+            x, y = a[i, j], a[j, i]
+            if sym and x != y:
+                sym = False
+            if skew and x != -y:
+                skew = False
+            if not (sym or skew):
+                return 0
+    return 1 if sym else -1
+
+
+def _frobenius(a: np.ndarray, b: np.ndarray, zero):
+    """sum_ij a_ij b_ij.  When a and b are both symmetric, or both skew (checked entry by entry),
+    the terms (i, j) and (j, i) are equal: the upper triangle is summed once and doubled (half the
+    products); when one is symmetric and the other skew they cancel, and the sum is the diagonal's."""
+    pa = _parity(a)
+    pb = _parity(b) if pa else 0
+    acc = zero
+    if not pb:
+        for x, y in zip(a.flat, b.flat):
+            if x and y:
+                acc = acc + x * y
+        return acc
+    m = a.shape[0]
+    if pa == pb:
+        for i in range(m):
+            for j in range(i + 1, m):
+                x, y = a[i, j], b[i, j]
+                if x and y:
+                    acc = acc + x * y
+        acc = acc + acc
+    for i in range(m):
+        x, y = a[i, i], b[i, i]
+        if x and y:
+            acc = acc + x * y
+    return acc
 
 
 def _small_core(N, k: int) -> bool:

@@ -942,7 +942,9 @@ def show(claim_id: str, claims_files: tuple[str, ...]) -> None:
     if unanswered:
         click.echo(f"erratum:     its sizes (fails_at) cannot be evaluated at the listed sizes ({unanswered})")
     for corr in c.corrections:
-        click.echo(f"correction:  {corr.description}")
+        click.echo(f"correction:  {corr.description}"
+                   + ("" if not corr.exact_max_r else "; exact symbolic method also"
+                      + ";".join(f" up to r = {r} at n = {n}" for n, r in corr.exact_max_r)))
     click.echo(f"source:      {_source(c)}")
 
 

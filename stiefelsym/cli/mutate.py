@@ -141,11 +141,13 @@ def _command(ids: Sequence[str], sizes: Sequence[str], methods: Sequence[str], s
               help="Every mutant at points of its own, as a verify run of it would be.  By default the point "
                    "methods evaluate a mutant at the points of the claim as printed and recompute only what the "
                    "change reaches (several times faster; the classification is the same).")
-@click.option("--on", "on", type=click.Choice(["source", "graphs"]), default=None,
+@click.option("--on", "on", type=click.Choice(["source", "graphs", "auto"]), default=None,
               help="What is mutated: each claim's Python source (every mutant traced again), or each claim's "
-                   "graph (no Python of the claim runs again; claims traced per size are reported as not "
-                   "covered).  Default: source; graphs with --claims (a user's file is traced in a child "
-                   "process, and only its graphs reach this one).")
+                   "graph (no Python of the claim runs again; a claim traced per size is mutated at the same "
+                   "node of its graph at every size when those graphs have one skeleton, and reported as not "
+                   "covered otherwise), or auto: graphs where they can be, the source otherwise (the report "
+                   "says which, and why).  Default: source; graphs with --claims (a user's file is traced in "
+                   "a child process, and only its graphs reach this one).")
 @click.option("--corrections", is_flag=True,
               help="Errata search instead of the mutation analysis: for each named CLAIM, the candidates of the "
                    "declared search space (every operator, in the claim and its helper functions, two signs at "
@@ -236,6 +238,8 @@ def mutate(ids: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str, ...
         **({"on": on} if on != "source" else {}),
         "operators": ([{"name": name, "description": text} for name, text, _ in engine.OPERATORS] if on == "source"
                       else [{"name": name, "description": text} for name, text in on_graphs.OPERATORS]),
+        **({"source_operators": [{"name": name, "description": text} for name, text, _ in engine.OPERATORS]}
+           if on == "auto" else {}),
         "letter_swaps": {k: list(v) for k, v in (engine.LETTER_SWAPS if on == "source"
                                                  else on_graphs.LETTER_SWAPS).items()},
         "date": started.strftime("%Y-%m-%d %H:%M:%S UTC"),
@@ -280,7 +284,9 @@ def _search(engine: Any, claims: Sequence[Claim], ids: Sequence[str], sizes: Seq
         tried = [0]
         candidates = None
         if isinstance(c.func, TracedFunction):      # a claim of a --claims file: its graph is what is here
-            candidates, why = engine.graph_mutants(c)
+            # (a claim traced per size: its graphs at the sizes searched, written at the first)
+            where = engine.notation_size(plan_sizes)
+            candidates, why = engine.graph_mutants(c, list(dict.fromkeys(([where] if where else []) + plan_sizes)))
             if why:
                 raise MutateInputError(f"--corrections on {c.id}: {why}")
             out["graph_search_space"] = [{"name": name, "description": text} for name, text in on_graphs.OPERATORS]

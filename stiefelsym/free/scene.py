@@ -23,7 +23,8 @@ import symengine as se
 
 from stiefelsym.backends.fields import Dual, DualField, Field
 from stiefelsym.backends.matrix import CoordinateTracker, Mat, definite
-from stiefelsym.scene import TANGENT_KEYS, USER_SCALAR, Flow, HermitianComponents, PaperObjects, _number, map_entries
+from stiefelsym.scene import (FRESH, TANGENT_KEYS, USER_SCALAR, Flow, HermitianComponents, PaperObjects, _fresh_key, _number,
+                              map_entries)
 from stiefelsym.free.algebra import (LEADING, Letter, NCPoly, NeedsCoordinates, OperatorLetter, apply_operator, as_coef, coef_latex, derivation,
                       letter_pair, mark_moving, record_refusal, refuse, skew_letter, substitute, symmetric_letter, trace)
 from stiefelsym.free.mat import FreeBackend, FreeDualBackend, entry_of, one_block
@@ -974,6 +975,18 @@ class FreeScene(PaperObjects):
         self._named.setdefault(str(G), G)
         return self._cached(f"gen:{name}", lambda: self._prim(str(G), _w(self._named[str(G)])))
 
+    def fresh(self, *args: Any) -> Mat:
+        """fresh(index, m, k): the fresh element number ``index`` of a graph (a claim's ``s.fresh(m, k)``), a free
+        letter no claim can name (gen:fresh:i; a claim's generic letters are letters and digits), with its
+        transpose; fresh(m, k), engine code called on the scene itself: the next of the scene's own."""
+        key = _fresh_key(self, args, ("n", "r"))
+        m, k = args[-2:]
+        index = key[len(FRESH):key.index("[")]
+        name = f"gen:fresh:{index}"
+        G, _ = letter_pair(name, f"{name}^T", m, k, f"w_{{{index}}}", f"w_{{{index}}}^{{T}}")
+        self._named.setdefault(str(G), G)
+        return self._cached(name, lambda: self._prim(str(G), _w(self._named[str(G)])))
+
     def _skew(self, name: str, t: str, latex: str) -> Mat:
         self._named.setdefault(name, skew_letter(name, t, latex))
         return self._cached(f"skew:{name}", lambda: self._prim(name, _w(self._named[name])))
@@ -1816,7 +1829,7 @@ class FreePointScene:
 
     #: what does not depend on the point: taken from the base scene (values given in its coordinates)
     POINTLESS = frozenset({"tr", "killing", "q", "const", "zeros", "In", "Ir", "scalar_matrix", "mat", "A", "Ainv",
-                           "resolvent", "lam", "eps", "kappa", "scalar", "xi", "zeta", "eta", "theta", "generic",
+                           "resolvent", "lam", "eps", "kappa", "scalar", "xi", "zeta", "eta", "theta", "generic", "fresh",
                            "n", "r", "field", "tracker", "column", "last_column", "leading_columns", "Y", "Q"})
 
     def __getattr__(self, name: str) -> Any:

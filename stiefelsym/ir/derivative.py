@@ -74,10 +74,10 @@ MOVED = ("X", "P", "Y", "Q", "Zc", "Zc_dot")
 #: matrices and numbers of the scene that do not move along any flow
 CONSTANT_ATTRS = frozenset({"A", "Ainv", "In", "Ir", "xi", "zeta", "eta", "theta"}) | frozenset(NUMBERS)
 #: scene methods whose value does not depend on the point
-CONSTANT_CALLS = frozenset({"q", "const", "scalar", "zeros", "identity", "generic", "general_params"})
+CONSTANT_CALLS = frozenset({"q", "const", "scalar", "zeros", "identity", "generic", "fresh", "general_params"})
 #: scene methods whose value is a number or a matrix (a zero of it may be built as x·0)
 NUMERIC_CALLS = frozenset({"tr", "killing", "resolvent", "q", "const", "scalar", "mat", "zeros", "identity",
-                           "scalar_matrix", "generic", "general_params", "conj", "realify"})
+                           "scalar_matrix", "generic", "fresh", "general_params", "conj", "realify"})
 #: ops whose value is a number or a matrix
 NUMERIC_OPS = frozenset({"add", "sub", "neg", "matmul", "mul", "div", "pow", "T", "inv", "trace", "entry",
                          "block"})
@@ -597,7 +597,7 @@ PRIMITIVES[GRADIENT] = gradient_pair
 _S, _M = "number", "matrix"
 #: scene matrices and numbers the gradient treats as constants (only X and P are its variables)
 _GRAD_CONSTANT_ATTRS = CONSTANT_ATTRS | {"Y", "Q", "Zc", "Zc_dot"}
-_MATRIX_CALLS = frozenset({"resolvent", "mat", "zeros", "identity", "scalar_matrix", "generic", "general_params",
+_MATRIX_CALLS = frozenset({"resolvent", "mat", "zeros", "identity", "scalar_matrix", "generic", "fresh", "general_params",
                            "conj", "realify"})
 _SCALAR_CALLS = frozenset({"tr", "killing", "q", "const", "scalar"})
 

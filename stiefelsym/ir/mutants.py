@@ -21,6 +21,14 @@ A mutant is made by replaying the graph with the one node changed
 left out, and so is a change that computes the same outputs as the claim (the digest of the
 output's subgraph, :func:`.evaluate.node_keys`, equal to the claim's) or as an earlier mutant.
 Nothing here runs claim code or evaluates a value.
+
+A claim that has no graph with symbolic sizes has one graph per size (it reads its sizes: a
+coordinate, a loop over n).  :func:`sized_graph_mutants` mutates those graphs when they have the same
+skeleton (:func:`skeleton`: the same ops in the same order on the same nodes, the numbers of sizes
+aside): a node is then known by its place in the order of the trace, and a mutant is one change made at
+that node of every size's graph (:class:`.replay.SizedGraphClaim`).  Where the skeletons differ (a loop
+or a condition over the sizes makes other nodes at other sizes) no node is the same node at every size,
+and :class:`SkeletonMismatch` says where.
 """
 from __future__ import annotations
 
@@ -29,8 +37,8 @@ from fractions import Fraction
 from typing import Any, Callable, Iterator
 
 from stiefelsym.ir.evaluate import node_keys
-from stiefelsym.ir.graph import Graph, Ref
-from stiefelsym.ir.replay import GraphClaim
+from stiefelsym.ir.graph import Graph, Ref, Size
+from stiefelsym.ir.replay import GraphClaim, SizedGraphClaim
 
 #: scene leaves and the leaves of the same kind that replace them (the source mutation's pairs)
 LETTER_SWAPS: dict[str, tuple[str, ...]] = {
@@ -183,18 +191,40 @@ class GraphMutant:
     node: int
     operator: str
     text: str
-    graph: Graph
+    #: the mutant's graph (None for a claim traced per size: see ``sized``)
+    graph: Graph | None
     key: str
     changes: list = field(default_factory=list)
+    #: for a claim traced per size: per size (n, r), the claim's graph there and the mutant's edit of it
+    #: (its graphs are not kept: they are what the tracer makes of the edited replays, at every run);
+    #: ``key`` is then the digests of the outputs at every size, joined
+    sized: dict | None = None
 
     @property
-    def func(self) -> GraphClaim:
-        """The mutant as a claim function (its graph, replayed by the tracer)."""
-        return GraphClaim(self.graph, name=f"mutant {self.index} (node %{self.node})")
+    def func(self) -> GraphClaim | SizedGraphClaim:
+        """The mutant as a claim function (its graph, or the claim's graph at each size with the one change,
+        replayed by the tracer)."""
+        name = f"mutant {self.index} (node %{self.node})"
+        if self.sized is None:
+            assert self.graph is not None
+            return GraphClaim(self.graph, name=name)
+        return SizedGraphClaim({z: g for z, (g, _) in self.sized.items()},
+                               {z: e for z, (_, e) in self.sized.items()}, name=name)
+
+    def graphs(self, constraints: tuple) -> dict:
+        """The mutant's graph at each size (traced again for a claim traced per size)."""
+        if self.sized is None:
+            return {None: self.graph}
+        from stiefelsym.ir import _clean
+        from stiefelsym.ir.trace import trace
+        return {z: _clean(trace, GraphClaim(g, e), z[0], z[1], constraints) for z, (g, e) in self.sized.items()}
 
     def description(self) -> str:
         from stiefelsym.ir.notation import describe
-        return f"{describe(self.changes)} (graph: node %{self.node}, {self.operator}: {self.text})"
+        if self.sized is None:
+            return f"{describe(self.changes)} (graph: node %{self.node}, {self.operator}: {self.text})"
+        at = ", ".join(f"({n},{r})" for n, r in self.sized)
+        return f"{describe(self.changes)} (graphs at {at}: node %{self.node}, {self.operator}: {self.text})"
 
 
 @dataclass
@@ -206,6 +236,8 @@ class MutantCensus:
     same_as_claim: int = 0
     duplicates: int = 0
     refusals: dict = field(default_factory=dict)
+    #: of the ill-typed changes of graphs traced per size, those that type at some of the sizes
+    ill_typed_somewhere: int = 0
 
 
 def output_key(g: Graph) -> str:
@@ -249,5 +281,106 @@ def graph_mutants(g: Graph, constraints: tuple, census: MutantCensus | None = No
         gm = GraphMutant(len(out), site.node, site.operator, site.text, m, key)
         if notation:
             gm.changes = diff(g, m)
+        out.append(gm)
+    return out
+
+
+# --------------------------------------------------------------------------- graphs traced per size
+
+class SkeletonMismatch(ValueError):
+    """The graphs of a claim traced at several sizes are not one computation at every size."""
+
+
+def _shape(a: Any) -> Any:
+    t = type(a)
+    if t is Ref:
+        return a
+    if t is tuple:
+        return tuple(_shape(x) for x in a)
+    if t is int:
+        return int          # a number that may be a size (s.zeros(n, 2) at n = 4 reads 4)
+    if t is Size:
+        return (Size, a.k, a.d)
+    return a
+
+
+def skeleton(g: Graph) -> tuple:
+    """The graph with the numbers of its sizes left out: per node its op and its arguments, with every
+    int (a size, an index or a constant: they cannot be told apart at a fixed size) replaced by ``int``.
+    Two graphs with the same skeleton make the same ops in the same order on the same nodes."""
+    return tuple((op, _shape(a)) for op, a in zip(g.ops, g.args)) + (g.output,)
+
+
+def _first_difference(a: Graph, b: Graph) -> str:
+    for i, (x, y) in enumerate(zip(skeleton(a), skeleton(b))):
+        if x != y:
+            if i >= min(len(a.ops), len(b.ops)):
+                break
+            if a.ops[i] == b.ops[i]:
+                return f"node %{i} ({a.ops[i]}) has other arguments"
+            return f"node %{i} is {a.ops[i]} in one and {b.ops[i]} in the other"
+    return f"{len(a.ops)} and {len(b.ops)} nodes"
+
+
+def sized_graph_mutants(graphs: dict[tuple[int, int], Graph], constraints: tuple,
+                        census: MutantCensus | None = None, notation: bool = True) -> list[GraphMutant]:
+    """The mutants of a claim traced per size (``graphs``: its graph at each size, in the order of the sizes
+    its changes are written at: the first where the change changes an output), each one change at one node made at every size: the graphs must have the
+    same :func:`skeleton`, else :class:`SkeletonMismatch`.  A change that does not type at one of the
+    sizes is left out (counted ill-typed), and so is one that computes at every size what the claim or
+    an earlier mutant computes."""
+    from stiefelsym.ir import _clean
+    from stiefelsym.ir.notation import diff
+    from stiefelsym.ir.trace import trace
+    census = census if census is not None else MutantCensus()
+    sizes = list(graphs)
+    first = graphs[sizes[0]]
+    shape = skeleton(first)
+    for z in sizes[1:]:
+        if skeleton(graphs[z]) != shape:
+            raise SkeletonMismatch(
+                f"the graphs at ({sizes[0][0]},{sizes[0][1]}) and ({z[0]},{z[1]}) are not the same computation "
+                f"({_first_difference(first, graphs[z])}: a loop or a condition over the sizes)")
+    per = {z: list(sites(graphs[z])) for z in sizes}
+    names = [(x.node, x.operator) for x in per[sizes[0]]]
+    for z in sizes[1:]:
+        if [(x.node, x.operator) for x in per[z]] != names:
+            raise SkeletonMismatch(f"the graphs at ({sizes[0][0]},{sizes[0][1]}) and ({z[0]},{z[1]}) offer other "
+                                   "changes (their constants differ in kind)")
+    base = tuple(output_key(graphs[z]) for z in sizes)
+    seen = {base}
+    out: list[GraphMutant] = []
+    for k, site in enumerate(per[sizes[0]]):
+        census.sites += 1
+        made: dict[tuple[int, int], Graph] = {}
+        refused = ""
+        for z in sizes:
+            edit = per[z][k].edit
+            try:
+                m = _clean(trace, GraphClaim(graphs[z], {site.node: edit}), z[0], z[1], constraints)
+                if m.refusals:
+                    raise TypeError(m.refusals[0])
+                made[z] = m
+            except Exception as exc:   # noqa: BLE001 - the tracer refused the change at this size
+                refused = refused or str(exc).removeprefix("refused: ").split(" (")[0][:80]
+        if refused:
+            census.ill_typed += 1
+            census.ill_typed_somewhere += bool(made)
+            census.refusals[refused] = census.refusals.get(refused, 0) + 1
+            continue
+        key = tuple(output_key(made[z]) for z in sizes)
+        if key == base:
+            census.same_as_claim += 1
+            continue
+        if key in seen:
+            census.duplicates += 1
+            continue
+        seen.add(key)
+        # written at the first size where it changes an output (a change may vanish at a small size)
+        z = next(z for j, z in enumerate(sizes) if key[j] != base[j])
+        gm = GraphMutant(len(out), site.node, site.operator, site.text, None, "/".join(key),
+                         sized={y: (graphs[y], {site.node: per[y][k].edit}) for y in sizes})
+        if notation:
+            gm.changes = diff(graphs[z], made[z])
         out.append(gm)
     return out

@@ -439,6 +439,8 @@ class Reader:
             return num(args[0])
         if name in ("scalar", "generic", "general_params", "sym_operator"):
             return name_atom(args[0])
+        if name == "fresh":    # a fresh element, numbered by the engine: w̃ᵢ (no name of a claim's spells it)
+            return atom("w\u0303" + str(args[0]).translate(_SUB_DIGITS), r"\tilde w_{" + str(args[0]) + "}")
         if name == "zeros":
             return atom("0")
         if name == "identity":

@@ -120,7 +120,7 @@ def _spaces(g: Graph) -> tuple["_Sides", list]:
             name, args = a[1], a[2]
             if name == "resolvent":
                 sd = (n_atom, n_atom)
-            elif name == "generic":
+            elif name in ("generic", "fresh"):
                 sd = (atom(args[1]), atom(args[2]))
             elif name == "zeros":
                 sd = (sized(args[0]), sized(args[1]))

@@ -19,6 +19,11 @@ handed in is therefore no stronger than the claim code that would have built it.
 An ``edit`` (used by :mod:`.mutants`) replaces the value of one node by a
 function of the replayed values of that node's arguments: the mutant's graph is
 what the tracer makes of the edited replay (an ill-typed edit is refused there).
+
+:class:`SizedGraphClaim` makes the graphs of a claim traced per size (one graph at
+each size it runs at) one claim function: at a size it replays that size's graph;
+it reads the size through the tracer's door of a size's number, so with symbolic
+sizes it is refused, as claim code that reads its sizes is.
 """
 from __future__ import annotations
 
@@ -211,6 +216,12 @@ class _Replay:
                 return scene.generic(*args)
             finally:
                 t._elements = False
+        if name == "fresh":
+            # a fresh element: the tracer numbers it again (the graph's number is no argument of s.fresh;
+            # a graph in the order of a trace gets the same numbers)
+            if len(args) != 3 or type(args[0]) is not int or kw:
+                raise ReplayError("refused: a fresh element is call fresh (number, m, k)")
+            return scene.fresh(*args[1:])
         return getattr(scene, name)(*[self.arg(x, frame) for x in args],
                                     **{k: self.arg(v, frame) for k, v in kw})
 
@@ -380,3 +391,40 @@ class GraphClaim:
 
     def __reduce__(self):
         raise TypeError("a graph claim is not pickled (its graph is: Graph pickles)")
+
+
+class SizedGraphClaim:
+    """Graphs traced per size as one claim function: called on a scene traced at a fixed size (n, r), it
+    replays the graph of that size (with ``edits[(n, r)]``: node -> replacement of its value), as
+    :class:`GraphClaim` does.  It learns the size by the tracer's door of a size's number (``int(s.n)``),
+    so traced with symbolic sizes (or on a family of sizes) it is refused and the refusal recorded, as
+    claim code that reads its sizes is; at a size it has no graph for it is refused too."""
+
+    __slots__ = ("_claims", "__name__", "__qualname__")
+
+    def __init__(self, graphs: dict[tuple[int, int], Graph],
+                 edits: dict[tuple[int, int], dict[int, Callable]] | None = None, name: str = "graphs") -> None:
+        if not graphs:
+            raise ReplayError("refused: no graph to replay")
+        edits = edits or {}
+        self._claims = {(int(n), int(r)): GraphClaim(g, edits.get((n, r)), name=name) for (n, r), g in graphs.items()}
+        self.__name__ = self.__qualname__ = name
+
+    @property
+    def sizes(self) -> tuple[tuple[int, int], ...]:
+        return tuple(self._claims)
+
+    def __call__(self, s: Any) -> Any:
+        size = (int(s.n), int(s.r))      # the door of the sizes' numbers: refused with symbolic sizes
+        gc = self._claims.get(size)
+        if gc is None:
+            at = ", ".join(f"({n},{r})" for n, r in self._claims)
+            raise ReplayError(f"refused: graphs traced at {at} only, none at ({size[0]},{size[1]})")
+        return gc(s)
+
+    def __repr__(self) -> str:
+        at = ", ".join(f"({n},{r})" for n, r in self._claims)
+        return f"<graph claim {self.__name__} (graphs at {at})>"
+
+    def __reduce__(self):
+        raise TypeError("a graph claim is not pickled (its graphs are: Graph pickles)")

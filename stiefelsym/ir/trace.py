@@ -457,7 +457,7 @@ MATRICES = {"X": ("n", "r"), "P": ("n", "r"), "A": ("n", "n"), "Ainv": ("n", "n"
 NUMBERS = ("lam", "kappa", "eps")
 #: the scene's methods, with the kind of what they return
 METHODS = frozenset("""tr killing resolvent q const scalar mat zeros identity scalar_matrix generic general_params
-    sym_operator conj realify tangent d gradient dirac_flow multiplier_flow canonical_flow bracket
+    fresh sym_operator conj realify tangent d gradient dirac_flow multiplier_flow canonical_flow bracket
     canonical_bracket jacobian constraint_bracket_matrix""".split())
 #: what a claim may ask of its scene (README: "What a scene s offers")
 API = frozenset(MATRICES) | frozenset(NUMBERS) | METHODS | {"a", "n", "r", "constraints"}
@@ -652,6 +652,19 @@ def _m_generic(s, name, m, k):
     return _call(s, "generic", (name, m, k), MAT, t.shape_of((m, k)))
 
 
+def _m_fresh(s, m, k):
+    """s.fresh(m, k): a generic m×k matrix (m, k in 'n', 'r') of parameters no claim can name, new at every call.
+    The engine numbers it (the trace's count of fresh elements, the same in both traces of a claim): the
+    graph holds ``call fresh (i, m, k)``, which the API cannot write (a claim gives no number), and no
+    two calls give the same element, so an element drawn for a statement about every element (the
+    point and covectors of :func:`stiefelsym.brackets.poisson_checks`) cannot be named or kept by the claim."""
+    t = s._t
+    if not all(type(x) is str for x in (m, k)) or not {m, k} <= {"n", "r"}:
+        return t.refuse("s.fresh(m, k): the spaces 'n' or 'r'")
+    t._fresh += 1
+    return _call(s, "fresh", (t._fresh, m, k), MAT, t.shape_of((m, k)))
+
+
 def _m_general_params(s, name, m, k, tags):
     t = s._t
     if type(name) is not str:
@@ -777,7 +790,8 @@ def _m_constraint_bracket_matrix(s):
 _SCENE_METHODS: dict[str, Callable] = {
     "tr": _m_tr, "killing": _m_killing, "resolvent": _m_resolvent, "q": _m_q, "const": _m_const,
     "scalar": _m_scalar, "mat": _m_mat, "zeros": _m_zeros, "identity": _m_identity,
-    "scalar_matrix": _m_scalar_matrix, "generic": _m_generic, "general_params": _m_general_params,
+    "scalar_matrix": _m_scalar_matrix, "generic": _m_generic, "fresh": _m_fresh,
+    "general_params": _m_general_params,
     "sym_operator": _m_sym_operator, "conj": _m_conj, "realify": _m_realify, "tangent": _m_tangent,
     "d": _m_d, "gradient": _m_gradient, "dirac_flow": _flow_method("dirac_flow"),
     "multiplier_flow": _flow_method("multiplier_flow"), "canonical_flow": _flow_method("canonical_flow"),
@@ -842,6 +856,9 @@ class Trace:
         self.constraints = constraints
         self._functions: dict[int, tuple[Any, Ref, Any, Any]] = {}
         self._elements = False     # the generic elements of an Inverse statement are being made
+        self._fresh = 0            # the fresh elements made so far (s.fresh)
+        self._open = [0]           # the functions being traced (0: the claim), innermost last
+        self._parents: dict[int, frozenset] = {}   # per function, those open when it was traced
 
     # -- nodes ----------------------------------------------------------------------------------
     def new(self, op: str, args: tuple, kind: str, shape: tuple = (None, None)) -> Tracer:
@@ -957,7 +974,12 @@ class Trace:
                 extra = [self.mirror(like, self.g.add("param", (k, 1, self.arg(like))))]
             else:
                 extra = [self.new("param", (k, i), ANY) for i in range(1, arity)]
-            if self.structure(f(scene, *extra)) != body:
+            self._open.append(k)
+            try:
+                again = self.structure(f(scene, *extra))
+            finally:
+                self._open.pop()
+            if again != body:
                 return self.refuse("a function that traces to another graph when it is used again (its state "
                                    "changed between two uses)")
             return hit[1], hit[2]
@@ -976,11 +998,41 @@ class Trace:
             extra = [self.mirror(like, self.g.add("param", (k, 1, self.arg(like))))]
         else:
             extra = [self.new("param", (k, i), ANY) for i in range(1, arity)]
-        out = f(scene, *extra)
-        body = self.structure(out)
+        self._parents[k] = frozenset(self._open)
+        self._open.append(k)
+        try:
+            out = f(scene, *extra)
+            body = self.structure(out)
+        finally:
+            self._open.pop()
         ref = self.g.add("fn", (k, arity, body))
         self._functions[id(f)] = (f, ref, out, like)
         return ref, out
+
+    def check_parameters(self) -> None:
+        """Refuse a graph in which a function's body, or the claim's checks, read a parameter (or the scene)
+        of a function that does not enclose it: a value kept from the trace of another function (a Poisson
+        tensor that keeps a point it was evaluated at, a list a function appends its argument to), which no
+        evaluation binds."""
+        g, empty = self.g, frozenset()
+        deps: list[frozenset] = []
+        for op, a in zip(g.ops, g.args):
+            below = [deps[j] for j in g.refs(len(deps)) if deps[j]]
+            if op != "scene" and op != "param" and op != "fn" and len(below) <= 1:
+                deps.append(below[0] if below else empty)
+                continue
+            d: set = set().union(*below)
+            if op == "param" or (op == "scene" and a[0] != 0):
+                d.add(a[0])
+            if op == "fn":
+                d.discard(a[0])
+                if not d <= self._parents.get(a[0], empty):
+                    self.refuse("a function's parameter used outside the function (a value kept from the trace "
+                                "of another function)")
+            deps.append(frozenset(d))
+        if g.output is not None and deps[g.output.i]:
+            self.refuse("a function's parameter used outside the function (a value kept from the trace of a "
+                        "function, in the claim's checks)")
 
     # -- structured values ------------------------------------------------------------------------
     def structure(self, v: Any) -> Any:
@@ -1211,6 +1263,7 @@ def trace(func: Callable, n: int | None, r: int | None, constraints: tuple[str, 
         statements = (Inverse, RightInverse)
         t.g.output = t.g.add("dict", (tuple(out), tuple(t.inverse(v) if type(v) in statements else t.structure(v)
                                                         for v in out.values())))
+        t.check_parameters()
     finally:
         _ACTIVE.pop()
     g = t.g.sealed()

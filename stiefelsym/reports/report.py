@@ -1511,7 +1511,8 @@ def render_mutation_summary(mutation: Any) -> str:
     surv = _mutants(data, survivors=True)
     lines = [f"mutation: {sum(len(c.get('mutants', [])) for c in data.get('claims', []))} mutants of "
              f"{len(data.get('claims', []))} claims; {len(surv)} survivor{'s' * (len(surv) != 1)}, "
-             f"{len(_mutants(data, 'equivalent'))} equivalent", fmt(head)] + [fmt(b) for b in body]
+             f"{len(_mutants(data, 'equivalent'))} equivalent"] + _mutation_made_on(data) \
+        + [fmt(head)] + [fmt(b) for b in body]
     if surv:
         lines.append("survivors (a method passed a mutant another method refuted, or free proved it):")
         for o in surv:
@@ -1520,6 +1521,20 @@ def render_mutation_summary(mutation: Any) -> str:
                          + (f"{change} (source: {o.get('description')})" if change else f"{o.get('description')}"))
             lines.append(f"    {_mutant_verdicts(o)}")
     return "\n".join(lines) + "\n"
+
+
+def _mutation_made_on(data: dict[str, Any]) -> list[str]:
+    """What the mutants were made on, per claim (a line only when some claim was mutated on graphs, or fell
+    back to its source)."""
+    made = [c for c in data.get("claims", []) if c.get("on")]
+    if not any(c["on"] != "source" or c.get("fallback") for c in made):
+        return []
+    counts: dict[str, int] = {}
+    for c in made:
+        counts[c["on"]] = counts.get(c["on"], 0) + 1
+    fell = sum(1 for c in made if c.get("fallback"))
+    return ["mutants made on: " + ", ".join(f"{k}: {v} claim{'s' * (v != 1)}" for k, v in counts.items())
+            + (f" ({fell} fell back from graphs to the source)" if fell else "")]
 
 
 def _md_mutation_tables(data: dict[str, Any]) -> list[str]:
@@ -1618,6 +1633,13 @@ def _md_mutation_body(data: dict[str, Any], full: bool) -> list[str]:
     if unresolved:
         out += [f"Unresolved mutants ({len(unresolved)}): killed only by inconclusive or undecided verdicts.", ""]
         out += [_md_mutant_item(o) for o in unresolved] + [""]
+    made_on = _mutation_made_on(data)
+    if made_on:
+        out += [_md_escape(made_on[0][0].upper() + made_on[0][1:]) + ".", ""]
+        fell = [c for c in data.get("claims", []) if c.get("fallback")]
+        if fell:
+            out += ["Claims mutated on their source because their graphs could not be:", ""]
+            out += [f"- `{c['claim']}`: {_md_escape(c['fallback'])}" for c in fell] + [""]
     skipped = [c for c in data.get("claims", []) if c.get("skipped")]
     if skipped:
         out += ["Claims not mutated:", ""]

@@ -252,7 +252,8 @@ def check_results(records: list[dict], registry: Registry, echo: Callable[[str],
                 bad += 1
                 continue
         if rerun and r.get("method") != "free":
-            again_fixed = run_one(claim, size, r.get("method"), r.get("seed") or 0, func, hard=hard)
+            again_fixed = run_one(claim, size, r.get("method"), r.get("seed") or 0, func,
+                                 variant=r.get("variant"), hard=hard)
             if again_fixed.verdict != r.get("verdict"):
                 echo(f"REJECTED {where}: the record says {r.get('verdict')!r}, a run again says "
                      f"{again_fixed.verdict!r}")

@@ -254,8 +254,8 @@ def _claim_data(c: Claim, needed: Sequence[tuple[int, int]] = ()) -> dict:
                   "fields_first": type(spec) is SizeSpec, "admits": admits},
         "fails_at": fails,
         "keys": [None] + [list(p) for p in traced],
-        "corrections": [{"description": k.description, "changes": k.changes, "expect": k.expect}
-                        for k in c.corrections],
+        "corrections": [{"description": k.description, "changes": k.changes, "expect": k.expect,
+                         "exact_max_r": [list(p) for p in k.exact_max_r]} for k in c.corrections],
     }
 
 
@@ -781,19 +781,26 @@ def _claim(d: Any, path: str, confinement: str = "namespaces") -> Claim:
         desc = _get(k, "description", str)
         corrections.append(Correction(desc, TracedFunction(f"{name} ({desc})", realization, _get(k, "graphs", list),
                                                            src_path, line, confinement),
-                                      _get(k, "changes", int), _get(k, "expect", str, optional=True)))
+                                      _get(k, "changes", int), _get(k, "expect", str, optional=True),
+                                      _exact_pairs(_get(k, "exact_max_r", list))))
     paper = _get(d, "paper", list)
     if not all(type(p) is str for p in paper):
         raise WireError("a paper label that is not a string")
-    return Claim(id=_get(d, "id", str), paper=tuple(paper), kind=_get(d, "kind", str),
-                 section=_get(d, "section", str),
-                 func=TracedFunction(name, realization, _get(d, "graphs", list), src_path, line, confinement),
-                 sizes=spec, statement=_get(d, "statement", str), title=_get(d, "title", str),
-                 realization=realization, expect=_get(d, "expect", str), exact_max_n=_get(d, "exact_max_n", int),
-                 exact_max_r=_exact_pairs(_get(d, "exact_max_r", list)),
-                 corrections=corrections, source=_get(d, "source", str),
-                 fails_at=None if fails is None else _Lookup("erratum sizes (fails_at)", fails),
-                 erratum=_get(d, "erratum", str), equivariance=_get(d, "equivariance", str), reviewed=False)
+    c = Claim(id=_get(d, "id", str), paper=tuple(paper), kind=_get(d, "kind", str),
+              section=_get(d, "section", str),
+              func=TracedFunction(name, realization, _get(d, "graphs", list), src_path, line, confinement),
+              sizes=spec, statement=_get(d, "statement", str), title=_get(d, "title", str),
+              realization=realization, expect=_get(d, "expect", str), exact_max_n=_get(d, "exact_max_n", int),
+              exact_max_r=_exact_pairs(_get(d, "exact_max_r", list)),
+              corrections=corrections, source=_get(d, "source", str),
+              fails_at=None if fails is None else _Lookup("erratum sizes (fails_at)", fails),
+              erratum=_get(d, "erratum", str), equivariance=_get(d, "equivariance", str), reviewed=False)
+    for k in range(len(corrections)):
+        try:
+            c.corrected(k)               # a correction's symbolic budget is validated as the claim's
+        except ValueError as exc:
+            raise WireError(str(exc)) from None
+    return c
 
 
 def _preload() -> dict[str, str]:
