@@ -106,6 +106,18 @@ class _Frame:
         self.k, self.bind, self.memo, self.parent = k, bind, {}, parent
 
 
+
+def _value_table(pairs: list, what: str) -> Callable:
+    """A function of the scene and arguments that returns the graph's value recorded for those arguments
+    (known by their nodes), and refuses any other arguments: the op or inverse of a replayed statement."""
+    def f(s: Any, *args: Any) -> Any:
+        key = tuple(getattr(x, "_r", None) for x in args)
+        for arg, value in pairs:
+            if key == tuple(getattr(x, "_r", None) for x in arg):
+                return value
+        raise ReplayError(f"refused: {what} applied to other arguments than the graph's")
+    return f
+
 class _Replay:
     """One replay of a graph on one traced scene."""
 
@@ -299,14 +311,7 @@ class _Replay:
         if type(a[7]) is not tuple or type(a[8]) is not str:
             raise ReplayError("refused: an inverse statement whose spaces or meaning are not literals")
 
-        def table(pairs: list) -> Callable:
-            def f(s: Any, *args: Any) -> Any:
-                key = tuple(getattr(x, "_r", None) for x in args)
-                for arg, value in pairs:
-                    if key == tuple(getattr(x, "_r", None) for x in arg):
-                        return value
-                raise ReplayError("refused: an inverse statement applied to other arguments than the graph's")
-            return f
+        table = lambda pairs: _value_table(pairs, "an inverse statement")     # noqa: E731
         statement = Inverse(table([(inv_y, op_inv_y), (xs, op_x)]), table([(ys, inv_y), (op_x, inv_op_x)]), a[7], a[8])
         t = getattr(self.scene, "_t", None)
         if t is None:
@@ -321,14 +326,7 @@ class _Replay:
         if type(a[6]) is not tuple or type(a[7]) is not tuple or type(a[8]) is not str:
             raise ReplayError("refused: a right inverse statement whose spaces or meaning are not literals")
 
-        def table(pairs: list) -> Callable:
-            def f(s: Any, *args: Any) -> Any:
-                key = tuple(getattr(x, "_r", None) for x in args)
-                for arg, value in pairs:
-                    if key == tuple(getattr(x, "_r", None) for x in arg):
-                        return value
-                raise ReplayError("refused: a right inverse statement applied to other arguments than the graph's")
-            return f
+        table = lambda pairs: _value_table(pairs, "a right inverse statement")     # noqa: E731
         statement = RightInverse(table([(inv_y, op_inv_y), (xs, op_x)]), table([(ys, inv_y)]), a[6], a[7], a[8])
         t = getattr(self.scene, "_t", None)
         if t is None:
