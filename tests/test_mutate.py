@@ -521,6 +521,25 @@ def test_cli_small_run_writes_reports(tmp_path):
     assert "| `normal-hamiltonian` | rational |" in md
 
 
+def test_cli_reports_carry_no_timing_and_the_log_keeps_them(tmp_path, monkeypatch):
+    """mutation.json is the same file at every run of the same command (no per-claim or per-run seconds);
+    the timings go to mutation-log.json, which is not one of the reproducible reports."""
+    monkeypatch.chdir(tmp_path)
+    files = []
+    for _ in range(2):
+        res = _invoke(["normal-hamiltonian", "--size", "3,2", "--method", "rational", "--limit", "3",
+                       "--report-dir", "rep", "--jobs", "1"])
+        assert res.exit_code == 0, res.output + res.stderr
+        files.append(((tmp_path / "rep" / "mutation.json").read_bytes(),
+                      json.loads((tmp_path / "rep" / "mutation-log.json").read_text())))
+    assert files[0][0] == files[1][0]
+    stable = json.loads(files[0][0])
+    cells = [c for m in stable["claims"][0]["mutants"] for c in m["cells"]]
+    assert cells and all(c["seconds"] is None for c in cells) and stable["claims"][0]["seconds"] is None
+    logged = [c for m in files[0][1]["claims"][0]["mutants"] for c in m["cells"]]
+    assert all(isinstance(c["seconds"], float) for c in logged) and "seconds" in files[0][1]["meta"]
+
+
 def test_cli_json_format_and_partial_run_writes_nothing(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     res = _invoke(["normal-hamiltonian", "--size", "3,2", "--method", "rational", "--limit", "2",

@@ -30,7 +30,7 @@ from stiefelsym.results import write_atomic
 
 EXIT_OK, EXIT_SURVIVORS, EXIT_INPUT, EXIT_INTERRUPTED = 0, 1, 2, 130
 DEFAULT_REPORT_DIR = Path("reports")
-REPORT_FILES = ("mutation.json", "mutation.md")
+REPORT_FILES = ("mutation.json", "mutation.md", "mutation-log.json")
 
 
 class MutateInputError(InputError):
@@ -40,6 +40,18 @@ class MutateInputError(InputError):
 _Command = standalone_command("stiefelsym mutate")
 
 
+
+
+def _without_seconds(claim: dict) -> dict:
+    """A claim's record with its timings left out (per claim and per run): the same command on the same
+    commit writes the same mutation.json."""
+    out = dict(claim, seconds=None)
+    out["mutants"] = [dict(m, cells=[dict(c, seconds=None) for c in m.get("cells") or []])
+                      for m in claim.get("mutants") or []]
+    base = claim.get("baseline")
+    if isinstance(base, dict):
+        out["baseline"] = dict(base, cells=[dict(c, seconds=None) for c in base.get("cells") or []])
+    return out
 
 def _parse_size(text: str) -> Size:
     m = re.fullmatch(r"\s*(?:n\s*=\s*)?([+-]?\d+)\s*,\s*(?:r\s*=\s*)?([+-]?\d+)\s*", text)
@@ -254,8 +266,11 @@ def mutate(ids: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str, ...
         try:
             # no date, duration or host in the committed files (they would change at every run)
             stable = dict(data, meta={k: v for k, v in (data.get("meta") or {}).items()
-                                      if k not in ("date", "seconds", "platform")})
+                                      if k not in ("date", "seconds", "platform")},
+                          claims=[_without_seconds(c) for c in data.get("claims") or []])
             write_atomic(Path(target) / "mutation.json", json.dumps(stable, indent=1, ensure_ascii=False) + "\n")
+            # the timings (per claim and per run) go to a log that is not part of the reproducible reports
+            write_atomic(Path(target) / "mutation-log.json", json.dumps(data, indent=1, ensure_ascii=False) + "\n")
             write_atomic(Path(target) / "mutation.md", render_mutation_markdown(stable))
         except OSError as exc:
             raise MutateInputError(f"cannot write reports to {target}: {exc.strerror or exc}") from None
