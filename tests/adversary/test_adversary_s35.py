@@ -105,3 +105,14 @@ def test_a_generic_matrix_named_w_is_not_the_kernel_frame():
     got = by_claim(run_all("s35_kernel_frame_named.py", size="3,1"))
     for c in ("adv-s35-kernel-frame-named-w", "adv-s35-kernel-frame-named-v"):
         assert fixed(got[c]) == {"fails"} and got[c]["free"] == "undecided", (c, got[c])
+
+
+def test_a_right_inverse_that_holds_at_some_sizes_only_is_not_passed_there():
+    """RightInverse with a factor (tr I_r − 1), a constant at each size but 0 at r = 1: refused under every
+    method (a divisor that is not a constant of the algebra), free undecided.  X Xᵀ declared onto R^{n×r}
+    (the identity as its right inverse): fails at (3,2) under every fixed-size method (onto only at r = n),
+    free undecided (a nonzero normal form)."""
+    got = by_claim(run_all("s35_right_inverse_tricks.py"))
+    scaled, proj = got["adv-s35-ri-vanishing-factor"], got["adv-s35-ri-projection"]
+    assert fixed(scaled) == {"error"} and scaled["free"] == "undecided", scaled
+    assert fixed(proj) == {"fails"} and proj["free"] == "undecided", proj
