@@ -591,10 +591,13 @@ def _reads_coordinates(claim: Claim, n: int, r: int, func: Callable) -> list[str
     always seen by the scene's record while evaluating."""
     cons = REALIZATIONS[claim.realization]
     g = compile_claim(func, n, r, (cons.name, cons.build))
-    out = [w for w in coordinate_needs(g) if not w.startswith(("a rank", "a count"))]
-    if "entry" in g.ops:
-        out.append("an entry or a block of a matrix")
-    return out
+    out = g.cache.get("reads coordinates")      # a function of the graph: computed once per graph
+    if out is None:
+        out = [w for w in coordinate_needs(g) if not w.startswith(("a rank", "a count"))]
+        if "entry" in g.ops:
+            out.append("an entry or a block of a matrix")
+        g.cache["reads coordinates"] = out = tuple(out)
+    return list(out)
 
 
 def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = None,
@@ -620,12 +623,13 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                     f = SymbolicField()
                     return f, Scene(n, r, f, chart="equivariant", realization=claim.realization,
                                     right_reduction=right)
-                field, scene = _symbolic_chart((claim.id, claim.realization, "exact", n, r, "equivariant", right), build)
                 missing = False   # the equivariant chart cannot provide an object (a_i, a second point)
                 try:
-                    checks = call_claim(func, scene)
+                    field, scene, checks = _chart_checks(
+                        (claim.id, claim.realization, "exact", n, r, "equivariant", right), build, func)
                     coords = list(scene.tracker.used)
-                except CoordinateAccess:
+                except CoordinateAccess as exc:
+                    field, scene = exc.chart
                     coords = list(scene.tracker.used) or ["coordinates"]
                     missing = True
                 if not (coords or missing):
@@ -670,8 +674,8 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                     def build_cayley(comp=comp) -> tuple:
                         f = SymbolicField()
                         return f, Scene(n, r, f, chart="cayley", component=comp, realization=claim.realization)
-                    f2, sc = _symbolic_chart((claim.id, claim.realization, "exact", n, r, "cayley", comp), build_cayley)
-                    ch = call_claim(func, sc)
+                    f2, sc, ch = _chart_checks((claim.id, claim.realization, "exact", n, r, "cayley", comp),
+                                               build_cayley, func)
                     evaluations.append(_evaluate(ch, f2, lambda R, f2=f2: _exact_rank(
                         R, f2, randomized, lambda: degree_bound(claim, n, r, func).numerator, key)))
                     desc = REDUCED_CAYLEY_REDUCTION if r < n else CAYLEY_REDUCTION.format(
@@ -742,6 +746,174 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
         return res
     res.verdict = "proved"
     return res
+
+
+#: the straight-line programs of the exact method (:mod:`stiefelsym.ir.straightline`): per digest of the
+#: graph, realization, size and chart, a :class:`_Straight`, or the reason the graph was not compiled
+_STRAIGHT: dict[tuple, Any] = {}
+#: how many times the interpreter evaluated each (digest, chart) before it is compiled: a graph
+#: evaluated once (a mutant of the mutation analysis) is never compiled
+_STRAIGHT_SEEN: dict[tuple, int] = {}
+STRAIGHT_AFTER = 1
+
+
+class _Straight:
+    """A graph compiled for one chart of the exact method: the program, the chart it was compiled
+    on (its own field and scene, kept: the chart has no random draw, and its coordinates are the
+    program's inputs), the tags of the checks and the record of looks at coordinates that the
+    evaluation of the graph on the chart made (the same at every run: a function of the graph and
+    the chart), replayed into the scene's record at every run."""
+
+    __slots__ = ("fn", "field", "scene", "inputs", "outputs", "log", "ctx", "operations")
+
+    def __init__(self, fn, field, scene, inputs, outputs, log, ctx, operations) -> None:
+        self.fn, self.field, self.scene, self.inputs, self.outputs = fn, field, scene, inputs, outputs
+        self.log, self.ctx, self.operations = log, ctx, operations
+
+    def run(self) -> dict[str, Any]:
+        """The checks, computed by the program from the chart's coordinates."""
+        from stiefelsym.backends.polyfield import PolyMat
+        verify_engine("before an evaluation")
+        tracker = self.scene.tracker
+        tracker.restart()
+        tracker.replay(self.log)
+        values = self.fn(self.inputs)
+        checks = {}
+        field, ctx, wrap = self.field, self.ctx, Mat._wrap_native
+        for (name, (m, k), tags), rows in zip(self.outputs, values):
+            a = np.empty((m, k), dtype=object)
+            for i, row in enumerate(rows):
+                for j, x in enumerate(row):
+                    a[i, j] = x
+            checks[name] = wrap(PolyMat(a, (), ctx), field, tags, tracker)
+        return checks
+
+
+def _chart_checks(key: tuple, build: Callable[[], tuple], func: Callable) -> tuple:
+    """(field, scene, checks) of the claim's graph on a chart of the exact method (``key``: the claim,
+    realization, method, size, chart and its variant; ``build``: the chart's field and scene).
+
+    A graph evaluated on the same chart before is run as its straight-line program
+    (:mod:`stiefelsym.ir.straightline`), compiled on the second evaluation from the graph and the
+    pattern of the chart's coordinates, and shared by every claim (or mutant) with the same graph
+    through the graph's digest only; the program recomputes every entry of every check at every
+    run.  A graph the compiler does not handle, a chart whose coordinates are not polynomials, and
+    the lent charts of the mutation analysis are evaluated by the interpreter.  A chart that cannot
+    provide an object the claim reads raises its CoordinateAccess, with the chart (``chart``: the field
+    and the scene)."""
+    if _LOAN is None:
+        n, r = key[3], key[4]
+        cons = REALIZATIONS[key[1] or "standard"]
+        g = compile_claim(func, n, r, (cons.name, cons.build))
+        skey = (g.digest(), *key[1:])
+        hit = _STRAIGHT.get(skey)
+        if type(hit) is _Straight:
+            return hit.field, hit.scene, hit.run()
+        if hit is None:
+            seen = _STRAIGHT_SEEN.get(skey, 0)
+            if seen >= STRAIGHT_AFTER:
+                return _compile_straight(skey, g, build, func)
+            _STRAIGHT_SEEN[skey] = seen + 1
+    field, scene = _symbolic_chart(key, build)
+    try:
+        return field, scene, call_claim(func, scene)
+    except CoordinateAccess as exc:
+        exc.chart = (field, scene)
+        raise
+
+
+def _compile_straight(skey: tuple, g: Any, build: Callable[[], tuple], func: Callable) -> tuple:
+    """Evaluate the graph on a chart of its own by the interpreter, recording the looks at
+    coordinates, and compile it for that chart (kept in :data:`_STRAIGHT`); the interpreter's checks,
+    which the program must reproduce entry by entry, are this run's."""
+    from stiefelsym.ir.straightline import NotCompiled, compile_graph
+    field, scene = build()
+    tracker = scene.tracker
+    tracker._log = []
+    try:
+        checks = call_claim(func, scene)
+    except CoordinateAccess as exc:
+        _STRAIGHT[skey] = "the chart cannot provide an object the claim reads"
+        exc.chart = (field, scene)
+        raise
+    finally:
+        log, tracker._log = tuple(tracker._log or ()), None
+    try:
+        _STRAIGHT[skey] = _straight(g, field, scene, checks, log, compile_graph)
+    except NotCompiled as exc:
+        _STRAIGHT[skey] = str(exc)
+    return field, scene, checks
+
+
+def _straight(g: Any, field: Any, scene: Any, checks: dict, log: tuple, compile_graph: Callable) -> _Straight:
+    """The compiled program of the graph on the chart of ``scene`` (see :func:`_compile_straight`)."""
+    from stiefelsym.ir.straightline import Leaf, NotCompiled
+    from stiefelsym.backends.polyfield import PolyBackend, PolyMat, NotRational
+    be = backend(field)
+    if type(be) is not PolyBackend:
+        raise NotCompiled("a field without the polynomial backend")
+    R = be.ring
+    coords: dict[int, list] = {}
+
+    def entries(v: Any) -> tuple[list, bool]:
+        if isinstance(v, Mat):
+            s = v._nat()
+            if type(s) is not PolyMat or s.den:
+                raise NotCompiled("a matrix of the chart that is not polynomial")
+            return be._fix(s).a.tolist(), False
+        if isinstance(v, bool) or not isinstance(v, (int, _se_basic())):
+            raise NotCompiled(f"a number of the chart of type {type(v).__name__}")
+        try:
+            num, den = R.from_se(v)
+        except NotRational:
+            raise NotCompiled("a number of the chart that is not a rational function") from None
+        if den:
+            raise NotCompiled("a number of the chart that is not a polynomial")
+        return [[num]], True
+
+    def leaf(i: int, name: str) -> Leaf:
+        v = getattr(scene, name)
+        rows, scalar = entries(v)
+        if i >= 0:
+            coords[i] = rows
+        return Leaf([[_constant(x) for x in row] for row in rows], scalar)
+
+    from stiefelsym.ir.derivative import derivatives as _derived
+    h = _derived(g, scene_flows(scene))
+    if type(scene)._tangent_vector is not Scene._tangent_vector and "prim" in h.ops:
+        raise NotCompiled("a scene whose tangent vectors are its own")
+    prog = compile_graph(h, leaf)
+    inputs = [coords[i][a][b] for i, a, b in prog.inputs]
+    if any(x.context() is not R.ctx for x in inputs):
+        raise NotCompiled("coordinates of the chart in another context of the ring")
+    fn = prog.function(R.zero)
+    got = fn(inputs)
+    outputs = []
+    if list(prog.outputs) != list(checks):
+        raise NotCompiled("the program's checks are not the interpreter's")
+    for (name, shape), rows in zip(prog.outputs.items(), got):
+        want = checks[name]
+        if not isinstance(want, Mat):
+            raise NotCompiled("a check that is not a matrix")
+        s = want._nat()
+        if type(s) is not PolyMat or s.den or s.a.shape != shape:
+            raise NotCompiled("a check that is not a polynomial matrix")
+        s = be._fix(s)
+        if any(x != y for row, wrow in zip(rows, s.a.tolist()) for x, y in zip(row, wrow)):
+            raise NotCompiled("the program disagrees with the interpreter (a defect of the compiler)")
+        outputs.append((name, shape, want.tags))
+    return _Straight(fn, field, scene, inputs, outputs, log, R.ctx, prog.operations)
+
+
+def _constant(x: Any) -> int | None:
+    """An entry of the chart as the compiler's pattern: an integer constant, or None (an input)."""
+    if not x:
+        return 0
+    if x.is_constant():
+        c = x.leading_coefficient()
+        if c.q == 1:
+            return int(c.p)
+    return None
 
 
 def _symbolic_chart(key: tuple, build: Callable[[], tuple]) -> tuple:

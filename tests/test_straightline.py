@@ -1,0 +1,189 @@
+"""The exact method's straight-line programs (stiefelsym.ir.straightline): the same checks and
+verdicts as the interpreter, recomputed at every run, shared only by graphs with the same digest,
+and a corrupted claim still fails through them."""
+import pytest
+
+from stiefelsym import admissible, comm
+from stiefelsym.claims import Claim
+from stiefelsym.ir import compile_claim
+from stiefelsym.ir.derivative import derivatives, scene_flows
+from stiefelsym.ir.straightline import Leaf, NotCompiled, compile_graph
+from stiefelsym.methods import fixed_size as fs
+from stiefelsym.methods.fixed_size import run_exact
+from stiefelsym.backends.native import backend
+from stiefelsym.backends.polyfield import SymbolicField
+from stiefelsym.scene import REALIZATIONS, Scene
+
+
+def neumann_flow(s):
+    k = 1 + 2 * s.kappa
+    X, P, A = s.X, s.P, s.A
+    return {"X": P - k * (X @ P.T @ X),
+            "P": -(A @ X) - X @ P.T @ P + k * (P @ X.T @ P) + X @ X.T @ A @ X}
+
+
+def la1(s):
+    L = lambda t: t.lam * t.Phi + t.X @ t.X.T - t.lam * t.lam * t.A  # noqa: E731
+    M = s.Phi - s.lam * s.A
+    return {"LA1": s.d(L, neumann_flow(s)) - comm(M, L(s))}
+
+
+def la1_again(s):
+    """LA1 written a second time: another function, the same graph."""
+    M = s.Phi - s.lam * s.A
+    L = lambda t: t.lam * t.Phi + t.X @ t.X.T - t.lam * t.lam * t.A  # noqa: E731
+    return {"LA1": s.d(L, neumann_flow(s)) - comm(M, L(s))}
+
+
+def la1_sign_flipped(s):
+    """LA1 with the sign of XX^T in L flipped: false."""
+    L = lambda t: t.lam * t.Phi - t.X @ t.X.T - t.lam * t.lam * t.A  # noqa: E731
+    M = s.Phi - s.lam * s.A
+    return {"LA1": s.d(L, neumann_flow(s)) - comm(M, L(s))}
+
+
+def _claim(func, cid="la1-straight"):
+    return Claim(id=cid, paper=("LA1",), kind="lax", section="5", func=func, sizes=admissible(5),
+                 title="The big Lax equation along the printed Neumann flow.")
+
+
+@pytest.fixture
+def fresh(monkeypatch):
+    """No program compiled before the test, and none kept after it."""
+    monkeypatch.setattr(fs, "_STRAIGHT", {})
+    monkeypatch.setattr(fs, "_STRAIGHT_SEEN", {})
+    monkeypatch.setattr(fs, "STRAIGHT_AFTER", 1)
+    return fs
+
+
+def _programs(func, n, r):
+    cons = REALIZATIONS["standard"]
+    d = compile_claim(func, n, r, (cons.name, cons.build)).digest()
+    return {k: v for k, v in fs._STRAIGHT.items() if k[0] == d and k[3:5] == (n, r)}
+
+
+def _record(res):
+    return (res.verdict, res.message, res.certificate, res.residual, res.reductions,
+            [(o.name, o.status, o.detail) for o in res.checks])
+
+
+def _interpreted(monkeypatch, claim, n, r):
+    monkeypatch.setattr(fs, "STRAIGHT_AFTER", 10**9)
+    try:
+        return run_exact(claim, n, r, 0)
+    finally:
+        monkeypatch.setattr(fs, "STRAIGHT_AFTER", 1)
+
+
+@pytest.mark.parametrize("n,r", [(3, 1), (4, 2)])
+def test_la1_through_the_program_is_proved_and_the_sign_flip_fails(fresh, monkeypatch, n, r):
+    good, bad = _claim(la1), _claim(la1_sign_flipped, "la1-sign-flipped")
+    want_good, want_bad = _interpreted(monkeypatch, good, n, r), _interpreted(monkeypatch, bad, n, r)
+    assert want_good.verdict == "proved" and want_bad.verdict == "fails"
+    for _ in range(3):      # counted, compiled, run as a program
+        assert _record(run_exact(good, n, r, 0)) == _record(want_good)
+        got = run_exact(bad, n, r, 0)
+        assert got.verdict == "fails" and got.residual and _record(got) == _record(want_bad)
+    (p_good,), (p_bad,) = _programs(la1, n, r).values(), _programs(la1_sign_flipped, n, r).values()
+    assert type(p_good) is fs._Straight and type(p_bad) is fs._Straight and p_good is not p_bad
+    # the corrupted claim's verdict comes from its program's values at this run
+    calls = []
+    real = p_bad.fn
+    p_bad.fn = lambda xs: calls.append(1) or real(xs)
+    assert run_exact(bad, n, r, 0).verdict == "fails" and calls == [1]
+
+
+def test_a_program_is_shared_by_the_graph_digest_only(fresh, monkeypatch):
+    run_exact(_claim(la1), 3, 1, 0)
+    run_exact(_claim(la1), 3, 1, 0)
+    assert len(_programs(la1, 3, 1)) == 1
+    # another function with the same graph (another claim id): the same program, not compiled again
+    real = fs._compile_straight
+    monkeypatch.setattr(fs, "_compile_straight", lambda *a: pytest.fail("compiled again"))
+    assert run_exact(_claim(la1_again, "la1-again"), 3, 1, 0).verdict == "proved"
+    assert _programs(la1_again, 3, 1) == _programs(la1, 3, 1)
+    # a different graph does not find it: it is counted, then compiled on its own
+    monkeypatch.setattr(fs, "_compile_straight", real)
+    assert _programs(la1_sign_flipped, 3, 1) == {}
+    run_exact(_claim(la1_sign_flipped, "flip"), 3, 1, 0)
+    assert _programs(la1_sign_flipped, 3, 1) == {}
+
+
+#: the catalog's claims whose graphs the compiler handles, at small sizes
+CATALOG_SAMPLE = ["invariants-so-n", "euclidean-invariance", "manakov-square", "ym-charge"]
+
+
+@pytest.mark.parametrize("n,r", [(2, 1), (3, 1), (3, 2), (3, 3)])
+def test_catalog_sample_same_verdicts_as_the_interpreter(fresh, monkeypatch, catalog, n, r):
+    compiled = 0
+    for cid in CATALOG_SAMPLE:
+        c = catalog.get(cid)
+        if not c.sizes.admits(n, r):
+            continue
+        want = _interpreted(monkeypatch, c, n, r)
+        for _ in range(3):
+            assert _record(run_exact(c, n, r, 0)) == _record(want), cid
+        cons = REALIZATIONS[c.realization]
+        d = compile_claim(c.func, n, r, (cons.name, cons.build)).digest()
+        compiled += sum(type(v) is fs._Straight for k, v in fs._STRAIGHT.items() if k[0] == d)
+    assert compiled
+    assert not any(isinstance(v, str) and "disagrees" in v for v in fs._STRAIGHT.values())
+
+
+def _chart_leaves(n, r):
+    f = SymbolicField()
+    sc = Scene(n, r, f, chart="equivariant", realization="standard", right_reduction=True)
+    cons = REALIZATIONS["standard"]
+    g = compile_claim(la1, n, r, (cons.name, cons.build))
+    checks = fs.call_claim(la1, sc)
+    be = backend(f)
+    values = {}
+
+    def leaves(pattern):
+        def leaf(i, name):
+            v = getattr(sc, name)
+            if hasattr(v, "_nat"):
+                rows, scalar = be._fix(v._nat()).a.tolist(), False
+            else:
+                rows, scalar = [[be.ring.from_se(v)[0]]], True
+            values[i] = rows
+            return Leaf([[pattern(x) for x in row] for row in rows], scalar)
+        return leaf
+    return derivatives(g, scene_flows(sc)), checks, leaves, values, be
+
+
+def test_constants_folded_and_zeros_skipped_give_the_same_values():
+    h, checks, leaves, values, be = _chart_leaves(3, 1)
+    folded = compile_graph(h, leaves(fs._constant))
+    every = compile_graph(h, leaves(lambda x: None))      # every entry of the chart an input
+    assert folded.operations < every.operations
+    want = be._fix(checks["LA1"]._nat()).a.tolist()
+    for prog in (folded, every):
+        got = prog.function(be.ring.zero)([values[i][a][b] for i, a, b in prog.inputs])
+        assert [list(row) for row in got[0]] == want
+
+
+def test_a_program_that_disagrees_with_the_interpreter_is_not_used(fresh, monkeypatch):
+    from stiefelsym.ir import straightline
+
+    def wrong(h, leaf):
+        p = straightline.compile_graph(h, leaf)
+        p.source = p.source.replace("return (((", "return (((x0 + ")    # an input added to one entry
+        return p
+    f = SymbolicField()
+    sc = Scene(3, 1, f, chart="equivariant", realization="standard", right_reduction=True)
+    checks = fs.call_claim(la1, sc)
+    cons = REALIZATIONS["standard"]
+    g = compile_claim(la1, 3, 1, (cons.name, cons.build))
+    with pytest.raises(NotCompiled, match="disagrees"):
+        fs._straight(g, f, sc, checks, (), wrong)
+    assert fs._straight(g, f, sc, checks, (), straightline.compile_graph).operations > 0
+
+
+def test_ops_outside_the_compiler_are_refused():
+    def with_inverse(s):
+        return {"inv": s.A @ (s.A + s.lam * s.identity(s.n, "n")).inv() - s.X @ s.X.T}
+    cons = REALIZATIONS["standard"]
+    g = compile_claim(with_inverse, 3, 1, (cons.name, cons.build))
+    with pytest.raises(NotCompiled):
+        compile_graph(g, lambda i, name: Leaf([[None] * 3 for _ in range(3)]))
