@@ -45,8 +45,10 @@ class NotCompiled(Exception):
 
 
 class Leaf:
-    """The pattern of one leaf: ``rows`` of entries, each an ``int`` (a constant of the pattern)
-    or None (an input); ``scalar``: a number of the scene rather than a matrix."""
+    """The pattern of one leaf: ``rows`` of entries, each an ``int`` (a constant of the pattern),
+    None (an input of its own) or a pair (c, key): c (1 or -1) times the input named ``key``, one
+    input for every entry of every leaf with that key (the chart's Φ = PXᵀ − XPᵀ has the entries of
+    P, up to sign); ``scalar``: a number of the scene rather than a matrix."""
 
     __slots__ = ("rows", "scalar")
 
@@ -187,16 +189,16 @@ class Program:
     def __init__(self, source: str, inputs: list[tuple[int, int, int]], outputs: dict[str, tuple[int, int]],
                  operations: int) -> None:
         self.source, self.inputs, self.outputs, self.operations = source, inputs, outputs, operations
-        self._fn: Callable | None = None
+        self._fn: tuple[Any, Callable] | None = None
 
     def function(self, zero: Any) -> Callable:
         """The program as a Python function of the inputs (compiled once; ``zero``: the ring's 0, the
         value of an output entry that is a structural zero)."""
-        if self._fn is None:
+        if self._fn is None or self._fn[0] is not zero:
             scope: dict[str, Any] = {"ZERO": zero}
             exec(compile(self.source, "<straight-line program>", "exec"), scope)   # noqa: S102 - generated from the graph
-            self._fn = scope["program"]
-        return self._fn
+            self._fn = (zero, scope["program"])
+        return self._fn[1]
 
 
 def compile_graph(g: Graph, leaves: Callable[[int, str], Leaf]) -> Program:
@@ -217,6 +219,7 @@ def compile_graph(g: Graph, leaves: Callable[[int, str], Leaf]) -> Program:
         stack.extend(g.refs(i))
     vals: dict[int, Any] = {}
     inputs: list[tuple[int, int, int]] = []
+    named: dict[Any, str] = {}
     SCENE = object()
 
     def val(a: Any) -> Any:
@@ -242,9 +245,15 @@ def compile_graph(g: Graph, leaves: Callable[[int, str], Leaf]) -> Program:
             for r, row in enumerate(leaf.rows):
                 out = []
                 for c, x in enumerate(row):
-                    if x is None:
-                        inputs.append((i, r, c))
-                        out.append((1, f"x{len(inputs) - 1}"))
+                    if x is None or type(x) is tuple:
+                        sign, key = (1, object()) if x is None else x
+                        if sign not in (1, -1):
+                            raise NotCompiled("an input of the pattern with a coefficient other than 1 or -1")
+                        name = named.get(key)
+                        if name is None:
+                            inputs.append((i, r, c))
+                            name = named[key] = f"x{len(inputs) - 1}"
+                        out.append((sign, name))
                     else:
                         out.append(int(x))
                 rows.append(tuple(out))
@@ -330,14 +339,12 @@ def compile_graph(g: Graph, leaves: Callable[[int, str], Leaf]) -> Program:
             body.append(f"    {target} = {expr}")
             live.update(reads)
     body.reverse()
-    used_inputs = sorted(int(x[1:]) for x in live if x.startswith("x"))
     unpack = ", ".join(f"x{k}" for k in range(len(inputs)))
     ret = ", ".join("(" + ", ".join("(" + ", ".join(row) + ",)" for row in rows) + ",)" for rows in finals.values())
     src = "\n".join(["def program(X):",
                      f"    {unpack}, = X" if inputs else "    pass",
                      *body,
                      f"    return ({ret},)"]) + "\n"
-    del used_inputs
     shapes = {name: (len(m), len(m[0])) for name, m in out.items()}
     return Program(src, inputs, shapes, len(body))
 

@@ -764,11 +764,13 @@ class _Straight:
     evaluation of the graph on the chart made (the same at every run: a function of the graph and
     the chart), replayed into the scene's record at every run."""
 
-    __slots__ = ("fn", "field", "scene", "inputs", "outputs", "log", "ctx", "operations")
+    __slots__ = ("fn", "field", "scene", "inputs", "outputs", "log", "ctx", "operations", "back")
 
-    def __init__(self, fn, field, scene, inputs, outputs, log, ctx, operations) -> None:
+    def __init__(self, fn, field, scene, inputs, outputs, log, ctx, operations, back) -> None:
         self.fn, self.field, self.scene, self.inputs, self.outputs = fn, field, scene, inputs, outputs
         self.log, self.ctx, self.operations = log, ctx, operations
+        #: an output entry of the program's ring as a polynomial of the field's (None: the same ring)
+        self.back = back
 
     def run(self) -> dict[str, Any]:
         """The checks, computed by the program from the chart's coordinates."""
@@ -779,12 +781,12 @@ class _Straight:
         tracker.replay(self.log)
         values = self.fn(self.inputs)
         checks = {}
-        field, ctx, wrap = self.field, self.ctx, Mat._wrap_native
+        field, ctx, wrap, back = self.field, self.ctx, Mat._wrap_native, self.back
         for (name, (m, k), tags), rows in zip(self.outputs, values):
             a = np.empty((m, k), dtype=object)
             for i, row in enumerate(rows):
                 for j, x in enumerate(row):
-                    a[i, j] = x
+                    a[i, j] = x if back is None else back(x)
             checks[name] = wrap(PolyMat(a, (), ctx), field, tags, tracker)
         return checks
 
@@ -871,12 +873,30 @@ def _straight(g: Any, field: Any, scene: Any, checks: dict, log: tuple, compile_
             raise NotCompiled("a number of the chart that is not a polynomial")
         return [[num]], True
 
+    keys: dict[Any, Any] = {}
+
+    def pattern(x: Any) -> Any:
+        """An entry of the chart as the compiler's pattern: an integer constant, or (sign, key) with one
+        key for the entries equal up to sign."""
+        c = _constant(x)
+        if c is not None:
+            return c
+        text = str(x)       # the ring's canonical text of the polynomial (polynomials do not hash)
+        k = keys.get(text)
+        if k is not None:
+            return (1, k)
+        k = keys.get(str(-x))
+        if k is not None:
+            return (-1, k)
+        k = keys[text] = len(keys)
+        return (1, k)
+
     def leaf(i: int, name: str) -> Leaf:
         v = getattr(scene, name)
         rows, scalar = entries(v)
         if i >= 0:
             coords[i] = rows
-        return Leaf([[_constant(x) for x in row] for row in rows], scalar)
+        return Leaf([[pattern(x) for x in row] for row in rows], scalar)
 
     from stiefelsym.ir.derivative import derivatives as _derived
     h = _derived(g, scene_flows(scene))
@@ -886,8 +906,19 @@ def _straight(g: Any, field: Any, scene: Any, checks: dict, log: tuple, compile_
     inputs = [coords[i][a][b] for i, a, b in prog.inputs]
     if any(x.context() is not R.ctx for x in inputs):
         raise NotCompiled("coordinates of the chart in another context of the ring")
-    fn = prog.function(R.zero)
-    got = fn(inputs)
+    back = None
+    if all(c.q == 1 for x in inputs for c in x.to_dict().values()):
+        # a chart of integer polynomials: the program runs over Z[x] (flint's integer polynomials
+        # skip the rational content of every operation) and its outputs come back to Q[x] exactly
+        zctx, zero = _integer_ring(R.ctx)
+        inputs = [zctx.from_dict({e: int(c.p) for e, c in x.to_dict().items()}) for x in inputs]
+        fn = prog.function(zero)
+        qzero, from_dict = R.zero, R.ctx.from_dict
+        back = lambda x: from_dict(x.to_dict()) if x else qzero  # noqa: E731
+        got = [[[back(x) for x in row] for row in m] for m in fn(inputs)]
+    else:
+        fn = prog.function(R.zero)
+        got = fn(inputs)
     outputs = []
     if list(prog.outputs) != list(checks):
         raise NotCompiled("the program's checks are not the interpreter's")
@@ -902,7 +933,13 @@ def _straight(g: Any, field: Any, scene: Any, checks: dict, log: tuple, compile_
         if any(x != y for row, wrow in zip(rows, s.a.tolist()) for x, y in zip(row, wrow)):
             raise NotCompiled("the program disagrees with the interpreter (a defect of the compiler)")
         outputs.append((name, shape, want.tags))
-    return _Straight(fn, field, scene, inputs, outputs, log, R.ctx, prog.operations)
+    return _Straight(fn, field, scene, inputs, outputs, log, R.ctx, prog.operations, back)
+
+
+def _integer_ring(ctx: Any) -> tuple:
+    """flint's integer polynomials in the variables of a context of rational ones, and their 0."""
+    zctx = flint.fmpz_mpoly_ctx.get(tuple(str(x) for x in ctx.gens()), "degrevlex")
+    return zctx, zctx.from_dict({})
 
 
 def _constant(x: Any) -> int | None:
