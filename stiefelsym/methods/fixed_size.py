@@ -209,15 +209,16 @@ def call_claim(func: Callable, scene: Any, family: Any = None) -> dict[str, Any]
     return checks
 
 
-def draw_key(claim: Claim, n: int, r: int, seed: int, func: Callable | None = None) -> str:
+def draw_key(claim: Claim, n: int, r: int, seed: int, func: Callable | None = None, graph: Any = None) -> str:
     """The source of every random draw of a verification of ``func`` (the claim, or a variant of it) at
     (n, r): the seed, the digest of the graph the run evaluates, the claim's id and the size.  The
     points, primes and probe points are a function of what the claim states (Fiat-Shamir): a claim
     cannot be written to vanish at its own points, because every constant it would need to compute
     them enters the digest they are drawn from.  The same commit, claim and seed give the same draws."""
-    cons = REALIZATIONS[claim.realization or "standard"]
-    g = compile_claim(func or claim.func, n, r, (cons.name, cons.build))
-    return f"{seed}|{g.digest()}|{claim.id}|{n}|{r}"
+    if graph is None:
+        cons = REALIZATIONS[claim.realization or "standard"]
+        graph = compile_claim(func or claim.func, n, r, (cons.name, cons.build))
+    return f"{seed}|{graph.digest()}|{claim.id}|{n}|{r}"
 
 
 @dataclass
@@ -582,15 +583,17 @@ REDUCED_CAYLEY_REDUCTION = (
     "differential at 0 onto the tangent space of the irreducible V(n, r): dense in T*V(n, r)")
 
 
-def _reads_coordinates(claim: Claim, n: int, r: int, func: Callable) -> list[str]:
+def _reads_coordinates(claim: Claim, n: int, r: int, func: Callable, graph: Any = None) -> list[str]:
     """What the claim's graph visibly reads of coordinates: an entry or a block of any matrix, a matrix
     of given entries, an engine step indexed by a basis (the constraints, the coordinates of a phase
     space).  A chart that also reduces by O(r) acting on the right (A11, or B11 in the metric
     realization, diagonal) is used only for a graph that reads none: O(r) mixes the coordinates of
     R^r and of Sym(r), and what a graph reads through an engine step or an opaque space is not
     always seen by the scene's record while evaluating."""
-    cons = REALIZATIONS[claim.realization]
-    g = compile_claim(func, n, r, (cons.name, cons.build))
+    if graph is None:
+        cons = REALIZATIONS[claim.realization]
+        graph = compile_claim(func, n, r, (cons.name, cons.build))
+    g = graph
     out = g.cache.get("reads coordinates")      # a function of the graph: computed once per graph
     if out is None:
         out = [w for w in coordinate_needs(g) if not w.startswith(("a rank", "a count"))]
@@ -607,14 +610,16 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
     t0 = time.perf_counter()
     try:
         with time_limit(time_budget):
-            key = draw_key(claim, n, r, seed, func)
+            cons = REALIZATIONS[claim.realization or "standard"]
+            graph = compile_claim(func, n, r, (cons.name, cons.build))
+            key = draw_key(claim, n, r, seed, func, graph)
             randomized = _RandomizedRank()
             charts: list[tuple[Scene, str]] = []
             # the standard realization's chart reduces by O(r) acting on the right as well (A11
             # diagonal) when the claim's graph reads no coordinates; otherwise by O(n) alone.  The
             # metric realization's chart always reduces by O(r): a graph that reads coordinates
             # goes to the Cayley chart (below)
-            visible = _reads_coordinates(claim, n, r, func)
+            visible = _reads_coordinates(claim, n, r, func, graph)
             for right in ((True, False) if claim.realization == "standard" and not visible else (False,)):
                 if claim.realization == "metric" and visible:
                     scene, coords, missing = None, list(visible), True
@@ -626,7 +631,7 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                 missing = False   # the equivariant chart cannot provide an object (a_i, a second point)
                 try:
                     field, scene, checks = _chart_checks(
-                        (claim.id, claim.realization, "exact", n, r, "equivariant", right), build, func)
+                        (claim.id, claim.realization, "exact", n, r, "equivariant", right), build, func, graph)
                     coords = list(scene.tracker.used)
                 except CoordinateAccess as exc:
                     field, scene = exc.chart
@@ -675,7 +680,7 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                         f = SymbolicField()
                         return f, Scene(n, r, f, chart="cayley", component=comp, realization=claim.realization)
                     f2, sc, ch = _chart_checks((claim.id, claim.realization, "exact", n, r, "cayley", comp),
-                                               build_cayley, func)
+                                               build_cayley, func, graph)
                     evaluations.append(_evaluate(ch, f2, lambda R, f2=f2: _exact_rank(
                         R, f2, randomized, lambda: degree_bound(claim, n, r, func).numerator, key)))
                     desc = REDUCED_CAYLEY_REDUCTION if r < n else CAYLEY_REDUCTION.format(
@@ -755,6 +760,8 @@ _STRAIGHT: dict[tuple, Any] = {}
 #: evaluated once (a mutant of the mutation analysis) is never compiled
 _STRAIGHT_SEEN: dict[tuple, int] = {}
 STRAIGHT_AFTER = 1
+#: at most this many graphs and charts are kept (compiled or not; the oldest goes first)
+STRAIGHT_KEEP = 256
 
 
 class _Straight:
@@ -791,7 +798,7 @@ class _Straight:
         return checks
 
 
-def _chart_checks(key: tuple, build: Callable[[], tuple], func: Callable) -> tuple:
+def _chart_checks(key: tuple, build: Callable[[], tuple], func: Callable, graph: Any = None) -> tuple:
     """(field, scene, checks) of the claim's graph on a chart of the exact method (``key``: the claim,
     realization, method, size, chart and its variant; ``build``: the chart's field and scene).
 
@@ -801,12 +808,14 @@ def _chart_checks(key: tuple, build: Callable[[], tuple], func: Callable) -> tup
     through the graph's digest only; the program recomputes every entry of every check at every
     run.  A graph the compiler does not handle, a chart whose coordinates are not polynomials, and
     the lent charts of the mutation analysis are evaluated by the interpreter.  A chart that cannot
-    provide an object the claim reads raises its CoordinateAccess, with the chart (``chart``: the field
+    provide an object the claim reads raises its CoordinateAccess (``graph``: the claim's graph at the size,
+    when the caller has it), with the chart (``chart``: the field
     and the scene)."""
     if _LOAN is None:
-        n, r = key[3], key[4]
-        cons = REALIZATIONS[key[1] or "standard"]
-        g = compile_claim(func, n, r, (cons.name, cons.build))
+        g = graph
+        if g is None:
+            cons = REALIZATIONS[key[1] or "standard"]
+            g = compile_claim(func, key[3], key[4], (cons.name, cons.build))
         skey = (g.digest(), *key[1:])
         hit = _STRAIGHT.get(skey)
         if type(hit) is _Straight:
@@ -815,7 +824,7 @@ def _chart_checks(key: tuple, build: Callable[[], tuple], func: Callable) -> tup
             seen = _STRAIGHT_SEEN.get(skey, 0)
             if seen >= STRAIGHT_AFTER:
                 return _compile_straight(skey, g, build, func)
-            _STRAIGHT_SEEN[skey] = seen + 1
+            _keep(_STRAIGHT_SEEN, skey, seen + 1)
     field, scene = _symbolic_chart(key, build)
     try:
         return field, scene, call_claim(func, scene)
@@ -835,16 +844,23 @@ def _compile_straight(skey: tuple, g: Any, build: Callable[[], tuple], func: Cal
     try:
         checks = call_claim(func, scene)
     except CoordinateAccess as exc:
-        _STRAIGHT[skey] = "the chart cannot provide an object the claim reads"
+        _keep(_STRAIGHT, skey, "the chart cannot provide an object the claim reads")
         exc.chart = (field, scene)
         raise
     finally:
         log, tracker._log = tuple(tracker._log or ()), None
     try:
-        _STRAIGHT[skey] = _straight(g, field, scene, checks, log, compile_graph)
+        _keep(_STRAIGHT, skey, _straight(g, field, scene, checks, log, compile_graph))
     except NotCompiled as exc:
-        _STRAIGHT[skey] = str(exc)
+        _keep(_STRAIGHT, skey, str(exc))
     return field, scene, checks
+
+
+def _keep(memo: dict, key: tuple, value: Any) -> None:
+    """memo[key] = value, the oldest entry dropped beyond STRAIGHT_KEEP entries."""
+    memo[key] = value
+    if len(memo) > STRAIGHT_KEEP:
+        del memo[next(iter(memo))]
 
 
 def _straight(g: Any, field: Any, scene: Any, checks: dict, log: tuple, compile_graph: Callable) -> _Straight:
