@@ -771,13 +771,14 @@ class _Straight:
     evaluation of the graph on the chart made (the same at every run: a function of the graph and
     the chart), replayed into the scene's record at every run."""
 
-    __slots__ = ("fn", "field", "scene", "inputs", "outputs", "log", "ctx", "operations", "back")
+    __slots__ = ("fn", "field", "scene", "inputs", "outputs", "log", "ctx", "operations", "back", "zero")
 
     def __init__(self, fn, field, scene, inputs, outputs, log, ctx, operations, back) -> None:
         self.fn, self.field, self.scene, self.inputs, self.outputs = fn, field, scene, inputs, outputs
         self.log, self.ctx, self.operations = log, ctx, operations
         #: an output entry of the program's ring as a polynomial of the field's (None: the same ring)
         self.back = back
+        self.zero = backend(field).ring.zero
 
     def run(self) -> dict[str, Any]:
         """The checks, computed by the program from the chart's coordinates."""
@@ -788,12 +789,12 @@ class _Straight:
         tracker.replay(self.log)
         values = self.fn(self.inputs)
         checks = {}
-        field, ctx, wrap, back = self.field, self.ctx, Mat._wrap_native, self.back
+        field, ctx, wrap, back, zero = self.field, self.ctx, Mat._wrap_native, self.back, self.zero
         for (name, (m, k), tags), rows in zip(self.outputs, values):
             a = np.empty((m, k), dtype=object)
             for i, row in enumerate(rows):
                 for j, x in enumerate(row):
-                    a[i, j] = x if back is None else back(x)
+                    a[i, j] = x if back is None else back(x) if x else zero
             checks[name] = wrap(PolyMat(a, (), ctx), field, tags, tracker)
         return checks
 
