@@ -113,7 +113,7 @@ def test_a_program_is_shared_by_the_graph_digest_only(fresh, monkeypatch):
 CATALOG_SAMPLE = ["invariants-so-n", "euclidean-invariance", "manakov-square", "ym-charge"]
 
 
-@pytest.mark.parametrize("n,r", [(2, 1), (3, 1), (3, 2), (3, 3)])
+@pytest.mark.parametrize("n,r", [(2, 1), (3, 1), (3, 2), (3, 3), (4, 2)])
 def test_catalog_sample_same_verdicts_as_the_interpreter(fresh, monkeypatch, catalog, n, r):
     compiled = 0
     for cid in CATALOG_SAMPLE:
