@@ -9,13 +9,15 @@ same computation out entry by entry, once per graph and *pattern of its leaves*,
 one Python function:
 
 * a leaf (an attribute of the scene) is given by the pattern of its entries: an integer constant
-  (0 and 1 of the chart's X = (E_1..E_r), say) or an input; the inputs are the program's
-  arguments, passed in at every run;
+  (0 and 1 of the chart's X = (E_1..E_r), say) or an input, possibly the same input as another
+  entry's up to sign (Φ = PXᵀ − XPᵀ on the chart); the inputs are the program's arguments,
+  passed in at every run;
 * integer constants are folded, structural zeros skipped (a product with a zero entry is not
   written, a sum with one is its other term), a product by 1 is its other factor, and integer
   coefficients (signs, the 2 of 1 + 2κ) ride along with an entry until they meet another
   entry, so a negation or a difference of two negated terms costs no operation;
 * a 1 x 1 matrix is one entry, and a transpose is a new view of the same entries;
+* the same operation on the same values is written once (a sum or a product in either order);
 * only the entries the outputs read are computed (dead code is dropped).
 
 What is written is a function of the graph and the leaf pattern only: no value of an input is
