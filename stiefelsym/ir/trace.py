@@ -1132,6 +1132,14 @@ class Trace:
                                    "or some element (op(inv(y)) = y" + ("" if right else " and inv(op(x)) = x")
                                    + " would prove op " + ("onto" if right else "invertible")
                                    + " only where it does not): only constant divisors")
+        # op (and inv) are one map each: the code called twice must trace to the same graph of its
+        # argument both times (an op whose state or whose test of its argument made it the identity on
+        # inv(y) and X Xᵀ x on x would have op(inv(y)) = y "prove" a projection onto)
+        for first, a1, second, a2, what in ((op_inv_y, inv_y, op_x, xs, "op"), (inv_y, ys, inv_op_x, op_x, "inv")):
+            if second and not self._same_map(first, a1, second, a2):
+                return self.refuse(f"{name}: {what} traces to another graph on its second argument than on its "
+                                   "first (its state, or a test of its argument, changed it between two calls): "
+                                   "a statement about one map")
         residuals = [a - b for a, b in zip(op_inv_y, ys)] + [a - b for a, b in zip(inv_op_x, xs)]
         residuals += [m for m in (member(x, d) for x, d in zip(inv_y + op_x, on + to)) if m is not None]
         # the parts as tuples of references (no container node: the statement's node is the first node
@@ -1141,6 +1149,52 @@ class Trace:
             return self.g.add("right_inverse", parts + (on, to, v.meaning))
         parts = tuple(tuple(x._r for x in p) for p in (ys, inv_y, op_inv_y, xs, op_x, inv_op_x, residuals))
         return self.g.add("inverse", parts + (on, v.meaning))
+
+    def _same_map(self, outs1: tuple, args1: tuple, outs2: tuple, args2: tuple) -> bool:
+        """Whether the nodes ``outs1`` are the same graph of the nodes ``args1`` as ``outs2`` of ``args2``:
+        equal after each argument node is replaced by its position (nodes that read no argument are the
+        same nodes: the graph shares equal nodes)."""
+        g = self.g
+        if len(outs1) != len(outs2) or len(args1) != len(args2):
+            return False
+
+        ids: dict[tuple, int] = {}          # hash-consed forms, shared by both sides
+
+        def sub(a: Any, below: dict) -> Any:
+            if type(a) is Ref:
+                return below[a.i]
+            if type(a) is tuple:
+                return tuple(sub(b, below) for b in a)
+            return (type(a).__name__, a) if type(a) in (int, Fraction, str, bool) else a
+
+        def shape(outs: tuple, args: tuple) -> tuple:
+            memo: dict[int, tuple] = {x._r.i: ("arg", k) for k, x in enumerate(args)}
+            fns: dict[int, int] = {}
+            stack = [x._r.i for x in outs]
+            while stack:                    # post-order, iteratively (graphs are deep)
+                i = stack[-1]
+                if i in memo:
+                    stack.pop()
+                    continue
+                todo = [j for j in g.refs(i) if j not in memo]
+                if todo:
+                    stack.extend(todo)
+                    continue
+                stack.pop()
+                below = {j: memo[j] for j in g.refs(i)}
+                op, a = g.ops[i], g.args[i]
+                if op in ("fn", "param") or (op == "scene" and a[0] != 0):
+                    # a function traced in the call: numbered by the trace, so by order of appearance here
+                    key = (op, ("fn", fns.setdefault(a[0], len(fns))), sub(a[1:], below))
+                    memo[i] = ("form", ids.setdefault(key, len(ids)))
+                elif all(v[0] == "node" for v in below.values()):
+                    memo[i] = ("node", i)   # reads no argument: the node itself
+                else:
+                    key = (op, sub(a, below))
+                    memo[i] = ("form", ids.setdefault(key, len(ids)))
+            return tuple(memo[x._r.i] for x in outs)
+
+        return shape(outs1, args1) == shape(outs2, args2)
 
     def _divisor(self, outs: tuple, args: tuple) -> str:
         """What a node of ``outs`` (down to the nodes ``args``) divides by when it is not a constant: a

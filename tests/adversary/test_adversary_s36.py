@@ -1,0 +1,24 @@
+"""Sixth round: the one-sided inverse and the Inverse statement's maps called more than once, the fresh
+elements and tensors, the double point's base, the certificates' `about` and scope, the sandbox and the
+mutation of graphs (tests/adversary/README.md, the last table).  As before: every run is the CLI in a fresh
+process, each test asserts the CORRECT outcome, and a route open today is a strict xfail."""
+
+from adversary_cli import PASSING
+from test_adversary_s34b import by_claim, fixed, run_all
+
+STATEFUL = ("adv-s36-ri-stateful-projection", "adv-s36-ri-argument-test", "adv-s36-inv-stateful-pair")
+
+
+def test_a_map_that_changes_between_its_calls_is_refused():
+    """op of a RightInverse is called on inv(y) and then on a generic x (and inv of an Inverse on y and then on
+    op(x)): an op that is the identity on its first call (a counter) or on the value its inverse returned (a
+    test of its argument) and x ↦ X Xᵀ x otherwise was "onto R^{n×r}": proved (exact), checked (modular,
+    rational), numeric (float, ball) at (3,2), and free proved it for every n, r; a pair of maps that are two
+    maps each passed as an Inverse.  Closed: the tracer compares the graph of op (and inv) on its two arguments
+    (functions numbered by the trace renamed in order) and refuses a map that traces to two graphs: error at
+    every fixed size, undecided by free; a map that makes a new function at each call is still proved."""
+    got = by_claim(run_all("s36_stateful_maps.py"))
+    for c in STATEFUL:
+        assert fixed(got[c]) == {"error"} and got[c]["free"] == "undecided", (c, got[c])
+    true = got["adv-s36-ri-fresh-functions"]
+    assert fixed(true) <= set(PASSING) and true["free"] == "proved", true
