@@ -42,7 +42,7 @@ from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any, Callable, Sequence
 
-from stiefelsym.ir.trace import primitive
+from stiefelsym.ir.trace import primitive, same_step_function
 from stiefelsym.backends.matrix import Mat, comm
 
 Scalar = Any
@@ -617,8 +617,15 @@ def checked_tensor(T: PoissonTensor) -> PoissonTensor:
     function of its arguments x, a, b, traced at each evaluation with parameters of its own, so a tensor
     that keeps a point it was evaluated at (state kept between evaluations) keeps a parameter of another
     function, never the point of a check (the graph is then not evaluable: an error, never a verdict)."""
+    seen: list = []
+
     def form(s: Any, x: Mat, a: Mat, b: Mat) -> Scalar:
-        return tensor_value(s, lambda t, v: T(t, v[0], v[1], v[2]), (x, a, b))
+        value = tensor_value(s, lambda t, v: T(t, v[0], v[1], v[2]), (x, a, b))
+        # every evaluation is of one form: a form with state (or a test of its arguments) that is another
+        # form on some evaluations (Λ for the antisymmetry and degree, Lie–Poisson for the Jacobi identity)
+        # would have each check pass for a tensor that is not one tensor
+        same_step_function(value, seen, f"the tensor {T.name}")
+        return value
     return PoissonTensor(T.space, form, T.degree, T.name)
 
 

@@ -1154,10 +1154,16 @@ class Trace:
         """Whether the nodes ``outs1`` are the same graph of the nodes ``args1`` as ``outs2`` of ``args2``:
         equal after each argument node is replaced by its position (nodes that read no argument are the
         same nodes: the graph shares equal nodes)."""
-        g = self.g
         if len(outs1) != len(outs2) or len(args1) != len(args2):
             return False
+        return self.same_graph([x._r.i for x in outs1], [x._r.i for x in args1],
+                               [x._r.i for x in outs2], [x._r.i for x in args2])
 
+    def same_graph(self, outs1: list, args1: list, outs2: list, args2: list) -> bool:
+        """Whether the nodes ``outs1`` (indices) are the same graph of the nodes ``args1`` as ``outs2`` of
+        ``args2``, the functions the trace numbers (their scenes, parameters and ``fn`` nodes) renamed in
+        order of appearance on each side, a parameter's shape-giving argument left out."""
+        g = self.g
         ids: dict[tuple, int] = {}          # hash-consed forms, shared by both sides
 
         def sub(a: Any, below: dict) -> Any:
@@ -1167,10 +1173,10 @@ class Trace:
                 return tuple(sub(b, below) for b in a)
             return (type(a).__name__, a) if type(a) in (int, Fraction, str, bool) else a
 
-        def shape(outs: tuple, args: tuple) -> tuple:
-            memo: dict[int, tuple] = {x._r.i: ("arg", k) for k, x in enumerate(args)}
+        def shape(outs: list, args: list) -> tuple:
+            memo: dict[int, tuple] = {i: ("arg", k) for k, i in enumerate(args)}
             fns: dict[int, int] = {}
-            stack = [x._r.i for x in outs]
+            stack = list(outs)
             while stack:                    # post-order, iteratively (graphs are deep)
                 i = stack[-1]
                 if i in memo:
@@ -1185,16 +1191,23 @@ class Trace:
                 op, a = g.ops[i], g.args[i]
                 if op in ("fn", "param") or (op == "scene" and a[0] != 0):
                     # a function traced in the call: numbered by the trace, so by order of appearance here
-                    key = (op, ("fn", fns.setdefault(a[0], len(fns))), sub(a[1:], below))
+                    rest = a[1:2] if op == "param" else a[1:]
+                    key = (op, ("fn", fns.setdefault(a[0], len(fns))), sub(rest, below))
                     memo[i] = ("form", ids.setdefault(key, len(ids)))
                 elif all(v[0] == "node" for v in below.values()):
                     memo[i] = ("node", i)   # reads no argument: the node itself
                 else:
                     key = (op, sub(a, below))
                     memo[i] = ("form", ids.setdefault(key, len(ids)))
-            return tuple(memo[x._r.i] for x in outs)
+            return tuple(memo[i] for i in outs)
 
         return shape(outs1, args1) == shape(outs2, args2)
+
+    def step_function(self, value: Any) -> int | None:
+        """The ``fn`` node (index) of the function argument of the engine step that made ``value``."""
+        if type(value) is not Tracer or value._t is not self or self.g.ops[value._r.i] != "prim":
+            return None
+        return next((j for j in self.g.refs(value._r.i) if self.g.ops[j] == "fn"), None)
 
     def _divisor(self, outs: tuple, args: tuple) -> str:
         """What a node of ``outs`` (down to the nodes ``args``) divides by when it is not a constant: a
@@ -1289,6 +1302,24 @@ class Trace:
         if type(returns) is int:
             return tuple(self.new("item", (ref, i), ANY) for i in range(returns))
         return Tracer(self, ref, ANY)
+
+
+def same_step_function(value: Any, seen: list, what: str) -> None:
+    """In a trace: the function of the engine step that made ``value`` must be the same graph (up to the
+    trace's numbering of functions) as that of the first step recorded in ``seen`` (one object's
+    evaluations: a form with state, or with a test of its arguments, that is another form on some of them is
+    refused); outside a trace, nothing."""
+    if not _ACTIVE:
+        return
+    t = _ACTIVE[-1]
+    k = t.step_function(value)
+    if k is None:
+        return
+    if not seen:
+        seen.append(k)
+    elif not t.same_graph([seen[0]], [], [k], []):
+        t.refuse(f"{what} traces to another graph at one of its evaluations than at its first (its state, or a "
+                 "test of its arguments, changed it): a statement about one function")
 
 
 #: the size expressions k·d made so far (see Trace.size)
