@@ -28,8 +28,8 @@ def test_a_tensor_that_is_another_form_on_some_evaluations_is_refused():
     """poisson_checks evaluates the tensor (one engine step per evaluation, its form traced as a function of
     (x, a, b)) for the antisymmetry, the degree and the Jacobi identity; a form that counts its evaluations,
     (1 + tr(xC))⟨x, [a, b]⟩ on the first six and Lie–Poisson afterwards, passed all three at (4,2): proved
-    (exact), checked (modular, rational), numeric (float, ball), while the same tensor with one form fails the
-    Jacobi identity.  Closed: checked_tensor compares the graph of each evaluation's form with the first's
+    (exact), checked (modular, rational), numeric (float, ball), and free proved it for every n, r, while the
+    same tensor with one form fails the Jacobi identity.  Closed: checked_tensor compares the graph of each evaluation's form with the first's
     (trace.same_step_function) and refuses another: error at every fixed size; free is not a pass."""
     got = by_claim(run_all("s36_stateful_tensor.py", size="4,2", methods=("modular", "rational", "float", "ball")))
     form, control = got["adv-s36-poisson-counting-form"], got["adv-s36-poisson-counting-control"]
