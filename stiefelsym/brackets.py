@@ -347,8 +347,10 @@ class PoissonTensor:
     def __add__(self, o: "PoissonTensor") -> "PoissonTensor":
         if o.space != self.space:
             raise TypeError(f"a sum of tensors on {self.space.name} and {o.space.name}")
-        return PoissonTensor(self.space, lambda s, x, a, b: self.form(s, x, a, b) + o.form(s, x, a, b),
-                             max(self.degree, o.degree), f"{self.name} + {o.name}")
+        out = PoissonTensor(self.space, lambda s, x, a, b: self.form(s, x, a, b) + o.form(s, x, a, b),
+                            max(self.degree, o.degree), f"{self.name} + {o.name}")
+        object.__setattr__(out, "_parts", (self, o))     # held to the parts' own evaluations (checked_tensor)
+        return out
 
     def scaled(self, c: Callable[[Any], Scalar]) -> "PoissonTensor":
         """c(s)·Λ for a scalar of the scene (a pencil λ1Λ1 + λ2Λ2 is ``T1.scaled(l1) + T2.scaled(l2)``)."""
@@ -617,14 +619,13 @@ def checked_tensor(T: PoissonTensor) -> PoissonTensor:
     function of its arguments x, a, b, traced at each evaluation with parameters of its own, so a tensor
     that keeps a point it was evaluated at (state kept between evaluations) keeps a parameter of another
     function, never the point of a check (the graph is then not evaluable: an error, never a verdict)."""
-    seen: list = []
-
     def form(s: Any, x: Mat, a: Mat, b: Mat) -> Scalar:
         value = tensor_value(s, lambda t, v: T(t, v[0], v[1], v[2]), (x, a, b))
-        # every evaluation is of one form: a form with state (or a test of its arguments) that is another
-        # form on some evaluations (Λ for the antisymmetry and degree, Lie–Poisson for the Jacobi identity)
-        # would have each check pass for a tensor that is not one tensor
-        same_step_function(value, seen, f"the tensor {T.name}")
+        # every evaluation of the tensor object in the claim is of one form: a form with state (or a test of
+        # its arguments) that is another form on some evaluations (Λ for the antisymmetry and degree,
+        # Lie–Poisson for the Jacobi identity; Λ in its poisson_checks, another in a compatibility check of
+        # T + T2, whose form is the sum of the parts' forms) would have each check pass for no one tensor
+        same_step_function(value, T, f"the tensor {T.name}", lambda o: getattr(o, "_parts", ()))
         return value
     return PoissonTensor(T.space, form, T.degree, T.name)
 

@@ -855,6 +855,9 @@ class Trace:
         self._like: dict = {}
         self.constraints = constraints
         self._functions: dict[int, tuple[Any, Ref, Any, Any]] = {}
+        #: id(object) -> (object, node): the graph of the first evaluation of each object whose evaluations
+        #: must be one function (see :func:`same_step_function`)
+        self._one_function: dict[int, tuple[Any, int]] = {}
         self._elements = False     # the generic elements of an Inverse statement are being made
         self._fresh = 0            # the fresh elements made so far (s.fresh)
         self._open = [0]           # the functions being traced (0: the claim), innermost last
@@ -1304,22 +1307,37 @@ class Trace:
         return Tracer(self, ref, ANY)
 
 
-def same_step_function(value: Any, seen: list, what: str) -> None:
-    """In a trace: the function of the engine step that made ``value`` must be the same graph (up to the
-    trace's numbering of functions) as that of the first step recorded in ``seen`` (one object's
-    evaluations: a form with state, or with a test of its arguments, that is another form on some of them is
-    refused); outside a trace, nothing."""
+def same_step_function(value: Any, obj: Any, what: str, parts: Callable[[Any], tuple] | None = None) -> None:
+    """In a trace: the function of the engine step that made ``value`` (an evaluation of ``obj``, such as a
+    Poisson tensor) must be the same graph (up to the trace's numbering of functions) at every evaluation
+    of the same object in the claim, as at its first: an object whose state (or a test of its arguments)
+    makes it another function at some evaluations is refused.  ``parts(obj)``: the objects a sum is made
+    of (its function's value is the sum of theirs), each held to its own evaluations elsewhere in the
+    claim; outside a trace, nothing."""
     if not _ACTIVE:
         return
     t = _ACTIVE[-1]
     k = t.step_function(value)
     if k is None:
         return
-    if not seen:
-        seen.append(k)
-    elif not t.same_graph([seen[0]], [], [k], []):
-        t.refuse(f"{what} traces to another graph at one of its evaluations than at its first (its state, or a "
-                 "test of its arguments, changed it): a statement about one function")
+    body = t.g.args[k][2]
+    if type(body) is not Ref:
+        return
+    g, forms = t.g, t._one_function
+
+    def hold(o: Any, node: int) -> None:
+        hit = forms.get(id(o))
+        if hit is None or hit[0] is not o:
+            forms[id(o)] = (o, node)
+        elif not t.same_graph([hit[1]], [], [node], []):
+            t.refuse(f"{what} traces to another graph at one of its evaluations than at its first (its state, or "
+                     "a test of its arguments, changed it): a statement about one function")
+        sub = parts(o) if parts is not None else ()
+        if sub and g.ops[node] == "add" and len(g.args[node]) == 2 and all(type(x) is Ref for x in g.args[node]):
+            hold(sub[0], g.args[node][0].i)
+            hold(sub[1], g.args[node][1].i)
+
+    hold(obj, body.i)
 
 
 #: the size expressions k·d made so far (see Trace.size)
