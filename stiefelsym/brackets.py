@@ -349,13 +349,15 @@ class PoissonTensor:
             raise TypeError(f"a sum of tensors on {self.space.name} and {o.space.name}")
         out = PoissonTensor(self.space, lambda s, x, a, b: self.form(s, x, a, b) + o.form(s, x, a, b),
                             max(self.degree, o.degree), f"{self.name} + {o.name}")
-        object.__setattr__(out, "_parts", (self, o))     # held to the parts' own evaluations (checked_tensor)
+        object.__setattr__(out, "_parts", ("add", (self, o)))    # held to the parts' own evaluations (checked_tensor)
         return out
 
     def scaled(self, c: Callable[[Any], Scalar]) -> "PoissonTensor":
         """c(s)·Λ for a scalar of the scene (a pencil λ1Λ1 + λ2Λ2 is ``T1.scaled(l1) + T2.scaled(l2)``)."""
-        return PoissonTensor(self.space, lambda s, x, a, b: self.form(s, x, a, b) * c(s), self.degree,
-                             f"c·{self.name}")
+        out = PoissonTensor(self.space, lambda s, x, a, b: self.form(s, x, a, b) * c(s), self.degree,
+                            f"c·{self.name}")
+        object.__setattr__(out, "_parts", ("mul", (self,)))      # held to its part's own evaluations
+        return out
 
 
 def lie_poisson(space: Space, sign: int = 1) -> PoissonTensor:
@@ -625,7 +627,7 @@ def checked_tensor(T: PoissonTensor) -> PoissonTensor:
         # its arguments) that is another form on some evaluations (Λ for the antisymmetry and degree,
         # Lie–Poisson for the Jacobi identity; Λ in its poisson_checks, another in a compatibility check of
         # T + T2, whose form is the sum of the parts' forms) would have each check pass for no one tensor
-        same_step_function(value, T, f"the tensor {T.name}", lambda o: getattr(o, "_parts", ()))
+        same_step_function(value, T, f"the tensor {T.name}", lambda o: getattr(o, "_parts", ("", ())))
         return value
     return PoissonTensor(T.space, form, T.degree, T.name)
 

@@ -1311,9 +1311,10 @@ def same_step_function(value: Any, obj: Any, what: str, parts: Callable[[Any], t
     """In a trace: the function of the engine step that made ``value`` (an evaluation of ``obj``, such as a
     Poisson tensor) must be the same graph (up to the trace's numbering of functions) at every evaluation
     of the same object in the claim, as at its first: an object whose state (or a test of its arguments)
-    makes it another function at some evaluations is refused.  ``parts(obj)``: the objects a sum is made
-    of (its function's value is the sum of theirs), each held to its own evaluations elsewhere in the
-    claim; outside a trace, nothing."""
+    makes it another function at some evaluations is refused.  ``parts(obj)``: (op, objects) when the
+    object's function is the step ``op`` of its parts' functions (a sum: ("add", (T1, T2)); a multiple:
+    ("mul", (T,))), each part held to its own evaluations elsewhere in the claim; outside a trace,
+    nothing."""
     if not _ACTIVE:
         return
     t = _ACTIVE[-1]
@@ -1332,10 +1333,11 @@ def same_step_function(value: Any, obj: Any, what: str, parts: Callable[[Any], t
         elif not t.same_graph([hit[1]], [], [node], []):
             t.refuse(f"{what} traces to another graph at one of its evaluations than at its first (its state, or "
                      "a test of its arguments, changed it): a statement about one function")
-        sub = parts(o) if parts is not None else ()
-        if sub and g.ops[node] == "add" and len(g.args[node]) == 2 and all(type(x) is Ref for x in g.args[node]):
-            hold(sub[0], g.args[node][0].i)
-            hold(sub[1], g.args[node][1].i)
+        op, sub = parts(o) if parts is not None else ("", ())
+        a = g.args[node]
+        if sub and g.ops[node] == op and len(a) >= len(sub) and all(type(x) is Ref for x in a[:len(sub)]):
+            for x, part in zip(a, sub):
+                hold(part, x.i)
 
     hold(obj, body.i)
 

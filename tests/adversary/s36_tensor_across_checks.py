@@ -54,3 +54,17 @@ def same_object_true(s):
     out = poisson_checks(s, T, "LP")
     out.update(compatibility(s, T, lie_poisson(SO_N), "pencil"))
     return out
+
+
+@claim("adv-s36-poisson-two-faces-scaled", kind="pb", sizes=SIZES)
+def two_faces_scaled(s):
+    """False: Λ (above) is a Poisson tensor on so(3), and 1·Λ is compatible with Lie–Poisson."""
+    state = {"second": False}
+
+    def form(t, x, a, b):
+        return (_lie_poisson if state["second"] else _field_tensor)(t, x, a, b)
+    T = PoissonTensor(SO_N, form, 2, "Λ")
+    out = poisson_checks(s, T, "Λ")
+    state["second"] = True
+    out.update(compatibility(s, T.scaled(lambda t: t.q(1)), lie_poisson(SO_N), "pencil"))
+    return out
