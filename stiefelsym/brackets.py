@@ -42,7 +42,7 @@ from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any, Callable, Sequence
 
-from stiefelsym.ir.trace import primitive, same_step_function
+from stiefelsym.ir.trace import primitive, same_scene_function, same_step_function
 from stiefelsym.backends.matrix import Mat, comm
 
 Scalar = Any
@@ -668,7 +668,12 @@ def poisson_map_residual(s: Any, bracket: PhaseBracket, moment: Callable[[Any], 
     """{<moment, a>, <moment, b>} − Λ(a, b)|_{moment}: the map ``moment`` of the phase space into
     T's space is Poisson (linear functions suffice: both sides are biderivations).  The covectors
     a, b are functions of the scene (e.g. ``lambda t: t.generic("a", "n", "n")``), so that they
-    are constants of every derived scene."""
+    are constants of every derived scene.  Each of moment, a, b is called on the scenes of Fa, Fb and on
+    the claim's: it must be one function of its scene at every call (a covector that is G in the bracket
+    and 2G on the right would have 2Φ "Poisson")."""
+    def one(f: Callable[[Any], Mat], what: str) -> Callable[[Any], Mat]:
+        return lambda t: same_scene_function(f, t, f(t), what)
+    moment, a, b = one(moment, "the map"), one(a, "the covector a"), one(b, "the covector b")
     Fa = lambda t: t.killing(moment(t), a(t))   # noqa: E731
     Fb = lambda t: t.killing(moment(t), b(t))   # noqa: E731
     return bracket(s, Fa, Fb) - T(s, moment(s), a(s), b(s))

@@ -857,7 +857,7 @@ class Trace:
         self._functions: dict[int, tuple[Any, Ref, Any, Any]] = {}
         #: id(object) -> (object, node): the graph of the first evaluation of each object whose evaluations
         #: must be one function (see :func:`same_step_function`)
-        self._one_function: dict[int, tuple[Any, int]] = {}
+        self._one_function: dict[Any, tuple[Any, Any]] = {}
         self._elements = False     # the generic elements of an Inverse statement are being made
         self._fresh = 0            # the fresh elements made so far (s.fresh)
         self._open = [0]           # the functions being traced (0: the claim), innermost last
@@ -1177,7 +1177,9 @@ class Trace:
             return (type(a).__name__, a) if type(a) in (int, Fraction, str, bool) else a
 
         def shape(outs: list, args: list) -> tuple:
-            memo: dict[int, tuple] = {i: ("arg", k) for k, i in enumerate(args)}
+            # an argument is a node, or a tuple of nodes that stand for the same argument
+            memo: dict[int, tuple] = {i: ("arg", k) for k, a in enumerate(args)
+                                      for i in (a if type(a) is tuple else (a,))}
             fns: dict[int, int] = {}
             stack = list(outs)
             while stack:                    # post-order, iteratively (graphs are deep)
@@ -1340,6 +1342,30 @@ def same_step_function(value: Any, obj: Any, what: str, parts: Callable[[Any], t
                 hold(part, x.i)
 
     hold(obj, body.i)
+
+
+def same_scene_function(f: Any, scene: Any, value: Any, what: str) -> Any:
+    """In a trace: the value of the function ``f`` of a scene, called by engine code on several scenes (the
+    claim's and those of the functions it differentiates), must be the same graph of its scene at every
+    call of the same object, as at its first (a function whose state makes it another at some calls is
+    refused); returns ``value``; outside a trace (or for a value that is not traced), nothing is checked."""
+    if not _ACTIVE or type(scene) is not TraceScene or type(value) is not Tracer:
+        return value
+    t = _ACTIVE[-1]
+    if scene._t is not t or value._t is not t:
+        return value
+    key = ("scene function", id(f))
+    hit = t._one_function.get(key)      # type: ignore[call-overload]
+    # the claim's own scene stands for the scene of every call (a value the function keeps from the claim's
+    # scene, a constant on the other scenes, is the same value there)
+    own = t.g.index.get(("scene", (0,)))
+    here = ((scene._r.i,) if own is None else (scene._r.i, own), value._r.i)
+    if hit is None or hit[0] is not f:
+        t._one_function[key] = (f, here)    # type: ignore[index]
+    elif not t.same_graph([hit[1][1]], [hit[1][0]], [here[1]], [here[0]]):
+        t.refuse(f"{what} traces to another graph of its scene at one of its calls than at its first (its state, "
+                 "or a test of its scene, changed it): a statement about one function")
+    return value
 
 
 #: the size expressions k·d made so far (see Trace.size)

@@ -58,3 +58,18 @@ def test_a_tensor_that_is_another_form_in_its_compatibility_check_is_refused():
     assert fixed(control) == {"fails"} and control["free"] not in PASSING, control
     for c in ("adv-s36-poisson-field-alone", "adv-s36-poisson-same-object-true"):
         assert fixed(got[c]) <= set(PASSING), (c, got[c])
+
+
+def test_a_covector_that_changes_between_the_bracket_and_the_right_side_is_refused():
+    """poisson_map_residual(s, dirac, 2Φ, LP, a, b) with a covector a that is G on its first call (inside the
+    bracket's function) and 2G on the claim's scene was "2Φ is a Poisson map": proved (exact), checked
+    (modular, rational), numeric (float, ball) at (3,2); the control with one covector fails.  Closed: the map
+    and the covectors must be one graph of their scene at every call (trace.same_scene_function, the claim's
+    scene standing for every scene): error at every fixed size; Φ with generic covectors, also captured from
+    the claim's scene, is still passed."""
+    got = by_claim(run_all("s36_poisson_map_calls.py"))
+    bad = got["adv-s36-pmap-stateful-covector"]
+    assert fixed(bad) == {"error"} and bad["free"] not in PASSING, bad
+    assert fixed(got["adv-s36-pmap-control"]) == {"fails"}, got["adv-s36-pmap-control"]
+    for c in ("adv-s36-pmap-true", "adv-s36-pmap-captured-true"):
+        assert fixed(got[c]) <= set(PASSING), (c, got[c])
