@@ -73,3 +73,17 @@ def test_a_covector_that_changes_between_the_bracket_and_the_right_side_is_refus
     assert fixed(got["adv-s36-pmap-control"]) == {"fails"}, got["adv-s36-pmap-control"]
     for c in ("adv-s36-pmap-true", "adv-s36-pmap-captured-true"):
         assert fixed(got[c]) <= set(PASSING), (c, got[c])
+
+
+def test_two_corrections_of_one_description_are_refused(tmp_path):
+    """A claim with two corrections described alike (a true one, checked, and a false one, fails): every record
+    names a correction by its description, so `check` ran the first for both and rejected the honest record of
+    the second (digest), and a results file where the false one's record was replaced by a copy of the true
+    one's was accepted by `check` and rendered by `report` ("verified"), the failing correction gone.  Closed:
+    a claim refuses a second correction of the same description (the decorator, and the verifying process for
+    a list the file appended to): the file is bad input, exit 2."""
+    from adversary_cli import HERE, cli
+    for name in ("s36_duplicate_corrections.py", "s36_duplicate_corrections_appended.py"):
+        res = cli("verify", "--claims", str(HERE / name), "--size", "3,2", "--method", "modular", "--jobs", "1")
+        assert res.returncode == 2 and "two corrections described" in res.stderr, (name, res.returncode,
+                                                                                   res.stderr[-600:])
