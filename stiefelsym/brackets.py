@@ -652,7 +652,9 @@ def compatibility(s: Any, T1: PoissonTensor, T2: PoissonTensor, prefix: str = ""
     """Jacobi identity of T1 + T2 (compatibility, given that T1 and T2 are Poisson) at a generic
     point with generic covectors (fresh elements, new at every call, as in :func:`poisson_checks`)."""
     sp = T1.space
-    T = checked_tensor(T1 + T2)
+    # the sum as PoissonTensor makes it (a subclass's own __add__ would build a sum whose parts are not held to
+    # the parts' own evaluations)
+    T = checked_tensor(PoissonTensor.__add__(T1, T2))
     x, a, b, c = (sp.fresh(s) for _ in range(4))
     p = f"{prefix}: " if prefix else ""
     return {f"{p}Jacobi identity of {T1.name} + {T2.name}": jacobiator(s, T, x, a, b, c)}

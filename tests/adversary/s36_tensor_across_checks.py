@@ -68,3 +68,26 @@ def two_faces_scaled(s):
     state["second"] = True
     out.update(compatibility(s, T.scaled(lambda t: t.q(1)), lie_poisson(SO_N), "pencil"))
     return out
+
+
+class _OwnSum(PoissonTensor):
+    """A tensor whose sum is built by its own __add__ (a plain PoissonTensor, no parts)."""
+
+    def __add__(self, o):
+        return PoissonTensor(self.space, lambda s, x, a, b: self.form(s, x, a, b) + o.form(s, x, a, b),
+                             max(self.degree, o.degree), f"{self.name} + {o.name}")
+
+
+@claim("adv-s36-poisson-two-faces-own-sum", kind="pb", sizes=SIZES)
+def two_faces_own_sum(s):
+    """False: Λ (above) is a Poisson tensor on so(3), compatible with Lie–Poisson (its sum built by its own
+    __add__)."""
+    state = {"second": False}
+
+    def form(t, x, a, b):
+        return (_lie_poisson if state["second"] else _field_tensor)(t, x, a, b)
+    T = _OwnSum(SO_N, form, 2, "Λ")
+    out = poisson_checks(s, T, "Λ")
+    state["second"] = True
+    out.update(compatibility(s, T, lie_poisson(SO_N), "pencil"))
+    return out

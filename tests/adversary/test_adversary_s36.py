@@ -48,11 +48,12 @@ def test_a_tensor_that_is_another_form_in_its_compatibility_check_is_refused():
     """A tensor object that is Λ (Poisson on so(3), not compatible with Lie–Poisson) in its poisson_checks and
     Lie–Poisson in compatibility(s, T, LP) (a flag the claim sets between the calls; each call is one form)
     was "Poisson and compatible with Lie–Poisson": proved (exact), checked (modular, rational), numeric (float,
-    ball) at (3,2), and so was 1·T (T.scaled) in compatibility; the control with one form fails.  Closed: the evaluations of one tensor object are one form
+    ball) at (3,2), and so were 1·T (T.scaled) in compatibility and a subclass whose own __add__ builds the sum
+    with no parts; the control with one form fails.  Closed: the evaluations of one tensor object are one form
     across the claim, and the form of a sum T1 + T2 is held to its parts' (PoissonTensor keeps them): error at
     every fixed size; free is not a pass (undecided: coordinates); one object used consistently is proved."""
     got = by_claim(run_all("s36_tensor_across_checks.py", size="3,2"))
-    for c in ("adv-s36-poisson-two-faces", "adv-s36-poisson-two-faces-scaled"):
+    for c in ("adv-s36-poisson-two-faces", "adv-s36-poisson-two-faces-scaled", "adv-s36-poisson-two-faces-own-sum"):
         assert fixed(got[c]) == {"error"} and got[c]["free"] not in PASSING, (c, got[c])
     control = got["adv-s36-poisson-two-faces-control"]
     assert fixed(control) == {"fails"} and control["free"] not in PASSING, control
