@@ -42,7 +42,7 @@ from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any, Callable, Sequence
 
-from stiefelsym.ir.trace import primitive
+from stiefelsym.ir.trace import primitive, same_scene_function, same_step_function
 from stiefelsym.backends.matrix import Mat, comm
 
 Scalar = Any
@@ -347,13 +347,17 @@ class PoissonTensor:
     def __add__(self, o: "PoissonTensor") -> "PoissonTensor":
         if o.space != self.space:
             raise TypeError(f"a sum of tensors on {self.space.name} and {o.space.name}")
-        return PoissonTensor(self.space, lambda s, x, a, b: self.form(s, x, a, b) + o.form(s, x, a, b),
-                             max(self.degree, o.degree), f"{self.name} + {o.name}")
+        out = PoissonTensor(self.space, lambda s, x, a, b: self.form(s, x, a, b) + o.form(s, x, a, b),
+                            max(self.degree, o.degree), f"{self.name} + {o.name}")
+        object.__setattr__(out, "_parts", ("add", (self, o)))    # held to the parts' own evaluations (checked_tensor)
+        return out
 
     def scaled(self, c: Callable[[Any], Scalar]) -> "PoissonTensor":
         """c(s)·Λ for a scalar of the scene (a pencil λ1Λ1 + λ2Λ2 is ``T1.scaled(l1) + T2.scaled(l2)``)."""
-        return PoissonTensor(self.space, lambda s, x, a, b: self.form(s, x, a, b) * c(s), self.degree,
-                             f"c·{self.name}")
+        out = PoissonTensor(self.space, lambda s, x, a, b: self.form(s, x, a, b) * c(s), self.degree,
+                            f"c·{self.name}")
+        object.__setattr__(out, "_parts", ("mul", (self,)))      # held to its part's own evaluations
+        return out
 
 
 def lie_poisson(space: Space, sign: int = 1) -> PoissonTensor:
@@ -618,7 +622,13 @@ def checked_tensor(T: PoissonTensor) -> PoissonTensor:
     that keeps a point it was evaluated at (state kept between evaluations) keeps a parameter of another
     function, never the point of a check (the graph is then not evaluable: an error, never a verdict)."""
     def form(s: Any, x: Mat, a: Mat, b: Mat) -> Scalar:
-        return tensor_value(s, lambda t, v: T(t, v[0], v[1], v[2]), (x, a, b))
+        value = tensor_value(s, lambda t, v: T(t, v[0], v[1], v[2]), (x, a, b))
+        # every evaluation of the tensor object in the claim is of one form: a form with state (or a test of
+        # its arguments) that is another form on some evaluations (Λ for the antisymmetry and degree,
+        # Lie–Poisson for the Jacobi identity; Λ in its poisson_checks, another in a compatibility check of
+        # T + T2, whose form is the sum of the parts' forms) would have each check pass for no one tensor
+        same_step_function(value, T, f"the tensor {T.name}", lambda o: getattr(o, "_parts", ("", ())))
+        return value
     return PoissonTensor(T.space, form, T.degree, T.name)
 
 
@@ -642,7 +652,9 @@ def compatibility(s: Any, T1: PoissonTensor, T2: PoissonTensor, prefix: str = ""
     """Jacobi identity of T1 + T2 (compatibility, given that T1 and T2 are Poisson) at a generic
     point with generic covectors (fresh elements, new at every call, as in :func:`poisson_checks`)."""
     sp = T1.space
-    T = checked_tensor(T1 + T2)
+    # the sum as PoissonTensor makes it (a subclass's own __add__ would build a sum whose parts are not held to
+    # the parts' own evaluations)
+    T = checked_tensor(PoissonTensor.__add__(T1, T2))
     x, a, b, c = (sp.fresh(s) for _ in range(4))
     p = f"{prefix}: " if prefix else ""
     return {f"{p}Jacobi identity of {T1.name} + {T2.name}": jacobiator(s, T, x, a, b, c)}
@@ -658,7 +670,12 @@ def poisson_map_residual(s: Any, bracket: PhaseBracket, moment: Callable[[Any], 
     """{<moment, a>, <moment, b>} − Λ(a, b)|_{moment}: the map ``moment`` of the phase space into
     T's space is Poisson (linear functions suffice: both sides are biderivations).  The covectors
     a, b are functions of the scene (e.g. ``lambda t: t.generic("a", "n", "n")``), so that they
-    are constants of every derived scene."""
+    are constants of every derived scene.  Each of moment, a, b is called on the scenes of Fa, Fb and on
+    the claim's: it must be one function of its scene at every call (a covector that is G in the bracket
+    and 2G on the right would have 2Φ "Poisson")."""
+    def one(f: Callable[[Any], Mat], what: str) -> Callable[[Any], Mat]:
+        return lambda t: same_scene_function(f, t, f(t), what)
+    moment, a, b = one(moment, "the map"), one(a, "the covector a"), one(b, "the covector b")
     Fa = lambda t: t.killing(moment(t), a(t))   # noqa: E731
     Fb = lambda t: t.killing(moment(t), b(t))   # noqa: E731
     return bracket(s, Fa, Fb) - T(s, moment(s), a(s), b(s))

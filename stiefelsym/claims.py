@@ -263,6 +263,13 @@ class Claim:
         statement alone."""
         if expect not in (None, "holds", "nonzero"):
             raise ValueError(f"a correction expects 'holds' or 'nonzero', not {expect!r}")
+        # the description names the correction in every record, report and `check` (the variant of a record):
+        # two corrections of one description would be one record's variant, and either one's verdict the other's
+        if type(description) is not str or not description.strip():
+            raise ValueError(f"claim {self.id}: a correction is described by a non-empty string")
+        if any(c.description == description for c in self.corrections):
+            raise ValueError(f"claim {self.id}: two corrections described {description!r} (the description names "
+                             "the correction in the records)")
         pairs = _pairs(exact_max_r)
         dataclasses.replace(self, exact_max_r=_widened(self.exact_max_r, pairs))   # validated as the claim's
 

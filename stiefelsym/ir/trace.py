@@ -855,6 +855,9 @@ class Trace:
         self._like: dict = {}
         self.constraints = constraints
         self._functions: dict[int, tuple[Any, Ref, Any, Any]] = {}
+        #: id(object) -> (object, node): the graph of the first evaluation of each object whose evaluations
+        #: must be one function (see :func:`same_step_function`)
+        self._one_function: dict[Any, tuple[Any, Any]] = {}
         self._elements = False     # the generic elements of an Inverse statement are being made
         self._fresh = 0            # the fresh elements made so far (s.fresh)
         self._open = [0]           # the functions being traced (0: the claim), innermost last
@@ -1132,6 +1135,14 @@ class Trace:
                                    "or some element (op(inv(y)) = y" + ("" if right else " and inv(op(x)) = x")
                                    + " would prove op " + ("onto" if right else "invertible")
                                    + " only where it does not): only constant divisors")
+        # op (and inv) are one map each: the code called twice must trace to the same graph of its
+        # argument both times (an op whose state or whose test of its argument made it the identity on
+        # inv(y) and X Xᵀ x on x would have op(inv(y)) = y "prove" a projection onto)
+        for first, a1, second, a2, what in ((op_inv_y, inv_y, op_x, xs, "op"), (inv_y, ys, inv_op_x, op_x, "inv")):
+            if second and not self._same_map(first, a1, second, a2):
+                return self.refuse(f"{name}: {what} traces to another graph on its second argument than on its "
+                                   "first (its state, or a test of its argument, changed it between two calls): "
+                                   "a statement about one map")
         residuals = [a - b for a, b in zip(op_inv_y, ys)] + [a - b for a, b in zip(inv_op_x, xs)]
         residuals += [m for m in (member(x, d) for x, d in zip(inv_y + op_x, on + to)) if m is not None]
         # the parts as tuples of references (no container node: the statement's node is the first node
@@ -1141,6 +1152,67 @@ class Trace:
             return self.g.add("right_inverse", parts + (on, to, v.meaning))
         parts = tuple(tuple(x._r for x in p) for p in (ys, inv_y, op_inv_y, xs, op_x, inv_op_x, residuals))
         return self.g.add("inverse", parts + (on, v.meaning))
+
+    def _same_map(self, outs1: tuple, args1: tuple, outs2: tuple, args2: tuple) -> bool:
+        """Whether the nodes ``outs1`` are the same graph of the nodes ``args1`` as ``outs2`` of ``args2``:
+        equal after each argument node is replaced by its position (nodes that read no argument are the
+        same nodes: the graph shares equal nodes)."""
+        if len(outs1) != len(outs2) or len(args1) != len(args2):
+            return False
+        return self.same_graph([x._r.i for x in outs1], [x._r.i for x in args1],
+                               [x._r.i for x in outs2], [x._r.i for x in args2])
+
+    def same_graph(self, outs1: list, args1: list, outs2: list, args2: list) -> bool:
+        """Whether the nodes ``outs1`` (indices) are the same graph of the nodes ``args1`` as ``outs2`` of
+        ``args2``, the functions the trace numbers (their scenes, parameters and ``fn`` nodes) renamed in
+        order of appearance on each side, a parameter's shape-giving argument left out."""
+        g = self.g
+        ids: dict[tuple, int] = {}          # hash-consed forms, shared by both sides
+
+        def sub(a: Any, below: dict) -> Any:
+            if type(a) is Ref:
+                return below[a.i]
+            if type(a) is tuple:
+                return tuple(sub(b, below) for b in a)
+            return (type(a).__name__, a) if type(a) in (int, Fraction, str, bool) else a
+
+        def shape(outs: list, args: list) -> tuple:
+            # an argument is a node, or a tuple of nodes that stand for the same argument
+            memo: dict[int, tuple] = {i: ("arg", k) for k, a in enumerate(args)
+                                      for i in (a if type(a) is tuple else (a,))}
+            fns: dict[int, int] = {}
+            stack = list(outs)
+            while stack:                    # post-order, iteratively (graphs are deep)
+                i = stack[-1]
+                if i in memo:
+                    stack.pop()
+                    continue
+                todo = [j for j in g.refs(i) if j not in memo]
+                if todo:
+                    stack.extend(todo)
+                    continue
+                stack.pop()
+                below = {j: memo[j] for j in g.refs(i)}
+                op, a = g.ops[i], g.args[i]
+                if op in ("fn", "param") or (op == "scene" and a[0] != 0):
+                    # a function traced in the call: numbered by the trace, so by order of appearance here
+                    rest = a[1:2] if op == "param" else a[1:]
+                    key = (op, ("fn", fns.setdefault(a[0], len(fns))), sub(rest, below))
+                    memo[i] = ("form", ids.setdefault(key, len(ids)))
+                elif all(v[0] == "node" for v in below.values()):
+                    memo[i] = ("node", i)   # reads no argument: the node itself
+                else:
+                    key = (op, sub(a, below))
+                    memo[i] = ("form", ids.setdefault(key, len(ids)))
+            return tuple(memo[i] for i in outs)
+
+        return shape(outs1, args1) == shape(outs2, args2)
+
+    def step_function(self, value: Any) -> int | None:
+        """The ``fn`` node (index) of the function argument of the engine step that made ``value``."""
+        if type(value) is not Tracer or value._t is not self or self.g.ops[value._r.i] != "prim":
+            return None
+        return next((j for j in self.g.refs(value._r.i) if self.g.ops[j] == "fn"), None)
 
     def _divisor(self, outs: tuple, args: tuple) -> str:
         """What a node of ``outs`` (down to the nodes ``args``) divides by when it is not a constant: a
@@ -1235,6 +1307,65 @@ class Trace:
         if type(returns) is int:
             return tuple(self.new("item", (ref, i), ANY) for i in range(returns))
         return Tracer(self, ref, ANY)
+
+
+def same_step_function(value: Any, obj: Any, what: str, parts: Callable[[Any], tuple] | None = None) -> None:
+    """In a trace: the function of the engine step that made ``value`` (an evaluation of ``obj``, such as a
+    Poisson tensor) must be the same graph (up to the trace's numbering of functions) at every evaluation
+    of the same object in the claim, as at its first: an object whose state (or a test of its arguments)
+    makes it another function at some evaluations is refused.  ``parts(obj)``: (op, objects) when the
+    object's function is the step ``op`` of its parts' functions (a sum: ("add", (T1, T2)); a multiple:
+    ("mul", (T,))), each part held to its own evaluations elsewhere in the claim; outside a trace,
+    nothing."""
+    if not _ACTIVE:
+        return
+    t = _ACTIVE[-1]
+    k = t.step_function(value)
+    if k is None:
+        return
+    body = t.g.args[k][2]
+    if type(body) is not Ref:
+        return
+    g, forms = t.g, t._one_function
+
+    def hold(o: Any, node: int) -> None:
+        hit = forms.get(id(o))
+        if hit is None or hit[0] is not o:
+            forms[id(o)] = (o, node)
+        elif not t.same_graph([hit[1]], [], [node], []):
+            t.refuse(f"{what} traces to another graph at one of its evaluations than at its first (its state, or "
+                     "a test of its arguments, changed it): a statement about one function")
+        op, sub = parts(o) if parts is not None else ("", ())
+        a = g.args[node]
+        if sub and g.ops[node] == op and len(a) >= len(sub) and all(type(x) is Ref for x in a[:len(sub)]):
+            for x, part in zip(a, sub):
+                hold(part, x.i)
+
+    hold(obj, body.i)
+
+
+def same_scene_function(f: Any, scene: Any, value: Any, what: str) -> Any:
+    """In a trace: the value of the function ``f`` of a scene, called by engine code on several scenes (the
+    claim's and those of the functions it differentiates), must be the same graph of its scene at every
+    call of the same object, as at its first (a function whose state makes it another at some calls is
+    refused); returns ``value``; outside a trace (or for a value that is not traced), nothing is checked."""
+    if not _ACTIVE or type(scene) is not TraceScene or type(value) is not Tracer:
+        return value
+    t = _ACTIVE[-1]
+    if scene._t is not t or value._t is not t:
+        return value
+    key = ("scene function", id(f))
+    hit = t._one_function.get(key)      # type: ignore[call-overload]
+    # the claim's own scene stands for the scene of every call (a value the function keeps from the claim's
+    # scene, a constant on the other scenes, is the same value there)
+    own = t.g.index.get(("scene", (0,)))
+    here = ((scene._r.i,) if own is None else (scene._r.i, own), value._r.i)
+    if hit is None or hit[0] is not f:
+        t._one_function[key] = (f, here)    # type: ignore[index]
+    elif not t.same_graph([hit[1][1]], [hit[1][0]], [here[1]], [here[0]]):
+        t.refuse(f"{what} traces to another graph of its scene at one of its calls than at its first (its state, "
+                 "or a test of its scene, changed it): a statement about one function")
+    return value
 
 
 #: the size expressions k·d made so far (see Trace.size)

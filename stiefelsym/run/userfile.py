@@ -779,6 +779,9 @@ def _claim(d: Any, path: str, confinement: str = "namespaces") -> Claim:
     corrections = []
     for k in _get(d, "corrections", list):
         desc = _get(k, "description", str)
+        if not desc.strip() or any(c.description == desc for c in corrections):
+            raise WireError(f"two corrections described {desc!r}, or an empty description (the description names "
+                            "the correction in the records)")
         corrections.append(Correction(desc, TracedFunction(f"{name} ({desc})", realization, _get(k, "graphs", list),
                                                            src_path, line, confinement),
                                       _get(k, "changes", int), _get(k, "expect", str, optional=True),
