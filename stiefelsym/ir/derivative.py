@@ -582,9 +582,11 @@ _NESTED = {"d": "derivative along a flow", "gradient": "gradient", "dirac_flow":
 GRADIENT = "stiefelsym.ir.derivative.gradient_pair"
 
 
-def gradient_pair(scene: Any, HX: Any, HP: Any) -> tuple:
+def gradient_pair(scene: Any, HX: Any, HP: Any, *value: Any) -> tuple:
     """(∂H/∂X, ∂H/∂P) computed by the graph, as the scene's own gradient hands them on (the scene's
     checks of a gradient made, the spaces n x r; None: a zero gradient, the scene's exact zero).
+    ``value``: H's value, not used (an argument so that H is evaluated, as the scene's reverse tape
+    evaluates it: its reads of coordinates recorded, its refusals made, whatever the adjoints need).
     Engine step of the transformed graphs."""
     f = getattr(scene, "_gradient_pair", None)
     if f is None:
@@ -594,7 +596,86 @@ def gradient_pair(scene: Any, HX: Any, HP: Any) -> tuple:
 
 PRIMITIVES[GRADIENT] = gradient_pair
 
-_S, _M = "number", "matrix"
+#: the engine steps of the adjoints of coordinate reads (registered below)
+SCATTER = "stiefelsym.ir.derivative.scatter"
+ADJOINT = "stiefelsym.ir.derivative.adjoint_part"
+BLOCK_ADJOINT = "stiefelsym.ir.derivative.block_adjoint"
+ADJOINT_MATRIX = "stiefelsym.ir.derivative.adjoint_matrix"
+
+
+def _index(key: tuple) -> tuple:
+    return tuple(slice(*k[1:]) if type(k) is tuple else k for k in key)
+
+
+def _number(field: Any, x: Any) -> Any:
+    return field.const(x) if type(x) in (int, Fraction) else x
+
+
+def _full(like: Any, G: Any, c: Any) -> Any:
+    """G + c·I (G None: 0; c None: 0), a matrix of ``like``'s field, shape and spaces."""
+    from stiefelsym.backends.matrix import Mat, scalar_matrix
+    f = like.field
+    if c is not None:
+        m, k = like._shape()
+        if m != k:
+            raise ValueError("a multiple of I as the adjoint of a matrix that is not square")
+        I = scalar_matrix(_number(f, c), m, f, like.tags[0], like.tracker)
+        I = I._retyped(f, like.tags, like.tracker)
+        G = I if G is None else G + I
+    if G is None:
+        G = Mat.zeros(*like._shape(), f, like.tags, like.tracker)
+    return G
+
+
+def scatter(scene: Any, like: Any, value: Any, *key: Any) -> Any:
+    """The adjoint of the read of ``like`` at ``key`` (an entry, or a block read by slices) whose
+    adjoint is ``value``: the zero matrix of ``like``'s shape and spaces with ``value`` at ``key``, as
+    the scene's reverse tape scatters it (nothing recorded: the read itself is made, and recorded, as
+    a part of H's value, which :func:`gradient_pair` takes).  Engine step of the transformed graphs."""
+    from stiefelsym.backends.matrix import Mat
+    out = Mat.zeros(*like._shape(), like.field, like.tags, like.tracker)
+    a, idx = out._a, _index(key)
+    if isinstance(value, Mat):
+        part = a[idx]
+        a[idx] = value._view().reshape(part.shape)
+    else:
+        a[idx] = _number(like.field, value)
+    return out
+
+
+def adjoint_matrix(scene: Any, like: Any, G: Any, c: Any) -> Any:
+    """The adjoint G + c·I of the matrix ``like`` as one matrix of its shape and spaces.  Engine step
+    of the transformed graphs."""
+    return _full(like, G, c)
+
+
+def adjoint_part(scene: Any, like: Any, G: Any, c: Any, i: int, j: int) -> Any:
+    """Entry (i, j) of the adjoint G + c·I of the matrix ``like`` (a matrix of given entries: the
+    adjoint of each entry), read as the scene's reverse tape reads it (nothing recorded).  Engine
+    step of the transformed graphs."""
+    return _full(like, G, c)._view()[i, j]
+
+
+def block_adjoint(scene: Any, whole: Any, G: Any, c: Any, rows: int, cols: int, k: int, *blocks: Any) -> Any:
+    """The part of the adjoint G + c·I of the block matrix ``whole`` at its ``k``-th block (of
+    ``rows`` x ``cols``, in the order of ``blocks``), with that block's spaces.  Engine step of the
+    transformed graphs."""
+    from stiefelsym.backends.matrix import Mat
+    shapes = [b._shape() for b in blocks]
+    r, q = divmod(k, cols)
+    r0 = sum(shapes[i * cols][0] for i in range(r))
+    c0 = sum(shapes[j][1] for j in range(q))
+    m, w = shapes[k]
+    a = _full(whole, G, c)._view()[r0:r0 + m, c0:c0 + w].copy()
+    return Mat._wrap(a, whole.field, blocks[k].tags, whole.tracker)
+
+
+PRIMITIVES[SCATTER] = scatter
+PRIMITIVES[ADJOINT] = adjoint_part
+PRIMITIVES[BLOCK_ADJOINT] = block_adjoint
+PRIMITIVES[ADJOINT_MATRIX] = adjoint_matrix
+
+_S, _M, _L, _O = "number", "matrix", "list", "operator"
 #: scene matrices and numbers the gradient treats as constants (only X and P are its variables)
 _GRAD_CONSTANT_ATTRS = CONSTANT_ATTRS | {"Y", "Q", "Zc", "Zc_dot"}
 _MATRIX_CALLS = frozenset({"resolvent", "mat", "zeros", "identity", "scalar_matrix", "generic", "fresh", "general_params",
@@ -642,8 +723,12 @@ class _Gradient(_Derivative):
     def _kind_of(self, j: int) -> str:
         g = self.g
         op, a = g.ops[j], g.args[j]
-        if op in ("matmul", "T", "inv", "block"):
+        if op in ("matmul", "T", "inv", "block", "apply"):
             return _M
+        if op == "list":
+            return _L
+        if op == "call" and a[1] == "sym_operator":
+            return _O
         if op in ("trace", "pow", "const"):
             return _S
         if op in ("add", "sub", "neg", "div"):
@@ -702,7 +787,8 @@ class _Gradient(_Derivative):
             self.propagate(j, terms, ident, adj, grads)
         HX = self.total(grads["X"], X)
         HP = self.total(grads["P"], P)
-        return self.add("prim", (Named(GRADIENT), self.S, HX, HP))
+        value = (self.P[self.body.i],) if k in self.deps[self.body.i] else ()
+        return self.add("prim", (Named(GRADIENT), self.S, HX, HP) + value)
 
     def check(self, j: int) -> None:
         """Refuse (before anything is written) what the backward sweep has no rule for."""
@@ -718,18 +804,32 @@ class _Gradient(_Derivative):
                 return
             if a[1] == "resolvent" and not self.moving(a[2][0]):
                 return
-            if a[1] in ("tr", "killing"):
+            if a[1] in ("tr", "killing", "sym_operator"):
+                return
+            if a[1] == "mat":
+                rows = a[2][0] if a[2] else None
+                if a[3] or len(a[2]) != 2 or type(rows) is not Ref or g.ops[rows.i] != "list" or any(
+                        type(x) is not Ref or g.ops[x.i] != "list" for x in g.args[rows.i]):
+                    raise Unsupported("a matrix of entries an engine step made inside the function of a gradient")
                 return
             raise Unsupported(f"s.{a[1]} inside the function of a gradient")
         elif op == "item":
             if not (type(a[0]) is Ref and g.ops[a[0].i] == "attr" and g.args[a[0].i][1] == "a"):
                 raise Unsupported("a part of a value inside the function of a gradient")
-        elif op in ("entry", "block"):
-            raise Unsupported(f"an {op} inside the function of a gradient (its adjoint needs coordinates)")
+        elif op == "apply":
+            f = a[0]
+            sc = g.args[f.i][0] if type(f) is Ref and g.ops[f.i] == "call" else None
+            own = (g.args[f.i][1] == "sym_operator" and type(sc) is Ref and g.ops[sc.i] == "scene"
+                   and g.args[sc.i] == (self.k,)) if sc is not None else False
+            if len(a) != 2 or not own or self.moving(f):
+                raise Unsupported("an operator other than the scene's symmetric operator inside the function of a gradient")
+        elif op == "list":
+            return                          # the rows of a matrix of given entries (s.mat sends to its cells)
         elif op == "prim" and _constant_vector(a[0]):
             if any(self.moving(x) for x in a[1:]):
                 raise Unsupported("a coordinate basis vector at a moving argument inside the function of a gradient")
-        elif op not in ("add", "sub", "neg", "matmul", "mul", "div", "pow", "T", "inv", "trace", "const"):
+        elif op not in ("add", "sub", "neg", "matmul", "mul", "div", "pow", "T", "inv", "trace", "const", "entry",
+                        "block"):
             raise Unsupported(f"a {op} inside the function of a gradient")
 
     def moving(self, a: Any) -> bool:
@@ -824,6 +924,8 @@ class _Gradient(_Derivative):
                 h = self.smul(Fraction(-1, 2), s)
                 self.send(adj, x, [self.mscale(h, T(p(y)))])
                 self.send(adj, y, [self.mscale(h, T(p(x)))])
+            elif op == "entry":                             # x = M[i, j]: M̄ = x̄ at (i, j), 0 elsewhere
+                self.send(adj, a[0], [add("prim", (Named(SCATTER), self.S, p(a[0]), self.lit(s)) + tuple(a[1:]))])
             elif op == "attr" or op == "call" or op == "const" or op == "item":
                 return
             else:
@@ -885,10 +987,35 @@ class _Gradient(_Derivative):
             else:                                           # Ψ = XᵀP − PᵀX: X̄ = −P(C̄ − C̄ᵀ), P̄ = X(C̄ − C̄ᵀ)
                 self.leaf(grads, "X", [add("neg", (mm(P, K),))])
                 self.leaf(grads, "P", [mm(X, K)])
+        elif op == "entry":                                 # a block read by slices: scattered back
+            G = self.full(j, M, c, has_c)
+            self.send(adj, a[0], [add("prim", (Named(SCATTER), self.S, p(a[0]), G) + tuple(a[1:]))])
+        elif op == "block":                                 # a block matrix: each block its part of the adjoint
+            rows, cols, blocks = a
+            G, cc = M, (self.lit(c) if has_c else None)
+            prim = [p(b) for b in blocks]
+            for k, b in enumerate(blocks):
+                if self.moving(b):
+                    self.send(adj, b, [add("prim", (Named(BLOCK_ADJOINT), self.S, self.P[j], G, cc, rows, cols, k)
+                                           + tuple(prim))])
+        elif op == "call" and a[1] == "mat":                # a matrix of given entries: each cell its entry
+            G, cc = M, (self.lit(c) if has_c else None)
+            for ri, row in enumerate(g.args[a[2][0].i]):
+                for ci, x in enumerate(g.args[row.i]):
+                    if self.moving(x):
+                        self.send(adj, x, [add("prim", (Named(ADJOINT), self.S, self.P[j], G, cc, ri, ci))])
+        elif op == "apply":                                 # y = 𝔸(x), 𝔸 self-adjoint for ⟨,⟩: x̄ = 𝔸(ȳ)
+            self.send(adj, a[1], [add("apply", (p(a[0]), self.full(j, M, c, has_c)))])
         elif op in ("attr", "call", "const"):
             return                                          # constants
         else:
             raise Unsupported(f"no rule for a {op} of matrices")
+
+    def full(self, j: int, M: Any, c: Any, has_c: bool) -> Any:
+        """The adjoint Σ terms + c·I of the body's matrix node j as one matrix."""
+        if not has_c:
+            return M
+        return self.add("prim", (Named(ADJOINT_MATRIX), self.S, self.P[j], M, self.lit(c)))
 
     def div(self, s: Any, c: Any) -> Any:
         """s/c for numbers (refs or exact literals)."""
@@ -1027,8 +1154,9 @@ class _Bracket:
             terms.append(add("call", (S, "tr", (add("matmul", (add("T", (G,)), add("attr", (flow, comp)))),), ())))
         value = terms[0] if len(terms) == 1 else (add("add", tuple(terms)) if terms
                                                    else add("call", (S, "const", (0,), ())))
-        # the value with the flow (made, and checked, whatever F reads)
-        return add("item", (add("tuple", (flow, value)), 1))
+        # the value with the flow (made, and checked, whatever F reads) and F's gradient (F evaluated,
+        # as the scene evaluates it, where its gradient is 0)
+        return add("item", (add("tuple", (flow, value, pair)), 1))
 
 
 #: the calls the pass rewrites, by scene method
