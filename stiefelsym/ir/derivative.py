@@ -180,6 +180,8 @@ def _transform(g: Graph, flows: frozenset = frozenset()) -> tuple[Graph, list]:
         elif op == "call" and a[1] in _FLOW_PASSES:
             if a[1] in flows:
                 rewrite = _FLOW_PASSES[a[1]]
+            elif a[1] == "bracket" and BRACKET_ALONG_FLOW in flows:
+                rewrite = _BracketAlongFlow
             else:
                 report.append((i, a[1], "the scene's own multipliers here (another realization, a chart or a "
                                         "field without their closed forms, or the free algebra's solve)"))
@@ -231,15 +233,19 @@ def _pruned(g: Graph) -> Graph:
 class _Derivative:
     """The derivative of one ``d`` node's function along its flow, built into the new graph."""
 
-    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, i: int) -> None:
+    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, i: int, f: Any = None) -> None:
         self.g, self.deps, self.new, self.remap = g, deps, new, remap
         scene, name, args, kw = g.args[i]
-        if kw or len(args) != 2:
-            raise Unsupported("a derivative with further arguments")
-        f, flow = args
+        if f is None:
+            if kw or len(args) != 2:
+                raise Unsupported("a derivative with further arguments")
+            f, flow = args
+        else:
+            flow = None                     # made by :meth:`make_flow` when the derivative is built
         if type(scene) is not Ref or g.ops[scene.i] != "scene" or g.args[scene.i] != (0,):
-            raise Unsupported("a derivative on a scene other than the claim's (inside a function of the scene)")
-        if type(f) is not Ref or g.ops[f.i] != "fn" or type(flow) is not Ref:
+            raise Unsupported(f"{_WHAT.get(name, 'a derivative')} on a scene other than the claim's (inside a "
+                              "function of the scene)")
+        if type(f) is not Ref or g.ops[f.i] != "fn" or (flow is not None and type(flow) is not Ref):
             raise Unsupported("a derivative of something that is not a traced function")
         self.k, arity, self.body = g.args[f.i]
         if arity != 1:
@@ -248,7 +254,7 @@ class _Derivative:
         self.flow = flow
         # the keys a flow given as a dict moves (other flows: the engine's Flow, whose keys are read)
         self.keys = None
-        if g.ops[flow.i] == "dict":
+        if flow is not None and g.ops[flow.i] == "dict":
             self.keys = frozenset(g.args[flow.i][0])
         self.P: dict[int, Ref] = {}
         self.D: dict[int, Any] = {}
@@ -352,7 +358,8 @@ class _Derivative:
             raise Unsupported("a function whose value is a constant")
         # the flow's components, read (and the flow checked) by one engine step
         keys = tuple(sorted(self.read))
-        self._tangent = self.add("prim", (Named(TANGENT), self.S, self.remap[self.flow.i], keys))
+        flow = self.make_flow() if self.flow is None else self.remap[self.flow.i]
+        self._tangent = self.add("prim", (Named(TANGENT), self.S, flow, keys))
         for j in todo:
             self.P[j] = self.S if g.ops[j] == "scene" else self.add(g.ops[j], self.primal(g.args[j]))
             self.D[j] = self.emit(j, self.plan[j])
@@ -362,6 +369,9 @@ class _Derivative:
         # the derivative is the flow's check and the value: the flow is checked whatever the body reads
         pair = self.add("tuple", (self._tangent, value))
         return self.add("item", (pair, 1))
+
+    def make_flow(self) -> Ref:
+        raise AssertionError("a derivative with no flow")
 
     def rule(self, j: int) -> Any:
         """The derivative of node j as a recipe over the derivatives of its arguments (D) and their
@@ -392,8 +402,8 @@ class _Derivative:
                 raise Unsupported(f"s.{name} with keyword arguments")
             if type(scene) is not Ref or g.ops[scene.i] != "scene" or g.args[scene.i] != (self.k,):
                 raise Unsupported(f"s.{name} of another scene")
-            if name in CONSTANT_CALLS:
-                return None
+            if name in CONSTANT_CALLS or name == "sym_operator":
+                return None                 # (the operator: its coefficients are constants of the point)
             if name in ("tr", "conj"):
                 return (op, name)
             if name in ("killing", "realify", "scalar_matrix"):
@@ -424,6 +434,8 @@ class _Derivative:
             if any(self.moves(x) for x in a[1:]):
                 raise Unsupported(f"an engine step ({a[0].qualname.rsplit('.', 1)[-1]}) at a moving argument")
             return None                     # a coordinate basis vector: constant along every flow
+        if op == "apply" and _own_operator(g, a, self.k):
+            return (op,)                    # 𝔸 linear with constant coefficients: d𝔸(x) = 𝔸(dx)
         if op in ("prim", "apply"):
             what = a[0].qualname.rsplit(".", 1)[-1] if op == "prim" and type(a[0]) is Named else "an operator"
             raise Unsupported(f"an engine step ({what}) that moves with the point")
@@ -513,6 +525,9 @@ class _Derivative:
         if op == "entry":
             x = self.dref(a[0])
             return None if x is None else add("entry", (x,) + tuple(a[1:]))
+        if op == "apply":
+            x = self.dref(a[1])
+            return None if x is None else add("apply", (p(a[0]), x))
         if op == "block":
             rows, cols, blocks = a
             ds = [self.dref(b) for b in blocks]
@@ -567,6 +582,16 @@ class _Derivative:
                 new_rows = tuple(add("list", tuple(c if c is not None else 0 for c in row)) for row in cells)
                 return add("call", (S, "mat", (add("list", new_rows), tags), ()))
         raise AssertionError(f"no rule for {op}")
+
+
+def _own_operator(g: Graph, a: tuple, k: int) -> bool:
+    """Whether an ``apply`` node's arguments ``a`` apply the symmetric operator of the function's own
+    scene (``s.sym_operator(name)``, k the function's number) to one matrix."""
+    f = a[0]
+    if len(a) != 2 or type(f) is not Ref or g.ops[f.i] != "call" or g.args[f.i][1] != "sym_operator":
+        return False
+    sc = g.args[f.i][0]
+    return type(sc) is Ref and g.ops[sc.i] == "scene" and g.args[sc.i] == (k,)
 
 
 _NESTED = {"d": "derivative along a flow", "gradient": "gradient", "dirac_flow": "flow",
@@ -817,11 +842,7 @@ class _Gradient(_Derivative):
             if not (type(a[0]) is Ref and g.ops[a[0].i] == "attr" and g.args[a[0].i][1] == "a"):
                 raise Unsupported("a part of a value inside the function of a gradient")
         elif op == "apply":
-            f = a[0]
-            sc = g.args[f.i][0] if type(f) is Ref and g.ops[f.i] == "call" else None
-            own = (g.args[f.i][1] == "sym_operator" and type(sc) is Ref and g.ops[sc.i] == "scene"
-                   and g.args[sc.i] == (self.k,)) if sc is not None else False
-            if len(a) != 2 or not own or self.moving(f):
+            if not _own_operator(g, a, self.k):
                 raise Unsupported("an operator other than the scene's symmetric operator inside the function of a gradient")
         elif op == "list":
             return                          # the rows of a matrix of given entries (s.mat sends to its cells)
@@ -1157,6 +1178,29 @@ class _Bracket:
         # the value with the flow (made, and checked, whatever F reads) and F's gradient (F evaluated,
         # as the scene evaluates it, where its gradient is 0)
         return add("item", (add("tuple", (flow, value, pair)), 1))
+
+
+#: what a scene says (``_graph_flows``) when its Dirac bracket is the derivative of F along its own Dirac flow
+#: of G (the free algebra's): the derivative is then graph nodes, the flow the scene's
+BRACKET_ALONG_FLOW = "bracket along the scene's Dirac flow"
+
+
+class _BracketAlongFlow(_Derivative):
+    """{F, G} = dF/dt along the scene's own Dirac flow of G (a ``call dirac_flow`` node): the derivative
+    by the tangent map of :class:`_Derivative`, the flow computed by the scene (on the free algebra, whose
+    multipliers are solved modulo its rewriting system)."""
+
+    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, i: int) -> None:
+        scene, name, args, kw = g.args[i]
+        if kw or len(args) != 2:
+            raise Unsupported("a Dirac bracket with further arguments")
+        F, self.G = args
+        if type(self.G) is not Ref or g.ops[self.G.i] != "fn":
+            raise Unsupported("a Dirac bracket of something that is not a traced function")
+        super().__init__(g, deps, new, remap, i, F)
+
+    def make_flow(self) -> Ref:
+        return self.add("call", (self.S, "dirac_flow", (self.remap[self.G.i],), ()))
 
 
 #: the calls the pass rewrites, by scene method
