@@ -292,6 +292,55 @@ def test_random_functions_agree_on_the_free_algebra(seed):
     assert outs[0] == outs[1]
 
 
+@pytest.mark.parametrize("seed", range(8))
+def test_random_jacobians_agree_with_dual_numbers(seed):
+    """A Jacobian at a size the graph fixes: its 2nr columns are derivatives along the unit tangent
+    vectors, in graph nodes, and give the scene's Jacobian (matrices read entry by entry, or by their
+    upper triangles), with its look at coordinates recorded."""
+    rng = random.Random(1500 + seed)
+    body = [_expr(rng, k, 3) for k in ("nr", "rr", "sc")]
+
+    def func(s):
+        J = s.jacobian(lambda t: [_build(t, e) for e in body])
+        S = s.jacobian(lambda t: [t.X.T @ t.X, _build(t, body[1]) + _build(t, body[1]).T], True)
+        return {"J": s.mat(J, ("cond", "cond")), "S": s.mat(S, ("cond", "cond"))}
+    g = compile_claim(func, 3, 2, STANDARD)
+    assert [why for _, why in coverage(g, "jacobian")] == [None, None]
+    assert derivatives(g) is not g and _agree(g, 3, 2)
+
+
+def test_a_jacobian_with_symbolic_sizes_stays_with_the_scene():
+    def func(s):
+        return {"J": s.mat(s.jacobian(lambda t: [t.X.T @ t.P]), ("cond", "cond"))}
+    g = compile_claim(func, 3, 2, STANDARD)
+    g.sizes = None
+    _forget(g)
+    (_, why), = coverage(g, "jacobian")
+    assert "symbolic sizes" in why
+
+
+def test_a_wrong_unit_tangent_is_caught(monkeypatch):
+    """A negative control: the columns of X and P swapped (the unit tangents of P first) change the
+    Jacobian, and a claim on its rank pattern fails."""
+    orig = Scene._unit_tangent
+
+    def swapped(self, k):
+        m = self.n * self.r
+        return orig(self, (k + m) % (2 * m))
+    monkeypatch.setattr(Scene, "_unit_tangent", swapped)
+
+    def func(s):
+        J = s.jacobian(lambda t: [t.X.T @ t.X])
+        return {"dXᵀX/dP": s.mat([row[s.n * s.r:] for row in J], ("cond", "cond"))}
+    g = compile_claim(func, 3, 2, STANDARD)
+    _forget(g)
+    assert not _agree(g, 3, 2)
+    assert run_one(_claim(func, "jacobian-dP"), Size(3, 2), "modular", 0).verdict == "fails"
+    monkeypatch.undo()
+    _forget(g)
+    assert run_one(_claim(func, "jacobian-dP"), Size(3, 2), "modular", 0).verdict == "checked"
+
+
 def _free_values(g, flows=None):
     """The graph's checks on a lazy free scene, as traced and transformed (the scene's flows, or
     ``flows``), each reduced to its normal form."""

@@ -1203,7 +1203,68 @@ class _BracketAlongFlow(_Derivative):
         return self.add("call", (self.S, "dirac_flow", (self.remap[self.G.i],), ()))
 
 
+#: the engine steps of a Jacobian (registered below)
+UNIT_TANGENT = "stiefelsym.ir.derivative.unit_tangent"
+JACOBIAN = "stiefelsym.ir.derivative.jacobian_rows"
+
+
+def unit_tangent(scene: Any, k: int) -> dict:
+    """The k-th unit tangent vector of the 2nr coordinates of X, P (X's entries by rows, then P's), as
+    the scene's Jacobian moves the point.  Engine step of the transformed graphs."""
+    f = getattr(scene, "_unit_tangent", None)
+    if f is None:
+        raise TypeError(f"a Jacobian on a {type(scene).__name__} (a scene with no coordinates of X, P)")
+    return f(k)
+
+
+def jacobian_rows(scene: Any, symmetric: bool, *columns: Any) -> list:
+    """The Jacobian (rows: the scalar components of F, columns: the 2nr coordinates) from its columns,
+    the derivatives of F along the unit tangent vectors, as the scene's Jacobian hands it on.  Engine
+    step of the transformed graphs."""
+    f = getattr(scene, "_jacobian_rows", None)
+    if f is None:
+        raise TypeError(f"a Jacobian on a {type(scene).__name__} (a scene with no coordinates of X, P)")
+    return f(symmetric, columns)
+
+
+PRIMITIVES[UNIT_TANGENT] = unit_tangent
+PRIMITIVES[JACOBIAN] = jacobian_rows
+
+
+class _Jacobian:
+    """``s.jacobian(F, symmetric)`` at a size the graph fixes: its 2nr columns, the derivatives of F's
+    body along the unit tangent vectors (:class:`_Derivative`, each along one :func:`unit_tangent`), the
+    rows made by one engine step, :func:`jacobian_rows` (F's matrices read entry by entry, or by their
+    upper triangles when ``symmetric``)."""
+
+    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, i: int) -> None:
+        scene, name, args, kw = g.args[i]
+        if kw or len(args) != 2 or type(args[1]) is not bool:
+            raise Unsupported("a Jacobian with other arguments")
+        if g.sizes is None:
+            raise Unsupported("a Jacobian in a graph traced with symbolic sizes (its columns are 2nr)")
+        n, r = g.sizes
+        self.new, self.symmetric = new, args[1]
+        self.columns = [_Along(g, deps, new, remap, i, args[0], k) for k in range(2 * n * r)]
+        self.S = remap[scene.i]
+
+    def build(self) -> Ref:
+        cols = tuple(c.build() for c in self.columns)
+        return self.new.add("prim", (Named(JACOBIAN), self.S, self.symmetric) + cols)
+
+
+class _Along(_Derivative):
+    """The derivative of F along the k-th unit tangent vector (a column of a Jacobian)."""
+
+    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, i: int, f: Any, k: int) -> None:
+        super().__init__(g, deps, new, remap, i, f)
+        self.unit = k
+
+    def make_flow(self) -> Ref:
+        return self.add("prim", (Named(UNIT_TANGENT), self.S, self.unit))
+
+
 #: the calls the pass rewrites, by scene method
-_PASSES = {"d": _Derivative, "gradient": _Gradient}
+_PASSES = {"d": _Derivative, "gradient": _Gradient, "jacobian": _Jacobian}
 #: the flows and brackets it rewrites where the scene lets the graph compute them (:func:`scene_flows`)
 _FLOW_PASSES = {"dirac_flow": _Flow, "multiplier_flow": _Flow, "canonical_flow": _Flow, "bracket": _Bracket}
