@@ -1052,6 +1052,24 @@ class Scene(PaperObjects):
             cols.append([x.b if isinstance(x, Dual) else self.const(0) for x in values])
         return [list(row) for row in zip(*cols)]
 
+    def _unit_tangent(self, k: int) -> dict[str, Mat]:
+        """The k-th of :meth:`_unit_tangents` (a column of a Jacobian the graph computes)."""
+        n, r = self.n, self.r
+        if not 0 <= k < 2 * n * r:
+            raise ValueError(f"no unit tangent vector {k} of the {2 * n * r} coordinates of X, P")
+        zero = self.zeros(n, r, ("n", "r"))
+        E = self.zeros(n, r, ("n", "r"))
+        i, j = divmod(k % (n * r), r)
+        E._a[i, j] = self.const(1)
+        return {"X": E, "P": zero} if k < n * r else {"X": zero, "P": E}
+
+    def _jacobian_rows(self, symmetric: bool, columns: tuple) -> list[list[Scalar]]:
+        """The Jacobian from its columns (the derivatives of F along the unit tangent vectors) the graph
+        computed, handed on as :meth:`jacobian` hands its own (its look at coordinates recorded)."""
+        self.tracker.touch("a Jacobian in the coordinates of X, P")
+        cols = [_flatten_value(v, symmetric) for v in columns]
+        return _opaque(self, [list(row) for row in zip(*cols)])
+
     def gradient(self, H: Function) -> tuple[Mat, Mat]:
         """(dH/dX, dH/dP) for a scalar function H of the scene: reverse mode over the matrix
         operations (one evaluation of H and one backward sweep), or 2nr forward passes when H

@@ -1426,6 +1426,12 @@ class FreeScene(PaperObjects):
         """The Dirac bracket {F, G} = derivative of F along the Dirac flow of G."""
         return self.d(F, self.dirac_flow(G))
 
+    def _graph_flows(self) -> frozenset:
+        """What the graph may compute of the flows and brackets here (see :mod:`stiefelsym.ir.derivative`):
+        the bracket, as the derivative along the Dirac flow, which the scene solves."""
+        from stiefelsym.ir.derivative import BRACKET_ALONG_FLOW
+        return frozenset({BRACKET_ALONG_FLOW})
+
     def _share(self, base: "FreeScene") -> None:
         """What a scene made from ``base`` (its tangent scene, a function's scene) shares with it: the
         parameters, the resolvents, the extra letters, the columns and the square case."""
