@@ -159,4 +159,5 @@ class RightInverseIdentities(InverseIdentities):
         source, target = " × ".join(self.on), " × ".join(self.to)
         dim = " + ".join(DIMENSIONS[d] for d in self.to)
         return (f"{self.meaning + ': ' if self.meaning else ''}op(inv(y)) = y for generic y in {target}, "
-                f"at every point (op maps {source} onto {target}: full rank dim({target}) = {dim})")
+                f"at every point (op maps {source} onto {target}; where op is linear, as a differential, it has "
+                f"full rank dim({target}) = {dim})")
