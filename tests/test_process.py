@@ -780,3 +780,17 @@ def test_an_isolated_attempt_dies_with_the_process_that_forked_it():
     while _alive(child) and time.monotonic() < deadline:
         time.sleep(0.05)
     assert not _alive(child)
+
+
+def _abort_job(task):
+    _abort()
+
+
+@needs_fork
+def test_a_worker_killed_by_sigabrt_is_said_to_have_aborted_as_flint_does():
+    """A worker that dies by SIGABRT (flint's answer to a failed allocation) is reported with that reading of the
+    signal, as the isolated symbolic attempt is."""
+    with WorkerPool(_abort_job, workers=1, timeout=60, memory=3 * GIB) as pool:
+        (outcome,) = [o for _, o in pool.run(["only"])]
+    assert outcome.kind == "died", outcome
+    assert "killed by SIGABRT; a native library aborted, as flint does" in outcome.message, outcome.message

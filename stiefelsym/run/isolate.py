@@ -74,10 +74,9 @@ def run_isolated(fn: Callable[[], Any], seconds: float, describe: Callable[[Base
 def how_it_ended(status: int) -> str:
     """A wait status in words: the signal that killed the process, or its exit status."""
     if os.WIFSIGNALED(status):
-        from stiefelsym.run.pool import signal_name
+        from stiefelsym.run.pool import ABORT_HINT, signal_name
         sig = os.WTERMSIG(status)
-        hint = ("; a native library aborted, as flint does when an allocation fails under the memory budget"
-                if sig == signal.SIGABRT else "")
+        hint = ABORT_HINT if sig == signal.SIGABRT else ""
         return f"killed by {signal_name(sig)}{hint}"
     if os.WIFEXITED(status):
         return f"exit status {os.WEXITSTATUS(status)}"

@@ -281,9 +281,14 @@ def signal_name(sig: int) -> str:
         return f"signal {sig}"
 
 
+#: said of a process killed by SIGABRT: flint aborts the process when an allocation fails
+ABORT_HINT = "; a native library aborted, as flint does when an allocation fails under the memory budget"
+
+
 def _died(status: int) -> str:
     if os.WIFSIGNALED(status):
-        return f"killed by {signal_name(os.WTERMSIG(status))}"
+        sig = os.WTERMSIG(status)
+        return f"killed by {signal_name(sig)}{ABORT_HINT if sig == signal.SIGABRT else ''}"
     if os.WIFEXITED(status):
         return f"the worker process exited with status {os.WEXITSTATUS(status)}"
     return f"wait status {status}"
