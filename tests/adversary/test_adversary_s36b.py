@@ -5,6 +5,8 @@ is the CLI in a fresh process (but the last test, which runs one graph several t
 compiled), and each test asserts the CORRECT outcome."""
 import re
 
+import pytest
+
 from adversary_cli import HERE, PASSING, cli
 from test_adversary_s34b import by_claim, fixed, run_all
 
@@ -84,3 +86,18 @@ def test_one_graph_evaluated_again_in_one_process_keeps_its_verdict():
             assert [run_one(c, size, "exact", 0).verdict for _ in range(3)] == [want] * 3, (want, size)
         compiled += [v for k, v in fs._STRAIGHT.items() if type(v) is fs._Straight]
     assert len(compiled) >= 6
+
+
+@pytest.mark.xfail(strict=True, reason="s.jacobian(F, symmetric=True) does not check that F is symmetric: the rank "
+                   "of the upper triangle's rows is taken for the rank of F's differentials (open; see the README)")
+def test_a_symmetric_jacobian_of_a_function_that_is_not_symmetric_is_not_passed():
+    """s.jacobian(F, True) reads each matrix of F by its upper triangle (meant for symmetric F, the constraints').
+    For F = XᵀP (r x r, not symmetric) the claim "the 4 entries of XᵀP have 3 independent differentials" is
+    proved (exact) and checked (modular, rational, auto) at (3,2): they have 4 (the control, read entry by entry,
+    is proved with 4).  A non-square F is refused when traced.  The correct outcome: not a pass (an error: the
+    derivative of F along a unit direction is not symmetric)."""
+    got = by_claim(run_all("s36b_jacobian_symmetric.py", size="3,2", methods=("exact", "modular", "rational", "auto"),
+                           free=False))
+    assert fixed(got["adv-s36b-jacobian-symmetric-control"]) <= set(PASSING)
+    assert fixed(got["adv-s36b-jacobian-symmetric-wide"]) == {"error"}
+    assert not fixed(got["adv-s36b-jacobian-symmetric-not-symmetric"]) & set(PASSING), got
