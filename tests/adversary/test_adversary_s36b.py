@@ -1,11 +1,9 @@
 """Round 6b: the exact method's straight-line programs (stiefelsym/ir/straightline.py) and the derivative
 transforms of coordinate reads, the symmetric operator, Jacobians and the free bracket (stiefelsym/ir/derivative.py),
 each against a truth written out by hand (tests/adversary/README.md, the "Round 6b" table).  As before: every run
-is the CLI in a fresh process (but the last test, which runs one graph several times in one process so that it is
-compiled), and each test asserts the CORRECT outcome."""
+is the CLI in a fresh process (but the tests that run one graph several times in one process, so that it is
+compiled, and that compare the two routes of a Jacobian), and each test asserts the CORRECT outcome."""
 import re
-
-import pytest
 
 from adversary_cli import HERE, PASSING, cli
 from test_adversary_s34b import by_claim, fixed, run_all
@@ -88,16 +86,40 @@ def test_one_graph_evaluated_again_in_one_process_keeps_its_verdict():
     assert len(compiled) >= 6
 
 
-@pytest.mark.xfail(strict=True, reason="s.jacobian(F, symmetric=True) does not check that F is symmetric: the rank "
-                   "of the upper triangle's rows is taken for the rank of F's differentials (open; see the README)")
-def test_a_symmetric_jacobian_of_a_function_that_is_not_symmetric_is_not_passed():
+def test_a_symmetric_jacobian_of_a_function_that_is_not_symmetric_is_refused():
     """s.jacobian(F, True) reads each matrix of F by its upper triangle (meant for symmetric F, the constraints').
-    For F = XᵀP (r x r, not symmetric) the claim "the 4 entries of XᵀP have 3 independent differentials" is
+    For F = XᵀP (r x r, not symmetric) the claim "the 4 entries of XᵀP have 3 independent differentials" was
     proved (exact) and checked (modular, rational, auto) at (3,2): they have 4 (the control, read entry by entry,
-    is proved with 4).  A non-square F is refused when traced.  The correct outcome: not a pass (an error: the
-    derivative of F along a unit direction is not symmetric)."""
+    is proved with 4).  Closed: the scene refuses a Jacobian read by upper triangles of a matrix whose derivative
+    along a unit direction is not symmetric (Scene._symmetric_derivative, in the graph's and the scene's own
+    routes): error.  A non-square F was refused when traced already."""
     got = by_claim(run_all("s36b_jacobian_symmetric.py", size="3,2", methods=("exact", "modular", "rational", "auto"),
                            free=False))
     assert fixed(got["adv-s36b-jacobian-symmetric-control"]) <= set(PASSING)
     assert fixed(got["adv-s36b-jacobian-symmetric-wide"]) == {"error"}
-    assert not fixed(got["adv-s36b-jacobian-symmetric-not-symmetric"]) & set(PASSING), got
+    assert fixed(got["adv-s36b-jacobian-symmetric-not-symmetric"]) == {"error"}, got
+
+
+def test_the_symmetry_check_in_both_routes():
+    """The same check where the graph computes the Jacobian (its columns) and where the scene does (a body the
+    pass leaves to the scene: a nested gradient); a symmetric F (XᵀAX, PᵀP, a number; Xᵀ∇(tr XᵀAX) + XᵀX) passes
+    in both."""
+    import sys
+    sys.path.insert(0, str(HERE.parent))
+    from test_ir_derivative import STANDARD, _both, compile_claim, coverage
+    nested = lambda t: t.gradient(lambda u: u.tr(u.X.T @ u.A @ u.X))[0]      # noqa: E731
+    cases = {
+        (None, "error"): lambda s: {"j": s.jacobian(lambda t: t.X.T @ t.P, True)},
+        ("s.gradient inside the function (a nested gradient)", "error"):
+            lambda s: {"j": s.jacobian(lambda t: t.X.T @ nested(t) + t.X.T @ t.P, True)},
+        ("s.gradient inside the function (a nested gradient)", "ok"):
+            lambda s: {"j": s.jacobian(lambda t: t.X.T @ nested(t) + t.X.T @ t.X, True)},
+        (None, "ok"): lambda s: {"j": s.jacobian(lambda t: [t.X.T @ t.A @ t.X, t.P.T @ t.P, t.tr(t.Psi @ t.Psi)], True)},
+    }
+    for (route, want), func in cases.items():
+        g = compile_claim(func, 3, 2, STANDARD)
+        assert [why for _, why in coverage(g, "jacobian")] == [route]
+        got = _both(g, 3, 2)
+        assert [o[0] for o in got] == [want, want], (route, got)
+        if want == "error":
+            assert [o[1] for o in got] == ["ValueError", "ValueError"], got
