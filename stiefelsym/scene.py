@@ -1038,7 +1038,8 @@ class Scene(PaperObjects):
         """Rows: scalar components of F (a scalar or list of Mats); columns: the 2nr coordinates.
 
         ``symmetric``: F's matrices are symmetric and only their upper triangles count (the
-        default for the scene's own constraint functions, whose scalar constraints they are).
+        default for the scene's own constraint functions, whose scalar constraints they are); a
+        matrix whose derivative is not symmetric is refused (:meth:`_symmetric_derivative`).
         ``scalar``: F must be a scalar function (a Hamiltonian), never a matrix read at one entry."""
         if symmetric is None:
             symmetric = F is self.constraints.build
@@ -1048,9 +1049,31 @@ class Scene(PaperObjects):
             if scalar and isinstance(value, (Mat, list, tuple, dict)):
                 raise TypeError("a Hamiltonian (a function whose gradient, flow or bracket is taken) must be "
                                 f"a scalar function of the scene, not a {type(value).__name__}")
+            if symmetric:
+                self._symmetric_derivative(value, lambda x: x.b if isinstance(x, Dual) else self.const(0))
             values = _flatten_value(value, symmetric)
             cols.append([x.b if isinstance(x, Dual) else self.const(0) for x in values])
         return [list(row) for row in zip(*cols)]
+
+    def _symmetric_derivative(self, value: Any, part: Callable[[Any], Any]) -> None:
+        """Refuse a Jacobian read by upper triangles (``symmetric``) of a matrix whose derivative along a unit
+        direction (``part`` of each entry of ``value``) is not symmetric: its lower triangle is then not the
+        upper one again, and the rows of the upper triangle are not all of F's differentials (their rank
+        would be too small).  Decided exactly in the exact fields; floats, balls and degree markers stand for
+        the exact evaluation, which the exact methods make."""
+        if self._approximates_point():
+            return
+        if isinstance(value, Mat):
+            a, f = value._a, self._field
+            m = a.shape[0]
+            for i in range(m):
+                for j in range(i + 1, m):
+                    if not f.is_zero(part(a[i, j]) - part(a[j, i])):
+                        raise ValueError("a Jacobian read by upper triangles (symmetric=True) of a matrix that is not "
+                                         f"symmetric: its derivative differs at ({i}, {j}) and ({j}, {i})")
+        elif isinstance(value, (list, tuple)):
+            for x in value:
+                self._symmetric_derivative(x, part)
 
     def _unit_tangent(self, k: int) -> dict[str, Mat]:
         """The k-th of :meth:`_unit_tangents` (a column of a Jacobian the graph computes)."""
@@ -1067,6 +1090,9 @@ class Scene(PaperObjects):
         """The Jacobian from its columns (the derivatives of F along the unit tangent vectors) the graph
         computed, handed on as :meth:`jacobian` hands its own (its look at coordinates recorded)."""
         self.tracker.touch("a Jacobian in the coordinates of X, P")
+        if symmetric:
+            for v in columns:
+                self._symmetric_derivative(v, lambda x: x)
         cols = [_flatten_value(v, symmetric) for v in columns]
         return _opaque(self, [list(row) for row in zip(*cols)])
 
