@@ -189,6 +189,8 @@ def _transform(g: Graph, flows: frozenset = frozenset()) -> tuple[Graph, list]:
         elif op == "prim" and a[0].qualname in _TWISTED_STEPS:
             if TWISTED in flows:
                 rewrite = _Twisted
+            elif TWISTED_ALONG_FLOW in flows and a[0].qualname == "stiefelsym.twisted.bracket":
+                rewrite = _TwistedAlongFlow
             else:
                 report.append((i, a[0].qualname, "the scene's own gradients (not a coordinate scene)"))
         if rewrite is not None:
@@ -242,7 +244,7 @@ class _Derivative:
     def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, i: int, f: Any = None,
                  at: tuple | None = None) -> None:
         self.g, self.deps, self.new, self.remap = g, deps, new, remap
-        scene, name, args, kw = g.args[i]
+        scene, name, args, kw = g.args[i] if at is None else at + ((), ())
         if f is None:
             if kw or len(args) != 2:
                 raise Unsupported("a derivative with further arguments")
@@ -1313,6 +1315,40 @@ class _Twisted:
         pairs = tuple(gr.build() for gr in self.grads)
         F = self.remap[self.F.i] if type(self.F) is Ref else self.F
         return add("prim", (Named(self.step), S) + tuple(self.remap[f.i] for f in self.fs) + (F, eps) + pairs)
+
+
+#: what the free algebra says (``_graph_flows``) when its magnetic bracket is the derivative of f along its
+#: own magnetic flow of g (``twisted.bracket`` there): the derivative is then graph nodes, the flow the scene's
+TWISTED_ALONG_FLOW = "magnetic bracket along the scene's magnetic flow"
+
+
+class _TwistedAlongFlow(_Derivative):
+    """``twisted.bracket(s, f, g, F)`` on the free algebra: the derivative of f (by the tangent map of
+    :class:`_Derivative`) along the scene's own twisted flow of g, a ``twisted.flow`` step (whose Λ, Π
+    the free algebra solves), as the scene's bracket computes it."""
+
+    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, i: int) -> None:
+        a = g.args[i]
+        if a[0].qualname != "stiefelsym.twisted.bracket":
+            raise Unsupported("a magnetic flow the scene solves")
+        rest, self.F = a[4:], None
+        if len(rest) == 1 and type(rest[0]) is Ref and g.ops[rest[0].i] == "kw":
+            kw = g.args[rest[0].i]
+            if [k for k, _ in kw] != ["F"]:
+                raise Unsupported("a magnetic bracket with further arguments")
+            self.F = kw[0][1]
+        elif len(rest) == 1:
+            self.F = rest[0]
+        elif rest:
+            raise Unsupported("a magnetic bracket with further arguments")
+        f, self.G = a[2], a[3]
+        if type(self.G) is not Ref or g.ops[self.G.i] != "fn":
+            raise Unsupported("a magnetic bracket of something that is not a traced function")
+        super().__init__(g, deps, new, remap, i, f, at=(a[1], "bracket"))
+
+    def make_flow(self) -> Ref:
+        F = self.remap[self.F.i] if type(self.F) is Ref else self.F
+        return self.add("prim", (Named("stiefelsym.twisted.flow"), self.S, self.remap[self.G.i], F))
 
 
 #: the calls the pass rewrites, by scene method
