@@ -1053,3 +1053,23 @@ def test_a_wrong_free_magnetic_flow_is_caught(monkeypatch):
     func = lambda s: claim.func(s)      # noqa: E731 - a function object of its own: traced and transformed anew
     res = run_one(dataclasses.replace(claim, func=func), None, "free", 0)
     assert res.verdict == "undecided" and "epsilon" in str(res.message)     # the residual: the ε terms
+
+
+def test_coverage_of_the_catalog_magnetic_steps(catalog):
+    """At (4,2) on a coordinate scene 38 of the catalog's 46 magnetic flows and brackets take the graph's
+    gradients; the others are a bracket of a bracket (the Jacobi identity of the twisted bracket) and
+    steps inside a function of the scene (the bracket inside it, a flow at another point)."""
+    s = Scene(4, 2, ModularField(P61), chart="cayley", rng=random.Random(1))
+    counts: dict[str, list[int]] = {}
+    reasons = set()
+    for c, g in _graphs_at_4_2(catalog):
+        for name in _TWISTED_STEPS:
+            for _, why in coverage(g, name, scene_flows(s)):
+                k = counts.setdefault(name, [0, 0])
+                k[0] += why is None
+                k[1] += 1
+                if why is not None:
+                    reasons.add(why)
+    assert counts == {"stiefelsym.twisted.flow": [16, 18], "stiefelsym.twisted.bracket": [22, 28]}
+    assert reasons == {"a gradient on a scene other than the claim's (inside a function of the scene)",
+                       "a prim whose kind (number or matrix) the graph does not show"}
