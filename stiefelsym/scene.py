@@ -1147,20 +1147,14 @@ class Scene(PaperObjects):
 
     def _constraint_gradients(self) -> list[tuple[Mat, Mat]]:
         """The gradients of the scalar constraints F_i (the upper triangles of the realization's
-        constraint matrices), by reverse mode: one evaluation of the constraints, one backward
-        sweep per scalar constraint (or the 2nr-column Jacobian when reverse mode cannot)."""
+        constraint matrices): in closed form for (cond_XP) (:meth:`_standard_constraint_gradients`),
+        elsewhere by reverse mode (or the 2nr-column Jacobian when reverse mode cannot)."""
         def build():
+            if self.realization == "standard" and not isinstance(self, _LiftedScene):
+                return self._standard_constraint_gradients()
             if REVERSE_GRADIENTS:
                 try:
-                    rs = ReverseScene(self)
-                    X, P = rs.X, rs.P
-                    scalars = _flatten_value(self.constraints.build(rs), True)
-                    leaves = [rs.leaves[k] for k in ("X", "P")]
-                    out = []
-                    for F in scalars:
-                        gX, gP = rev_gradient(F, leaves, self.const(1)) if isinstance(F, Rev) else (None, None)
-                        out.append((self._as_nr(gX), self._as_nr(gP)))
-                    return out
+                    return self._reverse_constraint_gradients()
                 except Unsupported:
                     pass
             n, r = self.n, self.r
@@ -1172,6 +1166,37 @@ class Scene(PaperObjects):
                 out.append((gX, gP))
             return out
         return self._cached("grad F", build)
+
+    def _reverse_constraint_gradients(self) -> list[tuple[Mat, Mat]]:
+        """The gradients of the scalar constraints by reverse mode: one evaluation of the constraints,
+        one backward sweep per scalar constraint."""
+        rs = ReverseScene(self)
+        X, P = rs.X, rs.P
+        scalars = _flatten_value(self.constraints.build(rs), True)
+        leaves = [rs.leaves[k] for k in ("X", "P")]
+        out = []
+        for F in scalars:
+            gX, gP = rev_gradient(F, leaves, self.const(1)) if isinstance(F, Rev) else (None, None)
+            out.append((self._as_nr(gX), self._as_nr(gP)))
+        return out
+
+    def _standard_constraint_gradients(self) -> list[tuple[Mat, Mat]]:
+        """The gradients of the scalar constraints of (cond_XP) in closed form, in the order of
+        :meth:`_constraint_gradients` (the upper triangle of XᵀX − I_r, then of XᵀP + PᵀX): with
+        S_ij = E_ij + E_ji (2E_ii on the diagonal), the (i, j) entry of XᵀX has the X-gradient XS_ij and
+        no P-gradient, the (i, j) entry of XᵀP + PᵀX the X-gradient PS_ij and the P-gradient XS_ij."""
+        n, r = self.n, self.r
+        X, P = self.X, self.P
+        units = []
+        for i in range(r):
+            for j in range(i, r):
+                S = self.zeros(r, r, ("r", "r"))
+                S._a[i, j] = S._a[i, j] + self.const(1)
+                S._a[j, i] = S._a[j, i] + self.const(1)
+                units.append(S)
+        out = [(self._as_nr(X @ S), self.zeros(n, r, ("n", "r"))) for S in units]
+        out += [(self._as_nr(P @ S), self._as_nr(X @ S)) for S in units]
+        return out
 
     def _as_nr(self, g) -> Mat:
         """An adjoint from the tape as an n x r matrix of the scene (zero when absent)."""
@@ -1534,8 +1559,10 @@ class Scene(PaperObjects):
         multiplier flows and the Dirac bracket where the multipliers have the closed forms of
         :meth:`_closed_form_multipliers`, decided without building the point (so parameters are
         drawn in the order the claim uses them); XᵀX = I_r is checked exactly when the flow is handed
-        on (:meth:`_graph_flow`)."""
-        kinds = {"canonical_flow"}
+        on (:meth:`_graph_flow`).  The magnetic systems' flows and brackets take the graph's gradients
+        on every coordinate scene (their multipliers stay the engine's)."""
+        from stiefelsym.ir.derivative import TWISTED
+        kinds = {"canonical_flow", TWISTED}
         approx = self._approximates_point()
         if (CLOSED_FORM_MULTIPLIERS and self.realization == "standard" and self.chart in ("cayley", "equivariant")
                 and (self._field.exact or approx)

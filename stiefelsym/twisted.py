@@ -25,7 +25,7 @@ from typing import Any, Callable, Mapping
 from stiefelsym.backends.fields import DegenerateError, Dual, DualField
 from stiefelsym.backends.matrix import Mat, _refused
 from stiefelsym.scene import Flow, Scene
-from stiefelsym.ir.trace import TraceScene, primitive
+from stiefelsym.ir.trace import PRIMITIVES, TraceScene, primitive
 
 Function = Callable[[Any], Any]
 
@@ -177,10 +177,16 @@ def bracket(s, f: Function, g: Function, F: Mat | None = None) -> Any:
     if _is_free(s):
         return s.d(f, _free_flow(s, g, F))
     s = _scene(s, "the twisted Dirac bracket")
+    return _bracket(s, F, lambda: (s.gradient(f), s.gradient(g)))
+
+
+def _bracket(s: Scene, F: Mat | None, gradients: Callable[[], tuple[Pair, Pair]]) -> Any:
+    """The twisted Dirac bracket of two functions on a coordinate scene, from their gradients
+    (``gradients``, taken after the constraint bracket matrix is built, as the scene draws ε first)."""
     Fm = _field_strength(s, F)
     G = _constraint_gradients(s)
     C = _inverse(s, F)
-    gf, gg = s.gradient(f), s.gradient(g)
+    gf, gg = gradients()
     pig = _pi(s, gg, Fm)                                     # W⁻¹∇g
     acc = _pair_dot(s, gf, pig)
     if not G:
@@ -210,12 +216,18 @@ def flow(s, H: Function, F: Mat | None = None) -> Flow:
     if _is_free(s):
         return _free_flow(s, H, F)
     s = _scene(s, "the Hamiltonian flow of the twisted form")
+    return _flow(s, H, F, lambda: s.gradient(H))
+
+
+def _flow(s: Scene, H: Function, F: Mat | None, gradient: Callable[[], Pair]) -> Flow:
+    """The twisted flow of H on a coordinate scene from H's gradient (``gradient``, taken after the
+    constraint bracket matrix is built, as the scene draws ε first)."""
     Fm = _field_strength(s, F)
 
     def build():
         G = _constraint_gradients(s)
         C = _inverse(s, F)
-        zX, zP = _pi(s, s.gradient(H), Fm)                  # W⁻¹∇H
+        zX, zP = _pi(s, gradient(), Fm)                     # W⁻¹∇H
         FjH = [_pair_dot(s, g, (zX, zP)) for g in G]        # {F_j, H}_ε
         w = [s.field.normalize(sum((c * x for c, x in zip(Ci, FjH)), s.const(0))) for Ci in C]
         for wi, g in zip(w, G):                             # {z, F_i}_ε = W⁻¹∇F_i
@@ -474,3 +486,24 @@ for _name in ("basis_vector", "last_basis_vector", "leading_basis_vectors", "blo
               "eigenspace_projector", "kernel_frame", "kernel_annihilator"):
     globals()[_name] = primitive(globals()[_name], constant=True)
 at_point = primitive(at_point, returns="scene")
+
+
+# the flow and the bracket with the gradients the graph computed (see :mod:`stiefelsym.ir.derivative`,
+# which rewrites ``flow(s, H)`` and ``bracket(s, f, g)`` into these on a coordinate scene)
+def graph_flow(s: Scene, H: Function, F: Mat | None, eps: Any, pair: Pair) -> Flow:
+    """:func:`flow` of H for the field strength F with H's gradient ``pair`` computed by the graph
+    (``eps``: the scene's ε, drawn before H is evaluated, as :func:`flow` draws it).  Engine step of the
+    transformed graphs."""
+    s = _scene(s, "the Hamiltonian flow of the twisted form")
+    return _flow(s, H, F, lambda: pair)
+
+
+def graph_bracket(s: Scene, f: Function, g: Function, F: Mat | None, eps: Any, pf: Pair, pg: Pair) -> Any:
+    """:func:`bracket` of f and g for the field strength F with their gradients ``pf``, ``pg`` computed
+    by the graph.  Engine step of the transformed graphs."""
+    s = _scene(s, "the twisted Dirac bracket")
+    return _bracket(s, F, lambda: (pf, pg))
+
+
+PRIMITIVES[f"{__name__}.flow:graph"] = graph_flow
+PRIMITIVES[f"{__name__}.bracket:graph"] = graph_bracket

@@ -599,7 +599,7 @@ def test_what_the_scene_keeps_computing():
     g = compile_claim(prep, 4, 2, (REALIZATIONS["metric"].name, REALIZATIONS["metric"].build))
     s = Scene(4, 2, ModularField(P61), chart="cayley", rng=random.Random(1), realization="metric")
     assert "dirac_flow" not in scene_flows(s) and "canonical_flow" in scene_flows(s)
-    assert scene_flows(FreeScene(lazy=True)) == frozenset({deriv.BRACKET_ALONG_FLOW})
+    assert scene_flows(FreeScene(lazy=True)) == frozenset({deriv.BRACKET_ALONG_FLOW, deriv.TWISTED_ALONG_FLOW})
     (_, why), = coverage(g, "dirac_flow", scene_flows(s))
     assert "realization" in why
 
@@ -876,3 +876,200 @@ def test_off_V_the_scene_computes_the_flow():
     assert _same(flow.Xdot, s.dirac_flow(H_neumann).Xdot) and not _same(flow.Xdot, wrong)
     s._cache["on V"] = True
     assert deriv.graph_flow(s, "dirac_flow", H_neumann, wrong, wrong).Xdot is wrong
+
+
+# -- the magnetic systems' flows and brackets, and the constraint gradients in closed form ------------
+
+def _magnetic_claim(H, F, field_strength: bool):
+    from stiefelsym import twisted
+
+    def func(s):
+        kw = {"F": s.eta} if field_strength else {}
+        flow = twisted.flow(s, H, **kw)
+        return {"flow": [flow.Xdot, flow.Pdot], "bracket": twisted.bracket(s, F, H, **kw),
+                "bracket'": twisted.bracket(s, H, F, **kw)}
+    return func
+
+
+_TWISTED_STEPS = ("stiefelsym.twisted.flow", "stiefelsym.twisted.bracket")
+
+
+@pytest.mark.parametrize("seed", range(12))
+def test_random_magnetic_flows_and_brackets_agree_with_reverse_mode(seed):
+    """``twisted.flow`` and ``twisted.bracket`` (the default field strength E₁∧E₂, or s.eta given by name)
+    with the gradients of random Hamiltonians (coordinate reads and the operator included) by the graph's
+    reverse sweep: the same flows and brackets as with the scene's reverse numbers."""
+    rng = random.Random(2100 + seed)
+    Hx = _scalar_function(rng, 3, ("'res_at'",), reads=seed % 2 == 1)
+    Fx = _scalar_function(rng, 3, ("'res_at'",), reads=seed % 2 == 1)
+    func = _magnetic_claim(lambda t: _build(t, Hx), lambda t: _build(t, Fx), seed % 3 == 0)
+    n = rng.choice([3, 4, 5])
+    g = compile_claim(func, n, 2, STANDARD)
+    s = Scene(n, 2, ModularField(P61), chart="cayley", rng=random.Random(1))
+    assert deriv.TWISTED in scene_flows(s)
+    for name in _TWISTED_STEPS:
+        assert [why for _, why in coverage(g, name, scene_flows(s))] == [None] * (1 if "flow" in name else 2)
+    assert derivatives(g, scene_flows(s)) is not g
+    assert _agree(g, n, 2, seed=seed)
+
+
+def test_magnetic_steps_stay_with_the_free_scene_and_nested_functions():
+    """On the dimension-free scene the magnetic flow stays the scene's (it solves Λ, Π modulo its
+    rewriting system), with the reason, and the bracket is the derivative along it; a bracket of a
+    function that is itself a bracket keeps its step, and so does the bracket inside it (on the
+    function's scene)."""
+    from stiefelsym import twisted
+    g = compile_claim(_magnetic_claim(H_neumann, lambda t: t.tr(t.Psi @ t.Psi), False), 4, 2, STANDARD)
+    flows = scene_flows(FreeScene(lazy=True))
+    assert [why for _, why in coverage(g, "stiefelsym.twisted.flow", flows)] == [
+        "the scene's own gradients (not a coordinate scene)"]
+    assert [why for _, why in coverage(g, "stiefelsym.twisted.bracket", flows)] == [None, None]
+
+    def nested(s):
+        return {"b": twisted.bracket(s, H_neumann, lambda t: twisted.bracket(t, H_neumann, lambda u: u.tr(u.Psi)))}
+    g = compile_claim(nested, 4, 2, STANDARD)
+    s = Scene(4, 2, ModularField(P61), chart="cayley", rng=random.Random(1))
+    whys = [why for _, why in coverage(g, "stiefelsym.twisted.bracket", scene_flows(s))]
+    assert len(whys) == 2 and None not in whys         # the outer one's function is a bracket, the inner one's
+    assert _agree(g, 4, 2)                              # scene is the function's
+
+
+@pytest.mark.parametrize("n,r,chart", [(3, 1, "cayley"), (3, 2, "cayley"), (4, 2, "equivariant"), (5, 3, "cayley"),
+                                       (4, 4, "cayley")])
+def test_closed_form_constraint_gradients_agree_with_reverse_mode(n, r, chart):
+    """X(E_ij + E_ji) and (P(E_ij + E_ji), X(E_ij + E_ji)) for the entries of XᵀX − I and XᵀP + PᵀX (the
+    upper triangles, in order): the gradients the reverse tape computes, at a point on V and off it."""
+    for seed in range(3):
+        s = Scene(n, r, ModularField(P61), chart=chart, rng=random.Random(seed))
+        closed, rev = s._standard_constraint_gradients(), s._reverse_constraint_gradients()
+        assert len(closed) == len(rev) == r * (r + 1)
+        assert all(_same(a[0], b[0]) and _same(a[1], b[1]) for a, b in zip(closed, rev))
+        assert s._constraint_gradients() is s._constraint_gradients()          # built once per scene
+        off = at_point_off_V(s)
+        closed, rev = off._standard_constraint_gradients(), off._reverse_constraint_gradients()
+        assert all(_same(a[0], b[0]) and _same(a[1], b[1]) for a, b in zip(closed, rev))
+
+
+def at_point_off_V(s):
+    """The scene at a point (X, P) of generic parameters (not on V)."""
+    import copy
+    other = copy.copy(s)
+    other._cache = {}
+    other._cache["point"] = (s.generic("OX", "n", "r"), s.generic("OP", "n", "r"))
+    return other
+
+
+def magnetic_constraints_kept(s):
+    """The twisted flow of the Neumann Hamiltonian keeps (cond_XP) and H."""
+    from stiefelsym import twisted
+    flow = twisted.flow(s, H_neumann)
+    return {"d(XᵀX)/dt": s.d(lambda t: t.X.T @ t.X, flow),
+            "d(XᵀP + PᵀX)/dt": s.d(lambda t: t.X.T @ t.P + t.P.T @ t.X, flow),
+            "dH/dt": s.d(H_neumann, flow)}
+
+
+def test_a_wrong_constraint_gradient_is_caught(monkeypatch):
+    """The off-diagonal constraints' gradients with E_ij for E_ij + E_ji (X E_12 for the (1, 2) entry of
+    XᵀX: half of it, in the wrong column): no longer the reverse tape's, and the magnetic flow, projected
+    on them, leaves T*V.  (Without the factor 2 on the diagonal the gradients would be wrong as well,
+    but a constraint rescaled cuts out the same T*V: the Dirac flow would not change.)"""
+    assert run_one(_claim(magnetic_constraints_kept, "magnetic-kept"), Size(4, 2), "modular", 0).verdict == "checked"
+
+    def one_sided(self):
+        out = []
+        r = self.r
+        for part in ("XX", "XP"):
+            for i in range(r):
+                for j in range(i, r):
+                    S = self.zeros(r, r, ("r", "r"))
+                    S._a[i, j] = self.const(2 if i == j else 1)
+                    gX = (self.X if part == "XX" else self.P) @ S
+                    gP = self.zeros(self.n, r, ("n", "r")) if part == "XX" else self.X @ S
+                    out.append((self._as_nr(gX), self._as_nr(gP)))
+        return out
+    monkeypatch.setattr(Scene, "_standard_constraint_gradients", one_sided)
+    s = Scene(4, 2, ModularField(P61), chart="cayley", rng=random.Random(0))
+    assert not all(_same(a[0], b[0]) and _same(a[1], b[1])
+                   for a, b in zip(s._standard_constraint_gradients(), s._reverse_constraint_gradients()))
+    func = lambda s: magnetic_constraints_kept(s)      # noqa: E731 - a function object of its own
+    assert run_one(_claim(func, "magnetic-kept-one-sided"), Size(4, 2), "modular", 0).verdict == "fails"
+
+
+def test_a_wrong_magnetic_gradient_is_caught(monkeypatch):
+    """The graph's gradient handed to the magnetic flow with its parts swapped ((H_P, H_X) for
+    (H_X, H_P)): no longer the scene's flow, and H is no longer conserved along it."""
+    real = deriv._Twisted.build
+
+    def swapped(self):
+        ref = real(self)
+        a = self.new.args[ref.i]
+        pair = a[-1]
+        wrong = self.new.add("tuple", (self.new.add("item", (pair, 1)), self.new.add("item", (pair, 0))))
+        return self.new.add("prim", a[:-1] + (wrong,))
+    monkeypatch.setattr(deriv._Twisted, "build", swapped)
+    func = lambda s: magnetic_constraints_kept(s)      # noqa: E731 - a function object of its own
+    g = compile_claim(func, 4, 2, STANDARD)
+    s = Scene(4, 2, ModularField(P61), chart="cayley", rng=random.Random(1))
+    assert [why for _, why in coverage(g, "stiefelsym.twisted.flow", scene_flows(s))] == [None]
+    assert not _agree(g, 4, 2)
+    res = run_one(_claim(func, "magnetic-kept-swapped"), Size(4, 2), "modular", 0)
+    assert res.verdict == "fails"
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_random_magnetic_brackets_agree_on_the_free_algebra(seed):
+    """The free algebra's magnetic bracket (for a field strength given as a letter of so(r)), the
+    derivative of f along the scene's magnetic flow of g, in graph nodes: the same polynomials as the
+    scene's bracket (its dual numbers along the same flow)."""
+    from stiefelsym import twisted
+    rng = random.Random(2600 + seed)
+    free = _NO_ADJOINT + ("'inv1'", "'div'", "'op_n'", "'op_r'", "'mat'", "'rows'", "'entry_nr'")
+    Hx, Fx = _scalar_function(rng, 3, free), _scalar_function(rng, 3, free)
+
+    def func(s):
+        return {"b": twisted.bracket(s, lambda t: _build(t, Fx), lambda t: _build(t, Hx), F=s.eta)}
+    g = compile_claim(func, None, None, STANDARD)
+    flows = scene_flows(FreeScene(lazy=True))
+    assert [why for _, why in coverage(g, "stiefelsym.twisted.bracket", flows)] == [None]
+    outs = []
+    for gg in (g, derivatives(g, flows)):
+        s = FreeScene(lazy=True)
+        v = evaluate(gg, s)
+        outs.append([(pos, str(s.reduce(x).normal_form)) for pos, x in _entries(v["b"], "b")])
+    assert derivatives(g, flows) is not g and outs[0] == outs[1]
+
+
+def test_a_wrong_free_magnetic_flow_is_caught(monkeypatch):
+    """The free algebra's magnetic bracket taken along the canonical Dirac flow (ε forgotten): the
+    momentum map of the twisted form is no longer proved."""
+    from stiefelsym.claims import load_catalog
+    claim = next(c for c in load_catalog() if c.id == "magnetic-momentum-map")
+    assert run_one(claim, None, "free", 0).verdict == "proved"
+
+    def untwisted(self):
+        return self.add("call", (self.S, "dirac_flow", (self.remap[self.G.i],), ()))
+    monkeypatch.setattr(deriv._TwistedAlongFlow, "make_flow", untwisted)
+    import dataclasses
+    func = lambda s: claim.func(s)      # noqa: E731 - a function object of its own: traced and transformed anew
+    res = run_one(dataclasses.replace(claim, func=func), None, "free", 0)
+    assert res.verdict == "undecided" and "epsilon" in str(res.message)     # the residual: the ε terms
+
+
+def test_coverage_of_the_catalog_magnetic_steps(catalog):
+    """At (4,2) on a coordinate scene 38 of the catalog's 46 magnetic flows and brackets take the graph's
+    gradients; the others are a bracket of a bracket (the Jacobi identity of the twisted bracket) and
+    steps inside a function of the scene (the bracket inside it, a flow at another point)."""
+    s = Scene(4, 2, ModularField(P61), chart="cayley", rng=random.Random(1))
+    counts: dict[str, list[int]] = {}
+    reasons = set()
+    for c, g in _graphs_at_4_2(catalog):
+        for name in _TWISTED_STEPS:
+            for _, why in coverage(g, name, scene_flows(s)):
+                k = counts.setdefault(name, [0, 0])
+                k[0] += why is None
+                k[1] += 1
+                if why is not None:
+                    reasons.add(why)
+    assert counts == {"stiefelsym.twisted.flow": [16, 18], "stiefelsym.twisted.bracket": [22, 28]}
+    assert reasons == {"a gradient on a scene other than the claim's (inside a function of the scene)",
+                       "a prim whose kind (number or matrix) the graph does not show"}

@@ -1428,9 +1428,10 @@ class FreeScene(PaperObjects):
 
     def _graph_flows(self) -> frozenset:
         """What the graph may compute of the flows and brackets here (see :mod:`stiefelsym.ir.derivative`):
-        the bracket, as the derivative along the Dirac flow, which the scene solves."""
-        from stiefelsym.ir.derivative import BRACKET_ALONG_FLOW
-        return frozenset({BRACKET_ALONG_FLOW})
+        the bracket, as the derivative along the Dirac flow, which the scene solves (and the magnetic
+        bracket of :mod:`stiefelsym.twisted`, along the scene's own magnetic flow)."""
+        from stiefelsym.ir.derivative import BRACKET_ALONG_FLOW, TWISTED_ALONG_FLOW
+        return frozenset({BRACKET_ALONG_FLOW, TWISTED_ALONG_FLOW})
 
     def _share(self, base: "FreeScene") -> None:
         """What a scene made from ``base`` (its tangent scene, a function's scene) shares with it: the

@@ -168,7 +168,8 @@ def _transform(g: Graph, flows: frozenset = frozenset()) -> tuple[Graph, list]:
     start = 0
     if len(g.index) == len(g.ops):
         start = next((i for i, (op, a) in enumerate(zip(g.ops, g.args))
-                      if op == "call" and (a[1] in _PASSES or a[1] in _FLOW_PASSES)), len(g.ops))
+                      if (op == "call" and (a[1] in _PASSES or a[1] in _FLOW_PASSES))
+                      or (op == "prim" and a[0].qualname in _TWISTED_STEPS)), len(g.ops))
         new.ops, new.args = g.ops[:start], g.args[:start]
         new.index = dict(itertools.islice(g.index.items(), start))
         remap.update((i, _ref(i)) for i in range(start))
@@ -185,13 +186,20 @@ def _transform(g: Graph, flows: frozenset = frozenset()) -> tuple[Graph, list]:
             else:
                 report.append((i, a[1], "the scene's own multipliers here (another realization, a chart or a "
                                         "field without their closed forms, or the free algebra's solve)"))
+        elif op == "prim" and a[0].qualname in _TWISTED_STEPS:
+            if TWISTED in flows:
+                rewrite = _Twisted
+            elif TWISTED_ALONG_FLOW in flows and a[0].qualname == "stiefelsym.twisted.bracket":
+                rewrite = _TwistedAlongFlow
+            else:
+                report.append((i, a[0].qualname, "the scene's own gradients (not a coordinate scene)"))
         if rewrite is not None:
             try:
                 remap[i] = rewrite(g, deps, new, remap, i).build()
-                report.append((i, a[1], None))
+                report.append((i, a[1] if op == "call" else a[0].qualname, None))
                 continue
             except Unsupported as exc:
-                report.append((i, a[1], str(exc)))
+                report.append((i, a[1] if op == "call" else a[0].qualname, str(exc)))
         remap[i] = new.add(op, m(a))
     if g.output is not None:
         new.output = remap[g.output.i]
@@ -233,9 +241,10 @@ def _pruned(g: Graph) -> Graph:
 class _Derivative:
     """The derivative of one ``d`` node's function along its flow, built into the new graph."""
 
-    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, i: int, f: Any = None) -> None:
+    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, i: int, f: Any = None,
+                 at: tuple | None = None) -> None:
         self.g, self.deps, self.new, self.remap = g, deps, new, remap
-        scene, name, args, kw = g.args[i]
+        scene, name, args, kw = g.args[i] if at is None else at + ((), ())
         if f is None:
             if kw or len(args) != 2:
                 raise Unsupported("a derivative with further arguments")
@@ -722,9 +731,10 @@ class _Gradient(_Derivative):
     the adjoints of the body's nodes, from the value down to X and P (a matrix's adjoint is a sum of
     matrices and of a multiple of I, which a trace makes and a product absorbs)."""
 
-    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, i: int, f: Any = None) -> None:
+    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, i: int, f: Any = None,
+                 at: tuple | None = None) -> None:
         self.g, self.deps, self.new, self.remap = g, deps, new, remap
-        scene, name, args, kw = g.args[i]
+        scene, name, args, kw = g.args[i] if at is None else at + ((), ())
         what = _WHAT.get(name, "a gradient")
         if f is None:
             if kw or len(args) != 1:
@@ -1262,6 +1272,83 @@ class _Along(_Derivative):
 
     def make_flow(self) -> Ref:
         return self.add("prim", (Named(UNIT_TANGENT), self.S, self.unit))
+
+
+#: what a coordinate scene says (``_graph_flows``) when the magnetic systems' flows and brackets (the
+#: engine steps of :mod:`stiefelsym.twisted`) may take the gradients the graph computes
+TWISTED = "magnetic flows and brackets from the graph's gradients"
+#: the engine steps the pass rewrites there: (the step as traced, its functions, the step it becomes)
+_TWISTED_STEPS = {"stiefelsym.twisted.flow": (1, "stiefelsym.twisted.flow:graph"),
+                  "stiefelsym.twisted.bracket": (2, "stiefelsym.twisted.bracket:graph")}
+
+
+class _Twisted:
+    """``twisted.flow(s, H, F)`` and ``twisted.bracket(s, f, g, F)`` (F given or the default) on a coordinate
+    scene: the gradients of their functions by the reverse sweep of :class:`_Gradient`, handed with the
+    functions to the same engine step made from them (which builds the constraint bracket matrix, solves
+    the Dirac multipliers and applies the twisted Poisson tensor as before).  The scene's ε is drawn
+    before the functions are evaluated, as the step taking the gradients itself draws it."""
+
+    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, i: int) -> None:
+        a = g.args[i]
+        nf, self.step = _TWISTED_STEPS[a[0].qualname]
+        rest, self.F = a[2 + nf:], None
+        if len(rest) == 1 and type(rest[0]) is Ref and g.ops[rest[0].i] == "kw":
+            kw = g.args[rest[0].i]
+            if [k for k, _ in kw] != ["F"]:
+                raise Unsupported("a magnetic flow or bracket with further arguments")
+            self.F = kw[0][1]                               # the field strength, given by name
+        elif len(rest) == 1:
+            self.F = rest[0]                                # ... or in its place
+        elif rest:
+            raise Unsupported("a magnetic flow or bracket with further arguments")
+        if any(type(f) is not Ref or g.ops[f.i] != "fn" for f in a[2:2 + nf]):
+            raise Unsupported("a magnetic flow or bracket of something that is not a traced function")
+        self.new, self.remap, self.fs = new, remap, a[2:2 + nf]
+        self.grads = [_Gradient(g, deps, new, remap, i, f, at=(a[1], "gradient")) for f in self.fs]
+        self.S = self.grads[0].S
+
+    def build(self) -> Ref:
+        add, S = self.new.add, self.S
+        add("attr", (S, "X")), add("attr", (S, "P"))
+        eps = add("attr", (S, "eps"))
+        pairs = tuple(gr.build() for gr in self.grads)
+        F = self.remap[self.F.i] if type(self.F) is Ref else self.F
+        return add("prim", (Named(self.step), S) + tuple(self.remap[f.i] for f in self.fs) + (F, eps) + pairs)
+
+
+#: what the free algebra says (``_graph_flows``) when its magnetic bracket is the derivative of f along its
+#: own magnetic flow of g (``twisted.bracket`` there): the derivative is then graph nodes, the flow the scene's
+TWISTED_ALONG_FLOW = "magnetic bracket along the scene's magnetic flow"
+
+
+class _TwistedAlongFlow(_Derivative):
+    """``twisted.bracket(s, f, g, F)`` on the free algebra: the derivative of f (by the tangent map of
+    :class:`_Derivative`) along the scene's own twisted flow of g, a ``twisted.flow`` step (whose Λ, Π
+    the free algebra solves), as the scene's bracket computes it."""
+
+    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, i: int) -> None:
+        a = g.args[i]
+        if a[0].qualname != "stiefelsym.twisted.bracket":
+            raise Unsupported("a magnetic flow the scene solves")
+        rest, self.F = a[4:], None
+        if len(rest) == 1 and type(rest[0]) is Ref and g.ops[rest[0].i] == "kw":
+            kw = g.args[rest[0].i]
+            if [k for k, _ in kw] != ["F"]:
+                raise Unsupported("a magnetic bracket with further arguments")
+            self.F = kw[0][1]
+        elif len(rest) == 1:
+            self.F = rest[0]
+        elif rest:
+            raise Unsupported("a magnetic bracket with further arguments")
+        f, self.G = a[2], a[3]
+        if type(self.G) is not Ref or g.ops[self.G.i] != "fn":
+            raise Unsupported("a magnetic bracket of something that is not a traced function")
+        super().__init__(g, deps, new, remap, i, f, at=(a[1], "bracket"))
+
+    def make_flow(self) -> Ref:
+        F = self.remap[self.F.i] if type(self.F) is Ref else self.F
+        return self.add("prim", (Named("stiefelsym.twisted.flow"), self.S, self.remap[self.G.i], F))
 
 
 #: the calls the pass rewrites, by scene method
