@@ -137,7 +137,7 @@ def pencil_is_poisson_and_compatible(s):
     return checks
 
 
-@claim("pencil-casimirs", paper=("central", "LAMBDA12"), kind="pb", exact_max_n=6,
+@claim("pencil-casimirs", paper=("central", "LAMBDA12"), kind="pb", exact_max_n=7,
        statement=r"\Lambda_{\lambda_1,\lambda_2}\big(\nabla\tr(\sqrt{\tfrac{\lambda_2}{\lambda_1+\lambda_2}}h+v-"
                  r"\tfrac{\lambda_2}{\lambda_1+\lambda_2}A)^k,\cdot\big)=0,\ \Lambda_{\lambda_1,\lambda_2}\cong gl(n);\quad "
                  r"\{\tr(\lambda h+v-\lambda^2A)^k,\tr(\mu h+v-\mu^2A)^m\}_{\Lambda_{\lambda_1,\lambda_2}}=0,\ k,m\le3")

@@ -253,7 +253,8 @@ class Scene(PaperObjects):
     def __init__(self, n: int, r: int, field: Field, *, chart: str = "cayley",
                  rng: random.Random | None = None, component: int = 0,
                  realization: str = "standard", options: Mapping[str, Any] | None = None,
-                 tracker: CoordinateTracker | None = None, right_reduction: bool = False) -> None:
+                 tracker: CoordinateTracker | None = None, right_reduction: bool = False,
+                 diagonal_A: bool = False) -> None:
         if not isinstance(n, int) or not isinstance(r, int):
             raise SizeError("n and r must be integers")
         if r < 1:
@@ -277,6 +278,12 @@ class Scene(PaperObjects):
         self._right_reduction = chart == "equivariant" and (realization == "metric" or right_reduction)
         if self._right_reduction and tracker is None:
             self._tracker.watch_r()               # the chart's reduction uses O(r) as well
+        #: the equivariant chart of a graph that reads no point: O(n) spent on A alone, A = diag(a)
+        #: (:meth:`_equivariant_A`); reading a point raises :class:`PointRead`
+        if diagonal_A and (chart != "equivariant" or realization != "standard" or right_reduction):
+            raise ValueError("the diagonal chart is an equivariant chart of the standard realization, "
+                             "reduced by O(n) alone")
+        self._diagonal_A = diagonal_A
         self._params: dict[str, Any] = {}
         self._param_blocks: list[tuple[str, Any, Any]] = []
         self._cache: dict[str, Any] = {}
@@ -460,7 +467,14 @@ class Scene(PaperObjects):
                 a[i, j] = self._param(param_name(name, i, j))
         return M
 
+    def _no_point(self, what: str) -> None:
+        """On the diagonal chart (O(n) spent on A alone), a point of T*V has no place: raise
+        :class:`PointRead` (the symbolic method then takes the chart that fixes the point)."""
+        if self._diagonal_A:
+            raise PointRead(what)
+
     def _stiefel_point(self, prefix: str) -> tuple[Mat, Mat]:
+        self._no_point(f"a point {prefix or 'X, P'}")
         n, r = self.n, self.r
         if self.chart == "equivariant":
             D = np.eye(n, r, dtype=np.int64)
@@ -570,6 +584,12 @@ class Scene(PaperObjects):
         chart); ``{why}`` is where the method says why the claim is covariant."""
         if self._chart != "equivariant":
             return None
+        if self._diagonal_A:
+            return ("equivariance: A = diag(a_1..a_n) with the a_i free; the claim reads no point of T*V (nor a "
+                    "second, complex or double point), so the whole of O(n) acts on A, and it diagonalizes "
+                    "every symmetric A; the residuals are covariant under (A, M) -> (gAg^T, gM), g in O(n), "
+                    "for the generic parameters M of the claim (acted on by g on their R^n indices, they "
+                    "stay generic), because {why}")
         if self._realization == "metric":
             return ("equivariance: X = X0 = (E_1..E_r), B = A^{{-1}} symmetric with its diagonal blocks B11 "
                     "(r x r) and B22 diagonal and B12 generic, P = (B11^{{-1}}(W - B12 Z); Z) with W skew "
@@ -602,6 +622,10 @@ class Scene(PaperObjects):
         n, r = self.n, self.r
         A = self.zeros(n, n, ("n", "n"))
         a = A._a
+        if self._diagonal_A:
+            for i in range(n):
+                a[i, i] = self._param(param_name("A", i, i))
+            return A
         for i in range(n):
             for j in range(i, n):
                 if i != j and (i >= r or (j < r and self._right_reduction)):
@@ -665,6 +689,7 @@ class Scene(PaperObjects):
         return self._cached("point2", lambda: self._stiefel_point("second_"))
 
     right_reduction = _engine_property("_right_reduction", "whether the chart reduces by O(r) as well")
+    diagonal_A = _engine_property("_diagonal_A", "whether the chart spends O(n) on A alone (A diagonal, no point)")
     second_point_read = _engine_property("_second_point_read", "whether the evaluation read (Y, Q)")
 
     def second_point_text(self) -> str:
@@ -700,6 +725,7 @@ class Scene(PaperObjects):
         the irreducible V(n, r) (of the component of O(n) for r = n), so it is Zariski dense there.
         The O(n) reduction of the chart acts on both points: fixing X0 (and diagonalizing A22 by
         the stabilizer of X0) leaves Y anywhere on V(n, r)."""
+        self._no_point("a second point (Y, Q)")
         n, r = self.n, self.r
         tr = self._tracker
         Ir = self.identity(r, "r")
@@ -773,6 +799,7 @@ class Scene(PaperObjects):
 
     # -- the complex Stiefel variety W(n, r), realified (realify, conj: see PaperObjects) ----
     def _complex_point(self):
+        self._no_point("a point of W(n, r)")
         n, r = self.n, self.r
         if self.chart == "equivariant" and self._realization == "standard":
             self._complex_point_read = True
@@ -1610,6 +1637,10 @@ class Scene(PaperObjects):
 
 class CoordinateAccess(ValueError):
     """Raised when a chart cannot provide a coordinate object."""
+
+
+class PointRead(Exception):
+    """Raised when a graph evaluated on the diagonal chart (A = diag(a), O(n) spent on A) reads a point."""
 
 
 class _LiftedScene(Scene):

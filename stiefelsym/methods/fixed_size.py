@@ -46,7 +46,7 @@ from stiefelsym.backends.matrix import Mat, is_scene_number
 from stiefelsym.backends.native import F64, DegMat, _buf, backend, one_blas_thread, quiet_numpy
 from stiefelsym.backends.paired import PairField, marker_of
 from stiefelsym.results import CheckOutcome, Result
-from stiefelsym.scene import CoordinateAccess, Scene, SizeError
+from stiefelsym.scene import CoordinateAccess, PointRead, Scene, SizeError
 
 flint = lazy("flint", globals())
 mpmath = lazy("mpmath", globals())
@@ -603,6 +603,22 @@ def _reads_coordinates(claim: Claim, n: int, r: int, func: Callable, graph: Any 
     return list(out)
 
 
+#: the graph's leaves that are (or are built from) a point of T*V, a second, complex or double point
+POINT_LEAVES = frozenset({"X", "P", "Phi", "Psi", "Y", "Q", "Zc", "Zc_dot", "DX", "DY", "DXdot", "DYdot"})
+
+
+def _point_free(claim: Claim, n: int, r: int, func: Callable, graph: Any = None) -> bool:
+    """Whether the diagonal chart is worth trying: the claim's graph names no point of T*V among its
+    leaves and takes no engine step (a step may read a point, or build matrices entrywise, which the
+    evaluation finds only at its end).  Soundness does not rest on this: a point read on the diagonal
+    chart raises PointRead, a coordinate read is recorded, and either sends the graph on."""
+    g = graph
+    if g is None:
+        cons = REALIZATIONS[claim.realization]
+        g = compile_claim(func, n, r, (cons.name, cons.build))
+    return not any(op == "prim" or op == "attr" and a[1] in POINT_LEAVES for op, a in zip(g.ops, g.args))
+
+
 def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = None,
               time_budget: float | None = EXACT_TIME_LIMIT) -> Result:
     func = func or claim.func
@@ -620,23 +636,33 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
             # metric realization's chart always reduces by O(r): a graph that reads coordinates
             # goes to the Cayley chart (below)
             visible = _reads_coordinates(claim, n, r, func, graph)
-            for right in ((True, False) if claim.realization == "standard" and not visible else (False,)):
+            # a graph that reads no point of T*V spends the O(n) reduction on A alone (A diagonal):
+            # tried first where the graph names no point; a point read while evaluating (through an
+            # engine step) or a coordinate read sends it on to the charts that fix the point
+            attempts: tuple = ((True, False) if claim.realization == "standard" and not visible else (False,))
+            if claim.realization == "standard" and not visible and _point_free(claim, n, r, func, graph):
+                attempts = ("diagonal",) + attempts
+            for right in attempts:
                 if claim.realization == "metric" and visible:
                     scene, coords, missing = None, list(visible), True
                     break
                 def build(right=right) -> tuple:
                     f = SymbolicField()
                     return f, Scene(n, r, f, chart="equivariant", realization=claim.realization,
-                                    right_reduction=right)
+                                    right_reduction=right is True, diagonal_A=right == "diagonal")
                 missing = False   # the equivariant chart cannot provide an object (a_i, a second point)
                 try:
                     field, scene, checks = _chart_checks(
                         (claim.id, claim.realization, "exact", n, r, "equivariant", right), build, func, graph)
                     coords = list(scene.tracker.used)
+                except PointRead:
+                    continue      # only the diagonal chart raises it: the next chart fixes the point
                 except CoordinateAccess as exc:
                     field, scene = exc.chart
                     coords = list(scene.tracker.used) or ["coordinates"]
                     missing = True
+                if right == "diagonal" and (coords or missing):
+                    continue      # the diagonal chart is used for a graph that reads no coordinates
                 if not (coords or missing):
                     break
             # a stated reason is relied on only for the reviewed catalog: a user's claims file
