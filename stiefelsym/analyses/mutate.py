@@ -630,7 +630,7 @@ def _graph_mutants(claim: Claim, sizes: Sequence[Size] | None = None,
                    census: Any = None) -> tuple[list[Mutant], str, str]:
     """:func:`graph_mutants`, and how they were made (:data:`ON_GRAPH`, :data:`ON_GRAPHS_PER_SIZE`)."""
     from stiefelsym.ir import compile_claim
-    from stiefelsym.ir.mutants import SkeletonMismatch, sized_graph_mutants
+    from stiefelsym.ir.mutants import SkeletonMismatch, site_mutants, sized_graph_mutants
     from stiefelsym.ir.mutants import graph_mutants as on_graph
     from stiefelsym.scene import REALIZATIONS
     cons = REALIZATIONS[claim.realization]
@@ -649,19 +649,42 @@ def _graph_mutants(claim: Claim, sizes: Sequence[Size] | None = None,
                 graphs[(n, r)] = compile_claim(claim.func, n, r, constraints)
             except Exception as exc:    # noqa: BLE001 - no graph at that size
                 return [], f"{head}, and no graph at ({n},{r}): {str(exc).removeprefix('refused: ')[:160]}", ""
-        try:
-            made = sized_graph_mutants(graphs, constraints, census)
-        except SkeletonMismatch as exc:
-            return [], f"{head}; its graphs per size differ: {exc}", ""
+        sited = _sited(claim.func, graphs, constraints)
+        if sited is not None:
+            made = site_mutants(sited, constraints, census)
+        else:
+            try:
+                made = sized_graph_mutants(graphs, constraints, census)
+            except SkeletonMismatch as exc:
+                return [], f"{head}; its graphs per size differ: {exc}", ""
         return [_as_mutant(gm, functools.partial(_sized_left_sides, gm, constraints)) for gm in made], "", \
             ON_GRAPHS_PER_SIZE
-    return [_as_mutant(gm, functools.partial(_graph_left_sides, gm.graph))
-            for gm in on_graph(g, constraints, census)], "", ON_GRAPH
+    sited = _sited(claim.func, {None: g}, constraints)
+    made = site_mutants(sited, constraints, census) if sited is not None else on_graph(g, constraints, census)
+    return [_as_mutant(gm, functools.partial(_graph_left_sides, gm.graph)) for gm in made], "", ON_GRAPH
+
+
+def _sited(func: Callable, graphs: dict, constraints: tuple) -> dict | None:
+    """The claim's graphs (with symbolic sizes: key None; or per size) traced once more with their sites
+    (:mod:`stiefelsym.ir.sites`), each the same graph as the one compiled (the same digest); None when no
+    node of them has a site of claim code (a graph handed over, a claims file's graph replayed: the
+    mutants are then made node by node)."""
+    from stiefelsym.ir import NotDeterministic, _clean
+    from stiefelsym.ir.trace import trace
+    out = {}
+    for z, g in graphs.items():
+        m = _clean(trace, func, None if z is None else z[0], None if z is None else z[1], constraints, None, True)
+        if m.digest() != g.digest():
+            raise NotDeterministic("the claim traced with its sites gave another graph")
+        out[z] = m
+    return out if any(x is not None for m in out.values() for x in m.sites or ()) else None
 
 
 def _as_mutant(gm: Any, left: Callable) -> Mutant:
-    return Mutant(description=gm.description(), lineno=0, func=gm.func, operator=gm.operator,
-                  index=gm.index, source=f"%{gm.node}", left=left,
+    site = gm.site
+    return Mutant(description=gm.description(), lineno=site.line if site is not None else 0, func=gm.func,
+                  operator=gm.operator, index=gm.index, source=site.text() if site is not None else f"%{gm.node}",
+                  left=left,
                   notation=tuple(c.to_json() for c in gm.changes))
 
 
@@ -1433,7 +1456,7 @@ def _claim_task(ci: int) -> _ClaimRun:
     where = notation_size(s for s, _ in plan)
     try:
         for m in _select(muts, _WORK["limit"], _WORK["only"]):
-            o = MutantOutcome(claim.id, m.index, m.description, m.lineno if not on_graphs else None, m.operator,
+            o = MutantOutcome(claim.id, m.index, m.description, (m.lineno or None) if on_graphs else m.lineno, m.operator,
                               m.source, _run_cells(claim, plan, seed, m.func, m.description),
                               notation=list(m.notation) if on_graphs else notation(claim, m, where))
             run.mutants.append(classify(o, run.baseline))
