@@ -34,14 +34,17 @@ pass says nothing about a mutant, and is not counted.  Then:
   elsewhere is **unresolved**.
 
 With ``on="graphs"`` (``stiefelsym mutate --on graphs``) the mutants are made on each claim's
-graph instead (:mod:`stiefelsym.ir.mutants`, :func:`graph_mutants`): the same kinds of change,
-one node at a time, each mutant a graph the tracer typed (:class:`stiefelsym.ir.replay.GraphClaim`),
-described in the paper's notation; no Python of the claim runs again.  It covers the claims that
-trace with symbolic sizes (one graph for every size), and the claims traced per size whose graphs at the
-sizes run have one skeleton (:func:`stiefelsym.ir.mutants.sized_graph_mutants`: one change at the same
-node of every size's graph); the others (a loop or a condition over the sizes) are reported as not
-covered.  With ``on="auto"`` those are mutated on their source instead, and the claim's record says
-what its mutants were made on (``on``) and why it fell back (``fallback``).
+graphs instead (:mod:`stiefelsym.ir.mutants`, :func:`graph_mutants`): the same kinds of change, each
+made at one **site** (:mod:`stiefelsym.ir.sites`: the claim expression, in the claim or a function of its
+own, that built the nodes) and at every node built there, in the graph with symbolic sizes or in every
+size's graph (:func:`stiefelsym.ir.mutants.site_mutants`: loop iterations and sizes alike, so graphs that
+part between sizes are covered); each mutant a graph the tracer typed
+(:class:`stiefelsym.ir.replay.GraphClaim`), described in the paper's notation; no Python of the claim runs
+again.  Nodes the engine built (no claim frame made them) are not mutated.  A graph with no site (a
+claims file's graph, replayed here) is mutated node by node, per size where its graphs have one
+skeleton (:func:`stiefelsym.ir.mutants.sized_graph_mutants`).  A claim with no graph at a size run is
+reported as not covered; with ``on="auto"`` it is mutated on its source instead, and the claim's record
+says what its mutants were made on (``on``) and why it fell back (``fallback``).
 
 The same machinery searches corrections of a printed formula that fails:
 :func:`search_corrections` returns the candidates that pass every method at every size.

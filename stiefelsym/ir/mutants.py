@@ -22,7 +22,12 @@ left out, and so is a change that computes the same outputs as the claim (the di
 output's subgraph, :func:`.evaluate.node_keys`, equal to the claim's) or as an earlier mutant.
 Nothing here runs claim code or evaluates a value.
 
-A claim that has no graph with symbolic sizes has one graph per size (it reads its sizes: a
+The mutation analysis makes its changes at the claim's **sites** (:func:`site_mutants`): the graphs traced
+with the source span of the claim expression that built each node (:mod:`.sites`), one change at one
+site is made at every node built there (every iteration of a loop) in every size's graph, as an edit of
+the claim's source at that place would be; nodes the engine built have no site and are not changed.
+
+Without sites, a claim that has no graph with symbolic sizes has one graph per size (it reads its sizes: a
 coordinate, a loop over n).  :func:`sized_graph_mutants` mutates those graphs when they have the same
 skeleton (:func:`skeleton`: the same ops in the same order on the same nodes, the numbers of sizes
 aside): a node is then known by its place in the order of the trace, and a mutant is one change made at
