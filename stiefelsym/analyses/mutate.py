@@ -620,12 +620,16 @@ ON_GRAPH, ON_GRAPHS_PER_SIZE, ON_SOURCE = "graph", "graphs per size", "source"
 
 def graph_mutants(claim: Claim, sizes: Sequence[Size] | None = None,
                   census: Any = None) -> tuple[list[Mutant], str]:
-    """The mutants of the claim's graph (:func:`stiefelsym.ir.mutants.graph_mutants`), each a
-    :class:`Mutant` whose function is its graph (:class:`stiefelsym.ir.replay.GraphClaim`), with its
-    change in the paper's notation; and "", or why the claim is not covered.  A claim with no graph
-    with symbolic sizes is mutated on its graphs at ``sizes`` (the first: where its changes are written)
-    when they have one skeleton (:func:`stiefelsym.ir.mutants.sized_graph_mutants`: one change at the same
-    node of every size's graph); where they do not, it is not covered, and the reason says so."""
+    """The mutants of the claim's graph, each a :class:`Mutant` whose function is its graph
+    (:class:`stiefelsym.ir.replay.GraphClaim`), with its change in the paper's notation and its site (the
+    line and the source of the claim expression changed); and "", or why the claim is not covered.  Each
+    mutant is one change at one site of the claim's source made at every node built there
+    (:func:`stiefelsym.ir.mutants.site_mutants`): in its graph with symbolic sizes, or, for a claim with
+    none, in its graphs at ``sizes`` (the first: where its changes are written), whatever loops over the
+    sizes made them.  A claim with no graph at one of ``sizes`` is not covered, and the reason says so.
+    Graphs with no site (a claims file's, replayed) are mutated node by node
+    (:func:`stiefelsym.ir.mutants.graph_mutants`; per size :func:`~stiefelsym.ir.mutants.sized_graph_mutants`,
+    where the graphs have one skeleton)."""
     return _graph_mutants(claim, sizes, census)[:2]
 
 
