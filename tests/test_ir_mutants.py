@@ -276,10 +276,11 @@ def test_cli_mutate_on_graphs(catalog):
     # traced per size (at the one size asked for here): mutated on its graph there
     ci = by_id["invariants-complete"]
     assert not ci["skipped"] and ci["on"] == "graphs per size" and len(ci["mutants"]) == 4
-    assert all("(graphs at (3,2): node %" in o["description"] and o["notation"] for o in ci["mutants"])
+    # each at a site of the claim's source (its line), in the graph of each size
+    assert all(", graphs at (3,2): " in o["description"] and o["notation"] and o["lineno"] for o in ci["mutants"])
     inv = by_id["invariants-so-n"]
     assert not inv["skipped"] and len(inv["mutants"]) == 4
-    assert all("(graph: node %" in o["description"] and o["notation"] for o in inv["mutants"])
+    assert all(".py:" in o["description"] and o["notation"] and o["lineno"] for o in inv["mutants"])
     # the source mode stays the default
     res = CliRunner().invoke(mutate_command, ["invariants-so-n", "--method", "rational", "--size", "3,2",
                                               "--limit", "2", "--jobs", "1", "--format", "json"])

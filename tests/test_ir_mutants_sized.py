@@ -105,27 +105,46 @@ def test_the_description_of_a_per_size_mutant_is_in_the_papers_notation():
     assert any("X → P" in t for t in texts), texts
     for m in muts:
         assert m.description.startswith(notation_text(m.notation))
-        assert "(graphs at (3,2), (3,1), (3,3): node %" in m.description
+        # made at the claim's expression (its site), in each size's graph
+        assert " in reads_its_size(), graphs at (3,2), (3,1), (3,3): " in m.description
 
 
-def test_graphs_that_are_not_one_computation_fall_back_to_the_source():
+def refused_where_r_is_n(s):
+    """XᵀX = I_r, written with a transpose of a number where r = n (no graph at those sizes)."""
+    X = s.X
+    if int(s.r) == int(s.n):
+        s.eps.T
+    return {"XtX": X.T @ X - s.Ir}
+
+
+def test_graphs_that_are_not_one_computation_are_mutated_at_their_sites():
     c = toy(loops_over_r, "toy-loop")
     with pytest.raises(SkeletonMismatch, match="not the same computation"):
         sized_graph_mutants(per_size(loops_over_r), CONS)
+    muts, why = graph_mutants(c, SIZES)          # one change at one site, made in every size's graph
+    assert muts and not why
+    rep = run_mutation([c], sizes=SIZES, methods=("rational",), on="graphs")
+    cm = rep.claims[0]
+    assert cm.on == ON_GRAPHS_PER_SIZE and not cm.skipped and cm.mutants and rep.ok()
+    assert any(o.classification == "killed" for o in cm.mutants)
+
+
+def test_a_claim_with_no_graph_at_a_size_falls_back_to_the_source():
+    c = toy(refused_where_r_is_n, "toy-refused")
     muts, why = graph_mutants(c, SIZES)
-    assert not muts and "graphs per size differ" in why and "a loop or a condition over the sizes" in why
+    assert not muts and "no graph at (3,3)" in why
     rep = run_mutation([c], sizes=SIZES, methods=("rational",), on="graphs")
     assert rep.claims[0].skipped.startswith("not covered on graphs") and not rep.claims[0].mutants
     rep = run_mutation([c], sizes=SIZES, methods=("rational",), on="auto")
     cm = rep.claims[0]
-    assert cm.on == ON_SOURCE and "graphs per size differ" in cm.fallback and not cm.skipped
+    assert cm.on == ON_SOURCE and "no graph at (3,3)" in cm.fallback and not cm.skipped
     assert cm.mutants and all(o.lineno for o in cm.mutants) and rep.ok()    # source mutants, by line
     assert any(o.classification == "killed" for o in cm.mutants)
     # the reports say so
     summary, md = render_mutation_summary(rep.to_json()), render_mutation_markdown(rep.to_json())
     assert "mutants made on: source: 1 claim (1 fell back from graphs to the source)" in summary
     assert "Claims mutated on their source because their graphs could not be:" in md
-    assert "`toy-loop`: the claim has no graph with symbolic sizes" in md and "graphs per size differ" in md
+    assert "`toy-refused`: the claim has no graph with symbolic sizes" in md and "no graph at (3,3)" in md
     # a source run says nothing of graphs
     assert "made on" not in render_mutation_summary(run_mutation([c], sizes=SIZES[:1], methods=("rational",),
                                                                  limit=1).to_json())

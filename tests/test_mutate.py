@@ -431,6 +431,21 @@ def test_cli_corrections(tmp_path):
     assert res.exit_code == 2
 
 
+def test_cli_corrections_on_graphs():
+    """The same search on the claim's graphs: one change at one site at a time finds the same correction,
+    alone, at the site of the printed resolvent."""
+    res = CliRunner().invoke(mutate_command, ["manakov-dual-lax", "--corrections", "--size", "3,2",
+                                              "--method", "rational", "--on", "graphs", "--format", "json"])
+    assert res.exit_code == 0, res.output
+    import json
+    data = json.loads(res.stdout)
+    (c,) = data["claims"]
+    assert c["on"] == "graphs" and c["candidates"] > 10 and len(c["corrections"]) == 1
+    (fix,) = c["corrections"]
+    assert fix["notation"] == "in MAN-LA, blocks (1,1), (1,2), (2,1), (2,2): (A + λIₙ)⁻¹ → λIₙ + A"
+    assert fix["source"] == "s.resolvent(-s.lam)" and "in inverse_of_A_plus_lambda()" in fix["description"]
+
+
 # --------------------------------------------------------------------------- end to end
 
 SMALL = ("euclidean-invariance", "normal-hamiltonian", "invariants-so-n")

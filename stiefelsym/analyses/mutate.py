@@ -34,14 +34,17 @@ pass says nothing about a mutant, and is not counted.  Then:
   elsewhere is **unresolved**.
 
 With ``on="graphs"`` (``stiefelsym mutate --on graphs``) the mutants are made on each claim's
-graph instead (:mod:`stiefelsym.ir.mutants`, :func:`graph_mutants`): the same kinds of change,
-one node at a time, each mutant a graph the tracer typed (:class:`stiefelsym.ir.replay.GraphClaim`),
-described in the paper's notation; no Python of the claim runs again.  It covers the claims that
-trace with symbolic sizes (one graph for every size), and the claims traced per size whose graphs at the
-sizes run have one skeleton (:func:`stiefelsym.ir.mutants.sized_graph_mutants`: one change at the same
-node of every size's graph); the others (a loop or a condition over the sizes) are reported as not
-covered.  With ``on="auto"`` those are mutated on their source instead, and the claim's record says
-what its mutants were made on (``on``) and why it fell back (``fallback``).
+graphs instead (:mod:`stiefelsym.ir.mutants`, :func:`graph_mutants`): the same kinds of change, each
+made at one **site** (:mod:`stiefelsym.ir.sites`: the claim expression, in the claim or a function of its
+own, that built the nodes) and at every node built there, in the graph with symbolic sizes or in every
+size's graph (:func:`stiefelsym.ir.mutants.site_mutants`: loop iterations and sizes alike, so graphs that
+part between sizes are covered); each mutant a graph the tracer typed
+(:class:`stiefelsym.ir.replay.GraphClaim`), described in the paper's notation; no Python of the claim runs
+again.  Nodes the engine built (no claim frame made them) are not mutated.  A graph with no site (a
+claims file's graph, replayed here) is mutated node by node, per size where its graphs have one
+skeleton (:func:`stiefelsym.ir.mutants.sized_graph_mutants`).  A claim with no graph at a size run is
+reported as not covered; with ``on="auto"`` it is mutated on its source instead, and the claim's record
+says what its mutants were made on (``on``) and why it fell back (``fallback``).
 
 The same machinery searches corrections of a printed formula that fails:
 :func:`search_corrections` returns the candidates that pass every method at every size.
@@ -617,12 +620,16 @@ ON_GRAPH, ON_GRAPHS_PER_SIZE, ON_SOURCE = "graph", "graphs per size", "source"
 
 def graph_mutants(claim: Claim, sizes: Sequence[Size] | None = None,
                   census: Any = None) -> tuple[list[Mutant], str]:
-    """The mutants of the claim's graph (:func:`stiefelsym.ir.mutants.graph_mutants`), each a
-    :class:`Mutant` whose function is its graph (:class:`stiefelsym.ir.replay.GraphClaim`), with its
-    change in the paper's notation; and "", or why the claim is not covered.  A claim with no graph
-    with symbolic sizes is mutated on its graphs at ``sizes`` (the first: where its changes are written)
-    when they have one skeleton (:func:`stiefelsym.ir.mutants.sized_graph_mutants`: one change at the same
-    node of every size's graph); where they do not, it is not covered, and the reason says so."""
+    """The mutants of the claim's graph, each a :class:`Mutant` whose function is its graph
+    (:class:`stiefelsym.ir.replay.GraphClaim`), with its change in the paper's notation and its site (the
+    line and the source of the claim expression changed); and "", or why the claim is not covered.  Each
+    mutant is one change at one site of the claim's source made at every node built there
+    (:func:`stiefelsym.ir.mutants.site_mutants`): in its graph with symbolic sizes, or, for a claim with
+    none, in its graphs at ``sizes`` (the first: where its changes are written), whatever loops over the
+    sizes made them.  A claim with no graph at one of ``sizes`` is not covered, and the reason says so.
+    Graphs with no site (a claims file's, replayed) are mutated node by node
+    (:func:`stiefelsym.ir.mutants.graph_mutants`; per size :func:`~stiefelsym.ir.mutants.sized_graph_mutants`,
+    where the graphs have one skeleton)."""
     return _graph_mutants(claim, sizes, census)[:2]
 
 
@@ -630,7 +637,7 @@ def _graph_mutants(claim: Claim, sizes: Sequence[Size] | None = None,
                    census: Any = None) -> tuple[list[Mutant], str, str]:
     """:func:`graph_mutants`, and how they were made (:data:`ON_GRAPH`, :data:`ON_GRAPHS_PER_SIZE`)."""
     from stiefelsym.ir import compile_claim
-    from stiefelsym.ir.mutants import SkeletonMismatch, sized_graph_mutants
+    from stiefelsym.ir.mutants import SkeletonMismatch, site_mutants, sized_graph_mutants
     from stiefelsym.ir.mutants import graph_mutants as on_graph
     from stiefelsym.scene import REALIZATIONS
     cons = REALIZATIONS[claim.realization]
@@ -649,19 +656,42 @@ def _graph_mutants(claim: Claim, sizes: Sequence[Size] | None = None,
                 graphs[(n, r)] = compile_claim(claim.func, n, r, constraints)
             except Exception as exc:    # noqa: BLE001 - no graph at that size
                 return [], f"{head}, and no graph at ({n},{r}): {str(exc).removeprefix('refused: ')[:160]}", ""
-        try:
-            made = sized_graph_mutants(graphs, constraints, census)
-        except SkeletonMismatch as exc:
-            return [], f"{head}; its graphs per size differ: {exc}", ""
+        sited = _sited(claim.func, graphs, constraints)
+        if sited is not None:
+            made = site_mutants(sited, constraints, census)
+        else:
+            try:
+                made = sized_graph_mutants(graphs, constraints, census)
+            except SkeletonMismatch as exc:
+                return [], f"{head}; its graphs per size differ: {exc}", ""
         return [_as_mutant(gm, functools.partial(_sized_left_sides, gm, constraints)) for gm in made], "", \
             ON_GRAPHS_PER_SIZE
-    return [_as_mutant(gm, functools.partial(_graph_left_sides, gm.graph))
-            for gm in on_graph(g, constraints, census)], "", ON_GRAPH
+    sited = _sited(claim.func, {None: g}, constraints)
+    made = site_mutants(sited, constraints, census) if sited is not None else on_graph(g, constraints, census)
+    return [_as_mutant(gm, functools.partial(_graph_left_sides, gm.graph)) for gm in made], "", ON_GRAPH
+
+
+def _sited(func: Callable, graphs: dict, constraints: tuple) -> dict | None:
+    """The claim's graphs (with symbolic sizes: key None; or per size) traced once more with their sites
+    (:mod:`stiefelsym.ir.sites`), each the same graph as the one compiled (the same digest); None when no
+    node of them has a site of claim code (a graph handed over, a claims file's graph replayed: the
+    mutants are then made node by node)."""
+    from stiefelsym.ir import NotDeterministic, _clean
+    from stiefelsym.ir.trace import trace
+    out = {}
+    for z, g in graphs.items():
+        m = _clean(trace, func, None if z is None else z[0], None if z is None else z[1], constraints, None, True)
+        if m.digest() != g.digest():
+            raise NotDeterministic("the claim traced with its sites gave another graph")
+        out[z] = m
+    return out if any(x is not None for m in out.values() for x in m.sites or ()) else None
 
 
 def _as_mutant(gm: Any, left: Callable) -> Mutant:
-    return Mutant(description=gm.description(), lineno=0, func=gm.func, operator=gm.operator,
-                  index=gm.index, source=f"%{gm.node}", left=left,
+    site = gm.site
+    return Mutant(description=gm.description(), lineno=site.line if site is not None else 0, func=gm.func,
+                  operator=gm.operator, index=gm.index, source=site.text() if site is not None else f"%{gm.node}",
+                  left=left,
                   notation=tuple(c.to_json() for c in gm.changes))
 
 
@@ -1433,7 +1463,7 @@ def _claim_task(ci: int) -> _ClaimRun:
     where = notation_size(s for s, _ in plan)
     try:
         for m in _select(muts, _WORK["limit"], _WORK["only"]):
-            o = MutantOutcome(claim.id, m.index, m.description, m.lineno if not on_graphs else None, m.operator,
+            o = MutantOutcome(claim.id, m.index, m.description, (m.lineno or None) if on_graphs else m.lineno, m.operator,
                               m.source, _run_cells(claim, plan, seed, m.func, m.description),
                               notation=list(m.notation) if on_graphs else notation(claim, m, where))
             run.mutants.append(classify(o, run.baseline))

@@ -155,11 +155,12 @@ def _command(ids: Sequence[str], sizes: Sequence[str], methods: Sequence[str], s
                    "change reaches (several times faster; the classification is the same).")
 @click.option("--on", "on", type=click.Choice(["source", "graphs", "auto"]), default=None,
               help="What is mutated: each claim's Python source (every mutant traced again), or each claim's "
-                   "graph (no Python of the claim runs again; a claim traced per size is mutated at the same "
-                   "node of its graph at every size when those graphs have one skeleton, and reported as not "
-                   "covered otherwise), or auto: graphs where they can be, the source otherwise (the report "
-                   "says which, and why).  Default: source; graphs with --claims (a user's file is traced in "
-                   "a child process, and only its graphs reach this one).")
+                   "graphs (no Python of the claim runs again; one change at one site of the claim's source, "
+                   "made at every node built there, in the graph of every size; a claim with no graph at a "
+                   "size run is reported as not covered), or auto: graphs where they can be, the source "
+                   "otherwise (the report says which, and why).  With --corrections: where the candidates "
+                   "are made.  Default: source; graphs with --claims (a user's file is traced in a child "
+                   "process, and only its graphs reach this one: they are mutated node by node).")
 @click.option("--corrections", is_flag=True,
               help="Errata search instead of the mutation analysis: for each named CLAIM, the candidates of the "
                    "declared search space (every operator, in the claim and its helper functions, two signs at "
@@ -224,7 +225,7 @@ def mutate(ids: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str, ...
                     except BudgetError as exc:
                         raise MutateInputError(str(exc)) from None
     if corrections:
-        _search(engine, claims, ids, parsed_sizes, tuple(methods) or ("rational", "modular"), seed, fmt)
+        _search(engine, claims, ids, parsed_sizes, tuple(methods) or ("rational", "modular"), seed, fmt, on)
     methods = tuple(methods) or engine.METHODS
     out_err = fmt != "text"
 
@@ -281,8 +282,9 @@ def mutate(ids: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str, ...
 
 
 def _search(engine: Any, claims: Sequence[Claim], ids: Sequence[str], sizes: Sequence[Size],
-            methods: Sequence[str], seed: int, fmt: str) -> None:
-    """``mutate --corrections``: the errata search of the named claims; exits 0."""
+            methods: Sequence[str], seed: int, fmt: str, on: str = "source") -> None:
+    """``mutate --corrections``: the errata search of the named claims (on their source, or with ``on``
+    "graphs" or "auto" on their graphs: one change at one site at a time); exits 0."""
     import json
 
     from stiefelsym.ir import mutants as on_graphs
@@ -298,13 +300,18 @@ def _search(engine: Any, claims: Sequence[Claim], ids: Sequence[str], sizes: Seq
         plan_sizes = chosen or [s for s in c.sizes if s.n <= engine.DEFAULT_N_MAX] or list(c.sizes)[:1]
         tried = [0]
         candidates = None
-        if isinstance(c.func, TracedFunction):      # a claim of a --claims file: its graph is what is here
-            # (a claim traced per size: its graphs at the sizes searched, written at the first)
+        if isinstance(c.func, TracedFunction) or on != "source":
+            # a claim of a --claims file (its graph is what is here), or --on graphs / auto: the search on the
+            # graphs (a claim traced per size: its graphs at the sizes searched, written at the first)
             where = engine.notation_size(plan_sizes)
             candidates, why = engine.graph_mutants(c, list(dict.fromkeys(([where] if where else []) + plan_sizes)))
-            if why:
+            if why and on == "auto" and not isinstance(c.func, TracedFunction):
+                candidates = None           # its source, then
+            elif why:
                 raise MutateInputError(f"--corrections on {c.id}: {why}")
-            out["graph_search_space"] = [{"name": name, "description": text} for name, text in on_graphs.OPERATORS]
+            if candidates is not None:
+                out["graph_search_space"] = [{"name": name, "description": text}
+                                             for name, text in on_graphs.OPERATORS]
 
         def seen(m: Any, ok: bool) -> None:
             tried[0] += 1

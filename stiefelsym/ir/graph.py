@@ -34,6 +34,8 @@ from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any
 
+from stiefelsym.ir.sites import here
+
 
 class Ref(tuple):
     """A reference to the node numbered ``i`` (a 1-tuple, so that the graph's keys hash in C)."""
@@ -136,7 +138,7 @@ def _encode_args(a: tuple) -> str:
 class Graph:
     """The nodes of one trace, with the claim's output (a ``Ref`` to a ``dict`` node)."""
 
-    __slots__ = ("ops", "args", "index", "output", "refusals", "fns", "cache", "sizes")
+    __slots__ = ("ops", "args", "index", "output", "refusals", "fns", "cache", "sizes", "sites")
 
     def __init__(self) -> None:
         self.ops: list[str] = []
@@ -151,6 +153,9 @@ class Graph:
         self.cache: dict[str, Any] = {}
         #: the size (n, r) it was traced at, or None (symbolic sizes)
         self.sizes: tuple[int, int] | None = None
+        #: per node, the claim expression that made it (:class:`.sites.SourceSite`) or None, when the
+        #: trace recorded sites (None otherwise); metadata: not in the digest, the lines or the pickle
+        self.sites: list | None = None
 
     def add(self, op: str, args: tuple) -> Ref:
         key = (op, args)
@@ -159,6 +164,8 @@ class Graph:
             i = self.index[key] = len(self.ops)
             self.ops.append(op)
             self.args.append(args)
+            if self.sites is not None:
+                self.sites.append(here())
         return _REFS[i] if i < len(_REFS) else _ref(i)
 
     def __len__(self) -> int:
@@ -185,6 +192,7 @@ class Graph:
                                                                list(self.refusals), self.fns, self.sizes)
         g.index = dict(self.index)      # the same keys: a copy, not a rebuild
         g.cache = {}
+        g.sites = None if self.sites is None else list(self.sites)
         return g
 
     def refs(self, i: int) -> list[int]:
@@ -207,3 +215,4 @@ class Graph:
         self.ops, self.args, self.output, self.refusals, self.fns, self.sizes = state
         self.index = {(o, a): i for i, (o, a) in enumerate(zip(self.ops, self.args))}
         self.cache = {}
+        self.sites = None

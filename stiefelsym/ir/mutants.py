@@ -22,7 +22,12 @@ left out, and so is a change that computes the same outputs as the claim (the di
 output's subgraph, :func:`.evaluate.node_keys`, equal to the claim's) or as an earlier mutant.
 Nothing here runs claim code or evaluates a value.
 
-A claim that has no graph with symbolic sizes has one graph per size (it reads its sizes: a
+The mutation analysis makes its changes at the claim's **sites** (:func:`site_mutants`): the graphs traced
+with the source span of the claim expression that built each node (:mod:`.sites`), one change at one
+site is made at every node built there (every iteration of a loop) in every size's graph, as an edit of
+the claim's source at that place would be; nodes the engine built have no site and are not changed.
+
+Without sites, a claim that has no graph with symbolic sizes has one graph per size (it reads its sizes: a
 coordinate, a loop over n).  :func:`sized_graph_mutants` mutates those graphs when they have the same
 skeleton (:func:`skeleton`: the same ops in the same order on the same nodes, the numbers of sizes
 aside): a node is then known by its place in the order of the trace, and a mutant is one change made at
@@ -32,6 +37,7 @@ and :class:`SkeletonMismatch` says where.
 """
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any, Callable, Iterator
@@ -39,6 +45,7 @@ from typing import Any, Callable, Iterator
 from stiefelsym.ir.evaluate import node_keys
 from stiefelsym.ir.graph import Graph, Ref, Size
 from stiefelsym.ir.replay import GraphClaim, SizedGraphClaim
+from stiefelsym.ir.sites import SourceSite
 
 #: scene leaves and the leaves of the same kind that replace them (the source mutation's pairs)
 LETTER_SWAPS: dict[str, tuple[str, ...]] = {
@@ -110,7 +117,7 @@ def sites(g: Graph) -> Iterator[Site]:
             for k in (0, 1):
                 if _is_const(a[k]):
                     yield Site(i, "coefficient", f"the constant {a[k]} changed to {a[k] + 1}",
-                               lambda rp, a, f, k=k: getattr(rp, "_" + ops[i])(_bump(a, k), f))
+                               lambda rp, a, f, k=k, op=op: getattr(rp, "_" + op)(_bump(a, k), f))
         elif op == "neg":
             yield Site(i, "sign", "a unary minus removed", lambda rp, a, f: v(rp, a[0], f))
         elif op == "matmul":
@@ -129,7 +136,7 @@ def sites(g: Graph) -> Iterator[Site]:
             for k in (0, 1):
                 if _is_const(a[k]):
                     yield Site(i, "coefficient", f"the constant {a[k]} changed to {a[k] + 1}",
-                               lambda rp, a, f, k=k: getattr(rp, "_" + ops[i])(_bump(a, k), f))
+                               lambda rp, a, f, k=k, op=op: getattr(rp, "_" + op)(_bump(a, k), f))
         elif op == "pow" and type(a[1]) is int:
             yield Site(i, "coefficient", f"the exponent {a[1]} changed to {a[1] + 1}",
                        lambda rp, a, f: v(rp, a[0], f) ** (a[1] + 1))
@@ -199,6 +206,10 @@ class GraphMutant:
     #: (its graphs are not kept: they are what the tracer makes of the edited replays, at every run);
     #: ``key`` is then the digests of the outputs at every size, joined
     sized: dict | None = None
+    #: a mutant at a site (:func:`site_mutants`): the claim expression changed, and the number of nodes
+    #: (over every size's graph) the change was made at
+    site: SourceSite | None = None
+    nodes: int = 1
 
     @property
     def func(self) -> GraphClaim | SizedGraphClaim:
@@ -221,6 +232,12 @@ class GraphMutant:
 
     def description(self) -> str:
         from stiefelsym.ir.notation import describe
+        if self.site is not None:
+            src = self.site.text()
+            at = f"`{src}` at " if src else ""
+            sizes = "" if self.sized is None else ", graphs at " + ", ".join(f"({n},{r})" for n, r in self.sized)
+            many = f", {self.nodes} nodes" if self.nodes > 1 else ""
+            return f"{describe(self.changes)} ({at}{self.site.where()}{sizes}: {self.operator}: {self.text}{many})"
         if self.sized is None:
             return f"{describe(self.changes)} (graph: node %{self.node}, {self.operator}: {self.text})"
         at = ", ".join(f"({n},{r})" for n, r in self.sized)
@@ -382,5 +399,101 @@ def sized_graph_mutants(graphs: dict[tuple[int, int], Graph], constraints: tuple
                          sized={y: (graphs[y], {site.node: per[y][k].edit}) for y in sizes})
         if notation:
             gm.changes = diff(graphs[z], made[z])
+        out.append(gm)
+    return out
+
+
+# --------------------------------------------------------------------------- mutants at a site
+
+_NUMBER = re.compile(r"-?\d+(?:/\d+)?")
+
+
+def _change_key(site: Site) -> tuple[str, str]:
+    """What a change does whatever the numbers it reads (``the constant 2 changed to 3`` and ``... 3 changed
+    to 4`` are one change of the constant a site makes: at each iteration of a loop, at each size)."""
+    return site.operator, _NUMBER.sub("k", site.text)
+
+
+def site_groups(graphs: dict[Any, Graph]) -> dict[tuple, dict[Any, dict[int, Edit]]]:
+    """The changes of :func:`sites` grouped by the claim expression that made their nodes (the graphs'
+    :attr:`~.graph.Graph.sites`): per (source site, operator, change whatever its numbers, occurrence at the
+    node), per size, the edits of every node built at that site that offers the change.  In source order
+    (file, line, column), then the order of :data:`OPERATORS`.  Nodes with no site (made by the engine) are
+    left out."""
+    order = {name: k for k, (name, _) in enumerate(OPERATORS)}
+    groups: dict[tuple, dict[Any, dict[int, Edit]]] = {}
+    texts: dict[tuple, str] = {}
+    for z, g in graphs.items():
+        if g.sites is None:
+            raise ValueError("a graph traced without sites (trace(..., sites=True))")
+        seen: dict[tuple, int] = {}
+        for x in sites(g):
+            src = g.sites[x.node]
+            if src is None:
+                continue
+            change = _change_key(x)
+            k = seen[(x.node,) + change] = seen.get((x.node,) + change, -1) + 1
+            key = (src, order.get(x.operator, len(order)), change[1], k, x.operator)
+            if key not in groups:
+                texts[key] = x.text
+            groups.setdefault(key, {}).setdefault(z, {})[x.node] = x.edit
+    return {key + (texts[key],): groups[key] for key in sorted(groups, key=lambda key: key[:4])}
+
+
+def site_mutants(graphs: dict[Any, Graph], constraints: tuple, census: MutantCensus | None = None,
+                 notation: bool = True) -> list[GraphMutant]:
+    """The mutants of a claim at its sites: ``graphs`` its graph with symbolic sizes (key None) or its graph
+    at each size (keys (n, r), in the order of the sizes its changes are written at), traced with sites.
+    A mutant is one change at one site (:func:`site_groups`) made at every node built there, in every
+    size's graph: the analogue of one edit of the claim's source, whatever loops and conditions over the
+    sizes made those nodes (the graphs need not have one skeleton).  A change refused by the tracer at one
+    of the sizes is left out (counted ill-typed), and so is one that computes at every size what the claim
+    or an earlier mutant computes; it is written (:func:`.notation.diff`) at the first size where it
+    changes an output."""
+    from stiefelsym.ir import _clean
+    from stiefelsym.ir.notation import diff
+    from stiefelsym.ir.trace import trace
+    census = census if census is not None else MutantCensus()
+    sizes = list(graphs)
+    base = tuple(output_key(graphs[z]) for z in sizes)
+    seen = {base}
+    out: list[GraphMutant] = []
+    for (src, _, _, _, operator, text), per in site_groups(graphs).items():
+        census.sites += 1
+        made: dict[Any, Graph] = {}
+        refused = ""
+        for z, edits in per.items():
+            g = graphs[z]
+            try:
+                m = _clean(trace, GraphClaim(g, edits), g.sizes and g.sizes[0], g.sizes and g.sizes[1], constraints)
+                if m.refusals:
+                    raise TypeError(m.refusals[0])
+                made[z] = m
+            except Exception as exc:   # noqa: BLE001 - the tracer refused the change at this size
+                refused = refused or str(exc).removeprefix("refused: ").split(" (")[0][:80]
+        if refused:
+            census.ill_typed += 1
+            census.ill_typed_somewhere += bool(made)
+            census.refusals[refused] = census.refusals.get(refused, 0) + 1
+            continue
+        key = tuple(output_key(made[z]) if z in made else base[j] for j, z in enumerate(sizes))
+        if key == base:
+            census.same_as_claim += 1
+            continue
+        if key in seen:
+            census.duplicates += 1
+            continue
+        seen.add(key)
+        first = next(j for j, z in enumerate(sizes) if key[j] != base[j])
+        z0 = sizes[first]
+        x0 = next(iter(per[z0]))
+        nodes = sum(len(e) for e in per.values())
+        if z0 is None:
+            gm = GraphMutant(len(out), x0, operator, text, made[z0], key[0], site=src, nodes=nodes)
+        else:
+            gm = GraphMutant(len(out), x0, operator, text, None, "/".join(key),
+                             sized={y: (graphs[y], per.get(y, {})) for y in sizes}, site=src, nodes=nodes)
+        if notation:
+            gm.changes = diff(graphs[z0], made[z0])
         out.append(gm)
     return out

@@ -20,12 +20,14 @@ from __future__ import annotations
 
 import functools
 import inspect
+import sys
 from fractions import Fraction
 from typing import Any, Callable, Iterator
 
 from stiefelsym.ir.seal import refuse_registration
 from stiefelsym.ir.families import COMPARISONS, SYMBOLS, SizeFamily
 from stiefelsym.ir.graph import _REFS, Graph, Named, Ref, Size, _ref
+from stiefelsym.ir.sites import STOP, claim_site
 from stiefelsym.ir.statements import DOMAINS, Count, Inverse, Rank, RightInverse
 
 
@@ -488,6 +490,7 @@ def _tracer(t: "Trace", r: Ref, kind: str, shape: tuple = (None, None)) -> Trace
 
 
 _NEW = object.__new__
+_FRAME = sys._getframe
 
 
 class TraceScene:
@@ -873,6 +876,8 @@ class Trace:
             i = g.index[key] = len(g.ops)
             g.ops.append(op)
             g.args.append(args)
+            if g.sites is not None:
+                g.sites.append(claim_site(_FRAME(1)))
         x = _NEW(Tracer)
         _SET_T(x, self)
         _SET_R(x, _REFS[i] if i < len(_REFS) else _ref(i))
@@ -1380,10 +1385,13 @@ def _size_numbers(n: int | None, r: int | None) -> Callable[[Size], int | None]:
 
 
 def trace(func: Callable, n: int | None, r: int | None, constraints: tuple[str, Callable],
-          family: SizeFamily | None = None) -> Graph:
+          family: SizeFamily | None = None, sites: bool = False) -> Graph:
     """The graph of ``func`` at the size (n, r), or with symbolic sizes (n = r = None), on every size or
-    on the sizes of a ``family`` (see :mod:`.families`)."""
+    on the sizes of a ``family`` (see :mod:`.families`).  ``sites``: record, per node, the claim
+    expression that made it (:mod:`.sites`: metadata, not part of the graph's digest)."""
     t = Trace(n, r, constraints, family)
+    if sites:
+        t.g.sites = []
     _ACTIVE.append(t)
     try:
         out = func(TraceScene(t, t.g.add("scene", (0,))))
@@ -1400,3 +1408,6 @@ def trace(func: Callable, n: int | None, r: int | None, constraints: tuple[str, 
     g = t.g.sealed()
     g.sizes = None if n is None else (n, r)
     return g
+
+
+STOP.add(trace.__code__)     # below the trace's entry no claim code runs: a walk for a site ends there
