@@ -212,15 +212,7 @@ def _pruned(g: Graph) -> Graph:
     """The nodes the output needs, renumbered in order (a differentiated function's body is dropped)."""
     if g.output is None:
         return g
-    need = set()
-    stack = [g.output.i]
-    while stack:
-        i = stack.pop()
-        if i in need:
-            continue
-        need.add(i)
-        stack.extend(g.refs(i))
-    order = sorted(need)
+    order = sorted(g.needed())
     num = {i: k for k, i in enumerate(order)}
 
     def m(a: Any) -> Any:

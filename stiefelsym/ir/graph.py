@@ -208,6 +208,18 @@ class Graph:
                 stack.extend(a)
         return out
 
+    def needed(self) -> set[int]:
+        """The nodes the output reads, directly or not (the output included; none without an output)."""
+        need: set[int] = set()
+        stack = [self.output.i] if self.output is not None else []
+        while stack:
+            i = stack.pop()
+            if i in need:
+                continue
+            need.add(i)
+            stack.extend(self.refs(i))
+        return need
+
     def __getstate__(self):
         return (self.ops, self.args, self.output, self.refusals, self.fns, self.sizes)
 

@@ -346,9 +346,7 @@ def sized_graph_mutants(graphs: dict[tuple[int, int], Graph], constraints: tuple
     same :func:`skeleton`, else :class:`SkeletonMismatch`.  A change that does not type at one of the
     sizes is left out (counted ill-typed), and so is one that computes at every size what the claim or
     an earlier mutant computes."""
-    from stiefelsym.ir import _clean
     from stiefelsym.ir.notation import diff
-    from stiefelsym.ir.trace import trace
     census = census if census is not None else MutantCensus()
     sizes = list(graphs)
     first = graphs[sizes[0]]
@@ -369,30 +367,12 @@ def sized_graph_mutants(graphs: dict[tuple[int, int], Graph], constraints: tuple
     out: list[GraphMutant] = []
     for k, site in enumerate(per[sizes[0]]):
         census.sites += 1
-        made: dict[tuple[int, int], Graph] = {}
-        refused = ""
-        for z in sizes:
-            edit = per[z][k].edit
-            try:
-                m = _clean(trace, GraphClaim(graphs[z], {site.node: edit}), z[0], z[1], constraints)
-                if m.refusals:
-                    raise TypeError(m.refusals[0])
-                made[z] = m
-            except Exception as exc:   # noqa: BLE001 - the tracer refused the change at this size
-                refused = refused or str(exc).removeprefix("refused: ").split(" (")[0][:80]
-        if refused:
-            census.ill_typed += 1
-            census.ill_typed_somewhere += bool(made)
-            census.refusals[refused] = census.refusals.get(refused, 0) + 1
+        made = _made_at_sizes(graphs, {z: {site.node: per[z][k].edit} for z in sizes}, constraints, census)
+        if made is None:
             continue
         key = tuple(output_key(made[z]) for z in sizes)
-        if key == base:
-            census.same_as_claim += 1
+        if not _new(key, base, seen, census):
             continue
-        if key in seen:
-            census.duplicates += 1
-            continue
-        seen.add(key)
         # written at the first size where it changes an output (a change may vanish at a small size)
         z = next(z for j, z in enumerate(sizes) if key[j] != base[j])
         gm = GraphMutant(len(out), site.node, site.operator, site.text, None, "/".join(key),
@@ -450,9 +430,7 @@ def site_mutants(graphs: dict[Any, Graph], constraints: tuple, census: MutantCen
     of the sizes is left out (counted ill-typed), and so is one that computes at every size what the claim
     or an earlier mutant computes; it is written (:func:`.notation.diff`) at the first size where it
     changes an output."""
-    from stiefelsym.ir import _clean
     from stiefelsym.ir.notation import diff
-    from stiefelsym.ir.trace import trace
     census = census if census is not None else MutantCensus()
     sizes = list(graphs)
     base = tuple(output_key(graphs[z]) for z in sizes)
@@ -460,30 +438,12 @@ def site_mutants(graphs: dict[Any, Graph], constraints: tuple, census: MutantCen
     out: list[GraphMutant] = []
     for (src, _, _, _, operator, text), per in site_groups(graphs).items():
         census.sites += 1
-        made: dict[Any, Graph] = {}
-        refused = ""
-        for z, edits in per.items():
-            g = graphs[z]
-            try:
-                m = _clean(trace, GraphClaim(g, edits), g.sizes and g.sizes[0], g.sizes and g.sizes[1], constraints)
-                if m.refusals:
-                    raise TypeError(m.refusals[0])
-                made[z] = m
-            except Exception as exc:   # noqa: BLE001 - the tracer refused the change at this size
-                refused = refused or str(exc).removeprefix("refused: ").split(" (")[0][:80]
-        if refused:
-            census.ill_typed += 1
-            census.ill_typed_somewhere += bool(made)
-            census.refusals[refused] = census.refusals.get(refused, 0) + 1
+        made = _made_at_sizes(graphs, per, constraints, census)
+        if made is None:
             continue
         key = tuple(output_key(made[z]) if z in made else base[j] for j, z in enumerate(sizes))
-        if key == base:
-            census.same_as_claim += 1
+        if not _new(key, base, seen, census):
             continue
-        if key in seen:
-            census.duplicates += 1
-            continue
-        seen.add(key)
         first = next(j for j, z in enumerate(sizes) if key[j] != base[j])
         z0 = sizes[first]
         x0 = next(iter(per[z0]))
@@ -497,3 +457,41 @@ def site_mutants(graphs: dict[Any, Graph], constraints: tuple, census: MutantCen
             gm.changes = diff(graphs[z0], made[z0])
         out.append(gm)
     return out
+
+
+def _made_at_sizes(graphs: dict[Any, Graph], edits: dict[Any, dict], constraints: tuple,
+                   census: MutantCensus) -> dict[Any, Graph] | None:
+    """The graphs with ``edits[z]`` made in ``graphs[z]``, traced again, for each size z of ``edits``; None
+    (counted ill-typed in ``census``) when the tracer refuses the change at one of the sizes."""
+    from stiefelsym.ir import _clean
+    from stiefelsym.ir.trace import trace
+    made: dict[Any, Graph] = {}
+    refused = ""
+    for z, edit in edits.items():
+        g = graphs[z]
+        try:
+            m = _clean(trace, GraphClaim(g, edit), g.sizes and g.sizes[0], g.sizes and g.sizes[1], constraints)
+            if m.refusals:
+                raise TypeError(m.refusals[0])
+            made[z] = m
+        except Exception as exc:   # noqa: BLE001 - the tracer refused the change at this size
+            refused = refused or str(exc).removeprefix("refused: ").split(" (")[0][:80]
+    if refused:
+        census.ill_typed += 1
+        census.ill_typed_somewhere += bool(made)
+        census.refusals[refused] = census.refusals.get(refused, 0) + 1
+        return None
+    return made
+
+
+def _new(key: tuple, base: tuple, seen: set, census: MutantCensus) -> bool:
+    """Whether a mutant computing ``key`` (its output at each size) is new: not the claim's ``base``, not an
+    earlier mutant's (counted in ``census`` otherwise); it is then added to ``seen``."""
+    if key == base:
+        census.same_as_claim += 1
+        return False
+    if key in seen:
+        census.duplicates += 1
+        return False
+    seen.add(key)
+    return True

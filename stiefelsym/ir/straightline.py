@@ -211,14 +211,7 @@ def compile_graph(g: Graph, leaves: Callable[[int, str], Leaf]) -> Program:
         raise NotCompiled("a graph with no output")
     w = _Writer()
     ops, args = g.ops, g.args
-    need: set[int] = set()
-    stack = [g.output.i]
-    while stack:
-        i = stack.pop()
-        if i in need:
-            continue
-        need.add(i)
-        stack.extend(g.refs(i))
+    need = g.needed()
     vals: dict[int, Any] = {}
     inputs: list[tuple[int, int, int]] = []
     named: dict[Any, str] = {}
