@@ -908,8 +908,8 @@ def _straight(g: Any, field: Any, scene: Any, checks: dict, log: tuple, compile_
         k = keys[text] = len(keys)
         return (1, k)
 
-    def leaf(i: int, name: str) -> Leaf:
-        v = getattr(scene, name)
+    def leaf(i: int, name: Any) -> Leaf:
+        v = getattr(scene, name) if type(name) is str else getattr(scene, name[0])(*name[1])
         rows, scalar = entries(v)
         if i >= 0:
             coords[i] = rows
@@ -919,12 +919,12 @@ def _straight(g: Any, field: Any, scene: Any, checks: dict, log: tuple, compile_
     h = _derived(g, scene_flows(scene))
     if type(scene)._tangent_vector is not Scene._tangent_vector and "prim" in h.ops:
         raise NotCompiled("a scene whose tangent vectors are its own")
-    prog = compile_graph(h, leaf)
+    prog = compile_graph(h, leaf, lambda d: getattr(scene, d))
     inputs = [coords[i][a][b] for i, a, b in prog.inputs]
     if any(x.context() is not R.ctx for x in inputs):
         raise NotCompiled("coordinates of the chart in another context of the ring")
     back = None
-    if all(c.q == 1 for x in inputs for c in x.to_dict().values()):
+    if not prog.constants and all(c.q == 1 for x in inputs for c in x.to_dict().values()):
         # a chart of integer polynomials: the program runs over Z[x] (flint's integer polynomials
         # skip the rational content of every operation) and its outputs come back to Q[x] exactly
         zctx, zero = _integer_ring(R.ctx)
@@ -934,7 +934,7 @@ def _straight(g: Any, field: Any, scene: Any, checks: dict, log: tuple, compile_
         back = lambda x: from_dict(x.to_dict()) if x else qzero  # noqa: E731
         got = [[[back(x) for x in row] for row in m] for m in fn(inputs)]
     else:
-        fn = prog.function(R.zero)
+        fn = prog.function(R.zero, flint.fmpq)
         got = fn(inputs)
     outputs = []
     if list(prog.outputs) != list(checks):
