@@ -110,7 +110,10 @@ def test_a_program_is_shared_by_the_graph_digest_only(fresh, monkeypatch):
 
 
 #: the catalog's claims whose graphs the compiler handles, at small sizes
-CATALOG_SAMPLE = ["invariants-so-n", "euclidean-invariance", "manakov-square", "ym-charge"]
+CATALOG_SAMPLE = ["invariants-so-n", "euclidean-invariance", "manakov-square", "ym-charge",
+                  # traces, pairings, s.q, division by constants, fresh parameters, matrices by rows
+                  "normal-legendre-inverse", "normal-momentum-of-velocity", "chain-algebra-commutative",
+                  "manakov-operator", "coupled-corrected-flow-invariants"]
 
 
 @pytest.mark.parametrize("n,r", [(2, 1), (3, 1), (3, 2), (3, 3), (4, 2)])

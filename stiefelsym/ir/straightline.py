@@ -3,32 +3,39 @@
 The interpreter (:mod:`.evaluate`) evaluates a graph node by node on whole matrices of a
 backend: every product goes through the matrix class, the backend, its memo and numpy object
 arrays, which at small sizes costs far more than the arithmetic of the entries.  For a graph
-made of the matrix algebra alone (``add sub neg mul matmul T``, integer constants, containers,
-the attributes of the scene and the tangent vectors of its derivatives), this module writes the
-same computation out entry by entry, once per graph and *pattern of its leaves*, as the code of
-one Python function:
+made of the matrix algebra (``add sub neg mul matmul T``, division by a rational constant,
+rational constants, containers, the attributes of the scene and the tangent vectors of its
+derivatives), entries, slices and blocks (``entry``, ``block``), and the scene's methods that
+are the same algebra written out (``tr``, ``killing``, ``q``, ``const``, ``zeros``,
+``identity``, ``scalar_matrix``, ``mat``, and the claim's own fresh parameters ``scalar`` and
+``generic``, which are leaves), this module writes the same computation out entry by entry,
+once per graph and *pattern of its leaves*, as the code of one Python function:
 
 * a leaf (an attribute of the scene) is given by the pattern of its entries: an integer constant
   (0 and 1 of the chart's X = (E_1..E_r), say) or an input, possibly the same input as another
   entry's up to sign (Φ = PXᵀ − XPᵀ on the chart); the inputs are the program's arguments,
   passed in at every run;
-* integer constants are folded, structural zeros skipped (a product with a zero entry is not
-  written, a sum with one is its other term), a product by 1 is its other factor, and integer
-  coefficients (signs, the 2 of 1 + 2κ) ride along with an entry until they meet another
-  entry, so a negation or a difference of two negated terms costs no operation;
+* rational constants are folded, structural zeros skipped (a product with a zero entry is not
+  written, a sum with one is its other term), a product by 1 is its other factor, and rational
+  coefficients (signs, the 2 of 1 + 2κ, the -1/2 of the pairing) ride along with an entry until
+  they meet another entry, so a negation or a difference of two negated terms costs no
+  operation; a constant that is not an integer is an element of the ring made once from the
+  exact fraction (``K0``, ``K1``, ..), never a Python division or a float;
 * a 1 x 1 matrix is one entry, and a transpose is a new view of the same entries;
 * the same operation on the same values is written once (a sum or a product in either order);
 * only the entries the outputs read are computed (dead code is dropped).
 
 What is written is a function of the graph and the leaf pattern only: no value of an input is
 seen while compiling, and no entry of any input is assumed to be anything but an element of a
-commutative ring (the program uses ``+``, ``-``, ``*`` and ``-x`` on the inputs and integers).
+commutative ring containing Q (the program uses ``+``, ``-``, ``*`` and ``-x`` on the inputs,
+integers and the ring's rational constants).
 Two entries that are the same computation are never cancelled while compiling (x - x is
 written and computed): the values of the outputs come from running the program.
 
-A graph with any other op (inverses, traces, entries, blocks, traced functions, engine steps
-other than the tangent vector, rank and count statements, fractions) is not compiled
-(:class:`NotCompiled`): its evaluation stays with the interpreter.
+A graph with any other op (inverses and resolvents, division by anything but a rational
+constant, traced functions, engine steps other than the tangent vector, other methods of the
+scene, rank and count statements) or a check that is a number rather than a matrix is not
+compiled (:class:`NotCompiled`): its evaluation stays with the interpreter.
 """
 from __future__ import annotations
 
