@@ -113,7 +113,9 @@ def test_a_program_is_shared_by_the_graph_digest_only(fresh, monkeypatch):
 CATALOG_SAMPLE = ["invariants-so-n", "euclidean-invariance", "manakov-square", "ym-charge",
                   # traces, pairings, s.q, division by constants, fresh parameters, matrices by rows
                   "normal-legendre-inverse", "normal-momentum-of-velocity", "chain-algebra-commutative",
-                  "manakov-operator", "coupled-corrected-flow-invariants"]
+                  "manakov-operator", "coupled-corrected-flow-invariants",
+                  # checks that are numbers
+                  "quartic", "neumann-hamiltonian", "symmetric-pair"]
 
 
 @pytest.mark.parametrize("n,r", [(2, 1), (3, 1), (3, 2), (3, 3), (4, 2)])
@@ -307,3 +309,22 @@ def test_divisions_by_polynomials_and_other_methods_are_refused(func):
     with pytest.raises(NotCompiled):
         compile_graph(g, lambda i, name: Leaf([[None]], True) if name == "lam" else
                       Leaf([[None] * 3 for _ in range(3)]), lambda d: getattr(sc, d))
+
+
+def numbers_as_checks(s):
+    """Checks that are numbers: <Φ, Φ> + tr(Φ²)/2 = 0 and tr(XᵀX) - r = 0."""
+    return {"pairing": s.killing(s.Phi, s.Phi) + s.tr(s.Phi @ s.Phi) / 2, "trace": s.tr(s.X.T @ s.X) - s.r}
+
+
+def numbers_sign_flipped(s):
+    return {"pairing": s.killing(s.Phi, s.Phi) - s.tr(s.Phi @ s.Phi) / 2}
+
+
+def numbers_term_dropped(s):
+    return {"trace": s.tr(s.X.T @ s.X)}
+
+
+@pytest.mark.parametrize("n,r", [(3, 1), (4, 2)])
+def test_checks_that_are_numbers_compile_and_a_corruption_fails(fresh, monkeypatch, n, r):
+    test_new_ops_compile_prove_and_a_corruption_fails(fresh, monkeypatch, numbers_as_checks,
+                                                      [numbers_sign_flipped, numbers_term_dropped], n, r)

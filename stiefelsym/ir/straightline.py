@@ -34,7 +34,7 @@ written and computed): the values of the outputs come from running the program.
 
 A graph with any other op (inverses and resolvents, division by anything but a rational
 constant, traced functions, engine steps other than the tangent vector, other methods of the
-scene, rank and count statements) or a check that is a number rather than a matrix is not
+scene, rank and count statements) is not
 compiled (:class:`NotCompiled`): its evaluation stays with the interpreter.
 """
 from __future__ import annotations
@@ -219,12 +219,13 @@ def _matmul(w: _Writer, x: _Mat, y: _Mat) -> _Mat:
 class Program:
     """A compiled graph: ``run(inputs)`` gives the outputs' entries (a dict: the check's name to its
     rows of values), ``inputs``: which leaf entries the program reads, in order ((leaf node, i, j));
-    ``constants``: the rational constants (not integers) the program names K0, K1, ..."""
+    ``constants``: the rational constants (not integers) the program names K0, K1, ..; ``scalars``:
+    the checks that are numbers (each given as a 1 x 1 matrix)."""
 
     def __init__(self, source: str, inputs: list[tuple[int, int, int]], outputs: dict[str, tuple[int, int]],
-                 operations: int, constants: tuple[Fraction, ...] = ()) -> None:
+                 operations: int, constants: tuple[Fraction, ...] = (), scalars: frozenset = frozenset()) -> None:
         self.source, self.inputs, self.outputs, self.operations = source, inputs, outputs, operations
-        self.constants = constants
+        self.constants, self.scalars = constants, scalars
         self._fn: tuple[Any, Callable] | None = None
 
     def function(self, zero: Any, fraction: Callable[[int, int], Any] | None = None) -> Callable:
@@ -273,6 +274,8 @@ def compile_graph(g: Graph, leaves: Callable[[int, Any], Leaf],
             return vals[a.i]
         if type(a) is int or type(a) is Fraction:
             return _Num(_norm(a))
+        if type(a) is Size:         # a dimension of the scene (s.n, s.r) as a number
+            return _Num(dim(a))
         raise NotCompiled(f"a literal {type(a).__name__} in arithmetic")
 
     def dim(x: Any) -> int:
@@ -491,8 +494,12 @@ def compile_graph(g: Graph, leaves: Callable[[int, Any], Leaf],
         vals[i] = v
 
     out = vals[g.output.i]
-    if type(out) is not dict or not out or not all(type(x) is _Mat and x and x[0] for x in out.values()):
-        raise NotCompiled("an output that is not a dict of matrices")
+    if type(out) is not dict or not out or not all(type(x) is _Num or (type(x) is _Mat and x and x[0])
+                                                   for x in out.values()):
+        raise NotCompiled("an output that is not a dict of matrices and numbers")
+    # a check that is a number is computed as a 1 x 1 matrix and named in ``scalars``
+    scalars = frozenset(name for name, x in out.items() if type(x) is _Num)
+    out = {name: _Mat(((x.e,),)) if type(x) is _Num else x for name, x in out.items()}
     # the program: live lines only (backwards from the outputs)
     finals = {name: [[w.final(e) for e in row] for row in m] for name, m in out.items()}
     live: set[str] = set()
@@ -514,7 +521,7 @@ def compile_graph(g: Graph, leaves: Callable[[int, Any], Leaf],
                      *body,
                      f"    return ({ret},)"]) + "\n"
     shapes = {name: (len(m), len(m[0])) for name, m in out.items()}
-    return Program(src, inputs, shapes, len(body), tuple(w.constants))
+    return Program(src, inputs, shapes, len(body), tuple(w.constants), scalars)
 
 
 def _fail(why: str) -> Any:

@@ -771,18 +771,20 @@ class _Straight:
     evaluation of the graph on the chart made (the same at every run: a function of the graph and
     the chart), replayed into the scene's record at every run."""
 
-    __slots__ = ("fn", "field", "scene", "inputs", "outputs", "log", "ctx", "operations", "back", "zero")
+    __slots__ = ("fn", "field", "scene", "inputs", "outputs", "log", "ctx", "operations", "back", "zero", "ring",
+                 "version")
 
     def __init__(self, fn, field, scene, inputs, outputs, log, ctx, operations, back) -> None:
         self.fn, self.field, self.scene, self.inputs, self.outputs = fn, field, scene, inputs, outputs
         self.log, self.ctx, self.operations = log, ctx, operations
         #: an output entry of the program's ring as a polynomial of the field's (None: the same ring)
         self.back = back
-        self.zero = backend(field).ring.zero
+        self.ring = backend(field).ring
+        self.zero, self.version = self.ring.zero, self.ring.version
 
     def run(self) -> dict[str, Any]:
         """The checks, computed by the program from the chart's coordinates."""
-        from stiefelsym.backends.polyfield import PolyMat
+        from stiefelsym.backends.polyfield import PolyMat, _RF
         verify_engine("before an evaluation")
         tracker = self.scene.tracker
         tracker.restart()
@@ -791,6 +793,11 @@ class _Straight:
         checks = {}
         field, ctx, wrap, back, zero = self.field, self.ctx, Mat._wrap_native, self.back, self.zero
         for (name, (m, k), tags), rows in zip(self.outputs, values):
+            if tags is None:        # a check that is a number: the exact backend's scalar
+                x = _RF(self.ring, (rows[0][0] if back is None else back(rows[0][0]) if rows[0][0] else zero, ()))
+                x.v = self.version
+                checks[name] = x
+                continue
             a = np.empty((m, k), dtype=object)
             for i, row in enumerate(rows):
                 for j, x in enumerate(row):
@@ -867,7 +874,7 @@ def _keep(memo: dict, key: tuple, value: Any) -> None:
 def _straight(g: Any, field: Any, scene: Any, checks: dict, log: tuple, compile_graph: Callable) -> _Straight:
     """The compiled program of the graph on the chart of ``scene`` (see :func:`_compile_straight`)."""
     from stiefelsym.ir.straightline import Leaf, NotCompiled
-    from stiefelsym.backends.polyfield import PolyBackend, PolyMat, NotRational
+    from stiefelsym.backends.polyfield import PolyBackend, PolyMat, NotRational, _RF
     be = backend(field)
     if type(be) is not PolyBackend:
         raise NotCompiled("a field without the polynomial backend")
@@ -941,6 +948,14 @@ def _straight(g: Any, field: Any, scene: Any, checks: dict, log: tuple, compile_
         raise NotCompiled("the program's checks are not the interpreter's")
     for (name, shape), rows in zip(prog.outputs.items(), got):
         want = checks[name]
+        if name in prog.scalars:
+            rf = want.rf() if type(want) is _RF and want.R is R else None
+            if rf is None or rf[1] or rf[0].context() is not R.ctx:
+                raise NotCompiled("a check that is a number but not a polynomial of the chart's ring")
+            if rows[0][0] != rf[0]:
+                raise NotCompiled("the program disagrees with the interpreter (a defect of the compiler)")
+            outputs.append((name, shape, None))
+            continue
         if not isinstance(want, Mat):
             raise NotCompiled("a check that is not a matrix")
         s = want._nat()
