@@ -3,7 +3,7 @@ verdicts as the interpreter, recomputed at every run, shared only by graphs with
 and a corrupted claim still fails through them."""
 import pytest
 
-from stiefelsym import admissible, comm
+from stiefelsym import admissible, block, comm
 from stiefelsym.claims import Claim
 from stiefelsym.ir import compile_claim
 from stiefelsym.ir.derivative import derivatives, scene_flows
@@ -110,7 +110,12 @@ def test_a_program_is_shared_by_the_graph_digest_only(fresh, monkeypatch):
 
 
 #: the catalog's claims whose graphs the compiler handles, at small sizes
-CATALOG_SAMPLE = ["invariants-so-n", "euclidean-invariance", "manakov-square", "ym-charge"]
+CATALOG_SAMPLE = ["invariants-so-n", "euclidean-invariance", "manakov-square", "ym-charge",
+                  # traces, pairings, s.q, division by constants, fresh parameters, matrices by rows
+                  "normal-legendre-inverse", "normal-momentum-of-velocity", "chain-algebra-commutative",
+                  "manakov-operator", "coupled-corrected-flow-invariants",
+                  # checks that are numbers
+                  "quartic", "neumann-hamiltonian", "symmetric-pair"]
 
 
 @pytest.mark.parametrize("n,r", [(2, 1), (3, 1), (3, 2), (3, 3), (4, 2)])
@@ -166,8 +171,8 @@ def test_constants_folded_and_zeros_skipped_give_the_same_values():
 def test_a_program_that_disagrees_with_the_interpreter_is_not_used(fresh, monkeypatch):
     from stiefelsym.ir import straightline
 
-    def wrong(h, leaf):
-        p = straightline.compile_graph(h, leaf)
+    def wrong(h, leaf, *size):
+        p = straightline.compile_graph(h, leaf, *size)
         p.source = p.source.replace("return (((", "return (((x0 + ")    # an input added to one entry
         return p
     f = SymbolicField()
@@ -187,3 +192,139 @@ def test_ops_outside_the_compiler_are_refused():
     g = compile_claim(with_inverse, 3, 1, (cons.name, cons.build))
     with pytest.raises(NotCompiled):
         compile_graph(g, lambda i, name: Leaf([[None] * 3 for _ in range(3)]))
+
+
+# -- the scene's methods, entries, blocks and division by constants, compiled ---------------------
+
+def _as_matrix(s, x):
+    return s.scalar_matrix(x, s.r, "r")
+
+
+def traces_and_pairings(s):
+    """<Φ, Φ> = -tr(Φ²)/2, with the 1/2 written three ways (a division, s.q, a Fraction-valued s.const)."""
+    P = s.Phi @ s.Phi
+    return {"killing": _as_matrix(s, s.killing(s.Phi, s.Phi) + s.tr(P) / 2),
+            "q": _as_matrix(s, s.q(1, 2) * s.tr(P) + s.killing(s.Phi, s.Phi)),
+            "lam": _as_matrix(s, s.tr(s.lam * P) / 4 + s.killing(s.Phi, s.Phi) * s.lam / 2)}
+
+
+def traces_sign_flipped(s):
+    P = s.Phi @ s.Phi
+    return {"killing": _as_matrix(s, s.killing(s.Phi, s.Phi) - s.tr(P) / 2)}
+
+
+def traces_term_dropped(s):
+    P = s.Phi @ s.Phi
+    return {"q": _as_matrix(s, s.q(1, 2) * s.tr(P) + s.killing(s.Phi, s.Phi)),
+            "lam": _as_matrix(s, s.tr(s.lam * P) / 4)}
+
+
+def blocks_and_entries(s):
+    """The block diag(XᵀX, I_r) read back by slices and entries: XᵀX = I_r."""
+    r = s.r
+    M = block([[s.X.T @ s.X, s.zeros(r, r, ("r", "r"))], [s.zeros(r, r, ("r", "r")), s.Ir]])
+    return {"top": M[0:r, 0:r] - s.identity(r, "r"), "bottom": M[r:, r:] - M[0:r, 0:r],
+            "corner": M[0:r, r:] + M[r:, 0:r],
+            "entry": _as_matrix(s, M[0, 0] - 1), "row": M[0, :] - M[0:1, :], "column": M[:, r] - M[:, r:r + 1]}
+
+
+def blocks_sign_flipped(s):
+    r = s.r
+    M = block([[s.X.T @ s.X, s.zeros(r, r, ("r", "r"))], [s.zeros(r, r, ("r", "r")), s.Ir]])
+    return {"top": M[0:r, 0:r] + s.identity(r, "r")}
+
+
+def blocks_entry_dropped(s):
+    r = s.r
+    M = block([[s.X.T @ s.X, s.zeros(r, r, ("r", "r"))], [s.zeros(r, r, ("r", "r")), s.Ir]])
+    return {"entry": _as_matrix(s, M[0, 0])}
+
+
+def parameters_and_rows(s):
+    """A generic matrix and a scalar parameter of the claim's own, and a matrix written by its rows."""
+    G, mu = s.generic("G", "n", "r"), s.scalar("mu")
+    return {"scale": (mu * G).T - mu * G.T,
+            "rows": s.mat([[mu, 0], [0, mu]]) - s.scalar_matrix(mu, 2),
+            "list": s.mat([[mu * 2, 1]]) - s.mat([[mu + mu, s.q(2, 2)]])}
+
+
+def parameters_sign_flipped(s):
+    mu = s.scalar("mu")
+    return {"rows": s.mat([[mu, 0], [0, -mu]]) - s.scalar_matrix(mu, 2)}
+
+
+def parameters_term_dropped(s):
+    G, mu = s.generic("G", "n", "r"), s.scalar("mu")
+    return {"scale": (mu * G).T - mu * G.T, "rows": s.mat([[mu, 0], [0, mu]])}
+
+
+NEW_OPS = [(traces_and_pairings, [traces_sign_flipped, traces_term_dropped]),
+           (blocks_and_entries, [blocks_sign_flipped, blocks_entry_dropped]),
+           (parameters_and_rows, [parameters_sign_flipped, parameters_term_dropped])]
+
+
+@pytest.mark.parametrize("good,bads", NEW_OPS, ids=[g.__name__ for g, _ in NEW_OPS])
+@pytest.mark.parametrize("n,r", [(3, 1), (4, 2)])
+def test_new_ops_compile_prove_and_a_corruption_fails(fresh, monkeypatch, good, bads, n, r):
+    for func, verdict in [(good, "proved")] + [(b, "fails") for b in bads]:
+        c = _claim(func, func.__name__.replace("_", "-"))
+        want = _interpreted(monkeypatch, c, n, r)
+        assert want.verdict == verdict, (func.__name__, want.message)
+        for _ in range(3):      # counted, compiled, run as a program
+            assert _record(run_exact(c, n, r, 0)) == _record(want), func.__name__
+        progs = _programs(func, n, r)
+        assert progs and all(type(p) is fs._Straight for p in progs.values()), (func.__name__, progs)
+        if verdict == "fails":
+            # the verdict comes from the program's values at this run
+            (p,) = progs.values()
+            calls = []
+            real = p.fn
+            p.fn = lambda xs: calls.append(1) or real(xs)
+            assert run_exact(c, n, r, 0).verdict == "fails" and calls == [1]
+
+
+def test_rational_constants_are_ring_elements_not_floats():
+    cons = REALIZATIONS["standard"]
+    g = compile_claim(traces_and_pairings, 3, 1, (cons.name, cons.build))
+    sc = Scene(3, 1, SymbolicField(), chart="equivariant", realization="standard")
+    h = derivatives(g, scene_flows(sc))
+
+    def leaf(i, name):
+        v = getattr(sc, name) if type(name) is str else getattr(sc, name[0])(*name[1])
+        return Leaf([[None] * v.shape[1] for _ in range(v.shape[0])]) if hasattr(v, "shape") else Leaf([[None]], True)
+    prog = compile_graph(h, leaf, lambda d: getattr(sc, d))
+    assert prog.constants and "/" not in prog.source and "." not in prog.source
+    with pytest.raises(NotCompiled):
+        prog.function(0)        # no exact fractions of the ring: refused, never a float
+
+
+@pytest.mark.parametrize("func", [
+    lambda s: {"d": _as_matrix(s, s.tr(s.Phi @ s.Phi) / s.lam)},                  # a division by a polynomial
+    lambda s: {"r": s.A @ s.resolvent(s.lam) - s.X @ s.X.T},                       # a scene method not compiled
+])
+def test_divisions_by_polynomials_and_other_methods_are_refused(func):
+    cons = REALIZATIONS["standard"]
+    g = compile_claim(func, 3, 1, (cons.name, cons.build))
+    sc = Scene(3, 1, SymbolicField(), chart="equivariant", realization="standard")
+    with pytest.raises(NotCompiled):
+        compile_graph(g, lambda i, name: Leaf([[None]], True) if name == "lam" else
+                      Leaf([[None] * 3 for _ in range(3)]), lambda d: getattr(sc, d))
+
+
+def numbers_as_checks(s):
+    """Checks that are numbers: <Φ, Φ> + tr(Φ²)/2 = 0 and tr(XᵀX) - r = 0."""
+    return {"pairing": s.killing(s.Phi, s.Phi) + s.tr(s.Phi @ s.Phi) / 2, "trace": s.tr(s.X.T @ s.X) - s.r}
+
+
+def numbers_sign_flipped(s):
+    return {"pairing": s.killing(s.Phi, s.Phi) - s.tr(s.Phi @ s.Phi) / 2}
+
+
+def numbers_term_dropped(s):
+    return {"trace": s.tr(s.X.T @ s.X)}
+
+
+@pytest.mark.parametrize("n,r", [(3, 1), (4, 2)])
+def test_checks_that_are_numbers_compile_and_a_corruption_fails(fresh, monkeypatch, n, r):
+    test_new_ops_compile_prove_and_a_corruption_fails(fresh, monkeypatch, numbers_as_checks,
+                                                      [numbers_sign_flipped, numbers_term_dropped], n, r)

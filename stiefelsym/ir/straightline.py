@@ -3,39 +3,46 @@
 The interpreter (:mod:`.evaluate`) evaluates a graph node by node on whole matrices of a
 backend: every product goes through the matrix class, the backend, its memo and numpy object
 arrays, which at small sizes costs far more than the arithmetic of the entries.  For a graph
-made of the matrix algebra alone (``add sub neg mul matmul T``, integer constants, containers,
-the attributes of the scene and the tangent vectors of its derivatives), this module writes the
-same computation out entry by entry, once per graph and *pattern of its leaves*, as the code of
-one Python function:
+made of the matrix algebra (``add sub neg mul matmul T``, division by a rational constant,
+rational constants, containers, the attributes of the scene and the tangent vectors of its
+derivatives), entries, slices and blocks (``entry``, ``block``), and the scene's methods that
+are the same algebra written out (``tr``, ``killing``, ``q``, ``const``, ``zeros``,
+``identity``, ``scalar_matrix``, ``mat``, and the claim's own fresh parameters ``scalar`` and
+``generic``, which are leaves), this module writes the same computation out entry by entry,
+once per graph and *pattern of its leaves*, as the code of one Python function:
 
 * a leaf (an attribute of the scene) is given by the pattern of its entries: an integer constant
   (0 and 1 of the chart's X = (E_1..E_r), say) or an input, possibly the same input as another
   entry's up to sign (Φ = PXᵀ − XPᵀ on the chart); the inputs are the program's arguments,
   passed in at every run;
-* integer constants are folded, structural zeros skipped (a product with a zero entry is not
-  written, a sum with one is its other term), a product by 1 is its other factor, and integer
-  coefficients (signs, the 2 of 1 + 2κ) ride along with an entry until they meet another
-  entry, so a negation or a difference of two negated terms costs no operation;
+* rational constants are folded, structural zeros skipped (a product with a zero entry is not
+  written, a sum with one is its other term), a product by 1 is its other factor, and rational
+  coefficients (signs, the 2 of 1 + 2κ, the -1/2 of the pairing) ride along with an entry until
+  they meet another entry, so a negation or a difference of two negated terms costs no
+  operation; a constant that is not an integer is an element of the ring made once from the
+  exact fraction (``K0``, ``K1``, ..), never a Python division or a float;
 * a 1 x 1 matrix is one entry, and a transpose is a new view of the same entries;
 * the same operation on the same values is written once (a sum or a product in either order);
 * only the entries the outputs read are computed (dead code is dropped).
 
 What is written is a function of the graph and the leaf pattern only: no value of an input is
 seen while compiling, and no entry of any input is assumed to be anything but an element of a
-commutative ring (the program uses ``+``, ``-``, ``*`` and ``-x`` on the inputs and integers).
+commutative ring containing Q (the program uses ``+``, ``-``, ``*`` and ``-x`` on the inputs,
+integers and the ring's rational constants).
 Two entries that are the same computation are never cancelled while compiling (x - x is
 written and computed): the values of the outputs come from running the program.
 
-A graph with any other op (inverses, traces, entries, blocks, traced functions, engine steps
-other than the tangent vector, rank and count statements, fractions) is not compiled
-(:class:`NotCompiled`): its evaluation stays with the interpreter.
+A graph with any other op (inverses and resolvents, division by anything but a rational
+constant, traced functions, engine steps other than the tangent vector, other methods of the
+scene, rank and count statements) is not
+compiled (:class:`NotCompiled`): its evaluation stays with the interpreter.
 """
 from __future__ import annotations
 
 from fractions import Fraction
 from typing import Any, Callable
 
-from stiefelsym.ir.graph import Graph, Named, Ref
+from stiefelsym.ir.graph import Graph, Named, Ref, Size
 
 #: the engine step the derivative pass writes for the tangent vector of a flow (the components the
 #: flow gives, 0 for the others), see :func:`stiefelsym.ir.derivative.tangent_vector`
@@ -74,12 +81,25 @@ class _Num:
         self.e = e
 
 
+def _const(x: Any) -> bool:
+    """Whether an entry while compiling is a constant (an int or a Fraction) rather than (c, name)."""
+    return type(x) is not tuple
+
+
+def _norm(x: Any) -> Any:
+    """A rational constant as an int when it is one (constants compare and fold as numbers)."""
+    return int(x) if type(x) is Fraction and x.denominator == 1 else x
+
+
 class _Writer:
     """The lines of the program and the names of its values."""
 
     def __init__(self) -> None:
         self.lines: list[tuple[str, str, tuple[str, ...]]] = []    # (target, expression, names read)
         self.k = 0
+        #: the rational constants that are not integers, in order: the program's names K0, K1, ..
+        #: (elements of the ring, made once per function from the exact fraction)
+        self.constants: list[Fraction] = []
         #: the name of every expression written so far (the same computation of the same values is
         #: written once; a sum or a product of two names in either order is one computation)
         self.seen: dict[str, str] = {}
@@ -94,6 +114,16 @@ class _Writer:
         self.seen[expr] = name
         return name
 
+    def lit(self, c: Any) -> str:
+        """A constant in the program's text: an int as itself, a Fraction as the name of the ring's
+        element (never a Python float: 1/2 is not written as a division)."""
+        c = _norm(c)
+        if type(c) is int:
+            return str(c) if c >= 0 else f"({c})"
+        if c not in self.constants:
+            self.constants.append(c)
+        return f"K{self.constants.index(c)}"
+
     def emit2(self, a: str, op: str, b: str) -> str:
         """a op b for op + or * (commutative: the operands in a fixed order), or -."""
         if op != "-" and _order(b) < _order(a):
@@ -102,42 +132,44 @@ class _Writer:
 
     # -- entries ---------------------------------------------------------------------------------
     def neg(self, x: Any) -> Any:
-        return -x if type(x) is int else (-x[0], x[1])
+        return -x if _const(x) else (-x[0], x[1])
 
     def add(self, x: Any, y: Any) -> Any:
-        if type(x) is int and type(y) is int:
-            return x + y
-        if type(x) is int:
+        if _const(x) and _const(y):
+            return _norm(x + y)
+        if _const(x):
             x, y = y, x
-        if type(y) is int:                      # x an entry, y a constant
+        if _const(y):                           # x an entry, y a constant
             if y == 0:
                 return x
             c, a = x
             if c == 1:
-                return (1, self.emit(f"{a} + {y}", (a,)))
+                return (1, self.emit(f"{a} + {self.lit(y)}", (a,)))
             if c == -1:
-                return (1, self.emit(f"{y} - {a}", (a,)))
-            return (1, self.emit(f"{c} * {a} + {y}", (a,)))
+                return (1, self.emit(f"{self.lit(y)} - {a}", (a,)))
+            return (1, self.emit(f"{self.lit(c)} * {a} + {self.lit(y)}", (a,)))
         (c, a), (d, b) = x, y
         if c == d:
             return (c, self.emit2(a, "+", b))
         if c == -d:
             return (c, self.emit2(a, "-", b))
-        if d % c == 0:
-            return (c, self.emit(f"{a} + {d // c} * {b}", (a, b)))
-        if c % d == 0:
-            return (d, self.emit(f"{c // d} * {a} + {b}", (a, b)))
-        return (1, self.emit(f"{c} * {a} + {d} * {b}", (a, b)))
+        q = _norm(Fraction(d) / Fraction(c))
+        if type(q) is int:
+            return (c, self.emit(f"{a} + {self.lit(q)} * {b}", (a, b)))
+        q = _norm(Fraction(c) / Fraction(d))
+        if type(q) is int:
+            return (d, self.emit(f"{self.lit(q)} * {a} + {b}", (a, b)))
+        return (1, self.emit(f"{self.lit(c)} * {a} + {self.lit(d)} * {b}", (a, b)))
 
     def mul(self, x: Any, y: Any) -> Any:
-        if type(x) is int and type(y) is int:
-            return x * y
-        if type(x) is int:
+        if _const(x) and _const(y):
+            return _norm(x * y)
+        if _const(x):
             x, y = y, x
-        if type(y) is int:
-            return 0 if y == 0 else (x[0] * y, x[1])
+        if _const(y):
+            return 0 if y == 0 else (_norm(x[0] * y), x[1])
         (c, a), (d, b) = x, y
-        return (c * d, self.emit2(a, "*", b))
+        return (_norm(c * d), self.emit2(a, "*", b))
 
     def sum(self, terms: list) -> Any:
         acc: Any = 0
@@ -148,14 +180,14 @@ class _Writer:
     def final(self, x: Any) -> str:
         """An entry of an output as an expression (a constant, a name, or a name times its
         coefficient)."""
-        if type(x) is int:
-            return f"ZERO + {x}" if x else "ZERO"
+        if _const(x):
+            return f"ZERO + {self.lit(x)}" if x else "ZERO"
         c, a = x
         if c == 1:
             return a
         if c == -1:
             return f"-{a}"
-        return f"{c} * {a}"
+        return f"{self.lit(c)} * {a}"
 
 
 def _order(name: str) -> tuple[int, int]:
@@ -186,27 +218,40 @@ def _matmul(w: _Writer, x: _Mat, y: _Mat) -> _Mat:
 
 class Program:
     """A compiled graph: ``run(inputs)`` gives the outputs' entries (a dict: the check's name to its
-    rows of values), ``inputs``: which leaf entries the program reads, in order ((leaf node, i, j))."""
+    rows of values), ``inputs``: which leaf entries the program reads, in order ((leaf node, i, j));
+    ``constants``: the rational constants (not integers) the program names K0, K1, ..; ``scalars``:
+    the checks that are numbers (each given as a 1 x 1 matrix)."""
 
     def __init__(self, source: str, inputs: list[tuple[int, int, int]], outputs: dict[str, tuple[int, int]],
-                 operations: int) -> None:
+                 operations: int, constants: tuple[Fraction, ...] = (), scalars: frozenset = frozenset()) -> None:
         self.source, self.inputs, self.outputs, self.operations = source, inputs, outputs, operations
+        self.constants, self.scalars = constants, scalars
         self._fn: tuple[Any, Callable] | None = None
 
-    def function(self, zero: Any) -> Callable:
+    def function(self, zero: Any, fraction: Callable[[int, int], Any] | None = None) -> Callable:
         """The program as a Python function of the inputs (compiled once; ``zero``: the ring's 0, the
-        value of an output entry that is a structural zero)."""
+        value of an output entry that is a structural zero; ``fraction(p, q)``: the ring's exact p/q
+        for a program with rational constants, each made once as ``zero + fraction(p, q)``)."""
         if self._fn is None or self._fn[0] is not zero:
             scope: dict[str, Any] = {"ZERO": zero}
+            if self.constants:
+                if fraction is None:
+                    raise NotCompiled("a program with rational constants and no fractions of the ring")
+                for k, c in enumerate(self.constants):
+                    scope[f"K{k}"] = zero + fraction(c.numerator, c.denominator)
             exec(compile(self.source, "<straight-line program>", "exec"), scope)   # noqa: S102 - generated from the graph
             self._fn = (zero, scope["program"])
         return self._fn[1]
 
 
-def compile_graph(g: Graph, leaves: Callable[[int, str], Leaf]) -> Program:
+def compile_graph(g: Graph, leaves: Callable[[int, Any], Leaf],
+                  size: Callable[[str], int] | None = None) -> Program:
     """The straight-line program of a graph's output (a dict of checks, each a matrix), its leaves
-    (the scene's attributes) given by ``leaves(node, name)``; raises :class:`NotCompiled` for a graph
-    outside the compiled ops."""
+    given by ``leaves(node, name)``: the scene's attributes (``name`` a str) and the fresh parameters
+    of the claim's own (``name`` a pair: the scene's method ``scalar`` or ``generic`` and its literal
+    arguments); ``size(d)``: the value of the dimension d ("n", "r") of the scene, for the sizes of
+    ``zeros``, ``identity`` and ``scalar_matrix``.  Raises :class:`NotCompiled` for a graph outside
+    the compiled ops."""
     if g.output is None:
         raise NotCompiled("a graph with no output")
     w = _Writer()
@@ -220,11 +265,142 @@ def compile_graph(g: Graph, leaves: Callable[[int, str], Leaf]) -> Program:
     def val(a: Any) -> Any:
         if type(a) is Ref:
             return vals[a.i]
-        if type(a) is int and type(a) is not bool:
-            return _Num(a)
-        if type(a) is Fraction and a.denominator == 1:
-            return _Num(int(a))
+        if type(a) is int or type(a) is Fraction:
+            return _Num(_norm(a))
+        if type(a) is Size:         # a dimension of the scene (s.n, s.r) as a number
+            return _Num(dim(a))
         raise NotCompiled(f"a literal {type(a).__name__} in arithmetic")
+
+    def dim(x: Any) -> int:
+        if type(x) is int:
+            return x
+        if type(x) is Size and size is not None:
+            return x.k * size(x.d)
+        raise NotCompiled("a size that is not an int or a dimension of the scene")
+
+    def matrix(x: Any, why: str) -> _Mat:
+        if type(x) is not _Mat:
+            raise NotCompiled(why)
+        return x
+
+    def number(x: Any, why: str) -> Any:
+        if type(x) is not _Num:
+            raise NotCompiled(why)
+        return x.e
+
+    def leaf_value(i: int, name: Any) -> Any:
+        leaf = leaves(i, name)
+        rows = []
+        for r, row in enumerate(leaf.rows):
+            out = []
+            for c, x in enumerate(row):
+                if x is None or type(x) is tuple:
+                    sign, key = (1, object()) if x is None else x
+                    if sign not in (1, -1):
+                        raise NotCompiled("an input of the pattern with a coefficient other than 1 or -1")
+                    name = named.get(key)
+                    if name is None:
+                        inputs.append((i, r, c))
+                        name = named[key] = f"x{len(inputs) - 1}"
+                    out.append((sign, name))
+                else:
+                    out.append(int(x))
+            rows.append(tuple(out))
+        return _Num(rows[0][0]) if leaf.scalar else _Mat(tuple(rows))
+
+    def call(i: int, a: tuple) -> Any:
+        """A method of the claim's scene (``s.tr(M)``, ``s.q(1, 2)``, ..): its value written out."""
+        sc, name, cargs, kw = a
+        if type(sc) is not Ref or vals[sc.i] is not SCENE:
+            raise NotCompiled("a method of something other than the claim's scene")
+        if name in ("scalar", "generic"):
+            if kw or not all(type(x) is str for x in cargs):
+                raise NotCompiled(f"a call of {name} with arguments that are not names")
+            return leaf_value(i, (name, tuple(cargs)))
+        xs = [val(x) if type(x) is Ref else x for x in cargs]
+        if kw and (name not in ("mat", "zeros", "identity", "scalar_matrix")
+                   or any(k not in ("tags", "tag") for k, _ in kw)):
+            raise NotCompiled(f"a call of {name} with keywords other than the spaces")
+        if name in ("q", "const"):
+            if not all(type(x) in (int, Fraction) for x in xs) or len(xs) not in (1, 2) \
+                    or (name == "const" and len(xs) != 1) or (len(xs) == 2 and xs[1] == 0):
+                raise NotCompiled(f"a call of {name} with arguments that are not rational constants")
+            return _Num(_norm(Fraction(xs[0]) / (Fraction(xs[1]) if len(xs) == 2 else 1)))
+        if name == "tr":
+            M = matrix(xs[0], "a trace of a number")
+            if len(M) != len(M[0]):
+                raise NotCompiled("a trace of a matrix that is not square")
+            return _Num(w.sum([M[k][k] for k in range(len(M))]))
+        if name == "killing":
+            x, y = matrix(xs[0], "a pairing of a number"), matrix(xs[1], "a pairing of a number")
+            if len(x[0]) != len(y) or len(x) != len(y[0]):
+                raise NotCompiled("a pairing of matrices whose sizes do not match")
+            terms = [w.mul(x[p][q], y[q][p]) for p in range(len(x)) for q in range(len(y))
+                     if x[p][q] != 0 and y[q][p] != 0]
+            return _Num(w.mul(Fraction(-1, 2), w.sum(terms)))
+        if name == "zeros":
+            return _Mat(tuple(tuple(0 for _ in range(dim(xs[1]))) for _ in range(dim(xs[0]))))
+        if name in ("identity", "scalar_matrix"):
+            c, m = (1, xs[0]) if name == "identity" else (number(xs[0], "a scalar matrix of a matrix"), xs[1])
+            m = dim(m)
+            return _Mat(tuple(tuple(c if p == q else 0 for q in range(m)) for p in range(m)))
+        if name == "mat":
+            rows = xs[0]
+            if type(rows) not in (list, tuple) or not rows or not all(type(r) in (list, tuple) for r in rows) \
+                    or len({len(r) for r in rows}) != 1 or not rows[0]:
+                raise NotCompiled("a matrix from something other than rows of numbers")
+            return _Mat(tuple(tuple(number(val(x) if type(x) is not _Num else x, "a matrix with an entry that is "
+                                           "not a number") for x in r) for r in rows))
+        raise NotCompiled(f"the scene's method {name!r}")
+
+    def entry(M: Any, idx: tuple) -> Any:
+        """M[i, j], a block M[i0:i1, j0:j1], a row M[i, :] or a column M[:, j] (numpy's indexing)."""
+        M = matrix(M, "an entry of a number")
+        if len(idx) != 2:
+            raise NotCompiled("an entry with other than two indices")
+        sl = []
+        for x in idx:
+            if type(x) is int:
+                sl.append(x)
+            elif type(x) is tuple and all(y is None or type(y) is int for y in x[1:]):
+                sl.append(slice(*x[1:]))
+            else:
+                raise NotCompiled("an index that is not an int or a slice of ints")
+        i, j = sl
+        if type(i) is int and type(j) is int:
+            return _Num(M[i][j])
+        rows = [M[i]] if type(i) is int else list(M[i])
+        out = tuple(tuple(row[j]) if type(j) is slice else (row[j],) for row in rows)
+        if not out or not out[0]:
+            raise NotCompiled("an empty block")
+        return _Mat(out)
+
+    def block(nrows: int, ncols: int, blocks: list) -> _Mat:
+        grid = [[matrix(b, "a block that is not a matrix") for b in blocks[p * ncols:(p + 1) * ncols]]
+                for p in range(nrows)]
+        out = []
+        for row in grid:
+            if len({len(b) for b in row}) != 1:
+                raise NotCompiled("a block row of blocks with different numbers of rows")
+            for k in range(len(row[0])):
+                out.append(tuple(e for b in row for e in b[k]))
+        if len({len(r) for r in out}) != 1:
+            raise NotCompiled("a block matrix whose rows have different lengths")
+        return _Mat(tuple(out))
+
+    def divide(x: Any, y: Any) -> Any:
+        """x / c for a rational constant c (a product by 1/c, exact); any other divisor is not
+        compiled."""
+        if type(y) is not _Num or not _const(y.e):
+            raise NotCompiled("a division by something other than a rational constant")
+        if y.e == 0:
+            raise NotCompiled("a division by 0")
+        c = _norm(1 / Fraction(y.e))
+        if type(x) is _Num:
+            return _Num(w.mul(x.e, c))
+        if type(x) is _Mat:
+            return _scaled(w, c, x)
+        raise NotCompiled("a division of a container")
 
     for i in sorted(need):
         op, a = ops[i], args[i]
@@ -235,24 +411,7 @@ def compile_graph(g: Graph, leaves: Callable[[int, str], Leaf]) -> Program:
         elif op == "attr":
             if type(a[0]) is not Ref or vals[a[0].i] is not SCENE:
                 raise NotCompiled("an attribute of something other than the claim's scene")
-            leaf = leaves(i, a[1])
-            rows = []
-            for r, row in enumerate(leaf.rows):
-                out = []
-                for c, x in enumerate(row):
-                    if x is None or type(x) is tuple:
-                        sign, key = (1, object()) if x is None else x
-                        if sign not in (1, -1):
-                            raise NotCompiled("an input of the pattern with a coefficient other than 1 or -1")
-                        name = named.get(key)
-                        if name is None:
-                            inputs.append((i, r, c))
-                            name = named[key] = f"x{len(inputs) - 1}"
-                        out.append((sign, name))
-                    else:
-                        out.append(int(x))
-                rows.append(tuple(out))
-            v = _Num(rows[0][0]) if leaf.scalar else _Mat(tuple(rows))
+            v = leaf_value(i, a[1])
         elif op == "const":
             v = val(a[0])
         elif op in ("add", "sub"):
@@ -292,10 +451,20 @@ def compile_graph(g: Graph, leaves: Callable[[int, str], Leaf]) -> Program:
             keys, refs = a
             v = {k: val(x) for k, x in zip(keys, refs)}
         elif op == "tuple":
-            v = tuple(val(x) for x in a)
+            v = tuple(val(x) if type(x) is Ref else x for x in a)
+        elif op == "list":
+            v = [val(x) if type(x) is Ref else x for x in a]
+        elif op == "call":
+            v = call(i, a)
+        elif op == "entry":
+            v = entry(val(a[0]), a[1:])
+        elif op == "block":
+            v = block(a[0], a[1], [val(b) for b in a[2]])
+        elif op == "div":
+            v = divide(val(a[0]), val(a[1]))
         elif op == "item":
             x = vals[a[0].i] if type(a[0]) is Ref else None
-            if type(x) not in (dict, tuple) or type(a[1]) not in (str, int):
+            if type(x) not in (dict, tuple, list) or type(a[1]) not in (str, int):
                 raise NotCompiled("an item of something other than a container")
             v = x[a[1]]
         elif op == "prim" and a and a[0] == Named(TANGENT):
@@ -318,8 +487,12 @@ def compile_graph(g: Graph, leaves: Callable[[int, str], Leaf]) -> Program:
         vals[i] = v
 
     out = vals[g.output.i]
-    if type(out) is not dict or not out or not all(type(x) is _Mat and x and x[0] for x in out.values()):
-        raise NotCompiled("an output that is not a dict of matrices")
+    if type(out) is not dict or not out or not all(type(x) is _Num or (type(x) is _Mat and x and x[0])
+                                                   for x in out.values()):
+        raise NotCompiled("an output that is not a dict of matrices and numbers")
+    # a check that is a number is computed as a 1 x 1 matrix and named in ``scalars``
+    scalars = frozenset(name for name, x in out.items() if type(x) is _Num)
+    out = {name: _Mat(((x.e,),)) if type(x) is _Num else x for name, x in out.items()}
     # the program: live lines only (backwards from the outputs)
     finals = {name: [[w.final(e) for e in row] for row in m] for name, m in out.items()}
     live: set[str] = set()
@@ -341,7 +514,7 @@ def compile_graph(g: Graph, leaves: Callable[[int, str], Leaf]) -> Program:
                      *body,
                      f"    return ({ret},)"]) + "\n"
     shapes = {name: (len(m), len(m[0])) for name, m in out.items()}
-    return Program(src, inputs, shapes, len(body))
+    return Program(src, inputs, shapes, len(body), tuple(w.constants), scalars)
 
 
 def _fail(why: str) -> Any:

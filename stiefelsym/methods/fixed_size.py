@@ -797,18 +797,20 @@ class _Straight:
     evaluation of the graph on the chart made (the same at every run: a function of the graph and
     the chart), replayed into the scene's record at every run."""
 
-    __slots__ = ("fn", "field", "scene", "inputs", "outputs", "log", "ctx", "operations", "back", "zero")
+    __slots__ = ("fn", "field", "scene", "inputs", "outputs", "log", "ctx", "operations", "back", "zero", "ring",
+                 "version")
 
     def __init__(self, fn, field, scene, inputs, outputs, log, ctx, operations, back) -> None:
         self.fn, self.field, self.scene, self.inputs, self.outputs = fn, field, scene, inputs, outputs
         self.log, self.ctx, self.operations = log, ctx, operations
         #: an output entry of the program's ring as a polynomial of the field's (None: the same ring)
         self.back = back
-        self.zero = backend(field).ring.zero
+        self.ring = backend(field).ring
+        self.zero, self.version = self.ring.zero, self.ring.version
 
     def run(self) -> dict[str, Any]:
         """The checks, computed by the program from the chart's coordinates."""
-        from stiefelsym.backends.polyfield import PolyMat
+        from stiefelsym.backends.polyfield import PolyMat, _RF
         verify_engine("before an evaluation")
         tracker = self.scene.tracker
         tracker.restart()
@@ -817,6 +819,11 @@ class _Straight:
         checks = {}
         field, ctx, wrap, back, zero = self.field, self.ctx, Mat._wrap_native, self.back, self.zero
         for (name, (m, k), tags), rows in zip(self.outputs, values):
+            if tags is None:        # a check that is a number: the exact backend's scalar
+                x = _RF(self.ring, (rows[0][0] if back is None else back(rows[0][0]) if rows[0][0] else zero, ()))
+                x.v = self.version
+                checks[name] = x
+                continue
             a = np.empty((m, k), dtype=object)
             for i, row in enumerate(rows):
                 for j, x in enumerate(row):
@@ -893,7 +900,7 @@ def _keep(memo: dict, key: tuple, value: Any) -> None:
 def _straight(g: Any, field: Any, scene: Any, checks: dict, log: tuple, compile_graph: Callable) -> _Straight:
     """The compiled program of the graph on the chart of ``scene`` (see :func:`_compile_straight`)."""
     from stiefelsym.ir.straightline import Leaf, NotCompiled
-    from stiefelsym.backends.polyfield import PolyBackend, PolyMat, NotRational
+    from stiefelsym.backends.polyfield import PolyBackend, PolyMat, NotRational, _RF
     be = backend(field)
     if type(be) is not PolyBackend:
         raise NotCompiled("a field without the polynomial backend")
@@ -934,8 +941,8 @@ def _straight(g: Any, field: Any, scene: Any, checks: dict, log: tuple, compile_
         k = keys[text] = len(keys)
         return (1, k)
 
-    def leaf(i: int, name: str) -> Leaf:
-        v = getattr(scene, name)
+    def leaf(i: int, name: Any) -> Leaf:
+        v = getattr(scene, name) if type(name) is str else getattr(scene, name[0])(*name[1])
         rows, scalar = entries(v)
         if i >= 0:
             coords[i] = rows
@@ -945,12 +952,12 @@ def _straight(g: Any, field: Any, scene: Any, checks: dict, log: tuple, compile_
     h = _derived(g, scene_flows(scene))
     if type(scene)._tangent_vector is not Scene._tangent_vector and "prim" in h.ops:
         raise NotCompiled("a scene whose tangent vectors are its own")
-    prog = compile_graph(h, leaf)
+    prog = compile_graph(h, leaf, lambda d: getattr(scene, d))
     inputs = [coords[i][a][b] for i, a, b in prog.inputs]
     if any(x.context() is not R.ctx for x in inputs):
         raise NotCompiled("coordinates of the chart in another context of the ring")
     back = None
-    if all(c.q == 1 for x in inputs for c in x.to_dict().values()):
+    if not prog.constants and all(c.q == 1 for x in inputs for c in x.to_dict().values()):
         # a chart of integer polynomials: the program runs over Z[x] (flint's integer polynomials
         # skip the rational content of every operation) and its outputs come back to Q[x] exactly
         zctx, zero = _integer_ring(R.ctx)
@@ -960,13 +967,21 @@ def _straight(g: Any, field: Any, scene: Any, checks: dict, log: tuple, compile_
         back = lambda x: from_dict(x.to_dict()) if x else qzero  # noqa: E731
         got = [[[back(x) for x in row] for row in m] for m in fn(inputs)]
     else:
-        fn = prog.function(R.zero)
+        fn = prog.function(R.zero, flint.fmpq)
         got = fn(inputs)
     outputs = []
     if list(prog.outputs) != list(checks):
         raise NotCompiled("the program's checks are not the interpreter's")
     for (name, shape), rows in zip(prog.outputs.items(), got):
         want = checks[name]
+        if name in prog.scalars:
+            rf = want.rf() if type(want) is _RF and want.R is R else None
+            if rf is None or rf[1] or rf[0].context() is not R.ctx:
+                raise NotCompiled("a check that is a number but not a polynomial of the chart's ring")
+            if rows[0][0] != rf[0]:
+                raise NotCompiled("the program disagrees with the interpreter (a defect of the compiler)")
+            outputs.append((name, shape, None))
+            continue
         if not isinstance(want, Mat):
             raise NotCompiled("a check that is not a matrix")
         s = want._nat()
