@@ -141,6 +141,7 @@ def test_hard_table_has_no_wrong_verdict(catalog):
     assert "WRONG" in sp._judge("false", "undecided", {"exceed_exact": 2})
 
 
+@pytest.mark.slow      # the whole quick speed run (about 30 s): with the slow tests (`make verify-all`)
 def test_speed_quick_writes_its_files(run, tmp_path):
     pytest.importorskip("matplotlib")
     out = run("speed", "--quick", "--report-dir", str(tmp_path / "speed"))
