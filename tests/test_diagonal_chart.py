@@ -95,3 +95,17 @@ def test_pencil_casimirs_takes_the_diagonal_chart_at_n_7():
     res = run_one(c, Size(5, 2), "exact", 0)
     assert res.verdict == "proved", res.message
     assert any(DIAGONAL in d for d in res.reductions), res.reductions
+
+
+def _commutes_with_a_generic_symmetric(s):
+    """False: A commutes with every symmetric W.  On the diagonal chart only A is reduced: W = w + wᵀ stays a
+    generic symmetric matrix (not diagonal), so the residual is nonzero there."""
+    w = s.generic("w", "n", "n")
+    return {"[A, w + w^T]": _comm(s.A, w + w.T)}
+
+
+@pytest.mark.parametrize("method", ["exact", "auto"])
+def test_a_generic_matrix_is_not_reduced_with_a(method):
+    res = run_one(_claim("diag-w", _commutes_with_a_generic_symmetric), Size(4, 2), method, 0)
+    assert res.verdict == "fails", res.message
+    assert any(DIAGONAL in d for d in res.reductions), res.reductions

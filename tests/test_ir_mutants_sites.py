@@ -15,19 +15,11 @@ from stiefelsym.ir.replay import GraphClaim, SizedGraphClaim
 from stiefelsym.ir.trace import trace
 from stiefelsym.run.runner import run_one
 from stiefelsym.scene import REALIZATIONS
+from test_ir_mutants_sized import loops_over_r  # the claim with a loop over r
 
 CONS = (REALIZATIONS["standard"].name, REALIZATIONS["standard"].build)
 SIZES = [Size(3, 2), Size(3, 1), Size(3, 3)]
 FIXED = ("exact", "rational", "modular", "float")
-
-
-def loops_over_r(s):
-    """r·XᵀX = r·I_r, the sum over a loop of r terms (its graphs at two sizes are not one computation)."""
-    X = s.X
-    total = X.T @ X
-    for _ in range(int(s.r) - 1):
-        total = total + X.T @ X
-    return {"rXtX": total - int(s.r) * s.Ir}
 
 
 def symbolic(s):
