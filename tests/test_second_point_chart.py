@@ -102,7 +102,7 @@ def test_closed_form_pairs_flow_declines_off_V():
     assert _closed_form_pairs_flow(s, a.H_coupled(a.NORMAL), off, (("X", "P"), ("Y", "Q"))) is None
 
 
-@pytest.mark.parametrize("n,r", [(5, 1), (4, 2)])
+@pytest.mark.parametrize("n,r", [(5, 1), pytest.param(4, 2, marks=pytest.mark.slow)])
 def test_coupled_flow_proved_beyond_the_cayley_chart_and_the_printed_one_fails(n, r):
     good = run_exact(_claim(lambda s: a.coupled_flow_checks(s, Q_Pi=False)), n, r, 0)
     assert good.verdict == "proved", good.message
