@@ -286,3 +286,19 @@ def test_cli_mutate_on_graphs(catalog):
                                               "--limit", "2", "--jobs", "1", "--format", "json"])
     data = json.loads(res.stdout)
     assert "on" not in data["meta"] and data["claims"][0]["mutants"][0]["description"].startswith("line ")
+
+
+def test_a_graph_replayed_again_is_checked_again_once_its_data_changed():
+    """The checks of a graph are kept for the next replay of the same graph object (every mutant replays
+    the claim's graph) only while it holds the very same objects: a node changed in place afterwards (here
+    a reference to a later node) is checked again and refused."""
+    g = trace(lambda s: {"c": s.X.T @ s.X - s.Ir}, None, None, CONS)
+    assert compile_claim(GraphClaim(g), None, None, CONS).digest() == g.digest()
+    again = GraphClaim(g)
+    assert again._ops is GraphClaim(g)._ops          # the checked copy is shared
+    g.args[1] = (Ref(len(g.args) - 1), "X")
+    with pytest.raises(ReplayError, match="not an earlier node"):
+        GraphClaim(g)
+    g.args[1] = tuple(g.args[1])                     # an equal tuple, another object: checked again too
+    with pytest.raises(ReplayError, match="not an earlier node"):
+        GraphClaim(g)

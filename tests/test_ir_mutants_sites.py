@@ -128,3 +128,24 @@ def test_catalog_claims_whose_graphs_part_between_sizes_are_mutated_on_their_gra
     muts, why = graph_mutants(c, at)
     assert not why and len(muts) >= 20
     assert all(m.lineno and m.source and m.notation for m in muts)
+
+
+def test_a_site_mutant_of_a_claim_traced_per_size_changes_every_size_its_site_built_nodes_at():
+    """`invariants-complete` (a loop over the fibre's directions, a function under a derivative): each mutant
+    is one change at one site made at every size; its graph differs from the claim's at every size where the
+    site built a node, and only there."""
+    c = load_catalog().get("invariants-complete")
+    at = [Size(4, 2), Size(4, 1), Size(4, 3)]
+    cons = (REALIZATIONS[c.realization].name, REALIZATIONS[c.realization].build)
+    base = {(z.n, z.r): compile_claim(c.func, z.n, z.r, cons).digest() for z in at}
+    muts, why = graph_mutants(c, at)
+    assert not why and len(muts) >= 10
+    everywhere = 0
+    for m in muts:
+        edits = {z: gc._edits for z, gc in m.func._claims.items()}
+        assert edits.keys() == base.keys() and any(edits.values())
+        for z, digest in base.items():
+            changed = compile_claim(m.func, z[0], z[1], cons).digest() != digest
+            assert changed == bool(edits[z]), (m.index, z)
+        everywhere += all(edits.values())
+    assert everywhere >= 10

@@ -28,6 +28,8 @@ sizes it is refused, as claim code that reads its sizes is.
 from __future__ import annotations
 
 import inspect
+import operator
+from collections import OrderedDict
 from fractions import Fraction
 from typing import Any, Callable
 
@@ -365,6 +367,33 @@ def _deps(ops: tuple, args: tuple) -> list[frozenset]:
     return deps(g)
 
 
+#: the graphs replayed last, checked (:func:`_checked`): id -> (graph, its data, spans, dependencies); kept
+#: here, not in the graph's cache, which whoever holds the graph can write
+_CHECKED: "OrderedDict[int, tuple]" = OrderedDict()
+CHECKED_CACHE_SIZE = 8
+
+
+def _same(a: tuple, b: tuple) -> bool:
+    return len(a) == len(b) and all(map(operator.is_, a, b))
+
+
+def _checked(g: Graph) -> tuple:
+    """A copy of the graph's data (ops, arguments, output), checked (:func:`_check_graph`), with its
+    functions' spans and its nodes' dependencies.  Kept for the next replay of the same graph object (every
+    mutant of a claim replays the claim's graph) while it holds the very same objects, else checked again."""
+    ops, args, output = tuple(g.ops), tuple(g.args), g.output
+    hit = _CHECKED.get(id(g))
+    if hit is not None and hit[0] is g and hit[3] is output and _same(hit[1], ops) and _same(hit[2], args):
+        _CHECKED.move_to_end(id(g))
+        return hit[1:]
+    _check_graph(ops, args, output)
+    out = (ops, args, output, _spans(ops, args), _deps(ops, args))
+    _CHECKED[id(g)] = (g,) + out
+    while len(_CHECKED) > CHECKED_CACHE_SIZE:
+        _CHECKED.popitem(last=False)
+    return out
+
+
 class GraphClaim:
     """A graph as a claim function: called on a traced scene, it replays the graph's nodes (with
     ``edits``: node -> replacement of its value) and returns its checks.  Holds a copy of the graph's
@@ -373,11 +402,7 @@ class GraphClaim:
     __slots__ = ("_ops", "_args", "_output", "_spans", "_deps", "_edits", "__name__", "__qualname__")
 
     def __init__(self, g: Graph, edits: dict[int, Callable] | None = None, name: str = "graph") -> None:
-        ops, args, output = tuple(g.ops), tuple(g.args), g.output
-        _check_graph(ops, args, output)
-        self._ops, self._args, self._output = ops, args, output
-        self._spans = _spans(ops, args)
-        self._deps = _deps(ops, args)
+        self._ops, self._args, self._output, self._spans, self._deps = _checked(g)
         self._edits = dict(edits or {})
         self.__name__ = self.__qualname__ = name
 
