@@ -13,7 +13,7 @@ from stiefelsym.methods.fixed_size import EXACT_CAYLEY_MAX_N
 import symengine as se
 
 from stiefelsym import Mat, admissible, block
-from stiefelsym.claims import Claim, Size
+from stiefelsym.claims import Claim, Size, load_catalog
 from stiefelsym.backends.fields import RationalField
 from stiefelsym.backends.matrix import NeedsCoordinates
 from stiefelsym.run.runner import run_one
@@ -327,6 +327,37 @@ def test_a_users_stated_reason_does_not_buy_the_reduction():
     # beyond the symbolic Cayley chart's limit the reason would have bought the equivariant chart
     res = run_one(c, Size(EXACT_CAYLEY_MAX_N + 1, 2), "exact", 0)
     assert res.verdict == "inconclusive" and "reviewed catalog" in res.message, (res.verdict, res.message)
+
+
+def test_a_reviewed_reason_is_not_lent_to_a_mutant_that_reads_other_coordinates():
+    """The catalog's invariants-complete reads R^n-indexed constants with a reviewed reason (the rank is a
+    statement about the fibre over X0).  Its graph mutant P^T P -> P P^T, entries still read at i <= j < r,
+    reads entries of an n x n matrix and is true (a full rank: r(r-1)/2 + r(r+1)/2 rows, rank r^2 = ddim
+    here).  With the printed claim's reason lent to it, the equivariant chart X = X0 made its rank 0 and
+    the exact method refuted it; the reason now stays with the claim's own function and its registered
+    corrections, and the mutant goes to the Cayley chart."""
+    from stiefelsym.methods.fixed_size import run_exact
+    from stiefelsym.proofs.sec2_hamiltonian_flows import ddim_printed, vertical_directions
+    from stiefelsym import Rank
+
+    printed = load_catalog().get("invariants-complete")
+    assert printed.reviewed
+
+    def mutant(s):
+        columns = []
+        for v in vertical_directions(s):
+            dPsi = s.d(lambda t: t.Psi, v)
+            dG = s.d(lambda t: t.P @ t.P.T, v)
+            columns.append([dPsi[i, j] for i in range(s.r) for j in range(i + 1, s.r)]
+                           + [dG[i, j] for i in range(s.r) for j in range(i, s.r)])
+        return {"rank": Rank(s.mat([list(row) for row in zip(*columns)]), ddim_printed(s.n, s.r), generic=True)}
+
+    own = run_exact(printed, 4, 1, 0)
+    assert own.verdict == "proved" and any("about the fibre" in x for x in own.reductions), own.reductions
+    res = run_exact(printed, 4, 1, 0, func=mutant)
+    assert res.verdict == "proved", (res.verdict, res.message)
+    assert not any("about the fibre" in x for x in res.reductions), res.reductions
+    assert any("rational parametrization" in x for x in res.reductions), res.reductions
 
 
 def eigenvalues_with_a_reason(s):

@@ -619,6 +619,12 @@ def _point_free(claim: Claim, n: int, r: int, func: Callable, graph: Any = None)
     return not any(op == "prim" or op == "attr" and a[1] in POINT_LEAVES for op, a in zip(g.ops, g.args))
 
 
+def _reviewed_function(claim: Claim, func: Callable) -> bool:
+    """Whether ``func`` is the claim's own function or one of its registered corrections: the
+    functions a catalog claim's stated reason of equivariance was reviewed with."""
+    return func is claim.func or any(func is c.func for c in claim.corrections)
+
+
 def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = None,
               time_budget: float | None = EXACT_TIME_LIMIT) -> Result:
     func = func or claim.func
@@ -666,8 +672,9 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                 if not (coords or missing):
                     break
             # a stated reason is relied on only for the reviewed catalog: a user's claims file
-            # cannot buy the reduction with a sentence
-            reason = claim.equivariance if claim.reviewed else ""
+            # cannot buy the reduction with a sentence.  It was reviewed for the claim's own function
+            # and its registered corrections: a mutant (another function) reads other coordinates
+            reason = claim.equivariance if claim.reviewed and _reviewed_function(claim, func) else ""
             if scene is None or scene.tracker.spaces != ("n",):
                 reason = ""      # a stated reason speaks of O(n); this chart also reduces by O(r)
             if not missing and (not coords or reason):
@@ -692,8 +699,10 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
             else:
                 if n > EXACT_CAYLEY_MAX_N:
                     res.verdict = "inconclusive"
-                    unrelied = (" (a stated reason is relied on only for the reviewed catalog)"
-                                if claim.equivariance and not claim.reviewed else "")
+                    unrelied = (" (a stated reason is relied on only for the reviewed catalog's claims and "
+                                "their registered corrections)"
+                                if claim.equivariance and not (claim.reviewed and _reviewed_function(claim, func))
+                                else "")
                     res.message = (f"the claim reads {', '.join(coords)}, so the equivariance reduction does not "
                                    f"apply{unrelied}, and the symbolic Cayley chart is limited to "
                                    f"n <= {EXACT_CAYLEY_MAX_N}")
