@@ -36,6 +36,13 @@ def rotation(s):
     return {"rot": M + M.T - s.tr(M) * s.Ir}
 
 
+@claim("adv-s37-det-traces", kind="id", sizes=admissible(n_min=2, n_max=2, r_is_n=True))
+def det_traces(s):
+    """det(XᵀY) = ((tr M)² − tr M²)/2 = 1 for M = XᵀY at r = n = 2, no coordinate read (false)."""
+    M = s.X.T @ s.Y
+    return {"det": (s.tr(M) * s.tr(M) - s.tr(M @ M)) / 2 - 1}
+
+
 @claim("adv-s37-cofactor", kind="id", sizes=admissible(n_min=3, n_max=3, r_is_n=True))
 def cofactor(s):
     """M₁₁ = its cofactor for M = XᵀY at r = n = 3 (M = cof(M)/det M holds for det M = 1 only: false)."""
@@ -54,3 +61,12 @@ def orthogonal_true(s):
     """(XᵀY)ᵀ(XᵀY) = I_r at r = n (true, control)."""
     M = s.X.T @ s.Y
     return {"o": M.T @ M - s.Ir}
+
+
+@claim("adv-s37-pole-mixed", kind="id", sizes=admissible(n_min=2, n_max=2, r_is_n=True))
+def pole_mixed(s):
+    """tr(M)·(1/tr M) = 1 for M = XᵀY at r = n = 2: tr M vanishes identically where XᵀY is a reflection, so the
+    statement is undefined on half of the pairs of components (never a pass)."""
+    M = s.X.T @ s.Y
+    t = s.tr(M)
+    return {"p": t * (1 / t) - 1}
