@@ -508,7 +508,7 @@ class Scene(PaperObjects):
         D = _buf((n, r), np.int64)
         D.fill(0)
         D[range(r), range(r)] = 1
-        if self.component % 2 == 1:
+        if self._component_of(prefix) == 1:
             D[0, 0] = -1
         J = Mat._consts(D, self._field, ("n", "r"), self.tracker)
         if self._field.exact:
@@ -686,7 +686,17 @@ class Scene(PaperObjects):
             # the reduction moves the first point to X0; the second stays generic
             self._second_point_read = True
             return self._cached("point2", self._equivariant_second_point)
+        # at r = n the two points lie on the components of O(n) independently: the methods that
+        # alternate the components evaluate every pair once they see the second point read
+        self._second_point_read = True
         return self._cached("point2", lambda: self._stiefel_point("second_"))
+
+    def _component_of(self, prefix: str) -> int:
+        """The component of O(n) (0: det = 1, 1: det = −1, for r = n) of the chart's point of this
+        prefix: bit 0 of :attr:`component` for the scene's own point (X, P) (and the double point's
+        base), bit 1 for the second point (Y, Q), so that the components 0..3 take the four pairs of
+        components of (X, Y): a second point on the component of X only passed det(XᵀY) = 1 at r = n."""
+        return (self.component // 2) % 2 if prefix == "second_" else self.component % 2
 
     right_reduction = _engine_property("_right_reduction", "whether the chart reduces by O(r) as well")
     diagonal_A = _engine_property("_diagonal_A", "whether the chart spends O(n) on A alone (A diagonal, no point)")

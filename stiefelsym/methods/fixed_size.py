@@ -710,7 +710,8 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                     res.rerun = ""
                     return res
                 evaluations = []
-                for comp in ((0, 1) if r == n else (0,)):
+                comps = [0, 1] if r == n else [0]
+                for comp in comps:
                     def build_cayley(comp=comp) -> tuple:
                         f = SymbolicField()
                         return f, Scene(n, r, f, chart="cayley", component=comp, realization=claim.realization)
@@ -718,10 +719,15 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                                                build_cayley, func, graph)
                     evaluations.append(_evaluate(ch, f2, lambda R, f2=f2: _exact_rank(
                         R, f2, randomized, lambda: degree_bound(claim, n, r, func).numerator, key)))
+                    if r == n and len(comps) == 2 and sc.second_point_read:
+                        # the second point (Y, Q) on each component of O(n) with each of X's
+                        comps += [2, 3]
+                    sign = lambda c: 'I' if c % 2 == 0 else 'diag(-1,1,..,1)'  # noqa: E731
                     desc = REDUCED_CAYLEY_REDUCTION if r < n else CAYLEY_REDUCTION.format(
                         D=" D" if r == n else "",
-                        comp=(f"; component {comp + 1} of O(n) (D = {'I' if comp == 0 else 'diag(-1,1,..,1)'})"
-                              if r == n else ""))
+                        comp=(f"; component {comp % 2 + 1} of O(n) (D = {sign(comp)})"
+                              + (f", for the second point Y component {comp // 2 + 1} (D = {sign(comp // 2)})"
+                                 if sc.second_point_read else "") if r == n else ""))
                     charts.append((sc, desc))
     except ExactTimeout as exc:
         res.verdict = "inconclusive"
@@ -1520,6 +1526,10 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
         if t == 0 and (point_deg.numerator == 0 if getattr(scene, "_loaned", False) and not hard
                        else not scene._has_params()):
             return _run_constant(claim, n, r, seed, func, options, res, t0)
+        if components == 2 and scene.second_point_read:
+            # the second point (Y, Q) on each component of O(n) with each of X's: four components
+            components = 4
+            per_point += [[], []]
         if not hard:
             point_degs.append(point_deg)
             per_point[comp].append(_per_point_bound(kind, point_deg))
@@ -1562,7 +1572,8 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
         notes.append(f"the points' own degree bounds differ, from {min(d.numerator for d in point_degs)} to "
                      f"{deg.numerator}: each point's bound is that of its own evaluation")
     note = f" ({'; '.join(notes)})" if notes else ""
-    per = f" on each of the {components} components of T*V" if components == 2 else ""
+    per = (f" on each of the {components} components of T*V" if components == 2 else
+           f" on each of the {components} pairs of components of (X, Y) in O(n) x O(n)" if components == 4 else "")
     joint = max(math.prod(p) for p in per_point) if point_degs else eps ** points
     if kind == "modular":
         how = (f"each point over its own prime p, drawn uniformly from the primes in [2^60, 2^61) by the seed "
@@ -1778,7 +1789,8 @@ def _confirm_numeric(res: Result, claim: Claim, n: int, r: int, seed: int, func:
 def _confirm_text(exact: Result) -> str:
     """What the exact confirmation of a float verdict established, with its false-pass bound."""
     if exact.verdict == "checked" and exact.false_pass_bound is not None:
-        m = re.match(r"(\d+) independent points( on each of the 2 components of T\*V)?", exact.certificate)
+        m = re.match(r"(\d+) independent points( on each of the \d+ (?:pairs of )?components[^;]*)?",
+                     exact.certificate)
         where = (f"{m.group(1)} random point{'s' if m.group(1) != '1' else ''} mod p"
                  f"{' per component' if m.group(2) else ''}" if m else "random points mod p")
         if exact.false_pass_bound == 0 and not m:
@@ -1802,6 +1814,8 @@ class _FloatRun:
     worst_m: Any = 0.0
     ranks: list[str] = dc_field(default_factory=list)
     count_problems: list[str] = dc_field(default_factory=list)
+    #: the evaluation read the second point (Y, Q): at r = n its components are sampled as well
+    second: bool = False
 
 
 def _resolves(x: ErrNum) -> bool:
@@ -1843,6 +1857,7 @@ def _float_component(claim: Claim, n: int, r: int, seed: int, func: Callable, op
         try:
             with ctx:
                 checks = call_claim(func, scene)
+                run.second = run.second or scene.second_point_read
                 entries, ranks, counts = [], [], []
                 for name, value in checks.items():
                     if isinstance(value, Rank):
@@ -1914,6 +1929,10 @@ def _run_float(claim: Claim, n: int, r: int, seed: int, func: Callable, options:
     identity = claim.expect != "nonzero"
     first = FLOAT_LADDER[:1] if identity else FLOAT_LADDER
     runs = [_float_component(claim, n, r, seed, func, options, c, first) for c in comps]
+    if r == n and any(run.second for run in runs):
+        # the second point (Y, Q) on each component of O(n) with each of X's (Scene._component_of)
+        comps = (0, 1, 2, 3)
+        runs += [_float_component(claim, n, r, seed, func, options, c, first) for c in comps[2:]]
     log = "; ".join((f"component {c + 1}: " if len(comps) > 1 else "") + "; ".join(run.log)
                     for c, run in zip(comps, runs))
     decided = None
@@ -2093,6 +2112,8 @@ class _BallDecision:
     ranks: list[str] = dc_field(default_factory=list)
     count_problems: list[str] = dc_field(default_factory=list)
     point: dict[str, str] = dc_field(default_factory=dict)
+    #: the evaluation read the second point (Y, Q): at r = n its components are sampled as well
+    second: bool = False
 
 
 def _ball_rng(seed: int, claim: Claim, n: int, r: int, comp: int, func: Callable) -> random.Random:
@@ -2115,6 +2136,7 @@ def _ball_component(claim: Claim, n: int, r: int, seed: int, func: Callable, opt
                 scene = Scene(n, r, field, chart="cayley", rng=_ball_rng(seed, claim, n, r, comp, func),
                               component=comp, realization=claim.realization, options=options)
                 checks = call_claim(func, scene)
+                run.second = run.second or scene.second_point_read
                 encs: list[_Enclosures] = []
                 ranks, counts = [], []
                 for name, value in checks.items():
@@ -2178,6 +2200,10 @@ def _run_ball(claim: Claim, n: int, r: int, seed: int, func: Callable, options: 
         res.reductions.append(f"hard case: {options['hard'].description} (the hard value's ball midpoint, "
                               f"taken as an exact input)")
     runs = [_ball_component(claim, n, r, seed, func, options, c) for c in comps]
+    if r == n and any(run.second for run in runs):
+        # the second point (Y, Q) on each component of O(n) with each of X's (Scene._component_of)
+        comps = (0, 1, 2, 3)
+        runs += [_ball_component(claim, n, r, seed, func, options, c) for c in comps[2:]]
     log = "; ".join((f"component {c + 1}: " if len(comps) > 1 else "") + "; ".join(run.log)
                     for c, run in zip(comps, runs))
     where = lambda c: f" (component {c + 1})" if len(comps) > 1 else ""  # noqa: E731
