@@ -1587,9 +1587,10 @@ class Scene(PaperObjects):
         :meth:`_closed_form_multipliers`, decided without building the point (so parameters are
         drawn in the order the claim uses them); XᵀX = I_r is checked exactly when the flow is handed
         on (:meth:`_graph_flow`).  The magnetic systems' flows and brackets take the graph's gradients
-        on every coordinate scene (their multipliers stay the engine's)."""
-        from stiefelsym.ir.derivative import TWISTED
-        kinds = {"canonical_flow", TWISTED}
+        on every coordinate scene (their multipliers stay the engine's), and so do the derivatives and flows at
+        points of the caller's own (:mod:`stiefelsym.systems`)."""
+        from stiefelsym.ir.derivative import SYSTEMS, TWISTED
+        kinds = {"canonical_flow", TWISTED, SYSTEMS}
         approx = self._approximates_point()
         if (CLOSED_FORM_MULTIPLIERS and self.realization == "standard" and self.chart in ("cayley", "equivariant")
                 and (self._field.exact or approx)

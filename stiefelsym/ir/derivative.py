@@ -169,7 +169,8 @@ def _transform(g: Graph, flows: frozenset = frozenset()) -> tuple[Graph, list]:
     if len(g.index) == len(g.ops):
         start = next((i for i, (op, a) in enumerate(zip(g.ops, g.args))
                       if (op == "call" and (a[1] in _PASSES or a[1] in _FLOW_PASSES))
-                      or (op == "prim" and a[0].qualname in _TWISTED_STEPS)), len(g.ops))
+                      or (op == "prim" and (a[0].qualname in _TWISTED_STEPS or a[0].qualname in _SYSTEMS_STEPS))),
+                     len(g.ops))
         new.ops, new.args = g.ops[:start], g.args[:start]
         new.index = dict(itertools.islice(g.index.items(), start))
         remap.update((i, _ref(i)) for i in range(start))
@@ -193,6 +194,11 @@ def _transform(g: Graph, flows: frozenset = frozenset()) -> tuple[Graph, list]:
                 rewrite = _TwistedAlongFlow
             else:
                 report.append((i, a[0].qualname, "the scene's own gradients (not a coordinate scene)"))
+        elif op == "prim" and a[0].qualname in _SYSTEMS_STEPS:
+            if SYSTEMS in flows:
+                rewrite = _SYSTEMS_STEPS[a[0].qualname]
+            else:
+                report.append((i, a[0].qualname, "the scene's own derivatives (not a coordinate scene)"))
         if rewrite is not None:
             try:
                 remap[i] = rewrite(g, deps, new, remap, i).build()
@@ -360,9 +366,9 @@ class _Derivative:
         # the flow's components, read (and the flow checked) by one engine step
         keys = tuple(sorted(self.read))
         flow = self.make_flow() if self.flow is None else self.remap[self.flow.i]
-        self._tangent = self.add("prim", (Named(TANGENT), self.S, flow, keys))
+        self._tangent = self.tangent_step(flow, keys)
         for j in todo:
-            self.P[j] = self.S if g.ops[j] == "scene" else self.add(g.ops[j], self.primal(g.args[j]))
+            self.P[j] = self.primal_node(j)
             self.D[j] = self.emit(j, self.plan[j])
         b = self.body.i
         d = self.D.get(b) if k in self.deps[b] else None
@@ -373,6 +379,15 @@ class _Derivative:
 
     def make_flow(self) -> Ref:
         raise AssertionError("a derivative with no flow")
+
+    def tangent_step(self, flow: Ref, keys: tuple) -> Ref:
+        """The engine step that reads (and checks) the flow's components ``keys``."""
+        return self.add("prim", (Named(TANGENT), self.S, flow, keys))
+
+    def primal_node(self, j: int) -> Ref:
+        """The value of the body's node j in the new graph (the function's scene is the call's)."""
+        g = self.g
+        return self.S if g.ops[j] == "scene" else self.add(g.ops[j], self.primal(g.args[j]))
 
     def rule(self, j: int) -> Any:
         """The derivative of node j as a recipe over the derivatives of its arguments (D) and their
@@ -1347,3 +1362,195 @@ class _TwistedAlongFlow(_Derivative):
 _PASSES = {"d": _Derivative, "gradient": _Gradient, "jacobian": _Jacobian}
 #: the flows and brackets it rewrites where the scene lets the graph compute them (:func:`scene_flows`)
 _FLOW_PASSES = {"dirac_flow": _Flow, "multiplier_flow": _Flow, "canonical_flow": _Flow, "bracket": _Bracket}
+
+
+# ---------------------------------------------------------------------------------------------
+# derivatives and gradients at points of the caller's own (stiefelsym.systems): functions of a scene
+# and of a point, a dict of matrices, whose variables are the point's entries z[k]
+
+#: what a coordinate scene says (``_graph_flows``) when the engine steps of :mod:`stiefelsym.systems`
+#: may take the graph's derivatives and gradients at points of the caller's own
+SYSTEMS = "derivatives and flows at points of the caller's own from the graph"
+#: the engine steps of the transformed graphs (registered by :mod:`stiefelsym.systems`)
+POINT_TANGENT = "stiefelsym.systems.derivative:tangent"
+PAIRS_FLOW = "stiefelsym.systems.stiefel_pairs_flow:graph"
+
+
+def _point_function(g: Graph, f: Any, what: str) -> tuple[int, Any, int | None]:
+    """(k, body, the node of its point) of a traced function of a scene and of a point."""
+    if type(f) is not Ref or g.ops[f.i] != "fn":
+        raise Unsupported(f"{what} of something that is not a traced function")
+    k, arity, body = g.args[f.i]
+    if arity != 2:
+        raise Unsupported(f"{what} of a function that is not of a scene and a point")
+    param = g.index.get(("param", (k, 1)))
+    if param is None:
+        param = next((j for j, (op, a) in enumerate(zip(g.ops, g.args))
+                      if op == "param" and a[0] == k and a[1] == 1), None)
+    return k, body, param
+
+
+def _positional(g: Graph, a: tuple, count: int, what: str) -> tuple:
+    """The positional arguments of an engine step (refused: keyword arguments, another count)."""
+    if len(a) != count or any(type(x) is Ref and g.ops[x.i] == "kw" for x in a):
+        raise Unsupported(f"{what} with other arguments")
+    return a
+
+
+class _PointDerivative(_Derivative):
+    """``systems.derivative(s, F, point, tangent)``: the derivative of F(t, z) at z = point along the
+    tangent vector (a dict of matrices, a component not given: 0) by the tangent map of
+    :class:`_Derivative`, the point's variables z[k] moving with the tangent's components and everything
+    of the scene constant (the scene's X, P, Y, Q included: the point is the caller's).  The components
+    are read, and the tangent checked as the step checks it, by one engine step (``POINT_TANGENT``)."""
+
+    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, i: int) -> None:
+        self.g, self.deps, self.new, self.remap = g, deps, new, remap
+        _, scene, f, point, tangent = _positional(g, g.args[i], 5, "a derivative at a point")
+        if type(scene) is not Ref or g.ops[scene.i] != "scene" or g.args[scene.i] != (0,):
+            raise Unsupported("a derivative at a point on a scene other than the claim's (inside a function of the "
+                              "scene)")
+        self.k, self.body, self.param = _point_function(g, f, "a derivative at a point")
+        if type(point) is not Ref or type(tangent) is not Ref:
+            raise Unsupported("a derivative at a point that is not a value of the graph")
+        self.S, self.point, self.flow = remap[scene.i], point, tangent
+        self.keys = frozenset(g.args[tangent.i][0]) if g.ops[tangent.i] == "dict" else None
+        self.P, self.D, self.read, self._tangent = {}, {}, set(), None
+
+    def rule(self, j: int) -> Any:
+        g = self.g
+        op, a = g.ops[j], g.args[j]
+        if op == "param":
+            if j != self.param:
+                raise Unsupported("a function that reads another function's point")
+            return ("param",)
+        if op == "item" and type(a[0]) is Ref and a[0].i == self.param:
+            return self.component(a[1])
+        if op == "attr" and type(a[0]) is Ref and g.ops[a[0].i] == "scene" and a[1] in MOVED + ("Phi", "Psi"):
+            if g.args[a[0].i] != (self.k,):
+                raise Unsupported("a function that reads another function's scene")
+            return None                     # the scene's own point does not move with the caller's
+        return super().rule(j)
+
+    def tangent_step(self, flow: Ref, keys: tuple) -> Ref:
+        return self.add("prim", (Named(POINT_TANGENT), self.S, self.remap[self.point.i], flow, keys))
+
+    def primal_node(self, j: int) -> Ref:
+        if j == self.param:
+            return self.remap[self.point.i]
+        return super().primal_node(j)
+
+
+class _PointGradient(_Gradient):
+    """The gradients of a scalar function H(t, z) of a scene and of a point with respect to the point's
+    variables z[k] (``wrt``), by the backward sweep of :class:`_Gradient` with the variables z[k] as its
+    leaves (the scene's X, P constants here).  :meth:`sweep` gives {k: the adjoint of z[k] or None}."""
+
+    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, scene: Any, f: Any, point: Any,
+                 what: str) -> None:
+        self.g, self.deps, self.new, self.remap = g, deps, new, remap
+        if type(scene) is not Ref or g.ops[scene.i] != "scene" or g.args[scene.i] != (0,):
+            raise Unsupported(f"{what} on a scene other than the claim's (inside a function of the scene)")
+        self.k, self.body, self.param = _point_function(g, f, what)
+        if type(self.body) is not Ref:
+            raise Unsupported(f"{what} of a function whose value is a constant")
+        if type(point) is not Ref:
+            raise Unsupported(f"{what} at a point that is not a value of the graph")
+        self.S, self.point = remap[scene.i], point
+        self.P = {}
+
+    def _kind_of(self, j: int) -> str:
+        g = self.g
+        if j == self.param:
+            return _L
+        a = g.args[j]
+        if g.ops[j] == "item" and type(a[0]) is Ref and a[0].i == self.param:
+            return _M
+        return super()._kind_of(j)
+
+    def check(self, j: int) -> None:
+        g = self.g
+        a = g.args[j]
+        if j == self.param or (g.ops[j] == "item" and type(a[0]) is Ref and a[0].i == self.param):
+            return
+        if g.ops[j] == "param":
+            raise Unsupported("a function that reads another function's point")
+        if g.ops[j] == "scene" and a != (self.k,):
+            raise Unsupported("a function that reads another function's scene")
+        super().check(j)
+
+    def primal_node(self, j: int) -> Ref:
+        if j == self.param:
+            return self.remap[self.point.i]
+        return _Derivative.primal_node(self, j)
+
+    def sweep(self) -> tuple[dict, Ref]:
+        """({key: adjoint or None}, H's value): the body's values written, then the adjoints."""
+        g = self.g
+        todo = self.body_nodes()
+        self.kinds, self.moves_set = {}, set()
+        for j in todo:
+            a = g.args[j]
+            if (g.ops[j] == "item" and type(a[0]) is Ref and a[0].i == self.param) or any(
+                    r in self.moves_set for r in g.refs(j) if r != self.param):
+                self.moves_set.add(j)
+        for j in todo:
+            if g.ops[j] != "scene":
+                self.kinds[j] = self._kind_of(j)
+                self.check(j)
+        if self.kinds.get(self.body.i, _S) != _S:
+            raise Unsupported("a gradient of a function whose value is not a number")
+        for j in todo:
+            self.P[j] = self.primal_node(j)
+        adj: dict[int, tuple[list, list]] = {}
+        grads: dict[Any, list] = {}
+        if self.body.i in self.moves_set:
+            adj[self.body.i] = ([1], [])
+        for j in reversed(todo):
+            if j not in adj or g.ops[j] == "scene":
+                continue
+            terms, ident = adj.pop(j)
+            self.propagate(j, terms, ident, adj, grads)
+        value = self.P[self.body.i] if self.body.i in self.P else self.remap[self.body.i]
+        return {key: self.mat_sum(ts) for key, ts in grads.items()}, value
+
+    def propagate(self, j: int, terms: list, ident: list, adj: dict, grads: dict) -> None:
+        g = self.g
+        a = g.args[j]
+        if g.ops[j] == "item" and type(a[0]) is Ref and a[0].i == self.param:
+            M = self.mat_sum(terms)
+            c = self.scalar_sum(ident) if ident else 0
+            has_c = type(c) is Ref or c != 0
+            if M is None and not has_c:
+                return
+            grads.setdefault(a[1], []).append(self.full(j, M, c, has_c))
+            return
+        super().propagate(j, terms, ident, adj, grads)
+
+
+class _PairsFlow:
+    """``systems.stiefel_pairs_flow(s, H, point, pairs)`` on a coordinate scene: the gradients of H with
+    respect to the point's variables by the backward sweep of :class:`_PointGradient`, handed with H's
+    value to one engine step (``PAIRS_FLOW``) that makes the flow from them as the step made it from its
+    reverse tape (the closed forms of the multipliers where they hold, else the constraint gradients of
+    (cond_XP) in closed form and the solve of the Dirac multipliers)."""
+
+    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, i: int) -> None:
+        _, scene, H, point, pairs = _positional(g, g.args[i], 5, "a flow of pairs of Stiefel points")
+        self.new, self.remap = new, remap
+        self.grad = _PointGradient(g, deps, new, remap, scene, H, point, "a flow of pairs of Stiefel points")
+        self.H, self.point, self.pairs = H, point, pairs
+
+    def build(self) -> Ref:
+        grads, value = self.grad.sweep()
+        m = self.remap
+        keys = tuple(sorted(grads, key=str))
+        parts = tuple(grads[key] for key in keys)
+        pairs = m[self.pairs.i] if type(self.pairs) is Ref else self.pairs
+        return self.new.add("prim", (Named(PAIRS_FLOW), self.grad.S, m[self.H.i], m[self.point.i], pairs, value,
+                                     keys) + parts)
+
+
+#: the engine steps of :mod:`stiefelsym.systems` the pass rewrites on a scene that says ``SYSTEMS``
+_SYSTEMS_STEPS = {"stiefelsym.systems.derivative": _PointDerivative,
+                  "stiefelsym.systems.stiefel_pairs_flow": _PairsFlow}
