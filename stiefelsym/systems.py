@@ -514,16 +514,22 @@ def euler_lagrange(s: Scene, T: Callable[[Scene, dict], Any], U: Callable[[Scene
         return _flat(constraints(t, {k: z[("q", k)] for k in names}))
 
     layout = _Layout(s, coords, position)
-    alg = layout.alg
-    N = len(layout.coords)
     K = _kinetic_matrix(s, T, velocity, layout)
     gradU = _jacobian(s, U, position, layout)                                      # 1 × N
     Ja = _jacobian(s, lambda t, q: _flat(constraints(t, q)), position, layout)    # m × N
-    m = Ja.shape[0]
     # D²g(q̇, q̇) = d/dε [Dg(q + εq̇)·q̇]
     along = {("q", k): velocity[k] for k in names}
     hess = _flat(derivative(s, lambda t, z: derivative(t, g, z, {("q", k): z[("v", k)] for k in names}),
                             point, along))
+    return _solve_euler_lagrange(layout, K, gradU, Ja, hess, position)
+
+
+def _solve_euler_lagrange(layout: _Layout, K: np.ndarray, gradU: np.ndarray, Ja: np.ndarray, hess: list,
+                          position: Point) -> tuple[dict[Hashable, Mat], list[Any]]:
+    """The solve of :func:`euler_lagrange` from K, ∇U, Dg and D²g(q̇, q̇) in the layout's coordinates."""
+    alg = layout.alg
+    N = len(layout.coords)
+    m = Ja.shape[0]
     rhs = np.empty((N, m + 1), dtype=object)
     rhs[:, :1] = (-gradU).T
     rhs[:, 1:] = Ja.T
@@ -833,7 +839,40 @@ def graph_pairs_flow(s: Scene, H: Callable[[Scene, dict], Any], point: Point,
     return _dirac_flow(xs, ps, xs.project(rows), ps.project(rows), point, pairs)[0]
 
 
+def graph_euler_lagrange(s: Scene, position: Point, velocity: Point, coords: Coordinates, wrt: tuple,
+                         kinetic: Callable[[Scene, Point], tuple], potential: tuple,
+                         column: Callable[[Scene, Point], Any], hess: Any) -> tuple[dict[Hashable, Mat], list[Any]]:
+    """The accelerations and multipliers of :func:`euler_lagrange` from what the graph computed:
+    ``kinetic(s, v)``, the gradient of T at the velocity v (one value per variable of ``wrt``, then T's
+    value), taken at 0 and at each basis vector b_b of the coordinates (K b_b = ∇T(b_b) − ∇T(0)); the
+    gradient of U at the position (``potential``, likewise); ``column(s, u)``, the derivative of the
+    constraints at the position along the tangent vector u, taken along each basis vector (the columns
+    of Dg); and D²g(q̇, q̇) (``hess``).  The step's checks made as the step makes them."""
+    if not isinstance(s, Scene):
+        raise TypeError(f"Euler-Lagrange equations on a {type(s).__name__} (not a coordinate scene)")
+    _coordinate_scene(s, "the Euler-Lagrange equations in coordinates")
+    if set(velocity) != set(position):
+        raise KeyError("the velocity must have the variables of the position")
+    layout = _Layout(s, coords, position)
+    n = len(wrt)
+    zero_v = {k: M - M for k, M in velocity.items()}
+    g0 = dict(zip(wrt, kinetic(s, zero_v)[:n]))
+    cols = []
+    for name, B in layout.coords:
+        g = dict(zip(wrt, kinetic(s, {k: (zero_v[k] + B if k == name else zero_v[k]) for k in velocity})[:n]))
+        cols.append({k: _difference(g[k], g0[k]) for k in wrt})
+    K = layout.project(cols).T.copy()                  # column b: ∇T(b_b) − ∇T(0) = K b_b
+    gradU = layout.project([dict(zip(wrt, potential[:n]))])
+    flat = [_flat(column(s, {name: B})) for name, B in layout.coords]
+    Ja = np.empty((len(flat[0]) if flat else 0, len(flat)), dtype=object)
+    for j, col in enumerate(flat):
+        for i, x in enumerate(col):
+            Ja[i, j] = x
+    return _solve_euler_lagrange(layout, K, gradU, Ja, _flat(hess), position)
+
+
 PRIMITIVES[f"{__name__}.derivative:tangent"] = graph_tangent
+PRIMITIVES[f"{__name__}.euler_lagrange:graph"] = graph_euler_lagrange
 PRIMITIVES[f"{__name__}.stiefel_pairs_flow:graph"] = graph_pairs_flow
 
 # the functions that need the engine's scene (coordinates, derivatives at points of other phase

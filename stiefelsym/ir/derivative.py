@@ -1397,6 +1397,10 @@ def _positional(g: Graph, a: tuple, count: int, what: str) -> tuple:
     return a
 
 
+#: engine steps linear in their one argument (their derivative: the step of the argument's derivative)
+_LINEAR_STEPS = frozenset({"stiefelsym.systems.hermitian_entries"})
+
+
 class _PointDerivative(_Derivative):
     """``systems.derivative(s, F, point, tangent)``: the derivative of F(t, z) at z = point along the
     tangent vector (a dict of matrices, a component not given: 0) by the tangent map of
@@ -1413,7 +1417,7 @@ class _PointDerivative(_Derivative):
         self.k, self.body, self.param = _point_function(g, f, "a derivative at a point")
         if type(point) is not Ref or type(tangent) is not Ref:
             raise Unsupported("a derivative at a point that is not a value of the graph")
-        self.S, self.point, self.flow = remap[scene.i], point, tangent
+        self.S, self.point, self.flow = remap[scene.i], remap[point.i], tangent
         self.keys = frozenset(g.args[tangent.i][0]) if g.ops[tangent.i] == "dict" else None
         self.P, self.D, self.read, self._tangent = {}, {}, set(), None
 
@@ -1426,6 +1430,8 @@ class _PointDerivative(_Derivative):
             return ("param",)
         if op == "item" and type(a[0]) is Ref and a[0].i == self.param:
             return self.component(a[1])
+        if op == "prim" and type(a[0]) is Named and a[0].qualname in _LINEAR_STEPS and len(a) == 2:
+            return ("prim",)
         if op == "attr" and type(a[0]) is Ref and g.ops[a[0].i] == "scene" and a[1] in MOVED + ("Phi", "Psi"):
             if g.args[a[0].i] != (self.k,):
                 raise Unsupported("a function that reads another function's scene")
@@ -1433,11 +1439,17 @@ class _PointDerivative(_Derivative):
         return super().rule(j)
 
     def tangent_step(self, flow: Ref, keys: tuple) -> Ref:
-        return self.add("prim", (Named(POINT_TANGENT), self.S, self.remap[self.point.i], flow, keys))
+        return self.add("prim", (Named(POINT_TANGENT), self.S, self.point, flow, keys))
+
+    def emit(self, j: int, plan: Any) -> Any:
+        if plan == ("prim",):               # a linear engine step (the components of a Hermitian matrix)
+            x = self.dref(self.g.args[j][1])
+            return None if x is None else self.add("prim", (self.g.args[j][0], x))
+        return super().emit(j, plan)
 
     def primal_node(self, j: int) -> Ref:
         if j == self.param:
-            return self.remap[self.point.i]
+            return self.point
         return super().primal_node(j)
 
 
@@ -1447,7 +1459,7 @@ class _PointGradient(_Gradient):
     leaves (the scene's X, P constants here).  :meth:`sweep` gives {k: the adjoint of z[k] or None}."""
 
     def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, scene: Any, f: Any, point: Any,
-                 what: str) -> None:
+                 what: str, wrt: frozenset | None = None) -> None:
         self.g, self.deps, self.new, self.remap = g, deps, new, remap
         if type(scene) is not Ref or g.ops[scene.i] != "scene" or g.args[scene.i] != (0,):
             raise Unsupported(f"{what} on a scene other than the claim's (inside a function of the scene)")
@@ -1456,8 +1468,15 @@ class _PointGradient(_Gradient):
             raise Unsupported(f"{what} of a function whose value is a constant")
         if type(point) is not Ref:
             raise Unsupported(f"{what} at a point that is not a value of the graph")
-        self.S, self.point = remap[scene.i], point
+        self.S, self.point, self.wrt = remap[scene.i], point, wrt      # (the point: a node of the new graph)
         self.P = {}
+
+    def variable(self, j: int) -> bool:
+        """Whether the body's node j is a variable of the gradient, z[k] for k in ``wrt``."""
+        g = self.g
+        a = g.args[j]
+        return (g.ops[j] == "item" and type(a[0]) is Ref and a[0].i == self.param
+                and (self.wrt is None or a[1] in self.wrt))
 
     def _kind_of(self, j: int) -> str:
         g = self.g
@@ -1477,11 +1496,15 @@ class _PointGradient(_Gradient):
             raise Unsupported("a function that reads another function's point")
         if g.ops[j] == "scene" and a != (self.k,):
             raise Unsupported("a function that reads another function's scene")
+        if g.ops[j] == "call" and a[1] == "conj" and not a[3] and len(a[2]) == 1:
+            return
+        if g.ops[j] == "call" and a[1] == "realify" and not a[3] and not any(self.moving(x) for x in a[2]):
+            return                          # a constant realified matrix
         super().check(j)
 
     def primal_node(self, j: int) -> Ref:
         if j == self.param:
-            return self.remap[self.point.i]
+            return self.point
         return _Derivative.primal_node(self, j)
 
     def sweep(self) -> tuple[dict, Ref]:
@@ -1490,9 +1513,7 @@ class _PointGradient(_Gradient):
         todo = self.body_nodes()
         self.kinds, self.moves_set = {}, set()
         for j in todo:
-            a = g.args[j]
-            if (g.ops[j] == "item" and type(a[0]) is Ref and a[0].i == self.param) or any(
-                    r in self.moves_set for r in g.refs(j) if r != self.param):
+            if self.variable(j) or any(r in self.moves_set for r in g.refs(j)):
                 self.moves_set.add(j)
         for j in todo:
             if g.ops[j] != "scene":
@@ -1517,13 +1538,20 @@ class _PointGradient(_Gradient):
     def propagate(self, j: int, terms: list, ident: list, adj: dict, grads: dict) -> None:
         g = self.g
         a = g.args[j]
-        if g.ops[j] == "item" and type(a[0]) is Ref and a[0].i == self.param:
+        if g.ops[j] == "call" and a[1] == "conj":         # conj M = JMJ, J = diag(I, −I): its own adjoint
+            M = self.mat_sum(terms)
+            c = self.scalar_sum(ident) if ident else 0
+            has_c = type(c) is Ref or c != 0
+            if M is not None or has_c:
+                self.send(adj, a[2][0], [self.add("call", (self.S, "conj", (self.full(j, M, c, has_c),), ()))])
+            return
+        if self.variable(j):
             M = self.mat_sum(terms)
             c = self.scalar_sum(ident) if ident else 0
             has_c = type(c) is Ref or c != 0
             if M is None and not has_c:
                 return
-            grads.setdefault(a[1], []).append(self.full(j, M, c, has_c))
+            grads.setdefault(self.g.args[j][1], []).append(self.full(j, M, c, has_c))
             return
         super().propagate(j, terms, ident, adj, grads)
 
@@ -1538,7 +1566,9 @@ class _PairsFlow:
     def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, i: int) -> None:
         _, scene, H, point, pairs = _positional(g, g.args[i], 5, "a flow of pairs of Stiefel points")
         self.new, self.remap = new, remap
-        self.grad = _PointGradient(g, deps, new, remap, scene, H, point, "a flow of pairs of Stiefel points")
+        if type(point) is not Ref:
+            raise Unsupported("a flow of pairs of Stiefel points at a point that is not a value of the graph")
+        self.grad = _PointGradient(g, deps, new, remap, scene, H, remap[point.i], "a flow of pairs of Stiefel points")
         self.H, self.point, self.pairs = H, point, pairs
 
     def build(self) -> Ref:
@@ -1554,3 +1584,200 @@ class _PairsFlow:
 #: the engine steps of :mod:`stiefelsym.systems` the pass rewrites on a scene that says ``SYSTEMS``
 _SYSTEMS_STEPS = {"stiefelsym.systems.derivative": _PointDerivative,
                   "stiefelsym.systems.stiefel_pairs_flow": _PairsFlow}
+
+EULER_LAGRANGE = "stiefelsym.systems.euler_lagrange:graph"
+
+
+class _PointSecond(_PointDerivative):
+    """D²F(v, v) at z = point, F a function of a scene and of a point: the second derivative of
+    F(point + εv) at ε = 0, by the second-order tangent map (linear operations act on both orders;
+    d²(ab) = d²a·b + 2·da·db + a·d²b for matrix and scalar products; z[k] moves with v[k], its second
+    derivative 0; everything of the scene constant).  ``point`` and ``tangent``: nodes of the new graph."""
+
+    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, scene: Any, f: Any, point: Ref,
+                 tangent: Ref, what: str) -> None:
+        self.g, self.deps, self.new, self.remap = g, deps, new, remap
+        if type(scene) is not Ref or g.ops[scene.i] != "scene" or g.args[scene.i] != (0,):
+            raise Unsupported(f"{what} on a scene other than the claim's (inside a function of the scene)")
+        self.k, self.body, self.param = _point_function(g, f, what)
+        if type(self.body) is not Ref:
+            raise Unsupported(f"{what} of a function whose value is a constant")
+        self.S, self.point, self.flow, self.keys = remap[scene.i], point, None, None
+        self._v = tangent
+        self.P, self.D, self.read, self._tangent = {}, {}, set(), None
+
+    def make_flow(self) -> Ref:
+        return self._v
+
+    _LINEAR = frozenset({"add", "sub", "neg", "T", "trace", "entry", "list", "tuple"})
+
+    def rule(self, j: int) -> Any:
+        g = self.g
+        op, a = g.ops[j], g.args[j]
+        plan = super().rule(j)
+        if plan is None or plan in (("scene",), ("param",), ("prim",)) or plan[0] == "component":
+            return plan
+        if op in self._LINEAR or op in ("matmul", "mul"):
+            return plan
+        if op == "item" and type(a[0]) is Ref and g.ops[a[0].i] in ("list", "tuple", "dict"):
+            return plan
+        if op == "div" and not self.moves(a[1]):
+            return plan
+        if op == "call" and a[1] in ("tr", "conj", "realify"):
+            return plan
+        raise Unsupported(f"a {op if op != 'call' else 's.' + a[1]} in a second derivative")
+
+    def build(self) -> Ref:
+        g = self.g
+        todo = self.body_nodes()
+        self.plan = {}
+        for j in todo:
+            plan = self.rule(j)
+            if type(plan) is tuple and plan[0] == g.ops[j] != "scene" and not any(self.moves(Ref(x)) for x in g.refs(j)):
+                plan = None
+            self.plan[j] = plan
+        keys = tuple(sorted(self.read))
+        self._tangent = self.tangent_step(self.make_flow(), keys)
+        self.D2: dict[int, Any] = {}
+        for j in todo:
+            self.P[j] = self.primal_node(j)
+            self.D[j] = self.emit(j, self.plan[j])
+            self.D2[j] = self.second(j, self.plan[j])
+        b = self.body.i
+        d2 = self.D2.get(b) if self.k in self.deps[b] else None
+        value = self.filled(d2, self.body)
+        return self.add("item", (self.add("tuple", (self._tangent, value)), 1))
+
+    def filled(self, d: Any, j: Any) -> Ref:
+        """A derivative as a node, a zero (of j's shape) where it is 0."""
+        if d is None:
+            if type(j) is Ref and self.g.ops[j.i] in ("list", "tuple"):
+                return self.add(self.g.ops[j.i], tuple(self.filled(None, x) for x in self.g.args[j.i]))
+            if type(j) is Ref and self.g.ops[j.i] == "prim":
+                return self.add("prim", (self.g.args[j.i][0], self.filled(None, self.g.args[j.i][1])))
+            return self.zero(j)
+        return d
+
+    def d2(self, a: Any) -> Any:
+        if type(a) is not Ref or self.k not in self.deps[a.i]:
+            return None
+        return self.D2.get(a.i)
+
+    def second(self, j: int, plan: Any) -> Any:
+        """The second derivative of node j (None: 0)."""
+        if plan is None or plan in (("scene",), ("param",)) or plan[0] == "component":
+            return None
+        g, add, p = self.g, self.add, self.primal
+        op, a = g.ops[j], g.args[j]
+        if plan == ("prim",):
+            x = self.d2(a[1])
+            return None if x is None else add("prim", (a[0], x))
+        if op in ("add", "sub"):
+            return self.sum(self.d2(a[0]), self.d2(a[1]), op)
+        if op in ("neg", "T", "trace"):
+            x = self.d2(a[0])
+            return None if x is None else add(op, (x,))
+        if op == "entry":
+            x = self.d2(a[0])
+            return None if x is None else add("entry", (x,) + tuple(a[1:]))
+        if op in ("list", "tuple"):
+            parts = [self.d2(x) for x in a]
+            if all(x is None for x in parts):
+                return None
+            return add(op, tuple(self.filled(x, e) for x, e in zip(parts, a)))
+        if op == "item":
+            base, key = a
+            bop, ba = g.ops[base.i], g.args[base.i]
+            if bop == "dict":
+                return self.d2(ba[1][ba[0].index(key)]) if key in ba[0] else None
+            return self.d2(ba[key])
+        if op == "div":
+            x = self.d2(a[0])
+            return None if x is None else add("div", (x, p(a[1])))
+        if op in ("matmul", "mul"):             # d²(ab) = d²a·b + 2·da·db + a·d²b
+            x1, y1 = self.dref(a[0]), self.dref(a[1])
+            x2, y2 = self.d2(a[0]), self.d2(a[1])
+            left = None if x2 is None else add(op, (x2, p(a[1])))
+            mid = None if x1 is None or y1 is None else add("mul", (2, add(op, (x1, y1))))
+            right = None if y2 is None else add(op, (p(a[0]), y2))
+            return self.sum(self.sum(left, mid), right)
+        if op == "call" and a[1] in ("tr", "conj"):
+            x = self.d2(a[2][0])
+            return None if x is None else add("call", (self.S, a[1], (x,), ()))
+        if op == "call" and a[1] == "realify":
+            x, y = self.d2(a[2][0]), self.d2(a[2][1])
+            if x is None and y is None:
+                return None
+            return add("call", (self.S, "realify", (self.filled(x, a[2][0]), self.filled(y, a[2][1])), ()))
+        raise AssertionError(f"no second-order rule for {op}")
+
+
+class _EulerLagrange:
+    """``systems.euler_lagrange(s, T, U, constraints, position, velocity, coords)`` on a coordinate scene:
+    the gradients and derivatives the step took from its reverse tape and dual numbers as graph nodes,
+    handed to one engine step (``EULER_LAGRANGE``) that solves for the accelerations and the multipliers
+    as the step did: ∇T as a function of the velocity (a function of the new graph, the backward sweep of
+    :class:`_PointGradient` over its point; the step takes it at 0 and at each basis vector b_b of the
+    coordinates, K b_b = ∇T(b_b) − ∇T(0)), ∇U at the position, the derivative of the constraints along a
+    tangent vector (a function of the new graph, :class:`_PointAlong`; the step takes it along each
+    basis vector: the columns of Dg) and D²g(q̇, q̇) (:class:`_PointSecond`).  The number of coordinates
+    is the step's (so a graph traced with symbolic sizes is rewritten too)."""
+
+    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, i: int) -> None:
+        _, scene, T, U, cons, position, velocity, coords = _positional(g, g.args[i], 8, "Euler-Lagrange equations")
+        if type(coords) is not Ref or g.ops[coords.i] != "prim" or not g.args[coords.i][0].qualname.endswith(
+                ("systems.real_coordinates", "systems.complex_coordinates")):
+            raise Unsupported("Euler-Lagrange equations in coordinates other than the unit matrices of the step's own")
+        names = g.args[coords.i][2] if len(g.args[coords.i]) == 3 else None
+        if type(names) is not Ref or g.ops[names.i] not in ("list", "tuple") or any(
+                type(x) is Ref for x in g.args[names.i]):
+            raise Unsupported("Euler-Lagrange equations in coordinates of variables the graph does not name")
+        if any(type(x) is not Ref for x in (position, velocity)):
+            raise Unsupported("Euler-Lagrange equations at a point that is not a value of the graph")
+        self.new, self.wrt = new, list(dict.fromkeys(g.args[names.i]))
+        self.S = remap[scene.i]
+        self.args = (remap[position.i], remap[velocity.i], remap[coords.i])
+        add = new.add
+        w = frozenset(self.wrt)
+        new.fns += 1
+        self.kK = new.fns
+        v = add("param", (self.kK, 1, self.args[1]))
+        self.kinetic = _PointGradient(g, deps, new, remap, scene, T, v, "the kinetic energy's gradient", w)
+        self.potential = _PointGradient(g, deps, new, remap, scene, U, self.args[0], "the potential's gradient", w)
+        new.fns += 1
+        self.kJ = new.fns
+        u = add("param", (self.kJ, 1, self.args[0]))
+        self.column = _PointAlong(g, deps, new, remap, scene, cons, self.args[0], u)
+        self.hess = _PointSecond(g, deps, new, remap, scene, cons, self.args[0], self.args[1],
+                                 "the constraints' second derivative")
+
+    def build(self) -> Ref:
+        add = self.new.add
+        parts = []
+        for gr in (self.kinetic, self.potential):
+            grads, value = gr.sweep()
+            parts.append(add("tuple", tuple(grads.get(k) for k in self.wrt) + (value,)))
+        fK = add("fn", (self.kK, 2, parts[0]))
+        fJ = add("fn", (self.kJ, 2, self.column.build()))
+        hess = self.hess.build()
+        return add("prim", (Named(EULER_LAGRANGE), self.S) + self.args + (tuple(self.wrt), fK, parts[1], fJ, hess))
+
+
+class _PointAlong(_PointDerivative):
+    """The derivative of F(t, z) at z = point along a tangent vector made by an engine step (nodes of the
+    new graph): a column of a Jacobian at a point of the caller's own."""
+
+    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, scene: Any, f: Any, point: Ref,
+                 tangent: Ref) -> None:
+        self.g, self.deps, self.new, self.remap = g, deps, new, remap
+        if type(scene) is not Ref or g.ops[scene.i] != "scene" or g.args[scene.i] != (0,):
+            raise Unsupported("a derivative at a point on a scene other than the claim's")
+        self.k, self.body, self.param = _point_function(g, f, "a derivative at a point")
+        self.S, self.point, self.flow, self.keys, self._v = remap[scene.i], point, None, None, tangent
+        self.P, self.D, self.read, self._tangent = {}, {}, set(), None
+
+    def make_flow(self) -> Ref:
+        return self._v
+
+
+_SYSTEMS_STEPS["stiefelsym.systems.euler_lagrange"] = _EulerLagrange
