@@ -1073,3 +1073,186 @@ def test_coverage_of_the_catalog_magnetic_steps(catalog):
     assert counts == {"stiefelsym.twisted.flow": [16, 18], "stiefelsym.twisted.bracket": [22, 28]}
     assert reasons == {"a gradient on a scene other than the claim's (inside a function of the scene)",
                        "a prim whose kind (number or matrix) the graph does not show"}
+
+
+# -- derivatives, gradients and flows at points of the caller's own (stiefelsym.systems) --------------
+
+class _AtPoint:
+    """The scene seen through a point of the caller's own: X, P (and Φ, Ψ) read from the point's
+    variables ``x``, ``p``; everything else the scene's (so the random expressions of :func:`_build` are
+    functions of the point)."""
+
+    def __init__(self, t, z, x, p):
+        self._t, self._X, self._P = t, z[x], z[p]
+
+    def __getattr__(self, name):
+        if name == "X":
+            return self._X
+        if name == "P":
+            return self._P
+        if name == "Phi":
+            return self._P @ self._X.T - self._X @ self._P.T
+        if name == "Psi":
+            return self._X.T @ self._P - self._P.T @ self._X
+        return getattr(self._t, name)
+
+
+_SYSTEMS = ("stiefelsym.systems.derivative", "stiefelsym.systems.stiefel_pairs_flow", "stiefelsym.systems.euler_lagrange")
+
+
+def _systems_coverage(g, n=4, r=2):
+    s = Scene(n, r, ModularField(P61), chart="cayley", rng=random.Random(1))
+    return {name: [why for _, why in coverage(g, name, scene_flows(s))] for name in _SYSTEMS}
+
+
+def _pairs_claim(Hx, Hy, Fx, off_V: bool):
+    from stiefelsym.systems import coupled_point, derivative, stiefel_pairs_flow
+
+    def H(t, z):
+        return (_build(_AtPoint(t, z, "X", "P"), Hx) + _build(_AtPoint(t, z, "Y", "Q"), Hy)
+                + t.tr(z["X"].T @ t.A @ z["Y"]))
+
+    def F(t, z):
+        return [_build(_AtPoint(t, z, "X", "Q"), Fx), z["X"].T @ z["X"], z["Y"].T @ z["Q"] + z["Q"].T @ z["Y"]]
+
+    def func(s):
+        z = ({k: s.generic("O" + k, "n", "r") for k in ("X", "P", "Y", "Q")} if off_V else coupled_point(s))
+        flow = stiefel_pairs_flow(s, H, z, [("X", "P"), ("Y", "Q")])
+        half = {"X": z["P"], "Q": s.generic("W", "n", "r")}
+        return {"flow": [flow[k] for k in ("X", "P", "Y", "Q")], "dF": derivative(s, F, z, flow),
+                "dF'": derivative(s, F, z, half), "dH": derivative(s, H, z, flow)}
+    return func
+
+
+@pytest.mark.parametrize("seed", range(10))
+def test_random_functions_and_flows_at_points_agree_with_dual_and_reverse_numbers(seed):
+    """``systems.derivative`` of random functions of a point (X, P, Y, Q) along its Dirac flow and along a
+    tangent vector given in part, and ``systems.stiefel_pairs_flow`` of random Hamiltonians (coordinate reads
+    and the operator included), on the graph: what the step computed with dual and reverse numbers — at the
+    scene's coupled point (the closed forms of the multipliers) and at a point off V (the constraints'
+    gradients in closed form and the general solve)."""
+    rng = random.Random(3100 + seed)
+    reads = seed % 2 == 1
+    Hx, Hy = (_scalar_function(rng, 3, ("'res_at'",), reads=reads) for _ in range(2))
+    Fx = _scalar_function(rng, 3, ("'res_at'",), reads=reads)
+    func = _pairs_claim(Hx, Hy, Fx, off_V=seed % 3 == 2)
+    n = rng.choice([3, 4])
+    g = compile_claim(func, n, 2, STANDARD)
+    cov = _systems_coverage(g, n, 2)
+    assert cov["stiefelsym.systems.stiefel_pairs_flow"] == [None]
+    assert cov["stiefelsym.systems.derivative"] == [None] * 3
+    assert _agree(g, n, 2, seed=seed)
+
+
+def _app2_graphs(catalog, sizes=((4, 2), (3, 1))):
+    for c in catalog:
+        if c.section != "A2":
+            continue
+        for n, r in sizes:
+            if not c.sizes.admits(n, r):
+                continue
+            cons = REALIZATIONS[c.realization]
+            try:
+                g = compile_claim(c.func, n, r, (cons.name, cons.build))
+            except Exception:   # noqa: BLE001 - a claim not stated at this size
+                continue
+            yield c, g, n, r
+
+
+def test_every_claim_of_the_systems_is_graph_nodes_and_evaluates_alike(catalog):
+    """Every engine step of the double, coupled and complex Neumann systems (derivatives at points of
+    their own, flows of pairs of Stiefel points, Euler–Lagrange equations, real and complex) is rewritten,
+    and every claim evaluates as with the dual and reverse numbers, at (4, 2) and (3, 1)."""
+    steps = 0
+    for c, g, n, r in _app2_graphs(catalog):
+        for name, whys in _systems_coverage(g, n, r).items():
+            assert whys == [None] * len(whys), (c.id, name, whys)
+            steps += len(whys)
+        assert _agree(g, n, r, c.realization), (c.id, n, r)
+    assert steps >= 50          # 56 steps when written
+
+
+def test_the_systems_steps_stay_with_the_free_scene():
+    """On the dimension-free scene the steps of :mod:`stiefelsym.systems` stay the scene's, with the reason."""
+    g = compile_claim(_pairs_claim(("q",), ("q",), ("q",), False), 4, 2, STANDARD)
+    flows = scene_flows(FreeScene(lazy=True))
+    assert deriv.SYSTEMS not in flows
+    whys = [why for _, why in coverage(g, "stiefelsym.systems.stiefel_pairs_flow", flows)]
+    assert whys == ["the scene's own derivatives (not a coordinate scene)"]
+
+
+def _pairs_kept(s):
+    """The Dirac flow of pairs of Stiefel points keeps every constraint, at a point off V too."""
+    from stiefelsym.systems import derivative, stiefel_pairs_flow
+    z = {k: s.generic("O" + k, "n", "r") for k in ("X", "P", "Y", "Q")}
+    H = lambda t, w: t.tr(w["X"].T @ t.A @ w["Y"]) + t.tr(w["P"].T @ w["P"] @ w["Q"].T @ w["Q"])    # noqa: E731
+    flow = stiefel_pairs_flow(s, H, z, [("X", "P"), ("Y", "Q")])
+    kept = derivative(s, lambda t, w: [w["X"].T @ w["X"], w["X"].T @ w["P"] + w["P"].T @ w["X"],
+                                       w["Y"].T @ w["Y"], w["Y"].T @ w["Q"] + w["Q"].T @ w["Y"]], z, flow)
+    return {f"kept {i}": k for i, k in enumerate(kept)}
+
+
+def test_a_wrong_pairs_constraint_gradient_is_caught(monkeypatch):
+    """The closed-form gradients of the pairs' constraints with E_ij for E_ij + E_ji off the diagonal (xE_ij:
+    half of the gradient, in one column): no longer the reverse tape's, and the flow off V no longer keeps
+    the constraints."""
+    import numpy as np
+    import stiefelsym.systems as sy
+    assert run_one(_claim(_pairs_kept, "pairs-kept"), Size(4, 2), "modular", 0).verdict == "checked"
+
+    def one_sided(s, point, pairs):
+        f, out = s.field, []
+        for x, p in pairs:
+            X, P = point[x]._untyped(), point[p]._untyped()
+            r = X._shape()[1]
+            units = []
+            for i in range(r):
+                for j in range(i, r):
+                    S = np.empty((r, r), dtype=object)
+                    S.fill(f.const(0))
+                    S[i, j] = f.const(2 if i == j else 1)
+                    units.append(Mat._wrap(S, f))
+            out += [{x: X @ S} for S in units] + [{x: P @ S, p: X @ S} for S in units]
+        return out
+    s = Scene(4, 2, ModularField(P61), chart="cayley", rng=random.Random(0))
+    z = {"X": s.X, "P": s.P, "Y": s.Y, "Q": s.Q}
+    assert not all(_same(a[k], b[k]) for a, b in zip(one_sided(s, z, [("X", "P")]),
+                                                      sy._pairs_constraint_gradients(s, z, [("X", "P")])) for k in a)
+    monkeypatch.setattr(sy, "_pairs_constraint_gradients", one_sided)
+    func = lambda s: _pairs_kept(s)      # noqa: E731 - a function object of its own
+    assert run_one(_claim(func, "pairs-kept-one-sided"), Size(4, 2), "modular", 0).verdict == "fails"
+
+
+@pytest.mark.parametrize("wrong", ["second", "conj"])
+def test_a_wrong_systems_rule_is_caught(monkeypatch, wrong, catalog):
+    """A wrong rule of the pass at points of the caller's own is caught by the claims: the second
+    derivative without the factor 2 of d²(ab) = d²a·b + 2·da·db + a·d²b (the double Neumann system's
+    multipliers, hence its accelerations, change: (D-eq) refuted), or the conjugate's adjoint without the
+    conjugate (the complex system's kinetic matrix changes: (W-eq) refuted)."""
+    cid = {"second": "double-neumann-flow", "conj": "complex-neumann-flow"}[wrong]
+    c = next(c for c in catalog if c.id == cid)
+    assert run_one(c, Size(4, 2), "modular", 0).verdict == "checked"
+    if wrong == "second":
+        orig = deriv._PointSecond.second
+
+        def second(self, j, plan):
+            out = orig(self, j, plan)
+            op = self.g.ops[j]
+            if out is not None and op in ("matmul", "mul"):
+                x1, y1 = self.dref(self.g.args[j][0]), self.dref(self.g.args[j][1])
+                if x1 is not None and y1 is not None:
+                    return self.sum(out, self.add(op, (x1, y1)), "sub")     # 2·da·db → da·db
+            return out
+        monkeypatch.setattr(deriv._PointSecond, "second", second)
+    else:
+        orig = deriv._PointGradient.propagate
+
+        def propagate(self, j, terms, ident, adj, grads):
+            a = self.g.args[j]
+            if self.g.ops[j] == "call" and a[1] == "conj" and terms and not ident:
+                self.send(adj, a[2][0], [self.mat_sum(terms)])
+                return
+            orig(self, j, terms, ident, adj, grads)
+        monkeypatch.setattr(deriv._PointGradient, "propagate", propagate)
+    func = lambda s: c.func(s)      # noqa: E731 - a function object of its own (a fresh graph)
+    assert run_one(_claim(func, cid + "-wrong"), Size(4, 2), "modular", 0).verdict == "fails"
