@@ -1256,3 +1256,23 @@ def test_a_wrong_systems_rule_is_caught(monkeypatch, wrong, catalog):
         monkeypatch.setattr(deriv._PointGradient, "propagate", propagate)
     func = lambda s: c.func(s)      # noqa: E731 - a function object of its own (a fresh graph)
     assert run_one(_claim(func, cid + "-wrong"), Size(4, 2), "modular", 0).verdict == "fails"
+
+
+def test_derivatives_at_the_free_scenes_own_point_agree(catalog):
+    """On the dimension-free scene ``systems.derivative`` at the scene's own point (X, P, Y, Q: the coupled
+    systems) is the tangent map along the tangent vector in graph nodes, with the scene's normal forms; at
+    the double and the complex points (which the scene differentiates its own way) it keeps the step."""
+    flows = scene_flows(FreeScene(lazy=True))
+    seen = 0
+    for cid in ("coupled-neumann-momentum", "coupled-dual-lax", "double-neumann-momentum", "complex-neumann-momenta"):
+        c = next(c for c in catalog if c.id == cid)
+        g = compile_claim(c.func, None, None, STANDARD)
+        whys = [why for _, why in coverage(g, "stiefelsym.systems.derivative", flows)]
+        if cid.startswith("coupled"):
+            assert whys == [None] * len(whys) and whys
+            seen += len(whys)
+        else:
+            assert all(w and "scene's own letters" in w for w in whys)
+        a, b = _free_values(g)
+        assert a == b, cid
+    assert seen == 3

@@ -197,6 +197,8 @@ def _transform(g: Graph, flows: frozenset = frozenset()) -> tuple[Graph, list]:
         elif op == "prim" and a[0].qualname in _SYSTEMS_STEPS:
             if SYSTEMS in flows:
                 rewrite = _SYSTEMS_STEPS[a[0].qualname]
+            elif SYSTEMS_OWN in flows and a[0].qualname == "stiefelsym.systems.derivative":
+                rewrite = _OwnPointDerivative
             else:
                 report.append((i, a[0].qualname, "the scene's own derivatives (not a coordinate scene)"))
         if rewrite is not None:
@@ -1397,6 +1399,11 @@ def _positional(g: Graph, a: tuple, count: int, what: str) -> tuple:
     return a
 
 
+#: what the dimension-free scene says (``_graph_flows``) when ``systems.derivative`` at its own point (X, P, Y, Q,
+#: its letters) is its derivative along the tangent vector: graph nodes along the scene's own tangent
+SYSTEMS_OWN = "derivatives at the scene's own point along a tangent vector"
+
+
 #: engine steps linear in their one argument (their derivative: the step of the argument's derivative)
 _LINEAR_STEPS = frozenset({"stiefelsym.systems.hermitian_entries"})
 
@@ -1781,3 +1788,37 @@ class _PointAlong(_PointDerivative):
 
 
 _SYSTEMS_STEPS["stiefelsym.systems.euler_lagrange"] = _EulerLagrange
+
+
+class _OwnPointDerivative(_PointDerivative):
+    """``systems.derivative(s, F, point, tangent)`` on the dimension-free scene at its own point (a dict of
+    its letters X, P, Y, Q under their own names, as the graph shows it): the derivative of
+    t ↦ F(t, {k: t.k}) along the tangent, as the scene computes it — the tangent map of :class:`_Derivative`
+    with z[k] and the scene's letter k moving alike, the components read (and the tangent checked) by the
+    scene's own step (:func:`tangent_vector`).  Any other point (the double or the complex point, which
+    the scene differentiates its own way) keeps the step."""
+
+    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, i: int) -> None:
+        super().__init__(g, deps, new, remap, i)
+        point = g.args[i][3]
+        ok = g.ops[point.i] == "dict"
+        if ok:
+            keys, vals = g.args[point.i]
+            ok = bool(keys) and all(
+                k in ("X", "P", "Y", "Q") and type(v) is Ref and g.ops[v.i] == "attr" and g.args[v.i][1] == k
+                and type(g.args[v.i][0]) is Ref and g.ops[g.args[v.i][0].i] == "scene" and g.args[g.args[v.i][0].i] == (0,)
+                for k, v in zip(keys, vals))
+        if not ok:
+            raise Unsupported("a derivative at a point other than the scene's own letters (X, P, Y, Q)")
+
+    def rule(self, j: int) -> Any:
+        g = self.g
+        op, a = g.ops[j], g.args[j]
+        if op == "attr" and type(a[0]) is Ref and g.ops[a[0].i] == "scene" and a[1] in MOVED + ("Phi", "Psi"):
+            if g.args[a[0].i] != (self.k,):
+                raise Unsupported("a function that reads another function's scene")
+            return _Derivative.rule(self, j)        # the scene's own letters move with the tangent here
+        return super().rule(j)
+
+    def tangent_step(self, flow: Ref, keys: tuple) -> Ref:
+        return self.add("prim", (Named(TANGENT), self.S, flow, keys))
