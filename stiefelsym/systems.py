@@ -21,7 +21,10 @@ constraint; of U, of the constraints, and of T at each basis vector) come from r
 matrix operations (:mod:`.reverse`): one evaluation of the function over reverse numbers, the
 point's variables being the leaves of the tape, and one backward sweep per scalar component.  Where
 reverse mode has no adjoint for an operation (it raises ``Unsupported``), one forward pass (dual
-numbers) per coordinate gives the same numbers.  The gradients are then stacked by rows, and the
+numbers) per coordinate gives the same numbers.  In a claim's graph on a coordinate scene these
+derivatives and gradients are graph nodes (:mod:`stiefelsym.ir.derivative` rewrites the steps into the
+``graph_*`` steps below, which take them), and the constraints of a pair of Stiefel points have their
+gradients in closed form.  The gradients are then stacked by rows, and the
 linear algebra is whole-matrix: the constraint bracket matrix is one product G_x G_pᵀ − G_p G_xᵀ,
 the multipliers one solve, the flow one product with the stacked gradients.
 

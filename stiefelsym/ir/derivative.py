@@ -53,6 +53,16 @@ handed on by one engine step, :func:`graph_flow`, as the scene's method hands it
 metric realization, the free algebra) and for a Hamiltonian the reverse sweep refuses, the call
 node stays.
 
+The engine steps of :mod:`stiefelsym.systems`, whose functions take a scene and a point of the
+caller's own (a dict of matrices), are rewritten on a coordinate scene (:data:`SYSTEMS`): the derivative
+at a point by the tangent map with the point's variables z[k] moving (:class:`_PointDerivative`), the
+gradients of a function of the point by the backward sweep with z[k] as its leaves
+(:class:`_PointGradient`, one adjoint per key), the flow of pairs of Stiefel points from those gradients
+(:class:`_PairsFlow`), and the Euler–Lagrange equations from a gradient and a derivative made functions
+of the new graph and a second derivative by the second-order tangent map (:class:`_EulerLagrange`,
+:class:`_PointSecond`).  On the dimension-free scene the derivative at its own point is the tangent map
+along the tangent vector (:data:`SYSTEMS_OWN`).
+
 The digest of a claim stays the digest of its graph as traced (what
 results.json records and ``stiefelsym check`` re-traces); the transformed graph
 is derived from it, once per graph, and is what the methods evaluate.
