@@ -16,6 +16,7 @@ from stiefelsym.ir import compile_claim
 from stiefelsym.ir import derivative as deriv
 from stiefelsym.ir.derivative import POINT_FLOWS, coverage, derivatives, scene_flows
 from stiefelsym.ir.evaluate import evaluate
+from stiefelsym.ir.graph import Ref
 from stiefelsym.ir.statements import Rank
 from stiefelsym.backends.matrix import Mat
 from stiefelsym.methods.fixed_size import _entries
@@ -589,8 +590,9 @@ def test_a_wrong_hamiltonian_is_refuted(method):
 
 
 def test_what_the_scene_keeps_computing():
-    """The metric realization and the free scene: the flow stays the scene's, with the reason, and
-    evaluates as before (a Hamiltonian of entries no longer: its flow is graph nodes)."""
+    """The metric realization and the free scene: the multipliers stay the scene's (the metric realization's
+    flow takes the graph's gradient, and evaluates as before; without it, the reason is given), and a
+    Hamiltonian of entries no longer keeps the flow: its flow is graph nodes."""
     def entries(s):
         return {"X": s.dirac_flow(lambda t: (t.X.T @ t.P)[0, 1] * t.tr(t.P.T @ t.P)).Pdot}
     g = compile_claim(entries, 3, 2, STANDARD)
@@ -599,8 +601,11 @@ def test_what_the_scene_keeps_computing():
     g = compile_claim(prep, 4, 2, (REALIZATIONS["metric"].name, REALIZATIONS["metric"].build))
     s = Scene(4, 2, ModularField(P61), chart="cayley", rng=random.Random(1), realization="metric")
     assert "dirac_flow" not in scene_flows(s) and "canonical_flow" in scene_flows(s)
-    assert scene_flows(FreeScene(lazy=True)) == frozenset({deriv.BRACKET_ALONG_FLOW, deriv.TWISTED_ALONG_FLOW})
+    assert scene_flows(FreeScene(lazy=True)) == frozenset({deriv.BRACKET_ALONG_FLOW, deriv.TWISTED_ALONG_FLOW,
+                                                           deriv.SYSTEMS_OWN})
     (_, why), = coverage(g, "dirac_flow", scene_flows(s))
+    assert why is None and _agree(g, 4, 2, "metric")
+    (_, why), = coverage(g, "dirac_flow", scene_flows(s) - {deriv.GRADIENT_FLOW})
     assert "realization" in why
 
 
@@ -1056,9 +1061,10 @@ def test_a_wrong_free_magnetic_flow_is_caught(monkeypatch):
 
 
 def test_coverage_of_the_catalog_magnetic_steps(catalog):
-    """At (4,2) on a coordinate scene 38 of the catalog's 46 magnetic flows and brackets take the graph's
-    gradients; the others are a bracket of a bracket (the Jacobi identity of the twisted bracket) and
-    steps inside a function of the scene (the bracket inside it, a flow at another point)."""
+    """At (4,2) on a coordinate scene 40 of the catalog's 46 magnetic flows and brackets take the graph's
+    gradients (the flows at another point of T*V, ``twisted.at_point``, included); the others are a bracket
+    of a bracket (the Jacobi identity of the twisted bracket) and the brackets inside it (on a function's
+    scene)."""
     s = Scene(4, 2, ModularField(P61), chart="cayley", rng=random.Random(1))
     counts: dict[str, list[int]] = {}
     reasons = set()
@@ -1070,7 +1076,7 @@ def test_coverage_of_the_catalog_magnetic_steps(catalog):
                 k[1] += 1
                 if why is not None:
                     reasons.add(why)
-    assert counts == {"stiefelsym.twisted.flow": [16, 18], "stiefelsym.twisted.bracket": [22, 28]}
+    assert counts == {"stiefelsym.twisted.flow": [18, 18], "stiefelsym.twisted.bracket": [22, 28]}
     assert reasons == {"a gradient on a scene other than the claim's (inside a function of the scene)",
                        "a prim whose kind (number or matrix) the graph does not show"}
 
@@ -1276,3 +1282,101 @@ def test_derivatives_at_the_free_scenes_own_point_agree(catalog):
         a, b = _free_values(g)
         assert a == b, cid
     assert seen == 3
+
+
+@pytest.mark.parametrize("cid,n,r", [("magnetic-grassmannian-flow", 4, 2), ("magnetic-grassmannian-flow", 5, 2),
+                                     ("cpb-reduction-stiefel", 3, 3), ("cpb-reduction-stiefel", 4, 4)])
+def test_flows_and_derivatives_at_another_point_are_graph_nodes(catalog, cid, n, r):
+    """On a coordinate scene the derivatives, Dirac flows and magnetic flows of the claim's problem at another
+    point (``twisted.at_point(s, X, P)``) are rewritten like the scene's own, and evaluate alike; on the free
+    algebra (whose scene at another point is its own) the magnetic flow keeps its step."""
+    c = next(c for c in catalog if c.id == cid)
+    g = compile_claim(c.func, n, r, STANDARD)
+    s = Scene(n, r, ModularField(P61), chart="cayley", rng=random.Random(1))
+    whys = [why for name in ("d", "dirac_flow", "stiefelsym.twisted.flow") for _, why in coverage(g, name, scene_flows(s))]
+    assert whys and whys == [None] * len(whys)
+    assert _agree(g, n, r)
+    if cid == "magnetic-grassmannian-flow":
+        free = [why for _, why in coverage(g, "stiefelsym.twisted.flow", scene_flows(FreeScene(lazy=True)))]
+        assert free and None not in free
+
+
+def test_a_derivative_at_another_point_read_at_the_scenes_own_point_is_caught(monkeypatch, catalog):
+    """Φ's product rule at another point with the scene's own X, P in place of the other point's: the
+    corrected reduction of the CPB body (at a point of T*SO(n) whose body momentum has a vanishing block,
+    P moved off the scene's own) no longer follows (N0_XP2)."""
+    c = next(c for c in catalog if c.id == "cpb-reduction-stiefel")
+    corrected = c.corrections[0].func
+    assert run_one(_claim(lambda s: corrected(s), "cpb-corrected", c.sizes), Size(4, 4), "modular", 0).verdict == "checked"
+    orig = deriv._Derivative.emit
+
+    def emit(self, j, plan):
+        if plan is not None and plan[0] in ("Phi", "Psi"):
+            own, self.S = self.S, Ref(self.new.index[("scene", (0,))])
+            try:
+                return orig(self, j, plan)
+            finally:
+                self.S = own
+        return orig(self, j, plan)
+    monkeypatch.setattr(deriv._Derivative, "emit", emit)
+    func = lambda s: corrected(s)      # noqa: E731 - a function object of its own (a fresh graph)
+    assert run_one(_claim(func, "cpb-own-point", c.sizes), Size(4, 4), "modular", 0).verdict == "fails"
+
+
+# -- the Dirac flow where the scene solves its multipliers: the metric realization --------------------
+
+METRIC = (REALIZATIONS["metric"].name, REALIZATIONS["metric"].build)
+
+
+@pytest.mark.parametrize("n,r,chart", [(3, 1, "cayley"), (3, 2, "cayley"), (4, 2, "equivariant"), (5, 3, "cayley")])
+def test_closed_form_metric_constraint_gradients_agree_with_reverse_mode(n, r, chart):
+    """X(E_ij + E_ji) and (BP(E_ij + E_ji), BX(E_ij + E_ji)), B = A⁻¹, for the entries of XᵀX − I and
+    XᵀBP + PᵀBX (cond_XP2): the gradients the reverse tape computes, at a point on V and off it."""
+    for seed in range(3):
+        s = Scene(n, r, ModularField(P61), chart=chart, rng=random.Random(seed), realization="metric")
+        closed, rev = s._standard_constraint_gradients(), s._reverse_constraint_gradients()
+        assert len(closed) == len(rev) == r * (r + 1)
+        assert all(_same(a[0], b[0]) and _same(a[1], b[1]) for a, b in zip(closed, rev))
+        off = at_point_off_V(s)
+        closed, rev = off._standard_constraint_gradients(), off._reverse_constraint_gradients()
+        assert all(_same(a[0], b[0]) and _same(a[1], b[1]) for a, b in zip(closed, rev))
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_random_metric_flows_take_the_graphs_gradient(seed):
+    """The metric realization's Dirac flow of random Hamiltonians (coordinate reads and the operator
+    included) with H's gradient from the graph's backward sweep and the scene's multipliers (Lyapunov
+    equations on its equivariant chart, the solve elsewhere): the scene's own flow."""
+    rng = random.Random(4100 + seed)
+    Hx = _scalar_function(rng, 3, ("'res_at'",), reads=seed % 2 == 1)
+    Fx = _scalar_function(rng, 2, ("'res_at'",), reads=seed % 2 == 1)
+
+    def func(s):
+        flow = s.dirac_flow(lambda t: _build(t, Hx))
+        return {"flow": [flow.Xdot, flow.Pdot], "dF": s.d(lambda t: _build(t, Fx), flow)}
+    n = rng.choice([3, 4])
+    g = compile_claim(func, n, 2, METRIC)
+    s = Scene(n, 2, ModularField(P61), chart="cayley", rng=random.Random(1), realization="metric")
+    assert deriv.GRADIENT_FLOW in scene_flows(s) and "dirac_flow" not in scene_flows(s)
+    assert [why for _, why in coverage(g, "dirac_flow", scene_flows(s))] == [None]
+    assert _agree(g, n, 2, "metric", seed=seed)
+
+
+def test_a_wrong_metric_constraint_gradient_is_caught(monkeypatch, catalog):
+    """The metric realization's constraint gradients without B = A⁻¹ (those of (cond_XP)): the flow, projected
+    on them, is no longer the metric geodesic flow (A_XP): metric-flow refuted."""
+    c = next(c for c in catalog if c.id == "metric-flow")
+    assert run_one(c, Size(4, 2), "modular", 0).verdict == "checked"
+    right = Scene._standard_constraint_gradients
+
+    def without_B(self):
+        old, self._realization = self._realization, "standard"
+        try:
+            return right(self)
+        finally:
+            self._realization = old
+    monkeypatch.setattr(Scene, "_standard_constraint_gradients", without_B)
+    func = lambda s: c.func(s)      # noqa: E731 - a function object of its own
+    import dataclasses
+    claim = dataclasses.replace(c, id="metric-flow-without-B", func=func, fails_at=None)
+    assert run_one(claim, Size(4, 2), "modular", 0).verdict == "fails"

@@ -162,6 +162,7 @@ def _transform(g: Graph, flows: frozenset = frozenset()) -> tuple[Graph, list]:
     deps = _deps(g)
     new = Graph()
     new.refusals, new.fns, new.sizes = list(g.refusals), g.fns, g.sizes
+    new.cache["flows"] = flows
     remap: dict[int, Ref] = {}
 
     def m(a: Any) -> Any:
@@ -194,6 +195,8 @@ def _transform(g: Graph, flows: frozenset = frozenset()) -> tuple[Graph, list]:
                 rewrite = _FLOW_PASSES[a[1]]
             elif a[1] == "bracket" and BRACKET_ALONG_FLOW in flows:
                 rewrite = _BracketAlongFlow
+            elif a[1] == "dirac_flow" and GRADIENT_FLOW in flows:
+                rewrite = _GradientFlow
             else:
                 report.append((i, a[1], "the scene's own multipliers here (another realization, a chart or a "
                                         "field without their closed forms, or the free algebra's solve)"))
@@ -261,7 +264,7 @@ class _Derivative:
             f, flow = args
         else:
             flow = None                     # made by :meth:`make_flow` when the derivative is built
-        if type(scene) is not Ref or g.ops[scene.i] != "scene" or g.args[scene.i] != (0,):
+        if not _claim_scene(g, scene, new):
             raise Unsupported(f"{_WHAT.get(name, 'a derivative')} on a scene other than the claim's (inside a "
                               "function of the scene)")
         if type(f) is not Ref or g.ops[f.i] != "fn" or (flow is not None and type(flow) is not Ref):
@@ -612,6 +615,24 @@ class _Derivative:
         raise AssertionError(f"no rule for {op}")
 
 
+#: the engine step that makes the claim's problem at another point of T*V (a scene of its own)
+AT_POINT = "stiefelsym.twisted.at_point"
+
+
+def _claim_scene(g: Graph, scene: Any, new: Graph) -> bool:
+    """Whether a derivative's, gradient's or flow's scene is the claim's: its own scene, or, on a coordinate
+    scene (the pass was given ``TWISTED``), the claim's problem at another point of T*V
+    (``twisted.at_point(s, X, P)``, a copy of the scene with that point)."""
+    if type(scene) is not Ref:
+        return False
+    if g.ops[scene.i] == "scene":
+        return g.args[scene.i] == (0,)
+    a = g.args[scene.i]
+    return (g.ops[scene.i] == "prim" and type(a[0]) is Named and a[0].qualname == AT_POINT
+            and TWISTED in new.cache.get("flows", ()) and len(a) == 4
+            and type(a[1]) is Ref and g.ops[a[1].i] == "scene" and g.args[a[1].i] == (0,))
+
+
 def _own_operator(g: Graph, a: tuple, k: int) -> bool:
     """Whether an ``apply`` node's arguments ``a`` apply the symmetric operator of the function's own
     scene (``s.sym_operator(name)``, k the function's number) to one matrix."""
@@ -759,7 +780,7 @@ class _Gradient(_Derivative):
             if kw or len(args) != 1:
                 raise Unsupported(f"{what} with further arguments")
             f = args[0]
-        if type(scene) is not Ref or g.ops[scene.i] != "scene" or g.args[scene.i] != (0,):
+        if not _claim_scene(g, scene, new):
             raise Unsupported(f"{what} on a scene other than the claim's (inside a function of the scene)")
         if type(f) is not Ref or g.ops[f.i] != "fn":
             raise Unsupported(f"{what} of something that is not a traced function")
@@ -1832,3 +1853,43 @@ class _OwnPointDerivative(_PointDerivative):
 
     def tangent_step(self, flow: Ref, keys: tuple) -> Ref:
         return self.add("prim", (Named(TANGENT), self.S, flow, keys))
+
+
+#: what a coordinate scene says (``_graph_flows``) when its Dirac flow, where the graph does not compute its
+#: multipliers (the metric realization, whose multipliers solve Lyapunov equations; a chart or field without
+#: the closed forms), may take the gradient of H the graph computes
+GRADIENT_FLOW = "the Dirac flow from the graph's gradient"
+DIRAC_FROM_GRADIENT = "stiefelsym.ir.derivative.dirac_flow_from_gradient"
+
+
+def dirac_flow_from_gradient(scene: Any, H: Any, HX: Any, HP: Any) -> Any:
+    """The Dirac flow of H on ``scene`` from the gradient (H_X, H_P) the graph computed: the scene makes it
+    as its own :meth:`dirac_flow` does (its multipliers, closed or solved).  Engine step of the transformed
+    graphs."""
+    f = getattr(scene, "_graph_dirac_flow", None)
+    if f is None:
+        raise TypeError(f"a Dirac flow on a {type(scene).__name__} (a scene whose flows the graph does not compute)")
+    return f(H, HX, HP)
+
+
+PRIMITIVES[DIRAC_FROM_GRADIENT] = dirac_flow_from_gradient
+
+
+class _GradientFlow:
+    """``s.dirac_flow(H)`` where the scene solves its multipliers: H's gradient by the backward sweep of
+    :class:`_Gradient` (the scene's checks of a gradient made by :func:`gradient_pair`), handed with H to one
+    engine step, :func:`dirac_flow_from_gradient`."""
+
+    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, i: int) -> None:
+        scene, name, args, kw = g.args[i]
+        if kw or len(args) != 1:
+            raise Unsupported("a Dirac flow with further arguments")
+        self.new, self.remap, self.f = new, remap, args[0]
+        self.grad = _Gradient(g, deps, new, remap, i, self.f)
+        self.S = self.grad.S
+
+    def build(self) -> Ref:
+        add = self.new.add
+        pair = self.grad.build()
+        HX, HP = add("item", (pair, 0)), add("item", (pair, 1))
+        return add("prim", (Named(DIRAC_FROM_GRADIENT), self.S, self.remap[self.f.i], HX, HP))
