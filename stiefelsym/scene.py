@@ -1597,10 +1597,12 @@ class Scene(PaperObjects):
         drawn in the order the claim uses them); XᵀX = I_r is checked exactly when the flow is handed
         on (:meth:`_graph_flow`).  The magnetic systems' flows and brackets take the graph's gradients
         on every coordinate scene (their multipliers stay the engine's), and so do the derivatives and flows at
-        points of the caller's own (:mod:`stiefelsym.systems`); elsewhere the Dirac flow takes the graph's
-        gradient of H (its multipliers the scene's: :meth:`_graph_dirac_flow`)."""
+        points of the caller's own (:mod:`stiefelsym.systems`); on the metric realization the Dirac flow takes
+        the graph's gradient of H (its multipliers the scene's: :meth:`_graph_dirac_flow`)."""
         from stiefelsym.ir.derivative import GRADIENT_FLOW, SYSTEMS, TWISTED
-        kinds = {"canonical_flow", TWISTED, SYSTEMS, GRADIENT_FLOW}
+        kinds = {"canonical_flow", TWISTED, SYSTEMS}
+        if self.realization == "metric":
+            kinds.add(GRADIENT_FLOW)
         approx = self._approximates_point()
         if (CLOSED_FORM_MULTIPLIERS and self.realization == "standard" and self.chart in ("cayley", "equivariant")
                 and (self._field.exact or approx)
