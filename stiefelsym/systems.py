@@ -767,6 +767,13 @@ def complex_diagonal(M: Mat) -> list[tuple[Any, Any]]:
 
 # -- the engine steps of the transformed graphs (stiefelsym.ir.derivative) ---------------------------
 
+def _matrix_variable(M: Any, k: Hashable) -> None:
+    """Refuse a variable of a point that is not a matrix (the graph's derivatives and gradients at a point
+    take its variables as matrices)."""
+    if not isinstance(M, Mat):
+        raise TypeError(f"the variable {k!r} of a point must be a matrix here, not a {type(M).__name__}")
+
+
 def graph_tangent(s: Scene, point: Point, tangent: Mapping[Hashable, Mat], keys: tuple) -> dict[Hashable, Mat]:
     """The components ``keys`` of a tangent vector at a point of the caller's own, checked as
     :func:`derivative` checks them, each with the spaces of the point's matrix (0 where the tangent does
@@ -783,6 +790,7 @@ def graph_tangent(s: Scene, point: Point, tangent: Mapping[Hashable, Mat], keys:
     out = {}
     for k in keys:
         M = point[k]
+        _matrix_variable(M, k)
         v = tangent.get(k)
         if v is None:
             v = Mat.zeros(*M._shape(), s.field, M.tags, s.tracker)
@@ -828,6 +836,8 @@ def graph_pairs_flow(s: Scene, H: Callable[[Scene, dict], Any], point: Point,
     and the solve of :func:`hamiltonian_flow`."""
     if not isinstance(s, Scene):
         raise TypeError(f"a flow of pairs of Stiefel points on a {type(s).__name__} (not a coordinate scene)")
+    for k, M in point.items():
+        _matrix_variable(M, k)
     gH = dict(zip(keys, grads))
     if _closed_form_applies(s, point, pairs):
         return _closed_form_from_gradients(s, point, pairs, gH)
@@ -856,6 +866,8 @@ def graph_euler_lagrange(s: Scene, position: Point, velocity: Point, coords: Coo
     _coordinate_scene(s, "the Euler-Lagrange equations in coordinates")
     if set(velocity) != set(position):
         raise KeyError("the velocity must have the variables of the position")
+    for k, M in list(position.items()) + list(velocity.items()):
+        _matrix_variable(M, k)
     layout = _Layout(s, coords, position)
     n = len(wrt)
     zero_v = {k: M - M for k, M in velocity.items()}

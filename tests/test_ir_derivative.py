@@ -1380,3 +1380,20 @@ def test_a_wrong_metric_constraint_gradient_is_caught(monkeypatch, catalog):
     import dataclasses
     claim = dataclasses.replace(c, id="metric-flow-without-B", func=func, fails_at=None)
     assert run_one(claim, Size(4, 2), "modular", 0).verdict == "fails"
+
+
+def test_a_point_with_a_number_for_a_variable():
+    """A number among a point's variables that the tangent (a dict of the graph) does not move is a constant
+    of the derivative, as for the dual numbers; read by the step (a tangent the graph does not show) it is
+    refused (TypeError), not differentiated as a matrix."""
+    import stiefelsym.systems as sy
+
+    def func(s):
+        z = {"X": s.X, "c": s.lam}
+        return {"d": sy.derivative(s, lambda t, w: w["c"] * t.tr(w["X"].T @ w["X"]), z, {"X": s.P})}
+    g = compile_claim(func, 3, 2, STANDARD)
+    assert _systems_coverage(g, 3, 2)["stiefelsym.systems.derivative"] == [None]
+    assert _agree(g, 3, 2)
+    s = Scene(3, 2, ModularField(P61), chart="cayley", rng=random.Random(1))
+    with pytest.raises(TypeError, match="must be a matrix"):
+        sy.graph_tangent(s, {"X": s.X, "c": s.lam}, {"X": s.P}, ("X", "c"))
