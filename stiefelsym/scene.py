@@ -1187,7 +1187,7 @@ class Scene(PaperObjects):
         constraint matrices): in closed form for (cond_XP) (:meth:`_standard_constraint_gradients`),
         elsewhere by reverse mode (or the 2nr-column Jacobian when reverse mode cannot)."""
         def build():
-            if self.realization == "standard" and not isinstance(self, _LiftedScene):
+            if self.realization in ("standard", "metric") and not isinstance(self, _LiftedScene):
                 return self._standard_constraint_gradients()
             if REVERSE_GRADIENTS:
                 try:
@@ -1221,9 +1221,12 @@ class Scene(PaperObjects):
         """The gradients of the scalar constraints of (cond_XP) in closed form, in the order of
         :meth:`_constraint_gradients` (the upper triangle of XᵀX − I_r, then of XᵀP + PᵀX): with
         S_ij = E_ij + E_ji (2E_ii on the diagonal), the (i, j) entry of XᵀX has the X-gradient XS_ij and
-        no P-gradient, the (i, j) entry of XᵀP + PᵀX the X-gradient PS_ij and the P-gradient XS_ij."""
+        no P-gradient, the (i, j) entry of XᵀP + PᵀX the X-gradient PS_ij and the P-gradient XS_ij; for
+        (cond_XP2) (the metric realization, B = A⁻¹ symmetric), the (i, j) entry of XᵀBP + PᵀBX the
+        X-gradient BPS_ij and the P-gradient BXS_ij."""
         n, r = self.n, self.r
         X, P = self.X, self.P
+        BX, BP = (self.Ainv @ X, self.Ainv @ P) if self.realization == "metric" else (X, P)
         units = []
         for i in range(r):
             for j in range(i, r):
@@ -1232,7 +1235,7 @@ class Scene(PaperObjects):
                 S._a[j, i] = S._a[j, i] + self.const(1)
                 units.append(S)
         out = [(self._as_nr(X @ S), self.zeros(n, r, ("n", "r"))) for S in units]
-        out += [(self._as_nr(P @ S), self._as_nr(X @ S)) for S in units]
+        out += [(self._as_nr(BP @ S), self._as_nr(BX @ S)) for S in units]
         return out
 
     def _as_nr(self, g) -> Mat:
@@ -1496,31 +1499,37 @@ class Scene(PaperObjects):
         """dz/dt = {z, H} for the Dirac bracket (Dirac_bracket), z = entries of X, P:
         ż = Ω∇H − Σ_i w_i Ω∇F_i with w = C {F, H}_0 (in closed form where
         :meth:`_closed_form_multipliers` or :meth:`_metric_closed_form_flow` applies)."""
-        def build():
-            HX, HP = self.gradient(H)
-            closed = self._cached_for("closed", H, lambda: self._closed_form_multipliers(HX, HP))
-            if closed is not None:
-                Lam, Pi = closed
-                return Flow(HP - self.X @ Pi, -HX + self.X @ Lam + self.P @ Pi)
-            metric = self._metric_closed_form_flow(HX, HP)
-            if metric is not None:
-                return metric
-            Gs = self._constraint_gradients()
-            zX, zP = self._pair_omega(self.gradient(H))
-            FjH = [self._pair_dot(g, (zX, zP)) for g in Gs]
-            if "C" in self._cache:
-                w = [self._dot(Ci, FjH) for Ci in self._dirac_inverse()]
-            else:                                # one right-hand side: solve, do not invert
-                try:
-                    w = [row[0] for row in self._field.solve(self.constraint_bracket_matrix(), [[x] for x in FjH])]
-                except DegenerateError as exc:
-                    raise DegenerateError("the constraint bracket matrix {F_i, F_j}_0 is singular here") from exc
-            Xd, Pd = zX, zP
-            for wi, (gX, gP) in zip(w, Gs):      # Ω∇F_i = (gP, −gX)
-                Xd = Xd - gP * wi
-                Pd = Pd + gX * wi
-            return Flow(Xd, Pd)
-        return self._cached_for("dflow", H, build)
+        return self._cached_for("dflow", H, lambda: self._dirac_flow_of(H, *self.gradient(H)))
+
+    def _graph_dirac_flow(self, H: Function, HX: Mat, HP: Mat) -> Flow:
+        """The Dirac flow of H from the gradient (H_X, H_P) the graph computed (see
+        :mod:`stiefelsym.ir.derivative`), as :meth:`dirac_flow` makes it from its own."""
+        return self._cached_for("dflow", H, lambda: self._dirac_flow_of(H, HX, HP))
+
+    def _dirac_flow_of(self, H: Function, HX: Mat, HP: Mat) -> Flow:
+        """The body of :meth:`dirac_flow` for H's gradient (H_X, H_P)."""
+        closed = self._cached_for("closed", H, lambda: self._closed_form_multipliers(HX, HP))
+        if closed is not None:
+            Lam, Pi = closed
+            return Flow(HP - self.X @ Pi, -HX + self.X @ Lam + self.P @ Pi)
+        metric = self._metric_closed_form_flow(HX, HP)
+        if metric is not None:
+            return metric
+        Gs = self._constraint_gradients()
+        zX, zP = self._pair_omega((HX, HP))
+        FjH = [self._pair_dot(g, (zX, zP)) for g in Gs]
+        if "C" in self._cache:
+            w = [self._dot(Ci, FjH) for Ci in self._dirac_inverse()]
+        else:                                # one right-hand side: solve, do not invert
+            try:
+                w = [row[0] for row in self._field.solve(self.constraint_bracket_matrix(), [[x] for x in FjH])]
+            except DegenerateError as exc:
+                raise DegenerateError("the constraint bracket matrix {F_i, F_j}_0 is singular here") from exc
+        Xd, Pd = zX, zP
+        for wi, (gX, gP) in zip(w, Gs):      # Ω∇F_i = (gP, −gX)
+            Xd = Xd - gP * wi
+            Pd = Pd + gX * wi
+        return Flow(Xd, Pd)
 
     def _split(self, v: list[Scalar]) -> Flow:
         n, r = self.n, self.r
@@ -1597,9 +1606,13 @@ class Scene(PaperObjects):
         :meth:`_closed_form_multipliers`, decided without building the point (so parameters are
         drawn in the order the claim uses them); XᵀX = I_r is checked exactly when the flow is handed
         on (:meth:`_graph_flow`).  The magnetic systems' flows and brackets take the graph's gradients
-        on every coordinate scene (their multipliers stay the engine's)."""
-        from stiefelsym.ir.derivative import TWISTED
-        kinds = {"canonical_flow", TWISTED}
+        on every coordinate scene (their multipliers stay the engine's), and so do the derivatives and flows at
+        points of the caller's own (:mod:`stiefelsym.systems`); on the metric realization the Dirac flow takes
+        the graph's gradient of H (its multipliers the scene's: :meth:`_graph_dirac_flow`)."""
+        from stiefelsym.ir.derivative import GRADIENT_FLOW, SYSTEMS, TWISTED
+        kinds = {"canonical_flow", TWISTED, SYSTEMS}
+        if self.realization == "metric":
+            kinds.add(GRADIENT_FLOW)
         approx = self._approximates_point()
         if (CLOSED_FORM_MULTIPLIERS and self.realization == "standard" and self.chart in ("cayley", "equivariant")
                 and (self._field.exact or approx)

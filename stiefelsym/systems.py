@@ -21,7 +21,10 @@ constraint; of U, of the constraints, and of T at each basis vector) come from r
 matrix operations (:mod:`.reverse`): one evaluation of the function over reverse numbers, the
 point's variables being the leaves of the tape, and one backward sweep per scalar component.  Where
 reverse mode has no adjoint for an operation (it raises ``Unsupported``), one forward pass (dual
-numbers) per coordinate gives the same numbers.  The gradients are then stacked by rows, and the
+numbers) per coordinate gives the same numbers.  In a claim's graph on a coordinate scene these
+derivatives and gradients are graph nodes (:mod:`stiefelsym.ir.derivative` rewrites the steps into the
+``graph_*`` steps below, which take them), and the constraints of a pair of Stiefel points have their
+gradients in closed form.  The gradients are then stacked by rows, and the
 linear algebra is whole-matrix: the constraint bracket matrix is one product G_x G_pᵀ − G_p G_xᵀ,
 the multipliers one solve, the flow one product with the stacked gradients.
 
@@ -51,7 +54,7 @@ from typing import Any, Callable, Hashable, Mapping, Sequence
 import numpy as np
 
 from stiefelsym import scene as scene_module
-from stiefelsym.ir.trace import TraceScene, primitive
+from stiefelsym.ir.trace import PRIMITIVES, TraceScene, primitive
 from stiefelsym.backends.matrix import Mat, _coordinates, _refused, block, definite
 from stiefelsym.backends.reverse import Node, Rev, RevMat, Unsupported, gradient as rev_gradient, leaf as rev_leaf
 from stiefelsym.scene import double_point_of, HermitianComponents, ReverseScene, Scene, _LiftedScene
@@ -514,16 +517,22 @@ def euler_lagrange(s: Scene, T: Callable[[Scene, dict], Any], U: Callable[[Scene
         return _flat(constraints(t, {k: z[("q", k)] for k in names}))
 
     layout = _Layout(s, coords, position)
-    alg = layout.alg
-    N = len(layout.coords)
     K = _kinetic_matrix(s, T, velocity, layout)
     gradU = _jacobian(s, U, position, layout)                                      # 1 × N
     Ja = _jacobian(s, lambda t, q: _flat(constraints(t, q)), position, layout)    # m × N
-    m = Ja.shape[0]
     # D²g(q̇, q̇) = d/dε [Dg(q + εq̇)·q̇]
     along = {("q", k): velocity[k] for k in names}
     hess = _flat(derivative(s, lambda t, z: derivative(t, g, z, {("q", k): z[("v", k)] for k in names}),
                             point, along))
+    return _solve_euler_lagrange(layout, K, gradU, Ja, hess, position)
+
+
+def _solve_euler_lagrange(layout: _Layout, K: np.ndarray, gradU: np.ndarray, Ja: np.ndarray, hess: list,
+                          position: Point) -> tuple[dict[Hashable, Mat], list[Any]]:
+    """The solve of :func:`euler_lagrange` from K, ∇U, Dg and D²g(q̇, q̇) in the layout's coordinates."""
+    alg = layout.alg
+    N = len(layout.coords)
+    m = Ja.shape[0]
     rhs = np.empty((N, m + 1), dtype=object)
     rhs[:, :1] = (-gradU).T
     rhs[:, 1:] = Ja.T
@@ -586,6 +595,13 @@ def hamiltonian_flow(s: Scene, H: Callable[[Scene, dict], Any], constraints: Cal
     else:
         Jx = _jacobian(s, both, point, _Layout(s, positions, point))
         Jp = _jacobian(s, both, point, _Layout(s, momenta, point))
+    return _dirac_flow(xs, ps, Jx, Jp, point, pairs)
+
+
+def _dirac_flow(xs: _Layout, ps: _Layout, Jx: np.ndarray, Jp: np.ndarray, point: Point,
+                pairs: Sequence[tuple[Hashable, Hashable]]) -> tuple[dict[Hashable, Mat], list[Any]]:
+    """The flow of :func:`hamiltonian_flow` from the coordinates of the gradients (rows: H, then the
+    constraints; Jx along the positions' coordinates, Jp along the momenta's)."""
     alg = xs.alg
     m = Jx.shape[0] - 1
     hx, hp = alg.of(Jx[:1].copy()), alg.of(Jp[:1].copy())
@@ -638,21 +654,8 @@ def _closed_form_pairs_flow(s: Scene, H: Callable[[Scene, dict], Any], point: Po
     the Dirac flow of a single point, :meth:`Scene._closed_form_multipliers`).  The gradient of H
     is the reverse sweep of :func:`hamiltonian_flow`.  None where any condition fails (then the
     general solve of :func:`hamiltonian_flow`)."""
-    if type(s) is not Scene or not s.field.exact or not _reverse_applies(s):
+    if not _closed_form_applies(s, point, pairs):
         return None
-    names = [k for pair in pairs for k in pair]
-    if len(set(names)) != len(names) or set(names) != set(point):
-        return None
-    n, r = s.n, s.r
-    f = s.field
-    I = Mat.identity(r, f)
-    for x, p in pairs:
-        X, P = point[x], point[p]
-        if not (isinstance(X, Mat) and isinstance(P, Mat)) or X._shape() != (n, r) or P._shape() != (n, r):
-            return None
-        Xu = X._untyped()
-        if not (Xu.T @ Xu - I).is_zero():
-            return None
 
     def scalar_H(t, z):
         value = H(t, z)
@@ -663,14 +666,42 @@ def _closed_form_pairs_flow(s: Scene, H: Callable[[Scene, dict], Any], point: Po
         grads = _reverse_gradients(s, scalar_H, point, list(point))[0]
     except Unsupported:
         return None
+    return _closed_form_from_gradients(s, point, pairs, grads)
+
+
+def _closed_form_applies(s: Scene, point: Point, pairs: Sequence[tuple[Hashable, Hashable]]) -> bool:
+    """Whether the closed forms of :func:`_closed_form_pairs_flow` hold at the point (the conditions
+    on the scene and the point, XᵀX = I_r checked exactly)."""
+    if type(s) is not Scene or not s.field.exact or not _reverse_applies(s):
+        return False
+    names = [k for pair in pairs for k in pair]
+    if len(set(names)) != len(names) or set(names) != set(point):
+        return False
+    n, r = s.n, s.r
+    I = Mat.identity(r, s.field)
+    for x, p in pairs:
+        X, P = point[x], point[p]
+        if not (isinstance(X, Mat) and isinstance(P, Mat)) or X._shape() != (n, r) or P._shape() != (n, r):
+            return False
+        Xu = X._untyped()
+        if not (Xu.T @ Xu - I).is_zero():
+            return False
+    return True
+
+
+def _closed_form_from_gradients(s: Scene, point: Point, pairs: Sequence[tuple[Hashable, Hashable]],
+                                grads: Mapping[Hashable, Mat | None]) -> dict[Hashable, Mat]:
+    """The flow of :func:`_closed_form_pairs_flow` from the gradients of H (None: zero)."""
+    n, r = s.n, s.r
+    f = s.field
     half = s.const(Fraction(1, 2))
     sym = lambda M: (M + M.T) * half          # noqa: E731
     out: dict[Hashable, Mat] = {}
     for x, p in pairs:
         X, P = point[x]._untyped(), point[p]._untyped()
         zero = Mat.zeros(n, r, f)
-        Hx = grads[x]._untyped() if grads[x] is not None else zero
-        Hp = grads[p]._untyped() if grads[p] is not None else zero
+        Hx = grads[x]._untyped() if grads.get(x) is not None else zero
+        Hp = grads[p]._untyped() if grads.get(p) is not None else zero
         K = X.T @ P
         Pi = sym(X.T @ Hp)
         Lam = sym(X.T @ Hx - Hp.T @ P + Pi @ K - K @ Pi)
@@ -733,6 +764,131 @@ def complex_diagonal(M: Mat) -> list[tuple[Any, Any]]:
     """The diagonal entries (real part, imaginary part) of a realified complex square matrix."""
     m = M.shape[0] // 2
     return [(M[j, j], M[m + j, j]) for j in range(m)]
+
+# -- the engine steps of the transformed graphs (stiefelsym.ir.derivative) ---------------------------
+
+def _matrix_variable(M: Any, k: Hashable) -> None:
+    """Refuse a variable of a point that is not a matrix (the graph's derivatives and gradients at a point
+    take its variables as matrices)."""
+    if not isinstance(M, Mat):
+        raise TypeError(f"the variable {k!r} of a point must be a matrix here, not a {type(M).__name__}")
+
+
+def graph_tangent(s: Scene, point: Point, tangent: Mapping[Hashable, Mat], keys: tuple) -> dict[Hashable, Mat]:
+    """The components ``keys`` of a tangent vector at a point of the caller's own, checked as
+    :func:`derivative` checks them, each with the spaces of the point's matrix (0 where the tangent does
+    not move it): what the graph's derivative of a function at the point reads."""
+    if not isinstance(s, Scene):
+        raise TypeError(f"a derivative at a point on a {type(s).__name__} (not a coordinate scene)")
+    _coordinate_scene(s, "a derivative at a point of a phase space other than T*V")
+    extra = set(tangent) - set(point)
+    if extra:
+        raise KeyError(f"a tangent vector moves the variables of the point, not {sorted(map(str, extra))}")
+    for k, v in tangent.items():
+        if not isinstance(v, Mat) or v.shape != point[k].shape:
+            raise ValueError(f"the {k}-component of a tangent vector must be a matrix of the shape of {k}")
+    out = {}
+    for k in keys:
+        M = point[k]
+        _matrix_variable(M, k)
+        v = tangent.get(k)
+        if v is None:
+            v = Mat.zeros(*M._shape(), s.field, M.tags, s.tracker)
+        elif v.tags != M.tags or v._coords != M._coords:
+            v = v._retyped(v._field, M.tags, s.tracker)
+        v._coords = M._coords
+        out[k] = v
+    return out
+
+
+def _pairs_constraint_gradients(s: Scene, point: Point, pairs: Sequence[tuple[Hashable, Hashable]]
+                                ) -> list[dict[Hashable, Mat | None]]:
+    """The gradients of the constraints of :func:`stiefel_pairs_flow` in closed form, in their order
+    (for each pair, the upper triangle of xᵀx − I_r, then of xᵀp + pᵀx): with S_ij = E_ij + E_ji
+    (2E_ii on the diagonal), the (i, j) entry of xᵀx has the x-gradient xS_ij, the (i, j) entry of
+    xᵀp + pᵀx the x-gradient pS_ij and the p-gradient xS_ij (untyped, unrecorded: engine internals)."""
+    f = s.field
+    out: list[dict[Hashable, Mat | None]] = []
+    for x, p in pairs:
+        X, P = point[x]._untyped(), point[p]._untyped()
+        r = X._shape()[1]
+        if P._shape() != X._shape():
+            raise ValueError("the position and the momentum of a pair must have the same shape")
+        units = []
+        for i in range(r):
+            for j in range(i, r):
+                S = np.empty((r, r), dtype=object)
+                S.fill(f.const(0))
+                S[i, j] = S[i, j] + f.const(1)
+                S[j, i] = S[j, i] + f.const(1)
+                units.append(Mat._wrap(S, f))
+        out += [{x: X @ S} for S in units]
+        out += [{x: P @ S, p: X @ S} for S in units]
+    return out
+
+
+def graph_pairs_flow(s: Scene, H: Callable[[Scene, dict], Any], point: Point,
+                     pairs: Sequence[tuple[Hashable, Hashable]], value: Any, keys: tuple, *grads: Any
+                     ) -> dict[Hashable, Mat]:
+    """The flow of :func:`stiefel_pairs_flow` from the gradients of H the graph computed (``grads``, one
+    per key of ``keys``, None: zero; ``value``: H's value, evaluated as the reverse tape evaluated it):
+    the closed forms of the multipliers where they hold, else the constraints' gradients in closed form
+    and the solve of :func:`hamiltonian_flow`."""
+    if not isinstance(s, Scene):
+        raise TypeError(f"a flow of pairs of Stiefel points on a {type(s).__name__} (not a coordinate scene)")
+    for k, M in point.items():
+        _matrix_variable(M, k)
+    gH = dict(zip(keys, grads))
+    if _closed_form_applies(s, point, pairs):
+        return _closed_form_from_gradients(s, point, pairs, gH)
+    _coordinate_scene(s, "a Hamiltonian flow in coordinates")
+    positions = real_coordinates(s, [x for x, _ in pairs])
+    momenta = real_coordinates(s, [q for _, q in pairs])
+    xs = _Layout(s, positions, {x: point[x] for x, _ in pairs})
+    ps = _Layout(s, momenta, {q: point[q] for _, q in pairs})
+    if len(momenta) != len(positions):
+        raise ValueError("the positions and the momenta need as many coordinates")
+    rows = [gH] + _pairs_constraint_gradients(s, point, pairs)
+    return _dirac_flow(xs, ps, xs.project(rows), ps.project(rows), point, pairs)[0]
+
+
+def graph_euler_lagrange(s: Scene, position: Point, velocity: Point, coords: Coordinates, wrt: tuple,
+                         kinetic: Callable[[Scene, Point], tuple], potential: tuple,
+                         column: Callable[[Scene, Point], Any], hess: Any) -> tuple[dict[Hashable, Mat], list[Any]]:
+    """The accelerations and multipliers of :func:`euler_lagrange` from what the graph computed:
+    ``kinetic(s, v)``, the gradient of T at the velocity v (one value per variable of ``wrt``, then T's
+    value), taken at 0 and at each basis vector b_b of the coordinates (K b_b = ∇T(b_b) − ∇T(0)); the
+    gradient of U at the position (``potential``, likewise); ``column(s, u)``, the derivative of the
+    constraints at the position along the tangent vector u, taken along each basis vector (the columns
+    of Dg); and D²g(q̇, q̇) (``hess``).  The step's checks made as the step makes them."""
+    if not isinstance(s, Scene):
+        raise TypeError(f"Euler-Lagrange equations on a {type(s).__name__} (not a coordinate scene)")
+    _coordinate_scene(s, "the Euler-Lagrange equations in coordinates")
+    if set(velocity) != set(position):
+        raise KeyError("the velocity must have the variables of the position")
+    for k, M in list(position.items()) + list(velocity.items()):
+        _matrix_variable(M, k)
+    layout = _Layout(s, coords, position)
+    n = len(wrt)
+    zero_v = {k: M - M for k, M in velocity.items()}
+    g0 = dict(zip(wrt, kinetic(s, zero_v)[:n]))
+    cols = []
+    for name, B in layout.coords:
+        g = dict(zip(wrt, kinetic(s, {k: (zero_v[k] + B if k == name else zero_v[k]) for k in velocity})[:n]))
+        cols.append({k: _difference(g[k], g0[k]) for k in wrt})
+    K = layout.project(cols).T.copy()                  # column b: ∇T(b_b) − ∇T(0) = K b_b
+    gradU = layout.project([dict(zip(wrt, potential[:n]))])
+    flat = [_flat(column(s, {name: B})) for name, B in layout.coords]
+    Ja = np.empty((len(flat[0]) if flat else 0, len(flat)), dtype=object)
+    for j, col in enumerate(flat):
+        for i, x in enumerate(col):
+            Ja[i, j] = x
+    return _solve_euler_lagrange(layout, K, gradU, Ja, _flat(hess), position)
+
+
+PRIMITIVES[f"{__name__}.derivative:tangent"] = graph_tangent
+PRIMITIVES[f"{__name__}.euler_lagrange:graph"] = graph_euler_lagrange
+PRIMITIVES[f"{__name__}.stiefel_pairs_flow:graph"] = graph_pairs_flow
 
 # the functions that need the engine's scene (coordinates, derivatives at points of other phase
 # spaces) are single steps of a claim's graph; the points and the complex helpers are traced with it

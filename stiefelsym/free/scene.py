@@ -1429,9 +1429,10 @@ class FreeScene(PaperObjects):
     def _graph_flows(self) -> frozenset:
         """What the graph may compute of the flows and brackets here (see :mod:`stiefelsym.ir.derivative`):
         the bracket, as the derivative along the Dirac flow, which the scene solves (and the magnetic
-        bracket of :mod:`stiefelsym.twisted`, along the scene's own magnetic flow)."""
-        from stiefelsym.ir.derivative import BRACKET_ALONG_FLOW, TWISTED_ALONG_FLOW
-        return frozenset({BRACKET_ALONG_FLOW, TWISTED_ALONG_FLOW})
+        bracket of :mod:`stiefelsym.twisted`, along the scene's own magnetic flow), and the derivative at its own
+        point of :mod:`stiefelsym.systems`, along the tangent vector."""
+        from stiefelsym.ir.derivative import BRACKET_ALONG_FLOW, SYSTEMS_OWN, TWISTED_ALONG_FLOW
+        return frozenset({BRACKET_ALONG_FLOW, TWISTED_ALONG_FLOW, SYSTEMS_OWN})
 
     def _share(self, base: "FreeScene") -> None:
         """What a scene made from ``base`` (its tangent scene, a function's scene) shares with it: the

@@ -53,6 +53,16 @@ handed on by one engine step, :func:`graph_flow`, as the scene's method hands it
 metric realization, the free algebra) and for a Hamiltonian the reverse sweep refuses, the call
 node stays.
 
+The engine steps of :mod:`stiefelsym.systems`, whose functions take a scene and a point of the
+caller's own (a dict of matrices), are rewritten on a coordinate scene (:data:`SYSTEMS`): the derivative
+at a point by the tangent map with the point's variables z[k] moving (:class:`_PointDerivative`), the
+gradients of a function of the point by the backward sweep with z[k] as its leaves
+(:class:`_PointGradient`, one adjoint per key), the flow of pairs of Stiefel points from those gradients
+(:class:`_PairsFlow`), and the Euler–Lagrange equations from a gradient and a derivative made functions
+of the new graph and a second derivative by the second-order tangent map (:class:`_EulerLagrange`,
+:class:`_PointSecond`).  On the dimension-free scene the derivative at its own point is the tangent map
+along the tangent vector (:data:`SYSTEMS_OWN`).
+
 The digest of a claim stays the digest of its graph as traced (what
 results.json records and ``stiefelsym check`` re-traces); the transformed graph
 is derived from it, once per graph, and is what the methods evaluate.
@@ -152,6 +162,7 @@ def _transform(g: Graph, flows: frozenset = frozenset()) -> tuple[Graph, list]:
     deps = _deps(g)
     new = Graph()
     new.refusals, new.fns, new.sizes = list(g.refusals), g.fns, g.sizes
+    new.cache["flows"] = flows
     remap: dict[int, Ref] = {}
 
     def m(a: Any) -> Any:
@@ -169,7 +180,8 @@ def _transform(g: Graph, flows: frozenset = frozenset()) -> tuple[Graph, list]:
     if len(g.index) == len(g.ops):
         start = next((i for i, (op, a) in enumerate(zip(g.ops, g.args))
                       if (op == "call" and (a[1] in _PASSES or a[1] in _FLOW_PASSES))
-                      or (op == "prim" and a[0].qualname in _TWISTED_STEPS)), len(g.ops))
+                      or (op == "prim" and (a[0].qualname in _TWISTED_STEPS or a[0].qualname in _SYSTEMS_STEPS))),
+                     len(g.ops))
         new.ops, new.args = g.ops[:start], g.args[:start]
         new.index = dict(itertools.islice(g.index.items(), start))
         remap.update((i, _ref(i)) for i in range(start))
@@ -183,6 +195,8 @@ def _transform(g: Graph, flows: frozenset = frozenset()) -> tuple[Graph, list]:
                 rewrite = _FLOW_PASSES[a[1]]
             elif a[1] == "bracket" and BRACKET_ALONG_FLOW in flows:
                 rewrite = _BracketAlongFlow
+            elif a[1] == "dirac_flow" and GRADIENT_FLOW in flows:
+                rewrite = _GradientFlow
             else:
                 report.append((i, a[1], "the scene's own multipliers here (another realization, a chart or a "
                                         "field without their closed forms, or the free algebra's solve)"))
@@ -193,6 +207,13 @@ def _transform(g: Graph, flows: frozenset = frozenset()) -> tuple[Graph, list]:
                 rewrite = _TwistedAlongFlow
             else:
                 report.append((i, a[0].qualname, "the scene's own gradients (not a coordinate scene)"))
+        elif op == "prim" and a[0].qualname in _SYSTEMS_STEPS:
+            if SYSTEMS in flows:
+                rewrite = _SYSTEMS_STEPS[a[0].qualname]
+            elif SYSTEMS_OWN in flows and a[0].qualname == "stiefelsym.systems.derivative":
+                rewrite = _OwnPointDerivative
+            else:
+                report.append((i, a[0].qualname, "the scene's own derivatives (not a coordinate scene)"))
         if rewrite is not None:
             try:
                 remap[i] = rewrite(g, deps, new, remap, i).build()
@@ -243,7 +264,7 @@ class _Derivative:
             f, flow = args
         else:
             flow = None                     # made by :meth:`make_flow` when the derivative is built
-        if type(scene) is not Ref or g.ops[scene.i] != "scene" or g.args[scene.i] != (0,):
+        if not _claim_scene(g, scene, new):
             raise Unsupported(f"{_WHAT.get(name, 'a derivative')} on a scene other than the claim's (inside a "
                               "function of the scene)")
         if type(f) is not Ref or g.ops[f.i] != "fn" or (flow is not None and type(flow) is not Ref):
@@ -360,9 +381,9 @@ class _Derivative:
         # the flow's components, read (and the flow checked) by one engine step
         keys = tuple(sorted(self.read))
         flow = self.make_flow() if self.flow is None else self.remap[self.flow.i]
-        self._tangent = self.add("prim", (Named(TANGENT), self.S, flow, keys))
+        self._tangent = self.tangent_step(flow, keys)
         for j in todo:
-            self.P[j] = self.S if g.ops[j] == "scene" else self.add(g.ops[j], self.primal(g.args[j]))
+            self.P[j] = self.primal_node(j)
             self.D[j] = self.emit(j, self.plan[j])
         b = self.body.i
         d = self.D.get(b) if k in self.deps[b] else None
@@ -373,6 +394,15 @@ class _Derivative:
 
     def make_flow(self) -> Ref:
         raise AssertionError("a derivative with no flow")
+
+    def tangent_step(self, flow: Ref, keys: tuple) -> Ref:
+        """The engine step that reads (and checks) the flow's components ``keys``."""
+        return self.add("prim", (Named(TANGENT), self.S, flow, keys))
+
+    def primal_node(self, j: int) -> Ref:
+        """The value of the body's node j in the new graph (the function's scene is the call's)."""
+        g = self.g
+        return self.S if g.ops[j] == "scene" else self.add(g.ops[j], self.primal(g.args[j]))
 
     def rule(self, j: int) -> Any:
         """The derivative of node j as a recipe over the derivatives of its arguments (D) and their
@@ -585,6 +615,24 @@ class _Derivative:
         raise AssertionError(f"no rule for {op}")
 
 
+#: the engine step that makes the claim's problem at another point of T*V (a scene of its own)
+AT_POINT = "stiefelsym.twisted.at_point"
+
+
+def _claim_scene(g: Graph, scene: Any, new: Graph) -> bool:
+    """Whether a derivative's, gradient's or flow's scene is the claim's: its own scene, or, on a coordinate
+    scene (the pass was given ``TWISTED``), the claim's problem at another point of T*V
+    (``twisted.at_point(s, X, P)``, a copy of the scene with that point)."""
+    if type(scene) is not Ref:
+        return False
+    if g.ops[scene.i] == "scene":
+        return g.args[scene.i] == (0,)
+    a = g.args[scene.i]
+    return (g.ops[scene.i] == "prim" and type(a[0]) is Named and a[0].qualname == AT_POINT
+            and TWISTED in new.cache.get("flows", ()) and len(a) == 4
+            and type(a[1]) is Ref and g.ops[a[1].i] == "scene" and g.args[a[1].i] == (0,))
+
+
 def _own_operator(g: Graph, a: tuple, k: int) -> bool:
     """Whether an ``apply`` node's arguments ``a`` apply the symmetric operator of the function's own
     scene (``s.sym_operator(name)``, k the function's number) to one matrix."""
@@ -732,7 +780,7 @@ class _Gradient(_Derivative):
             if kw or len(args) != 1:
                 raise Unsupported(f"{what} with further arguments")
             f = args[0]
-        if type(scene) is not Ref or g.ops[scene.i] != "scene" or g.args[scene.i] != (0,):
+        if not _claim_scene(g, scene, new):
             raise Unsupported(f"{what} on a scene other than the claim's (inside a function of the scene)")
         if type(f) is not Ref or g.ops[f.i] != "fn":
             raise Unsupported(f"{what} of something that is not a traced function")
@@ -1347,3 +1395,501 @@ class _TwistedAlongFlow(_Derivative):
 _PASSES = {"d": _Derivative, "gradient": _Gradient, "jacobian": _Jacobian}
 #: the flows and brackets it rewrites where the scene lets the graph compute them (:func:`scene_flows`)
 _FLOW_PASSES = {"dirac_flow": _Flow, "multiplier_flow": _Flow, "canonical_flow": _Flow, "bracket": _Bracket}
+
+
+# ---------------------------------------------------------------------------------------------
+# derivatives and gradients at points of the caller's own (stiefelsym.systems): functions of a scene
+# and of a point, a dict of matrices, whose variables are the point's entries z[k]
+
+#: what a coordinate scene says (``_graph_flows``) when the engine steps of :mod:`stiefelsym.systems`
+#: may take the graph's derivatives and gradients at points of the caller's own
+SYSTEMS = "derivatives and flows at points of the caller's own from the graph"
+#: the engine steps of the transformed graphs (registered by :mod:`stiefelsym.systems`)
+POINT_TANGENT = "stiefelsym.systems.derivative:tangent"
+PAIRS_FLOW = "stiefelsym.systems.stiefel_pairs_flow:graph"
+
+
+def _point_function(g: Graph, f: Any, what: str) -> tuple[int, Any, int | None]:
+    """(k, body, the node of its point) of a traced function of a scene and of a point."""
+    if type(f) is not Ref or g.ops[f.i] != "fn":
+        raise Unsupported(f"{what} of something that is not a traced function")
+    k, arity, body = g.args[f.i]
+    if arity != 2:
+        raise Unsupported(f"{what} of a function that is not of a scene and a point")
+    param = g.index.get(("param", (k, 1)))
+    if param is None:
+        param = next((j for j, (op, a) in enumerate(zip(g.ops, g.args))
+                      if op == "param" and a[0] == k and a[1] == 1), None)
+    return k, body, param
+
+
+def _positional(g: Graph, a: tuple, count: int, what: str) -> tuple:
+    """The positional arguments of an engine step (refused: keyword arguments, another count)."""
+    if len(a) != count or any(type(x) is Ref and g.ops[x.i] == "kw" for x in a):
+        raise Unsupported(f"{what} with other arguments")
+    return a
+
+
+#: what the dimension-free scene says (``_graph_flows``) when ``systems.derivative`` at its own point (X, P, Y, Q,
+#: its letters) is its derivative along the tangent vector: graph nodes along the scene's own tangent
+SYSTEMS_OWN = "derivatives at the scene's own point along a tangent vector"
+
+
+#: engine steps linear in their one argument (their derivative: the step of the argument's derivative)
+_LINEAR_STEPS = frozenset({"stiefelsym.systems.hermitian_entries"})
+
+
+class _PointDerivative(_Derivative):
+    """``systems.derivative(s, F, point, tangent)``: the derivative of F(t, z) at z = point along the
+    tangent vector (a dict of matrices, a component not given: 0) by the tangent map of
+    :class:`_Derivative`, the point's variables z[k] moving with the tangent's components and everything
+    of the scene constant (the scene's X, P, Y, Q included: the point is the caller's).  The components
+    are read, and the tangent checked as the step checks it, by one engine step (``POINT_TANGENT``)."""
+
+    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, i: int) -> None:
+        self.g, self.deps, self.new, self.remap = g, deps, new, remap
+        _, scene, f, point, tangent = _positional(g, g.args[i], 5, "a derivative at a point")
+        if type(scene) is not Ref or g.ops[scene.i] != "scene" or g.args[scene.i] != (0,):
+            raise Unsupported("a derivative at a point on a scene other than the claim's (inside a function of the "
+                              "scene)")
+        self.k, self.body, self.param = _point_function(g, f, "a derivative at a point")
+        if type(point) is not Ref or type(tangent) is not Ref:
+            raise Unsupported("a derivative at a point that is not a value of the graph")
+        self.S, self.point, self.flow = remap[scene.i], remap[point.i], tangent
+        self.keys = frozenset(g.args[tangent.i][0]) if g.ops[tangent.i] == "dict" else None
+        self.P, self.D, self.read, self._tangent = {}, {}, set(), None
+
+    def rule(self, j: int) -> Any:
+        g = self.g
+        op, a = g.ops[j], g.args[j]
+        if op == "param":
+            if j != self.param:
+                raise Unsupported("a function that reads another function's point")
+            return ("param",)
+        if op == "item" and type(a[0]) is Ref and a[0].i == self.param:
+            return self.component(a[1])
+        if op == "prim" and type(a[0]) is Named and a[0].qualname in _LINEAR_STEPS and len(a) == 2:
+            return ("prim",)
+        if op == "attr" and type(a[0]) is Ref and g.ops[a[0].i] == "scene" and a[1] in MOVED + ("Phi", "Psi"):
+            if g.args[a[0].i] != (self.k,):
+                raise Unsupported("a function that reads another function's scene")
+            return None                     # the scene's own point does not move with the caller's
+        return super().rule(j)
+
+    def tangent_step(self, flow: Ref, keys: tuple) -> Ref:
+        return self.add("prim", (Named(POINT_TANGENT), self.S, self.point, flow, keys))
+
+    def emit(self, j: int, plan: Any) -> Any:
+        if plan == ("prim",):               # a linear engine step (the components of a Hermitian matrix)
+            x = self.dref(self.g.args[j][1])
+            return None if x is None else self.add("prim", (self.g.args[j][0], x))
+        return super().emit(j, plan)
+
+    def primal_node(self, j: int) -> Ref:
+        if j == self.param:
+            return self.point
+        return super().primal_node(j)
+
+
+class _PointGradient(_Gradient):
+    """The gradients of a scalar function H(t, z) of a scene and of a point with respect to the point's
+    variables z[k] (``wrt``), by the backward sweep of :class:`_Gradient` with the variables z[k] as its
+    leaves (the scene's X, P constants here).  :meth:`sweep` gives {k: the adjoint of z[k] or None}."""
+
+    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, scene: Any, f: Any, point: Any,
+                 what: str, wrt: frozenset | None = None) -> None:
+        self.g, self.deps, self.new, self.remap = g, deps, new, remap
+        if type(scene) is not Ref or g.ops[scene.i] != "scene" or g.args[scene.i] != (0,):
+            raise Unsupported(f"{what} on a scene other than the claim's (inside a function of the scene)")
+        self.k, self.body, self.param = _point_function(g, f, what)
+        if type(self.body) is not Ref:
+            raise Unsupported(f"{what} of a function whose value is a constant")
+        if type(point) is not Ref:
+            raise Unsupported(f"{what} at a point that is not a value of the graph")
+        self.S, self.point, self.wrt = remap[scene.i], point, wrt      # (the point: a node of the new graph)
+        self.P = {}
+
+    def variable(self, j: int) -> bool:
+        """Whether the body's node j is a variable of the gradient, z[k] for k in ``wrt``."""
+        g = self.g
+        a = g.args[j]
+        return (g.ops[j] == "item" and type(a[0]) is Ref and a[0].i == self.param
+                and (self.wrt is None or a[1] in self.wrt))
+
+    def _kind_of(self, j: int) -> str:
+        g = self.g
+        if j == self.param:
+            return _L
+        a = g.args[j]
+        if g.ops[j] == "item" and type(a[0]) is Ref and a[0].i == self.param:
+            return _M
+        return super()._kind_of(j)
+
+    def check(self, j: int) -> None:
+        g = self.g
+        a = g.args[j]
+        if j == self.param or (g.ops[j] == "item" and type(a[0]) is Ref and a[0].i == self.param):
+            return
+        if g.ops[j] == "param":
+            raise Unsupported("a function that reads another function's point")
+        if g.ops[j] == "scene" and a != (self.k,):
+            raise Unsupported("a function that reads another function's scene")
+        if g.ops[j] == "call" and a[1] == "conj" and not a[3] and len(a[2]) == 1:
+            return
+        if g.ops[j] == "call" and a[1] == "realify" and not a[3] and not any(self.moving(x) for x in a[2]):
+            return                          # a constant realified matrix
+        super().check(j)
+
+    def primal_node(self, j: int) -> Ref:
+        if j == self.param:
+            return self.point
+        return _Derivative.primal_node(self, j)
+
+    def sweep(self) -> tuple[dict, Ref]:
+        """({key: adjoint or None}, H's value): the body's values written, then the adjoints."""
+        g = self.g
+        todo = self.body_nodes()
+        self.kinds, self.moves_set = {}, set()
+        for j in todo:
+            if self.variable(j) or any(r in self.moves_set for r in g.refs(j)):
+                self.moves_set.add(j)
+        for j in todo:
+            if g.ops[j] != "scene":
+                self.kinds[j] = self._kind_of(j)
+                self.check(j)
+        if self.kinds.get(self.body.i, _S) != _S:
+            raise Unsupported("a gradient of a function whose value is not a number")
+        for j in todo:
+            self.P[j] = self.primal_node(j)
+        adj: dict[int, tuple[list, list]] = {}
+        grads: dict[Any, list] = {}
+        if self.body.i in self.moves_set:
+            adj[self.body.i] = ([1], [])
+        for j in reversed(todo):
+            if j not in adj or g.ops[j] == "scene":
+                continue
+            terms, ident = adj.pop(j)
+            self.propagate(j, terms, ident, adj, grads)
+        value = self.P[self.body.i] if self.body.i in self.P else self.remap[self.body.i]
+        return {key: self.mat_sum(ts) for key, ts in grads.items()}, value
+
+    def propagate(self, j: int, terms: list, ident: list, adj: dict, grads: dict) -> None:
+        g = self.g
+        a = g.args[j]
+        if g.ops[j] == "call" and a[1] == "conj":         # conj M = JMJ, J = diag(I, −I): its own adjoint
+            M = self.mat_sum(terms)
+            c = self.scalar_sum(ident) if ident else 0
+            has_c = type(c) is Ref or c != 0
+            if M is not None or has_c:
+                self.send(adj, a[2][0], [self.add("call", (self.S, "conj", (self.full(j, M, c, has_c),), ()))])
+            return
+        if self.variable(j):
+            M = self.mat_sum(terms)
+            c = self.scalar_sum(ident) if ident else 0
+            has_c = type(c) is Ref or c != 0
+            if M is None and not has_c:
+                return
+            grads.setdefault(self.g.args[j][1], []).append(self.full(j, M, c, has_c))
+            return
+        super().propagate(j, terms, ident, adj, grads)
+
+
+class _PairsFlow:
+    """``systems.stiefel_pairs_flow(s, H, point, pairs)`` on a coordinate scene: the gradients of H with
+    respect to the point's variables by the backward sweep of :class:`_PointGradient`, handed with H's
+    value to one engine step (``PAIRS_FLOW``) that makes the flow from them as the step made it from its
+    reverse tape (the closed forms of the multipliers where they hold, else the constraint gradients of
+    (cond_XP) in closed form and the solve of the Dirac multipliers)."""
+
+    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, i: int) -> None:
+        _, scene, H, point, pairs = _positional(g, g.args[i], 5, "a flow of pairs of Stiefel points")
+        self.new, self.remap = new, remap
+        if type(point) is not Ref:
+            raise Unsupported("a flow of pairs of Stiefel points at a point that is not a value of the graph")
+        self.grad = _PointGradient(g, deps, new, remap, scene, H, remap[point.i], "a flow of pairs of Stiefel points")
+        self.H, self.point, self.pairs = H, point, pairs
+
+    def build(self) -> Ref:
+        grads, value = self.grad.sweep()
+        m = self.remap
+        keys = tuple(sorted(grads, key=str))
+        parts = tuple(grads[key] for key in keys)
+        pairs = m[self.pairs.i] if type(self.pairs) is Ref else self.pairs
+        return self.new.add("prim", (Named(PAIRS_FLOW), self.grad.S, m[self.H.i], m[self.point.i], pairs, value,
+                                     keys) + parts)
+
+
+#: the engine steps of :mod:`stiefelsym.systems` the pass rewrites on a scene that says ``SYSTEMS``
+_SYSTEMS_STEPS = {"stiefelsym.systems.derivative": _PointDerivative,
+                  "stiefelsym.systems.stiefel_pairs_flow": _PairsFlow}
+
+EULER_LAGRANGE = "stiefelsym.systems.euler_lagrange:graph"
+
+
+class _PointSecond(_PointDerivative):
+    """D²F(v, v) at z = point, F a function of a scene and of a point: the second derivative of
+    F(point + εv) at ε = 0, by the second-order tangent map (linear operations act on both orders;
+    d²(ab) = d²a·b + 2·da·db + a·d²b for matrix and scalar products; z[k] moves with v[k], its second
+    derivative 0; everything of the scene constant).  ``point`` and ``tangent``: nodes of the new graph."""
+
+    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, scene: Any, f: Any, point: Ref,
+                 tangent: Ref, what: str) -> None:
+        self.g, self.deps, self.new, self.remap = g, deps, new, remap
+        if type(scene) is not Ref or g.ops[scene.i] != "scene" or g.args[scene.i] != (0,):
+            raise Unsupported(f"{what} on a scene other than the claim's (inside a function of the scene)")
+        self.k, self.body, self.param = _point_function(g, f, what)
+        if type(self.body) is not Ref:
+            raise Unsupported(f"{what} of a function whose value is a constant")
+        self.S, self.point, self.flow, self.keys = remap[scene.i], point, None, None
+        self._v = tangent
+        self.P, self.D, self.read, self._tangent = {}, {}, set(), None
+
+    def make_flow(self) -> Ref:
+        return self._v
+
+    _LINEAR = frozenset({"add", "sub", "neg", "T", "trace", "entry", "list", "tuple"})
+
+    def rule(self, j: int) -> Any:
+        g = self.g
+        op, a = g.ops[j], g.args[j]
+        plan = super().rule(j)
+        if plan is None or plan in (("scene",), ("param",), ("prim",)) or plan[0] == "component":
+            return plan
+        if op in self._LINEAR or op in ("matmul", "mul"):
+            return plan
+        if op == "item" and type(a[0]) is Ref and g.ops[a[0].i] in ("list", "tuple", "dict"):
+            return plan
+        if op == "div" and not self.moves(a[1]):
+            return plan
+        if op == "call" and a[1] in ("tr", "conj", "realify"):
+            return plan
+        raise Unsupported(f"a {op if op != 'call' else 's.' + a[1]} in a second derivative")
+
+    def build(self) -> Ref:
+        g = self.g
+        todo = self.body_nodes()
+        self.plan = {}
+        for j in todo:
+            plan = self.rule(j)
+            if type(plan) is tuple and plan[0] == g.ops[j] != "scene" and not any(self.moves(Ref(x)) for x in g.refs(j)):
+                plan = None
+            self.plan[j] = plan
+        keys = tuple(sorted(self.read))
+        self._tangent = self.tangent_step(self.make_flow(), keys)
+        self.D2: dict[int, Any] = {}
+        for j in todo:
+            self.P[j] = self.primal_node(j)
+            self.D[j] = self.emit(j, self.plan[j])
+            self.D2[j] = self.second(j, self.plan[j])
+        b = self.body.i
+        d2 = self.D2.get(b) if self.k in self.deps[b] else None
+        value = self.filled(d2, self.body)
+        return self.add("item", (self.add("tuple", (self._tangent, value)), 1))
+
+    def filled(self, d: Any, j: Any) -> Ref:
+        """A derivative as a node, a zero (of j's shape) where it is 0."""
+        if d is None:
+            if type(j) is Ref and self.g.ops[j.i] in ("list", "tuple"):
+                return self.add(self.g.ops[j.i], tuple(self.filled(None, x) for x in self.g.args[j.i]))
+            if type(j) is Ref and self.g.ops[j.i] == "prim":
+                return self.add("prim", (self.g.args[j.i][0], self.filled(None, self.g.args[j.i][1])))
+            return self.zero(j)
+        return d
+
+    def d2(self, a: Any) -> Any:
+        if type(a) is not Ref or self.k not in self.deps[a.i]:
+            return None
+        return self.D2.get(a.i)
+
+    def second(self, j: int, plan: Any) -> Any:
+        """The second derivative of node j (None: 0)."""
+        if plan is None or plan in (("scene",), ("param",)) or plan[0] == "component":
+            return None
+        g, add, p = self.g, self.add, self.primal
+        op, a = g.ops[j], g.args[j]
+        if plan == ("prim",):
+            x = self.d2(a[1])
+            return None if x is None else add("prim", (a[0], x))
+        if op in ("add", "sub"):
+            return self.sum(self.d2(a[0]), self.d2(a[1]), op)
+        if op in ("neg", "T", "trace"):
+            x = self.d2(a[0])
+            return None if x is None else add(op, (x,))
+        if op == "entry":
+            x = self.d2(a[0])
+            return None if x is None else add("entry", (x,) + tuple(a[1:]))
+        if op in ("list", "tuple"):
+            parts = [self.d2(x) for x in a]
+            if all(x is None for x in parts):
+                return None
+            return add(op, tuple(self.filled(x, e) for x, e in zip(parts, a)))
+        if op == "item":
+            base, key = a
+            bop, ba = g.ops[base.i], g.args[base.i]
+            if bop == "dict":
+                return self.d2(ba[1][ba[0].index(key)]) if key in ba[0] else None
+            return self.d2(ba[key])
+        if op == "div":
+            x = self.d2(a[0])
+            return None if x is None else add("div", (x, p(a[1])))
+        if op in ("matmul", "mul"):             # d²(ab) = d²a·b + 2·da·db + a·d²b
+            x1, y1 = self.dref(a[0]), self.dref(a[1])
+            x2, y2 = self.d2(a[0]), self.d2(a[1])
+            left = None if x2 is None else add(op, (x2, p(a[1])))
+            mid = None if x1 is None or y1 is None else add("mul", (2, add(op, (x1, y1))))
+            right = None if y2 is None else add(op, (p(a[0]), y2))
+            return self.sum(self.sum(left, mid), right)
+        if op == "call" and a[1] in ("tr", "conj"):
+            x = self.d2(a[2][0])
+            return None if x is None else add("call", (self.S, a[1], (x,), ()))
+        if op == "call" and a[1] == "realify":
+            x, y = self.d2(a[2][0]), self.d2(a[2][1])
+            if x is None and y is None:
+                return None
+            return add("call", (self.S, "realify", (self.filled(x, a[2][0]), self.filled(y, a[2][1])), ()))
+        raise AssertionError(f"no second-order rule for {op}")
+
+
+class _EulerLagrange:
+    """``systems.euler_lagrange(s, T, U, constraints, position, velocity, coords)`` on a coordinate scene:
+    the gradients and derivatives the step took from its reverse tape and dual numbers as graph nodes,
+    handed to one engine step (``EULER_LAGRANGE``) that solves for the accelerations and the multipliers
+    as the step did: ∇T as a function of the velocity (a function of the new graph, the backward sweep of
+    :class:`_PointGradient` over its point; the step takes it at 0 and at each basis vector b_b of the
+    coordinates, K b_b = ∇T(b_b) − ∇T(0)), ∇U at the position, the derivative of the constraints along a
+    tangent vector (a function of the new graph, :class:`_PointAlong`; the step takes it along each
+    basis vector: the columns of Dg) and D²g(q̇, q̇) (:class:`_PointSecond`).  The number of coordinates
+    is the step's (so a graph traced with symbolic sizes is rewritten too)."""
+
+    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, i: int) -> None:
+        _, scene, T, U, cons, position, velocity, coords = _positional(g, g.args[i], 8, "Euler-Lagrange equations")
+        if type(coords) is not Ref or g.ops[coords.i] != "prim" or not g.args[coords.i][0].qualname.endswith(
+                ("systems.real_coordinates", "systems.complex_coordinates")):
+            raise Unsupported("Euler-Lagrange equations in coordinates other than the unit matrices of the step's own")
+        names = g.args[coords.i][2] if len(g.args[coords.i]) == 3 else None
+        if type(names) is not Ref or g.ops[names.i] not in ("list", "tuple") or any(
+                type(x) is Ref for x in g.args[names.i]):
+            raise Unsupported("Euler-Lagrange equations in coordinates of variables the graph does not name")
+        if any(type(x) is not Ref for x in (position, velocity)):
+            raise Unsupported("Euler-Lagrange equations at a point that is not a value of the graph")
+        self.new, self.wrt = new, list(dict.fromkeys(g.args[names.i]))
+        self.S = remap[scene.i]
+        self.args = (remap[position.i], remap[velocity.i], remap[coords.i])
+        add = new.add
+        w = frozenset(self.wrt)
+        new.fns += 1
+        self.kK = new.fns
+        v = add("param", (self.kK, 1, self.args[1]))
+        self.kinetic = _PointGradient(g, deps, new, remap, scene, T, v, "the kinetic energy's gradient", w)
+        self.potential = _PointGradient(g, deps, new, remap, scene, U, self.args[0], "the potential's gradient", w)
+        new.fns += 1
+        self.kJ = new.fns
+        u = add("param", (self.kJ, 1, self.args[0]))
+        self.column = _PointAlong(g, deps, new, remap, scene, cons, self.args[0], u)
+        self.hess = _PointSecond(g, deps, new, remap, scene, cons, self.args[0], self.args[1],
+                                 "the constraints' second derivative")
+
+    def build(self) -> Ref:
+        add = self.new.add
+        parts = []
+        for gr in (self.kinetic, self.potential):
+            grads, value = gr.sweep()
+            parts.append(add("tuple", tuple(grads.get(k) for k in self.wrt) + (value,)))
+        fK = add("fn", (self.kK, 2, parts[0]))
+        fJ = add("fn", (self.kJ, 2, self.column.build()))
+        hess = self.hess.build()
+        return add("prim", (Named(EULER_LAGRANGE), self.S) + self.args + (tuple(self.wrt), fK, parts[1], fJ, hess))
+
+
+class _PointAlong(_PointDerivative):
+    """The derivative of F(t, z) at z = point along a tangent vector made by an engine step (nodes of the
+    new graph): a column of a Jacobian at a point of the caller's own."""
+
+    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, scene: Any, f: Any, point: Ref,
+                 tangent: Ref) -> None:
+        self.g, self.deps, self.new, self.remap = g, deps, new, remap
+        if type(scene) is not Ref or g.ops[scene.i] != "scene" or g.args[scene.i] != (0,):
+            raise Unsupported("a derivative at a point on a scene other than the claim's")
+        self.k, self.body, self.param = _point_function(g, f, "a derivative at a point")
+        self.S, self.point, self.flow, self.keys, self._v = remap[scene.i], point, None, None, tangent
+        self.P, self.D, self.read, self._tangent = {}, {}, set(), None
+
+    def make_flow(self) -> Ref:
+        return self._v
+
+
+_SYSTEMS_STEPS["stiefelsym.systems.euler_lagrange"] = _EulerLagrange
+
+
+class _OwnPointDerivative(_PointDerivative):
+    """``systems.derivative(s, F, point, tangent)`` on the dimension-free scene at its own point (a dict of
+    its letters X, P, Y, Q under their own names, as the graph shows it): the derivative of
+    t ↦ F(t, {k: t.k}) along the tangent, as the scene computes it — the tangent map of :class:`_Derivative`
+    with z[k] and the scene's letter k moving alike, the components read (and the tangent checked) by the
+    scene's own step (:func:`tangent_vector`).  Any other point (the double or the complex point, which
+    the scene differentiates its own way) keeps the step."""
+
+    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, i: int) -> None:
+        super().__init__(g, deps, new, remap, i)
+        point = g.args[i][3]
+        ok = g.ops[point.i] == "dict"
+        if ok:
+            keys, vals = g.args[point.i]
+            ok = bool(keys) and all(
+                k in ("X", "P", "Y", "Q") and type(v) is Ref and g.ops[v.i] == "attr" and g.args[v.i][1] == k
+                and type(g.args[v.i][0]) is Ref and g.ops[g.args[v.i][0].i] == "scene" and g.args[g.args[v.i][0].i] == (0,)
+                for k, v in zip(keys, vals))
+        if not ok:
+            raise Unsupported("a derivative at a point other than the scene's own letters (X, P, Y, Q)")
+
+    def rule(self, j: int) -> Any:
+        g = self.g
+        op, a = g.ops[j], g.args[j]
+        if op == "attr" and type(a[0]) is Ref and g.ops[a[0].i] == "scene" and a[1] in MOVED + ("Phi", "Psi"):
+            if g.args[a[0].i] != (self.k,):
+                raise Unsupported("a function that reads another function's scene")
+            return _Derivative.rule(self, j)        # the scene's own letters move with the tangent here
+        return super().rule(j)
+
+    def tangent_step(self, flow: Ref, keys: tuple) -> Ref:
+        return self.add("prim", (Named(TANGENT), self.S, flow, keys))
+
+
+#: what a coordinate scene says (``_graph_flows``) when its Dirac flow, where the graph does not compute its
+#: multipliers (the metric realization, whose multipliers solve Lyapunov equations; a chart or field without
+#: the closed forms), may take the gradient of H the graph computes
+GRADIENT_FLOW = "the Dirac flow from the graph's gradient"
+DIRAC_FROM_GRADIENT = "stiefelsym.ir.derivative.dirac_flow_from_gradient"
+
+
+def dirac_flow_from_gradient(scene: Any, H: Any, HX: Any, HP: Any) -> Any:
+    """The Dirac flow of H on ``scene`` from the gradient (H_X, H_P) the graph computed: the scene makes it
+    as its own :meth:`dirac_flow` does (its multipliers, closed or solved).  Engine step of the transformed
+    graphs."""
+    f = getattr(scene, "_graph_dirac_flow", None)
+    if f is None:
+        raise TypeError(f"a Dirac flow on a {type(scene).__name__} (a scene whose flows the graph does not compute)")
+    return f(H, HX, HP)
+
+
+PRIMITIVES[DIRAC_FROM_GRADIENT] = dirac_flow_from_gradient
+
+
+class _GradientFlow:
+    """``s.dirac_flow(H)`` where the scene solves its multipliers: H's gradient by the backward sweep of
+    :class:`_Gradient` (the scene's checks of a gradient made by :func:`gradient_pair`), handed with H to one
+    engine step, :func:`dirac_flow_from_gradient`."""
+
+    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, i: int) -> None:
+        scene, name, args, kw = g.args[i]
+        if kw or len(args) != 1:
+            raise Unsupported("a Dirac flow with further arguments")
+        self.new, self.remap, self.f = new, remap, args[0]
+        self.grad = _Gradient(g, deps, new, remap, i, self.f)
+        self.S = self.grad.S
+
+    def build(self) -> Ref:
+        add = self.new.add
+        pair = self.grad.build()
+        HX, HP = add("item", (pair, 0)), add("item", (pair, 1))
+        return add("prim", (Named(DIRAC_FROM_GRADIENT), self.S, self.remap[self.f.i], HX, HP))
