@@ -402,12 +402,13 @@ def r_dependence(g: Graph) -> str:
     """Why the graph's value may depend on r at a fixed n ("" when it cannot): a node with a size in r or
     the index space ℝʳ, a leaf that is not on ℝⁿ alone (X, P, Φ, Ψ, I_r, η ... or an attribute the pass
     does not know), a call of the scene or an engine step outside the short lists above, an operation it
-    does not know.  Decided on a graph traced with symbolic sizes only: a graph traced at (n, r) may hold
-    r's number as a plain int (a claim that read int(s.r)), and is reported as depending on r."""
+    does not know.  A graph with symbolic sizes is then the same graph at every (n, r); a graph traced at
+    (n, r) may hold r's number as a plain int (a claim that read int(s.r)): its value is the same at every
+    r only where the claim's graphs at those sizes are the same (the runner compares them)."""
     cached = g.cache.get("r-dependence")
     if cached is not None:
         return cached
-    why = "" if g.sizes is None else "the graph was traced at fixed sizes (its ints may be r)"
+    why = ""
     for i, (op, a) in enumerate(zip(g.ops, g.args)):
         if why:
             break

@@ -155,14 +155,16 @@ def _guarded(claim: Claim, size: Size | None, method: str, seed: int, func: Call
 
 def shared_size(claim: Claim, size: Size | None, func: Callable | None = None) -> Size | None:
     """The size (n, r0) whose run decides the run at ``size`` = (n, r), when the claim's graph involves no
-    dimension r (:func:`stiefelsym.ir.passes.r_dependence`: traced with symbolic sizes, and no node of it has
-    a side on ℝʳ, a size in r or a leaf built from a point of T*V): its value at every point of T*V(n, r) is
-    its value at the same A and parameters on T*V(n, r0), so the run at (n, r0) is the run at (n, r), and the
-    records of every r at this n are one computation.  r0 is the least r the claim is stated for at n on
-    which ``auto`` makes the same first attempt as at r (symbolic or not), so that the method is the same;
-    it is a function of the claim and (n, r) alone, whatever else a plan holds, so that a run of (n, r)
-    alone gives the record a run of the catalog gives.  None when the graph may depend on r (or does not
-    trace: the run itself says why)."""
+    dimension r (:func:`stiefelsym.ir.passes.r_dependence`: no node of it has a side on ℝʳ, a size in r or a
+    leaf built from a point of T*V) and is the same graph at (n, r) and (n, r0) (one graph with symbolic
+    sizes, or the same graph traced at both sizes): its value at every point of T*V(n, r) is its value at the
+    same A and parameters on T*V(n, r0), so the run at (n, r0) is the run at (n, r), and the records of every
+    r at this n are one computation.  r0 is the least r the claim is stated for at n on which ``auto`` makes
+    the same first attempt as at r (symbolic or not), so that the method is the same; it is a function of
+    the claim and (n, r) alone, whatever else a plan holds, so that a run of (n, r) alone gives the record a
+    run of the catalog gives.  None when the graph may depend on r (or does not trace: the run itself says
+    why), and for a claim of a user's file that needs fixed sizes (its graphs at sizes are traced in
+    another interpreter, on demand: not asked for here)."""
     if size is None or claim.realization != "standard":
         return None
     from stiefelsym.ir import compile_claim
@@ -170,28 +172,41 @@ def shared_size(claim: Claim, size: Size | None, func: Callable | None = None) -
     from stiefelsym.scene import REALIZATIONS
     cons = REALIZATIONS[claim.realization]
     f = func or claim.func
+
+    def graph(n: int | None, r: int | None):
+        return compile_claim(f, n, r, (cons.name, cons.build))
+
     try:
-        # symbolic sizes first: a claim that needs fixed sizes is never traced here at a number
-        free = compile_claim(f, None, None, (cons.name, cons.build))
-        if r_dependence(free):
+        try:
+            # symbolic sizes first: then the one graph is the claim's graph at every size
+            first = graph(None, None)
+        except Exception:   # noqa: BLE001 - needs fixed sizes: its graph at the claim's first size, below
+            if type(f).__name__ == "TracedFunction":
+                return None
+            first = None
+        if first is None:
+            low = min(claim.sizes, key=lambda s: (s.n, s.r))
+            first = graph(low.n, low.r)       # a look at one size only: a graph on R^r there is on R^r anyway
+        if r_dependence(first):
             return None
         exact = claim.exact_at(size.n, size.r)
         r0 = next(r for r in range(1, size.n + 1)
                   if claim.sizes.admits(size.n, r) and claim.exact_at(size.n, r) == exact)
         # the graph types at both sizes, and is the same graph there
-        for r in {size.r, r0}:
-            g = compile_claim(f, size.n, r, (cons.name, cons.build))
-            if g.sizes is not None or g.digest() != free.digest():
-                return None
+        graphs = [graph(size.n, r) for r in dict.fromkeys((r0, size.r))]
+        if any(r_dependence(g) or g.digest() != graphs[0].digest() for g in graphs):
+            return None
     except Exception:   # noqa: BLE001 - a claim that does not trace (or a statement that raises): not shared
         return None
     return Size(size.n, r0)
 
 
 def shared_note(shared: Size) -> str:
-    """The reduction a record of a graph that involves no dimension r states (the same at every r)."""
-    return (f"the graph involves no dimension r (no leaf, size or engine step of it depends on r): the result "
-            f"computed at (n, r) = ({shared.n},{shared.r}) holds verbatim at ({shared.n}, r) for every r")
+    """The reduction a record of a graph that involves no dimension r states (the same at every r it is
+    shared by)."""
+    n, r0 = shared.n, shared.r
+    return (f"the graph at ({n}, r) is the graph at ({n},{r0}) and involves no dimension r (no leaf, size or "
+            f"engine step of it depends on r): the result computed at ({n},{r0}) holds verbatim")
 
 
 def _stated_shared(res: Result, shared: Size, size: Size) -> Result:
