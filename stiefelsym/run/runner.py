@@ -153,7 +153,7 @@ def _guarded(claim: Claim, size: Size | None, method: str, seed: int, func: Call
     return _confinement_stated(res, func or claim.func)
 
 
-def shared_size(claim: Claim, size: Size | None, func: Callable | None = None) -> Size | None:
+def shared_size(claim: Claim, size: Size | None, func: Callable | None = None, screen: bool = False) -> Size | None:
     """The size (n, r0) whose run decides the run at ``size`` = (n, r), when the claim's graph involves no
     dimension r (:func:`stiefelsym.ir.passes.r_dependence`: no node of it has a side on ℝʳ, a size in r or a
     leaf built from a point of T*V) and is the same graph at (n, r) and (n, r0) (one graph with symbolic
@@ -164,7 +164,12 @@ def shared_size(claim: Claim, size: Size | None, func: Callable | None = None) -
     the claim and (n, r) alone, whatever else a plan holds, so that a run of (n, r) alone gives the record a
     run of the catalog gives.  None when the graph may depend on r (or does not trace: the run itself says
     why), and for a claim of a user's file that needs fixed sizes (its graphs at sizes are traced in
-    another interpreter, on demand: not asked for here)."""
+    another interpreter, on demand: not asked for here).
+
+    ``screen`` (a plan, before it runs): a claim that needs fixed sizes is first looked at at its smallest
+    size only, and not shared when its graph there involves r (so that a plan does not trace every claim at
+    every size before it starts); that only leaves out sharing, never adds it: the run itself decides its
+    record by the graphs at (n, r) and (n, r0)."""
     if size is None or claim.realization != "standard":
         return None
     from stiefelsym.ir import compile_claim
@@ -185,8 +190,8 @@ def shared_size(claim: Claim, size: Size | None, func: Callable | None = None) -
                 return None
             first = None
         if first is None:
-            low = min(claim.sizes, key=lambda s: (s.n, s.r))
-            first = graph(low.n, low.r)       # a look at one size only: a graph on R^r there is on R^r anyway
+            low = min(claim.sizes, key=lambda s: (s.n, s.r)) if screen else size
+            first = graph(low.n, low.r)
         if r_dependence(first):
             return None
         exact = claim.exact_at(size.n, size.r)
@@ -551,7 +556,7 @@ def _run_shared(run: Callable[[list[Task]], Iterable[tuple[int, Outcome]]], task
         if n is not None:
             c = claims[ci]
             shared = shared_size(c.corrected(k) if k >= 0 else c, Size(n, r),
-                                 c.corrections[k].func if k >= 0 else None)
+                                 c.corrections[k].func if k >= 0 else None, screen=True)
             if shared is not None:
                 key = (ci, n, shared.r, m, k)
         j = where.get(key)
