@@ -5,7 +5,7 @@ import json
 import math
 import os
 import tempfile
-from dataclasses import MISSING, asdict, dataclass, field, fields, replace
+from dataclasses import MISSING, asdict, dataclass, field, fields, is_dataclass, replace
 from pathlib import Path
 from typing import Any, Callable, Iterable
 
@@ -174,8 +174,117 @@ def write_atomic(path: Path, text: str) -> None:
 
 
 def dump_results(results: Iterable[Result], meta: dict[str, Any]) -> str:
-    payload = {"schema": SCHEMA_VERSION, "meta": meta, "results": [r.to_json() for r in results]}
-    return json.dumps(payload, indent=1, sort_keys=False, default=str) + "\n"
+    """The results file: ``json.dumps(payload, indent=1, default=str)`` byte for byte (tests/test_report.py
+    compares them), written by :func:`_indented`, which encodes strings and numbers with the json module's
+    own C functions and leaves out the deep copy of :meth:`Result.to_json` (the encoder only reads)."""
+    payload = {"schema": SCHEMA_VERSION, "meta": meta, "results": [_record(r) for r in results]}
+    out: list[str] = []
+    _indented(payload, "\n", out)
+    out.append("\n")
+    return "".join(out)
+
+
+def _record(r: Result) -> dict[str, Any]:
+    """The fields of a record as to_json gives them, without copying (only to be encoded)."""
+    d = {f: getattr(r, f) for f in _FIELDS}
+    d["checks"] = [asdict(c) for c in r.checks]
+    return d
+
+
+_FIELDS: tuple[str, ...] = tuple(f.name for f in fields(Result))
+_ENCODE_STRING = json.encoder.encode_basestring_ascii       # what json.dumps uses (ensure_ascii)
+
+
+def _float_text(x: float) -> str:
+    if x != x:
+        return "NaN"
+    if x == math.inf:
+        return "Infinity"
+    if x == -math.inf:
+        return "-Infinity"
+    return float.__repr__(x)
+
+
+def _scalar_text(o: Any) -> str | None:
+    """The json text of a string, a number, a boolean or None (json.dumps's tests, in its order); None for
+    anything else."""
+    if isinstance(o, str):
+        return _ENCODE_STRING(o)
+    if o is None:
+        return "null"
+    if o is True:
+        return "true"
+    if o is False:
+        return "false"
+    if isinstance(o, int):
+        return int.__repr__(o)
+    if isinstance(o, float):
+        return _float_text(o)
+    return None
+
+
+def _key_text(k: Any) -> str:
+    if isinstance(k, str):
+        return _ENCODE_STRING(k)
+    if isinstance(k, float):
+        return _ENCODE_STRING(_float_text(k))
+    if k is True:
+        return '"true"'
+    if k is False:
+        return '"false"'
+    if k is None:
+        return '"null"'
+    if isinstance(k, int):
+        return _ENCODE_STRING(int.__repr__(k))
+    raise TypeError(f"keys must be str, int, float, bool or None, not {k.__class__.__name__}")
+
+
+def _indented(o: Any, newline: str, out: list[str]) -> None:
+    """Append json.dumps(o, indent=1, default=str)'s text of ``o`` at the indentation ``newline`` to ``out``."""
+    text = _scalar_text(o)
+    if text is not None:
+        out.append(text)
+    elif isinstance(o, (list, tuple)):
+        if not o:
+            out.append("[]")
+            return
+        inner = newline + " "
+        sep = "," + inner
+        out.append("[" + inner)
+        first = True
+        for x in o:
+            if not first:
+                out.append(sep)
+            first = False
+            text = _scalar_text(x)
+            if text is not None:
+                out.append(text)
+            else:
+                _indented(x, inner, out)
+        out.append(newline + "]")
+    elif isinstance(o, dict):
+        if not o:
+            out.append("{}")
+            return
+        inner = newline + " "
+        sep = "," + inner
+        out.append("{" + inner)
+        first = True
+        for k, v in o.items():
+            if not first:
+                out.append(sep)
+            first = False
+            out.append(_key_text(k) + ": ")
+            text = _scalar_text(v)
+            if text is not None:
+                out.append(text)
+            else:
+                _indented(v, inner, out)
+        out.append(newline + "}")
+    elif is_dataclass(o) and not isinstance(o, type):
+        _indented(asdict(o), newline, out)      # what to_json's asdict makes of it
+    else:
+        out.append(_ENCODE_STRING(str(o)))      # default=str
 
 
 def _is_int(x: Any) -> bool:

@@ -368,3 +368,62 @@ def coordinate_needs(g: Graph) -> list[str]:
 
 
 _GIVEN = "a matrix of given entries (basis vectors, projectors, coordinate matrices)"
+
+
+#: the leaves whose values are the same at every r for a fixed n: A, its inverse, its eigenvalues, I_n,
+#: the generic elements ξ, ζ of so(n) and the scalar parameters (every point of T*V, Φ and Ψ included, has
+#: a side on ℝʳ or is built from one)
+R_FREE_LEAVES = frozenset({"A", "Ainv", "a", "In", "xi", "zeta", "lam", "kappa", "eps"})
+#: the scene's calls whose values depend on r only through their arguments (sizes and index spaces,
+#: which the pass checks): generic parameters, constants, pairings, the resolvent of A
+R_FREE_CALLS = frozenset({"generic", "fresh", "zeros", "identity", "scalar_matrix", "general_params", "mat",
+                          "resolvent", "tr", "killing", "q", "const", "scalar", "sym_operator"})
+#: the engine steps that evaluate a function of the claim on a space of the claim's choice (gl(n), so(n):
+#: the index space is an argument, which the pass checks) and read nothing else of the scene
+R_FREE_STEPS = frozenset({"stiefelsym.brackets.form_gradient", "stiefelsym.brackets.polynomial_gradient",
+                          "stiefelsym.brackets.tensor_value"})
+#: the operations that compute from their arguments alone
+_R_FREE_OPS = frozenset({"scene", "param", "fn", "apply", "add", "sub", "neg", "mul", "rmul", "div", "rdiv",
+                         "pow", "matmul", "T", "inv", "trace", "entry", "item", "block", "list", "tuple", "dict",
+                         "kw", "rank", "count", "inverse", "right_inverse"})
+
+
+def _mentions_r(x) -> bool:
+    """Whether an argument holds a size in r or the index space "r" (of a generic matrix, a tag, a space)."""
+    t = type(x)
+    if t is tuple:
+        return any(_mentions_r(y) for y in x)
+    if t is Size:
+        return x.d == _R
+    return t is str and x == _R
+
+
+def r_dependence(g: Graph) -> str:
+    """Why the graph's value may depend on r at a fixed n ("" when it cannot): a node with a size in r or
+    the index space ℝʳ, a leaf that is not on ℝⁿ alone (X, P, Φ, Ψ, I_r, η ... or an attribute the pass
+    does not know), a call of the scene or an engine step outside the short lists above, an operation it
+    does not know.  A graph with symbolic sizes is then the same graph at every (n, r); a graph traced at
+    (n, r) may hold r's number as a plain int (a claim that read int(s.r)): its value is the same at every
+    r only where the claim's graphs at those sizes are the same (the runner compares them)."""
+    cached = g.cache.get("r-dependence")
+    if cached is not None:
+        return cached
+    why = ""
+    for i, (op, a) in enumerate(zip(g.ops, g.args)):
+        if why:
+            break
+        if _mentions_r(a):
+            why = f"node %{i} ({op}) involves the dimension r"
+        elif op == "attr":
+            if a[1] not in R_FREE_LEAVES:
+                why = f"node %{i} reads {a[1]}"
+        elif op == "call":
+            if a[1] not in R_FREE_CALLS:
+                why = f"node %{i} calls {a[1]}"
+        elif op == "prim":
+            if a[0].qualname not in R_FREE_STEPS:
+                why = f"node %{i} is the engine step {a[0].qualname}"
+        elif op not in _R_FREE_OPS:
+            why = f"node %{i} is an operation {op}"
+    g.cache["r-dependence"] = why
+    return why

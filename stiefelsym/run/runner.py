@@ -10,6 +10,7 @@ never by the code that ran the claim.
 """
 from __future__ import annotations
 
+import copy
 import functools
 import hashlib
 import shlex
@@ -125,7 +126,10 @@ def _guarded(claim: Claim, size: Size | None, method: str, seed: int, func: Call
         # the claim is traced before any method builds its scene or runs (the graph is cached for the
         # method): claim code never runs while a scene of a method is alive
         graph_digest(claim, size, func)
-        res = _dispatch(claim, size, method, seed, func, options, in_worker, timeout)
+        shared = shared_size(claim, size, func) if method != "free" else None
+        res = _dispatch(claim, shared or size, method, seed, func, options, in_worker, timeout)
+        if shared is not None:
+            res = _stated_shared(res, shared, size)
         if not res.digest:
             res.digest = graph_digest(claim, size, func)
         if res.certificate_data is not None:     # what the certificate is about (the standalone checker binds it)
@@ -147,6 +151,84 @@ def _guarded(claim: Claim, size: Size | None, method: str, seed: int, func: Call
     # an error is bound to the graph it was met on like any verdict ("" when the claim does not trace)
     res.digest = _digest_or_none(claim, size, func)
     return _confinement_stated(res, func or claim.func)
+
+
+def shared_size(claim: Claim, size: Size | None, func: Callable | None = None, screen: bool = False) -> Size | None:
+    """The size (n, r0) whose run decides the run at ``size`` = (n, r), when the claim's graph involves no
+    dimension r (:func:`stiefelsym.ir.passes.r_dependence`: no node of it has a side on ℝʳ, a size in r or a
+    leaf built from a point of T*V) and is the same graph at (n, r) and (n, r0) (one graph with symbolic
+    sizes, or the same graph traced at both sizes): its value at every point of T*V(n, r) is its value at the
+    same A and parameters on T*V(n, r0), so the run at (n, r0) is the run at (n, r), and the records of every
+    r at this n are one computation.  r0 is the least r the claim is stated for at n on which ``auto`` makes
+    the same first attempt as at r (symbolic or not), so that the method is the same; it is a function of
+    the claim and (n, r) alone, whatever else a plan holds, so that a run of (n, r) alone gives the record a
+    run of the catalog gives.  None when the graph may depend on r (or does not trace: the run itself says
+    why), and for a claim of a user's file that needs fixed sizes (its graphs at sizes are traced in
+    another interpreter, on demand: not asked for here).
+
+    ``screen`` (a plan, before it runs): a claim that needs fixed sizes is first looked at at its smallest
+    size only, and not shared when its graph there involves r (so that a plan does not trace every claim at
+    every size before it starts); that only leaves out sharing, never adds it: the run itself decides its
+    record by the graphs at (n, r) and (n, r0)."""
+    if size is None or claim.realization != "standard":
+        return None
+    from stiefelsym.ir import compile_claim
+    from stiefelsym.ir.passes import r_dependence
+    from stiefelsym.scene import REALIZATIONS
+    cons = REALIZATIONS[claim.realization]
+    f = func or claim.func
+
+    def graph(n: int | None, r: int | None):
+        return compile_claim(f, n, r, (cons.name, cons.build))
+
+    try:
+        try:
+            # symbolic sizes first: then the one graph is the claim's graph at every size
+            first = graph(None, None)
+        except Exception:   # noqa: BLE001 - needs fixed sizes: its graph at the claim's first size, below
+            if type(f).__name__ == "TracedFunction":
+                return None
+            first = None
+        if first is None:
+            low = min(claim.sizes, key=lambda s: (s.n, s.r)) if screen else size
+            first = graph(low.n, low.r)
+        if r_dependence(first):
+            return None
+        exact = claim.exact_at(size.n, size.r)
+        r0 = next(r for r in range(1, size.n + 1)
+                  if claim.sizes.admits(size.n, r) and claim.exact_at(size.n, r) == exact)
+        # the graph types at both sizes, and is the same graph there
+        graphs = [graph(size.n, r) for r in dict.fromkeys((r0, size.r))]
+        if any(r_dependence(g) or g.digest() != graphs[0].digest() for g in graphs):
+            return None
+    except Exception:   # noqa: BLE001 - a claim that does not trace (or a statement that raises): not shared
+        return None
+    return Size(size.n, r0)
+
+
+def shared_note(shared: Size) -> str:
+    """The reduction a record of a graph that involves no dimension r states (the same at every r it is
+    shared by)."""
+    n, r0 = shared.n, shared.r
+    return (f"the graph at ({n}, r) is the graph at ({n},{r0}) and involves no dimension r (no leaf, size or "
+            f"engine step of it depends on r): the result computed at ({n},{r0}) holds verbatim")
+
+
+def _stated_shared(res: Result, shared: Size, size: Size) -> Result:
+    """The result computed at ``shared`` as the result at ``size``, with the reduction stated."""
+    note = shared_note(shared)
+    if note not in res.reductions:
+        res.reductions.append(note)
+    return at_size(res, size.r)
+
+
+def at_size(res: Result, r: int) -> Result:
+    """A copy of ``res`` (a run at (n, r0) of a graph that involves no r) as the record at (n, r)."""
+    if res.r == r:
+        return res
+    out = copy.deepcopy(res)
+    out.r = r
+    return out
 
 
 def _confinement_stated(res: Result, func: Callable) -> Result:
@@ -442,7 +524,7 @@ def run_with_corrections(run: Callable[[list[Task]], Iterable[tuple[int, Outcome
     prove as printed (a correction proved for all n, r)."""
     failed: dict[tuple[int, str], None] = {}
     corrections: list[Task] = []
-    for i, outcome in run(tasks):
+    for i, outcome in _run_shared(run, tasks, claims):
         res = _settle(outcome, tasks[i], claims, seed, hard)
         deliver(res)
         ci, n, _, m, _ = tasks[i]
@@ -455,8 +537,47 @@ def run_with_corrections(run: Callable[[list[Task]], Iterable[tuple[int, Outcome
         for k in range(len(claims[ci].corrections)):
             corrections += [(ci, n, r, m, k) for n, r in planned]
     if corrections:
-        for i, outcome in run(corrections):
+        for i, outcome in _run_shared(run, corrections, claims):
             deliver(_settle(outcome, corrections[i], claims, seed, hard))
+
+
+def _run_shared(run: Callable[[list[Task]], Iterable[tuple[int, Outcome]]], tasks: list[Task],
+                claims: list[Claim]) -> Iterable[tuple[int, Outcome]]:
+    """(task index, outcome) for every task, in order, with the tasks of a graph that involves no dimension r
+    run once per n (:func:`shared_size`): the run at (n, r0) is every run at (n, r), its record copied to
+    each r (tasks and outcomes stay one per (claim, size, method, variant), so every budget, record and
+    report is as before)."""
+    units: list[Task] = []
+    unit_of: list[int] = []
+    where: dict[Task, int] = {}
+    for t in tasks:
+        ci, n, r, m, k = t
+        key = t
+        if n is not None:
+            c = claims[ci]
+            shared = shared_size(c.corrected(k) if k >= 0 else c, Size(n, r),
+                                 c.corrections[k].func if k >= 0 else None, screen=True)
+            if shared is not None:
+                key = (ci, n, shared.r, m, k)
+        j = where.get(key)
+        if j is None:
+            j = where[key] = len(units)
+            units.append(key)
+        unit_of.append(j)
+    if len(units) == len(tasks):
+        yield from run(tasks)
+        return
+    done: dict[int, Outcome] = {}
+    i = 0
+    for j, outcome in run(units):
+        done[j] = outcome
+        while i < len(tasks) and unit_of[i] in done:
+            got = done[unit_of[i]]
+            r = tasks[i][2]
+            if got.kind == "ok" and isinstance(got.value, Result) and r is not None and got.value.r != r:
+                got = Outcome(got.kind, at_size(got.value, r), got.message, got.seconds)
+            yield i, got
+            i += 1
 
 
 def rerun_command(result: Result, hard: str | None = None) -> str:
