@@ -9,7 +9,7 @@ conserved quantities and the Uhlenbeck form of the spectral invariants.
 Every claim is written as a user would write it: only the public API (`stiefelsym`'s exports and the
 scene `s`), no import of the catalog.
 """
-from stiefelsym import Rank, admissible, block, claim, comm
+from stiefelsym import Inverse, Rank, admissible, block, claim, comm
 
 #: r = n: T*V(n, n) = T*SO(n)
 R_IS_N = admissible(n_max=4, n_min=1, r_is_n=True, condition="r = n")
@@ -111,6 +111,27 @@ def submersion_flow_on_so_n(s):
     return {
         "X' X^T - AA(Phi)": flow.Xdot @ s.X.T - AA(s.Phi),
         "Phi' - [AA Phi, Phi]": s.d(lambda t: t.Phi, flow) - comm(AA(s.Phi), s.Phi),
+    }
+
+
+def legendre_normal(t, V):
+    """(P(dot_X)): Ẋ ↦ P = Ẋ − ½XXᵀẊ, on all of ℝ^{n×r}."""
+    return (V - t.X @ t.X.T @ V / 2,)
+
+
+def legendre_normal_inverse(t, P):
+    """P ↦ Ẋ = P + XXᵀP, which is (dot_X3) Ẋ = P − XPᵀX on T*V (there PᵀX = −XᵀP)."""
+    return (P + t.X @ t.X.T @ P,)
+
+
+@claim("x-normal-legendre-inverse", paper=("P(dot_X)", "dot_X3"), kind="id", section="3",
+       statement=r"\dot X\mapsto\dot X-	frac12XX^T\dot X\ 	ext{is invertible with inverse } P\mapsto P+XX^TP"
+                 r"=P-XP^TX")
+def normal_legendre_is_invertible(s):
+    """(P(dot_X)) inverts (dot_X3) uniquely: the map Ẋ ↦ Ẋ − ½XXᵀẊ is a bijection of ℝ^{n×r} at every point of V with inverse P ↦ P + XXᵀP, which equals P − XPᵀX on T*V."""
+    return {
+        "P(dot X) invertible": Inverse(legendre_normal, legendre_normal_inverse, on=("R^{n×r}",)),
+        "inverse = (dot_X3)": legendre_normal_inverse(s, s.P)[0] - (s.P - s.X @ s.P.T @ s.X),
     }
 
 

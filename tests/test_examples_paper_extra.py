@@ -23,15 +23,15 @@ def claims():
     return {c.id: c for c in load_claims_file(EXAMPLE)}
 
 
-def test_the_example_file_states_twenty_one_claims(claims):
-    assert len(claims) == 21
+def test_the_example_file_states_twenty_two_claims(claims):
+    assert len(claims) == 22
     assert all(c.id.startswith("x-") for c in claims.values())
 
 
 #: one small size per claim (within its stated sizes), each decided by exact, modular and float
 SMALL = {
     "x-euclidean-geodesic-equation": (3, 2), "x-normal-geodesic-equation": (3, 2),
-    "x-submersion-right-invariant": (3, 3), "x-jensen-flow": (3, 2), "x-a-metric-manakov-on-so-n": (3, 3),
+    "x-submersion-right-invariant": (3, 3), "x-jensen-flow": (3, 2), "x-normal-legendre-inverse": (3, 2), "x-a-metric-manakov-on-so-n": (3, 3),
     "x-manakov-square-integrals": (3, 2), "x-big-lax-integrals-manakov-r-n": (2, 2),
     "x-potential-constant-r-n": (3, 3), "x-neumann-is-geodesic-r-n": (3, 3), "x-neumann-energy": (3, 2),
     "x-neumann-proof-constraints": (3, 2), "x-perelomov-k4": (3, 2), "x-resolvent-identity": (3, 2),
