@@ -91,6 +91,30 @@ def test_a_canonical_bracket_of_captured_matrices_is_decided_and_a_wrong_one_fai
         assert run_float(CANONICAL, n, r, 0, func=wrong).verdict == "fails"
 
 
+def _captured_scalar(factor):
+    def f(s):
+        """{c tr(XᵀAX), ½tr(PᵀP)}₀ = 2c tr(XᵀAP) for a number c = tr(PᵀP) computed outside the function
+        (a constant of it)."""
+        c = s.tr(s.P.T @ s.P)
+        return {"b": s.canonical_bracket(lambda t: c * t.tr(t.X.T @ t.A @ t.X), lambda t: t.tr(t.P.T @ t.P) / 2)
+                - factor * c * s.tr(s.X.T @ s.A @ s.P)}
+    return f
+
+
+SCALAR = claim("t-captured-scalar", kind="pb", section="2", sizes=admissible(3))(_captured_scalar(2)).claim
+
+
+def test_a_number_built_outside_the_function_is_its_constant_on_every_method():
+    wrong = _captured_scalar(1)
+    for n, r in ((2, 1), (3, 2)):
+        assert run_exact(SCALAR, n, r, 0).verdict == "proved"
+        assert run_points(SCALAR, n, r, "modular", 0).verdict == "checked"
+        assert run_float(SCALAR, n, r, 0).verdict == "numeric"
+        assert run_exact(SCALAR, n, r, 0, func=wrong).verdict == "fails"
+        assert run_points(SCALAR, n, r, "modular", 0, func=wrong).verdict == "fails"
+        assert run_float(SCALAR, n, r, 0, func=wrong).verdict == "fails"
+
+
 def test_a_bracket_of_another_realization_reads_captured_matrices():
     assert run_points(METRIC, 2, 1, "modular", 0).verdict == "checked"
     assert run_points(METRIC, 3, 2, "modular", 0).verdict == "checked"

@@ -55,6 +55,23 @@ def _deps(g: Graph) -> list[frozenset]:
     return deps
 
 
+#: values that are the same in every number system (never lifted)
+_PLAIN = (int, Fraction, bool, str, bytes, type(None))
+
+
+def _liftable(v: Any) -> bool:
+    """A matrix or a number of a scene (or a list or tuple of them), as opposed to a scene, a flow,
+    a function, a statement or a plain constant: what an inner scene must lift to compute with."""
+    if isinstance(v, Mat):
+        return True
+    if isinstance(v, (list, tuple)):
+        return bool(v) and all(_liftable(x) or isinstance(x, _PLAIN) for x in v) and any(_liftable(x) for x in v)
+    if isinstance(v, _PLAIN) or callable(v):
+        return False
+    t = type(v)
+    return hasattr(t, "__mul__") and hasattr(t, "__add__") and hasattr(t, "__neg__")
+
+
 class _Frame:
     __slots__ = ("fn", "bind", "memo", "parent")
 
@@ -198,7 +215,7 @@ class Evaluator:
         enclosing scene's lift (the reverse numbers of a gradient, the duals of a derivative the scene
         computes): a constant there, as the graph's own derivatives take it.  Without the lift the
         scene's gradient met a matrix of another number system (a TypeError)."""
-        if not isinstance(v, Mat):
+        if not _liftable(v):
             return v
         inner = frame.bind.get(frame.fn)
         lift = getattr(type(inner), "_lift_primitive", None)
@@ -210,6 +227,7 @@ class Evaluator:
         if owner is None or getattr(inner, "base", None) is not owner.bind.get(owner.fn):
             return v
         return lift(inner, v, None)
+
 
     def arg(self, a: Any, frame: _Frame) -> Any:
         t = type(a)
