@@ -9,7 +9,7 @@ conserved quantities and the Uhlenbeck form of the spectral invariants.
 Every claim is written as a user would write it: only the public API (`stiefelsym`'s exports and the
 scene `s`), no import of the catalog.
 """
-from stiefelsym import Inverse, Rank, admissible, block, claim, comm
+from stiefelsym import Inverse, Rank, admissible, block, claim, comm, det, elementary
 
 #: r = n: T*V(n, n) = T*SO(n)
 R_IS_N = admissible(n_max=4, n_min=1, r_is_n=True, condition="r = n")
@@ -258,11 +258,14 @@ def resolvent_identity(s):
 
 
 @claim("x-dual-trace-square", paper=("2r-integrals", "LA3"), kind="id", section="8",
-       statement=r"-\tfrac12\tr\mathcal L^*(\lambda)^2=\tr(X^TRX)-\tfrac12\tr(R\Phi R\Phi),\ \tr\mathcal L^*(\lambda)=0")
+       statement=r"e_2(\mathcal L^*)=-\tfrac12\tr\mathcal L^*(\lambda)^2=\tr(X^TRX)-\tfrac12\tr(R\Phi R\Phi),\ "
+                 r"e_1(\mathcal L^*)=e_3(\mathcal L^*)=0")
 def dual_trace_square_is_uhlenbeck(s):
-    """The coefficient 𝓘₂(λ)/a(λ) = −½tr 𝓛*(λ)² of the spectral curve of the dual Lax matrix is tr(XᵀRX) − ½tr(RΦRΦ), R = (λI − A)⁻¹, and tr 𝓛*(λ) = 0."""
+    """The coefficient 𝓘₂(λ)/a(λ) = e₂(𝓛*(λ)) = −½tr 𝓛*(λ)² of w^{2r−2} in the spectral curve of the dual Lax matrix is tr(XᵀRX) − ½tr(RΦRΦ), R = (λI − A)⁻¹, and the odd coefficients e₁ = tr 𝓛*(λ) and e₃ vanish."""
     L = L_dual(s, s.lam)
-    return {"-1/2 tr L*^2 - I_2/a": -s.tr(L @ L) / 2 - uhlenbeck(s, s.lam), "tr L*": s.tr(L)}
+    e = elementary(s, L, 3)
+    return {"-1/2 tr L*^2 - I_2/a": -s.tr(L @ L) / 2 - uhlenbeck(s, s.lam), "tr L*": s.tr(L),
+            "e_2(L*) - I_2/a": e[2] - uhlenbeck(s, s.lam), "e_3(L*)": e[3]}
 
 
 @claim("x-dual-r1-determinant", paper=("2r-integrals", "LA3"), kind="id", section="8", sizes=R_IS_1,
@@ -270,8 +273,8 @@ def dual_trace_square_is_uhlenbeck(s):
 def dual_determinant_r1(s):
     """For r = 1 the spectral curve of the 2×2 dual Lax matrix is w² + a(λ)²det 𝓛*(λ) = 0, with det 𝓛*(λ) = 𝓘₂(λ)/a(λ) = (x, Rx) + (x, Rx)(p, Rp) − (x, Rp)²."""
     L = L_dual(s, s.lam)
-    det = L[0, 0] * L[1, 1] - L[0, 1] * L[1, 0]
-    return {"det L* - I_2/a": det - uhlenbeck(s, s.lam)}
+    by_entries = L[0, 0] * L[1, 1] - L[0, 1] * L[1, 0]
+    return {"det L* - I_2/a": det(s, L) - uhlenbeck(s, s.lam), "det L* by its entries": by_entries - det(s, L)}
 
 
 @claim("x-uhlenbeck-conserved", paper=("2r-integrals", "prep", "No"), kind="pb", section="8",

@@ -156,3 +156,43 @@ def test_a_rank_of_a_list_of_rows_says_how_to_make_it_a_matrix():
     assert run_exact(c, 2, 1, 0, func=fixed).verdict == "proved"
     wrong = lambda s: {"rank": Rank(s.mat(s.jacobian(lambda t: [t.X.T @ t.X - t.Ir])), 2)}  # noqa: E731
     assert run_exact(c, 2, 1, 0, func=wrong).verdict == "fails"
+
+
+# -- the characteristic polynomial without entries -------------------------------------------------
+
+def _det_claim(shift):
+    def f(s):
+        """det and e_k of a 2r x 2r matrix against its entries (r = 1) and against traces."""
+        from stiefelsym import block, det, elementary
+        M = block([[s.X.T @ s.A @ s.P, s.X.T @ s.X], [s.P.T @ s.P, s.P.T @ s.A @ s.X]])
+        e = elementary(s, M, 2)
+        return {"det": det(s, M) - (M[0, 0] * M[1, 1] - M[0, 1] * M[1, 0]) - shift,
+                "e_1": e[1] - s.tr(M), "e_2": 2 * e[2] - (s.tr(M) * s.tr(M) - s.tr(M @ M))}
+    return f
+
+
+DET = claim("t-det", kind="id", section="8", sizes=admissible(3, r_in=(1,)))(_det_claim(0)).claim
+
+
+def test_det_and_elementary_agree_with_the_entries_and_a_wrong_one_fails():
+    from stiefelsym.methods.dimension_free import run_free
+    for n in (2, 3):
+        assert run_exact(DET, n, 1, 0).verdict == "proved"
+        assert run_points(DET, n, 1, "modular", 0).verdict == "checked"
+        assert run_exact(DET, n, 1, 0, func=_det_claim(1)).verdict == "fails"
+        assert run_float(DET, n, 1, 0, func=_det_claim(1)).verdict == "fails"
+    # entries and the size need coordinates: the dimension-free method leaves it to the fixed sizes
+    assert run_free(DET).verdict == "undecided"
+
+
+def test_the_dual_spectral_coefficients_are_proved_for_every_n_and_r(claims):
+    from stiefelsym.methods.dimension_free import run_free
+    assert run_free(claims["x-dual-trace-square"]).verdict == "proved"
+
+
+def test_elementary_refuses_a_size_that_is_not_an_integer():
+    from stiefelsym import elementary
+    with pytest.raises(ValueError, match="integer k >= 0"):
+        elementary(None, None, -1)
+    with pytest.raises(ValueError, match="integer k >= 0"):
+        elementary(None, None, 1.5)
