@@ -294,7 +294,6 @@ def uhlenbeck_involution(s):
 
 @claim("x-uhlenbeck-coordinates", paper=("2r-integrals",), kind="id", section="8",
        sizes=admissible(n_max=4, n_min=2),
-       equivariance="none claimed: the claim reads the eigenvalues a_i and entries of X and Phi",
        statement=r"\tr(X^TRX)-\tfrac12\tr(R\Phi R\Phi)=\sum_i\frac{F_i}{\lambda-a_i},\ "
                  r"F_i=|e^i|^2+\sum_{j\ne i}\frac{\Phi_{ij}^2}{a_i-a_j},\ \sum F_i=r,\ \sum a_iF_i=2H_{neum,0}")
 def uhlenbeck_partial_fractions(s):
