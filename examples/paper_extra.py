@@ -292,8 +292,11 @@ def uhlenbeck_involution(s):
     return {"{I(lambda), I(mu)}": s.bracket(lambda t: uhlenbeck(t, t.lam), lambda t: uhlenbeck(t, mu))}
 
 
+# it reads entries and the eigenvalues a_i, so the exact method works on the full Cayley chart, whose
+# rational functions in a_i, λ and the chart's parameters outgrow 4 GiB at (4, 3): auto takes the
+# modular method from n = 4 on (exact_max_n), where the symbolic attempt would die after ~20 s
 @claim("x-uhlenbeck-coordinates", paper=("2r-integrals",), kind="id", section="8",
-       sizes=admissible(n_max=4, n_min=2),
+       sizes=admissible(n_max=4, n_min=2), exact_max_n=3,
        statement=r"\tr(X^TRX)-\tfrac12\tr(R\Phi R\Phi)=\sum_i\frac{F_i}{\lambda-a_i},\ "
                  r"F_i=|e^i|^2+\sum_{j\ne i}\frac{\Phi_{ij}^2}{a_i-a_j},\ \sum F_i=r,\ \sum a_iF_i=2H_{neum,0}")
 def uhlenbeck_partial_fractions(s):
