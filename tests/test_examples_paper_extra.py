@@ -135,8 +135,7 @@ def test_an_unmeasured_claim_isolates_its_symbolic_attempt_in_a_worker(claims):
 
 @pytest.mark.slow
 def test_the_whole_file_as_a_user_runs_it():
-    """Every claim at every stated size with auto (about a minute: the symbolic attempt at (4,3) of
-    x-uhlenbeck-coordinates dies in flint after ~18 s and is decided by the modular fallback)."""
+    """Every claim at every stated size with auto and free (about 50 s on 2 shared cores)."""
     from stiefelsym import verify
     results = verify(files=[EXAMPLE], methods=("auto", "free"), jobs=1)
     assert results.ok, [str(r) for r in results if not r.expected]
