@@ -20,11 +20,11 @@ from stiefelsym.api import verify
 from stiefelsym.claims import Checks, Claim, Registry, Size, SizeSpec, admissible, claim, load_catalog, load_claims_file
 from stiefelsym.ir import block
 from stiefelsym.ir.statements import Count, Inverse, Rank, RightInverse
-from stiefelsym.backends.matrix import Mat, comm
+from stiefelsym.backends.matrix import Mat, comm, det, elementary
 from stiefelsym.results import Result, ResultList
 from stiefelsym.reports import notebook as _notebook  # noqa: F401,E402 (installs the displays of results and claims)
 from stiefelsym.scene import Flow, Scene
 
-__all__ = ["claim", "admissible", "comm", "block", "Rank", "Count", "Inverse", "RightInverse", "Checks", "Claim", "Registry", "Size",
+__all__ = ["claim", "admissible", "comm", "block", "det", "elementary", "Rank", "Count", "Inverse", "RightInverse", "Checks", "Claim", "Registry", "Size",
            "SizeSpec", "Mat", "Scene", "Flow", "load_catalog", "load_claims_file", "verify", "Result",
            "ResultList", "__version__"]

@@ -19,6 +19,7 @@ Engine code reads the private array ``_a``; claim code has no business there.
 """
 from __future__ import annotations
 
+import operator
 import re
 from fractions import Fraction
 from functools import lru_cache
@@ -795,6 +796,38 @@ def block(rows: Sequence[Sequence[Mat]]) -> Mat:
 def comm(A: Mat, B: Mat) -> Mat:
     """The commutator [A, B] = AB - BA."""
     return A @ B - B @ A
+
+
+def elementary(s: Any, M: Mat, k: int) -> list:
+    """[e_0(M), ..., e_k(M)]: the coefficients of the characteristic polynomial of the square matrix M,
+    det(wI - M) = sum_j (-1)^j e_j(M) w^(m-j), from its power traces by Newton's identities
+    j e_j = sum_{i=1..j} (-1)^(i-1) e_(j-i) tr M^i: no entry is read, so a claim written with them
+    runs on every scene, the dimension-free one included (for a k that does not depend on n, r)."""
+    try:
+        k = operator.index(k)
+    except TypeError:
+        raise ValueError(f"elementary(s, M, k) needs an integer k >= 0, not {k!r}") from None
+    if k < 0:
+        raise ValueError(f"elementary(s, M, k) needs an integer k >= 0, not {k}")
+    p: list = [None]
+    power = None
+    for _ in range(k):
+        power = M if power is None else power @ M
+        p.append(s.tr(power))
+    e = [s.q(1)]
+    for j in range(1, k + 1):
+        acc = s.q(0)
+        for i in range(1, j + 1):
+            term = e[j - i] * p[i]
+            acc = acc + term if i % 2 else acc - term
+        e.append(acc * s.q(1, j))
+    return e
+
+
+def det(s: Any, M: Mat) -> Any:
+    """det M of a square matrix, as e_m(M) of :func:`elementary` (m its size, so fixed sizes only)."""
+    m = M.shape[0]
+    return elementary(s, M, m)[m]
 
 
 def scalar_matrix(c, m: int, field: Field, tag=UNTYPED, tracker=None) -> Mat:

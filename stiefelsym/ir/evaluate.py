@@ -55,6 +55,23 @@ def _deps(g: Graph) -> list[frozenset]:
     return deps
 
 
+#: values that are the same in every number system (never lifted)
+_PLAIN = (int, Fraction, bool, str, bytes, type(None))
+
+
+def _liftable(v: Any) -> bool:
+    """A matrix or a number of a scene (or a list or tuple of them), as opposed to a scene, a flow,
+    a function, a statement or a plain constant: what an inner scene must lift to compute with."""
+    if isinstance(v, Mat):
+        return True
+    if isinstance(v, (list, tuple)):
+        return bool(v) and all(_liftable(x) or isinstance(x, _PLAIN) for x in v) and any(_liftable(x) for x in v)
+    if isinstance(v, _PLAIN) or callable(v):
+        return False
+    t = type(v)
+    return hasattr(t, "__mul__") and hasattr(t, "__add__") and hasattr(t, "__neg__")
+
+
 class _Frame:
     __slots__ = ("fn", "bind", "memo", "parent")
 
@@ -150,27 +167,32 @@ class Evaluator:
     def _memo(self, i: int, frame: _Frame) -> dict:
         """The memo of the frame that owns node i: the innermost enclosing call whose parameters it
         reads (the root for a node that reads none)."""
+        return self._owner(i, frame).memo
+
+    def _owner(self, i: int, frame: _Frame) -> _Frame:
+        """The frame that owns node i (see :meth:`_memo`): node i is computed there."""
         deps = self.deps[i]
         if not deps:
-            return self.root.memo
+            return self.root
         owner = frame
         while owner.fn != 0 and owner.fn not in deps:
             owner = owner.parent
-        return owner.memo
+        return owner
 
     def value(self, ref: Ref, frame: _Frame) -> Any:
         i = ref.i
         memo = self._memo(i, frame)
         v = memo.get(i, _MISSING)
         if v is not _MISSING:
-            return v
+            return v if memo is frame.memo or frame.fn == 0 else self._outer(v, memo, frame)
         # the nodes below i first, with an explicit stack (a body may be a chain of thousands of
         # nodes: a sum over a basis at n = 7), then i; a traced function's body waits for its calls
         ops, args, g = self.g.ops, self.g.args, self.g
         stack = [i]
         while stack:
             j = stack[-1]
-            mj = self._memo(j, frame)
+            fj = self._owner(j, frame)
+            mj = fj.memo
             if j in mj:
                 stack.pop()
                 continue
@@ -179,9 +201,33 @@ class Evaluator:
                 if pending:
                     stack.extend(pending)
                     continue
-            mj[j] = self._ops[ops[j]](self, args[j], frame)
+            # computed in the frame that owns it: a node read from an enclosing frame is that frame's
+            # value, never one computed from values lifted into an inner function's scene
+            mj[j] = self._ops[ops[j]](self, args[j], fj)
             stack.pop()
-        return memo[i]
+        v = memo[i]
+        return v if memo is frame.memo or frame.fn == 0 else self._outer(v, memo, frame)
+
+    @staticmethod
+    def _outer(v: Any, memo: dict, frame: _Frame) -> Any:
+        """A matrix a function's body reads from an enclosing frame (a matrix the claim built outside
+        the function it hands to the scene), lifted into the function's scene when that scene is the
+        enclosing scene's lift (the reverse numbers of a gradient, the duals of a derivative the scene
+        computes): a constant there, as the graph's own derivatives take it.  Without the lift the
+        scene's gradient met a matrix of another number system (a TypeError)."""
+        if not _liftable(v):
+            return v
+        inner = frame.bind.get(frame.fn)
+        lift = getattr(type(inner), "_lift_primitive", None)
+        if lift is None:
+            return v
+        owner = frame.parent
+        while owner is not None and owner.memo is not memo:
+            owner = owner.parent
+        if owner is None or getattr(inner, "base", None) is not owner.bind.get(owner.fn):
+            return v
+        return lift(inner, v, None)
+
 
     def arg(self, a: Any, frame: _Frame) -> Any:
         t = type(a)

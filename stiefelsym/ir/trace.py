@@ -1049,7 +1049,9 @@ class Trace:
         if tv is Rank:
             m = v.matrix
             if not (type(m) is Tracer and m._kind != SCALAR):
-                return self.refuse("Rank: the matrix must be a matrix of the scene")
+                what = ("a list of rows (a Jacobian?): build the matrix with s.mat(rows)" if isinstance(m, list)
+                        else "a number" if type(m) is Tracer else type(m).__name__)
+                return self.refuse(f"Rank: the matrix must be a matrix of the scene, not {what}")
             return self.g.add("rank", (m._r, v.expected, v.generic, v.meaning))
         if tv is Count:
             return self.g.add("count", (v.value, v.expected, v.meaning))

@@ -2286,12 +2286,19 @@ def isolates(claim: Claim, n: int, r: int, in_worker: bool = False) -> bool:
     n = 4 on (n = 5 while lending points to the mutation analysis, :class:`PointLoan`, whose thousands
     of small runs at n <= 4 would spend more time forking than computing), for the hard time limit.
     In a worker (the worker is killable, but must survive a heavy attempt): from n = ISOLATE_MIN_N on,
-    or when the cost model predicts at least ISOLATE_SECONDS."""
+    from n = 4 on for a claim the cost model was not measured on (a user's claim), or when the cost
+    model predicts at least ISOLATE_SECONDS."""
     if not hasattr(os, "fork"):
         return False
     if not in_worker:
         return n > (4 if _LOAN is not None else 3)
     if n >= ISOLATE_MIN_N:
+        return True
+    model = costmodel.model()
+    if n >= 4 and model.family_of(claim) is None and not model.factors.get(getattr(claim, "id", None)):
+        # a claim the cost model was never measured on (a user's): its prediction is a guess, and a
+        # symbolic blow-up in the worker (flint aborts when an allocation fails) would take the whole
+        # run with it instead of leaving auto its modular fallback
         return True
     try:
         return costmodel.predict("exact", claim, n, r) >= ISOLATE_SECONDS
