@@ -579,7 +579,9 @@ CAYLEY_REDUCTION = (
 REDUCED_CAYLEY_REDUCTION = (
     "rational parametrization: X = first r columns of (I - S)(I + S)^{-1} for S = [[S11, -K^T], [K, 0]] "
     "(S11 skew r x r, K generic (n - r) x r), i.e. X = [I - S11 - K^T K; -2K] M^{-1}, M = I + S11 + K^T K; "
-    "P = XW + (I - XX^T)Z (W skew, Z arbitrary), A = diag(a); the map (S11, K) -> X has an injective "
+    "P = XW + (I - XX^T)Z (W skew, Z = [0; Z2] with Z2 arbitrary (n - r) x r: onto the normal space "
+    "{N : X^T N = 0} wherever the top r x r block X1 = (I - S11 - K^T K)M^{-1} of X is invertible, a "
+    "dense open set), A = diag(a); the map (S11, K) -> X has an injective "
     "differential at 0 onto the tangent space of the irreducible V(n, r): dense in T*V(n, r)")
 
 
