@@ -522,7 +522,11 @@ class Scene(PaperObjects):
         D = _buf((n, r), np.int64)
         D.fill(0)
         D[range(r), range(r)] = 1
-        if self.component % 2 == 1:
+        # the component of O(n) (r = n): bit 0 of ``component`` for the point (X, P), bit 1 for a
+        # second point (Y, Q) on the symbolic method's Cayley chart (the two points are independent:
+        # the method evaluates the four combinations); elsewhere the second point shares bit 0
+        second = prefix == "second_" and isinstance(self._field, SymbolicField)
+        if (self.component // 2 if second else self.component) % 2 == 1:
             D[0, 0] = -1
         J = Mat._consts(D, self._field, ("n", "r"), self.tracker)
         if self._field.exact:
@@ -708,6 +712,8 @@ class Scene(PaperObjects):
             # the reduction moves the first point to X0; the second stays generic
             self._second_point_read = True
             return self._cached("point2", self._equivariant_second_point)
+        if isinstance(self._field, SymbolicField):
+            self._second_point_read = True
         return self._cached("point2", lambda: self._stiefel_point("second_"))
 
     right_reduction = _engine_property("_right_reduction", "whether the chart reduces by O(r) as well")
@@ -729,8 +735,9 @@ class Scene(PaperObjects):
             return out
         comp = ""
         if self.n == self.r:
-            comp = (f"; component {self.component % 2 + 1} of O(n) for Y "
-                    f"(D = {'I' if self.component % 2 == 0 else 'diag(-1,1,..,1)'})")
+            c = (self.component // 2 if self.chart == "cayley" else self.component) % 2
+            comp = (f"; component {c + 1} of O(n) for Y "
+                    f"(D = {'I' if c == 0 else 'diag(-1,1,..,1)'})")
         return ("; the second point (Y, Q) of T*V(n, r) generic: (g, h) act on it as on (X, P) and leave "
                 "it anywhere, Y = [I - S11 - K^T K; -2K] M^{-1} D, M = I + S11 + K^T K (the first r columns "
                 "of the Cayley transform of [[S11, -K^T], [K, 0]], S11 skew, K generic; dense in V(n, r)"
@@ -825,7 +832,11 @@ class Scene(PaperObjects):
     def _complex_point(self):
         self._no_point("a point of W(n, r)")
         n, r = self.n, self.r
-        if self.chart == "equivariant" and self._realization == "standard":
+        if (self.chart == "equivariant" and self._realization == "standard"
+                or self.chart == "cayley" and isinstance(self._field, SymbolicField)):
+            # on the symbolic Cayley chart (A = diag(a)) the point is the same reduced unitary Cayley
+            # transform: dense in W(n, r) whatever A is, with one complex r x r inverse instead of a
+            # complex n x n one
             self._complex_point_read = True
             return self._equivariant_complex_point()
         S = self.realify(self._skew_params("cS", n, "n"), self._sym_params("cH", n, "n"))

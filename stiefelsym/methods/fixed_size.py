@@ -703,7 +703,10 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                     res.rerun = ""
                     return res
                 evaluations = []
-                for comp in ((0, 1) if r == n else (0,)):
+                # r = n: both components of O(n) for X (bit 0 of comp); with a second point (Y, Q),
+                # read on the first evaluation, both for Y as well (bit 1): the four combinations
+                comps = [0, 1] if r == n else [0]
+                for comp in comps:
                     def build_cayley(comp=comp) -> tuple:
                         f = SymbolicField()
                         return f, Scene(n, r, f, chart="cayley", component=comp, realization=claim.realization)
@@ -711,11 +714,13 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                                                build_cayley, func, graph)
                     evaluations.append(_evaluate(ch, f2, lambda R, f2=f2: _exact_rank(
                         R, f2, randomized, lambda: degree_bound(claim, n, r, func).numerator, key)))
+                    if r == n and sc.second_point_read and len(comps) == 2:
+                        comps += [2, 3]
                     desc = REDUCED_CAYLEY_REDUCTION if r < n else CAYLEY_REDUCTION.format(
                         D=" D" if r == n else "",
-                        comp=(f"; component {comp + 1} of O(n) (D = {'I' if comp == 0 else 'diag(-1,1,..,1)'})"
+                        comp=(f"; component {comp % 2 + 1} of O(n) (D = {'I' if comp % 2 == 0 else 'diag(-1,1,..,1)'})"
                               if r == n else ""))
-                    charts.append((sc, desc))
+                    charts.append((sc, desc + sc.second_point_text()))
     except ExactTimeout as exc:
         res.verdict = "inconclusive"
         res.message = (str(exc) if str(exc).startswith("the function-field rank") else
