@@ -446,7 +446,7 @@ def coupled_corrected_flow_invariants(s):
 
 
 @claim("coupled-dual-lax-along-corrected-flow", paper=("dual-DC", "LA3*C", "LA4*C", "C-eq"), kind="lax",
-       exact_max_n=3, exact_max_r={4: 1},
+       exact_max_n=3,
        statement=r"\text{(C-eq) with }Y\Pi,\ \kappa=0:\ " + _DUAL_C + r",\ D_1=X^TP,\ D_2=Y^TQ")
 def coupled_dual_lax_along_corrected_flow(s):
     """Theorem dual-DC along the matrix equations (C-eq) with κ = 0 and YΠ in place of QΠ (the flow of (C-neumann)): the 4r×4r Lax equation (LA3*C) with the printed 𝓛(λ), 𝓐(λ) of (LA4*C)."""
