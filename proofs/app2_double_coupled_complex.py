@@ -119,7 +119,7 @@ def double_neumann_dual_lax(s):
 
 
 @double_neumann_dual_lax.claim.correction(
-    "(LA3*D): (λI_n − A)⁻¹ in place of (I_n − λA)⁻¹ in the off-diagonal blocks")
+    "(LA3*D): (λI_n − A)⁻¹ in place of (I_n − λA)⁻¹ in the off-diagonal blocks", exact_max_r={3: 1})
 def double_neumann_dual_lax_corrected(s):
     return {"LA3*D": double_lax_residual(s, lambda t: t.resolvent(t.lam))}
 
@@ -263,7 +263,7 @@ def coupled_neumann_flow(s):
     return coupled_flow_checks(s, Q_Pi=True)
 
 
-@coupled_neumann_flow.claim.correction("(C-eq): YΠ in place of QΠ in the equation for Q̇")
+@coupled_neumann_flow.claim.correction("(C-eq): YΠ in place of QΠ in the equation for Q̇", exact_max_r={4: 2})
 def coupled_neumann_flow_corrected(s):
     return coupled_flow_checks(s, Q_Pi=False)
 
@@ -334,7 +334,7 @@ def coupled_big_lax_normal(s):
     return {"so(n,n)": big_lax_residual(s, H_coupled(NORMAL))}
 
 
-@coupled_big_lax_normal.claim.correction(BIG_CORRECTION, changes=2)
+@coupled_big_lax_normal.claim.correction(BIG_CORRECTION, changes=2, exact_max_r={2: 2, 3: 1})
 def coupled_big_lax_normal_corrected(s):
     return {"so(n,n)": big_lax_residual(s, H_coupled(NORMAL), corrected=True)}
 
@@ -385,7 +385,7 @@ _DUAL_C = (r"\tfrac{d}{dt}\mathcal L(\lambda)=[\mathcal L(\lambda),\mathcal A(\l
            r"\mathbf I_r&D_1&0&0\\0&-\lambda&D_2&\Pi\\0&0&\mathbf I_r&D_2\end{pmatrix}")
 
 
-@claim("coupled-dual-lax", paper=("dual-DC", "LA3*C", "LA4*C", "C-L"), kind="lax", exact_max_n=SYMBOLIC_N_MAX,
+@claim("coupled-dual-lax", paper=("dual-DC", "LA3*C", "LA4*C", "C-L"), kind="lax", exact_max_n=2, exact_max_r={3: 1},
        statement=r"\kappa=0:\ " + _DUAL_C + r",\ D_1=X^TP,\ D_2=Y^TQ")
 def coupled_dual_lax(s):
     """Theorem dual-DC: the r-coupled Neumann system with κ = 0, the flow of (C-neumann) on T*V × T*V, implies the 4r×4r Lax equation (LA3*C) with the printed 𝓛(λ) and 𝓐(λ) of (LA4*C), Λ, Π of (C-L)."""
@@ -402,12 +402,13 @@ def coupled_perturbed_big_lax(s):
     return {"so(n,n)": big_lax_residual(s, H_perturbed(FREE_KAPPA))}
 
 
-@coupled_perturbed_big_lax.claim.correction(BIG_CORRECTION, changes=2)
+@coupled_perturbed_big_lax.claim.correction(BIG_CORRECTION, changes=2, exact_max_r={2: 2, 3: 1})
 def coupled_perturbed_big_lax_corrected(s):
     return {"so(n,n)": big_lax_residual(s, H_perturbed(FREE_KAPPA), corrected=True)}
 
 
-@claim("coupled-perturbed-dual-lax", paper=("LA3*C", "LA4*C", "C-neumann"), kind="lax", exact_max_n=SYMBOLIC_N_MAX,
+@claim("coupled-perturbed-dual-lax", paper=("LA3*C", "LA4*C", "C-neumann"), kind="lax", exact_max_n=2,
+       exact_max_r={3: 1},
        statement=r"H_\kappa:\ " + _DUAL_C + r",\ D_1=(1+2\kappa)X^TP+2\kappa Y^TQ,\ "
                  r"D_2=2\kappa X^TP+(1+2\kappa)Y^TQ\ \text{for every }\kappa")
 def coupled_perturbed_dual_lax(s):
@@ -445,7 +446,7 @@ def coupled_corrected_flow_invariants(s):
 
 
 @claim("coupled-dual-lax-along-corrected-flow", paper=("dual-DC", "LA3*C", "LA4*C", "C-eq"), kind="lax",
-       exact_max_n=1,
+       exact_max_n=3,
        statement=r"\text{(C-eq) with }Y\Pi,\ \kappa=0:\ " + _DUAL_C + r",\ D_1=X^TP,\ D_2=Y^TQ")
 def coupled_dual_lax_along_corrected_flow(s):
     """Theorem dual-DC along the matrix equations (C-eq) with κ = 0 and YΠ in place of QΠ (the flow of (C-neumann)): the 4r×4r Lax equation (LA3*C) with the printed 𝓛(λ), 𝓐(λ) of (LA4*C)."""
@@ -511,8 +512,8 @@ def complex_acceleration(s, z):
     return acc["Z"]
 
 
-@claim("complex-neumann-flow", paper=("W0", "W-Lag", "W-eq", "W-L"), kind="id", exact_max_n=SYMBOLIC_N_MAX,
-       exact_max_r={2: 1, 3: 1, 4: 1},
+@claim("complex-neumann-flow", paper=("W0", "W-Lag", "W-eq", "W-L"), kind="id", exact_max_n=2,
+       exact_max_r={3: 1, 4: 1},
        statement=r"L=\tfrac12\tr(\dot Z^T\dot{\bar Z})-\tfrac12\tr(Z^TA\bar Z),\ \bar Z^TZ=\mathbf I_r:\quad "
                  r"\ddot Z=-AZ+Z\Lambda,\ \ddot{\bar Z}=-A\bar Z+\bar Z\bar\Lambda,\ "
                  r"\Lambda=\bar Z^TAZ-\dot{\bar Z}^T\dot Z=\bar\Lambda^T")
@@ -574,12 +575,12 @@ def complex_neumann_dual_lax(s):
 
 
 @complex_neumann_dual_lax.claim.correction(
-    "(LA3*): (λI_n − A)⁻¹ in place of (I_n − λA)⁻¹ in the off-diagonal blocks")
+    "(LA3*): (λI_n − A)⁻¹ in place of (I_n − λA)⁻¹ in the off-diagonal blocks", exact_max_r={2: 2, 3: 1})
 def complex_neumann_dual_lax_corrected(s):
     return {"LA3*": complex_lax_residual(s, lambda t: t.resolvent(t.lam))}
 
 
-@claim("complex-neumann-momenta", paper=("W-eq", "u(1)"), kind="pb", exact_max_n=SYMBOLIC_N_MAX,
+@claim("complex-neumann-momenta", paper=("W-eq", "u(1)"), kind="pb", exact_max_n=2, exact_max_r={3: 1},
        statement=r"\tfrac{d}{dt}\psi_0=0,\ \psi_0=Z^T\dot{\bar Z}-\dot Z^T\bar Z;\quad \tfrac{d}{dt}\psi_j=0,\ "
                  r"\psi_j=\sum_{i=1}^r\dot z_i^j\bar z_i^j-z_i^j\dot{\bar z}_i^j\ \text{along (W-eq)}")
 def complex_neumann_momenta(s):

@@ -126,7 +126,7 @@ def dual_lax_matrix_is_hamiltonian(s):
 
 
 @claim("dual-lax-spectral-invariants", paper=("LA3", "LA4", "2r-integrals"), kind="pb",
-       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 2, 4: 1},
+       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 3, 4: 1, 5: 1},
        statement=r"\tfrac{d}{dt}\tr\mathcal L^*_{neum}(\lambda)^k=0\ \text{along (N0\_XP2) and (NE\_XP)},\quad "
                  r"\tfrac{d}{d\epsilon}\tr\mathcal L^*_{neum}(\lambda)^k\big|_{(Xe^{\epsilon\eta},Pe^{\epsilon\eta})}=0,"
                  r"\ \eta\in so(r),\ k=2,4")
@@ -250,7 +250,7 @@ def finite_difference(s, values, d):
 
 
 @claim("2r-integrals", paper=("2r-integrals", "LA3", "LA4"), kind="id",
-       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 1, 4: 1},
+       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 3, 4: 1},
        statement=r"|a(\lambda)\mathcal L^*_{neum}(\lambda)-w\mathbf I|=w^{2r}+w^{2r-2}a\mathcal I_2+\dots"
                  r"+a^{2r-1}\mathcal I_{2r}:\ \text{no odd powers of }w,\ \deg_\lambda\mathcal I_{2l}=n-l,\ "
                  r"\text{leading coefficient of }\mathcal I_{2l}=\tbinom rl\ \text{on}\ V")
@@ -398,7 +398,7 @@ def general_line_of_the_spectral_integrals(s):
 
 
 @general_line_of_the_spectral_integrals.claim.correction(
-    "second sum: (e_1 ^ p_1 + ... + e_r ^ p_r)_{I_2}^2 in place of the sum of all (e_j ^ p_i)_{I_2}^2")
+    "second sum: (e_1 ^ p_1 + ... + e_r ^ p_r)_{I_2}^2 in place of the sum of all (e_j ^ p_i)_{I_2}^2", exact_max_r={3: 3})
 def general_line_of_the_spectral_integrals_corrected(s):
     n, r, lam = s.n, s.r, s.lam
     E, Pc = columns(s.X, r), columns(s.P, r)
@@ -453,7 +453,7 @@ def cone_equation(s, V, b):
 
 
 @claim("tangency", paper=("tangency", "cone0"), kind="geo",
-       sizes=admissible(n_max=5), exact_max_n=3, exact_max_r={4: 2, 5: 4, 6: 3, 7: 3},
+       sizes=admissible(n_max=5), exact_max_n=3, exact_max_r={4: 4, 5: 4, 6: 3, 7: 3},
        statement=r"\det(V^TBV)=\sum_I|B|^I_IG_I^2,\qquad V^TB\,v=\det(V^TBV)\,E_1,\ \ "
                  r"\langle v,Bv\rangle=\det(V^TBV)\,\mathrm{adj}(V^TBV)_{11},\ \ v=V\,\mathrm{adj}(V^TBV)E_1")
 def planes_tangent_to_a_cone(s):
@@ -801,6 +801,7 @@ def manakov_dual_integrals(s):
 
 @claim("manakov-j2r-vanishes", paper=("Chasles-Manakov", "MAN-LA2"), kind="id",
        sizes=admissible(n_max=5, where=lambda n, r: 2 * r > n, condition="2r > n"), exact_max_n=2,
+       exact_max_r={3: 3},
        statement=r"2r>n:\ \mathcal J_{2r}(\lambda)=a(\lambda)\det\mathcal L^*_{man}(\lambda)="
                  r"\sum_{I_{2r}}\frac{a(\lambda)|\Phi|^{I_{2r}}_{I_{2r}}}{\prod(\lambda-a_i)}=0,\quad "
                  r"\mathcal J_{2l}(\lambda)=0\ \text{for}\ 2l>n")

@@ -467,6 +467,20 @@ class Scene(PaperObjects):
                 a[i, j] = self._param(param_name(name, i, j))
         return M
 
+    def _normal_params(self, name: str, n: int, r: int) -> Mat:
+        """The n x r matrix Z of the normal part (I − XXᵀ)Z of a tangent vector at a point X of a
+        symbolic chart, with its first r rows 0 and the rest fresh parameters (named by their rows,
+        as in a full Z).  At every X whose top r x r block X1 is invertible (a dense open set of the
+        chart: X1 = I at its origin), Z2 ↦ (I − XXᵀ)[0; Z2] is injective ([0; Z2] = XC gives X1 C = 0)
+        between spaces of the dimension (n − r)r of the normal space {N : XᵀN = 0}, so onto it: the
+        chart stays dense in the tangent (cotangent) bundle with r² fewer parameters.  The same holds
+        over ℂ with Xᴴ for the realified complex point (then for the real and imaginary parts)."""
+        Z = self.zeros(n, r, ("n", "r"))
+        for i in range(r, n):
+            for j in range(r):
+                Z._a[i, j] = self._param(param_name(name, i, j))
+        return Z
+
     def _no_point(self, what: str) -> None:
         """On the diagonal chart (O(n) spent on A alone), a point of T*V has no place: raise
         :class:`PointRead` (the symbolic method then takes the chart that fixes the point)."""
@@ -521,6 +535,14 @@ class Scene(PaperObjects):
             self._done_with(S, plus, inverse, J)
             del S, plus, inverse
             W = self._skew_params(f"{prefix}W", r, "r")
+            if r == n and isinstance(self._field, SymbolicField):
+                # X is in O(n): I - XXᵀ = 0 identically on the symbolic chart, and P = XW is every
+                # tangent vector (no Z, whose parameters would cancel only after every product)
+                P0 = X @ W
+                if self._realization == "metric":
+                    P0 = self.A @ P0
+                self._done_with(In, W)
+                return X, P0
             Z = self._general_params(f"{prefix}Z", n, r, ("n", "r"))
             XW = X @ W
             P0 = XW + (Z - X @ (X.T @ Z))
@@ -563,7 +585,7 @@ class Scene(PaperObjects):
         E = Mat._consts(np.eye(n, r, dtype=np.int64), self._field, ("n", "r"), tr)
         X = (E @ (Ir - S11 - KtK) - Kfull * self.const(2)) @ (Ir + S11 + KtK).inv()
         W = self._skew_params(f"{prefix}W", r, "r")
-        Z = self._general_params(f"{prefix}Z", n, r, ("n", "r"))
+        Z = self._normal_params(f"{prefix}Z", n, r)      # X1 = (I - S11 - KᵀK)M⁻¹ = I at the origin
         In = self.identity(n, "n")
         P0 = X @ W + (In - X @ X.T) @ Z
         if self._realization == "metric":
@@ -711,17 +733,20 @@ class Scene(PaperObjects):
                    "realify(g) Z realify(h)^T and leave it anywhere, Z = [I - S11 - K*K; -2K] M^{-1}, "
                    "M = I + S11 + K*K (the first r columns of the unitary Cayley transform of "
                    "[[S11, -K*], [K, 0]], S11 skew-Hermitian, K generic complex; dense in W(n, r)), "
-                   "Zdot = ZW' + (I - ZZ*)Y' (W' skew-Hermitian, Y' generic)")
+                   "Zdot = ZW' + (I - ZZ*)Y' (W' skew-Hermitian, Y' generic with its first r rows 0: onto the normal "
+                   "space where the top r x r block of Z is invertible, a dense open set)")
         if not self._second_point_read:
             return out
         comp = ""
         if self.n == self.r:
-            comp = (f"; component {self.component % 2 + 1} of O(n) for Y "
-                    f"(D = {'I' if self.component % 2 == 0 else 'diag(-1,1,..,1)'})")
+            c = (self.component // 2 if self.chart == "cayley" else self.component) % 2
+            comp = (f"; component {c + 1} of O(n) for Y "
+                    f"(D = {'I' if c == 0 else 'diag(-1,1,..,1)'})")
         return ("; the second point (Y, Q) of T*V(n, r) generic: (g, h) act on it as on (X, P) and leave "
                 "it anywhere, Y = [I - S11 - K^T K; -2K] M^{-1} D, M = I + S11 + K^T K (the first r columns "
                 "of the Cayley transform of [[S11, -K^T], [K, 0]], S11 skew, K generic; dense in V(n, r)"
-                + comp + "), Q = YW' + (I - YY^T)Z' (W' skew, Z' generic)" + out)
+                + comp + "), Q = YW' + (I - YY^T)Z' (W' skew, Z' generic with its first r rows 0: onto the normal space "
+                "where the top r x r block of Y is invertible, a dense open set)" + out)
 
     def _equivariant_second_point(self, prefix: str = "second_") -> tuple[Mat, Mat]:
         """A generic second point (Y, Q) of T*V(n, r) on the equivariant chart: the first r columns
@@ -755,7 +780,7 @@ class Scene(PaperObjects):
             Dr[0, 0] = -1
             Y = Y @ Mat._consts(Dr, self._field, ("r", "r"), tr)
         W = self._skew_params(f"{prefix}W", r, "r")
-        Z = self._general_params(f"{prefix}Z", n, r, ("n", "r"))
+        Z = self._normal_params(f"{prefix}Z", n, r)      # Y1 = I at the chart's origin: generic
         In = self.identity(n, "n")
         Q = Y @ W + (In - Y @ Y.T) @ Z
         self._done_with(Ir, S11, Kfull, KtK, M, E, N, W, Z, In)
@@ -811,7 +836,11 @@ class Scene(PaperObjects):
     def _complex_point(self):
         self._no_point("a point of W(n, r)")
         n, r = self.n, self.r
-        if self.chart == "equivariant" and self._realization == "standard":
+        if (self.chart == "equivariant" and self._realization == "standard"
+                or self.chart == "cayley" and isinstance(self._field, SymbolicField)):
+            # on the symbolic Cayley chart (A = diag(a)) the point is the same reduced unitary Cayley
+            # transform: dense in W(n, r) whatever A is, with one complex r x r inverse instead of a
+            # complex n x n one
             self._complex_point_read = True
             return self._equivariant_complex_point()
         S = self.realify(self._skew_params("cS", n, "n"), self._sym_params("cH", n, "n"))
@@ -850,7 +879,7 @@ class Scene(PaperObjects):
         E = self.realify(Mat._consts(E0, f, ("n", "r"), tr), Mat._consts(0 * E0, f, ("n", "r"), tr))
         Z = (E @ (I2r - S11 - KtK) - Kc * self.const(2)) @ M.inv()
         W = self.realify(self._skew_params("cW", r, "r"), self._sym_params("cK", r, "r"))
-        Y = self.realify(self._general_params("cY", n, r, ("n", "r")), self._general_params("cV", n, r, ("n", "r")))
+        Y = self.realify(self._normal_params("cY", n, r), self._normal_params("cV", n, r))
         I2 = self.identity(2 * n, "n+n")
         return Z, Z @ W + (I2 - Z @ Z.T) @ Y
 

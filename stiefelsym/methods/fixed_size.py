@@ -579,7 +579,9 @@ CAYLEY_REDUCTION = (
 REDUCED_CAYLEY_REDUCTION = (
     "rational parametrization: X = first r columns of (I - S)(I + S)^{-1} for S = [[S11, -K^T], [K, 0]] "
     "(S11 skew r x r, K generic (n - r) x r), i.e. X = [I - S11 - K^T K; -2K] M^{-1}, M = I + S11 + K^T K; "
-    "P = XW + (I - XX^T)Z (W skew, Z arbitrary), A = diag(a); the map (S11, K) -> X has an injective "
+    "P = XW + (I - XX^T)Z (W skew, Z = [0; Z2] with Z2 arbitrary (n - r) x r: onto the normal space "
+    "{N : X^T N = 0} wherever the top r x r block X1 = (I - S11 - K^T K)M^{-1} of X is invertible, a "
+    "dense open set), A = diag(a); the map (S11, K) -> X has an injective "
     "differential at 0 onto the tangent space of the irreducible V(n, r): dense in T*V(n, r)")
 
 
@@ -710,6 +712,8 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                     res.rerun = ""
                     return res
                 evaluations = []
+                # r = n: both components of O(n) for X (bit 0 of comp); with a second point (Y, Q),
+                # read on the first evaluation, both for Y as well (bit 1): the four combinations
                 comps = [0, 1] if r == n else [0]
                 for comp in comps:
                     def build_cayley(comp=comp) -> tuple:
@@ -719,16 +723,13 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                                                build_cayley, func, graph)
                     evaluations.append(_evaluate(ch, f2, lambda R, f2=f2: _exact_rank(
                         R, f2, randomized, lambda: degree_bound(claim, n, r, func).numerator, key)))
-                    if r == n and len(comps) == 2 and sc.second_point_read:
-                        # the second point (Y, Q) on each component of O(n) with each of X's
+                    if r == n and sc.second_point_read and len(comps) == 2:
                         comps += [2, 3]
-                    sign = lambda c: 'I' if c % 2 == 0 else 'diag(-1,1,..,1)'  # noqa: E731
                     desc = REDUCED_CAYLEY_REDUCTION if r < n else CAYLEY_REDUCTION.format(
                         D=" D" if r == n else "",
-                        comp=(f"; component {comp % 2 + 1} of O(n) (D = {sign(comp)})"
-                              + (f", for the second point Y component {comp // 2 + 1} (D = {sign(comp // 2)})"
-                                 if sc.second_point_read else "") if r == n else ""))
-                    charts.append((sc, desc))
+                        comp=(f"; component {comp % 2 + 1} of O(n) (D = {'I' if comp % 2 == 0 else 'diag(-1,1,..,1)'})"
+                              if r == n else ""))
+                    charts.append((sc, desc + sc.second_point_text()))
     except ExactTimeout as exc:
         res.verdict = "inconclusive"
         res.message = (str(exc) if str(exc).startswith("the function-field rank") else

@@ -1,0 +1,87 @@
+"""The symbolic budgets raised where the exact proof became cheap (the normal part [0; Z2] of the
+charts, the reduced unitary Cayley point on the symbolic Cayley chart): at the new sizes the exact
+method proves the claim, and a corrupted claim of each class moved is refuted exactly there.
+
+Classes: the second point (Y, Q) on the equivariant chart (the coupled Lax pairs, n = 2, 3); the
+complex point on the Cayley chart (the complex Neumann system, n = 2, 3); the coordinate readers on
+the reduced Cayley chart (the Manakov reflections, n = 3)."""
+from __future__ import annotations
+
+import pytest
+
+import stiefelsym.proofs.app2_double_coupled_complex as a
+import stiefelsym.proofs.sec4_integrability as m
+from stiefelsym import admissible, twisted
+from stiefelsym.claims import Claim, load_catalog
+from stiefelsym.methods.fixed_size import run_exact
+
+
+def _claim(func, cid="t-raised"):
+    return Claim(id=cid, paper=("prep",), kind="id", section="t", func=func, sizes=admissible(7))
+
+
+def _coupled_dual_lax_wrong_diagonal(s):
+    """(LA3*C) with D2 = YᵀQ + I_r: the identity added to a diagonal block of 𝓐(λ) (XᵀP alone is 0 for r = 1)."""
+    return {"LA3*C": a.dual_coupled_residual(s, a.H_coupled(a.NORMAL),
+                                             lambda t, z: (z["X"].T @ z["P"], z["Y"].T @ z["Q"] + t.Ir))}
+
+
+def _reflections_forget_S_on_P(s):
+    """The reflection S₁ applied to X alone in the image of the flow: dP/dt of (S X, S P) against dP/dt."""
+    V = m.flow_XP3(s)
+    S = twisted.reflection(s)
+    W = m.flow_XP3_at(s, S @ s.X, S @ s.P)
+    return {"S: dP/dt": W["P"] - V["P"]}
+
+
+@pytest.mark.parametrize("n,r", [(2, 2), (3, 1)])
+def test_the_coupled_dual_lax_pair_is_proved_and_a_wrong_diagonal_refuted(n, r):
+    c = load_catalog().get("coupled-dual-lax")
+    assert c.exact_at(n, r)
+    assert run_exact(c, n, r, 0).verdict == "proved"
+    res = run_exact(_claim(_coupled_dual_lax_wrong_diagonal), n, r, 0)
+    assert res.verdict == "fails", (res.verdict, res.message)
+    assert any("second point (Y, Q)" in d for d in res.reductions), res.reductions
+
+
+@pytest.mark.parametrize("n,r", [(2, 1), (3, 1)])
+def test_the_complex_dual_lax_pair_corrected_is_proved_and_the_printed_one_refuted(n, r):
+    c = load_catalog().get("complex-neumann-dual-lax")
+    corr = c.corrections[0]
+    assert (n, r) in {(2, 1), (2, 2), (3, 1)} and dict(corr.exact_max_r).get(n, 0) >= r
+    res = run_exact(c, n, r, 0, corr.func)
+    assert res.verdict == "proved", (res.verdict, res.message)
+    assert any("unitary Cayley transform" in d and "A = diag(a)" in d for d in res.reductions), res.reductions
+    if n == 2:
+        assert run_exact(c, n, r, 0).verdict == "fails"        # (I_n − λA)⁻¹ as printed
+
+
+def test_the_complex_momenta_are_proved_on_the_cayley_chart():
+    c = load_catalog().get("complex-neumann-momenta")
+    assert c.exact_at(3, 1)
+    res = run_exact(c, 3, 1, 0)
+    assert res.verdict == "proved", (res.verdict, res.message)
+    assert any("unitary Cayley transform" in d for d in res.reductions), res.reductions
+
+
+@pytest.mark.parametrize("n,r", [(3, 2), (3, 3)])
+def test_the_manakov_reflections_are_proved_and_a_forgotten_reflection_refuted(n, r):
+    c = load_catalog().get("manakov-reflections")
+    assert c.exact_at(n, r)
+    assert run_exact(c, n, r, 0).verdict == "proved"
+    res = run_exact(_claim(_reflections_forget_S_on_P), n, r, 0)
+    assert res.verdict == "fails", (res.verdict, res.message)
+
+
+def _same_component_read_entrywise(s):
+    """det(XᵀY) = 1 (r = n = 2), with an entry of X read (the Cayley chart): true only when X and Y
+    lie on one component of O(n)."""
+    M = s.X.T @ s.Y
+    return {"det(X^T Y) - 1": M[0, 0] * M[1, 1] - M[0, 1] * M[1, 0] - s.q(1) + (s.X[0, 0] - s.X[0, 0])}
+
+
+def test_the_cayley_chart_puts_the_second_point_on_either_component():
+    res = run_exact(_claim(_same_component_read_entrywise), 2, 2, 0)
+    assert res.verdict == "fails", (res.verdict, res.message)
+    assert any("A = diag(a)" in d and "component 2 of O(n) for Y" in d for d in res.reductions), res.reductions
+    assert len(res.reductions) == 4
