@@ -335,7 +335,8 @@ def test_a_reviewed_reason_is_not_lent_to_a_mutant_that_reads_other_coordinates(
     reads entries of an n x n matrix and is true (a full rank: r(r-1)/2 + r(r+1)/2 rows, rank r^2 = ddim
     here).  With the printed claim's reason lent to it, the equivariant chart X = X0 made its rank 0 and
     the exact method refuted it; the reason now stays with the claim's own function and its registered
-    corrections, and the mutant goes to the Cayley chart."""
+    corrections; the exact method leaves such a mutant inconclusive (its Cayley chart, ranks of Jacobians in
+    coordinates, is beyond the mutation analysis' budget: up to 18 GB at n = 4)."""
     from stiefelsym.methods.fixed_size import run_exact
     from stiefelsym.proofs.sec2_hamiltonian_flows import ddim_printed, vertical_directions
     from stiefelsym import Rank
@@ -355,9 +356,11 @@ def test_a_reviewed_reason_is_not_lent_to_a_mutant_that_reads_other_coordinates(
     own = run_exact(printed, 4, 1, 0)
     assert own.verdict == "proved" and any("about the fibre" in x for x in own.reductions), own.reductions
     res = run_exact(printed, 4, 1, 0, func=mutant)
-    assert res.verdict == "proved", (res.verdict, res.message)
-    assert not any("about the fibre" in x for x in res.reductions), res.reductions
-    assert any("rational parametrization" in x for x in res.reductions), res.reductions
+    assert res.verdict == "inconclusive", (res.verdict, res.message)
+    assert "reviewed reason of equivariance" in res.message and "own function" in res.message, res.message
+    # the mutant is true: the point methods pass it, and the exact method on the Cayley chart proves it
+    assert run_exact(Claim(id="mutant", paper=("ddim",), kind="dim", section="t", func=mutant,
+                           sizes=admissible(4)), 4, 1, 0).verdict == "proved"
 
 
 def eigenvalues_with_a_reason(s):

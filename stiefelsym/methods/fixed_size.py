@@ -676,9 +676,21 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
             # a stated reason is relied on only for the reviewed catalog: a user's claims file
             # cannot buy the reduction with a sentence.  It was reviewed for the claim's own function
             # and its registered corrections: a mutant (another function) reads other coordinates
-            reason = claim.equivariance if claim.reviewed and _reviewed_function(claim, func) else ""
+            reviewed = claim.reviewed and bool(claim.equivariance)
+            reason = claim.equivariance if reviewed and _reviewed_function(claim, func) else ""
             if scene is None or scene.tracker.spaces != ("n",):
-                reason = ""      # a stated reason speaks of O(n); this chart also reduces by O(r)
+                reason = reviewed = ""   # a stated reason speaks of O(n); this chart also reduces by O(r)
+            if reviewed and not reason and coords and not missing:
+                # another function of a catalog claim whose own function reads these coordinates under
+                # a reviewed reason (a mutant): the printed claim's chart is not lent to it, and the
+                # Cayley chart of such a claim (ranks of Jacobians in coordinates) is beyond this budget
+                res.verdict = "inconclusive"
+                res.message = (f"the function reads {', '.join(coords)}; the reviewed reason of equivariance of "
+                               f"claim {claim.id} holds for its own function and registered corrections only, "
+                               "and the symbolic Cayley chart is not tried for another function of it")
+                res.seconds = time.perf_counter() - t0
+                res.rerun = ""
+                return res
             if not missing and (not coords or reason):
                 why = (covariant_by_construction(scene.tracker.spaces) if not coords else
                        f"(the claim reads {', '.join(coords)}) {reason}")
