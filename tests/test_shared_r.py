@@ -15,8 +15,10 @@ from stiefelsym.scene import REALIZATIONS
 needs_fork = pytest.mark.skipif(not hasattr(os, "fork"), reason="workers need os.fork")
 
 
-def _claim(cid, func, n_max=3, **kw) -> Claim:
-    return Claim(id=cid, paper=("t",), kind="id", section="9", func=func, sizes=admissible(n_max=n_max), **kw)
+def _claim(cid, func, n_max=3, reviewed=True, **kw) -> Claim:
+    """A claim standing for one of the reviewed catalog (the only claims a plan traces in the parent)."""
+    return Claim(id=cid, paper=("t",), kind="id", section="9", func=func, sizes=admissible(n_max=n_max),
+                 reviewed=reviewed, **kw)
 
 
 def _commutator_symmetric(s):
@@ -147,3 +149,26 @@ def test_a_claim_that_reads_r_is_not_shared():
     verdicts = {(res.n, res.r): res.verdict for res in results if res.n is not None}
     assert verdicts == {(1, 1): "proved", (2, 1): "proved", (2, 2): "fails"}
     assert not any("involves no dimension r" in h for res in results for h in res.reductions)
+
+
+def test_a_users_claim_is_not_traced_in_the_parent_to_plan():
+    """Sharing across r is planned in the parent for the reviewed catalog only: a user's claim (not reviewed)
+    runs as one task per size, traced in budgeted workers only (a claim that sleeps while traced once hung
+    the parent's plan)."""
+    calls = []
+
+    def counted(s):
+        calls.append(1)
+        return {"A - A^T": s.A - s.A.T}
+
+    from stiefelsym.run.runner import _run_shared
+    c = _claim("user", counted, reviewed=False)
+    tasks = [(0, 3, r, "modular", -1) for r in (1, 2, 3)]
+    seen = []
+
+    def run(ts):
+        seen.append(list(ts))
+        return iter([])
+
+    list(_run_shared(run, tasks, [c]))
+    assert seen == [tasks] and calls == []

@@ -553,7 +553,9 @@ def _run_shared(run: Callable[[list[Task]], Iterable[tuple[int, Outcome]]], task
     for t in tasks:
         ci, n, r, m, k = t
         key = t
-        if n is not None:
+        # only the reviewed catalog's claims are traced here, in the parent, to plan: claim code of
+        # anyone else runs in budgeted workers only (a claim that hangs or sleeps while traced)
+        if n is not None and claims[ci].reviewed:
             c = claims[ci]
             shared = shared_size(c.corrected(k) if k >= 0 else c, Size(n, r),
                                  c.corrections[k].func if k >= 0 else None, screen=True)
