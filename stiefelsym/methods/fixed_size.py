@@ -680,14 +680,16 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
             reason = claim.equivariance if reviewed and _reviewed_function(claim, func) else ""
             if scene is None or scene.tracker.spaces != ("n",):
                 reason = reviewed = ""   # a stated reason speaks of O(n); this chart also reduces by O(r)
-            if reviewed and not reason and coords and not missing:
+            if reviewed and not reason and coords and not missing and _LOAN is not None:
                 # another function of a catalog claim whose own function reads these coordinates under
-                # a reviewed reason (a mutant): the printed claim's chart is not lent to it, and the
-                # Cayley chart of such a claim (ranks of Jacobians in coordinates) is beyond this budget
+                # a reviewed reason (a mutant): the printed claim's chart is not lent to it, and in the
+                # mutation analysis the Cayley chart of such a claim (ranks of Jacobians in coordinates)
+                # is beyond its budget (outside it, the function goes to the Cayley chart below)
                 res.verdict = "inconclusive"
                 res.message = (f"the function reads {', '.join(coords)}; the reviewed reason of equivariance of "
                                f"claim {claim.id} holds for its own function and registered corrections only, "
-                               "and the symbolic Cayley chart is not tried for another function of it")
+                               "and in the mutation analysis the symbolic Cayley chart is not tried for another "
+                               "function of it")
                 res.seconds = time.perf_counter() - t0
                 res.rerun = ""
                 return res
