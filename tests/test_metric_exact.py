@@ -109,6 +109,7 @@ def test_metric_flow_exact_and_a_corrupted_lambda_equation_fails(common, monkeyp
         assert run_one(bad, Size(n, r), "exact", 0).verdict == "fails", (n, r)
 
 
+@pytest.mark.slow
 def test_metric_flow_exact_at_n_12_and_a_corrupted_lambda_equation_fails():
     """At n = 12 (entrywise Λ in flint): metric-flow proved at r = 4 and 8; the Λ equation with
     the factor 2 of its last term replaced by 1 fails (at r = 3: reading out the entries of a

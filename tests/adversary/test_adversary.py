@@ -12,6 +12,7 @@ import pytest
 #: the exact variant of a test whose exact run takes the longest (its symbolic attempt at (3,2) runs to its
 #: budget or its end): run with the tests marked slow (`make verify-all`); the other methods run by default
 EXACT_SLOW = pytest.param("exact", marks=pytest.mark.slow)
+FLOAT_SLOW = pytest.param("float", marks=pytest.mark.slow)
 
 from adversary_cli import HERE, LINE, PASSING, ROOT, cli, parse, run_verify  # noqa: E402,F401
 
@@ -347,7 +348,7 @@ def test_column_letters_misuse_is_never_proved():
     assert all(v[c] not in PASSING for c in SQUARE_R_N + ("adv-last-every-r",)), v
 
 
-@pytest.mark.parametrize("method", ["exact", "modular", "float"])
+@pytest.mark.parametrize("method", ["exact", "modular", FLOAT_SLOW])
 def test_column_letters_misuse_fails_at_a_fixed_size(method):
     at_r2 = tuple(c for c in COLUMNS_R2 if c not in ("adv-cols-range-r", "adv-cols-r23"))   # true at r = 2
     v = verdicts("columns_one_r.py", method, size="3,2", ids=at_r2 + ("adv-point-reflected-control",))
@@ -683,7 +684,7 @@ def test_a_resolvent_at_an_eigenvalue_at_the_probe_size_is_not_proved():
     assert all(v[c] not in PASSING for c in EIGEN), v
 
 
-@pytest.mark.parametrize("method", ["exact", "modular", "float"])
+@pytest.mark.parametrize("method", ["exact", "modular", FLOAT_SLOW])
 def test_a_resolvent_at_an_eigenvalue_is_not_passed_at_a_fixed_size(method):
     for size in ("3,2", "2,2"):
         v = verdicts(NEW_LETTERS, method, size=size, ids=EIGEN + (EIGEN_OFF_PROBE,))
