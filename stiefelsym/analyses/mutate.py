@@ -1307,11 +1307,11 @@ def run_mutation(claims: Sequence[Claim], sizes: Sequence[Size] | None = None,
     (:func:`graph_mutants`; no Python of the claim runs again), or its graphs per size where they have
     one skeleton (the others are reported as not covered); "auto": graphs where they can be, the source
     otherwise."""
-    from stiefelsym.methods.fixed_size import PointLoan, lending_points
+    from stiefelsym.methods.fixed_size import PointLoan, lending_points, mutation_analysis
     if on not in MUTATION_MODES:
         raise ValueError(f"unknown mutation mode {on!r} (one of {', '.join(MUTATION_MODES)})")
     loan = PointLoan(exact_seconds=MUTANT_EXACT_SECONDS)
-    with lending_points(loan) if lend else contextlib.nullcontext():
+    with mutation_analysis(), lending_points(loan) if lend else contextlib.nullcontext():
         return _run_mutation(claims, sizes, methods, seed, on_result, limit, only, jobs, loan, on)
 
 
@@ -1531,9 +1531,9 @@ def search_corrections(claim: Claim, sizes: Sequence[Size] | None = None,
     found: list[Mutant] = []
     pool = list(correction_candidates(claim) if candidates is None else candidates)
     pool.sort(key=lambda m: m.operator == "sign2")   # one-step candidates first (stable)
-    from stiefelsym.methods.fixed_size import PointLoan, lending_points
+    from stiefelsym.methods.fixed_size import PointLoan, lending_points, mutation_analysis
     loan = PointLoan()
-    with lending_points(loan):
+    with mutation_analysis(), lending_points(loan):
         # the printed formula's points, lent to every candidate (which recomputes only what it changed)
         loan.recording = True
         try:

@@ -680,7 +680,7 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
             reason = claim.equivariance if reviewed and _reviewed_function(claim, func) else ""
             if scene is None or scene.tracker.spaces != ("n",):
                 reason = reviewed = ""   # a stated reason speaks of O(n); this chart also reduces by O(r)
-            if reviewed and not reason and coords and not missing and _LOAN is not None:
+            if reviewed and not reason and coords and not missing and _MUTATION_ANALYSIS:
                 # another function of a catalog claim whose own function reads these coordinates under
                 # a reviewed reason (a mutant): the printed claim's chart is not lent to it, and in the
                 # mutation analysis the Cayley chart of such a claim (ranks of Jacobians in coordinates)
@@ -1346,6 +1346,24 @@ class lending_points:
     def __exit__(self, *exc: Any) -> None:
         global _LOAN
         _LOAN = self._old
+
+
+#: whether a mutation analysis (or a correction search) runs, lent points or not (:class:`mutation_analysis`)
+_MUTATION_ANALYSIS = False
+
+
+class mutation_analysis:
+    """A context in which the exact method leaves another function of a catalog claim that reads
+    coordinates under a reviewed reason inconclusive (a mutant: see :func:`run_exact`), whether or
+    not the points are lent."""
+
+    def __enter__(self) -> None:
+        global _MUTATION_ANALYSIS
+        self._old, _MUTATION_ANALYSIS = _MUTATION_ANALYSIS, True
+
+    def __exit__(self, *exc: Any) -> None:
+        global _MUTATION_ANALYSIS
+        _MUTATION_ANALYSIS = self._old
 
 
 POINTS_MIN = 2            # points per component, at least
