@@ -67,6 +67,17 @@ __all__ = ["derivative", "entries", "symmetric_entries", "hermitian_entries", "r
            "complex_point", "real_complex_point", "ctranspose", "realify_real", "re_trace", "complex_diagonal"]
 
 
+def _check_tangent(point: Mapping, tangent: Mapping) -> None:
+    """A tangent vector at a point of the caller's own: it moves only the point's variables, each
+    component a matrix of its variable's shape."""
+    extra = set(tangent) - set(point)
+    if extra:
+        raise KeyError(f"a tangent vector moves the variables of the point, not {sorted(map(str, extra))}")
+    for k, v in tangent.items():
+        if not isinstance(v, Mat) or v.shape != point[k].shape:
+            raise ValueError(f"the {k}-component of a tangent vector must be a matrix of the shape of {k}")
+
+
 def _coordinate_scene(s: Any, what: str) -> None:
     if isinstance(s, TraceScene):
         if s._t.symbolic:
@@ -86,12 +97,7 @@ def derivative(s: Scene, F: Callable[[Scene, dict], Any], point: Point, tangent:
     if not isinstance(s, (Scene, TraceScene)) and hasattr(s, "derivative_at_own_point"):
         return s.derivative_at_own_point(F, point, tangent)   # the dimension-free scene, at its own point
     _coordinate_scene(s, "a derivative at a point of a phase space other than T*V")
-    extra = set(tangent) - set(point)
-    if extra:
-        raise KeyError(f"a tangent vector moves the variables of the point, not {sorted(map(str, extra))}")
-    for k, v in tangent.items():
-        if not isinstance(v, Mat) or v.shape != point[k].shape:
-            raise ValueError(f"the {k}-component of a tangent vector must be a matrix of the shape of {k}")
+    _check_tangent(point, tangent)
 
     def lifted(t):
         z = {k: t._lift(M, tangent.get(k)) for k, M in point.items()}
@@ -781,12 +787,7 @@ def graph_tangent(s: Scene, point: Point, tangent: Mapping[Hashable, Mat], keys:
     if not isinstance(s, Scene):
         raise TypeError(f"a derivative at a point on a {type(s).__name__} (not a coordinate scene)")
     _coordinate_scene(s, "a derivative at a point of a phase space other than T*V")
-    extra = set(tangent) - set(point)
-    if extra:
-        raise KeyError(f"a tangent vector moves the variables of the point, not {sorted(map(str, extra))}")
-    for k, v in tangent.items():
-        if not isinstance(v, Mat) or v.shape != point[k].shape:
-            raise ValueError(f"the {k}-component of a tangent vector must be a matrix of the shape of {k}")
+    _check_tangent(point, tangent)
     out = {}
     for k in keys:
         M = point[k]

@@ -1409,6 +1409,16 @@ POINT_TANGENT = "stiefelsym.systems.derivative:tangent"
 PAIRS_FLOW = "stiefelsym.systems.stiefel_pairs_flow:graph"
 
 
+def _claim_scene_function(g: Graph, scene: Any, f: Any, what: str) -> tuple:
+    """:func:`_point_function` of ``f`` for a step on the claim's own scene, whose value is not a constant."""
+    if type(scene) is not Ref or g.ops[scene.i] != "scene" or g.args[scene.i] != (0,):
+        raise Unsupported(f"{what} on a scene other than the claim's (inside a function of the scene)")
+    k, body, param = _point_function(g, f, what)
+    if type(body) is not Ref:
+        raise Unsupported(f"{what} of a function whose value is a constant")
+    return k, body, param
+
+
 def _point_function(g: Graph, f: Any, what: str) -> tuple[int, Any, int | None]:
     """(k, body, the node of its point) of a traced function of a scene and of a point."""
     if type(f) is not Ref or g.ops[f.i] != "fn":
@@ -1499,11 +1509,7 @@ class _PointGradient(_Gradient):
     def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, scene: Any, f: Any, point: Any,
                  what: str, wrt: frozenset | None = None) -> None:
         self.g, self.deps, self.new, self.remap = g, deps, new, remap
-        if type(scene) is not Ref or g.ops[scene.i] != "scene" or g.args[scene.i] != (0,):
-            raise Unsupported(f"{what} on a scene other than the claim's (inside a function of the scene)")
-        self.k, self.body, self.param = _point_function(g, f, what)
-        if type(self.body) is not Ref:
-            raise Unsupported(f"{what} of a function whose value is a constant")
+        self.k, self.body, self.param = _claim_scene_function(g, scene, f, what)
         if type(point) is not Ref:
             raise Unsupported(f"{what} at a point that is not a value of the graph")
         self.S, self.point, self.wrt = remap[scene.i], point, wrt      # (the point: a node of the new graph)
@@ -1635,11 +1641,7 @@ class _PointSecond(_PointDerivative):
     def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, scene: Any, f: Any, point: Ref,
                  tangent: Ref, what: str) -> None:
         self.g, self.deps, self.new, self.remap = g, deps, new, remap
-        if type(scene) is not Ref or g.ops[scene.i] != "scene" or g.args[scene.i] != (0,):
-            raise Unsupported(f"{what} on a scene other than the claim's (inside a function of the scene)")
-        self.k, self.body, self.param = _point_function(g, f, what)
-        if type(self.body) is not Ref:
-            raise Unsupported(f"{what} of a function whose value is a constant")
+        self.k, self.body, self.param = _claim_scene_function(g, scene, f, what)
         self.S, self.point, self.flow, self.keys = remap[scene.i], point, None, None
         self._v = tangent
         self.P, self.D, self.read, self._tangent = {}, {}, set(), None
