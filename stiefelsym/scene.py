@@ -1638,10 +1638,12 @@ class Scene(PaperObjects):
         on every coordinate scene (their multipliers stay the engine's), and so do the derivatives and flows at
         points of the caller's own (:mod:`stiefelsym.systems`); on the metric realization the Dirac flow takes
         the graph's gradient of H (its multipliers the scene's: :meth:`_graph_dirac_flow`)."""
-        from stiefelsym.ir.derivative import GRADIENT_FLOW, SYSTEMS, TWISTED
+        from stiefelsym.ir.derivative import GRADIENT_FLOW, SYSTEMS, TWISTED, TWISTED_NODES
         kinds = {"canonical_flow", TWISTED, SYSTEMS}
         if self.realization == "metric":
             kinds.add(GRADIENT_FLOW)
+        if self.realization == "standard" and not isinstance(self, _LiftedScene):
+            kinds.add(TWISTED_NODES)    # (cond_XP)'s constraint gradients in closed form: brackets of brackets
         approx = self._approximates_point()
         if (CLOSED_FORM_MULTIPLIERS and self.realization == "standard" and self.chart in ("cayley", "equivariant")
                 and (self._field.exact or approx)

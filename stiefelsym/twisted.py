@@ -505,5 +505,19 @@ def graph_bracket(s: Scene, f: Function, g: Function, F: Mat | None, eps: Any, p
     return _bracket(s, F, lambda: (pf, pg))
 
 
+def graph_solve(s: Scene, C: Mat, b: Mat, F: Mat) -> Mat:
+    """x with C x = b for C the constraint bracket matrix {F_i, F_j}_ε of the field strength F at the scene's
+    point, as the graph computed it (the XᵀX constraints, then the XᵀP + PᵀX ones): x = C⁻¹b with the
+    scene's own inverse, the one its flows and brackets use (over an exact field, C is checked to be the
+    scene's matrix).  Engine step of the transformed graphs (a magnetic bracket as graph nodes)."""
+    s = _scene(s, "the twisted Dirac bracket")
+    key = None if F is s._cache.get("twisted:F") else F
+    if s.field.exact and not (C - Mat._rows(constraint_bracket_matrix(s, key), s.field, C.tags)).is_zero():
+        raise AssertionError("the graph's constraint bracket matrix is not the scene's")
+    Cinv = Mat._rows(_inverse(s, key), s.field, (C.tags[1], C.tags[0]), b.tracker)
+    return Cinv @ b
+
+
 PRIMITIVES[f"{__name__}.flow:graph"] = graph_flow
 PRIMITIVES[f"{__name__}.bracket:graph"] = graph_bracket
+PRIMITIVES[f"{__name__}.solve:graph"] = graph_solve

@@ -934,9 +934,161 @@ def test_magnetic_steps_stay_with_the_free_scene_and_nested_functions():
         return {"b": twisted.bracket(s, H_neumann, lambda t: twisted.bracket(t, H_neumann, lambda u: u.tr(u.Psi)))}
     g = compile_claim(nested, 4, 2, STANDARD)
     s = Scene(4, 2, ModularField(P61), chart="cayley", rng=random.Random(1))
-    whys = [why for _, why in coverage(g, "stiefelsym.twisted.bracket", scene_flows(s))]
+    flows = scene_flows(s) - {deriv.TWISTED_NODES}
+    whys = [why for _, why in coverage(g, "stiefelsym.twisted.bracket", flows)]
     assert len(whys) == 2 and None not in whys         # the outer one's function is a bracket, the inner one's
-    assert _agree(g, 4, 2)                              # scene is the function's
+    assert derivatives(g, flows) is g                   # scene is the function's
+    assert _agree(g, 4, 2)
+
+
+# -- brackets of brackets: the magnetic bracket as graph nodes --------------------------------------
+
+def _jacobi_terms(f, g, h):
+    from stiefelsym import twisted
+
+    def func(s):
+        b = lambda F, G: (lambda t: twisted.bracket(t, F, G))      # noqa: E731
+        return {"{f,{g,h}}": twisted.bracket(s, f(s), b(g(s), h(s))), "{g,{h,f}}": twisted.bracket(s, g(s), b(h(s), f(s))),
+                "{h,{f,g}}": twisted.bracket(s, h(s), b(f(s), g(s))),
+                "{f,{g,h}_eta}_eta": twisted.bracket(s, f(s), lambda t: twisted.bracket(t, g(s), h(s), F=t.eta), F=s.eta)}
+    return func
+
+
+def _paper_functions():
+    from stiefelsym.proofs.app1_magnetic_neumann import jacobi_test_functions
+    return tuple((lambda s, k=k: jacobi_test_functions(s)[k]) for k in range(3))
+
+
+_TERMS = (lambda t, k: t.tr(t.generic(f"G{k}", "r", "r") @ t.X.T @ t.A @ t.X),
+          lambda t, k: t.tr(t.generic(f"H{k}", "r", "r") @ t.P.T @ t.P),
+          lambda t, k: t.tr(t.generic(f"K{k}", "n", "r").T @ t.P),
+          lambda t, k: t.tr(t.generic(f"L{k}", "n", "r").T @ t.X),
+          lambda t, k: t.killing(t.Phi, t.generic(f"Z{k}", "n", "n")),
+          lambda t, k: t.tr(t.Psi @ t.Psi @ t.generic(f"M{k}", "r", "r")),
+          lambda t, k: t.tr(t.X.T @ t.P @ t.X.T @ t.generic(f"N{k}", "n", "r")) * t.tr(t.P.T @ t.A @ t.X))
+
+
+def _random_functions(seed: int):
+    """Three random functions with generic first and second derivatives: sums of a few of :data:`_TERMS`
+    with small integer coefficients (their parameters named per function)."""
+    rng = random.Random(3100 + seed)
+    moving = (1, 2, 4, 5, 6)                # terms that read P (functions of X alone commute)
+    picks = []
+    for _ in range(3):
+        first = rng.choice(moving)
+        rest = rng.sample([m for m in range(len(_TERMS)) if m != first], rng.randint(1, 3))
+        picks.append([(rng.choice([-2, -1, 1, 3]), m) for m in [first] + rest])
+
+    def make(k, pick):
+        def fn(t):
+            acc = None
+            for c, m in pick:
+                term = _TERMS[m](t, k) * c
+                acc = term if acc is None else acc + term
+            return acc
+        return lambda s: fn
+    return tuple(make(k, pick) for k, pick in enumerate(picks))
+
+
+@pytest.mark.parametrize("case", ["paper"] + [f"random-{k}" for k in range(6)])
+def test_brackets_of_brackets_agree_with_dual_numbers(case):
+    """{f, {g, h}_ε}_ε = −d{g, h}_ε along the twisted flow of f, the inner bracket as graph nodes (closed-form
+    constraint gradients, the constraint bracket matrix, its solve, d(solve(C, b)) = solve(C, db − dC·x)):
+    term by term what the scene's dual and reverse numbers give, for the default field strength and for
+    s.eta given by name, with the Jacobi test functions of the catalog and random ones."""
+    fs = _paper_functions() if case == "paper" else _random_functions(int(case.split("-")[1]))
+    func = _jacobi_terms(*fs)
+    for n in (3, 4):
+        g = compile_claim(func, n, 2, STANDARD)
+        s = Scene(n, 2, ModularField(P61), chart="cayley", rng=random.Random(1))
+        outer = [why for i, why in coverage(g, "stiefelsym.twisted.bracket", scene_flows(s))
+                 if g.ops[g.args[i][1].i] == "scene" and g.args[g.args[i][1].i] == (0,)]
+        assert outer == [None] * 4
+        (k0, v0, u0), (k1, v1, u1) = _both(g, n, 2, seed=n)
+        assert k0 == k1 == "ok" and _same(v0, v1) and u0 == u1, (v0, v1)
+        assert sum(x != 0 for x in v0.values()) >= 3
+
+
+def _bracket_derivatives(s):
+    """Derivatives of magnetic brackets along directions that are not Hamiltonian (off T*V's tangent
+    spaces), and a bracket of a bracket at a point off T*V."""
+    from stiefelsym import twisted
+    f, g, h = (fn(s) for fn in _random_functions(0))
+    other = twisted.at_point(s, s.X + s.generic("Y2", "n", "r"), s.P + s.generic("Q2", "n", "r"))
+    return {"d{g,h} along (V, W)": s.d(lambda t: twisted.bracket(t, g, h), {"X": s.generic("V", "n", "r"),
+                                                                            "P": s.generic("W", "n", "r")}),
+            "d{f,h}_eta along (0, PK)": s.d(lambda t: twisted.bracket(t, f, h, F=t.eta), {"P": s.P @ s.generic("K", "r", "r")}),
+            "{f,{g,h}} off T*V": twisted.bracket(other, f, lambda t: twisted.bracket(t, g, h))}
+
+
+def test_derivatives_of_magnetic_brackets_agree_with_dual_numbers():
+    """s.d of a function that is a magnetic bracket, along any direction (the dC·x term of the solve's tangent
+    matters there; along a Hamiltonian flow of the twisted bracket it contributes nothing, since the flow keeps
+    the constraints), and a bracket of a bracket at a point off T*V: what the dual numbers give."""
+    for n in (3, 4):
+        g = compile_claim(_bracket_derivatives, n, 2, STANDARD)
+        s = Scene(n, 2, ModularField(P61), chart="cayley", rng=random.Random(1))
+        assert [why for _, why in coverage(g, "d", scene_flows(s))] == [None, None]
+        (k0, v0, _), (k1, v1, _) = _both(g, n, 2, seed=n)
+        assert k0 == k1 == "ok" and _same(v0, v1) and all(x != 0 for x in v0.values()), (v0, v1)
+
+
+def test_a_bracket_of_brackets_off_the_standard_realization_stays_with_the_scene():
+    """Without (cond_XP)'s closed-form constraint gradients (a scene that does not say TWISTED_NODES) the
+    bracket of a bracket and the derivative of a bracket keep their steps."""
+    for func, name in ((_jacobi_terms(*_paper_functions()), "stiefelsym.twisted.bracket"), (_bracket_derivatives, "d")):
+        g = compile_claim(func, 3, 2, STANDARD)
+        s = Scene(3, 2, ModularField(P61), chart="cayley", rng=random.Random(1))
+        flows = scene_flows(s) - {deriv.TWISTED_NODES}
+        assert None not in [why for _, why in coverage(g, name, flows)]
+
+
+@pytest.mark.parametrize("wrong", ["no dC", "no db", "unsymmetrized"])
+def test_a_wrong_bracket_of_brackets_rule_is_caught(monkeypatch, wrong):
+    """The tangent of the solve without its dC·x term (or without db), or the constraint coordinates
+    ⟨S_ij, M⟩ read as M_ij alone: the transformed graph no longer agrees with the dual numbers; without db the
+    Jacobi identity of the twisted bracket fails (without dC it still holds: the term vanishes along the
+    Hamiltonian flows the identity differentiates along), and with the wrong coordinates the solve step finds
+    that the graph's constraint bracket matrix is not the scene's (an error, never a pass)."""
+    if wrong == "unsymmetrized":
+        def coords(scene, M):
+            from stiefelsym.backends.matrix import Mat
+            r, a, f = scene.r, M._view(), M.field
+            q = a.shape[1] // r
+            return Mat._rows([[a[i, b * r + j] for b in range(q)] for i in range(r) for j in range(i, r)], f, ("?", "?"),
+                             M.tracker)
+        monkeypatch.setitem(deriv.PRIMITIVES, deriv.SYM_COORDS, coords)
+    else:
+        monkeypatch.setattr(deriv._Derivative, "solve_rhs",
+                            (lambda self, dC, db, x: db) if wrong == "no dC"
+                            else (lambda self, dC, db, x: None if dC is None else self.add("neg", (self.add("matmul", (dC, x)),))))
+    g = compile_claim(_bracket_derivatives, 3, 2, STANDARD)
+    _forget(g)
+    assert not _agree(g, 3, 2)
+    claim = next(c for c in _catalog() if c.id == "twisted-form-closed")
+    expected = {"no dC": "checked", "no db": "fails", "unsymmetrized": "error"}[wrong]
+    assert run_one(claim, Size(3, 2), "modular", 0).verdict == expected
+
+
+def _catalog():
+    from stiefelsym.claims import load_catalog
+    return load_catalog()
+
+
+def jacobi_wrong_sign(s):
+    """A corrupted Jacobi identity (one term with the wrong sign)."""
+    from stiefelsym import twisted
+    from stiefelsym.proofs.app1_magnetic_neumann import jacobi_test_functions
+    f, g, h = jacobi_test_functions(s)
+    b = lambda F, G: (lambda t: twisted.bracket(t, F, G))      # noqa: E731
+    return {"Jacobi": twisted.bracket(s, f, b(g, h)) + twisted.bracket(s, g, b(h, f)) - twisted.bracket(s, h, b(f, g))}
+
+
+@pytest.mark.parametrize("method", ["modular", "rational", "float"])
+def test_a_wrong_jacobi_identity_fails(method):
+    res = run_one(_claim(jacobi_wrong_sign, "jacobi-wrong-sign", admissible(n_max=3, n_min=2, r_min=2, r_max=2)),
+                  Size(3, 2), method, 0)
+    assert res.verdict == "fails"
 
 
 @pytest.mark.parametrize("n,r,chart", [(3, 1, "cayley"), (3, 2, "cayley"), (4, 2, "equivariant"), (5, 3, "cayley"),
@@ -1061,10 +1213,11 @@ def test_a_wrong_free_magnetic_flow_is_caught(monkeypatch):
 
 
 def test_coverage_of_the_catalog_magnetic_steps(catalog):
-    """At (4,2) on a coordinate scene 40 of the catalog's 46 magnetic flows and brackets take the graph's
-    gradients (the flows at another point of T*V, ``twisted.at_point``, included); the others are a bracket
-    of a bracket (the Jacobi identity of the twisted bracket) and the brackets inside it (on a function's
-    scene)."""
+    """At (4,2) on a coordinate scene 43 of the catalog's 46 magnetic flows and brackets are graph nodes
+    (the flows at another point of T*V, ``twisted.at_point``, included; the 3 brackets of brackets of the
+    Jacobi identity of the twisted bracket as the derivative of the inner bracket, itself as graph nodes, along
+    the flow); the 3 left are the brackets inside them (on a function's scene), which the rewritten graph no
+    longer evaluates."""
     s = Scene(4, 2, ModularField(P61), chart="cayley", rng=random.Random(1))
     counts: dict[str, list[int]] = {}
     reasons = set()
@@ -1076,9 +1229,12 @@ def test_coverage_of_the_catalog_magnetic_steps(catalog):
                 k[1] += 1
                 if why is not None:
                     reasons.add(why)
-    assert counts == {"stiefelsym.twisted.flow": [18, 18], "stiefelsym.twisted.bracket": [22, 28]}
-    assert reasons == {"a gradient on a scene other than the claim's (inside a function of the scene)",
-                       "a prim whose kind (number or matrix) the graph does not show"}
+    assert counts == {"stiefelsym.twisted.flow": [18, 18], "stiefelsym.twisted.bracket": [25, 28]}
+    assert reasons == {"a gradient on a scene other than the claim's (inside a function of the scene); a "
+                       "derivative of a magnetic bracket on a scene other than the claim's"}
+    g = compile_claim(catalog.get("twisted-form-closed").func, 4, 2, STANDARD)
+    assert not any(op == "prim" and a[0].qualname.startswith("stiefelsym.twisted.bracket")
+                   for op, a in zip(*(lambda d: (d.ops, d.args))(derivatives(g, scene_flows(s)))))
 
 
 # -- derivatives, gradients and flows at points of the caller's own (stiefelsym.systems) --------------

@@ -215,12 +215,22 @@ def _transform(g: Graph, flows: frozenset = frozenset()) -> tuple[Graph, list]:
             else:
                 report.append((i, a[0].qualname, "the scene's own derivatives (not a coordinate scene)"))
         if rewrite is not None:
+            name = a[1] if op == "call" else a[0].qualname
             try:
                 remap[i] = rewrite(g, deps, new, remap, i).build()
-                report.append((i, a[1] if op == "call" else a[0].qualname, None))
+                report.append((i, name, None))
                 continue
             except Unsupported as exc:
-                report.append((i, a[1] if op == "call" else a[0].qualname, str(exc)))
+                why = str(exc)
+            second = _OF_BRACKETS.get(name) if TWISTED_NODES in flows else None
+            if second is not None:
+                try:                    # a derivative or bracket of a bracket: the inner one as graph nodes
+                    remap[i] = second(g, deps, new, remap, i).build()
+                    report.append((i, name, None))
+                    continue
+                except Unsupported as exc:
+                    why = f"{why}; {exc}"
+            report.append((i, name, why))
         remap[i] = new.add(op, m(a))
     if g.output is not None:
         new.output = remap[g.output.i]
@@ -467,6 +477,10 @@ class _Derivative:
             return None                     # a coordinate basis vector: constant along every flow
         if op == "apply" and _own_operator(g, a, self.k):
             return (op,)                    # 𝔸 linear with constant coefficients: d𝔸(x) = 𝔸(dx)
+        if op == "prim" and type(a[0]) is Named and a[0].qualname == SOLVE:
+            return ("solve",)               # x = C⁻¹b: dx = C⁻¹(db − dC·x)
+        if op == "prim" and type(a[0]) is Named and a[0].qualname == SYM_COORDS:
+            return ("linear",)              # a linear step of its matrix
         if op in ("prim", "apply"):
             what = a[0].qualname.rsplit(".", 1)[-1] if op == "prim" and type(a[0]) is Named else "an operator"
             raise Unsupported(f"an engine step ({what}) that moves with the point")
@@ -559,6 +573,13 @@ class _Derivative:
         if op == "apply":
             x = self.dref(a[1])
             return None if x is None else add("apply", (p(a[0]), x))
+        if op == "prim" and a[0].qualname == SYM_COORDS:
+            x = self.dref(a[2])
+            return None if x is None else add("prim", (a[0], self.S, x))
+        if op == "prim":                # x = solve(C, b): C dx = db − dC·x
+            C, b = a[2], a[3]
+            rhs = self.solve_rhs(self.dref(C), self.dref(b), self.P[j])
+            return None if rhs is None else add("prim", (a[0], self.S, p(C), rhs) + tuple(p(a[4:])))
         if op == "block":
             rows, cols, blocks = a
             ds = [self.dref(b) for b in blocks]
@@ -613,6 +634,11 @@ class _Derivative:
                 new_rows = tuple(add("list", tuple(c if c is not None else 0 for c in row)) for row in cells)
                 return add("call", (S, "mat", (add("list", new_rows), tags), ()))
         raise AssertionError(f"no rule for {op}")
+
+
+    def solve_rhs(self, dC: Any, db: Any, x: Ref) -> Any:
+        """The right-hand side db − dC·x of the tangent of x = solve(C, b) (None: 0)."""
+        return self.sum(db, None if dC is None else self.add("matmul", (dC, x)), "sub")
 
 
 #: the engine step that makes the claim's problem at another point of T*V (a scene of its own)
@@ -831,6 +857,12 @@ class _Gradient(_Derivative):
         raise Unsupported(f"a {op} whose kind (number or matrix) the graph does not show")
 
     def build(self) -> Ref:
+        HX, HP, value = self.adjoints()
+        return self.add("prim", (Named(GRADIENT), self.S, HX, HP) + value)
+
+    def adjoints(self) -> tuple[Any, Any, tuple]:
+        """(H_X, H_P, (H,)): the adjoints of X and P as nodes (None where H does not depend on it) and
+        H's value (empty where H does not read the point)."""
         g, k = self.g, self.k
         todo = self.body_nodes()
         self.kinds: dict[int, str] = {}
@@ -863,7 +895,7 @@ class _Gradient(_Derivative):
         HX = self.total(grads["X"], X)
         HP = self.total(grads["P"], P)
         value = (self.P[self.body.i],) if k in self.deps[self.body.i] else ()
-        return self.add("prim", (Named(GRADIENT), self.S, HX, HP) + value)
+        return HX, HP, value
 
     def check(self, j: int) -> None:
         """Refuse (before anything is written) what the backward sweep has no rule for."""
@@ -1390,6 +1422,248 @@ class _TwistedAlongFlow(_Derivative):
         F = self.remap[self.F.i] if type(self.F) is Ref else self.F
         return self.add("prim", (Named("stiefelsym.twisted.flow"), self.S, self.remap[self.G.i], F))
 
+
+#: what a scene of the standard realization says (``_graph_flows``) when its magnetic bracket may also be
+#: written as graph nodes (the constraint gradients of (cond_XP) in closed form, the constraint bracket matrix
+#: and the solve of the Dirac multipliers as nodes): a bracket whose function is itself a magnetic bracket
+TWISTED_NODES = "magnetic brackets as graph nodes"
+#: the engine steps of a magnetic bracket as graph nodes: C x = b (registered by :mod:`stiefelsym.twisted`), the
+#: units S_ij of Sym(r) side by side and the coordinates ⟨S_ij, M⟩ of r x r blocks (registered below)
+SOLVE = "stiefelsym.twisted.solve:graph"
+UNITS = "stiefelsym.ir.derivative.constraint_units"
+SYM_COORDS = "stiefelsym.ir.derivative.sym_coordinates"
+
+
+def constraint_units(scene: Any, F: Any) -> tuple:
+    """(S_1 … S_m) and (S_1F … S_mF), r x rm: S_ij = E_ij + E_ji (2E_ii) for i ≤ j in the order of the scene's
+    constraint gradients, so that XS_ij is the X-gradient of the (i, j) entry of XᵀX.  Engine step of the
+    transformed graphs (constants of the point)."""
+    from stiefelsym.backends.matrix import Mat
+    r, f = scene.r, F.field
+    Fv = F._view()
+    U: list[list[Any]] = [[] for _ in range(r)]
+    UF: list[list[Any]] = [[] for _ in range(r)]
+    for i in range(r):
+        for j in range(i, r):
+            S = [[f.const((1 if (p, q) in ((i, j), (j, i)) else 0) * (2 if i == j else 1)) for q in range(r)]
+                 for p in range(r)]
+            SF = [[f.normalize(sum((S[p][t] * Fv[t, q] for t in range(r)), f.const(0))) for q in range(r)]
+                  for p in range(r)]
+            for p in range(r):
+                U[p].extend(S[p])
+                UF[p].extend(SF[p])
+    return (Mat._rows(U, f, ("r", "?"), F.tracker), Mat._rows(UF, f, ("r", "?"), F.tracker))
+
+
+def sym_coordinates(scene: Any, M: Any) -> Any:
+    """The column of ⟨S_ij, M_b⟩ = M_b[i, j] + M_b[j, i] (i ≤ j) for each r x r block M_b of M (r x rq):
+    an m x q matrix (m = r(r + 1)/2), linear in M.  Engine step of the transformed graphs."""
+    from stiefelsym.backends.matrix import Mat
+    r = scene.r
+    a, f = M._view(), M.field
+    q = a.shape[1] // r
+    rows = [[f.normalize(a[i, b * r + j] + a[j, b * r + i]) for b in range(q)] for i in range(r) for j in range(i, r)]
+    return Mat._rows(rows, f, ("?", "?"), M.tracker)
+
+
+PRIMITIVES[UNITS] = constraint_units
+PRIMITIVES[SYM_COORDS] = sym_coordinates
+
+
+def _parse_field_strength(g: Graph, rest: tuple, what: str) -> Any:
+    """The field strength F of a magnetic step's arguments after its functions (None: the default)."""
+    if len(rest) == 1 and type(rest[0]) is Ref and g.ops[rest[0].i] == "kw":
+        kw = g.args[rest[0].i]
+        if [k for k, _ in kw] != ["F"]:
+            raise Unsupported(f"{what} with further arguments")
+        return kw[0][1]
+    if len(rest) == 1:
+        return rest[0]
+    if rest:
+        raise Unsupported(f"{what} with further arguments")
+    return None
+
+
+class _Same(dict):
+    """The identity map of a graph's nodes (a pass over nodes of the new graph itself)."""
+
+    def __missing__(self, i: int) -> Ref:
+        return _ref(i)
+
+
+class _AlongStep(_Derivative):
+    """The derivative of a function of the new graph along a flow made by an engine step (a node of the
+    new graph)."""
+
+    def __init__(self, new: Graph, scene: Ref, fn: Ref, flow: Ref) -> None:
+        from stiefelsym.ir.evaluate import _deps as deps_of
+        deps = deps_of(new)
+        del new.cache["deps"]               # the graph grows: computed afresh for each use
+        super().__init__(new, deps, new, _Same(), 0, fn, at=(scene, "d"))
+        self._flow = flow
+
+    def make_flow(self) -> Ref:
+        return self._flow
+
+
+class _BracketFunction:
+    """A function G(t) = ``twisted.bracket(t, g, h[, F])`` of the claim (a magnetic bracket at the function's
+    own point), differentiated along a flow on a coordinate scene of the standard realization: G is written
+    as graph nodes of a function of the new graph,
+
+        G = ⟨∇g, W⁻¹∇h⟩ + aᵀ x,   C x = b,   a_i = ⟨∇F_i, W⁻¹∇g⟩,   b_j = ⟨∇F_j, W⁻¹∇h⟩,
+        C_ij = ⟨∇F_i, W⁻¹∇F_j⟩,   W⁻¹(u_X, u_P) = (u_P, −u_X − ε u_P F)
+
+    (the scene's twisted Dirac bracket (Dirac_bracket) {g, h}_ε + Σ {F_i, g}_ε C^{ij} {F_j, h}_ε), ∇g, ∇h by
+    the backward sweep, the constraint gradients of (cond_XP) in closed form (XS_ij; PS_ij, XS_ij), the
+    products ⟨∇F_i, ·⟩ read by one linear step (:func:`sym_coordinates`) and x by one engine step
+    (:func:`solve`); its derivative is the tangent map (:class:`_Derivative`), with
+    d(solve(C, b)) = solve(C, db − dC·x).  ``at``: the claim's scene (or its problem at another point)."""
+
+    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, at: Any, G: Any) -> None:
+        if TWISTED_NODES not in new.cache.get("flows", ()):
+            raise Unsupported("a magnetic bracket off the standard realization's coordinate scenes")
+        if not _claim_scene(g, at, new):
+            raise Unsupported("a derivative of a magnetic bracket on a scene other than the claim's")
+        if type(G) is not Ref or g.ops[G.i] != "fn":
+            raise Unsupported("a derivative of something that is not a traced function")
+        kG, arity, body = g.args[G.i]
+        if (arity != 1 or type(body) is not Ref or g.ops[body.i] != "prim"
+                or g.args[body.i][0].qualname != "stiefelsym.twisted.bracket"):
+            raise Unsupported("a function that is not a magnetic bracket")
+        b = g.args[body.i]
+        if type(b[1]) is not Ref or g.ops[b[1].i] != "scene" or g.args[b[1].i] != (kG,):
+            raise Unsupported("a magnetic bracket at another scene")
+        self.Finner = _parse_field_strength(g, b[4:], "a magnetic bracket")
+        inner = (b[2], b[3])
+        if any(type(x) is not Ref or g.ops[x.i] != "fn" or kG in deps[x.i] for x in inner):
+            raise Unsupported("a magnetic bracket whose functions read its scene")
+        self.Fattr = None                   # a field strength of the function's scene: one of its constants
+        if type(self.Finner) is Ref and kG in deps[self.Finner.i]:
+            fa = g.args[self.Finner.i]
+            if g.ops[self.Finner.i] != "attr" or fa[0] != b[1] or fa[1] not in MATRICES or fa[1] not in CONSTANT_ATTRS:
+                raise Unsupported("a magnetic bracket whose field strength moves with its point")
+            self.Fattr = fa[1]
+        self.g, self.deps, self.new, self.remap = g, deps, new, remap
+        self.inner, self.at, self.S = inner, at, remap[at.i]
+
+    def along(self, flow: Ref) -> Ref:
+        """dG along ``flow`` (a node of the new graph), as nodes."""
+        new, add = self.new, self.new.add
+        new.fns += 1
+        k = new.fns
+        value = self.bracket_nodes(add("scene", (k,)))
+        return _AlongStep(new, self.S, add("fn", (k, 1, value)), flow).build()
+
+    def bracket_nodes(self, T: Ref) -> Ref:
+        """The magnetic bracket {g, h}_ε at the scene T as nodes (see the class)."""
+        add = self.new.add
+        grads = []
+        for h in self.inner:
+            gr = _Gradient(self.g, self.deps, self.new, self.remap, 0, h, at=(self.at, "gradient"))
+            gr.S = T
+            HX, HP, _ = gr.adjoints()
+            grads.append((HX, HP))
+        X, P, eps = add("attr", (T, "X")), add("attr", (T, "P")), add("attr", (T, "eps"))
+        Fm = (add("attr", (self.S, self.Fattr)) if self.Fattr is not None
+              else self.remap[self.Finner.i] if type(self.Finner) is Ref
+              else add("prim", (Named("stiefelsym.twisted.magnetic_matrix"), self.S)))
+
+        def plus(x: Any, y: Any, op: str = "add") -> Any:
+            if y is None:
+                return x
+            if x is None:
+                return add("neg", (y,)) if op == "sub" else y
+            return add(op, (x, y))
+
+        def pi(u: tuple) -> tuple:          # W⁻¹u = (u_P, −u_X − ε u_P F)
+            uX, uP = u
+            epsF = None if uP is None else add("mul", (eps, add("matmul", (uP, Fm))))
+            return uP, plus(None if uX is None else add("neg", (uX,)), epsF, "sub")
+
+        def dot(u: tuple, v: tuple) -> Ref:     # ⟨u, v⟩ = tr(u_Xᵀ v_X) + tr(u_Pᵀ v_P)
+            acc = None
+            for x, y in zip(u, v):
+                if x is not None and y is not None:
+                    acc = plus(acc, add("call", (T, "tr", (add("matmul", (add("T", (x,)), y)),), ())))
+            return acc if acc is not None else add("call", (T, "const", (0,), ()))
+
+        units = add("prim", (Named(UNITS), self.remap[0], Fm))        # (S_1 … S_m), (S_1F … S_mF)
+        U, UF = add("item", (units, 0)), add("item", (units, 1))
+        XU, PU = add("matmul", (X, U)), add("matmul", (P, U))
+
+        def coords(v: tuple) -> Any:    # ⟨∇F_i, v⟩: the XᵀX constraints, then the XᵀP + PᵀX ones
+            vX, vP = v
+            XT = add("T", (X,))
+            if vX is None and vP is None:
+                return None                 # a function with a zero gradient: no correction
+            # (a zero where v has no X part: Xᵀ v_P·0, of the shape of the coordinates' argument)
+            top = add("matmul", (XT, vX)) if vX is not None else add("mul", (add("matmul", (XT, vP)), 0))
+            low = plus(None if vX is None else add("matmul", (add("T", (P,)), vX)),
+                       None if vP is None else add("matmul", (XT, vP)))
+            return add("block", (2, 1, (add("prim", (Named(SYM_COORDS), T, top)),
+                                        add("prim", (Named(SYM_COORDS), T, low)))))
+
+        pig, pih = pi(grads[0]), pi(grads[1])
+        # W⁻¹∇F_j: (0, −XS_j) for the XᵀX constraints, (XS_j, −PS_j − ε XS_jF) for the XᵀP + PᵀX ones
+        C = add("block", (1, 2, (coords((None, add("neg", (XU,)))),
+                                 coords((XU, plus(add("neg", (PU,)), add("mul", (eps, add("matmul", (X, UF)))), "sub"))))))
+        avec, bvec = coords(pig), coords(pih)
+        acc = dot(grads[0], pih)
+        if avec is None or bvec is None:
+            return acc
+        x = add("prim", (Named(SOLVE), T, C, bvec, Fm))
+        return add("add", (acc, add("entry", (add("matmul", (add("T", (avec,)), x)), 0, 0))))
+
+
+class _TwistedNested:
+    """``twisted.bracket(s, f, G)`` on a coordinate scene of the standard realization where G is itself a
+    magnetic bracket, G(t) = ``twisted.bracket(t, g, h)`` (the Jacobi identity of the twisted bracket): G's
+    gradient needs the derivative of a bracket whose Dirac multipliers the step solves.  The Dirac bracket
+    is skew, {f, G}_ε = −{G, f}_ε = −dG(X_f), X_f the twisted flow of f (from f's gradient by the backward
+    sweep, one ``twisted.flow`` step as :class:`_Twisted` makes it), dG by :class:`_BracketFunction`."""
+
+    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, i: int) -> None:
+        a = g.args[i]
+        if a[0].qualname != "stiefelsym.twisted.bracket":
+            raise Unsupported("a magnetic flow of a bracket")
+        self.F = _parse_field_strength(g, a[4:], "a magnetic bracket")
+        self.G = _BracketFunction(g, deps, new, remap, a[1], a[3])
+        self.new, self.remap, self.f = new, remap, a[2]
+        if type(self.f) is not Ref or g.ops[self.f.i] != "fn":
+            raise Unsupported("a magnetic bracket of something that is not a traced function")
+        self.gradf = _Gradient(g, deps, new, remap, i, self.f, at=(a[1], "gradient"))
+        self.S = self.gradf.S
+
+    def build(self) -> Ref:
+        add, S = self.new.add, self.S
+        # the flow of f, as :class:`_Twisted` makes it
+        add("attr", (S, "X")), add("attr", (S, "P"))
+        eps = add("attr", (S, "eps"))
+        pair = self.gradf.build()
+        F = self.remap[self.F.i] if type(self.F) is Ref else self.F
+        flow = add("prim", (Named("stiefelsym.twisted.flow:graph"), S, self.remap[self.f.i], F, eps, pair))
+        return add("neg", (self.G.along(flow),))
+
+
+class _BracketDerivative:
+    """``s.d(G, flow)`` for G(t) = ``twisted.bracket(t, g, h)`` on a coordinate scene of the standard
+    realization: dG along the flow by :class:`_BracketFunction`."""
+
+    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, i: int) -> None:
+        scene, name, args, kw = g.args[i]
+        if kw or len(args) != 2 or type(args[1]) is not Ref:
+            raise Unsupported("a derivative with further arguments")
+        self.G = _BracketFunction(g, deps, new, remap, scene, args[0])
+        self.flow = remap[args[1].i]
+
+    def build(self) -> Ref:
+        return self.G.along(self.flow)
+
+
+#: where a scene says TWISTED_NODES, what the pass tries when the first rule refuses: a derivative of a
+#: magnetic bracket, a magnetic bracket of one
+_OF_BRACKETS: dict[str, Any] = {"d": _BracketDerivative, "stiefelsym.twisted.bracket": _TwistedNested}
 
 #: the calls the pass rewrites, by scene method
 _PASSES = {"d": _Derivative, "gradient": _Gradient, "jacobian": _Jacobian}
