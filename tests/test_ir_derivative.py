@@ -395,6 +395,61 @@ def test_a_wrong_free_bracket_is_caught(monkeypatch):
     assert run_one(_claim(along, "free-bracket"), None, "free", 0).verdict == "proved"
 
 
+def _free_point_claim(Fx):
+    from stiefelsym import twisted
+
+    def func(s):
+        h = twisted.at_point(s, s.X, s.P - s.X @ s.Psi * s.q(1, 2))     # the horizontal point: Ψ = 0 there
+        flow = h.dirac_flow(H_neumann)
+        return {"dPsi/dt": h.d(lambda t: t.Psi, flow), "dF/dt": h.d(lambda t: _build(t, Fx), flow),
+                "dPhi/dt": h.d(lambda t: t.Phi @ t.A - t.X @ t.X.T, flow)}
+    return func
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_derivatives_at_another_point_agree_on_the_free_algebra(seed):
+    """A derivative along a flow at the free scene's problem at another point of T*V (``twisted.at_point``):
+    graph nodes (the point's values and the flow's components the point scene's own, computed at its
+    generic point and evaluated at the point), with the normal forms of the scene's dual letters."""
+    rng = random.Random(1700 + seed)
+    Fx = _scalar_function(rng, 3, ("'res_at'", "'entry'", "'inv1'", "'div'", "'block'"))
+    g = compile_claim(_free_point_claim(Fx), None, None, STANDARD)
+    flows = scene_flows(FreeScene(lazy=True))
+    assert deriv.POINT_DERIVATIVES in flows
+    assert [why for _, why in coverage(g, "d", flows)] == [None, None, None]
+    a, b = _free_values(g)
+    assert a == b
+
+
+def test_a_derivative_at_another_point_read_at_the_generic_point_is_caught(monkeypatch):
+    """The flow's components read at the point scene's generic point and not evaluated at the point: the
+    derivatives no longer have the scene's normal forms."""
+    from stiefelsym.free.scene import FreePointScene
+    monkeypatch.setattr(FreePointScene, "_tangent_vector", lambda self, flow, keys: {
+        k: v for k, v in self.inner._tangent_vector(self._lower(flow), keys).items()})
+    g = compile_claim(_free_point_claim(("tr", ("tmm", ("P",), ("X",)))), None, None, STANDARD)
+    _forget(g)
+    a, b = _free_values(g)
+    assert a != b
+
+
+def test_a_flow_in_the_base_coordinates_is_refused_at_another_point():
+    """At the free scene's problem at another point, a flow given in the base scene's coordinates is refused
+    by the graph's derivative as by the scene's own (its substitution would move it)."""
+    from stiefelsym import twisted
+
+    def func(s):
+        h = twisted.at_point(s, s.X, s.P - s.X @ s.Psi * s.q(1, 2))
+        return {"d": h.d(lambda t: t.Psi, {"X": s.P, "P": s.X})}
+    g = compile_claim(func, None, None, STANDARD)
+    errors = []
+    for flows in (frozenset(), scene_flows(FreeScene(lazy=True))):
+        with pytest.raises(Exception) as exc:
+            evaluate(derivatives(g, flows), FreeScene(lazy=True))
+        errors.append((type(exc.value), "base scene's coordinates" in str(exc.value)))
+    assert errors[0] == errors[1] and errors[0][1]
+
+
 # -- the catalog ---------------------------------------------------------------------------------
 
 def _catalog_graphs(catalog, n, r):
@@ -602,7 +657,7 @@ def test_what_the_scene_keeps_computing():
     s = Scene(4, 2, ModularField(P61), chart="cayley", rng=random.Random(1), realization="metric")
     assert "dirac_flow" not in scene_flows(s) and "canonical_flow" in scene_flows(s)
     assert scene_flows(FreeScene(lazy=True)) == frozenset({deriv.BRACKET_ALONG_FLOW, deriv.TWISTED_ALONG_FLOW,
-                                                           deriv.SYSTEMS_OWN})
+                                                           deriv.SYSTEMS_OWN, deriv.POINT_DERIVATIVES})
     (_, why), = coverage(g, "dirac_flow", scene_flows(s))
     assert why is None and _agree(g, 4, 2, "metric")
     (_, why), = coverage(g, "dirac_flow", scene_flows(s) - {deriv.GRADIENT_FLOW})

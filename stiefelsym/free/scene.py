@@ -1431,8 +1431,8 @@ class FreeScene(PaperObjects):
         the bracket, as the derivative along the Dirac flow, which the scene solves (and the magnetic
         bracket of :mod:`stiefelsym.twisted`, along the scene's own magnetic flow), and the derivative at its own
         point of :mod:`stiefelsym.systems`, along the tangent vector."""
-        from stiefelsym.ir.derivative import BRACKET_ALONG_FLOW, SYSTEMS_OWN, TWISTED_ALONG_FLOW
-        return frozenset({BRACKET_ALONG_FLOW, TWISTED_ALONG_FLOW, SYSTEMS_OWN})
+        from stiefelsym.ir.derivative import BRACKET_ALONG_FLOW, POINT_DERIVATIVES, SYSTEMS_OWN, TWISTED_ALONG_FLOW
+        return frozenset({BRACKET_ALONG_FLOW, TWISTED_ALONG_FLOW, SYSTEMS_OWN, POINT_DERIVATIVES})
 
     def _share(self, base: "FreeScene") -> None:
         """What a scene made from ``base`` (its tangent scene, a function's scene) shares with it: the
@@ -1834,6 +1834,13 @@ class FreePointScene:
             except Exception:
                 return True     # not evaluable on its own letters: not taken as a function of the point
         return True
+
+    def _tangent_vector(self, flow: Any, keys: tuple) -> dict[str, Mat]:
+        """The components ``keys`` of a flow the point's scene made, as its own tangent reads them at the generic
+        point, evaluated at the point: what the graph's derivatives along the flow at the point read (see
+        :mod:`stiefelsym.ir.derivative`; a flow given in the base scene's coordinates is refused, as
+        :meth:`_lower` refuses it)."""
+        return self.lift(self.inner._tangent_vector(self._lower(flow), keys))
 
     #: what does not depend on the point: taken from the base scene (values given in its coordinates)
     POINTLESS = frozenset({"tr", "killing", "q", "const", "zeros", "In", "Ir", "scalar_matrix", "mat", "A", "Ainv",

@@ -274,7 +274,7 @@ class _Derivative:
             f, flow = args
         else:
             flow = None                     # made by :meth:`make_flow` when the derivative is built
-        if not _claim_scene(g, scene, new):
+        if not _claim_scene(g, scene, new, name == "d"):
             raise Unsupported(f"{_WHAT.get(name, 'a derivative')} on a scene other than the claim's (inside a "
                               "function of the scene)")
         if type(f) is not Ref or g.ops[f.i] != "fn" or (flow is not None and type(flow) is not Ref):
@@ -645,17 +645,25 @@ class _Derivative:
 AT_POINT = "stiefelsym.twisted.at_point"
 
 
-def _claim_scene(g: Graph, scene: Any, new: Graph) -> bool:
+#: what the dimension-free scene says (``_graph_flows``) when a derivative along a flow at the claim's problem
+#: at another point of T*V (``twisted.at_point``) may be graph nodes: the point's values and the flow's
+#: components there are the point scene's own (computed at its generic point, then evaluated at the point)
+POINT_DERIVATIVES = "derivatives at the problem at another point"
+
+
+def _claim_scene(g: Graph, scene: Any, new: Graph, derivative: bool = False) -> bool:
     """Whether a derivative's, gradient's or flow's scene is the claim's: its own scene, or, on a coordinate
     scene (the pass was given ``TWISTED``), the claim's problem at another point of T*V
-    (``twisted.at_point(s, X, P)``, a copy of the scene with that point)."""
+    (``twisted.at_point(s, X, P)``, a copy of the scene with that point); for a ``derivative`` along a flow,
+    also the dimension-free scene's problem at another point (the pass was given ``POINT_DERIVATIVES``)."""
     if type(scene) is not Ref:
         return False
     if g.ops[scene.i] == "scene":
         return g.args[scene.i] == (0,)
     a = g.args[scene.i]
+    flows = new.cache.get("flows", ())
     return (g.ops[scene.i] == "prim" and type(a[0]) is Named and a[0].qualname == AT_POINT
-            and TWISTED in new.cache.get("flows", ()) and len(a) == 4
+            and (TWISTED in flows or (derivative and POINT_DERIVATIVES in flows)) and len(a) == 4
             and type(a[1]) is Ref and g.ops[a[1].i] == "scene" and g.args[a[1].i] == (0,))
 
 
