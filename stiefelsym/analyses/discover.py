@@ -219,6 +219,15 @@ def _quotient(V1: list[list[int]], V0: list[list[int]], p: int) -> list[list[int
     return [[int(M[i, j]) for j in range(len(V1[0]))] for i in range(rank)]
 
 
+def evaluate_derived(g: Any, scene: Any) -> Any:
+    """A probe's graph evaluated as the methods evaluate a claim's: its derivatives along flows, gradients,
+    flows and brackets rewritten into graph nodes where the scene lets them (:mod:`stiefelsym.ir.derivative`;
+    the rest computed by the scene), on ``scene``."""
+    from stiefelsym.ir.derivative import derivatives, scene_flows
+    from stiefelsym.ir.evaluate import evaluate
+    return evaluate(derivatives(g, scene_flows(scene)), scene)
+
+
 def conserved(flow: Callable[[Any], Any], size: Size, degree: int = 4, *, max_a: int = 1,
               products: bool = True, seed: int = 0, name: str = "", verify: Sequence[str] = ("auto", "free"),
               terms: Sequence[Monomial] | None = None, realization: str = "standard") -> Discovery:
@@ -226,7 +235,6 @@ def conserved(flow: Callable[[Any], Any], size: Size, degree: int = 4, *, max_a:
     {"X": Ẋ, "P": Ṗ}) among the trace monomials of degree <= ``degree``, at ``size``; each basis
     element verified by the methods ``verify`` (the dimension-free one for all n, r)."""
     from stiefelsym.ir import compile_claim
-    from stiefelsym.ir.evaluate import evaluate
     from stiefelsym.backends.fields import ModularField
     from stiefelsym.run.runner import run_one
     from stiefelsym.scene import REALIZATIONS, Scene
@@ -249,7 +257,7 @@ def conserved(flow: Callable[[Any], Any], size: Size, degree: int = 4, *, max_a:
     for k in range(K + 1):
         scene = Scene(size.n, size.r, ModularField(PRIME), chart="cayley", rng=rng,
                       component=k % 2 if size.r == size.n else 0, realization=realization)
-        out = evaluate(g, scene)
+        out = evaluate_derived(g, scene)
         values.append([int(out[f"F{i}"]) for i in range(N)])
         derivs.append([int(out[f"dF{i}"]) for i in range(N)])
     base = values[0]
@@ -428,7 +436,6 @@ def solve_affine(terms: Sequence[tuple[str, Callable[[Any], Any]]], target: Call
     entry), with rational coefficients reconstructed; a verdict on any solution is for the caller."""
     import flint
     from stiefelsym.ir import compile_claim
-    from stiefelsym.ir.evaluate import evaluate
     from stiefelsym.backends.fields import ModularField
     from stiefelsym.scene import REALIZATIONS, Scene
 
@@ -445,7 +452,7 @@ def solve_affine(terms: Sequence[tuple[str, Callable[[Any], Any]]], target: Call
     for k in range(points or max(4, N // max(1, size.n * size.n) + 4)):
         scene = Scene(size.n, size.r, ModularField(PRIME), chart="cayley", rng=rng,
                       component=k % 2 if size.r == size.n else 0, realization=realization)
-        out = evaluate(g, scene)
+        out = evaluate_derived(g, scene)
         cols = [_entries_mod(out[f"T{j}"]) for j in range(N)] + [_entries_mod(out["R"])]
         for e in range(len(cols[-1])):
             rows.append([c[e] for c in cols[:-1]] + [(-cols[-1][e]) % PRIME])
@@ -747,7 +754,6 @@ def correction_space(ansatz: CorrectionAnsatz, size: Size | None = None, *, seed
     from stiefelsym.claims import load_catalog
     from stiefelsym.backends.fields import ModularField
     from stiefelsym.ir import compile_claim
-    from stiefelsym.ir.evaluate import evaluate
     from stiefelsym.run.runner import run_one
     from stiefelsym.scene import REALIZATIONS, Scene
 
@@ -779,7 +785,7 @@ def correction_space(ansatz: CorrectionAnsatz, size: Size | None = None, *, seed
     while True:
         scene = Scene(size.n, size.r, ModularField(PRIME), chart="cayley", rng=rng,
                       component=k % 2 if size.r == size.n else 0, realization=ansatz.realization)
-        out = evaluate(g, scene)
+        out = evaluate_derived(g, scene)
         k += 1
         S = [_entries_mod(out[f"S{j}"]) for j in order]
         slot_rows += [[c[e] for c in S] for e in range(len(S[0]))]

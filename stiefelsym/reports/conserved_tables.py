@@ -23,7 +23,7 @@ from dataclasses import dataclass, field
 from typing import Any, Callable, Sequence
 
 from stiefelsym.claims import Size
-from stiefelsym.analyses.discover import PRIME, Discovery, Integral, conserved
+from stiefelsym.analyses.discover import PRIME, Discovery, Integral, conserved, evaluate_derived
 
 #: fixed values of λ at which the spectral invariants are taken (their span is that of the
 #: coefficients in λ: a polynomial of degree d in λ is fixed by d + 1 values)
@@ -116,7 +116,6 @@ def named_part(fam: Family, d: Discovery, seed: int = 0) -> tuple[int, list[Inte
     """dim (D ∩ N) and the elements of the basis of D that, added in turn, leave span(N, 1)."""
     from stiefelsym.backends.fields import ModularField
     from stiefelsym.ir import compile_claim
-    from stiefelsym.ir.evaluate import evaluate
     from stiefelsym.scene import Scene
 
     integrals = list(d.integrals)
@@ -136,7 +135,7 @@ def named_part(fam: Family, d: Discovery, seed: int = 0) -> tuple[int, list[Inte
     for k in range(K):
         scene = Scene(d.size.n, d.size.r, ModularField(PRIME), chart="cayley", rng=rng,
                       component=k % 2 if d.size.r == d.size.n else 0)
-        out = evaluate(g, scene)
+        out = evaluate_derived(g, scene)
         for i in range(len(integrals)):
             cols_I[i].append(int(out[f"I{i}"]))
         for key, v in out.items():
