@@ -1125,6 +1125,36 @@ def test_a_wrong_bracket_of_brackets_rule_is_caught(monkeypatch, wrong):
     assert run_one(claim, Size(3, 2), "modular", 0).verdict == expected
 
 
+def _free_jacobi_terms(s):
+    """Two brackets of brackets for the field strength s.eta (an so(r) letter of the free algebra)."""
+    from stiefelsym import twisted
+    f, g, h = (fn(s) for fn in _paper_functions())
+    b = lambda F, G: (lambda t: twisted.bracket(t, F, G, F=t.eta))     # noqa: E731
+    return {"{f,{g,h}}": twisted.bracket(s, f, b(g, h), F=s.eta), "{g,{h,f}}": twisted.bracket(s, g, b(h, f), F=s.eta)}
+
+
+def test_brackets_of_brackets_on_the_free_algebra():
+    """On the free algebra {f, G}_ε = −dG(X_f), G = dg along the scene's magnetic flow of h (graph nodes) and its
+    derivative along the magnetic flow of f by the derivation of the free algebra: term by term the normal
+    forms of the scene's dual letters; with the sign of the skew symmetry dropped, not."""
+    g = compile_claim(_free_jacobi_terms, None, None, STANDARD)
+    flows = scene_flows(FreeScene(lazy=True))
+    outer = [why for i, why in coverage(g, "stiefelsym.twisted.bracket", flows)
+             if g.ops[g.args[i][1].i] == "scene" and g.args[g.args[i][1].i] == (0,)]
+    assert outer == [None, None]
+    a, b = _free_values(g)
+    assert a == b
+
+
+def test_a_wrong_free_bracket_of_brackets_is_caught(monkeypatch):
+    real = deriv._TwistedNestedAlongFlow.build
+    monkeypatch.setattr(deriv._TwistedNestedAlongFlow, "build", lambda self: self.new.args[real(self).i][0])
+    g = compile_claim(_free_jacobi_terms, None, None, STANDARD)
+    _forget(g)
+    a, b = _free_values(g)
+    assert a != b
+
+
 def _catalog():
     from stiefelsym.claims import load_catalog
     return load_catalog()

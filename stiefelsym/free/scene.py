@@ -1396,6 +1396,8 @@ class FreeScene(PaperObjects):
     def _tangent_images(self, tangent: Mapping[str, Any]) -> dict[Letter, NCPoly]:
         images = {}
         for key, v in tangent.items():
+            if key in ("X", "P") and key not in self._named:
+                getattr(self, key)          # every scene's letters (named on first use: Φ, Ψ are built once)
             if key not in MOVABLE or key not in self._named:
                 record_refusal(f"a flow that moves {key!r}", self.tracker)
                 raise KeyError(f"the flow moves {key!r}, which is not a letter of this scene")

@@ -205,6 +205,12 @@ def _transform(g: Graph, flows: frozenset = frozenset()) -> tuple[Graph, list]:
                 rewrite = _Twisted
             elif TWISTED_ALONG_FLOW in flows and a[0].qualname == "stiefelsym.twisted.bracket":
                 rewrite = _TwistedAlongFlow
+                try:                            # a bracket of a bracket: the derivation along the flow of f
+                    remap[i] = _TwistedNestedAlongFlow(g, deps, new, remap, i).build()
+                    report.append((i, a[0].qualname, None))
+                    continue
+                except Unsupported:
+                    pass
             else:
                 report.append((i, a[0].qualname, "the scene's own gradients (not a coordinate scene)"))
         elif op == "prim" and a[0].qualname in _SYSTEMS_STEPS:
@@ -1492,6 +1498,17 @@ def _parse_field_strength(g: Graph, rest: tuple, what: str) -> Any:
     return None
 
 
+def _constant_field_strength(g: Graph, deps: list, F: Any, scene: Ref, k: int) -> str | None:
+    """For a field strength F of a bracket inside the function k: the name of the constant of the function's
+    scene it is (such as s.eta), or None when F does not read that scene (refused when it moves with it)."""
+    if type(F) is not Ref or k not in deps[F.i]:
+        return None
+    fa = g.args[F.i]
+    if g.ops[F.i] != "attr" or fa[0] != scene or fa[1] not in MATRICES or fa[1] not in CONSTANT_ATTRS:
+        raise Unsupported("a magnetic bracket whose field strength moves with its point")
+    return fa[1]
+
+
 class _Same(dict):
     """The identity map of a graph's nodes (a pass over nodes of the new graph itself)."""
 
@@ -1546,12 +1563,7 @@ class _BracketFunction:
         inner = (b[2], b[3])
         if any(type(x) is not Ref or g.ops[x.i] != "fn" or kG in deps[x.i] for x in inner):
             raise Unsupported("a magnetic bracket whose functions read its scene")
-        self.Fattr = None                   # a field strength of the function's scene: one of its constants
-        if type(self.Finner) is Ref and kG in deps[self.Finner.i]:
-            fa = g.args[self.Finner.i]
-            if g.ops[self.Finner.i] != "attr" or fa[0] != b[1] or fa[1] not in MATRICES or fa[1] not in CONSTANT_ATTRS:
-                raise Unsupported("a magnetic bracket whose field strength moves with its point")
-            self.Fattr = fa[1]
+        self.Fattr = _constant_field_strength(g, deps, self.Finner, b[1], kG)
         self.g, self.deps, self.new, self.remap = g, deps, new, remap
         self.inner, self.at, self.S = inner, at, remap[at.i]
 
@@ -1667,6 +1679,61 @@ class _BracketDerivative:
 
     def build(self) -> Ref:
         return self.G.along(self.flow)
+
+
+class _AlongGiven(_Derivative):
+    """The derivative of a function of the graph along a flow given as a node of the new graph, at the
+    claim's scene."""
+
+    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, at: Any, f: Any, flow: Ref) -> None:
+        super().__init__(g, deps, new, remap, 0, f, at=(at, "bracket"))
+        self._flow = flow
+
+    def make_flow(self) -> Ref:
+        return self._flow
+
+
+class _TwistedNestedAlongFlow:
+    """``twisted.bracket(s, f, G)`` on the free algebra where G(t) = ``twisted.bracket(t, g, h)`` (the Jacobi
+    identity of the twisted bracket): G's flow would need the gradient of a bracket.  The bracket is skew,
+    {f, G}_ε = −dG(X_f), and on the free algebra G at the scene's own point is a value, dg along the scene's
+    magnetic flow X_h of h (graph nodes, as :class:`_TwistedAlongFlow` makes them), which the scene
+    differentiates along its magnetic flow X_f of f by the derivation of the free algebra (``s.d`` of a value:
+    X_f is tangent to T*V, so the derivation keeps the ideal of the constraints)."""
+
+    def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, i: int) -> None:
+        a = g.args[i]
+        if type(a[1]) is not Ref or g.ops[a[1].i] != "scene" or g.args[a[1].i] != (0,):
+            raise Unsupported("a magnetic bracket of a bracket on a scene other than the claim's")
+        self.F = _parse_field_strength(g, a[4:], "a magnetic bracket")
+        f, G = a[2], a[3]
+        if any(type(x) is not Ref or g.ops[x.i] != "fn" for x in (f, G)):
+            raise Unsupported("a magnetic bracket of something that is not a traced function")
+        kG, arity, body = g.args[G.i]
+        if (arity != 1 or type(body) is not Ref or g.ops[body.i] != "prim"
+                or g.args[body.i][0].qualname != "stiefelsym.twisted.bracket"):
+            raise Unsupported("a magnetic bracket of a function that is not a magnetic bracket")
+        b = g.args[body.i]
+        if type(b[1]) is not Ref or g.ops[b[1].i] != "scene" or g.args[b[1].i] != (kG,):
+            raise Unsupported("a magnetic bracket of a bracket at another scene")
+        self.Finner = _parse_field_strength(g, b[4:], "a magnetic bracket")
+        if any(type(x) is not Ref or g.ops[x.i] != "fn" or kG in deps[x.i] for x in (b[2], b[3])):
+            raise Unsupported("a magnetic bracket of a bracket whose functions read its scene")
+        self.Fattr = _constant_field_strength(g, deps, self.Finner, b[1], kG)
+        self.g, self.deps, self.new, self.remap, self.at = g, deps, new, remap, a[1]
+        self.f, self.inner = f, (b[2], b[3])
+        self.S = remap[a[1].i]
+
+    def build(self) -> Ref:
+        add, S, m = self.new.add, self.S, self.remap
+        Fi = (add("attr", (S, self.Fattr)) if self.Fattr is not None
+              else m[self.Finner.i] if type(self.Finner) is Ref else self.Finner)
+        Fo = m[self.F.i] if type(self.F) is Ref else self.F
+        gf, hf = self.inner
+        Xh = add("prim", (Named("stiefelsym.twisted.flow"), S, m[hf.i], Fi))
+        G = _AlongGiven(self.g, self.deps, self.new, m, self.at, gf, Xh).build()
+        Xf = add("prim", (Named("stiefelsym.twisted.flow"), S, m[self.f.i], Fo))
+        return add("neg", (add("call", (S, "d", (G, Xf), ())),))
 
 
 #: where a scene says TWISTED_NODES, what the pass tries when the first rule refuses: a derivative of a
