@@ -34,6 +34,19 @@ def test_a_corrupted_flow_loses_the_energy():
     assert "tr(AXXᵀ) + tr(PPᵀ)" not in {I.text() for I in d.integrals}
 
 
+def test_the_probes_are_evaluated_after_the_derivative_pass(monkeypatch):
+    """The derivatives of the ansatz along the flow are graph nodes, as in the methods: no dual scene is
+    built (one would raise here), and the space found is the same."""
+    import stiefelsym.scene as scene_module
+
+    def refused(*args, **kwargs):
+        raise AssertionError("a dual scene")
+    flow, _ = resolve_flow("neumann-euclidean")
+    monkeypatch.setattr(scene_module.TangentScene, "__init__", refused)
+    d = conserved(flow, Size(4, 2), degree=2, verify=())
+    assert {I.text() for I in d.integrals} == {"tr(AXXᵀ) + tr(PPᵀ)"}
+
+
 def test_a_corrupted_integral_fails_verification():
     flow, _ = resolve_flow("neumann-euclidean")
     wrong = Integral([(Fraction(1), Monomial((("A", "X", "Xt"),))), (Fraction(2), Monomial((("P", "Pt"),)))])
