@@ -771,11 +771,11 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
     # (check, position, value, field of the value)
     nonzero = [z + (sc._field,) for (sc, _), e in zip(charts, evaluations) for z in e.nonzero]
     problems = [p for e in evaluations for p in e.rank_problems + e.count_problems]
-    # the probe precedes every proof, and every verdict a residual that is not a finite function decides:
-    # a division by an identically zero expression leaves an infinity or nan in it (1/0 · 0 is nan, no
-    # nonzero function) or 0 (1/(1/0), no vanishing one): the statement is undefined there, an error
-    if (claim.expect == "nonzero" or not (nonzero or problems)
-            or any(_not_finite(z[2]) for z in nonzero)):
+    # the probe precedes every proof, every refutation by a rank or count, and every verdict a residual that
+    # is not a finite function decides: a division by an identically zero expression leaves an infinity or
+    # nan (1/0 · 0 is nan, no nonzero function; a matrix [[nan]] "has rank 1") or 0 (1/(1/0), no vanishing
+    # one): the statement is undefined there, an error
+    if claim.expect == "nonzero" or not nonzero or any(_not_finite(z[2]) for z in nonzero):
         why = division_probe(claim, n, r, func, seed)
         res.seconds = time.perf_counter() - t0       # the probe is part of the method's work
         if why:

@@ -97,15 +97,16 @@ def test_the_component_bits_read_through_power_traces_and_ranks():
 
 UNDEFINED = "s38_undefined_residuals.py"
 UNDEFINED_IDS = ("adv-s38-nan-times-zero", "adv-s38-nan-quotient", "adv-s38-nan-nonzero",
-                 "adv-s38-zero-of-infinity")
+                 "adv-s38-zero-of-infinity", "adv-s38-rank-of-nan", "adv-s38-rank-of-infinity")
 
 
 def test_a_residual_undefined_at_its_size_is_an_error_not_a_refutation():
     """A division by a constant that is 0 at the claim's size (tr C = 0 at r = 1): the exact method's symbolic
     arithmetic made 1/0 an infinity, and 1/0 · 0 = nan was "a nonzero function on the chart" (`fails`, no
     witness, where every sampled method is inconclusive), 1/(1/0) = 0 "vanishes identically" (a nonvanishing
-    claim `fails`).  Closed: the division probe precedes every verdict of a residual that is not finite and
-    every verdict of a nonvanishing claim (error); a defined false claim still fails."""
+    claim `fails`), a matrix [[nan]] had rank 1 and [[1/(1/0)]] rank 0 over the function field.  Closed: the
+    division probe precedes every verdict of a residual that is not finite, every refutation by a rank or count
+    and every verdict of a nonvanishing claim (error); a defined false claim still fails."""
     got = run_sizes(UNDEFINED, free=True)
     for c in UNDEFINED_IDS:
         v = got[(c, (3, 1))]
