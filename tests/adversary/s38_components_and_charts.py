@@ -41,6 +41,32 @@ def det_x(s):
     return {"d": det(s, s.X) - 1}
 
 
+@claim("adv-s38-pf-mixed", kind="id", sizes=SQ2)
+def pf_mixed(s):
+    """Pf(MW'Mᵀ) = Pf(W') for M = XᵀY, W' = YᵀQ at r = n = 2, read at the entry (0, 1) of ℝʳ (false:
+    Pf(MW'Mᵀ) = det M · Pf W')."""
+    M = s.X.T @ s.Y
+    W = s.Y.T @ s.Q
+    return {"pf": (M @ W @ M.T)[0, 1] - W[0, 1]}
+
+
+@claim("adv-s38-pf-squared-true", kind="id", sizes=SQ2)
+def pf_squared_true(s):
+    """Pf(MW'Mᵀ)² = Pf(W')² for M = XᵀY, W' = YᵀQ at r = n = 2 (true, control)."""
+    M = s.X.T @ s.Y
+    W = s.Y.T @ s.Q
+    V = M @ W @ M.T
+    return {"pf": V[0, 1] * V[0, 1] - W[0, 1] * W[0, 1]}
+
+
+@claim("adv-s38-cross-product", kind="id", sizes=SQ3)
+def cross_product(s):
+    """The first entry of the cross product of the first two columns of M = XᵀY is M₁₃ at n = 3 (false: the
+    cross product is det M times the third column)."""
+    M = s.X.T @ s.Y
+    return {"x": (M[1, 0] * M[2, 1] - M[2, 0] * M[1, 1]) - M[0, 2]}
+
+
 @claim("adv-s38-rank-mixed", kind="dim", sizes=SQ2)
 def rank_mixed(s):
     """XᵀY + I has rank 2 at a generic point (r = n = 2): false where XᵀY is a reflection (rank 1)."""

@@ -62,14 +62,16 @@ def test_a_graph_that_involves_no_r_is_shared_with_the_verdict_of_every_r():
 
 
 CHARTS = "s38_components_and_charts.py"
-COMPONENT_FALSE = ("adv-s38-e2-e1", "adv-s38-e2-square", "adv-s38-det-gx-gy")
+COMPONENT_FALSE = ("adv-s38-e2-e1", "adv-s38-e2-square", "adv-s38-det-gx-gy", "adv-s38-pf-mixed",
+                   "adv-s38-cross-product")
 GENERIC_RANKS = ("adv-s38-rank-mixed", "adv-s38-rank-mixed-low", "adv-s38-rank-minus")
 EVERY_POINT = ("adv-s38-rank-top", "adv-s38-rank-normal", "adv-s38-rank-bottom")
 
 
 def test_the_component_bits_read_through_power_traces_and_ranks():
     """At r = n, det(XᵀY) = ±1 read through elementary() (e₂ = e₁ on SO(3), e₂ = e₂² at n = 2) and det() of GX
-    and GY with a generic G (det X = det Y) without any entry read; generic ranks of XᵀY ± I, which differ
+    and GY with a generic G (det X = det Y) without any entry read, a Pfaffian Pf(MW'Mᵀ) = det M Pf W' and a cross
+    product of the columns of M = XᵀY read at entries of ℝʳ; generic ranks of XᵀY ± I, which differ
     between the components of O(n) x O(n); ranks at every point that fail where the top block of X is singular
     (the reduced charts' normal part is onto elsewhere only), and a division by the determinant of that block
     (a rational function, true where defined).  No hole: every false statement fails under every fixed-size
@@ -87,6 +89,7 @@ def test_the_component_bits_read_through_power_traces_and_ranks():
             if cc == c and s:
                 assert ("exact", "fails") in v and not {x for _, x in v} & set(PASSING), (c, s, v)
     assert verdicts(got, "adv-s38-e2-e1-true", (3, 3)) <= set(PASSING)
+    assert verdicts(got, "adv-s38-pf-squared-true", (2, 2)) <= set(PASSING)
     for s in ((3, 2), (4, 2)):
         assert verdicts(got, "adv-s38-div-top", s) <= set(PASSING), got
     assert verdicts(got, "adv-s38-det-x", (2, 2)) == {"error"}
