@@ -1325,6 +1325,14 @@ class FreeScene(PaperObjects):
         if set(point) == set(COMPLEX) and point["Z"] is self.Zc and point["Zdot"] is self.Zc_dot:
             return self._derivative_at_complex_point(F, point, tangent)
         keys = self._own_point(point, "a derivative")
+        # only the point handed to F moves: F's scene is not moved (at fixed sizes its X, P are the scene's,
+        # constant along the tangent).  The free derivative below moves every X, P of F's value, so a
+        # function that reads its scene's point other than through its argument is refused: its value on a
+        # scene of fresh letters, at the point of this scene's own letters, holds a fresh letter
+        u = FunctionScene(self)
+        if _fresh_letters_in(_raw(F(u, {k: getattr(self, k) for k in keys})), set(u._fresh.values()), set()):
+            raise refuse("a derivative at the scene's own point of a function that reads its scene's point (X, P, "
+                         "Y, Q) other than through its argument", self.tracker)
         return self.d(lambda t: F(t, {k: getattr(t, k) for k in keys}), dict(tangent))
 
     def pairs_dirac_flow(self, H: Callable[[Any, dict], Any], point: Mapping[str, Any],
@@ -1682,6 +1690,34 @@ def _point_letters_in(v: Any, out: set) -> set:
     elif isinstance(v, dict):
         for x in v.values():
             _point_letters_in(x, out)
+    return out
+
+
+def _fresh_letters_in(v: Any, fresh: set, out: set) -> set:
+    """The letters of ``fresh`` (and their transposes) in a value of a free scene, operator arguments included."""
+    if isinstance(v, Mat):
+        for x in v._a.flat:
+            _fresh_letters_in(x, fresh, out)
+    elif isinstance(v, Dual):
+        _fresh_letters_in(v.a, fresh, out)
+        _fresh_letters_in(v.b, fresh, out)
+    elif isinstance(v, NCPoly):
+        stack = list(v.letters())
+        while stack:
+            L = stack.pop()
+            if isinstance(L, OperatorLetter):
+                stack.extend(L.argument)
+            elif L in fresh:
+                out.add(L)
+    elif isinstance(v, Flow):
+        _fresh_letters_in(v.Xdot, fresh, out)
+        _fresh_letters_in(v.Pdot, fresh, out)
+    elif isinstance(v, (list, tuple)):
+        for x in v:
+            _fresh_letters_in(x, fresh, out)
+    elif isinstance(v, dict):
+        for x in v.values():
+            _fresh_letters_in(x, fresh, out)
     return out
 
 

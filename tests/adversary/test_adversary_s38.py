@@ -117,3 +117,47 @@ def test_a_residual_undefined_at_its_size_is_an_error_not_a_refutation():
         assert {x for _, x in v} <= {"error", "inconclusive"}, (c, v)
         assert verdicts(got, c, None, free=True) == {"undecided"}, (c, got)
     assert verdicts(got, "adv-s38-defined-false", (3, 1)) == {"fails"}
+
+
+OWN_POINT = "s38_own_point_scene_read.py"
+
+
+def test_a_derivative_at_the_free_scenes_own_point_keeps_the_functions_scene():
+    """systems.derivative(s, F, point, tangent) moves the point handed to F, not F's scene: d/dε tr(t.Xᵀ A z_X) along
+    z_X ↦ P is tr(XᵀAP).  At the dimension-free scene's own point the graph's transform (and the scene's own
+    derivative) moved the scene's letters with the point: 2 tr(XᵀAP) was proved for every n, r (and at the
+    coupled point), which every fixed-size method refutes at (3, 2).  Closed: the transform keeps the function's
+    scene constant there as at any point of the caller's own, and the scene's own derivative refuses a function
+    that reads its scene's point other than through its argument."""
+    got = run_sizes(OWN_POINT, methods=("exact", "modular", "float"), sizes=("3,2",))
+    for c in ("adv-s38-own-point-scene-read-false", "adv-s38-coupled-point-scene-read-false"):
+        assert verdicts(got, c, (3, 2)) == {"fails"}, (c, got)
+        assert verdicts(got, c, None, free=True) == {"undecided"}, (c, got)
+    assert verdicts(got, "adv-s38-own-point-scene-read", (3, 2)) <= set(PASSING)
+    assert verdicts(got, "adv-s38-own-point-scene-read", None, free=True) == {"proved"}
+
+
+def test_the_free_scenes_own_derivative_refuses_a_function_that_reads_its_scenes_point():
+    """The scene's own route (the graph's step kept, untransformed) refuses the function that reads t.X; the
+    transformed graph gives tr(XᵀAP)."""
+    import pytest
+
+    from stiefelsym import systems
+    from stiefelsym.free import FreeScene
+    from stiefelsym.ir import compile_claim
+    from stiefelsym.ir.derivative import derivatives, scene_flows
+    from stiefelsym.ir.evaluate import evaluate
+    from stiefelsym.scene import REALIZATIONS
+
+    def reads(t, z):
+        return t.tr(t.X.T @ t.A @ z["X"])
+
+    def func(s):
+        return {"d": systems.derivative(s, reads, {"X": s.X, "P": s.P}, {"X": s.P}) - s.tr(s.X.T @ s.A @ s.P)}
+
+    g = compile_claim(func, None, None, (REALIZATIONS["standard"].name, REALIZATIONS["standard"].build))
+    with pytest.raises(Exception, match="reads its scene's point"):
+        evaluate(g, FreeScene(lazy=True))
+    s = FreeScene(lazy=True)
+    v = evaluate(derivatives(g, scene_flows(s)), s)
+    assert str(s.reduce(v["d"]).normal_form) == "0"
