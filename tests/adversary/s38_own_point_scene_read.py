@@ -38,3 +38,36 @@ def coupled_point_scene_read_false(s):
     z = {"X": s.X, "P": s.P, "Y": s.Y, "Q": s.Q}
     d = systems.derivative(s, reads_both, z, {"X": s.P, "P": s.X})
     return {"d": d - 2 * s.tr(s.X.T @ s.A @ s.P) - 2 * s.tr(s.P.T @ s.X)}
+
+
+def potential_reads_its_scene(t, z):
+    """½tr(z_Pᵀz_P) + tr(t.Xᵀ A z_X): the potential's first factor is the scene's X (its gradient in z_X is AX)."""
+    return t.tr(z["P"].T @ z["P"]) * t.q(1, 2) + t.tr(t.X.T @ t.A @ z["X"])
+
+
+def neumann_own(t, z):
+    """½tr(z_Pᵀz_P) + tr(z_Xᵀ A z_X) (its gradient in z_X is 2AX)."""
+    return t.tr(z["P"].T @ z["P"]) * t.q(1, 2) + t.tr(z["X"].T @ t.A @ z["X"])
+
+
+def neumann_half(t, z):
+    """½tr(z_Pᵀz_P) + ½tr(z_Xᵀ A z_X) (its gradient in z_X is AX)."""
+    return t.tr(z["P"].T @ z["P"]) * t.q(1, 2) + t.tr(z["X"].T @ t.A @ z["X"]) * t.q(1, 2)
+
+
+@claim("adv-s38-pairs-flow-scene-read", kind="id", sizes=SZ)
+def pairs_flow_scene_read(s):
+    """The pairs flow of potential_reads_its_scene is the flow of neumann_half (true: both gradients are (AX, P))."""
+    z = {"X": s.X, "P": s.P}
+    f = systems.stiefel_pairs_flow(s, potential_reads_its_scene, z, [("X", "P")])
+    g = systems.stiefel_pairs_flow(s, neumann_half, z, [("X", "P")])
+    return {"X": f["X"] - g["X"], "P": f["P"] - g["P"]}
+
+
+@claim("adv-s38-pairs-flow-scene-read-false", kind="id", sizes=SZ)
+def pairs_flow_scene_read_false(s):
+    """... is the flow of neumann_own (false: its gradient in X is 2AX)."""
+    z = {"X": s.X, "P": s.P}
+    f = systems.stiefel_pairs_flow(s, potential_reads_its_scene, z, [("X", "P")])
+    g = systems.stiefel_pairs_flow(s, neumann_own, z, [("X", "P")])
+    return {"X": f["X"] - g["X"], "P": f["P"] - g["P"]}
