@@ -1325,7 +1325,22 @@ class FreeScene(PaperObjects):
         if set(point) == set(COMPLEX) and point["Z"] is self.Zc and point["Zdot"] is self.Zc_dot:
             return self._derivative_at_complex_point(F, point, tangent)
         keys = self._own_point(point, "a derivative")
+        # only the point handed to F moves: F's scene is not moved (at fixed sizes its X, P are the scene's,
+        # constant along the tangent).  The free derivative below moves every X, P of F's value, so a
+        # function that reads its scene's point other than through its argument is refused: its value on a
+        # scene of fresh letters, at the point of this scene's own letters, holds a fresh letter
+        self._reads_only_its_point(F, keys, "a derivative")
         return self.d(lambda t: F(t, {k: getattr(t, k) for k in keys}), dict(tangent))
+
+    def _reads_only_its_point(self, F: Callable[[Any, dict], Any], keys: list[str], what: str) -> None:
+        """Refuse a function F(t, z) of a point of the scene's own letters that reads its scene's point t.X,
+        t.P, ... other than through z: at fixed sizes only z moves (or is differentiated), while this scene
+        makes t.k and z[k] one letter.  Its value on a scene of fresh letters, at the point of this scene's
+        own letters, then holds a fresh letter."""
+        u = FunctionScene(self)
+        if _fresh_letters_in(_raw(F(u, {k: getattr(self, k) for k in keys})), set(u._fresh.values()), set()):
+            raise refuse(f"{what} at the scene's own point of a function that reads its scene's point (X, P, Y, "
+                         "Q) other than through its argument", self.tracker)
 
     def pairs_dirac_flow(self, H: Callable[[Any, dict], Any], point: Mapping[str, Any],
                          pairs: Any) -> dict[str, Mat]:
@@ -1339,6 +1354,7 @@ class FreeScene(PaperObjects):
         if sorted(k for pq in pairs for k in pq) != sorted(keys) or any(len(pq) != 2 for pq in pairs):
             raise refuse("a Hamiltonian flow whose pairs are not the point's letters", self.tracker)
         letters = {k: self._named[k] for k in keys}
+        self._reads_only_its_point(H, keys, "a Hamiltonian flow")
         u = FunctionScene(self)         # H's own letters: fresh (a value of this scene it closes over is a constant)
         h = u._hamiltonian(lambda t: H(t, {k: getattr(t, k) for k in keys}))
         nf = self.system.normal_form
@@ -1684,6 +1700,34 @@ def _point_letters_in(v: Any, out: set) -> set:
     elif isinstance(v, dict):
         for x in v.values():
             _point_letters_in(x, out)
+    return out
+
+
+def _fresh_letters_in(v: Any, fresh: set, out: set) -> set:
+    """The letters of ``fresh`` (and their transposes) in a value of a free scene, operator arguments included."""
+    if isinstance(v, Mat):
+        for x in v._a.flat:
+            _fresh_letters_in(x, fresh, out)
+    elif isinstance(v, Dual):
+        _fresh_letters_in(v.a, fresh, out)
+        _fresh_letters_in(v.b, fresh, out)
+    elif isinstance(v, NCPoly):
+        stack = list(v.letters())
+        while stack:
+            L = stack.pop()
+            if isinstance(L, OperatorLetter):
+                stack.extend(L.argument)
+            elif L in fresh:
+                out.add(L)
+    elif isinstance(v, Flow):
+        _fresh_letters_in(v.Xdot, fresh, out)
+        _fresh_letters_in(v.Pdot, fresh, out)
+    elif isinstance(v, (list, tuple)):
+        for x in v:
+            _fresh_letters_in(x, fresh, out)
+    elif isinstance(v, dict):
+        for x in v.values():
+            _fresh_letters_in(x, fresh, out)
     return out
 
 

@@ -2174,10 +2174,10 @@ _SYSTEMS_STEPS["stiefelsym.systems.euler_lagrange"] = _EulerLagrange
 
 class _OwnPointDerivative(_PointDerivative):
     """``systems.derivative(s, F, point, tangent)`` on the dimension-free scene at its own point (a dict of
-    its letters X, P, Y, Q under their own names, as the graph shows it): the derivative of
-    t ↦ F(t, {k: t.k}) along the tangent, as the scene computes it — the tangent map of :class:`_Derivative`
-    with z[k] and the scene's letter k moving alike, the components read (and the tangent checked) by the
-    scene's own step (:func:`tangent_vector`).  Any other point (the double or the complex point, which
+    its letters X, P, Y, Q under their own names, as the graph shows it): the derivative of F(t, z) at
+    z = point along the tangent — the tangent map of :class:`_PointDerivative` (z[k] moves, F's scene and its
+    letters do not), the components read (and the tangent checked) by the scene's own step
+    (:func:`tangent_vector`).  Any other point (the double or the complex point, which
     the scene differentiates its own way) keeps the step."""
 
     def __init__(self, g: Graph, deps: list, new: Graph, remap: dict, i: int) -> None:
@@ -2193,14 +2193,9 @@ class _OwnPointDerivative(_PointDerivative):
         if not ok:
             raise Unsupported("a derivative at a point other than the scene's own letters (X, P, Y, Q)")
 
-    def rule(self, j: int) -> Any:
-        g = self.g
-        op, a = g.ops[j], g.args[j]
-        if op == "attr" and type(a[0]) is Ref and g.ops[a[0].i] == "scene" and a[1] in MOVED + ("Phi", "Psi"):
-            if g.args[a[0].i] != (self.k,):
-                raise Unsupported("a function that reads another function's scene")
-            return _Derivative.rule(self, j)        # the scene's own letters move with the tangent here
-        return super().rule(j)
+    # (the function's scene keeps its X, P, Y, Q, as at a point of the caller's own (rule of
+    # _PointDerivative): d/dε F(t, point + ε·tangent) moves the point handed to F only; moving the scene's
+    # letters with it proved d/dε tr(t.Xᵀ A z_X) = 2 tr(XᵀAP), which every coordinate scene refutes)
 
     def tangent_step(self, flow: Ref, keys: tuple) -> Ref:
         return self.add("prim", (Named(TANGENT), self.S, flow, keys))

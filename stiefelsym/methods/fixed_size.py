@@ -771,7 +771,11 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
     # (check, position, value, field of the value)
     nonzero = [z + (sc._field,) for (sc, _), e in zip(charts, evaluations) for z in e.nonzero]
     problems = [p for e in evaluations for p in e.rank_problems + e.count_problems]
-    if (claim.expect == "nonzero" and nonzero) or not (nonzero or problems or claim.expect == "nonzero"):
+    # the probe precedes every proof, every refutation by a rank or count, and every verdict a residual that
+    # is not a finite function decides: a division by an identically zero expression leaves an infinity or
+    # nan (1/0 · 0 is nan, no nonzero function; a matrix [[nan]] "has rank 1") or 0 (1/(1/0), no vanishing
+    # one): the statement is undefined there, an error
+    if claim.expect == "nonzero" or not nonzero or any(_not_finite(z[2]) for z in nonzero):
         why = division_probe(claim, n, r, func, seed)
         res.seconds = time.perf_counter() - t0       # the probe is part of the method's work
         if why:
@@ -1128,6 +1132,19 @@ def _division_probe(claim: Claim, n: int, r: int, func: Callable | None = None, 
     return (f"the claim divides by zero at every one of 3 random points of T*V(n={n}, r={r}) over GF(p) "
             f"({type(last).__name__}: {last}): a divisor that vanishes identically, so a symbolic "
             "'proof' would only have divided by zero")
+
+
+def _not_finite(x: Any) -> bool:
+    """Whether a symbolic residual entry holds an infinity or nan (symengine's value of a division by an
+    identically zero expression; the flint types raise instead)."""
+    has = getattr(x, "has", None)
+    if has is None:
+        return False
+    import symengine as se
+    try:
+        return bool(has(se.nan) or has(se.zoo) or has(se.oo))
+    except Exception:   # noqa: BLE001 - not a symengine expression
+        return False
 
 
 def _short(x: Any, limit: int = 160) -> str:
