@@ -111,7 +111,7 @@ def dual_lax_pair_euclidean_metric(s):
 # -- the spectral curve (2r-integrals) ------------------------------------------------------
 
 @claim("dual-lax-symplectic-structure", paper=("LA4", "2r-integrals"), kind="id",
-       sizes=admissible(n_max=5), exact_max_n=5, exact_max_r={6: 1, 7: 1},
+       sizes=admissible(n_max=5), exact_max_n=5, exact_max_r={6: 2, 7: 1},
        statement=r"(J\mathcal L^*_{neum}(\lambda))^T=J\mathcal L^*_{neum}(\lambda),\ "
                  r"J=\begin{pmatrix}0&\mathbf I_r\\-\mathbf I_r&0\end{pmatrix},\qquad "
                  r"\tr\mathcal L^*_{neum}(\lambda)^k=0\ (k=1,3)")
@@ -182,7 +182,7 @@ def poisson_sphere_geodesic_flow(s):
 
 # -- the reflections (reflections) ----------------------------------------------------------
 
-@claim("dual-lax-reflections", paper=("DUAL", "reflections", "LA3", "LA4"), kind="id", exact_max_n=3, exact_max_r={4: 1, 5: 1, 6: 1, 7: 1},
+@claim("dual-lax-reflections", paper=("DUAL", "reflections", "LA3", "LA4"), kind="id", exact_max_n=4, exact_max_r={5: 2, 6: 1, 7: 1},
        sizes=admissible(n_max=5),
        statement=r"(X,P)\mapsto(S_iX,S_iP):\quad \mathcal L^*_{neum}(\lambda),\ \mathcal A^*_{neum}(\lambda)\ "
                  r"\text{are invariant},\quad i=1,\dots,n")
@@ -644,6 +644,7 @@ def J2r_printed(s, mu):
 
 @claim("chasles-manakov", paper=("Chasles-Manakov", "man-dual", "MAN-LA2"), kind="geo",
        sizes=admissible(n_max=5, where=lambda n, r: n >= 2 * r, condition="n >= 2r"), exact_max_n=3,
+       exact_max_r={4: 1},
        statement=r"a(\lambda)\det\mathcal L^*_{man}(\lambda)=\mathcal J_{2r}(\lambda)=\sum_{I_{2r}}"
                  r"\frac{a(\lambda)|\Phi|^{I_{2r}}_{I_{2r}}}{\prod(\lambda-a_i)},\ \deg\mathcal J_{2r}=n-2r,\ "
                  r"\det(U^T(A-\lambda)^{-1}U)=\det(U^TR_\lambda U)=\det\mathcal L^*_{man},\ "
@@ -751,7 +752,7 @@ def dual_invariants_are_manakov_integrals_for_r_n(s):
 # -- the Chasles cones are real ------------------------------------------------------------------------
 
 @claim("chasles-cones-real", paper=("Gen_Chasles", "2r-integrals", "conf0"), kind="geo",
-       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 1},
+       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 2},
        statement=r"\lambda^r\,\mathcal I_{2r}(\lambda)=\det\big(\lambda\mathbf I_n-Q(A-PP^T)Q\big),\ Q=\mathbf I_n-XX^T"
                  r"\ \Rightarrow\ c_1,\dots,c_{n-r}\in\mathbb R\ \text{for real}\ (X,P)")
 def chasles_cones_are_real(s):
