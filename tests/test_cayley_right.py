@@ -7,6 +7,7 @@ from __future__ import annotations
 import pytest
 
 import stiefelsym.proofs.sec4_integrability as m
+import stiefelsym.proofs.sec8_dual_lax_pair as d
 from stiefelsym import admissible, twisted
 from stiefelsym.backends.polyfield import SymbolicField
 from stiefelsym.claims import Claim, load_catalog
@@ -73,7 +74,7 @@ def test_a_graph_that_reads_r_is_refused_the_reduction_and_its_statement_fails(f
     assert not cayley_right.applies(g, "standard", 4, 2)
     res = run_exact(_claim(func), 4, 2, 0)
     assert res.verdict == "fails", (res.verdict, res.message)
-    assert not any(RIGHT in d for d in res.reductions), res.reductions
+    assert not any(RIGHT in x for x in res.reductions), res.reductions
 
 
 @pytest.mark.parametrize("n,r", [(4, 2), (4, 3)])
@@ -82,10 +83,10 @@ def test_the_manakov_reflections_are_proved_on_the_reduced_chart_and_a_forgotten
     assert c.exact_at(n, r)
     res = run_exact(c, n, r, 0)
     assert res.verdict == "proved", (res.verdict, res.message)
-    assert any(RIGHT in d for d in res.reductions), res.reductions
+    assert any(RIGHT in x for x in res.reductions), res.reductions
     bad = run_exact(_claim(_reflections_forget_S_on_P), n, r, 0)
     assert bad.verdict == "fails", (bad.verdict, bad.message)
-    assert any(RIGHT in d for d in bad.reductions), bad.reductions
+    assert any(RIGHT in x for x in bad.reductions), bad.reductions
 
 
 def test_r_one_and_r_n_keep_their_charts():
@@ -93,3 +94,26 @@ def test_r_one_and_r_n_keep_their_charts():
     assert not right_action_breaks(g)
     assert not cayley_right.applies(g, "standard", 4, 1)
     assert not cayley_right.applies(_graph(_reflections_forget_S_on_P, 3, 3), "standard", 3, 3)
+
+
+def _cones_with_a_plus_ppt(s):
+    """(chasles-cones-real) with A + PPᵀ in place of A − PPᵀ in the determinant: a wrong statement."""
+    Q = s.In - s.X @ s.X.T
+    M = Q @ (s.A + s.P @ s.P.T) @ Q
+    integrals, _ = d.spectral_integrals(s, s.lam)
+    lam_r = s.q(1)
+    for _ in range(s.r):
+        lam_r = lam_r * s.lam
+    return {"lambda^r I_2r(lambda) - det(lambda I - Q(A + PP^T)Q)":
+            lam_r * integrals[s.r] - d.det_matrix(s, s.scalar_matrix(s.lam, s.n, "n") - M)}
+
+
+def test_the_chasles_cones_are_proved_at_3_2_on_the_reduced_chart_and_a_wrong_sign_refuted():
+    c = load_catalog().get("chasles-cones-real")
+    assert c.exact_at(3, 2)
+    res = run_exact(c, 3, 2, 0)
+    assert res.verdict == "proved", (res.verdict, res.message)
+    assert any(RIGHT in x for x in res.reductions), res.reductions
+    bad = run_exact(_claim(_cones_with_a_plus_ppt), 3, 2, 0)
+    assert bad.verdict == "fails", (bad.verdict, bad.message)
+    assert any(RIGHT in x for x in bad.reductions), bad.reductions
