@@ -752,7 +752,7 @@ def dual_invariants_are_manakov_integrals_for_r_n(s):
 # -- the Chasles cones are real ------------------------------------------------------------------------
 
 @claim("chasles-cones-real", paper=("Gen_Chasles", "2r-integrals", "conf0"), kind="geo",
-       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 2},
+       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 2, 4: 1},
        statement=r"\lambda^r\,\mathcal I_{2r}(\lambda)=\det\big(\lambda\mathbf I_n-Q(A-PP^T)Q\big),\ Q=\mathbf I_n-XX^T"
                  r"\ \Rightarrow\ c_1,\dots,c_{n-r}\in\mathbb R\ \text{for real}\ (X,P)")
 def chasles_cones_are_real(s):
