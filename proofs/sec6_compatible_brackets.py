@@ -480,7 +480,7 @@ def H_neum_eigenspace(t):
 
 
 @claim("singular-a-noether", paper=("No", "momentum_map", "Phi"), kind="pb", exact_max_n=3,
-       exact_max_r={4: 2, 5: 1, 6: 1, 7: 1},
+       exact_max_r={4: 2, 5: 3, 6: 1, 7: 1},
        sizes=admissible(5, n_min=2, condition="n >= 2 (so(1) = 0)"),
        statement=r"a_1=\dots=a_{k_1},\dots:\quad \tfrac{d}{dt}\Phi_A=0,\ \Phi_A=\pr_{so(n)_A}(PX^T-XP^T),\quad "
                  r"\{\langle\Phi,\xi_A\rangle,H_{neum,\kappa}\}=0,\ \xi_A\in so(n)_A")
@@ -510,7 +510,7 @@ def H_neum_W(t):
     return t.tr(t.P.T @ t.P) / 2 - (t.q(1, 2) + t.kappa) * t.tr(XtP @ XtP) + t.tr(t.X.T @ A @ t.X) / 2
 
 
-@claim("singular-a-noether-covariant", paper=("No", "momentum_map", "Phi"), kind="pb", exact_max_n=4, exact_max_r={5: 2, 6: 2, 7: 2},
+@claim("singular-a-noether-covariant", paper=("No", "momentum_map", "Phi"), kind="pb", exact_max_n=4, exact_max_r={5: 3, 6: 2, 7: 2},
        sizes=admissible(5, where=lambda n, r: n - r >= 2, condition="n - r >= 2 (so(n - r) != 0)"),
        statement=r"A=\alpha\mathbf I+\beta WW^T:\ so(n)_A\supset so(\ker W^T),\quad "
                  r"\tfrac{d}{dt}\,Q\Phi Q=0\ \text{along (No)},\ Q=\det(W^TW)\mathbf I-W\,\mathrm{adj}(W^TW)W^T")

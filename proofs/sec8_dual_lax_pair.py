@@ -111,7 +111,7 @@ def dual_lax_pair_euclidean_metric(s):
 # -- the spectral curve (2r-integrals) ------------------------------------------------------
 
 @claim("dual-lax-symplectic-structure", paper=("LA4", "2r-integrals"), kind="id",
-       sizes=admissible(n_max=5), exact_max_n=5, exact_max_r={6: 1, 7: 1},
+       sizes=admissible(n_max=5), exact_max_n=5, exact_max_r={6: 2, 7: 1},
        statement=r"(J\mathcal L^*_{neum}(\lambda))^T=J\mathcal L^*_{neum}(\lambda),\ "
                  r"J=\begin{pmatrix}0&\mathbf I_r\\-\mathbf I_r&0\end{pmatrix},\qquad "
                  r"\tr\mathcal L^*_{neum}(\lambda)^k=0\ (k=1,3)")
@@ -182,7 +182,7 @@ def poisson_sphere_geodesic_flow(s):
 
 # -- the reflections (reflections) ----------------------------------------------------------
 
-@claim("dual-lax-reflections", paper=("DUAL", "reflections", "LA3", "LA4"), kind="id", exact_max_n=3, exact_max_r={4: 1, 5: 1, 6: 1, 7: 1},
+@claim("dual-lax-reflections", paper=("DUAL", "reflections", "LA3", "LA4"), kind="id", exact_max_n=3, exact_max_r={4: 1, 5: 2, 6: 1, 7: 1},
        sizes=admissible(n_max=5),
        statement=r"(X,P)\mapsto(S_iX,S_iP):\quad \mathcal L^*_{neum}(\lambda),\ \mathcal A^*_{neum}(\lambda)\ "
                  r"\text{are invariant},\quad i=1,\dots,n")
@@ -274,7 +274,7 @@ def spectral_curve_coefficients(s):
 
 
 @claim("2r-integrals-conserved", paper=("2r-integrals", "LA3", "LA4"), kind="pb",
-       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 2, 4: 1, 5: 1, 6: 1, 7: 1},
+       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 3, 4: 1, 5: 1, 6: 1, 7: 1},
        statement=r"\tfrac{d}{dt}\mathcal I_{2l}(\lambda)=0\ \text{along (N0\_XP2) and (NE\_XP)},\quad "
                  r"\tfrac{d}{d\epsilon}\mathcal I_{2l}(\lambda)\big|_{(Xe^{\epsilon\eta},Pe^{\epsilon\eta})}=0,"
                  r"\ \eta\in so(r),\ l=1,\dots,r")
@@ -453,7 +453,7 @@ def cone_equation(s, V, b):
 
 
 @claim("tangency", paper=("tangency", "cone0"), kind="geo",
-       sizes=admissible(n_max=5), exact_max_n=3, exact_max_r={4: 4, 5: 4, 6: 3, 7: 3},
+       sizes=admissible(n_max=5), exact_max_n=3, exact_max_r={4: 4, 5: 5, 6: 3, 7: 3},
        statement=r"\det(V^TBV)=\sum_I|B|^I_IG_I^2,\qquad V^TB\,v=\det(V^TBV)\,E_1,\ \ "
                  r"\langle v,Bv\rangle=\det(V^TBV)\,\mathrm{adj}(V^TBV)_{11},\ \ v=V\,\mathrm{adj}(V^TBV)E_1")
 def planes_tangent_to_a_cone(s):
@@ -751,7 +751,7 @@ def dual_invariants_are_manakov_integrals_for_r_n(s):
 # -- the Chasles cones are real ------------------------------------------------------------------------
 
 @claim("chasles-cones-real", paper=("Gen_Chasles", "2r-integrals", "conf0"), kind="geo",
-       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 1},
+       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 2},
        statement=r"\lambda^r\,\mathcal I_{2r}(\lambda)=\det\big(\lambda\mathbf I_n-Q(A-PP^T)Q\big),\ Q=\mathbf I_n-XX^T"
                  r"\ \Rightarrow\ c_1,\dots,c_{n-r}\in\mathbb R\ \text{for real}\ (X,P)")
 def chasles_cones_are_real(s):

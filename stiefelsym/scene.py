@@ -254,7 +254,7 @@ class Scene(PaperObjects):
                  rng: random.Random | None = None, component: int = 0,
                  realization: str = "standard", options: Mapping[str, Any] | None = None,
                  tracker: CoordinateTracker | None = None, right_reduction: bool = False,
-                 diagonal_A: bool = False) -> None:
+                 diagonal_A: bool = False, cayley_right: bool = False) -> None:
         if not isinstance(n, int) or not isinstance(r, int):
             raise SizeError("n and r must be integers")
         if r < 1:
@@ -284,6 +284,12 @@ class Scene(PaperObjects):
             raise ValueError("the diagonal chart is an equivariant chart of the standard realization, "
                              "reduced by O(n) alone")
         self._diagonal_A = diagonal_A
+        #: the symbolic Cayley chart for 2 <= r < n reduced by O(r) acting on the right as well: S11 = 0
+        #: (:meth:`_reduced_cayley_point`; stiefelsym.methods.cayley_right states when it is used)
+        if cayley_right and (chart != "cayley" or realization != "standard" or not 2 <= r < n):
+            raise ValueError("the right-reduced Cayley chart is a Cayley chart of the standard realization, "
+                             "2 <= r < n")
+        self._cayley_right = cayley_right
         self._params: dict[str, Any] = {}
         self._param_blocks: list[tuple[str, Any, Any]] = []
         self._cache: dict[str, Any] = {}
@@ -576,7 +582,10 @@ class Scene(PaperObjects):
         n, r = self.n, self.r
         tr = self._tracker
         Ir = self.identity(r, "r")
-        S11 = self._skew_params(f"{prefix}S", r, "r")
+        # reduced by O(r) on the right as well (the method's choice, for graphs covariant under it): S11 = 0,
+        # X1 = (I - KᵀK)(I + KᵀK)⁻¹ symmetric, and the points X(K)h, h in O(r), fill a dense open set
+        S11 = (self.zeros(r, r, ("r", "r")) if self._cayley_right and not prefix
+               else self._skew_params(f"{prefix}S", r, "r"))
         Kfull = self.zeros(n, r, ("n", "r"))
         for i in range(r, n):
             for j in range(r):

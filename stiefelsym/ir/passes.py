@@ -294,6 +294,61 @@ def coordinate_reads(g: Graph) -> dict[str, frozenset]:
     return reads
 
 
+#: the leaves a graph covariant under O(r) acting on the right may read: the point (X, P), what is built
+#: from it (Φ, Ψ), A, its inverse and eigenvalues, identities, generic elements and the scalar parameters
+#: (a second, complex or double point, velocities and other engine leaves are not admitted)
+RIGHT_LEAVES = frozenset({"X", "P", "Phi", "Psi", "A", "Ainv", "a", "In", "Ir", "xi", "zeta", "eta",
+                          "lam", "kappa", "eps"})
+#: the scene's calls whose values move with O(r) acting on the right when their arguments do (a generic
+#: matrix moves with it and stays generic; a matrix of given entries is checked by its sides)
+RIGHT_CALLS = frozenset({"generic", "fresh", "zeros", "identity", "scalar_matrix", "general_params", "mat",
+                         "resolvent", "tr", "killing", "q", "const", "scalar", "d", "dirac_flow", "bracket"})
+#: engine steps whose value is a constant matrix on R^n alone (no side on R^r): S_1, diag(I_2, 0)
+RIGHT_STEPS = frozenset({"stiefelsym.twisted.reflection", "stiefelsym.twisted.eigenspace_projector"})
+
+
+def right_action_breaks(g: Graph) -> list[str]:
+    """What in the graph may break covariance under O(r) acting on the right, (X, P) -> (Xh, Ph), h in
+    O(r), every R^r side of a generic matrix moving with h (empty: none).  A graph whose leaves move
+    with h (:data:`RIGHT_LEAVES`), whose calls are the typed covariant ones (:data:`RIGHT_CALLS`), whose
+    engine steps are constants on R^n (:data:`RIGHT_STEPS`), and which reads no entry or block of a
+    matrix with a side on R^r (or on an engine value's side), builds no matrix of given entries with
+    a side on R^r and takes no rank or count, computes with typed matrix operations only, each of which
+    commutes with the action: its residuals are covariant, whatever it reads of R^n."""
+    S, sides = _spaces(g)
+
+    def on_r(sd) -> bool:
+        if not sd:
+            return True          # a side the pass does not know: it may be R^r
+        return any(_involves_r(S, x) for x in sd)
+
+    out: dict[str, None] = {}
+    for i, (op, a) in enumerate(zip(g.ops, g.args)):
+        if op == "attr" and a[1] not in RIGHT_LEAVES:
+            out[f"the leaf {a[1]}"] = None
+        elif op == "call" and a[1] not in RIGHT_CALLS:
+            out[f"the engine call {a[1]}"] = None
+        elif op == "call" and a[1] == "mat" and on_r(sides[i]):
+            out["a matrix of given entries on R^r"] = None
+        elif op == "entry" and on_r(sides[a[0].i] if type(a[0]) is Ref else None):
+            out["an entry or a block of a matrix on R^r"] = None
+        elif op == "prim" and a[0].qualname not in RIGHT_STEPS:
+            out["an engine step"] = None
+        elif op in ("rank", "count", "apply"):
+            out[f"a {op}"] = None
+    return list(out)
+
+
+def _involves_r(S: "_Sides", x: int, seen: frozenset = frozenset()) -> bool:
+    """Whether a side may involve R^r: R^r, an engine value's side, or a sum with such a part."""
+    x = S.find(x)
+    if S.atom[x] in ("r", "opaque"):
+        return True
+    if x in seen:
+        return False
+    return any(_involves_r(S, p, seen | {x}) for p in S.parts[x])
+
+
 def _text(inv) -> str:
     return " and ".join({"n": "R^n", "r": "R^r"}[x] for x in sorted(inv))
 

@@ -31,7 +31,7 @@ import numpy as np
 from stiefelsym._lazy import lazy
 from stiefelsym.claims import Claim, Count, Rank, deadline
 from stiefelsym.ir.statements import InverseIdentities
-from stiefelsym.methods import costmodel
+from stiefelsym.methods import cayley_right, costmodel
 from stiefelsym.methods.costmodel import BudgetError as BudgetError  # the methods raise it (re-exported)
 from stiefelsym.ir import compile_claim
 from stiefelsym.ir.derivative import derivatives, scene_flows
@@ -729,17 +729,20 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                 # r = n: both components of O(n) for X (bit 0 of comp); with a second point (Y, Q),
                 # read on the first evaluation, both for Y as well (bit 1): the four combinations
                 comps = [0, 1] if r == n else [0]
+                # a graph that reads nothing of R^r: the chart reduced by O(r) on the right (S11 = 0)
+                right = cayley_right.applies(graph, claim.realization, n, r)
                 for comp in comps:
                     def build_cayley(comp=comp) -> tuple:
                         f = SymbolicField()
-                        return f, Scene(n, r, f, chart="cayley", component=comp, realization=claim.realization)
-                    f2, sc, ch = _chart_checks((claim.id, claim.realization, "exact", n, r, "cayley", comp),
-                                               build_cayley, func, graph)
+                        return f, Scene(n, r, f, chart="cayley", component=comp, realization=claim.realization,
+                                        cayley_right=right)
+                    f2, sc, ch = _chart_checks((claim.id, claim.realization, "exact", n, r, "cayley", comp)
+                                               + (("right",) if right else ()), build_cayley, func, graph)
                     evaluations.append(_evaluate(ch, f2, lambda R, f2=f2: _exact_rank(
                         R, f2, randomized, lambda: degree_bound(claim, n, r, func).numerator, key)))
                     if r == n and sc.second_point_read and len(comps) == 2:
                         comps += [2, 3]
-                    desc = REDUCED_CAYLEY_REDUCTION if r < n else CAYLEY_REDUCTION.format(
+                    desc = cayley_right.REDUCTION if right else REDUCED_CAYLEY_REDUCTION if r < n else CAYLEY_REDUCTION.format(
                         D=" D" if r == n else "",
                         comp=(f"; component {comp % 2 + 1} of O(n) (D = {'I' if comp % 2 == 0 else 'diag(-1,1,..,1)'})"
                               if r == n else ""))

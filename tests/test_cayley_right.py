@@ -1,0 +1,118 @@
+"""The symbolic Cayley chart reduced by O(r) acting on the right (S11 = 0) for graphs that read
+coordinates of R^n and nothing of R^r: the reduction is stated, it is refused to every graph that
+reads R^r (an entry of an R^r-sided matrix, a matrix of given entries on R^r), and a corrupted claim
+is refuted exactly on it; a statement true on the reduced chart only (X1 symmetric) fails."""
+from __future__ import annotations
+
+import pytest
+
+import stiefelsym.proofs.sec4_integrability as m
+import stiefelsym.proofs.sec8_dual_lax_pair as d
+from stiefelsym import admissible, twisted
+from stiefelsym.backends.polyfield import SymbolicField
+from stiefelsym.claims import Claim, load_catalog
+from stiefelsym.ir import compile_claim
+from stiefelsym.ir.passes import right_action_breaks
+from stiefelsym.methods import cayley_right
+from stiefelsym.methods.fixed_size import run_exact
+from stiefelsym.scene import REALIZATIONS, Scene
+
+RIGHT = "reduced by O(r) acting on the right"
+
+
+def _claim(func, cid="t-right"):
+    return Claim(id=cid, paper=("prep",), kind="id", section="t", func=func, sizes=admissible(7))
+
+
+def _graph(func, n, r):
+    cons = REALIZATIONS["standard"]
+    return compile_claim(func, n, r, (cons.name, cons.build))
+
+
+def _reflections_forget_S_on_P(s):
+    """The reflection S₁ applied to X alone in the image of the flow (dot_XP3*): a wrong statement."""
+    V = m.flow_XP3(s)
+    S = twisted.reflection(s)
+    W = m.flow_XP3_at(s, S @ s.X, S @ s.P)
+    return {"S: dP/dt": W["P"] - V["P"]}
+
+
+def _x1_symmetric(s):
+    """X1 = X1ᵀ for the top r × r block of X: true on the reduced chart only (an entry read on R^r)."""
+    X1 = s.X[0:s.r, 0:s.r]
+    return {"X1 - X1^T": X1 - X1.T + (s.A[0, 0] - s.A[0, 0]) * s.Ir}
+
+
+def _x1_symmetric_by_given_entries(s):
+    """The same statement through matrices of given entries on R^r, E_i (columns of I_r): E_1ᵀXᵀE E_2
+    against E_2ᵀXᵀE E_1, E the n × r matrix of the first r coordinate vectors (read on R^n too)."""
+    n, r = s.n, s.r
+    e1 = s.mat([[s.q(1)] if i == 0 else [s.q(0)] for i in range(r)], ("r", "?"))
+    e2 = s.mat([[s.q(1)] if i == 1 else [s.q(0)] for i in range(r)], ("r", "?"))
+    E = s.mat([[s.q(1) if i == j else s.q(0) for j in range(r)] for i in range(n)], ("n", "r"))
+    M = E.T @ s.X
+    return {"(X1)_12 - (X1)_21": e1.T @ M @ e2 - e2.T @ M @ e1}
+
+
+def test_the_chart_is_refused_outside_the_standard_cayley_chart_with_2_le_r_lt_n():
+    for bad in ({"n": 4, "r": 1}, {"n": 3, "r": 3}, {"n": 4, "r": 2, "chart": "equivariant"},
+                {"n": 4, "r": 2, "realization": "metric"}):
+        args = dict(chart="cayley", realization="standard")
+        args.update(bad)
+        n, r = args.pop("n"), args.pop("r")
+        with pytest.raises(ValueError):
+            Scene(n, r, SymbolicField(), cayley_right=True, **args)
+    s = Scene(4, 2, SymbolicField(), chart="cayley", cayley_right=True)
+    X = s.X._a
+    assert X[0, 1] == X[1, 0] and X[0, 1] != 0          # X1 symmetric, not diagonal
+
+
+@pytest.mark.parametrize("func", [_x1_symmetric, _x1_symmetric_by_given_entries])
+def test_a_graph_that_reads_r_is_refused_the_reduction_and_its_statement_fails(func):
+    g = _graph(func, 4, 2)
+    assert right_action_breaks(g)
+    assert not cayley_right.applies(g, "standard", 4, 2)
+    res = run_exact(_claim(func), 4, 2, 0)
+    assert res.verdict == "fails", (res.verdict, res.message)
+    assert not any(RIGHT in x for x in res.reductions), res.reductions
+
+
+@pytest.mark.parametrize("n,r", [(4, 2), (4, 3)])
+def test_the_manakov_reflections_are_proved_on_the_reduced_chart_and_a_forgotten_reflection_refuted(n, r):
+    c = load_catalog().get("manakov-reflections")
+    res = run_exact(c, n, r, 0)
+    assert res.verdict == "proved", (res.verdict, res.message)
+    assert any(RIGHT in x for x in res.reductions), res.reductions
+    bad = run_exact(_claim(_reflections_forget_S_on_P), n, r, 0)
+    assert bad.verdict == "fails", (bad.verdict, bad.message)
+    assert any(RIGHT in x for x in bad.reductions), bad.reductions
+
+
+def test_r_one_and_r_n_keep_their_charts():
+    g = _graph(_reflections_forget_S_on_P, 4, 1)
+    assert not right_action_breaks(g)
+    assert not cayley_right.applies(g, "standard", 4, 1)
+    assert not cayley_right.applies(_graph(_reflections_forget_S_on_P, 3, 3), "standard", 3, 3)
+
+
+def _cones_with_a_plus_ppt(s):
+    """(chasles-cones-real) with A + PPᵀ in place of A − PPᵀ in the determinant: a wrong statement."""
+    Q = s.In - s.X @ s.X.T
+    M = Q @ (s.A + s.P @ s.P.T) @ Q
+    integrals, _ = d.spectral_integrals(s, s.lam)
+    lam_r = s.q(1)
+    for _ in range(s.r):
+        lam_r = lam_r * s.lam
+    return {"lambda^r I_2r(lambda) - det(lambda I - Q(A + PP^T)Q)":
+            lam_r * integrals[s.r] - d.det_matrix(s, s.scalar_matrix(s.lam, s.n, "n") - M)}
+
+
+def test_the_chasles_cones_are_proved_at_3_2_on_the_reduced_chart_and_a_wrong_sign_refuted():
+    c = load_catalog().get("chasles-cones-real")
+    assert c.exact_at(3, 2)
+    res = run_exact(c, 3, 2, 0)
+    assert res.verdict == "proved", (res.verdict, res.message)
+    assert any(RIGHT in x for x in res.reductions), res.reductions
+    bad = run_exact(_claim(_cones_with_a_plus_ppt), 3, 2, 0)
+    assert bad.verdict == "fails", (bad.verdict, bad.message)
+    assert any(RIGHT in x for x in bad.reductions), bad.reductions
