@@ -2,6 +2,7 @@
 free algebra's brackets of brackets and derivatives at another point, the division probe before refutations,
 discovery after the derivative pass.  As before every run is the CLI in a fresh process, and each test asserts
 the CORRECT outcome."""
+import pytest
 from test_adversary_s38 import run_sizes, verdicts
 
 from adversary_cli import PASSING
@@ -26,3 +27,25 @@ def test_a_bracket_of_a_bracket_that_closes_over_the_claims_point():
         assert verdicts(got, c, (3, 2)) <= set(PASSING) and verdicts(got, c, (3, 2)), (c, got)
     assert verdicts(got, "adv-s38b-jacobi-captured-F", None, free=True) == {"undecided"}
     assert verdicts(got, "adv-s38b-jacobi-eta", None, free=True) == {"proved"}
+
+
+DIRAC = "s38b_dirac_nested_capture.py"
+
+
+def test_a_dirac_bracket_of_a_bracket_that_closes_over_the_claims_point_is_not_decided():
+    """No wrong verdict: under every fixed-size method but ball both claims end in an error (a TypeError of the
+    degree-tracking values inside the scene's dual numbers; ball, which tracks no degrees, refutes the false
+    one), free is undecided."""
+    got = run_sizes(DIRAC, sizes=("3,2",))
+    for c in ("adv-s38b-dirac-jacobi-captured", "adv-s38b-dirac-captured-zero"):
+        assert not verdicts(got, c, None, free=True) & set(PASSING), (c, got)
+    assert verdicts(got, "adv-s38b-dirac-captured-zero", (3, 2)) <= {"fails", "error"}, got
+
+
+
+@pytest.mark.xfail(strict=True, reason="the scene's own route of a Dirac bracket of a bracket that closes over the "
+                   "claim's point mixes degree-tracking values with dual numbers (TypeError)")
+def test_a_dirac_bracket_of_a_bracket_that_closes_over_the_claims_point_is_decided():
+    got = run_sizes(DIRAC, methods=("exact", "modular"), free=False, sizes=("3,2",))
+    assert verdicts(got, "adv-s38b-dirac-jacobi-captured", (3, 2)) <= set(PASSING), got
+    assert verdicts(got, "adv-s38b-dirac-captured-zero", (3, 2)) == {"fails"}, got
