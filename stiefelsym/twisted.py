@@ -257,8 +257,8 @@ def _free_flow(s, H: Function, F: Mat | None) -> Flow:
     def build():
         f = F._a[0, 0]
         HX, HP = (m._a[0, 0] for m in s._gradient(H))
-        if own:
-            HX, HP = s.to_point(HX, HP)
+        if own:     # a field strength that closes over a value of the base point is refused as H is
+            HX, HP, f = s.to_point(HX, HP, f)
         nf = s.system.normal_form
         x, p = _w(LX), _w(LP)
         Pi, Lam = _w(PI), _w(LAMBDA)

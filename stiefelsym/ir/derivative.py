@@ -1693,6 +1693,32 @@ class _AlongGiven(_Derivative):
         return self._flow
 
 
+def _reads_claim_point(g: Graph, roots: tuple) -> bool:
+    """Whether the nodes ``roots`` (function bodies included) read the claim's scene other than through its
+    constants (A, ξ, η, ..., its numbers and constant matrices) and the scene methods that compute with their
+    arguments only: a value of the claim's point, which a function of another scene holds as a constant."""
+    seen: set[int] = set()
+    stack = [x.i for x in roots if type(x) is Ref]
+    claim = lambda x: type(x) is Ref and g.ops[x.i] == "scene" and g.args[x.i] == (0,)   # noqa: E731
+    while stack:
+        j = stack.pop()
+        if j in seen:
+            continue
+        seen.add(j)
+        op, a = g.ops[j], g.args[j]
+        if claim(Ref(j)):
+            return True
+        if op == "attr" and claim(a[0]) and a[1] in CONSTANT_ATTRS:
+            continue
+        if op == "call" and claim(a[0]) and a[1] in NUMERIC_CALLS:
+            stack.extend(r for r in g.refs(j) if r != a[0].i)      # its arguments only
+            continue
+        if op == "prim" and (_constant_vector(a[0]) or getattr(a[0], "qualname", None) == "stiefelsym.twisted.magnetic_matrix"):
+            continue
+        stack.extend(g.refs(j))
+    return False
+
+
 class _TwistedNestedAlongFlow:
     """``twisted.bracket(s, f, G)`` on the free algebra where G(t) = ``twisted.bracket(t, g, h)`` (the Jacobi
     identity of the twisted bracket): G's flow would need the gradient of a bracket.  The bracket is skew,
@@ -1720,6 +1746,11 @@ class _TwistedNestedAlongFlow:
         if any(type(x) is not Ref or g.ops[x.i] != "fn" or kG in deps[x.i] for x in (b[2], b[3])):
             raise Unsupported("a magnetic bracket of a bracket whose functions read its scene")
         self.Fattr = _constant_field_strength(g, deps, self.Finner, b[1], kG)
+        # G at the scene's point is a value the derivation moves with every X, P it holds: a value of the claim's
+        # point that g, h or the field strength close over (a constant of G) would be moved too
+        if _reads_claim_point(g, (b[2], b[3]) + ((self.Finner,) if self.Fattr is None else ())):
+            raise Unsupported("a magnetic bracket of a bracket whose functions or field strength close over the "
+                              "claim's point")
         self.g, self.deps, self.new, self.remap, self.at = g, deps, new, remap, a[1]
         self.f, self.inner = f, (b[2], b[3])
         self.S = remap[a[1].i]
