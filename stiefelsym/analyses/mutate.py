@@ -637,7 +637,7 @@ def _graph_mutants(claim: Claim, sizes: Sequence[Size] | None = None,
                    census: Any = None) -> tuple[list[Mutant], str, str]:
     """:func:`graph_mutants`, and how they were made (:data:`ON_GRAPH`, :data:`ON_GRAPHS_PER_SIZE`)."""
     from stiefelsym.ir import compile_claim
-    from stiefelsym.ir.mutants import SkeletonMismatch, site_mutants, sized_graph_mutants
+    from stiefelsym.ir.mutants import SkeletonMismatch, per_size_mutants, site_mutants, sized_graph_mutants
     from stiefelsym.ir.mutants import graph_mutants as on_graph
     from stiefelsym.scene import REALIZATIONS
     cons = REALIZATIONS[claim.realization]
@@ -662,8 +662,10 @@ def _graph_mutants(claim: Claim, sizes: Sequence[Size] | None = None,
         else:
             try:
                 made = sized_graph_mutants(graphs, constraints, census)
-            except SkeletonMismatch as exc:
-                return [], f"{head}; its graphs per size differ: {exc}", ""
+            except SkeletonMismatch:
+                # no node is the same node at every size, and no site says which are one expression:
+                # each node of each size's graph is changed on its own
+                made = per_size_mutants(graphs, constraints, census)
         return [_as_mutant(gm, functools.partial(_sized_left_sides, gm, constraints)) for gm in made], "", \
             ON_GRAPHS_PER_SIZE
     sited = _sited(claim.func, {None: g}, constraints)
