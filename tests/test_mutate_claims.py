@@ -119,3 +119,9 @@ def test_a_claim_whose_graphs_part_between_sizes_is_mutated_at_each_size_on_its_
             size = [int(x) for x in m["description"].split("(graph at (")[1].split(")")[0].split(",")]
             bad = {(x["n"], x["r"]) for x in m["cells"] if x["verdict"] not in ("checked", "proved", "numeric")}
             assert bad == {tuple(size)}, m
+
+
+def test_the_correction_search_of_a_claim_whose_graphs_part_between_sizes_is_refused(monkeypatch, tmp_path):
+    """A correction is one change at every size: changes of one size's graph alone are no candidates."""
+    res, _ = _invoke(["mc-loop-over-r", "--corrections"], monkeypatch, tmp_path)
+    assert res.exit_code == 2 and "graphs per size differ" in res.stderr, res.output
