@@ -49,11 +49,26 @@ def deadline(seconds: float | None, what: str, timeout: Callable[[str], BaseExce
     outer_left, _ = signal.getitimer(signal.ITIMER_REAL)
     limit = min(seconds, outer_left) if outer_left > 0 else seconds
 
+    raised: list[BaseException] = []
+
     def expire(signum, frame):
-        raise timeout(f"{what} did not finish within {limit:.0f} s")
+        raised.append(timeout(f"{what} did not finish within {limit:.0f} s"))
+        raise raised[-1]
+
+    old_hook = sys.unraisablehook
+
+    def swallowed(info):
+        # the alarm came while Python ran code whose exceptions it ignores (a weakref callback such as
+        # WeakSet's, a __del__, run by the garbage collector): the timeout is not lost (nor printed as
+        # "Exception ignored in ..."), it is raised again a millisecond later, in the code it limits
+        if raised and info.exc_value is raised[-1]:
+            signal.setitimer(signal.ITIMER_REAL, 1e-3)
+        else:
+            old_hook(info)
     # the C module's signal(): the same handlers, without the enum conversion of the signal
     # module's wrapper (a few microseconds, on every exact run)
     old = _signal.signal(signal.SIGALRM, expire)
+    sys.unraisablehook = swallowed
     t0 = time.monotonic()
     signal.setitimer(signal.ITIMER_REAL, limit)
     try:
@@ -61,6 +76,7 @@ def deadline(seconds: float | None, what: str, timeout: Callable[[str], BaseExce
     finally:
         signal.setitimer(signal.ITIMER_REAL, 0)
         _signal.signal(signal.SIGALRM, old)
+        sys.unraisablehook = old_hook
         if outer_left > 0:
             signal.setitimer(signal.ITIMER_REAL, max(outer_left - (time.monotonic() - t0), 1e-3))
 

@@ -33,3 +33,13 @@ def per_size(s):
 def per_size_wrong_sign(s):
     """tr(XᵀX) = −r (printed with the wrong sign: fails), with r read as a number (traced per size)."""
     return {"tr": s.tr(s.X.T @ s.X) + int(s.r)}
+
+
+@claim("mc-loop-over-r", paper="prep", kind="id", section="t", sizes=admissible(n_max=3))
+def loop_over_r(s):
+    """tr(XᵀX) added r times is r², a loop over r (its graphs at two sizes are not one computation)."""
+    one = s.tr(s.X.T @ s.X)
+    total = one
+    for _ in range(int(s.r) - 1):
+        total = total + one
+    return {"sum": total - int(s.r) * int(s.r)}

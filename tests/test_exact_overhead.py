@@ -108,6 +108,36 @@ def test_deadline_restores_the_handler_and_fires():
     assert signal.getsignal(signal.SIGALRM) == before
 
 
+def test_a_deadline_that_expires_in_a_weakref_callback_is_neither_lost_nor_printed(capfd):
+    """The garbage collector runs weakref callbacks (WeakSet's) whose exceptions Python ignores, printing
+    "Exception ignored in ...": a timeout raised there is raised again in the code the deadline limits."""
+    import gc
+    import sys
+    import time
+    import weakref
+
+    class Box:
+        pass
+
+    def slow_callback(_):             # a callback still running when the deadline expires
+        t_end = time.monotonic() + 0.2
+        while time.monotonic() < t_end:
+            pass
+    hook = sys.unraisablehook
+    with pytest.raises(ClaimTimeout):
+        with deadline(0.05, "a loop"):
+            box = Box()
+            ref = weakref.ref(box, slow_callback)
+            del box                    # the callback runs now, and the alarm comes inside it
+            gc.collect()
+            t_end = time.monotonic() + 2.0
+            while time.monotonic() < t_end:
+                pass
+    assert ref() is None
+    assert sys.unraisablehook is hook
+    assert "Exception ignored" not in capfd.readouterr().err
+
+
 def test_la1_verdicts_and_a_corrupted_la1(catalog):
     """The exact method proves LA1 at small sizes and rejects it with the commutator's sign flipped."""
     from stiefelsym.claims import Claim, admissible

@@ -577,3 +577,22 @@ def test_a_claim_stated_at_one_r_is_proved_at_that_r_whatever_its_hypotheses():
     assert res.verdict == "proved", res.message
     assert "E_1E_1^T + E_2E_2^T = I_r" not in res.certificate
     assert free_scope(res) == "every n at r = 2", res.certificate
+
+
+def test_a_mutation_analysis_reduces_entries_until_the_first_open_one_with_the_same_verdicts():
+    """In a mutation analysis the dimension-free run stops at the first entry with a nonzero normal form
+    (the run is undecided whatever the others give); a corrupted claim is undecided either way, with the
+    other entries left unreduced, and the claim as printed, every entry 0, is proved as before."""
+    from stiefelsym.methods.fixed_size import mutation_analysis
+    corrupted = lambda t: {"XX^T": t.X @ t.X.T + m.col(t, 0) @ m.col(t, 0).T - m.col(t, 1) @ m.col(t, 1).T,  # noqa: E731
+                           "Psi": t.Psi + t.Psi}
+    printed = lambda t: {"XX^T": t.X @ t.X.T - m.col(t, 0) @ m.col(t, 0).T - m.col(t, 1) @ m.col(t, 1).T}  # noqa: E731
+    whole = run_free(BASE, corrupted)
+    assert whole.verdict == "undecided" and "residual entries have a nonzero normal form" in whole.message
+    with mutation_analysis():
+        first = run_free(BASE, corrupted)
+        assert first.verdict == "undecided", first.message
+        assert "the other entries were not reduced" in first.message
+        assert [c.status for c in first.checks] == ["open"]          # Psi + Psi was not reached
+        _proved(run_free(BASE, printed))
+    assert [c.status for c in whole.checks] == ["open", "open"]

@@ -91,3 +91,37 @@ def test_the_left_sides_of_a_graph_candidate_are_its_checks_without_their_right_
     want = compile_claim(lambda s: {"a": s.X.T @ s.X, "b": [s.Psi, s.Phi]}, None, None, cons)
     assert output_key(left) == output_key(want)       # (the replay keeps the nodes no output reads)
     assert _graph_left_sides(compile_claim(lambda s: {"a": s.Psi + s.Psi.T}, None, None, cons)) is None
+
+
+def test_without_a_named_claim_the_files_claims_alone_are_mutated(monkeypatch, tmp_path):
+    """As verify --claims: the file's claims, not the file's followed by the whole catalog's."""
+    res, _ = _invoke(["--method", "modular", "--jobs", "1", "--format", "json", "--limit", "1"], monkeypatch,
+                     tmp_path)
+    assert res.exit_code == 0, res.output
+    ids = [c["claim"] for c in json.loads(res.stdout)["claims"]]
+    assert ids and all(i.startswith("mc-") for i in ids), ids
+
+
+def test_a_claim_whose_graphs_part_between_sizes_is_mutated_at_each_size_on_its_own(monkeypatch, tmp_path):
+    """A loop over r: the graphs at (3,2), (3,1), (3,3) are not one computation and carry no site, so each
+    node of each size's graph is changed on its own; the claim is covered and every mutant is noticed."""
+    res, _ = _invoke(["mc-loop-over-r", "--method", "modular", "--method", "rational", "--jobs", "1",
+                      "--format", "json"], monkeypatch, tmp_path)
+    assert res.exit_code == 0, res.output
+    (c,) = json.loads(res.stdout)["claims"]
+    assert not c["skipped"] and c["on"] == "graphs per size" and c["mutants"], c
+    at = {m["description"].split("(graph at (")[1].split(")")[0] for m in c["mutants"]}
+    assert at == {"3,2", "3,1", "3,3"}, at
+    assert {m["classification"] for m in c["mutants"]} <= {"killed", "equivalent"}, c["mutants"]
+    # a mutant changed at one size only is refuted at that size and passes at the others
+    for m in c["mutants"]:
+        if m["classification"] == "killed":
+            size = [int(x) for x in m["description"].split("(graph at (")[1].split(")")[0].split(",")]
+            bad = {(x["n"], x["r"]) for x in m["cells"] if x["verdict"] not in ("checked", "proved", "numeric")}
+            assert bad == {tuple(size)}, m
+
+
+def test_the_correction_search_of_a_claim_whose_graphs_part_between_sizes_is_refused(monkeypatch, tmp_path):
+    """A correction is one change at every size: changes of one size's graph alone are no candidates."""
+    res, _ = _invoke(["mc-loop-over-r", "--corrections"], monkeypatch, tmp_path)
+    assert res.exit_code == 2 and "graphs per size differ" in res.stderr, res.output

@@ -634,10 +634,13 @@ def graph_mutants(claim: Claim, sizes: Sequence[Size] | None = None,
 
 
 def _graph_mutants(claim: Claim, sizes: Sequence[Size] | None = None,
-                   census: Any = None) -> tuple[list[Mutant], str, str]:
-    """:func:`graph_mutants`, and how they were made (:data:`ON_GRAPH`, :data:`ON_GRAPHS_PER_SIZE`)."""
+                   census: Any = None, each_size: bool = False) -> tuple[list[Mutant], str, str]:
+    """:func:`graph_mutants`, and how they were made (:data:`ON_GRAPH`, :data:`ON_GRAPHS_PER_SIZE`).
+    ``each_size`` (the mutation analysis): graphs per size with no site that are not one computation are
+    mutated at each size on its own (:func:`stiefelsym.ir.mutants.per_size_mutants`); otherwise (the
+    correction search: a correction is one change at every size) such a claim is not covered."""
     from stiefelsym.ir import compile_claim
-    from stiefelsym.ir.mutants import SkeletonMismatch, site_mutants, sized_graph_mutants
+    from stiefelsym.ir.mutants import SkeletonMismatch, per_size_mutants, site_mutants, sized_graph_mutants
     from stiefelsym.ir.mutants import graph_mutants as on_graph
     from stiefelsym.scene import REALIZATIONS
     cons = REALIZATIONS[claim.realization]
@@ -663,7 +666,11 @@ def _graph_mutants(claim: Claim, sizes: Sequence[Size] | None = None,
             try:
                 made = sized_graph_mutants(graphs, constraints, census)
             except SkeletonMismatch as exc:
-                return [], f"{head}; its graphs per size differ: {exc}", ""
+                if not each_size:
+                    return [], f"{head}; its graphs per size differ: {exc}", ""
+                # no node is the same node at every size, and no site says which are one expression:
+                # each node of each size's graph is changed on its own
+                made = per_size_mutants(graphs, constraints, census)
         return [_as_mutant(gm, functools.partial(_sized_left_sides, gm, constraints)) for gm in made], "", \
             ON_GRAPHS_PER_SIZE
     sited = _sited(claim.func, {None: g}, constraints)
@@ -1429,7 +1436,7 @@ def _claim_task(ci: int) -> _ClaimRun:
         at = [s for s, _ in plan if s is not None]
         where = notation_size(at)
         at = list(dict.fromkeys(([where] if where is not None else []) + at))
-        muts, uncovered, made_on = _graph_mutants(claim, at, census)
+        muts, uncovered, made_on = _graph_mutants(claim, at, census, each_size=True)
         if uncovered and mode == "auto":
             fallback, uncovered, census = uncovered.removeprefix("not covered on graphs: "), "", None
             muts, made_on = mutants(claim), ON_SOURCE

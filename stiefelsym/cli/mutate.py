@@ -63,23 +63,29 @@ def _parse_size(text: str) -> Size:
     return Size(n, r)
 
 
-def _registry(claims_file: str | None, sizes: Sequence[Size] = ()) -> Registry:
-    """The catalog, or the user's claims followed by the catalog's (the user's shadow the catalog's).  A
-    user's file is imported and traced in child processes (:func:`stiefelsym.run.userfile.load_claims_isolated`,
-    at its listed sizes and at ``sizes``): its claims are their graphs, and no code of the file runs here."""
+def _registry(claims_file: str | None, sizes: Sequence[Size] = (), ids: Sequence[str] = ()) -> Registry:
+    """The catalog; or, with a claims file, its claims alone when they include every named claim (or none
+    is named, as ``verify --claims`` selects), else the user's claims followed by the catalog's (the user's
+    shadow the catalog's).  A user's file is imported and traced in child processes
+    (:func:`stiefelsym.run.userfile.load_claims_isolated`, at its listed sizes and at ``sizes``): its claims
+    are their graphs, and no code of the file runs here."""
+    user = None
+    if claims_file is not None:
+        from stiefelsym.run.userfile import load_claims_isolated
+        try:
+            user = load_claims_isolated(claims_file, sizes=sizes)
+        except CatalogError as exc:
+            raise MutateInputError(str(exc)) from None
+        if all(i in user for i in ids):
+            return user
     try:
         catalog = load_catalog()
     except (ImportError, CatalogError, ValueError) as exc:
-        if claims_file is None:
+        if user is None:
             raise MutateInputError(f"cannot load the catalog of claims: {exc}") from None
         catalog = Registry()
-    if claims_file is None:
+    if user is None:
         return catalog
-    from stiefelsym.run.userfile import load_claims_isolated
-    try:
-        user = load_claims_isolated(claims_file, sizes=sizes)
-    except CatalogError as exc:
-        raise MutateInputError(str(exc)) from None
     merged = Registry()
     for c in user:
         merged.add(c)
@@ -206,7 +212,7 @@ def mutate(ids: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str, ...
     target = report_dir         # written only where --report-dir says (make mutate: reports/)
     if target is not None:
         _check_report_dir(target)
-    registry = _registry(claims_file, parsed_sizes)
+    registry = _registry(claims_file, parsed_sizes, ids)
     try:
         claims: list[Claim] = [registry.get(i) for i in ids] if ids else list(registry)
     except KeyError as exc:

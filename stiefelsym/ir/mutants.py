@@ -210,6 +210,8 @@ class GraphMutant:
     #: (over every size's graph) the change was made at
     site: SourceSite | None = None
     nodes: int = 1
+    #: a mutant of one size's graph only (:func:`per_size_mutants`): that size
+    at: tuple[int, int] | None = None
 
     @property
     def func(self) -> GraphClaim | SizedGraphClaim:
@@ -240,6 +242,9 @@ class GraphMutant:
             return f"{describe(self.changes)} ({at}{self.site.where()}{sizes}: {self.operator}: {self.text}{many})"
         if self.sized is None:
             return f"{describe(self.changes)} (graph: node %{self.node}, {self.operator}: {self.text})"
+        if self.at is not None:
+            return (f"{describe(self.changes)} (graph at ({self.at[0]},{self.at[1]}) only: node %{self.node}, "
+                    f"{self.operator}: {self.text})")
         at = ", ".join(f"({n},{r})" for n, r in self.sized)
         return f"{describe(self.changes)} (graphs at {at}: node %{self.node}, {self.operator}: {self.text})"
 
@@ -380,6 +385,37 @@ def sized_graph_mutants(graphs: dict[tuple[int, int], Graph], constraints: tuple
         if notation:
             gm.changes = diff(graphs[z], made[z])
         out.append(gm)
+    return out
+
+
+def per_size_mutants(graphs: dict[tuple[int, int], Graph], constraints: tuple,
+                     census: MutantCensus | None = None, notation: bool = True) -> list[GraphMutant]:
+    """The mutants of a claim traced per size whose graphs are not one computation (a loop or a condition
+    over the sizes made other nodes at other sizes) and have no sites (a claims file's graphs, replayed):
+    each is one change at one node of one size's graph (:func:`sites`), the other sizes keeping the claim's
+    graph, so every node of every size is changed once.  A change the tracer refuses is left out (ill-typed),
+    and so is one that computes what the claim or an earlier mutant computes."""
+    from stiefelsym.ir.notation import diff
+    census = census if census is not None else MutantCensus()
+    sizes = list(graphs)
+    base = tuple(output_key(graphs[z]) for z in sizes)
+    seen = {base}
+    out: list[GraphMutant] = []
+    for j, z in enumerate(sizes):
+        for site in sites(graphs[z]):
+            census.sites += 1
+            made = _made_at_sizes(graphs, {z: {site.node: site.edit}}, constraints, census)
+            if made is None:
+                continue
+            key = base[:j] + (output_key(made[z]),) + base[j + 1:]
+            if not _new(key, base, seen, census):
+                continue
+            gm = GraphMutant(len(out), site.node, site.operator, site.text, None, "/".join(key),
+                             sized={y: (graphs[y], {site.node: site.edit} if y == z else {}) for y in sizes},
+                             at=z)
+            if notation:
+                gm.changes = diff(graphs[z], made[z])
+            out.append(gm)
     return out
 
 

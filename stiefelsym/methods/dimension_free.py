@@ -30,6 +30,7 @@ from typing import Any, Callable
 from stiefelsym.certificate_check import CASES, check_certificate
 from stiefelsym.claims import Claim, Count, Rank, Size, SizeSpec
 from stiefelsym.ir.statements import InverseIdentities
+from stiefelsym.methods import fixed_size
 from stiefelsym.methods.fixed_size import _base_result, division_probe, _entries, _short, call_claim
 from stiefelsym.results import CheckOutcome, Result
 from stiefelsym.free import FreeScene, FreeSolveError, NeedsCoordinates, RewritingError
@@ -114,6 +115,10 @@ def run_free_on(claim: Claim, func: Callable, family: SizeFamily | None, alone: 
     if any(isinstance(v, (Rank, Count)) for v in checks.values()):
         return undecided("ranks and counts need coordinates; decided by the fixed-size methods")
     rules, outcomes, derivations, open_entries, proved_entries = [], [], [], [], []
+    # a mutation analysis (or a correction search) needs the verdict only: once one entry has a nonzero
+    # normal form the run is undecided whatever the others reduce to (a proof needs every entry 0), so
+    # the others are not reduced (with the columns of R^r, a nonzero normal form is the costly one)
+    first_open_only = fixed_size._MUTATION_ANALYSIS
     try:
         for name, value in checks.items():
             bad = 0
@@ -125,6 +130,8 @@ def run_free_on(claim: Claim, func: Callable, family: SizeFamily | None, alone: 
                 if not red.is_zero:
                     bad += 1
                     open_entries.append((pos, red))
+                    if first_open_only:
+                        break
                 else:
                     proved_entries.append((pos, red, len(derivations) if red.rules else None))
                 if red.rules or not red.is_zero:
@@ -132,6 +139,8 @@ def run_free_on(claim: Claim, func: Callable, family: SizeFamily | None, alone: 
             said = value.describe() if isinstance(value, InverseIdentities) else ""
             outcomes.append(CheckOutcome(name, "zero" if not bad else "open",
                                          said if not bad else f"{bad} entries with nonzero normal form"))
+            if first_open_only and open_entries:
+                break
     except RewritingError as exc:
         return undecided(f"rewriting did not terminate: {exc}")
     res.checks = outcomes
@@ -169,6 +178,9 @@ def run_free_on(claim: Claim, func: Callable, family: SizeFamily | None, alone: 
     if open_entries:
         pos, red = open_entries[0]
         res.residual = f"{pos}: nf = {_short(red.normal_form)}"
+        if first_open_only:
+            return undecided(f"a residual entry has a nonzero normal form ({res.residual}; the other entries were "
+                             "not reduced: a mutation analysis needs the verdict only); the fixed-size methods decide")
         return undecided(f"{len(open_entries)} residual entries have a nonzero normal form "
                          f"(e.g. {res.residual}); the fixed-size methods decide")
     # the proof is about the graph traced with symbolic sizes, which is the graph every fixed-size method
