@@ -10,7 +10,7 @@ each of which must be refuted with a witness.
 Only the public API: `stiefelsym`'s exports, the scene `s`, and `stiefelsym.systems` / `stiefelsym.twisted`
 for the systems on T*V × T*V and the twisted form (no import of the catalog).
 """
-from stiefelsym import admissible, block, claim, twisted
+from stiefelsym import admissible, block, claim, comm, twisted
 from stiefelsym.systems import derivative, double_point, stiefel_pairs_flow
 
 #: r = 1
@@ -223,9 +223,47 @@ def magnetic_geodesic_phi_not_conserved(s):
     return {"dPhi/dt": s.d(lambda t: t.Phi, flow)}
 
 
+# -- §6: the (CPB) system on (so(n) ⊕ Sym(n))* ------------------------------------------------------
+
+def cpb_flow(t, z):
+    """(CPB): ḣ = [v, A], v̇ = [h, v]."""
+    return {"h": comm(z["v"], t.A), "v": comm(z["h"], z["v"])}
+
+
+def L_central(t, z):
+    """(central): λh + v − λ²A."""
+    return t.lam * z["h"] + z["v"] - t.lam * t.lam * t.A
+
+
+@claim("y-cpb-central-integrals", paper=("CPB", "central"), kind="pb", section="6", sizes=SMALL,
+       statement=r"\dot h=[v,A],\ \dot v=[h,v]:\ \tfrac{d}{dt}\tr(\lambda h+v-\lambda^2A)^k=0,\ k=1,2,3")
+def cpb_central_integrals(s):
+    """The remark after Theorem NEUMANN: the functions (central) tr(λh + v − λ²A)ᵏ are integrals of (CPB) at every point (h, v) of so(n) ⊕ Sym(n), not only on the image of Θ (the Lax form d/dt(v + λh − λ²A) = [h − λA, v + λh − λ²A])."""
+    G = s.generic("G", "n", "n")
+    z = {"h": s.xi, "v": G + G.T}
+    flow = cpb_flow(s, z)
+    checks = {f"d/dt tr(lambda h + v - lambda^2 A)^{k}":
+              derivative(s, lambda t, w, k=k: power_trace(t, L_central(t, w), k), z, flow) for k in (1, 2, 3)}
+    M = z["h"] - s.lam * s.A
+    checks["Lax form"] = (flow["v"] + s.lam * flow["h"]) - comm(M, L_central(s, z))
+    return checks
+
+
+@claim("y-neumann-normal-through-theta", paper=("CPB", "N0_XP2", "prep"), kind="id", section="6", sizes=SMALL,
+       statement=r"H_{neum_0}=H\circ\Theta,\ H=\tfrac12\langle h,h\rangle-\langle A,v\rangle,\ \Theta=(\Phi,XX^T)")
+def neumann_normal_through_theta(s):
+    """The remark after Theorem NEUMANN: the normal-metric Neumann Hamiltonian is H∘Θ with H = ½⟨h, h⟩ − ⟨A, v⟩ and Θ(X, P) = (Φ, XXᵀ), and Θ maps its flow (N0_XP2) to (CPB)."""
+    v = s.X @ s.X.T
+    H_neum0 = lambda t: t.killing(t.Phi, t.Phi) / 2 + t.tr(t.X.T @ t.A @ t.X) / 2
+    flow = s.dirac_flow(H_neum0)
+    return {"H_neum0 - H(Theta)": H_neum0(s) - (s.killing(s.Phi, s.Phi) / 2 - s.killing(s.A, v)),
+            "dh/dt - [v, A]": s.d(lambda t: t.Phi, flow) - comm(v, s.A),
+            "dv/dt - [h, v]": s.d(lambda t: t.X @ t.X.T, flow) - comm(s.Phi, v)}
+
+
 # -- §3: the Jensen family ------------------------------------------------------------------------
 
-@claim("y-jensen-psi-conserved-by-every-member", paper=("EM", "dot_XP"), kind="pb", section="3", sizes=SMALL,
+@claim("y-jensen-family-commutes", paper=("EM", "dot_XP"), kind="pb", section="3", sizes=SMALL,
        statement=r"\{H_\kappa,H_\mu\}=0,\ \{\Psi,H_\kappa\}=0,\ \{\Phi,H_\kappa\}=0")
 def jensen_family_commutes(s):
     """The metrics of the family (EM) have commuting geodesic flows: H_κ and H_μ Poisson-commute for all κ, μ (both are functions of the Casimir-related ½<Φ, Φ> and ½<Ψ, Ψ>), and each conserves Φ and Ψ."""
