@@ -11,7 +11,8 @@ Only the public API: `stiefelsym`'s exports, the scene `s`, and `stiefelsym.syst
 for the systems on T*V × T*V and the twisted form (no import of the catalog).
 """
 from stiefelsym import admissible, block, claim, comm, twisted
-from stiefelsym.systems import derivative, double_point, stiefel_pairs_flow
+from stiefelsym.systems import (complex_point, ctranspose, derivative, double_point, re_trace, realify_real,
+                                stiefel_pairs_flow)
 
 #: r = 1
 R_IS_1 = admissible(n_max=4, n_min=2, r_in=(1,), condition="r = 1")
@@ -157,6 +158,45 @@ def coupled_single_momentum(s):
     """A false variant: only the diagonal momentum XᵀP − PᵀX + YᵀQ − QᵀY is conserved by the coupled flow; the momentum XᵀP − PᵀX of the first point alone is not (for r ≥ 2)."""
     flow = stiefel_pairs_flow(s, H_coupled, scene_pair(s), [("X", "P"), ("Y", "Q")])
     return {"d(X^T P - P^T X)/dt": s.d(lambda t: t.X.T @ t.P - t.P.T @ t.X, flow)}
+
+
+# -- Appendix 2: the Neumann system on the complex Stiefel variety W(n, r) ---------------------------
+# Z, Ż realified (2n × 2r): Zᵀ is the plain transpose, Z̄ the conjugate s.conj(Z).
+
+def complex_A(t):
+    """A as a complex matrix, realified."""
+    return realify_real(t, t.A)
+
+
+def flow_complex(t, z):
+    """(W-eq), (W-L): Z̈ = −AZ + ZΛ, Λ = Z̄ᵀAZ − Ż̄ᵀŻ."""
+    Z, Zd, A = z["Z"], z["Zdot"], complex_A(t)
+    Lam = ctranspose(t, t.conj(Z)) @ A @ Z - ctranspose(t, t.conj(Zd)) @ Zd
+    return {"Z": Zd, "Zdot": -(A @ Z) + Z @ Lam}
+
+
+def energy_complex(sign):
+    """E = ½Re tr(ŻᵀŻ̄) + sign·½Re tr(ZᵀAZ̄) (sign = +1: T + U of (W-Lag))."""
+    return lambda t, w: (t.q(1, 2) * re_trace(t, ctranspose(t, w["Zdot"]) @ t.conj(w["Zdot"]))
+                         + sign * t.q(1, 2) * re_trace(t, ctranspose(t, w["Z"]) @ complex_A(t) @ t.conj(w["Z"])))
+
+
+@claim("y-complex-energy", paper=("W-Lag", "W-eq", "W-L"), kind="pb", section="A2",
+       sizes=admissible(n_max=3), exact_max_n=2,
+       statement=r"\tfrac{d}{dt}\Big(\tfrac12\tr(\dot Z^T\dot{\bar Z})+\tfrac12\tr(Z^TA\bar Z)\Big)=0\ \text{along (W-eq)}")
+def complex_energy(s):
+    """The energy T + U of the Lagrangian (W-Lag) of the complex Neumann system is conserved along (W-eq), (W-L), as that of (D-Lag) is."""
+    z = complex_point(s)
+    return {"dE/dt": derivative(s, energy_complex(1), z, flow_complex(s, z))}
+
+
+@claim("y-complex-lagrangian-not-conserved", paper=("W-Lag", "W-eq"), kind="not", section="A2",
+       sizes=admissible(n_max=3, where=lambda n, r: r < n, condition="r < n"), exact_max_n=2, expect="nonzero",
+       statement=r"r<n:\ \tfrac{d}{dt}\Big(\tfrac12\tr(\dot Z^T\dot{\bar Z})-\tfrac12\tr(Z^TA\bar Z)\Big)\ne0")
+def complex_lagrangian_not_conserved(s):
+    """A false variant: the Lagrangian T − U of (W-Lag) itself is not conserved along (W-eq) for r < n."""
+    z = complex_point(s)
+    return {"dL/dt": derivative(s, energy_complex(-1), z, flow_complex(s, z))}
 
 
 # -- §10: F_λ(X, Y) = Xᵀ(A² − λ²)⁻¹Y ------------------------------------------------------------

@@ -29,13 +29,14 @@ SMALL = {
     "y-f-lambda-wrong-sign": (3, 2), "y-magnetic-energy": (3, 2), "y-magnetic-geodesic-phi-eps": (3, 2),
     "y-magnetic-geodesic-phi-not-conserved": (3, 2), "y-jensen-family-commutes": (3, 2),
     "y-euclidean-normal-differ": (3, 2), "y-cpb-central-integrals": (3, 2),
-    "y-neumann-normal-through-theta": (3, 2),
+    "y-neumann-normal-through-theta": (3, 2), "y-complex-energy": (2, 1),
+    "y-complex-lagrangian-not-conserved": (2, 1),
 }
 FALSE = {"y-double-energy-wrong-sign", "y-coupled-single-momentum-not-conserved",
-         "y-magnetic-geodesic-phi-not-conserved", "y-euclidean-normal-differ"}
+         "y-magnetic-geodesic-phi-not-conserved", "y-euclidean-normal-differ", "y-complex-lagrangian-not-conserved"}
 
 
-def test_the_example_file_states_seventeen_claims(claims):
+def test_the_example_file_states_nineteen_claims(claims):
     assert set(claims) == set(SMALL)
     assert {cid for cid, c in claims.items() if c.expect == "nonzero"} == FALSE
 
