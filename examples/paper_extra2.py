@@ -263,6 +263,37 @@ def magnetic_geodesic_phi_not_conserved(s):
     return {"dPhi/dt": s.d(lambda t: t.Phi, flow)}
 
 
+# -- Appendix 1: the decomposition (OD) of Proposition YM ------------------------------------------
+
+def pr_e(e, xi):
+    """pr_e(ξ) = ξ e⊗e + e⊗e ξ (e a unit column)."""
+    return xi @ e @ e.T + e @ e.T @ xi
+
+
+@claim("y-ym-projections", paper=("OD", "YM", "mag6"), kind="id", section="A1", sizes=R_IS_1,
+       statement=r"|e|=1:\ \pr_e^2=\pr_e\ \text{on }so(n),\ \pr_e(\xi)=\xi e\wedge e,\ "
+                 r"\pr_{e^\perp}(\xi)e=0,\ \langle\pr_{e^\perp}(\xi),e\wedge w\rangle=0")
+def ym_projections(s):
+    """The decomposition (OD) so(n) = {e ∧ ℝⁿ} ⊕ {e ∧ ℝⁿ}^⊥ of Proposition YM for a unit vector e (the point X of S^{n−1} = V(n, 1)): pr_e(ξ) = ξe⊗e + e⊗eξ is the projection onto e ∧ ℝⁿ, pr_e(ξ) = (ξe) ∧ e (so F_Ω = pr_{e⊥}(Ω) = Ω − ė∧e for ė = Ωe, as in (mag6)), and pr_{e⊥}(ξ) = ξ − pr_e(ξ) kills e and is Killing-orthogonal to every e ∧ w."""
+    e, xi = s.X, s.xi
+    w = s.fresh("n", "r")
+    p = pr_e(e, xi)
+    q = xi - p
+    return {"pr_e pr_e - pr_e": pr_e(e, p) - p,
+            "pr_e(xi) skew": p + p.T,
+            "pr_e(xi) - (xi e) wedge e": p - ((xi @ e) @ e.T - e @ (xi @ e).T),
+            "pr_perp(xi) e": q @ e,
+            "<pr_perp(xi), e wedge w>": s.killing(q, e @ w.T - w @ e.T)}
+
+
+@claim("y-ym-half-projection-not-skew", paper=("OD",), kind="not", section="A1", sizes=R_IS_1,
+       expect="nonzero", statement=r"|e|=1,\ n\ge2:\ \xi e\otimes e\notin so(n)")
+def ym_half_projection(s):
+    """A false variant: ξ e⊗e alone, half of pr_e(ξ), is not in so(n) (for n ≥ 2)."""
+    half = s.xi @ s.X @ s.X.T
+    return {"xi e e^T skew?": half + half.T}
+
+
 # -- §6: the (CPB) system on (so(n) ⊕ Sym(n))* ------------------------------------------------------
 
 def cpb_flow(t, z):

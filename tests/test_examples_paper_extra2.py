@@ -30,13 +30,15 @@ SMALL = {
     "y-magnetic-geodesic-phi-not-conserved": (3, 2), "y-jensen-family-commutes": (3, 2),
     "y-euclidean-normal-differ": (3, 2), "y-cpb-central-integrals": (3, 2),
     "y-neumann-normal-through-theta": (3, 2), "y-complex-energy": (2, 1),
-    "y-complex-lagrangian-not-conserved": (2, 1),
+    "y-complex-lagrangian-not-conserved": (2, 1), "y-ym-projections": (3, 1),
+    "y-ym-half-projection-not-skew": (3, 1),
 }
 FALSE = {"y-double-energy-wrong-sign", "y-coupled-single-momentum-not-conserved",
-         "y-magnetic-geodesic-phi-not-conserved", "y-euclidean-normal-differ", "y-complex-lagrangian-not-conserved"}
+         "y-magnetic-geodesic-phi-not-conserved", "y-euclidean-normal-differ", "y-complex-lagrangian-not-conserved",
+         "y-ym-half-projection-not-skew"}
 
 
-def test_the_example_file_states_nineteen_claims(claims):
+def test_the_example_file_states_twenty_one_claims(claims):
     assert set(claims) == set(SMALL)
     assert {cid for cid, c in claims.items() if c.expect == "nonzero"} == FALSE
 
