@@ -10,7 +10,7 @@ each of which must be refuted with a witness.
 Only the public API: `stiefelsym`'s exports, the scene `s`, and `stiefelsym.systems` / `stiefelsym.twisted`
 for the systems on T*V × T*V and the twisted form (no import of the catalog).
 """
-from stiefelsym import admissible, block, claim, comm, twisted
+from stiefelsym import Count, Rank, RightInverse, admissible, block, claim, comm, twisted
 from stiefelsym.systems import (complex_point, ctranspose, derivative, double_point, re_trace, realify_real,
                                 stiefel_pairs_flow)
 
@@ -330,6 +330,48 @@ def neumann_normal_through_theta(s):
     return {"H_neum0 - H(Theta)": H_neum0(s) - (s.killing(s.Phi, s.Phi) / 2 - s.killing(s.A, v)),
             "dh/dt - [v, A]": s.d(lambda t: t.Phi, flow) - comm(v, s.A),
             "dv/dt - [h, v]": s.d(lambda t: t.X @ t.X.T, flow) - comm(s.Phi, v)}
+
+
+# -- §2: the constraints (cond_XP) are independent -------------------------------------------------
+
+def constraints(t):
+    """(cond_XP): XᵀX − I_r and XᵀP + PᵀX (each symmetric: r(r+1)/2 independent entries)."""
+    return [t.X.T @ t.X - t.Ir, t.X.T @ t.P + t.P.T @ t.X]
+
+
+def d_constraints(t, dX, dP):
+    """(δX, δP) ↦ the differential of (cond_XP): (δXᵀX + XᵀδX, δXᵀP + XᵀδP + δPᵀX + PᵀδX)."""
+    return tuple(t.d(constraints, {"X": dX, "P": dP}))
+
+
+def d_constraints_right(t, a, b):
+    """A right inverse on T*V: K = XᵀP, (a, b) ↦ (Xa/2, X(b/2 − (aK − Ka)/4))."""
+    K = t.X.T @ t.P
+    return t.X @ a / 2, t.X @ (b / 2 - (a @ K - K @ a) / 4)
+
+
+@claim("y-constraints-independent", paper=("cond_XP",), kind="dim", section="2", sizes=SMALL,
+       statement=r"\operatorname{rank}\partial(X^TX,\ X^TP+P^TX)/\partial(X,P)=r(r+1)\ \text{at every point of }T^*V")
+def constraints_are_independent(s):
+    """The 2r² entries of the constraints (cond_XP) have a Jacobian of rank r(r + 1) (the independent entries of two symmetric r × r matrices): its differential maps ℝ^{n×r} × ℝ^{n×r} onto Sym(r) × Sym(r) at every point of T*V (a right inverse), so dim T*V(n, r) = 2nr − r(r + 1)."""
+    n, r = s.n, s.r
+    return {"rank of the constraints (generic)": Rank(s.mat(s.jacobian(constraints)), r * (r + 1)),
+            "onto Sym(r) x Sym(r) at every point": RightInverse(d_constraints, d_constraints_right,
+                                                                on=("R^{n×r}", "R^{n×r}"), to=("Sym(r)", "Sym(r)")),
+            "dim T*V": Count(2 * n * r - r * (r + 1), 2 * (n * r - r * (r + 1) // 2))}
+
+
+#: at n = 3 the function-field rank of the 2nr x 2r² Jacobian exceeds the exact method's 5 s, and a rank at a
+#: point is only a lower bound: the sizes are those where the too-high count is refuted (with a kernel)
+@claim("y-constraints-rank-wrong", paper=("cond_XP",), kind="dim", section="2", sizes=admissible(n_max=2),
+       fails_at=lambda n, r: r > 1,
+       erratum="""A wrong count written on purpose: the 2r^2 entries of (cond_XP) are not independent for r > 1
+       (XᵀX and XᵀP + PᵀX are symmetric); their rank is r(r + 1).""",
+       statement=r"\operatorname{rank}\partial(X^TX,\ X^TP+P^TX)/\partial(X,P)=2r^2")
+def constraints_rank_wrong(s):
+    """A false variant: all 2r² entries of the constraints independent (true only for r = 1)."""
+    r = s.r
+    return {"rank of the constraints": Rank(s.mat(s.jacobian(constraints)), 2 * r * r, generic=True)}
 
 
 # -- §3: the Jensen family ------------------------------------------------------------------------

@@ -31,14 +31,15 @@ SMALL = {
     "y-euclidean-normal-differ": (3, 2), "y-cpb-central-integrals": (3, 2),
     "y-neumann-normal-through-theta": (3, 2), "y-complex-energy": (2, 1),
     "y-complex-lagrangian-not-conserved": (2, 1), "y-ym-projections": (3, 1),
-    "y-ym-half-projection-not-skew": (3, 1),
+    "y-ym-half-projection-not-skew": (3, 1), "y-constraints-independent": (2, 1),
+    "y-constraints-rank-wrong": (2, 2),
 }
 FALSE = {"y-double-energy-wrong-sign", "y-coupled-single-momentum-not-conserved",
          "y-magnetic-geodesic-phi-not-conserved", "y-euclidean-normal-differ", "y-complex-lagrangian-not-conserved",
          "y-ym-half-projection-not-skew"}
 
 
-def test_the_example_file_states_twenty_one_claims(claims):
+def test_the_example_file_states_twenty_three_claims(claims):
     assert set(claims) == set(SMALL)
     assert {cid for cid, c in claims.items() if c.expect == "nonzero"} == FALSE
 
@@ -46,12 +47,13 @@ def test_the_example_file_states_twenty_one_claims(claims):
 def test_every_statement_is_decided_as_expected_at_a_small_size(claims):
     for cid, (n, r) in SMALL.items():
         c = claims[cid]
-        if cid == "y-f-lambda-wrong-sign":
+        if cid in ("y-f-lambda-wrong-sign", "y-constraints-rank-wrong"):
             expected = {"fails"}
         else:
             expected = {"proved"}
         assert run_exact(c, n, r, 0).verdict in expected, cid
-        assert run_points(c, n, r, "modular", 0).verdict in expected | {"checked"}, cid
+        if c.kind != "dim":
+            assert run_points(c, n, r, "modular", 0).verdict in expected | {"checked"}, cid
 
 
 def test_a_false_variant_where_it_holds_is_not_passed_as_refuted(claims):
@@ -77,6 +79,26 @@ def test_the_free_method_proves_the_energies_for_every_n_and_r(claims):
     assert res.verdict == "undecided" and "has no canonical normal form" in res.message, res.message
     # a false variant is never proved by rewriting: it needs a witness
     assert run_free(claims["y-coupled-single-momentum-not-conserved"]).verdict == "undecided"
+
+
+def test_a_rank_at_every_point_without_a_constant_minor_is_undecided_not_refuted():
+    """The Jacobian of (cond_XP) has rank r(r + 1) at every point of T*V (a regular level set), but none of
+    its maximal minors is constant: the exact method must not call the true statement false (it did, with
+    no witness); it is undecided, and the right inverse of the example proves it."""
+    from stiefelsym import Rank, claim as claim_
+    from stiefelsym.claims import admissible as adm
+
+    def every_point(s):
+        """rank r(r + 1) of the constraints' Jacobian at every point."""
+        J = s.mat(s.jacobian(lambda t: [t.X.T @ t.X - t.Ir, t.X.T @ t.P + t.P.T @ t.X]))
+        return {"rank": Rank(J, s.r * (s.r + 1), generic=False)}
+    c = claim_("t-every-point-constraints", kind="dim", section="2", sizes=adm(3))(every_point).claim
+    for n, r in ((2, 1), (3, 1)):
+        res = run_exact(c, n, r, 0)
+        assert res.verdict == "undecided" and "not decided" in res.message, (n, r, res.verdict, res.message)
+    # a rank at every point that is wrong over the function field is still refuted
+    low = lambda s: {"rank": Rank(s.mat(s.jacobian(lambda t: [t.X.T @ t.X - t.Ir])), 2, generic=False)}  # noqa: E731
+    assert run_exact(c, 2, 1, 0, func=low).verdict == "fails"
 
 
 @pytest.mark.slow
