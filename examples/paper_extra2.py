@@ -363,7 +363,8 @@ def constraints_are_independent(s):
 
 #: at n = 3 the function-field rank of the 2nr x 2r² Jacobian exceeds the exact method's 5 s, and a rank at a
 #: point is only a lower bound: the sizes are those where the too-high count is refuted (with a kernel)
-@claim("y-constraints-rank-wrong", paper=("cond_XP",), kind="dim", section="2", sizes=admissible(n_max=2),
+@claim("y-constraints-rank-wrong", paper=("cond_XP",), kind="dim", section="2",
+       sizes=admissible(n_max=2, stated_n_max=2),
        fails_at=lambda n, r: r > 1,
        erratum="""A wrong count written on purpose: the 2r^2 entries of (cond_XP) are not independent for r > 1
        (XᵀX and XᵀP + PᵀX are symmetric); their rank is r(r + 1).""",
