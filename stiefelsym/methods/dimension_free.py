@@ -34,7 +34,7 @@ from stiefelsym.methods import fixed_size
 from stiefelsym.methods.fixed_size import _base_result, division_probe, _entries, _short, call_claim
 from stiefelsym.results import CheckOutcome, Result
 from stiefelsym.free import FreeScene, FreeSolveError, NeedsCoordinates, RewritingError
-from stiefelsym.free.algebra import REFUSED, OperatorLetter, recording, refusals
+from stiefelsym.free.algebra import REFUSED, OperatorLetter, recording, refusals, word_key, word_str
 from stiefelsym.free.certificates import CertificateWriter
 from stiefelsym.free.columns import COMPLETE
 from stiefelsym.free.rewriting import latex_text
@@ -174,7 +174,10 @@ def run_free_on(claim: Claim, func: Callable, family: SizeFamily | None, alone: 
         res.reductions.append("the last column E_r of I_r as a letter (r x 1), E_r^T E_r = 1; a 1 x 1 piece is its "
                               "own trace")
     if scene.system.trace_fallbacks:
-        return undecided("a trace normal form used a non-canonical representative")
+        word = word_str(min(scene.system.trace_fallbacks, key=word_key))
+        return undecided(f"the trace of a word such as {word} has no canonical normal form here (its transpose "
+                         "does not reduce to plus or minus one cyclic word), so rewriting could miss a zero; "
+                         "the fixed-size methods decide")
     if open_entries:
         pos, red = open_entries[0]
         res.residual = f"{pos}: nf = {_short(red.normal_form)}"

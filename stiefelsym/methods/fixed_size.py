@@ -62,6 +62,12 @@ FLOAT_RESOLUTION = 1e-8       # a pass must be able to see a relative residual t
 FLOAT_LADDER = (None, 30, 60, 120)
 
 
+class RankNotDecided(Exception):
+    """A rank at every point that the exact method can neither prove (no constant nonzero maximal
+    minor) nor refute (the rank over the function field is the stated one, so no point where it drops
+    is known): the verdict is ``undecided``, never ``fails`` without a witness."""
+
+
 class ExactTimeout(Exception):
     pass
 
@@ -559,6 +565,13 @@ def _exact_rank(R: Rank, field: Field, randomized: _RandomizedRank | None = None
         return (f"a constant nonzero {const}x{const} minor: rank {const} at every point (full rank); "
                 f"paper: {R.expected}", True)
     generic = _function_field_rank(M)
+    if generic == R.expected and const < R.expected:
+        raise RankNotDecided(
+            f"rank {generic} over the function field (paper: {R.expected}), and the largest constant nonzero "
+            f"minor is {const}x{const}: the rank is at least {const} at every point and {R.expected} at almost "
+            f"every point; whether it drops below {R.expected} somewhere on T*V is not decided (no such point "
+            f"is known).  A constant nonzero {R.expected}x{R.expected} minor would prove it; for a differential, "
+            f"a RightInverse proves full rank at every point")
     ok = generic == R.expected and const == R.expected
     kernel = _kernel_certificate(M) if generic < R.expected else ""
     return (f"a constant nonzero {const}x{const} minor (rank >= {const} at every point) and rank "
@@ -751,6 +764,11 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
         res.verdict = "inconclusive"
         res.message = (str(exc) if str(exc).startswith("the function-field rank") else
                        f"symbolic computation exceeded its budget of {time_budget:.0f} s")
+        res.seconds = time.perf_counter() - t0
+        return res
+    except RankNotDecided as exc:
+        res.verdict = "undecided"
+        res.message = str(exc)
         res.seconds = time.perf_counter() - t0
         return res
     except SymbolicBudget as exc:
