@@ -53,7 +53,7 @@ EXACT = ("double-neumann-flow", "double-neumann-momentum", "double-neumann-diago
 #: Lax pairs, differentiated by the derivative step, with one symbolic resolvent of a generic A); each at
 #: the largest size its symbolic budget reaches at n = 3 or 4
 EXACT_SECOND_POINT = {"coupled-neumann-flow": (3, 2), "coupled-neumann-momentum": (4, 3),
-                      "coupled-corrected-flow-invariants": (4, 3), "coupled-big-lax-along-corrected-flow": (4, 2),
+                      "coupled-corrected-flow-invariants": (4, 3), "coupled-big-lax-along-corrected-flow": (3, 2),
                       "coupled-dual-lax": (3, 2), "coupled-perturbed-dual-lax": (3, 2),
                       "coupled-dual-lax-along-corrected-flow": (4, 1)}
 # (complex-neumann-flow is exact for r = 1 only, where its corruption Λ̄ for Λ changes nothing: Λ is real;
