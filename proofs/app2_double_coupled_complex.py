@@ -338,7 +338,8 @@ def coupled_big_lax_normal(s):
     return {"so(n,n)": big_lax_residual(s, H_coupled(NORMAL))}
 
 
-@coupled_big_lax_normal.claim.correction(BIG_CORRECTION, changes=2, exact_max_r={2: 2, 3: 3, 4: 2, 5: 1})
+@coupled_big_lax_normal.claim.correction(BIG_CORRECTION, changes=2,
+                                         exact_max_r={2: 2, 3: 3, 4: 2, 5: 1, 6: 1, 7: 1})
 def coupled_big_lax_normal_corrected(s):
     return {"so(n,n)": big_lax_residual(s, H_coupled(NORMAL), corrected=True)}
 
@@ -406,7 +407,8 @@ def coupled_perturbed_big_lax(s):
     return {"so(n,n)": big_lax_residual(s, H_perturbed(FREE_KAPPA))}
 
 
-@coupled_perturbed_big_lax.claim.correction(BIG_CORRECTION, changes=2, exact_max_r={2: 2, 3: 3, 4: 2})
+@coupled_perturbed_big_lax.claim.correction(BIG_CORRECTION, changes=2,
+                                            exact_max_r={2: 2, 3: 3, 4: 2, 5: 1, 6: 1, 7: 1})
 def coupled_perturbed_big_lax_corrected(s):
     return {"so(n,n)": big_lax_residual(s, H_perturbed(FREE_KAPPA), corrected=True)}
 
