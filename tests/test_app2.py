@@ -54,8 +54,7 @@ EXACT = ("double-neumann-flow", "double-neumann-momentum", "double-neumann-diago
 #: the largest size its symbolic budget reaches at n = 3 or 4
 EXACT_SECOND_POINT = {"coupled-neumann-flow": (3, 2), "coupled-neumann-momentum": (4, 3),
                       "coupled-corrected-flow-invariants": (4, 3), "coupled-big-lax-along-corrected-flow": (3, 2),
-                      "coupled-dual-lax": (3, 2), "coupled-perturbed-dual-lax": (3, 2),
-                      "coupled-dual-lax-along-corrected-flow": (4, 1)}
+                      "coupled-dual-lax": (3, 2), "coupled-perturbed-dual-lax": (3, 2)}
 # (complex-neumann-flow is exact for r = 1 only, where its corruption Λ̄ for Λ changes nothing: Λ is real;
 # tests/test_second_point_chart.py corrupts it otherwise)
 
