@@ -273,7 +273,7 @@ def coupled_neumann_flow_corrected(s):
 
 
 @claim("coupled-neumann-momentum", paper=("C-eq",), kind="pb", exact_max_n=4,
-       exact_max_r={5: 1, 6: 1, 7: 1},
+       exact_max_r={5: 2, 6: 1, 7: 1},
        statement=r"\tfrac{d}{dt}\left(X^TP-P^TX+Y^TQ-Q^TY\right)=0\ \text{along (C-eq)}")
 def coupled_neumann_momentum(s):
     """For every κ, the momentum XᵀP − PᵀX + YᵀQ − QᵀY of the right diagonal SO(r)-action is conserved by the flow of (C-neumann), and the Hamiltonian is invariant under that action."""

@@ -12,7 +12,7 @@ from __future__ import annotations
 import pytest
 
 import stiefelsym.proofs.app2_double_coupled_complex as a
-from stiefelsym import admissible, block
+from stiefelsym import admissible, block, comm
 from stiefelsym.claims import Claim, load_catalog
 from stiefelsym.ir import compile_claim
 from stiefelsym.ir.passes import BLOCK_SPLITTING, coordinate_reads
@@ -82,3 +82,31 @@ def test_the_printed_pair_fails_and_its_correction_is_proved_at_3_2(cid):
     fixed = run_exact(c, 3, 2, 0, corr.func)
     assert fixed.verdict == "proved", (fixed.verdict, fixed.message)
     assert any("X = X0" in d for d in fixed.reductions), fixed.reductions
+
+
+
+def _double_corrected_commutator_swapped(s):
+    """The corrected (LA3*D) with the commutator's operands swapped: dL/dt = [A, L]."""
+    z = a.double_point(s)
+    L = lambda t, w: a.L_dual_double(t, w, t.resolvent(t.lam))
+    return {"LA3*D": derivative(s, L, z, a.flow_double(s, z)) - comm(a.A_dual_double(s, z), L(s, z))}
+
+
+def test_at_the_largest_new_r_1_size_the_printed_so_n_n_pair_fails_exactly_and_its_correction_is_proved():
+    c = load_catalog().get("coupled-big-lax-normal")
+    corr = c.corrections[0]
+    assert dict(corr.exact_max_r).get(7, 0) >= 1
+    assert run_exact(c, 7, 1, 0).verdict == "fails"
+    fixed = run_exact(c, 7, 1, 0, corr.func)
+    assert fixed.verdict == "proved", (fixed.verdict, fixed.message)
+    assert any("X = X0" in d for d in fixed.reductions), fixed.reductions
+
+
+def test_at_5_2_the_corrected_double_pair_is_proved_and_a_swapped_commutator_refuted():
+    c = load_catalog().get("double-neumann-dual-lax")
+    corr = c.corrections[0]
+    assert dict(corr.exact_max_r).get(5, 0) >= 2
+    assert run_exact(c, 5, 2, 0, corr.func).verdict == "proved"
+    bad = run_exact(_claim(_double_corrected_commutator_swapped), 5, 2, 0)
+    assert bad.verdict == "fails", (bad.verdict, bad.message)
+    assert any("X = X0" in d for d in bad.reductions), bad.reductions
