@@ -49,9 +49,12 @@ NOT = ("coupled-big-lax-not-euclidean",)
 #: proved symbolically at small sizes (the others: modular, their multipliers are beyond the symbolic budget)
 EXACT = ("double-neumann-flow", "double-neumann-momentum", "double-neumann-diagonal", "complex-neumann-real-data")
 #: proved symbolically beyond n = 1 on the equivariant chart with a generic second point (Y, Q) or complex
-#: point, and the closed-form multipliers of the coupled flow: their corruptions fail there too
-EXACT_SECOND_POINT = {"coupled-neumann-flow": (3, 2), "coupled-neumann-momentum": (4, 2),
-                      "coupled-corrected-flow-invariants": (4, 2), "coupled-big-lax-along-corrected-flow": (3, 2)}
+#: point, and the closed-form multipliers of the coupled flow: their corruptions fail there too (the dual
+#: Lax pairs, differentiated by the derivative step, with one symbolic resolvent of a generic A); each at
+#: the largest size its symbolic budget reaches at n = 3 or 4
+EXACT_SECOND_POINT = {"coupled-neumann-flow": (3, 2), "coupled-neumann-momentum": (4, 3),
+                      "coupled-corrected-flow-invariants": (4, 3), "coupled-big-lax-along-corrected-flow": (3, 2),
+                      "coupled-dual-lax": (3, 2), "coupled-perturbed-dual-lax": (3, 2)}
 # (complex-neumann-flow is exact for r = 1 only, where its corruption Λ̄ for Λ changes nothing: Λ is real;
 # tests/test_second_point_chart.py corrupts it otherwise)
 

@@ -195,11 +195,29 @@ def _spaces(g: Graph) -> tuple["_Sides", list]:
             sd = _element(g, a[0], a[1], sides, (opaque, opaque))
         elif op in ("list", "tuple", "dict", "fn"):
             sd = None
+        elif op == "prim" and a[0].qualname == DERIVATIVE_STEP:
+            # the derivative of F at a point along a tangent vector is shaped like F's value there (as
+            # a `d` call is): its sides are those of F's body, not an engine value's
+            body = _step_body(g, a)
+            sd = of(body) if type(body) is Ref and of(body) else (opaque, opaque)
         elif op in ("prim", "apply", "param"):
             sd = (opaque, opaque)
         sides.append(sd)
     g.cache["sides"] = (S, sides)
     return S, sides
+
+
+#: the engine step of the derivative of a function at a point of the caller's own along a tangent vector
+#: (``systems.derivative(s, F, z, v)``): its value has the shape of F's value
+DERIVATIVE_STEP = "stiefelsym.systems.derivative"
+
+
+def _step_body(g: Graph, a: tuple):
+    """The body of the function a derivative step differentiates (None where the graph does not say)."""
+    f = a[2] if len(a) > 2 else None
+    if type(f) is Ref and g.ops[f.i] == "fn":
+        return g.args[f.i][2]
+    return None
 
 
 def _element(g: Graph, base: Ref, key, sides: list, default):
@@ -225,6 +243,9 @@ def _element(g: Graph, base: Ref, key, sides: list, default):
         if op == "call" and a[1] == "d":
             f = a[2][0]
             base = g.args[f.i][2]
+            continue
+        if op == "prim" and a[0].qualname == DERIVATIVE_STEP and type(_step_body(g, a)) is Ref:
+            base = _step_body(g, a)
             continue
         if op == "call" and a[1] == "gradient":
             return (_Sides.N, _Sides.R)
