@@ -539,3 +539,13 @@ def test_the_headline_and_the_summary_table_count_the_same_claims_as_holding():
     assert text.startswith("Of the paper's 2 checkable statements, 1 hold as printed at every size computed")
     assert "1 holds where decided but was left undecided at some size (a)" in text
     assert section_counts(claims)["every size"] == 1
+
+
+def test_the_report_of_a_claims_file_counts_its_statements_not_the_papers():
+    """A run of a user's claims file is not the paper's catalog: its headline counts the statements verified,
+    and every verdict is compared with its own claim's expectation."""
+    rs = [result("a", 3, 1, "exact", "proved"), result("b", 3, 1, "exact", "proved")]
+    md = render_markdown(rs, {"claims_files": ["mine.py"], "title": "Verification of the claims of mine.py"})
+    assert "Of the 2 statements verified, 2 hold as printed" in md and "the paper's" not in md.split("##")[0]
+    assert "every verdict is the one its claim expects" in md
+    assert "Of the paper's 2 checkable statements" in render_markdown(rs)
