@@ -1677,57 +1677,40 @@ _FORM_LETTERS = 0
 
 def _point_letters_in(v: Any, out: set) -> set:
     """The letters X, P, Y, Q (and transposes) in a value of a free scene, operator arguments included."""
-    if isinstance(v, Mat):
-        for x in v._a.flat:
-            _point_letters_in(x, out)
-    elif isinstance(v, Dual):
-        _point_letters_in(v.a, out)
-        _point_letters_in(v.b, out)
-    elif isinstance(v, NCPoly):
-        stack = list(v.letters())
-        while stack:
-            L = stack.pop()
-            if isinstance(L, OperatorLetter):
-                stack.extend(L.argument)
-            elif any(L is M or L is M.adjoint for M in _POINT_LETTERS):
-                out.add(L)
-    elif isinstance(v, Flow):
-        _point_letters_in(v.Xdot, out)
-        _point_letters_in(v.Pdot, out)
-    elif isinstance(v, (list, tuple)):
-        for x in v:
-            _point_letters_in(x, out)
-    elif isinstance(v, dict):
-        for x in v.values():
-            _point_letters_in(x, out)
-    return out
+    return _letters_in(v, lambda L: any(L is M or L is M.adjoint for M in _POINT_LETTERS), out)
 
 
 def _fresh_letters_in(v: Any, fresh: set, out: set) -> set:
     """The letters of ``fresh`` (and their transposes) in a value of a free scene, operator arguments included."""
+    return _letters_in(v, fresh.__contains__, out)
+
+
+def _letters_in(v: Any, wanted: Callable[[Any], bool], out: set) -> set:
+    """The letters L with ``wanted(L)`` in a value of a free scene (matrices, dual numbers, flows, lists and
+    dicts of them), operator arguments included."""
     if isinstance(v, Mat):
         for x in v._a.flat:
-            _fresh_letters_in(x, fresh, out)
+            _letters_in(x, wanted, out)
     elif isinstance(v, Dual):
-        _fresh_letters_in(v.a, fresh, out)
-        _fresh_letters_in(v.b, fresh, out)
+        _letters_in(v.a, wanted, out)
+        _letters_in(v.b, wanted, out)
     elif isinstance(v, NCPoly):
         stack = list(v.letters())
         while stack:
             L = stack.pop()
             if isinstance(L, OperatorLetter):
                 stack.extend(L.argument)
-            elif L in fresh:
+            elif wanted(L):
                 out.add(L)
     elif isinstance(v, Flow):
-        _fresh_letters_in(v.Xdot, fresh, out)
-        _fresh_letters_in(v.Pdot, fresh, out)
+        _letters_in(v.Xdot, wanted, out)
+        _letters_in(v.Pdot, wanted, out)
     elif isinstance(v, (list, tuple)):
         for x in v:
-            _fresh_letters_in(x, fresh, out)
+            _letters_in(x, wanted, out)
     elif isinstance(v, dict):
         for x in v.values():
-            _fresh_letters_in(x, fresh, out)
+            _letters_in(x, wanted, out)
     return out
 
 

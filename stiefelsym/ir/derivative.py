@@ -1484,6 +1484,24 @@ PRIMITIVES[UNITS] = constraint_units
 PRIMITIVES[SYM_COORDS] = sym_coordinates
 
 
+def _inner_bracket(g: Graph, deps: list, G: Ref, what: str) -> tuple:
+    """The magnetic bracket G = {g, h}_F that a traced function of one argument returns, read off its graph:
+    (the bracket step's arguments, the field strength, the scene attribute naming it or None), or
+    Unsupported (``what``: the rule's subject) for a function that is another thing, a bracket at another
+    scene, or a bracket whose functions read the function's scene."""
+    kG, arity, body = g.args[G.i]
+    if (arity != 1 or type(body) is not Ref or g.ops[body.i] != "prim"
+            or g.args[body.i][0].qualname != "stiefelsym.twisted.bracket"):
+        raise Unsupported(f"{what} of a function that is not a magnetic bracket")
+    b = g.args[body.i]
+    if type(b[1]) is not Ref or g.ops[b[1].i] != "scene" or g.args[b[1].i] != (kG,):
+        raise Unsupported(f"{what} at another scene")
+    F = _parse_field_strength(g, b[4:], "a magnetic bracket")
+    if any(type(x) is not Ref or g.ops[x.i] != "fn" or kG in deps[x.i] for x in (b[2], b[3])):
+        raise Unsupported(f"{what} whose functions read its scene")
+    return b, F, _constant_field_strength(g, deps, F, b[1], kG)
+
+
 def _parse_field_strength(g: Graph, rest: tuple, what: str) -> Any:
     """The field strength F of a magnetic step's arguments after its functions (None: the default)."""
     if len(rest) == 1 and type(rest[0]) is Ref and g.ops[rest[0].i] == "kw":
@@ -1552,18 +1570,8 @@ class _BracketFunction:
             raise Unsupported("a derivative of a magnetic bracket on a scene other than the claim's")
         if type(G) is not Ref or g.ops[G.i] != "fn":
             raise Unsupported("a derivative of something that is not a traced function")
-        kG, arity, body = g.args[G.i]
-        if (arity != 1 or type(body) is not Ref or g.ops[body.i] != "prim"
-                or g.args[body.i][0].qualname != "stiefelsym.twisted.bracket"):
-            raise Unsupported("a function that is not a magnetic bracket")
-        b = g.args[body.i]
-        if type(b[1]) is not Ref or g.ops[b[1].i] != "scene" or g.args[b[1].i] != (kG,):
-            raise Unsupported("a magnetic bracket at another scene")
-        self.Finner = _parse_field_strength(g, b[4:], "a magnetic bracket")
+        b, self.Finner, self.Fattr = _inner_bracket(g, deps, G, "a magnetic bracket")
         inner = (b[2], b[3])
-        if any(type(x) is not Ref or g.ops[x.i] != "fn" or kG in deps[x.i] for x in inner):
-            raise Unsupported("a magnetic bracket whose functions read its scene")
-        self.Fattr = _constant_field_strength(g, deps, self.Finner, b[1], kG)
         self.g, self.deps, self.new, self.remap = g, deps, new, remap
         self.inner, self.at, self.S = inner, at, remap[at.i]
 
@@ -1735,17 +1743,7 @@ class _TwistedNestedAlongFlow:
         f, G = a[2], a[3]
         if any(type(x) is not Ref or g.ops[x.i] != "fn" for x in (f, G)):
             raise Unsupported("a magnetic bracket of something that is not a traced function")
-        kG, arity, body = g.args[G.i]
-        if (arity != 1 or type(body) is not Ref or g.ops[body.i] != "prim"
-                or g.args[body.i][0].qualname != "stiefelsym.twisted.bracket"):
-            raise Unsupported("a magnetic bracket of a function that is not a magnetic bracket")
-        b = g.args[body.i]
-        if type(b[1]) is not Ref or g.ops[b[1].i] != "scene" or g.args[b[1].i] != (kG,):
-            raise Unsupported("a magnetic bracket of a bracket at another scene")
-        self.Finner = _parse_field_strength(g, b[4:], "a magnetic bracket")
-        if any(type(x) is not Ref or g.ops[x.i] != "fn" or kG in deps[x.i] for x in (b[2], b[3])):
-            raise Unsupported("a magnetic bracket of a bracket whose functions read its scene")
-        self.Fattr = _constant_field_strength(g, deps, self.Finner, b[1], kG)
+        b, self.Finner, self.Fattr = _inner_bracket(g, deps, G, "a magnetic bracket of a bracket")
         # G at the scene's point is a value the derivation moves with every X, P it holds: a value of the claim's
         # point that g, h or the field strength close over (a constant of G) would be moved too
         if _reads_claim_point(g, (b[2], b[3]) + ((self.Finner,) if self.Fattr is None else ())):
