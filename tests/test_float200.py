@@ -51,7 +51,7 @@ def cayley_ops(F, m, r, rng):
     return [X, Y, V, Q, Zi, (In + S2) @ (In + S2).inv() @ J]
 
 
-@pytest.mark.parametrize("m,r,threshold", [(5, 2, 1), (6, 3, 1), (40, 17, None)])
+@pytest.mark.parametrize("m,r,threshold", [(5, 2, 1), (6, 3, 1), pytest.param(40, 17, None, marks=pytest.mark.slow)])
 def test_deferred_inverses_and_solves_keep_the_bound(monkeypatch, m, r, threshold):
     if threshold is not None:
         monkeypatch.setattr(native, "DEFERRED_INVERSE_MIN", threshold)

@@ -348,7 +348,7 @@ def test_column_letters_misuse_is_never_proved():
     assert all(v[c] not in PASSING for c in SQUARE_R_N + ("adv-last-every-r",)), v
 
 
-@pytest.mark.parametrize("method", ["exact", "modular", FLOAT_SLOW])
+@pytest.mark.parametrize("method", [pytest.param("exact", marks=pytest.mark.slow), "modular", FLOAT_SLOW])
 def test_column_letters_misuse_fails_at_a_fixed_size(method):
     at_r2 = tuple(c for c in COLUMNS_R2 if c not in ("adv-cols-range-r", "adv-cols-r23"))   # true at r = 2
     v = verdicts("columns_one_r.py", method, size="3,2", ids=at_r2 + ("adv-point-reflected-control",))
