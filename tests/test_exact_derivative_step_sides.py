@@ -112,3 +112,18 @@ def test_at_5_2_the_corrected_double_pair_is_proved_and_a_swapped_commutator_ref
     bad = run_exact(_claim(_double_corrected_commutator_swapped), 5, 2, 0)
     assert bad.verdict == "fails", (bad.verdict, bad.message)
     assert any("X = X0" in d for d in bad.reductions), bad.reductions
+
+
+def _entry_after_the_step(s):
+    """Entry (0, 0) of d/dε [X; X] along P, read after the derivative step: P₁₁, 0 on the equivariant chart
+    (P = (W; Z), W skew) and nonzero elsewhere: false."""
+    d = derivative(s, lambda t, w: block([[w["X"]], [w["X"]]]), {"X": s.X, "P": s.P}, {"X": s.P})
+    return {"e": s.mat([[d[0, 0]]])}
+
+
+@pytest.mark.parametrize("n,r", [(3, 1), (4, 2)])
+def test_an_entry_of_the_steps_value_read_after_it_is_a_coordinate_read(n, r):
+    """The step's value is shaped like its function's (whole copies of R^n), and an entry read of it is read
+    like any other: the claim leaves the equivariant chart and is refuted exactly."""
+    res = run_exact(_claim(_entry_after_the_step), n, r, 0)
+    assert res.verdict == "fails" and not any("X = X0" in d for d in res.reductions), (res.verdict, res.reductions)
