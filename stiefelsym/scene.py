@@ -284,11 +284,11 @@ class Scene(PaperObjects):
             raise ValueError("the diagonal chart is an equivariant chart of the standard realization, "
                              "reduced by O(n) alone")
         self._diagonal_A = diagonal_A
-        #: the symbolic Cayley chart for 2 <= r < n reduced by O(r) acting on the right as well: S11 = 0
+        #: the symbolic Cayley chart for 2 <= r <= n reduced by O(r) acting on the right as well: S11 = 0
         #: (:meth:`_reduced_cayley_point`; stiefelsym.methods.cayley_right states when it is used)
-        if cayley_right and (chart != "cayley" or realization != "standard" or not 2 <= r < n):
+        if cayley_right and (chart != "cayley" or realization != "standard" or not 2 <= r <= n):
             raise ValueError("the right-reduced Cayley chart is a Cayley chart of the standard realization, "
-                             "2 <= r < n")
+                             "2 <= r <= n")
         self._cayley_right = cayley_right
         self._params: dict[str, Any] = {}
         self._param_blocks: list[tuple[str, Any, Any]] = []
@@ -517,7 +517,8 @@ class Scene(PaperObjects):
                             acc = acc - B[i, k] * P._a[k, j]
                         P._a[i, j] = f.normalize(acc / B[i, i])
             return X, P
-        if isinstance(self._field, SymbolicField) and r < n:
+        if isinstance(self._field, SymbolicField) and (r < n or self._cayley_right and not prefix):
+            # at r = n the right-reduced chart is X = I, P = W (W skew): K is empty and S11 = 0
             return self._reduced_cayley_point(prefix)
         S = self._skew_params(f"{prefix}S", n, "n")
         In = self.identity(n, "n")
@@ -592,7 +593,14 @@ class Scene(PaperObjects):
                 Kfull._a[i, j] = self._param(param_name(f"{prefix}K", i, j))
         KtK = Kfull.T @ Kfull
         E = Mat._consts(np.eye(n, r, dtype=np.int64), self._field, ("n", "r"), tr)
-        X = (E @ (Ir - S11 - KtK) - Kfull * self.const(2)) @ (Ir + S11 + KtK).inv()
+        if self._cayley_right and not prefix and n - r < r:
+            # S11 = 0 and n - r < r: M⁻¹ = (I + KᵀK)⁻¹ = I − Kᵀ(I + KKᵀ)⁻¹K (Woodbury), the same rational
+            # functions (denominator det(I + KKᵀ) = det M) from an (n − r) × (n − r) inverse: I_n + K̂K̂ᵀ
+            # for K̂ = [0; K] is diag(I_r, I + KKᵀ), whose off-diagonal entries sit in its last n − r rows
+            Minv = Ir - Kfull.T @ (self.identity(n, "n") + Kfull @ Kfull.T).inv() @ Kfull
+        else:
+            Minv = (Ir + S11 + KtK).inv()
+        X = (E @ (Ir - S11 - KtK) - Kfull * self.const(2)) @ Minv
         W = self._skew_params(f"{prefix}W", r, "r")
         Z = self._normal_params(f"{prefix}Z", n, r)      # X1 = (I - S11 - KᵀK)M⁻¹ = I at the origin
         In = self.identity(n, "n")

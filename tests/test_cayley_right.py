@@ -54,8 +54,8 @@ def _x1_symmetric_by_given_entries(s):
     return {"(X1)_12 - (X1)_21": e1.T @ M @ e2 - e2.T @ M @ e1}
 
 
-def test_the_chart_is_refused_outside_the_standard_cayley_chart_with_2_le_r_lt_n():
-    for bad in ({"n": 4, "r": 1}, {"n": 3, "r": 3}, {"n": 4, "r": 2, "chart": "equivariant"},
+def test_the_chart_is_refused_outside_the_standard_cayley_chart_with_2_le_r_le_n():
+    for bad in ({"n": 4, "r": 1}, {"n": 3, "r": 1}, {"n": 4, "r": 2, "chart": "equivariant"},
                 {"n": 4, "r": 2, "realization": "metric"}):
         args = dict(chart="cayley", realization="standard")
         args.update(bad)
@@ -88,11 +88,11 @@ def test_the_manakov_reflections_are_proved_on_the_reduced_chart_and_a_forgotten
     assert any(RIGHT in x for x in bad.reductions), bad.reductions
 
 
-def test_r_one_and_r_n_keep_their_charts():
+def test_r_one_keeps_its_chart_and_r_n_takes_the_identity():
     g = _graph(_reflections_forget_S_on_P, 4, 1)
     assert not right_action_breaks(g)
     assert not cayley_right.applies(g, "standard", 4, 1)
-    assert not cayley_right.applies(_graph(_reflections_forget_S_on_P, 3, 3), "standard", 3, 3)
+    assert cayley_right.applies(_graph(_reflections_forget_S_on_P, 3, 3), "standard", 3, 3)
 
 
 def _cones_with_a_plus_ppt(s):
@@ -116,3 +116,50 @@ def test_the_chasles_cones_are_proved_at_3_2_on_the_reduced_chart_and_a_wrong_si
     bad = run_exact(_claim(_cones_with_a_plus_ppt), 3, 2, 0)
     assert bad.verdict == "fails", (bad.verdict, bad.message)
     assert any(RIGHT in x for x in bad.reductions), bad.reductions
+
+
+def test_the_woodbury_inverse_gives_the_chart_s_own_rational_functions():
+    """For n - r < r the right-reduced chart inverts I + KKᵀ ((n - r) × (n - r)) in place of I + KᵀK
+    (r × r): X is the same matrix of rational functions as with the r × r inverse."""
+    from stiefelsym.scene import param_name
+    s = Scene(5, 3, SymbolicField(), chart="cayley", cayley_right=True)
+    X = s.X
+    K = s.zeros(5, 3, ("n", "r"))
+    for i in range(3, 5):
+        for j in range(3):
+            K._a[i, j] = s._param(param_name("K", i, j))
+    KtK = K.T @ K
+    E = s.mat([[s.q(1) if i == j else s.q(0) for j in range(3)] for i in range(5)], ("n", "r"))
+    direct = (E @ (s.Ir - KtK) - K * s.const(2)) @ (s.Ir + KtK).inv()
+    assert all(X._a[i, j] == direct._a[i, j] for i in range(5) for j in range(3))
+    XtX = (X.T @ X)._a
+    assert all(XtX[i, j] == (1 if i == j else 0) for i in range(3) for j in range(3))
+
+
+def test_the_square_chart_is_the_identity_with_a_generic_skew_momentum():
+    s = Scene(4, 4, SymbolicField(), chart="cayley", cayley_right=True)
+    X, P = s.X._a, s.P._a
+    assert all(X[i, j] == (1 if i == j else 0) for i in range(4) for j in range(4))
+    assert all(P[i, j] == -P[j, i] for i in range(4) for j in range(4)) and P[0, 1] != 0
+
+
+@pytest.mark.parametrize("n,r", [(5, 4), (5, 5), (6, 6)])
+def test_the_manakov_reflections_at_r_close_to_n_and_a_forgotten_reflection(n, r):
+    """Beyond the equivariant chart's budget (a symbolic inverse of A + λI), the right-reduced chart:
+    the Woodbury inverse at (5, 4), X = I at r = n; the corrupted claim is refuted there."""
+    c = load_catalog().get("manakov-reflections")
+    res = run_exact(c, n, r, 0)
+    assert res.verdict == "proved", (res.verdict, res.message)
+    assert any("acting on the right" in x for x in res.reductions), res.reductions
+    bad = run_exact(_claim(_reflections_forget_S_on_P), n, r, 0)
+    assert bad.verdict == "fails", (bad.verdict, bad.message)
+    assert any("acting on the right" in x for x in bad.reductions), bad.reductions
+
+
+@pytest.mark.parametrize("n,r", [(4, 4), (5, 4)])
+def test_a_graph_that_reads_r_gets_no_right_reduced_chart_at_r_close_to_n(n, r):
+    """X1 symmetric holds on X = I (r = n) and on the S11 = 0 chart: read on R^r, it is refused both
+    reductions (and fails on the full chart)."""
+    res = run_exact(_claim(_x1_symmetric), n, r, 0)
+    assert res.verdict == "fails", (res.verdict, res.message)
+    assert not any("acting on the right" in x for x in res.reductions), res.reductions

@@ -32,11 +32,28 @@ REDUCTION = (
     "action, whatever the graph reads of R^n")
 
 
+#: the reduction stated at r = n, where the chart is one point per orbit of O(n) acting on the right
+REDUCTION_SQUARE = (
+    "reduced by O(n) acting on the right (r = n): X = I, P = W (W skew generic n x n), A = diag(a).  Every "
+    "point of T*V(n, n) = T*O(n) is (Ih, Wh) for h = X in O(n) (either component) and W = P X^T, skew "
+    "because X^T P is: the chart moved by O(n) is all of T*V(n, n).  The residuals are covariant under "
+    "(X, P) -> (Xh, Ph) (every R^r side of a generic matrix moving with h, which keeps it generic), because "
+    "the graph reads no coordinate of R^r: no entry or block of a matrix with a side on R^r, no matrix of "
+    "given entries on R^r, no rank, no second, complex or double point, and no engine step but constants on "
+    "R^n (S_1, diag(I_2, 0)); every other operation is a typed matrix operation, which commutes with the "
+    "action, whatever the graph reads of R^n")
+
+
+def reduction(n: int, r: int) -> str:
+    """The reduction stated in the record of a run on the right-reduced chart at (n, r)."""
+    return REDUCTION_SQUARE if r == n else REDUCTION
+
+
 def applies(graph: Any, realization: str | None, n: int, r: int) -> bool:
     """Whether the exact method may evaluate ``graph`` on the right-reduced Cayley chart: the standard
-    realization, 2 <= r < n (at r = 1 S11 is 0 already; r = n has the full chart), and nothing in the
+    realization, 2 <= r <= n (at r = 1 S11 is 0 already; at r = n the chart is X = I), and nothing in the
     graph that may break covariance under O(r) on the right (computed once per graph)."""
-    if (realization or "standard") != "standard" or not 2 <= r < n:
+    if (realization or "standard") != "standard" or not 2 <= r <= n:
         return False
     breaks = graph.cache.get("right action breaks")
     if breaks is None:

@@ -682,6 +682,15 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                     field, scene = exc.chart
                     coords = list(scene.tracker.used) or ["coordinates"]
                     missing = True
+                except SymbolicBudget:
+                    # a graph that reads nothing of R^r: where the equivariant chart's evaluation is
+                    # beyond budget (a symbolic inverse of a generic symmetric A + lambda I), the
+                    # right-reduced Cayley chart (A diagonal, one point per O(r)-orbit) is tried
+                    # instead of giving up; it is a chart for every such graph, covariant or not
+                    if not cayley_right.applies(graph, claim.realization, n, r):
+                        raise
+                    scene, coords, missing = None, list(visible) or ["the equivariant chart beyond budget"], True
+                    break
                 if right == "diagonal" and (coords or missing):
                     continue      # the diagonal chart is used for a graph that reads no coordinates
                 if not (coords or missing):
@@ -741,9 +750,10 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                 evaluations = []
                 # r = n: both components of O(n) for X (bit 0 of comp); with a second point (Y, Q),
                 # read on the first evaluation, both for Y as well (bit 1): the four combinations
-                comps = [0, 1] if r == n else [0]
-                # a graph that reads nothing of R^r: the chart reduced by O(r) on the right (S11 = 0)
+                # a graph that reads nothing of R^r: the chart reduced by O(r) on the right (S11 = 0; at
+                # r = n, X = I, whose orbit under O(n) on the right is both components)
                 right = cayley_right.applies(graph, claim.realization, n, r)
+                comps = [0, 1] if r == n and not right else [0]
                 for comp in comps:
                     def build_cayley(comp=comp) -> tuple:
                         f = SymbolicField()
@@ -755,7 +765,7 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                         R, f2, randomized, lambda: degree_bound(claim, n, r, func).numerator, key)))
                     if r == n and sc.second_point_read and len(comps) == 2:
                         comps += [2, 3]
-                    desc = cayley_right.REDUCTION if right else REDUCED_CAYLEY_REDUCTION if r < n else CAYLEY_REDUCTION.format(
+                    desc = cayley_right.reduction(n, r) if right else REDUCED_CAYLEY_REDUCTION if r < n else CAYLEY_REDUCTION.format(
                         D=" D" if r == n else "",
                         comp=(f"; component {comp % 2 + 1} of O(n) (D = {'I' if comp % 2 == 0 else 'diag(-1,1,..,1)'})"
                               if r == n else ""))
