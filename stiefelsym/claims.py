@@ -220,6 +220,9 @@ class Claim:
     exact_max_n: int = 7
     #: beyond exact_max_n, (n, largest r) pairs at which the symbolic method is still tried first
     exact_max_r: tuple[tuple[int, int], ...] = ()
+    #: at every n, the sizes with n - r at most this at which the symbolic method is still tried first
+    #: (r close to n: the right-reduced Cayley chart, X = I at r = n); None: none
+    exact_corank: int | None = None
     corrections: list[Correction] = field(default_factory=list)
     source: str = ""
     #: sizes at which the printed statement is known to fail (a documented erratum)
@@ -241,16 +244,19 @@ class Claim:
 
     def exact_at(self, n: int, r: int) -> bool:
         """Whether ``auto`` tries the symbolic method first at (n, r): n <= exact_max_n, or r at most
-        the largest r that exact_max_r gives at this n."""
-        return n <= self.exact_max_n or r <= dict(self.exact_max_r).get(n, 0)
+        the largest r that exact_max_r gives at this n, or n - r at most exact_corank."""
+        return (n <= self.exact_max_n or r <= dict(self.exact_max_r).get(n, 0)
+                or self.exact_corank is not None and n - r <= self.exact_corank)
 
     def exact_budget_text(self) -> str:
         """The symbolic budget in words, e.g. ``n <= 5; r <= 5 at n = 6, 7``."""
         by_r: dict[int, list[int]] = {}
         for n, r in self.exact_max_r:
             by_r.setdefault(r, []).append(n)
+        corank = ([] if self.exact_corank is None else
+                  ["r = n" if self.exact_corank == 0 else f"n - r <= {self.exact_corank}"])
         return "; ".join([f"n <= {self.exact_max_n}"] + [f"r <= {r} at n = {', '.join(map(str, ns))}"
-                                                          for r, ns in by_r.items()])
+                                                          for r, ns in by_r.items()] + corank)
 
     def __post_init__(self) -> None:
         if not isinstance(self.id, str) or not _ID.fullmatch(self.id):
@@ -267,6 +273,9 @@ class Claim:
                     or pair[0] <= self.exact_max_n or not 1 <= pair[1] <= pair[0]):
                 raise ValueError(f"claim {self.id}: exact_max_r gives the largest r (1 <= r <= n) at sizes n above "
                                  f"exact_max_n = {self.exact_max_n}, as {{n: r}}; {pair!r} is not one")
+        if self.exact_corank is not None and (type(self.exact_corank) is not int or self.exact_corank < 0):
+            raise ValueError(f"claim {self.id}: exact_corank is the largest n - r (an int >= 0) at which the "
+                             f"symbolic method is tried first at every n; {self.exact_corank!r} is not one")
         if (self.expect == "fails" or self.fails_at is not None) and not self.erratum.strip():
             raise ValueError(f"claim {self.id}: a statement expected to fail must be a documented erratum "
                              "(say what is wrong with erratum=...)")
@@ -393,7 +402,7 @@ def _pairs(by_n: dict[int, int] | None) -> tuple[tuple[int, int], ...]:
 def claim(id: str, *, paper: str | Iterable[str] = (), kind: str, section: str | None = None,
           sizes: SizeSpec | Iterable[tuple[int, int] | Size] | None = None, statement: str = "", realization: str = "standard",
           expect: str = "holds", exact_max_n: int | None = None, exact_max_r: dict[int, int] | None = None,
-          fails_at: Callable[[int, int], bool] | None = None, erratum: str = "", equivariance: str = ""):
+          exact_corank: int | None = None, fails_at: Callable[[int, int], bool] | None = None, erratum: str = "", equivariance: str = ""):
     """Register a claim.  The function's docstring (one sentence) goes into the report.
 
     ``paper``: the paper's equation labels the claim checks; a user's own claim may have none.
@@ -401,7 +410,10 @@ def claim(id: str, *, paper: str | Iterable[str] = (), kind: str, section: str |
     7 for identities, whose residuals are matrix products the exact backends prove quickly; 5 for
     dimension statements, whose exact ranks are randomized beyond small sizes anyway).
     ``exact_max_r``: {n: r} for sizes n above exact_max_n at which ``auto`` still tries the symbolic
-    method first, up to that r (a claim whose cost grows mainly with r)."""
+    method first, up to that r (a claim whose cost grows mainly with r).
+    ``exact_corank``: at every n, the sizes with n - r at most this at which ``auto`` still tries the
+    symbolic method first (a claim that reads coordinates of R^n and nothing of R^r, whose exact chart at
+    r close to n is the right-reduced Cayley chart: X = I at r = n, an (n - r) x (n - r) inverse below)."""
     if exact_max_n is None:
         exact_max_n = DIM_EXACT_MAX_N if kind == "dim" else IDENTITY_EXACT_MAX_N
 
@@ -414,7 +426,8 @@ def claim(id: str, *, paper: str | Iterable[str] = (), kind: str, section: str |
         c = Claim(id=id, paper=labels, kind=kind, section=str(sec), func=fn,
                   sizes=_size_spec(id, sizes), statement=statement.strip(),
                   title=(inspect.getdoc(fn) or "").strip(), realization=realization,
-                  expect=expect, exact_max_n=exact_max_n, exact_max_r=_pairs(exact_max_r), source=fn.__module__,
+                  expect=expect, exact_max_n=exact_max_n, exact_max_r=_pairs(exact_max_r),
+                  exact_corank=exact_corank, source=fn.__module__,
                   fails_at=fails_at, erratum=" ".join(erratum.split()), equivariance=" ".join(equivariance.split()),
                   reviewed=_ACTIVE[-1].reviewed)
         _ACTIVE[-1].add(c)

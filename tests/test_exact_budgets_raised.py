@@ -87,3 +87,27 @@ def test_the_cayley_chart_puts_the_second_point_on_either_component():
     assert res.verdict == "fails", (res.verdict, res.message)
     assert any("A = diag(a)" in d and "component 2 of O(n) for Y" in d for d in res.reductions), res.reductions
     assert len(res.reductions) == 4
+
+
+def test_the_corank_budget_names_the_sizes_with_r_close_to_n():
+    c = _claim(_reflections_forget_S_on_P)
+    import dataclasses
+    c0 = dataclasses.replace(c, exact_max_n=3, exact_corank=0)
+    assert c0.exact_at(7, 7) and c0.exact_at(3, 1) and not c0.exact_at(7, 6)
+    assert c0.exact_budget_text() == "n <= 3; r = n"
+    c1 = dataclasses.replace(c0, exact_corank=1)
+    assert c1.exact_at(7, 6) and not c1.exact_at(7, 5) and c1.exact_budget_text() == "n <= 3; n - r <= 1"
+    with pytest.raises(ValueError, match="exact_corank"):
+        dataclasses.replace(c0, exact_corank=-1)
+
+
+@pytest.mark.parametrize("cid,n,r", [("manakov-reflections", 7, 7), ("dual-lax-reflections", 5, 4),
+                                     ("dual-lax-reflections", 5, 5)])
+def test_the_reflections_are_proved_at_r_close_to_n_and_a_forgotten_reflection_refuted(cid, n, r):
+    c = load_catalog().get(cid)
+    assert c.exact_at(n, r)
+    res = run_exact(c, n, r, 0)
+    assert res.verdict == "proved", (res.verdict, res.message)
+    assert any("acting on the right" in d for d in res.reductions), res.reductions
+    bad = run_exact(_claim(_reflections_forget_S_on_P), n, r, 0)
+    assert bad.verdict == "fails", (bad.verdict, bad.message)
