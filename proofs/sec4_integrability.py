@@ -166,6 +166,7 @@ def manakov_flow_for_a_squared(s):
 
 
 @claim("manakov-lax", paper=("Manakov", "dot_XP2", "man"), kind="lax", exact_max_n=2, exact_max_r={3: 3},
+       exact_corank={4: 0, 5: 0, 6: 0},
        statement=r"\tfrac{d}{dt}\mathcal L_{man}(\lambda)=[\mathcal A_{man}(\lambda),\mathcal L_{man}(\lambda)],\quad "
                  r"\mathcal L_{man}=\Phi+\lambda A,\ \mathcal A_{man}=\mathbb A(\Phi)+\lambda B;\quad "
                  r"\tfrac{d}{dt}\tr\big(\lambda A+\textstyle\sum_i p_i\wedge e_i\big)^k=0")
@@ -275,7 +276,7 @@ def reflection(s, i):
 
 
 @claim("manakov-reflections", paper=("reflections", "man-dual"), kind="id", exact_max_n=2,
-       exact_max_r={3: 3, 4: 1, 5: 1, 6: 1, 7: 1}, exact_corank=0,
+       exact_max_r={3: 3, 4: 1, 5: 1, 6: 1, 7: 1}, exact_corank={4: 0, 5: 0, 6: 0, 7: 0},
        statement=r"(X,P)\mapsto(S_iX,S_iP):\quad (\text{dot\_XP3*})\ \text{is equivariant},\quad "
                  r"\mathcal L^*_{man}(\lambda),\ \mathcal A^*_{man}(\lambda)\ \text{are invariant},\quad i=1,\dots,n")
 def reflections_are_symmetries_of_the_dual_pair(s):

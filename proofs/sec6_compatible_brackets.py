@@ -480,7 +480,7 @@ def H_neum_eigenspace(t):
 
 
 @claim("singular-a-noether", paper=("No", "momentum_map", "Phi"), kind="pb", exact_max_n=3,
-       exact_max_r={4: 2, 5: 3, 6: 1, 7: 1}, exact_corank=0,
+       exact_max_r={4: 2, 5: 3, 6: 1, 7: 1}, exact_corank={4: 0, 5: 0, 6: 0, 7: 0},
        sizes=admissible(5, n_min=2, condition="n >= 2 (so(1) = 0)"),
        statement=r"a_1=\dots=a_{k_1},\dots:\quad \tfrac{d}{dt}\Phi_A=0,\ \Phi_A=\pr_{so(n)_A}(PX^T-XP^T),\quad "
                  r"\{\langle\Phi,\xi_A\rangle,H_{neum,\kappa}\}=0,\ \xi_A\in so(n)_A")

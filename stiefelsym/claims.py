@@ -220,9 +220,9 @@ class Claim:
     exact_max_n: int = 7
     #: beyond exact_max_n, (n, largest r) pairs at which the symbolic method is still tried first
     exact_max_r: tuple[tuple[int, int], ...] = ()
-    #: at every n, the sizes with n - r at most this at which the symbolic method is still tried first
-    #: (r close to n: the right-reduced Cayley chart, X = I at r = n); None: none
-    exact_corank: int | None = None
+    #: (n, largest n - r) pairs at which the symbolic method is still tried first (r close to n: the
+    #: right-reduced Cayley chart, X = I at r = n)
+    exact_corank: tuple[tuple[int, int], ...] = ()
     corrections: list[Correction] = field(default_factory=list)
     source: str = ""
     #: sizes at which the printed statement is known to fail (a documented erratum)
@@ -244,17 +244,20 @@ class Claim:
 
     def exact_at(self, n: int, r: int) -> bool:
         """Whether ``auto`` tries the symbolic method first at (n, r): n <= exact_max_n, or r at most
-        the largest r that exact_max_r gives at this n, or n - r at most exact_corank."""
+        the largest r that exact_max_r gives at this n, or n - r at most what exact_corank gives at this n."""
         return (n <= self.exact_max_n or r <= dict(self.exact_max_r).get(n, 0)
-                or self.exact_corank is not None and n - r <= self.exact_corank)
+                or n - r <= dict(self.exact_corank).get(n, -1))
 
     def exact_budget_text(self) -> str:
         """The symbolic budget in words, e.g. ``n <= 5; r <= 5 at n = 6, 7``."""
         by_r: dict[int, list[int]] = {}
         for n, r in self.exact_max_r:
             by_r.setdefault(r, []).append(n)
-        corank = ([] if self.exact_corank is None else
-                  ["r = n" if self.exact_corank == 0 else f"n - r <= {self.exact_corank}"])
+        by_k: dict[int, list[int]] = {}
+        for n, k in self.exact_corank:
+            by_k.setdefault(k, []).append(n)
+        corank = [("r = n" if k == 0 else f"n - r <= {k}") + f" at n = {', '.join(map(str, ns))}"
+                  for k, ns in by_k.items()]
         return "; ".join([f"n <= {self.exact_max_n}"] + [f"r <= {r} at n = {', '.join(map(str, ns))}"
                                                           for r, ns in by_r.items()] + corank)
 
@@ -273,9 +276,11 @@ class Claim:
                     or pair[0] <= self.exact_max_n or not 1 <= pair[1] <= pair[0]):
                 raise ValueError(f"claim {self.id}: exact_max_r gives the largest r (1 <= r <= n) at sizes n above "
                                  f"exact_max_n = {self.exact_max_n}, as {{n: r}}; {pair!r} is not one")
-        if self.exact_corank is not None and (type(self.exact_corank) is not int or self.exact_corank < 0):
-            raise ValueError(f"claim {self.id}: exact_corank is the largest n - r (an int >= 0) at which the "
-                             f"symbolic method is tried first at every n; {self.exact_corank!r} is not one")
+        for pair in self.exact_corank:
+            if (not isinstance(pair, tuple) or len(pair) != 2 or any(type(x) is not int for x in pair)
+                    or not 0 <= pair[1] < pair[0]):
+                raise ValueError(f"claim {self.id}: exact_corank gives the largest n - r (0 <= n - r < n) at which "
+                                 f"the symbolic method is tried first, as {{n: n - r}}; {pair!r} is not one")
         if (self.expect == "fails" or self.fails_at is not None) and not self.erratum.strip():
             raise ValueError(f"claim {self.id}: a statement expected to fail must be a documented erratum "
                              "(say what is wrong with erratum=...)")
@@ -391,18 +396,19 @@ def _widened(a: tuple[tuple[int, int], ...], b: tuple[tuple[int, int], ...]) -> 
     return tuple(sorted(by_n.items()))
 
 
-def _pairs(by_n: dict[int, int] | None) -> tuple[tuple[int, int], ...]:
+def _pairs(by_n: dict[int, int] | None, what: str = "exact_max_r") -> tuple[tuple[int, int], ...]:
     if by_n is None:
         return ()
     if not isinstance(by_n, dict):
-        raise ValueError(f"exact_max_r is a dict {{n: largest r}}, not {type(by_n).__name__}")
+        raise ValueError(f"{what} is a dict {{n: {'largest r' if what == 'exact_max_r' else 'largest n - r'}}}, "
+                         f"not {type(by_n).__name__}")
     return tuple(sorted((n, r) for n, r in by_n.items()))
 
 
 def claim(id: str, *, paper: str | Iterable[str] = (), kind: str, section: str | None = None,
           sizes: SizeSpec | Iterable[tuple[int, int] | Size] | None = None, statement: str = "", realization: str = "standard",
           expect: str = "holds", exact_max_n: int | None = None, exact_max_r: dict[int, int] | None = None,
-          exact_corank: int | None = None, fails_at: Callable[[int, int], bool] | None = None, erratum: str = "", equivariance: str = ""):
+          exact_corank: dict[int, int] | None = None, fails_at: Callable[[int, int], bool] | None = None, erratum: str = "", equivariance: str = ""):
     """Register a claim.  The function's docstring (one sentence) goes into the report.
 
     ``paper``: the paper's equation labels the claim checks; a user's own claim may have none.
@@ -411,7 +417,7 @@ def claim(id: str, *, paper: str | Iterable[str] = (), kind: str, section: str |
     dimension statements, whose exact ranks are randomized beyond small sizes anyway).
     ``exact_max_r``: {n: r} for sizes n above exact_max_n at which ``auto`` still tries the symbolic
     method first, up to that r (a claim whose cost grows mainly with r).
-    ``exact_corank``: at every n, the sizes with n - r at most this at which ``auto`` still tries the
+    ``exact_corank``: {n: k}: the sizes n, r with n - r <= k at which ``auto`` still tries the
     symbolic method first (a claim that reads coordinates of R^n and nothing of R^r, whose exact chart at
     r close to n is the right-reduced Cayley chart: X = I at r = n, an (n - r) x (n - r) inverse below)."""
     if exact_max_n is None:
@@ -427,7 +433,7 @@ def claim(id: str, *, paper: str | Iterable[str] = (), kind: str, section: str |
                   sizes=_size_spec(id, sizes), statement=statement.strip(),
                   title=(inspect.getdoc(fn) or "").strip(), realization=realization,
                   expect=expect, exact_max_n=exact_max_n, exact_max_r=_pairs(exact_max_r),
-                  exact_corank=exact_corank, source=fn.__module__,
+                  exact_corank=_pairs(exact_corank, "exact_corank"), source=fn.__module__,
                   fails_at=fails_at, erratum=" ".join(erratum.split()), equivariance=" ".join(equivariance.split()),
                   reviewed=_ACTIVE[-1].reviewed)
         _ACTIVE[-1].add(c)

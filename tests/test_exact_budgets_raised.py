@@ -97,25 +97,37 @@ def _noether_of_the_whole_phi(s):
     return {"d(X^T D X)/dt": s.d(lambda t: t.X.T @ D @ t.X, s.dirac_flow(p.H_neum_eigenspace))}
 
 
+def _manakov_lax_wrong_b(s):
+    """(manakov-lax) with 𝓐 = 𝔸(Φ) + λA (B replaced by A): not a Lax partner."""
+    flow = s.dirac_flow(m.H_manakov)
+    L = s.Phi + s.lam * s.A
+    M = m.manakov_operator(s, m.b_eigenvalues(s))(s.Phi) + s.lam * s.A
+    return {"Lax": s.d(lambda t: t.Phi + t.lam * t.A, flow) - (M @ L - L @ M)}
+
+
 def test_the_corank_budget_names_the_sizes_with_r_close_to_n():
     c = _claim(_reflections_forget_S_on_P)
     import dataclasses
-    c0 = dataclasses.replace(c, exact_max_n=3, exact_corank=0)
-    assert c0.exact_at(7, 7) and c0.exact_at(3, 1) and not c0.exact_at(7, 6)
-    assert c0.exact_budget_text() == "n <= 3; r = n"
-    c1 = dataclasses.replace(c0, exact_corank=1)
-    assert c1.exact_at(7, 6) and not c1.exact_at(7, 5) and c1.exact_budget_text() == "n <= 3; n - r <= 1"
-    with pytest.raises(ValueError, match="exact_corank"):
-        dataclasses.replace(c0, exact_corank=-1)
+    c0 = dataclasses.replace(c, exact_max_n=3, exact_corank=((6, 0), (7, 0)))
+    assert c0.exact_at(7, 7) and c0.exact_at(3, 1) and not c0.exact_at(7, 6) and not c0.exact_at(5, 5)
+    assert c0.exact_budget_text() == "n <= 3; r = n at n = 6, 7"
+    c1 = dataclasses.replace(c0, exact_corank=((7, 1),))
+    assert c1.exact_at(7, 6) and not c1.exact_at(7, 5) and not c1.exact_at(6, 6)
+    assert c1.exact_budget_text() == "n <= 3; n - r <= 1 at n = 7"
+    for bad in (((7, -1),), ((7, 7),), ((7, 0.5),)):
+        with pytest.raises(ValueError, match="exact_corank"):
+            dataclasses.replace(c0, exact_corank=bad)
 
 
 @pytest.mark.parametrize("cid,n,r", [("manakov-reflections", 7, 7), ("dual-lax-reflections", 6, 6),
-                                     ("dual-lax-reflections", 5, 5), ("singular-a-noether", 6, 6)])
+                                     ("dual-lax-reflections", 5, 5), ("singular-a-noether", 6, 6),
+                                     ("manakov-lax", 5, 5)])
 def test_the_claims_raised_to_r_n_are_proved_there_and_a_corrupted_claim_refuted(cid, n, r):
     c = load_catalog().get(cid)
     assert c.exact_at(n, r)
     res = run_exact(c, n, r, 0)
     assert res.verdict == "proved", (res.verdict, res.message)
     assert any("acting on the right" in d for d in res.reductions), res.reductions
-    bad = run_exact(_claim(_reflections_forget_S_on_P if "reflections" in cid else _noether_of_the_whole_phi), n, r, 0)
+    bad = run_exact(_claim(_reflections_forget_S_on_P if "reflections" in cid else
+                           _noether_of_the_whole_phi if "noether" in cid else _manakov_lax_wrong_b), n, r, 0)
     assert bad.verdict == "fails", (bad.verdict, bad.message)

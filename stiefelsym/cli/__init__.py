@@ -936,8 +936,7 @@ def show(claim_id: str, claims_files: tuple[str, ...]) -> None:
     click.echo(f"sizes:       {_sizes_text(c.sizes, limit=len(c.sizes))}")
     click.echo(f"exact symbolic method up to n = {c.exact_max_n}"
                + "".join(f"; up to r = {r} at n = {n}" for n, r in c.exact_max_r)
-               + ("" if c.exact_corank is None else
-                  "; at r = n" if c.exact_corank == 0 else f"; at n - r <= {c.exact_corank}"))
+               + "".join(f"; at {'r = n' if k == 0 else f'n - r <= {k}'} at n = {n}" for n, k in c.exact_corank))
     if failing:
         click.echo(f"erratum:     fails as printed at {' '.join(failing)}"
                    + (f": {_one_line(c.erratum)}" if c.erratum else ""))

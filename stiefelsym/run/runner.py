@@ -360,7 +360,7 @@ def _run_auto(claim: Claim, size: Size, seed: int, func: Callable | None,
         spent = res.seconds
     else:
         reason, spent = (f"({size.n},{size.r}) is above this claim's symbolic budget "
-                         f"({claim.exact_budget_text()})" if claim.exact_max_r or claim.exact_corank is not None else
+                         f"({claim.exact_budget_text()})" if claim.exact_max_r or claim.exact_corank else
                          f"n = {size.n} is above this claim's symbolic budget (n <= {claim.exact_max_n})"), 0.0
     res = METHOD_RUNNERS["modular"](claim, size.n, size.r, seed, func)
     res.message = "; ".join(m for m in (f"exact: {reason}" if reason else "", res.message) if m)

@@ -245,7 +245,7 @@ def _claim_data(c: Claim, needed: Sequence[tuple[int, int]] = ()) -> dict:
     return {
         "id": c.id, "paper": list(c.paper), "kind": c.kind, "section": c.section, "statement": c.statement,
         "title": c.title, "realization": c.realization, "expect": c.expect, "exact_max_n": c.exact_max_n,
-        "exact_max_r": [list(p) for p in c.exact_max_r], "exact_corank": c.exact_corank,
+        "exact_max_r": [list(p) for p in c.exact_max_r], "exact_corank": [list(p) for p in c.exact_corank],
         "erratum": c.erratum, "equivariance": c.equivariance, "source": c.source, "path": path,
         "line": line if type(line) is int else 0, "name": getattr(c.func, "__name__", c.id),
         "sizes": {"list": [list(p) for p in listed], "n_min": spec.n_min, "r_min": spec.r_min,
@@ -795,7 +795,7 @@ def _claim(d: Any, path: str, confinement: str = "namespaces") -> Claim:
               sizes=spec, statement=_get(d, "statement", str), title=_get(d, "title", str),
               realization=realization, expect=_get(d, "expect", str), exact_max_n=_get(d, "exact_max_n", int),
               exact_max_r=_exact_pairs(_get(d, "exact_max_r", list)),
-              exact_corank=_get(d, "exact_corank", int, optional=True),
+              exact_corank=_exact_pairs(_get(d, "exact_corank", list, optional=True) or []),
               corrections=corrections, source=_get(d, "source", str),
               fails_at=None if fails is None else _Lookup("erratum sizes (fails_at)", fails),
               erratum=_get(d, "erratum", str), equivariance=_get(d, "equivariance", str), reviewed=False)
