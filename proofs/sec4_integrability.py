@@ -276,7 +276,7 @@ def reflection(s, i):
 
 
 @claim("manakov-reflections", paper=("reflections", "man-dual"), kind="id", exact_max_n=2,
-       exact_max_r={3: 3, 4: 1, 5: 1, 6: 1, 7: 1}, exact_corank={4: 0, 5: 0, 6: 0, 7: 0},
+       exact_max_r={3: 3, 4: 1, 5: 1, 6: 1, 7: 1}, exact_corank={4: 1, 5: 1, 6: 0, 7: 0},
        statement=r"(X,P)\mapsto(S_iX,S_iP):\quad (\text{dot\_XP3*})\ \text{is equivariant},\quad "
                  r"\mathcal L^*_{man}(\lambda),\ \mathcal A^*_{man}(\lambda)\ \text{are invariant},\quad i=1,\dots,n")
 def reflections_are_symmetries_of_the_dual_pair(s):

@@ -183,7 +183,7 @@ def poisson_sphere_geodesic_flow(s):
 # -- the reflections (reflections) ----------------------------------------------------------
 
 @claim("dual-lax-reflections", paper=("DUAL", "reflections", "LA3", "LA4"), kind="id", exact_max_n=3, exact_max_r={4: 1, 5: 2, 6: 1, 7: 1},
-       exact_corank={4: 0, 5: 0, 6: 0, 7: 0},
+       exact_corank={4: 1, 5: 1, 6: 0, 7: 0},
        sizes=admissible(n_max=5),
        statement=r"(X,P)\mapsto(S_iX,S_iP):\quad \mathcal L^*_{neum}(\lambda),\ \mathcal A^*_{neum}(\lambda)\ "
                  r"\text{are invariant},\quad i=1,\dots,n")
