@@ -732,7 +732,7 @@ def dual_lax_matrices_determine_the_point(s):
 # -- r = n: the Lax pairs give integrals of every Manakov flow (the remark after DUAL) ---------------------
 
 @claim("dual-invariants-manakov-r-n", paper=("DUAL", "LA3", "Neumann_LA", "Manakov", "dot_XP2"), kind="pb",
-       sizes=admissible(n_max=5, where=lambda n, r: r == n, condition="r = n"), exact_max_n=2,
+       sizes=admissible(n_max=5, where=lambda n, r: r == n, condition="r = n"), exact_max_n=3,
        statement=r"r=n:\ \tr(X^TAX)=\tr A,\quad \tfrac{d}{dt}\tr\mathcal L_{neum}(\lambda)^k=0\ (k=1,2,3),\ "
                  r"\tfrac{d}{dt}\tr\mathcal L^*_{neum}(\lambda)^k=0\ (k=2,4)\ \text{along the Manakov flow (dot\_XP2), "
                  r"(Manakov)},\ B\ \text{generic}")
@@ -752,7 +752,7 @@ def dual_invariants_are_manakov_integrals_for_r_n(s):
 # -- the Chasles cones are real ------------------------------------------------------------------------
 
 @claim("chasles-cones-real", paper=("Gen_Chasles", "2r-integrals", "conf0"), kind="geo",
-       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 2},
+       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 3},
        statement=r"\lambda^r\,\mathcal I_{2r}(\lambda)=\det\big(\lambda\mathbf I_n-Q(A-PP^T)Q\big),\ Q=\mathbf I_n-XX^T"
                  r"\ \Rightarrow\ c_1,\dots,c_{n-r}\in\mathbb R\ \text{for real}\ (X,P)")
 def chasles_cones_are_real(s):

@@ -163,3 +163,35 @@ def test_a_graph_that_reads_r_gets_no_right_reduced_chart_at_r_close_to_n(n, r):
     res = run_exact(_claim(_x1_symmetric), n, r, 0)
     assert res.verdict == "fails", (res.verdict, res.message)
     assert not any("acting on the right" in x for x in res.reductions), res.reductions
+
+
+def _manakov_conserves_a_linear_function(s):
+    """tr(CX) (C a generic r × n matrix) conserved along the Manakov flow (dot_XP2): a wrong statement."""
+    flow = s.dirac_flow(m.H_manakov)
+    return {"d tr(C X)/dt": s.d(lambda t: t.tr(t.generic("C", "r", "n") @ t.X), flow)}
+
+
+def _cones_with_lambda_to_r_minus_1(s):
+    """(chasles-cones-real) with λ^(r−1) in place of λ^r (at r = n, Q = 0 and the sign of PPᵀ is not
+    seen: this corruption is): a wrong statement."""
+    Q = s.In - s.X @ s.X.T
+    M = Q @ (s.A - s.P @ s.P.T) @ Q
+    integrals, _ = d.spectral_integrals(s, s.lam)
+    lam_r = s.q(1)
+    for _ in range(s.r - 1):
+        lam_r = lam_r * s.lam
+    return {"lambda^(r-1) I_2r(lambda) - det(lambda I - Q(A - PP^T)Q)":
+            lam_r * integrals[s.r] - d.det_matrix(s, s.scalar_matrix(s.lam, s.n, "n") - M)}
+
+
+@pytest.mark.parametrize("cid,bad", [("chasles-cones-real", _cones_with_lambda_to_r_minus_1),
+                                     ("dual-invariants-manakov-r-n", _manakov_conserves_a_linear_function)])
+def test_claims_raised_to_3_3_are_proved_on_the_chart_x_i_and_a_corruption_refuted(cid, bad):
+    c = load_catalog().get(cid)
+    assert c.exact_at(3, 3)
+    res = run_exact(c, 3, 3, 0)
+    assert res.verdict == "proved", (res.verdict, res.message)
+    assert any("X = I, P = W" in x for x in res.reductions), res.reductions
+    wrong = run_exact(_claim(bad), 3, 3, 0)
+    assert wrong.verdict == "fails", (wrong.verdict, wrong.message)
+    assert any("X = I, P = W" in x for x in wrong.reductions), wrong.reductions
