@@ -34,6 +34,9 @@ class _Sides:
         self.parent: list[int] = []
         self.atom: list[str | None] = []       # "n", "r", "opaque" or None (a variable)
         self.parts: list[tuple] = []
+        #: pairs of sides joined although their splittings into direct sums differ (a side of R^r or R^n
+        #: split into coordinate blocks: e_1 of R^2 as a block of 1 x 1 pieces of I and 0 used on R^r)
+        self.splits: list[tuple[int, int]] = []
 
     def new(self, atom: str | None = None, parts: tuple = ()) -> int:
         self.parent.append(len(self.parent))
@@ -52,6 +55,11 @@ class _Sides:
         if a == b:
             return
         ta, tb = self.atom[a], self.atom[b]
+        pa, pb = self.parts[a], self.parts[b]
+        if (len(pa) > 1 and len(pb) > 1 and (len(pa) != len(pb)
+                                              or any(self.find(x) != self.find(y) for x, y in zip(pa, pb)))) \
+                or (len(pa) > 1 and not pb and tb in ("n", "r")) or (len(pb) > 1 and not pa and ta in ("n", "r")):
+            self.splits.append((a, b))
         if ta == "opaque" or tb == "opaque":
             # joined with an engine value's side: a variable may now be anything (an atom stays itself)
             other = b if ta == "opaque" else a
@@ -105,6 +113,12 @@ def _spaces(g: Graph) -> tuple["_Sides", list]:
     def of(a):
         return sides[a.i] if type(a) is Ref else None
 
+    def _square(x) -> None:
+        # a trace, an inverse or a power is of a square matrix: its row and column sides are one space
+        # (else a trace of Xᵀ B with B of given entries would leave B's columns unjoined to R^r)
+        if x:
+            S.union(x[0], x[1])
+
     for op, a in zip(g.ops, g.args):
         sd = None
         if op == "attr":
@@ -152,10 +166,22 @@ def _spaces(g: Graph) -> tuple["_Sides", list]:
                     S.union(u[0], v[0])
                     S.union(u[1], v[1])
                     sd = (S.new(parts=(u[0], u[0])), S.new(parts=(u[1], u[1])))
-            elif name not in ("tr", "killing", "q", "const", "scalar", "bracket", "canonical_bracket"):
+            elif name == "tr":
+                _square(of(args[0]))
+            elif name == "killing":
+                # <a, b> = -1/2 tr(ab): a's columns are b's rows and b's columns a's rows
+                u, v = of(args[0]), of(args[1])
+                if u and v:
+                    S.union(u[1], v[0])
+                    S.union(u[0], v[1])
+            elif name not in ("q", "const", "scalar", "bracket", "canonical_bracket"):
                 sd = (opaque, opaque)
+        elif op == "trace":
+            _square(of(a[0]))
         elif op in ("T", "inv"):
             x = of(a[0])
+            if op == "inv":
+                _square(x)
             sd = (x[1], x[0]) if x else None
         elif op in ("add", "sub"):
             x, y = of(a[0]), of(a[1])
@@ -174,6 +200,8 @@ def _spaces(g: Graph) -> tuple["_Sides", list]:
             sd = of(a[0]) or of(a[1])
         elif op in ("neg", "pow"):
             sd = of(a[0])
+            if op == "pow":
+                _square(sd)
         elif op == "entry":
             sd = (S.new(), S.new()) if any(type(i) is tuple for i in a[1:]) else None
         elif op == "block":
@@ -335,7 +363,11 @@ def right_action_breaks(g: Graph) -> list[str]:
     engine steps are constants on R^n (:data:`RIGHT_STEPS`), and which reads no entry or block of a
     matrix with a side on R^r (or on an engine value's side), builds no matrix of given entries with
     a side on R^r and takes no rank or count, computes with typed matrix operations only, each of which
-    commutes with the action: its residuals are covariant, whatever it reads of R^n."""
+    commutes with the action: its residuals are covariant, whatever it reads of R^n.  A side of R^r is
+    also reached by a block of a matrix on R^n alone whose result meets R^r (rows 0..r-1 of I_n times X),
+    by a direct sum joined to R^r (e_1 of R^2 as a block of 1 x 1 pieces of I and 0) or two different
+    splittings of a side on R^r joined, and by a matrix of given entries paired with R^r only through a
+    trace (tr(X^T B): a trace, a pairing, an inverse and a power join their matrix's two sides)."""
     S, sides = _spaces(g)
 
     def on_r(sd) -> bool:
@@ -353,10 +385,15 @@ def right_action_breaks(g: Graph) -> list[str]:
             out["a matrix of given entries on R^r"] = None
         elif op == "entry" and on_r(sides[a[0].i] if type(a[0]) is Ref else None):
             out["an entry or a block of a matrix on R^r"] = None
+        elif op == "entry" and sides[i] and on_r(sides[i]):
+            # a block of a matrix on R^n alone used on R^r (rows 0..r-1 of I_n times X: the top block X1)
+            out["a block of a matrix used on R^r"] = None
         elif op == "prim" and a[0].qualname not in RIGHT_STEPS:
             out["an engine step"] = None
         elif op in ("rank", "count", "apply"):
             out[f"a {op}"] = None
+    if any(_involves_r(S, x) for pair in S.splits for x in pair):
+        out["a splitting of R^r into blocks"] = None
     return list(out)
 
 
