@@ -787,6 +787,30 @@ def _is_matrix(o) -> bool:
     return getattr(o, "__array_priority__", 0) >= 1000
 
 
+#: the number types that wrap a value of another field, by the attribute holding it (Dual: a; the
+#: reverse and degree-paired numbers register theirs): a derivative taken inside a function whose
+#: derivative is taken evaluates numbers of a field over a field over the point's field, and a value
+#: the function captured from an outer scene is a number of a lower field of that tower
+LAYERED: dict[type, str] = {}
+
+
+def tower_level(x: Any) -> int:
+    """How many layers of engine numbers (dual, reverse, degree-paired) wrap a value of a point's field."""
+    n = 0
+    while True:
+        attr = LAYERED.get(type(x))
+        if attr is None:
+            return n
+        x = getattr(x, attr)
+        n += 1
+
+
+def _above(o: Any, x: Any) -> bool:
+    """Whether o is a number of a field built over x's (a layered number of a higher level): the
+    operation is o's, with x a constant of its base."""
+    return type(o) in LAYERED and tower_level(o) > tower_level(x)
+
+
 class Dual:
     """a + b·ε with ε² = 0: forward-mode derivative over any field."""
 
@@ -799,9 +823,12 @@ class Dual:
         self.a, self.b = a, b
 
     def __add__(self, o):
-        if isinstance(o, Dual):
-            return Dual(self.a + o.a, self.b + o.b)
-        if _is_matrix(o):
+        if type(o) is Dual:
+            if _same_level(self, o):
+                return Dual(self.a + o.a, self.b + o.b)
+            if tower_level(o) > tower_level(self):
+                return o.__add__(self)       # this number is a constant of o's base
+        elif _is_matrix(o) or _above(o, self):
             return NotImplemented
         return Dual(self.a + o, self.b)
 
@@ -811,9 +838,12 @@ class Dual:
         return Dual(-self.a, -self.b)
 
     def __sub__(self, o):
-        if isinstance(o, Dual):
-            return Dual(self.a - o.a, self.b - o.b)
-        if _is_matrix(o):
+        if type(o) is Dual:
+            if _same_level(self, o):
+                return Dual(self.a - o.a, self.b - o.b)
+            if tower_level(o) > tower_level(self):
+                return o.__rsub__(self)       # this number is a constant of o's base
+        elif _is_matrix(o) or _above(o, self):
             return NotImplemented
         return Dual(self.a - o, self.b)
 
@@ -821,19 +851,25 @@ class Dual:
         return Dual(o - self.a, -self.b)
 
     def __mul__(self, o):
-        if isinstance(o, Dual):
-            return Dual(self.a * o.a, self.a * o.b + self.b * o.a)
-        if _is_matrix(o):
+        if type(o) is Dual:
+            if _same_level(self, o):
+                return Dual(self.a * o.a, self.a * o.b + self.b * o.a)
+            if tower_level(o) > tower_level(self):
+                return o.__mul__(self)       # this number is a constant of o's base
+        elif _is_matrix(o) or _above(o, self):
             return NotImplemented
         return Dual(self.a * o, self.b * o)
 
     __rmul__ = __mul__
 
     def __truediv__(self, o):
-        if isinstance(o, Dual):
-            q = self.a / o.a
-            return Dual(q, (self.b - q * o.b) / o.a)
-        if _is_matrix(o):
+        if type(o) is Dual:
+            if _same_level(self, o):
+                q = self.a / o.a
+                return Dual(q, (self.b - q * o.b) / o.a)
+            if tower_level(o) > tower_level(self):
+                return o.__rtruediv__(self)
+        elif _is_matrix(o) or _above(o, self):
             return NotImplemented
         return Dual(self.a / o, self.b / o)
 
@@ -843,6 +879,18 @@ class Dual:
 
     def __repr__(self):
         return f"Dual({self.a!r}, {self.b!r})"
+
+
+LAYERED[Dual] = "a"
+
+
+def _same_level(x: Dual, o: Dual) -> bool:
+    """Two dual numbers of one field (the common case: their parts are not layered, or layered alike); a
+    dual number of a lower field is a constant of the higher one's base (a value a function captured)."""
+    ta, oa = type(x.a), type(o.a)
+    if ta not in LAYERED and oa not in LAYERED:
+        return True
+    return tower_level(x) == tower_level(o)
 
 
 class DualField(Field):
