@@ -66,3 +66,10 @@ def test_reverse_numbers_of_two_layers_are_not_taken_for_one():
     for got in (low * high, high * low, low + high, high - low, low - high, high / low, low / high):
         assert type(got) is Rev and type(got.v) is Rev
     assert (low * high).v.v == 6 and (low - high).v.v == -1 and str((low / high).v.v) == "2/3"
+
+
+def test_a_dual_number_of_plain_numbers_fits_any_layer():
+    P = PairField(RationalField())
+    x = Dual(_pair(P, 2), _pair(P, 3))
+    for got in (x + Dual(0, 0), Dual(0, 0) + x, x * Dual(1, 0)):
+        assert type(got) is Dual and type(got.a) is not Dual and tower_level(got) == 2

@@ -795,10 +795,14 @@ LAYERED: dict[type, str] = {}
 
 
 def tower_level(x: Any) -> int:
-    """How many layers of engine numbers (dual, reverse, degree-paired) wrap a value of a point's field."""
+    """How many layers of engine numbers (dual, reverse, degree-paired) wrap a value of a point's field (a
+    dual number by the higher of its two parts: one of them may be a plain 0)."""
     n = 0
     while True:
-        attr = LAYERED.get(type(x))
+        t = type(x)
+        if t is Dual:
+            return n + 1 + max(tower_level(x.a), tower_level(x.b))
+        attr = LAYERED.get(t)
         if attr is None:
             return n
         x = getattr(x, attr)
@@ -807,8 +811,10 @@ def tower_level(x: Any) -> int:
 
 def _above(o: Any, x: Any) -> bool:
     """Whether o is a number of a field built over x's (a layered number of a higher level): the
-    operation is o's, with x a constant of its base."""
-    return type(o) in LAYERED and tower_level(o) > tower_level(x)
+    operation is o's, with x a constant of its base (a dual number of plain Python numbers is no layer's)."""
+    if type(o) not in LAYERED or type(o) is Dual and all(type(p) in (int, Fraction) for p in (o.a, o.b)):
+        return False
+    return tower_level(o) > tower_level(x)
 
 
 class Dual:
@@ -884,11 +890,16 @@ class Dual:
 LAYERED[Dual] = "a"
 
 
+_PLAIN = (int, Fraction)
+
+
 def _same_level(x: Dual, o: Dual) -> bool:
-    """Two dual numbers of one field (the common case: their parts are not layered, or layered alike); a
-    dual number of a lower field is a constant of the higher one's base (a value a function captured)."""
-    ta, oa = type(x.a), type(o.a)
-    if ta not in LAYERED and oa not in LAYERED:
+    """Two dual numbers of one field (the common case: no part is layered); a dual number of a lower field
+    is a constant of the higher one's base (a value a function captured).  A dual number made of plain
+    Python numbers only fits any layer (as before layers were told apart)."""
+    if not (type(x.a) in LAYERED or type(x.b) in LAYERED or type(o.a) in LAYERED or type(o.b) in LAYERED):
+        return True
+    if all(type(p) in _PLAIN for p in (x.a, x.b)) or all(type(p) in _PLAIN for p in (o.a, o.b)):
         return True
     return tower_level(x) == tower_level(o)
 
