@@ -56,3 +56,26 @@ def test_a_covariant_block_matrix_keeps_the_reduction():
         M = block([[s.Phi, s.P], [s.P.T, s.eta]])
         return {"x": s.tr(L @ M @ L) + s.A[0, 0]}
     assert right_action_breaks(_graph(lax)) == []
+
+
+def _two_splittings(s):
+    """[X; 0]ᵀ[I_r; 0]: R^n + R^r taken for R^r + R^n reads the top r x r block of X."""
+    return {"x": block([[s.X], [s.zeros(s.r, s.r)]]).T @ block([[s.Ir], [s.zeros(s.n, s.r)]]) - s.Ir}
+
+
+def test_two_splittings_of_one_space_are_a_coordinate_read_of_r_n():
+    from stiefelsym.ir.passes import TWO_SPLITTINGS, coordinate_reads
+    g = _graph(_two_splittings)
+    assert coordinate_reads(g).get(TWO_SPLITTINGS) == frozenset({"n", "r"})
+    assert right_action_breaks(g)
+
+
+def test_alike_splittings_and_a_given_matrix_that_takes_a_splitting_are_not_reads():
+    """(R^n + R^r) joined to (R^n + R^r), and a matrix of given entries whose side takes a block's splitting."""
+    from stiefelsym.ir.passes import TWO_SPLITTINGS, coordinate_reads
+
+    def lax(s):
+        L = block([[s.A, s.X], [s.X.T, s.zeros(s.r, s.r)]])
+        M = block([[s.Phi, s.P], [s.P.T, s.eta]])
+        return {"x": s.tr(L @ M @ L)}
+    assert TWO_SPLITTINGS not in coordinate_reads(_graph(lax))

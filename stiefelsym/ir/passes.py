@@ -55,10 +55,7 @@ class _Sides:
         if a == b:
             return
         ta, tb = self.atom[a], self.atom[b]
-        pa, pb = self.parts[a], self.parts[b]
-        if (len(pa) > 1 and len(pb) > 1 and (len(pa) != len(pb)
-                                              or any(self.find(x) != self.find(y) for x, y in zip(pa, pb)))) \
-                or (len(pa) > 1 and not pb and tb in ("n", "r")) or (len(pb) > 1 and not pa and ta in ("n", "r")):
+        if (len(self.parts[a]) > 1 or len(self.parts[b]) > 1) and not self.alike(a, b):
             self.splits.append((a, b))
         if ta == "opaque" or tb == "opaque":
             # joined with an engine value's side: a variable may now be anything (an atom stays itself)
@@ -75,6 +72,32 @@ class _Sides:
         self.parent[b] = a
         self.atom[a] = atom
         self.parts[a] = self.parts[a] or self.parts[b]
+
+    def _single(self, x: int) -> int:
+        x = self.find(x)
+        while len(self.parts[x]) == 1:
+            x = self.find(self.parts[x][0])
+        return x
+
+    def alike(self, a: int, b: int, depth: int = 0) -> bool:
+        """Whether two sides may be joined without taking one splitting into blocks for another: the same
+        side, an engine value's side (it may be anything), a side not yet known (it takes the other's
+        splitting), sums of alike parts, or two atoms of one kind (a sum joined to ℝⁿ or ℝʳ, a side not
+        yet known paired with another part inside a sum, or ℝⁿ with ℝʳ, is not)."""
+        a, b = self._single(a), self._single(b)
+        if a == b or depth > 32:
+            return True
+        ta, tb = self.atom[a], self.atom[b]
+        if ta == "opaque" or tb == "opaque":
+            return True
+        pa, pb = self.parts[a], self.parts[b]
+        if (ta is None and not pa) or (tb is None and not pb):
+            # a side not yet known (sized by plain ints, a matrix of given entries) takes the other's
+            # splitting; inside a sum its size is not known to match the part it is paired with
+            return depth == 0
+        if pa or pb:
+            return len(pa) == len(pb) and all(self.alike(x, y, depth + 1) for x, y in zip(pa, pb))
+        return ta == tb
 
     def involves_n(self, x: int, seen: frozenset = frozenset()) -> bool:
         x = self.find(x)
@@ -287,6 +310,8 @@ COORDINATE_STEPS = frozenset({"stiefelsym.systems.real_coordinates", "stiefelsym
 
 #: the read of a block matrix used as a matrix on ℝⁿ (see :func:`coordinate_reads`)
 BLOCK_SPLITTING = "a block splitting of R^n"
+#: the read of a space split into blocks in two different ways (see :func:`coordinate_reads`)
+TWO_SPLITTINGS = "a space split into blocks in two ways"
 
 
 def coordinate_reads(g: Graph) -> dict[str, frozenset]:
@@ -296,7 +321,9 @@ def coordinate_reads(g: Graph) -> dict[str, frozenset]:
     * an entry or a block of a matrix with a side on ℝⁿ (or on an engine value's side);
     * a matrix of given entries (``s.mat``) with a side on ℝⁿ: not a multiple of I (a matrix of
       fresh parameters, ``s.general_params``, is generic and moves with O(n));
-    * a block matrix used as a matrix on ℝⁿ (a splitting of ℝⁿ into coordinate blocks).
+    * a block matrix used as a matrix on ℝⁿ (a splitting of ℝⁿ into coordinate blocks);
+    * a side split into blocks in two different ways, or ℝⁿ (ℝʳ) joined to a sum of pieces (ℝⁿ ⊕ ℝʳ taken
+      for ℝʳ ⊕ ℝⁿ: [X; 0]ᵀ[I_r; 0] is the top r × r block of X).
     Entries of ℝʳ-sided matrices are recorded too (for charts that also reduce by O(r))."""
     cached = g.cache.get("reads")
     if cached is not None:
@@ -339,6 +366,14 @@ def coordinate_reads(g: Graph) -> dict[str, frozenset]:
         elif op == "block" and sides[i]:
             if any(S.atom[S.find(x)] in ("n", "opaque") for x in sides[i]):
                 add(BLOCK_SPLITTING, {"n"})
+    # a side split into blocks in two ways (ℝⁿ ⊕ ℝʳ taken for ℝʳ ⊕ ℝⁿ: [X; 0]ᵀ[I_r; 0] is the top r x r block
+    # of X, with no block that has a side on ℝⁿ alone), or ℝⁿ / ℝʳ itself taken for a sum of pieces
+    for pair in S.splits:
+        inv = {"n"} if any(S.involves_n(x) for x in pair) else set()
+        if any(_involves_r(S, x) for x in pair):
+            inv.add("r")
+        if inv:
+            add(TWO_SPLITTINGS, inv)
     g.cache["reads"] = reads
     return reads
 

@@ -77,3 +77,43 @@ def trace_method_slice(s):
     E = s.In[:, 0:2]
     J = s.mat([[q0, q1], [-q1, q0]])
     return {"tr(X^T E J)": (s.X.T @ E @ J).trace()}
+
+
+def _top_rows(s, M):
+    """The top r x r block of an n x r matrix M as [M; 0]ᵀ[I_r; 0] taken at R^n + R^r = R^r + R^n (typed blocks
+    with symbolic sizes, no block with a side on R^n alone, no entry, no matrix of given entries)."""
+    return (block([[M], [s.zeros(s.r, s.r)]]).T @ block([[s.Ir], [s.zeros(s.n, s.r)]])).T
+
+
+@claim("adv-s39-two-splittings-identity", paper="adv", kind="id", sizes=N34)
+def two_splittings_identity(s):
+    """False: X1 = I_r (true at the equivariant chart's point X = X0 only)."""
+    return {"X1 - I_r": _top_rows(s, s.X) - s.Ir}
+
+
+@claim("adv-s39-two-splittings-symmetric", paper="adv", kind="id", sizes=N34)
+def two_splittings_symmetric(s):
+    """False: X1 = X1ᵀ."""
+    X1 = _top_rows(s, s.X)
+    return {"X1 - X1^T": X1 - X1.T}
+
+
+@claim("adv-s39-two-splittings-p-skew", paper="adv", kind="id", sizes=N34)
+def two_splittings_p_skew(s):
+    """False: P1 + P1ᵀ = 0, P1 the top r x r block of P (P = (W; Z), W skew, on the equivariant chart)."""
+    P1 = _top_rows(s, s.P)
+    return {"P1 + P1^T": P1 + P1.T}
+
+
+@claim("adv-s39-two-splittings-first-columns", paper="adv", kind="id", sizes=N34)
+def two_splittings_first_columns(s):
+    """False: X1 = X1ᵀ with X1 = Eᵀ X, E = [I_n; 0]ᵀ[I_r; 0] the first r columns of I_n."""
+    E = block([[s.In], [s.zeros(s.r, s.n)]]).T @ block([[s.Ir], [s.zeros(s.n, s.r)]])
+    X1 = E.T @ s.X
+    return {"X1 - X1^T": X1 - X1.T}
+
+
+@claim("adv-s39-two-splittings-true", paper="adv", kind="id", sizes=N34)
+def two_splittings_true(s):
+    """True: the two readings of the top r x r block agree, [X; 0]ᵀ[I_r; 0] transposed and (rows 0..r-1 of I_n) X."""
+    return {"X1 - X1'": _top_rows(s, s.X) - s.In[0:s.r, :] @ s.X}

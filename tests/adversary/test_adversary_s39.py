@@ -8,8 +8,10 @@ from adversary_cli import PASSING
 
 SPLITS = "s39_right_chart_splits.py"
 SPLITS_FALSE = ("adv-s39-block-columns", "adv-s39-rows-of-In", "adv-s39-rows-of-In-eta", "adv-s39-trace-given-columns",
-                "adv-s39-killing-given-columns", "adv-s39-trace-method-slice")
-SPLITS_TRUE = ("adv-s39-block-columns-true", "adv-s39-rows-of-In-true")
+                "adv-s39-killing-given-columns", "adv-s39-trace-method-slice", "adv-s39-two-splittings-identity",
+                "adv-s39-two-splittings-symmetric", "adv-s39-two-splittings-p-skew",
+                "adv-s39-two-splittings-first-columns")
+SPLITS_TRUE = ("adv-s39-block-columns-true", "adv-s39-rows-of-In-true", "adv-s39-two-splittings-true")
 
 
 def test_reads_of_r_the_right_chart_pass_missed_are_refuted_exactly():
