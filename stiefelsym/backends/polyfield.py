@@ -344,16 +344,32 @@ class PolyRing:
         variables' order of first use, which depends on what the process computed before)."""
         return self._terms_text(self._terms(p))
 
-    def _terms(self, p) -> list:
+    def _terms(self, p, least: int | None = None) -> list:
         """The terms of p as (monomial, coefficient), a monomial a tuple of (name, exponent) in the
         natural order of the variables' names; the terms in degree-lexicographic order of the
-        monomials, highest first (the order depends on the names only)."""
+        monomials, highest first (the order depends on the names only).
+
+        ``least``: only the first terms of that order, at least ``least`` of them (or all).  Both orders
+        put a higher total degree first, and flint keeps the terms in its own (degrevlex) order, so the
+        terms of the highest total degrees are read off its first terms, each degree whole, and sorted:
+        the first terms of the whole sorted list, without converting or sorting the others."""
         names = [str(x) for x in self.syms]
-        out = []
-        for exps, c in p.terms():
-            mono = tuple(sorted(((names[i], int(e)) for i, e in enumerate(exps) if e),
-                                key=lambda t: _name_key(t[0])))
-            out.append((mono, c))
+
+        def mono(exps) -> tuple:
+            return tuple(sorted(((names[i], int(e)) for i, e in enumerate(exps) if e), key=lambda t: _name_key(t[0])))
+        if least is not None and len(p) > least and p.context().ordering() == flint.Ordering.degrevlex:
+            out = []
+            last = None
+            for k in range(len(p)):
+                exps = p.monomial(k)
+                degree = sum(exps)
+                if len(out) >= least and degree != last:
+                    break     # every term of the degrees read is in out: they come first in either order
+                out.append((mono(exps), p.coefficient(k)))
+                last = degree
+            out.sort(key=_term_key)
+            return out
+        out = [(mono(exps), c) for exps, c in p.terms()]
         out.sort(key=_term_key)
         return out
 
@@ -375,12 +391,17 @@ class PolyRing:
             out.append(("- " if neg else "+ ") + t if out else ("-" if neg else "") + t)
         return " ".join(out)
 
-    def text(self, r) -> str:
+    def text(self, r, width: int | None = None) -> str:
         """A rational function (numerator, denominator atoms) as text in a canonical order: the terms of
         each polynomial as :meth:`poly_text` orders them, each factor of the denominator with a positive
-        leading coefficient in that order (its sign moved to the numerator), the factors sorted by text."""
+        leading coefficient in that order (its sign moved to the numerator), the factors sorted by text.
+
+        ``width``: a text cut short is all that is wanted; the text returned is then a prefix of the whole
+        text, of at least ``width`` characters (or the whole text): its numerator's first ``width`` terms
+        only (each term is at least one character), whatever the size of the numerator."""
         n, d = self.rf_reduce(r)
-        num = self._terms(n)
+        num = self._terms(n, width)
+        cut = len(num) < len(n)
         if not d:
             return self._terms_text(num)
         flip = False
@@ -395,6 +416,8 @@ class PolyRing:
             num = [(m, -c) for m, c in num]
         den = "*".join(f"({t})" + (f"**{e}" if e > 1 else "") for t, e in sorted(dens))
         text = self._terms_text(num)
+        if cut:
+            return f"({text}"     # a prefix of the whole text: the numerator goes on, then the denominator
         return f"({text})/({den})" if len(num) > 1 else f"{text}/({den})"
 
     def atom_se(self, k: int):
