@@ -617,3 +617,25 @@ def test_the_exact_method_prints_the_same_refuted_residual_with_its_text_cut_sho
     whole = run_exact(claim, 3, 2, 0)
     assert cut.verdict == whole.verdict == "fails"
     assert cut.residual == whole.residual and cut.residual.endswith("..."), (cut.residual, whole.residual)
+
+
+def _terms_by_keys(R, p) -> list:
+    """PolyRing._terms as first written (every term's monomial sorted by the names' keys, the terms by
+    _term_key): the reference the ranked keys must reproduce."""
+    from stiefelsym.backends.polyfield import _name_key, _term_key
+    names = [str(x) for x in R.syms]
+    out = [(tuple(sorted(((names[i], int(e)) for i, e in enumerate(exps) if e), key=lambda t: _name_key(t[0]))), c)
+           for exps, c in p.terms()]
+    out.sort(key=_term_key)
+    return out
+
+
+def test_the_terms_in_their_printed_order_are_those_of_the_names_keys():
+    """The terms' order computed from the variables' ranks is the order of _term_key on the names (natural
+    order: x_2 before x_10, x_10 before x_11 and x_20), term by term, on long numerators."""
+    from stiefelsym.backends.polyfield import PolyRing
+    R = PolyRing()
+    for expr in _large_rational_functions(6):
+        n = R.rf_reduce(R.from_se(expr))[0]
+        assert R._terms(n) == _terms_by_keys(R, n)
+        assert R._terms(n, 50) == _terms_by_keys(R, n)[:len(R._terms(n, 50))]

@@ -349,28 +349,44 @@ class PolyRing:
         natural order of the variables' names; the terms in degree-lexicographic order of the
         monomials, highest first (the order depends on the names only).
 
-        ``least``: only the first terms of that order, at least ``least`` of them (or all).  Both orders
-        put a higher total degree first, and flint keeps the terms in its own (degrevlex) order, so the
-        terms of the highest total degrees are read off its first terms, each degree whole, and sorted:
-        the first terms of the whole sorted list, without converting or sorting the others."""
+        ``least``: only the first ``least`` terms of that order (or all), without converting or sorting the
+        others."""
         names = [str(x) for x in self.syms]
+        # the variables in the natural order of their names, each with its rank there (equal names' keys,
+        # equal ranks): a term's place in the order, (-degree, ((rank, -exponent), ...)), compares as
+        # _term_key does, without a name's key per variable of every term
+        keys = [_name_key(nm) for nm in names]
+        order = sorted(range(len(names)), key=keys.__getitem__)
+        rank = {}
+        for i in order:
+            rank.setdefault(keys[i], len(rank))
+        ranks = [(i, rank[keys[i]]) for i in order]
 
-        def mono(exps) -> tuple:
-            return tuple(sorted(((names[i], int(e)) for i, e in enumerate(exps) if e), key=lambda t: _name_key(t[0])))
-        if least is not None and len(p) > least and p.context().ordering() == flint.Ordering.degrevlex:
-            out = []
-            last = None
-            for k in range(len(p)):
-                exps = p.monomial(k)
-                degree = sum(exps)
-                if len(out) >= least and degree != last:
-                    break     # every term of the degrees read is in out: they come first in either order
-                out.append((mono(exps), p.coefficient(k)))
-                last = degree
-            out.sort(key=_term_key)
-            return out
-        out = [(mono(exps), c) for exps, c in p.terms()]
-        out.sort(key=_term_key)
+        def term(exps, c) -> tuple:
+            present = [(i, k, int(exps[i])) for i, k in ranks if exps[i]]
+            return ((-sum(e for _, _, e in present), tuple((k, -e) for _, k, e in present)),
+                    (tuple((names[i], e) for i, _, e in present), c))
+        if least is not None and len(p) > least and len(rank) == len(names):
+            # the printed order is flint's deglex with the variables in the order of their names: p is
+            # carried there by flint (a renaming of its variables, in native code) and its first terms read
+            return self._first_terms(p, least, [names[i] for i in order], order)
+        out = [term(exps, c) for exps, c in p.terms()]
+        out.sort(key=lambda t: t[0])
+        return [t[1] for t in out]
+
+    @staticmethod
+    def _first_terms(p, least: int, ordered: list, order: list) -> list:
+        """The first ``least`` terms of p in the printed order (:meth:`_terms`), ``ordered`` its variables'
+        names in their natural order (distinct keys), ``order`` their places in p's context."""
+        k = len(ordered)
+        ctx = flint.fmpq_mpoly_ctx.get(tuple(f"v{j}" for j in range(k)), "deglex")
+        gens = ctx.gens()
+        place = {i: j for j, i in enumerate(order)}
+        q = p.compose(*[gens[place.get(i, 0)] for i in range(p.context().nvars())], ctx=ctx)
+        out = []
+        for j in range(min(least, len(q))):
+            exps = q.monomial(j)
+            out.append((tuple((ordered[v], int(e)) for v, e in enumerate(exps) if e), q.coefficient(j)))
         return out
 
     @staticmethod
