@@ -594,6 +594,7 @@ def test_a_residual_cut_short_is_the_start_of_its_whole_text():
             part = R.text(r, width)
             assert whole.startswith(part) and len(part) >= min(width, len(whole)), (width, part[:80], whole[:80])
         assert _short(R.text(r, SHORT + 1)) == _short(whole)
+        assert whole.startswith(R.text(R.from_se(expr), SHORT + 1, reduced=True))   # as the exact method asks
         n = R.rf_reduce(r)[0]
         assert len(n) > SHORT + 1        # the numerators are long: the prefix is what is exercised
         names = [str(x) for x in R.syms]
@@ -613,7 +614,7 @@ def test_the_exact_method_prints_the_same_refuted_residual_with_its_text_cut_sho
                       s.X.T @ s.A @ s.X + s.P.T @ s.A @ s.P) @ (s.X.T @ s.A @ s.X + s.P.T @ s.A @ s.P)})
     cut = run_exact(claim, 3, 2, 0)
     real = PolyRing.text
-    monkeypatch.setattr(PolyRing, "text", lambda self, r, width=None: real(self, r))
+    monkeypatch.setattr(PolyRing, "text", lambda self, r, width=None, reduced=False: real(self, r))
     whole = run_exact(claim, 3, 2, 0)
     assert cut.verdict == whole.verdict == "fails"
     assert cut.residual == whole.residual and cut.residual.endswith("..."), (cut.residual, whole.residual)

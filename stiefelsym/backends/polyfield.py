@@ -407,15 +407,16 @@ class PolyRing:
             out.append(("- " if neg else "+ ") + t if out else ("-" if neg else "") + t)
         return " ".join(out)
 
-    def text(self, r, width: int | None = None) -> str:
+    def text(self, r, width: int | None = None, reduced: bool = False) -> str:
         """A rational function (numerator, denominator atoms) as text in a canonical order: the terms of
         each polynomial as :meth:`poly_text` orders them, each factor of the denominator with a positive
         leading coefficient in that order (its sign moved to the numerator), the factors sorted by text.
 
         ``width``: a text cut short is all that is wanted; the text returned is then a prefix of the whole
         text, of at least ``width`` characters (or the whole text): its numerator's first ``width`` terms
-        only (each term is at least one character), whatever the size of the numerator."""
-        n, d = self.rf_reduce(r)
+        only (each term is at least one character), whatever the size of the numerator.  ``reduced``: r is
+        reduced already (:meth:`from_se`), and is not reduced again."""
+        n, d = r if reduced else self.rf_reduce(r)
         num = self._terms(n, width)
         cut = len(num) < len(n)
         if not d:

@@ -1187,7 +1187,7 @@ def _exact_text(field: Any, x: Any, width: int | None = None) -> str:
     if ring is not None:
         from stiefelsym.backends.polyfield import NotRational
         try:
-            return ring.text(ring.from_se(x), width)
+            return ring.text(ring.from_se(x), width, reduced=True)
         except NotRational:
             pass
     return str(x)
