@@ -200,6 +200,41 @@ def test_the_verifying_process_imports_the_whole_package_before_the_fork():
     assert out.stdout.strip() == "True", out.stderr[-800:]
 
 
+@pytest.mark.parametrize("mode", ["spawn", "namespaces"])
+def test_the_whole_package_is_imported_before_an_interpreter_without_namespaces(tmp_path, mode):
+    """Without namespaces the file writes with the user's rights: the verifying process has imported the whole
+    package before that interpreter is spawned.  In namespaces it writes nowhere on the host (the edit of the test
+    above fails there), so the package is not imported first; the digests are taken before it either way."""
+    if mode == "namespaces" and not namespaces_available():
+        pytest.skip("no user + pid + mount namespaces here (unshare)")
+    path = tmp_path / "honest.py"
+    path.write_text(CLAIM)
+    code = textwrap.dedent(f'''
+        import sys
+        import stiefelsym.run.sandbox as sandbox
+        import stiefelsym.run.userfile as userfile
+        seen, digests, real_spawn, real_digests = [], [], sandbox._spawn, userfile._digests
+        def spawn(config, capture, seconds, unshare, requests=b""):
+            seen.append((unshare is not None, "stiefelsym.analyses.speed" in sys.modules, len(digests)))
+            return real_spawn(config, capture, seconds, unshare, requests)
+        def counted():
+            digests.append(1)
+            return real_digests()
+        sandbox._spawn, userfile._digests = spawn, counted
+        (c,) = userfile.load_claims_isolated({str(path)!r}, [(3, 2)])
+        print(c.func.confinement, seen)
+    ''')
+    env = dict(os.environ, PYTHONPATH=str(Path(__file__).resolve().parents[1]))
+    env.pop("STIEFELSYM_CONFINE", None)
+    if mode == "spawn":
+        env["STIEFELSYM_CONFINE"] = "spawn"
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120, env=env)
+    # (namespaces: one interpreter, the package not imported, the digests taken once before it; spawn: the
+    # package imported and the digests taken again after the import, which may write byte code)
+    expected = "namespaces [(True, False, 1)]" if mode == "namespaces" else "spawn [(False, True, 2)]"
+    assert out.stdout.strip() == expected, out.stderr[-800:]
+
+
 def test_path_modules_sees_a_module_put_before_a_library(tmp_path):
     """A top-level module, byte code, extension, .pth file or package __init__ added to (or changed in) a directory
     of the import path is a change; a plain folder (a namespace portion, which never shadows a module found later

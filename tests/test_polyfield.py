@@ -560,3 +560,83 @@ def test_flint_scalars_cannot_be_steered(method):
     for f in (div_zero, lam_left, entry_power):
         c = Claim(id=f"rf-{f.__name__}", paper=(), kind="id", section="test", func=f, sizes=admissible(4))
         assert run_one(c, Size(3, 2), method, 0).verdict not in PASSING, f.__name__
+
+
+def _large_rational_functions(count: int = 12):
+    """Random rational functions whose numerators have hundreds of terms over 6 variables (many terms of
+    each total degree, so that flint's own order and the printed order differ within a degree)."""
+    rng = random.Random(23)
+    xs = [se.Symbol(f"x_{i}") for i in (1, 2, 10, 11, 3, 20)]
+    out = []
+    for _ in range(count):
+        def linear():
+            return sum(rng.randint(-4, 4) * x for x in xs) + rng.randint(-3, 3)
+        num = se.expand(linear() * linear() * linear() * linear() + rng.randint(-5, 5) * xs[0] ** 5)
+        den = linear() * linear() if rng.random() < 0.5 else se.Integer(1)
+        out.append(num / den if den != 0 else num)
+    return out
+
+
+def test_a_residual_cut_short_is_the_start_of_its_whole_text():
+    """The exact method prints a refuted residual cut to its first characters (fixed_size._short); its text
+    asked for that width (PolyRing.text(r, width): the numerator's first terms only, each total degree read
+    whole from flint's degrevlex order and sorted) is a prefix of the whole text, at least that long, so the
+    printed residual is the same.  Negative control: the first terms in flint's own order, sorted without
+    finishing their degree, print another residual."""
+    from stiefelsym.backends.polyfield import PolyRing, _name_key, _term_key
+    from stiefelsym.methods.fixed_size import SHORT, _short
+    R = PolyRing()
+    naive_differs = 0
+    for expr in _large_rational_functions():
+        r = R.from_se(expr)
+        whole = R.text(r)
+        for width in (1, 20, SHORT + 1, 1000):
+            part = R.text(r, width)
+            assert whole.startswith(part) and len(part) >= min(width, len(whole)), (width, part[:80], whole[:80])
+        assert _short(R.text(r, SHORT + 1)) == _short(whole)
+        assert whole.startswith(R.text(R.from_se(expr), SHORT + 1, reduced=True))   # as the exact method asks
+        n = R.rf_reduce(r)[0]
+        assert len(n) > SHORT + 1        # the numerators are long: the prefix is what is exercised
+        names = [str(x) for x in R.syms]
+        naive = sorted(((tuple(sorted(((names[i], int(e)) for i, e in enumerate(n.monomial(k)) if e),
+                                      key=lambda t: _name_key(t[0]))), n.coefficient(k)) for k in range(SHORT + 1)),
+                       key=_term_key)
+        naive_differs += not whole.lstrip("(").startswith(R._terms_text(naive))
+    assert naive_differs > 0
+
+
+def test_the_exact_method_prints_the_same_refuted_residual_with_its_text_cut_short(monkeypatch):
+    """A refuted claim whose residual has hundreds of terms: the exact method's printed residual is the one
+    of the whole text cut short."""
+    from stiefelsym.backends.polyfield import PolyRing
+    claim = Claim(id="long-residual", paper=("test",), kind="id", section="test", sizes=admissible(n_max=3),
+                  func=lambda s: {"(XᵀAX + PᵀAP)^3": (s.X.T @ s.A @ s.X + s.P.T @ s.A @ s.P) @ (
+                      s.X.T @ s.A @ s.X + s.P.T @ s.A @ s.P) @ (s.X.T @ s.A @ s.X + s.P.T @ s.A @ s.P)})
+    cut = run_exact(claim, 3, 2, 0)
+    real = PolyRing.text
+    monkeypatch.setattr(PolyRing, "text", lambda self, r, width=None, reduced=False: real(self, r))
+    whole = run_exact(claim, 3, 2, 0)
+    assert cut.verdict == whole.verdict == "fails"
+    assert cut.residual == whole.residual and cut.residual.endswith("..."), (cut.residual, whole.residual)
+
+
+def _terms_by_keys(R, p) -> list:
+    """PolyRing._terms as first written (every term's monomial sorted by the names' keys, the terms by
+    _term_key): the reference the ranked keys must reproduce."""
+    from stiefelsym.backends.polyfield import _name_key, _term_key
+    names = [str(x) for x in R.syms]
+    out = [(tuple(sorted(((names[i], int(e)) for i, e in enumerate(exps) if e), key=lambda t: _name_key(t[0]))), c)
+           for exps, c in p.terms()]
+    out.sort(key=_term_key)
+    return out
+
+
+def test_the_terms_in_their_printed_order_are_those_of_the_names_keys():
+    """The terms' order computed from the variables' ranks is the order of _term_key on the names (natural
+    order: x_2 before x_10, x_10 before x_11 and x_20), term by term, on long numerators."""
+    from stiefelsym.backends.polyfield import PolyRing
+    R = PolyRing()
+    for expr in _large_rational_functions(6):
+        n = R.rf_reduce(R.from_se(expr))[0]
+        assert R._terms(n) == _terms_by_keys(R, n)
+        assert R._terms(n, 50) == _terms_by_keys(R, n)[:len(R._terms(n, 50))]

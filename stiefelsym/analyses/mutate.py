@@ -139,6 +139,9 @@ class Mutant:
     #: what changed in the paper's notation (:func:`notation`): one dict per change (where, old, new
     #: and their LaTeX); filled in for the corrections :func:`search_corrections` returns
     notation: tuple = ()
+    #: called before the mutant runs (a mutant of a graph: its graphs as traced when it was made are handed
+    #: to the compilation of ``func`` as first traces, :meth:`stiefelsym.ir.mutants.GraphMutant.traced`)
+    prepare: Callable[[], None] | None = field(default=None, repr=False, compare=False)
 
     @property
     def text(self) -> str:
@@ -671,11 +674,11 @@ def _graph_mutants(claim: Claim, sizes: Sequence[Size] | None = None,
                 # no node is the same node at every size, and no site says which are one expression:
                 # each node of each size's graph is changed on its own
                 made = per_size_mutants(graphs, constraints, census)
-        return [_as_mutant(gm, functools.partial(_sized_left_sides, gm, constraints)) for gm in made], "", \
-            ON_GRAPHS_PER_SIZE
+        return [_as_mutant(gm, functools.partial(_sized_left_sides, gm, constraints), constraints) for gm in made], \
+            "", ON_GRAPHS_PER_SIZE
     sited = _sited(claim.func, {None: g}, constraints)
     made = site_mutants(sited, constraints, census) if sited is not None else on_graph(g, constraints, census)
-    return [_as_mutant(gm, functools.partial(_graph_left_sides, gm.graph)) for gm in made], "", ON_GRAPH
+    return [_as_mutant(gm, functools.partial(_graph_left_sides, gm.graph), constraints) for gm in made], "", ON_GRAPH
 
 
 def _sited(func: Callable, graphs: dict, constraints: tuple) -> dict | None:
@@ -694,12 +697,14 @@ def _sited(func: Callable, graphs: dict, constraints: tuple) -> dict | None:
     return out if any(x is not None for m in out.values() for x in m.sites or ()) else None
 
 
-def _as_mutant(gm: Any, left: Callable) -> Mutant:
+def _as_mutant(gm: Any, left: Callable, constraints: tuple) -> Mutant:
     site = gm.site
-    return Mutant(description=gm.description(), lineno=site.line if site is not None else 0, func=gm.func,
+    func = gm.func
+    return Mutant(description=gm.description(), lineno=site.line if site is not None else 0, func=func,
                   operator=gm.operator, index=gm.index, source=site.text() if site is not None else f"%{gm.node}",
                   left=left,
-                  notation=tuple(c.to_json() for c in gm.changes))
+                  notation=tuple(c.to_json() for c in gm.changes),
+                  prepare=functools.partial(gm.traced, func, constraints))
 
 
 def _sized_left_sides(gm: Any, constraints: tuple) -> Callable | None:
@@ -1470,6 +1475,8 @@ def _claim_task(ci: int) -> _ClaimRun:
     where = notation_size(s for s, _ in plan)
     try:
         for m in _select(muts, _WORK["limit"], _WORK["only"]):
+            if m.prepare is not None:
+                m.prepare()
             o = MutantOutcome(claim.id, m.index, m.description, (m.lineno or None) if on_graphs else m.lineno, m.operator,
                               m.source, _run_cells(claim, plan, seed, m.func, m.description),
                               notation=list(m.notation) if on_graphs else notation(claim, m, where))
@@ -1552,6 +1559,8 @@ def search_corrections(claim: Claim, sizes: Sequence[Size] | None = None,
         for m in pool:
             if minimal and m.operator == "sign2" and any(f.operator != "sign2" for f in found):
                 break
+            if m.prepare is not None:
+                m.prepare()
             ok = bool(plan) and all(passes(m, s, meth) for s, meth in plan) and not vacuous(m)
             if ok:
                 if not m.notation:          # (a mutant of the graph carries its change already)

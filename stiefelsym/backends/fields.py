@@ -787,6 +787,36 @@ def _is_matrix(o) -> bool:
     return getattr(o, "__array_priority__", 0) >= 1000
 
 
+#: the number types that wrap a value of another field, by the attribute holding it (Dual: a; the
+#: reverse and degree-paired numbers register theirs): a derivative taken inside a function whose
+#: derivative is taken evaluates numbers of a field over a field over the point's field, and a value
+#: the function captured from an outer scene is a number of a lower field of that tower
+LAYERED: dict[type, str] = {}
+
+
+def tower_level(x: Any) -> int:
+    """How many layers of engine numbers (dual, reverse, degree-paired) wrap a value of a point's field (a
+    dual number by the higher of its two parts: one of them may be a plain 0)."""
+    n = 0
+    while True:
+        t = type(x)
+        if t is Dual:
+            return n + 1 + max(tower_level(x.a), tower_level(x.b))
+        attr = LAYERED.get(t)
+        if attr is None:
+            return n
+        x = getattr(x, attr)
+        n += 1
+
+
+def _above(o: Any, x: Any) -> bool:
+    """Whether o is a number of a field built over x's (a layered number of a higher level): the
+    operation is o's, with x a constant of its base (a dual number of plain Python numbers is no layer's)."""
+    if type(o) not in LAYERED or type(o) is Dual and all(type(p) in (int, Fraction) for p in (o.a, o.b)):
+        return False
+    return tower_level(o) > tower_level(x)
+
+
 class Dual:
     """a + b·ε with ε² = 0: forward-mode derivative over any field."""
 
@@ -799,9 +829,12 @@ class Dual:
         self.a, self.b = a, b
 
     def __add__(self, o):
-        if isinstance(o, Dual):
-            return Dual(self.a + o.a, self.b + o.b)
-        if _is_matrix(o):
+        if type(o) is Dual:
+            if _same_level(self, o):
+                return Dual(self.a + o.a, self.b + o.b)
+            if tower_level(o) > tower_level(self):
+                return o.__add__(self)       # this number is a constant of o's base
+        elif _is_matrix(o) or _above(o, self):
             return NotImplemented
         return Dual(self.a + o, self.b)
 
@@ -811,9 +844,12 @@ class Dual:
         return Dual(-self.a, -self.b)
 
     def __sub__(self, o):
-        if isinstance(o, Dual):
-            return Dual(self.a - o.a, self.b - o.b)
-        if _is_matrix(o):
+        if type(o) is Dual:
+            if _same_level(self, o):
+                return Dual(self.a - o.a, self.b - o.b)
+            if tower_level(o) > tower_level(self):
+                return o.__rsub__(self)       # this number is a constant of o's base
+        elif _is_matrix(o) or _above(o, self):
             return NotImplemented
         return Dual(self.a - o, self.b)
 
@@ -821,19 +857,25 @@ class Dual:
         return Dual(o - self.a, -self.b)
 
     def __mul__(self, o):
-        if isinstance(o, Dual):
-            return Dual(self.a * o.a, self.a * o.b + self.b * o.a)
-        if _is_matrix(o):
+        if type(o) is Dual:
+            if _same_level(self, o):
+                return Dual(self.a * o.a, self.a * o.b + self.b * o.a)
+            if tower_level(o) > tower_level(self):
+                return o.__mul__(self)       # this number is a constant of o's base
+        elif _is_matrix(o) or _above(o, self):
             return NotImplemented
         return Dual(self.a * o, self.b * o)
 
     __rmul__ = __mul__
 
     def __truediv__(self, o):
-        if isinstance(o, Dual):
-            q = self.a / o.a
-            return Dual(q, (self.b - q * o.b) / o.a)
-        if _is_matrix(o):
+        if type(o) is Dual:
+            if _same_level(self, o):
+                q = self.a / o.a
+                return Dual(q, (self.b - q * o.b) / o.a)
+            if tower_level(o) > tower_level(self):
+                return o.__rtruediv__(self)
+        elif _is_matrix(o) or _above(o, self):
             return NotImplemented
         return Dual(self.a / o, self.b / o)
 
@@ -843,6 +885,23 @@ class Dual:
 
     def __repr__(self):
         return f"Dual({self.a!r}, {self.b!r})"
+
+
+LAYERED[Dual] = "a"
+
+
+_PLAIN = (int, Fraction)
+
+
+def _same_level(x: Dual, o: Dual) -> bool:
+    """Two dual numbers of one field (the common case: no part is layered); a dual number of a lower field
+    is a constant of the higher one's base (a value a function captured).  A dual number made of plain
+    Python numbers only fits any layer (as before layers were told apart)."""
+    if not (type(x.a) in LAYERED or type(x.b) in LAYERED or type(o.a) in LAYERED or type(o.b) in LAYERED):
+        return True
+    if all(type(p) in _PLAIN for p in (x.a, x.b)) or all(type(p) in _PLAIN for p in (o.a, o.b)):
+        return True
+    return tower_level(x) == tower_level(o)
 
 
 class DualField(Field):

@@ -474,6 +474,38 @@ class Mat:
         m._coords = self._coords or (other is not None and other._coords)
         return m
 
+    def _raised(self, o: "Mat") -> "Mat | None":
+        """This matrix as one of o's field, where o's field is built over this one's (dual or reverse
+        numbers over it, perhaps several layers: a matrix a function captured from an outer scene, met by
+        the numbers of the scene the function is evaluated on, inside a derivative or a bracket taken
+        inside another); None otherwise."""
+        chain = []
+        f = o._field
+        while f is not None and f is not self._field:
+            chain.append(f)
+            f = getattr(f, "base", None)
+        if f is None or not chain:
+            return None
+        a = np.empty(self._shape(), dtype=object)
+        for idx, x in np.ndenumerate(self._view()):
+            for F in reversed(chain):
+                x = F.lift(x)
+            a[idx] = x
+        m = self._derived(a, None, None, o)
+        m._field = o._field
+        return m
+
+    def _common(self, o: "Mat") -> "tuple[Mat, Mat]":
+        """Both operands over one field where one's field is built over the other's (else as they are)."""
+        if o._field is not self._field:
+            up = self._raised(o)
+            if up is not None:
+                return up, o
+            down = o._raised(self)
+            if down is not None:
+                return self, down
+        return self, o
+
     def _new(self, a, tags=None, other: "Mat | None" = None) -> "Mat":
         return self._derived(a, None, tags, other)
 
@@ -552,6 +584,10 @@ class Mat:
                 return self._derived(None, be.add(a, b), tags, o)
         if not isinstance(o, Mat):
             return NotImplemented
+        if o._field is not self._field:
+            x, y = self._common(o)
+            if x is not self or y is not o:
+                return x.__add__(y)
         tags = self._sum_tags(o, "a sum")
         nat = self._native_pair(o)
         if nat is not None:
@@ -567,6 +603,10 @@ class Mat:
                 return self._derived(None, be.sub(a, b), tags, o)
         if not isinstance(o, Mat):
             return NotImplemented
+        if o._field is not self._field:
+            x, y = self._common(o)
+            if x is not self or y is not o:
+                return x.__sub__(y)
         tags = self._sum_tags(o, "a difference")
         nat = self._native_pair(o)
         if nat is not None:
@@ -593,6 +633,10 @@ class Mat:
             return self._derived(None, be.matmul(a, b), (self._tags[0], o._tags[1]), o)
         if not isinstance(o, Mat):
             return NotImplemented
+        if o._field is not self._field:
+            x, y = self._common(o)
+            if x is not self or y is not o:
+                return x @ y
         (m, k1), (k2, k) = self._shape(), o._shape()
         if k1 != k2:
             raise self._sizes_disagree(f"cannot multiply {(m, k1)} by {(k2, k)}")

@@ -19,7 +19,7 @@ from typing import Any
 
 import numpy as np
 
-from stiefelsym.backends.fields import Deg, DegreeField, Field, _is_matrix
+from stiefelsym.backends.fields import LAYERED, Deg, DegreeField, Field, _is_matrix
 from stiefelsym.backends.matrix import engine_number_type
 from stiefelsym.backends.native import Backend, DegMat, DegreeBackend, _times, backend
 
@@ -36,8 +36,8 @@ class Pair:
     def __add__(self, o):
         if type(o) is Pair:
             return Pair(self.v + o.v, self.d + o.d)
-        if _is_matrix(o):
-            return NotImplemented
+        if _is_matrix(o) or type(o) in LAYERED:
+            return NotImplemented    # a matrix, or a number of a field over the point's (dual, reverse)
         return Pair(self.v + o, self.d + o)
 
     __radd__ = __add__
@@ -48,8 +48,8 @@ class Pair:
     def __sub__(self, o):
         if type(o) is Pair:
             return Pair(self.v - o.v, self.d - o.d)
-        if _is_matrix(o):
-            return NotImplemented
+        if _is_matrix(o) or type(o) in LAYERED:
+            return NotImplemented    # a matrix, or a number of a field over the point's (dual, reverse)
         return Pair(self.v - o, self.d - o)
 
     def __rsub__(self, o):
@@ -58,8 +58,8 @@ class Pair:
     def __mul__(self, o):
         if type(o) is Pair:
             return Pair(self.v * o.v, self.d * o.d)
-        if _is_matrix(o):
-            return NotImplemented
+        if _is_matrix(o) or type(o) in LAYERED:
+            return NotImplemented    # a matrix, or a number of a field over the point's (dual, reverse)
         return Pair(self.v * o, self.d * o)
 
     __rmul__ = __mul__
@@ -67,8 +67,8 @@ class Pair:
     def __truediv__(self, o):
         if type(o) is Pair:
             return Pair(self.v / o.v, self.d / o.d)
-        if _is_matrix(o):
-            return NotImplemented
+        if _is_matrix(o) or type(o) in LAYERED:
+            return NotImplemented    # a matrix, or a number of a field over the point's (dual, reverse)
         return Pair(self.v / o, self.d / o)
 
     def __rtruediv__(self, o):
@@ -84,6 +84,9 @@ class Pair:
 
     def __repr__(self):
         return f"Pair({self.v!r}, {self.d!r})"
+
+
+LAYERED[Pair] = "v"
 
 
 class PairField(Field):

@@ -344,17 +344,49 @@ class PolyRing:
         variables' order of first use, which depends on what the process computed before)."""
         return self._terms_text(self._terms(p))
 
-    def _terms(self, p) -> list:
+    def _terms(self, p, least: int | None = None) -> list:
         """The terms of p as (monomial, coefficient), a monomial a tuple of (name, exponent) in the
         natural order of the variables' names; the terms in degree-lexicographic order of the
-        monomials, highest first (the order depends on the names only)."""
+        monomials, highest first (the order depends on the names only).
+
+        ``least``: only the first ``least`` terms of that order (or all), without converting or sorting the
+        others."""
         names = [str(x) for x in self.syms]
+        # the variables in the natural order of their names, each with its rank there (equal names' keys,
+        # equal ranks): a term's place in the order, (-degree, ((rank, -exponent), ...)), compares as
+        # _term_key does, without a name's key per variable of every term
+        keys = [_name_key(nm) for nm in names]
+        order = sorted(range(len(names)), key=keys.__getitem__)
+        rank = {}
+        for i in order:
+            rank.setdefault(keys[i], len(rank))
+        ranks = [(i, rank[keys[i]]) for i in order]
+
+        def term(exps, c) -> tuple:
+            present = [(i, k, int(exps[i])) for i, k in ranks if exps[i]]
+            return ((-sum(e for _, _, e in present), tuple((k, -e) for _, k, e in present)),
+                    (tuple((names[i], e) for i, _, e in present), c))
+        if least is not None and len(p) > least and len(rank) == len(names):
+            # the printed order is flint's deglex with the variables in the order of their names: p is
+            # carried there by flint (a renaming of its variables, in native code) and its first terms read
+            return self._first_terms(p, least, [names[i] for i in order], order)
+        out = [term(exps, c) for exps, c in p.terms()]
+        out.sort(key=lambda t: t[0])
+        return [t[1] for t in out]
+
+    @staticmethod
+    def _first_terms(p, least: int, ordered: list, order: list) -> list:
+        """The first ``least`` terms of p in the printed order (:meth:`_terms`), ``ordered`` its variables'
+        names in their natural order (distinct keys), ``order`` their places in p's context."""
+        k = len(ordered)
+        ctx = flint.fmpq_mpoly_ctx.get(tuple(f"v{j}" for j in range(k)), "deglex")
+        gens = ctx.gens()
+        place = {i: j for j, i in enumerate(order)}
+        q = p.compose(*[gens[place.get(i, 0)] for i in range(p.context().nvars())], ctx=ctx)
         out = []
-        for exps, c in p.terms():
-            mono = tuple(sorted(((names[i], int(e)) for i, e in enumerate(exps) if e),
-                                key=lambda t: _name_key(t[0])))
-            out.append((mono, c))
-        out.sort(key=_term_key)
+        for j in range(min(least, len(q))):
+            exps = q.monomial(j)
+            out.append((tuple((ordered[v], int(e)) for v, e in enumerate(exps) if e), q.coefficient(j)))
         return out
 
     @staticmethod
@@ -375,12 +407,18 @@ class PolyRing:
             out.append(("- " if neg else "+ ") + t if out else ("-" if neg else "") + t)
         return " ".join(out)
 
-    def text(self, r) -> str:
+    def text(self, r, width: int | None = None, reduced: bool = False) -> str:
         """A rational function (numerator, denominator atoms) as text in a canonical order: the terms of
         each polynomial as :meth:`poly_text` orders them, each factor of the denominator with a positive
-        leading coefficient in that order (its sign moved to the numerator), the factors sorted by text."""
-        n, d = self.rf_reduce(r)
-        num = self._terms(n)
+        leading coefficient in that order (its sign moved to the numerator), the factors sorted by text.
+
+        ``width``: a text cut short is all that is wanted; the text returned is then a prefix of the whole
+        text, of at least ``width`` characters (or the whole text): its numerator's first ``width`` terms
+        only (each term is at least one character), whatever the size of the numerator.  ``reduced``: r is
+        reduced already (:meth:`from_se`), and is not reduced again."""
+        n, d = r if reduced else self.rf_reduce(r)
+        num = self._terms(n, width)
+        cut = len(num) < len(n)
         if not d:
             return self._terms_text(num)
         flip = False
@@ -395,6 +433,8 @@ class PolyRing:
             num = [(m, -c) for m, c in num]
         den = "*".join(f"({t})" + (f"**{e}" if e > 1 else "") for t, e in sorted(dens))
         text = self._terms_text(num)
+        if cut:
+            return f"({text}"     # a prefix of the whole text: the numerator goes on, then the denominator
         return f"({text})/({den})" if len(num) > 1 else f"{text}/({den})"
 
     def atom_se(self, k: int):

@@ -19,7 +19,7 @@ from typing import Any, Callable
 
 import numpy as np
 
-from stiefelsym.backends.fields import Field
+from stiefelsym.backends.fields import LAYERED, Field, _above, tower_level
 from stiefelsym.backends.matrix import _ELEMENT_CHECKS, Mat, check_element, scalar_matrix
 from stiefelsym.backends.native import backend, register_backend
 
@@ -52,18 +52,19 @@ class Rev:
     def __init__(self, v: Any, node: Node | None = None) -> None:
         self.v, self.node = v, node
 
-    @staticmethod
-    def _of(o):
-        if isinstance(o, Rev):
+    def _of(self, o):
+        if type(o) is Rev and (type(o.v) not in LAYERED and type(self.v) not in LAYERED
+                               or tower_level(o) == tower_level(self)):
             return o
-        if isinstance(o, (int, Fraction)) or not _is_matrix(o):
-            return Rev(o)
-        return NotImplemented
+        if isinstance(o, (int, Fraction)) or not (_is_matrix(o) or _above(o, self)):
+            return Rev(o)       # a constant of this field's base (a lower layer's number included)
+        return NotImplemented   # a matrix, or a number of a field over this one: the operation is o's
 
     def __add__(self, o):
-        o = Rev._of(o)
-        if o is NotImplemented:
-            return o
+        x = self._of(o)
+        if x is NotImplemented:
+            return _reflected(o, self, "__radd__")
+        o = x
         return _scalar_op(self.v + o.v, [(self, lambda g: g), (o, lambda g: g)])
 
     __radd__ = __add__
@@ -72,36 +73,50 @@ class Rev:
         return _scalar_op(-self.v, [(self, lambda g: -g)])
 
     def __sub__(self, o):
-        o = Rev._of(o)
-        if o is NotImplemented:
-            return o
+        x = self._of(o)
+        if x is NotImplemented:
+            return _reflected(o, self, "__rsub__")
+        o = x
         return _scalar_op(self.v - o.v, [(self, lambda g: g), (o, lambda g: -g)])
 
     def __rsub__(self, o):
-        return Rev._of(o) - self
+        x = self._of(o)
+        return _reflected(o, self, "__sub__") if x is NotImplemented else x - self
 
     def __mul__(self, o):
-        o = Rev._of(o)
-        if o is NotImplemented:
-            return o
+        x = self._of(o)
+        if x is NotImplemented:
+            return _reflected(o, self, "__rmul__")
+        o = x
         a, b = self.v, o.v
         return _scalar_op(a * b, [(self, lambda g: g * b), (o, lambda g: g * a)])
 
     __rmul__ = __mul__
 
     def __truediv__(self, o):
-        o = Rev._of(o)
-        if o is NotImplemented:
-            return o
+        x = self._of(o)
+        if x is NotImplemented:
+            return _reflected(o, self, "__rtruediv__")
+        o = x
         q = self.v / o.v
         b = o.v
         return _scalar_op(q, [(self, lambda g: g / b), (o, lambda g: -(g * q) / b)])
 
     def __rtruediv__(self, o):
-        return Rev._of(o) / self
+        x = self._of(o)
+        return _reflected(o, self, "__truediv__") if x is NotImplemented else x / self
 
     def __repr__(self):
         return f"Rev({self.v!r}{'' if self.node is None else ', tracked'})"
+
+
+def _reflected(o, x: "Rev", name: str):
+    """The operation of o, a number of a field over x's (x a constant of its base); NotImplemented for a
+    matrix (Python asks the matrix).  A reverse number of a higher layer is asked directly: Python tries no
+    reflected operation between two numbers of one class."""
+    if type(o) is Rev:
+        return getattr(o, name)(x)
+    return NotImplemented
 
 
 def _is_matrix(o) -> bool:
@@ -135,6 +150,9 @@ def linear(a: RevMat, value, adjoint: Callable[[Any], Any]) -> RevMat:
     """A linear map of a matrix on the tape as one node: its value (a base-field Mat) and the
     adjoint map, applied to the adjoint of the result."""
     return _mat_op(value, [(a, adjoint)])
+
+
+LAYERED[Rev] = "v"
 
 
 class RevField(Field):

@@ -814,7 +814,9 @@ def _verify(out: Any, ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tu
                    timeout=timeout, memory=memory, jobs=jobs, strict_sizes=bool(ids) and max_n is None)
         finally:
             progress.close()
-        meta = {
+        seconds = round(time.perf_counter() - t0, 2)
+        # the run's metadata (package versions, the git commit: tens of ms) only for a document or a report
+        meta = {} if fmt not in ("json", "junit") and target is None else {
             "title": _title(claims_files, user_ids, claims),
             "command": _command(ids, claims_files, () if max_n is not None else sizes, methods, seed,
                                 report_dir, budgets + (["--max-n", str(max_n)] if max_n is not None else [])),
@@ -825,7 +827,7 @@ def _verify(out: Any, ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tu
             "timeout": timeout, "memory_gib": memory, "jobs": jobs, "budget": budget,
             "scheduler": scheduler,
             "date": started.strftime("%Y-%m-%d %H:%M:%S UTC"),
-            "seconds": round(time.perf_counter() - t0, 2),
+            "seconds": seconds,
             "versions": _versions(), "platform": platform.platform(terse=True),
             "commit": _commit(), "sections": _section_titles(),
         }

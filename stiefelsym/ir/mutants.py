@@ -212,6 +212,9 @@ class GraphMutant:
     nodes: int = 1
     #: a mutant of one size's graph only (:func:`per_size_mutants`): that size
     at: tuple[int, int] | None = None
+    #: the mutant's graphs as the tracer made them when the mutant was made (None: with symbolic sizes; or
+    #: per size with an edit), each the first of the two traces its compilation compares (:meth:`traced`)
+    made: dict | None = field(default=None, repr=False, compare=False)
 
     @property
     def func(self) -> GraphClaim | SizedGraphClaim:
@@ -223,6 +226,14 @@ class GraphMutant:
             return GraphClaim(self.graph, name=name)
         return SizedGraphClaim({z: g for z, (g, _) in self.sized.items()},
                                {z: e for z, (_, e) in self.sized.items()}, name=name)
+
+    def traced(self, func: Any, constraints: tuple) -> None:
+        """The graphs traced when the mutant was made, taken by the compilations of ``func`` (this mutant's
+        :attr:`func`) as their first traces (:func:`stiefelsym.ir.first_trace`): each compilation traces
+        the mutant once more, not twice."""
+        from stiefelsym.ir import first_trace
+        for z, g in (self.made or {}).items():
+            first_trace(func, None if z is None else z[0], None if z is None else z[1], constraints, g)
 
     def graphs(self, constraints: tuple) -> dict:
         """The mutant's graph at each size (traced again for a claim traced per size)."""
@@ -300,7 +311,7 @@ def graph_mutants(g: Graph, constraints: tuple, census: MutantCensus | None = No
             census.duplicates += 1
             continue
         seen.add(key)
-        gm = GraphMutant(len(out), site.node, site.operator, site.text, m, key)
+        gm = GraphMutant(len(out), site.node, site.operator, site.text, m, key, made={g.sizes or None: m})
         if notation:
             gm.changes = diff(g, m)
         out.append(gm)
@@ -381,7 +392,7 @@ def sized_graph_mutants(graphs: dict[tuple[int, int], Graph], constraints: tuple
         # written at the first size where it changes an output (a change may vanish at a small size)
         z = next(z for j, z in enumerate(sizes) if key[j] != base[j])
         gm = GraphMutant(len(out), site.node, site.operator, site.text, None, "/".join(key),
-                         sized={y: (graphs[y], {site.node: per[y][k].edit}) for y in sizes})
+                         sized={y: (graphs[y], {site.node: per[y][k].edit}) for y in sizes}, made=made)
         if notation:
             gm.changes = diff(graphs[z], made[z])
         out.append(gm)
@@ -412,7 +423,7 @@ def per_size_mutants(graphs: dict[tuple[int, int], Graph], constraints: tuple,
                 continue
             gm = GraphMutant(len(out), site.node, site.operator, site.text, None, "/".join(key),
                              sized={y: (graphs[y], {site.node: site.edit} if y == z else {}) for y in sizes},
-                             at=z)
+                             at=z, made=made)
             if notation:
                 gm.changes = diff(graphs[z], made[z])
             out.append(gm)
@@ -485,10 +496,10 @@ def site_mutants(graphs: dict[Any, Graph], constraints: tuple, census: MutantCen
         x0 = next(iter(per[z0]))
         nodes = sum(len(e) for e in per.values())
         if z0 is None:
-            gm = GraphMutant(len(out), x0, operator, text, made[z0], key[0], site=src, nodes=nodes)
+            gm = GraphMutant(len(out), x0, operator, text, made[z0], key[0], site=src, nodes=nodes, made=made)
         else:
             gm = GraphMutant(len(out), x0, operator, text, None, "/".join(key),
-                             sized={y: (graphs[y], per.get(y, {})) for y in sizes}, site=src, nodes=nodes)
+                             sized={y: (graphs[y], per.get(y, {})) for y in sizes}, site=src, nodes=nodes, made=made)
         if notation:
             gm.changes = diff(graphs[z0], made[z0])
         out.append(gm)

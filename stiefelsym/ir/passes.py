@@ -34,6 +34,9 @@ class _Sides:
         self.parent: list[int] = []
         self.atom: list[str | None] = []       # "n", "r", "opaque" or None (a variable)
         self.parts: list[tuple] = []
+        #: pairs of sides joined although their splittings into direct sums differ (a side of R^r or R^n
+        #: split into coordinate blocks: e_1 of R^2 as a block of 1 x 1 pieces of I and 0 used on R^r)
+        self.splits: list[tuple[int, int]] = []
 
     def new(self, atom: str | None = None, parts: tuple = ()) -> int:
         self.parent.append(len(self.parent))
@@ -52,6 +55,8 @@ class _Sides:
         if a == b:
             return
         ta, tb = self.atom[a], self.atom[b]
+        if (len(self.parts[a]) > 1 or len(self.parts[b]) > 1) and not self.alike(a, b):
+            self.splits.append((a, b))
         if ta == "opaque" or tb == "opaque":
             # joined with an engine value's side: a variable may now be anything (an atom stays itself)
             other = b if ta == "opaque" else a
@@ -67,6 +72,32 @@ class _Sides:
         self.parent[b] = a
         self.atom[a] = atom
         self.parts[a] = self.parts[a] or self.parts[b]
+
+    def _single(self, x: int) -> int:
+        x = self.find(x)
+        while len(self.parts[x]) == 1:
+            x = self.find(self.parts[x][0])
+        return x
+
+    def alike(self, a: int, b: int, depth: int = 0) -> bool:
+        """Whether two sides may be joined without taking one splitting into blocks for another: the same
+        side, an engine value's side (it may be anything), a side not yet known (it takes the other's
+        splitting), sums of alike parts, or two atoms of one kind (a sum joined to ℝⁿ or ℝʳ, a side not
+        yet known paired with another part inside a sum, or ℝⁿ with ℝʳ, is not)."""
+        a, b = self._single(a), self._single(b)
+        if a == b or depth > 32:
+            return True
+        ta, tb = self.atom[a], self.atom[b]
+        if ta == "opaque" or tb == "opaque":
+            return True
+        pa, pb = self.parts[a], self.parts[b]
+        if (ta is None and not pa) or (tb is None and not pb):
+            # a side not yet known (sized by plain ints, a matrix of given entries) takes the other's
+            # splitting; inside a sum its size is not known to match the part it is paired with
+            return depth == 0
+        if pa or pb:
+            return len(pa) == len(pb) and all(self.alike(x, y, depth + 1) for x, y in zip(pa, pb))
+        return ta == tb
 
     def involves_n(self, x: int, seen: frozenset = frozenset()) -> bool:
         x = self.find(x)
@@ -104,6 +135,12 @@ def _spaces(g: Graph) -> tuple["_Sides", list]:
 
     def of(a):
         return sides[a.i] if type(a) is Ref else None
+
+    def _square(x) -> None:
+        # a trace, an inverse or a power is of a square matrix: its row and column sides are one space
+        # (else a trace of Xᵀ B with B of given entries would leave B's columns unjoined to R^r)
+        if x:
+            S.union(x[0], x[1])
 
     for op, a in zip(g.ops, g.args):
         sd = None
@@ -152,10 +189,22 @@ def _spaces(g: Graph) -> tuple["_Sides", list]:
                     S.union(u[0], v[0])
                     S.union(u[1], v[1])
                     sd = (S.new(parts=(u[0], u[0])), S.new(parts=(u[1], u[1])))
-            elif name not in ("tr", "killing", "q", "const", "scalar", "bracket", "canonical_bracket"):
+            elif name == "tr":
+                _square(of(args[0]))
+            elif name == "killing":
+                # <a, b> = -1/2 tr(ab): a's columns are b's rows and b's columns a's rows
+                u, v = of(args[0]), of(args[1])
+                if u and v:
+                    S.union(u[1], v[0])
+                    S.union(u[0], v[1])
+            elif name not in ("q", "const", "scalar", "bracket", "canonical_bracket"):
                 sd = (opaque, opaque)
+        elif op == "trace":
+            _square(of(a[0]))
         elif op in ("T", "inv"):
             x = of(a[0])
+            if op == "inv":
+                _square(x)
             sd = (x[1], x[0]) if x else None
         elif op in ("add", "sub"):
             x, y = of(a[0]), of(a[1])
@@ -174,6 +223,8 @@ def _spaces(g: Graph) -> tuple["_Sides", list]:
             sd = of(a[0]) or of(a[1])
         elif op in ("neg", "pow"):
             sd = of(a[0])
+            if op == "pow":
+                _square(sd)
         elif op == "entry":
             sd = (S.new(), S.new()) if any(type(i) is tuple for i in a[1:]) else None
         elif op == "block":
@@ -259,6 +310,8 @@ COORDINATE_STEPS = frozenset({"stiefelsym.systems.real_coordinates", "stiefelsym
 
 #: the read of a block matrix used as a matrix on ℝⁿ (see :func:`coordinate_reads`)
 BLOCK_SPLITTING = "a block splitting of R^n"
+#: the read of a space split into blocks in two different ways (see :func:`coordinate_reads`)
+TWO_SPLITTINGS = "a space split into blocks in two ways"
 
 
 def coordinate_reads(g: Graph) -> dict[str, frozenset]:
@@ -268,7 +321,9 @@ def coordinate_reads(g: Graph) -> dict[str, frozenset]:
     * an entry or a block of a matrix with a side on ℝⁿ (or on an engine value's side);
     * a matrix of given entries (``s.mat``) with a side on ℝⁿ: not a multiple of I (a matrix of
       fresh parameters, ``s.general_params``, is generic and moves with O(n));
-    * a block matrix used as a matrix on ℝⁿ (a splitting of ℝⁿ into coordinate blocks).
+    * a block matrix used as a matrix on ℝⁿ (a splitting of ℝⁿ into coordinate blocks);
+    * a side split into blocks in two different ways, or ℝⁿ (ℝʳ) joined to a sum of pieces (ℝⁿ ⊕ ℝʳ taken
+      for ℝʳ ⊕ ℝⁿ: [X; 0]ᵀ[I_r; 0] is the top r × r block of X).
     Entries of ℝʳ-sided matrices are recorded too (for charts that also reduce by O(r))."""
     cached = g.cache.get("reads")
     if cached is not None:
@@ -311,6 +366,14 @@ def coordinate_reads(g: Graph) -> dict[str, frozenset]:
         elif op == "block" and sides[i]:
             if any(S.atom[S.find(x)] in ("n", "opaque") for x in sides[i]):
                 add(BLOCK_SPLITTING, {"n"})
+    # a side split into blocks in two ways (ℝⁿ ⊕ ℝʳ taken for ℝʳ ⊕ ℝⁿ: [X; 0]ᵀ[I_r; 0] is the top r x r block
+    # of X, with no block that has a side on ℝⁿ alone), or ℝⁿ / ℝʳ itself taken for a sum of pieces
+    for pair in S.splits:
+        inv = {"n"} if any(S.involves_n(x) for x in pair) else set()
+        if any(_involves_r(S, x) for x in pair):
+            inv.add("r")
+        if inv:
+            add(TWO_SPLITTINGS, inv)
     g.cache["reads"] = reads
     return reads
 
@@ -335,7 +398,11 @@ def right_action_breaks(g: Graph) -> list[str]:
     engine steps are constants on R^n (:data:`RIGHT_STEPS`), and which reads no entry or block of a
     matrix with a side on R^r (or on an engine value's side), builds no matrix of given entries with
     a side on R^r and takes no rank or count, computes with typed matrix operations only, each of which
-    commutes with the action: its residuals are covariant, whatever it reads of R^n."""
+    commutes with the action: its residuals are covariant, whatever it reads of R^n.  A side of R^r is
+    also reached by a block of a matrix on R^n alone whose result meets R^r (rows 0..r-1 of I_n times X),
+    by a direct sum joined to R^r (e_1 of R^2 as a block of 1 x 1 pieces of I and 0) or two different
+    splittings of a side on R^r joined, and by a matrix of given entries paired with R^r only through a
+    trace (tr(X^T B): a trace, a pairing, an inverse and a power join their matrix's two sides)."""
     S, sides = _spaces(g)
 
     def on_r(sd) -> bool:
@@ -353,10 +420,15 @@ def right_action_breaks(g: Graph) -> list[str]:
             out["a matrix of given entries on R^r"] = None
         elif op == "entry" and on_r(sides[a[0].i] if type(a[0]) is Ref else None):
             out["an entry or a block of a matrix on R^r"] = None
+        elif op == "entry" and sides[i] and on_r(sides[i]):
+            # a block of a matrix on R^n alone used on R^r (rows 0..r-1 of I_n times X: the top block X1)
+            out["a block of a matrix used on R^r"] = None
         elif op == "prim" and a[0].qualname not in RIGHT_STEPS:
             out["an engine step"] = None
         elif op in ("rank", "count", "apply"):
             out[f"a {op}"] = None
+    if any(_involves_r(S, x) for pair in S.splits for x in pair):
+        out["a splitting of R^r into blocks"] = None
     return list(out)
 
 

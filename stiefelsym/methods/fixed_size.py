@@ -816,7 +816,7 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
         if nonzero:
             res.verdict = "proved"
             res.certificate = (f"the residual is not identically zero: {nonzero[0][1]} = "
-                               f"{_short(_exact_text(nonzero[0][3], nonzero[0][2]))}")
+                               f"{_short(_exact_text(nonzero[0][3], nonzero[0][2], SHORT + 1))}")
         else:
             res.verdict = "fails"
             res.certificate = "the residual vanishes identically on the chart"
@@ -824,7 +824,7 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
     if nonzero or problems:
         res.verdict = "fails"
         if nonzero:
-            res.residual = f"{nonzero[0][1]} = {_short(_exact_text(nonzero[0][3], nonzero[0][2]))}"
+            res.residual = f"{nonzero[0][1]} = {_short(_exact_text(nonzero[0][3], nonzero[0][2], SHORT + 1))}"
             res.certificate = "the residual is a nonzero function on the chart"
             witness = _rational_witness(claim, n, r, seed, func)
             if witness:
@@ -1178,20 +1178,26 @@ def _not_finite(x: Any) -> bool:
         return False
 
 
-def _short(x: Any, limit: int = 160) -> str:
+#: the characters of a residual's text a result keeps (:func:`_short`)
+SHORT = 160
+
+
+def _short(x: Any, limit: int = SHORT) -> str:
     s = str(x)
     return s if len(s) <= limit else s[: limit - 3] + "..."
 
 
-def _exact_text(field: Any, x: Any) -> str:
+def _exact_text(field: Any, x: Any, width: int | None = None) -> str:
     """An exact residual entry as text, the same in every run: through the flint ring in its
     canonical term order where the entry is a rational function there (a symengine expression
-    orders its terms by hashes that differ between processes), else symengine's text."""
+    orders its terms by hashes that differ between processes), else symengine's text.  ``width``: only
+    its first characters are wanted (a prefix of the text, of at least that many characters, in the
+    ring: the terms of a refuted residual that are not printed are not ordered)."""
     ring = field.poly_ring() if getattr(field, "native", False) and hasattr(field, "poly_ring") else None
     if ring is not None:
         from stiefelsym.backends.polyfield import NotRational
         try:
-            return ring.text(ring.from_se(x))
+            return ring.text(ring.from_se(x), width, reduced=True)
         except NotRational:
             pass
     return str(x)

@@ -14,8 +14,9 @@ whichever confinement was used:
   interpreter's process group is killed (the README's security notes say so).
 * :func:`engine_files` is a digest of every file of the package (``stiefelsym`` and its ``proofs``),
   taken before the first interpreter is spawned and compared when it returns: an engine module rewritten on
-  disk by the file stops the run (:class:`EngineFilesChanged`).  The verifying process has also imported
-  every module it can need later before that (:func:`import_package`), so no engine module it runs
+  disk by the file stops the run (:class:`EngineFilesChanged`).  Before an interpreter without namespaces (where
+  the file writes with the user's rights; in namespaces it writes nowhere on the host's file system) the verifying
+  process has also imported every module it can need later (:func:`import_package`), so no engine module it runs
   afterwards is read from disk.  The libraries it imports lazily (sympy, platformdirs) are found on the
   import path when first used, possibly after the file ran: :func:`path_modules`, compared likewise, stamps
   every top-level module of the directories on ``sys.path`` (inode, size, modification and status-change

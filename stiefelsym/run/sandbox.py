@@ -41,7 +41,7 @@ import stat
 import sys
 import threading
 import time
-from typing import Any
+from typing import Any, Callable
 
 #: the confinements, in the order they are tried
 NAMESPACES = "namespaces"
@@ -136,11 +136,15 @@ def _environment() -> dict[str, str]:
     return {"PATH": SYSTEM_PATH, "LC_ALL": "C.UTF-8", "HOME": "/tmp"}
 
 
-def run(config: dict[str, Any], capture: int, seconds: float, requests: bytes = b"") -> tuple[bytes | None, str]:
+def run(config: dict[str, Any], capture: int, seconds: float, requests: bytes = b"",
+        before_plain: Callable[[], None] | None = None) -> tuple[bytes | None, str]:
     """``config`` (JSON) to a fresh interpreter running :func:`host`, its answer back: (bytes, or None when it
     died or ran out of ``seconds``; the confinement used).  What it prints goes to ``capture``.  The
     namespaces are given up (for this process's later files too) only when the interpreter did not write its
-    confinement line, i.e. before anything of the file ran."""
+    confinement line, i.e. before anything of the file ran.  ``before_plain`` is called before an interpreter is
+    spawned without namespaces (:data:`SPAWN`), and only then: in namespaces the file writes nowhere on the host's
+    file system (:func:`lock_down`), without them it writes with the user's rights (the caller's preparation for
+    that, :func:`stiefelsym.run.userfile.load_claims_isolated`: the whole package imported first)."""
     unshare = _unshare()
     if unshare is not None:
         raw, status = _spawn(config, capture, seconds, unshare, requests)
@@ -151,6 +155,8 @@ def run(config: dict[str, Any], capture: int, seconds: float, requests: bytes = 
         if _available.get(NAMESPACES):      # it worked before: this file's process died before its line
             return None, NAMESPACES
         _available[NAMESPACES] = False
+    if before_plain is not None:
+        before_plain()
     raw, status = _spawn(config, capture, seconds, None, requests)
     head = _line(SPAWN)
     return (raw[len(head):] if status == 0 and raw.startswith(head) else None), SPAWN

@@ -808,16 +808,24 @@ def _claim(d: Any, path: str, confinement: str = "namespaces") -> Claim:
 
 
 def _preload() -> dict[str, str]:
-    """Before the first child is forked: every module of the engine imported here (the child seals the
-    verdict modules before the file runs; this process evaluates, renders and writes with the whole package
-    afterwards, and reads none of it from disk once a file's child has run), and the digest of every file
-    of the package (:func:`stiefelsym.run.confine.engine_files`) and of every top-level module on the import path
-    (:func:`stiefelsym.run.confine.path_modules`: a lazily imported library's name put before it), compared when
-    the child returns."""
-    from stiefelsym.run.confine import engine_files, import_package, path_modules
+    """Before a file's interpreter is spawned without namespaces (it writes with the user's rights there): every
+    module of the engine imported here (the child seals the verdict modules before the file runs; this process
+    evaluates, renders and writes with the whole package afterwards, and reads none of it from disk once such a
+    child has run), then :func:`_digests`.  In namespaces the file writes nowhere on the host's file system
+    (:func:`stiefelsym.run.sandbox.lock_down`: every mount read-only), so nothing is imported first there (the
+    package, scipy among what it imports, takes about a second), and the digests are compared all the same."""
+    from stiefelsym.run.confine import import_package
     from stiefelsym.ir.seal import import_engine
     import_engine()
     import_package()
+    return _digests()
+
+
+def _digests() -> dict[str, str]:
+    """The digest of every file of the package (:func:`stiefelsym.run.confine.engine_files`) and of every top-level
+    module on the import path (:func:`stiefelsym.run.confine.path_modules`: a lazily imported library's name put
+    before it), compared when the file's interpreter returns."""
+    from stiefelsym.run.confine import engine_files, path_modules
     return {**engine_files(), **path_modules()}
 
 
@@ -834,7 +842,8 @@ def _engine_unchanged(before: dict[str, str], path: Path) -> None:
                            "claims file added before running again")
 
 
-def _phase(path: Path, parts: list[dict] | None, capture: int) -> tuple[list, str]:
+def _phase(path: Path, parts: list[dict] | None, capture: int,
+           before_plain: Callable[[], None] | None = None) -> tuple[list, str]:
     """One phase in a fresh interpreter (:func:`stiefelsym.run.sandbox.run`): its decoded answer (per part, for the
     second phase), and the confinement it ran under.  It is given the file and the engine's tracing budgets
     (:data:`CLAIM_SECONDS`, :data:`CLAIM_MEMORY_GIB`), nothing of the run; in the second phase the ``parts``
@@ -846,7 +855,7 @@ def _phase(path: Path, parts: list[dict] | None, capture: int) -> tuple[list, st
               "memory": int(CLAIM_MEMORY_GIB * GIB)}
     requests = b"".join(json.dumps(m).encode() + b"\n" for m in parts or [])
     try:
-        data, how = run(config, capture, FILE_SECONDS, requests)
+        data, how = run(config, capture, FILE_SECONDS, requests, before_plain)
     except ProcessesLeft as exc:
         raise CatalogError(f"{path}: {exc}") from None
     if data is None:
@@ -966,15 +975,25 @@ def load_claims_isolated(path: str | Path, sizes: Iterable[Any] = ()) -> Registr
     p = Path(path)
     if not p.is_file():
         raise CatalogError(f"claims file not found: {p}")
-    engine = _preload()
+    engine = _digests()
+    spawned: list[bool] = []
+
+    def before_plain() -> None:
+        """(before the first interpreter without namespaces, when no interpreter of the file has run yet: the
+        package imported, and the digests taken again since importing may write its byte code)"""
+        nonlocal engine
+        if not spawned:
+            engine = _preload()
+
     sys.stdout.flush()
     sys.stderr.flush()
     with tempfile.TemporaryFile() as capture:
         try:
-            (claims,), how = _phase(p, None, capture.fileno())     # no size of the run
+            (claims,), how = _phase(p, None, capture.fileno(), before_plain)     # no size of the run
+            spawned.append(True)
             parts = _by_size(_second_phase(claims, needed))         # only what needs a size, one size each
             if parts:
-                extras, how2 = _phase(p, parts, capture.fileno())
+                extras, how2 = _phase(p, parts, capture.fileno(), before_plain)
                 for part, extra in zip(parts, extras):
                     _merge(claims, extra, part)
                 how = how if how2 == how else f"{how}, then {how2}"

@@ -76,3 +76,28 @@ def parse(stdout):
 def verdicts(claims_file, method, size="3,2", ids=()):
     """{claim id: verdict} of one `stiefelsym verify` run."""
     return parse(run_verify(claims_file, method, size, ids).stdout)
+
+
+#: a verdict line with its method: "<claim> (n,r) <method>: <verdict>" or "<claim> all n, r free: <verdict>"
+METHOD_LINE = re.compile(r"^(\S+) (?:\(\d+,\d+\)|all n, r) (\w+): (\w+)")
+
+
+def verdicts_each(claims_file, methods, size="3,2", ids=()):
+    """{method: {claim id: verdict}} of ``methods``: the fixed-size ones in one `stiefelsym verify` run (one
+    --method each, run one after the other as in `make verify-all`), free (it has no size) and auto (its lines
+    name the method it chose) in a run of their own each; a file the engine refused when it was loaded has no
+    verdict at all, for any method."""
+    out: dict = {}
+    fixed = [m for m in methods if m not in ("free", "auto")]
+    runs = [(m, run_verify(claims_file, m, size, ids)) for m in ("free", "auto") if m in methods] + (
+        [(None, cli("verify", *ids, "--claims", str(HERE / claims_file), "--size", size,
+                    *[a for m in fixed for a in ("--method", m)]))] if fixed else [])
+    for method, run in runs:
+        if run.returncode == 2 and ("registered by the engine" in run.stderr or "engine was changed" in run.stderr):
+            return {m: {cid: "refused" for cid in ids} | {"*": "refused"} for m in methods}
+        for line in run.stdout.splitlines():
+            m = METHOD_LINE.match(line)
+            if m:
+                out.setdefault(method or m.group(2), {})[m.group(1)] = m.group(3)
+    assert set(out) == set(methods), (methods, sorted(out))
+    return out

@@ -1,8 +1,10 @@
-"""Round 9 (note): the Dirac bracket (s.bracket) of a bracket whose inner function closes over a value of the
-claim's point: the graph's rule refuses it, and the scene's own route then meets the captured value of the
-degree-tracking evaluation (values paired with their degrees) inside its dual numbers: every fixed-size method
-ends in a TypeError, the true statement as the false one (never a wrong verdict).  The twisted bracket of the same
-functions is decided (s38b_nested_bracket_captures.py)."""
+"""Round 9 (note, IB; closed in round 10): the Dirac bracket (s.bracket) of a bracket whose inner function closes
+over a value of the claim's point: the graph's rule refuses it, and the scene's own route evaluates the captured
+value (a number of the point's field) against the inner bracket's reverse numbers over dual numbers over that
+field.  Before round 10 every fixed-size method ended in a TypeError there (the lower operand took the higher
+one for a constant of its own field); now a number of a field built over another's takes the other as its
+constant, whichever operand comes first: the true Jacobi identity passes, {f, {g₀, h}} = 0 fails.  The twisted
+bracket of the same functions is decided (s38b_nested_bracket_captures.py)."""
 from stiefelsym import admissible, claim
 
 SZ = admissible(n_max=3, n_min=3, r_min=2, r_max=2)

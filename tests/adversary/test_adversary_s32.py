@@ -8,7 +8,7 @@ import sys
 
 import pytest
 
-from adversary_cli import HERE, LINE, PASSING, ROOT, cli, verdicts  # noqa: E402,F401
+from adversary_cli import HERE, LINE, PASSING, ROOT, cli, verdicts, verdicts_each  # noqa: E402,F401
 
 
 # -- V'. the letters S, D, C, Dn and R(mu): combinations their rules do not cover ---------------------
@@ -106,12 +106,11 @@ def test_a_verdict_does_not_depend_on_the_claims_traced_before(method):
 
 # -- O'. a value of a function's scene used outside the function -----------------------------------------
 
-@pytest.mark.parametrize("method", ["free", "exact", "modular", "float"])
-def test_a_function_value_used_outside_its_function_is_never_passed(method):
+def test_a_function_value_used_outside_its_function_is_never_passed():
     """The function's own X kept by the claim after s.gradient / s.d / s.bracket: error today (an unbound
     node of the function's body, KeyError), never a passing verdict."""
-    v = verdicts("function_value_escaped.py", method)
-    assert len(v) == 3 and all(x not in PASSING for x in v.values()), v
+    for method, v in verdicts_each("function_value_escaped.py", ("free", "exact", "modular", "float")).items():
+        assert len(v) == 3 and all(x not in PASSING for x in v.values()), (method, v)
 
 
 # -- 2/5. numbers in disguise, and constants outside the float range that no literal shows ----------------
@@ -121,16 +120,15 @@ DISGUISED = ("adv-num-int-subclass", "adv-num-fraction-subclass", "adv-num-resol
 POWERS = ("adv-num-pow-underflow", "adv-num-pow-overflow", "adv-num-pow-absorb-trace")
 
 
-@pytest.mark.parametrize("method", ["free", "exact", "modular", "float", "ball"])
-def test_numbers_in_disguise_and_powers_outside_the_float_range(method):
+def test_numbers_in_disguise_and_powers_outside_the_float_range():
     """Subclasses of int and Fraction (whose int(), numerator or float lie), Decimal and numpy's bool are
     refused when traced (error; free: undecided); n^-700, (n + 1)^600 and (tr PᵀP + 5)^40 are not literals,
     and float and ball still never pass them (a float verdict is confirmed at exact points)."""
-    v = verdicts("s32_numbers_probes.py", method)
-    assert all(v[c] in ("error", "undecided") for c in DISGUISED), v
-    assert all(v[c] not in PASSING for c in POWERS), v
-    if method in ("exact", "modular", "float"):
-        assert all(v[c] == "fails" for c in POWERS), v
+    for method, v in verdicts_each("s32_numbers_probes.py", ("free", "exact", "modular", "float", "ball")).items():
+        assert all(v[c] in ("error", "undecided") for c in DISGUISED), (method, v)
+        assert all(v[c] not in PASSING for c in POWERS), (method, v)
+        if method in ("exact", "modular", "float"):
+            assert all(v[c] == "fails" for c in POWERS), (method, v)
 
 
 # -- Y. a record's statement, title and paper labels are not bound to its claim -------------------------
@@ -226,9 +224,9 @@ def test_report_refuses_a_proof_for_every_size_without_a_certificate_under_auto(
 HOOK = "profile_hook_evaluation.py"
 
 
-@pytest.mark.parametrize("method", ["free", "exact", "modular", "float"])
-def test_a_profile_hook_of_the_claims_file_cannot_pass_a_false_claim(method):
-    assert verdicts(HOOK, method)["adv-profile-hook"] not in PASSING
+def test_a_profile_hook_of_the_claims_file_cannot_pass_a_false_claim():
+    v = {m: got["adv-profile-hook"] for m, got in verdicts_each(HOOK, ("free", "exact", "modular", "float")).items()}
+    assert not set(v.values()) & set(PASSING), v
 
 
 def test_check_rejects_a_proof_made_by_a_profile_hook(tmp_path):
