@@ -408,13 +408,21 @@ def test_vacuous_candidates_are_left_out():
     assert not any("swap the letters X and P in the term `s.X.T @ s.P`" in t for t in texts)
 
 
+def _resolvent_line() -> int:
+    """The line of `-s.resolvent(-s.lam)` in the catalog's helper inverse_of_A_plus_lambda."""
+    import inspect
+    from stiefelsym.proofs import sec4_integrability as sec4
+    lines, start = inspect.getsourcelines(sec4.inverse_of_A_plus_lambda)
+    return start + next(i for i, t in enumerate(lines) if "s.resolvent(-s.lam)" in t)
+
+
 def test_search_recovers_the_catalogs_resolvent_erratum():
     """Theorem man-dual: the search over the claim and its helpers finds exactly the registered
     correction, (A + λI) in place of (A + λI)⁻¹, and nothing else."""
     c = load_catalog().get("manakov-dual-lax")
     found = search_corrections(c, [Size(2, 1), Size(3, 2)], ["rational"])
     assert [m.description for m in found] == [
-        "in inverse_of_A_plus_lambda(), line 234: invert the resolvent `s.resolvent(-s.lam)` "
+        f"in inverse_of_A_plus_lambda(), line {_resolvent_line()}: invert the resolvent `s.resolvent(-s.lam)` "
         "(μI − A in place of (μI − A)⁻¹) in `-s.resolvent(-s.lam)`"]
     # and in the paper's notation: the inverse dropped in every block of 𝓐*_man(λ)
     assert notation_text(found[0].notation) == "in MAN-LA, blocks (1,1), (1,2), (2,1), (2,2): (A + λIₙ)⁻¹ → λIₙ + A"
@@ -425,7 +433,7 @@ def test_cli_corrections(tmp_path):
                                               "--method", "rational"])
     assert res.exit_code == 0, res.output
     assert ("manakov-dual-lax: correction passes: in MAN-LA, blocks (1,1), (1,2), (2,1), (2,2): (A + λIₙ)⁻¹ → "
-            "λIₙ + A (source: in inverse_of_A_plus_lambda(), line 234") in res.output
+            f"λIₙ + A (source: in inverse_of_A_plus_lambda(), line {_resolvent_line()}") in res.output
     assert "1 of " in res.output
     res = CliRunner().invoke(mutate_command, ["--corrections"])
     assert res.exit_code == 2
