@@ -471,7 +471,7 @@ def main(argv=None) -> int:
             return cpu["modular"] / cpu["flint"], (
                 f"CPU per point: modular {1e3 * cpu['modular']:.1f} ms (a whole run over its {_points(res)} points), "
                 f"hand-written nmod_mat {1e3 * cpu['flint']:.1f} ms (the Cayley point, the flow and the residual of "
-                f"LA1 at a prime of [2^60, 2^61); best of {k} interleaved warm runs)")
+                f"LA1 at a prime of [2^62, 2^63); best of {k} interleaved warm runs)")
         return run
     bench.target("modular LA1 point / hand-written flint, (100,50)", 1.5, "x", "lower", modular_over_flint(100, 50))
 

@@ -457,7 +457,7 @@ def test_every_method_named_in_a_verdict_is_explained():
     for m in ("exact", "modular", "rational", "float", "ball", "free"):
         assert m in METHOD_MEANING
         assert f"- **{m}**: " in md and f"\\item[{m}] " in tex
-    assert "primes near 2⁶⁰" in md
+    assert "primes near 2⁶²" in md
 
 
 def test_a_statement_that_something_does_not_hold_found_identically_zero_says_so():

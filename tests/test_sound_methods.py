@@ -28,7 +28,7 @@ from test_methods import resolvent_identity, resolvent_identity_sign  # noqa: E4
 # -- 1. the modular method: a prime per point, a height bound, enough points -----------------
 
 def test_the_prime_count_is_a_proven_lower_bound():
-    assert primes_in_range_lower_bound() >= PRIMES_IN_RANGE_LOWER >= 1.9e16
+    assert primes_in_range_lower_bound() >= PRIMES_IN_RANGE_LOWER >= 7.6e16
 
 
 def test_primes_are_drawn_by_the_seed_from_the_whole_range():
@@ -37,6 +37,21 @@ def test_primes_are_drawn_by_the_seed_from_the_whole_range():
     assert all(PRIME_LOW <= p < PRIME_HIGH and flint.fmpz(p).is_prime() for p in ps)
     assert len(set(ps)) == 20
     assert ps == [random_prime(random.Random(f"p{k}")) for k in range(20)]
+
+
+def test_the_larger_primes_bring_the_target_with_fewer_points():
+    """A point's bound over [2^62, 2^63) is about 4 times below the one over [2^60, 2^61): the degree
+    and height of gen-chasles at (7,5) (d = 440, h = 3440.8) needed 3 points over [2^60, 2^61)
+    (55 / 1.9e16 + 440 / 2^60 = 3.3e-15 a point); 2 points now, each with its own bound, and a
+    false claim still fails at such points."""
+    from stiefelsym.methods.fixed_size import DegreeBound, _per_point_bound, _points_needed
+    deg = DegreeBound(440, 0, 3440.8, 0.0)
+    eps = _per_point_bound("modular", deg)
+    assert eps == 55 / PRIMES_IN_RANGE_LOWER + 440 / PRIME_LOW
+    old = 57 / (19 * 10**15) + 440 / 2**60
+    assert _points_needed(old) == 3 and _points_needed(eps) == 2 and eps ** 2 <= 1e-30 < eps
+    res = run_points(_claim(mersenne_multiple), 4, 2, "modular", 0)
+    assert res.verdict == "fails" and PRIME_LOW <= res.witness["prime"] < PRIME_HIGH
 
 
 def test_a_constant_divisible_by_p_is_refused_not_reduced_to_zero():

@@ -23,23 +23,29 @@ se = lazy("symengine", globals(), "se")
 
 MERSENNE_61 = 2**61 - 1
 
-#: the modular method draws a fresh prime for every point, uniformly among the primes in [2^60, 2^61)
-PRIME_LOW, PRIME_HIGH = 2**60, 2**61
-#: a proven lower bound on the number of primes in [2^60, 2^61).  Rosser-Schoenfeld (1962):
+#: the modular method draws a fresh prime for every point, uniformly among the primes in
+#: [2^PRIME_BITS, 2^(PRIME_BITS + 1)) = [2^62, 2^63): the largest such range whose residues are int64
+#: (numpy's parameter draws) and nmod (one machine word).  A point's false-pass bound is about
+#: 1/K + d/2^62 (content and Schwartz-Zippel, see ``fixed_size._per_point_bound``), 4 times smaller
+#: than over [2^60, 2^61): 2 points reach the target 1e-30 where a point's bound over [2^60, 2^61)
+#: was up to about 4e-15, a third point was needed above 1e-15
+PRIME_BITS = 62
+PRIME_LOW, PRIME_HIGH = 2**PRIME_BITS, 2**(PRIME_BITS + 1)
+#: a proven lower bound on the number of primes in [2^62, 2^63).  Rosser-Schoenfeld (1962):
 #: x/ln x < pi(x) for x >= 17 and pi(x) < 1.25506 x/ln x for x > 1, hence
-#: pi(2^61) - pi(2^60) > 2^61/ln 2^61 - 1.25506 * 2^60/ln 2^60 = 1.97...e16 >= K (checked in the tests)
-PRIMES_IN_RANGE_LOWER = 19 * 10**15
+#: pi(2^63) - pi(2^62) > 2^63/ln 2^63 - 1.25506 * 2^62/ln 2^62 = 7.65...e16 >= K (checked in the tests)
+PRIMES_IN_RANGE_LOWER = 76 * 10**15
 
 
 def primes_in_range_lower_bound() -> float:
-    """Rosser-Schoenfeld's lower bound on pi(2^61) - pi(2^60), evaluated at 50 digits."""
+    """Rosser-Schoenfeld's lower bound on pi(PRIME_HIGH) - pi(PRIME_LOW), evaluated at 50 digits."""
     with mpmath.workdps(50):
         lo, hi = mpmath.mpf(PRIME_LOW), mpmath.mpf(PRIME_HIGH)
         return hi / mpmath.log(hi) - mpmath.mpf("1.25506") * lo / mpmath.log(lo)
 
 
 def random_prime(rng: random.Random) -> int:
-    """A prime uniform among the primes in [2^60, 2^61): uniform odd integers of the range,
+    """A prime uniform among the primes in [PRIME_LOW, PRIME_HIGH): uniform odd integers of the range,
     rejected until one is prime (a proven primality test); the seed reproduces it."""
     while True:
         x = PRIME_LOW + 1 + 2 * rng.randrange((PRIME_HIGH - PRIME_LOW) // 2)
@@ -53,13 +59,17 @@ def log2_up(x: int | float) -> float:
     return v + 1e-9 * max(1.0, abs(v))
 
 
+_log2 = math.log2
+
+
 def log2_add(a: float, b: float) -> float:
     """An upper bound on log2(2^a + 2^b), safe against rounding."""
     if a < b:
         a, b = b, a
     if b == -math.inf:
         return a
-    return a + math.log2(1.0 + 2.0 ** (b - a)) + 1e-9 * max(1.0, abs(a))
+    # 1e-9 * max(1.0, |a|), without the calls (the markers' sums call this once each)
+    return a + _log2(1.0 + 2.0 ** (b - a)) + 1e-9 * (a if a > 1.0 else -a if a < -1.0 else 1.0)
 
 
 def log2_sum(hs: Sequence[float]) -> float:
@@ -562,7 +572,8 @@ class Deg:
         if o.zero:
             return self
         if self.den is o.den or self.den == o.den:
-            return Deg(max(self.num, o.num), self.den, self.f, log2_add(self.h, o.h))
+            a, b = self.num, o.num
+            return Deg(a if a >= b else b, self.den, self.f, log2_add(self.h, o.h))
         # the common denominator takes every factor to its larger exponent; each side's numerator
         # is multiplied by the factors it lacks (their degrees and heights add), in one pass
         sd, od = self.den, o.den

@@ -5,7 +5,7 @@
 * ``rational`` exact rationals at seeded random points of the Cayley chart
                (integers in [-2^62, 2^62]), with the Schwartz-Zippel false-pass
                bound from a degree bound; as many points as the bound 1e-30 needs.
-* ``modular``  the same over GF(p), a fresh prime p in [2^60, 2^61) per point,
+* ``modular``  the same over GF(p), a fresh prime p in [2^62, 2^63) per point,
                with a height bound for the primes that divide the numerator.
 * ``float``    float64 with a running error bound; mpmath escalation.
 * ``ball``     rigorous ball arithmetic (arb) at the float method's exact points, 53 to 424 bits.
@@ -39,7 +39,7 @@ from stiefelsym.ir.evaluate import evaluate
 from stiefelsym.ir.seal import verify as verify_engine
 from stiefelsym.ir.passes import BLOCK_SPLITTING, FLOAT_EXPONENT_LIMIT, coordinate_needs, coordinate_reads, outside_float_range
 from stiefelsym.scene import REALIZATIONS
-from stiefelsym.backends.fields import (PRIME_LOW, PRIMES_IN_RANGE_LOWER, ConstantDegenerate, DegenerateError, DegreeField,
+from stiefelsym.backends.fields import (PRIME_BITS, PRIME_LOW, PRIMES_IN_RANGE_LOWER, ConstantDegenerate, DegenerateError, DegreeField,
                      ErrNum, Field, FloatField, ModularField, RationalField, SymbolicBudget, random_prime)
 from stiefelsym.backends.polyfield import SymbolicField
 from stiefelsym.backends.matrix import Mat, is_scene_number
@@ -558,7 +558,7 @@ def _exact_rank(R: Rank, field: Field, randomized: _RandomizedRank | None = None
         randomized.bounds.append(joint)
         return (f"rank >= {lower} (exact rank at a rational point) and rank <= {R.expected} with false-pass "
                 f"probability <= {joint:.1e} (rank {R.expected} at {pts} random points of prime fields "
-                f"p > 2^60; the ({R.expected + 1})-minors have degree <= {D}; the symbolic function-field rank "
+                f"p > 2^{PRIME_BITS}; the ({R.expected + 1})-minors have degree <= {D}; the symbolic function-field rank "
                 f"exceeded {SYMBOLIC_RANK_SECONDS:.0f} s); paper: {R.expected}", "ok")
     const = _constant_minor_rank(M, field)
     if const == R.expected == min(M.shape):
@@ -1423,7 +1423,8 @@ class mutation_analysis:
 POINTS_MIN = 2            # points per component, at least
 POINTS_CAP = 24           # points per component, at most
 RATIONAL_BOUND = 2**62    # rational points: integers uniform in [-B, B] (fewest points for the target)
-PRIME_BOUND_TEXT = (f"K >= {PRIMES_IN_RANGE_LOWER:.2g} primes in [2^60, 2^61) (Rosser-Schoenfeld: "
+PRIME_RANGE_TEXT = f"[2^{PRIME_BITS}, 2^{PRIME_BITS + 1})"
+PRIME_BOUND_TEXT = (f"K >= {PRIMES_IN_RANGE_LOWER:.2g} primes in [2^{PRIME_BITS}, 2^{PRIME_BITS + 1}) (Rosser-Schoenfeld: "
                     "x/ln x < pi(x) < 1.25506 x/ln x)")
 
 
@@ -1431,18 +1432,18 @@ def _per_point_bound(kind: str, deg: DegreeBound) -> float:
     """The probability that one point passes a false claim.
 
     rational: Schwartz-Zippel over S = [-B, B], conditioned on the point avoiding the denominators:
-    d/(|S| - d_den).  modular: a fresh prime p, uniform among the primes of [2^60, 2^61), then a
+    d/(|S| - d_den).  modular: a fresh prime p, uniform among the primes of [2^62, 2^63), then a
     uniform point of GF(p)^k.  The integer numerator N != 0 vanishes mod p only if p divides its
-    content; a nonzero coefficient c has |c| <= ||N||_1 <= 2^h, so at most floor(h/60) primes >= 2^60
-    divide it, out of K_eff >= K - floor(constant bits/60) admissible primes (a prime dividing a
+    content; a nonzero coefficient c has |c| <= ||N||_1 <= 2^h, so at most floor(h/62) primes >= 2^62
+    divide it, out of K_eff >= K - floor(constant bits/62) admissible primes (a prime dividing a
     constant of the claim is redrawn).  Otherwise N mod p is a nonzero polynomial of degree <= d:
-    Schwartz-Zippel d/(p - d_den) <= d/(2^60 - d_den)."""
+    Schwartz-Zippel d/(p - d_den) <= d/(2^62 - d_den)."""
     d = max(deg.numerator, 0)
     if kind == "rational":
         S = 2 * RATIONAL_BOUND + 1
         return 0.0 if d == 0 else min(1.0, d / max(S - deg.denominator, 1))
-    k_eff = PRIMES_IN_RANGE_LOWER - math.floor(deg.constant_bits / 60)
-    content = math.floor(deg.height / 60) / k_eff
+    k_eff = PRIMES_IN_RANGE_LOWER - math.floor(deg.constant_bits / PRIME_BITS)
+    content = math.floor(deg.height / PRIME_BITS) / k_eff
     zippel = 0.0 if d == 0 else d / max(PRIME_LOW - deg.denominator, 1)
     return min(1.0, content + zippel)
 
@@ -1663,11 +1664,11 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
            f" on each of the {components} pairs of components of (X, Y) in O(n) x O(n)" if components == 4 else "")
     joint = max(math.prod(p) for p in per_point) if point_degs else eps ** points
     if kind == "modular":
-        how = (f"each point over its own prime p, drawn uniformly from the primes in [2^60, 2^61) by the seed "
+        how = (f"each point over its own prime p, drawn uniformly from the primes in {PRIME_RANGE_TEXT} by the seed "
                f"(uniform odd integers until one is prime), parameters uniform in GF(p); primes: "
                f"{', '.join(str(p) for p in primes)}; numerator degree <= d = {deg.numerator}, log2 of its L1 norm "
-               f"<= h = {deg.height:.1f}; per point: a false pass needs p | N (at most floor(h/60) of the "
-               f"{PRIME_BOUND_TEXT}) or N(x) = 0 mod p (Schwartz-Zippel): <= floor(h/60)/K + d/(2^60 - d_den) "
+               f"<= h = {deg.height:.1f}; per point: a false pass needs p | N (at most floor(h/{PRIME_BITS}) of the "
+               f"{PRIME_BOUND_TEXT}) or N(x) = 0 mod p (Schwartz-Zippel): <= floor(h/{PRIME_BITS})/K + d/(2^{PRIME_BITS} - d_den) "
                f"= {eps:.1e}")
     else:
         how = (f"parameters uniform integers in [-2^{RATIONAL_BOUND.bit_length() - 1}, "
@@ -1883,7 +1884,7 @@ def _confirm_text(exact: Result) -> str:
         if exact.false_pass_bound == 0 and not m:
             return f"confirmed exactly: {exact.certificate}"
         degree = max((o.degree for o in exact.checks if o.degree is not None), default=None)
-        return (f"confirmed exactly: every residual is 0 at {where} (a point over its own prime in [2^60, 2^61)); "
+        return (f"confirmed exactly: every residual is 0 at {where} (a point over its own prime in {PRIME_RANGE_TEXT}); "
                 f"a residual that is not identically 0 vanishes there with probability <= "
                 f"{exact.false_pass_bound:.1e} <= 2^{math.log2(CONFIRM_TARGET):.0f} (Schwartz-Zippel with each "
                 f"point's own bound{f', numerator degree <= {degree}' if degree is not None else ''})")

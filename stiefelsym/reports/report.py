@@ -84,7 +84,7 @@ METHOD_MEANING = {
               "zero on the constraint set, or a rank or count computed over the field of the chart's "
               "parameters; proves or refutes."),
     "rational": "random exact points over ℚ; passes with the bound p below.",
-    "modular": "random exact points over prime fields (primes near 2⁶⁰); passes with the bound p below.",
+    "modular": "random exact points over prime fields (primes near 2⁶²); passes with the bound p below.",
     "auto": "the fastest proof-grade method for the claim at that size.",
     "float": "floating point at random real points, with a running error bound and precision escalation.",
     "ball": ("rigorous interval (ball) arithmetic at the float method's points: a certified nonzero "
@@ -104,8 +104,8 @@ BOUND_EXPLANATION = (
     "a claim are rational functions in the free parameters of a chart of T*V; a "
     "randomized check evaluates their numerators exactly at several independent "
     "points.  Over a prime field each point has its own prime, drawn from the seed "
-    "among the primes in [2⁶⁰, 2⁶¹), and the bound adds the chance h/(60·K) that the "
-    "prime divides the numerator (h bounds its height, K ≥ 1.9·10¹⁶ primes).  The "
+    "among the primes in [2⁶², 2⁶³), and the bound adds the chance h/(62·K) that the "
+    "prime divides the numerator (h bounds its height, K ≥ 7.6·10¹⁶ primes).  The "
     "number of points is chosen so that p ≤ 10⁻³⁰.  The bound p is the probability "
     "that a false statement would have passed this run.  It concerns the random "
     "choices of the run only, which the seed fixes, for a claim written independently "
