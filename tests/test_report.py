@@ -549,3 +549,19 @@ def test_the_report_of_a_claims_file_counts_its_statements_not_the_papers():
     assert "Of the 2 statements verified, 2 hold as printed" in md and "the paper's" not in md.split("##")[0]
     assert "every verdict is the one its claim expects" in md
     assert "Of the paper's 2 checkable statements" in render_markdown(rs)
+
+
+def test_how_obtained_names_the_sizes_of_each_reduction():
+    """A method whose runs used different charts lists each chart with the sizes it proved; a method with one
+    chart for every run is named alone."""
+    runs = [result("prep", 3, 2, "exact", "proved", reductions=["the Cayley chart"]),
+            result("prep", 4, 4, "exact", "proved", reductions=["the chart X = I"]),
+            result("prep", 5, 5, "exact", "proved", reductions=["the chart X = I"]),
+            result("prep", 6, 2, "modular", "checked", reductions=["points of the Cayley chart"]),
+            result("prep", 7, 2, "modular", "checked", reductions=["points of the Cayley chart"])]
+    (c,) = group_by_claim(runs)
+    assert c.how_obtained() == [("exact at (3,2)", "the Cayley chart"), ("exact at (4,4), (5,5)", "the chart X = I"),
+                                ("modular", "points of the Cayley chart")]
+    md = render_markdown(runs)
+    assert "- exact at (4,4), (5,5): the chart X = I" in md
+    assert "- modular: points of the Cayley chart" in md

@@ -202,12 +202,19 @@ class ClaimResults:
                 if not r.expected]
 
     def how_obtained(self) -> list[tuple[str, str]]:
-        """(method, reductions) once per method, in order of appearance."""
-        out: dict[str, list[str]] = {}
+        """(method, reductions) in order of appearance: once per method where all its runs used the same
+        reductions, otherwise once per set of reductions, the method named with the sizes that used it
+        ("exact at (4,4), (5,5)"), so that a reader sees which chart or reduction proved which size."""
+        out: dict[str, dict[tuple[str, ...], list[str]]] = {}
         for r in self.printed:
-            seen = out.setdefault(r.method, [])
-            seen += [x for x in r.reductions if x not in seen]
-        return [(m, "; ".join(xs)) for m, xs in out.items() if xs]
+            if r.reductions:
+                out.setdefault(r.method, {}).setdefault(tuple(r.reductions), []).append(r.size)
+        how = []
+        for m, groups in out.items():
+            for reductions, sizes in groups.items():
+                label = m if len(groups) == 1 else f"{m} at {', '.join(dict.fromkeys(sizes))}"
+                how.append((label, "; ".join(reductions)))
+        return how
 
     def notes(self) -> list[Result]:
         """Results whose message the reader needs: not passing, or not expected."""
