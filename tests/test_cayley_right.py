@@ -14,6 +14,7 @@ from stiefelsym.claims import Claim, load_catalog
 from stiefelsym.ir import compile_claim
 from stiefelsym.ir.passes import right_action_breaks
 from stiefelsym.methods import cayley_right
+from test_sec8 import cones_of_a_plus_pp  # noqa: E402 - the corrupted cones of the section's tests
 from stiefelsym.methods.fixed_size import run_exact
 from stiefelsym.scene import REALIZATIONS, Scene
 
@@ -95,25 +96,13 @@ def test_r_one_keeps_its_chart_and_r_n_takes_the_identity():
     assert cayley_right.applies(_graph(_reflections_forget_S_on_P, 3, 3), "standard", 3, 3)
 
 
-def _cones_with_a_plus_ppt(s):
-    """(chasles-cones-real) with A + PPᵀ in place of A − PPᵀ in the determinant: a wrong statement."""
-    Q = s.In - s.X @ s.X.T
-    M = Q @ (s.A + s.P @ s.P.T) @ Q
-    integrals, _ = d.spectral_integrals(s, s.lam)
-    lam_r = s.q(1)
-    for _ in range(s.r):
-        lam_r = lam_r * s.lam
-    return {"lambda^r I_2r(lambda) - det(lambda I - Q(A + PP^T)Q)":
-            lam_r * integrals[s.r] - d.det_matrix(s, s.scalar_matrix(s.lam, s.n, "n") - M)}
-
-
 def test_the_chasles_cones_are_proved_at_3_2_on_the_reduced_chart_and_a_wrong_sign_refuted():
     c = load_catalog().get("chasles-cones-real")
     assert c.exact_at(3, 2)
     res = run_exact(c, 3, 2, 0)
     assert res.verdict == "proved", (res.verdict, res.message)
     assert any(RIGHT in x for x in res.reductions), res.reductions
-    bad = run_exact(_claim(_cones_with_a_plus_ppt), 3, 2, 0)
+    bad = run_exact(_claim(cones_of_a_plus_pp), 3, 2, 0)
     assert bad.verdict == "fails", (bad.verdict, bad.message)
     assert any(RIGHT in x for x in bad.reductions), bad.reductions
 
