@@ -30,3 +30,24 @@ def test_reads_of_r_the_right_chart_pass_missed_are_refuted_exactly():
     for c in SPLITS_TRUE:
         for size in ((3, 2), (4, 2)):
             assert verdicts(got, c, size) and verdicts(got, c, size) <= set(PASSING), (c, size, got)
+
+
+SQUARE = "s39_square_chart.py"
+
+
+def test_statements_true_at_x_equal_i_only_are_not_passed_at_r_equal_n():
+    """The chart X = I, P = W at r = n: P skew, tr X = n, X symmetric (through an untyped identity or zero) hold
+    at the chart's point only.  No hole: each is refused when traced (ℝⁿ and ℝʳ are different spaces at r = n, and
+    untyped pieces take the spaces they meet), under exact and modular alike; the true controls pass, near r = n
+    (the Woodbury chart) too."""
+    got = run_sizes(SQUARE, methods=("exact", "modular"), free=False)
+    false = ("adv-s39-sq-p-skew", "adv-s39-sq-trace-x", "adv-s39-sq-x-sym-untyped-identity",
+             "adv-s39-sq-x-sym-untyped-zero")
+    for c in false:
+        for size in ((3, 3), (4, 4)):
+            seen = verdicts(got, c, size)
+            assert seen and not seen & set(PASSING), (c, size, got)
+    for c, sizes in (("adv-s39-sq-xxt-true", ((3, 3), (4, 4))), ("adv-s39-sq-untyped-true", ((3, 3), (4, 4))),
+                     ("adv-s39-near-xtax-true", ((4, 3), (5, 4)))):
+        for size in sizes:
+            assert verdicts(got, c, size) == {"proved", "checked"}, (c, size, got)
