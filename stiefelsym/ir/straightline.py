@@ -519,3 +519,242 @@ def compile_graph(g: Graph, leaves: Callable[[int, Any], Leaf],
 
 def _fail(why: str) -> Any:
     raise NotCompiled(why)
+
+
+# -- the same program at the level of coefficients ---------------------------------------------------
+#
+# Over Z[x] at small sizes the entries are polynomials of a few terms, and a polynomial operation of
+# the program costs what calling the polynomial library costs (about half a microsecond), not its
+# arithmetic.  :func:`coefficient_program` writes the same program once more, one level down: every
+# value of the program is a sum of terms c_m x^m over the monomials m it can have -- its *support*,
+# found while writing from the supports of its operands (m1 + m2 for a product, the union for a sum),
+# never from the values of the coefficients -- and each coefficient is a line of integer arithmetic
+# on the coefficients of the inputs.  What is compiled in is the monomials of the inputs (the
+# pattern of the chart's coordinates one level finer) and which terms of which operands meet in
+# which monomial; what the program computes at every run is every coefficient of every entry of
+# every output, from the coefficients of the inputs, in exact integer arithmetic.  No coefficient is
+# dropped or cancelled while writing: a monomial whose coefficient is 0 at the run (x - x) is
+# computed and is 0 then.  An entry of an output is 0 exactly when every one of its coefficients is.
+
+
+class _CoefficientWriter:
+    """The lines of the coefficient program (``cap``: most integer operations it may take)."""
+
+    def __init__(self, cap: int) -> None:
+        self.lines: list[tuple[str, str, tuple[str, ...], int]] = []     # (target, expression, reads, ops)
+        self.seen: dict[str, str] = {}
+        self.k = 0
+        self.ops = 0
+        self.cap = cap
+        #: the monomial 1 (the exponents of a constant)
+        self.unit: tuple[int, ...] = ()
+
+    def emit(self, expr: str, reads: tuple[str, ...], ops: int) -> str:
+        hit = self.seen.get(expr)
+        if hit is not None:
+            return hit
+        self.ops += ops
+        if self.ops > self.cap:
+            raise NotCompiled(f"a coefficient program of more than {self.cap} integer operations")
+        name = f"c{self.k}"
+        self.k += 1
+        self.lines.append((name, expr, reads, ops))
+        self.seen[expr] = name
+        return name
+
+
+def _lit(c: int) -> str:
+    return str(c) if c >= 0 else f"({c})"
+
+
+def _scaled_name(c: int, a: str) -> str:
+    return a if c == 1 else f"-{a}" if c == -1 else f"{_lit(c)} * {a}"
+
+
+class _Sparse:
+    """A value of the program while writing its coefficient program: monomial -> atom, an atom being an
+    int (a constant of the program's text, folded like the program folds them) or (c, name): c times
+    the coefficient named ``name`` (c a nonzero int)."""
+
+    __slots__ = ("t", "w")
+
+    def __init__(self, t: dict, w: _CoefficientWriter) -> None:
+        self.t, self.w = t, w
+
+    def _lift(self, o: Any) -> "_Sparse":
+        if type(o) is _Sparse:
+            return o
+        if type(o) is int:
+            return _Sparse({self.w.unit: o} if o else {}, self.w)
+        raise NotCompiled(f"a coefficient program with a {type(o).__name__} in arithmetic")
+
+    def _add(self, x: Any, y: Any) -> Any:
+        if type(x) is int and type(y) is int:
+            return x + y
+        if type(x) is int:
+            x, y = y, x
+        w = self.w
+        if type(y) is int:
+            if y == 0:
+                return x
+            c, a = x
+            return (1, w.emit(f"{_scaled_name(c, a)} + {_lit(y)}", (a,), 1 + (c != 1)))
+        (c, a), (d, b) = x, y
+        if c == d:
+            a, b = sorted((a, b), key=_corder)
+            return (c, w.emit(f"{a} + {b}", (a, b), 1))
+        if c == -d:
+            return (c, w.emit(f"{a} - {b}", (a, b), 1))
+        return (1, w.emit(f"{_scaled_name(c, a)} + {_scaled_name(d, b)}", (a, b), 3))
+
+    def __add__(self, o: Any) -> "_Sparse":
+        o = self._lift(o)
+        t = dict(self.t)
+        for m, y in o.t.items():
+            x = t.get(m)
+            if x is None:
+                t[m] = y
+            else:
+                z = self._add(x, y)
+                if type(z) is int and z == 0:
+                    del t[m]        # two constants of the program's text that sum to 0
+                else:
+                    t[m] = z
+        return _Sparse(t, self.w)
+
+    __radd__ = __add__
+
+    def __neg__(self) -> "_Sparse":
+        return _Sparse({m: -x if type(x) is int else (-x[0], x[1]) for m, x in self.t.items()}, self.w)
+
+    def __sub__(self, o: Any) -> "_Sparse":
+        return self + (-self._lift(o))
+
+    def __rsub__(self, o: Any) -> "_Sparse":
+        return self._lift(o) + (-self)
+
+    def __mul__(self, o: Any) -> "_Sparse":
+        o = self._lift(o)
+        w = self.w
+        acc: dict[tuple, list] = {}
+        for m1, x in self.t.items():
+            for m2, y in o.t.items():
+                m = tuple(p + q for p, q in zip(m1, m2))
+                acc.setdefault(m, []).append((x, y))
+        t: dict[tuple, Any] = {}
+        for m, pairs in acc.items():
+            const = 0
+            terms: list[tuple[int, str, tuple[str, ...]]] = []     # (c, "a * b" or "a", reads)
+            for x, y in pairs:
+                if type(x) is int and type(y) is int:
+                    const += x * y
+                elif type(x) is int or type(y) is int:
+                    k, (c, a) = (x, y) if type(x) is int else (y, x)
+                    if k:
+                        terms.append((k * c, a, (a,)))
+                else:
+                    (c, a), (d, b) = x, y
+                    a, b = sorted((a, b), key=_corder)
+                    terms.append((c * d, f"{a} * {b}", (a, b)))
+            if not terms:
+                if const:
+                    t[m] = const
+                continue
+            if len(terms) == 1 and not const:
+                c, e, reads = terms[0]
+                t[m] = (c, e) if len(reads) == 1 and e == reads[0] else (c, w.emit(e, reads, 1))
+                continue
+            terms.sort(key=lambda z: z[1])
+            parts, ops = [], 0
+            for i, (c, e, reads) in enumerate(terms):
+                ops += (" * " in e) + (abs(c) != 1) + (i > 0)
+                s = e if abs(c) == 1 else f"{abs(c)} * {e}"
+                parts.append((s if c > 0 else f"-{s}") if i == 0 else f" + {s}" if c > 0 else f" - {s}")
+            if const:
+                parts.append(f" + {const}" if const > 0 else f" - {-const}")
+                ops += 1
+            t[m] = (1, w.emit("".join(parts), tuple(x for _, _, rd in terms for x in rd), ops))
+        return _Sparse(t, w)
+
+    __rmul__ = __mul__
+
+
+def _corder(name: str) -> tuple[int, int]:
+    return (0 if name[0] == "i" else 1, int(name[1:]))
+
+
+class CoefficientProgram:
+    """A program over Z[x] written at the level of coefficients: ``function(C)`` gives, from the
+    coefficients ``C`` of the inputs (in the order of ``terms``), the tuple of the computed
+    coefficients of the outputs; ``entries``: for every output (in order), its rows of entries, each
+    a pair (constant terms, slots): the terms that are constants of the program's text ((monomial,
+    int) pairs) and the computed ones ((index into the tuple, monomial, c): c times that value is the
+    coefficient of the monomial); ``operations``: integer operations per run."""
+
+    def __init__(self, source: str, entries: list, operations: int, constant_terms: bool) -> None:
+        self.source, self.entries, self.operations = source, entries, operations
+        #: whether some output has a term that is a constant of the program's text (then an output is
+        #: not 0 when its computed coefficients are)
+        self.constant_terms = constant_terms
+        scope: dict[str, Any] = {}
+        exec(compile(source, "<coefficient program>", "exec"), scope)   # noqa: S102 - generated from the program
+        self.function = scope["coefficients"]
+
+
+def coefficient_program(prog: Program, terms: list[list[tuple[tuple[int, ...], int]]], nvars: int,
+                        cap: int) -> CoefficientProgram:
+    """``prog`` (a program over Z[x]: no rational constants) written at the level of coefficients, for
+    inputs whose terms are ``terms`` (per input, its (monomial, coefficient) pairs; the coefficients
+    are the new program's inputs, in that order, the monomials are compiled in); ``nvars``: the
+    length of a monomial; at most ``cap`` integer operations per run (:class:`NotCompiled` beyond)."""
+    if prog.constants:
+        raise NotCompiled("a program with rational constants (over Q[x])")
+    w = _CoefficientWriter(cap)
+    w.unit = (0,) * nvars
+    xs, k = [], 0
+    for tt in terms:
+        t = {}
+        for m, c in tt:
+            if len(m) != nvars or not c:
+                raise NotCompiled("an input term that is not a monomial of the ring with a nonzero coefficient")
+            t[tuple(m)] = (1, f"i{k}")
+            k += 1
+        xs.append(_Sparse(t, w))
+    scope: dict[str, Any] = {"ZERO": _Sparse({}, w)}
+    exec(compile(prog.source, "<straight-line program>", "exec"), scope)   # noqa: S102 - generated from the graph
+    outs = scope["program"](xs)
+    slots: list[str] = []
+    entries = []
+    has_constants = False
+    for m in outs:
+        rows = []
+        for row in m:
+            out_row = []
+            for e in row:
+                if type(e) is not _Sparse:
+                    raise NotCompiled("an output entry that is not a polynomial")
+                consts = tuple((mono, x) for mono, x in e.t.items() if type(x) is int)
+                has_constants = has_constants or bool(consts)
+                sl = []
+                for mono, x in e.t.items():
+                    if type(x) is not int:
+                        sl.append((len(slots), mono, x[0]))
+                        slots.append(x[1])
+                out_row.append((consts, tuple(sl)))
+            rows.append(tuple(out_row))
+        entries.append(tuple(rows))
+    live = set(slots)
+    body: list[str] = []
+    ops = 0
+    for target, expr, reads, n_ops in reversed(w.lines):
+        if target in live:
+            body.append(f"    {target} = {expr}")
+            live.update(reads)
+            ops += n_ops
+    body.reverse()
+    unpack = ", ".join(f"i{j}" for j in range(k))
+    src = "\n".join(["def coefficients(C):",
+                     f"    {unpack}, = C" if k else "    pass",
+                     *body,
+                     f"    return ({', '.join(slots)},)" if slots else "    return ()"]) + "\n"
+    return CoefficientProgram(src, entries, ops, has_constants)

@@ -643,8 +643,15 @@ def _reviewed_function(claim: Claim, func: Callable) -> bool:
 def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = None,
               time_budget: float | None = EXACT_TIME_LIMIT) -> Result:
     func = func or claim.func
+    if _LOAN is None and not _MUTATION_ANALYSIS:
+        plan = _PLANS.get((id(claim), id(func), n, r))
+        if plan is not None and plan.claim is claim and plan.func is func:
+            fast = plan.run(seed, time_budget)
+            if fast is not None:
+                return fast
     res = _base_result(claim, n, r, "exact", None)
     t0 = time.perf_counter()
+    calls: list = []        # the charts evaluated, each (key, its program or None)
     try:
         with time_limit(time_budget):
             cons = REALIZATIONS[claim.realization or "standard"]
@@ -674,7 +681,7 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                 missing = False   # the equivariant chart cannot provide an object (a_i, a second point)
                 try:
                     field, scene, checks = _chart_checks(
-                        (claim.id, claim.realization, "exact", n, r, "equivariant", right), build, func, graph)
+                        (claim.id, claim.realization, "exact", n, r, "equivariant", right), build, func, graph, calls)
                     coords = list(scene.tracker.used)
                 except PointRead:
                     continue      # only the diagonal chart raises it: the next chart fixes the point
@@ -760,7 +767,7 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                         return f, Scene(n, r, f, chart="cayley", component=comp, realization=claim.realization,
                                         cayley_right=right)
                     f2, sc, ch = _chart_checks((claim.id, claim.realization, "exact", n, r, "cayley", comp)
-                                               + (("right",) if right else ()), build_cayley, func, graph)
+                                               + (("right",) if right else ()), build_cayley, func, graph, calls)
                     evaluations.append(_evaluate(ch, f2, lambda R, f2=f2: _exact_rank(
                         R, f2, randomized, lambda: degree_bound(claim, n, r, func).numerator, key)))
                     if r == n and sc.second_point_read and len(comps) == 2:
@@ -841,7 +848,78 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
         res.false_pass_bound = min(1.0, sum(randomized.bounds))
         return res
     res.verdict = "proved"
+    _plan(claim, func, n, r, calls, res)
     return res
+
+
+class _Plan:
+    """How the exact method proved a claim's function at a size, for its next runs in the process: the
+    one chart it evaluated (the first it tried, through that chart's straight-line program
+    ``straight``, kept in :data:`_STRAIGHT` under ``skey``) and what the record says of the chart and
+    of the checks.  Which chart the method takes is a function of the graph (the looks at coordinates
+    its evaluation on a chart makes are the same at every run), as is the record's text; the values
+    are not: :meth:`run` runs the program, and gives the verdict ``proved`` only when every
+    coefficient of every entry of every check it computed at this run is 0 (any other run, and every
+    other verdict, goes the whole way)."""
+
+    __slots__ = ("claim", "func", "n", "r", "skey", "straight", "reductions", "outcomes", "certificate", "seconds")
+
+    def __init__(self, claim, func, n, r, skey, straight, reductions, outcomes, certificate, seconds) -> None:
+        self.claim, self.func, self.n, self.r, self.skey, self.straight = claim, func, n, r, skey, straight
+        self.reductions, self.outcomes, self.certificate, self.seconds = reductions, outcomes, certificate, seconds
+
+    def run(self, seed: int, time_budget: float | None) -> Result | None:
+        """The record of this run, or None where the whole method must run (the program was dropped, a
+        value is not 0, the program is too slow to run without the time limit)."""
+        st = self.straight
+        if _STRAIGHT.get(self.skey) is not st:
+            return None
+        if time_budget is not None and self.seconds * PLAN_RATIO > time_budget:
+            return None         # the time limit of the whole method applies
+        claim, n, r = self.claim, self.n, self.r
+        res = _base_result(claim, n, r, "exact", None)
+        t0 = time.perf_counter()
+        verify_engine("before an evaluation")
+        if not st.all_zero(st.fn(st.inputs)):
+            return None
+        res.seconds = time.perf_counter() - t0
+        res.reductions = list(self.reductions)
+        res.checks = [CheckOutcome(name, "zero", detail) for name, detail in self.outcomes]
+        why = division_probe(claim, n, r, self.func, seed)
+        res.seconds = time.perf_counter() - t0
+        if why:
+            res.verdict, res.message = "error", why
+            return res
+        res.certificate = self.certificate
+        res.verdict = "proved"
+        return res
+
+
+#: the plans of the exact method, per (claim, function, n, r) (see :class:`_Plan`)
+_PLANS: dict[tuple, _Plan] = {}
+#: a plan runs its program without the time limit of the method only when the program took at most
+#: this fraction of the time budget when the plan was made (a straight-line program does the same
+#: operations on the same inputs at every run)
+PLAN_RATIO = 1000
+
+
+def _plan(claim: Claim, func: Callable, n: int, r: int, calls: list, res: Result) -> None:
+    """Keep a plan of a proof (:class:`_Plan`) whose only chart evaluation was a run of a program
+    whose values are integer coefficients; outside the mutation analysis."""
+    if _LOAN is not None or _MUTATION_ANALYSIS or len(calls) != 1 or len(res.reductions) != 1 \
+            or claim.expect == "nonzero" or any(o.status != "zero" for o in res.checks):
+        return
+    skey, st = calls[0]
+    if type(st) is not _Straight or _STRAIGHT.get(skey) is not st:
+        return
+    t0 = time.perf_counter()
+    zero = st.all_zero(st.fn(st.inputs))
+    seconds = time.perf_counter() - t0
+    if not zero:
+        return
+    _keep(_PLANS, (id(claim), id(func), n, r),
+          _Plan(claim, func, n, r, skey, st, tuple(res.reductions), tuple((o.name, o.detail) for o in res.checks),
+                res.certificate, seconds))
 
 
 #: the straight-line programs of the exact method (:mod:`stiefelsym.ir.straightline`): per digest of the
@@ -853,6 +931,9 @@ _STRAIGHT_SEEN: dict[tuple, int] = {}
 STRAIGHT_AFTER = 1
 #: at most this many graphs and charts are kept (compiled or not; the oldest goes first)
 STRAIGHT_KEEP = 256
+#: a program over Z[x] runs at the level of coefficients where that takes at most this many integer
+#: operations per operation of the ring (:func:`stiefelsym.ir.straightline.coefficient_program`)
+COEFFICIENT_OPS = 20
 
 
 class _Straight:
@@ -860,18 +941,53 @@ class _Straight:
     on (its own field and scene, kept: the chart has no random draw, and its coordinates are the
     program's inputs), the tags of the checks and the record of looks at coordinates that the
     evaluation of the graph on the chart made (the same at every run: a function of the graph and
-    the chart), replayed into the scene's record at every run."""
+    the chart), replayed into the scene's record at every run.  ``fn(inputs)`` is the program that
+    runs: over the ring (its outputs the entries), or over Z at the level of coefficients
+    (``entries``: where each output entry's coefficients are in its values, see
+    :func:`stiefelsym.ir.straightline.coefficient_program`)."""
 
     __slots__ = ("fn", "field", "scene", "inputs", "outputs", "log", "ctx", "operations", "back", "zero", "ring",
-                 "version")
+                 "version", "entries", "constant_terms")
 
-    def __init__(self, fn, field, scene, inputs, outputs, log, ctx, operations, back) -> None:
+    def __init__(self, fn, field, scene, inputs, outputs, log, ctx, operations, back, coefficients=None) -> None:
         self.fn, self.field, self.scene, self.inputs, self.outputs = fn, field, scene, inputs, outputs
         self.log, self.ctx, self.operations = log, ctx, operations
         #: an output entry of the program's ring as a polynomial of the field's (None: the same ring)
         self.back = back
         self.ring = backend(field).ring
         self.zero, self.version = self.ring.zero, self.ring.version
+        self.entries, self.constant_terms = None, False
+        if coefficients is not None:
+            prog, cin = coefficients
+            self.fn, self.inputs, self.entries = prog.function, cin, prog.entries
+            self.constant_terms, self.operations = prog.constant_terms, prog.operations
+
+    def all_zero(self, values: Any) -> bool:
+        """Whether every entry of every check is 0 in the program's outputs ``values`` (of ``fn``)."""
+        if self.entries is not None:
+            return not self.constant_terms and not any(values)
+        return not any(x for m in values for row in m for x in row)
+
+    def values(self) -> tuple:
+        """The program's outputs at this run, as rows of entries of the field's ring per check."""
+        values = self.fn(self.inputs)
+        if self.entries is None:
+            back, zero = self.back, self.zero
+            return tuple(values) if back is None else \
+                tuple(tuple(tuple(back(x) if x else zero for x in row) for row in m) for m in values)
+        zero, from_dict = self.zero, self.ctx.from_dict
+        out = []
+        for m in self.entries:
+            rows = []
+            for row in m:
+                got = []
+                for consts, slots in row:
+                    d = {mono: c * values[k] for k, mono, c in slots if values[k]}
+                    d.update(consts)
+                    got.append(from_dict(d) if d else zero)
+                rows.append(tuple(got))
+            out.append(tuple(rows))
+        return tuple(out)
 
     def run(self) -> dict[str, Any]:
         """The checks, computed by the program from the chart's coordinates."""
@@ -880,24 +996,24 @@ class _Straight:
         tracker = self.scene.tracker
         tracker.restart()
         tracker.replay(self.log)
-        values = self.fn(self.inputs)
         checks = {}
-        field, ctx, wrap, back, zero = self.field, self.ctx, Mat._wrap_native, self.back, self.zero
-        for (name, (m, k), tags), rows in zip(self.outputs, values):
+        field, ctx, wrap = self.field, self.ctx, Mat._wrap_native
+        for (name, (m, k), tags), rows in zip(self.outputs, self.values()):
             if tags is None:        # a check that is a number: the exact backend's scalar
-                x = _RF(self.ring, (rows[0][0] if back is None else back(rows[0][0]) if rows[0][0] else zero, ()))
+                x = _RF(self.ring, (rows[0][0], ()))
                 x.v = self.version
                 checks[name] = x
                 continue
             a = np.empty((m, k), dtype=object)
             for i, row in enumerate(rows):
                 for j, x in enumerate(row):
-                    a[i, j] = x if back is None else back(x) if x else zero
+                    a[i, j] = x
             checks[name] = wrap(PolyMat(a, (), ctx), field, tags, tracker)
         return checks
 
 
-def _chart_checks(key: tuple, build: Callable[[], tuple], func: Callable, graph: Any = None) -> tuple:
+def _chart_checks(key: tuple, build: Callable[[], tuple], func: Callable, graph: Any = None,
+                  calls: list | None = None) -> tuple:
     """(field, scene, checks) of the claim's graph on a chart of the exact method (``key``: the claim,
     realization, method, size, chart and its variant; ``build``: the chart's field and scene).
 
@@ -909,7 +1025,8 @@ def _chart_checks(key: tuple, build: Callable[[], tuple], func: Callable, graph:
     the lent charts of the mutation analysis are evaluated by the interpreter.  A chart that cannot
     provide an object the claim reads raises its CoordinateAccess (``graph``: the claim's graph at the size,
     when the caller has it), with the chart (``chart``: the field
-    and the scene)."""
+    and the scene).  ``calls``: a list to which the chart's key in :data:`_STRAIGHT` and the program
+    that ran (None: the interpreter) are appended."""
     if _LOAN is None:
         g = graph
         if g is None:
@@ -917,6 +1034,8 @@ def _chart_checks(key: tuple, build: Callable[[], tuple], func: Callable, graph:
             g = compile_claim(func, key[3], key[4], (cons.name, cons.build))
         skey = (g.digest(), *key[1:])
         hit = _STRAIGHT.get(skey)
+        if calls is not None:
+            calls.append((skey, hit if type(hit) is _Straight else None))
         if type(hit) is _Straight:
             return hit.field, hit.scene, hit.run()
         if hit is None:
@@ -924,6 +1043,8 @@ def _chart_checks(key: tuple, build: Callable[[], tuple], func: Callable, graph:
             if seen >= STRAIGHT_AFTER:
                 return _compile_straight(skey, g, build, func)
             _keep(_STRAIGHT_SEEN, skey, seen + 1)
+    elif calls is not None:
+        calls.append((None, None))
     field, scene = _symbolic_chart(key, build)
     try:
         return field, scene, call_claim(func, scene)
@@ -964,7 +1085,7 @@ def _keep(memo: dict, key: tuple, value: Any) -> None:
 
 def _straight(g: Any, field: Any, scene: Any, checks: dict, log: tuple, compile_graph: Callable) -> _Straight:
     """The compiled program of the graph on the chart of ``scene`` (see :func:`_compile_straight`)."""
-    from stiefelsym.ir.straightline import Leaf, NotCompiled
+    from stiefelsym.ir.straightline import Leaf, NotCompiled, coefficient_program
     from stiefelsym.backends.polyfield import PolyBackend, PolyMat, NotRational, _RF
     be = backend(field)
     if type(be) is not PolyBackend:
@@ -1027,6 +1148,7 @@ def _straight(g: Any, field: Any, scene: Any, checks: dict, log: tuple, compile_
         # skip the rational content of every operation) and its outputs come back to Q[x] exactly
         zctx, zero = _integer_ring(R.ctx)
         inputs = [zctx.from_dict({e: int(c.p) for e, c in x.to_dict().items()}) for x in inputs]
+        terms = [[(m, int(c)) for m, c in x.to_dict().items()] for x in inputs]
         fn = prog.function(zero)
         qzero, from_dict = R.zero, R.ctx.from_dict
         back = lambda x: from_dict(x.to_dict()) if x else qzero  # noqa: E731
@@ -1056,7 +1178,22 @@ def _straight(g: Any, field: Any, scene: Any, checks: dict, log: tuple, compile_
         if any(x != y for row, wrow in zip(rows, s.a.tolist()) for x, y in zip(row, wrow)):
             raise NotCompiled("the program disagrees with the interpreter (a defect of the compiler)")
         outputs.append((name, shape, want.tags))
-    return _Straight(fn, field, scene, inputs, outputs, log, R.ctx, prog.operations, back)
+    st = _Straight(fn, field, scene, inputs, outputs, log, R.ctx, prog.operations, back)
+    if back is not None:
+        # over Z[x], the same program at the level of coefficients where it takes at most
+        # COEFFICIENT_OPS integer operations per operation of the ring (a call of the polynomial
+        # library costs about as much as that many integer operations); its values must be the
+        # ring program's (the interpreter's) entry by entry, or the graph stays with the interpreter
+        try:
+            cp = coefficient_program(prog, terms, R.ctx.nvars(), COEFFICIENT_OPS * max(prog.operations, 1))
+        except NotCompiled:
+            return st
+        cst = _Straight(fn, field, scene, inputs, outputs, log, R.ctx, prog.operations, back,
+                        (cp, [c for tt in terms for _, c in tt]))
+        if [[list(row) for row in m] for m in cst.values()] != got:
+            raise NotCompiled("the coefficient program disagrees with the interpreter (a defect of the compiler)")
+        return cst
+    return st
 
 
 def _integer_ring(ctx: Any) -> tuple:
