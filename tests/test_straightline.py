@@ -52,6 +52,7 @@ def fresh(monkeypatch):
     """No program compiled before the test, and none kept after it."""
     monkeypatch.setattr(fs, "_STRAIGHT", {})
     monkeypatch.setattr(fs, "_STRAIGHT_SEEN", {})
+    monkeypatch.setattr(fs, "_PLANS", {})
     monkeypatch.setattr(fs, "STRAIGHT_AFTER", 1)
     return fs
 
@@ -80,7 +81,7 @@ def test_la1_through_the_program_is_proved_and_the_sign_flip_fails(fresh, monkey
     good, bad = _claim(la1), _claim(la1_sign_flipped, "la1-sign-flipped")
     want_good, want_bad = _interpreted(monkeypatch, good, n, r), _interpreted(monkeypatch, bad, n, r)
     assert want_good.verdict == "proved" and want_bad.verdict == "fails"
-    for _ in range(3):      # counted, compiled, run as a program
+    for _ in range(5):      # counted, compiled, planned (a proof), run by its plan
         assert _record(run_exact(good, n, r, 0)) == _record(want_good)
         got = run_exact(bad, n, r, 0)
         assert got.verdict == "fails" and got.residual and _record(got) == _record(want_bad)
@@ -126,7 +127,7 @@ def test_catalog_sample_same_verdicts_as_the_interpreter(fresh, monkeypatch, cat
         if not c.sizes.admits(n, r):
             continue
         want = _interpreted(monkeypatch, c, n, r)
-        for _ in range(3):
+        for _ in range(5):      # counted, compiled, planned (a proof), run by its plan
             assert _record(run_exact(c, n, r, 0)) == _record(want), cid
         cons = REALIZATIONS[c.realization]
         d = compile_claim(c.func, n, r, (cons.name, cons.build)).digest()
@@ -270,7 +271,7 @@ def test_new_ops_compile_prove_and_a_corruption_fails(fresh, monkeypatch, good, 
         c = _claim(func, func.__name__.replace("_", "-"))
         want = _interpreted(monkeypatch, c, n, r)
         assert want.verdict == verdict, (func.__name__, want.message)
-        for _ in range(3):      # counted, compiled, run as a program
+        for _ in range(5):      # counted, compiled, planned (a proof), run by its plan
             assert _record(run_exact(c, n, r, 0)) == _record(want), func.__name__
         progs = _programs(func, n, r)
         assert progs and all(type(p) is fs._Straight for p in progs.values()), (func.__name__, progs)
@@ -328,3 +329,120 @@ def numbers_term_dropped(s):
 def test_checks_that_are_numbers_compile_and_a_corruption_fails(fresh, monkeypatch, n, r):
     test_new_ops_compile_prove_and_a_corruption_fails(fresh, monkeypatch, numbers_as_checks,
                                                       [numbers_sign_flipped, numbers_term_dropped], n, r)
+
+
+# -- programs at the level of coefficients, and the plans of proofs ---------------------------------
+
+def _random_program(rng, k):
+    """A random straight-line program over k inputs in the compiler's forms (sums, differences and
+    products of values and integer constants, x - x, coefficients riding along, signed outputs)."""
+    names, lines = [f"x{j}" for j in range(k)], []
+
+    def lit():
+        c = rng.choice([-3, -2, -1, 1, 2, 5])
+        return str(c) if c > 0 else f"({c})"
+    for j in range(rng.randint(3, 14)):
+        a, b = rng.choice(names), rng.choice(names)
+        expr = rng.choice([f"{a} + {b}", f"{a} - {b}", f"{a} * {b}", f"{a} - {a}", f"{a} + {lit()}",
+                           f"{lit()} - {a}", f"{lit()} * {a} + {b}", f"{a} + {lit()} * {b}",
+                           f"{lit()} * {a} + {lit()} * {b}", f"{a} * {a}"])
+        lines.append(f"    v{j} = {expr}")
+        names.append(f"v{j}")
+    outs = [rng.choice([f"{rng.choice(names)}", f"-{rng.choice(names)}", f"{lit()} * {rng.choice(names)}",
+                        "ZERO", f"ZERO + {lit()}"]) for _ in range(4)]
+    src = "\n".join(["def program(X):", "    " + ", ".join(f"x{j}" for j in range(k)) + ", = X", *lines,
+                     "    return (((" + ", ".join(outs[:2]) + ",), (" + ", ".join(outs[2:]) + ",),),)"]) + "\n"
+    from stiefelsym.ir.straightline import Program
+    return Program(src, [(0, 0, j) for j in range(k)], {"M": (2, 2)}, len(lines))
+
+
+def test_coefficient_programs_compute_what_the_ring_program_computes():
+    import random
+    import flint
+    from stiefelsym.ir.straightline import coefficient_program
+    rng = random.Random(20)
+    ctx = flint.fmpz_mpoly_ctx.get(("a", "b", "c", "d"), "degrevlex")
+    zero = ctx.from_dict({})
+    for _ in range(300):
+        k = rng.randint(1, 4)
+        prog = _random_program(rng, k)
+        xs = [ctx.from_dict({tuple(rng.randint(0, 2) for _ in range(4)): rng.choice([-4, -1, 1, 3, 7])
+                             for _ in range(rng.randint(1, 3))}) for _ in range(k)]
+        want = [[list(row) for row in m] for m in prog.function(zero)(xs)]
+        terms = [[(m, int(c)) for m, c in x.to_dict().items()] for x in xs]
+        cp = coefficient_program(prog, terms, 4, 10**6)
+        values = cp.function([c for tt in terms for _, c in tt])
+        got = [[[ctx.from_dict({**{mono: c * values[i] for i, mono, c in slots if values[i]}, **dict(consts)})
+                 for consts, slots in row] for row in m] for m in cp.entries]
+        assert got == want, prog.source
+
+
+def test_a_coefficient_program_computes_x_minus_x_and_decides_on_the_values():
+    from stiefelsym.ir.straightline import Program, coefficient_program
+    prog = Program("def program(X):\n    x0, = X\n    v0 = x0 - x0\n    return (((v0,),),)\n", [(0, 0, 0)],
+                   {"M": (1, 1)}, 1)
+    cp = coefficient_program(prog, [[((1, 0), 3), ((0, 2), -1)]], 2, 100)
+    assert "i0 - i0" in cp.source and "i1 - i1" in cp.source      # written, not cancelled
+    assert len(cp.entries[0][0][0][1]) == 2                        # both coefficients are computed
+    assert cp.function([3, -1]) == (0, 0) and cp.function([3, 5]) == (0, 0)
+    # beyond its budget of operations a program stays with the ring
+    with pytest.raises(NotCompiled):
+        coefficient_program(prog, [[((1, 0), 3), ((0, 2), -1)]], 2, 1)
+
+
+def test_a_coefficient_program_that_disagrees_with_the_interpreter_is_not_used(monkeypatch):
+    from stiefelsym.ir import straightline
+    real = straightline.coefficient_program
+
+    def wrong(prog, terms, nvars, cap):
+        cp = real(prog, terms, nvars, cap)
+        return straightline.CoefficientProgram(cp.source.replace(" + ", " - ", 1), cp.entries, cp.operations,
+                                               cp.constant_terms)
+    monkeypatch.setattr(straightline, "coefficient_program", wrong)
+    f = SymbolicField()
+    sc = Scene(3, 1, f, chart="equivariant", realization="standard", right_reduction=True)
+    checks = fs.call_claim(la1, sc)
+    cons = REALIZATIONS["standard"]
+    g = compile_claim(la1, 3, 1, (cons.name, cons.build))
+    with pytest.raises(NotCompiled, match="coefficient program disagrees"):
+        fs._straight(g, f, sc, checks, (), straightline.compile_graph)
+    monkeypatch.setattr(straightline, "coefficient_program", real)
+    st = fs._straight(g, f, sc, checks, (), straightline.compile_graph)
+    assert st.entries is not None and st.fn(st.inputs) and not any(st.fn(st.inputs))
+
+
+@pytest.mark.parametrize("n,r", [(3, 1), (4, 2)])
+def test_a_plan_runs_the_program_and_decides_on_its_values(fresh, monkeypatch, n, r):
+    good, bad = _claim(la1), _claim(la1_sign_flipped, "la1-sign-flipped")
+    want_good, want_bad = _interpreted(monkeypatch, good, n, r), _interpreted(monkeypatch, bad, n, r)
+    for _ in range(4):
+        assert _record(run_exact(good, n, r, 0)) == _record(want_good)
+        assert _record(run_exact(bad, n, r, 0)) == _record(want_bad)
+    (plan,) = fs._PLANS.values()            # a proof only: a refutation goes the whole way at every run
+    (p_bad,) = _programs(la1_sign_flipped, n, r).values()
+    assert p_bad.entries is not None       # the corrupted claim failed through its coefficient program
+    assert plan.claim is good and plan.straight.entries is not None
+    st = plan.straight
+    # the plan's runs: the program at every run, and no chart evaluated otherwise
+    calls, real = [], st.fn
+    with monkeypatch.context() as m:
+        m.setattr(st, "fn", lambda xs: calls.append(1) or real(xs))
+        m.setattr(fs, "_chart_checks", lambda *a, **k: pytest.fail("a chart evaluated"))
+        for _ in range(3):
+            assert _record(run_exact(good, n, r, 0)) == _record(want_good)
+    assert calls == [1, 1, 1]
+    # a value that is not 0 at a run is never proved through the plan: the whole method runs, through
+    # the same program, and the claim fails with that value as its residual
+    values = real(st.inputs)
+    assert len(values) > 1 and not any(values)
+    with monkeypatch.context() as m:
+        m.setattr(st, "fn", lambda xs: (1,) + real(xs)[1:])
+        got = run_exact(good, n, r, 0)
+        assert got.verdict == "fails" and got.residual
+    assert _record(run_exact(good, n, r, 0)) == _record(want_good) and fs._PLANS
+    # a program dropped from the memo drops its plan
+    fs._STRAIGHT.clear()
+    assert _record(run_exact(good, n, r, 0)) == _record(want_good)      # compiled again (counted before)
+    assert st not in fs._STRAIGHT.values() and fs._PLANS[(id(good), id(good.func), n, r)].straight is st
+    assert _record(run_exact(good, n, r, 0)) == _record(want_good)      # the new program, planned again
+    assert fs._PLANS[(id(good), id(good.func), n, r)].straight is not st

@@ -636,6 +636,8 @@ class _Sparse:
     def __mul__(self, o: Any) -> "_Sparse":
         o = self._lift(o)
         w = self.w
+        if w.ops + len(self.t) * len(o.t) > w.cap:      # every pair of terms is at least one operation
+            raise NotCompiled(f"a coefficient program of more than {w.cap} integer operations")
         acc: dict[tuple, list] = {}
         for m1, x in self.t.items():
             for m2, y in o.t.items():
