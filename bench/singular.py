@@ -10,9 +10,16 @@ Both are timed in one run of this script, warm and in-process, best of several r
 
 * Singular: ``std`` + ``reduce`` (its ``rtimer`` in µs), and the time it took to build the
   residual before that;
-* stiefelsym: ``run_exact`` in this process (the graph evaluated on the chart, the verdict
-  and its record), and ``run_one`` as the CLI runs it (n >= 4 in a forked child with a hard
-  time limit, whose fork is part of the wall time).
+* stiefelsym: ``run_exact`` in this process (the residual computed on the chart the method
+  takes, the verdict and its record), warm: the claim's graph (traced on the first run), its
+  straight-line program for the chart (compiled on the second run; over Z[x], at the level of the
+  coefficients of the chart's coordinates) and the plan of the proof (which chart, the record's
+  text: made on the third run) are kept in the process; at every timed run the program computes
+  every coefficient of every entry of the residual from the chart's coordinates and the verdict is
+  decided on those values.  Beside it, in the same run: the first run at that size (cold: the
+  trace and the interpreter), the path before coefficient programs and plans (the program over
+  flint's polynomials, the whole method at every run), and ``run_one`` as the CLI runs it (n >= 4
+  in a forked child with a hard time limit, whose fork is part of the wall time).
 
 Where Singular is not installed, the script says so and exits 0.  Writes
 ``reports/bench-singular.{json,md}`` (timings: not part of the reproducible reports).
@@ -44,6 +51,7 @@ sys.path.insert(0, str(ROOT / "bench"))
 from bench import LA1, _commit, _warm_best, neumann_flow  # noqa: E402
 from stiefelsym import comm  # noqa: E402
 from stiefelsym.claims import Size  # noqa: E402
+from stiefelsym.methods import fixed_size as fs  # noqa: E402
 from stiefelsym.methods.fixed_size import run_exact  # noqa: E402
 from stiefelsym.run.runner import run_one  # noqa: E402
 
@@ -119,10 +127,44 @@ def singular(exe: str, n: int, r: int, reps: int, timeout: float, corrupt: bool 
             "process_seconds": time.perf_counter() - t0}
 
 
+def _fresh_memos() -> None:
+    """Forget the exact method's programs and plans (not the traced graphs)."""
+    fs._STRAIGHT.clear()
+    fs._STRAIGHT_SEEN.clear()
+    fs._PLANS.clear()
+
+
+def _program(n: int, r: int) -> str:
+    """What the warm runs ran at (n, r): the program's kind and its operations per run."""
+    progs = [v for k, v in fs._STRAIGHT.items() if type(v) is fs._Straight and k[3:5] == (n, r)]
+    plans = [p for p in fs._PLANS.values() if p.n == n and p.r == r]
+    if not progs:
+        return "interpreter"
+    kind = ", ".join(f"{p.operations} integer operations on coefficients" if p.entries is not None else
+                     f"{p.operations} operations of the polynomial ring" for p in progs)
+    return kind + ("; planned" if plans else "")
+
+
 def ours(n: int, r: int, runs: int) -> dict[str, Any]:
+    _fresh_memos()
+    c0 = time.process_time()
+    first = run_exact(LA1, n, r, 0)
+    cold = time.process_time() - c0
+    # the previous path: the program over flint's polynomials, the whole method at every run
+    coefficient_ops, fs.COEFFICIENT_OPS, fs.PLANS = fs.COEFFICIENT_OPS, 0, False
+    try:
+        _fresh_memos()
+        _wall, cpu_before, res_before = _warm_best(lambda: run_exact(LA1, n, r, 0), 5, runs)
+        before = _program(n, r)
+    finally:
+        fs.COEFFICIENT_OPS, fs.PLANS = coefficient_ops, True
+    _fresh_memos()
     _wall, cpu, res = _warm_best(lambda: run_exact(LA1, n, r, 0), 5, runs)
     wall_cli, _cpu, res_cli = _warm_best(lambda: run_one(LA1, Size(n, r), "exact", seed=0), 2, max(5, runs // 4))
-    return {"verdict": res.verdict, "seconds": cpu, "cli_verdict": res_cli.verdict, "cli_seconds": wall_cli}
+    return {"verdict": res.verdict, "seconds": cpu, "program": _program(n, r), "chart": res.reductions[0][:60],
+            "cold_verdict": first.verdict, "cold_seconds": cold,
+            "before_verdict": res_before.verdict, "before_seconds": cpu_before, "before_program": before,
+            "cli_verdict": res_cli.verdict, "cli_seconds": wall_cli}
 
 
 def _ms(x: float | None) -> str:
@@ -137,15 +179,24 @@ def markdown(doc: dict[str, Any]) -> str:
              f"{doc['singular']}.", "",
              "Singular: a standard basis of the ideal of XᵀX − I, XᵀP + PᵀX in ℚ[X, P, a, λ, κ] and the reduction of "
              "every entry of the LA1 residual by it (`std` + `reduce`, best of the repeats, its own timer); the "
-             "column 'build' is the time it took to form the residual before that (best of the repeats).  stiefelsym: `run_exact` in "
-             "this process (the claim's graph evaluated on the Cayley chart, the verdict and its record; CPU, "
-             "best of the repeats after 5 warm runs), and `run_one` as the CLI runs it (wall; for n ≥ 4 in a "
-             "forked child with a hard time limit).  ratio = Singular std+reduce / stiefelsym run_exact "
-             "(above 1: stiefelsym is ahead); since run_exact forms the residual as well as deciding it, the "
-             "last column compares it with Singular's build + std + reduce.", "",
+             "column 'build' is the time it took to form the residual before that (best of the repeats).  "
+             "stiefelsym: `run_exact` in this process (the residual computed on the chart the method takes, the "
+             "verdict and its record; CPU, best of the repeats after 5 warm runs).  Warm in the process: the "
+             "claim's graph (traced on the first run), its straight-line program for the chart (compiled on the "
+             "second run; over Z[x] at the level of the coefficients of the chart's coordinates, the monomials "
+             "compiled in) and the plan of the proof (the chart and the record's text, made on the third run); "
+             "at every timed run the program computes every coefficient of every entry of the residual from the "
+             "chart's coordinates, and the verdict is decided on those values.  'first run' is the first run at "
+             "that size in the process (CPU: the trace and the interpreter); 'previous path' the same warm runs "
+             "with the program over flint's polynomials and no plan (the whole method at every run); 'with the "
+             "fork' `run_one` as the CLI runs it (wall; for n ≥ 4 in a forked child with a hard time limit).  "
+             "ratio = Singular std+reduce / stiefelsym run_exact (above 1: stiefelsym is ahead); since run_exact "
+             "forms the residual as well as deciding it, the last column compares it with Singular's build + "
+             "std + reduce.", "",
              "| (n, r) | Singular std+reduce | Singular build | Singular: residual in the ideal | "
-             "stiefelsym exact | verdict | with the fork (CLI) | ratio | ratio with build |",
-             "| --- | ---: | ---: | --- | ---: | --- | ---: | ---: | ---: |"]
+             "stiefelsym exact (warm) | verdict | first run | previous path | with the fork (CLI) | ratio | "
+             "ratio with build |",
+             "| --- | ---: | ---: | --- | ---: | --- | ---: | ---: | ---: | ---: | ---: |"]
     for row in doc["rows"]:
         s, o = row["singular"], row["stiefelsym"]
         if s["status"] == "ok":
@@ -158,12 +209,17 @@ def markdown(doc: dict[str, Any]) -> str:
             sing, build, member, ratio = s["note"], "-", s["status"], "> " + f"{row['timeout'] / o['seconds']:,.0f}"
             ratio_all = ratio
         lines.append(f"| ({row['n']},{row['r']}) | {sing} | {build} | {member} | {_ms(o['seconds'])} | "
-                     f"{o['verdict']} | {_ms(o['cli_seconds'])} | {ratio} | {ratio_all} |")
+                     f"{o['verdict']} | {_ms(o['cold_seconds'])} | {_ms(o['before_seconds'])} | "
+                     f"{_ms(o['cli_seconds'])} | {ratio} | {ratio_all} |")
+    lines += ["", "What the warm runs ran, per size (the previous path in brackets):", ""]
+    lines += [f"* ({row['n']},{row['r']}): {row['stiefelsym']['program']} [{row['stiefelsym']['before_program']}]; "
+              f"chart: {row['stiefelsym']['chart']}.." for row in doc["rows"]]
     c = doc.get("control")
     if c:
         lines += ["", f"Negative control: with the sign of XXᵀ in L flipped, at (3,1) Singular leaves "
                   f"{c['nonzero_entries']} entries of the residual nonzero, and the exact method says "
-                  f"`{c['verdict']}`."]
+                  f"`{c['verdict']}` at each of {c['runs']} runs (the runs after the second through its "
+                  f"program: {c['program']})."]
     return "\n".join(lines) + "\n"
 
 
@@ -182,17 +238,30 @@ def main(argv: list[str] | None = None) -> int:
     vm = re.search(r"Singular for .*?version ([0-9.\-]+)", version) or re.search(r"version ([0-9][0-9.\-]*)", version)
     sizes = [tuple(int(x) for x in s.split(",")) for s in args.sizes] if args.sizes else list(SIZES)
     rows = []
-    print(f"{'(n, r)':<8} {'Singular':>14} {'stiefelsym':>12} {'ratio':>8}")
+    print("timed: Singular std + reduce (its build of the residual apart); stiefelsym run_exact warm (graph, "
+          "program and plan kept; every coefficient of the residual computed from the chart at every run), "
+          "the first run at the size (cold), and the previous path (flint's polynomials, no plan)")
+    print(f"{'(n, r)':<8} {'Singular':>14} {'build':>10} {'stiefelsym':>12} {'first run':>11} {'previous':>10} "
+          f"{'ratio':>8} {'w/ build':>9}")
     for n, r in sizes:
         s = singular(exe, n, r, 20 if n <= 3 else 5, args.timeout)
         o = ours(n, r, args.runs)
         rows.append({"n": n, "r": r, "singular": s, "stiefelsym": o, "timeout": args.timeout})
-        ratio = f"{s['seconds'] / o['seconds']:.2f}" if s["status"] == "ok" else "-"
-        print(f"({n},{r}){'':<3} {_ms(s.get('seconds')) if s['status'] == 'ok' else s['note']:>14} "
-              f"{_ms(o['seconds']):>12} {ratio:>8}")
+        ok = s["status"] == "ok"
+        ratio = f"{s['seconds'] / o['seconds']:.2f}" if ok else "-"
+        ratio_all = f"{(s['seconds'] + s['build_seconds']) / o['seconds']:.2f}" if ok else "-"
+        print(f"({n},{r}){'':<3} {_ms(s.get('seconds')) if ok else s['note']:>14} "
+              f"{_ms(s.get('build_seconds')) if ok else '-':>10} {_ms(o['seconds']):>12} {_ms(o['cold_seconds']):>11} "
+              f"{_ms(o['before_seconds']):>10} {ratio:>8} {ratio_all:>9}")
     bad = singular(exe, 3, 1, 1, args.timeout, corrupt=True)
-    control = {"nonzero_entries": bad.get("nonzero_entries"),
-               "verdict": run_exact(replace(LA1, func=la1_corrupted), 3, 1, 0).verdict}
+    _fresh_memos()
+    corrupted = replace(LA1, func=la1_corrupted)
+    verdicts = {run_exact(corrupted, 3, 1, 0).verdict for _ in range(5)}
+    control = {"nonzero_entries": bad.get("nonzero_entries"), "runs": 5,
+               "verdict": verdicts.pop() if len(verdicts) == 1 else " / ".join(sorted(verdicts)),
+               "program": _program(3, 1)}
+    print(f"negative control at (3,1), the sign of XXᵀ in L flipped: Singular leaves {control['nonzero_entries']} "
+          f"entries nonzero; run_exact says {control['verdict']} at each of 5 runs ({control['program']})")
     doc = {"generated": datetime.now(timezone.utc).strftime("%Y-%m-%d %H:%M:%S UTC"),
            "command": "python bench/singular.py" + (" " + " ".join(argv) if argv else ""),
            "commit": _commit(), "platform": platform.platform(),

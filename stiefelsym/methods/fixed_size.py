@@ -643,7 +643,7 @@ def _reviewed_function(claim: Claim, func: Callable) -> bool:
 def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = None,
               time_budget: float | None = EXACT_TIME_LIMIT) -> Result:
     func = func or claim.func
-    if _LOAN is None and not _MUTATION_ANALYSIS:
+    if PLANS and _LOAN is None and not _MUTATION_ANALYSIS:
         plan = _PLANS.get((id(claim), id(func), n, r))
         if plan is not None and plan.claim is claim and plan.func is func:
             fast = plan.run(seed, time_budget)
@@ -897,6 +897,8 @@ class _Plan:
 
 #: the plans of the exact method, per (claim, function, n, r) (see :class:`_Plan`)
 _PLANS: dict[tuple, _Plan] = {}
+#: whether proofs are planned (False: every run goes the whole way, as the benchmarks' previous path)
+PLANS = True
 #: a plan runs its program without the time limit of the method only when the program took at most
 #: this fraction of the time budget when the plan was made (a straight-line program does the same
 #: operations on the same inputs at every run)
@@ -906,7 +908,7 @@ PLAN_RATIO = 1000
 def _plan(claim: Claim, func: Callable, n: int, r: int, calls: list, res: Result) -> None:
     """Keep a plan of a proof (:class:`_Plan`) whose only chart evaluation was a run of a program
     whose values are integer coefficients; outside the mutation analysis."""
-    if _LOAN is not None or _MUTATION_ANALYSIS or len(calls) != 1 or len(res.reductions) != 1 \
+    if not PLANS or _LOAN is not None or _MUTATION_ANALYSIS or len(calls) != 1 or len(res.reductions) != 1 \
             or claim.expect == "nonzero" or any(o.status != "zero" for o in res.checks):
         return
     skey, st = calls[0]
