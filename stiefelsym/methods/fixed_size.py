@@ -906,8 +906,8 @@ PLAN_RATIO = 1000
 
 
 def _plan(claim: Claim, func: Callable, n: int, r: int, calls: list, res: Result) -> None:
-    """Keep a plan of a proof (:class:`_Plan`) whose only chart evaluation was a run of a program
-    whose values are integer coefficients; outside the mutation analysis."""
+    """Keep a plan of a proof (:class:`_Plan`) whose only chart evaluation (``calls``) was a run of a
+    straight-line program, every check's entries 0; outside the mutation analysis and the lent charts."""
     if not PLANS or _LOAN is not None or _MUTATION_ANALYSIS or len(calls) != 1 or len(res.reductions) != 1 \
             or claim.expect == "nonzero" or any(o.status != "zero" for o in res.checks):
         return
