@@ -338,14 +338,16 @@ def test_checks_that_are_numbers_compile_and_a_corruption_fails(fresh, monkeypat
 
 # -- programs at the level of coefficients, and the plans of proofs ---------------------------------
 
-def _random_program(rng, k):
+def _random_program(rng, k, rational=False):
     """A random straight-line program over k inputs in the compiler's forms (sums, differences and
-    products of values and integer constants, x - x, coefficients riding along, signed outputs)."""
+    products of values and integer constants, x - x, coefficients riding along, signed outputs; with
+    ``rational``, the ring's rational constants K0 = 1/2 and K1 = -3/4 among the constants)."""
+    from fractions import Fraction
     names, lines = [f"x{j}" for j in range(k)], []
 
     def lit():
-        c = rng.choice([-3, -2, -1, 1, 2, 5])
-        return str(c) if c > 0 else f"({c})"
+        c = rng.choice([-3, -2, -1, 1, 2, 5] + (["K0", "K1"] if rational else []))
+        return c if type(c) is str else str(c) if c > 0 else f"({c})"
     for j in range(rng.randint(3, 14)):
         a, b = rng.choice(names), rng.choice(names)
         expr = rng.choice([f"{a} + {b}", f"{a} - {b}", f"{a} * {b}", f"{a} - {a}", f"{a} + {lit()}",
@@ -358,26 +360,32 @@ def _random_program(rng, k):
     src = "\n".join(["def program(X):", "    " + ", ".join(f"x{j}" for j in range(k)) + ", = X", *lines,
                      "    return (((" + ", ".join(outs[:2]) + ",), (" + ", ".join(outs[2:]) + ",),),)"]) + "\n"
     from stiefelsym.ir.straightline import Program
-    return Program(src, [(0, 0, j) for j in range(k)], {"M": (2, 2)}, len(lines))
+    return Program(src, [(0, 0, j) for j in range(k)], {"M": (2, 2)}, len(lines),
+                   (Fraction(1, 2), Fraction(-3, 4)) if rational else ())
 
 
-def test_coefficient_programs_compute_what_the_ring_program_computes():
+@pytest.mark.parametrize("rational", [False, True], ids=["Z[x]", "rational constants"])
+def test_coefficient_programs_compute_what_the_ring_program_computes(rational):
     import random
     import flint
     from stiefelsym.ir.straightline import coefficient_program
     rng = random.Random(20)
-    ctx = flint.fmpz_mpoly_ctx.get(("a", "b", "c", "d"), "degrevlex")
+    ctx = (flint.fmpq_mpoly_ctx if rational else flint.fmpz_mpoly_ctx).get(("a", "b", "c", "d"), "degrevlex")
     zero = ctx.from_dict({})
     for _ in range(300):
         k = rng.randint(1, 4)
-        prog = _random_program(rng, k)
+        prog = _random_program(rng, k, rational)
         xs = [ctx.from_dict({tuple(rng.randint(0, 2) for _ in range(4)): rng.choice([-4, -1, 1, 3, 7])
                              for _ in range(rng.randint(1, 3))}) for _ in range(k)]
-        want = [[list(row) for row in m] for m in prog.function(zero)(xs)]
-        terms = [[(m, int(c)) for m, c in x.to_dict().items()] for x in xs]
+        want = [[list(row) for row in m] for m in prog.function(zero, flint.fmpq)(xs)]
+        terms = [[(m, int(c.p) if rational else int(c)) for m, c in x.to_dict().items()] for x in xs]
         cp = coefficient_program(prog, terms, 4, 10**6)
+        assert "/" not in cp.source and "." not in cp.source      # integers only
         values = cp.function([c for tt in terms for _, c in tt])
-        got = [[[ctx.from_dict({**{mono: c * values[i] for i, mono, c in slots if values[i]}, **dict(consts)})
+        assert all(type(v) is int for v in values)
+        q = (lambda c: flint.fmpq(c.numerator, c.denominator)) if rational else int
+        got = [[[ctx.from_dict({**{mono: q(c) * values[i] for i, mono, c in slots if values[i]},
+                                **{mono: q(c) for mono, c in consts}})
                  for consts, slots in row] for row in m] for m in cp.entries]
         assert got == want, prog.source
 
@@ -401,8 +409,8 @@ def test_a_coefficient_program_that_disagrees_with_the_interpreter_is_not_used(m
 
     def wrong(prog, terms, nvars, cap):
         cp = real(prog, terms, nvars, cap)
-        return straightline.CoefficientProgram(cp.source.replace(" + ", " - ", 1), cp.entries, cp.operations,
-                                               cp.constant_terms)
+        return straightline.CoefficientProgram(cp.source.replace("    return (", "    return (1 + "), cp.entries,
+                                               cp.operations, cp.constant_terms)      # 1 added to one coefficient
     monkeypatch.setattr(straightline, "coefficient_program", wrong)
     f = SymbolicField()
     sc = Scene(3, 1, f, chart="equivariant", realization="standard", right_reduction=True)

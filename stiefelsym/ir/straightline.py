@@ -39,6 +39,7 @@ compiled (:class:`NotCompiled`): its evaluation stays with the interpreter.
 """
 from __future__ import annotations
 
+import math
 from fractions import Fraction
 from typing import Any, Callable
 
@@ -523,7 +524,7 @@ def _fail(why: str) -> Any:
 
 # -- the same program at the level of coefficients ---------------------------------------------------
 #
-# Over Z[x] at small sizes the entries are polynomials of a few terms, and a polynomial operation of
+# With coordinates of integer coefficients, at small sizes the entries are polynomials of a few terms, and a polynomial operation of
 # the program costs what calling the polynomial library costs (about half a microsecond), not its
 # arithmetic.  :func:`coefficient_program` writes the same program once more, one level down: every
 # value of the program is a sum of terms c_m x^m over the monomials m it can have -- its *support*,
@@ -532,7 +533,9 @@ def _fail(why: str) -> Any:
 # on the coefficients of the inputs.  What is compiled in is the monomials of the inputs (the
 # pattern of the chart's coordinates one level finer) and which terms of which operands meet in
 # which monomial; what the program computes at every run is every coefficient of every entry of
-# every output, from the coefficients of the inputs, in exact integer arithmetic.  No coefficient is
+# every output, from the coefficients of the inputs, in exact integer arithmetic (a rational constant
+# of the program's text rides along with a coefficient as its factor, as the compiler's integer
+# coefficients ride along with an entry).  No coefficient is
 # dropped or cancelled while writing: a monomial whose coefficient is 0 at the run (x - x) is
 # computed and is 0 then.  An entry of an output is 0 exactly when every one of its coefficients is.
 
@@ -567,14 +570,32 @@ def _lit(c: int) -> str:
     return str(c) if c >= 0 else f"({c})"
 
 
-def _scaled_name(c: int, a: str) -> str:
-    return a if c == 1 else f"-{a}" if c == -1 else f"{_lit(c)} * {a}"
+def _q(x: Any) -> Any:
+    """A rational constant as an int where it is one, else a Fraction."""
+    return int(x) if type(x) is int or x.denominator == 1 else Fraction(x)
+
+
+def _integers(ratios: list) -> tuple[int, list[int]]:
+    """(L, [L * q for q in ratios]): the least L >= 1 that makes every ratio an integer."""
+    L = 1
+    for q in ratios:
+        if type(q) is Fraction:
+            L = L * q.denominator // math.gcd(L, q.denominator)
+    return L, [int(q * L) for q in ratios]
+
+
+def _term(k: int, e: str, first: bool) -> str:
+    """k * e in a sum (k a nonzero int): its sign, and the factor where it is not 1."""
+    s = e if abs(k) == 1 else f"{abs(k)} * {e}"
+    return (s if k > 0 else f"-{s}") if first else f" + {s}" if k > 0 else f" - {s}"
 
 
 class _Sparse:
-    """A value of the program while writing its coefficient program: monomial -> atom, an atom being an
-    int (a constant of the program's text, folded like the program folds them) or (c, name): c times
-    the coefficient named ``name`` (c a nonzero int)."""
+    """A value of the program while writing its coefficient program: monomial -> atom, an atom being a
+    rational constant (of the program's text, folded like the program folds them) or (c, name): c
+    times the integer coefficient named ``name`` (c a nonzero rational constant of the text, an int
+    where it is one).  Only integers are written in the program: a rational factor stays with its
+    atom, as the compiler's integer coefficients ride along with an entry."""
 
     __slots__ = ("t", "w")
 
@@ -584,28 +605,39 @@ class _Sparse:
     def _lift(self, o: Any) -> "_Sparse":
         if type(o) is _Sparse:
             return o
-        if type(o) is int:
-            return _Sparse({self.w.unit: o} if o else {}, self.w)
+        if type(o) is int or type(o) is Fraction:
+            return _Sparse({self.w.unit: _q(o)} if o else {}, self.w)
         raise NotCompiled(f"a coefficient program with a {type(o).__name__} in arithmetic")
 
-    def _add(self, x: Any, y: Any) -> Any:
-        if type(x) is int and type(y) is int:
-            return x + y
-        if type(x) is int:
-            x, y = y, x
+    def _sum(self, terms: list[tuple[Any, str, tuple[str, ...]]], const: Any) -> Any:
+        """The atom of sum(c * e for c, e, _ in terms) + const (``terms`` not empty; e a name or a
+        product of two names), one line of integer arithmetic unless it is one name."""
         w = self.w
-        if type(y) is int:
-            if y == 0:
-                return x
-            c, a = x
-            return (1, w.emit(f"{_scaled_name(c, a)} + {_lit(y)}", (a,), 1 + (c != 1)))
+        c0 = terms[0][0]
+        if len(terms) == 1 and not const and len(terms[0][2]) == 1 and terms[0][1] == terms[0][2][0]:
+            return (c0, terms[0][1])
+        L, ks = _integers([Fraction(c) / c0 for c, _, _ in terms] + ([Fraction(const) / c0] if const else []))
+        parts = [_term(k, e, i == 0) for i, (k, (_, e, _)) in enumerate(zip(ks, terms))]
+        ops = sum((" * " in e) + (abs(k) != 1) for k, (_, e, _) in zip(ks, terms)) + len(terms) - 1
+        if const:
+            parts.append(f" + {ks[-1]}" if ks[-1] > 0 else f" - {-ks[-1]}")
+            ops += 1
+        return (_q(Fraction(c0) / L), w.emit("".join(parts), tuple(x for _, _, rd in terms for x in rd), ops))
+
+    def _add(self, x: Any, y: Any) -> Any:
+        if type(x) is not tuple and type(y) is not tuple:
+            return _q(x + y)
+        if type(x) is not tuple:
+            x, y = y, x
+        if type(y) is not tuple:
+            return x if y == 0 else self._sum([(x[0], x[1], (x[1],))], y)
         (c, a), (d, b) = x, y
         if c == d:
             a, b = sorted((a, b), key=_corder)
-            return (c, w.emit(f"{a} + {b}", (a, b), 1))
+            return (c, self.w.emit(f"{a} + {b}", (a, b), 1))
         if c == -d:
-            return (c, w.emit(f"{a} - {b}", (a, b), 1))
-        return (1, w.emit(f"{_scaled_name(c, a)} + {_scaled_name(d, b)}", (a, b), 3))
+            return (c, self.w.emit(f"{a} - {b}", (a, b), 1))
+        return self._sum([(c, a, (a,)), (d, b, (b,))], 0)
 
     def __add__(self, o: Any) -> "_Sparse":
         o = self._lift(o)
@@ -616,7 +648,7 @@ class _Sparse:
                 t[m] = y
             else:
                 z = self._add(x, y)
-                if type(z) is int and z == 0:
+                if type(z) is not tuple and z == 0:
                     del t[m]        # two constants of the program's text that sum to 0
                 else:
                     t[m] = z
@@ -625,7 +657,7 @@ class _Sparse:
     __radd__ = __add__
 
     def __neg__(self) -> "_Sparse":
-        return _Sparse({m: -x if type(x) is int else (-x[0], x[1]) for m, x in self.t.items()}, self.w)
+        return _Sparse({m: -x if type(x) is not tuple else (-x[0], x[1]) for m, x in self.t.items()}, self.w)
 
     def __sub__(self, o: Any) -> "_Sparse":
         return self + (-self._lift(o))
@@ -645,37 +677,24 @@ class _Sparse:
                 acc.setdefault(m, []).append((x, y))
         t: dict[tuple, Any] = {}
         for m, pairs in acc.items():
-            const = 0
-            terms: list[tuple[int, str, tuple[str, ...]]] = []     # (c, "a * b" or "a", reads)
+            const: Any = 0
+            terms: list[tuple[Any, str, tuple[str, ...]]] = []     # (c, "a * b" or "a", reads)
             for x, y in pairs:
-                if type(x) is int and type(y) is int:
-                    const += x * y
-                elif type(x) is int or type(y) is int:
-                    k, (c, a) = (x, y) if type(x) is int else (y, x)
-                    if k:
-                        terms.append((k * c, a, (a,)))
+                if type(x) is not tuple and type(y) is not tuple:
+                    const = _q(const + x * y)
+                elif type(x) is not tuple or type(y) is not tuple:
+                    k, (c, a) = (x, y) if type(x) is not tuple else (y, x)
+                    terms.append((_q(k * c), a, (a,)))
                 else:
                     (c, a), (d, b) = x, y
                     a, b = sorted((a, b), key=_corder)
-                    terms.append((c * d, f"{a} * {b}", (a, b)))
+                    terms.append((_q(c * d), f"{a} * {b}", (a, b)))
             if not terms:
                 if const:
                     t[m] = const
                 continue
-            if len(terms) == 1 and not const:
-                c, e, reads = terms[0]
-                t[m] = (c, e) if len(reads) == 1 and e == reads[0] else (c, w.emit(e, reads, 1))
-                continue
             terms.sort(key=lambda z: z[1])
-            parts, ops = [], 0
-            for i, (c, e, reads) in enumerate(terms):
-                ops += (" * " in e) + (abs(c) != 1) + (i > 0)
-                s = e if abs(c) == 1 else f"{abs(c)} * {e}"
-                parts.append((s if c > 0 else f"-{s}") if i == 0 else f" + {s}" if c > 0 else f" - {s}")
-            if const:
-                parts.append(f" + {const}" if const > 0 else f" - {-const}")
-                ops += 1
-            t[m] = (1, w.emit("".join(parts), tuple(x for _, _, rd in terms for x in rd), ops))
+            t[m] = self._sum(terms, const)
         return _Sparse(t, w)
 
     __rmul__ = __mul__
@@ -690,8 +709,9 @@ class CoefficientProgram:
     coefficients ``C`` of the inputs (in the order of ``terms``), the tuple of the computed
     coefficients of the outputs; ``entries``: for every output (in order), its rows of entries, each
     a pair (constant terms, slots): the terms that are constants of the program's text ((monomial,
-    int) pairs) and the computed ones ((index into the tuple, monomial, c): c times that value is the
-    coefficient of the monomial); ``operations``: integer operations per run."""
+    rational) pairs) and the computed ones ((index into the tuple, monomial, c): c, a rational
+    constant, times that value is the coefficient of the monomial); ``operations``: integer
+    operations per run."""
 
     def __init__(self, source: str, entries: list, operations: int, constant_terms: bool) -> None:
         self.source, self.entries, self.operations = source, entries, operations
@@ -705,24 +725,23 @@ class CoefficientProgram:
 
 def coefficient_program(prog: Program, terms: list[list[tuple[tuple[int, ...], int]]], nvars: int,
                         cap: int) -> CoefficientProgram:
-    """``prog`` (a program over Z[x]: no rational constants) written at the level of coefficients, for
-    inputs whose terms are ``terms`` (per input, its (monomial, coefficient) pairs; the coefficients
-    are the new program's inputs, in that order, the monomials are compiled in); ``nvars``: the
-    length of a monomial; at most ``cap`` integer operations per run (:class:`NotCompiled` beyond)."""
-    if prog.constants:
-        raise NotCompiled("a program with rational constants (over Q[x])")
+    """``prog`` written at the level of coefficients, for inputs whose terms are ``terms`` (per input,
+    its (monomial, integer coefficient) pairs; the coefficients are the new program's inputs, in that
+    order, the monomials are compiled in); ``nvars``: the length of a monomial; at most ``cap``
+    integer operations per run (:class:`NotCompiled` beyond)."""
     w = _CoefficientWriter(cap)
     w.unit = (0,) * nvars
     xs, k = [], 0
     for tt in terms:
         t = {}
         for m, c in tt:
-            if len(m) != nvars or not c:
-                raise NotCompiled("an input term that is not a monomial of the ring with a nonzero coefficient")
+            if len(m) != nvars or type(c) is not int or not c:
+                raise NotCompiled("an input term that is not a monomial of the ring with a nonzero integer coefficient")
             t[tuple(m)] = (1, f"i{k}")
             k += 1
         xs.append(_Sparse(t, w))
-    scope: dict[str, Any] = {"ZERO": _Sparse({}, w)}
+    scope: dict[str, Any] = {"ZERO": _Sparse({}, w), **{f"K{j}": _Sparse({w.unit: _q(c)}, w)
+                                                        for j, c in enumerate(prog.constants)}}
     exec(compile(prog.source, "<straight-line program>", "exec"), scope)   # noqa: S102 - generated from the graph
     outs = scope["program"](xs)
     slots: list[str] = []
@@ -735,11 +754,11 @@ def coefficient_program(prog: Program, terms: list[list[tuple[tuple[int, ...], i
             for e in row:
                 if type(e) is not _Sparse:
                     raise NotCompiled("an output entry that is not a polynomial")
-                consts = tuple((mono, x) for mono, x in e.t.items() if type(x) is int)
+                consts = tuple((mono, x) for mono, x in e.t.items() if type(x) is not tuple)
                 has_constants = has_constants or bool(consts)
                 sl = []
                 for mono, x in e.t.items():
-                    if type(x) is not int:
+                    if type(x) is tuple:
                         sl.append((len(slots), mono, x[0]))
                         slots.append(x[1])
                 out_row.append((consts, tuple(sl)))

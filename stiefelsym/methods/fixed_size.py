@@ -961,7 +961,13 @@ class _Straight:
         self.entries, self.constant_terms = None, False
         if coefficients is not None:
             prog, cin = coefficients
-            self.fn, self.inputs, self.entries = prog.function, cin, prog.entries
+
+            def exact(c: Any) -> Any:       # a rational factor as flint's rational (an int stays an int)
+                return flint.fmpq(c.numerator, c.denominator) if type(c) is Fraction else c
+            self.entries = tuple(tuple(tuple((tuple((m, exact(c)) for m, c in consts),
+                                              tuple((k, m, exact(c)) for k, m, c in slots)) for consts, slots in row)
+                                       for row in out) for out in prog.entries)
+            self.fn, self.inputs = prog.function, cin
             self.constant_terms, self.operations = prog.constant_terms, prog.operations
 
     def all_zero(self, values: Any) -> bool:
@@ -1145,6 +1151,7 @@ def _straight(g: Any, field: Any, scene: Any, checks: dict, log: tuple, compile_
     if any(x.context() is not R.ctx for x in inputs):
         raise NotCompiled("coordinates of the chart in another context of the ring")
     back = None
+    terms = None        # the terms of the inputs where their coefficients are integers
     if not prog.constants and all(c.q == 1 for x in inputs for c in x.to_dict().values()):
         # a chart of integer polynomials: the program runs over Z[x] (flint's integer polynomials
         # skip the rational content of every operation) and its outputs come back to Q[x] exactly
@@ -1158,6 +1165,9 @@ def _straight(g: Any, field: Any, scene: Any, checks: dict, log: tuple, compile_
     else:
         fn = prog.function(R.zero, flint.fmpq)
         got = fn(inputs)
+        if all(c.q == 1 for x in inputs for c in x.to_dict().values()):
+            # integer coordinates, rational constants of the program: at the level of coefficients too
+            terms = [[(m, int(c.p)) for m, c in x.to_dict().items()] for x in inputs]
     outputs = []
     if list(prog.outputs) != list(checks):
         raise NotCompiled("the program's checks are not the interpreter's")
@@ -1181,8 +1191,8 @@ def _straight(g: Any, field: Any, scene: Any, checks: dict, log: tuple, compile_
             raise NotCompiled("the program disagrees with the interpreter (a defect of the compiler)")
         outputs.append((name, shape, want.tags))
     st = _Straight(fn, field, scene, inputs, outputs, log, R.ctx, prog.operations, back)
-    if back is not None:
-        # over Z[x], the same program at the level of coefficients where it takes at most
+    if terms is not None:
+        # with integer coordinates, the same program at the level of coefficients where it takes at most
         # COEFFICIENT_OPS integer operations per operation of the ring (a call of the polynomial
         # library costs about as much as that many integer operations); its values must be the
         # ring program's (the interpreter's) entry by entry, or the graph stays with the interpreter
@@ -1192,7 +1202,7 @@ def _straight(g: Any, field: Any, scene: Any, checks: dict, log: tuple, compile_
             return st
         cst = _Straight(fn, field, scene, inputs, outputs, log, R.ctx, prog.operations, back,
                         (cp, [c for tt in terms for _, c in tt]))
-        if [[list(row) for row in m] for m in cst.values()] != got:
+        if [[list(row) for row in m] for m in cst.values()] != [[list(row) for row in m] for m in got]:
             raise NotCompiled("the coefficient program disagrees with the interpreter (a defect of the compiler)")
         return cst
     return st
