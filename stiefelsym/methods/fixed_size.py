@@ -872,7 +872,8 @@ class _Plan:
         """The record of this run, or None where the whole method must run (the program was dropped, a
         value is not 0, the program is too slow to run without the time limit)."""
         st = self.straight
-        if _STRAIGHT.get(self.skey) is not st:
+        if st is None or _STRAIGHT.get(self.skey) is not st:
+            self.straight = None        # dropped from its memo: not kept alive by the plan
             return None
         if time_budget is not None and self.seconds * PLAN_RATIO > time_budget:
             return None         # the time limit of the whole method applies
