@@ -1,0 +1,32 @@
+"""Round 11 (tests/adversary/README.md, the "Round 11" table): the chart X = I, P = W at r = n and the chart reduced
+by O(r) on the right below it, the number-type tower, the claims file's confined loading, the exact method's residual
+text and the modular bound.  As before every run is the CLI in a fresh process, and each test asserts the CORRECT
+outcome."""
+from test_adversary_s38 import run_sizes, verdicts
+
+from adversary_cli import PASSING
+
+JOINS = "s40_right_chart_joins.py"
+JOINS_FALSE = {"adv-s40-sq-int-identity-sym": ((3, 3),), "adv-s40-sq-int-identity-trace": ((3, 3),),
+               "adv-s40-sq-int-identity-p-skew": ((3, 3),), "adv-s40-sq-d-scalar-sym": ((3, 3),),
+               "adv-s40-d-scalar-two-splittings-sym": ((3, 2), (4, 2)),
+               "adv-s40-d-scalar-two-splittings-p": ((3, 2), (4, 2))}
+JOINS_TRUE = {"adv-s40-sq-int-identity-true": ((3, 3),), "adv-s40-d-scalar-true": ((3, 2), (4, 2)),
+              "adv-s40-d-scalar-two-splittings-true": ((3, 2), (4, 2))}
+
+
+def test_reads_of_r_through_int_sized_pieces_and_engine_numbers_are_refuted_exactly():
+    """JA: at r = n an untyped identity of an int size used on ℝʳ and on ℝⁿ (X·I₃ − (X·I₃)ᵀ) makes X a matrix on ℝⁿ;
+    JB: a number made by s.d gave c·M an engine value's sides in the pass, hiding M's joins (c·I₃ at r = n, and
+    round 10's ℝⁿ ⊕ ℝʳ taken for ℝʳ ⊕ ℝⁿ with blocks c·I_r, c·0 at (3,2), (4,2)).  Before: exact (and auto) took
+    the chart reduced by O(r) on the right and proved X symmetric, tr X = 3, P skew, the top block of X symmetric
+    and of P skew; every other method failed them.  Closed (`ir/passes`): a join of ℝⁿ and ℝʳ breaks the right
+    action, and a product by a number or a sum keeps the sides the pass knows."""
+    got = run_sizes(JOINS, methods=("exact", "modular", "float"), free=False)
+    for c, sizes in JOINS_FALSE.items():
+        for size in sizes:
+            assert verdicts(got, c, size) == {"fails"}, (c, size, got)
+    for c, sizes in JOINS_TRUE.items():
+        for size in sizes:
+            seen = verdicts(got, c, size)
+            assert seen and seen <= set(PASSING), (c, size, got)
