@@ -39,6 +39,13 @@ def p_skew_int_identity(s):
     return {"Pu + Pu^T": Pu + Pu.T}
 
 
+@claim("adv-s40-sq-int-generic-commutes", paper="adv", kind="id", sizes=SQ3)
+def generic_commutes(s):
+    """False: XG = GX at r = n = 3 for one untyped generic 3 x 3 matrix G, on ℝʳ right of X and on ℝⁿ left of it (JA)."""
+    G = s.general_params("G", 3, 3, ("?", "?"))
+    return {"XG - GX": s.X @ G - G @ s.X}
+
+
 @claim("adv-s40-sq-int-identity-true", paper="adv", kind="id", sizes=SQ3)
 def int_identity_true(s):
     """True: (XE)(XE)ᵀ = I at r = n = 3 with E the int-sized untyped identity."""
