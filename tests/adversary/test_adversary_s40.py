@@ -51,3 +51,23 @@ def test_a_parameter_name_on_r_n_and_on_r_r_names_two_matrices():
         for size in sizes:
             seen = verdicts(got, c, size)
             assert seen and seen <= set(PASSING), (c, size, got)
+
+
+TOWER = "s40_number_tower.py"
+
+
+def test_the_number_tower_mixed_in_any_order_against_truths_by_hand():
+    """(No hole) derivatives inside derivatives (left to the scene's dual numbers by the graph's pass), gradients and
+    brackets in any order, with values captured from every enclosing scene (the claim's X₀ in an inner flow, a number
+    of the middle layer, a captured number in the diagonal blocks of an inner inverse beside a resolvent at a moving
+    μ): every true statement passes and every false one fails under exact, modular and float (rational and ball
+    alike when run by hand; free leaves them undecided)."""
+    got = run_sizes(TOWER, methods=("exact", "modular", "float"), free=False)
+    claims = {c for c, _ in got}
+    assert len(claims) == 10, got
+    for c in claims:
+        seen = verdicts(got, c, (3, 2))
+        if c.endswith("-false"):
+            assert seen == {"fails"}, (c, got)
+        else:
+            assert seen and seen <= set(PASSING), (c, got)
