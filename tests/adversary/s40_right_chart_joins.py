@@ -80,6 +80,15 @@ def two_splittings_p(s):
     return {"M + M^T": M + M.T}
 
 
+@claim("adv-s40-eigenvalue-two-splittings-sym", paper="adv", kind="id", sizes=R32)
+def eigenvalue_two_splittings(s):
+    """False: a₁ X1ᵀ symmetric through blocks a₁·I_r, a₁·0 (an eigenvalue of A is a number of an engine value's
+    sides as well; JB)."""
+    c = s.a[0]
+    M = block([[s.X], [s.zeros(s.r, s.r)]]).T @ block([[c * s.Ir], [c * s.zeros(s.n, s.r)]])
+    return {"M - M^T": M - M.T}
+
+
 @claim("adv-s40-d-scalar-true", paper="adv", kind="id", sizes=R32)
 def d_scalar_true(s):
     """True: c(XᵀX − I_r) = 0 with c = s.d(...), a covariant graph (the chart reduced by O(r) is kept)."""

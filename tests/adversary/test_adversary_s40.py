@@ -11,7 +11,8 @@ JOINS_FALSE = {"adv-s40-sq-int-identity-sym": ((3, 3),), "adv-s40-sq-int-identit
                "adv-s40-sq-int-identity-p-skew": ((3, 3),), "adv-s40-sq-int-generic-commutes": ((3, 3),),
                "adv-s40-sq-d-scalar-sym": ((3, 3),),
                "adv-s40-d-scalar-two-splittings-sym": ((3, 2), (4, 2)),
-               "adv-s40-d-scalar-two-splittings-p": ((3, 2), (4, 2))}
+               "adv-s40-d-scalar-two-splittings-p": ((3, 2), (4, 2)),
+               "adv-s40-eigenvalue-two-splittings-sym": ((3, 2), (4, 2))}
 JOINS_TRUE = {"adv-s40-sq-int-identity-true": ((3, 3),), "adv-s40-d-scalar-true": ((3, 2), (4, 2)),
               "adv-s40-d-scalar-two-splittings-true": ((3, 2), (4, 2))}
 
