@@ -10,8 +10,8 @@
 The true controls are proved."""
 from stiefelsym import Size, SizeSpec, block, claim
 
-SQ3 = SizeSpec((Size(3, 3),))
-R32 = SizeSpec((Size(3, 2), Size(4, 2)))
+SQ3 = SizeSpec((Size(3, 3),), n_min=3, n_max=3, r_is_n=True)        # stated at (3,3) only
+R32 = SizeSpec((Size(3, 2), Size(4, 2)), n_min=3, n_max=4, r_min=2, r_max=2)
 
 
 def _c(s):

@@ -5,7 +5,7 @@ takes every generic matrix to move with its sides; one matrix that is both fixed
 (on ℝʳ) is neither, and XG = GX was proved at X₀ = I."""
 from stiefelsym import Size, SizeSpec, claim
 
-SQ = SizeSpec((Size(3, 3), Size(4, 4)))
+SQ = SizeSpec((Size(3, 3), Size(4, 4)), n_min=3, n_max=4, r_is_n=True)        # stated at r = n only
 BOTH = SizeSpec((Size(3, 2), Size(3, 3)))
 
 
