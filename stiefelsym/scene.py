@@ -459,8 +459,12 @@ class Scene(PaperObjects):
         return M
 
     def general_params(self, name: str, m: int, k: int, tags) -> Mat:
-        """A generic m x k matrix of fresh parameters of the claim's own (index spaces ``tags``)."""
-        return self._general_params(f"{USER_PARAMS}{user_name(name, 'general_params')}[{m}x{k}]", m, k, tags)
+        """A generic m x k matrix of fresh parameters of the claim's own (index spaces ``tags``).  The spaces are
+        part of its name, as its size is: at r = n the matrix of one name on R^n x R^n and on R^r x R^r are two
+        matrices, as at r < n (one parameter shared by a side that moves with O(r) on the right and one that
+        does not would break the equivariance reductions)."""
+        spaces = ",".join(tags) if isinstance(tags, tuple) and all(isinstance(x, str) for x in tags) else str(tags)
+        return self._general_params(f"{USER_PARAMS}{user_name(name, 'general_params')}[{m}x{k}]@{spaces}", m, k, tags)
 
     def _general_params(self, name: str, m: int, k: int, tags) -> Mat:
         M = self._param_block(name, m, k, "general", tags)

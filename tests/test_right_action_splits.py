@@ -79,3 +79,31 @@ def test_alike_splittings_and_a_given_matrix_that_takes_a_splitting_are_not_read
         M = block([[s.Phi, s.P], [s.P.T, s.eta]])
         return {"x": s.tr(L @ M @ L)}
     assert TWO_SPLITTINGS not in coordinate_reads(_graph(lax))
+
+
+def _int_identity_on_both(s):
+    """At r = n an untyped identity of an int size used on R^r and on R^n: X taken for a matrix on R^n."""
+    Xu = s.X @ s.identity(3)
+    return {"x": Xu - Xu.T}
+
+
+def _engine_number_times_pieces(s):
+    """A number made by s.d times the pieces of R^r + R^n taken for R^n + R^r: the product has the pieces' sides."""
+    c = s.d(lambda t: s.tr(t.X.T @ s.A @ t.X), {"X": s.A @ s.X, "P": s.zeros(s.n, s.r, ("n", "r"))})
+    top = block([[c * s.Ir], [c * s.zeros(s.n, s.r)]])
+    M = block([[s.X], [s.zeros(s.r, s.r)]]).T @ top
+    return {"x": M - M.T}
+
+
+def test_r_joined_to_n_and_engine_numbers_are_breaks():
+    assert right_action_breaks(_graph(_int_identity_on_both, 3, 3))
+    assert right_action_breaks(_graph(_engine_number_times_pieces, 3, 2))
+    assert right_action_breaks(_graph(_engine_number_times_pieces, 4, 2))
+
+
+def test_an_engine_number_times_a_covariant_matrix_keeps_the_reduction():
+    def f(s):
+        c = s.d(lambda t: s.tr(t.X.T @ s.A @ t.X), {"X": s.A @ s.X, "P": s.zeros(s.n, s.r, ("n", "r"))})
+        return {"x": c * (s.X.T @ s.X) - c * s.Ir}
+    assert right_action_breaks(_graph(f, 3, 2)) == []
+    assert right_action_breaks(_graph(f, 3, 3)) == []

@@ -37,6 +37,9 @@ class _Sides:
         #: pairs of sides joined although their splittings into direct sums differ (a side of R^r or R^n
         #: split into coordinate blocks: e_1 of R^2 as a block of 1 x 1 pieces of I and 0 used on R^r)
         self.splits: list[tuple[int, int]] = []
+        #: whether a side of R^n was joined to a side of R^r (an untyped piece of an int size used on both,
+        #: possible at r = n only): the graph then takes R^r for R^n
+        self.n_joined_r = False
 
     def new(self, atom: str | None = None, parts: tuple = ()) -> int:
         self.parent.append(len(self.parent))
@@ -69,6 +72,8 @@ class _Sides:
             atom = ta
         else:
             atom = "opaque"                     # a join of ℝⁿ and ℝʳ (n = r): either
+            if {ta, tb} == {"n", "r"}:
+                self.n_joined_r = True
         self.parent[b] = a
         self.atom[a] = atom
         self.parts[a] = self.parts[a] or self.parts[b]
@@ -211,7 +216,7 @@ def _spaces(g: Graph) -> tuple["_Sides", list]:
             if x and y:
                 S.union(x[0], y[0])
                 S.union(x[1], y[1])
-            sd = x or y
+            sd = _known(x, y, opaque)
         elif op == "matmul":
             x, y = of(a[0]), of(a[1])
             if x and y:
@@ -220,7 +225,10 @@ def _spaces(g: Graph) -> tuple["_Sides", list]:
             else:
                 sd = (opaque, opaque)
         elif op in ("mul", "div"):
-            sd = of(a[0]) or of(a[1])
+            # a number times a matrix has the matrix's sides: a number an engine call made (s.d of a scalar
+            # function) has an engine value's sides, which would hide the matrix's joins (c·I₃ with I₃ used on
+            # ℝⁿ and ℝʳ at r = n)
+            sd = _known(of(a[0]), of(a[1]), opaque)
         elif op in ("neg", "pow"):
             sd = of(a[0])
             if op == "pow":
@@ -261,6 +269,14 @@ def _spaces(g: Graph) -> tuple["_Sides", list]:
 #: the engine step of the derivative of a function at a point of the caller's own along a tangent vector
 #: (``systems.derivative(s, F, z, v)``): its value has the shape of F's value
 DERIVATIVE_STEP = "stiefelsym.systems.derivative"
+
+
+def _known(x, y, opaque: int):
+    """The sides of a sum or a product by a number: the operand's whose sides the pass knows (not an engine
+    value's), else either."""
+    if x and y and x == (opaque, opaque):
+        return y
+    return x or y
 
 
 def _step_body(g: Graph, a: tuple):
@@ -429,6 +445,10 @@ def right_action_breaks(g: Graph) -> list[str]:
             out[f"a {op}"] = None
     if any(_involves_r(S, x) for pair in S.splits for x in pair):
         out["a splitting of R^r into blocks"] = None
+    if S.n_joined_r:
+        # at r = n an untyped piece of an int size may meet R^n and R^r (X E with E = s.identity(3), then
+        # X E - (X E)^T): X taken for a matrix on R^n reads what moves with h (X = I on the square chart)
+        out["R^r taken for R^n (an untyped piece joined to both)"] = None
     return list(out)
 
 
