@@ -500,7 +500,7 @@ def compile_graph(g: Graph, leaves: Callable[[int, Any], Leaf],
     for m in out.values():
         for row in m:
             for e in row:
-                if type(e) is not int:
+                if not _const(e):       # an integer or a rational constant is written as such
                     live.add(e[1])
     body: list[str] = []
     for target, expr, reads in reversed(w.lines):

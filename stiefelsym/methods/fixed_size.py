@@ -645,7 +645,7 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
     func = func or claim.func
     if PLANS and _LOAN is None and not _MUTATION_ANALYSIS:
         plan = _PLANS.get((id(claim), id(func), n, r))
-        if plan is not None and plan.claim is claim and plan.func is func:
+        if plan is not None and plan.claim is claim and plan.func is func and plan.state == _plan_state(claim):
             fast = plan.run(seed, time_budget)
             if fast is not None:
                 return fast
@@ -862,11 +862,15 @@ class _Plan:
     coefficient of every entry of every check it computed at this run is 0 (any other run, and every
     other verdict, goes the whole way)."""
 
-    __slots__ = ("claim", "func", "n", "r", "skey", "straight", "reductions", "outcomes", "certificate", "seconds")
+    __slots__ = ("claim", "func", "n", "r", "skey", "straight", "reductions", "outcomes", "certificate", "seconds",
+                 "state")
 
     def __init__(self, claim, func, n, r, skey, straight, reductions, outcomes, certificate, seconds) -> None:
         self.claim, self.func, self.n, self.r, self.skey, self.straight = claim, func, n, r, skey, straight
         self.reductions, self.outcomes, self.certificate, self.seconds = reductions, outcomes, certificate, seconds
+        #: what the whole method reads of the claim besides its function (a Claim is frozen, but
+        #: object.__setattr__ still writes it): a plan made under other values is not this claim's
+        self.state = _plan_state(claim)
 
     def run(self, seed: int, time_budget: float | None) -> Result | None:
         """The record of this run, or None where the whole method must run (the program was dropped, a
@@ -878,6 +882,15 @@ class _Plan:
         if time_budget is not None and self.seconds * PLAN_RATIO > time_budget:
             return None         # the time limit of the whole method applies
         claim, n, r = self.claim, self.n, self.r
+        # the function's graph at this run: the whole method compiles the function again (a graph dropped
+        # from the cache of graphs is traced again, and a function that reads state changed since gives
+        # another graph), so the program of the plan is this run's only while the digest is the same
+        try:
+            cons = REALIZATIONS[claim.realization or "standard"]
+            if compile_claim(self.func, n, r, (cons.name, cons.build)).digest() != self.skey[0]:
+                return None
+        except Exception:       # noqa: BLE001 - the whole method reports the refusal
+            return None
         res = _base_result(claim, n, r, "exact", None)
         t0 = time.perf_counter()
         verify_engine("before an evaluation")
@@ -894,6 +907,14 @@ class _Plan:
         res.certificate = self.certificate
         res.verdict = "proved"
         return res
+
+
+def _plan_state(claim: Claim) -> tuple:
+    """What :func:`run_exact` reads of a claim besides its function: its realization (the graph and the
+    chart), its expected verdict (a claim said not to vanish is never planned), the review of its reason
+    of equivariance and its corrections (the functions the reason holds for)."""
+    return (claim.id, claim.realization, claim.expect, claim.reviewed, claim.equivariance,
+            tuple(c.func for c in claim.corrections))
 
 
 #: the plans of the exact method, per (claim, function, n, r) (see :class:`_Plan`)
