@@ -1273,6 +1273,17 @@ def _rational_witness(claim: Claim, n: int, r: int, seed: int, func: Callable) -
 PROBE_POINTS = 3
 
 
+def _digest_now(claim: Claim, n: int, r: int, func: Callable) -> str | None:
+    """The digest of the graph ``func`` has at (n, r) at this call (None: it is refused; the caller's
+    run reports it).  What is memoized per function is memoized per graph as well: the cache of graphs
+    keeps a few dozen, and a function traced again may read state that changed since."""
+    try:
+        cons = REALIZATIONS[claim.realization or "standard"]
+        return compile_claim(func, n, r, (cons.name, cons.build)).digest()
+    except Exception:       # noqa: BLE001 - the claim's graph is refused: the run reports it
+        return None
+
+
 #: the outcome of the division probe per claim function and (claim, realization, size, seed, strict):
 #: a pure function of these (its points come from the seed and the claim's graph: draw_key), so it
 #: runs once per claim function, like the cached degree bound of the randomized methods
@@ -1283,7 +1294,9 @@ def division_probe(claim: Claim, n: int, r: int, func: Callable | None = None, s
                    strict: bool = False) -> str:
     """The division probe of the claim at (n, r) (see :func:`_division_probe`), memoized."""
     func = func or claim.func
-    key = (claim.id, claim.realization, n, r, seed, strict)
+    # the graph's digest too: a function whose graph left the cache of graphs is traced again, and a
+    # function that reads state changed since has another graph (and maybe another divisor)
+    key = (claim.id, claim.realization, n, r, seed, strict, _digest_now(claim, n, r, func))
     try:
         memo = _PROBES.setdefault(func, {})
     except TypeError:   # a callable without weak references: no memo
@@ -1395,7 +1408,8 @@ def degree_bound(claim: Claim, n: int, r: int, func: Callable | None = None) -> 
     from the structure of its expressions: the claim runs once over degree markers, one marker
     per matrix (see :class:`~stiefelsym.backends.native.DegreeBackend`); cached."""
     from stiefelsym.backends import native
-    key = (claim.id, func or claim.func, claim.realization, n, r, native.ENABLED)
+    key = (claim.id, func or claim.func, claim.realization, n, r, native.ENABLED,
+           _digest_now(claim, n, r, func or claim.func))
     if key not in _DEGREE_CACHE:
         _DEGREE_CACHE[key] = _degree_bound(claim, n, r, func)
     return _DEGREE_CACHE[key]

@@ -141,3 +141,34 @@ def test_a_rational_constant_output_is_compiled(fresh, monkeypatch, n, r):
     assert want.verdict == "fails"
     for _ in range(3):
         assert _record(run_exact(c, n, r, 0)) == _record(want)
+
+
+K = 0
+
+
+def reciprocal_twice(s):
+    """1/(1/c) − c = 0 with c = tr of the K-th block projector of ℝʳ (twisted.block_projector): at r = 1, K = 0 gives
+    c = 1 (true, defined), K = 1 gives c = 0 (1/(1/0): undefined, an error, never proved)."""
+    from stiefelsym import twisted
+    c = s.tr(twisted.block_projector(s, K))
+    return {"1/(1/c) - c": 1 / (1 / c) - c}
+
+
+def test_the_division_probe_is_memoized_per_graph(fresh, monkeypatch):
+    """KD: the division probe was memoized per function and (claim, realization, size, seed): a function proved
+    where its divisor is 1, its global then changed so that the divisor is identically 0 and other claims run (its
+    graph traced again: 1/(1/0) − 0 is 0 in symengine's arithmetic), was proved on the stale probe, where the same
+    body as a fresh function is an error ("the claim divides by zero at every one of 3 random points").  Closed:
+    the probe's memo (and the degree bound's) is keyed by the graph's digest as well."""
+    global K
+    c = _claim(reciprocal_twice, "adv-s40b-probe")
+    K = 0
+    try:
+        assert run_exact(c, 3, 1, 0).verdict == "proved"
+        K = 1
+        for k in range(30):
+            run_exact(_claim(_other(k), f"adv-s40b-other-{k}"), 3, 1, 0)
+        got = run_exact(c, 3, 1, 0)
+        assert got.verdict == "error" and "divides by zero" in got.message, got
+    finally:
+        K = 0
