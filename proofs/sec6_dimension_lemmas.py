@@ -248,7 +248,7 @@ def lambda_forms(s, x, A):
 
 
 @claim("pencil-kernel-ker-a2", paper=("KER", "A2", "L7", "L8"), kind="dim",
-       sizes=admissible(5), exact_max_n=3, exact_max_r={4: 3, 5: 3},
+       sizes=admissible(5), exact_max_n=3, exact_max_r={5: 3},
        equivariance="the point is built from the claim's own parameters (no chart coordinate)",
        statement=r"\ker\Lambda_1(h+v)=so(r)_{h_1}\oplus Sym(r)\oplus gl(n-r),\quad "
                  r"\dim\{z\in\ker\Lambda_1\mid\Lambda_{1,-1}(z,\ker\Lambda_1)=0\}=n\quad (h=\mathrm{diag}(h_1,0))")

@@ -51,7 +51,7 @@ def _ddim_off_by(k: int):
 
 @pytest.mark.parametrize("cid,n,r", [("constraints-independent", 7, 4), ("invariants-complete", 7, 3),
                                      ("invariants-differential-dimension", 6, 5), ("invariant-metrics", 6, 3),
-                                     ("adjoint-orbit-dimension", 7, 2), ("invariant-tori-dimensions", 6, 3),
+                                     ("adjoint-orbit-dimension", 7, 2), ("invariant-tori-dimensions", 6, 2),
                                      ("neumann2-kernel", 7, 6)])
 def test_the_raised_dimension_claims_are_proved_at_n_6_7(cid, n, r):
     c = load_catalog().get(cid)
