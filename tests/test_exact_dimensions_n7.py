@@ -3,7 +3,8 @@ certificate stays cheap there is raised, and a matrix of rational numbers has it
 over Q by flint (the same at every point, both sides at once).  At each new size the claim as
 printed is proved, and a corrupted rank (one more, one less) is refuted exactly: by the
 function-field rank or the rank at an exact point for a generic matrix, by the rank over Q for a
-constant one."""
+constant one (the ranks of ad_Phi, of the invariants' differentials on the fibre, of Λ1 on Ψ⁻¹(0), and
+the invariance conditions of the quadratic forms)."""
 from __future__ import annotations
 
 import dataclasses
@@ -12,6 +13,7 @@ import pytest
 
 import stiefelsym.proofs.sec2_hamiltonian_flows as h
 import stiefelsym.proofs.sec3_geodesic_flows as g
+import stiefelsym.proofs.sec7_grassmannians as s7
 from stiefelsym import Rank
 from stiefelsym.claims import load_catalog
 from stiefelsym.methods.fixed_size import run_exact
@@ -84,4 +86,20 @@ def test_a_rank_of_ad_phi_off_by_one_is_refuted_at_n_7(k):
 @pytest.mark.parametrize("k", [1, -1])
 def test_a_ddim_off_by_one_is_refuted_at_n_7(k):
     res = run_exact(_corrupted("invariants-complete", _ddim_off_by(k)), 7, 3, 0)
+    assert res.verdict == "fails", (res.verdict, res.message)
+
+
+def _neumann2_kernel_off_by(k: int):
+    def claim(s):
+        """The rank of Λ1(h + v) on Ψ⁻¹(0) one more or one less than printed."""
+        R = s7.neumann2_kernel(s)["rank Lambda1(h+v) at Psi = 0"]
+        return {"rank": Rank(R.matrix, R.expected + k, generic=True)}
+    return claim
+
+
+@pytest.mark.parametrize("n,r,k", [(5, 2, 1), (7, 6, -1)])
+def test_a_rank_of_lambda1_on_psi_zero_off_by_one_is_refuted_at_the_new_sizes(n, r, k):
+    c = load_catalog().get("neumann2-kernel")
+    assert c.exact_at(n, r)
+    res = run_exact(_corrupted("neumann2-kernel", _neumann2_kernel_off_by(k)), n, r, 0)
     assert res.verdict == "fails", (res.verdict, res.message)
