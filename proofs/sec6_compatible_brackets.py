@@ -581,6 +581,7 @@ def _FF_functions(count, n):
 
 
 @claim("cif-completeness", paper=("CIF", "FF", "BB", "2l"), kind="dim", exact_max_n=3,
+       exact_max_r={5: 2, 6: 1, 7: 1},
        equivariance="the rank of the differentials of SO(n)-invariant functions on T*V is invariant under O(n); the Jacobian only lists them in the coordinates of R^{2nr}",
        statement=r"\ddim(\mathfrak F+\mathfrak B)=\dim V_{n,r}-l,\quad \mathfrak F=\{\tr(\lambda\Phi+XX^T)^k\},\ "
                  r"\mathfrak B=\{\tr(\Psi+\mu B)^k\}")

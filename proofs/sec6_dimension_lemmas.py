@@ -125,7 +125,7 @@ EQUIVARIANCE_XA = ("Λ1 and Λ2 at (Θ, A) are covariant under (X, P, A) ↦ (gX
 
 # -- Lemma LEMA1 -----------------------------------------------------------------------------------
 
-@claim("pencil-leaf-dimension", paper=("dimension", "LEMA1", "L1", "L2"), kind="dim",
+@claim("pencil-leaf-dimension", paper=("dimension", "LEMA1", "L1", "L2"), kind="dim", exact_max_r={6: 2, 7: 1},
        sizes=admissible(5), equivariance=EQUIVARIANCE_X,
        statement=r"\rank\Lambda_1(h+v)=n^2-\dim\ker\Lambda_1(h+v)=2r(n-r)+\tfrac{r(r-1)}2-\left[\tfrac r2\right],"
                  r"\quad \xi+\eta\in\ker\Lambda_1(h+v)\iff[\xi,v]=0,\ [\xi,h]+[\eta,v]=0")
@@ -248,7 +248,8 @@ def lambda_forms(s, x, A):
 
 
 @claim("pencil-kernel-ker-a2", paper=("KER", "A2", "L7", "L8"), kind="dim",
-       sizes=admissible(5), exact_max_n=3, equivariance="the point is built from the claim's own parameters (no chart coordinate)",
+       sizes=admissible(5), exact_max_n=3, exact_max_r={5: 3},
+       equivariance="the point is built from the claim's own parameters (no chart coordinate)",
        statement=r"\ker\Lambda_1(h+v)=so(r)_{h_1}\oplus Sym(r)\oplus gl(n-r),\quad "
                  r"\dim\{z\in\ker\Lambda_1\mid\Lambda_{1,-1}(z,\ker\Lambda_1)=0\}=n\quad (h=\mathrm{diag}(h_1,0))")
 def pencil_kernel_and_A2(s):

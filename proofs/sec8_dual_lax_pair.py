@@ -820,7 +820,7 @@ def manakov_j2r_vanishes(s):
 
 # -- printed sizes in the proofs of Gen_Chasles and Gen_Chasles2 -----------------------------------------
 
-@claim("vvb-left-factor-size", paper=("VVB", "Gen_Chasles2"), kind="dim",
+@claim("vvb-left-factor-size", paper=("VVB", "Gen_Chasles2"), kind="dim", exact_max_n=7,
        sizes=admissible(n_max=5), fails_at=lambda n, r: True,
        erratum="""In the proof of Theorem Gen_Chasles2, the matrix V(XB, PB) diag(B^{-1}, B^{-1}) is said to be
        obtained from V(X, P) (VV) by left multiplication by diag(I_{n-r}, B^{-1}), a matrix of size n; V(X, P) has
@@ -841,7 +841,7 @@ def printed_left_factor_has_the_size_of_vv_corrected(s):
                                                          "the rows of V (VV); corrected: the size of diag(I_n, B^{-1})")}
 
 
-@claim("gen-chasles-momentum-ranges", paper=("Gen_Chasles", "tangency"), kind="dim",
+@claim("gen-chasles-momentum-ranges", paper=("Gen_Chasles", "tangency"), kind="dim", exact_max_n=7,
        sizes=admissible(n_max=5), fails_at=lambda n, r: n != r,
        erratum="""In the proof of Theorem Gen_Chasles, the quadratic equation of the 2r-planes tangent to the cone
        Q(lambda*) sums (e_1^...^e_r^p_i)^2 over i = 1, ..., n and (e_1^...^e_r^p_i^p_j)^2 over 1 <= i < j <= n, but
