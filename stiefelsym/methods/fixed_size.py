@@ -593,11 +593,12 @@ def _exact_rank(R: Rank, field: Field, randomized: _RandomizedRank | None = None
                 f"exceeded {SYMBOLIC_RANK_SECONDS:.0f} s); paper: {R.expected}", "ok")
     constant = _rational_constant_matrix(M)
     if constant is not None:
-        # every entry a rational number: the matrix is the same at every point, and its rank over Q
-        # (flint, exact) is the rank at every point, both sides at once
+        # every entry a rational number: the matrix is the same at every point of the chart, and its
+        # rank over Q (flint, exact) is the rank at every point of the chart (the record's reductions
+        # say how the chart covers T*V), both sides at once
         rank = constant.rank() if M.shape[0] and M.shape[1] else 0
-        return (f"a matrix of rational numbers ({M.shape[0]}x{M.shape[1]}, the same at every point): exact rank "
-                f"{rank} over Q, so rank {rank} at every point; paper: {R.expected}", rank == R.expected)
+        return (f"a matrix of rational numbers ({M.shape[0]}x{M.shape[1]}, the same at every point of the chart): "
+                f"exact rank {rank} over Q, so rank {rank} at every point; paper: {R.expected}", rank == R.expected)
     const = _constant_minor_rank(M, field)
     if const == R.expected == min(M.shape):
         return (f"a constant nonzero {const}x{const} minor: rank {const} at every point (full rank); "
