@@ -61,6 +61,9 @@ _IS_ENGINE: dict[str, bool] = {}
 _POSITIONS: dict[CodeType, list] = {}
 #: the frames that stop the walk: the trace's own entry (below it no claim code runs)
 STOP: set[CodeType] = set()
+#: how many traces that record sites are running (a statement a claim makes, Rank or Count, then keeps the
+#: site of the expression that made it: its node is made after the claim returned, with no claim frame)
+RECORDING = [0]
 
 
 def _engine_file(name: str) -> bool:
@@ -98,3 +101,11 @@ def claim_site(frame: FrameType | None) -> SourceSite | None:
 def here() -> SourceSite | None:
     """The site of the caller's caller's claim expression (for the tracer's node makers)."""
     return claim_site(sys._getframe(2))
+
+
+def statement_site(obj: Any) -> None:
+    """Keep on a statement being made (a Rank or a Count; called from its ``__post_init__``) the site of the
+    claim expression that makes it, while a trace records sites: the node of the statement, made when the
+    claim has returned, takes it (so its expected rank or count is changed at that site)."""
+    if RECORDING[0]:
+        object.__setattr__(obj, "_site", claim_site(sys._getframe(3)))   # past __post_init__ and __init__
