@@ -40,7 +40,10 @@ own, that built the nodes) and at every node built there, in the graph with symb
 size's graph (:func:`stiefelsym.ir.mutants.site_mutants`: loop iterations and sizes alike, so graphs that
 part between sizes are covered); each mutant a graph the tracer typed
 (:class:`stiefelsym.ir.replay.GraphClaim`), described in the paper's notation; no Python of the claim runs
-again.  Nodes the engine built (no claim frame made them) are not mutated.  A graph with no site (a
+again.  Nodes the engine built (no claim frame made them) are not mutated.  By default (``sites="claim"``)
+only the sites of the claim's own function are changed, as the source mode edits the claim's own function,
+and those of its nearest helpers where it offers no mutant (:func:`site_rings`); ``sites="all"``: every
+site, the helpers of its package and the Hamiltonians it hands to the engine included.  A graph with no site (a
 claims file's graph, replayed here) is mutated node by node, per size where its graphs have one
 skeleton (:func:`stiefelsym.ir.mutants.sized_graph_mutants`).  A claim with no graph at a size run is
 reported as not covered; with ``on="auto"`` it is mutated on its source instead, and the claim's record

@@ -8,8 +8,9 @@ of the engine in between are passed over, so a node an API helper builds for a c
 products and the difference of ``comm(a, b)``) has the site of that expression, and a Hamiltonian or a
 helper function of the claim's has the sites of its own lines.  A node made with no claim frame below
 the trace (the claim's output, the generic elements and residuals of an Inverse statement, every node
-of a replayed graph) has no site.  A node is made once (nodes are shared when equal), at its first
-site.
+of a replayed graph) has no site, but for the node of a Rank or Count statement: the statement keeps the
+site of the expression that made it (:func:`statement_site`), and its node, made when the claim has
+returned, takes it.  A node is made once (nodes are shared when equal), at its first site.
 
 Sites are kept out of the graph's digest, its lines and its pickled state: two traces of one claim
 with and without sites give the same graph (the same digest), and no method reads them.  The mutation
