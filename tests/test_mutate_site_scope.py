@@ -71,7 +71,7 @@ def test_a_claim_whose_formulas_live_in_helpers_gets_the_mutants_of_its_nearest_
     assert {where(m) for m in every} == {"symmetrized", "product_xp"}
     rep = run_mutation([c], sizes=SIZES, on="graphs", sites="claim")
     cm = rep.claims[0]
-    assert rep.ok() and not cm.skipped and cm.sites == "the functions it calls: symmetrized"
+    assert rep.ok() and not cm.skipped and cm.sites == "the claim's function; the functions it calls: symmetrized"
     assert cm.mutant_count == len(muts)
     flip = next(o for o in cm.mutants if o.operator == "sign" and "flipped" in o.description)
     assert flip.classification == "killed" and all(flip.killed_by[m] == "fails" for m in FIXED)
@@ -118,8 +118,9 @@ def test_an_unknown_scope_is_refused():
 
 def test_a_rank_and_a_count_are_changed_at_the_statement_that_made_them():
     """A Rank or Count node is made when the claim has returned (no claim frame), so it takes the site of the
-    Rank(...) or Count(...) expression: its expected value k -> k + 1 is a mutant at that site (as the source
-    mode changes the claim's expression of it), refuted by the exact, rational and modular methods.  A
+    Rank(...) or Count(...) expression: its expected value k -> k + 1 (and a rank's k -> k - 1) is a mutant at
+    that site (as the source mode changes the claim's expression of it), refuted by the exact, rational and
+    modular methods.  A
     statement made outside a trace with sites keeps no site."""
     from test_methods import dimension_of_V
     c = Claim(id="toy-dim", paper=("toy",), kind="dim", section="", func=dimension_of_V, sizes=admissible(n_max=3))
@@ -127,7 +128,8 @@ def test_a_rank_and_a_count_are_changed_at_the_statement_that_made_them():
     assert not why
     rank = [m for m in muts if "expected rank" in m.description]
     count = [m for m in muts if "expected count" in m.description]
-    assert len(rank) == len(count) == 1 and "`Rank(s.mat(rows)" in rank[0].description
+    assert len(rank) == 2 and len(count) == 1 and all("`Rank(s.mat(rows)" in m.description for m in rank)
+    assert any("lowered to" in m.description for m in rank)     # k - 1: a point where the rank is higher refutes it
     assert "`Count(" in count[0].description
     rep = run_mutation([c], sizes=SIZES, on="graphs", methods=("exact", "rational", "modular"))
     cm = rep.claims[0]
@@ -137,3 +139,30 @@ def test_a_rank_and_a_count_are_changed_at_the_statement_that_made_them():
         assert o.classification == "killed" and all(o.killed_by[k] == "fails" for k in ("exact", "rational", "modular"))
     from stiefelsym import Rank
     assert not hasattr(Rank(None, 1), "_site")
+
+
+def gram(s):
+    """XᵀX (= I on V)."""
+    return s.X.T @ s.X
+
+
+def rank_of_a_helpers_matrix(s):
+    """rank XᵀX = r: the formula in a helper, the statement in the claim."""
+    from stiefelsym import Rank
+    return {"rank": Rank(gram(s), s.r)}
+
+
+def test_a_statement_alone_does_not_stop_the_widening():
+    """The claim's function makes only the Rank statement (its expected value k -> k + 1 is its one mutant):
+    the helper that builds the matrix is changed too, as if the claim's function offered no mutant."""
+    c = Claim(id="toy-rank", paper=("toy",), kind="dim", section="", func=rank_of_a_helpers_matrix,
+              sizes=admissible(n_max=3))
+    muts, why = graph_mutants(c, SIZES, sites="claim")
+    assert not why
+    assert {where(m) for m in muts} == {"rank_of_a_helpers_matrix", "gram"}
+    assert sum("expected rank" in m.description for m in muts) == 2
+    census = MutantCensus()
+    from stiefelsym.analyses.mutate import _graph_mutants
+    _, _, _, scope = _graph_mutants(c, SIZES, census, sites="claim")
+    assert scope == "the claim's function; the functions it calls: gram"
+    assert census.sites == len(muts) + census.ill_typed + census.same_as_claim + census.duplicates

@@ -659,7 +659,8 @@ def _graph_mutants(claim: Claim, sizes: Sequence[Size] | None = None, census: An
     (:func:`stiefelsym.ir.mutants.per_size_mutants`); otherwise (the correction search: a correction is one
     change at every size) such a claim is not covered."""
     from stiefelsym.ir import compile_claim
-    from stiefelsym.ir.mutants import SkeletonMismatch, per_size_mutants, site_mutants, sized_graph_mutants
+    from stiefelsym.ir.mutants import (STATEMENT_CHANGES, MutantCensus, SkeletonMismatch, per_size_mutants,
+                                       site_mutants, sized_graph_mutants)
     from stiefelsym.ir.mutants import graph_mutants as on_graph
     from stiefelsym.scene import REALIZATIONS
     if sites not in SITE_SCOPES:
@@ -670,11 +671,18 @@ def _graph_mutants(claim: Claim, sizes: Sequence[Size] | None = None, census: An
     def at_sites(sited: dict) -> tuple[list, str]:
         if sites == "all":
             return site_mutants(sited, constraints, census), ""
+        # the rings so far, together (one call: the mutants numbered and told apart as one claim's), until they
+        # offer a change of the claim's formulas: a rank's or count's expected value alone is not enough
+        rings = site_rings(claim.func)
         made: list = []
-        for scope, keep in site_rings(claim.func):
-            made = site_mutants(sited, constraints, census, keep=keep)
-            if made:
-                return made, scope
+        for k in range(len(rings)):
+            keeps = [keep for _, keep in rings[:k + 1]]
+            tried = MutantCensus()
+            made = site_mutants(sited, constraints, tried, keep=lambda site, keeps=keeps: any(f(site) for f in keeps))
+            if any(not m.text.startswith(STATEMENT_CHANGES) for m in made) or k == len(rings) - 1:
+                if census is not None:
+                    census.__dict__.update(vars(tried))
+                return made, "; ".join(text for text, _ in rings[:k + 1])
         return made, ""
     try:
         g = compile_claim(claim.func, None, None, constraints)

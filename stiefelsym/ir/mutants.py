@@ -13,7 +13,8 @@ node: a node is a subexpression, shared where the claim computed it once):
 * ``normalize``: a resolvent R(μ) = (μI − A)⁻¹ replaced by (A − μI)⁻¹ = −R(μ), (−μI − A)⁻¹ = R(−μ),
   (A + μI)⁻¹ = −R(−μ) or (I − A/μ)⁻¹ = μR(μ);
 * ``coefficient``: an exact constant k (int or Fraction) of the algebra, of s.q, s.const,
-  s.scalar_matrix, a power, an expected rank or count, changed to k + 1 (s.q(a, b): a + 1 or b + 1).
+  s.scalar_matrix, a power, an expected rank or count, changed to k + 1 (s.q(a, b): a + 1 or b + 1);
+  an expected rank also to k − 1 (a generic rank is refuted by a point where the rank is higher).
 
 A mutant is made by replaying the graph with the one node changed
 (:class:`.replay.GraphClaim`): the tracer builds the mutant's graph, so an ill-typed change
@@ -68,10 +69,12 @@ OPERATORS: tuple[tuple[str, str], ...] = (
     ("invert", "a resolvent (μI − A)⁻¹ replaced by μI − A; an inverse M⁻¹ by M"),
     ("normalize", "a resolvent (μI − A)⁻¹ replaced by (A − μI)⁻¹, (−μI − A)⁻¹, (A + μI)⁻¹ or (I − A/μ)⁻¹"),
     ("coefficient", "an exact constant k of the algebra, of s.q, s.const, s.scalar_matrix, a power, an expected "
-                    "rank or count changed to k + 1"),
+                    "rank or count changed to k + 1 (an expected rank also to k − 1)"),
 )
 
 Edit = Callable[[Any, tuple, Any], Any]
+#: the words of a change of a statement's expected value (a rank or a count), not of a formula
+STATEMENT_CHANGES = ("the expected rank ", "the expected count ")
 
 
 @dataclass(frozen=True)
@@ -151,6 +154,9 @@ def sites(g: Graph) -> Iterator[Site]:
         elif op == "rank" and type(a[1]) is int:
             yield Site(i, "coefficient", f"the expected rank {a[1]} changed to {a[1] + 1}",
                        lambda rp, a, f: rp._rank(_bump(a, 1), f))
+            if a[1] > 0:     # a generic rank found lower at a point is no refutation; one found higher is
+                yield Site(i, "coefficient", f"the expected rank {a[1]} lowered to {a[1] - 1}",
+                           lambda rp, a, f: rp._rank(a[:1] + (a[1] - 1,) + a[2:], f))
         elif op == "count" and type(a[1]) is int:
             yield Site(i, "coefficient", f"the expected count {a[1]} changed to {a[1] + 1}",
                        lambda rp, a, f: rp._count(_bump(a, 1), f))
