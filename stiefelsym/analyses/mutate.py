@@ -42,7 +42,7 @@ part between sizes are covered); each mutant a graph the tracer typed
 (:class:`stiefelsym.ir.replay.GraphClaim`), described in the paper's notation; no Python of the claim runs
 again.  Nodes the engine built (no claim frame made them) are not mutated.  By default (``sites="claim"``)
 only the sites of the claim's own function are changed, as the source mode edits the claim's own function,
-and those of its nearest helpers where it offers no mutant (:func:`site_rings`); ``sites="all"``: every
+and those of its nearest helpers where it offers no mutant of its formulas (:func:`site_rings`); ``sites="all"``: every
 site, the helpers of its package and the Hamiltonians it hands to the engine included.  A graph with no site (a
 claims file's graph, replayed here) is mutated node by node, per size where its graphs have one
 skeleton (:func:`stiefelsym.ir.mutants.sized_graph_mutants`).  A claim with no graph at a size run is
@@ -732,12 +732,12 @@ def _functions_site(functions: Sequence[Callable]) -> Callable[[Any], bool]:
 
 
 def site_rings(fn: Callable, depth: int = HELPER_DEPTH) -> list[tuple[str, Callable[[Any], bool]]]:
-    """The sites of a claim's graphs the mutation analysis changes, as rings tried in order until one offers
-    a mutant: the claim's own function (and what is defined inside it: the scope of the source mode's
-    mutants); then the functions of its package it calls (:func:`helper_functions`), one level of calls at
-    a time (where a claim's formulas live in helpers); then every other site (a Hamiltonian handed over as
-    an object, a method of a class).  Each ring: (what it is, in words; whether a site is in it); the rings
-    are disjoint."""
+    """The sites of a claim's graphs the mutation analysis changes, as rings added in order until together
+    they offer a change of the claim's formulas (not only of a statement's expected value): the claim's own
+    function (and what is defined inside it: the scope of the source mode's mutants); then the functions of
+    its package it calls (:func:`helper_functions`), one level of calls at a time (where a claim's formulas
+    live in helpers); then every other site (a Hamiltonian handed over as an object, a method of a class).
+    Each ring: (what it is, in words; whether a site is in it); the rings are disjoint."""
     levels = _helper_levels(fn, depth)
     rings: list[tuple[str, Callable[[Any], bool]]] = [("the claim's function", _functions_site([fn]))]
     for k, level in enumerate(levels, 1):
