@@ -292,6 +292,9 @@ def test_cli_mutate_on_graphs(catalog):
     data = json.loads(res.stdout)
     assert data["meta"]["sites"] == "all" and "--sites all" in data["meta"]["command"]
     assert data["claims"][0]["sites"] == ""
+    # the source mode has no sites to choose: refused, not ignored
+    res = CliRunner().invoke(mutate_command, ["invariants-so-n", "--sites", "all", "--size", "3,2", "--jobs", "1"])
+    assert res.exit_code == 2 and "--sites" in res.output
     # the source mode stays the default
     res = CliRunner().invoke(mutate_command, ["invariants-so-n", "--method", "rational", "--size", "3,2",
                                               "--limit", "2", "--jobs", "1", "--format", "json"])

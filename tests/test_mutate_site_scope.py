@@ -166,3 +166,12 @@ def test_a_statement_alone_does_not_stop_the_widening():
     _, _, _, scope = _graph_mutants(c, SIZES, census, sites="claim")
     assert scope == "the claim's function; the functions it calls: gram"
     assert census.sites == len(muts) + census.ill_typed + census.same_as_claim + census.duplicates
+
+
+def test_the_report_names_the_claims_mutated_at_their_helpers_sites():
+    from stiefelsym.reports.report import render_mutation_markdown
+    rep = run_mutation([toy(only_in_helpers, "toy-only-in-helpers"), toy(in_a_helper, "toy-in-a-helper")],
+                       sizes=SIZES, on="graphs", methods=("rational",))
+    md = render_mutation_markdown(rep.to_json())
+    assert "- `toy-only-in-helpers`: the claim's function; the functions it calls: symmetrized" in md
+    assert "`toy-in-a-helper`:" not in md        # its own function's sites sufficed

@@ -218,6 +218,9 @@ def mutate(ids: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str, ...
         raise MutateInputError("--on source mutates Python source, and a --claims file's Python never runs in this "
                                "process (it is traced in a child process): use --on graphs (the default with --claims)")
     on = on or ("graphs" if claims_file is not None else "source")
+    if sites != "claim" and on == "source":
+        raise MutateInputError("--sites chooses the sites changed on graphs, and --on source edits the claim's own "
+                               "function: give --on graphs (or auto) with it")
     target = report_dir         # written only where --report-dir says (make mutate: reports/)
     if target is not None:
         _check_report_dir(target)
