@@ -171,8 +171,9 @@ def _command(ids: Sequence[str], sizes: Sequence[str], methods: Sequence[str], s
                    "process, and only its graphs reach this one: they are mutated node by node).")
 @click.option("--sites", "sites", type=click.Choice(["claim", "all"]), default="claim", show_default=True,
               help="On graphs: which sites are changed.  claim: those of the claim's own function (with what is "
-                   "defined in it), as the source mode edits its own source; where it offers no mutant, those of "
-                   "the functions of its package it calls, one level of calls at a time.  all: every site, the "
+                   "defined in it), as the source mode edits its own source; where it offers no change of its "
+                   "formulas (a rank's or count's expected value aside), those of the functions of its package it "
+                   "calls as well, one level of calls at a time.  all: every site, the "
                    "helpers of its package and the Hamiltonians it hands to the engine included (about twice the "
                    "mutants, many of them equivalent).")
 @click.option("--corrections", is_flag=True,
