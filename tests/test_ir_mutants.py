@@ -128,7 +128,8 @@ def test_every_graph_mutant_of_la1_is_killed_by_exact_and_free_or_is_a_true_stat
     free; the equivalent ones (changes of H's Ψ-terms, of the constant λ²A under d/dt, tr(PᵀP) → tr(PPᵀ)...)
     are proved for all n, r by free, with its certificate.  (At n = 3: at n = 4 a mutant with A⁻¹ is a
     symbolic 4x4 solve, beyond the exact method's budget, which says inconclusive there.)"""
-    rep = run_mutation([catalog.get("neumann-lax")], sizes=[Size(3, 2)], methods=("exact", "free"), on="graphs")
+    rep = run_mutation([catalog.get("neumann-lax")], sizes=[Size(3, 2)], methods=("exact", "free"), on="graphs",
+                       sites="all")
     cm = rep.claims[0]
     assert not cm.skipped and cm.mutant_count == len(cm.mutants) >= 40
     assert rep.ok() and not rep.survivors()
@@ -281,6 +282,19 @@ def test_cli_mutate_on_graphs(catalog):
     inv = by_id["invariants-so-n"]
     assert not inv["skipped"] and len(inv["mutants"]) == 4
     assert all(".py:" in o["description"] and o["notation"] and o["lineno"] for o in inv["mutants"])
+    # the sites of the claim's own function by default; every site with --sites all (the command says so)
+    assert data["meta"]["sites"] == "claim" and "--sites" not in data["meta"]["command"]
+    assert inv["sites"] == ci["sites"] == "the claim's function"
+    res = CliRunner().invoke(mutate_command, ["invariants-so-n", "--on", "graphs", "--sites", "all", "--method",
+                                              "rational", "--size", "3,2", "--limit", "2", "--jobs", "1",
+                                              "--format", "json"])
+    assert res.exit_code == 0, res.output
+    data = json.loads(res.stdout)
+    assert data["meta"]["sites"] == "all" and "--sites all" in data["meta"]["command"]
+    assert data["claims"][0]["sites"] == ""
+    # the source mode has no sites to choose: refused, not ignored
+    res = CliRunner().invoke(mutate_command, ["invariants-so-n", "--sites", "all", "--size", "3,2", "--jobs", "1"])
+    assert res.exit_code == 2 and "--sites" in res.output
     # the source mode stays the default
     res = CliRunner().invoke(mutate_command, ["invariants-so-n", "--method", "rational", "--size", "3,2",
                                               "--limit", "2", "--jobs", "1", "--format", "json"])

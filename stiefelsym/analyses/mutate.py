@@ -40,7 +40,10 @@ own, that built the nodes) and at every node built there, in the graph with symb
 size's graph (:func:`stiefelsym.ir.mutants.site_mutants`: loop iterations and sizes alike, so graphs that
 part between sizes are covered); each mutant a graph the tracer typed
 (:class:`stiefelsym.ir.replay.GraphClaim`), described in the paper's notation; no Python of the claim runs
-again.  Nodes the engine built (no claim frame made them) are not mutated.  A graph with no site (a
+again.  Nodes the engine built (no claim frame made them) are not mutated.  By default (``sites="claim"``)
+only the sites of the claim's own function are changed, as the source mode edits the claim's own function,
+and those of its nearest helpers where it offers no mutant of its formulas (:func:`site_rings`); ``sites="all"``: every
+site, the helpers of its package and the Hamiltonians it hands to the engine included.  A graph with no site (a
 claims file's graph, replayed here) is mutated node by node, per size where its graphs have one
 skeleton (:func:`stiefelsym.ir.mutants.sized_graph_mutants`).  A claim with no graph at a size run is
 reported as not covered; with ``on="auto"`` it is mutated on its source instead, and the claim's record
@@ -621,8 +624,18 @@ MUTATION_MODES = ("source", "graphs", "auto")
 ON_GRAPH, ON_GRAPHS_PER_SIZE, ON_SOURCE = "graph", "graphs per size", "source"
 
 
+#: which sites of a claim's graphs the mutation analysis changes (``stiefelsym mutate --sites``): "claim",
+#: those of the claim's own function (with the functions and lambdas defined in it: the scope of the source
+#: mode), widened to the functions of its package it calls, one level at a time, for a claim whose own
+#: function offers no mutant (:func:`site_rings`); "all", every site (the helpers of the claim's package and
+#: the Hamiltonians it hands to the engine included: about twice the mutants, many of them equivalent)
+SITE_SCOPES = ("claim", "all")
+#: the helpers of a claim are looked for this many calls deep (as :func:`helper_functions`)
+HELPER_DEPTH = 3
+
+
 def graph_mutants(claim: Claim, sizes: Sequence[Size] | None = None,
-                  census: Any = None) -> tuple[list[Mutant], str]:
+                  census: Any = None, sites: str = "all") -> tuple[list[Mutant], str]:
     """The mutants of the claim's graph, each a :class:`Mutant` whose function is its graph
     (:class:`stiefelsym.ir.replay.GraphClaim`), with its change in the paper's notation and its site (the
     line and the source of the claim expression changed); and "", or why the claim is not covered.  Each
@@ -632,22 +645,45 @@ def graph_mutants(claim: Claim, sizes: Sequence[Size] | None = None,
     sizes made them.  A claim with no graph at one of ``sizes`` is not covered, and the reason says so.
     Graphs with no site (a claims file's, replayed) are mutated node by node
     (:func:`stiefelsym.ir.mutants.graph_mutants`; per size :func:`~stiefelsym.ir.mutants.sized_graph_mutants`,
-    where the graphs have one skeleton)."""
-    return _graph_mutants(claim, sizes, census)[:2]
+    where the graphs have one skeleton).  ``sites`` (:data:`SITE_SCOPES`): every site ("all", the correction
+    search's space: printed formulas often live in helpers), or those of the claim's own function, else of
+    its nearest helpers ("claim", :func:`site_rings`)."""
+    return _graph_mutants(claim, sizes, census, sites=sites)[:2]
 
 
-def _graph_mutants(claim: Claim, sizes: Sequence[Size] | None = None,
-                   census: Any = None, each_size: bool = False) -> tuple[list[Mutant], str, str]:
-    """:func:`graph_mutants`, and how they were made (:data:`ON_GRAPH`, :data:`ON_GRAPHS_PER_SIZE`).
-    ``each_size`` (the mutation analysis): graphs per size with no site that are not one computation are
-    mutated at each size on its own (:func:`stiefelsym.ir.mutants.per_size_mutants`); otherwise (the
-    correction search: a correction is one change at every size) such a claim is not covered."""
+def _graph_mutants(claim: Claim, sizes: Sequence[Size] | None = None, census: Any = None,
+                   each_size: bool = False, sites: str = "all") -> tuple[list[Mutant], str, str, str]:
+    """:func:`graph_mutants`, how they were made (:data:`ON_GRAPH`, :data:`ON_GRAPHS_PER_SIZE`) and the
+    sites changed (:func:`site_rings`: "" for every site).  ``each_size`` (the mutation analysis): graphs per
+    size with no site that are not one computation are mutated at each size on its own
+    (:func:`stiefelsym.ir.mutants.per_size_mutants`); otherwise (the correction search: a correction is one
+    change at every size) such a claim is not covered."""
     from stiefelsym.ir import compile_claim
-    from stiefelsym.ir.mutants import SkeletonMismatch, per_size_mutants, site_mutants, sized_graph_mutants
+    from stiefelsym.ir.mutants import (STATEMENT_CHANGES, MutantCensus, SkeletonMismatch, per_size_mutants,
+                                       site_mutants, sized_graph_mutants)
     from stiefelsym.ir.mutants import graph_mutants as on_graph
     from stiefelsym.scene import REALIZATIONS
+    if sites not in SITE_SCOPES:
+        raise ValueError(f"unknown scope of sites {sites!r} (one of {', '.join(SITE_SCOPES)})")
     cons = REALIZATIONS[claim.realization]
     constraints = (cons.name, cons.build)
+
+    def at_sites(sited: dict) -> tuple[list, str]:
+        if sites == "all":
+            return site_mutants(sited, constraints, census), ""
+        # the rings so far, together (one call: the mutants numbered and told apart as one claim's), until they
+        # offer a change of the claim's formulas: a rank's or count's expected value alone is not enough
+        rings = site_rings(claim.func)
+        made: list = []
+        for k in range(len(rings)):
+            keeps = [keep for _, keep in rings[:k + 1]]
+            tried = MutantCensus()
+            made = site_mutants(sited, constraints, tried, keep=lambda site, keeps=keeps: any(f(site) for f in keeps))
+            if any(not m.text.startswith(STATEMENT_CHANGES) for m in made) or k == len(rings) - 1:
+                if census is not None:
+                    census.__dict__.update(vars(tried))
+                return made, "; ".join(text for text, _ in rings[:k + 1])
+        return made, ""
     try:
         g = compile_claim(claim.func, None, None, constraints)
     except Exception as exc:    # noqa: BLE001 - the claim traces per size (or not at all)
@@ -655,30 +691,62 @@ def _graph_mutants(claim: Claim, sizes: Sequence[Size] | None = None,
         at = list(dict.fromkeys((z.n, z.r) for z in sizes or () if z is not None))
         head = f"not covered on graphs: the claim has no graph with symbolic sizes (its trace stopped at: {why})"
         if not at:
-            return [], head + ", and no size to trace it at", ""
+            return [], head + ", and no size to trace it at", "", ""
         graphs = {}
         for n, r in at:
             try:
                 graphs[(n, r)] = compile_claim(claim.func, n, r, constraints)
             except Exception as exc:    # noqa: BLE001 - no graph at that size
-                return [], f"{head}, and no graph at ({n},{r}): {str(exc).removeprefix('refused: ')[:160]}", ""
+                return [], f"{head}, and no graph at ({n},{r}): {str(exc).removeprefix('refused: ')[:160]}", "", ""
         sited = _sited(claim.func, graphs, constraints)
+        scope = ""
         if sited is not None:
-            made = site_mutants(sited, constraints, census)
+            made, scope = at_sites(sited)
         else:
             try:
                 made = sized_graph_mutants(graphs, constraints, census)
             except SkeletonMismatch as exc:
                 if not each_size:
-                    return [], f"{head}; its graphs per size differ: {exc}", ""
+                    return [], f"{head}; its graphs per size differ: {exc}", "", ""
                 # no node is the same node at every size, and no site says which are one expression:
                 # each node of each size's graph is changed on its own
                 made = per_size_mutants(graphs, constraints, census)
         return [_as_mutant(gm, functools.partial(_sized_left_sides, gm, constraints), constraints) for gm in made], \
-            "", ON_GRAPHS_PER_SIZE
+            "", ON_GRAPHS_PER_SIZE, scope
     sited = _sited(claim.func, {None: g}, constraints)
-    made = site_mutants(sited, constraints, census) if sited is not None else on_graph(g, constraints, census)
-    return [_as_mutant(gm, functools.partial(_graph_left_sides, gm.graph), constraints) for gm in made], "", ON_GRAPH
+    made, scope = at_sites(sited) if sited is not None else (on_graph(g, constraints, census), "")
+    return [_as_mutant(gm, functools.partial(_graph_left_sides, gm.graph), constraints) for gm in made], "", \
+        ON_GRAPH, scope
+
+
+def _functions_site(functions: Sequence[Callable]) -> Callable[[Any], bool]:
+    """Whether a site (:class:`stiefelsym.ir.sites.SourceSite`) is in one of ``functions`` or in a function,
+    lambda or comprehension defined inside one of them (its file, and its qualified name or one under it)."""
+    scopes = {(f.__code__.co_filename, f.__code__.co_qualname) for f in functions if hasattr(f, "__code__")}
+    within = tuple((file, q + ".") for file, q in scopes)
+
+    def keep(site: Any) -> bool:
+        return (site.file, site.function) in scopes or \
+            any(site.file == file and site.function.startswith(q) for file, q in within)
+    return keep
+
+
+def site_rings(fn: Callable, depth: int = HELPER_DEPTH) -> list[tuple[str, Callable[[Any], bool]]]:
+    """The sites of a claim's graphs the mutation analysis changes, as rings added in order until together
+    they offer a change of the claim's formulas (not only of a statement's expected value): the claim's own
+    function (and what is defined inside it: the scope of the source mode's mutants); then the functions of
+    its package it calls (:func:`helper_functions`), one level of calls at a time (where a claim's formulas
+    live in helpers); then every other site (a Hamiltonian handed over as an object, a method of a class).
+    Each ring: (what it is, in words; whether a site is in it); the rings are disjoint."""
+    levels = _helper_levels(fn, depth)
+    rings: list[tuple[str, Callable[[Any], bool]]] = [("the claim's function", _functions_site([fn]))]
+    for k, level in enumerate(levels, 1):
+        names = ", ".join(name for name, _ in level)
+        what = "the functions it calls" if k == 1 else f"the functions those call ({k} calls deep)"
+        rings.append((f"{what}: {names}", _functions_site([h for _, h in level])))
+    inner = [keep for _, keep in rings]
+    rings.append(("every site", lambda site: not any(keep(site) for keep in inner)))
+    return rings
 
 
 def _sited(func: Callable, graphs: dict, constraints: tuple) -> dict | None:
@@ -767,24 +835,35 @@ def _package(fn: Callable) -> str:
     return _module_package(getattr(fn, "__module__", "") or "")
 
 
-def helper_functions(fn: Callable, depth: int = 3) -> list[tuple[str, Callable]]:
+def helper_functions(fn: Callable, depth: int = HELPER_DEPTH) -> list[tuple[str, Callable]]:
     """The plain functions of the claim's own package (not the engine's, not other claims) that the
     claim refers to, directly or through such helpers, up to ``depth`` levels: the formulas a claim
     builds from (the printed Lax matrices, Hamiltonians, resolvent factors)."""
+    return [h for level in _helper_levels(fn, depth) for h in level]
+
+
+def _helper_levels(fn: Callable, depth: int) -> list[list[tuple[str, Callable]]]:
+    """:func:`helper_functions` by level: those the claim refers to, those they refer to, ... (each once,
+    at its first level; empty levels left out)."""
+    if not hasattr(fn, "__code__"):
+        return []
     pkg = _package(fn)
-    found: dict[int, tuple[str, Callable]] = {}
+    found: set[int] = set()
+    levels: list[list[tuple[str, Callable]]] = []
     frontier = [fn]
     for _ in range(depth):
-        nxt = []
+        nxt: list[tuple[str, Callable]] = []
         for f in frontier:
             for name in _referenced_names(f):
                 obj = f.__globals__.get(name)
                 if isinstance(obj, types.FunctionType) and obj is not fn and id(obj) not in found \
                         and _package(obj) == pkg and pkg and pkg != "stiefelsym" and not hasattr(obj, "claim"):
-                    found[id(obj)] = (name, obj)
-                    nxt.append(obj)
-        frontier = nxt
-    return list(found.values())
+                    found.add(id(obj))
+                    nxt.append((name, obj))
+        if nxt:
+            levels.append(nxt)
+        frontier = [h for _, h in nxt]
+    return levels
 
 
 def _patched(fn: Callable, original: Callable, replacement: Callable) -> Callable:
@@ -1109,6 +1188,9 @@ class ClaimMutation:
     fallback: str = ""
     #: what became of the changes of its graphs (sites, ill_typed, same_as_claim, duplicates, ...)
     census: dict = field(default_factory=dict)
+    #: on graphs with ``sites="claim"``: the sites changed (:func:`site_rings`: the claim's function, or the
+    #: helpers it calls where its function offers no mutant); empty for every site or on the source
+    sites: str = ""
 
     def counted(self) -> set[tuple[int | None, int | None, str]]:
         """The cells where the printed claim passes (free: always counted)."""
@@ -1304,7 +1386,7 @@ def run_mutation(claims: Sequence[Claim], sizes: Sequence[Size] | None = None,
                  methods: Sequence[str] = METHODS, seed: int = 0,
                  on_result: Callable[[MutantOutcome], None] | None = None, *,
                  limit: int | None = None, only: Iterable[int] | None = None,
-                 jobs: int = 1, lend: bool = True, on: str = "source") -> MutationReport:
+                 jobs: int = 1, lend: bool = True, on: str = "source", sites: str = "claim") -> MutationReport:
     """Run every mutant of every claim with every method; classify each mutant.
 
     ``sizes``: the fixed sizes (default: :func:`mutation_sizes` of each claim; given sizes
@@ -1318,16 +1400,21 @@ def run_mutation(claims: Sequence[Claim], sizes: Sequence[Size] | None = None,
     Python source and traces every mutant (:func:`mutants`); "graphs" mutates the claim's graph
     (:func:`graph_mutants`; no Python of the claim runs again), or its graphs per size where they have
     one skeleton (the others are reported as not covered); "auto": graphs where they can be, the source
-    otherwise."""
+    otherwise.  ``sites`` (on graphs, :data:`SITE_SCOPES`): "claim" changes the sites of the claim's own
+    function, as the source mode changes its own source (those of its nearest helpers where it has none,
+    :func:`site_rings`); "all" every site of its graphs."""
     from stiefelsym.methods.fixed_size import PointLoan, lending_points, mutation_analysis
     if on not in MUTATION_MODES:
         raise ValueError(f"unknown mutation mode {on!r} (one of {', '.join(MUTATION_MODES)})")
+    if sites not in SITE_SCOPES:
+        raise ValueError(f"unknown scope of sites {sites!r} (one of {', '.join(SITE_SCOPES)})")
     loan = PointLoan(exact_seconds=MUTANT_EXACT_SECONDS)
     with mutation_analysis(), lending_points(loan) if lend else contextlib.nullcontext():
-        return _run_mutation(claims, sizes, methods, seed, on_result, limit, only, jobs, loan, on)
+        return _run_mutation(claims, sizes, methods, seed, on_result, limit, only, jobs, loan, on, sites)
 
 
-def _run_mutation(claims, sizes, methods, seed, on_result, limit, only, jobs, loan, on="source") -> MutationReport:
+def _run_mutation(claims, sizes, methods, seed, on_result, limit, only, jobs, loan, on="source",
+                  sites="claim") -> MutationReport:
     methods = list(dict.fromkeys(methods))
     for m in methods:
         if m not in METHODS:
@@ -1351,7 +1438,7 @@ def _run_mutation(claims, sizes, methods, seed, on_result, limit, only, jobs, lo
     # workers finish together; the results are taken in the catalog's order whatever the schedule
     order = sorted(range(len(work)), key=lambda ci: -_weight(*work[ci]))
     _WORK.clear()
-    _WORK.update(claims=work, seed=seed, limit=limit, only=only, loan=loan, on=on)
+    _WORK.update(claims=work, seed=seed, limit=limit, only=only, loan=loan, on=on, sites=sites)
     done: dict[int, _ClaimRun] = {}
     emitted = 0
     try:
@@ -1400,6 +1487,7 @@ class _ClaimRun:
     on: str = ""
     fallback: str = ""
     census: dict = field(default_factory=dict)
+    sites: str = ""
 
 
 def _weight(claim: Claim, plan: list) -> int:
@@ -1417,7 +1505,7 @@ def _weight(claim: Claim, plan: list) -> int:
 def _take(cm: ClaimMutation, run: _ClaimRun, on_result: Callable[[MutantOutcome], None] | None) -> None:
     cm.mutant_count, cm.skipped, cm.baseline, cm.mutants = run.mutant_count, run.skipped, run.baseline, run.mutants
     cm.seconds = round(run.seconds, 2)
-    cm.on, cm.fallback, cm.census = run.on, run.fallback, run.census
+    cm.on, cm.fallback, cm.census, cm.sites = run.on, run.fallback, run.census, run.sites
     if on_result is not None and cm.baseline is not None:
         on_result(cm.baseline)
         for o in cm.mutants:
@@ -1430,7 +1518,7 @@ def _claim_task(ci: int) -> _ClaimRun:
     claim, plan = _WORK["claims"][ci]
     seed, loan = _WORK["seed"], _WORK["loan"]
     mode = _WORK.get("on", "source")
-    uncovered, made_on, fallback = "", "", ""
+    uncovered, made_on, fallback, scope = "", "", "", ""
     census = None
     if claim.expect == "fails":
         muts = []
@@ -1441,7 +1529,8 @@ def _claim_task(ci: int) -> _ClaimRun:
         at = [s for s, _ in plan if s is not None]
         where = notation_size(at)
         at = list(dict.fromkeys(([where] if where is not None else []) + at))
-        muts, uncovered, made_on = _graph_mutants(claim, at, census, each_size=True)
+        muts, uncovered, made_on, scope = _graph_mutants(claim, at, census, each_size=True,
+                                                          sites=_WORK.get("sites", "claim"))
         if uncovered and mode == "auto":
             fallback, uncovered, census = uncovered.removeprefix("not covered on graphs: "), "", None
             muts, made_on = mutants(claim), ON_SOURCE
@@ -1462,7 +1551,8 @@ def _claim_task(ci: int) -> _ClaimRun:
     else:
         skipped = ""
     run = _ClaimRun(len(muts), skipped, None, [], 0.0, "" if skipped else made_on, fallback,
-                    {} if census is None else {k: v for k, v in asdict(census).items() if k != "refusals"})
+                    {} if census is None else {k: v for k, v in asdict(census).items() if k != "refusals"},
+                    "" if skipped else scope)
     if skipped:
         return run
     t0 = time.perf_counter()

@@ -113,10 +113,12 @@ def _git_commit() -> str | None:
 
 def _command(ids: Sequence[str], sizes: Sequence[str], methods: Sequence[str], seed: int,
              claims_file: str | None, report_dir: Path | None, limit: int | None,
-             only: Sequence[int], fresh: bool = False, on: str = "source") -> str:
+             only: Sequence[int], fresh: bool = False, on: str = "source", sites: str = "claim") -> str:
     parts = ["stiefelsym", "mutate", *ids]
     if on != "source":
         parts += ["--on", on]
+    if sites != "claim":
+        parts += ["--sites", sites]
     if fresh:
         parts.append("--fresh-points")
     for s in sizes:
@@ -167,6 +169,13 @@ def _command(ids: Sequence[str], sizes: Sequence[str], methods: Sequence[str], s
                    "otherwise (the report says which, and why).  With --corrections: where the candidates "
                    "are made.  Default: source; graphs with --claims (a user's file is traced in a child "
                    "process, and only its graphs reach this one: they are mutated node by node).")
+@click.option("--sites", "sites", type=click.Choice(["claim", "all"]), default="claim", show_default=True,
+              help="On graphs: which sites are changed.  claim: those of the claim's own function (with what is "
+                   "defined in it), as the source mode edits its own source; where it offers no change of its "
+                   "formulas (a rank's or count's expected value aside), those of the functions of its package it "
+                   "calls as well, one level of calls at a time.  all: every site, the "
+                   "helpers of its package and the Hamiltonians it hands to the engine included (about twice the "
+                   "mutants, many of them equivalent).")
 @click.option("--corrections", is_flag=True,
               help="Errata search instead of the mutation analysis: for each named CLAIM, the candidates of the "
                    "declared search space (every operator, in the claim and its helper functions, two signs at "
@@ -175,7 +184,8 @@ def _command(ids: Sequence[str], sizes: Sequence[str], methods: Sequence[str], s
                    "of a --claims file is searched on its graph (the changes of --on graphs, one at a time).")
 def mutate(ids: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str, ...], seed: int,
            claims_file: str | None, report_dir: Path | None, fmt: str, limit: int | None,
-           only: tuple[int, ...], jobs: int, fresh_points: bool, on: str | None, corrections: bool) -> None:
+           only: tuple[int, ...], jobs: int, fresh_points: bool, on: str | None, sites: str,
+           corrections: bool) -> None:
     """Corrupt every claim in small ways and check that every method notices.
 
     Each mutant (one sign flipped, operands of @ or comm swapped, a factor
@@ -209,6 +219,9 @@ def mutate(ids: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str, ...
         raise MutateInputError("--on source mutates Python source, and a --claims file's Python never runs in this "
                                "process (it is traced in a child process): use --on graphs (the default with --claims)")
     on = on or ("graphs" if claims_file is not None else "source")
+    if sites != "claim" and on == "source":
+        raise MutateInputError("--sites chooses the sites changed on graphs, and --on source edits the claim's own "
+                               "function: give --on graphs (or auto) with it")
     target = report_dir         # written only where --report-dir says (make mutate: reports/)
     if target is not None:
         _check_report_dir(target)
@@ -243,7 +256,8 @@ def mutate(ids: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str, ...
     try:
         report = engine.run_mutation(claims, sizes=parsed_sizes or None, methods=methods, seed=seed,
                                      on_result=on_result, limit=limit, only=only or None,
-                                     jobs=jobs or os.cpu_count() or 1, lend=not fresh_points, on=on)
+                                     jobs=jobs or os.cpu_count() or 1, lend=not fresh_points, on=on,
+                                     sites=sites)
     except KeyboardInterrupt:
         click.echo("stiefelsym mutate: interrupted; no report written", err=True)
         raise click.exceptions.Exit(EXIT_INTERRUPTED) from None
@@ -251,10 +265,12 @@ def mutate(ids: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str, ...
         raise MutateInputError(str(exc)) from None
     report.meta = {
         "command": _command(ids, sizes, methods if tuple(methods) != engine.METHODS else (), seed,
-                            claims_file, report_dir, limit, only, fresh_points, on),
+                            claims_file, report_dir, limit, only, fresh_points, on,
+                            sites if on != "source" else "claim"),
         "seed": seed, "methods": list(methods), "sizes": [f"{s.n},{s.r}" for s in parsed_sizes] or None,
         "limit": limit, "claims_file": claims_file,
         **({"on": on} if on != "source" else {}),
+        **({"sites": sites} if on != "source" else {}),
         "operators": ([{"name": name, "description": text} for name, text, _ in engine.OPERATORS] if on == "source"
                       else [{"name": name, "description": text} for name, text in on_graphs.OPERATORS]),
         **({"source_operators": [{"name": name, "description": text} for name, text, _ in engine.OPERATORS]}

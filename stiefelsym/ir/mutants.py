@@ -13,7 +13,8 @@ node: a node is a subexpression, shared where the claim computed it once):
 * ``normalize``: a resolvent R(μ) = (μI − A)⁻¹ replaced by (A − μI)⁻¹ = −R(μ), (−μI − A)⁻¹ = R(−μ),
   (A + μI)⁻¹ = −R(−μ) or (I − A/μ)⁻¹ = μR(μ);
 * ``coefficient``: an exact constant k (int or Fraction) of the algebra, of s.q, s.const,
-  s.scalar_matrix, a power, an expected rank or count, changed to k + 1 (s.q(a, b): a + 1 or b + 1).
+  s.scalar_matrix, a power, an expected rank or count, changed to k + 1 (s.q(a, b): a + 1 or b + 1);
+  an expected rank also to k − 1 (a generic rank is refuted by a point where the rank is higher).
 
 A mutant is made by replaying the graph with the one node changed
 (:class:`.replay.GraphClaim`): the tracer builds the mutant's graph, so an ill-typed change
@@ -68,10 +69,12 @@ OPERATORS: tuple[tuple[str, str], ...] = (
     ("invert", "a resolvent (μI − A)⁻¹ replaced by μI − A; an inverse M⁻¹ by M"),
     ("normalize", "a resolvent (μI − A)⁻¹ replaced by (A − μI)⁻¹, (−μI − A)⁻¹, (A + μI)⁻¹ or (I − A/μ)⁻¹"),
     ("coefficient", "an exact constant k of the algebra, of s.q, s.const, s.scalar_matrix, a power, an expected "
-                    "rank or count changed to k + 1"),
+                    "rank or count changed to k + 1 (an expected rank also to k − 1)"),
 )
 
 Edit = Callable[[Any, tuple, Any], Any]
+#: the words of a change of a statement's expected value (a rank or a count), not of a formula
+STATEMENT_CHANGES = ("the expected rank ", "the expected count ")
 
 
 @dataclass(frozen=True)
@@ -151,6 +154,9 @@ def sites(g: Graph) -> Iterator[Site]:
         elif op == "rank" and type(a[1]) is int:
             yield Site(i, "coefficient", f"the expected rank {a[1]} changed to {a[1] + 1}",
                        lambda rp, a, f: rp._rank(_bump(a, 1), f))
+            if a[1] > 0:     # a generic rank found lower at a point is no refutation; one found higher is
+                yield Site(i, "coefficient", f"the expected rank {a[1]} lowered to {a[1] - 1}",
+                           lambda rp, a, f: rp._rank(a[:1] + (a[1] - 1,) + a[2:], f))
         elif op == "count" and type(a[1]) is int:
             yield Site(i, "coefficient", f"the expected count {a[1]} changed to {a[1] + 1}",
                        lambda rp, a, f: rp._count(_bump(a, 1), f))
@@ -441,12 +447,13 @@ def _change_key(site: Site) -> tuple[str, str]:
     return site.operator, _NUMBER.sub("k", site.text)
 
 
-def site_groups(graphs: dict[Any, Graph]) -> dict[tuple, dict[Any, dict[int, Edit]]]:
+def site_groups(graphs: dict[Any, Graph], keep: Callable[[SourceSite], bool] | None = None
+                ) -> dict[tuple, dict[Any, dict[int, Edit]]]:
     """The changes of :func:`sites` grouped by the claim expression that made their nodes (the graphs'
     :attr:`~.graph.Graph.sites`): per (source site, operator, change whatever its numbers, occurrence at the
     node), per size, the edits of every node built at that site that offers the change.  In source order
     (file, line, column), then the order of :data:`OPERATORS`.  Nodes with no site (made by the engine) are
-    left out."""
+    left out, and so are those whose site ``keep`` (when given) refuses."""
     order = {name: k for k, (name, _) in enumerate(OPERATORS)}
     groups: dict[tuple, dict[Any, dict[int, Edit]]] = {}
     texts: dict[tuple, str] = {}
@@ -456,7 +463,7 @@ def site_groups(graphs: dict[Any, Graph]) -> dict[tuple, dict[Any, dict[int, Edi
         seen: dict[tuple, int] = {}
         for x in sites(g):
             src = g.sites[x.node]
-            if src is None:
+            if src is None or (keep is not None and not keep(src)):
                 continue
             change = _change_key(x)
             k = seen[(x.node,) + change] = seen.get((x.node,) + change, -1) + 1
@@ -468,7 +475,7 @@ def site_groups(graphs: dict[Any, Graph]) -> dict[tuple, dict[Any, dict[int, Edi
 
 
 def site_mutants(graphs: dict[Any, Graph], constraints: tuple, census: MutantCensus | None = None,
-                 notation: bool = True) -> list[GraphMutant]:
+                 notation: bool = True, keep: Callable[[SourceSite], bool] | None = None) -> list[GraphMutant]:
     """The mutants of a claim at its sites: ``graphs`` its graph with symbolic sizes (key None) or its graph
     at each size (keys (n, r), in the order of the sizes its changes are written at), traced with sites.
     A mutant is one change at one site (:func:`site_groups`) made at every node built there, in every
@@ -476,14 +483,15 @@ def site_mutants(graphs: dict[Any, Graph], constraints: tuple, census: MutantCen
     sizes made those nodes (the graphs need not have one skeleton).  A change refused by the tracer at one
     of the sizes is left out (counted ill-typed), and so is one that computes at every size what the claim
     or an earlier mutant computes; it is written (:func:`.notation.diff`) at the first size where it
-    changes an output."""
+    changes an output.  ``keep``: the sites changed (default: every site; the mutation analysis keeps those
+    of the claim's own function, :func:`stiefelsym.analyses.mutate.site_rings`)."""
     from stiefelsym.ir.notation import diff
     census = census if census is not None else MutantCensus()
     sizes = list(graphs)
     base = tuple(output_key(graphs[z]) for z in sizes)
     seen = {base}
     out: list[GraphMutant] = []
-    for (src, _, _, _, operator, text), per in site_groups(graphs).items():
+    for (src, _, _, _, operator, text), per in site_groups(graphs, keep).items():
         census.sites += 1
         made = _made_at_sizes(graphs, per, constraints, census)
         if made is None:

@@ -8,8 +8,9 @@ of the engine in between are passed over, so a node an API helper builds for a c
 products and the difference of ``comm(a, b)``) has the site of that expression, and a Hamiltonian or a
 helper function of the claim's has the sites of its own lines.  A node made with no claim frame below
 the trace (the claim's output, the generic elements and residuals of an Inverse statement, every node
-of a replayed graph) has no site.  A node is made once (nodes are shared when equal), at its first
-site.
+of a replayed graph) has no site, but for the node of a Rank or Count statement: the statement keeps the
+site of the expression that made it (:func:`statement_site`), and its node, made when the claim has
+returned, takes it.  A node is made once (nodes are shared when equal), at its first site.
 
 Sites are kept out of the graph's digest, its lines and its pickled state: two traces of one claim
 with and without sites give the same graph (the same digest), and no method reads them.  The mutation
@@ -61,6 +62,9 @@ _IS_ENGINE: dict[str, bool] = {}
 _POSITIONS: dict[CodeType, list] = {}
 #: the frames that stop the walk: the trace's own entry (below it no claim code runs)
 STOP: set[CodeType] = set()
+#: how many traces that record sites are running (a statement a claim makes, Rank or Count, then keeps the
+#: site of the expression that made it: its node is made after the claim returned, with no claim frame)
+RECORDING = [0]
 
 
 def _engine_file(name: str) -> bool:
@@ -98,3 +102,11 @@ def claim_site(frame: FrameType | None) -> SourceSite | None:
 def here() -> SourceSite | None:
     """The site of the caller's caller's claim expression (for the tracer's node makers)."""
     return claim_site(sys._getframe(2))
+
+
+def statement_site(obj: Any) -> None:
+    """Keep on a statement being made (a Rank or a Count; called from its ``__post_init__``) the site of the
+    claim expression that makes it, while a trace records sites: the node of the statement, made when the
+    claim has returned, takes it (so its expected rank or count is changed at that site)."""
+    if RECORDING[0]:
+        object.__setattr__(obj, "_site", claim_site(sys._getframe(3)))   # past __post_init__ and __init__

@@ -8,6 +8,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
+from stiefelsym.ir.sites import statement_site
+
 
 def _as_int(obj: Any, name: str, what: str) -> None:
     v = getattr(obj, name)
@@ -36,6 +38,7 @@ class Rank:
             raise TypeError("Rank: the expected rank is an int and generic a bool")
         if type(self.meaning) is not str:
             raise TypeError("Rank: the meaning is a string")
+        statement_site(self)
 
 
 @dataclass(frozen=True)
@@ -54,6 +57,7 @@ class Count:
                             "equals anything is refused)")
         if type(self.meaning) is not str:
             raise TypeError("Count: the meaning is a string")
+        statement_site(self)
 
 
 #: the spaces an :class:`Inverse` may act on: a generic element of each, as the methods build it

@@ -27,7 +27,7 @@ from typing import Any, Callable, Iterator
 from stiefelsym.ir.seal import refuse_registration
 from stiefelsym.ir.families import COMPARISONS, SYMBOLS, SizeFamily
 from stiefelsym.ir.graph import _REFS, Graph, Named, Ref, Size, _ref
-from stiefelsym.ir.sites import STOP, claim_site
+from stiefelsym.ir.sites import RECORDING, STOP, claim_site
 from stiefelsym.ir.statements import DOMAINS, Count, Inverse, Rank, RightInverse
 
 
@@ -1043,6 +1043,16 @@ class Trace:
                         "function, in the claim's checks)")
 
     # -- structured values ------------------------------------------------------------------------
+    def statement(self, v: Any, op: str, args: tuple) -> Any:
+        """The node of a Rank or Count statement, with the site of the claim expression that made it (kept on
+        the statement: :func:`.sites.statement_site`) when the trace records sites."""
+        g = self.g
+        made = len(g.ops)
+        ref = g.add(op, args)
+        if g.sites is not None and len(g.ops) > made:
+            g.sites[ref.i] = getattr(v, "_site", None)
+        return ref
+
     def structure(self, v: Any) -> Any:
         """A value a claim (or a traced function) returns, as a node."""
         tv = type(v)
@@ -1052,9 +1062,9 @@ class Trace:
                 what = ("a list of rows (a Jacobian?): build the matrix with s.mat(rows)" if isinstance(m, list)
                         else "a number" if type(m) is Tracer else type(m).__name__)
                 return self.refuse(f"Rank: the matrix must be a matrix of the scene, not {what}")
-            return self.g.add("rank", (m._r, v.expected, v.generic, v.meaning))
+            return self.statement(v, "rank", (m._r, v.expected, v.generic, v.meaning))
         if tv is Count:
-            return self.g.add("count", (v.value, v.expected, v.meaning))
+            return self.statement(v, "count", (v.value, v.expected, v.meaning))
         if tv is Inverse or tv is RightInverse:
             return self.refuse(f"an {tv.__name__} statement is a check of the claim (a value of the dict it returns)")
         if tv is int or tv is Fraction:
@@ -1394,6 +1404,7 @@ def trace(func: Callable, n: int | None, r: int | None, constraints: tuple[str, 
     t = Trace(n, r, constraints, family)
     if sites:
         t.g.sites = []
+        RECORDING[0] += 1
     _ACTIVE.append(t)
     try:
         out = func(TraceScene(t, t.g.add("scene", (0,))))
@@ -1407,6 +1418,8 @@ def trace(func: Callable, n: int | None, r: int | None, constraints: tuple[str, 
         t.check_parameters()
     finally:
         _ACTIVE.pop()
+        if sites:
+            RECORDING[0] -= 1
     g = t.g.sealed()
     g.sizes = None if n is None else (n, r)
     return g

@@ -1651,6 +1651,11 @@ def _md_mutation_body(data: dict[str, Any], full: bool) -> list[str]:
         if fell:
             out += ["Claims mutated on their source because their graphs could not be:", ""]
             out += [f"- `{c['claim']}`: {_md_escape(c['fallback'])}" for c in fell] + [""]
+    widened = [c for c in data.get("claims", []) if c.get("sites") and c["sites"] != "the claim's function"]
+    if widened:
+        out += ["Claims whose own function offers no change of its formulas, mutated at the sites of the functions "
+                "it calls as well:", ""]
+        out += [f"- `{c['claim']}`: {_md_escape(c['sites'])}" for c in widened] + [""]
     skipped = [c for c in data.get("claims", []) if c.get("skipped")]
     if skipped:
         out += ["Claims not mutated:", ""]
