@@ -102,3 +102,34 @@ def test_the_reduced_point_is_on_w_n_r():
         assert ((Z.T @ Z) - I)._a.tolist() == (I - I)._a.tolist()
         N = Z.T @ Zd + Zd.T @ Z          # Z*Ż + Ż*Z = 0
         assert all(x == 0 for x in N._a.flat)
+
+
+def test_a_correction_widens_its_budget_at_r_close_to_n():
+    claim = load_catalog().get("complex-neumann-dual-lax")
+    fixed = claim.corrected(0)
+    assert not claim.exact_at(5, 5) and fixed.exact_at(5, 5) and fixed.exact_at(7, 7)
+    assert not fixed.exact_at(4, 2) and not fixed.exact_at(3, 2)
+    with pytest.raises(ValueError):
+        claim.correction("t: a corank of n at n", exact_corank={4: 4})
+    res = run_exact(fixed, 4, 4, 0, func=claim.corrections[0].func)
+    assert res.verdict == "proved", (res.verdict, res.message)
+    assert any(UNITARY in x for x in res.reductions), res.reductions
+
+
+def test_a_correction_budget_at_r_close_to_n_reaches_a_claims_file(tmp_path):
+    from click.testing import CliRunner
+
+    from stiefelsym import cli
+    from stiefelsym.api import load
+    path = tmp_path / "budget.py"
+    path.write_text("from stiefelsym import admissible, claim\n"
+                    "@claim('c', paper='t', kind='id', section='9', sizes=admissible(n_max=5), exact_max_n=3,\n"
+                    "       fails_at=lambda n, r: True, erratum='X^T X is I_r, not 2 I_r.')\n"
+                    "def c(s):\n    return {'XtX': s.X.T @ s.X - 2 * s.Ir}\n"
+                    "@c.claim.correction('I_r in place of 2 I_r', exact_corank={5: 1})\n"
+                    "def c_corrected(s):\n    return {'XtX': s.X.T @ s.X - s.Ir}\n")
+    c = load([path], catalog=False).get("c")
+    assert c.corrections[0].exact_corank == ((5, 1),) and not c.exact_at(5, 4)
+    assert c.corrected(0).exact_at(5, 4) and c.corrected(0).exact_at(5, 5) and not c.corrected(0).exact_at(5, 3)
+    out = CliRunner().invoke(cli.main, ["show", "--claims", str(path), "c"]).output
+    assert "correction:  I_r in place of 2 I_r; exact symbolic method also at n - r <= 1 at n = 5" in out

@@ -27,8 +27,8 @@ from stiefelsym.ir.graph import Ref
 #: the reduction stated in the record of a run whose complex point is reduced by U(r)
 REDUCTION = (
     "; the point (Z, Zdot) of TW(n, r), realified, reduced by U(r) acting on the right: Z = [I - K*K; -2K] M^{-1}, "
-    "M = I + K*K, M^{-1} = I - K*(I + KK*)^{-1}K (K generic complex (n - r) x r; the unitary Cayley chart at "
-    "S11 = 0; at r = n, Z = I), Zdot = ZW' + (I - ZZ*)Y' (W' skew-Hermitian, Y' generic with its first r rows 0).  "
+    "M = I + K*K, M^{-1} = I - K*(I + KK*)^{-1}K (K generic complex (n - r) x r; the first r columns of the unitary "
+    "Cayley transform of [[S11, -K*], [K, 0]] at S11 = 0; at r = n, Z = I), Zdot = ZW' + (I - ZZ*)Y' (W' skew-Hermitian, Y' generic with its first r rows 0).  "
     "The map (K, h) -> Z(K)h, h in U(r), has an injective differential at (0, I) onto the tangent space of the "
     "irreducible W(n, r) (dK gives [0; -2dK], h = exp(eta) gives [eta; 0], eta skew-Hermitian), and (Z(K)h, Zdot h) "
     "is every tangent vector at Z(K)h (W' -> h*W'h, Y' -> Y'h): the chart moved by U(r) is dense in TW(n, r).  The "
