@@ -166,6 +166,8 @@ def unitary_right_breaks(g: Any) -> list[str]:
                 t = "scene"
             elif op == "attr":
                 name = a[1]
+                if of(a[0]) != "scene":
+                    raise _Break(f"the attribute {name} of a value that is not the scene")
                 if name in ("Zc", "Zc_dot"):
                     t = _M(U.N, U.H)
                 elif name in _NSIDE_LEAVES:
@@ -178,6 +180,8 @@ def unitary_right_breaks(g: Any) -> list[str]:
                     raise _Break(f"the leaf {name}")
             elif op == "call":
                 name, args = a[1], a[2]
+                if of(a[0]) != "scene":
+                    raise _Break(f"the call {name} on a value that is not the scene")
                 if name == "conj":
                     x = mat(of(args[0]))
                     t = x if x.scal else _M(_flip(U, x.row), _flip(U, x.col))
