@@ -904,10 +904,12 @@ class Scene(PaperObjects):
         E = self.realify(Mat._consts(E0, f, ("n", "r"), tr), Mat._consts(0 * E0, f, ("n", "r"), tr))
         if self._unitary_right:
             # reduced by U(r) on the right (stiefelsym.methods.complex_right): S11 = 0, and M^{-1} =
-            # (I + K*K)^{-1} = I - K*(I + KK*)^{-1}K (Woodbury), from the rows r..n-1 of K: an (n - r) x
-            # (n - r) complex inverse (none at r = n, where Z = I)
+            # (I + K*K)^{-1}; where n - r < r, I - K*(I + KK*)^{-1}K (Woodbury) from the rows r..n-1 of
+            # K: an (n - r) x (n - r) complex inverse (none at r = n, where Z = I)
             if r == n:
                 Minv = I2r
+            elif n - r >= r:
+                Minv = (I2r + KtK).inv()
             else:
                 rows = list(range(r, n)) + list(range(n + r, 2 * n))
                 K2 = Mat._wrap(Kc._a[rows, :].copy(), f, ("?", "r+r"), tr)

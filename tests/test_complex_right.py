@@ -95,7 +95,7 @@ def test_the_momenta_are_proved_on_the_reduced_chart(size):
 
 
 def test_the_reduced_point_is_on_w_n_r():
-    for n, r in ((3, 2), (4, 3), (3, 3)):
+    for n, r in ((3, 2), (4, 3), (3, 3), (4, 1), (4, 2)):
         s = Scene(n, r, SymbolicField(), chart="cayley", unitary_right=True)
         Z, Zd = s.Zc, s.Zc_dot
         I = s.identity(2 * r)

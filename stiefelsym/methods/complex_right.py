@@ -6,8 +6,8 @@ M = I + S11 + K*K: the r² real parameters of S11 enter every entry of Z through
 (3, 3) the chart needs a realified 6 × 6 inverse.  Where the graph is covariant under
 (Z, Ż) ↦ (Z R(h), Ż R(h)), h ∈ U(r) (R(h) the realified h; :func:`unitary_right_breaks` finds
 nothing), the chart with S11 = 0 suffices: the points Z(K) h fill a dense open set of W(n, r).  Then
-M⁻¹ = I − K*(I + KK*)⁻¹K (Woodbury: an (n − r) × (n − r) complex inverse, a scalar 1/(1 + |K|²) at
-n − r = 1), and at r = n the chart is Z = I, Ż = W (W skew-Hermitian).
+M⁻¹ = I − K*(I + KK*)⁻¹K where n − r < r (Woodbury: an (n − r) × (n − r) complex inverse, a scalar
+1/(1 + |K|²) at n − r = 1; M⁻¹ itself, r × r complex, otherwise), and at r = n the chart is Z = I, Ż = W (W skew-Hermitian).
 
 The pass types every value of the graph: a matrix has a row and a column side, each an R^n side
 (nothing acts on it) or a realified C^r side on which h acts as R(h) or, after a conjugation, as
@@ -27,7 +27,7 @@ from stiefelsym.ir.graph import Ref
 #: the reduction stated in the record of a run whose complex point is reduced by U(r)
 REDUCTION = (
     "; the point (Z, Zdot) of TW(n, r), realified, reduced by U(r) acting on the right: Z = [I - K*K; -2K] M^{-1}, "
-    "M = I + K*K, M^{-1} = I - K*(I + KK*)^{-1}K (K generic complex (n - r) x r; the first r columns of the unitary "
+    "M = I + K*K (M^{-1} = I - K*(I + KK*)^{-1}K where n - r < r; K generic complex (n - r) x r; the first r columns of the unitary "
     "Cayley transform of [[S11, -K*], [K, 0]] at S11 = 0; at r = n, Z = I), Zdot = ZW' + (I - ZZ*)Y' (W' skew-Hermitian, Y' generic with its first r rows 0).  "
     "The map (K, h) -> Z(K)h, h in U(r), has an injective differential at (0, I) onto the tangent space of the "
     "irreducible W(n, r) (dK gives [0; -2dK], h = exp(eta) gives [eta; 0], eta skew-Hermitian), and (Z(K)h, Zdot h) "
