@@ -583,12 +583,14 @@ def complex_neumann_dual_lax(s):
 
 
 @complex_neumann_dual_lax.claim.correction(
-    "(LA3*): (λI_n − A)⁻¹ in place of (I_n − λA)⁻¹ in the off-diagonal blocks", exact_max_r={2: 2, 3: 1})
+    "(LA3*): (λI_n − A)⁻¹ in place of (I_n − λA)⁻¹ in the off-diagonal blocks", exact_max_r={2: 2, 3: 1},
+    exact_corank={3: 0, 4: 0, 5: 0, 6: 0, 7: 0})
 def complex_neumann_dual_lax_corrected(s):
     return {"LA3*": complex_lax_residual(s, lambda t: t.resolvent(t.lam))}
 
 
-@claim("complex-neumann-momenta", paper=("W-eq", "u(1)"), kind="pb", exact_max_n=2, exact_max_r={3: 1},
+@claim("complex-neumann-momenta", paper=("W-eq", "u(1)"), kind="pb", exact_max_n=2, exact_max_r={3: 2},
+       exact_corank={3: 0, 4: 0, 5: 0, 6: 0, 7: 0},
        statement=r"\tfrac{d}{dt}\psi_0=0,\ \psi_0=Z^T\dot{\bar Z}-\dot Z^T\bar Z;\quad \tfrac{d}{dt}\psi_j=0,\ "
                  r"\psi_j=\sum_{i=1}^r\dot z_i^j\bar z_i^j-z_i^j\dot{\bar z}_i^j\ \text{along (W-eq)}")
 def complex_neumann_momenta(s):

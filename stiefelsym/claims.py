@@ -193,6 +193,9 @@ class Correction:
     #: first for the corrected statement (besides the claim's own): a corrected formula may be proved
     #: fast where the printed one, which fails, is not worth a symbolic run (a witness refutes it)
     exact_max_r: tuple[tuple[int, int], ...] = ()
+    #: (n, largest n - r) pairs at which ``auto`` tries the symbolic method first for the corrected
+    #: statement (besides the claim's own exact_corank)
+    exact_corank: tuple[tuple[int, int], ...] = ()
 
 
 #: what a claim id may be (it starts every verdict line and names the claim in every report)
@@ -286,11 +289,11 @@ class Claim:
                              "(say what is wrong with erratum=...)")
 
     def correction(self, description: str, changes: int = 1, expect: str | None = None,
-                   exact_max_r: dict[int, int] | None = None):
+                   exact_max_r: dict[int, int] | None = None, exact_corank: dict[int, int] | None = None):
         """Decorator registering a candidate correction of this claim (errata search); ``expect``
         changes what the corrected statement asserts ("holds" or "nonzero"); ``exact_max_r``
-        ({n: largest r}, n above the claim's exact_max_n) widens the symbolic budget of the corrected
-        statement alone."""
+        ({n: largest r}, n above the claim's exact_max_n) and ``exact_corank`` ({n: largest n - r}) widen
+        the symbolic budget of the corrected statement alone."""
         if expect not in (None, "holds", "nonzero"):
             raise ValueError(f"a correction expects 'holds' or 'nonzero', not {expect!r}")
         # the description names the correction in every record, report and `check` (the variant of a record):
@@ -300,11 +303,12 @@ class Claim:
         if any(c.description == description for c in self.corrections):
             raise ValueError(f"claim {self.id}: two corrections described {description!r} (the description names "
                              "the correction in the records)")
-        pairs = _pairs(exact_max_r)
-        dataclasses.replace(self, exact_max_r=_widened(self.exact_max_r, pairs))   # validated as the claim's
+        pairs, coranks = _pairs(exact_max_r), _pairs(exact_corank, "exact_corank")
+        dataclasses.replace(self, exact_max_r=_widened(self.exact_max_r, pairs),   # validated as the claim's
+                            exact_corank=_widened(self.exact_corank, coranks))
 
         def deco(fn):
-            self.corrections.append(Correction(description, fn, changes, expect, pairs))
+            self.corrections.append(Correction(description, fn, changes, expect, pairs, coranks))
             return fn
         return deco
 
@@ -317,6 +321,8 @@ class Claim:
             changes["expect"] = corr.expect
         if corr.exact_max_r:
             changes["exact_max_r"] = _widened(self.exact_max_r, corr.exact_max_r)
+        if corr.exact_corank:
+            changes["exact_corank"] = _widened(self.exact_corank, corr.exact_corank)
         return dataclasses.replace(self, **changes) if changes else self
 
 

@@ -254,7 +254,7 @@ class Scene(PaperObjects):
                  rng: random.Random | None = None, component: int = 0,
                  realization: str = "standard", options: Mapping[str, Any] | None = None,
                  tracker: CoordinateTracker | None = None, right_reduction: bool = False,
-                 diagonal_A: bool = False, cayley_right: bool = False) -> None:
+                 diagonal_A: bool = False, cayley_right: bool = False, unitary_right: bool = False) -> None:
         if not isinstance(n, int) or not isinstance(r, int):
             raise SizeError("n and r must be integers")
         if r < 1:
@@ -290,6 +290,9 @@ class Scene(PaperObjects):
             raise ValueError("the right-reduced Cayley chart is a Cayley chart of the standard realization, "
                              "2 <= r <= n")
         self._cayley_right = cayley_right
+        #: the complex point reduced by U(r) acting on the right as well: S11 = 0
+        #: (:meth:`_equivariant_complex_point`; stiefelsym.methods.complex_right states when it is used)
+        self._unitary_right = unitary_right
         self._params: dict[str, Any] = {}
         self._param_blocks: list[tuple[str, Any, Any]] = []
         self._cache: dict[str, Any] = {}
@@ -749,7 +752,10 @@ class Scene(PaperObjects):
         """The reduction's statement of the second point and of the complex point, when the claim
         read them (else '')."""
         out = ""
-        if self._complex_point_read:
+        if self._complex_point_read and self._unitary_right:
+            from stiefelsym.methods.complex_right import REDUCTION as UNITARY_RIGHT
+            out = UNITARY_RIGHT
+        elif self._complex_point_read:
             out = ("; the point (Z, Zdot) of TW(n, r), realified, generic: real (g, h) act on it as "
                    "realify(g) Z realify(h)^T and leave it anywhere, Z = [I - S11 - K*K; -2K] M^{-1}, "
                    "M = I + S11 + K*K (the first r columns of the unitary Cayley transform of "
@@ -886,7 +892,6 @@ class Scene(PaperObjects):
         on it as realify(g) Z realify(h)ᵀ, and the chart's reduction leaves Z anywhere on W(n, r)."""
         n, r = self.n, self.r
         f, tr = self._field, self._tracker
-        S11 = self.realify(self._skew_params("cS", r, "r"), self._sym_params("cH", r, "r"))
         Kre, Kim = self.zeros(n, r, ("n", "r")), self.zeros(n, r, ("n", "r"))
         for i in range(r, n):
             for j in range(r):
@@ -895,10 +900,26 @@ class Scene(PaperObjects):
         Kc = self.realify(Kre, Kim)
         I2r = self.identity(2 * r, "r+r")
         KtK = Kc.T @ Kc
-        M = I2r + S11 + KtK
         E0 = np.eye(n, r, dtype=np.int64)
         E = self.realify(Mat._consts(E0, f, ("n", "r"), tr), Mat._consts(0 * E0, f, ("n", "r"), tr))
-        Z = (E @ (I2r - S11 - KtK) - Kc * self.const(2)) @ M.inv()
+        if self._unitary_right:
+            # reduced by U(r) on the right (stiefelsym.methods.complex_right): S11 = 0, and M^{-1} =
+            # (I + K*K)^{-1}; where n - r < r, I - K*(I + KK*)^{-1}K (Woodbury) from the rows r..n-1 of
+            # K: an (n - r) x (n - r) complex inverse (none at r = n, where Z = I)
+            if r == n:
+                Minv = I2r
+            elif n - r >= r:
+                Minv = (I2r + KtK).inv()
+            else:
+                rows = list(range(r, n)) + list(range(n + r, 2 * n))
+                K2 = Mat._wrap(Kc._a[rows, :].copy(), f, ("?", "r+r"), tr)
+                I2m = self.identity(2 * (n - r), "?")
+                Minv = I2r - K2.T @ (I2m + K2 @ K2.T).inv() @ K2
+            Z = (E @ (I2r - KtK) - Kc * self.const(2)) @ Minv
+        else:
+            S11 = self.realify(self._skew_params("cS", r, "r"), self._sym_params("cH", r, "r"))
+            M = I2r + S11 + KtK
+            Z = (E @ (I2r - S11 - KtK) - Kc * self.const(2)) @ M.inv()
         W = self.realify(self._skew_params("cW", r, "r"), self._sym_params("cK", r, "r"))
         Y = self.realify(self._normal_params("cY", n, r), self._normal_params("cV", n, r))
         I2 = self.identity(2 * n, "n+n")

@@ -946,8 +946,10 @@ def show(claim_id: str, claims_files: tuple[str, ...]) -> None:
         click.echo(f"erratum:     its sizes (fails_at) cannot be evaluated at the listed sizes ({unanswered})")
     for corr in c.corrections:
         click.echo(f"correction:  {corr.description}"
-                   + ("" if not corr.exact_max_r else "; exact symbolic method also"
-                      + ";".join(f" up to r = {r} at n = {n}" for n, r in corr.exact_max_r)))
+                   + ("" if not (corr.exact_max_r or corr.exact_corank) else "; exact symbolic method also"
+                      + ";".join([f" up to r = {r} at n = {n}" for n, r in corr.exact_max_r]
+                                 + [f" at {'r = n' if k == 0 else f'n - r <= {k}'} at n = {n}"
+                                    for n, k in corr.exact_corank])))
     click.echo(f"source:      {_source(c)}")
 
 

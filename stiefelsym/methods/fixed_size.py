@@ -31,7 +31,7 @@ import numpy as np
 from stiefelsym._lazy import lazy
 from stiefelsym.claims import Claim, Count, Rank, deadline
 from stiefelsym.ir.statements import InverseIdentities
-from stiefelsym.methods import cayley_right, costmodel
+from stiefelsym.methods import cayley_right, complex_right, costmodel
 from stiefelsym.methods.costmodel import BudgetError as BudgetError  # the methods raise it (re-exported)
 from stiefelsym.ir import compile_claim
 from stiefelsym.ir.derivative import derivatives, scene_flows
@@ -707,6 +707,8 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
             # tried first where the graph names no point; a point read while evaluating (through an
             # engine step) or a coordinate read sends it on to the charts that fix the point
             attempts: tuple = ((True, False) if claim.realization == "standard" and not visible else (False,))
+            # a graph covariant under U(r) on the right of the complex point: that point with S11 = 0
+            unitary = complex_right.applies(graph, claim.realization, n, r)
             if claim.realization == "standard" and not visible and _point_free(claim, n, r, func, graph):
                 attempts = ("diagonal",) + attempts
             for right in attempts:
@@ -716,11 +718,13 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                 def build(right=right) -> tuple:
                     f = SymbolicField()
                     return f, Scene(n, r, f, chart="equivariant", realization=claim.realization,
-                                    right_reduction=right is True, diagonal_A=right == "diagonal")
+                                    right_reduction=right is True, diagonal_A=right == "diagonal",
+                                    unitary_right=unitary)
                 missing = False   # the equivariant chart cannot provide an object (a_i, a second point)
                 try:
                     field, scene, checks = _chart_checks(
-                        (claim.id, claim.realization, "exact", n, r, "equivariant", right), build, func, graph, calls)
+                        (claim.id, claim.realization, "exact", n, r, "equivariant", right)
+                        + (("unitary",) if unitary else ()), build, func, graph, calls)
                     coords = list(scene.tracker.used)
                 except PointRead:
                     continue      # only the diagonal chart raises it: the next chart fixes the point
@@ -773,7 +777,7 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                     # Y on the other component of O(n): the same chart, Y times diag(-1, 1, .., 1)
                     f1 = SymbolicField()
                     sc1 = Scene(n, r, f1, chart="equivariant", realization=claim.realization,
-                                right_reduction=scene.right_reduction, component=1)
+                                right_reduction=scene.right_reduction, component=1, unitary_right=unitary)
                     ch1 = call_claim(func, sc1)
                     if list(sc1.tracker.used) != coords:
                         raise DegenerateError("the two components of the second point read different coordinates")
@@ -804,9 +808,10 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                     def build_cayley(comp=comp) -> tuple:
                         f = SymbolicField()
                         return f, Scene(n, r, f, chart="cayley", component=comp, realization=claim.realization,
-                                        cayley_right=right)
+                                        cayley_right=right, unitary_right=unitary)
                     f2, sc, ch = _chart_checks((claim.id, claim.realization, "exact", n, r, "cayley", comp)
-                                               + (("right",) if right else ()), build_cayley, func, graph, calls)
+                                               + (("right",) if right else ()) + (("unitary",) if unitary else ()),
+                                               build_cayley, func, graph, calls)
                     evaluations.append(_evaluate(ch, f2, lambda R, f2=f2: _exact_rank(
                         R, f2, randomized, lambda: degree_bound(claim, n, r, func).numerator, key)))
                     if r == n and sc.second_point_read and len(comps) == 2:

@@ -255,7 +255,8 @@ def _claim_data(c: Claim, needed: Sequence[tuple[int, int]] = ()) -> dict:
         "fails_at": fails,
         "keys": [None] + [list(p) for p in traced],
         "corrections": [{"description": k.description, "changes": k.changes, "expect": k.expect,
-                         "exact_max_r": [list(p) for p in k.exact_max_r]} for k in c.corrections],
+                         "exact_max_r": [list(p) for p in k.exact_max_r],
+                         "exact_corank": [list(p) for p in k.exact_corank]} for k in c.corrections],
     }
 
 
@@ -785,7 +786,8 @@ def _claim(d: Any, path: str, confinement: str = "namespaces") -> Claim:
         corrections.append(Correction(desc, TracedFunction(f"{name} ({desc})", realization, _get(k, "graphs", list),
                                                            src_path, line, confinement),
                                       _get(k, "changes", int), _get(k, "expect", str, optional=True),
-                                      _exact_pairs(_get(k, "exact_max_r", list))))
+                                      _exact_pairs(_get(k, "exact_max_r", list)),
+                                      _exact_pairs(_get(k, "exact_corank", list, optional=True) or [])))
     paper = _get(d, "paper", list)
     if not all(type(p) is str for p in paper):
         raise WireError("a paper label that is not a string")
