@@ -16,15 +16,17 @@ and a check without entries is an error under every method.
 from __future__ import annotations
 
 import dataclasses
+import gc
 import math
 import os
 import random
 import re
 import weakref
 import time
+from contextlib import contextmanager
 from dataclasses import dataclass, field as dc_field
 from fractions import Fraction
-from typing import Any, Callable
+from typing import Any, Callable, Iterator
 
 import numpy as np
 
@@ -88,6 +90,28 @@ def check_budget(method: str, n: int, r: int, claim: Claim | None = None, budget
 def time_limit(seconds: float | None):
     """Interrupt a symbolic computation that exceeds its budget (main thread only)."""
     return deadline(seconds, "the symbolic computation", lambda message: ExactTimeout(message))
+
+
+#: the thresholds of the cyclic garbage collector while a claim is traced or evaluated at points (the
+#: defaults are (700, 10, 10)): tracing and the paired numbers of the randomized methods make millions
+#: of small objects, most of them freed by reference counting before a collection could see them, and
+#: a collection of the oldest generation scans every graph a worker keeps (millions of objects)
+SPACED_COLLECTIONS = (20000, 20, 20)
+
+
+@contextmanager
+def spaced_collections() -> Iterator[None]:
+    """Meanwhile the garbage collector runs less often (:data:`SPACED_COLLECTIONS`); its thresholds are
+    restored on leaving, so that the collections it deferred run at the next allocations: nothing
+    collects less afterwards (a symbolic attempt forked later inherits no more garbage than before).
+    A collector switched off (threshold 0) stays off."""
+    old = gc.get_threshold()
+    if old[0]:
+        gc.set_threshold(*(max(a, b) for a, b in zip(old, SPACED_COLLECTIONS)))
+    try:
+        yield
+    finally:
+        gc.set_threshold(*old)
 
 
 # ---------------------------------------------------------------------------
@@ -1754,8 +1778,9 @@ def run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callabl
     search, whose passes claim no more than their bound).  Hard cases are evaluated at POINTS_MIN
     points (or ``trials``), with no bound."""
     options = _prepare(options)
-    return _hard_or_random(lambda o: _run_points(claim, n, r, kind, seed, func or claim.func, trials, o,
-                                                 target, least), options)
+    with spaced_collections():
+        return _hard_or_random(lambda o: _run_points(claim, n, r, kind, seed, func or claim.func, trials, o,
+                                                     target, least), options)
 
 
 def _prime_field(key: str, t: int, attempt: int) -> ModularField:

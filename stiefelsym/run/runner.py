@@ -18,7 +18,7 @@ from typing import Callable, Iterable, Sequence
 
 from stiefelsym.claims import Claim, Registry, Size
 from stiefelsym.methods.hard import hard_case
-from stiefelsym.methods.fixed_size import METHOD_RUNNERS, BudgetError, check_budget, expected_verdict  # noqa: F401 (BudgetError is part of the runner API)
+from stiefelsym.methods.fixed_size import METHOD_RUNNERS, BudgetError, check_budget, expected_verdict, spaced_collections  # noqa: F401 (BudgetError is part of the runner API)
 from stiefelsym.run.pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT, GIB, Outcome, Terminated, WorkerPool  # noqa: F401
 from stiefelsym.results import PASSING, VERDICTS, Result
 from stiefelsym.scene import SizeError
@@ -125,8 +125,9 @@ def _guarded(claim: Claim, size: Size | None, method: str, seed: int, func: Call
     try:
         # the claim is traced before any method builds its scene or runs (the graph is cached for the
         # method): claim code never runs while a scene of a method is alive
-        graph_digest(claim, size, func)
-        shared = shared_size(claim, size, func) if method != "free" else None
+        with spaced_collections():
+            graph_digest(claim, size, func)
+            shared = shared_size(claim, size, func) if method != "free" else None
         res = _dispatch(claim, shared or size, method, seed, func, options, in_worker, timeout)
         if shared is not None:
             res = _stated_shared(res, shared, size)
