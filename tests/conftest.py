@@ -30,6 +30,19 @@ def run(tmp_path):
     return invoke
 
 
+@pytest.fixture
+def fresh_programs(monkeypatch):
+    """The exact method with no straight-line program or plan made before the test and none kept after
+    it; programs are compiled on a graph's second evaluation, and plans are made (the package default)."""
+    from stiefelsym.methods import fixed_size as fs
+    monkeypatch.setattr(fs, "_STRAIGHT", {})
+    monkeypatch.setattr(fs, "_STRAIGHT_SEEN", {})
+    monkeypatch.setattr(fs, "_PLANS", {})
+    monkeypatch.setattr(fs, "STRAIGHT_AFTER", 1)
+    monkeypatch.setattr(fs, "PLANS", True)
+    return fs
+
+
 @pytest.fixture(scope="session")
 def catalog():
     """The paper's catalog, loaded once (claims are frozen, so tests share it safely)."""

@@ -50,13 +50,8 @@ def _claim(func, cid="la1-straight"):
 
 
 @pytest.fixture
-def fresh(monkeypatch):
-    """No program compiled before the test, and none kept after it."""
-    monkeypatch.setattr(fs, "_STRAIGHT", {})
-    monkeypatch.setattr(fs, "_STRAIGHT_SEEN", {})
-    monkeypatch.setattr(fs, "_PLANS", {})
-    monkeypatch.setattr(fs, "STRAIGHT_AFTER", 1)
-    return fs
+def fresh(fresh_programs):
+    return fresh_programs
 
 
 def _programs(func, n, r):

@@ -13,14 +13,8 @@ from stiefelsym.methods.fixed_size import run_exact
 
 
 @pytest.fixture
-def fresh(monkeypatch):
-    """No program or plan made before the test, and none kept after it."""
-    monkeypatch.setattr(fs, "_STRAIGHT", {})
-    monkeypatch.setattr(fs, "_STRAIGHT_SEEN", {})
-    monkeypatch.setattr(fs, "_PLANS", {})
-    monkeypatch.setattr(fs, "STRAIGHT_AFTER", 1)
-    monkeypatch.setattr(fs, "PLANS", True)
-    return fs
+def fresh(fresh_programs):
+    return fresh_programs
 
 
 def _record(res):
