@@ -4,8 +4,8 @@ and an untyped identity or zero takes the spaces of what it meets, so each false
 traced; the true controls are proved."""
 from stiefelsym import Size, SizeSpec, claim
 
-SQ = SizeSpec((Size(3, 3), Size(4, 4)))
-NEAR = SizeSpec((Size(4, 3), Size(5, 4)))
+SQ = SizeSpec((Size(3, 3), Size(4, 4)), r_is_n=True)      # stated at r = n only
+NEAR = SizeSpec((Size(4, 3), Size(5, 4)), where=lambda n, r: r == n - 1, condition="r = n - 1")
 
 
 @claim("adv-s39-sq-p-skew", paper="adv", kind="id", sizes=SQ)
