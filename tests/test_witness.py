@@ -11,7 +11,7 @@ import pytest
 
 from stiefelsym.claims import load_catalog
 from stiefelsym.methods.witness import decoded, encoded, small_witness
-from stiefelsym.methods.witness_scripts import run_script, script_text, template, template_check
+from stiefelsym.methods.witness_scripts import count_values, run_script, script_text, template, template_check
 
 ROOT = Path(__file__).resolve().parents[1]
 REPORTS = ROOT / "reports"
@@ -113,3 +113,17 @@ def test_every_witness_script_rejects_a_value_the_report_does_not_state(script):
     new = f'STATED = sp.Rational("{wrong}")' if m.group(1) else f"STATED = {wrong}"
     status, out = run_script(text[:m.start()] + new + text[m.end():])
     assert status == 1 and "MISMATCH" in out
+
+
+@pytest.mark.parametrize("detail, want", [
+    ("kernel = invariant forms: a constant nonzero 12x12 minor (rank >= 12 at every point) and rank 12 over the "
+     "function field; paper: 13", (12, 13)),
+    ("kernel = invariant forms: a matrix of rational numbers (15x15, the same at every point of the chart): exact "
+     "rank 12 over Q, so rank 12 at every point; paper: 13", (12, 13)),
+    ("the generic orbit is regular (1) or singular (0): 1 (paper: 0)", (1, 0)),
+    ("rank 12 over Qx; paper: 13", None),
+])
+def test_the_computed_and_printed_values_are_read_from_every_rank_certificate(detail, want):
+    """A rank's certificate names the computed rank in each of its forms (over the function field, over Q for a
+    matrix of rational numbers), so an erratum about a number keeps its hand-checkable witness script."""
+    assert count_values(detail) == want

@@ -86,11 +86,11 @@ def template_size(cid: str) -> tuple[int, int] | None:
 
 def count_values(detail: str) -> tuple[int, int] | None:
     """(computed, printed) from the detail of a Count or Rank check: "...: 1 (paper: 0)", or
-    "... rank 12 over the function field ...; paper: 13"."""
+    "... rank 12 over the function field ...; paper: 13", "... exact rank 12 over Q, ...; paper: 13"."""
     m = re.search(r"(\d+) \(paper: (\d+)\)", detail)
     if m:
         return int(m.group(1)), int(m.group(2))
-    k = re.search(r"rank (\d+) (?:over the function field|at an exact)", detail)
+    k = re.search(r"rank (\d+) (?:over the function field|over Q\b|at an exact)", detail)
     p = re.search(r"paper: (\d+)", detail)
     return (int(k.group(1)), int(p.group(1))) if k and p else None
 
