@@ -664,6 +664,26 @@ def _unpair(k: int) -> tuple[int, int]:
     return (t, s) if t < s else (s, t - s)
 
 
+def _rational_polynomial(e) -> bool:
+    """Whether the symengine expression ``e`` is built from symbols and rational numbers by sums,
+    products and powers with nonnegative integer exponents (a polynomial over Q in its symbols)."""
+    stack = [e]
+    while stack:
+        x = stack.pop()
+        if isinstance(x, (se.Symbol, se.Integer, se.Rational)):
+            continue
+        if isinstance(x, (se.Add, se.Mul)):
+            stack.extend(x.args)
+        elif isinstance(x, se.Pow):
+            base, exp = x.args
+            if not isinstance(exp, se.Integer) or exp < 0:
+                return False
+            stack.append(base)
+        else:
+            return False
+    return True
+
+
 class _BigPoly:
     """An entry of a generic (:class:`ObjMat`) matrix that involves parameters beyond the ring's
     MAX_VARS (a generic operator's coefficients): a flint polynomial in the ring's variables and
@@ -1647,8 +1667,14 @@ class SymbolicField(Field):
         if e.is_Number:
             return False
         num, _den = e.as_numer_denom()
-        if se.expand(num) == 0:
+        num = se.expand(num)
+        if num == 0:
             return True
+        if _rational_polynomial(num):
+            # an expanded polynomial in symbols with rational coefficients is symengine's canonical sum of
+            # distinct monomials: it is 0 only as the empty sum, so this one is not 0 (and neither is x,
+            # its numerator over a nonzero denominator)
+            return False
         import sympy
         return sympy.cancel(sympy.together(sympy.sympify(e))) == 0
 
