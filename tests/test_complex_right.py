@@ -56,9 +56,9 @@ def test_the_complex_claims_graphs_are_typed():
     mom = reg.get("complex-neumann-momenta")
     lax = reg.get("complex-neumann-dual-lax")
     for f in (mom.func, lax.func, lax.corrections[0].func):
-        assert unitary_right_breaks(_graph(f, 3, 2)) == [], f.__name__
+        assert unitary_right_breaks(_graph(f, 3, 2), 3, 2) == [], f.__name__
     # the Euler-Lagrange equations read the coordinates of W(n, r): refused
-    assert unitary_right_breaks(_graph(reg.get("complex-neumann-flow").func, 3, 2))
+    assert unitary_right_breaks(_graph(reg.get("complex-neumann-flow").func, 3, 2), 3, 2)
     # a graph without the complex point: no reduction to make
     assert not complex_right.applies(_graph(reg.get("neumann-lax").func, 3, 2), "standard", 3, 2)
 
@@ -66,7 +66,7 @@ def test_the_complex_claims_graphs_are_typed():
 @pytest.mark.parametrize("func", [_z_is_one_at_r_n, _entry_of_z])
 def test_a_graph_that_is_not_covariant_is_refused_and_its_statement_fails(func):
     g = _graph(func, 3, 3)
-    assert unitary_right_breaks(g)
+    assert unitary_right_breaks(g, 3, 3)
     assert not complex_right.applies(g, "standard", 3, 3)
     s = Scene(2, 2, SymbolicField(), chart="cayley", unitary_right=True)
     assert s.Zc._a[0, 0] == 1 and s.Zc._a[2, 0] == 0         # Z = I on the reduced chart at r = n

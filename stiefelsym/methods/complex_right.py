@@ -14,7 +14,10 @@ The pass types every value of the graph: a matrix has a row and a column side, e
 R(h̄) = J R(h) J (J = diag(I, −I)); a number is invariant.  Products, sums and traces must join sides
 that move alike (a parity union-find: a conjugation flips the parity, a side joined to itself with
 odd parity, or a side of R^n joined to one that moves, breaks covariance); multiples of the identity
-(I, λI, realify(cI, dI), 0) commute with both R(h) and R(h̄) and join nothing.  Anything else (an entry,
+(I, λI, realify(cI, dI), 0) commute with both R(h) and R(h̄) and join nothing.  A block matrix's sides are split
+into parts, joined part by part: a type carries the sizes of its parts (computed from n and r), and two splittings
+are joined only where their parts have the same sizes (a picker split (1, 4r − 1) against the columns (2r, 2r) of
+[Z, Z] reads one column of Z); a conjugation of a split side (J of the whole side, not of each part) breaks.  Anything else (an entry,
 a leaf other than the complex point, A, I_n, I_r and the scalars, an engine call or step not listed)
 breaks covariance.
 """
@@ -22,7 +25,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from stiefelsym.ir.graph import Ref
+from stiefelsym.ir.graph import Ref, Size
 
 #: the reduction stated in the record of a run whose complex point is reduced by U(r)
 REDUCTION = (
@@ -94,13 +97,28 @@ class _UF:
 
 
 class _M:
-    """A matrix's type: its two sides (an int, or a tuple of them for a block matrix), and whether it is a
-    multiple of the identity (commutes with R(h) and R(conj h), joins nothing)."""
+    """A matrix's type: its two sides (an int, or a tuple of them for a block matrix), whether it is a
+    multiple of the identity (commutes with R(h) and R(conj h), joins nothing), and the sizes of its sides
+    (an int, or the tuple of its parts' sizes for a block matrix: two splittings are joined part by part only
+    where their parts have the same sizes)."""
 
-    __slots__ = ("row", "col", "scal")
+    __slots__ = ("row", "col", "scal", "rs", "cs")
 
-    def __init__(self, row: Any, col: Any, scal: bool = False) -> None:
-        self.row, self.col, self.scal = row, col, scal
+    def __init__(self, row: Any, col: Any, scal: bool = False, rs: Any = None, cs: Any = None) -> None:
+        self.row, self.col, self.scal, self.rs, self.cs = row, col, scal, rs, cs
+
+
+def _total(s: Any) -> int:
+    return sum(s) if type(s) is tuple else s
+
+
+def _aligned(a: Any, b: Any) -> None:
+    """Two sides joined: a splitting into parts is joined to another part by part, so their parts must have the
+    same sizes (a picker split (1, 4r − 1) joined to the columns (2r, 2r) of [Z, Z] reads one column of Z)."""
+    if a is None or b is None:
+        raise _Break("a matrix of unknown size")
+    if (type(a) is tuple or type(b) is tuple) and a != b:
+        raise _Break("block matrices joined across parts of different sizes")
 
 
 _SCALAR = "scalar"
@@ -133,9 +151,13 @@ def _nside(U: _UF, a: Any) -> None:
         U.union(a, U.N)
 
 
-def unitary_right_breaks(g: Any) -> list[str]:
+def unitary_right_breaks(g: Any, n: int | None = None, r: int | None = None) -> list[str]:
     """What in the graph may break covariance under U(r) acting on the right of the complex point (empty:
-    nothing); see the module's docstring."""
+    nothing); see the module's docstring.  The sizes (n, r) are the graph's own by default."""
+    if n is None or r is None:
+        if g.sizes is None:
+            return ["a graph of symbolic sizes"]
+        n, r = g.sizes
     U = _UF()
     types: list[Any] = []
 
@@ -145,7 +167,7 @@ def unitary_right_breaks(g: Any) -> list[str]:
             if t is None:
                 raise _Break("a value of an untyped node")
             return t
-        if isinstance(a, (int, float)) or type(a).__name__ == "Fraction":
+        if isinstance(a, (int, float)) or type(a).__name__ == "Fraction" or type(a) is Size:
             return _SCALAR
         raise _Break(f"an argument {type(a).__name__}")
 
@@ -154,9 +176,23 @@ def unitary_right_breaks(g: Any) -> list[str]:
             raise _Break("a matrix operation on a value that is not a matrix")
         return t
 
-    def scalar_matrix() -> _M:
+    def scalar_matrix(rs: Any, cs: Any) -> _M:
+        if not (type(rs) is int and type(cs) is int):
+            raise _Break("a multiple of the identity of a size that is not an int")
         v = U.new()
-        return _M(v, v, True)
+        return _M(v, v, True, rs, cs)
+
+    def size(args: Any, kwargs: Any, i: int, name: str) -> int:
+        """The int size given to an engine call as its i-th argument or by name."""
+        x = args[i] if len(args) > i else dict(kwargs or ()).get(name)
+        if type(x) is Size and x.d in ("n", "r") and type(x.k) is int:
+            v = x.k * (n if x.d == "n" else r)
+            if x.value is not None and x.value != v:
+                raise _Break("a size traced at another size")
+            return v
+        if type(x) is not int:
+            raise _Break("a size that is not an int")
+        return x
 
     fn_params: dict[int, list[Any]] = {}
     try:
@@ -169,47 +205,61 @@ def unitary_right_breaks(g: Any) -> list[str]:
                 if of(a[0]) != "scene":
                     raise _Break(f"the attribute {name} of a value that is not the scene")
                 if name in ("Zc", "Zc_dot"):
-                    t = _M(U.N, U.H)
+                    t = _M(U.N, U.H, False, 2 * n, 2 * r)
                 elif name in _NSIDE_LEAVES:
-                    t = _M(U.N, U.N)
+                    t = _M(U.N, U.N, False, n, n)
                 elif name in _SCALAR_MATRIX_LEAVES:
-                    t = scalar_matrix()
+                    t = scalar_matrix(n, n) if name == "In" else scalar_matrix(r, r)
                 elif name in _SCALAR_LEAVES:
                     t = _SCALAR
                 else:
                     raise _Break(f"the leaf {name}")
             elif op == "call":
                 name, args = a[1], a[2]
+                kw = a[3] if len(a) > 3 else ()
                 if of(a[0]) != "scene":
                     raise _Break(f"the call {name} on a value that is not the scene")
                 if name == "conj":
                     x = mat(of(args[0]))
-                    t = x if x.scal else _M(_flip(U, x.row), _flip(U, x.col))
+                    if type(x.row) is tuple or type(x.col) is tuple:
+                        # J = diag(I, −I) of the whole side, not of each part
+                        raise _Break("a conjugation of a block matrix")
+                    t = x if x.scal else _M(_flip(U, x.row), _flip(U, x.col), False, x.rs, x.cs)
                 elif name == "realify":
                     x, y = mat(of(args[0])), mat(of(args[1]))
+                    if type(x.rs) is not int or type(x.cs) is not int:
+                        raise _Break("a realification of a block matrix")
                     if x.scal and y.scal:
-                        t = scalar_matrix()
+                        t = scalar_matrix(2 * x.rs, 2 * x.cs)
                     else:
                         for z in (x, y):
                             if not z.scal:
                                 _nside(U, z.row)
                                 _nside(U, z.col)
-                        t = _M(U.N, U.N)
+                        t = _M(U.N, U.N, False, 2 * x.rs, 2 * x.cs)
                 elif name in ("q", "const", "scalar"):
                     t = _SCALAR
-                elif name in ("identity", "zeros", "scalar_matrix"):
-                    t = scalar_matrix()
+                elif name == "identity":
+                    t = scalar_matrix(size(args, kw, 0, "m"), size(args, kw, 0, "m"))
+                elif name == "zeros":
+                    t = scalar_matrix(size(args, kw, 0, "m"), size(args, kw, 1, "k"))
+                elif name == "scalar_matrix":
+                    c0 = args[0] if args else dict(kw or ()).get("c")
+                    if of(c0) != _SCALAR:
+                        raise _Break("a multiple of the identity by a value that is not a number")
+                    t = scalar_matrix(size(args, kw, 1, "m"), size(args, kw, 1, "m"))
                 elif name == "resolvent":
-                    t = _M(U.N, U.N)
+                    t = _M(U.N, U.N, False, n, n)
                 elif name == "tr":
                     x = mat(of(args[0]))
+                    _aligned(x.rs, x.cs)
                     _join(U, x.row, x.col)
                     t = _SCALAR
                 else:
                     raise _Break(f"the engine call {name}")
             elif op == "T":
                 x = mat(of(a[0]))
-                t = _M(x.col, x.row, x.scal)
+                t = _M(x.col, x.row, x.scal, x.cs, x.rs)
             elif op == "neg":
                 x = of(a[0])
                 t = x if x == _SCALAR else mat(x)
@@ -220,26 +270,31 @@ def unitary_right_breaks(g: Any) -> list[str]:
                 else:
                     x, y = mat(x), mat(y)
                     if x.scal and y.scal:
-                        t = scalar_matrix()
+                        t = scalar_matrix(_total(x.rs), _total(x.cs))
                     elif x.scal or y.scal:
                         z, s = (y, x) if x.scal else (x, y)
+                        _aligned(z.rs, z.cs)
                         _join(U, z.row, z.col)        # cI + M: M's sides move alike
-                        t = _M(z.row, z.col)
+                        t = _M(z.row, z.col, False, z.rs, z.cs)
                     else:
+                        _aligned(x.rs, y.rs)
+                        _aligned(x.cs, y.cs)
                         _join(U, x.row, y.row)
                         _join(U, x.col, y.col)
-                        t = _M(x.row, x.col)
+                        t = _M(x.row, x.col, False, x.rs, x.cs)
             elif op == "matmul":
                 x, y = mat(of(a[0])), mat(of(a[1]))
-                if x.scal and y.scal:
-                    t = scalar_matrix()
+                if x.scal and y.scal or x.scal and x.rs != x.cs or y.scal and y.rs != y.cs:
+                    # a product with a zero that is not square is a zero of another size
+                    t = scalar_matrix(_total(x.rs), _total(y.cs))
                 elif x.scal:
                     t = y
                 elif y.scal:
                     t = x
                 else:
+                    _aligned(x.cs, y.rs)
                     _join(U, x.col, y.row)
-                    t = _M(x.row, y.col)
+                    t = _M(x.row, y.col, False, x.rs, y.cs)
             elif op in ("mul", "div"):
                 x, y = of(a[0]), of(a[1])
                 if x == _SCALAR and y == _SCALAR:
@@ -253,6 +308,7 @@ def unitary_right_breaks(g: Any) -> list[str]:
             elif op == "trace":
                 x = mat(of(a[0]))
                 if not x.scal:
+                    _aligned(x.rs, x.cs)
                     _join(U, x.row, x.col)
                 t = _SCALAR
             elif op == "block":
@@ -279,7 +335,9 @@ def unitary_right_breaks(g: Any) -> list[str]:
                     for j in range(cols):
                         if bs[ii * cols + j].scal:
                             _join(U, rparts[ii], cparts[j])
-                t = _M(tuple(rparts), tuple(cparts))
+                rsz = tuple(_total(bs[ii * cols].rs) for ii in range(rows))
+                csz = tuple(_total(bs[j].cs) for j in range(cols))
+                t = _M(tuple(rparts), tuple(cparts), False, rsz, csz)
             elif op in ("list", "tuple"):
                 t = ("seq", [of(x) for x in a])
             elif op == "dict":
@@ -302,7 +360,7 @@ def unitary_right_breaks(g: Any) -> list[str]:
             elif op == "prim":
                 q = a[0].qualname
                 if q in _NSIDE_STEPS:
-                    t = _M(U.N, U.N)
+                    t = _M(U.N, U.N, False, n, n)
                 elif q == _DERIVATIVE and len(a) == 5:
                     f, point, tangent = of(a[2]), of(a[3]), of(a[4])
                     if not (type(f) is tuple and f[0] == "fn"):
@@ -326,6 +384,8 @@ def _unify(U: _UF, a: Any, b: Any) -> None:
     if isinstance(a, _M) and isinstance(b, _M):
         if a.scal or b.scal:
             raise _Break("a point or tangent vector with a multiple of the identity")
+        _aligned(a.rs, b.rs)
+        _aligned(a.cs, b.cs)
         _join(U, a.row, b.row)
         _join(U, a.col, b.col)
     elif type(a) is tuple and type(b) is tuple and a[0] == b[0] == "map":
@@ -345,7 +405,8 @@ def applies(graph: Any, realization: str | None, n: int, r: int) -> bool:
         return False
     if not any(op == "attr" and a[1] in ("Zc", "Zc_dot") for op, a in zip(graph.ops, graph.args)):
         return False
-    breaks = graph.cache.get("unitary right action breaks")
+    key = f"unitary right action breaks at {n},{r}"      # the sizes of block parts are the size's
+    breaks = graph.cache.get(key)
     if breaks is None:
-        breaks = graph.cache["unitary right action breaks"] = tuple(unitary_right_breaks(graph))
+        breaks = graph.cache[key] = tuple(unitary_right_breaks(graph, n, r))
     return not breaks
