@@ -59,3 +59,13 @@ def test_an_entry_of_z_read_through_misaligned_blocks_is_refuted_exactly():
     for size in ((2, 2), (3, 2)):
         seen = verdicts(got, "adv-s40c-aligned-true", size)
         assert seen and seen <= set(PASSING), (size, got)
+
+
+def test_a_value_beyond_the_rings_parameters_is_decided_both_ways():
+    """The exact zero test decides a polynomial over Q beyond the ring's parameters (two generic 9 x 9
+    operators) by symengine's expansion: tr(GH) = tr(GHᵀ) fails, tr(GH) = tr(HG) and a cyclic trace with X
+    are proved (exact), checked (modular)."""
+    from test_adversary_s38 import run_sizes, verdicts
+    got = run_sizes("s40_big_generic_zero_test.py", methods=("exact", "modular"), free=False)
+    assert verdicts(got, "adv-s40-big-false", (9, 1)) == {"fails"}, got
+    assert verdicts(got, "adv-s40-big-true", (9, 1)) == {"proved", "checked"}, got
