@@ -518,7 +518,9 @@ def _budget_help() -> str:
             "cost model (sums of monomials in n and r fitted per method and family of claims to measured runs, "
             "`stiefelsym speed --cost-only`); a run predicted beyond --budget seconds is refused with the "
             "prediction and a faster method, one predicted beyond --memory with the largest n that fits.  "
-            "auto is exact up to each claim's symbolic budget (see `stiefelsym show CLAIM`), then modular; "
+            "auto is exact up to each claim's symbolic budget (see `stiefelsym show CLAIM`); beyond it, the "
+            "dimension-free proof of the same graph where there is one (cross-checked by modular points), "
+            "else modular; "
             "free: every n and r at once.")
 
 

@@ -82,7 +82,9 @@ KIND_MEANING = {
 METHOD_MEANING = {
     "exact": ("symbolic computation at one size (n, r) in exact arithmetic: the residuals reduced to "
               "zero on the constraint set, or a rank or count computed over the field of the chart's "
-              "parameters; proves or refutes."),
+              "parameters; proves or refutes.  Beyond a claim's symbolic budget, a graph the dimension-free "
+              "method proved for every n, r is proved at (n, r) by that proof (the same graph, the "
+              "reduction stated), cross-checked by the modular method's points there."),
     "rational": "random exact points over ℚ; passes with the bound p below.",
     "modular": "random exact points over prime fields (primes near 2⁶²); passes with the bound p below.",
     "auto": "the fastest proof-grade method for the claim at that size.",

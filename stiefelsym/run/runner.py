@@ -2,7 +2,7 @@
 
 Every (claim, size, method) of a plan runs in a forked worker process with a
 wall-time budget and a memory budget (:mod:`stiefelsym.run.pool`); ``auto`` (exact,
-then modular) is budgeted as a whole.  A run that exceeds its time is
+then the dimension-free proof of the same graph, then modular) is budgeted as a whole.  A run that exceeds its time is
 ``inconclusive``; one that crashes, raises anything (``SystemExit`` included),
 exhausts its memory or kills its process is an ``error``, and the plan goes on.
 Whether a verdict is the expected one is decided here, in the parent process,
@@ -346,8 +346,29 @@ def _dispatch(claim: Claim, size: Size | None, method: str, seed: int, func: Cal
     if method == "exact":
         if options:
             raise ValueError("hard cases are sampled points: use --method rational, modular or float")
-        return _exact_runner(in_worker, timeout)(claim, size.n, size.r, seed, func)
+        return _run_exact(claim, size, seed, func, _exact_runner(in_worker, timeout))
     return METHOD_RUNNERS[method](claim, size.n, size.r, seed, func, options)
+
+
+def _specialised(claim: Claim, size: Size, seed: int, func: Callable | None, spent: float = 0.0) -> Result | None:
+    """The dimension-free proof of the graph the run at ``size`` evaluates, as the exact method's verdict there
+    (:mod:`stiefelsym.methods.specialise`), or None."""
+    from stiefelsym.methods.specialise import specialised
+    res = specialised(claim, size.n, size.r, seed, func)
+    if res is not None:
+        res.seconds += spent
+    return res
+
+
+def _run_exact(claim: Claim, size: Size, seed: int, func: Callable | None, exact: Callable[..., Result]) -> Result:
+    """The exact method: its symbolic charts within the claim's symbolic budget; beyond it, or where the
+    charts end without a verdict, the dimension-free proof of the same graph where there is one."""
+    if not claim.exact_at(size.n, size.r):
+        return _specialised(claim, size, seed, func) or exact(claim, size.n, size.r, seed, func)
+    res = exact(claim, size.n, size.r, seed, func)
+    if res.verdict == "inconclusive":
+        return _specialised(claim, size, seed, func, res.seconds) or res
+    return res
 
 
 def _run_auto(claim: Claim, size: Size, seed: int, func: Callable | None,
@@ -363,6 +384,9 @@ def _run_auto(claim: Claim, size: Size, seed: int, func: Callable | None,
         reason, spent = (f"({size.n},{size.r}) is above this claim's symbolic budget "
                          f"({claim.exact_budget_text()})" if claim.exact_max_r or claim.exact_corank else
                          f"n = {size.n} is above this claim's symbolic budget (n <= {claim.exact_max_n})"), 0.0
+    proof = _specialised(claim, size, seed, func, spent)
+    if proof is not None:
+        return proof
     res = METHOD_RUNNERS["modular"](claim, size.n, size.r, seed, func)
     res.message = "; ".join(m for m in (f"exact: {reason}" if reason else "", res.message) if m)
     res.seconds += spent

@@ -1,0 +1,144 @@
+"""A proof at one size from the dimension-free proof of the same graph (stiefelsym.methods.specialise).
+
+Beyond a claim's symbolic budget the exact method (and ``auto``) proves a claim at (n, r) when the
+graph the run evaluates there is the graph the dimension-free method proved for every n, r, and the
+modular method's points at (n, r) agree.  A false statement is never proved this way; a dimension-free
+"proof" that the modular points contradict is an ``error``, not a verdict; within the budget the
+exact method's own chart still proves the claim."""
+from __future__ import annotations
+
+import dataclasses
+
+import pytest
+
+from stiefelsym import admissible
+from stiefelsym.claims import Claim, Size, load_catalog
+from stiefelsym.methods import specialise
+from stiefelsym.methods.fixed_size import mutation_analysis
+from stiefelsym.results import Result
+from stiefelsym.run.runner import run_one
+
+SPECIALISED = "the dimension-free proof, specialised"
+
+
+def _claim(func, cid=None, exact_max_n=2, sizes=None, **kw):
+    return Claim(id=cid or func.__name__.replace("_", "-"), paper=("prep",), kind="id", section="t", func=func,
+                 sizes=sizes or admissible(7), exact_max_n=exact_max_n, **kw)
+
+
+def dual_gram(s):
+    """True: Xᵀ(XXᵀ)P + PᵀX = 0 on T*V (XᵀX = I, XᵀP + PᵀX = 0)."""
+    return {"XtXXtP + PtX": s.X.T @ (s.X @ s.X.T) @ s.P + s.P.T @ s.X}
+
+
+def dual_gram_flipped(s):
+    """False: one sign flipped."""
+    return {"XtXXtP - PtX": s.X.T @ (s.X @ s.X.T) @ s.P - s.P.T @ s.X}
+
+
+def dual_gram_dropped(s):
+    """False: a term dropped (XᵀP alone)."""
+    return {"XtP": s.X.T @ s.P}
+
+
+@pytest.fixture(autouse=True)
+def _fresh():
+    specialise.reset()
+    yield
+    specialise.reset()
+
+
+@pytest.mark.parametrize("method", ["exact", "auto"])
+def test_beyond_the_budget_the_dimension_free_proof_is_specialised(method):
+    c = _claim(dual_gram)
+    for n, r in ((3, 2), (7, 3), (6, 6)):
+        res = run_one(c, Size(n, r), method, 0)
+        assert res.verdict == "proved" and res.method == "exact", (n, r, res.verdict, res.message)
+        assert res.reductions[0].startswith(SPECIALISED) and f"({n},{r})" in res.reductions[0]
+        assert "cross-check" in res.reductions[-1] and res.seed == 0
+        assert "independent checker" in res.certificate
+
+
+def test_within_the_budget_the_exact_method_uses_its_own_chart():
+    c = _claim(dual_gram, exact_max_n=7)
+    res = run_one(c, Size(4, 2), "exact", 0)
+    assert res.verdict == "proved"
+    assert not any(x.startswith(SPECIALISED) for x in res.reductions)
+
+
+@pytest.mark.parametrize("func", [dual_gram_flipped, dual_gram_dropped])
+@pytest.mark.parametrize("method", ["exact", "auto"])
+def test_a_corrupted_claim_is_not_proved(func, method):
+    c = _claim(func)
+    res = run_one(c, Size(5, 2), method, 0)
+    assert res.verdict not in ("proved", "checked", "numeric"), (res.verdict, res.reductions)
+
+
+def test_a_dimension_free_proof_contradicted_by_the_points_is_an_error(monkeypatch):
+    """An unsound dimension-free method (simulated: it 'proves' a false statement) is caught by the
+    cross-check at the size: error, never proved or fails."""
+    c = _claim(dual_gram_dropped)
+
+    def unsound(claim, func=None):
+        res = Result(claim=claim.id, paper=[], section="", kind="id", title="", statement="", n=None, r=None,
+                     method="free", verdict="proved", expected=True, seconds=0.0, seed=None)
+        res.certificate_data, res.certificate = {"format": "forged"}, "forged"
+        return res
+    monkeypatch.setattr(specialise, "run_free", unsound)
+    res = run_one(c, Size(5, 2), "exact", 0)
+    assert res.verdict == "error" and "disagree" in res.message
+
+
+def test_a_graph_other_than_the_proved_one_is_not_specialised(monkeypatch):
+    """The proof is used only for the graph it is about: a digest that differs at the size (simulated)
+    leaves the run to the modular method."""
+    c = _claim(dual_gram)
+    real = specialise.compile_claim
+
+    class Other:
+        def __init__(self, g):
+            self.g = g
+
+        def digest(self):
+            return "0" * 64
+    monkeypatch.setattr(specialise, "compile_claim",
+                        lambda f, n, r, cons, family=None: Other(real(f, n, r, cons)) if n is not None
+                        else real(f, n, r, cons, family=family))
+    res = run_one(c, Size(5, 2), "auto", 0)
+    assert res.verdict == "checked" and res.method == "modular"
+
+
+def test_a_changed_claim_is_proved_again():
+    """The dimension-free result is kept per claim and function while what it reads of the claim is
+    unchanged: a claim object changed in place (its expectation) is not given the old proof."""
+    c = _claim(dual_gram)
+    assert run_one(c, Size(5, 2), "exact", 0).verdict == "proved"
+    object.__setattr__(c, "expect", "nonzero")
+    res = run_one(c, Size(5, 2), "exact", 0)
+    assert not any(x.startswith(SPECIALISED) for x in res.reductions)
+    other = dataclasses.replace(c, func=dual_gram_flipped, expect="holds")
+    assert run_one(other, Size(5, 2), "exact", 0).verdict != "proved"
+
+
+def test_the_mutation_analysis_does_not_lend_the_proof():
+    c = _claim(dual_gram)
+    with mutation_analysis():
+        res = run_one(c, Size(5, 2), "auto", 0)
+    assert res.method == "modular" and res.verdict == "checked"
+
+
+@pytest.mark.parametrize("cid,n,r", [("coupled-dual-lax", 7, 5), ("dual-lax-spectral-invariants", 6, 3),
+                                     ("manakov-reflections", 7, 2)])
+def test_catalog_claims_with_a_dimension_free_proof_are_proved_at_n_7(cid, n, r):
+    c = load_catalog().get(cid)
+    assert not c.exact_at(n, r)
+    res = run_one(c, Size(n, r), "auto", 0)
+    assert res.verdict == "proved" and res.reductions[0].startswith(SPECIALISED), (res.verdict, res.message)
+
+
+def test_a_catalog_erratum_is_still_refuted():
+    """A claim the dimension-free method does not prove (an erratum as printed) fails at sizes beyond its
+    budget as before."""
+    c = load_catalog().get("coupled-perturbed-big-lax")
+    res = run_one(c, Size(5, 2), "auto", 0)
+    assert res.verdict == "fails"
