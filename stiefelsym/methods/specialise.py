@@ -126,13 +126,13 @@ def specialised(claim: Claim, n: int, r: int, seed: int, func: Callable | None =
     res.verdict = "proved"
     res.checks = list(free.checks)
     res.reductions = [
-        f"the dimension-free proof, specialised: the claim's graph at ({n},{r}) is its graph with symbolic sizes"
+        "the dimension-free proof, specialised: the claim's graph at this size is its graph with symbolic sizes"
         + ("" if family is None else f" on the family {family}")
         + f" (digest {here[:12]}), whose residual rewriting modulo the constraints reduces to 0 {scope} "
         "(the claim's record with no size, its cofactor certificate re-expanded by the independent checker)"]
     res.reductions += [f"dimension-free: {x}" for x in free.reductions]
-    res.reductions.append(f"cross-check at ({n},{r}): the modular method's random points (seed {seed}) agree")
+    res.reductions.append("cross-check at this size: the residual vanishes at the modular method's random points")
     bound = f", false-pass bound {check.false_pass_bound:.1e}" if check.false_pass_bound is not None else ""
-    res.certificate = (f"the dimension-free certificate ({scope}): {free.certificate}; cross-check at ({n},{r}): "
+    res.certificate = (f"the dimension-free certificate ({scope}): {free.certificate}; cross-check at this size: "
                        f"the residual vanishes at the modular method's points{bound}")
     return res
