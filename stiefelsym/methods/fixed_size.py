@@ -259,15 +259,16 @@ class Evaluation:
     count_problems: list[str]
     rank_certain: list[str] = dc_field(default_factory=list)   # rank mismatches that are certain
     every_point: list[str] = dc_field(default_factory=list)    # "at every point" ranks this method cannot decide
+    full: list[str] = dc_field(default_factory=list)           # generic ranks that are the matrix's full size here
 
 
 #: what a rank function may say about a Rank statement (True/False: the exact method's "ok"/"mismatch")
-RANK_STATUSES = ("ok", "mismatch", "certain", "every-point")
+RANK_STATUSES = ("ok", "mismatch", "certain", "every-point", "full")
 
 
 def _evaluate(checks: dict[str, Any], field: Field, rank_fn: Callable[[Rank], tuple[str, Any]] | None) -> Evaluation:
     outcomes, nonzero, rank_problems, count_problems = [], [], [], []
-    rank_certain, every_point = [], []
+    rank_certain, every_point, full = [], [], []
     for name, value in checks.items():
         if isinstance(value, Count):
             ok = value.value == value.expected
@@ -286,7 +287,9 @@ def _evaluate(checks: dict[str, Any], field: Field, rank_fn: Callable[[Rank], tu
                 status = "ok" if status else "mismatch"
             if status not in RANK_STATUSES:
                 raise ValueError(f"unknown rank status {status!r}")
-            ok = status in ("ok", "every-point")
+            ok = status in ("ok", "every-point", "full")
+            if status == "full":
+                full.append(name)
             if value.meaning:
                 detail = f"{value.meaning}: {detail}"
             outcomes.append(CheckOutcome(name, "rank" if ok else "rank-mismatch", detail))
@@ -309,7 +312,7 @@ def _evaluate(checks: dict[str, Any], field: Field, rank_fn: Callable[[Rank], tu
                                          + (" (op is not inverted by inv)" if said else "")))
         else:
             outcomes.append(CheckOutcome(name, "zero", said))
-    return Evaluation(outcomes, nonzero, rank_problems, count_problems, rank_certain, every_point)
+    return Evaluation(outcomes, nonzero, rank_problems, count_problems, rank_certain, every_point, full)
 
 
 def _base_result(claim: Claim, n: int | None, r: int | None, method: str, seed: int | None) -> Result:
@@ -1732,6 +1735,13 @@ def _point_rank(R: Rank, field: Field, bound_text: str) -> tuple[str, str]:
     if not R.generic:
         return (generic + f"; rank {rk} at EVERY point does not follow from sampled points "
                           "(needs the exact method)"), "every-point"
+    if rk == min(R.matrix._a.shape):
+        # a nonzero rk-minor at this point is the value of a nonzero rational function of the chart's
+        # parameters (mod p: its numerator's reduction is not 0, so the numerator is not 0 over Q), and no
+        # matrix of this size has a larger rank: the generic rank is rk, both sides, no probability
+        return (f"rank {rk} {where}, the matrix's full size ({R.matrix._a.shape[0]}x{R.matrix._a.shape[1]}): a nonzero "
+                f"{rk}-minor there is a nonzero rational function of the chart's parameters, so the generic rank "
+                f"is {rk} (two-sided, certain)"), "full"
     return generic, "ok"
 
 
@@ -1824,6 +1834,7 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
     per_point: list[list[float]] = [[] for _ in range(components)]
     point_degs: list[DegreeBound] = []
     scene = None
+    full_proof = False
     t = 0
     while t < points * components or (
             trials is None and not hard and t < POINTS_CAP * components
@@ -1891,6 +1902,9 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
             # the first point of each component is done: what a one-point run on these lent points
             # (the exact method's witness) would find
             _LOAN.witnesses[(claim.id, claim.realization, n, r, seed, id(func))] = (func, witness)
+        if t == components and not hard and trials is None and _full_ranks(checks, evaluations):
+            full_proof = True      # every check a generic rank of full size, on each component: proved
+            break
     points = min(len(p) for p in per_point) if point_degs else points
     if point_degs:
         deg = DegreeBound(max(d.numerator for d in point_degs), max(d.denominator for d in point_degs),
@@ -1958,6 +1972,13 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
         res.verdict = "inconclusive"
         res.message = "; ".join(rank_mismatch)
         return res
+    if full_proof:
+        res.verdict = "proved"
+        where = "at a point" if components == 1 else f"at a point of each of the {components} components"
+        res.certificate = (f"every check is a generic rank equal to its matrix's full size {where}"
+                           f"{' (mod p: ' + ', '.join(str(p) for p in primes) + ')' if primes else ''}: "
+                           + "; ".join(dict.fromkeys(o.detail for o in res.checks if o.detail)) + note)
+        return res
     established = "every residual vanishes" + (" and the generic ranks are as printed" if any(
         o.status == "rank" for o in res.checks) else "")
     if hard:
@@ -1982,6 +2003,18 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
                        f"Established here: {res.certificate}")
         res.false_pass_bound = None
     return res
+
+
+def _full_ranks(checks: dict[str, Any], evaluations: list[Evaluation]) -> bool:
+    """Whether every check is a rank stated generically (or a count, exact) and, at every evaluation so far,
+    each rank was its matrix's full size, with no count wrong: then the generic ranks are proved (a nonzero
+    maximal minor at a point is a nonzero rational function, and no rank exceeds the full size)."""
+    ranks = [k for k, v in checks.items() if isinstance(v, Rank)]
+    if not ranks or any(not isinstance(v, (Rank, Count)) for v in checks.values()) \
+            or any(not v.generic for v in checks.values() if isinstance(v, Rank)):
+        return False
+    return bool(evaluations) and all(set(e.full) == set(ranks) and not e.count_problems and not e.nonzero
+                                     and not e.rank_certain for e in evaluations)
 
 
 def _bound_text(kind: str, deg: DegreeBound) -> str:
