@@ -25,8 +25,9 @@ import time
 from collections import OrderedDict
 from typing import Any, Callable
 
+from stiefelsym.certificate_check import CASES, R1_ONLY, R2_ONLY, SQUARE, Rejected, coefficient
 from stiefelsym.claims import Claim
-from stiefelsym.ir import compile_claim
+from stiefelsym.ir import SizeFamily, compile_claim
 from stiefelsym.methods import fixed_size
 from stiefelsym.methods.dimension_free import run_free, size_families
 from stiefelsym.results import Result
@@ -39,16 +40,17 @@ _FREE: "OrderedDict[tuple, tuple]" = OrderedDict()
 FREE_CACHE_SIZE = 64
 
 
-def _claim_state(claim: Claim) -> tuple:
-    """What the dimension-free method reads of a claim besides its function and its statement of sizes (kept
-    by identity): a changed claim is proved again."""
-    return (claim.id, claim.expect, claim.realization, claim.kind)
+def _claim_state(claim: Claim, families: tuple) -> tuple:
+    """What the dimension-free method reads of a claim besides its function: its statement of sizes through the
+    families of sizes it gives (a statement changed in place, r_is_n or r_in, is read again each time), and the
+    fields below: a changed claim is proved again."""
+    return (claim.id, claim.expect, claim.realization, claim.kind, families)
 
 
-def family_at(claim: Claim, n: int, r: int) -> tuple[bool, Any]:
+def family_at(claim: Claim, n: int, r: int, stated: tuple | None = None) -> tuple[bool, Any]:
     """(whether the claim's dimension-free proof would cover (n, r), the family of sizes it is proved on there:
-    None for a claim stated at every r)."""
-    families, why = size_families(claim)
+    None for a claim stated at every r); ``stated``: the claim's (families, why) when already read."""
+    families, why = stated if stated is not None else size_families(claim)
     if why or not families:
         return False, None
     if families == [None]:
@@ -62,9 +64,9 @@ def family_at(claim: Claim, n: int, r: int) -> tuple[bool, Any]:
     return False, None
 
 
-def _free_result(claim: Claim, func: Callable, digest: str) -> Result:
+def _free_result(claim: Claim, func: Callable, digest: str, families: tuple) -> Result:
     key = (id(claim), id(func))
-    state = _claim_state(claim)
+    state = _claim_state(claim, families)
     hit = _FREE.get(key)
     if hit is not None and hit[0] is claim and hit[1] is func and hit[2] == state and hit[3] == digest \
             and hit[5] is claim.sizes:
@@ -75,6 +77,41 @@ def _free_result(claim: Claim, func: Callable, digest: str) -> Result:
     while len(_FREE) > FREE_CACHE_SIZE:
         _FREE.popitem(last=False)
     return res
+
+
+#: the hypotheses of the free algebra that hold at one r only: name -> whether they hold at (n, r)
+ONE_R = {R1_ONLY: lambda n, r: r == 1, R2_ONLY: lambda n, r: r == 2, SQUARE: lambda n, r: r == n}
+
+
+def scope_problem(data: Any, realization: str, family: SizeFamily | None, n: int, r: int) -> str:
+    """Why the dimension-free certificate ``data`` is not a proof at (n, r), or "": read from the certificate
+    itself, whatever the claim's statement of sizes says now.  A certificate of cases must have the case of the
+    family covering (n, r) (that case is then read); the realization must be the claim's; a hypothesis of one r
+    (E1E1t at r = 1, E1E1t+E2E2t at r = 2, XXt at r = n) must hold at (n, r); and no coefficient of a residual or
+    a cofactor may have a pole at (n, r) (a rational function of n, r is a proof where it is defined)."""
+    try:
+        if isinstance(data, dict) and data.get("format") == CASES:
+            want = "n" if family is None or family.r is None else family.r
+            cases = [c["certificate"] for c in data["cases"] if c["sizes"]["r"] == want and c["sizes"]["n_min"] <= n
+                     and (r == n if want == "n" else r == want)]
+            if not cases:
+                return f"its certificate of cases has no case covering ({n},{r})"
+            data = cases[0]
+        if not isinstance(data, dict) or data.get("realization", "standard") != realization:
+            return f"its certificate is not of the claim's realization ({realization})"
+        used = {t.get("hyp") for e in data["entries"] for t in e["terms"]}
+        wrong = sorted(str(h) for h in used if h in ONE_R and not ONE_R[h](n, r))
+        if wrong:
+            return f"its certificate uses {wrong[0]}, a hypothesis that does not hold at ({n},{r})"
+        import symengine as se
+        at = {se.Symbol("n"): n, se.Symbol("r"): r}
+        for e in data["entries"]:
+            for t in e["residual"] + e["terms"]:
+                if se.expand(coefficient(t["coef"]).as_numer_denom()[1].subs(at)) == 0:
+                    return f"the coefficient {t['coef']} of its certificate has a pole at ({n},{r})"
+    except (Rejected, KeyError, TypeError, ValueError, AttributeError, RuntimeError) as exc:
+        return f"its certificate cannot be read ({type(exc).__name__}: {exc})"
+    return ""
 
 
 def reset() -> None:
@@ -90,7 +127,8 @@ def specialised(claim: Claim, n: int, r: int, seed: int, func: Callable | None =
         return None
     func = func or claim.func
     t0 = time.perf_counter()
-    covered, family = family_at(claim, n, r)
+    stated = size_families(claim)
+    covered, family = family_at(claim, n, r, stated)
     if not covered or claim.realization not in REALIZATIONS:
         return None
     cons = REALIZATIONS[claim.realization]
@@ -101,8 +139,9 @@ def specialised(claim: Claim, n: int, r: int, seed: int, func: Callable | None =
         return None
     if here != proved_graph:
         return None
-    free = _free_result(claim, func, proved_graph)
-    if free.verdict != "proved" or free.certificate_data is None:
+    free = _free_result(claim, func, proved_graph, (tuple(stated[0]), stated[1]))
+    if free.verdict != "proved" or free.certificate_data is None \
+            or scope_problem(free.certificate_data, claim.realization, family, n, r):
         return None
     why = fixed_size.division_probe(claim, n, r, func, seed)
     if why:
