@@ -34,10 +34,14 @@ from stiefelsym.results import Result
 from stiefelsym.scene import REALIZATIONS
 
 #: the dimension-free results in this process: (id of claim, id of function) -> (claim, function, what the
-#: run reads of the claim, digest of the graph proved, result, the claim's sizes); a result is used only
-#: while the claim and its graph are unchanged
+#: run reads of the claim, digest of the graph proved, result, the claim's sizes, the time limit that stopped the
+#: attempt or None); a result is used only while the claim and its graph are unchanged
 _FREE: "OrderedDict[tuple, tuple]" = OrderedDict()
 FREE_CACHE_SIZE = 64
+#: the longest the dimension-free attempt of a run at a size may take (a quarter of the run's budget if less): a
+#: proof of the catalog takes well under a second; a claim whose rewriting is slow (a product of many sums) is
+#: left, at once, to the methods that decide it at the size
+FREE_SECONDS = 20.0
 
 
 def _claim_state(claim: Claim, families: tuple) -> tuple:
@@ -64,16 +68,27 @@ def family_at(claim: Claim, n: int, r: int, stated: tuple | None = None) -> tupl
     return False, None
 
 
-def _free_result(claim: Claim, func: Callable, digest: str, families: tuple) -> Result:
+def _free_result(claim: Claim, func: Callable, digest: str, families: tuple, seconds: float) -> Result:
+    """The dimension-free result of the claim's function, within ``seconds`` (in a forked child, killed after
+    them: the attempt never takes the run's budget from the methods that would have decided it); a result is
+    kept while the claim and its graph are unchanged, a stopped attempt while no longer limit is given."""
     key = (id(claim), id(func))
     state = _claim_state(claim, families)
     hit = _FREE.get(key)
     if hit is not None and hit[0] is claim and hit[1] is func and hit[2] == state and hit[3] == digest \
-            and hit[5] is claim.sizes:
+            and hit[5] is claim.sizes and (hit[6] is None or seconds <= hit[6]):
         _FREE.move_to_end(key)
         return hit[4]
-    res = run_free(claim, func)
-    _FREE[key] = (claim, func, state, digest, res, claim.sizes)
+    from stiefelsym.run.isolate import ChildError, HardTimeout, run_isolated
+    stopped: float | None = None
+    try:
+        res = run_isolated(lambda: run_free(claim, func), seconds, fixed_size._describe)
+    except (HardTimeout, ChildError) as exc:     # ChildDied included: no proof here, the run goes on
+        res = fixed_size._base_result(claim, None, None, "free", None)
+        res.verdict = "undecided"
+        res.message = f"the dimension-free attempt ended without a verdict: {exc or 'stopped after the time limit'}"
+        stopped = seconds if isinstance(exc, HardTimeout) else None
+    _FREE[key] = (claim, func, state, digest, res, claim.sizes, stopped)
     while len(_FREE) > FREE_CACHE_SIZE:
         _FREE.popitem(last=False)
     return res
@@ -119,7 +134,8 @@ def reset() -> None:
     _FREE.clear()
 
 
-def specialised(claim: Claim, n: int, r: int, seed: int, func: Callable | None = None) -> Result | None:
+def specialised(claim: Claim, n: int, r: int, seed: int, func: Callable | None = None,
+                budget: float | None = None) -> Result | None:
     """The exact method's ``proved`` at (n, r) from the dimension-free proof of the graph the run at (n, r)
     evaluates, cross-checked by the modular method there; ``error`` when the cross-check refutes it; None
     where there is no such proof (or the cross-check does not decide): the run goes on as it would have."""
@@ -139,7 +155,8 @@ def specialised(claim: Claim, n: int, r: int, seed: int, func: Callable | None =
         return None
     if here != proved_graph:
         return None
-    free = _free_result(claim, func, proved_graph, (tuple(stated[0]), stated[1]))
+    seconds = FREE_SECONDS if budget is None else min(FREE_SECONDS, budget / 4)
+    free = _free_result(claim, func, proved_graph, (tuple(stated[0]), stated[1]), seconds)
     if free.verdict != "proved" or free.certificate_data is None \
             or scope_problem(free.certificate_data, claim.realization, family, n, r):
         return None

@@ -72,3 +72,31 @@ def test_the_certificate_states_its_own_scope():
     assert "pole" in specialise.scope_problem(poled, "standard", None, 4, 4)
     assert specialise.scope_problem(poled, "standard", None, 4, 2) == ""
     assert "cannot be read" in specialise.scope_problem({"format": "forged"}, "standard", None, 4, 2)
+
+
+def slow_rewriting(s):
+    """True: (XᵀP + PᵀX) M⁸ = 0 with M = XᵀAP + PᵀAX + XᵀX: the free algebra expands 3⁸ words (about 3 s), the
+    modular method evaluates it at a point in milliseconds."""
+    M = s.X.T @ s.A @ s.P + s.P.T @ s.A @ s.X + s.X.T @ s.X
+    Y = M
+    for _ in range(7):
+        Y = Y @ M
+    return {"x": (s.X.T @ s.P + s.P.T @ s.X) @ Y}
+
+
+def test_a_slow_dimension_free_attempt_does_not_take_the_run_budget(monkeypatch):
+    """NB: beyond the symbolic budget the dimension-free attempt ran unbounded in the run's own process before the
+    methods that decide the claim at the size: a true claim whose rewriting is slow (ten factors: 30 s) and whose
+    modular run takes 0.01 s was `inconclusive` (the run's --timeout 15 exceeded) under auto and exact.  Closed: the
+    attempt runs in a forked child killed after FREE_SECONDS (a quarter of the run's budget if less); then the run
+    goes on as before (auto: modular; exact: its charts)."""
+    import time
+    monkeypatch.setattr(specialise, "FREE_SECONDS", 0.5)
+    c = _claim(slow_rewriting, admissible(5))
+    t0 = time.perf_counter()
+    res = run_one(c, Size(5, 2), "auto", 0)
+    assert res.verdict == "checked" and res.method == "modular", (res.verdict, res.message)
+    assert time.perf_counter() - t0 < 2.5
+    monkeypatch.setattr(specialise, "FREE_SECONDS", 60.0)     # a longer limit: the attempt is made again
+    res = run_one(c, Size(5, 2), "auto", 0)
+    assert res.verdict == "proved" and res.reductions[0].startswith(SPECIALISED)
