@@ -17,7 +17,10 @@ such proof is cross-checked at its own size by the modular method (random points
 drawn from the graph's digest): points where the residual does not vanish contradict the proof and
 make the verdict ``error`` (an engine defect, never a verdict); points that do not decide leave the
 run to the methods it would have used otherwise.  The division probe at (n, r) precedes the proof, as
-it precedes every symbolic one.
+it precedes every symbolic one.  What the proof covers is read from its certificate (:func:`scope_problem`:
+the case of the family, the hypotheses of one r, the realization, poles), and the dimension-free attempt
+runs in a forked child with a bounded time (:data:`FREE_SECONDS`), so that it never takes the budget of the
+methods that decide the claim at the size.
 """
 from __future__ import annotations
 
@@ -144,10 +147,13 @@ def specialised(claim: Claim, n: int, r: int, seed: int, func: Callable | None =
     func = func or claim.func
     t0 = time.perf_counter()
     stated = size_families(claim)
+    families = (tuple(stated[0]), stated[1])
+    before = _claim_state(claim, families)
     covered, family = family_at(claim, n, r, stated)
     if not covered or claim.realization not in REALIZATIONS:
         return None
-    cons = REALIZATIONS[claim.realization]
+    realization = claim.realization
+    cons = REALIZATIONS[realization]
     try:
         here = compile_claim(func, n, r, (cons.name, cons.build)).digest()
         proved_graph = compile_claim(func, None, None, (cons.name, cons.build), family=family).digest()
@@ -156,9 +162,9 @@ def specialised(claim: Claim, n: int, r: int, seed: int, func: Callable | None =
     if here != proved_graph:
         return None
     seconds = FREE_SECONDS if budget is None else min(FREE_SECONDS, budget / 4)
-    free = _free_result(claim, func, proved_graph, (tuple(stated[0]), stated[1]), seconds)
+    free = _free_result(claim, func, proved_graph, families, seconds)
     if free.verdict != "proved" or free.certificate_data is None \
-            or scope_problem(free.certificate_data, claim.realization, family, n, r):
+            or scope_problem(free.certificate_data, realization, family, n, r):
         return None
     why = fixed_size.division_probe(claim, n, r, func, seed)
     if why:
@@ -166,8 +172,9 @@ def specialised(claim: Claim, n: int, r: int, seed: int, func: Callable | None =
         res.verdict, res.message, res.seconds = "error", why, time.perf_counter() - t0
         return res
     check = fixed_size.run_points(claim, n, r, "modular", seed, func)
-    if check.verdict not in ("checked", "fails"):
-        return None
+    stated = size_families(claim)
+    if check.verdict not in ("checked", "fails") or _claim_state(claim, (tuple(stated[0]), stated[1])) != before:
+        return None     # (a claim changed while it was run, by its own code: the proof is not given)
     res = fixed_size._base_result(claim, n, r, "exact", seed)
     res.seconds = time.perf_counter() - t0
     scope = "for every n and r" if family is None else f"for every n >= {family.n_min} at {family.r_text}"
