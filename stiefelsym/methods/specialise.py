@@ -89,7 +89,7 @@ def _free_result(claim: Claim, func: Callable, digest: str, families: tuple, sec
     except (HardTimeout, ChildError) as exc:     # ChildDied included: no proof here, the run goes on
         res = fixed_size._base_result(claim, None, None, "free", None)
         res.verdict = "undecided"
-        res.message = f"the dimension-free attempt ended without a verdict: {exc or 'stopped after the time limit'}"
+        res.message = f"the dimension-free attempt ended without a verdict: {str(exc) or f'stopped after {seconds:.1f} s'}"
         stopped = seconds if isinstance(exc, HardTimeout) else None
     _FREE[key] = (claim, func, state, digest, res, claim.sizes, stopped)
     while len(_FREE) > FREE_CACHE_SIZE:
