@@ -91,7 +91,7 @@ def test_a_slow_dimension_free_attempt_does_not_take_the_run_budget(monkeypatch)
     attempt runs in a forked child killed after FREE_SECONDS (a quarter of the run's budget if less); then the run
     goes on as before (auto: modular; exact: its charts)."""
     import time
-    monkeypatch.setattr(specialise, "FREE_SECONDS", 0.5)
+    monkeypatch.setattr(specialise, "FREE_SECONDS", 0.5, raising=False)
     c = _claim(slow_rewriting, admissible(5))
     t0 = time.perf_counter()
     res = run_one(c, Size(5, 2), "auto", 0)
