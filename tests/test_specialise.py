@@ -78,11 +78,12 @@ def test_a_dimension_free_proof_contradicted_by_the_points_is_an_error(monkeypat
     """An unsound dimension-free method (simulated: it 'proves' a false statement) is caught by the
     cross-check at the size: error, never proved or fails."""
     c = _claim(dual_gram_dropped)
+    borrowed = specialise.run_free(_claim(dual_gram)).certificate_data   # a valid certificate, of another claim
 
     def unsound(claim, func=None):
         res = Result(claim=claim.id, paper=[], section="", kind="id", title="", statement="", n=None, r=None,
                      method="free", verdict="proved", expected=True, seconds=0.0, seed=None)
-        res.certificate_data, res.certificate = {"format": "forged"}, "forged"
+        res.certificate_data, res.certificate = borrowed, "forged"
         return res
     monkeypatch.setattr(specialise, "run_free", unsound)
     res = run_one(c, Size(5, 2), "exact", 0)

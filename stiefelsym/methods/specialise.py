@@ -17,7 +17,10 @@ such proof is cross-checked at its own size by the modular method (random points
 drawn from the graph's digest): points where the residual does not vanish contradict the proof and
 make the verdict ``error`` (an engine defect, never a verdict); points that do not decide leave the
 run to the methods it would have used otherwise.  The division probe at (n, r) precedes the proof, as
-it precedes every symbolic one.
+it precedes every symbolic one.  What the proof covers is read from its certificate (:func:`scope_problem`:
+the case of the family, the hypotheses of one r, the realization, poles), and the dimension-free attempt
+runs in a forked child with a bounded time (:data:`FREE_SECONDS`), so that it never takes the budget of the
+methods that decide the claim at the size.
 """
 from __future__ import annotations
 
@@ -25,30 +28,36 @@ import time
 from collections import OrderedDict
 from typing import Any, Callable
 
+from stiefelsym.certificate_check import CASES, R1_ONLY, R2_ONLY, SQUARE, Rejected, coefficient
 from stiefelsym.claims import Claim
-from stiefelsym.ir import compile_claim
+from stiefelsym.ir import SizeFamily, compile_claim
 from stiefelsym.methods import fixed_size
 from stiefelsym.methods.dimension_free import run_free, size_families
 from stiefelsym.results import Result
 from stiefelsym.scene import REALIZATIONS
 
 #: the dimension-free results in this process: (id of claim, id of function) -> (claim, function, what the
-#: run reads of the claim, digest of the graph proved, result, the claim's sizes); a result is used only
-#: while the claim and its graph are unchanged
+#: run reads of the claim, digest of the graph proved, result, the claim's sizes, the time limit that stopped the
+#: attempt or None); a result is used only while the claim and its graph are unchanged
 _FREE: "OrderedDict[tuple, tuple]" = OrderedDict()
 FREE_CACHE_SIZE = 64
+#: the longest the dimension-free attempt of a run at a size may take (a quarter of the run's budget if less): a
+#: proof of the catalog takes well under a second; a claim whose rewriting is slow (a product of many sums) is
+#: left, at once, to the methods that decide it at the size
+FREE_SECONDS = 20.0
 
 
-def _claim_state(claim: Claim) -> tuple:
-    """What the dimension-free method reads of a claim besides its function and its statement of sizes (kept
-    by identity): a changed claim is proved again."""
-    return (claim.id, claim.expect, claim.realization, claim.kind)
+def _claim_state(claim: Claim, families: tuple) -> tuple:
+    """What the dimension-free method reads of a claim besides its function: its statement of sizes through the
+    families of sizes it gives (a statement changed in place, r_is_n or r_in, is read again each time), and the
+    fields below: a changed claim is proved again."""
+    return (claim.id, claim.expect, claim.realization, claim.kind, families)
 
 
-def family_at(claim: Claim, n: int, r: int) -> tuple[bool, Any]:
+def family_at(claim: Claim, n: int, r: int, stated: tuple | None = None) -> tuple[bool, Any]:
     """(whether the claim's dimension-free proof would cover (n, r), the family of sizes it is proved on there:
-    None for a claim stated at every r)."""
-    families, why = size_families(claim)
+    None for a claim stated at every r); ``stated``: the claim's (families, why) when already read."""
+    families, why = stated if stated is not None else size_families(claim)
     if why or not families:
         return False, None
     if families == [None]:
@@ -62,19 +71,65 @@ def family_at(claim: Claim, n: int, r: int) -> tuple[bool, Any]:
     return False, None
 
 
-def _free_result(claim: Claim, func: Callable, digest: str) -> Result:
+def _free_result(claim: Claim, func: Callable, digest: str, families: tuple, seconds: float) -> Result:
+    """The dimension-free result of the claim's function, within ``seconds`` (in a forked child, killed after
+    them: the attempt never takes the run's budget from the methods that would have decided it); a result is
+    kept while the claim and its graph are unchanged, a stopped attempt while no longer limit is given."""
     key = (id(claim), id(func))
-    state = _claim_state(claim)
+    state = _claim_state(claim, families)
     hit = _FREE.get(key)
     if hit is not None and hit[0] is claim and hit[1] is func and hit[2] == state and hit[3] == digest \
-            and hit[5] is claim.sizes:
+            and hit[5] is claim.sizes and (hit[6] is None or seconds <= hit[6]):
         _FREE.move_to_end(key)
         return hit[4]
-    res = run_free(claim, func)
-    _FREE[key] = (claim, func, state, digest, res, claim.sizes)
+    from stiefelsym.run.isolate import ChildError, HardTimeout, run_isolated
+    stopped: float | None = None
+    try:
+        res = run_isolated(lambda: run_free(claim, func), seconds, fixed_size._describe)
+    except (HardTimeout, ChildError) as exc:     # ChildDied included: no proof here, the run goes on
+        res = fixed_size._base_result(claim, None, None, "free", None)
+        res.verdict = "undecided"
+        res.message = f"the dimension-free attempt ended without a verdict: {str(exc) or f'stopped after {seconds:.1f} s'}"
+        stopped = seconds if isinstance(exc, HardTimeout) else None
+    _FREE[key] = (claim, func, state, digest, res, claim.sizes, stopped)
     while len(_FREE) > FREE_CACHE_SIZE:
         _FREE.popitem(last=False)
     return res
+
+
+#: the hypotheses of the free algebra that hold at one r only: name -> whether they hold at (n, r)
+ONE_R = {R1_ONLY: lambda n, r: r == 1, R2_ONLY: lambda n, r: r == 2, SQUARE: lambda n, r: r == n}
+
+
+def scope_problem(data: Any, realization: str, family: SizeFamily | None, n: int, r: int) -> str:
+    """Why the dimension-free certificate ``data`` is not a proof at (n, r), or "": read from the certificate
+    itself, whatever the claim's statement of sizes says now.  A certificate of cases must have the case of the
+    family covering (n, r) (that case is then read); the realization must be the claim's; a hypothesis of one r
+    (E1E1t at r = 1, E1E1t+E2E2t at r = 2, XXt at r = n) must hold at (n, r); and no coefficient of a residual or
+    a cofactor may have a pole at (n, r) (a rational function of n, r is a proof where it is defined)."""
+    try:
+        if isinstance(data, dict) and data.get("format") == CASES:
+            want = "n" if family is None or family.r is None else family.r
+            cases = [c["certificate"] for c in data["cases"] if c["sizes"]["r"] == want and c["sizes"]["n_min"] <= n
+                     and (r == n if want == "n" else r == want)]
+            if not cases:
+                return f"its certificate of cases has no case covering ({n},{r})"
+            data = cases[0]
+        if not isinstance(data, dict) or data.get("realization", "standard") != realization:
+            return f"its certificate is not of the claim's realization ({realization})"
+        used = {t.get("hyp") for e in data["entries"] for t in e["terms"]}
+        wrong = sorted(str(h) for h in used if h in ONE_R and not ONE_R[h](n, r))
+        if wrong:
+            return f"its certificate uses {wrong[0]}, a hypothesis that does not hold at ({n},{r})"
+        import symengine as se
+        at = {se.Symbol("n"): n, se.Symbol("r"): r}
+        for e in data["entries"]:
+            for t in e["residual"] + e["terms"]:
+                if se.expand(coefficient(t["coef"]).as_numer_denom()[1].subs(at)) == 0:
+                    return f"the coefficient {t['coef']} of its certificate has a pole at ({n},{r})"
+    except (Rejected, KeyError, TypeError, ValueError, AttributeError, RuntimeError) as exc:
+        return f"its certificate cannot be read ({type(exc).__name__}: {exc})"
+    return ""
 
 
 def reset() -> None:
@@ -82,7 +137,8 @@ def reset() -> None:
     _FREE.clear()
 
 
-def specialised(claim: Claim, n: int, r: int, seed: int, func: Callable | None = None) -> Result | None:
+def specialised(claim: Claim, n: int, r: int, seed: int, func: Callable | None = None,
+                budget: float | None = None) -> Result | None:
     """The exact method's ``proved`` at (n, r) from the dimension-free proof of the graph the run at (n, r)
     evaluates, cross-checked by the modular method there; ``error`` when the cross-check refutes it; None
     where there is no such proof (or the cross-check does not decide): the run goes on as it would have."""
@@ -90,10 +146,14 @@ def specialised(claim: Claim, n: int, r: int, seed: int, func: Callable | None =
         return None
     func = func or claim.func
     t0 = time.perf_counter()
-    covered, family = family_at(claim, n, r)
+    stated = size_families(claim)
+    families = (tuple(stated[0]), stated[1])
+    before = _claim_state(claim, families)
+    covered, family = family_at(claim, n, r, stated)
     if not covered or claim.realization not in REALIZATIONS:
         return None
-    cons = REALIZATIONS[claim.realization]
+    realization = claim.realization
+    cons = REALIZATIONS[realization]
     try:
         here = compile_claim(func, n, r, (cons.name, cons.build)).digest()
         proved_graph = compile_claim(func, None, None, (cons.name, cons.build), family=family).digest()
@@ -101,8 +161,10 @@ def specialised(claim: Claim, n: int, r: int, seed: int, func: Callable | None =
         return None
     if here != proved_graph:
         return None
-    free = _free_result(claim, func, proved_graph)
-    if free.verdict != "proved" or free.certificate_data is None:
+    seconds = FREE_SECONDS if budget is None else min(FREE_SECONDS, budget / 4)
+    free = _free_result(claim, func, proved_graph, families, seconds)
+    if free.verdict != "proved" or free.certificate_data is None \
+            or scope_problem(free.certificate_data, realization, family, n, r):
         return None
     why = fixed_size.division_probe(claim, n, r, func, seed)
     if why:
@@ -110,8 +172,9 @@ def specialised(claim: Claim, n: int, r: int, seed: int, func: Callable | None =
         res.verdict, res.message, res.seconds = "error", why, time.perf_counter() - t0
         return res
     check = fixed_size.run_points(claim, n, r, "modular", seed, func)
-    if check.verdict not in ("checked", "fails"):
-        return None
+    stated = size_families(claim)
+    if check.verdict not in ("checked", "fails") or _claim_state(claim, (tuple(stated[0]), stated[1])) != before:
+        return None     # (a claim changed while it was run, by its own code: the proof is not given)
     res = fixed_size._base_result(claim, n, r, "exact", seed)
     res.seconds = time.perf_counter() - t0
     scope = "for every n and r" if family is None else f"for every n >= {family.n_min} at {family.r_text}"

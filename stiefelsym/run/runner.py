@@ -14,6 +14,7 @@ import copy
 import functools
 import hashlib
 import shlex
+import time
 from typing import Callable, Iterable, Sequence
 
 from stiefelsym.claims import Claim, Registry, Size
@@ -342,37 +343,52 @@ def _dispatch(claim: Claim, size: Size | None, method: str, seed: int, func: Cal
         if options:
             return METHOD_RUNNERS["rational"](claim, size.n, size.r, seed, func, options)
         # the whole of auto shares one budget: the symbolic attempt gets half of it
-        return _run_auto(claim, size, seed, func, _exact_runner(in_worker, None if timeout is None else timeout / 2))
+        return _run_auto(claim, size, seed, func, _exact_runner(in_worker, None if timeout is None else timeout / 2),
+                         timeout)
     if method == "exact":
         if options:
             raise ValueError("hard cases are sampled points: use --method rational, modular or float")
-        return _run_exact(claim, size, seed, func, _exact_runner(in_worker, timeout))
+        return _run_exact(claim, size, seed, func, _exact_runner(in_worker, timeout), timeout)
     return METHOD_RUNNERS[method](claim, size.n, size.r, seed, func, options)
 
 
-def _specialised(claim: Claim, size: Size, seed: int, func: Callable | None, spent: float = 0.0) -> Result | None:
+def _specialised(claim: Claim, size: Size, seed: int, func: Callable | None, spent: float = 0.0,
+                 budget: float | None = None) -> Result | None:
     """The dimension-free proof of the graph the run at ``size`` evaluates, as the exact method's verdict there
-    (:mod:`stiefelsym.methods.specialise`), or None."""
+    (:mod:`stiefelsym.methods.specialise`), or None; ``budget``: the run's time budget (the dimension-free attempt
+    gets a bounded part of it)."""
     from stiefelsym.methods.specialise import specialised
-    res = specialised(claim, size.n, size.r, seed, func)
+    res = specialised(claim, size.n, size.r, seed, func, budget)
     if res is not None:
         res.seconds += spent
     return res
 
 
-def _run_exact(claim: Claim, size: Size, seed: int, func: Callable | None, exact: Callable[..., Result]) -> Result:
+def _run_exact(claim: Claim, size: Size, seed: int, func: Callable | None, exact: Callable[..., Result],
+               budget: float | None = None) -> Result:
     """The exact method: its symbolic charts within the claim's symbolic budget; beyond it, or where the
     charts end without a verdict, the dimension-free proof of the same graph where there is one."""
     if not claim.exact_at(size.n, size.r):
-        return _specialised(claim, size, seed, func) or exact(claim, size.n, size.r, seed, func)
+        t0 = time.perf_counter()
+        proof = _specialised(claim, size, seed, func, 0.0, budget)
+        if proof is not None:
+            return proof
+        spent = time.perf_counter() - t0
+        res = exact(claim, size.n, size.r, seed, func)
+        res.seconds += spent        # the record's time is the whole run's
+        return res
     res = exact(claim, size.n, size.r, seed, func)
     if res.verdict == "inconclusive":
-        return _specialised(claim, size, seed, func, res.seconds) or res
+        t0 = time.perf_counter()
+        proof = _specialised(claim, size, seed, func, res.seconds, budget)
+        if proof is None:
+            res.seconds += time.perf_counter() - t0     # the record's time is the whole run's
+        return proof or res
     return res
 
 
 def _run_auto(claim: Claim, size: Size, seed: int, func: Callable | None,
-              exact: Callable[..., Result] | None = None) -> Result:
+              exact: Callable[..., Result] | None = None, budget: float | None = None) -> Result:
     exact = exact or METHOD_RUNNERS["exact"]
     if claim.exact_at(size.n, size.r):
         res = exact(claim, size.n, size.r, seed, func)
@@ -384,9 +400,11 @@ def _run_auto(claim: Claim, size: Size, seed: int, func: Callable | None,
         reason, spent = (f"({size.n},{size.r}) is above this claim's symbolic budget "
                          f"({claim.exact_budget_text()})" if claim.exact_max_r or claim.exact_corank else
                          f"n = {size.n} is above this claim's symbolic budget (n <= {claim.exact_max_n})"), 0.0
-    proof = _specialised(claim, size, seed, func, spent)
+    t0 = time.perf_counter()
+    proof = _specialised(claim, size, seed, func, spent, budget)
     if proof is not None:
         return proof
+    spent += time.perf_counter() - t0
     res = METHOD_RUNNERS["modular"](claim, size.n, size.r, seed, func)
     res.message = "; ".join(m for m in (f"exact: {reason}" if reason else "", res.message) if m)
     res.seconds += spent
