@@ -36,7 +36,7 @@ from stiefelsym.methods.dimension_free import run_free, size_families
 from stiefelsym.results import Result
 from stiefelsym.scene import REALIZATIONS
 
-#: the dimension-free results in this process: (id of claim, id of function) -> (claim, function, what the
+#: the dimension-free results in this process: (claim id, id of function) -> (claim, function, what the
 #: run reads of the claim, digest of the graph proved, result, the claim's sizes, the time limit that stopped the
 #: attempt or None); a result is used only while the claim and its graph are unchanged
 _FREE: "OrderedDict[tuple, tuple]" = OrderedDict()
@@ -75,10 +75,12 @@ def _free_result(claim: Claim, func: Callable, digest: str, families: tuple, sec
     """The dimension-free result of the claim's function, within ``seconds`` (in a forked child, killed after
     them: the attempt never takes the run's budget from the methods that would have decided it); a result is
     kept while the claim and its graph are unchanged, a stopped attempt while no longer limit is given."""
-    key = (id(claim), id(func))
+    # by the claim's id and what the method reads of it, not by the claim object: a correction's claim is
+    # built afresh for each run (its function and statement of sizes are the same objects)
+    key = (claim.id, id(func))
     state = _claim_state(claim, families)
     hit = _FREE.get(key)
-    if hit is not None and hit[0] is claim and hit[1] is func and hit[2] == state and hit[3] == digest \
+    if hit is not None and hit[1] is func and hit[2] == state and hit[3] == digest \
             and hit[5] is claim.sizes and (hit[6] is None or seconds <= hit[6]):
         _FREE.move_to_end(key)
         return hit[4]
