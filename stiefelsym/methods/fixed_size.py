@@ -1875,8 +1875,8 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
             res.seconds = time.perf_counter() - t0
             return res
         # no parameter entered the checks (on a lent point, whose parameters the printed claim drew,
-        # the markers of the checks say it: all of degree 0)
-        if t == 0 and (point_deg.numerator == 0 if getattr(scene, "_loaned", False) and not hard
+        # the markers of the checks say it: all of degree 0, the entries of every rank's matrix too)
+        if t == 0 and (_lent_constant(checks, field, point_deg) if getattr(scene, "_loaned", False) and not hard
                        else not scene._has_params()):
             return _run_constant(claim, n, r, seed, func, options, res, t0)
         if components == 2 and scene.second_point_read:
@@ -2003,6 +2003,17 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
                        f"Established here: {res.certificate}")
         res.false_pass_bound = None
     return res
+
+
+def _lent_constant(checks: dict[str, Any], field: PairField, deg: DegreeBound) -> bool:
+    """Whether no parameter entered the checks evaluated on a lent point: the residuals' markers (``deg``, the
+    point's bound) and those of every entry of every rank's matrix are of degree 0.  The bound alone does not
+    say it for a rank: it is the degree of the (k+1)-minors, and a rank of its matrix's full size has none
+    (bound 0 whatever its entries), so such a rank, of parameters, was taken for a constant matrix: its rank
+    at one point read as its rank at every point."""
+    if deg.numerator != 0:
+        return False
+    return all(field.marker(x).num <= 0 for v in checks.values() if isinstance(v, Rank) for x in v.matrix._a.flat)
 
 
 def _full_ranks(checks: dict[str, Any], evaluations: list[Evaluation]) -> bool:
