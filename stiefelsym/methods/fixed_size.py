@@ -1726,6 +1726,11 @@ def _point_rank(R: Rank, field: Field, bound_text: str) -> tuple[str, str]:
     if rk > R.expected:
         return f"rank {rk} {where} exceeds the paper's {R.expected} (certain: generic rank >= {rk})", "certain"
     if rk < R.expected:
+        size = min(R.matrix._a.shape)
+        if R.expected > size:
+            # no matrix of this size has a larger rank, at any point: refuted whatever the point
+            return (f"rank {rk} {where}; the matrix is {R.matrix._a.shape[0]}x{R.matrix._a.shape[1]}: no rank "
+                    f"exceeds its full size {size} < {R.expected} (certain)"), "certain"
         if exact and not R.generic:
             return (f"rank {rk} {where} of T*V, below the rank {R.expected} the paper states at every point "
                     f"(certain)"), "certain"

@@ -43,6 +43,8 @@ def test_a_rank_of_full_size_is_proved_only_where_it_holds_on_every_component():
     for cid in FALSE:
         assert got[cid] and not set(got[cid].values()) & set(PASSING), (cid, got[cid])
     assert set(got["adv-s41b-wrong-count"].values()) == {"fails"}, got["adv-s41b-wrong-count"]
+    # no rank exceeds the full size: a rank above it is refuted at any point (before: inconclusive)
+    assert set(got["adv-s41b-one-above-full"].values()) == {"fails"}, got["adv-s41b-one-above-full"]
     assert set(got["adv-s41b-wide-symmetric-jacobian"].values()) == {"error"}, got["adv-s41b-wide-symmetric-jacobian"]
     assert {m for (_, _, m) in got["adv-s41b-full-true"]} == {"modular", "rational"}, got["adv-s41b-full-true"]
 
