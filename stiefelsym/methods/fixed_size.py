@@ -2011,14 +2011,19 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
 
 
 def _lent_constant(checks: dict[str, Any], field: PairField, deg: DegreeBound) -> bool:
-    """Whether no parameter entered the checks evaluated on a lent point: the residuals' markers (``deg``, the
-    point's bound) and those of every entry of every rank's matrix are of degree 0.  The bound alone does not
-    say it for a rank: it is the degree of the (k+1)-minors, and a rank of its matrix's full size has none
-    (bound 0 whatever its entries), so such a rank, of parameters, was taken for a constant matrix: its rank
-    at one point read as its rank at every point."""
+    """Whether no parameter entered the checks evaluated on a lent point: the residuals' numerators (``deg``,
+    the point's bound: a residual c/D with c a constant is 0 at a point only if it is 0) are of degree 0, and
+    every entry of every rank's matrix is a constant (numerator and denominator of degree 0: the rank of
+    [[1/x, 1/y], [1/y, 1/x]] drops where x = ±y).  The bound alone does not say it for a rank: it is the
+    degree of the (k+1)-minors, and a rank of its matrix's full size has none (bound 0 whatever its entries),
+    so such a rank, of parameters, was taken for a constant matrix: its rank at one point read as its rank at
+    every point."""
     if deg.numerator != 0:
         return False
-    return all(field.marker(x).num <= 0 for v in checks.values() if isinstance(v, Rank) for x in v.matrix._a.flat)
+
+    def constant(m: Any) -> bool:
+        return m.num <= 0 and not any(m.f.factor_degree[k] for k in m.den)
+    return all(constant(field.marker(x)) for v in checks.values() if isinstance(v, Rank) for x in v.matrix._a.flat)
 
 
 def _full_ranks(checks: dict[str, Any], evaluations: list[Evaluation]) -> bool:

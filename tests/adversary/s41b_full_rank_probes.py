@@ -123,3 +123,11 @@ def wide_symmetric_jacobian(s):
 def every_point_gram(s):
     """True: XᵀX = I_r has rank r at every point of T*V (its mutant PᵀX, 0 at P = 0, does not)."""
     return {"rank": Rank(s.X.T @ s.X, s.r, generic=False)}
+
+
+@claim("adv-s41b-reciprocal-every-point", paper="adv", kind="dim", sizes=LOW, exact_max_n=1)
+def reciprocal_every_point(s):
+    """True where defined (x, y real, nonzero): [[1/x, 1/y], [1/y, −1/x]] has determinant −(1/x² + 1/y²) ≠ 0; its
+    mutant with +1/x (determinant (y² − x²)/(x²y²), 0 where x = ±y) has entries c/D: numerators of degree 0."""
+    x, y = s.scalar("x"), s.scalar("y")
+    return {"rank": Rank(s.mat([[s.q(1) / x, s.q(1) / y], [s.q(1) / y, -(s.q(1) / x)]]), 2, generic=False)}

@@ -90,17 +90,21 @@ def test_lent_points_decide_a_rank_of_full_size_as_fresh_points_do():
     0 for a rank of its matrix's full size, whatever its entries.  So PᵀX (the mutant X → P of XᵀX = I_r, rank r
     at every point) was `checked` from one point where a fresh run says `undecided` (a rank at every point does
     not follow from points), and the mutants of XᵀAX were decided at one point, refuted with certainty.
-    Closed (`_lent_constant`): on a lent point the entries of every rank's matrix must be of degree 0 as well;
-    the verdicts on lent points are those of fresh points."""
+    The same for entries c/D whose numerators are constants: the mutant +1/x of [[1/x, 1/y], [1/y, −1/x]] (its
+    rank drops where x = ±y) was `checked` at every point.  Closed (`_lent_constant`): on a lent point every entry
+    of every rank's matrix must be a constant (numerator and denominator of degree 0); the verdicts on lent points
+    are those of fresh points."""
     from stiefelsym.analyses.mutate import run_mutation
     from stiefelsym.api import load
     from stiefelsym.claims import Size
     reg = load([HERE / PROBES], catalog=False)
-    claims = [reg.get("adv-s41b-every-point-gram"), reg.get("adv-s41b-full-true")]
+    claims = [reg.get(c) for c in ("adv-s41b-every-point-gram", "adv-s41b-full-true", "adv-s41b-reciprocal-every-point")]
     kw = dict(methods=("rational", "modular"), sizes=[Size(3, 2)], on="graphs")
     lent, fresh = _outcomes(run_mutation(claims, **kw)), _outcomes(run_mutation(claims, lend=False, **kw))
     assert lent == fresh
     ptx = [o for (cid, _), o in lent.items() if cid == "adv-s41b-every-point-gram" and o[0] != "equivalent"]
     assert any({v for *_, v in cells} == {"undecided"} for _, cells in ptx), lent
+    recip = {v for (cid, _), (_, cells) in lent.items() if cid == "adv-s41b-reciprocal-every-point" for *_, v in cells}
+    assert "checked" not in recip and "undecided" in recip, lent
     full = {v for (cid, _), (_, cells) in lent.items() if cid == "adv-s41b-full-true" for *_, v in cells}
     assert "proved" in full, lent       # a mutant of full size (A → A⁻¹) is proved on lent points as on fresh ones
