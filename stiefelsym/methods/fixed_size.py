@@ -1726,6 +1726,11 @@ def _point_rank(R: Rank, field: Field, bound_text: str) -> tuple[str, str]:
     if rk > R.expected:
         return f"rank {rk} {where} exceeds the paper's {R.expected} (certain: generic rank >= {rk})", "certain"
     if rk < R.expected:
+        size = min(R.matrix._a.shape)
+        if R.expected > size:
+            # no matrix of this size has a larger rank, at any point: refuted whatever the point
+            return (f"rank {rk} {where}; the matrix is {R.matrix._a.shape[0]}x{R.matrix._a.shape[1]}: no rank "
+                    f"exceeds its full size {size} < {R.expected} (certain)"), "certain"
         if exact and not R.generic:
             return (f"rank {rk} {where} of T*V, below the rank {R.expected} the paper states at every point "
                     f"(certain)"), "certain"
@@ -1875,8 +1880,8 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
             res.seconds = time.perf_counter() - t0
             return res
         # no parameter entered the checks (on a lent point, whose parameters the printed claim drew,
-        # the markers of the checks say it: all of degree 0)
-        if t == 0 and (point_deg.numerator == 0 if getattr(scene, "_loaned", False) and not hard
+        # the markers of the checks say it: all of degree 0, the entries of every rank's matrix too)
+        if t == 0 and (_lent_constant(checks, field, point_deg) if getattr(scene, "_loaned", False) and not hard
                        else not scene._has_params()):
             return _run_constant(claim, n, r, seed, func, options, res, t0)
         if components == 2 and scene.second_point_read:
@@ -2003,6 +2008,22 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
                        f"Established here: {res.certificate}")
         res.false_pass_bound = None
     return res
+
+
+def _lent_constant(checks: dict[str, Any], field: PairField, deg: DegreeBound) -> bool:
+    """Whether no parameter entered the checks evaluated on a lent point: the residuals' numerators (``deg``,
+    the point's bound: a residual c/D with c a constant is 0 at a point only if it is 0) are of degree 0, and
+    every entry of every rank's matrix is a constant (numerator and denominator of degree 0: the rank of
+    [[1/x, 1/y], [1/y, 1/x]] drops where x = ±y).  The bound alone does not say it for a rank: it is the
+    degree of the (k+1)-minors, and a rank of its matrix's full size has none (bound 0 whatever its entries),
+    so such a rank, of parameters, was taken for a constant matrix: its rank at one point read as its rank at
+    every point."""
+    if deg.numerator != 0:
+        return False
+
+    def constant(m: Any) -> bool:
+        return m.num <= 0 and not any(m.f.factor_degree[k] for k in m.den)
+    return all(constant(field.marker(x)) for v in checks.values() if isinstance(v, Rank) for x in v.matrix._a.flat)
 
 
 def _full_ranks(checks: dict[str, Any], evaluations: list[Evaluation]) -> bool:
