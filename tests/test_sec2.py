@@ -237,8 +237,15 @@ def test_section_2_holds_at_small_sizes(catalog, n, r):
         sampled = run_points(c, n, r, "modular", SEED)
         if c.id in EVERY_POINT_RANKS:   # random points establish the generic rank only
             assert sampled.verdict == "undecided" and "every point" in sampled.message, c.id
+        elif c.id in FULL_SIZE_RANKS:   # a nonzero maximal minor at a point proves a rank of full size
+            assert sampled.verdict in ("proved", "checked"), c.id
+            assert sampled.verdict == "checked" or "full size" in sampled.certificate, c.id
         else:
             assert sampled.verdict == "checked", c.id
+
+
+#: claims whose every check is a generic rank equal to its matrix's full size at some sizes
+FULL_SIZE_RANKS = ("invariants-differential-dimension", "invariants-complete")
 
 
 #: claims that assert a rank at every point of T*V (decided by the exact method only); the independence of
