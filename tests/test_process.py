@@ -640,7 +640,10 @@ def test_a_symbolic_attempt_that_exceeds_memory_in_a_worker_leaves_the_worker_al
 @pytest.mark.parametrize("dies", [_hoard, _abort], ids=["MemoryError", "SIGABRT"])
 def test_auto_falls_back_to_modular_when_the_symbolic_attempt_dies(monkeypatch, dies):
     from stiefelsym.methods import fixed_size as methods
+    from stiefelsym.methods import specialise
     monkeypatch.setattr(methods, "run_exact", dies)
+    # (where the dimension-free method has no proof of the claim's graph: with one, auto would take it)
+    monkeypatch.setattr(specialise, "specialised", lambda *a, **kw: None)
     claims = [_claim("ok", _ok, sizes=admissible(n_max=6)), _claim("false", _falsely_orthonormal,
                                                                     sizes=admissible(n_max=6))]
     res = runner.verify(claims, sizes=[Size(6, 2)], methods=("auto",), timeout=60, memory=3, seed=0)
@@ -669,10 +672,13 @@ def test_auto_tries_the_symbolic_method_within_the_budget_in_r():
     by = {(r.claim, r.n, r.r): r for r in res}
     assert (by["ok", 3, 2].method, by["ok", 3, 2].verdict) == ("exact", "proved")
     assert (by["false", 3, 2].method, by["false", 3, 2].verdict) == ("exact", "fails")
-    assert (by["ok", 3, 3].method, by["ok", 3, 3].verdict) == ("modular", "checked")
-    assert by["ok", 3, 3].message.startswith("exact: (3,3) is above this claim's symbolic budget "
-                                             "(n <= 2; r <= 2 at n = 3)")
-    assert by["false", 3, 3].verdict == "fails"
+    # above the budget: the dimension-free proof of the same graph, specialised (the modular method
+    # where there is none)
+    assert (by["ok", 3, 3].method, by["ok", 3, 3].verdict) == ("exact", "proved")
+    assert by["ok", 3, 3].reductions[0].startswith("the dimension-free proof, specialised")
+    assert by["false", 3, 3].verdict == "fails" and by["false", 3, 3].method == "modular"
+    assert by["false", 3, 3].message.startswith("exact: (3,3) is above this claim's symbolic budget "
+                                                "(n <= 2; r <= 2 at n = 3)")
 
 
 @pytest.mark.parametrize("pairs", [((2, 1),), ((4, 5),), ((4, 0),), (("4", 2),), ((4,),)])
@@ -709,10 +715,12 @@ def test_a_correction_widens_the_symbolic_budget_of_the_corrected_statement_alon
     printed, good, false, plain = (None, *(k.description for k in c.corrections))
     assert (by[printed, 3, 2].method, by[printed, 3, 2].verdict) == ("modular", "fails")
     assert (by[good, 3, 2].method, by[good, 3, 2].verdict) == ("exact", "proved")
-    assert (by[good, 3, 3].method, by[good, 3, 3].verdict) == ("modular", "checked")
+    # above every budget: the dimension-free proof of the corrected statement, specialised
+    assert (by[good, 3, 3].method, by[good, 3, 3].verdict) == ("exact", "proved")
     assert (by[false, 3, 2].method, by[false, 3, 2].verdict) == ("exact", "fails")
     assert (by[false, 3, 3].method, by[false, 3, 3].verdict) == ("exact", "fails")
-    assert (by[plain, 3, 2].method, by[plain, 3, 2].verdict) == ("modular", "checked")
+    assert (by[plain, 3, 2].method, by[plain, 3, 2].verdict) == ("exact", "proved")
+    assert by[plain, 3, 2].reductions[0].startswith("the dimension-free proof, specialised")
 
 
 @pytest.mark.parametrize("pairs", [{2: 1}, {4: 5}, {3: 0}])
