@@ -2683,7 +2683,12 @@ def run_exact_isolated(claim: Claim, n: int, r: int, seed: int, func: Callable |
     if _LOAN is not None and _LOAN.exact_seconds is not None:
         time_budget = min(time_budget, _LOAN.exact_seconds)
     if not isolates(claim, n, r, in_worker):
-        return run_exact(claim, n, r, seed, func, time_budget)
+        if not in_worker:
+            return run_exact(claim, n, r, seed, func, time_budget)
+        # in the worker, whose heap (graphs of millions of nodes) every full collection scans again,
+        # where a forked child's collections see only its own objects (the worker's are frozen for it)
+        with spaced_collections():
+            return run_exact(claim, n, r, seed, func, time_budget)
     from stiefelsym.run.isolate import ChildDied, HardTimeout, run_isolated
     import sympy.polys.matrices  # noqa: F401 (imported once here, not in every child)
     t0 = time.perf_counter()

@@ -431,8 +431,14 @@ def _execute(claims: list[Claim], seed: int, hard: str | None, timeout: float, i
     func = c.corrections[k].func if k >= 0 else None
     if k >= 0:
         c = c.corrected(k)
-    return _guarded(c, None if n is None else Size(n, r), method, seed, func, hard, in_worker=in_worker,
-                    timeout=timeout)
+    size = None if n is None else Size(n, r)
+    res = _guarded(c, size, method, seed, func, hard, in_worker=in_worker, timeout=timeout)
+    if func is not None:
+        # what a correction changes, read here, where its graph was traced for the run (and in parallel):
+        # the parent reads it itself for a record computed at another size or not computed at all
+        res.change = graph_change(claims[ci], func, size)
+        res._change_at = (n, r)     # type: ignore[attr-defined]  (not a field: never in a record)
+    return res
 
 
 def _settle(outcome: Outcome, task: Task, claims: list[Claim], seed: int, hard: str | None) -> Result:
@@ -450,7 +456,7 @@ def _settle(outcome: Outcome, task: Task, claims: list[Claim], seed: int, hard: 
         res.verdict = "inconclusive" if outcome.kind == "timeout" else "error"
         res.message = outcome.message
         res.seconds = outcome.seconds
-    if k >= 0:
+    if k >= 0 and getattr(res, "_change_at", None) != (n, r):
         res.change = graph_change(c, c.corrections[k].func, size)
     return _finish(res, c, variant, hard)
 
