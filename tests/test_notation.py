@@ -3,6 +3,7 @@ graph of a claim and that of a mutant or a correction."""
 from __future__ import annotations
 
 import json
+import os
 
 import pytest
 
@@ -230,6 +231,28 @@ def test_mutation_report_prints_the_notation_first_and_the_source_after():
 def wrong_sign(s):
     """[Φ, A] + [A, Φ] = 0, printed with the operands of the second commutator in the wrong order."""
     return {"E": comm(s.Phi, s.A) + comm(s.Phi, s.A)}
+
+
+@pytest.mark.skipif(not hasattr(os, "fork"), reason="needs fork")
+def test_a_corrections_change_read_in_the_worker_is_the_parents_and_bound_to_its_size():
+    from stiefelsym.run import runner
+    from stiefelsym.run.pool import Outcome
+    c = Claim(id="wrong-order-w", paper=("prep",), kind="id", section="2", func=wrong_sign,
+              sizes=admissible(3, n_min=3, r_min=2, r_max=2), expect="fails", erratum="an order")
+
+    @c.correction("the operands of the second commutator swapped")
+    def fixed(s):
+        return {"E": comm(s.Phi, s.A) + comm(s.A, s.Phi)}
+    forked = [r for r in verify([c], methods=("modular",), sizes=[Size(3, 2)], jobs=2) if r.variant]
+    here = [r for r in verify([c], methods=("modular",), sizes=[Size(3, 2)], jobs=1, fork=False) if r.variant]
+    assert forked and changes_text(forked[0].change) == changes_text(here[0].change) == "in E: [Φ, A] → [A, Φ]"
+    # a record that says it read its change at another size (a run shared across r, copied) is read again
+    task = (0, 3, 2, "modular", 0)
+    res = runner._execute([c], 0, None, 60.0, False, task)
+    res.change = [{"where": "E", "old": "forged", "new": "forged", "old_tex": "", "new_tex": ""}]
+    res._change_at = (3, 1)
+    settled = runner._settle(Outcome("ok", res), task, [c], 0, None)
+    assert changes_text(settled.change) == "in E: [Φ, A] → [A, Φ]"
 
 
 def test_registered_correction_records_carry_their_change_and_reports_show_it():

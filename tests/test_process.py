@@ -163,6 +163,32 @@ def test_pool_leaves_no_process_behind():
             os.waitpid(pid, os.WNOHANG)
 
 
+@needs_fork
+@pytest.mark.parametrize("workers", [1, 2])
+def test_pool_draws_from_an_iterator_only_for_a_free_worker(workers):
+    """An iterator of tasks (the plan, looked at as it runs) is drawn from only when a worker is free: the
+    parent's work on the next task overlaps the workers' on the others, never runs ahead of them."""
+    consumed: list[int] = []
+    drawn_after: list[int] = []
+    tasks = ["a", "exit", "b", "sleep", "c", "d"]
+
+    def source():
+        for t in tasks:
+            drawn_after.append(len(consumed))
+            yield t
+
+    with WorkerPool(_task, workers=workers, timeout=2) as pool:
+        kinds = []
+        for i, o in pool.run(source()):
+            consumed.append(i)
+            kinds.append(o.kind)
+    assert consumed == list(range(len(tasks)))
+    assert kinds == ["ok", "died", "ok", "timeout", "ok", "ok"]
+    # task i is drawn once the outcomes of all but the last workers - 1 tasks before it were handed over
+    assert all(after >= i - workers for i, after in enumerate(drawn_after))
+    assert drawn_after[:workers] == [0] * workers
+
+
 def test_pool_without_fork_runs_in_process():
     with WorkerPool(_task, workers=1, timeout=1, fork=False) as pool:
         outcomes = [o for _, o in pool.run(["a", "system-exit"])]
@@ -619,6 +645,33 @@ def test_small_symbolic_attempts_stay_in_the_worker_and_heavy_ones_are_forked():
     small = load_catalog().get("euclidean-flow")           # measured, and predicted small at (4,2)
     assert not methods.isolates(small, 4, 2, in_worker=True)
     assert methods.isolates(ok, 4, 2) and not methods.isolates(ok, 3, 2)   # outside a worker: the hard time limit
+
+
+@needs_fork
+def test_a_measured_small_attempt_stays_in_the_worker_unless_its_memory_or_size_is_beyond_the_model(monkeypatch):
+    from stiefelsym.claims import load_catalog
+    from stiefelsym.methods import costmodel, fixed_size as methods
+    small = load_catalog().get("euclidean-flow")
+    n = methods.ISOLATE_MIN_N
+    assert costmodel.predict("exact", small, n, 2) < methods.ISOLATE_SECONDS
+    monkeypatch.setattr(methods, "_memory_budget", lambda: float(4 * GIB))
+    assert not methods.isolates(small, n, 2, in_worker=True)     # no fork for a run of milliseconds
+    # the same run where its predicted peak memory is a large part of the budget: forked
+    peak = costmodel.model().predict_memory("exact", small, n, 2)
+    monkeypatch.setattr(methods, "_memory_budget", lambda: peak / methods.ISOLATE_MEMORY_FRACTION / 2)
+    assert methods.isolates(small, n, 2, in_worker=True)
+    assert not methods.isolates(small, n - 2, 2, in_worker=True)   # below ISOLATE_MIN_N memory is not asked
+    # beyond every size the model measured the symbolic method at: forked, whatever it predicts
+    monkeypatch.setattr(methods, "_memory_budget", lambda: float(1 << 60))
+    top = max(costmodel.model().measured["exact"].values())
+    assert methods.isolates(small, top + 1, 1, in_worker=True)
+    # and a forked attempt gives the record an attempt in the worker gives
+    monkeypatch.setattr(methods, "_memory_budget", lambda: float(4 * GIB))
+    here = methods.run_exact_isolated(small, n, 2, 0, in_worker=True)
+    monkeypatch.setattr(methods, "_memory_budget", lambda: 1.0)
+    forked = methods.run_exact_isolated(small, n, 2, 0, in_worker=True)
+    assert (here.verdict, here.message, here.digest) == (forked.verdict, forked.message, forked.digest)
+    assert here.verdict in ("proved", "checked")
 
 
 @needs_fork

@@ -2668,38 +2668,63 @@ def _run_ball(claim: Claim, n: int, r: int, seed: int, func: Callable, options: 
     return done("numeric")
 
 
-#: in a worker, a symbolic attempt runs in its own forked child from this n on, or when the cost model
-#: predicts at least ISOLATE_SECONDS: a heavy attempt must not leave the long-lived worker bloated
-#: (native memory that fragments and grows) or dead.  Measured in a worker-sized process (77 MiB): a
-#: fork costs 4-5 ms CPU (10 ms wall); the runs below both thresholds take milliseconds to a few
-#: tenths of a second and stay in the worker
+#: in a worker, a symbolic attempt runs in its own forked child when the cost model predicts at least
+#: ISOLATE_SECONDS, or (from ISOLATE_MIN_N on) a peak memory above ISOLATE_MEMORY_FRACTION of the worker's
+#: memory budget, or when n is beyond every size the model measured the symbolic method at: a heavy attempt
+#: must not leave the long-lived worker bloated (native memory that fragments and grows) or dead.  A fork
+#: costs CPU in proportion to the memory the worker has mapped (measured: 4-5 ms at 77 MiB, 20-60 ms at
+#: 0.2-0.9 GiB, parent and child together): the runs below these thresholds take milliseconds to a few
+#: seconds and stay in the worker, which retires once it has grown (:data:`stiefelsym.run.pool.RECYCLE_GROWTH`)
 ISOLATE_MIN_N = 6
 ISOLATE_SECONDS = 0.5
+ISOLATE_MEMORY_FRACTION = 1 / 16
+
+
+def _memory_budget() -> float:
+    """The bytes this process may use: its address-space limit (a worker's is the run's memory budget),
+    else the machine's memory."""
+    try:
+        import resource
+        soft = resource.getrlimit(resource.RLIMIT_AS)[0]
+        if soft != resource.RLIM_INFINITY and soft > 0:
+            return float(soft)
+    except (ImportError, OSError, ValueError):
+        pass
+    try:
+        return float(os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES"))
+    except (ValueError, OSError, AttributeError):
+        return float(4 << 30)
 
 
 def isolates(claim: Claim, n: int, r: int, in_worker: bool = False) -> bool:
     """Whether the symbolic attempt at (n, r) runs in its own forked child.  Outside a worker: from
     n = 4 on (n = 5 while lending points to the mutation analysis, :class:`PointLoan`, whose thousands
     of small runs at n <= 4 would spend more time forking than computing), for the hard time limit.
-    In a worker (the worker is killable, but must survive a heavy attempt): from n = ISOLATE_MIN_N on,
-    from n = 4 on for a claim the cost model was not measured on (a user's claim), or when the cost
-    model predicts at least ISOLATE_SECONDS."""
+    In a worker (the worker is killable, but must survive a heavy attempt): from n = 4 on for a claim the
+    cost model was not measured on (a user's claim), when the cost model predicts at least ISOLATE_SECONDS,
+    and from n = ISOLATE_MIN_N on also when it predicts a peak memory above ISOLATE_MEMORY_FRACTION of the
+    worker's memory budget or n lies beyond the sizes the model measured the symbolic method at."""
     if not hasattr(os, "fork"):
         return False
     if not in_worker:
         return n > (4 if _LOAN is not None else 3)
-    if n >= ISOLATE_MIN_N:
-        return True
     model = costmodel.model()
-    if n >= 4 and model.family_of(claim) is None and not model.factors.get(getattr(claim, "id", None)):
+    family = model.family_of(claim)
+    if n >= 4 and family is None and not model.factors.get(getattr(claim, "id", None)):
         # a claim the cost model was never measured on (a user's): its prediction is a guess, and a
         # symbolic blow-up in the worker (flint aborts when an allocation fails) would take the whole
         # run with it instead of leaving auto its modular fallback
         return True
     try:
-        return costmodel.predict("exact", claim, n, r) >= ISOLATE_SECONDS
+        if costmodel.predict("exact", claim, n, r) >= ISOLATE_SECONDS:
+            return True
+        if n < ISOLATE_MIN_N:
+            return False
+        measured = model.measured.get("exact", {})
+        top = measured.get(family or "") or min(measured.values(), default=0)
+        return n > top or model.predict_memory("exact", claim, n, r) > ISOLATE_MEMORY_FRACTION * _memory_budget()
     except (ValueError, SizeError):
-        return False
+        return n >= ISOLATE_MIN_N
 
 
 def run_exact_isolated(claim: Claim, n: int, r: int, seed: int, func: Callable | None = None,
@@ -2712,7 +2737,12 @@ def run_exact_isolated(claim: Claim, n: int, r: int, seed: int, func: Callable |
     if _LOAN is not None and _LOAN.exact_seconds is not None:
         time_budget = min(time_budget, _LOAN.exact_seconds)
     if not isolates(claim, n, r, in_worker):
-        return run_exact(claim, n, r, seed, func, time_budget)
+        if not in_worker:
+            return run_exact(claim, n, r, seed, func, time_budget)
+        # in the worker, whose heap (graphs of millions of nodes) every full collection scans again,
+        # where a forked child's collections see only its own objects (the worker's are frozen for it)
+        with spaced_collections():
+            return run_exact(claim, n, r, seed, func, time_budget)
     from stiefelsym.run.isolate import ChildDied, HardTimeout, run_isolated
     import sympy.polys.matrices  # noqa: F401 (imported once here, not in every child)
     t0 = time.perf_counter()

@@ -419,8 +419,10 @@ class WorkerPool:
 
     # -- jobs
 
-    def run(self, tasks: Sequence[Any]) -> Iterator[tuple[int, Outcome]]:
-        """Outcomes of the tasks, in the order of ``tasks`` (computed up to ``workers`` at once)."""
+    def run(self, tasks: Sequence[Any] | Iterator[Any]) -> Iterator[tuple[int, Outcome]]:
+        """Outcomes of the tasks, in the order of ``tasks`` (computed up to ``workers`` at once).  An
+        iterator of tasks is drawn from only when a worker is free for its next task (what makes a task,
+        such as the plan's look at which runs are one computation, is done while the workers compute)."""
         if not self.forking:
             for i, task in enumerate(tasks):
                 t0 = time.perf_counter()
@@ -436,23 +438,40 @@ class WorkerPool:
                     continue
                 yield i, Outcome("ok", value, seconds=time.perf_counter() - t0)
             return
-        pending = deque(range(len(tasks)))
+        source = iter(tasks)
+        drawn: list[Any] = []            # the tasks drawn so far, by index
+        more = True                      # the source may have more
+        pending: deque[int] = deque()    # drawn, not yet sent (or sent to a worker that was lost)
+
+        def draw() -> bool:
+            nonlocal more
+            if more:
+                try:
+                    drawn.append(next(source))
+                except StopIteration:
+                    more = False
+                else:
+                    pending.append(len(drawn) - 1)
+            return bool(pending)
+
         done: dict[int, Outcome] = {}
         following = 0
         try:
-            while following < len(tasks):
-                while pending:
+            while more or following < len(drawn):
+                while True:
                     idle = next((w for w in self.workers if w.job is None), None)
+                    if idle is None and len(self.workers) >= self.size:
+                        break
+                    if not (pending or draw()):     # a task is drawn only for a free worker
+                        break
                     if idle is None:
-                        if len(self.workers) >= self.size:
-                            break
                         idle = self._spawn()
                     i = pending.popleft()
                     idle.job, idle.buffer = i, bytearray()
                     idle.started = time.monotonic()
                     idle.deadline = idle.started + self.timeout
                     try:
-                        _send(idle.task_fd, (i, tasks[i]))
+                        _send(idle.task_fd, (i, drawn[i]))
                     except OSError:          # the worker is gone: a fresh one takes the job
                         pending.appendleft(i)
                         self._reap(idle, kill=True)

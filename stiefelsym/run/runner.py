@@ -15,7 +15,7 @@ import functools
 import hashlib
 import shlex
 import time
-from typing import Callable, Iterable, Sequence
+from typing import Callable, Iterable, Iterator, Sequence
 
 from stiefelsym.claims import Claim, Registry, Size
 from stiefelsym.methods.hard import hard_case
@@ -302,10 +302,21 @@ def graph_change(claim: Claim, func: Callable, size: Size | None) -> list[dict[s
         return []
     if pair is None:
         return []
-    changes = diff(*pair)
-    if not changes:
-        return [{"where": "", "old": "", "new": "", "old_tex": "", "new_tex": ""}]
-    return [c.to_json() for c in changes]
+    key = (pair[0].digest(), pair[1].digest())
+    text = _CHANGES.get(key)
+    if text is None:
+        changes = diff(*pair)
+        text = _CHANGES[key] = [c.to_json() for c in changes] if changes else \
+            [{"where": "", "old": "", "new": "", "old_tex": "", "new_tex": ""}]
+        while len(_CHANGES) > CHANGES_CACHE_SIZE:
+            del _CHANGES[next(iter(_CHANGES))]
+    return copy.deepcopy(text)
+
+
+#: the changes between two graphs (:func:`graph_change`), keyed by their digests: a function of the two
+#: graphs, so a correction traced with symbolic sizes is read once for all the sizes it is run at
+_CHANGES: dict[tuple[str, str], list[dict[str, str]]] = {}
+CHANGES_CACHE_SIZE = 256
 
 
 def _blank(claim: Claim, size: Size | None, method: str, seed: int | None) -> Result:
@@ -462,8 +473,14 @@ def _execute(claims: list[Claim], seed: int, hard: str | None, timeout: float, i
     func = c.corrections[k].func if k >= 0 else None
     if k >= 0:
         c = c.corrected(k)
-    return _guarded(c, None if n is None else Size(n, r), method, seed, func, hard, in_worker=in_worker,
-                    timeout=timeout)
+    size = None if n is None else Size(n, r)
+    res = _guarded(c, size, method, seed, func, hard, in_worker=in_worker, timeout=timeout)
+    if func is not None:
+        # what a correction changes, read here, where its graph was traced for the run (and in parallel):
+        # the parent reads it itself for a record computed at another size or not computed at all
+        res.change = graph_change(claims[ci], func, size)
+        res._change_at = (n, r)     # type: ignore[attr-defined]  (not a field: never in a record)
+    return res
 
 
 def _settle(outcome: Outcome, task: Task, claims: list[Claim], seed: int, hard: str | None) -> Result:
@@ -481,7 +498,7 @@ def _settle(outcome: Outcome, task: Task, claims: list[Claim], seed: int, hard: 
         res.verdict = "inconclusive" if outcome.kind == "timeout" else "error"
         res.message = outcome.message
         res.seconds = outcome.seconds
-    if k >= 0:
+    if k >= 0 and getattr(res, "_change_at", None) != (n, r):
         res.change = graph_change(c, c.corrections[k].func, size)
     return _finish(res, c, variant, hard)
 
@@ -535,7 +552,7 @@ def verify(claims: list[Claim], *, sizes: list[Size] | None = None, methods: Ite
     from stiefelsym.methods.fixed_size import _describe
     with WorkerPool(execute, workers=min(jobs, len(tasks)), timeout=timeout, memory=memory_bytes,
                     describe=_describe, fork=fork) as pool:
-        run_with_corrections(pool.run, tasks, claims, seed, hard, deliver)
+        run_with_corrections(pool.run, tasks, claims, seed, hard, deliver, streams=True)
     return results
 
 
@@ -560,14 +577,14 @@ def checked_options(seed: int, timeout: float, memory: float | None, hard: str |
 
 def run_with_corrections(run: Callable[[list[Task]], Iterable[tuple[int, Outcome]]], tasks: list[Task],
                          claims: list[Claim], seed: int, hard: str | None,
-                         deliver: Callable[[Result], None]) -> None:
+                         deliver: Callable[[Result], None], streams: bool = False) -> None:
     """Run the plan with ``run`` (local workers or a cluster: it yields (task index, outcome)),
     then every registered correction of each (claim, method) that failed somewhere, at every
     planned size of that claim and method, and of each claim the dimension-free method did not
     prove as printed (a correction proved for all n, r)."""
     failed: dict[tuple[int, str], None] = {}
     corrections: list[Task] = []
-    for i, outcome in _run_shared(run, tasks, claims):
+    for i, outcome in _run_shared(run, tasks, claims, streams):
         res = _settle(outcome, tasks[i], claims, seed, hard)
         deliver(res)
         ci, n, _, m, _ = tasks[i]
@@ -580,49 +597,73 @@ def run_with_corrections(run: Callable[[list[Task]], Iterable[tuple[int, Outcome
         for k in range(len(claims[ci].corrections)):
             corrections += [(ci, n, r, m, k) for n, r in planned]
     if corrections:
-        for i, outcome in _run_shared(run, corrections, claims):
+        for i, outcome in _run_shared(run, corrections, claims, streams):
             deliver(_settle(outcome, corrections[i], claims, seed, hard))
 
 
 def _run_shared(run: Callable[[list[Task]], Iterable[tuple[int, Outcome]]], tasks: list[Task],
-                claims: list[Claim]) -> Iterable[tuple[int, Outcome]]:
+                claims: list[Claim], streams: bool = False) -> Iterable[tuple[int, Outcome]]:
     """(task index, outcome) for every task, in order, with the tasks of a graph that involves no dimension r
     run once per n (:func:`shared_size`): the run at (n, r0) is every run at (n, r), its record copied to
     each r (tasks and outcomes stay one per (claim, size, method, variant), so every budget, record and
-    report is as before)."""
+    report is as before).
+
+    ``streams`` (``run`` draws its tasks from an iterator as its workers come free: the local pool): the
+    runs to make are handed over as they are found, so that looking at the claims' graphs (which traces
+    them, here) is done while the workers compute instead of before they start."""
     units: list[Task] = []
     unit_of: list[int] = []
     where: dict[Task, int] = {}
-    for t in tasks:
-        ci, n, r, m, k = t
-        key = t
-        # only the reviewed catalog's claims are traced here, in the parent, to plan: claim code of
-        # anyone else runs in budgeted workers only (a claim that hangs or sleeps while traced)
-        if n is not None and claims[ci].reviewed:
-            c = claims[ci]
-            shared = shared_size(c.corrected(k) if k >= 0 else c, Size(n, r),
-                                 c.corrections[k].func if k >= 0 else None, screen=True)
-            if shared is not None:
-                key = (ci, n, shared.r, m, k)
-        j = where.get(key)
-        if j is None:
-            j = where[key] = len(units)
-            units.append(key)
-        unit_of.append(j)
-    if len(units) == len(tasks):
-        yield from run(tasks)
-        return
+
+    def found() -> Iterator[Task]:
+        for t in tasks:
+            ci, n, r, m, k = t
+            key = t
+            # only the reviewed catalog's claims are traced here, in the parent, to plan: claim code of
+            # anyone else runs in budgeted workers only (a claim that hangs or sleeps while traced)
+            if n is not None and claims[ci].reviewed:
+                c = claims[ci]
+                shared = shared_size(c.corrected(k) if k >= 0 else c, Size(n, r),
+                                     c.corrections[k].func if k >= 0 else None, screen=True)
+                if shared is not None:
+                    key = (ci, n, shared.r, m, k)
+            j = where.get(key)
+            if j is None:
+                j = where[key] = len(units)
+                units.append(key)
+                unit_of.append(j)
+                yield key
+            else:
+                unit_of.append(j)
+
+    if streams:
+        outcomes = run(found())     # type: ignore[arg-type]  (the local pool takes an iterator)
+    else:
+        for _ in found():
+            pass
+        if len(units) == len(tasks):
+            yield from run(tasks)
+            return
+        outcomes = run(units)
     done: dict[int, Outcome] = {}
     i = 0
-    for j, outcome in run(units):
-        done[j] = outcome
-        while i < len(tasks) and unit_of[i] in done:
+
+    def ready() -> Iterator[tuple[int, Outcome]]:
+        # unit_of is known up to the last task looked at: a later task follows once it is (when the runs
+        # are over every task has been looked at, and its unit is done)
+        nonlocal i
+        while i < len(unit_of) and unit_of[i] in done:
             got = done[unit_of[i]]
             r = tasks[i][2]
             if got.kind == "ok" and isinstance(got.value, Result) and r is not None and got.value.r != r:
                 got = Outcome(got.kind, at_size(got.value, r), got.message, got.seconds)
             yield i, got
             i += 1
+
+    for j, outcome in outcomes:
+        done[j] = outcome
+        yield from ready()
+    yield from ready()
 
 
 def rerun_command(result: Result, hard: str | None = None) -> str:
