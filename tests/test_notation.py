@@ -233,16 +233,22 @@ def wrong_sign(s):
     return {"E": comm(s.Phi, s.A) + comm(s.Phi, s.A)}
 
 
-@pytest.mark.skipif(not hasattr(os, "fork"), reason="needs fork")
-def test_a_corrections_change_read_in_the_worker_is_the_parents_and_bound_to_its_size():
-    from stiefelsym.run import runner
-    from stiefelsym.run.pool import Outcome
-    c = Claim(id="wrong-order-w", paper=("prep",), kind="id", section="2", func=wrong_sign,
+def _wrong_order(cid: str) -> Claim:
+    """The erratum wrong_sign with its correction (the operands of the second commutator swapped)."""
+    c = Claim(id=cid, paper=("prep",), kind="id", section="2", func=wrong_sign,
               sizes=admissible(3, n_min=3, r_min=2, r_max=2), expect="fails", erratum="an order")
 
     @c.correction("the operands of the second commutator swapped")
     def fixed(s):
         return {"E": comm(s.Phi, s.A) + comm(s.A, s.Phi)}
+    return c
+
+
+@pytest.mark.skipif(not hasattr(os, "fork"), reason="needs fork")
+def test_a_corrections_change_read_in_the_worker_is_the_parents_and_bound_to_its_size():
+    from stiefelsym.run import runner
+    from stiefelsym.run.pool import Outcome
+    c = _wrong_order("wrong-order-w")
     forked = [r for r in verify([c], methods=("modular",), sizes=[Size(3, 2)], jobs=2) if r.variant]
     here = [r for r in verify([c], methods=("modular",), sizes=[Size(3, 2)], jobs=1, fork=False) if r.variant]
     assert forked and changes_text(forked[0].change) == changes_text(here[0].change) == "in E: [Φ, A] → [A, Φ]"
@@ -256,12 +262,7 @@ def test_a_corrections_change_read_in_the_worker_is_the_parents_and_bound_to_its
 
 
 def test_registered_correction_records_carry_their_change_and_reports_show_it():
-    c = Claim(id="wrong-order", paper=("prep",), kind="id", section="2", func=wrong_sign,
-              sizes=admissible(3, n_min=3, r_min=2, r_max=2), expect="fails", erratum="an order")
-
-    @c.correction("the operands of the second commutator swapped")
-    def fixed(s):
-        return {"E": comm(s.Phi, s.A) + comm(s.A, s.Phi)}
+    c = _wrong_order("wrong-order")
     results = verify([c], methods=("modular",), sizes=[Size(3, 2)], jobs=1, fork=False)
     corrected = [r for r in results if r.variant is not None]
     assert corrected and corrected[0].verdict == "checked"
