@@ -31,7 +31,10 @@ DEFAULT_TITLE = ("Verification of Fedorov & Jovanović, "
 #: what each verdict means, for a mathematician reading the report
 VERDICT_MEANING = {
     "proved": ("The statement holds identically.  At a size (n, r): exact symbolic "
-               "computation reduced every residual to zero on the constraint set.  "
+               "computation reduced every residual to zero on the constraint set, or, "
+               "beyond the size's symbolic budget, the dimension-free proof of the same "
+               "graph holds there (the record says so); a rank equal to its matrix's full "
+               "size is proved by a nonzero maximal minor at a point.  "
                "At size “all n, r”: a dimension-free computation with the letters "
                "X, Xᵀ, P, Pᵀ, A, … of a free noncommutative algebra proves it for "
                "every n and r at once.  A statement the paper makes only at one r is "
