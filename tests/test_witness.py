@@ -127,3 +127,23 @@ def test_the_computed_and_printed_values_are_read_from_every_rank_certificate(de
     """A rank's certificate names the computed rank in each of its forms (over the function field, over Q for a
     matrix of rational numbers), so an erratum about a number keeps its hand-checkable witness script."""
     assert count_values(detail) == want
+
+
+def test_the_integrity_check_accepts_a_count_whose_witness_is_only_the_small_one():
+    """A refuted count (an erratum about a number) has no witness point: its record's witness is the small
+    witness alone, which `stiefelsym check` recomputes; the honest record passes, a forged value is caught."""
+    from stiefelsym.claims import Size
+    from stiefelsym.run.integrity import check_results
+    from stiefelsym.run.runner import verify
+    from stiefelsym.methods.witness import attach_small_witnesses
+    cat = load_catalog()
+    cid = "adjoint-orbit-regularity"
+    res = [r for r in verify([cat.get(cid)], sizes=[Size(4, 1)], methods=("exact",), seed=0) if not r.variant]
+    assert res[0].verdict == "fails" and attach_small_witnesses(res, {cid: cat.get(cid)}) == 1
+    honest = json.loads(json.dumps(res[0].to_json(), default=str))
+    assert set(honest["witness"]) == {"small"}
+    assert check_results([honest], cat, echo=lambda _: None) == 0
+    forged = json.loads(json.dumps(honest))
+    forged["witness"]["small"]["value"] = 0
+    lines: list[str] = []
+    assert check_results([forged], cat, echo=lines.append) == 1 and "small witness" in lines[0]

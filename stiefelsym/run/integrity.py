@@ -260,7 +260,7 @@ def check_results(records: list[dict], registry: Registry, echo: Callable[[str],
                 bad += 1
                 continue
             small = (r.get("witness") or {}).get("small") if isinstance(r.get("witness"), dict) else None
-            record = dict(r, witness={k: v for k, v in r["witness"].items() if k != "small"}) if small else r
+            record = dict(r, witness={k: v for k, v in r["witness"].items() if k != "small"} or None) if small else r
             edited = _evidence_edits(record, again_fixed.to_json())
             if small is not None and not edited:
                 from stiefelsym.methods.witness import encoded, small_witness
