@@ -77,3 +77,16 @@ def test_the_catalog_claim_of_full_rank_is_proved_at_n_7():
     assert not c.exact_at(6, 3)
     res = run_one(c, Size(6, 3), "auto", 0)
     assert res.verdict == "proved" and res.method == "modular", (res.verdict, res.message)
+
+
+def skew_claimed_full(s):
+    """False at odd r: XᵀP is skew on T*V (XᵀP + PᵀX = 0), so its rank is at most r − 1 when r is odd."""
+    return {"rank": Rank(s.X.T @ s.P, 3, generic=True)}
+
+
+@pytest.mark.parametrize("method", POINTS + ("auto",))
+def test_an_odd_skew_matrix_claimed_of_full_rank_is_not_proved(method):
+    """A careful-looking full-rank claim that the constraints make false: every point of T*V refutes the
+    full size (the rank there is r − 1), so no point proves it."""
+    res = run_one(_claim(skew_claimed_full), Size(4, 3), method, 0)
+    assert res.verdict not in ("proved", "checked", "numeric"), (method, res.verdict, res.certificate)

@@ -148,19 +148,15 @@ def test_a_catalog_erratum_is_still_refuted():
 def test_a_correction_rebuilt_for_each_run_shares_one_dimension_free_attempt(monkeypatch):
     """A correction's claim is a new object at each run: its dimension-free result is found by the claim's id,
     its function and what the method reads of it; a claim that reads differently is attempted again."""
+    from unittest import mock
     import stiefelsym.run.isolate as isolate
-    calls = []
-    real = isolate.run_isolated
-
-    def counted(*a, **kw):
-        calls.append(1)
-        return real(*a, **kw)
-    monkeypatch.setattr(isolate, "run_isolated", counted)
+    spy = mock.Mock(wraps=isolate.run_isolated)
+    monkeypatch.setattr(isolate, "run_isolated", spy)
     c = _claim(dual_gram)
     for n, r in ((4, 2), (5, 3), (6, 2)):
         fresh = dataclasses.replace(c)
         assert fresh is not c and run_one(fresh, Size(n, r), "exact", 0).verdict == "proved"
-    assert len(calls) == 1
+    assert spy.call_count == 1
     other = dataclasses.replace(c, realization="metric")
     run_one(other, Size(4, 2), "exact", 0)
-    assert len(calls) >= 2      # attempted again (the exact chart that follows may fork too)
+    assert spy.call_count >= 2      # attempted again (the exact chart that follows may fork too)
