@@ -312,7 +312,7 @@ def psi_and_gram_give_ddim_functions(s):
 
 #: beyond n = 5, the function-field rank of ad_Phi (the upper side of 2l) takes at most 0.2 s up to r = 2
 #: at n = 6, 7; at (6, 3) 0.8 s alone, and above its seconds run out (the exact method falls back to random points)
-AD_PHI_EXACT_MAX_R = {6: 2, 7: 2}
+AD_PHI_EXACT_MAX_R = {6: 3, 7: 2}
 
 
 def ad_matrix(s, mu):

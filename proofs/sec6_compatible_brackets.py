@@ -581,7 +581,7 @@ def _FF_functions(count, n):
 
 
 @claim("cif-completeness", paper=("CIF", "FF", "BB", "2l"), kind="dim", exact_max_n=3,
-       exact_max_r={5: 2, 6: 1, 7: 1},
+       exact_max_r={4: 2, 5: 2, 6: 1, 7: 1},
        equivariance="the rank of the differentials of SO(n)-invariant functions on T*V is invariant under O(n); the Jacobian only lists them in the coordinates of R^{2nr}",
        statement=r"\ddim(\mathfrak F+\mathfrak B)=\dim V_{n,r}-l,\quad \mathfrak F=\{\tr(\lambda\Phi+XX^T)^k\},\ "
                  r"\mathfrak B=\{\tr(\Psi+\mu B)^k\}")
@@ -593,7 +593,7 @@ def cif_set_is_complete(s):
                                 generic=True, meaning="dim V - l + r(r+1): independent on T*V, plus the constraints")}
 
 
-@claim("com-completeness", paper=("COM", "perelomov", "BB"), kind="dim", exact_max_n=2,
+@claim("com-completeness", paper=("COM", "perelomov", "BB"), kind="dim", exact_max_n=2, exact_max_r={3: 2, 4: 1},
        equivariance="the rank of the differentials of the functions on T*V is invariant under (X, P, A) -> (gX, gP, gAg^T), which maps the set of functions to itself; the Jacobian only lists them in the coordinates of R^{2nr}",
        statement=r"\ddim(\mathfrak F+\mathfrak B)=\dim V_{n,r},\quad \mathfrak F=\{\tr(\lambda(PX^T-XP^T)+XX^T-\lambda^2A)^k\},\ "
                  r"\mathfrak B=\{\tr(\Psi+\mu B)^k\}")

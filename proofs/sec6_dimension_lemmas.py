@@ -248,7 +248,7 @@ def lambda_forms(s, x, A):
 
 
 @claim("pencil-kernel-ker-a2", paper=("KER", "A2", "L7", "L8"), kind="dim",
-       sizes=admissible(5), exact_max_n=3, exact_max_r={5: 3},
+       sizes=admissible(5), exact_max_n=3, exact_max_r={4: 3, 5: 3},
        equivariance="the point is built from the claim's own parameters (no chart coordinate)",
        statement=r"\ker\Lambda_1(h+v)=so(r)_{h_1}\oplus Sym(r)\oplus gl(n-r),\quad "
                  r"\dim\{z\in\ker\Lambda_1\mid\Lambda_{1,-1}(z,\ker\Lambda_1)=0\}=n\quad (h=\mathrm{diag}(h_1,0))")
@@ -344,7 +344,7 @@ def l5_l6_matrix(s, printed):
 
 
 @claim("pencil-l5-l6", paper=("L5", "L6"), kind="dim",
-       sizes=admissible(5, r_max=3), equivariance="the system is built from the claim's own parameters (no chart coordinate)",
+       sizes=admissible(5, r_max=3), exact_max_n=7, equivariance="the system is built from the claim's own parameters (no chart coordinate)",
        fails_at=lambda n, r: r >= 3,
        erratum="""The proof of Lemma LEMA2 says that the solutions of (L5), (L6) within so(r)_{h1} ⊕ Sym(r)
        form an r-dimensional space.  With (L6) as printed, [A1, η1] ∈ so(r,C)^⊥ = Sym(r), the skew matrix
@@ -392,7 +392,7 @@ def casimir_gradient_rows(s, x, A):
 
 
 @claim("casimirs-complete-on-leaf", paper=("LEMA2", "central", "dimension"), kind="dim",
-       sizes=admissible(5), exact_max_n=3, equivariance=EQUIVARIANCE_XA,
+       sizes=admissible(5), exact_max_n=3, exact_max_r={4: 1}, equivariance=EQUIVARIANCE_XA,
        statement=r"\rank\{d f|_{T_x\mathcal O}: f\in\mathcal F\}=l=\tfrac12\dim\mathcal O,\quad x=\Theta(X,P)\ \text{generic}")
 def casimirs_complete_on_leaf(s):
     """Lemma LEMA2: among the functions (central) there are l = ½(dimension) independent on a generic symplectic leaf 𝒪 ⊂ Θ(T*V) (the rank of df restricted to T_x𝒪 = Λ1(x)(gl(n)))."""
@@ -447,7 +447,7 @@ def torus_values(t, with_casimirs=True):
 
 
 @claim("neumann-torus-dimension", paper=("NEUMANN", "dim_fol", "torus"), kind="dim",
-       sizes=admissible(5), exact_max_n=3, equivariance=EQUIVARIANCE_XA,
+       sizes=admissible(5), exact_max_n=3, exact_max_r={4: 1}, equivariance=EQUIVARIANCE_XA,
        statement=r"2\dim V_{n,r}-\rank d\big(\Theta^*\mathcal F,\Psi\big)=\tfrac12\Big(2r(n-r)+\tfrac{r(r-1)}2-"
                  r"\left[\tfrac r2\right]\Big)+\left[\tfrac r2\right]")
 def neumann_torus_dimension(s):

@@ -155,7 +155,7 @@ def neumann_flows_coincide_on_psi_zero(s):
 # -- Theorem NEUMANN2: the kernel of Λ1 on Θ(Ψ⁻¹(0)) ------------------------------------------------
 
 @claim("neumann2-kernel", paper=("NEUMANN2", "LEMA1", "KER"), kind="dim",
-       sizes=admissible(5), exact_max_n=3, exact_max_r={5: 5, 6: 2, 7: 2},
+       sizes=admissible(5), exact_max_n=4, exact_max_r={5: 5, 6: 2, 7: 2},
        exact_corank={6: 2, 7: 1},
        equivariance=EQUIVARIANCE_X,
        statement=r"(X_0,P_0)\in\Psi^{-1}(0)\ \text{generic},\ h=\Phi(X_0,P_0),\ v=X_0X_0^T:\quad "

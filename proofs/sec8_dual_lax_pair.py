@@ -454,7 +454,7 @@ def cone_equation(s, V, b):
 
 
 @claim("tangency", paper=("tangency", "cone0"), kind="geo",
-       sizes=admissible(n_max=5), exact_max_n=3, exact_max_r={4: 4, 5: 5, 6: 3, 7: 3},
+       sizes=admissible(n_max=5), exact_max_n=3, exact_max_r={4: 4, 5: 5, 6: 4, 7: 3},
        statement=r"\det(V^TBV)=\sum_I|B|^I_IG_I^2,\qquad V^TB\,v=\det(V^TBV)\,E_1,\ \ "
                  r"\langle v,Bv\rangle=\det(V^TBV)\,\mathrm{adj}(V^TBV)_{11},\ \ v=V\,\mathrm{adj}(V^TBV)E_1")
 def planes_tangent_to_a_cone(s):
@@ -752,7 +752,7 @@ def dual_invariants_are_manakov_integrals_for_r_n(s):
 # -- the Chasles cones are real ------------------------------------------------------------------------
 
 @claim("chasles-cones-real", paper=("Gen_Chasles", "2r-integrals", "conf0"), kind="geo",
-       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 3},
+       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 3, 4: 1},
        statement=r"\lambda^r\,\mathcal I_{2r}(\lambda)=\det\big(\lambda\mathbf I_n-Q(A-PP^T)Q\big),\ Q=\mathbf I_n-XX^T"
                  r"\ \Rightarrow\ c_1,\dots,c_{n-r}\in\mathbb R\ \text{for real}\ (X,P)")
 def chasles_cones_are_real(s):

@@ -131,3 +131,50 @@ def test_the_claims_raised_to_r_n_are_proved_there_and_a_corrupted_claim_refuted
     bad = run_exact(_claim(_reflections_forget_S_on_P if "reflections" in cid else
                            _noether_of_the_whole_phi if "noether" in cid else _manakov_lax_wrong_b), n, r, 0)
     assert bad.verdict == "fails", (bad.verdict, bad.message)
+
+
+# -- dimension statements whose function-field rank is cheap at a few more sizes (measured: well under a
+# second each), and chasles-cones-real at (4,1) ------------------------------------------------------
+
+def _shifted(claim, by):
+    """The claim with every generic Rank's expected value moved by ``by`` (a wrong printed dimension)."""
+    import dataclasses
+
+    from stiefelsym.ir.statements import Rank
+
+    def func(s):
+        out = claim.func(s)
+        return {k: dataclasses.replace(v, expected=v.expected + by) if isinstance(v, Rank) else v
+                for k, v in out.items()}
+    func.__doc__ = claim.func.__doc__
+    return dataclasses.replace(claim, id=f"t-{claim.id}-{by:+d}", func=func, corrections=[])
+
+
+@pytest.mark.parametrize("cid,n,r", [("com-completeness", 4, 1), ("pencil-kernel-ker-a2", 4, 2),
+                                     ("neumann2-kernel", 4, 3), ("cif-completeness", 4, 2),
+                                     ("casimirs-complete-on-leaf", 4, 1), ("pencil-l5-l6", 7, 2)])
+def test_a_raised_dimension_is_proved_two_sided_and_a_wrong_one_refuted(cid, n, r):
+    c = load_catalog().get(cid)
+    assert c.exact_at(n, r)
+    res = run_exact(c, n, r, 0)
+    assert res.verdict == "proved", (res.verdict, res.message)
+    for by in (-1, 1):      # one below: a rank at a point refutes it; one above: the function-field rank does
+        bad = run_exact(_shifted(c, by), n, r, 0)
+        assert bad.verdict == "fails", (by, bad.verdict, bad.message)
+
+
+def test_the_chasles_cones_are_proved_at_4_1_and_a_wrong_sign_refuted():
+    import stiefelsym.proofs.sec8_dual_lax_pair as d
+
+    c = load_catalog().get("chasles-cones-real")
+    assert c.exact_at(4, 1)
+    assert run_exact(c, 4, 1, 0).verdict == "proved"
+
+    def plus_pp(s):
+        """λ^r𝓘_{2r}(λ) against det(λI − Q(A + PPᵀ)Q): the sign of PPᵀ flipped."""
+        Q = s.In - s.X @ s.X.T
+        M = Q @ (s.A + s.P @ s.P.T) @ Q
+        integrals, _ = d.spectral_integrals(s, s.lam)
+        return {"charpoly": s.lam * integrals[s.r] - d.det_matrix(s, s.scalar_matrix(s.lam, s.n, "n") - M)}
+    res = run_exact(_claim(plus_pp), 4, 1, 0)
+    assert res.verdict == "fails", (res.verdict, res.message)
