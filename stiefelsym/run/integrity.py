@@ -183,6 +183,61 @@ def missing_runs(records: list[dict], registry: Registry, meta: dict) -> list[st
     return out
 
 
+def _where_run(r: dict) -> str:
+    """How :func:`unstated_runs` names a record."""
+    return (f"{r.get('claim')} ({r.get('n')},{r.get('r')}) {r.get('method')}"
+            + (f" [{r['variant']}]" if r.get("variant") else ""))
+
+
+def unstated_runs(records: list[dict], registry: Registry, meta: dict | None) -> list[str]:
+    """See :func:`unstated_records`: what is wrong with each."""
+    return [why for _, why in unstated_records(records, registry, meta)]
+
+
+def unstated_records(records: list[dict], registry: Registry, meta: dict | None) -> list[tuple[int, str]]:
+    """The records at a size their claim is not stated for, or (with the file's ``meta``) at a size its
+    command did not plan for that claim: a verdict is a verdict of the claim's statement, which says at
+    which sizes it is made (``verify`` refuses a size outside it), so a record elsewhere (a run of the same
+    graph under a wider statement, spliced in) would report the claim as failing, or holding, where it
+    says nothing; and a file is the whole run of its command, no more than no less (:func:`missing_runs`)."""
+    from stiefelsym.run.runner import _sizes_for
+    out = []
+    planned: dict[str, set | None] = {}
+    for i, r in enumerate(records):
+        cid, n, rr = r.get("claim"), r.get("n"), r.get("r")
+        if cid not in registry or n is None:
+            continue                    # refused elsewhere, or the dimension-free record (no size)
+        claim = registry.get(cid)
+        where = _where_run(r)
+        try:
+            stated = type(n) is int and type(rr) is int and bool(claim.sizes.admits(n, rr))
+        except Exception as exc:    # noqa: BLE001 - the statement cannot say: not a size of it
+            out.append((i, f"{where}: whether the claim is stated at this size cannot be read "
+                       f"({type(exc).__name__}: {exc})"))
+            continue
+        if not stated:
+            out.append((i, f"{where}: a record at a size the claim is not stated for (its statement: "
+                       f"{getattr(claim.sizes, 'describe', lambda: 'its declared sizes')()}); verify refuses it"))
+            continue
+        if meta is None:
+            continue
+        if cid not in planned:
+            try:
+                max_n, listed = meta.get("max_n"), meta.get("sizes")
+                sizes: list[Size] | None = None
+                if max_n is not None:
+                    sizes = [Size(a, b) for a in range(1, int(max_n) + 1) for b in range(1, a + 1)]
+                elif listed:
+                    sizes = [Size(*(int(x) for x in str(t).split(","))) for t in listed]
+                planned[cid] = {(z.n, z.r) for z in _sizes_for(claim, sizes)}
+            except Exception:   # noqa: BLE001 - missing_runs says why the planned runs cannot be listed
+                planned[cid] = None
+        if planned[cid] is not None and (n, rr) not in planned[cid]:
+            out.append((i, f"{where}: a record at a size its command did not plan for this claim "
+                       f"({meta.get('command')!r})"))
+    return out
+
+
 def check_results(records: list[dict], registry: Registry, echo: Callable[[str], None] = print,
                   rerun: bool = True, hard: str | None = None, meta: dict | None = None) -> int:
     """Re-trace and re-check every record; the number of records that do not hold up.  With
@@ -210,6 +265,13 @@ def check_results(records: list[dict], registry: Registry, echo: Callable[[str],
         for p in missing_runs(records, registry, meta):
             echo(f"REJECTED {p}")
             bad += 1
+    unstated = unstated_records(records, registry, meta)
+    for _, p in unstated:
+        echo(f"REJECTED {p}")
+        bad += 1
+    if unstated:        # (each is rejected once: not run again below)
+        out = {i for i, _ in unstated}
+        records = [r for i, r in enumerate(records) if i not in out]
     free_done: dict[str, Any] = {}
     for r in records:
         cid, n, rr = r.get("claim"), r.get("n"), r.get("r")
