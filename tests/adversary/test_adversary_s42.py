@@ -1,0 +1,62 @@
+"""Round 16 (tests/adversary/README.md, the "Round 16" table): forged and spliced results files under
+`stiefelsym check` and `stiefelsym report`.  As before every run is the CLI in a fresh process, and each test
+asserts the CORRECT outcome."""
+import json
+import os
+
+from adversary_cli import HERE, cli
+
+UNSTATED = "s42_unstated_size.py"
+
+
+def _records(folder):
+    return json.loads((folder / "results.json").read_text(encoding="utf-8"))
+
+
+def _spliced(tmp_path, narrow, record, name):
+    """The narrow run's results file with ``record`` (a genuine record of another run) added."""
+    data = json.loads(json.dumps(narrow))
+    data["results"].append(record)
+    folder = tmp_path / name
+    folder.mkdir()
+    (folder / "results.json").write_text(json.dumps(data), encoding="utf-8")
+    return folder
+
+
+def test_a_record_at_a_size_the_claim_does_not_state_is_refused(tmp_path):
+    """XXᵀ = I_n stated at r = n only: a genuine `fails` at (3,1) of the same claim id stated at every r (the same
+    graph, the same digest, so running it again agrees) spliced into the results of its run at (3,3).  Before:
+    `check` accepted the file (2 records checked, 0 rejected) and `report` wrote "the statement as printed fails at
+    every computed size with r = 1" for a statement made at r = n only.  Now both refuse the record, as `verify`
+    refuses the size; so are a true `proved` at a size the statement leaves out ((2,2) of a claim stated for
+    n >= 3) and a record at a stated size its command did not plan ((4,2), the command asked for (3,3))."""
+    narrow_dir, wide_dir = tmp_path / "narrow", tmp_path / "wide"
+    run = cli("verify", "--claims", str(HERE / UNSTATED), "--size", "3,3", "--method", "exact", "--jobs", "1",
+              "--report-dir", str(narrow_dir))
+    assert run.returncode == 0, (run.stdout, run.stderr)
+    assert "adv-s42-square-only (3,3) exact: proved" in run.stdout, run.stdout
+    # outside its statement the size is refused by verify
+    refused = cli("verify", "adv-s42-square-only", "--claims", str(HERE / UNSTATED), "--size", "3,1",
+                  "--method", "exact", "--jobs", "1")
+    assert refused.returncode != 0 and "outside" in refused.stderr, (refused.stdout, refused.stderr)
+    wide = cli("verify", "--claims", str(HERE / UNSTATED), "--size", "3,1", "--size", "2,2", "--size", "4,2",
+               "--method", "exact", "--jobs", "1", "--report-dir", str(wide_dir),
+               env=dict(os.environ, STIEFELSYM_TEST_WIDE="1"))
+    assert "adv-s42-square-only (3,1) exact: fails" in wide.stdout, (wide.stdout, wide.stderr)
+    narrow = _records(narrow_dir)
+    recs = {(r["claim"], r["n"], r["r"]): r for r in _records(wide_dir)["results"] if r["n"] is not None}
+    control = cli("check", str(narrow_dir / "results.json"))
+    assert control.returncode == 0, (control.stdout, control.stderr)
+    for key, verdict, why in ((("adv-s42-square-only", 3, 1), "fails", "not stated for"),
+                              (("adv-s42-from-three", 2, 2), "proved", "not stated for"),
+                              (("adv-s42-from-three", 4, 2), "proved", "did not plan")):
+        record = recs[key]
+        assert record["verdict"] == verdict, record
+        folder = _spliced(tmp_path, narrow, record, f"{key[0]}-{key[1]}{key[2]}")
+        checked = cli("check", str(folder / "results.json"))
+        assert checked.returncode == 1, (key, checked.stdout, checked.stderr)
+        assert f"REJECTED {key[0]} ({key[1]},{key[2]}) exact: a record at a size" in checked.stdout, checked.stdout
+        assert why in checked.stdout, checked.stdout
+        report = cli("report", "--report-dir", str(folder))
+        assert report.returncode != 0 and "refused" in report.stderr, (key, report.stdout, report.stderr)
+        assert not (folder / "verification.md").exists()
