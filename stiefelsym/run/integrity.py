@@ -180,7 +180,40 @@ def missing_runs(records: list[dict], registry: Registry, meta: dict) -> list[st
             if not found:
                 where = "all n, r" if size is None else f"({size[0]},{size[1]})"
                 out.append(f"{cid} {where} {m}: no record of a run its command planned ({meta.get('command')!r})")
+    # ... and a claim the command selected has its records, however many it has: a claim left out whole (its
+    # erratum with it) is a file that is not the whole run of its command either
+    for cid in selected_claims(meta, registry):
+        if cid in have:
+            continue
+        if cid not in registry:
+            out.append(f"{cid}: the command names it, and it is no claim of the catalog or the claims files")
+            continue
+        try:
+            planned = planned_runs(registry.get(cid), meta)
+        except Exception as exc:    # noqa: BLE001 - the claim's statement cannot say which sizes were planned
+            out.append(f"{cid}: the runs its command planned cannot be listed ({type(exc).__name__}: {exc})")
+            continue
+        if planned:
+            out.append(f"{cid}: no record of any of the {len(planned)} runs its command planned "
+                       f"({meta.get('command')!r})")
     return out
+
+
+def selected_claims(meta: dict, registry: Registry) -> list[str]:
+    """The claims a results file's command selected: the ids it names (``stiefelsym verify ID ... --option``),
+    else every claim of the registry its claims files give (what ``verify`` runs when it names none)."""
+    import shlex
+    try:
+        words = shlex.split(str(meta.get("command") or ""))
+    except ValueError:
+        words = []
+    ids: list[str] = []
+    if words[:2] == ["stiefelsym", "verify"]:
+        for w in words[2:]:
+            if w.startswith("-"):
+                break
+            ids.append(w)
+    return ids or [c.id for c in registry]
 
 
 def _where_run(r: dict) -> str:

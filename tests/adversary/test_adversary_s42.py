@@ -60,3 +60,33 @@ def test_a_record_at_a_size_the_claim_does_not_state_is_refused(tmp_path):
         report = cli("report", "--report-dir", str(folder))
         assert report.returncode != 0 and "refused" in report.stderr, (key, report.stdout, report.stderr)
         assert not (folder / "verification.md").exists()
+
+
+def test_a_claim_left_out_whole_is_refused(tmp_path):
+    """The other half of "a results file is the whole run of its command": a claim the command selected whose
+    records are all taken out (its `fails` with them) left the file acceptable to `check` and `report` (the
+    planned runs were listed only for the claims the file has records of); now both refuse it.  The command's
+    claims are the ids it names, else every claim of its claims files."""
+    folder = tmp_path / "run"
+    run = cli("verify", "--claims", str(HERE / UNSTATED), "--size", "3,3", "--size", "3,1", "--method", "exact",
+              "--jobs", "1", "--report-dir", str(folder))
+    assert "adv-s42-from-three (3,1) exact: proved" in run.stdout, (run.stdout, run.stderr)
+    data = _records(folder)
+    assert {r["claim"] for r in data["results"]} == {"adv-s42-square-only", "adv-s42-from-three"}
+    assert cli("check", str(folder / "results.json"), "--no-rerun").returncode == 0
+    data["results"] = [r for r in data["results"] if r["claim"] != "adv-s42-square-only"]
+    forged = tmp_path / "forged"
+    forged.mkdir()
+    (forged / "results.json").write_text(json.dumps(data), encoding="utf-8")
+    checked = cli("check", str(forged / "results.json"), "--no-rerun")
+    assert checked.returncode == 1, (checked.stdout, checked.stderr)
+    assert "REJECTED adv-s42-square-only: no record of any of the 1 runs its command planned" in checked.stdout, \
+        checked.stdout
+    report = cli("report", "--report-dir", str(forged))
+    assert report.returncode != 0 and "refused" in report.stderr, (report.stdout, report.stderr)
+    # a command that names its claims plans those only
+    named = tmp_path / "named"
+    run = cli("verify", "adv-s42-from-three", "--claims", str(HERE / UNSTATED), "--size", "3,3", "--method", "exact",
+              "--jobs", "1", "--report-dir", str(named))
+    assert run.returncode == 0, (run.stdout, run.stderr)
+    assert cli("check", str(named / "results.json"), "--no-rerun").returncode == 0
