@@ -90,3 +90,28 @@ def test_a_claim_left_out_whole_is_refused(tmp_path):
               "--jobs", "1", "--report-dir", str(named))
     assert run.returncode == 0, (run.stdout, run.stderr)
     assert cli("check", str(named / "results.json"), "--no-rerun").returncode == 0
+
+
+NONZERO = "s42_nonzero_statements.py"
+WRONG_BESIDE = ("adv-s42-nonzero-wrong-count", "adv-s42-nonzero-rank-above-full", "adv-s42-nonzero-wrong-generic-rank")
+
+
+def test_a_rank_or_count_beside_a_nonvanishing_residual_is_not_passed():
+    """expect="nonzero" with a rank or a count: before, exact, modular, rational, auto (and ball for the rank)
+    said `proved` from the nonzero residual alone, whatever the rank or count.  Now every fixed-size method
+    refuses the claim (error), at every size, and the residual-only controls keep their verdicts."""
+    got: dict = {}
+    for methods in (("--method", "exact", "--method", "modular", "--method", "rational"),
+                    ("--method", "float", "--method", "ball"), ("--method", "auto")):
+        run = cli("verify", "--claims", str(HERE / NONZERO), "--size", "2,2", "--size", "3,2", "--jobs", "1", *methods)
+        for line in run.stdout.splitlines():
+            parts = line.split()
+            if len(parts) >= 4 and parts[0].startswith("adv-s42-") and parts[1].startswith("("):
+                got.setdefault(parts[0], {})[(parts[1], parts[2].rstrip(":"))] = parts[3]
+    for cid in WRONG_BESIDE:
+        assert len(got.get(cid, {})) == 10, (cid, got.get(cid))     # auto takes exact here
+        assert set(got[cid].values()) == {"error"}, (cid, got[cid])
+    only = got["adv-s42-nonzero-only-residuals"]
+    assert set(only.values()) == {"proved", "numeric"} and only[("(3,2)", "modular")] == "proved", only
+    vanishing = got["adv-s42-nonzero-vanishing"]
+    assert set(vanishing.values()) == {"fails"}, vanishing
