@@ -180,6 +180,7 @@ def missing_runs(records: list[dict], registry: Registry, meta: dict) -> list[st
             if not found:
                 where = "all n, r" if size is None else f"({size[0]},{size[1]})"
                 out.append(f"{cid} {where} {m}: no record of a run its command planned ({meta.get('command')!r})")
+    out += _missing_corrections(records, registry, meta)
     # ... and a claim the command selected has its records, however many it has: a claim left out whole (its
     # erratum with it) is a file that is not the whole run of its command either
     for cid in selected_claims(meta, registry):
@@ -196,6 +197,53 @@ def missing_runs(records: list[dict], registry: Registry, meta: dict) -> list[st
         if planned:
             out.append(f"{cid}: no record of any of the {len(planned)} runs its command planned "
                        f"({meta.get('command')!r})")
+    return out
+
+
+def _missing_corrections(records: list[dict], registry: Registry, meta: dict) -> list[str]:
+    """The runs of registered corrections that the command made and the file has no record of
+    (:func:`stiefelsym.run.runner.run_with_corrections`): every correction of a claim that failed somewhere under
+    a planned method, at every size that method ran the claim at; every correction of a claim the dimension-free
+    method did not prove, for every n, r.  A record's planned method is its own, or ``auto`` when the command
+    planned auto and not that method (auto records the method it chose)."""
+    methods = list(meta.get("methods") or ["auto"])
+
+    def planned_method(r: dict) -> str:
+        m = r.get("method")
+        return m if m in methods or m == "free" or "auto" not in methods else "auto"
+    printed: dict[str, list[dict]] = {}
+    variants: dict[tuple, set] = {}
+    for r in records:
+        cid = r.get("claim")
+        if r.get("variant"):
+            size = None if r.get("n") is None else (r.get("n"), r.get("r"))
+            variants.setdefault((cid, r["variant"]), set()).add((size, planned_method(r)))
+        else:
+            printed.setdefault(cid, []).append(r)
+    out = []
+    for cid, recs in printed.items():
+        if cid not in registry:
+            continue
+        corrections = [c.description for c in registry.get(cid).corrections]
+        if not corrections:
+            continue
+        needed: set = set()
+        failed = {planned_method(r) for r in recs if r.get("n") is not None and r.get("verdict") == "fails"}
+        for r in recs:
+            if r.get("n") is not None and planned_method(r) in failed:
+                needed.add(((r.get("n"), r.get("r")), planned_method(r)))
+            if r.get("n") is None and r.get("verdict") != "proved":
+                needed.add((None, "free"))
+        for desc in corrections:
+            have = variants.get((cid, desc), set())
+            for size, m in sorted(needed, key=lambda x: (x[0] or (0, 0), x[1])):
+                # auto records the method it chose, which may be one the command also planned by name
+                if (size, m) not in have and not (m == "auto" and any(z == size for z, _ in have)):
+                    where = "all n, r" if size is None else f"({size[0]},{size[1]})"
+                    why = ("the dimension-free method did not prove the claim as printed" if size is None else
+                           f"the claim as printed failed under {m}")
+                    out.append(f"{cid} [{desc}] {where} {m}: no record of the run of this correction its command "
+                               f"made ({why})")
     return out
 
 

@@ -115,3 +115,24 @@ def test_a_rank_or_count_beside_a_nonvanishing_residual_is_not_passed():
     assert set(only.values()) == {"proved", "numeric"} and only[("(3,2)", "modular")] == "proved", only
     vanishing = got["adv-s42-nonzero-vanishing"]
     assert set(vanishing.values()) == {"fails"}, vanishing
+
+
+def test_the_runs_of_a_correction_taken_out_are_refused(tmp_path):
+    """A correction runs at every size its claim was run at by a method under which the claim failed (and for
+    every n, r where the dimension-free method did not prove it): its failing records taken out, `check` accepted
+    the file (the report, to its credit, said "not verified" there); now `check` and `report` refuse it."""
+    folder = tmp_path / "run"
+    run = cli("verify", "--claims", str(HERE / "s42_correction_runs.py"), "--method", "exact", "--jobs", "1",
+              "--report-dir", str(folder))
+    assert "adv-s42-corrected [constant dropped] (3,2) exact: fails" in run.stdout, (run.stdout, run.stderr)
+    assert cli("check", str(folder / "results.json"), "--no-rerun").returncode == 0
+    data = _records(folder)
+    data["results"] = [r for r in data["results"] if not (r.get("variant") and r["verdict"] == "fails")]
+    forged = tmp_path / "forged"
+    forged.mkdir()
+    (forged / "results.json").write_text(json.dumps(data), encoding="utf-8")
+    checked = cli("check", str(forged / "results.json"), "--no-rerun")
+    assert checked.returncode == 1, (checked.stdout, checked.stderr)
+    assert "REJECTED adv-s42-corrected [constant dropped] (3,2) exact: no record of the run" in checked.stdout
+    report = cli("report", "--report-dir", str(forged))
+    assert report.returncode != 0 and "refused" in report.stderr, (report.stdout, report.stderr)
