@@ -37,3 +37,10 @@ def nonzero_only_residuals(s):
 def nonzero_vanishing(s):
     """Control: XᵀP + PᵀX does not vanish (false: it is a constraint of T*V)."""
     return {"XtP": s.X.T @ s.P + s.P.T @ s.X}
+
+
+@claim("adv-s42-nonzero-rank-alone", paper="adv", kind="dim", sizes=SIZES, expect="nonzero")
+def nonzero_rank_alone(s):
+    """A rank alone, expected not to vanish: XᵀP + PᵀX has generic rank r (false).  Before: `fails` under every
+    fixed-size method whatever the rank (no residual: "vanished ... probability <= 0")."""
+    return {"rank": Rank(s.X.T @ s.P + s.P.T @ s.X, s.r, generic=True)}

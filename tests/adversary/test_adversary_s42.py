@@ -94,6 +94,8 @@ def test_a_claim_left_out_whole_is_refused(tmp_path):
 
 NONZERO = "s42_nonzero_statements.py"
 WRONG_BESIDE = ("adv-s42-nonzero-wrong-count", "adv-s42-nonzero-rank-above-full", "adv-s42-nonzero-wrong-generic-rank")
+#: a kind="dim" claim: float and ball do not run it
+ALONE = "adv-s42-nonzero-rank-alone"
 
 
 def test_a_rank_or_count_beside_a_nonvanishing_residual_is_not_passed():
@@ -111,6 +113,7 @@ def test_a_rank_or_count_beside_a_nonvanishing_residual_is_not_passed():
     for cid in WRONG_BESIDE:
         assert len(got.get(cid, {})) == 10, (cid, got.get(cid))     # auto takes exact here
         assert set(got[cid].values()) == {"error"}, (cid, got[cid])
+    assert len(got.get(ALONE, {})) == 6 and set(got[ALONE].values()) == {"error"}, got.get(ALONE)
     only = got["adv-s42-nonzero-only-residuals"]
     assert set(only.values()) == {"proved", "numeric"} and only[("(3,2)", "modular")] == "proved", only
     vanishing = got["adv-s42-nonzero-vanishing"]
