@@ -141,6 +141,10 @@ class SizeSpec:
             parts.append(f"r >= {self.r_min}")
         elif self.r_max is not None:
             parts.append(f"r <= {self.r_max}")
+        if self.r_is_n:
+            parts.append("r = n")
+        if self.r_in:
+            parts.append(" or ".join(f"r = {v}" for v in self.r_in))
         text = ", ".join(parts) or "every n >= r >= 1"
         if self.condition:
             text += f" ({self.condition})"

@@ -1017,7 +1017,7 @@ def report(results_file: Path | None, report_dir: Path | None, claims_files: tup
     except (OSError, UnicodeDecodeError, ValueError, KeyError, TypeError, AttributeError) as exc:
         raise InputError(f"{source} is not a stiefelsym results file: {_one_line(exc)}") from None
     from stiefelsym.run.integrity import (MAX_N_CHECKED, certificate_binding_problems, certificate_problems, claim_field_edits,
-                            missing_runs, size_method_problems)
+                            missing_runs, size_method_problems, unstated_runs)
     from stiefelsym.methods.hard import HARD_CASES
     from stiefelsym.results import meta_problems
     bad_meta = meta_problems(meta, _runner().METHODS, tuple(HARD_CASES), MAX_N_CHECKED)
@@ -1056,6 +1056,10 @@ def report(results_file: Path | None, report_dir: Path | None, claims_files: tup
     if unbound:
         raise InputError(f"{source}: refused, {len(unbound)} proof(s) for every n, r whose certificate is not their "
                          f"claim's: {unbound[0]} (`stiefelsym check` re-checks every record)")
+    unstated = unstated_runs([r.to_json() for r in results], registry, meta)
+    if unstated:
+        raise InputError(f"{source}: refused, {len(unstated)} record(s) of runs its claim's statement or its command did "
+                         f"not make: {unstated[0]} (a results file is the whole run of its command)")
     missing = missing_runs([r.to_json() for r in results], registry, meta)
     if missing:
         raise InputError(f"{source}: refused, {len(missing)} run(s) its command planned have no record: {missing[0]} "

@@ -706,9 +706,46 @@ def _reviewed_function(claim: Claim, func: Callable) -> bool:
     return func is claim.func or any(func is c.func for c in claim.corrections)
 
 
+#: the statements of a graph that are not residuals: a rank and a count hold or not, they do not vanish
+NOT_RESIDUALS = {"rank": "a rank", "count": "a count"}
+
+
+def nonzero_statements(claim: Claim, n: int, r: int, func: Callable | None = None) -> str:
+    """Why a claim that expects its checks NOT to vanish (expect="nonzero") cannot be run: its graph holds a
+    statement that is no residual (a rank, a count), which that expectation has nothing to say about (before,
+    the methods decided such a claim by its residuals alone and passed over the rank or count: a wrong count
+    beside a nonzero residual was `proved`).  "" when the claim expects its checks to hold, or has residuals
+    only, or does not trace at (n, r) (its run says why)."""
+    if claim.expect != "nonzero":
+        return ""
+    cons = REALIZATIONS[claim.realization or "standard"]
+    try:
+        ops = set(compile_claim(func or claim.func, n, r, (cons.name, cons.build)).ops)
+    except Exception:   # noqa: BLE001 - the run itself meets what does not trace
+        return ""
+    found = [what for op, what in NOT_RESIDUALS.items() if op in ops]
+    if not found:
+        return ""
+    return (f"the claim expects its checks not to vanish (expect='nonzero'), and it states {' and '.join(found)}, "
+            "which is no residual: refused (state the rank or count in a claim of its own, which says it holds)")
+
+
+def _refused_nonzero(claim: Claim, n: int, r: int, method: str, seed: int | None, func: Callable | None) -> Result | None:
+    """The ``error`` of :func:`nonzero_statements` as the method's result, or None."""
+    why = nonzero_statements(claim, n, r, func)
+    if not why:
+        return None
+    res = _base_result(claim, n, r, method, seed)
+    res.verdict, res.message = "error", why
+    return res
+
+
 def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = None,
               time_budget: float | None = EXACT_TIME_LIMIT) -> Result:
     func = func or claim.func
+    refused = _refused_nonzero(claim, n, r, "exact", None, func)
+    if refused is not None:
+        return refused
     if PLANS and _LOAN is None and not _MUTATION_ANALYSIS:
         plan = _PLANS.get((id(claim), id(func), n, r))
         if plan is not None and plan.claim is claim and plan.func is func and plan.state == _plan_state(claim):
@@ -1792,6 +1829,9 @@ def run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callabl
     of a float verdict), at least ``least`` of them (``trials`` fixes the number instead: a witness
     search, whose passes claim no more than their bound).  Hard cases are evaluated at POINTS_MIN
     points (or ``trials``), with no bound."""
+    refused = _refused_nonzero(claim, n, r, kind, seed, func)
+    if refused is not None:
+        return refused
     options = _prepare(options)
     with spaced_collections():
         return _hard_or_random(lambda o: _run_points(claim, n, r, kind, seed, func or claim.func, trials, o,
@@ -2127,6 +2167,9 @@ def run_float(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
               options: dict | None = None) -> Result:
     """float64 with a running error bound; mpmath at 30, 60, 120 digits when float64 cannot decide.
     When r = n both components of O(n) are evaluated."""
+    refused = _refused_nonzero(claim, n, r, "float", seed, func)
+    if refused is not None:
+        return refused
     options = _prepare(options)
     with one_blas_thread(), quiet_numpy():
         res = _hard_or_random(lambda o: _run_float(claim, n, r, seed, func or claim.func, o), options)
@@ -2439,6 +2482,9 @@ def run_ball(claim: Claim, n: int, r: int, seed: int, func: Callable | None = No
     bits, until the enclosures decide: one that excludes 0 is a certified nonzero residual
     (``fails``); all within 1e-8 of their term scales is ``numeric`` with the rigorous bound.
     When r = n both components of O(n) are evaluated."""
+    refused = _refused_nonzero(claim, n, r, "ball", seed, func)
+    if refused is not None:
+        return refused
     options = _prepare(options)
     with one_blas_thread(), quiet_numpy():
         res = _hard_or_random(lambda o: _run_ball(claim, n, r, seed, func or claim.func, o), options)

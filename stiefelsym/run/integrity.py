@@ -180,6 +180,142 @@ def missing_runs(records: list[dict], registry: Registry, meta: dict) -> list[st
             if not found:
                 where = "all n, r" if size is None else f"({size[0]},{size[1]})"
                 out.append(f"{cid} {where} {m}: no record of a run its command planned ({meta.get('command')!r})")
+    out += _missing_corrections(records, registry, meta)
+    # ... and a claim the command selected has its records, however many it has: a claim left out whole (its
+    # erratum with it) is a file that is not the whole run of its command either
+    for cid in selected_claims(meta, registry):
+        if cid in have:
+            continue
+        if cid not in registry:
+            out.append(f"{cid}: the command names it, and it is no claim of the catalog or the claims files")
+            continue
+        try:
+            planned = planned_runs(registry.get(cid), meta)
+        except Exception as exc:    # noqa: BLE001 - the claim's statement cannot say which sizes were planned
+            out.append(f"{cid}: the runs its command planned cannot be listed ({type(exc).__name__}: {exc})")
+            continue
+        if planned:
+            out.append(f"{cid}: no record of any of the {len(planned)} runs its command planned "
+                       f"({meta.get('command')!r})")
+    return out
+
+
+def _missing_corrections(records: list[dict], registry: Registry, meta: dict) -> list[str]:
+    """The runs of registered corrections that the command made and the file has no record of
+    (:func:`stiefelsym.run.runner.run_with_corrections`): every correction of a claim that failed somewhere under
+    a planned method, at every size that method ran the claim at; every correction of a claim the dimension-free
+    method did not prove, for every n, r.  A record's planned method is its own, or ``auto`` when the command
+    planned auto and not that method (auto records the method it chose)."""
+    methods = list(meta.get("methods") or ["auto"])
+
+    def planned_method(r: dict) -> str:
+        m = r.get("method")
+        return m if m in methods or m == "free" or "auto" not in methods else "auto"
+    printed: dict[str, list[dict]] = {}
+    variants: dict[tuple, set] = {}
+    for r in records:
+        cid = r.get("claim")
+        if r.get("variant"):
+            size = None if r.get("n") is None else (r.get("n"), r.get("r"))
+            variants.setdefault((cid, r["variant"]), set()).add((size, planned_method(r)))
+        else:
+            printed.setdefault(cid, []).append(r)
+    out = []
+    for cid, recs in printed.items():
+        if cid not in registry:
+            continue
+        corrections = [c.description for c in registry.get(cid).corrections]
+        if not corrections:
+            continue
+        needed: set = set()
+        failed = {planned_method(r) for r in recs if r.get("n") is not None and r.get("verdict") == "fails"}
+        for r in recs:
+            if r.get("n") is not None and planned_method(r) in failed:
+                needed.add(((r.get("n"), r.get("r")), planned_method(r)))
+            if r.get("n") is None and r.get("verdict") != "proved":
+                needed.add((None, "free"))
+        for desc in corrections:
+            have = variants.get((cid, desc), set())
+            for size, m in sorted(needed, key=lambda x: (x[0] or (0, 0), x[1])):
+                # auto records the method it chose, which may be one the command also planned by name
+                if (size, m) not in have and not (m == "auto" and any(z == size for z, _ in have)):
+                    where = "all n, r" if size is None else f"({size[0]},{size[1]})"
+                    why = ("the dimension-free method did not prove the claim as printed" if size is None else
+                           f"the claim as printed failed under {m}")
+                    out.append(f"{cid} [{desc}] {where} {m}: no record of the run of this correction its command "
+                               f"made ({why})")
+    return out
+
+
+def selected_claims(meta: dict, registry: Registry) -> list[str]:
+    """The claims a results file's command selected: the ids it names (``stiefelsym verify ID ... --option``),
+    else every claim of the registry its claims files give (what ``verify`` runs when it names none)."""
+    import shlex
+    try:
+        words = shlex.split(str(meta.get("command") or ""))
+    except ValueError:
+        words = []
+    ids: list[str] = []
+    if words[:2] == ["stiefelsym", "verify"]:
+        for w in words[2:]:
+            if w.startswith("-"):
+                break
+            ids.append(w)
+    return ids or [c.id for c in registry]
+
+
+def _where_run(r: dict) -> str:
+    """How :func:`unstated_runs` names a record."""
+    return (f"{r.get('claim')} ({r.get('n')},{r.get('r')}) {r.get('method')}"
+            + (f" [{r['variant']}]" if r.get("variant") else ""))
+
+
+def unstated_runs(records: list[dict], registry: Registry, meta: dict | None) -> list[str]:
+    """See :func:`unstated_records`: what is wrong with each."""
+    return [why for _, why in unstated_records(records, registry, meta)]
+
+
+def unstated_records(records: list[dict], registry: Registry, meta: dict | None) -> list[tuple[int, str]]:
+    """The records at a size their claim is not stated for, or (with the file's ``meta``) at a size its
+    command did not plan for that claim: a verdict is a verdict of the claim's statement, which says at
+    which sizes it is made (``verify`` refuses a size outside it), so a record elsewhere (a run of the same
+    graph under a wider statement, spliced in) would report the claim as failing, or holding, where it
+    says nothing; and a file is the whole run of its command, no more than no less (:func:`missing_runs`)."""
+    from stiefelsym.run.runner import _sizes_for
+    out = []
+    planned: dict[str, set | None] = {}
+    for i, r in enumerate(records):
+        cid, n, rr = r.get("claim"), r.get("n"), r.get("r")
+        if cid not in registry or n is None:
+            continue                    # refused elsewhere, or the dimension-free record (no size)
+        claim = registry.get(cid)
+        where = _where_run(r)
+        try:
+            stated = type(n) is int and type(rr) is int and bool(claim.sizes.admits(n, rr))
+        except Exception as exc:    # noqa: BLE001 - the statement cannot say: not a size of it
+            out.append((i, f"{where}: whether the claim is stated at this size cannot be read "
+                       f"({type(exc).__name__}: {exc})"))
+            continue
+        if not stated:
+            out.append((i, f"{where}: a record at a size the claim is not stated for (its statement: "
+                       f"{getattr(claim.sizes, 'describe', lambda: 'its declared sizes')()}); verify refuses it"))
+            continue
+        if meta is None:
+            continue
+        if cid not in planned:
+            try:
+                max_n, listed = meta.get("max_n"), meta.get("sizes")
+                sizes: list[Size] | None = None
+                if max_n is not None:
+                    sizes = [Size(a, b) for a in range(1, int(max_n) + 1) for b in range(1, a + 1)]
+                elif listed:
+                    sizes = [Size(*(int(x) for x in str(t).split(","))) for t in listed]
+                planned[cid] = {(z.n, z.r) for z in _sizes_for(claim, sizes)}
+            except Exception:   # noqa: BLE001 - missing_runs says why the planned runs cannot be listed
+                planned[cid] = None
+        if planned[cid] is not None and (n, rr) not in planned[cid]:
+            out.append((i, f"{where}: a record at a size its command did not plan for this claim "
+                       f"({meta.get('command')!r})"))
     return out
 
 
@@ -210,6 +346,13 @@ def check_results(records: list[dict], registry: Registry, echo: Callable[[str],
         for p in missing_runs(records, registry, meta):
             echo(f"REJECTED {p}")
             bad += 1
+    unstated = unstated_records(records, registry, meta)
+    for _, p in unstated:
+        echo(f"REJECTED {p}")
+        bad += 1
+    if unstated:        # (each is rejected once: not run again below)
+        out = {i for i, _ in unstated}
+        records = [r for i, r in enumerate(records) if i not in out]
     free_done: dict[str, Any] = {}
     for r in records:
         cid, n, rr = r.get("claim"), r.get("n"), r.get("r")
