@@ -88,8 +88,8 @@ def test_markdown_has_every_claim_in_its_section(results):
     for cid in CLAIMS:
         assert f"### `{cid}`" in md
     headings = re.findall(r"^## (.*)$", md, re.M)
-    assert headings == ["Errata", "Summary", "§2", "§3", "§5", "§6", "§7",
-                        "Claims outside the paper's sections", "How to reproduce", "What the verdicts mean"]
+    assert headings == ["What the verdicts mean", "Errata", "Summary", "§2", "§3", "§5", "§6", "§7",
+                        "Claims outside the paper's sections", "How to reproduce"]
     assert md.index("### `orbit`") < md.index("### `aligned`") < md.index("### `prep`")
 
 
@@ -169,6 +169,22 @@ def test_render_from_round_trip_json(results, tmp_path):
     meta2, back = load_results(tmp_path / "results.json")
     assert render_markdown(back, meta2) == render_markdown(results, meta)
     assert render_latex(back, meta2) == render_latex(results, meta)
+
+
+def test_verdicts_and_methods_are_explained_before_the_errata_use_them(results):
+    """A referee meets "verified", "by modular", "p <= ..." in the first erratum: the vocabulary
+    (verdicts, methods, the bound p, graphs and their digests) comes before it, in both documents."""
+    md = render_markdown(results)
+    vocabulary, errata = md.index("## What the verdicts mean"), md.index("## Errata")
+    assert vocabulary < errata < md.index("### `neumann-lax`")
+    for word in ("- **proved**:", "- **modular**:", "**The bound p.**", "**Graphs and digests.**"):
+        assert vocabulary < md.index(word) < errata
+    tex = render_latex(results)
+    vocabulary, errata = tex.index(r"\section*{What the verdicts mean}"), tex.index(r"\section*{Errata}")
+    assert tex.index(r"\tableofcontents") < vocabulary < errata
+    for word in (r"\item[proved]", r"\item[modular]", r"\paragraph{The bound $p$.}", r"\paragraph{Graphs and digests.}"):
+        assert vocabulary < tex.index(word) < errata
+    assert tex.count(r"\section*{What the verdicts mean}") == md.count("## What the verdicts mean") == 1
 
 
 def test_dimension_free_derivations_go_into_latex():

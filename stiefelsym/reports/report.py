@@ -116,6 +116,15 @@ BOUND_EXPLANATION = (
     "choices of the run only, which the seed fixes, for a claim written independently "
     "of the seed.")
 
+GRAPH_EXPLANATION = (
+    "A claim is a function of the matrices X, P, A, … that returns its residuals (left side minus "
+    "right side).  It is evaluated once on symbols, which records it as a graph of matrix "
+    "operations (products, transposes, inverses, derivatives along a flow) with exact constants; "
+    "every method computes from that graph, never from the claim's code.  The digest is a "
+    "SHA-256 hash of the graph (its first 12 hex digits are shown): two records with the same "
+    "digest are about the same computation, and the command stiefelsym check compares it when it "
+    "traces every record again.")
+
 EXPECTED_EXPLANATION = (
     "Each verdict is compared with what the catalog expects: a statement of the paper "
     "is expected to hold; a printed formula already known to be wrong is expected to "
@@ -677,6 +686,15 @@ def render_markdown(results: Sequence[Result], meta: dict[str, Any] | None = Non
                 + ("; correction: " + _md_escape(next(iter(c.variants))) if c.variants else "") for c in errata]
         out += [""]
 
+    # the vocabulary before its first use: the errata speak of verdicts, methods and the bound p
+    out += ["## What the verdicts mean", ""]
+    out += [f"- **{v}**: {_md_escape(VERDICT_MEANING[v])}" for v in VERDICTS]
+    out += ["", f"**The methods.** {METHODS_INTRO}", ""]
+    out += [f"- **{m}**: {_md_escape(t)}" for m, t in METHOD_MEANING.items()]
+    out += ["", f"**The bound p.** {_md_escape(BOUND_EXPLANATION)}", "",
+            f"**Graphs and digests.** {_md_escape(GRAPH_EXPLANATION)}", "",
+            f"**Expected verdicts.** {_md_escape(EXPECTED_EXPLANATION)}", ""]
+
     out += ["## Errata", ""]
     out += _errata_body(claims, _md_escape, _md_erratum,
                         lambda c: [f"### `{c.id}` {_md_escape(labels(c.paper))}", ""] + _md_corrections(c))
@@ -698,12 +716,6 @@ def render_markdown(results: Sequence[Result], meta: dict[str, Any] | None = Non
 
     out += ["## How to reproduce", "", "```sh", meta.get("command") or "stiefelsym verify", "```", ""]
     out += [_md_escape(f) for f in _run_facts(meta)] + [""]
-    out += ["## What the verdicts mean", ""]
-    out += [f"- **{v}**: {_md_escape(VERDICT_MEANING[v])}" for v in VERDICTS]
-    out += ["", f"**The methods.** {METHODS_INTRO}", ""]
-    out += [f"- **{m}**: {_md_escape(t)}" for m, t in METHOD_MEANING.items()]
-    out += ["", f"**The bound p.** {_md_escape(BOUND_EXPLANATION)}", "",
-            f"**Expected verdicts.** {_md_escape(EXPECTED_EXPLANATION)}", ""]
     if mutation:
         out += _md_mutation_section(_mutation_data(mutation))
     return "\n".join(out).rstrip() + "\n"
@@ -1121,6 +1133,17 @@ def render_latex(results: Sequence[Result], meta: dict[str, Any] | None = None, 
                            "verification-runs.tex and in results.json."), ""]
     out += [r"\tableofcontents", ""]
 
+    # the vocabulary before its first use: the errata speak of verdicts, methods and the bound p
+    out += _toc_section("What the verdicts mean") + [r"\begin{description}"]
+    out += [f"\\item[{v}] {tex_escape(VERDICT_MEANING[v])}" for v in VERDICTS]
+    out += [r"\end{description}",
+            r"\paragraph{The methods.} " + tex_escape(METHODS_INTRO), r"\begin{description}"]
+    out += [f"\\item[{m}] {tex_escape(t)}" for m, t in METHOD_MEANING.items()]
+    out += [r"\end{description}",
+            r"\paragraph{The bound $p$.} " + tex_escape(BOUND_EXPLANATION),
+            r"\paragraph{Graphs and digests.} " + tex_escape(GRAPH_EXPLANATION),
+            r"\paragraph{Expected verdicts.} " + tex_escape(EXPECTED_EXPLANATION), ""]
+
     out += _toc_section("Errata")
     # the referee's document names two more failing runs; the per-run one eight (all are in results.json)
     out += _errata_body(claims, tex_escape, lambda c: _tex_erratum(c, MAX_ERRATUM_RERUNS if detail else 2),
@@ -1139,14 +1162,6 @@ def render_latex(results: Sequence[Result], meta: dict[str, Any] | None = None, 
     out += _toc_section("How to reproduce")
     out += [r"{\raggedright " + _tt(meta.get("command") or "stiefelsym verify") + r"\par}", ""]
     out += [tex_escape(f) for f in _run_facts(meta)] + [""]
-    out += _toc_section("What the verdicts mean") + [r"\begin{description}"]
-    out += [f"\\item[{v}] {tex_escape(VERDICT_MEANING[v])}" for v in VERDICTS]
-    out += [r"\end{description}",
-            r"\paragraph{The methods.} " + tex_escape(METHODS_INTRO), r"\begin{description}"]
-    out += [f"\\item[{m}] {tex_escape(t)}" for m, t in METHOD_MEANING.items()]
-    out += [r"\end{description}",
-            r"\paragraph{The bound $p$.} " + tex_escape(BOUND_EXPLANATION),
-            r"\paragraph{Expected verdicts.} " + tex_escape(EXPECTED_EXPLANATION), ""]
     if mutation:
         out += _tex_mutation_section(_mutation_data(mutation))
     return "\n".join(out + [r"\end{document}", ""])
