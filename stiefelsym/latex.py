@@ -247,9 +247,77 @@ def tex_display(statement: str) -> str:
         body = "\\begin{aligned}\n" + body + "\n\\end{aligned}"
     elif "\\\\" in top:
         body = "\\begin{gathered}\n" + body + "\n\\end{gathered}"
+    else:
+        pieces = display_pieces(body)
+        if len(pieces) > 1:
+            return _fitted_display(body, pieces)
     # shrunk to the line's width when it is wider (never an overfull line), at its size otherwise
     return ("\\begin{center}\\resizebox{\\ifdim\\width>\\linewidth\\linewidth\\else\\width\\fi}{!}{$\\displaystyle\n"
             + body + "\n$}\\end{center}\n")
+
+
+#: where a display of several formulas may break: a comma, semicolon or colon followed by a space
+#: command (a control space, a quad or a qquad), at the top level of the formula only
+_BREAK = re.compile(r"([,;:])\s*(?:\\qquad|\\quad|\\ )\s*")
+
+#: a display wider than this many line widths is set on several lines rather than shrunk
+WIDE = "1.15"
+
+
+def display_pieces(body: str) -> list[str]:
+    r"""The formulas of a display separated at its top level (outside braces, environments,
+    ``\left … \right``, parentheses, brackets and ``\{ \}``) by ``,\ ``, ``,\quad``, ``;\quad``,
+    ``:\ ``, …; each piece keeps its punctuation.  One piece when there is no such break."""
+    depth, cuts, i = 0, [], 0
+    while i < len(body):
+        m = re.match(r"\\(begin|end)\{[^}]*\}|\\(left|right)(?![A-Za-z])|\\[A-Za-z]+|\\.", body[i:])
+        if m:
+            token = m.group(0)
+            if m.group(1) == "begin" or m.group(2) == "left" or token in ("\\{", "\\langle"):
+                depth += 1
+            elif m.group(1) == "end" or m.group(2) == "right" or token in ("\\}", "\\rangle"):
+                depth -= 1
+            i += len(token)
+            continue
+        if body[i] in "{([":
+            depth += 1
+        elif body[i] in "})]":
+            depth -= 1
+        elif depth == 0 and body[i] in ",;:":
+            brk = _BREAK.match(body, i)
+            if brk:
+                cuts.append((i + 1, brk.end()))
+        i += 1
+    pieces, at = [], 0
+    for end, nxt in cuts:
+        pieces.append(body[at:end].strip())
+        at = nxt
+    pieces.append(body[at:].strip())
+    return [p for p in pieces if p]
+
+
+def _visible(tex: str) -> int:
+    """A rough width of a formula in characters: a command counts as one, braces as nothing."""
+    return len(re.sub(r"[{}]", "", re.sub(r"\\[A-Za-z]+", "x", tex)))
+
+
+def _two_lines(pieces: list[str]) -> list[str]:
+    """The pieces on two lines of about equal width, in their order."""
+    widths = [_visible(p) for p in pieces]
+    best = min(range(1, len(pieces)), key=lambda j: abs(2 * sum(widths[:j]) - sum(widths)))
+    return ["\\quad ".join(pieces[:best]), "\\quad ".join(pieces[best:])]
+
+
+def _fitted_display(body: str, pieces: list[str]) -> str:
+    r"""A display of several formulas as TeX fits it: on one line if it is at most :data:`WIDE` line
+    widths wide, else on two lines of about equal width if those are, else one formula a line; the
+    chosen form is shrunk to the line's width when it is still wider (never an overfull line)."""
+    def gathered(lines: list[str]) -> str:
+        return "$\\displaystyle\\begin{gathered}\n" + "\\\\\n".join(lines) + "\n\\end{gathered}$"
+    return ("\\begin{center}\\sbox0{$\\displaystyle\n" + body + "\n$}%\n"
+            f"\\ifdim\\wd0>{WIDE}\\linewidth\\sbox0{{" + gathered(_two_lines(pieces)) + "}\\fi%\n"
+            f"\\ifdim\\wd0>{WIDE}\\linewidth\\sbox0{{" + gathered(pieces) + "}\\fi%\n"
+            "\\resizebox{\\ifdim\\wd0>\\linewidth\\linewidth\\else\\wd0\\fi}{!}{\\usebox0}\\end{center}\n")
 
 
 

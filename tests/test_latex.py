@@ -5,7 +5,7 @@ import re
 
 import pytest
 
-from stiefelsym.latex import math_ok, tex_balanced, tex_display, tex_escape, tex_math, tex_text
+from stiefelsym.latex import display_pieces, math_ok, tex_balanced, tex_display, tex_escape, tex_math, tex_text
 
 NASTY = r"50% of #cases & ~x^2 {b} \foo <a|b> under_score, Božidar Jovanović, dΦ/dt = [XXᵀ, A] ≤ ½"
 
@@ -51,7 +51,11 @@ def test_tex_math_maps_unicode():
 def test_tex_display_environments():
     # every display is shrunk to the line's width when wider (no overfull line)
     assert all(tex_display(STATEMENTS[k]).startswith("\\begin{center}\\resizebox")
-               for k in ("prep", "orbit", "aligned", "lines"))
+               for k in ("orbit", "aligned", "lines"))
+    # one of several formulas is first fitted on one, two or one formula a line, then shrunk
+    prep = tex_display(STATEMENTS["prep"])
+    assert prep.startswith("\\begin{center}\\sbox0{") and prep.count("\\ifdim\\wd0>1.15\\linewidth") == 2
+    assert prep.rstrip().endswith("\\resizebox{\\ifdim\\wd0>\\linewidth\\linewidth\\else\\wd0\\fi}{!}{\\usebox0}\\end{center}")
     assert "aligned" not in tex_display(STATEMENTS["prep"])
     assert "aligned" not in tex_display(STATEMENTS["orbit"])  # & only inside cases
     assert "\\begin{aligned}" in tex_display(STATEMENTS["aligned"])
@@ -98,3 +102,22 @@ def test_the_registered_words_set_a_spaced_inequality_as_one():
     tex = tex_words("regular iff n <= 2r + 2; rank >= 5; <axial(P1), P2>; a<=b")
     assert r"n \ensuremath{\le} 2r" in tex and r"rank \ensuremath{\ge} 5" in tex
     assert r"\ensuremath{<}axial" in tex and r"a\ensuremath{<}=b" in tex
+
+
+def test_a_wide_display_breaks_only_between_its_formulas():
+    """A display of several formulas breaks after a comma, semicolon or colon followed by a space
+    command at its top level; never inside braces, a matrix, \\left…\\right, parentheses or a set."""
+    body = (r"H=T:\ \dot L(\nu)=[L(\nu),\ A(\nu)],\ L=\begin{pmatrix}0&a,\ b\\c&0\end{pmatrix}\nu,\quad "
+            r"\left(c,\ d\right)=\{x,\ y\},\ f(a,\ b);\qquad \text{along (x,\ y)},\ z\leftarrow w")
+    pieces = display_pieces(body)
+    assert pieces == [r"H=T:", r"\dot L(\nu)=[L(\nu),\ A(\nu)],", r"L=\begin{pmatrix}0&a,\ b\\c&0\end{pmatrix}\nu,",
+                      r"\left(c,\ d\right)=\{x,\ y\},", r"f(a,\ b);", r"\text{along (x,\ y)},", r"z\leftarrow w"]
+    assert display_pieces(r"a=b,c=d") == [r"a=b,c=d"]
+    # every piece is in each of the three forms, in its order; nothing of the formula is lost
+    tex = tex_display(body)
+    one, two, each = tex.split("\\ifdim\\wd0>1.15\\linewidth")
+    for form in (one, two, each):
+        at = [form.index(p) for p in pieces]
+        assert at == sorted(at)
+    # the line breaks of the gathered forms (the matrix's own \\\\ is followed by no newline)
+    assert "\\\\\n" not in one and two.count("\\\\\n") == 1 and each.count("\\\\\n") == len(pieces) - 1

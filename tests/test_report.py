@@ -8,7 +8,7 @@ import xml.etree.ElementTree as ET
 
 import pytest
 
-from stiefelsym.reports.report import (case_name, render_junit, render_latex, render_markdown,
+from stiefelsym.reports.report import (_tex_change, case_name, render_junit, render_latex, render_markdown,
                                render_mutation_markdown, render_summary)
 from stiefelsym.results import CheckOutcome, Result, dump_results, load_results
 
@@ -581,3 +581,13 @@ def test_how_obtained_names_the_sizes_of_each_reduction():
     md = render_markdown(runs)
     assert "- exact at (4,4), (5,5): the chart X = I" in md
     assert "- modular: points of the Cayley chart" in md
+
+
+def test_a_changed_formula_with_left_right_never_overflows_the_line():
+    """A mutant's change set in ``\\left … \\right`` (which TeX cannot break) is shrunk to 0.9 of the
+    line and may begin a line; a formula TeX can break stays plain inline mathematics."""
+    wide = r"\mathrm{tr}\left(I_r \left(\tfrac{1}{2} (\Psi - \Psi^T)\right)\right)"
+    tex = _tex_change([{"where": "H", "old": "a", "new": "b", "old_tex": wide, "new_tex": "X^T P"}])
+    assert (r"\nobreak\hfil\penalty0\hfilneg\relax\resizebox{\ifdim\width>0.9\linewidth 0.9\linewidth\else"
+            r"\width\fi}{!}{$" + wide + "$}") in tex
+    assert tex.endswith(r"$\to$ $X^T P$")

@@ -1394,7 +1394,7 @@ def _tex_erratum(c: ClaimResults, reruns: int = MAX_ERRATUM_RERUNS) -> list[str]
     out = [_tex_claim_heading(c)]
     out += [r"\textbf{Note for the authors.} " + _erratum_note(c, facts, tex_escape, lambda v: _tex_with_change(c, v)), ""]
     if c.statement.strip():
-        out += ["As printed:", tex_display(c.statement)]
+        out += [r"As printed:\nopagebreak", tex_display(c.statement)]
     w = c.failures[0]
     out += [tex_escape("Failing runs: " + ", ".join(f"{r.size} {r.method}" for r in c.failures) + "."), ""]
     if w.erratum:
@@ -1605,10 +1605,22 @@ def _tex_change(changes: Sequence[dict[str, str]] | None) -> str:
             parts.append(tex_escape(f"and {c['more']} more change{'s' * (c['more'] != 1)}"))
             continue
         old, new = c.get("old_tex", ""), c.get("new_tex", "")
-        math = (f"${old}$ $\\to$ ${new}$" if old and new and all(math_ok(t) and t.isascii() for t in (old, new))
+        math = (f"{_tex_inline(old)} $\\to$ {_tex_inline(new)}"
+                if old and new and all(math_ok(t) and t.isascii() for t in (old, new))
                 else tex_escape(f"{c.get('old', '')} → {c.get('new', '')}"))
         parts.append(tex_words(f"in {unicode_name(c.get('where', ''))}: ") + math)
     return "; ".join(parts)
+
+
+def _tex_inline(math: str) -> str:
+    r"""Inline mathematics; one with ``\left … \right`` (which TeX cannot break across lines) is
+    shrunk to 0.9 of the line's width when it is wider, never an overfull line, and may begin a line with
+    the line before it filled out (the glue ``\hfil``, cancelled by ``\hfilneg`` when no break is made)."""
+    if "\\left" not in math:
+        return f"${math}$"
+    # at most 0.9 of the line: the punctuation that follows it stays on its line
+    return (r"\nobreak\hfil\penalty0\hfilneg\relax\resizebox{\ifdim\width>0.9\linewidth 0.9\linewidth\else\width\fi}{!}{$"
+            + math + "$}")
 
 
 def _md_mutant_text(o: dict[str, Any]) -> str:
