@@ -335,8 +335,17 @@ def tex_words(text: str) -> str:
     return tex_text(text, _ascii_scripts)
 
 
+def _wedges(token: str) -> str:
+    """A word that writes an exterior product with an ellipsis, ``e_1^...^e_r^p_i``: every ^ before
+    a letter in it is the wedge (a power or a transpose in it, ^2 or ^{-1}, stays a script)."""
+    if "^...^" not in token:
+        return token
+    return re.sub(r"\^(?=[A-Za-z.])", "∧", token.replace("^...^", "∧...∧"))
+
+
 def _ascii_scripts(text: str) -> str:
     text = re.sub(r"(?<=\s)([<>])=(?=\s)", lambda m: "≤" if m.group(1) == "<" else "≥", text.replace(" ^ ", " ∧ "))
+    text = re.sub(r"\S+", lambda m: _wedges(m.group(0)), text)
     out, at = [], 0
     for m in _ASCII_SCRIPT.finditer(text):
         if m.start() == 0 or text[m.start() - 1] == " ":

@@ -121,3 +121,14 @@ def test_a_wide_display_breaks_only_between_its_formulas():
         assert at == sorted(at)
     # the line breaks of the gathered forms (the matrix's own \\\\ is followed by no newline)
     assert "\\\\\n" not in one and two.count("\\\\\n") == 1 and each.count("\\\\\n") == len(pieces) - 1
+
+
+def test_an_exterior_product_with_an_ellipsis_is_set_with_wedges():
+    """(e_1^...^e_r^p_i)^2 in the words of what is wrong: every ^ before a letter of that word is a
+    wedge, the square stays a power; a word with no ^...^ keeps its scripts (X^T, A^{-1})."""
+    from stiefelsym.latex import tex_words
+    tex = tex_words("sums (e_1^...^e_r^p_i^p_j)^2 over i < j; X^T P and A^{-1}")
+    assert tex.startswith(r"sums (e\ensuremath{_{1}}\ensuremath{\wedge}...\ensuremath{\wedge}e\ensuremath{_{r}}"
+                          r"\ensuremath{\wedge}p\ensuremath{_{i}}\ensuremath{\wedge}p\ensuremath{_{j}})\ensuremath{^{2}}")
+    assert r"X\ensuremath{^{T}} P" in tex and r"A\ensuremath{^{\ensuremath{-}1}}" in tex
+    assert r"\^{}" not in tex

@@ -591,3 +591,17 @@ def test_a_changed_formula_with_left_right_never_overflows_the_line():
     assert (r"\nobreak\hfil\penalty0\hfilneg\relax\resizebox{\ifdim\width>0.9\linewidth 0.9\linewidth\else"
             r"\width\fi}{!}{$" + wide + "$}") in tex
     assert tex.endswith(r"$\to$ $X^T P$")
+
+
+def test_a_count_witness_to_check_by_hand_sets_its_scripts_in_the_pdf():
+    """The hand witness of a count names the printed formula in the paper's notation: diag(I_{n-r},
+    B^{-1}) is set with scripts in the PDF, never as the characters _{ and ^{."""
+    small = {"kind": "count", "check": "rows of V", "value": 2, "paper": 1,
+             "meaning": "the rows of V; printed: the size of diag(I_{n-r}, B^{-1})"}
+    rs = [result("neumann-lax", 1, 1, "exact", "fails", expected=False, witness={"small": small})]
+    tex = render_latex(rs)
+    line = next(x for x in tex.splitlines() if x.startswith(r"\textbf{A witness to check by hand:}"))
+    assert r"diag(I\ensuremath{_{n\ensuremath{-}r}}, B\ensuremath{^{\ensuremath{-}1}}): computed 2" in line
+    assert r"\_\{" not in line and r"\^{}" not in line
+    md = render_markdown(rs)
+    assert "**A witness to check by hand:** at (n, r) = (1,1), the rows of V; printed: the size of" in md

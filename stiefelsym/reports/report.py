@@ -911,7 +911,8 @@ def _tex_small_witness(c: ClaimResults) -> list[str]:
         return []
     r, w = found
     if w.get("kind") == "count":
-        return [r"\textbf{A witness to check by hand:} " + _count_witness_text(c, r, w, tex_escape)
+        # in words whose ASCII scripts are set as scripts: diag(I_{n-r}, B^{-1})
+        return [r"\textbf{A witness to check by hand:} " + _count_witness_text(c, r, w, tex_words)
                 + ((tex_escape(" The script ") + _tt(f"{WITNESS_SCRIPT_DIR}/{c.id}.py")
                     + tex_escape(" (Python with sympy, no stiefelsym) recomputes it from the paper's definitions."))
                    if _has_script(c) else ""), ""]
@@ -930,7 +931,7 @@ def _tex_small_witness(c: ClaimResults) -> list[str]:
 
 
 def _count_witness_text(c: ClaimResults, r: Result, w: dict[str, Any], escape: Any) -> str:
-    head = "" if escape is tex_escape else "**A witness to check by hand:** "
+    head = "**A witness to check by hand:** " if escape is _md_escape else ""
     what = w.get("meaning") or unicode_name(w["check"])
     return head + escape(f"at (n, r) = {r.size}, {what}: computed {w['value']}, where the printed statement "
                          f"gives {w['paper']}.")
