@@ -211,12 +211,20 @@ _GREEK_WORDS = {"Phi": "Φ", "Psi": "Ψ", "Lambda": "Λ", "lambda": "λ", "kappa
                 "Sigma": "Σ", "sigma": "σ", "omega": "ω", "mu": "μ", "Gamma": "Γ", "Delta": "Δ"}
 
 
+_GREEK_WORD = re.compile(r"(?<![A-Za-z])(d?)(" + "|".join(sorted(_GREEK_WORDS, key=len, reverse=True)) + r")(?![a-z])")
+
+
+def greek_words(text: str) -> str:
+    """Plain words that spell the paper's Greek letters in ASCII (Psi, lambda, L(nu), eta_so(r)) with
+    the letters themselves; a word that merely contains one (beta, Pit) is left alone."""
+    return _GREEK_WORD.sub(lambda m: m.group(1) + _GREEK_WORDS[m.group(2)], text)
+
+
 def unicode_name(name: str) -> str:
     """A check's ASCII name as mathematics in Unicode: ``X^T`` as Xᵀ, ``Phi`` as Φ, a trailing
     entry ``[1,2]`` as ", entry (1,2)"."""
     name = re.sub(r"\^T\b", "ᵀ", name)
-    name = re.sub(r"(?<![A-Za-z])(d?)(" + "|".join(sorted(_GREEK_WORDS, key=len, reverse=True)) + r")(?![a-z])",
-                  lambda m: m.group(1) + _GREEK_WORDS[m.group(2)], name)
+    name = greek_words(name)
     return re.sub(r"\[(\d+),(\d+)\]$", r", entry (\1,\2)", name)
 
 

@@ -605,3 +605,15 @@ def test_a_count_witness_to_check_by_hand_sets_its_scripts_in_the_pdf():
     assert r"\_\{" not in line and r"\^{}" not in line
     md = render_markdown(rs)
     assert "**A witness to check by hand:** at (n, r) = (1,1), the rows of V; printed: the size of" in md
+
+
+def test_what_is_wrong_spells_the_greek_letters_as_letters():
+    """The catalog writes what is wrong in ASCII (Psi, L(nu), Q(lambda*)); a referee reads Ψ, L(ν), Q(λ*)
+    in both documents, and a word that merely contains a letter's name (beta, Pit) is left alone."""
+    text = "with <Psi, Psi> and L(nu), Q(lambda*); beta and Pit stay"
+    rs = [result("neumann-lax", 3, 1, "exact", "fails", expected=False, erratum=text)]
+    md, tex = render_markdown(rs), render_latex(rs)
+    assert "What is wrong: with \\<Ψ, Ψ\\> and L(ν), Q(λ\\*); beta and Pit stay" in md
+    line = next(x for x in tex.splitlines() if x.startswith("What is wrong: "))
+    assert r"\ensuremath{\Psi}" in line and r"L(\ensuremath{\nu})" in line and "beta and Pit stay" in line
+    assert "Psi" not in line.replace(r"\Psi", "")

@@ -20,7 +20,7 @@ from collections import Counter
 from typing import Any, Callable, Iterable, Sequence
 
 from stiefelsym import paperref, sizerules
-from stiefelsym.latex import unicode_name, math_ok, split_math, tex_balanced, tex_display, tex_escape, tex_words
+from stiefelsym.latex import greek_words, unicode_name, math_ok, split_math, tex_balanced, tex_display, tex_escape, tex_words
 from stiefelsym.ir import notation
 from stiefelsym.ir.notation import changes_text as change_text
 from stiefelsym.results import PASSING, VERDICTS, Result
@@ -829,7 +829,7 @@ def _md_erratum(c: ClaimResults) -> list[str]:
             + ".", ""]
     w = c.failures[0]
     if w.erratum:
-        out += [f"What is wrong: {_md_escape(w.erratum)}", ""]
+        out += [f"What is wrong: {_md_escape(greek_words(w.erratum))}", ""]
     out += _md_small_witness(c)
     if small_witness_of(c) is not None and "point" in (w.witness or {}):
         out += [f"The seeded run that found the failure: size {_md_escape(w.size)}, method {w.method}"
@@ -1399,7 +1399,7 @@ def _tex_erratum(c: ClaimResults, reruns: int = MAX_ERRATUM_RERUNS) -> list[str]
     w = c.failures[0]
     out += [tex_escape("Failing runs: " + ", ".join(f"{r.size} {r.method}" for r in c.failures) + "."), ""]
     if w.erratum:
-        out += ["What is wrong: " + tex_words(w.erratum), ""]
+        out += ["What is wrong: " + tex_words(greek_words(w.erratum)), ""]
     out += _tex_small_witness(c)
     if small_witness_of(c) is not None and "point" in (w.witness or {}):
         out += [tex_escape(f"The seeded run that found the failure: size {w.size}, method {w.method}"
