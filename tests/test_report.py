@@ -617,3 +617,21 @@ def test_what_is_wrong_spells_the_greek_letters_as_letters():
     line = next(x for x in tex.splitlines() if x.startswith("What is wrong: "))
     assert r"\ensuremath{\Psi}" in line and r"L(\ensuremath{\nu})" in line and "beta and Pit stay" in line
     assert "Psi" not in line.replace(r"\Psi", "")
+
+
+def test_the_summary_by_section_is_the_same_in_both_documents(results):
+    """The Markdown's summary opens with the PDF's table by section, the same numbers and a total that
+    is the sum of its rows (and equals the headline's counts)."""
+    md, tex = render_markdown(results), render_latex(results)
+    summary = md[md.index("## Summary"):md.index("## §2")]
+    md_rows = [[c.strip().strip("*") for c in line.split("|")[1:-1]]
+               for line in summary.splitlines() if line.startswith("| ") and not line.startswith("| ---")]
+    assert md_rows[0] == ["section", "claims", "all n, r", "every size", "fail as printed", "unexpected"]
+    table = tex[tex.index(r"\begin{tabular}{@{}P{6.2cm}rrrrr@{}}"):]
+    table = table[:table.index(r"\end{tabular}")]
+    tex_rows = [[c.strip() for c in line.removesuffix(r"\\").split("&")] for line in table.splitlines()
+                if line.endswith(r"\\") and not line.startswith("section")]
+    numbers = [row[1:] for row in md_rows[1:md_rows.index(next(r for r in md_rows if r[0] == "claim"))]]
+    assert numbers == [row[1:] for row in tex_rows]
+    *rows, total = numbers
+    assert total == [str(sum(int(r[i]) for r in rows)) for i in range(5)]

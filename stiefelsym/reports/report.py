@@ -131,6 +131,13 @@ EXPECTED_EXPLANATION = (
     "fail as printed.  A verdict the catalog does not expect is marked UNEXPECTED; the "
     "command exits with status 1 if there is any.")
 
+SECTION_TABLE_INTRO = (
+    "Per section of the paper: its claims; those proved for every n and r at once (dimension-free, as "
+    "printed; for a statement made at one r, every n at that r, and for one made at r = 1 and at r = n, "
+    "every n at each); those that hold as printed at every size computed (proved, or checked at random "
+    "exact points); those that fail as printed (the errata); and those with a verdict the catalog does "
+    "not expect.")
+
 ERRATA_INTRO = (
     "Statements that fail as printed.  Each comes with a witness, reproducible with the rerun "
     "command: an exact point where a residual entry is nonzero, or for a dimension, rank or "
@@ -700,7 +707,18 @@ def render_markdown(results: Sequence[Result], meta: dict[str, Any] | None = Non
                         lambda c: [f"### `{c.id}` {_md_escape(labels(c.paper))}", ""] + _md_corrections(c))
 
     present, rows = _summary_rows(claims)
-    out += ["## Summary", "", "For each claim as printed: the verdict of the dimension-free method (all n, r "
+    # the PDF's table by section first (the same numbers), then the table by claim
+    out += ["## Summary", "", _md_escape(SECTION_TABLE_INTRO), ""]
+    total: Counter = Counter()
+    section_rows = []
+    for sec, cs in group_by_section(claims):
+        k = section_counts(cs)
+        total.update(k)
+        section_rows.append([_md_cell(_section_heading(sec, meta))] + [str(v) for v in k.values()])
+    keys = list(section_counts([]))
+    out += _md_table(["section"] + keys, section_rows + [["**total**"] + [f"**{total[k]}**" for k in keys]],
+                     "l" + "r" * len(keys))
+    out += ["For each claim as printed: the verdict of the dimension-free method (all n, r "
             "at once), then the runs at fixed sizes (n, r) by verdict.", ""]
     out += _md_table(["claim", "paper", "§", "kind"] + present + ["status"],
                      [[f"`{c.id}`", _md_cell(labels(c.paper)), c.section or "–", c.kind]
@@ -1217,10 +1235,7 @@ def section_counts(cs: list[ClaimResults]) -> dict[str, int]:
 def _tex_section_table(claims: list[ClaimResults], meta: dict[str, Any]) -> list[str]:
     """The referee's summary: one row per section of the paper."""
     out = _toc_section("Summary")
-    out += [tex_escape("Per section of the paper: its claims; those proved for every n and r at once "
-                       "(dimension-free, as printed; for a statement made at one r, every n at that r, and for one made at r = 1 and at r = n, every n at each); those that hold as printed at every size computed "
-                       "(proved, or checked at random exact points); those that fail as printed (the errata); "
-                       "and verdicts the catalog does not expect.  Each claim follows, by section."), "",
+    out += [tex_escape(SECTION_TABLE_INTRO + "  Each claim follows, by section."), "",
             r"\begin{center}\small", r"\begin{tabular}{@{}P{6.2cm}rrrrr@{}}", r"\toprule",
             r"section & claims & all $n,r$ & every size & fail as printed & unexpected\\", r"\midrule"]
     total: Counter = Counter()
