@@ -344,10 +344,11 @@ def tex_words(text: str) -> str:
 
 
 def _wedges(token: str) -> str:
-    """A word that writes an exterior product with an ellipsis, ``e_1^...^e_r^p_i``: every ^ before
-    a letter in it is the wedge (a power or a transpose in it, ^2 or ^{-1}, stays a script)."""
+    """A word that writes an exterior product in ASCII: with an ellipsis, ``e_1^...^e_r^p_i``, every ^
+    before a letter in it is the wedge; without, a ^ between two subscripted letters, ``e_j^p_i``, is
+    (a power or a transpose, ^2, ^{-1}, X^T, Phi_{I_2}^2, stays a script)."""
     if "^...^" not in token:
-        return token
+        return re.sub(r"(?<=_[A-Za-z0-9}])\^(?=[A-Za-z]_)", "∧", token)
     return re.sub(r"\^(?=[A-Za-z.])", "∧", token.replace("^...^", "∧...∧"))
 
 

@@ -132,3 +132,8 @@ def test_an_exterior_product_with_an_ellipsis_is_set_with_wedges():
                           r"\ensuremath{\wedge}p\ensuremath{_{i}}\ensuremath{\wedge}p\ensuremath{_{j}})\ensuremath{^{2}}")
     assert r"X\ensuremath{^{T}} P" in tex and r"A\ensuremath{^{\ensuremath{-}1}}" in tex
     assert r"\^{}" not in tex
+    # without an ellipsis: a ^ between two subscripted letters is the wedge, a power or transpose is not
+    tex = tex_words("the mixed terms (e_j^p_i)^2 and (e_j^p_j)(e_k^p_k); Phi_{I_2}^2, X_{ij}^T, d^2e_3/dt^2")
+    assert r"(e\ensuremath{_{j}}\ensuremath{\wedge}p\ensuremath{_{i}})\ensuremath{^{2}}" in tex
+    assert r"(e\ensuremath{_{k}}\ensuremath{\wedge}p\ensuremath{_{k}})" in tex
+    assert tex.count("wedge") == 3 and r"\ensuremath{^{T}}" in tex
