@@ -635,3 +635,11 @@ def test_the_summary_by_section_is_the_same_in_both_documents(results):
     assert numbers == [row[1:] for row in tex_rows]
     *rows, total = numbers
     assert total == [str(sum(int(r[i]) for r in rows)) for i in range(5)]
+
+
+def test_markdown_math_sets_the_underscore_of_a_name_in_text_as_math():
+    """\\text{along (dot\\_XP3*)} is plain text to a Markdown viewer's MathJax, which would show the
+    backslash: the underscore is set in math between two pieces of text; the PDF keeps the source."""
+    from stiefelsym.reports.report import _md_math
+    assert _md_math(r"\dot X=P\ \text{along (dot\_XP3*)},\ x_1\ \text{for every }\kappa") == \
+        r"\dot X=P\ \text{along (dot}\_\text{XP3*)},\ x_1\ \text{for every }\kappa"

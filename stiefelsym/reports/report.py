@@ -621,7 +621,10 @@ def _md_math(tex: str) -> str:
     tex = re.sub(r"\\(" + "|".join(OPERATORS) + r")(?![A-Za-z])",
                  lambda m: r"\operatorname{" + OPERATORS[m.group(1)] + "}", tex)
     tex = re.sub(r"\\R(?![A-Za-z])", r"\\mathbb{R}", tex)
-    return re.sub(r"\\g(?![A-Za-z])", r"\\mathfrak{g}", tex)
+    tex = re.sub(r"\\g(?![A-Za-z])", r"\\mathfrak{g}", tex)
+    # a viewer's \text{} is plain text (MathJax without its text macros shows "\_" as it is): the
+    # underscore of a name, \text{along (dot\_XP3*)}, is set in math between two pieces of text
+    return re.sub(r"\\text\{[^{}]*\\_[^{}]*\}", lambda m: m.group(0).replace("\\_", r"}\_\text{"), tex)
 
 
 def _md_statement(statement: str) -> str:
