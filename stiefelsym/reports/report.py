@@ -1151,8 +1151,9 @@ def render_latex(results: Sequence[Result], meta: dict[str, Any] | None = None, 
                            + ("; correction: " + tex_words(next(iter(c.variants))) if c.variants else "")
                            for c in errata])
     if not detail:
-        out += [tex_escape("Every run, residual and certificate is in the companion document "
-                           "verification-runs.tex and in results.json."), ""]
+        out += [tex_escape("Every run, with the reductions its proof used (the chart of T*V, an equivariance, "
+                           "the dimension-free proof specialised to a size), its residual and its certificate, "
+                           "is in the companion document verification-runs.tex and in results.json."), ""]
     out += [r"\tableofcontents", ""]
 
     # the vocabulary before its first use: the errata speak of verdicts, methods and the bound p
