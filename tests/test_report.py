@@ -139,7 +139,7 @@ def test_errata_lists_failing_claim_with_witness_and_corrections(results):
     assert "- point: `a_1 = 1/2; S_12 = -3; W#1 = x_1`" in errata
     assert "- check dL/dt: residual nonzero, entry (1, 2) = 3/7" in errata
     assert "- rerun: `stiefelsym verify neumann-lax --size 3,1 --method rational --seed 0`" in errata
-    assert "the claim as printed was run at 2 sizes (3,1), (4,2)" in errata.lower()
+    assert "Candidate corrections: the claim as printed was run at 2 sizes (3,1), (4,2)" in errata
     assert r"| sign of $\lambda A$ flipped | **verified** | verified at all 2 computed sizes by rational " \
            "(p ≤ 2.9e-34) |" in errata
     assert "| M transposed | rejected | fails at (3,1) by rational |" in errata

@@ -1004,7 +1004,8 @@ def _md_corrections(c: ClaimResults) -> list[str]:
         change = _md_change(c.change_of(var)).replace("|", r"\|")
         rows.append([change or "–", _md_cell(var), f"**{status}**" if status == "verified" else status,
                      _md_cell("; ".join(phrases))])
-    where = f" {_corrections_rule(planned)[0].upper()}{_corrections_rule(planned)[1:]}" if planned else ""
+    # after the colon the sentence goes on in lower case, as in the PDF
+    where = f" {_corrections_rule(planned)}" if planned else ""
     return [f"Candidate corrections:{where}", ""] + _md_table(["correction (change of the formula)", "registered as", "status",
                                                                "runs"], rows, "llll")
 
