@@ -336,6 +336,30 @@ def _fitted_display(body: str, pieces: list[str]) -> str:
 _ASCII_SCRIPT = re.compile(r"(\^|_)(\{(?:[^{}]|\{[^{}]*\})*\}|-?\d+(?![^\W_])|⊥|[^\W_](?![^\W_]))")
 
 
+_UNICODE_SUB = dict(zip("0123456789+-−=()aehijklmnoprstuvx", "₀₁₂₃₄₅₆₇₈₉₊₋₋₌₍₎ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ"))
+_UNICODE_SUP = dict(zip("0123456789+-−=()TabcdefghijklmnoprstuvwxyzABDEGHIJKLMNOPRUVW",
+                        "⁰¹²³⁴⁵⁶⁷⁸⁹⁺⁻⁻⁼⁽⁾ᵀᵃᵇᶜᵈᵉᶠᵍʰⁱʲᵏˡᵐⁿᵒᵖʳˢᵗᵘᵛʷˣʸᶻᴬᴮᴰᴱᴳᴴᴵᴶᴷᴸᴹᴺᴼᴾᴿᵁⱽᵂ"))
+
+
+def unicode_words(text: str) -> str:
+    """Plain words that write scripts in ASCII (I_n, (A + λI_n)^{-1}, diag(I_{n-r}, B^{-1})) for a reader
+    of plain text (Markdown): each script whose every character has a Unicode sub- or superscript set
+    as one (Iₙ, ⁻¹, Iₙ₋ᵣ), a spaced ^ as the wedge, a spaced <= and >= as ≤ and ≥; any other script
+    keeps its ASCII form with its own scripts set (_{I_2} as _{I₂}, ^⊥ as it is)."""
+    text = re.sub(r"(?<=\s)([<>])=(?=\s)", lambda m: "≤" if m.group(1) == "<" else "≥", text.replace(" ^ ", " ∧ "))
+    text = re.sub(r"\S+", lambda m: _wedges(m.group(0)), text)
+
+    def one(m: re.Match) -> str:
+        if m.start() == 0 or text[m.start() - 1] == " ":
+            return m.group(0)                 # a script needs a base before it
+        body = m.group(2)[1:-1] if m.group(2).startswith("{") else m.group(2)
+        table = _UNICODE_SUP if m.group(1) == "^" else _UNICODE_SUB
+        if body and all(c in table for c in body):
+            return "".join(table[c] for c in body)
+        return m.group(1) + "{" + unicode_words(body) + "}" if m.group(2).startswith("{") else m.group(0)
+    return _ASCII_SCRIPT.sub(one, text)
+
+
 def tex_words(text: str) -> str:
     """Plain words that write scripts in ASCII (I_n, (A + λI_n)^{-1}, (e_1 ^ p_1)_{I_2}^2, as the
     registered words of a correction do) to LaTeX text: each script set as one, a spaced ^ as the wedge,

@@ -137,3 +137,15 @@ def test_an_exterior_product_with_an_ellipsis_is_set_with_wedges():
     assert r"(e\ensuremath{_{j}}\ensuremath{\wedge}p\ensuremath{_{i}})\ensuremath{^{2}}" in tex
     assert r"(e\ensuremath{_{k}}\ensuremath{\wedge}p\ensuremath{_{k}})" in tex
     assert tex.count("wedge") == 3 and r"\ensuremath{^{T}}" in tex
+
+
+def test_the_registered_words_read_in_unicode_in_markdown():
+    """For a plain-text reader the ASCII scripts of the catalog's words become Unicode scripts where
+    every character has one; a script that has none keeps its ASCII form, its own scripts set."""
+    from stiefelsym.latex import unicode_words
+    assert unicode_words("(LA-MAN3): (A + λI_n) in place of (A + λI_n)^{-1}") == \
+        "(LA-MAN3): (A + λIₙ) in place of (A + λIₙ)⁻¹"
+    assert unicode_words("diag(I_n, B^{-1}) in place of diag(I_{n-r}, B^{-1}); n <= 2r + 2") == \
+        "diag(Iₙ, B⁻¹) in place of diag(Iₙ₋ᵣ, B⁻¹); n ≤ 2r + 2"
+    assert unicode_words("(e_1 ^ p_1 + ... + e_r ^ p_r)_{I_2}^2, so(r,C)^⊥, N0_XP2, X^T P") == \
+        "(e₁ ∧ p₁ + ... + eᵣ ∧ pᵣ)_{I₂}², so(r,C)^⊥, N0_XP2, Xᵀ P"

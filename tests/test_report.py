@@ -332,8 +332,9 @@ def test_errata_table_aggregates_corrections_across_sizes():
     for r in rs:
         r.claim, r.section = "orbit", "2"
     md = render_markdown(rs)
-    assert "| n \\<= 2r + 2 | **verified** | verified at all 5 computed sizes by exact |" in md
-    assert "| n \\<= 2r | rejected | passes at (2,1), (3,1), (3,2) by exact; fails at (4,2), (5,2) by exact |" in md
+    # the registered words in Markdown: a spaced <= as ≤
+    assert "| n ≤ 2r + 2 | **verified** | verified at all 5 computed sizes by exact |" in md
+    assert "| n ≤ 2r | rejected | passes at (2,1), (3,1), (3,2) by exact; fails at (4,2), (5,2) by exact |" in md
     tex = render_latex(rs, detail=True)
     assert r"\textbf{verified} (verified at all 5 computed sizes by exact)." in tex
 

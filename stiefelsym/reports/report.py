@@ -20,7 +20,7 @@ from collections import Counter
 from typing import Any, Callable, Iterable, Sequence
 
 from stiefelsym import paperref, sizerules
-from stiefelsym.latex import greek_words, unicode_name, math_ok, split_math, tex_balanced, tex_display, tex_escape, tex_words
+from stiefelsym.latex import greek_words, unicode_name, unicode_words, math_ok, split_math, tex_balanced, tex_display, tex_escape, tex_words
 from stiefelsym.ir import notation
 from stiefelsym.ir.notation import changes_text as change_text
 from stiefelsym.results import PASSING, VERDICTS, Result
@@ -607,6 +607,12 @@ def _md_escape(text: Any) -> str:
     return "".join(out)
 
 
+def _md_words(text: Any) -> str:
+    """Words that write scripts in ASCII (the catalog's words of a correction, of what is wrong), for a
+    Markdown reader: the scripts in Unicode where they have one (Iₙ, ⁻¹), then escaped."""
+    return _md_escape(unicode_words(str(text)))
+
+
 def _md_cell(text: Any) -> str:
     return _md_escape(" ".join(str(text).split())).replace("|", r"\|")
 
@@ -693,7 +699,8 @@ def render_markdown(results: Sequence[Result], meta: dict[str, Any] | None = Non
     if errata:
         out += ["Fails as printed:", ""]
         out += [f"- `{c.id}` {_md_escape(labels(c.paper))}"
-                + ("; correction: " + _md_escape(next(iter(c.variants))) if c.variants else "") for c in errata]
+                + ("; correction: " + _md_escape(unicode_words(next(iter(c.variants)))) if c.variants else "")
+                for c in errata]
         out += [""]
 
     # the vocabulary before its first use: the errata speak of verdicts, methods and the bound p
@@ -850,7 +857,7 @@ def _md_erratum(c: ClaimResults) -> list[str]:
             + ".", ""]
     w = c.failures[0]
     if w.erratum:
-        out += [f"What is wrong: {_md_escape(greek_words(w.erratum))}", ""]
+        out += [f"What is wrong: {_md_escape(unicode_words(greek_words(w.erratum)))}", ""]
     out += _md_small_witness(c)
     if small_witness_of(c) is not None and "point" in (w.witness or {}):
         out += [f"The seeded run that found the failure: size {_md_escape(w.size)}, method {w.method}"
@@ -912,7 +919,7 @@ def _md_small_witness(c: ClaimResults) -> list[str]:
         return []
     r, w = found
     if w.get("kind") == "count":
-        return [_count_witness_text(c, r, w, _md_escape) + (f" The script `{WITNESS_SCRIPT_DIR}/{c.id}.py` "
+        return [_count_witness_text(c, r, w, _md_words) + (f" The script `{WITNESS_SCRIPT_DIR}/{c.id}.py` "
                                                             "(Python with sympy, no stiefelsym) recomputes it from "
                                                             "the paper's definitions." if _has_script(c) else ""), ""]
     on, parts, value = _point_witness(w)
@@ -952,7 +959,7 @@ def _tex_small_witness(c: ClaimResults) -> list[str]:
 
 
 def _count_witness_text(c: ClaimResults, r: Result, w: dict[str, Any], escape: Any) -> str:
-    head = "**A witness to check by hand:** " if escape is _md_escape else ""
+    head = "**A witness to check by hand:** " if escape is _md_words else ""
     what = w.get("meaning") or unicode_name(w["check"])
     return head + escape(f"at (n, r) = {r.size}, {what}: computed {w['value']}, where the printed statement "
                          f"gives {w['paper']}.")
@@ -981,12 +988,12 @@ def _with_change(c: ClaimResults, variant: str) -> str:
     """A registered correction, in Unicode: its change of the graph in the paper's notation, then its
     own words (the catalog's, unchanged)."""
     change = change_text(c.change_of(variant))
-    return f"{change} (registered as: {variant})" if change else variant
+    return f"{change} (registered as: {unicode_words(variant)})" if change else unicode_words(variant)
 
 
 def _md_with_change(c: ClaimResults, variant: str) -> str:
     change = _md_change(c.change_of(variant))
-    return f"{change} (registered as: {_md_escape(variant)})" if change else _md_escape(variant)
+    return f"{change} (registered as: {_md_words(variant)})" if change else _md_words(variant)
 
 
 def _tex_with_change(c: ClaimResults, variant: str) -> str:
@@ -1002,7 +1009,7 @@ def _md_corrections(c: ClaimResults) -> list[str]:
     for var, rs in c.variants.items():
         status, phrases = correction_summary(rs, planned)
         change = _md_change(c.change_of(var)).replace("|", r"\|")
-        rows.append([change or "–", _md_cell(var), f"**{status}**" if status == "verified" else status,
+        rows.append([change or "–", _md_cell(unicode_words(var)), f"**{status}**" if status == "verified" else status,
                      _md_cell("; ".join(phrases))])
     # after the colon the sentence goes on in lower case, as in the PDF
     where = f" {_corrections_rule(planned)}" if planned else ""
