@@ -345,7 +345,12 @@ def unicode_words(text: str) -> str:
     """Plain words that write scripts in ASCII (I_n, (A + λI_n)^{-1}, diag(I_{n-r}, B^{-1})) for a reader
     of plain text (Markdown): each script whose every character has a Unicode sub- or superscript set
     as one (Iₙ, ⁻¹, Iₙ₋ᵣ), a spaced ^ as the wedge, a spaced <= and >= as ≤ and ≥; any other script
-    keeps its ASCII form with its own scripts set (_{I_2} as _{I₂}, ^⊥ as it is)."""
+    keeps its ASCII form with its own scripts set (_{I_2} as _{I₂}, ^⊥ as it is).  ``$...$`` (LaTeX the
+    Markdown shows as mathematics) is kept as written."""
+    return "".join(f"${seg}$" if is_math else _unicode_scripts(seg) for is_math, seg in split_math(text))
+
+
+def _unicode_scripts(text: str) -> str:
     text = re.sub(r"(?<=\s)([<>])=(?=\s)", lambda m: "≤" if m.group(1) == "<" else "≥", text.replace(" ^ ", " ∧ "))
     text = re.sub(r"\S+", lambda m: _wedges(m.group(0)), text)
 
@@ -356,7 +361,7 @@ def unicode_words(text: str) -> str:
         table = _UNICODE_SUP if m.group(1) == "^" else _UNICODE_SUB
         if body and all(c in table for c in body):
             return "".join(table[c] for c in body)
-        return m.group(1) + "{" + unicode_words(body) + "}" if m.group(2).startswith("{") else m.group(0)
+        return m.group(1) + "{" + _unicode_scripts(body) + "}" if m.group(2).startswith("{") else m.group(0)
     return _ASCII_SCRIPT.sub(one, text)
 
 

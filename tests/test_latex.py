@@ -149,3 +149,5 @@ def test_the_registered_words_read_in_unicode_in_markdown():
         "diag(Iₙ, B⁻¹) in place of diag(Iₙ₋ᵣ, B⁻¹); n ≤ 2r + 2"
     assert unicode_words("(e_1 ^ p_1 + ... + e_r ^ p_r)_{I_2}^2, so(r,C)^⊥, N0_XP2, X^T P") == \
         "(e₁ ∧ p₁ + ... + eᵣ ∧ pᵣ)_{I₂}², so(r,C)^⊥, N0_XP2, Xᵀ P"
+    # LaTeX between dollars is the Markdown's mathematics: kept as written
+    assert unicode_words(r"$\Phi_{ij}^2$ in the second sum, I_n") == r"$\Phi_{ij}^2$ in the second sum, Iₙ"
