@@ -885,9 +885,8 @@ def _md_erratum_tail(c: ClaimResults, facts: dict[str, Any], w: Result, out: lis
         if len(others) > MAX_ERRATUM_RERUNS:
             out.append(f"- … and {len(others) - MAX_ERRATUM_RERUNS} more (in results.json)")
         out.append("")
-    if facts["verified"]:
-        out += ["Corrections found (verified at every size of the claim): "
-                + "; ".join(_md_with_change(c, v) for v in facts["verified"]) + ".", ""]
+    # the verified corrections are in the note for the authors and in the list of candidates below: not
+    # a third time here
     return out + _md_corrections(c)
 
 
@@ -989,11 +988,6 @@ def _with_change(c: ClaimResults, variant: str) -> str:
     own words (the catalog's, unchanged)."""
     change = change_text(c.change_of(variant))
     return f"{change} (registered as: {unicode_words(variant)})" if change else unicode_words(variant)
-
-
-def _md_with_change(c: ClaimResults, variant: str) -> str:
-    change = _md_change(c.change_of(variant))
-    return f"{change} (registered as: {_md_words(variant)})" if change else _md_words(variant)
 
 
 def _tex_with_change(c: ClaimResults, variant: str) -> str:
@@ -1455,9 +1449,8 @@ def _tex_erratum_tail(c: ClaimResults, facts: dict[str, Any], w: Result, out: li
         more = [f"… and {len(others) - reruns} more (in results.json)"] if len(others) > reruns else []
         out += ["Every other failure, reproducible with:"] + _tex_items(
             [_tt(x) for x in others[:reruns]] + [tex_escape(m) for m in more])
-    if facts["verified"]:
-        out += [tex_escape("Corrections found (verified at every size of the claim): ")
-                + "; ".join(_tex_with_change(c, v) for v in facts["verified"]) + ".", ""]
+    # the verified corrections are in the note for the authors and in the list of candidates below: not
+    # a third time here
     return out + _tex_corrections(c)
 
 
