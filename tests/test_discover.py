@@ -243,7 +243,9 @@ def test_the_latex_table_of_corrections_breaks_names_and_fits_its_columns(tmp_pa
     spaces = [_space("double-neumann-dual-lax"), _space("coupled-big-lax-normal")]
     tex = render_latex(spaces)
     assert r"\texttt{double-\allowbreak{}neumann-\allowbreak{}dual-\allowbreak{}lax} (LA3*D)" in tex
-    assert r"\raggedright \resizebox{\ifdim\width>\linewidth\linewidth\else\width\fi}{!}{$" in tex
+    # the words of the slot break as text; only the matrix, which TeX cannot break, is shrunk to the cell
+    assert r"\raggedright the off-diagonal blocks of $\mathcal L(\lambda) ={}$ \resizebox{\ifdim\width>" \
+           r"\linewidth\linewidth\else\width\fi}{!}{$\begin{pmatrix}" in tex
     assert tex.count(r"\tabularnewline") == 1 + len(spaces) and r"\\ \hline" not in tex
     if shutil.which("pdflatex") is None:
         return

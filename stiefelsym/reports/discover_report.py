@@ -5,6 +5,7 @@ Renders :class:`stiefelsym.analyses.discover.CorrectionSpace` records (nothing i
 depend on the records only."""
 from __future__ import annotations
 
+import re
 from pathlib import Path
 from typing import Sequence
 
@@ -88,6 +89,23 @@ def _tex_id(claim: str) -> str:
     return r"\texttt{" + claim.replace("-", r"-\allowbreak{}") + "}"
 
 
+def _tex_slot(slot: str) -> str:
+    r"""The formula searched, followed by =, in a table cell: words that open it (``\text{the last term
+    of }\dot Q``) as text, which breaks between the cell's lines."""
+    m = re.fullmatch(r"\\text\{([^{}$\\]*)\}(.*)", slot, re.S)
+    if m:
+        return m.group(1).rstrip() + f" ${m.group(2)} ={{}}$"
+    return f"${slot} ={{}}$"
+
+
+def _tex_cell_math(tex: str) -> str:
+    r"""Mathematics in a table cell: as it is when TeX can break it across the cell's lines; a matrix
+    (or ``\left … \right``), which it cannot, shrunk to the cell's width when wider (never overfull)."""
+    if "\\begin{" not in tex and "\\left" not in tex:
+        return f"${tex}$"
+    return r"\resizebox{\ifdim\width>\linewidth\linewidth\else\width\fi}{!}{$" + tex + "$}"
+
+
 #: the table's columns, as fractions of the text width
 COLUMNS = (0.19, 0.07, 0.04, 0.08, 0.32, 0.13)
 
@@ -105,9 +123,7 @@ def render_latex(spaces: Sequence[CorrectionSpace], sweep: Sweep | None = None) 
            row(["claim", "$(n,r)$", "$N$", "dim", "solution", "registered"]) + r" \hline", r"\endhead"]
     for sp in spaces:
         a = sp.ansatz
-        # a solution wider than its column is shrunk to it (never an overfull line)
-        sol = r"---" if sp.empty else (r"\resizebox{\ifdim\width>\linewidth\linewidth\else\width\fi}{!}{"
-                                       f"${a.slot_latex} = {sp.latex()}$}}")
+        sol = r"---" if sp.empty else _tex_slot(a.slot_latex) + " " + _tex_cell_math(sp.latex())
         out.append(row([f"{_tex_id(a.claim)} {a.label}", f"$({sp.size.n},{sp.size.r})$", str(sp.N),
                         _dimension(sp), sol, _registered(sp).replace("—", "---")]))
     out += [r"\end{longtable}}", ""]
