@@ -211,12 +211,20 @@ _GREEK_WORDS = {"Phi": "Φ", "Psi": "Ψ", "Lambda": "Λ", "lambda": "λ", "kappa
                 "Sigma": "Σ", "sigma": "σ", "omega": "ω", "mu": "μ", "Gamma": "Γ", "Delta": "Δ"}
 
 
+_GREEK_WORD = re.compile(r"(?<![A-Za-z])(d?)(" + "|".join(sorted(_GREEK_WORDS, key=len, reverse=True)) + r")(?![a-z])")
+
+
+def greek_words(text: str) -> str:
+    """Plain words that spell the paper's Greek letters in ASCII (Psi, lambda, L(nu), eta_so(r)) with
+    the letters themselves; a word that merely contains one (beta, Pit) is left alone."""
+    return _GREEK_WORD.sub(lambda m: m.group(1) + _GREEK_WORDS[m.group(2)], text)
+
+
 def unicode_name(name: str) -> str:
     """A check's ASCII name as mathematics in Unicode: ``X^T`` as Xᵀ, ``Phi`` as Φ, a trailing
     entry ``[1,2]`` as ", entry (1,2)"."""
     name = re.sub(r"\^T\b", "ᵀ", name)
-    name = re.sub(r"(?<![A-Za-z])(d?)(" + "|".join(sorted(_GREEK_WORDS, key=len, reverse=True)) + r")(?![a-z])",
-                  lambda m: m.group(1) + _GREEK_WORDS[m.group(2)], name)
+    name = greek_words(name)
     return re.sub(r"\[(\d+),(\d+)\]$", r", entry (\1,\2)", name)
 
 
@@ -247,9 +255,77 @@ def tex_display(statement: str) -> str:
         body = "\\begin{aligned}\n" + body + "\n\\end{aligned}"
     elif "\\\\" in top:
         body = "\\begin{gathered}\n" + body + "\n\\end{gathered}"
+    else:
+        pieces = display_pieces(body)
+        if len(pieces) > 1:
+            return _fitted_display(body, pieces)
     # shrunk to the line's width when it is wider (never an overfull line), at its size otherwise
     return ("\\begin{center}\\resizebox{\\ifdim\\width>\\linewidth\\linewidth\\else\\width\\fi}{!}{$\\displaystyle\n"
             + body + "\n$}\\end{center}\n")
+
+
+#: where a display of several formulas may break: a comma, semicolon or colon followed by a space
+#: command (a control space, a quad or a qquad), at the top level of the formula only
+_BREAK = re.compile(r"([,;:])\s*(?:\\qquad|\\quad|\\ )\s*")
+
+#: a display wider than this many line widths is set on several lines rather than shrunk
+WIDE = "1.15"
+
+
+def display_pieces(body: str) -> list[str]:
+    r"""The formulas of a display separated at its top level (outside braces, environments,
+    ``\left … \right``, parentheses, brackets and ``\{ \}``) by ``,\ ``, ``,\quad``, ``;\quad``,
+    ``:\ ``, …; each piece keeps its punctuation.  One piece when there is no such break."""
+    depth, cuts, i = 0, [], 0
+    while i < len(body):
+        m = re.match(r"\\(begin|end)\{[^}]*\}|\\(left|right)(?![A-Za-z])|\\[A-Za-z]+|\\.", body[i:])
+        if m:
+            token = m.group(0)
+            if m.group(1) == "begin" or m.group(2) == "left" or token in ("\\{", "\\langle"):
+                depth += 1
+            elif m.group(1) == "end" or m.group(2) == "right" or token in ("\\}", "\\rangle"):
+                depth -= 1
+            i += len(token)
+            continue
+        if body[i] in "{([":
+            depth += 1
+        elif body[i] in "})]":
+            depth -= 1
+        elif depth == 0 and body[i] in ",;:":
+            brk = _BREAK.match(body, i)
+            if brk:
+                cuts.append((i + 1, brk.end()))
+        i += 1
+    pieces, at = [], 0
+    for end, nxt in cuts:
+        pieces.append(body[at:end].strip())
+        at = nxt
+    pieces.append(body[at:].strip())
+    return [p for p in pieces if p]
+
+
+def _visible(tex: str) -> int:
+    """A rough width of a formula in characters: a command counts as one, braces as nothing."""
+    return len(re.sub(r"[{}]", "", re.sub(r"\\[A-Za-z]+", "x", tex)))
+
+
+def _two_lines(pieces: list[str]) -> list[str]:
+    """The pieces on two lines of about equal width, in their order."""
+    widths = [_visible(p) for p in pieces]
+    best = min(range(1, len(pieces)), key=lambda j: abs(2 * sum(widths[:j]) - sum(widths)))
+    return ["\\quad ".join(pieces[:best]), "\\quad ".join(pieces[best:])]
+
+
+def _fitted_display(body: str, pieces: list[str]) -> str:
+    r"""A display of several formulas as TeX fits it: on one line if it is at most :data:`WIDE` line
+    widths wide, else on two lines of about equal width if those are, else one formula a line; the
+    chosen form is shrunk to the line's width when it is still wider (never an overfull line)."""
+    def gathered(lines: list[str]) -> str:
+        return "$\\displaystyle\\begin{gathered}\n" + "\\\\\n".join(lines) + "\n\\end{gathered}$"
+    return ("\\begin{center}\\sbox0{$\\displaystyle\n" + body + "\n$}%\n"
+            f"\\ifdim\\wd0>{WIDE}\\linewidth\\sbox0{{" + gathered(_two_lines(pieces)) + "}\\fi%\n"
+            f"\\ifdim\\wd0>{WIDE}\\linewidth\\sbox0{{" + gathered(pieces) + "}\\fi%\n"
+            "\\resizebox{\\ifdim\\wd0>\\linewidth\\linewidth\\else\\wd0\\fi}{!}{\\usebox0}\\end{center}\n")
 
 
 
@@ -260,6 +336,35 @@ def tex_display(statement: str) -> str:
 _ASCII_SCRIPT = re.compile(r"(\^|_)(\{(?:[^{}]|\{[^{}]*\})*\}|-?\d+(?![^\W_])|⊥|[^\W_](?![^\W_]))")
 
 
+_UNICODE_SUB = dict(zip("0123456789+-−=()aehijklmnoprstuvx", "₀₁₂₃₄₅₆₇₈₉₊₋₋₌₍₎ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ"))
+_UNICODE_SUP = dict(zip("0123456789+-−=()TabcdefghijklmnoprstuvwxyzABDEGHIJKLMNOPRUVW",
+                        "⁰¹²³⁴⁵⁶⁷⁸⁹⁺⁻⁻⁼⁽⁾ᵀᵃᵇᶜᵈᵉᶠᵍʰⁱʲᵏˡᵐⁿᵒᵖʳˢᵗᵘᵛʷˣʸᶻᴬᴮᴰᴱᴳᴴᴵᴶᴷᴸᴹᴺᴼᴾᴿᵁⱽᵂ"))
+
+
+def unicode_words(text: str) -> str:
+    """Plain words that write scripts in ASCII (I_n, (A + λI_n)^{-1}, diag(I_{n-r}, B^{-1})) for a reader
+    of plain text (Markdown): each script whose every character has a Unicode sub- or superscript set
+    as one (Iₙ, ⁻¹, Iₙ₋ᵣ), a spaced ^ as the wedge, a spaced <= and >= as ≤ and ≥; any other script
+    keeps its ASCII form with its own scripts set (_{I_2} as _{I₂}, ^⊥ as it is).  ``$...$`` (LaTeX the
+    Markdown shows as mathematics) is kept as written."""
+    return "".join(f"${seg}$" if is_math else _unicode_scripts(seg) for is_math, seg in split_math(text))
+
+
+def _unicode_scripts(text: str) -> str:
+    text = re.sub(r"(?<=\s)([<>])=(?=\s)", lambda m: "≤" if m.group(1) == "<" else "≥", text.replace(" ^ ", " ∧ "))
+    text = re.sub(r"\S+", lambda m: _wedges(m.group(0)), text)
+
+    def one(m: re.Match) -> str:
+        if m.start() == 0 or text[m.start() - 1] == " ":
+            return m.group(0)                 # a script needs a base before it
+        body = m.group(2)[1:-1] if m.group(2).startswith("{") else m.group(2)
+        table = _UNICODE_SUP if m.group(1) == "^" else _UNICODE_SUB
+        if body and all(c in table for c in body):
+            return "".join(table[c] for c in body)
+        return m.group(1) + "{" + _unicode_scripts(body) + "}" if m.group(2).startswith("{") else m.group(0)
+    return _ASCII_SCRIPT.sub(one, text)
+
+
 def tex_words(text: str) -> str:
     """Plain words that write scripts in ASCII (I_n, (A + λI_n)^{-1}, (e_1 ^ p_1)_{I_2}^2, as the
     registered words of a correction do) to LaTeX text: each script set as one, a spaced ^ as the wedge,
@@ -267,8 +372,18 @@ def tex_words(text: str) -> str:
     return tex_text(text, _ascii_scripts)
 
 
+def _wedges(token: str) -> str:
+    """A word that writes an exterior product in ASCII: with an ellipsis, ``e_1^...^e_r^p_i``, every ^
+    before a letter in it is the wedge; without, a ^ between two subscripted letters, ``e_j^p_i``, is
+    (a power or a transpose, ^2, ^{-1}, X^T, Phi_{I_2}^2, stays a script)."""
+    if "^...^" not in token:
+        return re.sub(r"(?<=_[A-Za-z0-9}])\^(?=[A-Za-z]_)", "∧", token)
+    return re.sub(r"\^(?=[A-Za-z.])", "∧", token.replace("^...^", "∧...∧"))
+
+
 def _ascii_scripts(text: str) -> str:
     text = re.sub(r"(?<=\s)([<>])=(?=\s)", lambda m: "≤" if m.group(1) == "<" else "≥", text.replace(" ^ ", " ∧ "))
+    text = re.sub(r"\S+", lambda m: _wedges(m.group(0)), text)
     out, at = [], 0
     for m in _ASCII_SCRIPT.finditer(text):
         if m.start() == 0 or text[m.start() - 1] == " ":

@@ -231,3 +231,28 @@ def test_a_users_own_correction_search_through_the_command_line_and_the_api():
     assert "X·M = XXᵀAX − XPᵀP    [auto proved, free (all n, r) proved]" in r.output
     sp = correction_space(load_object(str(example), "ANSATZ"), verify=())
     assert (sp.N, sp.dimension) == (5, 2)
+
+
+def test_the_latex_table_of_corrections_breaks_names_and_fits_its_columns(tmp_path):
+    """A referee's PDF: a claim's name may break after its hyphens (it overran the next column), every
+    cell is ragged right, a solution wider than its column is shrunk to it, and the fragment compiles
+    with no overfull line."""
+    import shutil
+    import subprocess
+    from stiefelsym.reports.discover_report import render_latex
+    spaces = [_space("double-neumann-dual-lax"), _space("coupled-big-lax-normal")]
+    tex = render_latex(spaces)
+    assert r"\texttt{double-\allowbreak{}neumann-\allowbreak{}dual-\allowbreak{}lax} (LA3*D)" in tex
+    # the words of the slot break as text; only the matrix, which TeX cannot break, is shrunk to the cell
+    assert r"\raggedright the off-diagonal blocks of $\mathcal L(\lambda) ={}$ \resizebox{\ifdim\width>" \
+           r"\linewidth\linewidth\else\width\fi}{!}{$\begin{pmatrix}" in tex
+    assert tex.count(r"\tabularnewline") == 1 + len(spaces) and r"\\ \hline" not in tex
+    if shutil.which("pdflatex") is None:
+        return
+    (tmp_path / "discover.tex").write_text(tex, encoding="utf-8")
+    (tmp_path / "w.tex").write_text("\\documentclass{article}\\usepackage{amsmath,amssymb,longtable,graphicx}\n"
+                                    "\\begin{document}\\input{discover}\\end{document}\n", encoding="utf-8")
+    run = subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error", "w.tex"], cwd=tmp_path,
+                         capture_output=True, text=True, timeout=120)
+    assert run.returncode == 0, run.stdout[-2000:]
+    assert "Overfull" not in (tmp_path / "w.log").read_text(encoding="latin-1")

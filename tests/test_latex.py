@@ -5,7 +5,7 @@ import re
 
 import pytest
 
-from stiefelsym.latex import math_ok, tex_balanced, tex_display, tex_escape, tex_math, tex_text
+from stiefelsym.latex import display_pieces, math_ok, tex_balanced, tex_display, tex_escape, tex_math, tex_text
 
 NASTY = r"50% of #cases & ~x^2 {b} \foo <a|b> under_score, Božidar Jovanović, dΦ/dt = [XXᵀ, A] ≤ ½"
 
@@ -51,7 +51,11 @@ def test_tex_math_maps_unicode():
 def test_tex_display_environments():
     # every display is shrunk to the line's width when wider (no overfull line)
     assert all(tex_display(STATEMENTS[k]).startswith("\\begin{center}\\resizebox")
-               for k in ("prep", "orbit", "aligned", "lines"))
+               for k in ("orbit", "aligned", "lines"))
+    # one of several formulas is first fitted on one, two or one formula a line, then shrunk
+    prep = tex_display(STATEMENTS["prep"])
+    assert prep.startswith("\\begin{center}\\sbox0{") and prep.count("\\ifdim\\wd0>1.15\\linewidth") == 2
+    assert prep.rstrip().endswith("\\resizebox{\\ifdim\\wd0>\\linewidth\\linewidth\\else\\wd0\\fi}{!}{\\usebox0}\\end{center}")
     assert "aligned" not in tex_display(STATEMENTS["prep"])
     assert "aligned" not in tex_display(STATEMENTS["orbit"])  # & only inside cases
     assert "\\begin{aligned}" in tex_display(STATEMENTS["aligned"])
@@ -98,3 +102,52 @@ def test_the_registered_words_set_a_spaced_inequality_as_one():
     tex = tex_words("regular iff n <= 2r + 2; rank >= 5; <axial(P1), P2>; a<=b")
     assert r"n \ensuremath{\le} 2r" in tex and r"rank \ensuremath{\ge} 5" in tex
     assert r"\ensuremath{<}axial" in tex and r"a\ensuremath{<}=b" in tex
+
+
+def test_a_wide_display_breaks_only_between_its_formulas():
+    """A display of several formulas breaks after a comma, semicolon or colon followed by a space
+    command at its top level; never inside braces, a matrix, \\left…\\right, parentheses or a set."""
+    body = (r"H=T:\ \dot L(\nu)=[L(\nu),\ A(\nu)],\ L=\begin{pmatrix}0&a,\ b\\c&0\end{pmatrix}\nu,\quad "
+            r"\left(c,\ d\right)=\{x,\ y\},\ f(a,\ b);\qquad \text{along (x,\ y)},\ z\leftarrow w")
+    pieces = display_pieces(body)
+    assert pieces == [r"H=T:", r"\dot L(\nu)=[L(\nu),\ A(\nu)],", r"L=\begin{pmatrix}0&a,\ b\\c&0\end{pmatrix}\nu,",
+                      r"\left(c,\ d\right)=\{x,\ y\},", r"f(a,\ b);", r"\text{along (x,\ y)},", r"z\leftarrow w"]
+    assert display_pieces(r"a=b,c=d") == [r"a=b,c=d"]
+    # every piece is in each of the three forms, in its order; nothing of the formula is lost
+    tex = tex_display(body)
+    one, two, each = tex.split("\\ifdim\\wd0>1.15\\linewidth")
+    for form in (one, two, each):
+        at = [form.index(p) for p in pieces]
+        assert at == sorted(at)
+    # the line breaks of the gathered forms (the matrix's own \\\\ is followed by no newline)
+    assert "\\\\\n" not in one and two.count("\\\\\n") == 1 and each.count("\\\\\n") == len(pieces) - 1
+
+
+def test_an_exterior_product_with_an_ellipsis_is_set_with_wedges():
+    """(e_1^...^e_r^p_i)^2 in the words of what is wrong: every ^ before a letter of that word is a
+    wedge, the square stays a power; a word with no ^...^ keeps its scripts (X^T, A^{-1})."""
+    from stiefelsym.latex import tex_words
+    tex = tex_words("sums (e_1^...^e_r^p_i^p_j)^2 over i < j; X^T P and A^{-1}")
+    assert tex.startswith(r"sums (e\ensuremath{_{1}}\ensuremath{\wedge}...\ensuremath{\wedge}e\ensuremath{_{r}}"
+                          r"\ensuremath{\wedge}p\ensuremath{_{i}}\ensuremath{\wedge}p\ensuremath{_{j}})\ensuremath{^{2}}")
+    assert r"X\ensuremath{^{T}} P" in tex and r"A\ensuremath{^{\ensuremath{-}1}}" in tex
+    assert r"\^{}" not in tex
+    # without an ellipsis: a ^ between two subscripted letters is the wedge, a power or transpose is not
+    tex = tex_words("the mixed terms (e_j^p_i)^2 and (e_j^p_j)(e_k^p_k); Phi_{I_2}^2, X_{ij}^T, d^2e_3/dt^2")
+    assert r"(e\ensuremath{_{j}}\ensuremath{\wedge}p\ensuremath{_{i}})\ensuremath{^{2}}" in tex
+    assert r"(e\ensuremath{_{k}}\ensuremath{\wedge}p\ensuremath{_{k}})" in tex
+    assert tex.count("wedge") == 3 and r"\ensuremath{^{T}}" in tex
+
+
+def test_the_registered_words_read_in_unicode_in_markdown():
+    """For a plain-text reader the ASCII scripts of the catalog's words become Unicode scripts where
+    every character has one; a script that has none keeps its ASCII form, its own scripts set."""
+    from stiefelsym.latex import unicode_words
+    assert unicode_words("(LA-MAN3): (A + λI_n) in place of (A + λI_n)^{-1}") == \
+        "(LA-MAN3): (A + λIₙ) in place of (A + λIₙ)⁻¹"
+    assert unicode_words("diag(I_n, B^{-1}) in place of diag(I_{n-r}, B^{-1}); n <= 2r + 2") == \
+        "diag(Iₙ, B⁻¹) in place of diag(Iₙ₋ᵣ, B⁻¹); n ≤ 2r + 2"
+    assert unicode_words("(e_1 ^ p_1 + ... + e_r ^ p_r)_{I_2}^2, so(r,C)^⊥, N0_XP2, X^T P") == \
+        "(e₁ ∧ p₁ + ... + eᵣ ∧ pᵣ)_{I₂}², so(r,C)^⊥, N0_XP2, Xᵀ P"
+    # LaTeX between dollars is the Markdown's mathematics: kept as written
+    assert unicode_words(r"$\Phi_{ij}^2$ in the second sum, I_n") == r"$\Phi_{ij}^2$ in the second sum, Iₙ"

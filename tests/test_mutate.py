@@ -652,7 +652,8 @@ def test_errata_section_reads_like_a_referees_report():
     assert "- rerun: `stiefelsym verify general-line --size 3,2 --method modular --seed 0`" in errata
     assert "Every other failure, reproducible with:" in errata
     assert "- `stiefelsym verify general-line --size 4,2 --method modular --seed 0`" in errata
-    assert "Corrections found (verified at every size of the claim)" in errata
+    assert "It holds at every size checked with the correction: " in note
+    assert "Corrections found" not in errata     # said once, in the note (and listed with its runs)
     tex = render_latex(_erratum_results())
     assert r"\textbf{Note for the authors.}" in tex and r"$\Phi_{ij}^2$" in tex
 

@@ -8,7 +8,7 @@ import xml.etree.ElementTree as ET
 
 import pytest
 
-from stiefelsym.reports.report import (case_name, render_junit, render_latex, render_markdown,
+from stiefelsym.reports.report import (_tex_change, case_name, render_junit, render_latex, render_markdown,
                                render_mutation_markdown, render_summary)
 from stiefelsym.results import CheckOutcome, Result, dump_results, load_results
 
@@ -88,8 +88,8 @@ def test_markdown_has_every_claim_in_its_section(results):
     for cid in CLAIMS:
         assert f"### `{cid}`" in md
     headings = re.findall(r"^## (.*)$", md, re.M)
-    assert headings == ["Errata", "Summary", "§2", "§3", "§5", "§6", "§7",
-                        "Claims outside the paper's sections", "How to reproduce", "What the verdicts mean"]
+    assert headings == ["What the verdicts mean", "Errata", "Summary", "§2", "§3", "§5", "§6", "§7",
+                        "Claims outside the paper's sections", "How to reproduce"]
     assert md.index("### `orbit`") < md.index("### `aligned`") < md.index("### `prep`")
 
 
@@ -139,7 +139,7 @@ def test_errata_lists_failing_claim_with_witness_and_corrections(results):
     assert "- point: `a_1 = 1/2; S_12 = -3; W#1 = x_1`" in errata
     assert "- check dL/dt: residual nonzero, entry (1, 2) = 3/7" in errata
     assert "- rerun: `stiefelsym verify neumann-lax --size 3,1 --method rational --seed 0`" in errata
-    assert "the claim as printed was run at 2 sizes (3,1), (4,2)" in errata.lower()
+    assert "Candidate corrections: the claim as printed was run at 2 sizes (3,1), (4,2)" in errata
     assert r"| sign of $\lambda A$ flipped | **verified** | verified at all 2 computed sizes by rational " \
            "(p ≤ 2.9e-34) |" in errata
     assert "| M transposed | rejected | fails at (3,1) by rational |" in errata
@@ -169,6 +169,22 @@ def test_render_from_round_trip_json(results, tmp_path):
     meta2, back = load_results(tmp_path / "results.json")
     assert render_markdown(back, meta2) == render_markdown(results, meta)
     assert render_latex(back, meta2) == render_latex(results, meta)
+
+
+def test_verdicts_and_methods_are_explained_before_the_errata_use_them(results):
+    """A referee meets "verified", "by modular", "p <= ..." in the first erratum: the vocabulary
+    (verdicts, methods, the bound p, graphs and their digests) comes before it, in both documents."""
+    md = render_markdown(results)
+    vocabulary, errata = md.index("## What the verdicts mean"), md.index("## Errata")
+    assert vocabulary < errata < md.index("### `neumann-lax`")
+    for word in ("- **proved**:", "- **modular**:", "**The bound p.**", "**Graphs and digests.**"):
+        assert vocabulary < md.index(word) < errata
+    tex = render_latex(results)
+    vocabulary, errata = tex.index(r"\section*{What the verdicts mean}"), tex.index(r"\section*{Errata}")
+    assert tex.index(r"\tableofcontents") < vocabulary < errata
+    for word in (r"\item[proved]", r"\item[modular]", r"\paragraph{The bound $p$.}", r"\paragraph{Graphs and digests.}"):
+        assert vocabulary < tex.index(word) < errata
+    assert tex.count(r"\section*{What the verdicts mean}") == md.count("## What the verdicts mean") == 1
 
 
 def test_dimension_free_derivations_go_into_latex():
@@ -316,8 +332,9 @@ def test_errata_table_aggregates_corrections_across_sizes():
     for r in rs:
         r.claim, r.section = "orbit", "2"
     md = render_markdown(rs)
-    assert "| n \\<= 2r + 2 | **verified** | verified at all 5 computed sizes by exact |" in md
-    assert "| n \\<= 2r | rejected | passes at (2,1), (3,1), (3,2) by exact; fails at (4,2), (5,2) by exact |" in md
+    # the registered words in Markdown: a spaced <= as ≤
+    assert "| n ≤ 2r + 2 | **verified** | verified at all 5 computed sizes by exact |" in md
+    assert "| n ≤ 2r | rejected | passes at (2,1), (3,1), (3,2) by exact; fails at (4,2), (5,2) by exact |" in md
     tex = render_latex(rs, detail=True)
     assert r"\textbf{verified} (verified at all 5 computed sizes by exact)." in tex
 
@@ -565,3 +582,65 @@ def test_how_obtained_names_the_sizes_of_each_reduction():
     md = render_markdown(runs)
     assert "- exact at (4,4), (5,5): the chart X = I" in md
     assert "- modular: points of the Cayley chart" in md
+
+
+def test_a_changed_formula_with_left_right_never_overflows_the_line():
+    """A mutant's change set in ``\\left … \\right`` (which TeX cannot break) is shrunk to 0.9 of the
+    line and may begin a line; a formula TeX can break stays plain inline mathematics."""
+    wide = r"\mathrm{tr}\left(I_r \left(\tfrac{1}{2} (\Psi - \Psi^T)\right)\right)"
+    tex = _tex_change([{"where": "H", "old": "a", "new": "b", "old_tex": wide, "new_tex": "X^T P"}])
+    assert (r"\nobreak\hfil\penalty0\hfilneg\relax\resizebox{\ifdim\width>0.9\linewidth 0.9\linewidth\else"
+            r"\width\fi}{!}{$" + wide + "$}") in tex
+    assert tex.endswith(r"$\to$ $X^T P$")
+
+
+def test_a_count_witness_to_check_by_hand_sets_its_scripts_in_the_pdf():
+    """The hand witness of a count names the printed formula in the paper's notation: diag(I_{n-r},
+    B^{-1}) is set with scripts in the PDF, never as the characters _{ and ^{."""
+    small = {"kind": "count", "check": "rows of V", "value": 2, "paper": 1,
+             "meaning": "the rows of V; printed: the size of diag(I_{n-r}, B^{-1})"}
+    rs = [result("neumann-lax", 1, 1, "exact", "fails", expected=False, witness={"small": small})]
+    tex = render_latex(rs)
+    line = next(x for x in tex.splitlines() if x.startswith(r"\textbf{A witness to check by hand:}"))
+    assert r"diag(I\ensuremath{_{n\ensuremath{-}r}}, B\ensuremath{^{\ensuremath{-}1}}): computed 2" in line
+    assert r"\_\{" not in line and r"\^{}" not in line
+    md = render_markdown(rs)
+    assert "**A witness to check by hand:** at (n, r) = (1,1), the rows of V; printed: the size of" in md
+
+
+def test_what_is_wrong_spells_the_greek_letters_as_letters():
+    """The catalog writes what is wrong in ASCII (Psi, L(nu), Q(lambda*)); a referee reads Ψ, L(ν), Q(λ*)
+    in both documents, and a word that merely contains a letter's name (beta, Pit) is left alone."""
+    text = "with <Psi, Psi> and L(nu), Q(lambda*); beta and Pit stay"
+    rs = [result("neumann-lax", 3, 1, "exact", "fails", expected=False, erratum=text)]
+    md, tex = render_markdown(rs), render_latex(rs)
+    assert "What is wrong: with \\<Ψ, Ψ\\> and L(ν), Q(λ\\*); beta and Pit stay" in md
+    line = next(x for x in tex.splitlines() if x.startswith("What is wrong: "))
+    assert r"\ensuremath{\Psi}" in line and r"L(\ensuremath{\nu})" in line and "beta and Pit stay" in line
+    assert "Psi" not in line.replace(r"\Psi", "")
+
+
+def test_the_summary_by_section_is_the_same_in_both_documents(results):
+    """The Markdown's summary opens with the PDF's table by section, the same numbers and a total that
+    is the sum of its rows (and equals the headline's counts)."""
+    md, tex = render_markdown(results), render_latex(results)
+    summary = md[md.index("## Summary"):md.index("## §2")]
+    md_rows = [[c.strip().strip("*") for c in line.split("|")[1:-1]]
+               for line in summary.splitlines() if line.startswith("| ") and not line.startswith("| ---")]
+    assert md_rows[0] == ["section", "claims", "all n, r", "every size", "fail as printed", "unexpected"]
+    table = tex[tex.index(r"\begin{tabular}{@{}P{6.2cm}rrrrr@{}}"):]
+    table = table[:table.index(r"\end{tabular}")]
+    tex_rows = [[c.strip() for c in line.removesuffix(r"\\").split("&")] for line in table.splitlines()
+                if line.endswith(r"\\") and not line.startswith("section")]
+    numbers = [row[1:] for row in md_rows[1:md_rows.index(next(r for r in md_rows if r[0] == "claim"))]]
+    assert numbers == [row[1:] for row in tex_rows]
+    *rows, total = numbers
+    assert total == [str(sum(int(r[i]) for r in rows)) for i in range(5)]
+
+
+def test_markdown_math_sets_the_underscore_of_a_name_in_text_as_math():
+    """\\text{along (dot\\_XP3*)} is plain text to a Markdown viewer's MathJax, which would show the
+    backslash: the underscore is set in math between two pieces of text; the PDF keeps the source."""
+    from stiefelsym.reports.report import _md_math
+    assert _md_math(r"\dot X=P\ \text{along (dot\_XP3*)},\ x_1\ \text{for every }\kappa") == \
+        r"\dot X=P\ \text{along (dot}\_\text{XP3*)},\ x_1\ \text{for every }\kappa"

@@ -175,3 +175,17 @@ def test_tables_text_prints_inequalities_and_squares_in_the_default_font():
         r"r = 1 and n $\le$ 2 (2l = n$^2$ - n), r $\ge$ 3, a $<$ b"
     assert _tex_title("§2–§4") == r"\ensuremath{\S}2--\ensuremath{\S}4"
     assert "fontenc" not in STANDALONE and r"\labelitemi" in STANDALONE
+
+
+def test_the_latex_states_the_range_of_the_rows_as_the_markdown_does(small):
+    """Rows beyond n_max (to the extended n_max, without the completeness checks) are announced in the
+    PDF's heading as in the Markdown's title: never "n <= 9" above rows at n = 12."""
+    import copy
+    T = copy.copy(small)
+    T.extended_n_max = 6
+    tex, md = tables.render_latex(T, {}), tables.render_markdown(T, {})
+    assert r"\paragraph{Dimensions, printed against computed ($n\le 4$; $n\le 6$ without the completeness checks).}" in tex
+    assert r"For $4 < n\le 6$ the columns of completeness checks" in tex
+    assert "(n ≤ 4; n ≤ 6 without the completeness checks)" in md.splitlines()[0]
+    T.extended_n_max = 4
+    assert r"\paragraph{Dimensions, printed against computed ($n\le 4$).}" in tables.render_latex(T, {})

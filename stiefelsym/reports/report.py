@@ -20,7 +20,7 @@ from collections import Counter
 from typing import Any, Callable, Iterable, Sequence
 
 from stiefelsym import paperref, sizerules
-from stiefelsym.latex import unicode_name, math_ok, split_math, tex_balanced, tex_display, tex_escape, tex_words
+from stiefelsym.latex import greek_words, unicode_name, unicode_words, math_ok, split_math, tex_balanced, tex_display, tex_escape, tex_words
 from stiefelsym.ir import notation
 from stiefelsym.ir.notation import changes_text as change_text
 from stiefelsym.results import PASSING, VERDICTS, Result
@@ -116,11 +116,27 @@ BOUND_EXPLANATION = (
     "choices of the run only, which the seed fixes, for a claim written independently "
     "of the seed.")
 
+GRAPH_EXPLANATION = (
+    "A claim is a function of the matrices X, P, A, … that returns its residuals (left side minus "
+    "right side).  It is evaluated once on symbols, which records it as a graph of matrix "
+    "operations (products, transposes, inverses, derivatives along a flow) with exact constants; "
+    "every method computes from that graph, never from the claim's code.  The digest is a "
+    "SHA-256 hash of the graph (its first 12 hex digits are shown): two records with the same "
+    "digest are about the same computation, and the command stiefelsym check compares it when it "
+    "traces every record again.")
+
 EXPECTED_EXPLANATION = (
     "Each verdict is compared with what the catalog expects: a statement of the paper "
     "is expected to hold; a printed formula already known to be wrong is expected to "
     "fail as printed.  A verdict the catalog does not expect is marked UNEXPECTED; the "
     "command exits with status 1 if there is any.")
+
+SECTION_TABLE_INTRO = (
+    "Per section of the paper: its claims; those proved for every n and r at once (dimension-free, as "
+    "printed; for a statement made at one r, every n at that r, and for one made at r = 1 and at r = n, "
+    "every n at each); those that hold as printed at every size computed (proved, or checked at random "
+    "exact points); those that fail as printed (the errata); and those with a verdict the catalog does "
+    "not expect.")
 
 ERRATA_INTRO = (
     "Statements that fail as printed.  Each comes with a witness, reproducible with the rerun "
@@ -591,6 +607,12 @@ def _md_escape(text: Any) -> str:
     return "".join(out)
 
 
+def _md_words(text: Any) -> str:
+    """Words that write scripts in ASCII (the catalog's words of a correction, of what is wrong), for a
+    Markdown reader: the scripts in Unicode where they have one (Iₙ, ⁻¹), then escaped."""
+    return _md_escape(unicode_words(str(text)))
+
+
 def _md_cell(text: Any) -> str:
     return _md_escape(" ".join(str(text).split())).replace("|", r"\|")
 
@@ -605,7 +627,10 @@ def _md_math(tex: str) -> str:
     tex = re.sub(r"\\(" + "|".join(OPERATORS) + r")(?![A-Za-z])",
                  lambda m: r"\operatorname{" + OPERATORS[m.group(1)] + "}", tex)
     tex = re.sub(r"\\R(?![A-Za-z])", r"\\mathbb{R}", tex)
-    return re.sub(r"\\g(?![A-Za-z])", r"\\mathfrak{g}", tex)
+    tex = re.sub(r"\\g(?![A-Za-z])", r"\\mathfrak{g}", tex)
+    # a viewer's \text{} is plain text (MathJax without its text macros shows "\_" as it is): the
+    # underscore of a name, \text{along (dot\_XP3*)}, is set in math between two pieces of text
+    return re.sub(r"\\text\{[^{}]*\\_[^{}]*\}", lambda m: m.group(0).replace("\\_", r"}\_\text{"), tex)
 
 
 def _md_statement(statement: str) -> str:
@@ -674,15 +699,36 @@ def render_markdown(results: Sequence[Result], meta: dict[str, Any] | None = Non
     if errata:
         out += ["Fails as printed:", ""]
         out += [f"- `{c.id}` {_md_escape(labels(c.paper))}"
-                + ("; correction: " + _md_escape(next(iter(c.variants))) if c.variants else "") for c in errata]
+                + ("; correction: " + _md_escape(unicode_words(next(iter(c.variants)))) if c.variants else "")
+                for c in errata]
         out += [""]
+
+    # the vocabulary before its first use: the errata speak of verdicts, methods and the bound p
+    out += ["## What the verdicts mean", ""]
+    out += [f"- **{v}**: {_md_escape(VERDICT_MEANING[v])}" for v in VERDICTS]
+    out += ["", f"**The methods.** {METHODS_INTRO}", ""]
+    out += [f"- **{m}**: {_md_escape(t)}" for m, t in METHOD_MEANING.items()]
+    out += ["", f"**The bound p.** {_md_escape(BOUND_EXPLANATION)}", "",
+            f"**Graphs and digests.** {_md_escape(GRAPH_EXPLANATION)}", "",
+            f"**Expected verdicts.** {_md_escape(EXPECTED_EXPLANATION)}", ""]
 
     out += ["## Errata", ""]
     out += _errata_body(claims, _md_escape, _md_erratum,
                         lambda c: [f"### `{c.id}` {_md_escape(labels(c.paper))}", ""] + _md_corrections(c))
 
     present, rows = _summary_rows(claims)
-    out += ["## Summary", "", "For each claim as printed: the verdict of the dimension-free method (all n, r "
+    # the PDF's table by section first (the same numbers), then the table by claim
+    out += ["## Summary", "", _md_escape(SECTION_TABLE_INTRO), ""]
+    total: Counter = Counter()
+    section_rows = []
+    for sec, cs in group_by_section(claims):
+        k = section_counts(cs)
+        total.update(k)
+        section_rows.append([_md_cell(_section_heading(sec, meta))] + [str(v) for v in k.values()])
+    keys = list(section_counts([]))
+    out += _md_table(["section"] + keys, section_rows + [["**total**"] + [f"**{total[k]}**" for k in keys]],
+                     "l" + "r" * len(keys))
+    out += ["For each claim as printed: the verdict of the dimension-free method (all n, r "
             "at once), then the runs at fixed sizes (n, r) by verdict.", ""]
     out += _md_table(["claim", "paper", "§", "kind"] + present + ["status"],
                      [[f"`{c.id}`", _md_cell(labels(c.paper)), c.section or "–", c.kind]
@@ -698,12 +744,6 @@ def render_markdown(results: Sequence[Result], meta: dict[str, Any] | None = Non
 
     out += ["## How to reproduce", "", "```sh", meta.get("command") or "stiefelsym verify", "```", ""]
     out += [_md_escape(f) for f in _run_facts(meta)] + [""]
-    out += ["## What the verdicts mean", ""]
-    out += [f"- **{v}**: {_md_escape(VERDICT_MEANING[v])}" for v in VERDICTS]
-    out += ["", f"**The methods.** {METHODS_INTRO}", ""]
-    out += [f"- **{m}**: {_md_escape(t)}" for m, t in METHOD_MEANING.items()]
-    out += ["", f"**The bound p.** {_md_escape(BOUND_EXPLANATION)}", "",
-            f"**Expected verdicts.** {_md_escape(EXPECTED_EXPLANATION)}", ""]
     if mutation:
         out += _md_mutation_section(_mutation_data(mutation))
     return "\n".join(out).rstrip() + "\n"
@@ -817,7 +857,7 @@ def _md_erratum(c: ClaimResults) -> list[str]:
             + ".", ""]
     w = c.failures[0]
     if w.erratum:
-        out += [f"What is wrong: {_md_escape(w.erratum)}", ""]
+        out += [f"What is wrong: {_md_escape(unicode_words(greek_words(w.erratum)))}", ""]
     out += _md_small_witness(c)
     if small_witness_of(c) is not None and "point" in (w.witness or {}):
         out += [f"The seeded run that found the failure: size {_md_escape(w.size)}, method {w.method}"
@@ -845,9 +885,8 @@ def _md_erratum_tail(c: ClaimResults, facts: dict[str, Any], w: Result, out: lis
         if len(others) > MAX_ERRATUM_RERUNS:
             out.append(f"- … and {len(others) - MAX_ERRATUM_RERUNS} more (in results.json)")
         out.append("")
-    if facts["verified"]:
-        out += ["Corrections found (verified at every size of the claim): "
-                + "; ".join(_md_with_change(c, v) for v in facts["verified"]) + ".", ""]
+    # the verified corrections are in the note for the authors and in the list of candidates below: not
+    # a third time here
     return out + _md_corrections(c)
 
 
@@ -879,7 +918,7 @@ def _md_small_witness(c: ClaimResults) -> list[str]:
         return []
     r, w = found
     if w.get("kind") == "count":
-        return [_count_witness_text(c, r, w, _md_escape) + (f" The script `{WITNESS_SCRIPT_DIR}/{c.id}.py` "
+        return [_count_witness_text(c, r, w, _md_words) + (f" The script `{WITNESS_SCRIPT_DIR}/{c.id}.py` "
                                                             "(Python with sympy, no stiefelsym) recomputes it from "
                                                             "the paper's definitions." if _has_script(c) else ""), ""]
     on, parts, value = _point_witness(w)
@@ -899,7 +938,8 @@ def _tex_small_witness(c: ClaimResults) -> list[str]:
         return []
     r, w = found
     if w.get("kind") == "count":
-        return [r"\textbf{A witness to check by hand:} " + _count_witness_text(c, r, w, tex_escape)
+        # in words whose ASCII scripts are set as scripts: diag(I_{n-r}, B^{-1})
+        return [r"\textbf{A witness to check by hand:} " + _count_witness_text(c, r, w, tex_words)
                 + ((tex_escape(" The script ") + _tt(f"{WITNESS_SCRIPT_DIR}/{c.id}.py")
                     + tex_escape(" (Python with sympy, no stiefelsym) recomputes it from the paper's definitions."))
                    if _has_script(c) else ""), ""]
@@ -918,7 +958,7 @@ def _tex_small_witness(c: ClaimResults) -> list[str]:
 
 
 def _count_witness_text(c: ClaimResults, r: Result, w: dict[str, Any], escape: Any) -> str:
-    head = "" if escape is tex_escape else "**A witness to check by hand:** "
+    head = "**A witness to check by hand:** " if escape is _md_words else ""
     what = w.get("meaning") or unicode_name(w["check"])
     return head + escape(f"at (n, r) = {r.size}, {what}: computed {w['value']}, where the printed statement "
                          f"gives {w['paper']}.")
@@ -947,12 +987,7 @@ def _with_change(c: ClaimResults, variant: str) -> str:
     """A registered correction, in Unicode: its change of the graph in the paper's notation, then its
     own words (the catalog's, unchanged)."""
     change = change_text(c.change_of(variant))
-    return f"{change} (registered as: {variant})" if change else variant
-
-
-def _md_with_change(c: ClaimResults, variant: str) -> str:
-    change = _md_change(c.change_of(variant))
-    return f"{change} (registered as: {_md_escape(variant)})" if change else _md_escape(variant)
+    return f"{change} (registered as: {unicode_words(variant)})" if change else unicode_words(variant)
 
 
 def _tex_with_change(c: ClaimResults, variant: str) -> str:
@@ -968,9 +1003,10 @@ def _md_corrections(c: ClaimResults) -> list[str]:
     for var, rs in c.variants.items():
         status, phrases = correction_summary(rs, planned)
         change = _md_change(c.change_of(var)).replace("|", r"\|")
-        rows.append([change or "–", _md_cell(var), f"**{status}**" if status == "verified" else status,
+        rows.append([change or "–", _md_cell(unicode_words(var)), f"**{status}**" if status == "verified" else status,
                      _md_cell("; ".join(phrases))])
-    where = f" {_corrections_rule(planned)[0].upper()}{_corrections_rule(planned)[1:]}" if planned else ""
+    # after the colon the sentence goes on in lower case, as in the PDF
+    where = f" {_corrections_rule(planned)}" if planned else ""
     return [f"Candidate corrections:{where}", ""] + _md_table(["correction (change of the formula)", "registered as", "status",
                                                                "runs"], rows, "llll")
 
@@ -1117,9 +1153,21 @@ def render_latex(results: Sequence[Result], meta: dict[str, Any] | None = None, 
                            + ("; correction: " + tex_words(next(iter(c.variants))) if c.variants else "")
                            for c in errata])
     if not detail:
-        out += [tex_escape("Every run, residual and certificate is in the companion document "
-                           "verification-runs.tex and in results.json."), ""]
+        out += [tex_escape("Every run, with the reductions its proof used (the chart of T*V, an equivariance, "
+                           "the dimension-free proof specialised to a size), its residual and its certificate, "
+                           "is in the companion document verification-runs.tex and in results.json."), ""]
     out += [r"\tableofcontents", ""]
+
+    # the vocabulary before its first use: the errata speak of verdicts, methods and the bound p
+    out += _toc_section("What the verdicts mean") + [r"\begin{description}"]
+    out += [f"\\item[{v}] {tex_escape(VERDICT_MEANING[v])}" for v in VERDICTS]
+    out += [r"\end{description}",
+            r"\paragraph{The methods.} " + tex_escape(METHODS_INTRO), r"\begin{description}"]
+    out += [f"\\item[{m}] {tex_escape(t)}" for m, t in METHOD_MEANING.items()]
+    out += [r"\end{description}",
+            r"\paragraph{The bound $p$.} " + tex_escape(BOUND_EXPLANATION),
+            r"\paragraph{Graphs and digests.} " + tex_escape(GRAPH_EXPLANATION),
+            r"\paragraph{Expected verdicts.} " + tex_escape(EXPECTED_EXPLANATION), ""]
 
     out += _toc_section("Errata")
     # the referee's document names two more failing runs; the per-run one eight (all are in results.json)
@@ -1139,14 +1187,6 @@ def render_latex(results: Sequence[Result], meta: dict[str, Any] | None = None, 
     out += _toc_section("How to reproduce")
     out += [r"{\raggedright " + _tt(meta.get("command") or "stiefelsym verify") + r"\par}", ""]
     out += [tex_escape(f) for f in _run_facts(meta)] + [""]
-    out += _toc_section("What the verdicts mean") + [r"\begin{description}"]
-    out += [f"\\item[{v}] {tex_escape(VERDICT_MEANING[v])}" for v in VERDICTS]
-    out += [r"\end{description}",
-            r"\paragraph{The methods.} " + tex_escape(METHODS_INTRO), r"\begin{description}"]
-    out += [f"\\item[{m}] {tex_escape(t)}" for m, t in METHOD_MEANING.items()]
-    out += [r"\end{description}",
-            r"\paragraph{The bound $p$.} " + tex_escape(BOUND_EXPLANATION),
-            r"\paragraph{Expected verdicts.} " + tex_escape(EXPECTED_EXPLANATION), ""]
     if mutation:
         out += _tex_mutation_section(_mutation_data(mutation))
     return "\n".join(out + [r"\end{document}", ""])
@@ -1201,10 +1241,7 @@ def section_counts(cs: list[ClaimResults]) -> dict[str, int]:
 def _tex_section_table(claims: list[ClaimResults], meta: dict[str, Any]) -> list[str]:
     """The referee's summary: one row per section of the paper."""
     out = _toc_section("Summary")
-    out += [tex_escape("Per section of the paper: its claims; those proved for every n and r at once "
-                       "(dimension-free, as printed; for a statement made at one r, every n at that r, and for one made at r = 1 and at r = n, every n at each); those that hold as printed at every size computed "
-                       "(proved, or checked at random exact points); those that fail as printed (the errata); "
-                       "and verdicts the catalog does not expect.  Each claim follows, by section."), "",
+    out += [tex_escape(SECTION_TABLE_INTRO + "  Each claim follows, by section."), "",
             r"\begin{center}\small", r"\begin{tabular}{@{}P{6.2cm}rrrrr@{}}", r"\toprule",
             r"section & claims & all $n,r$ & every size & fail as printed & unexpected\\", r"\midrule"]
     total: Counter = Counter()
@@ -1379,11 +1416,11 @@ def _tex_erratum(c: ClaimResults, reruns: int = MAX_ERRATUM_RERUNS) -> list[str]
     out = [_tex_claim_heading(c)]
     out += [r"\textbf{Note for the authors.} " + _erratum_note(c, facts, tex_escape, lambda v: _tex_with_change(c, v)), ""]
     if c.statement.strip():
-        out += ["As printed:", tex_display(c.statement)]
+        out += [r"As printed:\nopagebreak", tex_display(c.statement)]
     w = c.failures[0]
     out += [tex_escape("Failing runs: " + ", ".join(f"{r.size} {r.method}" for r in c.failures) + "."), ""]
     if w.erratum:
-        out += ["What is wrong: " + tex_words(w.erratum), ""]
+        out += ["What is wrong: " + tex_words(greek_words(w.erratum)), ""]
     out += _tex_small_witness(c)
     if small_witness_of(c) is not None and "point" in (w.witness or {}):
         out += [tex_escape(f"The seeded run that found the failure: size {w.size}, method {w.method}"
@@ -1412,9 +1449,8 @@ def _tex_erratum_tail(c: ClaimResults, facts: dict[str, Any], w: Result, out: li
         more = [f"… and {len(others) - reruns} more (in results.json)"] if len(others) > reruns else []
         out += ["Every other failure, reproducible with:"] + _tex_items(
             [_tt(x) for x in others[:reruns]] + [tex_escape(m) for m in more])
-    if facts["verified"]:
-        out += [tex_escape("Corrections found (verified at every size of the claim): ")
-                + "; ".join(_tex_with_change(c, v) for v in facts["verified"]) + ".", ""]
+    # the verified corrections are in the note for the authors and in the list of candidates below: not
+    # a third time here
     return out + _tex_corrections(c)
 
 
@@ -1590,10 +1626,22 @@ def _tex_change(changes: Sequence[dict[str, str]] | None) -> str:
             parts.append(tex_escape(f"and {c['more']} more change{'s' * (c['more'] != 1)}"))
             continue
         old, new = c.get("old_tex", ""), c.get("new_tex", "")
-        math = (f"${old}$ $\\to$ ${new}$" if old and new and all(math_ok(t) and t.isascii() for t in (old, new))
+        math = (f"{_tex_inline(old)} $\\to$ {_tex_inline(new)}"
+                if old and new and all(math_ok(t) and t.isascii() for t in (old, new))
                 else tex_escape(f"{c.get('old', '')} → {c.get('new', '')}"))
         parts.append(tex_words(f"in {unicode_name(c.get('where', ''))}: ") + math)
     return "; ".join(parts)
+
+
+def _tex_inline(math: str) -> str:
+    r"""Inline mathematics; one with ``\left … \right`` (which TeX cannot break across lines) is
+    shrunk to 0.9 of the line's width when it is wider, never an overfull line, and may begin a line with
+    the line before it filled out (the glue ``\hfil``, cancelled by ``\hfilneg`` when no break is made)."""
+    if "\\left" not in math:
+        return f"${math}$"
+    # at most 0.9 of the line: the punctuation that follows it stays on its line
+    return (r"\nobreak\hfil\penalty0\hfilneg\relax\resizebox{\ifdim\width>0.9\linewidth 0.9\linewidth\else\width\fi}{!}{$"
+            + math + "$}")
 
 
 def _md_mutant_text(o: dict[str, Any]) -> str:
