@@ -364,15 +364,18 @@ def _dispatch(claim: Claim, size: Size | None, method: str, seed: int, func: Cal
 
 
 def _specialised(claim: Claim, size: Size, seed: int, func: Callable | None, spent: float = 0.0,
-                 budget: float | None = None) -> Result | None:
+                 budget: float | None = None) -> tuple[Result | None, float]:
     """The dimension-free proof of the graph the run at ``size`` evaluates, as the exact method's verdict there
-    (:mod:`stiefelsym.methods.specialise`), or None; ``budget``: the run's time budget (the dimension-free attempt
-    gets a bounded part of it)."""
+    (:mod:`stiefelsym.methods.specialise`), or None; and the seconds the attempt took (a record's time is the
+    whole run's: ``spent`` before it is added to a proof, the caller adds the attempt's to what it does next).
+    ``budget``: the run's time budget (the dimension-free attempt gets a bounded part of it)."""
     from stiefelsym.methods.specialise import specialised
+    t0 = time.perf_counter()
     res = specialised(claim, size.n, size.r, seed, func, budget)
+    took = time.perf_counter() - t0
     if res is not None:
         res.seconds += spent
-    return res
+    return res, took
 
 
 def _run_exact(claim: Claim, size: Size, seed: int, func: Callable | None, exact: Callable[..., Result],
@@ -380,20 +383,17 @@ def _run_exact(claim: Claim, size: Size, seed: int, func: Callable | None, exact
     """The exact method: its symbolic charts within the claim's symbolic budget; beyond it, or where the
     charts end without a verdict, the dimension-free proof of the same graph where there is one."""
     if not claim.exact_at(size.n, size.r):
-        t0 = time.perf_counter()
-        proof = _specialised(claim, size, seed, func, 0.0, budget)
+        proof, took = _specialised(claim, size, seed, func, 0.0, budget)
         if proof is not None:
             return proof
-        spent = time.perf_counter() - t0
         res = exact(claim, size.n, size.r, seed, func)
-        res.seconds += spent        # the record's time is the whole run's
+        res.seconds += took
         return res
     res = exact(claim, size.n, size.r, seed, func)
     if res.verdict == "inconclusive":
-        t0 = time.perf_counter()
-        proof = _specialised(claim, size, seed, func, res.seconds, budget)
+        proof, took = _specialised(claim, size, seed, func, res.seconds, budget)
         if proof is None:
-            res.seconds += time.perf_counter() - t0     # the record's time is the whole run's
+            res.seconds += took
         return proof or res
     return res
 
@@ -411,11 +411,10 @@ def _run_auto(claim: Claim, size: Size, seed: int, func: Callable | None,
         reason, spent = (f"({size.n},{size.r}) is above this claim's symbolic budget "
                          f"({claim.exact_budget_text()})" if claim.exact_max_r or claim.exact_corank else
                          f"n = {size.n} is above this claim's symbolic budget (n <= {claim.exact_max_n})"), 0.0
-    t0 = time.perf_counter()
-    proof = _specialised(claim, size, seed, func, spent, budget)
+    proof, took = _specialised(claim, size, seed, func, spent, budget)
     if proof is not None:
         return proof
-    spent += time.perf_counter() - t0
+    spent += took
     res = METHOD_RUNNERS["modular"](claim, size.n, size.r, seed, func)
     res.message = "; ".join(m for m in (f"exact: {reason}" if reason else "", res.message) if m)
     res.seconds += spent
