@@ -74,3 +74,59 @@ def test_the_route_from_the_dimension_free_proof_at_r_3_and_r_n_does_not_depend_
         else:
             assert verdict == "fails", (cid, size, method, verdict)
     assert {c for c, _, _ in got} == set(FAMILY_TRUE + FAMILY_FALSE), got
+
+
+def _forged(tmp_path, data, name, edit):
+    import json
+    copy = json.loads(json.dumps(data))
+    for r in copy["results"]:
+        if r["claim"] == "adv-s42b-r3-trace":
+            edit(r)
+    folder = tmp_path / name
+    folder.mkdir()
+    (folder / "results.json").write_text(json.dumps(copy), encoding="utf-8")
+    return folder
+
+
+def test_a_records_rerun_command_and_message_are_its_own(tmp_path):
+    """QA: the words of a run a report prints beside a failure were not compared by `check` nor bound by `report`:
+    the rerun command of a `fails` record edited to another claim's (`stiefelsym verify adv-s42b-r3-count ...`, whose
+    run proves), and its message to "the residual is 0 on T*V; the witness is an artefact of rounding": `check` said
+    "0 rejected", and `report` wrote "The seeded run that found the failure: ...; rerun: `stiefelsym verify
+    adv-s42b-r3-count ...`" and the forged message among the notes.  Now the rerun command must be the one that
+    reproduces the record (its claim, size, method, seed, hard case, the claims file that defines it as the command
+    spelled it, the command's budgets): `check` and `report` refuse another; and `check` compares a decided
+    record's message with a run again.  A check from another directory, the claims file spelled otherwise,
+    accepts the honest file."""
+    import json
+    import os
+    folder = tmp_path / "run"
+    run = cli("verify", "adv-s42b-r3-trace", "adv-s42b-r3-count", "--claims", PROBES, "--size", "5,3",
+              "--method", "exact", "--timeout", "120", "--jobs", "1", "--report-dir", str(folder))
+    assert "adv-s42b-r3-trace (5,3) exact: fails" in run.stdout, (run.stdout, run.stderr)
+    data = json.loads((folder / "results.json").read_text(encoding="utf-8"))
+    honest = cli("check", str(folder / "results.json"))
+    assert honest.returncode == 0, (honest.stdout, honest.stderr)
+    elsewhere = cli("check", str(folder / "results.json"), "--claims", os.path.relpath(PROBES, tmp_path), cwd=tmp_path)
+    assert elsewhere.returncode == 0, (elsewhere.stdout, elsewhere.stderr)
+    other = next(r["rerun"] for r in data["results"] if r["claim"] == "adv-s42b-r3-count")
+
+    def rerun(r):
+        r["rerun"] = other
+
+    def message(r):
+        r["message"] = "the residual is 0 on T*V; the witness is an artefact of rounding"
+
+    def seed(r):
+        r["rerun"] = r["rerun"].replace("--seed 0", "--seed 7")
+    for name, edit, why in (("rerun", rerun, "its rerun command"), ("seed", seed, "its rerun command"),
+                            ("message", message, "(message)")):
+        forged = _forged(tmp_path, data, name, edit)
+        checked = cli("check", str(forged / "results.json"))
+        assert checked.returncode == 1, (name, checked.stdout, checked.stderr)
+        assert "REJECTED adv-s42b-r3-trace (5,3) exact" in checked.stdout and why in checked.stdout, checked.stdout
+        if name != "message":
+            report = cli("report", "--report-dir", str(forged))
+            assert report.returncode != 0 and "rerun command is not their own" in report.stderr, \
+                (report.stdout, report.stderr)
+            assert not (forged / "verification.md").exists()
