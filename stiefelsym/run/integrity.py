@@ -112,13 +112,28 @@ def _evidence_edits(record: dict, again: dict) -> list[str]:
 FREE_VERDICTS = ("proved", "undecided", "error", "inconclusive")
 
 
-def _message_edits(record: dict, again: dict) -> list[str]:
+#: how auto's record begins the message of the method it ran when it did not take the exact method's verdict
+AUTO_PREFIX = "exact: "
+
+
+def _message_edits(record: dict, again: dict, auto: tuple[bool, str] | None = None) -> list[str]:
     """["message"] where a decided record's message (why the verdict, which a report prints beside every verdict
     that is not a pass) is not what a run again says; a message of a verdict that depends on time (inconclusive,
-    error) is not compared."""
+    error) is not compared.  ``auto`` (a command that ran auto): (whether the exact method was within the claim's
+    budget there, the reason auto gives where it was not).  Auto's record of the method it ran instead begins with
+    "exact: <why>; " before that method's own message: beyond the budget the reason is its text; within it, it is
+    the exact method's inconclusive message, which depends on time, and only its form is compared."""
     if record.get("verdict") not in ("proved", "checked", "numeric", "fails", "undecided"):
         return []
-    return ["message"] if (record.get("message") or "") != (again.get("message") or "") else []
+    mine, own = record.get("message") or "", again.get("message") or ""
+    if mine == own:
+        return []
+    if auto is not None and mine.startswith(AUTO_PREFIX):
+        within, reason = auto
+        head = mine[:-len("; " + own)] if own and mine.endswith("; " + own) else mine if not own else None
+        if head is not None and (within or head == AUTO_PREFIX + reason):
+            return []
+    return ["message"]
 
 
 def size_method_problems(r: dict) -> list[str]:
@@ -487,7 +502,12 @@ def check_results(records: list[dict], registry: Registry, echo: Callable[[str],
                 continue
             small = (r.get("witness") or {}).get("small") if isinstance(r.get("witness"), dict) else None
             record = dict(r, witness={k: v for k, v in r["witness"].items() if k != "small"} or None) if small else r
-            edited = _evidence_edits(record, again_fixed.to_json()) + _message_edits(record, again_fixed.to_json())
+            auto = None
+            if "auto" in ((meta or {}).get("methods") or []) and size is not None:
+                from stiefelsym.run.runner import auto_budget_reason
+                auto = (claim.exact_at(size.n, size.r), auto_budget_reason(claim, size))
+            edited = (_evidence_edits(record, again_fixed.to_json())
+                      + _message_edits(record, again_fixed.to_json(), auto))
             if small is not None and not edited:
                 from stiefelsym.methods.witness import encoded, small_witness
                 from stiefelsym.methods.witness_scripts import count_values, template_check

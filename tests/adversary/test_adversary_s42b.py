@@ -130,3 +130,28 @@ def test_a_records_rerun_command_and_message_are_its_own(tmp_path):
             assert report.returncode != 0 and "rerun command is not their own" in report.stderr, \
                 (report.stdout, report.stderr)
             assert not (forged / "verification.md").exists()
+
+
+def test_the_message_of_an_auto_record_is_compared_beyond_the_reason_auto_gives(tmp_path):
+    """auto beyond a claim's symbolic budget runs the modular method and begins its record's message with "exact:
+    <why not>; ": `check` runs the record's own method again, so the message is compared as auto wrote it (the
+    reason beyond the budget is its text); an honest file passes, a message with words added is rejected."""
+    import json
+    folder = tmp_path / "run"
+    run = cli("verify", "adv-s42b-r3-trace", "--claims", PROBES, "--size", "6,3", "--method", "auto", "--jobs", "1",
+              "--report-dir", str(folder))
+    assert "adv-s42b-r3-trace (6,3) modular: fails" in run.stdout, (run.stdout, run.stderr)
+    data = json.loads((folder / "results.json").read_text(encoding="utf-8"))
+    assert data["results"][0]["message"].startswith("exact: n = 6 is above"), data["results"][0]["message"]
+    honest = cli("check", str(folder / "results.json"))
+    assert honest.returncode == 0, (honest.stdout, honest.stderr)
+
+    def added(r):
+        r["message"] += "; the failure is an artefact of the prime"
+
+    def reason(r):
+        r["message"] = r["message"].replace("is above", "is within")
+    for name, edit in (("added", added), ("reason", reason)):
+        forged = _forged(tmp_path, data, name, edit)
+        checked = cli("check", str(forged / "results.json"))
+        assert checked.returncode == 1 and "(message)" in checked.stdout, (name, checked.stdout, checked.stderr)
