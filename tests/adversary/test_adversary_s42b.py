@@ -155,3 +155,33 @@ def test_the_message_of_an_auto_record_is_compared_beyond_the_reason_auto_gives(
         forged = _forged(tmp_path, data, name, edit)
         checked = cli("check", str(forged / "results.json"))
         assert checked.returncode == 1 and "(message)" in checked.stdout, (name, checked.stdout, checked.stderr)
+
+
+def test_the_command_of_a_results_file_is_the_one_its_fields_describe(tmp_path):
+    """QA′: the meta's command (which a report prints, and whose claim ids say which claims the file must have) was
+    not compared with the fields the planned runs are listed from (claims files, sizes, --max-n, methods, seed,
+    budgets): a command edited to `--size 3,2 --method modular` over records made at (5,3) by exact was printed by
+    the report as the command the file is the run of.  Now `check` and `report` refuse such a meta (exit 2)."""
+    import json
+    folder = tmp_path / "run"
+    run = cli("verify", "adv-s42b-r3-trace", "--claims", PROBES, "--size", "5,3", "--method", "exact", "--jobs", "1",
+              "--report-dir", str(folder))
+    assert "adv-s42b-r3-trace (5,3) exact: fails" in run.stdout, (run.stdout, run.stderr)
+    data = json.loads((folder / "results.json").read_text(encoding="utf-8"))
+    for name, edit in (("size", lambda c: c.replace("--size 5,3", "--size 3,2")),
+                       ("method", lambda c: c.replace("--method exact", "--method modular")),
+                       ("seed", lambda c: c.replace("--seed 0", "--seed 4")),
+                       ("claims", lambda c: c.replace("--claims ", "--claims /elsewhere/")),
+                       ("timeout", lambda c: c + " --timeout 5"),
+                       ("option", lambda c: c + " --hard near-pole")):
+        forged = json.loads(json.dumps(data))
+        forged["meta"]["command"] = edit(forged["meta"]["command"])
+        assert forged["meta"]["command"] != data["meta"]["command"], name
+        out = tmp_path / name
+        out.mkdir()
+        (out / "results.json").write_text(json.dumps(forged), encoding="utf-8")
+        checked = cli("check", str(out / "results.json"), "--no-rerun")
+        assert checked.returncode == 2 and "meta command" in checked.stderr, (name, checked.stdout, checked.stderr)
+        report = cli("report", "--report-dir", str(out))
+        assert report.returncode == 2 and "meta command" in report.stderr, (name, report.stdout, report.stderr)
+    assert cli("check", str(folder / "results.json"), "--no-rerun").returncode == 0
