@@ -374,6 +374,49 @@ def meta_problems(meta: Any, methods: Iterable[str], hard_cases: Iterable[str], 
     files = meta.get("claims_files")
     if files is not None and not (isinstance(files, list) and all(type(f) is str for f in files)):
         out.append(f"meta claims_files {_short_repr(files)} is not a list of paths")
+    if not out and meta.get("command") is not None:
+        out += _command_problems(meta)
+    return out
+
+
+#: the options of the command ``verify`` records in a results file's meta (cli._command), each with one value
+COMMAND_OPTIONS = ("--claims", "--timeout", "--budget", "--memory", "--max-n", "--size", "--method", "--seed",
+                   "--report-dir")
+#: the budgets of a run: (option, meta key, default); the command names those that are not the defaults
+COMMAND_BUDGETS = (("--timeout", "timeout", 300.0), ("--budget", "budget", 3600.0), ("--memory", "memory_gib", 4.0))
+
+
+def _command_problems(meta: dict) -> list[str]:
+    """Where the command a results file records (which a report prints, and whose claim ids say what it selected)
+    is not the one its fields describe: the claims files, sizes, --max-n, methods, seed and budgets from which the
+    planned runs are listed and the records were made."""
+    import shlex
+    cmd = meta.get("command")
+    try:
+        words = shlex.split(cmd) if type(cmd) is str else None
+    except ValueError:
+        words = None
+    if not words or words[:2] != ["stiefelsym", "verify"]:
+        return [f"meta command {_short_repr(cmd)} is not a `stiefelsym verify` command"]
+    rest = words[2:]
+    while rest and not rest[0].startswith("-"):
+        rest = rest[1:]
+    given: dict[str, list[str]] = {}
+    if len(rest) % 2:
+        return [f"meta command {_short_repr(cmd)}: an option without its value"]
+    for option, value in zip(rest[::2], rest[1::2]):
+        if option not in COMMAND_OPTIONS:
+            return [f"meta command {_short_repr(cmd)}: the option {option!r} is not one verify records"]
+        given.setdefault(option, []).append(value)
+    mx = meta.get("max_n")
+    want = {"--claims": list(meta.get("claims_files") or []), "--size": list(meta.get("sizes") or []),
+            "--method": list(meta.get("methods") or []), "--max-n": [str(mx)] if mx is not None else [],
+            "--seed": [str(meta.get("seed"))] if meta.get("seed") is not None else given.get("--seed", [])}
+    for option, key, default in COMMAND_BUDGETS:
+        value = meta.get(key)
+        want[option] = [f"{value:g}"] if isinstance(value, (int, float)) and value != default else []
+    out = [f"meta command {_short_repr(cmd)} gives {option} {given.get(option, [])} where the meta says {values}"
+           for option, values in want.items() if [str(v) for v in given.get(option, [])] != [str(v) for v in values]]
     return out
 
 

@@ -1017,7 +1017,8 @@ def report(results_file: Path | None, report_dir: Path | None, claims_files: tup
     except (OSError, UnicodeDecodeError, ValueError, KeyError, TypeError, AttributeError) as exc:
         raise InputError(f"{source} is not a stiefelsym results file: {_one_line(exc)}") from None
     from stiefelsym.run.integrity import (MAX_N_CHECKED, certificate_binding_problems, certificate_problems, claim_field_edits,
-                            missing_runs, size_method_problems, unstated_runs)
+                            missing_runs, rerun_problems, run_origin, size_method_problems,
+                            unstated_runs)
     from stiefelsym.methods.hard import HARD_CASES
     from stiefelsym.results import meta_problems
     bad_meta = meta_problems(meta, _runner().METHODS, tuple(HARD_CASES), MAX_N_CHECKED)
@@ -1032,7 +1033,12 @@ def report(results_file: Path | None, report_dir: Path | None, claims_files: tup
     if problems:
         raise InputError(f"{source}: refused, {len(problems)} record(s) without a valid certificate: {problems[0]} "
                          "(`stiefelsym check` re-checks every record)")
-    registry, _ = _registry(list(claims_files) or list((meta or {}).get("claims_files") or []) or None)
+    files = list(claims_files) or list((meta or {}).get("claims_files") or [])
+    registry, user = _registry(files or None)
+    reruns = rerun_problems([r.to_json() for r in results], meta, run_origin(getattr(user, "origin", None), files, meta))
+    if reruns:
+        raise InputError(f"{source}: refused, {len(reruns)} record(s) whose rerun command is not their own: "
+                         f"{reruns[0]} (`stiefelsym check` re-checks every record)")
     for r in results:
         cid = getattr(r, "claim", None)
         if cid not in registry:

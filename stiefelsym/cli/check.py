@@ -16,7 +16,7 @@ import click
 
 from stiefelsym.cli import InputError, _registry, standalone_command
 from stiefelsym.methods.hard import HARD_CASES
-from stiefelsym.run.integrity import MAX_N_CHECKED, check_results
+from stiefelsym.run.integrity import MAX_N_CHECKED, check_results, run_origin
 from stiefelsym.results import meta_problems
 from stiefelsym.run.runner import METHODS
 
@@ -51,6 +51,7 @@ def check(results_file: Path, no_rerun: bool, claims_files: tuple[str, ...]) -> 
     files = list(claims_files) or list(meta.get("claims_files") or [])
     # the sizes the records were run at: a user's claims are traced there (in child processes)
     sizes = [(r.get("n"), r.get("r")) for r in records]
-    registry, _ = _registry(files or None, (), [(n, r) for n, r in sizes if type(n) is int and type(r) is int])
-    bad = check_results(records, registry, echo=click.echo, rerun=not no_rerun, hard=meta.get("hard"), meta=meta)
+    registry, user = _registry(files or None, (), [(n, r) for n, r in sizes if type(n) is int and type(r) is int])
+    bad = check_results(records, registry, echo=click.echo, rerun=not no_rerun, hard=meta.get("hard"), meta=meta,
+                        origin=run_origin(getattr(user, "origin", None), files, meta))
     raise SystemExit(1 if bad else 0)

@@ -112,6 +112,30 @@ def _evidence_edits(record: dict, again: dict) -> list[str]:
 FREE_VERDICTS = ("proved", "undecided", "error", "inconclusive")
 
 
+#: how auto's record begins the message of the method it ran when it did not take the exact method's verdict
+AUTO_PREFIX = "exact: "
+
+
+def _message_edits(record: dict, again: dict, auto: tuple[bool, str] | None = None) -> list[str]:
+    """["message"] where a decided record's message (why the verdict, which a report prints beside every verdict
+    that is not a pass) is not what a run again says; a message of a verdict that depends on time (inconclusive,
+    error) is not compared.  ``auto`` (a command that ran auto): (whether the exact method was within the claim's
+    budget there, the reason auto gives where it was not).  Auto's record of the method it ran instead begins with
+    "exact: <why>; " before that method's own message: beyond the budget the reason is its text; within it, it is
+    the exact method's inconclusive message, which depends on time, and only its form is compared."""
+    if record.get("verdict") not in ("proved", "checked", "numeric", "fails", "undecided"):
+        return []
+    mine, own = record.get("message") or "", again.get("message") or ""
+    if mine == own:
+        return []
+    if auto is not None and mine.startswith(AUTO_PREFIX):
+        within, reason = auto
+        head = mine[:-len("; " + own)] if own and mine.endswith("; " + own) else mine if not own else None
+        if head is not None and (within or head == AUTO_PREFIX + reason):
+            return []
+    return ["message"]
+
+
 def size_method_problems(r: dict) -> list[str]:
     """A record whose size and method do not fit: a record with no size is the dimension-free method's, with
     one of its verdicts (no fixed-size method runs without a size, and `free` never says `checked` or
@@ -319,8 +343,79 @@ def unstated_records(records: list[dict], registry: Registry, meta: dict | None)
     return out
 
 
+def expected_rerun(record: dict, meta: dict | None, origin: dict[str, str] | None = None) -> list[str] | None:
+    """The words of the command that reproduces a record, as `verify` wrote it: the record's claim, size, method,
+    seed and hard case (:func:`stiefelsym.run.runner.rerun_command`), the claims file that defines a user's claim,
+    and the budgets of the file's command (its meta) that are not the defaults.  None where the meta does not say
+    (no command recorded)."""
+    import shlex
+    from types import SimpleNamespace
+
+    from stiefelsym.run.pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT
+    from stiefelsym.run.runner import rerun_command
+    if meta is None:
+        return None
+    from stiefelsym.methods.costmodel import DEFAULT_BUDGET
+    res = SimpleNamespace(claim=record.get("claim"), n=record.get("n"), r=record.get("r"),
+                          method=record.get("method"), seed=record.get("seed"),
+                          reductions=[x for x in record.get("reductions") or [] if isinstance(x, str)])
+    words = shlex.split(rerun_command(res, meta.get("hard")))   # type: ignore[arg-type]
+    path = (origin or {}).get(str(record.get("claim")))
+    if path is not None:
+        words += ["--claims", str(path)]
+    for option, key, default in (("--timeout", "timeout", DEFAULT_TIMEOUT), ("--budget", "budget", DEFAULT_BUDGET),
+                                 ("--memory", "memory_gib", DEFAULT_MEMORY_GIB)):
+        value = meta.get(key)
+        if isinstance(value, (int, float)) and value != default:
+            words += [option, f"{value:g}"]
+    return words
+
+
+def run_origin(origin: dict[str, str] | None, files: list[str], meta: dict | None) -> dict[str, str] | None:
+    """The claims file that defines each user's claim, spelled as the results file's command spelled it (its
+    meta's claims files, which the rerun commands name): ``origin`` maps a claim to one of ``files``, the files
+    the claims were loaded from now (the meta's, or the same files given again with --claims, in that order)."""
+    if origin is None:
+        return None
+    named = [str(f) for f in (meta or {}).get("claims_files") or []]
+    files = [str(f) for f in files]
+    if len(named) != len(files):
+        return dict(origin)
+    return {cid: named[files.index(str(path))] if str(path) in files else str(path) for cid, path in origin.items()}
+
+
+def rerun_problems(records: list[dict], meta: dict | None, origin: dict[str, str] | None = None) -> list[str]:
+    """Every record whose rerun command is not the one that reproduces it (:func:`expected_rerun`): a report shows
+    it beside each failure ("the seeded run that found the failure ... rerun: ..."), so an edited one sends its
+    reader to another claim, seed, size, method or claims file (whose run may well prove what the record refutes).
+    A claims file is compared by the file it names (a path spelled otherwise names the same file)."""
+    import shlex
+    from pathlib import Path
+    out = []
+    for r in records:
+        want = expected_rerun(r, meta, origin)
+        if want is None:
+            continue
+        text = r.get("rerun")
+        where = _where_run(r)
+        try:
+            got = shlex.split(text) if isinstance(text, str) else None
+        except ValueError:
+            got = None
+        if got is not None and len(got) == len(want):
+            same = all(a == b or (i > 0 and want[i - 1] == "--claims" and got[i - 1] == "--claims"
+                                  and Path(a).resolve() == Path(b).resolve())
+                       for i, (a, b) in enumerate(zip(got, want)))
+            if same:
+                continue
+        out.append(f"{where}: its rerun command {text!r} is not the one that reproduces it "
+                   f"({shlex.join(want)!r})")
+    return out
+
+
 def check_results(records: list[dict], registry: Registry, echo: Callable[[str], None] = print,
-                  rerun: bool = True, hard: str | None = None, meta: dict | None = None) -> int:
+                  rerun: bool = True, hard: str | None = None, meta: dict | None = None,
+                  origin: dict[str, str] | None = None) -> int:
     """Re-trace and re-check every record; the number of records that do not hold up.  With
     ``rerun`` every fixed-size record is also run again (its method, size and seed) and its verdict
     compared: a hand-edited verdict is caught even where the digest is the claim's.  With the file's
@@ -346,6 +441,9 @@ def check_results(records: list[dict], registry: Registry, echo: Callable[[str],
         for p in missing_runs(records, registry, meta):
             echo(f"REJECTED {p}")
             bad += 1
+    for p in rerun_problems(records, meta, origin):
+        echo(f"REJECTED {p}")
+        bad += 1
     unstated = unstated_records(records, registry, meta)
     for _, p in unstated:
         echo(f"REJECTED {p}")
@@ -404,7 +502,12 @@ def check_results(records: list[dict], registry: Registry, echo: Callable[[str],
                 continue
             small = (r.get("witness") or {}).get("small") if isinstance(r.get("witness"), dict) else None
             record = dict(r, witness={k: v for k, v in r["witness"].items() if k != "small"} or None) if small else r
-            edited = _evidence_edits(record, again_fixed.to_json())
+            auto = None
+            if "auto" in ((meta or {}).get("methods") or []) and size is not None:
+                from stiefelsym.run.runner import auto_budget_reason
+                auto = (claim.exact_at(size.n, size.r), auto_budget_reason(claim, size))
+            edited = (_evidence_edits(record, again_fixed.to_json())
+                      + _message_edits(record, again_fixed.to_json(), auto))
             if small is not None and not edited:
                 from stiefelsym.methods.witness import encoded, small_witness
                 from stiefelsym.methods.witness_scripts import count_values, template_check
@@ -429,6 +532,10 @@ def check_results(records: list[dict], registry: Registry, echo: Callable[[str],
             if again.verdict != r.get("verdict"):
                 echo(f"REJECTED {where}: the record says {r.get('verdict')!r}, the dimension-free method again "
                      f"says {again.verdict!r}")
+                bad += 1
+                continue
+            if _message_edits(r, again.to_json()):
+                echo(f"REJECTED {where}: its message is not what the dimension-free method again says")
                 bad += 1
                 continue
         if r.get("method") == "free" and r.get("verdict") == "proved":

@@ -398,6 +398,14 @@ def _run_exact(claim: Claim, size: Size, seed: int, func: Callable | None, exact
     return res
 
 
+def auto_budget_reason(claim: Claim, size: Size) -> str:
+    """Why auto did not run the exact method at a size beyond the claim's symbolic budget (the first words of the
+    message of the record of the method it ran instead, after "exact: ")."""
+    return (f"({size.n},{size.r}) is above this claim's symbolic budget ({claim.exact_budget_text()})"
+            if claim.exact_max_r or claim.exact_corank else
+            f"n = {size.n} is above this claim's symbolic budget (n <= {claim.exact_max_n})")
+
+
 def _run_auto(claim: Claim, size: Size, seed: int, func: Callable | None,
               exact: Callable[..., Result] | None = None, budget: float | None = None) -> Result:
     exact = exact or METHOD_RUNNERS["exact"]
@@ -408,9 +416,7 @@ def _run_auto(claim: Claim, size: Size, seed: int, func: Callable | None,
         reason = res.message
         spent = res.seconds
     else:
-        reason, spent = (f"({size.n},{size.r}) is above this claim's symbolic budget "
-                         f"({claim.exact_budget_text()})" if claim.exact_max_r or claim.exact_corank else
-                         f"n = {size.n} is above this claim's symbolic budget (n <= {claim.exact_max_n})"), 0.0
+        reason, spent = auto_budget_reason(claim, size), 0.0
     proof, took = _specialised(claim, size, seed, func, spent, budget)
     if proof is not None:
         return proof
