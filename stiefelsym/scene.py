@@ -119,7 +119,17 @@ class Flow:
         return out
 
     def __getitem__(self, key: str) -> Mat:
-        return self.multipliers[key]
+        """flow["X"], flow["P"] (and a larger phase space's "Y", "Q", ...): the components of the
+        vector field, as in a tangent vector {"X": ..., "P": ...}; flow["Lambda"], flow["Pi"]: the
+        multipliers of the Lagrange form (dot_XP)."""
+        tangent = self.tangent()
+        if key in tangent:
+            return tangent[key]
+        if key in self.multipliers:
+            return self.multipliers[key]
+        have = list(tangent) + list(self.multipliers)
+        hint = "" if self.multipliers else " (the multipliers Lambda, Pi: s.multiplier_flow(H))"
+        raise KeyError(f"a flow has no component {key!r}: it has {', '.join(map(repr, have))}{hint}")
 
 
 @dataclass

@@ -389,6 +389,9 @@ class Tracer:
         if self._kind == SCALAR:
             return t.refuse("a number has no entries")
         if type(idx) is str:
+            if idx in _FLOW_ITEMS and self._kind == ANY and t.g.ops[self._r.i] == "call" \
+                    and t.g.args[self._r.i][1] in _FLOW_CALLS:
+                return self.__getattr__(_FLOW_ITEMS[idx])   # flow["X"] is flow.Xdot: the same node
             return t.new("item", (self._r, idx), ANY)
         if self._kind == ANY and type(idx) is int:
             return t.new("item", (self._r, idx), ANY)
@@ -436,6 +439,11 @@ class Tracer:
         return self._t.new("apply", (self._r,) + tuple(self._t.arg(a, functions=True) for a in args)
                            + self._t.kw(kw), ANY)
 
+
+#: the scene's methods that return a flow on T*V, and the components a claim may read from one by
+#: key as from a tangent vector: flow["X"] is flow.Xdot, flow["P"] is flow.Pdot
+_FLOW_CALLS = frozenset({"dirac_flow", "multiplier_flow", "canonical_flow"})
+_FLOW_ITEMS = {"X": "Xdot", "P": "Pdot"}
 
 #: attributes of engine values a claim may read (flows, functions and tensors of the brackets module):
 #: their kind and shape
