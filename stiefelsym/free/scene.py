@@ -118,6 +118,24 @@ _LETTER_POLYS: dict = {}
 _STANDARD_MEMOS = SharedMemos()
 
 
+class _LetterBook(dict):
+    """A scene's letters by name; each one is admitted to the shared memos of the standard
+    systems (see SharedMemos.admit: a name with another meaning than the memos' empties them)."""
+
+    def __setitem__(self, name: str, letter: Letter) -> None:
+        _STANDARD_MEMOS.admit(letter)
+        super().__setitem__(name, letter)
+
+    def setdefault(self, name: str, letter: Letter) -> Letter:
+        if name not in self:
+            self[name] = letter
+        return self[name]
+
+    def update(self, *args: Any, **kw: Any) -> None:
+        for name, letter in dict(*args, **kw).items():
+            self[name] = letter
+
+
 def standard_system() -> RewritingSystem:
     """(cond_XP) as rules: XᵀX → I_r, PᵀX → −XᵀP (order X < P < A < Xᵀ < Pᵀ); a fresh system
     (its own order and record of what it used) on the shared, checked rules, with the memos of
@@ -335,7 +353,7 @@ class FreeScene(PaperObjects):
         #: the spectral parameters that move with the point: (normal form, the symbol standing for it)
         self._moving: list[tuple[NCPoly, Any]] = []
         self._extras: set[str] = set()
-        self._named: dict[str, Letter] = {}
+        self._named: dict[str, Letter] = _LetterBook()
         #: the multipliers Λ of the metric realization's flows, letters with their Sylvester relations ρ
         self._sylvester: dict = {}
         if realization == "metric":
