@@ -917,6 +917,7 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
         # was taken at random points: randomized exact
         res.verdict = "checked"
         res.false_pass_bound = min(1.0, sum(randomized.bounds))
+        res.seed = seed      # the points were drawn from the seed: the rerun line and a check need it
         return res
     res.verdict = "proved"
     _plan(claim, func, n, r, calls, res)
