@@ -861,7 +861,8 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
         return res
     except SymbolicBudget as exc:
         res.verdict = "inconclusive"
-        res.message = f"{exc} is beyond the symbolic method's budget"
+        res.message = (f"{exc} is beyond the symbolic method's budget (the randomized exact methods "
+                       f"decide this size: --method modular, or auto)")
         res.seconds = time.perf_counter() - t0
         return res
     except MemoryError:

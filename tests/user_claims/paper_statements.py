@@ -141,7 +141,7 @@ def euclidean_geodesic_flow(s):
 
 @claim("u-euclidean-geodesics-sign", paper="Euclidean_XP", kind="id", section="3", sizes=SMALL,
        statement=r"\dot P = +XP^TP \;(\text{suspected sign})",
-       fails_at=lambda n, r: True, erratum="the sign of XPᵀP flipped")
+       fails_at=lambda n, r: n > 1, erratum="the sign of XPᵀP flipped (P = 0 on T*V(1,1))")
 def euclidean_geodesic_flow_wrong_sign(s):
     """The Dirac flow of H_E with Ṗ = +XPᵀP (a flipped sign)."""
     flow = s.dirac_flow(H_E)
@@ -229,7 +229,7 @@ def neumann_kappa_flow(s):
 
 @claim("u-neumann-kappa-flow-factor", paper="No", kind="id", section="5", sizes=SMALL,
        statement=r"\dot X = P-(1+\kappa)XP^TX \;(\text{suspected misprint})",
-       fails_at=lambda n, r: True, erratum="1 + κ in place of 1 + 2κ")
+       fails_at=lambda n, r: r >= 2, erratum="1 + κ in place of 1 + 2κ (XPᵀX = 0 on T*V at r = 1)")
 def neumann_kappa_flow_wrong_factor(s):
     """The Dirac flow of H_neum,κ with Ẋ = P − (1 + κ)XPᵀX (a wrong factor)."""
     X, P = s.X, s.P
@@ -443,3 +443,126 @@ def stiefel_dimension_wrong(s):
     """V_{n,r} has dimension nr − r(r−1)/2 (a wrong count of the constraints)."""
     n, r = s.n, s.r
     return {"dim V": Count(n * (n - 1) // 2 - (n - r) * (n - r - 1) // 2, n * r - r * (r - 1) // 2)}
+
+
+# --- More statements: the metric realization, coordinates, spectral invariants --------------
+
+def H_A(t):
+    """½ tr PᵀA⁻¹P, the Hamiltonian of ds²_A on the realization (cond_XP2)."""
+    return t.tr(t.P.T @ t.Ainv @ t.P) / 2
+
+
+@claim("u-metric-flow", paper=("A_XP", "cond_XP2"), kind="id", section="3", realization="metric",
+       sizes=admissible(n_max=3),
+       statement=r"\dot X = A^{-1}P,\ \dot P = X\Lambda,\ \Lambda X^TA^{-1}X + X^TA^{-1}X\Lambda + 2P^TA^{-2}P = 0")
+def metric_geodesic_flow(s):
+    """On (cond_XP2) the flow of H_A is Ẋ = A⁻¹P, Ṗ = XΛ with ΛXᵀA⁻¹X + XᵀA⁻¹XΛ + 2PᵀA⁻²P = 0."""
+    flow = s.dirac_flow(H_A)
+    X, P, B = s.X, s.P, s.Ainv
+    Lam = X.T @ flow["P"]
+    return {"Xdot": flow["X"] - B @ P,
+            "Pdot in span X": flow["P"] - X @ Lam,
+            "Lambda equation": Lam @ X.T @ B @ X + X.T @ B @ X @ Lam + 2 * P.T @ B @ B @ P}
+
+
+@claim("u-uhlenbeck-integrals", paper=("sphere_neum", "perelomov"), kind="id", section="5",
+       sizes=admissible(n_max=4, n_min=2, r_max=1),
+       statement=r"F_k = x_k^2 + \sum_{j\ne k}\frac{(x_kp_j - x_jp_k)^2}{a_k - a_j},\ \dot F_k = 0,\ \sum_k F_k = 1")
+def uhlenbeck_integrals(s):
+    """For r = 1 the Uhlenbeck integrals F_k of the Neumann system on the sphere are conserved and sum to 1."""
+    n = s.n
+    flow = s.dirac_flow(H_neumann_euclidean)
+
+    def F(k):
+        def f(t):
+            a = t.a
+            x, p = t.X, t.P
+            out = x[k, 0] * x[k, 0]
+            for j in range(n):
+                if j != k:
+                    m = x[k, 0] * p[j, 0] - x[j, 0] * p[k, 0]
+                    out = out + m * m / (a[k] - a[j])
+            return out
+        return f
+
+    checks = {f"dF_{k + 1}/dt": s.d(F(k), flow) for k in range(n)}
+    total = F(0)(s)
+    for k in range(1, n):
+        total = total + F(k)(s)
+    checks["sum F_k - 1"] = total - 1
+    return checks
+
+
+@claim("u-spectral-curve-coefficients", paper=("spectral-curve", "LA1"), kind="id", section="5",
+       sizes=admissible(n_max=4),
+       statement=r"\tfrac{d}{dt} e_k(\mathcal L_{neum}(\lambda)) = 0,\ k \le 3")
+def spectral_curve_coefficients_conserved(s):
+    """The coefficients e_1, e_2, e_3 of det(w − L(λ)) are conserved along (No)."""
+    from stiefelsym import elementary
+    lam = s.lam
+    flow = s.dirac_flow(H_neumann)
+
+    def e(k):
+        return lambda t: elementary(t, lam * t.Phi + t.X @ t.X.T - lam * lam * t.A, 3)[k]
+
+    return {f"d e_{k}/dt": s.d(e(k), flow) for k in (1, 2, 3)}
+
+
+@claim("u-phi-canonical-casimir", paper=("zero", "Phi"), kind="pb", section="2", sizes=SMALL,
+       statement=r"\{\Phi_\xi, F_i\}_0 = 0")
+def phi_commutes_with_constraints_canonically(s):
+    """(zero): Φ_ξ Poisson commutes with the constraint functions in the ambient canonical bracket."""
+    xi = s.fresh("n", "n")
+    xi = xi - xi.T
+    C, D = s.fresh("r", "r"), s.fresh("r", "r")
+    return {"{Phi_xi, tr C XᵀX}_0": s.canonical_bracket(lambda t: t.killing(t.Phi, xi), lambda t: t.tr(C @ t.X.T @ t.X)),
+            "{Phi_xi, tr D (XᵀP + PᵀX)}_0": s.canonical_bracket(lambda t: t.killing(t.Phi, xi),
+                                                                lambda t: t.tr(D @ (t.X.T @ t.P + t.P.T @ t.X)))}
+
+
+@claim("u-psi-commutes-with-jensen", paper=("EM", "momentum_right_map"), kind="pb", section="3", sizes=SMALL,
+       statement=r"\{\Psi_\zeta, H_\kappa\} = 0")
+def psi_commutes_with_jensen_hamiltonians(s):
+    """H_κ is SO(r)-invariant: {Ψ_ζ, H_κ} = 0 for every ζ ∈ so(r)."""
+    z = s.fresh("r", "r")
+    z = z - z.T
+    K = lambda t: t.tr(t.P.T @ t.P) / 2 - (t.q(1, 2) + t.kappa) * t.tr(t.X.T @ t.P @ t.X.T @ t.P)  # noqa: E731
+    return {"{Psi_z, H_kappa}": s.bracket(lambda t: t.killing(t.Psi, z), K)}
+
+
+@claim("u-neumann-multiplier-sign", paper="No", kind="id", section="5", sizes=SMALL,
+       statement=r"\Lambda = X^TAX + P^TP \;(\text{suspected sign})",
+       fails_at=lambda n, r: n > 1, erratum="the sign of PᵀP in Λ flipped")
+def neumann_multiplier_wrong_sign(s):
+    """In the Lagrange form of the Neumann flow with κ = 0, Λ = XᵀAX + PᵀP (a flipped sign)."""
+    flow = s.multiplier_flow(H_neumann_normal)
+    return {"Lambda": flow["Lambda"] - (s.X.T @ s.A @ s.X + s.P.T @ s.P)}
+
+
+@claim("u-prep-commutator-order", paper="prep", kind="not", expect="nonzero", section="5",
+       sizes=admissible(n_max=4, n_min=2, where=lambda n, r: r < n, condition="r < n"),
+       statement=r"\tfrac{d}{dt}\Phi \ne [A, XX^T]")
+def prep_commutator_order(s):
+    """The commutator of (prep) in the other order, dΦ/dt = [A, XXᵀ], does not hold for r < n (XXᵀ = I at r = n)."""
+    flow = s.dirac_flow(H_neumann)
+    return {"dPhi/dt - [A, XXᵀ]": s.d(lambda t: t.Phi, flow) - comm(s.A, s.X @ s.X.T)}
+
+
+@claim("u-uhlenbeck-denominator", paper=("sphere_neum", "perelomov"), kind="id", section="5",
+       sizes=admissible(n_max=4, n_min=2, r_max=1),
+       statement=r"F_k = x_k^2 + \sum_{j\ne k}\frac{(x_kp_j - x_jp_k)^2}{a_j - a_k}\;(\text{denominator reversed})",
+       fails_at=lambda n, r: True, erratum="a_j − a_k in place of a_k − a_j")
+def uhlenbeck_denominator_reversed(s):
+    """With the denominators a_j − a_k the functions F_k are not conserved."""
+    n = s.n
+    flow = s.dirac_flow(H_neumann_euclidean)
+
+    def f(t):
+        a, x, p = t.a, t.X, t.P
+        out = x[0, 0] * x[0, 0]
+        for j in range(1, n):
+            m = x[0, 0] * p[j, 0] - x[j, 0] * p[0, 0]
+            out = out + m * m / (a[j] - a[0])
+        return out
+
+    return {"dF_1/dt": s.d(f, flow)}
