@@ -127,9 +127,10 @@ class Flow:
             return tangent[key]
         if key in self.multipliers:
             return self.multipliers[key]
-        have = list(tangent) + list(self.multipliers)
-        hint = "" if self.multipliers else " (the multipliers Lambda, Pi: s.multiplier_flow(H))"
-        raise KeyError(f"a flow has no component {key!r}: it has {', '.join(map(repr, have))}{hint}")
+        keys = ", ".join(map(repr, tangent))
+        raise KeyError(f"a flow has no component {key!r}: its components are {keys} (Ẋ = flow['X'] or "
+                       f"flow.Xdot, Ṗ = flow['P'] or flow.Pdot), and the multipliers of s.multiplier_flow(H) "
+                       f"are flow['Lambda'], flow['Pi']")
 
 
 @dataclass
