@@ -171,3 +171,54 @@ def test_every_method_at_every_stated_size():
     for method in ("auto", "modular", "rational", "float"):
         code, out = _verify("--method", method)
         assert code == 0, [r for r in out["results"] if not r["expected"]]
+
+
+def test_refusals_say_what_to_write(tmp_path):
+    """What a reader reasonably writes and the engine refuses is refused with the spelling it takes."""
+    f = tmp_path / "friction.py"
+    f.write_text('''
+from stiefelsym import admissible, claim
+
+S = admissible(n_max=3)
+
+@claim("half-float", kind="id", sizes=S)
+def half_float(s):
+    """0.5 as a float."""
+    return {"H": s.killing(s.Phi, s.Phi) / 2 - 0.5 * s.tr(s.P.T @ s.P)}
+
+@claim("identity-I", kind="id", sizes=S)
+def identity_i(s):
+    """s.I."""
+    return {"XtX": s.X.T @ s.X - s.I}
+
+@claim("phi-lower", kind="id", sizes=S)
+def phi_lower(s):
+    """s.phi."""
+    return {"Phi": s.phi - s.Phi}
+
+@claim("a-list", kind="id", sizes=S)
+def a_list(s):
+    """A list of residuals."""
+    return [s.X.T @ s.X - s.Ir]
+
+@claim("resolvent-as-inverse", kind="id", sizes=S)
+def resolvent_as_inverse(s):
+    """(λI − A)⁻¹ written as an inverse: proved at fixed sizes, and the dimension-free method says what to write."""
+    R = (s.lam * s.In - s.A).inv()
+    return {"AR": s.A @ R - (s.lam * R - s.In)}
+''')
+    env = dict(os.environ, PYTHONPATH=str(ROOT))
+    out = subprocess.run([sys.executable, "-m", "stiefelsym", "verify", "--claims", str(f), "--size", "3,2",
+                          "--method", "auto", "--method", "free", "--format", "json", "--no-report"],
+                         capture_output=True, text=True, env=env, timeout=300)
+    assert "Traceback" not in out.stderr, out.stderr
+    got = {(r["claim"], r["method"]): (r["verdict"], r["message"]) for r in json.loads(out.stdout)["results"]}
+    hints = {"half-float": "s.q(1, 2)", "identity-I": "s.In (n×n) or s.Ir (r×r)", "phi-lower": "did you mean s.Phi?",
+             "a-list": "it returned a list"}
+    for cid, hint in hints.items():
+        verdict, message = got[(cid, "auto")]
+        assert verdict == "error" and hint in message, (cid, verdict, message)
+        assert hint in got[(cid, "free")][1], got[(cid, "free")]
+    assert got[("resolvent-as-inverse", "exact")][0] == "proved"
+    verdict, message = got[("resolvent-as-inverse", "free")]
+    assert verdict == "undecided" and "s.resolvent(μ)" in message, message

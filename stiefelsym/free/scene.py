@@ -136,6 +136,12 @@ class _LetterBook(dict):
             self[name] = letter
 
 
+#: the refusal of M.inv() (a linear solve) in the free algebra, with what to write for a proof for all n, r
+INVERSE_NEEDS_COORDINATES = ("solving a linear system entrywise (M.inv() of a matrix other than a resolvent: "
+                             "write (μI − A)⁻¹ as s.resolvent(μ), and (A² − λ²)⁻¹ as (R(−λ) − R(λ))/(2λ), "
+                             "for a proof for every n, r)")
+
+
 def standard_system() -> RewritingSystem:
     """(cond_XP) as rules: XᵀX → I_r, PᵀX → −XᵀP (order X < P < A < Xᵀ < Pᵀ); a fresh system
     (its own order and record of what it used) on the shared, checked rules, with the memos of
@@ -275,7 +281,7 @@ class FreeField(Field):
         return x.latex() if isinstance(x, NCPoly) else str(x)
 
     def solve(self, M, B):
-        raise refuse("solving a linear system entrywise", self.tracker)
+        raise refuse(INVERSE_NEEDS_COORDINATES, self.tracker)
 
     def rank(self, M):
         raise refuse("a rank", self.tracker)
@@ -298,7 +304,7 @@ class FreeDualField(DualField):
         return Dual(self.base.entry_trace(x.a), self.base.entry_trace(x.b))
 
     def solve(self, M, B):
-        raise refuse("solving a linear system entrywise", self.base.tracker)
+        raise refuse(INVERSE_NEEDS_COORDINATES, self.base.tracker)
 
     def rank(self, M):
         raise refuse("a rank", self.base.tracker)
