@@ -222,3 +222,24 @@ def resolvent_as_inverse(s):
     assert got[("resolvent-as-inverse", "exact")][0] == "proved"
     verdict, message = got[("resolvent-as-inverse", "free")]
     assert verdict == "undecided" and "s.resolvent(μ)" in message, message
+
+
+def test_a_claims_file_imports_the_module_next_to_it(tmp_path):
+    """As Python puts a script's folder on its path, a claims file imports a helper module next to it,
+    wherever the command runs from (a ModuleNotFoundError before, unless run from that folder)."""
+    (tmp_path / "paper_helpers.py").write_text("def H_E(t):\n    return t.tr(t.P.T @ t.P) / 2\n")
+    f = tmp_path / "mine.py"
+    f.write_text('''
+from stiefelsym import admissible, claim
+from paper_helpers import H_E
+
+@claim("helper-euclid", kind="id", sizes=admissible(n_max=3))
+def euclid(s):
+    """The Dirac flow of ½ tr PᵀP is Ẋ = P."""
+    return {"X": s.dirac_flow(H_E)["X"] - s.P}
+''')
+    env = dict(os.environ, PYTHONPATH=str(ROOT))
+    out = subprocess.run([sys.executable, "-m", "stiefelsym", "verify", "--claims", str(f), "--size", "3,2",
+                          "--method", "exact", "--no-report"], capture_output=True, text=True, env=env,
+                         cwd=str(ROOT), timeout=300)
+    assert out.returncode == 0 and "helper-euclid (3,2) exact: proved" in out.stdout, out.stdout + out.stderr
