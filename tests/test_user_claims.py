@@ -243,3 +243,33 @@ def euclid(s):
                           "--method", "exact", "--no-report"], capture_output=True, text=True, env=env,
                          cwd=str(ROOT), timeout=300)
     assert out.returncode == 0 and "helper-euclid (3,2) exact: proved" in out.stdout, out.stdout + out.stderr
+
+
+def test_a_declared_misprint_that_holds_is_unexpected_with_every_method(tmp_path):
+    """A statement declared wrong everywhere (fails_at) that holds: every method's verdict is unexpected,
+    the dimension-free proof for all n, r included (it was reported as expected before)."""
+    f = tmp_path / "misprint.py"
+    f.write_text('''
+from stiefelsym import admissible, claim
+
+@claim("not-a-misprint", kind="id", sizes=admissible(n_max=3), fails_at=lambda n, r: True, erratum="suspected")
+def not_a_misprint(s):
+    """XᵀX = I, suspected of a misprint."""
+    return {"XtX": s.X.T @ s.X - s.Ir}
+
+@claim("a-misprint-at-r1-only", kind="id", sizes=admissible(n_max=3), fails_at=lambda n, r: r == 1 and n > 1,
+       erratum="suspected at r = 1")
+def misprint_at_r1(s):
+    """ΦX = P − XXᵀP, suspected wrong at r = 1 only (it is wrong at r ≥ 2 only)."""
+    return {"Phi X": s.Phi @ s.X - (s.P - s.X @ s.X.T @ s.P)}
+''')
+    env = dict(os.environ, PYTHONPATH=str(ROOT))
+    out = subprocess.run([sys.executable, "-m", "stiefelsym", "verify", "--claims", str(f), "--method", "free",
+                          "--method", "exact", "--format", "json", "--no-report"], capture_output=True, text=True,
+                         env=env, timeout=300)
+    assert out.returncode == 1, out.stdout + out.stderr
+    recs = json.loads(out.stdout)["results"]
+    free = {r["claim"]: r for r in recs if r["method"] == "free"}
+    assert free["not-a-misprint"]["verdict"] == "proved" and not free["not-a-misprint"]["expected"]
+    assert free["a-misprint-at-r1-only"]["verdict"] == "undecided"
+    assert all(not r["expected"] for r in recs if r["claim"] == "not-a-misprint" and r["n"] and r["n"] > 1)
