@@ -349,7 +349,8 @@ class Registry:
             return self._claims[cid]
         except KeyError:
             near = [k for k in self._claims if cid.lower() in k.lower()]
-            hint = f"; did you mean {', '.join(near[:3])}?" if near else "; `stiefelsym list` shows all claims"
+            hint = (f"; did you mean {', '.join(near[:3])}?" if near else
+                    "; `stiefelsym list` shows all claims (a claim of your own file: add --claims FILE)")
             raise KeyError(f"unknown claim {cid!r}{hint}") from None
 
     def __iter__(self):

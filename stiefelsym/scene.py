@@ -119,7 +119,18 @@ class Flow:
         return out
 
     def __getitem__(self, key: str) -> Mat:
-        return self.multipliers[key]
+        """flow["X"], flow["P"] (and a larger phase space's "Y", "Q", ...): the components of the
+        vector field, as in a tangent vector {"X": ..., "P": ...}; flow["Lambda"], flow["Pi"]: the
+        multipliers of the Lagrange form (dot_XP)."""
+        tangent = self.tangent()
+        if key in tangent:
+            return tangent[key]
+        if key in self.multipliers:
+            return self.multipliers[key]
+        keys = ", ".join(map(repr, tangent))
+        raise KeyError(f"a flow has no component {key!r}: its components are {keys} (Ẋ = flow['X'] or "
+                       f"flow.Xdot, Ṗ = flow['P'] or flow.Pdot), and the multipliers of s.multiplier_flow(H) "
+                       f"are flow['Lambda'], flow['Pi']")
 
 
 @dataclass

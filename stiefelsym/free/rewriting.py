@@ -309,13 +309,35 @@ class SharedMemos:
         #: normal forms of polynomials, by identity: id -> (polynomial, normal form, rules used), and
         #: certificates of polynomials without traces: ("cert", id) -> (polynomial, terms)
         self.poly: dict = {}
+        #: the meaning (index spaces, adjoint) of each letter name the memos may hold
+        self.letters: dict[str, tuple] = {}
+
+    def _memos(self) -> tuple[dict, ...]:
+        return (self.word, self.cycle, self.trace, self.poly) + self.cert
 
     def bound(self) -> None:
         """Empty the memos when they outgrow LIMIT entries (between two systems' uses)."""
-        memos = (self.word, self.cycle, self.trace, self.poly) + self.cert
-        if sum(len(m) for m in memos) > self.LIMIT:
-            for m in memos:
+        if sum(len(m) for m in self._memos()) > self.LIMIT:
+            for m in self._memos():
                 m.clear()
+
+    def admit(self, letter: Letter) -> None:
+        """A scene's letter enters the memos' words.  Words are keyed by their letters' names, so
+        a name must keep one meaning while the memos hold it: two claims' s.fresh(...) number i
+        (gen:fresh:i) or s.generic("G", ...) of other index spaces are other letters under one
+        name, and a normal form memoized for one (its letters, their types) is not the other's.
+        A name met with another meaning empties the memos."""
+        adj = getattr(letter, "adjoint", letter)
+        meaning = (getattr(letter, "row", None), getattr(letter, "col", None),
+                   getattr(letter, "adjoint_sign", 1), str(adj), getattr(adj, "row", None), getattr(adj, "col", None))
+        known = self.letters.get(str(letter))
+        if known == meaning:
+            return
+        if known is not None:
+            for m in self._memos():
+                m.clear()
+            self.letters.clear()
+        self.letters[str(letter)] = meaning
 
 
 class RewritingSystem:

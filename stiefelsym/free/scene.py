@@ -118,6 +118,30 @@ _LETTER_POLYS: dict = {}
 _STANDARD_MEMOS = SharedMemos()
 
 
+class _LetterBook(dict):
+    """A scene's letters by name; each one is admitted to the shared memos of the standard
+    systems (see SharedMemos.admit: a name with another meaning than the memos' empties them)."""
+
+    def __setitem__(self, name: str, letter: Letter) -> None:
+        _STANDARD_MEMOS.admit(letter)
+        super().__setitem__(name, letter)
+
+    def setdefault(self, name: str, letter: Letter) -> Letter:
+        if name not in self:
+            self[name] = letter
+        return self[name]
+
+    def update(self, *args: Any, **kw: Any) -> None:
+        for name, letter in dict(*args, **kw).items():
+            self[name] = letter
+
+
+#: the refusal of M.inv() (a linear solve) in the free algebra, with what to write for a proof for all n, r
+INVERSE_NEEDS_COORDINATES = ("solving a linear system entrywise (M.inv() of a matrix other than a resolvent: "
+                             "write (μI − A)⁻¹ as s.resolvent(μ), and (A² − λ²)⁻¹ as (R(−λ) − R(λ))/(2λ), "
+                             "for a proof for every n, r)")
+
+
 def standard_system() -> RewritingSystem:
     """(cond_XP) as rules: XᵀX → I_r, PᵀX → −XᵀP (order X < P < A < Xᵀ < Pᵀ); a fresh system
     (its own order and record of what it used) on the shared, checked rules, with the memos of
@@ -257,7 +281,7 @@ class FreeField(Field):
         return x.latex() if isinstance(x, NCPoly) else str(x)
 
     def solve(self, M, B):
-        raise refuse("solving a linear system entrywise", self.tracker)
+        raise refuse(INVERSE_NEEDS_COORDINATES, self.tracker)
 
     def rank(self, M):
         raise refuse("a rank", self.tracker)
@@ -280,7 +304,7 @@ class FreeDualField(DualField):
         return Dual(self.base.entry_trace(x.a), self.base.entry_trace(x.b))
 
     def solve(self, M, B):
-        raise refuse("solving a linear system entrywise", self.base.tracker)
+        raise refuse(INVERSE_NEEDS_COORDINATES, self.base.tracker)
 
     def rank(self, M):
         raise refuse("a rank", self.base.tracker)
@@ -335,7 +359,7 @@ class FreeScene(PaperObjects):
         #: the spectral parameters that move with the point: (normal form, the symbol standing for it)
         self._moving: list[tuple[NCPoly, Any]] = []
         self._extras: set[str] = set()
-        self._named: dict[str, Letter] = {}
+        self._named: dict[str, Letter] = _LetterBook()
         #: the multipliers Λ of the metric realization's flows, letters with their Sylvester relations ρ
         self._sylvester: dict = {}
         if realization == "metric":

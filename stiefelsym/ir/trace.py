@@ -389,6 +389,9 @@ class Tracer:
         if self._kind == SCALAR:
             return t.refuse("a number has no entries")
         if type(idx) is str:
+            if idx in _FLOW_ITEMS and self._kind == ANY and t.g.ops[self._r.i] == "call" \
+                    and t.g.args[self._r.i][1] in _FLOW_CALLS:
+                return self.__getattr__(_FLOW_ITEMS[idx])   # flow["X"] is flow.Xdot: the same node
             return t.new("item", (self._r, idx), ANY)
         if self._kind == ANY and type(idx) is int:
             return t.new("item", (self._r, idx), ANY)
@@ -436,6 +439,11 @@ class Tracer:
         return self._t.new("apply", (self._r,) + tuple(self._t.arg(a, functions=True) for a in args)
                            + self._t.kw(kw), ANY)
 
+
+#: the scene's methods that return a flow on T*V, and the components a claim may read from one by
+#: key as from a tangent vector: flow["X"] is flow.Xdot, flow["P"] is flow.Pdot
+_FLOW_CALLS = frozenset({"dirac_flow", "multiplier_flow", "canonical_flow"})
+_FLOW_ITEMS = {"X": "Xdot", "P": "Pdot"}
 
 #: attributes of engine values a claim may read (flows, functions and tensors of the brackets module):
 #: their kind and shape
@@ -516,7 +524,7 @@ class TraceScene:
         if name.startswith("_"):
             raise AttributeError(name)
         if name not in API:
-            return t.refuse(f"a scene has no {name!r} (see README: what a scene s offers)")
+            return t.refuse(f"a scene has no {name!r}{_did_you_mean(name)} (see README: what a scene s offers)")
         if name in MATRICES:
             return t.new("attr", (self._r, name), MAT, t.shape_of(MATRICES[name]))
         if name in NUMBERS:
@@ -533,6 +541,26 @@ class TraceScene:
             name_, build = t.constraints
             return TraceConstraints(name_, build)
         return functools.partial(_SCENE_METHODS[name], self)
+
+
+#: names a reader may reach for, and the scene's spelling of them
+_ALIASES = {"I": "s.In (n×n) or s.Ir (r×r)", "Id": "s.In or s.Ir", "eye": "s.In or s.Ir", "In_": "s.In",
+            "lambda_": "s.lam", "lmbda": "s.lam", "mu": "s.scalar('mu')", "nu": "s.scalar('nu')",
+            "epsilon": "s.eps", "kap": "s.kappa", "Ai": "s.Ainv", "A_inv": "s.Ainv", "Ainverse": "s.Ainv",
+            "trace": "s.tr(M) or M.trace()", "commutator": "comm(a, b) (from stiefelsym import comm)",
+            "comm": "comm(a, b) (from stiefelsym import comm)", "block": "block(...) (from stiefelsym import block)",
+            "flow": "s.dirac_flow(H)", "hamiltonian_flow": "s.dirac_flow(H)", "dirac_bracket": "s.bracket(F, G)",
+            "poisson": "s.bracket(F, G)", "poisson_bracket": "s.bracket(F, G)", "R": "s.resolvent(mu)",
+            "Xdot": "s.dirac_flow(H)['X'] (or .Xdot)", "Pdot": "s.dirac_flow(H)['P'] (or .Pdot)"}
+
+
+def _did_you_mean(name: str) -> str:
+    """A hint for a name the scene does not have: the scene's spelling of it, if it is a known alias
+    or the same name in another case."""
+    if name in _ALIASES:
+        return f": write {_ALIASES[name]}"
+    same = sorted(x for x in API if x.lower() == name.lower())
+    return f": did you mean s.{same[0]}?" if same else ""
 
 
 def _call(s: TraceScene, name: str, args: tuple, kind: str, shape: tuple = (None, None), kw: tuple = ()) -> Tracer:
@@ -959,7 +987,8 @@ class Trace:
             return Named(_NAMED[id(x)][0])
         if functions and callable(x) and not isinstance(x, type):
             return self.function(x, None)[0]
-        return self.refuse(f"a {tx.__name__} is not a value of the IR (exact constants are int and Fraction)")
+        hint = (": write ½ as s.q(1, 2) or Fraction(1, 2), or divide (x / 2)" if tx is float else "")
+        return self.refuse(f"a {tx.__name__} is not a value of the IR (exact constants are int and Fraction){hint}")
 
     def kw(self, kw: dict) -> tuple:
         if not kw:
@@ -1409,7 +1438,8 @@ def trace(func: Callable, n: int | None, r: int | None, constraints: tuple[str, 
     try:
         out = func(TraceScene(t, t.g.add("scene", (0,))))
         if type(out) is not dict or not out:
-            t.refuse("a claim returns a non-empty dict of named checks")
+            got = "an empty dict" if type(out) is dict else f"a {type(out).__name__}"
+            t.refuse(f"a claim returns a non-empty dict of named checks, {{'name': residual, ...}} (it returned {got})")
         if any(type(k) is not str for k in out):
             t.refuse("check names are strings")
         statements = (Inverse, RightInverse)

@@ -898,7 +898,8 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
         return res
     except SymbolicBudget as exc:
         res.verdict = "inconclusive"
-        res.message = f"{exc} is beyond the symbolic method's budget"
+        res.message = (f"{exc} is beyond the symbolic method's budget (the randomized exact methods "
+                       f"decide this size: --method modular, or auto)")
         res.seconds = time.perf_counter() - t0
         return res
     except MemoryError:
@@ -954,6 +955,7 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
         # was taken at random points: randomized exact
         res.verdict = "checked"
         res.false_pass_bound = min(1.0, sum(randomized.bounds))
+        res.seed = seed      # the points were drawn from the seed: the rerun line and a check need it
         return res
     res.verdict = "proved"
     _plan(claim, func, n, r, calls, res)

@@ -99,13 +99,20 @@ def namespaces_available() -> bool:
     return out.returncode == 0
 
 
-def _search_path() -> list[str]:
-    """The directory the loaded package comes from, then this process's search path (absolute)."""
+def _search_path(file: str | None = None) -> list[str]:
+    """The directory the loaded package comes from, then this process's search path (absolute), then the
+    claims file's own folder (as Python puts a script's folder on its path: a claims file imports the
+    helper modules next to it; last, so that a module there shadows neither the engine nor a library).  Not
+    /tmp itself, which is shared: of /tmp the interpreter sees only what :func:`_keep` lists."""
     pkg = os.path.dirname(os.path.dirname(os.path.abspath(sys.modules["stiefelsym"].__file__ or "")))
     out = [pkg]
     for p in sys.path:
         if p and os.path.isabs(p) and p not in out:
             out.append(p)
+    if file:
+        folder = os.path.dirname(os.path.realpath(file))
+        if folder not in out and folder != os.path.realpath("/tmp"):
+            out.append(folder)
     return out
 
 
@@ -176,7 +183,8 @@ def _spawn(config: dict[str, Any], capture: int, seconds: float, unshare: str | 
         argv = [unshare, "--user", "--map-root-user", "--pid", "--fork", "--kill-child", "--mount",
                 "--mount-proc", "--net", "--propagation", "private"] + argv
     conf = dict(config, confine=unshare is not None, sockets=_sockets() if unshare is not None else [])
-    stdin = (json.dumps([os.path.abspath(__file__), _search_path()]) + "\n" + json.dumps(conf)).encode()
+    stdin = (json.dumps([os.path.abspath(__file__), _search_path(config.get("file"))]) + "\n"
+             + json.dumps(conf)).encode()
     with Confined():
         r0, w0 = os.pipe()
         r1, w1 = os.pipe()
