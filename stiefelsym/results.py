@@ -413,8 +413,8 @@ def _command_problems(meta: dict) -> list[str]:
             "--method": list(meta.get("methods") or []), "--max-n": [str(mx)] if mx is not None else [],
             "--seed": [str(meta.get("seed"))] if meta.get("seed") is not None else given.get("--seed", [])}
     for flag, key, default in COMMAND_BUDGETS:
-        value = meta.get(key)
-        want[flag] = [f"{value:g}"] if isinstance(value, (int, float)) and value != default else []
+        setting = meta.get(key)
+        want[flag] = [f"{setting:g}"] if isinstance(setting, (int, float)) and setting != default else []
     out = [f"meta command {_short_repr(cmd)} gives {option} {given.get(option, [])} where the meta says {values}"
            for option, values in want.items() if [str(v) for v in given.get(option, [])] != [str(v) for v in values]]
     return out
