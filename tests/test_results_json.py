@@ -29,3 +29,13 @@ def test_dump_results_is_json_dumps_indented():
     expected = json.dumps({"schema": SCHEMA_VERSION, "meta": meta, "results": [r.to_json() for r in results]},
                           indent=1, sort_keys=False, default=str) + "\n"
     assert dump_results(results, meta) == expected
+
+
+def test_the_budgets_a_command_records_have_the_engines_defaults():
+    """results.COMMAND_BUDGETS (which budgets a recorded command names, and which rerun commands must name) holds
+    the defaults of the pool and the cost model: one table, read by the meta check and the rerun check alike."""
+    from stiefelsym.methods.costmodel import DEFAULT_BUDGET
+    from stiefelsym.results import COMMAND_BUDGETS
+    from stiefelsym.run.pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT
+    assert {key: default for _, key, default in COMMAND_BUDGETS} == {
+        "timeout": DEFAULT_TIMEOUT, "budget": DEFAULT_BUDGET, "memory_gib": DEFAULT_MEMORY_GIB}

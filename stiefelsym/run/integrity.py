@@ -351,11 +351,10 @@ def expected_rerun(record: dict, meta: dict | None, origin: dict[str, str] | Non
     import shlex
     from types import SimpleNamespace
 
-    from stiefelsym.run.pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT
+    from stiefelsym.results import COMMAND_BUDGETS
     from stiefelsym.run.runner import rerun_command
     if meta is None:
         return None
-    from stiefelsym.methods.costmodel import DEFAULT_BUDGET
     res = SimpleNamespace(claim=record.get("claim"), n=record.get("n"), r=record.get("r"),
                           method=record.get("method"), seed=record.get("seed"),
                           reductions=[x for x in record.get("reductions") or [] if isinstance(x, str)])
@@ -363,8 +362,7 @@ def expected_rerun(record: dict, meta: dict | None, origin: dict[str, str] | Non
     path = (origin or {}).get(str(record.get("claim")))
     if path is not None:
         words += ["--claims", str(path)]
-    for option, key, default in (("--timeout", "timeout", DEFAULT_TIMEOUT), ("--budget", "budget", DEFAULT_BUDGET),
-                                 ("--memory", "memory_gib", DEFAULT_MEMORY_GIB)):
+    for option, key, default in COMMAND_BUDGETS:
         value = meta.get(key)
         if isinstance(value, (int, float)) and value != default:
             words += [option, f"{value:g}"]
