@@ -292,6 +292,24 @@ def psi_and_gram_are_invariant(s):
     }
 
 
+def fibre_kernel(s):
+    """Kernel vectors of the differentials of Ψ_ij, (PᵀP)_ij along :func:`vertical_directions` (the columns
+    of :func:`psi_and_gram_give_ddim_functions`), as coefficients of those directions: the r² relations
+    among the directions ((I − XXᵀ)XB = 0, B ∈ gl(r)), and the infinitesimal action δP = ξP of the
+    stabilizer so(X^⊥) = Q so(n) Q of X (Q = I − XXᵀ), which moves in the fibre and leaves the SO(n)-invariant
+    Ψ and PᵀP fixed (§2, (ddim): its generic orbit in the fibre has dimension dim so(n − r), less
+    dim so(n − 2r) for n > 2r)."""
+    n, r = s.n, s.r
+    zero_w = [s.q(0)] * (r * (r - 1) // 2)
+    Q = s.In - s.X @ s.X.T
+
+    def coefficients(C):   # the direction (0, (I − XXᵀ)C) as coefficients of the matrix units
+        return zero_w + [C[a, b] for a in range(n) for b in range(r)]
+    vectors = [coefficients(s.X @ unit(s, r, r, c, d)) for c in range(r) for d in range(r)]
+    vectors += [coefficients(Q @ e @ Q @ s.P) for e in wedge_basis(s, n)]
+    return kernel_matrix(s, vectors)
+
+
 @claim("invariants-complete", paper=("SO(n)-inv", "ddim"), kind="dim", exact_max_n=7,
        equivariance="the statement is about the fibre T*_{X0}V itself",
        statement=r"\rank d\big(\Psi_{ij},(P^TP)_{ij}\big)\big|_{T^*_{X_0}V_{n,r}}=\ddim C^\infty(T^*V_{n,r})^{SO(n)}")
@@ -319,6 +337,69 @@ def ad_matrix(s, mu):
     """The matrix <e_l, [mu, e_k]> of ad_mu on so(n) in the orthonormal basis e_k = E_i∧E_j."""
     basis = wedge_basis(s, s.n)
     return s.mat([[s.killing(e_l, comm(mu, e_k)) for e_k in basis] for e_l in basis])
+
+
+def kernel_matrix(s, vectors):
+    """The matrix whose columns are ``vectors`` (lists of scalars of one length): a kernel certificate."""
+    return s.mat([list(row) for row in zip(*vectors)])
+
+
+def so_coordinates(xi):
+    """The coordinates <ξ, E_i∧E_j> = ξ_ij (i < j) of ξ ∈ so(m) in the basis :func:`wedge_basis`."""
+    m = xi.shape[0]
+    return [xi[i, j] for i in range(m) for j in range(i + 1, m)]
+
+
+def cofactor_det(s, rows):
+    """The determinant of a small square list of lists of scalars, by the Laplace expansion."""
+    m = len(rows)
+    if m == 0:
+        return s.q(1)
+    acc = s.q(0)
+    for c in range(m):
+        term = rows[0][c] * cofactor_det(s, [row[:c] + row[c + 1:] for row in rows[1:]])
+        acc = acc - term if c % 2 else acc + term
+    return acc
+
+
+def adjugate(s, G):
+    """(adj G, det G) for a small square matrix G, by cofactors: G adj G = det G · I, no division."""
+    m = G.shape[0]
+    rows = [[G[i, j] for j in range(m)] for i in range(m)]
+
+    def minor(i, j):    # rows without i, columns without j
+        return [row[:j] + row[j + 1:] for k, row in enumerate(rows) if k != i]
+    adj = s.mat([[cofactor_det(s, minor(j, i)) * (-1 if (i + j) % 2 else 1) for j in range(m)]
+                 for i in range(m)])
+    return adj, cofactor_det(s, rows)
+
+
+def annihilator_of_point(s):
+    """Q = det G·(I − XXᵀ) − P₁ adj(G) P₁ᵀ with P₁ = (I − XXᵀ)P, G = P₁ᵀP₁: symmetric, polynomial, QX = QP = 0
+    on T*V, and det G times the projector onto span(X, P)^⊥ (the kernel of Φ at a generic point)."""
+    pi_perp = s.In - s.X @ s.X.T
+    P1 = pi_perp @ s.P
+    adj, det = adjugate(s, P1.T @ P1)
+    return det * pi_perp - P1 @ adj @ P1.T
+
+
+def ad_phi_kernel(s):
+    """The centralizer of Φ in so(n), the kernel of ad_Φ (Lemma 2l: dim so(n) − 2l), in the coordinates of
+    :func:`ad_matrix`'s columns: the odd powers Φ, Φ³, … (the Cartan subalgebra through a generic Φ of rank
+    min(2r, n), [n/2] of them for n ≤ 2r + 1, r otherwise) and, for n > 2r + 1, so(ker Φ) = Q so(n) Q,
+    Q = :func:`annihilator_of_point` (Φ = PXᵀ − XPᵀ vanishes on span(X, P)^⊥)."""
+    n, r = s.n, s.r
+    Phi = s.Phi
+    square = Phi @ Phi
+    powers, acc = [], Phi
+    for _ in range(n // 2 if n <= 2 * r + 1 else r):
+        powers.append(acc)
+        acc = acc @ square
+    vectors = [so_coordinates(xi) for xi in powers]
+    if n > 2 * r + 1:
+        Q = annihilator_of_point(s)
+        vectors += [so_coordinates(Q @ e @ Q) for e in wedge_basis(s, n)]
+    return kernel_matrix(s, vectors)
 
 
 @claim("adjoint-orbit-dimension", paper=("2l",), kind="dim", exact_max_r=AD_PHI_EXACT_MAX_R,

@@ -6,6 +6,8 @@ from stiefelsym.brackets import (SO_R, MatrixFunction, casimir_residual, compati
                                  lie_poisson, linear, pencil, poisson_checks, poisson_map_residual, quadratic,
                                  skew, sym, trace_power)
 
+from .sec2_hamiltonian_flows import wedge_basis
+
 SECTION = "6"
 
 #: the powers k of the trace functions tr(·)^k checked (the paper: k = 1, ..., n or 1, ..., r)
@@ -578,6 +580,24 @@ def _FF_functions(count, n):
         lam = t.scalar(f"lam{j}")
         return power_trace(t, lam * (t.P @ t.X.T - t.X @ t.P.T) + t.X @ t.X.T, k)
     return [lambda t, j=j, k=k: f(t, j, k) for j in range(count) for k in range(1, n + 1)]
+
+
+def tangent_coordinates(s, v):
+    """A tangent vector {"X": δX, "P": δP} in the 2nr coordinates of X, P (the columns of :func:`differentials`)."""
+    n, r = s.n, s.r
+    return [v["X"][i, j] for i in range(n) for j in range(r)] + [v["P"][i, j] for i in range(n) for j in range(r)]
+
+
+def vector_fields(s, fields):
+    """The matrix whose columns are the tangent vectors ``fields``: a kernel certificate of a matrix of
+    differentials in the coordinates of X, P."""
+    return s.mat([list(row) for row in zip(*(tangent_coordinates(s, v) for v in fields))])
+
+
+def left_action_fields(s):
+    """(ξX, ξP), ξ = E_i∧E_j: the infinitesimal SO(n)-action, tangent to T*V, annihilated by the differential
+    of every SO(n)-invariant function."""
+    return [{"X": xi @ s.X, "P": xi @ s.P} for xi in wedge_basis(s, s.n)]
 
 
 @claim("cif-completeness", paper=("CIF", "FF", "BB", "2l"), kind="dim", exact_max_n=3,

@@ -154,6 +154,56 @@ def neumann_flows_coincide_on_psi_zero(s):
 
 # -- Theorem NEUMANN2: the kernel of Λ1 on Θ(Ψ⁻¹(0)) ------------------------------------------------
 
+def gl_coordinates(xi, eta):
+    """The coordinates of ξ + η (ξ skew, η symmetric) in the basis of gl(n) of ``lambda1``'s columns
+    (sec6_dimension_lemmas.gl_basis: E_i∧E_j, i < j, then E_ij + E_ji, i < j, and E_ii): ξ_ij, then η_ij, i ≤ j."""
+    n = xi.shape[0]
+    return ([xi[i, j] for i in range(n) for j in range(i + 1, n)]
+            + [eta[i, j] for i in range(n) for j in range(i, n)])
+
+
+def sym_units(s, m, tags):
+    """E_ij + E_ji (i < j) and E_ii, i ≤ j in lexicographic order: a basis of Sym(m)."""
+    out = []
+    for i in range(m):
+        for j in range(i, m):
+            E = s.mat([[s.q(1) if (a, b) == (i, j) else s.q(0) for b in range(m)] for a in range(m)], tags)
+            out.append(E + E.T if i != j else E)
+    return out
+
+
+def skew_units(s, m, tags):
+    """E_i∧E_j (i < j): a basis of so(m)."""
+    out = []
+    for i in range(m):
+        for j in range(i + 1, m):
+            E = s.mat([[s.q(1) if (a, b) == (i, j) else s.q(0) for b in range(m)] for a in range(m)], tags)
+            out.append(E - E.T)
+    return out
+
+
+def lema1_kernel_at_psi_zero(s, X, h):
+    """Kernel vectors of Λ1(h + v), v = XXᵀ, at a point with Xᵀh X = 0 (Ψ = 0, so h1 = 0), in the coordinates of
+    ``lambda1``'s columns: the solutions ξ + η of (L1) [ξ, v] = 0, (L2) [ξ, h] + [η, v] = 0 of the proof of
+    LEMA1, which span gl(r) ⊕ gl(n − r) (Theorem NEUMANN2): with π = XXᵀ, π' = I − π, ξ block diagonal
+    (XωXᵀ, ω ∈ so(r), and π'ξ'π', ξ' ∈ so(n)) with the off-diagonal η = π'Cπ − πCπ', C = [h, ξ], and η block
+    diagonal (XσXᵀ, σ ∈ Sym(r), and π'σ'π', σ' ∈ Sym(n)) with ξ = 0."""
+    n, r = s.n, s.r
+    pi = X @ X.T
+    pi_perp = s.In - pi
+    zero = s.zeros(n, n, ("n", "n"))
+    xis = [X @ w @ X.T for w in skew_units(s, r, ("r", "r"))]
+    xis += [pi_perp @ w @ pi_perp for w in skew_units(s, n, ("n", "n"))]
+    etas = [X @ w @ X.T for w in sym_units(s, r, ("r", "r"))]
+    etas += [pi_perp @ w @ pi_perp for w in sym_units(s, n, ("n", "n"))]
+    vectors = []
+    for xi in xis:
+        C = comm(h, xi)
+        vectors.append(gl_coordinates(xi, pi_perp @ C @ pi - pi @ C @ pi_perp))
+    vectors += [gl_coordinates(zero, eta) for eta in etas]
+    return s.mat([list(row) for row in zip(*vectors)])
+
+
 @claim("neumann2-kernel", paper=("NEUMANN2", "LEMA1", "KER"), kind="dim",
        sizes=admissible(5), exact_max_n=4, exact_max_r={5: 5, 6: 2, 7: 2},
        exact_corank={6: 2, 7: 1},
