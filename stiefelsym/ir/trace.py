@@ -1091,7 +1091,17 @@ class Trace:
                 what = ("a list of rows (a Jacobian?): build the matrix with s.mat(rows)" if isinstance(m, list)
                         else "a number" if type(m) is Tracer else type(m).__name__)
                 return self.refuse(f"Rank: the matrix must be a matrix of the scene, not {what}")
-            return self.statement(v, "rank", (m._r, v.expected, v.generic, v.meaning))
+            k = v.kernel
+            if k is None:
+                return self.statement(v, "rank", (m._r, v.expected, v.generic, v.meaning))
+            if not (type(k) is Tracer and k._kind != SCALAR):
+                return self.refuse(f"Rank: the kernel must be a matrix of the scene (its columns the kernel vectors), "
+                                   f"not {'a list' if isinstance(k, list) else 'a number' if type(k) is Tracer else type(k).__name__}")
+            rows, cols = (x.value if type(x) is Size else x for x in (k._shape[0], m._shape[1]))
+            if None not in (rows, cols) and rows != cols:
+                return self.refuse(f"Rank: the kernel has {rows} rows and the matrix {cols} columns "
+                                   f"(the kernel's columns are vectors v with M v = 0)")
+            return self.statement(v, "rank", (m._r, v.expected, v.generic, v.meaning, k._r))
         if tv is Count:
             return self.statement(v, "count", (v.value, v.expected, v.meaning))
         if tv is Inverse or tv is RightInverse:
