@@ -1123,7 +1123,8 @@ class PolyBackend(Backend):
     def values_at(self, s, draw) -> list | None:
         """The entries of a matrix at a point of the ring's variables, as flint rationals: ``s`` is a
         matrix of this backend or an array of the field's scalars (a matrix built entry by entry), and
-        ``draw(k)`` gives the point's k coordinates (one per variable of the ring's context).  None
+        ``draw(k)`` gives the point's k coordinates (one per variable that occurs, in the order of the
+        variables' names).  None
         where a denominator vanishes at the point; NotImplemented for an entry flint does not hold
         (symengine expressions beyond the ring), which the caller evaluates its own way."""
         R = self.ring
@@ -1154,7 +1155,18 @@ class PolyBackend(Backend):
                     nums[idx] = R.lift(x)
         else:
             return NotImplemented
-        point = draw(R.ctx.nvars())
+        # the point's coordinates are drawn for the variables that occur, in the order of their names (the
+        # same point whatever else the ring holds: the draw does not depend on other matrices or runs)
+        used: set[int] = set()
+        for x in (nums.flat if nums is not None else ()):
+            used.update(i for i, e in enumerate(x.degrees()) if e > 0)
+        for d in ([s.den] if dens is None else dens.flat):
+            for k, _e in d:
+                used.update(i for i, e in enumerate(R.atoms[k].degrees()) if e > 0)
+        order = sorted(used, key=lambda i: str(R.syms[i]))
+        point = [0] * R.ctx.nvars()
+        for i, v in zip(order, draw(len(order))):
+            point[i] = v
         atoms: dict[int, Any] = {}
 
         def den_at(d: tuple):
