@@ -92,7 +92,8 @@ def test_a_kernel_that_is_not_a_matrix_of_the_right_rows_is_an_error_under_every
     """A flow as the kernel (a value of unknown kind, accepted by the trace), Xᵀ (r rows for n columns, traced with
     symbolic sizes, where the trace cannot compare them), and a kernel kept on a rank switched to every point after
     it was made.  Before: the exact method crashed on the flow (AttributeError), dropped Xᵀ ("not used") and
-    proved the rank, and the point methods ignored both; now each is an error wherever it is evaluated."""
+    proved the rank, and the point methods ignored both; now each is an error wherever it is evaluated.  The rank
+    switched to every point is refused by the trace itself (it was an exception of the replay at the size)."""
     recs, run = _records(*MALFORMED, "--method", "exact", "--method", "modular", "--method", "rational",
                          "--method", "auto")
     fixed = [r for r in recs if r["method"] != "free"]
@@ -104,6 +105,8 @@ def test_a_kernel_that_is_not_a_matrix_of_the_right_rows_is_an_error_under_every
     words = {r["claim"]: r["message"] for r in fixed if r["method"] == "exact"}
     assert "the kernel must be a matrix of the scene" in words["adv-s43-kernel-flow"], words
     assert "the kernel has 1 rows and the matrix 3 columns" in words["adv-s43-kernel-rows-r"], words
+    # refused by the trace (before: an exception of the replay at the size, reported as "NoGraph")
+    assert "refused: Rank: a kernel certifies a generic rank" in words["adv-s43-every-point-by-setattr"], words
 
 
 def test_check_rejects_a_kernel_record_grafted_or_edited(tmp_path):
