@@ -1120,6 +1120,83 @@ class PolyBackend(Backend):
     def shape(self, s):
         return s.a.shape
 
+    def values_at(self, s, draw) -> list | None:
+        """The entries of a matrix at a point of the ring's variables, as flint rationals: ``s`` is a
+        matrix of this backend or an array of the field's scalars (a matrix built entry by entry), and
+        ``draw(k)`` gives the point's k coordinates (one per variable that occurs, in the order of the
+        variables' names).  None
+        where a denominator vanishes at the point; NotImplemented for an entry flint does not hold
+        (symengine expressions beyond the ring), which the caller evaluates its own way."""
+        R = self.ring
+        if type(s) is PolyMat:
+            s = self._fix(s)
+            shape = s.a.shape
+            nums = s.a if not s.z else None
+            dens = None
+        elif type(s) is RatMat:
+            s = ratmat.fix(self, s)
+            shape, nums, dens = s.a.shape, s.a, s.d
+        elif type(s) is np.ndarray:
+            shape = s.shape
+            nums, dens = np.empty(shape, dtype=object), np.empty(shape, dtype=object)
+            for idx, x in np.ndenumerate(s):
+                if type(x) is _RF:
+                    if x.R is not R:
+                        # a scalar of another field's ring: its variable indices and denominator atoms are
+                        # that ring's, not this one's (the contexts are shared by size): its own expression
+                        return NotImplemented
+                    nums[idx], dens[idx] = x.rf()
+                    continue
+                if type(x) is _BigPoly:
+                    return NotImplemented
+                try:
+                    nums[idx], dens[idx] = R.from_se(x)
+                except NotRational:
+                    return NotImplemented
+            ctx = R.ctx                  # the context may have grown while converting: lift once
+            for idx, x in np.ndenumerate(nums):
+                if x.context() is not ctx:
+                    nums[idx] = R.lift(x)
+        else:
+            return NotImplemented
+        # the point's coordinates are drawn for the variables that occur, in the order of their names (the
+        # same point whatever else the ring holds: the draw does not depend on other matrices or runs)
+        used: set[int] = set()
+        for x in (nums.flat if nums is not None else ()):
+            used.update(i for i, e in enumerate(x.degrees()) if e > 0)
+        for d in ([s.den] if dens is None else dens.flat):
+            for k, _e in d:
+                used.update(i for i, e in enumerate(R.atoms[k].degrees()) if e > 0)
+        order = sorted(used, key=lambda i: str(R.syms[i]))
+        point = [0] * R.ctx.nvars()
+        for i, v in zip(order, draw(len(order))):
+            point[i] = v
+        atoms: dict[int, Any] = {}
+
+        def den_at(d: tuple):
+            out = flint.fmpq(1)
+            for k, e in d:
+                v = atoms.get(k)
+                if v is None:
+                    v = atoms[k] = R.atoms[k](*point)
+                out = out * v ** e
+            return out
+
+        common = den_at(s.den) if type(s) is PolyMat else flint.fmpq(1)
+        if common == 0:
+            return None
+        rows = []
+        for i in range(shape[0]):
+            row = []
+            for j in range(shape[1]):
+                v = nums[i, j](*point) if nums is not None else flint.fmpq(0)
+                d = common if dens is None else den_at(dens[i, j])
+                if d == 0:
+                    return None
+                row.append(v / d)
+            rows.append(row)
+        return rows
+
     def take(self, s, rows, cols):
         """A block without converting the rest of the matrix: numerators sliced over the same
         denominator (then reduced), or the generic entries sliced."""

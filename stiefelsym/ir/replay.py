@@ -300,7 +300,7 @@ class _Replay:
         return a[0]
 
     def _rank(self, a, frame):
-        return Rank(self.arg(a[0], frame), *a[1:])
+        return Rank(self.arg(a[0], frame), a[1], a[2], a[3], self.arg(a[4], frame) if len(a) > 4 else None)
 
     def _count(self, a, frame):
         return Count(*a)

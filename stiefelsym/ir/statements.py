@@ -25,12 +25,20 @@ class Rank:
     ``generic``: the rank at a generic point of the chart (the paper's
     "generic orbit", "independent functions"); otherwise the rank must be
     ``expected`` at every point of the constraint set (then the exact method
-    looks for a nonzero constant maximal minor)."""
+    looks for a nonzero constant maximal minor).
+
+    ``kernel``: a certificate for the upper side of a generic rank, a matrix
+    with as many rows as ``matrix`` has columns whose columns are vectors (in the
+    point's parameters) with ``matrix @ kernel = 0`` identically on the
+    constraint set.  The exact method proves that identity in its chart and the
+    rank d of the kernel at an exact point, so the generic rank is at most
+    cols − d.  It is only a certificate: a wrong kernel never refutes the rank."""
 
     matrix: Any
     expected: int
     generic: bool = True
     meaning: str = ""
+    kernel: Any = None
 
     def __post_init__(self) -> None:
         _as_int(self, "expected", "an expected rank")
@@ -38,6 +46,9 @@ class Rank:
             raise TypeError("Rank: the expected rank is an int and generic a bool")
         if type(self.meaning) is not str:
             raise TypeError("Rank: the meaning is a string")
+        if self.kernel is not None and not self.generic:
+            raise TypeError("Rank: a kernel certifies a generic rank (generic=True); a rank at every point needs "
+                            "a constant minor or a RightInverse")
         statement_site(self)
 
 

@@ -1091,7 +1091,22 @@ class Trace:
                 what = ("a list of rows (a Jacobian?): build the matrix with s.mat(rows)" if isinstance(m, list)
                         else "a number" if type(m) is Tracer else type(m).__name__)
                 return self.refuse(f"Rank: the matrix must be a matrix of the scene, not {what}")
-            return self.statement(v, "rank", (m._r, v.expected, v.generic, v.meaning))
+            k = v.kernel
+            if k is None:
+                return self.statement(v, "rank", (m._r, v.expected, v.generic, v.meaning))
+            if not (type(k) is Tracer and k._kind != SCALAR):
+                return self.refuse(f"Rank: the kernel must be a matrix of the scene (its columns the kernel vectors), "
+                                   f"not {'a list' if isinstance(k, list) else 'a number' if type(k) is Tracer else type(k).__name__}")
+            if v.generic is not True:
+                # the statement refuses it when made; one changed after (object.__setattr__) is refused here, as
+                # a trace's refusal, not as an exception of the replay that makes the statement again
+                return self.refuse("Rank: a kernel certifies a generic rank (generic=True); a rank at every point "
+                                   "needs a constant minor or a RightInverse")
+            rows, cols = (x.value if type(x) is Size else x for x in (k._shape[0], m._shape[1]))
+            if None not in (rows, cols) and rows != cols:
+                return self.refuse(f"Rank: the kernel has {rows} rows and the matrix {cols} columns "
+                                   f"(the kernel's columns are vectors v with M v = 0)")
+            return self.statement(v, "rank", (m._r, v.expected, v.generic, v.meaning, k._r))
         if tv is Count:
             return self.statement(v, "count", (v.value, v.expected, v.meaning))
         if tv is Inverse or tv is RightInverse:

@@ -526,6 +526,25 @@ class _RandomizedRank:
 def _point_values(M: Mat, rng: random.Random, modulus: int | None):
     """The matrix's symbolic entries at a random integer point of its parameters: fmpq (modulus
     None) or residues mod p; None when the point is a pole of an entry."""
+    bound = 2**62 if modulus is None else modulus
+    values_at = getattr(backend(M._field), "values_at", None)
+    if values_at is not None:
+        # the backend's own polynomials evaluated at the point (flint), without symengine expressions
+        vals = values_at(M._n if M._n is not None else M._view(), lambda k: [rng.randrange(-bound, bound) if modulus is None else rng.randrange(modulus)
+                                          for _ in range(k)])
+        if vals is not NotImplemented:
+            if vals is None or modulus is None:
+                return vals
+            out = []
+            for row in vals:
+                out_row = []
+                for q in row:
+                    num, den = int(q.p), int(q.q)
+                    if den % modulus == 0:
+                        return None
+                    out_row.append(flint.nmod(num, modulus) / flint.nmod(den, modulus))
+                out.append(out_row)
+            return out
     import symengine as se
     rows = _symbolic_rows(M)
     syms = set()
@@ -533,7 +552,6 @@ def _point_values(M: Mat, rng: random.Random, modulus: int | None):
         for x in row:
             syms |= se.sympify(x).free_symbols
     syms = sorted(syms, key=str)
-    bound = 2**62 if modulus is None else modulus
     point = {s: rng.randrange(-bound, bound) if modulus is None else rng.randrange(modulus) for s in syms}
     out = []
     for row in rows:
@@ -582,6 +600,11 @@ def _exact_rank(R: Rank, field: Field, randomized: _RandomizedRank | None = None
         if lower is not None and lower == R.expected == min(M._shape()):
             return (f"rank {lower} at an exact rational point: full rank over the function field "
                     f"(paper: {R.expected})", True)
+        note = ""
+        if R.kernel is not None:
+            decided, note = _kernel_rank(R, rng, lower)
+            if decided is not None:
+                return decided
         try:
             with deadline(SYMBOLIC_RANK_SECONDS if randomized is not None else None, "the function-field rank",
                           lambda message: ExactTimeout(message)):
@@ -592,12 +615,12 @@ def _exact_rank(R: Rank, field: Field, randomized: _RandomizedRank | None = None
             ok = generic == R.expected
             kernel = _kernel_certificate(M) if generic < R.expected else ""
             return (f"rank over the function field Q(chart parameters) = {generic} "
-                    f"(paper: {R.expected}); two-sided: exact rank of the generic matrix{kernel}", ok)
+                    f"(paper: {R.expected}); two-sided: exact rank of the generic matrix{kernel}{note}", ok)
         # the upper bound at random points of prime fields
         if lower is None or lower < R.expected:
             # a point can be special: without the function-field rank a lower rank is not certain
             raise ExactTimeout(f"the function-field rank exceeded {SYMBOLIC_RANK_SECONDS:.0f} s, and the rank "
-                               f"at an exact rational point, {lower}, is below the printed {R.expected}")
+                               f"at an exact rational point, {lower}, is below the printed {R.expected}{note}")
         D = max(1, minor_degree() if minor_degree else 1)
         joint, pts = 1.0, 0
         while joint > POINTS_TARGET and pts < POINTS_CAP:
@@ -617,7 +640,7 @@ def _exact_rank(R: Rank, field: Field, randomized: _RandomizedRank | None = None
         return (f"rank >= {lower} (exact rank at a rational point) and rank <= {R.expected} with false-pass "
                 f"probability <= {joint:.1e} (rank {R.expected} at {pts} random points of prime fields "
                 f"p > 2^{PRIME_BITS}; the ({R.expected + 1})-minors have degree <= {D}; the symbolic function-field rank "
-                f"exceeded {SYMBOLIC_RANK_SECONDS:.0f} s); paper: {R.expected}", "ok")
+                f"exceeded {SYMBOLIC_RANK_SECONDS:.0f} s); paper: {R.expected}{note}", "ok")
     constant = _rational_constant_matrix(M)
     if constant is not None:
         # every entry a rational number: the matrix is the same at every point of the chart, and its
@@ -642,6 +665,58 @@ def _exact_rank(R: Rank, field: Field, randomized: _RandomizedRank | None = None
     kernel = _kernel_certificate(M) if generic < R.expected else ""
     return (f"a constant nonzero {const}x{const} minor (rank >= {const} at every point) and rank "
             f"{generic} over the function field (rank <= {generic} at every point); paper: {R.expected}{kernel}", ok)
+
+
+#: exact rational points at which a kernel certificate's rank bound is sought when the first point is special
+KERNEL_POINTS = 3
+
+
+def _kernel_rank(R: Rank, rng: random.Random, lower: int | None) -> tuple[tuple[str, Any] | None, str]:
+    """The generic rank of R.matrix bounded from above by the claim's kernel certificate: M K = 0
+    identically in the chart (every entry of the product is zero in the symbolic field), and rank K >= d
+    at an exact rational point, so rank K >= d over the function field and rank M <= cols − d there.
+    Returns (the rank's detail and status, or None when the certificate does not decide) and a note for
+    the detail of the route taken instead.  A kernel is never evidence against the printed rank unless
+    it proves the rank smaller: M K = 0 holds, so cols − d is a proved upper bound."""
+    M, K = R.matrix, R.kernel
+    cols = M._shape()[1]
+    if K._shape()[0] != cols:
+        return None, f"; the kernel certificate has {K._shape()[0]} rows, not {cols}: not used"
+    f = M._field
+    if K._field is not f:
+        return None, "; the kernel certificate is not a matrix of the chart's field: not used"
+    # the product of the entries as they are (whatever index spaces the claim gave the kernel, only M K = 0
+    # entry by entry is relied on), in the backend's own matrices where both are held there
+    be = backend(f)
+    if be is not None:
+        a, b = (X._n if X._n is not None else be.from_obj(X._view()) for X in (M, K))
+        vanishes = be.is_zero(be.matmul(a, b))
+    else:
+        vanishes = all(f.is_zero(f.normalize(x)) for x in np.dot(M._view(), K._view()).flat)
+    if not vanishes:
+        return None, "; the kernel certificate is not one: M K is not identically 0 in the chart (not used)"
+    d = _rank_at_point(K, rng)
+    if d is None:
+        return None, "; the kernel certificate's rank was not found at an exact point (poles): not used"
+    upper = cols - d
+    bound = (f"{d} kernel vectors of the claim, M K = 0 identically in the chart and rank K = {d} at an exact "
+             f"rational point, so rank <= {cols} − {d} = {upper} over the function field")
+    if upper < R.expected:
+        return (f"{bound} (paper: {R.expected}; certain)", "certain"), ""
+    if upper > R.expected:
+        return None, f"; the kernel certificate bounds the rank by {upper} only (paper: {R.expected})"
+    tries = 0
+    while (lower is None or lower < upper) and tries < KERNEL_POINTS:
+        tries += 1
+        again = _rank_at_point(M, rng)
+        if again is not None and (lower is None or again > lower):
+            lower = again
+    if lower is None or lower < upper:
+        return None, f"; the kernel certificate gives rank <= {upper}, and the rank at exact points stayed {lower}"
+    if lower > upper:       # M K = 0 and rank K = d at points: impossible, so an internal error
+        raise RuntimeError(f"rank {lower} at a point exceeds the kernel certificate's bound {upper}")
+    return (f"rank {lower} at an exact rational point (rank >= {lower} over the function field) and {bound}; "
+            f"two-sided (paper: {R.expected})", True), ""
 
 
 EQUIVARIANT_REDUCTION = (
