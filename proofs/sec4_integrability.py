@@ -5,8 +5,8 @@ from __future__ import annotations
 
 from stiefelsym import Count, Rank, admissible, block, claim, comm, twisted
 
-from .sec2_hamiltonian_flows import (ad_matrix, ddim_printed, dim_so, dim_V, psi_and_gram_give_ddim_functions,
-                                     two_l_printed)
+from .sec2_hamiltonian_flows import (ad_matrix, ad_phi_kernel, ddim_printed, dim_so, dim_V,
+                                     psi_and_gram_give_ddim_functions, two_l_printed)
 
 SECTION = "4"
 
@@ -46,7 +46,8 @@ def invariant_tori_dimensions(s):
     n, r = s.n, s.r
     ddim, two_l = ddim_printed(n, r), two_l_printed(n, r)
     checks = {
-        "2l": Rank(ad_matrix(s, s.Phi), two_l, generic=True, meaning="2l, the dimension of a generic orbit in Phi(T*V)"),
+        "2l": Rank(ad_matrix(s, s.Phi), two_l, generic=True, meaning="2l, the dimension of a generic orbit in Phi(T*V)",
+                   kernel=ad_phi_kernel(s)),
         "ddim": psi_and_gram_give_ddim_functions(s)["rank on the fibre"],
         "delta_0": Count(2 * dim_V(n, r) - ddim - two_l, delta0_printed(n, r),
                          "2 dim V - ddim - 2l against the closed form"),

@@ -600,6 +600,24 @@ def left_action_fields(s):
     return [{"X": xi @ s.X, "P": xi @ s.P} for xi in wedge_basis(s, s.n)]
 
 
+def cif_kernel(s, F, B):
+    """Kernel vectors of the differentials of (FF), (BB) and (cond_XP) (Theorem CIF): the SO(n)-action, which
+    fixes the SO(n)-invariant functions, and the Hamiltonian fields of the commuting functions (BB) and of (FF)
+    at the first value of λ (at n <= 7 these span the kernel, of dimension dim V + l: the SO(n)-orbits and the
+    commutative set together)."""
+    n = s.n
+    return vector_fields(s, left_action_fields(s) + [s.dirac_flow(f) for f in B + F[:n]])
+
+
+def com_kernel(s, F, B):
+    """Kernel vectors of the differentials of (perelomov), (BB) and (cond_XP) (Corollary COM): the Hamiltonian
+    fields of the commuting integrals (BB) and (perelomov) at the first ⌈n/2⌉ values of λ (F + B is complete
+    and commutative, so their fields span a Lagrangian kernel of dimension dim V; ⌈n/2⌉ values suffice at
+    n <= 7)."""
+    n = s.n
+    return vector_fields(s, [s.dirac_flow(f) for f in B + F[:n * ((n + 1) // 2)]])
+
+
 @claim("cif-completeness", paper=("CIF", "FF", "BB", "2l"), kind="dim", exact_max_n=3,
        exact_max_r={4: 2, 5: 2, 6: 1, 7: 1},
        equivariance="the rank of the differentials of SO(n)-invariant functions on T*V is invariant under O(n); the Jacobian only lists them in the coordinates of R^{2nr}",
@@ -608,9 +626,10 @@ def left_action_fields(s):
 def cif_set_is_complete(s):
     """Theorem CIF (ii): the functions (FF) and (BB) (k ≤ n and k ≤ r, at n + 1 and r + 1 values of λ and μ: all their coefficients) have dim V − l independent differentials on T*V, 2l the dimension of Lemma 2l, so the commutative set 𝔉 + 𝔅 is complete in the algebra of SO(n)-invariant functions."""
     n, r = s.n, s.r
-    functions = _FF_functions(n + 1, n) + _bb_functions(r)
-    return {"ddim(F + B)": Rank(_differentials_on_TV(s, functions), _dim_V(n, r) - _two_l(n, r) // 2 + r * (r + 1),
-                                generic=True, meaning="dim V - l + r(r+1): independent on T*V, plus the constraints")}
+    F, B = _FF_functions(n + 1, n), _bb_functions(r)
+    return {"ddim(F + B)": Rank(_differentials_on_TV(s, F + B), _dim_V(n, r) - _two_l(n, r) // 2 + r * (r + 1),
+                                generic=True, meaning="dim V - l + r(r+1): independent on T*V, plus the constraints",
+                                kernel=cif_kernel(s, F, B))}
 
 
 @claim("com-completeness", paper=("COM", "perelomov", "BB"), kind="dim", exact_max_n=2, exact_max_r={3: 2, 4: 1},
@@ -620,6 +639,7 @@ def cif_set_is_complete(s):
 def com_set_is_complete(s):
     """Corollary COM: the integrals (perelomov) and (BB) (k ≤ n and k ≤ r, at 2n + 1 and r + 1 values of λ and μ: all their coefficients) have dim V independent differentials on T*V, so with their commutativity they form a complete commutative set (Liouville integrability of H_neum,𝔹)."""
     n, r = s.n, s.r
-    functions = _perelomov_functions(2 * n + 1, n) + _bb_functions(r)
-    return {"ddim(F + B)": Rank(_differentials_on_TV(s, functions), _dim_V(n, r) + r * (r + 1), generic=True,
-                                meaning="dim V + r(r+1): independent on T*V, plus the constraints")}
+    F, B = _perelomov_functions(2 * n + 1, n), _bb_functions(r)
+    return {"ddim(F + B)": Rank(_differentials_on_TV(s, F + B), _dim_V(n, r) + r * (r + 1), generic=True,
+                                meaning="dim V + r(r+1): independent on T*V, plus the constraints",
+                                kernel=com_kernel(s, F, B))}

@@ -216,12 +216,14 @@ def neumann2_kernel(s):
     n, r = s.n, s.r
     X = s.X
     P0 = horizontal(s, X, s.P)
-    x = P0 @ X.T - X @ P0.T + X @ X.T
+    h = P0 @ X.T - X @ P0.T
+    x = h + X @ X.T
     ker = r * r + (n - r) * (n - r)
     return {
         "X^T P0 (a point of Psi^{-1}(0))": X.T @ P0,
         "rank Lambda1(h+v) at Psi = 0": Rank(lambda1(s, x), n * n - ker, generic=True,
-                                             meaning="n² − dim gl(r) − dim gl(n − r)"),
+                                             meaning="n² − dim gl(r) − dim gl(n − r)",
+                                             kernel=lema1_kernel_at_psi_zero(s, X, h)),
         "r(n-r) = (dim gl(n) - dim gl(r) - dim gl(n-r))/2": Count(2 * r * (n - r), n * n - ker,
                                                                   "twice dim G_{n,r} against the printed count"),
     }
