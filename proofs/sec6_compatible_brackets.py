@@ -600,22 +600,34 @@ def left_action_fields(s):
     return [{"X": xi @ s.X, "P": xi @ s.P} for xi in wedge_basis(s, s.n)]
 
 
+def manakov_fields_needed(s, B):
+    """Of the functions (BB) (``B``: tr(Ψ + μ_jB)^k in the order μ_j, then k), those whose Hamiltonian fields
+    span the fields of all of them: tr(Ψ + μB)^k is a polynomial in μ whose nonconstant coefficients are those of
+    μ^(k−2), μ^(k−4), … (a trace of a product with an odd number of factors Ψ vanishes), [k/2] of them, so
+    [k/2] values of μ give its fields for every μ (k = 1 is the constant μ tr B)."""
+    r = s.r
+    return [B[j * r + k - 1] for k in range(2, r + 1) for j in range(k // 2)]
+
+
 def cif_kernel(s, F, B):
     """Kernel vectors of the differentials of (FF), (BB) and (cond_XP) (Theorem CIF): the SO(n)-action, which
-    fixes the SO(n)-invariant functions, and the Hamiltonian fields of the commuting functions (BB) and of (FF)
-    at the first value of λ (at n <= 7 these span the kernel, of dimension dim V + l: the SO(n)-orbits and the
-    commutative set together)."""
+    fixes the SO(n)-invariant functions, and the Hamiltonian fields of the commuting functions (BB)
+    (:func:`manakov_fields_needed`) and of (FF) at the first value of λ (k ≥ 2; tr(λΦ + XXᵀ) = r is constant).
+    At n ≤ 7 they span the kernel, of dimension dim V + l (the SO(n)-orbits and the commutative set together)."""
     n = s.n
-    return vector_fields(s, left_action_fields(s) + [s.dirac_flow(f) for f in B + F[:n]])
+    return vector_fields(s, left_action_fields(s) + [s.dirac_flow(f) for f in manakov_fields_needed(s, B) + F[1:n]])
 
 
 def com_kernel(s, F, B):
     """Kernel vectors of the differentials of (perelomov), (BB) and (cond_XP) (Corollary COM): the Hamiltonian
-    fields of the commuting integrals (BB) and (perelomov) at the first ⌈n/2⌉ values of λ (F + B is complete
-    and commutative, so their fields span a Lagrangian kernel of dimension dim V; ⌈n/2⌉ values suffice at
-    n <= 7)."""
-    n = s.n
-    return vector_fields(s, [s.dirac_flow(f) for f in B + F[:n * ((n + 1) // 2)]])
+    fields of the commuting integrals (BB) (:func:`manakov_fields_needed`) and (perelomov), which span a
+    Lagrangian kernel of dimension dim V as F + B is complete and commutative.  tr L(λ)^k, L(λ) = λΦ + XXᵀ − λ²A,
+    is even in λ (L(λ)ᵀ = L(−λ)) with constant coefficients of λ⁰ and λ^2k, so k − 1 values of λ give its fields
+    for every λ; the first min(k − 1, ⌈n/2⌉) values are taken (they suffice at n ≤ 7)."""
+    n, r = s.n, s.r
+    m = (n + 1) // 2
+    chosen = manakov_fields_needed(s, B) + [F[j * n + k - 1] for k in range(2, n + 1) for j in range(min(k - 1, m))]
+    return vector_fields(s, [s.dirac_flow(f) for f in chosen])
 
 
 @claim("cif-completeness", paper=("CIF", "FF", "BB", "2l"), kind="dim", exact_max_n=3,
