@@ -590,7 +590,9 @@ def tangent_coordinates(s, v):
 
 def vector_fields(s, fields):
     """The matrix whose columns are the tangent vectors ``fields``: a kernel certificate of a matrix of
-    differentials in the coordinates of X, P."""
+    differentials in the coordinates of X, P (None, no certificate, when there are none: at (1, 1))."""
+    if not fields:
+        return None
     return s.mat([list(row) for row in zip(*(tangent_coordinates(s, v) for v in fields))])
 
 
