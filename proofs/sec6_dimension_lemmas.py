@@ -595,8 +595,9 @@ def casimirs_complete_on_leaf(s):
     x = theta(s)
     rows = casimir_gradient_rows(s, x, s.A)
     G = s.mat(rows)
-    # ker Λ1 and the gradients themselves: dF(Λ1 dF) = {F, F}_1 = 0, the functions are in involution
-    K = as_columns(s, lema1_kernel_columns(s) + rows)
+    # ker Λ1 and the gradients themselves: dF(Λ1 dF) = {F, F}_1 = 0, the functions are in involution (those at
+    # λ = 1..[n/2] + 1 are enough: λ = 0 gives the Casimirs tr v^k of Λ1, already in ker Λ1)
+    K = as_columns(s, lema1_kernel_columns(s) + rows[n: n * (n // 2 + 2)])
     return {"rank dF . Lambda1": Rank(G @ lambda1(s, x), leaf_printed(n, r) // 2, generic=True,
                                       meaning="l independent Casimirs on the leaf", kernel=K)}
 
@@ -649,7 +650,7 @@ def torus_kernel(s):
     tr(λΦ + XXᵀ − λ²A)^k and of the Casimirs tr Ψ^(2k), k = 1..[r/2], of so(r) (which commute with every
     Ψ_ij): they commute with all the functions and are tangent to T*V."""
     n, r = s.n, s.r
-    functions = torus_functions(s, with_casimirs=True)[: 2 * n * n]
+    functions = torus_functions(s, with_casimirs=True)[n: n * (n // 2 + 2)]    # λ = 1..[n/2] + 1 are enough
     for k in range(1, r // 2 + 1):
         def casimir(t, k=k):
             return t.tr(power_of(t.Psi, 2 * k, t.Ir))
