@@ -1141,6 +1141,10 @@ class PolyBackend(Backend):
             nums, dens = np.empty(shape, dtype=object), np.empty(shape, dtype=object)
             for idx, x in np.ndenumerate(s):
                 if type(x) is _RF:
+                    if x.R is not R:
+                        # a scalar of another field's ring: its variable indices and denominator atoms are
+                        # that ring's, not this one's (the contexts are shared by size): its own expression
+                        return NotImplemented
                     nums[idx], dens[idx] = x.rf()
                     continue
                 if type(x) is _BigPoly:

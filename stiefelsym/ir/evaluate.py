@@ -313,8 +313,8 @@ class Evaluator:
         "dict": lambda self, a, frame: {k: self.arg(v, frame) for k, v in zip(a[0], a[1])},
         "const": lambda self, a, frame: a[0],
         "kw": lambda self, a, frame: {k: self.arg(v, frame) for k, v in a},
-        "rank": lambda self, a, frame: Rank(self.arg(a[0], frame), a[1], a[2], a[3],
-                                            self.arg(a[4], frame) if len(a) > 4 else None),
+        "rank": lambda self, a, frame: _rank(self.arg(a[0], frame), a[1], a[2], a[3],
+                                             self.arg(a[4], frame) if len(a) > 4 else None),
         "count": lambda self, a, frame: Count(a[0], a[1], a[2]),
         "inverse": lambda self, a, frame: InverseIdentities(self.arg(a[6], frame), a[7], a[8]),
         "right_inverse": lambda self, a, frame: RightInverseIdentities(self.arg(a[5], frame), a[6], a[7], a[8]),
@@ -386,6 +386,22 @@ def node_keys(g: Graph) -> list[bytes]:
             hexes.append(k.hex())
         g.cache["node_keys"] = keys
     return keys
+
+
+def _rank(matrix: Any, expected: int, generic: bool, meaning: str, kernel: Any) -> Rank:
+    """A rank statement as the methods evaluate it.  Its kernel must be a matrix with as many rows as
+    the matrix has columns: the trace refuses any other where it knows the kind and the sizes, and a
+    graph traced with symbolic sizes (or a value of unknown kind, a flow) is known only here, where
+    every method refuses it alike (an error, not a certificate some methods drop and others crash on)."""
+    if kernel is not None and isinstance(matrix, Mat):
+        if not isinstance(kernel, Mat):
+            raise TypeError(f"Rank: the kernel must be a matrix of the scene (its columns the kernel vectors), "
+                            f"not {type(kernel).__name__}")
+        rows, cols = kernel._shape()[0], matrix._shape()[1]
+        if rows != cols:
+            raise TypeError(f"Rank: the kernel has {rows} rows and the matrix {cols} columns "
+                            f"(the kernel's columns are vectors v with M v = 0)")
+    return Rank(matrix, expected, generic, meaning, kernel)
 
 
 def _power(x: Any, k: int) -> Any:

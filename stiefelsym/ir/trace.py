@@ -1097,6 +1097,11 @@ class Trace:
             if not (type(k) is Tracer and k._kind != SCALAR):
                 return self.refuse(f"Rank: the kernel must be a matrix of the scene (its columns the kernel vectors), "
                                    f"not {'a list' if isinstance(k, list) else 'a number' if type(k) is Tracer else type(k).__name__}")
+            if v.generic is not True:
+                # the statement refuses it when made; one changed after (object.__setattr__) is refused here, as
+                # a trace's refusal, not as an exception of the replay that makes the statement again
+                return self.refuse("Rank: a kernel certifies a generic rank (generic=True); a rank at every point "
+                                   "needs a constant minor or a RightInverse")
             rows, cols = (x.value if type(x) is Size else x for x in (k._shape[0], m._shape[1]))
             if None not in (rows, cols) and rows != cols:
                 return self.refuse(f"Rank: the kernel has {rows} rows and the matrix {cols} columns "
