@@ -45,7 +45,12 @@ se = lazy("symengine", globals(), "se")
 _INITIAL_VARS = 16
 #: beyond this many parameters (a generic operator on so(n) brings n(n-1)/2 (n(n-1)/2 + 1)/2 of
 #: them) a monomial costs a byte per parameter in flint: new matrices stay symengine expressions
-MAX_VARS = 128
+#: (with the encoded form of :class:`_BigPoly`).  512 holds the generic operators on so(7) with a chart
+#: at n = 7 (up to about 330 parameters in the catalog's runs at n <= 7): there a product of 5 x 7
+#: matrices in flint's 512 variables took 0.3-1 s where symengine's expansion of the same entries took
+#: 2-7 s (double-neumann-momentum at (7,5): 7.3 s -> 0.5 s of CPU); the context still grows from 16
+#: variables by doubling, so a chart of few parameters never pays for the wide exponent vectors
+MAX_VARS = 512
 
 
 class NotRational(TypeError):
