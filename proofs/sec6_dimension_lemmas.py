@@ -234,7 +234,7 @@ EQUIVARIANCE_XA = ("Λ1 and Λ2 at (Θ, A) are covariant under (X, P, A) ↦ (gX
 
 # -- Lemma LEMA1 -----------------------------------------------------------------------------------
 
-@claim("pencil-leaf-dimension", paper=("dimension", "LEMA1", "L1", "L2"), kind="dim", exact_max_r={6: 2, 7: 1},
+@claim("pencil-leaf-dimension", paper=("dimension", "LEMA1", "L1", "L2"), kind="dim", exact_max_n=7,
        sizes=admissible(5), equivariance=EQUIVARIANCE_X,
        statement=r"\rank\Lambda_1(h+v)=n^2-\dim\ker\Lambda_1(h+v)=2r(n-r)+\tfrac{r(r-1)}2-\left[\tfrac r2\right],"
                  r"\quad \xi+\eta\in\ker\Lambda_1(h+v)\iff[\xi,v]=0,\ [\xi,h]+[\eta,v]=0")
@@ -260,7 +260,7 @@ def generic_leaf_rank(n):
 
 
 @claim("pencil-leaves-singular", paper=("dimension",), kind="dim",
-       sizes=admissible(5), exact_max_n=3, equivariance=EQUIVARIANCE_X,
+       sizes=admissible(5), exact_max_n=6, equivariance=EQUIVARIANCE_X,
        fails_at=lambda n, r: r == 1 and n <= 2,
        erratum="""(dimension) says 2l < n² − n: the leaves in Θ(T*V) are singular leaves of (gl(n), Λ1).  For
        (n, r) = (1, 1) and (2, 1) the two sides are equal (0 = 0 and 2 = 2): there Θ(T*V) meets the regular
@@ -293,7 +293,7 @@ def pencil_leaves_singular_corrected(s):
 # -- Lemma LEMA2: (A1) ---------------------------------------------------------------------------------
 
 @claim("pencil-rank-a1", paper=("LEMA2", "LAMBDA", "L3", "L4"), kind="dim",
-       sizes=admissible(5), exact_max_n=3, equivariance=EQUIVARIANCE_XA,
+       sizes=admissible(5), exact_max_n=5, exact_max_r={6: 3, 7: 1}, equivariance=EQUIVARIANCE_XA,
        statement=r"\rank\Lambda_{1,-1}(h+v)=\rank\Lambda_{1,t}(h+v)=\rank\Lambda_2(h+v)=n^2-n,\quad "
                  r"\xi+\eta\in\ker\Lambda_{1,-1}\iff[\eta,A]=0,\ [\xi,A]-[\eta,h]=0")
 def pencil_rank_A1(s):
@@ -390,7 +390,7 @@ def lambda_forms(s, x, A):
 
 
 @claim("pencil-kernel-ker-a2", paper=("KER", "A2", "L7", "L8"), kind="dim",
-       sizes=admissible(5), exact_max_n=3, exact_max_r={4: 3, 5: 3},
+       sizes=admissible(5), exact_max_n=5, exact_max_r={6: 5, 7: 5},
        equivariance="the point is built from the claim's own parameters (no chart coordinate)",
        statement=r"\ker\Lambda_1(h+v)=so(r)_{h_1}\oplus Sym(r)\oplus gl(n-r),\quad "
                  r"\dim\{z\in\ker\Lambda_1\mid\Lambda_{1,-1}(z,\ker\Lambda_1)=0\}=n\quad (h=\mathrm{diag}(h_1,0))")
@@ -492,7 +492,7 @@ def a2_system_kernel(s, x, A):
 
 
 @claim("pencil-a2-generic", paper=("LEMA2", "A2", "LAMBDA"), kind="dim",
-       sizes=admissible(5), exact_max_n=3, equivariance=EQUIVARIANCE_XA,
+       sizes=admissible(5), exact_max_n=5, exact_max_r={6: 5, 7: 1}, equivariance=EQUIVARIANCE_XA,
        statement=r"\dim\{z\in\ker\Lambda_1(x)\mid\Lambda_{1,-1}(z,\ker\Lambda_1(x))=0\}=n,\quad "
                  r"x=h+v=\Theta(X,P)\ \text{generic}")
 def pencil_a2_at_a_generic_point(s):
@@ -587,7 +587,7 @@ def casimir_gradient_rows(s, x, A):
 
 
 @claim("casimirs-complete-on-leaf", paper=("LEMA2", "central", "dimension"), kind="dim",
-       sizes=admissible(5), exact_max_n=3, exact_max_r={4: 1}, equivariance=EQUIVARIANCE_XA,
+       sizes=admissible(5), exact_max_n=4, exact_max_r={5: 1}, equivariance=EQUIVARIANCE_XA,
        statement=r"\rank\{d f|_{T_x\mathcal O}: f\in\mathcal F\}=l=\tfrac12\dim\mathcal O,\quad x=\Theta(X,P)\ \text{generic}")
 def casimirs_complete_on_leaf(s):
     """Lemma LEMA2: among the functions (central) there are l = ½(dimension) independent on a generic symplectic leaf 𝒪 ⊂ Θ(T*V) (the rank of df restricted to T_x𝒪 = Λ1(x)(gl(n)))."""
@@ -664,7 +664,7 @@ def torus_kernel(s):
 
 
 @claim("neumann-torus-dimension", paper=("NEUMANN", "dim_fol", "torus"), kind="dim",
-       sizes=admissible(5), exact_max_n=3, exact_max_r={4: 1}, equivariance=EQUIVARIANCE_XA,
+       sizes=admissible(5), exact_max_n=4, exact_max_r={5: 1}, equivariance=EQUIVARIANCE_XA,
        statement=r"2\dim V_{n,r}-\rank d\big(\Theta^*\mathcal F,\Psi\big)=\tfrac12\Big(2r(n-r)+\tfrac{r(r-1)}2-"
                  r"\left[\tfrac r2\right]\Big)+\left[\tfrac r2\right]")
 def neumann_torus_dimension(s):
