@@ -117,6 +117,115 @@ def linear_system(s, image):
     return s.mat([list(row) for row in zip(*columns)])
 
 
+
+# -- kernel certificates: columns in the coordinates of gl_basis (the columns of Λ1, Λ2) ---------------
+
+def gl_coords(s, xi, eta):
+    """The coordinates of ξ + η (ξ ∈ so(n), η ∈ Sym(n)) in the basis of :func:`gl_basis`."""
+    _, kinds = gl_basis(s)
+    return [(xi if k[0] == "so" else eta)[k[1], k[2]] for k in kinds]
+
+
+def gl_split(s, z):
+    """The so(n) and Sym(n) parts of z ∈ gl(n)."""
+    half = s.q(1, 2)
+    return (z - z.T) * half, (z + z.T) * half
+
+
+def as_columns(s, cols):
+    """The matrix whose columns are the given lists of scalars."""
+    return s.mat([list(row) for row in zip(*cols)])
+
+
+def kernel_generic_lambda1(s, y):
+    """ker Λ1 at a generic y = h + v ∈ gl(n): the gradients of the Casimirs tr(v^k), (ξ, η) = (0, v^(k−1)),
+    k = 1..n (here with 2v = y + yᵀ)."""
+    n = s.n
+    zero = s.zeros(n, n, ("n", "n"))
+    v2 = y + y.T
+    cols, power = [], s.In
+    for _ in range(n):
+        cols.append(gl_coords(s, zero, power))
+        power = power @ v2
+    return as_columns(s, cols)
+
+
+def lema1_kernel_columns(s):
+    """ker Λ1(h + v) at h + v = Θ(X, P), the solutions of (L1), (L2) of the proof of LEMA1 in the frame
+    im X ⊕ (im X)^⊥ (v = XXᵀ = diag(I, 0), h = [[Ψ, −bᵀ], [b, 0]], b = QP, Q = I − XXᵀ):
+    ξ = XΨ^(2k+1)Xᵀ ∈ so(r)_{h1} with η = QPΨ^(2k+1)Xᵀ − XΨ^(2k+1)PᵀQ (η21 = bξ1),
+    η = XSXᵀ (S ∈ Sym(r)), ξ = q_i q_jᵀ − q_j q_iᵀ ∈ so(n − r) with η = XPᵀξ − ξPXᵀ (η21 = −ξ2 b),
+    η = q_i q_jᵀ + q_j q_iᵀ ∈ Sym(n − r) (q_i = Q e_i, i > r)."""
+    n, r = s.n, s.r
+    X, P, Psi = s.X, s.P, s.Psi
+    Q = s.In - X @ X.T
+    zero = s.zeros(n, n, ("n", "n"))
+    cols = []
+    power = Psi
+    for _ in range(r // 2):
+        cols.append(gl_coords(s, X @ power @ X.T, Q @ P @ power @ X.T - X @ power @ P.T @ Q))
+        power = power @ Psi @ Psi
+    for a in range(r):
+        for b in range(a, r):
+            E = unit(s, r, r, a, b, ("r", "r"))
+            cols.append(gl_coords(s, zero, X @ (E + E.T if a != b else E) @ X.T))
+    q = [Q[0:n, i:i + 1] for i in range(r, n)]
+    for i in range(n - r):
+        for j in range(i + 1, n - r):
+            xi = q[i] @ q[j].T - q[j] @ q[i].T
+            cols.append(gl_coords(s, xi, X @ P.T @ xi - xi @ P @ X.T))
+    for i in range(n - r):
+        for j in range(i, n - r):
+            cols.append(gl_coords(s, zero, q[i] @ q[j].T + q[j] @ q[i].T))
+    return cols
+
+
+def power_of(M, k, identity):
+    out = identity
+    for _ in range(k):
+        out = out @ M
+    return out
+
+
+def kernel_lambda_1m1(s, h, A):
+    """ker Λ_{1,−1}(h + v), the solutions of (L3), (L4): η = A^j, ξ = −Σ_{i<j} A^i h A^(j−1−i)
+    (so [ξ, A] = [A^j, h]), j = 0..n−1: the gradients of the Casimirs of Λ_{1,−1}."""
+    n = s.n
+    cols = []
+    for j in range(n):
+        xi = s.zeros(n, n, ("n", "n"))
+        for i in range(j):
+            xi = xi - power_of(A, i, s.In) @ h @ power_of(A, j - 1 - i, s.In)
+        cols.append(gl_coords(s, xi, power_of(A, j, s.In)))
+    return as_columns(s, cols)
+
+
+def kernel_lambda2(s, x, A):
+    """ker Λ2(x): the centralizer of x − A, (x − A)^k, k = 0..n−1 (the gradients of tr(x − A)^(k+1))."""
+    n = s.n
+    cols, power = [], s.In
+    for _ in range(n):
+        cols.append(gl_coords(s, *gl_split(s, power)))
+        power = power @ (x - A)
+    return as_columns(s, cols)
+
+
+def kernel_pencil(s, h, v, A, t):
+    """ker (Λ1 + tΛ2)(h + v): the gradients of the Casimirs tr(λh + v − λ²A)^k of the pencil (central) at
+    λ² = t/(1 + t): with M = λh + v − λ²A, M^k = E_k + λO_k (E_k ∈ Sym(n), O_k ∈ so(n)), the vector
+    (ξ, η) = (λ²O_k, E_k), here times (1 + t)^(k+1) (a = 1 + t, b = t: Ẽ_{k+1} = (av − bA)Ẽ_k + bhÕ_k,
+    Õ_{k+1} = ahẼ_k + (av − bA)Õ_k, (ξ, η) = (bÕ_k, aẼ_k)), k = 0..n−1."""
+    n = s.n
+    a, b = t + s.q(1), t
+    N = v * a - A * b
+    E, O = s.In, s.zeros(n, n, ("n", "n"))
+    cols = []
+    for _ in range(n):
+        cols.append(gl_coords(s, O * b, E * a))
+        E, O = N @ E + h @ O * b, h @ E * a + N @ O
+    return as_columns(s, cols)
+
+
 EQUIVARIANCE_X = ("Λ1 is Ad_O(n)-invariant and Θ(gX, gP) = gΘ(X, P)gᵀ, so the rank at Θ(X, P) is O(n)-invariant; "
                   "the basis of gl(n) only lists the bilinear form in coordinates")
 EQUIVARIANCE_XA = ("Λ1 and Λ2 at (Θ, A) are covariant under (X, P, A) ↦ (gX, gP, gAgᵀ), so the ranks are "
@@ -125,7 +234,7 @@ EQUIVARIANCE_XA = ("Λ1 and Λ2 at (Θ, A) are covariant under (X, P, A) ↦ (gX
 
 # -- Lemma LEMA1 -----------------------------------------------------------------------------------
 
-@claim("pencil-leaf-dimension", paper=("dimension", "LEMA1", "L1", "L2"), kind="dim", exact_max_r={6: 2, 7: 1},
+@claim("pencil-leaf-dimension", paper=("dimension", "LEMA1", "L1", "L2"), kind="dim", exact_max_n=7,
        sizes=admissible(5), equivariance=EQUIVARIANCE_X,
        statement=r"\rank\Lambda_1(h+v)=n^2-\dim\ker\Lambda_1(h+v)=2r(n-r)+\tfrac{r(r-1)}2-\left[\tfrac r2\right],"
                  r"\quad \xi+\eta\in\ker\Lambda_1(h+v)\iff[\xi,v]=0,\ [\xi,h]+[\eta,v]=0")
@@ -134,11 +243,12 @@ def pencil_leaf_dimension(s):
     n, r = s.n, s.r
     h, v = s.Phi, s.X @ s.X.T
     L1L2 = linear_system(s, lambda xi, eta: [comm(xi, v), comm(xi, h) + comm(eta, v)])
+    K = as_columns(s, lema1_kernel_columns(s))     # the solutions of (L1), (L2) in the proof of LEMA1
     return {
         "rank Lambda1(h+v)": Rank(lambda1(s, h + v), leaf_printed(n, r), generic=True,
-                                  meaning="the dimension of a generic symplectic leaf in Θ(T*V)"),
+                                  meaning="the dimension of a generic symplectic leaf in Θ(T*V)", kernel=K),
         "rank of (L1), (L2)": Rank(L1L2, n * n - ker_lema1_printed(n, r), generic=True,
-                                   meaning="n² − dim of the solutions of (L1), (L2)"),
+                                   meaning="n² − dim of the solutions of (L1), (L2)", kernel=K),
         "n^2 - dim ker = (dimension)": Count(n * n - ker_lema1_printed(n, r), leaf_printed(n, r),
                                              "the last line of the proof of LEMA1"),
     }
@@ -150,7 +260,7 @@ def generic_leaf_rank(n):
 
 
 @claim("pencil-leaves-singular", paper=("dimension",), kind="dim",
-       sizes=admissible(5), exact_max_n=3, equivariance=EQUIVARIANCE_X,
+       sizes=admissible(5), exact_max_n=6, equivariance=EQUIVARIANCE_X,
        fails_at=lambda n, r: r == 1 and n <= 2,
        erratum="""(dimension) says 2l < n² − n: the leaves in Θ(T*V) are singular leaves of (gl(n), Λ1).  For
        (n, r) = (1, 1) and (2, 1) the two sides are equal (0 = 0 and 2 = 2): there Θ(T*V) meets the regular
@@ -162,7 +272,7 @@ def pencil_leaves_singular(s):
     y = s.generic("Y", "n", "n")
     return {
         "rank Lambda1 at a generic point of gl(n)": Rank(lambda1(s, y), generic_leaf_rank(n), generic=True,
-                                                         meaning="n² − n"),
+                                                         meaning="n² − n", kernel=kernel_generic_lambda1(s, y)),
         "(dimension) < n^2 - n": Count(int(leaf_printed(n, r) < generic_leaf_rank(n)), 1,
                                        "the leaves in Θ(T*V) are singular leaves of (gl(n), Λ1)"),
     }
@@ -173,7 +283,8 @@ def pencil_leaves_singular_corrected(s):
     n, r = s.n, s.r
     y = s.generic("Y", "n", "n")
     return {
-        "rank Lambda1 at a generic point of gl(n)": Rank(lambda1(s, y), generic_leaf_rank(n), generic=True),
+        "rank Lambda1 at a generic point of gl(n)": Rank(lambda1(s, y), generic_leaf_rank(n), generic=True,
+                                                         kernel=kernel_generic_lambda1(s, y)),
         "(dimension) <= n^2 - n": Count(int(leaf_printed(n, r) <= generic_leaf_rank(n)), 1,
                                         "the leaves in Θ(T*V) are leaves of (gl(n), Λ1) of rank at most n² − n"),
     }
@@ -182,7 +293,7 @@ def pencil_leaves_singular_corrected(s):
 # -- Lemma LEMA2: (A1) ---------------------------------------------------------------------------------
 
 @claim("pencil-rank-a1", paper=("LEMA2", "LAMBDA", "L3", "L4"), kind="dim",
-       sizes=admissible(5), exact_max_n=3, equivariance=EQUIVARIANCE_XA,
+       sizes=admissible(5), exact_max_n=5, exact_max_r={6: 3, 7: 1}, equivariance=EQUIVARIANCE_XA,
        statement=r"\rank\Lambda_{1,-1}(h+v)=\rank\Lambda_{1,t}(h+v)=\rank\Lambda_2(h+v)=n^2-n,\quad "
                  r"\xi+\eta\in\ker\Lambda_{1,-1}\iff[\eta,A]=0,\ [\xi,A]-[\eta,h]=0")
 def pencil_rank_A1(s):
@@ -193,11 +304,14 @@ def pencil_rank_A1(s):
     L1, L2 = lambda1(s, x), lambda2(s, x, A)
     t = s.scalar("t")
     L3L4 = linear_system(s, lambda xi, eta: [comm(eta, A), comm(xi, A) - comm(eta, h)])
+    K1m1 = kernel_lambda_1m1(s, h, A)
     return {
-        "rank Lambda_{1,-1}": Rank(L1 - L2, n * n - n, generic=True, meaning="(A1) at λ1 + λ2 = 0"),
-        "rank Lambda_2": Rank(L2, n * n - n, generic=True, meaning="(A1) at λ1 = 0"),
-        "rank Lambda_1 + t Lambda_2": Rank(L1 + L2 * t, n * n - n, generic=True, meaning="(A1) at a generic t"),
-        "rank of (L3), (L4)": Rank(L3L4, n * n - n, generic=True, meaning="n² − n: the solutions are n-dimensional"),
+        "rank Lambda_{1,-1}": Rank(L1 - L2, n * n - n, generic=True, meaning="(A1) at λ1 + λ2 = 0", kernel=K1m1),
+        "rank Lambda_2": Rank(L2, n * n - n, generic=True, meaning="(A1) at λ1 = 0", kernel=kernel_lambda2(s, x, A)),
+        "rank Lambda_1 + t Lambda_2": Rank(L1 + L2 * t, n * n - n, generic=True, meaning="(A1) at a generic t",
+                                           kernel=kernel_pencil(s, h, v, A, t)),
+        "rank of (L3), (L4)": Rank(L3L4, n * n - n, generic=True, meaning="n² − n: the solutions are n-dimensional",
+                                   kernel=K1m1),
     }
 
 
@@ -231,6 +345,34 @@ def printed_kernel(s, X0, h1):
     return out
 
 
+def a2_restricted_kernel(s, h1):
+    """The kernel of Λ_{1,−1} restricted to (KER), as coefficients on :func:`printed_kernel`: (L7) ξ2 = 0 and
+    (L8) η2 = E_aa (a > r, A2 diagonal), and the r solutions of (L5), (L6) (corrected) in so(r)_{h1} ⊕ Sym(r):
+    (ξ1, η1) = (0, h1^k) for k even and (h1^k, −Σ_{i<k} h1^i A1 h1^(k−1−i)) for k odd, k = 0..r−1 (the limits
+    at λ → 0 of the Casimir gradients of the pencil, λ skew(Z^k) + sym(Z^k) over λ^k, Z = h1 − λA1)."""
+    n, r = s.n, s.r
+    A1 = s.mat([[s.scalar(f"a{i}") if i == j else s.q(0) for j in range(r)] for i in range(r)], ("r", "r"))
+    zero, one = s.q(0), s.q(1)
+    cartan, lower = r // 2, [(a, b) for a in range(r, n) for b in range(r, n)]
+    powers = [s.identity(r, "r")]
+    for _ in range(r):
+        powers.append(powers[-1] @ h1)
+    cols = []
+    for k in range(r):
+        c = [zero] * cartan
+        if k % 2 == 0:
+            eta1 = powers[k]
+        else:
+            c[(k - 1) // 2] = one
+            eta1 = s.zeros(r, r, ("r", "r"))
+            for i in range(k):
+                eta1 = eta1 - powers[i] @ A1 @ powers[k - 1 - i]
+        cols.append(c + [eta1[a, b] for a in range(r) for b in range(a, r)] + [zero] * len(lower))
+    for d in range(r, n):
+        cols.append([zero] * (cartan + r * (r + 1) // 2) + [one if (a, b) == (d, d) else zero for a, b in lower])
+    return as_columns(s, cols)
+
+
 def lambda_forms(s, x, A):
     """Λ1(z, w) and Λ_{1,−1}(z, w) as functions of two elements of gl(n) (up to the factor −2):
     <y, [z, w]> = −½tr(y[z, w]) with the Sym × Sym part dropped for Λ1."""
@@ -248,7 +390,7 @@ def lambda_forms(s, x, A):
 
 
 @claim("pencil-kernel-ker-a2", paper=("KER", "A2", "L7", "L8"), kind="dim",
-       sizes=admissible(5), exact_max_n=3, exact_max_r={4: 3, 5: 3},
+       sizes=admissible(5), exact_max_n=5, exact_max_r={6: 5, 7: 5},
        equivariance="the point is built from the claim's own parameters (no chart coordinate)",
        statement=r"\ker\Lambda_1(h+v)=so(r)_{h_1}\oplus Sym(r)\oplus gl(n-r),\quad "
                  r"\dim\{z\in\ker\Lambda_1\mid\Lambda_{1,-1}(z,\ker\Lambda_1)=0\}=n\quad (h=\mathrm{diag}(h_1,0))")
@@ -271,16 +413,20 @@ def pencil_kernel_and_A2(s):
         xi2, eta2 = (low - low.T) * half, (low + low.T) * half
         l7_l8.append(entries(s, xi2) + entries(s, comm(A, eta2)))
     with_l7_l8 = s.mat(restricted_rows + [list(row) for row in zip(*l7_l8)])
+    KA2 = a2_restricted_kernel(s, h1)
     return {
         "rank Lambda1": Rank(lambda1(s, x), n * n - ker_printed(n, r), generic=True,
-                             meaning="n² − dim (KER)"),
+                             meaning="n² − dim (KER)",
+                             kernel=as_columns(s, [gl_coords(s, *gl_split(s, k)) for k in K])),  # (KER) itself
         "(KER) lies in ker Lambda1": [L1(k, test) for k in K],
         "rank of the (KER) spanning set": Rank(s.mat([entries(s, k) for k in K]), ker_printed(n, r), generic=True,
                                                meaning="dim so(r)_{h1} ⊕ Sym(r) ⊕ gl(n−r)"),
         "(A2)": Rank(restricted, ker_printed(n, r) - n, generic=True,
-                     meaning="dim (KER) − n: the restriction of Λ_{1,−1} to ker Λ1 has an n-dimensional kernel"),
+                     meaning="dim (KER) − n: the restriction of Λ_{1,−1} to ker Λ1 has an n-dimensional kernel",
+                     kernel=KA2),
         "(L7), (L8) on that kernel": Rank(with_l7_l8, ker_printed(n, r) - n, generic=True,
-                                          meaning="adding ξ2 = 0 and [A2, η2] = 0 leaves the kernel unchanged"),
+                                          meaning="adding ξ2 = 0 and [A2, η2] = 0 leaves the kernel unchanged",
+                                          kernel=KA2),
     }
 
 
@@ -298,8 +444,55 @@ def a2_system(s, x, A):
     return s.mat(top + bottom)
 
 
+def truncated_product(P1, P2, D, zero):
+    """The product of two matrix polynomials in λ (lists of coefficients), up to λ^D."""
+    out = []
+    for d in range(D + 1):
+        terms = [P1[i] @ P2[d - i] for i in range(max(0, d - len(P2) + 1), min(d, len(P1) - 1) + 1)]
+        out.append(sum(terms[1:], terms[0]) if terms else zero)
+    return out
+
+
+def truncated_power(P, k, D, identity, zero):
+    out = [identity]
+    for _ in range(k):
+        out = truncated_product(out, P, D, zero)
+    return out
+
+
+def a2_system_kernel(s, x, A):
+    """The kernel of :func:`a2_system`: (0, y), y ∈ ker Λ1 (:func:`lema1_kernel_columns`), and n vectors
+    (z, y) = (w(0), w'(0)) of analytic families w(σ) ∈ ker(Λ1 + tΛ2), σ = t/(1 + t) = λ² (then Λ1 w(0) = 0 and
+    Λ1 w'(0) + Λ2 w(0) = 0, so Λ_{1,−1}z = Λ1 y): w = (λ skew F + sym F)/λ^(2c) for the polynomials
+    F = (M − I)^k M^r, c = ⌈k/2⌉, k = 0..r−1, and F = M^j (M − I)^(2j+2), c = j, j = 0..n−r−1, of
+    M = λh + v − λ²A, whose Casimir gradients span the pencil's kernel (Bolsinov's limit argument of (A2):
+    the near-1 eigenvalues of M give the so(r)_{h1} ⊕ Sym(r) part, the near-0 ones the Sym(n − r) part)."""
+    n, r = s.n, s.r
+    h, v = gl_split(s, x)
+    zero = s.zeros(n, n, ("n", "n"))
+    M, M_I = [v, h, -A], [v - s.In, h, -A]
+    families = []
+    for k in range(r):
+        c = (k + 1) // 2
+        D = 2 * c + 2
+        families.append((truncated_product(truncated_power(M_I, k, D, s.In, zero),
+                                           truncated_power(M, r, D, s.In, zero), D, zero), c))
+    for j in range(n - r):
+        D = 2 * j + 2
+        families.append((truncated_product(truncated_power(M, j, D, s.In, zero),
+                                           truncated_power(M_I, 2 * j + 2, D, s.In, zero), D, zero), j))
+    cols = []
+    for F, c in families:
+        # the coefficient of σ^m in λ skew F + sym F: (F_{2m−1}, F_{2m})
+        z = gl_coords(s, F[2 * c - 1] if c > 0 else zero, F[2 * c])
+        cols.append(z + gl_coords(s, F[2 * c + 1], F[2 * c + 2]))
+    zeros = [s.q(0)] * (n * n)
+    cols += [zeros + col for col in lema1_kernel_columns(s)]
+    return as_columns(s, cols)
+
+
 @claim("pencil-a2-generic", paper=("LEMA2", "A2", "LAMBDA"), kind="dim",
-       sizes=admissible(5), exact_max_n=3, equivariance=EQUIVARIANCE_XA,
+       sizes=admissible(5), exact_max_n=5, exact_max_r={6: 5, 7: 1}, equivariance=EQUIVARIANCE_XA,
        statement=r"\dim\{z\in\ker\Lambda_1(x)\mid\Lambda_{1,-1}(z,\ker\Lambda_1(x))=0\}=n,\quad "
                  r"x=h+v=\Theta(X,P)\ \text{generic}")
 def pencil_a2_at_a_generic_point(s):
@@ -308,9 +501,11 @@ def pencil_a2_at_a_generic_point(s):
     x = theta(s)
     return {
         "rank Lambda1(h+v)": Rank(lambda1(s, x), leaf_printed(n, r), generic=True,
-                                  meaning="(dimension): n² − dim ker Λ1"),
+                                  meaning="(dimension): n² − dim ker Λ1",
+                                  kernel=as_columns(s, lema1_kernel_columns(s))),
         "(A2)": Rank(a2_system(s, x, s.A), n * n - n + leaf_printed(n, r), generic=True,
-                     meaning="2n² − dim ker Λ1 − n: the restriction of Λ_{1,−1} to ker Λ1 has an n-dimensional kernel"),
+                     meaning="2n² − dim ker Λ1 − n: the restriction of Λ_{1,−1} to ker Λ1 has an n-dimensional kernel",
+                     kernel=a2_system_kernel(s, x, s.A)),
     }
 
 
@@ -392,15 +587,19 @@ def casimir_gradient_rows(s, x, A):
 
 
 @claim("casimirs-complete-on-leaf", paper=("LEMA2", "central", "dimension"), kind="dim",
-       sizes=admissible(5), exact_max_n=3, exact_max_r={4: 1}, equivariance=EQUIVARIANCE_XA,
+       sizes=admissible(5), exact_max_n=4, exact_max_r={5: 1}, equivariance=EQUIVARIANCE_XA,
        statement=r"\rank\{d f|_{T_x\mathcal O}: f\in\mathcal F\}=l=\tfrac12\dim\mathcal O,\quad x=\Theta(X,P)\ \text{generic}")
 def casimirs_complete_on_leaf(s):
     """Lemma LEMA2: among the functions (central) there are l = ½(dimension) independent on a generic symplectic leaf 𝒪 ⊂ Θ(T*V) (the rank of df restricted to T_x𝒪 = Λ1(x)(gl(n)))."""
     n, r = s.n, s.r
     x = theta(s)
-    G = s.mat(casimir_gradient_rows(s, x, s.A))
+    rows = casimir_gradient_rows(s, x, s.A)
+    G = s.mat(rows)
+    # ker Λ1 and the gradients themselves: dF(Λ1 dF) = {F, F}_1 = 0, the functions are in involution (those at
+    # λ = 1..[n/2] + 1 are enough: λ = 0 gives the Casimirs tr v^k of Λ1, already in ker Λ1)
+    K = as_columns(s, lema1_kernel_columns(s) + rows[n: n * (n // 2 + 2)])
     return {"rank dF . Lambda1": Rank(G @ lambda1(s, x), leaf_printed(n, r) // 2, generic=True,
-                                      meaning="l independent Casimirs on the leaf")}
+                                      meaning="l independent Casimirs on the leaf", kernel=K)}
 
 
 def torus_functions(s, with_casimirs=True):
@@ -446,8 +645,26 @@ def torus_values(t, with_casimirs=True):
     return out
 
 
+def torus_kernel(s):
+    """The tangent vectors of the tori: the Dirac flows (coordinates of X, then of P) of the integrals
+    tr(λΦ + XXᵀ − λ²A)^k and of the Casimirs tr Ψ^(2k), k = 1..[r/2], of so(r) (which commute with every
+    Ψ_ij): they commute with all the functions and are tangent to T*V."""
+    n, r = s.n, s.r
+    functions = torus_functions(s, with_casimirs=True)[n: n * (n // 2 + 2)]    # λ = 1..[n/2] + 1 are enough
+    for k in range(1, r // 2 + 1):
+        def casimir(t, k=k):
+            return t.tr(power_of(t.Psi, 2 * k, t.Ir))
+        functions.append(casimir)
+    cols = []
+    for f in functions:
+        flow = s.dirac_flow(f)
+        FX, FP = flow["X"], flow["P"]
+        cols.append([FX[i, j] for i in range(n) for j in range(r)] + [FP[i, j] for i in range(n) for j in range(r)])
+    return as_columns(s, cols)
+
+
 @claim("neumann-torus-dimension", paper=("NEUMANN", "dim_fol", "torus"), kind="dim",
-       sizes=admissible(5), exact_max_n=3, exact_max_r={4: 1}, equivariance=EQUIVARIANCE_XA,
+       sizes=admissible(5), exact_max_n=4, exact_max_r={5: 1}, equivariance=EQUIVARIANCE_XA,
        statement=r"2\dim V_{n,r}-\rank d\big(\Theta^*\mathcal F,\Psi\big)=\tfrac12\Big(2r(n-r)+\tfrac{r(r-1)}2-"
                  r"\left[\tfrac r2\right]\Big)+\left[\tfrac r2\right]")
 def neumann_torus_dimension(s):
@@ -457,6 +674,6 @@ def neumann_torus_dimension(s):
     expected = 2 * dim_V(n, r) - torus_twice_printed(n, r) // 2 + r * (r + 1)
     return {
         "rank d(Theta*F, Psi, constraints)": Rank(s.mat(rows), expected, generic=True,
-                                                  meaning="2 dim V − (dim_fol) + r(r+1)"),
+                                                  meaning="2 dim V − (dim_fol) + r(r+1)", kernel=torus_kernel(s)),
         "(dim_fol) is an integer": Count(torus_twice_printed(n, r) % 2, 0, "2·(dim_fol) is even"),
     }

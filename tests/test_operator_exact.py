@@ -162,10 +162,12 @@ def test_encoded_arithmetic_agrees_with_symengine(monkeypatch, seed):
 
 
 @pytest.mark.parametrize("func,verdict", [(_flow_as_printed, "proved"), (_flow_corrupted, "fails")])
-def test_operator_flow_with_encoded_coefficients(func, verdict):
-    """At (6, 3) the operator's 120 coefficients and the chart's 12 parameters exceed the flint
-    ring's 128: the coefficients are encoded, and the exact verdicts are those of the small sizes."""
+def test_operator_flow_with_encoded_coefficients(func, verdict, monkeypatch):
+    """At (6, 3) the operator's 120 coefficients and the chart's 12 parameters exceed a flint ring of
+    128 variables: the coefficients are encoded, and the exact verdicts are those of the small sizes."""
+    from stiefelsym.backends import polyfield
     from stiefelsym.methods.fixed_size import run_exact
+    monkeypatch.setattr(polyfield, "MAX_VARS", 128)
     res = run_exact(_claim(func), 6, 3, 0)
     assert res.verdict == verdict, res.message
     f = SymbolicField()

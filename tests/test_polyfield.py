@@ -666,3 +666,23 @@ def test_a_polynomial_beyond_the_rings_parameters_is_decided_without_sympy(monke
     # not a polynomial over Q: the sympy path decides it, as before
     assert SymbolicField._is_zero_sympy(se.sin(u[0]) ** 2 + se.cos(u[0]) ** 2 - 1) in (True, False)
     assert calls
+
+
+def test_a_ring_started_wide_gives_the_values_of_one_that_grew():
+    """A field whose flint ring starts wide (the width another evaluation of the graph reached) computes the
+    same rational functions as one whose ring grows from 16 variables: the same texts, the same zero tests."""
+    from stiefelsym.backends.polyfield import MAX_VARS, SymbolicField
+
+    texts = []
+    for width in (0, 300):
+        f = SymbolicField(width)
+        R = f.poly_ring()
+        assert R.cap == (16 if width == 0 else 512)
+        xs = [f.param(f"p{i}") for i in range(200)]
+        num = sum((xs[i] * xs[i + 1] - xs[199 - i] for i in range(150)), xs[0] ** 3)
+        den = 1 + xs[7] ** 2 + xs[150] * xs[3]
+        r = R.from_se(num / den)
+        zero = R.from_se(num / den - num * (1 + xs[150] * xs[3] + xs[7] ** 2) ** -1)
+        texts.append((R.text(r), zero[0].is_zero(), f.is_zero(num - num), f.is_zero(num)))
+        assert R.cap == (256 if width == 0 else 512) and len(R.syms) == 200 <= MAX_VARS
+    assert texts[0] == texts[1] and texts[0][1:] == (True, True, False)

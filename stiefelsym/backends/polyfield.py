@@ -45,7 +45,12 @@ se = lazy("symengine", globals(), "se")
 _INITIAL_VARS = 16
 #: beyond this many parameters (a generic operator on so(n) brings n(n-1)/2 (n(n-1)/2 + 1)/2 of
 #: them) a monomial costs a byte per parameter in flint: new matrices stay symengine expressions
-MAX_VARS = 128
+#: (with the encoded form of :class:`_BigPoly`).  512 holds the generic operators on so(7) with a chart
+#: at n = 7 (up to about 330 parameters in the catalog's runs at n <= 7): there a product of 5 x 7
+#: matrices in flint's 512 variables took 0.3-1 s where symengine's expansion of the same entries took
+#: 2-7 s (double-neumann-momentum at (7,5): 7.3 s -> 0.5 s of CPU); the context still grows from 16
+#: variables by doubling, so a chart of few parameters never pays for the wide exponent vectors
+MAX_VARS = 512
 
 
 class NotRational(TypeError):
@@ -96,9 +101,15 @@ def _term_key(term: tuple) -> tuple:
 
 
 class PolyRing:
-    """The variables, the flint context, the denominator atoms and the conversions of one field."""
+    """The variables, the flint context, the denominator atoms and the conversions of one field.
 
-    def __init__(self) -> None:
+    ``width``: the number of variables the ring is expected to reach (another evaluation of the same graph
+    reached it): the context starts wide enough for them (16, 32, ... variables, at most MAX_VARS), so
+    that the polynomials computed before the last of them is met are not carried to a wider context one
+    by one (at 256 variables and more a polynomial of a few hundred terms takes milliseconds to carry).
+    Which variable is which, and every value, are the same at every width."""
+
+    def __init__(self, width: int = 0) -> None:
         self.syms: list = []               # symengine symbol of each variable index
         self.index: dict = {}              # symengine symbol -> variable index
         self.atoms: list = []              # monic irreducible polynomials (current context)
@@ -109,7 +120,10 @@ class PolyRing:
         self.memo: dict = {}               # symengine expression -> (numerator, denominator)
         self.version = 0                   # bumped when the context grows
         self.ctx = None
-        self._set_ctx(_INITIAL_VARS)
+        cap = _INITIAL_VARS
+        while cap < min(width, MAX_VARS):
+            cap *= 2
+        self._set_ctx(cap)
         # parameters beyond MAX_VARS, in the encoded form of :class:`_BigPoly` (never ring variables)
         self.big: dict = {}                # symengine symbol -> index of the parameter
         self.big_syms: list = []
@@ -1675,9 +1689,11 @@ class SymbolicField(Field):
     #: STIEFELSYM_EXACT_BACKEND=symengine): numpy arrays of symengine expressions, as before
     native = os.environ.get("STIEFELSYM_EXACT_BACKEND", "flint") != "symengine"
 
-    def __init__(self) -> None:
+    def __init__(self, width: int = 0) -> None:
         self.symbols: dict[str, se.Symbol] = {}
         self._poly_ring = None
+        #: the variables its flint ring is expected to reach (:class:`PolyRing`)
+        self._width = width
 
     def const(self, q):
         if type(q) is int:
@@ -1713,8 +1729,12 @@ class SymbolicField(Field):
             if SymbolicField._encoded_type is None:
                 # set once: assigning a class attribute invalidates the interpreter's attribute caches
                 SymbolicField._encoded_type = _BigPoly
-            self._poly_ring = PolyRing()
+            self._poly_ring = PolyRing(self._width)
         return self._poly_ring
+
+    def ring_width(self) -> int:
+        """The number of variables its flint ring holds (0 before the ring is used)."""
+        return 0 if self._poly_ring is None else len(self._poly_ring.syms)
 
     def native_backend(self):
         """Whole matrices as flint polynomial numerators over one common denominator."""

@@ -261,8 +261,16 @@ def _pruned(g: Graph) -> Graph:
         return a
     out = Graph()
     out.refusals, out.fns, out.sizes = g.refusals, g.fns, g.sizes
-    for i in order:
-        out.add(g.ops[i], m(g.args[i]))
+    # g is hash-consed (each (op, args) once) and the renumbering is one to one, so the nodes stay distinct:
+    # the lists and the index are built at once, not node by node through add (checked: else node by node)
+    ops = [g.ops[i] for i in order]
+    args = [m(g.args[i]) for i in order]
+    index = dict(zip(zip(ops, args), range(len(order))))
+    if len(index) == len(order):
+        out.ops, out.args, out.index = ops, args, index
+    else:
+        for op, a in zip(ops, args):
+            out.add(op, a)
     out.output = Ref(num[g.output.i])
     return out
 

@@ -210,6 +210,47 @@ class Graph:
 
     def needed(self) -> set[int]:
         """The nodes the output reads, directly or not (the output included; none without an output)."""
+        if self.output is None:
+            return set()
+        # a node reads nodes made before it: one sweep down from the output marks what is read
+        args = self.args
+        mark = bytearray(len(args))
+        top = self.output.i
+        mark[top] = 1
+        for i in range(top, -1, -1):
+            if not mark[i]:
+                continue
+            for x in args[i]:
+                t = type(x)
+                if t is Ref:
+                    j = x[0]
+                elif t is tuple:
+                    for j in self._nested(x):
+                        if j >= i:
+                            return self._needed_by_search()
+                        mark[j] = 1
+                    continue
+                else:
+                    continue
+                if j >= i:
+                    return self._needed_by_search()     # not in creation order: searched node by node
+                mark[j] = 1
+        return {i for i, v in enumerate(mark) if v}
+
+    @staticmethod
+    def _nested(a: tuple) -> list[int]:
+        out: list[int] = []
+        stack = list(a)
+        while stack:
+            x = stack.pop()
+            t = type(x)
+            if t is Ref:
+                out.append(x[0])
+            elif t is tuple:
+                stack.extend(x)
+        return out
+
+    def _needed_by_search(self) -> set[int]:
         need: set[int] = set()
         stack = [self.output.i] if self.output is not None else []
         while stack:

@@ -850,12 +850,15 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
             unitary = complex_right.applies(graph, claim.realization, n, r)
             if claim.realization == "standard" and not visible and _point_free(claim, n, r, func, graph):
                 attempts = ("diagonal",) + attempts
+            # the variables the flint ring of an evaluation of this graph reached: the next chart's ring starts
+            # that wide (the same values, without carrying its polynomials to a wider context as it grows)
+            width = [0]
             for right in attempts:
                 if claim.realization == "metric" and visible:
                     scene, coords, missing = None, list(visible), True
                     break
                 def build(right=right) -> tuple:
-                    f = SymbolicField()
+                    f = SymbolicField(width[0])
                     return f, Scene(n, r, f, chart="equivariant", realization=claim.realization,
                                     right_reduction=right is True, diagonal_A=right == "diagonal",
                                     unitary_right=unitary)
@@ -865,12 +868,14 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                         (claim.id, claim.realization, "exact", n, r, "equivariant", right)
                         + (("unitary",) if unitary else ()), build, func, graph, calls)
                     coords = list(scene.tracker.used)
+                    width[0] = max(width[0], _ring_width(field))
                 except PointRead:
                     continue      # only the diagonal chart raises it: the next chart fixes the point
                 except CoordinateAccess as exc:
                     field, scene = exc.chart
                     coords = list(scene.tracker.used) or ["coordinates"]
                     missing = True
+                    width[0] = max(width[0], _ring_width(field))
                 except SymbolicBudget:
                     # a graph that reads nothing of R^r: where the equivariant chart's evaluation is
                     # beyond budget (a symbolic inverse of a generic symmetric A + lambda I), the
@@ -914,7 +919,7 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                     R, field, randomized, lambda: degree_bound(claim, n, r, func).numerator, key))]
                 if scene.second_point_read and n == r:
                     # Y on the other component of O(n): the same chart, Y times diag(-1, 1, .., 1)
-                    f1 = SymbolicField()
+                    f1 = SymbolicField(_ring_width(field))
                     sc1 = Scene(n, r, f1, chart="equivariant", realization=claim.realization,
                                 right_reduction=scene.right_reduction, component=1, unitary_right=unitary)
                     ch1 = call_claim(func, sc1)
@@ -945,12 +950,13 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                 comps = [0, 1] if r == n and not right else [0]
                 for comp in comps:
                     def build_cayley(comp=comp) -> tuple:
-                        f = SymbolicField()
+                        f = SymbolicField(width[0])
                         return f, Scene(n, r, f, chart="cayley", component=comp, realization=claim.realization,
                                         cayley_right=right, unitary_right=unitary)
                     f2, sc, ch = _chart_checks((claim.id, claim.realization, "exact", n, r, "cayley", comp)
                                                + (("right",) if right else ()) + (("unitary",) if unitary else ()),
                                                build_cayley, func, graph, calls)
+                    width[0] = max(width[0], _ring_width(f2))
                     evaluations.append(_evaluate(ch, f2, lambda R, f2=f2: _exact_rank(
                         R, f2, randomized, lambda: degree_bound(claim, n, r, func).numerator, key)))
                     if r == n and sc.second_point_read and len(comps) == 2:
@@ -1430,6 +1436,12 @@ def _constant(x: Any) -> int | None:
         if c.q == 1:
             return int(c.p)
     return None
+
+
+def _ring_width(field: Any) -> int:
+    """The variables the flint ring of a chart's field holds (0 for another field, or before its ring is used)."""
+    f = getattr(field, "ring_width", None)
+    return f() if f is not None else 0
 
 
 def _symbolic_chart(key: tuple, build: Callable[[], tuple]) -> tuple:
