@@ -328,11 +328,6 @@ def psi_and_gram_give_ddim_functions(s):
     }
 
 
-#: beyond n = 5, the function-field rank of ad_Phi (the upper side of 2l) takes at most 0.2 s up to r = 2
-#: at n = 6, 7; at (6, 3) 0.8 s alone, and above its seconds run out (the exact method falls back to random points)
-AD_PHI_EXACT_MAX_R = {6: 3, 7: 2}
-
-
 def ad_matrix(s, mu):
     """The matrix <e_l, [mu, e_k]> of ad_mu on so(n) in the orthonormal basis e_k = E_i∧E_j."""
     basis = wedge_basis(s, s.n)
@@ -402,7 +397,7 @@ def ad_phi_kernel(s):
     return kernel_matrix(s, vectors)
 
 
-@claim("adjoint-orbit-dimension", paper=("2l",), kind="dim", exact_max_r=AD_PHI_EXACT_MAX_R,
+@claim("adjoint-orbit-dimension", paper=("2l",), kind="dim", exact_max_n=7,
        equivariance="the rank of ad_Phi does not depend on the basis of so(n) and is invariant under Phi -> g Phi g^T",
        statement=r"\dim\big(\Ad_{SO(n)}\Phi(X_0,P_0)\big)=2l=\begin{cases}\tfrac{n(n-1)}2-\left[\tfrac n2\right],"
                  r"&n\le2r+1\\ 2r(n-r-1),&n>2r+1\end{cases}")
@@ -412,7 +407,7 @@ def generic_adjoint_orbit_dimension(s):
                                   kernel=ad_phi_kernel(s))}
 
 
-@claim("adjoint-orbit-regularity", paper=("2l",), kind="dim", exact_max_r=AD_PHI_EXACT_MAX_R,
+@claim("adjoint-orbit-regularity", paper=("2l",), kind="dim", exact_max_n=7,
        fails_at=lambda n, r: n == 2 * r + 2,
        erratum="""The remark before Lemma 2l says that the generic orbit in Phi(T*V) is regular for
        n <= 2r+1 and singular otherwise.  For n = 2r+2 the generic orbit is regular as well (both cases of

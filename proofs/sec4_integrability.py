@@ -36,7 +36,7 @@ def delta0_printed(n, r):
     return dim_V(n, r) + dim_so(n - r) - dim_so(n) + n // 2
 
 
-@claim("invariant-tori-dimensions", paper=("bols-jov", "ddim", "2l"), kind="dim", exact_max_r={6: 3, 7: 2},
+@claim("invariant-tori-dimensions", paper=("bols-jov", "ddim", "2l"), kind="dim", exact_max_n=7,
        equivariance="the ranks do not depend on the bases of so(n) and of the fibre and are invariant under O(n)",
        statement=r"\delta_0=2\dim V_{n,r}-\ddim C^\infty(T^*V_{n,r})^{SO(n)}-2l=\begin{cases}r,&n\ge2r\\"
                  r"\dim V_{n,r}+\dim SO(n-r)-\dim SO(n)+\rank SO(n),&n<2r\end{cases};\quad "

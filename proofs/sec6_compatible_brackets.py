@@ -633,7 +633,7 @@ def com_kernel(s, F, B):
 
 
 @claim("cif-completeness", paper=("CIF", "FF", "BB", "2l"), kind="dim", exact_max_n=3,
-       exact_max_r={4: 2, 5: 2, 6: 1, 7: 1},
+       exact_max_r={4: 4, 5: 4, 6: 2, 7: 2},
        equivariance="the rank of the differentials of SO(n)-invariant functions on T*V is invariant under O(n); the Jacobian only lists them in the coordinates of R^{2nr}",
        statement=r"\ddim(\mathfrak F+\mathfrak B)=\dim V_{n,r}-l,\quad \mathfrak F=\{\tr(\lambda\Phi+XX^T)^k\},\ "
                  r"\mathfrak B=\{\tr(\Psi+\mu B)^k\}")
@@ -646,7 +646,7 @@ def cif_set_is_complete(s):
                                 kernel=cif_kernel(s, F, B))}
 
 
-@claim("com-completeness", paper=("COM", "perelomov", "BB"), kind="dim", exact_max_n=2, exact_max_r={3: 2, 4: 1},
+@claim("com-completeness", paper=("COM", "perelomov", "BB"), kind="dim", exact_max_n=4, exact_max_r={5: 1},
        equivariance="the rank of the differentials of the functions on T*V is invariant under (X, P, A) -> (gX, gP, gAg^T), which maps the set of functions to itself; the Jacobian only lists them in the coordinates of R^{2nr}",
        statement=r"\ddim(\mathfrak F+\mathfrak B)=\dim V_{n,r},\quad \mathfrak F=\{\tr(\lambda(PX^T-XP^T)+XX^T-\lambda^2A)^k\},\ "
                  r"\mathfrak B=\{\tr(\Psi+\mu B)^k\}")

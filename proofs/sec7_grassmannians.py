@@ -205,8 +205,7 @@ def lema1_kernel_at_psi_zero(s, X, h):
 
 
 @claim("neumann2-kernel", paper=("NEUMANN2", "LEMA1", "KER"), kind="dim",
-       sizes=admissible(5), exact_max_n=4, exact_max_r={5: 5, 6: 2, 7: 2},
-       exact_corank={6: 2, 7: 1},
+       sizes=admissible(5), exact_max_n=7,
        equivariance=EQUIVARIANCE_X,
        statement=r"(X_0,P_0)\in\Psi^{-1}(0)\ \text{generic},\ h=\Phi(X_0,P_0),\ v=X_0X_0^T:\quad "
                  r"\dim\ker\Lambda_1(h+v)=\dim(gl(r)\oplus gl(n-r)),\quad "

@@ -179,3 +179,26 @@ def test_the_point_methods_decide_the_rank_as_without_a_kernel():
     def words(res):
         return [re.sub(r"p = \d+", "p", c.detail) for c in res.checks]
     assert words(a) == words(b)
+
+
+def test_the_mutation_analysis_changes_the_statement_not_its_certificate():
+    """The nodes only the kernel reads are no mutation sites (a changed kernel leaves the statement as
+    it is): the claim with a kernel offers exactly the sites of the same claim without one."""
+    from collections import Counter
+
+    from stiefelsym.ir import compile_claim
+    from stiefelsym.ir.mutants import certificate_only, sites
+    from stiefelsym.scene import REALIZATIONS
+
+    def bare(s):
+        v = point(s)
+        return {"rank ad_v": Rank(ad(s, v), s.n * s.n - s.n)}
+    cons = REALIZATIONS["standard"]
+    g = compile_claim(right, 3, 1, (cons.name, cons.build))
+    h = compile_claim(bare, 3, 1, (cons.name, cons.build))
+    assert certificate_only(g) and not certificate_only(h)
+    assert not {x.node for x in sites(g)} & certificate_only(g)
+
+    def kinds(graph):
+        return Counter((graph.ops[x.node], x.operator, x.text) for x in sites(graph))
+    assert kinds(g) == kinds(h)

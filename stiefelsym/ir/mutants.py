@@ -96,14 +96,41 @@ def _bump(a: tuple, k: int) -> tuple:
     return a[:k] + (a[k] + 1,) + a[k + 1:]
 
 
+def certificate_only(g: Graph) -> set[int]:
+    """The nodes only a rank's kernel certificate reads (``Rank(M, k, kernel=K)``): not part of the
+    statement.  A change there leaves the statement as it is (the method then decides the rank without
+    the certificate, or with it where it is still one), so the mutation analysis does not change them."""
+    ops, args = g.ops, g.args
+    kernels = [a[4] for op, a in zip(ops, args) if op == "rank" and len(a) > 4 and type(a[4]) is Ref]
+    if not kernels or g.output is None:
+        return set()
+    mark = bytearray(len(args))
+    stack = [g.output.i]
+    while stack:
+        i = stack.pop()
+        if mark[i]:
+            continue
+        mark[i] = 1
+        a = args[i]
+        # a rank with a kernel reads its matrix (argument 0) for the statement; the kernel (argument 4) is
+        # the certificate's
+        reads = g.refs(i) if ops[i] != "rank" or len(a) <= 4 else [a[0].i] if type(a[0]) is Ref else []
+        stack.extend(j for j in reads if not mark[j])
+    return {i for i in range(len(args)) if not mark[i]}     # (and nodes nothing reads: no change there shows)
+
+
 def sites(g: Graph) -> Iterator[Site]:
     """Every change of :data:`OPERATORS` the graph offers, node by node (a fixed order: mutants are
-    numbered by it).  Changes that do not type are only found out when the mutant is built."""
+    numbered by it), outside a rank's kernel certificate (:func:`certificate_only`).  Changes that do
+    not type are only found out when the mutant is built."""
     ops, args = g.ops, g.args
+    skip = certificate_only(g)
 
     def v(rp, x, f):
         return rp.arg(x, f)
     for i, (op, a) in enumerate(zip(ops, args)):
+        if i in skip:
+            continue
         if op in ("add", "sub"):
             x, y = a
             flip = "−" if op == "add" else "+"
