@@ -633,7 +633,7 @@ def com_kernel(s, F, B):
 
 
 @claim("cif-completeness", paper=("CIF", "FF", "BB", "2l"), kind="dim", exact_max_n=3,
-       exact_max_r={4: 4, 5: 4, 6: 2, 7: 2},
+       exact_max_r={4: 4, 5: 4, 6: 3, 7: 2},
        equivariance="the rank of the differentials of SO(n)-invariant functions on T*V is invariant under O(n); the Jacobian only lists them in the coordinates of R^{2nr}",
        statement=r"\ddim(\mathfrak F+\mathfrak B)=\dim V_{n,r}-l,\quad \mathfrak F=\{\tr(\lambda\Phi+XX^T)^k\},\ "
                  r"\mathfrak B=\{\tr(\Psi+\mu B)^k\}")

@@ -293,7 +293,7 @@ def pencil_leaves_singular_corrected(s):
 # -- Lemma LEMA2: (A1) ---------------------------------------------------------------------------------
 
 @claim("pencil-rank-a1", paper=("LEMA2", "LAMBDA", "L3", "L4"), kind="dim",
-       sizes=admissible(5), exact_max_n=5, exact_max_r={6: 3, 7: 1}, equivariance=EQUIVARIANCE_XA,
+       sizes=admissible(5), exact_max_n=5, exact_max_r={6: 5, 7: 2}, equivariance=EQUIVARIANCE_XA,
        statement=r"\rank\Lambda_{1,-1}(h+v)=\rank\Lambda_{1,t}(h+v)=\rank\Lambda_2(h+v)=n^2-n,\quad "
                  r"\xi+\eta\in\ker\Lambda_{1,-1}\iff[\eta,A]=0,\ [\xi,A]-[\eta,h]=0")
 def pencil_rank_A1(s):
