@@ -16,7 +16,7 @@ from stiefelsym.proofs import sec2_hamiltonian_flows as sec2
 from stiefelsym.proofs import sec7_grassmannians as sec7
 from stiefelsym.proofs.sec6_dimension_lemmas import lambda1
 
-KERNEL_ROUTE = "kernel vectors of the claim, M K = 0 identically in the chart"
+KERNEL_ROUTE = "of the claim, M K = 0 identically in the chart"
 
 
 def detail(res):

@@ -13,7 +13,7 @@ from stiefelsym.proofs.sec6_dimension_lemmas import (
     a2_system, a2_system_kernel, as_columns, generic_leaf_rank, gl_coords, kernel_generic_lambda1, lambda1,
     leaf_printed, theta, unit)
 
-ROUTE = "kernel vectors of the claim, M K = 0 identically in the chart"
+ROUTE = "of the claim, M K = 0 identically in the chart"
 
 
 def details(res):

@@ -699,7 +699,7 @@ def _kernel_rank(R: Rank, rng: random.Random, lower: int | None) -> tuple[tuple[
     if d is None:
         return None, "; the kernel certificate's rank was not found at an exact point (poles): not used"
     upper = cols - d
-    bound = (f"{d} kernel vectors of the claim, M K = 0 identically in the chart and rank K = {d} at an exact "
+    bound = (f"{d} kernel vector{'' if d == 1 else 's'} of the claim, M K = 0 identically in the chart and rank K = {d} at an exact "
              f"rational point, so rank <= {cols} − {d} = {upper} over the function field")
     if upper < R.expected:
         return (f"{bound} (paper: {R.expected}; certain)", "certain"), ""
