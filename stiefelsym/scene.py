@@ -1109,6 +1109,14 @@ class Scene(PaperObjects):
         x = M._trace()
         return _number(self, x)
 
+    def tr_product(self, M: Any, N: Any) -> Scalar:
+        """tr(M N), for the evaluator's trace of a product that no other node reads (not a method of
+        the claims' API): the same value as ``tr(M @ N)``, without the product's off-diagonal entries
+        where the backend offers it."""
+        if type(M) is Mat and type(N) is Mat:
+            return _number(self, M._trace_product(N))
+        return self.tr(M @ N)
+
     def resolvent(self, mu: Scalar) -> Mat:
         """(mu I_n - A)^{-1}."""
         mu = mu

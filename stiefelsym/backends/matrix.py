@@ -700,6 +700,26 @@ class Mat:
             acc = x if acc is None else acc + x
         return self._field.normalize(acc)
 
+    def _trace_product(self, o: "Mat") -> Any:
+        """tr(self @ o), with the checks and the joins of spaces of the product and of its trace; a
+        backend that offers it (``trace_matmul``) computes the product's diagonal only."""
+        if type(o) is Mat and self._n is not None and o._n is not None and o._field is self._field \
+                and self._field.entry_trace is None:
+            be = backend(self._field)
+            fused = getattr(be, "trace_matmul", None)
+            if fused is not None:
+                (m, k1), (k2, k) = be.shape(self._n), be.shape(o._n)
+                if k1 != k2:
+                    raise self._sizes_disagree(f"cannot multiply {(m, k1)} by {(k2, k)}")
+                tracker = self._tracker_of(o)
+                if self._tags[1] != o._tags[0]:
+                    unify(self._tags[1], o._tags[0], "a product", tracker)
+                if m != k:
+                    raise ValueError("trace of a non-square matrix")
+                unify(self._tags[0], o._tags[1], "a trace", tracker)
+                return fused(self._n, o._n)
+        return (self @ o)._trace()
+
     def inv(self) -> "Mat":
         """The inverse."""
         return self._inv()

@@ -98,8 +98,10 @@ class Evaluator:
         memo = self.root.memo
         shared = getattr(self.root.bind[0], "_node_memo", None)
         if shared is None:
-            prog = _program(self.g, self.deps)
-            plan = release_plan(self.g, prog) if _forgets(self.root.bind[0]) else None
+            scene = self.root.bind[0]
+            forgets = _forgets(scene)
+            prog = _program(self.g, self.deps, fused=not forgets and _fuses(scene))
+            plan = release_plan(self.g, prog) if forgets else None
             if plan is None:
                 for i, kernel in prog:
                     memo[i] = kernel(memo, self)
@@ -137,7 +139,7 @@ class Evaluator:
         tracker = getattr(self.root.bind[0], "_tracker", None)
         if type(tracker) is not CoordinateTracker:
             tracker = None
-        for i, kernel in _program(self.g, self.deps):
+        for i, kernel in _program(self.g, self.deps, fused=_fuses(self.root.bind[0])):
             if ops[i] in UNSHARED:
                 memo[i] = kernel(memo, self)
                 continue
@@ -506,12 +508,16 @@ _ARITH = {"add": operator.add, "sub": operator.sub, "matmul": operator.matmul, "
           "div": operator.truediv}
 
 
-def _program(g: Graph, deps: list) -> list:
+def _program(g: Graph, deps: list, fused: bool = False) -> list:
     """The nodes the output needs at the top level (not inside a traced function), in order, each
-    with its kernel (made once per graph)."""
-    prog = g.cache.get("program")
+    with its kernel (made once per graph).  ``fused``: the trace of a product that no other node
+    reads is computed from the product's operands (:func:`_trace_products`), and the product is not
+    computed."""
+    name = "program_fused" if fused else "program"
+    prog = g.cache.get(name)
     if prog is not None:
         return prog
+    skip = _trace_products(g, deps) if fused else {}
     need = set()
     stack = [g.output.i]
     while stack:
@@ -519,10 +525,55 @@ def _program(g: Graph, deps: list) -> list:
         if i in need or deps[i]:
             continue
         need.add(i)
-        if g.ops[i] != "fn":
+        if i in skip:
+            stack.extend((skip[i][0], *skip[i][1:]))
+        elif g.ops[i] != "fn":
             stack.extend(g.refs(i))
-    prog = g.cache["program"] = [(i, _kernel(g.ops[i], g.args[i])) for i in sorted(need)]
+    prog = g.cache[name] = [(i, _trace_product_kernel(*skip[i]) if i in skip else _kernel(g.ops[i], g.args[i]))
+                            for i in sorted(need)]
     return prog
+
+
+def _trace_products(g: Graph, deps: list) -> dict[int, tuple[int, int, int]]:
+    """{i: (scene, x, y)} for every top-level node i = tr(x @ y) whose product is read by i alone
+    (not the output, not by a traced function's body, not twice): the trace needs the product's
+    diagonal only."""
+    ops, args = g.ops, g.args
+    readers: dict[int, int] = {}
+    for k in range(len(ops)):
+        for j in g.refs(k):
+            readers[j] = readers.get(j, 0) + 1
+    out = {}
+    top = g.output.i if g.output is not None else -1
+    for i, op in enumerate(ops):
+        if op != "call" or deps[i]:
+            continue
+        a = args[i]
+        if a[1] != "tr" or a[3] or len(a[2]) != 1 or type(a[0]) is not Ref or type(a[2][0]) is not Ref:
+            continue
+        j = a[2][0].i
+        if ops[j] != "matmul" or deps[j] or j == top or readers.get(j) != 1:
+            continue
+        x, y = args[j]
+        if type(x) is Ref and type(y) is Ref:
+            out[i] = (a[0].i, x.i, y.i)
+    return out
+
+
+def _trace_product_kernel(s: int, x: int, y: int) -> Callable:
+    """The kernel of a trace of a product of the nodes x, y (see :func:`_trace_products`)."""
+    return lambda m, ev: m[s].tr_product(m[x], m[y])
+
+
+def _fuses(scene: Any) -> bool:
+    """Whether traces of products are computed fused on this scene: its backend offers
+    ``trace_matmul`` and keeps every value to the end (no release plan), and the scene is the
+    fixed-size scene (which has ``tr_product``)."""
+    field = getattr(scene, "_field", None)
+    if field is None or getattr(type(scene), "tr_product", None) is None:
+        return False
+    be = backend(field)
+    return getattr(be, "trace_matmul", None) is not None and getattr(be, "forget", None) is None
 
 
 def release_plan(g: Graph, prog: list) -> list | None:
