@@ -197,16 +197,7 @@ class Graph:
 
     def refs(self, i: int) -> list[int]:
         """The nodes node ``i`` reads (last argument first, nested tuples likewise)."""
-        out: list[int] = []
-        stack = list(self.args[i])
-        while stack:
-            a = stack.pop()
-            t = type(a)
-            if t is Ref:
-                out.append(a[0])
-            elif t is tuple:
-                stack.extend(a)
-        return out
+        return self._nested(self.args[i])
 
     def needed(self) -> set[int]:
         """The nodes the output reads, directly or not (the output included; none without an output)."""
@@ -239,6 +230,7 @@ class Graph:
 
     @staticmethod
     def _nested(a: tuple) -> list[int]:
+        """The nodes a tuple of arguments refers to (last first, nested tuples likewise)."""
         out: list[int] = []
         stack = list(a)
         while stack:

@@ -521,6 +521,9 @@ class _RandomizedRank:
 
     def __init__(self) -> None:
         self.bounds: list[float] = []
+        #: whether a generic rank was taken at a point drawn from the run's seed (a proof all the
+        #: same: the record then carries the seed, which reproduces the point)
+        self.drew = False
 
 
 def _point_values(M: Mat, rng: random.Random, modulus: int | None):
@@ -592,6 +595,8 @@ def _exact_rank(R: Rank, field: Field, randomized: _RandomizedRank | None = None
     (status "randomized": the verdict is then ``checked``).  ``key``: the run's :func:`draw_key`."""
     M = R.matrix
     rng = random.Random(f"{key}|rank|{M._shape()}")
+    if R.generic and randomized is not None:
+        randomized.drew = True
     if R.generic:
         lower = _rank_at_point(M, rng)
         if lower is not None and lower > R.expected:
@@ -1039,6 +1044,8 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
         res.seed = seed      # the points were drawn from the seed: the rerun line and a check need it
         return res
     res.verdict = "proved"
+    if randomized.drew:
+        res.seed = seed      # a rank at a point drawn from the seed: the proof holds for every seed, the point is the seed's
     _plan(claim, func, n, r, calls, res)
     return res
 
