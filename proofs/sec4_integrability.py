@@ -166,7 +166,7 @@ def manakov_flow_for_a_squared(s):
     }
 
 
-@claim("manakov-lax", paper=("Manakov", "dot_XP2", "man"), kind="lax", exact_max_n=2, exact_max_r={3: 3},
+@claim("manakov-lax", paper=("Manakov", "dot_XP2", "man"), kind="lax", exact_max_n=2, exact_max_r={3: 3, 4: 1},
        exact_corank={4: 0, 5: 0, 6: 0},
        statement=r"\tfrac{d}{dt}\mathcal L_{man}(\lambda)=[\mathcal A_{man}(\lambda),\mathcal L_{man}(\lambda)],\quad "
                  r"\mathcal L_{man}=\Phi+\lambda A,\ \mathcal A_{man}=\mathbb A(\Phi)+\lambda B;\quad "

@@ -334,7 +334,7 @@ def I2r_printed(s, mu):
 
 
 @claim("2r-integrals-explicit", paper=("2r-integrals", "LA3"), kind="id",
-       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 1, 4: 1},
+       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 1, 4: 1, 5: 1},
        statement=r"\mathcal I_2=\sum_i\frac{a(\lambda)}{\lambda-a_i}\big((e^i_1)^2+\dots+(e^i_r)^2\big)"
                  r"+\sum_{i<j}\frac{a(\lambda)\,\Phi_{ij}^2}{(\lambda-a_i)(\lambda-a_j)},\quad "
                  r"\mathcal I_{2r}=\sum_{k}\sum_{I_{r+k}}\frac{a(\lambda)}{\prod(\lambda-a_{i})}\sum_{i_1<\dots<i_k}"
@@ -378,7 +378,7 @@ def I2l_general_line(s, l):
 
 
 @claim("2r-integrals-general-line", paper=("2r-integrals",), kind="id",
-       sizes=admissible(n_max=5, n_min=2, condition="n >= 2"), exact_max_n=2, exact_max_r={3: 2, 4: 1},
+       sizes=admissible(n_max=5, n_min=2, condition="n >= 2"), exact_max_n=2, exact_max_r={3: 2, 4: 1, 5: 1},
        fails_at=lambda n, r: r >= 2,
        erratum="""The general line of (2r-integrals), I_{2l} = sum_{I_l} a/prod(lambda - a_i) sum_{J_l}
        (e_{j_1}^...^e_{j_l})^2_{I_l} + sum_{I_{l+1}} a/prod(lambda - a_i) sum_{J_l, 1<=i<=r}
@@ -516,7 +516,7 @@ def tangency_determinant(t):
 
 
 @claim("gen-chasles", paper=("Gen_Chasles", "conf0", "VV", "cone0", "tangency", "2r-integrals"), kind="geo",
-       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 1},
+       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 1, 4: 1},
        statement=r"a(\lambda)\det(\mathcal V^TB(\lambda)\mathcal V)=a(\lambda)\sum_{I}|B(\lambda)|^I_IG_I(\mathcal V)^2"
                  r"=\mathcal I_{2r}(\lambda)=a(\lambda)\det\mathcal L^*_{neum}(\lambda),\quad "
                  r"\tfrac{d}{dt}\det(\mathcal V^TB(\lambda)\mathcal V)=0\ \text{along (N0\_XP2), (NE\_XP)}")
@@ -542,7 +542,7 @@ def rotation(s):
 
 
 @claim("gen-chasles2", paper=("Gen_Chasles2", "VVB", "conf", "conf0"), kind="geo",
-       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 1, 4: 1, 5: 1},
+       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 1, 4: 1, 5: 1, 6: 1},
        statement=r"\mathcal V(XB,PB)\begin{pmatrix}B^{-1}&0\\0&B^{-1}\end{pmatrix}=\begin{pmatrix}\mathbf I_n&0\\0&B^{-1}"
                  r"\end{pmatrix}\mathcal V(X,P),\ \det(\mathcal V(XB,PB)^TB(\lambda)\mathcal V(XB,PB))="
                  r"\det(\mathcal V^TB(\lambda)\mathcal V),\ B\in SO(r);\quad \mathfrak i(x)\in\bar Q(\lambda)\iff "
@@ -644,7 +644,7 @@ def J2r_printed(s, mu):
 
 
 @claim("chasles-manakov", paper=("Chasles-Manakov", "man-dual", "MAN-LA2"), kind="geo",
-       sizes=admissible(n_max=5, where=lambda n, r: n >= 2 * r, condition="n >= 2r"), exact_max_n=3,
+       sizes=admissible(n_max=5, where=lambda n, r: n >= 2 * r, condition="n >= 2r"), exact_max_n=3, exact_max_r={4: 1},
        statement=r"a(\lambda)\det\mathcal L^*_{man}(\lambda)=\mathcal J_{2r}(\lambda)=\sum_{I_{2r}}"
                  r"\frac{a(\lambda)|\Phi|^{I_{2r}}_{I_{2r}}}{\prod(\lambda-a_i)},\ \deg\mathcal J_{2r}=n-2r,\ "
                  r"\det(U^T(A-\lambda)^{-1}U)=\det(U^TR_\lambda U)=\det\mathcal L^*_{man},\ "
@@ -732,7 +732,7 @@ def dual_lax_matrices_determine_the_point(s):
 # -- r = n: the Lax pairs give integrals of every Manakov flow (the remark after DUAL) ---------------------
 
 @claim("dual-invariants-manakov-r-n", paper=("DUAL", "LA3", "Neumann_LA", "Manakov", "dot_XP2"), kind="pb",
-       sizes=admissible(n_max=5, where=lambda n, r: r == n, condition="r = n"), exact_max_n=3,
+       sizes=admissible(n_max=5, where=lambda n, r: r == n, condition="r = n"), exact_max_n=3, exact_max_r={4: 4},
        statement=r"r=n:\ \tr(X^TAX)=\tr A,\quad \tfrac{d}{dt}\tr\mathcal L_{neum}(\lambda)^k=0\ (k=1,2,3),\ "
                  r"\tfrac{d}{dt}\tr\mathcal L^*_{neum}(\lambda)^k=0\ (k=2,4)\ \text{along the Manakov flow (dot\_XP2), "
                  r"(Manakov)},\ B\ \text{generic}")
@@ -752,7 +752,7 @@ def dual_invariants_are_manakov_integrals_for_r_n(s):
 # -- the Chasles cones are real ------------------------------------------------------------------------
 
 @claim("chasles-cones-real", paper=("Gen_Chasles", "2r-integrals", "conf0"), kind="geo",
-       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 3, 4: 1},
+       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 3, 4: 1, 5: 1},
        statement=r"\lambda^r\,\mathcal I_{2r}(\lambda)=\det\big(\lambda\mathbf I_n-Q(A-PP^T)Q\big),\ Q=\mathbf I_n-XX^T"
                  r"\ \Rightarrow\ c_1,\dots,c_{n-r}\in\mathbb R\ \text{for real}\ (X,P)")
 def chasles_cones_are_real(s):
