@@ -135,6 +135,17 @@ def bracket(s):
     return {"v": s.bracket(F, G) + s.bracket(G, F)}
 
 
+@claim("adv-s44-untyped-pair", paper="adv", kind="id", sizes=N3)
+def untyped_pair(s):
+    """True: tr(E XXᵀ) − tr(E) + tr(E (Iₙ − XXᵀ)) = 0 for the untyped E = diag(1, 0, 0) (two fused traces where E
+    meets R^n).  Its mutant without the third term, (XXᵀ)₀₀ − 1, is false but 0 at X = [I; 0], the equivariant
+    chart's point: a mutant that took a fused trace's shared value without its recorded look at coordinates
+    would be proved there."""
+    E = s.mat([[s.q(1), s.q(0), s.q(0)], [s.q(0), s.q(0), s.q(0)], [s.q(0), s.q(0), s.q(0)]])
+    XX = s.X @ s.X.T
+    return {"v": s.tr(E @ XX) - s.tr(E) + s.tr(E @ (s.In - XX))}
+
+
 # -- false ------------------------------------------------------------------------------------------------------
 
 @claim("adv-s44-xxt-n", paper="adv", kind="id", sizes=ANY)
