@@ -275,7 +275,7 @@ def spectral_curve_coefficients(s):
 
 
 @claim("2r-integrals-conserved", paper=("2r-integrals", "LA3", "LA4"), kind="pb",
-       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 3, 4: 2, 5: 1, 6: 1, 7: 1},
+       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 3, 4: 1, 5: 1, 6: 1, 7: 1},
        statement=r"\tfrac{d}{dt}\mathcal I_{2l}(\lambda)=0\ \text{along (N0\_XP2) and (NE\_XP)},\quad "
                  r"\tfrac{d}{d\epsilon}\mathcal I_{2l}(\lambda)\big|_{(Xe^{\epsilon\eta},Pe^{\epsilon\eta})}=0,"
                  r"\ \eta\in so(r),\ l=1,\dots,r")
@@ -334,7 +334,7 @@ def I2r_printed(s, mu):
 
 
 @claim("2r-integrals-explicit", paper=("2r-integrals", "LA3"), kind="id",
-       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 2, 4: 1, 5: 1},
+       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 1, 4: 1, 5: 1},
        statement=r"\mathcal I_2=\sum_i\frac{a(\lambda)}{\lambda-a_i}\big((e^i_1)^2+\dots+(e^i_r)^2\big)"
                  r"+\sum_{i<j}\frac{a(\lambda)\,\Phi_{ij}^2}{(\lambda-a_i)(\lambda-a_j)},\quad "
                  r"\mathcal I_{2r}=\sum_{k}\sum_{I_{r+k}}\frac{a(\lambda)}{\prod(\lambda-a_{i})}\sum_{i_1<\dots<i_k}"
@@ -598,7 +598,7 @@ def line_tangency(s, mu):
 
 
 @claim("mum-geod", paper=("Mum_geod",), kind="pb",
-       sizes=admissible(n_max=5, n_min=2, r_max=1, condition="r = 1, n >= 2"), exact_max_n=4, exact_max_r={5: 1},
+       sizes=admissible(n_max=5, n_min=2, r_max=1, condition="r = 1, n >= 2"), exact_max_n=4,
        statement=r"r=1:\ \{F_i,F_j\}=0,\ \ \mathrm{disc}_{l(t)}Q(\lambda)=-\sum_i\frac{F_i}{\lambda-a_i}"
                  r"=-\mathcal I_2(\lambda)/a(\lambda),\ \ \mathrm{disc}_{l(t)}Q(0)=\sum_iF_i/a_i")
 def moser_chasles_for_the_neumann_system(s):
