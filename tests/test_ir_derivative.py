@@ -500,8 +500,8 @@ def test_coverage_of_the_catalog(catalog):
 def test_coverage_of_the_catalog_flows_and_brackets(catalog):
     """At (4,2) on a point scene every Dirac bracket, multiplier flow and canonical flow of the catalog
     is graph nodes (2 canonical flows are the Hamiltonian vector fields of the constraints in the
-    Inverse statements of {F_i, F_j}_0 and {F_i, F_j}_eps, each used twice), and 74 of the 75 Dirac
-    flows: Hamiltonians of entries, blocks, given matrices and the symmetric operator included.  The
+    Inverse statements of {F_i, F_j}_0 and {F_i, F_j}_eps, each used twice), and 80 of the 81 Dirac
+    flows (the Manakov flows of B = A, A², A³ in three claims): Hamiltonians of entries, blocks, given matrices and the symmetric operator included.  The
     one left is the metric realization's (its multipliers solve Lyapunov equations)."""
     counts: dict[str, list[int]] = {}
     reasons = set()
@@ -514,7 +514,7 @@ def test_coverage_of_the_catalog_flows_and_brackets(catalog):
                 k[1] += 1
                 if why is not None:
                     reasons.add((c.realization, why))
-    assert counts == {"dirac_flow": [74, 75], "bracket": [143, 143], "multiplier_flow": [4, 4],
+    assert counts == {"dirac_flow": [80, 81], "bracket": [143, 143], "multiplier_flow": [4, 4],
                       "canonical_flow": [6, 6]}
     assert reasons == {("metric", "the scene's own multipliers here (another realization, a chart or a field "
                                   "without their closed forms, or the free algebra's solve)")}
