@@ -210,7 +210,7 @@ def manakov_flow_for_a_squared(s):
                  r"\mathcal L_{man}=\Phi+\lambda A,\ \mathcal A_{man}=\mathbb A(\Phi)+\lambda B;\quad "
                  r"\tfrac{d}{dt}\tr\big(\lambda A+\textstyle\sum_i p_i\wedge e_i\big)^k=0")
 def manakov_lax_pair(s):
-    """The Dirac flow of H_𝔸 with the Manakov operator (Manakov) of generic diagonal A, B implies d𝓛/dt = [𝓐, 𝓛] for 𝓛 = Φ + λA, 𝓐 = 𝔸(Φ) + λB, and the integrals tr(λA + Σ p_i ∧ e_i)^k of (man) (Σ p_i ∧ e_i = PXᵀ − XPᵀ) are conserved.  Both statements are linear in B (the flow of H_𝔸 and 𝓐 are), and every diagonal B is Σ_k β_k A^k (distinct a_i), so they are checked for B = A^k, k = 1, …, n − 1, with 𝔸(ξ) = Σ_{m<k} A^m ξ A^{k−1−m}, the entries (Manakov) of claim manakov-operator (B = I gives 𝔸 = 0 and a trivial statement)."""
+    """The Dirac flow of H_𝔸 with the Manakov operator (Manakov) of generic diagonal A, B implies d𝓛/dt = [𝓐, 𝓛] for 𝓛 = Φ + λA, 𝓐 = 𝔸(Φ) + λB, and the integrals tr(λA + Σ p_i ∧ e_i)^k of (man) (Σ p_i ∧ e_i = PXᵀ − XPᵀ) are conserved.  Both statements are linear in B, because the flow of H_𝔸 and the matrix 𝓐 both are, and every diagonal B is Σ_k β_k A^k (distinct a_i), so they are checked for B = A^k, k = 1, …, n − 1, with 𝔸(ξ) = Σ_{m<k} A^m ξ A^{k−1−m}, the entries (Manakov) of claim manakov-operator (B = I gives 𝔸 = 0 and a trivial statement)."""
     L = s.Phi + s.lam * s.A
     checks = {}
     for k in range(1, max(s.n, 2)):         # at n = 1 every B is a multiple of A

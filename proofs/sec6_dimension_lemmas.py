@@ -50,19 +50,23 @@ def unit(s, m, k, a, b, tags):
     return s.mat([[one if (i, j) == (a, b) else zero for j in range(k)] for i in range(m)], tags)
 
 
+def gl_kinds(n):
+    """The kinds of the elements of :func:`gl_basis`, in its order: ("so", i, j) for E_i∧E_j (i < j), then
+    ("sym", i, j) for E_ij + E_ji (i < j) and E_ii (i = j)."""
+    return ([("so", i, j) for i in range(n) for j in range(i + 1, n)]
+            + [("sym", i, j) for i in range(n) for j in range(i, n)])
+
+
 def gl_basis(s):
     """E_i∧E_j (i < j), then E_ij + E_ji (i < j) and E_ii: a basis of so(n) + Sym(n); and its kinds."""
     n, tags = s.n, ("n", "n")
-    basis, kinds = [], []
-    for i in range(n):
-        for j in range(i + 1, n):
+    basis, kinds = [], gl_kinds(n)
+    for kind, i, j in kinds:
+        if kind == "so":
             basis.append(unit(s, n, n, i, j, tags) - unit(s, n, n, j, i, tags))
-            kinds.append(("so", i, j))
-    for i in range(n):
-        for j in range(i, n):
+        else:
             E = unit(s, n, n, i, j, tags)
             basis.append(E + E.T if i != j else E)
-            kinds.append(("sym", i, j))
     return basis, kinds
 
 
@@ -122,8 +126,7 @@ def linear_system(s, image):
 
 def gl_coords(s, xi, eta):
     """The coordinates of ξ + η (ξ ∈ so(n), η ∈ Sym(n)) in the basis of :func:`gl_basis`."""
-    _, kinds = gl_basis(s)
-    return [(xi if k[0] == "so" else eta)[k[1], k[2]] for k in kinds]
+    return [(xi if k[0] == "so" else eta)[k[1], k[2]] for k in gl_kinds(s.n)]
 
 
 def gl_split(s, z):

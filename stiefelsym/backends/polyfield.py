@@ -1423,20 +1423,15 @@ class PolyBackend(Backend):
 
     def trace_matmul(self, a, b):
         """tr(a b) = sum_ik a_ik b_ki: the diagonal of the product only (the trace of a power
-        M^k computed as M^(k-1) M needs m of its m^2 entries, the largest polynomials of the chain)."""
+        M^k computed as M^(k-1) M needs m of its m^2 entries, the largest polynomials of the chain;
+        as a Frobenius product of a and bᵀ, half the products when both are symmetric or both skew)."""
         if type(a) is not PolyMat or type(b) is not PolyMat:
             return self.trace(self.matmul(a, b))
         if a.z or b.z:
             return self._scalar(self.ring.zero, NODEN)
         if a.ctx is not self.ring.ctx or b.ctx is not self.ring.ctx:
             a, b = self._fix(a), self._fix(b)
-        acc, zero = None, self.ring.zero
-        bt = b.a.T
-        for ai, bi in zip(a.a.tolist(), bt.tolist()):
-            for x, y in zip(ai, bi):
-                if x and y:
-                    acc = x * y if acc is None else acc + x * y
-        return self._scalar(zero if acc is None else acc, _merge_add(a.den, b.den))
+        return self._scalar(_frobenius(a.a, b.a.T, self.ring.zero), _merge_add(a.den, b.den))
 
     def inner(self, a, b):
         if type(a) is ObjMat or type(b) is ObjMat:

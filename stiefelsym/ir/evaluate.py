@@ -100,7 +100,7 @@ class Evaluator:
         if shared is None:
             scene = self.root.bind[0]
             forgets = _forgets(scene)
-            prog = _program(self.g, self.deps, fused=not forgets and _fuses(scene))
+            prog = _program(self.g, self.deps, fused=_fuses(scene))
             plan = release_plan(self.g, prog) if forgets else None
             if plan is None:
                 for i, kernel in prog:
@@ -526,7 +526,7 @@ def _program(g: Graph, deps: list, fused: bool = False) -> list:
             continue
         need.add(i)
         if i in skip:
-            stack.extend((skip[i][0], *skip[i][1:]))
+            stack.extend(skip[i])
         elif g.ops[i] != "fn":
             stack.extend(g.refs(i))
     prog = g.cache[name] = [(i, _trace_product_kernel(*skip[i]) if i in skip else _kernel(g.ops[i], g.args[i]))
