@@ -96,3 +96,20 @@ def test_the_backend_s_fused_trace_is_the_trace_of_the_product():
         b = (x @ y)._trace()
         assert a == b
     assert np.shape(s.X._trace_product(s.X.T) - s.tr(s.X @ s.X.T)) == ()
+
+
+def test_the_fused_trace_of_symmetric_or_skew_factors_sums_each_pair_once():
+    """tr(a b) is summed over the upper triangle and doubled when a and bᵀ are both symmetric or both skew,
+    and is the diagonal's alone when one is symmetric and the other skew; a factor that is symmetric but
+    for one entry is summed in full (every comparison is exact)."""
+    from stiefelsym.backends.polyfield import SymbolicField
+    from stiefelsym.scene import Scene
+    f = SymbolicField()
+    s = Scene(3, 2, f, chart="cayley")
+    S1 = s.A + s.X @ s.X.T
+    S2 = s.lam * s.A @ s.A + s.P @ s.P.T
+    K1, K2 = s.Phi, s.lam * s.Phi @ s.A + s.A @ s.Phi * s.lam
+    E = s.mat([[s.q(1) if (i, j) == (0, 1) else s.q(0) for j in range(3)] for i in range(3)], ("n", "n"))
+    for x, y in ((S1, S2), (K1, K2), (S1, K1), (K2, S2), (S1 + E, S2), (K1, K2 + E), (S2, S2 @ S2)):
+        assert x._trace_product(y) == (x @ y)._trace()
+    assert S1._trace_product(K1) == s.q(0)
