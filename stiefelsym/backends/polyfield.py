@@ -1421,6 +1421,19 @@ class PolyBackend(Backend):
             acc = acc + a.a[i, i]
         return self._scalar(acc, a.den)
 
+    def scalars(self, a):
+        """The entries of a matrix of numerators over one denominator as scalars of the backend
+        (rational functions kept in flint, not reduced), row by row; None for a matrix held otherwise.
+        A nonzero residual is tested and printed from these, never converted to symengine as a whole
+        (for a refuted statement that conversion costs more than computing the residual)."""
+        if type(a) is not PolyMat:
+            return None
+        a = self._fix(a)
+        R, den = self.ring, a.den
+        if a.z:
+            return [_RF(R, (R.zero, NODEN)) for _ in range(a.a.size)]
+        return [_RF(R, (x, den)) for x in a.a.flat]
+
     def trace_matmul(self, a, b):
         """tr(a b) = sum_ik a_ik b_ki: the diagonal of the product only (the trace of a power
         M^k computed as M^(k-1) M needs m of its m^2 entries, the largest polynomials of the chain;

@@ -150,6 +150,20 @@ def _flatten(value: Any, prefix: str) -> list[tuple[str, Any]]:
     return [(prefix or "value", value)]
 
 
+def _residual_entries(value: Any, prefix: str) -> list[tuple[str, Any]]:
+    """:func:`_entries`, where a residual matrix is held by an exact backend that gives its entries as
+    scalars of its own (the polynomial backend: rational functions in flint) in those scalars, so that
+    a nonzero residual is not converted as a whole to the scene's numbers (symengine expressions)."""
+    if isinstance(value, Mat) and value._n is not None:
+        scalars = getattr(backend(value.field), "scalars", None)
+        xs = scalars(value._n) if scalars is not None else None
+        if xs is not None:
+            rows, cols = value._shape()
+            if rows and cols:
+                return [(f"{prefix}[{i + 1},{j + 1}]", xs[i * cols + j]) for i in range(rows) for j in range(cols)]
+    return _entries(value, prefix)
+
+
 def _natively_zero(value: Any) -> bool:
     """Whether a residual matrix held by an exact whole-matrix backend is zero (one native
     comparison; False sends the caller to the entries)."""
@@ -305,7 +319,7 @@ def _evaluate(checks: dict[str, Any], field: Field, rank_fn: Callable[[Rank], tu
         if _natively_zero(value):
             outcomes.append(CheckOutcome(name, "zero", said))
             continue
-        bad = [(pos, x) for pos, x in _entries(value, name) if not field.is_zero(x)]
+        bad = [(pos, x) for pos, x in _residual_entries(value, name) if not field.is_zero(x)]
         if bad:
             nonzero.extend((name, pos, x) for pos, x in bad)
             outcomes.append(CheckOutcome(name, "nonzero", f"{len(bad)} nonzero entries"
@@ -1583,7 +1597,9 @@ def _exact_text(field: Any, x: Any, width: int | None = None) -> str:
     ring: the terms of a refuted residual that are not printed are not ordered)."""
     ring = field.poly_ring() if getattr(field, "native", False) and hasattr(field, "poly_ring") else None
     if ring is not None:
-        from stiefelsym.backends.polyfield import NotRational
+        from stiefelsym.backends.polyfield import _RF, NotRational
+        if type(x) is _RF and x.R is ring:
+            return ring.text(x.rf(), width)
         try:
             return ring.text(ring.from_se(x), width, reduced=True)
         except NotRational:
