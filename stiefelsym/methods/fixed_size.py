@@ -1598,8 +1598,10 @@ def _exact_text(field: Any, x: Any, width: int | None = None) -> str:
     ring = field.poly_ring() if getattr(field, "native", False) and hasattr(field, "poly_ring") else None
     if ring is not None:
         from stiefelsym.backends.polyfield import _RF, NotRational
-        if type(x) is _RF and x.R is ring:
-            return ring.text(x.rf(), width)
+        if type(x) is _RF:
+            if x.R is ring:
+                return ring.text(x.rf(), width)
+            x = x.to_se()          # a scalar of another chart's ring: through its expression
         try:
             return ring.text(ring.from_se(x), width, reduced=True)
         except NotRational:
