@@ -230,6 +230,10 @@ class Claim:
     #: (n, largest n - r) pairs at which the symbolic method is still tried first (r close to n: the
     #: right-reduced Cayley chart, X = I at r = n)
     exact_corank: tuple[tuple[int, int], ...] = ()
+    #: the largest r at which the dimension-free method is tried on the family of sizes (n, r), every n, for a
+    #: claim whose graph needs r as a number (a loop over r): beyond the symbolic budget its proof there is the
+    #: exact method's proof at each size of that family (0: never)
+    free_max_r: int = 0
     corrections: list[Correction] = field(default_factory=list)
     source: str = ""
     #: sizes at which the printed statement is known to fail (a documented erratum)
@@ -288,6 +292,9 @@ class Claim:
                     or not 0 <= pair[1] < pair[0]):
                 raise ValueError(f"claim {self.id}: exact_corank gives the largest n - r (0 <= n - r < n) at which "
                                  f"the symbolic method is tried first, as {{n: n - r}}; {pair!r} is not one")
+        if type(self.free_max_r) is not int or self.free_max_r < 0:
+            raise ValueError(f"claim {self.id}: free_max_r is the largest r (an int >= 0) at which the "
+                             f"dimension-free method is tried on the family of sizes r = k; not {self.free_max_r!r}")
         if (self.expect == "fails" or self.fails_at is not None) and not self.erratum.strip():
             raise ValueError(f"claim {self.id}: a statement expected to fail must be a documented erratum "
                              "(say what is wrong with erratum=...)")
@@ -419,7 +426,8 @@ def _pairs(by_n: dict[int, int] | None, what: str = "exact_max_r") -> tuple[tupl
 def claim(id: str, *, paper: str | Iterable[str] = (), kind: str, section: str | None = None,
           sizes: SizeSpec | Iterable[tuple[int, int] | Size] | None = None, statement: str = "", realization: str = "standard",
           expect: str = "holds", exact_max_n: int | None = None, exact_max_r: dict[int, int] | None = None,
-          exact_corank: dict[int, int] | None = None, fails_at: Callable[[int, int], bool] | None = None, erratum: str = "", equivariance: str = ""):
+          exact_corank: dict[int, int] | None = None, fails_at: Callable[[int, int], bool] | None = None, erratum: str = "", equivariance: str = "",
+          free_max_r: int = 0):
     """Register a claim.  The function's docstring (one sentence) goes into the report.
 
     ``paper``: the paper's equation labels the claim checks; a user's own claim may have none.
@@ -430,7 +438,11 @@ def claim(id: str, *, paper: str | Iterable[str] = (), kind: str, section: str |
     method first, up to that r (a claim whose cost grows mainly with r).
     ``exact_corank``: {n: k}: the sizes n, r with n - r <= k at which ``auto`` still tries the
     symbolic method first (a claim that reads coordinates of R^n and nothing of R^r, whose exact chart at
-    r close to n is the right-reduced Cayley chart: X = I at r = n, an (n - r) x (n - r) inverse below)."""
+    r close to n is the right-reduced Cayley chart: X = I at r = n, an (n - r) x (n - r) inverse below).
+    ``free_max_r``: for a claim whose graph needs r as a number (a loop over r, such as the coefficients
+    e_1, ..., e_2r of a 2r x 2r Lax matrix) but not n, the largest r at which the dimension-free method is
+    tried on the family of sizes (n, r), for every n at once: beyond the symbolic budget, its proof is the
+    exact method's proof at each size of the family (:mod:`stiefelsym.methods.specialise`)."""
     if exact_max_n is None:
         exact_max_n = DIM_EXACT_MAX_N if kind == "dim" else IDENTITY_EXACT_MAX_N
 
@@ -446,7 +458,7 @@ def claim(id: str, *, paper: str | Iterable[str] = (), kind: str, section: str |
                   expect=expect, exact_max_n=exact_max_n, exact_max_r=_pairs(exact_max_r),
                   exact_corank=_pairs(exact_corank, "exact_corank"), source=fn.__module__,
                   fails_at=fails_at, erratum=" ".join(erratum.split()), equivariance=" ".join(equivariance.split()),
-                  reviewed=_ACTIVE[-1].reviewed)
+                  free_max_r=free_max_r, reviewed=_ACTIVE[-1].reviewed)
         _ACTIVE[-1].add(c)
         fn.claim = c
         return fn

@@ -941,6 +941,9 @@ def show(claim_id: str, claims_files: tuple[str, ...]) -> None:
     click.echo(f"exact symbolic method up to n = {c.exact_max_n}"
                + "".join(f"; up to r = {r} at n = {n}" for n, r in c.exact_max_r)
                + "".join(f"; at {'r = n' if k == 0 else f'n - r <= {k}'} at n = {n}" for n, k in c.exact_corank))
+    if c.free_max_r:
+        click.echo(f"dimension-free on each family r = k <= {c.free_max_r} (every n at that r), beyond the symbolic "
+                   "budget")
     if failing:
         click.echo(f"erratum:     fails as printed at {' '.join(failing)}"
                    + (f": {_one_line(c.erratum)}" if c.erratum else ""))

@@ -32,7 +32,7 @@ from stiefelsym.certificate_check import CASES, R1_ONLY, R2_ONLY, SQUARE, Reject
 from stiefelsym.claims import Claim
 from stiefelsym.ir import SizeFamily, compile_claim
 from stiefelsym.methods import fixed_size
-from stiefelsym.methods.dimension_free import run_free, size_families
+from stiefelsym.methods.dimension_free import run_free, run_free_on, size_families
 from stiefelsym.results import Result
 from stiefelsym.scene import REALIZATIONS
 
@@ -71,13 +71,16 @@ def family_at(claim: Claim, n: int, r: int, stated: tuple | None = None) -> tupl
     return False, None
 
 
-def _free_result(claim: Claim, func: Callable, digest: str, families: tuple, seconds: float) -> Result:
+def _free_result(claim: Claim, func: Callable, digest: str, families: tuple, seconds: float,
+                 family: SizeFamily | None = None) -> Result:
     """The dimension-free result of the claim's function, within ``seconds`` (in a forked child, killed after
     them: the attempt never takes the run's budget from the methods that would have decided it); a result is
-    kept while the claim and its graph are unchanged, a stopped attempt while no longer limit is given."""
+    kept while the claim and its graph are unchanged, a stopped attempt while no longer limit is given.
+    ``family``: a family r = k of a claim stated at every r whose graph needs r as a number (proved on that
+    family alone, one of its sizes' families: :func:`per_r_family`); None: the claim's own families."""
     # by the claim's id and what the method reads of it, not by the claim object: a correction's claim is
     # built afresh for each run (its function and statement of sizes are the same objects)
-    key = (claim.id, id(func))
+    key = (claim.id, id(func), family)
     state = _claim_state(claim, families)
     hit = _FREE.get(key)
     if hit is not None and hit[1] is func and hit[2] == state and hit[3] == digest \
@@ -86,8 +89,10 @@ def _free_result(claim: Claim, func: Callable, digest: str, families: tuple, sec
         return hit[4]
     from stiefelsym.run.isolate import ChildError, HardTimeout, run_isolated
     stopped: float | None = None
+    attempt = (lambda: run_free(claim, func)) if family is None else (lambda: run_free_on(claim, func, family,
+                                                                                         alone=False))
     try:
-        res = run_isolated(lambda: run_free(claim, func), seconds, fixed_size._describe)
+        res = run_isolated(attempt, seconds, fixed_size._describe)
     except (HardTimeout, ChildError) as exc:     # ChildDied included: no proof here, the run goes on
         res = fixed_size._base_result(claim, None, None, "free", None)
         res.verdict = "undecided"
@@ -97,6 +102,19 @@ def _free_result(claim: Claim, func: Callable, digest: str, families: tuple, sec
     while len(_FREE) > FREE_CACHE_SIZE:
         _FREE.popitem(last=False)
     return res
+
+
+def per_r_family(claim: Claim, n: int, r: int) -> SizeFamily | None:
+    """The family r = k, every n >= k, on which the dimension-free method is tried at (n, r) for a claim stated
+    at every r whose graph needs r as a number: when r <= the claim's ``free_max_r`` (its declaration of the r
+    at which such a proof is worth an attempt), else None.  What the proof covers is decided by the graph, not
+    by the declaration: the graph the run at (n, r) evaluates must be the graph traced on the family
+    (:func:`specialised` compares their digests), and a question about n it asks is answered on the family only
+    where it has one answer for every n >= k (the family starts at the smallest n of r = k, whatever sizes the
+    claim is stated for: its proof holds at each of them)."""
+    if not 1 <= r <= min(n, claim.free_max_r):
+        return None
+    return SizeFamily(r, r)
 
 
 #: the hypotheses of the free algebra that hold at one r only: name -> whether they hold at (n, r)
@@ -156,15 +174,26 @@ def specialised(claim: Claim, n: int, r: int, seed: int, func: Callable | None =
         return None
     realization = claim.realization
     cons = REALIZATIONS[realization]
+    per_r = None        # a family r = k of a claim stated at every r (its graph needs r as a number)
     try:
         here = compile_claim(func, n, r, (cons.name, cons.build)).digest()
-        proved_graph = compile_claim(func, None, None, (cons.name, cons.build), family=family).digest()
-    except Exception:   # noqa: BLE001 - no graph with symbolic sizes (or none here): nothing to specialise
+    except Exception:   # noqa: BLE001 - no graph at this size: nothing to specialise
         return None
+    try:
+        proved_graph = compile_claim(func, None, None, (cons.name, cons.build), family=family).digest()
+    except Exception:   # noqa: BLE001 - no graph with symbolic sizes: one r = k at a time, where declared
+        per_r = per_r_family(claim, n, r) if family is None else None
+        if per_r is None:
+            return None
+        try:
+            proved_graph = compile_claim(func, None, None, (cons.name, cons.build), family=per_r).digest()
+        except Exception:   # noqa: BLE001 - it needs n as a number as well
+            return None
     if here != proved_graph:
         return None
     seconds = FREE_SECONDS if budget is None else min(FREE_SECONDS, budget / 4)
-    free = _free_result(claim, func, proved_graph, families, seconds)
+    free = _free_result(claim, func, proved_graph, families, seconds, per_r)
+    family = per_r or family
     if free.verdict != "proved" or free.certificate_data is None \
             or scope_problem(free.certificate_data, realization, family, n, r):
         return None
@@ -191,11 +220,16 @@ def specialised(claim: Claim, n: int, r: int, seed: int, func: Callable | None =
         return res
     res.verdict = "proved"
     res.checks = list(free.checks)
+    where = ("its cofactor certificate, in this record, re-expanded by the independent checker" if per_r else
+             "the claim's record with no size, its cofactor certificate re-expanded by the independent checker")
     res.reductions = [
         "the dimension-free proof, specialised: the claim's graph at this size is its graph with symbolic sizes"
         + ("" if family is None else f" on the family {family}")
         + f" (digest {here[:12]}), whose residual rewriting modulo the constraints reduces to 0 {scope} "
-        "(the claim's record with no size, its cofactor certificate re-expanded by the independent checker)"]
+        f"({where})"]
+    if per_r is not None:
+        # the proof is about one r: no record with no size holds it, this one does (bound to its graph)
+        res.certificate_data = free.certificate_data
     res.reductions += [f"dimension-free: {x}" for x in free.reductions]
     res.reductions.append("cross-check at this size: the residual vanishes at the modular method's random points")
     bound = f", false-pass bound {check.false_pass_bound:.1e}" if check.false_pass_bound is not None else ""

@@ -25,20 +25,26 @@ def proof_for_every_size(get: Callable[[str], Any]) -> bool:
 
 
 def certificate_problems(records: Iterable[Any]) -> list[str]:
-    """Every proof for all n, r (:func:`proof_for_every_size`) whose certificate is missing or rejected
-    by the checker."""
+    """Every proof for all n, r (:func:`proof_for_every_size`) whose certificate is missing, and every record
+    whose certificate (a proof for all n, r, or a proof at a size from one on a family r = k, which its record
+    carries) is rejected by the checker or is about another claim or graph than the record's."""
+    from stiefelsym.certificate_check import bound
     out = []
     for r in records:
         get = r.get if isinstance(r, dict) else (lambda k, r=r: getattr(r, k, None))
-        if not proof_for_every_size(get):
-            continue
         data = get("certificate_data")
         if data is None:
-            out.append(f"{get('claim')}: a proof for every n, r without a certificate")
+            if proof_for_every_size(get):
+                out.append(f"{get('claim')}: a proof for every n, r without a certificate")
             continue
         rep = check_certificate(data)
         if not rep.accepted:
             out.append(f"{get('claim')}: certificate rejected by the independent checker: {rep.message}")
+            continue
+        if get("n") is not None and get("verdict") == "proved":
+            why = bound(data, {"claim": get("claim"), "digest": get("digest")}) if isinstance(data, dict) else "malformed"
+            if why:
+                out.append(f"{get('claim')} ({get('n')},{get('r')}): {why}")
     return out
 
 

@@ -204,7 +204,13 @@ def _trace_one(func: Callable, realization: str, key: Any) -> Any:
     cons = REALIZATIONS[realization]
     constraints = (cons.name, cons.build)
     try:
-        g = _compile(func, None, None, constraints) if key is None else _compile(func, key[0], key[1], constraints)
+        if key is None:
+            g = _compile(func, None, None, constraints)
+        elif key[0] == "r":      # the family r = k, every n >= k (a claim's free_max_r)
+            from stiefelsym.ir import SizeFamily
+            g = _compile(func, None, None, constraints, family=SizeFamily(key[1], key[1]))
+        else:
+            g = _compile(func, key[0], key[1], constraints)
     except BaseException as exc:   # noqa: BLE001 - SystemExit, KeyboardInterrupt, anything: recorded
         return _refusal(exc)
     return _graph_state(g) if isinstance(g, Graph) else _refusal(g)
@@ -253,7 +259,10 @@ def _claim_data(c: Claim, needed: Sequence[tuple[int, int]] = ()) -> dict:
                   "condition": spec.condition, "where": spec.where is not None or type(spec) is not SizeSpec or bool(getattr(spec, "r_in", ())),
                   "fields_first": type(spec) is SizeSpec, "admits": admits},
         "fails_at": fails,
-        "keys": [None] + [list(p) for p in traced],
+        "free_max_r": c.free_max_r,
+        # the families r = k <= free_max_r (up to the largest n of the run): a function refused with symbolic sizes
+        # may have a graph there, which the dimension-free method proves (stiefelsym.methods.specialise)
+        "keys": [None] + [["r", k] for k in range(1, min(c.free_max_r, top) + 1)] + [list(p) for p in traced],
         "corrections": [{"description": k.description, "changes": k.changes, "expect": k.expect,
                          "exact_max_r": [list(p) for p in k.exact_max_r],
                          "exact_corank": [list(p) for p in k.exact_corank]} for k in c.corrections],
@@ -342,7 +351,7 @@ def _trace_jobs(c: Claim, meta: dict) -> list:
     from stiefelsym.scene import REALIZATIONS
     if c.realization not in REALIZATIONS:
         return []
-    keys = [None if k is None else tuple(k) for k in meta["keys"]]
+    keys = [None if k is None else tuple(k) for k in meta["keys"]]      # (n, r) or ("r", k)
     funcs = meta.get("funcs", range(1 + len(c.corrections)))
     return [("f", f, k) for f in funcs if type(f) is int and 0 <= f <= len(c.corrections) for k in keys]
 
@@ -663,8 +672,9 @@ class TracedFunction:
                 raise WireError("a graph entry that is not (size, graph)")
             key, data = entry
             if key is not None:
-                if type(key) is not list or len(key) != 2 or not all(type(x) is int for x in key):
-                    raise WireError("a graph's key that is not (n, r)")
+                if type(key) is not list or len(key) != 2 or not (
+                        all(type(x) is int for x in key) or (key[0] == "r" and type(key[1]) is int and key[1] >= 1)):
+                    raise WireError("a graph's key that is not (n, r) or a family (\"r\", k)")
                 key = tuple(key)
             if type(data) is not dict:
                 raise WireError("a graph entry that is not a mapping")
@@ -675,7 +685,7 @@ class TracedFunction:
         self._replay = GraphClaim
 
     def sizes(self) -> list:
-        return sorted(k for k in self._table if k is not None)
+        return sorted(k for k in self._table if k is not None and k[0] != "r")
 
     def __call__(self, s: Any) -> Any:
         from stiefelsym.ir.graph import Size as GSize
@@ -685,6 +695,9 @@ class TracedFunction:
         t = _ACTIVE[-1]
         n, r = t._numbers(GSize(1, "n", None)), t._numbers(GSize(1, "r", None))
         key = None if n is None else (n, r)
+        family = t._family
+        if key is None and family is not None and family.r is not None and ("r", family.r) in self._table:
+            key = ("r", family.r)       # traced on the family r = k (every n >= k: it holds on any later start)
         if t.constraints[0] != self.realization:
             raise NoGraph(f"{self.__name__} was traced in the {self.realization} realization only, "
                           f"not in the {t.constraints[0]} one")
@@ -798,6 +811,7 @@ def _claim(d: Any, path: str, confinement: str = "namespaces") -> Claim:
               realization=realization, expect=_get(d, "expect", str), exact_max_n=_get(d, "exact_max_n", int),
               exact_max_r=_exact_pairs(_get(d, "exact_max_r", list)),
               exact_corank=_exact_pairs(_get(d, "exact_corank", list, optional=True) or []),
+              free_max_r=_get(d, "free_max_r", int, optional=True) or 0,
               corrections=corrections, source=_get(d, "source", str),
               fails_at=None if fails is None else _Lookup("erratum sizes (fails_at)", fails),
               erratum=_get(d, "erratum", str), equivariance=_get(d, "equivariance", str), reviewed=False)
