@@ -772,9 +772,8 @@ def _md_claim(c: ClaimResults) -> list[str]:
     if any(r.derivation and r.verdict == "proved" for r in c.printed):
         out += ["The dimension-free derivation (residual, rules applied, normal form) is in "
                 "`verification-runs.tex`.", ""]
-    out += [_md_escape(line) + "." for line in map(certificate_summary, c.printed) if line]
-    if any(map(certificate_summary, c.printed)):
-        out.append("")
+    summaries = certificate_summaries(c.printed).values()
+    out += [_md_escape(line) + "." for line in summaries] + ([""] if summaries else [])
     notes = c.notes()
     if notes:
         out += ["Notes:", ""]
@@ -1372,13 +1371,27 @@ def certificate_summary(r: Result) -> str:
             f"({', '.join(sm['hypotheses'])}, as results.json names them); {checked}; the terms are in results.json")
 
 
+def certificate_summaries(records: list[Result]) -> dict[str, str]:
+    """{summary: its line} per distinct certificate of the records (:func:`certificate_summary`), in order: the
+    records at sizes that carry one (proofs on a family r = k, one certificate for every n) are named after it."""
+    lines: dict[str, list[str]] = {}
+    for r in records:
+        line = certificate_summary(r)
+        if line:
+            lines.setdefault(line, [])
+            if r.n is not None:
+                lines[line].append(f"({r.n},{r.r})")
+    return {line: line + (f" (the records at {', '.join(sizes)})" if sizes else "") for line, sizes in lines.items()}
+
+
 def _tex_derivations(c: ClaimResults) -> list[str]:
     """The dimension-free proofs: residual, rules applied, normal form, certificate size."""
     out = []
+    grouped = certificate_summaries(c.printed)
     for r in c.printed:
         cert = certificate_summary(r)
-        if cert and not r.derivation:
-            out += [tex_escape(cert + "."), ""]
+        if cert and not r.derivation and cert in grouped:
+            out += [tex_escape(grouped.pop(cert) + "."), ""]      # (once for the records that carry it)
         if not r.derivation or r.verdict != "proved":
             continue
         out.append(r"\subsubsection*{" + tex_escape(f"Dimension-free proof ({r.method})") + "}")

@@ -41,10 +41,21 @@ def certificate_problems(records: Iterable[Any]) -> list[str]:
         if not rep.accepted:
             out.append(f"{get('claim')}: certificate rejected by the independent checker: {rep.message}")
             continue
-        if get("n") is not None and get("verdict") == "proved":
+        n, r = get("n"), get("r")
+        if n is not None and get("verdict") == "proved":
+            # a proof at a size from a proof on a family r = k: about the record's graph, and covering its size
+            # (a graph that uses no number of r has one digest at every r: the certificate's hypotheses of one r
+            # and its cases say which r it covers)
             why = bound(data, {"claim": get("claim"), "digest": get("digest")}) if isinstance(data, dict) else "malformed"
+            if not why and type(n) is int and type(r) is int and 1 <= r <= n:
+                from stiefelsym.ir import SizeFamily
+                from stiefelsym.methods.specialise import scope_problem
+                family = SizeFamily(None, n) if r == n else SizeFamily(r, r)
+                why = scope_problem(data, data.get("realization", "standard"), family, n, r)
+            elif not why:
+                why = f"a size ({n},{r}) that is not one"
             if why:
-                out.append(f"{get('claim')} ({get('n')},{get('r')}): {why}")
+                out.append(f"{get('claim')} ({n},{r}): {why}")
     return out
 
 
