@@ -349,6 +349,8 @@ def expected_verdict(claim: Claim, verdict: str, variant: str | None = None,
 def _symbolic_rows(M: Mat) -> list[list]:
     """The entries of a matrix of the symbolic method as symengine expressions (a scalar the flint
     backend keeps, e.g. an entry of a Jacobian built from traces, is converted)."""
+    if isinstance(M, _ExprRows):
+        return M.rows
     f = M._field
     return [[x if isinstance(x, _se_basic()) else f.normalize(x) for x in row] for row in M._view().tolist()]
 
@@ -365,9 +367,12 @@ def _sympy_rows(M: Mat):
 
 def _function_field_rank(M: Mat) -> int:
     """The rank over the field of rational functions of the chart parameters: fraction-free
-    (Bareiss) elimination over flint's multivariate polynomials when the entries are
-    polynomials, sympy's DomainMatrix otherwise."""
+    (Bareiss) elimination over flint's multivariate polynomials, each row multiplied by the least
+    common multiple of its entries' denominators (a nonzero factor per row leaves the rank as it is)
+    when the entries are rational functions; sympy's DomainMatrix when they are not."""
     polys = _flint_polynomials(M)
+    if polys is None:
+        polys = _flint_rows_cleared(M)
     if polys is not None:
         if all(p.is_constant() for row in polys for p in row):     # a matrix of rational numbers
             return flint.fmpq_mat([[p.leading_coefficient() if p != 0 else 0 for p in row]
@@ -416,6 +421,38 @@ def _flint_polynomials(M: Mat):
         return [[conv(x) for x in row] for row in rows]
     except TypeError:
         return None
+
+
+def _flint_rows_cleared(M: Mat):
+    """The rows of a matrix of rational functions as flint fmpq_mpoly, each multiplied by the least common
+    multiple of its denominators (None if an entry is not a rational function of the chart parameters)."""
+    import symengine as se
+    pairs = [[se.sympify(x).as_numer_denom() for x in row] for row in _symbolic_rows(M)]
+    flat = [se.expand(p) for row in pairs for q in row for p in q]
+    if not flat:
+        return None
+    # one ring for every numerator and denominator: _flint_polynomials reads a matrix of expressions
+    width = 2 * len(pairs[0])
+    polys = _flint_polynomials(_ExprRows([flat[i:i + width] for i in range(0, len(flat), width)]))
+    if polys is None:
+        return None
+    out = []
+    for row in polys:
+        nums, dens = row[0::2], row[1::2]
+        if any(d == 0 for d in dens):
+            return None
+        lcm = dens[0]
+        for d in dens[1:]:
+            lcm = lcm * d / lcm.gcd(d)      # (exact divisions)
+        out.append([a * (lcm / d) for a, d in zip(nums, dens)])
+    return out
+
+
+class _ExprRows:
+    """Rows of symengine expressions, read as a matrix by :func:`_symbolic_rows`."""
+
+    def __init__(self, rows: list) -> None:
+        self.rows = rows
 
 
 def _bareiss_rank(P) -> int:
