@@ -156,7 +156,7 @@ def bad_key(s):
 def test_a_randomized_exact_rank_records_its_seed(tmp_path):
     """A rank the exact method bounds at random points (checked) was drawn from the seed: its
     record carries the seed, so the rerun line and `stiefelsym check` draw the same points."""
-    code, out = _verify("u-ddim-invariants", "--size", "3,2", "--method", "exact", "--seed", "5", report=tmp_path)
+    code, out = _verify("u-ddim-invariants", "--size", "5,2", "--method", "exact", "--seed", "5", report=tmp_path)
     rec = out["results"][0]
     assert rec["verdict"] == "checked" and rec["seed"] == 5 and "--seed 5" in rec["rerun"]
     env = dict(os.environ, PYTHONPATH=str(ROOT))

@@ -30,6 +30,9 @@ class SizeFamily:
 
     r: int | None
     n_min: int
+    #: one r of a claim stated at every r (``free_max_r``: a proof on it is used at a size whose graph is the
+    #: family's, :mod:`stiefelsym.methods.specialise`), not a family the claim's statement declares
+    one_of_every_r: bool = False
 
     def __post_init__(self) -> None:
         if self.r is not None and (type(self.r) is not int or self.r < 1):

@@ -114,7 +114,7 @@ def per_r_family(claim: Claim, n: int, r: int) -> SizeFamily | None:
     claim is stated for: its proof holds at each of them)."""
     if not 1 <= r <= min(n, claim.free_max_r):
         return None
-    return SizeFamily(r, r)
+    return SizeFamily(r, r, one_of_every_r=True)
 
 
 #: the hypotheses of the free algebra that hold at one r only: name -> whether they hold at (n, r)

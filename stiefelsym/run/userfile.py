@@ -208,7 +208,7 @@ def _trace_one(func: Callable, realization: str, key: Any) -> Any:
             g = _compile(func, None, None, constraints)
         elif key[0] == "r":      # the family r = k, every n >= k (a claim's free_max_r)
             from stiefelsym.ir import SizeFamily
-            g = _compile(func, None, None, constraints, family=SizeFamily(key[1], key[1]))
+            g = _compile(func, None, None, constraints, family=SizeFamily(key[1], key[1], one_of_every_r=True))
         else:
             g = _compile(func, key[0], key[1], constraints)
     except BaseException as exc:   # noqa: BLE001 - SystemExit, KeyboardInterrupt, anything: recorded
@@ -683,8 +683,6 @@ class TracedFunction:
             else:
                 self._table[key] = _Recorded(data) if "error" in data else data   # a graph: decoded when asked
         self._replay = GraphClaim
-        #: whether its graphs on the families r = k (a claim stated at every r, free_max_r) are given out
-        self.per_r = False
 
     def sizes(self) -> list:
         return sorted(k for k in self._table if k is not None and k[0] != "r")
@@ -698,7 +696,7 @@ class TracedFunction:
         n, r = t._numbers(GSize(1, "n", None)), t._numbers(GSize(1, "r", None))
         key = None if n is None else (n, r)
         family = t._family
-        if key is None and family is not None and family.r is not None and self.per_r and ("r", family.r) in self._table:
+        if key is None and family is not None and family.one_of_every_r and ("r", family.r) in self._table:
             # traced on the family r = k (every n >= k: it holds on any later start) of a claim stated at every r,
             # for a proof at a size only (:func:`stiefelsym.methods.specialise.specialised` compares it with the
             # graph at that size); a claim stated at r = k alone is proved on its family for every n, with the
@@ -821,11 +819,6 @@ def _claim(d: Any, path: str, confinement: str = "namespaces") -> Claim:
               corrections=corrections, source=_get(d, "source", str),
               fails_at=None if fails is None else _Lookup("erratum sizes (fails_at)", fails),
               erratum=_get(d, "erratum", str), equivariance=_get(d, "equivariance", str), reviewed=False)
-    if c.free_max_r:        # (the graphs on the families r = k serve a claim stated at every r only)
-        from stiefelsym.methods.dimension_free import size_families
-        stated_at_every_r = size_families(c)[0] == [None]
-        for f in [c.func] + [k.func for k in corrections]:
-            f.per_r = stated_at_every_r
     for k in range(len(corrections)):
         try:
             c.corrected(k)               # a correction's symbolic budget is validated as the claim's
