@@ -63,3 +63,31 @@ def _engine_unsealed_after_each_test():
     seal._STATE.update(modules=None, print=None)
     mat.VALUE_MEMO = 1
     mat.forget_values()
+
+
+#: tests of 4 to 10 s each that the default run leaves to `make verify-all` (pytest -m slow), so that it stays
+#: well under 10 minutes on 2 cores: each repeats at a larger size, with more methods or through more processes
+#: what faster tests of the default run check (the n = 7 exact ranks, the corrupted kernels at (3,2) whose
+#: function-field rank runs to its 5 s budget, the erratum search of the whole catalog, the pool's order)
+SLOW_TESTS = (
+    "tests/test_exact_dimensions_n7.py::",
+    "tests/test_rank_kernels_sec6.py::test_a_corrupted_a2_kernel_is_not_the_route",
+    "tests/test_user_claims.py::test_verdicts_at_small_sizes",
+    "tests/test_mutate.py::test_search_corrections_finds_the_catalogs_registered_erratum_fix",
+    "tests/test_process.py::test_parallel_workers_give_the_same_results_in_the_same_order",
+    "tests/test_process.py::test_every_method_runs_in_a_budgeted_worker",
+    "tests/test_speed.py::test_cost_model_refit_from_its_records_is_byte_for_byte",
+    "tests/test_fresh.py::test_graph_mutants_of_a_claim_with_fresh_elements",
+    "tests/test_mutate_loan.py::test_the_workers_and_their_order_do_not_matter",
+    "tests/test_certificates.py::test_coefficients_parse_in_sympy_with_one_name_per_symbol",
+    "tests/test_discover.py::test_correct_through_the_command_line_and_the_report_is_reproducible",
+    "tests/test_distributed.py::test_no_worker_left_is_a_clear_error",
+    "tests/test_trace_product.py::test_a_fused_trace_equals_the_sum_of_the_product_s_diagonal[4-2]",
+)
+
+
+@pytest.hookimpl(tryfirst=True)
+def pytest_collection_modifyitems(config, items):
+    for item in items:
+        if item.nodeid.startswith(SLOW_TESTS):
+            item.add_marker(pytest.mark.slow)
