@@ -31,6 +31,16 @@ def run(tmp_path):
 
 
 @pytest.fixture
+def fresh_specialise():
+    """No dimension-free result of this process kept from before the test, none kept after it
+    (stiefelsym.methods.specialise)."""
+    from stiefelsym.methods import specialise
+    specialise.reset()
+    yield
+    specialise.reset()
+
+
+@pytest.fixture
 def fresh_programs(monkeypatch):
     """The exact method with no straight-line program or plan made before the test and none kept after
     it; programs are compiled on a graph's second evaluation, and plans are made (the package default)."""

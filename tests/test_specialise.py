@@ -41,11 +41,8 @@ def dual_gram_dropped(s):
     return {"XtP": s.X.T @ s.P}
 
 
-@pytest.fixture(autouse=True)
-def _fresh():
-    specialise.reset()
-    yield
-    specialise.reset()
+#: the dimension-free results of the process forgotten before and after each test
+pytestmark = pytest.mark.usefixtures("fresh_specialise")
 
 
 @pytest.mark.parametrize("method", ["exact", "auto"])

@@ -14,7 +14,6 @@ import pytest
 from stiefelsym import admissible, elementary
 from stiefelsym.certificate_check import bound, check_certificate
 from stiefelsym.claims import Claim, Size, load_catalog
-from stiefelsym.methods import specialise
 from stiefelsym.run.runner import run_one
 
 SPECIALISED = "the dimension-free proof, specialised"
@@ -52,11 +51,8 @@ def gram_and_n(s):
             "n - n": acc - s.q(s.n)}
 
 
-@pytest.fixture(autouse=True)
-def _fresh():
-    specialise.reset()
-    yield
-    specialise.reset()
+#: the dimension-free results of the process forgotten before and after each test
+pytestmark = pytest.mark.usefixtures("fresh_specialise")
 
 
 @pytest.mark.parametrize("method", ["exact", "auto"])

@@ -349,8 +349,6 @@ def expected_verdict(claim: Claim, verdict: str, variant: str | None = None,
 def _symbolic_rows(M: Mat) -> list[list]:
     """The entries of a matrix of the symbolic method as symengine expressions (a scalar the flint
     backend keeps, e.g. an entry of a Jacobian built from traces, is converted)."""
-    if isinstance(M, _ExprRows):
-        return M.rows
     f = M._field
     return [[x if isinstance(x, _se_basic()) else f.normalize(x) for x in row] for row in M._view().tolist()]
 
@@ -370,9 +368,10 @@ def _function_field_rank(M: Mat) -> int:
     (Bareiss) elimination over flint's multivariate polynomials, each row multiplied by the least
     common multiple of its entries' denominators (a nonzero factor per row leaves the rank as it is)
     when the entries are rational functions; sympy's DomainMatrix when they are not."""
-    polys = _flint_polynomials(M)
+    rows = _symbolic_rows(M)
+    polys = _flint_rows(rows)
     if polys is None:
-        polys = _flint_rows_cleared(M)
+        polys = _flint_rows_cleared(rows)
     if polys is not None:
         if all(p.is_constant() for row in polys for p in row):     # a matrix of rational numbers
             return flint.fmpq_mat([[p.leading_coefficient() if p != 0 else 0 for p in row]
@@ -384,8 +383,13 @@ def _function_field_rank(M: Mat) -> int:
 
 def _flint_polynomials(M: Mat):
     """The entries as flint fmpq_mpoly (None if an entry is not a polynomial)."""
+    return _flint_rows(_symbolic_rows(M))
+
+
+def _flint_rows(rows: list):
+    """Rows of symengine expressions as flint fmpq_mpoly in one ring (None if one is not a polynomial)."""
     import symengine as se
-    rows = [[se.expand(se.sympify(x)) for x in row] for row in _symbolic_rows(M)]
+    rows = [[se.expand(se.sympify(x)) for x in row] for row in rows]
     syms = sorted({y for row in rows for x in row for y in x.free_symbols}, key=str)
     ctx = flint.fmpq_mpoly_ctx.get(tuple(f"v{i}" for i in range(max(1, len(syms)))), "degrevlex")
     gens = ctx.gens()
@@ -423,17 +427,15 @@ def _flint_polynomials(M: Mat):
         return None
 
 
-def _flint_rows_cleared(M: Mat):
-    """The rows of a matrix of rational functions as flint fmpq_mpoly, each multiplied by the least common
-    multiple of its denominators (None if an entry is not a rational function of the chart parameters)."""
+def _flint_rows_cleared(entries: list):
+    """Rows of rational functions (symengine expressions) as flint fmpq_mpoly, each multiplied by the least
+    common multiple of its denominators (None if an entry is not a rational function of the chart parameters)."""
     import symengine as se
-    pairs = [[se.sympify(x).as_numer_denom() for x in row] for row in _symbolic_rows(M)]
-    flat = [se.expand(p) for row in pairs for q in row for p in q]
-    if not flat:
+    # each row's numerators and denominators side by side, all in one ring
+    rows = [[p for x in row for p in se.sympify(x).as_numer_denom()] for row in entries]
+    if not rows or not rows[0]:
         return None
-    # one ring for every numerator and denominator: _flint_polynomials reads a matrix of expressions
-    width = 2 * len(pairs[0])
-    polys = _flint_polynomials(_ExprRows([flat[i:i + width] for i in range(0, len(flat), width)]))
+    polys = _flint_rows(rows)
     if polys is None:
         return None
     out = []
@@ -446,13 +448,6 @@ def _flint_rows_cleared(M: Mat):
             lcm = lcm * d / lcm.gcd(d)      # (exact divisions)
         out.append([a * (lcm / d) for a, d in zip(nums, dens)])
     return out
-
-
-class _ExprRows:
-    """Rows of symengine expressions, read as a matrix by :func:`_symbolic_rows`."""
-
-    def __init__(self, rows: list) -> None:
-        self.rows = rows
 
 
 def _bareiss_rank(P) -> int:

@@ -20,7 +20,6 @@ import pytest
 
 from stiefelsym import admissible, elementary
 from stiefelsym.claims import Claim, Size
-from stiefelsym.methods import specialise
 from stiefelsym.run.runner import run_one
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -49,12 +48,9 @@ def _cli(*args, cwd=ROOT):
 
 
 @pytest.fixture(autouse=True)
-def _fresh():
-    specialise.reset()
+def _fresh(fresh_specialise):
     _SAVED.clear()
     _CALLS.clear()
-    yield
-    specialise.reset()
 
 
 # --------------------------------------------------------------------------- claims
