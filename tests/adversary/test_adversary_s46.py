@@ -346,3 +346,30 @@ def test_a_claims_file_family_graph_from_the_r_key_proves_no_false_statement(tmp
     assert failing, out.stdout + out.stderr
     assert not any(x["verdict"] == "proved" for x in free), \
         f"proved for every n at r = 2, and fails at {failing}: {free[0]['certificate'][:120]}"
+
+
+def catch_the_refusal(s):
+    """XᵀX = I_r on the family (int(s.n) refused there, the refusal caught), XᵀX + PᵀP = I_r at a size n > 5
+    (false there), with a loop over r (so that only a family r = k can trace it)."""
+    res = s.X.T @ s.X - s.Ir
+    try:
+        big = int(s.n) > 5
+    except Exception:   # noqa: BLE001 - the trick: the family trace's refusal, caught
+        big = False
+    if big:
+        res = res + s.P.T @ s.P
+    for _ in range(s.r):
+        res = res + s.zeros(s.r, s.r, ("r", "r"))
+    return {"x": res}
+
+
+def test_a_refusal_caught_on_the_family_gives_no_proof():
+    """The claim catches the refusal of n's number on the family trace and gives a true graph there.  A refusal is
+    recorded before it is raised, so the family trace is refused whatever the claim did with it: no proof on the
+    family, and the runs beyond n = 5 fail under every method."""
+    c = _claim(catch_the_refusal)
+    for n, r in ((6, 2), (7, 3)):
+        for method in ("auto", "exact", "modular"):
+            res = run_one(c, Size(n, r), method, 0)
+            assert res.verdict == "fails" and not _specialised(res), (n, r, method, res.verdict)
+    assert not _specialised(run_one(c, Size(4, 2), "auto", 0))
