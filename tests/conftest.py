@@ -93,6 +93,10 @@ SLOW_TESTS = (
     "tests/test_discover.py::test_correct_through_the_command_line_and_the_report_is_reproducible",
     "tests/test_distributed.py::test_no_worker_left_is_a_clear_error",
     "tests/test_trace_product.py::test_a_fused_trace_equals_the_sum_of_the_product_s_diagonal[4-2]",
+    "tests/test_process.py::test_cli_prints_reasons_rerun_and_the_legend",
+    "tests/test_process.py::test_tricks_each_get_their_verdict_and_the_run_goes_on",
+    "tests/test_mutate_exact_loan.py::",
+    "tests/test_app2.py::test_corrupted_claim_fails[coupled-corrected-flow-invariants",
 )
 
 
