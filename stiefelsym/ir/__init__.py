@@ -9,7 +9,8 @@ from __future__ import annotations
 
 import threading
 from collections import OrderedDict
-from typing import Any, Callable
+from contextlib import contextmanager
+from typing import Any, Callable, Iterator
 
 from stiefelsym.ir.families import SizeFamily
 from stiefelsym.ir.graph import Graph, Named, Ref, Size
@@ -18,7 +19,7 @@ from stiefelsym.ir.trace import Dim, TraceRefused, Tracer, TraceScene, block, is
 
 __all__ = ["Graph", "Named", "Ref", "Size", "SizeFamily", "Count", "Inverse", "Rank", "RightInverse", "Dim", "TraceRefused", "Tracer", "TraceScene",
            "block", "is_tracer", "named", "primitive", "trace", "compile_claim", "first_trace", "graph_pair",
-           "NotDeterministic"]
+           "NotDeterministic", "stated_families"]
 
 
 class NotDeterministic(ValueError):
@@ -46,6 +47,37 @@ def first_trace(func: Callable, n: int | None, r: int | None, constraints: tuple
     _FIRST[(id(func), n, r, constraints[0])] = (func, g)
     while len(_FIRST) > FIRST_CACHE_SIZE:
         _FIRST.popitem(last=False)
+
+
+#: the families of sizes a claim is stated on, declared for its functions while the engine runs the claim
+#: (:func:`stated_families`): id(function) -> (function, families)
+_STATED: dict[int, tuple[Callable, tuple[SizeFamily, ...]]] = {}
+
+
+@contextmanager
+def stated_families(func: Callable, families: Any) -> Iterator[None]:
+    """While the engine runs a claim stated on families of sizes (r = 1, r = 2, r = n, for every n), the
+    graph of ``func`` at a size of one of them is its graph on that family (:func:`_compile`), as the graph
+    with symbolic sizes is the graph at every size of a claim that has one.  ``families`` is what the
+    engine read from the claim's statement (None, the whole of n >= r >= 1, is left out)."""
+    key, old = id(func), _STATED.get(id(func))
+    _STATED[key] = (func, tuple(f for f in families or () if isinstance(f, SizeFamily)))
+    try:
+        yield
+    finally:
+        if old is None:
+            _STATED.pop(key, None)
+        else:
+            _STATED[key] = old
+
+
+def _family_at(func: Callable, n: int, r: int) -> SizeFamily | None:
+    """The family of sizes, stated for ``func``'s claim, that (n, r) belongs to (r = n first: a size in two
+    families belongs to r = n, as in the dimension-free method's union), or None."""
+    hit = _STATED.get(id(func))
+    if hit is None or hit[0] is not func:
+        return None
+    return next((f for f in sorted(hit[1], key=lambda f: f.r is not None) if f.holds(n, r)), None)
 
 
 def compile_claim(func: Callable, n: int | None, r: int | None, constraints: tuple[str, Callable],
@@ -95,6 +127,14 @@ def _compile(func: Callable, n: int | None, r: int | None, constraints: tuple[st
         free = _compile(func, None, None, constraints)
         if isinstance(free, Graph):
             return _typed_at(func, free, n, r, constraints)
+        # a claim stated on a family of sizes that traces on it: that graph is its graph at each of its sizes
+        # (the claim's code runs at the numbers of a size only to be compared with it: the dimension-free
+        # method's proof on the family is about the graph every method evaluates at every size of it)
+        fam = _family_at(func, n, r) if r is not None else None
+        if fam is not None:
+            on_family = _compile(func, None, None, constraints, family=fam)
+            if isinstance(on_family, Graph):
+                return _typed_at(func, on_family, n, r, constraints, fam)
     # by identity: a callable's own __eq__ is never asked; a graph traced once is kept apart from one
     # traced twice (a trace compared with itself is no determinism check)
     key = (id(func), n, r, family, constraints[0], twice)
@@ -122,13 +162,14 @@ def _compile(func: Callable, n: int | None, r: int | None, constraints: tuple[st
     return _remember(key, func, out)
 
 
-def _typed_at(func: Callable, free: Graph, n: int, r: int, constraints: tuple[str, Callable]) -> Any:
-    """The graph of symbolic sizes ``free`` as the claim's graph at (n, r), once it types there, or the
-    refusal.  A size the claim wrote as an int (s.zeros(3, 2)) cannot be told from n, r with symbolic
+def _typed_at(func: Callable, free: Graph, n: int, r: int, constraints: tuple[str, Callable],
+              family: SizeFamily | None = None) -> Any:
+    """The graph of symbolic sizes ``free`` (or on the family of sizes ``family``) as the claim's graph at
+    (n, r), once it types there, or the refusal.  A size the claim wrote as an int (s.zeros(3, 2)) cannot be told from n, r with symbolic
     sizes; at (n, r) the graph is replayed by the tracer (:class:`.replay.GraphClaim`: engine code, no code
     of the claim runs, no trace of the claim holds a number), which checks every shape with the numbers."""
     from stiefelsym.ir.replay import GraphClaim
-    key = (id(func), n, r, constraints[0], "typed")
+    key = (id(func), n, r, constraints[0], "typed", family)
     hit = _GRAPHS.get(key)
     if hit is not None and hit[0] is func:
         _GRAPHS.move_to_end(key)
@@ -138,15 +179,19 @@ def _typed_at(func: Callable, free: Graph, n: int, r: int, constraints: tuple[st
             g = _clean(trace, GraphClaim(free, name=getattr(func, "__name__", "claim")), n, r, constraints)
             _check_refusals(g)
         except TraceRefused as exc:
-            raise TraceRefused(f"the claim's graph with symbolic sizes does not type at ({n},{r}): "
+            raise TraceRefused(f"the claim's graph {_traced(family)} does not type at ({n},{r}): "
                                f"{str(exc).removeprefix('refused: ')}") from None
         if g.digest() != free.digest():
-            raise NotDeterministic(f"the claim's graph with symbolic sizes replays to another graph at ({n},{r})")
+            raise NotDeterministic(f"the claim's graph {_traced(family)} replays to another graph at ({n},{r})")
         out: Any = free
     except Exception as exc:      # noqa: BLE001 - reported by the caller
         exc._first_traceback = exc.__traceback__      # type: ignore[attr-defined]
         out = exc
     return _remember(key, func, out)
+
+
+def _traced(family: SizeFamily | None) -> str:
+    return "with symbolic sizes" if family is None else f"on its sizes {family}"
 
 
 def _remember(key: tuple, func: Callable, out: Any) -> Any:

@@ -322,6 +322,28 @@ def size_families(claim: Claim) -> tuple[list[SizeFamily | None], str]:
     return out, ""
 
 
+#: the families of each claim stated on families (by identity; the claim is kept), the last ones asked for
+_STATED: dict[int, tuple[Claim, list[SizeFamily]]] = {}
+
+
+def stated_on(claim: Claim, func: Callable | None = None) -> Any:
+    """The context in which the engine runs ``claim`` (with ``func``, its function or a correction): at a
+    size of a family the claim is stated on, the function's graph is its graph on that family
+    (:func:`stiefelsym.ir.stated_families`), so the proof on the family is about the graph every method
+    evaluates at every size of it, not only at the sizes the claim lists."""
+    from stiefelsym.ir import stated_families
+    hit = _STATED.get(id(claim))
+    if hit is None or hit[0] is not claim:
+        try:
+            families = [f for f in size_families(claim)[0] if f is not None]
+        except Exception:   # noqa: BLE001 - the statement's admits() raised: no family (the run says why)
+            families = []
+        _STATED[id(claim)] = hit = (claim, families)
+        while len(_STATED) > 256:
+            _STATED.pop(next(iter(_STATED)))
+    return stated_families(func or claim.func, hit[1])
+
+
 def family_sizes(claim: Claim, family: SizeFamily | None) -> list[Size]:
     """The sizes the claim lists in the family (all of them for None), or the family's smallest size."""
     if family is None:

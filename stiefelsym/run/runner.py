@@ -122,6 +122,14 @@ def _guarded(claim: Claim, size: Size | None, method: str, seed: int, func: Call
 
     In a worker, MemoryError is left to the pool (which reports the memory budget and
     replaces the worker)."""
+    from stiefelsym.methods.dimension_free import stated_on
+    with stated_on(claim, func):
+        return _guarded_on(claim, size, method, seed, func, hard, in_worker, timeout)
+
+
+def _guarded_on(claim: Claim, size: Size | None, method: str, seed: int, func: Callable | None,
+                hard: str | None, in_worker: bool, timeout: float | None) -> Result:
+    """:func:`_guarded`, with the claim's families of sizes stated."""
     options = {"hard": hard_case(hard)} if hard else None
     try:
         # the claim is traced before any method builds its scene or runs (the graph is cached for the
@@ -174,6 +182,12 @@ def shared_size(claim: Claim, size: Size | None, func: Callable | None = None, s
     record by the graphs at (n, r) and (n, r0)."""
     if size is None or claim.realization != "standard":
         return None
+    from stiefelsym.methods.dimension_free import stated_on
+    with stated_on(claim, func):
+        return _shared_size(claim, size, func, screen)
+
+
+def _shared_size(claim: Claim, size: Size, func: Callable | None, screen: bool) -> Size | None:
     from stiefelsym.ir import compile_claim
     from stiefelsym.ir.passes import r_dependence
     from stiefelsym.scene import REALIZATIONS
@@ -263,11 +277,13 @@ def graph_digest(claim: Claim, size: Size | None, func: Callable | None = None) 
     families of sizes (r = 1 and r = n, ...) that traces on each family but not on every size has the
     digest of its graphs on its families (those the dimension-free method proves it on)."""
     from stiefelsym.ir import compile_claim
+    from stiefelsym.methods.dimension_free import stated_on
     from stiefelsym.scene import REALIZATIONS
     cons = REALIZATIONS[claim.realization]
     try:
-        return compile_claim(func or claim.func, size.n if size else None, size.r if size else None,
-                             (cons.name, cons.build)).digest()
+        with stated_on(claim, func):
+            return compile_claim(func or claim.func, size.n if size else None, size.r if size else None,
+                                 (cons.name, cons.build)).digest()
     except Exception:   # noqa: BLE001 - the run's verdict already says why the claim does not trace
         if size is not None:
             return ""

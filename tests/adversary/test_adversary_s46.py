@@ -297,20 +297,27 @@ def family_introspection(s):
     return {"x": res}
 
 
-@pytest.mark.xfail(strict=True, reason="open: a claim stated at one r that inspects the engine's trace (a private "
-                   "attribute) gives another graph on its family than at the sizes beyond those it lists; the fix is "
-                   "to replay the family's graph at its sizes, as the graph with symbolic sizes is replayed")
-def test_a_claim_stated_at_r2_that_detects_its_family_is_not_proved_for_every_n():
-    """OPEN, older than free_max_r (the family machinery that the new path builds on; free_max_r plays no part here).  The claim is
-    stated at r = 2 for every n (admissible: no largest n); its graph at a size is traced at the numbers
-    (it reads n), its graph on the family by the same code, which sees it is on the family and asks nothing
-    of n.  The family graph is compared with the graphs at the sizes the claim lists (n <= 5) only.  Right:
-    the dimension-free record is not "proved" (for every n at r = 2) while the statement fails at (9, 2)."""
+def test_a_claim_stated_at_r2_that_detects_its_family_gets_its_family_graph_at_every_size():
+    """Closed (it was open since before free_max_r).  The claim is stated at r = 2 for every n (admissible: no
+    largest n).  Traced at the numbers of a size it reads n; on its family it sees, by introspection of a private
+    attribute, that it is on the family and asks nothing of n.  Its graph on the family was compared with its
+    graphs at the sizes it lists (n <= 5) only, while the fixed-size methods traced it at (9, 2) at the numbers:
+    "proved for every n at r = 2" by the dimension-free method, and "fails" at (9, 2).  Now the graph on the
+    family is the claim's graph at every size of it (replayed there by the tracer, as the graph with symbolic
+    sizes is), so the claim's code never runs at (9, 2) and every verdict is about the one graph that was
+    proved."""
+    from stiefelsym.ir import compile_at_size
+    from stiefelsym.scene import REALIZATIONS
     c = _claim(family_introspection, free_max_r=0, sizes=admissible(5, r_min=2, r_max=2))
-    at9 = run_one(c, Size(9, 2), "modular", 0)
-    assert at9.verdict == "fails"
+    cons = REALIZATIONS["standard"]
+    at_numbers = compile_at_size(family_introspection, 9, 2, (cons.name, cons.build), twice=False)
     free = run_one(c, None, "free", 0)
-    assert free.verdict != "proved", free.certificate
+    assert free.verdict == "proved", free.message
+    at5 = run_one(c, Size(5, 2), "modular", 0)
+    for method in ("modular", "exact", "auto"):
+        at9 = run_one(c, Size(9, 2), method, 0)
+        assert at9.verdict in ("proved", "checked"), (method, at9.verdict, at9.message)
+        assert at9.digest == at5.digest != at_numbers.digest()     # the trick is there, and is not traced
 
 
 FAMILY_FILE = '''
