@@ -320,6 +320,24 @@ def test_a_claim_stated_at_r2_that_detects_its_family_gets_its_family_graph_at_e
         assert at9.digest == at5.digest != at_numbers.digest()     # the trick is there, and is not traced
 
 
+def square_introspection(s):
+    """XᵀX = I at r = n, plus PᵀP where n > 4 (false there); on the family (introspection) it asks nothing of n."""
+    res = s.X.T @ s.X - s.Ir
+    if not _on_family(s) and int(s.n) > 4:
+        res = res + s.P.T @ s.P
+    return {"x": res}
+
+
+def test_the_family_r_equals_n_is_replayed_at_its_sizes_too():
+    """The same trick on the family r = n (stated at r = n, listed up to n = 4): the free proof for every n and
+    the run at (6, 6) are about the one graph traced on the family."""
+    c = _claim(square_introspection, free_max_r=0, sizes=admissible(4, r_is_n=True))
+    free = run_one(c, None, "free", 0)
+    at6 = run_one(c, Size(6, 6), "modular", 0)
+    assert (free.verdict, at6.verdict) == ("proved", "checked"), (free.message, at6.message)
+    assert at6.digest == run_one(c, Size(3, 3), "modular", 0).digest
+
+
 FAMILY_FILE = '''
 from stiefelsym import admissible, claim
 
