@@ -103,6 +103,8 @@ def _fingerprint(modules: list[str]) -> str:
             if not (isinstance(v, _WATCHED) or (isinstance(v, _CONSTANTS) and type(v) is not bool
                                                 and not attr.startswith("_"))):
                 continue            # caches, flags and other state the engine changes as it runs
+            if isinstance(v, types.ModuleType) and v.__name__ == f"{name}.{attr}" and _excluded(v.__name__):
+                continue            # a submodule no verdict depends on, imported later under its own name
             h.update(f"{name}.{attr}={id(v)}:{code_of(v)}\n".encode())
             if isinstance(v, type) and getattr(v, "__module__", None) == name:
                 for k, w in list(vars(v).items()):
