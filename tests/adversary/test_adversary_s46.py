@@ -289,12 +289,19 @@ def test_check_refuses_a_proof_moved_from_r2_to_r3(e2_run):
 # --------------------------------------------------------------------------- proofs for every n on a family
 
 
-def family_introspection(s):
-    """XᵀX = I_r, plus PᵀP where n > 7 (false there); on the family (introspection) it asks nothing of n."""
-    res = s.X.T @ s.X - s.Ir
-    if not _on_family(s) and int(s.n) > 7:
-        res = res + s.P.T @ s.P
-    return {"x": res}
+def _introspecting(beyond, name):
+    """XᵀX = I_r, plus PᵀP where n > ``beyond`` (false there); on the family (introspection) it asks nothing of n."""
+    def f(s):
+        res = s.X.T @ s.X - s.Ir
+        if not _on_family(s) and int(s.n) > beyond:
+            res = res + s.P.T @ s.P
+        return {"x": res}
+    f.__name__ = f.__qualname__ = name
+    return f
+
+
+family_introspection = _introspecting(7, "family_introspection")
+square_introspection = _introspecting(4, "square_introspection")
 
 
 def test_a_claim_stated_at_r2_that_detects_its_family_gets_its_family_graph_at_every_size():
@@ -318,14 +325,6 @@ def test_a_claim_stated_at_r2_that_detects_its_family_gets_its_family_graph_at_e
         at9 = run_one(c, Size(9, 2), method, 0)
         assert at9.verdict in ("proved", "checked"), (method, at9.verdict, at9.message)
         assert at9.digest == at5.digest != at_numbers.digest()     # the trick is there, and is not traced
-
-
-def square_introspection(s):
-    """XᵀX = I at r = n, plus PᵀP where n > 4 (false there); on the family (introspection) it asks nothing of n."""
-    res = s.X.T @ s.X - s.Ir
-    if not _on_family(s) and int(s.n) > 4:
-        res = res + s.P.T @ s.P
-    return {"x": res}
 
 
 def test_the_family_r_equals_n_is_replayed_at_its_sizes_too():
