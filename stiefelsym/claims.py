@@ -159,6 +159,17 @@ class SizeSpec:
         return len(self.sizes)
 
 
+def statement_state(claim: "Claim") -> tuple:
+    """What a claim states, by identity: its fields, the fields of its statement of sizes and its corrections.  A
+    claim whose own code changes it while it runs (``object.__setattr__`` on the frozen claim or its frozen
+    statement of sizes) is seen by a comparison before and after (:func:`stiefelsym.run.runner._guarded`)."""
+    spec = claim.sizes
+    fields = getattr(spec, "__dict__", None)
+    return (tuple((k, id(v)) for k, v in vars(claim).items()),
+            tuple((k, id(v)) for k, v in fields.items()) if isinstance(fields, dict) else (id(spec),),
+            tuple(id(c) for c in claim.corrections))
+
+
 def admissible(n_max: int = 5, *, n_min: int = 1, r_min: int = 1, r_max: int | None = None,
                where: Callable[[int, int], bool] | None = None, condition: str = "",
                stated_n_max: int | None = None, r_is_n: bool = False, r_in: tuple = ()) -> SizeSpec:

@@ -134,7 +134,8 @@ def _compile(func: Callable, n: int | None, r: int | None, constraints: tuple[st
         if fam is not None:
             on_family = _compile(func, None, None, constraints, family=fam)
             if isinstance(on_family, Graph):
-                return _typed_at(func, on_family, n, r, constraints, fam)
+                return _same_at_numbers(func, _typed_at(func, on_family, n, r, constraints, fam), n, r, constraints,
+                                        fam)
     # by identity: a callable's own __eq__ is never asked; a graph traced once is kept apart from one
     # traced twice (a trace compared with itself is no determinism check)
     key = (id(func), n, r, family, constraints[0], twice)
@@ -187,6 +188,31 @@ def _typed_at(func: Callable, free: Graph, n: int, r: int, constraints: tuple[st
     except Exception as exc:      # noqa: BLE001 - reported by the caller
         exc._first_traceback = exc.__traceback__      # type: ignore[attr-defined]
         out = exc
+    return _remember(key, func, out)
+
+
+def _same_at_numbers(func: Callable, typed: Any, n: int, r: int, constraints: tuple[str, Callable],
+                     family: SizeFamily) -> Any:
+    """The family's graph replayed at (n, r) (``typed``), once the claim traced at the numbers of (n, r) gives the
+    same graph; otherwise the refusal.  A claim whose graph on its family is another computation than its
+    graph at a size (it tells the two tracings apart, by introspection) has no verdict at that size, listed or
+    not: the dimension-free method's proof on the family is about its graph on the family."""
+    if not isinstance(typed, Graph):
+        return typed
+    key = (id(func), n, r, constraints[0], "compared", family)
+    hit = _GRAPHS.get(key)
+    if hit is not None and hit[0] is func:
+        _GRAPHS.move_to_end(key)
+        return hit[1]
+    at = _compile(func, n, r, constraints, twice=False, at_numbers=True)
+    out: Any = typed
+    if not isinstance(at, Graph):
+        out = NotDeterministic(f"the claim traces on its sizes {family} but not at ({n},{r}) itself: "
+                               f"{type(at).__name__}: {at}")
+    elif at.digest() != typed.digest():
+        out = NotDeterministic(f"the claim's graph on its sizes {family} differs from its graph traced at ({n},{r}) "
+                               f"(digest {typed.digest()[:12]} against {at.digest()[:12]}): it tells the two "
+                               "tracings apart, and no verdict is given at this size")
     return _remember(key, func, out)
 
 

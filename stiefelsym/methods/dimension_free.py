@@ -278,7 +278,32 @@ def declared_by_fields(spec: Any) -> bool:
 R_CHECK_N = 16
 
 
+#: the families of sizes of each claim, read once per claim and statement (by identity; the claim is kept): every
+#: reader in a process (the runs' :func:`stated_on`, the dimension-free method, the specialised proofs) gets one
+#: answer, the exception of a statement whose admits() raised included
+_FAMILIES: dict[int, tuple] = {}
+
+
 def size_families(claim: Claim) -> tuple[list[SizeFamily | None], str]:
+    """:func:`read_size_families`, read once per claim and statement of sizes in a process."""
+    from stiefelsym.claims import statement_state
+    state = statement_state(claim)
+    hit = _FAMILIES.get(id(claim))
+    if hit is None or hit[0] is not claim or hit[1] != state:
+        try:
+            out: Any = read_size_families(claim)
+        except Exception as exc:    # noqa: BLE001 - kept, and raised to every reader alike
+            out = exc
+        _FAMILIES[id(claim)] = hit = (claim, state, out)
+        while len(_FAMILIES) > 512:
+            _FAMILIES.pop(next(iter(_FAMILIES)))
+    if isinstance(hit[2], Exception):
+        raise hit[2]
+    families, why = hit[2]
+    return list(families), why
+
+
+def read_size_families(claim: Claim) -> tuple[list[SizeFamily | None], str]:
     """The families of sizes the claim is proved on, and "" (or [], why not).
 
     [None] for a claim stated at every r.  A claim that declares one r (r_min = r_max = 1 or 2, or
@@ -322,26 +347,17 @@ def size_families(claim: Claim) -> tuple[list[SizeFamily | None], str]:
     return out, ""
 
 
-#: the families of each claim stated on families (by identity; the claim is kept), the last ones asked for
-_STATED: dict[int, tuple[Claim, list[SizeFamily]]] = {}
-
-
 def stated_on(claim: Claim, func: Callable | None = None) -> Any:
     """The context in which the engine runs ``claim`` (with ``func``, its function or a correction): at a
-    size of a family the claim is stated on, the function's graph is its graph on that family
-    (:func:`stiefelsym.ir.stated_families`), so the proof on the family is about the graph every method
-    evaluates at every size of it, not only at the sizes the claim lists."""
+    size of a family the claim is stated on, the function's graph is its graph on that family, once the graph
+    traced at the size's numbers is the same (:func:`stiefelsym.ir.stated_families`), so the proof on the family
+    is about the graph every method evaluates at every size of it, not only at the sizes the claim lists."""
     from stiefelsym.ir import stated_families
-    hit = _STATED.get(id(claim))
-    if hit is None or hit[0] is not claim:
-        try:
-            families = [f for f in size_families(claim)[0] if f is not None]
-        except Exception:   # noqa: BLE001 - the statement's admits() raised: no family (the run says why)
-            families = []
-        _STATED[id(claim)] = hit = (claim, families)
-        while len(_STATED) > 256:
-            _STATED.pop(next(iter(_STATED)))
-    return stated_families(func or claim.func, hit[1])
+    try:
+        families = [f for f in size_families(claim)[0] if f is not None]
+    except Exception:   # noqa: BLE001 - the statement's admits() raised: no family (the run meets it again)
+        families = []
+    return stated_families(func or claim.func, families)
 
 
 def family_sizes(claim: Claim, family: SizeFamily | None) -> list[Size]:

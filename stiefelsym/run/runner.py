@@ -17,7 +17,7 @@ import shlex
 import time
 from typing import Callable, Iterable, Iterator, Sequence
 
-from stiefelsym.claims import Claim, Registry, Size
+from stiefelsym.claims import Claim, Registry, Size, statement_state
 from stiefelsym.methods.hard import hard_case
 from stiefelsym.methods.fixed_size import METHOD_RUNNERS, BudgetError, check_budget, expected_verdict, spaced_collections  # noqa: F401 (BudgetError is part of the runner API)
 from stiefelsym.run.pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT, GIB, Outcome, Terminated, WorkerPool  # noqa: F401
@@ -123,8 +123,13 @@ def _guarded(claim: Claim, size: Size | None, method: str, seed: int, func: Call
     In a worker, MemoryError is left to the pool (which reports the memory budget and
     replaces the worker)."""
     from stiefelsym.methods.dimension_free import stated_on
+    before = statement_state(claim)
     with stated_on(claim, func):
-        return _guarded_on(claim, size, method, seed, func, hard, in_worker, timeout)
+        res = _guarded_on(claim, size, method, seed, func, hard, in_worker, timeout)
+    if statement_state(claim) != before:
+        res = _error(claim, size, method, seed, "the claim changed its own statement (a field of the claim or of its "
+                                                "statement of sizes) while it ran: no verdict is given")
+    return res
 
 
 def _guarded_on(claim: Claim, size: Size | None, method: str, seed: int, func: Callable | None,
