@@ -163,11 +163,11 @@ def statement_state(claim: "Claim") -> tuple:
     """What a claim states, by identity: its fields, the fields of its statement of sizes and its corrections.  A
     claim whose own code changes it while it runs (``object.__setattr__`` on the frozen claim or its frozen
     statement of sizes) is seen by a comparison before and after (:func:`stiefelsym.run.runner._guarded`)."""
-    spec = claim.sizes
+    spec, own = claim.sizes, vars(claim)
     fields = getattr(spec, "__dict__", None)
-    return (tuple((k, id(v)) for k, v in vars(claim).items()),
-            tuple((k, id(v)) for k, v in fields.items()) if isinstance(fields, dict) else (id(spec),),
-            tuple(id(c) for c in claim.corrections))
+    return (tuple(own), tuple(map(id, own.values())),
+            (tuple(fields), tuple(map(id, fields.values()))) if isinstance(fields, dict) else (id(spec),),
+            tuple(map(id, claim.corrections)))
 
 
 def admissible(n_max: int = 5, *, n_min: int = 1, r_min: int = 1, r_max: int | None = None,

@@ -25,7 +25,8 @@ from __future__ import annotations
 import dataclasses
 import functools
 import time
-from typing import Any, Callable
+from contextlib import contextmanager, nullcontext
+from typing import Any, Callable, Iterator
 
 from stiefelsym.certificate_check import CASES, check_certificate
 from stiefelsym.claims import Claim, Count, Rank, Size, SizeSpec
@@ -353,11 +354,28 @@ def stated_on(claim: Claim, func: Callable | None = None) -> Any:
     traced at the size's numbers is the same (:func:`stiefelsym.ir.stated_families`), so the proof on the family
     is about the graph every method evaluates at every size of it, not only at the sizes the claim lists."""
     from stiefelsym.ir import stated_families
+    func = func or claim.func
+    if _ENTERED and _ENTERED[-1][0] is claim and _ENTERED[-1][1] is func:
+        return nullcontext()        # stated already, by the run that asks again (its digest, its shared size)
     try:
         families = [f for f in size_families(claim)[0] if f is not None]
     except Exception:   # noqa: BLE001 - the statement's admits() raised: no family (the run meets it again)
         families = []
-    return stated_families(func or claim.func, families)
+    return _entered(claim, func, stated_families(func, families))
+
+
+#: the claims (with their functions) whose families are stated, innermost last
+_ENTERED: list[tuple[Claim, Callable]] = []
+
+
+@contextmanager
+def _entered(claim: Claim, func: Callable, inner: Any) -> Iterator[None]:
+    with inner:
+        _ENTERED.append((claim, func))
+        try:
+            yield
+        finally:
+            _ENTERED.pop()
 
 
 def family_sizes(claim: Claim, family: SizeFamily | None) -> list[Size]:
