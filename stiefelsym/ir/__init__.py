@@ -9,8 +9,7 @@ from __future__ import annotations
 
 import threading
 from collections import OrderedDict
-from contextlib import contextmanager
-from typing import Any, Callable, Iterator
+from typing import Any, Callable
 
 from stiefelsym.ir.families import SizeFamily
 from stiefelsym.ir.graph import Graph, Named, Ref, Size
@@ -54,21 +53,29 @@ def first_trace(func: Callable, n: int | None, r: int | None, constraints: tuple
 _STATED: dict[int, tuple[Callable, tuple[SizeFamily, ...]]] = {}
 
 
-@contextmanager
-def stated_families(func: Callable, families: Any) -> Iterator[None]:
+class stated_families:    # noqa: N801 - a context manager, named as the function it replaces
     """While the engine runs a claim stated on families of sizes (r = 1, r = 2, r = n, for every n), the
     graph of ``func`` at a size of one of them is its graph on that family (:func:`_compile`), as the graph
     with symbolic sizes is the graph at every size of a claim that has one.  ``families`` is what the
     engine read from the claim's statement (None, the whole of n >= r >= 1, is left out)."""
-    key, old = id(func), _STATED.get(id(func))
-    _STATED[key] = (func, tuple(f for f in families or () if isinstance(f, SizeFamily)))
-    try:
-        yield
-    finally:
-        if old is None:
-            _STATED.pop(key, None)
+
+    __slots__ = ("func", "families", "old")
+
+    def __init__(self, func: Callable, families: Any) -> None:
+        self.func = func
+        self.families = tuple(f for f in families or () if isinstance(f, SizeFamily))
+        self.old: Any = None
+
+    def __enter__(self) -> None:
+        key = id(self.func)
+        self.old = _STATED.get(key)
+        _STATED[key] = (self.func, self.families)
+
+    def __exit__(self, *exc: Any) -> None:
+        if self.old is None:
+            _STATED.pop(id(self.func), None)
         else:
-            _STATED[key] = old
+            _STATED[id(self.func)] = self.old
 
 
 def _family_at(func: Callable, n: int, r: int) -> SizeFamily | None:

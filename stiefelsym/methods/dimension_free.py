@@ -25,8 +25,8 @@ from __future__ import annotations
 import dataclasses
 import functools
 import time
-from contextlib import contextmanager, nullcontext
-from typing import Any, Callable, Iterator
+from contextlib import nullcontext
+from typing import Any, Callable
 
 from stiefelsym.certificate_check import CASES, check_certificate
 from stiefelsym.claims import Claim, Count, Rank, Size, SizeSpec
@@ -287,8 +287,9 @@ _FAMILIES: dict[int, tuple] = {}
 
 def size_families(claim: Claim) -> tuple[list[SizeFamily | None], str]:
     """:func:`read_size_families`, read once per claim and statement of sizes in a process."""
-    from stiefelsym.claims import statement_state
-    state = statement_state(claim)
+    spec = claim.sizes          # what the families are read from: the statement of sizes, its fields by identity
+    fields = getattr(spec, "__dict__", None)
+    state = (id(spec), tuple(fields), tuple(map(id, fields.values()))) if isinstance(fields, dict) else (id(spec),)
     hit = _FAMILIES.get(id(claim))
     if hit is None or hit[0] is not claim or hit[1] != state:
         try:
@@ -361,21 +362,28 @@ def stated_on(claim: Claim, func: Callable | None = None) -> Any:
         families = [f for f in size_families(claim)[0] if f is not None]
     except Exception:   # noqa: BLE001 - the statement's admits() raised: no family (the run meets it again)
         families = []
-    return _entered(claim, func, stated_families(func, families))
+    return _Entered(claim, func, stated_families(func, families))
 
 
 #: the claims (with their functions) whose families are stated, innermost last
 _ENTERED: list[tuple[Claim, Callable]] = []
 
 
-@contextmanager
-def _entered(claim: Claim, func: Callable, inner: Any) -> Iterator[None]:
-    with inner:
-        _ENTERED.append((claim, func))
-        try:
-            yield
-        finally:
-            _ENTERED.pop()
+class _Entered:
+    """The families of ``claim`` stated for ``func`` (``inner``), with the pair on :data:`_ENTERED` meanwhile."""
+
+    __slots__ = ("pair", "inner")
+
+    def __init__(self, claim: Claim, func: Callable, inner: Any) -> None:
+        self.pair, self.inner = (claim, func), inner
+
+    def __enter__(self) -> None:
+        self.inner.__enter__()
+        _ENTERED.append(self.pair)
+
+    def __exit__(self, *exc: Any) -> None:
+        _ENTERED.pop()
+        self.inner.__exit__(*exc)
 
 
 def family_sizes(claim: Claim, family: SizeFamily | None) -> list[Size]:
