@@ -141,8 +141,7 @@ def _compile(func: Callable, n: int | None, r: int | None, constraints: tuple[st
         if fam is not None:
             on_family = _compile(func, None, None, constraints, family=fam)
             if isinstance(on_family, Graph):
-                return _same_at_numbers(func, _typed_at(func, on_family, n, r, constraints, fam), n, r, constraints,
-                                        fam)
+                return _same_at_numbers(func, on_family, n, r, constraints, fam)
     # by identity: a callable's own __eq__ is never asked; a graph traced once is kept apart from one
     # traced twice (a trace compared with itself is no determinism check)
     key = (id(func), n, r, family, constraints[0], twice)
@@ -200,10 +199,11 @@ def _typed_at(func: Callable, free: Graph, n: int, r: int, constraints: tuple[st
 
 def _same_at_numbers(func: Callable, typed: Any, n: int, r: int, constraints: tuple[str, Callable],
                      family: SizeFamily) -> Any:
-    """The family's graph replayed at (n, r) (``typed``), once the claim traced at the numbers of (n, r) gives the
-    same graph; otherwise the refusal.  A claim whose graph on its family is another computation than its
-    graph at a size (it tells the two tracings apart, by introspection) has no verdict at that size, listed or
-    not: the dimension-free method's proof on the family is about its graph on the family."""
+    """The family's graph (``typed``) as the claim's graph at (n, r), once the claim traced at the numbers of (n, r)
+    gives the same graph (the same digest: the graph at the numbers types there, and so does the family's, node
+    for node); otherwise the refusal.  A claim whose graph on its family is another computation than its graph at
+    a size (it tells the two tracings apart, by introspection) has no verdict at that size, listed or not: the
+    dimension-free method's proof on the family is about its graph on the family."""
     if not isinstance(typed, Graph):
         return typed
     key = (id(func), n, r, constraints[0], "compared", family)

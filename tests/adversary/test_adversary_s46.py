@@ -310,7 +310,7 @@ def test_a_claim_stated_at_r2_that_detects_its_family_has_no_verdict_where_its_t
     attribute, that it is on the family and asks nothing of n.  Its graph on the family was compared with its
     graphs at the sizes it lists (n <= 5) only, while the fixed-size methods traced it at (9, 2) at the numbers:
     "proved for every n at r = 2" by the dimension-free method, and "fails" at (9, 2).  Now the graph on the
-    family is the claim's graph at every size of it (replayed there by the tracer), once the graph traced at the
+    family is the claim's graph at every size of it, once the graph traced at the
     size's numbers is the same: at (5, 2) it is, and every method evaluates the graph that was proved; at (9, 2)
     it is not, and no verdict is given (error: the claim tells the two tracings apart)."""
     from stiefelsym.ir import compile_at_size
