@@ -298,3 +298,24 @@ def test_a_graph_dropped_from_the_cache_is_not_traced_again_into_another_graph()
     finally:
         FLIP[0] = False
     assert not (free.verdict == "proved" and at9.verdict == "fails"), (free.verdict, at9.verdict)
+
+
+def false_on_the_family(s):
+    """The trick turned round: XᵀX + PᵀP = I_r (false) on the family, XᵀX = I_r (true) at the numbers of a size."""
+    res = s.X.T @ s.X - s.Ir
+    if _on_family(s):
+        res = res + s.P.T @ s.P
+    return {"x": res}
+
+
+def test_a_claim_false_on_its_family_and_true_at_the_numbers_is_never_proved_on_the_family():
+    """No hole.  The claim traces with plain symbolic sizes (it reads no size), and that graph, XᵀX = I_r, is its
+    graph at every size: true, so proved / checked / numeric there, never refuted.  Its graph on the family r = 2
+    differs from the plain one, so the dimension-free method proves nothing on the family (the false graph is
+    never the one a verdict is about)."""
+    c = _claim(false_on_the_family, admissible(5, r_min=2, r_max=2))
+    assert run_one(c, None, "free", 0).verdict != "proved"
+    for z in ((4, 2), (9, 2)):
+        for m in ("exact", "modular", "float", "auto"):
+            res = run_one(c, Size(*z), m, 0)
+            assert res.verdict in PASSING, (z, m, res.verdict, res.message)
