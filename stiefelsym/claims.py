@@ -163,11 +163,15 @@ def statement_state(claim: "Claim") -> tuple:
     """What a claim states, by identity: its fields, the fields of its statement of sizes and its corrections.  A
     claim whose own code changes it while it runs (``object.__setattr__`` on the frozen claim or its frozen
     statement of sizes) is seen by a comparison before and after (:func:`stiefelsym.run.runner._guarded`)."""
-    spec, own = claim.sizes, vars(claim)
+    own = vars(claim)
+    return (tuple(own), tuple(map(id, own.values())), sizes_state(claim.sizes), tuple(map(id, claim.corrections)))
+
+
+def sizes_state(spec: Any) -> tuple:
+    """A statement of sizes by identity: the object and its fields (what :func:`statement_state` compares, and
+    what the families of sizes read from a statement are remembered by)."""
     fields = getattr(spec, "__dict__", None)
-    return (tuple(own), tuple(map(id, own.values())),
-            (tuple(fields), tuple(map(id, fields.values()))) if isinstance(fields, dict) else (id(spec),),
-            tuple(map(id, claim.corrections)))
+    return (id(spec), tuple(fields), tuple(map(id, fields.values()))) if isinstance(fields, dict) else (id(spec),)
 
 
 def admissible(n_max: int = 5, *, n_min: int = 1, r_min: int = 1, r_max: int | None = None,

@@ -169,14 +169,13 @@ def _compile(func: Callable, n: int | None, r: int | None, constraints: tuple[st
     return _remember(key, func, out)
 
 
-def _typed_at(func: Callable, free: Graph, n: int, r: int, constraints: tuple[str, Callable],
-              family: SizeFamily | None = None) -> Any:
-    """The graph of symbolic sizes ``free`` (or on the family of sizes ``family``) as the claim's graph at
-    (n, r), once it types there, or the refusal.  A size the claim wrote as an int (s.zeros(3, 2)) cannot be told from n, r with symbolic
+def _typed_at(func: Callable, free: Graph, n: int, r: int, constraints: tuple[str, Callable]) -> Any:
+    """The graph of symbolic sizes ``free`` as the claim's graph at (n, r), once it types there, or the
+    refusal.  A size the claim wrote as an int (s.zeros(3, 2)) cannot be told from n, r with symbolic
     sizes; at (n, r) the graph is replayed by the tracer (:class:`.replay.GraphClaim`: engine code, no code
     of the claim runs, no trace of the claim holds a number), which checks every shape with the numbers."""
     from stiefelsym.ir.replay import GraphClaim
-    key = (id(func), n, r, constraints[0], "typed", family)
+    key = (id(func), n, r, constraints[0], "typed")
     hit = _GRAPHS.get(key)
     if hit is not None and hit[0] is func:
         _GRAPHS.move_to_end(key)
@@ -186,10 +185,10 @@ def _typed_at(func: Callable, free: Graph, n: int, r: int, constraints: tuple[st
             g = _clean(trace, GraphClaim(free, name=getattr(func, "__name__", "claim")), n, r, constraints)
             _check_refusals(g)
         except TraceRefused as exc:
-            raise TraceRefused(f"the claim's graph {_traced(family)} does not type at ({n},{r}): "
+            raise TraceRefused(f"the claim's graph with symbolic sizes does not type at ({n},{r}): "
                                f"{str(exc).removeprefix('refused: ')}") from None
         if g.digest() != free.digest():
-            raise NotDeterministic(f"the claim's graph {_traced(family)} replays to another graph at ({n},{r})")
+            raise NotDeterministic(f"the claim's graph with symbolic sizes replays to another graph at ({n},{r})")
         out: Any = free
     except Exception as exc:      # noqa: BLE001 - reported by the caller
         exc._first_traceback = exc.__traceback__      # type: ignore[attr-defined]
@@ -197,34 +196,28 @@ def _typed_at(func: Callable, free: Graph, n: int, r: int, constraints: tuple[st
     return _remember(key, func, out)
 
 
-def _same_at_numbers(func: Callable, typed: Any, n: int, r: int, constraints: tuple[str, Callable],
+def _same_at_numbers(func: Callable, on_family: Graph, n: int, r: int, constraints: tuple[str, Callable],
                      family: SizeFamily) -> Any:
-    """The family's graph (``typed``) as the claim's graph at (n, r), once the claim traced at the numbers of (n, r)
-    gives the same graph (the same digest: the graph at the numbers types there, and so does the family's, node
-    for node); otherwise the refusal.  A claim whose graph on its family is another computation than its graph at
+    """The family's graph (``on_family``) as the claim's graph at (n, r), once the claim traced at the numbers
+    of (n, r) gives the same graph (the same digest: the graph at the numbers types there, and so does the
+    family's, node for node); otherwise the refusal.  A claim whose graph on its family is another computation than its graph at
     a size (it tells the two tracings apart, by introspection) has no verdict at that size, listed or not: the
     dimension-free method's proof on the family is about its graph on the family."""
-    if not isinstance(typed, Graph):
-        return typed
     key = (id(func), n, r, constraints[0], "compared", family)
     hit = _GRAPHS.get(key)
     if hit is not None and hit[0] is func:
         _GRAPHS.move_to_end(key)
         return hit[1]
     at = _compile(func, n, r, constraints, twice=False, at_numbers=True)
-    out: Any = typed
+    out: Any = on_family
     if not isinstance(at, Graph):
         out = NotDeterministic(f"the claim traces on its sizes {family} but not at ({n},{r}) itself: "
                                f"{type(at).__name__}: {at}")
-    elif at.digest() != typed.digest():
+    elif at.digest() != on_family.digest():
         out = NotDeterministic(f"the claim's graph on its sizes {family} differs from its graph traced at ({n},{r}) "
-                               f"(digest {typed.digest()[:12]} against {at.digest()[:12]}): it tells the two "
+                               f"(digest {on_family.digest()[:12]} against {at.digest()[:12]}): it tells the two "
                                "tracings apart, and no verdict is given at this size")
     return _remember(key, func, out)
-
-
-def _traced(family: SizeFamily | None) -> str:
-    return "with symbolic sizes" if family is None else f"on its sizes {family}"
 
 
 def _remember(key: tuple, func: Callable, out: Any) -> Any:

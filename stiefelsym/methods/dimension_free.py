@@ -29,7 +29,7 @@ from contextlib import nullcontext
 from typing import Any, Callable
 
 from stiefelsym.certificate_check import CASES, check_certificate
-from stiefelsym.claims import Claim, Count, Rank, Size, SizeSpec
+from stiefelsym.claims import Claim, Count, Rank, Size, SizeSpec, sizes_state
 from stiefelsym.ir.statements import InverseIdentities
 from stiefelsym.methods import fixed_size
 from stiefelsym.methods.fixed_size import _base_result, division_probe, _entries, _short, call_claim
@@ -287,9 +287,7 @@ _FAMILIES: dict[int, tuple] = {}
 
 def size_families(claim: Claim) -> tuple[list[SizeFamily | None], str]:
     """:func:`read_size_families`, read once per claim and statement of sizes in a process."""
-    spec = claim.sizes          # what the families are read from: the statement of sizes, its fields by identity
-    fields = getattr(spec, "__dict__", None)
-    state = (id(spec), tuple(fields), tuple(map(id, fields.values()))) if isinstance(fields, dict) else (id(spec),)
+    state = sizes_state(claim.sizes)     # what the families are read from, by identity
     hit = _FAMILIES.get(id(claim))
     if hit is None or hit[0] is not claim or hit[1] != state:
         try:
