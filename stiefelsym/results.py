@@ -1,9 +1,11 @@
 """Result records: one per (claim, size, method).  Renderers read these only."""
 from __future__ import annotations
 
+import decimal
 import json
 import math
 import os
+import re
 import tempfile
 from dataclasses import MISSING, asdict, dataclass, field, fields, is_dataclass, replace
 from pathlib import Path
@@ -23,6 +25,23 @@ def _clip(text: str, limit: int | None) -> str:
     if limit is None or len(text) <= limit:
         return text
     return text[: max(limit - 3, 0)] + "..."
+
+
+def _short_value(text: str, limit: int = 60) -> str:
+    """A witness's value for one line: a long exact rational as its magnitude, with its digits counted
+    (the exact value is in the record, results.json); anything else clipped."""
+    m = _RATIONAL.fullmatch(text.strip())
+    if len(text) <= limit or m is None:
+        return _clip(text, limit)
+    sign, num, den = m.group(1), m.group(2), m.group(3) or "1"
+    with decimal.localcontext() as ctx:
+        ctx.prec = 6
+        approx = f"{decimal.Decimal(sign + num) / decimal.Decimal(den):.4E}".replace("E+", "e").replace("E", "e")
+    digits = f"{len(num)} digits" if den == "1" else f"{len(num)}/{len(den)} digits"
+    return f"{approx} (a rational of {digits}; exact in the record)"
+
+
+_RATIONAL = re.compile(r"(-?)(\d+)(?:/(\d+))?")
 
 
 @dataclass
@@ -93,7 +112,7 @@ class Result:
         if self.verdict == "fails":
             w = self.witness or {}
             if w.get("entry") is not None and w.get("value") is not None:
-                text = f"witness {w['entry']} = {_clip(str(w['value']), 60)}"
+                text = f"witness {w['entry']} = {_short_value(str(w['value']))}"
             elif self.residual:
                 text = f"residual {self.residual}"
             else:

@@ -682,6 +682,18 @@ def verify(ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tuple[str, ..
                        hard, timeout, memory, jobs, budget, scheduler, max_n)
 
 
+def _skipped_notes(claims: list[Claim], sizes: tuple[Size, ...]) -> list[str]:
+    """For a --size given without naming claims: at each size, the claims that are not stated there and skip it."""
+    notes = []
+    for s in sizes:
+        skip = [c.id for c in claims if not c.sizes.admits(s.n, s.r)]
+        if skip:
+            shown = ", ".join(skip[:8]) + (f" and {len(skip) - 8} more" if len(skip) > 8 else "")
+            notes.append(f"note: ({s.n},{s.r}): {len(skip)} of {len(claims)} claims are not stated at this size and "
+                         f"skip it: {shown} (`stiefelsym show CLAIM` gives a claim's sizes)")
+    return notes
+
+
 def _check_costs(runner: Any, claims: list[Claim], sizes: tuple[Size, ...], methods: Sequence[str],
                  budget: float, memory: float | None = None) -> None:
     """Refuse (BudgetError, exit 2) a planned run whose predicted time exceeds the budget, or
@@ -806,6 +818,9 @@ def _verify(out: Any, ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tu
         if not claims:
             raise InputError("no claims to verify (0 claims loaded)")
         _check_costs(runner, claims, sizes, methods, budget, memory)
+        if sizes and not ids and max_n is None and any(m != "free" for m in methods):
+            for note in _skipped_notes(claims, sizes):
+                click.echo(note, err=True)
         from stiefelsym.run.runner import engine_methods
         engine = runner.verify
         if scheduler is not None:

@@ -379,9 +379,17 @@ class Tracer:
         t = self._t
         if type(k) is Dim:
             k = k._int("as an exponent")
-        if type(k) is not int or self._kind == MAT:
-            return t.refuse("a power of a number with an int exponent (matrices: multiply with @)")
+        if self._kind == MAT:
+            return t.refuse("M ** k of a matrix: ** is the power of a number; a matrix power is a product, "
+                            "M @ M @ ... (or functools.reduce(operator.matmul, [M] * k))")
+        if type(k) is not int:
+            return t.refuse(f"a power of a number with an exponent that is not an int ({type(k).__name__}): "
+                            "the residuals are rational functions")
         return t.new("pow", (self._r, k), self._kind, self._shape)
+
+    def __abs__(self):
+        return self._t.refuse("abs() of a traced value: the residuals are rational functions (for a magnitude, "
+                              "use a square, x * x, or tr(M.T @ M) of a matrix)")
 
     # -- parts ----------------------------------------------------------------------------------
     def __getitem__(self, idx):
@@ -743,7 +751,21 @@ def _m_gradient(s, H):
     f, _ = t.function(H, 1)
     node = t.g.add("call", (s._r, "gradient", (f,), ()))
     shape = t.shape_of(("n", "r"))
-    return (t.new("item", (node, 0), MAT, shape), t.new("item", (node, 1), MAT, shape))
+    return Gradient((t.new("item", (node, 0), MAT, shape), t.new("item", (node, 1), MAT, shape)))
+
+
+class Gradient(tuple):
+    """(dH/dX, dH/dP), the value of ``s.gradient(H)``: a pair (``HX, HP = s.gradient(H)``), also read by the
+    names of its components, ``g["X"]`` and ``g["P"]``, as a flow is."""
+
+    __slots__ = ()
+
+    def __getitem__(self, k: Any) -> Any:
+        if type(k) is str:
+            if k not in ("X", "P"):
+                raise KeyError(f"a gradient has the components 'X' and 'P' (dH/dX, dH/dP), not {k!r}")
+            k = 0 if k == "X" else 1
+        return tuple.__getitem__(self, k)
 
 
 def _flow_method(name: str):
@@ -781,7 +803,7 @@ def _components(t: "Trace", out: Any, symmetric: bool) -> int:
                 return t.refuse("a Jacobian of symmetric components of a non-square matrix")
             return m * (m + 1) // 2
         return m * k
-    if type(out) in (list, tuple):
+    if type(out) in (list, tuple, Gradient):
         return sum(_components(t, x, symmetric) for x in out)
     return t.refuse("a Jacobian of a function whose value is not a number, a matrix or a list of them")
 
@@ -845,7 +867,9 @@ def block(rows: Any) -> Tracer:
     if not rows or not rows[0] or any(len(row) != len(rows[0]) for row in rows):
         return t.refuse("a block matrix needs a rectangular, non-empty grid of blocks")
     if not all(isinstance(b, Tracer) and b._kind != SCALAR for row in rows for b in row):
-        return t.refuse("the blocks of a block matrix must be matrices")
+        return t.refuse("the blocks of a block matrix must be matrices, not numbers: a zero block is "
+                        "s.zeros(rows, columns, spaces), e.g. s.zeros(s.r, s.n, (\"r\", \"n\")), and a multiple of "
+                        "the identity c * s.Ir or c * s.In")
     heights = []
     for row in rows:
         h = row[0]._shape[0]
@@ -974,6 +998,8 @@ class Trace:
             return x
         if tx is Dim:
             return x._expr
+        if tx is Gradient:
+            x, tx = tuple(x), tuple
         if tx is list or tx is tuple:
             return self.g.add("list" if tx is list else "tuple", tuple(self.arg(y, functions) for y in x))
         if tx is dict:
@@ -1119,9 +1145,9 @@ class Trace:
         """Tracers for the parts of an engine result shaped like ``out`` (a function's value)."""
         if isinstance(out, Tracer):
             return Tracer(self, node, out._kind, out._shape)
-        if type(out) in (list, tuple):
+        if type(out) in (list, tuple, Gradient):
             parts = [self.mirror(x, self.g.add("item", (node, i))) for i, x in enumerate(out)]
-            return parts if type(out) is list else tuple(parts)
+            return parts if type(out) is list else tuple(parts) if type(out) is tuple else Gradient(parts)
         if type(out) is dict:
             return {k: self.mirror(x, self.g.add("item", (node, k))) for k, x in out.items()}
         return Tracer(self, node, ANY)
