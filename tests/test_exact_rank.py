@@ -79,3 +79,41 @@ def test_beyond_the_symbolic_budget_the_upper_bound_is_randomized(monkeypatch):
     assert res.verdict == "fails"       # a rank above the printed one is certain at a rational point
     res = run_exact(_claim(rank_claim(lambda n, r: two_l(n, r) + 1)), 3, 1, 0)
     assert res.verdict == "inconclusive"   # below the printed rank at one point: not certain without the symbolic rank
+
+
+# -- the upper bound from rational relations among rows or columns --------------------------------------
+
+def _constraints(t):
+    return [t.X.T @ t.X - t.Ir, t.X.T @ t.P + t.P.T @ t.X]
+
+
+def constraint_jacobian(expected):
+    """The Jacobian of XᵀX − I, XᵀP + PᵀX in the coordinates of X, P (each symmetric entry twice, so the rows
+    repeat), read in coordinates: the Cayley chart, where the function-field elimination takes minutes."""
+    def f(s):
+        return {"rank": Rank(s.mat(s.jacobian(_constraints)), expected(s.r), generic=True)}
+    return f
+
+
+def test_rational_relations_among_rows_bound_the_rank_from_above():
+    from stiefelsym.methods.fixed_size import _coefficient_rank_bound
+    import flint
+    ctx = flint.fmpq_mpoly_ctx.get(("x", "y"), "degrevlex")
+    x, y = ctx.gens()
+    assert _coefficient_rank_bound([[x, y], [2 * x, 2 * y]])[0] == 1            # proportional rows
+    assert _coefficient_rank_bound([[x, 2 * x, x + y], [y, 2 * y, x * y]])[0] == 2
+    assert _coefficient_rank_bound([[x, 2 * x], [y, 2 * y], [x * y, 2 * x * y]])[0] == 1   # columns
+    assert _coefficient_rank_bound([[x, y], [y, x]])[0] == 2       # rank 2: no rational relation, none found
+    assert _coefficient_rank_bound([[x * 0, x * 0]])[0] == 0
+
+
+def test_repeated_rows_prove_the_rank_of_the_constraints_in_the_cayley_chart():
+    res = run_exact(_claim(constraint_jacobian(lambda r: r * (r + 1)), "constraints-rank"), 4, 2, 0)
+    assert res.verdict == "proved", res.line()
+    assert "span a space of dimension 6 over Q" in res.certificate and "two-sided" in res.certificate
+
+
+@pytest.mark.parametrize("shift", [1, -1])
+def test_a_wrong_rank_of_the_constraints_fails(shift):
+    res = run_exact(_claim(constraint_jacobian(lambda r: r * (r + 1) + shift), "constraints-rank-wrong"), 4, 2, 0)
+    assert res.verdict == "fails", res.line()

@@ -363,15 +363,88 @@ def _sympy_rows(M: Mat):
     return [[sympy.sympify(x) for x in row] for row in _symbolic_rows(M)]
 
 
+def _polynomial_rows(M: Mat):
+    """The matrix's rows as flint polynomials, each row multiplied by the least common multiple of its
+    entries' denominators (a nonzero factor per row leaves the rank over the function field as it is);
+    None when an entry is not a rational function of the chart parameters."""
+    rows = _symbolic_rows(M)
+    polys = _flint_rows(rows)
+    return polys if polys is not None else _flint_rows_cleared(rows)
+
+
+#: the largest coefficient matrix (rows x columns·monomials) :func:`_coefficient_rank_bound` builds
+COEFFICIENT_BOUND_ENTRIES = 400_000
+
+
+def _backend_polynomials(M: Mat):
+    """The matrix as the flint backend holds it, over one common denominator (a nonzero factor of the whole
+    matrix leaves its rank over the function field as it is): the rows of numerators; None where the backend
+    does not hold the matrix as flint polynomials."""
+    be = backend(M._field)
+    if be is None or not hasattr(be, "ring"):
+        return None
+    from stiefelsym.backends import ratmat
+    from stiefelsym.backends.polyfield import PolyMat
+    from stiefelsym.backends.ratmat import RatMat
+    try:
+        X = M._n if M._n is not None else be.from_obj(M._view())
+    except Exception:   # noqa: BLE001 - an entry flint does not hold: no bound from the coefficients
+        return None
+    if type(X) is RatMat:
+        X = ratmat.common(be, X)
+    if type(X) is not PolyMat:
+        return None
+    X = be._fix(X)
+    m, k = X.a.shape
+    if X.z:
+        return [[be.ring.zero] * k for _ in range(m)]
+    return X.a.tolist()
+
+
+def _coefficient_rank_bound(polys) -> tuple[int, str] | None:
+    """An upper bound on the rank over the function field of a matrix of polynomials (a matrix of rational
+    functions times a nonzero common denominator), proved: a linear relation with rational coefficients
+    among its rows (or its columns), as vectors of polynomials, holds over the function field too, so the rank is at most the rank over Q of the rows' (columns') vectors of
+    coefficients, one coordinate per (column, monomial) (per (row, monomial)); each computed exactly (flint).
+    Duplicated, zero and proportional rows and columns are caught so.  None where the coefficient matrix
+    would exceed COEFFICIENT_BOUND_ENTRIES entries."""
+    if not polys or not polys[0]:
+        return 0, "an empty matrix"
+    best = None
+    for side, lines in (("rows", polys), ("columns", [list(c) for c in zip(*polys)])):
+        spots: dict = {}
+        for line in lines:
+            for j, p in enumerate(line):
+                if p != 0:
+                    for e in p.monoms():
+                        spots.setdefault((j, e), len(spots))
+        if len(lines) * len(spots) > COEFFICIENT_BOUND_ENTRIES:
+            continue
+        vectors = []
+        for line in lines:
+            v = [0] * len(spots)
+            for j, p in enumerate(line):
+                if p != 0:
+                    for e, c in zip(p.monoms(), p.coeffs()):
+                        v[spots[(j, e)]] = c
+            vectors.append(v)
+        rank = flint.fmpq_mat(vectors).rank() if spots else 0
+        if best is None or rank < best[0]:
+            best = (rank, side)
+    if best is None:
+        return None
+    rank, side = best
+    return rank, (f"its {side} (times the common denominator of its entries), as vectors of polynomial "
+                  f"coefficients, span a space of dimension {rank} over Q (a rational linear relation among them "
+                  f"holds over the function field)")
+
+
 def _function_field_rank(M: Mat) -> int:
     """The rank over the field of rational functions of the chart parameters: fraction-free
     (Bareiss) elimination over flint's multivariate polynomials, each row multiplied by the least
     common multiple of its entries' denominators (a nonzero factor per row leaves the rank as it is)
     when the entries are rational functions; sympy's DomainMatrix when they are not."""
-    rows = _symbolic_rows(M)
-    polys = _flint_rows(rows)
-    if polys is None:
-        polys = _flint_rows_cleared(rows)
+    polys = _polynomial_rows(M)
     if polys is not None:
         if all(p.is_constant() for row in polys for p in row):     # a matrix of rational numbers
             return flint.fmpq_mat([[p.leading_coefficient() if p != 0 else 0 for p in row]
@@ -656,6 +729,14 @@ def _exact_rank(R: Rank, field: Field, randomized: _RandomizedRank | None = None
             decided, note = _kernel_rank(R, rng, lower)
             if decided is not None:
                 return decided
+        polys = _backend_polynomials(M)
+        bound = _coefficient_rank_bound(polys) if polys is not None else None
+        if bound is not None and bound[0] < R.expected:
+            return (f"rank <= {bound[0]} over the function field: {bound[1]} (paper: {R.expected}; certain)",
+                    "certain")
+        if bound is not None and lower is not None and lower == bound[0] == R.expected:
+            return (f"rank {lower} at an exact rational point (rank >= {lower} over the function field) and rank "
+                    f"<= {bound[0]}: {bound[1]}; two-sided (paper: {R.expected})", True)
         try:
             with deadline(SYMBOLIC_RANK_SECONDS if randomized is not None else None, "the function-field rank",
                           lambda message: ExactTimeout(message)):
