@@ -154,11 +154,13 @@ def bad_key(s):
 
 
 def test_a_randomized_exact_rank_records_its_seed(tmp_path):
-    """A rank the exact method bounds at random points (checked) was drawn from the seed: its
-    record carries the seed, so the rerun line and `stiefelsym check` draw the same points."""
+    """A rank the exact method takes at points drawn from the seed (the exact point of its lower bound; its
+    upper bound here from rational relations among the rows, before that from random points: checked) carries
+    the seed, so the rerun line and `stiefelsym check` draw the same points."""
     code, out = _verify("u-ddim-invariants", "--size", "5,2", "--method", "exact", "--seed", "5", report=tmp_path)
     rec = out["results"][0]
-    assert rec["verdict"] == "checked" and rec["seed"] == 5 and "--seed 5" in rec["rerun"]
+    assert rec["verdict"] == "proved" and rec["seed"] == 5 and "--seed 5" in rec["rerun"]
+    assert "span a space of dimension 10 over Q" in rec["certificate"], rec["certificate"]
     env = dict(os.environ, PYTHONPATH=str(ROOT))
     check = subprocess.run([sys.executable, "-m", "stiefelsym", "check", str(tmp_path / "results.json")],
                            capture_output=True, text=True, env=env, timeout=300)

@@ -105,3 +105,23 @@ def test_a_size_given_without_claims_names_the_claims_it_skips(tmp_path):
                           "--method", "modular", "--no-report"], capture_output=True, text=True, timeout=300)
     assert out.returncode == 0, out.stderr
     assert "note: (3,2): 1 of 2 claims are not stated at this size and skip it: r-one" in out.stderr, out.stderr
+
+
+def _derivative_along_a_gradient(s):
+    return {"d": s.d(lambda t: t.tr(t.X.T @ t.P), s.gradient(_H))}
+
+
+def _scaled_gradient(s):
+    g = s.gradient(_H)
+    return {"d": (2 * g)[0] - 2 * g["X"]}
+
+
+@pytest.mark.parametrize("func, words", [
+    (_derivative_along_a_gradient, "a derivative along a gradient"),
+    (_scaled_gradient, "arithmetic on a gradient"),
+])
+@pytest.mark.parametrize("method", ["exact", "modular", "free"])
+def test_a_gradient_is_not_a_flow_nor_a_tuple_to_repeat(func, words, method):
+    res = run_one(_claim(func, "gradient-misused"), None if method == "free" else Size(3, 2), method, seed=1)
+    assert res.verdict == ("undecided" if method == "free" else "error"), res.line()
+    assert words in res.message, res.message

@@ -687,7 +687,7 @@ def _skipped_notes(claims: list[Claim], sizes: tuple[Size, ...]) -> list[str]:
     notes = []
     for s in sizes:
         skip = [c.id for c in claims if not c.sizes.admits(s.n, s.r)]
-        if skip:
+        if skip and len(skip) < len(claims):    # none stated there: the plan refuses the size
             shown = ", ".join(skip[:8]) + (f" and {len(skip) - 8} more" if len(skip) > 8 else "")
             notes.append(f"note: ({s.n},{s.r}): {len(skip)} of {len(claims)} claims are not stated at this size and "
                          f"skip it: {shown} (`stiefelsym show CLAIM` gives a claim's sizes)")

@@ -734,13 +734,21 @@ def _m_realify(s, U, V):
     return _call(s, "realify", (U._r, V._r), U._kind, shape)
 
 
+def _not_a_gradient(t: "Trace", flow: Any) -> None:
+    if type(flow) is Gradient:
+        t.refuse('a derivative along a gradient: a gradient is a covector; write the tangent vector as a dict, '
+                 '{"X": g["X"], "P": g["P"]}')
+
+
 def _m_tangent(s, flow):
     t = s._t
+    _not_a_gradient(t, flow)
     return TraceScene(t, t.g.add("call", (s._r, "tangent", (t.arg(flow),), ())))
 
 
 def _m_d(s, F, flow):
     t = s._t
+    _not_a_gradient(t, flow)
     f, out = t.function(F, 1)
     node = t.g.add("call", (s._r, "d", (f, t.arg(flow)), ()))
     return t.mirror(out, node)
@@ -766,6 +774,12 @@ class Gradient(tuple):
                 raise KeyError(f"a gradient has the components 'X' and 'P' (dH/dX, dH/dP), not {k!r}")
             k = 0 if k == "X" else 1
         return tuple.__getitem__(self, k)
+
+    def _arithmetic(self, *_: Any) -> Any:
+        return tuple.__getitem__(self, 0)._t.refuse(
+            'arithmetic on a gradient, a pair (dH/dX, dH/dP): write it on its components, 2 * g["X"]')
+
+    __add__ = __radd__ = __mul__ = __rmul__ = _arithmetic
 
 
 def _flow_method(name: str):

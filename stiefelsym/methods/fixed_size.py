@@ -729,8 +729,13 @@ def _exact_rank(R: Rank, field: Field, randomized: _RandomizedRank | None = None
             decided, note = _kernel_rank(R, rng, lower)
             if decided is not None:
                 return decided
-        polys = _backend_polynomials(M)
-        bound = _coefficient_rank_bound(polys) if polys is not None else None
+        try:
+            with deadline(SYMBOLIC_RANK_SECONDS if randomized is not None else None,
+                          "the rank bound from rational relations", lambda message: ExactTimeout(message)):
+                polys = _backend_polynomials(M)
+                bound = _coefficient_rank_bound(polys) if polys is not None else None
+        except ExactTimeout:
+            bound = None
         if bound is not None and bound[0] < R.expected:
             return (f"rank <= {bound[0]} over the function field: {bound[1]} (paper: {R.expected}; certain)",
                     "certain")
