@@ -117,3 +117,13 @@ def test_repeated_rows_prove_the_rank_of_the_constraints_in_the_cayley_chart():
 def test_a_wrong_rank_of_the_constraints_fails(shift):
     res = run_exact(_claim(constraint_jacobian(lambda r: r * (r + 1) + shift), "constraints-rank-wrong"), 4, 2, 0)
     assert res.verdict == "fails", res.line()
+
+
+def test_the_zero_matrix_has_rank_zero_said_so():
+    def zero(s):
+        return {"rank": Rank(s.mat([[s.X[0, 0] - s.X[0, 0], s.P[0, 0] * 0]]), 0, generic=True)}
+    res = run_exact(_claim(zero, "zero-rank"), 3, 2, 0)
+    assert res.verdict == "proved" and "the zero matrix" in res.certificate, res.certificate
+    wrong = run_exact(_claim(lambda s: {"rank": Rank(s.mat([[s.X[0, 0] * 0]]), 1, generic=True)}, "zero-rank-1"),
+                      3, 2, 0)
+    assert wrong.verdict == "fails", wrong.line()

@@ -125,3 +125,29 @@ def test_a_gradient_is_not_a_flow_nor_a_tuple_to_repeat(func, words, method):
     res = run_one(_claim(func, "gradient-misused"), None if method == "free" else Size(3, 2), method, seed=1)
     assert res.verdict == ("undecided" if method == "free" else "error"), res.line()
     assert words in res.message, res.message
+
+
+def test_float_and_ball_say_they_skip_dimension_claims(tmp_path):
+    path = tmp_path / "claims.py"
+    path.write_text(textwrap.dedent('''
+        from stiefelsym import Rank, admissible, claim
+
+        @claim("xtx", paper="cond_XP", kind="id", section="2", sizes=admissible(3))
+        def xtx(s):
+            """XᵀX = I_r."""
+            return {"XtX": s.X.T @ s.X - s.Ir}
+
+        @claim("rank-x", paper="cond_XP", kind="dim", section="2", sizes=admissible(3))
+        def rank_x(s):
+            """X has rank r."""
+            return {"rank": Rank(s.X, s.r, generic=True)}
+    '''))
+    base = [sys.executable, "-m", "stiefelsym", "verify", "--claims", str(path), "--size", "3,2", "--no-report"]
+    out = subprocess.run(base + ["--method", "float"], capture_output=True, text=True, timeout=300)
+    assert out.returncode == 0, out.stderr
+    assert "note: --method float skips 1 dimension claim (rank-x)" in out.stderr, out.stderr
+    out = subprocess.run(base + ["rank-x", "--method", "float", "--method", "ball"], capture_output=True, text=True,
+                         timeout=300)
+    assert out.returncode == 2 and "Traceback" not in out.stderr, out.stderr
+    assert "rank-x: a dimension claim (kind 'dim') is an integer, which the float and ball methods do not compute" \
+        in out.stderr, out.stderr

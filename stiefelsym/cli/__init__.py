@@ -682,6 +682,23 @@ def verify(ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tuple[str, ..
                        hard, timeout, memory, jobs, budget, scheduler, max_n)
 
 
+def _dimension_claims_of_point_methods(claims: list[Claim], methods: Sequence[str]) -> None:
+    """float and ball compute no integer: a dimension claim is skipped by them, said in a note, and refused
+    (exit 2) when nothing else would run."""
+    floating = [m for m in methods if m in ("float", "ball")]
+    dims = [c.id for c in claims if c.kind == "dim"]
+    if not floating or not dims:
+        return
+    who = (f"the {floating[0]} method does" if len(floating) == 1
+           else f"the {' and '.join(floating)} methods do")
+    why = f"a dimension claim (kind 'dim') is an integer, which {who} not compute (exact, modular, rational and auto do)"
+    if len(floating) == len(methods) and len(dims) == len(claims):
+        raise InputError(f"{', '.join(dims)}: {why}")
+    shown = ", ".join(dims[:8]) + (f" and {len(dims) - 8} more" if len(dims) > 8 else "")
+    click.echo(f"note: --method {'/'.join(floating)} skips {len(dims)} dimension claim"
+               f"{'' if len(dims) == 1 else 's'} ({shown}): {why}", err=True)
+
+
 def _skipped_notes(claims: list[Claim], sizes: tuple[Size, ...]) -> list[str]:
     """For a --size given without naming claims: at each size, the claims that are not stated there and skip it."""
     notes = []
@@ -821,6 +838,7 @@ def _verify(out: Any, ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tu
         if sizes and not ids and max_n is None and any(m != "free" for m in methods):
             for note in _skipped_notes(claims, sizes):
                 click.echo(note, err=True)
+        _dimension_claims_of_point_methods(claims, methods)
         from stiefelsym.run.runner import engine_methods
         engine = runner.verify
         if scheduler is not None:

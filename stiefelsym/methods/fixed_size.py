@@ -739,6 +739,9 @@ def _exact_rank(R: Rank, field: Field, randomized: _RandomizedRank | None = None
         if bound is not None and bound[0] < R.expected:
             return (f"rank <= {bound[0]} over the function field: {bound[1]} (paper: {R.expected}; certain)",
                     "certain")
+        if bound is not None and bound[0] == 0 == R.expected:
+            return ("the zero matrix: every entry is identically 0 in the chart (its numerator is the zero "
+                    "polynomial), so rank 0 over the function field (paper: 0)", True)
         if bound is not None and lower is not None and lower == bound[0] == R.expected:
             return (f"rank {lower} at an exact rational point (rank >= {lower} over the function field) and rank "
                     f"<= {bound[0]}: {bound[1]}; two-sided (paper: {R.expected})", True)
