@@ -86,25 +86,49 @@ def test_a_long_exact_witness_is_shown_by_its_magnitude():
     assert _short_value("x" * 80).endswith("...")
 
 
-def test_a_size_given_without_claims_names_the_claims_it_skips(tmp_path):
+#: a claims file: one claim at every r, one at r = 1 only, one dimension claim
+CLAIMS_FILE = textwrap.dedent('''
+    from stiefelsym import Rank, admissible, claim
+
+    @claim("every-r", paper="cond_XP", kind="id", section="2", sizes=admissible(4))
+    def every_r(s):
+        """XᵀX = I_r."""
+        return {"XtX": s.X.T @ s.X - s.Ir}
+
+    @claim("r-one", paper="cond_XP", kind="id", section="2", sizes=admissible(4, r_max=1))
+    def r_one(s):
+        """XᵀX = 1 at r = 1."""
+        return {"XtX": s.X.T @ s.X - s.Ir}
+
+    @claim("rank-x", paper="cond_XP", kind="dim", section="2", sizes=admissible(4))
+    def rank_x(s):
+        """X has rank r."""
+        return {"rank": Rank(s.X, s.r, generic=True)}
+''')
+
+
+def _verify(tmp_path, *args):
     path = tmp_path / "claims.py"
-    path.write_text(textwrap.dedent('''
-        from stiefelsym import admissible, claim
+    path.write_text(CLAIMS_FILE)
+    return subprocess.run([sys.executable, "-m", "stiefelsym", "verify", "--claims", str(path), "--size", "3,2",
+                           "--no-report", *args], capture_output=True, text=True, timeout=300)
 
-        @claim("every-r", paper="cond_XP", kind="id", section="2", sizes=admissible(4))
-        def every_r(s):
-            """XᵀX = I_r."""
-            return {"XtX": s.X.T @ s.X - s.Ir}
 
-        @claim("r-one", paper="cond_XP", kind="id", section="2", sizes=admissible(4, r_max=1))
-        def r_one(s):
-            """XᵀX = 1 at r = 1."""
-            return {"XtX": s.X.T @ s.X - s.Ir}
-    '''))
-    out = subprocess.run([sys.executable, "-m", "stiefelsym", "verify", "--claims", str(path), "--size", "3,2",
-                          "--method", "modular", "--no-report"], capture_output=True, text=True, timeout=300)
+def test_a_size_given_without_claims_names_the_claims_it_skips(tmp_path):
+    out = _verify(tmp_path, "--method", "modular")
     assert out.returncode == 0, out.stderr
-    assert "note: (3,2): 1 of 2 claims are not stated at this size and skip it: r-one" in out.stderr, out.stderr
+    assert "note: (3,2): 1 of 3 claims are not stated at this size and skip it: r-one" in out.stderr, out.stderr
+
+
+def test_float_and_ball_say_they_skip_dimension_claims(tmp_path):
+    out = _verify(tmp_path, "--method", "float")
+    assert out.returncode == 0, out.stderr
+    assert "note: --method float skips 1 dimension claim (rank-x)" in out.stderr, out.stderr
+    out = _verify(tmp_path, "rank-x", "--method", "float", "--method", "ball")
+    assert out.returncode == 2 and "Traceback" not in out.stderr, out.stderr
+    assert "rank-x: a dimension claim (kind 'dim') is an integer, which the float and ball methods do not compute" \
+        in out.stderr, out.stderr
+
 
 
 def _derivative_along_a_gradient(s):
@@ -125,29 +149,3 @@ def test_a_gradient_is_not_a_flow_nor_a_tuple_to_repeat(func, words, method):
     res = run_one(_claim(func, "gradient-misused"), None if method == "free" else Size(3, 2), method, seed=1)
     assert res.verdict == ("undecided" if method == "free" else "error"), res.line()
     assert words in res.message, res.message
-
-
-def test_float_and_ball_say_they_skip_dimension_claims(tmp_path):
-    path = tmp_path / "claims.py"
-    path.write_text(textwrap.dedent('''
-        from stiefelsym import Rank, admissible, claim
-
-        @claim("xtx", paper="cond_XP", kind="id", section="2", sizes=admissible(3))
-        def xtx(s):
-            """XᵀX = I_r."""
-            return {"XtX": s.X.T @ s.X - s.Ir}
-
-        @claim("rank-x", paper="cond_XP", kind="dim", section="2", sizes=admissible(3))
-        def rank_x(s):
-            """X has rank r."""
-            return {"rank": Rank(s.X, s.r, generic=True)}
-    '''))
-    base = [sys.executable, "-m", "stiefelsym", "verify", "--claims", str(path), "--size", "3,2", "--no-report"]
-    out = subprocess.run(base + ["--method", "float"], capture_output=True, text=True, timeout=300)
-    assert out.returncode == 0, out.stderr
-    assert "note: --method float skips 1 dimension claim (rank-x)" in out.stderr, out.stderr
-    out = subprocess.run(base + ["rank-x", "--method", "float", "--method", "ball"], capture_output=True, text=True,
-                         timeout=300)
-    assert out.returncode == 2 and "Traceback" not in out.stderr, out.stderr
-    assert "rank-x: a dimension claim (kind 'dim') is an integer, which the float and ball methods do not compute" \
-        in out.stderr, out.stderr
