@@ -127,3 +127,17 @@ def test_the_zero_matrix_has_rank_zero_said_so():
     wrong = run_exact(_claim(lambda s: {"rank": Rank(s.mat([[s.X[0, 0] * 0]]), 1, generic=True)}, "zero-rank-1"),
                       3, 2, 0)
     assert wrong.verdict == "fails", wrong.line()
+
+
+def test_rows_dependent_over_the_function_field_only_are_not_a_rank_two():
+    """(x, y) and (x², xy) are independent over Q as coefficient vectors (the bound says <= 2) but dependent over
+    the function field: the printed rank 2 must fail, not be proved from the bound and a point."""
+    def dependent(s):
+        x, y = s.X[0, 0], s.X[1, 0]
+        return {"rank": Rank(s.mat([[x, y], [x * x, x * y]]), 2, generic=True)}
+    for method in ("exact", "modular"):
+        from stiefelsym.claims import Size
+        from stiefelsym.run.runner import run_one
+        res = run_one(_claim(dependent, "dependent-rows"), Size(3, 2), method, 0)
+        assert res.verdict in ("fails", "inconclusive"), res.line()
+    assert run_exact(_claim(dependent, "dependent-rows"), 3, 2, 0).verdict == "fails"
