@@ -20,10 +20,9 @@ import signal
 import sys
 import threading
 import time
-from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Callable, Iterable, Mapping
+from typing import Any, Callable, Iterable, Literal, Mapping
 
 from stiefelsym.ir.statements import Count as Count, Inverse as Inverse, Rank as Rank, RightInverse as RightInverse  # the statements a claim returns (re-exported)
 
@@ -38,47 +37,69 @@ class ClaimTimeout(ValueError):
     """A claim's own code (its file's import, a size condition, its erratum sizes) did not finish."""
 
 
-@contextmanager
-def deadline(seconds: float | None, what: str, timeout: Callable[[str], BaseException] = ClaimTimeout):
+#: after a deadline has expired, its alarm comes again every so many seconds until its block is left
+REFIRE_SECONDS = 0.05
+
+
+class deadline:
     """Interrupt Python code that runs past ``seconds`` with ``timeout(message)`` (main thread;
-    nests with an outer deadline; ``None``: no deadline)."""
-    if seconds is None or not hasattr(signal, "SIGALRM") \
-            or threading.current_thread() is not threading.main_thread():
-        yield
-        return
-    outer_left, _ = signal.getitimer(signal.ITIMER_REAL)
-    limit = min(seconds, outer_left) if outer_left > 0 else seconds
+    nests with an outer deadline; ``None``: no deadline).
 
-    raised: list[BaseException] = []
+    The alarm repeats every REFIRE_SECONDS until the block is left: a timeout that a handler on the way
+    swallows (an ``except Exception`` that falls back to something else, a weakref callback or a
+    ``__del__``, whose exceptions Python ignores) is raised again in the code the deadline limits, so no
+    handler can turn the deadline off.  While the deadline is being armed or the block left (in
+    :meth:`__exit__`, which disarms it) the alarm raises nothing."""
 
-    def expire(signum, frame):
-        raised.append(timeout(f"{what} did not finish within {limit:.0f} s"))
-        raise raised[-1]
+    def __init__(self, seconds: float | None, what: str,
+                 timeout: Callable[[str], BaseException] = ClaimTimeout) -> None:
+        self.seconds, self.what, self.timeout = seconds, what, timeout
+        self.armed = False
+        self.raised: list[BaseException] = []
 
-    old_hook = sys.unraisablehook
+    def __enter__(self) -> "deadline":
+        if self.seconds is None or not hasattr(signal, "SIGALRM") \
+                or threading.current_thread() is not threading.main_thread():
+            return self
+        self.outer = signal.getitimer(signal.ITIMER_REAL)
+        left = self.outer[0]
+        self.limit = min(self.seconds, left) if left > 0 else self.seconds
+        self.old_hook = sys.unraisablehook
+        sys.unraisablehook = self._swallowed
+        # the C module's signal(): the same handlers, without the enum conversion of the signal
+        # module's wrapper (a few microseconds, on every exact run)
+        self.old = _signal.signal(signal.SIGALRM, self._expire)
+        self.armed = True
+        self.t0 = time.monotonic()
+        signal.setitimer(signal.ITIMER_REAL, self.limit, REFIRE_SECONDS)
+        return self
 
-    def swallowed(info):
-        # the alarm came while Python ran code whose exceptions it ignores (a weakref callback such as
-        # WeakSet's, a __del__, run by the garbage collector): the timeout is not lost (nor printed as
-        # "Exception ignored in ..."), it is raised again a millisecond later, in the code it limits
-        if raised and info.exc_value is raised[-1]:
-            signal.setitimer(signal.ITIMER_REAL, 1e-3)
-        else:
-            old_hook(info)
-    # the C module's signal(): the same handlers, without the enum conversion of the signal
-    # module's wrapper (a few microseconds, on every exact run)
-    old = _signal.signal(signal.SIGALRM, expire)
-    sys.unraisablehook = swallowed
-    t0 = time.monotonic()
-    signal.setitimer(signal.ITIMER_REAL, limit)
-    try:
-        yield
-    finally:
+    def _expire(self, signum: int, frame: Any) -> None:
+        if frame is not None and frame.f_code in _OWN:
+            return      # entering (the block, not yet begun, gets the next alarm) or leaving (disarmed there)
+        self.raised.append(self.timeout(f"{self.what} did not finish within {self.limit:.0f} s"))
+        raise self.raised[-1]
+
+    def _swallowed(self, info: Any) -> None:
+        # the alarm came while Python ran code whose exceptions it ignores: not printed as "Exception
+        # ignored in ...", and raised again at the next alarm, in the code the deadline limits
+        if not (self.raised and info.exc_value is self.raised[-1]):
+            self.old_hook(info)
+
+    def __exit__(self, *exc: Any) -> Literal[False]:
+        if not self.armed:
+            return False
+        self.armed = False
         signal.setitimer(signal.ITIMER_REAL, 0)
-        _signal.signal(signal.SIGALRM, old)
-        sys.unraisablehook = old_hook
-        if outer_left > 0:
-            signal.setitimer(signal.ITIMER_REAL, max(outer_left - (time.monotonic() - t0), 1e-3))
+        _signal.signal(signal.SIGALRM, self.old)
+        sys.unraisablehook = self.old_hook
+        left, every = self.outer
+        if left > 0:
+            signal.setitimer(signal.ITIMER_REAL, max(left - (time.monotonic() - self.t0), 1e-3), every)
+        return False
+
+
+_OWN = (deadline.__enter__.__code__, deadline.__exit__.__code__)
 
 
 KINDS = ("id", "lax", "pb", "dim", "not", "geo")

@@ -203,3 +203,42 @@ def test_tangent_scene_parameters_are_constants_lifted_once():
     assert (dl - s.lam * s.kappa * flow["X"]).is_zero()
     # a derivative that forgets the product rule is told apart
     assert not (dl - s.lam * s.kappa * s.X).is_zero()
+
+
+def test_a_deadline_whose_timeout_a_handler_swallows_fires_again():
+    """A timeout raised inside an ``except Exception`` that falls back to something else (the engine has
+    such fallbacks) does not end the deadline: the alarm repeats until the block is left, so a long
+    computation after the fallback is still interrupted."""
+    import time
+    before = signal.getsignal(signal.SIGALRM)
+    swallowed = []
+    t0 = time.monotonic()
+    with pytest.raises(ClaimTimeout):
+        with deadline(0.05, "a fallback and a loop"):
+            try:
+                while True:         # the first alarm comes here, and is swallowed
+                    pass
+            except Exception as exc:    # noqa: BLE001 - the trick under test
+                swallowed.append(exc)
+            while time.monotonic() - t0 < 5:
+                pass
+    assert swallowed and isinstance(swallowed[0], ClaimTimeout)
+    assert time.monotonic() - t0 < 2
+    assert signal.getsignal(signal.SIGALRM) == before
+    assert signal.getitimer(signal.ITIMER_REAL) == (0.0, 0.0)
+
+
+def test_nested_deadlines_restore_the_outer_one():
+    import time
+    with pytest.raises(ClaimTimeout, match="outer"):
+        with deadline(0.3, "outer"):
+            with pytest.raises(ClaimTimeout, match="inner"):
+                with deadline(0.05, "inner"):
+                    while True:
+                        pass
+            left, every = signal.getitimer(signal.ITIMER_REAL)
+            assert 0 < left < 0.3 and every > 0
+            t_end = time.monotonic() + 5
+            while time.monotonic() < t_end:
+                pass
+    assert signal.getitimer(signal.ITIMER_REAL) == (0.0, 0.0)
