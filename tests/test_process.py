@@ -624,7 +624,11 @@ def _abort(*args, **kwargs):
     """Stands for flint aborting when a native allocation fails under the memory budget."""
     import faulthandler
     faulthandler.disable()          # (pytest's dump of the aborting child would only be noise)
+    os.write(2, FLINT_WORDS + b"\n")     # what flint prints before it aborts
     os.abort()
+
+
+FLINT_WORDS = b"FLINT exception (General error): Unable to allocate memory"
 
 
 def _attempt_in_a_worker(task):
@@ -687,6 +691,8 @@ def test_a_symbolic_attempt_that_exceeds_memory_in_a_worker_leaves_the_worker_al
     assert verdict1 == verdict2 == "inconclusive"
     assert message1.startswith("the symbolic attempt ended without a verdict: the child process ")
     assert ("ran out of memory" if dies is _hoard else "killed by SIGABRT") in message1
+    if dies is _abort:      # flint's words are in the record, not printed raw on the run's standard error
+        assert f"its last words: {FLINT_WORDS.decode()}" in message1
 
 
 @needs_fork
@@ -859,3 +865,14 @@ def test_a_worker_killed_by_sigabrt_is_said_to_have_aborted_as_flint_does():
         (outcome,) = [o for _, o in pool.run(["only"])]
     assert outcome.kind == "died", outcome
     assert "killed by SIGABRT; a native library aborted, as flint does" in outcome.message, outcome.message
+
+
+@needs_fork
+def test_an_isolated_child_s_standard_error_is_passed_on_when_it_answers(capfd):
+    from stiefelsym.run.isolate import run_isolated
+
+    def speaks():
+        print("a line of the claim", file=sys.stderr)
+        return 7
+    assert run_isolated(speaks, 30, str) == 7
+    assert "a line of the claim" in capfd.readouterr().err

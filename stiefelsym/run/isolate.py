@@ -11,6 +11,7 @@ import os
 import pickle
 import select
 import signal
+import sys
 import time
 from typing import Any, Callable
 
@@ -36,11 +37,14 @@ def run_isolated(fn: Callable[[], Any], seconds: float, describe: Callable[[Base
     prctl = _death_signal_setup()
     parent = os.getpid()
     rfd, wfd = os.pipe()
+    err = _capture()
     gc.freeze()    # keep the parent's objects out of the child's collections (fewer copied pages)
     pid = os.fork()
     if pid == 0:   # the child: compute, send, exit without running the parent's cleanup
         os.close(rfd)
         try:
+            os.dup2(err, 2)     # its standard error, read by the parent (see _said)
+            os.close(err)
             if prctl:
                 prctl(1, signal.SIGKILL)     # PR_SET_PDEATHSIG: die with the parent, never outlive it
                 if os.getppid() != parent:
@@ -57,18 +61,58 @@ def run_isolated(fn: Callable[[], Any], seconds: float, describe: Callable[[Base
             os._exit(0)
     os.close(wfd)
     gc.unfreeze()
-    data = read_pipe(rfd, seconds, lambda: _kill(pid))
+    try:
+        data = read_pipe(rfd, seconds, lambda: _kill(pid))
+        if data is not None:
+            _, status = os.waitpid(pid, 0)
+    finally:
+        said = _said(err)
     if data is None:
+        _forward(said)
         raise HardTimeout()
-    _, status = os.waitpid(pid, 0)
     if not data:
-        raise ChildDied(f"the child process died ({how_it_ended(status)})")
+        last = [line for line in said.splitlines() if line.strip()][-1:]
+        raise ChildDied(f"the child process died ({how_it_ended(status)}"
+                        + (f"; its last words: {last[0].strip()[:MESSAGE_CHARS]}" if last else "") + ")")
+    _forward(said)
     kind, value = pickle.loads(data)
     if kind == "memory":
         raise ChildDied(f"the child process ran out of memory ({value})")
     if kind == "error":
         raise ChildError(value)
     return value
+
+
+#: the longest line of a dead child's standard error quoted in its ChildDied message
+MESSAGE_CHARS = 200
+
+
+def _capture() -> int:
+    """A file descriptor of an anonymous file for a child's standard error (in memory where the platform has
+    memfd_create)."""
+    if hasattr(os, "memfd_create"):
+        return os.memfd_create("stiefelsym-child-stderr")
+    import tempfile
+    return os.dup(tempfile.TemporaryFile().fileno())
+
+
+def _said(fd: int) -> str:
+    """What a child wrote to its standard error (the file of :func:`_capture`, closed here)."""
+    try:
+        os.lseek(fd, 0, os.SEEK_SET)
+        chunks = []
+        while chunk := os.read(fd, 1 << 16):
+            chunks.append(chunk)
+        return b"".join(chunks).decode("utf-8", "replace")
+    finally:
+        os.close(fd)
+
+
+def _forward(text: str) -> None:
+    """A child's standard error, passed on to this process's (where a run prints what claims print)."""
+    if text:
+        sys.stderr.write(text)
+        sys.stderr.flush()
 
 
 def how_it_ended(status: int) -> str:
