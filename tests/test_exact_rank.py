@@ -141,3 +141,15 @@ def test_rows_dependent_over_the_function_field_only_are_not_a_rank_two():
         res = run_one(_claim(dependent, "dependent-rows"), Size(3, 2), method, 0)
         assert res.verdict in ("fails", "inconclusive"), res.line()
     assert run_exact(_claim(dependent, "dependent-rows"), 3, 2, 0).verdict == "fails"
+
+
+def test_a_user_s_rank_is_quoted_as_claimed_and_the_catalog_s_as_the_paper_s():
+    """The number a rank certificate quotes beside the computed one is the paper's only for the catalog's claims."""
+    import dataclasses
+    modular = lambda c, n, r, seed: methods.run_points(c, n, r, "modular", seed)    # noqa: E731
+    for method, claimed in ((run_exact, 2), (modular, 3)):       # (the modular method quotes a rank it refutes)
+        own = _claim(rank_claim(lambda n, r, k=claimed: k))
+        for reviewed, word, other in ((False, "claimed", "paper"), (True, "paper", "claimed")):
+            res = method(dataclasses.replace(own, reviewed=reviewed), 3, 1, 0)
+            said = " ".join([res.certificate] + [ch.detail or "" for ch in res.checks])
+            assert f"{word}: {claimed}" in said and other not in said, said

@@ -682,6 +682,11 @@ def verify(ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tuple[str, ..
                        hard, timeout, memory, jobs, budget, scheduler, max_n)
 
 
+def _first_few(ids: list[str], few: int = 8) -> str:
+    """The first ``few`` ids, and how many more."""
+    return ", ".join(ids[:few]) + (f" and {len(ids) - few} more" if len(ids) > few else "")
+
+
 def _dimension_claims_of_point_methods(claims: list[Claim], methods: Sequence[str]) -> None:
     """float and ball compute no integer: a dimension claim is skipped by them, said in a note, and refused
     (exit 2) when nothing else would run."""
@@ -694,7 +699,7 @@ def _dimension_claims_of_point_methods(claims: list[Claim], methods: Sequence[st
     why = f"a dimension claim (kind 'dim') is an integer, which {who} not compute (exact, modular, rational and auto do)"
     if len(floating) == len(methods) and len(dims) == len(claims):
         raise InputError(f"{', '.join(dims)}: {why}")
-    shown = ", ".join(dims[:8]) + (f" and {len(dims) - 8} more" if len(dims) > 8 else "")
+    shown = _first_few(dims)
     click.echo(f"note: --method {'/'.join(floating)} skips {len(dims)} dimension claim"
                f"{'' if len(dims) == 1 else 's'} ({shown}): {why}", err=True)
 
@@ -705,7 +710,7 @@ def _skipped_notes(claims: list[Claim], sizes: tuple[Size, ...]) -> list[str]:
     for s in sizes:
         skip = [c.id for c in claims if not c.sizes.admits(s.n, s.r)]
         if skip and len(skip) < len(claims):    # none stated there: the plan refuses the size
-            shown = ", ".join(skip[:8]) + (f" and {len(skip) - 8} more" if len(skip) > 8 else "")
+            shown = _first_few(skip)
             notes.append(f"note: ({s.n},{s.r}): {len(skip)} of {len(claims)} claims are not stated at this size and "
                          f"skip it: {shown} (`stiefelsym show CLAIM` gives a claim's sizes)")
     return notes
@@ -1061,8 +1066,9 @@ def report(results_file: Path | None, report_dir: Path | None, claims_files: tup
     if bad_meta:
         raise InputError(f"{source}: refused, its meta (the command the file is the run of) is malformed: "
                          f"{'; '.join(bad_meta)}")
-    for r in results:
-        odd = size_method_problems(r.to_json())
+    records = [r.to_json() for r in results]      # (each a deep copy: taken once, read by every check)
+    for r, record in zip(results, records):
+        odd = size_method_problems(record)
         if odd:
             raise InputError(f"{source}: refused, record of {r.claim!r}: {odd[0]}")
     problems = certificate_problems(results)
@@ -1071,16 +1077,16 @@ def report(results_file: Path | None, report_dir: Path | None, claims_files: tup
                          "(`stiefelsym check` re-checks every record)")
     files = list(claims_files) or list((meta or {}).get("claims_files") or [])
     registry, user = _registry(files or None)
-    reruns = rerun_problems([r.to_json() for r in results], meta, run_origin(getattr(user, "origin", None), files, meta))
+    reruns = rerun_problems(records, meta, run_origin(getattr(user, "origin", None), files, meta))
     if reruns:
         raise InputError(f"{source}: refused, {len(reruns)} record(s) whose rerun command is not their own: "
                          f"{reruns[0]} (`stiefelsym check` re-checks every record)")
-    for r in results:
+    for r, record in zip(results, records):
         cid = getattr(r, "claim", None)
         if cid not in registry:
             raise InputError(f"{source}: refused, record of {cid!r}: no such claim in the catalog or the claims "
                              "files the run named (pass them with --claims)")
-        edits = claim_field_edits(r.to_json(), registry.get(cid))
+        edits = claim_field_edits(record, registry.get(cid))
         if edits:
             raise InputError(f"{source}: refused, record of {cid!r}: its {', '.join(edits)} "
                              f"{'is' if len(edits) == 1 else 'are'} not the claim's (`stiefelsym check` re-checks "
@@ -1098,11 +1104,11 @@ def report(results_file: Path | None, report_dir: Path | None, claims_files: tup
     if unbound:
         raise InputError(f"{source}: refused, {len(unbound)} proof(s) for every n, r whose certificate is not their "
                          f"claim's: {unbound[0]} (`stiefelsym check` re-checks every record)")
-    unstated = unstated_runs([r.to_json() for r in results], registry, meta)
+    unstated = unstated_runs(records, registry, meta)
     if unstated:
         raise InputError(f"{source}: refused, {len(unstated)} record(s) of runs its claim's statement or its command did "
                          f"not make: {unstated[0]} (a results file is the whole run of its command)")
-    missing = missing_runs([r.to_json() for r in results], registry, meta)
+    missing = missing_runs(records, registry, meta)
     if missing:
         raise InputError(f"{source}: refused, {len(missing)} run(s) its command planned have no record: {missing[0]} "
                          "(a results file is the whole run of its command)")

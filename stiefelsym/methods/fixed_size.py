@@ -15,7 +15,9 @@ and a check without entries is an error under every method.
 """
 from __future__ import annotations
 
+import contextvars
 import dataclasses
+import functools
 import gc
 import math
 import os
@@ -85,6 +87,34 @@ def check_budget(method: str, n: int, r: int, claim: Claim | None = None, budget
     if claim is None or budget is None or method == "free":
         return 0.0
     return costmodel.check(method, claim, n, r, budget)
+
+
+#: whose number a dimension claim's message quotes beside the computed one: the paper's for the catalog's
+#: claims, the claim's own for a user's (set for the run of one claim by :func:`_quoting`)
+_EXPECTED_BY: contextvars.ContextVar[str] = contextvars.ContextVar("expected_by", default="claimed")
+
+
+def _stated(k: Any) -> str:
+    """The number the claim states, as a message quotes it: "paper: k" (the catalog) or "claimed: k"."""
+    return f"{_EXPECTED_BY.get()}: {k}"
+
+
+def _who() -> str:
+    """Who states the claim's numbers, as a message names it: "the paper" (the catalog) or "the claim"."""
+    return "the paper" if _EXPECTED_BY.get() == "paper" else "the claim"
+
+
+def _quoting(run: Callable) -> Callable:
+    """A method's run of one claim (its first argument), whose messages quote the claim's numbers as the paper's
+    where the claim is the catalog's, and as claimed otherwise."""
+    @functools.wraps(run)
+    def quoting(claim: Claim, *args: Any, **kwargs: Any) -> Any:
+        token = _EXPECTED_BY.set("paper" if getattr(claim, "reviewed", False) else "claimed")
+        try:
+            return run(claim, *args, **kwargs)
+        finally:
+            _EXPECTED_BY.reset(token)
+    return quoting
 
 
 def time_limit(seconds: float | None):
@@ -286,7 +316,7 @@ def _evaluate(checks: dict[str, Any], field: Field, rank_fn: Callable[[Rank], tu
     for name, value in checks.items():
         if isinstance(value, Count):
             ok = value.value == value.expected
-            detail = f"{value.meaning + ': ' if value.meaning else ''}{value.value} (paper: {value.expected})"
+            detail = f"{value.meaning + ': ' if value.meaning else ''}{value.value} ({_stated(value.expected)})"
             outcomes.append(CheckOutcome(name, "count" if ok else "count-mismatch", detail))
             if not ok:
                 count_problems.append(f"{name}: {detail}")
@@ -363,15 +393,6 @@ def _sympy_rows(M: Mat):
     return [[sympy.sympify(x) for x in row] for row in _symbolic_rows(M)]
 
 
-def _polynomial_rows(M: Mat):
-    """The matrix's rows as flint polynomials, each row multiplied by the least common multiple of its
-    entries' denominators (a nonzero factor per row leaves the rank over the function field as it is);
-    None when an entry is not a rational function of the chart parameters."""
-    rows = _symbolic_rows(M)
-    polys = _flint_rows(rows)
-    return polys if polys is not None else _flint_rows_cleared(rows)
-
-
 #: the largest coefficient matrix (rows x columns·monomials) :func:`_coefficient_rank_bound` builds
 COEFFICIENT_BOUND_ENTRIES = 400_000
 
@@ -444,7 +465,9 @@ def _function_field_rank(M: Mat) -> int:
     (Bareiss) elimination over flint's multivariate polynomials, each row multiplied by the least
     common multiple of its entries' denominators (a nonzero factor per row leaves the rank as it is)
     when the entries are rational functions; sympy's DomainMatrix when they are not."""
-    polys = _polynomial_rows(M)
+    rows = _symbolic_rows(M)
+    polys = _flint_rows(rows)
+    polys = polys if polys is not None else _flint_rows_cleared(rows)
     if polys is not None:
         if all(p.is_constant() for row in polys for p in row):     # a matrix of rational numbers
             return flint.fmpq_mat([[p.leading_coefficient() if p != 0 else 0 for p in row]
@@ -720,10 +743,10 @@ def _exact_rank(R: Rank, field: Field, randomized: _RandomizedRank | None = None
         lower = _rank_at_point(M, rng)
         if lower is not None and lower > R.expected:
             return (f"rank {lower} at an exact rational point, so rank >= {lower} over the function field "
-                    f"(paper: {R.expected})", "certain")
+                    f"({_stated(R.expected)})", "certain")
         if lower is not None and lower == R.expected == min(M._shape()):
             return (f"rank {lower} at an exact rational point: full rank over the function field "
-                    f"(paper: {R.expected})", True)
+                    f"({_stated(R.expected)})", True)
         note = ""
         if R.kernel is not None:
             decided, note = _kernel_rank(R, rng, lower)
@@ -737,14 +760,15 @@ def _exact_rank(R: Rank, field: Field, randomized: _RandomizedRank | None = None
         except ExactTimeout:
             bound = None
         if bound is not None and bound[0] < R.expected:
-            return (f"rank <= {bound[0]} over the function field: {bound[1]} (paper: {R.expected}; certain)",
+            return (f"rank <= {bound[0]} over the function field: {bound[1]} ({_stated(R.expected)}; certain)",
                     "certain")
-        if bound is not None and bound[0] == 0 == R.expected:
-            return ("the zero matrix: every entry is identically 0 in the chart (its numerator is the zero "
-                    "polynomial), so rank 0 over the function field (paper: 0)", True)
-        if bound is not None and lower is not None and lower == bound[0] == R.expected:
+        if bound is not None and bound[0] == R.expected and (lower == bound[0] or bound[0] == 0):
+            # two-sided: the rank at a point from below, the bound from above (a rank 0 needs no point)
+            if bound[0] == 0:
+                return ("the zero matrix: every entry is identically 0 in the chart (its numerator is the zero "
+                        f"polynomial), so rank 0 over the function field ({_stated(0)})", True)
             return (f"rank {lower} at an exact rational point (rank >= {lower} over the function field) and rank "
-                    f"<= {bound[0]}: {bound[1]}; two-sided (paper: {R.expected})", True)
+                    f"<= {bound[0]}: {bound[1]}; two-sided ({_stated(R.expected)})", True)
         try:
             with deadline(SYMBOLIC_RANK_SECONDS if randomized is not None else None, "the function-field rank",
                           lambda message: ExactTimeout(message)):
@@ -755,12 +779,12 @@ def _exact_rank(R: Rank, field: Field, randomized: _RandomizedRank | None = None
             ok = generic == R.expected
             kernel = _kernel_certificate(M) if generic < R.expected else ""
             return (f"rank over the function field Q(chart parameters) = {generic} "
-                    f"(paper: {R.expected}); two-sided: exact rank of the generic matrix{kernel}{note}", ok)
+                    f"({_stated(R.expected)}); two-sided: exact rank of the generic matrix{kernel}{note}", ok)
         # the upper bound at random points of prime fields
         if lower is None or lower < R.expected:
             # a point can be special: without the function-field rank a lower rank is not certain
             raise ExactTimeout(f"the function-field rank exceeded {SYMBOLIC_RANK_SECONDS:.0f} s, and the rank "
-                               f"at an exact rational point, {lower}, is below the printed {R.expected}{note}")
+                               f"at an exact rational point, {lower}, is below {_who()}'s {R.expected}{note}")
         D = max(1, minor_degree() if minor_degree else 1)
         joint, pts = 1.0, 0
         while joint > POINTS_TARGET and pts < POINTS_CAP:
@@ -770,7 +794,7 @@ def _exact_rank(R: Rank, field: Field, randomized: _RandomizedRank | None = None
                 continue
             if rk > R.expected:
                 return (f"rank {rk} at a point of GF({p}), so rank >= {rk} over the function field "
-                        f"(paper: {R.expected})", "certain")
+                        f"({_stated(R.expected)})", "certain")
             joint *= min(1.0, D / p)
             pts += 1
         if joint > POINTS_TARGET:
@@ -780,7 +804,7 @@ def _exact_rank(R: Rank, field: Field, randomized: _RandomizedRank | None = None
         return (f"rank >= {lower} (exact rank at a rational point) and rank <= {R.expected} with false-pass "
                 f"probability <= {joint:.1e} (rank {R.expected} at {pts} random points of prime fields "
                 f"p > 2^{PRIME_BITS}; the ({R.expected + 1})-minors have degree <= {D}; the symbolic function-field rank "
-                f"exceeded {SYMBOLIC_RANK_SECONDS:.0f} s); paper: {R.expected}{note}", "ok")
+                f"exceeded {SYMBOLIC_RANK_SECONDS:.0f} s); {_stated(R.expected)}{note}", "ok")
     constant = _rational_constant_matrix(M)
     if constant is not None:
         # every entry a rational number: the matrix is the same at every point of the chart, and its
@@ -788,15 +812,15 @@ def _exact_rank(R: Rank, field: Field, randomized: _RandomizedRank | None = None
         # say how the chart covers T*V), both sides at once
         rank = constant.rank() if M.shape[0] and M.shape[1] else 0
         return (f"a matrix of rational numbers ({M.shape[0]}x{M.shape[1]}, the same at every point of the chart): "
-                f"exact rank {rank} over Q, so rank {rank} at every point; paper: {R.expected}", rank == R.expected)
+                f"exact rank {rank} over Q, so rank {rank} at every point; {_stated(R.expected)}", rank == R.expected)
     const = _constant_minor_rank(M, field)
     if const == R.expected == min(M.shape):
         return (f"a constant nonzero {const}x{const} minor: rank {const} at every point (full rank); "
-                f"paper: {R.expected}", True)
+                f"{_stated(R.expected)}", True)
     generic = _function_field_rank(M)
     if generic == R.expected and const < R.expected:
         raise RankNotDecided(
-            f"rank {generic} over the function field (paper: {R.expected}), and the largest constant nonzero "
+            f"rank {generic} over the function field ({_stated(R.expected)}), and the largest constant nonzero "
             f"minor is {const}x{const}: the rank is at least {const} at every point and {R.expected} at almost "
             f"every point; whether it drops below {R.expected} somewhere on T*V is not decided (no such point "
             f"is known).  A constant nonzero {R.expected}x{R.expected} minor would prove it; for a differential, "
@@ -804,7 +828,7 @@ def _exact_rank(R: Rank, field: Field, randomized: _RandomizedRank | None = None
     ok = generic == R.expected and const == R.expected
     kernel = _kernel_certificate(M) if generic < R.expected else ""
     return (f"a constant nonzero {const}x{const} minor (rank >= {const} at every point) and rank "
-            f"{generic} over the function field (rank <= {generic} at every point); paper: {R.expected}{kernel}", ok)
+            f"{generic} over the function field (rank <= {generic} at every point); {_stated(R.expected)}{kernel}", ok)
 
 
 #: exact rational points at which a kernel certificate's rank bound is sought when the first point is special
@@ -842,9 +866,9 @@ def _kernel_rank(R: Rank, rng: random.Random, lower: int | None) -> tuple[tuple[
     bound = (f"{d} kernel vector{'' if d == 1 else 's'} of the claim, M K = 0 identically in the chart and rank K = {d} at an exact "
              f"rational point, so rank <= {cols} − {d} = {upper} over the function field")
     if upper < R.expected:
-        return (f"{bound} (paper: {R.expected}; certain)", "certain"), ""
+        return (f"{bound} ({_stated(R.expected)}; certain)", "certain"), ""
     if upper > R.expected:
-        return None, f"; the kernel certificate bounds the rank by {upper} only (paper: {R.expected})"
+        return None, f"; the kernel certificate bounds the rank by {upper} only ({_stated(R.expected)})"
     tries = 0
     while (lower is None or lower < upper) and tries < KERNEL_POINTS:
         tries += 1
@@ -856,7 +880,7 @@ def _kernel_rank(R: Rank, rng: random.Random, lower: int | None) -> tuple[tuple[
     if lower > upper:       # M K = 0 and rank K = d at points: impossible, so an internal error
         raise RuntimeError(f"rank {lower} at a point exceeds the kernel certificate's bound {upper}")
     return (f"rank {lower} at an exact rational point (rank >= {lower} over the function field) and {bound}; "
-            f"two-sided (paper: {R.expected})", True), ""
+            f"two-sided ({_stated(R.expected)})", True), ""
 
 
 EQUIVARIANT_REDUCTION = (
@@ -955,6 +979,7 @@ def _refused_nonzero(claim: Claim, n: int, r: int, method: str, seed: int | None
     return res
 
 
+@_quoting
 def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = None,
               time_budget: float | None = EXACT_TIME_LIMIT) -> Result:
     func = func or claim.func
@@ -1996,7 +2021,7 @@ def _point_rank(R: Rank, field: Field, bound_text: str) -> tuple[str, str]:
     exact = field.name == "rational"
     where = "at this exact point" if exact else f"at this point mod p = {field.p}"
     if rk > R.expected:
-        return f"rank {rk} {where} exceeds the paper's {R.expected} (certain: generic rank >= {rk})", "certain"
+        return f"rank {rk} {where} exceeds {_who()}'s {R.expected} (certain: generic rank >= {rk})", "certain"
     if rk < R.expected:
         size = min(R.matrix._a.shape)
         if R.expected > size:
@@ -2004,9 +2029,9 @@ def _point_rank(R: Rank, field: Field, bound_text: str) -> tuple[str, str]:
             return (f"rank {rk} {where}; the matrix is {R.matrix._a.shape[0]}x{R.matrix._a.shape[1]}: no rank "
                     f"exceeds its full size {size} < {R.expected} (certain)"), "certain"
         if exact and not R.generic:
-            return (f"rank {rk} {where} of T*V, below the rank {R.expected} the paper states at every point "
+            return (f"rank {rk} {where} of T*V, below the rank {R.expected} {_who()} states at every point "
                     f"(certain)"), "certain"
-        return f"rank {rk} {where} (paper: {R.expected}); a special point or a wrong count", "mismatch"
+        return f"rank {rk} {where} ({_stated(R.expected)}); a special point or a wrong count", "mismatch"
     generic = (f"rank {rk} {where}: generic rank >= {rk} (certain); generic rank <= {rk} "
                f"unless a ({rk + 1})-minor ({bound_text}) vanishes here")
     if not R.generic:
@@ -2025,7 +2050,7 @@ def _point_rank(R: Rank, field: Field, bound_text: str) -> tuple[str, str]:
 def _constant_rank(R: Rank) -> tuple[str, str]:
     rk = RationalField().rank(R.matrix._a.tolist())
     return (f"the matrix is constant (no parameter enters); its exact rank over Q is {rk} at every point "
-            f"(paper: {R.expected})", "ok" if rk == R.expected else "certain")
+            f"({_stated(R.expected)})", "ok" if rk == R.expected else "certain")
 
 
 def _prepare(options: dict | None) -> dict | None:
@@ -2054,6 +2079,7 @@ def _hard_or_random(run: Callable[[dict | None], Result], options: dict | None) 
     return res
 
 
+@_quoting
 def run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callable | None = None,
                trials: int | None = None, options: dict | None = None, target: float = POINTS_TARGET,
                least: int = POINTS_MIN) -> Result:
@@ -2398,6 +2424,7 @@ def _size(S: int) -> str:
 # ---------------------------------------------------------------------------
 # floating point with error model and escalation
 
+@_quoting
 def run_float(claim: Claim, n: int, r: int, seed: int, func: Callable | None = None,
               options: dict | None = None) -> Result:
     """float64 with a running error bound; mpmath at 30, 60, 120 digits when float64 cannot decide.
@@ -2539,7 +2566,7 @@ def _float_component(claim: Claim, n: int, r: int, seed: int, func: Callable, op
                     elif isinstance(value, Count):
                         if value.value != value.expected:
                             counts.append(f"{name}: {value.meaning + ': ' if value.meaning else ''}"
-                                          f"{value.value} (paper: {value.expected})")
+                                          f"{value.value} ({_stated(value.expected)})")
                     else:
                         for pos, x in _float_entries(value, name, field.u):
                             if not isinstance(x, ErrNum):
@@ -2710,6 +2737,7 @@ BALL_CERTIFICATE = (
     "entry is enclosed in a ball that contains its exact value at this exact point of T*V (parameters k/2^40, exact constants), by the inclusion property of the balls")
 
 
+@_quoting
 def run_ball(claim: Claim, n: int, r: int, seed: int, func: Callable | None = None,
              options: dict | None = None) -> Result:
     """Rigorous ball arithmetic at the exact point the float method draws: float64 midpoint-radius
@@ -2822,7 +2850,7 @@ def _ball_component(claim: Claim, n: int, r: int, seed: int, func: Callable, opt
                     elif isinstance(value, Count):
                         if value.value != value.expected:
                             counts.append(f"{name}: {value.meaning + ': ' if value.meaning else ''}"
-                                          f"{value.value} (paper: {value.expected})")
+                                          f"{value.value} ({_stated(value.expected)})")
                     else:
                         encs.append(_ball_entries(value, name, field))
             except DegenerateError as exc:

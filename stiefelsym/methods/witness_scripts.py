@@ -87,18 +87,18 @@ def template_size(cid: str) -> tuple[int, int] | None:
 def count_values(detail: str) -> tuple[int, int] | None:
     """(computed, printed) from the detail of a Count or Rank check: "...: 1 (paper: 0)", or
     "... rank 12 over the function field ...; paper: 13", "... exact rank 12 over Q, ...; paper: 13"."""
-    m = re.search(r"(\d+) \(paper: (\d+)\)", detail)
+    m = re.search(r"(\d+) \((?:paper|claimed): (\d+)\)", detail)
     if m:
         return int(m.group(1)), int(m.group(2))
     k = re.search(r"rank (\d+) (?:over the function field|over Q\b|at an exact)", detail)
-    p = re.search(r"paper: (\d+)", detail)
+    p = re.search(r"(?:paper|claimed): (\d+)", detail)
     return (int(k.group(1)), int(p.group(1))) if k and p else None
 
 
 def count_meaning(detail: str) -> str:
     """What a Count check counts, from its detail "the generic orbit is regular (1) or singular (0):
     1 (paper: 0)"; "" for a rank's detail."""
-    m = re.match(r"(.*): \d+ \(paper: \d+\)$", detail.strip())
+    m = re.match(r"(.*): \d+ \((?:paper|claimed): \d+\)$", detail.strip())
     return m.group(1) if m and len(m.group(1)) < 160 else ""
 
 
