@@ -33,7 +33,12 @@ METADATA_SECONDS = 10.0
 IMPORT_SECONDS = 120.0
 
 
-class ClaimTimeout(ValueError):
+class Expired(Exception):
+    """A deadline expired (:class:`deadline`): what a fallback that catches ``Exception`` must let through, so
+    that no memoized answer is made of a computation the deadline stopped."""
+
+
+class ClaimTimeout(Expired, ValueError):
     """A claim's own code (its file's import, a size condition, its erratum sizes) did not finish."""
 
 

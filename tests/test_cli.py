@@ -402,6 +402,14 @@ def test_report_bad_results_file_is_one_line(run, tmp_path):
     assert "not a stiefelsym results file" in _one_line_error(run("report", "--results", "junk.json"))
     (tmp_path / "wrong.json").write_text('{"results": [{"claim": 1}]}')
     assert "not a stiefelsym results file" in _one_line_error(run("report", "--results", "wrong.json"))
+    # what the JSON decoder itself refuses: values nested deeper than it goes, an integer of more digits than
+    # Python converts; for check as for report
+    (tmp_path / "deep.json").write_text('{"meta": {}, "results": [{"claim": ' + "[" * 100_000 + "]" * 100_000 + "}]}")
+    (tmp_path / "long.json").write_text('{"meta": {}, "results": [{"seed": ' + "7" * 5000 + "}]}")
+    for name in ("deep.json", "long.json"):
+        for command in (("report", "--results", name), ("check", name)):
+            result = run(*command)
+            assert result.exit_code == 2 and "not a stiefelsym results file" in _one_line_error(result), result.output
 
 
 def test_every_kind_is_explained():

@@ -242,3 +242,25 @@ def test_nested_deadlines_restore_the_outer_one():
             while time.monotonic() < t_end:
                 pass
     assert signal.getitimer(signal.ITIMER_REAL) == (0.0, 0.0)
+
+
+def test_a_deadline_that_expires_in_the_division_probe_leaves_no_memoized_answer(monkeypatch):
+    """The division probe's answers are memoized, and it falls back on "" (no division found) for an exception
+    that is not a division: a timeout there must stop the run, not become that answer."""
+    from stiefelsym import admissible
+    from stiefelsym.claims import Claim
+    from stiefelsym.methods import fixed_size
+    from stiefelsym.methods.fixed_size import ExactTimeout, division_probe
+
+    def divides(s):
+        return {"x": s.X.T @ s.X - s.identity(s.r)}
+    claim = Claim(id="probe-expiry", paper=(), kind="id", section="t", func=divides, sizes=admissible(4))
+    real = fixed_size.call_claim
+
+    def expires(func, scene):
+        raise ExactTimeout("the symbolic computation did not finish within 1 s")
+    monkeypatch.setattr(fixed_size, "call_claim", expires)
+    with pytest.raises(ExactTimeout):
+        division_probe(claim, 3, 2)
+    monkeypatch.setattr(fixed_size, "call_claim", real)
+    assert division_probe(claim, 3, 2) == ""

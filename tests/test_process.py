@@ -652,6 +652,28 @@ def test_small_symbolic_attempts_stay_in_the_worker_and_heavy_ones_are_forked():
 
 
 @needs_fork
+def test_the_mutants_of_a_costly_claim_have_their_symbolic_runs_forked():
+    """In the mutation analysis the symbolic runs at n <= 4 stay in the process (thousands of small runs), except
+    the mutants' of a claim whose own symbolic run took MUTANT_ISOLATE_SECONDS there: a mutant can cost far more,
+    and one flint product is out of reach of the signal-based limit, not of a kill."""
+    from stiefelsym.methods import fixed_size as methods
+    ok = _claim("ok", _ok, sizes=admissible(n_max=6))
+    loan = methods.PointLoan(exact_seconds=30)
+    with methods.lending_points(loan):
+        loan.recording = True
+        printed = methods.run_exact_isolated(ok, 3, 2, 0)
+        loan.recording = False
+        assert loan.exact_cost[("ok", 3, 2)] == printed.seconds
+        assert not methods.isolates(ok, 3, 2) and not methods.isolates(ok, 4, 2) and methods.isolates(ok, 5, 2)
+        loan.exact_cost[("ok", 3, 2)] = methods.MUTANT_ISOLATE_SECONDS
+        assert methods.isolates(ok, 3, 2)
+        forked = methods.run_exact_isolated(ok, 3, 2, 0)
+        assert (forked.verdict, forked.certificate) == (printed.verdict, printed.certificate)
+        loan.forget("ok")
+        assert not loan.exact_cost
+
+
+@needs_fork
 def test_a_measured_small_attempt_stays_in_the_worker_unless_its_memory_or_size_is_beyond_the_model(monkeypatch):
     from stiefelsym.claims import load_catalog
     from stiefelsym.methods import costmodel, fixed_size as methods

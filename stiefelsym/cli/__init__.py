@@ -1055,7 +1055,7 @@ def report(results_file: Path | None, report_dir: Path | None, claims_files: tup
         raise InputError(f"results file not found: {source} (run `stiefelsym verify` first)")
     try:
         meta, results = load_results(source)
-    except (OSError, UnicodeDecodeError, ValueError, KeyError, TypeError, AttributeError) as exc:
+    except (OSError, ValueError, KeyError, TypeError, AttributeError, RecursionError) as exc:
         raise InputError(f"{source} is not a stiefelsym results file: {_one_line(exc)}") from None
     from stiefelsym.run.integrity import (MAX_N_CHECKED, certificate_binding_problems, certificate_problems, claim_field_edits,
                             missing_runs, rerun_problems, run_origin, size_method_problems,

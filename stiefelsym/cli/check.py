@@ -42,8 +42,11 @@ def check(results_file: Path, no_rerun: bool, claims_files: tuple[str, ...]) -> 
             raise TypeError("results is not a list of records")
         if not isinstance(meta, dict):
             raise TypeError("meta (the command the file is the run of) is not a mapping")
-    except (OSError, UnicodeDecodeError, json.JSONDecodeError, KeyError, TypeError) as exc:
-        raise InputError(f"{results_file} is not a stiefelsym results file: {exc}") from None
+    except (OSError, ValueError, KeyError, TypeError, RecursionError) as exc:
+        # (ValueError: also bad JSON, bad UTF-8 and an integer of more digits than Python converts;
+        # RecursionError: values nested deeper than the decoder goes)
+        raise InputError(f"{results_file} is not a stiefelsym results file: {type(exc).__name__}: "
+                         f"{str(exc)[:200]}") from None
     problems = meta_problems(meta, METHODS, tuple(HARD_CASES), MAX_N_CHECKED)
     if problems:
         raise InputError(f"{results_file}: its meta (the command the file is the run of) is malformed: "

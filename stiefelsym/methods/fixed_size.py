@@ -33,7 +33,7 @@ from typing import Any, Callable, Iterator
 import numpy as np
 
 from stiefelsym._lazy import lazy
-from stiefelsym.claims import Claim, Count, Rank, deadline
+from stiefelsym.claims import Claim, Count, Expired, Rank, deadline
 from stiefelsym.ir.statements import InverseIdentities
 from stiefelsym.methods import cayley_right, complex_right, costmodel
 from stiefelsym.methods.costmodel import BudgetError as BudgetError  # the methods raise it (re-exported)
@@ -72,7 +72,7 @@ class RankNotDecided(Exception):
     is known): the verdict is ``undecided``, never ``fails`` without a witness."""
 
 
-class ExactTimeout(Exception):
+class ExactTimeout(Expired):
     pass
 
 
@@ -1644,6 +1644,8 @@ def _digest_now(claim: Claim, n: int, r: int, func: Callable) -> str | None:
     try:
         cons = REALIZATIONS[claim.realization or "standard"]
         return compile_claim(func, n, r, (cons.name, cons.build)).digest()
+    except Expired:
+        raise
     except Exception:       # noqa: BLE001 - the claim's graph is refused: the run reports it
         return None
 
@@ -1687,6 +1689,8 @@ def _division_probe(claim: Claim, n: int, r: int, func: Callable | None = None, 
     last: BaseException | None = None
     try:
         key = draw_key(claim, n, r, seed, func)
+    except Expired:
+        raise
     except Exception as exc:   # noqa: BLE001 - the claim's graph is refused: the symbolic run reports it
         if strict:
             return (f"the division probe could not trace the claim at (n={n}, r={r}) ({type(exc).__name__}: "
@@ -1702,6 +1706,8 @@ def _division_probe(claim: Claim, n: int, r: int, func: Callable | None = None, 
             return ""
         except (DegenerateError, ZeroDivisionError) as exc:
             last = exc
+        except Expired:
+            raise       # stopped, not evaluated: no answer (the probe's answers are memoized)
         except Exception as exc:   # noqa: BLE001 - anything else is the symbolic run's to report
             if strict:
                 return (f"the division probe could not evaluate the claim at a point of T*V(n={n}, r={r}) "
@@ -1856,6 +1862,9 @@ class PointLoan:
         #: exact method's one-point rational run for its witness computes, on the same lent points
         #: (see :func:`_rational_witness`)
         self.witnesses: dict[tuple, tuple] = {}
+        #: (claim, n, r) -> seconds of the symbolic run of the claim as printed there: its mutants' symbolic runs
+        #: are forked (killable) where it took MUTANT_ISOLATE_SECONDS or more (see :func:`isolates`)
+        self.exact_cost: dict[tuple, float] = {}
         #: (claim, realization, n, r, seed, id of the function) -> (function, evaluations): the checks of
         #: a run no parameter entered, evaluated over Q (the same for its rational and modular runs, see
         #: :func:`_constant_evaluations`)
@@ -1921,6 +1930,8 @@ class PointLoan:
             del self.witnesses[key]
         for key in [k for k in self.constants if k[0] == claim_id]:
             del self.constants[key]
+        for key in [k for k in self.exact_cost if k[0] == claim_id]:
+            del self.exact_cost[key]
 
 
 def _field_state(f: Any) -> tuple | None:
@@ -3005,10 +3016,15 @@ def _memory_budget() -> float:
         return float(4 << 30)
 
 
+#: a symbolic run of the claim as printed that took this many seconds has its mutants' symbolic runs forked
+MUTANT_ISOLATE_SECONDS = 1.0
+
+
 def isolates(claim: Claim, n: int, r: int, in_worker: bool = False) -> bool:
     """Whether the symbolic attempt at (n, r) runs in its own forked child.  Outside a worker: from
     n = 4 on (n = 5 while lending points to the mutation analysis, :class:`PointLoan`, whose thousands
-    of small runs at n <= 4 would spend more time forking than computing), for the hard time limit.
+    of small runs at n <= 4 would spend more time forking than computing, and there also for the mutants of
+    a claim whose own symbolic run at (n, r) took MUTANT_ISOLATE_SECONDS or more), for the hard time limit.
     In a worker (the worker is killable, but must survive a heavy attempt): from n = 4 on for a claim the
     cost model was not measured on (a user's claim), when the cost model predicts at least ISOLATE_SECONDS,
     and from n = ISOLATE_MIN_N on also when it predicts a peak memory above ISOLATE_MEMORY_FRACTION of the
@@ -3016,7 +3032,11 @@ def isolates(claim: Claim, n: int, r: int, in_worker: bool = False) -> bool:
     if not hasattr(os, "fork"):
         return False
     if not in_worker:
-        return n > (4 if _LOAN is not None else 3)
+        if _LOAN is not None:
+            # a mutant can cost far more than its claim (a change that breaks a cancellation), and one flint
+            # product is not interrupted by the signal-based limit: forked where the claim itself was costly
+            return n > 4 or _LOAN.exact_cost.get((claim.id, n, r), 0.0) >= MUTANT_ISOLATE_SECONDS
+        return n > 3
     model = costmodel.model()
     family = model.family_of(claim)
     if n >= 4 and family is None and not model.factors.get(getattr(claim, "id", None)):
@@ -3047,7 +3067,10 @@ def run_exact_isolated(claim: Claim, n: int, r: int, seed: int, func: Callable |
         time_budget = min(time_budget, _LOAN.exact_seconds)
     if not isolates(claim, n, r, in_worker):
         if not in_worker:
-            return run_exact(claim, n, r, seed, func, time_budget)
+            res = run_exact(claim, n, r, seed, func, time_budget)
+            if _LOAN is not None and _LOAN.recording:
+                _LOAN.exact_cost[(claim.id, n, r)] = res.seconds or 0.0
+            return res
         # in the worker, whose heap (graphs of millions of nodes) every full collection scans again,
         # where a forked child's collections see only its own objects (the worker's are frozen for it)
         with spaced_collections():
