@@ -4,7 +4,8 @@ The flow Ẋ = P, Ṗ = −AX + X·M must keep XᵀX = I_r and XᵀP + PᵀX = 0
 combination of five r×r words, that is a linear question; its answer is an affine space:
 
     python examples/my_correction.py
-    stiefelsym discover --correct examples/my_correction.py:ANSATZ
+
+(from Python only: the discover command runs no code of a file in the process that gives its verdicts)
 
 print  X·M = XXᵀAX − XPᵀP  (the multiplier term of (NE_XP)), plus any multiple of XXᵀP and of
 XXᵀAP − XPᵀAX (XᵀP and XᵀAP − PᵀAX are skew on T*V: they rotate the frame and keep the constraints

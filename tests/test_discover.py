@@ -226,11 +226,38 @@ def test_a_users_own_correction_search_through_the_command_line_and_the_api():
     from stiefelsym.cli import main
     from stiefelsym.analyses.discover import correction_space, load_object
     example = Path(__file__).resolve().parent.parent / "examples" / "my_correction.py"
+    # the command runs no code of a file in the process that gives its verdicts: a search of one's own runs from Python
     r = CliRunner().invoke(main, ["discover", "--correct", f"{example}:ANSATZ"])
-    assert r.exit_code == 0, r.output
-    assert "X·M = XXᵀAX − XPᵀP    [auto proved, free (all n, r) proved]" in r.output
-    sp = correction_space(load_object(str(example), "ANSATZ"), verify=())
+    assert r.exit_code == 2 and "runs no code of a file" in r.output, r.output
+    sp = correction_space(load_object(str(example), "ANSATZ"), verify=("auto", "free"))
     assert (sp.N, sp.dimension) == (5, 2)
+    assert "X·M = XXᵀAX − XPᵀP    [auto proved, free (all n, r) proved]" in "\n".join(sp.lines())
+
+
+def test_a_users_flow_is_traced_in_the_sandbox_so_a_file_that_patches_the_engine_gets_no_verdict(tmp_path):
+    """discover FILE.py:F imported F's file in the verifying process, where its import could replace the engine's
+    functions (run_one giving "proved", the probe's derivatives 0) and have a non-integral reported as proved.  Now
+    F is traced in the claims files' sandbox and only its graphs come back: the engine's seal refuses the file."""
+    from click.testing import CliRunner
+    from stiefelsym.cli import main
+    (tmp_path / "patching.py").write_text(
+        "import stiefelsym.run.runner as _runner\n"
+        "_runner.run_one = lambda *a, **k: None\n\n\n"
+        "def flow(s):\n"
+        "    return {'X': s.P, 'P': -(s.A @ s.X) - s.X @ s.P.T @ s.P + s.X @ s.X.T @ s.A @ s.X}\n", encoding="utf-8")
+    r = CliRunner().invoke(main, ["discover", f"{tmp_path / 'patching.py'}:flow", "--size", "3,2", "--degree", "2",
+                                  "--no-products"])
+    assert r.exit_code == 2 and "the engine was changed by claim code" in r.output, r.output
+    from stiefelsym.run import runner
+    assert runner.run_one.__module__ == "stiefelsym.run.runner"
+    # the same flow without the patch: its one integral (the energy) found and proved
+    (tmp_path / "honest.py").write_text("from helper import flow\n", encoding="utf-8")     # a helper beside it
+    (tmp_path / "helper.py").write_text("\n".join((tmp_path / "patching.py").read_text().splitlines()[3:]) + "\n")
+    r = CliRunner().invoke(main, ["discover", f"{tmp_path / 'honest.py'}:flow", "--size", "3,2", "--degree", "2",
+                                  "--no-products"])
+    assert r.exit_code == 0, r.output
+    assert "I1 = tr(AXXᵀ) + tr(PPᵀ)    [auto proved, free (all n, r) proved]" in r.output
+    assert not [p for p in tmp_path.iterdir() if p.name.startswith(".stiefelsym-discover-")]
 
 
 def test_the_latex_table_of_corrections_breaks_names_and_fits_its_columns(tmp_path):

@@ -316,17 +316,23 @@ def _catalog_module(name: str) -> Any:
     raise ImportError(f"the catalog module {name!r} is not available")
 
 
-def resolve_function(spec: str, table: dict[str, tuple[str, str]]) -> Callable[[Any], Any]:
-    """A function of the scene by catalog name, ``module:function`` or ``file.py:function``."""
+def resolve_function(spec: str, table: dict[str, tuple[str, str]],
+                     sizes: Sequence[Size] = ()) -> Callable[[Any], Any]:
+    """A matrix-valued function of the scene by catalog name, ``module:function`` or ``file.py:function`` (a user's:
+    traced in the claims files' sandbox at ``sizes``, see :func:`confined_function`)."""
     if spec in table:
         mod, fn = table[spec]
         return getattr(_catalog_module(mod), fn)
-    f, _ = resolve_flow(spec)
-    return f
+    parts = spec.split(":")
+    if len(parts) == 2 and all(parts):
+        return confined_function(parts[0], parts[1], "matrix", sizes)
+    raise ValueError(f"unknown function {spec!r}: a catalog name ({', '.join(table)}), module:function or "
+                     "file.py:function")
 
 
 def load_object(mod: str, name: str) -> Any:
-    """The object ``name`` of a module (dotted name) or of a file ``something.py``."""
+    """The object ``name`` of a module (dotted name) or of a file ``something.py``, imported in this process: for
+    the Python API (a library user's own code runs where they call it), never for a command's verdicts."""
     import importlib
     try:
         if mod.endswith(".py"):
@@ -343,9 +349,83 @@ def load_object(mod: str, name: str) -> Any:
         raise ValueError(f"cannot load {mod}:{name}: {exc}") from None
 
 
-def resolve_flow(spec: str) -> tuple[Callable[[Any], Any], str]:
+#: the claim a user's function is wrapped in, to be traced in the claims files' sandbox (confined_function)
+CONFINED_CLAIM = "discover-user-function"
+#: what the wrapping claim returns of the user's function, by the kind of function
+_CONFINED_BODY = {
+    "tangent": 't = _f(s)\n    return {"X": t["X"], "P": t["P"]}',
+    "hamiltonian": 'return {"H": _f(s)}',
+    "matrix": 'return {"L": _f(s)}',
+}
+
+
+def confined_function(mod: str, name: str, how: str, sizes: Sequence[Size] = ()) -> Callable[[Any], Any]:
+    """A user's function of the scene (``how``: "tangent" {"X": Ẋ, "P": Ṗ}, "hamiltonian" a number, "matrix" a
+    matrix), from ``file.py`` or a module, as the discover command uses it: the file is imported and the function
+    traced in the claims files' sandbox (:func:`stiefelsym.run.userfile.load_claims_isolated`; a generated claims
+    file wraps it in one claim), at ``sizes`` and with symbolic sizes, and what comes back is its graphs, replayed
+    on the engine's tracer.  No code of the user's runs in this process, which gives the verdicts: a file that
+    patched the engine here would steer them."""
+    import tempfile
+    from pathlib import Path
+    from stiefelsym.claims import CatalogError
+    from stiefelsym.run.userfile import load_claims_isolated
+    needed = sorted({(z.n, z.r) for z in sizes}) or [(4, 2)]
+    if not name.isidentifier():
+        raise ValueError(f"cannot load {mod}:{name}: {name!r} is not a name")
+    if mod.endswith(".py"):
+        path = Path(mod).resolve()
+        if not path.is_file():
+            raise ValueError(f"cannot load {mod}:{name}: no such file")
+        load = (f"_spec = importlib.util.spec_from_file_location('_stiefelsym_discover_user', {str(path)!r})\n"
+                "_m = importlib.util.module_from_spec(_spec)\n_spec.loader.exec_module(_m)\n")
+    elif all(part.isidentifier() for part in mod.split(".")):
+        load = f"_m = importlib.import_module({mod!r})\n"
+    else:
+        raise ValueError(f"cannot load {mod}:{name}: neither a file.py nor a dotted module name")
+    source = (f'"""The {how} {mod}:{name}, wrapped by stiefelsym discover to be traced in the sandbox."""\n'
+              "import importlib\nimport importlib.util\n\nfrom stiefelsym import admissible, claim\n\n"
+              + load + f"_f = getattr(_m, {name!r})\n_SIZES = {needed!r}\n\n\n"
+              f"@claim({CONFINED_CLAIM!r}, paper=('discover',), kind='id', sizes=admissible("
+              f"n_max={max(n for n, _ in needed)}, where=lambda n, r: (n, r) in _SIZES))\n"
+              f'def user_function(s):\n    """The {how} {name} of {mod}."""\n    {_CONFINED_BODY[how]}\n')
+    # the wrapper lies where the user's code does (the file's folder, or the current one for a module), for a
+    # while: the sandbox shows the interpreter the claims file's folder, and the file imports what lies beside it
+    folder = path.parent if mod.endswith(".py") else Path.cwd()
+    try:
+        handle = tempfile.NamedTemporaryFile("w", encoding="utf-8", suffix=".py", prefix=".stiefelsym-discover-",
+                                             dir=folder, delete=False)
+    except OSError as exc:
+        raise ValueError(f"cannot load {mod}:{name}: discover writes a claims file wrapping it beside it, in "
+                         f"{folder}, for a moment ({exc.strerror})") from None
+    wrapper = Path(handle.name)
+    try:
+        with handle:
+            handle.write(source)
+        registry = load_claims_isolated(wrapper, needed)
+    except CatalogError as exc:
+        said = str(exc).removeprefix(f"{wrapper}: ").replace(str(wrapper), f"{mod}:{name}")
+        raise ValueError(f"cannot load {mod}:{name}: {said}") from None
+    finally:
+        wrapper.unlink(missing_ok=True)
+    traced = registry.get(CONFINED_CLAIM).func
+    if how == "tangent":
+        def function(s: Any) -> Any:
+            out = traced(s)
+            return {"X": out["X"], "P": out["P"]}
+    else:
+        key = "H" if how == "hamiltonian" else "L"
+
+        def function(s: Any) -> Any:
+            return traced(s)[key]
+    function.__name__ = name
+    return hamiltonian_flow(function) if how == "hamiltonian" else function
+
+
+def resolve_flow(spec: str, sizes: Sequence[Size] = ()) -> tuple[Callable[[Any], Any], str]:
     """A flow by catalog name, by ``module:function`` or ``file.py:function`` (a function of the scene
-    giving {"X": Ẋ, "P": Ṗ}), or by ``hamiltonian:module:function`` (the Dirac flow of a Hamiltonian)."""
+    giving {"X": Ẋ, "P": Ṗ}), or by ``hamiltonian:module:function`` (the Dirac flow of a Hamiltonian); a
+    user's function is traced in the claims files' sandbox at ``sizes`` (:func:`confined_function`)."""
     if spec in FLOWS:
         mod, fn, how, text = FLOWS[spec]
         f = getattr(_catalog_module(mod), fn)
@@ -355,8 +435,7 @@ def resolve_flow(spec: str) -> tuple[Callable[[Any], Any], str]:
         how = parts[0] if len(parts) == 3 else "tangent"
         if how not in ("tangent", "hamiltonian"):
             raise ValueError(f"unknown kind of flow {how!r} (tangent or hamiltonian)")
-        f = load_object(parts[-2], parts[-1])
-        return (hamiltonian_flow(f) if how == "hamiltonian" else f), spec
+        return confined_function(parts[-2], parts[-1], how, sizes), spec
     raise ValueError(f"unknown flow {spec!r}: a catalog flow ({', '.join(FLOWS)}), module:function or "
                      "hamiltonian:module:function")
 

@@ -46,7 +46,7 @@ def _size(text: str) -> Size:
                    "dL/dt = [A, L] instead of the conserved quantities")
 @click.option("--correct", "corrections", multiple=True, metavar="CLAIM",
               help="the space of formulas of the printed shape that make CLAIM hold (a claim with a registered "
-                   "ansatz, 'all', or file.py:NAME, a CorrectionAnsatz of one's own); FLOW is not given then")
+                   "ansatz, or 'all'; a search of one's own runs from Python); FLOW is not given then")
 @click.option("--tables", is_flag=True,
               help="the tables of the conserved trace polynomials of the paper's Neumann flows (every κ) and "
                    "Manakov flow, and which of them the paper names (default sizes 4,2 and 5,2)")
@@ -72,15 +72,16 @@ def discover(flow: str | None, sizes: tuple[str, ...], degree: int, max_a: int, 
     if flow is None:
         raise InputError("give a FLOW (or --correct CLAIM, or --tables)")
     sizes = sizes or ("4,2",)
+    at = [_size(x) for x in sizes]
     from stiefelsym.analyses.discover import conserved, resolve_flow
     try:
-        f, text = resolve_flow(flow)
+        f, text = resolve_flow(flow, at)
     except (ValueError, ImportError) as exc:
         raise InputError(str(exc)) from None
     if lax is not None:
         from stiefelsym.analyses.discover import LAX, lax_partner, resolve_function
         try:
-            L = resolve_function(lax, LAX)
+            L = resolve_function(lax, LAX, at)
         except (ValueError, ImportError, AttributeError) as exc:
             raise InputError(str(exc)) from None
         ok = True
@@ -114,29 +115,21 @@ def _correct(names: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str,
     from stiefelsym.analyses.discover import correction_space
     from stiefelsym.analyses.discover_ansatze import CORRECTIONS, searches_for
     from stiefelsym.reports.discover_report import write_reports
-    from stiefelsym.analyses.discover import CorrectionAnsatz, load_object
     chosen: list[str] = []
-    own: dict[str, CorrectionAnsatz] = {}
     for name in names:
         if name.count(":") == 1 and name not in CORRECTIONS:
-            try:
-                obj = load_object(*name.split(":"))
-                obj = obj() if callable(obj) and not isinstance(obj, CorrectionAnsatz) else obj
-            except ValueError as exc:
-                raise InputError(str(exc)) from None
-            if not isinstance(obj, CorrectionAnsatz):
-                raise InputError(f"{name} is not a CorrectionAnsatz (nor a function returning one)")
-            own[name] = obj
-            found = [name]
-        else:
-            found = list(CORRECTIONS) if name == "all" else searches_for(name)
+            raise InputError(
+                f"{name}: a correction search of one's own is Python code (its terms and residual are functions), "
+                "and the command gives verdicts in a process that runs no code of a file; run it from Python, "
+                "correction_space(load_object(FILE, NAME)) in stiefelsym.analyses.discover, and verify the "
+                "correction it finds as a claim with `stiefelsym verify --claims` (the file traced in the sandbox)")
+        found = list(CORRECTIONS) if name == "all" else searches_for(name)
         if not found:
-            raise InputError(f"no correction ansatz for {name!r}; there are: {', '.join(CORRECTIONS)} "
-                             "(or give file.py:NAME, a CorrectionAnsatz of one's own)")
+            raise InputError(f"no correction ansatz for {name!r}; there are: {', '.join(CORRECTIONS)}")
         chosen += [x for x in found if x not in chosen]
     spaces, ok = [], True
     for name in chosen:
-        ansatz = own[name] if name in own else CORRECTIONS[name]()
+        ansatz = CORRECTIONS[name]()
         for z in [_size(x) for x in sizes] or [ansatz.size]:
             space = correction_space(ansatz, z, seed=seed, verify=methods)
             for line in space.lines():
