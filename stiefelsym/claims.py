@@ -396,9 +396,11 @@ class Registry:
         try:
             return self._claims[cid]
         except KeyError:
-            near = [k for k in self._claims if cid.lower() in k.lower()]
+            import difflib
+            near = [k for k in self._claims if cid.lower() in k.lower()] or \
+                difflib.get_close_matches(cid, list(self._claims), n=3, cutoff=0.75)
             hint = (f"; did you mean {', '.join(near[:3])}?" if near else
-                    "; `stiefelsym list` shows all claims (a claim of your own file: add --claims FILE)")
+                    "; `stiefelsym list` shows all claims (a claim of your own file: name its file with --claims FILE)")
             raise KeyError(f"unknown claim {cid!r}{hint}") from None
 
     def __iter__(self):

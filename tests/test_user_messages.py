@@ -61,8 +61,19 @@ def _number_block(s):
     return {"a": block([[s.Phi, 0], [0, s.Phi]])}
 
 
+def _bare_matrix(s):
+    return s.X.T @ s.P + s.P.T @ s.X
+
+
+def _rank_of_a_float(s):
+    from stiefelsym import Rank
+    return {"r": Rank(s.X, 1.0)}
+
+
 @pytest.mark.parametrize("func, words, refused", [
     (_gradient_unknown_name, "components 'X' and 'P'", False),      # a KeyError of the claim's own code
+    (_bare_matrix, "a matrix or number of the trace: put it in a dict", True),
+    (_rank_of_a_float, "the expected rank is an int", True),
     (_abs, "abs() of a traced value", True),
     (_matrix_power, "a matrix power is a product", True),
     (_number_block, "a zero block is s.zeros(", True),
@@ -149,3 +160,17 @@ def test_a_gradient_is_not_a_flow_nor_a_tuple_to_repeat(func, words, method):
     res = run_one(_claim(func, "gradient-misused"), None if method == "free" else Size(3, 2), method, seed=1)
     assert res.verdict == ("undecided" if method == "free" else "error"), res.line()
     assert words in res.message, res.message
+
+
+def test_a_mistyped_claim_id_gets_the_nearest_ids():
+    from stiefelsym.claims import load_catalog
+    with pytest.raises(KeyError, match="did you mean manakov-lax"):
+        load_catalog().get("manakov-lex")
+
+
+def test_an_error_raised_in_a_statement_s_constructor_is_located_at_the_claim_s_line():
+    """Rank's __init__ is generated code (a dataclass's, file "<string>"): the location is the claim's line."""
+    import inspect
+    res = run_one(_claim(_rank_of_a_float, "rank-float"), Size(3, 2), "modular", seed=1)
+    line = inspect.getsourcelines(_rank_of_a_float)[1] + 2
+    assert res.verdict == "error" and f"(at {__file__}:{line})" in res.message, res.message

@@ -8,6 +8,7 @@ from pathlib import Path
 import pytest
 
 from stiefelsym.ir.graph import Named, Ref, Size
+from stiefelsym.run import userfile
 from stiefelsym.run.userfile import NoGraph, WireError, _enc, _loads, _value, load_claims_isolated
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -101,3 +102,60 @@ def test_one_pipe_reader_for_the_tracer_and_the_isolated_child():
     os.write(w, b"all of it")
     os.close(w)
     assert read_pipe(r, 5, lambda: failed.append(False)) == b"all of it" and failed == [True]
+
+
+_STUBBORN = '''from stiefelsym import admissible, claim
+
+
+def stubborn(*args):
+    while True:             # catches every alarm of the time limit, and goes on
+        try:
+            while True:
+                pass
+        except BaseException:
+            continue
+
+
+@claim("stubborn", paper=("prep",), kind="id", sizes=admissible(n_max=3{where}){fails_at})
+def c(s):
+    """XᵀP = 0 (false)."""
+    return {{"c": s.X.T @ s.P}}
+'''
+
+
+@pytest.mark.skipif(not hasattr(os, "fork"), reason="needs fork")
+def test_an_import_that_catches_its_time_limit_is_killed(tmp_path, monkeypatch):
+    """A size statement evaluated at import that catches the import's alarm in a loop: the process that imports
+    the file is killed IMPORT_GRACE_SECONDS after the deadline (it ran until the file's hour was up)."""
+    import signal
+    import time
+    from stiefelsym import claims
+    path = tmp_path / "where_loop.py"
+    path.write_text(_STUBBORN.format(where=", where=stubborn", fails_at=""), encoding="utf-8")
+    monkeypatch.setattr(claims, "IMPORT_SECONDS", 0.3)
+    monkeypatch.setattr(userfile, "IMPORT_GRACE_SECONDS", 0.3)
+    t0 = time.monotonic()
+    pid = os.fork()
+    if pid == 0:
+        try:
+            userfile._import_bounded(str(path))
+        finally:
+            os._exit(0)
+    _, status = os.waitpid(pid, 0)
+    assert os.WIFSIGNALED(status) and os.WTERMSIG(status) == signal.SIGKILL
+    assert time.monotonic() - t0 < 10
+
+
+@pytest.mark.skipif(not hasattr(os, "fork"), reason="needs fork")
+def test_erratum_sizes_that_catch_their_time_limit_end_at_the_metadata_budget(tmp_path, monkeypatch):
+    """fails_at runs in the claim's metadata child, killed after META_SECONDS (it was CLAIM_SECONDS, 300 s)."""
+    import time
+    from stiefelsym.claims import load_claims_file
+    path = tmp_path / "fails_at_loop.py"
+    path.write_text(_STUBBORN.format(where="", fails_at=", fails_at=stubborn, erratum=\"a loop\""), encoding="utf-8")
+    claim = next(iter(load_claims_file(path)))
+    monkeypatch.setattr(userfile, "META_SECONDS", 1.0)
+    t0 = time.monotonic()
+    with pytest.raises(ValueError, match="erratum sizes did not finish"):
+        userfile._run_claim(claim, None, 300.0, None)
+    assert time.monotonic() - t0 < 10

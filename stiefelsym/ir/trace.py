@@ -1493,7 +1493,9 @@ def trace(func: Callable, n: int | None, r: int | None, constraints: tuple[str, 
     try:
         out = func(TraceScene(t, t.g.add("scene", (0,))))
         if type(out) is not dict or not out:
-            got = "an empty dict" if type(out) is dict else f"a {type(out).__name__}"
+            got = ("an empty dict" if type(out) is dict else "None" if out is None else
+                   "a matrix or number of the trace: put it in a dict, {'name': residual}" if type(out) is Tracer
+                   else f"a {type(out).__name__}")
             t.refuse(f"a claim returns a non-empty dict of named checks, {{'name': residual, ...}} (it returned {got})")
         if any(type(k) is not str for k in out):
             t.refuse("check names are strings")

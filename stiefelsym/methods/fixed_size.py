@@ -3093,7 +3093,8 @@ def run_exact_isolated(claim: Claim, n: int, r: int, seed: int, func: Callable |
 
 def _describe(exc: BaseException) -> str:
     import traceback
-    frames = [f for f in traceback.extract_tb(exc.__traceback__) if "/stiefelsym/" not in f.filename]
+    frames = [f for f in traceback.extract_tb(exc.__traceback__)
+              if "/stiefelsym/" not in f.filename and not f.filename.startswith("<")]
     where = f" (at {frames[-1].filename}:{frames[-1].lineno})" if frames else ""
     return f"{type(exc).__name__}: {exc}{where}"
 

@@ -71,13 +71,11 @@ def run_isolated(fn: Callable[[], Any], seconds: float, describe: Callable[[Base
         _forward(said)
         raise HardTimeout()
     if not data:
-        last = [line for line in said.splitlines() if line.strip()][-1:]
-        raise ChildDied(f"the child process died ({how_it_ended(status)}"
-                        + (f"; its last words: {last[0].strip()[:MESSAGE_CHARS]}" if last else "") + ")")
-    _forward(said)
+        raise ChildDied(f"the child process died ({how_it_ended(status)}{_last_words(said)})")
     kind, value = pickle.loads(data)
-    if kind == "memory":
-        raise ChildDied(f"the child process ran out of memory ({value})")
+    if kind == "memory":        # (flint says so on standard error first: in the message, not printed)
+        raise ChildDied(f"the child process ran out of memory ({value}{_last_words(said)})")
+    _forward(said)
     if kind == "error":
         raise ChildError(value)
     return value
@@ -106,6 +104,12 @@ def _said(fd: int) -> str:
         return b"".join(chunks).decode("utf-8", "replace")
     finally:
         os.close(fd)
+
+
+def _last_words(said: str) -> str:
+    """The last line a child wrote to its standard error, for the message that says how it ended ("" if none)."""
+    last = [line for line in said.splitlines() if line.strip()][-1:]
+    return f"; its last words: {last[0].strip()[:MESSAGE_CHARS]}" if last else ""
 
 
 def _forward(text: str) -> None:

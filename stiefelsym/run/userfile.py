@@ -77,6 +77,12 @@ MAX_SIZES = 2000
 CLAIM_SECONDS = 300.0
 CLAIM_MEMORY_GIB = DEFAULT_MEMORY_GIB
 FILE_SECONDS = 3600.0
+#: seconds a claim's metadata (its size statement and erratum sizes, each call of which has METADATA_SECONDS)
+#: may take in all in its child, which is killed after them
+META_SECONDS = 60.0
+#: seconds past the import's own deadline (IMPORT_SECONDS, an alarm the file's code could catch) after which the
+#: process that imports the file is killed
+IMPORT_GRACE_SECONDS = 10.0
 #: at most this much of what the file's processes print is shown
 CAPTURE_BYTES = 1 << 22
 
@@ -188,7 +194,8 @@ def _graph_state(g: Any) -> Any:
 
 def _refusal(exc: BaseException) -> dict:
     tb = getattr(exc, "_first_traceback", None) or exc.__traceback__
-    frames = [f for f in traceback.extract_tb(tb) if "/stiefelsym/" not in f.filename]
+    # (not the engine's frames, nor generated code such as a dataclass's __init__, whose file is "<string>")
+    frames = [f for f in traceback.extract_tb(tb) if "/stiefelsym/" not in f.filename and not f.filename.startswith("<")]
     where = [frames[-1].filename, frames[-1].lineno or 1] if frames else None
     try:
         message = str(exc)
@@ -384,7 +391,7 @@ def _run_claim(c: Claim, more: dict | None, timeout: float, memory: int | None) 
         gc.unfreeze()
         buf = b""
         timed_out = False
-        deadline = time.monotonic() + timeout
+        deadline = time.monotonic() + (META_SECONDS if jobs[i][0] == "meta" else timeout)
         try:
             while i < len(jobs):
                 chunk = next_chunk(rfd, deadline)
@@ -408,7 +415,7 @@ def _run_claim(c: Claim, more: dict | None, timeout: float, memory: int | None) 
                             has_free[f] = "error" not in item["job"]
                         results.append([f, None if key is None else list(key), item["job"]])
                     i = _next_job(jobs, i + 1, has_free)
-                    deadline = time.monotonic() + timeout
+                    deadline = time.monotonic() + timeout     # (a trace: only the first job is the metadata)
         finally:
             os.close(rfd)
             _kill(pid, wait=not timed_out and i >= 0)
@@ -468,6 +475,29 @@ def _kill(pid: int, wait: bool = False) -> None:
         pass
 
 
+def _import_bounded(path: str) -> Registry:
+    """The file imported (:func:`~stiefelsym.claims.load_claims_file`, under its deadline IMPORT_SECONDS), in a
+    process killed IMPORT_GRACE_SECONDS later if the import has not ended: the deadline is an alarm, which the
+    file's code can catch (``except BaseException`` in a loop), a kill it cannot.  The watch is a thread, ended
+    before the process forks its tracers."""
+    import threading
+    from stiefelsym.claims import IMPORT_SECONDS
+    done = threading.Event()
+
+    def watch() -> None:
+        if not done.wait(IMPORT_SECONDS + IMPORT_GRACE_SECONDS):
+            os.write(2, f"stiefelsym: loading {path} did not end within {IMPORT_SECONDS:.0f} s (its code caught the "
+                        "time limit): the process that imported it is killed\n".encode())
+            os.kill(os.getpid(), signal.SIGKILL)
+    watcher = threading.Thread(target=watch, name="stiefelsym-import-watch", daemon=True)
+    watcher.start()
+    try:
+        return load_claims_file(path)
+    finally:
+        done.set()
+        watcher.join()
+
+
 def _tracer(path: str, more: dict | None, timeout: float, memory: int | None) -> bytes:
     """The spawned interpreter's work (:func:`stiefelsym.run.sandbox.host`): import the file, then trace each claim
     in children of its own; ``more`` (the second phase): claim id -> what :func:`_claim_more` needs, and only
@@ -479,7 +509,7 @@ def _tracer(path: str, more: dict | None, timeout: float, memory: int | None) ->
     except OSError:
         pass
     try:
-        reg = load_claims_file(path)
+        reg = _import_bounded(path)
     except CatalogError as exc:
         return json.dumps({"error": str(exc)}).encode()
     parts = []
