@@ -153,3 +153,16 @@ def test_a_user_s_rank_is_quoted_as_claimed_and_the_catalog_s_as_the_paper_s():
             res = method(dataclasses.replace(own, reviewed=reviewed), 3, 1, 0)
             said = " ".join([res.certificate] + [ch.detail or "" for ch in res.checks])
             assert f"{word}: {claimed}" in said and other not in said, said
+
+
+def test_a_rank_above_the_truth_beyond_the_function_field_rank_says_what_random_points_show(monkeypatch):
+    """Where the function-field rank is out of reach, a printed rank above the rank at an exact point stays
+    inconclusive (a point can be special, and a refutation needs a witness), and the message says what random
+    points of prime fields show, with the probability bound, and how kernel vectors would refute it."""
+    def no_time(*args, **kwargs):
+        raise methods.ExactTimeout("the function-field rank did not finish within 5 s")
+    monkeypatch.setattr(methods, "_function_field_rank", no_time)
+    monkeypatch.setattr(methods, "_coefficient_rank_bound", lambda polys: None)
+    res = run_exact(_claim(rank_claim(lambda n, r: two_l(n, r) + 1)), 4, 1, 0)
+    assert res.verdict == "inconclusive", res.line()
+    assert "at 2 random points of prime fields the rank is" in res.message and "kernel=" in res.message, res.message

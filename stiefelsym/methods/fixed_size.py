@@ -782,9 +782,11 @@ def _exact_rank(R: Rank, field: Field, randomized: _RandomizedRank | None = None
                     f"({_stated(R.expected)}); two-sided: exact rank of the generic matrix{kernel}{note}", ok)
         # the upper bound at random points of prime fields
         if lower is None or lower < R.expected:
-            # a point can be special: without the function-field rank a lower rank is not certain
+            # a point can be special: without the function-field rank a lower rank is not certain; what random
+            # points of prime fields say is evidence for the reader, not a verdict (a refutation needs a witness)
             raise ExactTimeout(f"the function-field rank exceeded {SYMBOLIC_RANK_SECONDS:.0f} s, and the rank "
-                               f"at an exact rational point, {lower}, is below {_who()}'s {R.expected}{note}")
+                               f"at an exact rational point, {lower}, is below {_who()}'s {R.expected}{note}"
+                               + _sampled_below(M, rng, lower, R.expected, minor_degree))
         D = max(1, minor_degree() if minor_degree else 1)
         joint, pts = 1.0, 0
         while joint > POINTS_TARGET and pts < POINTS_CAP:
@@ -833,6 +835,29 @@ def _exact_rank(R: Rank, field: Field, randomized: _RandomizedRank | None = None
 
 #: exact rational points at which a kernel certificate's rank bound is sought when the first point is special
 KERNEL_POINTS = 3
+
+
+#: the points of prime fields at which a rank below the printed one is looked at again, for the message
+SAMPLED_BELOW_POINTS = 2
+
+
+def _sampled_below(M: Mat, rng: random.Random, lower: int | None, expected: int,
+                   minor_degree: Callable[[], int] | None) -> str:
+    """For the message of a generic rank found below the printed one at an exact point, where the function-field
+    rank is out of reach: the ranks at a few random points of prime fields, and the probability that a printed rank
+    that were true shows so low a rank at all of them (every ``expected``-minor vanishing there; degree <= the
+    (expected + 1)-minors' bound).  Evidence, not a verdict; kernel vectors are the certain refutation."""
+    if lower is None:
+        return ""
+    ranks = [_rank_at_point(M, rng, random_prime(rng)) for _ in range(SAMPLED_BELOW_POINTS)]
+    if any(k is None or k >= expected for k in ranks):
+        return ""
+    D = max(1, minor_degree() if minor_degree else 1)
+    bound = (D / 2 ** PRIME_BITS) ** len(ranks)
+    return (f"; at {len(ranks)} random points of prime fields the rank is {max(ranks)} too, which a generic rank "
+            f"{expected} would show with probability <= {bound:.1e}: {_who()}'s rank is very likely false, but a "
+            f"refutation needs an exact witness (kernel vectors given with Rank(..., kernel=...) bound the rank "
+            f"from above with certainty)")
 
 
 def _kernel_rank(R: Rank, rng: random.Random, lower: int | None) -> tuple[tuple[str, Any] | None, str]:
