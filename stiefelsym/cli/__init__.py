@@ -1059,7 +1059,7 @@ def report(results_file: Path | None, report_dir: Path | None, claims_files: tup
         raise InputError(f"{source} is not a stiefelsym results file: {_one_line(exc)}") from None
     from stiefelsym.run.integrity import (MAX_N_CHECKED, certificate_binding_problems, certificate_problems, claim_field_edits,
                             missing_runs, rerun_problems, run_origin, size_method_problems,
-                            unstated_runs)
+                            unbound_graphs, unstated_runs)
     from stiefelsym.methods.hard import HARD_CASES
     from stiefelsym.results import meta_problems
     bad_meta = meta_problems(meta, _runner().METHODS, tuple(HARD_CASES), MAX_N_CHECKED)
@@ -1076,7 +1076,9 @@ def report(results_file: Path | None, report_dir: Path | None, claims_files: tup
         raise InputError(f"{source}: refused, {len(problems)} record(s) without a valid certificate: {problems[0]} "
                          "(`stiefelsym check` re-checks every record)")
     files = list(claims_files) or list((meta or {}).get("claims_files") or [])
-    registry, user = _registry(files or None)
+    # a user's claims traced at the records' sizes: each record is bound to its claim's graph there (below)
+    registry, user = _registry(files or None, (), sorted({(r.n, r.r) for r in results if type(r.n) is int
+                                                           and type(r.r) is int}) if files else ())
     reruns = rerun_problems(records, meta, run_origin(getattr(user, "origin", None), files, meta))
     if reruns:
         raise InputError(f"{source}: refused, {len(reruns)} record(s) whose rerun command is not their own: "
@@ -1100,6 +1102,11 @@ def report(results_file: Path | None, report_dir: Path | None, claims_files: tup
             raise InputError(f"{source}: refused, record of {r.claim!r} {r.size} {r.method}: it says the verdict "
                              f"{r.verdict!r} is {'' if r.expected else 'not '}the one the claim expects, and the "
                              "claim's statement says otherwise (`stiefelsym check` re-checks every record)")
+    strangers = unbound_graphs(records, user) if user is not None else []
+    if strangers:
+        raise InputError(f"{source}: refused, {len(strangers)} record(s) of a claims file whose graph is not its claim's "
+                         f"in the file named now: {strangers[0]} (the file was edited since the run, or another file "
+                         "of that name is meant; pass it with --claims)")
     unbound = certificate_binding_problems(results, registry)
     if unbound:
         raise InputError(f"{source}: refused, {len(unbound)} proof(s) for every n, r whose certificate is not their "

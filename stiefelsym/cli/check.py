@@ -52,6 +52,9 @@ def check(results_file: Path, no_rerun: bool, claims_files: tuple[str, ...]) -> 
         raise InputError(f"{results_file}: its meta (the command the file is the run of) is malformed: "
                          f"{'; '.join(problems)}")
     files = list(claims_files) or list(meta.get("claims_files") or [])
+    click.echo(f"checking {len(records)} records of {len({repr(r.get('claim')) for r in records})} claims: each claim "
+               "traced again and its digest compared" + ("" if no_rerun else ", each run made again (about as long as "
+                                                         "the run that wrote the file)"), err=True)
     # the sizes the records were run at: a user's claims are traced there (in child processes)
     sizes = [(r.get("n"), r.get("r")) for r in records]
     registry, user = _registry(files or None, (), [(n, r) for n, r in sizes if type(n) is int and type(r) is int])

@@ -191,7 +191,7 @@ def mutate(ids: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str, ...
     Each mutant (one sign flipped, operands of @ or comm swapped, a factor
     transposed, a term dropped, a scene letter replaced, a coefficient changed)
     runs with every method at a few sizes and with the dimension-free method.
-    A mutant that passes everywhere is equivalent (a true statement); one that a
+    A mutant that passes everywhere is equivalent (true at the sizes run); one that a
     method passes where another refutes it is a SURVIVOR of that method, and the
     dimension-free method must prove no mutant that is not equivalent.
 

@@ -14,7 +14,7 @@ import json
 from typing import Any, Callable, Iterable
 
 from stiefelsym.certificate_check import check_certificate
-from stiefelsym.claims import Registry, Size
+from stiefelsym.claims import Claim, Registry, Size
 
 
 def proof_for_every_size(get: Callable[[str], Any]) -> bool:
@@ -428,6 +428,43 @@ def rerun_problems(records: list[dict], meta: dict | None, origin: dict[str, str
     return out
 
 
+def record_graph(r: dict, claim: Claim) -> tuple[Claim, Callable | None, str]:
+    """The claim (its correction, for a record of one) and function the record ``r`` is a run of, and "" when the
+    record's graph digest is theirs at its size, or why not."""
+    from stiefelsym.run.runner import graph_digest
+    n = r.get("n")
+    size = None if n is None else Size(n, r.get("r"))
+    func = None
+    if r.get("variant"):
+        k = next((k for k, c in enumerate(claim.corrections) if c.description == r["variant"]), None)
+        if k is None:
+            return claim, None, f"the claim has no correction {r['variant']!r}"
+        func, claim = claim.corrections[k].func, claim.corrected(k)
+    digest = graph_digest(claim, size, func)
+    if not digest and r.get("verdict") not in ("error", "undecided", "inconclusive"):
+        return claim, func, f"a verdict {r.get('verdict')!r} for a claim that does not trace at this size"
+    if (r.get("digest") or "") != digest:
+        return claim, func, (f"the record's graph digest {str(r.get('digest'))[:12] or '(none)'} is not the "
+                             f"claim's ({digest[:12] or 'it does not trace'})")
+    return claim, func, ""
+
+
+def unbound_graphs(records: list[dict], files: Registry) -> list[str]:
+    """The records of the claims of users' files (``files``: their registry) whose graph digest is not what their
+    claim, in the claims files named now, traces to at their size: a results file rendered beside another file of
+    the same name, or a claims file edited since the run.  (The catalog's are bound by the installed engine.)"""
+    out = []
+    for r in records:
+        cid = r.get("claim")
+        if cid not in files:
+            continue
+        why = record_graph(r, files.get(cid))[2]
+        if why:
+            n, rr = r.get("n"), r.get("r")
+            out.append(f"{cid} {'all n, r' if n is None else f'({n},{rr})'} {r.get('method')}: {why}")
+    return out
+
+
 def check_results(records: list[dict], registry: Registry, echo: Callable[[str], None] = print,
                   rerun: bool = True, hard: str | None = None, meta: dict | None = None,
                   origin: dict[str, str] | None = None) -> int:
@@ -437,7 +474,7 @@ def check_results(records: list[dict], registry: Registry, echo: Callable[[str],
     ``meta`` (its command's methods and sizes), every run the command planned for a claim the file
     has records of must have its record (:func:`missing_runs`)."""
     from stiefelsym.results import record_problems
-    from stiefelsym.run.runner import graph_digest, run_free_guarded, run_one
+    from stiefelsym.run.runner import run_free_guarded, run_one
     bad = 0
     total = len(records)
     well_formed = []
@@ -482,22 +519,9 @@ def check_results(records: list[dict], registry: Registry, echo: Callable[[str],
             bad += 1
             continue
         size = None if n is None else Size(n, rr)
-        func = None
-        if r.get("variant"):
-            k = next((k for k, c in enumerate(claim.corrections) if c.description == r["variant"]), None)
-            if k is None:
-                echo(f"REJECTED {where}: the claim has no correction {r['variant']!r}")
-                bad += 1
-                continue
-            func, claim = claim.corrections[k].func, claim.corrected(k)
-        digest = graph_digest(claim, size, func)
-        if not digest and r.get("verdict") not in ("error", "undecided", "inconclusive"):
-            echo(f"REJECTED {where}: a verdict {r.get('verdict')!r} for a claim that does not trace at this size")
-            bad += 1
-            continue
-        if (r.get("digest") or "") != digest:
-            echo(f"REJECTED {where}: the record's graph digest {str(r.get('digest'))[:12] or '(none)'} is not the "
-                 f"claim's ({digest[:12] or 'it does not trace'})")
+        claim, func, why = record_graph(r, claim)
+        if why:
+            echo(f"REJECTED {where}: {why}")
             bad += 1
             continue
         if r.get("change") and func is not None:

@@ -83,6 +83,8 @@ META_SECONDS = 60.0
 #: seconds past the import's own deadline (IMPORT_SECONDS, an alarm the file's code could catch) after which the
 #: process that imports the file is killed
 IMPORT_GRACE_SECONDS = 10.0
+#: the exit status of a process whose import of the file outlived IMPORT_SECONDS + IMPORT_GRACE_SECONDS
+IMPORT_EXIT = 7
 #: at most this much of what the file's processes print is shown
 CAPTURE_BYTES = 1 << 22
 
@@ -477,8 +479,8 @@ def _kill(pid: int, wait: bool = False) -> None:
 
 def _import_bounded(path: str) -> Registry:
     """The file imported (:func:`~stiefelsym.claims.load_claims_file`, under its deadline IMPORT_SECONDS), in a
-    process killed IMPORT_GRACE_SECONDS later if the import has not ended: the deadline is an alarm, which the
-    file's code can catch (``except BaseException`` in a loop), a kill it cannot.  The watch is a thread, ended
+    process ended IMPORT_GRACE_SECONDS later if the import has not ended: the deadline is an alarm, which the
+    file's code can catch (``except BaseException`` in a loop), the end of its process it cannot.  The watch is a thread, ended
     before the process forks its tracers."""
     import threading
     from stiefelsym.claims import IMPORT_SECONDS
@@ -487,8 +489,10 @@ def _import_bounded(path: str) -> Registry:
     def watch() -> None:
         if not done.wait(IMPORT_SECONDS + IMPORT_GRACE_SECONDS):
             os.write(2, f"stiefelsym: loading {path} did not end within {IMPORT_SECONDS:.0f} s (its code caught the "
-                        "time limit): the process that imported it is killed\n".encode())
-            os.kill(os.getpid(), signal.SIGKILL)
+                        "time limit): the process that imported it ends\n".encode())
+            # _exit ends every thread of the process (a signal to itself would not: in its PID namespace the
+            # sandbox's interpreter is process 1, which ignores a kill sent from inside)
+            os._exit(IMPORT_EXIT)
     watcher = threading.Thread(target=watch, name="stiefelsym-import-watch", daemon=True)
     watcher.start()
     try:
@@ -887,9 +891,10 @@ def _engine_unchanged(before: dict[str, str], path: Path) -> None:
     if changed:
         shown = ", ".join(changed[:5]) + (f" and {len(changed) - 5} more" if len(changed) > 5 else "")
         raise CatalogError(f"{path}: the engine's files or the modules on its import path changed on disk while "
-                           f"the claims file ran ({shown}): no verdict is given, and later runs would use the changed "
-                           "code: restore the package (e.g. git checkout, or reinstall it) and remove the files the "
-                           "claims file added before running again")
+                           f"the claims file ran ({shown}), by the file or by another process (a package being edited "
+                           "or reinstalled meanwhile): no verdict is given, and later runs would use the changed code: "
+                           "if the change is not yours, restore the package (e.g. git checkout, or reinstall it) and "
+                           "remove the files the claims file added before running again")
 
 
 def _phase(path: Path, parts: list[dict] | None, capture: int,
@@ -909,8 +914,9 @@ def _phase(path: Path, parts: list[dict] | None, capture: int,
     except ProcessesLeft as exc:
         raise CatalogError(f"{path}: {exc}") from None
     if data is None:
-        raise CatalogError(f"{path}: loading and tracing the file ended without a result (its process died or "
-                           f"took more than {FILE_SECONDS:.0f} s)")
+        from stiefelsym.claims import IMPORT_SECONDS
+        raise CatalogError(f"{path}: loading and tracing the file ended without a result (its process died, its "
+                           f"import outlived {IMPORT_SECONDS:.0f} s, or the whole took more than {FILE_SECONDS:.0f} s)")
     answers = [_loads(data)] if parts is None else [_loads(x) for x in data.split(b"\n") if x.strip()]
     if parts is not None and len(answers) != len(parts):
         raise WireError("a second phase's answer that is not one per size")
