@@ -216,6 +216,38 @@ def test_a_file_cannot_ask_for_the_fallback(tmp_path, monkeypatch, body):
     assert c.func.confinement == sandbox.NAMESPACES
 
 
+@NAMESPACES
+def test_a_folder_whose_name_is_not_utf8_neither_escapes_the_namespaces_nor_asks_for_the_fallback(tmp_path,
+                                                                                                 monkeypatch):
+    """A claims file in a folder named by bytes that are not UTF-8: the confinement encoded the folder's name as
+    text, failed before its line, and the run fell back to an interpreter without namespaces, for that file and
+    every later one of the process, where the file wrote on the host.  Now the name is encoded as the OS gave it,
+    and whether namespaces work is asked of a file of the engine's making, never read off a file's failure."""
+    import stiefelsym.run.sandbox as sandbox
+    monkeypatch.setattr(sandbox, "_available", {})
+    folder = tmp_path / os.fsdecode(b"esc\xff")
+    folder.mkdir()
+    mark = tmp_path / "ESCAPED.txt"
+    claims = folder / "c.py"
+    claims.write_text(textwrap.dedent(f'''
+        try:
+            with open({str(mark)!r}, "a") as f:
+                f.write("written on the host")
+        except OSError:
+            pass
+        from stiefelsym import admissible, claim
+
+
+        @claim("sbx-esc", kind="id", sizes=admissible(n_max=3))
+        def esc(s):
+            """XᵀP + PᵀX = 0."""
+            return {{"z": s.X.T @ s.P + s.P.T @ s.X}}
+    '''))
+    (c,) = load_claims_isolated(claims, [(3, 2)])
+    assert c.func.confinement == sandbox.NAMESPACES and not mark.exists()
+    assert sandbox._available.get(sandbox.NAMESPACES) is True
+
+
 def test_the_second_phase_adds_only_what_it_was_asked_for():
     """What the second interpreter sends may add rows for the sizes it was asked about and graphs of the
     functions it was asked to trace; an answer about another claim, another function or a graph with symbolic

@@ -383,12 +383,14 @@ def confined_function(mod: str, name: str, how: str, sizes: Sequence[Size] = ())
         load = f"_m = importlib.import_module({mod!r})\n"
     else:
         raise ValueError(f"cannot load {mod}:{name}: neither a file.py nor a dotted module name")
-    source = (f'"""The {how} {mod}:{name}, wrapped by stiefelsym discover to be traced in the sandbox."""\n'
+    # (only names checked above and repr() of the rest go into the source: a quote or a newline in a file name
+    # is not code)
+    source = (f'"""A {how} function of one\'s own, wrapped by stiefelsym discover to be traced in the sandbox."""\n'
               "import importlib\nimport importlib.util\n\nfrom stiefelsym import admissible, claim\n\n"
               + load + f"_f = getattr(_m, {name!r})\n_SIZES = {needed!r}\n\n\n"
               f"@claim({CONFINED_CLAIM!r}, paper=('discover',), kind='id', sizes=admissible("
               f"n_max={max(n for n, _ in needed)}, where=lambda n, r: (n, r) in _SIZES))\n"
-              f'def user_function(s):\n    """The {how} {name} of {mod}."""\n    {_CONFINED_BODY[how]}\n')
+              f'def user_function(s):\n    """The {how} function {name}."""\n    {_CONFINED_BODY[how]}\n')
     # the wrapper lies where the user's code does (the file's folder, or the current one for a module), for a
     # while: the sandbox shows the interpreter the claims file's folder, and the file imports what lies beside it
     folder = path.parent if mod.endswith(".py") else Path.cwd()

@@ -120,9 +120,11 @@ class _Main(click.Group):
 
 
 def run_reporting_errors(invoke: Any, prog: str, standalone_mode: bool) -> int:
-    """Run a command; every error is one line on stderr and a documented exit status."""
+    """Run a command; every error is one line on stderr and a documented exit status.  SIGTERM unwinds the
+    command (its ``finally`` clauses end its children and remove its temporary files) and exits 143."""
     try:
-        rv = invoke()
+        with raise_on_sigterm():
+            rv = invoke()
         code = rv if isinstance(rv, int) else EXIT_OK
     except click.ClickException as exc:
         ctx = getattr(exc, "ctx", None)

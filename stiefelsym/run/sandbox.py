@@ -159,14 +159,38 @@ def run(config: dict[str, Any], capture: int, seconds: float, requests: bytes = 
         if raw.startswith(head):
             _available[NAMESPACES] = True
             return (raw[len(head):] if status == 0 else None), NAMESPACES
-        if _available.get(NAMESPACES):      # it worked before: this file's process died before its line
+        if _available.get(NAMESPACES) is None:
+            # whether namespaces work here is asked with a file of no claims in a folder of the engine's making,
+            # never read off this file's failure: what the file controls (its path, its folder's name) must not
+            # be able to ask for the fallback without them
+            _available[NAMESPACES] = _namespaces_work(config, unshare)
+        if _available[NAMESPACES]:          # they work: this file's process ended before its line
             return None, NAMESPACES
-        _available[NAMESPACES] = False
     if before_plain is not None:
         before_plain()
     raw, status = _spawn(config, capture, seconds, None, requests)
     head = _line(SPAWN)
     return (raw[len(head):] if status == 0 and raw.startswith(head) else None), SPAWN
+
+
+def _namespaces_work(config: dict[str, Any], unshare: str) -> bool:
+    """Whether an interpreter confined in namespaces starts here: one spawned on an empty claims file in a fresh
+    folder writes its confinement line."""
+    import tempfile
+    with tempfile.TemporaryDirectory(prefix="stiefelsym-probe-") as folder:
+        probe = os.path.join(folder, "no_claims.py")
+        with open(probe, "w", encoding="utf-8") as f:
+            f.write('"""No claims: whether the confinement starts."""\n')
+        null = os.open(os.devnull, os.O_WRONLY)
+        try:
+            raw, _status = _spawn(dict(config, file=probe, second=False), null, PROBE_SECONDS, unshare)
+        finally:
+            os.close(null)
+    return raw.startswith(_line(NAMESPACES))
+
+
+#: seconds the probe of :func:`_namespaces_work` may take
+PROBE_SECONDS = 60.0
 
 
 def _line(confinement: str) -> bytes:
@@ -373,7 +397,7 @@ def lock_down(keep: list[str], sockets: list[str] | None = None) -> None:
             os.makedirs(target if folder else os.path.dirname(target), exist_ok=True)
             if not folder:
                 os.close(os.open(target, os.O_WRONLY | os.O_CREAT, 0o444))     # the mount point of a file
-            path = target.encode()
+            path = os.fsencode(target)      # (a name that is not UTF-8 comes back from the OS as it was)
             _mount(libc, f"/proc/self/fd/{fd}".encode(), path, None, MS_BIND | (MS_REC if folder else 0), None)
             _mount(libc, None, path, None, MS_REMOUNT | MS_BIND | MS_RDONLY | MS_NOSUID | MS_NODEV, None)
             os.close(fd)
@@ -381,7 +405,7 @@ def lock_down(keep: list[str], sockets: list[str] | None = None) -> None:
         _drop_capabilities(libc)
         if libc.mount(None, b"/", None, ctypes.c_ulong(MS_REMOUNT | MS_BIND), None) == 0:
             raise OSError(0, "the root could be made writable again")
-    except OSError as exc:
+    except (OSError, ValueError) as exc:
         raise SandboxError(str(exc)) from None
 
 
@@ -509,8 +533,8 @@ def host() -> None:
             here = os.getcwd()
             lock_down(_keep(config["file"]), config.pop("sockets"))
             _enter(here)
-        except (SandboxError, OSError) as exc:
-            sys.stderr.write(f"stiefelsym: no confinement for the claims file ({exc})\n")
+        except BaseException as exc:    # noqa: BLE001 - whatever failed, nothing of the file runs unconfined here
+            sys.stderr.write(f"stiefelsym: no confinement for the claims file ({type(exc).__name__}: {exc})\n")
             sys.stderr.flush()
             os._exit(3)
     send(_line(NAMESPACES if confined else SPAWN))     # before anything of the file runs

@@ -83,8 +83,10 @@ META_SECONDS = 60.0
 #: seconds past the import's own deadline (IMPORT_SECONDS, an alarm the file's code could catch) after which the
 #: process that imports the file is killed
 IMPORT_GRACE_SECONDS = 10.0
-#: the exit status of a process whose import of the file outlived IMPORT_SECONDS + IMPORT_GRACE_SECONDS
+#: the exit status of a process whose import of the file (or exit handlers) outlived its watch (_watched)
 IMPORT_EXIT = 7
+#: seconds the file's exit handlers (atexit) may run
+EXIT_SECONDS = 10.0
 #: at most this much of what the file's processes print is shown
 CAPTURE_BYTES = 1 << 22
 
@@ -479,24 +481,30 @@ def _kill(pid: int, wait: bool = False) -> None:
 
 def _import_bounded(path: str) -> Registry:
     """The file imported (:func:`~stiefelsym.claims.load_claims_file`, under its deadline IMPORT_SECONDS), in a
-    process ended IMPORT_GRACE_SECONDS later if the import has not ended: the deadline is an alarm, which the
-    file's code can catch (``except BaseException`` in a loop), the end of its process it cannot.  The watch is a thread, ended
-    before the process forks its tracers."""
-    import threading
+    process ended IMPORT_GRACE_SECONDS later if the import has not ended (:func:`_watched`)."""
     from stiefelsym.claims import IMPORT_SECONDS
+    return _watched(lambda: load_claims_file(path), IMPORT_SECONDS + IMPORT_GRACE_SECONDS,
+                    f"loading {path} did not end within {IMPORT_SECONDS:.0f} s (its code caught the time limit)")
+
+
+def _watched(run: Callable[[], Any], seconds: float, what: str) -> Any:
+    """``run()`` while a thread watches: the process ends (status IMPORT_EXIT) when it has not returned within
+    ``seconds``.  A deadline is an alarm, which the file's code can catch (``except BaseException`` in a loop);
+    the end of its process it cannot.  (Code that holds the interpreter's lock in C for good is bounded only by
+    the file's hour, FILE_SECONDS, which the verifying process keeps.)  The watch ends before the process forks."""
+    import threading
     done = threading.Event()
 
     def watch() -> None:
-        if not done.wait(IMPORT_SECONDS + IMPORT_GRACE_SECONDS):
-            os.write(2, f"stiefelsym: loading {path} did not end within {IMPORT_SECONDS:.0f} s (its code caught the "
-                        "time limit): the process that imported it ends\n".encode())
+        if not done.wait(seconds):
+            os.write(2, f"stiefelsym: {what}: the process that ran it ends\n".encode())
             # _exit ends every thread of the process (a signal to itself would not: in its PID namespace the
             # sandbox's interpreter is process 1, which ignores a kill sent from inside)
             os._exit(IMPORT_EXIT)
-    watcher = threading.Thread(target=watch, name="stiefelsym-import-watch", daemon=True)
+    watcher = threading.Thread(target=watch, name="stiefelsym-watch", daemon=True)
     watcher.start()
     try:
-        return load_claims_file(path)
+        return run()
     finally:
         done.set()
         watcher.join()
@@ -527,7 +535,9 @@ def _tracer(path: str, more: dict | None, timeout: float, memory: int | None) ->
         parts.append(data.encode())
     try:
         import atexit
-        atexit._run_exitfuncs()     # the file's exit handlers run where the file ran
+        # the file's exit handlers run where the file ran, for EXIT_SECONDS at most
+        _watched(atexit._run_exitfuncs, EXIT_SECONDS, f"the exit handlers of {path} did not end within "
+                                                      f"{EXIT_SECONDS:.0f} s")
     except BaseException:   # noqa: BLE001 - they change no result
         pass
     _flush()
