@@ -283,3 +283,22 @@ def test_the_latex_table_of_corrections_breaks_names_and_fits_its_columns(tmp_pa
                          capture_output=True, text=True, timeout=120)
     assert run.returncode == 0, run.stdout[-2000:]
     assert "Overfull" not in (tmp_path / "w.log").read_text(encoding="latin-1")
+
+
+def test_a_flow_of_one_s_own_that_is_zero_at_symbolic_sizes_proves_nothing_for_all_sizes(tmp_path):
+    """A flow file that gives the Neumann tangent where int(s.n) works and a zero tangent where it does not (the
+    dimension-free trace): traced in the sandbox, its catch of the refusal still counts, so no integral of the zero
+    tangent is proved for every n, r; at the size, tr(AXXᵀ) alone fails along the true flow."""
+    from stiefelsym.analyses.discover import confined_function
+    from stiefelsym.claims import Claim
+    (tmp_path / "twofaced.py").write_text(
+        "def flow(s):\n"
+        "    try:\n        int(s.n)\n        fixed = True\n    except Exception:\n        fixed = False\n"
+        "    X, P, A = s.X, s.P, s.A\n"
+        "    if fixed:\n        return {'X': P, 'P': -(A @ X) - X @ P.T @ P + X @ X.T @ A @ X}\n"
+        "    return {'X': P - P, 'P': P - P}\n", encoding="utf-8")
+    flow = confined_function(str(tmp_path / "twofaced.py"), "flow", "tangent", [Size(3, 2)])
+    wrong = Claim(id="twofaced-wrong", paper=("x",), kind="id", section="t", sizes=admissible(4),
+                  func=lambda s: {"d": s.d(lambda t: t.tr(t.A @ t.X @ t.X.T), flow(s))})
+    assert run_one(wrong, Size(3, 2), "auto", 0).verdict == "fails"
+    assert run_one(wrong, None, "free", 0).verdict == "undecided"
