@@ -854,8 +854,9 @@ def _sampled_below(M: Mat, rng: random.Random, lower: int | None, expected: int,
         return ""
     D = max(1, minor_degree() if minor_degree else 1)
     bound = (D / 2 ** PRIME_BITS) ** len(ranks)
-    return (f"; at {len(ranks)} random points of prime fields the rank is {max(ranks)} too, which a generic rank "
-            f"{expected} would show with probability <= {bound:.1e}: {_who()}'s rank is very likely false, but a "
+    return (f"; at {len(ranks)} random points of prime fields the rank is {' and '.join(map(str, ranks))}, below "
+            f"{expected} too, which a generic rank {expected} would show with probability <= {bound:.1e}: {_who()}'s "
+            f"rank is very likely false, but a "
             f"refutation needs an exact witness (kernel vectors given with Rank(..., kernel=...) bound the rank "
             f"from above with certainty)")
 
