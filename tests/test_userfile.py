@@ -146,6 +146,47 @@ def test_an_import_that_catches_its_time_limit_is_killed(tmp_path, monkeypatch):
     assert time.monotonic() - t0 < 10
 
 
+_HOLDS_THE_LOCK = '''from stiefelsym import admissible, claim
+
+sum(range(10 ** 15))        # one call in C that holds the interpreter's lock: no alarm and no thread runs meanwhile
+
+
+@claim("holds", paper=("prep",), kind="id", sizes=admissible(n_max=3))
+def c(s):
+    """XᵀP = 0 (false)."""
+    return {"c": s.X.T @ s.P}
+'''
+
+
+def test_an_import_that_holds_the_interpreter_s_lock_in_c_is_killed_by_the_verifying_process(tmp_path, monkeypatch):
+    """A file whose import holds the interpreter's lock in C stops the import's alarm and its watch thread alike:
+    it ran until the file's hour (FILE_SECONDS) was up.  The verifying process waits for the line that ends the
+    import and kills the interpreter when it has not come (here after 2 s instead of 160)."""
+    import time
+    from stiefelsym import claims
+    from stiefelsym.claims import CatalogError
+    path = tmp_path / "holds_the_lock.py"
+    path.write_text(_HOLDS_THE_LOCK, encoding="utf-8")
+    monkeypatch.setattr(claims, "IMPORT_SECONDS", 1.0)
+    monkeypatch.setattr(userfile, "IMPORT_GRACE_SECONDS", 0.5)
+    monkeypatch.setattr(userfile, "IMPORT_START_SECONDS", 0.5)
+    t0 = time.monotonic()
+    with pytest.raises(CatalogError, match="import outlived"):
+        userfile.load_claims_isolated(path)
+    assert time.monotonic() - t0 < 60
+
+
+def test_the_import_lines_are_not_part_of_the_answer():
+    """The interpreter's IMPORTED lines (one per import: the first phase's, each size's in the second) are
+    taken out of what it answers, and only whole lines equal to the marker are."""
+    from stiefelsym.run.sandbox import IMPORTED, _answer
+    assert _answer(IMPORTED + b'{"claims": []}') == b'{"claims": []}'
+    two = IMPORTED + b'\n{"claims": [1]}\n' + IMPORTED + b'\n{"claims": [2]}\n'
+    assert [x for x in _answer(two).split(b"\n") if x.strip()] == [b'{"claims": [1]}', b'{"claims": [2]}']
+    inside = b'{"claims": ["{\\"imported\\": true}"]}'
+    assert _answer(IMPORTED + inside) == inside
+
+
 @pytest.mark.skipif(not hasattr(os, "fork"), reason="needs fork")
 def test_erratum_sizes_that_catch_their_time_limit_end_at_the_metadata_budget(tmp_path, monkeypatch):
     """fails_at runs in the claim's metadata child, killed after META_SECONDS (it was CLAIM_SECONDS, 300 s)."""

@@ -511,7 +511,8 @@ def _isatty(stream: Any) -> bool:
 # --------------------------------------------------------------------------- verify
 
 P_LEGEND = ("p<=: the Schwartz-Zippel bound of a randomized exact check (rational, modular): a false "
-            "statement would pass all of its random points with probability at most p.")
+            "statement would pass all of its random points with probability at most p (p=0: the residual does not "
+            "depend on the random parameters, so its points decide it).")
 
 
 def _budget_help() -> str:

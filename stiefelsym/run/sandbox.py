@@ -32,6 +32,7 @@ from __future__ import annotations
 import ctypes
 import errno
 import json
+import math
 import os
 import select
 import shutil
@@ -144,21 +145,27 @@ def _environment() -> dict[str, str]:
 
 
 def run(config: dict[str, Any], capture: int, seconds: float, requests: bytes = b"",
-        before_plain: Callable[[], None] | None = None) -> tuple[bytes | None, str]:
+        before_plain: Callable[[], None] | None = None,
+        import_seconds: float | None = None) -> tuple[bytes | None, str]:
     """``config`` (JSON) to a fresh interpreter running :func:`host`, its answer back: (bytes, or None when it
     died or ran out of ``seconds``; the confinement used).  What it prints goes to ``capture``.  The
     namespaces are given up (for this process's later files too) only when the interpreter did not write its
     confinement line, i.e. before anything of the file ran.  ``before_plain`` is called before an interpreter is
     spawned without namespaces (:data:`SPAWN`), and only then: in namespaces the file writes nowhere on the host's
     file system (:func:`lock_down`), without them it writes with the user's rights (the caller's preparation for
-    that, :func:`stiefelsym.run.userfile.load_claims_isolated`: the whole package imported first)."""
+    that, :func:`stiefelsym.run.userfile.load_claims_isolated`: the whole package imported first).
+    ``import_seconds``: each import of the file must have ended (its :data:`IMPORTED` line written) within that
+    many seconds of the interpreter's confinement line or of its last answer line, else the interpreter is
+    killed (None) -- kept here, in the verifying process, because code of the file that holds the interpreter's
+    lock in C also stops the file's own watch (:func:`stiefelsym.run.userfile._watched`).  The IMPORTED lines
+    are not part of the answer returned."""
     unshare = _unshare()
     if unshare is not None:
-        raw, status = _spawn(config, capture, seconds, unshare, requests)
+        raw, status = _spawn(config, capture, seconds, unshare, requests, import_seconds)
         head = _line(NAMESPACES)
         if raw.startswith(head):
             _available[NAMESPACES] = True
-            return (raw[len(head):] if status == 0 else None), NAMESPACES
+            return (_answer(raw[len(head):]) if status == 0 else None), NAMESPACES
         if _available.get(NAMESPACES) is None:
             # whether namespaces work here is asked with a file of no claims in a folder of the engine's making,
             # never read off this file's failure: what the file controls (its path, its folder's name) must not
@@ -168,9 +175,20 @@ def run(config: dict[str, Any], capture: int, seconds: float, requests: bytes = 
             return None, NAMESPACES
     if before_plain is not None:
         before_plain()
-    raw, status = _spawn(config, capture, seconds, None, requests)
+    raw, status = _spawn(config, capture, seconds, None, requests, import_seconds)
     head = _line(SPAWN)
-    return (raw[len(head):] if status == 0 and raw.startswith(head) else None), SPAWN
+    return (_answer(raw[len(head):]) if status == 0 and raw.startswith(head) else None), SPAWN
+
+
+#: the line the interpreter writes (before its answer) when an import of the file has ended
+IMPORTED = b'{"imported": true}\n'
+
+
+def _answer(raw: bytes) -> bytes:
+    """What the interpreter wrote after its confinement line, without its IMPORTED lines."""
+    if IMPORTED not in raw:
+        return raw
+    return b"\n".join(line for line in raw.split(b"\n") if line != IMPORTED[:-1])
 
 
 def _namespaces_work(config: dict[str, Any], unshare: str) -> bool:
@@ -198,7 +216,7 @@ def _line(confinement: str) -> bytes:
 
 
 def _spawn(config: dict[str, Any], capture: int, seconds: float, unshare: str | None,
-           requests: bytes = b"") -> tuple[bytes, int | None]:
+           requests: bytes = b"", import_seconds: float | None = None) -> tuple[bytes, int | None]:
     """Spawn the interpreter (in namespaces when ``unshare`` is given): what it wrote, and its wait status
     (None: it ran out of time, or could not be started)."""
     from stiefelsym.run.confine import Confined
@@ -227,7 +245,7 @@ def _spawn(config: dict[str, Any], capture: int, seconds: float, unshare: str | 
         writer.start()      # (read by the interpreter only after its forks: never in the way of the answer)
         _write_all(w0, stdin)
         try:
-            chunks, status = _read_until_exit(pid, r1, seconds)
+            chunks, status = _read_until_exit(pid, r1, seconds, import_seconds)
         finally:
             _kill_group(pid)
     return b"".join(chunks), status
@@ -257,11 +275,14 @@ def _write_all(fd: int, data: bytes) -> None:
         os.close(fd)
 
 
-def _read_until_exit(pid: int, rfd: int, seconds: float) -> tuple[list[bytes], int | None]:
+def _read_until_exit(pid: int, rfd: int, seconds: float,
+                     import_seconds: float | None = None) -> tuple[list[bytes], int | None]:
     """What the child ``pid`` writes to ``rfd`` until it has exited (and all it wrote is read), and its wait
-    status; None after ``seconds``.  ``rfd`` is closed."""
+    status; None after ``seconds``, or when ``import_seconds`` passed after a line that an import of the file
+    follows (the confinement line, an answer line) without its IMPORTED line (:func:`run`).  ``rfd`` is closed."""
     chunks: list[bytes] = []
     deadline = time.monotonic() + seconds
+    lines = _Lines(import_seconds)
     pidfd = -1
     if hasattr(os, "pidfd_open"):
         try:
@@ -272,7 +293,8 @@ def _read_until_exit(pid: int, rfd: int, seconds: float) -> tuple[list[bytes], i
     try:
         os.set_blocking(rfd, False)
         while True:
-            left = deadline - time.monotonic()
+            now = time.monotonic()
+            left = min(deadline, lines.deadline) - now
             if left <= 0:
                 return chunks, None
             watch = ([] if eof else [rfd]) + ([pidfd] if pidfd >= 0 else [])
@@ -284,6 +306,7 @@ def _read_until_exit(pid: int, rfd: int, seconds: float) -> tuple[list[bytes], i
                     chunk = None
                 if chunk:
                     chunks.append(chunk)
+                    lines.read(chunk)
                     continue
                 eof = eof or chunk == b""
             done, status = os.waitpid(pid, os.WNOHANG)
@@ -297,6 +320,25 @@ def _read_until_exit(pid: int, rfd: int, seconds: float) -> tuple[list[bytes], i
         os.close(rfd)
         if pidfd >= 0:
             os.close(pidfd)
+
+
+class _Lines:
+    """The import deadline of :func:`_read_until_exit`, from the lines read so far: after the confinement line
+    and after each answer line an import of the file follows (one per process that traces it), which must write
+    its IMPORTED line within ``seconds``; no deadline (inf) while the claims are traced (each has its own)."""
+
+    def __init__(self, seconds: float | None) -> None:
+        self.seconds, self.partial, self.deadline = seconds, b"", math.inf
+
+    def read(self, chunk: bytes) -> None:
+        if self.seconds is None:
+            return
+        *done, self.partial = (self.partial + chunk).split(b"\n")
+        for line in done:
+            if line == IMPORTED[:-1]:
+                self.deadline = math.inf
+            elif line.strip():      # the confinement line, or an answer: the next import starts now
+                self.deadline = time.monotonic() + self.seconds
 
 
 def _read_some(fd: int) -> bytes:
@@ -545,7 +587,8 @@ def host() -> None:
         sys.stderr.flush()
         os._exit(4)
     if requests < 0:
-        data = userfile._tracer(config["file"], None, float(config["timeout"]), config.get("memory"))
+        data = userfile._tracer(config["file"], None, float(config["timeout"]), config.get("memory"),
+                                lambda: send(IMPORTED))
     else:       # each of its children writes its own answer
         userfile._tracer_by_size(config["file"], requests, answer, float(config["timeout"]), config.get("memory"))
         data = b""

@@ -83,6 +83,10 @@ META_SECONDS = 60.0
 #: seconds past the import's own deadline (IMPORT_SECONDS, an alarm the file's code could catch) after which the
 #: process that imports the file is killed
 IMPORT_GRACE_SECONDS = 10.0
+#: seconds the interpreter that traces a file may take, beyond the import's deadline and its grace, from its
+#: confinement line (or an answer) to the end of an import of the file (the engine's own import, a fork): past
+#: them the verifying process kills it (a file whose code holds the interpreter's lock in C stops the watch too)
+IMPORT_START_SECONDS = 30.0
 #: the exit status of a process whose import of the file (or exit handlers) outlived its watch (_watched)
 IMPORT_EXIT = 7
 #: seconds the file's exit handlers (atexit) may run
@@ -490,8 +494,9 @@ def _import_bounded(path: str) -> Registry:
 def _watched(run: Callable[[], Any], seconds: float, what: str) -> Any:
     """``run()`` while a thread watches: the process ends (status IMPORT_EXIT) when it has not returned within
     ``seconds``.  A deadline is an alarm, which the file's code can catch (``except BaseException`` in a loop);
-    the end of its process it cannot.  (Code that holds the interpreter's lock in C for good is bounded only by
-    the file's hour, FILE_SECONDS, which the verifying process keeps.)  The watch ends before the process forks."""
+    the end of its process it cannot.  (Code that holds the interpreter's lock in C stops this thread too: the
+    verifying process, which waits for the import's end, kills the interpreter then: :data:`IMPORT_START_SECONDS`.)
+    The watch ends before the process forks."""
     import threading
     done = threading.Event()
 
@@ -510,10 +515,12 @@ def _watched(run: Callable[[], Any], seconds: float, what: str) -> Any:
         watcher.join()
 
 
-def _tracer(path: str, more: dict | None, timeout: float, memory: int | None) -> bytes:
+def _tracer(path: str, more: dict | None, timeout: float, memory: int | None,
+            imported: Callable[[], None]) -> bytes:
     """The spawned interpreter's work (:func:`stiefelsym.run.sandbox.host`): import the file, then trace each claim
     in children of its own; ``more`` (the second phase): claim id -> what :func:`_claim_more` needs, and only
-    those claims."""
+    those claims.  ``imported`` is called when the import has ended (it writes the line the verifying process
+    waits for: :data:`stiefelsym.run.sandbox.IMPORTED`)."""
     _die_with_parent()
     sys.dont_write_bytecode = True      # an honest import here writes no byte code into the engine's folders
     try:
@@ -524,6 +531,7 @@ def _tracer(path: str, more: dict | None, timeout: float, memory: int | None) ->
         reg = _import_bounded(path)
     except CatalogError as exc:
         return json.dumps({"error": str(exc)}).encode()
+    imported()
     parts = []
     for c in reg:
         if more is not None and c.id not in more:
@@ -576,7 +584,9 @@ def _tracer_by_size(path: str, requests: int, answer: int, timeout: float, memor
                 if not line.strip():
                     code = NO_MORE
                 else:
-                    data = _tracer(path, json.loads(line), timeout, memory) + b"\n"
+                    from stiefelsym.run.sandbox import IMPORTED
+                    data = _tracer(path, json.loads(line), timeout, memory,
+                                   lambda: os.write(answer, IMPORTED)) + b"\n"
                     view = memoryview(data)
                     while view:
                         view = view[os.write(answer, view):]
@@ -920,11 +930,12 @@ def _phase(path: Path, parts: list[dict] | None, capture: int,
               "memory": int(CLAIM_MEMORY_GIB * GIB)}
     requests = b"".join(json.dumps(m).encode() + b"\n" for m in parts or [])
     try:
-        data, how = run(config, capture, FILE_SECONDS, requests, before_plain)
+        from stiefelsym.claims import IMPORT_SECONDS
+        data, how = run(config, capture, FILE_SECONDS, requests, before_plain,
+                        IMPORT_SECONDS + IMPORT_GRACE_SECONDS + IMPORT_START_SECONDS)
     except ProcessesLeft as exc:
         raise CatalogError(f"{path}: {exc}") from None
     if data is None:
-        from stiefelsym.claims import IMPORT_SECONDS
         raise CatalogError(f"{path}: loading and tracing the file ended without a result (its process died, its "
                            f"import outlived {IMPORT_SECONDS:.0f} s, or the whole took more than {FILE_SECONDS:.0f} s)")
     answers = [_loads(data)] if parts is None else [_loads(x) for x in data.split(b"\n") if x.strip()]
