@@ -349,7 +349,7 @@ def _strings(x: Any) -> bool:
 def _check_outcome(x: Any) -> bool:
     return (type(x) is dict and {"name", "status"} <= x.keys() <= {"name", "status", "detail", "degree"}
             and type(x["name"]) is str and type(x["status"]) is str and type(x.get("detail", "")) is str
-            and (x.get("degree") is None or _is_int(x["degree"])))
+            and (x.get("degree") is None or (_is_int(x["degree"]) and x["degree"] >= 0)))
 
 
 #: the other fields of a record, each with the type a run writes (what renders it and `check` compare)
@@ -364,7 +364,7 @@ _FIELD_TYPES: tuple[tuple[str, Callable[[Any], bool], str], ...] = (
     ("message", lambda x: type(x) is str, "a string"), ("erratum", lambda x: type(x) is str, "a string"),
     ("digest", lambda x: type(x) is str, "a string"),
     ("residual", lambda x: x is None or type(x) is str, "a string or null"),
-    ("false_pass_bound", lambda x: x is None or (_number(x) and 0 <= x), "a probability or null"),
+    ("false_pass_bound", lambda x: x is None or (_number(x) and 0 <= x <= 1), "a probability or null"),
     ("checks", lambda x: type(x) is list and all(map(_check_outcome, x)), "a list of checks"),
     ("witness", lambda x: x is None or type(x) is dict, "an object or null"),
     ("certificate_data", lambda x: x is None or type(x) is dict, "an object or null"),

@@ -327,8 +327,8 @@ def test_bad_size_is_one_line(fake, run, size):
     (["nosuch"], "unknown claim 'nosuch'"),
     (["--claims", "missing.py"], "claims file not found: missing.py"),
     (["--no-report", "--report-dir", "x"], "contradict"),
-    (["--timeout", "0"], "0.0 is not in the range x>0"),
-    (["--memory", "-1"], "-1.0 is not in the range x>0"),
+    (["--timeout", "0"], "0.0 is not in the range 0<x<=1000000000.0"),
+    (["--memory", "-1"], "-1.0 is not in the range 0<x<=1000000.0"),
     (["--jobs", "0"], "0 is not in the range x>=1"),
     (["--report-dir", ""], "the report directory is empty"),
 ])

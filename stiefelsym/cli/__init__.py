@@ -66,6 +66,26 @@ class SeedType(click.ParamType):
         self.fail(f"{value!r} is not a non-negative integer or 'random'", param, ctx)
 
 
+class Amount(click.FloatRange):
+    """A positive amount (seconds, GiB) up to ``most``: nan and inf are refused (nan passes every comparison of a
+    range, so that ``--timeout nan`` switched the time limit off; inf reached select() and int() as a traceback)."""
+
+    name = "amount"
+
+    def __init__(self, most: float) -> None:
+        super().__init__(min=0, max=most, min_open=True)
+
+    def convert(self, value, param, ctx):   # type: ignore[no-untyped-def]
+        rv = super().convert(value, param, ctx)
+        if rv != rv:
+            self.fail(f"{value!r} is not a number", param, ctx)
+        return rv
+
+
+#: the largest --timeout, --budget and --cap (seconds: about 31 years) and --memory (GiB) taken
+MOST_SECONDS, MOST_GIB = 1e9, 1e6
+
+
 class InputError(click.ClickException):
     """Bad input: reported as one line on stderr, exit status 2."""
 
@@ -246,6 +266,10 @@ def _catalog() -> Registry:
         raise InputError(f"cannot load the catalog of claims: {exc}") from exc
 
 
+#: seconds of importing and tracing a claims file from which the wait is noted on stderr
+TRACING_NOTE_SECONDS = 10.0
+
+
 def _user_claims(paths: str | Sequence[str], sizes: Sequence[Any] = ()) -> Registry:
     """The claims of one or more files, in order; an id defined twice is refused.  Each file is imported and
     its claims traced in child processes only, at their listed sizes and at ``sizes`` (see
@@ -261,10 +285,17 @@ def _user_claims(paths: str | Sequence[str], sizes: Sequence[Any] = ()) -> Regis
         if key in seen:         # the same file twice: load it once
             continue
         seen.add(key)
+        t0 = time.monotonic()
         try:
             reg = load_claims_isolated(path, sizes)
         except CatalogError as exc:
             raise InputError(str(exc)) from exc
+        took = time.monotonic() - t0
+        if took >= TRACING_NOTE_SECONDS:
+            # the tracing is not part of any run's time (nor of --timeout): said, so that its wait is explained
+            click.echo(f"note: importing and tracing {path} took {took:.0f} s (each claim is traced twice at each size "
+                       "it needs one at, under the engine's tracing budgets, not --timeout: see `stiefelsym verify "
+                       "--help`, --timeout)", err=True)
         for c in reg:
             if c.id in merged:
                 raise InputError(f"claim {c.id!r} is defined in both {origin[c.id]} and {path}")
@@ -632,11 +663,14 @@ class _Stdout:
 @click.option("--hard", type=click.Choice(sorted(HARD_CASES)), default=None,
               help="Evaluate at a hard numerical case (rational, modular, float and ball methods): "
                    + "; ".join(f"{k}: {v.description}" for k, v in sorted(HARD_CASES.items())) + ".")
-@click.option("--timeout", type=click.FloatRange(min=0, min_open=True), default=DEFAULT_TIMEOUT,
+@click.option("--timeout", type=Amount(MOST_SECONDS), default=DEFAULT_TIMEOUT,
               show_default=True, metavar="SECONDS",
               help="Wall-time budget of each run (auto as a whole); past it the run's worker is "
-                   "killed and the verdict is inconclusive.")
-@click.option("--memory", type=click.FloatRange(min=0, min_open=True), default=DEFAULT_MEMORY_GIB,
+                   "killed and the verdict is inconclusive.  The claims of a --claims file are traced before the "
+                   "runs, each twice at each size it needs, in child processes under the engine's own budget "
+                   "(300 s per function and size, never the run's, which the file would see): that time is not "
+                   "part of any run's.")
+@click.option("--memory", type=Amount(MOST_GIB), default=DEFAULT_MEMORY_GIB,
               show_default=True, metavar="GIB",
               help="Memory budget (address space, GiB) of each run's worker: a run whose peak memory "
                    "predicted by the cost model exceeds it is refused before anything runs (exit 2, with the "
@@ -644,7 +678,7 @@ class _Stdout:
 @click.option("--jobs", type=click.IntRange(min=1), default=1, show_default=True, metavar="N",
               help="Runs computed in parallel (worker processes); the results come in the same "
                    "order with the same verdicts whatever N.")
-@click.option("--budget", type=click.FloatRange(min=0, min_open=True), default=DEFAULT_BUDGET,
+@click.option("--budget", type=Amount(MOST_SECONDS), default=DEFAULT_BUDGET,
               show_default=True, metavar="SECONDS",
               help="Refuse, before anything runs (exit 2), a run (claim, size, method) whose time "
                    "predicted by the cost model (`stiefelsym speed`) exceeds SECONDS; the refusal "

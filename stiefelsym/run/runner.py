@@ -596,10 +596,10 @@ def checked_options(seed: int, timeout: float, memory: float | None, hard: str |
     case has nothing to say to the dimension-free method and refuses the symbolic one)."""
     if seed < 0:
         raise ValueError("the seed must be a non-negative integer")
-    if not timeout or timeout <= 0:
-        raise ValueError("the time budget must be a positive number of seconds")
-    if memory is not None and memory <= 0:
-        raise ValueError("the memory budget must be a positive number of GiB")
+    if not (0 < timeout <= 1e9):        # (nan fails every comparison)
+        raise ValueError("the time budget must be a positive number of seconds, at most 1e9")
+    if memory is not None and not (0 < memory <= 1e6):
+        raise ValueError("the memory budget must be a positive number of GiB, at most 1e6")
     methods = list(methods)
     if hard is not None:
         hard_case(hard)
