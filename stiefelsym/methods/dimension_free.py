@@ -535,11 +535,23 @@ def graph_of_the_family(claim: Claim, func: Callable, family: SizeFamily) -> str
     return typed_at_stated_sizes(claim, func)
 
 
+#: (function, size statement, realization) whose graph types at every stated size: the function and the statement
+#: kept with the answer (a key of ids alone could be another's once they are gone)
+_TYPED: dict[tuple, tuple] = {}
+TYPED_MEMO_SIZE = 64     # (each entry keeps its function, and a graph claim its graph, alive)
+
+
 def typed_at_stated_sizes(claim: Claim, func: Callable) -> str:
     """"" when the claim's graph with symbolic sizes types at every size it is stated for (replayed there by
-    the tracer, :func:`stiefelsym.ir._typed_at`: no code of the claim runs); otherwise why not."""
+    the tracer, :func:`stiefelsym.ir._typed_at`: no code of the claim runs); otherwise why not.  That it types
+    is remembered per function and size statement (a graph of one function is the same graph at each call:
+    :func:`stiefelsym.ir.compile_claim`); a refusal is found again each time."""
     from stiefelsym.ir import compile_claim
     from stiefelsym.scene import REALIZATIONS
+    key = (id(func), id(claim.sizes), claim.realization)
+    hit = _TYPED.get(key)
+    if hit is not None and hit[0] is func and hit[1] is claim.sizes:
+        return ""
     cons = REALIZATIONS[claim.realization]
     for z in claim.sizes:
         try:
@@ -547,6 +559,9 @@ def typed_at_stated_sizes(claim: Claim, func: Callable) -> str:
         except Exception as exc:    # noqa: BLE001 - a graph that does not type at a stated size proves nothing
             return (f"the claim's graph is not a graph at ({z.n},{z.r}), a size it is stated for: "
                     f"{type(exc).__name__}: {exc}")
+    if len(_TYPED) >= TYPED_MEMO_SIZE:
+        _TYPED.clear()
+    _TYPED[key] = (func, claim.sizes)
     return ""
 
 
