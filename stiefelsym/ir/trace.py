@@ -1092,9 +1092,34 @@ class Trace:
         tensor that keeps a point it was evaluated at, a list a function appends its argument to), which no
         evaluation binds."""
         g, empty = self.g, frozenset()
-        deps: list[frozenset] = []
-        for op, a in zip(g.ops, g.args):
-            below = [deps[j] for j in g.refs(len(deps)) if deps[j]]
+        # nodes read only nodes made before them, so none before the first parameter or function scene reads one:
+        # the sweep starts there (the ops are searched in C; scene nodes are few, once per attribute and scene)
+        ops, args = g.ops, g.args
+        start = len(ops)
+        if "param" in ops:
+            start = ops.index("param")
+        at = -1
+        while True:
+            try:
+                at = ops.index("scene", at + 1, start)
+            except ValueError:
+                break
+            if args[at][0] != 0:
+                start = at
+                break
+        if start == len(ops):
+            return
+        deps: list[frozenset] = [empty] * start
+        nested = Graph._nested
+        for op, a in zip(ops[start:], args[start:]):
+            below = []
+            for x in a:         # Graph.refs in line: a node's arguments are mostly refs
+                if type(x) is Ref:
+                    dx = deps[x[0]]
+                    if dx:
+                        below.append(dx)
+                elif type(x) is tuple:
+                    below += [deps[j] for j in nested(x) if deps[j]]
             if op != "scene" and op != "param" and op != "fn" and len(below) <= 1:
                 deps.append(below[0] if below else empty)
                 continue
