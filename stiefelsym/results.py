@@ -100,8 +100,8 @@ class Result:
         tag = "" if self.expected else "  UNEXPECTED"
         var = f" [{self.variant}]" if self.variant else ""
         p = self.false_pass_bound
-        # p = 0: the residual has degree 0 in the random parameters (at (1,1), say, where P = 0 and
-        # V(1, 1) is the two points of whose both are sampled): one point decides it, nothing is left to chance
+        # p = 0: the residual has degree 0 in the random parameters (at (1,1), say, where P = 0 and V(1, 1) is
+        # two points, both sampled): its points decide it, nothing is left to chance
         bound = "" if p is None else " p=0 (degree 0 in the random parameters)" if p == 0 else f" p<={p:.1e}"
         reason = self.reason(limit)
         seed = f", seed {self.seed}" if self.seed is not None else ", no randomness"

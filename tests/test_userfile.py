@@ -221,3 +221,40 @@ def twin(s):
     (tmp_path / "mine.py").write_text(claim.format(rest=""), encoding="utf-8")     # XᵀP = 0: false
     again = run("report", "--results", "out/results.json")
     assert again.exit_code == 2 and "whose graph is not its claim's" in again.output, again.output
+
+
+_WRITES_THE_MARK = '''import os, sys
+from stiefelsym import admissible, claim
+
+MARK = b'{{"imported": true}}\\n'
+sys.stdout.write(MARK.decode())
+sys.stdout.flush()
+{forge}
+
+@claim("fool-marker", paper=("prep",), kind="id", sizes=admissible(n_max=3))
+def c(s):
+    """X Xᵀ = I_n (false for r < n)."""
+    return {{"c": s.X @ s.X.T - s.In}}
+'''
+_FORGE = '''for fd in range(3, 64):       # the end-line and a forged answer, on every descriptor the file can reach
+    try:
+        os.write(fd, MARK + b'{"claims": []}\\n')
+    except OSError:
+        pass
+'''
+
+
+def test_a_file_that_writes_the_import_s_end_line_itself_gets_no_other_graph(tmp_path):
+    """The import's end-line (sandbox.IMPORTED) is the interpreter's; a file that prints it changes nothing (its
+    stdout is the capture), and one that writes it with a forged answer on every descriptor it reaches breaks its
+    own answer: bad input, no verdict.  (Either way the line only ends the import's deadline early.)"""
+    from stiefelsym.claims import CatalogError
+    from stiefelsym.methods.fixed_size import run_points
+    plain = tmp_path / "prints_the_mark.py"
+    plain.write_text(_WRITES_THE_MARK.format(forge=""), encoding="utf-8")
+    (c,) = userfile.load_claims_isolated(plain, [(3, 1)])
+    assert run_points(c, 3, 1, "modular", 0).verdict == "fails"
+    forged = tmp_path / "forges_the_answer.py"
+    forged.write_text(_WRITES_THE_MARK.format(forge=_FORGE), encoding="utf-8")
+    with pytest.raises(CatalogError):
+        userfile.load_claims_isolated(forged, [(3, 1)])

@@ -27,7 +27,7 @@ import click
 from stiefelsym._lazy import lazy
 from stiefelsym.claims import CATALOG, CatalogError, ClaimTimeout, Claim, Registry, Size, load_catalog
 from stiefelsym.methods.hard import HARD_CASES
-from stiefelsym.run.pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT, Terminated, raise_on_sigterm
+from stiefelsym.run.pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT, MOST_GIB, MOST_SECONDS, Terminated, raise_on_sigterm
 from stiefelsym.results import Result, dump_results, load_results, write_atomic
 from stiefelsym.scene import SizeError
 
@@ -80,10 +80,6 @@ class Amount(click.FloatRange):
         if rv != rv:
             self.fail(f"{value!r} is not a number", param, ctx)
         return rv
-
-
-#: the largest --timeout, --budget and --cap (seconds: about 31 years) and --memory (GiB) taken
-MOST_SECONDS, MOST_GIB = 1e9, 1e6
 
 
 class InputError(click.ClickException):
@@ -293,9 +289,8 @@ def _user_claims(paths: str | Sequence[str], sizes: Sequence[Any] = ()) -> Regis
         took = time.monotonic() - t0
         if took >= TRACING_NOTE_SECONDS:
             # the tracing is not part of any run's time (nor of --timeout): said, so that its wait is explained
-            click.echo(f"note: importing and tracing {path} took {took:.0f} s (each claim is traced twice at each size "
-                       "it needs one at, under the engine's tracing budgets, not --timeout: see `stiefelsym verify "
-                       "--help`, --timeout)", err=True)
+            click.echo(f"note: importing and tracing {path} took {took:.0f} s, before the runs and outside "
+                       "--timeout (see its help)", err=True)
         for c in reg:
             if c.id in merged:
                 raise InputError(f"claim {c.id!r} is defined in both {origin[c.id]} and {path}")

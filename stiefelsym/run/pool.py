@@ -36,6 +36,8 @@ GIB = 1 << 30
 #: the default budgets of one job: wall time (seconds) and address space (GiB)
 DEFAULT_TIMEOUT = 300.0
 DEFAULT_MEMORY_GIB = 4.0
+#: the largest time budget (seconds, about 31 years) and memory budget (GiB) a run takes
+MOST_SECONDS, MOST_GIB = 1e9, 1e6
 #: a worker retires after a job once its resident memory has grown by more than this (bytes) since it
 #: started, and a fresh one, forked from the parent, takes the next job: every symbolic attempt at
 #: n >= 6 runs in a child forked from the worker, and a fork (with the child's exit) costs system time
