@@ -103,15 +103,25 @@ def tex_escape(text: Any) -> str:
             out.append(" ")
         elif ord(piece) < 128:
             out.append(piece)
-        elif piece in _COMBINING and out and (len(out[-1]) == 1 and out[-1].isalpha()
-                                              or out[-1].startswith("\\ensuremath{") and out[-1].count("{") == 1):
-            last = out[-1][len("\\ensuremath{"):-1] if out[-1].startswith("\\ensuremath{") else out[-1]
-            out[-1] = r"\ensuremath{" + _COMBINING[piece] + "{" + last + "}}"   # Q̇, Σ̄: a mark on the letter before
+        elif piece in _COMBINING and out and _markable(out[-1]):
+            out[-1] = r"\ensuremath{" + _COMBINING[piece] + "{" + _markable(out[-1]) + "}}"   # Q̇, Σ̄, 𝒳̇, Ż̄
         elif piece in _TEXT_ONLY:
             out.append(_TEXT_ONLY[piece])
         else:
             out.append(_tex_nonascii(piece))
     return "".join(out)
+
+
+def _markable(prev: str) -> str:
+    """What a combining mark puts its accent on, for ``prev``, the text of the character before it: a letter, the
+    math of one character (\\ensuremath{\\mathcal{X}}: each character is one group), or any other text of a
+    letter as a box (\\.{Z}); "" for a script (an accent on ^{2} is no LaTeX), which keeps the mark as its code."""
+    if len(prev) == 1:
+        return prev if prev.isalpha() else ""
+    if prev.startswith("\\ensuremath{") and prev.endswith("}"):
+        inner = prev[len("\\ensuremath{"):-1]
+        return "" if inner.startswith(("^", "_")) else inner
+    return r"\mbox{" + prev + "}" if prev.startswith("\\") else ""
 
 
 #: combining marks written after a letter (U+0307 dot above, U+0308 diaeresis: time derivatives)

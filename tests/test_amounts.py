@@ -57,3 +57,13 @@ def test_the_versions_in_a_report_are_importlib_metadata_s():
         except importlib.metadata.PackageNotFoundError:
             continue
         assert got[dist] == want, dist
+
+
+def test_a_combining_mark_after_any_letter_is_its_accent_in_latex():
+    """𝒳̇ and Ż̄ (a dot, then a bar) in a claim's text were printed in the report as the mark's code, [U+0307] and
+    [U+0304]; a mark after a script (²̄) still is, since an accent on a superscript is no LaTeX."""
+    from stiefelsym.latex import tex_escape
+    assert tex_escape("𝒳̇") == r"\ensuremath{\dot{\mathcal{X}}}"
+    assert tex_escape("Ż̄") == r"\ensuremath{\bar{\mbox{\.{Z}}}}"
+    assert tex_escape("Q̇") == r"\ensuremath{\dot{Q}}"
+    assert "[U+0304]" in tex_escape("a²̄")
