@@ -97,6 +97,29 @@ SLOW_TESTS = (
     "tests/test_process.py::test_tricks_each_get_their_verdict_and_the_run_goes_on",
     "tests/test_mutate_exact_loan.py::",
     "tests/test_app2.py::test_corrupted_claim_fails[coupled-corrected-flow-invariants",
+    # the adversary rounds' replays of 4 to 13 s each (CLI runs in fresh processes); the default run keeps a
+    # faster replay of each route's class (the rounds' other tests)
+    "tests/adversary/test_adversary_s42b.py::test_a_records_rerun_command_and_message_are_its_own",
+    "tests/adversary/test_adversary_s42.py::test_a_record_at_a_size_the_claim_does_not_state_is_refused",
+    "tests/adversary/test_adversary_s44.py::test_mutants_of_fused_traces_are_decided_as_without_fusion",
+    "tests/adversary/test_adversary_s38b.py::test_a_dirac_bracket_of_a_bracket_that_closes_over_the_claims_point_is_decided",
+    "tests/adversary/test_adversary.py::test_a_resolvent_at_an_eigenvalue_is_not_passed_at_a_fixed_size",
+    "tests/adversary/test_adversary_s42b.py::test_the_command_of_a_results_file_is_the_one_its_fields_describe",
+    "tests/adversary/test_adversary.py::test_column_letters_misuse_fails_at_a_fixed_size",
+    "tests/adversary/test_adversary_s35.py::test_a_point_kept_from_the_poisson_checks_is_never_the_test_point",
+    "tests/adversary/test_adversary_s44.py::test_check_accepts_the_seeded_dimension_records_and_rejects_a_seed_edited",
+    "tests/adversary/test_adversary_s42.py::test_a_claim_left_out_whole_is_refused",
+    "tests/adversary/test_adversary_s36.py::test_a_tensor_that_is_another_form_in_its_compatibility_check_is_refused",
+    "tests/adversary/test_adversary_s42b.py::test_the_message_of_an_auto_record_is_compared_beyond_the_reason_auto_gives",
+    "tests/adversary/test_adversary.py::test_gradient_in_x_does_not_read_the_declared_degree",
+    "tests/adversary/test_adversary.py::test_a_size_read_through_a_shape_or_a_text_is_no_read",
+    "tests/adversary/test_adversary_s43.py::test_check_rejects_a_kernel_record_grafted_or_edited",
+    "tests/adversary/test_adversary_s36b.py::test_reads_operators_jacobians_and_programs_against_their_truths",
+    "tests/adversary/test_adversary_s38b.py::test_a_bracket_of_a_bracket_that_closes_over_the_claims_point",
+    "tests/adversary/test_adversary_s35.py::test_a_tensor_built_on_the_test_point_is_not_passed",
+    "tests/adversary/test_adversary_s44.py::test_fused_and_unfused_exact_methods_agree",
+    "tests/adversary/test_adversary_s33.py::test_the_results_file_of_a_run_is_not_rewritten_after_it[spawn]",
+    "tests/adversary/test_adversary_s32.py::test_new_letters_second_round_fixed_sizes",
 )
 
 

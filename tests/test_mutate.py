@@ -683,3 +683,27 @@ def test_exact_residual_texts_of_metric_flow_mutants_do_not_depend_on_the_run():
     every, some = texts(None), texts([12, 11, 3])
     assert set(every) == {3, 11, 12} and every == some, (every, some)
     assert all("= (" in t[0] for t in every.values()) and len({t[0] for t in every.values()}) == 3
+
+
+def test_a_symbolic_run_at_a_size_refuted_already_is_capped_by_a_count_of_term_products(monkeypatch):
+    """While points are lent, a mutant's symbolic run at a size where the rational or modular method has refuted
+    it stops at a product of more than MUTANT_REFUTED_TERM_PRODUCTS term products (here 1: at its first
+    product); at the other sizes, for the printed claim, and with fresh points, no run is capped."""
+    import stiefelsym.analyses.mutate as mutate
+    monkeypatch.setattr(mutate, "MUTANT_REFUTED_TERM_PRODUCTS", 1)
+    claim = load_catalog().get("manakov-square")
+    capped, free = 0, 0
+    for lend in (True, False):
+        rep = run_mutation([claim], methods=("exact", "rational"), limit=12, lend=lend)
+        cm = rep.claims[0]
+        assert all("term products" not in (c.message or "") for c in cm.baseline.cells)
+        for o in cm.mutants:
+            refuted = {(c.n, c.r) for c in o.cells if c.method == "rational" and c.verdict == "fails"}
+            for c in o.cells:
+                if c.method != "exact":
+                    continue
+                cut = "term products" in (c.message or "")
+                assert not cut or (lend and (c.n, c.r) in refuted), (o.index, c)
+                capped += cut
+                free += (c.n, c.r) not in refuted and c.verdict == "proved"
+    assert capped and free

@@ -101,3 +101,4 @@ def test_the_record_of_a_lent_chart_starts_empty():
     assert s1.tracker.used == ("matrix entries",)
     f2, s2 = loan.chart(("k",), build)
     assert s2.tracker.used == ()
+

@@ -686,3 +686,31 @@ def test_a_ring_started_wide_gives_the_values_of_one_that_grew():
         texts.append((R.text(r), zero[0].is_zero(), f.is_zero(num - num), f.is_zero(num)))
         assert R.cap == (256 if width == 0 else 512) and len(R.syms) == 200 <= MAX_VARS
     assert texts[0] == texts[1] and texts[0][1:] == (True, True, False)
+
+
+def test_a_term_cap_refuses_a_product_before_it_starts_and_by_a_count():
+    """Under term_cap(k) a symbolic product, a trace of a product or a step of an inverse whose operands would
+    take more than k term products raises SymbolicBudget (the count of the operands, the same on every
+    machine); at the cap, and outside it, the results are those without a cap."""
+    from stiefelsym.backends.polyfield import term_cap
+    F = SymbolicField()
+    xs = [F.param(f"x{i}") for i in range(6)]
+    dense = sum(xs[1:], xs[0])                 # 6 terms, and 21 in its square
+
+    def M():
+        return Mat._rows([[dense, xs[0]], [xs[1], dense * dense]], F)
+    # M @ M: the column sums of terms of M (6 + 1, 1 + 21) times its row sums (6 + 1, 1 + 21): 7*7 + 22*22 = 533
+    with term_cap(533):
+        P = M() @ M()
+    Q = M() @ M()                              # held in flint: its trace with another is a Frobenius product
+    with term_cap(532):
+        with pytest.raises(SymbolicBudget, match="a symbolic product of 533 term products \\(the cap is 532\\)"):
+            M() @ M()
+        with pytest.raises(SymbolicBudget, match="trace of a product"):
+            Q._trace_product(Q)
+        with pytest.raises(SymbolicBudget, match="step of a symbolic inverse"):
+            Mat._rows([[dense * dense, dense], [dense, xs[2] * dense]], F).inv()
+    assert (P - M() @ M()).is_zero()
+    small = Mat._rows([[xs[0], 1], [1, xs[1]]], F)
+    with term_cap(10):
+        assert (small @ small.inv() - Mat.identity(2, F)).is_zero()

@@ -89,8 +89,18 @@ DECISIVE = ("fails", "error")
 KILL_ORDER = ("fails", "error", "inconclusive", "undecided")
 MESSAGE_WIDTH = 240
 #: the symbolic method's budget per run of a mutant (its own is 120 s): at n <= 4 every claim as
-#: printed is decided in under 2 s and every mutant but one in under 16 s; the one stops either way
-MUTANT_EXACT_SECONDS = 30.0
+#: printed is decided in under 2 s, and every mutant that no point method refutes at that size in
+#: under 3 s but one, which stops either way (manakov-integrals with L(μ) inverted)
+MUTANT_EXACT_SECONDS = 15.0
+#: the most term products one symbolic product (or step of an inverse) of a mutant may take at a size where
+#: the rational or modular method has already refuted it with an exact witness (:class:`.polyfield.term_cap`):
+#: there the symbolic run can only be wrong by proving it, and the changes that make it expensive (a symbolic
+#: matrix inverted, a resolvent that no longer cancels) took 4-33 s each to refute symbolically what the
+#: witness had refuted already.  A count, not a time: the run stops at the same step on every machine.
+#: 10^7 term products take 0.2-0.7 s in flint.
+MUTANT_REFUTED_TERM_PRODUCTS = 10 ** 7
+#: the methods whose ``fails`` at a size is an exact witness for MUTANT_REFUTED_TERM_PRODUCTS
+WITNESS_METHODS = ("rational", "modular")
 
 #: scene letters and the letters of the same kind that replace them (one place, both directions)
 LETTER_SWAPS: dict[str, tuple[str, ...]] = {
@@ -1312,19 +1322,39 @@ class MutationReport:
 # --------------------------------------------------------------------------- running
 
 def _run_cells(claim: Claim, plan: Sequence[tuple[Size | None, str]], seed: int,
-               func: Callable | None, variant: str | None) -> list[Cell]:
+               func: Callable | None, variant: str | None, loan: Any = None) -> list[Cell]:
     """The cells of the plan, in its order.  A mutant's symbolic runs come after its other runs: a
     refutation attaches the witness of a rational point, which the rational run at the same size has
     computed on the same lent points (:func:`stiefelsym.methods.fixed_size._rational_witness`); every run of a
     mutant is independent of the others (each lent point a copy of the same snapshot), so the order
-    changes no verdict.  The printed claim's runs (which record the points) keep the plan's order."""
+    changes no verdict.  The printed claim's runs (which record the points) keep the plan's order.  A
+    mutant's symbolic run at a size where a method of WITNESS_METHODS has refuted it is capped at
+    MUTANT_REFUTED_TERM_PRODUCTS term products per product while the ``loan`` lends (with fresh points the
+    symbolic method has its own budgets)."""
     from stiefelsym.run.runner import run_one
     order = sorted(range(len(plan)), key=lambda k: func is not None and plan[k][1] == "exact")
     out: dict[int, Cell] = {}
     for k in order:
         s, m = plan[k]
-        out[k] = Cell.of(run_one(claim, s, m, seed, func=func, variant=variant))
+        refuted = func is not None and m == "exact" and any(
+            plan[j][0] == s and plan[j][1] in WITNESS_METHODS and c.verdict == "fails" for j, c in out.items())
+        with _capped(loan, MUTANT_REFUTED_TERM_PRODUCTS if refuted else None):
+            out[k] = Cell.of(run_one(claim, s, m, seed, func=func, variant=variant))
     return [out[k] for k in range(len(plan))]
+
+
+@contextlib.contextmanager
+def _capped(loan: Any, products: int | None) -> Iterator[None]:
+    """The loan's cap of term products per symbolic product set to ``products`` for the block (no loan: no
+    cap, as with fresh points, where the symbolic method has its own budget too)."""
+    if loan is None:
+        yield
+        return
+    old, loan.term_products = loan.term_products, products
+    try:
+        yield
+    finally:
+        loan.term_products = old
 
 
 def classify(outcome: MutantOutcome, baseline: MutantOutcome) -> MutantOutcome:
@@ -1568,7 +1598,7 @@ def _claim_task(ci: int) -> _ClaimRun:
             if m.prepare is not None:
                 m.prepare()
             o = MutantOutcome(claim.id, m.index, m.description, (m.lineno or None) if on_graphs else m.lineno, m.operator,
-                              m.source, _run_cells(claim, plan, seed, m.func, m.description),
+                              m.source, _run_cells(claim, plan, seed, m.func, m.description, loan),
                               notation=list(m.notation) if on_graphs else notation(claim, m, where))
             run.mutants.append(classify(o, run.baseline))
     finally:

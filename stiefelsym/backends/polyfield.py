@@ -1516,6 +1516,10 @@ class PolyBackend(Backend):
             rows[k], rows[piv] = rows[piv], rows[k]
             rk = rows[k]
             p = rk[k]
+            if _TERM_CAP is not None:
+                lp, lk = len(p), _terms(rk)
+                _spend(sum(lp * _terms(rows[i]) + len(rows[i][k]) * lk for i in range(m) if i != k),
+                       "a step of a symbolic inverse")
             for i in range(m):
                 if i == k:
                     continue
@@ -1536,6 +1540,39 @@ class PolyBackend(Backend):
             for j in range(m):
                 out[i, j] = rows[i][m + j] * num
         return self._reduce(out, atoms)
+
+
+#: the most term products one symbolic product or elimination step may take (None: no cap); set for a
+#: block by :func:`term_cap`.  The count is that of the operands (sums of terms of the entries that meet),
+#: known before the product starts: a run stopped by the cap stops at the same step on every machine.
+_TERM_CAP: int | None = None
+
+
+class term_cap:
+    """A context in which a symbolic product (of matrices, a trace of a product, a Frobenius product) or a
+    step of a symbolic inverse whose operands would take more than ``limit`` term products raises
+    :class:`SymbolicBudget` before it starts (the mutation analysis, where a point method has already
+    refuted the mutant: see :data:`stiefelsym.analyses.mutate.MUTANT_REFUTED_TERM_PRODUCTS`)."""
+
+    def __init__(self, limit: int | None) -> None:
+        self.limit = limit
+
+    def __enter__(self) -> None:
+        global _TERM_CAP
+        self._old, _TERM_CAP = _TERM_CAP, self.limit
+
+    def __exit__(self, *exc: Any) -> None:
+        global _TERM_CAP
+        _TERM_CAP = self._old
+
+
+def _terms(xs) -> int:
+    return sum(len(x) for x in xs if x)
+
+
+def _spend(count: int, what: str) -> None:
+    if _TERM_CAP is not None and count > _TERM_CAP:
+        raise SymbolicBudget(f"{what} of {count:,} term products (the cap is {_TERM_CAP:,})")
 
 
 # Entrywise operations that skip zero entries: a flint operation costs about half a microsecond
@@ -1568,6 +1605,8 @@ def _dot(a: np.ndarray, b: np.ndarray, zero) -> np.ndarray:
     outer products (X X^T, X P^T at X = (E_1..E_r))."""
     m, k = a.shape
     n = b.shape[1]
+    if _TERM_CAP is not None:
+        _spend(sum(_terms(a[:, i].tolist()) * _terms(b[i].tolist()) for i in range(k)), "a symbolic product")
     out = np.empty(m * n, dtype=object)
     if k == 1:
         row = b[0].tolist()
@@ -1627,6 +1666,8 @@ def _frobenius(a: np.ndarray, b: np.ndarray, zero):
     """sum_ij a_ij b_ij.  When a and b are both symmetric, or both skew (checked entry by entry),
     the terms (i, j) and (j, i) are equal: the upper triangle is summed once and doubled (half the
     products); when one is symmetric and the other skew they cancel, and the sum is the diagonal's."""
+    if _TERM_CAP is not None:
+        _spend(sum(len(x) * len(y) for x, y in zip(a.flat, b.flat) if x and y), "a symbolic trace of a product")
     pa = _parity(a)
     pb = _parity(b) if pa else 0
     acc = zero

@@ -1883,6 +1883,9 @@ class PointLoan:
         self._points: dict[tuple, list] = {}
         #: the symbolic method's time budget per run while lending (None: its own, EXACT_TIME_LIMIT)
         self.exact_seconds = exact_seconds
+        #: the most term products of one symbolic product in the symbolic run under way while lending (None: no
+        #: cap; :class:`stiefelsym.backends.polyfield.term_cap`), set by the mutation analysis per run
+        self.term_products: int | None = None
         #: (claim, realization, n, r, seed, id of the function) -> (function, witness): the witness of
         #: the first point (of each component) of a rational run on lent points, which is what the
         #: exact method's one-point rational run for its witness computes, on the same lent points
@@ -3091,6 +3094,15 @@ def run_exact_isolated(claim: Claim, n: int, r: int, seed: int, func: Callable |
     In-process, the budget is the deadline of :func:`time_limit`."""
     if _LOAN is not None and _LOAN.exact_seconds is not None:
         time_budget = min(time_budget, _LOAN.exact_seconds)
+    if _LOAN is not None and _LOAN.term_products is not None:
+        from stiefelsym.backends.polyfield import term_cap
+        with term_cap(_LOAN.term_products):
+            return _run_exact_isolated(claim, n, r, seed, func, time_budget, in_worker)
+    return _run_exact_isolated(claim, n, r, seed, func, time_budget, in_worker)
+
+
+def _run_exact_isolated(claim: Claim, n: int, r: int, seed: int, func: Callable | None, time_budget: float,
+                        in_worker: bool) -> Result:
     if not isolates(claim, n, r, in_worker):
         if not in_worker:
             res = run_exact(claim, n, r, seed, func, time_budget)

@@ -1508,8 +1508,10 @@ MUTATION_EXPLANATION = (
     "(mutants - equivalent).  Unless the command says --fresh-points, the point methods (rational, "
     "modular, float) evaluate a mutant at the random points of the claim as printed and recompute "
     "only the subexpressions of its formula that the change reaches (parameters the printed claim never drew "
-    "are drawn afresh), and the symbolic method has 30 s per run of a mutant; the verdicts are those of "
-    "fresh points, which the tests check.")
+    "are drawn afresh), and the symbolic method has 15 s per run of a mutant and, at a size where the "
+    "rational or modular method has refuted it already with an exact witness (there a symbolic run can only "
+    "err by proving it), at most 10^7 term products per symbolic product; the verdicts are those of fresh "
+    "points, which the tests check.")
 MUTATION_COLUMNS = ("mutants", "killed", "fails", "error", "other", "survived", "equivalent",
                     "unresolved", "missed", "kill rate")
 
