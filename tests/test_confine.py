@@ -214,9 +214,9 @@ def test_the_whole_package_is_imported_before_an_interpreter_without_namespaces(
         import stiefelsym.run.sandbox as sandbox
         import stiefelsym.run.userfile as userfile
         seen, digests, real_spawn, real_digests = [], [], sandbox._spawn, userfile._digests
-        def spawn(config, capture, seconds, unshare, requests=b"", import_seconds=None):
+        def spawn(config, capture, seconds, unshare, requests=b"", import_seconds=None, beat_seconds=None):
             seen.append((unshare is not None, "stiefelsym.analyses.speed" in sys.modules, len(digests)))
-            return real_spawn(config, capture, seconds, unshare, requests, import_seconds)
+            return real_spawn(config, capture, seconds, unshare, requests, import_seconds, beat_seconds)
         def counted():
             digests.append(1)
             return real_digests()

@@ -285,10 +285,10 @@ def test_a_file_whose_claims_have_graphs_of_symbolic_sizes_is_traced_once(tmp_pa
     calls = []
     real = sandbox.run
 
-    def counted(config, capture, seconds, requests=b"", before_plain=None, import_seconds=None):
+    def counted(config, capture, seconds, requests=b"", before_plain=None, import_seconds=None, beat_seconds=None):
         calls.append([json.loads(x) for x in requests.splitlines()] if config["second"] else None)
         assert config["second"] == bool(requests) and "parts" not in config
-        return real(config, capture, seconds, requests, before_plain, import_seconds)
+        return real(config, capture, seconds, requests, before_plain, import_seconds, beat_seconds)
     monkeypatch.setattr(sandbox, "run", counted)
     body = textwrap.dedent('''
         from stiefelsym import admissible, claim
@@ -600,10 +600,10 @@ def test_a_function_traced_at_a_size_sees_no_other_size_of_the_run(tmp_path, mon
     calls = []
     real = sandbox.run
 
-    def counted(config, capture, seconds, requests=b"", before_plain=None, import_seconds=None):
+    def counted(config, capture, seconds, requests=b"", before_plain=None, import_seconds=None, beat_seconds=None):
         calls.append([json.loads(x) for x in requests.splitlines()] if config["second"] else None)
         assert config["second"] == bool(requests) and "parts" not in config
-        return real(config, capture, seconds, requests, before_plain, import_seconds)
+        return real(config, capture, seconds, requests, before_plain, import_seconds, beat_seconds)
     monkeypatch.setattr(sandbox, "run", counted)
     path = tmp_path / "other_sizes.py"
     path.write_text(textwrap.dedent('''

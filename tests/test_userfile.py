@@ -176,11 +176,52 @@ def test_an_import_that_holds_the_interpreter_s_lock_in_c_is_killed_by_the_verif
     assert time.monotonic() - t0 < 60
 
 
+_HOLDS_THE_LOCK_LATER = '''import threading
+import time
+
+from stiefelsym import admissible, claim
+
+
+def _hold():
+    time.sleep(0.3)
+    sum(range(10 ** 15))    # once the import has ended: one call in C that holds the interpreter's lock
+
+
+threading.Thread(target=_hold, daemon=True).start()
+
+
+@claim("holds-later", paper=("prep",), kind="id", sizes=admissible(n_max=3))
+def c(s):
+    """XᵀX = I_r (true)."""
+    time.sleep(0.5)
+    return {"c": s.X.T @ s.X - s.Ir}
+'''
+
+
+def test_a_thread_of_the_file_that_holds_the_lock_while_the_claims_are_traced_is_killed(tmp_path, monkeypatch):
+    """A thread the import starts, which takes the interpreter's lock in C once the import has ended, stops the
+    process that traces the claims (and its budgets) as well: the run waited for the file's hour.  The verifying
+    process now waits for a line after each function traced at a size, and kills the interpreter when none has
+    come (here after 2 s instead of 330)."""
+    import time
+    from stiefelsym.claims import CatalogError
+    path = tmp_path / "holds_the_lock_later.py"
+    path.write_text(_HOLDS_THE_LOCK_LATER, encoding="utf-8")
+    monkeypatch.setattr(userfile, "CLAIM_SECONDS", 1.0)
+    monkeypatch.setattr(userfile, "META_SECONDS", 1.0)
+    monkeypatch.setattr(userfile, "BEAT_GRACE_SECONDS", 1.0)
+    t0 = time.monotonic()
+    with pytest.raises(CatalogError, match="stopped making progress for 2 s"):
+        userfile.load_claims_isolated(path)
+    assert time.monotonic() - t0 < 60
+
+
 def test_the_import_lines_are_not_part_of_the_answer():
-    """The interpreter's IMPORTED lines (one per import: the first phase's, each size's in the second) are
-    taken out of what it answers, and only whole lines equal to the marker are."""
-    from stiefelsym.run.sandbox import IMPORTED, _answer
+    """The interpreter's IMPORTED lines (one per import: the first phase's, each size's in the second) and BEAT
+    lines (one per job traced) are taken out of what it answers, and only whole lines equal to a marker are."""
+    from stiefelsym.run.sandbox import BEAT, IMPORTED, _answer
     assert _answer(IMPORTED + b'{"claims": []}') == b'{"claims": []}'
+    assert _answer(IMPORTED + BEAT + BEAT + b'{"claims": []}') == b'{"claims": []}'
     two = IMPORTED + b'\n{"claims": [1]}\n' + IMPORTED + b'\n{"claims": [2]}\n'
     assert [x for x in _answer(two).split(b"\n") if x.strip()] == [b'{"claims": [1]}', b'{"claims": [2]}']
     inside = b'{"claims": ["{\\"imported\\": true}"]}'

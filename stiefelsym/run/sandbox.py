@@ -146,7 +146,7 @@ def _environment() -> dict[str, str]:
 
 def run(config: dict[str, Any], capture: int, seconds: float, requests: bytes = b"",
         before_plain: Callable[[], None] | None = None,
-        import_seconds: float | None = None) -> tuple[bytes | None, str]:
+        import_seconds: float | None = None, beat_seconds: float | None = None) -> tuple[bytes | None, str]:
     """``config`` (JSON) to a fresh interpreter running :func:`host`, its answer back: (bytes, or None when it
     died or ran out of ``seconds``; the confinement used).  What it prints goes to ``capture``.  The
     namespaces are given up (for this process's later files too) only when the interpreter did not write its
@@ -157,11 +157,14 @@ def run(config: dict[str, Any], capture: int, seconds: float, requests: bytes = 
     ``import_seconds``: each import of the file must have ended (its :data:`IMPORTED` line written) within that
     many seconds of the interpreter's confinement line or of its last answer line, else the interpreter is
     killed (None) -- kept here, in the verifying process, because code of the file that holds the interpreter's
-    lock in C also stops the file's own watch (:func:`stiefelsym.run.userfile._watched`).  The IMPORTED lines
-    are not part of the answer returned."""
+    lock in C also stops the file's own watch (:func:`stiefelsym.run.userfile._watched`).  ``beat_seconds``: once
+    an import has ended, the tracing writes a :data:`BEAT` line after each function traced at a size (each has its
+    own budget in the tracing process); the interpreter is killed when neither that line nor an answer has come
+    within that many seconds of the last (a thread of the file that holds the lock in C stops the tracing process
+    too).  The IMPORTED and BEAT lines are not part of the answer returned."""
     unshare = _unshare()
     if unshare is not None:
-        raw, status = _spawn(config, capture, seconds, unshare, requests, import_seconds)
+        raw, status = _spawn(config, capture, seconds, unshare, requests, import_seconds, beat_seconds)
         head = _line(NAMESPACES)
         if raw.startswith(head):
             _available[NAMESPACES] = True
@@ -175,20 +178,24 @@ def run(config: dict[str, Any], capture: int, seconds: float, requests: bytes = 
             return None, NAMESPACES
     if before_plain is not None:
         before_plain()
-    raw, status = _spawn(config, capture, seconds, None, requests, import_seconds)
+    raw, status = _spawn(config, capture, seconds, None, requests, import_seconds, beat_seconds)
     head = _line(SPAWN)
     return (_answer(raw[len(head):]) if status == 0 and raw.startswith(head) else None), SPAWN
 
 
 #: the line the interpreter writes (before its answer) when an import of the file has ended
 IMPORTED = b'{"imported": true}\n'
+#: the line the interpreter writes (before its answer) each time the tracing of a claim's function (or of its
+#: metadata) at one size has ended
+BEAT = b'{"traced": true}\n'
+_MARKERS = (IMPORTED[:-1], BEAT[:-1])
 
 
 def _answer(raw: bytes) -> bytes:
-    """What the interpreter wrote after its confinement line, without its IMPORTED lines."""
-    if IMPORTED not in raw:
+    """What the interpreter wrote after its confinement line, without its IMPORTED and BEAT lines."""
+    if IMPORTED not in raw and BEAT not in raw:
         return raw
-    return b"\n".join(line for line in raw.split(b"\n") if line != IMPORTED[:-1])
+    return b"\n".join(line for line in raw.split(b"\n") if line not in _MARKERS)
 
 
 def _namespaces_work(config: dict[str, Any], unshare: str) -> bool:
@@ -216,7 +223,8 @@ def _line(confinement: str) -> bytes:
 
 
 def _spawn(config: dict[str, Any], capture: int, seconds: float, unshare: str | None,
-           requests: bytes = b"", import_seconds: float | None = None) -> tuple[bytes, int | None]:
+           requests: bytes = b"", import_seconds: float | None = None,
+           beat_seconds: float | None = None) -> tuple[bytes, int | None]:
     """Spawn the interpreter (in namespaces when ``unshare`` is given): what it wrote, and its wait status
     (None: it ran out of time, or could not be started)."""
     from stiefelsym.run.confine import Confined
@@ -245,7 +253,7 @@ def _spawn(config: dict[str, Any], capture: int, seconds: float, unshare: str | 
         writer.start()      # (read by the interpreter only after its forks: never in the way of the answer)
         _write_all(w0, stdin)
         try:
-            chunks, status = _read_until_exit(pid, r1, seconds, import_seconds)
+            chunks, status = _read_until_exit(pid, r1, seconds, import_seconds, beat_seconds)
         finally:
             _kill_group(pid)
     return b"".join(chunks), status
@@ -276,13 +284,14 @@ def _write_all(fd: int, data: bytes) -> None:
 
 
 def _read_until_exit(pid: int, rfd: int, seconds: float,
-                     import_seconds: float | None = None) -> tuple[list[bytes], int | None]:
+                     import_seconds: float | None = None,
+                     beat_seconds: float | None = None) -> tuple[list[bytes], int | None]:
     """What the child ``pid`` writes to ``rfd`` until it has exited (and all it wrote is read), and its wait
     status; None after ``seconds``, or when ``import_seconds`` passed after a line that an import of the file
     follows (the confinement line, an answer line) without its IMPORTED line (:func:`run`).  ``rfd`` is closed."""
     chunks: list[bytes] = []
     deadline = time.monotonic() + seconds
-    lines = _Lines(import_seconds)
+    lines = _Lines(import_seconds, beat_seconds)
     pidfd = -1
     if hasattr(os, "pidfd_open"):
         try:
@@ -323,22 +332,23 @@ def _read_until_exit(pid: int, rfd: int, seconds: float,
 
 
 class _Lines:
-    """The import deadline of :func:`_read_until_exit`, from the lines read so far: after the confinement line
-    and after each answer line an import of the file follows (one per process that traces it), which must write
-    its IMPORTED line within ``seconds``; no deadline (inf) while the claims are traced (each has its own)."""
+    """The deadline of :func:`_read_until_exit` from the lines read so far: after the confinement line and after
+    each answer line an import of the file follows (one per process that traces it), which must write its IMPORTED
+    line within ``seconds``; after it, and after each BEAT line, the next BEAT (or the answer) must come within
+    ``beat`` (None: no deadline, each trace has its own in the tracing process)."""
 
-    def __init__(self, seconds: float | None) -> None:
-        self.seconds, self.partial, self.deadline = seconds, b"", math.inf
+    def __init__(self, seconds: float | None, beat: float | None = None) -> None:
+        self.seconds, self.beat, self.partial, self.deadline = seconds, beat, b"", math.inf
 
     def read(self, chunk: bytes) -> None:
-        if self.seconds is None:
+        if self.seconds is None and self.beat is None:
             return
         *done, self.partial = (self.partial + chunk).split(b"\n")
         for line in done:
-            if line == IMPORTED[:-1]:
-                self.deadline = math.inf
+            if line in _MARKERS:
+                self.deadline = math.inf if self.beat is None else time.monotonic() + self.beat
             elif line.strip():      # the confinement line, or an answer: the next import starts now
-                self.deadline = time.monotonic() + self.seconds
+                self.deadline = math.inf if self.seconds is None else time.monotonic() + self.seconds
 
 
 def _read_some(fd: int) -> bytes:
@@ -587,8 +597,7 @@ def host() -> None:
         sys.stderr.flush()
         os._exit(4)
     if requests < 0:
-        data = userfile._tracer(config["file"], None, float(config["timeout"]), config.get("memory"),
-                                lambda: send(IMPORTED))
+        data = userfile._tracer(config["file"], None, float(config["timeout"]), config.get("memory"), send)
     else:       # each of its children writes its own answer
         userfile._tracer_by_size(config["file"], requests, answer, float(config["timeout"]), config.get("memory"))
         data = b""

@@ -87,6 +87,10 @@ IMPORT_GRACE_SECONDS = 10.0
 #: confinement line (or an answer) to the end of an import of the file (the engine's own import, a fork): past
 #: them the verifying process kills it (a file whose code holds the interpreter's lock in C stops the watch too)
 IMPORT_START_SECONDS = 30.0
+#: seconds past CLAIM_SECONDS after which the verifying process kills the interpreter that traces a file when no
+#: tracing of a function at a size has ended (:data:`stiefelsym.run.sandbox.BEAT`) and no answer come: each has
+#: CLAIM_SECONDS in the tracing process, whose own deadline a thread of the file holding the lock in C would stop
+BEAT_GRACE_SECONDS = 30.0
 #: the exit status of a process whose import of the file (or exit handlers) outlived its watch (_watched)
 IMPORT_EXIT = 7
 #: seconds the file's exit handlers (atexit) may run
@@ -371,6 +375,21 @@ def _trace_jobs(c: Claim, meta: dict) -> list:
     return [("f", f, k) for f in funcs if type(f) is int and 0 <= f <= len(c.corrections) for k in keys]
 
 
+#: in the tracer process, writes a BEAT line to the verifying process (:func:`_tracer`); None elsewhere
+_BEAT: Callable[[], None] | None = None
+
+
+def _beat() -> None:
+    if _BEAT is not None:
+        _BEAT()
+
+
+def _write_all(fd: int, data: bytes) -> None:
+    view = memoryview(data)
+    while view:
+        view = view[os.write(fd, view):]
+
+
 def _run_claim(c: Claim, more: dict | None, timeout: float, memory: int | None) -> dict:
     """In the tracer process: the claim's metadata and its graphs (``more``: the second phase's, see
     :func:`_claim_more`), each function traced at each key in
@@ -424,9 +443,11 @@ def _run_claim(c: Claim, more: dict | None, timeout: float, memory: int | None) 
                         results.append([f, None if key is None else list(key), item["job"]])
                     i = _next_job(jobs, i + 1, has_free)
                     deadline = time.monotonic() + timeout     # (a trace: only the first job is the metadata)
+                    _beat()
         finally:
             os.close(rfd)
             _kill(pid, wait=not timed_out and i >= 0)
+        _beat()         # the job that ran out of time or died has ended too
         if i >= len(jobs):
             break
         if jobs[i][0] == "meta":
@@ -516,11 +537,14 @@ def _watched(run: Callable[[], Any], seconds: float, what: str) -> Any:
 
 
 def _tracer(path: str, more: dict | None, timeout: float, memory: int | None,
-            imported: Callable[[], None]) -> bytes:
+            mark: Callable[[bytes], None]) -> bytes:
     """The spawned interpreter's work (:func:`stiefelsym.run.sandbox.host`): import the file, then trace each claim
     in children of its own; ``more`` (the second phase): claim id -> what :func:`_claim_more` needs, and only
-    those claims.  ``imported`` is called when the import has ended (it writes the line the verifying process
-    waits for: :data:`stiefelsym.run.sandbox.IMPORTED`)."""
+    those claims.  ``mark`` writes a line the verifying process waits for: :data:`stiefelsym.run.sandbox.IMPORTED`
+    when the import has ended, :data:`~stiefelsym.run.sandbox.BEAT` after each job of a claim (its metadata, one
+    function at one size)."""
+    from stiefelsym.run.sandbox import BEAT, IMPORTED
+    global _BEAT
     _die_with_parent()
     sys.dont_write_bytecode = True      # an honest import here writes no byte code into the engine's folders
     try:
@@ -531,7 +555,8 @@ def _tracer(path: str, more: dict | None, timeout: float, memory: int | None,
         reg = _import_bounded(path)
     except CatalogError as exc:
         return json.dumps({"error": str(exc)}).encode()
-    imported()
+    mark(IMPORTED)
+    _BEAT = lambda: mark(BEAT)     # noqa: E731
     parts = []
     for c in reg:
         if more is not None and c.id not in more:
@@ -584,12 +609,9 @@ def _tracer_by_size(path: str, requests: int, answer: int, timeout: float, memor
                 if not line.strip():
                     code = NO_MORE
                 else:
-                    from stiefelsym.run.sandbox import IMPORTED
                     data = _tracer(path, json.loads(line), timeout, memory,
-                                   lambda: os.write(answer, IMPORTED)) + b"\n"
-                    view = memoryview(data)
-                    while view:
-                        view = view[os.write(answer, view):]
+                                   lambda marker: _write_all(answer, marker)) + b"\n"
+                    _write_all(answer, data)
             except BaseException:   # noqa: BLE001 - the verifying process sees a missing answer
                 code = 1
             finally:
@@ -932,12 +954,15 @@ def _phase(path: Path, parts: list[dict] | None, capture: int,
     try:
         from stiefelsym.claims import IMPORT_SECONDS
         data, how = run(config, capture, FILE_SECONDS, requests, before_plain,
-                        IMPORT_SECONDS + IMPORT_GRACE_SECONDS + IMPORT_START_SECONDS)
+                        IMPORT_SECONDS + IMPORT_GRACE_SECONDS + IMPORT_START_SECONDS,
+                        max(CLAIM_SECONDS, META_SECONDS) + BEAT_GRACE_SECONDS)
     except ProcessesLeft as exc:
         raise CatalogError(f"{path}: {exc}") from None
     if data is None:
         raise CatalogError(f"{path}: loading and tracing the file ended without a result (its process died, its "
-                           f"import outlived {IMPORT_SECONDS:.0f} s, or the whole took more than {FILE_SECONDS:.0f} s)")
+                           f"import outlived {IMPORT_SECONDS:.0f} s, its tracing stopped making progress for "
+                           f"{max(CLAIM_SECONDS, META_SECONDS) + BEAT_GRACE_SECONDS:.0f} s, or the whole took more than "
+                           f"{FILE_SECONDS:.0f} s)")
     answers = [_loads(data)] if parts is None else [_loads(x) for x in data.split(b"\n") if x.strip()]
     if parts is not None and len(answers) != len(parts):
         raise WireError("a second phase's answer that is not one per size")
