@@ -216,6 +216,38 @@ def test_a_thread_of_the_file_that_holds_the_lock_while_the_claims_are_traced_is
     assert time.monotonic() - t0 < 60
 
 
+def test_the_deadlines_of_the_lines_read(monkeypatch):
+    """_Lines: an import must end within ``seconds`` of the confinement line or of an answer; once it has, a BEAT
+    line or more bytes must come within ``beat`` of the last; a marker split across chunks is one, a line that only
+    starts like one is not, and a line of megabytes is read once (only a marker's length of it is kept)."""
+    from stiefelsym.run import sandbox
+    clock = [100.0]
+    monkeypatch.setattr(sandbox.time, "monotonic", lambda: clock[0])
+    lines = sandbox._Lines(10.0, 50.0)
+    assert lines.deadline == float("inf")
+    lines.read(b'{"confined": "namespaces"}\n')
+    assert lines.deadline == 110.0                      # the import starts
+    clock[0] = 105.0
+    half = len(sandbox.IMPORTED) // 2
+    lines.read(sandbox.IMPORTED[:half])
+    assert lines.deadline == 110.0
+    lines.read(sandbox.IMPORTED[half:])
+    assert lines.deadline == 155.0                      # imported: the tracing's first job may take 50 s
+    clock[0] = 150.0
+    lines.read(sandbox.BEAT)
+    assert lines.deadline == 200.0
+    clock[0] = 190.0
+    lines.read(sandbox.BEAT[:-1] + b"x" * (1 << 22))    # no marker: the start of a long answer line
+    assert lines.deadline == 240.0 and len(lines.head) <= max(len(sandbox.IMPORTED), len(sandbox.BEAT))
+    clock[0] = 230.0
+    lines.read(b"y" * (1 << 20))
+    assert lines.deadline == 280.0                      # more of it came
+    lines.read(b"\n")
+    assert lines.deadline == 240.0                      # an answer: the next import (second phase) starts
+    lines.read(b"   \n")
+    assert lines.deadline == 240.0                      # a blank line changes nothing
+
+
 def test_the_import_lines_are_not_part_of_the_answer():
     """The interpreter's IMPORTED lines (one per import: the first phase's, each size's in the second) and BEAT
     lines (one per job traced) are taken out of what it answers, and only whole lines equal to a marker are."""

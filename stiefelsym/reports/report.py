@@ -1510,8 +1510,9 @@ MUTATION_EXPLANATION = (
     "only the subexpressions of its formula that the change reaches (parameters the printed claim never drew "
     "are drawn afresh), and the symbolic method has 15 s per run of a mutant and, at a size where the "
     "rational or modular method has refuted it already with an exact witness (there a symbolic run can only "
-    "err by proving it), at most 10^7 term products per symbolic product; the verdicts are those of fresh "
-    "points, which the tests check.")
+    "err by proving it), at most 10^7 term products per symbolic product (a run stopped there is inconclusive: "
+    "it does not test the symbolic method on that mutant at that size); the point methods' verdicts are those "
+    "of fresh points, which the tests check.")
 MUTATION_COLUMNS = ("mutants", "killed", "fails", "error", "other", "survived", "equivalent",
                     "unresolved", "missed", "kill rate")
 

@@ -334,21 +334,41 @@ def _read_until_exit(pid: int, rfd: int, seconds: float,
 class _Lines:
     """The deadline of :func:`_read_until_exit` from the lines read so far: after the confinement line and after
     each answer line an import of the file follows (one per process that traces it), which must write its IMPORTED
-    line within ``seconds``; after it, and after each BEAT line, the next BEAT (or the answer) must come within
-    ``beat`` (None: no deadline, each trace has its own in the tracing process)."""
+    line within ``seconds``; after it, the next BEAT line, or more of the answer, must come within ``beat`` of the
+    last bytes read (None: no deadline, each trace has its own in the tracing process).  Each byte is looked at
+    once: of a line only its first bytes are kept, as many as a marker has (an answer is megabytes long)."""
+
+    _LONGEST = max(len(m) for m in _MARKERS)
 
     def __init__(self, seconds: float | None, beat: float | None = None) -> None:
-        self.seconds, self.beat, self.partial, self.deadline = seconds, beat, b"", math.inf
+        self.seconds, self.beat, self.deadline = seconds, beat, math.inf
+        self.head, self.blank, self.beating = b"", True, False
 
     def read(self, chunk: bytes) -> None:
         if self.seconds is None and self.beat is None:
             return
-        *done, self.partial = (self.partial + chunk).split(b"\n")
-        for line in done:
-            if line in _MARKERS:
-                self.deadline = math.inf if self.beat is None else time.monotonic() + self.beat
-            elif line.strip():      # the confinement line, or an answer: the next import starts now
-                self.deadline = math.inf if self.seconds is None else time.monotonic() + self.seconds
+        start = 0
+        while True:
+            k = chunk.find(b"\n", start)
+            piece = chunk[start:] if k < 0 else chunk[start:k]
+            if len(self.head) <= self._LONGEST:
+                self.head += piece[:self._LONGEST + 1 - len(self.head)]
+            self.blank = self.blank and not piece.strip()
+            if k < 0:
+                break
+            self._line_ended()
+            start = k + 1
+        if self.beating and self.beat is not None and chunk:
+            self.deadline = time.monotonic() + self.beat      # bytes of the answer, or of a line, came
+
+    def _line_ended(self) -> None:
+        if self.head in _MARKERS:
+            self.beating = True
+            self.deadline = math.inf if self.beat is None else time.monotonic() + self.beat
+        elif not self.blank:      # the confinement line, or an answer: the next import starts now
+            self.beating = False
+            self.deadline = math.inf if self.seconds is None else time.monotonic() + self.seconds
+        self.head, self.blank = b"", True
 
 
 def _read_some(fd: int) -> bytes:

@@ -430,6 +430,7 @@ def _run_claim(c: Claim, more: dict | None, timeout: float, memory: int | None) 
                 buf += chunk
                 while b"\n" in buf and i < len(jobs):
                     line, buf = buf.split(b"\n", 1)
+                    _beat()             # (before the line is read: a large graph takes time to parse)
                     item = json.loads(line)
                     if jobs[i][0] == "meta":
                         if "failed" in item:
@@ -443,7 +444,6 @@ def _run_claim(c: Claim, more: dict | None, timeout: float, memory: int | None) 
                         results.append([f, None if key is None else list(key), item["job"]])
                     i = _next_job(jobs, i + 1, has_free)
                     deadline = time.monotonic() + timeout     # (a trace: only the first job is the metadata)
-                    _beat()
         finally:
             os.close(rfd)
             _kill(pid, wait=not timed_out and i >= 0)
