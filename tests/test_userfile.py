@@ -162,16 +162,22 @@ def test_an_import_that_holds_the_interpreter_s_lock_in_c_is_killed_by_the_verif
     """A file whose import holds the interpreter's lock in C stops the import's alarm and its watch thread alike:
     it ran until the file's hour (FILE_SECONDS) was up.  The verifying process waits for the line that ends the
     import and kills the interpreter when it has not come (here after 2 s instead of 160)."""
-    import time
     from stiefelsym import claims
-    from stiefelsym.claims import CatalogError
-    path = tmp_path / "holds_the_lock.py"
-    path.write_text(_HOLDS_THE_LOCK, encoding="utf-8")
     monkeypatch.setattr(claims, "IMPORT_SECONDS", 1.0)
-    monkeypatch.setattr(userfile, "IMPORT_GRACE_SECONDS", 0.5)
-    monkeypatch.setattr(userfile, "IMPORT_START_SECONDS", 0.5)
+    _refused_soon(tmp_path / "holds_the_lock.py", _HOLDS_THE_LOCK, monkeypatch, "import outlived",
+                  IMPORT_GRACE_SECONDS=0.5, IMPORT_START_SECONDS=0.5)
+
+
+def _refused_soon(path, text, monkeypatch, match, **seconds):
+    """The file ``text`` at ``path``, loaded with the deadlines of userfile set to ``seconds``, is refused (its
+    message matches ``match``) within a minute."""
+    import time
+    from stiefelsym.claims import CatalogError
+    path.write_text(text, encoding="utf-8")
+    for name, value in seconds.items():
+        monkeypatch.setattr(userfile, name, value)
     t0 = time.monotonic()
-    with pytest.raises(CatalogError, match="import outlived"):
+    with pytest.raises(CatalogError, match=match):
         userfile.load_claims_isolated(path)
     assert time.monotonic() - t0 < 60
 
@@ -203,17 +209,8 @@ def test_a_thread_of_the_file_that_holds_the_lock_while_the_claims_are_traced_is
     process that traces the claims (and its budgets) as well: the run waited for the file's hour.  The verifying
     process now waits for a line after each function traced at a size, and kills the interpreter when none has
     come (here after 2 s instead of 330)."""
-    import time
-    from stiefelsym.claims import CatalogError
-    path = tmp_path / "holds_the_lock_later.py"
-    path.write_text(_HOLDS_THE_LOCK_LATER, encoding="utf-8")
-    monkeypatch.setattr(userfile, "CLAIM_SECONDS", 1.0)
-    monkeypatch.setattr(userfile, "META_SECONDS", 1.0)
-    monkeypatch.setattr(userfile, "BEAT_GRACE_SECONDS", 1.0)
-    t0 = time.monotonic()
-    with pytest.raises(CatalogError, match="stopped making progress for 2 s"):
-        userfile.load_claims_isolated(path)
-    assert time.monotonic() - t0 < 60
+    _refused_soon(tmp_path / "holds_the_lock_later.py", _HOLDS_THE_LOCK_LATER, monkeypatch,
+                  "stopped making progress for 2 s", CLAIM_SECONDS=1.0, META_SECONDS=1.0, BEAT_GRACE_SECONDS=1.0)
 
 
 def test_the_deadlines_of_the_lines_read(monkeypatch):
