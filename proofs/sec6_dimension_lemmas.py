@@ -296,7 +296,7 @@ def pencil_leaves_singular_corrected(s):
 # -- Lemma LEMA2: (A1) ---------------------------------------------------------------------------------
 
 @claim("pencil-rank-a1", paper=("LEMA2", "LAMBDA", "L3", "L4"), kind="dim",
-       sizes=admissible(5), exact_max_n=5, exact_max_r={6: 5, 7: 2}, equivariance=EQUIVARIANCE_XA,
+       sizes=admissible(5), exact_max_n=5, exact_max_r={6: 6, 7: 2}, equivariance=EQUIVARIANCE_XA,
        statement=r"\rank\Lambda_{1,-1}(h+v)=\rank\Lambda_{1,t}(h+v)=\rank\Lambda_2(h+v)=n^2-n,\quad "
                  r"\xi+\eta\in\ker\Lambda_{1,-1}\iff[\eta,A]=0,\ [\xi,A]-[\eta,h]=0")
 def pencil_rank_A1(s):
@@ -393,7 +393,7 @@ def lambda_forms(s, x, A):
 
 
 @claim("pencil-kernel-ker-a2", paper=("KER", "A2", "L7", "L8"), kind="dim",
-       sizes=admissible(5), exact_max_n=5, exact_max_r={6: 5, 7: 5},
+       sizes=admissible(5), exact_max_n=5, exact_max_r={6: 6, 7: 6},
        equivariance="the point is built from the claim's own parameters (no chart coordinate)",
        statement=r"\ker\Lambda_1(h+v)=so(r)_{h_1}\oplus Sym(r)\oplus gl(n-r),\quad "
                  r"\dim\{z\in\ker\Lambda_1\mid\Lambda_{1,-1}(z,\ker\Lambda_1)=0\}=n\quad (h=\mathrm{diag}(h_1,0))")
@@ -495,7 +495,7 @@ def a2_system_kernel(s, x, A):
 
 
 @claim("pencil-a2-generic", paper=("LEMA2", "A2", "LAMBDA"), kind="dim",
-       sizes=admissible(5), exact_max_n=5, exact_max_r={6: 5, 7: 1}, equivariance=EQUIVARIANCE_XA,
+       sizes=admissible(5), exact_max_n=5, exact_max_r={6: 6, 7: 1}, equivariance=EQUIVARIANCE_XA,
        statement=r"\dim\{z\in\ker\Lambda_1(x)\mid\Lambda_{1,-1}(z,\ker\Lambda_1(x))=0\}=n,\quad "
                  r"x=h+v=\Theta(X,P)\ \text{generic}")
 def pencil_a2_at_a_generic_point(s):
@@ -590,7 +590,7 @@ def casimir_gradient_rows(s, x, A):
 
 
 @claim("casimirs-complete-on-leaf", paper=("LEMA2", "central", "dimension"), kind="dim",
-       sizes=admissible(5), exact_max_n=4, exact_max_r={5: 1}, equivariance=EQUIVARIANCE_XA,
+       sizes=admissible(5), exact_max_n=4, exact_max_r={5: 2}, equivariance=EQUIVARIANCE_XA,
        statement=r"\rank\{d f|_{T_x\mathcal O}: f\in\mathcal F\}=l=\tfrac12\dim\mathcal O,\quad x=\Theta(X,P)\ \text{generic}")
 def casimirs_complete_on_leaf(s):
     """Lemma LEMA2: among the functions (central) there are l = ½(dimension) independent on a generic symplectic leaf 𝒪 ⊂ Θ(T*V) (the rank of df restricted to T_x𝒪 = Λ1(x)(gl(n)))."""
