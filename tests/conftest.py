@@ -97,7 +97,7 @@ SLOW_TESTS = (
     "tests/test_process.py::test_tricks_each_get_their_verdict_and_the_run_goes_on",
     "tests/test_mutate_exact_loan.py::",
     "tests/test_app2.py::test_corrupted_claim_fails[coupled-corrected-flow-invariants",
-    # the adversary rounds' replays of 4 to 13 s each (CLI runs in fresh processes); the default run keeps a
+    # the adversary rounds' replays of 3.5 to 14 s each (CLI runs in fresh processes); the default run keeps a
     # faster replay of each route's class (the rounds' other tests)
     "tests/adversary/test_adversary_s42b.py::test_a_records_rerun_command_and_message_are_its_own",
     "tests/adversary/test_adversary_s42.py::test_a_record_at_a_size_the_claim_does_not_state_is_refused",
@@ -120,6 +120,22 @@ SLOW_TESTS = (
     "tests/adversary/test_adversary_s44.py::test_fused_and_unfused_exact_methods_agree",
     "tests/adversary/test_adversary_s33.py::test_the_results_file_of_a_run_is_not_rewritten_after_it[spawn]",
     "tests/adversary/test_adversary_s32.py::test_new_letters_second_round_fixed_sizes",
+    "tests/adversary/test_adversary_s34.py::test_report_and_check_refuse_a_record_with_a_malformed_field",
+    "tests/adversary/test_adversary_s34.py::test_a_union_of_r_does_not_lend_one_familys_hypothesis_to_another",
+    "tests/adversary/test_adversary_s32b.py::test_an_entry_of_the_constraint_bracket_matrix_is_not_proved",
+    "tests/adversary/test_adversary_s40c.py::test_block_parts_of_other_sizes_are_refused_the_reduction",
+    "tests/adversary/test_adversary_s34.py::test_report_refuses_a_certificate_moved_to_another_claim",
+    "tests/adversary/test_adversary.py::test_the_derivative_rules_and_the_gradient_step_on_probes",
+    "tests/adversary/test_adversary_s34.py::test_a_claim_true_on_its_union_never_fails",
+    "tests/adversary/test_adversary_s34.py::test_a_module_put_on_the_import_path_by_the_files_child_changes_no_verdict",
+    "tests/adversary/test_adversary.py::test_the_complex_point_under_every_method",
+    "tests/adversary/test_adversary.py::test_new_letters_fixed_size_verdicts",
+    "tests/adversary/test_adversary_s35.py::test_the_scope_of_a_free_proof_cannot_be_widened_by_its_text",
+    "tests/adversary/test_adversary_s42.py::test_a_rank_or_count_beside_a_nonvanishing_residual_is_not_passed",
+    "tests/adversary/test_adversary_s37.py::test_the_second_point_lies_on_either_component_at_r_equal_n",
+    "tests/adversary/test_adversary_s32.py::test_a_verdict_does_not_depend_on_the_claims_traced_before",
+    "tests/adversary/test_adversary.py::test_a_proof_at_a_moving_mu_says_where_it_holds",
+    "tests/adversary/test_adversary.py::test_false_nonvanishing_with_columns_is_not_passed",
 )
 
 
