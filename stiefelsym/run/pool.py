@@ -146,11 +146,16 @@ def raise_on_sigterm() -> Iterator[None]:
 
 # --------------------------------------------------------------------------- framing
 
-def _send(fd: int, obj: Any) -> None:
-    data = pickle.dumps(obj, protocol=pickle.HIGHEST_PROTOCOL)
-    view = memoryview(_HEADER.pack(len(data)) + data)
+def write_fully(fd: int, data: bytes) -> None:
+    """All of ``data`` to ``fd`` (os.write may write part of it to a pipe)."""
+    view = memoryview(data)
     while view:
         view = view[os.write(fd, view):]
+
+
+def _send(fd: int, obj: Any) -> None:
+    data = pickle.dumps(obj, protocol=pickle.HIGHEST_PROTOCOL)
+    write_fully(fd, _HEADER.pack(len(data)) + data)
 
 
 def _read_exactly(fd: int, n: int, deadline: float | None = None) -> bytes | None:

@@ -61,7 +61,7 @@ from fractions import Fraction
 from pathlib import Path
 from typing import Any, Callable, Iterable, Sequence
 
-from stiefelsym.run.pool import DEFAULT_MEMORY_GIB, GIB
+from stiefelsym.run.pool import DEFAULT_MEMORY_GIB, GIB, write_fully
 from stiefelsym.run.confine import ProcessesLeft
 from stiefelsym.run.isolate import next_chunk
 from stiefelsym.claims import CatalogError, Claim, ClaimTimeout, Correction, Registry, Size, SizeSpec, load_claims_file
@@ -324,9 +324,7 @@ def _jobs_lines(c: Claim, more: dict | None, jobs: list, start: int, has_free: d
     _limit_memory(memory)
 
     def write(obj: Any) -> None:
-        view = memoryview(json.dumps(obj).encode() + b"\n")
-        while view:
-            view = view[os.write(wfd, view):]
+        write_fully(wfd, json.dumps(obj).encode() + b"\n")
     funcs = [c.func] + [k.func for k in c.corrections]
     jobs = list(jobs)
     i = start
@@ -382,12 +380,6 @@ _BEAT: Callable[[], None] | None = None
 def _beat() -> None:
     if _BEAT is not None:
         _BEAT()
-
-
-def _write_all(fd: int, data: bytes) -> None:
-    view = memoryview(data)
-    while view:
-        view = view[os.write(fd, view):]
 
 
 def _run_claim(c: Claim, more: dict | None, timeout: float, memory: int | None) -> dict:
@@ -610,8 +602,8 @@ def _tracer_by_size(path: str, requests: int, answer: int, timeout: float, memor
                     code = NO_MORE
                 else:
                     data = _tracer(path, json.loads(line), timeout, memory,
-                                   lambda marker: _write_all(answer, marker)) + b"\n"
-                    _write_all(answer, data)
+                                   lambda marker: write_fully(answer, marker)) + b"\n"
+                    write_fully(answer, data)
             except BaseException:   # noqa: BLE001 - the verifying process sees a missing answer
                 code = 1
             finally:
