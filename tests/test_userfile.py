@@ -328,3 +328,35 @@ def test_a_file_that_writes_the_import_s_end_line_itself_gets_no_other_graph(tmp
     forged.write_text(_WRITES_THE_MARK.format(forge=_FORGE), encoding="utf-8")
     with pytest.raises(CatalogError):
         userfile.load_claims_isolated(forged, [(3, 1)])
+
+
+_WRITES_THE_BEATS = '''import os
+from stiefelsym import admissible, claim
+
+for fd in range(3, 64):       # the progress and import lines, without an answer, on every descriptor it reaches
+    try:
+        os.write(fd, b'{"traced": true}\\n{"imported": true}\\n{"traced": true}\\n')
+    except OSError:
+        pass
+
+
+@claim("forged-beats", paper=("prep",), kind="id", sizes=admissible(n_max=3))
+def c(s):
+    """XᵀP = 0 (false for r >= 2, true for r = 1, where XᵀP is skew 1 x 1)."""
+    return {"c": s.X.T @ s.P}
+'''
+
+
+def test_a_file_that_writes_the_progress_lines_itself_gets_its_own_verdicts(tmp_path):
+    """The tracing's progress line (sandbox.BEAT) written by the file itself, with the import's, on every descriptor
+    it reaches: the lines are taken out of the answer, and the false claim fails under every fixed-size method
+    where it is false and is proved only where it holds (r = 1)."""
+    from stiefelsym.methods.fixed_size import run_exact_isolated, run_float, run_points
+    path = tmp_path / "writes_the_beats.py"
+    path.write_text(_WRITES_THE_BEATS, encoding="utf-8")
+    (c,) = userfile.load_claims_isolated(path, [(3, 2), (3, 1)])
+    assert run_exact_isolated(c, 3, 2, 0).verdict == "fails"
+    assert run_points(c, 3, 2, "rational", 0).verdict == "fails"
+    assert run_points(c, 3, 2, "modular", 0).verdict == "fails"
+    assert run_float(c, 3, 2, 0).verdict == "fails"
+    assert run_exact_isolated(c, 3, 1, 0).verdict == "proved"
