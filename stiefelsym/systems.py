@@ -55,7 +55,7 @@ import numpy as np
 
 from stiefelsym import scene as scene_module
 from stiefelsym.ir.trace import PRIMITIVES, TraceScene, primitive
-from stiefelsym.backends.matrix import Mat, _coordinates, _refused, block, definite
+from stiefelsym.backends.matrix import Mat, _coordinates, _refused, backend, block, definite
 from stiefelsym.backends.reverse import Node, Rev, RevMat, Unsupported, gradient as rev_gradient, leaf as rev_leaf
 from stiefelsym.scene import double_point_of, HermitianComponents, ReverseScene, Scene, _LiftedScene
 
@@ -235,9 +235,25 @@ class _Algebra:
                 out[idx] = normalize(x)
         return out
 
+    def columns(self, M: Any, a: int, b: int) -> Any:
+        """Columns a..b − 1 of M, a matrix of this algebra (cut in the backend where M is held there)."""
+        return M[:, a:b] if self.native else M[:, a:b].copy()
+
     def solve(self, M: Any, B: Any, what: str) -> Any:
-        """Y with M Y = B (the field's solver)."""
-        from stiefelsym.backends.fields import DegenerateError
+        """Y with M Y = B: M⁻¹B in the field's whole-matrix backend where it has one (the solution stays
+        there: its entries are not carried to the field's scalars and back), else the field's solver (also
+        where the backend's inverse is beyond the symbolic budget: the field's own budget decides)."""
+        from stiefelsym.backends.fields import DegenerateError, SymbolicBudget
+        be = backend(self.s.field) if self.native else None
+        if getattr(be, "keeps_solutions", False) and M._nat() is not None and B._nat() is not None:
+            try:
+                inverse = be.inv(M._nat())
+            except (DegenerateError, ZeroDivisionError) as exc:
+                raise DegenerateError(f"{what} is singular here") from exc
+            except SymbolicBudget:
+                inverse = None
+            if inverse is not None:
+                return Mat._wrap_native(be.matmul(inverse, B._nat()), self.s.field)
         try:
             sol = self.s.field.solve(self.array(M).tolist(), self.array(B).tolist())
         except DegenerateError as exc:
@@ -313,11 +329,20 @@ class _Layout:
         alg = self.alg
         return alg.array(alg.mm(alg.of(amb), self.basis().T))
 
-    def assemble(self, c: np.ndarray, like: Point) -> dict[Hashable, Mat]:
-        """The tangent vector Σ c_a B_a (c an array, a column of coordinates), as matrices of the
-        variables of ``like`` (one without coordinates gets 0), each with the spaces of its basis."""
+    def assemble(self, c: np.ndarray | Mat, like: Point) -> dict[Hashable, Mat]:
+        """The tangent vector Σ c_a B_a (c a column of coordinates: an array, or a matrix of the layout's
+        algebra), as matrices of the variables of ``like`` (one without coordinates gets 0), each with the
+        spaces of its basis.  A matrix held in its field's whole-matrix backend is cut there (its entries
+        never leave the backend: a symbolic solution of thousands of terms per entry is not carried to
+        symengine and back)."""
         s = self.s
-        if self.unit:
+        if isinstance(c, Mat):
+            parts = self._native_parts(c)
+            if parts is None:
+                c = c._view()
+        if isinstance(c, Mat):
+            pass
+        elif self.unit:
             vec = c.reshape(-1)
             m, k = self.shapes[self.unit_names[0]] if self.unit_names else (0, 0)
             parts = {}
@@ -337,10 +362,45 @@ class _Layout:
         out = {}
         for name, M in like.items():
             if name in parts:
-                out[name] = Mat._wrap(parts[name].copy(), s.field, tags[name], s.tracker)
+                part = parts[name]
+                out[name] = (Mat._wrap(part.copy(), s.field, tags[name], s.tracker) if isinstance(part, np.ndarray)
+                             else Mat._wrap_native(part, s.field, tags[name], s.tracker))
             else:
                 out[name] = M - M
         return out
+
+    def _native_parts(self, c: Mat) -> dict[Hashable, Any] | None:
+        """:meth:`assemble`'s matrices of the variables cut from the column ``c`` in its field's backend (the
+        m x k matrix of a variable from its m rows of k entries one after the other), or None where the
+        backend cannot cut them (the caller reads the entries)."""
+        be = backend(self.s.field)
+        if not getattr(be, "keeps_solutions", False) or c._field is not self.s.field or c._nat() is None:
+            return None
+        if self.unit:
+            vec, column = c._nat(), True
+            m, k = self.shapes[self.unit_names[0]] if self.unit_names else (0, 0)
+            spans = [(name, i * m * k, m, k) for i, name in enumerate(self.unit_names)]
+        else:
+            vec, column = self.alg.mm(c.T, self.basis())._nat(), False
+            spans, seen = [], set()
+            for name, _B in self.coords:
+                if name not in seen:
+                    seen.add(name)
+                    spans.append((name, self.offsets[name]) + tuple(self.shapes[name]))
+        first = np.arange(1)
+        parts = {}
+        for name, o, m, k in spans:
+            if not (m and k):
+                return None
+            rows = []
+            for a in range(m):
+                idx = np.arange(o + a * k, o + (a + 1) * k)
+                seg = be.take(vec, idx, first) if column else be.take(vec, first, idx)
+                if seg is NotImplemented:
+                    return None
+                rows.append([be.T(seg) if column else seg])
+            parts[name] = be.block(rows) if m > 1 else rows[0][0]
+        return parts
 
 
 # -- gradients at points of the caller's own ----------------------------------------------------
@@ -542,9 +602,10 @@ def _solve_euler_lagrange(layout: _Layout, K: np.ndarray, gradU: np.ndarray, Ja:
     rhs = np.empty((N, m + 1), dtype=object)
     rhs[:, :1] = (-gradU).T
     rhs[:, 1:] = Ja.T
-    Y = alg.array(alg.solve(alg.of(K), alg.of(rhs), "the kinetic energy's quadratic form"))
-    Y0, Y1 = alg.of(Y[:, :1].copy()), alg.of(Y[:, 1:].copy())
+    Y = alg.solve(alg.of(K), alg.of(rhs), "the kinetic energy's quadratic form")
+    Y0 = alg.columns(Y, 0, 1)
     if m:
+        Y1 = alg.columns(Y, 1, m + 1)
         h = np.empty((m, 1), dtype=object)
         for i, x in enumerate(hess):
             h[i, 0] = -x
@@ -552,10 +613,10 @@ def _solve_euler_lagrange(layout: _Layout, K: np.ndarray, gradU: np.ndarray, Ja:
         S = alg.mm(J, Y1)
         b = alg.of(h) - alg.mm(J, Y0)
         mu = alg.solve(S, b, "the matrix of the constraints' second derivatives")
-        acc = alg.array(Y0 + alg.mm(Y1, mu))
+        acc = Y0 + alg.mm(Y1, mu)
         mu_list = list(alg.array(mu)[:, 0])
     else:
-        acc, mu_list = alg.array(Y0), []
+        acc, mu_list = Y0, []
     return layout.assemble(acc, position), mu_list
 
 
@@ -616,11 +677,11 @@ def _dirac_flow(xs: _Layout, ps: _Layout, Jx: np.ndarray, Jp: np.ndarray, point:
         C = alg.mm(Gx, Gp.T) - alg.mm(Gp, Gx.T)
         b = -(alg.mm(Gx, hp.T) - alg.mm(Gp, hx.T))
         mu = alg.solve(C, b, "the constraint bracket matrix {F_i, F_j}_0")
-        xdot = alg.array(hp.T + alg.mm(Gp.T, mu))
-        pdot = alg.array(-(hx.T + alg.mm(Gx.T, mu)))
+        xdot = hp.T + alg.mm(Gp.T, mu)
+        pdot = -(hx.T + alg.mm(Gx.T, mu))
         mu_list = list(alg.array(mu)[:, 0])
     else:
-        xdot, pdot, mu_list = alg.array(hp.T), alg.array(-hx.T), []
+        xdot, pdot, mu_list = hp.T, -hx.T, []
     out = xs.assemble(xdot, {p: point[p] for p, _ in pairs})
     out.update(ps.assemble(pdot, {q: point[q] for _, q in pairs}))
     return out, mu_list
