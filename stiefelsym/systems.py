@@ -245,7 +245,7 @@ class _Algebra:
         where the backend's inverse is beyond the symbolic budget: the field's own budget decides)."""
         from stiefelsym.backends.fields import DegenerateError, SymbolicBudget
         be = backend(self.s.field) if self.native else None
-        if getattr(be, "keeps_solutions", False) and M._nat() is not None and B._nat() is not None:
+        if be is not None and be.keeps_solutions and M._nat() is not None and B._nat() is not None:
             try:
                 inverse = be.inv(M._nat())
             except (DegenerateError, ZeroDivisionError) as exc:
@@ -336,26 +336,9 @@ class _Layout:
         never leave the backend: a symbolic solution of thousands of terms per entry is not carried to
         symengine and back)."""
         s = self.s
-        if isinstance(c, Mat):
-            parts = self._native_parts(c)
-            if parts is None:
-                c = c._view()
-        if isinstance(c, Mat):
-            pass
-        elif self.unit:
-            vec = c.reshape(-1)
-            m, k = self.shapes[self.unit_names[0]] if self.unit_names else (0, 0)
-            parts = {}
-            for i, name in enumerate(self.unit_names):
-                parts[name] = vec[i * m * k:(i + 1) * m * k].reshape(m, k)
-        else:
-            alg = self.alg
-            vec = alg.array(alg.mm(alg.of(c.T.copy()), self.basis())).reshape(-1)
-            parts = {}
-            for name, _B in self.coords:
-                if name not in parts:
-                    o, (m, k) = self.offsets[name], self.shapes[name]
-                    parts[name] = vec[o:o + m * k].reshape(m, k)
+        parts = self._native_parts(c) if isinstance(c, Mat) else None
+        if parts is None:
+            parts = self._entry_parts(c._view() if isinstance(c, Mat) else c)
         tags = {}
         for name, B in self.coords:
             tags.setdefault(name, B.tags)
@@ -369,37 +352,44 @@ class _Layout:
                 out[name] = M - M
         return out
 
+    def _entry_parts(self, c: np.ndarray) -> dict[Hashable, np.ndarray]:
+        """:meth:`assemble`'s matrices of the variables as arrays of entries, cut from the column ``c``."""
+        if self.unit:
+            vec = c.reshape(-1)
+            m, k = self.shapes[self.unit_names[0]] if self.unit_names else (0, 0)
+            return {name: vec[i * m * k:(i + 1) * m * k].reshape(m, k) for i, name in enumerate(self.unit_names)}
+        alg = self.alg
+        vec = alg.array(alg.mm(alg.of(c.T.copy()), self.basis())).reshape(-1)
+        parts = {}
+        for name, _B in self.coords:
+            if name not in parts:
+                o, (m, k) = self.offsets[name], self.shapes[name]
+                parts[name] = vec[o:o + m * k].reshape(m, k)
+        return parts
+
     def _native_parts(self, c: Mat) -> dict[Hashable, Any] | None:
         """:meth:`assemble`'s matrices of the variables cut from the column ``c`` in its field's backend (the
         m x k matrix of a variable from its m rows of k entries one after the other), or None where the
         backend cannot cut them (the caller reads the entries)."""
         be = backend(self.s.field)
-        if not getattr(be, "keeps_solutions", False) or c._field is not self.s.field or c._nat() is None:
+        if be is None or not be.keeps_solutions or c._field is not self.s.field or c._nat() is None:
             return None
         if self.unit:
-            vec, column = c._nat(), True
+            row = be.T(c._nat())          # the coordinates are the entries, variable after variable
             m, k = self.shapes[self.unit_names[0]] if self.unit_names else (0, 0)
             spans = [(name, i * m * k, m, k) for i, name in enumerate(self.unit_names)]
         else:
-            vec, column = self.alg.mm(c.T, self.basis())._nat(), False
-            spans, seen = [], set()
-            for name, _B in self.coords:
-                if name not in seen:
-                    seen.add(name)
-                    spans.append((name, self.offsets[name]) + tuple(self.shapes[name]))
+            row = self.alg.mm(c.T, self.basis())._nat()      # the ambient vector Σ c_a B_a
+            spans = [(name, self.offsets[name]) + tuple(self.shapes[name]) for name in dict(self.coords)]
         first = np.arange(1)
         parts = {}
         for name, o, m, k in spans:
             if not (m and k):
                 return None
-            rows = []
-            for a in range(m):
-                idx = np.arange(o + a * k, o + (a + 1) * k)
-                seg = be.take(vec, idx, first) if column else be.take(vec, first, idx)
-                if seg is NotImplemented:
-                    return None
-                rows.append([be.T(seg) if column else seg])
-            parts[name] = be.block(rows) if m > 1 else rows[0][0]
+            rows = [[be.take(row, first, np.arange(o + a * k, o + (a + 1) * k))] for a in range(m)]
+            if any(r[0] is NotImplemented for r in rows):
+                return None
+            parts[name] = be.block(rows)
         return parts
 
 

@@ -71,6 +71,10 @@ class Backend:
     #: involution takes the native transpose only from a backend that does)
     stars = False
 
+    #: whether the solves and the cuts of the stacked gradients (:mod:`stiefelsym.systems`) are made in this
+    #: backend, their results kept in it (the symbolic backend's; the other fields keep their own solvers)
+    keeps_solutions = False
+
     def from_obj(self, a: np.ndarray) -> Any:
         raise NotImplementedError
 

@@ -983,8 +983,7 @@ def _scalar_array(x) -> np.ndarray:
 class PolyBackend(Backend):
     """Whole-matrix operations over rational functions in flint (see the module docstring)."""
 
-    #: the solves and the cuts of the stacked gradients (:mod:`stiefelsym.systems`) stay in this backend: a
-    #: symbolic solution is not converted to symengine expressions and back
+    #: a symbolic solution of the stacked gradients stays here (not converted to symengine and back)
     keeps_solutions = True
 
     def __init__(self, field, ring: PolyRing) -> None:
