@@ -140,6 +140,12 @@ def as_columns(s, cols):
     return s.mat([list(row) for row in zip(*cols)])
 
 
+def generic_gl(s):
+    """A generic point y = S + K of gl(n): S a generic symmetric, K a generic skew n×n matrix (every element of
+    gl(n) is uniquely so), in whose parameters y + yᵀ = 2S has one term per entry."""
+    return s.generic("S", "n", "n", "sym") + s.generic("K", "n", "n", "skew")
+
+
 def kernel_generic_lambda1(s, y):
     """ker Λ1 at a generic y = h + v ∈ gl(n): the gradients of the Casimirs tr(v^k), (ξ, η) = (0, v^(k−1)),
     k = 1..n (here with 2v = y + yᵀ)."""
@@ -263,7 +269,7 @@ def generic_leaf_rank(n):
 
 
 @claim("pencil-leaves-singular", paper=("dimension",), kind="dim",
-       sizes=admissible(5), exact_max_n=6, equivariance=EQUIVARIANCE_X,
+       sizes=admissible(5), exact_max_n=7, equivariance=EQUIVARIANCE_X,
        fails_at=lambda n, r: r == 1 and n <= 2,
        erratum="""(dimension) says 2l < n² − n: the leaves in Θ(T*V) are singular leaves of (gl(n), Λ1).  For
        (n, r) = (1, 1) and (2, 1) the two sides are equal (0 = 0 and 2 = 2): there Θ(T*V) meets the regular
@@ -272,7 +278,7 @@ def generic_leaf_rank(n):
 def pencil_leaves_singular(s):
     """(dimension): the generic leaf in Θ(T*V) is singular in (gl(n), Λ1): 2l < n² − n, the rank of Λ1 at a generic point of gl(n)."""
     n, r = s.n, s.r
-    y = s.generic("Y", "n", "n")
+    y = generic_gl(s)
     return {
         "rank Lambda1 at a generic point of gl(n)": Rank(lambda1(s, y), generic_leaf_rank(n), generic=True,
                                                          meaning="n² − n", kernel=kernel_generic_lambda1(s, y)),
@@ -284,7 +290,7 @@ def pencil_leaves_singular(s):
 @pencil_leaves_singular.claim.correction("2l <= n² − n (equality at (1,1) and (2,1))")
 def pencil_leaves_singular_corrected(s):
     n, r = s.n, s.r
-    y = s.generic("Y", "n", "n")
+    y = generic_gl(s)
     return {
         "rank Lambda1 at a generic point of gl(n)": Rank(lambda1(s, y), generic_leaf_rank(n), generic=True,
                                                          kernel=kernel_generic_lambda1(s, y)),

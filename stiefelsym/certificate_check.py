@@ -202,13 +202,17 @@ class Context:
                     raise Rejected(f"the argument of {name} is not an n×n or r×r path")
                 self.add_operator(op, arg)
             elif d["kind"] == "generic":
-                t, row, col = d["transpose"], d["row"], d["col"]
-                if not (name.startswith("gen:") and t.startswith("gen:")) or t == name or t in self.letters:
-                    raise Rejected(f"generic letters are named gen:..., with a distinct transpose: {name}, {t}")
+                # a general letter has a distinct transpose; gen:…:sym/:skew is its own (±): its name says which
+                t, row, col, sign = d["transpose"], d["row"], d["col"], d.get("sign", 1)
+                own = 1 if name.endswith(":sym") else -1 if name.endswith(":skew") else None
+                if not (name.startswith("gen:") and t.startswith("gen:")) or t in self.letters or (t == name) != (
+                        own is not None) or (own or 1) != sign or type(sign) is not int or (own and row != col):
+                    raise Rejected(f"generic letters are named gen:..., with a distinct transpose, or gen:...:sym and "
+                                   f"gen:...:skew, square and their own transpose with the sign 1 and -1: {name}, {t}")
                 if row not in ("n", "r") or col not in ("n", "r"):
                     raise Rejected(f"the generic letter {name} is not an arrow between n and r")
-                self.letters[name] = (row, col, t, 1)
-                self.letters[t] = (col, row, name, 1)
+                self.letters[name] = (row, col, t, sign)
+                self.letters[t] = (col, row, name, sign)
             elif d["kind"] == "sylvester":
                 if realization != "metric":
                     raise Rejected(f"the multiplier {name} of a metric flow in a certificate of the {realization} "

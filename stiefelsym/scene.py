@@ -65,6 +65,19 @@ def user_name(name: Any, what: str) -> str:
     return name
 
 
+#: the kinds of a claim's generic matrix (:meth:`Scene.generic`), and what each adds to the matrix's key
+GENERIC_KINDS = {"general": "", "sym": ":sym", "skew": ":skew"}
+
+
+def check_generic_kind(m: Any, k: Any, kind: Any) -> None:
+    """Refuse a kind of generic matrix other than "general", "sym" and "skew", and a symmetric or skew one
+    that is not square (m ≠ k): the same message in every scene and in the trace."""
+    if type(kind) is not str or kind not in GENERIC_KINDS:
+        raise ValueError(f"generic(..., kind={kind!r}): the kinds are 'general', 'sym' and 'skew'")
+    if kind != "general" and m != k:
+        raise ValueError(f"generic(..., {m!r}, {k!r}, {kind!r}): a {kind} matrix is square (m = k)")
+
+
 #: the name of an entry of a parameter matrix (see :func:`param_name`)
 _ENTRY_NAME = re.compile(r"(.*)_\d+,\d+")
 
@@ -1026,12 +1039,21 @@ class Scene(PaperObjects):
         """A second generic element of so(r)."""
         return self._cached("theta", lambda: self._skew_params("theta", self.r, "r"))
 
-    def generic(self, name: str, m: str, k: str) -> Mat:
-        """A generic matrix of parameters with index labels m, k in {'n', 'r'}."""
+    def generic(self, name: str, m: str, k: str, kind: str = "general") -> Mat:
+        """A generic matrix of parameters with index labels m, k in {'n', 'r'}: every entry its own
+        parameter (``kind`` "general"), or a generic symmetric ("sym") or skew ("skew") m×m matrix, whose
+        entries on and above the diagonal (above it, for "skew") are the parameters.  A generic element
+        of gl(m) is generic("S", m, m, "sym") + generic("K", m, m, "skew"): the same generic point as
+        generic("G", m, m), in parameters in which G + Gᵀ and G − Gᵀ have one term per entry."""
         size = {"n": self.n, "r": self.r}
         if m not in size or k not in size:
             raise ValueError(f"generic({name!r}, {m!r}, {k!r}): the index spaces are 'n' or 'r'")
-        key = f"{USER_GENERIC}{user_name(name, 'generic')}[{m}x{k}]"
+        check_generic_kind(m, k, kind)
+        key = f"{USER_GENERIC}{user_name(name, 'generic')}[{m}x{k}]" + GENERIC_KINDS[kind]
+        if kind == "sym":
+            return self._cached(key, lambda: self._sym_params(key, size[m], m))
+        if kind == "skew":
+            return self._cached(key, lambda: self._skew_params(key, size[m], m))
         return self._cached(key, lambda: self._general_params(key, size[m], size[k], (m, k)))
 
     def fresh(self, *args: Any) -> Mat:
@@ -1843,8 +1865,10 @@ class _LiftedScene(Scene):
             return Mat._wrap_native(out, self._field, (space, space), xi.tracker, xi._coords)
         return apply
 
-    def generic(self, name, m, k):
-        return self._cached(f"gen:{name}[{m}x{k}]", lambda: self._lift_primitive(self.base.generic(name, m, k), None))
+    def generic(self, name, m, k, kind="general"):
+        check_generic_kind(m, k, kind)
+        return self._cached(f"gen:{name}[{m}x{k}]{GENERIC_KINDS[kind]}",
+                            lambda: self._lift_primitive(self.base.generic(name, m, k, kind), None))
 
     def fresh(self, *args):
         if len(args) == 2:

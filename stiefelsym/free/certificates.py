@@ -6,6 +6,7 @@ The form read by :mod:`stiefelsym.certificate_check` (format
     {"format": ..., "symbols": {name: what it stands for},
      "letters": {name: {"kind": "resolvent", "parameter": "lambda_"} |
                        {"kind": "generic", "row": "n", "col": "r", "transpose": name} |
+                       {"kind": "generic", "row": "n", "col": "n", "transpose": name, "sign": 1 or -1} |
                        {"kind": "operator", "operator": "AA", "argument": ["X", "Pt"]}},
      "entries": [{"position": "dL[1,1]", "type": ["n", "n"],
                   "residual": [{"coef": "2*kappa", "traces": [["Xt", "P"]], "word": ["X", "Pt"]}, ...],
@@ -127,6 +128,10 @@ class CertificateWriter:
             G = L if not name.endswith("^T") else L.adjoint
             if str(G) not in self.letters:
                 self.letters[str(G)] = {"kind": "generic", "row": G.row, "col": G.col, "transpose": str(G.adjoint)}
+        elif name.startswith("gen:") and name not in self.letters:
+            # a generic symmetric or skew letter: its own transpose, with the sign of its transpose
+            self.letters[name] = {"kind": "generic", "row": L.row, "col": L.col, "transpose": name,
+                                  "sign": L.adjoint_sign}
         return name
 
     def word(self, w: Iterable[Letter]) -> list[str]:

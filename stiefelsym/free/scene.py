@@ -23,7 +23,7 @@ import symengine as se
 
 from stiefelsym.backends.fields import Dual, DualField, Field
 from stiefelsym.backends.matrix import CoordinateTracker, Mat, definite
-from stiefelsym.scene import (FRESH, TANGENT_KEYS, USER_SCALAR, Flow, HermitianComponents, PaperObjects, _fresh_key, _number,
+from stiefelsym.scene import (FRESH, check_generic_kind, TANGENT_KEYS, USER_SCALAR, Flow, HermitianComponents, PaperObjects, _fresh_key, _number,
                               map_entries)
 from stiefelsym.free.algebra import (LEADING, Letter, NCPoly, NeedsCoordinates, OperatorLetter, apply_operator, as_coef, coef_latex, derivation,
                       letter_pair, mark_moving, record_refusal, refuse, skew_letter, substitute, symmetric_letter, trace)
@@ -989,12 +989,20 @@ class FreeScene(PaperObjects):
 
         return apply
 
-    def generic(self, name: str, m: str, k: str) -> Mat:
-        """A generic m×k matrix (m, k in {"n", "r"}): a free letter G with transpose G^T."""
+    def generic(self, name: str, m: str, k: str, kind: str = "general") -> Mat:
+        """A generic m×k matrix (m, k in {"n", "r"}): a free letter G with transpose G^T; a symmetric
+        (``kind`` "sym") or skew ("skew") one is a letter that is its own transpose, or minus it."""
         if m not in ("n", "r") or k not in ("n", "r"):
             raise ValueError(f"generic({name!r}, {m!r}, {k!r}): the index spaces are 'n' or 'r'")
         if not re.fullmatch(r"[A-Za-z][A-Za-z0-9]*", str(name)):
             raise ValueError(f"generic({name!r}): a name is letters and digits (it names a letter and its transpose)")
+        check_generic_kind(m, k, kind)
+        if kind != "general":
+            # gen:S:sym and gen:S:skew: other letters than the general gen:S, and no claim's name spells them
+            key = f"gen:{name}:{kind}"
+            make = symmetric_letter if kind == "sym" else skew_letter
+            self._named.setdefault(key, make(key, m, name))
+            return self._cached(key, lambda: self._prim(key, _w(self._named[key])))
         G, _ = letter_pair(f"gen:{name}", f"gen:{name}^T", m, k, name, f"{name}^{{T}}")
         self._named.setdefault(str(G), G)
         return self._cached(f"gen:{name}", lambda: self._prim(str(G), _w(self._named[str(G)])))

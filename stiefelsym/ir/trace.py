@@ -682,13 +682,21 @@ def _m_scalar_matrix(s, c, m, tag="?"):
 INVERSE_ELEMENTS = "Inverse"
 
 
-def _m_generic(s, name, m, k):
+#: the kinds of a claim's generic matrix, s.generic(name, m, k, kind)
+GENERIC_KINDS = ("general", "sym", "skew")
+
+
+def _m_generic(s, name, m, k, kind="general"):
     t = s._t
     if not all(type(x) is str for x in (name, m, k)) or not {m, k} <= {"n", "r"}:
         return t.refuse("s.generic(name, m, k): a name and the spaces 'n' or 'r'")
+    if type(kind) is not str or kind not in GENERIC_KINDS or (kind != "general" and m != k):
+        return t.refuse("s.generic(name, m, k, kind): the kinds are 'general', 'sym' and 'skew', and a 'sym' or "
+                        "'skew' matrix is square (m = k)")
     if name.startswith(INVERSE_ELEMENTS) and not t._elements:
         return t.refuse(f"the names {INVERSE_ELEMENTS}... are the generic elements of an Inverse statement")
-    return _call(s, "generic", (name, m, k), MAT, t.shape_of((m, k)))
+    # a general matrix keeps the node of three arguments it always had (the same graphs, the same digests)
+    return _call(s, "generic", (name, m, k) if kind == "general" else (name, m, k, kind), MAT, t.shape_of((m, k)))
 
 
 def _m_fresh(s, m, k):
