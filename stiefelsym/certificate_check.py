@@ -205,9 +205,9 @@ class Context:
                 # a general letter has a distinct transpose; gen:…:sym/:skew is its own (±): its name says which
                 t, row, col, sign = d["transpose"], d["row"], d["col"], d.get("sign", 1)
                 own = 1 if name.endswith(":sym") else -1 if name.endswith(":skew") else None
-                if not (name.startswith("gen:") and t.startswith("gen:")) or t in self.letters or (t == name) != (
-                        own is not None) or (own or 1) != sign or type(sign) is not int or (own and row != col):
-                    raise Rejected(f"generic letters are named gen:..., with a distinct transpose, or gen:...:sym and "
+                if not name.startswith("gen:") or t != (name if own else name + "^T") or t in self.letters \
+                        or (own or 1) != sign or type(sign) is not int or (own and row != col):
+                    raise Rejected(f"generic letters are named gen:..., with the transpose gen:...^T, or gen:...:sym and "
                                    f"gen:...:skew, square and their own transpose with the sign 1 and -1: {name}, {t}")
                 if row not in ("n", "r") or col not in ("n", "r"):
                     raise Rejected(f"the generic letter {name} is not an arrow between n and r")

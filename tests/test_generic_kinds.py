@@ -64,9 +64,9 @@ def test_the_free_method_proves_it_for_every_size_with_an_accepted_certificate()
     assert r.verdict == "proved", r.message
     data = json.loads(json.dumps(r.certificate_data))
     assert check_certificate(data).accepted
-    assert data["letters"]["gen:S:sym"] == {"kind": "generic", "row": "n", "col": "n", "transpose": "gen:S:sym",
-                                            "sign": 1}
-    assert data["letters"]["gen:K:skew"]["sign"] == -1
+    assert data["letters"]["gen:S[nxn]:sym"] == {"kind": "generic", "row": "n", "col": "n",
+                                                 "transpose": "gen:S[nxn]:sym", "sign": 1}
+    assert data["letters"]["gen:K[rxr]:skew"]["sign"] == -1
     for func in (not_symmetric, skew_is_not_symmetric, general_is_not_symmetric):
         assert run_one(_claim(func), None, "free", 0).verdict != "proved", func.__name__
 
@@ -79,14 +79,19 @@ def _forged(data: dict, name: str, change: dict) -> dict:
 
 def test_the_checker_refuses_a_letter_declared_its_own_transpose_against_its_name():
     data = run_one(_claim(sym_and_skew), None, "free", 0).certificate_data
-    for name, change in (("gen:S:sym", {"sign": -1}), ("gen:S:sym", {"col": "r"}),
-                         ("gen:K:skew", {"sign": 1}), ("gen:S:sym", {"sign": 2})):
+    for name, change in (("gen:S[nxn]:sym", {"sign": -1}), ("gen:S[nxn]:sym", {"col": "r"}),
+                         ("gen:K[rxr]:skew", {"sign": 1}), ("gen:S[nxn]:sym", {"sign": 2})):
         rep = check_certificate(_forged(data, name, change))
         assert not rep.accepted, (name, change)
     # a letter whose name is not a symmetric or skew one cannot be declared its own transpose
     forged = json.loads(json.dumps(data))
     forged["letters"]["gen:G"] = {"kind": "generic", "row": "n", "col": "n", "transpose": "gen:G", "sign": 1}
     assert not check_certificate(forged).accepted
+    # nor can a general letter take another letter for its transpose (a symmetric one, or another general one)
+    for t in ("gen:S[nxn]:sym", "gen:H[nxn]", "gen:G[nxn]^T^T"):
+        forged = json.loads(json.dumps(data))
+        forged["letters"]["gen:G[nxn]"] = {"kind": "generic", "row": "n", "col": "n", "transpose": t}
+        assert not check_certificate(forged).accepted, t
 
 
 @pytest.mark.parametrize("bad", [("S", "n", "r", "sym"), ("S", "n", "n", "hermitian"), ("S", "n", "n", 1)])

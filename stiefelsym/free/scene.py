@@ -997,15 +997,18 @@ class FreeScene(PaperObjects):
         if not re.fullmatch(r"[A-Za-z][A-Za-z0-9]*", str(name)):
             raise ValueError(f"generic({name!r}): a name is letters and digits (it names a letter and its transpose)")
         check_generic_kind(m, k, kind)
+        # the letter's name holds its spaces and its kind, as the fixed-size scenes' keys do: the matrices of one
+        # name on R^n x R^r, R^r x R^n, R^n x R^n, R^r x R^r, and the general, symmetric and skew ones, are all
+        # different letters (letters are compared by name); gen:S[nxn]:sym, gen:K[rxr]:skew, gen:G[nxr] with
+        # gen:G[nxr]^T (no claim's name spells another: a name is letters and digits)
+        key = f"gen:{name}[{m}x{k}]" + (f":{kind}" if kind != "general" else "")
         if kind != "general":
-            # gen:S:sym and gen:S:skew: other letters than the general gen:S, and no claim's name spells them
-            key = f"gen:{name}:{kind}"
             make = symmetric_letter if kind == "sym" else skew_letter
             self._named.setdefault(key, make(key, m, name))
-            return self._cached(key, lambda: self._prim(key, _w(self._named[key])))
-        G, _ = letter_pair(f"gen:{name}", f"gen:{name}^T", m, k, name, f"{name}^{{T}}")
-        self._named.setdefault(str(G), G)
-        return self._cached(f"gen:{name}", lambda: self._prim(str(G), _w(self._named[str(G)])))
+        else:
+            G, _ = letter_pair(key, f"{key}^T", m, k, name, f"{name}^{{T}}")
+            self._named.setdefault(key, G)
+        return self._cached(key, lambda: self._prim(key, _w(self._named[key])))
 
     def fresh(self, *args: Any) -> Mat:
         """fresh(index, m, k): the fresh element number ``index`` of a graph (a claim's ``s.fresh(m, k)``), a free
