@@ -929,6 +929,80 @@ REDUCED_CAYLEY_REDUCTION = (
     "differential at 0 onto the tangent space of the irreducible V(n, r): dense in T*V(n, r)")
 
 
+UNCONSTRAINED_REDUCTION = (
+    "no constraint used: X, P independent generic n x r matrices (every entry a parameter), A = diag(a); the "
+    "residual vanishes identically as a rational function of them, so on T*V(n, r) wherever the computation "
+    "divides by nothing that vanishes there, a dense open set: at an exact point of {where} over GF(p) it met "
+    "no zero divisor")
+
+#: the leaves of a point that the unconstrained chart replaces or derives from (X, P): a graph that reads
+#: another point (a second, double or complex point) goes to the charts of that point
+UNCONSTRAINED_LEAVES = frozenset({"X", "P", "Phi", "Psi"})
+
+
+def _unconstrained_chart(claim: Claim, n: int, r: int, func: Callable, graph: Any, key: str,
+                         calls: list, width: list) -> tuple | None:
+    """The unconstrained chart of a graph that reads coordinates (the Cayley chart's domain): the Cayley
+    chart's scene with its point (X, P) replaced by two independent generic n x r matrices, so that no
+    constraint and no inverse of the chart is computed.  An identity that holds there holds on T*V(n, r):
+    every value of the scene is a rational function of X, P and of the chart's other parameters, and the
+    chart's point (X(S), P(S, W, Z)) substituted into it is the claim's value on T*V, wherever no divisor of
+    the computation vanishes after the substitution; one exact point of T*V per component of O(n) at which
+    the same computation meets no zero divisor shows that none vanishes identically.
+
+    Returns ((scene, reduction), evaluation) when every residual is identically 0 there; None when the chart
+    does not apply (a rank or count, a claim said not to vanish, another point read), when the identity
+    fails at a random point of the unconstrained space (it needs the constraints: the Cayley chart decides),
+    when the probe meets a zero divisor or any exception, or when the symbolic evaluation is not 0 or beyond
+    the symbolic budget.  Soundness does not rest on the pre-test at a random point, only on the symbolic
+    evaluation and the probe."""
+    if claim.expect == "nonzero" or "rank" in graph.ops or "count" in graph.ops:
+        return None
+    points = {a[1] for op, a in zip(graph.ops, graph.args) if op == "attr" and type(a[1]) is str} & POINT_LEAVES
+    if not points <= UNCONSTRAINED_LEAVES:
+        return None
+
+    def free_point(sc: Scene) -> Scene:
+        X = sc._general_params("point:X", n, r, ("n", "r"))
+        P = sc._general_params("point:P", n, r, ("n", "r"))
+        sc._cache["point"] = (X, P)
+        return sc
+
+    def vanishes(sc: Scene) -> bool:
+        return not _evaluate(call_claim(func, sc), sc._field, None).nonzero
+
+    try:
+        # the pre-test: an identity that needs the constraints fails at a random point of the unconstrained space
+        F = ModularField(random_prime(random.Random(f"{key}|unconstrained|prime")))
+        if not vanishes(free_point(Scene(n, r, F, chart="cayley", rng=random.Random(f"{key}|unconstrained"),
+                                         realization=claim.realization))):
+            return None
+        # the probe: the same computation at a point of T*V on each component of O(n)
+        for comp in ((0, 1) if r == n else (0,)):
+            prng = random.Random(f"{key}|unconstrained|probe|{comp}")
+            Fp = ModularField(random_prime(prng))
+            call_claim(func, Scene(n, r, Fp, chart="cayley", rng=prng, component=comp, realization=claim.realization))
+    except (Expired, ExactTimeout):
+        raise
+    except Exception:       # noqa: BLE001 - a zero divisor, a degenerate point, anything: the Cayley chart decides
+        return None
+
+    def build() -> tuple:
+        f = SymbolicField(width[0])
+        return f, free_point(Scene(n, r, f, chart="cayley", realization=claim.realization))
+    try:
+        field, scene, checks = _chart_checks((claim.id, claim.realization, "exact", n, r, "unconstrained"),
+                                             build, func, graph, calls)
+    except (SymbolicBudget, CoordinateAccess):
+        return None
+    width[0] = max(width[0], _ring_width(field))
+    ev = _evaluate(checks, field, None)
+    if ev.nonzero or ev.rank_problems or ev.count_problems:
+        return None
+    where = "each of the two components of T*V(n, n)" if r == n else "T*V(n, r)"
+    return (scene, UNCONSTRAINED_REDUCTION.format(where=where) + scene.second_point_text()), ev
+
+
 def _reads_coordinates(claim: Claim, n: int, r: int, func: Callable, graph: Any = None) -> list[str]:
     """What the claim's graph visibly reads of coordinates: an entry or a block of any matrix, a matrix
     of given entries, an engine step indexed by a basis (the constraints, the coordinates of a phase
@@ -1044,6 +1118,7 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
             # the variables the flint ring of an evaluation of this graph reached: the next chart's ring starts
             # that wide (the same values, without carrying its polynomials to a wider context as it grows)
             width = [0]
+            unconstrained = None      # the unconstrained chart's proof, where it gives one (below)
             for right in attempts:
                 if claim.realization == "metric" and visible:
                     scene, coords, missing = None, list(visible), True
@@ -1073,7 +1148,10 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                     # right-reduced Cayley chart (A diagonal, one point per O(r)-orbit) is tried
                     # instead of giving up; it is a chart for every such graph, covariant or not
                     if not cayley_right.applies(graph, claim.realization, n, r):
-                        raise
+                        # or the unconstrained chart, for a graph that holds without the constraints
+                        unconstrained = _unconstrained_chart(claim, n, r, func, graph, key, calls, width)
+                        if unconstrained is None:
+                            raise
                     scene, coords, missing = None, list(visible) or ["the equivariant chart beyond budget"], True
                     break
                 if right == "diagonal" and (coords or missing):
@@ -1120,7 +1198,14 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                         R, f1, randomized, lambda: degree_bound(claim, n, r, func).numerator, key)))
                     charts.append((sc1, stated.format(why=why) + sc1.second_point_text()))
             else:
-                if n > EXACT_CAYLEY_MAX_N:
+                # a graph that holds without the constraints: proved on the unconstrained chart (polynomial in
+                # X, P), without the Cayley chart's inverse; otherwise the Cayley chart decides (a graph the
+                # right-reduced Cayley chart applies to goes there: X = I at r = n, S11 = 0 below)
+                if unconstrained is None and not cayley_right.applies(graph, claim.realization, n, r):
+                    unconstrained = _unconstrained_chart(claim, n, r, func, graph, key, calls, width)
+                if unconstrained is not None:
+                    charts.append(unconstrained[0])
+                elif n > EXACT_CAYLEY_MAX_N:
                     res.verdict = "inconclusive"
                     unrelied = (" (a stated reason is relied on only for the reviewed catalog's claims and "
                                 "their registered corrections)"
@@ -1132,13 +1217,13 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                     res.seconds = time.perf_counter() - t0
                     res.rerun = ""
                     return res
-                evaluations = []
+                evaluations = [] if unconstrained is None else [unconstrained[1]]
                 # r = n: both components of O(n) for X (bit 0 of comp); with a second point (Y, Q),
                 # read on the first evaluation, both for Y as well (bit 1): the four combinations
                 # a graph that reads nothing of R^r: the chart reduced by O(r) on the right (S11 = 0; at
                 # r = n, X = I, whose orbit under O(n) on the right is both components)
                 right = cayley_right.applies(graph, claim.realization, n, r)
-                comps = [0, 1] if r == n and not right else [0]
+                comps = [] if unconstrained is not None else [0, 1] if r == n and not right else [0]
                 for comp in comps:
                     def build_cayley(comp=comp) -> tuple:
                         f = SymbolicField(width[0])
