@@ -308,7 +308,7 @@ def add(*vs):
 # exact_max_n = 3: at (4,3) the symbolic method proves it in about 1.5 s, but its 128 mutants there cost the
 # mutation analysis about 70 s more (several stop at their 30 s), so (4,3) stays with the modular method
 @claim("neum-gras-sphere", paper=("iden1", "iden2", "neum-gras**", "neum-gras", "gras-velocities"), kind="id",
-       sizes=admissible(n_max=5, n_min=2, where=lambda n, r: r == n - 1, condition="r = n - 1"), exact_max_n=3,
+       sizes=admissible(n_max=5, n_min=2, where=lambda n, r: r == n - 1, condition="r = n - 1"), exact_max_n=4,
        statement=r"r=n-1:\ \mathcal X=(e_1,\dots,e_{n-1},e_n)\in SO(n),\ e_1\wedge\dots\wedge e_{n-1}\mapsto e_n,\quad "
                  r"\ddot e_n=(A-\tr A\,\mathbf I)e_n+\lambda e_n=Ae_n-\big((e_n,Ae_n)+(\dot e_n,\dot e_n)\big)e_n"
                  r"\ \text{on}\ \Psi^{-1}(0)")

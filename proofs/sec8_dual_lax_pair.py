@@ -342,7 +342,7 @@ def I2r_printed(s, mu):
 
 
 @claim("2r-integrals-explicit", paper=("2r-integrals", "LA3"), kind="id",
-       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 1, 4: 1, 5: 1},
+       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 2, 4: 2, 5: 1, 6: 1, 7: 1},
        statement=r"\mathcal I_2=\sum_i\frac{a(\lambda)}{\lambda-a_i}\big((e^i_1)^2+\dots+(e^i_r)^2\big)"
                  r"+\sum_{i<j}\frac{a(\lambda)\,\Phi_{ij}^2}{(\lambda-a_i)(\lambda-a_j)},\quad "
                  r"\mathcal I_{2r}=\sum_{k}\sum_{I_{r+k}}\frac{a(\lambda)}{\prod(\lambda-a_{i})}\sum_{i_1<\dots<i_k}"
@@ -386,7 +386,7 @@ def I2l_general_line(s, l):
 
 
 @claim("2r-integrals-general-line", paper=("2r-integrals",), kind="id",
-       sizes=admissible(n_max=5, n_min=2, condition="n >= 2"), exact_max_n=2, exact_max_r={3: 2, 4: 1, 5: 1},
+       sizes=admissible(n_max=5, n_min=2, condition="n >= 2"), exact_max_n=2, exact_max_r={3: 2, 4: 1, 5: 1, 6: 1, 7: 1},
        fails_at=lambda n, r: r >= 2,
        erratum="""The general line of (2r-integrals), I_{2l} = sum_{I_l} a/prod(lambda - a_i) sum_{J_l}
        (e_{j_1}^...^e_{j_l})^2_{I_l} + sum_{I_{l+1}} a/prod(lambda - a_i) sum_{J_l, 1<=i<=r}
@@ -407,7 +407,7 @@ def general_line_of_the_spectral_integrals(s):
 
 
 @general_line_of_the_spectral_integrals.claim.correction(
-    "second sum: (e_1 ^ p_1 + ... + e_r ^ p_r)_{I_2}^2 in place of the sum of all (e_j ^ p_i)_{I_2}^2", exact_max_r={3: 3})
+    "second sum: (e_1 ^ p_1 + ... + e_r ^ p_r)_{I_2}^2 in place of the sum of all (e_j ^ p_i)_{I_2}^2", exact_max_r={3: 3, 6: 1, 7: 1})
 def general_line_of_the_spectral_integrals_corrected(s):
     n, r, lam = s.n, s.r, s.lam
     E, Pc = columns(s.X, r), columns(s.P, r)
@@ -550,7 +550,7 @@ def rotation(s):
 
 
 @claim("gen-chasles2", paper=("Gen_Chasles2", "VVB", "conf", "conf0"), kind="geo",
-       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 1, 4: 1, 5: 1, 6: 1},
+       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 2, 4: 1, 5: 1, 6: 1, 7: 1},
        statement=r"\mathcal V(XB,PB)\begin{pmatrix}B^{-1}&0\\0&B^{-1}\end{pmatrix}=\begin{pmatrix}\mathbf I_n&0\\0&B^{-1}"
                  r"\end{pmatrix}\mathcal V(X,P),\ \det(\mathcal V(XB,PB)^TB(\lambda)\mathcal V(XB,PB))="
                  r"\det(\mathcal V^TB(\lambda)\mathcal V),\ B\in SO(r);\quad \mathfrak i(x)\in\bar Q(\lambda)\iff "
@@ -606,7 +606,7 @@ def line_tangency(s, mu):
 
 
 @claim("mum-geod", paper=("Mum_geod",), kind="pb",
-       sizes=admissible(n_max=5, n_min=2, r_max=1, condition="r = 1, n >= 2"), exact_max_n=4,
+       sizes=admissible(n_max=5, n_min=2, r_max=1, condition="r = 1, n >= 2"), exact_max_n=6,
        statement=r"r=1:\ \{F_i,F_j\}=0,\ \ \mathrm{disc}_{l(t)}Q(\lambda)=-\sum_i\frac{F_i}{\lambda-a_i}"
                  r"=-\mathcal I_2(\lambda)/a(\lambda),\ \ \mathrm{disc}_{l(t)}Q(0)=\sum_iF_i/a_i")
 def moser_chasles_for_the_neumann_system(s):
