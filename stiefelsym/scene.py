@@ -274,6 +274,11 @@ class PaperObjects:
 class Scene(PaperObjects):
     """One problem size over one field, with lazily built objects."""
 
+    #: whether the engine's steps may take the closed forms that hold on T*V only (the multipliers of
+    #: (dot_XP) where XᵀX = I holds exactly at the point): a scene whose point need not be on T*V (the
+    #: exact method's unconstrained chart) and its probe compute the solved systems instead
+    ON_V_SHORTCUTS = True
+
     def __init__(self, n: int, r: int, field: Field, *, chart: str = "cayley",
                  rng: random.Random | None = None, component: int = 0,
                  realization: str = "standard", options: Mapping[str, Any] | None = None,
@@ -1444,7 +1449,7 @@ class Scene(PaperObjects):
         symengine: there rational functions make the closed form's products swell past any memory
         budget, where the solved system is refused early by the symbolic budget (over flint, with
         one common denominator and exact cancellation, they do not)."""
-        if (not CLOSED_FORM_MULTIPLIERS or self.realization != "standard"
+        if (not CLOSED_FORM_MULTIPLIERS or not self.ON_V_SHORTCUTS or self.realization != "standard"
                 or self.chart not in ("cayley", "equivariant") or not (self._field.exact or approx)
                 or isinstance(self._field, SymbolicField) and self.chart == "cayley" and not self._field.native):
             return False
@@ -1728,8 +1733,8 @@ class Scene(PaperObjects):
         if self.realization == "standard" and not isinstance(self, _LiftedScene):
             kinds.add(TWISTED_NODES)    # (cond_XP)'s constraint gradients in closed form: brackets of brackets
         approx = self._approximates_point()
-        if (CLOSED_FORM_MULTIPLIERS and self.realization == "standard" and self.chart in ("cayley", "equivariant")
-                and (self._field.exact or approx)
+        if (CLOSED_FORM_MULTIPLIERS and self.ON_V_SHORTCUTS and self.realization == "standard"
+                and self.chart in ("cayley", "equivariant") and (self._field.exact or approx)
                 and not (isinstance(self._field, SymbolicField) and self.chart == "cayley" and not self._field.native)):
             kinds |= {"dirac_flow", "multiplier_flow", "bracket"}
         return frozenset(kinds)
@@ -1740,7 +1745,7 @@ class Scene(PaperObjects):
         multiplier flow with Λ, Π.  The closed forms hold where XᵀX = I_r: checked exactly over an
         exact field (a chart's point is on V by construction; elsewhere the scene's own flow)."""
         if kind != "canonical_flow":
-            on_V = lambda: (self.X.T @ self.X - self.Ir).is_zero()      # noqa: E731
+            on_V = lambda: self.ON_V_SHORTCUTS and (self.X.T @ self.X - self.Ir).is_zero()      # noqa: E731
             if not self._approximates_point() and not self._cached("on V", on_V):
                 return getattr(self, kind)(H)
         if kind == "multiplier_flow":

@@ -940,33 +940,57 @@ UNCONSTRAINED_REDUCTION = (
 UNCONSTRAINED_LEAVES = frozenset({"X", "P", "Phi", "Psi"})
 
 
+class _UnconstrainedScene(Scene):
+    """The Cayley chart's scene with its point (X, P) two independent generic n x r matrices (``free``), or the
+    chart's own point of T*V (the probe); in both, every engine step is computed as for a point off T*V
+    (no closed form that holds on T*V only), so that the probe makes the divisions the symbolic run makes."""
+
+    ON_V_SHORTCUTS = False
+
+    def __init__(self, *args: Any, free: bool = True, **kw: Any) -> None:
+        super().__init__(*args, **kw)
+        self._free = free
+
+    def _point(self):
+        if not self._free:
+            return super()._point()
+        n, r = self.n, self.r
+        return self._cached("point", lambda: (self._general_params("point:X", n, r, ("n", "r")),
+                                              self._general_params("point:P", n, r, ("n", "r"))))
+
+
+class _UnconstrainedTimeout(ExactTimeout):
+    """The unconstrained chart's own deadline expired: the Cayley chart decides."""
+
+
+#: the unconstrained chart's share of the exact method's time budget (and its limit without one): a graph
+#: whose powers of tr(XᵀX) the Cayley chart takes as numbers can swell there, and goes to the Cayley chart
+UNCONSTRAINED_SHARE = 0.25
+UNCONSTRAINED_SECONDS = 30.0
+
+
 def _unconstrained_chart(claim: Claim, n: int, r: int, func: Callable, graph: Any, key: str,
-                         calls: list, width: list) -> tuple | None:
+                         calls: list, width: list, time_budget: float | None) -> tuple | None:
     """The unconstrained chart of a graph that reads coordinates (the Cayley chart's domain): the Cayley
     chart's scene with its point (X, P) replaced by two independent generic n x r matrices, so that no
     constraint and no inverse of the chart is computed.  An identity that holds there holds on T*V(n, r):
     every value of the scene is a rational function of X, P and of the chart's other parameters, and the
     chart's point (X(S), P(S, W, Z)) substituted into it is the claim's value on T*V, wherever no divisor of
     the computation vanishes after the substitution; one exact point of T*V per component of O(n) at which
-    the same computation meets no zero divisor shows that none vanishes identically.
+    the same computation (:class:`_UnconstrainedScene`: no closed form of T*V) meets no zero divisor shows
+    that none vanishes identically.
 
     Returns ((scene, reduction), evaluation) when every residual is identically 0 there; None when the chart
     does not apply (a rank or count, a claim said not to vanish, another point read), when the identity
     fails at a random point of the unconstrained space (it needs the constraints: the Cayley chart decides),
-    when the probe meets a zero divisor or any exception, or when the symbolic evaluation is not 0 or beyond
-    the symbolic budget.  Soundness does not rest on the pre-test at a random point, only on the symbolic
-    evaluation and the probe."""
+    when the probe meets a zero divisor or any exception, or when the symbolic evaluation is not 0, beyond
+    the symbolic budget or past its share of the time budget.  Soundness does not rest on the pre-test at a
+    random point, only on the symbolic evaluation and the probe."""
     if claim.expect == "nonzero" or "rank" in graph.ops or "count" in graph.ops:
         return None
     points = {a[1] for op, a in zip(graph.ops, graph.args) if op == "attr" and type(a[1]) is str} & POINT_LEAVES
     if not points <= UNCONSTRAINED_LEAVES:
         return None
-
-    def free_point(sc: Scene) -> Scene:
-        X = sc._general_params("point:X", n, r, ("n", "r"))
-        P = sc._general_params("point:P", n, r, ("n", "r"))
-        sc._cache["point"] = (X, P)
-        return sc
 
     def vanishes(sc: Scene) -> bool:
         return not _evaluate(call_claim(func, sc), sc._field, None).nonzero
@@ -974,26 +998,28 @@ def _unconstrained_chart(claim: Claim, n: int, r: int, func: Callable, graph: An
     try:
         # the pre-test: an identity that needs the constraints fails at a random point of the unconstrained space
         F = ModularField(random_prime(random.Random(f"{key}|unconstrained|prime")))
-        if not vanishes(free_point(Scene(n, r, F, chart="cayley", rng=random.Random(f"{key}|unconstrained"),
-                                         realization=claim.realization))):
+        if not vanishes(_UnconstrainedScene(n, r, F, chart="cayley", rng=random.Random(f"{key}|unconstrained"),
+                                            realization=claim.realization)):
             return None
         # the probe: the same computation at a point of T*V on each component of O(n)
         for comp in ((0, 1) if r == n else (0,)):
             prng = random.Random(f"{key}|unconstrained|probe|{comp}")
-            Fp = ModularField(random_prime(prng))
-            call_claim(func, Scene(n, r, Fp, chart="cayley", rng=prng, component=comp, realization=claim.realization))
-    except (Expired, ExactTimeout):
+            call_claim(func, _UnconstrainedScene(n, r, ModularField(random_prime(prng)), chart="cayley", rng=prng,
+                                                 component=comp, realization=claim.realization, free=False))
+    except Expired:
         raise
     except Exception:       # noqa: BLE001 - a zero divisor, a degenerate point, anything: the Cayley chart decides
         return None
 
     def build() -> tuple:
         f = SymbolicField(width[0])
-        return f, free_point(Scene(n, r, f, chart="cayley", realization=claim.realization))
+        return f, _UnconstrainedScene(n, r, f, chart="cayley", realization=claim.realization)
+    limit = UNCONSTRAINED_SHARE * time_budget if time_budget is not None else UNCONSTRAINED_SECONDS
     try:
-        field, scene, checks = _chart_checks((claim.id, claim.realization, "exact", n, r, "unconstrained"),
-                                             build, func, graph, calls)
-    except (SymbolicBudget, CoordinateAccess):
+        with deadline(limit, "the unconstrained chart", lambda message: _UnconstrainedTimeout(message)):
+            field, scene, checks = _chart_checks((claim.id, claim.realization, "exact", n, r, "unconstrained"),
+                                                 build, func, graph, calls)
+    except (SymbolicBudget, CoordinateAccess, _UnconstrainedTimeout):
         return None
     width[0] = max(width[0], _ring_width(field))
     ev = _evaluate(checks, field, None)
@@ -1149,7 +1175,7 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                     # instead of giving up; it is a chart for every such graph, covariant or not
                     if not cayley_right.applies(graph, claim.realization, n, r):
                         # or the unconstrained chart, for a graph that holds without the constraints
-                        unconstrained = _unconstrained_chart(claim, n, r, func, graph, key, calls, width)
+                        unconstrained = _unconstrained_chart(claim, n, r, func, graph, key, calls, width, time_budget)
                         if unconstrained is None:
                             raise
                     scene, coords, missing = None, list(visible) or ["the equivariant chart beyond budget"], True
@@ -1202,7 +1228,7 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                 # X, P), without the Cayley chart's inverse; otherwise the Cayley chart decides (a graph the
                 # right-reduced Cayley chart applies to goes there: X = I at r = n, S11 = 0 below)
                 if unconstrained is None and not cayley_right.applies(graph, claim.realization, n, r):
-                    unconstrained = _unconstrained_chart(claim, n, r, func, graph, key, calls, width)
+                    unconstrained = _unconstrained_chart(claim, n, r, func, graph, key, calls, width, time_budget)
                 if unconstrained is not None:
                     charts.append(unconstrained[0])
                 elif n > EXACT_CAYLEY_MAX_N:

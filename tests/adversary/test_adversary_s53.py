@@ -50,3 +50,36 @@ def test_a_general_letter_cannot_be_declared_with_a_symmetric_transpose():
                          "residual": [{"coef": "1", "traces": [["Xt", "gen:G[nxn]:sym", "X"]], "word": []},
                                       {"coef": "-1", "traces": [["Xt", "gen:G[nxn]", "X"]], "word": []}]}]}
     assert not check_certificate(json.loads(json.dumps(data))).accepted
+
+
+# -- the exact method's unconstrained chart (X, P independent generic matrices) ---------------------------------
+# A second review tried divisions by what vanishes on T*V only (tr(XᵀX) − r, inside a Hamiltonian, captured into
+# a function), engine steps whose computation differs on and off T*V (closed-form multipliers on V, the solved
+# system off it), the metric realization, and a true claim whose powers of tr(XᵀX) are numbers on the Cayley chart
+# and swell on the unconstrained one.  No wrong verdict; the last one took the whole time budget (inconclusive
+# under --timeout 30), and the probe took the closed forms where the symbolic run solved: the chart now has its
+# own share of the time budget, and its scene (and probe) take no closed form of T*V.
+
+def test_divisions_by_what_vanishes_on_tv_are_never_proved():
+    got = verdicts_each("unconstrained_basic.py", ("exact",), size="3,2")["exact"]
+    assert got == {"u-zero-over-zero": "error", "u-undefined-hamiltonian": "error", "u-dirac-tangent": "proved",
+                   "u-dirac-closed-form": "proved", "u-dirac-closed-form-false": "fails", "u-bracket-entry": "fails",
+                   "u-bracket-entry-true": "proved"}, got
+    got = verdicts_each("unconstrained_engine_steps.py", ("exact",), size="3,1")["exact"]
+    assert got["u-r1-captured"] == got["u-r1-captured-value"] == "error", got
+
+
+def test_true_claims_through_engine_steps_are_proved():
+    got = verdicts_each("unconstrained_engine_steps.py", ("exact", "modular"), size="3,1")
+    for cid in ("u-r1-dirac-tangent", "u-r1-pi-closed", "u-r1-bracket-antisym", "u-r1-bracket-casimir",
+                "u-r1-pairs-flow", "u-metric-entry-flow"):
+        assert got["exact"][cid] == "proved", (cid, got["exact"])
+        assert got["modular"][cid] == "checked", (cid, got["modular"])
+    assert got["exact"]["u-metric-entry-false"] == "fails"
+
+
+def test_a_claim_that_swells_on_the_unconstrained_chart_goes_to_the_cayley_chart_in_time():
+    from adversary_cli import HERE, cli
+    run = cli("verify", "u-cost-power", "--claims", str(HERE / "unconstrained_cost.py"), "--method", "exact",
+              "--size", "3,2", "--timeout", "30")
+    assert "u-cost-power (3,2) exact: proved" in run.stdout, run.stdout + run.stderr
