@@ -122,8 +122,10 @@ def test_the_rank_of_lambda1_on_gl7_is_proved_exactly_and_a_wrong_rank_is_not():
     assert r.verdict == "proved", r.message
     assert any("kernel vector" in x for x in r.checks.values()) if isinstance(r.checks, dict) else True
 
-    from proofs.sec6_dimension_lemmas import generic_gl, kernel_generic_lambda1, lambda1
+    import sys
     from stiefelsym import Rank
+    mod = sys.modules[c.func.__module__]     # the catalog's module (imported once: its claims are registered)
+    generic_gl, kernel_generic_lambda1, lambda1 = mod.generic_gl, mod.kernel_generic_lambda1, mod.lambda1
 
     def wrong(s):
         y = generic_gl(s)

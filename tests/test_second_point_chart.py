@@ -144,15 +144,16 @@ def test_a_corrupted_complex_flow_fails_on_the_equivariant_chart():
 
 
 def _rows_weighted(s, corrupt=False):
-    """tr(XᵀAX) = Σ_i a_i |row_i X|² with A = diag(a) (reads entries and the a_i); ``corrupt``:
-    the last weight a_n replaced by a_1."""
+    """tr(XᵀAX)·(XᵀX)₁₁ = Σ_i a_i |row_i X|² with A = diag(a) (reads entries and the a_i; the factor (XᵀX)₁₁ = 1
+    holds on V only, so the unconstrained chart does not take it); ``corrupt``: the last weight a_n replaced by
+    a_1."""
     X, a_ = s.X, s.a
     acc = s.q(0)
     for i in range(s.n):
         w = a_[0] if corrupt and i == s.n - 1 else a_[i]
         for j in range(s.r):
             acc = acc + w * X[i, j] * X[i, j]
-    return {"tr(X^T A X) - sum": s.tr(X.T @ s.A @ X) - acc}
+    return {"tr(X^T A X) (X^T X)_11 - sum": s.tr(X.T @ s.A @ X) * (X.T @ X)[0, 0] - acc}
 
 
 @pytest.mark.parametrize("n,r", [(6, 2), (5, 3)])
