@@ -440,7 +440,7 @@ def generic_adjoint_orbit_is_regular_iff_corrected(s):
 
 
 @claim("chain-algebra-commutative", paper=("com", "hat", "hat2", "iso"), kind="pb", exact_max_n=6,
-       exact_max_r={7: 4},
+       exact_max_r={7: 4}, exact_corank={7: 2},
        equivariance="the statement is about a generic element of the subspace v of so(n); no point of T*V enters",
        sizes=admissible(n_max=5, n_min=2, condition="n >= 2 (so(1) = 0 has no invariants)"),
        statement=r"\{\tr\xi_{(m)}^{2k},\tr\xi_{(m')}^{2k'}\}_{\mathfrak v}(\xi)="
