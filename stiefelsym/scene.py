@@ -30,6 +30,7 @@ from stiefelsym.backends.fields import DegreeField, Dual, DualField, Field, Floa
 from stiefelsym.backends.polyfield import SymbolicField
 from stiefelsym.backends.matrix import CoordinateTracker, Mat, block, check_element, definite, scalar_matrix, unify
 from stiefelsym.backends.native import _binop, _buf, backend
+from stiefelsym.ir.trace import generic_kind_problem
 from stiefelsym.backends.reverse import Rev, RevField, RevMat, Unsupported, gradient as rev_gradient, leaf as rev_leaf
 
 Scalar = Any
@@ -65,17 +66,13 @@ def user_name(name: Any, what: str) -> str:
     return name
 
 
-#: the kinds of a claim's generic matrix (:meth:`Scene.generic`), and what each adds to the matrix's key
-GENERIC_KINDS = {"general": "", "sym": ":sym", "skew": ":skew"}
-
-
-def check_generic_kind(m: Any, k: Any, kind: Any) -> None:
-    """Refuse a kind of generic matrix other than "general", "sym" and "skew", and a symmetric or skew one
-    that is not square (m ≠ k): the same message in every scene and in the trace."""
-    if type(kind) is not str or kind not in GENERIC_KINDS:
-        raise ValueError(f"generic(..., kind={kind!r}): the kinds are 'general', 'sym' and 'skew'")
-    if kind != "general" and m != k:
-        raise ValueError(f"generic(..., {m!r}, {k!r}, {kind!r}): a {kind} matrix is square (m = k)")
+def check_generic_kind(m: Any, k: Any, kind: Any) -> str:
+    """What the kind of a generic matrix adds to its key ("" for a general matrix, ":sym", ":skew"), or the
+    refusal of the trace (:func:`.ir.trace.generic_kind_problem`) as a ValueError."""
+    problem = generic_kind_problem(m, k, kind)
+    if problem:
+        raise ValueError(problem)
+    return "" if kind == "general" else f":{kind}"
 
 
 #: the name of an entry of a parameter matrix (see :func:`param_name`)
@@ -1053,8 +1050,7 @@ class Scene(PaperObjects):
         size = {"n": self.n, "r": self.r}
         if m not in size or k not in size:
             raise ValueError(f"generic({name!r}, {m!r}, {k!r}): the index spaces are 'n' or 'r'")
-        check_generic_kind(m, k, kind)
-        key = f"{USER_GENERIC}{user_name(name, 'generic')}[{m}x{k}]" + GENERIC_KINDS[kind]
+        key = f"{USER_GENERIC}{user_name(name, 'generic')}[{m}x{k}]" + check_generic_kind(m, k, kind)
         if kind == "sym":
             return self._cached(key, lambda: self._sym_params(key, size[m], m))
         if kind == "skew":
@@ -1871,8 +1867,7 @@ class _LiftedScene(Scene):
         return apply
 
     def generic(self, name, m, k, kind="general"):
-        check_generic_kind(m, k, kind)
-        return self._cached(f"gen:{name}[{m}x{k}]{GENERIC_KINDS[kind]}",
+        return self._cached(f"gen:{name}[{m}x{k}]{check_generic_kind(m, k, kind)}",
                             lambda: self._lift_primitive(self.base.generic(name, m, k, kind), None))
 
     def fresh(self, *args):

@@ -132,3 +132,24 @@ def test_the_rank_of_lambda1_on_gl7_is_proved_exactly_and_a_wrong_rank_is_not():
         return {"rank": Rank(lambda1(s, y), s.n * s.n - s.n + 1, generic=True, kernel=kernel_generic_lambda1(s, y))}
     bad = Claim(id="wrong-rank", paper=("toy",), kind="dim", section="", func=wrong, sizes=admissible(n_max=7))
     assert run_one(bad, Size(6, 1), "exact", 0).verdict == "fails"
+
+
+def transpose_under_the_trace(s, kind):
+    """tr(GM) = tr(GᵀM): true for a symmetric M, false for a skew one (there tr(GᵀK) = −tr(GK)); read entry by
+    entry as well, so that the exact method takes the unconstrained chart beside the algebra."""
+    G, M = s.generic("G", "n", "n"), s.generic("M", "n", "n", kind)
+    acc = s.q(0)
+    for i in range(s.n):
+        for j in range(s.n):
+            acc = acc + G[i, j] * M[j, i] - G[j, i] * M[j, i]
+    return {"tr(GM) - tr(G^T M)": s.tr(G @ M) - s.tr(G.T @ M), "by entries": acc * s.X[0, 0]}
+
+
+@pytest.mark.parametrize("method", POINT_METHODS + ("free",))
+def test_a_careless_symmetry_is_refuted_and_the_true_one_passes(method):
+    size = None if method == "free" else Size(3, 2)
+    true = run_one(_claim(lambda s: transpose_under_the_trace(s, "sym")), size, method, 0)
+    false = run_one(_claim(lambda s: transpose_under_the_trace(s, "skew")), size, method, 0)
+    assert false.verdict not in ("proved", "checked", "numeric"), (method, false.verdict)
+    if method != "free":
+        assert false.verdict == "fails" and true.verdict in ("proved", "checked", "numeric"), (method, true.verdict)

@@ -996,12 +996,12 @@ class FreeScene(PaperObjects):
             raise ValueError(f"generic({name!r}, {m!r}, {k!r}): the index spaces are 'n' or 'r'")
         if not re.fullmatch(r"[A-Za-z][A-Za-z0-9]*", str(name)):
             raise ValueError(f"generic({name!r}): a name is letters and digits (it names a letter and its transpose)")
-        check_generic_kind(m, k, kind)
+        suffix = check_generic_kind(m, k, kind)
         # the letter's name holds its spaces and its kind, as the fixed-size scenes' keys do: the matrices of one
         # name on R^n x R^r, R^r x R^n, R^n x R^n, R^r x R^r, and the general, symmetric and skew ones, are all
         # different letters (letters are compared by name); gen:S[nxn]:sym, gen:K[rxr]:skew, gen:G[nxr] with
         # gen:G[nxr]^T (no claim's name spells another: a name is letters and digits)
-        key = f"gen:{name}[{m}x{k}]" + (f":{kind}" if kind != "general" else "")
+        key = f"gen:{name}[{m}x{k}]{suffix}"
         if kind != "general":
             make = symmetric_letter if kind == "sym" else skew_letter
             self._named.setdefault(key, make(key, m, name))

@@ -686,13 +686,22 @@ INVERSE_ELEMENTS = "Inverse"
 GENERIC_KINDS = ("general", "sym", "skew")
 
 
+def generic_kind_problem(m: Any, k: Any, kind: Any) -> str | None:
+    """Why s.generic(name, m, k, kind) is refused for its kind (None: it is not): the one message of the trace
+    and of every scene."""
+    if type(kind) is not str or kind not in GENERIC_KINDS or (kind != "general" and m != k):
+        return ("s.generic(name, m, k, kind): the kinds are 'general', 'sym' and 'skew', and a 'sym' or 'skew' "
+                "matrix is square (m = k)")
+    return None
+
+
 def _m_generic(s, name, m, k, kind="general"):
     t = s._t
     if not all(type(x) is str for x in (name, m, k)) or not {m, k} <= {"n", "r"}:
         return t.refuse("s.generic(name, m, k): a name and the spaces 'n' or 'r'")
-    if type(kind) is not str or kind not in GENERIC_KINDS or (kind != "general" and m != k):
-        return t.refuse("s.generic(name, m, k, kind): the kinds are 'general', 'sym' and 'skew', and a 'sym' or "
-                        "'skew' matrix is square (m = k)")
+    problem = generic_kind_problem(m, k, kind)
+    if problem:
+        return t.refuse(problem)
     if name.startswith(INVERSE_ELEMENTS) and not t._elements:
         return t.refuse(f"the names {INVERSE_ELEMENTS}... are the generic elements of an Inverse statement")
     # a general matrix keeps the node of three arguments it always had (the same graphs, the same digests)
