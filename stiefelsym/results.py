@@ -105,7 +105,9 @@ class Result:
         bound = "" if p is None else " p=0 (degree 0 in the random parameters)" if p == 0 else f" p<={p:.1e}"
         reason = self.reason(limit)
         seed = f", seed {self.seed}" if self.seed is not None else ", no randomness"
-        return (f"{self.claim}{var} {self.size} {self.method}: {self.verdict}{bound}"
+        # a dimension-free proof names what it covers: every n and r, or every n at the one r of its claim
+        size = free_scope(self) if self.n is None and self.verdict == "proved" else self.size
+        return (f"{self.claim}{var} {size} {self.method}: {self.verdict}{bound}"
                 f" ({self.seconds:.2f}s{seed}){tag}" + (f" -- {reason}" if reason else ""))
 
     def reason(self, limit: int | None = REASON_LIMIT) -> str:
@@ -476,3 +478,17 @@ def load_results(path: str | Path) -> tuple[dict[str, Any], list[Result]]:
         out.append(Result.from_json({k: v for k, v in d.items() if k in names}))
     meta = payload.get("meta", {})
     return meta if isinstance(meta, dict) else {}, out
+
+
+def free_scope(r: Result) -> str:
+    """What a dimension-free proof covers: every n and r, or every n at the one r its claim is stated
+    for (a proof that used E₁E₁ᵀ + … = I_r or XXᵀ = I_n says so in its certificate line), or every n at
+    each r of a union of them (a certificate of cases, e.g. "every n at r = 1 and at r = n")."""
+    text = r.certificate or ""
+    union = re.match(r"cofactor certificates of cases \(for (every n at r = \w+(?: and at r = \w+)+),", text)
+    if union:
+        return union.group(1)
+    for scope in ("every n at r = 1", "every n at r = 2", "every n at r = n"):
+        if f"(for {scope}," in text:
+            return scope
+    return "all n, r"

@@ -478,9 +478,30 @@ __all__ = ["magnetic_matrix", "ambient_bracket", "constraint_bracket_matrix", "b
 
 # the functions that need the engine's scene (its number system, its gradients and multipliers) are
 # single steps of a claim's graph; the coordinate helpers above are traced with the claim
-for _name in ("magnetic_matrix", "ambient_bracket", "constraint_bracket_matrix", "bracket", "ambient_flow", "flow",
+def _traced_field_strength(t: Any, bound: dict) -> None:
+    """While a claim is traced: a field strength F given to a step of this module must be skew by its
+    construction (:func:`stiefelsym.ir.passes.skew_by_construction`): the twisted form ω₀ + ε Σ F_jk de_j∧de_k
+    and its Poisson tensor are defined for F ∈ so(r) only, and a matrix that is not skew would make the
+    Dirac bracket of the fixed sizes and the derivative along the flow of the dimension-free algebra two
+    different things.  The refusal is decided from the graph: the same for every method."""
+    from stiefelsym.ir.passes import skew_by_construction
+    from stiefelsym.ir.trace import MAT, Tracer
+    F = bound.get("F")
+    if F is None:
+        return
+    if type(F) is not Tracer or F._kind != MAT:
+        t.refuse("the field strength F is an r x r skew matrix of the scene")
+        return
+    if not skew_by_construction(t.g, F._r):
+        t.refuse("the field strength F must be skew by its construction: a generic skew matrix "
+                 "(s.generic(name, 'r', 'r', 'skew')), s.eta, the magnetic F, M - M.T, an explicit matrix with "
+                 "opposite entries across a zero diagonal, or sums and multiples by numbers of these")
+
+
+for _name in ("ambient_bracket", "constraint_bracket_matrix", "bracket", "ambient_flow", "flow",
               "multiplier_flow", "form"):
-    globals()[_name] = primitive(globals()[_name])
+    globals()[_name] = primitive(globals()[_name], check=_traced_field_strength)
+magnetic_matrix = primitive(magnetic_matrix)
 # the basis vectors of R^r do not move with the point: their derivative along a flow is 0
 for _name in ("basis_vector", "last_basis_vector", "leading_basis_vectors", "block_projector", "reflection",
               "eigenspace_projector", "kernel_frame", "kernel_annihilator"):

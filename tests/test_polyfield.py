@@ -714,3 +714,23 @@ def test_a_term_cap_refuses_a_product_before_it_starts_and_by_a_count():
     small = Mat._rows([[xs[0], 1], [1, xs[1]]], F)
     with term_cap(10):
         assert (small @ small.inv() - Mat.identity(2, F)).is_zero()
+
+
+def test_a_product_cancels_the_atoms_of_its_denominator_that_divide_its_numerator():
+    """a(λ)·e(λ) with a = (x + y)(x − y) and e = 1/((x + y)²(x + 2)): one atom x + y cancels, the product keeps
+    (x + y)(x + 2) in its denominator and equals (x − y)/((x + y)(x + 2)); a product whose numerator no atom
+    divides keeps its denominator."""
+    from stiefelsym.backends.polyfield import PolyRing
+    R = PolyRing()
+    x, y = (R.var(se.Symbol(n)) for n in "xy")
+    one = (R.one, ())
+    e = R.rf_inv(((x + y) * (x + y) * (x + 2), ()))
+    a = ((x + y) * (x - y), ())
+    for q in (R.rf_mul(a, e), R.rf_mul(e, a)):
+        num, den = q
+        assert sorted(k for _, k in den) == [1, 1]
+        assert R.den_poly(den) == (x + y) * (x + 2)
+        assert num == x - y
+    kept = R.rf_mul(((x - 3), ()), e)
+    assert sorted(k for _, k in kept[1]) == [1, 2] and kept[0] == x - 3
+    assert R.rf_mul(one, e) == e

@@ -232,7 +232,15 @@ class PolyRing:
         return acc
 
     def rf_mul(self, a, b):
-        return (a[0] * b[0], _merge_add(a[1], b[1]))
+        """The product, divided by each atom of its denominator as often as the atom divides its numerator
+        (exact divisions, :meth:`cancel`): the product a(λ)·e(λ) of a characteristic polynomial and a
+        function with poles at its roots then stays a polynomial, instead of a fraction whose numerator
+        grows with every later sum over other denominators (the coefficients of the spectral curve at
+        λ, λ + 1, ...).  At the default sizes the catalog's run takes the same CPU time with it."""
+        n, d = a[0] * b[0], _merge_add(a[1], b[1])
+        if d and not n.is_zero():
+            return self.cancel(n, d)
+        return (n, d)
 
     def rf_inv(self, a):
         n, d = a

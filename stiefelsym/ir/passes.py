@@ -595,3 +595,110 @@ def r_dependence(g: Graph) -> str:
             why = f"node %{i} is an operation {op}"
     g.cache["r-dependence"] = why
     return why
+
+
+#: the scene's matrices that are skew at every point: the generic elements ξ, ζ of so(n) and η of so(r), and
+#: the momentum maps Φ = PXᵀ − XPᵀ, Ψ (a difference of a matrix and its transpose, on and off T*V)
+_SKEW_LEAVES = frozenset({"eta", "xi", "zeta", "Phi", "Psi"})
+#: the scene's scalar parameters
+_SCALAR_LEAVES = frozenset({"lam", "eps", "kappa", "nu", "mu", "t"})
+#: engine steps whose value is skew: the magnetic form's F = E₁∧E₂
+_SKEW_STEPS = frozenset({"stiefelsym.twisted.magnetic_matrix"})
+
+
+def skew_by_construction(g: Graph, x) -> bool:
+    """Whether the matrix of node ``x`` is skew (Mᵀ = −M) by its construction alone: a generic skew matrix
+    (``s.generic(name, m, m, "skew")``), a skew leaf of the scene (:data:`_SKEW_LEAVES`), a zero matrix, the
+    magnetic form's F, M − Mᵀ, an explicit matrix with zeros on its diagonal and opposite entries (equal
+    constants, or an entry and its negation) across it, and sums, differences, negations, transposes and
+    multiples by numbers of these.  Decided from the graph, the same for every method and at every size; a
+    skew matrix built otherwise (a product gAgᵀ of a skew A, or entries equal only as functions) is not
+    recognised (False), so an engine step that needs a skew matrix refuses it with one message everywhere."""
+    memo: dict[int, bool] = {}
+
+    def skew(a) -> bool:
+        if type(a) is not Ref:
+            return False
+        k = a[0]
+        hit = memo.get(k)
+        if hit is None:
+            memo[k] = False                          # a cycle (none in a graph) is not skew
+            hit = memo[k] = _skew_node(k)
+        return hit
+
+    def _skew_node(k: int) -> bool:
+        op, args = g.ops[k], g.args[k]
+        if op == "attr":
+            return args[1] in _SKEW_LEAVES
+        if op == "call":
+            name, cargs = args[1], args[2]
+            if name == "generic":
+                return len(cargs) == 4 and cargs[3] == "skew"
+            if name == "zeros":
+                return len(cargs) >= 2 and cargs[0] == cargs[1]
+            if name == "mat":
+                return _skew_rows(cargs[0] if cargs else None)
+            return False
+        if op == "prim":
+            return args[0].qualname in _SKEW_STEPS
+        if op in ("neg", "T"):
+            return skew(args[0])
+        if op in ("add", "sub"):
+            a, b = args
+            if op == "sub" and type(a) is Ref and type(b) is Ref and (
+                    _transpose_of(b) == a[0] or _transpose_of(a) == b[0]):
+                return True                          # M − Mᵀ, Mᵀ − M
+            return skew(a) and skew(b)
+        if op == "mul":
+            a, b = args
+            return (skew(a) and _scalar(b)) or (skew(b) and _scalar(a))
+        if op == "div":
+            return skew(args[0]) and _scalar(args[1])
+        return False
+
+    def _transpose_of(a: Ref) -> int | None:
+        k = a[0]
+        return g.args[k][0][0] if g.ops[k] == "T" and type(g.args[k][0]) is Ref else None
+
+    def _scalar(a) -> bool:
+        if type(a) in (int, Fraction):
+            return True
+        if type(a) is not Ref:
+            return False
+        op, args = g.ops[a[0]], g.args[a[0]]
+        if op == "attr":
+            return args[1] in _SCALAR_LEAVES
+        if op == "call":
+            return args[1] in ("tr", "scalar", "q", "killing")
+        if op in ("neg",):
+            return _scalar(args[0])
+        if op in ("add", "sub", "mul", "div"):
+            return _scalar(args[0]) and _scalar(args[1])
+        return False
+
+    def _negation(a, b) -> bool:
+        if type(a) in (int, Fraction) and type(b) in (int, Fraction):
+            return a == -b
+        return any(type(u) is Ref and g.ops[u[0]] == "neg" and g.args[u[0]][0] == v for u, v in ((a, b), (b, a)))
+
+    def _skew_rows(rows) -> bool:
+        if type(rows) is not Ref or g.ops[rows[0]] != "list":
+            return False
+        lines = [g.args[rows[0]]]
+        body = []
+        for row in lines[0]:
+            if type(row) is not Ref or g.ops[row[0]] != "list":
+                return False
+            body.append(g.args[row[0]])
+        m = len(body)
+        if any(len(row) != m for row in body):
+            return False
+        for i in range(m):
+            if not (type(body[i][i]) in (int, Fraction) and body[i][i] == 0):
+                return False
+            for j in range(i + 1, m):
+                if not _negation(body[i][j], body[j][i]):
+                    return False
+        return True
+
+    return skew(x)

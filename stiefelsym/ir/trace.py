@@ -48,7 +48,7 @@ _NAMED: dict[int, tuple[str, Any]] = {}
 
 
 def primitive(f: Callable | None = None, *, returns: Any = None, like: dict[str, str] | None = None,
-              constant: bool = False) -> Any:
+              constant: bool = False, check: Callable[["Trace", dict], None] | None = None) -> Any:
     """Mark an engine function as one step of the IR: called while a claim is traced, it becomes a
     ``prim`` node (its function arguments traced once); otherwise it runs as written.
 
@@ -57,9 +57,12 @@ def primitive(f: Callable | None = None, *, returns: Any = None, like: dict[str,
     ``name``, or, when ``name`` is a matrix argument, a matrix of its spaces).  ``like``: for a function
     argument, the argument whose structure its second parameter has (a point of a phase space of the
     caller's).  ``constant``: its value does not move with the point of the scene it is given (a
-    coordinate basis vector): its derivative along every flow is 0 (see :mod:`.derivative`)."""
+    coordinate basis vector): its derivative along every flow is 0 (see :mod:`.derivative`).  ``check``: called
+    while tracing with the trace and the step's bound arguments, before the node is made: it refuses
+    (``trace.refuse``) arguments the step is not defined for, from the graph alone (the same refusal whatever
+    the method)."""
     if f is None:
-        return lambda g: primitive(g, returns=returns, like=like, constant=constant)
+        return lambda g: primitive(g, returns=returns, like=like, constant=constant, check=check)
     refuse_registration("an engine step (primitive)")
     qual = f"{f.__module__}.{f.__qualname__}"
     PRIMITIVES[qual] = f
@@ -70,6 +73,13 @@ def primitive(f: Callable | None = None, *, returns: Any = None, like: dict[str,
     @functools.wraps(f)
     def wrapper(*args, **kw):
         if _ACTIVE:
+            if check is not None:
+                try:
+                    bound = sig.bind(*args, **kw).arguments
+                except TypeError:
+                    bound = None            # the step's own call refuses or raises as it does untraced
+                if bound is not None:
+                    check(_ACTIVE[-1], bound)
             shapes = {}
             if like or type(returns) is tuple:
                 bound = sig.bind(*args, **kw).arguments

@@ -23,7 +23,7 @@ from stiefelsym import paperref, sizerules
 from stiefelsym.latex import greek_words, unicode_name, unicode_words, math_ok, split_math, tex_balanced, tex_display, tex_escape, tex_words
 from stiefelsym.ir import notation
 from stiefelsym.ir.notation import changes_text as change_text
-from stiefelsym.results import PASSING, VERDICTS, Result
+from stiefelsym.results import PASSING, VERDICTS, Result, free_scope  # noqa: F401 (free_scope: also for callers of this module)
 
 DEFAULT_TITLE = ("Verification of Fedorov & Jovanović, "
                  "“Geodesic Flows and Neumann Systems on Stiefel Varieties”")
@@ -403,21 +403,6 @@ def format_sizes(sizes: Iterable[tuple[int, int]], limit: int = 4,
 def planned_sizes(c: "ClaimResults") -> list[tuple[int, int]]:
     """The sizes at which the printed claim was run (the sizes a correction must cover)."""
     return sorted({(r.n, r.r) for r in c.printed if r.n is not None}, key=_size_key)
-
-
-def free_scope(r: Result) -> str:
-    """What a dimension-free proof covers: every n and r, or every n at the one r its claim is stated
-    for (a proof that used E₁E₁ᵀ + … = I_r or XXᵀ = I_n says so in its certificate line), or every n at
-    each r of a union of them (a certificate of cases, e.g. "every n at r = 1 and at r = n")."""
-    text = r.certificate or ""
-    union = re.match(r"cofactor certificates of cases \(for (every n at r = \w+(?: and at r = \w+)+),", text)
-    if union:
-        return union.group(1)
-    for scope in ("every n at r = 1", "every n at r = 2", "every n at r = n"):
-        if f"(for {scope}," in text:
-            return scope
-    return "all n, r"
-
 
 
 def _method_name(m: str) -> str:
