@@ -105,9 +105,11 @@ class Result:
         bound = "" if p is None else " p=0 (degree 0 in the random parameters)" if p == 0 else f" p<={p:.1e}"
         reason = self.reason(limit)
         seed = f", seed {self.seed}" if self.seed is not None else ", no randomness"
-        # a dimension-free proof names what it covers: every n and r, or every n at the one r of its claim
-        size = free_scope(self) if self.n is None and self.verdict == "proved" else self.size
-        return (f"{self.claim}{var} {size} {self.method}: {self.verdict}{bound}"
+        # a dimension-free proof of a claim stated at one r says so after its verdict ("proved for every n at
+        # r = 1"); the size field keeps its one form for every dimension-free run
+        scope = free_scope(self) if self.n is None and self.verdict == "proved" else "all n, r"
+        scope = f" for {scope}" if scope != "all n, r" else ""
+        return (f"{self.claim}{var} {self.size} {self.method}: {self.verdict}{scope}{bound}"
                 f" ({self.seconds:.2f}s{seed}){tag}" + (f" -- {reason}" if reason else ""))
 
     def reason(self, limit: int | None = REASON_LIMIT) -> str:
