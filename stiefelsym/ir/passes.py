@@ -600,8 +600,8 @@ def r_dependence(g: Graph) -> str:
 #: the scene's matrices that are skew at every point: the generic elements ξ, ζ of so(n) and η of so(r), and
 #: the momentum maps Φ = PXᵀ − XPᵀ, Ψ (a difference of a matrix and its transpose, on and off T*V)
 _SKEW_LEAVES = frozenset({"eta", "xi", "zeta", "Phi", "Psi"})
-#: the scene's scalar parameters
-_SCALAR_LEAVES = frozenset({"lam", "eps", "kappa", "nu", "mu", "t"})
+#: the scene's numbers (stiefelsym.ir.trace.NUMBERS)
+_SCALAR_LEAVES = frozenset({"lam", "eps", "kappa"})
 #: engine steps whose value is skew: the magnetic form's F = E₁∧E₂
 _SKEW_STEPS = frozenset({"stiefelsym.twisted.magnetic_matrix"})
 
@@ -668,6 +668,9 @@ def skew_by_construction(g: Graph, x) -> bool:
         op, args = g.ops[a[0]], g.args[a[0]]
         if op == "attr":
             return args[1] in _SCALAR_LEAVES
+        if op == "item":                             # an eigenvalue a_i of A
+            b = args[0]
+            return type(b) is Ref and g.ops[b[0]] == "attr" and g.args[b[0]][1] == "a"
         if op == "call":
             return args[1] in ("tr", "scalar", "q", "killing")
         if op in ("neg",):
