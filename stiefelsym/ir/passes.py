@@ -687,9 +687,8 @@ def skew_by_construction(g: Graph, x) -> bool:
     def _skew_rows(rows) -> bool:
         if type(rows) is not Ref or g.ops[rows[0]] != "list":
             return False
-        lines = [g.args[rows[0]]]
         body = []
-        for row in lines[0]:
+        for row in g.args[rows[0]]:
             if type(row) is not Ref or g.ops[row[0]] != "list":
                 return False
             body.append(g.args[row[0]])

@@ -73,16 +73,18 @@ def primitive(f: Callable | None = None, *, returns: Any = None, like: dict[str,
     @functools.wraps(f)
     def wrapper(*args, **kw):
         if _ACTIVE:
-            if check is not None:
+            bound = None            # the arguments by name, bound once for the check and the shapes
+            if check is not None or like or type(returns) is tuple:
                 try:
                     bound = sig.bind(*args, **kw).arguments
                 except TypeError:
-                    bound = None            # the step's own call refuses or raises as it does untraced
-                if bound is not None:
-                    check(_ACTIVE[-1], bound)
+                    if like or type(returns) is tuple:
+                        raise
+                    # no check: the step's own call raises as it does untraced
+            if check is not None and bound is not None:
+                check(_ACTIVE[-1], bound)
             shapes = {}
             if like or type(returns) is tuple:
-                bound = sig.bind(*args, **kw).arguments
                 shapes = {bound[name]: bound[other] for name, other in (like or {}).items() if name in bound}
                 if type(returns) is tuple and returns[1] in bound:
                     shapes["__returns__"] = bound[returns[1]]

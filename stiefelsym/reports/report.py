@@ -23,7 +23,7 @@ from stiefelsym import paperref, sizerules
 from stiefelsym.latex import greek_words, unicode_name, unicode_words, math_ok, split_math, tex_balanced, tex_display, tex_escape, tex_words
 from stiefelsym.ir import notation
 from stiefelsym.ir.notation import changes_text as change_text
-from stiefelsym.results import PASSING, VERDICTS, Result, free_scope  # noqa: F401 (free_scope: also for callers of this module)
+from stiefelsym.results import PASSING, VERDICTS, Result, free_scope
 
 DEFAULT_TITLE = ("Verification of Fedorov & Jovanović, "
                  "“Geodesic Flows and Neumann Systems on Stiefel Varieties”")

@@ -32,3 +32,11 @@ def test_skew_field_strengths_built_in_the_recognised_ways_are_accepted():
         # the explicit matrix needs fixed sizes: the dimension-free method leaves that claim undecided
         allowed = PASSING + ("undecided",) if method == "free" else PASSING
         assert v["nsf-control-constructions"] in allowed, (method, v)
+
+
+def test_routes_around_the_skew_check_are_refused_too():
+    """The undecorated step (__wrapped__), the free algebra's private flow, F + Fᵀ − Fᵀ, a sum with a symmetric
+    part, M − Nᵀ, η + λI: every method refuses or leaves them undecided, none passes them."""
+    got = verdicts_each("s54_twisted_bypass.py", ("free", "exact", "modular"), size="3,2")
+    for method, v in got.items():
+        assert v and all(x not in PASSING for x in v.values()), (method, v)
