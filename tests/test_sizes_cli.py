@@ -68,7 +68,7 @@ def test_admissible_records_the_stated_bound_and_admits_checks_it():
     (["big", "small", "--size", "2,1", "--size", "4,1"],
      "claim small is stated for sizes n <= 2; (4,1) is outside"),
     (["--size", "5,1"], "no selected claim is stated for size (5,1)"),
-    (["--size", "2,1", "--size", "5,1"], "no selected claim is stated for size (5,1)"),
+    (["--size", "5,1", "--size", "6,2"], "no selected claim is stated for sizes (5,1), (6,2)"),
 ])
 def test_a_size_outside_the_stated_sizes_is_refused(run, args, message):
     line = _error(run("verify", "--claims", "mine.py", "--method", "modular", *args))
@@ -81,6 +81,15 @@ def test_unnamed_claims_skip_the_sizes_they_are_not_stated_for(run):
     assert result.exit_code == 0, result.output
     got = [(r["claim"], r["n"], r["r"]) for r in json.loads(result.stdout)["results"]]
     assert got == [("big", 3, 1), ("big", 4, 2), ("thin", 3, 1), ("thin", 4, 2)]
+
+
+def test_a_size_no_claim_is_stated_for_is_skipped_when_another_size_has_claims(run):
+    result = run("verify", "--claims", "mine.py", "--method", "modular", "--size", "2,1", "--size", "5,1",
+                 "--format", "json")
+    assert result.exit_code == 0, result.output
+    got = {(r["claim"], r["n"], r["r"]) for r in json.loads(result.stdout)["results"]}
+    assert got == {("big", 2, 1), ("small", 2, 1), ("thin", 2, 1)}
+    assert "note: (5,1): no selected claim is stated at this size; it is skipped" in result.stderr
 
 
 def test_a_named_claim_at_its_own_sizes_runs(run):

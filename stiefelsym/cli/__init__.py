@@ -760,10 +760,15 @@ def _dimension_claims_of_point_methods(claims: list[Claim], methods: Sequence[st
 
 def _skipped_notes(claims: list[Claim], sizes: tuple[Size, ...]) -> list[str]:
     """For a --size given without naming claims: at each size, the claims that are not stated there and skip it."""
-    notes = []
+    notes: list[str] = []
+    if all(not any(c.sizes.admits(s.n, s.r) for c in claims) for s in sizes):
+        return notes     # the plan refuses the run
     for s in sizes:
         skip = [c.id for c in claims if not c.sizes.admits(s.n, s.r)]
-        if skip and len(skip) < len(claims):    # none stated there: the plan refuses the size
+        if len(skip) == len(claims):
+            notes.append(f"note: ({s.n},{s.r}): no selected claim is stated at this size; it is skipped "
+                         f"(`stiefelsym show CLAIM` gives a claim's sizes)")
+        elif skip:
             shown = _first_few(skip)
             notes.append(f"note: ({s.n},{s.r}): {len(skip)} of {len(claims)} claims are not stated at this size and "
                          f"skip it: {shown} (`stiefelsym show CLAIM` gives a claim's sizes)")

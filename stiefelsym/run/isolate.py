@@ -37,14 +37,17 @@ def run_isolated(fn: Callable[[], Any], seconds: float, describe: Callable[[Base
     prctl = _death_signal_setup()
     parent = os.getpid()
     rfd, wfd = os.pipe()
-    err = _capture()
+    err, out = _capture(), _capture()
     gc.freeze()    # keep the parent's objects out of the child's collections (fewer copied pages)
     pid = os.fork()
     if pid == 0:   # the child: compute, send, exit without running the parent's cleanup
         os.close(rfd)
         try:
-            os.dup2(err, 2)     # its standard error, read by the parent (see _said)
+            sys.stdout.flush()
+            os.dup2(err, 2)     # its standard error and output, read by the parent (see _said): flint
+            os.dup2(out, 1)     # writes why it aborts to the standard output
             os.close(err)
+            os.close(out)
             if prctl:
                 prctl(1, signal.SIGKILL)     # PR_SET_PDEATHSIG: die with the parent, never outlive it
                 if os.getppid() != parent:
@@ -66,16 +69,16 @@ def run_isolated(fn: Callable[[], Any], seconds: float, describe: Callable[[Base
         if data is not None:
             _, status = os.waitpid(pid, 0)
     finally:
-        said = _said(err)
+        said, printed = _said(err), _said(out)
     if data is None:
-        _forward(said)
+        _forward(said, printed)
         raise HardTimeout()
     if not data:
-        raise ChildDied(f"the child process died ({how_it_ended(status)}{_last_words(said)})")
+        raise ChildDied(f"the child process died ({how_it_ended(status)}{_last_words(said + printed)})")
     kind, value = pickle.loads(data)
-    if kind == "memory":        # (flint says so on standard error first: in the message, not printed)
-        raise ChildDied(f"the child process ran out of memory ({value}{_last_words(said)})")
-    _forward(said)
+    if kind == "memory":        # (flint says so first: in the message, not printed)
+        raise ChildDied(f"the child process ran out of memory ({value}{_last_words(said + printed)})")
+    _forward(said, printed)
     if kind == "error":
         raise ChildError(value)
     return value
@@ -86,8 +89,8 @@ MESSAGE_CHARS = 200
 
 
 def _capture() -> int:
-    """A file descriptor of an anonymous file for a child's standard error (in memory where the platform has
-    memfd_create)."""
+    """A file descriptor of an anonymous file for a child's standard error or output (in memory where the
+    platform has memfd_create)."""
     if hasattr(os, "memfd_create"):
         return os.memfd_create("stiefelsym-child-stderr")
     import tempfile
@@ -112,11 +115,13 @@ def _last_words(said: str) -> str:
     return f"; its last words: {last[0].strip()[:MESSAGE_CHARS]}" if last else ""
 
 
-def _forward(text: str) -> None:
-    """A child's standard error, passed on to this process's (where a run prints what claims print)."""
-    if text:
-        sys.stderr.write(text)
-        sys.stderr.flush()
+def _forward(text: str, printed: str = "") -> None:
+    """A child's standard error and output, passed on to this process's (where a run prints what claims
+    print)."""
+    for stream, chunk in ((sys.stdout, printed), (sys.stderr, text)):
+        if chunk:
+            stream.write(chunk)
+            stream.flush()
 
 
 def how_it_ended(status: int) -> str:

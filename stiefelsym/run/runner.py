@@ -68,8 +68,9 @@ def plan(claims: list[Claim], sizes: list[Size] | None, methods: Iterable[str],
     """Every (claim, size, method) to run; size None is a dimension-free run.
 
     With ``strict`` (the claims were named explicitly) a size outside a claim's
-    declared sizes is refused; otherwise such a claim skips that size, and a size
-    that no claim admits is refused."""
+    declared sizes is refused; otherwise such a claim skips that size, and so does
+    every claim at a size that no claim admits, unless no size admits one: then the
+    run is refused."""
     methods = list(methods)
     for m in methods:
         if m not in METHODS:
@@ -86,9 +87,10 @@ def plan(claims: list[Claim], sizes: list[Size] | None, methods: Iterable[str],
                         if not c.sizes.admits(s.n, s.r):
                             raise SizeError(f"claim {c.id} is stated for sizes {_spec_text(c)}; "
                                             f"({s.n},{s.r}) is outside")
-            for s in sizes:
-                if not any(c.sizes.admits(s.n, s.r) for c in claims):
-                    raise SizeError(f"no selected claim is stated for size ({s.n},{s.r})")
+            empty = [s for s in sizes if not any(c.sizes.admits(s.n, s.r) for c in claims)]
+            if empty and len(empty) == len(sizes):
+                shown = ", ".join(f"({s.n},{s.r})" for s in empty)
+                raise SizeError(f"no selected claim is stated for size{'s' if len(empty) > 1 else ''} {shown}")
     runs: list[tuple[Claim, Size | None, str]] = []
     for c in claims:
         for m in methods:
