@@ -517,7 +517,14 @@ def _program(g: Graph, deps: list, fused: bool = False) -> list:
     prog = g.cache.get(name)
     if prog is not None:
         return prog
-    skip = _trace_products(g, deps) if fused else {}
+    skip: dict[int, tuple] = {}
+    kernels: dict[int, Callable] = {}
+    if fused:
+        for i, (s, x, y) in _trace_products(g, deps).items():
+            skip[i], kernels[i] = (s, x, y), _trace_product_kernel(s, x, y)
+        for i, (s, x, terms) in _paired_products(g, deps).items():
+            skip[i] = (s, x) + tuple(j for _, a, b in terms for j in (a, b))
+            kernels[i] = _paired_product_kernel(s, x, terms)
     need = set()
     stack = [g.output.i]
     while stack:
@@ -529,9 +536,17 @@ def _program(g: Graph, deps: list, fused: bool = False) -> list:
             stack.extend(skip[i])
         elif g.ops[i] != "fn":
             stack.extend(g.refs(i))
-    prog = g.cache[name] = [(i, _trace_product_kernel(*skip[i]) if i in skip else _kernel(g.ops[i], g.args[i]))
-                            for i in sorted(need)]
+    prog = g.cache[name] = [(i, kernels[i] if i in skip else _kernel(g.ops[i], g.args[i])) for i in sorted(need)]
     return prog
+
+
+def _readers(g: Graph) -> dict[int, int]:
+    """How many times each node is read by the graph's nodes."""
+    readers: dict[int, int] = {}
+    for k in range(len(g.ops)):
+        for j in g.refs(k):
+            readers[j] = readers.get(j, 0) + 1
+    return readers
 
 
 def _trace_products(g: Graph, deps: list) -> dict[int, tuple[int, int, int]]:
@@ -539,10 +554,7 @@ def _trace_products(g: Graph, deps: list) -> dict[int, tuple[int, int, int]]:
     (not the output, not by a traced function's body, not twice): the trace needs the product's
     diagonal only."""
     ops, args = g.ops, g.args
-    readers: dict[int, int] = {}
-    for k in range(len(ops)):
-        for j in g.refs(k):
-            readers[j] = readers.get(j, 0) + 1
+    readers = _readers(g)
     out = {}
     top = g.output.i if g.output is not None else -1
     for i, op in enumerate(ops):
@@ -563,6 +575,86 @@ def _trace_products(g: Graph, deps: list) -> dict[int, tuple[int, int, int]]:
 def _trace_product_kernel(s: int, x: int, y: int) -> Callable:
     """The kernel of a trace of a product of the nodes x, y (see :func:`_trace_products`)."""
     return lambda m, ev: m[s].tr_product(m[x], m[y])
+
+
+def _paired_products(g: Graph, deps: list) -> dict[int, tuple[int, int, tuple[tuple[int, int, int], ...]]]:
+    """{i: (scene, x, ((sign, a, b), ...))} for every top-level node i = <x, y> (the scene's ``killing``,
+    -1/2 tr(x y), symmetric in its arguments) where y is a product a @ b, or a sum or difference of two
+    products (a commutator), that i alone reads, as do its products: then <x, a b> = <x a, b>, and the
+    product x a is computed instead of a b; for a commutator, <x, [a, b]> = <[x, a], b>.  A Lie-Poisson
+    bracket -<ξ, [∇f, ∇g]> of many pairs of functions so computes [ξ, ∇f] once per function (once per
+    evaluation: kept with the node values) and one pairing, of n² products, per pair, instead of two
+    n x n products per pair."""
+    ops, args = g.ops, g.args
+    readers = _readers(g)
+    top = g.output.i if g.output is not None else -1
+
+    def alone(j: int) -> bool:
+        return not deps[j] and j != top and readers.get(j) == 1
+
+    def product(j: int) -> tuple[int, int] | None:
+        if ops[j] != "matmul" or not alone(j):
+            return None
+        a, b = args[j]
+        return (a.i, b.i) if type(a) is Ref and type(b) is Ref else None
+
+    def terms(y: int) -> tuple[tuple[int, int, int], ...] | None:
+        if not alone(y):
+            return None
+        p = product(y)
+        if p is not None:
+            return ((1, *p),)
+        if ops[y] in ("add", "sub") and all(type(v) is Ref for v in args[y]):
+            p, q = (product(v.i) for v in args[y])
+            if p is not None and q is not None:
+                return ((1, *p), (1 if ops[y] == "add" else -1, *q))
+        return None
+
+    out = {}
+    for i, op in enumerate(ops):
+        if op != "call" or deps[i]:
+            continue
+        a = args[i]
+        if a[1] != "killing" or a[3] or len(a[2]) != 2 or type(a[0]) is not Ref:
+            continue
+        u, v = a[2]
+        if type(u) is not Ref or type(v) is not Ref or u.i == v.i:
+            continue
+        for x, y in ((u.i, v.i), (v.i, u.i)):
+            t = terms(y)
+            if t is not None:
+                out[i] = (a[0].i, x, t)
+                break
+    return out
+
+
+def _paired_product_kernel(s: int, x: int, terms: tuple[tuple[int, int, int], ...]) -> Callable:
+    """The kernel of a pairing of x with products (see :func:`_paired_products`)."""
+    if len(terms) == 2 and terms[0][0] == 1 and terms[1] == (-1, terms[0][2], terms[0][1]):
+        a, b = terms[0][1:]
+
+        def bracket(m: dict, ev: "Evaluator") -> Any:
+            # <x, [a, b]> = <[x, a], b>: one pairing, with [x, a] computed once per evaluation
+            key = ("[]", x, a)
+            xa = m.get(key)
+            if xa is None:
+                X, A = m[x], m[a]
+                xa = m[key] = X @ A - A @ X
+            return m[s].killing(xa, m[b])
+        return bracket
+
+    def run(m: dict, ev: "Evaluator") -> Any:
+        scene, X = m[s], m[x]
+        acc = None
+        for sign, a, b in terms:
+            key = ("@", x, a)       # x a, computed once per evaluation (kept with the node values)
+            xa = m.get(key)
+            if xa is None:
+                xa = m[key] = X @ m[a]
+            v = scene.killing(xa, m[b])
+            acc = (v if sign > 0 else -v) if acc is None else (acc + v if sign > 0 else acc - v)
+        return acc
+    return run
 
 
 def _fuses(scene: Any) -> bool:
