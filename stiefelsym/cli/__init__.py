@@ -659,7 +659,8 @@ class _Stdout:
 @click.option("--size", "sizes", type=SizeType(), multiple=True, metavar="n,r",
               help="Problem size, repeatable (default: each claim's own sizes).  A size outside "
                    "the sizes a named claim is stated for is refused; without named claims, the "
-                   "claims that are not stated for it skip it.")
+                   "claims that are not stated for it skip it (with a note), and a run none of whose "
+                   "sizes has a claim is refused.")
 @click.option("--max-n", "max_n", type=click.IntRange(min=1), default=None, metavar="N",
               help="Every size n,r with n <= N that each claim is stated for (instead of each "
                    "claim's own default sizes); a catalog run with --max-n is still a full run.")

@@ -1286,8 +1286,8 @@ class Trace:
             # may vanish at some point of T*V or some element, and "at every point" would not follow
             why = self._divisor(out, stop)
             if why:
-                return self.refuse(f"{name}: {what} divides by {why}, which may vanish at some point of T*V "
-                                   "or some element (op(inv(y)) = y" + ("" if right else " and inv(op(x)) = x")
+                return self.refuse(f"{name}: {what} divides by {why}, which may vanish at some point of T*V, "
+                                   "some element or some A (op(inv(y)) = y" + ("" if right else " and inv(op(x)) = x")
                                    + " would prove op " + ("onto" if right else "invertible")
                                    + " only where it does not): only constant divisors")
         # op (and inv) are one map each: the code called twice must trace to the same graph of its
@@ -1371,7 +1371,8 @@ class Trace:
 
     def _divisor(self, outs: tuple, args: tuple) -> str:
         """What a node of ``outs`` (down to the nodes ``args``) divides by when it is not a constant: a
-        division by a number, a matrix inverse, a negative power or a resolvent ("" when there is none)."""
+        division by a number, a matrix inverse, a negative power, a resolvent or A⁻¹ outside the metric
+        realization ("" when there is none)."""
         g = self.g
         for i in self._below(outs, args):
             op, a = g.ops[i], g.args[i]
@@ -1383,6 +1384,9 @@ class Trace:
                 return "a number that is not a constant (a negative power)"
             if op == "call" and a[1] == "resolvent":
                 return "a resolvent (μI − A)"
+            if op == "attr" and a[1] == "Ainv" and self.constraints[0] != "metric":
+                # (the metric realization's A is positive definite: there A⁻¹ is a constant of the system)
+                return "A⁻¹ (its determinant det A is zero for a singular A)"
             if op == "prim" and type(a[0]) is Named and a[0].qualname in self._SOLVING_STEPS:
                 return (f"the determinant of a linear system of the claim's own ({a[0].qualname.rsplit('.', 1)[-1]}: "
                         "its matrix, from the claim's constraints or kinetic form, may be singular)")
