@@ -84,12 +84,12 @@ def test_unnamed_claims_skip_the_sizes_they_are_not_stated_for(run):
 
 
 def test_a_size_no_claim_is_stated_for_is_skipped_when_another_size_has_claims(run):
-    result = run("verify", "--claims", "mine.py", "--method", "modular", "--size", "2,1", "--size", "5,1",
-                 "--format", "json")
+    result = run("verify", "--claims", "mine.py", "--method", "modular", "--size", "5,1", "--size", "2,1",
+                 "--size", "5,1", "--format", "json")
     assert result.exit_code == 0, result.output
     got = {(r["claim"], r["n"], r["r"]) for r in json.loads(result.stdout)["results"]}
     assert got == {("big", 2, 1), ("small", 2, 1), ("thin", 2, 1)}
-    assert "note: (5,1): no selected claim is stated at this size; it is skipped" in result.stderr
+    assert result.stderr.count("note: (5,1): no selected claim is stated at this size; it is skipped") == 1
 
 
 def test_a_named_claim_at_its_own_sizes_runs(run):

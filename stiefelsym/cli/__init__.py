@@ -764,7 +764,7 @@ def _skipped_notes(claims: list[Claim], sizes: tuple[Size, ...]) -> list[str]:
     notes: list[str] = []
     if all(not any(c.sizes.admits(s.n, s.r) for c in claims) for s in sizes):
         return notes     # the plan refuses the run
-    for s in sizes:
+    for s in dict.fromkeys(sizes):      # (a size given twice is noted once, as it is run once)
         skip = [c.id for c in claims if not c.sizes.admits(s.n, s.r)]
         if len(skip) == len(claims):
             notes.append(f"note: ({s.n},{s.r}): no selected claim is stated at this size; it is skipped "

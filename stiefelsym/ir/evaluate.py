@@ -628,6 +628,34 @@ def _paired_products(g: Graph, deps: list) -> dict[int, tuple[int, int, tuple[tu
     return out
 
 
+def _once(m: dict, key: tuple, compute: Callable[[], Any], scene: Any) -> Any:
+    """A value computed once per evaluation for the kernels of several nodes (kept with the node values
+    under ``key``), with the looks at coordinates its computation recorded: a node that takes it again
+    records them again, so that each node's record is the one its own computation gives (a node's value
+    and record are shared with other graphs in the mutation analysis, :meth:`Evaluator.run`)."""
+    tracker = getattr(scene, "_tracker", None)
+    if type(tracker) is not CoordinateTracker:
+        tracker = None
+    hit = m.get(key)
+    if hit is not None:
+        v, log = hit
+        if log and tracker is not None:
+            tracker.replay(log)
+        return v
+    if tracker is None:
+        v, log = compute(), ()
+    else:
+        outer, tracker._log = tracker._log, []
+        try:
+            v = compute()
+        finally:
+            log, tracker._log = tuple(tracker._log), outer
+            if outer is not None:
+                outer.extend(log)
+    m[key] = (v, log)
+    return v
+
+
 def _paired_product_kernel(s: int, x: int, terms: tuple[tuple[int, int, int], ...]) -> Callable:
     """The kernel of a pairing of x with products (see :func:`_paired_products`)."""
     if len(terms) == 2 and terms[0][0] == 1 and terms[1] == (-1, terms[0][2], terms[0][1]):
@@ -635,22 +663,16 @@ def _paired_product_kernel(s: int, x: int, terms: tuple[tuple[int, int, int], ..
 
         def bracket(m: dict, ev: "Evaluator") -> Any:
             # <x, [a, b]> = <[x, a], b>: one pairing, with [x, a] computed once per evaluation
-            key = ("[]", x, a)
-            xa = m.get(key)
-            if xa is None:
-                X, A = m[x], m[a]
-                xa = m[key] = X @ A - A @ X
-            return m[s].killing(xa, m[b])
+            scene = m[s]
+            xa = _once(m, ("[]", x, a), lambda: m[x] @ m[a] - m[a] @ m[x], scene)
+            return scene.killing(xa, m[b])
         return bracket
 
     def run(m: dict, ev: "Evaluator") -> Any:
         scene, X = m[s], m[x]
         acc = None
         for sign, a, b in terms:
-            key = ("@", x, a)       # x a, computed once per evaluation (kept with the node values)
-            xa = m.get(key)
-            if xa is None:
-                xa = m[key] = X @ m[a]
+            xa = _once(m, ("@", x, a), lambda: X @ m[a], scene)
             v = scene.killing(xa, m[b])
             acc = (v if sign > 0 else -v) if acc is None else (acc + v if sign > 0 else acc - v)
         return acc
