@@ -71,13 +71,38 @@ def shared_product(s):
     return {"pairings": s.killing(M, P) + s.killing(s.A, P) + s.killing(s.A, comm(F, M))}
 
 
+def sum_of_commutators(s):
+    """<M, [F, G] + [Φ, A] − [G, Φ] + Φ F> (three commutators and a product, one of them negated; fused) against
+    −1/2 the traces of the same products associated otherwise, (M F) G, ... (other nodes: not fused)."""
+    F, G, M = _gradients(s)
+    whole = (s.tr((M @ F) @ G) - s.tr((M @ G) @ F) + s.tr((M @ s.Phi) @ s.A) - s.tr((M @ s.A) @ s.Phi)
+             - s.tr((M @ G) @ s.Phi) + s.tr((M @ s.Phi) @ G) + s.tr((M @ s.Phi) @ F))
+    return {"<M, sum> + 1/2 tr(M sum)": s.killing(M, comm(F, G) + comm(s.Phi, s.A) - comm(G, s.Phi) + s.Phi @ F)
+            + whole / 2}
+
+
+def sum_of_commutators_one_sign_lost(s):
+    """False: <M, [F, G] + [Φ, A]> = <M, [F, G] − [Φ, A]>."""
+    F, G, M = _gradients(s)
+    return {"<M, [F, G] + [Phi, A]> - <M, [F, G] - [Phi, A]>":
+            s.killing(M, comm(F, G) + comm(s.Phi, s.A)) - s.killing(M, comm(F, G) - comm(s.Phi, s.A))}
+
+
+def negated_commutator_as_product(s):
+    """False: <M, −[F, G]> = <M, −Φ F> (a negated commutator against a negated product)."""
+    F, G, M = _gradients(s)
+    return {"<M, -[F, G]> - <M, -Phi F>": s.killing(M, -comm(F, G)) - s.killing(M, -(s.Phi @ F))}
+
+
 @pytest.mark.parametrize("n,r", [(3, 1), (3, 2), (4, 2)])
 def test_a_fused_pairing_equals_the_pairing_computed_whole(n, r):
     assert run_exact(_claim(bracket_vs_entries), n, r, 0).verdict == "proved"
     assert run_exact(_claim(ad_invariance), n, r, 0).verdict == "proved"
+    assert run_exact(_claim(sum_of_commutators), n, r, 0).verdict == "proved"
 
 
-@pytest.mark.parametrize("func", [bracket_sign_flipped, product_order_swapped, product_plus_as_commutator])
+@pytest.mark.parametrize("func", [bracket_sign_flipped, product_order_swapped, product_plus_as_commutator,
+                                  sum_of_commutators_one_sign_lost, negated_commutator_as_product])
 def test_a_corrupted_pairing_is_refuted_by_every_method(func):
     c = _claim(func, "paired-product-false")
     assert run_exact(c, 3, 2, 0).verdict == "fails"
@@ -91,6 +116,6 @@ def test_only_a_product_read_by_the_pairing_alone_is_reassociated():
     from stiefelsym.scene import REALIZATIONS
     cons = REALIZATIONS["standard"]
     for func, fused in ((bracket_vs_entries, 2), (ad_invariance, 2), (product_plus_as_commutator, 2),
-                        (shared_product, 1)):
+                        (shared_product, 1), (sum_of_commutators, 1), (negated_commutator_as_product, 2)):
         g = compile_claim(func, 3, 2, (cons.name, cons.build))
         assert len(_paired_products(g, _deps(g))) == fused, func.__name__

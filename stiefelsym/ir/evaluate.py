@@ -579,9 +579,10 @@ def _trace_product_kernel(s: int, x: int, y: int) -> Callable:
 
 def _paired_products(g: Graph, deps: list) -> dict[int, tuple[int, int, tuple[tuple[int, int, int], ...]]]:
     """{i: (scene, x, ((sign, a, b), ...))} for every top-level node i = <x, y> (the scene's ``killing``,
-    -1/2 tr(x y), symmetric in its arguments) where y is a product a @ b, or a sum or difference of two
-    products (a commutator), that i alone reads, as do its products: then <x, a b> = <x a, b>, and the
-    product x a is computed instead of a b; for a commutator, <x, [a, b]> = <[x, a], b>.  A Lie-Poisson
+    -1/2 tr(x y), symmetric in its arguments) where y is a product a @ b, or a sum of (at most
+    MAX_PAIRED_TERMS) products and their negatives, commutators among them, that i alone reads, as do its
+    sums and products: then <x, a b> = <x a, b>, and the product x a is computed instead of a b; for a
+    commutator, <x, [a, b]> = <[x, a], b>.  A Lie-Poisson
     bracket -<ξ, [∇f, ∇g]> of many pairs of functions so computes [ξ, ∇f] once per function (once per
     evaluation: kept with the node values) and one pairing, of n² products, per pair, instead of two
     n x n products per pair."""
@@ -598,17 +599,24 @@ def _paired_products(g: Graph, deps: list) -> dict[int, tuple[int, int, tuple[tu
         a, b = args[j]
         return (a.i, b.i) if type(a) is Ref and type(b) is Ref else None
 
-    def terms(y: int) -> tuple[tuple[int, int, int], ...] | None:
-        if not alone(y):
-            return None
-        p = product(y)
+    def flat(j: int, sign: int, out: list) -> bool:
+        """The signed products of the sum j (each node of it read by its parent alone), added to out."""
+        if not alone(j) or len(out) >= MAX_PAIRED_TERMS:
+            return False
+        p = product(j)
         if p is not None:
-            return ((1, *p),)
-        if ops[y] in ("add", "sub") and all(type(v) is Ref for v in args[y]):
-            p, q = (product(v.i) for v in args[y])
-            if p is not None and q is not None:
-                return ((1, *p), (1 if ops[y] == "add" else -1, *q))
-        return None
+            out.append((sign, *p))
+            return True
+        if ops[j] in ("add", "sub") and all(type(v) is Ref for v in args[j]):
+            u, v = args[j]
+            return flat(u.i, sign, out) and flat(v.i, sign if ops[j] == "add" else -sign, out)
+        if ops[j] == "neg" and type(args[j][0]) is Ref:
+            return flat(args[j][0].i, -sign, out)
+        return False
+
+    def terms(y: int) -> tuple[tuple[int, int, int], ...] | None:
+        out: list = []
+        return tuple(out) if flat(y, 1, out) else None
 
     out = {}
     for i, op in enumerate(ops):
@@ -656,23 +664,32 @@ def _once(m: dict, key: tuple, compute: Callable[[], Any], scene: Any) -> Any:
     return v
 
 
-def _paired_product_kernel(s: int, x: int, terms: tuple[tuple[int, int, int], ...]) -> Callable:
-    """The kernel of a pairing of x with products (see :func:`_paired_products`)."""
-    if len(terms) == 2 and terms[0][0] == 1 and terms[1] == (-1, terms[0][2], terms[0][1]):
-        a, b = terms[0][1:]
+#: the most signed products of a sum that a pairing is reassociated over (:func:`_paired_products`)
+MAX_PAIRED_TERMS = 16
 
-        def bracket(m: dict, ev: "Evaluator") -> Any:
-            # <x, [a, b]> = <[x, a], b>: one pairing, with [x, a] computed once per evaluation
-            scene = m[s]
-            xa = _once(m, ("[]", x, a), lambda: m[x] @ m[a] - m[a] @ m[x], scene)
-            return scene.killing(xa, m[b])
-        return bracket
+
+def _paired_product_kernel(s: int, x: int, terms: tuple[tuple[int, int, int], ...]) -> Callable:
+    """The kernel of a pairing of x with a sum of signed products (see :func:`_paired_products`): a product
+    a b whose sum also holds −b a is a commutator, paired as <[x, a], b>; any other as <x a, b>.  [x, a] and
+    x a are computed once per evaluation."""
+    parts: list[tuple[str, int, int, int]] = []
+    left = list(terms)
+    while left:
+        sign, a, b = left.pop(0)
+        if (-sign, b, a) in left and a != b:
+            left.remove((-sign, b, a))
+            parts.append(("[]", sign, a, b))
+        else:
+            parts.append(("@", sign, a, b))
 
     def run(m: dict, ev: "Evaluator") -> Any:
-        scene, X = m[s], m[x]
+        scene = m[s]
         acc = None
-        for sign, a, b in terms:
-            xa = _once(m, ("@", x, a), lambda: X @ m[a], scene)
+        for kind, sign, a, b in parts:
+            if kind == "[]":
+                xa = _once(m, ("[]", x, a), lambda: m[x] @ m[a] - m[a] @ m[x], scene)
+            else:
+                xa = _once(m, ("@", x, a), lambda: m[x] @ m[a], scene)
             v = scene.killing(xa, m[b])
             acc = (v if sign > 0 else -v) if acc is None else (acc + v if sign > 0 else acc - v)
         return acc
