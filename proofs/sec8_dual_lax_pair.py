@@ -655,7 +655,7 @@ def J2r_printed(s, mu):
 
 
 @claim("chasles-manakov", paper=("Chasles-Manakov", "man-dual", "MAN-LA2"), kind="geo",
-       sizes=admissible(n_max=5, where=lambda n, r: n >= 2 * r, condition="n >= 2r"), exact_max_n=3, exact_max_r={4: 1},
+       sizes=admissible(n_max=5, where=lambda n, r: n >= 2 * r, condition="n >= 2r"), exact_max_n=3, exact_max_r={4: 1, 5: 1},
        statement=r"a(\lambda)\det\mathcal L^*_{man}(\lambda)=\mathcal J_{2r}(\lambda)=\sum_{I_{2r}}"
                  r"\frac{a(\lambda)|\Phi|^{I_{2r}}_{I_{2r}}}{\prod(\lambda-a_i)},\ \deg\mathcal J_{2r}=n-2r,\ "
                  r"\det(U^T(A-\lambda)^{-1}U)=\det(U^TR_\lambda U)=\det\mathcal L^*_{man},\ "
