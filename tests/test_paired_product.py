@@ -81,6 +81,14 @@ def sum_of_commutators(s):
             + whole / 2}
 
 
+def commutator_negative_first(s):
+    """<M, −F G + G F> (the commutator [G, F] with its negative product first: paired as −<[M, F], G>)
+    against −1/2 the trace of the same products associated otherwise."""
+    F, G, M = _gradients(s)
+    return {"<M, -FG + GF> + 1/2 tr(M (GF - FG))": s.killing(M, -(F @ G) + G @ F)
+            + s.tr((M @ G) @ F - (M @ F) @ G) / 2}
+
+
 def sum_of_commutators_one_sign_lost(s):
     """False: <M, [F, G] + [Φ, A]> = <M, [F, G] − [Φ, A]>."""
     F, G, M = _gradients(s)
@@ -99,6 +107,7 @@ def test_a_fused_pairing_equals_the_pairing_computed_whole(n, r):
     assert run_exact(_claim(bracket_vs_entries), n, r, 0).verdict == "proved"
     assert run_exact(_claim(ad_invariance), n, r, 0).verdict == "proved"
     assert run_exact(_claim(sum_of_commutators), n, r, 0).verdict == "proved"
+    assert run_exact(_claim(commutator_negative_first), n, r, 0).verdict == "proved"
 
 
 @pytest.mark.parametrize("func", [bracket_sign_flipped, product_order_swapped, product_plus_as_commutator,
@@ -116,6 +125,7 @@ def test_only_a_product_read_by_the_pairing_alone_is_reassociated():
     from stiefelsym.scene import REALIZATIONS
     cons = REALIZATIONS["standard"]
     for func, fused in ((bracket_vs_entries, 2), (ad_invariance, 2), (product_plus_as_commutator, 2),
-                        (shared_product, 1), (sum_of_commutators, 1), (negated_commutator_as_product, 2)):
+                        (shared_product, 1), (sum_of_commutators, 1), (negated_commutator_as_product, 2),
+                        (commutator_negative_first, 1)):
         g = compile_claim(func, 3, 2, (cons.name, cons.build))
         assert len(_paired_products(g, _deps(g))) == fused, func.__name__

@@ -922,3 +922,25 @@ def test_flint_running_out_of_memory_in_a_forked_attempt_prints_nothing_raw(tmp_
     assert proc.returncode == 0 and proc.stdout == "" and proc.stderr == "", (proc.stdout, proc.stderr)
     said = (tmp_path / "said.txt").read_text()
     assert said.startswith("the child process died (killed by SIGABRT") and "Unable to allocate memory" in said
+
+
+@needs_fork
+def test_a_forked_attempt_prints_what_it_printed_once_and_the_parent_s_pending_output_once(tmp_path):
+    """Output the parent had not yet written when it forked is written by the parent alone, and what the child
+    printed (Python's buffers, which os._exit does not flush) reaches the parent's standard output, in order."""
+    script = tmp_path / "prints.py"
+    script.write_text(
+        "import sys\n"
+        "from stiefelsym.run.isolate import run_isolated\n"
+        "def child():\n"
+        "    print('B', end='')\n"
+        "    return 1\n"
+        "print('A', end='')\n"
+        "assert run_isolated(child, 60, repr) == 1\n"
+        "print('C')\n")
+    # buffered, as a pipe is by default (before: "AAC", the parent's "A" written twice and the child's "B" lost)
+    env = {k: v for k, v in os.environ.items() if not k.startswith("PYTEST") and k != "PYTHONUNBUFFERED"}
+    proc = subprocess.run([sys.executable, str(script)], cwd=tmp_path, env=env, capture_output=True, text=True,
+                          timeout=120, stdin=subprocess.DEVNULL)
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stdout == "ABC\n", proc.stdout

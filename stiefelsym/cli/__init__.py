@@ -761,12 +761,14 @@ def _dimension_claims_of_point_methods(claims: list[Claim], methods: Sequence[st
 
 def _skipped_notes(claims: list[Claim], sizes: tuple[Size, ...]) -> list[str]:
     """For a --size given without naming claims: at each size, the claims that are not stated there and skip it."""
+    from stiefelsym.run.runner import sizes_without_claims
     notes: list[str] = []
-    if all(not any(c.sizes.admits(s.n, s.r) for c in claims) for s in sizes):
+    empty = sizes_without_claims(claims, sizes)
+    if len(empty) == len(sizes):
         return notes     # the plan refuses the run
     for s in dict.fromkeys(sizes):      # (a size given twice is noted once, as it is run once)
         skip = [c.id for c in claims if not c.sizes.admits(s.n, s.r)]
-        if len(skip) == len(claims):
+        if s in empty:
             notes.append(f"note: ({s.n},{s.r}): no selected claim is stated at this size; it is skipped "
                          f"(`stiefelsym show CLAIM` gives a claim's sizes)")
         elif skip:

@@ -146,16 +146,7 @@ class Evaluator:
             k = keys[i]
             hit = shared.get(k, _MISSING)
             if hit is _MISSING:
-                if tracker is None:
-                    v, log = kernel(memo, self), ()
-                else:
-                    outer, tracker._log = tracker._log, []
-                    try:
-                        v = kernel(memo, self)
-                    finally:
-                        log, tracker._log = tuple(tracker._log), outer
-                        if outer is not None:
-                            outer.extend(log)
+                v, log = _recorded(tracker, lambda: kernel(memo, self))
                 if shareable(v):
                     shared[k] = (v, log)
             else:
@@ -582,10 +573,9 @@ def _paired_products(g: Graph, deps: list) -> dict[int, tuple[int, int, tuple[tu
     -1/2 tr(x y), symmetric in its arguments) where y is a product a @ b, or a sum of (at most
     MAX_PAIRED_TERMS) products and their negatives, commutators among them, that i alone reads, as do its
     sums and products: then <x, a b> = <x a, b>, and the product x a is computed instead of a b; for a
-    commutator, <x, [a, b]> = <[x, a], b>.  A Lie-Poisson
-    bracket -<ξ, [∇f, ∇g]> of many pairs of functions so computes [ξ, ∇f] once per function (once per
-    evaluation: kept with the node values) and one pairing, of n² products, per pair, instead of two
-    n x n products per pair."""
+    commutator, <x, [a, b]> = <[x, a], b>.  A Lie-Poisson bracket -<ξ, [∇f, ∇g]> of many pairs of
+    functions so computes [ξ, ∇f] once per function (once per evaluation: kept with the node values) and
+    one pairing, of n² products, per pair, instead of two n x n products per pair."""
     ops, args = g.ops, g.args
     readers = _readers(g)
     top = g.output.i if g.output is not None else -1
@@ -650,18 +640,23 @@ def _once(m: dict, key: tuple, compute: Callable[[], Any], scene: Any) -> Any:
         if log and tracker is not None:
             tracker.replay(log)
         return v
-    if tracker is None:
-        v, log = compute(), ()
-    else:
-        outer, tracker._log = tracker._log, []
-        try:
-            v = compute()
-        finally:
-            log, tracker._log = tuple(tracker._log), outer
-            if outer is not None:
-                outer.extend(log)
-    m[key] = (v, log)
+    v, log = m[key] = _recorded(tracker, compute)
     return v
+
+
+def _recorded(tracker: CoordinateTracker | None, compute: Callable[[], Any]) -> tuple[Any, tuple]:
+    """compute(), and the looks at coordinates (and refusals) the tracker recorded meanwhile, in order (they
+    are recorded as ever too: a computation inside another's is in both logs)."""
+    if tracker is None:
+        return compute(), ()
+    outer, tracker._log = tracker._log, []
+    try:
+        v = compute()
+    finally:
+        log, tracker._log = tuple(tracker._log), outer
+        if outer is not None:
+            outer.extend(log)
+    return v, log
 
 
 #: the most signed products of a sum that a pairing is reassociated over (:func:`_paired_products`)

@@ -38,12 +38,12 @@ def run_isolated(fn: Callable[[], Any], seconds: float, describe: Callable[[Base
     parent = os.getpid()
     rfd, wfd = os.pipe()
     err, out = _capture(), _capture()
+    _flush()       # nothing of this process's buffers is left for the child to write a second time
     gc.freeze()    # keep the parent's objects out of the child's collections (fewer copied pages)
     pid = os.fork()
     if pid == 0:   # the child: compute, send, exit without running the parent's cleanup
         os.close(rfd)
         try:
-            sys.stdout.flush()
             os.dup2(err, 2)     # its standard error and output, read by the parent (see _said): flint
             os.dup2(out, 1)     # writes why it aborts to the standard output
             os.close(err)
@@ -58,8 +58,9 @@ def run_isolated(fn: Callable[[], Any], seconds: float, describe: Callable[[Base
                 payload = pickle.dumps(("memory", describe(exc)))
             except BaseException as exc:  # noqa: BLE001 - everything goes back to the parent
                 payload = pickle.dumps(("error", describe(exc)))
-            with os.fdopen(wfd, "wb") as out:
-                out.write(payload)
+            _flush()            # what it printed, into the files the parent reads (os._exit flushes nothing)
+            with os.fdopen(wfd, "wb") as pipe:
+                pipe.write(payload)
         finally:
             os._exit(0)
     os.close(wfd)
@@ -82,6 +83,15 @@ def run_isolated(fn: Callable[[], Any], seconds: float, describe: Callable[[Base
     if kind == "error":
         raise ChildError(value)
     return value
+
+
+def _flush() -> None:
+    """Write out what Python holds in the buffers of the standard output and error."""
+    for stream in (sys.stdout, sys.stderr):
+        try:
+            stream.flush()
+        except (AttributeError, OSError, ValueError):
+            pass
 
 
 #: the longest line of a dead child's standard error quoted in its ChildDied message

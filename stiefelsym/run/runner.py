@@ -63,6 +63,11 @@ def engine_methods(methods: Sequence[str], max_n: int | None) -> tuple[str, ...]
     return tuple(out)
 
 
+def sizes_without_claims(claims: list[Claim], sizes: Iterable[Size]) -> list[Size]:
+    """The sizes that none of the claims is stated at (a run skips them; with no other size it is refused)."""
+    return [s for s in sizes if not any(c.sizes.admits(s.n, s.r) for c in claims)]
+
+
 def plan(claims: list[Claim], sizes: list[Size] | None, methods: Iterable[str],
          strict: bool = False) -> list[tuple[Claim, Size | None, str]]:
     """Every (claim, size, method) to run; size None is a dimension-free run.
@@ -87,7 +92,7 @@ def plan(claims: list[Claim], sizes: list[Size] | None, methods: Iterable[str],
                         if not c.sizes.admits(s.n, s.r):
                             raise SizeError(f"claim {c.id} is stated for sizes {_spec_text(c)}; "
                                             f"({s.n},{s.r}) is outside")
-            empty = [s for s in sizes if not any(c.sizes.admits(s.n, s.r) for c in claims)]
+            empty = sizes_without_claims(claims, sizes)
             if empty and len(empty) == len(sizes):
                 shown = ", ".join(f"({s.n},{s.r})" for s in empty)
                 raise SizeError(f"no selected claim is stated for size{'s' if len(empty) > 1 else ''} {shown}")
