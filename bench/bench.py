@@ -41,6 +41,10 @@ from stiefelsym.claims import Claim, Size  # noqa: E402
 from stiefelsym.run.runner import run_one  # noqa: E402
 
 GIB = 1 << 30
+#: the targets that run the whole catalog (minutes each; skipped by --quick, run by --only when named)
+CATALOG_TARGETS = ("make verify, n <= 6, 2 jobs (wall)", "make verify peak memory (max RSS)",
+                   "verify, n <= 7, 2 jobs (wall)", "n <= 7: records proved exactly, of proved or checked",
+                   "mutation analysis of the catalog, 2 jobs (wall)")
 #: the §3 claims that are flows (derived Dirac flow against the printed one) or their multipliers
 SEC3_FLOWS = ("euclidean-flow", "euclidean-multipliers", "submersion-flow", "normal-flow", "metric-flow")
 STIEFELSYM = str(Path(sys.executable).with_name("stiefelsym"))
@@ -291,6 +295,8 @@ def _fmt(v: float | None, unit: str) -> str:
         return f"{v:,.0f}x" if v >= 100 else f"{v:.1f}x"
     if unit == "GiB":
         return f"{v:.3f} GiB"
+    if unit == "share":
+        return f"{v:.4f}"
     if unit == "ms":
         return f"{v:.3f} ms"
     return f"{v:.3f} s"
@@ -303,10 +309,11 @@ def _line(row: dict[str, Any]) -> str:
             f"{_fmt(row['goal'], row['unit']):>12}  ratio {ratio:>9}  {row['status']:<8} {row['note']}")
 
 
-def make_verify(timeout: float = 1800.0) -> tuple[float, float, str]:
-    """`make verify` restricted to n <= 6: wall seconds and peak RSS (GiB) of the process tree."""
+def _catalog_run(max_n: int, timeout: float) -> tuple[float, float, list[dict[str, Any]], str]:
+    """`stiefelsym verify --max-n max_n` over the catalog with JOBS workers (2 by default), as `make verify`
+    runs it: wall seconds, peak RSS (GiB) of the process tree so far, the records and a summary of them."""
     with tempfile.TemporaryDirectory() as d:
-        cmd = [STIEFELSYM, "verify", "--jobs", os.environ.get("JOBS", "2"), "--max-n", "6", "--report-dir", d,
+        cmd = [STIEFELSYM, "verify", "--jobs", os.environ.get("JOBS", "2"), "--max-n", str(max_n), "--report-dir", d,
                "--format", "json"]
         before = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
         t0 = time.perf_counter()
@@ -330,12 +337,58 @@ def make_verify(timeout: float = 1800.0) -> tuple[float, float, str]:
     note = (f"{len(results)} runs: " + ", ".join(f"{k} {v}" for k, v in sorted(grades.items()))
             + f"; {unexpected} unexpected; exit {out.returncode}")
     peak = max(peak_kib, before) * 1024 / GIB
+    return wall, peak, results, note
+
+
+def make_verify(timeout: float = 1800.0) -> tuple[float, float, str]:
+    """`make verify` restricted to n <= 6: wall seconds and peak RSS (GiB) of the process tree."""
+    wall, peak, _results, note = _catalog_run(6, timeout)
     return wall, peak, note
+
+
+def proved_share(results: list[dict[str, Any]], top: int = 6) -> tuple[float, str]:
+    """Of the records at a size that the exact or a randomized exact method decided true (`proved` or `checked`),
+    the share proved exactly, and the claims with the most records only `checked`."""
+    sized = [r for r in results if r.get("n") is not None]
+    proved = sum(1 for r in sized if r["verdict"] == "proved")
+    checked: dict[str, int] = {}
+    for r in sized:
+        if r["verdict"] == "checked":
+            checked[r["claim"]] = checked.get(r["claim"], 0) + 1
+    total = proved + sum(checked.values())
+    if not total:
+        raise NotYet("no record proved or checked")
+    most = sorted(checked.items(), key=lambda kv: (-kv[1], kv[0]))
+    note = (f"{proved} proved, {sum(checked.values())} checked (randomized exact) of {total}"
+            + ("; checked most: " + ", ".join(f"{c} {k}" for c, k in most[:top]) if most else ""))
+    return proved / total, note
+
+
+def mutation_run(timeout: float) -> tuple[float, str]:
+    """`stiefelsym mutate` over the catalog with JOBS workers, as `make mutate` runs it (its reports to a
+    temporary directory): wall seconds, with its survivors and mutants in the note."""
+    with tempfile.TemporaryDirectory() as d:
+        cmd = [STIEFELSYM, "mutate", "--jobs", os.environ.get("JOBS", "2"), "--report-dir", d]
+        t0 = time.perf_counter()
+        try:
+            out = subprocess.run(cmd, capture_output=True, text=True, cwd=ROOT, timeout=timeout)
+        except subprocess.TimeoutExpired:
+            raise NotYet(f"did not finish within {timeout:.0f} s") from None
+        wall = time.perf_counter() - t0
+        try:
+            totals = json.loads(Path(d, "mutation.json").read_text())["totals"]
+        except (OSError, ValueError, KeyError):
+            raise NotYet(f"no mutation.json (exit {out.returncode})") from None
+    survived = sum(t["survived"] for t in totals)
+    mutants = max(t["total"] for t in totals)
+    equivalent = max(t["equivalent"] for t in totals)
+    return wall, (f"{mutants} mutants, {equivalent} equivalent, {survived} survivors over the methods "
+                  f"{', '.join(t['method'] for t in totals)}; exit {out.returncode}")
 
 
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--quick", action="store_true", help="skip the make verify run (minutes) and its peak memory")
+    ap.add_argument("--quick", action="store_true", help="skip the catalog runs (minutes): make verify (n <= 6) and its peak memory, n <= 7, mutation analysis")
     ap.add_argument("--sizes", nargs="*", default=None, help="sizes n,r of the side-by-side LA1 table (2,1 3,1)")
     ap.add_argument("--no-baseline", action="store_true", help="skip the naive sympy baseline")
     ap.add_argument("--repeat", type=int, default=3, help="timed engine runs after 10 warm ones, at least 20 (the best is kept)")
@@ -353,15 +406,20 @@ def main(argv=None) -> int:
     print(f"{'target':<52} {'measured':>14}  {'goal':>15}  {'ratio':>15}  status   note")
 
     # 1. make verify (n <= 6) and its peak memory: first, so that RUSAGE_CHILDREN is its own
-    if args.only:
+    if args.only and not any(bench.wanted(name) for name in CATALOG_TARGETS):
         pass
-    elif args.quick:
+    elif args.quick and not args.only:
         bench.rows.append({"target": "make verify, n <= 6, 2 jobs (wall)", "measured": None, "goal": 60.0,
                            "unit": "s", "better": "lower", "ratio": None, "status": "skipped",
                            "note": "--quick", "bench_seconds": 0})
         bench.rows.append({"target": "make verify peak memory (max RSS)", "measured": None, "goal": 2.0,
                            "unit": "GiB", "better": "lower", "ratio": None, "status": "skipped",
                            "note": "--quick", "bench_seconds": 0})
+        for name, goal, unit, better in (("verify, n <= 7, 2 jobs (wall)", 180.0, "s", "lower"),
+                                         ("n <= 7: records proved exactly, of proved or checked", 1.0, "share", "higher"),
+                                         ("mutation analysis of the catalog, 2 jobs (wall)", 240.0, "s", "lower")):
+            bench.rows.append({"target": name, "measured": None, "goal": goal, "unit": unit, "better": better,
+                               "ratio": None, "status": "skipped", "note": "--quick", "bench_seconds": 0})
         for row in bench.rows:
             print(_line(row))
     else:
@@ -375,6 +433,21 @@ def main(argv=None) -> int:
         bench.target("make verify peak memory (max RSS)", 2.0, "GiB", "lower",
                      lambda: (holder["peak"], "getrusage(RUSAGE_CHILDREN).ru_maxrss") if "peak" in holder
                      else (_ for _ in ()).throw(NotYet("make verify did not run")))
+
+        # the catalog at n <= 7 (every claim built from matrix products proved exactly there, within 3 minutes),
+        # and the mutation analysis of the catalog (within 4 minutes), both with 2 jobs
+        at7: dict[str, Any] = {}
+
+        def verify7() -> tuple[float, str]:
+            wall, _peak, results, note = _catalog_run(7, args.verify_timeout)
+            at7["results"] = results
+            return wall, note
+        bench.target("verify, n <= 7, 2 jobs (wall)", 180.0, "s", "lower", verify7)
+        bench.target("n <= 7: records proved exactly, of proved or checked", 1.0, "share", "higher",
+                     lambda: proved_share(at7["results"]) if "results" in at7
+                     else (_ for _ in ()).throw(NotYet("the n <= 7 run did not finish")))
+        bench.target("mutation analysis of the catalog, 2 jobs (wall)", 240.0, "s", "lower",
+                     lambda: mutation_run(args.verify_timeout))
 
     # 2. LA1 exact at (3,1) against the naive sympy baseline (CPU time)
     base: dict[tuple[int, int], float] = {}
