@@ -309,6 +309,16 @@ def _line(row: dict[str, Any]) -> str:
             f"{_fmt(row['goal'], row['unit']):>12}  ratio {ratio:>9}  {row['status']:<8} {row['note']}")
 
 
+def _timed_command(cmd: list[str], timeout: float) -> tuple[float, subprocess.CompletedProcess]:
+    """Wall seconds and the completed process of one command run from the repository's root."""
+    t0 = time.perf_counter()
+    try:
+        out = subprocess.run(cmd, capture_output=True, text=True, cwd=ROOT, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        raise NotYet(f"did not finish within {timeout:.0f} s") from None
+    return time.perf_counter() - t0, out
+
+
 def _catalog_run(max_n: int, timeout: float) -> tuple[float, float, list[dict[str, Any]], str]:
     """`stiefelsym verify --max-n max_n` over the catalog with JOBS workers (2 by default), as `make verify`
     runs it: wall seconds, peak RSS (GiB) of the process tree so far, the records and a summary of them."""
@@ -316,12 +326,7 @@ def _catalog_run(max_n: int, timeout: float) -> tuple[float, float, list[dict[st
         cmd = [STIEFELSYM, "verify", "--jobs", os.environ.get("JOBS", "2"), "--max-n", str(max_n), "--report-dir", d,
                "--format", "json"]
         before = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
-        t0 = time.perf_counter()
-        try:
-            out = subprocess.run(cmd, capture_output=True, text=True, cwd=ROOT, timeout=timeout)
-        except subprocess.TimeoutExpired:
-            raise NotYet(f"did not finish within {timeout:.0f} s") from None
-        wall = time.perf_counter() - t0
+        wall, out = _timed_command(cmd, timeout)
         peak_kib = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
         if out.returncode == 2:
             raise NotYet(f"refused: {out.stderr.strip().splitlines()[-1] if out.stderr.strip() else '?'}")
@@ -369,12 +374,7 @@ def mutation_run(timeout: float) -> tuple[float, str]:
     temporary directory): wall seconds, with its survivors and mutants in the note."""
     with tempfile.TemporaryDirectory() as d:
         cmd = [STIEFELSYM, "mutate", "--jobs", os.environ.get("JOBS", "2"), "--report-dir", d]
-        t0 = time.perf_counter()
-        try:
-            out = subprocess.run(cmd, capture_output=True, text=True, cwd=ROOT, timeout=timeout)
-        except subprocess.TimeoutExpired:
-            raise NotYet(f"did not finish within {timeout:.0f} s") from None
-        wall = time.perf_counter() - t0
+        wall, out = _timed_command(cmd, timeout)
         try:
             totals = json.loads(Path(d, "mutation.json").read_text())["totals"]
         except (OSError, ValueError, KeyError):
