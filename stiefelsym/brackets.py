@@ -464,10 +464,13 @@ _affine_form_gradient = form_gradient
 form_gradient = primitive(form_gradient, like={"form": "point"}, returns=("like", "point"))
 
 
-#: the fields whose test of zero decides the degree in x that :func:`polynomial_gradient` derives (exact,
-#: or an error bound); on the others (the degree markers of the structural pass) it interpolates at the
-#: highest degree it takes, which bounds every lower one
-_DEGREE_DECIDED = _AFFINE_CHECKED + ("midrad",)
+#: the fields whose test of zero decides the degree in x that :func:`polynomial_gradient` derives (exact); on
+#: the others it interpolates at the highest degree it takes, which is exact for every lower one: a float's or a
+#: ball's test of zero only says that 0 lies within the error bound, and a term of higher degree hidden there
+#: (K tr(yᵀy) + y₁₁³ with K = 2⁵²) would be taken for absent.  Floats and balls still refuse a form whose
+#: difference of order MAX_FORM_DEGREE + 1 is clearly not zero (the exact fields refuse every form beyond it)
+_DEGREE_DECIDED = ("symbolic", "rational", "modular")
+_DEGREE_BOUNDED = _AFFINE_CHECKED + ("midrad",)
 #: the highest degree in x of a form :func:`polynomial_gradient` takes (one evaluation per degree and basis vector)
 MAX_FORM_DEGREE = 6
 
@@ -507,7 +510,8 @@ def _form_degree(s: Any, form: Callable[[Any, Mat], Scalar], space: Space, point
     """The degree in y of the polynomial form (see :func:`polynomial_gradient`): the least d whose
     (d+1)-th finite difference along a generic element of the space vanishes at ``point``."""
     from math import comb
-    if not _field_in(s, _DEGREE_DECIDED):
+    decided = _field_in(s, _DEGREE_DECIDED)
+    if not decided and not _field_in(s, _DEGREE_BOUNDED):
         return MAX_FORM_DEGREE          # markers: the highest degree's interpolation bounds the others'
     field = s._field
     w = _engine_element(s, space, "polynomial_gradient")
@@ -515,6 +519,8 @@ def _form_degree(s: Any, form: Callable[[Any, Mat], Scalar], space: Space, point
     for d in range(MAX_FORM_DEGREE + 1):
         values.append(form(s, point + w * (d + 1)))
         k = d + 1                       # the k-th difference of the values at t = 0, ..., k
+        if not decided and d < MAX_FORM_DEGREE:
+            continue                    # floats, balls: only the last difference is tested (see _DEGREE_DECIDED)
         diff = None
         for j in range(k + 1):
             term = values[j] * ((-1) ** (k - j) * comb(k, j))

@@ -275,6 +275,10 @@ class Scene(PaperObjects):
     #: (dot_XP) where XᵀX = I holds exactly at the point): a scene whose point need not be on T*V (the
     #: exact method's unconstrained chart) and its probe compute the solved systems instead
     ON_V_SHORTCUTS = True
+    #: the scene's point is one a claim gave (:func:`stiefelsym.twisted.at_point`), not the chart's: nothing
+    #: puts it on V, so floats and balls, whose test of zero only bounds, take no closed form that needs
+    #: XᵀX = I_r there (the exact fields test it exactly)
+    _point_given = False
 
     def __init__(self, n: int, r: int, field: Field, *, chart: str = "cayley",
                  rng: random.Random | None = None, component: int = 0,
@@ -1429,8 +1433,9 @@ class Scene(PaperObjects):
         # floating point: every value approximates, within its error bound, the exact evaluation at
         # the chart's point, which is on V exactly (a Cayley transform of a skew matrix of exact
         # inputs, or [I; 0]); the closed form is exact there, so the bounds carry over.  Degree
-        # markers follow the structure of the computation the exact fields make.
-        approx = isinstance(self._field, (FloatField, DegreeField)) or getattr(self._field, "encloses_exact_point", False)
+        # markers follow the structure of the computation the exact fields make.  Not at a point a
+        # claim gave (_point_given): floats and balls solve the system there, as the exact fields do off V
+        approx = self._approximates_point()
         if not self._closed_form_applies(approx):
             return None
         X, P, sym = self.X, self.P, self._sym
@@ -1709,7 +1714,10 @@ class Scene(PaperObjects):
 
     def _approximates_point(self) -> bool:
         """Floats, balls or degree markers: values that stand for the exact evaluation at the chart's
-        point, which is on V by construction (see :meth:`_closed_form_multipliers`)."""
+        point, which is on V by construction (see :meth:`_closed_form_multipliers`).  False at a point a
+        claim gave (:attr:`_point_given`): what stands there for the exact evaluation is the solved system."""
+        if self._point_given:
+            return False
         return isinstance(self._field, (FloatField, DegreeField)) or getattr(self._field, "encloses_exact_point", False)
 
     def _graph_flows(self) -> frozenset:
@@ -1741,6 +1749,8 @@ class Scene(PaperObjects):
         multiplier flow with Λ, Π.  The closed forms hold where XᵀX = I_r: checked exactly over an
         exact field (a chart's point is on V by construction; elsewhere the scene's own flow)."""
         if kind != "canonical_flow":
+            if self._point_given and not self._field.exact:
+                return getattr(self, kind)(H)       # a given point: no approximate test of XᵀX = I_r decides
             on_V = lambda: self.ON_V_SHORTCUTS and (self.X.T @ self.X - self.Ir).is_zero()      # noqa: E731
             if not self._approximates_point() and not self._cached("on V", on_V):
                 return getattr(self, kind)(H)

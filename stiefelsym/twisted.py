@@ -466,6 +466,7 @@ def at_point(s, X: Mat, P: Mat) -> Scene:
             raise TypeError(f"{name} must be an n x r matrix of the scene")
     other = copy.copy(s)            # the same problem: field, chart, parameters, record, options
     other._cache = {}
+    other._point_given = True       # on V only if the claim made it so: no closed form is taken on trust
     other._cache["point"] = (Mat._wrap(X._a.copy(), s.field, ("n", "r"), s.tracker, X._coords),
                              Mat._wrap(P._a.copy(), s.field, ("n", "r"), s.tracker, P._coords))
     return other

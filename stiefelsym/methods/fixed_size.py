@@ -3096,7 +3096,7 @@ def _run_ball(claim: Claim, n: int, r: int, seed: int, func: Callable, options: 
             res.certificate = (f"{BALL_CERTIFICATE}; {run.field}{where(c)}: {run.entry[0]} lies in "
                                f"{run.entry[1]}, which excludes 0: the residual is not identically zero "
                                f"(certified at this point)")
-            return done("proved")
+            return done(_exact_agrees(res, claim, n, r, seed, func, options, "proved", log))
         ex = run_points(claim, n, r, "rational", seed, func, options=options)
         if ex.verdict in ("proved", "fails"):
             res.witness, res.false_pass_bound = ex.witness, ex.false_pass_bound
@@ -3112,7 +3112,7 @@ def _run_ball(claim: Claim, n: int, r: int, seed: int, func: Callable, options: 
         res.certificate = (f"{BALL_CERTIFICATE}; {run.field}{where(c)}: the enclosure {run.entry[1]} of "
                            f"{run.entry[0]} excludes 0, so the exact residual is nonzero at this point "
                            f"(a certified witness)")
-        return done("fails")
+        return done(_exact_agrees(res, claim, n, r, seed, func, options, "fails", log))
     if any(run.status != "pass" for run in runs):
         res.message = "precision ladder (float64 midpoint-radius, then arb at 53, 106, 212, 424 bits) exhausted without resolving enclosures: " + log
         return done("inconclusive")
@@ -3126,6 +3126,27 @@ def _run_ball(claim: Claim, n: int, r: int, seed: int, func: Callable, options: 
                        f"rational, modular); balls cannot. The residuals are enclosed: {res.certificate} | {log}")
         return done("undecided")
     return done("numeric")
+
+
+def _exact_agrees(res: Result, claim: Claim, n: int, r: int, seed: int, func: Callable, options: dict | None,
+                  verdict: str, log: str) -> str:
+    """``verdict`` (fails, or proved for a claim said not to vanish) of certified enclosures, kept when an exact
+    rational point agrees (a nonzero residual there).  An enclosure bounds the value the balls computed, and a step
+    of the engine may compute it otherwise on an approximating field (a closed form, a degree decided within an
+    error bound): the exact evaluation is the statement's.  An exact run that refuses the claim makes the verdict
+    ``error``; one that finds the residual zero leaves it ``inconclusive``."""
+    ex = run_points(claim, n, r, "rational", seed, func, trials=1, options=options)
+    if ex.verdict == verdict:
+        res.certificate += "; confirmed by an exact rational point: " + (ex.certificate or "its residual is not 0")
+        return verdict
+    if ex.verdict == "error":
+        res.message = f"the exact evaluation refuses the claim: {ex.message} | {log}"
+        res.witness = res.residual = None
+        return "error"
+    res.message = (f"an enclosure excludes 0 ({res.residual}), but an exact rational point does not confirm it "
+                   f"({ex.verdict}: {ex.message or ex.certificate}): no verdict from the balls | {log}")
+    res.witness = res.residual = res.certificate = None
+    return "inconclusive"
 
 
 #: in a worker, a symbolic attempt runs in its own forked child when the cost model predicts at least
