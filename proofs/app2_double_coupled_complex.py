@@ -1,7 +1,7 @@
 """Appendix 2. Double, coupled and complex Neumann systems: the Lagrangian systems, their flows, conserved quantities and Lax pairs."""
 from __future__ import annotations
 
-from stiefelsym import admissible, block, claim, comm, twisted  # noqa: F401
+from stiefelsym import Count, admissible, block, claim, comm, twisted  # noqa: F401
 from stiefelsym.systems import (complex_coordinates, complex_point, coupled_point, ctranspose,
                                 derivative, double_point, euler_lagrange, hermitian_entries,
                                 re_trace, real_complex_point, real_coordinates, realify_real, stiefel_pairs_flow)
@@ -174,6 +174,27 @@ def double_neumann_momentum(s):
         "L along the GL(r)-action": derivative(s, L, z, action),
         "X^T Y along the GL(r)-action": derivative(s, lambda t, w: w["X"].T @ w["Y"], z, action),
     }
+
+
+@claim("double-neumann-symmetry-group", paper=("dual-D", "D-eq"), kind="dim", exact_max_n=7,
+       sizes=admissible(n_max=5), fails_at=lambda n, r: r != n,
+       erratum="""After Theorem dual-D the matrix integral X^T Y' - Y^T X' is said to come from the GL(n, R)-symmetry
+       (X, Y, X', Y') -> (X R^T, Y R^{-1}, X' R^T, Y' R^{-1}), R in GL(n, R); R multiplies the n x r matrices X, Y on the
+       right, so it is r x r, and the integral is r x r too.  Corrected: R in GL(r, R) (claim
+       double-neumann-momentum proves the integral conserved and the action a symmetry).""",
+       statement=r"(X,Y,\dot X,\dot Y)\mapsto(XR^T,YR^{-1},\dot XR^T,\dot YR^{-1}),\ R\in GL(n,\mathbb R):\ "
+                 r"\text{size of }R=\text{number of columns of }X")
+def double_neumann_symmetry_group(s):
+    """The symmetry group printed after Theorem dual-D, GL(n, ℝ), acts on X by X ↦ XRᵀ: R has as many rows as X has
+    columns."""
+    X = double_point(s)["X"]
+    return {"columns of X = size of R": Count(X.shape[1], s.n, "the columns of X; printed: the size n of R in GL(n)")}
+
+
+@double_neumann_symmetry_group.claim.correction("GL(r, R) in place of GL(n, R)")
+def double_neumann_symmetry_group_corrected(s):
+    X = double_point(s)["X"]
+    return {"columns of X = size of R": Count(X.shape[1], s.r, "the columns of X; corrected: the size r of R in GL(r)")}
 
 
 def flow_NE(s):
@@ -587,6 +608,28 @@ def complex_neumann_dual_lax(s):
     exact_corank={3: 0, 4: 0, 5: 0, 6: 0, 7: 0})
 def complex_neumann_dual_lax_corrected(s):
     return {"LA3*": complex_lax_residual(s, lambda t: t.resolvent(t.lam))}
+
+
+@claim("complex-neumann-momentum-algebra", paper=("u(1)", "W-eq"), kind="dim", exact_max_n=7,
+       sizes=admissible(n_max=5), fails_at=lambda n, r: r != n,
+       erratum="""After Theorem dual-complex the symmetries are said to give the conservation of the u(n) and u(1)^n
+       momentum maps, psi_0 = Z^T conj(Z') - Z'^T conj(Z) the first; psi_0 is r x r, the momentum of the right
+       U(r)-action that the same paragraph names.  Corrected: the u(r) momentum map psi_0 (claim complex-neumann-momenta
+       proves it conserved).""",
+       statement=r"\psi_0=Z^T\dot{\bar Z}-\dot Z^T\bar Z\in u(n):\ \text{size of }\psi_0=n")
+def complex_neumann_momentum_algebra(s):
+    """The momentum ψ₀ = ZᵀŻ̄ − ŻᵀZ̄ printed after Theorem dual-complex is said to be that of u(n): its size is the
+    number of columns of Z (n × r complex, realified: two real columns per complex one)."""
+    Z = complex_point(s)["Z"]
+    return {"size of psi_0 = n": Count(Z.shape[1], 2 * s.n, "the real columns of Z (two per complex column), twice "
+                                                          "the size of psi_0; printed: twice n, of u(n)")}
+
+
+@complex_neumann_momentum_algebra.claim.correction("u(r) in place of u(n)")
+def complex_neumann_momentum_algebra_corrected(s):
+    Z = complex_point(s)["Z"]
+    return {"size of psi_0 = r": Count(Z.shape[1], 2 * s.r, "the real columns of Z (two per complex column), twice "
+                                                          "the size of psi_0; corrected: twice r, of u(r)")}
 
 
 @claim("complex-neumann-momenta", paper=("W-eq", "u(1)"), kind="pb", exact_max_n=2, exact_max_r={3: 2},

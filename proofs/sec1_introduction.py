@@ -1,0 +1,50 @@
+"""§1 Introduction: the Stiefel varieties of the extreme ranks r = n and r = n − 1."""
+from __future__ import annotations
+
+from stiefelsym import admissible, claim
+
+from .determinants import det
+
+ON_O_N = admissible(n_max=5, r_is_n=True, condition="r = n: V(n, n)")
+ON_V_NN1 = admissible(n_max=5, n_min=2, where=lambda n, r: r == n - 1, condition="r = n - 1")
+
+
+def entries(M, m, k):
+    return [[M[i, j] for j in range(k)] for i in range(m)]
+
+
+@claim("stiefel-top-rank", paper=("cond_X*",), kind="geo", section="1", sizes=ON_O_N, exact_max_n=4,
+       fails_at=lambda n, r: True,
+       erratum="""The introduction says that V_{n,n} is diffeomorphic to SO(n).  By (cond_X*) V_{n,n} = {X : X^T X = I_n}
+       is the whole orthogonal group O(n), which has two components, det X = 1 and det X = -1 (for instance
+       X = diag(-1, 1, ..., 1)): it is not connected, SO(n) is.  Corrected: V_{n,n} = O(n), and V_{n,n-1} is
+       diffeomorphic to SO(n) (claim stiefel-corank-one).""",
+       statement=r"V_{n,n}\cong SO(n):\quad \det X=1\ \text{for every }X\in V_{n,n}")
+def top_rank_stiefel_variety(s):
+    """V(n, n) = {X ∈ ℝⁿˣⁿ : XᵀX = I} as printed, SO(n): every point has det X = 1."""
+    return {"det X - 1": det(s, entries(s.X, s.n, s.n)) - s.q(1)}
+
+
+@top_rank_stiefel_variety.claim.correction("O(n) in place of SO(n): det X = ±1, both signs occur")
+def top_rank_stiefel_variety_corrected(s):
+    d = det(s, entries(s.X, s.n, s.n))
+    return {"det(X)^2 - 1": d * d - s.q(1)}
+
+
+@claim("stiefel-corank-one", paper=("cond_X*",), kind="geo", section="1", sizes=ON_V_NN1, exact_max_n=5,
+       statement=r"V_{n,n-1}\cong SO(n):\ X\mapsto(X\ c(X)),\ c_i=(-1)^{n+i}\det X_{\hat\imath},\quad "
+                 r"X^Tc=0,\ c^Tc=1,\ \det(X\ c)=1")
+def corank_one_stiefel_variety(s):
+    """V(n, n − 1) is diffeomorphic to SO(n): the column c(X) of the cofactors of the last column, c_i = (−1)^{n+i}
+    det X_î (X without its i-th row), completes X to (X c) ∈ SO(n), and dropping the last column inverts it: on V,
+    Xᵀc = 0, cᵀc = 1 and det(X c) = 1."""
+    n, r = s.n, s.r
+    rows = entries(s.X, n, r)
+    c = [det(s, rows[:i] + rows[i + 1:]) * (1 if (n + i + 1) % 2 == 0 else -1) for i in range(n)]
+    C = s.mat([[x] for x in c], ("n", "?"))
+    full = [rows[i] + [c[i]] for i in range(n)]
+    return {
+        "X^T c": s.X.T @ C,
+        "c^T c - 1": (C.T @ C)[0, 0] - s.q(1),
+        "det(X c) - 1": det(s, full) - s.q(1),
+    }
