@@ -3131,19 +3131,21 @@ def _run_ball(claim: Claim, n: int, r: int, seed: int, func: Callable, options: 
 def _exact_agrees(res: Result, claim: Claim, n: int, r: int, seed: int, func: Callable, options: dict | None,
                   verdict: str, log: str) -> str:
     """``verdict`` (fails, or proved for a claim said not to vanish) of certified enclosures, kept when an exact
-    rational point agrees (a nonzero residual there).  An enclosure bounds the value the balls computed, and a step
-    of the engine may compute it otherwise on an approximating field (a closed form, a degree decided within an
-    error bound): the exact evaluation is the statement's.  An exact run that refuses the claim makes the verdict
+    point agrees (a nonzero residual there, modulo a large prime: exact, and as fast at the large sizes balls are
+    for as the float method's confirmation).  An enclosure bounds the value the balls computed, and a step of the
+    engine may compute it otherwise on an approximating field (a closed form, a degree decided within an error
+    bound): the exact evaluation is the statement's.  An exact run that refuses the claim makes the verdict
     ``error``; one that finds the residual zero leaves it ``inconclusive``."""
-    ex = run_points(claim, n, r, "rational", seed, func, trials=1, options=options)
+    ex = run_points(claim, n, r, "modular", seed, func, trials=1, options=options)
     if ex.verdict == verdict:
-        res.certificate += "; confirmed by an exact rational point: " + (ex.certificate or "its residual is not 0")
+        res.certificate += "; confirmed by an exact point mod p: " + (ex.certificate or (
+            f"its residual is not 0 there ({ex.residual})" if ex.residual else "its residual is not 0 there"))
         return verdict
     if ex.verdict == "error":
         res.message = f"the exact evaluation refuses the claim: {ex.message} | {log}"
         res.witness = res.residual = None
         return "error"
-    res.message = (f"an enclosure excludes 0 ({res.residual}), but an exact rational point does not confirm it "
+    res.message = (f"an enclosure excludes 0 ({res.residual}), but an exact point mod p does not confirm it "
                    f"({ex.verdict}: {ex.message or ex.certificate}): no verdict from the balls | {log}")
     res.witness = res.residual = res.certificate = None
     return "inconclusive"

@@ -12,7 +12,7 @@ said not to vanish (float was caught by its exact confirmations, or stayed incon
    interpolate at the highest degree, exact for every lower one (brackets._DEGREE_DECIDED).
 
 And, whatever the step: a ball `fails` (or `proved` of a claim said not to vanish) stands only where an exact
-rational point agrees (fixed_size._exact_agrees), as a float `fails` and every `numeric` already did."""
+point agrees, modulo a large prime (fixed_size._exact_agrees), as a float `fails` and every `numeric` already did."""
 from __future__ import annotations
 
 
@@ -51,12 +51,12 @@ def test_a_ball_refutation_stands_only_where_an_exact_point_agrees(monkeypatch):
     from stiefelsym.methods import fixed_size
     claim = _false_claim()
     res = fixed_size.run_ball(claim, 3, 2, 0)
-    assert res.verdict == "fails" and "confirmed by an exact rational point" in res.certificate, res
+    assert res.verdict == "fails" and "confirmed by an exact point mod p" in res.certificate, res
     real = fixed_size.run_points
 
     def exact_says(verdict: str):
         def run_points(c, n, r, kind, seed, func=None, *a, **k):
-            if kind != "rational":
+            if kind != "modular":
                 return real(c, n, r, kind, seed, func, *a, **k)
             out = fixed_size._base_result(c, n, r, "rational", seed)
             out.verdict, out.message = verdict, "stand-in"
