@@ -35,9 +35,9 @@ def top_rank_stiefel_variety_corrected(s):
        statement=r"V_{n,n-1}\cong SO(n):\ X\mapsto(X\ c(X)),\ c_i=(-1)^{n+i}\det X_{\hat\imath},\quad "
                  r"X^Tc=0,\ c^Tc=1,\ \det(X\ c)=1")
 def corank_one_stiefel_variety(s):
-    """V(n, n − 1) is diffeomorphic to SO(n): the column c(X) of the cofactors of the last column, c_i = (−1)^{n+i}
-    det X_î (X without its i-th row), completes X to (X c) ∈ SO(n), and dropping the last column inverts it: on V,
-    Xᵀc = 0, cᵀc = 1 and det(X c) = 1."""
+    """V(n, n − 1) is diffeomorphic to SO(n): the column c(X) of the cofactors of the last column (c_i is (−1)^{n+i}
+    times the determinant of X without its i-th row) completes X to (X c) ∈ SO(n), and dropping the last column
+    inverts it: on V, Xᵀc = 0, cᵀc = 1 and det(X c) = 1."""
     n, r = s.n, s.r
     rows = entries(s.X, n, r)
     c = [det(s, rows[:i] + rows[i + 1:]) * (1 if (n + i + 1) % 2 == 0 else -1) for i in range(n)]
