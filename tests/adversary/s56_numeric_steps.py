@@ -120,3 +120,15 @@ def grad_additive(s):
 @claim("adv-s56-polygrad-nonzero", kind="id", sizes=S, expect="nonzero")
 def grad_nonzero(s):
     return {"G": polynomial_gradient(s, hidden_cubic, s.zeros(s.r, s.r, ("r", "r")), "gl", "r")}
+
+
+def seventh(t, y):
+    a = t.tr(e11(t) @ y)
+    return t.tr(y.T @ y) * K + a * a * a * a * a * a * a
+
+
+# Beyond the highest degree, hidden under K tr(yᵀy): refused by the exact fields; floats and balls must not
+# interpolate it at degree 6 and say "does not vanish" (the gradient at 0 is 0)
+@claim("adv-s56-polygrad-seventh-nonzero", kind="id", sizes=S, expect="nonzero")
+def grad_seventh(s):
+    return {"G": polynomial_gradient(s, seventh, s.zeros(s.r, s.r, ("r", "r")), "gl", "r")}
