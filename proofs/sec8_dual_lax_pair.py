@@ -527,7 +527,7 @@ def tangency_determinant(t):
 
 
 @claim("gen-chasles", paper=("Gen_Chasles", "conf0", "VV", "cone0", "tangency", "2r-integrals"), kind="geo",
-       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 1, 4: 1},
+       sizes=admissible(n_max=5), exact_max_n=3, exact_max_r={4: 2, 5: 1, 6: 1, 7: 1},
        statement=r"a(\lambda)\det(\mathcal V^TB(\lambda)\mathcal V)=a(\lambda)\sum_{I}|B(\lambda)|^I_IG_I(\mathcal V)^2"
                  r"=\mathcal I_{2r}(\lambda)=a(\lambda)\det\mathcal L^*_{neum}(\lambda),\quad "
                  r"\tfrac{d}{dt}\det(\mathcal V^TB(\lambda)\mathcal V)=0\ \text{along (N0\_XP2), (NE\_XP)}")

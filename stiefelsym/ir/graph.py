@@ -242,6 +242,53 @@ class Graph:
                 stack.extend(x)
         return out
 
+    def output_keys(self) -> tuple[str, ...] | None:
+        """The names of the checks of a graph whose output is a dict of named checks (None otherwise)."""
+        out = self.output
+        if out is None or self.ops[out[0]] != "dict":
+            return None
+        keys = self.args[out[0]][0]
+        return keys if type(keys) is tuple and all(type(k) is str for k in keys) else None
+
+    def checks_slice(self, keys: frozenset[str]) -> "Graph":
+        """The graph of the checks ``keys`` of the output alone: the nodes they read, renumbered in their
+        order, and a dict of those checks as the output.  Pure data from pure data (no claim code runs):
+        every pass and every method sees only what these checks compute (an entry read, a constant, a
+        division made for another check is not in it)."""
+        names = self.output_keys()
+        if names is None or not keys or not keys <= set(names):
+            raise ValueError("a slice names checks of the graph's output dict")
+        values = self.args[self.output[0]][1]
+        kept = [(k, v) for k, v in zip(names, values) if k in keys]
+        need: set[int] = set()
+        stack = [j for _k, v in kept for j in ([v[0]] if type(v) is Ref else
+                                                self._nested(v) if type(v) is tuple else [])]
+        while stack:
+            i = stack.pop()
+            if i not in need:
+                need.add(i)
+                stack.extend(self.refs(i))
+        order = sorted(need)
+        new = {old: k for k, old in enumerate(order)}
+
+        def moved(a: Any) -> Any:
+            t = type(a)
+            if t is Ref:
+                j = new[a[0]]
+                return _REFS[j] if j < len(_REFS) else _ref(j)
+            if t is tuple:
+                return tuple(moved(x) for x in a)
+            return a
+        g = Graph()
+        g.ops = [self.ops[i] for i in order]
+        g.args = [moved(self.args[i]) for i in order]
+        g.index = {(o, a): k for k, (o, a) in enumerate(zip(g.ops, g.args))}
+        g.refusals, g.fns, g.sizes = list(self.refusals), self.fns, self.sizes
+        g.output = g.add("dict", (tuple(k for k, _v in kept), tuple(moved(v) for _k, v in kept)))
+        if self.sites is not None:
+            g.sites = [self.sites[i] for i in order] + [None] * (len(g.ops) - len(order))
+        return g
+
     def _needed_by_search(self) -> set[int]:
         need: set[int] = set()
         stack = [self.output.i] if self.output is not None else []

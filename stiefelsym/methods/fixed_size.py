@@ -37,7 +37,7 @@ from stiefelsym.claims import Claim, Count, Expired, Rank, deadline
 from stiefelsym.ir.statements import InverseIdentities
 from stiefelsym.methods import cayley_right, complex_right, costmodel
 from stiefelsym.methods.costmodel import BudgetError as BudgetError  # the methods raise it (re-exported)
-from stiefelsym.ir import compile_claim
+from stiefelsym.ir import compile_claim as _compile_whole
 from stiefelsym.ir.derivative import derivatives, scene_flows
 from stiefelsym.ir.evaluate import evaluate
 from stiefelsym.ir.seal import verify as verify_engine
@@ -250,6 +250,29 @@ def _float_entries(value: Any, name: str, u: float) -> list[tuple[str, Any]]:
             picks.add(int(hit[0]))
     return [(f"{name}[{i // cols + 1},{i % cols + 1}]", ErrNum(float(v[i]), float(e[i]), float(m[i]), u))
             for i in sorted(picks)]
+
+
+#: the checks a run of the exact method is about (see :func:`_run_check_groups`): (function, names) while
+#: the method proves a group of a claim's checks on a chart of their own, None otherwise
+_CHECKS: "contextvars.ContextVar[tuple[Callable, frozenset[str]] | None]" = contextvars.ContextVar(
+    "stiefelsym_checks", default=None)
+
+
+def compile_claim(func: Callable, n: int | None, r: int | None, constraints: tuple[str, Callable],
+                  family: Any = None) -> Any:
+    """The claim's graph (:func:`stiefelsym.ir.compile_claim`), or, while the exact method proves a group
+    of its checks (:data:`_CHECKS`), the slice of the graph those checks read
+    (:meth:`~stiefelsym.ir.graph.Graph.checks_slice`): every evaluation, pass, probe, degree bound,
+    draw and memo of the run is about the slice."""
+    g = _compile_whole(func, n, r, constraints, family=family)
+    group = _CHECKS.get()
+    if group is not None and group[0] is func and n is not None and family is None:
+        key = ("checks", group[1])
+        sliced = g.cache.get(key)
+        if sliced is None:
+            sliced = g.cache[key] = g.checks_slice(group[1])
+        g = sliced
+    return g
 
 
 def call_claim(func: Callable, scene: Any, family: Any = None) -> dict[str, Any]:
@@ -915,7 +938,11 @@ EQUIVARIANT_REDUCTION = (
     "because {why}")
 def covariant_by_construction(spaces: tuple[str, ...]) -> str:
     """Why a claim that read no coordinates of the recorded spaces is covariant."""
-    return f"the claim read no coordinates of {' or '.join('R^' + x for x in spaces)} (recorded by the engine)"
+    return f"{_CLAIM_READ} no coordinates of {' or '.join('R^' + x for x in spaces)} (recorded by the engine)"
+
+
+_CLAIM_READ = "the claim read"
+_GROUP_READ = "these checks read"
 CAYLEY_REDUCTION = (
     "rational parametrization: X = first r columns of (I - S)(I + S)^{{-1}}{D}, P = XW + (I - XX^T)Z "
     "(S, W skew, Z arbitrary), A = diag(a); dense in T*V(n, r){comp}")
@@ -1112,7 +1139,12 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
     refused = _refused_nonzero(claim, n, r, "exact", None, func)
     if refused is not None:
         return refused
-    if PLANS and _LOAN is None and not _MUTATION_ANALYSIS:
+    whole = _CHECKS.get() is None
+    if whole:
+        groups = _check_groups(claim, n, r, func)
+        if groups is not None:
+            return _run_check_groups(claim, n, r, seed, func, time_budget, *groups)
+    if PLANS and _LOAN is None and not _MUTATION_ANALYSIS and whole:
         plan = _PLANS.get((id(claim), id(func), n, r))
         if plan is not None and plan.claim is claim and plan.func is func and plan.state == _plan_state(claim):
             fast = plan.run(seed, time_budget)
@@ -1343,7 +1375,82 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
     res.verdict = "proved"
     if randomized.drew:
         res.seed = seed      # a rank at a point drawn from the seed: the proof holds for every seed, the point is the seed's
-    _plan(claim, func, n, r, calls, res)
+    if whole:
+        _plan(claim, func, n, r, calls, res)
+    return res
+
+
+def _check_groups(claim: Claim, n: int, r: int, func: Callable) -> tuple[list[str], list[frozenset[str]]] | None:
+    """(the names of the checks, the groups to prove apart) where a claim's checks are better proved in two
+    groups than together: the graph reads coordinates of ℝⁿ, so the whole claim goes to the unconstrained or
+    the Cayley chart, while some of its checks read none (their slice of the graph), and these go to the
+    equivariant chart (which each group's own run still decides from what its evaluation reads).  A claim holds when each of its checks does, so each group is proved on the chart
+    its own slice of the graph allows, with the reduction stated for it.  None: the claim is proved whole
+    (one check, a claim said not to vanish, a graph that reads no coordinate or whose every check reads
+    some, a stated reason of equivariance that covers the whole, the mutation analysis)."""
+    if claim.expect == "nonzero" or claim.realization != "standard" or _LOAN is not None or _MUTATION_ANALYSIS:
+        return None
+
+    def reads_rn(g: Any) -> bool:       # what the O(n) chart's record watches (see call_claim)
+        return any(inv & {"?", "n"} for inv in coordinate_reads(g).values())
+    try:
+        cons = REALIZATIONS[claim.realization]
+        graph = compile_claim(func, n, r, (cons.name, cons.build))
+        names = graph.output_keys()
+        if names is None or len(names) < 2 or not reads_rn(graph):
+            return None
+        if claim.reviewed and claim.equivariance and _reviewed_function(claim, func):
+            return None
+        free = frozenset(k for k in names if not reads_rn(graph.checks_slice(frozenset((k,)))))
+    except Expired:
+        raise
+    except Exception:       # noqa: BLE001 - the claim's graph is refused: the whole run reports it
+        return None
+    if not free or len(free) == len(names):
+        return None
+    return list(names), [free, frozenset(names) - free]
+
+
+#: the order in which the verdict of a claim proved in groups is taken from its groups' verdicts
+_GROUP_VERDICTS = ("fails", "error", "undecided", "inconclusive", "checked", "proved")
+
+
+def _run_check_groups(claim: Claim, n: int, r: int, seed: int, func: Callable, time_budget: float | None,
+                      names: list[str], groups: list[frozenset[str]]) -> Result:
+    """The exact method on each group of checks (:func:`_check_groups`) in turn, within the one time
+    budget, and the claim's record from theirs: it fails when a group fails (the later groups are not
+    run), it is proved when every group is, otherwise it has the first group's verdict in the order
+    fails, error, undecided, inconclusive, checked.  Each reduction is stated with the checks it is used
+    for."""
+    t0 = time.perf_counter()
+    subs: list[tuple[frozenset[str], Result]] = []
+    for keys in groups:
+        left = None if time_budget is None else max(time_budget - (time.perf_counter() - t0), 1e-3)
+        token = _CHECKS.set((func, keys))
+        try:
+            sub = run_exact(claim, n, r, seed, func, left)
+        finally:
+            _CHECKS.reset(token)
+        subs.append((keys, sub))
+        if sub.verdict == "fails":
+            break
+    rank = {v: i for i, v in enumerate(_GROUP_VERDICTS)}
+    pick = min((s for _k, s in subs), key=lambda s: rank.get(s.verdict, 0))
+    res = dataclasses.replace(pick, reductions=[], checks=[])
+    place = {k: i for i, k in enumerate(names)}
+    for keys, sub in subs:
+        which = ", ".join(repr(k) for k in sorted(keys, key=place.__getitem__))
+        # (the record of what was read is the group's: its own evaluation's)
+        res.reductions += [f"for the checks {which}: " + d.replace(_CLAIM_READ, _GROUP_READ) for d in sub.reductions]
+    res.checks = sorted((o for _k, s in subs for o in s.checks), key=lambda o: place.get(o.name, len(place)))
+    if res.verdict in ("proved", "checked"):
+        res.certificate = ("; ".join(o.detail for o in res.checks if o.detail)
+                           or "every residual entry is identically 0")
+        bounds = [s.false_pass_bound for _k, s in subs if s.false_pass_bound is not None]
+        res.false_pass_bound = min(1.0, sum(bounds)) if bounds else None
+        if any(s.seed is not None for _k, s in subs):
+            res.seed = seed
+    res.seconds = time.perf_counter() - t0
     return res
 
 
