@@ -16,6 +16,7 @@ from stiefelsym import Count, Rank, admissible, block, claim, comm, twisted
 from .sec4_integrability import H_manakov, H_manakov_power, H_manakov_square, L_man_dual
 from .sec5_neumann import H_neumann_euclidean, H_neumann_normal, L_neum_at, power_trace
 from .sec7_grassmannians import column, columns, det, wedge
+from .determinants import charpoly
 
 SECTION = "8"
 
@@ -764,12 +765,12 @@ def dual_invariants_are_manakov_integrals_for_r_n(s):
 # -- the Chasles cones are real ------------------------------------------------------------------------
 
 @claim("chasles-cones-real", paper=("Gen_Chasles", "2r-integrals", "conf0"), kind="geo",
-       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 3, 4: 1, 5: 1},
+       sizes=admissible(n_max=5), exact_max_n=4, exact_max_r={5: 2, 6: 1, 7: 1},
        statement=r"\lambda^r\,\mathcal I_{2r}(\lambda)=\det\big(\lambda\mathbf I_n-Q(A-PP^T)Q\big),\ Q=\mathbf I_n-XX^T"
                  r"\ \Rightarrow\ c_1,\dots,c_{n-r}\in\mathbb R\ \text{for real}\ (X,P)")
 def chasles_cones_are_real(s):
-    """The remark after Theorem Gen_Chasles (for real solutions all the cones Q̄(c_i) are real), in algebraic form: λ^r𝓘_{2r}(λ) is the characteristic polynomial of the symmetric matrix Q(A − PPᵀ)Q, Q = I − XXᵀ, so the n − r roots c_i of 𝓘_{2r} are the eigenvalues of the compression of A − PPᵀ to the orthogonal complement of span{e_1..e_r}, real for real (X, P)."""
-    n, r = s.n, s.r
+    """The remark after Theorem Gen_Chasles (for real solutions all the cones Q̄(c_i) are real), in algebraic form: λ^r𝓘_{2r}(λ) is the characteristic polynomial of the symmetric matrix Q(A − PPᵀ)Q, Q = I − XXᵀ, so the n − r roots c_i of 𝓘_{2r} are the eigenvalues of the compression of A − PPᵀ to the orthogonal complement of span{e_1..e_r}, real for real (X, P).  The characteristic polynomial is computed from the traces of the powers of the matrix (Newton's identities), which read no coordinate of ℝⁿ."""
+    r = s.r
     Q = s.In - s.X @ s.X.T
     M = Q @ (s.A - s.P @ s.P.T) @ Q
     integrals, _ = spectral_integrals(s, s.lam)
@@ -779,7 +780,7 @@ def chasles_cones_are_real(s):
     return {
         "Q(A - PP^T)Q symmetric": M - M.T,
         "lambda^r I_2r(lambda) - det(lambda I - Q(A - PP^T)Q)":
-            lam_r * integrals[r] - det_matrix(s, s.scalar_matrix(s.lam, n, "n") - M),
+            lam_r * integrals[r] - charpoly(s, M, s.lam),
     }
 
 

@@ -1443,6 +1443,11 @@ def _run_check_groups(claim: Claim, n: int, r: int, seed: int, func: Callable, t
         # (the record of what was read is the group's: its own evaluation's)
         res.reductions += [f"for the checks {which}: " + d.replace(_CLAIM_READ, _GROUP_READ) for d in sub.reductions]
     res.checks = sorted((o for _k, s in subs for o in s.checks), key=lambda o: place.get(o.name, len(place)))
+    unrun = [k for keys in groups[len(subs):] for k in sorted(keys, key=place.__getitem__)]
+    if unrun:
+        note = (f"the checks {', '.join(map(repr, unrun))} were not evaluated: the group of checks evaluated "
+                "before them fails")
+        res.message = "; ".join(m for m in (res.message, note) if m)
     if res.verdict in ("proved", "checked"):
         res.certificate = ("; ".join(o.detail for o in res.checks if o.detail)
                            or "every residual entry is identically 0")
