@@ -1,7 +1,10 @@
-"""Determinants of square lists of scalars, without a division (claim code shared by the sections)."""
+"""Determinants of square lists of scalars, without a division, and the characteristic polynomial of a matrix
+from the traces of its powers (claim code shared by the sections)."""
 from __future__ import annotations
 
 from math import comb
+
+from stiefelsym import elementary
 
 
 def det(s, rows):
@@ -75,22 +78,15 @@ def _det_berkowitz(s, rows):
     return p[m] if m % 2 == 0 else s.q(0) - p[m]
 
 
+
 def charpoly(s, M, lam):
-    """det(λI − M) of an m × m matrix M that maps a space to itself, from the traces of its powers by
-    Newton's identities (e_k = (1/k) Σ_{i=1}^{k} (−1)^{i−1} e_{k−i} tr(M^i)): no entry of M is read, so a
-    statement about the characteristic polynomial of a matrix on ℝⁿ stays covariant under O(n) (the
-    exact method's equivariant chart), where an expansion by entries reads coordinates of ℝⁿ."""
+    """det(λI − M) = Σ_k (−1)^k e_k(M) λ^(m−k) of an m × m matrix M that maps a space to itself, from the
+    coefficients e_k of :func:`stiefelsym.elementary` (the traces of the powers of M by Newton's
+    identities): no entry of M is read, so a statement about the characteristic polynomial of a matrix on
+    ℝⁿ stays covariant under O(n) (the exact method's equivariant chart), where an expansion by entries
+    reads coordinates of ℝⁿ."""
     m = M.shape[0]
-    p, power = [], None
-    for _ in range(m):
-        power = M if power is None else power @ M
-        p.append(s.tr(power))
-    e = [s.q(1)]
-    for k in range(1, m + 1):
-        acc = s.q(0)
-        for i in range(1, k + 1):
-            acc = acc + e[k - i] * p[i - 1] if i % 2 else acc - e[k - i] * p[i - 1]
-        e.append(s.q(1, k) * acc)
+    e = elementary(s, M, m)
     out, lam_power = s.q(0), s.q(1)
     for k in range(m, -1, -1):          # the coefficient of λ^(m−k) is (−1)^k e_k
         out = out + lam_power * e[k] if k % 2 == 0 else out - lam_power * e[k]
