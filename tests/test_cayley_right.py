@@ -96,10 +96,25 @@ def test_r_one_keeps_its_chart_and_r_n_takes_the_identity():
     assert cayley_right.applies(_graph(_reflections_forget_S_on_P, 3, 3), "standard", 3, 3)
 
 
+def _cones_by_entries(s):
+    """(chasles-cones-real) with its determinant expanded by entries (which reads coordinates of R^n; the
+    catalog's claim computes it from traces of powers and is proved on the equivariant chart)."""
+    Q = s.In - s.X @ s.X.T
+    M = Q @ (s.A - s.P @ s.P.T) @ Q
+    integrals, _ = d.spectral_integrals(s, s.lam)
+    lam_r = s.q(1)
+    for _ in range(s.r):
+        lam_r = lam_r * s.lam
+    return {"char": lam_r * integrals[s.r] - d.det_matrix(s, s.scalar_matrix(s.lam, s.n, "n") - M)}
+
+
 def test_the_chasles_cones_are_proved_at_3_2_on_the_reduced_chart_and_a_wrong_sign_refuted():
     c = load_catalog().get("chasles-cones-real")
     assert c.exact_at(3, 2)
     res = run_exact(c, 3, 2, 0)
+    assert res.verdict == "proved", (res.verdict, res.message)
+    assert res.reductions[0].startswith("equivariance"), res.reductions
+    res = run_exact(_claim(_cones_by_entries), 3, 2, 0)
     assert res.verdict == "proved", (res.verdict, res.message)
     assert any(RIGHT in x for x in res.reductions), res.reductions
     bad = run_exact(_claim(cones_of_a_plus_pp), 3, 2, 0)
@@ -174,7 +189,9 @@ def _cones_with_lambda_to_r_minus_1(s):
 
 
 @pytest.mark.parametrize("cid,bad,chart", [
-    ("chasles-cones-real", _cones_with_lambda_to_r_minus_1, "X = I, P = W"),
+    # (its characteristic polynomial from traces of powers reads no coordinate: the equivariant chart; the
+    # corruption expands it by entries, and goes to the chart X = I)
+    ("chasles-cones-real", _cones_with_lambda_to_r_minus_1, "equivariance: X = X0"),
     # its Manakov flows are those of B = A^j (products only): the equivariant chart, whose X is X0 = I at r = n
     ("dual-invariants-manakov-r-n", _manakov_conserves_a_linear_function, "equivariance: X = X0")])
 def test_claims_raised_to_3_3_are_proved_on_the_chart_x_i_and_a_corruption_refuted(cid, bad, chart):
