@@ -155,3 +155,38 @@ def test_the_review_tricks_that_read_through_an_engine_step_still_fail():
         assert _check_groups(c, 3, 2, c.func) is not None, cid
         assert run_one(c, Size(3, 2), "exact", 0).verdict == "fails", cid
         assert run_one(c, Size(3, 2), "modular", 0).verdict == "fails", cid
+
+
+def _charpoly_of_xxt_minus(s, shift):
+    """charpoly(XXᵀ) − λ^(n−r)(λ − 1)^r − shift: 0 on V when shift is 0 (XXᵀ a projector of rank r)."""
+    from stiefelsym.proofs.determinants import charpoly
+    out = s.q(1)
+    for _ in range(s.n - s.r):
+        out = out * s.lam
+    for _ in range(s.r):
+        out = out * (s.lam - s.q(1))
+    return charpoly(s, s.X @ s.X.T, s.lam) - out - shift
+
+
+@pytest.mark.parametrize("method", ["exact", "modular", "float"])
+def test_the_stop_s_own_attempt_with_charpoly_in_the_unread_group(method):
+    """A check of the characteristic polynomial (no coordinate read) beside one that reads entries: the true
+    claim is grouped and holds; shifting either check by a term that vanishes nowhere on V fails it."""
+    from stiefelsym.run.runner import Size, run_one
+
+    def true(s):
+        return {"entries": _sum_of_squares(s) - s.q(s.r), "charpoly": _charpoly_of_xxt_minus(s, s.q(0))}
+
+    def shifted_unread(s):
+        return {"entries": _sum_of_squares(s) - s.q(s.r),
+                "charpoly": _charpoly_of_xxt_minus(s, s.lam * s.tr(s.P.T @ s.P))}
+
+    def shifted_read(s):
+        return {"entries": _sum_of_squares(s) - s.q(s.r) + s.X[0, 0] * s.P[0, 0],
+                "charpoly": _charpoly_of_xxt_minus(s, s.q(0))}
+    assert _check_groups(_claim(true), 3, 2, true) is not None
+    good = run_one(_claim(true, "t-cp-true"), Size(3, 2), method, 0)
+    assert good.verdict in ("proved", "checked", "numeric"), good.message
+    for f, wrong in ((shifted_unread, "charpoly"), (shifted_read, "entries")):
+        res = run_one(_claim(f, f"t-cp-{wrong}"), Size(3, 2), method, 0)
+        assert res.verdict == "fails" and res.residual.startswith(wrong), (method, wrong, res.verdict, res.message)
