@@ -938,11 +938,8 @@ EQUIVARIANT_REDUCTION = (
     "because {why}")
 def covariant_by_construction(spaces: tuple[str, ...]) -> str:
     """Why a claim that read no coordinates of the recorded spaces is covariant."""
-    return f"{_CLAIM_READ} no coordinates of {' or '.join('R^' + x for x in spaces)} (recorded by the engine)"
-
-
-_CLAIM_READ = "the claim read"
-_GROUP_READ = "these checks read"
+    who = "the claim" if _CHECKS.get() is None else "these checks"      # (a group of checks: _run_check_groups)
+    return f"{who} read no coordinates of {' or '.join('R^' + x for x in spaces)} (recorded by the engine)"
 CAYLEY_REDUCTION = (
     "rational parametrization: X = first r columns of (I - S)(I + S)^{{-1}}{D}, P = XW + (I - XX^T)Z "
     "(S, W skew, Z arbitrary), A = diag(a); dense in T*V(n, r){comp}")
@@ -1440,8 +1437,7 @@ def _run_check_groups(claim: Claim, n: int, r: int, seed: int, func: Callable, t
     place = {k: i for i, k in enumerate(names)}
     for keys, sub in subs:
         which = ", ".join(repr(k) for k in sorted(keys, key=place.__getitem__))
-        # (the record of what was read is the group's: its own evaluation's)
-        res.reductions += [f"for the checks {which}: " + d.replace(_CLAIM_READ, _GROUP_READ) for d in sub.reductions]
+        res.reductions += [f"for the checks {which}: {d}" for d in sub.reductions]
     res.checks = sorted((o for _k, s in subs for o in s.checks), key=lambda o: place.get(o.name, len(place)))
     unrun = [k for keys in groups[len(subs):] for k in sorted(keys, key=place.__getitem__)]
     if unrun:
