@@ -154,6 +154,24 @@ def test_a_refusal_has_one_message_whatever_the_method():
     assert len(msgs) == 1
 
 
+def an_entry_out_of_range(s):
+    """An entry of Ψ (r × r) at row n − 1: out of range where r < n (it was each backend's own IndexError,
+    raised by the exact method only after the products it evaluates first)."""
+    return {"x": s.Psi[s.n - 1, 0] - s.Psi[s.n - 1, 0]}
+
+
+def test_an_entry_out_of_range_is_refused_when_traced_with_one_message():
+    c = _claim(an_entry_out_of_range)
+    res = [run_one(c, Size(3, 2), m, 0) for m in ("exact", "rational", "modular", "float")]
+    assert {x.verdict for x in res} == {"error"}
+    assert {x.message.split(" (at ")[0] for x in res} == {
+        "TraceRefused: refused: entry index 2 out of range for an axis of length 2"}
+    assert run_one(c, Size(3, 3), "exact", 0).verdict == "proved"     # in range: the claim is 0 - 0
+    with pytest.raises(TraceRefused):
+        trace(lambda s: {"x": s.X[0, -5]}, 4, 2, STANDARD)
+    assert trace(lambda s: {"x": s.X[-1, -2]}, 4, 2, STANDARD) is not None     # Python's negative indices
+
+
 # -- 4. state across calls --------------------------------------------------------------------------
 
 _CALLS = [0]

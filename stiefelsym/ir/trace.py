@@ -422,6 +422,10 @@ class Tracer:
             if type(i) is Dim:
                 i = i._int("as an index")
             if type(i) is int:
+                length = _val(ax, t)
+                if length is not None and not -length <= i < length:
+                    # refused here, whatever the method: a backend would raise its own IndexError (or none)
+                    return t.refuse(f"entry index {i} out of range for an axis of length {length}")
                 enc.append(i)
                 shape.append(None)
             elif type(i) is slice:
