@@ -714,6 +714,18 @@ def test_a_term_cap_refuses_a_product_before_it_starts_and_by_a_count():
     small = Mat._rows([[xs[0], 1], [1, xs[1]]], F)
     with term_cap(10):
         assert (small @ small.inv() - Mat.identity(2, F)).is_zero()
+    # a product of two rational functions counts too (6 x 21 = 126 term products): a scalar times a matrix,
+    # or two entries multiplied, is where a mutant whose resolvent no longer cancels spends its time
+    from stiefelsym.backends.polyfield import PolyRing
+    R = PolyRing()
+    ys = [R.var(se.Symbol(f"y{i}")) for i in range(6)]
+    six = (sum(ys[1:], ys[0]), ())
+    square = R.rf_mul(six, six)
+    with term_cap(126):
+        assert R.rf_mul(six, square)[0] == R.rf_mul(square, six)[0]
+    with term_cap(125):
+        with pytest.raises(SymbolicBudget, match="a product of rational functions of 126 term products"):
+            R.rf_mul(six, square)
 
 
 def test_a_product_cancels_the_atoms_of_its_denominator_that_divide_its_numerator():

@@ -236,7 +236,10 @@ class PolyRing:
         (exact divisions, :meth:`cancel`): the product a(λ)·e(λ) of a characteristic polynomial and a
         function with poles at its roots then stays a polynomial, instead of a fraction whose numerator
         grows with every later sum over other denominators (the coefficients of the spectral curve at
-        λ, λ + 1, ...).  At the default sizes the catalog's run takes the same CPU time with it."""
+        λ, λ + 1, ...).  At the default sizes the catalog's run takes the same CPU time with it.  Counted
+        against a :class:`term_cap` like a product of matrices."""
+        if _TERM_CAP is not None:
+            _spend(len(a[0]) * len(b[0]), "a product of rational functions")
         n, d = a[0] * b[0], _merge_add(a[1], b[1])
         if d and not n.is_zero():
             return self.cancel(n, d)

@@ -1384,8 +1384,11 @@ def _check_groups(claim: Claim, n: int, r: int, func: Callable) -> tuple[list[st
     equivariant chart (which each group's own run still decides from what its evaluation reads).  A claim holds when each of its checks does, so each group is proved on the chart
     its own slice of the graph allows, with the reduction stated for it.  None: the claim is proved whole
     (one check, a claim said not to vanish, a graph that reads no coordinate or whose every check reads
-    some, a stated reason of equivariance that covers the whole, the mutation analysis)."""
-    if claim.expect == "nonzero" or claim.realization != "standard" or _LOAN is not None or _MUTATION_ANALYSIS:
+    some, a stated reason of equivariance that covers the whole; in a mutation analysis, a mutant a point
+    method has refuted at this size: its whole run stops at the first failing chart, while a group that
+    holds would be proved in full first)."""
+    if claim.expect == "nonzero" or claim.realization != "standard" \
+            or (_LOAN is not None and _LOAN.term_products is not None):
         return None
 
     def reads_rn(g: Any) -> bool:       # what the O(n) chart's record watches (see call_claim)
@@ -1398,7 +1401,10 @@ def _check_groups(claim: Claim, n: int, r: int, func: Callable) -> tuple[list[st
             return None
         if claim.reviewed and claim.equivariance and _reviewed_function(claim, func):
             return None
-        free = frozenset(k for k in names if not reads_rn(graph.checks_slice(frozenset((k,)))))
+        free = graph.cache.get("checks_reading_no_rn")     # (a pass over the graph: kept with it)
+        if free is None:
+            free = graph.cache["checks_reading_no_rn"] = frozenset(
+                k for k in names if not reads_rn(graph.checks_slice(frozenset((k,)))))
     except Expired:
         raise
     except Exception:       # noqa: BLE001 - the claim's graph is refused: the whole run reports it
