@@ -648,7 +648,7 @@ def monopole_checks(s, sign):
        (Psi = X^T P - P^T X), e_3 = e_1 x e_2 (iden1) and so(3) identified with (R^3, x) as Lie algebras,
        F_Omega = X Psi X^T = epsilon e_1 ^ e_2 = -epsilon hat(e_3), so the Lorentz force is
        F_Omega de_3/dt = -epsilon e_3 x de_3/dt, not +epsilon e_3 x de_3/dt: the monopole equation holds as
-       d^2e_3/dt^2 = A e_3 - ((e_3, A e_3) + (de_3/dt, de_3/dt)) e_3 - epsilon e_3 x de_3/dt (equivalently, the
+       d²e_3/dt² = A e_3 - ((e_3, A e_3) + (de_3/dt, de_3/dt)) e_3 - epsilon e_3 x de_3/dt (equivalently, the
        printed sign with eta = -epsilon E_1 ^ E_2, a monopole of the opposite charge).  (mag6) itself holds.""",
        statement=r"n=3,\ \eta=\epsilon E_1\wedge E_2:\quad \ddot e_3=Ae_3-\big((e_3,Ae_3)+(\dot e_3,\dot e_3)\big)e_3"
                  r"+\epsilon\,e_3\times\dot e_3,\quad F_\Omega\dot e_3=\epsilon\,e_3\times\dot e_3")

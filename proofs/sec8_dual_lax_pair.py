@@ -769,7 +769,7 @@ def dual_invariants_are_manakov_integrals_for_r_n(s):
        statement=r"\lambda^r\,\mathcal I_{2r}(\lambda)=\det\big(\lambda\mathbf I_n-Q(A-PP^T)Q\big),\ Q=\mathbf I_n-XX^T"
                  r"\ \Rightarrow\ c_1,\dots,c_{n-r}\in\mathbb R\ \text{for real}\ (X,P)")
 def chasles_cones_are_real(s):
-    """The remark after Theorem Gen_Chasles (for real solutions all the cones Q̄(c_i) are real), in algebraic form: λ^r𝓘_{2r}(λ) is the characteristic polynomial of the symmetric matrix Q(A − PPᵀ)Q, Q = I − XXᵀ, so the n − r roots c_i of 𝓘_{2r} are the eigenvalues of the compression of A − PPᵀ to the orthogonal complement of span{e_1..e_r}, real for real (X, P).  The characteristic polynomial is computed from the traces of the powers of the matrix (Newton's identities), which read no coordinate of ℝⁿ."""
+    """The remark after Theorem Gen_Chasles (for real solutions all the cones Q̄(c_i) are real), in algebraic form: λʳ𝓘_{2r}(λ) is the characteristic polynomial of the symmetric matrix Q(A − PPᵀ)Q, Q = I − XXᵀ, so the n − r roots c_i of 𝓘_{2r} are the eigenvalues of the compression of A − PPᵀ to the orthogonal complement of span{e_1..e_r}, real for real (X, P).  The characteristic polynomial is computed from the traces of the powers of the matrix (Newton's identities), which read no coordinate of ℝⁿ."""
     r = s.r
     Q = s.In - s.X @ s.X.T
     M = Q @ (s.A - s.P @ s.P.T) @ Q

@@ -275,3 +275,26 @@ def misprint_at_r1(s):
     assert free["not-a-misprint"]["verdict"] == "proved" and not free["not-a-misprint"]["expected"]
     assert free["a-misprint-at-r1-only"]["verdict"] == "undecided"
     assert all(not r["expected"] for r in recs if r["claim"] == "not-a-misprint" and r["n"] and r["n"] > 1)
+
+
+def test_a_false_statement_of_ones_own_is_not_a_note_for_the_papers_authors(tmp_path):
+    """A claim of a user's file with no label of the paper that fails: its note in the report starts with
+    "The statement as printed fails", not "In , the statement" under "Note for the authors"."""
+    f = tmp_path / "twin.py"
+    f.write_text('''
+from stiefelsym import claim
+
+@claim("my-false-twin", kind="id", erratum="XᵀX is not 2I", fails_at=lambda n, r: True)
+def twin(s):
+    """A false statement of my own: XᵀX = 2I."""
+    return {"XtX - 2I": s.X.T @ s.X - s.Ir * 2}
+''')
+    env = dict(os.environ, PYTHONPATH=str(ROOT))
+    out = subprocess.run([sys.executable, "-m", "stiefelsym", "verify", "--claims", str(f), "--size", "3,2",
+                          "--method", "exact", "--report-dir", str(tmp_path / "out")], capture_output=True,
+                         text=True, env=env, timeout=300)
+    assert out.returncode == 0, out.stdout + out.stderr
+    for name, note in (("verification.md", "**Note.** The statement as printed fails"),
+                       ("verification.tex", r"\textbf{Note.} The statement as printed fails")):
+        text = (tmp_path / "out" / name).read_text()
+        assert note in text and "Note for the authors" not in text and "In , " not in text

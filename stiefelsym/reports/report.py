@@ -787,13 +787,19 @@ def _erratum_facts(c: ClaimResults) -> dict[str, Any]:
             "verified": verified, "free": free[0].verdict if free else None}
 
 
+def _note_heading(c: ClaimResults) -> str:
+    """A paper's erratum is a note for its authors; a statement of one's own (no label of the paper) is not."""
+    return "Note for the authors." if c.paper else "Note."
+
+
 def _erratum_note(c: ClaimResults, facts: dict[str, Any], escape=lambda s: s, correction=lambda s: s) -> str:
     """One paragraph a referee could send: the label, where it fails, the witness, the correction
     (``escape`` renders the prose, ``correction`` a correction's description)."""
     w = c.failures[0]
     where = (f"Appendix {c.section[1:]}, " if c.section.startswith("A") else f"§{c.section}, ") \
         if c.section and not all(p in paperref.table() for p in c.paper) else ""
-    text = (f"In {where}{labels(c.paper)}, the statement as printed "
+    at = f"{where}{labels(c.paper)}".removesuffix(", ")
+    text = (f"{f'In {at}, the' if at else 'The'} statement as printed "
             f"{sizerules.fails_holds_text(facts['fails'], facts['holds'])}")
     small = small_witness_of(c)
     if small is not None:
@@ -832,7 +838,7 @@ def _errata_body(claims: list[ClaimResults], escape: Callable[[str], str], errat
 def _md_erratum(c: ClaimResults) -> list[str]:
     facts = _erratum_facts(c)
     out = [f"### `{c.id}` {_md_escape(labels(c.paper))}".rstrip(), ""]
-    out += [f"**Note for the authors.** {_md_escape(_erratum_note(c, facts, correction=lambda v: _with_change(c, v)))}",
+    out += [f"**{_note_heading(c)}** {_md_escape(_erratum_note(c, facts, correction=lambda v: _with_change(c, v)))}",
             ""]
     st = _md_statement(c.statement)
     if st:
@@ -1063,7 +1069,7 @@ def _tex_results(rs: list[Result]) -> list[str]:
         out.append(" & ".join([
             tex_escape(r.size), tex_escape(r.method), _tex_verdict(r),
             tex_escape(format_seconds(r.seconds)),
-            re.sub(r"([*+,=])", r"\1\\allowbreak{}", tex_escape(short(r.certificate, 120) or "--")),
+            re.sub(r"([*+,=])", r"\1\\allowbreak{}", tex_words(short(r.certificate, 120) or "--")),
             str(r.seed if r.seed is not None else "--"), _tex_bound(r.false_pass_bound)]) + r"\\")
     return out + [r"\bottomrule", r"\end{longtable}", "}"]
 
@@ -1297,8 +1303,8 @@ def _tex_claim(c: ClaimResults) -> list[str]:
     how = c.how_obtained()
     if how:
         out += ["How the verdicts were obtained:"]
-        out += _tex_items([tex_escape(f"{m}: {text}") for m, text in how])
-    notes = [tex_escape(f"{r.size} {r.method}: {short(r.message, 300)}") for r in c.notes()]
+        out += _tex_items([tex_words(f"{m}: {text}") for m, text in how])
+    notes = [tex_words(f"{r.size} {r.method}: {short(r.message, 300)}") for r in c.notes()]
     if notes:
         out += ["Notes:"] + _tex_items(notes)
     out += _tex_derivations(c)
@@ -1376,12 +1382,12 @@ def _tex_derivations(c: ClaimResults) -> list[str]:
     for r in c.printed:
         cert = certificate_summary(r)
         if cert and not r.derivation and cert in grouped:
-            out += [tex_escape(grouped.pop(cert) + "."), ""]      # (once for the records that carry it)
+            out += [tex_words(grouped.pop(cert) + "."), ""]      # (once for the records that carry it)
         if not r.derivation or r.verdict != "proved":
             continue
         out.append(r"\subsubsection*{" + tex_escape(f"Dimension-free proof ({r.method})") + "}")
         if cert:
-            out.append(tex_escape(cert + "."))
+            out.append(tex_words(cert + "."))
         for chunk in r.derivation[:MAX_DERIVATIONS]:
             out.append(_fit_derivation(chunk) if tex_balanced(chunk) else r"\texttt{" + tex_escape(chunk) + "}")
         if len(r.derivation) > MAX_DERIVATIONS:
@@ -1412,7 +1418,7 @@ def _fit_derivation(chunk: str) -> str:
 def _tex_erratum(c: ClaimResults, reruns: int = MAX_ERRATUM_RERUNS) -> list[str]:
     facts = _erratum_facts(c)
     out = [_tex_claim_heading(c)]
-    out += [r"\textbf{Note for the authors.} " + _erratum_note(c, facts, tex_escape, lambda v: _tex_with_change(c, v)), ""]
+    out += [r"\textbf{" + _note_heading(c) + "} " + _erratum_note(c, facts, tex_escape, lambda v: _tex_with_change(c, v)), ""]
     if c.statement.strip():
         out += [r"As printed:\nopagebreak", tex_display(c.statement)]
     w = c.failures[0]
