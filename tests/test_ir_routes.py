@@ -172,6 +172,46 @@ def test_an_entry_out_of_range_is_refused_when_traced_with_one_message():
     assert trace(lambda s: {"x": s.X[-1, -2]}, 4, 2, STANDARD) is not None     # Python's negative indices
 
 
+def an_empty_inverse(s):
+    """The inverse of a 0 × 0 matrix (an empty block of X): the exact method took it for the empty matrix and
+    the point methods for a singular point (review of stop 58)."""
+    E = s.X[7:, :]
+    return {"x": s.tr((E @ E.T).inv()) + s.q(1)}
+
+
+def a_zero_step(s):
+    """A slice with step 0: Python's own ValueError at evaluation before."""
+    return {"x": s.X[0:4:0, :]}
+
+
+@pytest.mark.parametrize("func, message", [(an_empty_inverse, "the inverse of an empty (0 x 0) matrix"),
+                                           (a_zero_step, "a slice of a matrix with step 0")],
+                         ids=["empty-inverse", "zero-step"])
+def test_an_empty_inverse_and_a_zero_step_are_refused_with_one_message(func, message):
+    c = _claim(func)
+    res = [run_one(c, Size(3, 2), m, 0) for m in ("exact", "rational", "modular", "float", "auto")]
+    assert {x.verdict for x in res} == {"error"}, [(x.method, x.verdict, x.message) for x in res]
+    assert all(message in x.message for x in res)
+
+
+def test_a_claims_file_that_poisons_the_graph_it_is_traced_into_gets_no_passing_verdict():
+    """Review of stop 58 (tests/adversary/s58/batch1.py): claim code reaches the graph being traced (s._t.g)
+    and puts a list of its own under its cache of references, so that a trace-time check takes tr(PᵀP) for a
+    constant divisor.  The file is traced in a fresh interpreter and its graphs are replayed here by the
+    engine's tracer, which types every node again: error under every method."""
+    import subprocess
+    from pathlib import Path
+    here = Path(__file__).resolve().parent
+    batch = here / "adversary" / "s58" / "batch1.py"
+    for m in ("exact", "rational", "modular", "float", "auto"):
+        out = subprocess.run([sys.executable, "-m", "stiefelsym", "verify", "--claims", str(batch),
+                              "s58-refs-inv-div-trace", "s58-refs-inv-div-symbolic", "--size", "3,2", "--method", m,
+                              "--jobs", "1", "--no-report", "--format", "json"], capture_output=True, text=True,
+                             cwd=str(here.parent), timeout=300)
+        recs = json.loads(out.stdout)["results"]
+        assert len(recs) == 2 and {r["verdict"] for r in recs} == {"error"}, (m, recs)
+
+
 # -- 4. state across calls --------------------------------------------------------------------------
 
 _CALLS = [0]

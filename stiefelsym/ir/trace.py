@@ -301,6 +301,10 @@ class Tracer:
         """The inverse of a square matrix."""
         if self._kind == SCALAR or _same_size(*self._shape, self._t) is False:
             return self._t.refuse("the inverse of a matrix that is not square")
+        if self._kind == MAT and _val(self._shape[0], self._t) == 0:
+            # refused here, whatever the method (a 0 x 0 inverse was the empty matrix to one backend and
+            # a singular point to the others)
+            return self._t.refuse("the inverse of an empty (0 x 0) matrix")
         return self._t.new("inv", (self._r,), self._kind, self._shape[::-1])
 
     def trace(self) -> "Tracer":
@@ -436,6 +440,8 @@ class Tracer:
                     if p is not None and type(p) is not int:
                         return t.refuse("a slice of a matrix has int bounds")
                     parts.append(p)
+                if parts[2] == 0:
+                    return t.refuse("a slice of a matrix with step 0")
                 enc.append(("slice",) + tuple(parts))
                 shape.append(len(range(*slice(*parts).indices(_val(ax, t)))) if _val(ax, t) is not None else None)
             else:
