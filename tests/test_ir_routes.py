@@ -172,6 +172,32 @@ def test_an_entry_out_of_range_is_refused_when_traced_with_one_message():
     assert trace(lambda s: {"x": s.X[-1, -2]}, 4, 2, STANDARD) is not None     # Python's negative indices
 
 
+def rows_reversed_twice(s):
+    """True: X with its rows reversed twice is X (a step of -1)."""
+    return {"x": s.X[::-1, :][::-1, :] - s.X}
+
+
+def rows_reversed(s):
+    """False: X with its rows reversed is X."""
+    return {"x": s.X[::-1, :] - s.X}
+
+
+def every_other_row_past_the_end(s):
+    """True: every other row taken twice over a slice past the end (clamped), and the last entry by -1."""
+    return {"x": s.X[0:100:2, :] - s.X[::2, :], "last": s.X[-1, -1] - s.X[s.n - 1, s.r - 1]}
+
+
+@pytest.mark.parametrize("func, truth", [(rows_reversed_twice, True), (rows_reversed, False),
+                                         (every_other_row_past_the_end, True)],
+                         ids=["reversed-twice", "reversed", "steps-and-negative"])
+def test_the_honest_forms_of_indexing_give_the_right_verdict_under_every_method(func, truth):
+    """The stop's own probes beside the refusals above: slices with negative and odd steps, clamped slices and
+    negative indices mean what Python says under every method (no method refuses them, none disagrees)."""
+    c = _claim(func)
+    verdicts = {m: run_one(c, Size(4, 2), m, 0).verdict for m in ("exact", "rational", "modular", "float")}
+    assert set(verdicts.values()) <= (set(PASSING) if truth else {"fails"}), verdicts
+
+
 def an_empty_inverse(s):
     """The inverse of a 0 × 0 matrix (an empty block of X): the exact method took it for the empty matrix and
     the point methods for a singular point (review of stop 58)."""
