@@ -220,6 +220,18 @@ def test_an_empty_inverse_and_a_zero_step_are_refused_with_one_message(func, mes
     assert all(message in x.message for x in res)
 
 
+def test_a_claims_file_loaded_in_process_that_poisons_the_graph_cache_gets_no_passing_verdict():
+    """The same file loaded into this process (the library's way, no fresh interpreter, no replay): the cache of
+    references it fills is read by no check (Graph.refs reads the arguments each time).  With the cache read,
+    exact said proved, rational checked and float numeric of this false statement (stop 58)."""
+    from pathlib import Path
+    from stiefelsym.claims import load_claims_file
+    reg = load_claims_file(str(Path(__file__).resolve().parent / "adversary" / "s58" / "batch1.py"))
+    for cid in ("s58-refs-inv-div-trace", "s58-refs-inv-div-symbolic"):
+        for m in ("exact", "rational", "modular", "float"):
+            assert run_one(reg.get(cid), Size(3, 2), m, 0).verdict == "error", (cid, m)
+
+
 def test_a_claims_file_that_poisons_the_graph_it_is_traced_into_gets_no_passing_verdict():
     """Review of stop 58 (tests/adversary/s58/batch1.py): claim code reaches the graph being traced (s._t.g)
     and puts a list of its own under its cache of references, so that a trace-time check takes tr(PᵀP) for a

@@ -195,17 +195,11 @@ class Graph:
         g.sites = None if self.sites is None else list(self.sites)
         return g
 
-    def refs(self, i: int) -> tuple[int, ...]:
-        """The nodes node ``i`` reads (last argument first, nested tuples likewise).  Kept per node in the
-        graph's cache, filled as far as asked: a graph only grows (:meth:`add` appends), and every pass
-        (dependencies, readers, programs, node keys, slices) reads the same lists."""
-        c = self.cache.get("refs")
-        if c is None:
-            c = self.cache["refs"] = []
-        if i >= len(c):
-            nested = self._nested
-            c.extend([tuple(nested(a)) for a in self.args[len(c):i + 1]])
-        return c[i]
+    def refs(self, i: int) -> list[int]:
+        """The nodes node ``i`` reads (last argument first, nested tuples likewise), from its arguments
+        each time: not kept in the graph's cache, which claim code that reaches the graph being traced
+        could fill with lies for the trace-time checks to read (review of stop 58)."""
+        return self._nested(self.args[i])
 
     def needed(self) -> set[int]:
         """The nodes the output reads, directly or not (the output included; none without an output)."""
