@@ -16,7 +16,7 @@ Running claims from Python (the results ``stiefelsym verify`` prints, as records
     results.ok, results[0].verdict
 """
 from stiefelsym._version import __version__
-from stiefelsym.api import verify
+from stiefelsym.api import load, verify
 from stiefelsym.claims import Checks, Claim, Registry, Size, SizeSpec, admissible, claim, load_catalog, load_claims_file
 from stiefelsym.ir import block
 from stiefelsym.ir.statements import Count, Inverse, Rank, RightInverse
@@ -26,5 +26,5 @@ from stiefelsym.reports import notebook as _notebook  # noqa: F401,E402 (install
 from stiefelsym.scene import Flow, Scene
 
 __all__ = ["claim", "admissible", "comm", "block", "det", "elementary", "Rank", "Count", "Inverse", "RightInverse", "Checks", "Claim", "Registry", "Size",
-           "SizeSpec", "Mat", "Scene", "Flow", "load_catalog", "load_claims_file", "verify", "Result",
+           "SizeSpec", "Mat", "Scene", "Flow", "load", "load_catalog", "load_claims_file", "verify", "Result",
            "ResultList", "__version__"]

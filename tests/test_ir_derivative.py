@@ -12,7 +12,7 @@ from stiefelsym import comm
 from stiefelsym.claims import Claim, Size, admissible
 from stiefelsym.backends.fields import ModularField
 from stiefelsym.free import FreeScene
-from stiefelsym.ir import compile_claim
+from stiefelsym.ir import _compiled_graph as compile_claim   # the engine's own graph (its cache is forgotten below)
 from stiefelsym.ir import derivative as deriv
 from stiefelsym.ir.derivative import POINT_FLOWS, coverage, derivatives, scene_flows
 from stiefelsym.ir.evaluate import evaluate

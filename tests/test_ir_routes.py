@@ -12,7 +12,7 @@ import pytest
 
 from stiefelsym import admissible, block
 from stiefelsym.claims import Claim
-from stiefelsym.ir import TraceRefused, compile_claim, trace
+from stiefelsym.ir import TraceRefused, _compiled_graph, compile_claim, trace
 from stiefelsym.run.runner import run_one
 from stiefelsym.claims import Size
 from stiefelsym.scene import REALIZATIONS
@@ -450,8 +450,9 @@ def test_the_graph_at_a_size_is_the_graph_of_symbolic_sizes_for_the_catalog_samp
     for cid in ("prep", "neumann-lax", "euclidean-flow"):
         c = cat.get(cid)
         z = next(iter(c.sizes))
-        free = compile_claim(c.func, None, None, STANDARD)
-        assert compile_claim(c.func, z.n, z.r, STANDARD) is free and free.sizes is None
+        free = _compiled_graph(c.func, None, None, STANDARD)
+        assert _compiled_graph(c.func, z.n, z.r, STANDARD) is free and free.sizes is None
+        assert compile_claim(c.func, z.n, z.r, STANDARD).digest() == free.digest()     # (the public one: a copy)
 
 
 def test_a_passing_verdict_for_a_claim_that_does_not_trace_is_rejected():
@@ -497,7 +498,7 @@ def test_a_graph_of_symbolic_sizes_is_typed_at_each_size_without_running_the_cla
     """The graph at (n, r) of a claim with a graph of symbolic sizes is that graph replayed at (n, r) by the
     tracer: a block written 3 x 2 types at (3,2) and is refused at (4,2), where no method evaluates it, and
     the dimension-free method proves nothing for a claim stated at (4,2) too."""
-    assert compile_claim(int_size_block, 3, 2, STANDARD) is compile_claim(int_size_block, None, None, STANDARD)
+    assert _compiled_graph(int_size_block, 3, 2, STANDARD) is _compiled_graph(int_size_block, None, None, STANDARD)
     with pytest.raises(TraceRefused, match=r"does not type at \(4,2\)"):
         compile_claim(int_size_block, 4, 2, STANDARD)
     c = _claim(int_size_block, sizes=admissible(n_max=4, n_min=3, r_min=2, r_max=2))
@@ -508,3 +509,41 @@ def test_a_graph_of_symbolic_sizes_is_typed_at_each_size_without_running_the_cla
     assert "not a graph at (4,2)" in typed_at_stated_sizes(c, int_size_block)
     assert typed_at_stated_sizes(_claim(int_size_block, sizes=admissible(n_max=3, n_min=3, r_min=2, r_max=2)),
                                  int_size_block) == ""
+
+
+# -- claim code that changes a graph after the tracer checked it (stop 59) ----------------------------------
+
+def _in_process(name: str):
+    from pathlib import Path
+    from stiefelsym.claims import load_claims_file
+    return load_claims_file(str(Path(__file__).resolve().parent / "adversary" / "s59" / name))
+
+
+@pytest.mark.parametrize("cid", ["s59-rewrite-divisor", "s59-rewrite-divisor-symbolic"])
+def test_a_claim_that_rewrites_its_graph_after_a_trace_time_check_gets_error_under_every_method(cid):
+    """The second statement's function, traced after the first statement's checks, points the first inverse's
+    division by 2 at tr(PᵀP) in the graph being traced (s._t.g).  Loaded in-process, exact said proved, rational
+    checked and float numeric of this false statement (not invertible at P = 0).  Every graph is now replayed by
+    the tracer once the claim's code has run (the type-checking pass of ``ir._compile``), and the replay makes
+    the division again, with its check."""
+    reg = _in_process("rewrite_after_check.py")
+    for m in ("exact", "rational", "modular", "float", "ball", "auto"):
+        res = run_one(reg.get(cid), Size(3, 2), m, 0)
+        assert res.verdict == "error", (cid, m, res.verdict, res.message)
+        assert "when the tracer replays it" in res.message
+
+
+def test_a_claim_cannot_change_the_literals_of_another_claims_compiled_graph():
+    """A Fraction the claim handed to the tracer, and a size expression the tracer shares between graphs, were
+    held by the compiled graph itself: another claim's code, run later in the same process, changed them
+    (``ONE._numerator = 2``), and the false X·1 − 2X = 0 was proved, checked and numeric from the cached graph.
+    The graph a method evaluates is now a copy through pickle of the replay: no object of it was ever handed
+    to claim code."""
+    reg = _in_process("shared_literals.py")
+    for cid in ("s59-shared-fraction", "s59-shared-size"):
+        assert run_one(reg.get(cid), Size(3, 2), "exact", 0).verdict == "fails"
+    assert run_one(reg.get("s59-changer"), Size(3, 2), "exact", 0).verdict == "proved"
+    for cid in ("s59-shared-fraction", "s59-shared-size"):
+        for m in ("exact", "rational", "modular", "float"):
+            res = run_one(reg.get(cid), Size(3, 2), m, 0)
+            assert res.verdict == "fails", (cid, m, res.verdict, res.message)

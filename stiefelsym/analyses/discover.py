@@ -234,7 +234,7 @@ def conserved(flow: Callable[[Any], Any], size: Size, degree: int = 4, *, max_a:
     """The conserved quantities of ``flow`` (a function of the scene giving the tangent vector
     {"X": Ẋ, "P": Ṗ}) among the trace monomials of degree <= ``degree``, at ``size``; each basis
     element verified by the methods ``verify`` (the dimension-free one for all n, r)."""
-    from stiefelsym.ir import compile_claim
+    from stiefelsym.ir import _compiled_graph as compile_claim
     from stiefelsym.backends.fields import ModularField
     from stiefelsym.run.runner import run_one
     from stiefelsym.scene import REALIZATIONS, Scene
@@ -516,7 +516,7 @@ def solve_affine(terms: Sequence[tuple[str, Callable[[Any], Any]]], target: Call
     """Every c with Σ cⱼ Tⱼ(s) = R(s) at random points of T*V over GF(2^61 − 1) (matrices: entry by
     entry), with rational coefficients reconstructed; a verdict on any solution is for the caller."""
     import flint
-    from stiefelsym.ir import compile_claim
+    from stiefelsym.ir import _compiled_graph as compile_claim
     from stiefelsym.backends.fields import ModularField
     from stiefelsym.scene import REALIZATIONS, Scene
 
@@ -834,7 +834,7 @@ def correction_space(ansatz: CorrectionAnsatz, size: Size | None = None, *, seed
     import flint
     from stiefelsym.claims import load_catalog
     from stiefelsym.backends.fields import ModularField
-    from stiefelsym.ir import compile_claim
+    from stiefelsym.ir import _compiled_graph as compile_claim
     from stiefelsym.run.runner import run_one
     from stiefelsym.scene import REALIZATIONS, Scene
 

@@ -668,7 +668,7 @@ def _graph_mutants(claim: Claim, sizes: Sequence[Size] | None = None, census: An
     size with no site that are not one computation are mutated at each size on its own
     (:func:`stiefelsym.ir.mutants.per_size_mutants`); otherwise (the correction search: a correction is one
     change at every size) such a claim is not covered."""
-    from stiefelsym.ir import compile_claim
+    from stiefelsym.ir import _compiled_graph as compile_claim
     from stiefelsym.ir.mutants import (STATEMENT_CHANGES, MutantCensus, SkeletonMismatch, per_size_mutants,
                                        site_mutants, sized_graph_mutants)
     from stiefelsym.ir.mutants import graph_mutants as on_graph

@@ -267,7 +267,7 @@ _REDUCTION_LATEX: dict = {}
 
 
 def latex_text(s: str) -> str:
-    """Plain text (a rule's reason) escaped for LaTeX text mode (memoized)."""
+    """Plain text (a rule's reason) in LaTeX text mode, its ASCII scripts set as scripts (memoized)."""
     hit = _LATEX_TEXT.get(s)
     if hit is None:
         hit = memo_put(_LATEX_TEXT, s, _latex_text(s), 10_000)
@@ -278,19 +278,9 @@ _LATEX_TEXT: dict = {}
 
 
 def _latex_text(s: str) -> str:
-    out = []
-    for ch in s:
-        if ch == "\\":
-            out.append(r"\textbackslash{}")
-        elif ch in "_{}&%$#":
-            out.append("\\" + ch)
-        elif ch == "^":
-            out.append(r"\^{}")
-        elif ch == "~":
-            out.append(r"\~{}")
-        else:
-            out.append(ch)
-    return "".join(out)
+    # ASCII scripts as scripts (X^T, I_r), everything else escaped (cond_XP stays as it is written)
+    from stiefelsym.latex import tex_words
+    return tex_words(s)
 
 
 class SharedMemos:

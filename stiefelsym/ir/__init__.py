@@ -7,6 +7,7 @@ along flows and gradients rewritten into ordinary nodes) →
 """
 from __future__ import annotations
 
+import pickle
 import threading
 from collections import OrderedDict
 from typing import Any, Callable
@@ -89,6 +90,14 @@ def _family_at(func: Callable, n: int, r: int) -> SizeFamily | None:
 
 def compile_claim(func: Callable, n: int | None, r: int | None, constraints: tuple[str, Callable],
                   family: SizeFamily | None = None) -> Graph:
+    """The graph of a claim's function (see :func:`_compiled_graph`), as a copy of its own: changing it
+    changes nothing the methods evaluate.  The engine evaluates the graph it keeps (the graph a method
+    evaluates is handed to no claim code, see docs/architecture.md)."""
+    return _compiled_graph(func, n, r, constraints, family).sealed()
+
+
+def _compiled_graph(func: Callable, n: int | None, r: int | None, constraints: tuple[str, Callable],
+                    family: SizeFamily | None = None) -> Graph:
     """The graph of a claim's function: traced once with symbolic sizes when it can be (then that one
     graph is the claim at every size: every fixed-size method and the dimension-free method evaluate
     the same graph, and the claim's code never runs at a number), otherwise at (n, r).  Each graph is
@@ -112,12 +121,13 @@ def compile_at_size(func: Callable, n: int, r: int, constraints: tuple[str, Call
     (``twice=False``) where it is only compared with a graph that was traced twice."""
     g = _compile(func, n, r, constraints, twice=twice, at_numbers=True)
     if isinstance(g, Graph):
-        return g
+        return g.sealed()
     raise _fresh(g)
 
 
 def _compile(func: Callable, n: int | None, r: int | None, constraints: tuple[str, Callable],
-             twice: bool = True, family: SizeFamily | None = None, at_numbers: bool = False) -> Any:
+             twice: bool = True, family: SizeFamily | None = None, at_numbers: bool = False,
+             cached: bool = True) -> Any:
     """The graph, or the exception that refused it (both cached per process), traced twice and compared
     (once where it is only compared with a graph that was: ``twice=False``).
 
@@ -129,15 +139,19 @@ def _compile(func: Callable, n: int | None, r: int | None, constraints: tuple[st
     give a graph at an unlisted size other than the one a proof for every n, r is about.  Only a claim
     refused with symbolic sizes (it read a size through the door of :class:`~.trace.Dim`, or asked for
     coordinates) is traced at (n, r), and it has no proof for every n, r (``at_numbers``: traced at
-    (n, r) whatever, for :func:`compile_at_size`)."""
+    (n, r) whatever, for :func:`compile_at_size`).
+
+    ``cached=False``: nothing is read from (or kept in) this process's caches, which claim code running in
+    the process can write (a claims file's tracing interpreter, :mod:`stiefelsym.run.userfile`: the file
+    was imported there, and a graph it put under its own function's key would be sent as its graph)."""
     if n is not None and not at_numbers:
-        free = _compile(func, None, None, constraints)
+        free = _compile(func, None, None, constraints, cached=cached)
         if isinstance(free, Graph):
-            return _typed_at(func, free, n, r, constraints)
+            return _typed_at(func, free, n, r, constraints, cached)
         # a claim stated on a family of sizes that traces on it: that graph is its graph at each of its sizes
         # (the claim's code runs at the numbers of a size only to be compared with it: the dimension-free
         # method's proof on the family is about the graph every method evaluates at every size of it)
-        fam = _family_at(func, n, r) if r is not None else None
+        fam = _family_at(func, n, r) if r is not None and cached else None
         if fam is not None:
             on_family = _compile(func, None, None, constraints, family=fam)
             if isinstance(on_family, Graph):
@@ -145,13 +159,13 @@ def _compile(func: Callable, n: int | None, r: int | None, constraints: tuple[st
     # by identity: a callable's own __eq__ is never asked; a graph traced once is kept apart from one
     # traced twice (a trace compared with itself is no determinism check)
     key = (id(func), n, r, family, constraints[0], twice)
-    for k in (key,) if twice else (key[:-1] + (True,), key):
+    for k in ((key,) if twice else (key[:-1] + (True,), key)) if cached else ():
         hit = _GRAPHS.get(k)
         if hit is not None and hit[0] is func:
             _GRAPHS.move_to_end(k)
             return hit[1]
     try:
-        seeded = _FIRST.pop((id(func), n, r, constraints[0]), None) if twice and family is None else None
+        seeded = _FIRST.pop((id(func), n, r, constraints[0]), None) if twice and family is None and cached else None
         if seeded is not None and seeded[0] is func:
             first = seeded[1]        # traced by the caller (first_trace): the trace below is the second
         else:
@@ -162,21 +176,52 @@ def _compile(func: Callable, n: int | None, r: int | None, constraints: tuple[st
         if first.digest() != second.digest():
             raise NotDeterministic("the claim is not deterministic: two tracings at the same size gave "
                                    "different graphs")
-        out: Any = first
+        out: Any = _replayed(func, first, n, r, constraints, family)
     except Exception as exc:      # noqa: BLE001 - the claim's own failure, reported by the caller
         exc._first_traceback = exc.__traceback__      # type: ignore[attr-defined]
         out = exc
-    return _remember(key, func, out)
+    return _remember(key, func, out) if cached else out
 
 
-def _typed_at(func: Callable, free: Graph, n: int, r: int, constraints: tuple[str, Callable]) -> Any:
+def _replayed(func: Callable, g: Graph, n: int | None, r: int | None, constraints: tuple[str, Callable],
+              family: SizeFamily | None) -> Graph:
+    """The type-checking pass: the claim's graph ``g`` replayed by the tracer (:class:`.replay.GraphClaim`:
+    engine code; no code of the claim runs) where it was traced, and the replay's graph returned in its
+    place once the two have the same digest.  Claim code can reach the graph it is traced into (Python
+    hides nothing) and change a node, or what a trace-time check reads, after the check; the replay makes
+    every node again from the final graph, with every check of the tracer, in a graph no claim code has
+    seen.  A graph that is not what the tracer makes of it is refused.  A graph claim (a replay already:
+    a mutant, a claims file's graph) is the tracer's output as it is."""
+    from stiefelsym.ir.replay import GraphClaim, ReplayError, SizedGraphClaim
+    if type(func) in (GraphClaim, SizedGraphClaim):
+        return g
+    try:
+        again = _clean(trace, GraphClaim(g, name=getattr(func, "__name__", "claim")), n, r, constraints, family)
+        _check_refusals(again)
+    except (TraceRefused, ReplayError) as exc:
+        raise TraceRefused("the claim's graph is refused when the tracer replays it (claim code changed the "
+                           f"graph it was traced into?): {str(exc).removeprefix('refused: ')}") from None
+    if again.digest() != g.digest():
+        raise NotDeterministic("the claim's graph is not what the tracer makes of it when replayed (claim code "
+                               "changed the graph it was traced into): no verdict is given")
+    # pure data of its own: the replay's literals (a Fraction, a size, an engine name) are objects the
+    # claim handed over or shares with other graphs; a copy through pickle holds none of them, so claim code
+    # that runs later (another claim's trace, a thread) cannot change the graph a method evaluates
+    out = pickle.loads(pickle.dumps(again, protocol=pickle.HIGHEST_PROTOCOL))
+    if out.digest() != g.digest():
+        raise NotDeterministic("the claim's graph changed while it was copied: no verdict is given")
+    return out
+
+
+def _typed_at(func: Callable, free: Graph, n: int, r: int, constraints: tuple[str, Callable],
+              cached: bool = True) -> Any:
     """The graph of symbolic sizes ``free`` as the claim's graph at (n, r), once it types there, or the
     refusal.  A size the claim wrote as an int (s.zeros(3, 2)) cannot be told from n, r with symbolic
     sizes; at (n, r) the graph is replayed by the tracer (:class:`.replay.GraphClaim`: engine code, no code
     of the claim runs, no trace of the claim holds a number), which checks every shape with the numbers."""
     from stiefelsym.ir.replay import GraphClaim
     key = (id(func), n, r, constraints[0], "typed")
-    hit = _GRAPHS.get(key)
+    hit = _GRAPHS.get(key) if cached else None
     if hit is not None and hit[0] is func:
         _GRAPHS.move_to_end(key)
         return hit[1]
@@ -193,7 +238,7 @@ def _typed_at(func: Callable, free: Graph, n: int, r: int, constraints: tuple[st
     except Exception as exc:      # noqa: BLE001 - reported by the caller
         exc._first_traceback = exc.__traceback__      # type: ignore[attr-defined]
         out = exc
-    return _remember(key, func, out)
+    return _remember(key, func, out) if cached else out
 
 
 def _same_at_numbers(func: Callable, on_family: Graph, n: int, r: int, constraints: tuple[str, Callable],

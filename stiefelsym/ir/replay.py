@@ -132,6 +132,11 @@ class _Replay:
         self.functions: dict[int, Callable] = {}
         # the nodes inside a function's span (replayed when the function is traced, not at the top)
         self.inner = [0] * len(self.ops)
+        # the values of the claim's dict (made in their order once the claim returned: see _structured)
+        out = gc._output
+        self.checks: frozenset[int] = frozenset()
+        if out is not None and self.ops[out.i] == "dict" and len(self.args[out.i]) == 2:
+            self.checks = frozenset(v.i for v in self.args[out.i][1] if type(v) is Ref)
         for k, (a, b) in self.spans.items():
             for i in range(a, b):
                 self.inner[i] = max(self.inner[i], 1)
@@ -150,7 +155,18 @@ class _Replay:
                 continue
             if op not in ("list", "tuple", "dict", "kw", "const"):   # containers: made where they are used
                 self.value(i, frame)
+            if top and i in self.checks and op in _STRUCTURED:
+                self._structured(i, frame)
             i += 1
+
+    def _structured(self, i: int, frame: _Frame) -> None:
+        """A value of the claim's dict (a Rank or Count statement, a list of residuals, a constant) made now,
+        in the graph's order: the tracer structures the dict's values in their order once the claim has
+        returned, and an inverse statement's elements, made between two of them, are made in order too."""
+        t = getattr(self.scene, "_t", None)
+        if t is None:
+            raise ReplayError("refused: a graph replayed on a scene that is not traced")
+        t.structure(self.value(i, frame))
 
     def _frame_of(self, i: int, frame: _Frame) -> _Frame:
         deps = self.deps[i]
@@ -355,6 +371,9 @@ class _Replay:
         fn.__name__ = f"replayed_function_{k}"
         return fn
 
+
+#: the ops of a value of the claim's dict that the tracer makes when it structures the dict
+_STRUCTURED = frozenset(("list", "tuple", "dict", "const", "rank", "count"))
 
 #: the replay of each op of the IR (and of nothing else)
 _DISPATCH: dict[str, Callable] = {op: getattr(_Replay, "_" + op) for op in OPS}

@@ -1544,6 +1544,24 @@ def same_scene_function(f: Any, scene: Any, value: Any, what: str) -> Any:
 _SIZE_MEMO: dict[tuple[int, str], Size] = {}
 
 
+def memo_problems() -> list[str]:
+    """What is wrong with the memos the tracer reads (each entry a function of its key: the shared references
+    and their text in a digest, the size expressions), where claim code that reached them changed them; empty
+    when they are as the engine made them."""
+    from stiefelsym.ir import graph as _graph
+    out = []
+    refs, texts = _graph._REFS, _graph._REF_TEXT
+    if len(refs) != len(texts) or any(type(x) is not Ref or len(x) != 1 or x[0] != i for i, x in enumerate(refs)):
+        out.append("a shared reference Ref(i) is not the i-th")
+    elif any(t != f"%{i}" for i, t in enumerate(texts)):
+        out.append("a reference's text in a digest is not %i")
+    for key, v in list(_SIZE_MEMO.items()):
+        if type(v) is not Size or type(key) is not tuple or (v.k, v.d, v.value) != (key[0], key[1], None):
+            out.append(f"the size expression of {key!r} is {v!r}")
+            break
+    return out
+
+
 def _size_numbers(n: int | None, r: int | None) -> Callable[[Size], int | None]:
     def number(size: Size) -> int | None:
         v = n if size.d == "n" else r

@@ -438,7 +438,7 @@ def run_free_union(claim: Claim, func: Callable, families: list[SizeFamily], t0:
 def evaluation_needs_text(claim: Claim, func: Callable, refusal: str) -> str:
     """Why a claim whose graph traces with symbolic sizes is left to the fixed-size methods: what the
     free scene refused, with what the claim's graph reads, when it names it."""
-    from stiefelsym.ir import compile_claim
+    from stiefelsym.ir import _compiled_graph as compile_claim
     from stiefelsym.ir.passes import coordinate_needs
     from stiefelsym.scene import REALIZATIONS
     needs: list[str] = []
@@ -458,7 +458,7 @@ def needs_text(claim: Claim, func: Callable, refusal: str, family: SizeFamily | 
     """Why a claim that does not trace with symbolic sizes (on its family of sizes) is left to the
     fixed-size methods, read from its graph at a fixed size (what it states and reads there), with the
     refusal that stopped the symbolic trace."""
-    from stiefelsym.ir import compile_claim
+    from stiefelsym.ir import _compiled_graph as compile_claim
     from stiefelsym.ir.passes import coordinate_needs
     from stiefelsym.scene import REALIZATIONS
     cons = REALIZATIONS[claim.realization]
@@ -498,7 +498,7 @@ def same_graph_at_fixed_sizes(claim: Claim, func: Callable, family: SizeFamily |
     of the family it is stated for (the digest leaves the values of sizes out); otherwise why not.  (A claim
     with a graph on a family only is traced at the numbers of each size; one that tells the two tracings
     apart is reported, not believed.)"""
-    from stiefelsym.ir import compile_at_size, compile_claim
+    from stiefelsym.ir import _compiled_graph as compile_claim, compile_at_size
     from stiefelsym.scene import REALIZATIONS
     cons = REALIZATIONS[claim.realization]
     free = compile_claim(func, None, None, (cons.name, cons.build), family=family).digest()
@@ -520,7 +520,7 @@ def graph_of_the_family(claim: Claim, func: Callable, family: SizeFamily) -> str
     must be that graph (a comparison of sizes is refused there, so the two agree for an honest claim), which
     is then replayed at the stated sizes, never traced at a number; a claim that traces on its family only
     (it compares its sizes) is traced at the family's sizes and compared (:func:`same_graph_at_fixed_sizes`)."""
-    from stiefelsym.ir import compile_claim
+    from stiefelsym.ir import _compiled_graph as compile_claim
     from stiefelsym.scene import REALIZATIONS
     cons = REALIZATIONS[claim.realization]
     try:
@@ -546,7 +546,7 @@ def typed_at_stated_sizes(claim: Claim, func: Callable) -> str:
     the tracer, :func:`stiefelsym.ir._typed_at`: no code of the claim runs); otherwise why not.  That it types
     is remembered per function and size statement (a graph of one function is the same graph at each call:
     :func:`stiefelsym.ir.compile_claim`); a refusal is found again each time."""
-    from stiefelsym.ir import compile_claim
+    from stiefelsym.ir import _compiled_graph as compile_claim
     from stiefelsym.scene import REALIZATIONS
     key = (id(func), id(claim.sizes), claim.realization)
     hit = _TYPED.get(key)

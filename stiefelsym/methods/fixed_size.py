@@ -37,7 +37,7 @@ from stiefelsym.claims import Claim, Count, Expired, Rank, deadline
 from stiefelsym.ir.statements import InverseIdentities
 from stiefelsym.methods import cayley_right, complex_right, costmodel
 from stiefelsym.methods.costmodel import BudgetError as BudgetError  # the methods raise it (re-exported)
-from stiefelsym.ir import compile_claim as _compile_whole
+from stiefelsym.ir import _compiled_graph as _compile_whole
 from stiefelsym.ir.derivative import derivatives, scene_flows
 from stiefelsym.ir.evaluate import evaluate
 from stiefelsym.ir.seal import verify as verify_engine
@@ -258,7 +258,7 @@ _CHECKS: "contextvars.ContextVar[tuple[Callable, frozenset[str]] | None]" = cont
     "stiefelsym_checks", default=None)
 
 
-def compile_claim(func: Callable, n: int | None, r: int | None, constraints: tuple[str, Callable],
+def _claim_graph(func: Callable, n: int | None, r: int | None, constraints: tuple[str, Callable],
                   family: Any = None) -> Any:
     """The claim's graph (:func:`stiefelsym.ir.compile_claim`), or, while the exact method proves a group
     of its checks (:data:`_CHECKS`), the slice of the graph those checks read
@@ -287,7 +287,7 @@ def call_claim(func: Callable, scene: Any, family: Any = None) -> dict[str, Any]
     if family is not None and not free:
         raise ValueError("a family of sizes is for a dimension-free scene")
     cons = REALIZATIONS[getattr(scene, "realization", None) or "standard"]
-    g = compile_claim(func, None if free else n, None if free else r, (cons.name, cons.build), family=family)
+    g = _claim_graph(func, None if free else n, None if free else r, (cons.name, cons.build), family=family)
     tracker = getattr(scene, "tracker", None)
     if tracker is not None:
         watched_spaces = {"?"} | set(tracker.spaces)
@@ -314,7 +314,7 @@ def draw_key(claim: Claim, n: int, r: int, seed: int, func: Callable | None = No
     them enters the digest they are drawn from.  The same commit, claim and seed give the same draws."""
     if graph is None:
         cons = REALIZATIONS[claim.realization or "standard"]
-        graph = compile_claim(func or claim.func, n, r, (cons.name, cons.build))
+        graph = _claim_graph(func or claim.func, n, r, (cons.name, cons.build))
     return f"{seed}|{graph.digest()}|{claim.id}|{n}|{r}"
 
 
@@ -1062,7 +1062,7 @@ def _reads_coordinates(claim: Claim, n: int, r: int, func: Callable, graph: Any 
     always seen by the scene's record while evaluating."""
     if graph is None:
         cons = REALIZATIONS[claim.realization]
-        graph = compile_claim(func, n, r, (cons.name, cons.build))
+        graph = _claim_graph(func, n, r, (cons.name, cons.build))
     g = graph
     out = g.cache.get("reads coordinates")      # a function of the graph: computed once per graph
     if out is None:
@@ -1085,7 +1085,7 @@ def _point_free(claim: Claim, n: int, r: int, func: Callable, graph: Any = None)
     g = graph
     if g is None:
         cons = REALIZATIONS[claim.realization]
-        g = compile_claim(func, n, r, (cons.name, cons.build))
+        g = _claim_graph(func, n, r, (cons.name, cons.build))
     return not any(op == "prim" or op == "attr" and a[1] in POINT_LEAVES for op, a in zip(g.ops, g.args))
 
 
@@ -1109,7 +1109,7 @@ def nonzero_statements(claim: Claim, n: int, r: int, func: Callable | None = Non
         return ""
     cons = REALIZATIONS[claim.realization or "standard"]
     try:
-        ops = set(compile_claim(func or claim.func, n, r, (cons.name, cons.build)).ops)
+        ops = set(_claim_graph(func or claim.func, n, r, (cons.name, cons.build)).ops)
     except Exception:   # noqa: BLE001 - the run itself meets what does not trace
         return ""
     found = [what for op, what in NOT_RESIDUALS.items() if op in ops]
@@ -1153,7 +1153,7 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
     try:
         with time_limit(time_budget):
             cons = REALIZATIONS[claim.realization or "standard"]
-            graph = compile_claim(func, n, r, (cons.name, cons.build))
+            graph = _claim_graph(func, n, r, (cons.name, cons.build))
             key = draw_key(claim, n, r, seed, func, graph)
             randomized = _RandomizedRank()
             charts: list[tuple[Scene, str]] = []
@@ -1392,7 +1392,7 @@ def _check_groups(claim: Claim, n: int, r: int, func: Callable) -> tuple[list[st
         return any(inv & {"?", "n"} for inv in coordinate_reads(g).values())
     try:
         cons = REALIZATIONS[claim.realization]
-        graph = compile_claim(func, n, r, (cons.name, cons.build))
+        graph = _claim_graph(func, n, r, (cons.name, cons.build))
         names = graph.output_keys()
         if names is None or len(names) < 2 or not reads_rn(graph):
             return None
@@ -1499,7 +1499,7 @@ class _Plan:
         # another graph), so the program of the plan is this run's only while the digest is the same
         try:
             cons = REALIZATIONS[claim.realization or "standard"]
-            if compile_claim(self.func, n, r, (cons.name, cons.build)).digest() != self.skey[0]:
+            if _claim_graph(self.func, n, r, (cons.name, cons.build)).digest() != self.skey[0]:
                 return None
         except Exception:       # noqa: BLE001 - the whole method reports the refusal
             return None
@@ -1673,7 +1673,7 @@ def _chart_checks(key: tuple, build: Callable[[], tuple], func: Callable, graph:
         g = graph
         if g is None:
             cons = REALIZATIONS[key[1] or "standard"]
-            g = compile_claim(func, key[3], key[4], (cons.name, cons.build))
+            g = _claim_graph(func, key[3], key[4], (cons.name, cons.build))
         skey = (g.digest(), *key[1:])
         hit = _STRAIGHT.get(skey)
         if calls is not None:
@@ -1897,7 +1897,7 @@ def _digest_now(claim: Claim, n: int, r: int, func: Callable) -> str | None:
     keeps a few dozen, and a function traced again may read state that changed since."""
     try:
         cons = REALIZATIONS[claim.realization or "standard"]
-        return compile_claim(func, n, r, (cons.name, cons.build)).digest()
+        return _claim_graph(func, n, r, (cons.name, cons.build)).digest()
     except Expired:
         raise
     except Exception:       # noqa: BLE001 - the claim's graph is refused: the run reports it
@@ -2806,7 +2806,7 @@ def _float_component(claim: Claim, n: int, r: int, seed: int, func: Callable, op
     run = _FloatRun("unresolved")
     nonzero_claim = claim.expect == "nonzero"
     cons = REALIZATIONS[claim.realization]
-    wide = outside_float_range(compile_claim(func, n, r, (cons.name, cons.build)))
+    wide = outside_float_range(_claim_graph(func, n, r, (cons.name, cons.build)))
     key = draw_key(claim, n, r, seed, func)
     for dps in ladder:
         if dps is None and wide:

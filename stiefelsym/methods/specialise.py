@@ -30,7 +30,7 @@ from typing import Any, Callable
 
 from stiefelsym.certificate_check import CASES, R1_ONLY, R2_ONLY, SQUARE, Rejected, coefficient
 from stiefelsym.claims import Claim
-from stiefelsym.ir import SizeFamily, compile_claim
+from stiefelsym.ir import SizeFamily, _compiled_graph as compile_claim
 from stiefelsym.methods import fixed_size
 from stiefelsym.methods.dimension_free import run_free, run_free_on, size_families
 from stiefelsym.results import Result

@@ -115,7 +115,7 @@ def _rank(rows: list[list[int]]) -> int:
 def named_part(fam: Family, d: Discovery, seed: int = 0) -> tuple[int, list[Integral]]:
     """dim (D ∩ N) and the elements of the basis of D that, added in turn, leave span(N, 1)."""
     from stiefelsym.backends.fields import ModularField
-    from stiefelsym.ir import compile_claim
+    from stiefelsym.ir import _compiled_graph as compile_claim
     from stiefelsym.scene import Scene
 
     integrals = list(d.integrals)

@@ -200,7 +200,7 @@ def shared_size(claim: Claim, size: Size | None, func: Callable | None = None, s
 
 
 def _shared_size(claim: Claim, size: Size, func: Callable | None, screen: bool) -> Size | None:
-    from stiefelsym.ir import compile_claim
+    from stiefelsym.ir import _compiled_graph as compile_claim
     from stiefelsym.ir.passes import r_dependence
     from stiefelsym.scene import REALIZATIONS
     cons = REALIZATIONS[claim.realization]
@@ -288,7 +288,7 @@ def graph_digest(claim: Claim, size: Size | None, func: Callable | None = None) 
     (traced once per process and size: a cache hit after the run).  With symbolic sizes, a claim stated at
     families of sizes (r = 1 and r = n, ...) that traces on each family but not on every size has the
     digest of its graphs on its families (those the dimension-free method proves it on)."""
-    from stiefelsym.ir import compile_claim
+    from stiefelsym.ir import _compiled_graph as compile_claim
     from stiefelsym.methods.dimension_free import stated_on
     from stiefelsym.scene import REALIZATIONS
     cons = REALIZATIONS[claim.realization]

@@ -103,6 +103,10 @@ class NoGraph(ValueError):
     """The claims file was traced in a child process, and not at the size or realization asked for."""
 
 
+class EngineStateChanged(RuntimeError):
+    """The engine's state in a tracing interpreter is not what the engine made of it (the file changed it)."""
+
+
 class TraceEnded(RuntimeError):
     """The claim's tracing in its claims file's child process ran out of time or ended its process: no graph,
     and no reading of the claim either (a run that meets it is ``inconclusive`` when the time budget ran out,
@@ -222,14 +226,22 @@ def _trace_one(func: Callable, realization: str, key: Any) -> Any:
     from stiefelsym.scene import REALIZATIONS
     cons = REALIZATIONS[realization]
     constraints = (cons.name, cons.build)
+    # the file was imported in this interpreter: no graph is taken from its caches (cached=False), and the
+    # tracer's memos must be what the engine made of them (memo_problems), before and after the tracing
+    from stiefelsym.ir.trace import memo_problems
     try:
+        if memo_problems():
+            raise EngineStateChanged(f"the tracer's memos were changed before the tracing: {memo_problems()[0]}")
         if key is None:
-            g = _compile(func, None, None, constraints)
+            g = _compile(func, None, None, constraints, cached=False)
         elif key[0] == "r":      # the family r = k, every n >= k (a claim's free_max_r)
             from stiefelsym.ir import SizeFamily
-            g = _compile(func, None, None, constraints, family=SizeFamily(key[1], key[1], one_of_every_r=True))
+            g = _compile(func, None, None, constraints, family=SizeFamily(key[1], key[1], one_of_every_r=True),
+                         cached=False)
         else:
-            g = _compile(func, key[0], key[1], constraints)
+            g = _compile(func, key[0], key[1], constraints, cached=False)
+        if memo_problems():
+            raise EngineStateChanged(f"the tracer's memos were changed while the claim was traced: {memo_problems()[0]}")
     except BaseException as exc:   # noqa: BLE001 - SystemExit, KeyboardInterrupt, anything: recorded
         return _refusal(exc)
     return _graph_state(g) if isinstance(g, Graph) else _refusal(g)
