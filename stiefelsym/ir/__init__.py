@@ -173,10 +173,12 @@ def _compile(func: Callable, n: int | None, r: int | None, constraints: tuple[st
         _check_refusals(first)
         second = _clean(trace, func, n, r, constraints, family) if twice else first
         _check_refusals(second)
+        for x in (first, second):
+            x.cache.clear()        # digests from the content now (claim code can reach a trace's graph)
         if first.digest() != second.digest():
             raise NotDeterministic("the claim is not deterministic: two tracings at the same size gave "
                                    "different graphs")
-        out: Any = _replayed(func, first, n, r, constraints, family)
+        out: Any = _replayed(func, first, n, r, constraints, family, cached)
     except Exception as exc:      # noqa: BLE001 - the claim's own failure, reported by the caller
         exc._first_traceback = exc.__traceback__      # type: ignore[attr-defined]
         out = exc
@@ -184,33 +186,56 @@ def _compile(func: Callable, n: int | None, r: int | None, constraints: tuple[st
 
 
 def _replayed(func: Callable, g: Graph, n: int | None, r: int | None, constraints: tuple[str, Callable],
-              family: SizeFamily | None) -> Graph:
+              family: SizeFamily | None, cached: bool = True) -> Graph:
     """The type-checking pass: the claim's graph ``g`` replayed by the tracer (:class:`.replay.GraphClaim`:
     engine code; no code of the claim runs) where it was traced, and the replay's graph returned in its
     place once the two have the same digest.  Claim code can reach the graph it is traced into (Python
     hides nothing) and change a node, or what a trace-time check reads, after the check; the replay makes
     every node again from the final graph, with every check of the tracer, in a graph no claim code has
     seen.  A graph that is not what the tracer makes of it is refused.  A graph claim (a replay already:
-    a mutant, a claims file's graph) is the tracer's output as it is."""
+    a mutant, a claims file's graph) is the tracer's output as it is.
+
+    The pass runs once a claims file has been imported into this process (the engine is sealed,
+    :mod:`.seal`: in a claims file's tracing interpreter, or in-process through ``load_claims_file``).
+    Before that, the process has run the engine's code, the reviewed catalog's and its caller's own, none
+    of which is a claims file to be guarded against (the seal's rule too): the first graph is the claim's."""
     from stiefelsym.ir.replay import GraphClaim, ReplayError, SizedGraphClaim
-    if type(func) in (GraphClaim, SizedGraphClaim):
+    from stiefelsym.ir.seal import sealed
+    if type(func) in (GraphClaim, SizedGraphClaim) or not sealed():
         return g
+    # a graph of this content (its digest, computed now) replayed and checked where it was traced already:
+    # that graph (a claim traced again, its graph dropped from the cache of graphs meanwhile)
+    key = (g.digest(), n, r, family, constraints[0])
+    hit = _VERIFIED.get(key) if cached else None
+    if hit is not None:
+        _VERIFIED.move_to_end(key)
+        return hit
     try:
         again = _clean(trace, GraphClaim(g, name=getattr(func, "__name__", "claim")), n, r, constraints, family)
         _check_refusals(again)
     except (TraceRefused, ReplayError) as exc:
         raise TraceRefused("the claim's graph is refused when the tracer replays it (claim code changed the "
                            f"graph it was traced into?): {str(exc).removeprefix('refused: ')}") from None
-    if again.digest() != g.digest():
+    if again.digest() != key[0]:
         raise NotDeterministic("the claim's graph is not what the tracer makes of it when replayed (claim code "
                                "changed the graph it was traced into): no verdict is given")
     # pure data of its own: the replay's literals (a Fraction, a size, an engine name) are objects the
     # claim handed over or shares with other graphs; a copy through pickle holds none of them, so claim code
     # that runs later (another claim's trace, a thread) cannot change the graph a method evaluates
     out = pickle.loads(pickle.dumps(again, protocol=pickle.HIGHEST_PROTOCOL))
-    if out.digest() != g.digest():
+    if out.digest() != key[0]:
         raise NotDeterministic("the claim's graph changed while it was copied: no verdict is given")
+    if cached:
+        _VERIFIED[key] = out
+    while len(_VERIFIED) > VERIFIED_CACHE_SIZE:
+        _VERIFIED.popitem(last=False)
     return out
+
+
+#: the graphs the type-checking pass replayed and copied (:func:`_replayed`), by digest and where they were
+#: traced: the graph of a claim traced again with the same content is that one
+_VERIFIED: "OrderedDict[tuple, Graph]" = OrderedDict()
+VERIFIED_CACHE_SIZE = 64
 
 
 def _typed_at(func: Callable, free: Graph, n: int, r: int, constraints: tuple[str, Callable],
