@@ -670,17 +670,22 @@ class NCPoly:
 
     def latex(self) -> str:
         """LaTeX with the paper's notation (X^{T}, (\\lambda I_n - A)^{-1}, tr)."""
+        return " ".join(self.latex_terms())
+
+    def latex_terms(self) -> list[str]:
+        """The terms of :meth:`latex`, each with its sign (the first without a plus), in its order."""
         if not self.terms:
-            return "0"
+            return ["0"]
         out = []
         for (tm, w), c in self._sorted_terms():
             body = " ".join([rf"\operatorname{{tr}}({word_latex(t)})" for t in tm]
                             + ([word_latex(w)] if w else []))
             if not body and self.row != SCALAR:
                 body = rf"\mathbf{{I}}_{{{self.row}}}"
-            out.append(_signed_term(c, body))
-        s = " ".join(out).strip()
-        return s[2:] if s.startswith("+ ") else s
+            out.append(_signed_term(c, body).strip())
+        if out[0].startswith("+ "):
+            out[0] = out[0][2:]
+        return out
 
 
 def word_latex(w: Word) -> str:

@@ -253,7 +253,7 @@ class Reduction:
         return text
 
     def _latex(self) -> str:
-        lines = [r"\begin{aligned}", rf"R &= {self.residual.latex()} \\"]
+        lines = [r"\begin{aligned}", "R &= " + _rows(self.residual.latex_terms()) + r" \\"]
         lines.append(rf"\operatorname{{nf}}(R) &= {self.normal_form.latex()}")
         lines.append(r"\end{aligned}")
         body = "\n".join(lines)
@@ -264,6 +264,23 @@ class Reduction:
 
 
 _REDUCTION_LATEX: dict = {}
+
+#: characters of LaTeX per row of a long residual in a derivation (a display row of about the page's width)
+ROW_CHARS = 160
+
+
+def _rows(terms: list[str]) -> str:
+    """The signed terms of a sum as the rows of an aligned display (each row about ROW_CHARS of LaTeX; the
+    report shrinks a display still wider than the page)."""
+    rows, row = [], ""
+    for t in terms:
+        if row and len(row) + len(t) > ROW_CHARS:
+            rows.append(row)
+            row = t
+        else:
+            row = f"{row} {t}" if row else t
+    rows.append(row)
+    return " \\\\\n  &\\quad ".join(rows)
 
 
 def latex_text(s: str) -> str:

@@ -39,6 +39,18 @@ from stiefelsym.free.letters import (X, Xt, P, Pt, A, Y, Yt, Q, Qt, AINV, DX, DX
 Function = Callable[[Any], Any]
 
 
+def _generic_tex(name: str) -> str:
+    """A generic letter's name in a derivation: a trailing number as a subscript (W1 as W_1), and the elements
+    of an inverse statement (InverseY1, InverseX2: the y and x of "op(inv(y)) = y") as y_1, x_2."""
+    m = re.fullmatch(r"(Inverse)?([A-Za-z]+?)(\d*)", name)
+    if m is None:
+        return name
+    base = m.group(2).lower() if m.group(1) and len(m.group(2)) == 1 else m.group(2)
+    if len(base) > 1:
+        base = rf"\mathit{{{base}}}"
+    return base + (f"_{{{m.group(3)}}}" if m.group(3) else "")
+
+
 def _raw(x: Any) -> Any:
     """What a traced function hands back is the engine's own value."""
     return x
@@ -1002,11 +1014,12 @@ class FreeScene(PaperObjects):
         # different letters (letters are compared by name); gen:S[nxn]:sym, gen:K[rxr]:skew, gen:G[nxr] with
         # gen:G[nxr]^T (no claim's name spells another: a name is letters and digits)
         key = f"gen:{name}[{m}x{k}]{suffix}"
+        tex = _generic_tex(name)
         if kind != "general":
             make = symmetric_letter if kind == "sym" else skew_letter
-            self._named.setdefault(key, make(key, m, name))
+            self._named.setdefault(key, make(key, m, tex))
         else:
-            G, _ = letter_pair(key, f"{key}^T", m, k, name, f"{name}^{{T}}")
+            G, _ = letter_pair(key, f"{key}^T", m, k, tex, f"{tex}^{{T}}")
             self._named.setdefault(key, G)
         return self._cached(key, lambda: self._prim(key, _w(self._named[key])))
 
