@@ -118,9 +118,11 @@ BOUND_EXPLANATION = (
 
 GRAPH_EXPLANATION = (
     "A claim is a function of the matrices X, P, A, … that returns its residuals (left side minus "
-    "right side).  It is evaluated once on symbols, which records it as a graph of matrix "
+    "right side).  It is evaluated on symbols, which records it as a graph of matrix "
     "operations (products, transposes, inverses, derivatives along a flow) with exact constants; "
-    "every method computes from that graph, never from the claim's code.  The digest is a "
+    "it is evaluated twice and the two graphs must agree (a claim of a user's file is also replayed "
+    "from its graph by the engine alone, which must give the same graph).  Every method computes "
+    "from that graph, never from the claim's code.  The digest is a "
     "SHA-256 hash of the graph (its first 12 hex digits are shown): two records with the same "
     "digest are about the same computation, and the command stiefelsym check compares it when it "
     "traces every record again.")
