@@ -335,3 +335,19 @@ def test_a_trace_fallback_is_recorded_by_every_system_that_meets_it(monkeypatch)
     assert a.trace_fallbacks
     b.reduce(tr)
     assert b.trace_fallbacks == a.trace_fallbacks
+
+
+def test_a_long_residual_is_set_over_rows_and_the_letters_of_an_inverse_statement_read_y_x():
+    """The runs appendix: a residual wider than a line over rows of about ROW_CHARS of LaTeX (every term kept, in
+    order), and an inverse statement's elements (InverseY1) as y_1 (stop 59)."""
+    from stiefelsym.free.rewriting import ROW_CHARS, _rows
+    from stiefelsym.free.scene import _generic_tex
+    terms = [rf"+ \frac{{1}}{{2}} X^{{T}} X y_{{{k}}}" for k in range(40)]
+    terms[0] = terms[0][2:]
+    text = _rows(terms)
+    rows = text.split(" \\\\\n  &\\quad ")
+    assert len(rows) > 1 and all(len(r) <= ROW_CHARS for r in rows)
+    assert " ".join(rows) == " ".join(terms)
+    assert _rows(["a", "+ b"]) == "a + b"
+    assert [_generic_tex(x) for x in ("InverseY1", "InverseX2", "W1", "U", "Xi")] == \
+        ["y_{1}", "x_{2}", "W_{1}", "U", r"\mathit{Xi}"]

@@ -547,3 +547,44 @@ def test_a_claim_cannot_change_the_literals_of_another_claims_compiled_graph():
         for m in ("exact", "rational", "modular", "float"):
             res = run_one(reg.get(cid), Size(3, 2), m, 0)
             assert res.verdict == "fails", (cid, m, res.verdict, res.message)
+
+
+def _statements_claim(order, early):
+    from stiefelsym import Count, Inverse, Rank, RightInverse
+
+    def kinds(s):
+        return {"rank": lambda: Rank(s.mat([[s.tr(s.X.T @ s.P), 1], [0, 1]]), 2, generic=True),
+                "count": lambda: Count(3, 3),
+                "list": lambda: [s.X - s.X, s.P.T @ s.X + s.X.T @ s.P],
+                "tuple": lambda: (s.X.T @ s.X - s.identity(s.r),),
+                "const": lambda: 0,
+                "inv": lambda: Inverse(lambda t, x: 2 * x, lambda t, y: y / 2, on="Sym(r)"),
+                "rinv": lambda: RightInverse(lambda t, x: x + x.T, lambda t, y: y / 2, on=("R^{r×r}",), to=("Sym(r)",)),
+                "nested": lambda: [[s.X - s.X], (s.P - s.P,)]}
+
+    def func(s):
+        ks = kinds(s)
+        made = {k: ks[k]() for k in order} if early else {}
+        return {f"{k}{i}": made[k] if early else ks[k]() for i, k in enumerate(order)}
+    return func
+
+
+@pytest.mark.parametrize("seed", range(12))
+def test_the_replay_makes_the_claims_statements_in_the_graphs_order(seed):
+    """The type-checking replay makes the values of the claim's dict (Rank, Count, lists, constants) where the
+    graph has them: a Rank before an inverse statement replayed to another graph (an honest claim got `error`,
+    stop 59).  Random orders of statements, made before the dict or in it, replay to the same digest; a graph
+    whose order is changed does not."""
+    import random
+    from stiefelsym.ir.replay import GraphClaim
+    rng = random.Random(seed)
+    names = ["rank", "count", "list", "tuple", "const", "inv", "rinv", "nested"]
+    order = rng.sample(names, rng.randint(2, len(names)))
+    func = _statements_claim(order, rng.random() < 0.5)
+    for z in ((None, None), (3, 2)):
+        g = trace(func, *z, STANDARD)
+        assert not g.refusals
+        assert trace(GraphClaim(g), *z, STANDARD).digest() == g.digest(), (order, z)
+    # negative control: the same values in another order are another graph
+    other = _statements_claim(list(reversed(order)), False)
+    assert trace(other, 3, 2, STANDARD).digest() != trace(func, 3, 2, STANDARD).digest()

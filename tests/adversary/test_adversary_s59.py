@@ -86,3 +86,14 @@ def test_files_that_write_the_engines_private_caches_are_verified_correctly_when
                     "s59r-thread-rewrite", "s59r-thread-control"):
             for m in ("exact", "float"):
                 assert run_one(c, Size(3, 2), m, 0).verdict == "fails", (name, c.id, m)
+
+
+def test_a_graph_claim_with_an_edit_of_the_files_own_gets_no_passing_verdict():
+    """The claim function is the engine's GraphClaim with an edit written in the file, run during the replay
+    after the first inverse statement's checks, which points its division by 2 at tr(PᵀP).  The engine
+    re-checks every inverse statement of the claim's dict once the dict is made: `error`, not a verdict on the
+    rewritten graph (stop 59, own attempt)."""
+    reg = load_claims_file(str(HERE / "graph_claim_edits.py"))
+    for m in ("exact", "rational", "modular", "float"):
+        res = run_one(reg.get("s59-graph-claim-edits"), Size(3, 2), m, 0)
+        assert res.verdict == "error" and "divides by a number that is not a constant" in res.message, (m, res)
