@@ -192,16 +192,16 @@ def _replayed(func: Callable, g: Graph, n: int | None, r: int | None, constraint
     place once the two have the same digest.  Claim code can reach the graph it is traced into (Python
     hides nothing) and change a node, or what a trace-time check reads, after the check; the replay makes
     every node again from the final graph, with every check of the tracer, in a graph no claim code has
-    seen.  A graph that is not what the tracer makes of it is refused.  A graph claim (a replay already:
-    a mutant, a claims file's graph) is the tracer's output as it is.
+    seen.  A graph that is not what the tracer makes of it is refused.  A graph claim (a mutant, a claims
+    file's graph) is replayed too: its edits are functions, and a claims file can make one with its own.
 
     The pass runs once a claims file has been imported into this process (the engine is sealed,
     :mod:`.seal`: in a claims file's tracing interpreter, or in-process through ``load_claims_file``).
     Before that, the process has run the engine's code, the reviewed catalog's and its caller's own, none
     of which is a claims file to be guarded against (the seal's rule too): the first graph is the claim's."""
-    from stiefelsym.ir.replay import GraphClaim, ReplayError, SizedGraphClaim
+    from stiefelsym.ir.replay import GraphClaim, ReplayError
     from stiefelsym.ir.seal import sealed
-    if type(func) in (GraphClaim, SizedGraphClaim) or not sealed():
+    if not sealed():
         return g
     # a graph of this content (its digest, computed now) replayed and checked where it was traced already:
     # that graph (a claim traced again, its graph dropped from the cache of graphs meanwhile)
