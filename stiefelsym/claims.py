@@ -552,8 +552,9 @@ def load_claims_file(path: str | Path) -> Registry:
     standard error: standard output is left to the command's own output.
 
     The file is imported into this process and runs with its full powers: the engine sees a change of its
-    code (the seal) and refuses a graph changed behind the tracer (the replay), but code that writes the
-    engine's private state can change what is evaluated.  For a file you did not write, use
+    code or of a public attribute of its modules, contents included (the seal), and refuses a graph changed
+    behind the tracer (the replay), but code that writes the engine's private state (names with a leading
+    underscore) can change what is evaluated.  For a file you did not write, use
     :func:`stiefelsym.load` or ``stiefelsym verify --claims``, which import and trace it in fresh
     interpreters only (docs/architecture.md, "Where a claims file is trusted")."""
     from stiefelsym.run.pool import Terminated, stdout_to_stderr

@@ -351,3 +351,34 @@ def test_a_long_residual_is_set_over_rows_and_the_letters_of_an_inverse_statemen
     assert _rows(["a", "+ b"]) == "a + b"
     assert [_generic_tex(x) for x in ("InverseY1", "InverseX2", "W1", "U", "Xi")] == \
         ["y_{1}", "x_{2}", "W_{1}", "U", r"\mathit{Xi}"]
+
+
+def test_a_generic_letter_named_with_underscores_is_a_free_letter_as_on_every_other_scene(tmp_path):
+    """Names of a claim's generic matrices are letters, digits and underscores on every scene; the free scene
+    refused an underscore (eta_n), so a claim true for all n, r was undecided there while the fixed-size
+    methods took it (found by trying statements of the paper as a user, stop 60).  Under the free method the
+    true claim is proved, the false one keeps its letter in the residual; the derivation sets eta_n as
+    eta_{n}."""
+    from stiefelsym.claims import load_claims_file
+    from stiefelsym.free.scene import _generic_tex
+    from stiefelsym.run.runner import run_one
+    path = tmp_path / "names.py"
+    path.write_text('''
+from stiefelsym import admissible, claim, comm
+
+@claim("names-true", paper="user", kind="id", sizes=admissible(n_max=4))
+def names_true(s):
+    eta, v = s.generic("eta_n", "n", "n", "sym"), s.X @ s.X.T
+    Q = s.In - v
+    return {"[eta, v]": comm(eta, v) - (Q @ eta @ v - v @ eta @ Q)}
+
+@claim("names-false", paper="user", kind="id", sizes=admissible(n_max=4))
+def names_false(s):
+    eta, v = s.generic("eta_n", "n", "n", "sym"), s.X @ s.X.T
+    return {"[eta, v]": comm(eta, v) - eta @ v}
+''')
+    reg = load_claims_file(str(path))
+    assert run_one(reg.get("names-true"), None, "free", 0).verdict == "proved"
+    res = run_one(reg.get("names-false"), None, "free", 0)
+    assert res.verdict == "undecided" and "eta_n" in (res.message or ""), res.message
+    assert [_generic_tex(x) for x in ("eta_n", "W1_b", "x_")] == [r"\mathit{eta}_{n}", "W_{1,b}", r"x\_"]

@@ -688,7 +688,8 @@ def test_exact_residual_texts_of_metric_flow_mutants_do_not_depend_on_the_run():
 def test_a_symbolic_run_at_a_size_refuted_already_is_capped_by_a_count_of_term_products(monkeypatch):
     """While points are lent, a mutant's symbolic run at a size where the rational or modular method has refuted
     it stops at a product of more than MUTANT_REFUTED_TERM_PRODUCTS term products (here 1: at its first
-    product); at the other sizes, for the printed claim, and with fresh points, no run is capped."""
+    product); at the other sizes at MUTANT_TERM_PRODUCTS (far above these runs); for the printed claim and with
+    fresh points no run is capped."""
     import stiefelsym.analyses.mutate as mutate
     monkeypatch.setattr(mutate, "MUTANT_REFUTED_TERM_PRODUCTS", 1)
     claim = load_catalog().get("manakov-square")
@@ -707,3 +708,19 @@ def test_a_symbolic_run_at_a_size_refuted_already_is_capped_by_a_count_of_term_p
                 capped += cut
                 free += (c.n, c.r) not in refuted and c.verdict == "proved"
     assert capped and free
+
+
+def test_a_mutants_symbolic_run_is_capped_by_a_count_of_term_products_wherever_it_runs(monkeypatch):
+    """While points are lent, a mutant's symbolic run at a size where no point method refuted it stops at a
+    product of more than MUTANT_TERM_PRODUCTS term products (here 1: at its first product; a count, so it stops
+    at the same step on every machine, where a time would not); the printed claim is never capped."""
+    import stiefelsym.analyses.mutate as mutate
+    monkeypatch.setattr(mutate, "MUTANT_TERM_PRODUCTS", 1)
+    claim = load_catalog().get("manakov-square")
+    rep = run_mutation([claim], methods=("exact", "rational"), limit=6, lend=True)
+    cm = rep.claims[0]
+    assert all(c.verdict == "proved" for c in cm.baseline.cells if c.method == "exact")
+    unrefuted = [c for o in cm.mutants for c in o.cells if c.method == "exact" and not any(
+        d.method == "rational" and d.verdict == "fails" and (d.n, d.r) == (c.n, c.r) for d in o.cells)]
+    assert unrefuted and all(c.verdict == "inconclusive" and "(the cap is 1)" in c.message for c in unrefuted), \
+        [(c.n, c.r, c.verdict, c.message) for c in unrefuted]

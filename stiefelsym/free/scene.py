@@ -23,7 +23,7 @@ import symengine as se
 
 from stiefelsym.backends.fields import Dual, DualField, Field
 from stiefelsym.backends.matrix import CoordinateTracker, Mat, definite
-from stiefelsym.scene import (FRESH, check_generic_kind, TANGENT_KEYS, USER_SCALAR, Flow, HermitianComponents, PaperObjects, _fresh_key, _number,
+from stiefelsym.scene import (FRESH, check_generic_kind, user_name, TANGENT_KEYS, USER_SCALAR, Flow, HermitianComponents, PaperObjects, _fresh_key, _number,
                               map_entries)
 from stiefelsym.free.algebra import (LEADING, Letter, NCPoly, NeedsCoordinates, OperatorLetter, apply_operator, as_coef, coef_latex, derivation,
                       letter_pair, mark_moving, record_refusal, refuse, skew_letter, substitute, symmetric_letter, trace)
@@ -40,15 +40,21 @@ Function = Callable[[Any], Any]
 
 
 def _generic_tex(name: str) -> str:
-    """A generic letter's name in a derivation: a trailing number as a subscript (W1 as W_1), and the elements
-    of an inverse statement (InverseY1, InverseX2: the y and x of "op(inv(y)) = y") as y_1, x_2."""
-    m = re.fullmatch(r"(Inverse)?([A-Za-z]+?)(\d*)", name)
+    """A generic letter's name in a derivation: a trailing number and what follows an underscore as a subscript
+    (W1 as W_1, eta_n as eta_n, W1_b as W_{1,b}), and the elements of an inverse statement (InverseY1,
+    InverseX2: the y and x of "op(inv(y)) = y") as y_1, x_2."""
+    head, _, rest = name.partition("_")
+    m = re.fullmatch(r"(Inverse)?([A-Za-z]+?)(\d*)", head)
     if m is None:
-        return name
+        return name.replace("_", r"\_")
     base = m.group(2).lower() if m.group(1) and len(m.group(2)) == 1 else m.group(2)
     if len(base) > 1:
         base = rf"\mathit{{{base}}}"
-    return base + (f"_{{{m.group(3)}}}" if m.group(3) else "")
+    parts = rest.split("_") if "_" in name else []
+    if any(not x for x in parts):
+        return name.replace("_", r"\_")       # an empty part (x_, a__b): the name as it is written
+    sub = ",".join(x for x in (m.group(3), *parts) if x)
+    return base + (f"_{{{sub}}}" if sub else "")
 
 
 def _raw(x: Any) -> Any:
@@ -976,9 +982,7 @@ class FreeScene(PaperObjects):
         the coordinate scenes' operator does), each 𝔸⟨w⟩ an opaque skew n×n letter.  Its symmetry
         is a normal form of traces (:func:`~stiefelsym.free.algebra.operator_pair_rep`) and the
         rule of gradients (:func:`~stiefelsym.free.traces.gradient`); along a flow d𝔸(M) = 𝔸(dM)."""
-        if not re.fullmatch(r"[A-Za-z][A-Za-z0-9]*", str(name)):
-            raise ValueError(f"sym_operator({name!r}): a name is letters and digits (it names the operator's letters)")
-        op = str(name)
+        op = user_name(name, "sym_operator")
         scene = self
 
         def apply(M: Any) -> Mat:
@@ -1006,13 +1010,13 @@ class FreeScene(PaperObjects):
         (``kind`` "sym") or skew ("skew") one is a letter that is its own transpose, or minus it."""
         if m not in ("n", "r") or k not in ("n", "r"):
             raise ValueError(f"generic({name!r}, {m!r}, {k!r}): the index spaces are 'n' or 'r'")
-        if not re.fullmatch(r"[A-Za-z][A-Za-z0-9]*", str(name)):
-            raise ValueError(f"generic({name!r}): a name is letters and digits (it names a letter and its transpose)")
+        user_name(name, "generic")
         suffix = check_generic_kind(m, k, kind)
         # the letter's name holds its spaces and its kind, as the fixed-size scenes' keys do: the matrices of one
         # name on R^n x R^r, R^r x R^n, R^n x R^n, R^r x R^r, and the general, symmetric and skew ones, are all
         # different letters (letters are compared by name); gen:S[nxn]:sym, gen:K[rxr]:skew, gen:G[nxr] with
-        # gen:G[nxr]^T (no claim's name spells another: a name is letters and digits)
+        # gen:G[nxr]^T (no claim's name spells another: a name is letters, digits and underscores, as on every
+        # scene)
         key = f"gen:{name}[{m}x{k}]{suffix}"
         tex = _generic_tex(name)
         if kind != "general":

@@ -5,10 +5,16 @@ the engine's process, where nothing can be made unreachable.  What can be made
 certain is that a change is *seen*.  When the first user claims file is loaded,
 :func:`seal` imports every module a verdict depends on and records a
 fingerprint of the engine: every attribute of those modules (by identity), the
-code of every function and method, and the contents of the registries a claim
-could use to reach a method (engine steps, engine constants, whole-matrix
-backends, the evaluator's operations), with the top-level attributes of the
-numerical libraries the backends call.  After the file is imported, and before
+code of every function and method, the contents of every public attribute of
+those modules and of their classes (dicts, lists, tuples, sets, flags, the
+attributes of an engine object such as a bracket, to a fixed depth), and the
+contents of the registries a claim could use to reach a method (engine steps,
+engine constants, whole-matrix backends, the evaluator's operations), with the
+top-level attributes of the numerical libraries the backends call.  Private
+attributes (a leading underscore) are the engine's memos and caches, which
+change as it runs: code that writes them in the calling process is beyond what
+loading a file into that process can promise (docs/architecture.md, "Where a
+claims file is trusted").  After the file is imported, and before
 every evaluation of a graph, :func:`verify` computes the fingerprint again; a
 difference makes the file's loading fail (exit 2) or the run an ``error``.
 After sealing, the engine's registries take no new entries
@@ -24,6 +30,7 @@ import importlib
 import pkgutil
 import sys
 import types
+from fractions import Fraction
 from pathlib import Path
 from typing import Any
 
@@ -41,12 +48,16 @@ _REGISTRIES = (("stiefelsym.ir.trace", "PRIMITIVES"), ("stiefelsym.ir.trace", "_
                ("stiefelsym.methods.fixed_size", "_REGISTERED"), ("stiefelsym.ir.evaluate", "_ARITH"))
 
 
-#: module attributes watched: code, classes, modules and public constants (a tolerance, a limit);
-#: private values, flags and containers are the engine's state and caches (the registries below are
-#: watched by their contents)
+#: module attributes watched whatever their name: code, classes and modules; every public attribute of an
+#: engine module (and of its classes) is watched too, with its contents (:func:`_content`); private values,
+#: flags and containers are the engine's state and caches (the registries below are watched by their contents)
 _CODE = (types.FunctionType, staticmethod, classmethod, property, types.BuiltinFunctionType)
 _WATCHED = _CODE + (type, types.ModuleType)
 _CONSTANTS = (int, float, complex, str, bytes)
+#: values whose text is their content (exact types: a subclass is watched by identity and contents)
+_PLAIN = (int, float, complex, str, bytes, bool, type(None), Fraction)
+#: how deep the contents of a public attribute are read (a dict of tuples of sets: 3)
+_DEPTH = 4
 
 
 class EngineChanged(RuntimeError):
@@ -82,26 +93,100 @@ def _verdict_modules() -> list[str]:
     return names
 
 
+def _code_of(v: Any) -> str:
+    # only true functions are looked into (an arbitrary object's attributes may compute, import or
+    # change things when they are read)
+    if isinstance(v, (staticmethod, classmethod)):
+        v = v.__func__
+    if not isinstance(v, types.FunctionType):
+        return ""
+    return f"{id(v.__code__)}/{id(v.__defaults__)}/{id(v.__kwdefaults__)}"
+
+
+def _own_attributes(v: Any) -> dict | None:
+    """The instance attributes of an engine object (its ``__dict__`` and its slots), read without running
+    any of its code (no ``__getattr__``, no property); None for anything else."""
+    cls = type(v)
+    members = _SLOTS.get(cls)
+    if members is None:
+        members = _SLOTS[cls] = (
+            None if not str(getattr(cls, "__module__", "")).startswith("stiefelsym.") else
+            tuple((slot, m) for klass in cls.__mro__ for slot, m in vars(klass).items()
+                  if type(m) is types.MemberDescriptorType))
+    if members is None:
+        return None
+    out: dict = {}
+    try:
+        out.update(object.__getattribute__(v, "__dict__"))
+    except AttributeError:
+        pass
+    for slot, member in members:
+        try:
+            out[slot] = member.__get__(v, cls)
+        except AttributeError:
+            pass
+    return out
+
+
+#: class -> its slots' member descriptors (None: not an engine class), read once per class
+_SLOTS: dict[type, tuple | None] = {}
+
+
+def _content(v: Any, depth: int = _DEPTH, seen: dict | None = None) -> str:
+    """The text of a value by its contents: plain values by their repr, containers and engine objects by the
+    contents of their items (to ``depth`` levels), anything else by identity (and a function by its code and
+    the cells it closes over).  Every container is named by its identity too, so that a rebinding to an equal
+    copy is seen as well.  ``seen``: the objects whose contents one fingerprint has already read (by identity,
+    at the depth read), which are then named by identity only (a registry imported by five modules is read
+    once)."""
+    t = type(v)
+    if t in _PLAIN:
+        return f"{t.__name__}:{v!r}"
+    head = f"#{id(v)}:{_code_of(v)}"
+    if depth <= 0:
+        return head
+    if seen is not None:
+        if seen.get(id(v), -1) >= depth:
+            return head
+        seen[id(v)] = depth
+    if t is dict or t is types.MappingProxyType:
+        return head + "{" + ",".join(f"{_content(k, 1)}:{_content(w, depth - 1, seen)}"
+                                     for k, w in list(v.items())) + "}"
+    if t in (list, tuple, set, frozenset):
+        return head + "[" + ",".join(_content(w, depth - 1, seen) for w in list(v)) + "]"
+    if t is types.FunctionType:
+        return head + "(" + ",".join(_content(c, depth - 1, seen) for c in (v.__closure__ or ())) + ")"
+    if t is types.CellType:
+        try:
+            return head + _content(v.cell_contents, depth - 1, seen)
+        except ValueError:
+            return head
+    own = _own_attributes(v)
+    if own is not None:
+        return head + "{" + ",".join(f"{k}:{_content(w, depth - 1, seen)}" for k, w in own.items()
+                                     if not k.startswith("_")) + "}"
+    return head
+
+
 def _fingerprint(modules: list[str]) -> str:
     h = hashlib.sha256()
-
-    def code_of(v: Any) -> str:
-        # only true functions are looked into (an arbitrary object's attributes may compute, import or
-        # change things when they are read)
-        if isinstance(v, (staticmethod, classmethod)):
-            v = v.__func__
-        if not isinstance(v, types.FunctionType):
-            return ""
-        return f"{id(v.__code__)}/{id(v.__defaults__)}/{id(v.__kwdefaults__)}"
+    code_of = _code_of
+    seen: dict[int, int] = {}
 
     for name in modules:
         mod = sys.modules.get(name)
         if mod is None:
             h.update(f"{name}:absent\n".encode())
             continue
+        engine = name.startswith("stiefelsym")
         for attr, v in list(vars(mod).items()):
-            if not (isinstance(v, _WATCHED) or (isinstance(v, _CONSTANTS) and type(v) is not bool
-                                                and not attr.startswith("_"))):
+            public = not attr.startswith("_")
+            if engine and public and not isinstance(v, (type, types.ModuleType)):
+                # every public attribute of an engine module, with its contents (a dict of methods, the
+                # free algebra's dimensions, a set of leaves, a flag, a bracket object)
+                h.update(f"{name}.{attr}={_content(v, _DEPTH, seen)}\n".encode())
+                continue
+            if not (isinstance(v, _WATCHED) or (isinstance(v, _CONSTANTS) and type(v) is not bool and public)):
                 continue            # caches, flags and other state the engine changes as it runs
             if isinstance(v, types.ModuleType) and v.__name__ == f"{name}.{attr}" and _excluded(v.__name__):
                 continue            # a submodule no verdict depends on, imported later under its own name
@@ -110,6 +195,8 @@ def _fingerprint(modules: list[str]) -> str:
                 for k, w in list(vars(v).items()):
                     if isinstance(w, _CODE):
                         h.update(f"{name}.{attr}.{k}={id(w)}:{code_of(w)}\n".encode())
+                    elif engine and not k.startswith("_"):
+                        h.update(f"{name}.{attr}.{k}={_content(w, _DEPTH, seen)}\n".encode())
     for name, attr in _REGISTRIES:
         reg = getattr(sys.modules.get(name), attr, None)
         if isinstance(reg, dict):

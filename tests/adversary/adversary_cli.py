@@ -73,9 +73,18 @@ def parse(stdout):
     return out
 
 
+def refused(run) -> bool:
+    """The engine refused the claims file when it was loaded (it changed the engine: exit 2)."""
+    return run.returncode == 2 and ("registered by the engine" in run.stderr or "engine was changed" in run.stderr)
+
+
 def verdicts(claims_file, method, size="3,2", ids=()):
-    """{claim id: verdict} of one `stiefelsym verify` run."""
-    return parse(run_verify(claims_file, method, size, ids).stdout)
+    """{claim id: verdict} of one `stiefelsym verify` run; a file the engine refused when it was loaded has the
+    verdict "refused" for every claim named (and "*")."""
+    run = run_verify(claims_file, method, size, ids)
+    if refused(run):
+        return {cid: "refused" for cid in ids} | {"*": "refused"}
+    return parse(run.stdout)
 
 
 #: a verdict line with its method: "<claim> (n,r) <method>: <verdict>" or "<claim> all n, r free: <verdict>"
@@ -93,7 +102,7 @@ def verdicts_each(claims_file, methods, size="3,2", ids=()):
         [(None, cli("verify", *ids, "--claims", str(HERE / claims_file), "--size", size,
                     *[a for m in fixed for a in ("--method", m)]))] if fixed else [])
     for method, run in runs:
-        if run.returncode == 2 and ("registered by the engine" in run.stderr or "engine was changed" in run.stderr):
+        if refused(run):
             return {m: {cid: "refused" for cid in ids} | {"*": "refused"} for m in methods}
         for line in run.stdout.splitlines():
             m = METHOD_LINE.match(line)

@@ -8,7 +8,7 @@ import sys
 
 import pytest
 
-from adversary_cli import HERE, LINE, PASSING, ROOT, cli, verdicts, verdicts_each  # noqa: E402,F401
+from adversary_cli import HERE, LINE, PASSING, ROOT, cli, refused, verdicts, verdicts_each  # noqa: E402,F401
 
 
 # -- V'. the letters S, D, C, Dn and R(mu): combinations their rules do not cover ---------------------
@@ -181,8 +181,10 @@ def test_an_emptied_set_of_coordinate_steps_buys_no_reduction(method):
 
 
 def test_check_rejects_a_proof_made_with_a_seeded_probe(tmp_path):
-    cli("verify", "adv-state-probe-memo", "--claims", str(HERE / STATE), "--method", "free",
-        "--report-dir", str(tmp_path))
+    run = cli("verify", "adv-state-probe-memo", "--claims", str(HERE / STATE), "--method", "free",
+              "--report-dir", str(tmp_path))
+    if refused(run):        # the file writes a public frozenset of the engine at import (stop 60): no record
+        return
     (rec,) = json.loads((tmp_path / "results.json").read_text())["results"]
     assert rec["verdict"] not in PASSING or cli("check", str(tmp_path / "results.json")).returncode == 1, rec
 

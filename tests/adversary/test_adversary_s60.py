@@ -1,0 +1,61 @@
+"""Stop 60: public data of the engine's modules written by a claims file loaded in-process (tests/adversary/s60:
+the stop's own attacks; s60/review: the review's).  See tests/adversary/README.md."""
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+HERE = Path(__file__).resolve().parent / "s60"
+REVIEW = HERE / "review"
+ROOT = HERE.parents[2]
+METHODS = ("free", "exact", "rational", "modular", "float", "auto")
+
+#: loads a claims file in-process, runs one claim of it under every method, prints the verdicts as JSON (a fresh
+#: interpreter per case: a write into the engine stays for the process's life)
+_RUN = """
+import json, sys
+from stiefelsym.claims import CatalogError, Size, load_claims_file
+from stiefelsym.run.runner import run_one
+try:
+    reg = load_claims_file(sys.argv[1])
+except CatalogError as exc:
+    print(json.dumps({"load": str(exc)}))
+    raise SystemExit(0)
+out = {}
+for cid in sys.argv[2:]:
+    for m in %r:
+        res = run_one(reg.get(cid), None if m == "free" else Size(3, 2), m, 0)
+        out[f"{cid} {m}"] = [res.verdict, res.message or ""]
+print(json.dumps(out))
+""" % (METHODS,)
+
+
+def _in_process(path: Path, *ids: str) -> dict:
+    out = subprocess.run([sys.executable, "-c", _RUN, str(path), *ids], capture_output=True, text=True,
+                         cwd=str(ROOT), timeout=300)
+    assert out.returncode == 0, out.stderr[-2000:]
+    return json.loads(out.stdout.strip().splitlines()[-1])
+
+
+@pytest.mark.parametrize("name", ["seal_public_data", "seal_public_containers"])
+def test_a_file_that_writes_public_engine_data_at_import_is_refused_in_process(name):
+    """At import, the review's files wrote an entry of a public dict of the engine: the free algebra's value of
+    tr I_n (then tr I_n = tr I_r was proved for all n, r) or the method table (then X = 0 was checked by the
+    "modular" method).  The seal now reads every public attribute of the engine's modules with its contents, and
+    the file's loading fails."""
+    got = _in_process(REVIEW / f"{name}.py")
+    assert "the engine was changed by claim code" in got.get("load", ""), got
+
+
+@pytest.mark.parametrize("cid", ["s60-pub-dimensions", "s60-pub-runners", "s60-pub-class-flag",
+                                 "s60-pub-frozenset", "s60-pub-object", "s60-pub-module-flag"])
+def test_claim_code_that_writes_public_engine_data_while_traced_gets_error(cid):
+    """The class of the review's files, with the write made by the claim's code while it is traced: an entry of
+    a public dict, a class's public flag, a public frozenset rebound, an engine object's attribute, a module's
+    flag.  Before the change each write went unseen (the false claim got its verdict from the changed
+    engine); now every method gives `error`."""
+    got = _in_process(HERE / "public_writes.py", cid)
+    for key, (verdict, message) in got.items():
+        assert verdict == "error" and "the engine was changed by claim code" in message, (key, verdict, message)
