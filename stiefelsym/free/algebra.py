@@ -876,20 +876,20 @@ def evaluate(p: NCPoly, matrices: Mapping[str, Any], scalars: Mapping[Any, Any] 
 
 #: whether a letter that moves with the point in a way the free scene does not differentiate (a resolvent at
 #: a spectral parameter that moves, see FreeScene.resolvent) was ever made: until then no polynomial is searched
-MOVING_LETTERS: list[bool] = [False]
+_MOVING_LETTERS: list[bool] = [False]
 
 
 def mark_moving(L: Letter) -> Letter:
     """Mark L as moving with the point by a derivative the free scene's own derivations do not know (they
     refuse a polynomial that holds it; the derivative passes of the graph write its derivative)."""
     L.moving = True             # type: ignore[attr-defined]
-    MOVING_LETTERS[0] = True
+    _MOVING_LETTERS[0] = True
     return L
 
 
 def refuse_moving(p: "NCPoly", what: str, tracker: Any = None) -> None:
     """Refuse (recorded) to differentiate a polynomial that holds a letter marked by :func:`mark_moving`."""
-    if not MOVING_LETTERS[0]:
+    if not _MOVING_LETTERS[0]:
         return
 
     def moving(L: Letter) -> bool:

@@ -10,7 +10,11 @@ those modules and of their classes (dicts, lists, tuples, sets, flags, the
 attributes of an engine object such as a bracket, to a fixed depth), and the
 contents of the registries a claim could use to reach a method (engine steps,
 engine constants, whole-matrix backends, the evaluator's operations), with the
-top-level attributes of the numerical libraries the backends call.  Private
+public attributes of the numerical libraries the backends call and of Python's
+builtins (by identity), and the interpreter's trace, profile and garbage
+collection hooks (code that runs while the engine evaluates without being called
+by it).  The modules are read as they were when sealed, so a stand-in put in
+``sys.modules`` hides nothing (and is itself a change).  Private
 attributes (a leading underscore) are the engine's memos and caches, which
 change as it runs: code that writes them in the calling process is beyond what
 loading a file into that process can promise (docs/architecture.md, "Where a
@@ -39,8 +43,13 @@ from typing import Any
 #: sealing time (a claims file that changes one of them changes no verdict)
 _NOT_VERDICT = ("cli", "cli_", "notebook", "pytest_plugin", "distributed", "_dask_plugin", "speed", "costfit",
                 "report", "latex", "flows_report", "integrate", "mutate", "discover", "__main__", "proofs")
-#: third-party modules whose top-level attributes the backends call
-_LIBRARIES = ("numpy", "flint", "symengine", "fractions", "operator", "math", "mpmath", "random", "hashlib")
+#: third-party modules whose top-level attributes the backends call (every public one is watched by identity:
+#: numpy's ufuncs and array functions too), and Python's builtins
+_LIBRARIES = ("numpy", "flint", "symengine", "fractions", "operator", "math", "mpmath", "random", "hashlib",
+              "builtins")
+#: submodules of the libraries the engine reaches through their package on first use (numpy loads them on
+#: first access): imported when sealing, so that a claims file cannot put its own module there first
+_LIBRARY_SUBMODULES = ("numpy.random", "numpy.linalg")
 #: registries (module, attribute) whose contents are fingerprinted
 _REGISTRIES = (("stiefelsym.ir.trace", "PRIMITIVES"), ("stiefelsym.ir.trace", "_NAMED"),
                ("stiefelsym.ir.trace", "CONSTANT_PRIMITIVES"),
@@ -64,7 +73,7 @@ class EngineChanged(RuntimeError):
     """A claims file changed the engine (a module attribute, a function's code, a registry)."""
 
 
-_STATE: dict[str, Any] = {"modules": None, "print": None}
+_STATE: dict[str, Any] = {"modules": None, "print": None, "objects": None, "submodules": None}
 
 
 def sealed() -> bool:
@@ -168,19 +177,39 @@ def _content(v: Any, depth: int = _DEPTH, seen: dict | None = None) -> str:
     return head
 
 
-def _fingerprint(modules: list[str]) -> str:
+def _hooks() -> str:
+    """The interpreter's hooks through which code runs while the engine evaluates, without being called by it:
+    the trace and profile functions (of this thread and of new threads) and the garbage collector's callbacks."""
+    import gc
+    import threading
+    return (f"trace={id(sys.gettrace())} profile={id(sys.getprofile())} thread-trace={id(threading.gettrace())} "
+            f"thread-profile={id(threading.getprofile())} gc={[id(c) for c in list(gc.callbacks)]}")
+
+
+def _fingerprint(modules: list[str], objects: dict[str, Any] | None = None,
+                 submodules: frozenset | None = None) -> str:
+    """The fingerprint of ``modules``: read from ``objects`` (the module objects recorded when sealing, so that
+    a stand-in put in ``sys.modules`` hides nothing; whether ``sys.modules`` still holds them is part of the
+    fingerprint), with the interpreter's hooks.  ``submodules``: the (library, attribute) pairs that were
+    submodules when sealing (a library's submodule imported later, e.g. by the claims file, is not a change)."""
     h = hashlib.sha256()
     code_of = _code_of
     seen: dict[int, int] = {}
+    h.update(f"{_hooks()}\n".encode())
 
     for name in modules:
-        mod = sys.modules.get(name)
+        mod = sys.modules.get(name) if objects is None else objects.get(name)
+        h.update(f"{name}:{id(mod)}:{id(sys.modules.get(name))}\n".encode())
         if mod is None:
-            h.update(f"{name}:absent\n".encode())
             continue
         engine = name.startswith("stiefelsym")
         for attr, v in list(vars(mod).items()):
             public = not attr.startswith("_")
+            if not engine and public:
+                if isinstance(v, types.ModuleType) and submodules is not None and (name, attr) not in submodules:
+                    continue        # a submodule of the library imported since (by the claims file, say)
+                h.update(f"{name}.{attr}={id(v)}:{code_of(v)}\n".encode())
+                continue
             if engine and public and not isinstance(v, (type, types.ModuleType)):
                 # every public attribute of an engine module, with its contents (a dict of methods, the
                 # free algebra's dimensions, a set of leaves, a flag, a bracket object)
@@ -197,20 +226,24 @@ def _fingerprint(modules: list[str]) -> str:
                         h.update(f"{name}.{attr}.{k}={id(w)}:{code_of(w)}\n".encode())
                     elif engine and not k.startswith("_"):
                         h.update(f"{name}.{attr}.{k}={_content(w, _DEPTH, seen)}\n".encode())
+    def module(name: str) -> Any:
+        return sys.modules.get(name) if objects is None else objects.get(name, sys.modules.get(name))
+
     for name, attr in _REGISTRIES:
-        reg = getattr(sys.modules.get(name), attr, None)
+        reg = getattr(module(name), attr, None)
         if isinstance(reg, dict):
             for k, v in list(reg.items()):
                 h.update(f"{name}.{attr}[{k!r}]={id(v)}\n".encode())
-    ops = getattr(getattr(sys.modules.get("stiefelsym.ir.evaluate"), "Evaluator", None), "_ops", {})
+    ops = getattr(getattr(module("stiefelsym.ir.evaluate"), "Evaluator", None), "_ops", {})
     for k, v in list(ops.items()):
         h.update(f"_ops[{k!r}]={id(v)}:{code_of(v)}\n".encode())
     return h.hexdigest()
 
 
 def import_engine() -> list[str]:
-    """Import every module a verdict depends on (and those they import on first use); their names."""
-    names = _verdict_modules()
+    """Import every module a verdict depends on (and those they import on first use); their names, the
+    package's own first."""
+    names = ["stiefelsym"] + _verdict_modules()
     for name in names:
         importlib.import_module(name)
     for name in names:              # modules imported on first use: imported now (see stiefelsym._lazy)
@@ -229,18 +262,24 @@ def seal() -> None:
         hook = vars(sys.modules[name]).get("_on_seal")
         if isinstance(hook, types.FunctionType):
             hook()
+    for name in _LIBRARY_SUBMODULES:
+        importlib.import_module(name)
     modules = names + [m for m in _LIBRARIES if m in sys.modules]
-    _STATE["print"] = _fingerprint(modules)
-    _STATE["modules"] = modules
+    objects = {name: sys.modules.get(name) for name in modules}
+    submodules = frozenset((name, attr) for name in modules if not name.startswith("stiefelsym")
+                           for attr, v in list(vars(objects[name]).items()) if isinstance(v, types.ModuleType))
+    _STATE["print"] = _fingerprint(modules, objects, submodules)
+    _STATE.update(modules=modules, objects=objects, submodules=submodules)
 
 
 def verify(when: str) -> None:
     """Raise :class:`EngineChanged` when the engine is not what it was when sealed."""
     if not sealed():
         return
-    if _fingerprint(_STATE["modules"]) != _STATE["print"]:
+    if _fingerprint(_STATE["modules"], _STATE["objects"], _STATE["submodules"]) != _STATE["print"]:
         raise EngineChanged(f"the engine was changed by claim code ({when}): a claims file may use the public "
-                            "API, not replace engine functions, steps, constants or backends; no verdict is given")
+                            "API, not replace engine functions, steps, constants, backends or their data, nor install "
+                            "trace, profile or garbage-collection hooks; no verdict is given")
 
 
 def refuse_registration(what: str) -> None:

@@ -227,12 +227,15 @@ HOOK = "profile_hook_evaluation.py"
 
 
 def test_a_profile_hook_of_the_claims_file_cannot_pass_a_false_claim():
-    v = {m: got["adv-profile-hook"] for m, got in verdicts_each(HOOK, ("free", "exact", "modular", "float")).items()}
+    v = {m: got.get("adv-profile-hook", got.get("*")) for m, got in
+         verdicts_each(HOOK, ("free", "exact", "modular", "float")).items()}
     assert not set(v.values()) & set(PASSING), v
 
 
 def test_check_rejects_a_proof_made_by_a_profile_hook(tmp_path):
-    cli("verify", "--claims", str(HERE / HOOK), "--method", "free", "--report-dir", str(tmp_path))
+    run = cli("verify", "--claims", str(HERE / HOOK), "--method", "free", "--report-dir", str(tmp_path))
+    if refused(run):        # the hook is in the seal's fingerprint (stop 60): the file is refused, no record
+        return
     (rec,) = json.loads((tmp_path / "results.json").read_text())["results"]
     assert rec["verdict"] not in PASSING or cli("check", str(tmp_path / "results.json")).returncode == 1, rec
 

@@ -59,3 +59,36 @@ def test_claim_code_that_writes_public_engine_data_while_traced_gets_error(cid):
     got = _in_process(HERE / "public_writes.py", cid)
     for key, (verdict, message) in got.items():
         assert verdict == "error" and "the engine was changed by claim code" in message, (key, verdict, message)
+
+
+@pytest.mark.parametrize("name", ["package_api", "swap_module", "swap_module_code", "profile_hook_results",
+                                  "profile_toggle"])
+def test_a_file_that_changes_what_the_engine_reads_without_writing_its_modules_is_refused_in_process(name):
+    """The second review's files, each a wrong verdict in-process before: `stiefelsym.claim` replaced in the package
+    (then a false catalog claim loaded after the file was proved), a stand-in for an engine module in sys.modules
+    (the seal read the stand-in, the engine its own module), a profile hook that rewrote the residuals while a
+    method evaluated them, or toggled the free algebra's dimensions around the seal's own checks.  The package is
+    sealed, the modules are read as they were when sealed, and the interpreter's hooks are in the fingerprint:
+    each file's loading fails."""
+    got = _in_process(HERE / "review2" / f"{name}.py")
+    assert "the engine was changed by claim code" in got.get("load", ""), got
+
+
+@pytest.mark.parametrize("cid", ["s60-int-package-export", "s60-int-stand-in-module", "s60-int-builtin",
+                                 "s60-int-numpy-function", "s60-int-profile-hook", "s60-int-gc-callback"])
+def test_claim_code_that_changes_what_the_engine_reads_while_traced_gets_error(cid):
+    """The class of the second review's files, the change made by the claim's code while it is traced: a package
+    export, a stand-in module, a builtin, a numpy function, a profile hook, a garbage-collector callback."""
+    got = _in_process(HERE / "interpreter_writes.py", cid)
+    for key, (verdict, message) in got.items():
+        assert verdict == "error" and "the engine was changed by claim code" in message, (key, verdict, message)
+
+
+def test_an_honest_file_is_not_taken_for_a_change_of_the_engine():
+    """False alarms the second review found: numpy.random imported on the engine's first use of it after sealing
+    (a block of 64 parameters or more, at (12, 1)), and a file that imports a numpy submodule itself."""
+    got = _in_process(HERE / "review2" / "honest_numpy_random.py", "s60r2-honest-npr")
+    assert all(v[0] in ("proved", "checked", "numeric") for v in got.values()), got
+    out = subprocess.run([sys.executable, str(HERE / "review2" / "run_honest_large.py")], capture_output=True,
+                         text=True, cwd=str(ROOT), timeout=300)
+    assert out.returncode == 0 and "error" not in out.stdout and "numeric" in out.stdout, out.stdout + out.stderr
