@@ -104,6 +104,10 @@ class Result:
         # two points, both sampled): its points decide it, nothing is left to chance
         bound = "" if p is None else " p=0 (degree 0 in the random parameters)" if p == 0 else f" p<={p:.1e}"
         reason = self.reason(limit)
+        msg = self.message or ""
+        if not reason and msg.startswith("exact: ") and "is above this claim's symbolic budget" not in msg:
+            # auto ran the exact method first, and its time is in the record's: say why it went on
+            reason = _clip("after exact: " + " ".join(msg[len("exact: "):].split("; ", 1)[0].split()), limit)
         seed = f", seed {self.seed}" if self.seed is not None else ", no randomness"
         # a dimension-free proof of a claim stated at one r says so after its verdict ("proved for every n at
         # r = 1"); the size field keeps its one form for every dimension-free run

@@ -472,6 +472,13 @@ def test_result_lines_give_the_witness_or_the_reason():
         assert " -- the reason on two lines xxx" in r.line() and r.line().endswith("...")
         assert r.reason(None).endswith("x" * 300)
     assert " -- " not in _result("checked").line()
+    # auto ran the exact method first (its time is in the record's): the line says why it went on, unless the
+    # size was above the claim's symbolic budget (no attempt was made)
+    tried = _result("checked", message="exact: the symbolic attempt ended without a verdict: out of memory; "
+                                       "2 independent points")
+    assert tried.line().endswith("-- after exact: the symbolic attempt ended without a verdict: out of memory")
+    skipped = _result("checked", message="exact: (6,3) is above this claim's symbolic budget (n <= 5); 2 points")
+    assert " -- " not in skipped.line()
 
 
 @needs_fork
