@@ -724,3 +724,18 @@ def test_a_mutants_symbolic_run_is_capped_by_a_count_of_term_products_wherever_i
         d.method == "rational" and d.verdict == "fails" and (d.n, d.r) == (c.n, c.r) for d in o.cells)]
     assert unrefuted and all(c.verdict == "inconclusive" and "(the cap is 1)" in c.message for c in unrefuted), \
         [(c.n, c.r, c.verdict, c.message) for c in unrefuted]
+
+
+def test_the_reports_account_of_the_mutants_symbolic_budgets_is_the_analysis_own():
+    """mutation.md says what budgets the symbolic method had on mutants: the numbers are the analysis's."""
+    import stiefelsym.analyses.mutate as mutate
+    from stiefelsym.reports.report import MUTATION_EXPLANATION
+
+    def power(k: int) -> str:
+        m, e = k, 0
+        while m % 10 == 0:
+            m, e = m // 10, e + 1
+        return f"{m} x 10^{e}" if m != 1 else f"10^{e}"
+    assert f"{mutate.MUTANT_EXACT_SECONDS:g} s per run of a mutant" in MUTATION_EXPLANATION
+    assert f"at most {power(mutate.MUTANT_TERM_PRODUCTS)} term products per symbolic product" in MUTATION_EXPLANATION
+    assert f"at most {power(mutate.MUTANT_REFUTED_TERM_PRODUCTS)} (a run stopped there" in MUTATION_EXPLANATION

@@ -1501,11 +1501,11 @@ MUTATION_EXPLANATION = (
     "(mutants - equivalent).  Unless the command says --fresh-points, the point methods (rational, "
     "modular, float) evaluate a mutant at the random points of the claim as printed and recompute "
     "only the subexpressions of its formula that the change reaches (parameters the printed claim never drew "
-    "are drawn afresh), and the symbolic method has 15 s per run of a mutant and, at a size where the "
+    "are drawn afresh), and the symbolic method has 15 s per run of a mutant and at most 3 x 10^7 term products "
+    "per symbolic product (a count: a run stops at the same step on every machine), and, at a size where the "
     "rational or modular method has refuted it already with an exact witness (there a symbolic run can only "
-    "err by proving it), at most 10^7 term products per symbolic product (a run stopped there is inconclusive: "
-    "it does not test the symbolic method on that mutant at that size); the point methods' verdicts are those "
-    "of fresh points, which the tests check.")
+    "err by proving it), at most 10^7 (a run stopped there is inconclusive: it does not test the symbolic method "
+    "on that mutant at that size); the point methods' verdicts are those of fresh points, which the tests check.")
 MUTATION_COLUMNS = ("mutants", "killed", "fails", "error", "other", "survived", "equivalent",
                     "unresolved", "missed", "kill rate")
 
