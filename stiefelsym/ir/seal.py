@@ -269,7 +269,7 @@ def seal() -> None:
     submodules = frozenset((name, attr) for name in modules if not name.startswith("stiefelsym")
                            for attr, v in list(vars(objects[name]).items()) if isinstance(v, types.ModuleType))
     _STATE["print"] = _fingerprint(modules, objects, submodules)
-    _STATE.update(modules=modules, objects=objects, submodules=submodules)
+    _STATE.update(modules=modules, objects=objects, submodules=submodules, hooks=_hooks())
 
 
 def verify(when: str) -> None:
@@ -277,6 +277,11 @@ def verify(when: str) -> None:
     if not sealed():
         return
     if _fingerprint(_STATE["modules"], _STATE["objects"], _STATE["submodules"]) != _STATE["print"]:
+        if _hooks() != _STATE.get("hooks"):
+            raise EngineChanged(f"the engine was changed by claim code ({when}): a trace, profile or garbage-collection "
+                                "hook was installed since the first claims file was loaded into this process (by the "
+                                "file's code, or by a debugger or profiler started since: start it before loading the "
+                                "file); no verdict is given")
         raise EngineChanged(f"the engine was changed by claim code ({when}): a claims file may use the public "
                             "API, not replace engine functions, steps, constants, backends or their data, nor install "
                             "trace, profile or garbage-collection hooks; no verdict is given")

@@ -92,3 +92,24 @@ def test_an_honest_file_is_not_taken_for_a_change_of_the_engine():
     out = subprocess.run([sys.executable, str(HERE / "review2" / "run_honest_large.py")], capture_output=True,
                          text=True, cwd=str(ROOT), timeout=300)
     assert out.returncode == 0 and "error" not in out.stdout and "numeric" in out.stdout, out.stdout + out.stderr
+
+
+def test_a_profiler_started_after_loading_is_named_in_the_refusal():
+    """A trace or profile function installed after a claims file was loaded in-process (by the file, a debugger or
+    a profiler) makes the next run `error`, and the message says which kind of change it was and what to do."""
+    script = (
+        "import sys\n"
+        "from stiefelsym.claims import load_claims_file\n"
+        "from stiefelsym.run.runner import run_one\n"
+        "c = list(load_claims_file(sys.argv[1]))[0]\n"
+        "size = list(c.sizes)[0]\n"
+        "print(run_one(c, size, 'modular', 0).verdict)\n"
+        "sys.setprofile(lambda *a: None)\n"
+        "res = run_one(c, size, 'modular', 0)\n"
+        "sys.setprofile(None)\n"
+        "print(res.verdict, res.message)\n")
+    out = subprocess.run([sys.executable, "-c", script, str(ROOT / "examples" / "my_claims.py")], capture_output=True,
+                         text=True, cwd=str(ROOT), timeout=300)
+    first, second = out.stdout.strip().splitlines()[-2:]
+    assert first == "checked" and second.startswith("error ") and "profile" in second and \
+        "start it before loading the file" in second, out.stdout + out.stderr
