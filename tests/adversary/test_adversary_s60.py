@@ -113,3 +113,16 @@ def test_a_profiler_started_after_loading_is_named_in_the_refusal():
     first, second = out.stdout.strip().splitlines()[-2:]
     assert first == "checked" and second.startswith("error ") and "profile" in second and \
         "start it before loading the file" in second, out.stdout + out.stderr
+
+
+def test_underscore_names_spell_no_other_letter():
+    """Own attempt on the free scene's underscore names (stop 60): false claims that would pass if a name with an
+    underscore met another letter (eta_n and etan, S_1 and the skew S, G_T and Gᵀ, eta_n sym and skew) are
+    undecided under the free method and fail under the fixed-size ones."""
+    from stiefelsym.claims import Size, load_claims_file
+    from stiefelsym.run.runner import run_one
+    reg = load_claims_file(str(HERE / "underscore_names.py"))
+    for c in reg:
+        assert run_one(c, None, "free", 0).verdict == "undecided", c.id
+        for m in ("exact", "modular", "float"):
+            assert run_one(c, Size(3, 2), m, 0).verdict == "fails", (c.id, m)
