@@ -557,3 +557,13 @@ def test_no_command_writes_reports_unless_asked(tmp_path, monkeypatch):
     assert r.exit_code == 2 and "--report-dir" in r.output
     r = runner.invoke(main, ["verify", "prep", "--size", "3,2", "--method", "modular", "--report-dir", "out"])
     assert r.exit_code == 0 and (tmp_path / "out" / "results.json").is_file()
+
+
+def test_the_platform_text_is_the_standard_librarys():
+    """cli.platform_text() is platform.platform(terse=True) without the processor name the standard library runs
+    `uname -p` for (it leaves it out on Linux where it is empty or the machine's name)."""
+    import platform
+    from stiefelsym.cli import platform_text
+    processor = platform.uname().processor
+    if processor in ("", platform.machine()) or platform.system() != "Linux":
+        assert platform_text() == platform.platform(terse=True)

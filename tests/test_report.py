@@ -644,3 +644,13 @@ def test_markdown_math_sets_the_underscore_of_a_name_in_text_as_math():
     from stiefelsym.reports.report import _md_math
     assert _md_math(r"\dot X=P\ \text{along (dot\_XP3*)},\ x_1\ \text{for every }\kappa") == \
         r"\dot X=P\ \text{along (dot}\_\text{XP3*)},\ x_1\ \text{for every }\kappa"
+
+
+def test_the_characters_left_out_of_junit_are_those_xml_does_not_allow():
+    """_XML_BAD is written as the class of what XML 1.0 leaves out (it compiles in a twentieth of the time of the
+    class of what it allows): over every code point, the two classes replace the same characters."""
+    import re
+    from stiefelsym.reports.report import _XML_BAD
+    allowed = re.compile("[^\t\n\r\x20-\ud7ff\ue000-\ufffd\U00010000-\U0010ffff]")
+    text = "".join(map(chr, range(0x110000)))
+    assert _XML_BAD.sub("?", text) == allowed.sub("?", text)

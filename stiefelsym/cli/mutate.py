@@ -13,7 +13,6 @@ from __future__ import annotations
 import json
 
 import os
-import platform
 import re
 import shlex
 import time
@@ -109,6 +108,11 @@ def _check_report_dir(d: Path) -> None:
 def _git_commit() -> str | None:
     from stiefelsym.cli import _commit
     return _commit()
+
+
+def _platform_text() -> str:
+    from stiefelsym.cli import platform_text
+    return platform_text()
 
 
 def _command(ids: Sequence[str], sizes: Sequence[str], methods: Sequence[str], seed: int,
@@ -279,7 +283,7 @@ def mutate(ids: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str, ...
                                                  else on_graphs.LETTER_SWAPS).items()},
         "date": started.strftime("%Y-%m-%d %H:%M:%S UTC"),
         "seconds": round(time.perf_counter() - t0, 2),
-        "platform": platform.platform(terse=True), "commit": _git_commit(),
+        "platform": _platform_text(), "commit": _git_commit(),
     }
     data = report.to_json()
     if fmt == "json":

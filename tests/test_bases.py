@@ -1,0 +1,94 @@
+"""stiefelsym.bases: the bases of so(m), Sym(m) and the matrix spaces, and the matrix of a linear map in them, used
+in claims the way a user writes them (tests/claims_bases.py): the true ranks are proved, the false twins fail, the
+dimension-free method leaves them undecided, and misuse is an error with a message."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from stiefelsym import Rank, admissible
+from stiefelsym.bases import coordinates, matrix_of, matrix_units, so_basis, sym_basis
+from stiefelsym.claims import Claim, Size, load_claims_file
+from stiefelsym.run.runner import run_one
+
+HERE = Path(__file__).resolve().parent
+
+
+@pytest.fixture(scope="module")
+def claims():
+    return {c.id: c for c in load_claims_file(HERE / "claims_bases.py")}
+
+
+TRUE = ("bases-action-rank", "bases-tangent-rank", "bases-sandwich-rank", "bases-ad-rank")
+FALSE = ("bases-action-rank-plus-one", "bases-ad-rank-full")
+
+
+@pytest.mark.parametrize("size", [(3, 1), (4, 2), (3, 3)])
+@pytest.mark.parametrize("cid", TRUE)
+def test_the_true_ranks_are_proved(claims, cid, size):
+    res = run_one(claims[cid], Size(*size), "exact", 0)
+    assert res.verdict == "proved", (cid, size, res.message)
+
+
+@pytest.mark.parametrize("size", [(3, 1), (4, 2), (3, 3)])
+@pytest.mark.parametrize("cid", FALSE)
+def test_the_false_twins_fail_under_exact(claims, cid, size):
+    res = run_one(claims[cid], Size(*size), "exact", 0)
+    assert res.verdict == "fails", (cid, size, res.message)
+
+
+@pytest.mark.parametrize("method", ["modular", "rational", "float", "auto"])
+@pytest.mark.parametrize("cid", FALSE)
+def test_the_false_twins_pass_under_no_method(claims, cid, method):
+    res = run_one(claims[cid], Size(4, 2), method, 0)
+    assert res.verdict not in ("proved", "checked", "numeric"), (cid, method, res.verdict, res.message)
+
+
+@pytest.mark.parametrize("cid", TRUE + FALSE)
+def test_the_dimension_free_method_leaves_them_undecided(claims, cid):
+    res = run_one(claims[cid], None, "free", 0)
+    assert res.verdict == "undecided", (cid, res.verdict, res.message)
+    assert "size (n) used as a number" in res.message or "fixed" in res.message
+
+
+def _claim(cid, kind, func, n, r):
+    return Claim(id=cid, paper=("toy",), kind=kind, section="", func=func,
+                 sizes=admissible(n_min=n, n_max=n, r_min=r, r_max=r))
+
+
+def test_the_bases_at_a_size():
+    """Counts, shapes, orthonormality for <a, b> = -tr(ab)/2 (so) and tr(aᵀb) (units), evaluated on an exact scene."""
+    out = {}
+
+    def shapes(s):
+        so, sym, units = so_basis(s, "n"), sym_basis(s, "r"), matrix_units(s, "n", "r")
+        out["counts"] = (len(so), len(sym), len(units))
+        # orthonormality of so(4) for the paper's form, and of the units for tr(aᵀb): Gram matrices minus I
+        gram_so = s.mat([[s.killing(a, b) for b in so] for a in so])
+        gram_units = s.mat([[s.tr(a.T @ b) for b in units] for a in units])
+        skew = [a + a.T for a in so]
+        symm = [a - a.T for a in sym]
+        return {"so Gram": gram_so - s.identity(len(so)), "units Gram": gram_units - s.identity(len(units)),
+                "skew": skew[0] + skew[-1], "sym": symm[0] + symm[-1]}
+    res = run_one(_claim("bases-shapes", "id", shapes, 4, 2), Size(4, 2), "exact", 0)
+    assert res.verdict == "proved", res.message
+    assert out["counts"] == (6, 3, 8)
+
+
+def test_misuse_is_an_error_with_a_message():
+    def bad_space(s):
+        return {"x": so_basis(s, "m")[0]}
+
+    def empty(s):
+        return {"rank": Rank(matrix_of(s, lambda e: e, so_basis(s, "r")), 0)}
+
+    def bad_kind(s):
+        return {"x": s.mat([coordinates(s.X, "skew")])}
+
+    for cid, kind, func, size, words in (("bases-bad-space", "id", bad_space, (3, 1), "'n' or 'r'"),
+                                         ("bases-empty", "dim", empty, (2, 1), "empty"),
+                                         ("bases-bad-kind", "id", bad_kind, (3, 2), "square")):
+        res = run_one(_claim(cid, kind, func, *size), Size(*size), "exact", 0)
+        assert res.verdict == "error", (cid, res.verdict, res.message)
+        assert words in res.message, (cid, res.message)
