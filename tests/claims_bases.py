@@ -55,3 +55,12 @@ def ad_rank_full(s):
     """A false twin of bases-ad-rank."""
     n = int(s.n)
     return {"rank": Rank(matrix_of(s, lambda e: comm(s.xi, e), so_basis(s, "n"), kind="skew"), n * (n - 1) // 2)}
+
+
+@claim("bases-zero-map-full-rank", kind="dim", sizes=SIZES, expect="fails",
+       erratum="a false twin: the map is 0 (X^T xi X is skew), not of full rank")
+def zero_map_full_rank(s):
+    """A false statement of full rank: xi -> XᵀξX + (XᵀξX)ᵀ is the zero map on so(n)."""
+    n = int(s.n)
+    M = matrix_of(s, lambda xi: s.X.T @ xi @ s.X + (s.X.T @ xi @ s.X).T, so_basis(s, "n"))
+    return {"rank": Rank(M, n * (n - 1) // 2)}

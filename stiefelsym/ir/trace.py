@@ -116,7 +116,7 @@ class Dim:
     range(n), n == 3, str(n), hash(n) ... all go through it), which asks the trace: at a fixed size
     the trace answers, traced with symbolic sizes the use is refused (and recorded).  So a claim
     that traces with symbolic sizes without a refusal read no size, and its graph at every size is
-    the same.  Apart from the door, a size may be multiplied by an int and used as a size of the
+    the same.  Apart from the door, a size may be multiplied by a positive int and used as a size of the
     scene's blocks; any other attribute is refused."""
 
     __slots__ = ("_expr", "_owner")
@@ -149,7 +149,9 @@ class Dim:
         return self._int(f"in {what}")
 
     def __mul__(self, c: Any) -> Any:
-        if type(c) is int and type(c) is not bool:
+        # a size times a positive int is a size (k·d); times 0 or a negative int it is no size of a space,
+        # only a number: through the door (a fixed size's number; refused with symbolic sizes)
+        if type(c) is int and c > 0:
             s = self._expr
             return Dim(Size(s.k * c, s.d, None), self._owner)
         return self._int() * (c._int() if type(c) is Dim else c)

@@ -15,6 +15,7 @@ and a check without entries is an error under every method.
 """
 from __future__ import annotations
 
+import contextlib
 import contextvars
 import dataclasses
 import functools
@@ -1150,6 +1151,8 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
     res = _base_result(claim, n, r, "exact", None)
     t0 = time.perf_counter()
     calls: list = []        # the charts evaluated, each (key, its program or None)
+    refuted: Result | None = None     # a rational point that refuted the claim before the Cayley chart (below)
+    graph: Any = None
     try:
         with time_limit(time_budget):
             cons = REALIZATIONS[claim.realization or "standard"]
@@ -1279,24 +1282,22 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                 # r = n, X = I, whose orbit under O(n) on the right is both components)
                 right = cayley_right.applies(graph, claim.realization, n, r)
                 comps = [] if unconstrained is not None else [0, 1] if r == n and not right else [0]
-                for comp in comps:
-                    def build_cayley(comp=comp) -> tuple:
-                        f = SymbolicField(width[0])
-                        return f, Scene(n, r, f, chart="cayley", component=comp, realization=claim.realization,
-                                        cayley_right=right, unitary_right=unitary)
-                    f2, sc, ch = _chart_checks((claim.id, claim.realization, "exact", n, r, "cayley", comp)
-                                               + (("right",) if right else ()) + (("unitary",) if unitary else ()),
-                                               build_cayley, func, graph, calls)
-                    width[0] = max(width[0], _ring_width(f2))
-                    evaluations.append(_evaluate(ch, f2, lambda R, f2=f2: _exact_rank(
-                        R, f2, randomized, lambda: degree_bound(claim, n, r, func).numerator, key)))
-                    if r == n and sc.second_point_read and len(comps) == 2:
-                        comps += [2, 3]
-                    desc = cayley_right.reduction(n, r) if right else REDUCED_CAYLEY_REDUCTION if r < n else CAYLEY_REDUCTION.format(
-                        D=" D" if r == n else "",
-                        comp=(f"; component {comp % 2 + 1} of O(n) (D = {'I' if comp % 2 == 0 else 'diag(-1,1,..,1)'})"
-                              if r == n else ""))
-                    charts.append((sc, desc + sc.second_point_text()))
+                # a residual already nonzero at an exact rational point of T*V is refuted: the symbolic
+                # Cayley chart then only writes the residual out, within a capped attempt (below)
+                refuted = _refuting_point(claim, n, r, seed, func, graph) if comps else None
+                try:
+                    with _capped_refutation(time_budget) if refuted is not None else contextlib.nullcontext():
+                        for comp in comps:
+                            f2, sc, ch = _cayley_chart(claim, n, r, func, graph, calls, width, comp, right, unitary)
+                            evaluations.append(_evaluate(ch, f2, lambda R, f2=f2: _exact_rank(
+                                R, f2, randomized, lambda: degree_bound(claim, n, r, func).numerator, key)))
+                            if r == n and sc.second_point_read and len(comps) == 2:
+                                comps += [2, 3]
+                            charts.append((sc, _cayley_text(n, r, comp, right) + sc.second_point_text()))
+                except (SymbolicBudget, _RefutedTimeout) as exc:
+                    if refuted is None:
+                        raise
+                    return _refuted_result(res, refuted, seed, exc, t0)
     except ExactTimeout as exc:
         res.verdict = "inconclusive"
         res.message = (str(exc) if str(exc).startswith("the function-field rank") else
@@ -1309,6 +1310,9 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
         res.seconds = time.perf_counter() - t0
         return res
     except SymbolicBudget as exc:
+        full = _full_ranks_at_points(claim, n, r, seed, func, graph, exc, t0)
+        if full is not None:
+            return full
         res.verdict = "inconclusive"
         res.message = (f"{exc} is beyond the symbolic method's budget (the randomized exact methods "
                        f"decide this size: --method modular, or auto)")
@@ -1354,7 +1358,7 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
         if nonzero:
             res.residual = f"{nonzero[0][1]} = {_short(_exact_text(nonzero[0][3], nonzero[0][2], SHORT + 1))}"
             res.certificate = "the residual is a nonzero function on the chart"
-            witness = _rational_witness(claim, n, r, seed, func)
+            witness = refuted.witness if refuted is not None else _rational_witness(claim, n, r, seed, func)
             if witness:
                 res.witness, res.seed = witness, seed
                 res.certificate += "; exact rational witness point attached"
@@ -1871,6 +1875,116 @@ def _symbolic_chart(key: tuple, build: Callable[[], tuple]) -> tuple:
     if _LOAN is None:
         return build()
     return _LOAN.chart(key, build)
+
+
+def _cayley_chart(claim: Claim, n: int, r: int, func: Callable, graph: Any, calls: list, width: list, comp: int,
+                  right: bool, unitary: bool) -> tuple:
+    """The claim's checks on the symbolic Cayley chart (component ``comp`` of O(n) at r = n; reduced by O(r) on the
+    right where ``right``): (field, scene, checks); ``width`` (the widest ring met so far) is updated."""
+    def build() -> tuple:
+        f = SymbolicField(width[0])
+        return f, Scene(n, r, f, chart="cayley", component=comp, realization=claim.realization,
+                        cayley_right=right, unitary_right=unitary)
+    f2, sc, ch = _chart_checks((claim.id, claim.realization, "exact", n, r, "cayley", comp)
+                               + (("right",) if right else ()) + (("unitary",) if unitary else ()),
+                               build, func, graph, calls)
+    width[0] = max(width[0], _ring_width(f2))
+    return f2, sc, ch
+
+
+def _cayley_text(n: int, r: int, comp: int, right: bool) -> str:
+    """The reduction the Cayley chart of component ``comp`` states."""
+    if right:
+        return cayley_right.reduction(n, r)
+    if r < n:
+        return REDUCED_CAYLEY_REDUCTION
+    return CAYLEY_REDUCTION.format(D=" D", comp=f"; component {comp % 2 + 1} of O(n) (D = "
+                                                 f"{'I' if comp % 2 == 0 else 'diag(-1,1,..,1)'})")
+
+
+#: where a rational point has refuted a claim already, the symbolic Cayley chart that writes its residual out
+#: stops at a product (or inverse step) of more than this many term products, the same step on every machine
+#: (the mutation analysis's cap for refuted sizes), or at REFUTED_SHARE of the time budget
+REFUTED_TERM_PRODUCTS = 10 ** 7
+REFUTED_SHARE = 0.25
+
+
+class _RefutedTimeout(Exception):
+    """The capped symbolic attempt after a refutation at a rational point ran out of its share of the time."""
+
+
+@contextmanager
+def _capped_refutation(time_budget: float | None) -> Iterator[None]:
+    from stiefelsym.backends.polyfield import term_cap, _TERM_CAP as current
+    limit = REFUTED_TERM_PRODUCTS if current is None else min(current, REFUTED_TERM_PRODUCTS)
+    seconds = REFUTED_SHARE * time_budget if time_budget is not None else UNCONSTRAINED_SECONDS
+    with term_cap(limit), deadline(seconds, "the symbolic residual of a refuted claim",
+                                   lambda message: _RefutedTimeout(message)):
+        yield
+
+
+def _refuting_point(claim: Claim, n: int, r: int, seed: int, func: Callable, graph: Any) -> Result | None:
+    """A one-point rational run (the seed's first rational point of T*V) that refutes the claim's residuals, or
+    None: a claim said not to vanish, a rank or a count (a point bounds those from one side only), a run that
+    does not fail with a witness.  A residual entry that is a nonzero rational number at an exact point of T*V
+    where the claim's computation divides by nothing that vanishes refutes the identity for certain (the exact
+    method's ``fails`` needs a witness of that kind, not the symbolic residual); the symbolic Cayley chart of a
+    false claim can swell far beyond that of the true one (a determinant identity with a sign wrong: 0.07 s
+    proved, over 120 s and out of memory refuted)."""
+    if claim.expect == "nonzero" or "rank" in graph.ops or "count" in graph.ops:
+        return None
+    try:
+        if _LOAN is not None and not _LOAN.recording:
+            witness = _rational_witness(claim, n, r, seed, func)
+            if not witness:
+                return None
+            point = _base_result(claim, n, r, "rational", seed)
+            point.verdict, point.witness = "fails", witness
+            return point
+        point = run_points(claim, n, r, "rational", seed, func, trials=1)
+    except Expired:
+        raise
+    except Exception:       # noqa: BLE001 - a degenerate point, anything: the symbolic chart decides as before
+        return None
+    return point if point.verdict == "fails" and point.witness else None
+
+
+def _full_ranks_at_points(claim: Claim, n: int, r: int, seed: int, func: Callable, graph: Any, why: Exception,
+                          t0: float) -> Result | None:
+    """Where the symbolic chart is beyond budget, a claim whose every check is a generic rank equal to its matrix's
+    full size is still proved exactly: a nonzero maximal minor at an exact rational point of T*V (on each component
+    of O(n) at r = n) is a nonzero rational function, and no rank exceeds the full size (the rational method's
+    proof, run here); and a claim the rational method refutes for certain (a rank above the printed one, or above
+    the full size, a nonzero residual at an exact point) fails.  None for any other outcome."""
+    if graph is None or "rank" not in graph.ops or claim.expect == "nonzero":
+        return None
+    try:
+        point = run_points(claim, n, r, "rational", seed, func)
+    except Expired:
+        raise
+    except Exception:       # noqa: BLE001 - the symbolic budget's verdict stands
+        return None
+    if point.verdict not in ("proved", "fails"):
+        return None      # a rank below the printed one at a point (a special point?), a bound too weak: as before
+    point.method = "exact"
+    point.reductions = [f"exact rational points of T*V drawn from the seed (the rational method's points; the "
+                        f"symbolic chart is beyond budget: {why})"] + list(point.reductions or [])
+    point.seconds = time.perf_counter() - t0
+    return point
+
+
+def _refuted_result(res: Result, point: Result, seed: int, why: Exception, t0: float) -> Result:
+    """The exact method's ``fails`` from a refuting rational point, where the symbolic residual is beyond its
+    capped attempt."""
+    res.verdict = "fails"
+    res.witness, res.seed = point.witness, seed
+    res.residual = point.residual
+    res.reductions = ["an exact rational point of T*V drawn from the seed (the rational method's first point: "
+                      "the Cayley chart at rational parameters)"]
+    res.certificate = (f"a residual entry is a nonzero rational number at an exact point of T*V (the witness); "
+                       f"the residual as a function on the symbolic Cayley chart was not written out ({why})")
+    res.seconds = time.perf_counter() - t0
+    return res
 
 
 def _rational_witness(claim: Claim, n: int, r: int, seed: int, func: Callable) -> dict | None:
