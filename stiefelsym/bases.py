@@ -20,9 +20,9 @@ reads n (or r) as a number: it is stated at fixed sizes only, and the dimension-
 refuses it (as it refuses any claim that reads a size as a number).
 
 The coordinates of a matrix in the image (the rows of :func:`matrix_of`) are its entries row by
-row, or only the independent ones of a skew ("skew": above the diagonal) or symmetric ("sym":
-on and above it) image; the rank of the map is the same for any basis of its domain and any
-coordinates of the space its image spans.
+row, or, for a skew ("skew") or symmetric ("sym") image, its independent entries first and then
+the combinations that vanish on such an image (see :func:`coordinates`): the rank of the map is
+the same for any basis of its domain, and these coordinates determine the matrix whatever it is.
 """
 from __future__ import annotations
 
@@ -73,10 +73,12 @@ def sym_basis(s: Any, space: str) -> list[Mat]:
 
 
 def coordinates(M: Mat, kind: str = "general") -> list[Any]:
-    """The coordinates of a matrix as a list of scalars: every entry row by row ("general"), the
-    entries above the diagonal of a skew matrix ("skew"), or on and above it of a symmetric one
-    ("sym").  For "skew" and "sym" nothing checks that M is skew or symmetric: state it as a
-    residual of its own (M + Mᵀ, M − Mᵀ) where it matters."""
+    """The coordinates of a matrix as a list of scalars: every entry row by row ("general"); for a square M, the
+    entries on and above the diagonal followed by M_ij − M_ji (i < j) ("sym"), or the entries above the diagonal
+    followed by the diagonal and M_ij + M_ji (i < j) ("skew").  The second part vanishes identically where M is
+    symmetric (skew), so it costs a rank nothing there; and since the coordinates determine M in every case, a
+    matrix of such columns has the rank of the map whatever its image is (a non-symmetric image written in "sym"
+    coordinates is not taken for its upper triangle)."""
     m, k = M.shape
     m, k = int(m), int(k)
     if kind == "general":
@@ -85,13 +87,16 @@ def coordinates(M: Mat, kind: str = "general") -> list[Any]:
         raise ValueError(f"coordinates: kind is 'general', 'skew' or 'sym', not {kind!r}")
     if m != k:
         raise ValueError(f"coordinates of a {kind} matrix: it is square, this one is {m}×{k}")
-    start = 1 if kind == "skew" else 0
-    return [M[i, j] for i in range(m) for j in range(i + start, m)]
+    pairs = [(i, j) for i in range(m) for j in range(i + 1, m)]
+    if kind == "sym":
+        return ([M[i, j] for i in range(m) for j in range(i, m)]
+                + [M[i, j] - M[j, i] for i, j in pairs])
+    return [M[i, j] for i, j in pairs] + [M[i, i] for i in range(m)] + [M[i, j] + M[j, i] for i, j in pairs]
 
 
 def matrix_of(s: Any, f: Callable[[Mat], Mat], basis: Sequence[Mat], kind: str = "general") -> Mat:
     """The matrix of the linear map f in the given basis of its domain: column j holds the
-    :func:`coordinates` (``kind``) of f(basis[j]).  Its rank is the rank of f; a ``Rank(...,
+    :func:`coordinates` (``kind``) of f(basis[j]), which determine f(basis[j]) whatever ``kind`` is.  Its rank is the rank of f; a ``Rank(...,
     kernel=K)`` certificate is written in the coordinates of the same basis (K has len(basis) rows).
     Nothing checks that f is linear: a map that is not gives the rank of the vectors f(basis[j])."""
     if not basis:

@@ -1310,7 +1310,7 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
         res.seconds = time.perf_counter() - t0
         return res
     except SymbolicBudget as exc:
-        full = _full_ranks_at_points(claim, n, r, seed, func, graph, exc, t0)
+        full = _decided_at_points(claim, n, r, seed, func, graph, exc, t0)
         if full is not None:
             return full
         res.verdict = "inconclusive"
@@ -1352,6 +1352,13 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
         else:
             res.verdict = "fails"
             res.certificate = "the residual vanishes identically on the chart"
+        return res
+    if refuted is not None and not (nonzero or problems):
+        # a rational point of T*V refuted the claim and the symbolic chart finds it identically 0: two evaluations
+        # of one graph disagree, which no claim can cause (an engine defect): neither verdict is given
+        res.verdict = "error"
+        res.message = ("the claim's residual is nonzero at an exact rational point of T*V and identically 0 on the "
+                       "symbolic chart: the two evaluations of its graph disagree (an engine defect; please report it)")
         return res
     if nonzero or problems:
         res.verdict = "fails"
@@ -1904,8 +1911,9 @@ def _cayley_text(n: int, r: int, comp: int, right: bool) -> str:
 
 #: where a rational point has refuted a claim already, the symbolic Cayley chart that writes its residual out
 #: stops at a product (or inverse step) of more than this many term products, the same step on every machine
-#: (the mutation analysis's cap for refuted sizes), or at REFUTED_SHARE of the time budget
-REFUTED_TERM_PRODUCTS = 10 ** 7
+#: (the mutation analysis's cap for its mutants; the largest step of a catalog run that finishes takes 1.3·10⁷),
+#: or at REFUTED_SHARE of the time budget
+REFUTED_TERM_PRODUCTS = 3 * 10 ** 7
 REFUTED_SHARE = 0.25
 
 
@@ -1949,16 +1957,23 @@ def _refuting_point(claim: Claim, n: int, r: int, seed: int, func: Callable, gra
     return point if point.verdict == "fails" and point.witness else None
 
 
-def _full_ranks_at_points(claim: Claim, n: int, r: int, seed: int, func: Callable, graph: Any, why: Exception,
-                          t0: float) -> Result | None:
-    """Where the symbolic chart is beyond budget, a claim whose every check is a generic rank equal to its matrix's
-    full size is still proved exactly: a nonzero maximal minor at an exact rational point of T*V (on each component
-    of O(n) at r = n) is a nonzero rational function, and no rank exceeds the full size (the rational method's
-    proof, run here); and a claim the rational method refutes for certain (a rank above the printed one, or above
-    the full size, a nonzero residual at an exact point) fails.  None for any other outcome."""
-    if graph is None or "rank" not in graph.ops or claim.expect == "nonzero":
+def _decided_at_points(claim: Claim, n: int, r: int, seed: int, func: Callable, graph: Any, why: Exception,
+                       t0: float) -> Result | None:
+    """Where a symbolic chart is beyond budget, what exact points of T*V still decide for certain.  A claim whose
+    every check is a generic rank equal to its matrix's full size is proved: a nonzero maximal minor at an exact
+    rational point (on each component of O(n) at r = n) is a nonzero rational function, and no rank exceeds the
+    full size (the rational method's proof, run here).  A claim the rational method refutes for certain (a rank
+    above the printed one or above the full size, a nonzero residual at an exact point) fails.  None for any other
+    outcome (the budget's verdict stands)."""
+    if graph is None or claim.expect == "nonzero":
         return None
     try:
+        if "rank" not in graph.ops and "count" not in graph.ops:
+            point = _refuting_point(claim, n, r, seed, func, graph)
+            if point is None:
+                return None
+            res = _base_result(claim, n, r, "exact", seed)
+            return _refuted_result(res, point, seed, why, t0, "the symbolic chart is beyond budget")
         point = run_points(claim, n, r, "rational", seed, func)
     except Expired:
         raise
@@ -1973,16 +1988,17 @@ def _full_ranks_at_points(claim: Claim, n: int, r: int, seed: int, func: Callabl
     return point
 
 
-def _refuted_result(res: Result, point: Result, seed: int, why: Exception, t0: float) -> Result:
+def _refuted_result(res: Result, point: Result, seed: int, why: Exception, t0: float,
+                    what: str = "the residual as a function on the symbolic Cayley chart was not written out") -> Result:
     """The exact method's ``fails`` from a refuting rational point, where the symbolic residual is beyond its
-    capped attempt."""
+    capped attempt (or a symbolic chart beyond budget)."""
     res.verdict = "fails"
     res.witness, res.seed = point.witness, seed
     res.residual = point.residual
     res.reductions = ["an exact rational point of T*V drawn from the seed (the rational method's first point: "
                       "the Cayley chart at rational parameters)"]
     res.certificate = (f"a residual entry is a nonzero rational number at an exact point of T*V (the witness); "
-                       f"the residual as a function on the symbolic Cayley chart was not written out ({why})")
+                       f"{what} ({why})")
     res.seconds = time.perf_counter() - t0
     return res
 

@@ -57,3 +57,25 @@ def test_where_the_symbolic_residual_is_within_the_cap_it_is_still_written_out()
                   "--method", "exact")
     assert rec["verdict"] == "fails" and "nonzero function on the chart" in rec["certificate"], rec
     assert "K_" in rec["residual"] and rec["witness"]["field"] == "rational", rec
+
+
+REVIEW2 = "s61/review2"
+
+
+def test_a_false_claim_beyond_the_equivariant_charts_budget_fails_under_exact():
+    """The second review: the realified complex point's column of norm 2 (false: 1) at (3,3) is beyond the
+    equivariant chart's symbolic budget, so the rational pre-check placed before the Cayley chart was never reached:
+    `inconclusive`.  Every symbolic budget now hands a claim of residuals to that point: `fails` with the witness."""
+    got = verdicts(f"{REVIEW2}/points2.py", "exact", size="3,3", ids=("p2-zc-false",))
+    assert got == {"p2-zc-false": "fails"}, got
+
+
+@pytest.mark.parametrize("method", ["exact", "auto", "modular"])
+def test_sym_coordinates_of_an_image_that_is_not_symmetric_do_not_hide_its_rank(method):
+    """The second review: `matrix_of(s, lambda v: s.X.T @ v, matrix_units(s, "n", "r"), kind="sym")` took the upper
+    triangle of a non-symmetric image, and the false rank r(r+1)/2 (the map has rank r²) was `proved`.  The "sym"
+    and "skew" coordinates now end with the combinations that vanish on such an image, so they determine the
+    matrix whatever it is: the rank is the map's, and the statement fails."""
+    for size in ("3,2", "4,3"):
+        got = verdicts(f"{REVIEW2}/dims_bases.py", method, size=size, ids=("b-sym-on-general-false",))
+        assert got == {"b-sym-on-general-false": "fails"}, (size, got)
