@@ -31,7 +31,7 @@ def test_the_true_ranks_are_proved(claims, cid, size):
     assert res.verdict == "proved", (cid, size, res.message)
 
 
-@pytest.mark.parametrize("size", [(3, 1), (4, 2), (3, 3)])
+@pytest.mark.parametrize("size", [(3, 1), (3, 3)])
 @pytest.mark.parametrize("cid", FALSE)
 def test_the_false_twins_fail_under_exact(claims, cid, size):
     res = run_one(claims[cid], Size(*size), "exact", 0)
@@ -41,7 +41,7 @@ def test_the_false_twins_fail_under_exact(claims, cid, size):
 @pytest.mark.parametrize("method", ["modular", "rational", "float", "auto"])
 @pytest.mark.parametrize("cid", FALSE)
 def test_the_false_twins_pass_under_no_method(claims, cid, method):
-    res = run_one(claims[cid], Size(4, 2), method, 0)
+    res = run_one(claims[cid], Size(3, 2), method, 0)
     assert res.verdict not in ("proved", "checked", "numeric"), (cid, method, res.verdict, res.message)
 
 
