@@ -4,10 +4,10 @@ A dimension statement of the paper is often the rank of a linear map between mat
 ξ ↦ ξX on so(n) (the infinitesimal action, (hat)), ad_μ on so(n), the differential of a map
 along the directions of a fibre.  Its matrix in bases of the two spaces is what ``Rank`` takes:
 
-    from stiefelsym import Rank, claim
+    from stiefelsym import Rank, admissible, claim
     from stiefelsym.bases import matrix_of, so_basis
 
-    @claim("my-action-rank", kind="dim")
+    @claim("my-action-rank", kind="dim", sizes=admissible(n_max=5, n_min=2, condition="n >= 2"))
     def action_rank(s):
         n, r = int(s.n), int(s.r)
         M = matrix_of(s, lambda xi: xi @ s.X, so_basis(s, "n"))

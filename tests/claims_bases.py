@@ -64,3 +64,14 @@ def zero_map_full_rank(s):
     n = int(s.n)
     M = matrix_of(s, lambda xi: s.X.T @ xi @ s.X + (s.X.T @ xi @ s.X).T, so_basis(s, "n"))
     return {"rank": Rank(M, n * (n - 1) // 2)}
+
+
+@claim("bases-skew-image-in-sym-coordinates", kind="dim", sizes=SIZES, expect="fails",
+       erratum="a false statement (own attempt): the image of xi -> X^T xi X is so(r), of dimension r(r-1)/2")
+def skew_image_in_sym_coordinates(s):
+    """A false statement written the careless way: the rank of ξ ↦ XᵀξX read in "sym" coordinates, claimed to be
+    dim Sym(r) = r(r+1)/2.  Its image is so(r): the sym coordinates' diagonal vanishes and Mᵢⱼ − Mⱼᵢ = 2Mᵢⱼ, so
+    the rank is r(r−1)/2 whatever the coordinates."""
+    r = int(s.r)
+    M = matrix_of(s, lambda xi: s.X.T @ xi @ s.X, so_basis(s, "n"), kind="sym")
+    return {"rank": Rank(M, r * (r + 1) // 2)}

@@ -106,3 +106,12 @@ def test_a_full_rank_beyond_the_symbolic_budget_is_proved_at_exact_points(claims
     zero = run_one(claims["bases-zero-map-full-rank"], Size(5, 5), "exact", 0)
     assert zero.verdict not in ("proved", "checked", "numeric"), (zero.verdict, zero.message)
     assert run_one(claims["bases-zero-map-full-rank"], Size(3, 2), "exact", 0).verdict == "fails"
+
+
+@pytest.mark.parametrize("method", ["exact", "modular", "rational", "float", "auto"])
+def test_a_skew_image_read_in_sym_coordinates_is_not_given_the_rank_of_sym(claims, method):
+    """Own attempt to fool the new coordinates: ξ ↦ XᵀξX (image so(r)) in "sym" coordinates, said to have rank
+    dim Sym(r).  No method passes it: exact and auto refute it (the rows' linear relations bound the rank by
+    r(r−1)/2), the point methods find rank 1 at their points and stay inconclusive (a point bounds from below)."""
+    res = run_one(claims["bases-skew-image-in-sym-coordinates"], Size(3, 2), method, 0)
+    assert res.verdict not in ("proved", "checked", "numeric"), (method, res.verdict, res.message)

@@ -1152,6 +1152,7 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
     t0 = time.perf_counter()
     calls: list = []        # the charts evaluated, each (key, its program or None)
     refuted: Result | None = None     # a rational point that refuted the claim before the Cayley chart (below)
+    tried_point = False               # whether that point was evaluated (a budget met later does not repeat it)
     graph: Any = None
     try:
         with time_limit(time_budget):
@@ -1285,6 +1286,7 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                 # a residual already nonzero at an exact rational point of T*V is refuted: the symbolic
                 # Cayley chart then only writes the residual out, within a capped attempt (below)
                 refuted = _refuting_point(claim, n, r, seed, func, graph) if comps else None
+                tried_point = bool(comps)
                 try:
                     with _capped_refutation(time_budget) if refuted is not None else contextlib.nullcontext():
                         for comp in comps:
@@ -1310,7 +1312,7 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
         res.seconds = time.perf_counter() - t0
         return res
     except SymbolicBudget as exc:
-        full = _decided_at_points(claim, n, r, seed, func, graph, exc, t0)
+        full = _decided_at_points(claim, n, r, seed, func, graph, exc, t0, tried_point)
         if full is not None:
             return full
         res.verdict = "inconclusive"
@@ -1958,18 +1960,19 @@ def _refuting_point(claim: Claim, n: int, r: int, seed: int, func: Callable, gra
 
 
 def _decided_at_points(claim: Claim, n: int, r: int, seed: int, func: Callable, graph: Any, why: Exception,
-                       t0: float) -> Result | None:
+                       t0: float, tried_point: bool = False) -> Result | None:
     """Where a symbolic chart is beyond budget, what exact points of T*V still decide for certain.  A claim whose
     every check is a generic rank equal to its matrix's full size is proved: a nonzero maximal minor at an exact
     rational point (on each component of O(n) at r = n) is a nonzero rational function, and no rank exceeds the
     full size (the rational method's proof, run here).  A claim the rational method refutes for certain (a rank
     above the printed one or above the full size, a nonzero residual at an exact point) fails.  None for any other
-    outcome (the budget's verdict stands)."""
+    outcome (the budget's verdict stands).  ``tried_point``: the rational point was evaluated before the Cayley
+    chart already and did not refute the claim (it is not evaluated again)."""
     if graph is None or claim.expect == "nonzero":
         return None
     try:
         if "rank" not in graph.ops and "count" not in graph.ops:
-            point = _refuting_point(claim, n, r, seed, func, graph)
+            point = None if tried_point else _refuting_point(claim, n, r, seed, func, graph)
             if point is None:
                 return None
             res = _base_result(claim, n, r, "exact", seed)
