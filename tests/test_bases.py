@@ -115,3 +115,40 @@ def test_a_skew_image_read_in_sym_coordinates_is_not_given_the_rank_of_sym(claim
     r(r−1)/2), the point methods find rank 1 at their points and stay inconclusive (a point bounds from below)."""
     res = run_one(claims["bases-skew-image-in-sym-coordinates"], Size(3, 2), method, 0)
     assert res.verdict not in ("proved", "checked", "numeric"), (method, res.verdict, res.message)
+
+
+def test_a_rational_refutation_the_symbolic_chart_contradicts_is_an_error(claims, monkeypatch):
+    """The guard of the exact method's pre-check: were the rational point to refute a claim whose symbolic residual
+    on the Cayley chart is identically 0 (two evaluations of one graph disagreeing: an engine defect), the verdict is
+    `error`, never `proved` or `fails`.  Simulated by a pre-check that refutes a true column norm read by entries."""
+    from stiefelsym.methods import fixed_size
+    from stiefelsym.results import Result
+
+    def column_norm(s):       # reads entries of X on R^n: the symbolic Cayley chart, after the pre-check
+        return {"gram": sum(s.X[i, 0] * s.X[i, 0] for i in range(int(s.n))) - 1}
+    assert run_one(_claim("bases-column-norm", "id", column_norm, 3, 2), Size(3, 2), "exact", 0).verdict == "proved"
+    true = _claim("bases-column-norm", "id", column_norm, 3, 2)     # a claim of its own (no plan of the first run)
+
+    def forged(claim, n, r, seed, func, graph):
+        res = Result(claim=claim.id, paper=[], section="", kind="id", title="", statement="", n=n, r=r,
+                     method="rational", verdict="fails", expected=False, seconds=0.0, seed=seed)
+        res.witness = {"entry": "gram", "value": "1"}
+        return res
+    from stiefelsym.ir import seal
+    monkeypatch.setattr(fixed_size, "_refuting_point", forged)
+    seal._STATE.update(modules=None, print=None)   # the test's own change of the engine (conftest resets it too)
+    res = run_one(true, Size(3, 2), "exact", 0)
+    assert res.verdict == "error" and "disagree" in res.message, (res.verdict, res.message)
+
+
+def test_a_size_times_zero_in_a_false_claim_fails():
+    """Negative control of a size times 0 or a negative int as a number: X·(0·n) = X and X·(−n) = X·n are false."""
+    def zero(s):
+        return {"r": s.X * (s.n * 0) - s.X}
+
+    def minus(s):
+        return {"r": s.X * (s.n * -1) - s.X * s.n}
+    for cid, func in (("bases-n-times-zero", zero), ("bases-n-times-minus-one", minus)):
+        for method in ("exact", "modular"):
+            res = run_one(_claim(cid, "id", func, 3, 2), Size(3, 2), method, 0)
+            assert res.verdict == "fails", (cid, method, res.verdict, res.message)
