@@ -549,7 +549,9 @@ def load_claims_file(path: str | Path) -> Registry:
 
     Whatever the file raises while it is imported (SystemExit included; not a
     Ctrl-C or SIGTERM) is a :class:`CatalogError`, and whatever it prints goes to
-    standard error: standard output is left to the command's own output.
+    standard error: standard output is left to the command's own output.  Its folder is put last on
+    ``sys.path`` (if it is not there), so that it imports the helper modules next to it, as it does under
+    ``stiefelsym verify --claims``.
 
     The file is imported into this process and runs with its full powers: the engine sees a change of its
     code or of a public attribute of its modules, contents included (the seal), and refuses a graph changed
@@ -568,6 +570,11 @@ def load_claims_file(path: str | Path) -> Registry:
 
     from stiefelsym.ir.seal import EngineChanged, seal, verify
     seal()      # the engine as it is before the file runs (see stiefelsym.ir.seal)
+    # the file imports the helper modules next to it, as under `stiefelsym verify --claims` (whose interpreters
+    # put its folder last on the search path: a module there shadows neither the engine nor a library)
+    folder = str(p.resolve().parent)
+    if folder not in sys.path:
+        sys.path.append(folder)
 
     def loader():
         spec = importlib.util.spec_from_file_location(name, p)

@@ -246,7 +246,12 @@ def _is_free(s: Any) -> bool:
 def _free_flow(s, H: Function, F: Mat | None) -> Flow:
     """The twisted flow in the free algebra: Ẋ = H_P − XΠ, Ṗ = −H_X − εẊF + XΛ + PΠ, with Π, Λ solved
     from d/dt(XᵀX) = 0 and d/dt(XᵀP + PᵀX) = 0 (the same construction as the scene's Dirac flows)."""
-    from stiefelsym.free.scene import LAMBDA, PI, P as LP, X as LX, FunctionScene, _w, solve_multipliers
+    from stiefelsym.free.scene import LAMBDA, PI, P as LP, X as LX, FreeTangentScene, FunctionScene, _w, \
+        solve_multipliers
+    if isinstance(s, FreeTangentScene):
+        # a flow built inside a derivative (the scene of entries a + bε): refused as the Dirac flows are
+        # there (dirac_flow of the tangent scene records the refusal and raises)
+        return s.dirac_flow(H)
     own = isinstance(s, FunctionScene)  # inside a function: solved at X, P, renamed to its fresh letters
     if own:
         s.refuse_ambient_flow()

@@ -621,12 +621,13 @@ def _kernel_vectors(M: Mat, limit: int) -> str:
     dM = _domain_matrix(M)
     if dM is None:
         return ""
-    K = dM.to_field().nullspace()
+    F = dM.to_field()
+    K = F.nullspace()
     vecs = K.to_Matrix().tolist() if K.shape[0] else []
-    for v in vecs:
-        import sympy
-        if any(sympy.simplify(x) != 0 for x in (dM.to_Matrix() * sympy.Matrix(v))):
-            return ""
+    # M v = 0 for each vector, in the exact arithmetic of the matrix's field of fractions (no simplification
+    # heuristics: the product's entries are elements of the field, zero or not)
+    if vecs and not F.matmul(K.transpose()).is_zero_matrix:
+        return ""
     shown = "; ".join("(" + ", ".join(str(x) for x in v) + ")" for v in vecs[:limit])
     more = f" and {len(vecs) - limit} more" if len(vecs) > limit else ""
     return f"; explicit kernel ({len(vecs)} vectors, each checked M v = 0): {_short(shown + more, 400)}"
