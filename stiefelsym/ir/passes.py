@@ -79,9 +79,16 @@ class _Sides:
         self.parts[a] = self.parts[a] or self.parts[b]
 
     def _single(self, x: int) -> int:
+        """The side a chain of one-part splittings ends at (a cycle of them, a side split into itself by joins of
+        zero blocks, ends where it closes)."""
         x = self.find(x)
+        seen = {x}
         while len(self.parts[x]) == 1:
-            x = self.find(self.parts[x][0])
+            y = self.find(self.parts[x][0])
+            if y in seen:
+                break
+            seen.add(y)
+            x = y
         return x
 
     def alike(self, a: int, b: int, depth: int = 0) -> bool:
