@@ -18,7 +18,51 @@ from typing import Any, Iterator
 
 import pytest
 
-_MARK = "@claim("
+#: the modules whose ``claim`` declares a claim
+_CLAIM_MODULES = ("stiefelsym", "stiefelsym.claims", "stiefelsym.api")
+
+
+def defines_claims(text: str) -> bool:
+    """Whether a Python file's text declares claims: a call of stiefelsym's ``claim`` however the file names it
+    (``@claim(...)``, ``@ stated (...)`` after ``from stiefelsym import claim as stated``, ``@stiefelsym.claim(...)``,
+    ``claim(...)(f)``), read from its syntax tree, not its spelling.  A file that does not parse is a claims file
+    when it mentions stiefelsym (loading it reports the error)."""
+    import ast
+    try:
+        tree = ast.parse(text)
+    except (SyntaxError, ValueError):
+        return "stiefelsym" in text
+    names: set[str] = set()         # names bound to claim
+    modules: set[str] = set()       # names bound to a module that has claim
+    for node in ast.walk(tree):
+        if isinstance(node, ast.ImportFrom) and node.module in _CLAIM_MODULES and not node.level:
+            for a in node.names:
+                if a.name in ("claim", "*"):
+                    names.add(a.asname or "claim")
+                elif f"{node.module}.{a.name}" in _CLAIM_MODULES:
+                    modules.add(a.asname or a.name)
+        elif isinstance(node, ast.Import):
+            for a in node.names:
+                if a.name in _CLAIM_MODULES:
+                    modules.add(a.asname or a.name)
+                elif a.name.startswith("stiefelsym.") and a.asname is None:
+                    modules.add("stiefelsym")       # import stiefelsym.x binds stiefelsym
+    if not names and not modules:
+        return False
+
+    def dotted(e: ast.AST) -> str | None:
+        if isinstance(e, ast.Name):
+            return e.id
+        if isinstance(e, ast.Attribute):
+            base = dotted(e.value)
+            return None if base is None else f"{base}.{e.attr}"
+        return None
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Call):
+            f = dotted(node.func)
+            if f is not None and (f in names or (f.endswith(".claim") and f[:-len(".claim")] in modules)):
+                return True
+    return False
 
 
 def pytest_addoption(parser: Any) -> None:
@@ -53,10 +97,13 @@ def pytest_collect_file(file_path: Path, parent: Any) -> Any:
     config = parent.config
     if not config.getoption("stiefelsym") or file_path.suffix != ".py":
         return None
-    if file_path.name.startswith(("test_", "conftest")) or file_path.name.endswith("_test.py"):
+    # as `stiefelsym verify --claims DIR` reads a folder, without its _private modules; pytest's own files
+    # (conftest) are not claims files.  A test module that declares claims is one as well (its claims are
+    # verified beside its tests): a claim is never left out for the name of its file
+    if file_path.name.startswith(("_", "conftest")):
         return None
     try:
-        if _MARK not in file_path.read_text(encoding="utf-8", errors="replace"):
+        if not defines_claims(file_path.read_text(encoding="utf-8", errors="replace")):
             return None
     except OSError:
         return None

@@ -83,3 +83,35 @@ def test_zero_blocks_whose_sides_split_into_themselves_are_decided(method):
     false = {"zh-min-identity-false", "zh-h-false"}
     assert {c for c, v in got.items() if v == "fails"} == false, got
     assert all(v in ("proved", "checked", "numeric") for c, v in got.items() if c not in false), got
+
+
+def _numpy_truth(seed, n, r):
+    import subprocess
+    import sys
+    out = subprocess.run([sys.executable, "numpy_truth.py", str(seed), str(n), str(r)], capture_output=True, text=True,
+                         check=True, cwd=HERE / REVIEW, timeout=300)
+    return json.loads(out.stdout)
+
+
+@pytest.mark.parametrize("seed", [62, 63])
+@pytest.mark.parametrize("method", ["exact", "modular"])
+def test_random_trace_and_entry_identities_agree_with_numpy(seed, method):
+    """The review's random identities (traces and entries of words in X, Xᵀ, P, Pᵀ, A and (I + PᵀP)⁻¹, true ones
+    rewritten with the constraints, false ones with a letter swapped, a sign flipped, XXᵀ inserted or A squared):
+    every verdict at (3,2) agrees with plain numpy at random points of T*V (both components)."""
+    truth = _numpy_truth(seed, 3, 2)
+    got = verdicts(f"{REVIEW}/fuzz_claims_{seed}.py", method, size="3,2")
+    assert set(got) == set(truth), (set(got) ^ set(truth))
+    wrong = {c: (v, truth[c]) for c, v in got.items()
+             if (truth[c] and v != ("proved" if method == "exact" else "checked")) or (not truth[c] and v != "fails")}
+    assert not wrong, wrong
+
+
+@pytest.mark.parametrize("method", ["exact", "modular"])
+def test_sizes_times_ints_in_shapes_blocks_and_numbers(method):
+    """s.n * 2 and s.r * 2 as sizes of identities, stacked and block-diagonal blocks, a size times an int as a number,
+    in Rank and Count: the true statements (sz-t-...) hold, the false ones (sz-f-...) fail at (3,2)."""
+    got = verdicts(f"{REVIEW}/sizes_arith.py", method, size="3,2")
+    assert got, got
+    for cid, v in got.items():
+        assert v == "fails" if cid.startswith("sz-f-") else v in ("proved", "checked"), (cid, v)
