@@ -544,6 +544,33 @@ def load_catalog(package: str = CATALOG) -> Registry:
     return _collect(loader, reviewed=(package == CATALOG))
 
 
+#: the folders of the claims files loaded in this process (each put on sys.path by :func:`load_claims_file`)
+_HELPER_FOLDERS: set[str] = set()
+
+
+def _refuse_shadowed_helpers(p: Path, folder: str) -> None:
+    """A claims file next to a helper module of the same name as one this process already imported from another
+    claims file's folder would import that one (a module is imported once per process, under its name): its claims
+    would be about another helper's code.  Refused, with the way out; `stiefelsym verify --claims` and
+    :func:`stiefelsym.load` import each file in an interpreter of its own and are not affected."""
+    for name, mod in list(sys.modules.items()):
+        where = getattr(mod, "__file__", None)
+        if "." in name or not where:
+            continue
+        home = Path(where).resolve().parent
+        if home.name != "" and Path(where).name == "__init__.py":
+            home = home.parent
+        if str(home) == folder or str(home) not in _HELPER_FOLDERS:
+            continue
+        mine = Path(folder) / f"{name}.py"
+        if mine.is_file() or (Path(folder) / name / "__init__.py").is_file():
+            raise CatalogError(
+                f"{p}: the module {name!r} next to it ({mine if mine.is_file() else Path(folder) / name}) has the name "
+                f"of a module this process imported from another claims file's folder ({where}), which an import of "
+                f"{name!r} would give it: rename one of them, or load the files apart (stiefelsym.load or "
+                "`stiefelsym verify --claims`, which import each file in an interpreter of its own)")
+
+
 def load_claims_file(path: str | Path) -> Registry:
     """Load user claims from a Python file written against the public API.
 
@@ -573,6 +600,8 @@ def load_claims_file(path: str | Path) -> Registry:
     # the file imports the helper modules next to it, as under `stiefelsym verify --claims` (whose interpreters
     # put its folder last on the search path: a module there shadows neither the engine nor a library)
     folder = str(p.resolve().parent)
+    _refuse_shadowed_helpers(p, folder)
+    _HELPER_FOLDERS.add(folder)
     if folder not in sys.path:
         sys.path.append(folder)
 

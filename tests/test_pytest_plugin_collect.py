@@ -68,6 +68,9 @@ def psi(s):
     ("from stiefelsym import *\n\n@claim('x', kind='id')\ndef f(s):\n    return {}\n", True),
     ("def claim(*a, **k):\n    return lambda f: f\n\n@claim('x')\ndef f(s):\n    return {}\n", False),
     ("from stiefelsym import claim\n@claim(\n", True),      # does not parse: loading it reports the error
+    # the second review: import stiefelsym.claims binds stiefelsym; claim bound to another name by assignment
+    ("import stiefelsym.claims\n\n@stiefelsym.claim('x', kind='id')\ndef f(s):\n    return {}\n", True),
+    ("import stiefelsym\n\ndeclare = stiefelsym.claim\n\n@declare('x', kind='id')\ndef f(s):\n    return {}\n", True),
 ])
 def test_defines_claims_reads_the_syntax_not_the_spelling(text, expected):
     assert defines_claims(text) is expected
@@ -82,3 +85,45 @@ def test_the_plugin_collects_every_file_that_declares_claims(pytester):
     result.stdout.fnmatch_lines(["*dotted_claims.py::pl-false-dotted*FAILED*", "*good_claims.py::pl-true*PASSED*",
                                  "*spaced_claims.py::pl-false-spaced*FAILED*",
                                  "*test_false_claims.py::pl-false-testfile*FAILED*"])
+
+
+GETATTR = '''
+import stiefelsym
+
+
+def f(s):
+    """Ψ = 0 (false)."""
+    return {"Psi": s.Psi}
+
+
+getattr(stiefelsym, "claim")("pl-false-getattr", kind="id", sizes=stiefelsym.admissible(n_max=3))(f)
+'''
+
+REEXPORT = '''
+from _pl_helpers import ALL, claim
+
+
+@claim("pl-false-reexport", kind="id", sizes=ALL)
+def f(s):
+    """X Xᵀ = I_n (false)."""
+    return {"XXt": s.X @ s.X.T - s.In}
+'''
+
+HELPERS = '''
+from stiefelsym import admissible, claim  # noqa: F401
+
+ALL = admissible(n_max=3)
+'''
+
+
+def test_a_file_whose_claim_the_syntax_does_not_show_is_loaded_and_collected(pytester):
+    """The second review: claim reached by getattr, or imported through a helper module next to the file, is not
+    seen in the syntax; such a file (it imports stiefelsym or a module next to it) is loaded as a claims file, and its
+    claims are collected.  A helper that imports stiefelsym and declares no claim (and a private one) has no items."""
+    pytester.makepyfile(getattr_claims=GETATTR, reexport_claims=REEXPORT, _pl_helpers=HELPERS, helper=HELPER,
+                        good_claims=TRUE)
+    result = pytester.runpytest_subprocess("--stiefelsym", str(pytester.path), "--stiefelsym-method", "modular",
+                                           "--stiefelsym-size", "3,2", "-p", "no:cacheprovider", "-v")
+    result.assert_outcomes(passed=1, failed=2)
+    result.stdout.fnmatch_lines(["*getattr_claims.py::pl-false-getattr*FAILED*", "*good_claims.py::pl-true*PASSED*",
+                                 "*reexport_claims.py::pl-false-reexport*FAILED*"])

@@ -91,14 +91,25 @@ class _Sides:
             x = y
         return x
 
-    def alike(self, a: int, b: int, depth: int = 0) -> bool:
+    def alike(self, a: int, b: int) -> bool:
         """Whether two sides may be joined without taking one splitting into blocks for another: the same
         side, an engine value's side (it may be anything), a side not yet known (it takes the other's
         splitting), sums of alike parts, or two atoms of one kind (a sum joined to ℝⁿ or ℝʳ, a side not
         yet known paired with another part inside a sum, or ℝⁿ with ℝʳ, is not)."""
+        try:
+            return self._alike(a, b, frozenset())
+        except RecursionError:
+            return False        # splittings nested beyond the interpreter's stack: not known to be alike
+
+    def _alike(self, a: int, b: int, seen: frozenset) -> bool:
+        """:meth:`alike` below the pairs ``seen`` on the way down: every level compared, however deep (a cut at a
+        depth that answered "alike" let two splittings nested 33 deep pass for one), and a pair met again on its
+        own way down (a side split into itself) is not alike: the answer that keeps the coordinate read."""
         a, b = self._single(a), self._single(b)
-        if a == b or depth > 32:
+        if a == b:
             return True
+        if (a, b) in seen:
+            return False
         ta, tb = self.atom[a], self.atom[b]
         if ta == "opaque" or tb == "opaque":
             return True
@@ -106,9 +117,10 @@ class _Sides:
         if (ta is None and not pa) or (tb is None and not pb):
             # a side not yet known (sized by plain ints, a matrix of given entries) takes the other's
             # splitting; inside a sum its size is not known to match the part it is paired with
-            return depth == 0
+            return not seen
         if pa or pb:
-            return len(pa) == len(pb) and all(self.alike(x, y, depth + 1) for x, y in zip(pa, pb))
+            inner = seen | {(a, b)}
+            return len(pa) == len(pb) and all(self._alike(x, y, inner) for x, y in zip(pa, pb))
         return ta == tb
 
     def involves_n(self, x: int, seen: frozenset = frozenset()) -> bool:

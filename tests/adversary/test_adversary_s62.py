@@ -115,3 +115,18 @@ def test_sizes_times_ints_in_shapes_blocks_and_numbers(method):
     assert got, got
     for cid, v in got.items():
         assert v == "fails" if cid.startswith("sz-f-") else v in ("proved", "checked"), (cid, v)
+
+
+REVIEW2 = "s62/review2"
+
+
+@pytest.mark.parametrize("size", ["3,2", "3,1"])
+def test_two_splittings_nested_deeper_than_any_cut_are_told_apart(size):
+    """The second review: [X; 0; ...; 0]ᵀ[I_r; 0; ...; 0] − I_r = 0 with the zero blocks nested 33 to 40 deep is the top
+    block of X minus I, false; the comparison of the two splittings stopped at depth 32 and answered "alike", so no
+    coordinate read was recorded and exact proved it on the chart X = (I; 0).  Every level is compared now: the false
+    ones fail at every depth, the true one (the same stacks with X replaced by I) is proved."""
+    got = verdicts(f"{REVIEW2}/deep_sums.py", "exact", size=size)
+    assert got, got
+    for cid, v in got.items():
+        assert v == ("proved" if "-true-" in cid else "fails"), (cid, v)
