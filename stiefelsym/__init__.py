@@ -17,7 +17,8 @@ Running claims from Python (the results ``stiefelsym verify`` prints, as records
 """
 from stiefelsym._version import __version__
 from stiefelsym.api import load, verify
-from stiefelsym.claims import Checks, Claim, Registry, Size, SizeSpec, admissible, claim, load_catalog, load_claims_file
+from stiefelsym.claims import (CatalogError, Checks, Claim, Registry, Size, SizeSpec, admissible, claim, load_catalog,
+                               load_claims_file)
 from stiefelsym.ir import block
 from stiefelsym.ir.statements import Count, Inverse, Rank, RightInverse
 from stiefelsym.backends.matrix import Mat, comm, det, elementary
@@ -25,6 +26,6 @@ from stiefelsym.results import Result, ResultList
 from stiefelsym.reports import notebook as _notebook  # noqa: F401,E402 (installs the displays of results and claims)
 from stiefelsym.scene import Flow, Scene
 
-__all__ = ["claim", "admissible", "comm", "block", "det", "elementary", "Rank", "Count", "Inverse", "RightInverse", "Checks", "Claim", "Registry", "Size",
+__all__ = ["CatalogError", "claim", "admissible", "comm", "block", "det", "elementary", "Rank", "Count", "Inverse", "RightInverse", "Checks", "Claim", "Registry", "Size",
            "SizeSpec", "Mat", "Scene", "Flow", "load", "load_catalog", "load_claims_file", "verify", "Result",
            "ResultList", "__version__"]

@@ -3,6 +3,7 @@ the result records (a :class:`~stiefelsym.results.ResultList`)."""
 from __future__ import annotations
 
 import os
+import shlex
 from pathlib import Path
 from typing import Iterable, Sequence, Union
 
@@ -32,23 +33,27 @@ def claims_files(paths: PathLike | Iterable[PathLike]) -> list[Path]:
 
 
 def load(files: PathLike | Iterable[PathLike] = (), catalog: bool | None = None,
-         sizes: Iterable[tuple[int, int] | Size] = ()) -> Registry:
+         sizes: Iterable[tuple[int, int] | Size] = (), only: Iterable[str] | None = None) -> Registry:
     """The claims of ``files`` (files or directories), followed by the catalog's when ``catalog``
     (default: only when no file is given).  An id defined twice is refused (ValueError).
 
     A file is imported and its claims traced in child processes, as ``stiefelsym verify --claims``
     does (:func:`stiefelsym.run.userfile.load_claims_isolated`): at the sizes each claim lists and at
-    ``sizes``; nothing of the file runs in the calling process.  To import a file in this process
-    (its claims as written, e.g. to call their functions), use :func:`stiefelsym.load_claims_file`."""
+    ``sizes`` (only the claims ``only`` names, when given); nothing of the file runs in the calling process.
+    To import a file in this process (its claims as written, e.g. to call their functions), use
+    :func:`stiefelsym.load_claims_file`."""
     from stiefelsym.run.userfile import load_claims_isolated
     merged = Registry()
     paths = claims_files(files)
     wanted = list(sizes)
+    origin: dict[str, str] = {}
     for f in paths:
-        for c in load_claims_isolated(f, wanted):
+        for c in load_claims_isolated(f, wanted, only):
             if c.id in merged:
                 raise ValueError(f"claim {c.id!r} is defined twice (again in {f})")
             merged.add(c)
+            origin[c.id] = str(f)
+    merged.origin = origin      # type: ignore[attr-defined]  # claim id -> its file, for the rerun commands
     if catalog or (catalog is None and not paths):
         for c in load_catalog():
             if c.id not in merged:
@@ -56,9 +61,17 @@ def load(files: PathLike | Iterable[PathLike] = (), catalog: bool | None = None,
     return merged
 
 
+def _size_text(text: str) -> tuple[int, int]:
+    """An "n,r" text as the pair (n, r) (ValueError otherwise, naming the text)."""
+    parts = text.split(",")
+    if len(parts) != 2 or not all(p.strip().isdigit() for p in parts):
+        raise ValueError(f"a size is a pair of ints (n, r) or a text 'n,r', not {text!r}")
+    return int(parts[0]), int(parts[1])
+
+
 def verify(claims: ClaimRef | Iterable[ClaimRef] | None = None, *,
            files: PathLike | Iterable[PathLike] = (),
-           sizes: Sequence[tuple[int, int] | Size] | None = None,
+           sizes: Sequence[tuple[int, int] | Size | str] | None = None,
            methods: str | Iterable[str] = ("auto",), seed: int = 0,
            timeout: float = DEFAULT_TIMEOUT, memory: float | None = DEFAULT_MEMORY_GIB, jobs: int = 1,
            budget: float | None = None, scheduler: str | None = None) -> ResultList:
@@ -73,26 +86,34 @@ def verify(claims: ClaimRef | Iterable[ClaimRef] | None = None, *,
     of them).  ``budget``: refuse, before anything runs, a run the cost model predicts to take
     longer (seconds).  ``scheduler``: the address of a dask.distributed scheduler.
 
+    ``sizes`` takes ``"n,r"`` texts too, as ``--size`` does.
+
     Bad input (an unknown claim or method, a size outside a named claim's statement, a run beyond
-    the budget) raises ValueError (KeyError for an unknown id); a claim that fails is a result,
-    never an exception: see ``result.verdict`` and ``result.expected``, or ``results.ok``."""
+    the budget) raises ValueError (KeyError for an unknown id); a claims file that cannot be loaded (not
+    found, not Python, raising while imported, declaring no claim) raises :class:`stiefelsym.CatalogError`.  A
+    claim that fails is a result, never an exception: see ``result.verdict`` and ``result.expected``, or
+    ``results.ok``; each result's ``rerun`` is the command that runs it again (with ``--claims FILE`` for a claim
+    of a file)."""
     from stiefelsym.run import runner
     from stiefelsym.methods import costmodel
     if isinstance(methods, str):
         methods = (methods,)
     methods = tuple(methods)
+    pairs: list[tuple[int, int] | Size] | None = None if sizes is None else [
+        _size_text(s) if isinstance(s, str) else s for s in sizes]
     named = [claims] if isinstance(claims, (str, Claim)) else (None if claims is None else list(claims))
     ids = [c for c in named or () if isinstance(c, str)]
     registry = Registry()
     if named is None or ids:
-        wanted = list(sizes or ())
-        registry = load(files, catalog=False, sizes=wanted) if files else Registry()
+        wanted = list(pairs or ())
+        only = ids or None      # the claims named: only they are traced at the run's sizes
+        registry = load(files, catalog=False, sizes=wanted, only=only) if files else Registry()
         if not len(registry) or any(i not in registry for i in ids):
-            registry = load(files, catalog=True, sizes=wanted)
+            registry = load(files, catalog=True, sizes=wanted, only=only)
     selected = [registry.get(c) if isinstance(c, str) else c for c in (named if named is not None else registry)]
     if not selected:
         raise ValueError("no claims to verify (0 claims loaded)")
-    size_list = None if sizes is None else [s if isinstance(s, Size) else Size(*s) for s in sizes]
+    size_list = None if pairs is None else [s if isinstance(s, Size) else Size(*s) for s in pairs]
     if size_list is not None:
         for s in size_list:
             if type(s.n) is not int or type(s.r) is not int:
@@ -112,4 +133,10 @@ def verify(claims: ClaimRef | Iterable[ClaimRef] | None = None, *,
         engine = distributed.verifier(scheduler)
     results = engine(selected, sizes=size_list, methods=methods, seed=seed, timeout=timeout, memory=memory,
                      jobs=jobs, strict_sizes=named is not None)
+    # the command that runs a claim of a file again names the file, as the command line's does
+    origin = getattr(registry, "origin", {})
+    for r in results:
+        c = origin.get(r.claim)
+        if c is not None and r.rerun and "--claims" not in r.rerun:
+            r.rerun += " --claims " + shlex.quote(c)
     return ResultList(results)

@@ -266,11 +266,12 @@ def _catalog() -> Registry:
 TRACING_NOTE_SECONDS = 10.0
 
 
-def _user_claims(paths: str | Sequence[str], sizes: Sequence[Any] = ()) -> Registry:
+def _user_claims(paths: str | Sequence[str], sizes: Sequence[Any] = (), only: Sequence[str] = ()) -> Registry:
     """The claims of one or more files, in order; an id defined twice is refused.  Each file is imported and
     its claims traced in child processes only, at their listed sizes and at ``sizes`` (see
     :mod:`stiefelsym.run.userfile`), under the engine's tracing budgets, never the run's (which would reach the
-    file): no code of a user's file runs in this process."""
+    file): no code of a user's file runs in this process.  ``only``: the claims the command names (none: every
+    claim); only those are traced at ``sizes``."""
     from stiefelsym.run.userfile import load_claims_isolated
     if isinstance(paths, str):
         paths = [paths]
@@ -283,7 +284,7 @@ def _user_claims(paths: str | Sequence[str], sizes: Sequence[Any] = ()) -> Regis
         seen.add(key)
         t0 = time.monotonic()
         try:
-            reg = load_claims_isolated(path, sizes)
+            reg = load_claims_isolated(path, sizes, only=list(only) or None)
         except CatalogError as exc:
             raise InputError(str(exc)) from exc
         took = time.monotonic() - t0
@@ -331,7 +332,7 @@ def _registry(claims_files: str | Sequence[str] | None, ids: Sequence[str] = (),
     catalog claims of the same id."""
     if isinstance(claims_files, str):
         claims_files = [claims_files]
-    user = _user_claims(claims_files, sizes) if claims_files else None
+    user = _user_claims(claims_files, sizes, ids) if claims_files else None
     if user is not None and all(cid in user for cid in ids):
         _shadowing_note(user)
         return user, user

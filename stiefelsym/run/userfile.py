@@ -1065,10 +1065,12 @@ def _merge(claims: list, extra: list, more: dict) -> None:
             graphs[f].append([key, entry])
 
 
-def load_claims_isolated(path: str | Path, sizes: Iterable[Any] = ()) -> Registry:
+def load_claims_isolated(path: str | Path, sizes: Iterable[Any] = (), only: Iterable[str] | None = None) -> Registry:
     """The claims of a user's file, imported and traced in fresh interpreters (see the module docstring),
     at their listed sizes and at ``sizes`` (Size or (n, r)) where they admit them; each trace has the engine's
-    budgets (:data:`CLAIM_SECONDS`, :data:`CLAIM_MEMORY_GIB`), the same in every run.  Raises
+    budgets (:data:`CLAIM_SECONDS`, :data:`CLAIM_MEMORY_GIB`), the same in every run.  ``only``: the ids of the
+    claims the run names (None: all of them); the others are not traced at ``sizes``, which they are not run at
+    (a size of 200 asked for one claim traced the file's other claims there first).  Raises
     :class:`~stiefelsym.claims.CatalogError` as :func:`~stiefelsym.claims.load_claims_file` does."""
     if not (hasattr(os, "fork") and hasattr(os, "posix_spawn")):
         return load_claims_file(path)
@@ -1097,7 +1099,11 @@ def load_claims_isolated(path: str | Path, sizes: Iterable[Any] = ()) -> Registr
         try:
             (claims,), how = _phase(p, None, capture.fileno(), before_plain)     # no size of the run
             spawned.append(True)
-            parts = _by_size(_second_phase(claims, needed))         # only what needs a size, one size each
+            more = _second_phase(claims, needed)
+            if only is not None:
+                wanted = set(only)
+                more = {k: v for k, v in more.items() if k in wanted}
+            parts = _by_size(more)         # only what needs a size, one size each
             if parts:
                 extras, how2 = _phase(p, parts, capture.fileno(), before_plain)
                 for part, extra in zip(parts, extras):

@@ -130,3 +130,22 @@ def test_two_splittings_nested_deeper_than_any_cut_are_told_apart(size):
     assert got, got
     for cid, v in got.items():
         assert v == ("proved" if "-true-" in cid else "fails"), (cid, v)
+
+
+USER2 = "s62/user2"
+
+
+@pytest.mark.parametrize("method", ["exact", "modular"])
+def test_a_users_own_hamiltonian_flow_lax_pair_and_ranks(method):
+    """The second user trial: H = ½tr PᵀP + c tr (XᵀP)² + ¼tr (XᵀAX)² with a free c (not in the paper), its Dirac
+    flow and multipliers derived by hand, H and Ψ conserved, Φ̇ = [XXᵀAXXᵀ, A], d(XXᵀ)/dt = [Φ, XXᵀ], and two ranks;
+    the false variants (a sign, a missing XM², the commutator's order, Φ conserved, Λ's sign, two ranks, a `not`)
+    never pass: exact refutes every one, modular every one but the ranks said too high (a point bounds a rank from
+    below only: `inconclusive`)."""
+    true = verdicts(f"{USER2}/claims.py", method, size="3,2")
+    assert len(true) == 9 and set(true.values()) <= {"proved", "checked"}, true
+    false = verdicts(f"{USER2}/negatives.py", method, size="3,2")
+    assert len(false) >= 8, false
+    for cid, v in false.items():
+        allowed = {"fails"} if method == "exact" or "rank" not in cid else {"fails", "inconclusive"}
+        assert v in allowed, (cid, method, v)
