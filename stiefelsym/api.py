@@ -3,7 +3,6 @@ the result records (a :class:`~stiefelsym.results.ResultList`)."""
 from __future__ import annotations
 
 import os
-import shlex
 from pathlib import Path
 from typing import Iterable, Sequence, Union
 
@@ -53,7 +52,7 @@ def load(files: PathLike | Iterable[PathLike] = (), catalog: bool | None = None,
                 raise ValueError(f"claim {c.id!r} is defined twice (again in {f})")
             merged.add(c)
             origin[c.id] = str(f)
-    merged.origin = origin      # type: ignore[attr-defined]  # claim id -> its file, for the rerun commands
+    merged.origin = origin
     if catalog or (catalog is None and not paths):
         for c in load_catalog():
             if c.id not in merged:
@@ -133,10 +132,6 @@ def verify(claims: ClaimRef | Iterable[ClaimRef] | None = None, *,
         engine = distributed.verifier(scheduler)
     results = engine(selected, sizes=size_list, methods=methods, seed=seed, timeout=timeout, memory=memory,
                      jobs=jobs, strict_sizes=named is not None)
-    # the command that runs a claim of a file again names the file, as the command line's does
-    origin = getattr(registry, "origin", {})
-    for r in results:
-        c = origin.get(r.claim)
-        if c is not None and r.rerun and "--claims" not in r.rerun:
-            r.rerun += " --claims " + shlex.quote(c)
+    for r in results:           # the command that runs a claim of a file again names the file
+        registry.rerun_naming_file(r)
     return ResultList(results)

@@ -385,6 +385,16 @@ class Registry:
         self._claims: dict[str, Claim] = {}
         #: claims registered here come from the reviewed catalog
         self.reviewed = reviewed
+        #: the file each claim of a user's file comes from (claim id -> path), for messages and rerun commands
+        self.origin: dict[str, str] = {}
+
+    def rerun_naming_file(self, result: Any) -> None:
+        """The result's rerun command with ``--claims FILE`` added, for a claim of a user's file (the command
+        finds the claim there only)."""
+        path = self.origin.get(result.claim)
+        if path is not None and result.rerun and "--claims" not in result.rerun:
+            import shlex
+            result.rerun += " --claims " + shlex.quote(path)
 
     def add(self, c: Claim) -> Claim:
         if c.id in self._claims:
@@ -558,7 +568,7 @@ def _refuse_shadowed_helpers(p: Path, folder: str) -> None:
         if "." in name or not where:
             continue
         home = Path(where).resolve().parent
-        if home.name != "" and Path(where).name == "__init__.py":
+        if Path(where).name == "__init__.py":      # a package next to the file: its folder's folder
             home = home.parent
         if str(home) == folder or str(home) not in _HELPER_FOLDERS:
             continue

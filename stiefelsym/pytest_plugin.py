@@ -18,81 +18,8 @@ from typing import Any, Iterator
 
 import pytest
 
-#: the modules whose ``claim`` declares a claim
-_CLAIM_MODULES = ("stiefelsym", "stiefelsym.claims", "stiefelsym.api")
-
-
-def defines_claims(text: str) -> bool:
-    """Whether a Python file's text declares claims: a call of stiefelsym's ``claim`` however the file names it
-    (``@claim(...)``, ``@ stated (...)`` after ``from stiefelsym import claim as stated``, ``@stiefelsym.claim(...)``,
-    ``claim(...)(f)``), read from its syntax tree, not its spelling.  A file that does not parse is a claims file
-    when it mentions stiefelsym (loading it reports the error)."""
-    import ast
-    try:
-        tree = ast.parse(text)
-    except (SyntaxError, ValueError):
-        return "stiefelsym" in text
-    names: set[str] = set()         # names bound to claim
-    modules: set[str] = set()       # names bound to a module that has claim
-    for node in ast.walk(tree):
-        if isinstance(node, ast.ImportFrom) and node.module in _CLAIM_MODULES and not node.level:
-            for a in node.names:
-                if a.name in ("claim", "*"):
-                    names.add(a.asname or "claim")
-                elif f"{node.module}.{a.name}" in _CLAIM_MODULES:
-                    modules.add(a.asname or a.name)
-        elif isinstance(node, ast.Import):
-            for a in node.names:
-                if a.asname is not None:
-                    if a.name in _CLAIM_MODULES:
-                        modules.add(a.asname)
-                elif a.name == "stiefelsym" or a.name.startswith("stiefelsym."):
-                    # import stiefelsym.claims binds stiefelsym (and reaches stiefelsym.claims by its full name)
-                    modules.update({"stiefelsym", a.name} & set(_CLAIM_MODULES))
-    if not names and not modules:
-        return False
-
-    def dotted(e: ast.AST) -> str | None:
-        if isinstance(e, ast.Name):
-            return e.id
-        if isinstance(e, ast.Attribute):
-            base = dotted(e.value)
-            return None if base is None else f"{base}.{e.attr}"
-        return None
-
-    def is_claim(e: ast.AST) -> bool:
-        f = dotted(e)
-        return f is not None and (f in names or (f.endswith(".claim") and f[:-len(".claim")] in modules))
-    # names bound to claim by assignment (declare = stiefelsym.claim), to a fixed point
-    grew = True
-    while grew:
-        grew = False
-        for node in ast.walk(tree):
-            if isinstance(node, (ast.Assign, ast.AnnAssign)) and node.value is not None and is_claim(node.value):
-                for t in (node.targets if isinstance(node, ast.Assign) else [node.target]):
-                    if isinstance(t, ast.Name) and t.id not in names:
-                        names.add(t.id)
-                        grew = True
-    return any(isinstance(node, ast.Call) and is_claim(node.func) for node in ast.walk(tree))
-
-
-def _may_declare_claims(text: str, path: Path) -> bool:
-    """Whether a file that :func:`defines_claims` does not see declaring claims may still declare some: it imports
-    stiefelsym (claim reached by getattr, say) or a module next to it (claim imported through a helper).  Such a file
-    is loaded as a claims file too, and it is one when it declares claims."""
-    import ast
-    try:
-        tree = ast.parse(text)
-    except (SyntaxError, ValueError):
-        return True
-    for node in ast.walk(tree):
-        tops = ([a.name.split(".")[0] for a in node.names] if isinstance(node, ast.Import) else
-                [node.module.split(".")[0]] if isinstance(node, ast.ImportFrom) and node.module and not node.level else
-                ["."] if isinstance(node, ast.ImportFrom) else [])
-        for top in tops:
-            if top in (".", "stiefelsym") or (path.parent / f"{top}.py").is_file() or (path.parent / top).is_dir():
-                return True
-    return False
+#: what the loader says of a file that declares no claim (a helper module, a test module): no items
+_NO_CLAIMS = "defines no claims (use the @claim decorator)"
 
 
 def pytest_addoption(parser: Any) -> None:
@@ -127,30 +54,19 @@ def pytest_collect_file(file_path: Path, parent: Any) -> Any:
     config = parent.config
     if not config.getoption("stiefelsym") or file_path.suffix != ".py":
         return None
-    # as `stiefelsym verify --claims DIR` reads a folder, without its _private modules; pytest's own files
-    # (conftest) are not claims files.  A test module that declares claims is one as well (its claims are
-    # verified beside its tests): a claim is never left out for the name of its file
+    # every file, as `stiefelsym verify --claims DIR` reads a folder (without its _private modules; pytest's
+    # conftest is not a claims file): whether a file declares claims is what loading it says, not how it is
+    # written (a claim may be declared through a helper, getattr, exec): one declaring none has no items
     if file_path.name.startswith(("_", "conftest")):
         return None
-    try:
-        text = file_path.read_text(encoding="utf-8", errors="replace")
-    except OSError:
-        return None
-    if defines_claims(text):
-        return ClaimsFile.from_parent(parent, path=file_path)
-    if _may_declare_claims(text, file_path):
-        node = ClaimsFile.from_parent(parent, path=file_path)
-        node.maybe = True       # loaded: a claims file when it declares claims, nothing otherwise
-        return node
-    return None
+    catalog = _catalog_dir()
+    if catalog is not None and catalog in file_path.resolve().parents[1:]:
+        return None         # the catalog's own data (its witness templates), not claims files
+    return ClaimsFile.from_parent(parent, path=file_path)
 
 
 class ClaimsFile(pytest.File):
     """A claims file (or a module of the catalog): its claims' runs."""
-
-    #: a file whose syntax declares no claim visibly (claim reached by getattr or through a helper module): it is
-    #: loaded, and a file that turns out to declare none (or a test module that does not load alone) has no items
-    maybe = False
 
     def _claims(self) -> list[Any]:
         from stiefelsym.claims import CATALOG, CatalogError, load_catalog
@@ -166,9 +82,10 @@ class ClaimsFile(pytest.File):
                      if s.count(",") == 1 and all(x.strip().isdigit() for x in s.split(","))]
             return list(load_claims_isolated(self.path, sizes))
         except CatalogError as exc:
-            test_module = self.path.name.startswith("test_") or self.path.name.endswith("_test.py")
-            if self.maybe and (str(exc).endswith("defines no claims (use the @claim decorator)") or test_module):
+            if str(exc).endswith(_NO_CLAIMS):
                 return []
+            if self.path.name.startswith("test_") or self.path.name.endswith("_test.py"):
+                return []       # a test module that does not load alone: pytest's own collection reports it
             raise self.CollectError(str(exc)) from None
 
     def collect(self) -> Iterator[Any]:

@@ -1,13 +1,10 @@
-"""Which files the pytest plugin collects with ``--stiefelsym``: every file that declares claims, however it spells
-the decorator and whatever its name (the review of stop 62: a false claim decorated ``@stiefelsym.claim(...)``, one
-decorated ``@ stated (...)`` after ``from stiefelsym import claim as stated``, and one in a file named
-``test_*.py`` were not collected, and ``pytest --stiefelsym DIR`` passed where ``stiefelsym verify --claims DIR``
-failed all three)."""
+"""Which files the pytest plugin collects with ``--stiefelsym``: every file, as ``stiefelsym verify --claims DIR``
+reads a folder; loading a file says whether it declares claims (the reviews of stop 62: a false claim decorated
+``@stiefelsym.claim(...)``, one decorated ``@ stated (...)`` after ``from stiefelsym import claim as stated``, one in
+a file named ``test_*.py``, one reached by getattr, by assignment or through a helper were not collected, and
+``pytest --stiefelsym DIR`` passed where ``stiefelsym verify --claims DIR`` failed them)."""
 from __future__ import annotations
 
-import pytest
-
-from stiefelsym.pytest_plugin import defines_claims
 
 pytest_plugins = ["pytester"]
 
@@ -61,21 +58,6 @@ def psi(s):
 '''
 
 
-@pytest.mark.parametrize("text,expected", [
-    (DOTTED, True), (SPACED, True), (TESTFILE, True), (TRUE, True), (HELPER, False),
-    ("import stiefelsym.claims as C\n\n@C.claim('x', kind='id')\ndef f(s):\n    return {}\n", True),
-    ("from stiefelsym.claims import claim\nf = claim('x', kind='id')(lambda s: {})\n", True),
-    ("from stiefelsym import *\n\n@claim('x', kind='id')\ndef f(s):\n    return {}\n", True),
-    ("def claim(*a, **k):\n    return lambda f: f\n\n@claim('x')\ndef f(s):\n    return {}\n", False),
-    ("from stiefelsym import claim\n@claim(\n", True),      # does not parse: loading it reports the error
-    # the second review: import stiefelsym.claims binds stiefelsym; claim bound to another name by assignment
-    ("import stiefelsym.claims\n\n@stiefelsym.claim('x', kind='id')\ndef f(s):\n    return {}\n", True),
-    ("import stiefelsym\n\ndeclare = stiefelsym.claim\n\n@declare('x', kind='id')\ndef f(s):\n    return {}\n", True),
-])
-def test_defines_claims_reads_the_syntax_not_the_spelling(text, expected):
-    assert defines_claims(text) is expected
-
-
 def test_the_plugin_collects_every_file_that_declares_claims(pytester):
     pytester.makepyfile(dotted_claims=DOTTED, spaced_claims=SPACED, test_false_claims=TESTFILE, good_claims=TRUE,
                         helper=HELPER)
@@ -117,9 +99,9 @@ ALL = admissible(n_max=3)
 
 
 def test_a_file_whose_claim_the_syntax_does_not_show_is_loaded_and_collected(pytester):
-    """The second review: claim reached by getattr, or imported through a helper module next to the file, is not
-    seen in the syntax; such a file (it imports stiefelsym or a module next to it) is loaded as a claims file, and its
-    claims are collected.  A helper that imports stiefelsym and declares no claim (and a private one) has no items."""
+    """The second review: claim reached by getattr, or imported through a helper module next to the file: loaded, the
+    file declares its claims, and they are collected.  A helper that declares no claim (and a private one) has no
+    items."""
     pytester.makepyfile(getattr_claims=GETATTR, reexport_claims=REEXPORT, _pl_helpers=HELPERS, helper=HELPER,
                         good_claims=TRUE)
     result = pytester.runpytest_subprocess("--stiefelsym", str(pytester.path), "--stiefelsym-method", "modular",
@@ -127,3 +109,23 @@ def test_a_file_whose_claim_the_syntax_does_not_show_is_loaded_and_collected(pyt
     result.assert_outcomes(passed=1, failed=2)
     result.stdout.fnmatch_lines(["*getattr_claims.py::pl-false-getattr*FAILED*", "*good_claims.py::pl-true*PASSED*",
                                  "*reexport_claims.py::pl-false-reexport*FAILED*"])
+
+
+SMUGGLED = '''
+"""My own attempt to slip a false claim past the plugin: no import of stiefelsym and no claim in the syntax."""
+import importlib
+
+api = importlib.import_module("stief" + "elsym")
+exec(compile("@api.claim('pl-false-smuggled', kind='id', sizes=api.admissible(n_max=3))\\n"
+             "def f(s):\\n    return {'XXt - I': s.X @ s.X.T - s.In}\\n", "<claims>", "exec"))
+'''
+
+
+def test_a_claim_no_syntax_shows_is_still_collected(pytester):
+    """No reading of the text decides which files declare claims (an import spelled at run time, a claim made by exec):
+    every file is loaded, as the command line loads a folder, and the false claim fails."""
+    pytester.makepyfile(smuggled=SMUGGLED, good_claims=TRUE)
+    result = pytester.runpytest_subprocess("--stiefelsym", str(pytester.path), "--stiefelsym-method", "modular",
+                                           "--stiefelsym-size", "3,2", "-p", "no:cacheprovider", "-v")
+    result.assert_outcomes(passed=1, failed=1)
+    result.stdout.fnmatch_lines(["*good_claims.py::pl-true*PASSED*", "*smuggled.py::pl-false-smuggled*FAILED*"])

@@ -297,7 +297,7 @@ def _user_claims(paths: str | Sequence[str], sizes: Sequence[Any] = (), only: Se
                 raise InputError(f"claim {c.id!r} is defined in both {origin[c.id]} and {path}")
             merged.add(c)
             origin[c.id] = path
-    merged.origin = origin     # type: ignore[attr-defined]  (claim id -> its file)
+    merged.origin = origin
     return merged
 
 
@@ -319,7 +319,7 @@ def _shadowing_note(user: Registry) -> None:
         return
     for cid in user.ids():
         if cid in catalog_ids:
-            click.echo(f"warning: claim {cid!r} of {user.origin[cid]} has the id of a catalog claim "  # type: ignore[attr-defined]
+            click.echo(f"warning: claim {cid!r} of {user.origin[cid]} has the id of a catalog claim "
                        "and replaces it in this run; give it an id of its own", err=True)
 
 
@@ -344,7 +344,7 @@ def _registry(claims_files: str | Sequence[str] | None, ids: Sequence[str] = (),
         merged.add(c)
     for c in catalog:
         if c.id in merged:
-            click.echo(f"warning: claim {c.id!r} of {user.origin[c.id]} has the id of a catalog claim "  # type: ignore[attr-defined]
+            click.echo(f"warning: claim {c.id!r} of {user.origin[c.id]} has the id of a catalog claim "
                        "and replaces it in this run; give it an id of its own", err=True)
         else:
             merged.add(c)
@@ -878,7 +878,7 @@ def _verify(out: Any, ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tu
     if max_n is not None:     # every size up to max_n that some selected claim is stated for
         sizes = tuple(Size(n, r) for n in range(1, max_n + 1) for r in range(1, n + 1)
                       if any(c.sizes.admits(n, r) for c in claims))
-    origin: dict[str, str] = getattr(user, "origin", {}) if user is not None else {}
+    origin: dict[str, str] = user.origin if user is not None else {}
     user_ids = set(origin)
     methods = methods or ("auto",)
     budgets: list[str] = []
@@ -898,8 +898,8 @@ def _verify(out: Any, ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tu
     def on_result(r: Result) -> None:
         if not r.rerun:
             r.rerun = runner.rerun_command(r)
-        if r.claim in user_ids and "--claims" not in r.rerun:
-            r.rerun += " --claims " + shlex.quote(origin[r.claim])
+        if user is not None:
+            user.rerun_naming_file(r)
         if budgets and budgets[0] not in r.rerun:
             r.rerun += " " + shlex.join(budgets)
         results.append(r)
@@ -1162,7 +1162,7 @@ def report(results_file: Path | None, report_dir: Path | None, claims_files: tup
     # a user's claims traced at the records' sizes: each record is bound to its claim's graph there (below)
     registry, user = _registry(files or None, (), sorted({(r.n, r.r) for r in results if type(r.n) is int
                                                            and type(r.r) is int}) if files else ())
-    reruns = rerun_problems(records, meta, run_origin(getattr(user, "origin", None), files, meta))
+    reruns = rerun_problems(records, meta, run_origin(user.origin if user is not None else None, files, meta))
     if reruns:
         raise InputError(f"{source}: refused, {len(reruns)} record(s) whose rerun command is not their own: "
                          f"{reruns[0]} (`stiefelsym check` re-checks every record)")

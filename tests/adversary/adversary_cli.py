@@ -110,3 +110,16 @@ def verdicts_each(claims_file, methods, size="3,2", ids=()):
                 out.setdefault(method or m.group(2), {})[m.group(1)] = m.group(3)
     assert set(out) == set(methods), (methods, sorted(out))
     return out
+
+
+def assert_hold_and_fail(claims, true_at, false_at, method, seed=0):
+    """Each claim of ``true_at`` (id -> (n, r)) proved or checked by ``method`` at its size, each of ``false_at``
+    failing at its size (``claims``: id -> Claim, loaded in this process)."""
+    from stiefelsym.claims import Size
+    from stiefelsym.run.runner import run_one
+    for cid, size in true_at.items():
+        res = run_one(claims[cid], Size(*size), method, seed)
+        assert res.verdict in ("proved", "checked"), (cid, method, res.verdict, res.message)
+    for cid, size in false_at.items():
+        res = run_one(claims[cid], Size(*size), method, seed)
+        assert res.verdict == "fails", (cid, method, res.verdict, res.message)

@@ -4,7 +4,7 @@ import json
 
 import pytest
 
-from adversary_cli import cli, verdicts, HERE
+from adversary_cli import assert_hold_and_fail, cli, verdicts, HERE
 
 REVIEW = "s61/review"
 HIDDEN = "s61/hidden"
@@ -100,11 +100,4 @@ def hidden():
 def test_the_user_trials_statements_hold_and_their_twins_fail(hidden, method):
     """Nine statements of the paper the catalog does not state, written by a user (the user trial of this stop):
     each holds where it is stated, and each false twin (a sign, a square, a transpose dropped) fails."""
-    from stiefelsym.claims import Size
-    from stiefelsym.run.runner import run_one
-    for cid, size in TRUE_AT.items():
-        res = run_one(hidden[cid], Size(*size), method, 0)
-        assert res.verdict in ("proved", "checked"), (cid, method, res.verdict, res.message)
-    for cid, size in FALSE_AT.items():
-        res = run_one(hidden[cid], Size(*size), method, 0)
-        assert res.verdict == "fails", (cid, method, res.verdict, res.message)
+    assert_hold_and_fail(hidden, TRUE_AT, FALSE_AT, method)

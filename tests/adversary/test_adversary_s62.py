@@ -4,7 +4,7 @@ import json
 
 import pytest
 
-from adversary_cli import cli, verdicts, HERE
+from adversary_cli import assert_hold_and_fail, cli, verdicts, HERE
 
 HIDDEN = "s62/hidden"
 
@@ -31,14 +31,7 @@ def test_the_user_trials_statements_hold_and_their_twins_fail(hidden, method):
     adjoint one, the stabilizer so(n − 2r), the right invariance of H_neum,κ, tr L² of (perelomov), Ψ⁻¹(0), the rank
     of (OD), the right SO(2)-invariance of the twisted flows, the flows (No) differing in κ), written by a user with
     the public API: each holds, and each false twin (a factor, an order, a sign, a space) fails."""
-    from stiefelsym.claims import Size
-    from stiefelsym.run.runner import run_one
-    for cid, size in TRUE_AT.items():
-        res = run_one(hidden[cid], Size(*size), method, 0)
-        assert res.verdict in ("proved", "checked"), (cid, method, res.verdict, res.message)
-    for cid, size in FALSE_AT.items():
-        res = run_one(hidden[cid], Size(*size), method, 0)
-        assert res.verdict == "fails", (cid, method, res.verdict, res.message)
+    assert_hold_and_fail(hidden, TRUE_AT, FALSE_AT, method)
 
 
 def _record(*args):
