@@ -15,7 +15,16 @@ Running claims from Python (the results ``stiefelsym verify`` prints, as records
     results = verify(["euclidean-flow"], sizes=[(4, 2)], methods=["modular"])
     results.ok, results[0].verdict
 """
-from stiefelsym._version import __version__
+import sys as _sys
+
+# Exact constants have no size limit: a claim may multiply by 2^15000, and the engine writes such
+# integers in decimal (the graph's digest, the records, JSON between its processes).  Python refuses
+# the decimal text of an integer above 4300 digits unless told otherwise (a guard for parsing
+# untrusted text; a claims file is code, and the engine's own texts are its own).
+if hasattr(_sys, "set_int_max_str_digits") and _sys.get_int_max_str_digits() != 0:
+    _sys.set_int_max_str_digits(0)
+
+from stiefelsym._version import __version__  # noqa: E402
 from stiefelsym.api import load, verify
 from stiefelsym.claims import (CatalogError, Checks, Claim, Registry, Size, SizeSpec, admissible, claim, load_catalog,
                                load_claims_file)

@@ -7,6 +7,7 @@ from pathlib import Path
 from typing import Iterable, Sequence, Union
 
 from stiefelsym.claims import Claim, Registry, Size, load_catalog
+from stiefelsym.run import rerun
 from stiefelsym.run.pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT
 from stiefelsym.results import ResultList
 
@@ -132,6 +133,8 @@ def verify(claims: ClaimRef | Iterable[ClaimRef] | None = None, *,
         engine = distributed.verifier(scheduler)
     results = engine(selected, sizes=size_list, methods=methods, seed=seed, timeout=timeout, memory=memory,
                      jobs=jobs, strict_sizes=named is not None)
-    for r in results:           # the command that runs a claim of a file again names the file
+    budgets = rerun.budget_options(timeout, budget, memory)
+    for r in results:           # the command that runs a claim of a file again names the file, and the budgets
         registry.rerun_naming_file(r)
+        rerun.with_budgets(r, budgets)
     return ResultList(results)

@@ -462,10 +462,28 @@ def _short_repr(x: Any, limit: int = 60) -> str:
     return text if len(text) <= limit else text[:limit] + "..."
 
 
+#: the most digits of an integer in a file the engine reads (a results file, a mutation analysis): Python's
+#: own guard against the quadratic conversion of long decimal texts, which the engine lifts for the texts it
+#: writes itself (stiefelsym/__init__.py) and keeps for what it reads from disk
+FILE_INT_DIGITS = 4300
+
+
+def _file_int(text: str) -> int:
+    if len(text) > FILE_INT_DIGITS + 1:
+        raise ValueError(f"an integer of {len(text)} digits (a file the engine reads has integers of at most "
+                         f"{FILE_INT_DIGITS} digits)")
+    return int(text)
+
+
+def parse_json(text: str) -> Any:
+    """json.loads of a file's text, with integers of at most FILE_INT_DIGITS digits (ValueError otherwise)."""
+    return json.loads(text, parse_int=_file_int)
+
+
 def load_results(path: str | Path) -> tuple[dict[str, Any], list[Result]]:
     """The meta data and the results of a results file (``stiefelsym verify --format json``,
     reports/results.json); ValueError, in one line, for anything else."""
-    payload = json.loads(Path(path).read_text(encoding="utf-8"))
+    payload = parse_json(Path(path).read_text(encoding="utf-8"))
     if not isinstance(payload, dict) or not isinstance(payload.get("results"), list):
         raise ValueError("no list of results at its top level (a file written by `stiefelsym verify`, "
                          "--format json or reports/results.json, has one)")

@@ -307,7 +307,7 @@ BAD_SIZES = {
     "4,2,1": "is not a size",
     "2,3": "r = 3 > n = 2",
     "3,0": "r = 0",
-    "-4,2": "r = 2 > n = -4",
+    "-4,2": "n = -4, but the Stiefel variety V(n,r) needs n >= 1",
 }
 
 

@@ -27,8 +27,9 @@ import click
 from stiefelsym._lazy import lazy
 from stiefelsym.claims import CATALOG, CatalogError, ClaimTimeout, Claim, Registry, Size, load_catalog
 from stiefelsym.methods.hard import HARD_CASES
+from stiefelsym.run import rerun
 from stiefelsym.run.pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT, MOST_GIB, MOST_SECONDS, Terminated, raise_on_sigterm
-from stiefelsym.results import Result, dump_results, load_results, write_atomic
+from stiefelsym.results import Result, dump_results, load_results, parse_json, write_atomic
 from stiefelsym.scene import SizeError
 
 _report = lazy("stiefelsym.reports.report", globals(), "_report")
@@ -212,6 +213,8 @@ class SizeType(click.ParamType):
             self.fail(f"{value!r} is not a size; write n,r with integers 1 <= r <= n, e.g. 4,2",
                       param, ctx)
         n, r = int(m.group(1)), int(m.group(2))
+        if n < 1:
+            self.fail(f"{value!r}: n = {n}, but the Stiefel variety V(n,r) needs n >= 1", param, ctx)
         if r < 1:
             self.fail(f"{value!r}: r = {r}, but the Stiefel variety V(n,r) needs r >= 1", param, ctx)
         if r > n:
@@ -389,8 +392,8 @@ def _mutation(d: Path) -> dict[str, Any] | None:
     """The mutation analysis next to the results (written by `stiefelsym mutate`), if any."""
     p = Path(d) / "mutation.json"
     try:
-        return json.loads(p.read_text(encoding="utf-8")) if p.is_file() else None
-    except (OSError, UnicodeDecodeError, json.JSONDecodeError):
+        return parse_json(p.read_text(encoding="utf-8")) if p.is_file() else None
+    except (OSError, UnicodeDecodeError, ValueError):
         return None
 
 
@@ -881,13 +884,7 @@ def _verify(out: Any, ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tu
     origin: dict[str, str] = user.origin if user is not None else {}
     user_ids = set(origin)
     methods = methods or ("auto",)
-    budgets: list[str] = []
-    if timeout != DEFAULT_TIMEOUT:
-        budgets += ["--timeout", f"{timeout:g}"]
-    if budget != DEFAULT_BUDGET:
-        budgets += ["--budget", f"{budget:g}"]
-    if memory != DEFAULT_MEMORY_GIB:
-        budgets += ["--memory", f"{memory:g}"]
+    budgets = rerun.budget_options(timeout, budget, memory)
     dest = out if fmt == "text" else sys.stderr   # result lines go to stderr when stdout is a document
     progress = _Progress(_isatty(sys.stderr))
     results: list[Result] = []
@@ -900,8 +897,7 @@ def _verify(out: Any, ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tu
             r.rerun = runner.rerun_command(r)
         if user is not None:
             user.rerun_naming_file(r)
-        if budgets and budgets[0] not in r.rerun:
-            r.rerun += " " + shlex.join(budgets)
+        rerun.with_budgets(r, budgets)
         results.append(r)
         progress.clear()
         say(r.line())

@@ -9,7 +9,6 @@ Exit status: 0 every record holds up; 1 some record does not; 2 bad input.
 """
 from __future__ import annotations
 
-import json
 from pathlib import Path
 
 import click
@@ -17,7 +16,7 @@ import click
 from stiefelsym.cli import InputError, _registry, standalone_command
 from stiefelsym.methods.hard import HARD_CASES
 from stiefelsym.run.integrity import MAX_N_CHECKED, check_results, run_origin
-from stiefelsym.results import meta_problems
+from stiefelsym.results import meta_problems, parse_json
 from stiefelsym.run.runner import METHODS
 
 _Command = standalone_command("stiefelsym check")
@@ -35,7 +34,7 @@ def check(results_file: Path, no_rerun: bool, claims_files: tuple[str, ...]) -> 
     if not results_file.is_file():
         raise InputError(f"results file not found: {results_file}")
     try:
-        payload = json.loads(results_file.read_text(encoding="utf-8"))
+        payload = parse_json(results_file.read_text(encoding="utf-8"))
         records = payload["results"]
         meta = payload["meta"]
         if not isinstance(records, list) or not all(isinstance(r, dict) for r in records):

@@ -15,7 +15,7 @@ import click
 
 from stiefelsym.cli import InputError, standalone_command
 
-from stiefelsym.results import write_atomic
+from stiefelsym.results import parse_json, write_atomic
 
 EXIT_INPUT = 2
 DEFAULT_RESULTS = (Path("reports/results.json"), Path("reports/all/results.json"))
@@ -51,10 +51,10 @@ def _load_verdicts(paths: list[Path], explicit: bool) -> dict[str, Any]:
                 raise TablesInputError(f"results file not found: {path}")
             continue
         try:
-            payload = json.loads(path.read_text(encoding="utf-8"))
+            payload = parse_json(path.read_text(encoding="utf-8"))
             results = payload["results"]
             out[str(path)] = verdict_matrix(results)
-        except (OSError, UnicodeDecodeError, json.JSONDecodeError, KeyError, TypeError, AttributeError) as exc:
+        except (OSError, UnicodeDecodeError, ValueError, KeyError, TypeError, AttributeError) as exc:
             raise TablesInputError(f"{path} is not a stiefelsym results file: "
                                    f"{type(exc).__name__}: {str(exc).splitlines()[0] if str(exc) else ''}") from None
     return out

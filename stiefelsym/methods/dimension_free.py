@@ -64,6 +64,24 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
     return run_free_union(claim, func, families, t0)
 
 
+def _square_hint(claim: Claim, family: SizeFamily | None) -> str:
+    """A hint for a claim whose sizes all have r = n through its condition only (``where``): the free
+    scene takes X Xᵀ = I_n as a hypothesis when the statement declares it (``r_is_n=True``), which a
+    condition, a function it cannot read, does not."""
+    spec = claim.sizes
+    if family is not None or getattr(spec, "r_is_n", False) or getattr(spec, "where", None) is None:
+        return ""
+    try:
+        sizes = [(n, r) for n in range(1, 9) for r in range(1, n + 1) if spec.admits(n, r)]
+    except Exception:  # noqa: BLE001 - a user's condition: no hint when it cannot be read
+        return ""
+    if sizes and all(n == r for n, r in sizes):
+        return ("; every size the statement admits up to n = 8 has r = n, but only through its condition "
+                "(where=), which the dimension-free scene does not read: declare admissible(..., r_is_n=True) "
+                "to have X X^T = I_n as a hypothesis")
+    return ""
+
+
 def run_free_on(claim: Claim, func: Callable, family: SizeFamily | None, alone: bool = True) -> Result:
     """The dimension-free run of ``func`` on every n, r (``family`` None) or on one family of sizes: the scene
     with the family's own hypotheses, the claim traced on the family (a comparison of sizes it makes is
@@ -186,7 +204,7 @@ def run_free_on(claim: Claim, func: Callable, family: SizeFamily | None, alone: 
             return undecided(f"a residual entry has a nonzero normal form ({res.residual}; the other entries were "
                              "not reduced: a mutation analysis needs the verdict only); the fixed-size methods decide")
         return undecided(f"{len(open_entries)} residual entries have a nonzero normal form "
-                         f"(e.g. {res.residual}); the fixed-size methods decide")
+                         f"(e.g. {res.residual}); the fixed-size methods decide" + _square_hint(claim, family))
     # the proof is about the graph traced with symbolic sizes, which is the graph every fixed-size method
     # evaluates (a claim that traces so is never traced at a number, see stiefelsym.ir._compile): it must
     # type at every size the claim is stated for (a size written as an int is checked there only); a graph

@@ -1,0 +1,82 @@
+"""Stop 63: the user trial's statements (tests/adversary/s63/user) and the review's files (s63/review).  See
+tests/adversary/README.md, Stop 63."""
+import json
+
+import pytest
+
+from adversary_cli import cli, HERE
+
+USER = HERE / "s63" / "user"
+REVIEW = HERE / "s63" / "review"
+
+
+def _results(*args):
+    run = cli("verify", *args, "--no-report", "--format", "json", "--timeout", "60", "--jobs", "2")
+    assert run.returncode in (0, 1), run.stderr[-2000:]
+    return json.loads(run.stdout)["results"]
+
+
+@pytest.mark.parametrize("method", ["modular", pytest.param("exact", marks=pytest.mark.slow)])
+def test_the_user_trials_statements_hold_and_their_twins_fail(method):
+    """Eleven statements of §3, §4, §6 and §8 the catalog states otherwise or not at all (Φ acting on X and P, the
+    Euclidean acceleration, the κ-family, the Manakov flow and Lax pair for B = A³, PᵀP along two flows, H∘Θ and
+    (CPB), the rank of ξ ↦ [ξ, XXᵀ], the Neumann flow at r = n, SO(r)-invariant traces, a count), written by a user:
+    each holds at (3,1), (4,2), (3,3), and each false twin fails where it is stated (numpy: s63/user/indep.py).  The
+    twin that says the rank of ξ ↦ [ξ, XXᵀ] is r(n − r) + 1 is the one left open (a rank said too high is refuted
+    only by a function-field rank, within the exact method's 5 s for it: inconclusive, never a pass)."""
+    sizes = ("--size", "3,1", "--size", "4,2", "--size", "3,3", "--method", method)
+    held = _results("--claims", str(USER / "claims.py"), *sizes)
+    assert held and all(r["verdict"] in ("proved", "checked") for r in held), \
+        [(r["claim"], r["n"], r["r"], r["verdict"]) for r in held if r["verdict"] not in ("proved", "checked")]
+    twins = _results("--claims", str(USER / "negatives.py"), *sizes)
+    for r in twins:
+        if r["claim"] == "n63-l1-rank":
+            assert r["verdict"] in ("fails", "inconclusive"), r
+        elif r["claim"] in ("n63-gram-not-conserved", "n63-dual-matrix-not-invariant"):  # true "does not hold"
+            assert r["verdict"] in ("proved", "checked"), r
+        else:
+            assert r["verdict"] == "fails", (r["claim"], r["n"], r["r"], r["verdict"], r["message"])
+
+
+def test_an_integer_constant_of_any_size_is_exact(tmp_path):
+    """c X − c X = 0 with c = 2¹⁵⁰⁰⁰ (4516 digits) was `error` under every method: the engine writes an integer in
+    decimal (the graph's digest, the records, JSON between its processes), and Python refuses the decimal text of an
+    integer above 4300 digits unless told otherwise.  The engine now lifts that limit for itself: the true claims are
+    proved, and a false twin (c X − (c + 1) X = 0) fails under exact and modular."""
+    held = _results("--claims", str(REVIEW / "big_constant.py"), "--method", "exact")
+    assert held and all(r["verdict"] == "proved" for r in held), [(r["claim"], r["verdict"], r["message"]) for r in held]
+    free = _results("--claims", str(REVIEW / "big_constant.py"), "--method", "free")
+    assert all(r["verdict"] == "proved" for r in free), [(r["claim"], r["verdict"], r["message"]) for r in free]
+    twin = tmp_path / "big_twin.py"
+    twin.write_text("from stiefelsym import admissible, claim\nC = 2 ** 15000\n\n\n"
+                    "@claim('bc-false', paper='t', kind='id', section='2', sizes=admissible(n_max=3))\n"
+                    "def false(s):\n    return {'r': s.X * C - s.X * (C + 1)}\n")
+    for method in ("exact", "modular"):
+        rec = _results("--claims", str(twin), "--method", method, "--size", "3,2")
+        assert [r["verdict"] for r in rec] == ["fails"], rec
+
+
+def test_free_names_the_declaration_a_condition_r_equals_n_does_not_make():
+    """A statement at r = n written with where=lambda n, r: r == n only: the dimension-free scene cannot read the
+    condition, so X Xᵀ = I_n is no hypothesis and the Neumann flow's statement is undecided; the message now says
+    to declare admissible(..., r_is_n=True), with which it is proved for every n."""
+    rec = _results("--claims", str(USER / "claims.py"), "u63-r-equals-n", "--method", "free")
+    assert rec[0]["verdict"] == "undecided" and "r_is_n=True" in rec[0]["message"], rec
+    declared = _results("--claims", str(USER / "extra.py"), "u63-r-is-n", "--method", "free")
+    assert declared[0]["verdict"] == "proved", declared
+
+
+def test_a_negative_n_is_named_as_such():
+    """--size -3,1 said "r = 1 > n = -3"; it now says that n must be at least 1 (exit 2)."""
+    run = cli("verify", "la1", "--size", "-3,1", "--method", "modular")
+    assert run.returncode == 2 and "n = -3, but the Stiefel variety V(n,r) needs n >= 1" in run.stderr, run.stderr
+
+
+def test_the_python_apis_rerun_keeps_the_runs_budgets():
+    """api.verify(..., timeout=60) gave results whose rerun command dropped the time limit (the command line's own
+    lines keep it): both now add the budgets that differ from the command line's defaults, through one function."""
+    from stiefelsym import verify
+    res = verify(["neumann-flow"], sizes=["2,1"], methods=["modular"], timeout=60, memory=2)
+    assert res[0].rerun.endswith("--timeout 60 --memory 2"), res[0].rerun
+    plain = verify(["neumann-flow"], sizes=["2,1"], methods=["modular"])
+    assert "--timeout" not in plain[0].rerun and "--memory" not in plain[0].rerun, plain[0].rerun
