@@ -194,12 +194,18 @@ def test_inverse_and_singular_and_budget():
     S = Mat._rows([[x, y], [2 * x, 2 * y]], F)
     with pytest.raises(DegenerateError):
         S.inv()
-    # a dense 4x4 is one diagonal pivot and a 3x3 core (within budget); a dense 5x5 is not
+    # a dense 4x4 is one diagonal pivot and a 3x3 core (within budget); a dense 5x5 is not, unless its entries
+    # have degree <= 1 (then up to 6x6: I + S of the Cayley chart at r = n)
     B4 = Mat._rows([[x if i == j else y + i * j for j in range(4)] for i in range(4)], F)
     assert (B4 @ B4.inv() - Mat.identity(4, F)).is_zero()
-    B5 = Mat._rows([[x if i == j else y + i * j for j in range(5)] for i in range(5)], F)
+    B5 = Mat._rows([[x * y if i == j else y + i * j for j in range(5)] for i in range(5)], F)
     with pytest.raises(SymbolicBudget):
         B5.inv()
+    L5 = Mat._rows([[x if i == j else y + i * j for j in range(5)] for i in range(5)], F)
+    assert (L5 @ L5.inv() - Mat.identity(5, F)).is_zero()
+    L7 = Mat._rows([[x if i == j else y + i * j for j in range(7)] for i in range(7)], F)
+    with pytest.raises(SymbolicBudget):
+        L7.inv()
     N4 = Mat._rows([[1 if i == j else (x if j > i else 0) for j in range(4)] for i in range(4)], F)
     assert (N4 @ N4.inv() - Mat.identity(4, F)).is_zero()
 

@@ -1515,7 +1515,8 @@ class PolyBackend(Backend):
         if m == 0:
             return self.zeros(0, 0)
         N = [[a.a[i, j] for j in range(m)] for i in range(m)]
-        if m > self.field.max_solve and not _small_core(N, self.field.max_solve) and (a.den or not _numeric_pivots(N)):
+        if m > self.field.max_solve and not _small_core(N, self.field.max_solve) and (a.den or not _numeric_pivots(N)) \
+                and not (m <= LINEAR_MAX_SOLVE and not a.den and _linear(N)):
             raise SymbolicBudget(f"a symbolic {m}x{m} linear solve")
         rows = [N[i] + [R.one if j == i else R.zero for j in range(m)] for i in range(m)]
         prev = R.one
@@ -1703,6 +1704,22 @@ def _frobenius(a: np.ndarray, b: np.ndarray, zero):
         if x and y:
             acc = acc + x * y
     return acc
+
+
+#: the largest inverse of a matrix of polynomials of degree <= 1 (I + S in the Cayley chart at r = n, a pencil
+#: λI − A): Bareiss elimination keeps minors of degree <= k at step k, so the entries stay small (at r = n = 6,
+#: (I + S)⁻¹ in 15 parameters takes well under a second); a general symbolic matrix has field.max_solve
+LINEAR_MAX_SOLVE = 6
+
+
+def _linear(N) -> bool:
+    """Whether every entry of N is a polynomial of total degree at most 1."""
+    for row in N:
+        for x in row:
+            deg = getattr(x, "total_degree", None)
+            if deg is None or not x.is_zero() and deg() > 1:
+                return False
+    return True
 
 
 def _small_core(N, k: int) -> bool:

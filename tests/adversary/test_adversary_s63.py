@@ -80,3 +80,19 @@ def test_the_python_apis_rerun_keeps_the_runs_budgets():
     assert res[0].rerun.endswith("--timeout 60 --memory 2"), res[0].rerun
     plain = verify(["neumann-flow"], sizes=["2,1"], methods=["modular"])
     assert "--timeout" not in plain[0].rerun and "--memory" not in plain[0].rerun, plain[0].rerun
+
+
+def test_a_rank_at_r_equals_n_takes_the_symbolic_cayley_inverse_of_a_linear_matrix():
+    """The rank of ξ ↦ [ξ, XXᵀ] at (5,5) (0: XXᵀ = I) read entries of X, so the Cayley chart X = (I − S)(I + S)⁻¹
+    was taken, and its 5x5 symbolic inverse was beyond the exact method's budget (3x3 for a symbolic matrix):
+    inconclusive, while (4,4) was proved.  A matrix of polynomials of degree <= 1 (I + S, a pencil λI − A) is now
+    inverted up to 6x6 (Bareiss keeps minors of degree k at step k): proved at (5,5) and (6,6), and the twin that says
+    rank 1 fails there; a 7x7 inverse stays beyond the budget (inconclusive, never a pass)."""
+    held = _results("--claims", str(USER / "claims.py"), "u63-l1-rank", "--size", "5,5", "--size", "6,6",
+                    "--method", "exact")
+    assert [r["verdict"] for r in held] == ["proved", "proved"], [(r["verdict"], r["message"]) for r in held]
+    twin = _results("--claims", str(USER / "negatives.py"), "n63-l1-rank", "--size", "5,5", "--size", "6,6",
+                    "--method", "exact")
+    assert [r["verdict"] for r in twin] == ["fails", "fails"], [(r["verdict"], r["message"]) for r in twin]
+    beyond = _results("--claims", str(USER / "claims.py"), "u63-l1-rank", "--size", "7,7", "--method", "exact")
+    assert beyond[0]["verdict"] == "inconclusive" and "7x7 linear solve" in beyond[0]["message"], beyond
