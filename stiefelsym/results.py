@@ -27,7 +27,7 @@ def _clip(text: str, limit: int | None) -> str:
     return text[: max(limit - 3, 0)] + "..."
 
 
-def _short_value(text: str, limit: int = 60) -> str:
+def short_value(text: str, limit: int = 60, where: str = "the record") -> str:
     """A witness's value for one line: a long exact rational as its magnitude, with its digits counted
     (the exact value is in the record, results.json); anything else clipped."""
     m = _RATIONAL.fullmatch(text.strip())
@@ -38,7 +38,7 @@ def _short_value(text: str, limit: int = 60) -> str:
         ctx.prec = 6
         approx = f"{decimal.Decimal(sign + num) / decimal.Decimal(den):.4E}".replace("E+", "e").replace("E", "e")
     digits = f"{len(num)} digits" if den == "1" else f"{len(num)}/{len(den)} digits"
-    return f"{approx} (a rational of {digits}; exact in the record)"
+    return f"{approx} (a rational of {digits}; exact in {where})"
 
 
 _RATIONAL = re.compile(r"(-?)(\d+)(?:/(\d+))?")
@@ -123,7 +123,7 @@ class Result:
         if self.verdict == "fails":
             w = self.witness or {}
             if w.get("entry") is not None and w.get("value") is not None:
-                text = f"witness {w['entry']} = {_short_value(str(w['value']))}"
+                text = f"witness {w['entry']} = {short_value(str(w['value']))}"
             elif self.residual:
                 text = f"residual {self.residual}"
             else:
@@ -347,7 +347,9 @@ def record_problems(d: Any) -> list[str]:
 
 
 def _number(x: Any) -> bool:
-    return type(x) in (int, float) and math.isfinite(x)
+    """A finite number within float's range (an int beyond it is refused by comparison: math.isfinite would raise
+    OverflowError converting it, and so would every rendering of it as a float)."""
+    return (type(x) is float and math.isfinite(x)) or (type(x) is int and -1e308 <= x <= 1e308)
 
 
 def _strings(x: Any) -> bool:

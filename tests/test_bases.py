@@ -95,15 +95,15 @@ def test_misuse_is_an_error_with_a_message():
 
 
 def test_a_full_rank_beyond_the_symbolic_budget_is_proved_at_exact_points(claims):
-    """At (5,5) the Cayley chart needs a symbolic 5x5 solve, beyond the exact method's budget: a claim whose every
+    """At (7,7) the Cayley chart needs a symbolic 7x7 solve, beyond the exact method's budget: a claim whose every
     check is a generic rank of full size is then proved at exact rational points (a nonzero maximal minor on each
-    component of O(5)), as the rational method proves it.  The negative controls: a rank above the full size fails,
+    component of O(7)), as the rational method proves it.  The negative controls: a rank above the full size fails,
     and a zero map said to be of full rank is not proved."""
-    res = run_one(claims["bases-action-rank"], Size(5, 5), "exact", 0)
+    res = run_one(claims["bases-action-rank"], Size(7, 7), "exact", 0)
     assert res.verdict == "proved" and "beyond budget" in res.reductions[0], (res.verdict, res.message)
     assert "each of the 2 components" in res.certificate
-    assert run_one(claims["bases-action-rank-plus-one"], Size(5, 5), "exact", 0).verdict == "fails"
-    zero = run_one(claims["bases-zero-map-full-rank"], Size(5, 5), "exact", 0)
+    assert run_one(claims["bases-action-rank-plus-one"], Size(7, 7), "exact", 0).verdict == "fails"
+    zero = run_one(claims["bases-zero-map-full-rank"], Size(7, 7), "exact", 0)
     assert zero.verdict not in ("proved", "checked", "numeric"), (zero.verdict, zero.message)
     assert run_one(claims["bases-zero-map-full-rank"], Size(3, 2), "exact", 0).verdict == "fails"
 

@@ -127,11 +127,13 @@ def generic_resolvent_identity(s):
 
 
 def test_symbolic_budget_is_reported_not_guessed():
-    # a dense symmetric 5x5 has no core of 3 rows: beyond the budget of a symbolic solve
-    res = run_exact(_claim(generic_resolvent_identity), 5, 2, 0)
+    # a dense symmetric 7x7 pencil has no core of 3 rows and is larger than 6x6: beyond the budget of a symbolic solve
+    res = run_exact(_claim(generic_resolvent_identity), 7, 2, 0)
     assert res.verdict == "inconclusive" and "budget" in res.message
-    auto = run_one(_claim(generic_resolvent_identity), Size(5, 2), "auto", 0)
+    auto = run_one(_claim(generic_resolvent_identity), Size(7, 2), "auto", 0)
     assert auto.method == "modular" and auto.verdict == "checked" and "budget" in auto.message
+    # a 5x5 pencil λI − B (entries of degree <= 1) is within it
+    assert run_exact(_claim(generic_resolvent_identity), 5, 2, 0).verdict == "proved"
     # the chart's A has its diagonal blocks A11, A22 diagonal: its resolvent is within the budget
     assert run_exact(_claim(resolvent_identity), 5, 2, 0).verdict == "proved"
     assert run_exact(_claim(resolvent_identity_sign), 5, 2, 0).verdict == "fails"

@@ -11,7 +11,7 @@ import pytest
 
 from stiefelsym import admissible, block
 from stiefelsym.claims import Claim, Size
-from stiefelsym.results import Result, _short_value
+from stiefelsym.results import Result, short_value
 from stiefelsym.run.runner import run_one
 
 PASS = {"proved", "checked", "numeric"}
@@ -93,8 +93,8 @@ def test_a_long_exact_witness_is_shown_by_its_magnitude():
                  verdict="fails", expected=True, seconds=0.1, seed=0, witness={"entry": "LA1[1,2]", "value": value})
     line = res.line()
     assert "-3.7125e19 (a rational of 160/140 digits; exact in the record)" in line, line
-    assert _short_value("12/7") == "12/7"
-    assert _short_value("x" * 80).endswith("...")
+    assert short_value("12/7") == "12/7"
+    assert short_value("x" * 80).endswith("...")
 
 
 #: a claims file: one claim at every r, one at r = 1 only, one dimension claim

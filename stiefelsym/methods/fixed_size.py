@@ -50,7 +50,7 @@ from stiefelsym.backends.polyfield import SymbolicField
 from stiefelsym.backends.matrix import Mat, is_scene_number
 from stiefelsym.backends.native import F64, DegMat, _buf, backend, one_blas_thread, quiet_numpy
 from stiefelsym.backends.paired import PairField, marker_of
-from stiefelsym.results import CheckOutcome, Result
+from stiefelsym.results import CheckOutcome, Result, short_value
 from stiefelsym.scene import CoordinateAccess, PointRead, Scene, SizeError
 
 flint = lazy("flint", globals())
@@ -2944,7 +2944,7 @@ def _float_component(claim: Claim, n: int, r: int, seed: int, func: Callable, op
     key = draw_key(claim, n, r, seed, func)
     for dps in ladder:
         if dps is None and wide:
-            run.log.append(f"float64 skipped: the constant {wide[0]} is outside its range "
+            run.log.append(f"float64 skipped: the constant {short_value(str(wide[0]), where='the claim')} is outside its range "
                            f"(2^-{FLOAT_EXPONENT_LIMIT}, 2^{FLOAT_EXPONENT_LIMIT})")
             continue
         def build(dps=dps) -> tuple:

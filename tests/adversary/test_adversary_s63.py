@@ -96,3 +96,48 @@ def test_a_rank_at_r_equals_n_takes_the_symbolic_cayley_inverse_of_a_linear_matr
     assert [r["verdict"] for r in twin] == ["fails", "fails"], [(r["verdict"], r["message"]) for r in twin]
     beyond = _results("--claims", str(USER / "claims.py"), "u63-l1-rank", "--size", "7,7", "--method", "exact")
     assert beyond[0]["verdict"] == "inconclusive" and "7x7 linear solve" in beyond[0]["message"], beyond
+
+
+@pytest.mark.parametrize("method", ["exact", "modular", "float", "ball"])
+def test_false_statements_with_constants_outside_float64_are_never_passed(method):
+    """Own attempt once integers of any size are exact: (2¹⁵⁰⁰⁰ + 1)X − 2¹⁵⁰⁰⁰X = 0, 3⁻⁹⁰⁰⁰X = 0 (0 in float64),
+    a trace times 3⁻⁹⁰⁰⁰ off by its square, ((c + 1)/c)X − X = 0: float64 overflows or underflows on each.  Exact and
+    modular refute them all; float and ball refute them or stay inconclusive (a float `numeric` is confirmed at
+    exact points mod p), never pass."""
+    rec = _results("--claims", str(HERE / "s63" / "own" / "huge_false.py"), "--method", method)
+    assert len(rec) == 4
+    for r in rec:
+        allowed = ("fails",) if method in ("exact", "modular") else ("fails", "inconclusive")
+        assert r["verdict"] in allowed, (r["claim"], r["verdict"], r["message"])
+
+
+@pytest.mark.parametrize("field,value", [("false_pass_bound", 10 ** 400), ("seconds", 10 ** 4000)])
+def test_an_integer_beyond_floats_range_in_a_record_is_refused_in_one_line(tmp_path, field, value):
+    """The second review: a record's false_pass_bound or seconds set to an integer of 400 or 4000 digits (below the
+    4300 digits a file may have) reached math.isfinite, whose OverflowError was a traceback of `check` and `report`.
+    Such a number is now refused as the field's other bad values are (inf, nan, -1): one line, exit 2 for report,
+    the record rejected by check."""
+    run = cli("verify", "--claims", str(HERE / "s63" / "review2" / "recs.py"), "--method", "modular", "--jobs", "1",
+              "--format", "json", "--no-report", "--timeout", "60")
+    doc = json.loads(run.stdout)
+    doc["results"][0][field] = value
+    path = tmp_path / "edited.json"
+    path.write_text(json.dumps(doc))
+    report = cli("report", "--results", str(path), "--report-dir", str(tmp_path / "rep"))
+    assert report.returncode == 2 and "Traceback" not in report.stderr, report.stderr[-1500:]
+    assert f"{field} is 1000" in report.stderr, report.stderr
+    check = cli("check", str(path), "--no-rerun")
+    out = check.stdout + check.stderr
+    assert check.returncode == 1 and "Traceback" not in out and f"malformed: {field} is 1000" in out, out[-1500:]
+
+
+def test_a_constant_outside_float64_is_named_by_its_magnitude(tmp_path):
+    """X·2⁻¹⁵⁰⁰⁰ = 0 (false) fails under float with an exact witness, but its reason printed the constant's 4516
+    digits (a 31 kB record); it now gives its magnitude and digit count, as a witness's value does."""
+    f = tmp_path / "tiny.py"
+    f.write_text("from fractions import Fraction\nfrom stiefelsym import admissible, claim\n\n\n"
+                 "@claim('tiny-x', paper='t', kind='id', section='2', sizes=admissible(n_max=3, n_min=3, r_min=2, "
+                 "r_max=2))\ndef tiny(s):\n    return {'r': s.X * Fraction(1, 2 ** 15000)}\n")
+    rec = _results("--claims", str(f), "--method", "float")[0]
+    assert rec["verdict"] == "fails" and "the constant 3.5487e-4516 (a rational of 1/4516 digits" in rec["message"]
+    assert len(json.dumps(rec)) < 10_000

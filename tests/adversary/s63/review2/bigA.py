@@ -1,3 +1,4 @@
+# ruff: noqa: F841, E702, F401, E731, E741
 """Review2 s63, batch A: huge and tiny exact constants against float, ball, modular, exact.
 T = true, F = false (numpy_truth.py checks each)."""
 from stiefelsym import admissible, claim
