@@ -126,6 +126,14 @@ def generic_resolvent_identity(s):
     return {"BR": B @ R - (s.lam * R - s.In)}
 
 
+def generic_resolvent_swapped(s):
+    """FALSE: (λ − B)⁻¹ = (λ + B)⁻¹ for a generic symmetric B (a careless sign inside the inverted pencil)."""
+    G = s.general_params("G", s.n, s.n, ("n", "n"))
+    B = G + G.T
+    lam = s.scalar_matrix(s.lam, s.n, "n")
+    return {"R": (lam - B).inv() - (lam + B).inv()}
+
+
 def test_symbolic_budget_is_reported_not_guessed():
     # a dense symmetric 7x7 pencil has no core of 3 rows and is larger than 6x6: beyond the budget of a symbolic solve
     res = run_exact(_claim(generic_resolvent_identity), 7, 2, 0)
@@ -134,6 +142,11 @@ def test_symbolic_budget_is_reported_not_guessed():
     assert auto.method == "modular" and auto.verdict == "checked" and "budget" in auto.message
     # a 5x5 pencil λI − B (entries of degree <= 1) is within it
     assert run_exact(_claim(generic_resolvent_identity), 5, 2, 0).verdict == "proved"
+    # negative controls within the widened budget: a false sign outside, and inside, the inverted 5x5 pencil
+    def flipped(s):
+        return {k: v + 2 * s.In for k, v in generic_resolvent_identity(s).items()}
+    assert run_exact(_claim(flipped), 5, 2, 0).verdict == "fails"
+    assert run_exact(_claim(generic_resolvent_swapped), 5, 2, 0).verdict == "fails"
     # the chart's A has its diagonal blocks A11, A22 diagonal: its resolvent is within the budget
     assert run_exact(_claim(resolvent_identity), 5, 2, 0).verdict == "proved"
     assert run_exact(_claim(resolvent_identity_sign), 5, 2, 0).verdict == "fails"

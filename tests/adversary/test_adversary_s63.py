@@ -141,3 +141,15 @@ def test_a_constant_outside_float64_is_named_by_its_magnitude(tmp_path):
     rec = _results("--claims", str(f), "--method", "float")[0]
     assert rec["verdict"] == "fails" and "the constant 3.5487e-4516 (a rational of 1/4516 digits" in rec["message"]
     assert len(json.dumps(rec)) < 10_000
+
+
+def test_the_command_lines_budget_default_is_the_one_a_rerun_leaves_out():
+    """rerun.budget_options leaves out a budget equal to the cost model's default; the command line has a default of
+    its own (it does not import the cost model at start-up): the two must be one value, or a rerun would drop a
+    budget the run had."""
+    from stiefelsym import cli
+    from stiefelsym.methods.costmodel import DEFAULT_BUDGET
+    from stiefelsym.run.rerun import budget_options
+    assert cli.DEFAULT_BUDGET == DEFAULT_BUDGET
+    assert budget_options(300.0, DEFAULT_BUDGET, 4.0) == []
+    assert budget_options(300.0, 60.0, 4.0) == ["--budget", "60"]
