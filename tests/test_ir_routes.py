@@ -417,6 +417,36 @@ def test_a_record_left_out_is_caught_by_check(tmp_path):
     assert _run_cli(["check", str(out / "results.json")], tmp_path).exit_code == 2
 
 
+def test_a_record_copied_is_caught_by_check_and_report(tmp_path):
+    """Each run once: a copy of a record (which counts its verdict twice in every table) is rejected by check and
+    refused by report; a command that asked for exact and auto has two records of auto's exact run, and they pass."""
+    out = tmp_path / "rep"
+    r = _run_cli(["verify", "left-momentum-map", "--size", "3,1", "--method", "exact", "--method", "auto",
+                  "--method", "free", "--report-dir", str(out)], tmp_path)
+    assert r.exit_code == 0, r.output
+    payload = json.loads((out / "results.json").read_text())
+    assert [x["method"] for x in payload["results"]].count("exact") == 2
+    assert _run_cli(["check", str(out / "results.json"), "--no-rerun"], tmp_path).exit_code == 0
+    exact = next(x for x in payload["results"] if x["method"] == "exact")
+    free = next(x for x in payload["results"] if x["method"] == "free")
+    for copies in ([exact], [free], [exact, free]):
+        edited = dict(payload, results=payload["results"] + copies)
+        path = tmp_path / "copied.json"
+        path.write_text(json.dumps(edited))
+        r = _run_cli(["check", str(path), "--no-rerun"], tmp_path)
+        assert r.exit_code == 1 and r.output.count("one record more than") == len(copies), r.output
+        r = _run_cli(["report", "--results", str(path), "--report-dir", str(tmp_path / "re")], tmp_path)
+        assert r.exit_code == 2 and "one record more than" in r.output, r.output
+    single = tmp_path / "single"
+    assert _run_cli(["verify", "left-momentum-map", "--size", "3,1", "--method", "exact", "--report-dir",
+                     str(single)], tmp_path).exit_code == 0
+    payload = json.loads((single / "results.json").read_text())
+    payload["results"] *= 2
+    (single / "results.json").write_text(json.dumps(payload))
+    r = _run_cli(["check", str(single / "results.json"), "--no-rerun"], tmp_path)
+    assert r.exit_code == 1 and "one record more than the 1 its command made" in r.output, r.output
+
+
 def test_a_free_proof_without_a_certificate_is_refused(tmp_path):
     from stiefelsym.certificate_check import main as checker
     forged = {"results": [{"claim": "prep", "method": "free", "verdict": "proved", "certificate_data": None}]}

@@ -321,14 +321,29 @@ def unstated_records(records: list[dict], registry: Registry, meta: dict | None)
     command did not plan for that claim: a verdict is a verdict of the claim's statement, which says at
     which sizes it is made (``verify`` refuses a size outside it), so a record elsewhere (a run of the same
     graph under a wider statement, spliced in) would report the claim as failing, or holding, where it
-    says nothing; and a file is the whole run of its command, no more than no less (:func:`missing_runs`)."""
+    says nothing; and a file is the whole run of its command, no more than no less (:func:`missing_runs`), each
+    run once (a copy of a record would count its verdict twice)."""
     from stiefelsym.run.runner import _sizes_for
     out = []
     planned: dict[str, set | None] = {}
+    seen: dict[tuple, int] = {}
+    methods = set((meta or {}).get("methods") or ["auto"])
     for i, r in enumerate(records):
         cid, n, rr = r.get("claim"), r.get("n"), r.get("r")
-        if cid not in registry or n is None:
-            continue                    # refused elsewhere, or the dimension-free record (no size)
+        if cid not in registry:
+            continue                    # refused elsewhere
+        # one record per run: a command runs a claim once per size, method and variant, except that auto
+        # records the method it chose, which the command may also have asked for by name (two records then)
+        key = (cid, n, rr, r.get("method"), r.get("variant"))
+        seen[key] = seen.get(key, 0) + 1
+        runs = 2 if n is not None and (meta is None or "auto" in methods and r.get("method") in methods) else 1
+        if seen[key] > runs:
+            where = _where_run(r) if n is not None else f"{cid} all n, r {r.get('method')}"
+            out.append((i, f"{where}: one record more than the {runs} its command made of this run (a copy counts "
+                           "a verdict twice)"))
+            continue
+        if n is None:
+            continue                    # the dimension-free record (no size)
         claim = registry.get(cid)
         where = _where_run(r)
         try:
