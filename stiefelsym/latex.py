@@ -99,8 +99,10 @@ def tex_escape(text: Any) -> str:
             out.append(r"\ensuremath{_{" + "".join(_SUB[c] for c in piece) + "}}")
         elif piece in _TEX_SPECIAL:
             out.append(_TEX_SPECIAL[piece])
-        elif piece == "\n":
+        elif piece in "\n\t\r":
             out.append(" ")
+        elif ord(piece) < 32 or ord(piece) == 127:     # a control character: named, never handed to TeX
+            out.append(r"\texttt{[U+%04X]}" % ord(piece))
         elif ord(piece) < 128:
             out.append(piece)
         elif piece in _COMBINING and out and _markable(out[-1]):
@@ -169,8 +171,11 @@ def split_math(text: str) -> list[tuple[bool, str]]:
 
 
 def tex_balanced(tex: str) -> bool:
-    """Balanced braces, environments and display delimiters: safe to include as is."""
+    """Balanced braces, environments and display delimiters, only the vocabulary of a derivation
+    (:data:`DERIVATION_COMMANDS`): safe to include as is."""
     if not _braces_balanced(tex):
+        return False
+    if not _vocabulary_ok(tex, DERIVATION_COMMANDS, DERIVATION_ENVIRONMENTS, _MATH_SYMBOLS_ESCAPED | _DERIVATION_SYMBOLS):
         return False
     if len(re.findall(r"\\\[", tex)) != len(re.findall(r"\\\]", tex)):
         return False
@@ -197,11 +202,65 @@ def _braces_balanced(tex: str) -> bool:
     return depth == 0
 
 
+#: the control sequences a formula of a claim (its statement, the ``$...$`` of its docstring and title) may use:
+#: the vocabulary of mathematics, each defined by the report's preamble (amsmath, amssymb and its operators).  A
+#: formula with any other (\\def, \\let, \\input, \\catcode, \\write, a font or package the preamble lacks, ...)
+#: is set as plain text: a claims file cannot redefine what the report prints, read a file into it, or break it
+MATH_COMMANDS = frozenset("""
+    alpha beta gamma delta epsilon varepsilon zeta eta theta vartheta iota kappa lambda mu nu xi pi varpi rho varrho
+    sigma varsigma tau upsilon phi varphi chi psi omega Gamma Delta Theta Lambda Xi Pi Sigma Upsilon Phi Psi Omega
+    cdot cdots ldots dots vdots ddots times circ otimes oplus ominus odot wedge vee cap cup setminus pm mp ast star
+    bullet div le leq ge geq ne neq equiv cong sim simeq approx propto in notin ni subset subseteq supset supseteq
+    perp parallel mid nmid not to mapsto gets rightarrow leftarrow Rightarrow Leftarrow leftrightarrow
+    Leftrightarrow longrightarrow longleftarrow Longrightarrow Longleftarrow longmapsto iff implies hookrightarrow
+    uparrow downarrow sum prod coprod int oint bigoplus bigotimes bigcup bigcap bigwedge
+    left right big Big bigg Bigg bigl bigr Bigl Bigr biggl biggr langle rangle lvert rvert lVert rVert vert Vert
+    lbrace rbrace lfloor rfloor lceil rceil backslash
+    mathrm mathbf mathit mathcal mathbb mathfrak mathsf mathtt boldsymbol operatorname text textrm textit textbf
+    textup emph
+    hat bar tilde dot ddot vec widehat widetilde overline underline check breve acute grave
+    frac tfrac dfrac binom tbinom dbinom sqrt overset underset stackrel
+    quad qquad infty partial nabla forall exists nexists emptyset varnothing ell hbar imath jmath top bot sharp
+    flat natural prime angle triangle Box
+    det dim ker deg exp log ln sin cos tan sinh cosh tanh max min sup inf lim liminf limsup arg gcd Re Im Pr hom
+    tr diag ad Ad rank ddim pr Span
+    displaystyle textstyle scriptstyle scriptscriptstyle ensuremath begin end
+""".split())
+#: the environments a formula of a claim may open (amsmath's)
+MATH_ENVIRONMENTS = frozenset("""matrix pmatrix bmatrix Bmatrix vmatrix Vmatrix smallmatrix cases aligned gathered
+    split""".split())
+#: the control symbols (a backslash and one character) a formula may use: spacing, a line break, escaped specials
+_MATH_SYMBOLS_ESCAPED = frozenset(" ,;:!{}|_%#&$\\")
+#: what the engine's own LaTeX of a dimension-free derivation adds to them (a record's derivation is data of a
+#: results file, which ``report`` renders: the same allow-list, with the few text commands the engine writes)
+DERIVATION_COMMANDS = MATH_COMMANDS | frozenset("paragraph item textbf emph texttt textbackslash ldots S P surd i j v "
+                                                 "c u".split())
+DERIVATION_ENVIRONMENTS = MATH_ENVIRONMENTS | frozenset(("itemize", "enumerate"))
+#: ... and the control symbols of text that :func:`tex_escape` writes (accents, ``\^{}``, ``\~{}``, display math)
+_DERIVATION_SYMBOLS = frozenset("[]^~'`\".=")
+
+
+def _vocabulary_ok(tex: str, commands: frozenset, environments: frozenset, symbols: frozenset) -> bool:
+    """Every control sequence of ``tex`` in ``commands`` (a control symbol in ``symbols``), every environment in
+    ``environments``, no control character, no ``^^`` (TeX's notation of a character by its code, which spells any
+    command), no unescaped ``%`` (a comment would swallow the rest of the line) or ``#``."""
+    if re.search(r"[\x00-\x08\x0b\x0c\x0e-\x1f\x7f]|\^\^", tex):
+        return False
+    for m in re.finditer(r"\\([A-Za-z]+)|\\(.)|([%#])", tex, re.S):
+        word, sym, bare = m.groups()
+        if bare or (word is not None and word not in commands) or (sym is not None and sym not in symbols):
+            return False
+    return all(env in environments for env in re.findall(r"\\(?:begin|end)\s*\{([^}]*)\}", tex))
+
+
 def math_ok(tex: str) -> bool:
-    """Balanced braces and environments, no math delimiters: safe inside a display."""
+    """Balanced braces and environments, no math delimiters, only the vocabulary of mathematics
+    (:data:`MATH_COMMANDS`): safe inside a display."""
     if not _braces_balanced(tex):
         return False
-    if re.search(r"(?<!\\)\$|\\[\[\]()]|\\(?:end\{document\}|begin\{document\}|section|par\b)", tex):
+    if re.search(r"(?<!\\)\$|\\[\[\]()]", tex):
+        return False
+    if not _vocabulary_ok(tex, MATH_COMMANDS, MATH_ENVIRONMENTS, _MATH_SYMBOLS_ESCAPED):
         return False
     return _environments_balanced(tex)
 

@@ -156,7 +156,7 @@ class ClaimItem(pytest.Item):
         lines = [r.line(limit=400)]
         if r.message and r.message not in lines[0]:
             lines.append(f"  {r.message}")
-        for k, v in witness_lines(r.witness):
+        for k, v in witness_lines(r.witness, where="the result's witness"):
             if k not in ("seed", "trial", "attempt", "component"):
                 lines.append(f"  witness {k}: {v}")
         if r.residual and not r.witness:

@@ -15,7 +15,7 @@ import click
 
 from stiefelsym.cli import InputError, standalone_command
 
-from stiefelsym.results import parse_json, write_atomic
+from stiefelsym.results import parse_json, record_problems, write_atomic
 
 EXIT_INPUT = 2
 DEFAULT_RESULTS = (Path("reports/results.json"), Path("reports/all/results.json"))
@@ -53,6 +53,14 @@ def _load_verdicts(paths: list[Path], explicit: bool) -> dict[str, Any]:
         try:
             payload = parse_json(path.read_text(encoding="utf-8"))
             results = payload["results"]
+            if not isinstance(results, list):
+                raise TypeError("results is not a list of records")
+            # every record read as report and check read it (a verdict that is not a string, a size that is no
+            # size, ...): a malformed record is a malformed file, in one line
+            for i, r in enumerate(results):
+                problems = record_problems(r)
+                if problems:
+                    raise ValueError(f"record {i + 1} is malformed: {'; '.join(problems)}")
             out[str(path)] = verdict_matrix(results)
         except (OSError, UnicodeDecodeError, ValueError, KeyError, TypeError, AttributeError) as exc:
             raise TablesInputError(f"{path} is not a stiefelsym results file: "

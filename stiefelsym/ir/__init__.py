@@ -19,11 +19,16 @@ from stiefelsym.ir.trace import Dim, TraceRefused, Tracer, TraceScene, block, is
 
 __all__ = ["Graph", "Named", "Ref", "Size", "SizeFamily", "Count", "Inverse", "Rank", "RightInverse", "Dim", "TraceRefused", "Tracer", "TraceScene",
            "block", "is_tracer", "named", "primitive", "trace", "compile_claim", "first_trace", "graph_pair",
-           "NotDeterministic", "stated_families"]
+           "NotDeterministic", "GraphUnavailable", "stated_families"]
 
 
 class NotDeterministic(ValueError):
     """Two tracings of a claim gave different graphs."""
+
+
+class GraphUnavailable(ValueError):
+    """No graph of the claim at the size asked for is at hand (a claims file traced in a child process at the
+    sizes a run needed only): not a fault of the claim, nothing said about it at that size."""
 
 
 #: graphs traced in this process, the most recent first out last: (function, n, r, realization) ->

@@ -40,7 +40,7 @@ from stiefelsym.free.certificates import CertificateWriter
 from stiefelsym.free.columns import COMPLETE
 from stiefelsym.free.rewriting import latex_text
 from stiefelsym.latex import tex_text, unicode_name
-from stiefelsym.ir import SizeFamily, TraceRefused
+from stiefelsym.ir import GraphUnavailable, SizeFamily, TraceRefused
 
 
 def run_free(claim: Claim, func: Callable | None = None) -> Result:
@@ -120,11 +120,25 @@ def run_free_on(claim: Claim, func: Callable, family: SizeFamily | None, alone: 
     except NeedsCoordinates as exc:
         return undecided(evaluation_needs_text(claim, func, exc.what))
     except TraceRefused as exc:
-        return undecided(needs_text(claim, func, str(exc), family))
+        text, everywhere = needs_text(claim, func, str(exc), family)
+        if everywhere:
+            # refused at a fixed size too: the claim is ill-formed, not beyond the free algebra (an `error`
+            # under every method, never an `undecided` that passes as expected)
+            res.verdict, res.message, res.seconds = "error", text, time.perf_counter() - t0
+            return res
+        return undecided(text)
     except (FreeSolveError, RewritingError) as exc:
         return touched() or undecided(f"outside the rewriting backend: {exc}")
     except (TypeError, ValueError, AttributeError, ArithmeticError) as exc:
-        return touched() or undecided(f"the claim does not run on the free algebra ({type(exc).__name__}: {exc})")
+        text = f"the claim does not run on the free algebra ({type(exc).__name__}: {exc})"
+        refused = touched()
+        if refused is None and _fails_at_a_size(claim, func, family):
+            # its own code raises at a fixed size too: an ill-formed claim (an `error` there), not beyond the
+            # free algebra
+            res.verdict, res.message, res.seconds = "error", text + "; an error at the fixed sizes", \
+                time.perf_counter() - t0
+            return res
+        return refused or undecided(text)
     refused = touched()
     if refused is not None:
         return refused
@@ -472,24 +486,48 @@ def evaluation_needs_text(claim: Claim, func: Callable, refusal: str) -> str:
             "decided by the fixed-size methods")
 
 
-def needs_text(claim: Claim, func: Callable, refusal: str, family: SizeFamily | None = None) -> str:
+def _stated_size(claim: Claim, family: SizeFamily | None) -> Any:
+    """The size a claim refused with symbolic sizes is looked at: one with 1 < r < n, else n >= 3, of those stated."""
+    sizes = family_sizes(claim, family)
+    return next((z for z in sizes if 1 < z.r < z.n), None) or next((z for z in sizes if z.n >= 3), sizes[-1])
+
+
+def _fails_at_a_size(claim: Claim, func: Callable, family: SizeFamily | None) -> bool:
+    """Whether the claim's graph at a stated size cannot be had because the claim is refused there or its code
+    raises (not merely because no graph is at hand there: :class:`~stiefelsym.ir.GraphUnavailable`)."""
+    from stiefelsym.ir import _compiled_graph as compile_claim
+    from stiefelsym.scene import REALIZATIONS
+    z = _stated_size(claim, family)
+    try:
+        compile_claim(func, z.n, z.r, (REALIZATIONS[claim.realization].name, REALIZATIONS[claim.realization].build))
+    except GraphUnavailable:
+        return False
+    except Exception:   # noqa: BLE001 - refused, or the claim's own code raised: an error at that size
+        return True
+    return False
+
+
+def needs_text(claim: Claim, func: Callable, refusal: str, family: SizeFamily | None = None) -> tuple[str, bool]:
     """Why a claim that does not trace with symbolic sizes (on its family of sizes) is left to the
     fixed-size methods, read from its graph at a fixed size (what it states and reads there), with the
-    refusal that stopped the symbolic trace."""
+    refusal that stopped the symbolic trace; and whether it is refused at that fixed size too."""
     from stiefelsym.ir import _compiled_graph as compile_claim
     from stiefelsym.ir.passes import coordinate_needs
     from stiefelsym.scene import REALIZATIONS
     cons = REALIZATIONS[claim.realization]
-    sizes = family_sizes(claim, family)
-    z = next((z for z in sizes if 1 < z.r < z.n), None) or next((z for z in sizes if z.n >= 3), sizes[-1])
+    z = _stated_size(claim, family)
     try:
         needs = coordinate_needs(compile_claim(func, z.n, z.r, (cons.name, cons.build)))
     except Exception as exc:    # noqa: BLE001 - refused at a fixed size too: no coordinate would help
+        # a refusal or an exception of the claim's code at the size is an `error` there; no graph at hand there
+        # (a claims file traced in a child at the sizes the run needed) leaves it undecided
+        refused = not isinstance(exc, GraphUnavailable)
         return (f"the claim is refused with symbolic sizes and at ({z.n},{z.r}) too ({type(exc).__name__}): "
-                f"{refusal.removeprefix('refused: ')}; an error at the fixed sizes")
+                f"{refusal.removeprefix('refused: ')}" + ("; an error at the fixed sizes" if refused else
+                                                          "; decided by the fixed-size methods")), refused
     what = "; ".join(needs) if needs else "its statement depends on the sizes (a loop or a condition over n, r)"
     return (f"needs coordinates (fixed n, r): {what} (the trace with symbolic sizes stopped at: "
-            f"{refusal.removeprefix('refused: ')}); decided by the fixed-size methods")
+            f"{refusal.removeprefix('refused: ')}); decided by the fixed-size methods"), False
 
 
 def metric_reductions(scene: Any) -> list[str]:

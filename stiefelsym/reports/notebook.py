@@ -35,7 +35,7 @@ def _md_witness(r: Result) -> list[str]:
     if reason:
         lines += ["", f"{'Witness' if r.verdict == 'fails' else 'Reason'}: {R._md_cell(reason)}"]
     if r.verdict == "fails":
-        lines += [f"- {R._md_cell(k)}: {R._md_code(v)}" for k, v in R.witness_lines(r.witness)
+        lines += [f"- {R._md_cell(k)}: {R._md_code(v)}" for k, v in R.witness_lines(r.witness, where="the result's witness")
                   if k not in ("entry", "value")]
     if r.rerun and (r.verdict in ("fails", "error", "inconclusive") or not r.expected):
         lines += ["", f"Rerun: {R._md_code(r.rerun)}"]

@@ -77,7 +77,7 @@ KIND_MEANING = {
     "lax": "a Lax equation implied by a flow",
     "pb": "a Poisson-bracket statement",
     "dim": "a dimension, rank or count",
-    "not": "the paper says this does NOT hold (needs a certified witness)",
+    "not": "the statement says this does NOT hold (needs a certified witness)",
     "geo": "a geometric statement, checked through its algebraic form",
 }
 
@@ -220,6 +220,12 @@ class ClaimResults:
         return [r for r in self.printed if r.verdict == "fails"]
 
     @property
+    def own(self) -> bool:
+        """A statement of a claims file (its records' rerun commands name the file, as verify writes them):
+        a user's own statement, whatever paper labels it cites, not the paper's as printed."""
+        return any("--claims" in r.rerun.split() for r in self.printed)
+
+    @property
     def unexpected(self) -> list[Result]:
         return [r for r in self.printed + [v for vs in self.variants.values() for v in vs]
                 if not r.expected]
@@ -312,15 +318,15 @@ def format_value(v: Any) -> str:
 WITNESS_INTERNAL = ("trial", "attempt", "component", "small", "seed")
 
 
-def witness_lines(w: dict[str, Any] | None) -> list[tuple[str, str]]:
-    """(key, value) of a witness, each value cut to WITNESS_WIDTH characters."""
+def witness_lines(w: dict[str, Any] | None, where: str = "results.json") -> list[tuple[str, str]]:
+    """(key, value) of a witness, each value cut to WITNESS_WIDTH characters (``where``: where it is in full)."""
     out = []
     for k, v in (w or {}).items():
         if k in WITNESS_INTERNAL:
             continue
         text = format_value(v)
         if len(text) > WITNESS_WIDTH:
-            text = short(text, WITNESS_WIDTH) + " (in full in results.json)"
+            text = short(text, WITNESS_WIDTH) + f" (in full in {where})"
         out.append((str(k), text))
     return out
 
@@ -575,7 +581,7 @@ def render_junit(results: Sequence[Result], meta: dict[str, Any] | None = None) 
                                  classname=_xml(f"stiefelsym.section{sec}.{r.claim}"),
                                  time=f"{r.seconds:.3f}")
             detail = [r.line()] + ([r.message] if r.message else [])
-            detail += [f"{k}: {v}" for k, v in witness_lines(r.witness)]
+            detail += [f"{k}: {v}" for k, v in witness_lines(r.witness, where="the record: --format json")]
             detail += [f"rerun: {r.rerun}"] if r.rerun else []
             if r.expected:
                 ET.SubElement(case, "system-out").text = _xml("\n".join(detail))
@@ -595,6 +601,14 @@ def _md_escape(text: Any) -> str:
     for is_math, seg in split_math(str(text)):
         out.append(f"${_md_math(seg)}$" if is_math else re.sub(r"([\\*_`<>])", r"\\\1", seg))
     return "".join(out)
+
+
+def _md_paragraph(text: Any) -> str:
+    """A claim's words (its title, a statement that is not math) as one paragraph of running text: its lines
+    joined, so that they make no table, heading, list or code block of the report's own, and a first character
+    that would begin one escaped."""
+    out = _md_escape(" ".join(str(text).split()))
+    return "\\" + out if re.match(r"[#>+=|~-]|\d+[.)]\s", out) else out
 
 
 def _md_words(text: Any) -> str:
@@ -628,7 +642,7 @@ def _md_statement(statement: str) -> str:
     if not s:
         return ""
     if not math_ok(s):
-        return _md_escape(s)
+        return _md_paragraph(s)
     s = _md_math(s)
     if "\n" in s or len(s) > 70 or "\\\\" in s or "\\begin" in s:
         return f"$$\n{s}\n$$"
@@ -742,7 +756,7 @@ def render_markdown(results: Sequence[Result], meta: dict[str, Any] | None = Non
 def _md_claim(c: ClaimResults) -> list[str]:
     out = [f"### `{c.id}` {_md_escape(labels(c.paper))}".rstrip(), ""]
     if c.title:
-        out += [_md_escape(c.title), ""]
+        out += [_md_paragraph(c.title), ""]
     st = _md_statement(c.statement)
     if st:
         out += [st, ""]
@@ -793,8 +807,9 @@ def _erratum_facts(c: ClaimResults) -> dict[str, Any]:
 
 
 def _note_heading(c: ClaimResults) -> str:
-    """A paper's erratum is a note for its authors; a statement of one's own (no label of the paper) is not."""
-    return "Note for the authors." if c.paper else "Note."
+    """A paper's erratum is a note for its authors; a statement of one's own (no label of the paper, or a claims
+    file's, whatever labels it cites) is not."""
+    return "Note for the authors." if c.paper and not c.own else "Note."
 
 
 def _erratum_note(c: ClaimResults, facts: dict[str, Any], escape=lambda s: s, correction=lambda s: s) -> str:

@@ -65,6 +65,7 @@ from stiefelsym.run.pool import DEFAULT_MEMORY_GIB, GIB, write_fully
 from stiefelsym.run.confine import ProcessesLeft
 from stiefelsym.run.isolate import next_chunk
 from stiefelsym.claims import CatalogError, Claim, ClaimTimeout, Correction, Registry, Size, SizeSpec, load_claims_file
+from stiefelsym.ir import GraphUnavailable
 
 #: sizes n <= this get an entry in the admits table (the free method checks a declared r up to here)
 TABLE_N = 16
@@ -99,7 +100,7 @@ EXIT_SECONDS = 10.0
 CAPTURE_BYTES = 1 << 22
 
 
-class NoGraph(ValueError):
+class NoGraph(GraphUnavailable):
     """The claims file was traced in a child process, and not at the size or realization asked for."""
 
 
@@ -731,6 +732,10 @@ def _graph(data: Any) -> Any:
     return g
 
 
+#: whether this process imported every engine module (:func:`stiefelsym.ir.seal.import_engine`), once
+_ENGINE = [False]
+
+
 class TracedFunction:
     """A claim's function (or a correction's) as traced in the claims file's child: called by the
     engine's tracer, it replays the graph traced at the trace's size (:class:`~stiefelsym.ir.replay.GraphClaim`),
@@ -739,7 +744,14 @@ class TracedFunction:
     def __init__(self, name: str, realization: str, entries: list, path: str, line: int,
                  confinement: str = "namespaces") -> None:
         from stiefelsym.ir.replay import GraphClaim
+        from stiefelsym.ir.seal import import_engine
         from stiefelsym.run.sandbox import note
+        # the engine's steps and constants the graphs name (stiefelsym.twisted.at_point, ...) are registered by
+        # their modules, which the file imported in its child: here too, whichever of them the caller imported
+        # (the command line imports them all, a Python caller of stiefelsym.verify may not have)
+        if not _ENGINE[0]:
+            import_engine()
+            _ENGINE[0] = True
         self._replay: Callable[..., Any]
         self.__name__ = self.__qualname__ = name
         self.realization, self.path, self.line = realization, path, line

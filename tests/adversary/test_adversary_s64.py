@@ -1,0 +1,164 @@
+"""Stop 64: the review's files (tests/adversary/s64/review) and the user trial's statements (s64/user).  See
+tests/adversary/README.md, Stop 64."""
+import json
+import subprocess
+import sys
+
+import pytest
+
+from adversary_cli import cli, HERE, ROOT
+
+USER = HERE / "s64" / "user"
+REVIEW = HERE / "s64" / "review"
+
+
+def _results(*args, cwd=ROOT):
+    run = cli("verify", *args, "--no-report", "--format", "json", "--timeout", "60", "--jobs", "2", cwd=cwd)
+    assert run.returncode in (0, 1), run.stderr[-2000:]
+    return json.loads(run.stdout)["results"]
+
+
+# -- a claim's words in the reports ------------------------------------------------------------------------------
+
+def test_a_docstring_cannot_rewrite_its_verdict_or_read_a_file_into_the_latex_report(tmp_path):
+    """The review's docstring redefined \\textit inside $...$ so that the PDF said "verified ... by modular" for a
+    failing claim, and a statement with \\input{/etc/hostname} read a local file into the report of whoever compiled
+    it: both passed the deny-list of math_ok.  A formula of a claim may now use the vocabulary of mathematics only
+    (latex.MATH_COMMANDS); anything else is set as plain text.  The failing claims of a claims file that cite a
+    label of the paper are a note, not a note for the paper's authors."""
+    out = tmp_path / "rep"
+    run = cli("verify", "--claims", str(REVIEW / "tex_verdict.py"), "--claims", str(REVIEW / "tex_inject.py"),
+              "--method", "modular", "--jobs", "1", "--report-dir", str(out))
+    assert run.returncode == 1, run.stderr[-2000:]      # two false statements, expected to hold
+    verdicts = {r["claim"]: r["verdict"] for r in json.loads((out / "results.json").read_text())["results"]}
+    assert verdicts == {"r64-tex-verdict": "fails", "r64-tex-false": "fails", "r64-tex-true": "checked"}
+    for name in ("verification.tex", "verification-runs.tex"):
+        tex = (out / name).read_text()
+        for words in ("\\global\\let\\origit", "\\gdef\\textit", "\\input{/etc/hostname}"):
+            assert words not in tex, (name, words)
+        assert "\\textbackslash{}input" in tex and "\\textbackslash{}gdef" in tex
+    md = (out / "verification.md").read_text()
+    assert "Note for the authors" not in md and "Note for the authors" not in (out / "verification.tex").read_text()
+
+
+@pytest.mark.parametrize("tex", [
+    r"\global\let\origit\textit", r"\gdef\textit#1{x}", r"X \input{/etc/hostname}", r"\def\x{1}", r"\catcode`\@=11",
+    r"^^5cinput{/etc/passwd}", r"x % the rest of the line", r"\csname textit\endcsname", r"\write18{ls}",
+    r"\begin{verbatim}x\end{verbatim}", r"\end{document}", "x\x00y", "x\x1b[31m", r"\renewcommand{\tr}{det}",
+    r"\text{\input{/etc/hostname}}", r"\mathscr{X}", r"\immediate\openout1=x",
+])
+def test_math_outside_the_vocabulary_is_plain_text(tex):
+    from stiefelsym.latex import math_ok, tex_balanced, tex_display, tex_text
+    assert not math_ok(tex) and not tex_balanced(tex)
+    for rendered in (tex_text(f"a ${tex}$ b"), tex_display(tex)):
+        assert not any(f"\\{c}" in rendered.replace("\\textbackslash{}", "")
+                       for c in ("global", "gdef", "input", "def", "catcode", "csname", "write", "openout"))
+        assert "^^" not in rendered and "\x00" not in rendered and "\x1b" not in rendered
+
+
+@pytest.mark.parametrize("tex", [
+    r"\dot X = P - \tfrac{1}{2}(1 + 2\kappa) X P^T X", r"\frac{d}{dt} L(\lambda) = [L(\lambda), M(\lambda)]",
+    r"\operatorname{rank} \begin{pmatrix} a & b \\ c & d \end{pmatrix} = 2", r"\left\langle \Phi, \Phi \right\rangle",
+    r"\{ x \in \mathbb{R}^n \mid \|x\| = 1 \}", r"\tr (X^T A X) \ne 0,\quad \det \ddim V = \Span\{e_1\}",
+])
+def test_the_vocabulary_of_mathematics_is_typeset(tex):
+    from stiefelsym.latex import math_ok
+    assert math_ok(tex)
+
+
+def test_control_characters_are_named_in_latex_text():
+    from stiefelsym.latex import tex_escape
+    assert tex_escape("a\x00b\x1bc\td") == r"a\texttt{[U+0000]}b\texttt{[U+001B]}c d"
+
+
+# -- malformed input ---------------------------------------------------------------------------------------------
+
+def test_a_malformed_record_is_refused_by_tables_in_one_line(tmp_path):
+    """`tables --results` with a record whose verdict is a list was a TypeError traceback (exit 1): the file is read
+    with the same record check as report and check."""
+    path = tmp_path / "results.json"
+    path.write_text(json.dumps({"meta": {}, "results": [{"claim": "prep", "n": 2, "r": 1, "method": "modular",
+                                                          "verdict": ["proved"]}]}))
+    run = cli("tables", "--size", "2,1", "--results", str(path))
+    assert run.returncode == 2 and "record 1 is malformed: verdict is a list" in run.stderr, run.stderr[-2000:]
+    assert "Traceback" not in run.stderr
+
+
+def test_free_says_error_for_a_claim_refused_at_every_size(tmp_path):
+    """An ill-formed claim (a float constant, a misspelt scene name, a list of residuals) was `undecided` under free,
+    which is always as expected: a CI job running free alone was green.  Refused with symbolic sizes and at a fixed
+    size too, it is an `error` (exit 1); a claim that needs coordinates stays `undecided`."""
+    claims = tmp_path / "mistakes.py"
+    claims.write_text(
+        "from stiefelsym import admissible, claim\n\n\n"
+        "@claim('m64-float', kind='id', sizes=admissible(n_max=3))\n"
+        "def f(s):\n    \"\"\"A float.\"\"\"\n    return {'r': 0.5 * (s.X.T @ s.X - s.Ir)}\n\n\n"
+        "@claim('m64-name', kind='id', sizes=admissible(n_max=3))\n"
+        "def g(s):\n    \"\"\"A misspelt letter.\"\"\"\n    return {'r': s.phi}\n\n\n"
+        "@claim('m64-entry', kind='id', sizes=admissible(n_max=3))\n"
+        "def h(s):\n    \"\"\"An entry (true: a column of X has norm 1).\"\"\"\n"
+        "    return {'r': (s.X.T @ s.X)[0, 0] - 1}\n")
+    run = cli("verify", "--claims", str(claims), "--method", "free", "--no-report")
+    assert run.returncode == 1, run.stdout + run.stderr
+    from adversary_cli import parse
+    assert parse(run.stdout) == {"m64-float": "error", "m64-name": "error", "m64-entry": "undecided"}, run.stdout
+
+
+def test_check_names_a_claims_file_given_relative_to_another_directory(tmp_path):
+    """check from another directory than the run's said only "claims file not found" (user trial)."""
+    out = tmp_path / "rep"
+    run = cli("verify", "u64-prep-kappa", "--claims", "tests/adversary/s64/user/claims.py", "--size", "3,2",
+              "--method", "modular", "--report-dir", str(out))
+    assert run.returncode == 0, run.stderr[-2000:]
+    run = cli("check", "--no-rerun", str(out / "results.json"), cwd=tmp_path)
+    assert run.returncode == 2 and "relative to the directory the run was made in" in run.stderr, run.stderr
+    run = cli("check", "--no-rerun", str(out / "results.json"), "--claims", str(USER / "claims.py"), cwd=tmp_path)
+    assert run.returncode == 0 and "0 rejected" in run.stdout, run.stdout + run.stderr
+
+
+# -- the user trial ----------------------------------------------------------------------------------------------
+
+def test_the_python_api_verifies_claims_that_name_engine_steps():
+    """From Python, after a plain `import stiefelsym`, every claim of a file that uses stiefelsym.twisted or
+    stiefelsym.systems was `error` (NoGraph) and free `undecided` (an engine object not registered): the steps are
+    registered by their modules, which the caller had not imported (the command line imports them all)."""
+    code = ("import json, stiefelsym\n"
+            f"rs = stiefelsym.verify(['u64-gras-r2', 'u64-psi0-flows-coincide', 'u64-double-gl-momentum'], "
+            f"files={str(USER / 'claims.py')!r}, sizes=['3,2'], methods=['modular', 'free'])\n"
+            "print(json.dumps([(r.claim, r.method, r.verdict) for r in rs]))\n")
+    run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300, cwd=ROOT)
+    assert run.returncode == 0, run.stderr[-2000:]
+    verdicts = json.loads(run.stdout.splitlines()[-1])
+    assert {v for _, m, v in verdicts if m == "modular"} == {"checked"}, verdicts
+    assert {v for _, m, v in verdicts if m == "free"} == {"proved"}, verdicts
+
+
+def test_the_user_trials_statements_hold_and_their_twins_fail():
+    """Twelve statements of §5, §7 and Appendices 1 and 2 written by a user (the Neumann flow and its Lax pair in
+    μ = 1/λ, conserved energies and traces, the Grassmannian reduction at r = 2, the sphere at n = 3, the magnetic
+    Lax pair and Ψ₁₂, the double and coupled systems' momenta), each with a false twin (numpy: s64/user/indep.py):
+    under modular at (3,2) and (4,2), where each is stated."""
+    sizes = ("--size", "3,2", "--size", "4,2", "--method", "modular")
+    held = _results("--claims", str(USER / "claims.py"), *sizes)
+    assert held and all(r["verdict"] in ("proved", "checked") for r in held), \
+        [(r["claim"], r["n"], r["r"], r["verdict"]) for r in held if r["verdict"] not in ("proved", "checked")]
+    twins = _results("--claims", str(USER / "negatives.py"), *sizes)
+    assert twins
+    for r in twins:
+        expected = ("proved", "checked") if r["kind"] == "not" else ("fails",)
+        assert r["verdict"] in expected, (r["claim"], r["n"], r["r"], r["verdict"], r["message"])
+
+
+def test_a_docstring_makes_no_table_or_heading_of_the_markdown_report(tmp_path):
+    """The review's multi-line docstring held a verdict table (`checked`) that verification.md printed as a table
+    under the claim's title: a claim's title (and a statement that is not math) is now one paragraph of text."""
+    out = tmp_path / "rep"
+    run = cli("verify", "--claims", str(REVIEW / "md_inject.py"), "--method", "modular", "--jobs", "1",
+              "--report-dir", str(out))
+    assert run.returncode == 1, run.stderr[-2000:]
+    md = (out / "verification.md").read_text()
+    forged = "| (3,2) | modular | checked | – | 2 independent points | 0 | 1.7e-36 |"
+    assert forged in md and not any(line.strip() == forged for line in md.splitlines())
+    from stiefelsym.reports.report import _md_paragraph
+    assert _md_paragraph("# a heading\n\nand more") == r"\# a heading and more"
+    assert _md_paragraph("1. a list") == r"\1. a list"
