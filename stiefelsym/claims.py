@@ -245,6 +245,8 @@ class Correction:
 
 #: what a claim id may be (it starts every verdict line and names the claim in every report)
 _ID = re.compile(r"[A-Za-z0-9][A-Za-z0-9._+-]{0,99}")
+_SECTION = re.compile(r"(?:[A-Za-z0-9][A-Za-z0-9.-]{0,19})?")
+_LABEL = re.compile(r"[^\x00-\x1f\x7f$]{1,60}")
 
 
 @dataclass(frozen=True)
@@ -319,6 +321,15 @@ class Claim:
                              "letter or digit; no spaces or line breaks: it names the claim on every output line)")
         if self.kind not in KINDS:
             raise ValueError(f"claim {self.id}: unknown kind {self.kind!r} (one of {', '.join(KINDS)})")
+        # the words that head a claim's lines in the reports: one line of text each (a line break or a control
+        # character would begin a table, a heading or an HTML block of the report's own)
+        if not isinstance(self.section, str) or not _SECTION.fullmatch(self.section):
+            raise ValueError(f"claim {self.id}: section {self.section!r}: a section is empty or 1 to 20 letters, digits "
+                             "and . - (the paper's 5, 7, A1, A2, ...)")
+        for label in self.paper:
+            if not isinstance(label, str) or not _LABEL.fullmatch(label):
+                raise ValueError(f"claim {self.id}: paper label {label!r}: a label is 1 to 60 characters of one line, "
+                                 "without $ or a control character (the paper's cond_XP, LA1, ...)")
         if self.expect not in ("holds", "nonzero", "fails"):
             raise ValueError(f"claim {self.id}: expect must be 'holds', 'nonzero' or 'fails'")
         if not self.sizes:
@@ -350,8 +361,8 @@ class Claim:
             raise ValueError(f"a correction expects 'holds' or 'nonzero', not {expect!r}")
         # the description names the correction in every record, report and `check` (the variant of a record):
         # two corrections of one description would be one record's variant, and either one's verdict the other's
-        if type(description) is not str or not description.strip():
-            raise ValueError(f"claim {self.id}: a correction is described by a non-empty string")
+        if type(description) is not str or not description.strip() or re.search(r"[\x00-\x1f\x7f]", description):
+            raise ValueError(f"claim {self.id}: a correction is described by a non-empty string of one line")
         if any(c.description == description for c in self.corrections):
             raise ValueError(f"claim {self.id}: two corrections described {description!r} (the description names "
                              "the correction in the records)")

@@ -185,8 +185,12 @@ def tex_balanced(tex: str) -> bool:
 
 
 def _environments_balanced(tex: str) -> bool:
-    begins = Counter(re.findall(r"\\begin\{([^}]*)\}", tex))
-    return begins == Counter(re.findall(r"\\end\{([^}]*)\}", tex))
+    begins = Counter(re.findall(r"\\begin\s*\{([^}]*)\}", tex))
+    return begins == Counter(re.findall(r"\\end\s*\{([^}]*)\}", tex))
+
+
+#: the deepest nesting of braces a claim's formula may have (TeX stops at 255 groups, with no document)
+MAX_BRACE_DEPTH = 32
 
 
 def _braces_balanced(tex: str) -> bool:
@@ -195,11 +199,19 @@ def _braces_balanced(tex: str) -> bool:
         tok = m.group()
         if tok == "{":
             depth += 1
+            if depth > MAX_BRACE_DEPTH:
+                return False
         elif tok == "}":
             depth -= 1
             if depth < 0:
                 return False
     return depth == 0
+
+
+def _delimiters_paired(tex: str) -> bool:
+    """As many \\left as \\right, and no blank line (a paragraph break, which math mode refuses)."""
+    return (len(re.findall(r"\\left(?![A-Za-z])", tex)) == len(re.findall(r"\\right(?![A-Za-z])", tex))
+            and not re.search(r"\n[ \t]*\n", tex))
 
 
 #: the control sequences a formula of a claim (its statement, the ``$...$`` of its docstring and title) may use:
@@ -260,7 +272,7 @@ def math_ok(tex: str) -> bool:
         return False
     if re.search(r"(?<!\\)\$|\\[\[\]()]", tex):
         return False
-    if not _vocabulary_ok(tex, MATH_COMMANDS, MATH_ENVIRONMENTS, _MATH_SYMBOLS_ESCAPED):
+    if not _vocabulary_ok(tex, MATH_COMMANDS, MATH_ENVIRONMENTS, _MATH_SYMBOLS_ESCAPED) or not _delimiters_paired(tex):
         return False
     return _environments_balanced(tex)
 

@@ -752,3 +752,31 @@ def test_a_product_cancels_the_atoms_of_its_denominator_that_divide_its_numerato
     kept = R.rf_mul(((x - 3), ()), e)
     assert sorted(k for _, k in kept[1]) == [1, 2] and kept[0] == x - 3
     assert R.rf_mul(one, e) == e
+
+
+def test_a_product_of_transposes_is_the_transpose_of_the_product_met_before():
+    """a b = (bᵀ aᵀ)ᵀ: once a b is computed, bᵀ aᵀ is its transpose (no new product), with the value symengine gives;
+    a product of other operands (aᵀ bᵀ, a product with a copy of a) is computed, and each value is symengine's."""
+    F, G = fields()
+    syms = [F.param(f"x{i}") for i in range(5)]
+    for seed in range(3):
+        rng = random.Random(seed)
+        dens = [syms[0] - syms[1], 1 + syms[2] ** 2]
+        a, b = rand_mat(F, 2, 3, syms, rng, dens), rand_mat(F, 3, 2, syms, rng, dens)
+        ag, bg = (Mat._rows(entries(M), G) for M in (a, b))
+        ab = a @ b
+        calls = []
+        import stiefelsym.backends.polyfield as pf
+        dot = pf._dot
+        pf._dot = lambda x, y, z: calls.append(1) or dot(x, y, z)
+        try:
+            ba_t = b.T @ a.T
+            assert not calls                                    # the transpose of a b, no product
+            others = [a.T @ b.T, b @ a, Mat._rows(entries(a), F) @ b]
+            assert len(calls) == 2          # aᵀ bᵀ and the copy's product computed; b a is (aᵀ bᵀ)ᵀ
+        finally:
+            pf._dot = dot
+        assert all(same(x, y) for r1, r2 in zip(entries(ba_t), entries((bg.T @ ag.T))) for x, y in zip(r1, r2))
+        assert all(same(x, y) for r1, r2 in zip(entries(ab.T), entries(ba_t)) for x, y in zip(r1, r2))
+        for M, Mg in zip(others, (ag.T @ bg.T, bg @ ag, ag @ bg)):
+            assert all(same(x, y) for r1, r2 in zip(entries(M), entries(Mg)) for x, y in zip(r1, r2))

@@ -1337,10 +1337,19 @@ class PolyBackend(Backend):
         if a.z or b.z or k == 0 or m == 0 or n == 0:
             return self.zeros(m, n)
         key = ("@", id(a), id(b))
-        hit = self._memo.get(key)
+        memo = self._memo
+        hit = memo.get(key)
         if hit is not None and hit[0] is a and hit[1] is b:
             return hit[2]
+        # a b = (bᵀ aᵀ)ᵀ: the product of the transposes met already (a derivative of Yᵀ Q − Qᵀ Y along a flow
+        # has Ẏᵀ Q and Qᵀ Ẏ), transposed instead of computed again
+        ta, tb = memo.get(("T", id(a))), memo.get(("T", id(b)))
+        if ta is not None and tb is not None and ta[0] is a and tb[0] is b:
+            hit = memo.get(("@", id(tb[2]), id(ta[2])))
+            if hit is not None and hit[0] is tb[2] and hit[1] is ta[2]:
+                return self._remember(key, (a, b, self.T(hit[2])))
         R = self.ring
+        a0, b0 = a, b               # the operands as given: the memo's key and entry are theirs
         if a.ctx is not R.ctx or b.ctx is not R.ctx:
             a, b = self._fix(a), self._fix(b)
         prod = _dot(a.a, b.a, R.zero)
@@ -1348,7 +1357,7 @@ class PolyBackend(Backend):
             out = self._reduce(prod, _merge_add(a.den, b.den))
         else:
             out = PolyMat(prod, NODEN, R.ctx)
-        return self._remember(key, (a, b, out))
+        return self._remember(key, (a0, b0, out))
 
     def smul(self, a, c):
         if type(a) is RatMat:
@@ -1397,15 +1406,19 @@ class PolyBackend(Backend):
         hit = self._memo.get(key)
         if hit is not None and hit[0] is a:
             return hit[2]                      # the same transpose: its products meet the memo too
+        a0 = a                      # the operand as given: the memo's key and entry are its
         if a.ctx is not self.ring.ctx:
             a = self._fix(a)
         out = PolyMat(a.a.T, a.den, a.ctx)    # a view: storage is never written in place
-        return self._remember(key, (a, None, out))
+        self._remember(("T", id(out)), (out, None, a0))     # and the transpose of that view is a itself
+        return self._remember(key, (a0, None, out))
 
     def _remember(self, key, entry):
         """An operation's result, kept for the same operands met again within this field (a
         PolyMat's storage is never written in place; the operands are kept alive with it, so
-        their ids are not reused); at most 128 results, of small matrices only, are kept."""
+        their ids are not reused: every entry holds the objects whose ids are in its key); at most 128 results,
+        of small matrices only, are kept (then the memo starts again: dropping the oldest entries one by one kept
+        large operands alive longer, and a rank of the catalog took 8% more time)."""
         out = entry[2]
         if out.a.size <= 64:
             memo = self._memo

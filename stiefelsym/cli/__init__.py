@@ -326,6 +326,20 @@ def _shadowing_note(user: Registry) -> None:
                        "and replaces it in this run; give it an id of its own", err=True)
 
 
+def recorded_claims_files(given: Sequence[str], meta: dict | None) -> list[str]:
+    """The claims files of a results file's run: those given (--claims), else those its meta names, each as the
+    run's command spelled it; a file named so that is not found here is bad input, with what to do."""
+    if given:
+        return list(given)
+    files = list((meta or {}).get("claims_files") or [])
+    for f in files:
+        if not Path(f).exists():
+            raise InputError(f"claims file not found: {f}: the results file names it as the run's command spelled it, "
+                             "relative to the directory the run was made in; run the command from there, or name the "
+                             "file with --claims PATH")
+    return files
+
+
 def _registry(claims_files: str | Sequence[str] | None, ids: Sequence[str] = (), sizes: Sequence[Any] = ()
               ) -> tuple[Registry, Registry | None]:
     """The registry to look claims up in, and the user's registry (if any).
@@ -1154,7 +1168,7 @@ def report(results_file: Path | None, report_dir: Path | None, claims_files: tup
     if problems:
         raise InputError(f"{source}: refused, {len(problems)} record(s) without a valid certificate: {problems[0]} "
                          "(`stiefelsym check` re-checks every record)")
-    files = list(claims_files) or list((meta or {}).get("claims_files") or [])
+    files = recorded_claims_files(claims_files, meta)
     # a user's claims traced at the records' sizes: each record is bound to its claim's graph there (below)
     registry, user = _registry(files or None, (), sorted({(r.n, r.r) for r in results if type(r.n) is int
                                                            and type(r.r) is int}) if files else ())

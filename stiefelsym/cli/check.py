@@ -13,7 +13,7 @@ from pathlib import Path
 
 import click
 
-from stiefelsym.cli import InputError, _registry, standalone_command
+from stiefelsym.cli import InputError, _registry, recorded_claims_files, standalone_command
 from stiefelsym.methods.hard import HARD_CASES
 from stiefelsym.run.integrity import MAX_N_CHECKED, check_results, run_origin
 from stiefelsym.results import meta_problems, parse_json
@@ -50,13 +50,7 @@ def check(results_file: Path, no_rerun: bool, claims_files: tuple[str, ...]) -> 
     if problems:
         raise InputError(f"{results_file}: its meta (the command the file is the run of) is malformed: "
                          f"{'; '.join(problems)}")
-    files = list(claims_files) or list(meta.get("claims_files") or [])
-    if not claims_files:
-        for f in files:
-            if not Path(f).exists():
-                raise InputError(f"claims file not found: {f}: the results file names it as the run's command spelled "
-                                 "it, relative to the directory the run was made in; run check from there, or name "
-                                 "the file with --claims PATH")
+    files = recorded_claims_files(claims_files, meta)
     click.echo(f"checking {len(records)} records of {len({repr(r.get('claim')) for r in records})} claims: each claim "
                "traced again and its digest compared" + ("" if no_rerun else ", each run made again (about as long as "
                                                          "the run that wrote the file)"), err=True)

@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import functools
 import inspect
+import re
 import sys
 from fractions import Fraction
 from typing import Any, Callable, Iterator
@@ -1590,6 +1591,8 @@ def trace(func: Callable, n: int | None, r: int | None, constraints: tuple[str, 
             t.refuse(f"a claim returns a non-empty dict of named checks, {{'name': residual, ...}} (it returned {got})")
         if any(type(k) is not str for k in out):
             t.refuse("check names are strings")
+        if any(not k or len(k) > 200 or re.search(r"[\x00-\x1f\x7f]", k) for k in out):
+            t.refuse("a check name is 1 to 200 characters of one line (it heads a line of the reports)")
         statements = (Inverse, RightInverse)
         t.g.output = t.g.add("dict", (tuple(out), tuple(t.inverse(v) if type(v) in statements else t.structure(v)
                                                         for v in out.values())))

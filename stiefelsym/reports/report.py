@@ -599,7 +599,7 @@ def _md_escape(text: Any) -> str:
     """Escape Markdown emphasis and HTML in running text, keeping ``$...$`` math."""
     out = []
     for is_math, seg in split_math(str(text)):
-        out.append(f"${_md_math(seg)}$" if is_math else re.sub(r"([\\*_`<>])", r"\\\1", seg))
+        out.append(f"${_md_math(' '.join(seg.split()))}$" if is_math else re.sub(r"([\\*_`<>])", r"\\\1", seg))
     return "".join(out)
 
 
@@ -627,7 +627,9 @@ def _md_code(text: Any) -> str:
 
 
 def _md_math(tex: str) -> str:
-    """Expand the paper's macros, which Markdown math viewers do not know."""
+    """Expand the paper's macros, which Markdown math viewers do not know; < and > as \\lt and \\gt (a Markdown
+    reader takes "<" for the start of HTML, a comment that hides the report's own lines, even inside $...$)."""
+    tex = re.sub(r"\s*([<>])\s*", lambda m: r" \lt " if m.group(1) == "<" else r" \gt ", tex)
     tex = re.sub(r"\\(" + "|".join(OPERATORS) + r")(?![A-Za-z])",
                  lambda m: r"\operatorname{" + OPERATORS[m.group(1)] + "}", tex)
     tex = re.sub(r"\\R(?![A-Za-z])", r"\\mathbb{R}", tex)
@@ -643,7 +645,7 @@ def _md_statement(statement: str) -> str:
         return ""
     if not math_ok(s):
         return _md_paragraph(s)
-    s = _md_math(s)
+    s = _md_math(" ".join(s.split()))       # one line: no line of it begins a block of the report's own
     if "\n" in s or len(s) > 70 or "\\\\" in s or "\\begin" in s:
         return f"$$\n{s}\n$$"
     return f"${s}$"
@@ -1121,13 +1123,18 @@ def headline(claims: list[ClaimResults], paper: bool = True) -> tuple[str, list[
                + ", ".join(f"{v} {k.removeprefix('every n ')}" for k, v in one_r))
     holds = sum(map(holds_at_every_size, claims))
     # a claim that no method decided at some computed size is not said to hold there
-    open_ = [c.id for c in claims if not c.failures and not holds_at_every_size(c)]
+    undecided = [c for c in claims if not c.failures and not holds_at_every_size(c)]
+    open_ = [c.id for c in undecided if any(r.verdict in PASSING for r in c.printed)]
+    nowhere = [c.id for c in undecided if not any(r.verdict in PASSING for r in c.printed)]
     named = ", ".join(open_[:5]) + (f" and {len(open_) - 5} more" if len(open_) > 5 else "")
+    unnamed = ", ".join(nowhere[:5]) + (f" and {len(nowhere) - 5} more" if len(nowhere) > 5 else "")
     whose = f"the paper's {len(claims)} checkable statements" if paper else f"the {len(claims)} statements verified"
     text = (f"Of {whose}, {holds} hold as printed at "
             f"every size computed ({at_once}), "
             + (f"{len(open_)} {'holds' if len(open_) == 1 else 'hold'} where decided but "
                f"{'was' if len(open_) == 1 else 'were'} left undecided at some size ({named}), " if open_ else "")
+            + (f"{len(nowhere)} {'was' if len(nowhere) == 1 else 'were'} decided at no size ({unnamed}), "
+               if nowhere else "")
             + f"and {len(errata)} "
             f"fail as printed: each is an erratum with an exact witness, and where a correction is registered "
             f"it was verified ({len(corrected_free)} corrections proved for every n and r).")

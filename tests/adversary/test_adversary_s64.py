@@ -105,7 +105,7 @@ def test_free_says_error_for_a_claim_refused_at_every_size(tmp_path):
 
 
 def test_check_names_a_claims_file_given_relative_to_another_directory(tmp_path):
-    """check from another directory than the run's said only "claims file not found" (user trial)."""
+    """check and report from another directory than the run's said only "claims file not found" (user trials)."""
     out = tmp_path / "rep"
     run = cli("verify", "u64-prep-kappa", "--claims", "tests/adversary/s64/user/claims.py", "--size", "3,2",
               "--method", "modular", "--report-dir", str(out))
@@ -114,6 +114,11 @@ def test_check_names_a_claims_file_given_relative_to_another_directory(tmp_path)
     assert run.returncode == 2 and "relative to the directory the run was made in" in run.stderr, run.stderr
     run = cli("check", "--no-rerun", str(out / "results.json"), "--claims", str(USER / "claims.py"), cwd=tmp_path)
     assert run.returncode == 0 and "0 rejected" in run.stdout, run.stdout + run.stderr
+    run = cli("report", "--results", str(out / "results.json"), "--report-dir", str(tmp_path / "re"), cwd=tmp_path)
+    assert run.returncode == 2 and "relative to the directory the run was made in" in run.stderr, run.stderr
+    run = cli("report", "--results", str(out / "results.json"), "--report-dir", str(tmp_path / "re"),
+              "--claims", str(USER / "claims.py"), cwd=tmp_path)
+    assert run.returncode == 0, run.stderr
 
 
 # -- the user trial ----------------------------------------------------------------------------------------------
