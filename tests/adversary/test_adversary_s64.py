@@ -167,3 +167,73 @@ def test_a_docstring_makes_no_table_or_heading_of_the_markdown_report(tmp_path):
     from stiefelsym.reports.report import _md_paragraph
     assert _md_paragraph("# a heading\n\nand more") == r"\# a heading and more"
     assert _md_paragraph("1. a list") == r"\1. a list"
+
+
+# -- the second review (s64/review2) -----------------------------------------------------------------------------
+
+REVIEW2 = HERE / "s64" / "review2"
+
+
+def test_a_paper_label_cannot_open_an_html_comment_in_the_markdown_report():
+    """The second review's label "x$\\n<!--$" kept its newline and "<" in a math segment: a line of verification.md
+    began an HTML comment that a true claim's multi-line statement closed, with a forged `checked` table between.  A
+    label, a section, a check name and a correction's description are one line of text; a claims file with another
+    is refused when it is loaded."""
+    run = cli("verify", "--claims", str(REVIEW2 / "md_forge.py"), "--method", "modular", "--no-report")
+    assert run.returncode == 2 and "paper label" in run.stderr and "Traceback" not in run.stderr, run.stderr
+    from stiefelsym.claims import Claim, SizeSpec  # noqa: F401
+    from stiefelsym import admissible, claim
+    for kw, words in ((dict(section="3\n| x |"), "section"), (dict(section="3", paper="a$b"), "paper label")):
+        with pytest.raises(ValueError, match=words):
+            claim("q64-bad", kind="id", sizes=admissible(n_max=2), **kw)(lambda s: {"r": s.X})
+
+
+def test_a_check_name_of_two_lines_is_refused_under_every_method():
+    from stiefelsym.claims import Claim
+    from stiefelsym.claims import Size
+    from stiefelsym import admissible
+    from stiefelsym.run.runner import run_one
+
+    def two_lines(s):
+        return {"XtX\n| (3,2) | modular | checked |": s.X.T @ s.X - s.Ir}
+    c = Claim(id="q64-name", paper=(), kind="id", section="", func=two_lines, sizes=admissible(n_max=3),
+              statement="", title="")
+    for method in ("exact", "modular", "free"):
+        res = run_one(c, None if method == "free" else Size(3, 2), method, seed=0)
+        assert res.verdict == "error" and "check name" in res.message, res.line()
+
+
+@pytest.mark.parametrize("tex", [
+    r"\begin {matrix} a", "{" * 300 + "x" + "}" * 300, "a\n\nb", r"\left( x", r"x \right)",
+    r"\begin{matrix} a \end {pmatrix}",
+])
+def test_a_formula_that_would_hang_or_stop_pdflatex_is_plain_text(tex):
+    """An environment opened as \\begin {matrix} (a space) was not counted, and pdflatex looped; 300 nested braces
+    exceeded TeX's 255 groups (no PDF); a blank line or an unpaired \\left is an error in math mode."""
+    from stiefelsym.latex import math_ok
+    assert not math_ok(tex)
+
+
+def test_markdown_math_shows_no_html():
+    from stiefelsym.reports.report import _md_escape
+    out = _md_escape("a $x <!-- y\n--> z$ b")
+    assert "<" not in out and ">" not in out and "\n" not in out and r"\lt" in out
+
+
+# -- the second user trial (s64/user2) ---------------------------------------------------------------------------
+
+def test_the_second_user_trials_statements_hold_and_their_twins_fail():
+    """Thirteen statements of §2, §4, §6 and §8 written through the Python API (momentum maps, Noether and Manakov
+    integrals, Λ₁, Λ₂ and the leaf's dimension, Perelomov's integrals in involution, the dual Lax pair) and their
+    false twins (numpy: s64/user2/indep.py), under modular at (4,2): a rank said too large is inconclusive (a
+    refutation needs a kernel), never a pass."""
+    held = _results("--claims", str(HERE / "s64" / "user2" / "claims.py"), "--size", "4,2", "--method", "modular")
+    assert held and all(r["verdict"] in ("proved", "checked") for r in held), \
+        [(r["claim"], r["verdict"], r["message"][:200]) for r in held if r["verdict"] not in ("proved", "checked")]
+    twins = _results("--claims", str(HERE / "s64" / "user2" / "negatives.py"), "--size", "4,2", "--method", "modular")
+    assert twins
+    for r in twins:
+        if r["kind"] == "dim":
+            assert r["verdict"] in ("fails", "inconclusive"), (r["claim"], r["verdict"])
+        else:
+            assert r["verdict"] == "fails", (r["claim"], r["verdict"], r["message"][:200])
