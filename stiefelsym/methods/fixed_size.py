@@ -680,6 +680,11 @@ def _constant_minor_rank(M: Mat, field: Field) -> int:
 #: seconds the symbolic function-field rank may take before the upper bound is taken at random
 #: points of prime fields instead (the lower bound is always exact)
 SYMBOLIC_RANK_SECONDS = 5.0
+#: ... and where the rank at an exact point is below the printed one (the printed rank is then very likely too
+#: large, and only the function-field rank refutes it with certainty): the time that refutation may take, outside
+#: the mutation analysis (whose mutants are refuted by a point method already).  A rank said one too large of the
+#: map ξ ↦ [ξ, XXᵀ] at (4,2) takes 15 s
+REFUTING_RANK_SECONDS = 60.0
 
 
 class _RandomizedRank:
@@ -794,8 +799,11 @@ def _exact_rank(R: Rank, field: Field, randomized: _RandomizedRank | None = None
                         f"polynomial), so rank 0 over the function field ({_stated(0)})", True)
             return (f"rank {lower} at an exact rational point (rank >= {lower} over the function field) and rank "
                     f"<= {bound[0]}: {bound[1]}; two-sided ({_stated(R.expected)})", True)
+        seconds = SYMBOLIC_RANK_SECONDS
+        if lower is not None and lower < R.expected and not _MUTATION_ANALYSIS:
+            seconds = REFUTING_RANK_SECONDS
         try:
-            with deadline(SYMBOLIC_RANK_SECONDS if randomized is not None else None, "the function-field rank",
+            with deadline(seconds if randomized is not None else None, "the function-field rank",
                           lambda message: ExactTimeout(message)):
                 generic = _function_field_rank(M)
         except ExactTimeout:
@@ -809,7 +817,7 @@ def _exact_rank(R: Rank, field: Field, randomized: _RandomizedRank | None = None
         if lower is None or lower < R.expected:
             # a point can be special: without the function-field rank a lower rank is not certain; what random
             # points of prime fields say is evidence for the reader, not a verdict (a refutation needs a witness)
-            raise ExactTimeout(f"the function-field rank exceeded {SYMBOLIC_RANK_SECONDS:.0f} s, and the rank "
+            raise ExactTimeout(f"the function-field rank exceeded {seconds:.0f} s, and the rank "
                                f"at an exact rational point, {lower}, is below {_who()}'s {R.expected}{note}"
                                + _sampled_below(M, rng, lower, R.expected, minor_degree))
         D = max(1, minor_degree() if minor_degree else 1)

@@ -237,3 +237,17 @@ def test_the_second_user_trials_statements_hold_and_their_twins_fail():
             assert r["verdict"] in ("fails", "inconclusive"), (r["claim"], r["verdict"])
         else:
             assert r["verdict"] == "fails", (r["claim"], r["verdict"], r["message"][:200])
+
+
+def test_a_rank_said_too_large_is_refuted_by_the_function_field_rank():
+    """Three user trials (s63, s64, s64 #2) wrote a rank one too large and got `inconclusive` under every method: the
+    rank at exact points was below the printed one, and the function-field rank, the only certain refutation
+    without kernel vectors, was stopped after 5 s.  Where a point's rank is below the printed one, it now gets 60 s
+    (fixed_size.REFUTING_RANK_SECONDS): the rank r(n − r) + 1 of ξ ↦ [ξ, XXᵀ] at (4,2) fails, and the true rank
+    r(n − r) still passes."""
+    false = _results("n63-l1-rank", "--claims", str(HERE / "s63" / "user" / "negatives.py"), "--size", "4,2",
+                     "--method", "exact")
+    assert [r["verdict"] for r in false] == ["fails"] and "rank over the function field" in false[0]["certificate"]
+    true = _results("u63-l1-rank", "--claims", str(HERE / "s63" / "user" / "claims.py"), "--size", "4,2",
+                    "--method", "exact")
+    assert [r["verdict"] for r in true] in (["proved"], ["checked"]), true      # (its upper bound: 5 s, then points)
