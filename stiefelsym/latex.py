@@ -265,6 +265,91 @@ def _vocabulary_ok(tex: str, commands: frozenset, environments: frozenset, symbo
     return all(env in environments for env in re.findall(r"\\(?:begin|end)\s*\{([^}]*)\}", tex))
 
 
+#: the commands of :data:`MATH_COMMANDS` that take arguments, with how many (a missing one is a TeX error)
+_ARGUMENTS = {**{c: 2 for c in "frac tfrac dfrac binom tbinom dbinom overset underset stackrel".split()},
+              **{c: 1 for c in """sqrt mathrm mathbf mathit mathcal mathbb mathfrak mathsf mathtt boldsymbol operatorname
+                 text textrm textit textbf textup emph hat bar tilde dot ddot vec widehat widetilde overline underline
+                 check breve acute grave ensuremath begin end left right big Big bigg Bigg bigl bigr Bigl Bigr biggl
+                 biggr""".split()}}
+_TOKEN = re.compile(r"\\[A-Za-z]+|\\.|\s+|.", re.S)
+
+
+class _Ungrammatical(ValueError):
+    pass
+
+
+#: commands followed by one delimiter (any one token)
+_DELIMITED = frozenset("left right big Big bigg Bigg bigl bigr Bigl Bigr biggl biggr".split())
+
+
+def _grammar_ok(tex: str) -> bool:
+    """What TeX refuses in math beyond the vocabulary and the balance: a command without its arguments (\\frac
+    at the end of a group), a script with nothing to raise, a second superscript or subscript of one nucleus
+    (a^b^c).  A formula that passes may still be odd; one that fails is set as text, never handed to TeX."""
+    tokens = [t for t in _TOKEN.findall(tex) if not t.isspace()]
+
+    def argument(i: int) -> int:
+        if i >= len(tokens) or tokens[i] in ("}", "^", "_", "&", "\\\\", "$"):
+            raise _Ungrammatical
+        if tokens[i] == "{":
+            return group(i)
+        if tokens[i][1:] in _ARGUMENTS and tokens[i].startswith("\\"):
+            raise _Ungrammatical      # a^\frac{1}{2}: TeX wants braces around it
+        return i + 1
+
+    def group(i: int) -> int:
+        i = sequence(i + 1, True)
+        return i + 1
+
+    def sequence(i: int, closed: bool) -> int:
+        scripts: set[str] = set()
+        while i < len(tokens):
+            t = tokens[i]
+            if t == "}":
+                if not closed:
+                    raise _Ungrammatical
+                return i
+            if t in ("^", "_"):
+                if t in scripts:
+                    raise _Ungrammatical
+                scripts.add(t)
+                i = argument(i + 1)
+                continue
+            if t == "'":
+                i += 1
+                continue
+            scripts = set()
+            if t == "{":
+                i = group(i)
+                continue
+            name = t[1:] if t.startswith("\\") else ""
+            i += 1
+            if name in _DELIMITED:
+                if i >= len(tokens) or tokens[i] in ("}", "^", "_", "&", "{"):
+                    raise _Ungrammatical
+                i += 1
+            elif name in ("begin", "end"):
+                if i >= len(tokens) or tokens[i] != "{":
+                    raise _Ungrammatical
+                i = group(i)
+            elif name in _ARGUMENTS:
+                if name == "sqrt" and i < len(tokens) and tokens[i] == "[":
+                    while i < len(tokens) and tokens[i] != "]":
+                        i += 1
+                    i += 1
+                for _ in range(_ARGUMENTS[name]):
+                    i = argument(i)
+        if closed:
+            raise _Ungrammatical
+        return i
+
+    try:
+        sequence(0, False)
+    except _Ungrammatical:
+        return False
+    return True
+
+
 def math_ok(tex: str) -> bool:
     """Balanced braces and environments, no math delimiters, only the vocabulary of mathematics
     (:data:`MATH_COMMANDS`): safe inside a display."""
@@ -274,7 +359,7 @@ def math_ok(tex: str) -> bool:
         return False
     if not _vocabulary_ok(tex, MATH_COMMANDS, MATH_ENVIRONMENTS, _MATH_SYMBOLS_ESCAPED) or not _delimiters_paired(tex):
         return False
-    return _environments_balanced(tex)
+    return _environments_balanced(tex) and _grammar_ok(tex)
 
 
 def _toplevel(tex: str) -> str:

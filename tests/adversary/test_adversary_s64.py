@@ -60,6 +60,7 @@ def test_math_outside_the_vocabulary_is_plain_text(tex):
     r"\dot X = P - \tfrac{1}{2}(1 + 2\kappa) X P^T X", r"\frac{d}{dt} L(\lambda) = [L(\lambda), M(\lambda)]",
     r"\operatorname{rank} \begin{pmatrix} a & b \\ c & d \end{pmatrix} = 2", r"\left\langle \Phi, \Phi \right\rangle",
     r"\{ x \in \mathbb{R}^n \mid \|x\| = 1 \}", r"\tr (X^T A X) \ne 0,\quad \det \ddim V = \Span\{e_1\}",
+    r"x^2_1 + {x^2}^3 + \frac12 + \sqrt[3]{x} + e^{i\theta} + \mathbb R^n + \left\{ x \right.",
 ])
 def test_the_vocabulary_of_mathematics_is_typeset(tex):
     from stiefelsym.latex import math_ok
@@ -205,11 +206,13 @@ def test_a_check_name_of_two_lines_is_refused_under_every_method():
 
 @pytest.mark.parametrize("tex", [
     r"\begin {matrix} a", "{" * 300 + "x" + "}" * 300, "a\n\nb", r"\left( x", r"x \right)",
-    r"\begin{matrix} a \end {pmatrix}",
+    r"\begin{matrix} a \end {pmatrix}", r"a^b^c", r"x_1_2", r"\frac", r"\frac{1}", r"a^\frac{1}{2}", r"a_",
+    r"\sqrt", r"\left", r"\mathbb",
 ])
 def test_a_formula_that_would_hang_or_stop_pdflatex_is_plain_text(tex):
     """An environment opened as \\begin {matrix} (a space) was not counted, and pdflatex looped; 300 nested braces
-    exceeded TeX's 255 groups (no PDF); a blank line or an unpaired \\left is an error in math mode."""
+    exceeded TeX's 255 groups (no PDF); a blank line, an unpaired \\left, a second superscript of one nucleus or a
+    command without its arguments is an error in math mode."""
     from stiefelsym.latex import math_ok
     assert not math_ok(tex)
 
