@@ -55,7 +55,7 @@ def test_an_inverse_with_a_vanishing_divisor_is_never_passed():
     for c, verdicts in got.items():
         assert len(verdicts) >= len(FIXED), (c, verdicts)
         assert not set(verdicts.values()) & set(PASSING), (c, verdicts)
-        assert fixed(verdicts) == {"error"} and verdicts["free"] == "undecided", (c, verdicts)
+        assert fixed(verdicts) == {"error"} and verdicts["free"] == "error", (c, verdicts)
 
 
 def test_an_op_that_leaves_the_shape_of_its_space_is_never_passed():
@@ -93,7 +93,7 @@ def test_a_division_inside_an_engine_step_is_never_passed():
     got = by_claim(run_all("s34b_inverse_engine_division.py", size="3,2"))
     assert len(got) == 2, got
     for c, verdicts in got.items():
-        assert fixed(verdicts) == {"error"} and verdicts["free"] == "undecided", (c, verdicts)
+        assert fixed(verdicts) == {"error"} and verdicts["free"] == "error", (c, verdicts)
 
 
 # -- 4b-B. the exact confirmation of a float / ball `numeric` ---------------------------------------------
