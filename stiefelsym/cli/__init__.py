@@ -1013,7 +1013,7 @@ def _title(claims_files: Sequence[str], user_ids: set[str], claims: list[Claim])
     """None (the paper's title) unless user claims were verified."""
     if not claims_files:
         return None
-    names = ", ".join(dict.fromkeys(Path(f).name for f in claims_files))
+    names = " ".join(", ".join(dict.fromkeys(Path(f).name for f in claims_files)).split())   # one line
     if all(c.id in user_ids for c in claims):
         return f"Verification of the claims of {names}"
     return f"Verification of the claims of {names} and of the paper's catalog"

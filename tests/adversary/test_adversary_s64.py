@@ -254,3 +254,22 @@ def test_a_rank_said_too_large_is_refuted_by_the_function_field_rank():
     true = _results("u63-l1-rank", "--claims", str(HERE / "s63" / "user" / "claims.py"), "--size", "4,2",
                     "--method", "exact")
     assert [r["verdict"] for r in true] in (["proved"], ["checked"]), true      # (its upper bound: 5 s, then points)
+
+
+def test_a_results_file_whose_run_words_are_not_one_line_is_refused(tmp_path):
+    """The second review edited a results file's meta (versions, title, platform, sections) with line breaks, and
+    `report` printed a forged table from them: the words a report prints of its run are one line each, as verify
+    writes them; `report` and `check` refuse a file with others (exit 2)."""
+    out = tmp_path / "rep"
+    assert cli("verify", "prep", "--size", "3,2", "--method", "modular", "--report-dir", str(out)).returncode == 0
+    payload = json.loads((out / "results.json").read_text())
+    for key, value in (("versions", {"sympy": "1\n\n| prep | checked |"}), ("title", "T\n# forged"),
+                       ("platform", "x\x1b[2J"), ("sections", {"2": "a\nb"})):
+        edited = json.loads(json.dumps(payload))
+        edited["meta"][key] = value
+        path = tmp_path / "edited.json"
+        path.write_text(json.dumps(edited))
+        run = cli("report", "--results", str(path), "--report-dir", str(tmp_path / "re"))
+        assert run.returncode == 2 and f"meta {key}" in run.stderr, (key, run.stderr)
+        run = cli("check", "--no-rerun", str(path))
+        assert run.returncode == 2 and f"meta {key}" in run.stderr, (key, run.stderr)

@@ -1,3 +1,4 @@
+# ruff: noqa
 """True identities with huge intermediate terms, and a false twin of relative size 2^-120 (r64)."""
 from stiefelsym import claim
 

@@ -1,3 +1,4 @@
+# ruff: noqa
 """Flows and Hamiltonians of my own for `stiefelsym discover` (r64); no claims here."""
 
 

@@ -1,3 +1,4 @@
+# ruff: noqa
 """Kernel certificates that hold on one component of O(n) only (r64)."""
 from stiefelsym import Rank, claim, elementary, admissible
 

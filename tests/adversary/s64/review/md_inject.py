@@ -1,3 +1,4 @@
+# ruff: noqa
 """Markdown injection through docstrings (r64): a false claim's verdict table hidden in an HTML comment."""
 from stiefelsym import claim
 

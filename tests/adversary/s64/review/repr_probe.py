@@ -1,3 +1,4 @@
+# ruff: noqa
 """Jupyter displays of results and claims with hostile titles (r64); run with the venv's python."""
 import stiefelsym
 res = stiefelsym.verify(files=["tex_verdict.py", "md_inject.py"], methods=["modular"])

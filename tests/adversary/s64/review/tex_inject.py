@@ -1,3 +1,4 @@
+# ruff: noqa
 """Hostile statements and titles: LaTeX and Markdown injection (r64)."""
 from stiefelsym import admissible, claim
 

@@ -1,3 +1,4 @@
+# ruff: noqa
 """A false claim whose docstring rewrites its own verdict in the PDF report (r64)."""
 from stiefelsym import admissible, claim
 

@@ -1,3 +1,4 @@
+# ruff: noqa
 """numpy truths of the r64 claims at random points of T*V (run with the venv's python)."""
 import numpy as np
 rng = np.random.default_rng(1)

@@ -1,3 +1,4 @@
+# ruff: noqa
 """Which claim fields reach verification.md with a line of their own (q64): each field carries a `$...$`
 segment (or plain text, for section) that begins a line with a marker ZZ<field>.  False claim, erratum declared."""
 from stiefelsym import claim

@@ -1,3 +1,4 @@
+# ruff: noqa
 """Markdown structure forgery (q64): a paper label whose math segment puts `<!--` at the start of a line
 (an HTML block that hides everything up to a line with `-->`), and a true claim's statement (several lines,
 math_ok: no `$`, `#`, `%`) that closes it and prints a forged verdict table for the false claim."""

@@ -1,3 +1,4 @@
+# ruff: noqa
 """Claim-chosen names in the reports (q64): scalars and generics whose names have several underscores,
 check names with TeX/Markdown specials.  q64-names-true is true, q64-names-false false (c X != X)."""
 from stiefelsym import admissible, claim

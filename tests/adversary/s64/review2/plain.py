@@ -1,3 +1,4 @@
+# ruff: noqa
 """A false and a true claim (q64), the base of the hand-edited results files."""
 from stiefelsym import claim
 

@@ -1,3 +1,4 @@
+# ruff: noqa
 """The second point (Y, Q) and the complex point (Z, Ż) (q64): true statements and false twins that would
 pass if a chart drew Y, Q, Z or Ż less generic than T*V (vertical tangent vectors only, Y tied to X, Z real)."""
 from stiefelsym import admissible, claim

@@ -1,3 +1,4 @@
+# ruff: noqa
 """Graphs that read no point (only A, λ, generic and engine-built letters), whose truth depends on r (q64):
 each holds at r = 1 only.  A record computed at the least r and shared with every r whose graph is the same
 would pass them at r = 2, 3."""

@@ -1,3 +1,4 @@
+# ruff: noqa
 """Size declarations and kernel certificates (q64).
 
 * r_in with an r the dimension-free method has no letters for (r = 3), and unions (2, "n"), (1, 2):

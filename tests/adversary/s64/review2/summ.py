@@ -1,3 +1,4 @@
+# ruff: noqa
 """Summarize `stiefelsym verify --format json` from stdin: claim, method, verdicts by size (q64 review)."""
 import json, sys
 from collections import defaultdict

@@ -1,3 +1,4 @@
+# ruff: noqa
 """Independent truth of the q64 claims (numpy at random points of T*V, of W(n, r) and by hand); prints
 claim, sizes, max |residual|.  A residual above 1e-8 means the statement is false there."""
 import numpy as np

@@ -1,3 +1,4 @@
+# ruff: noqa
 """Shared helpers of claims.py and negatives.py (no claims here)."""
 from stiefelsym import twisted, systems
 

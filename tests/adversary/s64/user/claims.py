@@ -1,3 +1,4 @@
+# ruff: noqa
 """True statements of Sections 5, 7 and Appendices 1-2 of Fedorov-Jovanovic, restated (s64)."""
 from stiefelsym import admissible, claim, comm, twisted, systems
 from _common import (H_kappa, H_normal, H_eucl, no_flow, wedge, L_hat, L_eps, cross_col,

@@ -1,3 +1,4 @@
+# ruff: noqa
 """Independent numpy checks (s64) of claims.py / negatives.py at random points of T*V.
 Derivatives along flows by central differences (h = 1e-5) of polynomial functions; flows from the
 paper's printed formulas or from a Dirac flow whose multipliers are solved numerically here."""

@@ -1,3 +1,4 @@
+# ruff: noqa
 """False twins of claims.py (s64): each must be refuted (kind="not", expect="nonzero")."""
 from stiefelsym import admissible, claim, comm, twisted, systems
 from _common import (H_kappa, H_normal, H_eucl, no_flow, wedge, L_hat, L_eps, cross_col,

@@ -1,3 +1,4 @@
+# ruff: noqa
 """Helpers shared by claims.py and negatives.py (no claims here)."""
 from stiefelsym import block, comm
 

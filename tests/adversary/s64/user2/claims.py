@@ -1,3 +1,4 @@
+# ruff: noqa
 """Session 64, user 2: statements of Sections 2, 4, 6 and 8 of Fedorov & Jovanovic, restated.
 
     stiefelsym verify --claims claims.py --jobs 1

@@ -1,3 +1,4 @@
+# ruff: noqa
 """Independent numpy checks of the v64-/w64- statements at random points of T*V(n, r).
 
 No stiefelsym import.  The Dirac bracket is computed from its definition via the

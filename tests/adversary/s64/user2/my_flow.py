@@ -1,3 +1,4 @@
+# ruff: noqa
 """A flow of my own for `stiefelsym discover`: the Manakov geodesic flow (dot_XP3*),
 Xdot = (A Phi + Phi A) X, Pdot = (A Phi + Phi A) P."""
 

@@ -1,3 +1,4 @@
+# ruff: noqa
 """Session 64, user 2: false twins (w64-) of the statements in claims.py.
 
 Every twin is an ordinary claim declared false with fails_at=... and erratum=..., so the

@@ -1,3 +1,4 @@
+# ruff: noqa
 """Jupyter-like rendering of Result / ResultList objects (step 2)."""
 import stiefelsym
 res = stiefelsym.verify(["v64-dual-I2", "w64-dual-I2"], files=["claims.py", "negatives.py"],

@@ -1,3 +1,4 @@
+# ruff: noqa
 """Verify a claims file from Python; print one line per result and save a pickle-free summary.
 
 usage: python run_verify.py FILE METHOD [n,r ...]   (env CLAIMS=id1,id2 to restrict)

@@ -1,3 +1,4 @@
+# ruff: noqa
 from stiefelsym import claim
 
 

@@ -1,3 +1,4 @@
+# ruff: noqa
 """Writes one claims file per TeX probe (q64): the docstring and the statement are literals."""
 PROBES = {
     "groups": ("XᵀX = 2I $" + "{" * 300 + "x" + "}" * 300 + "$.", "X^T X = 2 I_r"),
