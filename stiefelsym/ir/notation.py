@@ -492,6 +492,12 @@ def _frac(q: Fraction, tex: bool) -> str:
     return _VULGAR.get(q, f"({q.numerator}/{q.denominator})")
 
 
+def _nucleus(tex: str) -> str:
+    """``tex`` as the nucleus of a subscript: in braces when it has scripts of its own (x_{[1]}_{[X]} is a
+    double subscript, which TeX refuses; {x_{[1]}}_{[X]} is not)."""
+    return "{" + tex + "}" if _scripted(tex) else tex
+
+
 def _scripted(tex: str) -> bool:
     return "^" in tex or "_" in tex or tex.startswith(r"\dot") or tex.startswith(r"\overline")
 
@@ -639,12 +645,13 @@ class Printer:
     def _slice(self, e: Expr, budget: int) -> tuple[str, int]:
         base = self.sub(e.kids[0], budget, ATOM)
         if self.tex:
-            return base + r"_{[" + e.data[0] + "]}", ATOM
+            return _nucleus(base) + r"_{[" + e.data[0] + "]}", ATOM
         return base + "[" + e.data[0] + "]", ATOM
 
     def _index(self, e: Expr, budget: int) -> tuple[str, int]:
-        return self.sub(e.kids[0], budget, ATOM) + (("_{[" + _tex_word(e.data[0]) + "]}") if self.tex
-                                                    else "[" + e.data[0] + "]"), ATOM
+        base = self.sub(e.kids[0], budget, ATOM)
+        return (_nucleus(base) + "_{[" + _tex_word(e.data[0]) + "]}") if self.tex else base + "[" + e.data[0] + "]", \
+            ATOM
 
     def _frac(self, e: Expr, budget: int) -> tuple[str, int]:
         b = self._split_budget(e.kids, budget)

@@ -242,6 +242,7 @@ def test_the_second_user_trials_statements_hold_and_their_twins_fail():
             assert r["verdict"] == "fails", (r["claim"], r["verdict"], r["message"][:200])
 
 
+@pytest.mark.slow
 def test_a_rank_said_too_large_is_refuted_by_the_function_field_rank():
     """Three user trials (s63, s64, s64 #2) wrote a rank one too large and got `inconclusive` under every method: the
     rank at exact points was below the printed one, and the function-field rank, the only certain refutation
