@@ -24,6 +24,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Callable, Iterable, Literal, Mapping
 
+from stiefelsym.latex import one_line
 from stiefelsym.ir.statements import Count as Count, Inverse as Inverse, Rank as Rank, RightInverse as RightInverse  # the statements a claim returns (re-exported)
 
 
@@ -246,7 +247,7 @@ class Correction:
 #: what a claim id may be (it starts every verdict line and names the claim in every report)
 _ID = re.compile(r"[A-Za-z0-9][A-Za-z0-9._+-]{0,99}")
 _SECTION = re.compile(r"(?:[A-Za-z0-9][A-Za-z0-9.-]{0,19})?")
-_LABEL = re.compile(r"[^\x00-\x1f\x7f$]{1,60}")
+
 
 
 @dataclass(frozen=True)
@@ -327,7 +328,7 @@ class Claim:
             raise ValueError(f"claim {self.id}: section {self.section!r}: a section is empty or 1 to 20 letters, digits "
                              "and . - (the paper's 5, 7, A1, A2, ...)")
         for label in self.paper:
-            if not isinstance(label, str) or not _LABEL.fullmatch(label):
+            if not one_line(label, 60) or "$" in label:
                 raise ValueError(f"claim {self.id}: paper label {label!r}: a label is 1 to 60 characters of one line, "
                                  "without $ or a control character (the paper's cond_XP, LA1, ...)")
         if self.expect not in ("holds", "nonzero", "fails"):
@@ -361,7 +362,7 @@ class Claim:
             raise ValueError(f"a correction expects 'holds' or 'nonzero', not {expect!r}")
         # the description names the correction in every record, report and `check` (the variant of a record):
         # two corrections of one description would be one record's variant, and either one's verdict the other's
-        if type(description) is not str or not description.strip() or re.search(r"[\x00-\x1f\x7f]", description):
+        if not one_line(description, 10**4) or not description.strip():
             raise ValueError(f"claim {self.id}: a correction is described by a non-empty string of one line")
         if any(c.description == description for c in self.corrections):
             raise ValueError(f"claim {self.id}: two corrections described {description!r} (the description names "

@@ -89,6 +89,13 @@ def _cmd(tex: str) -> str:
     return tex + " " if re.search(r"\\[A-Za-z]+$", tex) else tex
 
 
+def one_line(text: Any, limit: int) -> bool:
+    """Whether ``text`` is a string of 1 to ``limit`` characters with no line break or other control character:
+    the words that head a line of the reports (a claim's section, labels and check names, a run's title), which
+    a line break would turn into a table, a heading or an HTML block of the report's own."""
+    return type(text) is str and 0 < len(text) <= limit and not re.search(r"[\x00-\x1f\x7f]", text)
+
+
 def tex_escape(text: Any) -> str:
     """Plain text to LaTeX text mode: specials escaped, Unicode mapped to LaTeX."""
     out = []

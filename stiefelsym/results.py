@@ -11,6 +11,8 @@ from dataclasses import MISSING, asdict, dataclass, field, fields, is_dataclass,
 from pathlib import Path
 from typing import Any, Callable, Iterable
 
+from stiefelsym.latex import one_line
+
 VERDICTS = ("proved", "checked", "numeric", "fails", "inconclusive", "undecided", "error")
 #: verdicts that establish a claim (proof grade: proved, checked)
 PASSING = ("proved", "checked", "numeric")
@@ -384,10 +386,6 @@ _FIELD_TYPES: tuple[tuple[str, Callable[[Any], bool], str], ...] = (
 )
 
 
-def _one_line(x: Any) -> bool:
-    return type(x) is str and len(x) <= 300 and not re.search(r"[\x00-\x1f\x7f]", x)
-
-
 def meta_problems(meta: Any, methods: Iterable[str], hard_cases: Iterable[str], max_n: int) -> list[str]:
     """What is malformed in a results file's ``meta`` (the command the file is the run of), field by field:
     its methods, sizes, --max-n (at most ``max_n``: every size up to it is listed when the file is
@@ -398,11 +396,11 @@ def meta_problems(meta: Any, methods: Iterable[str], hard_cases: Iterable[str], 
     # the words a report prints of its run (its title, where and when it ran, the versions, the sections' names):
     # one line of text each, as verify writes them (a line break would begin a table or a heading of the report's)
     for key in ("title", "date", "platform", "commit"):
-        if meta.get(key) is not None and not _one_line(meta[key]):
+        if meta.get(key) is not None and not (meta[key] == "" or one_line(meta[key], 300)):
             out.append(f"meta {key} {_short_repr(meta[key])} is not one line of text")
     for key in ("versions", "sections"):
         v = meta.get(key)
-        if v is not None and not (isinstance(v, dict) and all(_one_line(k) and _one_line(x) for k, x in v.items())):
+        if v is not None and not (isinstance(v, dict) and all(one_line(k, 300) and (x == "" or one_line(x, 300)) for k, x in v.items())):
             out.append(f"meta {key} {_short_repr(v)} is not a mapping of names to one line of text each")
     ms = meta.get("methods")
     if ms is not None and not (isinstance(ms, list) and all(type(m) is str and m in methods for m in ms)):

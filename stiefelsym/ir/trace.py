@@ -20,12 +20,12 @@ from __future__ import annotations
 
 import functools
 import inspect
-import re
 import sys
 from fractions import Fraction
 from typing import Any, Callable, Iterator
 
 from stiefelsym.ir.seal import refuse_registration
+from stiefelsym.latex import one_line
 from stiefelsym.ir.families import COMPARISONS, SYMBOLS, SizeFamily
 from stiefelsym.ir.graph import _REFS, Graph, Named, Ref, Size, _ref
 from stiefelsym.ir.sites import RECORDING, STOP, claim_site
@@ -1591,7 +1591,7 @@ def trace(func: Callable, n: int | None, r: int | None, constraints: tuple[str, 
             t.refuse(f"a claim returns a non-empty dict of named checks, {{'name': residual, ...}} (it returned {got})")
         if any(type(k) is not str for k in out):
             t.refuse("check names are strings")
-        if any(not k or len(k) > 200 or re.search(r"[\x00-\x1f\x7f]", k) for k in out):
+        if not all(one_line(k, 200) for k in out):
             t.refuse("a check name is 1 to 200 characters of one line (it heads a line of the reports)")
         statements = (Inverse, RightInverse)
         t.g.output = t.g.add("dict", (tuple(out), tuple(t.inverse(v) if type(v) in statements else t.structure(v)
