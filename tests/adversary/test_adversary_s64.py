@@ -274,3 +274,15 @@ def test_a_results_file_whose_run_words_are_not_one_line_is_refused(tmp_path):
         assert run.returncode == 2 and f"meta {key}" in run.stderr, (key, run.stderr)
         run = cli("check", "--no-rerun", str(path))
         assert run.returncode == 2 and f"meta {key}" in run.stderr, (key, run.stderr)
+
+
+def test_the_reuse_of_a_product_of_transposes_passes_no_false_statement():
+    """The stop's own attempt (s64/own_transposes.py) on the exact method's a b = (bᵀ aᵀ)ᵀ: statements comparing a
+    product with the product of the transposes (XᵀP = PᵀX, YᵀQ = QᵀY, XᵀAP = PᵀAX) fail at r = 2 and hold at r = 1
+    (1 x 1 matrices), their true companions (XᵀP = −PᵀX, (XᵀAP)ᵀ = PᵀAX) are proved."""
+    got = {(r["claim"], r["r"]): r["verdict"] for r in _results(
+        "--claims", str(HERE / "s64" / "own_transposes.py"), "--size", "3,2", "--size", "4,1", "--method", "exact")}
+    for cid in ("o64-xp-symmetric", "o64-yq-symmetric", "o64-xap-swapped"):
+        assert got[(cid, 2)] == "fails" and got[(cid, 1)] == "proved", (cid, got)
+    for cid in ("o64-xp-skew", "o64-xap-transpose"):
+        assert got[(cid, 2)] == got[(cid, 1)] == "proved", (cid, got)
