@@ -599,7 +599,7 @@ def _md_escape(text: Any) -> str:
     """Escape Markdown emphasis and HTML in running text, keeping ``$...$`` math."""
     out = []
     for is_math, seg in split_math(str(text)):
-        out.append(f"${_md_math(' '.join(seg.split()))}$" if is_math else re.sub(r"([\\*_`<>])", r"\\\1", seg))
+        out.append(f"${_md_math(seg)}$" if is_math else re.sub(r"([\\*_`<>])", r"\\\1", seg))
     return "".join(out)
 
 
@@ -628,7 +628,9 @@ def _md_code(text: Any) -> str:
 
 def _md_math(tex: str) -> str:
     """Expand the paper's macros, which Markdown math viewers do not know; < and > as \\lt and \\gt (a Markdown
-    reader takes "<" for the start of HTML, a comment that hides the report's own lines, even inside $...$)."""
+    reader takes "<" for the start of HTML, a comment that hides the report's own lines, even inside $...$), on one
+    line (no line of it begins a table or a block of the report's own)."""
+    tex = " ".join(tex.split())
     tex = re.sub(r"\s*([<>])\s*", lambda m: r" \lt " if m.group(1) == "<" else r" \gt ", tex)
     tex = re.sub(r"\\(" + "|".join(OPERATORS) + r")(?![A-Za-z])",
                  lambda m: r"\operatorname{" + OPERATORS[m.group(1)] + "}", tex)
@@ -645,8 +647,8 @@ def _md_statement(statement: str) -> str:
         return ""
     if not math_ok(s):
         return _md_paragraph(s)
-    s = _md_math(" ".join(s.split()))       # one line: no line of it begins a block of the report's own
-    if "\n" in s or len(s) > 70 or "\\\\" in s or "\\begin" in s:
+    s = _md_math(s)
+    if len(s) > 70 or "\\\\" in s or "\\begin" in s:
         return f"$$\n{s}\n$$"
     return f"${s}$"
 
