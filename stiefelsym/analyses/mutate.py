@@ -1478,6 +1478,8 @@ def _run_mutation(claims, sizes, methods, seed, on_result, limit, only, jobs, lo
     order = sorted(range(len(work)), key=lambda ci: -_weight(*work[ci]))
     _WORK.clear()
     _WORK.update(claims=work, seed=seed, limit=limit, only=only, loan=loan, on=on, sites=sites)
+    if "exact" in methods:
+        import sympy.polys.matrices  # noqa: F401 (once, before the workers and their exact children fork)
     done: dict[int, _ClaimRun] = {}
     emitted = 0
     try:

@@ -3507,7 +3507,6 @@ def _run_exact_isolated(claim: Claim, n: int, r: int, seed: int, func: Callable 
         with spaced_collections():
             return run_exact(claim, n, r, seed, func, time_budget)
     from stiefelsym.run.isolate import ChildDied, HardTimeout, run_isolated
-    import sympy.polys.matrices  # noqa: F401 (imported once here, not in every child)
     t0 = time.perf_counter()
     res = _base_result(claim, n, r, "exact", None)
     res.verdict = "inconclusive"

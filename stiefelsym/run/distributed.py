@@ -126,7 +126,7 @@ def run_here(spec: dict[str, Any]) -> Outcome:
     claim = _registry(tuple(spec["origin"])).get(spec["claim"])
     claims = [claim]
     task = (0, spec["n"], spec["r"], spec["method"], spec["correction"])
-    runner._preload([task])
+    runner._preload([task], long_run=True)
     memory = None if spec["memory"] is None else int(spec["memory"] * GIB)
     timeout = spec["timeout"]
     pool: WorkerPool
@@ -168,7 +168,7 @@ def serve() -> None:
     sys.stdout = sys.stderr
     from stiefelsym.run import runner
     _registry(("catalog", ""))                 # ready before the first run
-    runner._preload([(0, 1, 1, "auto", -1)])
+    runner._preload([(0, 1, 1, "auto", -1)], long_run=True)
     _write_frame(out, ("ready", None))
     while True:
         spec = _read_frame(sys.stdin.fileno())

@@ -544,13 +544,22 @@ def _settle(outcome: Outcome, task: Task, claims: list[Claim], seed: int, hard: 
     return _finish(res, c, variant, hard)
 
 
-def _preload(tasks: list[Task]) -> None:
-    """Import, before forking, what the workers will need (so a fresh worker starts ready)."""
+#: a plan of at least this many runs imports sympy's matrices in the parent before forking, for the exact
+#: runs that need them (ranks, symbolic rows); a shorter one leaves the import (0.4 s) to the run that needs
+#: it, so a run of one claim at a few sizes whose exact proof needs no sympy starts 0.4 s sooner
+PRELOAD_SYMPY_TASKS = 16
+
+
+def _preload(tasks: list[Task], long_run: bool | None = None) -> None:
+    """Import, before forking, what the workers will need (so a fresh worker starts ready); ``long_run``
+    (default: a plan of :data:`PRELOAD_SYMPY_TASKS` runs or more) imports sympy's matrices too."""
     if any(t[1] is None for t in tasks):
         import sympy  # noqa: F401  (the LaTeX of symbolic coefficients in every derivation)
         from stiefelsym import free  # noqa: F401
         from stiefelsym.methods import dimension_free as free_method  # noqa: F401
-    if any(t[3] in ("auto", "exact") for t in tasks):
+    if long_run is None:
+        long_run = len(tasks) >= PRELOAD_SYMPY_TASKS
+    if long_run and any(t[3] in ("auto", "exact") for t in tasks):
         import sympy.polys.matrices  # noqa: F401
 
 
