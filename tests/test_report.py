@@ -553,7 +553,7 @@ def test_the_headline_and_the_summary_table_count_the_same_claims_as_holding():
           result("b", 3, 1, "exact", "proved"), result("b", 6, 1, "modular", "checked")]
     claims = group_by_claim(rs)
     text, _ = headline(claims)
-    assert text.startswith("Of the paper's 2 checkable statements, 1 hold as printed at every size computed")
+    assert text.startswith("Of the paper's 2 checkable statements, 1 holds as printed at every size computed")
     assert "1 holds where decided but was left undecided at some size (a)" in text
     assert section_counts(claims)["every size"] == 1
 

@@ -35,6 +35,17 @@ LETTERS = {"X": ("n", "r", "Xt", "X"), "Xt": ("r", "n", "X", "X^T"), "P": ("n", 
            "Pt": ("r", "n", "P", "P^T"), "A": ("n", "n", "A", "A")}
 
 PRIME = 2**61 - 1
+#: the primes a search tries in turn: the next one where a constant of the flow (or of the ansatz) is 0 or has no
+#: inverse modulo the one before, or where the space found there is refuted by verification (a constant of the
+#: flow divisible by that prime makes the flow vanish there, and every monomial looks conserved)
+PRIMES = (PRIME, 2**62 - 57, 2**60 - 93)
+
+
+def _prime_text(p: int) -> str:
+    for e in (60, 61, 62):
+        if 0 <= 2**e - p < 2**e // 2:
+            return f"2^{e} - {2**e - p}"
+    return str(p)
 
 
 def _canonical(word: tuple[str, ...]) -> tuple[str, ...]:
@@ -172,13 +183,26 @@ class Discovery:
     integrals: list[Integral]
     points: int
     seed: int
+    prime: int = PRIME
+    #: what went wrong at the primes tried before (or at this one, when every prime was tried): the dimensions
+    #: are the flow's only where the last sentence is not about this prime
+    caveats: list[str] = field(default_factory=list)
+
+    @property
+    def certified(self) -> bool:
+        """The space found is the flow's as far as verification can tell: every element was reconstructed and
+        none was refuted (the caveats, if any, are about other primes)."""
+        return not any(c.startswith(f"modulo p = {_prime_text(self.prime)} ") for c in self.caveats)
 
     def lines(self) -> list[str]:
         n, r = self.size.n, self.size.r
         out = [f"flow {self.flow}, (n, r) = ({n}, {r}): ansatz of {len(self.ansatz)} trace monomials "
-               f"(degree <= {max(m.degree for m in self.ansatz)}); {self.points} points of GF(2^61 - 1), seed {self.seed}",
-               f"  conserved: dim {self.conserved_dim}; constant on T*V: dim {self.constant_dim}; "
-               f"independent integrals modulo constants: {len(self.integrals)}"]
+               f"(degree <= {max(m.degree for m in self.ansatz)}); {self.points} points of "
+               f"GF({_prime_text(self.prime)}), seed {self.seed}"]
+        out += [f"  note: {c}" for c in self.caveats]
+        out += [f"  conserved: dim {self.conserved_dim}; constant on T*V: dim {self.constant_dim}; "
+                f"independent integrals modulo constants: {len(self.integrals)}"
+                + ("" if self.certified else "  (NOT the flow's: see the note above)")]
         for k, I in enumerate(self.integrals, 1):
             v = ", ".join(f"{m} {x}" for m, x in I.verdicts.items())
             out.append(f"  I{k} = {I.text()}    [{v}]")
@@ -235,9 +259,7 @@ def conserved(flow: Callable[[Any], Any], size: Size, degree: int = 4, *, max_a:
     {"X": Ẋ, "P": Ṗ}) among the trace monomials of degree <= ``degree``, at ``size``; each basis
     element verified by the methods ``verify`` (the dimension-free one for all n, r)."""
     from stiefelsym.ir import _compiled_graph as compile_claim
-    from stiefelsym.backends.fields import ModularField
-    from stiefelsym.run.runner import run_one
-    from stiefelsym.scene import REALIZATIONS, Scene
+    from stiefelsym.scene import REALIZATIONS
 
     mons = list(terms) if terms is not None else ansatz(degree, max_a, products)
     N = len(mons)
@@ -251,25 +273,69 @@ def conserved(flow: Callable[[Any], Any], size: Size, degree: int = 4, *, max_a:
         return out
     cons = REALIZATIONS[realization]
     g = compile_claim(probe, size.n, size.r, (cons.name, cons.build))
-    rng = random.Random(f"{seed}|discover|{name}|{size.n}|{size.r}")
     K = N + 8
-    values, derivs = [], []
-    for k in range(K + 1):
-        scene = Scene(size.n, size.r, ModularField(PRIME), chart="cayley", rng=rng,
-                      component=k % 2 if size.r == size.n else 0, realization=realization)
-        out = evaluate_derived(g, scene)
-        values.append([int(out[f"F{i}"]) for i in range(N)])
-        derivs.append([int(out[f"dF{i}"]) for i in range(N)])
-    base = values[0]
-    V0 = _nullspace([[(v - b) % PRIME for v, b in zip(row, base)] for row in values[1:]], N, PRIME)
-    V1 = _nullspace(derivs[1:], N, PRIME)
-    kept = _quotient(V1, V0, PRIME)
-    integrals = []
-    for v in kept:
-        coeffs = [_rational(x, PRIME) if x else Fraction(0) for x in v]
-        if any(c is None for c in coeffs):
+    caveats: list[str] = []
+    last: Discovery | None = None
+    for prime in PRIMES:
+        found = _conserved_mod(g, size, N, K, prime, seed, name, realization)
+        if isinstance(found, str):
+            caveats.append(found)
             continue
-        integrals.append(Integral([(c, m) for c, m in zip(coeffs, mons) if c]))
+        V0, V1, kept = found
+        integrals = []
+        for v in kept:
+            coeffs = [_rational(x, prime) if x else Fraction(0) for x in v]
+            if any(c is None for c in coeffs):
+                continue
+            integrals.append(Integral([(c, m) for c, m in zip(coeffs, mons) if c]))
+        _verify_integrals(integrals, flow, size, name, realization, verify, seed)
+        refuted = [k for k, I in enumerate(integrals, 1) if "fails" in I.verdicts.values()]
+        lost = len(kept) - len(integrals)
+        last = Discovery(name or getattr(flow, "__name__", "flow"), size, mons, len(V1), len(V0), integrals, K,
+                         seed, prime, caveats)
+        if not refuted and not lost:
+            return last
+        caveats.append(
+            f"modulo p = {_prime_text(prime)} the space found is not the flow's: "
+            + (f"{', '.join(f'I{k}' for k in refuted)} {'fails' if len(refuted) == 1 else 'fail'} verification"
+               if refuted else "")
+            + ("; " if refuted and lost else "")
+            + (f"{lost} of its {len(kept)} elements have no rational coefficients of small height" if lost else "")
+            + " (a constant of the flow may be divisible by p)")
+    if last is not None:
+        return last     # every prime tried: the last space found, with what is wrong with it (not certified)
+    raise ValueError("the flow cannot be evaluated modulo any of the primes "
+                     + ", ".join(_prime_text(p) for p in PRIMES) + ": " + "; ".join(caveats))
+
+
+def _conserved_mod(g: Any, size: Size, N: int, K: int, prime: int, seed: int, name: str,
+                   realization: str) -> tuple[list, list, list] | str:
+    """The spaces V0 (constant on T*V), V1 (conserved) and V1 modulo V0 over GF(prime), from K + 1 random points;
+    a sentence instead where the graph cannot be evaluated modulo ``prime`` (a constant 0 or not invertible
+    there)."""
+    from stiefelsym.backends.fields import DegenerateError, ModularField
+    from stiefelsym.scene import Scene
+    rng = random.Random(f"{seed}|discover|{name}|{size.n}|{size.r}" + (f"|{prime}" if prime != PRIME else ""))
+    values, derivs = [], []
+    try:
+        for k in range(K + 1):
+            scene = Scene(size.n, size.r, ModularField(prime), chart="cayley", rng=rng,
+                          component=k % 2 if size.r == size.n else 0, realization=realization)
+            out = evaluate_derived(g, scene)
+            values.append([int(out[f"F{i}"]) for i in range(N)])
+            derivs.append([int(out[f"dF{i}"]) for i in range(N)])
+    except (DegenerateError, ZeroDivisionError) as exc:
+        return f"modulo p = {_prime_text(prime)} the flow cannot be evaluated ({exc})"
+    base = values[0]
+    V0 = _nullspace([[(v - b) % prime for v, b in zip(row, base)] for row in values[1:]], N, prime)
+    V1 = _nullspace(derivs[1:], N, prime)
+    return V0, V1, _quotient(V1, V0, prime)
+
+
+def _verify_integrals(integrals: list[Integral], flow: Callable[[Any], Any], size: Size, name: str,
+                      realization: str, verify: Sequence[str], seed: int) -> None:
+    """Each integral's verdicts (dI/dt = 0 along the flow) by the methods ``verify``, in its ``verdicts``."""
+    from stiefelsym.run.runner import run_one
     for k, I in enumerate(integrals, 1):
         F = I.function()
         tangent_of = flow
@@ -282,7 +348,6 @@ def conserved(flow: Callable[[Any], Any], size: Size, degree: int = 4, *, max_a:
         for m in verify:
             res = run_one(claim, None if m == "free" else size, m, seed)
             I.verdicts[m if m != "free" else "free (all n, r)"] = res.verdict
-    return Discovery(name or getattr(flow, "__name__", "flow"), size, mons, len(V1), len(V0), integrals, K, seed)
 
 
 def hamiltonian_flow(H: Callable[[Any], Any]) -> Callable[[Any], Any]:
@@ -489,10 +554,11 @@ class AffineSpace:
     equations: int
     rank: int
     rank_augmented: int
+    prime: int = PRIME
 
     def certificate(self) -> str:
         if self.particular is None:
-            return (f"no formula in this {len(self.names)}-term space holds: over GF(2^61 - 1) the "
+            return (f"no formula in this {len(self.names)}-term space holds: over GF({_prime_text(self.prime)}) the "
                     f"{self.equations} x {len(self.names)} system has rank {self.rank} and its augmented "
                     f"matrix rank {self.rank_augmented}")
         return (f"a {len(self.basis)}-dimensional affine space of solutions in the {len(self.names)}-term space "
@@ -513,11 +579,12 @@ class AffineSpace:
 
 def solve_affine(terms: Sequence[tuple[str, Callable[[Any], Any]]], target: Callable[[Any], Any], size: Size,
                  *, seed: int = 0, points: int | None = None, realization: str = "standard") -> AffineSpace:
-    """Every c with Σ cⱼ Tⱼ(s) = R(s) at random points of T*V over GF(2^61 − 1) (matrices: entry by
-    entry), with rational coefficients reconstructed; a verdict on any solution is for the caller."""
+    """Every c with Σ cⱼ Tⱼ(s) = R(s) at random points of T*V over GF(p), p = 2^61 − 1 (the next of
+    :data:`PRIMES` where a constant is 0 or has no inverse mod p) (matrices: entry by entry), with
+    rational coefficients reconstructed; a verdict on any solution is for the caller."""
     import flint
     from stiefelsym.ir import _compiled_graph as compile_claim
-    from stiefelsym.backends.fields import ModularField
+    from stiefelsym.backends.fields import DegenerateError, ModularField
     from stiefelsym.scene import REALIZATIONS, Scene
 
     N = len(terms)
@@ -528,36 +595,45 @@ def solve_affine(terms: Sequence[tuple[str, Callable[[Any], Any]]], target: Call
         return out
     cons = REALIZATIONS[realization]
     g = compile_claim(probe, size.n, size.r, (cons.name, cons.build))
-    rng = random.Random(f"{seed}|affine|{size.n}|{size.r}|{N}")
-    rows: list[list[int]] = []
-    for k in range(points or max(4, N // max(1, size.n * size.n) + 4)):
-        scene = Scene(size.n, size.r, ModularField(PRIME), chart="cayley", rng=rng,
-                      component=k % 2 if size.r == size.n else 0, realization=realization)
-        out = evaluate_derived(g, scene)
-        cols = [_entries_mod(out[f"T{j}"]) for j in range(N)] + [_entries_mod(out["R"])]
-        for e in range(len(cols[-1])):
-            rows.append([c[e] for c in cols[:-1]] + [(-cols[-1][e]) % PRIME])
-    M = flint.nmod_mat(rows, PRIME)
+    failed: list[str] = []
+    for prime in PRIMES:    # the next prime where a constant is 0 or has no inverse modulo this one
+        rng = random.Random(f"{seed}|affine|{size.n}|{size.r}|{N}" + (f"|{prime}" if prime != PRIMES[0] else ""))
+        rows: list[list[int]] = []
+        try:
+            for k in range(points or max(4, N // max(1, size.n * size.n) + 4)):
+                scene = Scene(size.n, size.r, ModularField(prime), chart="cayley", rng=rng,
+                              component=k % 2 if size.r == size.n else 0, realization=realization)
+                out = evaluate_derived(g, scene)
+                cols = [_entries_mod(out[f"T{j}"]) for j in range(N)] + [_entries_mod(out["R"])]
+                for e in range(len(cols[-1])):
+                    rows.append([c[e] for c in cols[:-1]] + [(-cols[-1][e]) % prime])
+        except (DegenerateError, ZeroDivisionError) as exc:
+            failed.append(f"modulo p = {_prime_text(prime)}: {exc}")
+            continue
+        break
+    else:
+        raise ValueError("the terms cannot be evaluated modulo any of the primes tried: " + "; ".join(failed))
+    M = flint.nmod_mat(rows, prime)
     rank_aug = M.rank()
-    rank = flint.nmod_mat([r[:-1] for r in rows], PRIME).rank() if N else 0
+    rank = flint.nmod_mat([r[:-1] for r in rows], prime).rank() if N else 0
     names = [name for name, _ in terms]
     if rank != rank_aug:
-        return AffineSpace(names, None, [], len(rows), rank, rank_aug)
+        return AffineSpace(names, None, [], len(rows), rank, rank_aug, prime)
     X, nullity = M.nullspace()
     vecs = [[int(X[i, j]) for i in range(N + 1)] for j in range(nullity)]
-    R = flint.nmod_mat(vecs, PRIME).rref()[0] if vecs else None
+    R = flint.nmod_mat(vecs, prime).rref()[0] if vecs else None
     vecs = [[int(R[i, j]) for j in range(N + 1)] for i in range(nullity)] if vecs else []
     # the row whose last coordinate is nonzero gives the particular solution (scaled to 1)
     part = next((v for v in vecs if v[-1]), None)
     particular = None
     if part is not None:
-        inv = pow(part[-1], PRIME - 2, PRIME)
-        particular = [_rational(x * inv % PRIME, PRIME) if x else Fraction(0) for x in part[:-1]]
-    basis = [[_rational(x, PRIME) if x else Fraction(0) for x in v[:-1]] for v in vecs if not v[-1]]
+        inv = pow(part[-1], prime - 2, prime)
+        particular = [_rational(x * inv % prime, prime) if x else Fraction(0) for x in part[:-1]]
+    basis = [[_rational(x, prime) if x else Fraction(0) for x in v[:-1]] for v in vecs if not v[-1]]
     if particular is not None and any(x is None for x in particular):
         particular = None
     basis = [b for b in basis if all(x is not None for x in b)]
-    return AffineSpace(names, particular, basis, len(rows), rank, rank_aug)
+    return AffineSpace(names, particular, basis, len(rows), rank, rank_aug, prime)
 
 
 def _entries_mod(v: Any) -> list[int]:
@@ -825,7 +901,7 @@ def _rref(rows: list[list[int]], N: int, p: int) -> list[list[int]]:
 def correction_space(ansatz: CorrectionAnsatz, size: Size | None = None, *, seed: int = 0,
                      verify: Sequence[str] = ("auto",), points: int | None = None) -> CorrectionSpace:
     """Every formula Σ cⱼ Tⱼ of the ansatz that makes the claim's residual vanish on the phase space:
-    the residual of each term is sampled at random points over GF(2^61 − 1), the affine system solved,
+    the residual of each term is sampled at random points over GF(p) (:func:`solve_affine`), the affine system solved,
     the combinations that vanish on the phase space quotiented out, the coefficients reconstructed as
     rationals, and the solution (and each direction of the space) verified by ``verify`` with the
     catalog's claim.  An inconsistent sampled system certifies that the space is empty."""

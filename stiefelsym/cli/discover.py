@@ -86,7 +86,10 @@ def discover(flow: str | None, sizes: tuple[str, ...], degree: int, max_a: int, 
             raise InputError(str(exc)) from None
         ok = True
         for z in (_size(x) for x in sizes):
-            space, verdicts = lax_partner(L, f, z, degree=min(degree, 3), max_a=max_a, seed=seed, verify=methods)
+            try:
+                space, verdicts = lax_partner(L, f, z, degree=min(degree, 3), max_a=max_a, seed=seed, verify=methods)
+            except ValueError as exc:
+                raise InputError(str(exc)) from None
             click.echo(f"L = {lax} along {text}, (n, r) = ({z.n}, {z.r}): {space.certificate()}")
             click.echo(f"  A(λ) = {space.text()}" + (f"    [{', '.join(f'{m} {v}' for m, v in verdicts.items())}]"
                                                     if verdicts else ""))
@@ -97,11 +100,14 @@ def discover(flow: str | None, sizes: tuple[str, ...], degree: int, max_a: int, 
         raise SystemExit(0 if ok else 1)
     lines, ok = [f"# Conserved quantities of {text}", ""], True
     for z in (_size(x) for x in sizes):
-        d = conserved(f, z, degree, max_a=max_a, products=not no_products, seed=seed, name=text, verify=methods)
+        try:
+            d = conserved(f, z, degree, max_a=max_a, products=not no_products, seed=seed, name=text, verify=methods)
+        except ValueError as exc:
+            raise InputError(str(exc)) from None
         for line in d.lines():
             click.echo(line)
         lines += ["    " + x for x in d.lines()] + [""]
-        ok = ok and all(I.verified or any(v == "undecided" for v in I.verdicts.values()) for I in d.integrals)
+        ok = ok and d.certified and all(I.verified or any(v == "undecided" for v in I.verdicts.values()) for I in d.integrals)
         ok = ok and all(v in ("proved", "checked", "numeric", "undecided") for I in d.integrals
                         for v in I.verdicts.values())
     if report_dir is not None:

@@ -136,8 +136,8 @@ EXPECTED_EXPLANATION = (
 SECTION_TABLE_INTRO = (
     "Per section of the paper: its claims; those proved for every n and r at once (dimension-free, as "
     "printed; for a statement made at one r, every n at that r, and for one made at r = 1 and at r = n, "
-    "every n at each); those that hold as printed at every size computed (proved, or checked at random "
-    "exact points); those that fail as printed (the errata); and those with a verdict the catalog does "
+    "every n at each); those that hold as printed at every size computed (proved, checked at random "
+    "exact points, or numeric: within a floating-point error bound); those that fail as printed (the errata); and those with a verdict the catalog does "
     "not expect.")
 
 ERRATA_INTRO = (
@@ -146,9 +146,13 @@ ERRATA_INTRO = (
     "count the exactly computed value against the printed one.  Then the candidate "
     "corrections that were checked.")
 NO_POINT = "no witness point: the computed value below contradicts the printed one"
-#: the witness of a statement that something does NOT hold, found to hold identically
+#: the witness of a statement that something does NOT hold, found to hold identically (exact) or at every
+#: random point drawn (a randomized method: a nonzero residual would have shown but with probability p)
 NOT_ZERO_WITNESS = ("no witness point: the statement says this is not identically zero, and exact "
                     "computation finds it identically zero")
+NOT_ZERO_AT_POINTS = ("no witness point: the statement says this is not identically zero, and the {method} "
+                      "method finds it zero at every random point it drew (a randomized result, with the bound p "
+                      "of its run)")
 
 
 def no_point_text(w: Result) -> str:
@@ -158,7 +162,8 @@ def no_point_text(w: Result) -> str:
     if any(ch.status in DIMENSION_STATUSES for ch in w.checks):
         return NO_POINT
     if w.kind == "not":
-        return NOT_ZERO_WITNESS + (f": {w.certificate}" if w.certificate else "")
+        words = NOT_ZERO_WITNESS if w.method == "exact" else NOT_ZERO_AT_POINTS.format(method=w.method)
+        return words + (f": {w.certificate}" if w.certificate else "")
     return "no witness point recorded"
 
 #: the paper's operator names, expanded for Markdown viewers that do not know them
@@ -707,7 +712,7 @@ def render_markdown(results: Sequence[Result], meta: dict[str, Any] | None = Non
     if errata:
         out += ["Fails as printed:", ""]
         out += [f"- `{c.id}` {_md_escape(labels(c.paper))}"
-                + ("; correction: " + _md_escape(unicode_words(next(iter(c.variants)))) if c.variants else "")
+                + _md_escape(_listed_correction(c, unicode_words))
                 for c in errata]
         out += [""]
 
@@ -1130,17 +1135,64 @@ def headline(claims: list[ClaimResults], paper: bool = True) -> tuple[str, list[
     nowhere = [c.id for c in undecided if not any(r.verdict in PASSING for r in c.printed)]
     named = ", ".join(open_[:5]) + (f" and {len(open_) - 5} more" if len(open_) > 5 else "")
     unnamed = ", ".join(nowhere[:5]) + (f" and {len(nowhere) - 5} more" if len(nowhere) > 5 else "")
-    whose = f"the paper's {len(claims)} checkable statements" if paper else f"the {len(claims)} statements verified"
-    text = (f"Of {whose}, {holds} hold as printed at "
+    whose = (f"the paper's {len(claims)} checkable statements" if paper else
+             f"the {len(claims)} {'statement' if len(claims) == 1 else 'statements'} verified")
+    text = (f"Of {whose}, {holds} {'holds' if holds == 1 else 'hold'} as printed at "
             f"every size computed ({at_once}), "
             + (f"{len(open_)} {'holds' if len(open_) == 1 else 'hold'} where decided but "
                f"{'was' if len(open_) == 1 else 'were'} left undecided at some size ({named}), " if open_ else "")
             + (f"{len(nowhere)} {'was' if len(nowhere) == 1 else 'were'} decided at no size ({unnamed}), "
                if nowhere else "")
-            + f"and {len(errata)} "
-            f"fail as printed: each is an erratum with an exact witness, and where a correction is registered "
-            f"it was verified ({len(corrected_free)} corrections proved for every n and r).")
+            + f"and {len(errata)} {'fails' if len(errata) == 1 else 'fail'} as printed{_errata_words(errata)} "
+            f"({len(corrected_free)} {'correction' if len(corrected_free) == 1 else 'corrections'} proved for "
+            f"every n and r).")
     return text, errata
+
+
+#: how a statement failed, in the headline's words (see :func:`_failure_kind`)
+FAILURE_KINDS = {"witness": "with an exact witness",
+                 "identically": "said not to vanish and proved to vanish identically",
+                 "points": "said not to vanish and found zero at every random point drawn",
+                 "bare": "without a witness point"}
+
+
+def _failure_kind(c: ClaimResults) -> str:
+    """``witness``: some failing run has an exact witness (a point with its nonzero residual, or a rank or
+    count computed exactly against the printed one); a statement that something does not vanish was
+    refuted by the exact method (``identically``) or only at random points (``points``); else ``bare``."""
+    if any(witness_lines(r.witness) or any(ch.status in DIMENSION_STATUSES for ch in r.checks)
+           for r in c.failures):
+        return "witness"
+    if c.failures[0].kind == "not":
+        return "identically" if any(r.method == "exact" for r in c.failures) else "points"
+    return "bare"
+
+
+def _errata_words(errata: list[ClaimResults]) -> str:
+    """What the headline says of the failures: how many have an exact witness, and how many of those with a
+    registered correction have one verified (each said only as far as the records show it)."""
+    if not errata:
+        return ""
+    kinds = Counter(_failure_kind(c) for c in errata)
+    corrected = [c for c in errata if c.variants]
+    verified = sum(bool(_erratum_facts(c)["verified"]) for c in corrected)
+    each = "it is" if len(errata) == 1 else "each is"
+    words = (f": {each} an erratum with an exact witness" if set(kinds) == {"witness"} else
+             ": " + ", ".join(f"{kinds[k]} {FAILURE_KINDS[k]}" for k in FAILURE_KINDS if kinds[k]))
+    if corrected and verified == len(corrected):
+        words += ", and where a correction is registered it was verified"
+    elif corrected:
+        words += (f"; of the {len(corrected)} with a registered correction, {verified} "
+                  f"{'has' if verified == 1 else 'have'} one verified at every size computed")
+    return words
+
+
+def _listed_correction(c: ClaimResults, words: Callable[[str], str]) -> str:
+    """The correction named beside an erratum in the list after the headline: a verified one only."""
+    verified = _erratum_facts(c)["verified"]
+    if verified:
+        return "; correction: " + words(verified[0])
+    return "; no registered correction verified" if c.variants else ""
 
 
 def render_latex(results: Sequence[Result], meta: dict[str, Any] | None = None, mutation: Any = None,
@@ -1169,7 +1221,7 @@ def render_latex(results: Sequence[Result], meta: dict[str, Any] | None = None, 
     if errata:
         out += [tex_escape("Fails as printed:")]
         out += _tex_items([r"\texttt{" + tex_escape(c.id) + "} " + tex_labels(c.paper)
-                           + ("; correction: " + tex_words(next(iter(c.variants))) if c.variants else "")
+                           + _listed_correction(c, tex_words)
                            for c in errata])
     if not detail:
         out += [tex_escape("Every run, with the reductions its proof used (the chart of T*V, an equivariance, "

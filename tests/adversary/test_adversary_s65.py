@@ -1,0 +1,88 @@
+"""Stop 65: the review's files (tests/adversary/s65/review) and the user trial's statements (s65/user).  See
+tests/adversary/README.md, Stop 65."""
+import pytest
+
+from adversary_cli import cli, HERE
+
+REVIEW = HERE / "s65" / "review"
+
+
+# -- the reports' headline and errata say only what the records show ------------------------------------------------
+
+def test_a_rejected_correction_is_not_called_verified_nor_listed_as_the_correction(tmp_path):
+    """The headline said of every run "each is an erratum with an exact witness, and where a correction is
+    registered it was verified", and the list after it named the first registered correction, also where that
+    correction was rejected at every size (XᵀX = 3I_r for XᵀX = 2I_r).  A `not` statement refuted by a
+    randomized method was said to be found zero "by exact computation"."""
+    out = tmp_path / "rep"
+    run = cli("verify", "--claims", str(REVIEW / "headline.py"), "--method", "modular", "--jobs", "1",
+              "--report-dir", str(out))
+    assert run.returncode == 1, run.stderr[-2000:]
+    for name in ("verification.md", "verification.tex"):
+        text = (out / name).read_text()
+        head = text[:text.index("Fails as printed")]
+        assert "where a correction is registered it was verified" not in head, name
+        assert "each is an erratum with an exact witness" not in head, name
+        assert "1 with an exact witness" in head and "1 said not to vanish and found zero at every random point" \
+            in head, name
+        assert "of the 1 with a registered correction, 0 have one verified" in head, name
+        listed = text[text.index("Fails as printed"):][:600]
+        assert "correction: X" not in listed and "no registered correction verified" in listed, name
+        assert "exact computation finds it identically zero" not in text, name
+        assert "the modular method finds it zero at every random point it drew" in text, name
+    assert "Of the 2 statements verified, 0 hold as printed" in (out / "verification.md").read_text()
+
+
+def test_one_statement_is_one_statement(tmp_path):
+    out = tmp_path / "rep"
+    run = cli("verify", "--claims", str(REVIEW / "headline.py"), "hl-false-corr", "--method", "modular",
+              "--jobs", "1", "--report-dir", str(out))
+    assert run.returncode == 1, run.stderr[-2000:]
+    md = (out / "verification.md").read_text()
+    assert "Of the 1 statement verified, 0 hold as printed" in md and "and 1 fails as printed: it is an erratum" in md
+
+
+# -- discover: a constant of the flow that is 0, or has no inverse, modulo the search's prime -----------------------
+
+@pytest.mark.parametrize("target", [
+    ("disc_p.py:flow_const_p", "--degree", "2"),      # s.q(1, 2^61 - 1): no inverse mod 2^61 - 1
+    ("disc_p.py:flow_sum_p", "--degree", "2"),        # a division by 1 + (2^61 - 2)
+    ("hamiltonian:{}disc_p.py:H_const_p", "--degree", "2"),
+])
+def test_discover_goes_on_to_another_prime_where_a_constant_has_no_value(target):
+    """The search modulo the fixed prime 2^61 - 1 ended in a traceback (ConstantDegenerate, ZeroDivisionError) when
+    a constant of the flow had no value there; it now goes on to the next prime and says so."""
+    first = target[0].replace("{}", f"{REVIEW}/") if "{}" in target[0] else f"{REVIEW}/{target[0]}"
+    run = cli("discover", first, *target[1:])
+    assert "Traceback" not in run.stderr and run.returncode == 0, run.stderr[-2000:]
+    assert "note: modulo p = 2^61 - 1 the flow cannot be evaluated" in run.stdout
+    assert "points of GF(2^62 - 57)" in run.stdout
+    assert "I1 = tr(PPᵀ)    [auto proved" in run.stdout or "tr(PPᵀ)    [auto proved" in run.stdout
+
+
+def test_discover_does_not_state_the_dimension_of_a_flow_that_vanishes_modulo_its_prime():
+    """Ẋ = cP, Ṗ = −cXPᵀP with c = 1 + (2^61 − 2): the flow is 0 modulo 2^61 − 1, where every monomial looks conserved,
+    and discover printed "conserved: dim 5 ... independent integrals modulo constants: 4" (three of them refuted by
+    their verdicts).  A space that verification refutes is now not the answer: the search goes on to the next prime,
+    where only tr(PPᵀ) is conserved (numpy: the others' derivatives are −0.87, 1.9, 0.65 at a point of T*V(4,2))."""
+    run = cli("discover", f"{REVIEW}/disc_p.py:flow_mul_p", "--degree", "2")
+    assert run.returncode == 0, run.stderr[-2000:]
+    assert "note: modulo p = 2^61 - 1 the space found is not the flow's: I1, I2, I3 fail verification" in run.stdout
+    assert "conserved: dim 2; constant on T*V: dim 1; independent integrals modulo constants: 1" in run.stdout
+    assert "conserved: dim 5" not in run.stdout
+
+
+def test_a_discovery_refuted_at_every_prime_is_not_certified_and_exits_1(monkeypatch):
+    """Where every prime gives a space that verification refutes, the last one is printed as NOT the flow's and the
+    command's exit status is 1 (here: the primes are all 2^61 - 1)."""
+    from stiefelsym.analyses import discover as d
+    from stiefelsym.claims import Size
+    from stiefelsym.claims import load_claims_file  # noqa: F401  (the engine's modules, as the CLI has them)
+
+    def flow(s):
+        c = s.q(1, 1) + s.q(2**61 - 2, 1)
+        return {"X": s.P * c, "P": -(s.X @ s.P.T @ s.P) * c}
+    monkeypatch.setattr(d, "PRIMES", (d.PRIME,))
+    found = d.conserved(flow, Size(3, 2), 2, name="c-flow", verify=("modular",))
+    assert not found.certified
+    assert any("(NOT the flow's" in line for line in found.lines())
