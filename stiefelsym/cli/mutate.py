@@ -357,6 +357,12 @@ def _search(engine: Any, claims: Sequence[Claim], ids: Sequence[str], sizes: Seq
         if fmt == "text":
             click.echo(f"{c.id}: {len(found)} of {tried[0]} candidates pass every method ({', '.join(methods)}) "
                        f"at {where}, seed {seed}")
+            rest = [s for s in c.sizes if s not in plan_sizes]
+            if found and rest:
+                click.echo(f"{c.id}: the claim is stated at {len(rest)} more "
+                           f"{'size' if len(rest) == 1 else 'sizes'} (up to n = {max(s.n for s in rest)}); a candidate "
+                           "is a correction only where it holds at every size: register it (@f.claim.correction(...) on "
+                           "the claim's function f) and run `stiefelsym verify`, or give those sizes with --size")
     if fmt == "json":
         click.echo(json.dumps(out, indent=1))
     raise click.exceptions.Exit(EXIT_OK)

@@ -86,3 +86,13 @@ def test_a_discovery_refuted_at_every_prime_is_not_certified_and_exits_1(monkeyp
     found = d.conserved(flow, Size(3, 2), 2, name="c-flow", verify=("modular",))
     assert not found.certified
     assert any("(NOT the flow's" in line for line in found.lines())
+
+
+def test_the_correction_search_says_where_the_claim_is_stated_beyond_its_sizes():
+    """`mutate --corrections` searches at n <= 4 and printed "correction passes" for X(n−1)(n−2)(n−3)(n−4), false at
+    n = 5 where the claim is stated too, without a word about the sizes it did not search."""
+    run = cli("mutate", "--corrections", "--claims", str(REVIEW / "corr_search.py"), "r65-poly-n")
+    assert run.returncode == 0, run.stderr[-2000:]
+    assert "r65-poly-n: 1 of" in run.stdout
+    assert "the claim is stated at 5 more sizes (up to n = 5); a candidate is a correction only where it holds at " \
+           "every size" in run.stdout
