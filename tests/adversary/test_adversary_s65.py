@@ -96,3 +96,19 @@ def test_the_correction_search_says_where_the_claim_is_stated_beyond_its_sizes()
     assert "r65-poly-n: 1 of" in run.stdout
     assert "the claim is stated at 5 more sizes (up to n = 5); a candidate is a correction only where it holds at " \
            "every size" in run.stdout
+
+
+def test_a_flow_that_vanishes_modulo_every_prime_tried_is_not_given_a_dimension():
+    """The stop's own attempt (s65/own_primes.py): a constant divisible by each of discover.PRIMES, written as a sum
+    of two constants (no constant of the graph is divisible by a prime).  At every prime the space found is refuted
+    by verification: the last is printed as NOT the flow's, exit 1; with two of the three primes the third gives
+    the flow's space."""
+    own = HERE / "s65" / "own_primes.py"
+    run = cli("discover", f"{own}:flow_every_prime", "--degree", "2")
+    assert run.returncode == 1, run.stderr[-2000:]
+    assert "(NOT the flow's: see the note above)" in run.stdout
+    assert run.stdout.count("the space found is not the flow's") == 3
+    run = cli("discover", f"{own}:flow_two_primes", "--degree", "2")
+    assert run.returncode == 0, run.stderr[-2000:]
+    assert "conserved: dim 2; constant on T*V: dim 1; independent integrals modulo constants: 1" in run.stdout
+    assert "NOT the flow's" not in run.stdout
