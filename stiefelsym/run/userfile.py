@@ -288,6 +288,7 @@ def _claim_data(c: Claim, needed: Sequence[tuple[int, int]] = ()) -> dict:
         "line": line if type(line) is int else 0, "name": getattr(c.func, "__name__", c.id),
         "sizes": {"list": [list(p) for p in listed], "n_min": spec.n_min, "r_min": spec.r_min,
                   "r_max": spec.r_max, "n_max": spec.n_max, "r_is_n": bool(spec.r_is_n),
+                  "r_in": [v if v == "n" else int(v) for v in (getattr(spec, "r_in", ()) or ())],
                   "condition": spec.condition, "where": spec.where is not None or type(spec) is not SizeSpec or bool(getattr(spec, "r_in", ())),
                   "fields_first": type(spec) is SizeSpec, "admits": admits},
         "fails_at": fails,
@@ -876,13 +877,17 @@ def _claim(d: Any, path: str, confinement: str = "namespaces") -> Claim:
     pairs = _get(spec_d, "list", list)
     if not all(type(p) is list and len(p) == 2 and all(type(x) is int for x in p) for p in pairs):
         raise WireError("a size that is not (n, r)")
+    r_in = _get(spec_d, "r_in", list, optional=True) or []
+    if any(not (v == "n" or (type(v) is int and v >= 1)) for v in r_in) or len(set(r_in)) != len(r_in):
+        raise WireError("a size statement's r_in that is not distinct values r = k >= 1 and 'n'")
     admits = _Lookup("size condition", _get(spec_d, "admits", list))
     admits.bounds_only = not _get(spec_d, "where", bool)
     spec = TabledSizes(tuple(Size(n, r) for n, r in pairs), n_min=_get(spec_d, "n_min", int),
                        r_min=_get(spec_d, "r_min", int), r_max=_opt_int(spec_d, "r_max"),
                        where=admits,
                        condition=_get(spec_d, "condition", str), n_max=_opt_int(spec_d, "n_max"),
-                       r_is_n=_get(spec_d, "r_is_n", bool), fields_first=_get(spec_d, "fields_first", bool))
+                       r_is_n=_get(spec_d, "r_is_n", bool), r_in=tuple(r_in),
+                       fields_first=_get(spec_d, "fields_first", bool))
     realization = _get(d, "realization", str)
     src_path, line, name = _get(d, "path", str), _get(d, "line", int), _get(d, "name", str)
     fails = _get(d, "fails_at", list, optional=True)

@@ -112,3 +112,29 @@ def test_a_flow_that_vanishes_modulo_every_prime_tried_is_not_given_a_dimension(
     assert run.returncode == 0, run.stderr[-2000:]
     assert "conserved: dim 2; constant on T*V: dim 1; independent integrals modulo constants: 1" in run.stdout
     assert "NOT the flow's" not in run.stdout
+
+
+# -- r_in from a claims file -------------------------------------------------------------------------------------------
+
+USER = HERE / "s65" / "user"
+
+
+def test_r_in_reaches_the_dimension_free_method_from_a_claims_file():
+    """admissible(r_in=(1, "n")) was lost on the way from the claims file's child (the size statement was rebuilt
+    without it): free left the true statements at r = 1 and r = n undecided, proved in-process."""
+    run = cli("verify", "--claims", str(USER / "probes" / "r_in_probe.py"), "--method", "free")
+    assert run.returncode == 0, run.stderr[-2000:]
+    assert "s65p-rin-1-n all n, r free: proved for every n at r = 1 and at r = n" in run.stdout
+    assert "s65p-rin-n all n, r free: proved for every n at r = n" in run.stdout
+
+
+def test_r_in_that_the_statements_sizes_do_not_keep_proves_nothing():
+    """The stop's own attempt (s65/own_r_in.py): r_in declared by a SizeSpec subclass that admits every size, by a
+    statement that lists sizes outside the declared r, and a statement false at one declared r.  free proves none;
+    exact refutes each where it is false."""
+    run = cli("verify", "--claims", str(HERE / "s65" / "own_r_in.py"), "--method", "free")
+    assert "proved" not in run.stdout.split("summary:")[0], run.stdout
+    run = cli("verify", "--claims", str(HERE / "s65" / "own_r_in.py"), "--method", "exact")
+    assert "own-rin-subclass (3,2) exact: fails" in run.stdout
+    assert "own-rin-listed (3,2) exact: fails" in run.stdout
+    assert "own-rin-false (3,1) exact: fails" in run.stdout
