@@ -91,7 +91,33 @@ def _letters(scene: Any) -> dict[str, Any]:
     for key, v in params.items():              # the claim's own scalars (ν, ...), but not a point's parameters
         if key.startswith("scalar:"):
             out[key.split(":", 1)[1]] = _fraction(v)
+    for key, M in cache.items():               # the claim's own matrices (s.generic, s.general_params), by name
+        if isinstance(key, str) and key.startswith(OWN_MATRICES):
+            name = key.split(":", 1)[1].split("[", 1)[0]
+            if name not in out:
+                try:
+                    out[name] = _matrix(M)
+                except (AttributeError, TypeError, ValueError):
+                    continue
     return out
+
+
+#: the prefixes of the parameters of a claim's own matrices and operators (stiefelsym.scene)
+OWN_MATRICES = ("generic:", "params:")
+OWN_PARAMETERS = OWN_MATRICES + ("operator:",)
+
+
+def _complete(scene: Any, letters: dict[str, Any]) -> bool:
+    """Every parameter of the claim's own (its matrices, operators) is stated by a letter of the witness: a
+    matrix by its name (an operator's coefficients never are), so that the witness can be checked by hand."""
+    shown = set()
+    for key in getattr(scene, "_cache", {}):
+        if isinstance(key, str) and key.startswith(OWN_MATRICES):
+            name = key.split(":", 1)[1].split("[", 1)[0]
+            if name in letters:
+                shown.add(key.split("[", 1)[0] + "[")
+    return all(not key.startswith(OWN_PARAMETERS) or key.split("[", 1)[0] + "[" in shown
+               for key in scene._point_values())
 
 
 def _generic(letters: dict[str, Any]) -> bool:
@@ -169,7 +195,7 @@ def small_witness(claim: Claim, n: int, r: int, func: Callable | None = None,
             value = _fraction(val)
             h = max([_height(value)] + [_height(q) for v in letters.values() for q in _entries(v)])
             found.append((h, {"bound": bound, "trial": t, "component": comp, "check": name, "entry": pos,
-                              "value": str(value), "letters": letters,
+                              "value": str(value), "letters": letters, "complete": _complete(scene, letters),
                               "params": {k: str(_fraction(v)) for k, v in scene._point_values().items()},
                               "on T*V": _on_tstar_v(letters)}))
             if len(found) >= KEEP:

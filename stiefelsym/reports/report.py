@@ -913,7 +913,10 @@ def small_witness_of(c: ClaimResults) -> tuple[Result, dict[str, Any]] | None:
     """The failing run that carries a small witness (see :mod:`stiefelsym.methods.witness`), and that witness."""
     for r in c.failures:
         if isinstance(r.witness, dict) and isinstance(r.witness.get("small"), dict):
-            return r, r.witness["small"]
+            w = r.witness["small"]
+            if w.get("kind") != "count" and (w.get("complete") is False or not w.get("letters")):
+                continue    # a point that does not state every parameter the residual reads: not for a hand check
+            return r, w
     return None
 
 
@@ -926,7 +929,7 @@ def _point_witness(w: dict[str, Any]) -> tuple[list[str], list[str], str]:
     from stiefelsym.methods.witness import decoded, matrix_tex, q_tex
     w = decoded(w)
     on = [k for k, ok in w.get("on T*V", {}).items() if ok]
-    parts = [_tex_letter(f"{name} = {matrix_tex(v) if isinstance(v, list) else q_tex(v)}")
+    parts = [_tex_letter(f"{_own_name_tex(name)} = {matrix_tex(v) if isinstance(v, list) else q_tex(v)}")
              for name, v in w["letters"].items()]
     return on, parts, q_tex(Fraction(w["value"]))
 
@@ -992,6 +995,15 @@ def _entry_words(entry: str) -> str:
 def _has_script(c: ClaimResults) -> bool:
     from stiefelsym.methods.witness_scripts import template
     return template(c.id) is not None
+
+
+def _own_name_tex(name: str) -> str:
+    """A claim's own name of a parameter (letters, digits, underscores) in math: upright when longer than one
+    letter, its underscores as such (h_2 is not h with the subscript 2 of the engine's notation, and a_b_c is no
+    double subscript)."""
+    if len(name) > 1 and re.fullmatch(r"[A-Za-z][A-Za-z0-9_]*", name):
+        return r"\mathrm{" + name.replace("_", r"\_") + "}"
+    return name
 
 
 def _tex_letter(part: str) -> str:

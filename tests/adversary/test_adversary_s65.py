@@ -138,3 +138,31 @@ def test_r_in_that_the_statements_sizes_do_not_keep_proves_nothing():
     assert "own-rin-subclass (3,2) exact: fails" in run.stdout
     assert "own-rin-listed (3,2) exact: fails" in run.stdout
     assert "own-rin-false (3,1) exact: fails" in run.stdout
+
+
+# -- the witness to check by hand states every parameter it needs ----------------------------------------------------
+
+def test_a_hand_witness_states_the_claims_own_matrices_and_the_latex_report_compiles(tmp_path):
+    """A residual that reads only the claim's own s.generic matrix had an empty hand witness ($$$$ in the Markdown, a
+    LaTeX report pdflatex stopped on); with engine letters too, the claim's own matrices were left out (the trial's
+    (LAMBDA) twin showed A, ξ, ζ, not h, η, θ).  The witness now states them by name (a name longer than one letter
+    upright), and a point that cannot state a parameter (an operator's coefficients) is not offered for a hand
+    check."""
+    import shutil
+    import subprocess
+    out = tmp_path / "rep"
+    run = cli("verify", "--claims", str(USER / "probes" / "tex_witness_probe.py"), "--report-dir", str(out))
+    assert run.returncode == 0, run.stderr[-2000:]
+    md = (out / "verification.md").read_text()
+    assert "$$$$" not in md and "$$G = \\begin{pmatrix}" in md
+    out2 = tmp_path / "rep2"
+    run = cli("verify", "--claims", str(USER / "claims_s65.py"), "s65-lambda-1-minus-1-twin", "--method", "exact",
+              "--report-dir", str(out2))
+    md = (out2 / "verification.md").read_text()
+    hand = md[md.index("**A witness to check by hand**"):][:1200]
+    assert "h = \\begin{pmatrix}" in hand and "\\mathrm{et} = " in hand and "\\mathrm{th} = " in hand
+    if shutil.which("pdflatex"):
+        for d in (out, out2):
+            tex = subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error", "verification.tex"],
+                                 cwd=d, capture_output=True, text=True, timeout=300)
+            assert tex.returncode == 0, tex.stdout[-2000:]
