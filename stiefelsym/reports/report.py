@@ -997,10 +997,17 @@ def _has_script(c: ClaimResults) -> bool:
     return template(c.id) is not None
 
 
+#: a claim's own parameter named by a Greek letter's name is written as that letter
+GREEK_NAMES = frozenset("alpha beta gamma delta epsilon zeta eta theta iota kappa lambda mu nu xi pi rho sigma tau "
+                        "upsilon phi chi psi omega Gamma Delta Theta Lambda Xi Pi Sigma Upsilon Phi Psi Omega".split())
+
+
 def _own_name_tex(name: str) -> str:
     """A claim's own name of a parameter (letters, digits, underscores) in math: upright when longer than one
     letter, its underscores as such (h_2 is not h with the subscript 2 of the engine's notation, and a_b_c is no
     double subscript)."""
+    if name in GREEK_NAMES:
+        return "\\" + name
     if len(name) > 1 and re.fullmatch(r"[A-Za-z][A-Za-z0-9_]*", name):
         return r"\mathrm{" + name.replace("_", r"\_") + "}"
     return name
