@@ -166,3 +166,24 @@ def test_a_hand_witness_states_the_claims_own_matrices_and_the_latex_report_comp
             tex = subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error", "verification.tex"],
                                  cwd=d, capture_output=True, text=True, timeout=300)
             assert tex.returncode == 0, tex.stdout[-2000:]
+
+
+# -- the user trial's statements ---------------------------------------------------------------------------------------
+
+def test_the_user_trials_statements_hold_and_their_twins_do_not():
+    """Seventeen statements of §2, §3, §5–§8 and both appendices that the catalog does not hold under their own words
+    (from proofs, remarks and intermediate steps), each with a false twin (numpy: s65/user/numpy_check.py), under
+    modular at (3,2) and (4,2) where each is stated: every statement proved or checked, every twin fails, except the
+    ranks printed too high, which random points never refute (inconclusive, never a pass)."""
+    import json
+    run = cli("verify", "--claims", str(USER / "claims_s65.py"), "--method", "modular", "--size", "3,2", "--size",
+              "4,2", "--no-report", "--format", "json", "--jobs", "2")
+    assert run.returncode in (0, 1), run.stderr[-2000:]
+    results = json.loads(run.stdout)["results"]
+    held = [r for r in results if not r["claim"].endswith("-twin")]
+    twins = [r for r in results if r["claim"].endswith("-twin")]
+    assert len(held) >= 25 and len(twins) >= 20
+    assert all(r["verdict"] in ("proved", "checked") for r in held), [(r["claim"], r["verdict"]) for r in held]
+    for r in twins:
+        allowed = ("fails", "inconclusive") if r["kind"] == "dim" else ("fails",)
+        assert r["verdict"] in allowed, (r["claim"], r["n"], r["r"], r["verdict"])
