@@ -69,10 +69,17 @@ def _committed():
     return sorted((REPORTS / "witnesses").glob("*.py")) if (REPORTS / "witnesses").is_dir() else []
 
 
-@pytest.mark.parametrize("script", _committed(), ids=lambda p: p.stem)
+#: the committed scripts the default test run takes (every WITNESS_SAMPLE-th, in name order); every one of them
+#: runs with the tests marked slow (each is a sympy computation of 2-4 s in an interpreter of its own)
+WITNESS_SAMPLE = 4
+
+
+@pytest.mark.parametrize("script", [pytest.param(p, marks=() if k % WITNESS_SAMPLE == 0 else pytest.mark.slow)
+                                    for k, p in enumerate(_committed())], ids=lambda p: p.stem)
 def test_every_committed_witness_script_runs_alone_and_prints_what_the_report_states(script, tmp_path):
     """Each script runs from an empty folder with python -I (no stiefelsym on its path), prints
-    exactly its committed output, and the value it confirms is the one in results.json."""
+    exactly its committed output, and the value it confirms is the one in results.json (a sample of them in the
+    default run, all with the tests marked slow)."""
     out = subprocess.run([sys.executable, "-I", str(script)], cwd=tmp_path, capture_output=True, text=True,
                          timeout=120)
     assert out.returncode == 0, out.stdout + out.stderr
