@@ -14,6 +14,7 @@ parsed contents are passed as ``mutation=``.
 from __future__ import annotations
 
 import re
+import unicodedata
 from fractions import Fraction
 import xml.etree.ElementTree as ET
 from collections import Counter
@@ -137,8 +138,8 @@ SECTION_TABLE_INTRO = (
     "Per section of the paper: its claims; those proved for every n and r at once (dimension-free, as "
     "printed; for a statement made at one r, every n at that r, and for one made at r = 1 and at r = n, "
     "every n at each); those that hold as printed at every size computed (proved, checked at random "
-    "exact points, or numeric: within a floating-point error bound); those that fail as printed (the errata); and those with a verdict the catalog does "
-    "not expect.")
+    "exact points, or numeric: within a floating-point error bound); those that fail as printed (the "
+    "errata); and those with a verdict the catalog does not expect.")
 
 ERRATA_INTRO = (
     "Statements that fail as printed.  Each comes with a witness, reproducible with the rerun "
@@ -929,7 +930,7 @@ def _point_witness(w: dict[str, Any]) -> tuple[list[str], list[str], str]:
     from stiefelsym.methods.witness import decoded, matrix_tex, q_tex
     w = decoded(w)
     on = [k for k, ok in w.get("on T*V", {}).items() if ok]
-    parts = [_tex_letter(f"{_own_name_tex(name)} = {matrix_tex(v) if isinstance(v, list) else q_tex(v)}")
+    parts = [_tex_letter(f"{_own_name_tex(name, w['letters'])} = {matrix_tex(v) if isinstance(v, list) else q_tex(v)}")
              for name, v in w["letters"].items()]
     return on, parts, q_tex(Fraction(w["value"]))
 
@@ -1002,12 +1003,15 @@ GREEK_NAMES = frozenset("alpha beta gamma delta epsilon zeta eta theta iota kapp
                         "upsilon phi chi psi omega Gamma Delta Theta Lambda Xi Pi Sigma Upsilon Phi Psi Omega".split())
 
 
-def _own_name_tex(name: str) -> str:
-    """A claim's own name of a parameter (letters, digits, underscores) in math: upright when longer than one
-    letter, its underscores as such (h_2 is not h with the subscript 2 of the engine's notation, and a_b_c is no
-    double subscript)."""
+def _own_name_tex(name: str, letters: dict[str, Any]) -> str:
+    """A claim's own name of a parameter (letters, digits, underscores) in math: the Greek letter it names
+    unless the witness has that letter of the engine's (``letters``: the witness's names), else upright when
+    longer than one letter, its underscores as such (h_2 is not h with the subscript 2 of the engine's notation,
+    and a_b_c is no double subscript)."""
     if name in GREEK_NAMES:
-        return "\\" + name
+        case = "CAPITAL" if name[0].isupper() else "SMALL"
+        if unicodedata.lookup(f"GREEK {case} LETTER {name.upper().replace('LAMBDA', 'LAMDA')}") not in letters:
+            return "\\" + name
     if len(name) > 1 and re.fullmatch(r"[A-Za-z][A-Za-z0-9_]*", name):
         return r"\mathrm{" + name.replace("_", r"\_") + "}"
     return name

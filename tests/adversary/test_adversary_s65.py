@@ -187,3 +187,14 @@ def test_the_user_trials_statements_hold_and_their_twins_do_not():
     for r in twins:
         allowed = ("fails", "inconclusive") if r["kind"] == "dim" else ("fails",)
         assert r["verdict"] in allowed, (r["claim"], r["n"], r["r"], r["verdict"])
+
+
+def test_a_claims_own_name_in_a_witness_is_never_taken_for_an_engine_letter():
+    """A name longer than one letter is upright (et is not e·t, a_b has no subscript); the name of a Greek letter is
+    that letter unless the witness has the engine's letter of that name (a claim's own eta beside the engine's η)."""
+    from stiefelsym.reports.report import GREEK_NAMES, _own_name_tex
+    assert _own_name_tex("nu", {}) == r"\nu" and _own_name_tex("Lambda", {}) == r"\Lambda"
+    assert _own_name_tex("eta", {"η": 1}) == r"\mathrm{eta}" and _own_name_tex("lambda", {"λ": 1}) == r"\mathrm{lambda}"
+    assert _own_name_tex("et", {}) == r"\mathrm{et}" and _own_name_tex("a_b_c", {}) == r"\mathrm{a\_b\_c}"
+    assert _own_name_tex("G", {}) == "G"
+    assert all(_own_name_tex(name, {}) == "\\" + name for name in GREEK_NAMES)
