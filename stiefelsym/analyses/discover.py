@@ -184,15 +184,11 @@ class Discovery:
     points: int
     seed: int
     prime: int = PRIME
-    #: what went wrong at the primes tried before (or at this one, when every prime was tried): the dimensions
-    #: are the flow's only where the last sentence is not about this prime
+    #: what went wrong at the primes tried before (and at this one, when every prime was tried)
     caveats: list[str] = field(default_factory=list)
-
-    @property
-    def certified(self) -> bool:
-        """The space found is the flow's as far as verification can tell: every element was reconstructed and
-        none was refuted (the caveats, if any, are about other primes)."""
-        return not any(c.startswith(f"modulo p = {_prime_text(self.prime)} ") for c in self.caveats)
+    #: the space found is the flow's as far as verification can tell: every element was reconstructed and none
+    #: was refuted (False: every prime was tried, and this is the last space found)
+    certified: bool = True
 
     def lines(self) -> list[str]:
         n, r = self.size.n, self.size.r
@@ -303,7 +299,8 @@ def conserved(flow: Callable[[Any], Any], size: Size, degree: int = 4, *, max_a:
             + (f"{lost} of its {len(kept)} elements have no rational coefficients of small height" if lost else "")
             + " (a constant of the flow may be divisible by p)")
     if last is not None:
-        return last     # every prime tried: the last space found, with what is wrong with it (not certified)
+        last.certified = False      # every prime tried: the last space found, with what is wrong with it
+        return last
     raise ValueError("the flow cannot be evaluated modulo any of the primes "
                      + ", ".join(_prime_text(p) for p in PRIMES) + ": " + "; ".join(caveats))
 

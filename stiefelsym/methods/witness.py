@@ -89,7 +89,7 @@ def _letters(scene: Any) -> dict[str, Any]:
         out["A"] = [[_fraction(params[f"a_{i + 1}"]) if i == j else Fraction(0) for j in range(n)]
                     for i in range(n)]
     for key, v in params.items():              # the claim's own scalars (ν, ...), but not a point's parameters
-        if key.startswith("scalar:"):
+        if key.startswith("scalar:") and key.split(":", 1)[1] not in out:
             out[key.split(":", 1)[1]] = _fraction(v)
     for key, M in cache.items():               # the claim's own matrices (s.generic, s.general_params), by name
         if isinstance(key, str) and key.startswith(OWN_MATRICES):
@@ -102,22 +102,37 @@ def _letters(scene: Any) -> dict[str, Any]:
     return out
 
 
-#: the prefixes of the parameters of a claim's own matrices and operators (stiefelsym.scene)
+#: the prefixes of the parameters of a claim's own matrices, scalars and operators (stiefelsym.scene)
 OWN_MATRICES = ("generic:", "params:")
-OWN_PARAMETERS = OWN_MATRICES + ("operator:",)
+OWN_PARAMETERS = OWN_MATRICES + ("scalar:", "operator:")
 
 
 def _complete(scene: Any, letters: dict[str, Any]) -> bool:
-    """Every parameter of the claim's own (its matrices, operators) is stated by a letter of the witness: a
-    matrix by its name (an operator's coefficients never are), so that the witness can be checked by hand."""
-    shown = set()
-    for key in getattr(scene, "_cache", {}):
-        if isinstance(key, str) and key.startswith(OWN_MATRICES):
-            name = key.split(":", 1)[1].split("[", 1)[0]
-            if name in letters:
-                shown.add(key.split("[", 1)[0] + "[")
-    return all(not key.startswith(OWN_PARAMETERS) or key.split("[", 1)[0] + "[" in shown
-               for key in scene._point_values())
+    """Every parameter of the claim's own is stated by the witness: the letter of its name has its value (a
+    name the engine's letters already take, X say, is not the claim's matrix; an operator's coefficients are
+    never stated), so that the witness can be checked by hand."""
+    cache = getattr(scene, "_cache", {})
+    seen: dict[str, bool] = {}
+    for key, v in scene._point_values().items():
+        if not key.startswith(OWN_PARAMETERS):
+            continue
+        if key.startswith("operator:"):
+            return False
+        if key.startswith("scalar:"):
+            if letters.get(key.split(":", 1)[1]) != _fraction(v):
+                return False
+            continue
+        stem = key.split("[", 1)[0] + "["
+        if stem not in seen:
+            name = stem.split(":", 1)[1][:-1]
+            mats = [M for k, M in cache.items() if isinstance(k, str) and k.startswith(stem)]
+            try:
+                seen[stem] = bool(mats) and letters.get(name) == _matrix(mats[0])
+            except (AttributeError, TypeError, ValueError):
+                seen[stem] = False
+        if not seen[stem]:
+            return False
+    return True
 
 
 def _generic(letters: dict[str, Any]) -> bool:

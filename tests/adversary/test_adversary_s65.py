@@ -198,3 +198,16 @@ def test_a_claims_own_name_in_a_witness_is_never_taken_for_an_engine_letter():
     assert _own_name_tex("et", {}) == r"\mathrm{et}" and _own_name_tex("a_b_c", {}) == r"\mathrm{a\_b\_c}"
     assert _own_name_tex("G", {}) == "G"
     assert all(_own_name_tex(name, {}) == "\\" + name for name in GREEK_NAMES)
+
+
+def test_a_claims_own_parameter_named_like_an_engine_letter_is_no_hand_witness(tmp_path):
+    """The stop's own attempt (s65/own_witness_names.py): s.generic("X", ...) beside the engine's X, and s.scalar("X").
+    The witness showed the engine's X alone and was offered for a hand check, though the residual reads the claim's
+    matrix; a scalar named X replaced the engine's X among the letters.  A parameter of the claim's own counts as
+    stated only where the letter of its name has its value; both claims still fail, with their witnesses."""
+    out = tmp_path / "rep"
+    run = cli("verify", "--claims", str(HERE / "s65" / "own_witness_names.py"), "--method", "exact",
+              "--report-dir", str(out))
+    assert run.returncode == 0, run.stderr[-2000:]
+    assert "fool-own-x (2,1) exact: fails" in run.stdout and "fool-own-scalar-x (2,1) exact: fails" in run.stdout
+    assert "**A witness to check by hand**" not in (out / "verification.md").read_text()
