@@ -360,3 +360,57 @@ def test_a_file_that_writes_the_progress_lines_itself_gets_its_own_verdicts(tmp_
     assert run_points(c, 3, 2, "modular", 0).verdict == "fails"
     assert run_float(c, 3, 2, 0).verdict == "fails"
     assert run_exact_isolated(c, 3, 1, 0).verdict == "proved"
+
+
+STEP_FILE = '''
+from stiefelsym import admissible, claim, twisted
+
+
+@claim("u-magnetic-skew", kind="id", sizes=admissible(n_max=3, r_in=(2,)), section="A1")
+def c(s):
+    F = twisted.magnetic_matrix(s)
+    return {"F + F^T": F + F.T}
+
+
+@claim("u-magnetic-skew-wrong", kind="id", sizes=admissible(n_max=3, r_in=(2,)), section="A1")
+def w(s):
+    F = twisted.magnetic_matrix(s)
+    return {"F - F^T": F - F.T}
+'''
+
+PROBE = '''
+import sys
+from stiefelsym.run.userfile import load_claims_isolated
+from stiefelsym.methods.fixed_size import run_exact
+before = "stiefelsym.twisted" in sys.modules
+reg = load_claims_isolated(sys.argv[1], [(3, 2)])
+loaded = "stiefelsym.twisted" in sys.modules
+verdicts = [run_exact(reg.get(cid), 3, 2, 0).verdict for cid in ("u-magnetic-skew", "u-magnetic-skew-wrong")]
+print(before, loaded, "stiefelsym.twisted" in sys.modules, *verdicts)
+'''
+
+
+def test_a_step_whose_module_this_process_has_not_imported_is_replayed(tmp_path):
+    """The verifying process imports the module of an engine step a graph names (stiefelsym.twisted) when it
+    replays the graph, not when it loads the file: a fresh interpreter that never imported it verifies the
+    claim, and its corrupted twin fails."""
+    f = tmp_path / "steps.py"
+    f.write_text(STEP_FILE)
+    out = subprocess.run([sys.executable, "-c", PROBE, str(f)], capture_output=True, text=True, timeout=300)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.split() == ["False", "False", "True", "proved", "fails"]
+
+
+def test_a_graph_naming_what_is_not_an_engine_step_is_refused_and_imports_nothing():
+    """The replay imports a module named by a graph only when it is one of the engine's: a name outside the
+    engine (a library, the claims file's own module) is refused as before, and nothing is imported."""
+    from stiefelsym.ir.replay import ReplayError, _registered
+    from stiefelsym.ir.seal import engine_module_of
+    assert engine_module_of("stiefelsym.twisted.at_point") == "stiefelsym.twisted"
+    assert engine_module_of("os.system") is None
+    assert engine_module_of("stiefelsym.cli.main") is None
+    for name in ("os.system", "antigravity.fly", "stiefelsym.cli.main", "stiefelsym.twisted.not_a_step"):
+        before = set(sys.modules)
+        with pytest.raises(ReplayError, match="not registered"):
+            _registered(name)
+        assert not {m for m in set(sys.modules) - before if not m.startswith("stiefelsym.twisted")}

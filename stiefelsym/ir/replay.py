@@ -27,8 +27,10 @@ sizes it is refused, as claim code that reads its sizes is.
 """
 from __future__ import annotations
 
+import importlib
 import inspect
 import operator
+import sys
 from collections import OrderedDict
 from fractions import Fraction
 from typing import Any, Callable
@@ -47,9 +49,19 @@ class ReplayError(TraceRefused):
 
 
 def _registered(qualname: str) -> Any:
-    for qual, obj in list(_NAMED.values()):
-        if qual == qualname:
-            return obj
+    """The engine object a graph names.  Its module registers it when imported: a module of the engine's not
+    imported yet in this process (the steps of stiefelsym.twisted, say) is imported first, and only an engine
+    module (:func:`stiefelsym.ir.seal.engine_module_of`) is."""
+    for attempt in range(2):
+        for qual, obj in list(_NAMED.values()):
+            if qual == qualname:
+                return obj
+        if attempt == 0:
+            from stiefelsym.ir.seal import engine_module_of
+            module = engine_module_of(qualname)
+            if module is None or module in sys.modules:
+                break
+            importlib.import_module(module)
     raise ReplayError(f"refused: an engine object that is not registered: {qualname!r}")
 
 

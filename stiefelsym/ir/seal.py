@@ -102,6 +102,18 @@ def _verdict_modules() -> list[str]:
     return names
 
 
+def engine_module_of(qualname: str) -> str | None:
+    """The engine module whose name begins ``qualname`` (``stiefelsym.twisted`` of ``stiefelsym.twisted.at_point``),
+    the longest one; None when no module of the engine's (:func:`_verdict_modules`) begins it."""
+    modules = set(_verdict_modules())
+    parts = qualname.split(".")
+    for k in range(len(parts) - 1, 1, -1):
+        name = ".".join(parts[:k])
+        if name in modules:
+            return name
+    return None
+
+
 def _code_of(v: Any) -> str:
     # only true functions are looked into (an arbitrary object's attributes may compute, import or
     # change things when they are read)

@@ -733,10 +733,6 @@ def _graph(data: Any) -> Any:
     return g
 
 
-#: whether this process imported every engine module (:func:`stiefelsym.ir.seal.import_engine`), once
-_ENGINE = [False]
-
-
 class TracedFunction:
     """A claim's function (or a correction's) as traced in the claims file's child: called by the
     engine's tracer, it replays the graph traced at the trace's size (:class:`~stiefelsym.ir.replay.GraphClaim`),
@@ -745,14 +741,9 @@ class TracedFunction:
     def __init__(self, name: str, realization: str, entries: list, path: str, line: int,
                  confinement: str = "namespaces") -> None:
         from stiefelsym.ir.replay import GraphClaim
-        from stiefelsym.ir.seal import import_engine
         from stiefelsym.run.sandbox import note
         # the engine's steps and constants the graphs name (stiefelsym.twisted.at_point, ...) are registered by
-        # their modules, which the file imported in its child: here too, whichever of them the caller imported
-        # (the command line imports them all, a Python caller of stiefelsym.verify may not have)
-        if not _ENGINE[0]:
-            import_engine()
-            _ENGINE[0] = True
+        # their modules, which the replay imports where this process has not (stiefelsym.ir.replay._registered)
         self._replay: Callable[..., Any]
         self.__name__ = self.__qualname__ = name
         self.realization, self.path, self.line = realization, path, line
