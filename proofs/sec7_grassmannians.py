@@ -140,7 +140,7 @@ def lema1_kernel_at_psi_zero(s, X, h):
                  r"\dim\ker\Lambda_1(h+v)=\dim(gl(r)\oplus gl(n-r)),\quad "
                  r"r(n-r)=\tfrac12\big(\dim gl(n)-\dim gl(r)-\dim gl(n-r)\big)=\dim G_{n,r}")
 def neumann2_kernel(s):
-    """The proof of Theorem NEUMANN2: at a generic point (X0, P0) of Ψ⁻¹(0) (so h1 = 0), the kernel of Λ1 at h + v = Θ(X0, P0) has the dimension of gl(r) ⊕ gl(n − r), so the leaf through it has dimension 2r(n − r) = 2 dim G_{n,r} (P0 = (I − XXᵀ)P: a generic point of Ψ⁻¹(0) over X; the proof's h = Ψ(X0, P0) is read as the so(n) part Φ(X0, P0) of Θ, as in Lemma LEMA1)."""
+    """The proof of Theorem NEUMANN2: at a generic point (X0, P0) of Ψ⁻¹(0) (so h1 = 0), the kernel of Λ1 at h + v = Θ(X0, P0) has the dimension of gl(r) ⊕ gl(n − r), so the leaf through it has dimension 2r(n − r) = 2 dim G_{n,r} (P0 = (I − XXᵀ)P: a generic point of Ψ⁻¹(0) over X; with h = Φ(X0, P0), the so(n) part of Θ as in Lemma LEMA1, where the proof prints h = Ψ(X0, P0): claim neumann2-h-size)."""
     n, r = s.n, s.r
     X = s.X
     P0 = horizontal(s, X, s.P)
@@ -155,6 +155,29 @@ def neumann2_kernel(s):
         "r(n-r) = (dim gl(n) - dim gl(r) - dim gl(n-r))/2": Count(2 * r * (n - r), n * n - ker,
                                                                   "twice dim G_{n,r} against the printed count"),
     }
+
+
+@claim("neumann2-h-size", paper=("NEUMANN2", "LEMA1"), kind="dim", sizes=admissible(5),
+       fails_at=lambda n, r: r < n,
+       erratum="""The proof of Theorem NEUMANN2 sets h = Psi(X_0, P_0) and v = X_0 X_0^T and works with h + v in gl(n)
+       and with the block h_1 of h.  Psi(X_0, P_0) is r x r and v is n x n, so h + v is not defined for r < n.
+       Corrected: h = Phi(X_0, P_0), the so(n) part of Theta(X_0, P_0), as in the proof of Lemma LEMA1; its block
+       h_1 = X_0^T h X_0 is Psi(X_0, P_0), which is 0 on Psi^{-1}(0), as the proof says next.  With this h the kernel of
+       Lambda_1(h + v) has the dimension of gl(r) + gl(n - r) (claim neumann2-kernel).""",
+       statement=r"h=\Psi(X_0,P_0),\ v=X_0X_0^T:\ \text{the size of }h\text{ is the size }n\text{ of }v")
+def printed_h_has_the_size_of_v(s):
+    """The h printed in the proof of Theorem NEUMANN2, Ψ(X0, P0), has the size n of v = X0X0ᵀ, to which it is added."""
+    return {"size of h = Psi(X0, P0) = size of v": Count(s.Psi.shape[0], s.n,
+                                                         "the rows of Psi(X0, P0); printed: h, added to v = X0 X0^T")}
+
+
+@printed_h_has_the_size_of_v.claim.correction("h = Phi(X_0, P_0) in place of Psi(X_0, P_0)")
+def printed_h_has_the_size_of_v_corrected(s):
+    X = s.X
+    P0 = horizontal(s, X, s.P)
+    h = P0 @ X.T - X @ P0.T
+    return {"size of h = Phi(X0, P0) = size of v": Count(h.shape[0], s.n, "the rows of Phi(X0, P0); corrected: h"),
+            "h_1 = X0^T h X0 = Psi(X0, P0) = 0": X.T @ h @ X}
 
 
 # -- the reduced equation (neum-gras) on e_1 ∧ … ∧ e_r ---------------------------------------------

@@ -255,7 +255,7 @@ def finite_difference(s, values, d):
 
 @claim("2r-integrals", paper=("2r-integrals", "LA3", "LA4"), kind="id",
        sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 3, 4: 2},
-       statement=r"|a(\lambda)\mathcal L^*_{neum}(\lambda)-w\mathbf I|=w^{2r}+w^{2r-2}a\mathcal I_2+\dots"
+       statement=r"|a(\lambda)\mathcal L^*_{neum}(\lambda)-w\mathbf I_{2r}|=w^{2r}+w^{2r-2}a\mathcal I_2+\dots"
                  r"+a^{2r-1}\mathcal I_{2r}:\ \text{no odd powers of }w,\ \deg_\lambda\mathcal I_{2l}=n-l,\ "
                  r"\text{leading coefficient of }\mathcal I_{2l}=\tbinom rl\ \text{on}\ V")
 def spectral_curve_coefficients(s):
@@ -830,6 +830,28 @@ def manakov_j2r_vanishes(s):
     for k in range(n + 1, 2 * r + 1):
         checks[f"e_{k}(L*_man(lambda))"] = e[k]
     return checks
+
+
+# -- the printed size of the spectral curve's identity matrix ---------------------------------------
+
+@claim("spectral-curve-identity-size", paper=("2r-integrals", "LA3"), kind="dim", sizes=admissible(n_max=5),
+       fails_at=lambda n, r: n != 2 * r,
+       erratum="""The spectral curve of L*_neum(lambda) is printed |a(lambda) L*_neum(lambda) - w I_n| = w^{2r} + ... .
+       The Lax matrix L*_neum(lambda) of (LA3) is 2r x 2r, so the determinant is defined only when n = 2r.
+       Corrected: I_{2r} (the degree 2r in w of the printed expansion is the size of the matrix), with which the
+       expansion holds (claim 2r-integrals).""",
+       statement=r"|a(\lambda)\mathcal L^*_{neum}(\lambda)-w\mathbf I_n|:\ \text{the size }n\text{ of }\mathbf I_n"
+                 r"\text{ is the size of }\mathcal L^*_{neum}(\lambda)")
+def printed_identity_has_the_size_of_the_dual_lax_matrix(s):
+    """The identity matrix I_n printed in the spectral curve |a(λ)𝓛*_neum(λ) − wI_n| has the size of 𝓛*_neum(λ) of (LA3)."""
+    return {"size of L*_neum = size of I_n": Count(L_dual(s).shape[0], s.n,
+                                                   "the rows of L*_neum(lambda) (LA3); printed: the size of I_n")}
+
+
+@printed_identity_has_the_size_of_the_dual_lax_matrix.claim.correction("I_{2r} in place of I_n")
+def printed_identity_has_the_size_of_the_dual_lax_matrix_corrected(s):
+    return {"size of L*_neum = size of I_{2r}": Count(L_dual(s).shape[0], 2 * s.r,
+                                                      "the rows of L*_neum(lambda) (LA3); corrected: the size of I_{2r}")}
 
 
 # -- printed sizes in the proofs of Gen_Chasles and Gen_Chasles2 -----------------------------------------

@@ -18,7 +18,7 @@ from stiefelsym.proofs.sec5_neumann import H_neumann_euclidean, H_neumann_normal
 SEED = 0
 
 FREE_PROVED = ("neumann-flows-coincide-on-psi-zero", "quartic-psi-zero-invariant", "quartic")
-NEEDS_COORDINATES = ("neum-gras", "neum-gras-sphere", "neumann2-kernel")
+NEEDS_COORDINATES = ("neum-gras", "neum-gras-sphere", "neumann2-kernel", "neumann2-h-size")
 #: (exact sizes, modular sizes) of each claim as printed
 SIZES = {
     "neumann-flows-coincide-on-psi-zero": ([(2, 1), (3, 2)], [(3, 2), (4, 2), (4, 4)]),
@@ -27,6 +27,7 @@ SIZES = {
     "neum-gras-sphere": ([(2, 1)], [(3, 2), (4, 3)]),
     "quartic": ([(2, 1), (3, 1)], [(4, 1)]),
     "neumann2-kernel": ([(2, 1), (3, 2), (3, 3)], [(4, 2), (4, 3), (5, 2), (5, 3)]),
+    "neumann2-h-size": ([(2, 2), (3, 3)], [(4, 4)]),     # the printed h = Ψ(X0, P0) has size n only when r = n
 }
 
 
@@ -129,6 +130,13 @@ def neumann2_kernel_off_psi_zero(s):
     return {"rank": Rank(x, n * n - r * r - (n - r) * (n - r))}
 
 
+def h_block_off_psi_zero(s):
+    """Corrupted (NEUMANN2, corrected h = Φ): h_1 = XᵀhX vanishes at a generic point of T*V, not only on Ψ = 0
+    (there h_1 = −Ψ)."""
+    X = s.X
+    return {"h_1": X.T @ (s.P @ X.T - X @ s.P.T) @ X}
+
+
 #: (claim, corrupted function, (size of the exact check or None, size of the modular check))
 CORRUPTIONS = [
     ("neumann-flows-coincide-on-psi-zero", flows_differ_by_minus_half_psi, ((3, 2), (3, 2))),
@@ -141,6 +149,7 @@ CORRUPTIONS = [
     ("quartic", quartic_trace_of_the_square, ((2, 1), (4, 1))),
     ("quartic-psi-zero-invariant", quartic_plus_a_non_invariant_term, ((3, 2), (4, 2))),
     ("neumann2-kernel", neumann2_kernel_off_psi_zero, ((3, 3), (4, 3))),
+    ("neumann2-h-size", h_block_off_psi_zero, ((3, 2), (4, 2))),
 ]
 
 
@@ -236,3 +245,16 @@ def test_det_is_the_determinant_by_either_expansion(m):
     cofactor = (-1) ** k * (Fraction(int(sympy.Matrix(minor).det())) if m > 1 else Fraction(1))
     assert sec7.det(_Numbers, rows) == expected + cofactor
     assert determinants._det_berkowitz(_Numbers, rows) == expected + cofactor
+
+
+def test_the_printed_h_of_the_proof_of_neumann2_is_an_erratum(catalog):
+    """The proof of Theorem NEUMANN2 prints h = Ψ(X0, P0), of size r, added to v = X0X0ᵀ of size n: it fails
+    as printed for r < n with the printed and computed numbers; the correction h = Φ(X0, P0) has size n and
+    its block h_1 = Ψ(X0, P0) vanishes on Ψ⁻¹(0), at every size."""
+    c = catalog.get("neumann2-h-size")
+    for n, r in [(3, 1), (4, 2), (5, 3)]:
+        res = run_exact(c, n, r, SEED)
+        assert res.verdict == "fails" and c.expects_failure(n, r) and "paper: " in res.certificate, res
+    assert not c.expects_failure(3, 3)
+    for n, r in [(3, 1), (4, 2), (4, 4), (5, 3)]:
+        assert run_exact(c, n, r, SEED, func=c.corrections[0].func).verdict == "proved"
