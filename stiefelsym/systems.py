@@ -55,7 +55,7 @@ import numpy as np
 
 from stiefelsym import scene as scene_module
 from stiefelsym.ir.trace import PRIMITIVES, TraceScene, primitive
-from stiefelsym.backends.matrix import Mat, _coordinates, _refused, backend, block, definite
+from stiefelsym.backends.matrix import Mat, NeedsCoordinates, _coordinates, _refused, backend, block, definite
 from stiefelsym.backends.reverse import Node, Rev, RevMat, Unsupported, gradient as rev_gradient, leaf as rev_leaf
 from stiefelsym.scene import double_point_of, HermitianComponents, ReverseScene, Scene, _LiftedScene
 
@@ -152,7 +152,11 @@ def _units(s: Scene) -> list[Mat]:
 
 class _FreeCoordinates(tuple):
     """What the dimension-free scene has for the coordinates of matrix variables: none (the steps that
-    take them solve in the free algebra or refuse)."""
+    take them solve in the free algebra or refuse).  A claim that reads one of them (``coords[0]``) needs
+    coordinates: :class:`NeedsCoordinates` (``undecided``), as every other look at coordinates."""
+
+    def __getitem__(self, index: Any) -> Any:
+        raise NeedsCoordinates("a coordinate of a matrix variable (systems.real_coordinates)")
 
 
 FREE_COORDINATES = _FreeCoordinates()

@@ -409,8 +409,37 @@ def test_a_graph_naming_what_is_not_an_engine_step_is_refused_and_imports_nothin
     assert engine_module_of("stiefelsym.twisted.at_point") == "stiefelsym.twisted"
     assert engine_module_of("os.system") is None
     assert engine_module_of("stiefelsym.cli.main") is None
+    # a module of the package's folder that is not one of the fixed list (a file that appeared on disk after the
+    # package was digested, s66/review/e2e_lazy_import.py) is never imported by a replay
+    assert engine_module_of("stiefelsym.s66_new_module.step") is None
+    assert engine_module_of("stiefelsym.backends.ball.BallField") is None
     for name in ("os.system", "antigravity.fly", "stiefelsym.cli.main", "stiefelsym.twisted.not_a_step"):
         before = set(sys.modules)
         with pytest.raises(ReplayError, match="not registered"):
             _registered(name)
         assert not {m for m in set(sys.modules) - before if not m.startswith("stiefelsym.twisted")}
+
+
+REGISTERED = """
+import sys
+import stiefelsym.ir.replay
+from stiefelsym.ir.seal import STEP_MODULES, import_engine
+from stiefelsym.ir.trace import _NAMED
+first = set(sys.modules)
+import_engine()
+for qual, _ in list(_NAMED.values()):
+    owner = max((m for m in sys.modules if qual.startswith(m + ".")), key=len)
+    if owner not in first and not any(qual.startswith(m + ".") for m in STEP_MODULES):
+        print(qual)
+print("done", len(_NAMED))
+"""
+
+
+def test_every_registered_step_is_in_a_module_the_replay_imports():
+    """Each name an engine module registers (a step, a constant) belongs to a module of the fixed list
+    STEP_MODULES or to one that the replay's own imports load: a graph that names it replays in a process that
+    imported nothing else, and the list needs no module read off the disk."""
+    out = subprocess.run([sys.executable, "-c", REGISTERED], capture_output=True, text=True, timeout=300)
+    assert out.returncode == 0, out.stderr
+    lines = out.stdout.split("\n")
+    assert lines[0].startswith("done") and int(lines[0].split()[1]) >= 27, out.stdout

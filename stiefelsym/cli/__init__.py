@@ -1186,15 +1186,20 @@ def report(results_file: Path | None, report_dir: Path | None, claims_files: tup
             raise InputError(f"{source}: refused, record of {cid!r}: its {', '.join(edits)} "
                              f"{'is' if len(edits) == 1 else 'are'} not the claim's (`stiefelsym check` re-checks "
                              "every record)")
-    for r in results:                # the flag "as expected" is the registered claim's, not the file's
+    for r in results:                # the flag "as expected" and the erratum are the registered claim's, not the file's
+        claim_of = registry.get(r.claim)
         try:
-            expected = _runner().expected_of(registry.get(r.claim), r.method, r.verdict, r.n, r.r, r.variant)[0]
+            expected, erratum = _runner().expected_of(claim_of, r.method, r.verdict, r.n, r.r, r.variant)
         except Exception:   # noqa: BLE001 - the claim's erratum sizes cannot say here (check runs it again)
             continue
         if expected != r.expected:
             raise InputError(f"{source}: refused, record of {r.claim!r} {r.size} {r.method}: it says the verdict "
                              f"{r.verdict!r} is {'' if r.expected else 'not '}the one the claim expects, and the "
                              "claim's statement says otherwise (`stiefelsym check` re-checks every record)")
+        if (r.erratum or "") != ((claim_of.erratum or "") if erratum else ""):
+            raise InputError(f"{source}: refused, record of {r.claim!r} {r.size} {r.method}: its erratum (what the "
+                             "report says is wrong in the paper) is not the one the claim declares for this verdict "
+                             "(`stiefelsym check` re-checks every record)")
     strangers = unbound_graphs(records, user) if user is not None else []
     if strangers:
         raise InputError(f"{source}: refused, {len(strangers)} record(s) of a claims file whose graph is not its claim's "

@@ -49,9 +49,10 @@ class ReplayError(TraceRefused):
 
 
 def _registered(qualname: str) -> Any:
-    """The engine object a graph names.  Its module registers it when imported: a module of the engine's not
-    imported yet in this process (the steps of stiefelsym.twisted, say) is imported first, and only an engine
-    module (:func:`stiefelsym.ir.seal.engine_module_of`) is."""
+    """The engine object a graph names.  Its module registers it when imported: a module of the engine's steps
+    not imported yet in this process (stiefelsym.twisted, say) is imported first, and only one of the fixed
+    list :data:`stiefelsym.ir.seal.STEP_MODULES` is (a module file that appeared on disk since the package was
+    digested is never imported here, whatever a graph names)."""
     for attempt in range(2):
         for qual, obj in list(_NAMED.values()):
             if qual == qualname:

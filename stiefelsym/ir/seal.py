@@ -102,14 +102,18 @@ def _verdict_modules() -> list[str]:
     return names
 
 
+#: the engine's modules that register steps and constants a graph may name (:func:`stiefelsym.ir.trace.primitive`,
+#: :func:`~stiefelsym.ir.trace.named`) and that the IR's own modules do not import: the only modules a replay
+#: imports on first need (a fixed list in the engine's code, never read off the disk or a graph; the tests check
+#: that every registered name belongs to one of them or to a module :mod:`stiefelsym.ir` imports)
+STEP_MODULES = ("stiefelsym.twisted", "stiefelsym.systems", "stiefelsym.brackets")
+
+
 def engine_module_of(qualname: str) -> str | None:
-    """The engine module whose name begins ``qualname`` (``stiefelsym.twisted`` of ``stiefelsym.twisted.at_point``),
-    the longest one; None when no module of the engine's (:func:`_verdict_modules`) begins it."""
-    modules = set(_verdict_modules())
-    parts = qualname.split(".")
-    for k in range(len(parts) - 1, 1, -1):
-        name = ".".join(parts[:k])
-        if name in modules:
+    """The module of :data:`STEP_MODULES` whose name begins ``qualname`` (``stiefelsym.twisted`` of
+    ``stiefelsym.twisted.at_point``); None for any other name."""
+    for name in STEP_MODULES:
+        if qualname.startswith(name + "."):
             return name
     return None
 
