@@ -161,7 +161,7 @@ def neumann2_kernel(s):
        fails_at=lambda n, r: r < n,
        erratum="""The proof of Theorem NEUMANN2 sets h = Psi(X_0, P_0) and v = X_0 X_0^T and works with h + v in gl(n)
        and with the block h_1 of h.  Psi(X_0, P_0) is r x r and v is n x n, so h + v is not defined for r < n.
-       Corrected: h = Phi(X_0, P_0), the so(n) part of Theta(X_0, P_0), as in the proof of Lemma LEMA1; its block
+       Corrected: h = Phi(X_0, P_0), the so(n) part of Θ(X_0, P_0), as in the proof of Lemma LEMA1; its block
        h_1 = X_0^T h X_0 is Psi(X_0, P_0), which is 0 on Psi^{-1}(0), as the proof says next.  With this h the kernel of
        Lambda_1(h + v) has the dimension of gl(r) + gl(n - r) (claim neumann2-kernel).""",
        statement=r"h=\Psi(X_0,P_0),\ v=X_0X_0^T:\ \text{the size of }h\text{ is the size }n\text{ of }v")
@@ -171,7 +171,7 @@ def printed_h_has_the_size_of_v(s):
                                                          "the rows of Psi(X0, P0); printed: h, added to v = X0 X0^T")}
 
 
-@printed_h_has_the_size_of_v.claim.correction("h = Phi(X_0, P_0) in place of Psi(X_0, P_0)")
+@printed_h_has_the_size_of_v.claim.correction("h = Φ(X₀, P₀) in place of Ψ(X₀, P₀)")
 def printed_h_has_the_size_of_v_corrected(s):
     X = s.X
     P0 = horizontal(s, X, s.P)
