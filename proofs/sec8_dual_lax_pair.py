@@ -834,12 +834,12 @@ def manakov_j2r_vanishes(s):
 
 # -- the printed size of the spectral curve's identity matrix ---------------------------------------
 
-@claim("spectral-curve-identity-size", paper=("2r-integrals", "LA3"), kind="dim", sizes=admissible(n_max=5),
+@claim("spectral-curve-identity-size", paper=("2r-integrals",), kind="dim", sizes=admissible(n_max=5),
        fails_at=lambda n, r: n != 2 * r,
-       erratum="""The spectral curve of L*_neum(lambda) is printed |a(lambda) L*_neum(lambda) - w I_n| = w^{2r} + ... .
-       The Lax matrix L*_neum(lambda) of (LA3) is 2r x 2r, so the determinant is defined only when n = 2r.
-       Corrected: I_{2r} (the degree 2r in w of the printed expansion is the size of the matrix), with which the
-       expansion holds (claim 2r-integrals).""",
+       erratum="""The spectral curve of 𝓛*_neum(λ) is printed |a(λ) 𝓛*_neum(λ) − w I_n| = w^{2r} + ... .  The Lax
+       matrix 𝓛*_neum(λ) of (LA3) is 2r × 2r, so the determinant is defined only when n = 2r.  Corrected: I_{2r}
+       (the degree 2r in w of the printed expansion is the size of the matrix), with which the expansion holds
+       (claim 2r-integrals).""",
        statement=r"|a(\lambda)\mathcal L^*_{neum}(\lambda)-w\mathbf I_n|:\ \text{the size }n\text{ of }\mathbf I_n"
                  r"\text{ is the size of }\mathcal L^*_{neum}(\lambda)")
 def printed_identity_has_the_size_of_the_dual_lax_matrix(s):
@@ -848,10 +848,30 @@ def printed_identity_has_the_size_of_the_dual_lax_matrix(s):
                                                    "the rows of L*_neum(lambda) (LA3); printed: the size of I_n")}
 
 
-@printed_identity_has_the_size_of_the_dual_lax_matrix.claim.correction("I_{2r} in place of I_n")
+@printed_identity_has_the_size_of_the_dual_lax_matrix.claim.correction("I₂ᵣ in place of Iₙ")
 def printed_identity_has_the_size_of_the_dual_lax_matrix_corrected(s):
     return {"size of L*_neum = size of I_{2r}": Count(L_dual(s).shape[0], 2 * s.r,
                                                       "the rows of L*_neum(lambda) (LA3); corrected: the size of I_{2r}")}
+
+
+@claim("manakov-curve-identity-size", paper=("Chasles-Manakov", "MAN-LA2"), kind="dim",
+       sizes=admissible(n_max=5, where=lambda n, r: 2 * r < n, condition="2r < n"), fails_at=lambda n, r: True,
+       erratum="""The paragraph on the Chasles theorem for Manakov flows takes the integrals J_{2l}(λ) as the
+       coefficients of w^{2r−2l} in |a(λ) 𝓛*_man(λ) − w I_n|, under 2r < n.  The Lax matrix 𝓛*_man(λ) of (MAN-LA2) is
+       2r × 2r, so the determinant is not defined.  Corrected: I_{2r}, with which J_{2r} is the coefficient of w^0
+       (claim chasles-manakov).""",
+       statement=r"|a(\lambda)\mathcal L^*_{man}(\lambda)-w\mathbf I_n|,\ 2r<n:\ \text{the size }n\text{ of }"
+                 r"\mathbf I_n\text{ is the size of }\mathcal L^*_{man}(\lambda)")
+def printed_identity_has_the_size_of_the_manakov_dual_lax_matrix(s):
+    """The identity matrix I_n printed in |a(λ)𝓛*_man(λ) − wI_n| (Chasles theorem for Manakov flows) has the size of 𝓛*_man(λ) of (MAN-LA2)."""
+    return {"size of L*_man = size of I_n": Count(L_man_dual_mu(s, s.lam).shape[0], s.n,
+                                                  "the rows of L*_man(lambda) (MAN-LA2); printed: the size of I_n")}
+
+
+@printed_identity_has_the_size_of_the_manakov_dual_lax_matrix.claim.correction("I₂ᵣ in place of Iₙ")
+def printed_identity_has_the_size_of_the_manakov_dual_lax_matrix_corrected(s):
+    return {"size of L*_man = size of I_{2r}": Count(L_man_dual_mu(s, s.lam).shape[0], 2 * s.r,
+                                                     "the rows of L*_man(lambda) (MAN-LA2); corrected: the size of I_{2r}")}
 
 
 # -- printed sizes in the proofs of Gen_Chasles and Gen_Chasles2 -----------------------------------------
