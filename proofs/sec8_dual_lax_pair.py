@@ -897,6 +897,28 @@ def printed_left_factor_has_the_size_of_vv_corrected(s):
                                                          "the rows of V (VV); corrected: the size of diag(I_n, B^{-1})")}
 
 
+@claim("vv-printed-shape", paper=("VV", "Gen_Chasles2", "VVB"), kind="dim", exact_max_n=7,
+       sizes=admissible(n_max=5), fails_at=lambda n, r: n != r,
+       erratum="""The matrix V(X, P) of (VV), whose columns e_1, ..., e_r, p_1, ..., p_r span the 2r-plane of
+       R^{n+r}, is called a 2r × (n + r) matrix, and so are V(X(t)B, P(t)B) before Theorem Gen_Chasles2 and
+       V(XB, PB) before (VVB).  Its 2r columns are vectors of R^{n+r}: it has n + r rows and 2r columns, and the
+       printed shape is its transpose's, right only when n = r.  Corrected: (n + r) × 2r.""",
+       statement=r"\mathcal V(X,P)=\begin{pmatrix}X&P\\0&\mathbf I_r\end{pmatrix}:\ "
+                 r"\text{a }2r\times(n+r)\text{ matrix}")
+def printed_shape_of_vv(s):
+    """𝒱(X, P) of (VV) is printed as a 2r × (n + r) matrix: 2r rows and n + r columns."""
+    V = plane_VV(s, s.X, s.P)
+    return {"rows of V": Count(V.shape[0], 2 * s.r, "the rows of V (VV); printed: 2r"),
+            "columns of V": Count(V.shape[1], s.n + s.r, "the columns of V (VV); printed: n + r")}
+
+
+@printed_shape_of_vv.claim.correction("(n + r) × 2r in place of 2r × (n + r)")
+def printed_shape_of_vv_corrected(s):
+    V = plane_VV(s, s.X, s.P)
+    return {"rows of V": Count(V.shape[0], s.n + s.r, "the rows of V (VV); corrected: n + r"),
+            "columns of V": Count(V.shape[1], 2 * s.r, "the columns of V (VV); corrected: 2r")}
+
+
 @claim("gen-chasles-momentum-ranges", paper=("Gen_Chasles", "tangency"), kind="dim", exact_max_n=7,
        sizes=admissible(n_max=5), fails_at=lambda n, r: n != r,
        erratum="""In the proof of Theorem Gen_Chasles, the quadratic equation of the 2r-planes tangent to the cone

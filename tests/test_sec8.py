@@ -33,7 +33,8 @@ NEEDS_COORDINATES = ("2r-integrals", "2r-integrals-conserved",
                      "gen-chasles2", "mum-geod", "chasles-manakov",
                      "vvb-left-factor-size", "gen-chasles-momentum-ranges", "dual-lax-determines-the-point",
                      "dual-invariants-manakov-r-n", "chasles-cones-real", "manakov-dual-integrals",
-                     "manakov-j2r-vanishes", "spectral-curve-identity-size", "manakov-curve-identity-size")
+                     "manakov-j2r-vanishes", "spectral-curve-identity-size", "manakov-curve-identity-size",
+                     "vv-printed-shape")
 #: the claims of the spectral curve and of the Chasles theorems: (exact sizes, modular sizes) as printed
 GEOMETRY_SIZES = {
     "2r-integrals": ([(1, 1), (2, 1)], [(3, 2), (4, 2), (4, 3)]),
@@ -49,6 +50,7 @@ GEOMETRY_SIZES = {
     "vvb-left-factor-size": ([], []),                            # fails at every size: an erratum
     "spectral-curve-identity-size": ([(2, 1)], [(4, 2)]),        # holds as printed only when n = 2r
     "manakov-curve-identity-size": ([], []),                     # 2r < n: fails at every size, an erratum
+    "vv-printed-shape": ([(1, 1), (2, 2)], [(3, 3)]),            # holds as printed only when n = r
     "gen-chasles-momentum-ranges": ([(2, 2), (3, 3)], [(4, 4)]),  # holds as printed only when r = n
     "dual-lax-determines-the-point": ([(2, 1), (3, 2)], [(3, 3), (4, 2), (5, 2)]),
     "dual-invariants-manakov-r-n": ([(1, 1), (2, 2)], [(3, 3), (4, 4), (5, 5)]),
@@ -231,6 +233,12 @@ def curve_identity_of_size_2r_plus_1(s):
     return {"rows": Count(sec8.L_dual(s).shape[0], 2 * s.r + 1)}
 
 
+def vv_shape_with_one_more_column(s):
+    """Corrupted correction of the shape of V(X, P): (n + r) x (2r + 1)."""
+    V = sec8.plane_VV(s, s.X, s.P)
+    return {"rows": Count(V.shape[0], s.n + s.r), "columns": Count(V.shape[1], 2 * s.r + 1)}
+
+
 def manakov_curve_identity_of_size_n_minus_1(s):
     """Corrupted correction of the Manakov spectral curve's identity: I_{n-1}."""
     return {"rows": Count(sec8.L_man_dual_mu(s, s.lam).shape[0], s.n - 1)}
@@ -280,6 +288,7 @@ CORRUPTIONS = [
     ("gen-chasles-momentum-ranges", momentum_ranges_r_plus_1),
     ("spectral-curve-identity-size", curve_identity_of_size_2r_plus_1),
     ("manakov-curve-identity-size", manakov_curve_identity_of_size_n_minus_1),
+    ("vv-printed-shape", vv_shape_with_one_more_column),
     ("2r-integrals", degrees_without_identity),
     ("2r-integrals-conserved", integrals_not_invariant_under_gl_r),
     ("2r-integrals-explicit", I2_with_doubled_momentum_term),
@@ -418,7 +427,8 @@ def test_the_spectral_curve_of_a_r_1_neumann_system_is_moser_s():
                                                ("gen-chasles-momentum-ranges", [(3, 1), (4, 2)], [(3, 3)]),
                                                ("spectral-curve-identity-size", [(3, 1), (3, 2), (5, 2)],
                                                 [(2, 1), (4, 2)]),
-                                               ("manakov-curve-identity-size", [(3, 1), (5, 2)], [])])
+                                               ("manakov-curve-identity-size", [(3, 1), (5, 2)], []),
+                                               ("vv-printed-shape", [(2, 1), (4, 3)], [(1, 1), (3, 3)])])
 def test_printed_sizes_in_the_chasles_proofs(catalog, cid, fails, holds):
     """The size misprints in the proofs of Gen_Chasles and Gen_Chasles2, and the I_n of the spectral curve,
     fail as printed, with the printed and computed numbers, and their corrections hold at every size."""
