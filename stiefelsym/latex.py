@@ -41,7 +41,7 @@ _GREEK_LOWER = {"epsilon": "varepsilon", "phi": "varphi", "lamda": "lambda", "om
 _GREEK_UPPER = {"gamma", "delta", "theta", "lamda", "xi", "pi", "sigma", "upsilon", "phi",
                 "psi", "omega"}
 _ALPHABETS = {"DOUBLE-STRUCK": "mathbb", "FRAKTUR": "mathfrak", "BLACK-LETTER": "mathfrak",
-              "SCRIPT": "mathcal", "BOLD": "mathbf", "ITALIC": "mathit"}
+              "SCRIPT": "mathcal", "BOLD SCRIPT": "mathcal", "BOLD": "mathbf", "ITALIC": "mathit"}
 
 
 def _unicode_math(ch: str) -> str | None:
@@ -381,7 +381,7 @@ def _toplevel(tex: str) -> str:
 #: the Greek letters of the paper as the claims' check names spell them in ASCII
 _GREEK_WORDS = {"Phi": "Φ", "Psi": "Ψ", "Lambda": "Λ", "lambda": "λ", "kappa": "κ", "Pi": "Π", "Omega": "Ω",
                 "eta": "η", "xi": "ξ", "zeta": "ζ", "theta": "θ", "epsilon": "ε", "eps": "ε", "nu": "ν",
-                "Sigma": "Σ", "sigma": "σ", "omega": "ω", "mu": "μ", "Gamma": "Γ", "Delta": "Δ"}
+                "Sigma": "Σ", "sigma": "σ", "omega": "ω", "mu": "μ", "Gamma": "Γ", "Delta": "Δ", "Theta": "Θ"}
 
 
 _GREEK_WORD = re.compile(r"(?<![A-Za-z])(d?)(" + "|".join(sorted(_GREEK_WORDS, key=len, reverse=True)) + r")(?![a-z])")
@@ -523,7 +523,33 @@ def unicode_words(text: str) -> str:
     return "".join(f"${seg}$" if is_math else _unicode_scripts(seg) for is_math, seg in split_math(text))
 
 
+#: ASCII idioms of the catalog's prose for the paper's notation: (pattern, replacement), in this order
+_MATH_IDIOMS = (
+    (re.compile(r"(?<=\s)!=(?=\s)"), lambda m: "≠"),
+    (re.compile(r"\b(\w)<=(\w)<=(\w)\b"), lambda m: f"{m.group(1)}≤{m.group(2)}≤{m.group(3)}"),
+    (re.compile(r"(?<=\s)->(?=\s)"), lambda m: "→"),
+    # a size: r x r, 2r x 2r, n x r, (n + r) x 2r
+    (re.compile(r"(\b\d*[nrkm]\b|\b\d+\b|\)) x (?=\(|\d*[nrkm]\b|\d+\b)"), lambda m: m.group(1) + " × "),
+    (re.compile(r"\b([XPYQ])0\b"), lambda m: m.group(1) + "₀"),
+)
+
+
+_DUAL_LAX = re.compile(r"(?<![A-Za-z])([LA𝓛𝓐])\*_(neum|man)\b")
+
+
+def math_idioms(text: str, tex: bool = False) -> str:
+    """The ASCII idioms of plain prose for the paper's notation: L*_neum as 𝓛*_neum (``tex``: 𝓛*_{neum},
+    the subscript set as one), a spaced != as ≠,
+    a range 1<=i<=r as 1≤i≤r (a single a<=b inside a word stays), a spaced -> as →, a size r x r as r × r, X0 as X₀ (and the Greek words, :func:`greek_words`)."""
+    text = _DUAL_LAX.sub(lambda m: ("𝓛" if m.group(1) in "L𝓛" else "𝓐") + "*_"
+                         + ("{" + m.group(2) + "}" if tex else m.group(2)), greek_words(text))
+    for pattern, repl in _MATH_IDIOMS:
+        text = pattern.sub(repl, text)
+    return text
+
+
 def _unicode_scripts(text: str) -> str:
+    text = math_idioms(text)
     text = re.sub(r"(?<=\s)([<>])=(?=\s)", lambda m: "≤" if m.group(1) == "<" else "≥", text.replace(" ^ ", " ∧ "))
     text = re.sub(r"\S+", lambda m: _wedges(m.group(0)), text)
 
@@ -555,6 +581,7 @@ def _wedges(token: str) -> str:
 
 
 def _ascii_scripts(text: str) -> str:
+    text = math_idioms(text, tex=True)
     text = re.sub(r"(?<=\s)([<>])=(?=\s)", lambda m: "≤" if m.group(1) == "<" else "≥", text.replace(" ^ ", " ∧ "))
     text = re.sub(r"\S+", lambda m: _wedges(m.group(0)), text)
     out, at = [], 0

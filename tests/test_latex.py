@@ -151,3 +151,18 @@ def test_the_registered_words_read_in_unicode_in_markdown():
         "(e₁ ∧ p₁ + ... + eᵣ ∧ pᵣ)_{I₂}², so(r,C)^⊥, N0_XP2, Xᵀ P"
     # LaTeX between dollars is the Markdown's mathematics: kept as written
     assert unicode_words(r"$\Phi_{ij}^2$ in the second sum, I_n") == r"$\Phi_{ij}^2$ in the second sum, Iₙ"
+
+
+def test_the_ascii_idioms_of_the_catalog_s_prose_are_set_in_the_paper_s_notation():
+    """The referee's plain-text leaks (stop 66): L*_neum with a literal underscore, r x r, i != j, 1<=i<=r,
+    Theta, X0 are set as 𝓛*_{neum}, r × r, ≠, ≤, Θ, X₀ in both reports; a single a<=b inside a word and a
+    variable x between words stay."""
+    from stiefelsym.latex import tex_words, unicode_words
+    text = "L*_neum(lambda) is 2r x 2r; i != j; 1<=i<=r; Theta(X0, P0); (n + r) x 2r; a<=b; the point x on x = 0"
+    md = unicode_words(text)
+    assert md == "𝓛*_neum(λ) is 2r × 2r; i ≠ j; 1≤i≤r; Θ(X₀, P₀); (n + r) × 2r; a<=b; the point x on x = 0"
+    tex = tex_words(text)
+    assert r"\ensuremath{\mathcal{L}}*\ensuremath{_{neum}}" in tex and r"\_neum" not in tex
+    assert r"2r \ensuremath{\times} 2r" in tex and r"i \ensuremath{\neq} j" in tex
+    assert r"1\ensuremath{\le}i\ensuremath{\le}r" in tex and r"\ensuremath{\Theta}(X\ensuremath{_{0}}" in tex
+    assert r"the point x on x = 0" in tex
