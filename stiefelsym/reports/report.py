@@ -1174,8 +1174,8 @@ def headline(claims: list[ClaimResults], paper: bool = True) -> tuple[str, list[
 
 #: how a statement failed, in the headline's words (see :func:`_failure_kind`)
 FAILURE_KINDS = {"witness": "with an exact witness",
-                 "identically": "said not to vanish and proved to vanish identically",
-                 "points": "said not to vanish and found zero at every random point drawn",
+                 "identically": "said not to vanish and proved to vanish identically at some size",
+                 "points": "said not to vanish and found zero at every random point drawn at some size",
                  "bare": "without a witness point"}
 
 
@@ -1203,7 +1203,7 @@ def _errata_words(errata: list[ClaimResults]) -> str:
     words = (f": {each} an erratum with an exact witness" if set(kinds) == {"witness"} else
              ": " + ", ".join(f"{kinds[k]} {FAILURE_KINDS[k]}" for k in FAILURE_KINDS if kinds[k]))
     if corrected and verified == len(corrected):
-        words += ", and where a correction is registered it was verified"
+        words += ", and where a correction is registered it was verified at every size computed"
     elif corrected:
         words += (f"; of the {len(corrected)} with a registered correction, {verified} "
                   f"{'has' if verified == 1 else 'have'} one verified at every size computed")
