@@ -389,7 +389,7 @@ def I2l_general_line(s, l):
 
 
 @claim("2r-integrals-general-line", paper=("2r-integrals",), kind="id",
-       sizes=admissible(n_max=5, n_min=2, condition="n >= 2"), exact_max_n=2, exact_max_r={3: 2, 4: 1, 5: 1, 6: 1, 7: 1},
+       sizes=admissible(n_max=5, where=lambda n, r: 2 * r <= n, condition="2r <= n"), exact_max_n=2, exact_max_r={3: 1, 4: 2, 5: 2, 6: 1, 7: 1},
        fails_at=lambda n, r: r >= 2,
        erratum="""The general line of (2r-integrals), I_{2l} = sum_{I_l} a/prod(lambda - a_i) sum_{J_l}
        (e_{j_1}^...^e_{j_l})^2_{I_l} + sum_{I_{l+1}} a/prod(lambda - a_i) sum_{J_l, 1<=i<=r}
