@@ -8,11 +8,11 @@ evaluates the printed formula and the correction.  Run: python3 2r-integrals-gen
 """
 import sympy as sp
 
-SIZE = (2, 2)
-POINT = {'X': [['0', '-1'], ['-1', '0']], 'P': [['1', '0'], ['0', '-1']], 'A': [['0', '0'], ['0', '-1']], 'lam': '1'}
+SIZE = (4, 2)
+POINT = {'X': [['-2/25', '14/25'], ['-16/25', '-13/25'], ['-19/25', '8/25'], ['-2/25', '14/25']], 'P': [['19/25', '-36/25'], ['-8/25', '-48/25'], ['8/25', '48/25'], ['-31/25', '-36/25']], 'A': [['3', '0', '0', '0'], ['0', '-1', '0', '0'], ['0', '0', '-3', '0'], ['0', '0', '0', '1']], 'lam': '0'}
 #: the entry of the residual the report states (1-based; None: a scalar), and its value there
 ENTRY = None
-STATED = sp.Rational("2")
+STATED = sp.Rational("-253868/15625")
 
 """(2r-integrals): the general line for I_{2l}(lambda), read at l = 1 (where its two sums are all the terms),
 has in its second sum the squares of all (e_j ^ p_i)_{I_2}, i, j = 1..r, and is not I_2(lambda) for r >= 2;
