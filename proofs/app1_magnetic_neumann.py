@@ -645,8 +645,8 @@ def monopole_checks(s, sign):
                     "everywhere iff it vanishes at X0 for all P and A",
        fails_at=lambda n, r: True,
        erratum="""The remark after Proposition YM (n = 3, r = 2): with eta = Psi = epsilon E_1 ^ E_2
-       (Psi = X^T P - P^T X), e_3 = e_1 x e_2 (iden1) and so(3) identified with (R^3, x) as Lie algebras,
-       F_Omega = X Psi X^T = epsilon e_1 ^ e_2 = -epsilon hat(e_3), so the Lorentz force is
+       (Psi = X^T P - P^T X), e_3 = e_1 x e_2 (iden1) and so(3) identified with (ℝ³, ×) as Lie algebras,
+       F_Omega = X Psi X^T = epsilon e_1 ^ e_2 = -epsilon ê_3, so the Lorentz force is
        F_Omega de_3/dt = -epsilon e_3 x de_3/dt, not +epsilon e_3 x de_3/dt: the monopole equation holds as
        d²e_3/dt² = A e_3 - ((e_3, A e_3) + (de_3/dt, de_3/dt)) e_3 - epsilon e_3 x de_3/dt (equivalently, the
        printed sign with eta = -epsilon E_1 ^ E_2, a monopole of the opposite charge).  (mag6) itself holds.""",

@@ -365,7 +365,7 @@ def invariant_quadratic_forms(s):
 
 
 @invariant_quadratic_forms.claim.correction(
-    "count also the Pfaffian of P1 (r = 4), det P2 (n - r = r = 2) and <axial(P1), P2> (n - r = 1, r = 3)")
+    "count also the Pfaffian of P₁ (r = 4), det P₂ (n - r = r = 2) and ⟨axial(P₁), P₂⟩ (n - r = 1, r = 3)")
 def invariant_quadratic_forms_corrected(s):
     rows, unknowns, N = _fibre_action_matrix(s)
     span = (1 if s.r in (1, s.n) else 2) + _extra_invariants(s.n, s.r)

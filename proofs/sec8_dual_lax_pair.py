@@ -391,14 +391,14 @@ def I2l_general_line(s, l):
 @claim("2r-integrals-general-line", paper=("2r-integrals",), kind="id",
        sizes=admissible(n_max=5, where=lambda n, r: 2 * r <= n, condition="2r <= n"), exact_max_n=2, exact_max_r={3: 1, 4: 2, 5: 2, 6: 1, 7: 1},
        fails_at=lambda n, r: r >= 2,
-       erratum="""The general line of (2r-integrals), I_{2l} = sum_{I_l} a/prod(lambda - a_i) sum_{J_l}
-       (e_{j_1}^...^e_{j_l})^2_{I_l} + sum_{I_{l+1}} a/prod(lambda - a_i) sum_{J_l, 1<=i<=r}
+       erratum="""The general line of (2r-integrals), I_{2l} = ∑_{I_l} a/∏(λ − a_i) ∑_{J_l}
+       (e_{j_1}^...^e_{j_l})^2_{I_l} + ∑_{I_{l+1}} a/∏(λ − a_i) ∑_{J_l, 1<=i<=r}
        (e_{j_1}^...^e_{j_l}^p_i)^2 + ..., is complete for l = 1 (forms of orders 1 and 2), and there it
        contradicts the explicit I_2 printed just above it whenever r >= 2: the second sum has the squares of
-       all the (e_j ^ p_i)_{I_2}, i, j = 1..r, where I_2 has Phi_{I_2}^2 = (sum_j e_j ^ p_j)_{I_2}^2 (the mixed
+       all the (e_j ^ p_i)_{I_2}, i, j = 1..r, where I_2 has Phi_{I_2}^2 = (∑_j e_j ^ p_j)_{I_2}^2 (the mixed
        terms (e_j^p_i)^2, i != j, do not belong, the cross terms (e_j^p_j)(e_k^p_k) are missing).  The
        explicit I_2 and I_{2r} hold (claim 2r-integrals-explicit); at l = 1 the line holds for r = 1 only.
-       Corrected: the second sum is sum_{I_2} a/prod(lambda - a_i) (sum_j e_j ^ p_j)_{I_2}^2.  The subscript
+       Corrected: the second sum is ∑_{I_2} a/∏(λ − a_i) (∑_j e_j ^ p_j)_{I_2}^2.  The subscript
        I_{r+1} of the second sum is also a misprint of I_{l+1}.""",
        statement=r"\mathcal I_{2}=\sum_{I_1}\frac{a(\lambda)}{\lambda-a_{i_1}}\sum_{J_1}(e_{j_1})_{I_1}^2"
                  r"+\sum_{I_2}\frac{a(\lambda)}{(\lambda-a_{i_1})(\lambda-a_{i_2})}\sum_{J_1,1\le i\le r}"
@@ -899,9 +899,9 @@ def printed_left_factor_has_the_size_of_vv_corrected(s):
 
 @claim("vv-printed-shape", paper=("VV", "Gen_Chasles2", "VVB"), kind="dim", exact_max_n=7,
        sizes=admissible(n_max=5), fails_at=lambda n, r: n != r,
-       erratum="""The matrix V(X, P) of (VV), whose columns e_1, ..., e_r, p_1, ..., p_r span the 2r-plane of
-       R^{n+r}, is called a 2r × (n + r) matrix, and so are V(X(t)B, P(t)B) before Theorem Gen_Chasles2 and
-       V(XB, PB) before (VVB).  Its 2r columns are vectors of R^{n+r}: it has n + r rows and 2r columns, and the
+       erratum="""The matrix V(X, P) of (VV), whose 2r columns (e_i; 0) and (p_i; E_i), i = 1, ..., r, span
+       the 2r-plane of ℝ^{n+r}, is called a 2r × (n + r) matrix, and so are V(X(t)B, P(t)B) before Theorem Gen_Chasles2 and
+       V(XB, PB) before (VVB).  Its 2r columns are vectors of ℝ^{n+r}: it has n + r rows and 2r columns, and the
        printed shape is its transpose's, right only when n = r.  Corrected: (n + r) × 2r.""",
        statement=r"\mathcal V(X,P)=\begin{pmatrix}X&P\\0&\mathbf I_r\end{pmatrix}:\ "
                  r"\text{a }2r\times(n+r)\text{ matrix}")

@@ -528,6 +528,8 @@ _MATH_IDIOMS = (
     (re.compile(r"(?<=\s)!=(?=\s)"), lambda m: "≠"),
     (re.compile(r"\b(\w)<=(\w)<=(\w)\b"), lambda m: f"{m.group(1)}≤{m.group(2)}≤{m.group(3)}"),
     (re.compile(r"(?<=\s)->(?=\s)"), lambda m: "→"),
+    # a cross product of two vectors with indices: e_1 x e_2, e_3 x de_3/dt
+    (re.compile(r"(\b[A-Za-z]_\w+) x (?=[A-Za-z])"), lambda m: m.group(1) + " × "),
     # a size: r x r, 2r x 2r, n x r, (n + r) x 2r
     (re.compile(r"(\b\d*[nrkm]\b|\b\d+\b|\)) x (?=\(|\d*[nrkm]\b|\d+\b)"), lambda m: m.group(1) + " × "),
     (re.compile(r"\b([XPYQ])0\b"), lambda m: m.group(1) + "₀"),
@@ -535,16 +537,23 @@ _MATH_IDIOMS = (
 
 
 _DUAL_LAX = re.compile(r"(?<![A-Za-z])([LA𝓛𝓐])\*_(neum|man)\b")
+#: subscripts the PDF sets as one (the Markdown keeps them as written): a Lie algebra, eta_so(r), and two indices, Psi_ij
+_TEX_SUBSCRIPTS = (re.compile(r"(?<=[^\W_]|\))_((?:so|sp|gl|u)\([^()\s]*\))"),
+                   re.compile(r"(?<=[^\W_]|\))_([ijklabpq][ijklabpq])\b"))
 
 
 def math_idioms(text: str, tex: bool = False) -> str:
     """The ASCII idioms of plain prose for the paper's notation: L*_neum as 𝓛*_neum (``tex``: 𝓛*_{neum},
-    the subscript set as one), a spaced != as ≠,
+    the subscript set as one; so are those of eta_so(r) and Psi_ij), e_3 x de_3 as a cross product, a spaced
+    != as ≠,
     a range 1<=i<=r as 1≤i≤r (a single a<=b inside a word stays), a spaced -> as →, a size r x r as r × r, X0 as X₀ (and the Greek words, :func:`greek_words`)."""
     text = _DUAL_LAX.sub(lambda m: ("𝓛" if m.group(1) in "L𝓛" else "𝓐") + "*_"
                          + ("{" + m.group(2) + "}" if tex else m.group(2)), greek_words(text))
     for pattern, repl in _MATH_IDIOMS:
         text = pattern.sub(repl, text)
+    if tex:
+        for pattern in _TEX_SUBSCRIPTS:
+            text = pattern.sub(lambda m: "_{" + m.group(1) + "}", text)
     return text
 
 

@@ -2,7 +2,7 @@
 fails from those where it holds, as a formula in n and r.
 
 Over the computed sizes only: the rule is the simplest condition (one comparison, or two joined
-by "and" or by "or") of the forms r ⋛ k, n ⋛ k, n − r ⋛ k and n − 2r ⋛ k that is true at every size in
+by "and" or by "or") of the forms r ⋛ k, n ⋛ k, n − r ⋛ k and n − 2r ⋛ k (and ≠) that is true at every size in
 ``fails`` and false at every size in ``holds``.  It says nothing about sizes not computed, and
 the report says so.
 """
@@ -40,11 +40,24 @@ def _atoms(sizes: list[Size]) -> list[Atom]:
     forms: list[tuple[str, Callable[[int, int], int]]] = [
         ("r", lambda n, r: r), ("n", lambda n, r: n), ("n - r", lambda n, r: n - r),
         ("n - 2r", lambda n, r: n - 2 * r)]
-    out = []
+    out, unequal = [], []
     for name, f in forms:
         for k in sorted({f(n, r) for n, r in sizes}):
             out += _linear(name, f, k)
-    return out
+            unequal.append(_unequal(name, f, k))
+    # f(n, r) ≠ k after every other comparison: "n ≠ 2r" where the sizes would otherwise read "2r > n or 2r < n"
+    return out + unequal
+
+
+def _unequal(name: str, f: Callable[[int, int], int], k: int) -> Atom:
+    """f(n, r) ≠ k, written the way a mathematician writes it."""
+    if name == "n - 2r":
+        text = "n ≠ 2r" + (f" + {k}" if k > 0 else f" − {-k}" if k < 0 else "")
+    elif name == "n - r":
+        text = "r < n" if k == 0 else f"n − r ≠ {k}"
+    else:
+        text = f"{name} ≠ {k}"
+    return Atom(text, lambda n, r: f(n, r) != k)
 
 
 def rule(fails: Iterable[Size], holds: Iterable[Size]) -> str | None:

@@ -166,3 +166,15 @@ def test_the_ascii_idioms_of_the_catalog_s_prose_are_set_in_the_paper_s_notation
     assert r"2r \ensuremath{\times} 2r" in tex and r"i \ensuremath{\neq} j" in tex
     assert r"1\ensuremath{\le}i\ensuremath{\le}r" in tex and r"\ensuremath{\Theta}(X\ensuremath{_{0}}" in tex
     assert r"the point x on x = 0" in tex
+
+
+def test_subscripts_of_lie_algebras_and_index_pairs_and_cross_products_in_the_pdf():
+    """The referee of stop 67: eta_so(r), Psi_so(n-r), Psi_ij and (P^T P)_ij kept a literal underscore in the PDF,
+    and e_3 x de_3/dt an x.  The PDF sets the subscripts as one and the cross product as ×; the Markdown keeps the
+    subscripts as written."""
+    from stiefelsym.latex import tex_words, unicode_words
+    text = "eta_so(r) = 0, Psi_so(n-r), Psi_ij, (P^T P)_ij, e_3 x de_3/dt, kernel_of x"
+    tex = tex_words(text)
+    assert r"\_" not in tex.replace(r"kernel\_of", "")
+    assert r"\ensuremath{_{so(r)}}" in tex and r"\ensuremath{_{ij}}" in tex and r"\ensuremath{\times} de" in tex
+    assert unicode_words(text) == "η_so(r) = 0, Ψ_so(n-r), Ψ_ij, (Pᵀ P)_ij, e₃ × de₃/dt, kernel_of x"

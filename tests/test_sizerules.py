@@ -10,7 +10,7 @@ SIZES = [(n, r) for n in range(1, 7) for r in range(1, n + 1)]
 
 def _check(cond: str, bad, good):
     """Evaluate the printed rule as Python over every size: true on ``bad``, false on ``good``."""
-    expr = (cond.replace("≥", ">=").replace("≤", "<=").replace("−", "-").replace(" = ", " == ")
+    expr = (cond.replace("≥", ">=").replace("≤", "<=").replace("≠", "!=").replace("−", "-").replace(" = ", " == ")
             .replace("2r", "2*r"))
     for n, r in bad:
         assert eval(expr, {}, {"n": n, "r": r}), (cond, n, r)
@@ -25,6 +25,8 @@ def _check(cond: str, bad, good):
     (lambda n, r: r == n, "r = n"),
     (lambda n, r: r == 1 or r == n, "r = 1 or r = n"),
     (lambda n, r: r == 1 and n <= 2, "r = 1 and n ≤ 2"),
+    (lambda n, r: n != 2 * r, "n ≠ 2r"),      # not "2r > n or 2r < n" (the referee of stop 67)
+    (lambda n, r: r != 2, "r ≠ 2"),
 ])
 def test_the_rule_is_found_and_holds_at_every_computed_size(pred, text):
     bad = [s for s in SIZES if pred(*s)]

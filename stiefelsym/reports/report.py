@@ -56,9 +56,9 @@ VERDICT_MEANING = {
                 "bound and precision escalation: every residual entry is within its "
                 "rounding-error bound, and that bound is below 10⁻⁸ of the size of the "
                 "terms; strong evidence, not a proof."),
-    "fails": ("The statement as printed is false at this size: an exact witness (a "
-              "point and a nonzero residual entry) is given and is reproducible from "
-              "the seed."),
+    "fails": ("The statement as printed is false at this size: an exact witness is given (a "
+              "point and a nonzero residual entry, reproducible from the seed; for a count or a "
+              "rank, the number computed exactly against the printed one)."),
     "inconclusive": ("The method ran but could not decide: only degenerate random "
                      "points, a floating-point residual no precision resolved, a "
                      "false-pass bound above 10⁻³⁰, or the run's time budget.  Never "
