@@ -970,9 +970,10 @@ def _tex_small_witness(c: ClaimResults) -> list[str]:
     out = [r"\textbf{A witness to check by hand} " + tex_escape(
         f"at (n, r) = {r.size}" + (f", a point of T*V ({', '.join(on)} hold exactly)" if on else "") + ":")]
     rows = [r",\quad ".join(parts[k:k + 3]) for k in range(0, len(parts), 3)]
-    # three letters a line, the whole shrunk to the line's width when wider
+    # three letters a line, the whole shrunk to the line's width when wider; the rows of a matrix of fractions
+    # spaced so that the fractions do not touch
     out += [r"\begin{center}\resizebox{\ifdim\width>\linewidth\linewidth\else\width\fi}{!}{$\displaystyle"
-            r"\begin{gathered}" + r"\\[2pt]".join(rows) + r"\end{gathered}$}\end{center}"]
+            r"\renewcommand{\arraystretch}{1.4}\begin{gathered}" + r"\\[2pt]".join(rows) + r"\end{gathered}$}\end{center}"]
     out += [tex_words(f"There the residual {_entry_words(w['entry'])} is ") + f"${value} \\neq 0$."
             + ((tex_escape(" A self-contained script (Python with sympy, no stiefelsym) rebuilds this point and "
                            "evaluates the printed formula and the correction: ")
