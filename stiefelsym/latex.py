@@ -536,19 +536,21 @@ _MATH_IDIOMS = (
 )
 
 
-_DUAL_LAX = re.compile(r"(?<![A-Za-z])([LA𝓛𝓐])\*_(neum|man)\b")
-#: subscripts the PDF sets as one (the Markdown keeps them as written): a Lie algebra, eta_so(r), and two indices, Psi_ij
-_TEX_SUBSCRIPTS = (re.compile(r"(?<=[^\W_]|\))_((?:so|sp|gl|u)\([^()\s]*\))"),
+#: the dual Lax matrices of the paper, 𝓛*_neum, 𝓐*_man, ... written L*_neum, A*_man
+_DUAL_LAX = re.compile(r"(?<![A-Za-z])([LA])\*_(?=neum|man)")
+#: subscripts the PDF sets as one (the Markdown keeps them as written): the paper's named ones (H_neum, 𝓛*_man),
+#: a Lie algebra's (eta_so(r)) and two indices (Psi_ij)
+_TEX_SUBSCRIPTS = (re.compile(r"(?<=[^\W_]|\)|\*)_(neum|man)\b"),
+                   re.compile(r"(?<=[^\W_]|\))_((?:so|sp|gl|u)\([^()\s]*\))"),
                    re.compile(r"(?<=[^\W_]|\))_([ijklabpq][ijklabpq])\b"))
 
 
 def math_idioms(text: str, tex: bool = False) -> str:
-    """The ASCII idioms of plain prose for the paper's notation: L*_neum as 𝓛*_neum (``tex``: 𝓛*_{neum},
-    the subscript set as one; so are those of eta_so(r) and Psi_ij), e_3 x de_3 as a cross product, a spaced
-    != as ≠,
-    a range 1<=i<=r as 1≤i≤r (a single a<=b inside a word stays), a spaced -> as →, a size r x r as r × r, X0 as X₀ (and the Greek words, :func:`greek_words`)."""
-    text = _DUAL_LAX.sub(lambda m: ("𝓛" if m.group(1) in "L𝓛" else "𝓐") + "*_"
-                         + ("{" + m.group(2) + "}" if tex else m.group(2)), greek_words(text))
+    """The ASCII idioms of plain prose for the paper's notation: L*_neum as 𝓛*_neum, e_3 x de_3 as a cross
+    product, a spaced != as ≠, a range 1<=i<=r as 1≤i≤r (a single a<=b inside a word stays), a spaced -> as →,
+    a size r x r as r × r, X0 as X₀ (and the Greek words, :func:`greek_words`); with ``tex``, the subscripts of
+    H_neum, eta_so(r) and Psi_ij set as one (:data:`_TEX_SUBSCRIPTS`)."""
+    text = _DUAL_LAX.sub(lambda m: ("𝓛" if m.group(1) == "L" else "𝓐") + "*_", greek_words(text))
     for pattern, repl in _MATH_IDIOMS:
         text = pattern.sub(repl, text)
     if tex:

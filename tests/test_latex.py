@@ -173,8 +173,9 @@ def test_subscripts_of_lie_algebras_and_index_pairs_and_cross_products_in_the_pd
     and e_3 x de_3/dt an x.  The PDF sets the subscripts as one and the cross product as ×; the Markdown keeps the
     subscripts as written."""
     from stiefelsym.latex import tex_words, unicode_words
-    text = "eta_so(r) = 0, Psi_so(n-r), Psi_ij, (P^T P)_ij, e_3 x de_3/dt, kernel_of x"
+    text = "eta_so(r) = 0, Psi_so(n-r), Psi_ij, (P^T P)_ij, e_3 x de_3/dt, kernel_of x, H_neum,0"
     tex = tex_words(text)
     assert r"\_" not in tex.replace(r"kernel\_of", "")
     assert r"\ensuremath{_{so(r)}}" in tex and r"\ensuremath{_{ij}}" in tex and r"\ensuremath{\times} de" in tex
-    assert unicode_words(text) == "η_so(r) = 0, Ψ_so(n-r), Ψ_ij, (Pᵀ P)_ij, e₃ × de₃/dt, kernel_of x"
+    assert r"H\ensuremath{_{neum}},0" in tex      # the paper's named subscripts after any letter, not only 𝓛*
+    assert unicode_words(text) == "η_so(r) = 0, Ψ_so(n-r), Ψ_ij, (Pᵀ P)_ij, e₃ × de₃/dt, kernel_of x, H_neum,0"
