@@ -178,6 +178,7 @@ def double_neumann_momentum(s):
 
 @claim("double-neumann-symmetry-group", paper=("dual-D", "D-eq"), kind="dim", exact_max_n=7,
        sizes=admissible(n_max=5), fails_at=lambda n, r: r != n,
+       place="the paragraph after Theorem 10.1",
        erratum="""After Theorem dual-D the matrix integral X^T Y' - Y^T X' is said to come from the GL(n, R)-symmetry
        (X, Y, X', Y') -> (X R^T, Y R^{-1}, X' R^T, Y' R^{-1}), R in GL(n, R); R multiplies the n x r matrices X, Y on the
        right, so it is r x r, and the integral is r x r too.  Corrected: R in GL(r, R) (claim
@@ -612,6 +613,7 @@ def complex_neumann_dual_lax_corrected(s):
 
 @claim("complex-neumann-momentum-algebra", paper=("u(1)", "W-eq"), kind="dim", exact_max_n=7,
        sizes=admissible(n_max=5), fails_at=lambda n, r: r != n,
+       place="the sentence after (16) §10",
        erratum="""After Theorem dual-complex the symmetries are said to give the conservation of the u(n) and u(1)^n
        momentum maps, psi_0 = Z^T conj(Z') - Z'^T conj(Z) the first; psi_0 is r x r, the momentum of the right
        U(r)-action that the same paragraph names.  Corrected: the u(r) momentum map psi_0 (claim complex-neumann-momenta

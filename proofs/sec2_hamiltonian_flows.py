@@ -409,6 +409,7 @@ def generic_adjoint_orbit_dimension(s):
 
 @claim("adjoint-orbit-regularity", paper=("2l",), kind="dim", exact_max_n=7,
        fails_at=lambda n, r: n == 2 * r + 2,
+       place="the paragraph before Lemma 2.5",
        erratum="""The remark before Lemma 2l says that the generic orbit in Phi(T*V) is regular for
        n <= 2r+1 and singular otherwise.  For n = 2r+2 the generic orbit is regular as well (both cases of
        the Lemma's formula give the regular dimension there); the orbit is regular iff n <= 2r+2.""",

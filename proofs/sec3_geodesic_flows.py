@@ -349,6 +349,7 @@ def _extra_invariants(n: int, r: int) -> int:
 @claim("invariant-metrics", paper=("SO(n-r)-action", "P-neutral"), kind="dim", sizes=admissible(5, n_min=2),
        exact_max_n=7,
        fails_at=lambda n, r: _extra_invariants(n, r) > 0,
+       place="Proposition 4.6 and its proof",
        erratum="""The proposition fails when r = 4 (the Pfaffian of P1 is an invariant quadratic form),
        when n - r = r = 2 (det P2 is invariant) and when n - r = 1, r = 3 (the pairing of the axial
        vector of P1 with P2 is invariant); there the invariant metrics form a larger family.""",

@@ -343,6 +343,7 @@ def bracket_gram_psi(s):
 
 @claim("gram-not-in-involution-with-psi", paper=("so(n)+so(r)", "SO(n)-inv"), kind="not", expect="nonzero",
        fails_at=lambda n, r: r in (1, n),
+       place="Remark 4.2, after Theorem 4.5",
        erratum="""The remark after Theorem ET (the functions (p_i, p_j) do not Poisson-commute with <Psi, Psi>,
        so the SO(n)-invariant functions are not conserved by the Euclidean geodesic flow) fails for r = 1, where
        Psi = 0, and for r = n, where P = XW with W = X^T P skew, Psi = 2W and P^T P = -Psi^2/4 is a function of

@@ -550,6 +550,7 @@ def l5_l6_matrix(s, printed):
 @claim("pencil-l5-l6", paper=("L5", "L6"), kind="dim",
        sizes=admissible(5, r_max=3), exact_max_n=7, equivariance="the system is built from the claim's own parameters (no chart coordinate)",
        fails_at=lambda n, r: r >= 3,
+       place="the proof of Lemma 6.3, at (17) §6",
        erratum="""The proof of Lemma LEMA2 says that the solutions of (L5), (L6) within so(r)_{h1} ⊕ Sym(r)
        form an r-dimensional space.  With (L6) as printed, [A1, η1] ∈ so(r,C)^⊥ = Sym(r), the skew matrix
        [A1, η1] must vanish, and the solutions form a 2-dimensional space for every r >= 3 (1 for r = 1, 2 for

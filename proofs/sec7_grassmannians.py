@@ -159,6 +159,7 @@ def neumann2_kernel(s):
 
 @claim("neumann2-h-size", paper=("NEUMANN2",), kind="dim", sizes=admissible(5),
        fails_at=lambda n, r: r < n,
+       place="the proof of Theorem 7.1",
        erratum="""The proof of Theorem NEUMANN2 sets h = Ψ(X_0, P_0) and v = X_0 X_0^T and works with h + v in gl(n)
        and with the block h_1 of h.  Ψ(X_0, P_0) is r × r and v is n × n, so h + v is not defined for r < n (and on
        Ψ^{-1}(0) the printed h would be 0).  Corrected: h = Φ(X_0, P_0), the so(n) part of Θ(X_0, P_0), as in the

@@ -391,15 +391,19 @@ def I2l_general_line(s, l):
 @claim("2r-integrals-general-line", paper=("2r-integrals",), kind="id",
        sizes=admissible(n_max=5, where=lambda n, r: 2 * r <= n, condition="2r <= n"), exact_max_n=2, exact_max_r={3: 1, 4: 2, 5: 2, 6: 1, 7: 1},
        fails_at=lambda n, r: r >= 2,
+       place="the general line 𝓘₂ₗ(λ) of (5) §8",
        erratum="""The general line of (2r-integrals), I_{2l} = ∑_{I_l} a/∏(λ − a_i) ∑_{J_l}
        (e_{j_1}^...^e_{j_l})^2_{I_l} + ∑_{I_{l+1}} a/∏(λ − a_i) ∑_{J_l, 1<=i<=r}
-       (e_{j_1}^...^e_{j_l}^p_i)^2 + ..., is complete for l = 1 (forms of orders 1 and 2), and there it
+       (e_{j_1}^...^e_{j_l}^p_i)^2 + ..., is complete for l = 1: by the pattern of the line of I_{2r}, whose sums
+       run over I_r, I_{r+1}, ..., I_{2r}, the sums of I_{2l} run over I_l, ..., I_{2l} (forms of orders l to 2l), so at
+       l = 1 the two sums shown, over I_1 and I_2, are all of them and the “+ ...” adds nothing.  There the line
        contradicts the explicit I_2 printed just above it whenever r >= 2: the second sum has the squares of
        all the (e_j ^ p_i)_{I_2}, i, j = 1..r, where I_2 has Phi_{I_2}^2 = (∑_j e_j ^ p_j)_{I_2}^2 (the mixed
        terms (e_j^p_i)^2, i != j, do not belong, the cross terms (e_j^p_j)(e_k^p_k) are missing).  The
        explicit I_2 and I_{2r} hold (claim 2r-integrals-explicit); at l = 1 the line holds for r = 1 only.
        Corrected: the second sum is ∑_{I_2} a/∏(λ − a_i) (∑_j e_j ^ p_j)_{I_2}^2.  The subscript
-       I_{r+1} of the second sum is also a misprint of I_{l+1}.""",
+       I_{r+1} of the second sum is also a misprint of I_{l+1}.  The general line for 1 < l < r, whose “+ ...” states
+       no term that can be computed, is neither confirmed nor corrected here.""",
        statement=r"\mathcal I_{2}=\sum_{I_1}\frac{a(\lambda)}{\lambda-a_{i_1}}\sum_{J_1}(e_{j_1})_{I_1}^2"
                  r"+\sum_{I_2}\frac{a(\lambda)}{(\lambda-a_{i_1})(\lambda-a_{i_2})}\sum_{J_1,1\le i\le r}"
                  r"(e_{j_1}\wedge p_i)_{I_2}^2\quad(\text{the line }\mathcal I_{2l}\text{ at }l=1)")
@@ -836,6 +840,7 @@ def manakov_j2r_vanishes(s):
 
 @claim("spectral-curve-identity-size", paper=("2r-integrals",), kind="dim", sizes=admissible(n_max=5),
        fails_at=lambda n, r: n != 2 * r,
+       place="the unnumbered display of the spectral curve before (4) §8",
        erratum="""The spectral curve of 𝓛*_neum(λ) is printed |a(λ) 𝓛*_neum(λ) − w I_n| = w^{2r} + ... .  The Lax
        matrix 𝓛*_neum(λ) of (LA3) is 2r × 2r, so the determinant is defined only when n = 2r.  Corrected: I_{2r}
        (the degree 2r in w of the printed expansion is the size of the matrix), with which the expansion holds
@@ -856,6 +861,7 @@ def printed_identity_has_the_size_of_the_dual_lax_matrix_corrected(s):
 
 @claim("manakov-curve-identity-size", paper=("Chasles-Manakov", "MAN-LA2"), kind="dim",
        sizes=admissible(n_max=5, where=lambda n, r: 2 * r < n, condition="2r < n"), fails_at=lambda n, r: True,
+       place="the paragraph “Chasles Theorem for Manakov Flows” before Theorem 8.6",
        erratum="""The paragraph on the Chasles theorem for Manakov flows takes the integrals J_{2l}(λ) as the
        coefficients of w^{2r−2l} in |a(λ) 𝓛*_man(λ) − w I_n|, under 2r < n.  The Lax matrix 𝓛*_man(λ) of (MAN-LA2) is
        2r × 2r, so the determinant is not defined.  Corrected: I_{2r}, with which J_{2r} is the coefficient of w^0
@@ -878,10 +884,12 @@ def printed_identity_has_the_size_of_the_manakov_dual_lax_matrix_corrected(s):
 
 @claim("vvb-left-factor-size", paper=("VVB", "Gen_Chasles2"), kind="dim", exact_max_n=7,
        sizes=admissible(n_max=5), fails_at=lambda n, r: True,
+       place="the text after the display in the proof of Theorem 8.5",
        erratum="""In the proof of Theorem Gen_Chasles2, the matrix V(XB, PB) diag(B^{-1}, B^{-1}) is said to be
        obtained from V(X, P) (VV) by left multiplication by diag(I_{n-r}, B^{-1}), a matrix of size n; V(X, P) has
        n + r rows, so the product is not defined.  Corrected: diag(I_n, B^{-1}), of size n + r, with which the
-       identity (VVB) holds (claim gen-chasles2).""",
+       identity (VVB) holds (claim gen-chasles2); the proof itself applies that matrix to the (n + r)-vectors of
+       V's column space a few lines later, v_B(t) = diag(I_n, B^{-1}) v(t).""",
        statement=r"\mathcal V(XB,PB)\begin{pmatrix}B^{-1}&0\\0&B^{-1}\end{pmatrix}="
                  r"\operatorname{diag}(\mathbf I_{n-r},B^{-1})\,\mathcal V(X,P):\ "
                  r"\text{size of }\operatorname{diag}(\mathbf I_{n-r},B^{-1})=\text{number of rows of }\mathcal V")
@@ -899,10 +907,13 @@ def printed_left_factor_has_the_size_of_vv_corrected(s):
 
 @claim("vv-printed-shape", paper=("VV", "Gen_Chasles2", "VVB"), kind="dim", exact_max_n=7,
        sizes=admissible(n_max=5), fails_at=lambda n, r: n != r,
-       erratum="""The matrix V(X, P) of (VV), whose 2r columns (e_i; 0) and (p_i; E_i), i = 1, ..., r, span
-       the 2r-plane of ℝ^{n+r}, is called a 2r × (n + r) matrix, and so are V(X(t)B, P(t)B) before Theorem Gen_Chasles2 and
-       V(XB, PB) before (VVB).  Its 2r columns are vectors of ℝ^{n+r}: it has n + r rows and 2r columns, and the
-       printed shape is its transpose's, right only when n = r.  Corrected: (n + r) × 2r.""",
+       place="the sentence introducing (6) §8, the text before Theorem 8.5 and the proof of Theorem 8.5",
+       erratum="""The matrix V(X, P) of (VV), whose 2r columns (e_i, 0) and (p_i, E_i), i = 1, ..., r (E_i the i-th
+       column of I_r), span the 2r-plane of ℝ^{n+r}, is called a 2r × (n + r) matrix, and so are V(X(t)B, P(t)B)
+       before Theorem Gen_Chasles2 and V(XB, PB) before (VVB).  Its 2r columns are vectors of ℝ^{n+r}: it has n + r
+       rows and 2r columns, and the printed shape is its transpose's, right only when n = r.  The proof of Theorem
+       Gen_Chasles2 itself treats them so: it applies diag(I_n, B^{-1}) to the (n + r)-vector v(t) of the tangency
+       line in V's column space, v_B(t) = diag(I_n, B^{-1}) v(t).  Corrected: (n + r) × 2r.""",
        statement=r"\mathcal V(X,P)=\begin{pmatrix}X&P\\0&\mathbf I_r\end{pmatrix}:\ "
                  r"\text{a }2r\times(n+r)\text{ matrix}")
 def printed_shape_of_vv(s):
@@ -921,6 +932,7 @@ def printed_shape_of_vv_corrected(s):
 
 @claim("gen-chasles-momentum-ranges", paper=("Gen_Chasles", "tangency"), kind="dim", exact_max_n=7,
        sizes=admissible(n_max=5), fails_at=lambda n, r: n != r,
+       place="the display in the proof of Theorem 8.2",
        erratum="""In the proof of Theorem Gen_Chasles, the quadratic equation of the 2r-planes tangent to the cone
        Q(lambda*) sums (e_1^...^e_r^p_i)^2 over i = 1, ..., n and (e_1^...^e_r^p_i^p_j)^2 over 1 <= i < j <= n, but
        there are only r momenta p_1, ..., p_r (the columns of P).  Corrected: i = 1, ..., r and 1 <= i < j <= r, as

@@ -244,6 +244,30 @@ class Correction:
     exact_corank: tuple[tuple[int, int], ...] = ()
 
 
+#: the longest place of a misprint (a phrase, not a sentence: the erratum text says what is wrong)
+PLACE_CHARS = 160
+#: a page reference: the paper's pages depend on its build, its numbers of theorems and equations do not
+_PAGE = re.compile(r"\b(?:pp?\.\s*\d|pages?\b)", re.I)
+
+
+def _place_problem(place: Any) -> str:
+    """Why ``place`` is not a place of a misprint ("" if it is one): a phrase of one line of at most PLACE_CHARS
+    characters that follows "In " (it does not begin with "in" itself), ends without a full stop and names no page."""
+    if not isinstance(place, str) or not one_line(place, PLACE_CHARS) or place != " ".join(place.split()):
+        return (f"a place is a phrase of one line of at most {PLACE_CHARS} characters, without leading, trailing or "
+                "repeated spaces")
+    if "$" in place:
+        return "a place is plain words, without $ (the report sets its scripts and symbols)"
+    if re.match(r"in\b", place, re.I):
+        return 'the report writes "In <place> (involves: ...)": a place does not begin with "in" itself'
+    if place.endswith("."):
+        return "a place is a phrase, without a full stop at its end"
+    if _PAGE.search(place):
+        return ("a place names no page (the paper's pages depend on its build): name the theorem, equation, proof "
+                "or paragraph")
+    return ""
+
+
 #: what a claim id may be (it starts every verdict line and names the claim in every report)
 _ID = re.compile(r"[A-Za-z0-9][A-Za-z0-9._+-]{0,99}")
 _SECTION = re.compile(r"(?:[A-Za-z0-9][A-Za-z0-9.-]{0,19})?")
@@ -283,6 +307,10 @@ class Claim:
     #: sizes at which the printed statement is known to fail (a documented erratum)
     fails_at: Callable[[int, int], bool] | None = None
     erratum: str = ""
+    #: where in the paper the misprint of an erratum sits, when that is not the statement its labels name: a short
+    #: phrase such as "the proof of Theorem 7.1" or "the paragraph before Theorem 8.6" (the report says "In the proof
+    #: of Theorem 7.1 (involves: ...)"); empty: the labelled statements themselves
+    place: str = ""
     #: why the equivariance reduction is valid although the claim reads coordinates (stated in reports)
     equivariance: str = ""
     #: registered by the paper's catalog (whose stated reasons are reviewed with the code); a stated
@@ -351,6 +379,13 @@ class Claim:
         if (self.expect == "fails" or self.fails_at is not None) and not self.erratum.strip():
             raise ValueError(f"claim {self.id}: a statement expected to fail must be a documented erratum "
                              "(say what is wrong with erratum=...)")
+        if self.place:
+            place_problem = _place_problem(self.place)
+            if place_problem:
+                raise ValueError(f"claim {self.id}: place {self.place!r}: {place_problem}")
+            if not self.erratum.strip():
+                raise ValueError(f"claim {self.id}: place= says where the misprint of an erratum sits; a claim "
+                                 "without erratum= has none")
 
     def correction(self, description: str, changes: int = 1, expect: str | None = None,
                    exact_max_r: dict[int, int] | None = None, exact_corank: dict[int, int] | None = None):
@@ -492,7 +527,7 @@ def claim(id: str, *, paper: str | Iterable[str] = (), kind: str, section: str |
           sizes: SizeSpec | Iterable[tuple[int, int] | Size] | None = None, statement: str = "", realization: str = "standard",
           expect: str = "holds", exact_max_n: int | None = None, exact_max_r: dict[int, int] | None = None,
           exact_corank: dict[int, int] | None = None, fails_at: Callable[[int, int], bool] | None = None, erratum: str = "", equivariance: str = "",
-          free_max_r: int = 0):
+          free_max_r: int = 0, place: str = ""):
     """Register a claim.  The function's docstring (one sentence) goes into the report.
 
     ``paper``: the paper's equation labels the claim checks; a user's own claim may have none.
@@ -507,7 +542,10 @@ def claim(id: str, *, paper: str | Iterable[str] = (), kind: str, section: str |
     ``free_max_r``: for a claim whose graph needs r as a number (a loop over r, such as the coefficients
     e_1, ..., e_2r of a 2r x 2r Lax matrix) but not n, the largest r at which the dimension-free method is
     tried on the family of sizes (n, r), for every n at once: beyond the symbolic budget, its proof is the
-    exact method's proof at each size of the family (:mod:`stiefelsym.methods.specialise`)."""
+    exact method's proof at each size of the family (:mod:`stiefelsym.methods.specialise`).
+    ``place``: of an erratum, where in the paper the misprint sits when that is not the statement its labels name (a
+    proof, a remark, a paragraph or an unnumbered display beside a correct numbered result): a phrase such as "the
+    proof of Theorem 7.1", printed as "In the proof of Theorem 7.1 (involves: <labels>)"."""
     if exact_max_n is None:
         exact_max_n = DIM_EXACT_MAX_N if kind == "dim" else IDENTITY_EXACT_MAX_N
 
@@ -523,6 +561,7 @@ def claim(id: str, *, paper: str | Iterable[str] = (), kind: str, section: str |
                   expect=expect, exact_max_n=exact_max_n, exact_max_r=_pairs(exact_max_r),
                   exact_corank=_pairs(exact_corank, "exact_corank"), source=fn.__module__,
                   fails_at=fails_at, erratum=" ".join(erratum.split()), equivariance=" ".join(equivariance.split()),
+                  place=" ".join(place.split()) if isinstance(place, str) else place,
                   free_max_r=free_max_r, reviewed=_ACTIVE[-1].reviewed)
         _ACTIVE[-1].add(c)
         fn.claim = c

@@ -538,9 +538,10 @@ _MATH_IDIOMS = (
 
 #: the dual Lax matrices of the paper, 𝓛*_neum, 𝓐*_man, ... written L*_neum, A*_man
 _DUAL_LAX = re.compile(r"(?<![A-Za-z])([LA])\*_(?=neum|man)")
-#: subscripts the PDF sets as one (the Markdown keeps them as written): the paper's named ones (H_neum, 𝓛*_man),
-#: a Lie algebra's (eta_so(r)) and two indices (Psi_ij)
-_TEX_SUBSCRIPTS = (re.compile(r"(?<=[^\W_]|\)|\*)_(neum|man)\b"),
+#: subscripts the PDF sets as one (the Markdown keeps them as written): the paper's named ones (H_neum, 𝓛*_man) with a
+#: second index as the paper writes them (H_neum,κ as H_{neum,κ}; H_neum_0 and H_neum₀ as H_{neum_0}), a Lie algebra's
+#: (eta_so(r)) and two indices (Psi_ij)
+_TEX_SUBSCRIPTS = (re.compile(r"(?<=[^\W_]|\)|\*)_((?:neum|man)(?:,[^\s,;:.()]+|_[^\W_]+|[₀-₉]+)?)(?![^\W_])"),
                    re.compile(r"(?<=[^\W_]|\))_((?:so|sp|gl|u)\([^()\s]*\))"),
                    re.compile(r"(?<=[^\W_]|\))_([ijklabpq][ijklabpq])\b"))
 

@@ -105,3 +105,44 @@ def test_catalog_verdicts_are_as_expected_with_every_method(catalog):
             results += verify([c], sizes=sizes, methods=("exact",), seed=0)
     bad = [r.line() for r in results if not r.expected and r.verdict != "inconclusive"]
     assert not bad, bad
+
+
+def _printed_environments() -> set[str]:
+    """The numbered theorem-like items of the paper as printed ("Theorem 7.1", "Remark 4.2"): theorems,
+    propositions, lemmas and corollaries share one counter per section, remarks have their own."""
+    names = {"thm": "Theorem", "prop": "Proposition", "lem": "Lemma", "cor": "Corollary", "remark": "Remark"}
+    out, section, counts = set(), 0, {}
+    for m in re.finditer(r"^\\section\{|\\begin\{(thm|prop|lem|cor|remark)\}", PAPER.read_text(encoding="utf-8"),
+                         flags=re.M):
+        if m.group(1) is None:
+            section, counts = section + 1, {}
+            continue
+        counter = "remark" if m.group(1) == "remark" else "thm"
+        counts[counter] = counts.get(counter, 0) + 1
+        out.add(f"{names[m.group(1)]} {section}.{counts[counter]}")
+    return out
+
+
+@pytest.mark.skipif(not PAPER.exists(), reason="the paper is not next to the repository")
+def test_every_place_of_a_misprint_names_what_the_paper_prints(catalog):
+    """A place of a misprint ("the proof of Theorem 7.1") names numbered items the paper prints, equations by their
+    printed number and section ("(17) §6", as the labels are printed), and paragraphs by their printed title."""
+    from stiefelsym import paperref
+    printed = _printed_environments()
+    table = paperref.table()
+    for label, ref in table.items():       # the count agrees with the paper's own numbers where a label gives them
+        if ref["kind"] in ("Theorem", "Proposition", "Lemma", "Corollary"):
+            assert f"{ref['kind']} {ref['number']}" in printed, label
+    equations = {f"({ref['number']}) §{ref['section']}" for ref in table.values() if ref["kind"] == "equation"}
+    titles = {" ".join(t.split()) for t in re.findall(r"\\paragraph\{([^}]*)\}", PAPER.read_text(encoding="utf-8"))}
+    placed = [c for c in catalog if c.place]
+    assert len(placed) >= 9
+    for c in placed:
+        for item in re.findall(r"(?:Theorem|Proposition|Lemma|Corollary|Remark) \d+\.\d+", c.place):
+            assert item in printed, f"{c.id}: the paper has no {item}"
+        for eq in re.findall(r"\(\d+\) §\d+", c.place):
+            assert eq in equations, f"{c.id}: the paper numbers no equation {eq}"
+        for title in re.findall(r"“([^”]*)”", c.place):
+            if "…" not in title:
+                assert any(t.rstrip(".").replace("--", "–") == title for t in titles), f"{c.id}: no paragraph {title!r}"
+        assert not re.search(r"\bp\.\s*\d", c.place), c.id

@@ -67,7 +67,9 @@ class FakeRunner:
                        seconds=0.01, seed=seed,
                        false_pass_bound=1e-30 if verdict == "checked" else None,
                        witness={"seed": seed, "entry": "(1,2)", "value": "3/7"}
-                       if verdict == "fails" else None)
+                       if verdict == "fails" else None,
+                       erratum=c.erratum if verdict == "fails" else "",     # the runner's, for a documented erratum
+                       place=c.place if verdict == "fails" else "")
             out.append(r)
             if on_result:
                 on_result(r)
@@ -394,6 +396,46 @@ def test_report_rerenders_from_results(fake, run, tmp_path, monkeypatch):
     assert "`prep`" in (tmp_path / "r" / "verification.md").read_text()
     result = run("report", "--results", "r/results.json", "--report-dir", "elsewhere")
     assert (tmp_path / "elsewhere" / "verification.tex").is_file()
+
+
+def test_the_place_of_a_misprint_travels_with_the_erratum_and_is_the_claims(fake, run, catalog, tmp_path,
+                                                                           monkeypatch):
+    """verify writes the claim's place of the misprint into each record of its erratum, and the report names it
+    ("In the proof of Theorem 7.1 (involves: ...)"); report --results refuses a record whose place is not the
+    claim's, or that has one where the claim documents no erratum, and gives the claim's to a record written
+    before records carried it."""
+    c = catalog.get("prep")
+    object.__setattr__(c, "erratum", "h is r x r, not n x n.")
+    object.__setattr__(c, "place", "the proof of Theorem 7.1")
+    fake.verdicts["prep"], fake.expected["prep"] = "fails", True
+    fake.expected_of = lambda claim, method, verdict, n, r, variant: \
+        ((verdict == "fails", True) if claim.id == "prep" else (verdict in PASSING, False))
+    from stiefelsym.run import integrity
+    monkeypatch.setattr(integrity, "missing_runs", lambda records, registry, meta: [])
+    assert run("verify", "--report-dir", "r").exit_code == 0
+    path = tmp_path / "r" / "results.json"
+    data = json.loads(path.read_text())
+    records = data["results"]
+    assert {x["place"] for x in records if x["claim"] == "prep"} == {"the proof of Theorem 7.1"}
+    assert {x["place"] for x in records if x["claim"] != "prep"} == {""}
+    note = "In the proof of Theorem 7.1 (involves: (6) §5 [prep]), the statement as printed fails"
+    assert note in (tmp_path / "r" / "verification.md").read_text()
+
+    def rewritten(change) -> str:
+        copy = json.loads(json.dumps(data))
+        for x in copy["results"]:
+            change(x)
+        path.write_text(json.dumps(copy))
+        return "r/results.json"
+    edited = rewritten(lambda x: x.update(place="the remark after Theorem 7.1") if x["claim"] == "prep" else None)
+    assert "its place of the misprint ('the remark after Theorem 7.1') is not the one the claim declares" \
+        in _one_line_error(run("report", "--results", edited))
+    stray = rewritten(lambda x: x.update(place="the proof of Theorem 7.1") if x["claim"] == "ddim" else None)
+    assert "is not the one the claim declares for this verdict (none)" in _one_line_error(run("report", "--results", stray))
+    old = rewritten(lambda x: x.pop("place"))
+    (tmp_path / "r" / "verification.md").unlink()
+    assert run("report", "--results", old).exit_code == 0
+    assert note in (tmp_path / "r" / "verification.md").read_text()
 
 
 def test_report_bad_results_file_is_one_line(run, tmp_path):

@@ -177,5 +177,23 @@ def test_subscripts_of_lie_algebras_and_index_pairs_and_cross_products_in_the_pd
     tex = tex_words(text)
     assert r"\_" not in tex.replace(r"kernel\_of", "")
     assert r"\ensuremath{_{so(r)}}" in tex and r"\ensuremath{_{ij}}" in tex and r"\ensuremath{\times} de" in tex
-    assert r"H\ensuremath{_{neum}},0" in tex      # the paper's named subscripts after any letter, not only 𝓛*
+    assert r"H\ensuremath{_{neum,0}}" in tex      # the paper's named subscripts after any letter, not only 𝓛*
     assert unicode_words(text) == "η_so(r) = 0, Ψ_so(n-r), Ψ_ij, (Pᵀ P)_ij, e₃ × de₃/dt, kernel_of x, H_neum,0"
+
+
+def test_a_named_subscript_with_a_second_index_is_set_as_the_paper_sets_it():
+    """H_neum_0 and H_neum₀ kept a literal underscore in the PDF, and H_neum,κ set only "neum" as the subscript.  The paper
+    writes H_{neum_0} and H_{neum,\\kappa}: so does the PDF; a comma before a space stays punctuation, and a name
+    that only begins with neum (H_neumann) is left alone."""
+    from stiefelsym.latex import tex_words, unicode_words
+    assert tex_words("H_neum_0 = H o Theta").startswith(r"H\ensuremath{_{neum\ensuremath{_{0}}}} = H o ")
+    assert tex_words("the flow of H_neum,kappa.") == r"the flow of H\ensuremath{_{neum,\ensuremath{\kappa}}}."
+    assert tex_words("(H_neum,0)") == r"(H\ensuremath{_{neum,0}})"
+    assert tex_words("H_neum,−½ and H_man, the") == \
+        r"H\ensuremath{_{neum,\ensuremath{-}\ensuremath{\tfrac12}}} and H\ensuremath{_{man}}, the"
+    assert tex_words("H_neumann") == r"H\_neumann"
+    # as a claim's docstring writes it (the remark after Theorem NEUMANN): the same as H_neum_0
+    assert tex_words("along the flow of H_neum₀ the image") == r"along the flow of H\ensuremath{_{neum\ensuremath{_{0}}}} the image"
+    for text in ("H_neum_0", "H_neum₀", "H_neum,0", "H_neum,κ"):
+        assert r"\_" not in tex_words(text)
+    assert unicode_words("H_neum,0 and H_neum,κ") == "H_neum,0 and H_neum,κ"     # the Markdown keeps them

@@ -72,3 +72,22 @@ def test_no_import_circle_in_the_engine():
 
 def test_the_detector_sees_a_circle():
     assert _cycles({"a": {"b"}, "b": {"c"}, "c": {"a"}, "d": set()}) == [["a", "b", "c"]]
+
+
+def test_a_fixed_size_run_loads_neither_the_free_algebra_nor_its_checker():
+    """The families of sizes a claim is stated on (read by every run) live apart from the dimension-free
+    method: a modular run's process imports neither the free algebra, nor that method, nor the
+    certificate checker (start-up time of a one-claim run)."""
+    import subprocess
+    import sys
+    code = ("import sys\n"
+            "from stiefelsym.run.runner import run_one\n"
+            "from stiefelsym.claims import load_catalog, Size\n"
+            "c = load_catalog().get('neumann-flow')\n"
+            "res = run_one(c, Size(2, 1), 'modular', 0)\n"
+            "assert res.verdict == 'checked', res.verdict\n"
+            "print(' '.join(sorted(m for m in sys.modules if m.startswith('stiefelsym'))))\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout.split()
+    assert "stiefelsym.methods.families" in out
+    for m in ("stiefelsym.free", "stiefelsym.methods.dimension_free", "stiefelsym.certificate_check"):
+        assert m not in out, m

@@ -525,7 +525,7 @@ def test_a_proof_in_the_metric_realization_states_what_it_assumes_in_words():
 def test_a_failing_checks_status_is_in_words():
     from stiefelsym.reports.report import check_line
     assert check_line(CheckOutcome("regular iff n <= 2r+1", "count-mismatch", "1 (paper: 0)")) \
-        == "check regular iff n <= 2r+1: count not as printed, 1 (paper: 0)"
+        == "check regular iff n <= 2r+1: count not as printed, computed 1, where the printed statement gives 0"
     assert check_line(CheckOutcome("rank ad_Phi", "rank", "= 4")) == "check rank ad_Φ: rank as printed, = 4"
 
 
@@ -654,3 +654,66 @@ def test_the_characters_left_out_of_junit_are_those_xml_does_not_allow():
     allowed = re.compile("[^\t\n\r\x20-\ud7ff\ue000-\ufffd\U00010000-\U0010ffff]")
     text = "".join(map(chr, range(0x110000)))
     assert _XML_BAD.sub("?", text) == allowed.sub("?", text)
+
+
+def test_a_witness_bullet_says_which_value_the_printed_statement_gives():
+    """The referee of stop 67: "printed: 2r: 3 (paper: 2)" read as if the paper gave 2; the bullet says it as the
+    witness to check by hand does."""
+    from stiefelsym.reports.report import check_line, printed_value_words
+    line = check_line(CheckOutcome("rows of V", "count-mismatch", "the rows of V (VV); printed: 2r: 3 (paper: 2)"))
+    assert line.endswith("the rows of V (VV); printed: 2r: computed 3, where the printed statement gives 2")
+    assert "(paper:" not in line
+    assert printed_value_words("rank 5 at an exact rational point (paper: 4)") \
+        == "rank 5 at an exact rational point; the printed statement gives 4"
+    assert printed_value_words("exact rank 12 over Q, so rank 12 at every point; paper: 13") \
+        == "exact rank 12 over Q, so rank 12 at every point; the printed statement gives 13"
+    assert printed_value_words("the sizes: 2 (claimed: 1)") == "the sizes: computed 2, where the claim states 1"
+    assert printed_value_words("= 4") == "= 4"
+
+
+def _misprinted(place: str = "") -> list[Result]:
+    return [result("neumann2-h", n, r, "exact", "fails", section="7", paper=["NEUMANN2"], erratum="h is r x r.",
+                   place=place, checks=[CheckOutcome("size of h", "count-mismatch", "the rows of h: 1 (paper: 2)")],
+                   rerun=f"stiefelsym verify neumann2-h --size {n},{r} --method exact")
+            for n, r in ((2, 1), (3, 1), (3, 2))]
+
+
+def test_an_erratum_names_the_place_of_its_misprint_before_the_statements_it_involves():
+    """A misprint in a proof beside a correct theorem is located there ("In the proof of Theorem 7.1 (involves:
+    Theorem 7.1 [NEUMANN2])"), in the list after the headline and in the note for the authors, in both documents;
+    without a place the note reads as before."""
+    placed = _misprinted("the proof of Theorem 7.1")
+    md, tex = render_markdown(placed), render_latex(placed)
+    assert "- `neumann2-h` in the proof of Theorem 7.1 (involves: Theorem 7.1 [NEUMANN2])" in md
+    assert "**Note for the authors.** In the proof of Theorem 7.1 (involves: Theorem 7.1 [NEUMANN2]), the " \
+           "statement as printed fails" in md
+    assert r"\texttt{neumann2-h} in the proof of Theorem 7.1 (involves: Theorem~7.1 " in tex
+    assert r"\textbf{Note for the authors.} In the proof of Theorem 7.1 (involves: Theorem 7.1 [NEUMANN2]), the " \
+           "statement as printed fails" in tex
+    plain = render_markdown(_misprinted())
+    assert "- `neumann2-h` Theorem 7.1 [NEUMANN2]" in plain and "involves" not in plain
+    assert "**Note for the authors.** In Theorem 7.1 [NEUMANN2], the statement as printed fails" in plain
+    # a place in the paper's notation is set as such
+    tex = render_latex(_misprinted("the general line 𝓘₂ₗ(λ) of (5) §8"))
+    assert r"in the general line \ensuremath{\mathcal{I}}\ensuremath{_{2l}}(\ensuremath{\lambda}) of (5) " in tex
+
+
+def test_a_list_of_reruns_shows_its_last_item_rather_than_one_more():
+    """"… and 1 more (in results.json)" takes the room of the one rerun command it hides (the referee of stop 67)."""
+    from stiefelsym.reports.report import _shown
+    assert [_shown(range(k), 2) for k in (0, 2, 3, 4)] == [0, 2, 3, 2]
+    four = [result("neumann-lax", n, 1, "exact", "fails", witness=WITNESS, residual="(1, 2) = 3/7",
+                   rerun=f"stiefelsym verify neumann-lax --size {n},1 --method exact") for n in (2, 3, 4, 5)]
+    tex = render_latex(four)          # the referee's document lists two more failing runs: here all three
+    assert "more (in results" not in tex and r"--size 5,\allowbreak{}1" in tex
+    assert "and 2 more (in results.json)" in render_latex(four + [
+        result("neumann-lax", 6, 1, "exact", "fails", witness=WITNESS, rerun="stiefelsym verify neumann-lax --size 6,1")])
+    md = render_markdown([result("neumann-lax", n, 1, "exact", "fails", witness=WITNESS,
+                                 rerun=f"stiefelsym verify neumann-lax --size {n},1") for n in range(1, 11)])
+    assert "more (in results" not in md and "--size 10,1" in md
+
+
+def test_the_meaning_of_fails_names_both_kinds_of_witness():
+    from stiefelsym.reports.report import VERDICT_MEANING
+    text = VERDICT_MEANING["fails"]
+    assert "a point and a nonzero residual entry" in text and "dimension, rank or count" in text

@@ -39,3 +39,19 @@ def test_the_budgets_a_command_records_have_the_engines_defaults():
     from stiefelsym.run.pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT
     assert {key: default for _, key, default in COMMAND_BUDGETS} == {
         "timeout": DEFAULT_TIMEOUT, "budget": DEFAULT_BUDGET, "memory_gib": DEFAULT_MEMORY_GIB}
+
+
+def test_a_records_place_of_a_misprint_is_a_string_and_optional(tmp_path):
+    """A record carries the place of its erratum's misprint ("the proof of Theorem 7.1"); a record written before
+    the field existed has none, and loads with an empty place."""
+    from stiefelsym.results import load_results, record_problems
+    r = Result(claim="c", paper=["NEUMANN2"], section="7", kind="dim", title="t", statement="", n=2, r=1,
+               method="exact", verdict="fails", expected=True, seconds=0.1, seed=None, erratum="h is r x r.",
+               place="the proof of Theorem 7.1")
+    record = json.loads(dump_results([r], {}))["results"][0]
+    assert record["place"] == "the proof of Theorem 7.1" and record_problems(record) == []
+    assert any("place" in p for p in record_problems(dict(record, place=["the proof"])))
+    old = {k: v for k, v in record.items() if k != "place"}
+    path = tmp_path / "old.json"
+    path.write_text(json.dumps({"schema": SCHEMA_VERSION, "meta": {}, "results": [old]}))
+    assert load_results(path)[1][0].place == ""

@@ -1200,6 +1200,14 @@ def report(results_file: Path | None, report_dir: Path | None, claims_files: tup
             raise InputError(f"{source}: refused, record of {r.claim!r} {r.size} {r.method}: its erratum (what the "
                              "report says is wrong in the paper) is not the one the claim declares for this verdict "
                              "(`stiefelsym check` re-checks every record)")
+        # the place of the misprint goes with the erratum: the claim's, or none in a record written before records
+        # carried it (the report then gives the claim's)
+        place = claim_of.place if erratum else ""
+        if r.place and r.place != place:
+            raise InputError(f"{source}: refused, record of {r.claim!r} {r.size} {r.method}: its place of the misprint "
+                             f"({r.place!r}) is not the one the claim declares for this verdict "
+                             f"({repr(place) if place else 'none'})")
+        r.place = place
     strangers = unbound_graphs(records, user) if user is not None else []
     if strangers:
         raise InputError(f"{source}: refused, {len(strangers)} record(s) of a claims file whose graph is not its claim's "

@@ -16,7 +16,6 @@ from __future__ import annotations
 import re
 import unicodedata
 from fractions import Fraction
-import xml.etree.ElementTree as ET
 from collections import Counter
 from typing import Any, Callable, Iterable, Sequence
 
@@ -56,9 +55,9 @@ VERDICT_MEANING = {
                 "bound and precision escalation: every residual entry is within its "
                 "rounding-error bound, and that bound is below 10⁻⁸ of the size of the "
                 "terms; strong evidence, not a proof."),
-    "fails": ("The statement as printed is false at this size: an exact witness is given (a "
-              "point and a nonzero residual entry, reproducible from the seed; for a count or a "
-              "rank, the number computed exactly against the printed one)."),
+    "fails": ("The statement as printed is false at this size: an exact witness is given, either a "
+              "point and a nonzero residual entry there (reproducible from the seed) or, for a "
+              "dimension, rank or count, its value computed exactly against the printed one."),
     "inconclusive": ("The method ran but could not decide: only degenerate random "
                      "points, a floating-point residual no precision resolved, a "
                      "false-pass bound above 10⁻³⁰, or the run's time budget.  Never "
@@ -226,6 +225,12 @@ class ClaimResults:
         return [r for r in self.printed if r.verdict == "fails"]
 
     @property
+    def place(self) -> str:
+        """Where in the paper the misprint sits, as the erratum's records give it ("the proof of Theorem 7.1"); ""
+        when it is the statement the labels name."""
+        return next((r.place for r in self.failures if r.place), "")
+
+    @property
     def own(self) -> bool:
         """A statement of a claims file (its records' rerun commands name the file, as verify writes them):
         a user's own statement, whatever paper labels it cites, not the paper's as printed."""
@@ -384,9 +389,32 @@ CHECK_STATUS_WORDS = {"rank": "rank as printed", "rank-mismatch": "rank not as p
 
 
 def check_line(ch: Any) -> str:
-    """One check of a failing run: its name as mathematics, its status in words, its detail."""
+    """One check of a failing run: its name as mathematics, its status in words, its detail (the printed value
+    said as the witness sentence says it, :func:`printed_value_words`)."""
     return (f"check {unicode_name(ch.name)}: {CHECK_STATUS_WORDS.get(ch.status, ch.status)}"
-            + (f", {ch.detail}" if ch.detail else ""))
+            + (f", {printed_value_words(ch.detail)}" if ch.detail else ""))
+
+
+#: the value a Count or Rank check's detail quotes of the statement: "...: 2 (paper: 1)", "... (paper: 4)",
+#: "...; paper: 13" ("claimed" for a statement of one's own)
+_COUNT_DETAIL = re.compile(r"(^|: )(\d+) \((paper|claimed): (\d+)\)$")
+_QUOTED_VALUE = re.compile(r"(?:;\s*|\s*\()(paper|claimed): (\d+)\)?$")
+
+
+def printed_value_words(detail: str) -> str:
+    """A check's detail with the value the statement gives said in words: "...: 2 (paper: 1)" as "...: computed
+    2, where the printed statement gives 1" (as the witness to check by hand says it; "(paper: 1)" alone reads
+    as if the paper gave 1 for the computed quantity), "...; paper: 13" as "...; the printed statement gives 13"."""
+    text = detail.strip()
+    m = _COUNT_DETAIL.search(text)
+    if m:
+        whose = "the printed statement gives" if m.group(3) == "paper" else "the claim states"
+        return f"{text[:m.start()]}{m.group(1)}computed {m.group(2)}, where {whose} {m.group(4)}"
+    m = _QUOTED_VALUE.search(text)
+    if m:
+        whose = "the printed statement gives" if m.group(1) == "paper" else "the claim states"
+        return f"{text[:m.start()]}; {whose} {m.group(2)}"
+    return detail
 
 
 def _witness_heading(w: Result) -> str:
@@ -572,6 +600,7 @@ def render_junit(results: Sequence[Result], meta: dict[str, Any] | None = None) 
 
     An unexpected verdict is a ``<failure>`` whose text holds the line, the
     message, the witness and the rerun command."""
+    import xml.etree.ElementTree as ET     # only for this format
     root = ET.Element("testsuites", name="stiefelsym", tests=str(len(results)),
                       failures=str(sum(not r.expected for r in results)),
                       time=f"{sum(r.seconds for r in results):.3f}")
@@ -712,7 +741,7 @@ def render_markdown(results: Sequence[Result], meta: dict[str, Any] | None = Non
                                        else f"**{unexpected} verdicts not as expected.**"), ""]
     if errata:
         out += ["Fails as printed:", ""]
-        out += [f"- `{c.id}` {_md_escape(labels(c.paper))}"
+        out += [f"- `{c.id}` {_placed(c, _md_escape(labels(c.paper)), lambda s: _md_escape(unicode_words(s)))}"
                 + _md_escape(_listed_correction(c, unicode_words))
                 for c in errata]
         out += [""]
@@ -822,15 +851,22 @@ def _note_heading(c: ClaimResults) -> str:
     return "Note for the authors." if c.paper and not c.own else "Note."
 
 
-def _erratum_note(c: ClaimResults, facts: dict[str, Any], escape=lambda s: s, correction=lambda s: s) -> str:
-    """One paragraph a referee could send: the label, where it fails, the witness, the correction
-    (``escape`` renders the prose, ``correction`` a correction's description)."""
+def _erratum_note(c: ClaimResults, facts: dict[str, Any], escape=lambda s: s, correction=lambda s: s,
+                  words=lambda s: s) -> str:
+    """One paragraph a referee could send: the place of the misprint and the labels it involves, where it fails,
+    the witness, the correction (``escape`` renders the prose, ``correction`` a correction's description,
+    ``words`` the place of the misprint)."""
     w = c.failures[0]
     where = (f"Appendix {c.section[1:]}, " if c.section.startswith("A") else f"§{c.section}, ") \
         if c.section and not all(p in paperref.table() for p in c.paper) else ""
     at = f"{where}{labels(c.paper)}".removesuffix(", ")
-    text = (f"{f'In {at}, the' if at else 'The'} statement as printed "
-            f"{sizerules.fails_holds_text(facts['fails'], facts['holds'])}")
+    if c.place:
+        # the misprint sits beside the labelled statements (in a proof, a remark, a paragraph): named first, so
+        # that the authors do not look for it in a correct theorem
+        lead = escape("In ") + words(c.place) + escape(f" (involves: {at}), the " if at else ", the")
+    else:
+        lead = escape(f"In {at}, the " if at else "The ")
+    text = f"statement as printed {sizerules.fails_holds_text(facts['fails'], facts['holds'])}"
     small = small_witness_of(c)
     if small is not None:
         text += f". A witness to check by hand, at size {small[0].size}, follows"
@@ -840,7 +876,7 @@ def _erratum_note(c: ClaimResults, facts: dict[str, Any], escape=lambda s: s, co
             text += f", seed {w.seed}"
         if w.residual:
             text += f", residual {short(w.residual, 120)}"
-    text = escape(text + ".")
+    text = lead + escape(text + ".")
     if facts["verified"]:
         text += escape(" It holds at every size checked with the correction: ") \
             + escape("; or ").join(correction(v) for v in facts["verified"]) + escape(".")
@@ -868,7 +904,8 @@ def _errata_body(claims: list[ClaimResults], escape: Callable[[str], str], errat
 def _md_erratum(c: ClaimResults) -> list[str]:
     facts = _erratum_facts(c)
     out = [f"### `{c.id}` {_md_escape(labels(c.paper))}".rstrip(), ""]
-    out += [f"**{_note_heading(c)}** {_md_escape(_erratum_note(c, facts, correction=lambda v: _with_change(c, v)))}",
+    out += [f"**{_note_heading(c)}** "
+            f"{_md_escape(_erratum_note(c, facts, correction=lambda v: _with_change(c, v), words=unicode_words))}",
             ""]
     st = _md_statement(c.statement)
     if st:
@@ -897,13 +934,20 @@ def _md_erratum(c: ClaimResults) -> list[str]:
     return _md_erratum_tail(c, facts, w, out)
 
 
+def _shown(items: Sequence[Any], limit: int) -> int:
+    """How many of ``items`` a list shows when it shows at most ``limit`` and says how many more: all of them
+    when only one would be left, which takes no more room than the line that says so."""
+    return len(items) if len(items) <= limit + 1 else limit
+
+
 def _md_erratum_tail(c: ClaimResults, facts: dict[str, Any], w: Result, out: list[str]) -> list[str]:
     others = [x for x in facts["reruns"] if x != w.rerun]
     if others:
         out += ["Every other failure, reproducible with:", ""]
-        out += [f"- {_md_code(x)}" for x in others[:MAX_ERRATUM_RERUNS]]
-        if len(others) > MAX_ERRATUM_RERUNS:
-            out.append(f"- … and {len(others) - MAX_ERRATUM_RERUNS} more (in results.json)")
+        shown = _shown(others, MAX_ERRATUM_RERUNS)
+        out += [f"- {_md_code(x)}" for x in others[:shown]]
+        if len(others) > shown:
+            out.append(f"- … and {len(others) - shown} more (in results.json)")
         out.append("")
     # the verified corrections are in the note for the authors and in the list of candidates below: not
     # a third time here
@@ -1211,6 +1255,14 @@ def _errata_words(errata: list[ClaimResults]) -> str:
     return words
 
 
+def _placed(c: ClaimResults, labelled: str, words: Callable[[str], str]) -> str:
+    """An erratum in the list after the headline: its labels, or, where the misprint sits beside them, "in <place>
+    (involves: <labels>)" (``labelled``: the labels as the document sets them; ``words`` sets the place)."""
+    if not c.place:
+        return labelled
+    return f"in {words(c.place)}" + (f" (involves: {labelled})" if labelled else "")
+
+
 def _listed_correction(c: ClaimResults, words: Callable[[str], str]) -> str:
     """The correction named beside an erratum in the list after the headline: a verified one only."""
     verified = _erratum_facts(c)["verified"]
@@ -1244,7 +1296,7 @@ def render_latex(results: Sequence[Result], meta: dict[str, Any] | None = None, 
               if not unexpected else f"\\textbf{{{unexpected} verdicts not as expected.}}"), ""]
     if errata:
         out += [tex_escape("Fails as printed:")]
-        out += _tex_items([r"\texttt{" + tex_escape(c.id) + "} " + tex_labels(c.paper)
+        out += _tex_items([r"\texttt{" + tex_escape(c.id) + "} " + _placed(c, tex_labels(c.paper), tex_words)
                            + _listed_correction(c, tex_words)
                            for c in errata])
     if not detail:
@@ -1523,7 +1575,8 @@ def _fit_derivation(chunk: str) -> str:
 def _tex_erratum(c: ClaimResults, reruns: int = MAX_ERRATUM_RERUNS) -> list[str]:
     facts = _erratum_facts(c)
     out = [_tex_claim_heading(c)]
-    out += [r"\textbf{" + _note_heading(c) + "} " + _erratum_note(c, facts, tex_escape, lambda v: _tex_with_change(c, v)), ""]
+    out += [r"\textbf{" + _note_heading(c) + "} "
+            + _erratum_note(c, facts, tex_escape, lambda v: _tex_with_change(c, v), tex_words), ""]
     if c.statement.strip():
         out += [r"As printed:\nopagebreak", tex_display(c.statement)]
     w = c.failures[0]
@@ -1555,9 +1608,10 @@ def _tex_erratum_tail(c: ClaimResults, facts: dict[str, Any], w: Result, out: li
                       reruns: int = MAX_ERRATUM_RERUNS) -> list[str]:
     others = [x for x in facts["reruns"] if x != w.rerun]
     if others:
-        more = [f"… and {len(others) - reruns} more (in results.json)"] if len(others) > reruns else []
+        shown = _shown(others, reruns)
+        more = [f"… and {len(others) - shown} more (in results.json)"] if len(others) > shown else []
         out += ["Every other failure, reproducible with:"] + _tex_items(
-            [_tt(x) for x in others[:reruns]] + [tex_escape(m) for m in more])
+            [_tt(x) for x in others[:shown]] + [tex_escape(m) for m in more])
     # the verified corrections are in the note for the authors and in the list of candidates below: not
     # a third time here
     return out + _tex_corrections(c)

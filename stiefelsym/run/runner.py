@@ -129,7 +129,7 @@ def _guarded(claim: Claim, size: Size | None, method: str, seed: int, func: Call
 
     In a worker, MemoryError is left to the pool (which reports the memory budget and
     replaces the worker)."""
-    from stiefelsym.methods.dimension_free import stated_on
+    from stiefelsym.methods.families import stated_on
     before = statement_state(claim)
     with stated_on(claim, func):
         res = _guarded_on(claim, size, method, seed, func, hard, in_worker, timeout)
@@ -194,7 +194,7 @@ def shared_size(claim: Claim, size: Size | None, func: Callable | None = None, s
     record by the graphs at (n, r) and (n, r0)."""
     if size is None or claim.realization != "standard":
         return None
-    from stiefelsym.methods.dimension_free import stated_on
+    from stiefelsym.methods.families import stated_on
     with stated_on(claim, func):
         return _shared_size(claim, size, func, screen)
 
@@ -289,7 +289,7 @@ def graph_digest(claim: Claim, size: Size | None, func: Callable | None = None) 
     families of sizes (r = 1 and r = n, ...) that traces on each family but not on every size has the
     digest of its graphs on its families (those the dimension-free method proves it on)."""
     from stiefelsym.ir import _compiled_graph as compile_claim
-    from stiefelsym.methods.dimension_free import stated_on
+    from stiefelsym.methods.families import stated_on
     from stiefelsym.scene import REALIZATIONS
     cons = REALIZATIONS[claim.realization]
     try:
@@ -299,7 +299,7 @@ def graph_digest(claim: Claim, size: Size | None, func: Callable | None = None) 
     except Exception:   # noqa: BLE001 - the run's verdict already says why the claim does not trace
         if size is not None:
             return ""
-    from stiefelsym.methods.dimension_free import size_families
+    from stiefelsym.methods.families import size_families
     try:
         families, _why = size_families(claim)
     except Exception:   # noqa: BLE001 - the statement's admits() raised: the run's verdict says it
@@ -499,7 +499,7 @@ def _finish(res: Result, claim: Claim, variant: str | None, hard: str | None = N
         res.message = f"the claim's erratum sizes (fails_at) could not be evaluated: {_describe(exc)}"
         res.expected, erratum = False, False
     if erratum:
-        res.erratum = claim.erratum
+        res.erratum, res.place = claim.erratum, claim.place     # what is wrong, and where it is printed
     res.rerun = rerun_command(res, hard)
     return res
 

@@ -284,7 +284,7 @@ def _claim_data(c: Claim, needed: Sequence[tuple[int, int]] = ()) -> dict:
         "id": c.id, "paper": list(c.paper), "kind": c.kind, "section": c.section, "statement": c.statement,
         "title": c.title, "realization": c.realization, "expect": c.expect, "exact_max_n": c.exact_max_n,
         "exact_max_r": [list(p) for p in c.exact_max_r], "exact_corank": [list(p) for p in c.exact_corank],
-        "erratum": c.erratum, "equivariance": c.equivariance, "source": c.source, "path": path,
+        "erratum": c.erratum, "place": c.place, "equivariance": c.equivariance, "source": c.source, "path": path,
         "line": line if type(line) is int else 0, "name": getattr(c.func, "__name__", c.id),
         "sizes": {"list": [list(p) for p in listed], "n_min": spec.n_min, "r_min": spec.r_min,
                   "r_max": spec.r_max, "n_max": spec.n_max, "r_is_n": bool(spec.r_is_n),
@@ -906,7 +906,8 @@ def _claim(d: Any, path: str, confinement: str = "namespaces") -> Claim:
               free_max_r=_get(d, "free_max_r", int, optional=True) or 0,
               corrections=corrections, source=_get(d, "source", str),
               fails_at=None if fails is None else _Lookup("erratum sizes (fails_at)", fails),
-              erratum=_get(d, "erratum", str), equivariance=_get(d, "equivariance", str), reviewed=False)
+              erratum=_get(d, "erratum", str), place=_get(d, "place", str, optional=True) or "",
+              equivariance=_get(d, "equivariance", str), reviewed=False)
     for k in range(len(corrections)):
         try:
             c.corrected(k)               # a correction's symbolic budget is validated as the claim's

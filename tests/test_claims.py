@@ -1,0 +1,84 @@
+"""The claim model: the place of an erratum's misprint (``place=``), typed and validated like the other fields."""
+from __future__ import annotations
+
+import pytest
+
+from stiefelsym.claims import Claim, admissible
+
+
+def _claim(**fields) -> Claim:
+    return Claim(id="c", paper=("NEUMANN2",), kind="dim", section="7", func=lambda s: {},
+                 sizes=admissible(n_max=3), **fields)
+
+
+def test_an_erratum_may_name_the_place_of_its_misprint():
+    c = _claim(fails_at=lambda n, r: r < n, erratum="h is r x r.", place="the proof of Theorem 7.1")
+    assert c.place == "the proof of Theorem 7.1"
+    assert _claim(fails_at=lambda n, r: True, erratum="h is r x r.").place == ""
+    assert _claim(fails_at=lambda n, r: True, erratum="x", place="Remark 4.2, after Theorem 4.5").place
+
+
+@pytest.mark.parametrize("place, words", [
+    ("the proof of Theorem 7.1.", "without a full stop"),
+    ("the display on p. 32", "names no page"),
+    ("the display on page 32", "names no page"),
+    ("In the proof of Theorem 7.1", 'does not begin with "in"'),
+    ("the proof\nof Theorem 7.1", "one line"),
+    ("the proof of  Theorem 7.1", "repeated spaces"),
+    ("x" * 200, "at most 160"),
+    ("the display $h + v$", "without $"),
+    (7, "a phrase"),
+])
+def test_a_place_is_a_phrase_the_report_can_say(place, words):
+    with pytest.raises(ValueError, match="place") as info:
+        _claim(fails_at=lambda n, r: True, erratum="h is r x r.", place=place)
+    assert words in str(info.value)
+
+
+def test_a_place_belongs_to_an_erratum():
+    with pytest.raises(ValueError, match="without erratum="):
+        _claim(place="the proof of Theorem 7.1")
+
+
+def test_the_decorator_registers_the_place_as_one_line():
+    from stiefelsym.claims import Registry, _ACTIVE, claim
+    reg = Registry()
+    _ACTIVE.append(reg)
+    try:
+        @claim("placed", paper="NEUMANN2", kind="dim", section="7", sizes=admissible(n_max=2),
+               fails_at=lambda n, r: True, erratum="h is r x r.", place="""the proof of
+               Theorem 7.1""")
+        def placed(s):
+            """A claim with a place."""
+            return {}
+    finally:
+        _ACTIVE.pop()
+    assert reg.get("placed").place == "the proof of Theorem 7.1"
+
+
+def test_every_erratum_in_the_referees_table_is_located(catalog):
+    """The errata of the referee's table of stop 67 (§2.4): the misprint sits beside a correct numbered result."""
+    for cid, place in (("adjoint-orbit-regularity", "the paragraph before Lemma 2.5"),
+                       ("neumann2-h-size", "the proof of Theorem 7.1"),
+                       ("spectral-curve-identity-size", "the unnumbered display of the spectral curve before (4) §8"),
+                       ("manakov-curve-identity-size", "before Theorem 8.6"),
+                       ("vv-printed-shape", "the proof of Theorem 8.5"),
+                       ("gen-chasles-momentum-ranges", "the display in the proof of Theorem 8.2"),
+                       ("ym-monopole", "the paragraph after Proposition 9.1"),
+                       ("cpb-reduction-stiefel", "Symmetric Clebsch–Perelomov–Bogoyavlenski rigid body systems"),
+                       ("gram-not-in-involution-with-psi", "Remark 4.2, after Theorem 4.5")):
+        assert place in catalog.get(cid).place, cid
+
+
+def test_the_runner_writes_the_place_into_an_erratums_record(catalog):
+    """The runner stamps the claim's place next to its erratum text on each record of a documented erratum (so
+    that a record made by the library, by `check` or by a claims file carries it as one made by `verify`), and
+    on no other record."""
+    from stiefelsym.claims import Size
+    from stiefelsym.run.runner import run_one
+    c = catalog.get("vv-printed-shape")
+    failing = run_one(c, Size(2, 1), "modular", 0)
+    assert failing.verdict == "fails" and failing.erratum == c.erratum
+    assert failing.place == c.place and "Theorem 8.5" in failing.place
+    holding = run_one(catalog.get("neumann-flow"), Size(2, 1), "modular", 0)
+    assert holding.place == "" and holding.erratum == ""
