@@ -87,6 +87,20 @@ def _environments(tex: str) -> dict[str, str]:
     return out
 
 
+def _source_sections(tex: str) -> dict[str, str]:
+    """label -> the number of the section it stands in, counted in the source (the paper's sections,
+    appendices included, are numbered in order): an unnumbered display's reference prints the last
+    numbered item's number, not its section's."""
+    out: dict[str, str] = {}
+    count = 0
+    for m in re.finditer(r"\\section(\*?)\{|\\label\{([^}]*)\}", tex):
+        if m.group(2) is not None:
+            out.setdefault(m.group(2), str(count) if count else "")
+        elif not m.group(1):        # \section*: no number
+            count += 1
+    return out
+
+
 def build(tex_path: Path) -> dict[str, PaperRef]:
     """Compile a copy of the paper with hyperref (two pdflatex passes, errors tolerated) and read
     every label's printed number, environment and section."""
@@ -99,12 +113,14 @@ def build(tex_path: Path) -> dict[str, PaperRef]:
         for _ in range(2):
             subprocess.run(["pdflatex", "-interaction=nonstopmode", "paper.tex"], cwd=tmp, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, timeout=300, check=False)
         aux = (Path(tmp) / "paper.aux").read_text(encoding="utf-8", errors="replace")
-    envs = _environments(tex)
+    envs, sections = _environments(tex), _source_sections(tex)
     out: dict[str, PaperRef] = {}
     for key, (number, page, anchor) in sorted(_aux_labels(aux).items()):
         counter, _, where = anchor.partition(".")
         section = where.split(".")[0]
         kind = counter if counter in ("section", "equation") else (envs.get(key) or "Theorem")
+        if kind == "display":
+            section = sections.get(key, section)
         out[key] = PaperRef(kind=kind, number=number, section=section, page=page)
     return out
 
@@ -135,6 +151,6 @@ def printed(label: str) -> str:
         return f"({ref['number']}) §{ref['section']}"
     if ref["kind"] == "section":
         return f"§{ref['number']}"
-    if ref["kind"] == "display":
-        return f"unnumbered display, p. {ref['page']}"
+    if ref["kind"] == "display":      # its page depends on the paper's build: named by its section
+        return f"unnumbered display in §{ref['section']}" if ref["section"] else "unnumbered display"
     return f"{ref['kind']} {ref['number']}"

@@ -24,6 +24,16 @@ def test_references_print_as_the_paper_prints_them():
     assert paperref.printed("not-a-label") == "(not-a-label)"
 
 
+def test_an_unnumbered_display_is_named_by_its_section_not_its_page():
+    """A display has no number of its own, and its page depends on the paper's build: it is named by the
+    section it stands in, counted in the source (the appendices are §9 and §10)."""
+    assert paperref.printed("VVB") == "unnumbered display in §8"
+    assert paperref.printed("P_p") == "unnumbered display in §8"
+    assert paperref.printed("LA4*C") == "unnumbered display in §10"
+    assert paperref._source_sections("\\section{A} \\label{a} \\section*{B} \\label{b} \\section{C} \\label{c}") \
+        == {"a": "1", "b": "1", "c": "2"}
+
+
 @pytest.mark.skipif(not PAPER.exists() or shutil.which("pdflatex") is None,
                     reason="the paper's source or pdflatex is not here")
 def test_the_committed_table_is_what_the_paper_compiles_to():
