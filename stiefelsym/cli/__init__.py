@@ -429,8 +429,9 @@ def _run_log(results: list[Result], meta: dict[str, Any]) -> str:
     return json.dumps(log, indent=0) + "\n"
 
 
-def _write_reports(d: Path, results: list[Result], meta: dict[str, Any]) -> list[Path]:
-    """Render everything first, then write each file atomically."""
+def _write_reports(d: Path, results: list[Result], meta: dict[str, Any], catalog: Any = None) -> list[Path]:
+    """Render everything first, then write each file atomically (witness scripts for the claims of ``catalog``,
+    the ids of the reviewed catalog's claims among those run)."""
     mutation = _mutation(d)
     fixed, fixed_meta = stable(results, meta)
     texts = {"results.json": dump_results(fixed, fixed_meta),
@@ -439,7 +440,7 @@ def _write_reports(d: Path, results: list[Result], meta: dict[str, Any]) -> list
              "verification-runs.tex": _report.render_latex(fixed, fixed_meta, mutation=mutation, detail=True),
              "run-log.json": _run_log(results, meta)}
     from stiefelsym.methods.witness_scripts import TEMPLATE_DIR, scripts
-    for name, text in scripts(fixed, lambda r: _report.labels(r.paper)).items():
+    for name, text in scripts(fixed, lambda r: _report.labels(r.paper), catalog).items():
         texts[f"{TEMPLATE_DIR}/{name}"] = text
     paths = []
     for name, text in texts.items():
@@ -984,7 +985,7 @@ def _verify(out: Any, ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tu
                            err=True)
         if target is not None:
             try:
-                paths = _write_reports(target, results, meta)
+                paths = _write_reports(target, results, meta, {c.id for c in claims if c.reviewed})
             except OSError as exc:  # the disk filled up or the directory vanished meanwhile
                 raise InputError(f"cannot write reports to {target}: {exc.strerror or exc}") from None
             click.echo(f"reports: {', '.join(str(p) for p in paths)}", err=True)
@@ -1151,6 +1152,7 @@ def report(results_file: Path | None, report_dir: Path | None, claims_files: tup
     except (OSError, ValueError, KeyError, TypeError, AttributeError, RecursionError) as exc:
         raise InputError(f"{source} is not a stiefelsym results file: {_one_line(exc)}") from None
     from stiefelsym.run.integrity import (MAX_N_CHECKED, certificate_binding_problems, certificate_problems, claim_field_edits,
+                            declared_edits,
                             missing_runs, rerun_problems, run_origin, size_method_problems,
                             unbound_graphs, unstated_runs)
     from stiefelsym.methods.hard import HARD_CASES
@@ -1186,28 +1188,18 @@ def report(results_file: Path | None, report_dir: Path | None, claims_files: tup
             raise InputError(f"{source}: refused, record of {cid!r}: its {', '.join(edits)} "
                              f"{'is' if len(edits) == 1 else 'are'} not the claim's (`stiefelsym check` re-checks "
                              "every record)")
-    for r in results:                # the flag "as expected" and the erratum are the registered claim's, not the file's
+    for r, record in zip(results, records):   # the flag "as expected", the erratum and its place are the claim's
         claim_of = registry.get(r.claim)
-        try:
-            expected, erratum = _runner().expected_of(claim_of, r.method, r.verdict, r.n, r.r, r.variant)
-        except Exception:   # noqa: BLE001 - the claim's erratum sizes cannot say here (check runs it again)
-            continue
-        if expected != r.expected:
-            raise InputError(f"{source}: refused, record of {r.claim!r} {r.size} {r.method}: it says the verdict "
-                             f"{r.verdict!r} is {'' if r.expected else 'not '}the one the claim expects, and the "
-                             "claim's statement says otherwise (`stiefelsym check` re-checks every record)")
-        if (r.erratum or "") != ((claim_of.erratum or "") if erratum else ""):
-            raise InputError(f"{source}: refused, record of {r.claim!r} {r.size} {r.method}: its erratum (what the "
-                             "report says is wrong in the paper) is not the one the claim declares for this verdict "
-                             "(`stiefelsym check` re-checks every record)")
-        # the place of the misprint goes with the erratum: the claim's, or none in a record written before records
-        # carried it (the report then gives the claim's)
-        place = claim_of.place if erratum else ""
-        if r.place and r.place != place:
-            raise InputError(f"{source}: refused, record of {r.claim!r} {r.size} {r.method}: its place of the misprint "
-                             f"({r.place!r}) is not the one the claim declares for this verdict "
-                             f"({repr(place) if place else 'none'})")
-        r.place = place
+        # a record written before records carried the place of its misprint reads as one with an empty place
+        # (the report gives it the claim's, below)
+        bound = {k: v for k, v in record.items() if k != "place" or v}
+        declared = declared_edits(bound, claim_of, getattr(_runner(), "expected_of", None))
+        if declared:
+            raise InputError(f"{source}: refused, record of {r.claim!r} {r.size} {r.method}: its "
+                             f"{', '.join(declared)} {'is' if len(declared) == 1 else 'are'} not what the claim "
+                             "declares for this verdict (whether it is the expected one, what the report says is "
+                             "wrong in the paper, and where) (`stiefelsym check` re-checks every record)")
+        r.place = claim_of.place if r.erratum else ""
     strangers = unbound_graphs(records, user) if user is not None else []
     if strangers:
         raise InputError(f"{source}: refused, {len(strangers)} record(s) of a claims file whose graph is not its claim's "

@@ -87,12 +87,14 @@ def template_size(cid: str) -> tuple[int, int] | None:
 def count_values(detail: str) -> tuple[int, int] | None:
     """(computed, printed) from the detail of a Count or Rank check: "...: 1 (paper: 0)", or
     "... rank 12 over the function field ...; paper: 13", "... exact rank 12 over Q, ...; paper: 13"."""
-    m = re.search(r"(\d+) \((?:paper|claimed): (\d+)\)", detail)
-    if m:
-        return int(m.group(1)), int(m.group(2))
-    k = re.search(r"rank (\d+) (?:over the function field|over Q\b|at an exact)", detail)
-    p = re.search(r"(?:paper|claimed): (\d+)", detail)
-    return (int(k.group(1)), int(p.group(1))) if k and p else None
+    # the claim's own words (its count's meaning, its rank's name) come first and may quote numbers of their
+    # own; the engine's numbers follow them: the last match is the engine's
+    pairs = re.findall(r"(\d+) \((?:paper|claimed): (\d+)\)", detail)
+    if pairs:
+        return int(pairs[-1][0]), int(pairs[-1][1])
+    ks = re.findall(r"rank (\d+) (?:over the function field|over Q\b|at an exact)", detail)
+    ps = re.findall(r"(?:paper|claimed): (\d+)", detail)
+    return (int(ks[-1]), int(ps[-1])) if ks and ps else None
 
 
 def count_meaning(detail: str) -> str:
@@ -253,12 +255,14 @@ def run_script(text: str) -> tuple[int, str]:
     return status, out.getvalue()
 
 
-def scripts(results: list[Any], labels_of: Any) -> dict[str, str]:
-    """{file name: text} of every witness script and its output, for the results' small witnesses."""
+def scripts(results: list[Any], labels_of: Any, catalog: Any = None) -> dict[str, str]:
+    """{file name: text} of every witness script and its output, for the results' small witnesses of the
+    claims in ``catalog`` (ids; None: every claim): a template recomputes the paper's formula of the
+    catalog's claim of that id, not a claim of a user's file that reuses the id."""
     files: dict[str, str] = {}
     for r in results:
         w = r.witness.get("small") if isinstance(r.witness, dict) else None
-        if not isinstance(w, dict) or r.variant:
+        if not isinstance(w, dict) or r.variant or (catalog is not None and r.claim not in catalog):
             continue
         text = script_text(r.claim, labels_of(r), r.n, r.r, w)
         if text is None or f"{r.claim}.py" in files:

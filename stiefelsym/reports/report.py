@@ -863,7 +863,7 @@ def _erratum_note(c: ClaimResults, facts: dict[str, Any], escape=lambda s: s, co
     if c.place:
         # the misprint sits beside the labelled statements (in a proof, a remark, a paragraph): named first, so
         # that the authors do not look for it in a correct theorem
-        lead = escape("In ") + words(c.place) + escape(f" (involves: {at}), the " if at else ", the")
+        lead = escape("In ") + words(c.place) + escape(f" (involves: {at}), the " if at else ", the ")
     else:
         lead = escape(f"In {at}, the " if at else "The ")
     text = f"statement as printed {sizerules.fails_holds_text(facts['fails'], facts['holds'])}"

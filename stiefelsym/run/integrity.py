@@ -117,6 +117,25 @@ def claim_field_edits(record: dict, claim: Any) -> list[str]:
     return [k for k in CLAIM_FIELDS if _canonical(record.get(k)) != _canonical(own[k])]
 
 
+def declared_edits(record: dict, claim: Any, policy: Callable | None = None) -> list[str]:
+    """The fields in which a record differs from what its registered claim's declaration gives for its
+    method, size, variant and verdict (:func:`stiefelsym.run.runner.declared_fields`): ``expected``,
+    ``erratum``, ``place`` (compared where the record has the field: a record written before records carried
+    it has none, and the report gives the claim's), and ``verdict`` where the claim's erratum sizes raise (the
+    run then records an error).  For every verdict: a flag of an ``error`` or ``inconclusive`` record is
+    decided by the claim as much as that of a proof."""
+    from stiefelsym.run.runner import declared_fields
+    own = declared_fields(claim, record.get("method"), record.get("verdict"), record.get("n"), record.get("r"),
+                          record.get("variant"), policy)
+    out = [k for k in ("expected", "erratum") if _canonical(record.get(k) or (False if k == "expected" else ""))
+           != _canonical(own[k])]
+    if "place" in record and (record.get("place") or "") != own["place"]:
+        out.append("place")
+    if own.get("verdict") is not None and record.get("verdict") != own["verdict"]:
+        out.append("verdict")
+    return out
+
+
 def _evidence_edits(record: dict, again: dict) -> list[str]:
     """The evidence fields of a decided record that differ from a run again (none for a verdict that
     depends on time: inconclusive, error)."""
@@ -531,6 +550,12 @@ def check_results(records: list[dict], registry: Registry, echo: Callable[[str],
         if edits:
             echo(f"REJECTED {where}: the record's {', '.join(edits)} {'is' if len(edits) == 1 else 'are'} not "
                  "the claim's (the words of a record are its claim's, not the file's)")
+            bad += 1
+            continue
+        declared = declared_edits(r, claim)
+        if declared:
+            echo(f"REJECTED {where}: the record's {', '.join(declared)} {'is' if len(declared) == 1 else 'are'} not "
+                 "what the claim declares for its verdict (whether it is the expected one, the erratum and its place)")
             bad += 1
             continue
         size = None if n is None else Size(n, rr)

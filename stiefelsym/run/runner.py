@@ -15,7 +15,7 @@ import functools
 import hashlib
 import shlex
 import time
-from typing import Callable, Iterable, Iterator, Sequence
+from typing import Any, Callable, Iterable, Iterator, Sequence
 
 from stiefelsym.claims import Claim, Registry, Size, statement_state
 from stiefelsym.methods.hard import hard_case
@@ -473,6 +473,27 @@ def expected_of(claim: Claim, method: str, verdict: str, n: int | None, r: int |
     if erratum:                       # a documented erratum: expected to fail as printed, here
         return verdict == "fails", erratum
     return verdict in PASSING, erratum
+
+
+#: what :func:`_finish` records of a run whose claim's erratum sizes (fails_at) raised: an error, not expected, no erratum
+FAILS_AT_BROKE = {"verdict": "error", "expected": False, "erratum": "", "place": ""}
+
+
+def declared_fields(claim: Claim, method: str, verdict: str, n: int | None, r: int | None,
+                    variant: str | None, policy: Callable | None = None) -> dict[str, Any]:
+    """The fields of a record that the registered claim's declaration decides from the run's method, size,
+    variant and verdict, as :func:`_finish` writes them: ``expected``, ``erratum`` (the claim's text where the
+    size is a documented erratum) and ``place`` (where its misprint sits); where the claim's erratum sizes
+    raise, :data:`FAILS_AT_BROKE` (with the verdict ``error`` the run then records).  One function for
+    ``stiefelsym check`` and ``stiefelsym report --results``: a record's flags are checked for every verdict,
+    those of a run that depends on time (inconclusive, error) included.  ``policy``: :func:`expected_of` unless
+    given (the command line's runner's)."""
+    try:
+        expected, erratum = (policy or expected_of)(claim, method, verdict, n, r, variant)
+    except Exception:   # noqa: BLE001 - the claim's own fails_at broke: what the run records then
+        return dict(FAILS_AT_BROKE)
+    return {"expected": expected, "erratum": claim.erratum if erratum else "",
+            "place": claim.place if erratum else ""}
 
 
 def _erratum_at_a_stated_size(claim: Claim) -> bool:
