@@ -141,6 +141,9 @@ def test_show_documents_a_known_erratum(fake, run, catalog):
     out = run("show", "ddim").stdout
     assert "erratum:     fails as printed at (3,2) (3,3): the printed count misses the Pfaffian" in out
     assert "except where the erratum below says" in out
+    assert "misprinted:" not in out
+    object.__setattr__(c, "place", "the proof of Theorem 7.1")
+    assert "misprinted:  in the proof of Theorem 7.1" in run("show", "ddim").stdout
 
 
 def test_show_unknown_claim_is_one_line(fake, run):

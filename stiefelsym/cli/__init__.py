@@ -1081,6 +1081,8 @@ def show(claim_id: str, claims_files: tuple[str, ...]) -> None:
                    + (f": {_one_line(c.erratum)}" if c.erratum else ""))
     if unanswered:
         click.echo(f"erratum:     its sizes (fails_at) cannot be evaluated at the listed sizes ({unanswered})")
+    if c.place:
+        click.echo(f"misprinted:  in {c.place}")
     for corr in c.corrections:
         click.echo(f"correction:  {corr.description}"
                    + ("" if not (corr.exact_max_r or corr.exact_corank) else "; exact symbolic method also"
