@@ -70,3 +70,27 @@ def test_a_first_trace_that_is_not_the_mutants_is_refused():
     ir.first_trace(f, None, None, CONS, b.made[None])
     with pytest.raises(NotDeterministic):
         compile_claim(f, None, None, CONS)
+
+
+def test_a_source_mutant_of_the_catalog_is_traced_once_per_size_while_no_claims_file_is_in(monkeypatch):
+    """trace_once: a function the mutation analysis made from the reviewed catalog's own source is traced once
+    per size (no second trace to compare: an edit of one operator of a deterministic function adds no state);
+    another function is traced twice; and once a claims file has been imported into the process (the seal),
+    even a registered function is traced twice again."""
+    import stiefelsym.ir.seal as seal
+
+    def edited(s):
+        return {"sym": s.X.T @ s.P - s.P.T @ s.X}
+
+    def plain(s):
+        return {"sym": s.X.T @ s.P - s.P.T @ s.X}
+    ir.trace_once(edited)
+    assert _traces_of(monkeypatch, lambda: compile_claim(plain, None, None, CONS)) == 2
+    assert _traces_of(monkeypatch, lambda: compile_claim(edited, None, None, CONS)) == 1
+    assert compile_claim(edited, None, None, CONS).digest() == compile_claim(plain, None, None, CONS).digest()
+
+    def sealed_twin(s):
+        return {"sym": s.X.T @ s.P - s.P.T @ s.X}
+    ir.trace_once(sealed_twin)
+    monkeypatch.setattr(seal, "sealed", lambda: True)
+    assert _traces_of(monkeypatch, lambda: ir._compile(sealed_twin, None, None, CONS, cached=False)) == 3   # and the replay

@@ -1591,6 +1591,10 @@ def _claim_task(ci: int) -> _ClaimRun:
         skipped = "no size at which the printed statement is expected to hold, and no method to run"
     else:
         skipped = ""
+    if claim.reviewed and made_on == ON_SOURCE:
+        from stiefelsym.ir import trace_once
+        for m in muts:           # edits of the catalog's own source: traced once per size (no determinism check)
+            trace_once(m.func)
     run = _ClaimRun(len(muts), skipped, None, [], 0.0, "" if skipped else made_on, fallback,
                     {} if census is None else {k: v for k, v in asdict(census).items() if k != "refusals"},
                     "" if skipped else scope)

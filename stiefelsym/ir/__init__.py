@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import pickle
 import threading
+import weakref
 from collections import OrderedDict
 from typing import Any, Callable
 
@@ -161,6 +162,9 @@ def _compile(func: Callable, n: int | None, r: int | None, constraints: tuple[st
             on_family = _compile(func, None, None, constraints, family=fam)
             if isinstance(on_family, Graph):
                 return _same_at_numbers(func, on_family, n, r, constraints, fam)
+    if twice and func in _ONCE:
+        from stiefelsym.ir.seal import sealed
+        twice = sealed()         # a mutant of the reviewed catalog, while no claims file is in the process: once
     # by identity: a callable's own __eq__ is never asked; a graph traced once is kept apart from one
     # traced twice (a trace compared with itself is no determinism check)
     key = (id(func), n, r, family, constraints[0], twice)
@@ -188,6 +192,18 @@ def _compile(func: Callable, n: int | None, r: int | None, constraints: tuple[st
         exc._first_traceback = exc.__traceback__      # type: ignore[attr-defined]
         out = exc
     return _remember(key, func, out) if cached else out
+
+
+#: the functions traced once per size instead of twice (:func:`trace_once`)
+_ONCE: "weakref.WeakSet[Callable]" = weakref.WeakSet()
+
+
+def trace_once(func: Callable) -> None:
+    """Trace ``func`` once per size, not twice: for the mutants the mutation analysis makes of the reviewed
+    catalog's own functions (one operator, leaf or constant of a function whose two traces agree, edited in its
+    source: an edit that adds no state).  Honoured only while no claims file has been imported into the process
+    (:func:`.seal.sealed`): a claims file's function is always traced twice, and compared."""
+    _ONCE.add(func)
 
 
 def _replayed(func: Callable, g: Graph, n: int | None, r: int | None, constraints: tuple[str, Callable],

@@ -3523,9 +3523,13 @@ def _run_exact_isolated(claim: Claim, n: int, r: int, seed: int, func: Callable 
 
 def _describe(exc: BaseException) -> str:
     import traceback
-    frames = [f for f in traceback.extract_tb(exc.__traceback__)
-              if "/stiefelsym/" not in f.filename and not f.filename.startswith("<")]
-    where = f" (at {frames[-1].filename}:{frames[-1].lineno})" if frames else ""
+    where = ""
+    # the innermost frame outside the engine (the claim's line); walk_tb reads each frame's file and line only,
+    # where extract_tb also works out every frame's columns
+    for frame, lineno in traceback.walk_tb(exc.__traceback__):
+        name = frame.f_code.co_filename
+        if "/stiefelsym/" not in name and not name.startswith("<"):
+            where = f" (at {name}:{lineno})"
     return f"{type(exc).__name__}: {exc}{where}"
 
 
