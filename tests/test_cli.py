@@ -431,9 +431,9 @@ def test_the_place_of_a_misprint_travels_with_the_erratum_and_is_the_claims(fake
         path.write_text(json.dumps(copy))
         return "r/results.json"
     edited = rewritten(lambda x: x.update(place="the remark after Theorem 7.1") if x["claim"] == "prep" else None)
-    assert "its place is not what the claim declares" in _one_line_error(run("report", "--results", edited))
+    assert "its place of the misprint is not the one the claim declares" in _one_line_error(run("report", "--results", edited))
     stray = rewritten(lambda x: x.update(place="the proof of Theorem 7.1") if x["claim"] == "ddim" else None)
-    assert "its place is not what the claim declares" in _one_line_error(run("report", "--results", stray))
+    assert "its place of the misprint is not the one the claim declares" in _one_line_error(run("report", "--results", stray))
     old = rewritten(lambda x: x.pop("place"))
     (tmp_path / "r" / "verification.md").unlink()
     rendered = run("report", "--results", old)

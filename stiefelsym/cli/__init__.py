@@ -1197,10 +1197,15 @@ def report(results_file: Path | None, report_dir: Path | None, claims_files: tup
         bound = {k: v for k, v in record.items() if k != "place" or v}
         declared = declared_edits(bound, claim_of, getattr(_runner(), "expected_of", None))
         if declared:
-            raise InputError(f"{source}: refused, record of {r.claim!r} {r.size} {r.method}: its "
-                             f"{', '.join(declared)} {'is' if len(declared) == 1 else 'are'} not what the claim "
-                             "declares for this verdict (whether it is the expected one, what the report says is "
-                             "wrong in the paper, and where) (`stiefelsym check` re-checks every record)")
+            said = {"expected": f"it says the verdict {r.verdict!r} is {'' if r.expected else 'not '}the one the claim "
+                                "expects, and the claim's statement says otherwise",
+                    "erratum": "its erratum (what the report says is wrong in the paper) is not the one the claim "
+                               "declares for this verdict",
+                    "place": "its place of the misprint is not the one the claim declares for this verdict",
+                    "verdict": "its verdict is not the error a run records where the claim's erratum sizes cannot be "
+                               "evaluated"}
+            raise InputError(f"{source}: refused, record of {r.claim!r} {r.size} {r.method}: "
+                             + "; ".join(said[k] for k in declared) + " (`stiefelsym check` re-checks every record)")
         r.place = claim_of.place if r.erratum else ""
     strangers = unbound_graphs(records, user) if user is not None else []
     if strangers:

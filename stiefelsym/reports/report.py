@@ -1218,35 +1218,54 @@ def headline(claims: list[ClaimResults], paper: bool = True) -> tuple[str, list[
 
 
 #: how a statement failed, in the headline's words (see :func:`_failure_kind`)
-FAILURE_KINDS = {"witness": "with an exact witness",
-                 "identically": "said not to vanish and proved to vanish identically at some size",
-                 "points": "said not to vanish and found zero at every random point drawn at some size",
-                 "bare": "without a witness point"}
+FAILURE_KINDS = {"point": "with an exact witness point (a nonzero residual there)",
+                 "number": "with a number computed exactly against the printed one (a size, dimension, rank or count)",
+                 "identically": "said not to vanish and proved to vanish identically",
+                 "points": "said not to vanish and found zero at every random point drawn",
+                 "bare": "with no witness point"}
 
 
 def _failure_kind(c: ClaimResults) -> str:
-    """``witness``: some failing run has an exact witness (a point with its nonzero residual, or a rank or
-    count computed exactly against the printed one); a statement that something does not vanish was
-    refuted by the exact method (``identically``) or only at random points (``points``); else ``bare``."""
-    if any(witness_lines(r.witness) or any(ch.status in DIMENSION_STATUSES for ch in r.checks)
-           for r in c.failures):
-        return "witness"
+    """``point``: some failing run has an exact witness point (its nonzero residual); ``number``: a rank or count
+    computed exactly against the printed one (a misprinted size or dimension reads so); a statement that something
+    does not vanish was refuted by the exact method (``identically``) or only at random points (``points``); else
+    ``bare``."""
+    if any(witness_lines(r.witness) for r in c.failures):
+        return "point"
+    if any(any(ch.status in DIMENSION_STATUSES for ch in r.checks) for r in c.failures):
+        return "number"
     if c.failures[0].kind == "not":
         return "identically" if any(r.method == "exact" for r in c.failures) else "points"
     return "bare"
 
 
+def _kind_words(kind: str, claims: list[ClaimResults]) -> str:
+    """The headline's words for the failures of one kind; a statement said not to vanish says where it vanishes
+    (the sizes' rule, "where r = 1 or r = n", when the claims of that kind share one), not "at some size"."""
+    words = FAILURE_KINDS[kind]
+    if kind in ("identically", "points"):
+        rules = {sizerules.rule(f["fails"], f["holds"]) or "" for f in map(_erratum_facts, claims)}
+        words += f" where {rules.pop()}" if len(rules) == 1 and "" not in rules else " at some sizes"
+    return words
+
+
 def _errata_words(errata: list[ClaimResults]) -> str:
-    """What the headline says of the failures: how many have an exact witness, and how many of those with a
-    registered correction have one verified (each said only as far as the records show it)."""
+    """What the headline says of the failures: how many have an exact witness point, how many a number computed
+    against the printed one, and how many of those with a registered correction have one verified (each said
+    only as far as the records show it)."""
     if not errata:
         return ""
-    kinds = Counter(_failure_kind(c) for c in errata)
+    by_kind: dict[str, list[ClaimResults]] = {}
+    for c in errata:
+        by_kind.setdefault(_failure_kind(c), []).append(c)
     corrected = [c for c in errata if c.variants]
     verified = sum(bool(_erratum_facts(c)["verified"]) for c in corrected)
     each = "it is" if len(errata) == 1 else "each is"
-    words = (f": {each} an erratum with an exact witness" if set(kinds) == {"witness"} else
-             ": " + ", ".join(f"{kinds[k]} {FAILURE_KINDS[k]}" for k in FAILURE_KINDS if kinds[k]))
+    if set(by_kind) <= {"point", "number"} and len(by_kind) == 1:
+        words = f": {each} an erratum {FAILURE_KINDS[next(iter(by_kind))]}"
+    else:
+        words = ": " + ", ".join(f"{len(by_kind[k])} {_kind_words(k, by_kind[k])}" for k in FAILURE_KINDS
+                                 if k in by_kind)
     if corrected and verified == len(corrected):
         words += ", and where a correction is registered it was verified at every size computed"
     elif corrected:

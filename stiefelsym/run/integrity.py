@@ -552,12 +552,7 @@ def check_results(records: list[dict], registry: Registry, echo: Callable[[str],
                  "the claim's (the words of a record are its claim's, not the file's)")
             bad += 1
             continue
-        declared = declared_edits(r, claim)
-        if declared:
-            echo(f"REJECTED {where}: the record's {', '.join(declared)} {'is' if len(declared) == 1 else 'are'} not "
-                 "what the claim declares for its verdict (whether it is the expected one, the erratum and its place)")
-            bad += 1
-            continue
+        declared = declared_edits(r, claim)      # said after the checks that say more (a run again, a digest)
         size = None if n is None else Size(n, rr)
         claim, func, why = record_graph(r, claim)
         if why:
@@ -635,5 +630,10 @@ def check_results(records: list[dict], registry: Registry, echo: Callable[[str],
                 echo(f"REJECTED {where}: its evidence is not what the dimension-free method again gives "
                      f"({', '.join(edited)})")
                 bad += 1
+                continue
+        if declared:
+            echo(f"REJECTED {where}: the record's {', '.join(declared)} {'is' if len(declared) == 1 else 'are'} not "
+                 "what the claim declares for its verdict (whether it is the expected one, the erratum and its place)")
+            bad += 1
     echo(f"{total} records checked, {bad} rejected")
     return bad
