@@ -10,7 +10,8 @@ import pytest
 from stiefelsym import Size, SizeSpec, admissible
 from stiefelsym.certificate_check import CASES, check_certificate
 from stiefelsym.claims import load_catalog
-from stiefelsym.methods.dimension_free import run_free, size_families
+from stiefelsym.methods.dimension_free import run_free
+from stiefelsym.methods.families import size_families
 from stiefelsym.ir import SizeFamily, TraceRefused, compile_at_size, compile_claim
 from stiefelsym.ir.graph import Size as SizeExpr
 from stiefelsym.reports.report import certificate_summary, free_scope

@@ -40,8 +40,7 @@ from stiefelsym.free.columns import COMPLETE
 from stiefelsym.free.rewriting import latex_text
 from stiefelsym.latex import tex_text, unicode_name
 from stiefelsym.ir import GraphUnavailable, SizeFamily, TraceRefused
-from stiefelsym.methods.families import (  # noqa: F401 - read here, and by the importers of this module
-    R_CHECK_N, declared_by_fields, fixed_r, read_size_families, size_families, stated_on)
+from stiefelsym.methods.families import size_families
 
 
 def run_free(claim: Claim, func: Callable | None = None) -> Result:

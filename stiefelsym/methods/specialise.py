@@ -32,7 +32,8 @@ from stiefelsym.certificate_check import CASES, R1_ONLY, R2_ONLY, SQUARE, Reject
 from stiefelsym.claims import Claim
 from stiefelsym.ir import SizeFamily, _compiled_graph as compile_claim
 from stiefelsym.methods import fixed_size
-from stiefelsym.methods.dimension_free import run_free, run_free_on, size_families
+from stiefelsym.methods.dimension_free import run_free, run_free_on
+from stiefelsym.methods.families import size_families
 from stiefelsym.results import Result
 from stiefelsym.scene import REALIZATIONS
 

@@ -492,6 +492,12 @@ def declared_fields(claim: Claim, method: str, verdict: str, n: int | None, r: i
         expected, erratum = (policy or expected_of)(claim, method, verdict, n, r, variant)
     except Exception:   # noqa: BLE001 - the claim's own fails_at broke: what the run records then
         return dict(FAILS_AT_BROKE)
+    return _flags(claim, expected, erratum)
+
+
+def _flags(claim: Claim, expected: bool, erratum: bool) -> dict[str, Any]:
+    """A record's flags from the policy's answer: whether expected, and at a documented erratum its text and the
+    place of its misprint."""
     return {"expected": expected, "erratum": claim.erratum if erratum else "",
             "place": claim.place if erratum else ""}
 
@@ -519,8 +525,8 @@ def _finish(res: Result, claim: Claim, variant: str | None, hard: str | None = N
         res.verdict = "error"
         res.message = f"the claim's erratum sizes (fails_at) could not be evaluated: {_describe(exc)}"
         res.expected, erratum = False, False
-    if erratum:
-        res.erratum, res.place = claim.erratum, claim.place     # what is wrong, and where it is printed
+    flags = _flags(claim, res.expected, erratum)
+    res.expected, res.erratum, res.place = flags["expected"], flags["erratum"], flags["place"]
     res.rerun = rerun_command(res, hard)
     return res
 

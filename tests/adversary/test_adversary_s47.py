@@ -1,12 +1,12 @@
 """Adversarial review of a98b40c (and e7475a3): the graph of a claim at a size of a family of sizes it is stated on
 (r = 1, r = 2, r = n, unions r_in) is the family's graph (``ir._compile``, ``ir._family_at``,
-``ir._typed_at``), while the engine runs the claim (``methods.dimension_free.stated_on``, entered by
+``ir._typed_at``), while the engine runs the claim (``methods.families.stated_on``, entered by
 ``run.runner._guarded``).
 
 Each test states the CORRECT behaviour.  Three holes were found and are closed (the first three tests): the graph
 traced at the numbers of a size is compared with the family's graph (``ir._same_at_numbers``: a
 claim that tells the two tracings apart has no verdict at that size); the families are read once per claim and
-statement in a process (``dimension_free.size_families``), an exception of admits() included; and a claim that
+statement in a process (``families.size_families``), an exception of admits() included; and a claim that
 changes its own statement while it runs gets ``error`` (``claims.statement_state``, compared by
 ``run.runner._guarded``).  The last test is an older route, open by design (a strict xfail).
 

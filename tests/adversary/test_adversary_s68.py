@@ -82,3 +82,15 @@ def test_the_note_of_an_erratum_with_a_place_reads_as_a_sentence(tmp_path):
         "--report-dir", str(out))
     text = (out / "verification.md").read_text()
     assert "thestatement" not in text and ", the statement as printed fails" in text
+
+
+def test_a_claims_file_cannot_ask_to_be_traced_once():
+    """The stop's own attempt: a claims file registers its claim with ir.trace_once (meant for the catalog's
+    mutants) and says XᵀX = Iᵣ on its first trace, XᵀX = 2Iᵣ after.  The file's process is sealed, so the claim
+    is traced twice and compared as any other: no method passes it, and the verdicts are those of the same file
+    without the call."""
+    from adversary_cli import verdicts_each
+    with_call = verdicts_each("s68/own_trace_once.py", ("exact", "modular", "free"))
+    for method, by_claim in with_call.items():
+        assert by_claim.get("ot-flip") not in ("proved", "checked", "numeric"), (method, by_claim)
+    assert with_call["exact"]["ot-flip"] == "fails" and with_call["modular"]["ot-flip"] == "fails"
