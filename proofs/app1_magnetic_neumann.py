@@ -645,14 +645,13 @@ def monopole_checks(s, sign):
                     "everywhere iff it vanishes at X0 for all P and A",
        fails_at=lambda n, r: True,
        place="the paragraph after Proposition 9.1, on the case n = 3, r = 2",
-       erratum="""The remark after Proposition YM (n = 3, r = 2): with eta = Psi = epsilon E_1 ^ E_2
-       (Psi = X^T P - P^T X), e_3 = e_1 x e_2 (iden1) and so(3) identified with (ℝ³, ×) as Lie algebras,
-       F_Omega = X Psi X^T = epsilon e_1 ^ e_2 = -epsilon ê_3, so the Lorentz force is
-       F_Omega de_3/dt = -epsilon e_3 x de_3/dt, not +epsilon e_3 x de_3/dt: the monopole equation holds as
-       d²e_3/dt² = A e_3 - ((e_3, A e_3) + (de_3/dt, de_3/dt)) e_3 - epsilon e_3 x de_3/dt (equivalently, the
-       printed sign with eta = -epsilon E_1 ^ E_2, a monopole of the opposite charge).  (mag6) itself holds.""",
-       statement=r"n=3,\ \eta=\epsilon E_1\wedge E_2:\quad \ddot e_3=Ae_3-\big((e_3,Ae_3)+(\dot e_3,\dot e_3)\big)e_3"
-                 r"+\epsilon\,e_3\times\dot e_3,\quad F_\Omega\dot e_3=\epsilon\,e_3\times\dot e_3")
+       erratum="""The paragraph after Proposition 9.1, on the case n = 3, r = 2: with η = Ψ = ε E₁ ∧ E₂
+       (Ψ = XᵀP − PᵀX), e₃ = e₁ × e₂ by (3) §7 and so(3) identified with (ℝ³, ×) as Lie algebras,
+       F_Ω = XΨXᵀ = ε e₁ ∧ e₂ = −ε ê₃, so the Lorentz force is F_Ω ė₃ = −ε e₃ × ė₃, not +ε e₃ × ė₃: the
+       monopole equation holds as ë₃ = Ae₃ − ((e₃, Ae₃) + (ė₃, ė₃)) e₃ − ε e₃ × ė₃ (equivalently, the printed
+       sign with η = −ε E₁ ∧ E₂, a monopole of the opposite charge).  (4) §9 itself holds.""",
+       statement=r"n=3,\ \eta=\varepsilon E_1\wedge E_2:\quad \ddot e_3=Ae_3-\big((e_3,Ae_3)+(\dot e_3,\dot e_3)\big)e_3"
+                 r"+\varepsilon\,e_3\times\dot e_3,\quad F_\Omega\dot e_3=\varepsilon\,e_3\times\dot e_3")
 def monopole_form(s):
     """The n = 3 case of Proposition YM: for the normal Neumann flow on V_{3,2} with Ψ = εE₁∧E₂, under so(3) ≅ (ℝ³, ×) and e₃ = e₁ × e₂, the Yang–Mills term of (mag6) is the Lorentz force of a magnetic monopole, F_Ωė₃ = εe₃ × ė₃, so that (mag6), checked here at n = 3, becomes the printed monopole equation."""
     flow, e3, e3dot, F, eps, e3dd = monopole_terms(s)
@@ -763,17 +762,19 @@ def cpb_reduction_checks(s, block):
        sizes=admissible(n_max=5, n_min=3, where=lambda n, r: r == n, condition="r = n >= 3: T*SO(n), n - r >= 2"),
        fails_at=lambda n, r: True,
        place="the last sentence of the paragraph “Symmetric Clebsch–Perelomov–Bogoyavlenski rigid body systems” in §9",
-       erratum="""The paragraph on the symmetric Clebsch-Perelomov-Bogoyavlenski bodies says that for
-       eta_so(r) = 0 the reduction of (Euler), (Poisson) gives the Neumann system with the normal metric on
-       V_{n,r}.  The reduction to V_{n,r} is the one by SO(n-r), and the condition is on its momentum:
-       at a point where Psi_so(r) = 0 but Psi_so(n-r) != 0 (possible when n - r >= 2) the image (X_r, P_r) in
-       T*V_{n,r} does not follow the normal Neumann flow (N0_XP2) (the Yang-Mills field of SO(n-r) acts);
-       it does where Psi_so(n-r) = 0.  Corrected: “if eta_so(n-r) = 0 (eta_so(r) = eta_so(n-r) = 0), we get
-       the Neumann system with the normal metric on V_{n,r} (respectively, the Neumann system on G_{n,r})”.  The
-       sizes (n, n) of this claim are those of the body's T*SO(n) = T*V_{n,n}, not the paper's (n, r): a run at (n, n)
-       checks the printed condition and the correction at each of the paper's r = 1, ..., n - 2 (the image of the
-       first r columns in T*V_{n,r}), so at (3,3), the size of the witness, at r = 1 only.""",
-       statement=r"\eta_{so(r)}=0:\quad (e_1,\dots,e_r),\ P_r=MX_r-\tfrac12X_rX_r^TMX_r\ \text{follow (N0\_XP2) on } T^*V_{n,r}")
+       erratum="""The paragraph on the symmetric Clebsch–Perelomov–Bogoyavlenski bodies says that for
+       eta_so(r) = 0 the reduction of (10) §9 and (7) §9 gives the Neumann system with the normal metric on
+       V_{n,r}.  The reduction to V_{n,r} is the one by SO(n − r), and the condition is on its momentum:
+       at a point where Psi_so(r) = 0 but Psi_so(n−r) ≠ 0 (possible when n − r ≥ 2) the image (X_r, P_r) in
+       T*V_{n,r} of the reduction, X_r = (e_1, …, e_r) and P_r = MX_r − ½X_r X_r^T MX_r (the covector with Φ = M
+       where Psi_so(n−r) = 0), does not follow the Neumann flow (4) §5 of the normal metric (the Yang–Mills field of
+       SO(n − r) acts); it does where Psi_so(n−r) = 0.  Corrected: “if eta_so(n−r) = 0 (eta_so(r) = eta_so(n−r) = 0),
+       we get the Neumann system with the normal metric on V_{n,r} (respectively, the Neumann system on G_{n,r})”.
+       The sizes (n, n) of this claim are those of the body's T*SO(n) = T*V_{n,n}, not the paper's (n, r): a run at
+       (n, n) checks the printed condition and the correction at each of the paper's r = 1, …, n − 2 (the image of
+       the first r columns in T*V_{n,r}), so at (3,3), the size of the witness, at r = 1 only.""",
+       statement=r"\eta_{so(r)}=0:\ \text{the reduction of (Euler), (Poisson) is the Neumann system with the normal "
+                 r"metric on }V_{n,r}")
 def cpb_reduces_to_the_normal_neumann_system(s):
     """The symmetric CPB body reduced with η_so(r) = 0 is, as the paper says, the Neumann system with the normal metric on V_{n,r}: at a point of T*SO(n) where the so(r) block of the body momentum vanishes, the first r columns and P_r = MX_r − ½X_rX_rᵀMX_r (the covector with Φ = M when Ψ_so(n−r) = 0) move by (N0_XP2), for every r ≤ n − 2."""
     return cpb_reduction_checks(s, "so(r)")

@@ -108,10 +108,11 @@ def double_neumann_flow(s):
 
 @claim("double-neumann-dual-lax", paper=("dual-D", "LA3*D", "D-eq", "D-L"), kind="lax", exact_max_n=2,
        fails_at=lambda n, r: True,
-       erratum="""Theorem dual-D: with (I_n - lambda A)^{-1} in the off-diagonal blocks of L(lambda), as printed
-       in (LA3*D), the equations (D-eq) do not imply dL/dt = [L, A].  They do with (lambda I_n - A)^{-1} in all four
-       blocks, as in (LA3) of Theorem DUAL, which (LA3*D) extends: L(lambda) = [[-X^T R Y', -X^T R Y],
-       [I_r + X'^T R Y', X'^T R Y]], R = (lambda I_n - A)^{-1}.""",
+       place="the off-diagonal blocks of 𝓛(λ) in (5) §10, Theorem 10.1",
+       erratum="""Theorem 10.1: with (I_n − λA)^{-1} in the off-diagonal blocks of 𝓛(λ), as printed in (5) §10,
+       the equations (3) §10 do not imply d𝓛/dt = [𝓛, 𝓐].  They do with (λI_n − A)^{-1} in all four blocks, as
+       in (1) §8 of Theorem 8.1, which (5) §10 extends: 𝓛(λ) = [[−XᵀRẎ, −XᵀRY], [I_r + ẊᵀRẎ, ẊᵀRY]],
+       R = (λI_n − A)^{-1}.""",
        statement=r"\tfrac{d}{dt}\mathcal L(\lambda)=[\mathcal L(\lambda),\mathcal A(\lambda)],\ "
                  r"\mathcal L=\begin{pmatrix}-X^T(\lambda-A)^{-1}\dot Y&-X^T(\mathbf I-\lambda A)^{-1}Y\\"
                  r"\mathbf I_r+\dot X^T(\mathbf I-\lambda A)^{-1}\dot Y&\dot X^T(\lambda-A)^{-1}Y\end{pmatrix},\ "
@@ -137,10 +138,11 @@ def double_lax_at_the_diagonal(s, flipped):
 
 @claim("double-neumann-dual-lax-extends-la3", paper=("dual-D", "LA3*D", "LA3", "LA4"), kind="id", exact_max_n=3,
        fails_at=lambda n, r: True,
-       erratum="""The text before Theorem dual-D says that (LA3*D) extends the Lax representation (LA3): at X = Y,
-       X' = Y' = P the printed L(lambda) of (LA3*D) is not L*_neum(lambda) of (LA3), because of the (I_n - lambda
-       A)^{-1} in its off-diagonal blocks; with (lambda I_n - A)^{-1} there (the correction of Theorem dual-D) it is,
-       and A(lambda) is the A*_neum(lambda) of (LA4) for (NE_XP).""",
+       place="the off-diagonal blocks of 𝓛(λ) in (5) §10, Theorem 10.1, which the sentence before it says extends (1) §8",
+       erratum="""The sentence before Theorem 10.1 says that (5) §10 extends the Lax representation (1) §8: at
+       X = Y, Ẋ = Ẏ = P the printed 𝓛(λ) of (5) §10 is not 𝓛*_neum(λ) of (1) §8, because of the (I_n − λA)^{-1}
+       in its off-diagonal blocks; with (λI_n − A)^{-1} there (the correction of Theorem 10.1) it is, and 𝓐(λ) is
+       the 𝓐*_neum(λ) of (3) §8 for the Neumann system (5) §5.""",
        statement=r"X=Y,\ \dot X=\dot Y=P:\quad \mathcal L(\lambda)=\mathcal L^*_{neum}(\lambda),\ "
                  r"\mathcal A(\lambda)=\mathcal A^*_{neum}(\lambda)=\begin{pmatrix}0&\mathbf I_r\\"
                  r"\Lambda-\lambda\mathbf I_r&0\end{pmatrix}")
@@ -179,9 +181,9 @@ def double_neumann_momentum(s):
 @claim("double-neumann-symmetry-group", paper=("dual-D", "D-eq"), kind="dim", exact_max_n=7,
        sizes=admissible(n_max=5), fails_at=lambda n, r: r != n,
        place="the paragraph after Theorem 10.1",
-       erratum="""After Theorem dual-D the matrix integral X^T Y' - Y^T X' is said to come from the GL(n, R)-symmetry
-       (X, Y, X', Y') -> (X R^T, Y R^{-1}, X' R^T, Y' R^{-1}), R in GL(n, R); R multiplies the n x r matrices X, Y on the
-       right, so it is r x r, and the integral is r x r too.  Corrected: R in GL(r, R) (claim
+       erratum="""After Theorem 10.1 the matrix integral XᵀẎ − YᵀẊ is said to come from the GL(n, ℝ)-symmetry
+       (X, Y, Ẋ, Ẏ) ↦ (XRᵀ, YR^{-1}, ẊRᵀ, ẎR^{-1}), R ∈ GL(n, ℝ); R multiplies the n × r matrices X, Y on the
+       right, so it is r × r, and the integral is r × r too.  Corrected: R ∈ GL(r, ℝ) (claim
        double-neumann-momentum proves the integral conserved and the action a symmetry).""",
        statement=r"(X,Y,\dot X,\dot Y)\mapsto(XR^T,YR^{-1},\dot XR^T,\dot YR^{-1}),\ R\in GL(n,\mathbb R):\ "
                  r"\text{size of }R=\text{number of columns of }X")
@@ -278,9 +280,10 @@ def coupled_flow_checks(s, Q_Pi):
 @claim("coupled-neumann-flow", paper=("C-neumann", "C-eq", "C-L"), kind="id", exact_max_n=3,
        exact_max_r={4: 1, 5: 1, 6: 1, 7: 1},
        fails_at=lambda n, r: True,
-       erratum="""(C-eq): the last term of the equation for Q' is printed Q Pi; the flow of (C-neumann) on
-       T*V x T*V has Y Pi there (the multiplier of Y^T Y = I_r, as X Lambda in the equation for P'), with Pi of
-       (C-L).  With Q Pi the printed system is not the Hamiltonian flow and does not keep Y^T Q + Q^T Y = 0.""",
+       place="the last line of (7) §10, the equation for Q̇",
+       erratum="""(7) §10: the last term of the equation for Q̇ is printed QΠ; the flow of the Hamiltonian (6) §10
+       on T*V × T*V has YΠ there (the multiplier of YᵀY = I_r, as XΛ in the equation for Ṗ), with Π of (8) §10.
+       With QΠ the printed system is not the Hamiltonian flow and does not keep YᵀQ + QᵀY = 0.""",
        statement=r"\dot X=P-(1+2\kappa)XP^TX,\ \dot P=-AY+(1+2\kappa)PX^TP+X\Lambda,\ "
                  r"\dot Y=Q-(1+2\kappa)YQ^TY,\ \dot Q=-AX+(1+2\kappa)QY^TQ+Q\Pi,\ "
                  r"\Lambda=\tfrac12(X^TAY+Y^TAX)-P^TP,\ \Pi=\tfrac12(X^TAY+Y^TAX)-Q^TQ")
@@ -339,13 +342,13 @@ _BIG = (r"\dot L(\nu)=[L(\nu),A(\nu)],\ L(\nu)=\begin{pmatrix}0&A\\A&0\end{pmatr
         r"\begin{pmatrix}PX^T-XP^T&0\\0&QY^T-YQ^T\end{pmatrix}+\begin{pmatrix}0&XY^T\\YX^T&0\end{pmatrix}\nu^{-1},\ "
         r"A(\nu)=L_+(\nu)")
 
-_BIG_ERRATUM = """with the printed L(nu), A(nu) = L_+(nu) the flow does not imply dL/dt = [L, A]: on T*V x T*V it gives
-       d/dt diag(PX^T - XP^T, QY^T - YQ^T) = [K, J] and dK/dt = [diag(PX^T - XP^T, QY^T - YQ^T), K] for
-       J = [[0, A], [A, 0]], K = [[0, XY^T], [YX^T, 0]], so the nu^0 and nu^{-1} parts of the equation need opposite
-       orders of the commutator (already for r = 1; for n = 1, where P = Q = 0, it holds).  No single change
-       of a sign or of the order repairs it.
-       Corrected: L(nu) = nu J + diag(PX^T - XP^T, QY^T - YQ^T) - nu^{-1} K and dL/dt = [A(nu), L(nu)] with
-       A(nu) = L_+(nu) (equivalently dL/dt = [L(nu), L_-(nu)])."""
+_BIG_ERRATUM = """with the printed L(ν) and A(ν) = L₊(ν) the flow does not imply dL/dt = [L, A].  Write
+       J = [[0, A], [A, 0]], M = diag(PXᵀ − XPᵀ, QYᵀ − YQᵀ) and K = [[0, XYᵀ], [YXᵀ, 0]], so that
+       L(ν) = νJ + M + ν⁻¹K: on T*V × T*V the flow gives dM/dt = [K, J] and dK/dt = [M, K], so the ν⁰ and ν⁻¹
+       parts of the equation need opposite orders of the commutator (already for r = 1; for n = 1, where
+       P = Q = 0, it holds).  No single change of a sign or of the order repairs it.
+       Corrected: L(ν) = νJ + M − ν⁻¹K and dL/dt = [A(ν), L(ν)] with A(ν) = L₊(ν) (equivalently
+       dL/dt = [L(ν), L₋(ν)])."""
 
 
 BIG_CORRECTION = "(so(n,n)): −ν⁻¹ in front of the last term of L(ν), and dL/dt = [A(ν), L(ν)]"
@@ -353,7 +356,12 @@ BIG_CORRECTION = "(so(n,n)): −ν⁻¹ in front of the last term of L(ν), and 
 
 @claim("coupled-big-lax-normal", paper=("so(n,n)", "C-eq"), kind="lax", exact_max_n=SYMBOLIC_N_MAX,
        fails_at=lambda n, r: n >= 2,
-       erratum="(so(n,n)) for kappa = 0: " + _BIG_ERRATUM,
+       place="the Lax pair (10) §10, which the sentence after it says holds for the normal metric, κ = 0",
+       erratum="(10) §10 for κ = 0, along the flow of the Hamiltonian (6) §10 with κ = 0 on T*V × T*V, that is "
+               "along (7) §10 with YΠ in place of QΠ (the correction of coupled-neumann-flow): " + _BIG_ERRATUM
+               + "  Along (7) §10 as printed, with QΠ, the ν⁰ part fails as well (n ≥ 2), for the printed and the "
+               "corrected pair alike: dM/dt gains diag(0, QΠYᵀ − YΠQᵀ), so dM/dt ≠ [K, J], while dK/dt = [M, K] "
+               "still holds.",
        statement=r"\kappa=0:\ " + _BIG)
 def coupled_big_lax_normal(s):
     """The r-coupled Neumann system with the normal metric (κ = 0), the flow of (C-neumann) on T*V × T*V, implies the so(n,n) Lax equation (so(n,n)) with the spectral parameter ν."""
@@ -424,7 +432,10 @@ def coupled_dual_lax(s):
 
 @claim("coupled-perturbed-big-lax", paper=("so(n,n)", "C-neumann"), kind="lax", exact_max_n=SYMBOLIC_N_MAX,
        fails_at=lambda n, r: n >= 2,
-       erratum="(so(n,n)) for the perturbed Hamiltonian H_kappa, every kappa: " + _BIG_ERRATUM,
+       place="the paragraph after Theorem 10.2 on the perturbed Hamiltonian, which applies (10) §10 for every κ",
+       erratum="(10) §10 for the perturbed Hamiltonian H_κ = T_κ + tr(XᵀAY) − 2κ tr(XᵀP YᵀQ), every κ, along the "
+               "flow of H_κ on T*V × T*V (with the multipliers of both constraint sets; at κ = 0 it is (7) §10 with "
+               "YΠ in place of QΠ, the correction of coupled-neumann-flow): " + _BIG_ERRATUM,
        statement=r"H_\kappa=T_\kappa+\tr(X^TAY)-2\kappa\tr(X^TP\,Y^TQ):\ " + _BIG + r"\ \text{for every }\kappa")
 def coupled_perturbed_big_lax(s):
     """For every κ, the flow of the perturbed Hamiltonian H_κ = T_κ + tr(XᵀAY) − 2κ tr(XᵀP YᵀQ) implies the so(n,n) Lax equation (so(n,n))."""
@@ -590,10 +601,11 @@ def complex_lax_residual(s, flipped):
 @claim("complex-neumann-dual-lax", paper=("dual-complex", "LA3*", "W-eq", "W-L"), kind="lax",
        exact_max_n=SYMBOLIC_N_MAX,
        fails_at=lambda n, r: True,
-       erratum="""Theorem dual-complex: with (I_n - lambda A)^{-1} in the off-diagonal blocks of L(lambda), as
-       printed in (LA3*), the Neumann system (W-eq) on W(n, r) does not imply dL/dt = [L, A].  It does with
-       (lambda I_n - A)^{-1} in all four blocks (the complex form of (LA3)): L(lambda) = [[-Z^T R conj(Z'),
-       -Z^T R conj(Z)], [I_r + Z'^T R conj(Z'), Z'^T R conj(Z)]], R = (lambda I_n - A)^{-1}.""",
+       place="the off-diagonal blocks of 𝓛(λ) in (15) §10, Theorem 10.3",
+       erratum="""Theorem 10.3: with (I_n − λA)^{-1} in the off-diagonal blocks of 𝓛(λ), as printed in (15) §10,
+       the Neumann system (13) §10 on W(n, r) does not imply d𝓛/dt = [𝓛, 𝓐].  It does with (λI_n − A)^{-1} in all
+       four blocks (the complex form of (1) §8): 𝓛(λ) = [[−ZᵀRŻ̄, −ZᵀRZ̄], [I_r + ŻᵀRŻ̄, ŻᵀRZ̄]],
+       R = (λI_n − A)^{-1}.""",
        statement=r"\tfrac{d}{dt}\mathcal L(\lambda)=[\mathcal L(\lambda),\mathcal A(\lambda)],\ "
                  r"\mathcal L=\begin{pmatrix}-Z^T(\lambda-A)^{-1}\dot{\bar Z}&-Z^T(\mathbf I-\lambda A)^{-1}\bar Z\\"
                  r"\mathbf I_r+\dot Z^T(\mathbf I-\lambda A)^{-1}\dot{\bar Z}&"
@@ -614,10 +626,9 @@ def complex_neumann_dual_lax_corrected(s):
 @claim("complex-neumann-momentum-algebra", paper=("u(1)", "W-eq"), kind="dim", exact_max_n=7,
        sizes=admissible(n_max=5), fails_at=lambda n, r: r != n,
        place="the sentence after (16) §10",
-       erratum="""After Theorem dual-complex the symmetries are said to give the conservation of the u(n) and u(1)^n
-       momentum maps, psi_0 = Z^T conj(Z') - Z'^T conj(Z) the first; psi_0 is r x r, the momentum of the right
-       U(r)-action that the same paragraph names.  Corrected: the u(r) momentum map psi_0 (claim complex-neumann-momenta
-       proves it conserved).""",
+       erratum="""After Theorem 10.3 the symmetries are said to give the conservation of the u(n) and u(1)ⁿ
+       momentum maps, ψ₀ = ZᵀŻ̄ − ŻᵀZ̄ the first; ψ₀ is r × r, the momentum of the right U(r)-action that the same
+       paragraph names.  Corrected: the u(r) momentum map ψ₀ (claim complex-neumann-momenta proves it conserved).""",
        statement=r"\psi_0=Z^T\dot{\bar Z}-\dot Z^T\bar Z\in u(n):\ \text{size of }\psi_0=n")
 def complex_neumann_momentum_algebra(s):
     """The momentum ψ₀ = ZᵀŻ̄ − ŻᵀZ̄ printed after Theorem dual-complex is said to be that of u(n): its size is the

@@ -16,9 +16,9 @@ def entries(M, m, k):
 @claim("stiefel-top-rank", paper=("cond_X*",), kind="geo", section="1", sizes=ON_O_N, exact_max_n=4,
        fails_at=lambda n, r: True,
        place="the sentence “In particular, …” after (1) §1",
-       erratum="""The introduction says that V_{n,n} is diffeomorphic to SO(n).  By (cond_X*) V_{n,n} = {X : X^T X = I_n}
-       is the whole orthogonal group O(n), which has two components, det X = 1 and det X = -1 (for instance
-       X = diag(-1, 1, ..., 1)): it is not connected, SO(n) is.  Corrected: V_{n,n} = O(n), and V_{n,n-1} is
+       erratum="""The introduction says that V_{n,n} is diffeomorphic to SO(n).  By (1) §1, V_{n,n} = {X : XᵀX = I_n}
+       is the whole orthogonal group O(n), which has two components, det X = 1 and det X = −1 (for instance
+       X = diag(−1, 1, …, 1)): it is not connected, SO(n) is.  Corrected: V_{n,n} = O(n), and V_{n,n−1} is
        diffeomorphic to SO(n) (claim stiefel-corank-one).""",
        statement=r"V_{n,n}\cong SO(n):\quad \det X=1\ \text{for every }X\in V_{n,n}")
 def top_rank_stiefel_variety(s):

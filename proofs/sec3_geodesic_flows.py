@@ -346,17 +346,23 @@ def _extra_invariants(n: int, r: int) -> int:
     return int(r == 4) + int(n - r == 2 and r == 2) + int(n - r == 1 and r == 3)
 
 
+# Proposition 4.6 is a statement of §4 of the paper, about the metrics of §3: filed under §4, written here beside
+# the action on the fibre it is computed from
 @claim("invariant-metrics", paper=("SO(n-r)-action", "P-neutral"), kind="dim", sizes=admissible(5, n_min=2),
-       exact_max_n=7,
+       exact_max_n=7, section="4",
        fails_at=lambda n, r: _extra_invariants(n, r) > 0,
        place="Proposition 4.6 and its proof",
-       erratum="""The proposition fails when r = 4 (the Pfaffian of P1 is an invariant quadratic form),
-       when n - r = r = 2 (det P2 is invariant) and when n - r = 1, r = 3 (the pairing of the axial
-       vector of P1 with P2 is invariant); there the invariant metrics form a larger family.""",
+       erratum="""Proposition 4.6 fails when r = 4 (the Pfaffian of P₁ is an invariant quadratic form),
+       when n − r = r = 2 (det P₂ is invariant) and when n − r = 1, r = 3 (the pairing ⟨axial(P₁), P₂⟩ of the axial
+       vector of P₁ with P₂ is invariant); there the invariant metrics form a larger family.  For instance at
+       (n, r) = (4, 2), where B ∈ SO(2) and Q ∈ SO(2) act by P₁ ↦ Q⁻¹P₁Q = P₁ and P₂ ↦ BP₂Q, the invariant quadratic forms are
+       tr(P₁ᵀP₁), tr(P₂ᵀP₂) and det P₂: 3 of them, where the proposition gives 2.  The number the witness computes
+       is the rank of the invariance conditions on the 15 coefficients of a quadratic form on the 5-dimensional
+       fibre, 15 minus the number of invariant forms: 12 = 15 − 3, where the proposition gives 13 = 15 − 2.""",
        statement=r"\dim\{\text{quadratic forms on }T^*_{X_0}V_{n,r}\text{ invariant under }SO(r)\times SO(n-r)\}"
                  r"=\dim\Span\{\tr(P^TP),\tr((X^TP)^2)\}")
 def invariant_quadratic_forms(s):
-    """Proposition after Theorem ET: the SO(n)×SO(r)-invariant quadratic forms on T*_{X₀}V (invariant under (SO(n-r)-action) and P₁ ↦ Q⁻¹P₁Q, P₂ ↦ P₂Q) are spanned by tr(PᵀP) and tr((XᵀP)²)."""
+    """Proposition 4.6: the SO(n)×SO(r)-invariant quadratic forms on T*_{X₀}V (invariant under (SO(n-r)-action) and P₁ ↦ Q⁻¹P₁Q, P₂ ↦ P₂Q) are spanned by tr(PᵀP) and tr((XᵀP)²)."""
     rows, unknowns, N = _fibre_action_matrix(s)
     span = 1 if s.r in (1, s.n) else 2
     M = _conditions_matrix(s, rows, unknowns)
@@ -366,7 +372,7 @@ def invariant_quadratic_forms(s):
 
 
 @invariant_quadratic_forms.claim.correction(
-    "count also the Pfaffian of P₁ (r = 4), det P₂ (n - r = r = 2) and ⟨axial(P₁), P₂⟩ (n - r = 1, r = 3)")
+    "count also the Pfaffian of P₁ (r = 4), det P₂ (n − r = r = 2) and ⟨axial(P₁), P₂⟩ (n − r = 1, r = 3)")
 def invariant_quadratic_forms_corrected(s):
     rows, unknowns, N = _fibre_action_matrix(s)
     span = (1 if s.r in (1, s.n) else 2) + _extra_invariants(s.n, s.r)

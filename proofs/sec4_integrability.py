@@ -287,8 +287,9 @@ def A_man_dual(s):
 
 @claim("manakov-dual-lax", paper=("man-dual", "MAN-LA", "MAN-LA2", "LA-MAN3"), kind="lax", exact_max_n=2, exact_max_r={3: 2, 4: 1, 5: 1, 6: 1},
        fails_at=lambda n, r: n >= 2,
-       erratum="""Theorem man-dual: with the printed (LA-MAN3), whose entries contain (A + λI_n)^{-1}, the
-       flow (dot_XP3*) does not imply (MAN-LA).  It does with (A + λI_n) in place of (A + λI_n)^{-1}:
+       place="the matrix 𝓐*_man(λ) of (9) §4, in Theorem 4.4",
+       erratum="""Theorem 4.4: with the printed (9) §4, whose entries contain (A + λI_n)^{-1}, the
+       flow (5) §4 does not imply (7) §4.  It does with (A + λI_n) in place of (A + λI_n)^{-1}:
        𝓐*_man(λ) = J Uᵀ(A + λI_n)U for U = (P, X), J = [[0, I_r], [−I_r, 0]], while 𝓛*_man(λ) = −J UᵀRU;
        then d𝓛*/dt = [𝓛*, 𝓐*] follows from d(UᵀRU)/dt = Uᵀ[R, AΦ + ΦA]U and Φ = UJUᵀ.""",
        statement=r"\tfrac{d}{dt}\mathcal L^*_{man}(\lambda)=[\mathcal L^*_{man}(\lambda),\mathcal A^*_{man}(\lambda)]\ "
@@ -344,11 +345,11 @@ def bracket_gram_psi(s):
 @claim("gram-not-in-involution-with-psi", paper=("so(n)+so(r)", "SO(n)-inv"), kind="not", expect="nonzero",
        fails_at=lambda n, r: r in (1, n),
        place="Remark 4.2, after Theorem 4.5",
-       erratum="""The remark after Theorem ET (the functions (p_i, p_j) do not Poisson-commute with <Psi, Psi>,
+       erratum="""Remark 4.2 after Theorem 4.5 (the functions (p_i, p_j) do not Poisson-commute with ⟨Ψ, Ψ⟩,
        so the SO(n)-invariant functions are not conserved by the Euclidean geodesic flow) fails for r = 1, where
-       Psi = 0, and for r = n, where P = XW with W = X^T P skew, Psi = 2W and P^T P = -Psi^2/4 is a function of
-       Psi, which commutes with the Casimir <Psi, Psi> of so(r) (verified by the claim
-       gram-commutes-with-psi-if-r-is-1-or-n).  It holds for 2 <= r <= n - 1.""",
+       Ψ = 0, and for r = n, where P = XW with W = XᵀP skew, Ψ = 2W and PᵀP = −Ψ²/4 is a function of
+       Ψ, which commutes with the Casimir ⟨Ψ, Ψ⟩ of so(r) (verified by the claim
+       gram-commutes-with-psi-if-r-is-1-or-n).  It holds for 2 ≤ r ≤ n − 1.""",
        statement=r"\{(p_i,p_j),\langle\Psi,\Psi\rangle\}\not\equiv0")
 def gram_does_not_commute_with_psi_squared(s):
     """The remark after Theorem ET: the SO(n)-invariant functions (p_i, p_j) do not Poisson-commute with ⟨Ψ, Ψ⟩ (tested on Σ g_ij (p_i, p_j) = tr(G PᵀP) with generic G), so, as they commute with ⟨Φ, Φ⟩, they are not conserved by the Euclidean geodesic flow."""

@@ -271,9 +271,12 @@ def generic_leaf_rank(n):
 @claim("pencil-leaves-singular", paper=("dimension",), kind="dim",
        sizes=admissible(5), exact_max_n=7, equivariance=EQUIVARIANCE_X,
        fails_at=lambda n, r: r == 1 and n <= 2,
-       erratum="""(dimension) says 2l < n² − n: the leaves in Θ(T*V) are singular leaves of (gl(n), Λ1).  For
-       (n, r) = (1, 1) and (2, 1) the two sides are equal (0 = 0 and 2 = 2): there Θ(T*V) meets the regular
-       leaves.  The strict inequality holds at every other size (checked at every size of the tables).""",
+       place="the inequality (5) §6 in the proof of Theorem 6.1",
+       erratum="""(5) §6 says 2l < n² − n: the leaves in Θ(T*V) are singular leaves of (gl(n), Λ₁).  For
+       (n, r) = (1, 1) and (2, 1), that is on V_{1,1} and on V_{2,1} = S¹, the two sides are equal (0 = 0 and
+       2 = 2): there Θ(T*V) meets the regular leaves.  The strict inequality holds at every other size (checked at
+       every size of the tables).  The witness codes the inequality as a number: 1 where it holds, 0 where it
+       fails; at (1, 1) and (2, 1) it computes 0, where the printed statement gives 1.""",
        statement=r"2l=2r(n-r)+\tfrac{r(r-1)}2-\left[\tfrac r2\right]<n^2-n=\rank\Lambda_1\ \text{at a generic point of } gl(n)")
 def pencil_leaves_singular(s):
     """(dimension): the generic leaf in Θ(T*V) is singular in (gl(n), Λ1): 2l < n² − n, the rank of Λ1 at a generic point of gl(n)."""
@@ -551,11 +554,15 @@ def l5_l6_matrix(s, printed):
        sizes=admissible(5, r_max=3), exact_max_n=7, equivariance="the system is built from the claim's own parameters (no chart coordinate)",
        fails_at=lambda n, r: r >= 3,
        place="the proof of Lemma 6.3, at (17) §6",
-       erratum="""The proof of Lemma LEMA2 says that the solutions of (L5), (L6) within so(r)_{h1} ⊕ Sym(r)
-       form an r-dimensional space.  With (L6) as printed, [A1, η1] ∈ so(r,C)^⊥ = Sym(r), the skew matrix
-       [A1, η1] must vanish, and the solutions form a 2-dimensional space for every r >= 3 (1 for r = 1, 2 for
-       r = 2).  What the restriction of Λ_{1,-1} to ker Λ1 gives (pairing with ζ1 in the Cartan subalgebra) is
-       [A1, η1] ⟂ so(r,C)_{h1}; with that (L6) the solutions are r-dimensional and (A2) follows.""",
+       erratum="""The proof of Lemma 6.3 says that the solutions (ξ₁, η₁) of (16), (17) §6 within
+       so(r)_{h₁} ⊕ Sym(r) form an r-dimensional space.  With (17) §6 as printed, [A₁, η₁] ∈ so(r, ℂ)^⊥ = Sym(r),
+       the skew matrix [A₁, η₁] must vanish, and the solutions form a 2-dimensional space for every r ≥ 3 (1 for
+       r = 1, 2 for r = 2): at r = 3 the dimension is 2, where the proof gives r = 3.  The number the witness
+       computes is the rank of the system, the number of unknowns minus that dimension: at r = 3 there are 7
+       unknowns (1 in the Cartan subalgebra so(3)_{h₁}, 6 in Sym(3)), and the rank is 5 = 7 − 2, where the printed
+       dimension gives 4 = 7 − 3.  What the restriction of Λ_{1,−1} to ker Λ₁ gives (pairing with ζ₁ in the Cartan
+       subalgebra so(r, ℂ)_{h₁}) is [A₁, η₁] ⟂ so(r, ℂ)_{h₁}; with that (17) §6 the solutions are r-dimensional and
+       (11) §6 follows.""",
        statement=r"\dim\{(\xi_1,\eta_1)\in so(r)_{h_1}\oplus Sym(r)\mid [A_1,\xi_1]-[h_1,\eta_1]=0,\ "
                  r"[A_1,\eta_1]\in so(r,\mathbb C)^\perp\}=r")
 def pencil_l5_l6(s):
@@ -564,7 +571,7 @@ def pencil_l5_l6(s):
     return {"(L5), (L6)": Rank(M, unknowns - s.r, generic=True, meaning="unknowns − r")}
 
 
-@pencil_l5_l6.claim.correction("(L6): [A1, η1] ⟂ so(r,C)_{h1} in place of [A1, η1] ∈ so(r,C)^⊥")
+@pencil_l5_l6.claim.correction("(L6): [A₁, η₁] ⟂ so(r, ℂ)_{h₁} in place of [A₁, η₁] ∈ so(r, ℂ)^⊥")
 def pencil_l5_l6_corrected(s):
     M, unknowns = l5_l6_matrix(s, printed=False)
     return {"(L5), (L6)": Rank(M, unknowns - s.r, generic=True, meaning="unknowns − r")}

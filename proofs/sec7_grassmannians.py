@@ -160,10 +160,10 @@ def neumann2_kernel(s):
 @claim("neumann2-h-size", paper=("NEUMANN2",), kind="dim", sizes=admissible(5),
        fails_at=lambda n, r: r < n,
        place="the proof of Theorem 7.1",
-       erratum="""The proof of Theorem NEUMANN2 sets h = Ψ(X_0, P_0) and v = X_0 X_0^T and works with h + v in gl(n)
+       erratum="""The proof of Theorem 7.1 sets h = Ψ(X_0, P_0) and v = X_0 X_0^T and works with h + v in gl(n)
        and with the block h_1 of h.  Ψ(X_0, P_0) is r × r and v is n × n, so h + v is not defined for r < n (and on
        Ψ^{-1}(0) the printed h would be 0).  Corrected: h = Φ(X_0, P_0), the so(n) part of Θ(X_0, P_0), as in the
-       proof of Lemma LEMA1; its block h_1 = X_0^T h X_0 is Ψ(X_0, P_0), which is 0 on Ψ^{-1}(0), as the proof says
+       proof of Lemma 6.2; its block h_1 = X_0^T h X_0 is Ψ(X_0, P_0), which is 0 on Ψ^{-1}(0), as the proof says
        next.  With this h the kernel of Λ_1(h + v) has the dimension of gl(r) ⊕ gl(n − r) (claim
        neumann2-kernel).""",
        statement=r"h=\Psi(X_0,P_0),\ v=X_0X_0^T:\ \text{the size of }h\text{ is the size }n\text{ of }v")

@@ -392,17 +392,17 @@ def I2l_general_line(s, l):
        sizes=admissible(n_max=5, where=lambda n, r: 2 * r <= n, condition="2r <= n"), exact_max_n=2, exact_max_r={3: 1, 4: 2, 5: 2, 6: 1, 7: 1},
        fails_at=lambda n, r: r >= 2,
        place="the general line 𝓘₂ₗ(λ) of (5) §8",
-       erratum="""The general line of (2r-integrals), I_{2l} = ∑_{I_l} a/∏(λ − a_i) ∑_{J_l}
-       (e_{j_1}^...^e_{j_l})^2_{I_l} + ∑_{I_{l+1}} a/∏(λ − a_i) ∑_{J_l, 1<=i<=r}
-       (e_{j_1}^...^e_{j_l}^p_i)^2 + ..., is complete for l = 1: by the pattern of the line of I_{2r}, whose sums
-       run over I_r, I_{r+1}, ..., I_{2r}, the sums of I_{2l} run over I_l, ..., I_{2l} (forms of orders l to 2l), so at
-       l = 1 the two sums shown, over I_1 and I_2, are all of them and the “+ ...” adds nothing.  There the line
-       contradicts the explicit I_2 printed just above it whenever r >= 2: the second sum has the squares of
-       all the (e_j ^ p_i)_{I_2}, i, j = 1..r, where I_2 has Phi_{I_2}^2 = (∑_j e_j ^ p_j)_{I_2}^2 (the mixed
-       terms (e_j^p_i)^2, i != j, do not belong, the cross terms (e_j^p_j)(e_k^p_k) are missing).  The
+       erratum="""The general line of (5) §8, I_{2l} = ∑_{I_l} a/∏(λ − a_i) ∑_{J_l}
+       (e_{j_1} ∧ … ∧ e_{j_l})^2_{I_l} + ∑_{I_{l+1}} a/∏(λ − a_i) ∑_{J_l, 1≤i≤r}
+       (e_{j_1} ∧ … ∧ e_{j_l} ∧ p_i)^2 + ⋯, is complete for l = 1: by the pattern of the line of I_{2r}, whose sums
+       run over I_r, I_{r+1}, …, I_{2r}, the sums of I_{2l} run over I_l, …, I_{2l} (forms of orders l to 2l), so at
+       l = 1 the two sums shown, over I_1 and I_2, are all of them and the “+ ⋯” adds nothing.  There the line
+       contradicts the explicit I_2 printed just above it whenever r ≥ 2: the second sum has the squares of
+       all the (e_j ∧ p_i)_{I_2}, i, j = 1, …, r, where I_2 has Φ_{I_2}^2 = (∑_j e_j ∧ p_j)_{I_2}^2 (the mixed
+       terms (e_j ∧ p_i)^2, i ≠ j, do not belong, the cross terms (e_j ∧ p_j)(e_k ∧ p_k) are missing).  The
        explicit I_2 and I_{2r} hold (claim 2r-integrals-explicit); at l = 1 the line holds for r = 1 only.
-       Corrected: the second sum is ∑_{I_2} a/∏(λ − a_i) (∑_j e_j ^ p_j)_{I_2}^2.  The subscript
-       I_{r+1} of the second sum is also a misprint of I_{l+1}.  The general line for 1 < l < r, whose “+ ...” states
+       Corrected: the second sum is ∑_{I_2} a/∏(λ − a_i) (∑_j e_j ∧ p_j)_{I_2}^2.  The subscript
+       I_{r+1} of the second sum is also a misprint of I_{l+1}.  The general line for 1 < l < r, whose “+ ⋯” states
        no term that can be computed, is neither confirmed nor corrected here.""",
        statement=r"\mathcal I_{2}=\sum_{I_1}\frac{a(\lambda)}{\lambda-a_{i_1}}\sum_{J_1}(e_{j_1})_{I_1}^2"
                  r"+\sum_{I_2}\frac{a(\lambda)}{(\lambda-a_{i_1})(\lambda-a_{i_2})}\sum_{J_1,1\le i\le r}"
@@ -414,7 +414,7 @@ def general_line_of_the_spectral_integrals(s):
 
 
 @general_line_of_the_spectral_integrals.claim.correction(
-    "second sum: (e_1 ^ p_1 + ... + e_r ^ p_r)_{I_2}^2 in place of the sum of all (e_j ^ p_i)_{I_2}^2",
+    "second sum: (e_1 ∧ p_1 + ⋯ + e_r ∧ p_r)_{I_2}^2 in place of the sum of all (e_j ∧ p_i)_{I_2}^2",
     exact_max_r={3: 3, 4: 4, 5: 5, 6: 6, 7: 4})
 def general_line_of_the_spectral_integrals_corrected(s):
     n, r, lam = s.n, s.r, s.lam
@@ -841,8 +841,8 @@ def manakov_j2r_vanishes(s):
 @claim("spectral-curve-identity-size", paper=("2r-integrals",), kind="dim", sizes=admissible(n_max=5),
        fails_at=lambda n, r: n != 2 * r,
        place="the unnumbered display of the spectral curve before (4) §8",
-       erratum="""The spectral curve of 𝓛*_neum(λ) is printed |a(λ) 𝓛*_neum(λ) − w I_n| = w^{2r} + ... .  The Lax
-       matrix 𝓛*_neum(λ) of (LA3) is 2r × 2r, so the determinant is defined only when n = 2r.  Corrected: I_{2r}
+       erratum="""The spectral curve of 𝓛*_neum(λ) is printed |a(λ) 𝓛*_neum(λ) − w I_n| = w^{2r} + ⋯.  The Lax
+       matrix 𝓛*_neum(λ) of (1) §8 is 2r × 2r, so the determinant is defined only when n = 2r.  Corrected: I_{2r}
        (the degree 2r in w of the printed expansion is the size of the matrix), with which the expansion holds
        (claim 2r-integrals).""",
        statement=r"|a(\lambda)\mathcal L^*_{neum}(\lambda)-w\mathbf I_n|:\ \text{the size }n\text{ of }\mathbf I_n"
@@ -863,7 +863,7 @@ def printed_identity_has_the_size_of_the_dual_lax_matrix_corrected(s):
        sizes=admissible(n_max=5, where=lambda n, r: 2 * r < n, condition="2r < n"), fails_at=lambda n, r: True,
        place="the paragraph “Chasles Theorem for Manakov Flows” before Theorem 8.6",
        erratum="""The paragraph on the Chasles theorem for Manakov flows takes the integrals J_{2l}(λ) as the
-       coefficients of w^{2r−2l} in |a(λ) 𝓛*_man(λ) − w I_n|, under 2r < n.  The Lax matrix 𝓛*_man(λ) of (MAN-LA2) is
+       coefficients of w^{2r−2l} in |a(λ) 𝓛*_man(λ) − w I_n|, under 2r < n.  The Lax matrix 𝓛*_man(λ) of (8) §4 is
        2r × 2r, so the determinant is not defined.  Corrected: I_{2r}, with which J_{2r} is the coefficient of w^0
        (claim chasles-manakov).""",
        statement=r"|a(\lambda)\mathcal L^*_{man}(\lambda)-w\mathbf I_n|,\ 2r<n:\ \text{the size }n\text{ of }"
@@ -885,10 +885,10 @@ def printed_identity_has_the_size_of_the_manakov_dual_lax_matrix_corrected(s):
 @claim("vvb-left-factor-size", paper=("VVB", "Gen_Chasles2"), kind="dim", exact_max_n=7,
        sizes=admissible(n_max=5), fails_at=lambda n, r: True,
        place="the text after the display in the proof of Theorem 8.5",
-       erratum="""In the proof of Theorem Gen_Chasles2, the matrix V(XB, PB) diag(B^{-1}, B^{-1}) is said to be
-       obtained from V(X, P) (VV) by left multiplication by diag(I_{n-r}, B^{-1}), a matrix of size n; V(X, P) has
-       n + r rows, so the product is not defined.  Corrected: diag(I_n, B^{-1}), of size n + r, with which the
-       identity (VVB) holds (claim gen-chasles2); the proof itself applies that matrix to the (n + r)-vectors of
+       erratum="""In the proof of Theorem 8.5, the matrix V(XB, PB) diag(B^{-1}, B^{-1}) of the unnumbered display is
+       said to be obtained from V(X, P) of (6) §8 by left multiplication by diag(I_{n−r}, B^{-1}), a matrix of size n;
+       V(X, P) has n + r rows, so the product is not defined.  Corrected: diag(I_n, B^{-1}), of size n + r, with which
+       the identity of that display holds (claim gen-chasles2); the proof itself applies that matrix to the (n + r)-vectors of
        V's column space a few lines later, v_B(t) = diag(I_n, B^{-1}) v(t).""",
        statement=r"\mathcal V(XB,PB)\begin{pmatrix}B^{-1}&0\\0&B^{-1}\end{pmatrix}="
                  r"\operatorname{diag}(\mathbf I_{n-r},B^{-1})\,\mathcal V(X,P):\ "
@@ -908,11 +908,11 @@ def printed_left_factor_has_the_size_of_vv_corrected(s):
 @claim("vv-printed-shape", paper=("VV", "Gen_Chasles2", "VVB"), kind="dim", exact_max_n=7,
        sizes=admissible(n_max=5), fails_at=lambda n, r: n != r,
        place="the sentence introducing (6) §8, the text before Theorem 8.5 and the proof of Theorem 8.5",
-       erratum="""The matrix V(X, P) of (VV), whose 2r columns (e_i, 0) and (p_i, E_i), i = 1, ..., r (E_i the i-th
+       erratum="""The matrix V(X, P) of (6) §8, whose 2r columns (e_i, 0) and (p_i, E_i), i = 1, …, r (E_i the i-th
        column of I_r), span the 2r-plane of ℝ^{n+r}, is called a 2r × (n + r) matrix, and so are V(X(t)B, P(t)B)
-       before Theorem Gen_Chasles2 and V(XB, PB) before (VVB).  Its 2r columns are vectors of ℝ^{n+r}: it has n + r
+       before Theorem 8.5 and V(XB, PB) in its proof.  Its 2r columns are vectors of ℝ^{n+r}: it has n + r
        rows and 2r columns, and the printed shape is its transpose's, right only when n = r.  The proof of Theorem
-       Gen_Chasles2 itself treats them so: it applies diag(I_n, B^{-1}) to the (n + r)-vector v(t) of the tangency
+       8.5 itself treats them so: it applies diag(I_n, B^{-1}) to the (n + r)-vector v(t) of the tangency
        line in V's column space, v_B(t) = diag(I_n, B^{-1}) v(t).  Corrected: (n + r) × 2r.""",
        statement=r"\mathcal V(X,P)=\begin{pmatrix}X&P\\0&\mathbf I_r\end{pmatrix}:\ "
                  r"\text{a }2r\times(n+r)\text{ matrix}")
@@ -933,24 +933,24 @@ def printed_shape_of_vv_corrected(s):
 @claim("gen-chasles-momentum-ranges", paper=("Gen_Chasles", "tangency"), kind="dim", exact_max_n=7,
        sizes=admissible(n_max=5), fails_at=lambda n, r: n != r,
        place="the display in the proof of Theorem 8.2",
-       erratum="""In the proof of Theorem Gen_Chasles, the quadratic equation of the 2r-planes tangent to the cone
-       Q(lambda*) sums (e_1^...^e_r^p_i)^2 over i = 1, ..., n and (e_1^...^e_r^p_i^p_j)^2 over 1 <= i < j <= n, but
-       there are only r momenta p_1, ..., p_r (the columns of P).  Corrected: i = 1, ..., r and 1 <= i < j <= r, as
-       in (2r-integrals); with these ranges the equation times a(lambda*) is I_{2r}(lambda*) (claim gen-chasles).""",
+       erratum="""In the proof of Theorem 8.2, the quadratic equation of the 2r-planes tangent to the cone
+       Q(λ*) sums (e_1 ∧ … ∧ e_r ∧ p_i)^2 over i = 1, …, n and (e_1 ∧ … ∧ e_r ∧ p_i ∧ p_j)^2 over 1 ≤ i < j ≤ n,
+       but there are only r momenta p_1, …, p_r (the columns of P).  Corrected: i = 1, …, r and 1 ≤ i < j ≤ r, as
+       in (5) §8; with these ranges the equation times a(λ*) is I_{2r}(λ*) (claim gen-chasles).""",
        statement=r"\sum_{i=1}^n(e_1\wedge\dots\wedge e_r\wedge p_i)^2_{I_{r+1}},\ "
                  r"\sum_{1\le i<j\le n}(e_1\wedge\dots\wedge e_r\wedge p_i\wedge p_j)^2_{I_{r+2}}:\ "
                  r"\text{the momenta }p_1,\dots,p_n")
 def printed_momentum_ranges(s):
     """The sums over the momenta p_i in the printed tangency equation of the proof of Theorem Gen_Chasles run over the columns of P."""
     m = s.P.shape[1]
-    return {"number of momenta p_i": Count(m, s.n, "the columns of P; printed: the range i = 1..n"),
+    return {"number of momenta p_i": Count(m, s.n, "the columns of P; printed: the range i = 1, …, n"),
             "number of pairs p_i ^ p_j": Count(m * (m - 1) // 2, s.n * (s.n - 1) // 2,
                                                "the pairs of columns of P; printed: the range 1 <= i < j <= n")}
 
 
-@printed_momentum_ranges.claim.correction("i = 1, ..., r and 1 <= i < j <= r in place of n")
+@printed_momentum_ranges.claim.correction("i = 1, …, r and 1 ≤ i < j ≤ r in place of n")
 def printed_momentum_ranges_corrected(s):
     m = s.P.shape[1]
-    return {"number of momenta p_i": Count(m, s.r, "the columns of P; corrected: the range i = 1..r"),
+    return {"number of momenta p_i": Count(m, s.r, "the columns of P; corrected: the range i = 1, …, r"),
             "number of pairs p_i ^ p_j": Count(m * (m - 1) // 2, s.r * (s.r - 1) // 2,
                                                "the pairs of columns of P; corrected: the range 1 <= i < j <= r")}

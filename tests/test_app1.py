@@ -392,7 +392,7 @@ def test_cpb_reduction_needs_the_so_n_minus_r_momentum_to_vanish(catalog):
     """The CPB paragraph: with η_so(r) = 0 (as printed) the image in T*V_{n,r} is not the normal Neumann
     flow; with η_so(n−r) = 0 it is."""
     c = catalog.get("cpb-reduction-stiefel")
-    assert c.expects_failure(3, 3) and "eta_so(n-r) = 0" in c.erratum
+    assert c.expects_failure(3, 3) and "eta_so(n−r) = 0" in c.erratum
     res = run_exact(c, 3, 3, SEED)
     assert res.verdict == "fails" and "dP_r/dt" in str(res.witness)
     assert run_points(c, 4, 4, "modular", SEED).verdict == "fails"

@@ -70,6 +70,21 @@ def test_every_erratum_in_the_referees_table_is_located(catalog):
         assert place in catalog.get(cid).place, cid
 
 
+def test_every_erratum_names_the_place_of_its_misprint(catalog):
+    """The referee of stop 68 (§2.2): the eight errata that named only their labels, several of them correct
+    equations, name the equation or sentence that is misprinted; with them every erratum has a place."""
+    for cid, place in (("manakov-dual-lax", "(9) §4"),
+                       ("pencil-leaves-singular", "(5) §6 in the proof of Theorem 6.1"),
+                       ("double-neumann-dual-lax", "the off-diagonal blocks of 𝓛(λ) in (5) §10"),
+                       ("double-neumann-dual-lax-extends-la3", "the off-diagonal blocks of 𝓛(λ) in (5) §10"),
+                       ("coupled-neumann-flow", "the last line of (7) §10"),
+                       ("coupled-big-lax-normal", "(10) §10"),
+                       ("coupled-perturbed-big-lax", "the paragraph after Theorem 10.2"),
+                       ("complex-neumann-dual-lax", "the off-diagonal blocks of 𝓛(λ) in (15) §10")):
+        assert place in catalog.get(cid).place, cid
+    assert all(c.place for c in catalog if c.erratum)
+
+
 def test_the_runner_writes_the_place_into_an_erratums_record(catalog):
     """The runner stamps the claim's place next to its erratum text on each record of a documented erratum (so
     that a record made by the library, by `check` or by a claims file carries it as one made by `verify`), and

@@ -1,6 +1,7 @@
 """The renderers, on hand-made Result records."""
 from __future__ import annotations
 
+import json
 import re
 import shutil
 import subprocess
@@ -8,7 +9,7 @@ import xml.etree.ElementTree as ET
 
 import pytest
 
-from stiefelsym.reports.report import (_tex_change, case_name, render_junit, render_latex, render_markdown,
+from stiefelsym.reports.report import (_tex_change, case_name, grouped_reruns, quoted_value_words, render_junit, render_latex, render_markdown,
                                render_mutation_markdown, render_summary)
 from stiefelsym.results import CheckOutcome, Result, dump_results, load_results
 
@@ -361,7 +362,7 @@ def test_rank_and_count_details_are_shown_from_the_most_rigorous_method():
     md = render_markdown(_rank_results())
     assert "Rank and count statements" in md
     assert "| rank ad\\_Phi | (4,1) | exact | as printed | rank over the function field Q(chart parameters) = 5" in md
-    assert "| regular | (4,1) | exact | **mismatch** | the generic orbit is regular (1) or singular (0): 1 (paper: 0) |" in md
+    assert "| regular | (4,1) | exact | **mismatch** | the generic orbit is regular (1) or singular (0): computed 1, printed 0 |" in md
     assert "rank 5 at this exact point: generic rank \\>= 5 (certain)" in md
     tex = render_latex(_rank_results(), detail=True)
     assert r"regular, (4,1) exact: \textbf{mismatch}. the generic orbit is regular (1) or singular (0)" in tex
@@ -371,7 +372,7 @@ def test_a_meaning_carried_by_the_record_is_shown_in_front():
     r = result("orbit", 4, 1, "exact", "proved", section="2",
                checks=[CheckOutcome("rank ad_Phi", "rank", "rank ... = 5 (paper: 5)")])
     r.checks[0].meaning = "2l"   # a record that carries the Rank's meaning
-    assert "| rank ad\\_Phi | (4,1) | exact | as printed | 2l: rank ... = 5 (paper: 5) |" in render_markdown([r])
+    assert "| rank ad\\_Phi | (4,1) | exact | as printed | 2l: rank ... = 5 (printed: 5) |" in render_markdown([r])
 
 
 # --------------------------------------------------------------------------- mutation analysis
@@ -706,8 +707,10 @@ def test_a_list_of_reruns_shows_its_last_item_rather_than_one_more():
                    rerun=f"stiefelsym verify neumann-lax --size {n},1 --method exact") for n in (2, 3, 4, 5)]
     tex = render_latex(four)          # the referee's document lists two more failing runs: here all three
     assert "more (in results" not in tex and r"--size 5,\allowbreak{}1" in tex
-    assert "and 2 more (in results.json)" in render_latex(four + [
-        result("neumann-lax", 6, 1, "exact", "fails", witness=WITNESS, rerun="stiefelsym verify neumann-lax --size 6,1")])
+    # commands that are not joined (here each at a hard point) are listed one by one, up to the limit
+    hard = [result("neumann-lax", n, 1, "exact", "fails", witness=WITNESS,
+                   rerun=f"stiefelsym verify neumann-lax --size {n},1 --hard far-chart") for n in (2, 3, 4, 5, 6)]
+    assert "and 2 more (in results.json)" in render_latex(hard)
     md = render_markdown([result("neumann-lax", n, 1, "exact", "fails", witness=WITNESS,
                                  rerun=f"stiefelsym verify neumann-lax --size {n},1") for n in range(1, 11)])
     assert "more (in results" not in md and "--size 10,1" in md
@@ -717,3 +720,91 @@ def test_the_meaning_of_fails_names_both_kinds_of_witness():
     from stiefelsym.reports.report import VERDICT_MEANING
     text = VERDICT_MEANING["fails"]
     assert "a point and a nonzero residual entry" in text and "dimension, rank or count" in text
+
+
+# --------------------------------------------------------------------------- stop 69: the referee's reading
+
+def _erratum_pair(claim: str, paper: list[str], fix: str = "one fix") -> list[Result]:
+    """A claim that fails as printed at (2,1) and (3,1) and whose correction ``fix`` is proved at both."""
+    rs = [result(claim, n, 1, "exact", "fails", expected=True, erratum="wrong", paper=paper) for n in (2, 3)]
+    rs += [result(claim, n, 1, "exact", "proved", variant=fix, paper=paper) for n in (2, 3)]
+    return rs
+
+
+def test_one_misprint_repaired_by_one_correction_in_two_statements_is_counted_once():
+    """Two statements that involve one formula and are repaired by the same registered correction fail through one
+    misprint (the headline counts it once, the list says which); the same correction of formulas with no label in
+    common is two misprints."""
+    rs = (_erratum_pair("theorem", ["LA3D", "D-eq"]) + _erratum_pair("extends", ["LA3D", "LA3"])
+          + _erratum_pair("elsewhere", ["curve"]))
+    md = render_markdown(rs)
+    assert "3 fail as printed (from 2 misprints: theorem and extends fail through one misprint" in md
+    assert "correction: one fix (the same misprint as theorem)" in md
+    assert "elsewhere` (curve); correction: one fix\n" in md
+    tex = render_latex(rs)
+    assert "from 2 misprints" in tex and "the same misprint as theorem" in tex
+    # no shared label: three misprints, nothing said
+    rs = _erratum_pair("a", ["x"]) + _erratum_pair("b", ["y"])
+    assert "misprints" not in render_markdown(rs)
+
+
+def test_the_reruns_of_an_erratum_are_one_command_per_method_and_seed():
+    cmds = [f"stiefelsym verify c --size {n},1 --method exact --seed 0" for n in (2, 3, 4)]
+    cmds += ["stiefelsym verify c --size 5,1 --method modular --seed 0", "stiefelsym verify c --size 6,1 --method exact",
+             "stiefelsym verify c --size 6,2 --method exact --seed 0", "stiefelsym verify c --claims f.py --size 1,1"]
+    assert grouped_reruns(cmds) == [
+        "stiefelsym verify c --method exact --seed 0 --size 2,1 --size 3,1 --size 4,1 --size 6,2",
+        "stiefelsym verify c --method modular --seed 0 --size 5,1",
+        "stiefelsym verify c --method exact --size 6,1",      # a run that draws nothing has no seed
+        "stiefelsym verify c --claims f.py --size 1,1"]       # any other command as it is
+
+
+def test_a_grouped_rerun_reproduces_each_of_its_runs(tmp_path):
+    """The command that joins the sizes gives, at each size, the verdict of the command of that size alone."""
+    from click.testing import CliRunner
+    from stiefelsym.cli import main
+    one = [CliRunner().invoke(main, ["verify", "spectral-curve-identity-size", "--size", s, "--method", "exact",
+                                     "--seed", "0", "--format", "json", "--no-report"]) for s in ("3,1", "4,1")]
+    both = CliRunner().invoke(main, ["verify", "spectral-curve-identity-size", "--method", "exact", "--seed", "0",
+                                     "--size", "3,1", "--size", "4,1", "--format", "json", "--no-report"])
+    def records(out):
+        data = json.loads(out.stdout)
+        return [(r["n"], r["r"], r["verdict"], r["certificate"], r.get("witness")) for r in data["results"]
+                if not r.get("variant")]
+    assert records(both) == records(one[0]) + records(one[1])
+
+
+def test_a_long_change_of_a_formula_is_left_out_of_the_note_for_the_authors():
+    from stiefelsym.reports import report as rep
+    rs = _erratum_pair("big", ["so(n,n)"], fix="the sign of the last term")
+    # the change of the catalog's coupled-big-lax-normal: two block matrices and a commutator of them
+    J, M, K = "(0, A; A, 0)ν", "(PXᵀ − XPᵀ, 0; 0, QYᵀ − YQᵀ)", "(0, XYᵀ; YXᵀ, 0)ν⁻¹"
+    tJ, tM = r"\begin{pmatrix}0 & A\\ A & 0\end{pmatrix} \nu", \
+        r"\begin{pmatrix}P X^T - X P^T & 0\\ 0 & Q Y^T - Y Q^T\end{pmatrix}"
+    tK = r"\begin{pmatrix}0 & X Y^T\\ Y X^T & 0\end{pmatrix} \nu^{-1}"
+    long_change = [{"where": "so(n,n)", "old": K, "new": "−" + K, "old_tex": tK, "new_tex": "-" + tK},
+                   {"where": "so(n,n)", "old": f"[{J} + {M} + {K}, {J} + {M}]", "new": f"[{J} + {M}, {J} + {M} − {K}]",
+                    "old_tex": f"[{tJ} + {tM} + {tK}, {tJ} + {tM}]", "new_tex": f"[{tJ} + {tM}, {tJ} + {tM} - {tK}]"}]
+    for r in rs:
+        if r.variant:
+            r.change = long_change
+    for doc in (render_markdown(rs), render_latex(rs)):
+        note = doc.split("Note for the authors")[1].split("\n\n")[0]
+        assert "the sign of the last term (the change of the formula, in the paper's notation, is in the " \
+               "candidate corrections below)" in note
+        assert "XYᵀ" not in note and "X Y^T" not in note
+    assert rep.NOTE_CHANGE_CHARS < len(rep.change_text(long_change))
+    # a short change is still quoted in the note
+    for r in rs:
+        if r.variant:
+            r.change = long_change[:1]
+    note = render_markdown(rs).split("Note for the authors")[1].split("\n\n")[0]
+    assert "−(0, XYᵀ; YXᵀ, 0)ν⁻¹ (registered as: the sign of the last term)" in note
+
+
+def test_the_value_the_paper_prints_reads_as_printed_in_every_table():
+    assert quoted_value_words("regular (1) or singular (0): 1 (paper: 0)") == \
+        "regular (1) or singular (0): computed 1, printed 0"
+    assert quoted_value_words("rank = 30 (paper: 30); two-sided") == "rank = 30 (printed: 30); two-sided"
+    assert quoted_value_words("exact rank 4 over Q; paper: 4") == "exact rank 4 over Q; printed: 4"
+    assert quoted_value_words("rank 3 (claimed: 3)") == "rank 3 (claimed: 3)"

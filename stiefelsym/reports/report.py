@@ -14,6 +14,7 @@ parsed contents are passed as ``mutation=``.
 from __future__ import annotations
 
 import re
+import shlex
 import unicodedata
 from fractions import Fraction
 from collections import Counter
@@ -417,6 +418,20 @@ def printed_value_words(detail: str) -> str:
     return detail
 
 
+#: a number the statement gives, quoted in a check's detail: "2 (paper: 1)" after a colon, or "(paper: 30" alone
+_COMPUTED_AGAINST = re.compile(r"(^|: )(\d+) \((paper|claimed): (\d+)\)")
+_QUOTED_ANYWHERE = re.compile(r"(\(|; )(paper|claimed): ")
+
+
+def quoted_value_words(detail: str) -> str:
+    """A check's detail for a table row, every value the statement gives said as the printed (or the claimed)
+    one: "...: 2 (paper: 1)" as "...: computed 2, printed 1", and "(paper: 30; certain)" as "(printed: 30;
+    certain)", "; paper: 4" as "; printed: 4" ("paper: 30" alone reads as if the paper gave 30 for the quantity computed just before)."""
+    text = _COMPUTED_AGAINST.sub(lambda m: f"{m.group(1)}computed {m.group(2)}, "
+                                 f"{'printed' if m.group(3) == 'paper' else 'claimed'} {m.group(4)}", detail)
+    return _QUOTED_ANYWHERE.sub(lambda m: m.group(1) + ("printed: " if m.group(2) == "paper" else "claimed: "), text)
+
+
 def _witness_heading(w: Result) -> str:
     seed = f", seed {w.seed}" if w.seed is not None else ""
     return f"Witness at size {w.size}, method {w.method}{seed}:"
@@ -543,7 +558,7 @@ def dimension_checks(c: "ClaimResults") -> list[tuple[str, str, str, str, str]]:
             meaning = getattr(ch, "meaning", "") or ""
             detail = ch.detail if not meaning or ch.detail.startswith(meaning) else f"{meaning}: {ch.detail}"
             out.append((ch.name, r.size, r.method,
-                        "as printed" if ch.status in ("rank", "count") else "mismatch", detail))
+                        "as printed" if ch.status in ("rank", "count") else "mismatch", quoted_value_words(detail)))
     return out
 
 
@@ -701,7 +716,7 @@ def _md_verdict(r: Result) -> str:
 
 def _md_results(rs: list[Result]) -> list[str]:
     rows = [[_md_cell(r.size), r.method, _md_verdict(r), format_seconds(r.seconds),
-             _md_cell(short(r.certificate) or "–"), str(r.seed if r.seed is not None else "–"),
+             _md_cell(short(quoted_value_words(r.certificate or "")) or "–"), str(r.seed if r.seed is not None else "–"),
              format_bound(r.false_pass_bound)] for r in rs]
     return _md_table(["size (n,r)", "method", "verdict", "time", "certificate", "seed",
                       "p (false pass)"], rows, "lllrlrr")
@@ -742,7 +757,7 @@ def render_markdown(results: Sequence[Result], meta: dict[str, Any] | None = Non
     if errata:
         out += ["Fails as printed:", ""]
         out += [f"- `{c.id}` {_placed(c, _md_escape(labels(c.paper)), lambda s: _md_escape(unicode_words(s)))}"
-                + _md_escape(_listed_correction(c, unicode_words))
+                + _md_escape(_listed_correction(c, unicode_words, errata))
                 for c in errata]
         out += [""]
 
@@ -905,14 +920,14 @@ def _md_erratum(c: ClaimResults) -> list[str]:
     facts = _erratum_facts(c)
     out = [f"### `{c.id}` {_md_escape(labels(c.paper))}".rstrip(), ""]
     out += [f"**{_note_heading(c)}** "
-            f"{_md_escape(_erratum_note(c, facts, correction=lambda v: _with_change(c, v), words=unicode_words))}",
+            f"{_md_escape(_erratum_note(c, facts, correction=lambda v: _with_change(c, v, note=True), words=unicode_words))}",
             ""]
     st = _md_statement(c.statement)
     if st:
         out += ["As printed:", "", st, ""]
     out += ["Failing runs: " + ", ".join(f"{_md_escape(r.size)} {r.method}" for r in c.failures)
             + ".", ""]
-    w = c.failures[0]
+    w = _witness_run(c)
     if w.erratum:
         out += [f"What is wrong: {_md_escape(unicode_words(greek_words(w.erratum)))}", ""]
     out += _md_small_witness(c)
@@ -940,8 +955,33 @@ def _shown(items: Sequence[Any], limit: int) -> int:
     return len(items) if len(items) <= limit + 1 else limit
 
 
+def grouped_reruns(commands: Sequence[str]) -> list[str]:
+    """Rerun commands of one claim, those that differ only in their size joined into one command per method and
+    seed, or per method where the runs draw nothing (``--size`` repeated: the same runs, each with its own draws, which depend on its size and not on the
+    other runs); any other command as it is.  The order of first appearance is kept."""
+    groups: dict[tuple[str, ...], list[str]] = {}
+    out: list[Any] = []
+    for cmd in commands:
+        try:
+            words = shlex.split(cmd)
+        except ValueError:
+            words = []
+        if (len(words) in (7, 9) and words[:2] == ["stiefelsym", "verify"] and words[3] == "--size"
+                and words[5] == "--method" and (len(words) == 7 or words[7] == "--seed")):
+            key = (words[2], words[6]) + tuple(words[7:])
+            if key not in groups:
+                groups[key] = []
+                out.append(key)
+            groups[key].append(words[4])
+        else:
+            out.append(cmd)
+    return [x if isinstance(x, str) else " ".join(
+        shlex.quote(w) for w in ["stiefelsym", "verify", x[0], "--method", *x[1:]]
+        + [v for size in groups[x] for v in ("--size", size)]) for x in out]
+
+
 def _md_erratum_tail(c: ClaimResults, facts: dict[str, Any], w: Result, out: list[str]) -> list[str]:
-    others = [x for x in facts["reruns"] if x != w.rerun]
+    others = grouped_reruns([x for x in facts["reruns"] if x != w.rerun])
     if others:
         out += ["Every other failure, reproducible with:", ""]
         shown = _shown(others, MAX_ERRATUM_RERUNS)
@@ -952,6 +992,13 @@ def _md_erratum_tail(c: ClaimResults, facts: dict[str, Any], w: Result, out: lis
     # the verified corrections are in the note for the authors and in the list of candidates below: not
     # a third time here
     return out + _md_corrections(c)
+
+
+def _witness_run(c: ClaimResults) -> Result:
+    """The failing run an erratum shows: the one whose small witness is checked by hand, when there is one (the
+    hand witness and the run's own witness block then speak of one size), else the first."""
+    small = small_witness_of(c)
+    return small[0] if small is not None else c.failures[0]
 
 
 def small_witness_of(c: ClaimResults) -> tuple[Result, dict[str, Any]] | None:
@@ -1070,14 +1117,28 @@ def _tex_letter(part: str) -> str:
     return part
 
 
-def _with_change(c: ClaimResults, variant: str) -> str:
+#: the longest change of a formula (in characters, Unicode) the note for the authors quotes: a longer one (whole
+#: block matrices and commutators) is left to the list of candidate corrections, and the note gives the
+#: correction in the catalog's words
+NOTE_CHANGE_CHARS = 160
+
+#: what the note says in place of a change too long to quote
+NOTE_CHANGE_ELSEWHERE = " (the change of the formula, in the paper's notation, is in the candidate corrections below)"
+
+
+def _with_change(c: ClaimResults, variant: str, note: bool = False) -> str:
     """A registered correction, in Unicode: its change of the graph in the paper's notation, then its
-    own words (the catalog's, unchanged)."""
+    own words (the catalog's, unchanged); in the ``note`` for the authors, a change longer than
+    NOTE_CHANGE_CHARS is left to the list of candidates."""
     change = change_text(c.change_of(variant))
+    if note and len(change) > NOTE_CHANGE_CHARS:
+        return unicode_words(variant) + NOTE_CHANGE_ELSEWHERE
     return f"{change} (registered as: {unicode_words(variant)})" if change else unicode_words(variant)
 
 
-def _tex_with_change(c: ClaimResults, variant: str) -> str:
+def _tex_with_change(c: ClaimResults, variant: str, note: bool = False) -> str:
+    if note and len(change_text(c.change_of(variant))) > NOTE_CHANGE_CHARS:
+        return tex_words(variant) + tex_escape(NOTE_CHANGE_ELSEWHERE)
     change = _tex_change(c.change_of(variant))
     return (f"{change} {{\\small (registered as: {tex_words(variant)})}}" if change else tex_words(variant))
 
@@ -1166,7 +1227,7 @@ def _tex_results(rs: list[Result]) -> list[str]:
         out.append(" & ".join([
             tex_escape(r.size), tex_escape(r.method), _tex_verdict(r),
             tex_escape(format_seconds(r.seconds)),
-            re.sub(r"([*+,=])", r"\1\\allowbreak{}", tex_words(short(r.certificate, 120) or "--")),
+            re.sub(r"([*+,=])", r"\1\\allowbreak{}", tex_words(short(quoted_value_words(r.certificate or ""), 120) or "--")),
             str(r.seed if r.seed is not None else "--"), _tex_bound(r.false_pass_bound)]) + r"\\")
     return out + [r"\bottomrule", r"\end{longtable}", "}"]
 
@@ -1211,7 +1272,8 @@ def headline(claims: list[ClaimResults], paper: bool = True) -> tuple[str, list[
                f"{'was' if len(open_) == 1 else 'were'} left undecided at some size ({named}), " if open_ else "")
             + (f"{len(nowhere)} {'was' if len(nowhere) == 1 else 'were'} decided at no size ({unnamed}), "
                if nowhere else "")
-            + f"and {len(errata)} {'fails' if len(errata) == 1 else 'fail'} as printed{_errata_words(errata)} "
+            + f"and {len(errata)} {'fails' if len(errata) == 1 else 'fail'} as printed{_misprint_words(errata)}"
+            f"{_errata_words(errata)} "
             f"({len(corrected_free)} {'correction' if len(corrected_free) == 1 else 'corrections'} proved for "
             f"every n and r).")
     return text, errata
@@ -1249,6 +1311,18 @@ def _kind_words(kind: str, claims: list[ClaimResults]) -> str:
     return words
 
 
+def _misprint_words(errata: list[ClaimResults]) -> str:
+    """How many misprints the failures come from, where some statements are repaired by one correction."""
+    shared = shared_misprints(errata)
+    if not shared:
+        return ""
+    distinct = len(errata) - sum(len(g) - 1 for g in shared)
+    names = [", ".join(c.id for c in g[:-1]) + f" and {g[-1].id}" for g in shared]
+    return (f" (from {distinct} misprints: {names[0]} fail through one misprint, repaired by one correction"
+            + "".join(f"{'; and so do' if i == len(names) - 1 else '; so do'} {x}" for i, x in enumerate(names[1:], 1))
+            + ")")
+
+
 def _errata_words(errata: list[ClaimResults]) -> str:
     """What the headline says of the failures: how many have an exact witness point, how many a number computed
     against the printed one, and how many of those with a registered correction have one verified (each said
@@ -1282,12 +1356,35 @@ def _placed(c: ClaimResults, labelled: str, words: Callable[[str], str]) -> str:
     return f"in {words(c.place)}" + (f" (involves: {labelled})" if labelled else "")
 
 
-def _listed_correction(c: ClaimResults, words: Callable[[str], str]) -> str:
-    """The correction named beside an erratum in the list after the headline: a verified one only."""
+def _listed_correction(c: ClaimResults, words: Callable[[str], str],
+                       errata: Sequence[ClaimResults] = ()) -> str:
+    """The correction named beside an erratum in the list after the headline: a verified one only; an erratum
+    repaired by the same correction as one listed before it says so (one misprint, see :func:`shared_misprints`)."""
     verified = _erratum_facts(c)["verified"]
     if verified:
-        return "; correction: " + words(verified[0])
+        first = next((g[0] for g in shared_misprints(errata) if c in g[1:]), None)
+        same = f" (the same misprint as {first.id})" if first is not None else ""
+        return "; correction: " + words(verified[0]) + same
     return "; no registered correction verified" if c.variants else ""
+
+
+def shared_misprints(errata: Sequence[ClaimResults]) -> list[list[ClaimResults]]:
+    """The errata repaired by one and the same verified correction (the same text: one edit of the paper) that
+    involve a common result or equation of the paper, in groups of two or more, in the order of the list:
+    statements of their own (a theorem and a sentence that extends it) that fail through one misprint.  The
+    same correction of two different formulas (Iₙ for I₂ᵣ in two displays) is two misprints."""
+    groups: list[tuple[tuple[str, ...], set[str], list[ClaimResults]]] = []
+    for c in errata:
+        verified = tuple(_erratum_facts(c)["verified"])
+        if not verified:
+            continue
+        group = next((g for g in groups if g[0] == verified and g[1] & set(c.paper)), None)
+        if group is None:
+            groups.append((verified, set(c.paper), [c]))
+        else:
+            group[1].update(c.paper)
+            group[2].append(c)
+    return [g[2] for g in groups if len(g[2]) > 1]
 
 
 def render_latex(results: Sequence[Result], meta: dict[str, Any] | None = None, mutation: Any = None,
@@ -1316,7 +1413,7 @@ def render_latex(results: Sequence[Result], meta: dict[str, Any] | None = None, 
     if errata:
         out += [tex_escape("Fails as printed:")]
         out += _tex_items([r"\texttt{" + tex_escape(c.id) + "} " + _placed(c, tex_labels(c.paper), tex_words)
-                           + _listed_correction(c, tex_words)
+                           + _listed_correction(c, tex_words, errata)
                            for c in errata])
     if not detail:
         out += [tex_escape("Every run, with the reductions its proof used (the chart of T*V, an equivariance, "
@@ -1595,10 +1692,10 @@ def _tex_erratum(c: ClaimResults, reruns: int = MAX_ERRATUM_RERUNS) -> list[str]
     facts = _erratum_facts(c)
     out = [_tex_claim_heading(c)]
     out += [r"\textbf{" + _note_heading(c) + "} "
-            + _erratum_note(c, facts, tex_escape, lambda v: _tex_with_change(c, v), tex_words), ""]
+            + _erratum_note(c, facts, tex_escape, lambda v: _tex_with_change(c, v, note=True), tex_words), ""]
     if c.statement.strip():
         out += [r"As printed:\nopagebreak", tex_display(c.statement)]
-    w = c.failures[0]
+    w = _witness_run(c)
     out += [tex_escape("Failing runs: " + ", ".join(f"{r.size} {r.method}" for r in c.failures) + "."), ""]
     if w.erratum:
         out += ["What is wrong: " + tex_words(greek_words(w.erratum)), ""]
@@ -1625,7 +1722,7 @@ def _tex_erratum(c: ClaimResults, reruns: int = MAX_ERRATUM_RERUNS) -> list[str]
 
 def _tex_erratum_tail(c: ClaimResults, facts: dict[str, Any], w: Result, out: list[str],
                       reruns: int = MAX_ERRATUM_RERUNS) -> list[str]:
-    others = [x for x in facts["reruns"] if x != w.rerun]
+    others = grouped_reruns([x for x in facts["reruns"] if x != w.rerun])
     if others:
         shown = _shown(others, reruns)
         more = [f"… and {len(others) - shown} more (in results.json)"] if len(others) > shown else []
