@@ -739,3 +739,19 @@ def test_the_reports_account_of_the_mutants_symbolic_budgets_is_the_analysis_own
     assert f"{mutate.MUTANT_EXACT_SECONDS:g} s per run of a mutant" in MUTATION_EXPLANATION
     assert f"at most {power(mutate.MUTANT_TERM_PRODUCTS)} term products per symbolic product" in MUTATION_EXPLANATION
     assert f"at most {power(mutate.MUTANT_REFUTED_TERM_PRODUCTS)} (a run stopped there" in MUTATION_EXPLANATION
+
+
+def test_the_claim_line_of_an_error_is_named_the_same_in_every_clone():
+    """An error's claim line names a catalog file as proofs/<file>, not by the absolute path of one checkout, so
+    that make mutate writes the same mutation.json in every clone (the path was in 9747 messages)."""
+    import os
+    import stiefelsym.proofs as catalog
+    from stiefelsym.methods.fixed_size import _describe
+    ns: dict = {}
+    exec(compile("def f():\n    return [] - []\n", os.path.join(catalog.__path__[0], "sec1_introduction.py"), "exec"), ns)
+    try:
+        ns["f"]()
+    except TypeError as exc:
+        message = _describe(exc)
+    assert message.endswith("(at proofs/sec1_introduction.py:2)")
+    assert os.path.sep + "proofs" + os.path.sep not in message.replace("(at proofs/", "")

@@ -751,11 +751,12 @@ def test_one_misprint_repaired_by_one_correction_in_two_statements_is_counted_on
 def test_the_reruns_of_an_erratum_are_one_command_per_method_and_seed():
     cmds = [f"stiefelsym verify c --size {n},1 --method exact --seed 0" for n in (2, 3, 4)]
     cmds += ["stiefelsym verify c --size 5,1 --method modular --seed 0", "stiefelsym verify c --size 6,1 --method exact",
+             "stiefelsym verify c --size 7,1 --method exact",
              "stiefelsym verify c --size 6,2 --method exact --seed 0", "stiefelsym verify c --claims f.py --size 1,1"]
     assert grouped_reruns(cmds) == [
         "stiefelsym verify c --method exact --seed 0 --size 2,1 --size 3,1 --size 4,1 --size 6,2",
-        "stiefelsym verify c --method modular --seed 0 --size 5,1",
-        "stiefelsym verify c --method exact --size 6,1",      # a run that draws nothing has no seed
+        "stiefelsym verify c --size 5,1 --method modular --seed 0",   # alone: as it is
+        "stiefelsym verify c --method exact --size 6,1 --size 7,1",     # a run that draws nothing has no seed
         "stiefelsym verify c --claims f.py --size 1,1"]       # any other command as it is
 
 

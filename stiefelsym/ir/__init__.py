@@ -7,6 +7,7 @@ along flows and gradients rewritten into ordinary nodes) →
 """
 from __future__ import annotations
 
+import contextvars
 import pickle
 import threading
 import weakref
@@ -273,7 +274,10 @@ def _typed_at(func: Callable, free: Graph, n: int, r: int, constraints: tuple[st
         return hit[1]
     try:
         try:
-            g = _clean(trace, GraphClaim(free, name=getattr(func, "__name__", "claim")), n, r, constraints)
+            # the replay is engine code (no code of the claim runs): traced in this thread, in an empty
+            # context as a thread of its own would give it, with no thread to start per size
+            g = contextvars.Context().run(trace, GraphClaim(free, name=getattr(func, "__name__", "claim")), n, r,
+                                          constraints)
             _check_refusals(g)
         except TraceRefused as exc:
             raise TraceRefused(f"the claim's graph with symbolic sizes does not type at ({n},{r}): "

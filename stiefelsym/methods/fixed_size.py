@@ -26,6 +26,7 @@ import random
 import re
 import weakref
 import time
+from collections import OrderedDict
 from contextlib import contextmanager
 from dataclasses import dataclass, field as dc_field
 from fractions import Fraction
@@ -271,8 +272,32 @@ def _claim_graph(func: Callable, n: int | None, r: int | None, constraints: tupl
         key = ("checks", group[1])
         sliced = g.cache.get(key)
         if sliced is None:
-            sliced = g.cache[key] = g.checks_slice(group[1])
+            sliced = g.cache[key] = _interned(g.checks_slice(group[1]))
         g = sliced
+    return g
+
+
+#: slices of graphs by content (:func:`_interned`), the most recent last
+_SLICES: "OrderedDict[tuple, Any]" = OrderedDict()
+SLICE_CACHE_SIZE = 32
+
+
+def _interned(g: Any) -> Any:
+    """The slice ``g``, or an earlier slice of the same content (its digest, refusals, functions and size) in
+    its place, with what the passes computed of it (derivatives, evaluation program, coordinate reads): the
+    graph of a group of checks that a mutant of a claim leaves as it was is the same slice for every mutant.
+    A slice is pure data made by the engine from a graph (no claim code runs); one that carries the claim's
+    source sites (for its messages) is kept as it is."""
+    if g.sites is not None:
+        return g
+    key = (g.digest(), tuple(g.refusals), g.fns, g.sizes)
+    hit = _SLICES.get(key)
+    if hit is not None:
+        _SLICES.move_to_end(key)
+        return hit
+    _SLICES[key] = g
+    while len(_SLICES) > SLICE_CACHE_SIZE:
+        _SLICES.popitem(last=False)
     return g
 
 
@@ -3529,8 +3554,20 @@ def _describe(exc: BaseException) -> str:
     for frame, lineno in traceback.walk_tb(exc.__traceback__):
         name = frame.f_code.co_filename
         if "/stiefelsym/" not in name and not name.startswith("<"):
-            where = f" (at {name}:{lineno})"
+            where = f" (at {_shown_path(name)}:{lineno})"
     return f"{type(exc).__name__}: {exc}{where}"
+
+
+def _shown_path(name: str) -> str:
+    """A claim's file as a message names it: a file of the catalog as proofs/<file> (the same text in every
+    clone and installation), another file relative to the working directory when it is inside it."""
+    import stiefelsym.proofs as catalog
+    path = os.path.realpath(name)
+    for folder in map(os.path.realpath, catalog.__path__):
+        if os.path.dirname(path) == folder:
+            return "proofs/" + os.path.basename(path)
+    rel = os.path.relpath(path)
+    return name if rel.startswith("..") else rel
 
 
 METHOD_RUNNERS = {

@@ -958,7 +958,8 @@ def _shown(items: Sequence[Any], limit: int) -> int:
 def grouped_reruns(commands: Sequence[str]) -> list[str]:
     """Rerun commands of one claim, those that differ only in their size joined into one command per method and
     seed, or per method where the runs draw nothing (``--size`` repeated: the same runs, each with its own draws, which depend on its size and not on the
-    other runs); any other command as it is.  The order of first appearance is kept."""
+    other runs); a command alone in its group, and any other command, as it is.  The order of first appearance
+    is kept."""
     groups: dict[tuple[str, ...], list[str]] = {}
     out: list[Any] = []
     for cmd in commands:
@@ -972,12 +973,12 @@ def grouped_reruns(commands: Sequence[str]) -> list[str]:
             if key not in groups:
                 groups[key] = []
                 out.append(key)
-            groups[key].append(words[4])
+            groups[key].append((words[4], cmd))
         else:
             out.append(cmd)
-    return [x if isinstance(x, str) else " ".join(
+    return [x if isinstance(x, str) else groups[x][0][1] if len(groups[x]) == 1 else " ".join(
         shlex.quote(w) for w in ["stiefelsym", "verify", x[0], "--method", *x[1:]]
-        + [v for size in groups[x] for v in ("--size", size)]) for x in out]
+        + [v for size, _cmd in groups[x] for v in ("--size", size)]) for x in out]
 
 
 def _md_erratum_tail(c: ClaimResults, facts: dict[str, Any], w: Result, out: list[str]) -> list[str]:
