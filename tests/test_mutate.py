@@ -755,3 +755,27 @@ def test_the_claim_line_of_an_error_is_named_the_same_in_every_clone():
         message = _describe(exc)
     assert message.endswith("(at proofs/sec1_introduction.py:2)")
     assert os.path.sep + "proofs" + os.path.sep not in message.replace("(at proofs/", "")
+
+
+def test_a_slice_of_checks_is_shared_by_content_and_never_once_a_claims_file_is_in(monkeypatch):
+    """The slice a mutant's group of checks reads is one object per content (its passes are computed once for
+    every mutant that leaves the group as it was); once the process is sealed, an entry of the table (which claim
+    code that ran in the process could have written) is never used."""
+    import stiefelsym.ir.seal as seal
+    from stiefelsym.ir.graph import Graph
+    from stiefelsym.methods import fixed_size as fs
+    monkeypatch.setattr(fs, "_SLICES", fs.OrderedDict())
+
+    def slice_of(op: str) -> Graph:
+        g = Graph()
+        x = g.add("leaf", ("X",))
+        g.output = g.add("dict", (("c",), (g.add(op, (x, x)),)))
+        return g
+    first, again, other = slice_of("add"), slice_of("add"), slice_of("sub")
+    assert fs._interned(first) is first and fs._interned(again) is first and fs._interned(other) is other
+    # a forged entry under the key of a new slice: used unsealed (the catalog's own runs), never sealed
+    forged = slice_of("sub")
+    fresh = slice_of("matmul")
+    fs._SLICES[(fresh.digest(), (), 0, None)] = forged
+    monkeypatch.setattr(seal, "sealed", lambda: True)
+    assert fs._interned(fresh) is fresh

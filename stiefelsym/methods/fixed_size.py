@@ -287,8 +287,11 @@ def _interned(g: Any) -> Any:
     its place, with what the passes computed of it (derivatives, evaluation program, coordinate reads): the
     graph of a group of checks that a mutant of a claim leaves as it was is the same slice for every mutant.
     A slice is pure data made by the engine from a graph (no claim code runs); one that carries the claim's
-    source sites (for its messages) is kept as it is."""
-    if g.sites is not None:
+    source sites (for its messages) is kept as it is, and so is every slice once a claims file has been imported
+    into the process (:func:`~stiefelsym.ir.seal.sealed`): claim code that ran here could have written into this
+    table, as into any of the process's caches."""
+    from stiefelsym.ir.seal import sealed
+    if g.sites is not None or sealed():
         return g
     key = (g.digest(), tuple(g.refusals), g.fns, g.sizes)
     hit = _SLICES.get(key)
