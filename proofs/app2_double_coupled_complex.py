@@ -138,7 +138,7 @@ def double_lax_at_the_diagonal(s, flipped):
 
 @claim("double-neumann-dual-lax-extends-la3", paper=("dual-D", "LA3*D", "LA3", "LA4"), kind="id", exact_max_n=3,
        fails_at=lambda n, r: True,
-       place="the off-diagonal blocks of 𝓛(λ) in (5) §10, Theorem 10.1, which the sentence before it says extends (1) §8",
+       place="the off-diagonal blocks of 𝓛(λ) in (5) §10, Theorem 10.1",
        erratum="""The sentence before Theorem 10.1 says that (5) §10 extends the Lax representation (1) §8: at
        X = Y, Ẋ = Ẏ = P the printed 𝓛(λ) of (5) §10 is not 𝓛*_neum(λ) of (1) §8, because of the (I_n − λA)^{-1}
        in its off-diagonal blocks; with (λI_n − A)^{-1} there (the correction of Theorem 10.1) it is, and 𝓐(λ) is
@@ -356,7 +356,7 @@ BIG_CORRECTION = "(so(n,n)): −ν⁻¹ in front of the last term of L(ν), and 
 
 @claim("coupled-big-lax-normal", paper=("so(n,n)", "C-eq"), kind="lax", exact_max_n=SYMBOLIC_N_MAX,
        fails_at=lambda n, r: n >= 2,
-       place="the Lax pair (10) §10, which the sentence after it says holds for the normal metric, κ = 0",
+       place="the big Lax pair (10) §10",
        erratum="(10) §10 for κ = 0, along the flow of the Hamiltonian (6) §10 with κ = 0 on T*V × T*V, that is "
                "along (7) §10 with YΠ in place of QΠ (the correction of coupled-neumann-flow): " + _BIG_ERRATUM
                + "  Along (7) §10 as printed, with QΠ, the ν⁰ part fails as well (n ≥ 2), for the printed and the "
@@ -432,7 +432,7 @@ def coupled_dual_lax(s):
 
 @claim("coupled-perturbed-big-lax", paper=("so(n,n)", "C-neumann"), kind="lax", exact_max_n=SYMBOLIC_N_MAX,
        fails_at=lambda n, r: n >= 2,
-       place="the paragraph after Theorem 10.2 on the perturbed Hamiltonian, which applies (10) §10 for every κ",
+       place="the big Lax pair (10) §10",
        erratum="(10) §10 for the perturbed Hamiltonian H_κ = T_κ + tr(XᵀAY) − 2κ tr(XᵀP YᵀQ), every κ, along the "
                "flow of H_κ on T*V × T*V (with the multipliers of both constraint sets; at κ = 0 it is (7) §10 with "
                "YΠ in place of QΠ, the correction of coupled-neumann-flow): " + _BIG_ERRATUM,

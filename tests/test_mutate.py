@@ -757,6 +757,24 @@ def test_the_claim_line_of_an_error_is_named_the_same_in_every_clone():
     assert os.path.sep + "proofs" + os.path.sep not in message.replace("(at proofs/", "")
 
 
+def test_a_claims_file_cannot_have_its_error_named_as_the_catalogs(monkeypatch):
+    """Code of a claims file can give its code objects the file name of a catalog module (the review of stop 69):
+    once a claims file is in the process (the seal), no frame is named as the catalog's."""
+    import os
+    import stiefelsym.ir.seal as seal
+    import stiefelsym.proofs as catalog
+    from stiefelsym.methods.fixed_size import _describe
+    monkeypatch.setattr(seal, "sealed", lambda: True)
+    path = os.path.join(catalog.__path__[0], "sec3_geodesic_flows.py")
+    ns: dict = {}
+    exec(compile("def f():\n    return [] - []\n", path, "exec"), ns)
+    try:
+        ns["f"]()
+    except TypeError as exc:
+        message = _describe(exc)
+    assert "(at proofs/" not in message and message.endswith(f"(at {path}:2, as the code names its file)")
+
+
 def test_a_slice_of_checks_is_shared_by_content_and_never_once_a_claims_file_is_in(monkeypatch):
     """The slice a mutant's group of checks reads is one object per content (its passes are computed once for
     every mutant that leaves the group as it was); once the process is sealed, an entry of the table (which claim

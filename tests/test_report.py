@@ -724,28 +724,34 @@ def test_the_meaning_of_fails_names_both_kinds_of_witness():
 
 # --------------------------------------------------------------------------- stop 69: the referee's reading
 
-def _erratum_pair(claim: str, paper: list[str], fix: str = "one fix") -> list[Result]:
+def _erratum_pair(claim: str, paper: list[str], fix: str = "one fix", place: str = "") -> list[Result]:
     """A claim that fails as printed at (2,1) and (3,1) and whose correction ``fix`` is proved at both."""
-    rs = [result(claim, n, 1, "exact", "fails", expected=True, erratum="wrong", paper=paper) for n in (2, 3)]
+    rs = [result(claim, n, 1, "exact", "fails", expected=True, erratum="wrong", paper=paper, place=place)
+          for n in (2, 3)]
     rs += [result(claim, n, 1, "exact", "proved", variant=fix, paper=paper) for n in (2, 3)]
     return rs
 
 
 def test_one_misprint_repaired_by_one_correction_in_two_statements_is_counted_once():
-    """Two statements that involve one formula and are repaired by the same registered correction fail through one
-    misprint (the headline counts it once, the list says which); the same correction of formulas with no label in
-    common is two misprints."""
-    rs = (_erratum_pair("theorem", ["LA3D", "D-eq"]) + _erratum_pair("extends", ["LA3D", "LA3"])
-          + _erratum_pair("elsewhere", ["curve"]))
+    """Two errata of the catalog that declare one place of their misprint and are repaired by the same verified
+    correction fail through one misprint (the headline counts it once, the list says which); the same correction at
+    another place is another misprint (the review of stop 69: never inferred from shared words and a shared label
+    alone), and a claims file's report counts nothing together."""
+    rs = (_erratum_pair("theorem", ["LA3D", "D-eq"], place="the blocks of (5) §10")
+          + _erratum_pair("extends", ["LA3D", "LA3"], place="the blocks of (5) §10")
+          + _erratum_pair("elsewhere", ["LA3D"], place="the display before (4) §8"))
     md = render_markdown(rs)
     assert "3 fail as printed (from 2 misprints: theorem and extends fail through one misprint" in md
     assert "correction: one fix (the same misprint as theorem)" in md
-    assert "elsewhere` (curve); correction: one fix\n" in md
+    assert "(involves: (LA3D)); correction: one fix\n" in md
     tex = render_latex(rs)
     assert "from 2 misprints" in tex and "the same misprint as theorem" in tex
-    # no shared label: three misprints, nothing said
-    rs = _erratum_pair("a", ["x"]) + _erratum_pair("b", ["y"])
-    assert "misprints" not in render_markdown(rs)
+    # shared words and a shared label without a declared place: two misprints, nothing said
+    rs2 = _erratum_pair("a", ["x"]) + _erratum_pair("b", ["x"])
+    assert "misprint" not in render_markdown(rs2)
+    # a claims file's report (its claims may copy the catalog's place and words): nothing is counted together
+    meta = {"claims_files": ["mine.py"]}
+    assert "misprint" not in render_markdown(rs, meta) and "misprint" not in render_latex(rs, meta)
 
 
 def test_the_reruns_of_an_erratum_are_one_command_per_method_and_seed():
@@ -809,3 +815,42 @@ def test_the_value_the_paper_prints_reads_as_printed_in_every_table():
     assert quoted_value_words("rank = 30 (paper: 30); two-sided") == "rank = 30 (printed: 30); two-sided"
     assert quoted_value_words("exact rank 4 over Q; paper: 4") == "exact rank 4 over Q; printed: 4"
     assert quoted_value_words("rank 3 (claimed: 3)") == "rank 3 (claimed: 3)"
+
+
+def test_a_claims_files_own_words_are_never_reworded_as_the_papers():
+    """"(paper: 5)" in the words of a claims file's claim stays as written (the review of stop 69): only the
+    catalog's records have their quoted values said as printed."""
+    detail = "mm-count: 3 (paper: 5); claimed: 3"
+    mine = result("mm-count", 3, 1, "exact", "proved", checks=[CheckOutcome("c", "count", detail)], certificate=detail,
+                  rerun="stiefelsym verify mm-count --size 3,1 --method exact --claims mine.py")
+    md = render_markdown([mine], {"claims_files": ["mine.py"]})
+    assert "(paper: 5)" in md and "printed: 5" not in md
+    ours = result("mm-count", 3, 1, "exact", "proved", checks=[CheckOutcome("c", "count", detail)], certificate=detail)
+    assert "computed 3, printed 5" in render_markdown([ours])
+
+
+@pytest.mark.parametrize("forge", ["value", "letter", "constraint"])
+def test_report_refuses_a_witness_to_check_by_hand_that_is_not_the_engines(tmp_path, forge):
+    """The witness a reader checks by hand is rendered only as the engine finds it again (the review of stop 69: a
+    results file whose X or residual value was edited rendered "a point of T*V ... the residual is ..."); `check`
+    refused it already, `report` now does too."""
+    from click.testing import CliRunner
+    from stiefelsym.cli import main
+    run = CliRunner().invoke(main, ["verify", "manakov-dual-lax", "--size", "2,1", "--method", "exact",
+                                    "--report-dir", str(tmp_path)])
+    assert run.exit_code == 0, run.output
+    path = tmp_path / "results.json"
+    data = json.loads(path.read_text())
+    record = next(r for r in data["results"] if "small" in (r.get("witness") or {}))
+    small = record["witness"]["small"]
+    assert CliRunner().invoke(main, ["report", "--results", str(path)]).exit_code == 0
+    if forge == "value":
+        small["value"] = "-5/2"
+    elif forge == "letter":
+        small["letters"]["X"] = [["2"], ["0"]]
+    else:
+        small["on T*V"] = {k: True for k in small["on T*V"]} | {"XᵀX = 2I": True}
+    path.write_text(json.dumps(data))
+    out = CliRunner().invoke(main, ["report", "--results", str(path)])
+    assert out.exit_code == 2
+    assert "its witness to check by hand is not the one the engine finds" in out.output

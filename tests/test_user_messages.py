@@ -3,6 +3,7 @@ abs(), a matrix power written with ** and a number as a block, a long exact witn
 and a note for the claims a --size skips (found by a new user writing statements of the paper)."""
 from __future__ import annotations
 
+import os
 import subprocess
 import sys
 import textwrap
@@ -174,4 +175,4 @@ def test_an_error_raised_in_a_statement_s_constructor_is_located_at_the_claim_s_
     import inspect
     res = run_one(_claim(_rank_of_a_float, "rank-float"), Size(3, 2), "modular", seed=1)
     line = inspect.getsourcelines(_rank_of_a_float)[1] + 2
-    assert res.verdict == "error" and f"(at {__file__}:{line})" in res.message, res.message
+    assert res.verdict == "error" and f"(at {os.path.relpath(__file__)}:{line})" in res.message, res.message

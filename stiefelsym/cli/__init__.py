@@ -1154,7 +1154,7 @@ def report(results_file: Path | None, report_dir: Path | None, claims_files: tup
     except (OSError, ValueError, KeyError, TypeError, AttributeError, RecursionError) as exc:
         raise InputError(f"{source} is not a stiefelsym results file: {_one_line(exc)}") from None
     from stiefelsym.run.integrity import (MAX_N_CHECKED, certificate_binding_problems, certificate_problems, claim_field_edits,
-                            declared_edits,
+                            declared_edits, record_graph, small_witness_edited,
                             missing_runs, rerun_problems, run_origin, size_method_problems,
                             unbound_graphs, unstated_runs)
     from stiefelsym.methods.hard import HARD_CASES
@@ -1207,6 +1207,13 @@ def report(results_file: Path | None, report_dir: Path | None, claims_files: tup
             raise InputError(f"{source}: refused, record of {r.claim!r} {r.size} {r.method}: "
                              + "; ".join(said[k] for k in declared) + " (`stiefelsym check` re-checks every record)")
         r.place = claim_of.place if r.erratum else ""
+    for r, record in zip(results, records):   # the witness a reader checks by hand is found again (the engine's own)
+        if isinstance(r.witness, dict) and "small" in r.witness:
+            claim_of, func, why = record_graph(record, registry.get(r.claim))
+            if why or small_witness_edited(record, claim_of, func):
+                raise InputError(f"{source}: refused, record of {r.claim!r} {r.size} {r.method}: its witness to check "
+                                 f"by hand is not the one the engine finds for its claim there{f' ({why})' if why else ''} "
+                                 "(`stiefelsym check` re-checks every record)")
     strangers = unbound_graphs(records, user) if user is not None else []
     if strangers:
         raise InputError(f"{source}: refused, {len(strangers)} record(s) of a claims file whose graph is not its claim's "

@@ -3551,6 +3551,7 @@ def _run_exact_isolated(claim: Claim, n: int, r: int, seed: int, func: Callable 
 
 def _describe(exc: BaseException) -> str:
     import traceback
+    from stiefelsym.ir.seal import sealed
     where = ""
     # the innermost frame outside the engine (the claim's line); walk_tb reads each frame's file and line only,
     # where extract_tb also works out every frame's columns
@@ -3558,12 +3559,17 @@ def _describe(exc: BaseException) -> str:
         name = frame.f_code.co_filename
         if "/stiefelsym/" not in name and not name.startswith("<"):
             where = f" (at {_shown_path(name)}:{lineno})"
+            if sealed():
+                # a claims file's code can give its code objects any file name (a catalog module's too)
+                where = f" (at {name}:{lineno}, as the code names its file)"
     return f"{type(exc).__name__}: {exc}{where}"
 
 
 def _shown_path(name: str) -> str:
-    """A claim's file as a message names it: a file of the catalog as proofs/<file> (the same text in every
-    clone and installation), another file relative to the working directory when it is inside it."""
+    """A claim's file as a message names it, where no claims file has been imported into the process (before the
+    seal only the engine's, the catalog's and the caller's own code ran): a file of the catalog as proofs/<file>
+    (the same text in every clone and installation), another file relative to the working directory when it is
+    inside it."""
     import stiefelsym.proofs as catalog
     path = os.path.realpath(name)
     for folder in map(os.path.realpath, catalog.__path__):

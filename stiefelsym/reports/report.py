@@ -423,10 +423,20 @@ _COMPUTED_AGAINST = re.compile(r"(^|: )(\d+) \((paper|claimed): (\d+)\)")
 _QUOTED_ANYWHERE = re.compile(r"(\(|; )(paper|claimed): ")
 
 
+def of_catalog(r: Result) -> bool:
+    """Whether a record is of a claim of the paper's catalog: its rerun command names no claims file (the command
+    is the record's own, which report and check compare with what the run writes)."""
+    try:
+        return "--claims" not in shlex.split(r.rerun or "")
+    except ValueError:
+        return False
+
+
 def quoted_value_words(detail: str) -> str:
     """A check's detail for a table row, every value the statement gives said as the printed (or the claimed)
-    one: "...: 2 (paper: 1)" as "...: computed 2, printed 1", and "(paper: 30; certain)" as "(printed: 30;
-    certain)", "; paper: 4" as "; printed: 4" ("paper: 30" alone reads as if the paper gave 30 for the quantity computed just before)."""
+    one: "...: 2 (paper: 1)" as "...: computed 2, printed 1", "(paper: 30; certain)" as "(printed: 30; certain)",
+    "; paper: 4" as "; printed: 4" ("paper: 30" alone reads as if the paper gave 30 for the quantity computed just
+    before).  For the records of the catalog only (:func:`of_catalog`): a claims file's words are its own."""
     text = _COMPUTED_AGAINST.sub(lambda m: f"{m.group(1)}computed {m.group(2)}, "
                                  f"{'printed' if m.group(3) == 'paper' else 'claimed'} {m.group(4)}", detail)
     return _QUOTED_ANYWHERE.sub(lambda m: m.group(1) + ("printed: " if m.group(2) == "paper" else "claimed: "), text)
@@ -556,9 +566,10 @@ def dimension_checks(c: "ClaimResults") -> list[tuple[str, str, str, str, str]]:
         for key in sorted((k for k in order if k[0] == name), key=lambda k: (k[1][0] or 0, k[1][1] or 0)):
             _, r, ch = best[key]
             meaning = getattr(ch, "meaning", "") or ""
-            detail = ch.detail if not meaning or ch.detail.startswith(meaning) else f"{meaning}: {ch.detail}"
+            said = quoted_value_words(ch.detail) if of_catalog(r) else ch.detail
+            detail = said if not meaning or ch.detail.startswith(meaning) else f"{meaning}: {said}"
             out.append((ch.name, r.size, r.method,
-                        "as printed" if ch.status in ("rank", "count") else "mismatch", quoted_value_words(detail)))
+                        "as printed" if ch.status in ("rank", "count") else "mismatch", detail))
     return out
 
 
@@ -716,7 +727,7 @@ def _md_verdict(r: Result) -> str:
 
 def _md_results(rs: list[Result]) -> list[str]:
     rows = [[_md_cell(r.size), r.method, _md_verdict(r), format_seconds(r.seconds),
-             _md_cell(short(quoted_value_words(r.certificate or "")) or "–"), str(r.seed if r.seed is not None else "–"),
+             _md_cell(short(quoted_value_words(r.certificate) if of_catalog(r) else r.certificate) or "–"), str(r.seed if r.seed is not None else "–"),
              format_bound(r.false_pass_bound)] for r in rs]
     return _md_table(["size (n,r)", "method", "verdict", "time", "certificate", "seed",
                       "p (false pass)"], rows, "lllrlrr")
@@ -757,7 +768,7 @@ def render_markdown(results: Sequence[Result], meta: dict[str, Any] | None = Non
     if errata:
         out += ["Fails as printed:", ""]
         out += [f"- `{c.id}` {_placed(c, _md_escape(labels(c.paper)), lambda s: _md_escape(unicode_words(s)))}"
-                + _md_escape(_listed_correction(c, unicode_words, errata))
+                + _md_escape(_listed_correction(c, unicode_words, errata if not meta.get("claims_files") else ()))
                 for c in errata]
         out += [""]
 
@@ -1228,7 +1239,7 @@ def _tex_results(rs: list[Result]) -> list[str]:
         out.append(" & ".join([
             tex_escape(r.size), tex_escape(r.method), _tex_verdict(r),
             tex_escape(format_seconds(r.seconds)),
-            re.sub(r"([*+,=])", r"\1\\allowbreak{}", tex_words(short(quoted_value_words(r.certificate or ""), 120) or "--")),
+            re.sub(r"([*+,=])", r"\1\\allowbreak{}", tex_words(short(quoted_value_words(r.certificate) if of_catalog(r) else r.certificate, 120) or "--")),
             str(r.seed if r.seed is not None else "--"), _tex_bound(r.false_pass_bound)]) + r"\\")
     return out + [r"\bottomrule", r"\end{longtable}", "}"]
 
@@ -1273,7 +1284,7 @@ def headline(claims: list[ClaimResults], paper: bool = True) -> tuple[str, list[
                f"{'was' if len(open_) == 1 else 'were'} left undecided at some size ({named}), " if open_ else "")
             + (f"{len(nowhere)} {'was' if len(nowhere) == 1 else 'were'} decided at no size ({unnamed}), "
                if nowhere else "")
-            + f"and {len(errata)} {'fails' if len(errata) == 1 else 'fail'} as printed{_misprint_words(errata)}"
+            + f"and {len(errata)} {'fails' if len(errata) == 1 else 'fail'} as printed{_misprint_words(errata) if paper else ''}"
             f"{_errata_words(errata)} "
             f"({len(corrected_free)} {'correction' if len(corrected_free) == 1 else 'corrections'} proved for "
             f"every n and r).")
@@ -1370,22 +1381,20 @@ def _listed_correction(c: ClaimResults, words: Callable[[str], str],
 
 
 def shared_misprints(errata: Sequence[ClaimResults]) -> list[list[ClaimResults]]:
-    """The errata repaired by one and the same verified correction (the same text: one edit of the paper) that
-    involve a common result or equation of the paper, in groups of two or more, in the order of the list:
-    statements of their own (a theorem and a sentence that extends it) that fail through one misprint.  The
-    same correction of two different formulas (Iₙ for I₂ᵣ in two displays) is two misprints."""
-    groups: list[tuple[tuple[str, ...], set[str], list[ClaimResults]]] = []
+    """The errata of the paper's catalog that declare one place of their misprint and are repaired there by one and
+    the same verified correction (the same words, and the same change of the formula in the graphs), in groups of
+    two or more, in the order of the list: statements of their own (a theorem and a sentence that extends it) that
+    fail through one misprint.  Only for a report of the catalog alone (the callers' rule): a claims file's claim is
+    never counted with the paper's.  The same correction of two formulas (Iₙ for I₂ᵣ in two displays) is two
+    misprints: their places differ."""
+    groups: dict[tuple, list[ClaimResults]] = {}
     for c in errata:
         verified = tuple(_erratum_facts(c)["verified"])
-        if not verified:
+        if not verified or not c.place:
             continue
-        group = next((g for g in groups if g[0] == verified and g[1] & set(c.paper)), None)
-        if group is None:
-            groups.append((verified, set(c.paper), [c]))
-        else:
-            group[1].update(c.paper)
-            group[2].append(c)
-    return [g[2] for g in groups if len(g[2]) > 1]
+        changes = tuple(sorted({(ch.get("old", ""), ch.get("new", "")) for v in verified for ch in c.change_of(v)}))
+        groups.setdefault((c.place, verified, changes), []).append(c)
+    return [g for g in groups.values() if len(g) > 1]
 
 
 def render_latex(results: Sequence[Result], meta: dict[str, Any] | None = None, mutation: Any = None,
@@ -1414,7 +1423,7 @@ def render_latex(results: Sequence[Result], meta: dict[str, Any] | None = None, 
     if errata:
         out += [tex_escape("Fails as printed:")]
         out += _tex_items([r"\texttt{" + tex_escape(c.id) + "} " + _placed(c, tex_labels(c.paper), tex_words)
-                           + _listed_correction(c, tex_words, errata)
+                           + _listed_correction(c, tex_words, errata if not meta.get("claims_files") else ())
                            for c in errata])
     if not detail:
         out += [tex_escape("Every run, with the reductions its proof used (the chart of T*V, an equivariance, "

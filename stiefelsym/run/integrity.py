@@ -483,6 +483,27 @@ def record_graph(r: dict, claim: Claim) -> tuple[Claim, Callable | None, str]:
     return claim, func, ""
 
 
+def small_witness_edited(record: dict, claim: Claim, func: Callable | None) -> bool:
+    """Whether the record's small witness (the point a reader checks by hand, or a count's two numbers) is not what
+    the engine finds again: the point searched for again at the record's size (a pure function of the claim's graph
+    and the size, a fraction of a second), the numbers read again from the record's checks (which a run again, or
+    the claim's declared fields, bind).  False for a record without one."""
+    from stiefelsym.methods.witness import encoded, small_witness
+    from stiefelsym.methods.witness_scripts import count_values, template_check
+    witness = record.get("witness")
+    small = witness.get("small") if isinstance(witness, dict) else None
+    if small is None:
+        return False
+    if not isinstance(small, dict):
+        return True
+    if small.get("kind") == "count":
+        values = next((count_values(ch.get("detail") or "") for ch in record.get("checks") or []
+                       if isinstance(ch, dict) and ch.get("name") == small.get("check")), None)
+        return values != (small.get("value"), small.get("paper"))
+    found = small_witness(claim, record.get("n"), record.get("r"), func, check=template_check(str(record.get("claim"))))
+    return found is None or _canonical(encoded(found)) != _canonical(small)
+
+
 def unbound_graphs(records: list[dict], files: Registry) -> list[str]:
     """The records of the claims of users' files (``files``: their registry) whose graph digest is not what their
     claim, in the claims files named now, traces to at their size: a results file rendered beside another file of
@@ -582,18 +603,8 @@ def check_results(records: list[dict], registry: Registry, echo: Callable[[str],
                 auto = (claim.exact_at(size.n, size.r), auto_budget_reason(claim, size))
             edited = (_evidence_edits(record, again_fixed.to_json())
                       + _message_edits(record, again_fixed.to_json(), auto))
-            if small is not None and not edited:
-                from stiefelsym.methods.witness import encoded, small_witness
-                from stiefelsym.methods.witness_scripts import count_values, template_check
-                if small.get("kind") == "count":     # a number of the checks, which were compared above
-                    values = next((count_values(ch.get("detail") or "") for ch in r.get("checks") or []
-                                   if ch.get("name") == small.get("check")), None)
-                    ok = values == (small.get("value"), small.get("paper"))
-                else:
-                    found = small_witness(claim, n, rr, func, check=template_check(cid))
-                    ok = found is not None and _canonical(encoded(found)) == _canonical(small)
-                if not ok:
-                    edited = ["witness (the small witness)"]
+            if small is not None and not edited and small_witness_edited(r, claim, func):
+                edited = ["witness (the small witness)"]
             if edited:
                 echo(f"REJECTED {where}: its evidence is not what a run again gives ({', '.join(edited)})")
                 bad += 1
