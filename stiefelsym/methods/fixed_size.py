@@ -3559,8 +3559,9 @@ def _describe(exc: BaseException) -> str:
         name = frame.f_code.co_filename
         if "/stiefelsym/" not in name and not name.startswith("<"):
             where = f" (at {_shown_path(name)}:{lineno})"
-            if sealed():
-                # a claims file's code can give its code objects any file name (a catalog module's too)
+            if sealed() or getattr(exc, "_recorded_at", None) is not None:
+                # a claims file's code (here, or in its tracing interpreter, which recorded the place) can give its
+                # code objects any file name, a catalog module's too
                 where = f" (at {name}:{lineno}, as the code names its file)"
     return f"{type(exc).__name__}: {exc}{where}"
 

@@ -691,6 +691,8 @@ class _Recorded:
         if self.at is None:
             raise exc
         path, line = self.at
+        # the place as the file's code named it (a code object can be given any file name): said so in messages
+        exc._recorded_at = (path, line)   # type: ignore[attr-defined]
         code = compile("\n" * (min(line, 10 ** 6) - 1) + "raise __recorded", path, "exec")
         exec(code, {"__recorded": exc})
 

@@ -1,0 +1,3 @@
+# ruff: noqa
+def boom(s):
+    raise ValueError("helper raised")
