@@ -111,7 +111,7 @@ def double_neumann_flow(s):
        place="the off-diagonal blocks of 𝓛(λ) in (5) §10, Theorem 10.1",
        erratum="""Theorem 10.1: with (I_n − λA)^{-1} in the off-diagonal blocks of 𝓛(λ), as printed in (5) §10,
        the equations (3) §10 do not imply d𝓛/dt = [𝓛, 𝓐].  They do with (λI_n − A)^{-1} in all four blocks, as
-       in (1) §8 of Theorem 8.1, which (5) §10 extends: 𝓛(λ) = [[−XᵀRẎ, −XᵀRY], [I_r + ẊᵀRẎ, ẊᵀRY]],
+       in (2) §8 of Theorem 8.1, which (5) §10 extends: 𝓛(λ) = [[−XᵀRẎ, −XᵀRY], [I_r + ẊᵀRẎ, ẊᵀRY]],
        R = (λI_n − A)^{-1}.""",
        statement=r"\tfrac{d}{dt}\mathcal L(\lambda)=[\mathcal L(\lambda),\mathcal A(\lambda)],\ "
                  r"\mathcal L=\begin{pmatrix}-X^T(\lambda-A)^{-1}\dot Y&-X^T(\mathbf I-\lambda A)^{-1}Y\\"
@@ -140,7 +140,7 @@ def double_lax_at_the_diagonal(s, flipped):
        fails_at=lambda n, r: True,
        place="the off-diagonal blocks of 𝓛(λ) in (5) §10, Theorem 10.1",
        erratum="""The sentence before Theorem 10.1 says that (5) §10 extends the Lax representation (1) §8: at
-       X = Y, Ẋ = Ẏ = P the printed 𝓛(λ) of (5) §10 is not 𝓛*_neum(λ) of (1) §8, because of the (I_n − λA)^{-1}
+       X = Y, Ẋ = Ẏ = P the printed 𝓛(λ) of (5) §10 is not 𝓛*_neum(λ) of (2) §8, because of the (I_n − λA)^{-1}
        in its off-diagonal blocks; with (λI_n − A)^{-1} there (the correction of Theorem 10.1) it is, and 𝓐(λ) is
        the 𝓐*_neum(λ) of (3) §8 for the Neumann system (5) §5.""",
        statement=r"X=Y,\ \dot X=\dot Y=P:\quad \mathcal L(\lambda)=\mathcal L^*_{neum}(\lambda),\ "
@@ -356,8 +356,8 @@ BIG_CORRECTION = "(so(n,n)): −ν⁻¹ in front of the last term of L(ν), and 
 
 @claim("coupled-big-lax-normal", paper=("so(n,n)", "C-eq"), kind="lax", exact_max_n=SYMBOLIC_N_MAX,
        fails_at=lambda n, r: n >= 2,
-       place="the big Lax pair (10) §10",
-       erratum="(10) §10 for κ = 0, along the flow of the Hamiltonian (6) §10 with κ = 0 on T*V × T*V, that is "
+       place="the big Lax pair (9) §10",
+       erratum="(9) §10 for κ = 0, along the flow of the Hamiltonian (6) §10 with κ = 0 on T*V × T*V, that is "
                "along (7) §10 with YΠ in place of QΠ (the correction of coupled-neumann-flow): " + _BIG_ERRATUM
                + "  Along (7) §10 as printed, with QΠ, the ν⁰ part fails as well (n ≥ 2), for the printed and the "
                "corrected pair alike: dM/dt gains diag(0, QΠYᵀ − YΠQᵀ), so dM/dt ≠ [K, J], while dK/dt = [M, K] "
@@ -432,10 +432,14 @@ def coupled_dual_lax(s):
 
 @claim("coupled-perturbed-big-lax", paper=("so(n,n)", "C-neumann"), kind="lax", exact_max_n=SYMBOLIC_N_MAX,
        fails_at=lambda n, r: n >= 2,
-       place="the big Lax pair (10) §10",
-       erratum="(10) §10 for the perturbed Hamiltonian H_κ = T_κ + tr(XᵀAY) − 2κ tr(XᵀP YᵀQ), every κ, along the "
+       place="the big Lax pair (9) §10",
+       erratum="(9) §10 for the perturbed Hamiltonian H_κ = T_κ + tr(XᵀAY) − 2κ tr(XᵀP YᵀQ), every κ, along the "
                "flow of H_κ on T*V × T*V (with the multipliers of both constraint sets; at κ = 0 it is (7) §10 with "
-               "YΠ in place of QΠ, the correction of coupled-neumann-flow): " + _BIG_ERRATUM,
+               "YΠ in place of QΠ, the correction of coupled-neumann-flow): " + _BIG_ERRATUM
+               + "  That paragraph also refers to the pair as (10) and to the matrices of Theorem 10.2 as (11); these "
+               "are the numbers of Theorem 10.2's Lax equation and of the condition (11) §10 defining W(n, r): the "
+               "pair's label sits in a row of its display that has no number, and that of the matrices in a display "
+               "of no number.",
        statement=r"H_\kappa=T_\kappa+\tr(X^TAY)-2\kappa\tr(X^TP\,Y^TQ):\ " + _BIG + r"\ \text{for every }\kappa")
 def coupled_perturbed_big_lax(s):
     """For every κ, the flow of the perturbed Hamiltonian H_κ = T_κ + tr(XᵀAY) − 2κ tr(XᵀP YᵀQ) implies the so(n,n) Lax equation (so(n,n))."""
@@ -604,7 +608,7 @@ def complex_lax_residual(s, flipped):
        place="the off-diagonal blocks of 𝓛(λ) in (15) §10, Theorem 10.3",
        erratum="""Theorem 10.3: with (I_n − λA)^{-1} in the off-diagonal blocks of 𝓛(λ), as printed in (15) §10,
        the Neumann system (13) §10 on W(n, r) does not imply d𝓛/dt = [𝓛, 𝓐].  It does with (λI_n − A)^{-1} in all
-       four blocks (the complex form of (1) §8): 𝓛(λ) = [[−ZᵀRŻ̄, −ZᵀRZ̄], [I_r + ŻᵀRŻ̄, ŻᵀRZ̄]],
+       four blocks (the complex form of (2) §8): 𝓛(λ) = [[−ZᵀRŻ̄, −ZᵀRZ̄], [I_r + ŻᵀRŻ̄, ŻᵀRZ̄]],
        R = (λI_n − A)^{-1}.""",
        statement=r"\tfrac{d}{dt}\mathcal L(\lambda)=[\mathcal L(\lambda),\mathcal A(\lambda)],\ "
                  r"\mathcal L=\begin{pmatrix}-Z^T(\lambda-A)^{-1}\dot{\bar Z}&-Z^T(\mathbf I-\lambda A)^{-1}\bar Z\\"

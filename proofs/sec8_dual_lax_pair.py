@@ -842,7 +842,7 @@ def manakov_j2r_vanishes(s):
        fails_at=lambda n, r: n != 2 * r,
        place="the unnumbered display of the spectral curve before (4) §8",
        erratum="""The spectral curve of 𝓛*_neum(λ) is printed |a(λ) 𝓛*_neum(λ) − w I_n| = w^{2r} + ⋯.  The Lax
-       matrix 𝓛*_neum(λ) of (1) §8 is 2r × 2r, so the determinant is defined only when n = 2r.  Corrected: I_{2r}
+       matrix 𝓛*_neum(λ) of (2) §8 is 2r × 2r, so the determinant is defined only when n = 2r.  Corrected: I_{2r}
        (the degree 2r in w of the printed expansion is the size of the matrix), with which the expansion holds
        (claim 2r-integrals).""",
        statement=r"|a(\lambda)\mathcal L^*_{neum}(\lambda)-w\mathbf I_n|:\ \text{the size }n\text{ of }\mathbf I_n"

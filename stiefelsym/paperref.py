@@ -101,6 +101,57 @@ def _source_sections(tex: str) -> dict[str, str]:
     return out
 
 
+#: multi-line displays whose rows are numbered one by one (a row with \notag or \nonumber has no number)
+ROW_DISPLAYS = ("gather", "align", "eqnarray", "multline", "flalign", "alignat")
+_UNNUMBERED_ROW = re.compile(r"\\(notag|nonumber)\b")
+
+
+def _rows(body: str) -> list[str]:
+    """The rows of a display's body: split at each ``\\\\`` outside braces and nested environments (a matrix's
+    rows stay in its row)."""
+    rows, cur, depth, nest, i = [], [], 0, 0, 0
+    while i < len(body):
+        if body.startswith("\\begin{", i):
+            nest += 1
+        elif body.startswith("\\end{", i):
+            nest -= 1
+        if body.startswith("\\\\", i) and depth == 0 and nest == 0:
+            rows.append("".join(cur))
+            cur, i = [], i + 2
+            continue
+        depth += {"{": 1, "}": -1}.get(body[i], 0)
+        cur.append(body[i])
+        i += 1
+    return rows + ["".join(cur)]
+
+
+def _labels_on_numbered_rows(tex: str) -> str:
+    """The source with every label that stands in an unnumbered row of a multi-line display moved to the nearest
+    numbered row of that display (the first after it, else the last before it).  A display carries the number of
+    its numbered row, which is what a reader sees beside it; amsmath gives such a label another number (the
+    next equation's, elsewhere: the paper's (so(n,n)) resolves to the number of (LA3*C)), which the reports must
+    not print as the display's."""
+    out, pos = [], 0
+    for m in re.finditer(r"\\begin\{(" + "|".join(ROW_DISPLAYS) + r")\}", tex):
+        end = tex.find("\\end{" + m.group(1) + "}", m.end())
+        if end < 0 or m.start() < pos:
+            continue
+        rows = _rows(tex[m.end():end])
+        numbered = [k for k, row in enumerate(rows) if not _UNNUMBERED_ROW.search(row)]
+        moved = list(rows)
+        for k, row in enumerate(rows):
+            labels = re.findall(r"\\label\{[^}]*\}", row)
+            if not labels or k in numbered or not numbered:
+                continue
+            to = next((j for j in numbered if j > k), numbered[-1])
+            for label in labels:
+                moved[k] = moved[k].replace(label, "", 1)
+                moved[to] = moved[to] + label
+        out += [tex[pos:m.end()], "\\\\".join(moved)]
+        pos = end
+    return "".join(out) + tex[pos:]
+
+
 def build(tex_path: Path) -> dict[str, PaperRef]:
     """Compile a copy of the paper with hyperref (two pdflatex passes, errors tolerated) and read
     every label's printed number, environment and section."""
@@ -108,7 +159,8 @@ def build(tex_path: Path) -> dict[str, PaperRef]:
     if shutil.which("pdflatex") is None:
         raise RuntimeError("pdflatex is needed to number the paper's labels (Debian: texlive-latex-base)")
     with tempfile.TemporaryDirectory() as tmp:
-        src = re.sub(r"(\\documentclass[^\n]*\n)", lambda m: m.group(1) + "\\usepackage{hyperref}\n", tex, count=1)
+        src = re.sub(r"(\\documentclass[^\n]*\n)", lambda m: m.group(1) + "\\usepackage{hyperref}\n",
+                     _labels_on_numbered_rows(tex), count=1)
         (Path(tmp) / "paper.tex").write_text(src, encoding="utf-8")
         for _ in range(2):
             subprocess.run(["pdflatex", "-interaction=nonstopmode", "paper.tex"], cwd=tmp, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, timeout=300, check=False)

@@ -146,3 +146,17 @@ def test_every_place_of_a_misprint_names_what_the_paper_prints(catalog):
             if "…" not in title:
                 assert any(t.rstrip(".").replace("--", "–") == title for t in titles), f"{c.id}: no paragraph {title!r}"
         assert not re.search(r"\bp\.\s*\d", c.place), c.id
+
+
+def test_a_label_in_an_unnumbered_row_is_named_by_its_displays_number():
+    """The paper's \\label{so(n,n)} sits in a \\notag row of its gather, and amsmath gives it the next equation's
+    number (10), that of (LA3*C); the display carries (9), which the reports name (the referee of stop 69)."""
+    from stiefelsym import paperref
+    tex = ("\\section{A}\\begin{equation}a\\label{one}\\end{equation}\n\\begin{gather}\\label{pair}\n"
+           "\\dot L = [L, A], \\notag \\\\\n L = \\begin{pmatrix} a & b \\\\ c & d \\end{pmatrix}, \\\\\n"
+           " A = L_+ \\notag\n\\end{gather}\n\\begin{equation}b\\label{next}\\end{equation}\n")
+    moved = paperref._labels_on_numbered_rows(tex)
+    rows = paperref._rows(moved[moved.index("\\begin{gather}") + len("\\begin{gather}"):moved.index("\\end{gather}")])
+    assert len(rows) == 3 and "\\label{pair}" not in rows[0] and rows[1].endswith("\\label{pair}")
+    assert paperref._labels_on_numbered_rows(tex.replace("\\notag", "")) == tex.replace("\\notag", "")
+    assert paperref.table()["so(n,n)"]["number"] == "9" and paperref.table()["LA3*C"]["number"] == "10"

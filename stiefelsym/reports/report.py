@@ -1224,8 +1224,10 @@ def _tex_verdict(r: Result) -> str:
 
 
 def _tt(text: Any) -> str:
-    """Monospace text that may break at spaces, after commas and inside long runs of digits."""
-    body = tex_escape(text).replace(",", r",\allowbreak{}").replace(";", r";\allowbreak{}")
+    """Monospace text that may break at spaces, after commas (not between two numbers) and inside long runs of
+    digits."""
+    # (not inside a pair of numbers: "--size 2,2" stays whole, for copying)
+    body = re.sub(r",(?![0-9])", r",\\allowbreak{}", tex_escape(text)).replace(";", r";\allowbreak{}")
     body = re.sub(r"[0-9/]{16,}", lambda m: r"\allowbreak{}".join(m.group(0)[i:i + 12]
                                                                    for i in range(0, len(m.group(0)), 8)), body)
     return r"\texttt{" + body + "}"
@@ -1324,13 +1326,15 @@ def _kind_words(kind: str, claims: list[ClaimResults]) -> str:
 
 
 def _misprint_words(errata: list[ClaimResults]) -> str:
-    """How many misprints the failures come from, where some statements are repaired by one correction."""
+    """How many errors of the paper the failures come from (a misprint or a statement that is false: "misprint"
+    would say more than the records do), where some statements are repaired by one correction."""
     shared = shared_misprints(errata)
     if not shared:
         return ""
     distinct = len(errata) - sum(len(g) - 1 for g in shared)
     names = [", ".join(c.id for c in g[:-1]) + f" and {g[-1].id}" for g in shared]
-    return (f" (from {distinct} misprints: {names[0]} fail through one misprint, repaired by one correction"
+    return (f" (from {distinct} distinct errors of the paper: {names[0]} fail through one error, repaired by one "
+            "correction"
             + "".join(f"{'; and so do' if i == len(names) - 1 else '; so do'} {x}" for i, x in enumerate(names[1:], 1))
             + ")")
 
@@ -1375,7 +1379,7 @@ def _listed_correction(c: ClaimResults, words: Callable[[str], str],
     verified = _erratum_facts(c)["verified"]
     if verified:
         first = next((g[0] for g in shared_misprints(errata) if c in g[1:]), None)
-        same = f" (the same misprint as {first.id})" if first is not None else ""
+        same = f" (the same error of the paper as {first.id})" if first is not None else ""
         return "; correction: " + words(verified[0]) + same
     return "; no registered correction verified" if c.variants else ""
 

@@ -19,14 +19,14 @@ def test_a_claims_files_erratum_is_never_counted_as_the_papers_misprint(tmp_path
     md, _ = _report(tmp_path, "double-neumann-dual-lax", "mine-la3d", "--claims", str(REVIEW / "merge_with_catalog.py"),
                     "--method", "modular", "--size", "2,1")
     assert "fail as printed" in md
-    assert "misprints" not in md and "the same misprint" not in md
+    assert "distinct errors" not in md and "the same error" not in md
 
 
 def test_two_errata_of_one_file_with_one_label_and_the_same_words_are_two(tmp_path):
     """F1: two unrelated errata of one file (one label, corrections with the same words) were counted as one
     misprint; F4: a Count's own words "(paper: 5)" were said as "printed: 5"."""
     md, _ = _report(tmp_path, "--claims", str(REVIEW / "misprint_merge.py"), "--method", "exact", "--max-n", "2")
-    assert "misprints" not in md and "the same misprint" not in md
+    assert "distinct errors" not in md and "the same error" not in md
     assert "rows of X (paper: 5)" in md and "printed: 5" not in md
 
 
