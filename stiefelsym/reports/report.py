@@ -58,7 +58,9 @@ VERDICT_MEANING = {
                 "terms; strong evidence, not a proof."),
     "fails": ("The statement as printed is false at this size: an exact witness is given, either a "
               "point and a nonzero residual entry there (reproducible from the seed) or, for a "
-              "dimension, rank or count, its value computed exactly against the printed one."),
+              "dimension, rank or count (or a property such as regularity, counted 1 if it holds and 0 if "
+              "not), its value computed exactly against the printed one; for a statement that something "
+              "does not vanish, the exact proof that it vanishes identically there."),
     "inconclusive": ("The method ran but could not decide: only degenerate random "
                      "points, a floating-point residual no precision resolved, a "
                      "false-pass bound above 10⁻³⁰, or the run's time budget.  Never "
