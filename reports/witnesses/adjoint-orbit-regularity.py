@@ -12,7 +12,7 @@ import sympy as sp
 STATED = 1
 STATED_PRINTED = 0
 
-"""The remark before Lemma 2l says that the generic adjoint orbit in Phi(T*V) is regular iff n <= 2r + 1.
+"""The paragraph before Lemma 2.5 says that the generic adjoint orbit in Phi(T*V) is regular iff n <= 2r + 1.
 At n = 2r + 2 (here (4, 1)) the orbit of Phi = PX^T - XP^T has the regular dimension n(n-1)/2 - [n/2]
 as well.  The correction: regular iff n <= 2r + 2."""
 
@@ -33,7 +33,7 @@ def counts():
     # ad_Phi on so(n): the columns are the coordinates of [Phi, e_k]; its rank is dim Ad_SO(n) Phi
     coords = lambda m: [m[i, j] for i in range(n) for j in range(i + 1, n)]
     ad = sp.Matrix([coords(Phi * e - e * Phi) for e in so]).T
-    dim = ad.rank()                               # 2l (Lemma 2l: n > 2r+1 gives 2r(n-r-1) = 4)
+    dim = ad.rank()                               # 2l (Lemma 2.5: n > 2r+1 gives 2r(n-r-1) = 4)
     regular = n * (n - 1) // 2 - n // 2           # the dimension of a regular orbit of so(n)
     assert dim == 2 * r * (n - r - 1) == 4
     return {"computed": int(dim == regular),      # 1: regular orbit, 0: singular

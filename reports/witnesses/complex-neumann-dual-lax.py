@@ -14,7 +14,7 @@ POINT = {'A': [['1']], 'ReZ': [['1']], 'ImZ': [['0']], 'ReV': [['0']], 'ImV': [[
 ENTRY = (1, 1)
 STATED = sp.Rational("2")
 
-"""Theorem dual-complex: with (I_n - lambda A)^{-1} in the off-diagonal blocks of L(lambda), as printed in
+"""Theorem 10.3: with (I_n - lambda A)^{-1} in the off-diagonal blocks of L(lambda), as printed in
 (LA3*), the Neumann system (W-eq) on the complex Stiefel variety W(n, r) does not imply dL/dt = [L, A];
 it does with (lambda I_n - A)^{-1} there (the correction)."""
 

@@ -14,7 +14,7 @@ POINT = {'X': [['1']], 'P': [['0']], 'A': [['1']], 'lam': '-1'}
 ENTRY = (1, 2)
 STATED = sp.Rational("-1")
 
-"""The text before Theorem dual-D: (LA3*D) is said to extend (LA3), but at X = Y, X' = Y' = P the printed
+"""The sentence before Theorem 10.1: (LA3*D) is said to extend (LA3), but at X = Y, X' = Y' = P the printed
 L(lambda) of (LA3*D), with (I_n - lambda A)^{-1} in its off-diagonal blocks, is not L*_neum(lambda) of
 (LA3); with (lambda I_n - A)^{-1} there (the correction) it is."""
 

@@ -14,7 +14,7 @@ POINT = {'A': [['0']], 'X': [['-1']], 'Y': [['-1']], 'Xdot': [['0']], 'Ydot': [[
 ENTRY = (1, 1)
 STATED = sp.Rational("2")
 
-"""Theorem dual-D: with (I_n - lambda A)^{-1} in the off-diagonal blocks of L(lambda), as printed in (LA3*D),
+"""Theorem 10.1: with (I_n - lambda A)^{-1} in the off-diagonal blocks of L(lambda), as printed in (LA3*D),
 the double Neumann system (D-eq) does not imply dL/dt = [L, A]; it does with (lambda I_n - A)^{-1} there.
 The point (X, Y, X', Y') of the double system: X^T Y = I_r, X'^T Y + X^T Y' = 0."""
 

@@ -12,7 +12,7 @@ import sympy as sp
 STATED = 1
 STATED_PRINTED = 2
 
-"""In the proof of Theorem Gen_Chasles the tangency equation of the 2r-planes to the cone Q(lambda*) sums
+"""In the proof of Theorem 8.2 the tangency equation of the 2r-planes to the cone Q(lambda*) sums
 (e_1^...^e_r^p_i)^2 over i = 1, ..., n, but the momenta p_1, ..., p_r are the r columns of P (cond_XP).
 The correction: i = 1, ..., r (and 1 <= i < j <= r), as in (2r-integrals)."""
 

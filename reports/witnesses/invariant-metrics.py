@@ -12,7 +12,7 @@ import sympy as sp
 STATED = 12
 STATED_PRINTED = 13
 
-"""The proposition after Theorem ET: a quadratic form on T*_{X0}V invariant under (SO(n-r)-action) and
+"""Proposition 4.6: a quadratic form on T*_{X0}V invariant under (SO(n-r)-action) and
 P1 -> Q^{-1} P1 Q, P2 -> P2 Q (Q in SO(r)), P0 = (P1; P2) as in (P-neutral), is a combination of
 tr(P^T P) and tr((X^T P)^2).  At (n, r) = (4, 2) (n - r = r = 2) det P2 is a third invariant form.
 The correction counts also det P2 (and the Pfaffian of P1 for r = 4, <axial(P1), P2> for n - r = 1, r = 3)."""

@@ -14,7 +14,7 @@ POINT = {'X': [['0'], ['-1']], 'P': [['1'], ['0']], 'A': [['-2', '0'], ['0', '-1
 ENTRY = (1, 1)
 STATED = sp.Rational("-3/2")
 
-"""Theorem man-dual: along the Manakov flow (dot_XP3*) the dual Lax matrix (MAN-LA2) does not satisfy
+"""Theorem 4.4: along the Manakov flow (dot_XP3*) the dual Lax matrix (MAN-LA2) does not satisfy
 (MAN-LA) d L*/dt = [L*, A*] with A*_man(lambda) as printed in (LA-MAN3), whose blocks contain
 (A + lambda I_n)^{-1}; it does with (A + lambda I_n) in their place."""
 

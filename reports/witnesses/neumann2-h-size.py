@@ -12,9 +12,9 @@ import sympy as sp
 STATED = 2
 STATED_PRINTED = 3
 
-"""The proof of Theorem NEUMANN2 sets h = Psi(X_0, P_0) and v = X_0 X_0^T and works with h + v in gl(n);
+"""The proof of Theorem 7.1 sets h = Psi(X_0, P_0) and v = X_0 X_0^T and works with h + v in gl(n);
 Psi(X_0, P_0) = X_0^T P_0 - P_0^T X_0 is r x r and v is n x n, so for r < n the sum is not defined.
-The correction: h = Phi(X_0, P_0) = P_0 X_0^T - X_0 P_0^T, n x n, as in the proof of Lemma LEMA1; its block
+The correction: h = Phi(X_0, P_0) = P_0 X_0^T - X_0 P_0^T, n x n, as in the proof of Lemma 6.2; its block
 X_0^T h X_0 is Psi(X_0, P_0), which is 0 on Psi^{-1}(0)."""
 
 KIND = "count"

@@ -12,7 +12,7 @@ import sympy as sp
 STATED = 5
 STATED_PRINTED = 4
 
-"""The proof of Lemma LEMA2 (condition (A2)) says that the solutions (xi1, eta1) in so(r,C)_{h1} + Sym(r)
+"""The proof of Lemma 6.3 (condition (A2)) says that the solutions (xi1, eta1) in so(r,C)_{h1} + Sym(r)
 of (L5) [A1, xi1] - [h1, eta1] = 0 and (L6) [A1, eta1] in so(r,C)^perp form an r-dimensional space.
 so(r)^perp = Sym(r) and [A1, eta1] is skew, so the printed (L6) says [A1, eta1] = 0, and for r >= 3 the
 solutions form a 2-dimensional space: the system has rank (unknowns - 2), not (unknowns - r).  The

@@ -12,7 +12,7 @@ import sympy as sp
 STATED = 2
 STATED_PRINTED = 1
 
-"""The proof of Theorem Gen_Chasles2 multiplies V(X, P) of (VV) on the left by diag(I_{n-r}, B^{-1}), a
+"""The proof of Theorem 8.5 multiplies V(X, P) of (VV) on the left by diag(I_{n-r}, B^{-1}), a
 square matrix of size (n - r) + r = n; but V(X, P) has n + r rows, so the product is not defined.
 The correction: diag(I_n, B^{-1}), of size n + r."""
 

@@ -14,7 +14,7 @@ POINT = {'X': [['-1/3', '2/3'], ['-2/3', '1/3'], ['-2/3', '-2/3']], 'P': [['4/9'
 ENTRY = (1, 1)
 STATED = sp.Rational("4/9")
 
-"""The remark after Proposition YM (n = 3, r = 2, eta = Psi = epsilon E_1 ^ E_2): the Lorentz force of
+"""The paragraph after Proposition 9.1 (n = 3, r = 2, eta = Psi = epsilon E_1 ^ E_2): the Lorentz force of
 the monopole is printed as F_Omega de_3/dt = +epsilon e_3 x de_3/dt; with F_Omega from (mag6) it is
 F_Omega de_3/dt = -epsilon e_3 x de_3/dt (the correction)."""
 
@@ -24,7 +24,7 @@ CHECK = "F_Omega de_3/dt = eps e_3 x de_3/dt"
 def residuals(W):
     X, P = W["X"], W["P"]
     e1, e2 = X[:, 0], X[:, 1]
-    e3 = e1.cross(e2)                                  # (iden1): e_3 = e_1 x e_2
+    e3 = e1.cross(e2)                                  # (3) of section 7: e_3 = e_1 x e_2
     Omega = P * X.T - X * P.T                          # Omega = Phi = P X^T - X P^T
     e3dot = Omega * e3                                 # (mag2): de_3/dt = Omega e_3
     F = Omega - (e3dot * e3.T - e3 * e3dot.T)          # (mag6): F_Omega = Omega - de_3/dt ^ e_3
