@@ -855,3 +855,25 @@ def test_report_refuses_a_witness_to_check_by_hand_that_is_not_the_engines(tmp_p
     out = CliRunner().invoke(main, ["report", "--results", str(path)])
     assert out.exit_code == 2
     assert "its witness to check by hand is not the one the engine finds" in out.output
+
+
+def test_report_refuses_a_count_witness_edited_together_with_its_check(tmp_path):
+    """A results file that edits a count erratum's check and its witness to check by hand together (both say 1 where
+    the engine computes 2) is refused: the two numbers are recomputed by the claim's own count template."""
+    from click.testing import CliRunner
+    from stiefelsym.cli import main
+    run = CliRunner().invoke(main, ["verify", "neumann2-h-size", "--size", "3,2", "--method", "exact",
+                                    "--report-dir", str(tmp_path)])
+    assert run.exit_code == 0, run.output
+    path = tmp_path / "results.json"
+    data = json.loads(path.read_text())
+    record = next(r for r in data["results"] if "small" in (r.get("witness") or {}))
+    small = record["witness"]["small"]
+    assert (small["value"], small["paper"]) == (2, 3)
+    small["value"] = 1
+    for ch in record["checks"]:
+        if ch["name"] == small["check"]:
+            ch["detail"] = ch["detail"].replace(": 2 (paper: 3)", ": 1 (paper: 3)")
+    path.write_text(json.dumps(data))
+    out = CliRunner().invoke(main, ["report", "--results", str(path)])
+    assert out.exit_code == 2 and "its witness to check by hand is not the one the engine finds" in out.output

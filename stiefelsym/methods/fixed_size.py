@@ -3558,11 +3558,11 @@ def _describe(exc: BaseException) -> str:
     for frame, lineno in traceback.walk_tb(exc.__traceback__):
         name = frame.f_code.co_filename
         if "/stiefelsym/" not in name and not name.startswith("<"):
-            where = f" (at {_shown_path(name)}:{lineno})"
-            if sealed() or getattr(exc, "_recorded_at", None) is not None:
-                # a claims file's code (here, or in its tracing interpreter, which recorded the place) can give its
-                # code objects any file name, a catalog module's too
-                where = f" (at {name}:{lineno}, as the code names its file)"
+            # a claims file's code (run here after the seal, or in its tracing interpreter, which recorded the
+            # place) can give its code objects any file name, a catalog module's too
+            named_by_file = sealed() or getattr(exc, "_recorded_at", None) is not None
+            where = (f" (at {name}:{lineno}, as the code names its file)" if named_by_file
+                     else f" (at {_shown_path(name)}:{lineno})")
     return f"{type(exc).__name__}: {exc}{where}"
 
 

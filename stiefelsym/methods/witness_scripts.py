@@ -56,6 +56,18 @@ def template(cid: str) -> str | None:
     return _templates().get(cid)
 
 
+def template_counts(cid: str) -> tuple[int, int] | None:
+    """(computed, printed) of a count template, recomputed by its own code (sympy, no stiefelsym: the
+    catalog's reviewed scripts), at the template's size; None without a count template."""
+    text = template(cid)
+    if text is None or template_kind(cid) != "count":
+        return None
+    ns: dict[str, Any] = {"__name__": "template"}
+    exec(compile(text, f"<template {cid}>", "exec"), ns)   # noqa: S102 - a reviewed script of the catalog
+    c = ns["counts"]()
+    return int(c["computed"]), int(c["printed"])
+
+
 def template_check(cid: str) -> str | None:
     """The check a claim's template evaluates (its ``CHECK``), None without a template."""
     text = template(cid)

@@ -486,10 +486,11 @@ def record_graph(r: dict, claim: Claim) -> tuple[Claim, Callable | None, str]:
 def small_witness_edited(record: dict, claim: Claim, func: Callable | None) -> bool:
     """Whether the record's small witness (the point a reader checks by hand, or a count's two numbers) is not what
     the engine finds again: the point searched for again at the record's size (a pure function of the claim's graph
-    and the size, a fraction of a second), the numbers read again from the record's checks (which a run again, or
-    the claim's declared fields, bind).  False for a record without one."""
+    and the size, a fraction of a second); the two numbers as the record's check states them and as the claim's
+    count template computes them (its own sympy code, at its own size: a results file that edits a count's check
+    and its witness together is caught too).  False for a record without one."""
     from stiefelsym.methods.witness import encoded, small_witness
-    from stiefelsym.methods.witness_scripts import count_values, template_check
+    from stiefelsym.methods.witness_scripts import count_values, template_check, template_counts, template_size
     witness = record.get("witness")
     small = witness.get("small") if isinstance(witness, dict) else None
     if small is None:
@@ -499,7 +500,11 @@ def small_witness_edited(record: dict, claim: Claim, func: Callable | None) -> b
     if small.get("kind") == "count":
         values = next((count_values(ch.get("detail") or "") for ch in record.get("checks") or []
                        if isinstance(ch, dict) and ch.get("name") == small.get("check")), None)
-        return values != (small.get("value"), small.get("paper"))
+        cid = str(record.get("claim"))
+        stated = (small.get("value"), small.get("paper"))
+        if template_size(cid) != (record.get("n"), record.get("r")) or not claim.reviewed:
+            return True     # a count witness is attached to a catalog claim at its template's size only
+        return values != stated or template_counts(cid) != stated
     found = small_witness(claim, record.get("n"), record.get("r"), func, check=template_check(str(record.get("claim"))))
     return found is None or _canonical(encoded(found)) != _canonical(small)
 
