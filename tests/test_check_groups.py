@@ -211,3 +211,14 @@ def test_a_refuted_mutant_is_proved_in_groups_from_the_group_its_witness_names()
             assert "'X^T X - I', 'tr(X^T P) + tr(P^T X)' were not evaluated" in cells["exact"].message, o
             first += 1
     assert first >= 1
+
+
+def test_a_shared_slice_never_carries_one_claims_verdict_to_another(monkeypatch):
+    """Stop 69's own attempt on the slices shared by content (fixed_size._interned): in one process, the true claim
+    first, then a claim that corrupts its check of the group that reads no coordinate, then one that corrupts the
+    group that reads entries.  Each corrupted claim shares the other group's slice with the true one, and still
+    fails, in the group it corrupted; the true one is proved again after them."""
+    monkeypatch.setattr(fixed_size, "_SLICES", fixed_size.OrderedDict())
+    runs = [(f, run_exact(_claim(f, cid=f"t-share-{k}"), 3, 2, 0))
+            for k, f in enumerate((_mixed, _mixed_wrong_unread, _mixed_wrong_read, _mixed))]
+    assert [res.verdict for _f, res in runs] == ["proved", "fails", "fails", "proved"]
