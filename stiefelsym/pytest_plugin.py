@@ -50,19 +50,52 @@ def _catalog_dir() -> Path | None:
     return Path(list(spec.submodule_search_locations)[0]).resolve()
 
 
+def _test_module(config: Any, file_path: Path) -> bool:
+    """Whether pytest imports the file as a test module wherever it lies (its ``python_files`` patterns,
+    test_*.py and *_test.py by default)."""
+    import fnmatch
+    for pattern in config.getini("python_files") or ():
+        if fnmatch.fnmatch(str(file_path) if "/" in pattern or "\\" in pattern else file_path.name, pattern):
+            return True
+    return False
+
+
+def _claims_file(file_path: Path) -> bool:
+    """Whether the plugin reads the file as a claims file: every .py file, as `stiefelsym verify --claims DIR`
+    reads a folder, but its _private modules, pytest's conftest and the catalog's own data (its witness
+    templates)."""
+    if file_path.suffix != ".py" or file_path.name.startswith(("_", "conftest")):
+        return False
+    catalog = _catalog_dir()
+    return catalog is None or catalog not in file_path.resolve().parents[1:]
+
+
 def pytest_collect_file(file_path: Path, parent: Any) -> Any:
     config = parent.config
-    if not config.getoption("stiefelsym") or file_path.suffix != ".py":
+    if not config.getoption("stiefelsym") or not _claims_file(file_path):
         return None
-    # every file, as `stiefelsym verify --claims DIR` reads a folder (without its _private modules; pytest's
-    # conftest is not a claims file): whether a file declares claims is what loading it says, not how it is
-    # written (a claim may be declared through a helper, getattr, exec): one declaring none has no items
-    if file_path.name.startswith(("_", "conftest")):
-        return None
-    catalog = _catalog_dir()
-    if catalog is not None and catalog in file_path.resolve().parents[1:]:
-        return None         # the catalog's own data (its witness templates), not claims files
+    # whether a file declares claims is what loading it says, not how it is written (a claim may be declared
+    # through a helper, getattr, exec): one declaring none has no items
     return ClaimsFile.from_parent(parent, path=file_path)
+
+
+@pytest.hookimpl(tryfirst=True)
+def pytest_make_collect_report(collector: Any) -> Any:
+    """Nothing of a claims file runs in the pytest process, which hands out the verdicts: any other collector of
+    a claims file (pytest's own Python module, for a file named on the command line; --doctest-modules' module;
+    another plugin's) would import it there, before any item runs, and the file's code could then replace what
+    gives the verdicts.  Such a collector is reported as collected with nothing in it; the file's claims are the
+    items of :class:`ClaimsFile`, which loads it in child processes.  A test module found in a directory
+    (test_*.py) is pytest's to import and run: it is imported, and the items of its claims give no verdict
+    (:meth:`ClaimItem.runtest`)."""
+    config = collector.config
+    if isinstance(collector, ClaimsFile) or not isinstance(collector, pytest.File) \
+            or not config.getoption("stiefelsym"):
+        return None
+    path = Path(collector.path)
+    if not _claims_file(path) or (_test_module(config, path) and not collector.session.isinitpath(path)):
+        return None
+    return pytest.CollectReport(collector.nodeid, "passed", None, [])
 
 
 class ClaimsFile(pytest.File):
@@ -122,6 +155,18 @@ class ClaimFailed(Exception):
     """A run's verdict is not the one its claim expects."""
 
 
+def _imported_here(path: Any) -> bool:
+    """Whether a module of this process was loaded from the file at ``path``."""
+    import os
+    import sys
+    target = os.path.realpath(path)
+    for module in list(sys.modules.values()):
+        name = getattr(module, "__file__", None)
+        if isinstance(name, str) and os.path.realpath(name) == target:
+            return True
+    return False
+
+
 class ClaimItem(pytest.Item):
     """One (claim, size, method) run."""
 
@@ -134,6 +179,11 @@ class ClaimItem(pytest.Item):
     def runtest(self) -> None:
         from stiefelsym.run import runner
         config = self.config
+        if self.claim.source and not self.claim.source.startswith("stiefelsym.") and _imported_here(self.path):
+            raise ClaimFailed(f"{self.path} was imported into the pytest process (as a test module, or by a conftest, "
+                              "a test module or another plugin): code of the file may have run where the verdicts are "
+                              "handed out, so no verdict is given here; rename a test module that declares claims "
+                              "(test_*.py files are pytest's), or run `stiefelsym verify --claims FILE`")
         results = runner.verify([self.claim], sizes=None if self.size is None else [self.size],
                                 methods=["free" if self.size is None else self.method],
                                 seed=config.getoption("stiefelsym_seed"),

@@ -129,3 +129,60 @@ def test_a_claim_no_syntax_shows_is_still_collected(pytester):
                                            "--stiefelsym-size", "3,2", "-p", "no:cacheprovider", "-v")
     result.assert_outcomes(passed=1, failed=1)
     result.stdout.fnmatch_lines(["*good_claims.py::pl-true*PASSED*", "*smuggled.py::pl-false-smuggled*FAILED*"])
+
+
+# -- stop 70's review: pytest imports a file named on its command line (and --doctest-modules any .py file) as a
+# module of its own process; a claims file imported there could replace what hands out the verdicts
+
+PATCHING = '''
+import sys
+
+from stiefelsym import admissible, claim
+
+
+@claim("pl-false-patching", kind="id", sizes=admissible(n_max=3))
+def false_claim(s):
+    """XᵀP = 0 (false for r >= 2)."""
+    return {"XtP": s.X.T @ s.P}
+
+
+if "_pytest.python" in sys.modules:     # imported by pytest itself: every verdict said proved
+    from stiefelsym.run import runner
+
+    _verify = runner.verify
+
+    def verify(claims, *a, **kw):
+        out = _verify(claims, *a, **kw)
+        for r in out:
+            r.verdict, r.expected = "proved", True
+        return out
+
+    runner.verify = verify
+'''
+
+
+def test_a_claims_file_named_on_the_command_line_never_runs_in_the_pytest_process(pytester):
+    pytester.makepyfile(my_claims=PATCHING)
+    for extra in ((), ("--doctest-modules",)):
+        result = pytester.runpytest_subprocess("--stiefelsym", "my_claims.py", "--stiefelsym-method", "modular",
+                                               "-p", "no:cacheprovider", "-v", *extra)
+        result.assert_outcomes(passed=3, failed=3)
+        result.stdout.fnmatch_lines(["*pl-false-patching?n=3,r=2?-modular*FAILED*"])
+
+
+def test_a_test_module_that_declares_claims_gets_no_verdict(pytester):
+    # found in a folder, test_*.py is pytest's to import and run: its claims' items give no verdict, true or false
+    pytester.makepyfile(test_patching=PATCHING, good_claims=TRUE)
+    result = pytester.runpytest_subprocess("--stiefelsym", str(pytester.path), "--stiefelsym-method", "modular",
+                                           "--stiefelsym-size", "3,2", "-p", "no:cacheprovider", "-v", "-rf")
+    result.assert_outcomes(passed=1, failed=1)
+    result.stdout.fnmatch_lines(["*good_claims.py::pl-true*PASSED*", "*was imported into the pytest process*"])
+
+
+def test_a_claims_file_a_conftest_imports_gets_no_verdict(pytester):
+    pytester.makepyfile(true_claims=TRUE)
+    pytester.makeconftest("import sys, os\nsys.path.insert(0, os.path.dirname(__file__))\nimport true_claims  # noqa\n")
+    result = pytester.runpytest_subprocess("--stiefelsym", "true_claims.py", "--stiefelsym-method", "modular",
+                                           "--stiefelsym-size", "3,2", "-p", "no:cacheprovider", "-rf")
+    result.assert_outcomes(failed=1)
+    result.stdout.fnmatch_lines(["*was imported into the pytest process*"])
