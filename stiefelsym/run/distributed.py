@@ -29,7 +29,9 @@ client (the command line).
 
 Claims reach the workers by name: a catalog claim as its id (the worker loads the
 catalog, which must be installed there), a claim of a user's file as the file's text
-(the worker loads it from a private copy).  dask is imported only here, and only when a
+(the run server loads it from a private copy as the command line does, imported and traced in
+child processes at the run's size: nothing of a user's file runs in the run server, which
+computes and sends back the outcomes of every file's runs).  dask is imported only here, and only when a
 scheduler is given (``pip install 'stiefelsym[dask]'``).
 """
 from __future__ import annotations
@@ -71,10 +73,11 @@ class DistributedError(ValueError):
 def _claim_origin(claim: Claim) -> tuple[str, str]:
     """("catalog", module) for a claim of the installed catalog, ("file", text) for a user's file."""
     module = claim.source or getattr(claim.func, "__module__", "") or ""
-    if module == CATALOG or module.startswith(CATALOG + "."):
+    if claim.reviewed and (module == CATALOG or module.startswith(CATALOG + ".")):
         return ("catalog", module)
     try:
-        path = inspect.getsourcefile(claim.func)
+        # a claim of a file loaded in child processes (the command line's --claims): the file this process loaded
+        path = getattr(claim.func, "loaded_from", None) or inspect.getsourcefile(claim.func)
         text = Path(path).read_text(encoding="utf-8") if path else None
     except (OSError, TypeError):
         text = None
@@ -90,26 +93,31 @@ _REGISTRIES: dict[tuple[str, str], Any] = {}
 _REGISTRIES_LOCK = threading.Lock()
 
 
-def _registry(origin: tuple[str, str]) -> Any:
+def _registry(origin: tuple[str, str], size: tuple[int, int] | None = None, claim: str | None = None) -> Any:
     """The registry holding a claim, loaded once per process (under a lock: a registry is cached
-    only once it is completely loaded)."""
-    key = ("catalog", "") if origin[0] == "catalog" else ("file", hashlib.sha256(origin[1].encode()).hexdigest())
+    only once it is completely loaded).  A user's file is loaded as the command line loads it: imported and
+    traced in child processes (:func:`stiefelsym.run.userfile.load_claims_isolated`), at the run's size, so that
+    nothing of it runs in this process, which computes and sends back the outcomes of every file's runs."""
+    digest = "" if origin[0] == "catalog" else hashlib.sha256(origin[1].encode()).hexdigest()
+    key = ("catalog", "") if origin[0] == "catalog" else ("file", digest, size, claim)
     with _REGISTRIES_LOCK:
         reg = _REGISTRIES.get(key)
         if reg is not None:
             return reg
-        from stiefelsym.claims import load_catalog, load_claims_file
+        from stiefelsym.claims import load_catalog
+        from stiefelsym.run.userfile import load_claims_isolated
         if origin[0] == "catalog":
             reg = load_catalog()
         else:
             d = Path(tempfile.gettempdir()) / f"stiefelsym-dask-{os.getuid() if hasattr(os, 'getuid') else 0}"
             d.mkdir(parents=True, exist_ok=True)
-            path = d / f"claims_{key[1][:16]}.py"
+            path = d / f"claims_{digest[:16]}.py"
             if not path.is_file():
                 tmp = path.with_suffix(f".{os.getpid()}.{threading.get_ident()}.tmp")
                 tmp.write_text(origin[1], encoding="utf-8")
                 os.replace(tmp, path)
-            reg = load_claims_file(path)
+            reg = load_claims_isolated(path, [size] if size is not None else (),
+                                       only=None if claim is None else [claim])
         _REGISTRIES[key] = reg
         return reg
 
@@ -123,7 +131,8 @@ def run_here(spec: dict[str, Any]) -> Outcome:
     if spec.get("version", __version__) != __version__:
         return Outcome("error", message=f"this worker has stiefelsym {__version__}, the client "
                                         f"{spec['version']}")
-    claim = _registry(tuple(spec["origin"])).get(spec["claim"])
+    size = None if spec["n"] is None else (spec["n"], spec["r"])
+    claim = _registry(tuple(spec["origin"]), size, spec["claim"]).get(spec["claim"])
     claims = [claim]
     task = (0, spec["n"], spec["r"], spec["method"], spec["correction"])
     runner._preload([task], long_run=True)
@@ -391,11 +400,11 @@ class _Watch:
         self.no_worker_since: float | None = None
 
     def wait(self, fut: Any) -> None:
-        from distributed import wait
         while True:
             try:
-                wait([fut], timeout=POLL_SECONDS)
-            except TimeoutError:
+                # the future's own wait (distributed.wait would need a default client: this one is not)
+                fut.result(timeout=POLL_SECONDS)
+            except Exception:  # noqa: BLE001 - not done yet, or failed: the caller reads fut.result() again
                 pass
             if fut.done():
                 self.progress = time.monotonic()

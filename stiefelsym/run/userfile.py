@@ -910,6 +910,8 @@ def _claim(d: Any, path: str, confinement: str = "namespaces") -> Claim:
               fails_at=None if fails is None else _Lookup("erratum sizes (fails_at)", fails),
               erratum=_get(d, "erratum", str), place=_get(d, "place", str, optional=True) or "",
               equivariance=_get(d, "equivariance", str), reviewed=False)
+    for f in [c.func] + [k.func for k in corrections]:
+        f.loaded_from = path             # the file this process loaded (not what the file's code says of itself)
     for k in range(len(corrections)):
         try:
             c.corrected(k)               # a correction's symbolic budget is validated as the claim's
