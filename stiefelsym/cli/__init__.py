@@ -1219,6 +1219,13 @@ def report(results_file: Path | None, report_dir: Path | None, claims_files: tup
         raise InputError(f"{source}: refused, {len(strangers)} record(s) of a claims file whose graph is not its claim's "
                          f"in the file named now: {strangers[0]} (the file was edited since the run, or another file "
                          "of that name is meant; pass it with --claims)")
+    # the catalog's records too: a claims file's run whose records copy a catalog claim's declared fields (its id,
+    # statement, erratum and place) and whose meta is edited into a catalog run's is another graph
+    strangers = unbound_graphs([r for r in records if user is None or r.get("claim") not in user], registry)
+    if strangers:
+        raise InputError(f"{source}: refused, {len(strangers)} record(s) whose graph is not their catalog claim's: "
+                         f"{strangers[0]} (a run of another claim under the catalog claim's name, or of another "
+                         "version of the catalog; `stiefelsym check` re-checks every record)")
     unbound = certificate_binding_problems(results, registry)
     if unbound:
         raise InputError(f"{source}: refused, {len(unbound)} proof(s) for every n, r whose certificate is not their "

@@ -510,9 +510,9 @@ def small_witness_edited(record: dict, claim: Claim, func: Callable | None) -> b
 
 
 def unbound_graphs(records: list[dict], files: Registry) -> list[str]:
-    """The records of the claims of users' files (``files``: their registry) whose graph digest is not what their
-    claim, in the claims files named now, traces to at their size: a results file rendered beside another file of
-    the same name, or a claims file edited since the run.  (The catalog's are bound by the installed engine.)"""
+    """The records of the claims of ``files`` (a registry: users' files, or the catalog) whose graph digest is not
+    what their claim, as loaded now, traces to at their size: a results file rendered beside another file of the
+    same name, a claims file edited since the run, or a run of another claim under a catalog claim's name."""
     out = []
     for r in records:
         cid = r.get("claim")
