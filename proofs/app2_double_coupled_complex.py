@@ -123,7 +123,7 @@ def double_neumann_dual_lax(s):
 
 
 @double_neumann_dual_lax.claim.correction(
-    "(LA3*D): (λI_n − A)⁻¹ in place of (I_n − λA)⁻¹ in the off-diagonal blocks",
+    "(5) §10: (λI_n − A)⁻¹ in place of (I_n − λA)⁻¹ in the off-diagonal blocks",
     exact_max_r={3: 3, 4: 3, 5: 2, 6: 1, 7: 1})
 def double_neumann_dual_lax_corrected(s):
     return {"LA3*D": double_lax_residual(s, lambda t: t.resolvent(t.lam))}
@@ -152,7 +152,7 @@ def double_neumann_dual_lax_extends_la3(s):
 
 
 @double_neumann_dual_lax_extends_la3.claim.correction(
-    "(LA3*D): (λI_n − A)⁻¹ in place of (I_n − λA)⁻¹ in the off-diagonal blocks",
+    "(5) §10: (λI_n − A)⁻¹ in place of (I_n − λA)⁻¹ in the off-diagonal blocks",
     exact_max_r={4: 4, 5: 5, 6: 6, 7: 7})
 def double_neumann_dual_lax_extends_la3_corrected(s):
     return double_lax_at_the_diagonal(s, lambda t: t.resolvent(t.lam))
@@ -292,7 +292,7 @@ def coupled_neumann_flow(s):
     return coupled_flow_checks(s, Q_Pi=True)
 
 
-@coupled_neumann_flow.claim.correction("(C-eq): YΠ in place of QΠ in the equation for Q̇", exact_max_r={4: 4})
+@coupled_neumann_flow.claim.correction("(7) §10: YΠ in place of QΠ in the equation for Q̇", exact_max_r={4: 4})
 def coupled_neumann_flow_corrected(s):
     return coupled_flow_checks(s, Q_Pi=False)
 
@@ -351,7 +351,7 @@ _BIG_ERRATUM = """with the printed L(ν) and A(ν) = L₊(ν) the flow does not 
        dL/dt = [L(ν), L₋(ν)])."""
 
 
-BIG_CORRECTION = "(so(n,n)): −ν⁻¹ in front of the last term of L(ν), and dL/dt = [A(ν), L(ν)]"
+BIG_CORRECTION = "(9) §10: −ν⁻¹ in front of the last term of L(ν), and dL/dt = [A(ν), L(ν)]"
 
 
 @claim("coupled-big-lax-normal", paper=("so(n,n)", "C-eq"), kind="lax", exact_max_n=SYMBOLIC_N_MAX,
@@ -621,7 +621,7 @@ def complex_neumann_dual_lax(s):
 
 
 @complex_neumann_dual_lax.claim.correction(
-    "(LA3*): (λI_n − A)⁻¹ in place of (I_n − λA)⁻¹ in the off-diagonal blocks", exact_max_r={2: 2, 3: 1},
+    "(15) §10: (λI_n − A)⁻¹ in place of (I_n − λA)⁻¹ in the off-diagonal blocks", exact_max_r={2: 2, 3: 1},
     exact_corank={3: 0, 4: 0, 5: 0, 6: 0, 7: 0})
 def complex_neumann_dual_lax_corrected(s):
     return {"LA3*": complex_lax_residual(s, lambda t: t.resolvent(t.lam))}

@@ -303,7 +303,7 @@ def manakov_dual_lax_pair(s):
     return {"MAN-LA": s.d(L_man_dual, flow) - comm(L_man_dual(s), A_man_dual(s))}
 
 
-@manakov_dual_lax_pair.claim.correction("(LA-MAN3): (A + λI_n) in place of (A + λI_n)^{-1}",
+@manakov_dual_lax_pair.claim.correction("(9) §4: A + λI_n in place of (A + λI_n)^{-1}",
                                         exact_max_r={3: 3, 4: 4, 5: 5, 6: 4, 7: 3})
 def manakov_dual_lax_pair_corrected(s):
     flow = s.dirac_flow(H_manakov_square)

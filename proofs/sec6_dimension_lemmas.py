@@ -571,7 +571,7 @@ def pencil_l5_l6(s):
     return {"(L5), (L6)": Rank(M, unknowns - s.r, generic=True, meaning="unknowns − r")}
 
 
-@pencil_l5_l6.claim.correction("(L6): [A₁, η₁] ⟂ so(r, ℂ)_{h₁} in place of [A₁, η₁] ∈ so(r, ℂ)^⊥")
+@pencil_l5_l6.claim.correction("(17) §6: [A₁, η₁] ⟂ so(r, ℂ)_{h₁} in place of [A₁, η₁] ∈ so(r, ℂ)^⊥")
 def pencil_l5_l6_corrected(s):
     M, unknowns = l5_l6_matrix(s, printed=False)
     return {"(L5), (L6)": Rank(M, unknowns - s.r, generic=True, meaning="unknowns − r")}

@@ -272,9 +272,9 @@ def test_registered_correction_records_carry_their_change_and_reports_show_it():
     assert corrected and corrected[0].verdict == "checked"
     assert changes_text(corrected[0].change) == "in E: [Φ, A] → [A, Φ]"
     md = render_markdown(results)
-    # in the note for the authors (said once there; the list of candidates has the change and the words)
-    assert ("It holds at every size checked with the correction: in E: [Φ, A] → [A, Φ] (registered as: the "
-            "operands of the second commutator swapped).") in md
+    # the note for the authors gives the registered words; the list of candidates has the change and the words
+    assert ("It holds at every size checked with the correction: the operands of the second commutator swapped (the "
+            "change of the formula as computed is in the candidate corrections below).") in md
     assert "| in E: \\[Φ, A\\] → \\[A, Φ\\] | the operands of the second commutator swapped | **verified** |" in md
     assert md == render_markdown(results)
     tex = render_latex(results)

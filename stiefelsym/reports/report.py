@@ -1131,28 +1131,25 @@ def _tex_letter(part: str) -> str:
     return part
 
 
-#: the longest change of a formula (in characters, Unicode) the note for the authors quotes: a longer one (whole
-#: block matrices and commutators) is left to the list of candidate corrections, and the note gives the
-#: correction in the catalog's words
-NOTE_CHANGE_CHARS = 160
-
-#: what the note says in place of a change too long to quote
-NOTE_CHANGE_ELSEWHERE = " (the change of the formula, in the paper's notation, is in the candidate corrections below)"
+#: what the note for the authors says of a correction whose change of the formula was computed: the note quotes the
+#: paper (the place of the error, the registered correction's words); the change as the graphs give it (in the
+#: engine's normal form, at the checks' names) is in the list of candidate corrections
+NOTE_CHANGE_ELSEWHERE = " (the change of the formula as computed is in the candidate corrections below)"
 
 
 def _with_change(c: ClaimResults, variant: str, note: bool = False) -> str:
     """A registered correction, in Unicode: its change of the graph in the paper's notation, then its
-    own words (the catalog's, unchanged); in the ``note`` for the authors, a change longer than
-    NOTE_CHANGE_CHARS is left to the list of candidates."""
+    own words (the catalog's, unchanged); in the ``note`` for the authors its words alone, which quote the paper,
+    and a pointer to the change in the list of candidates."""
     change = change_text(c.change_of(variant))
-    if note and len(change) > NOTE_CHANGE_CHARS:
-        return unicode_words(variant) + NOTE_CHANGE_ELSEWHERE
+    if note:
+        return unicode_words(variant) + (NOTE_CHANGE_ELSEWHERE if change else "")
     return f"{change} (registered as: {unicode_words(variant)})" if change else unicode_words(variant)
 
 
 def _tex_with_change(c: ClaimResults, variant: str, note: bool = False) -> str:
-    if note and len(change_text(c.change_of(variant))) > NOTE_CHANGE_CHARS:
-        return tex_words(variant) + tex_escape(NOTE_CHANGE_ELSEWHERE)
+    if note:
+        return tex_words(variant) + (tex_escape(NOTE_CHANGE_ELSEWHERE) if change_text(c.change_of(variant)) else "")
     change = _tex_change(c.change_of(variant))
     return (f"{change} {{\\small (registered as: {tex_words(variant)})}}" if change else tex_words(variant))
 
