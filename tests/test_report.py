@@ -755,6 +755,20 @@ def test_one_misprint_repaired_by_one_correction_in_two_statements_is_counted_on
         assert "distinct errors" not in doc and "the same error" not in doc
 
 
+def test_the_headline_counts_a_correction_shared_by_two_statements_once():
+    """Two statements repaired by one correction at one place (one error of the paper) count one correction proved
+    for every n and r, and the headline says how many statements the corrections repair."""
+    rs = []
+    for cid, place in (("theorem", "the blocks of (5) §10"), ("extends", "the blocks of (5) §10"),
+                       ("other", "the display before (4) §8")):
+        rs += _erratum_pair(cid, ["LA3D"], place=place)
+        rs.append(result(cid, None, None, "free", "proved", variant="one fix", paper=["LA3D"]))
+    md = render_markdown(rs)
+    assert "(2 distinct corrections proved for every n and r, which repair 3 of the statements that fail)" in md
+    # a claims file's report counts nothing together
+    assert "(3 corrections proved for every n and r)" in render_markdown(rs, {"claims_files": ["mine.py"]})
+
+
 def test_the_reruns_of_an_erratum_are_one_command_per_method_and_seed():
     cmds = [f"stiefelsym verify c --size {n},1 --method exact --seed 0" for n in (2, 3, 4)]
     cmds += ["stiefelsym verify c --size 5,1 --method modular --seed 0", "stiefelsym verify c --size 6,1 --method exact",

@@ -1286,10 +1286,21 @@ def headline(claims: list[ClaimResults], paper: bool = True) -> tuple[str, list[
             + (f"{len(nowhere)} {'was' if len(nowhere) == 1 else 'were'} decided at no size ({unnamed}), "
                if nowhere else "")
             + f"and {len(errata)} {'fails' if len(errata) == 1 else 'fail'} as printed{_misprint_words(errata) if paper else ''}"
-            f"{_errata_words(errata)} "
-            f"({len(corrected_free)} {'correction' if len(corrected_free) == 1 else 'corrections'} proved for "
-            f"every n and r).")
+            f"{_errata_words(errata)} ({_corrections_proved_words(corrected_free, errata if paper else [])}).")
     return text, errata
+
+
+def _corrections_proved_words(corrected: list[ClaimResults], errata: Sequence[ClaimResults]) -> str:
+    """How many distinct corrections were proved for every n and r: the statements of one group of
+    :func:`shared_misprints` (of ``errata``: the paper's catalog alone) are repaired by one correction, counted
+    once, and the statements they repair are then said too."""
+    groups = [g for g in shared_misprints(errata) if any(c in corrected for c in g)]
+    distinct = len(corrected) - sum(sum(c in corrected for c in g) - 1 for g in groups)
+    words = f"{distinct} {'correction' if distinct == 1 else 'corrections'}"
+    if distinct == len(corrected):
+        return f"{words} proved for every n and r"
+    return (f"{distinct} distinct corrections proved for every n and r, which repair {len(corrected)} of the "
+            "statements that fail")
 
 
 #: how a statement failed, in the headline's words (see :func:`_failure_kind`)
