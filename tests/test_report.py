@@ -609,6 +609,28 @@ def test_a_count_witness_to_check_by_hand_sets_its_scripts_in_the_pdf():
     assert "**A witness to check by hand:** at (n, r) = (1,1), the rows of V; printed: the size of" in md
 
 
+def test_a_rank_witness_to_check_by_hand_states_the_quantity_the_paper_prints():
+    """Where the paper states the dimension of a kernel (the number of invariant forms of Proposition 4.6, the
+    dimension of the solutions of (16), (17) §6), the hand witness states that quantity, the unknowns minus the rank,
+    with the two ranks of the check beside it; the template declares the quantity and the unknowns."""
+    from stiefelsym.reports.report import count_kernel
+    assert count_kernel("invariant-metrics")[1] == 15 and count_kernel("pencil-l5-l6")[1] == 7
+    assert count_kernel("neumann2-h-size") is None and count_kernel("no-such-claim") is None
+    for cid, check, size, value, paper, says in (
+            ("invariant-metrics", "invariant forms", (4, 2), 12, 13,
+             "the number of independent invariant quadratic forms on the fibre: computed 3, where the printed "
+             "statement gives 2; that is 15 − 12 against 15 − 13, where 12 is the computed rank of the invariance "
+             "conditions"),
+            ("pencil-l5-l6", "rank of (16), (17) §6", (3, 3), 5, 4,
+             "of (16), (17) §6: computed 2, where the printed statement gives 3; that is 7 − 5 against 7 − 4")):
+        small = {"kind": "count", "check": check, "value": value, "paper": paper, "meaning": ""}
+        rs = [result(cid, *size, "exact", "fails", expected=True, erratum="wrong", witness={"small": small})]
+        md = render_markdown(rs)
+        line = next(x for x in md.splitlines() if x.startswith("**A witness to check by hand:**"))
+        assert says in line, line
+        assert "A witness to check by hand" in render_latex(rs)
+
+
 def test_what_is_wrong_spells_the_greek_letters_as_letters():
     """The catalog writes what is wrong in ASCII (Psi, L(nu), Q(lambda*)); a referee reads Ψ, L(ν), Q(λ*)
     in both documents, and a word that merely contains a letter's name (beta, Pit) is left alone."""

@@ -1087,10 +1087,37 @@ def _tex_small_witness(c: ClaimResults) -> list[str]:
 
 
 def _count_witness_text(c: ClaimResults, r: Result, w: dict[str, Any], escape: Any) -> str:
+    """The two numbers of a count's witness, or, where the claim's count template declares that the printed
+    statement is about a kernel (``KERNEL``, see :func:`count_kernel`), the paper's quantity, the number of
+    unknowns minus each rank, with the two ranks of the check (the numbers the engine computed) beside it."""
     head = "**A witness to check by hand:** " if escape is _md_words else ""
+    kernel = count_kernel(c.id)
+    if kernel is not None:
+        quantity, unknowns, system = kernel
+        value, paper = w["value"], w["paper"]
+        return head + escape(f"at (n, r) = {r.size}, {quantity}: computed {unknowns - value}, where the printed "
+                             f"statement gives {unknowns - paper}; that is {unknowns} − {value} against {unknowns} − "
+                             f"{paper}, where {value} is the computed rank of {system}.")
     what = w.get("meaning") or unicode_name(w["check"])
     return head + escape(f"at (n, r) = {r.size}, {what}: computed {w['value']}, where the printed statement "
                          f"gives {w['paper']}.")
+
+
+def count_kernel(cid: str) -> tuple[str, int, str] | None:
+    """Of a claim whose count template computes a rank where the printed statement gives the dimension of the kernel
+    (the number of invariant forms, of independent solutions): the template's ``KERNEL = (the quantity in words, the
+    number of unknowns, the system in words, which name that number)``, a literal the template's own ``counts()``
+    checks against the unknowns it builds; None for any other claim."""
+    import ast
+    from stiefelsym.methods.witness_scripts import template, template_kind
+    text = template(cid)
+    if text is None or template_kind(cid) != "count":
+        return None
+    for node in ast.parse(text).body:
+        if isinstance(node, ast.Assign) and any(getattr(t, "id", "") == "KERNEL" for t in node.targets):
+            quantity, unknowns, system = ast.literal_eval(node.value)
+            return str(quantity), int(unknowns), str(system)
+    return None
 
 
 def _entry_words(entry: str) -> str:
