@@ -622,10 +622,10 @@ def monopole_identities(s, flow, e3, e3dot, F, eps, e3dd):
     (mag6) with F_Ωė₃ replaced by the Lorentz force)."""
     A = s.A
     return {
-        "e_3 (x) e_3 = I - XX^T": e3 @ e3.T - (s.In - s.X @ s.X.T),
-        "(mag2) d(e_1 x e_2)/dt = Omega e_3": s.d(e3_of, flow) - e3dot,
-        "F_Omega = X Psi X^T = eps e_1 ^ e_2": F - eps * wedge(col(s, 0), col(s, 1)),
-        "(mag6) at n = 3": e3dd - (A @ e3 - (dot(s, e3, A @ e3) + dot(s, e3dot, e3dot)) * e3 + F @ e3dot),
+        "e₃ ⊗ e₃ − (I − XXᵀ)": e3 @ e3.T - (s.In - s.X @ s.X.T),
+        "d(e₁ × e₂)/dt − Ωe₃": s.d(e3_of, flow) - e3dot,
+        "F_Ω − ε e₁ ∧ e₂": F - eps * wedge(col(s, 0), col(s, 1)),
+        "(4) §9 at n = 3": e3dd - (A @ e3 - (dot(s, e3, A @ e3) + dot(s, e3dot, e3dot)) * e3 + F @ e3dot),
     }
 
 
@@ -633,7 +633,7 @@ def monopole_checks(s, sign):
     """The remark with the Lorentz force sign·ε e₃ × ė₃ (sign = 1: as printed)."""
     flow, e3, e3dot, F, eps, e3dd = monopole_terms(s)
     checks = monopole_identities(s, flow, e3, e3dot, F, eps, e3dd)
-    checks["F_Omega de_3/dt = eps e_3 x de_3/dt"] = F @ e3dot - sign * eps * cross(s, e3, e3dot)
+    checks["F_Ω ė₃ − ε e₃ × ė₃"] = F @ e3dot - sign * eps * cross(s, e3, e3dot)
     return checks
 
 
@@ -656,7 +656,7 @@ def monopole_form(s):
     """The n = 3 case of Proposition YM: for the normal Neumann flow on V_{3,2} with Ψ = εE₁∧E₂, under so(3) ≅ (ℝ³, ×) and e₃ = e₁ × e₂, the Yang–Mills term of (mag6) is the Lorentz force of a magnetic monopole, F_Ωė₃ = εe₃ × ė₃, so that (mag6), checked here at n = 3, becomes the printed monopole equation."""
     flow, e3, e3dot, F, eps, e3dd = monopole_terms(s)
     checks = monopole_identities(s, flow, e3, e3dot, F, eps, e3dd)
-    checks["F_Omega de_3/dt = eps e_3 x de_3/dt"] = F @ e3dot - eps * cross(s, e3, e3dot)
+    checks["F_Ω ė₃ − ε e₃ × ė₃"] = F @ e3dot - eps * cross(s, e3, e3dot)
     return checks
 
 
@@ -752,9 +752,9 @@ def cpb_reduction_checks(s, block):
                                 @ t.X.T @ t.Phi @ t.X @ twisted.first_basis_vectors(t, k) / 2)
         Xr, Pr = image(h)
         target = flow_N0_at(h, Xr, Pr)
-        checks[f"the block {block} of the body momentum vanishes (r = {k})"] = Z @ h.X.T @ h.Phi @ h.X @ Z
-        checks[f"dX_r/dt = (N0_XP2) (r = {k})"] = h.d(lambda t, image=image: image(t)[0], flow) - target["X"]
-        checks[f"dP_r/dt = (N0_XP2) (r = {k})"] = h.d(lambda t, image=image: image(t)[1], flow) - target["P"]
+        checks[f"the block {block.replace('-', ' − ')} of the body momentum vanishes (r = {k})"] = Z @ h.X.T @ h.Phi @ h.X @ Z
+        checks[f"dXᵣ/dt − Ẋᵣ by (4) §5 (r = {k})"] = h.d(lambda t, image=image: image(t)[0], flow) - target["X"]
+        checks[f"dPᵣ/dt − Ṗᵣ by (4) §5 (r = {k})"] = h.d(lambda t, image=image: image(t)[1], flow) - target["P"]
     return checks
 
 

@@ -119,21 +119,21 @@ def double_neumann_flow(s):
                  r"\mathcal A=\begin{pmatrix}0&\mathbf I_r\\\Lambda-\lambda\mathbf I_r&0\end{pmatrix}")
 def double_neumann_dual_lax(s):
     """Theorem dual-D: the equations (D-eq) imply the 2r×2r Lax equation (LA3*D) with the printed 𝓛(λ), whose off-diagonal blocks contain (I_n − λA)⁻¹, and 𝓐(λ)."""
-    return {"LA3*D": double_lax_residual(s, resolvent_flipped)}
+    return {"d𝓛(λ)/dt − [𝓛(λ), 𝓐(λ)]": double_lax_residual(s, resolvent_flipped)}
 
 
 @double_neumann_dual_lax.claim.correction(
     "(5) §10: (λI_n − A)⁻¹ in place of (I_n − λA)⁻¹ in the off-diagonal blocks",
     exact_max_r={3: 3, 4: 3, 5: 2, 6: 1, 7: 1})
 def double_neumann_dual_lax_corrected(s):
-    return {"LA3*D": double_lax_residual(s, lambda t: t.resolvent(t.lam))}
+    return {"d𝓛(λ)/dt − [𝓛(λ), 𝓐(λ)]": double_lax_residual(s, lambda t: t.resolvent(t.lam))}
 
 
 def double_lax_at_the_diagonal(s, flipped):
     """(LA3*D) at X = Y ∈ V(n, r), Ẋ = Ẏ = P, against (LA3), (LA4) of Theorem DUAL for (NE_XP)."""
     z = {"X": s.X, "Y": s.X, "Xdot": s.P, "Ydot": s.P}
-    return {"L(lambda) - L*_neum(lambda)": L_dual_double(s, z, flipped(s)) - L_dual(s),
-            "A(lambda) - A*_neum(lambda)": A_dual_double(s, z) - A_dual_euclidean(s)}
+    return {"𝓛(λ) − 𝓛*_neum(λ)": L_dual_double(s, z, flipped(s)) - L_dual(s),
+            "𝓐(λ) − 𝓐*_neum(λ)": A_dual_double(s, z) - A_dual_euclidean(s)}
 
 
 @claim("double-neumann-dual-lax-extends-la3", paper=("dual-D", "LA3*D", "LA3", "LA4"), kind="id", exact_max_n=3,
@@ -271,9 +271,9 @@ def coupled_flow_checks(s, Q_Pi):
     printed = flow_C_eq(s, z, s.kappa, Q_Pi)
     kept = derivative(s, lambda t, w: [w["X"].T @ w["X"], w["X"].T @ w["P"] + w["P"].T @ w["X"],
                                        w["Y"].T @ w["Y"], w["Y"].T @ w["Q"] + w["Q"].T @ w["Y"]], z, printed)
-    checks = {f"d{k}/dt (C-neumann) - (C-eq)": derived[k] - printed[k] for k in ("X", "P", "Y", "Q")}
-    checks.update({"d(X^T X)/dt along (C-eq)": kept[0], "d(X^T P + P^T X)/dt along (C-eq)": kept[1],
-                   "d(Y^T Y)/dt along (C-eq)": kept[2], "d(Y^T Q + Q^T Y)/dt along (C-eq)": kept[3]})
+    checks = {f"d{k}/dt along (6) §10 − d{k}/dt by (7) §10": derived[k] - printed[k] for k in ("X", "P", "Y", "Q")}
+    checks.update({"d(XᵀX)/dt along (7) §10": kept[0], "d(XᵀP + PᵀX)/dt along (7) §10": kept[1],
+                   "d(YᵀY)/dt along (7) §10": kept[2], "d(YᵀQ + QᵀY)/dt along (7) §10": kept[3]})
     return checks
 
 
@@ -365,13 +365,13 @@ BIG_CORRECTION = "(9) §10: −ν⁻¹ in front of the last term of L(ν), and d
        statement=r"\kappa=0:\ " + _BIG)
 def coupled_big_lax_normal(s):
     """The r-coupled Neumann system with the normal metric (κ = 0), the flow of (C-neumann) on T*V × T*V, implies the so(n,n) Lax equation (so(n,n)) with the spectral parameter ν."""
-    return {"so(n,n)": big_lax_residual(s, H_coupled(NORMAL))}
+    return {"dL(ν)/dt − [L(ν), A(ν)]": big_lax_residual(s, H_coupled(NORMAL))}
 
 
 @coupled_big_lax_normal.claim.correction(BIG_CORRECTION, changes=2,
                                          exact_max_r={2: 2, 3: 3, 4: 2, 5: 1, 6: 1, 7: 1})
 def coupled_big_lax_normal_corrected(s):
-    return {"so(n,n)": big_lax_residual(s, H_coupled(NORMAL), corrected=True)}
+    return {"dL(ν)/dt − [L(ν), A(ν)]": big_lax_residual(s, H_coupled(NORMAL), corrected=True)}
 
 
 @claim("coupled-big-lax-not-euclidean", paper=("so(n,n)", "C-eq"), kind="not", expect="nonzero",
@@ -443,13 +443,13 @@ def coupled_dual_lax(s):
        statement=r"H_\kappa=T_\kappa+\tr(X^TAY)-2\kappa\tr(X^TP\,Y^TQ):\ " + _BIG + r"\ \text{for every }\kappa")
 def coupled_perturbed_big_lax(s):
     """For every κ, the flow of the perturbed Hamiltonian H_κ = T_κ + tr(XᵀAY) − 2κ tr(XᵀP YᵀQ) implies the so(n,n) Lax equation (so(n,n))."""
-    return {"so(n,n)": big_lax_residual(s, H_perturbed(FREE_KAPPA))}
+    return {"dL(ν)/dt − [L(ν), A(ν)]": big_lax_residual(s, H_perturbed(FREE_KAPPA))}
 
 
 @coupled_perturbed_big_lax.claim.correction(BIG_CORRECTION, changes=2,
                                             exact_max_r={2: 2, 3: 3, 4: 2, 5: 1, 6: 1, 7: 1})
 def coupled_perturbed_big_lax_corrected(s):
-    return {"so(n,n)": big_lax_residual(s, H_perturbed(FREE_KAPPA), corrected=True)}
+    return {"dL(ν)/dt − [L(ν), A(ν)]": big_lax_residual(s, H_perturbed(FREE_KAPPA), corrected=True)}
 
 
 @claim("coupled-perturbed-dual-lax", paper=("LA3*C", "LA4*C", "C-neumann"), kind="lax", exact_max_n=3,
@@ -510,7 +510,7 @@ def coupled_big_lax_along_corrected_flow(s):
     """The corrected so(n,n) Lax pair (the erratum of coupled-big-lax-normal: −ν⁻¹ in front of the last term, dL/dt = [A(ν), L(ν)]) holds along the matrix equations (C-eq) with κ = 0 and YΠ in place of QΠ (the flow of (C-neumann))."""
     z, nu = _coupled_primitives(s), s.scalar("nu")
     L = lambda t: L_big(t, _coupled_primitives(t), nu, -1)
-    return {"so(n,n)": s.d(L, flow_C_eq_corrected(s, s.q(0))) - comm(A_big(s, z, nu), L(s))}
+    return {"dL(ν)/dt − [L(ν), A(ν)]": s.d(L, flow_C_eq_corrected(s, s.q(0))) - comm(A_big(s, z, nu), L(s))}
 
 
 # ==== the Neumann system on the complex Stiefel variety W(n, r) ========================================
@@ -617,14 +617,14 @@ def complex_lax_residual(s, flipped):
                  r"\mathcal A=\begin{pmatrix}0&\mathbf I_r\\\bar\Lambda-\lambda\mathbf I_r&0\end{pmatrix}")
 def complex_neumann_dual_lax(s):
     """Theorem dual-complex: the Neumann system (W-eq) on the complex Stiefel variety implies the 2r×2r Lax equation (LA3*) with the printed 𝓛(λ), whose off-diagonal blocks contain (I_n − λA)⁻¹, and 𝓐(λ)."""
-    return {"LA3*": complex_lax_residual(s, resolvent_flipped)}
+    return {"d𝓛(λ)/dt − [𝓛(λ), 𝓐(λ)]": complex_lax_residual(s, resolvent_flipped)}
 
 
 @complex_neumann_dual_lax.claim.correction(
     "(15) §10: (λI_n − A)⁻¹ in place of (I_n − λA)⁻¹ in the off-diagonal blocks", exact_max_r={2: 2, 3: 1},
     exact_corank={3: 0, 4: 0, 5: 0, 6: 0, 7: 0})
 def complex_neumann_dual_lax_corrected(s):
-    return {"LA3*": complex_lax_residual(s, lambda t: t.resolvent(t.lam))}
+    return {"d𝓛(λ)/dt − [𝓛(λ), 𝓐(λ)]": complex_lax_residual(s, lambda t: t.resolvent(t.lam))}
 
 
 @claim("complex-neumann-momentum-algebra", paper=("u(1)", "W-eq"), kind="dim", exact_max_n=7,

@@ -23,13 +23,13 @@ def entries(M, m, k):
        statement=r"V_{n,n}\cong SO(n):\quad \det X=1\ \text{for every }X\in V_{n,n}")
 def top_rank_stiefel_variety(s):
     """V(n, n) = {X ∈ ℝⁿˣⁿ : XᵀX = I} as printed, SO(n): every point has det X = 1."""
-    return {"det X - 1": det(s, entries(s.X, s.n, s.n)) - s.q(1)}
+    return {"det X − 1": det(s, entries(s.X, s.n, s.n)) - s.q(1)}
 
 
 @top_rank_stiefel_variety.claim.correction("O(n) in place of SO(n): det X = ±1, both signs occur")
 def top_rank_stiefel_variety_corrected(s):
     d = det(s, entries(s.X, s.n, s.n))
-    return {"det(X)^2 - 1": d * d - s.q(1)}
+    return {"det(X)² − 1": d * d - s.q(1)}
 
 
 @claim("stiefel-corank-one", paper=("cond_X*",), kind="geo", section="1", sizes=ON_V_NN1, exact_max_n=5,

@@ -300,7 +300,7 @@ def A_man_dual(s):
 def manakov_dual_lax_pair(s):
     """Theorem man-dual: the Manakov flow (dot_XP3*), derived from H_𝔸 with 𝔸(ξ) = Aξ + ξA, implies the 2r×2r Lax equation (MAN-LA) with the printed 𝓛*_man(λ) (MAN-LA2) and 𝓐*_man(λ) (LA-MAN3)."""
     flow = s.dirac_flow(H_manakov_square)
-    return {"MAN-LA": s.d(L_man_dual, flow) - comm(L_man_dual(s), A_man_dual(s))}
+    return {"d𝓛*_man/dt − [𝓛*_man, 𝓐*_man]": s.d(L_man_dual, flow) - comm(L_man_dual(s), A_man_dual(s))}
 
 
 @manakov_dual_lax_pair.claim.correction("(9) §4: A + λI_n in place of (A + λI_n)^{-1}",
@@ -308,7 +308,7 @@ def manakov_dual_lax_pair(s):
 def manakov_dual_lax_pair_corrected(s):
     flow = s.dirac_flow(H_manakov_square)
     M = A_man_dual_at(s, s.X, s.P, s.A + s.lam * s.In)
-    return {"MAN-LA": s.d(L_man_dual, flow) - comm(L_man_dual(s), M)}
+    return {"d𝓛*_man/dt − [𝓛*_man, 𝓐*_man]": s.d(L_man_dual, flow) - comm(L_man_dual(s), M)}
 
 
 def reflection(s, i):

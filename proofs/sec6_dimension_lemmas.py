@@ -283,10 +283,10 @@ def pencil_leaves_singular(s):
     n, r = s.n, s.r
     y = generic_gl(s)
     return {
-        "rank Lambda1 at a generic point of gl(n)": Rank(lambda1(s, y), generic_leaf_rank(n), generic=True,
+        "rank Λ₁ at a generic point of gl(n)": Rank(lambda1(s, y), generic_leaf_rank(n), generic=True,
                                                          meaning="n² − n", kernel=kernel_generic_lambda1(s, y)),
-        "(dimension) < n^2 - n": Count(int(leaf_printed(n, r) < generic_leaf_rank(n)), 1,
-                                       "the leaves in Θ(T*V) are singular leaves of (gl(n), Λ1)"),
+        "2l < n² − n": Count(int(leaf_printed(n, r) < generic_leaf_rank(n)), 1,
+                                       "the leaves in Θ(T*V) are singular leaves of (gl(n), Λ₁)"),
     }
 
 
@@ -295,10 +295,10 @@ def pencil_leaves_singular_corrected(s):
     n, r = s.n, s.r
     y = generic_gl(s)
     return {
-        "rank Lambda1 at a generic point of gl(n)": Rank(lambda1(s, y), generic_leaf_rank(n), generic=True,
+        "rank Λ₁ at a generic point of gl(n)": Rank(lambda1(s, y), generic_leaf_rank(n), generic=True,
                                                          kernel=kernel_generic_lambda1(s, y)),
-        "(dimension) <= n^2 - n": Count(int(leaf_printed(n, r) <= generic_leaf_rank(n)), 1,
-                                        "the leaves in Θ(T*V) are leaves of (gl(n), Λ1) of rank at most n² − n"),
+        "2l ≤ n² − n": Count(int(leaf_printed(n, r) <= generic_leaf_rank(n)), 1,
+                                        "the leaves in Θ(T*V) are leaves of (gl(n), Λ₁) of rank at most n² − n"),
     }
 
 
@@ -568,13 +568,13 @@ def l5_l6_matrix(s, printed):
 def pencil_l5_l6(s):
     """The solutions of (L5), (L6) in so(r)_{h1} ⊕ Sym(r) form an r-dimensional space (the proof of (A2), after Theorem 1.6 of Bolsinov)."""
     M, unknowns = l5_l6_matrix(s, printed=True)
-    return {"(L5), (L6)": Rank(M, unknowns - s.r, generic=True, meaning="unknowns − r")}
+    return {"rank of (16), (17) §6": Rank(M, unknowns - s.r, generic=True, meaning="unknowns − r")}
 
 
 @pencil_l5_l6.claim.correction("(17) §6: [A₁, η₁] ⟂ so(r, ℂ)_{h₁} in place of [A₁, η₁] ∈ so(r, ℂ)^⊥")
 def pencil_l5_l6_corrected(s):
     M, unknowns = l5_l6_matrix(s, printed=False)
-    return {"(L5), (L6)": Rank(M, unknowns - s.r, generic=True, meaning="unknowns − r")}
+    return {"rank of (16), (17) §6": Rank(M, unknowns - s.r, generic=True, meaning="unknowns − r")}
 
 
 # -- the Casimirs: complete on the leaf (LEMA2) and the tori (NEUMANN, dim_fol) ---------------------------

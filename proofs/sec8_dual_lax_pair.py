@@ -410,7 +410,7 @@ def I2l_general_line(s, l):
 def general_line_of_the_spectral_integrals(s):
     """The general line for 𝓘_{2l}(λ) in (2r-integrals), read at l = 1, where its sums over forms of orders l and l + 1 are all the terms, gives 𝓘_2(λ)."""
     integrals, _ = spectral_integrals(s, s.lam, top=1)
-    return {"I_2 - general line at l = 1": integrals[1] - I2l_general_line(s, 1)}
+    return {"𝓘₂ − the general line of (5) §8 at l = 1": integrals[1] - I2l_general_line(s, 1)}
 
 
 @general_line_of_the_spectral_integrals.claim.correction(
@@ -431,7 +431,7 @@ def general_line_of_the_spectral_integrals_corrected(s):
             g = g + wedge(s, [E[j], Pc[j]], I)
         acc = acc + weight(s, lam, I) * g * g
     integrals, _ = spectral_integrals(s, s.lam, top=1)
-    return {"I_2 - general line at l = 1": integrals[1] - acc}
+    return {"𝓘₂ − the general line of (5) §8 at l = 1": integrals[1] - acc}
 
 
 # -- Plücker coordinates and tangency to cones (tangency), (cone0) ----------------------------------

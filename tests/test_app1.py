@@ -259,7 +259,7 @@ def mag6_without_yang_mills(s):
 
 def monopole_both_signs_wrong(s):
     """Corrupted monopole remark: no Lorentz force at all."""
-    return {k: v for k, v in app1.monopole_checks(s, 0).items() if "x de_3/dt" in k}
+    return {k: v for k, v in app1.monopole_checks(s, 0).items() if "× ė₃" in k}
 
 
 def cpb_euler_commutator_swapped(s):
@@ -381,7 +381,7 @@ def test_monopole_remark_fails_as_printed_and_its_correction_holds(catalog):
     c = catalog.get("ym-monopole")
     assert c.expects_failure(3, 2) and "opposite" in c.erratum
     res = run_exact(c, 3, 2, SEED)
-    assert res.verdict == "fails" and "e_3 x de_3/dt" in str(res.witness)
+    assert res.verdict == "fails" and "e₃ × ė₃" in str(res.witness)
     assert run_points(c, 3, 2, "modular", SEED).verdict == "fails"
     [fix] = c.corrections
     assert run_exact(c, 3, 2, SEED, func=fix.func).verdict == "proved"
@@ -394,7 +394,7 @@ def test_cpb_reduction_needs_the_so_n_minus_r_momentum_to_vanish(catalog):
     c = catalog.get("cpb-reduction-stiefel")
     assert c.expects_failure(3, 3) and "eta_so(n−r) = 0" in c.erratum
     res = run_exact(c, 3, 3, SEED)
-    assert res.verdict == "fails" and "dP_r/dt" in str(res.witness)
+    assert res.verdict == "fails" and "dPᵣ/dt" in str(res.witness)
     assert run_points(c, 4, 4, "modular", SEED).verdict == "fails"
     [fix] = c.corrections
     assert run_exact(c, 3, 3, SEED, func=fix.func).verdict == "proved"

@@ -125,7 +125,8 @@ def test_manakov_dual_lax_correction_in_the_papers_notation():
     """The registered correction of (LA-MAN3): (A + λI)⁻¹ → A + λI in every block of 𝓐*_man(λ)."""
     c = load_catalog().get("manakov-dual-lax")
     changes = diff(_graph(c.func), _graph(c.corrections[0].func))
-    assert describe(changes) == "in MAN-LA, blocks (1,1), (1,2), (2,1), (2,2): (A + λIₙ)⁻¹ → A + λIₙ"
+    assert describe(changes) == ("in d𝓛*_man/dt − [𝓛*_man, 𝓐*_man], blocks (1,1), (1,2), (2,1), (2,2): "
+                                 "(A + λIₙ)⁻¹ → A + λIₙ")
     assert (changes[0].old_tex, changes[0].new_tex) == (r"(A + \lambda I_n)^{-1}", r"A + \lambda I_n")
     assert graph_change(c, c.corrections[0].func, Size(3, 2)) == [changes[0].to_json()]
 

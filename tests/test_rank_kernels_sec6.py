@@ -26,7 +26,7 @@ def catalog():
 
 
 @pytest.mark.parametrize("cid,n,r,names", [
-    ("pencil-leaves-singular", 3, 2, ["rank Lambda1 at a generic point of gl(n)"]),
+    ("pencil-leaves-singular", 3, 2, ["rank Λ₁ at a generic point of gl(n)"]),
     ("pencil-rank-a1", 3, 2, ["rank Lambda_{1,-1}", "rank Lambda_2", "rank Lambda_1 + t Lambda_2",
                               "rank of (L3), (L4)"]),
     ("pencil-a2-generic", 3, 2, ["rank Lambda1(h+v)", "(A2)"]),

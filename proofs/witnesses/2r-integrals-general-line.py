@@ -5,7 +5,7 @@ from itertools import combinations
 
 import sympy as sp
 
-CHECK = "I_2 - general line at l = 1"
+CHECK = "𝓘₂ − the general line of (5) §8 at l = 1"
 
 
 def residuals(W):

@@ -3,7 +3,7 @@
 it does with (lambda I_n - A)^{-1} there (the correction)."""
 import sympy as sp
 
-CHECK = "LA3*"
+CHECK = "d𝓛(λ)/dt − [𝓛(λ), 𝓐(λ)]"
 
 
 def residuals(W):

@@ -3,7 +3,7 @@
 dL/dt = [L, A]; the correction: -nu^{-1} in front of the last term of L(nu), and dL/dt = [A(nu), L(nu)]."""
 import sympy as sp
 
-CHECK = "so(n,n)"
+CHECK = "dL(ν)/dt − [L(ν), A(ν)]"
 
 
 def residuals(W):

@@ -3,7 +3,7 @@ its flow the printed L(nu), A(nu) = L_+(nu) do not satisfy dL/dt = [L, A]; the c
 front of the last term of L(nu), and dL/dt = [A(nu), L(nu)]."""
 import sympy as sp
 
-CHECK = "so(n,n)"
+CHECK = "dL(ν)/dt − [L(ν), A(ν)]"
 
 
 def residuals(W):

@@ -3,7 +3,7 @@ L(lambda) of (LA3*D), with (I_n - lambda A)^{-1} in its off-diagonal blocks, is 
 (LA3); with (lambda I_n - A)^{-1} there (the correction) it is."""
 import sympy as sp
 
-CHECK = "L(lambda) - L*_neum(lambda)"
+CHECK = "𝓛(λ) − 𝓛*_neum(λ)"
 
 
 def residuals(W):

@@ -3,7 +3,7 @@
 (A + lambda I_n)^{-1}; it does with (A + lambda I_n) in their place."""
 import sympy as sp
 
-CHECK = "MAN-LA"
+CHECK = "d𝓛*_man/dt − [𝓛*_man, 𝓐*_man]"
 
 
 def residuals(W):

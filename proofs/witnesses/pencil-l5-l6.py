@@ -7,7 +7,7 @@ the solutions are r-dimensional, as the proof says."""
 import sympy as sp
 
 KIND = "count"
-CHECK = "(L5), (L6)"
+CHECK = "rank of (16), (17) §6"
 SIZE = (3, 3)
 #: the proof states the dimension of the kernel of the system: the quantity, the number of unknowns, the system
 KERNEL = ("the dimension of the solutions (ξ₁, η₁) ∈ so(r)_{h₁} ⊕ Sym(r) of (16), (17) §6", 7,

@@ -4,7 +4,7 @@ n^2 - n at a generic point of gl(n) (2 = 2).  The correction: 2l <= n^2 - n, equ
 import sympy as sp
 
 KIND = "count"
-CHECK = "(dimension) < n^2 - n"
+CHECK = "2l < n² − n"
 SIZE = (2, 1)
 
 

@@ -1121,7 +1121,7 @@ def count_kernel(cid: str) -> tuple[str, int, str] | None:
 
 
 def _entry_words(entry: str) -> str:
-    """"MAN-LA, entry (1,1)," for a matrix residual; the name alone for a scalar one."""
+    """"d𝓛(λ)/dt − [𝓛(λ), 𝓐(λ)], entry (1,1)," for a matrix residual; the name alone for a scalar one."""
     text = unicode_name(entry)
     return text + "," if "entry (" in text else text
 
