@@ -391,8 +391,10 @@ def I2l_general_line(s, l):
 @claim("2r-integrals-general-line", paper=("2r-integrals",), kind="id",
        sizes=admissible(n_max=5, where=lambda n, r: 2 * r <= n, condition="2r <= n"), exact_max_n=2, exact_max_r={3: 1, 4: 2, 5: 2, 6: 1, 7: 1},
        fails_at=lambda n, r: r >= 2,
-       place="the general line 𝓘₂ₗ(λ) of (5) §8",
-       erratum="""The general line of (5) §8, I_{2l} = ∑_{I_l} a/∏(λ − a_i) ∑_{J_l}
+       place="the general line 𝓘₂ₗ(λ) of (5) §8, read literally at l = 1",
+       erratum="""This erratum rests on a literal reading of the printed general line at l = 1: the line is
+       schematic, it ends in “+ ⋯”, and it is read here as having no term beyond the two it shows when l = 1.  The
+       general line of (5) §8, I_{2l} = ∑_{I_l} a/∏(λ − a_i) ∑_{J_l}
        (e_{j_1} ∧ … ∧ e_{j_l})^2_{I_l} + ∑_{I_{l+1}} a/∏(λ − a_i) ∑_{J_l, 1≤i≤r}
        (e_{j_1} ∧ … ∧ e_{j_l} ∧ p_i)^2 + ⋯, is complete for l = 1: by the pattern of the line of I_{2r}, whose sums
        run over I_r, I_{r+1}, …, I_{2r}, the sums of I_{2l} run over I_l, …, I_{2l} (forms of orders l to 2l), so at
