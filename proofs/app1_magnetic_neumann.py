@@ -773,7 +773,7 @@ def cpb_reduction_checks(s, block):
        The sizes (n, n) of this claim are those of the body's T*SO(n) = T*V_{n,n}, not the paper's (n, r): a run at
        (n, n) checks the printed condition and the correction at each of the paper's r = 1, …, n − 2 (the image of
        the first r columns in T*V_{n,r}), so at (3,3), the size of the witness, at r = 1 only.""",
-       statement=r"\eta_{so(r)}=0:\ \text{the reduction of (Euler), (Poisson) is the Neumann system with the normal "
+       statement=r"\eta_{so(r)}=0:\ \text{the reduction of (10), (7) of Section 9 is the Neumann system with the normal "
                  r"metric on }V_{n,r}")
 def cpb_reduces_to_the_normal_neumann_system(s):
     """The symmetric CPB body reduced with η_so(r) = 0 is, as the paper says, the Neumann system with the normal metric on V_{n,r}: at a point of T*SO(n) where the so(r) block of the body momentum vanishes, the first r columns and P_r = MX_r − ½X_rX_rᵀMX_r (the covector with Φ = M when Ψ_so(n−r) = 0) move by (N0_XP2), for every r ≤ n − 2."""

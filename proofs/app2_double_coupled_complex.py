@@ -191,13 +191,13 @@ def double_neumann_symmetry_group(s):
     """The symmetry group printed after Theorem dual-D, GL(n, ℝ), acts on X by X ↦ XRᵀ: R has as many rows as X has
     columns."""
     X = double_point(s)["X"]
-    return {"columns of X = size of R": Count(X.shape[1], s.n, "the columns of X; printed: the size n of R in GL(n)")}
+    return {"columns of X = size of R": Count(X.shape[1], s.n, "the columns of X; printed: the size n of R ∈ GL(n, ℝ)")}
 
 
-@double_neumann_symmetry_group.claim.correction("GL(r, R) in place of GL(n, R)")
+@double_neumann_symmetry_group.claim.correction("GL(r, ℝ) in place of GL(n, ℝ)")
 def double_neumann_symmetry_group_corrected(s):
     X = double_point(s)["X"]
-    return {"columns of X = size of R": Count(X.shape[1], s.r, "the columns of X; corrected: the size r of R in GL(r)")}
+    return {"columns of X = size of R": Count(X.shape[1], s.r, "the columns of X; corrected: the size r of R ∈ GL(r, ℝ)")}
 
 
 def flow_NE(s):
@@ -636,17 +636,18 @@ def complex_neumann_dual_lax_corrected(s):
        statement=r"\psi_0=Z^T\dot{\bar Z}-\dot Z^T\bar Z\in u(n):\ \text{size of }\psi_0=n")
 def complex_neumann_momentum_algebra(s):
     """The momentum ψ₀ = ZᵀŻ̄ − ŻᵀZ̄ printed after Theorem dual-complex is said to be that of u(n): its size is the
-    number of columns of Z (n × r complex, realified: two real columns per complex one)."""
+    number of complex columns of Z (n × r complex; realified, two real columns per complex one)."""
     Z = complex_point(s)["Z"]
-    return {"size of psi_0 = n": Count(Z.shape[1], 2 * s.n, "the real columns of Z (two per complex column), twice "
-                                                          "the size of psi_0; printed: twice n, of u(n)")}
+    # Z realified: two real columns per complex column
+    return {"size of ψ₀ = n": Count(Z.shape[1] // 2, s.n, "the size of ψ₀ (r × r, r the number of columns "
+                                                        "of Z); printed: n, for ψ₀ ∈ u(n)")}
 
 
 @complex_neumann_momentum_algebra.claim.correction("u(r) in place of u(n)")
 def complex_neumann_momentum_algebra_corrected(s):
     Z = complex_point(s)["Z"]
-    return {"size of psi_0 = r": Count(Z.shape[1], 2 * s.r, "the real columns of Z (two per complex column), twice "
-                                                          "the size of psi_0; corrected: twice r, of u(r)")}
+    return {"size of ψ₀ = r": Count(Z.shape[1] // 2, s.r, "the size of ψ₀ (r × r, r the number of columns "
+                                                        "of Z); corrected: r, for ψ₀ ∈ u(r)")}
 
 
 @claim("complex-neumann-momenta", paper=("W-eq", "u(1)"), kind="pb", exact_max_n=2, exact_max_r={3: 2},

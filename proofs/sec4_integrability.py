@@ -224,7 +224,7 @@ def manakov_lax_pair(s):
 
 
 @claim("manakov-square-lax", paper=("Manakov*", "dot_XP3*"), kind="lax",
-       statement=r"\tfrac{d}{dt}(\Phi+\lambda A)=[A\Phi+\Phi A+\lambda A^2,\Phi+\lambda A]\ \text{along (dot\_XP3*)}")
+       statement=r"\tfrac{d}{dt}(\Phi+\lambda A)=[A\Phi+\Phi A+\lambda A^2,\Phi+\lambda A]\ \text{along (5) of Section 4}")
 def manakov_lax_pair_for_a_squared(s):
     """For B = A², the Dirac flow of H_𝔸 (the flow (dot_XP3*)) implies d𝓛/dt = [𝓐, 𝓛] with 𝓛 = Φ + λA, 𝓐 = 𝔸(Φ) + λB = AΦ + ΦA + λA²."""
     flow = s.dirac_flow(H_manakov_square)
@@ -235,7 +235,7 @@ def manakov_lax_pair_for_a_squared(s):
 
 @claim("manakov-integrals", paper=("man", "SO(n)-inv"), kind="pb",
        statement=r"\{\tr(\lambda A+\Phi)^k,\tr(\mu A+\Phi)^m\}=0,\ k,m=1,2,3;\quad "
-                 r"\tfrac{d}{dt}\tr(\lambda A+\Phi)^k=\tfrac{d}{dt}\Psi=\tfrac{d}{dt}P^TP=0\ \text{along (dot\_XP3*)}")
+                 r"\tfrac{d}{dt}\tr(\lambda A+\Phi)^k=\tfrac{d}{dt}\Psi=\tfrac{d}{dt}P^TP=0\ \text{along (5) of Section 4}")
 def manakov_integrals_commute(s):
     """The integrals tr(λA + Σ p_i ∧ e_i)^k of (man), k = 1, 2, 3, Poisson-commute for two values λ, μ, and together with the SO(n)-invariant Ψ and PᵀP they are conserved by the Manakov flow (dot_XP3*) (B = A²)."""
     flow = s.dirac_flow(H_manakov_square)
@@ -293,7 +293,7 @@ def A_man_dual(s):
        𝓐*_man(λ) = J Uᵀ(A + λI_n)U for U = (P, X), J = [[0, I_r], [−I_r, 0]], while 𝓛*_man(λ) = −J UᵀRU;
        then d𝓛*/dt = [𝓛*, 𝓐*] follows from d(UᵀRU)/dt = Uᵀ[R, AΦ + ΦA]U and Φ = UJUᵀ.""",
        statement=r"\tfrac{d}{dt}\mathcal L^*_{man}(\lambda)=[\mathcal L^*_{man}(\lambda),\mathcal A^*_{man}(\lambda)]\ "
-                 r"\text{along (dot\_XP3*)},\quad \mathcal L^*_{man}=\begin{pmatrix}-X^TR_\lambda P&-X^TR_\lambda X\\"
+                 r"\text{along (5) of Section 4},\quad \mathcal L^*_{man}=\begin{pmatrix}-X^TR_\lambda P&-X^TR_\lambda X\\"
                  r"P^TR_\lambda P&P^TR_\lambda X\end{pmatrix},\ \mathcal A^*_{man}=\begin{pmatrix}X^T(A+\lambda\mathbf I)^{-1}P&"
                  r"X^T(A+\lambda\mathbf I)^{-1}X\\-P^T(A+\lambda\mathbf I)^{-1}P&-P^T(A+\lambda\mathbf I)^{-1}X\end{pmatrix},"
                  r"\ R_\lambda=(\lambda\mathbf I_n-A)^{-1}")

@@ -170,7 +170,8 @@ def neumann2_kernel(s):
 def printed_h_has_the_size_of_v(s):
     """The h printed in the proof of Theorem NEUMANN2, Ψ(X0, P0), has the size n of v = X0X0ᵀ, to which it is added."""
     return {"size of h = Psi(X0, P0) = size of v": Count(s.Psi.shape[0], s.n,
-                                                         "the rows of Psi(X0, P0); printed: h, added to v = X0 X0^T")}
+                                                         "the size of h = Ψ(X₀, P₀), which must be the size n of v = X₀X₀ᵀ "
+                                                         "for h + v to be defined")}
 
 
 @printed_h_has_the_size_of_v.claim.correction("h = Φ(X₀, P₀) in place of Ψ(X₀, P₀)")
@@ -178,7 +179,7 @@ def printed_h_has_the_size_of_v_corrected(s):
     X = s.X
     P0 = horizontal(s, X, s.P)
     h = P0 @ X.T - X @ P0.T
-    return {"size of h = Phi(X0, P0) = size of v": Count(h.shape[0], s.n, "the rows of Phi(X0, P0); corrected: h"),
+    return {"size of h = Phi(X0, P0) = size of v": Count(h.shape[0], s.n, "the size of the corrected h = Φ(X₀, P₀)"),
             "h_1 = X0^T h X0 = Psi(X0, P0) = 0": X.T @ h @ X}
 
 

@@ -852,13 +852,13 @@ def manakov_j2r_vanishes(s):
 def printed_identity_has_the_size_of_the_dual_lax_matrix(s):
     """The identity matrix I_n printed in the spectral curve |a(λ)𝓛*_neum(λ) − wI_n| has the size of 𝓛*_neum(λ) of (LA3)."""
     return {"size of L*_neum = size of I_n": Count(L_dual(s).shape[0], s.n,
-                                                   "the rows of L*_neum(lambda) (LA3); printed: the size of I_n")}
+                                                   "the rows of L*_neum(lambda) of (2) §8; printed: the size of I_n")}
 
 
 @printed_identity_has_the_size_of_the_dual_lax_matrix.claim.correction("I₂ᵣ in place of Iₙ")
 def printed_identity_has_the_size_of_the_dual_lax_matrix_corrected(s):
     return {"size of L*_neum = size of I_{2r}": Count(L_dual(s).shape[0], 2 * s.r,
-                                                      "the rows of L*_neum(lambda) (LA3); corrected: the size of I_{2r}")}
+                                                      "the rows of L*_neum(lambda) of (2) §8; corrected: the size of I_{2r}")}
 
 
 @claim("manakov-curve-identity-size", paper=("Chasles-Manakov", "MAN-LA2"), kind="dim",
@@ -873,13 +873,13 @@ def printed_identity_has_the_size_of_the_dual_lax_matrix_corrected(s):
 def printed_identity_has_the_size_of_the_manakov_dual_lax_matrix(s):
     """The identity matrix I_n printed in |a(λ)𝓛*_man(λ) − wI_n| (Chasles theorem for Manakov flows) has the size of 𝓛*_man(λ) of (MAN-LA2)."""
     return {"size of L*_man = size of I_n": Count(L_man_dual_mu(s, s.lam).shape[0], s.n,
-                                                  "the rows of L*_man(lambda) (MAN-LA2); printed: the size of I_n")}
+                                                  "the rows of L*_man(lambda) of (8) §4; printed: the size of I_n")}
 
 
 @printed_identity_has_the_size_of_the_manakov_dual_lax_matrix.claim.correction("I₂ᵣ in place of Iₙ")
 def printed_identity_has_the_size_of_the_manakov_dual_lax_matrix_corrected(s):
     return {"size of L*_man = size of I_{2r}": Count(L_man_dual_mu(s, s.lam).shape[0], 2 * s.r,
-                                                     "the rows of L*_man(lambda) (MAN-LA2); corrected: the size of I_{2r}")}
+                                                     "the rows of L*_man(lambda) of (8) §4; corrected: the size of I_{2r}")}
 
 
 # -- printed sizes in the proofs of Gen_Chasles and Gen_Chasles2 -----------------------------------------
@@ -898,13 +898,13 @@ def printed_identity_has_the_size_of_the_manakov_dual_lax_matrix_corrected(s):
 def printed_left_factor_has_the_size_of_vv(s):
     """The left factor diag(I_{n−r}, B⁻¹) printed in the proof of Theorem Gen_Chasles2 has as many columns as 𝒱(X, P) of (VV) has rows."""
     return {"rows of V = size of the left factor": Count(plane_VV(s, s.X, s.P).shape[0], (s.n - s.r) + s.r,
-                                                         "the rows of V (VV); printed: the size of diag(I_{n-r}, B^{-1})")}
+                                                         "the rows of V of (6) §8; printed: the size of diag(I_{n-r}, B^{-1})")}
 
 
 @printed_left_factor_has_the_size_of_vv.claim.correction("diag(I_n, B^{-1}) in place of diag(I_{n-r}, B^{-1})")
 def printed_left_factor_has_the_size_of_vv_corrected(s):
     return {"rows of V = size of the left factor": Count(plane_VV(s, s.X, s.P).shape[0], s.n + s.r,
-                                                         "the rows of V (VV); corrected: the size of diag(I_n, B^{-1})")}
+                                                         "the rows of V of (6) §8; corrected: the size of diag(I_n, B^{-1})")}
 
 
 @claim("vv-printed-shape", paper=("VV", "Gen_Chasles2", "VVB"), kind="dim", exact_max_n=7,
@@ -921,15 +921,15 @@ def printed_left_factor_has_the_size_of_vv_corrected(s):
 def printed_shape_of_vv(s):
     """𝒱(X, P) of (VV) is printed as a 2r × (n + r) matrix: 2r rows and n + r columns."""
     V = plane_VV(s, s.X, s.P)
-    return {"rows of V": Count(V.shape[0], 2 * s.r, "the rows of V (VV); printed: 2r"),
-            "columns of V": Count(V.shape[1], s.n + s.r, "the columns of V (VV); printed: n + r")}
+    return {"rows of V": Count(V.shape[0], 2 * s.r, "the rows of V of (6) §8; printed: 2r"),
+            "columns of V": Count(V.shape[1], s.n + s.r, "the columns of V of (6) §8; printed: n + r")}
 
 
 @printed_shape_of_vv.claim.correction("(n + r) × 2r in place of 2r × (n + r)")
 def printed_shape_of_vv_corrected(s):
     V = plane_VV(s, s.X, s.P)
-    return {"rows of V": Count(V.shape[0], s.n + s.r, "the rows of V (VV); corrected: n + r"),
-            "columns of V": Count(V.shape[1], 2 * s.r, "the columns of V (VV); corrected: 2r")}
+    return {"rows of V": Count(V.shape[0], s.n + s.r, "the rows of V of (6) §8; corrected: n + r"),
+            "columns of V": Count(V.shape[1], 2 * s.r, "the columns of V of (6) §8; corrected: 2r")}
 
 
 @claim("gen-chasles-momentum-ranges", paper=("Gen_Chasles", "tangency"), kind="dim", exact_max_n=7,

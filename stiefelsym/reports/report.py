@@ -953,7 +953,8 @@ def _md_erratum(c: ClaimResults) -> list[str]:
         or [f"- ({_md_escape(no_point_text(w))})"]
     if w.residual:
         out.append(f"- residual: {_md_code(short(w.residual, WITNESS_WIDTH))}")
-    out += [f"- {_md_escape(check_line(ch))}" for ch in w.checks if ch.status != "zero"][:10]
+    # the checks in the paper's notation, as the PDF sets them (pᵢ ∧ pⱼ, 1 ≤ i < j ≤ n, Iₙ, λ)
+    out += [f"- {_md_escape(unicode_words(greek_words(check_line(ch))))}" for ch in w.checks if ch.status != "zero"][:10]
     if w.message:
         out.append(f"- {_md_escape(w.message)}")
     if w.rerun:
