@@ -389,10 +389,14 @@ def test_unwritable_report_dir_is_refused_even_for_root(fake, run):
 def test_report_rerenders_from_results(fake, run, tmp_path, monkeypatch):
     assert run("verify", "--report-dir", "r").exit_code == 0
     (tmp_path / "r" / "verification.md").unlink()
+    from stiefelsym.run import integrity
+    # the fake runner's records carry no graph of their claims: report refuses them (it binds every record to its
+    # claim's graph); the rendering is tested with that binding left out
+    assert "whose graph is not their catalog claim's" in _one_line_error(run("report", "--results", "r/results.json"))
+    monkeypatch.setattr(integrity, "unbound_graphs", lambda records, files: [])
     # the fake runner runs two sizes of each claim, not every run its command plans: report refuses the file
     # (it asks for every planned run, as check does); the rendering is tested with that test left out
     assert "its command planned have no record" in _one_line_error(run("report", "--results", "r/results.json"))
-    from stiefelsym.run import integrity
     monkeypatch.setattr(integrity, "missing_runs", lambda records, registry, meta: [])
     result = run("report", "--results", "r/results.json")
     assert result.exit_code == 0, result.output
@@ -415,6 +419,7 @@ def test_the_place_of_a_misprint_travels_with_the_erratum_and_is_the_claims(fake
         ((verdict == "fails", True) if claim.id == "prep" else (verdict in PASSING, False))
     from stiefelsym.run import integrity
     monkeypatch.setattr(integrity, "missing_runs", lambda records, registry, meta: [])
+    monkeypatch.setattr(integrity, "unbound_graphs", lambda records, files: [])    # the fake runner's records
     assert run("verify", "--report-dir", "r").exit_code == 0
     path = tmp_path / "r" / "results.json"
     data = json.loads(path.read_text())

@@ -89,7 +89,7 @@ def _claim_origin(claim: Claim) -> tuple[str, str]:
 
 # --------------------------------------------------------------------------- the worker's side
 
-_REGISTRIES: dict[tuple[str, str], Any] = {}
+_REGISTRIES: dict[tuple, Any] = {}
 _REGISTRIES_LOCK = threading.Lock()
 
 
