@@ -155,16 +155,28 @@ class ClaimFailed(Exception):
     """A run's verdict is not the one its claim expects."""
 
 
-def _imported_here(path: Any) -> bool:
-    """Whether a module of this process was loaded from the file at ``path``."""
+def _imported_here(path: Any) -> str | None:
+    """The file a module of this process was loaded from that is the claims file itself or the ``__init__.py`` of a
+    package the claims file lies in (pytest imports it to set up the package's items: code of the claims' folder
+    that no one chose to import), or None.  (What pytest's configuration and the user's test modules import is
+    theirs: conftest.py is loaded before any collection.)"""
     import os
     import sys
     target = os.path.realpath(path)
+    folder = os.path.dirname(target)
+    packages = []
+    d = folder
+    while os.path.isfile(os.path.join(d, "__init__.py")):
+        packages.append(os.path.join(d, "__init__.py"))
+        d = os.path.dirname(d)
     for module in list(sys.modules.values()):
         name = getattr(module, "__file__", None)
-        if isinstance(name, str) and os.path.realpath(name) == target:
-            return True
-    return False
+        if not isinstance(name, str):
+            continue
+        name = os.path.realpath(name)
+        if name == target or name in packages:
+            return name
+    return None
 
 
 class ClaimItem(pytest.Item):
@@ -179,11 +191,14 @@ class ClaimItem(pytest.Item):
     def runtest(self) -> None:
         from stiefelsym.run import runner
         config = self.config
-        if self.claim.source and not self.claim.source.startswith("stiefelsym.") and _imported_here(self.path):
-            raise ClaimFailed(f"{self.path} was imported into the pytest process (as a test module, or by a conftest, "
-                              "a test module or another plugin): code of the file may have run where the verdicts are "
-                              "handed out, so no verdict is given here; rename a test module that declares claims "
-                              "(test_*.py files are pytest's), or run `stiefelsym verify --claims FILE`")
+        here = None if self.claim.reviewed else _imported_here(self.path)
+        if here is not None:
+            what = "the file" if here == str(Path(self.path).resolve()) else here
+            raise ClaimFailed(f"{what} was imported into the pytest process (as a test module or a package's "
+                              "__init__.py, or by a conftest, a test module or another plugin): code of the claims "
+                              "file or of its package may have run where the verdicts are handed out, so no verdict is "
+                              f"given for {self.path.name}; keep claims out of test modules and packages, or run "
+                              "`stiefelsym verify --claims FILE`")
         results = runner.verify([self.claim], sizes=None if self.size is None else [self.size],
                                 methods=["free" if self.size is None else self.method],
                                 seed=config.getoption("stiefelsym_seed"),

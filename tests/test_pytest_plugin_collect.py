@@ -186,3 +186,15 @@ def test_a_claims_file_a_conftest_imports_gets_no_verdict(pytester):
                                            "--stiefelsym-size", "3,2", "-p", "no:cacheprovider", "-rf")
     result.assert_outcomes(failed=1)
     result.stdout.fnmatch_lines(["*was imported into the pytest process*"])
+
+
+def test_a_claims_file_in_a_package_gets_no_verdict(pytester):
+    # stop 70's own attempt: pytest imports a package's __init__.py into its process to set up the items collected
+    # in it, before they run; code there could replace what hands out the verdicts
+    pkg = pytester.mkpydir("pkg")
+    (pkg / "__init__.py").write_text("from stiefelsym.run import runner  # noqa: F401\n")
+    (pkg / "true_claims.py").write_text(TRUE)
+    result = pytester.runpytest_subprocess("--stiefelsym", "pkg", "--stiefelsym-method", "modular",
+                                           "--stiefelsym-size", "3,2", "-p", "no:cacheprovider", "-rf")
+    result.assert_outcomes(failed=1)
+    result.stdout.fnmatch_lines(["*__init__.py was imported into the pytest process*"])
