@@ -20,7 +20,7 @@ the correction puts (e_1 ^ p_1 + ... + e_r ^ p_r)_{I_2}^2 there."""
 from itertools import combinations
 
 
-CHECK = "I_2 - general line at l = 1"
+CHECK = "𝓘₂ − the general line of (5) §8 at l = 1"
 
 
 def residuals(W):

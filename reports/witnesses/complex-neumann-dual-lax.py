@@ -18,7 +18,7 @@ STATED = sp.Rational("2")
 (LA3*), the Neumann system (W-eq) on the complex Stiefel variety W(n, r) does not imply dL/dt = [L, A];
 it does with (lambda I_n - A)^{-1} there (the correction)."""
 
-CHECK = "LA3*"
+CHECK = "d𝓛(λ)/dt − [𝓛(λ), 𝓐(λ)]"
 
 
 def residuals(W):

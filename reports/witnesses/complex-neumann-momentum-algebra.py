@@ -9,16 +9,15 @@ definitions, and compares it with the printed formula and the correction.  Run: 
 import sympy as sp
 
 #: the number the engine computed (the report states it), and the printed formula's
-STATED = 2
-STATED_PRINTED = 4
+STATED = 1
+STATED_PRINTED = 2
 
 """After Theorem 10.3 the momentum psi_0 = Z^T conj(Z') - Z'^T conj(Z) of the complex Neumann system is said to be a
 u(n) momentum map.  Z is n x r, so psi_0 is r x r: the momentum of the right U(r)-action, with values in u(r).
-The engine counts the real columns of Z realified (two per complex column), twice the size of psi_0, against twice
-n: at (n, r) = (2, 1), psi_0 is 1 x 1 and u(2) is 2 x 2."""
+At (n, r) = (2, 1), psi_0 is 1 x 1 and a matrix of u(2) is 2 x 2."""
 
 KIND = "count"
-CHECK = "size of psi_0 = n"
+CHECK = "size of ψ₀ = n"
 SIZE = (2, 1)
 
 
@@ -28,8 +27,8 @@ def counts():
     Zd = sp.Matrix([[sp.I], [0]])              # conj(Z)^T Z' + conj(Z')^T Z = i - i = 0
     psi0 = Z.T * Zd.conjugate() - Zd.T * Z.conjugate()
     assert psi0.shape == (r, r) and psi0 == -psi0.H != sp.zeros(r, r)   # skew-Hermitian, nonzero: in u(r)
-    return {"computed": 2 * psi0.shape[0], "printed": 2 * n, "corrected": 2 * r,
-            "meaning": "twice the size of psi_0 (the real columns of Z), against twice n, of u(n)"}
+    return {"computed": psi0.shape[0], "printed": n, "corrected": r,
+            "meaning": "the size of psi_0 (r x r, r the number of columns of Z), against n, of u(n)"}
 
 
 def main():

@@ -18,7 +18,7 @@ STATED = sp.Rational("-2")
 (with Y Pi, the Hamiltonian flow of (C-neumann)) the printed L(nu), A(nu) = L_+(nu) do not satisfy
 dL/dt = [L, A]; the correction: -nu^{-1} in front of the last term of L(nu), and dL/dt = [A(nu), L(nu)]."""
 
-CHECK = "so(n,n)"
+CHECK = "dL(ν)/dt − [L(ν), A(ν)]"
 
 
 def residuals(W):

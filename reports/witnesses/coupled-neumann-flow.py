@@ -18,7 +18,7 @@ STATED = sp.Rational("2")
 for Q' is Q Pi; the correction has Y Pi.  The check: the printed flow must keep the constraint
 Y^T Q + Q^T Y = 0, i.e. its derivative along the flow must vanish."""
 
-CHECK = "d(Y^T Q + Q^T Y)/dt along (C-eq)"
+CHECK = "d(YᵀQ + QᵀY)/dt along (7) §10"
 
 
 def residuals(W):

@@ -19,7 +19,7 @@ that with eta_so(r) = 0 the reduction gives the normal Neumann system (N0_XP2) o
 condition is eta_so(n-r) = 0 (the correction).  Here n = 3 and r = 1 (k below): V_{3,1} = S^2."""
 
 k = 1                                                  # the paper's r: H_CPB has the first k columns
-CHECK = "dP_r/dt = (N0_XP2) (r = 1)"
+CHECK = "dPᵣ/dt − Ṗᵣ by (4) §5 (r = 1)"
 
 
 def residuals(W):

@@ -18,7 +18,7 @@ STATED = sp.Rational("-1")
 L(lambda) of (LA3*D), with (I_n - lambda A)^{-1} in its off-diagonal blocks, is not L*_neum(lambda) of
 (LA3); with (lambda I_n - A)^{-1} there (the correction) it is."""
 
-CHECK = "L(lambda) - L*_neum(lambda)"
+CHECK = "𝓛(λ) − 𝓛*_neum(λ)"
 
 
 def residuals(W):

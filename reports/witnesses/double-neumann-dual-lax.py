@@ -18,7 +18,7 @@ STATED = sp.Rational("2")
 the double Neumann system (D-eq) does not imply dL/dt = [L, A]; it does with (lambda I_n - A)^{-1} there.
 The point (X, Y, X', Y') of the double system: X^T Y = I_r, X'^T Y + X^T Y' = 0."""
 
-CHECK = "LA3*D"
+CHECK = "d𝓛(λ)/dt − [𝓛(λ), 𝓐(λ)]"
 
 
 def residuals(W):

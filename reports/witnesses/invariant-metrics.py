@@ -21,6 +21,9 @@ import itertools
 KIND = "count"
 CHECK = "invariant forms"
 SIZE = (4, 2)
+#: the proposition counts the kernel of the invariance conditions: the quantity, the number of unknowns, the system
+KERNEL = ("the number of independent invariant quadratic forms on the fibre", 15,
+          "the invariance conditions on the 15 coefficients of a quadratic form on the 5-dimensional fibre")
 
 
 def counts():
@@ -33,6 +36,7 @@ def counts():
     c = [p] + list(P2)                                                # the 5 fibre coordinates
     pairs = list(itertools.combinations_with_replacement(range(len(c)), 2))
     G = sp.symbols(f"g0:{len(pairs)}")                                # the 15 coefficients
+    assert len(G) == KERNEL[1]
     q = sum(g * c[i] * c[j] for g, (i, j) in zip(G, pairs))           # a quadratic form on the fibre
     unit = lambda m, i, j: sp.Matrix(m, m, lambda a, b: int((a, b) == (i, j)))
     so = lambda m: [unit(m, i, j) - unit(m, j, i) for i in range(m) for j in range(i + 1, m)]

@@ -18,7 +18,7 @@ STATED = sp.Rational("-3/2")
 (MAN-LA) d L*/dt = [L*, A*] with A*_man(lambda) as printed in (LA-MAN3), whose blocks contain
 (A + lambda I_n)^{-1}; it does with (A + lambda I_n) in their place."""
 
-CHECK = "MAN-LA"
+CHECK = "d𝓛*_man/dt − [𝓛*_man, 𝓐*_man]"
 
 
 def residuals(W):

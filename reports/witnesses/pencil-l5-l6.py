@@ -20,8 +20,11 @@ correction: (L6) [A1, eta1] perp so(r,C)_{h1} (what pairing with the Cartan suba
 the solutions are r-dimensional, as the proof says."""
 
 KIND = "count"
-CHECK = "(L5), (L6)"
+CHECK = "rank of (16), (17) §6"
 SIZE = (3, 3)
+#: the proof states the dimension of the kernel of the system: the quantity, the number of unknowns, the system
+KERNEL = ("the dimension of the solutions (ξ₁, η₁) ∈ so(r)_{h₁} ⊕ Sym(r) of (16), (17) §6", 7,
+          "(16), (17) §6 as printed, a linear system in the 7 coordinates of (ξ₁, η₁)")
 
 
 def counts():
@@ -45,6 +48,7 @@ def counts():
             cols.append(list(L5) + L6)
         return sp.Matrix(cols).T
     N = len(unknowns)                                       # dim so(r)_{h1} + dim Sym(r) = 1 + 6
+    assert N == KERNEL[1]
     return {"computed": system(True).rank(),                # (L5), (L6) as printed
             "printed": N - r,                               # the proof: r-dimensional solutions
             "corrected": N - r,                             # the same count, for the corrected (L6)

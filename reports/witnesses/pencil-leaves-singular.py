@@ -17,7 +17,7 @@ STATED_PRINTED = 1
 n^2 - n at a generic point of gl(n) (2 = 2).  The correction: 2l <= n^2 - n, equality at (1,1), (2,1)."""
 
 KIND = "count"
-CHECK = "(dimension) < n^2 - n"
+CHECK = "2l < n² − n"
 SIZE = (2, 1)
 
 

@@ -18,7 +18,7 @@ STATED = sp.Rational("4/9")
 the monopole is printed as F_Omega de_3/dt = +epsilon e_3 x de_3/dt; with F_Omega from (mag6) it is
 F_Omega de_3/dt = -epsilon e_3 x de_3/dt (the correction)."""
 
-CHECK = "F_Omega de_3/dt = eps e_3 x de_3/dt"
+CHECK = "F_Ω ė₃ − ε e₃ × ė₃"
 
 
 def residuals(W):
