@@ -19,7 +19,10 @@ def entries(M, m, k):
        erratum="""The introduction says that V_{n,n} is diffeomorphic to SO(n).  By (1) §1, V_{n,n} = {X : XᵀX = I_n}
        is the whole orthogonal group O(n), which has two components, det X = 1 and det X = −1 (for instance
        X = diag(−1, 1, …, 1)): it is not connected, SO(n) is.  Corrected: V_{n,n} = O(n), and V_{n,n−1} is
-       diffeomorphic to SO(n) (claim stiefel-corank-one).""",
+       diffeomorphic to SO(n) (claim stiefel-corank-one).  The paper's other description of V_{n,r} disagrees
+       with (1) §1 at r = n in the same way: §2 says that the left SO(n)-action on V_{n,r} is transitive and,
+       after (2) §2, identifies V_{n,r} with SO(n)/SO(n − r) (as the abstract does); that holds for r < n, while
+       at r = n the orbit of X₀ = I_n under SO(n) is SO(n), the component det X = 1 of V_{n,n} = O(n).""",
        statement=r"V_{n,n}\cong SO(n):\quad \det X=1\ \text{for every }X\in V_{n,n}")
 def top_rank_stiefel_variety(s):
     """V(n, n) = {X ∈ ℝⁿˣⁿ : XᵀX = I} as printed, SO(n): every point has det X = 1."""

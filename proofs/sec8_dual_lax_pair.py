@@ -408,7 +408,8 @@ def I2l_general_line(s, l):
        no term that can be computed, is neither confirmed nor corrected here.""",
        statement=r"\mathcal I_{2}=\sum_{I_1}\frac{a(\lambda)}{\lambda-a_{i_1}}\sum_{J_1}(e_{j_1})_{I_1}^2"
                  r"+\sum_{I_2}\frac{a(\lambda)}{(\lambda-a_{i_1})(\lambda-a_{i_2})}\sum_{J_1,1\le i\le r}"
-                 r"(e_{j_1}\wedge p_i)_{I_2}^2\quad(\text{the line }\mathcal I_{2l}\text{ at }l=1)")
+                 r"(e_{j_1}\wedge p_i)_{I_2}^2\quad(\text{the line }\mathcal I_{2l}\text{ at }l=1\text{; its printed "
+                 r"subscript }I_{r+1}\text{ read as }I_{l+1}=I_2)")
 def general_line_of_the_spectral_integrals(s):
     """The general line for 𝓘_{2l}(λ) in (2r-integrals), read at l = 1, where its sums over forms of orders l and l + 1 are all the terms, gives 𝓘_2(λ)."""
     integrals, _ = spectral_integrals(s, s.lam, top=1)
