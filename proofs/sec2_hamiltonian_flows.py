@@ -403,7 +403,7 @@ def ad_phi_kernel(s):
                  r"&n\le2r+1\\ 2r(n-r-1),&n>2r+1\end{cases}")
 def generic_adjoint_orbit_dimension(s):
     """A generic adjoint orbit in Φ(T*V) = Ad Φ(T*_{X₀}V) has the dimension 2l printed in Lemma 2l."""
-    return {"rank ad_Phi": Rank(ad_matrix(s, s.Phi), two_l_printed(s.n, s.r), generic=True, meaning="2l",
+    return {"rank of ad Φ": Rank(ad_matrix(s, s.Phi), two_l_printed(s.n, s.r), generic=True, meaning="2l",
                                   kernel=ad_phi_kernel(s))}
 
 
@@ -423,9 +423,9 @@ def generic_adjoint_orbit_is_regular_iff(s):
     n, r = s.n, s.r
     regular = n * (n - 1) // 2 - n // 2
     return {
-        "rank ad_Phi": Rank(ad_matrix(s, s.Phi), two_l_printed(n, r), generic=True, meaning="2l",
+        "rank of ad Φ": Rank(ad_matrix(s, s.Phi), two_l_printed(n, r), generic=True, meaning="2l",
                              kernel=ad_phi_kernel(s)),
-        "regular iff n <= 2r+1": Count(int(two_l_printed(n, r) == regular), int(n <= 2 * r + 1),
+        "regular iff n ≤ 2r + 1": Count(int(two_l_printed(n, r) == regular), int(n <= 2 * r + 1),
                                        "the generic orbit is regular (1) or singular (0)"),
     }
 
@@ -435,9 +435,9 @@ def generic_adjoint_orbit_is_regular_iff_corrected(s):
     n, r = s.n, s.r
     regular = n * (n - 1) // 2 - n // 2
     return {
-        "rank ad_Phi": Rank(ad_matrix(s, s.Phi), two_l_printed(n, r), generic=True, meaning="2l",
+        "rank of ad Φ": Rank(ad_matrix(s, s.Phi), two_l_printed(n, r), generic=True, meaning="2l",
                              kernel=ad_phi_kernel(s)),
-        "regular iff n <= 2r+2": Count(int(two_l_printed(n, r) == regular), int(n <= 2 * r + 2),
+        "regular iff n ≤ 2r + 2": Count(int(two_l_printed(n, r) == regular), int(n <= 2 * r + 2),
                                        "the generic orbit is regular (1) or singular (0)"),
     }
 

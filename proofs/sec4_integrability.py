@@ -353,7 +353,7 @@ def bracket_gram_psi(s):
        statement=r"\{(p_i,p_j),\langle\Psi,\Psi\rangle\}\not\equiv0")
 def gram_does_not_commute_with_psi_squared(s):
     """The remark after Theorem ET: the SO(n)-invariant functions (p_i, p_j) do not Poisson-commute with ⟨Ψ, Ψ⟩ (tested on Σ g_ij (p_i, p_j) = tr(G PᵀP) with generic G), so, as they commute with ⟨Φ, Φ⟩, they are not conserved by the Euclidean geodesic flow."""
-    return {"{tr(G P^T P), <Psi, Psi>}": bracket_gram_psi(s)}
+    return {"{tr(G PᵀP), ⟨Ψ, Ψ⟩}": bracket_gram_psi(s)}
 
 
 @claim("gram-commutes-with-psi-if-r-is-1-or-n", paper=("so(n)+so(r)", "SO(n)-inv"), kind="pb",
@@ -362,7 +362,7 @@ def gram_does_not_commute_with_psi_squared(s):
 def gram_commutes_with_psi_in_the_exceptional_cases(s):
     """For r = n, PᵀP = −Ψ²/4 on T*V, and for r = 1, Ψ = 0, so in both cases the functions (p_i, p_j) Poisson-commute with ⟨Ψ, Ψ⟩ (the sizes where the remark after Theorem ET fails)."""
     checks = {"P^T P + Psi^2/4": s.P.T @ s.P + s.Psi @ s.Psi / 4} if s.r == s.n else {"Psi (r = 1)": s.Psi}
-    checks["{tr(G P^T P), <Psi, Psi>}"] = bracket_gram_psi(s)
+    checks["{tr(G PᵀP), ⟨Ψ, Ψ⟩}"] = bracket_gram_psi(s)
     return checks
 
 

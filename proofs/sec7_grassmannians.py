@@ -169,7 +169,7 @@ def neumann2_kernel(s):
        statement=r"h=\Psi(X_0,P_0),\ v=X_0X_0^T:\ \text{the size of }h\text{ is the size }n\text{ of }v")
 def printed_h_has_the_size_of_v(s):
     """The h printed in the proof of Theorem NEUMANN2, Ψ(X0, P0), has the size n of v = X0X0ᵀ, to which it is added."""
-    return {"size of h = Psi(X0, P0) = size of v": Count(s.Psi.shape[0], s.n,
+    return {"size of h = Ψ(X₀, P₀) = size of v": Count(s.Psi.shape[0], s.n,
                                                          "the size of h = Ψ(X₀, P₀), which must be the size n of v = X₀X₀ᵀ "
                                                          "for h + v to be defined")}
 
@@ -179,8 +179,8 @@ def printed_h_has_the_size_of_v_corrected(s):
     X = s.X
     P0 = horizontal(s, X, s.P)
     h = P0 @ X.T - X @ P0.T
-    return {"size of h = Phi(X0, P0) = size of v": Count(h.shape[0], s.n, "the size of the corrected h = Φ(X₀, P₀)"),
-            "h_1 = X0^T h X0 = Psi(X0, P0) = 0": X.T @ h @ X}
+    return {"size of h = Φ(X₀, P₀) = size of v": Count(h.shape[0], s.n, "the size of the corrected h = Φ(X₀, P₀)"),
+            "h₁ = X₀ᵀ h X₀ = Ψ(X₀, P₀) = 0": X.T @ h @ X}
 
 
 # -- the reduced equation (neum-gras) on e_1 ∧ … ∧ e_r ---------------------------------------------

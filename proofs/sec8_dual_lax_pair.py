@@ -852,13 +852,13 @@ def manakov_j2r_vanishes(s):
                  r"\text{ is the size of }\mathcal L^*_{neum}(\lambda)")
 def printed_identity_has_the_size_of_the_dual_lax_matrix(s):
     """The identity matrix I_n printed in the spectral curve |a(λ)𝓛*_neum(λ) − wI_n| has the size of 𝓛*_neum(λ) of (LA3)."""
-    return {"size of L*_neum = size of I_n": Count(L_dual(s).shape[0], s.n,
+    return {"size of 𝓛*_neum = size of Iₙ": Count(L_dual(s).shape[0], s.n,
                                                    "the rows of L*_neum(lambda) of (2) §8; printed: the size of I_n")}
 
 
 @printed_identity_has_the_size_of_the_dual_lax_matrix.claim.correction("I₂ᵣ in place of Iₙ")
 def printed_identity_has_the_size_of_the_dual_lax_matrix_corrected(s):
-    return {"size of L*_neum = size of I_{2r}": Count(L_dual(s).shape[0], 2 * s.r,
+    return {"size of 𝓛*_neum = size of I₂ᵣ": Count(L_dual(s).shape[0], 2 * s.r,
                                                       "the rows of L*_neum(lambda) of (2) §8; corrected: the size of I_{2r}")}
 
 
@@ -873,13 +873,13 @@ def printed_identity_has_the_size_of_the_dual_lax_matrix_corrected(s):
                  r"\mathbf I_n\text{ is the size of }\mathcal L^*_{man}(\lambda)")
 def printed_identity_has_the_size_of_the_manakov_dual_lax_matrix(s):
     """The identity matrix I_n printed in |a(λ)𝓛*_man(λ) − wI_n| (Chasles theorem for Manakov flows) has the size of 𝓛*_man(λ) of (MAN-LA2)."""
-    return {"size of L*_man = size of I_n": Count(L_man_dual_mu(s, s.lam).shape[0], s.n,
+    return {"size of 𝓛*_man = size of Iₙ": Count(L_man_dual_mu(s, s.lam).shape[0], s.n,
                                                   "the rows of L*_man(lambda) of (8) §4; printed: the size of I_n")}
 
 
 @printed_identity_has_the_size_of_the_manakov_dual_lax_matrix.claim.correction("I₂ᵣ in place of Iₙ")
 def printed_identity_has_the_size_of_the_manakov_dual_lax_matrix_corrected(s):
-    return {"size of L*_man = size of I_{2r}": Count(L_man_dual_mu(s, s.lam).shape[0], 2 * s.r,
+    return {"size of 𝓛*_man = size of I₂ᵣ": Count(L_man_dual_mu(s, s.lam).shape[0], 2 * s.r,
                                                      "the rows of L*_man(lambda) of (8) §4; corrected: the size of I_{2r}")}
 
 
@@ -946,14 +946,14 @@ def printed_shape_of_vv_corrected(s):
 def printed_momentum_ranges(s):
     """The sums over the momenta p_i in the printed tangency equation of the proof of Theorem Gen_Chasles run over the columns of P."""
     m = s.P.shape[1]
-    return {"number of momenta p_i": Count(m, s.n, "the columns of P; printed: the range i = 1, …, n"),
-            "number of pairs p_i ^ p_j": Count(m * (m - 1) // 2, s.n * (s.n - 1) // 2,
+    return {"number of momenta pᵢ": Count(m, s.n, "the columns of P; printed: the range i = 1, …, n"),
+            "number of pairs pᵢ ∧ pⱼ": Count(m * (m - 1) // 2, s.n * (s.n - 1) // 2,
                                                "the pairs of columns of P; printed: the range 1 <= i < j <= n")}
 
 
 @printed_momentum_ranges.claim.correction("i = 1, …, r and 1 ≤ i < j ≤ r in place of n")
 def printed_momentum_ranges_corrected(s):
     m = s.P.shape[1]
-    return {"number of momenta p_i": Count(m, s.r, "the columns of P; corrected: the range i = 1, …, r"),
-            "number of pairs p_i ^ p_j": Count(m * (m - 1) // 2, s.r * (s.r - 1) // 2,
+    return {"number of momenta pᵢ": Count(m, s.r, "the columns of P; corrected: the range i = 1, …, r"),
+            "number of pairs pᵢ ∧ pⱼ": Count(m * (m - 1) // 2, s.r * (s.r - 1) // 2,
                                                "the pairs of columns of P; corrected: the range 1 <= i < j <= r")}

@@ -50,8 +50,8 @@ def test_gram_commutes_with_psi_is_proved_for_every_n_at_r_1_and_at_r_n():
     hyps = [set(c["certificate"]["summary"]["hypotheses"]) for c in data["cases"]]
     assert "E1E1t" in hyps[0] and "XXt" not in hyps[0]          # r = 1: E_1E_1^T = I_r, never X X^T = I_n
     assert "XXt" in hyps[1] and "E1E1t" not in hyps[1]          # r = n: X X^T = I_n, never E_1E_1^T = I_r
-    assert [c.name for c in res.checks] == ["r = 1: Psi (r = 1)", "r = 1: {tr(G P^T P), <Psi, Psi>}",
-                                            "r = n: P^T P + Psi^2/4", "r = n: {tr(G P^T P), <Psi, Psi>}"]
+    assert [c.name for c in res.checks] == ["r = 1: Psi (r = 1)", "r = 1: {tr(G PᵀP), ⟨Ψ, Ψ⟩}",
+                                            "r = n: P^T P + Psi^2/4", "r = n: {tr(G PᵀP), ⟨Ψ, Ψ⟩}"]
     assert free_scope(res) == "every n at r = 1 and at r = n"
     assert "r = 1 (n >= 2); r = n (n >= 1)" in res.reductions[0]
     assert any(x.startswith("at r = 1 (every n >= 2): the columns E_1") for x in res.reductions)

@@ -4,7 +4,7 @@ as well.  The correction: regular iff n <= 2r + 2."""
 import sympy as sp
 
 KIND = "count"
-CHECK = "regular iff n <= 2r+1"
+CHECK = "regular iff n ≤ 2r + 1"
 SIZE = (4, 1)
 
 

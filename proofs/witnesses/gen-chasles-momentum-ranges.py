@@ -4,7 +4,7 @@ The correction: i = 1, ..., r (and 1 <= i < j <= r), as in (2r-integrals)."""
 import sympy as sp
 
 KIND = "count"
-CHECK = "number of momenta p_i"
+CHECK = "number of momenta pᵢ"
 SIZE = (2, 1)
 
 

@@ -4,7 +4,7 @@ is not defined.  The correction: I_{2r}."""
 import sympy as sp
 
 KIND = "count"
-CHECK = "size of L*_man = size of I_n"
+CHECK = "size of 𝓛*_man = size of Iₙ"
 SIZE = (3, 1)
 
 

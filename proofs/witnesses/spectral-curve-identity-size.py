@@ -4,7 +4,7 @@ The correction: I_{2r}, with which the determinant is monic of degree 2r in w.""
 import sympy as sp
 
 KIND = "count"
-CHECK = "size of L*_neum = size of I_n"
+CHECK = "size of 𝓛*_neum = size of Iₙ"
 SIZE = (3, 1)
 
 
