@@ -17,7 +17,7 @@ At n = 2r + 2 (here (4, 1)) the orbit of Phi = PX^T - XP^T has the regular dimen
 as well.  The correction: regular iff n <= 2r + 2."""
 
 KIND = "count"
-CHECK = "regular iff n <= 2r+1"
+CHECK = "regular iff n ≤ 2r + 1"
 SIZE = (4, 1)
 
 

@@ -17,7 +17,7 @@ STATED_PRINTED = 2
 The correction: i = 1, ..., r (and 1 <= i < j <= r), as in (2r-integrals)."""
 
 KIND = "count"
-CHECK = "number of momenta p_i"
+CHECK = "number of momenta pᵢ"
 SIZE = (2, 1)
 
 

@@ -17,7 +17,7 @@ STATED_PRINTED = 3
 is not defined.  The correction: I_{2r}."""
 
 KIND = "count"
-CHECK = "size of L*_man = size of I_n"
+CHECK = "size of 𝓛*_man = size of Iₙ"
 SIZE = (3, 1)
 
 

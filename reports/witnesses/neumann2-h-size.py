@@ -18,7 +18,7 @@ The correction: h = Phi(X_0, P_0) = P_0 X_0^T - X_0 P_0^T, n x n, as in the proo
 X_0^T h X_0 is Psi(X_0, P_0), which is 0 on Psi^{-1}(0)."""
 
 KIND = "count"
-CHECK = "size of h = Psi(X0, P0) = size of v"
+CHECK = "size of h = Ψ(X₀, P₀) = size of v"
 SIZE = (3, 2)
 
 

@@ -17,7 +17,7 @@ L*_neum(lambda) of (LA3) is 2r x 2r, so the determinant is defined only when n =
 The correction: I_{2r}, with which the determinant is monic of degree 2r in w."""
 
 KIND = "count"
-CHECK = "size of L*_neum = size of I_n"
+CHECK = "size of 𝓛*_neum = size of Iₙ"
 SIZE = (3, 1)
 
 
