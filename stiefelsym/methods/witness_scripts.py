@@ -68,32 +68,29 @@ def template_counts(cid: str) -> tuple[int, int] | None:
     return int(c["computed"]), int(c["printed"])
 
 
+def template_constant(cid: str, name: str, default: Any = None) -> Any:
+    """The literal a claim's template assigns to ``name`` at its top level (CHECK, KIND, SIZE, KERNEL), read
+    without running it; ``default`` without a template or without that name."""
+    text = template(cid)
+    for node in ast.parse(text).body if text else []:
+        if isinstance(node, ast.Assign) and any(getattr(t, "id", "") == name for t in node.targets):
+            return ast.literal_eval(node.value)
+    return default
+
+
 def template_check(cid: str) -> str | None:
     """The check a claim's template evaluates (its ``CHECK``), None without a template."""
-    text = template(cid)
-    if text is None:
-        return None
-    for node in ast.parse(text).body:
-        if isinstance(node, ast.Assign) and any(getattr(t, "id", "") == "CHECK" for t in node.targets):
-            return ast.literal_eval(node.value)
-    return None
+    return template_constant(cid, "CHECK")
 
 
 def template_kind(cid: str) -> str:
     """"point" (a residual at a witness point) or "count" (a number against the printed one)."""
-    text = template(cid) or ""
-    for node in ast.parse(text).body if text else []:
-        if isinstance(node, ast.Assign) and any(getattr(t, "id", "") == "KIND" for t in node.targets):
-            return ast.literal_eval(node.value)
-    return "point"
+    return template_constant(cid, "KIND", "point")
 
 
 def template_size(cid: str) -> tuple[int, int] | None:
-    text = template(cid) or ""
-    for node in ast.parse(text).body if text else []:
-        if isinstance(node, ast.Assign) and any(getattr(t, "id", "") == "SIZE" for t in node.targets):
-            return tuple(ast.literal_eval(node.value))
-    return None
+    size = template_constant(cid, "SIZE")
+    return None if size is None else tuple(size)
 
 
 def count_values(detail: str) -> tuple[int, int] | None:

@@ -1109,16 +1109,12 @@ def count_kernel(cid: str) -> tuple[str, int, str] | None:
     (the number of invariant forms, of independent solutions): the template's ``KERNEL = (the quantity in words, the
     number of unknowns, the system in words, which name that number)``, a literal the template's own ``counts()``
     checks against the unknowns it builds; None for any other claim."""
-    import ast
-    from stiefelsym.methods.witness_scripts import template, template_kind
-    text = template(cid)
-    if text is None or template_kind(cid) != "count":
+    from stiefelsym.methods.witness_scripts import template_constant, template_kind
+    kernel = template_constant(cid, "KERNEL") if template_kind(cid) == "count" else None
+    if kernel is None:
         return None
-    for node in ast.parse(text).body:
-        if isinstance(node, ast.Assign) and any(getattr(t, "id", "") == "KERNEL" for t in node.targets):
-            quantity, unknowns, system = ast.literal_eval(node.value)
-            return str(quantity), int(unknowns), str(system)
-    return None
+    quantity, unknowns, system = kernel
+    return str(quantity), int(unknowns), str(system)
 
 
 def _entry_words(entry: str) -> str:

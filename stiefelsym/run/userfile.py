@@ -749,6 +749,8 @@ class TracedFunction:
         self._replay: Callable[..., Any]
         self.__name__ = self.__qualname__ = name
         self.realization, self.path, self.line = realization, path, line
+        #: the file this process loaded (set by :func:`_claim`; ``path`` is what the file's code says of itself)
+        self.loaded_from: str | None = None
         #: how the file was confined while traced (stiefelsym.run.sandbox), and what its records say of it
         self.confinement = confinement
         self.confinement_note = note(confinement)
