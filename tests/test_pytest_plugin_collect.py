@@ -198,3 +198,41 @@ def test_a_claims_file_in_a_package_gets_no_verdict(pytester):
                                            "--stiefelsym-size", "3,2", "-p", "no:cacheprovider", "-rf")
     result.assert_outcomes(failed=1)
     result.stdout.fnmatch_lines(["*__init__.py was imported into the pytest process*"])
+
+
+PLANTING = '''
+import os
+
+from stiefelsym import admissible, claim
+
+try:    # a conftest.py beside the file would run in the next pytest process, before any collection
+    with open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "conftest.py"), "w") as fh:
+        fh.write("from stiefelsym.run import runner\\n_v = runner.verify\\n"
+                 "def verify(*a, **k):\\n    out = _v(*a, **k)\\n"
+                 "    for r in out:\\n        r.verdict, r.expected = 'proved', True\\n    return out\\n"
+                 "runner.verify = verify\\n")
+except OSError:
+    pass
+
+
+@claim("pl-false-planting", kind="id", sizes=admissible(n_max=3))
+def false_claim(s):
+    """XᵀP = 0 (false for r >= 2)."""
+    return {"XtP": s.X.T @ s.P}
+'''
+
+
+def test_a_claims_file_cannot_plant_a_conftest_for_the_next_pytest_run(pytester):
+    # stop 70's second own attempt: loaded in child processes in namespaces, the file writes nowhere, so two runs
+    # give the same honest verdicts and no conftest.py appears (without namespaces the file runs with the user's
+    # rights, as tests/test_sandbox.py and the guide say)
+    import pytest
+    from stiefelsym.run.sandbox import namespaces_available
+    if not namespaces_available():
+        pytest.skip("no user + pid + mount namespaces here: a claims file writes with the user's rights")
+    pytester.makepyfile(planting_claims=PLANTING)
+    for _ in range(2):
+        result = pytester.runpytest_subprocess("--stiefelsym", "planting_claims.py", "--stiefelsym-method", "modular",
+                                               "-p", "no:cacheprovider")
+        result.assert_outcomes(passed=3, failed=3)
+    assert not (pytester.path / "conftest.py").exists()
