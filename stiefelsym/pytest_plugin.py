@@ -40,6 +40,16 @@ def pytest_addoption(parser: Any) -> None:
 
 def pytest_configure(config: Any) -> None:
     config.addinivalue_line("markers", "stiefelsym: a claim run collected by the stiefelsym plugin")
+    if config.getoption("stiefelsym") and config.getoption("pyargs"):
+        # pytest finds a module named by --pyargs with importlib, which imports every package above it in this
+        # process before any collection: only the installed catalog is named that way
+        others = [a for a in config.args if a.split("::")[0] != "stiefelsym.proofs"
+                  and not a.split("::")[0].startswith("stiefelsym.proofs.")]
+        if others:
+            raise pytest.UsageError(
+                f"--stiefelsym with --pyargs names only the catalog (stiefelsym.proofs): resolving {others[0]!r} "
+                "would import its packages' __init__.py in the pytest process, where the verdicts are handed out; "
+                "name a claims file by its path, or run `stiefelsym verify --claims FILE`")
 
 
 def _catalog_dir() -> Path | None:
@@ -79,22 +89,66 @@ def pytest_collect_file(file_path: Path, parent: Any) -> Any:
     return ClaimsFile.from_parent(parent, path=file_path)
 
 
+#: what loading a claims file in child processes gave, by resolved path: its claims, or the loader's refusal
+_LOADED: dict[tuple[str, tuple], tuple[list[Any], str | None]] = {}
+
+
+def _sizes_asked(config: Any) -> list[tuple[int, ...]]:
+    return [tuple(int(x) for x in s.split(",")) for s in config.getoption("stiefelsym_size") or ()
+            if s.count(",") == 1 and all(x.strip().isdigit() for x in s.split(","))]
+
+
+def _load(config: Any, path: Path) -> tuple[list[Any], str | None]:
+    """The claims a file declares, as loading it in child processes says (imported and traced there, as
+    `stiefelsym verify --claims` does: nothing of the file runs in the pytest process), and the loader's
+    error, if any; loaded once per file and sizes."""
+    sizes = _sizes_asked(config)
+    key = (str(path.resolve()), tuple(sizes))
+    got = _LOADED.get(key)
+    if got is None:
+        from stiefelsym.claims import CatalogError
+        from stiefelsym.run.userfile import load_claims_isolated
+        try:
+            got = (list(load_claims_isolated(path, sizes)), None)
+        except CatalogError as exc:
+            got = ([], None if str(exc).endswith(_NO_CLAIMS) else str(exc))
+        _LOADED[key] = got
+    return got
+
+
+def _package_init(collector: Any) -> Path | None:
+    """The ``__init__.py`` of the innermost package the collector lies in (pytest imports it in its own
+    process to set up every item below it), or None."""
+    node = collector.parent
+    while node is not None:
+        if isinstance(node, pytest.Package):
+            return Path(node.path) / "__init__.py" if Path(node.path).is_dir() else Path(node.path)
+        node = node.parent
+    return None
+
+
 @pytest.hookimpl(tryfirst=True)
 def pytest_make_collect_report(collector: Any) -> Any:
     """Nothing of a claims file runs in the pytest process, which hands out the verdicts: any other collector of
-    a claims file (pytest's own Python module, for a file named on the command line; --doctest-modules' module;
-    another plugin's) would import it there, before any item runs, and the file's code could then replace what
-    gives the verdicts.  Such a collector is reported as collected with nothing in it; the file's claims are the
-    items of :class:`ClaimsFile`, which loads it in child processes.  A test module found in a directory
-    (test_*.py) is pytest's to import and run: it is imported, and the items of its claims give no verdict
-    (:meth:`ClaimItem.runtest`)."""
+    a claims file (pytest's own Python module, for a file named on the command line or a test module found in a
+    directory; --doctest-modules' module; another plugin's) would import it there, before any item runs, and the
+    file's code could then replace what gives the verdicts.  A check made later in that process cannot undo it
+    (the file's code would replace the check too), so the import never happens: such a collector is reported
+    as collected with nothing in it.  A file named on the command line is never imported; a test module found in
+    a directory (pytest's to import and run) is not imported when loading it in child processes says that it
+    declares claims, and :class:`ClaimsFile` then refuses it with a collection error (its test functions do not
+    run under --stiefelsym)."""
     config = collector.config
     if isinstance(collector, ClaimsFile) or not isinstance(collector, pytest.File) \
             or not config.getoption("stiefelsym"):
         return None
     path = Path(collector.path)
-    if not _claims_file(path) or (_test_module(config, path) and not collector.session.isinitpath(path)):
+    if not _claims_file(path):
         return None
+    if _test_module(config, path) and not collector.session.isinitpath(path):
+        claims, _ = _load(config, path)
+        if not claims:
+            return None         # a test module that declares no claims (or does not load alone): pytest's own
     return pytest.CollectReport(collector.nodeid, "passed", None, [])
 
 
@@ -102,24 +156,33 @@ class ClaimsFile(pytest.File):
     """A claims file (or a module of the catalog): its claims' runs."""
 
     def _claims(self) -> list[Any]:
-        from stiefelsym.claims import CATALOG, CatalogError, load_catalog
+        from stiefelsym.claims import CATALOG, load_catalog
         catalog = _catalog_dir()
         if catalog is not None and self.path.resolve().parent == catalog:
             module = f"{CATALOG}.{self.path.stem}"
             return [c for c in load_catalog() if c.source == module]
-        try:
-            # imported and traced in child processes, as `stiefelsym verify --claims` does: nothing of the
-            # file runs in the pytest process
-            from stiefelsym.run.userfile import load_claims_isolated
-            sizes = [tuple(int(x) for x in s.split(",")) for s in self.config.getoption("stiefelsym_size") or ()
-                     if s.count(",") == 1 and all(x.strip().isdigit() for x in s.split(","))]
-            return list(load_claims_isolated(self.path, sizes))
-        except CatalogError as exc:
-            if str(exc).endswith(_NO_CLAIMS):
-                return []
-            if self.path.name.startswith("test_") or self.path.name.endswith("_test.py"):
+        claims, error = _load(self.config, self.path)
+        found_in_a_directory = _test_module(self.config, self.path) and not self.session.isinitpath(self.path)
+        if error is not None:
+            if found_in_a_directory:
                 return []       # a test module that does not load alone: pytest's own collection reports it
-            raise self.CollectError(str(exc)) from None
+            raise self.CollectError(error)
+        if not claims:
+            return []
+        if found_in_a_directory:
+            raise self.CollectError(
+                f"{self.path.name} declares claims and is named as a test module (python_files): pytest would "
+                "import it in its own process, where the verdicts are handed out, so it is not imported and its "
+                "claims get no verdict (nor do its test functions run); rename it, name it on the command line, or "
+                f"run `stiefelsym verify --claims {self.path.name}`")
+        init = _package_init(self)
+        if init is not None:
+            raise self.CollectError(
+                f"{self.path.name} lies in a package ({init}): pytest imports a package's __init__.py in its own "
+                "process to set up the items below it, so code of the claims' folder would run where the verdicts "
+                "are handed out; its claims get no verdict here: keep claims files out of packages, or run "
+                f"`stiefelsym verify --claims {self.path.name}`")
+        return claims
 
     def collect(self) -> Iterator[Any]:
         from stiefelsym.run import runner
@@ -157,9 +220,12 @@ class ClaimFailed(Exception):
 
 def _imported_here(path: Any) -> str | None:
     """The file a module of this process was loaded from that is the claims file itself or the ``__init__.py`` of a
-    package the claims file lies in (pytest imports it to set up the package's items: code of the claims' folder
-    that no one chose to import), or None.  (What pytest's configuration and the user's test modules import is
-    theirs: conftest.py is loaded before any collection.)"""
+    package the claims file lies in, or None.  The plugin itself never imports either (see
+    :func:`pytest_make_collect_report`; a claims file in a package is refused when collected); this finds a
+    configuration that does (a conftest.py or a test module importing the claims file), so that its items give no
+    verdict.  It is a check of the configuration, not a barrier: code that has already run in this process could
+    replace it, which is why nothing of a claims file is imported here in the first place.  (What pytest's
+    configuration and the user's test modules import is theirs: conftest.py is loaded before any collection.)"""
     import os
     import sys
     target = os.path.realpath(path)
@@ -194,11 +260,10 @@ class ClaimItem(pytest.Item):
         here = None if self.claim.reviewed else _imported_here(self.path)
         if here is not None:
             what = "the file" if here == str(Path(self.path).resolve()) else here
-            raise ClaimFailed(f"{what} was imported into the pytest process (as a test module or a package's "
-                              "__init__.py, or by a conftest, a test module or another plugin): code of the claims "
-                              "file or of its package may have run where the verdicts are handed out, so no verdict is "
-                              f"given for {self.path.name}; keep claims out of test modules and packages, or run "
-                              "`stiefelsym verify --claims FILE`")
+            raise ClaimFailed(f"{what} was imported into the pytest process (by a conftest, a test module or another "
+                              "plugin): code of the claims file or of its package may have run where the verdicts "
+                              f"are handed out, so no verdict is given for {self.path.name}; do not import claims "
+                              "files from tests or conftest.py, or run `stiefelsym verify --claims FILE`")
         results = runner.verify([self.claim], sizes=None if self.size is None else [self.size],
                                 methods=["free" if self.size is None else self.method],
                                 seed=config.getoption("stiefelsym_seed"),

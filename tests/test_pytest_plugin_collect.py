@@ -62,11 +62,14 @@ def test_the_plugin_collects_every_file_that_declares_claims(pytester):
     pytester.makepyfile(dotted_claims=DOTTED, spaced_claims=SPACED, test_false_claims=TESTFILE, good_claims=TRUE,
                         helper=HELPER)
     result = pytester.runpytest_subprocess("--stiefelsym", str(pytester.path), "--stiefelsym-method", "modular",
-                                           "--stiefelsym-size", "3,2", "-p", "no:cacheprovider", "-v")
-    result.assert_outcomes(passed=1, failed=3)
+                                           "--stiefelsym-size", "3,2", "-p", "no:cacheprovider", "-v",
+                                           "--continue-on-collection-errors")
+    # a test module found in the folder that declares claims is refused (not imported, no verdict): never a pass
+    result.assert_outcomes(passed=1, failed=2, errors=1)
     result.stdout.fnmatch_lines(["*dotted_claims.py::pl-false-dotted*FAILED*", "*good_claims.py::pl-true*PASSED*",
                                  "*spaced_claims.py::pl-false-spaced*FAILED*",
-                                 "*test_false_claims.py::pl-false-testfile*FAILED*"])
+                                 "*ERROR*test_false_claims.py*"])
+    assert result.ret != 0
 
 
 GETATTR = '''
@@ -170,13 +173,33 @@ def test_a_claims_file_named_on_the_command_line_never_runs_in_the_pytest_proces
         result.stdout.fnmatch_lines(["*pl-false-patching?n=3,r=2?-modular*FAILED*"])
 
 
-def test_a_test_module_that_declares_claims_gets_no_verdict(pytester):
-    # found in a folder, test_*.py is pytest's to import and run: its claims' items give no verdict, true or false
+def test_a_test_module_that_declares_claims_is_refused_and_never_imported(pytester):
+    # found in a folder, test_*.py is pytest's to import: one that declares claims (as loading it in child processes
+    # says) is not imported, and collecting it is an error (no verdict, true or false; the session fails)
     pytester.makepyfile(test_patching=PATCHING, good_claims=TRUE)
     result = pytester.runpytest_subprocess("--stiefelsym", str(pytester.path), "--stiefelsym-method", "modular",
-                                           "--stiefelsym-size", "3,2", "-p", "no:cacheprovider", "-v", "-rf")
-    result.assert_outcomes(passed=1, failed=1)
-    result.stdout.fnmatch_lines(["*good_claims.py::pl-true*PASSED*", "*was imported into the pytest process*"])
+                                           "--stiefelsym-size", "3,2", "-p", "no:cacheprovider", "-v")
+    result.assert_outcomes(errors=1)
+    result.stdout.fnmatch_lines(["*test_patching.py declares claims and is named as a test module*"])
+    assert result.ret != 0
+
+
+TESTMODULE_PATCHING_THE_GUARD = PATCHING + '''
+    from stiefelsym import pytest_plugin
+    pytest_plugin._imported_here = lambda path: None
+'''
+
+
+def test_a_test_module_cannot_replace_the_guard_it_would_meet(pytester):
+    """Stop 71's review: a claims file named test_*.py in a folder replaced the check of stop 70 (which looked for the
+    file in sys.modules when each item ran, after the file's code had run) and `runner.verify`: every item passed,
+    "proved".  Now it is never imported: another file's false claim fails, and the module itself is refused."""
+    pytester.makepyfile(test_patching=TESTMODULE_PATCHING_THE_GUARD, dotted_claims=DOTTED)
+    result = pytester.runpytest_subprocess("--stiefelsym", str(pytester.path), "--stiefelsym-method", "modular",
+                                           "--stiefelsym-size", "3,2", "-p", "no:cacheprovider", "-v",
+                                           "--continue-on-collection-errors")
+    result.assert_outcomes(failed=1, errors=1)
+    result.stdout.fnmatch_lines(["*dotted_claims.py::pl-false-dotted*FAILED*"])
 
 
 def test_a_claims_file_a_conftest_imports_gets_no_verdict(pytester):
@@ -188,16 +211,62 @@ def test_a_claims_file_a_conftest_imports_gets_no_verdict(pytester):
     result.stdout.fnmatch_lines(["*was imported into the pytest process*"])
 
 
-def test_a_claims_file_in_a_package_gets_no_verdict(pytester):
-    # stop 70's own attempt: pytest imports a package's __init__.py into its process to set up the items collected
-    # in it, before they run; code there could replace what hands out the verdicts
+PATCHING_INIT = '''
+import os
+import sys
+
+if "_pytest.python" in sys.modules:     # imported by pytest itself: every verdict said proved
+    open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "init-ran"), "w").close()
+    from stiefelsym import pytest_plugin
+    from stiefelsym.run import runner
+
+    _verify = runner.verify
+
+    def verify(claims, *a, **kw):
+        out = _verify(claims, *a, **kw)
+        for r in out:
+            r.verdict, r.expected = "proved", True
+        return out
+
+    runner.verify = verify
+    pytest_plugin._imported_here = lambda path: None
+'''
+
+
+def test_a_claims_file_in_a_package_is_refused_and_its_init_never_imported(pytester):
+    """Stop 70's own attempt, and stop 71's review: pytest imports a package's __init__.py into its process to set up
+    the items collected in it, before they run; the review's __init__.py replaced the check of stop 70 and
+    `runner.verify` (every item passed, "proved").  A claims file in a package is now refused when collected, so
+    no item of it is set up and the __init__.py is never imported: another file's false claim fails."""
     pkg = pytester.mkpydir("pkg")
-    (pkg / "__init__.py").write_text("from stiefelsym.run import runner  # noqa: F401\n")
-    (pkg / "true_claims.py").write_text(TRUE)
-    result = pytester.runpytest_subprocess("--stiefelsym", "pkg", "--stiefelsym-method", "modular",
-                                           "--stiefelsym-size", "3,2", "-p", "no:cacheprovider", "-rf")
-    result.assert_outcomes(failed=1)
-    result.stdout.fnmatch_lines(["*__init__.py was imported into the pytest process*"])
+    (pkg / "__init__.py").write_text(PATCHING_INIT)
+    (pkg / "false_claims.py").write_text(PATCHING.replace("pl-false-patching", "pl-false-in-package"))
+    pytester.makepyfile(dotted_claims=DOTTED)
+    for args in (("pkg",), ("pkg/false_claims.py",), (".", "--continue-on-collection-errors")):
+        result = pytester.runpytest_subprocess("--stiefelsym", *args, "--stiefelsym-method", "modular",
+                                               "--stiefelsym-size", "3,2", "-p", "no:cacheprovider", "-v", "-rf")
+        assert result.ret != 0
+        result.stdout.fnmatch_lines(["*false_claims.py lies in a package*"])
+        assert "PASSED" not in result.stdout.str()
+    result.assert_outcomes(failed=1, errors=1)
+    result.stdout.fnmatch_lines(["*dotted_claims.py::pl-false-dotted*FAILED*"])
+    assert not (pytester.path / "init-ran").exists()
+
+
+def test_a_claims_module_named_by_pyargs_in_a_package_is_refused(pytester, monkeypatch):
+    """Stop 71's review: pytest resolves a module named by --pyargs with importlib, which imports its package's
+    __init__.py before any collection (it replaced the plugin's checks).  With --stiefelsym, --pyargs names only the
+    catalog."""
+    pkg = pytester.mkpydir("pkg")
+    (pkg / "__init__.py").write_text(PATCHING_INIT)
+    (pkg / "false_claims.py").write_text(PATCHING.replace("pl-false-patching", "pl-false-in-package"))
+    monkeypatch.setenv("PYTHONPATH", str(pytester.path))
+    result = pytester.runpytest_subprocess("--stiefelsym", "--pyargs", "pkg.false_claims", "--stiefelsym-method",
+                                           "modular", "--stiefelsym-size", "3,2", "-p", "no:cacheprovider")
+    assert result.ret != 0
+    result.stderr.fnmatch_lines(["*--pyargs names only the catalog*"])
+    assert "passed" not in result.stdout.str()
+    assert not (pytester.path / "init-ran").exists()
 
 
 PLANTING = '''

@@ -1141,11 +1141,18 @@ def _source(c: Claim) -> str:
                    "file's directory).")
 @click.option("--claims", "claims_files", multiple=True, type=click.Path(),
               help="claims files the run used (default: those the results file names)")
-def report(results_file: Path | None, report_dir: Path | None, claims_files: tuple[str, ...] = ()) -> None:
+@click.option("--check", "check_first", is_flag=True,
+              help="first run every record again, as `stiefelsym check` does (about as long as the run that "
+                   "wrote the file), and write the reports only if every record holds up")
+def report(results_file: Path | None, report_dir: Path | None, claims_files: tuple[str, ...] = (),
+           check_first: bool = False) -> None:
     """Re-render the Markdown and LaTeX reports from a JSON results file.  Every record is bound to its
     registered claim (the catalog's, or the claims files the run named): a record whose claim is not
     found, or whose statement, title or labels are not the claim's, is refused, and so is a proof for
-    every n, r without a valid certificate (``stiefelsym check`` also runs every record again)."""
+    every n, r without a valid certificate, a witness to check by hand that is not the engine's, and a
+    record whose graph is not its claim's.  Without --check no record is run again: a verdict edited by
+    hand in the file (a fails turned into checked, say) is rendered as edited; ``stiefelsym check FILE``
+    or --check runs every record again and refuses such a file."""
     source = results_file or (report_dir or DEFAULT_REPORT_DIR) / "results.json"
     if not source.is_file():
         raise InputError(f"results file not found: {source} (run `stiefelsym verify` first)")
@@ -1238,6 +1245,12 @@ def report(results_file: Path | None, report_dir: Path | None, claims_files: tup
     if missing:
         raise InputError(f"{source}: refused, {len(missing)} run(s) its command planned have no record: {missing[0]} "
                          "(a results file is the whole run of its command)")
+    if check_first:
+        from stiefelsym.run.integrity import check_results
+        click.echo(f"checking {len(records)} records: each run made again", err=True)
+        if check_results(records, registry, echo=click.echo, rerun=True, hard=meta.get("hard"), meta=meta,
+                         origin=run_origin(user.origin if user is not None else None, files, meta)):
+            raise SystemExit(1)
     target = report_dir or source.parent
     _check_report_dir(target)
     mutation = _mutation(source.parent)

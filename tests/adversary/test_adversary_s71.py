@@ -1,0 +1,48 @@
+"""Stop 71: the review's findings (tests/adversary/s71/review).  See tests/adversary/README.md, Stop 71.  The pytest
+plugin's are replayed in tests/test_pytest_plugin_collect.py."""
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+from adversary_cli import cli
+
+REVIEW = Path(__file__).parent / "s71" / "review"
+
+
+def test_report_check_refuses_a_fails_record_edited_into_checked(tmp_path):
+    """Finding 3: the `fails` record of a false identity edited into `checked` with a true claim's evidence (its
+    digest, words and rerun its own) is rendered as edited by `report`, which runs no record again (its help and the
+    report say so); `report --check` and `check` run it again and refuse the file."""
+    false, true = tmp_path / "F", tmp_path / "T"
+    for name, out in (("flip_false.py", false), ("flip_true.py", true)):
+        run = cli("verify", "--claims", str(REVIEW / name), "--method", "modular", "--size", "3,2", "--jobs", "1",
+                  "--report-dir", str(out))
+        assert run.returncode in (0, 1), run.stderr[-2000:]
+    forged = false / "forged.json"
+    subprocess.run([sys.executable, str(REVIEW / "report_flip.py"), str(false / "results.json"),
+                    str(true / "results.json"), str(forged)], check=True)
+    assert json.loads(forged.read_text())["results"][0]["verdict"] == "checked"
+    for args in (("report", "--check", "--results", str(forged), "--report-dir", str(tmp_path / "rep")),
+                 ("check", str(forged))):
+        run = cli(*args)
+        assert run.returncode == 1, run.stdout[-2000:] + run.stderr[-2000:]
+        assert "a run again says 'fails'" in run.stdout + run.stderr
+    assert not (tmp_path / "rep" / "verification.md").exists()
+    # the honest file renders with --check
+    run = cli("report", "--check", "--results", str(true / "results.json"), "--report-dir", str(tmp_path / "ok"))
+    assert run.returncode == 0, run.stdout[-2000:] + run.stderr[-2000:]
+    assert (tmp_path / "ok" / "verification.md").is_file()
+    assert "runs every record again" in cli("report", "--help").stdout
+
+
+def test_the_review_calculus_and_mutation_probes_get_right_verdicts(tmp_path):
+    """Tried, no hole: Dirac flows of Hamiltonians equal on T*V only, ambient derivatives and gradients, brackets
+    with a function of the constraints, false twins; kept as a replay under the fixed-size methods."""
+    run = cli("verify", "--claims", str(REVIEW / "batch_calculus.py"), "--method", "modular", "--size", "3,2",
+              "--size", "2,1", "--jobs", "1", "--no-report")
+    lines = [ln for ln in run.stdout.splitlines() if ln.startswith("s71-c-") and " modular: " in ln]
+    assert len(lines) == 16, run.stdout[-3000:] + run.stderr[-3000:]
+    for ln in lines:
+        cid, verdict = ln.split()[0], ln.split(": ")[1].split()[0]
+        assert verdict == ("fails" if cid.endswith("-false") else "checked"), ln
