@@ -862,6 +862,51 @@ def printed_identity_has_the_size_of_the_dual_lax_matrix_corrected(s):
                                                       "the rows of L*_neum(lambda) of (2) §8; corrected: the size of I_{2r}")}
 
 
+def half_leaf_twice(n, r):
+    """Twice half the dimension (5) §6 of a generic leaf: 2l = 2r(n − r) + r(r − 1)/2 − [r/2]."""
+    return 2 * r * (n - r) + r * (r - 1) // 2 - r // 2
+
+
+def nontrivial_dual_integrals(n, r):
+    """The count after (5) §8: 𝓘_{2l}(λ) (l = 1..r) has degree n − l, so n − l + 1 coefficients, of which the
+    leading one is a constant on V: n − l nontrivial integrals each."""
+    return sum((n - l + 1) - 1 for l in range(1, r + 1))
+
+
+@claim("dual-integrals-exceed-half-leaf", paper=("2r-integrals", "dimension"), kind="dim", sizes=admissible(n_max=5),
+       fails_at=lambda n, r: r == 1,
+       place="the remark after (5) §8 (“Since the number N is bigger than half of dimension …”)",
+       erratum="""After the count N = (n − 1) + ⋯ + (n − r) = r(n − r) + r(r − 1)/2 of the nontrivial integrals of
+       𝓛*_neum(λ), §8 says that N is bigger than half of the dimension 2l of (5) §6 of a generic symplectic leaf, and
+       concludes that some of the integrals are dependent.  2N − 2l = r(r − 1)/2 + [r/2], which is 0 at r = 1: there
+       N = l = n − 1, not bigger, and the argument for a dependence does not apply.  Corrected: N ≥ l, with N > l
+       exactly when r ≥ 2.  The witness codes the inequality as a number: 1 where it holds, 0 where it fails; at
+       r = 1 it computes 0, where the printed statement gives 1.""",
+       statement=r"N=(n-1)+(n-2)+\dots+(n-r)=r(n-r)+\tfrac{r(r-1)}2>l,\qquad "
+                 r"2l=2r(n-r)+\tfrac{r(r-1)}2-\left[\tfrac r2\right]")
+def dual_integrals_exceed_half_leaf(s):
+    """§8 after (2r-integrals): the number N of nontrivial integrals given by 𝓛*_neum(λ) (n − l for each 𝓘_{2l},
+    whose leading coefficient is a constant on V) is r(n − r) + r(r − 1)/2, and it is bigger than half of the
+    dimension (dimension) of a generic symplectic leaf."""
+    n, r = s.n, s.r
+    N = nontrivial_dual_integrals(n, r)
+    return {"N = r(n − r) + r(r − 1)/2": Count(N, r * (n - r) + r * (r - 1) // 2,
+                                               "nontrivial integrals of L*_neum(lambda), (n - 1) + ... + (n - r)"),
+            "N > l": Count(int(2 * N > half_leaf_twice(n, r)), 1,
+                           "N is bigger than half of the dimension 2l of (5) §6")}
+
+
+@dual_integrals_exceed_half_leaf.claim.correction("N ≥ l, with N > l exactly when r ≥ 2 (N = l = n − 1 at r = 1)")
+def dual_integrals_exceed_half_leaf_corrected(s):
+    n, r = s.n, s.r
+    N = nontrivial_dual_integrals(n, r)
+    return {"2N − 2l = r(r − 1)/2 + [r/2]": Count(2 * N - half_leaf_twice(n, r), r * (r - 1) // 2 + r // 2,
+                                                   "twice N minus the dimension 2l of (5) §6"),
+            "N ≥ l": Count(int(2 * N >= half_leaf_twice(n, r)), 1, "N is at least half of the dimension 2l"),
+            "N > l iff r ≥ 2": Count(int(2 * N > half_leaf_twice(n, r)), int(r >= 2),
+                                      "N is bigger than half of 2l exactly when r >= 2")}
+
+
 @claim("manakov-curve-identity-size", paper=("Chasles-Manakov", "MAN-LA2"), kind="dim",
        sizes=admissible(n_max=5, where=lambda n, r: 2 * r < n, condition="2r < n"), fails_at=lambda n, r: True,
        place="the paragraph “Chasles Theorem for Manakov Flows” before Theorem 8.6",

@@ -34,7 +34,7 @@ NEEDS_COORDINATES = ("2r-integrals", "2r-integrals-conserved",
                      "vvb-left-factor-size", "gen-chasles-momentum-ranges", "dual-lax-determines-the-point",
                      "dual-invariants-manakov-r-n", "chasles-cones-real", "manakov-dual-integrals",
                      "manakov-j2r-vanishes", "spectral-curve-identity-size", "manakov-curve-identity-size",
-                     "vv-printed-shape")
+                     "vv-printed-shape", "dual-integrals-exceed-half-leaf")
 #: the claims of the spectral curve and of the Chasles theorems: (exact sizes, modular sizes) as printed
 GEOMETRY_SIZES = {
     "2r-integrals": ([(1, 1), (2, 1)], [(3, 2), (4, 2), (4, 3)]),
@@ -50,6 +50,7 @@ GEOMETRY_SIZES = {
     "vvb-left-factor-size": ([], []),                            # fails at every size: an erratum
     "spectral-curve-identity-size": ([(2, 1)], [(4, 2)]),        # holds as printed only when n = 2r
     "manakov-curve-identity-size": ([], []),                     # 2r < n: fails at every size, an erratum
+    "dual-integrals-exceed-half-leaf": ([(2, 2), (3, 2)], [(4, 3)]),  # fails as printed at r = 1 only
     "vv-printed-shape": ([(1, 1), (2, 2)], [(3, 3)]),            # holds as printed only when n = r
     "gen-chasles-momentum-ranges": ([(2, 2), (3, 3)], [(4, 4)]),  # holds as printed only when r = n
     "dual-lax-determines-the-point": ([(2, 1), (3, 2)], [(3, 3), (4, 2), (5, 2)]),
@@ -283,7 +284,14 @@ def neumann_determinant_vanishes(s):
     return {"a det L*_neum": sec8.a_poly(s, s.lam) * sec8.det_matrix(s, sec8.L_dual(s))}
 
 
+def half_leaf_not_reached(s):
+    """Corrupted: N compared with the whole dimension 2l of (5) §6, not with half of it."""
+    N = sec8.nontrivial_dual_integrals(s.n, s.r)
+    return {"N > 2l": Count(int(N > sec8.half_leaf_twice(s.n, s.r)), 1)}
+
+
 CORRUPTIONS = [
+    ("dual-integrals-exceed-half-leaf", half_leaf_not_reached),
     ("vvb-left-factor-size", vvb_factor_of_size_n_plus_1),
     ("gen-chasles-momentum-ranges", momentum_ranges_r_plus_1),
     ("spectral-curve-identity-size", curve_identity_of_size_2r_plus_1),
@@ -426,6 +434,8 @@ def test_the_spectral_curve_of_a_r_1_neumann_system_is_moser_s():
 
 
 @pytest.mark.parametrize("cid, fails, holds", [("vvb-left-factor-size", [(3, 2), (4, 4)], []),
+                                               ("dual-integrals-exceed-half-leaf", [(1, 1), (4, 1)],
+                                                [(2, 2), (3, 2), (5, 3)]),
                                                ("gen-chasles-momentum-ranges", [(3, 1), (4, 2)], [(3, 3)]),
                                                ("spectral-curve-identity-size", [(3, 1), (3, 2), (5, 2)],
                                                 [(2, 1), (4, 2)]),

@@ -7,6 +7,8 @@
   matrix on such a side that is not a multiple of I.
 * :func:`constants`: the exact constants of the graph (for the float method's
   range check).
+* :func:`parameter_free`: whether the residuals are numbers computed from the sizes
+  alone (counts), so that no point of T*V enters them.
 """
 from __future__ import annotations
 
@@ -583,6 +585,23 @@ def _mentions_r(x) -> bool:
     if t is Size:
         return x.d == _R
     return t is str and x == _R
+
+
+#: operations whose value, in a graph at fixed sizes, is a number or container of numbers given outright
+_NUMBER_OPS = frozenset({"dict", "count", "const", "tuple", "list"})
+
+
+def parameter_free(g: Graph) -> bool:
+    """Whether every node the output reads is a count of numbers, an exact constant or a container of these
+    (a graph at fixed sizes whose checks are Counts of plain integers): no leaf of the scene (X, P, A, λ, …),
+    no call of it and no engine step enters the residuals, so their values are the same at every point and
+    an exact evaluation of them is the computation of a few integers, at any size."""
+    cached = g.cache.get("parameter-free")
+    if cached is None:
+        needed = g.needed()
+        cached = bool(needed) and all(g.ops[i] in _NUMBER_OPS for i in needed)
+        g.cache["parameter-free"] = cached
+    return cached
 
 
 def r_dependence(g: Graph) -> str:

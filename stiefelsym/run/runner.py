@@ -410,7 +410,7 @@ def _run_exact(claim: Claim, size: Size, seed: int, func: Callable | None, exact
                budget: float | None = None) -> Result:
     """The exact method: its symbolic charts within the claim's symbolic budget; beyond it, or where the
     charts end without a verdict, the dimension-free proof of the same graph where there is one."""
-    if not claim.exact_at(size.n, size.r):
+    if not claim.exact_at(size.n, size.r) and not _numbers_only(claim, size, func):
         proof, took = _specialised(claim, size, seed, func, 0.0, budget)
         if proof is not None:
             return proof
@@ -434,10 +434,24 @@ def auto_budget_reason(claim: Claim, size: Size) -> str:
             f"n = {size.n} is above this claim's symbolic budget (n <= {claim.exact_max_n})")
 
 
+def _numbers_only(claim: Claim, size: Size, func: Callable | None) -> bool:
+    """Whether the claim's graph at this size has residuals that are numbers given outright (counts of
+    integers: :func:`stiefelsym.ir.passes.parameter_free`), so that its exact evaluation costs nothing at any
+    size and no symbolic budget applies; False where the graph is not at hand."""
+    from stiefelsym.ir import _compiled_graph as compile_claim
+    from stiefelsym.ir.passes import parameter_free
+    from stiefelsym.scene import REALIZATIONS
+    cons = REALIZATIONS[claim.realization]
+    try:
+        return parameter_free(compile_claim(func or claim.func, size.n, size.r, (cons.name, cons.build)))
+    except Exception:   # noqa: BLE001 - a claim that does not trace here: the run itself says why
+        return False
+
+
 def _run_auto(claim: Claim, size: Size, seed: int, func: Callable | None,
               exact: Callable[..., Result] | None = None, budget: float | None = None) -> Result:
     exact = exact or METHOD_RUNNERS["exact"]
-    if claim.exact_at(size.n, size.r):
+    if claim.exact_at(size.n, size.r) or _numbers_only(claim, size, func):
         res = exact(claim, size.n, size.r, seed, func)
         if res.verdict != "inconclusive":
             return res
