@@ -1046,14 +1046,15 @@ class Scene(PaperObjects):
         return self._cached("theta", lambda: self._skew_params("theta", self.r, "r"))
 
     def generic(self, name: str, m: str, k: str, kind: str = "general") -> Mat:
-        """A generic matrix of parameters with index labels m, k in {'n', 'r'}: every entry its own
+        """A generic matrix of parameters with index labels m, k in {'n', 'r', 'n-r'} (ℝⁿ⁻ʳ: an opaque coordinate
+        space of n − r dimensions, the second block of the chart at X₀ = (E₁ … E_r)): every entry its own
         parameter (``kind`` "general"), or a generic symmetric ("sym") or skew ("skew") m×m matrix, whose
         entries on and above the diagonal (above it, for "skew") are the parameters.  A generic element
         of gl(m) is generic("S", m, m, "sym") + generic("K", m, m, "skew"): the same generic point as
         generic("G", m, m), in parameters in which G + Gᵀ and G − Gᵀ have one term per entry."""
-        size = {"n": self.n, "r": self.r}
+        size = {"n": self.n, "r": self.r, "n-r": self.n - self.r}
         if m not in size or k not in size:
-            raise ValueError(f"generic({name!r}, {m!r}, {k!r}): the index spaces are 'n' or 'r'")
+            raise ValueError(f"generic({name!r}, {m!r}, {k!r}): the index spaces are 'n', 'r' or 'n-r'")
         key = f"{USER_GENERIC}{user_name(name, 'generic')}[{m}x{k}]" + check_generic_kind(m, k, kind)
         if kind == "sym":
             return self._cached(key, lambda: self._sym_params(key, size[m], m))

@@ -184,7 +184,8 @@ def _spaces(g: Graph) -> tuple["_Sides", list]:
             if name == "resolvent":
                 sd = (n_atom, n_atom)
             elif name in ("generic", "fresh"):
-                sd = (atom(args[1]), atom(args[2]))
+                # ℝⁿ⁻ʳ is no atom: a side of its own, unknown until an operation joins it (as an int-sized zero block's)
+                sd = tuple(atom(d) if d in ("n", "r") else S.new() for d in (args[1], args[2]))
             elif name == "zeros":
                 sd = (sized(args[0]), sized(args[1]))
             elif name == "identity":
@@ -584,7 +585,7 @@ def _mentions_r(x) -> bool:
         return any(_mentions_r(y) for y in x)
     if t is Size:
         return x.d == _R
-    return t is str and x == _R
+    return t is str and x in (_R, "n-r")
 
 
 #: operations whose value, in a graph at fixed sizes, is a number or container of numbers given outright

@@ -723,17 +723,33 @@ def generic_kind_problem(m: Any, k: Any, kind: Any) -> str | None:
     return None
 
 
+#: the spaces of a claim's generic matrix: ℝⁿ, ℝʳ, and ℝⁿ⁻ʳ (the second block of the chart at X₀ = (E₁ … E_r), an
+#: opaque coordinate space: at fixed sizes only)
+GENERIC_SPACES = ("n", "r", "n-r")
+
+
+def _generic_side(t: "Trace", d: str) -> Any:
+    """The size of a side of a generic matrix: k·d for ℝⁿ and ℝʳ; for ℝⁿ⁻ʳ the number n − r, through the door of
+    sizes (a claim with one needs fixed sizes)."""
+    if d != "n-r":
+        return t.size(1, d)
+    what = "as the size n − r of a generic block (s.generic(name, 'n-r', ...))"
+    n, r = t.size_number(t.size(1, "n"), what), t.size_number(t.size(1, "r"), what)
+    return None if n is None or r is None else n - r
+
+
 def _m_generic(s, name, m, k, kind="general"):
     t = s._t
-    if not all(type(x) is str for x in (name, m, k)) or not {m, k} <= {"n", "r"}:
-        return t.refuse("s.generic(name, m, k): a name and the spaces 'n' or 'r'")
+    if not all(type(x) is str for x in (name, m, k)) or not {m, k} <= set(GENERIC_SPACES):
+        return t.refuse("s.generic(name, m, k): a name and the spaces 'n', 'r' or 'n-r'")
     problem = generic_kind_problem(m, k, kind)
     if problem:
         return t.refuse(problem)
     if name.startswith(INVERSE_ELEMENTS) and not t._elements:
         return t.refuse(f"the names {INVERSE_ELEMENTS}... are the generic elements of an Inverse statement")
     # a general matrix keeps the node of three arguments it always had (the same graphs, the same digests)
-    return _call(s, "generic", (name, m, k) if kind == "general" else (name, m, k, kind), MAT, t.shape_of((m, k)))
+    return _call(s, "generic", (name, m, k) if kind == "general" else (name, m, k, kind), MAT,
+                 (_generic_side(t, m), _generic_side(t, k)))
 
 
 def _m_fresh(s, m, k):
