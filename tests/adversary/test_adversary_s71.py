@@ -46,3 +46,26 @@ def test_the_review_calculus_and_mutation_probes_get_right_verdicts(tmp_path):
     for ln in lines:
         cid, verdict = ln.split()[0], ln.split(": ")[1].split()[0]
         assert verdict == ("fails" if cid.endswith("-false") else "checked"), ln
+
+
+HIDDEN = Path(__file__).parent / "s71" / "hidden"
+
+
+def test_further_statements_of_the_paper_get_the_verdicts_numpy_gives():
+    """Stop 71's statements of the paper the catalog does not state, written with the public API (s71/hidden,
+    FINDINGS.md): every verdict as a numpy check of its own says, the new erratum of §8's remark (N = l at r = 1)
+    included."""
+    run = cli("verify", "--claims", str(HIDDEN / "claims.py"), "--method", "modular", "--method", "exact",
+              "--size", "3,2", "--size", "4,1", "--jobs", "2", "--no-report")
+    assert run.returncode == 0, run.stdout[-3000:] + run.stderr[-3000:]
+    assert "h71-n-bigger-than-half (4,1) exact: fails" in run.stdout
+
+
+def test_their_false_twins_fail_where_numpy_says():
+    """Each statement with one change, failing where numpy says; the one rank printed too large that a random point
+    cannot refute (rank 1 at a point is no upper bound on the generic rank) is inconclusive, never a pass."""
+    run = cli("verify", "--claims", str(HIDDEN / "negatives.py"), "--method", "modular", "--method", "exact",
+              "--size", "3,2", "--size", "4,1", "--jobs", "2", "--no-report")
+    unexpected = [ln for ln in run.stdout.splitlines() if "UNEXPECTED" in ln and not ln.startswith("  ")]
+    assert unexpected and all(ln.startswith("n71-jk-rank-r (3,2) modular: inconclusive") for ln in unexpected), \
+        run.stdout[-3000:]
