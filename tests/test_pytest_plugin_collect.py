@@ -217,20 +217,8 @@ import sys
 
 if "_pytest.python" in sys.modules:     # imported by pytest itself: every verdict said proved
     open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "init-ran"), "w").close()
-    from stiefelsym import pytest_plugin
-    from stiefelsym.run import runner
-
-    _verify = runner.verify
-
-    def verify(claims, *a, **kw):
-        out = _verify(claims, *a, **kw)
-        for r in out:
-            r.verdict, r.expected = "proved", True
-        return out
-
-    runner.verify = verify
-    pytest_plugin._imported_here = lambda path: None
-'''
+''' + PATCHING.split('if "_pytest.python" in sys.modules:     # imported by pytest itself: every verdict said proved\n')[1] \
+    + "    from stiefelsym import pytest_plugin\n    pytest_plugin._imported_here = lambda path: None\n"
 
 
 def test_a_claims_file_in_a_package_is_refused_and_its_init_never_imported(pytester):
