@@ -60,14 +60,26 @@ def _catalog_dir() -> Path | None:
     return Path(list(spec.submodule_search_locations)[0]).resolve()
 
 
+def _matches(pattern: str, path: Path) -> bool:
+    """pytest's own match of a ``python_files`` pattern (a pattern with a path separator is matched against the
+    whole path, relative ones anywhere below the root: ``checks/*.py``)."""
+    try:
+        from _pytest.pathlib import fnmatch_ex
+    except ImportError:         # pragma: no cover - the same rule, for a pytest without the helper
+        import fnmatch
+        import os
+        if os.sep not in pattern and "/" not in pattern:
+            return fnmatch.fnmatch(path.name, pattern)
+        if path.is_absolute() and not os.path.isabs(pattern):
+            pattern = f"*{os.sep}{pattern}"
+        return fnmatch.fnmatch(str(path), pattern)
+    return bool(fnmatch_ex(pattern, path))
+
+
 def _test_module(config: Any, file_path: Path) -> bool:
     """Whether pytest imports the file as a test module wherever it lies (its ``python_files`` patterns,
-    test_*.py and *_test.py by default)."""
-    import fnmatch
-    for pattern in config.getini("python_files") or ():
-        if fnmatch.fnmatch(str(file_path) if "/" in pattern or "\\" in pattern else file_path.name, pattern):
-            return True
-    return False
+    test_*.py and *_test.py by default, matched as pytest matches them)."""
+    return any(_matches(pattern, file_path) for pattern in config.getini("python_files") or ())
 
 
 def _claims_file(file_path: Path) -> bool:

@@ -91,3 +91,22 @@ def test_a_fixed_size_run_loads_neither_the_free_algebra_nor_its_checker():
     assert "stiefelsym.methods.families" in out
     for m in ("stiefelsym.free", "stiefelsym.methods.dimension_free", "stiefelsym.certificate_check"):
         assert m not in out, m
+
+
+def test_no_review_file_under_tests_is_collected_or_imported_by_pytest():
+    """The files of the reviews (tests/adversary/sNN/) replace what gives verdicts in the process that imports them;
+    none may be a file pytest collects or imports on its own in the project's test run (a test module, a conftest,
+    a doctest text file, the __init__.py of a package with code): they are kept as *.in and copied under their
+    names by the tests that run them."""
+    adversary = ROOT.parent / "tests" / "adversary"
+    found = []
+    for p in adversary.rglob("*"):
+        if p.parent == adversary or not p.is_file():
+            continue
+        name = p.name
+        if name.startswith("test_") and name.endswith(".py") or name.endswith("_test.py") or name == "conftest.py" \
+                or name.startswith("test") and name.endswith(".txt"):
+            found.append(p)
+        elif name == "__init__.py" and p.read_text(encoding="utf-8").strip() not in ("", "# ruff: noqa"):
+            found.append(p)
+    assert not found, found

@@ -293,3 +293,16 @@ def test_a_claims_file_cannot_plant_a_conftest_for_the_next_pytest_run(pytester)
                                                "-p", "no:cacheprovider")
         result.assert_outcomes(passed=3, failed=3)
     assert not (pytester.path / "conftest.py").exists()
+
+
+def test_python_files_with_a_folder_are_matched_as_pytest_matches_them(pytester):
+    """The second review of stop 71: with `python_files = checks/*.py`, the plugin matched the pattern against the
+    absolute path and missed, took the user's test module for a claims file declaring none, and reported it empty:
+    its failing test vanished under --stiefelsym (exit 0)."""
+    pytester.makeini("[pytest]\npython_files = checks/*.py\n")
+    checks = pytester.mkdir("checks")
+    (checks / "helpers_test_mod.py").write_text("def test_must_run():\n    assert False, 'this test must run'\n")
+    pytester.makepyfile(good_claims=TRUE)
+    result = pytester.runpytest_subprocess("--stiefelsym", "--stiefelsym-method", "modular", "--stiefelsym-size",
+                                           "3,2", "-p", "no:cacheprovider")
+    result.assert_outcomes(failed=1, passed=1)

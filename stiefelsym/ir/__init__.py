@@ -121,6 +121,17 @@ def _compiled_graph(func: Callable, n: int | None, r: int | None, constraints: t
     raise _fresh(g)
 
 
+def numbers_only(func: Callable, n: int, r: int, constraints: tuple[str, Callable]) -> bool:
+    """Whether the claim's graph at (n, r) has residuals that are numbers given outright (counts of integers:
+    :func:`stiefelsym.ir.passes.parameter_free`), so that its exact evaluation costs nothing at any size and
+    no symbolic budget applies; False where the claim does not trace here (its run says why)."""
+    from stiefelsym.ir.passes import parameter_free
+    try:
+        return parameter_free(_compiled_graph(func, n, r, constraints))
+    except Exception:   # noqa: BLE001 - a claim that does not trace here: the run itself says why
+        return False
+
+
 def compile_at_size(func: Callable, n: int, r: int, constraints: tuple[str, Callable], twice: bool = True) -> Graph:
     """The graph traced at (n, r) itself, the claim's code running at the numbers: only to compare a
     claim's graph on a family of sizes with its graphs at the family's sizes (a claim that traces with

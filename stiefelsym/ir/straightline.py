@@ -282,6 +282,8 @@ def compile_graph(g: Graph, leaves: Callable[[int, Any], Leaf],
     def matrix(x: Any, why: str) -> _Mat:
         if type(x) is not _Mat:
             raise NotCompiled(why)
+        if not x or not x[0]:
+            raise NotCompiled("an empty matrix (a block of n − r = 0 rows, say)")
         return x
 
     def number(x: Any, why: str) -> Any:
@@ -307,6 +309,8 @@ def compile_graph(g: Graph, leaves: Callable[[int, Any], Leaf],
                 else:
                     out.append(int(x))
             rows.append(tuple(out))
+        if not rows or not rows[0]:
+            raise NotCompiled("an empty matrix (a block of n − r = 0 rows, say)")
         return _Num(rows[0][0]) if leaf.scalar else _Mat(tuple(rows))
 
     def call(i: int, a: tuple) -> Any:

@@ -265,8 +265,8 @@ class CostModel:
         for m in SUGGEST_ORDER:
             if m == method or (method == "auto" and m == "exact"):
                 continue
-            if m == "float" and getattr(claim, "kind", None) == "dim":
-                continue
+            if m in ("float", "ball") and getattr(claim, "kind", None) == "dim":
+                continue        # the numeric methods are not run on dimensions (integers)
             if n > _engine_cap(m):
                 continue
             options.append((self.predict(m, claim, n, r), m))
@@ -420,12 +420,33 @@ def check(method: str, claim: Any, n: int, r: int, budget: float | None = DEFAUL
         raise SizeError(f"r = {r} > n = {n}: V(n, r) needs r <= n")
     cost = cost or model()
     t = cost.predict(method, claim, n, r)
+    if budget is not None and t > budget and method in ("exact", "auto", "rational", "modular") \
+            and _counts_of_integers(claim, n, r):
+        return 0.0      # counts of plain integers: evaluated exactly at any size, whatever the model says
     if budget is not None and t > budget:
         cid = getattr(claim, "id", str(claim))
         raise BudgetError(f"{cid} ({n},{r}) with --method {method}: predicted {format_seconds(t)}, "
                           f"beyond the budget of {format_seconds(budget)} (--budget); "
                           f"{cost.suggest(method, claim, n, r, budget)}")
     return t
+
+
+def _counts_of_integers(claim: Any, n: int, r: int) -> bool:
+    """Whether the claim's checks are counts of plain integers (:func:`stiefelsym.ir.numbers_only`), judged at its
+    smallest stated size (tracing it at (n, r) itself could take as long as the run the budget refuses; a
+    prediction, not a verdict: the run decides at its own size, within its own time budget)."""
+    func = getattr(claim, "func", None)
+    sizes = getattr(claim, "sizes", None)
+    if func is None or sizes is None:
+        return False
+    from stiefelsym.ir import numbers_only
+    from stiefelsym.scene import REALIZATIONS
+    cons = REALIZATIONS.get(getattr(claim, "realization", "standard"))
+    try:
+        low = min(sizes, key=lambda s: (s.n, s.r))
+    except (TypeError, ValueError):
+        return False
+    return cons is not None and numbers_only(func, low.n, low.r, (cons.name, cons.build))
 
 
 #: a lower bound of the n x n matrices a run holds at once, and of the bytes of one entry per method
@@ -451,6 +472,8 @@ def check_memory(method: str, claim: Any, n: int, r: int, memory_gib: float | No
     if memory_gib is None or method == "free":
         return need
     limit = memory_gib * (1 << 30)
+    if need > limit and method in ("exact", "auto", "rational", "modular") and _counts_of_integers(claim, n, r):
+        return 0.0      # counts of plain integers: a few integers at any size
     if need > limit:
         cid = getattr(claim, "id", str(claim))
         hint = ""

@@ -435,17 +435,11 @@ def auto_budget_reason(claim: Claim, size: Size) -> str:
 
 
 def _numbers_only(claim: Claim, size: Size, func: Callable | None) -> bool:
-    """Whether the claim's graph at this size has residuals that are numbers given outright (counts of
-    integers: :func:`stiefelsym.ir.passes.parameter_free`), so that its exact evaluation costs nothing at any
-    size and no symbolic budget applies; False where the graph is not at hand."""
-    from stiefelsym.ir import _compiled_graph as compile_claim
-    from stiefelsym.ir.passes import parameter_free
+    """Whether the claim's graph at this size is counts of integers (:func:`stiefelsym.ir.numbers_only`)."""
+    from stiefelsym.ir import numbers_only
     from stiefelsym.scene import REALIZATIONS
     cons = REALIZATIONS[claim.realization]
-    try:
-        return parameter_free(compile_claim(func or claim.func, size.n, size.r, (cons.name, cons.build)))
-    except Exception:   # noqa: BLE001 - a claim that does not trace here: the run itself says why
-        return False
+    return numbers_only(func or claim.func, size.n, size.r, (cons.name, cons.build))
 
 
 def _run_auto(claim: Claim, size: Size, seed: int, func: Callable | None,

@@ -69,3 +69,33 @@ def test_their_false_twins_fail_where_numpy_says():
     unexpected = [ln for ln in run.stdout.splitlines() if "UNEXPECTED" in ln and not ln.startswith("  ")]
     assert unexpected and all(ln.startswith("n71-jk-rank-r (3,2) modular: inconclusive") for ln in unexpected), \
         run.stdout[-3000:]
+
+
+REVIEW2 = Path(__file__).parent / "s71" / "review2"
+
+
+def test_counts_of_integers_run_at_any_size_whatever_the_cost_model_predicts():
+    """The second review: `dual-integrals-exceed-half-leaf` at (200,2) was refused up front ("predicted 2.04e+09
+    days ... try --method ball", a method that does not run on dimensions).  Counts of plain integers are evaluated
+    exactly at any size."""
+    run = cli("verify", "dual-integrals-exceed-half-leaf", "--size", "200,2", "--size", "200,1", "--method", "exact",
+              "--method", "auto", "--jobs", "1", "--no-report")
+    assert run.returncode == 0, run.stdout[-2000:] + run.stderr[-2000:]
+    assert "dual-integrals-exceed-half-leaf (200,1) exact: fails" in run.stdout
+    run = cli("verify", "pencil-rank-a1", "--size", "400,2", "--method", "exact", "--memory", "1000000",
+              "--no-report")
+    assert run.returncode == 2 and "--method ball" not in run.stderr and "--method float" not in run.stderr
+
+
+def test_an_empty_block_at_n_equals_r_gets_one_verdict_in_a_process():
+    """The second review: a check on the empty (n − r) × (n − r) block at n = r was proved by a first exact run and an
+    error (IndexError) by the next one in the same process (the straight-line program of the first)."""
+    run = subprocess.run([sys.executable, str(REVIEW2 / "empty_trace.py")], capture_output=True, text=True,
+                         timeout=600)
+    assert run.returncode == 0, run.stderr[-2000:]
+    rows = dict(line.split(" ", 1) for line in run.stdout.splitlines() if line.strip())
+    assert len(rows) == 6
+    for name, verdicts in rows.items():
+        words = verdicts.split()[-8:]
+        want = ("fails",) if name.startswith("f-") else ("proved", "checked", "numeric")
+        assert all(w.split(":")[1] in want for w in words), (name, verdicts)
