@@ -445,7 +445,8 @@ def _numbers_only(claim: Claim, size: Size, func: Callable | None) -> bool:
 def _run_auto(claim: Claim, size: Size, seed: int, func: Callable | None,
               exact: Callable[..., Result] | None = None, budget: float | None = None) -> Result:
     exact = exact or METHOD_RUNNERS["exact"]
-    if claim.exact_at(size.n, size.r) or _numbers_only(claim, size, func):
+    tried_exact = claim.exact_at(size.n, size.r) or _numbers_only(claim, size, func)
+    if tried_exact:
         res = exact(claim, size.n, size.r, seed, func)
         if res.verdict != "inconclusive":
             return res
@@ -460,6 +461,16 @@ def _run_auto(claim: Claim, size: Size, seed: int, func: Callable | None,
     res = METHOD_RUNNERS["modular"](claim, size.n, size.r, seed, func)
     res.message = "; ".join(m for m in (f"exact: {reason}" if reason else "", res.message) if m)
     res.seconds += spent
+    if res.verdict in ("inconclusive", "undecided") and not tried_exact:
+        # the points could not decide (a rank below the printed one at every point, say): the symbolic method
+        # is tried after all, beyond the budget, within the run's time and memory budgets
+        late = exact(claim, size.n, size.r, seed, func)
+        late.seconds += res.seconds
+        if late.verdict in ("proved", "fails"):
+            late.message = "; ".join(m for m in (f"modular: {res.verdict} ({res.message})", late.message) if m)
+            return late
+        res.message = f"{res.message}; exact, tried beyond the budget: {late.verdict} ({late.message})"
+        res.seconds = late.seconds
     return res
 
 

@@ -99,3 +99,27 @@ def test_an_empty_block_at_n_equals_r_gets_one_verdict_in_a_process():
         words = verdicts.split()[-8:]
         want = ("fails",) if name.startswith("f-") else ("proved", "checked", "numeric")
         assert all(w.split(":")[1] in want for w in words), (name, verdicts)
+
+
+HIDDEN2 = Path(__file__).parent / "s71" / "hidden2"
+
+
+def test_auto_tries_the_exact_method_where_the_points_cannot_decide():
+    """The second round of further statements: a rank printed one too large for a small linear matrix (the isotropy
+    in the proof of (ddim)) at (6,2), beyond the default symbolic budget: the modular method is inconclusive (a
+    lower rank at points is no witness), and `auto` gave up, where the exact method refutes it at once.  `auto` now
+    tries the exact method after an undecided or inconclusive modular run, within the run's budgets."""
+    run = cli("verify", "--claims", str(HIDDEN2 / "negatives.py"), "n71b-ddim-isotropy-trivial", "--size", "6,2",
+              "--method", "auto", "--jobs", "1", "--no-report")
+    assert run.returncode == 0, run.stdout[-2000:] + run.stderr[-2000:]
+    assert "n71b-ddim-isotropy-trivial (6,2) exact: fails" in run.stdout
+    assert "modular: inconclusive" in run.stdout
+
+
+def test_the_second_round_of_statements_and_twins_get_the_verdicts_numpy_gives():
+    run = cli("verify", "--claims", str(HIDDEN2 / "claims.py"), "--method", "modular", "--size", "3,2", "--size",
+              "4,2", "--jobs", "2", "--no-report")
+    assert run.returncode == 0, run.stdout[-3000:] + run.stderr[-3000:]
+    run = cli("verify", "--claims", str(HIDDEN2 / "negatives.py"), "--method", "auto", "--size", "3,2", "--size",
+              "4,1", "--size", "4,2", "--jobs", "2", "--no-report")
+    assert run.returncode == 0, run.stdout[-3000:] + run.stderr[-3000:]
