@@ -124,7 +124,7 @@ def double_neumann_dual_lax(s):
 
 @double_neumann_dual_lax.claim.correction(
     "(5) §10: (λI_n − A)⁻¹ in place of (I_n − λA)⁻¹ in the off-diagonal blocks",
-    exact_max_r={3: 3, 4: 3, 5: 2, 6: 1, 7: 1})
+    exact_max_r={3: 3, 4: 3, 5: 2, 6: 1, 7: 1}, blocks_of="𝓛(λ) in (5) §10")
 def double_neumann_dual_lax_corrected(s):
     return {"d𝓛(λ)/dt − [𝓛(λ), 𝓐(λ)]": double_lax_residual(s, lambda t: t.resolvent(t.lam))}
 
@@ -153,7 +153,7 @@ def double_neumann_dual_lax_extends_la3(s):
 
 @double_neumann_dual_lax_extends_la3.claim.correction(
     "(5) §10: (λI_n − A)⁻¹ in place of (I_n − λA)⁻¹ in the off-diagonal blocks",
-    exact_max_r={4: 4, 5: 5, 6: 6, 7: 7})
+    exact_max_r={4: 4, 5: 5, 6: 6, 7: 7}, blocks_of="𝓛(λ) in (5) §10")
 def double_neumann_dual_lax_extends_la3_corrected(s):
     return double_lax_at_the_diagonal(s, lambda t: t.resolvent(t.lam))
 
@@ -271,7 +271,7 @@ def coupled_flow_checks(s, Q_Pi):
     printed = flow_C_eq(s, z, s.kappa, Q_Pi)
     kept = derivative(s, lambda t, w: [w["X"].T @ w["X"], w["X"].T @ w["P"] + w["P"].T @ w["X"],
                                        w["Y"].T @ w["Y"], w["Y"].T @ w["Q"] + w["Q"].T @ w["Y"]], z, printed)
-    checks = {f"d{k}/dt along (6) §10 − d{k}/dt by (7) §10": derived[k] - printed[k] for k in ("X", "P", "Y", "Q")}
+    checks = {f"d{k}/dt along the flow of (6) §10 − d{k}/dt by (7) §10": derived[k] - printed[k] for k in ("X", "P", "Y", "Q")}
     checks.update({"d(XᵀX)/dt along (7) §10": kept[0], "d(XᵀP + PᵀX)/dt along (7) §10": kept[1],
                    "d(YᵀY)/dt along (7) §10": kept[2], "d(YᵀQ + QᵀY)/dt along (7) §10": kept[3]})
     return checks
@@ -622,7 +622,7 @@ def complex_neumann_dual_lax(s):
 
 @complex_neumann_dual_lax.claim.correction(
     "(15) §10: (λI_n − A)⁻¹ in place of (I_n − λA)⁻¹ in the off-diagonal blocks", exact_max_r={2: 2, 3: 1},
-    exact_corank={3: 0, 4: 0, 5: 0, 6: 0, 7: 0})
+    exact_corank={3: 0, 4: 0, 5: 0, 6: 0, 7: 0}, blocks_of="𝓛(λ) in (15) §10")
 def complex_neumann_dual_lax_corrected(s):
     return {"d𝓛(λ)/dt − [𝓛(λ), 𝓐(λ)]": complex_lax_residual(s, lambda t: t.resolvent(t.lam))}
 

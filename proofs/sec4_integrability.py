@@ -304,7 +304,8 @@ def manakov_dual_lax_pair(s):
 
 
 @manakov_dual_lax_pair.claim.correction("(9) §4: A + λI_n in place of (A + λI_n)^{-1}",
-                                        exact_max_r={3: 3, 4: 4, 5: 5, 6: 4, 7: 3})
+                                        exact_max_r={3: 3, 4: 4, 5: 5, 6: 4, 7: 3},
+                                        blocks_of="𝓐*_man(λ) in (9) §4")
 def manakov_dual_lax_pair_corrected(s):
     flow = s.dirac_flow(H_manakov_square)
     M = A_man_dual_at(s, s.X, s.P, s.A + s.lam * s.In)

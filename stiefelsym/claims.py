@@ -242,6 +242,9 @@ class Correction:
     #: (n, largest n - r) pairs at which ``auto`` tries the symbolic method first for the corrected
     #: statement (besides the claim's own exact_corank)
     exact_corank: tuple[tuple[int, int], ...] = ()
+    #: the block matrix of the paper whose blocks the change of the graph is made in, with its display
+    #: ("𝓐*_man(λ) in (9) §4"): the change names its blocks as that matrix's, not as the check's
+    blocks_of: str = ""
 
 
 #: the longest place of a misprint (a phrase, not a sentence: the erratum text says what is wrong)
@@ -388,11 +391,15 @@ class Claim:
                                  "without erratum= has none")
 
     def correction(self, description: str, changes: int = 1, expect: str | None = None,
-                   exact_max_r: dict[int, int] | None = None, exact_corank: dict[int, int] | None = None):
+                   exact_max_r: dict[int, int] | None = None, exact_corank: dict[int, int] | None = None,
+                   blocks_of: str = ""):
         """Decorator registering a candidate correction of this claim (errata search); ``expect``
         changes what the corrected statement asserts ("holds" or "nonzero"); ``exact_max_r``
         ({n: largest r}, n above the claim's exact_max_n) and ``exact_corank`` ({n: largest n - r}) widen
-        the symbolic budget of the corrected statement alone."""
+        the symbolic budget of the corrected statement alone; ``blocks_of`` names the block matrix (and its
+        display) whose blocks the change is made in."""
+        if not isinstance(blocks_of, str) or (blocks_of and not one_line(blocks_of, PLACE_CHARS)):
+            raise ValueError(f"claim {self.id}: blocks_of is a phrase of one line of at most {PLACE_CHARS} characters")
         if expect not in (None, "holds", "nonzero"):
             raise ValueError(f"a correction expects 'holds' or 'nonzero', not {expect!r}")
         # the description names the correction in every record, report and `check` (the variant of a record):
@@ -407,7 +414,7 @@ class Claim:
                             exact_corank=_widened(self.exact_corank, coranks))
 
         def deco(fn):
-            self.corrections.append(Correction(description, fn, changes, expect, pairs, coranks))
+            self.corrections.append(Correction(description, fn, changes, expect, pairs, coranks, blocks_of))
             return fn
         return deco
 

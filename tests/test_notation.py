@@ -122,13 +122,31 @@ def test_latex_of_every_output_of_the_catalog_is_balanced():
 # --------------------------------------------------------------------------- the diff
 
 def test_manakov_dual_lax_correction_in_the_papers_notation():
-    """The registered correction of (LA-MAN3): (A + λI)⁻¹ → A + λI in every block of 𝓐*_man(λ)."""
+    """The registered correction of (LA-MAN3): (A + λI)⁻¹ → A + λI in every block of 𝓐*_man(λ), which the
+    correction names (its blocks are 𝓐*_man's, not the residual's)."""
     c = load_catalog().get("manakov-dual-lax")
     changes = diff(_graph(c.func), _graph(c.corrections[0].func))
     assert describe(changes) == ("in d𝓛*_man/dt − [𝓛*_man, 𝓐*_man], blocks (1,1), (1,2), (2,1), (2,2): "
                                  "(A + λIₙ)⁻¹ → A + λIₙ")
     assert (changes[0].old_tex, changes[0].new_tex) == (r"(A + \lambda I_n)^{-1}", r"A + \lambda I_n")
-    assert graph_change(c, c.corrections[0].func, Size(3, 2)) == [changes[0].to_json()]
+    assert c.corrections[0].blocks_of == "𝓐*_man(λ) in (9) §4"
+    named = diff(_graph(c.func), _graph(c.corrections[0].func), blocks_of=c.corrections[0].blocks_of)
+    assert named[0].where == ("d𝓛*_man/dt − [𝓛*_man, 𝓐*_man], blocks (1,1), (1,2), (2,1), (2,2) "
+                              "of 𝓐*_man(λ) in (9) §4")
+    assert graph_change(c, c.corrections[0].func, Size(3, 2)) == [named[0].to_json()]
+
+
+@pytest.mark.parametrize("cid, display", [("double-neumann-dual-lax", "(5) §10"),
+                                          ("double-neumann-dual-lax-extends-la3", "(5) §10"),
+                                          ("complex-neumann-dual-lax", "(15) §10")])
+def test_flipped_resolvent_is_written_as_printed(cid, display):
+    """(λ⁻¹Iₙ − A)⁻¹/λ, the scene's form of the printed (Iₙ − λA)⁻¹, is written as the paper prints it, and the
+    correction changes the whole inverse, in the off-diagonal blocks of 𝓛(λ)."""
+    c = load_catalog().get(cid)
+    changes = graph_change(c, c.corrections[0].func, Size(3, 2))
+    assert [(ch["old"], ch["new"]) for ch in changes] == [("(Iₙ − λA)⁻¹", "(λIₙ − A)⁻¹")]
+    assert changes[0]["where"].endswith(f"blocks (1,2), (2,1) of 𝓛(λ) in {display}")
+    assert changes[0]["old_tex"] == r"(I_n - \lambda A)^{-1}"
 
 
 @pytest.mark.parametrize("fragment, expected", [

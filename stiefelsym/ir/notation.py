@@ -337,6 +337,10 @@ class Reader:
         if op in ("div", "rdiv"):
             p, q = (a[0], a[1]) if op == "div" else (a[1], a[0])
             d, n_ = x(q), x(p)
+            if op == "div" and self._is(p, "call", "resolvent") and d.kind == "atom" \
+                    and x(self.g.args[p.i][2][0]).key == post("inv", d).key:
+                # (λ⁻¹Iₙ − A)⁻¹/λ = (λ(λ⁻¹Iₙ − A))⁻¹ = (Iₙ − λA)⁻¹, as the paper prints it
+                return post("inv", add((1, atom(*LETTERS["In"])), (-1, prod(d, atom(*LETTERS["A"])))))
             if d.kind == "num" and d.data[0] != 0:
                 return prod(n_, num(1 / d.data[0]))
             if n_.kind == "num" and d.kind == "atom":        # c/λ = cλ⁻¹
@@ -774,6 +778,8 @@ def _diff_at(a: Expr, b: Expr, deep: bool, memo: dict) -> list[tuple]:
             changed = [i for i, (x, y) in enumerate(zip(a.kids, b.kids)) if x.key != y.key]
             for i in changed:
                 out += _diff(a.kids[i], b.kids[i], _where(a, i), deep, memo)
+            if a.kind == "post" and a.data == ("inv",) and len(out) == 1 and out[0][1:] == (a.kids[0], b.kids[0], None):
+                return [(ctx, a, b, None)]     # an inverse whose whole argument changed: (Iₙ − λA)⁻¹ → (λIₙ − A)⁻¹
             kid = a.kids[changed[0]] if changed else a
             if (a.kind == "prod" and len(changed) == 1 and a.size <= SMALL and len(out) == 1
                     and out[0][1].kind == out[0][2].kind == "atom" and out[0][3] is None
@@ -834,15 +840,18 @@ def _where(e: Expr, i: int) -> tuple:
     return ()
 
 
-def _place(name: str, blocks: list[tuple]) -> str:
+def _place(name: str, blocks: list[tuple], of: str = "") -> str:
+    """Where a change is: the check's name, and the blocks of a block matrix in it (``of``: that matrix, named
+    when every block is one of its own, not one in a block of another)."""
     if not blocks or blocks == [()]:
         return name
+    of = f" of {of}" if of and all(len(b) == 1 for b in blocks) else ""
     if len(blocks) == 1:
-        return f"{name}, block {' in '.join(reversed(blocks[0]))}"
+        return f"{name}, block {' in '.join(reversed(blocks[0]))}{of}"
     named = [' in '.join(reversed(b)) for b in blocks]
     if len(named) > MAX_BLOCKS:
-        return f"{name}, blocks {', '.join(named[:MAX_BLOCKS - 1])} and {len(named) - MAX_BLOCKS + 1} more"
-    return f"{name}, blocks {', '.join(named)}"
+        return f"{name}, blocks {', '.join(named[:MAX_BLOCKS - 1])} and {len(named) - MAX_BLOCKS + 1} more{of}"
+    return f"{name}, blocks {', '.join(named)}{of}"
 
 
 #: what a change says where a check was added or dropped, or where both sides print alike
@@ -851,11 +860,12 @@ NO_SUCH_CHECK, DROPPED, SAME_TEXT = "(no such check)", "(dropped)", "written the
 BIG_MATRIX = "matrix)"
 
 
-def diff(old: Graph, new: Graph, cap: int = 24) -> list[Change]:
+def diff(old: Graph, new: Graph, cap: int = 24, blocks_of: str = "") -> list[Change]:
     """The changes from ``old`` (the claim as printed) to ``new`` (a mutant or a correction traced at
     the same size), per output: the topmost changed subexpressions under an unchanged context, each
     with the expression it replaced.  Equal changes at several places of one output are one change
-    (with every block named).  Empty when the graphs compute the same outputs."""
+    (with every block named, as blocks of the matrix ``blocks_of`` when a correction names it).  Empty when
+    the graphs compute the same outputs."""
     ko, kn = node_keys(old), node_keys(new)
     ro = reader(old)
     rn = Reader(new, ro)
@@ -903,7 +913,7 @@ def diff(old: Graph, new: Graph, cap: int = 24) -> list[Change]:
         seen.add(k)
         if alt is not None and len(contexts[k]) == 1:
             x, y = alt
-        texts = [_place(nm, list(blocks)) for nm, blocks in grouped[k].items()]
+        texts = [_place(nm, list(blocks), blocks_of) for nm, blocks in grouped[k].items()]
         if len(texts) > 2 and set(grouped[k]) == set(names) and all(list(b) == [()] for b in grouped[k].values()):
             texts = [f"every check ({len(texts)})"]
         where = ("; " if any(", block" in p for p in texts) else ", ").join(texts)

@@ -330,10 +330,12 @@ def graph_change(claim: Claim, func: Callable, size: Size | None) -> list[dict[s
         return []
     if pair is None:
         return []
-    key = (pair[0].digest(), pair[1].digest())
+    # a registered correction may name the block matrix its change is made in
+    blocks_of = next((c.blocks_of for c in claim.corrections if c.func is func), "")
+    key = (pair[0].digest(), pair[1].digest(), blocks_of)
     text = _CHANGES.get(key)
     if text is None:
-        changes = diff(*pair)
+        changes = diff(*pair, blocks_of=blocks_of)
         text = _CHANGES[key] = [c.to_json() for c in changes] if changes else \
             [{"where": "", "old": "", "new": "", "old_tex": "", "new_tex": ""}]
         while len(_CHANGES) > CHANGES_CACHE_SIZE:
