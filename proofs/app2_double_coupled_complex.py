@@ -433,11 +433,13 @@ def coupled_dual_lax(s):
 @claim("coupled-perturbed-big-lax", paper=("so(n,n)", "C-neumann"), kind="lax", exact_max_n=SYMBOLIC_N_MAX,
        fails_at=lambda n, r: n >= 2,
        place="the big Lax pair (9) §10",
+       slips=("the references (10) and (11), for (9) §10 and for the matrices of Theorem 10.2, in the paragraph "
+              "after Theorem 10.2",),
        erratum="(9) §10 for the perturbed Hamiltonian H_κ = T_κ + tr(XᵀAY) − 2κ tr(XᵀP YᵀQ), every κ, along the "
                "flow of H_κ on T*V × T*V (with the multipliers of both constraint sets; at κ = 0 it is (7) §10 with "
                "YΠ in place of QΠ, the correction of coupled-neumann-flow): " + _BIG_ERRATUM
                + "  That paragraph also refers to the pair as (10) and to the matrices of Theorem 10.2 as (11); these "
-               "are the numbers of Theorem 10.2's Lax equation and of the condition (11) §10 defining W(n, r): the "
+               "are the numbers of Theorem 10.2's Lax equation and of the condition (11) §10 defining W_{n,r}: the "
                "pair's label sits in a row of its display that has no number, and that of the matrices in a display "
                "of no number.",
        statement=r"H_\kappa=T_\kappa+\tr(X^TAY)-2\kappa\tr(X^TP\,Y^TQ):\ " + _BIG + r"\ \text{for every }\kappa")
@@ -607,7 +609,7 @@ def complex_lax_residual(s, flipped):
        fails_at=lambda n, r: True,
        place="the off-diagonal blocks of 𝓛(λ) in (15) §10, Theorem 10.3",
        erratum="""Theorem 10.3: with (I_n − λA)^{-1} in the off-diagonal blocks of 𝓛(λ), as printed in (15) §10,
-       the Neumann system (13) §10 on W(n, r) does not imply d𝓛/dt = [𝓛, 𝓐].  It does with (λI_n − A)^{-1} in all
+       the Neumann system (13) §10 on W_{n,r} does not imply d𝓛/dt = [𝓛, 𝓐].  It does with (λI_n − A)^{-1} in all
        four blocks (the complex form of (2) §8): 𝓛(λ) = [[−ZᵀRŻ̄, −ZᵀRZ̄], [I_r + ŻᵀRŻ̄, ŻᵀRZ̄]],
        R = (λI_n − A)^{-1}.""",
        statement=r"\tfrac{d}{dt}\mathcal L(\lambda)=[\mathcal L(\lambda),\mathcal A(\lambda)],\ "

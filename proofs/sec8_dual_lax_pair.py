@@ -392,6 +392,7 @@ def I2l_general_line(s, l):
        sizes=admissible(n_max=5, where=lambda n, r: 2 * r <= n, condition="2r <= n"), exact_max_n=2, exact_max_r={3: 1, 4: 2, 5: 2, 6: 1, 7: 1},
        fails_at=lambda n, r: r >= 2,
        place="the general line 𝓘₂ₗ(λ) of (5) §8, read literally at l = 1",
+       slips=("the subscript Iᵣ₊₁ for Iₗ₊₁ in the second sum of the general line 𝓘₂ₗ(λ) of (5) §8",),
        erratum="""This erratum rests on a literal reading of the printed general line at l = 1: the line is
        schematic, it ends in “+ ⋯”, and it is read here as having no term beyond the two it shows when l = 1.  The
        general line of (5) §8, I_{2l} = ∑_{I_l} a/∏(λ − a_i) ∑_{J_l}

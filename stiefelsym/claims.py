@@ -314,6 +314,9 @@ class Claim:
     #: phrase such as "the proof of Theorem 7.1" or "the paragraph before Theorem 8.6" (the report says "In the proof
     #: of Theorem 7.1 (involves: ...)"); empty: the labelled statements themselves
     place: str = ""
+    #: of an erratum, further slips of the paper its text reports in passing (a wrong subscript, a wrong reference),
+    #: each a phrase; the headline counts them apart from the errors that make statements fail
+    slips: tuple[str, ...] = ()
     #: why the equivariance reduction is valid although the claim reads coordinates (stated in reports)
     equivariance: str = ""
     #: registered by the paper's catalog (whose stated reasons are reviewed with the code); a stated
@@ -389,6 +392,14 @@ class Claim:
             if not self.erratum.strip():
                 raise ValueError(f"claim {self.id}: place= says where the misprint of an erratum sits; a claim "
                                  "without erratum= has none")
+        if self.slips:
+            if not self.erratum.strip():
+                raise ValueError(f"claim {self.id}: slips= are reported in passing by an erratum's text; a claim "
+                                 "without erratum= has none")
+            for slip in self.slips:
+                problem = _place_problem(slip)
+                if problem:
+                    raise ValueError(f"claim {self.id}: slip {slip!r}: {problem.replace('a place', 'a slip')}")
 
     def correction(self, description: str, changes: int = 1, expect: str | None = None,
                    exact_max_r: dict[int, int] | None = None, exact_corank: dict[int, int] | None = None,
@@ -534,7 +545,7 @@ def claim(id: str, *, paper: str | Iterable[str] = (), kind: str, section: str |
           sizes: SizeSpec | Iterable[tuple[int, int] | Size] | None = None, statement: str = "", realization: str = "standard",
           expect: str = "holds", exact_max_n: int | None = None, exact_max_r: dict[int, int] | None = None,
           exact_corank: dict[int, int] | None = None, fails_at: Callable[[int, int], bool] | None = None, erratum: str = "", equivariance: str = "",
-          free_max_r: int = 0, place: str = ""):
+          free_max_r: int = 0, place: str = "", slips: Iterable[str] = ()):
     """Register a claim.  The function's docstring (one sentence) goes into the report.
 
     ``paper``: the paper's equation labels the claim checks; a user's own claim may have none.
@@ -552,7 +563,9 @@ def claim(id: str, *, paper: str | Iterable[str] = (), kind: str, section: str |
     exact method's proof at each size of the family (:mod:`stiefelsym.methods.specialise`).
     ``place``: of an erratum, where in the paper the misprint sits when that is not the statement its labels name (a
     proof, a remark, a paragraph or an unnumbered display beside a correct numbered result): a phrase such as "the
-    proof of Theorem 7.1", printed as "In the proof of Theorem 7.1 (involves: <labels>)"."""
+    proof of Theorem 7.1", printed as "In the proof of Theorem 7.1 (involves: <labels>)".
+    ``slips``: of an erratum, phrases naming further slips of the paper that its text reports in passing ("the
+    subscript I_{r+1} for I_{l+1} in (5) §8"), which make no statement fail."""
     if exact_max_n is None:
         exact_max_n = DIM_EXACT_MAX_N if kind == "dim" else IDENTITY_EXACT_MAX_N
 
@@ -569,6 +582,7 @@ def claim(id: str, *, paper: str | Iterable[str] = (), kind: str, section: str |
                   exact_corank=_pairs(exact_corank, "exact_corank"), source=fn.__module__,
                   fails_at=fails_at, erratum=" ".join(erratum.split()), equivariance=" ".join(equivariance.split()),
                   place=" ".join(place.split()) if isinstance(place, str) else place,
+                  slips=tuple(slips) if not isinstance(slips, str) else (slips,),
                   free_max_r=free_max_r, reviewed=_ACTIVE[-1].reviewed)
         _ACTIVE[-1].add(c)
         fn.claim = c

@@ -85,6 +85,8 @@ class Result:
     #: with the erratum, the claim's place of the misprint in the paper ("the proof of Theorem 7.1"), when that is not
     #: the statement its labels name; empty otherwise (and in a record written before the field existed)
     place: str = ""
+    #: with the erratum, the slips of the paper its text reports in passing (the claim's; empty otherwise)
+    slips: list[str] = field(default_factory=list)
     #: for the dimension-free method: LaTeX derivations (residual, rules, normal form)
     derivation: list[str] = field(default_factory=list)
     #: for the dimension-free method: the cofactor certificates (JSON; see stiefelsym.certificate_check)
@@ -377,7 +379,8 @@ _FIELD_TYPES: tuple[tuple[str, Callable[[Any], bool], str], ...] = (
     ("reductions", _strings, "a list of strings"), ("derivation", _strings, "a list of strings"),
     ("certificate", lambda x: type(x) is str, "a string"), ("rerun", lambda x: type(x) is str, "a string"),
     ("message", lambda x: type(x) is str, "a string"), ("erratum", lambda x: type(x) is str, "a string"),
-    ("place", lambda x: type(x) is str, "a string"), ("digest", lambda x: type(x) is str, "a string"),
+    ("place", lambda x: type(x) is str, "a string"), ("slips", _strings, "a list of strings"),
+    ("digest", lambda x: type(x) is str, "a string"),
     ("residual", lambda x: x is None or type(x) is str, "a string or null"),
     ("false_pass_bound", lambda x: x is None or (_number(x) and 0 <= x <= 1), "a probability or null"),
     ("checks", lambda x: type(x) is list and all(map(_check_outcome, x)), "a list of checks"),

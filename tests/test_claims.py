@@ -101,3 +101,23 @@ def test_the_runner_writes_the_place_into_an_erratums_record(catalog):
     assert failing.place == c.place and "Theorem 8.5" in failing.place
     holding = run_one(catalog.get("neumann-flow"), Size(2, 1), "modular", 0)
     assert holding.place == "" and holding.erratum == ""
+
+
+def test_slips_reported_in_passing_belong_to_an_erratum_and_are_phrases():
+    """A slip of the paper that an erratum's text reports in passing is a phrase as a place is (the headline lists
+    it); a claim without an erratum has none."""
+    with pytest.raises(ValueError, match="without erratum="):
+        _claim(slips=("the subscript I_{r+1} for I_{l+1}",))
+    with pytest.raises(ValueError, match="slip"):
+        _claim(fails_at=lambda n, r: True, erratum="h is r x r.", slips=("the reference (10).",))
+    c = _claim(fails_at=lambda n, r: True, erratum="h is r x r.", slips=("the subscript I_{r+1} for I_{l+1}",))
+    assert c.slips == ("the subscript I_{r+1} for I_{l+1}",)
+
+
+def test_the_catalog_declares_the_two_slips_its_errata_report_in_passing():
+    from stiefelsym.claims import load_catalog
+    reg = load_catalog()
+    slips = {c.id: c.slips for c in reg if c.slips}
+    assert set(slips) == {"2r-integrals-general-line", "coupled-perturbed-big-lax"}
+    assert "Iᵣ₊₁ for Iₗ₊₁" in slips["2r-integrals-general-line"][0]
+    assert "(10) and (11)" in slips["coupled-perturbed-big-lax"][0]

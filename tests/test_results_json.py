@@ -55,3 +55,19 @@ def test_a_records_place_of_a_misprint_is_a_string_and_optional(tmp_path):
     path = tmp_path / "old.json"
     path.write_text(json.dumps({"schema": SCHEMA_VERSION, "meta": {}, "results": [old]}))
     assert load_results(path)[1][0].place == ""
+
+
+def test_a_records_slips_are_strings_and_optional(tmp_path):
+    """A record of an erratum carries the slips its text reports in passing; a record written before the field
+    existed has none, and loads with none."""
+    from stiefelsym.results import load_results, record_problems
+    r = Result(claim="c", paper=["NEUMANN2"], section="7", kind="dim", title="t", statement="", n=2, r=1,
+               method="exact", verdict="fails", expected=True, seconds=0.1, seed=None, erratum="h is r x r.",
+               slips=["the subscript I_{r+1} for I_{l+1}"])
+    record = json.loads(dump_results([r], {}))["results"][0]
+    assert record["slips"] == ["the subscript I_{r+1} for I_{l+1}"] and record_problems(record) == []
+    assert any("slips" in p for p in record_problems(dict(record, slips="the subscript")))
+    old = {k: v for k, v in record.items() if k != "slips"}
+    path = tmp_path / "old.json"
+    path.write_text(json.dumps({"schema": SCHEMA_VERSION, "meta": {}, "results": [old]}))
+    assert load_results(path)[1][0].slips == []

@@ -1199,9 +1199,9 @@ def report(results_file: Path | None, report_dir: Path | None, claims_files: tup
                              "every record)")
     for r, record in zip(results, records):   # the flag "as expected", the erratum and its place are the claim's
         claim_of = registry.get(r.claim)
-        # a record written before records carried the place of its misprint reads as one with an empty place
-        # (the report gives it the claim's, below)
-        bound = {k: v for k, v in record.items() if k != "place" or v}
+        # a record written before records carried the place of its misprint (or its slips) reads as one with an
+        # empty place (no slips); the report gives it the claim's, below
+        bound = {k: v for k, v in record.items() if k not in ("place", "slips") or v}
         declared = declared_edits(bound, claim_of, getattr(_runner(), "expected_of", None))
         if declared:
             said = {"expected": f"it says the verdict {r.verdict!r} is {'' if r.expected else 'not '}the one the claim "
@@ -1209,11 +1209,13 @@ def report(results_file: Path | None, report_dir: Path | None, claims_files: tup
                     "erratum": "its erratum (what the report says is wrong in the paper) is not the one the claim "
                                "declares for this verdict",
                     "place": "its place of the misprint is not the one the claim declares for this verdict",
+                    "slips": "its slips reported in passing are not the ones the claim declares for this verdict",
                     "verdict": "its verdict is not the error a run records where the claim's erratum sizes cannot be "
                                "evaluated"}
             raise InputError(f"{source}: refused, record of {r.claim!r} {r.size} {r.method}: "
                              + "; ".join(said[k] for k in declared) + " (`stiefelsym check` re-checks every record)")
         r.place = claim_of.place if r.erratum else ""
+        r.slips = list(claim_of.slips) if r.erratum else []
     for r, record in zip(results, records):   # the witness a reader checks by hand is found again (the engine's own)
         if isinstance(r.witness, dict) and "small" in r.witness:
             claim_of, func, why = record_graph(record, registry.get(r.claim))

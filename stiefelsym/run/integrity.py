@@ -131,6 +131,8 @@ def declared_edits(record: dict, claim: Any, policy: Callable | None = None) -> 
            != _canonical(own[k])]
     if "place" in record and (record.get("place") or "") != own["place"]:
         out.append("place")
+    if "slips" in record and list(record.get("slips") or []) != own["slips"]:
+        out.append("slips")
     if own.get("verdict") is not None and record.get("verdict") != own["verdict"]:
         out.append("verdict")
     return out

@@ -497,7 +497,7 @@ def expected_of(claim: Claim, method: str, verdict: str, n: int | None, r: int |
 
 
 #: what :func:`_finish` records of a run whose claim's erratum sizes (fails_at) raised: an error, not expected, no erratum
-FAILS_AT_BROKE = {"verdict": "error", "expected": False, "erratum": "", "place": ""}
+FAILS_AT_BROKE = {"verdict": "error", "expected": False, "erratum": "", "place": "", "slips": []}
 
 
 def declared_fields(claim: Claim, method: str, verdict: str, n: int | None, r: int | None,
@@ -520,7 +520,7 @@ def _flags(claim: Claim, expected: bool, erratum: bool) -> dict[str, Any]:
     """A record's flags from the policy's answer: whether expected, and at a documented erratum its text and the
     place of its misprint."""
     return {"expected": expected, "erratum": claim.erratum if erratum else "",
-            "place": claim.place if erratum else ""}
+            "place": claim.place if erratum else "", "slips": list(claim.slips) if erratum else []}
 
 
 def _erratum_at_a_stated_size(claim: Claim) -> bool:
@@ -548,6 +548,7 @@ def _finish(res: Result, claim: Claim, variant: str | None, hard: str | None = N
         res.expected, erratum = False, False
     flags = _flags(claim, res.expected, erratum)
     res.expected, res.erratum, res.place = flags["expected"], flags["erratum"], flags["place"]
+    res.slips = flags["slips"]
     res.rerun = rerun_command(res, hard)
     return res
 
