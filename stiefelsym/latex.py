@@ -96,10 +96,36 @@ def one_line(text: Any, limit: int) -> bool:
     return type(text) is str and 0 < len(text) <= limit and not re.search(r"[\x00-\x1f\x7f]", text)
 
 
+#: a short relation of running text, "r = 2", "n ≤ 2r + 1", "(n − r = 1": terms of a few characters joined by spaced
+#: operators, one of them a relation; TeX would break the line at its spaces
+_TERM = r"[^\s,;:.]{1,12}"
+_RELATION_CHAIN = re.compile(rf"(?<![^\s(\[]){_TERM}(?: [=≤≥<>≠+−×∈] {_TERM}){{1,4}}(?=[\s,;:.]|$)")
+_RELATIONS = "=≤≥<>≠∈"
+#: the longest relation kept on one line whole; in a longer one only the relation signs are bound to their sides
+SHORT_RELATION = 20
+NBSP = "\u00a0"
+
+
+def _bound(m: re.Match) -> str:
+    text = m.group(0)
+    if not any(f" {op} " in text for op in _RELATIONS):
+        return text
+    if len(text) <= SHORT_RELATION:
+        return text.replace(" ", NBSP)
+    return re.sub(rf" ([{_RELATIONS}]) ", NBSP + r"\1" + NBSP, text)
+
+
+def bind_relations(text: str) -> str:
+    """Short relations of running text with no-break spaces (a tie in LaTeX), so that a line never breaks inside
+    "r = 2" or "n ≤ 2r + 1"; in a longer chain only around its relation signs."""
+    return _RELATION_CHAIN.sub(_bound, text)
+
+
 def tex_escape(text: Any) -> str:
-    """Plain text to LaTeX text mode: specials escaped, Unicode mapped to LaTeX."""
+    """Plain text to LaTeX text mode: specials escaped, Unicode mapped to LaTeX; a short relation kept on one line
+    (:func:`bind_relations`)."""
     out = []
-    for kind, piece in _script_runs(str(text)):
+    for kind, piece in _script_runs(bind_relations(str(text))):
         if kind == "sup":
             out.append(r"\ensuremath{^{" + "".join(_SUP[c] for c in piece) + "}}")
         elif kind == "sub":
@@ -108,6 +134,8 @@ def tex_escape(text: Any) -> str:
             out.append(_TEX_SPECIAL[piece])
         elif piece in "\n\t\r":
             out.append(" ")
+        elif piece == NBSP:
+            out.append(r"\nobreakspace{}")
         elif ord(piece) < 32 or ord(piece) == 127:     # a control character: named, never handed to TeX
             out.append(r"\texttt{[U+%04X]}" % ord(piece))
         elif ord(piece) < 128:
@@ -593,7 +621,8 @@ def _wedges(token: str) -> str:
 
 
 def _ascii_scripts(text: str) -> str:
-    text = math_idioms(text, tex=True)
+    # the relations bound before the text is cut at its scripts: "P_r = MX_r" is one relation
+    text = bind_relations(math_idioms(text, tex=True))
     text = re.sub(r"(?<=\s)([<>])=(?=\s)", lambda m: "≤" if m.group(1) == "<" else "≥", text.replace(" ^ ", " ∧ "))
     text = re.sub(r"\S+", lambda m: _wedges(m.group(0)), text)
     out, at = [], 0

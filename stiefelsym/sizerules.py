@@ -8,6 +8,8 @@ the report says so.
 """
 from __future__ import annotations
 
+import re
+
 from itertools import combinations
 from typing import Callable, Iterable, NamedTuple
 
@@ -100,6 +102,14 @@ def fails_holds_text(fails: Iterable[Size], holds: Iterable[Size], limit: int = 
     cond = rule(bad, good)
     if cond is None:
         return f"fails at {sizes_text(bad)}; holds as printed at {sizes_text(good)}"
+    held = _range(rule(good, bad))
     other = (f"holds as printed at {sizes_text(good)}" if len(good) <= limit
-             else f"holds as printed at the other {len(good)} computed sizes")
+             else f"holds as printed at the other {len(good)} computed sizes" + (f", those with {held}" if held else ""))
     return f"{_some(bad, f'fails at every computed size with {cond}', limit)}; {other}"
+
+
+def _range(cond: str | None) -> str:
+    """A condition of :func:`rule` that bounds r on both sides, "r ≥ 2 and r < n", as one range, "2 ≤ r ≤ n − 1";
+    "" for any other (the sizes where a statement holds are named by a range alone)."""
+    m = re.fullmatch(r"r ≥ (\d+) and r < n|r < n and r ≥ (\d+)", cond or "")
+    return f"{m.group(1) or m.group(2)} ≤ r ≤ n − 1" if m else ""

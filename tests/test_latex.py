@@ -100,7 +100,7 @@ def test_the_registered_words_set_a_spaced_inequality_as_one():
     <a, b> (no = after <) and <= inside a word stay as they are."""
     from stiefelsym.latex import tex_words
     tex = tex_words("regular iff n <= 2r + 2; rank >= 5; <axial(P1), P2>; a<=b")
-    assert r"n \ensuremath{\le} 2r" in tex and r"rank \ensuremath{\ge} 5" in tex
+    assert r"n\nobreakspace{}\ensuremath{\le}\nobreakspace{}2r" in tex and r"rank\nobreakspace{}\ensuremath{\ge}\nobreakspace{}5" in tex
     assert r"\ensuremath{<}axial" in tex and r"a\ensuremath{<}=b" in tex
 
 
@@ -163,9 +163,9 @@ def test_the_ascii_idioms_of_the_catalog_s_prose_are_set_in_the_paper_s_notation
     assert md == "𝓛*_neum(λ) is 2r × 2r; i ≠ j; 1≤i≤r; Θ(X₀, P₀); (n + r) × 2r; a<=b; the point x on x = 0"
     tex = tex_words(text)
     assert r"\ensuremath{\mathcal{L}}*\ensuremath{_{neum}}" in tex and r"\_neum" not in tex
-    assert r"2r \ensuremath{\times} 2r" in tex and r"i \ensuremath{\neq} j" in tex
+    assert r"2r \ensuremath{\times} 2r" in tex and r"i\nobreakspace{}\ensuremath{\neq}\nobreakspace{}j" in tex
     assert r"1\ensuremath{\le}i\ensuremath{\le}r" in tex and r"\ensuremath{\Theta}(X\ensuremath{_{0}}" in tex
-    assert r"the point x on x = 0" in tex
+    assert r"the point x on x\nobreakspace{}=\nobreakspace{}0" in tex
 
 
 def test_subscripts_of_lie_algebras_and_index_pairs_and_cross_products_in_the_pdf():
@@ -186,7 +186,7 @@ def test_a_named_subscript_with_a_second_index_is_set_as_the_paper_sets_it():
     writes H_{neum_0} and H_{neum,\\kappa}: so does the PDF; a comma before a space stays punctuation, and a name
     that only begins with neum (H_neumann) is left alone."""
     from stiefelsym.latex import tex_words, unicode_words
-    assert tex_words("H_neum_0 = H o Theta").startswith(r"H\ensuremath{_{neum\ensuremath{_{0}}}} = H o ")
+    assert tex_words("H_neum_0 = H o Theta").startswith(r"H\ensuremath{_{neum\ensuremath{_{0}}}}\nobreakspace{}=\nobreakspace{}H o ")
     assert tex_words("the flow of H_neum,kappa.") == r"the flow of H\ensuremath{_{neum,\ensuremath{\kappa}}}."
     assert tex_words("(H_neum,0)") == r"(H\ensuremath{_{neum,0}})"
     assert tex_words("H_neum,−½ and H_man, the") == \
@@ -197,3 +197,21 @@ def test_a_named_subscript_with_a_second_index_is_set_as_the_paper_sets_it():
     for text in ("H_neum_0", "H_neum₀", "H_neum,0", "H_neum,κ"):
         assert r"\_" not in tex_words(text)
     assert unicode_words("H_neum,0 and H_neum,κ") == "H_neum,0 and H_neum,κ"     # the Markdown keeps them
+
+
+def test_a_short_relation_of_running_text_is_kept_on_one_line():
+    """TeX breaks a line at a space: "r = 2", "n ≤ 2r + 1" and "(n − r = 1" are bound by no-break spaces; in a longer
+    chain only the relation signs are bound to their sides; a sum with no relation is left as it is."""
+    from stiefelsym.latex import NBSP, bind_relations, tex_escape
+    assert bind_relations("12 at r = 2, and (n − r = 1, r = 3)") == \
+        f"12 at r{NBSP}={NBSP}2, and (n{NBSP}−{NBSP}r{NBSP}={NBSP}1, r{NBSP}={NBSP}3)"
+    assert bind_relations("regular iff n ≤ 2r + 1.") == f"regular iff n{NBSP}≤{NBSP}2r{NBSP}+{NBSP}1."
+    assert bind_relations("a chain = 3 + 4 + 5 + 6") == f"a chain{NBSP}={NBSP}3 + 4 + 5 + 6"
+    assert bind_relations("2r + 1 and n + r") == "2r + 1 and n + r"
+    assert tex_escape("r = 2") == r"r\nobreakspace{}=\nobreakspace{}2"
+
+
+def test_a_rerun_command_breaks_before_an_option_not_after_it():
+    from stiefelsym.reports.report import _tt
+    tt = _tt("stiefelsym verify x --method exact --seed 0 --size 2,2 --size 3,1")
+    assert r"--size\nobreakspace{}2,2 --size\nobreakspace{}3,1" in tt and r"--method\nobreakspace{}exact" in tt

@@ -361,9 +361,10 @@ def test_rank_and_count_details_are_shown_from_the_most_rigorous_method():
         ("rank ad_Phi", "(3,1)", "rational"), ("rank ad_Phi", "(4,1)", "exact"), ("regular", "(4,1)", "exact")]
     md = render_markdown(_rank_results())
     assert "Rank and count statements" in md
-    assert "| rank ad\\_Phi | (4,1) | exact | as printed | rank over the function field Q(chart parameters) = 5" in md
+    # the engine's ASCII in the paper's notation: ℚ for Q, ≥ for >=
+    assert "| rank ad\\_Phi | (4,1) | exact | as printed | rank over the function field ℚ(chart parameters) = 5" in md
     assert "| regular | (4,1) | exact | **mismatch** | the generic orbit is regular (1) or singular (0): computed 1, printed 0 |" in md
-    assert "rank 5 at this exact point: generic rank \\>= 5 (certain)" in md
+    assert "rank 5 at this exact point: generic rank ≥ 5 (certain)" in md
     tex = render_latex(_rank_results(), detail=True)
     assert r"regular, (4,1) exact: \textbf{mismatch}. the generic orbit is regular (1) or singular (0)" in tex
 
@@ -487,7 +488,7 @@ def test_a_statement_that_something_does_not_hold_found_identically_zero_says_so
     for doc in (md, tex):
         assert "computed value below" not in doc
         assert "not identically zero, and exact computation finds it identically zero: the residual vanishes" in doc
-    assert r"What is wrong: It holds for r \ensuremath{\ge} 2." in tex
+    assert r"What is wrong: It holds for r\nobreakspace{}\ensuremath{\ge}\nobreakspace{}2." in tex
 
 
 def test_the_headline_counts_the_claims_proved_at_particular_r_by_their_r():
@@ -728,7 +729,7 @@ def test_a_list_of_reruns_shows_its_last_item_rather_than_one_more():
     four = [result("neumann-lax", n, 1, "exact", "fails", witness=WITNESS, residual="(1, 2) = 3/7",
                    rerun=f"stiefelsym verify neumann-lax --size {n},1 --method exact") for n in (2, 3, 4, 5)]
     tex = render_latex(four)          # the referee's document lists two more failing runs: here all three
-    assert "more (in results" not in tex and r"--size 5,1" in tex
+    assert "more (in results" not in tex and r"--size\nobreakspace{}5,1" in tex
     # commands that are not joined (here each at a hard point) are listed one by one, up to the limit
     hard = [result("neumann-lax", n, 1, "exact", "fails", witness=WITNESS,
                    rerun=f"stiefelsym verify neumann-lax --size {n},1 --hard far-chart") for n in (2, 3, 4, 5, 6)]
@@ -910,3 +911,28 @@ def test_report_refuses_a_count_witness_edited_together_with_its_check(tmp_path)
     path.write_text(json.dumps(data))
     out = CliRunner().invoke(main, ["report", "--results", str(path)])
     assert out.exit_code == 2 and "its witness to check by hand is not the one the engine finds" in out.output
+
+
+def test_the_headline_counts_slips_reported_in_passing_and_the_errata_with_a_correction():
+    """The slips an erratum reports in passing are said after the count of errors; where not every erratum has a
+    registered correction, the headline says how many have one ("23 of the 24")."""
+    from stiefelsym.reports.report import group_by_claim, headline
+    rs = [result("neumann-lax", 2, 1, "exact", "fails", witness=WITNESS, residual="(1, 2) = 3/7", expected=True,
+                 erratum="x", slips=["the subscript Iᵣ₊₁ for Iₗ₊₁ in (5) §8"]),
+          result("neumann-lax", 2, 1, "exact", "proved", variant="(5) §8: I₂ in place of I₁"),
+          result("prep", 2, 1, "exact", "fails", witness=WITNESS, residual="(1, 2) = 3/7", expected=True,
+                 erratum="y")]
+    text, errata = headline(group_by_claim(rs))
+    assert len(errata) == 2 and "where a correction is registered (1 of the 2) it was verified" in text
+    assert text.endswith("Besides these errors, 1 slip of the paper that makes no statement fail is reported in "
+                         "passing: the subscript Iᵣ₊₁ for Iₗ₊₁ in (5) §8 (see neumann-lax).")
+
+
+def test_a_witness_on_the_complex_stiefel_variety_is_said_in_the_papers_notation():
+    """A point of TW_{n,r} is said as the paper writes it (Z̄ᵀZ = Iᵣ, V = Ż), and its residual as realified."""
+    from stiefelsym.reports.report import _realified, _witness_place
+    w = {"letters": {"Re Z": [[1]], "Im Z": [[0]], "Re V": [[0]], "Im V": [[1]]}}
+    md = _witness_place(w, ["Z*Z = I", "Z*V + V*Z = 0"], False)
+    assert "TW\\_{n,r}, V = Ż" in md and "(Z̄ᵀZ = Iᵣ, Z̄ᵀV + V̄ᵀZ = 0 hold exactly)" in md and "Z*" not in md
+    assert r"$\bar Z^TZ=I_r$" in _witness_place(w, ["Z*Z = I"], True)
+    assert _realified(w).startswith(" realified") and _realified({"letters": {"X": [[1]]}}) == ""

@@ -230,6 +230,11 @@ class ClaimResults:
         return [r for r in self.printed if r.verdict == "fails"]
 
     @property
+    def slips(self) -> list[str]:
+        """The further slips of the paper the erratum's text reports in passing, as its records give them."""
+        return next((list(r.slips) for r in self.failures if r.slips), [])
+
+    @property
     def place(self) -> str:
         """Where in the paper the misprint sits, as the erratum's records give it ("the proof of Theorem 7.1"); ""
         when it is the statement the labels name."""
@@ -395,9 +400,32 @@ CHECK_STATUS_WORDS = {"rank": "rank as printed", "rank-mismatch": "rank not as p
 
 def check_line(ch: Any) -> str:
     """One check of a failing run: its name as mathematics, its status in words, its detail (the printed value
-    said as the witness sentence says it, :func:`printed_value_words`)."""
+    said as the witness sentence says it, :func:`printed_value_words`, in the paper's notation, :func:`engine_words`)."""
     return (f"check {unicode_name(ch.name)}: {CHECK_STATUS_WORDS.get(ch.status, ch.status)}"
-            + (f", {printed_value_words(ch.detail)}" if ch.detail else ""))
+            + (f", {engine_words(printed_value_words(ch.detail))}" if ch.detail else ""))
+
+
+#: the engine's ASCII for mathematics in its own words (a chart, a reduction, a rank's matrix): (pattern,
+#: replacement), in this order; the scripts (X^T, (I + S)^{-1}) are set by unicode_words and tex_words after
+_ENGINE_IDIOMS = (
+    (re.compile(r"(?<![\w.])(\d+)x(\d+)(?![\w.])"), r"\1 × \2"),             # a matrix's size 15x15
+    (re.compile(r"\bover Q\b"), "over ℚ"),
+    (re.compile(r"\bQ\((?=chart parameters\))"), "ℚ("),                          # the field ℚ(chart parameters)
+    (re.compile(r"\((\w)-(\w)\)"), r"(\1 − \2)"),                               # (n-r) as (n − r)
+    (re.compile(r"(?:(?<=[\[(])|(?<=[,;] ))-(?=\w)"), "−"),                                  # a leading minus: −2K, (−1, …)
+    (re.compile(r"(?<![\w^])R\^(n|r)\b"), r"ℝ^\1"),                          # the spaces ℝⁿ, ℝʳ
+    (re.compile(r"\b(T\*)?([VW])\(([nr]|\d+), ([nr]|\d+)\)"), r"\1\2_{\3,\4}"),   # V_{n,r}, T*V_{n,n}, W_{n,r}
+    (re.compile(r"(?<=[\w)\]]) - (?=[\w(\[])"), " − "),                         # a minus sign: n − r, I − S
+)
+
+
+def engine_words(text: str) -> str:
+    """The engine's words (how a verdict was obtained, what a rank or count check computed) with its ASCII for
+    mathematics in the paper's notation: a size 15x15 as 15 × 15, Q as ℚ, R^n as ℝ^n, V(n, r) as V_{n,r}, a spaced
+    hyphen between two terms as a minus sign; to be set by :func:`unicode_words` or :func:`tex_words`."""
+    for pattern, repl in _ENGINE_IDIOMS:
+        text = pattern.sub(repl, text)
+    return text
 
 
 #: the value a Count or Rank check's detail quotes of the statement: "...: 2 (paper: 1)", "... (paper: 4)",
@@ -837,11 +865,11 @@ def _md_claim(c: ClaimResults) -> list[str]:
         out += ["Rank and count statements (at each size, from the most rigorous method that ran):", ""]
         out += _md_table(["check", "size (n,r)", "method", "outcome", "what was computed"],
                          [[_md_cell(name), _md_cell(size), m, st if st == "as printed" else f"**{st}**",
-                           _md_cell(detail)] for name, size, m, st, detail in dims], "lllll")
+                           _md_cell(unicode_words(engine_words(detail)))] for name, size, m, st, detail in dims], "lllll")
     how = c.how_obtained()
     if how:
         out += ["How the verdicts were obtained:", ""]
-        out += [f"- {m}: {_md_escape(text)}" for m, text in how] + [""]
+        out += [f"- {m}: {_md_escape(unicode_words(engine_words(text)))}" for m, text in how] + [""]
     if any(r.derivation and r.verdict == "proved" for r in c.printed):
         out += ["The dimension-free derivation (residual, rules applied, normal form) is in "
                 "`verification-runs.tex`.", ""]
@@ -1043,6 +1071,34 @@ def _point_witness(w: dict[str, Any]) -> tuple[list[str], list[str], str]:
     return on, parts, q_tex(Fraction(w["value"]))
 
 
+#: the complex Stiefel variety's constraints (11) §10 and their derivative as the paper writes them, for the keys
+#: of a witness's check (computed realified: they hold iff their realified forms do)
+_COMPLEX_ON = {"Z*Z = I": ("Z̄ᵀZ = Iᵣ", r"$\bar Z^TZ=I_r$"), "Z*V + V*Z = 0": ("Z̄ᵀV + V̄ᵀZ = 0", r"$\bar Z^TV+\bar V^TZ=0$")}
+
+
+def _witness_place(w: dict[str, Any], on: list[str], tex: bool) -> str:
+    """Where a witness point lies: ", a point of T*V (XᵀX = I, … hold exactly)", or for the complex Stiefel variety
+    ", a point (Z, V) of TW_{n,r}, V = Ż, …" (Z̄ᵀ as the paper writes it); "" when no constraint was checked."""
+    if not on:
+        return ""
+    if "Re Z" in w.get("letters", {}) and all(k in _COMPLEX_ON for k in on):
+        held = ", ".join(_COMPLEX_ON[k][tex] for k in on)
+        if tex:
+            return (r", a point $(Z,V)$ of $TW_{n,r}$, $V=\dot Z$, given by the real and imaginary parts of $Z$ and $V$ ("
+                    + held + " hold exactly)")
+        return (", a point (Z, V) of TW\\_{n,r}, V = Ż, given by the real and imaginary parts of Z and V ("
+                + held + " hold exactly)")
+    if tex:
+        return tex_escape(f", a point of T*V ({', '.join(on)} hold exactly)")
+    return rf", a point of T\*V ({', '.join(_md_escape(k) for k in on)} hold exactly)"
+
+
+def _realified(w: dict[str, Any]) -> str:
+    """What the residual of a point of TW_{n,r} is: the complex residual realified, as the engine computes it."""
+    return (" realified (each r × r block B written as the real block matrix (Re B, −Im B; Im B, Re B)),"
+            if "Re Z" in w.get("letters", {}) else "")
+
+
 def _md_small_witness(c: ClaimResults) -> list[str]:
     found = small_witness_of(c)
     if found is None:
@@ -1053,10 +1109,9 @@ def _md_small_witness(c: ClaimResults) -> list[str]:
                                                             "(Python with sympy, no stiefelsym) recomputes it from "
                                                             "the paper's definitions." if _has_script(c) else ""), ""]
     on, parts, value = _point_witness(w)
-    out = [f"**A witness to check by hand** at (n, r) = {r.size}"
-           + (rf", a point of T\*V ({', '.join(_md_escape(k) for k in on)} hold exactly)" if on else "") + ":", ""]
+    out = [f"**A witness to check by hand** at (n, r) = {r.size}" + _witness_place(w, on, False) + ":", ""]
     out += ["$$" + r",\quad ".join(parts) + "$$", ""]
-    out += [f"There the residual {_md_escape(_entry_words(w['entry']))} is ${value} \\neq 0$."
+    out += [f"There the residual {_md_escape(_entry_words(w['entry'], _realified(w)))} is ${value} \\neq 0$."
             + (f" A self-contained script (Python with sympy, no stiefelsym) rebuilds this point and evaluates "
                f"the printed formula and the correction: `{WITNESS_SCRIPT_DIR}/{c.id}.py`." if _has_script(c) else ""),
             ""]
@@ -1075,14 +1130,13 @@ def _tex_small_witness(c: ClaimResults) -> list[str]:
                     + tex_escape(" (Python with sympy, no stiefelsym) recomputes it from the paper's definitions."))
                    if _has_script(c) else ""), ""]
     on, parts, value = _point_witness(w)
-    out = [r"\textbf{A witness to check by hand} " + tex_escape(
-        f"at (n, r) = {r.size}" + (f", a point of T*V ({', '.join(on)} hold exactly)" if on else "") + ":")]
+    out = [r"\textbf{A witness to check by hand} " + tex_escape(f"at (n, r) = {r.size}") + _witness_place(w, on, True) + ":"]
     rows = [r",\quad ".join(parts[k:k + 3]) for k in range(0, len(parts), 3)]
     # three letters a line, the whole shrunk to the line's width when wider; the rows of a matrix of fractions
     # spaced so that the fractions do not touch
     out += [r"\begin{center}\resizebox{\ifdim\width>\linewidth\linewidth\else\width\fi}{!}{$\displaystyle"
             r"\renewcommand{\arraystretch}{1.4}\begin{gathered}" + r"\\[2pt]".join(rows) + r"\end{gathered}$}\end{center}"]
-    out += [tex_words(f"There the residual {_entry_words(w['entry'])} is ") + f"${value} \\neq 0$."
+    out += [tex_words(f"There the residual {_entry_words(w['entry'], _realified(w))} is ") + f"${value} \\neq 0$."
             + ((tex_escape(" A self-contained script (Python with sympy, no stiefelsym) rebuilds this point and "
                            "evaluates the printed formula and the correction: ")
                 + _tt(f"{WITNESS_SCRIPT_DIR}/{c.id}.py") + ".") if _has_script(c) else ""), ""]
@@ -1119,9 +1173,12 @@ def count_kernel(cid: str) -> tuple[str, int, str] | None:
     return str(quantity), int(unknowns), str(system)
 
 
-def _entry_words(entry: str) -> str:
-    """"d𝓛(λ)/dt − [𝓛(λ), 𝓐(λ)], entry (1,1)," for a matrix residual; the name alone for a scalar one."""
+def _entry_words(entry: str, realified: str = "") -> str:
+    """"d𝓛(λ)/dt − [𝓛(λ), 𝓐(λ)], entry (1,1)," for a matrix residual; the name alone for a scalar one; with
+    ``realified`` (how the matrix was made real) said after the name."""
     text = unicode_name(entry)
+    if realified and ", entry (" in text:
+        text = text.replace(", entry (", "," + realified + " entry (", 1)
     return text + "," if "entry (" in text else text
 
 
@@ -1251,7 +1308,9 @@ def _tex_verdict(r: Result) -> str:
 def _tt(text: Any) -> str:
     """Monospace text that may break at spaces, after commas (not between two numbers) and inside long runs of
     digits."""
-    # (not inside a pair of numbers: "--size 2,2" stays whole, for copying)
+    # (not inside a pair of numbers: "--size 2,2" stays whole, for copying; an option stays with its value, the
+    # line breaks before "--size", never after it)
+    text = re.sub(r"(?<!\S)(--[a-z][a-z-]*) (?=[^-\s])", "\\1\u00a0", str(text))
     body = re.sub(r",(?![0-9])", r",\\allowbreak{}", tex_escape(text)).replace(";", r";\allowbreak{}")
     body = re.sub(r"[0-9/]{16,}", lambda m: r"\allowbreak{}".join(m.group(0)[i:i + 12]
                                                                    for i in range(0, len(m.group(0)), 8)), body)
@@ -1312,8 +1371,21 @@ def headline(claims: list[ClaimResults], paper: bool = True) -> tuple[str, list[
             + (f"{len(nowhere)} {'was' if len(nowhere) == 1 else 'were'} decided at no size ({unnamed}), "
                if nowhere else "")
             + f"and {len(errata)} {'fails' if len(errata) == 1 else 'fail'} as printed{_misprint_words(errata) if paper else ''}"
-            f"{_errata_words(errata)} ({_corrections_proved_words(corrected_free, errata if paper else [])}).")
+            f"{_errata_words(errata)} ({_corrections_proved_words(corrected_free, errata if paper else [])})."
+            + (_slips_words(errata) if paper else ""))
     return text, errata
+
+
+def _slips_words(errata: list[ClaimResults]) -> str:
+    """The slips of the paper that the errata's texts report in passing and that make no statement fail, as a
+    sentence after the headline's count of errors ("" when there is none)."""
+    slips = [(c, s) for c in errata for s in c.slips]
+    if not slips:
+        return ""
+    one = len(slips) == 1
+    return (f" Besides these errors, {len(slips)} {'slip' if one else 'slips'} of the paper that "
+            f"{'makes' if one else 'make'} no statement fail {'is' if one else 'are'} reported in passing: "
+            + "; ".join(f"{s} (see {c.id})" for c, s in slips) + ".")
 
 
 def _corrections_proved_words(corrected: list[ClaimResults], errata: Sequence[ClaimResults]) -> str:
@@ -1331,7 +1403,8 @@ def _corrections_proved_words(corrected: list[ClaimResults], errata: Sequence[Cl
 
 #: how a statement failed, in the headline's words (see :func:`_failure_kind`)
 FAILURE_KINDS = {"point": "with an exact witness point (a nonzero residual there)",
-                 "number": "with a number computed exactly against the printed one (a size, dimension, rank or count)",
+                 "number": "with a number computed exactly against the printed one (a size, dimension, rank or count, "
+                           "or a truth value coded 1/0)",
                  "identically": "said not to vanish and proved to vanish identically",
                  "points": "said not to vanish and found zero at every random point drawn",
                  "bare": "with no witness point"}
@@ -1393,7 +1466,9 @@ def _errata_words(errata: list[ClaimResults]) -> str:
         words = ": " + ", ".join(f"{len(by_kind[k])} {_kind_words(k, by_kind[k])}" for k in FAILURE_KINDS
                                  if k in by_kind)
     if corrected and verified == len(corrected):
-        words += ", and where a correction is registered it was verified at every size computed"
+        words += (", and where a correction is registered"
+                  + (f" ({len(corrected)} of the {len(errata)})" if len(corrected) < len(errata) else "")
+                  + " it was verified at every size computed")
     elif corrected:
         words += (f"; of the {len(corrected)} with a registered correction, {verified} "
                   f"{'has' if verified == 1 else 'have'} one verified at every size computed")
@@ -1621,12 +1696,12 @@ def _tex_claim(c: ClaimResults) -> list[str]:
         out += [tex_escape("Rank and count statements (at each size, from the most rigorous method that ran):")]
         out += _tex_items([tex_escape(f"{name}, {size} {m}: ")
                            + (st if st == "as printed" else rf"\textbf{{{st}}}")
-                           + (". " + tex_escape(short(detail, 400)) if detail else "")
+                           + (". " + tex_words(engine_words(short(detail, 400))) if detail else "")
                            for name, size, m, st, detail in dims])
     how = c.how_obtained()
     if how:
         out += ["How the verdicts were obtained:"]
-        out += _tex_items([tex_words(f"{m}: {text}") for m, text in how])
+        out += _tex_items([tex_words(f"{m}: {engine_words(text)}") for m, text in how])
     notes = [tex_words(f"{r.size} {r.method}: {short(r.message, 300)}") for r in c.notes()]
     if notes:
         out += ["Notes:"] + _tex_items(notes)

@@ -496,7 +496,7 @@ QUANTITIES = {
     "ddim": ("ddim", "dim V − generic rank of b ↦ bP₂ on so(n−r)"),
     "ddim_inv": ("SO(n)-inv", "generic rank of d(Ψ_ij, (PᵀP)_ij) on the fibre (= ddim: they define the generic orbits)"),
     "2l": ("2l", "generic rank of ad_Φ on so(n)"),
-    "regular": ("2l", "the generic orbit in Φ(T*V) is regular (1) or not (0); printed: n ≤ 2r+1"),
+    "regular": ("2l", "the generic orbit in Φ(T*V) is regular (1) or not (0); printed: n ≤ 2r + 1"),
     "chain": ("com", "generic rank of d𝔄 on the fibre; printed: dim V − l (𝔄 complete)"),
     "delta0": ("bols-jov", "2 dim V − rank d(Φ, Ψ, PᵀP)"),
     "delta0_complete": ("bols-jov", "rank d(Φ,Ψ,PᵀP) − rank{ , } (isotropic kernel); = δ₀ iff complete"),
@@ -1245,8 +1245,8 @@ def render_markdown(T: Tables, verdicts: dict[str, Any]) -> str:
 def _notes_markdown() -> list[str]:
     return [
         "Notes on the disagreements:", "",
-        "- *regular*: the remark before Lemma 2l (the generic orbit in Φ(T*V) is regular iff n ≤ 2r+1); at "
-        "n = 2r+2 both cases of Lemma 2l give the regular dimension, so the orbit is regular there (the Lemma's "
+        "- *regular*: the remark before Lemma 2l (the generic orbit in Φ(T*V) is regular iff n ≤ 2r + 1); at "
+        "n = 2r + 2 both cases of Lemma 2l give the regular dimension, so the orbit is regular there (the Lemma's "
         "formula itself agrees everywhere).",
         "- *inv. forms*: the proposition after Theorem ET (the SO(n)×SO(r)-invariant quadratic forms on T*_{X₀}V "
         "are spanned by tr(PᵀP), tr((XᵀP)²)); at r = 4 the Pfaffian of P₁ is a further invariant form for every "
