@@ -414,7 +414,7 @@ _ENGINE_IDIOMS = (
     (re.compile(r"\((\w)-(\w)\)"), r"(\1 − \2)"),                               # (n-r) as (n − r)
     (re.compile(r"(?:(?<=[\[(])|(?<=[,;] ))-(?=\w)"), "−"),                                  # a leading minus: −2K, (−1, …)
     (re.compile(r"(?<![\w^])R\^(n|r)\b"), r"ℝ^\1"),                          # the spaces ℝⁿ, ℝʳ
-    (re.compile(r"\b(T\*)?([VW])\(([nr]|\d+), ([nr]|\d+)\)"), r"\1\2_{\3,\4}"),   # V_{n,r}, T*V_{n,n}, W_{n,r}
+    (re.compile(r"\b(T\*?)?([VW])\(([nr]|\d+), ([nr]|\d+)\)"), r"\1\2_{\3,\4}"),  # V_{n,r}, T*V_{n,n}, TW_{n,r}
     (re.compile(r"(?<=[\w)\]]) - (?=[\w(\[])"), " − "),                         # a minus sign: n − r, I − S
 )
 
@@ -878,7 +878,7 @@ def _md_claim(c: ClaimResults) -> list[str]:
     notes = c.notes()
     if notes:
         out += ["Notes:", ""]
-        out += [f"- {_md_cell(r.size)} {r.method}: {_md_cell(r.message)}" for r in notes] + [""]
+        out += [f"- {_md_cell(r.size)} {r.method}: {_md_cell(unicode_words(engine_words(r.message)))}" for r in notes] + [""]
     if c.failures:
         out += ["Fails as printed: see [Errata](#errata).", ""]
     elif c.variants:
@@ -1702,7 +1702,7 @@ def _tex_claim(c: ClaimResults) -> list[str]:
     if how:
         out += ["How the verdicts were obtained:"]
         out += _tex_items([tex_words(f"{m}: {engine_words(text)}") for m, text in how])
-    notes = [tex_words(f"{r.size} {r.method}: {short(r.message, 300)}") for r in c.notes()]
+    notes = [tex_words(f"{r.size} {r.method}: {engine_words(short(r.message, 300))}") for r in c.notes()]
     if notes:
         out += ["Notes:"] + _tex_items(notes)
     out += _tex_derivations(c)
