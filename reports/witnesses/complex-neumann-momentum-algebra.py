@@ -28,7 +28,7 @@ def counts():
     psi0 = Z.T * Zd.conjugate() - Zd.T * Z.conjugate()
     assert psi0.shape == (r, r) and psi0 == -psi0.H != sp.zeros(r, r)   # skew-Hermitian, nonzero: in u(r)
     return {"computed": psi0.shape[0], "printed": n, "corrected": r,
-            "meaning": "the size of psi_0 (r x r, r the number of columns of Z), against n, of u(n)"}
+            "meaning": "the size of ψ₀ (r × r, r the number of columns of Z), against n, of u(n)"}
 
 
 def main():

@@ -76,8 +76,9 @@ def _on_tstar_v(W):
     if "ReZ" in W:
         Z = sp.Matrix(sp.BlockMatrix([[W["ReZ"], -W["ImZ"]], [W["ImZ"], W["ReZ"]]]))
         V = sp.Matrix(sp.BlockMatrix([[W["ReV"], -W["ImV"]], [W["ImV"], W["ReV"]]]))
-        out.append(("Z^* Z = I", Z.T * Z == sp.eye(Z.shape[1])))
-        out.append(("Z^* V + V^* Z = 0", (Z.T * V + V.T * Z).is_zero_matrix))
+        # realified: conj(Z)^T Z = I_r and conj(Z)^T V + conj(V)^T Z = 0 (V = Zdot) hold iff they hold realified
+        out.append(("conj(Z)^T Z = I_r", Z.T * Z == sp.eye(Z.shape[1])))
+        out.append(("conj(Z)^T V + conj(V)^T Z = 0, V = Zdot", (Z.T * V + V.T * Z).is_zero_matrix))
     return out
 
 
@@ -93,14 +94,16 @@ def _at(x):
 def main():
     W = _letters()
     print(f"size (n, r) = {SIZE}")
+    # a point of the complex Stiefel variety's tangent bundle TW_{n,r} (realified), else of T*V
+    on, check = ("TW_{n,r}", f"{CHECK} (realified)") if "ReZ" in W else ("T*V", CHECK)
     for name, ok in _on_tstar_v(W):
-        print(f"on T*V: {name}: {ok}")
+        print(f"on {on}: {name}: {ok}")
     R = residuals(W)
-    print(f"printed formula: {CHECK} = {_show(R['printed'])}")
+    print(f"printed formula: {check} = {_show(R['printed'])}")
     print(f"printed formula: entry {ENTRY or ''} = {_at(R['printed'])} (the report states {STATED})")
     zero = all(sp.simplify(x) == 0 for x in (R["corrected"] if isinstance(R["corrected"], sp.MatrixBase)
                                               else [R["corrected"]]))
-    print(f"correction: {CHECK} = {_show(R['corrected'])}" + (" (zero)" if zero else " (NOT zero)"))
+    print(f"correction: {check} = {_show(R['corrected'])}" + (" (zero)" if zero else " (NOT zero)"))
     ok = all(ok for _, ok in _on_tstar_v(W)) and _at(R["printed"]) == STATED and STATED != 0 and zero
     print("the printed formula fails at this point, and the correction holds there" if ok
           else "MISMATCH: this script does not confirm the report")

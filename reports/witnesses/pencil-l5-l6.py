@@ -13,10 +13,10 @@ STATED = 5
 STATED_PRINTED = 4
 
 """The proof of Lemma 6.3 (condition (A2)) says that the solutions (xi1, eta1) in so(r,C)_{h1} + Sym(r)
-of (L5) [A1, xi1] - [h1, eta1] = 0 and (L6) [A1, eta1] in so(r,C)^perp form an r-dimensional space.
-so(r)^perp = Sym(r) and [A1, eta1] is skew, so the printed (L6) says [A1, eta1] = 0, and for r >= 3 the
+of (16) §6 [A1, xi1] - [h1, eta1] = 0 and (17) §6 [A1, eta1] in so(r,C)^perp form an r-dimensional space.
+so(r)^perp = Sym(r) and [A1, eta1] is skew, so the printed (17) §6 says [A1, eta1] = 0, and for r >= 3 the
 solutions form a 2-dimensional space: the system has rank (unknowns - 2), not (unknowns - r).  The
-correction: (L6) [A1, eta1] perp so(r,C)_{h1} (what pairing with the Cartan subalgebra gives); with it
+correction: (17) §6 [A1, eta1] perp so(r,C)_{h1} (what pairing with the Cartan subalgebra gives); with it
 the solutions are r-dimensional, as the proof says."""
 
 KIND = "count"
@@ -42,19 +42,19 @@ def counts():
     def system(printed):
         cols = []
         for xi1, eta1 in unknowns:
-            L5 = br(A1, xi1) - br(h1, eta1)                     # (L5)
+            eq16 = br(A1, xi1) - br(h1, eta1)                     # (16) §6
             C = br(A1, eta1)
-            L6 = list(C) if printed else [(C * c).trace() for c in cartan]   # (L6): C = 0, or C perp so(r)_{h1}
-            cols.append(list(L5) + L6)
+            eq17 = list(C) if printed else [(C * c).trace() for c in cartan]   # (17) §6: C = 0, or C perp so(r)_{h1}
+            cols.append(list(eq16) + eq17)
         return sp.Matrix(cols).T
     N = len(unknowns)                                       # dim so(r)_{h1} + dim Sym(r) = 1 + 6
     assert N == KERNEL[1]
-    return {"computed": system(True).rank(),                # (L5), (L6) as printed
+    return {"computed": system(True).rank(),                # (16), (17) §6 as printed
             "printed": N - r,                               # the proof: r-dimensional solutions
-            "corrected": N - r,                             # the same count, for the corrected (L6)
-            "corrected_computed": system(False).rank(),     # (L5) with the corrected (L6)
-            "meaning": "the rank of (L5) with the printed (L6) on so(r)_{h1} + Sym(r) (7 unknowns); "
-                       "7 - rank = the dimension of its solutions"}
+            "corrected": N - r,                             # the same count, for the corrected (17) §6
+            "corrected_computed": system(False).rank(),     # (16) §6 with the corrected (17) §6
+            "meaning": "the rank of (16) §6 with the printed (17) §6 on so(r)_{h₁} ⊕ Sym(r) (7 unknowns); "
+                       "7 − rank = the dimension of its solutions"}
 
 
 def main():

@@ -52,6 +52,11 @@ class Rank:
         statement_site(self)
 
 
+#: the largest count in bits (about 3,900 decimal digits, below Python's own limit on converting an int to text)
+COUNT_BITS = 13_000
+COUNT_DIGITS = 3_900
+
+
 @dataclass(frozen=True)
 class Count:
     """An integer computed by the claim (e.g. from ranks) against the printed formula."""
@@ -66,6 +71,9 @@ class Count:
         if type(self.value) is not int or type(self.expected) is not int:
             raise TypeError("Count: the value and the expected count are ints (an object that says it "
                             "equals anything is refused)")
+        if max(abs(self.value), abs(self.expected)).bit_length() > COUNT_BITS:
+            raise ValueError(f"Count: a count of more than {COUNT_DIGITS:,} digits (a dimension, rank or size "
+                             "of the paper is far smaller; each digit would be carried through every record)")
         if type(self.meaning) is not str:
             raise TypeError("Count: the meaning is a string")
         statement_site(self)

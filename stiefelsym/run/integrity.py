@@ -154,18 +154,28 @@ FREE_VERDICTS = ("proved", "undecided", "error", "inconclusive")
 AUTO_PREFIX = "exact: "
 
 
-def _message_edits(record: dict, again: dict, auto: tuple[bool, str] | None = None) -> list[str]:
+def _message_edits(record: dict, again: dict, auto: tuple[bool, str] | None = None,
+                   auto_again: Callable[[], dict] | None = None) -> list[str]:
     """["message"] where a decided record's message (why the verdict, which a report prints beside every verdict
     that is not a pass) is not what a run again says; a message of a verdict that depends on time (inconclusive,
     error) is not compared.  ``auto`` (a command that ran auto): (whether the exact method was within the claim's
     budget there, the reason auto gives where it was not).  Auto's record of the method it ran instead begins with
     "exact: <why>; " before that method's own message: beyond the budget the reason is its text; within it, it is
-    the exact method's inconclusive message, which depends on time, and only its form is compared."""
+    the exact method's inconclusive message, which depends on time, and only its form is compared.  Where the
+    modular method could not decide beyond the budget and auto ran the exact method after all, the record says so
+    (:data:`stiefelsym.run.runner.LATE_EXACT_PREFIX`, :data:`~stiefelsym.run.runner.LATE_MODULAR_MARK`): its
+    message is compared with the message of auto run again (``auto_again``), whole."""
     if record.get("verdict") not in ("proved", "checked", "numeric", "fails", "undecided"):
         return []
     mine, own = record.get("message") or "", again.get("message") or ""
     if mine == own:
         return []
+    from stiefelsym.run.runner import LATE_EXACT_PREFIX, LATE_MODULAR_MARK
+    if auto is not None and auto_again is not None and not auto[0] \
+            and (mine.startswith(LATE_EXACT_PREFIX) or LATE_MODULAR_MARK in mine):
+        whole = auto_again()
+        return [] if (whole.get("method"), whole.get("verdict"), whole.get("message") or "") == (
+            record.get("method"), record.get("verdict"), mine) else ["message"]
     if auto is not None and mine.startswith(AUTO_PREFIX):
         within, reason = auto
         head = mine[:-len("; " + own)] if own and mine.endswith("; " + own) else mine if not own else None
@@ -609,7 +619,9 @@ def check_results(records: list[dict], registry: Registry, echo: Callable[[str],
                 from stiefelsym.run.runner import auto_budget_reason
                 auto = (claim.exact_at(size.n, size.r), auto_budget_reason(claim, size))
             edited = (_evidence_edits(record, again_fixed.to_json())
-                      + _message_edits(record, again_fixed.to_json(), auto))
+                      + _message_edits(record, again_fixed.to_json(), auto,
+                                       lambda: run_one(claim, size, "auto", r.get("seed") or 0, func,
+                                                       variant=r.get("variant"), hard=hard).to_json()))
             if small is not None and not edited and small_witness_edited(r, claim, func):
                 edited = ["witness (the small witness)"]
             if edited:

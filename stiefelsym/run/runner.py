@@ -469,11 +469,19 @@ def _run_auto(claim: Claim, size: Size, seed: int, func: Callable | None,
         late = exact(claim, size.n, size.r, seed, func)
         late.seconds += res.seconds
         if late.verdict in ("proved", "fails"):
-            late.message = "; ".join(m for m in (f"modular: {res.verdict} ({res.message})", late.message) if m)
+            late.message = f"{LATE_EXACT_PREFIX}{res.verdict}: {res.message}){LATE_EXACT_THEN}" + (
+                f"; {late.message}" if late.message else "")
             return late
-        res.message = f"{res.message}; exact, tried beyond the budget: {late.verdict} ({late.message})"
+        res.message = f"{res.message}{LATE_MODULAR_MARK}{late.verdict} ({late.message})"
         res.seconds = late.seconds
     return res
+
+
+#: how auto's record says that the exact method decided beyond the claim's symbolic budget after the modular
+#: method could not (the record's method is exact), and how a modular record says what that attempt gave
+LATE_EXACT_PREFIX = "the modular method could not decide beyond the symbolic budget ("
+LATE_EXACT_THEN = ", so the exact method ran after all, beyond the budget"
+LATE_MODULAR_MARK = "; the exact method, run after all beyond the budget: "
 
 
 def expected_of(claim: Claim, method: str, verdict: str, n: int | None, r: int | None,

@@ -113,7 +113,7 @@ def test_auto_tries_the_exact_method_where_the_points_cannot_decide():
               "--method", "auto", "--jobs", "1", "--no-report")
     assert run.returncode == 0, run.stdout[-2000:] + run.stderr[-2000:]
     assert "n71b-ddim-isotropy-trivial (6,2) exact: fails" in run.stdout
-    assert "modular: inconclusive" in run.stdout
+    assert "the modular method could not decide beyond the symbolic budget (inconclusive" in run.stdout
 
 
 def test_the_second_round_of_statements_and_twins_get_the_verdicts_numpy_gives():
@@ -123,3 +123,33 @@ def test_the_second_round_of_statements_and_twins_get_the_verdicts_numpy_gives()
     run = cli("verify", "--claims", str(HIDDEN2 / "negatives.py"), "--method", "auto", "--size", "3,2", "--size",
               "4,1", "--size", "4,2", "--jobs", "2", "--no-report")
     assert run.returncode == 0, run.stdout[-3000:] + run.stderr[-3000:]
+
+
+REVIEW3 = Path(__file__).parent / "s71" / "review3"
+
+
+def test_check_accepts_the_records_of_auto_running_exact_after_all(tmp_path):
+    """The third review: records written where auto ran the exact method beyond the budget after the modular method
+    could not decide were refused by `check` and `report --check` (their messages were compared with the record's
+    method run alone).  Their messages are compared with auto run again, whole; an edited one is still refused."""
+    out = tmp_path / "o"
+    run = cli("verify", "--claims", str(REVIEW3 / "late_exact.py"), "r3-late-every-point", "r3-late-rank-low",
+              "r3-late-every-point-false", "--size", "4,2", "--method", "auto", "--jobs", "1", "--report-dir", str(out))
+    assert "the modular method could not decide beyond the symbolic budget" in run.stdout, run.stdout[-3000:]
+    assert "so the exact method ran after all" in run.stdout
+    run = cli("check", str(out / "results.json"))
+    assert run.returncode == 0 and "0 rejected" in run.stdout + run.stderr, run.stdout[-2000:] + run.stderr[-2000:]
+    data = json.loads((out / "results.json").read_text())
+    late = next(r for r in data["results"] if (r["message"] or "").startswith("the modular method could not"))
+    late["message"] = late["message"].replace("could not decide", "did decide")
+    (out / "edited.json").write_text(json.dumps(data, indent=1))
+    run = cli("check", str(out / "edited.json"))
+    assert run.returncode == 1 and "(message)" in run.stdout + run.stderr
+
+
+def test_a_count_of_thousands_of_digits_is_refused_at_once():
+    """The third review: a Count of 7^(10^6) (845,099 digits) cost 331 s, a third of it in the main process (every
+    decimal rendering of the number is quadratic).  A count of more than 3,900 digits is refused when traced."""
+    run = cli("verify", "--claims", str(REVIEW3 / "count_digits.py"), "--size", "4,2", "--method", "auto", "--jobs", "1",
+              "--no-report")
+    assert run.returncode == 1 and "a count of more than 3,900 digits" in run.stdout, run.stdout[-2000:]
