@@ -128,9 +128,9 @@ GRAPH_EXPLANATION = (
     "from that graph, never from the claim's code.  The digest is a "
     "SHA-256 hash of the graph (its first 12 hex digits are shown): two records with the same "
     "digest are about the same computation, and the command stiefelsym check compares it when it "
-    "traces every record again.  The verdicts shown are those results.json records; stiefelsym check (or "
-    "stiefelsym report --check) also runs every record again and refuses a file whose verdicts the runs do "
-    "not give again.")
+    "traces every record again.  The verdicts shown are those results.json records; stiefelsym check (and "
+    "stiefelsym report with its check option) also runs every record again and refuses a file whose verdicts "
+    "the runs do not give again.")
 
 EXPECTED_EXPLANATION = (
     "Each verdict is compared with what the catalog expects: a statement of the paper "
