@@ -47,3 +47,12 @@ def test_counts_of_integers_are_exact_beyond_the_symbolic_budget():
 def test_a_count_beside_a_matrix_of_the_point_keeps_the_budget():
     res = run_one(_claim(_rank_beside_a_count), Size(7, 3), "auto", seed=0)
     assert res.method == "modular" and "symbolic budget" in (res.message or ""), res.line()
+
+
+def test_counts_in_a_list_are_refused_with_where_they_belong():
+    """The third review of stop 71: two Counts in a list were refused as "not a value of the IR", with no word on
+    how to state them; the message now says that a statement is a key's value of its own."""
+    def listed(s):
+        return {"c": [Count(1, 1), Count(2, 2)]}
+    res = run_one(_claim(listed), Size(3, 1), "exact", seed=0)
+    assert res.verdict == "error" and "a statement is a check of its own" in res.message, res.line()

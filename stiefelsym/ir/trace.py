@@ -1088,7 +1088,9 @@ class Trace:
             return Named(_NAMED[id(x)][0])
         if functions and callable(x) and not isinstance(x, type):
             return self.function(x, None)[0]
-        hint = (": write ½ as s.q(1, 2) or Fraction(1, 2), or divide (x / 2)" if tx is float else "")
+        hint = (": write ½ as s.q(1, 2) or Fraction(1, 2), or divide (x / 2)" if tx is float else
+                ": a statement is a check of its own, the value of a key of the dict the claim returns "
+                "({'dim V': Count(...), 'rank M': Rank(...)})" if tx in (Count, Rank) else "")
         return self.refuse(f"a {tx.__name__} is not a value of the IR (exact constants are int and Fraction){hint}")
 
     def kw(self, kw: dict) -> tuple:
