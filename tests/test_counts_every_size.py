@@ -56,3 +56,17 @@ def test_counts_in_a_list_are_refused_with_where_they_belong():
         return {"c": [Count(1, 1), Count(2, 2)]}
     res = run_one(_claim(listed), Size(3, 1), "exact", seed=0)
     assert res.verdict == "error" and "a statement is a check of its own" in res.message, res.line()
+
+
+def _false_only_at_large_n(s):
+    """Stop 71's own attempt: a count whose printed value is off by one only from n = 50 on, asked at (60,2), beyond
+    the symbolic budget and the cost model's reach; counts are exact at any size, so it fails there."""
+    n, r = s.n, s.r
+    return {"dim V": Count(n * r - r * (r + 1) // 2, n * r - r * (r + 1) // 2 + (1 if n >= 50 else 0))}
+
+
+def test_a_count_wrong_only_at_a_large_size_fails_there():
+    for method in ("auto", "exact", "modular", "rational"):
+        res = run_one(_claim(_false_only_at_large_n), Size(60, 2), method, seed=0)
+        assert res.verdict == "fails", res.line()
+    assert run_one(_claim(_false_only_at_large_n), Size(7, 2), "auto", seed=0).verdict == "proved"

@@ -121,13 +121,18 @@ def _compiled_graph(func: Callable, n: int | None, r: int | None, constraints: t
     raise _fresh(g)
 
 
-def numbers_only(func: Callable, n: int, r: int, constraints: tuple[str, Callable]) -> bool:
+def numbers_only(claim: Any, n: int, r: int, func: Callable | None = None) -> bool:
     """Whether the claim's graph at (n, r) has residuals that are numbers given outright (counts of integers:
     :func:`stiefelsym.ir.passes.parameter_free`), so that its exact evaluation costs nothing at any size and
     no symbolic budget applies; False where the claim does not trace here (its run says why)."""
     from stiefelsym.ir.passes import parameter_free
+    from stiefelsym.scene import REALIZATIONS
+    cons = REALIZATIONS.get(getattr(claim, "realization", "standard"))
+    func = func or getattr(claim, "func", None)
+    if cons is None or func is None:
+        return False
     try:
-        return parameter_free(_compiled_graph(func, n, r, constraints))
+        return parameter_free(_compiled_graph(func, n, r, (cons.name, cons.build)))
     except Exception:   # noqa: BLE001 - a claim that does not trace here: the run itself says why
         return False
 

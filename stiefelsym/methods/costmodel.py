@@ -421,7 +421,7 @@ def check(method: str, claim: Any, n: int, r: int, budget: float | None = DEFAUL
     cost = cost or model()
     t = cost.predict(method, claim, n, r)
     if budget is not None and t > budget and method in ("exact", "auto", "rational", "modular") \
-            and _counts_of_integers(claim, n, r):
+            and _counts_of_integers(claim):
         return 0.0      # counts of plain integers: evaluated exactly at any size, whatever the model says
     if budget is not None and t > budget:
         cid = getattr(claim, "id", str(claim))
@@ -431,22 +431,16 @@ def check(method: str, claim: Any, n: int, r: int, budget: float | None = DEFAUL
     return t
 
 
-def _counts_of_integers(claim: Any, n: int, r: int) -> bool:
+def _counts_of_integers(claim: Any) -> bool:
     """Whether the claim's checks are counts of plain integers (:func:`stiefelsym.ir.numbers_only`), judged at its
-    smallest stated size (tracing it at (n, r) itself could take as long as the run the budget refuses; a
+    smallest stated size (tracing it at the size asked could take as long as the run the budget refuses; a
     prediction, not a verdict: the run decides at its own size, within its own time budget)."""
-    func = getattr(claim, "func", None)
-    sizes = getattr(claim, "sizes", None)
-    if func is None or sizes is None:
-        return False
     from stiefelsym.ir import numbers_only
-    from stiefelsym.scene import REALIZATIONS
-    cons = REALIZATIONS.get(getattr(claim, "realization", "standard"))
     try:
-        low = min(sizes, key=lambda s: (s.n, s.r))
-    except (TypeError, ValueError):
+        low = min(claim.sizes, key=lambda s: (s.n, s.r))
+    except (AttributeError, TypeError, ValueError):
         return False
-    return cons is not None and numbers_only(func, low.n, low.r, (cons.name, cons.build))
+    return numbers_only(claim, low.n, low.r)
 
 
 #: a lower bound of the n x n matrices a run holds at once, and of the bytes of one entry per method
@@ -472,7 +466,7 @@ def check_memory(method: str, claim: Any, n: int, r: int, memory_gib: float | No
     if memory_gib is None or method == "free":
         return need
     limit = memory_gib * (1 << 30)
-    if need > limit and method in ("exact", "auto", "rational", "modular") and _counts_of_integers(claim, n, r):
+    if need > limit and method in ("exact", "auto", "rational", "modular") and _counts_of_integers(claim):
         return 0.0      # counts of plain integers: a few integers at any size
     if need > limit:
         cid = getattr(claim, "id", str(claim))

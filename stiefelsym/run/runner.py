@@ -23,6 +23,7 @@ from stiefelsym.methods.fixed_size import METHOD_RUNNERS, BudgetError, check_bud
 from stiefelsym.run.pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT, GIB, MOST_GIB, MOST_SECONDS, Outcome, Terminated, WorkerPool  # noqa: F401
 from stiefelsym.results import PASSING, VERDICTS, Result
 from stiefelsym.scene import SizeError
+from stiefelsym.ir import numbers_only
 
 METHODS = ("auto", "exact", "rational", "modular", "float", "ball", "free")
 #: the verdicts that are never expected: the method could not decide, or the check broke
@@ -412,7 +413,7 @@ def _run_exact(claim: Claim, size: Size, seed: int, func: Callable | None, exact
                budget: float | None = None) -> Result:
     """The exact method: its symbolic charts within the claim's symbolic budget; beyond it, or where the
     charts end without a verdict, the dimension-free proof of the same graph where there is one."""
-    if not claim.exact_at(size.n, size.r) and not _numbers_only(claim, size, func):
+    if not claim.exact_at(size.n, size.r) and not numbers_only(claim, size.n, size.r, func):
         proof, took = _specialised(claim, size, seed, func, 0.0, budget)
         if proof is not None:
             return proof
@@ -436,18 +437,10 @@ def auto_budget_reason(claim: Claim, size: Size) -> str:
             f"n = {size.n} is above this claim's symbolic budget (n <= {claim.exact_max_n})")
 
 
-def _numbers_only(claim: Claim, size: Size, func: Callable | None) -> bool:
-    """Whether the claim's graph at this size is counts of integers (:func:`stiefelsym.ir.numbers_only`)."""
-    from stiefelsym.ir import numbers_only
-    from stiefelsym.scene import REALIZATIONS
-    cons = REALIZATIONS[claim.realization]
-    return numbers_only(func or claim.func, size.n, size.r, (cons.name, cons.build))
-
-
 def _run_auto(claim: Claim, size: Size, seed: int, func: Callable | None,
               exact: Callable[..., Result] | None = None, budget: float | None = None) -> Result:
     exact = exact or METHOD_RUNNERS["exact"]
-    tried_exact = claim.exact_at(size.n, size.r) or _numbers_only(claim, size, func)
+    tried_exact = claim.exact_at(size.n, size.r) or numbers_only(claim, size.n, size.r, func)
     if tried_exact:
         res = exact(claim, size.n, size.r, seed, func)
         if res.verdict != "inconclusive":
