@@ -500,7 +500,7 @@ def test_mutation_report_round_trips_through_json(small_report):
     assert "# Mutation analysis" in md and "`euclidean-invariance`" in md
     assert "No survivor" in md
     summary = render_mutation_summary(json.loads(text))
-    assert summary.startswith("mutation: ") and "kill rate" in summary
+    assert summary.startswith("mutation: ") and "refuted %" in summary and "not passed %" in summary
 
 
 def test_limit_and_only_select_mutants():

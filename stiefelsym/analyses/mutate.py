@@ -19,7 +19,10 @@ pass says nothing about a mutant, and is not counted.  Then:
 * a mutant is **killed** by a method when, at some counted size, its verdict is not
   ``proved``/``checked``/``numeric`` (``fails``: refuted with a witness; ``error``:
   e.g. ill-typed, the engine refused it; ``inconclusive``/``undecided``: the method
-  could not decide, which is not a refutation);
+  could not decide, which is not a refutation); the tables count the refutations
+  (fails, error) apart from the mutants left undecided, and print both rates
+  (:func:`stiefelsym.reports.report.kill_rate`): a method that decides nothing is
+  never credited with a refutation;
 * a mutant that passes at every counted cell is **equivalent**: a true statement at
   the sizes run (often trivially so, sometimes only because the sizes are small, e.g.
   a condition n <= 2r + 1 changed to n <= 2r + 2 when no size has n = 2r + 2; the list

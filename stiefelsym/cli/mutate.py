@@ -147,14 +147,15 @@ def _command(ids: Sequence[str], sizes: Sequence[str], methods: Sequence[str], s
               help="Problem size, repeatable (default: up to three sizes of each claim with n <= 4, "
                    "distinct r, one with 1 < r < n).")
 @click.option("--method", "methods", multiple=True, metavar="METHOD",
-              help="exact, rational, modular, float or free; repeatable (default: all five).")
+              help="exact, rational, modular, float or free; repeatable (default: all five; with --corrections, "
+                   "rational and modular).")
 @click.option("--seed", type=click.IntRange(min=0), default=0, show_default=True, metavar="N",
               help="Seed of every random choice.")
 @click.option("--claims", "claims_file", metavar="FILE", help="Mutate the claims of your own Python file.")
 @click.option("--report-dir", type=click.Path(path_type=Path), metavar="DIR",
               help="Write mutation.json and mutation.md here (nothing is written without it; make mutate: reports/).")
 @click.option("--format", "fmt", type=click.Choice(["text", "json"]), default="text", show_default=True,
-              help="stdout: one line per mutant and the kill-rate table, or the JSON report.")
+              help="stdout: one line per mutant and the table of refuted and undecided mutants, or the JSON report.")
 @click.option("--limit", type=click.IntRange(min=1), default=None, metavar="K",
               help="At most K mutants per claim, evenly spread over its source.")
 @click.option("--mutant", "only", type=click.IntRange(min=0), multiple=True, metavar="K",
@@ -199,7 +200,7 @@ def mutate(ids: tuple[str, ...], sizes: tuple[str, ...], methods: tuple[str, ...
     method passes where another refutes it is a SURVIVOR of that method, and the
     dimension-free method must prove no mutant that is not equivalent.
 
-    Prints one line per mutant and the kill-rate table per claim and method;
+    Prints one line per mutant and the table of refuted and undecided mutants per claim and method;
     writes mutation.json and mutation.md (to reports/ for a full catalog run,
     otherwise only to a --report-dir given explicitly).
 
@@ -358,7 +359,15 @@ def _search(engine: Any, claims: Sequence[Claim], ids: Sequence[str], sizes: Seq
             click.echo(f"{c.id}: {len(found)} of {tried[0]} candidates pass every method ({', '.join(methods)}) "
                        f"at {where}, seed {seed}")
             rest = [s for s in c.sizes if s not in plan_sizes]
-            if found and rest:
+            unbounded = getattr(c.sizes, "n_max", 0) is None
+            if found and unbounded:
+                click.echo(f"{c.id}: the claim is stated for every n (from n = {min(s.n for s in plan_sizes)}), and the "
+                           f"candidates were run only at n <= {max(s.n for s in plan_sizes)}: a candidate can hold "
+                           "there and fail further up (a formula of Cayley-Hamilton type); it is a correction only "
+                           "where it holds at every size: register it (@f.claim.correction(...) on the claim's "
+                           "function f) and prove it with `stiefelsym verify --method free`, or run larger sizes "
+                           "with --size")
+            elif found and rest:
                 click.echo(f"{c.id}: the claim is stated at {len(rest)} more "
                            f"{'size' if len(rest) == 1 else 'sizes'} (up to n = {max(s.n for s in rest)}); a candidate "
                            "is a correction only where it holds at every size: register it (@f.claim.correction(...) on "

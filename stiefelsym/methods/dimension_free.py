@@ -394,10 +394,12 @@ def needs_text(claim: Claim, func: Callable, refusal: str, family: SizeFamily | 
         # a refusal or an exception of the claim's code at the size is an `error` there; no graph at hand there
         # (a claims file traced in a child at the sizes the run needed) leaves it undecided
         refused = not isinstance(exc, GraphUnavailable)
-        return (f"the claim is refused with symbolic sizes and at ({z.n},{z.r}) too ({type(exc).__name__}): "
-                f"{refusal.removeprefix('refused: ')}" + ("; an error at the fixed sizes" if refused else
-                                                          "; decided by the fixed-size methods")), refused
-    what = "; ".join(needs) if needs else "its statement depends on the sizes (a loop or a condition over n, r)"
+        at = str(exc).removeprefix("refused: ") if refused else ""
+        return (f"the claim is refused with symbolic sizes ({refusal.removeprefix('refused: ')}) and at "
+                f"({z.n},{z.r}) too ({type(exc).__name__}" + (f": {at}" if at and at not in refusal else "") + ")"
+                + ("; an error at the fixed sizes" if refused else "; decided by the fixed-size methods")), refused
+    what = "; ".join(needs) if needs else ("its statement uses a size as a number (a loop, a condition, or a block of "
+                                           "that size)")
     return (f"needs coordinates (fixed n, r): {what} (the trace with symbolic sizes stopped at: "
             f"{refusal.removeprefix('refused: ')}); decided by the fixed-size methods"), False
 

@@ -1890,13 +1890,17 @@ MUTATION_EXPLANATION = (
     "scene letter replaced by another of the same kind, a rational coefficient changed.  Every "
     "mutant runs with every method at a few sizes, and with the dimension-free method; the claim "
     "as printed runs too, and a (size, method) where it does not pass is not counted.  A method "
-    "kills a mutant when it does not pass it at some counted size: fails (refuted with a witness), "
-    "error (for instance ill-typed: the engine refused the expression), or inconclusive/undecided "
-    "(the method could not decide; not a refutation).  A mutant that passes everywhere is "
+    "refutes a mutant when, at some counted size, it fails (refuted with a witness) or gives error (for "
+    "instance ill-typed: the engine refused the expression); it leaves it undecided when it does not pass it "
+    "and does not refute it anywhere (inconclusive or undecided: no verdict, neither a refutation nor a pass).  "
+    "A mutant that passes everywhere is "
     "equivalent: a true statement at the sizes run.  A method survives a mutant when it passes it at a size where "
     "another method refutes it; the dimension-free method survives a mutant when it proves one that "
-    "is not equivalent.  Survivors are soundness or sensitivity problems.  Kill rate = killed / "
-    "(mutants - equivalent).  Unless the command says --fresh-points, the point methods (rational, "
+    "is not equivalent.  Survivors are soundness or sensitivity problems.  A mutant that no method refutes, "
+    "that some method leaves undecided and that another passes is unresolved in the row of the method that "
+    "passes it.  refuted % = refuted / (mutants - equivalent); not passed % = (refuted + undecided) / "
+    "(mutants - equivalent).  The dimension-free method proves or leaves undecided, it never refutes: its "
+    "refuted mutants are those it refused (error), and its not passed % is the share it did not prove.  Unless the command says --fresh-points, the point methods (rational, "
     "modular, float) evaluate a mutant at the random points of the claim as printed and recompute "
     "only the subexpressions of its formula that the change reaches (parameters the printed claim never drew "
     "are drawn afresh), and the symbolic method has 15 s per run of a mutant and at most 3 x 10^7 term products "
@@ -1904,8 +1908,8 @@ MUTATION_EXPLANATION = (
     "rational or modular method has refuted it already with an exact witness (there a symbolic run can only "
     "err by proving it), at most 10^7 (a run stopped there is inconclusive: it does not test the symbolic method "
     "on that mutant at that size); the point methods' verdicts are those of fresh points, which the tests check.")
-MUTATION_COLUMNS = ("mutants", "killed", "fails", "error", "other", "survived", "equivalent",
-                    "unresolved", "missed", "kill rate")
+MUTATION_COLUMNS = ("mutants", "refuted", "fails", "error", "undecided", "survived", "equivalent",
+                    "unresolved", "missed", "refuted %", "not passed %")
 
 
 def _mutation_data(mutation: Any) -> dict[str, Any]:
@@ -1915,22 +1919,28 @@ def _mutation_data(mutation: Any) -> dict[str, Any]:
     return mutation or {}
 
 
-def kill_rate(row: dict[str, Any]) -> str:
-    """killed / (mutants - equivalent), or "–" when nothing could be killed."""
+def refuted(row: dict[str, Any]) -> int:
+    """The mutants a method refuted (fails, or error: refused), of a row of the mutation table."""
+    return row.get("fails", 0) + row.get("error", 0)
+
+
+def kill_rate(row: dict[str, Any], decisive: bool = True) -> str:
+    """refuted / (mutants - equivalent) (``decisive``), or (refuted + undecided) / (mutants - equivalent),
+    the share not passed; "–" when nothing could be refuted.  A rate is never rounded up to 100%."""
     denom = row.get("total", 0) - row.get("equivalent", 0)
     if denom <= 0 or row.get("baseline_passes") is False:
         return "–"
-    killed = row.get("killed", 0)
-    if killed == denom:
+    part = refuted(row) if decisive else row.get("killed", 0)
+    if part == denom:
         return "100%"
-    return f"{min(99.9, 100 * killed / denom):.1f}%"   # never rounded up to 100%
+    return f"{min(99.9, 100 * part / denom):.1f}%"
 
 
 def _mutation_cells(row: dict[str, Any]) -> list[str]:
     other = row.get("inconclusive", 0) + row.get("undecided", 0)
-    vals = [row.get("total", 0), row.get("killed", 0), row.get("fails", 0), row.get("error", 0), other,
+    vals = [row.get("total", 0), refuted(row), row.get("fails", 0), row.get("error", 0), other,
             row.get("survived", 0), row.get("equivalent", 0), row.get("unresolved", 0), row.get("missed", 0)]
-    return [str(v) for v in vals] + [kill_rate(row)]
+    return [str(v) for v in vals] + [kill_rate(row), kill_rate(row, decisive=False)]
 
 
 def _mutants(data: dict[str, Any], classification: str | None = None, survivors: bool = False) -> list[dict]:
@@ -1957,7 +1967,7 @@ def _mutant_label(o: dict[str, Any]) -> str:
 
 
 def render_mutation_summary(mutation: Any) -> str:
-    """The kill-rate table for the terminal (totals per method, then per claim and method)."""
+    """The table of refuted and undecided mutants for the terminal (totals per method, then per claim and method)."""
     data = _mutation_data(mutation)
     rows = [dict(r, claim="all claims") for r in data.get("totals", [])] + list(data.get("table", []))
     if not rows:
@@ -2138,7 +2148,7 @@ def _md_mutation_facts(data: dict[str, Any]) -> list[str]:
 
 
 def render_mutation_markdown(mutation: Any) -> str:
-    """``mutation.md``: the kill-rate tables, the survivors, the equivalent mutants (all of them)."""
+    """``mutation.md``: the tables of refuted and undecided mutants, the survivors, the equivalent mutants (all of them)."""
     data = _mutation_data(mutation)
     meta = data.get("meta") or {}
     out = ["# Mutation analysis", "",
