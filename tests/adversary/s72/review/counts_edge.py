@@ -1,5 +1,5 @@
 """s72 review: counts of plain integers (stiefelsym.ir.numbers_only) in unusual places (attempts C1-C8)."""
-from stiefelsym import Count, Rank, admissible, claim
+from stiefelsym import Count, admissible, claim
 
 
 @claim("s72-count-nested-dict-false", paper="No", kind="dim", section="t", sizes=admissible(n_max=4))
@@ -41,7 +41,7 @@ def count_bool(s):
 @claim("s72-count-sub-int", paper="No", kind="dim", section="t", sizes=admissible(n_max=4))
 def count_subclass(s):
     """Count of an int subclass whose __eq__ says True (refused)."""
-    class I(int):
+    class I(int):  # noqa: E742
         def __eq__(self, o):
             return True
         __hash__ = int.__hash__
