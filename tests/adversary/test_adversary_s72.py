@@ -1,0 +1,65 @@
+"""Stop 72: the review's findings (tests/adversary/s72/review, FINDINGS.md).  See tests/adversary/README.md, Stop 72.
+No wrong verdict was found; the replays keep the probes of the new paths (counts of integers, two-sided rank
+kernels) and the fixes of the mutation tables (D1) and of the correction search's sizes (D2)."""
+import json
+
+from pathlib import Path
+
+from adversary_cli import cli
+
+REVIEW = Path(__file__).parent / "s72" / "review"
+
+#: true at (3,2) (a passing verdict is right), false there (a passing verdict is wrong), refused when traced
+TRUE = {"s72-count-with-traced-zero", "s72-count-dim-symbolic", "s72-rk-true", "s72-rk-off-v",
+        "s72-rk-tangent-kernel", "s72-rk-kernel-psi", "s72-rk-xxt", "s72-rk-xxt-coords"}
+FALSE = {"s72-count-with-zero-const", "s72-count-with-traced-false", "s72-count-dim-false", "s72-rk-off-v-false",
+         "s72-rk-wrong-kernel-false", "s72-rk-kernel-r1", "s72-rk-xxt-high"}
+REFUSED = {"s72-count-nested-dict-false", "s72-count-dict-in-tuple-false", "s72-count-bool-value",
+           "s72-count-sub-int"}
+
+
+def test_counts_and_rank_kernels_get_right_verdicts():
+    """Counts of integers nested in containers, beside constants, of int subclasses and bools, and ranks with
+    kernels that hold on V only, at r = 1 only, or are wrong: exact and modular at (3,2)."""
+    seen = set()
+    for name in ("counts_edge.py", "rank_kernels.py"):
+        run = cli("verify", "--claims", str(REVIEW / name), "--method", "modular", "--method", "exact",
+                  "--size", "3,2", "--jobs", "1", "--no-report")
+        for ln in run.stdout.splitlines():
+            if not ln.startswith("s72-"):
+                continue
+            cid, verdict = ln.split()[0], ln.split(": ")[1].split()[0]
+            seen.add(cid)
+            if cid in TRUE:
+                assert verdict in ("proved", "checked"), ln
+            elif cid in FALSE:
+                assert verdict in ("fails", "inconclusive", "undecided"), ln
+            else:
+                assert cid in REFUSED and verdict == "error", ln
+    assert seen == TRUE | FALSE | REFUSED
+
+
+def test_mutation_tables_count_refutations_apart_from_undecided_mutants():
+    """D1: a mutant (rank 2 -> 3) that exact refutes and modular and rational leave inconclusive was counted as a
+    kill of modular and rational ("kill rate 100%"); the tables now count it as undecided, and the refuted % of
+    those methods is 50%, their not passed % 100%."""
+    run = cli("mutate", "s72-rk-xxt", "--claims", str(REVIEW / "rank_kernels.py"), "--method", "exact",
+              "--method", "modular", "--method", "rational", "--size", "4,2", "--jobs", "1", "--format", "json")
+    assert run.returncode == 0, run.stderr[-2000:]
+    totals = {row["method"]: row for row in json.loads(run.stdout)["totals"]}
+    assert totals["modular"]["fails"] == 1 and totals["modular"]["inconclusive"] == 1
+    text = cli("mutate", "s72-rk-xxt", "--claims", str(REVIEW / "rank_kernels.py"), "--method", "exact",
+               "--method", "modular", "--size", "4,2", "--jobs", "1").stdout
+    row = next(ln for ln in text.splitlines() if ln.split()[:3] == ["all", "claims", "modular"])
+    assert row.split()[-2:] == ["50.0%", "100%"], row
+    assert "refuted %" in text and "not passed %" in text
+
+
+def test_correction_search_says_a_claim_for_every_n_was_searched_at_small_n():
+    """D2: e5(A) = 1 (false) has the candidate e5(A) = 0, which holds at n <= 4 and fails at n = 5; the search says
+    that the claim is stated for every n and the candidates ran at n <= 4 only."""
+    run = cli("mutate", "s72-e5-one", "--corrections", "--claims", str(REVIEW / "corrections_ch.py"), "--jobs", "1")
+    assert run.returncode == 0, run.stderr[-2000:]
+    assert "correction passes" in run.stdout
+    assert "stated for every n" in run.stdout and "run only at n <= 4" in run.stdout
+    assert "with --corrections, rational and modular" in " ".join(cli("mutate", "--help").stdout.split())
