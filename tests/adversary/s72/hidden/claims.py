@@ -262,3 +262,18 @@ def neumann_flows_differ(s):
     """§5, the paragraph before (prep) and the Introduction ("the Lax pair does not define the system itself"):
     for different κ the flows (No) do not coincide: Ẋ of H_neum,κ minus Ẋ of H_neum,0 is not zero (r ≥ 2)."""
     return {"Xdot(kappa) - Xdot(0)": s.dirac_flow(H_neum_kappa)["X"] - s.dirac_flow(H_neum_c(lambda t: t.q(0)))["X"]}
+
+
+# 18 --------------------------------------------------------------------------------------------------
+from stiefelsym.bases import sym_basis  # noqa: E402
+
+
+@claim("h72-a-metric-lambda-unique", paper=("A_XP", "cond_XP2"), kind="dim", realization="metric",
+       sizes=admissible(n_max=4))
+def a_metric_lambda_unique(s):
+    """§3, (A_XP): Λ is uniquely determined by ΛXᵀA⁻¹X + XᵀA⁻¹XΛ + 2PᵀA⁻²P = 0: the Lyapunov map
+    Λ ↦ ΛM + MΛ, M = XᵀA⁻¹X, has full rank r(r+1)/2 on Sym(r) (generic rank; M is positive definite)."""
+    r = int(s.r)
+    M = s.X.T @ s.Ainv @ s.X
+    L = matrix_of(s, lambda Lam: Lam @ M + M @ Lam, sym_basis(s, "r"), "sym")
+    return {"rank": Rank(L, r * (r + 1) // 2)}

@@ -499,6 +499,16 @@ def main():
         rk = max(c12(n, r, *rand_point(n, r, rng), None, rng) for _ in range(3))
         print(f"h72-orbit-r1 {n} {r} {'true' if rk == 2 * (n - 2) else 'false'} rank={rk}")
         print(f"n72-orbit-r1-full {n} {r} {'true' if rk == 2 * (n - 1) else 'false'} rank={rk}")
+    # (A_XP): rank of Λ ↦ ΛM ± MΛ on Sym(r), M = XᵀA⁻¹X (metric realization: only XᵀX = I matters here)
+    for n, r in sizes(n_max=4):
+        X, P = rand_point(n, r, rng)
+        A = np.diag(rng.uniform(0.5, 3, n))
+        M = X.T @ np.linalg.inv(A) @ X
+        SB = sym_basis(r)
+        rk = lambda sgn: np.linalg.matrix_rank(np.array([(L @ M + sgn * M @ L).ravel() for L in SB]).T, tol=1e-9)
+        full = r * (r + 1) // 2
+        print(f"h72-a-metric-lambda-unique {n} {r} {'true' if rk(1) == full else 'false'} rank={rk(1)}")
+        print(f"n72-a-metric-lambda-commutator {n} {r} {'true' if rk(-1) == full else 'false'} rank={rk(-1)}")
     # counts
     for n, r in sizes(n_max=6):
         dimV = n * r - r * (r + 1) // 2

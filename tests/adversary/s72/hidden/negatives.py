@@ -227,3 +227,17 @@ def xxt_differ(s):
     F = lambda t: t.X @ t.X.T
     return {"d(XX^T)/dt (kappa) - (0)": s.d(F, s.dirac_flow(H_neum_kappa))
             - s.d(F, s.dirac_flow(H_neum_c(lambda t: t.q(0))))}
+
+
+# 17 --------------------------------------------------------------------------------------------------
+from stiefelsym.bases import sym_basis  # noqa: E402
+
+
+@claim("n72-a-metric-lambda-commutator", kind="dim", realization="metric", sizes=admissible(n_max=4),
+       fails_at=ALL, erratum="twin: ΛM − MΛ (its kernel contains the polynomials in M)")
+def a_metric_commutator(s):
+    """Twin of h72-a-metric-lambda-unique: Λ ↦ ΛM − MΛ has full rank r(r+1)/2 on Sym(r)."""
+    r = int(s.r)
+    M = s.X.T @ s.Ainv @ s.X
+    L = matrix_of(s, lambda Lam: Lam @ M - M @ Lam, sym_basis(s, "r"), "sym")
+    return {"rank": Rank(L, r * (r + 1) // 2)}

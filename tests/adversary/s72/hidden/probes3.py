@@ -38,3 +38,12 @@ def rank_bogus_kernel(s):
     d = m - (2 * (n - 2) - 1)
     K = s.mat([[1 if i == j else 0 for j in range(d)] for i in range(m)], ("?", "?"))
     return {"rank": Rank(M, 2 * (n - 2) - 1, kernel=K)}
+
+
+@claim("p72-false-equivariance-reason", kind="id", sizes=admissible(n_max=3, n_min=2), fails_at=ALL,
+       equivariance="a false reason: the residual is claimed covariant although it reads an entry of X",
+       erratum="probe: X[1, 0] = 0 holds at X0 = (E1 ... Er) only")
+def false_equivariance(s):
+    """X₂₁ = 0: true at X₀ = (E₁ … E_r), false at a generic point of V; a user's equivariance= reason must not be
+    relied on."""
+    return {"X[1,0]": s.X[1, 0]}
