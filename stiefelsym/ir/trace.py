@@ -325,7 +325,7 @@ class Tracer:
     # -- algebra ------------------------------------------------------------------------------
     def _sum(self, o: Any, op: str, swap: bool = False) -> "Tracer":
         t = self._t
-        a = t.arg(o)
+        a = t.number_arg(o)
         kind_o = o._kind if isinstance(o, Tracer) else SCALAR
         kinds = {self._kind, kind_o}
         if kinds == {MAT, SCALAR}:
@@ -368,7 +368,7 @@ class Tracer:
 
     def _times(self, o: Any, swap: bool) -> "Tracer":
         t = self._t
-        a = t.arg(o)
+        a = t.number_arg(o)
         kind_o = o._kind if isinstance(o, Tracer) else SCALAR
         if self._kind == MAT and kind_o == MAT:
             return t.refuse("a product of two matrices with * (use @)")
@@ -381,7 +381,7 @@ class Tracer:
 
     def __truediv__(self, o):
         t = self._t
-        a = t.arg(o)
+        a = t.number_arg(o)
         if isinstance(o, Tracer) and o._kind == MAT:
             return t.refuse("a division by a matrix (use an inverse or a solve)")
         if type(o) in (int, Fraction) and o == 0:
@@ -392,7 +392,7 @@ class Tracer:
         t = self._t
         if self._kind == MAT:
             return t.refuse("a division by a matrix (use an inverse or a solve)")
-        return t.new("div", (t.arg(o), self._r), self._kind, self._shape)
+        return t.new("div", (t.number_arg(o), self._r), self._kind, self._shape)
 
     def __pow__(self, k):
         t = self._t
@@ -1092,6 +1092,13 @@ class Trace:
                 ": a statement is a check of its own, the value of a key of the dict the claim returns "
                 "({'dim V': Count(...), 'rank M': Rank(...)})" if tx in (Count, Rank) else "")
         return self.refuse(f"a {tx.__name__} is not a value of the IR (exact constants are int and Fraction){hint}")
+
+    def number_arg(self, x: Any) -> Any:
+        """An operand of +, −, · or / (:meth:`arg`; a bool, which Python counts as an int, is no number of a
+        statement: as the constants of a Count, the engine's constants are int and Fraction)."""
+        if type(x) is bool:
+            return self.refuse("a bool is not a number of the IR (exact constants are int and Fraction): write 1 or 0")
+        return self.arg(x)
 
     def kw(self, kw: dict) -> tuple:
         if not kw:

@@ -3468,6 +3468,10 @@ def _memory_budget() -> float:
 
 #: a symbolic run of the claim as printed that took this many seconds has its mutants' symbolic runs forked
 MUTANT_ISOLATE_SECONDS = 1.0
+#: in a worker, a claim the cost model was never measured on (a user's) has its symbolic attempt forked from this n
+#: on: a complex claim of W(3, r) ran flint out of memory at n = 3 inside the worker, which took the run with it
+#: (error, where auto would have gone on with the modular method); a fork of a small worker costs a few ms
+USER_ISOLATE_MIN_N = 2
 
 
 def isolates(claim: Claim, n: int, r: int, in_worker: bool = False) -> bool:
@@ -3475,8 +3479,8 @@ def isolates(claim: Claim, n: int, r: int, in_worker: bool = False) -> bool:
     n = 4 on (n = 5 while lending points to the mutation analysis, :class:`PointLoan`, whose thousands
     of small runs at n <= 4 would spend more time forking than computing, and there also for the mutants of
     a claim whose own symbolic run at (n, r) took MUTANT_ISOLATE_SECONDS or more), for the hard time limit.
-    In a worker (the worker is killable, but must survive a heavy attempt): from n = 4 on for a claim the
-    cost model was not measured on (a user's claim), when the cost model predicts at least ISOLATE_SECONDS,
+    In a worker (the worker is killable, but must survive a heavy attempt): from n = USER_ISOLATE_MIN_N on for
+    a claim the cost model was not measured on (a user's claim), when the cost model predicts at least ISOLATE_SECONDS,
     and from n = ISOLATE_MIN_N on also when it predicts a peak memory above ISOLATE_MEMORY_FRACTION of the
     worker's memory budget or n lies beyond the sizes the model measured the symbolic method at."""
     if not hasattr(os, "fork"):
@@ -3489,7 +3493,7 @@ def isolates(claim: Claim, n: int, r: int, in_worker: bool = False) -> bool:
         return n > 3
     model = costmodel.model()
     family = model.family_of(claim)
-    if n >= 4 and family is None and not model.factors.get(getattr(claim, "id", None)):
+    if n >= USER_ISOLATE_MIN_N and family is None and not model.factors.get(getattr(claim, "id", None)):
         # a claim the cost model was never measured on (a user's): its prediction is a guess, and a
         # symbolic blow-up in the worker (flint aborts when an allocation fails) would take the whole
         # run with it instead of leaving auto its modular fallback

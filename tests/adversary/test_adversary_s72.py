@@ -63,3 +63,28 @@ def test_correction_search_says_a_claim_for_every_n_was_searched_at_small_n():
     assert "correction passes" in run.stdout
     assert "stated for every n" in run.stdout and "run only at n <= 4" in run.stdout
     assert "with --corrections, rational and modular" in " ".join(cli("mutate", "--help").stdout.split())
+
+
+def test_a_bool_is_no_number_of_a_statement():
+    """D6: Count(True, 1) was refused while X * True was accepted as X (and numpy's True likewise); a bool in +, −,
+    · or / is now refused when the claim is traced, under every method, as a Count's is."""
+    for method in ("exact", "modular", "free"):
+        run = cli("verify", "--claims", str(REVIEW / "disguised_numbers.py"), "s72-y-np-bool", "--method", method,
+                  *(() if method == "free" else ("--size", "3,2")), "--jobs", "1", "--no-report")
+        line = next(ln for ln in run.stdout.splitlines() if ln.startswith("s72-y-np-bool"))
+        assert ": error" in line and "a bool is not a number of the IR" in run.stdout, run.stdout[-2000:]
+
+
+def test_a_users_symbolic_attempt_is_forked_from_n_2_in_a_worker():
+    """Further statements, finding 1: a complex claim of W(3, r) of a claims file ran flint out of memory at n = 3
+    inside the worker (its symbolic attempt was forked from n = 4 on only), which ended the run in `error` where auto
+    goes on with the modular method (`checked` after the exact attempt died).  A claim the cost model was never
+    measured on is now forked from n = 2 on; the catalog's claims keep their measured rule."""
+    import dataclasses
+
+    from stiefelsym.claims import load_catalog
+    from stiefelsym.methods.fixed_size import isolates
+    c = load_catalog().get("neumann-lax")
+    user = dataclasses.replace(c, id="s72-user-claim")
+    assert isolates(user, 2, 1, in_worker=True) and isolates(user, 3, 2, in_worker=True)
+    assert not isolates(c, 3, 1, in_worker=True)
