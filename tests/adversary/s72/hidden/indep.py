@@ -18,7 +18,8 @@ def rand_point(n, r, rng, comp=1):
     if r == n and np.sign(np.linalg.det(Q)) != comp:
         Q[:, 0] = -Q[:, 0]
     X = Q[:, :r]
-    W = rng.normal(size=(r, r)); W = W - W.T
+    W = rng.normal(size=(r, r))
+    W = W - W.T
     Z = rng.normal(size=(n, r))
     P = X @ W + (np.eye(n) - X @ X.T) @ Z
     return X, P
@@ -28,7 +29,9 @@ def sym_basis(r):
     B = []
     for i in range(r):
         for j in range(i, r):
-            E = np.zeros((r, r)); E[i, j] = 1; E[j, i] = 1
+            E = np.zeros((r, r))
+            E[i, j] = 1
+            E[j, i] = 1
             B.append(E)
     return B
 
@@ -37,17 +40,21 @@ def skew_basis(m):
     B = []
     for i in range(m):
         for j in range(i + 1, m):
-            E = np.zeros((m, m)); E[i, j] = 1; E[j, i] = -1
+            E = np.zeros((m, m))
+            E[i, j] = 1
+            E[j, i] = -1
             B.append(E)
     return B
 
 
 def grad(H, X, P):
     """Ambient gradient (H_X, H_P) by complex step."""
-    HX = np.zeros(X.shape); HP = np.zeros(P.shape)
+    HX = np.zeros(X.shape)
+    HP = np.zeros(P.shape)
     for i in range(X.shape[0]):
         for j in range(X.shape[1]):
-            E = np.zeros(X.shape, dtype=complex); E[i, j] = 1j * H_CS
+            E = np.zeros(X.shape, dtype=complex)
+            E[i, j] = 1j * H_CS
             HX[i, j] = np.imag(H(X + E, P.astype(complex))) / H_CS
             HP[i, j] = np.imag(H(X.astype(complex), P + E)) / H_CS
     return HX, HP
@@ -82,7 +89,8 @@ def flow(H, X, P, eps=0.0, twisted=False):
     M = np.array(cols).T
     sol = np.linalg.solve(M, -b0)
     k = len(SB)
-    Lam = sum(c * E for c, E in zip(sol[:k], SB)); Pi = sum(c * E for c, E in zip(sol[k:], SB))
+    Lam = sum(c * E for c, E in zip(sol[:k], SB))
+    Pi = sum(c * E for c, E in zip(sol[k:], SB))
     return vel(Lam, Pi)
 
 
@@ -171,9 +179,11 @@ def H_man3(A):
 
 def c03(n, r, X, P, A, rng):
     lam = rng.normal()
-    xi = rng.normal(size=(n, n)); xi = xi - xi.T
+    xi = rng.normal(size=(n, n))
+    xi = xi - xi.T
     Xd, Pd = flow(H_man3(A), X, P)
-    F = Phi(X, P); AF = man3(A, F)
+    F = Phi(X, P)
+    AF = man3(A, F)
     Fd = dcs(lambda X, P: Phi(X, P) + lam * A, X, P, Xd, Pd)
     C = lambda a, b: a @ b - b @ a
     t = rel([C(A, man3(A, xi)) - C(A @ A @ A, xi), Xd - AF @ X, Pd - AF @ P, Fd - C(AF, F),
@@ -194,7 +204,8 @@ def c04(n, r, X, P, A, rng):
 
 
 def c05(n, r, X, P, A, rng):
-    x = rng.normal(size=(n, n)); b = rng.normal(size=(n, n))
+    x = rng.normal(size=(n, n))
+    b = rng.normal(size=(n, n))
     sk = lambda M: (M - M.T) / 2
     sy = lambda M: (M + M.T) / 2
     kil = lambda a, b: -np.trace(a @ b) / 2
@@ -204,7 +215,8 @@ def c05(n, r, X, P, A, rng):
         G = np.zeros((n, n))
         for i in range(n):
             for j in range(n):
-                E = np.zeros((n, n), dtype=complex); E[i, j] = 1j * H_CS
+                E = np.zeros((n, n), dtype=complex)
+                E[i, j] = 1j * H_CS
                 G[i, j] = np.imag(fun(x + E)) / H_CS
         return -2 * G.T   # <g, dx> = -1/2 tr(g dx) = df
 
@@ -217,12 +229,14 @@ def c05(n, r, X, P, A, rng):
     for k in (1, 2, 3):
         ft = lambda y, k=k: trp(sk(y) / 2 + sy(y) - A / 4, k)
         ff = lambda y, k=k: trp(sk(y) / 2 + sy(y) - A / 2, k)
-        res_t.append(T(gradf(ft), b)); res_f.append(T(gradf(ff), b))
+        res_t.append(T(gradf(ft), b))
+        res_f.append(T(gradf(ff), b))
     return rel(res_t), rel(res_f)
 
 
 def c06(n, r, X, P, A, rng):
-    y = rng.normal(size=(r, r)); y = y - y.T
+    y = rng.normal(size=(r, r))
+    y = y - y.T
     dP = X @ y / 2
     dPsi = X.T @ dP - dP.T @ X
     t = rel([dPsi - y, X.T @ dP + dP.T @ X])
@@ -250,7 +264,8 @@ def c08(n, r, X, P, A, rng):
 def mag_euk_check(n, rng):
     """Sanity of the numpy twisted flow against the printed (mag-euk) (r = 2, κ = −½)."""
     X, P = rand_point(n, 2, rng)
-    A = np.diag(rng.uniform(0.5, 3, n)); eps = rng.normal()
+    A = np.diag(rng.uniform(0.5, 3, n))
+    eps = rng.normal()
     Xd, Pd = flow(H_neum(-0.5, A), X, P, eps=eps, twisted=True)
     e1, e2, p1, p2 = X[:, 0], X[:, 1], P[:, 0], P[:, 1]
     pd1 = -A @ e1 + (e1 @ A @ e1 - p1 @ p1 - eps * (e1 @ p2)) * e1 + (e1 @ A @ e2 - p1 @ p2) * e2 + eps * p2
@@ -259,8 +274,10 @@ def mag_euk_check(n, rng):
 
 def c09(n, r, X, P, A, rng):
     lam = rng.normal()
-    eta = rng.normal(size=(r, r)); eta = eta - eta.T
-    N = rng.normal(size=(r, r)); N = N + N.T
+    eta = rng.normal(size=(r, r))
+    eta = eta - eta.T
+    N = rng.normal(size=(r, r))
+    N = N + N.T
     f = lambda X, P: np.trace(Psi(X, P) @ Psi(X, P))
     t = rel([bracket(f, lambda X, P: np.trace(P.T @ P), X, P),
              bracket(f, lambda X, P: np.trace(X.T @ A @ X), X, P),
@@ -275,9 +292,11 @@ def c10(n, r, rng, comp=1):
     G = rng.normal(size=(n, n)) + 1j * rng.normal(size=(n, n))
     Q, _ = np.linalg.qr(G)
     Z = Q[:, :r]
-    W = rng.normal(size=(r, r)) + 1j * rng.normal(size=(r, r)); W = W - W.conj().T
+    W = rng.normal(size=(r, r)) + 1j * rng.normal(size=(r, r))
+    W = W - W.conj().T
     Zd = Z @ W + (np.eye(n) - Z @ Z.conj().T) @ (rng.normal(size=(n, r)) + 1j * rng.normal(size=(n, r)))
-    A = np.diag(rng.uniform(0.5, 3, n)); lam = rng.normal()
+    A = np.diag(rng.uniform(0.5, 3, n))
+    lam = rng.normal()
     R = np.linalg.inv(lam * np.eye(n) - A)
     Fp = np.linalg.inv(np.eye(n) - lam * A)
 
@@ -341,10 +360,14 @@ def c13(n, r, X, P, A, rng):
 
 
 def c14(n, r, X, P, A, rng):
-    S = rng.normal(size=(r, r)); S = S + S.T
-    T = rng.normal(size=(r, r)); T = T + T.T
-    eta = rng.normal(size=(r, r)); eta = eta - eta.T
-    xi = rng.normal(size=(n, n)); xi = xi - xi.T
+    S = rng.normal(size=(r, r))
+    S = S + S.T
+    T = rng.normal(size=(r, r))
+    T = T + T.T
+    eta = rng.normal(size=(r, r))
+    eta = eta - eta.T
+    xi = rng.normal(size=(n, n))
+    xi = xi - xi.T
     f = lambda X, P: np.trace(S @ P.T @ P)
     fA = lambda X, P: np.trace(S @ P.T @ A @ P)
     g = lambda X, P: np.trace(T @ P.T @ P)
