@@ -382,6 +382,9 @@ class Claim:
         if type(self.free_max_r) is not int or self.free_max_r < 0:
             raise ValueError(f"claim {self.id}: free_max_r is the largest r (an int >= 0) at which the "
                              f"dimension-free method is tried on the family of sizes r = k; not {self.free_max_r!r}")
+        if self.fails_at is not None and (not callable(self.fails_at) or isinstance(self.fails_at, type)):
+            raise ValueError(f"claim {self.id}: fails_at is a function of the size, (n, r) -> bool, True where the "
+                             f"statement fails as printed (e.g. fails_at=lambda n, r: r >= 2); not {self.fails_at!r}")
         if (self.expect == "fails" or self.fails_at is not None) and not self.erratum.strip():
             raise ValueError(f"claim {self.id}: a statement expected to fail must be a documented erratum "
                              "(say what is wrong with erratum=...)")

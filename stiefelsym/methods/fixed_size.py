@@ -2469,6 +2469,11 @@ def _point_rank(R: Rank, field: Field, bound_text: str) -> tuple[str, str]:
         if exact and not R.generic:
             return (f"rank {rk} {where} of T*V, below the rank {R.expected} {_who()} states at every point "
                     f"(certain)"), "certain"
+        if exact and _constant_entries(R, field):
+            # a matrix of constants (no parameter entered any entry, numerator or denominator) has one rank over Q,
+            # this one, at every point (mod p it could drop where p divides its minors: not decided there)
+            return (f"rank {rk} {where}; every entry of the matrix is a constant (no parameter of the point entered "
+                    f"it), so its rank is {rk} at every point, below {R.expected} (certain)"), "certain"
         return f"rank {rk} {where} ({_stated(R.expected)}); a special point or a wrong count", "mismatch"
     generic = (f"rank {rk} {where}: generic rank >= {rk} (certain); generic rank <= {rk} "
                f"unless a ({rk + 1})-minor ({bound_text}) vanishes here")
@@ -2747,6 +2752,19 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
                        f"Established here: {res.certificate}")
         res.false_pass_bound = None
     return res
+
+
+def _constant_entries(R: Rank, field: Any) -> bool:
+    """Whether every entry of the rank's matrix, evaluated over a field with degree markers, is a constant of
+    the point (numerator of degree 0 and no factor in its denominator, as in :func:`_lent_constant`)."""
+    marker = getattr(field, "marker", None)
+    if marker is None:
+        return False
+    for x in R.matrix._a.flat:
+        m = marker(x)
+        if not (m.num <= 0 and not any(m.f.factor_degree[k] for k in m.den)):
+            return False
+    return True
 
 
 def _lent_constant(checks: dict[str, Any], field: PairField, deg: DegreeBound) -> bool:

@@ -88,3 +88,24 @@ def test_a_users_symbolic_attempt_is_forked_from_n_2_in_a_worker():
     user = dataclasses.replace(c, id="s72-user-claim")
     assert isolates(user, 2, 1, in_worker=True) and isolates(user, 3, 2, in_worker=True)
     assert not isolates(c, 3, 1, in_worker=True)
+
+
+OWN = Path(__file__).parent / "s72" / "own"
+
+
+def test_a_constant_matrix_of_a_lower_rank_fails_under_rational():
+    """Further statements, finding 5 (in part): a rank stated of a matrix none of whose entries depends on the point
+    is decided by its rank at one exact point (rational: fails, certain); modular stays inconclusive (the rank of a
+    constant matrix may drop mod p), exact refutes it over the function field."""
+    run = cli("verify", "--claims", str(OWN / "constant_rank.py"), "--method", "rational", "--method", "modular",
+              "--method", "exact", "--size", "3,2", "--jobs", "1", "--no-report")
+    verdicts = {ln.split()[2].rstrip(":"): ln.split(": ")[1].split()[0]
+                for ln in run.stdout.splitlines() if ln.startswith("t72-const-rank")}
+    assert verdicts == {"rational": "fails", "modular": "inconclusive", "exact": "fails"}, run.stdout[-2000:]
+
+
+def test_fails_at_must_be_a_function_of_the_size():
+    """fails_at="all" was accepted when the file loaded and every run said error ("'str' object is not callable");
+    it is refused when the claim is declared, with what fails_at is (exit 2)."""
+    run = cli("verify", "--claims", str(OWN / "fails_at_string.py"), "--size", "3,2", "--no-report")
+    assert run.returncode == 2 and "fails_at is a function of the size" in run.stderr, run.stderr[-2000:]
