@@ -295,6 +295,7 @@ def _user_claims(paths: str | Sequence[str], sizes: Sequence[Any] = (), only: Se
             # the tracing is not part of any run's time (nor of --timeout): said, so that its wait is explained
             click.echo(f"note: importing and tracing {path} took {took:.0f} s, before the runs and outside "
                        "--timeout (see its help)", err=True)
+        _tracing_budget_notes(reg, path)
         for c in reg:
             if c.id in merged:
                 raise InputError(f"claim {c.id!r} is defined in both {origin[c.id]} and {path}")
@@ -302,6 +303,16 @@ def _user_claims(paths: str | Sequence[str], sizes: Sequence[Any] = (), only: Se
             origin[c.id] = path
     merged.origin = origin
     return merged
+
+
+def _tracing_budget_notes(reg: Registry, path: str) -> None:
+    """A note on stderr for each function of the file whose tracing ran out of the engine's tracing budget (or
+    whose process died) in the file's child process: which claim, where, which limit (its runs there are
+    ``inconclusive`` or ``error`` and say so too; the other claims are verified as usual)."""
+    for c in reg:
+        for label, func in [("", c.func)] + [(f" (correction {k.description!r})", k.func) for k in c.corrections]:
+            for text in getattr(func, "budgets", lambda: [])():
+                click.echo(f"note: claim {c.id}{label} of {path}: {text}", err=True)
 
 
 def claims_paths(paths: Sequence[str]) -> list[str]:

@@ -464,9 +464,10 @@ def _run_claim(c: Claim, more: dict | None, timeout: float, memory: int | None) 
         results.append([f, None if key is None else list(key), mark])
         i += 1
         if timed_out:       # the function's other keys: not tried again (one budget per function)
+            skipped = {"budget": "timeout", "after": "symbolic" if key is None else list(key)}
             while i < len(jobs) and jobs[i][1] == f:
                 _, f2, k2 = jobs[i]
-                results.append([f2, None if k2 is None else list(k2), mark])
+                results.append([f2, None if k2 is None else list(k2), skipped])
                 i += 1
         i = _next_job(jobs, i, has_free)
     assert meta is not None
@@ -704,20 +705,51 @@ class _Budget:
     ``check`` or ``derive``, which run it in their own process), so the run's verdict is ``inconclusive`` (out of
     time) or ``error``."""
 
-    __slots__ = ("what", "how")
+    __slots__ = ("what", "how", "after", "skipped")
 
     def __init__(self, data: dict) -> None:
         self.what = _get(data, "budget", str)
         self.how = _get(data, "how", str, optional=True) or ""
         if self.what not in ("timeout", "died"):
             raise WireError(f"an unknown budget outcome {self.what!r}")
+        # a key not traced because the function ran out of time at an earlier one ("symbolic" or (n, r), r = k)
+        after = _get(data, "after", str, list, optional=True)
+        if after is not None and after != "symbolic" and not (
+                type(after) is list and len(after) == 2 and type(after[1]) is int
+                and (type(after[0]) is int or after[0] == "r")):
+            raise WireError("a budget's earlier key that is not 'symbolic', (n, r) or a family (\"r\", k)")
+        self.skipped = after is not None
+        self.after = None if after is None or after == "symbolic" else tuple(after)
+        if self.skipped and self.what != "timeout":
+            raise WireError("a key left untraced after an outcome that is not a timeout")
 
-    def throw(self) -> None:
+    def throw(self, where: str = "") -> None:
+        raise TraceEnded(self.text(where), timeout=self.what == "timeout")
+
+    def text(self, where: str = "") -> str:
+        """What happened, ``where`` (" at (3,2)", " with symbolic sizes"): the limit and whether it can be raised
+        (the verifying process's own :data:`CLAIM_SECONDS`, not a number the child sent)."""
+        if self.skipped:
+            first = f"its tracing{_where(self.after)}"
+            return (f"exceeded its time budget before it was traced{where}: {first} in its claims file's child "
+                    f"process had run out of the engine's tracing budget of {CLAIM_SECONDS:.0f} s per function and "
+                    "size, and a function that runs out of it is not traced again (the budget is not --timeout "
+                    "and is the same in every run; see the guide, 'A claims file')")
         if self.what == "timeout":
-            raise TraceEnded("exceeded its time budget while its claims file's child process traced it",
-                             timeout=True)
-        raise TraceEnded(f"the tracing of the claim ended without a result ({self.how or 'its process died'}) in "
-                         "its claims file's child process")
+            return (f"exceeded its time budget while its claims file's child process traced it{where}: the tracing "
+                    f"(the claim's code, run twice and compared) did not finish within the engine's tracing budget "
+                    f"of {CLAIM_SECONDS:.0f} s per function and size, which is not --timeout and is the same in "
+                    "every run (see the guide, 'A claims file'): make the claim's code cheaper at that size")
+        return (f"the tracing of the claim ended without a result ({self.how or 'its process died'}){where} in its "
+                f"claims file's child process (whose address space is limited to {CLAIM_MEMORY_GIB:g} GiB)")
+
+
+def _where(key: Any) -> str:
+    if key is None:
+        return " with symbolic sizes"
+    if key[0] == "r":
+        return f" on the family r = {key[1]}"
+    return f" at ({key[0]},{key[1]})"
 
 
 def _graph(data: Any) -> Any:
@@ -799,11 +831,27 @@ class TracedFunction:
             have = ", ".join(f"({a},{b})" for a, b in self.sizes()) or "none"
             raise NoGraph(f"{self.__name__} has no graph {where}: its claims file was traced in a child process "
                           f"at the sizes the command needed only ({have})")
-        if type(entry) in (_Recorded, _Budget):
+        if type(entry) is _Budget:
+            entry.throw(_where(key))
+        if type(entry) is _Recorded:
             entry.throw()
         if type(entry) is dict:
             entry = self._table[key] = self._replay(_graph(entry), name=self.__name__)
         return entry(s)
+
+    def budgets(self) -> list[str]:
+        """What ran out of a tracing budget (:meth:`_Budget.text`), one text per outcome with every key it was
+        met at (a function out of time with symbolic sizes is not traced at its sizes either), for the note on
+        standard error."""
+        keys: dict[tuple, list] = {}
+        for k, e in self._table.items():
+            if type(e) is _Budget:
+                keys.setdefault((e.what, e.how, e.skipped, e.after), []).append((k, e))
+        out = []
+        for ks in keys.values():
+            shown = [_where(k).strip() for k, _ in ks[:4]] + ([f"{len(ks) - 4} more"] if len(ks) > 4 else [])
+            out.append(ks[0][1].text(" " + ", ".join(shown)))
+        return out
 
     def __repr__(self) -> str:
         return f"<traced claim function {self.__name__}>"
