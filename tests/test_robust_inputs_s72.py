@@ -95,3 +95,56 @@ def test_a_claim_that_loops_at_one_size_says_so_once_and_the_others_are_verified
     # one budget of 3 s was spent, not one per size or per trace (4 sizes at n >= 3 are listed)
     assert took < 3 * 3.0 + 20, took
     assert "exceeded its time budget before it was traced at (3,2)" in proc.stdout
+
+
+# --------------------------------------------------------------------------- 1. expressions nested deeply
+
+DEEP = textwrap.dedent('''
+    from stiefelsym import Count, admissible, claim
+
+    def built(t, k):
+        return t.X if k == 0 else built(t, k - 1) + t.X
+
+    @claim("recursive-helper", paper="prep", kind="id", sizes=admissible(n_max=4))
+    def recursive_helper(s):
+        """(k + 1) X, built by a helper that calls itself once per term."""
+        return {"m": built(s, 5000) - 5001 * s.X}
+
+    @claim("count-by-steps", paper="prep", kind="dim", sizes=admissible(n_max=4))
+    def count_by_steps(s):
+        """A count built one step at a time, 100,000 steps."""
+        c = (s.X.T @ s.X).shape[0]
+        for _ in range(100000):
+            c = c + 1
+        return {"c": Count(c, s.r + 100000)}
+
+    @claim("sum-by-steps", paper="prep", kind="id", sizes=admissible(n_max=4))
+    def sum_by_steps(s):
+        """20,001 X as 20,000 nested sums."""
+        M = s.X
+        for _ in range(20000):
+            M = M + s.X
+        return {"m": M - 20001 * s.X}
+''')
+
+
+@needs_fork
+def test_an_expression_nested_too_deeply_is_an_error_that_says_so(tmp_path):
+    """Stop 72: a claim whose helper calls itself once per term gave "RecursionError: maximum recursion depth
+    exceeded", which says neither whose frames nor what to do.  Now the verdict is error with the limit and the
+    way out; the engine's own walks are loops, so the same expressions built with a loop are verified (a count of
+    100,000 steps, a matrix of 20,000 nested sums), and the results file is checked again (its graphs traced,
+    digested and replayed)."""
+    (tmp_path / "deep.py").write_text(DEEP)
+    proc = cli("verify", "--claims", tmp_path / "deep.py", "--size", "3,2", "--method", "exact",
+               "--report-dir", tmp_path / "out", cwd=tmp_path)
+    no_traceback(proc)
+    assert proc.returncode == 1, proc.stderr
+    got = verdicts(proc.stdout)
+    assert got == {("recursive-helper", "(3,2)"): "error", ("count-by-steps", "(3,2)"): "proved",
+                   ("sum-by-steps", "(3,2)"): "proved"}, proc.stdout
+    assert "deeper than Python's recursion limit (1000 frames" in proc.stdout
+    assert "build it with a loop" in proc.stdout and "deep.py:5" in proc.stdout
+    check = cli("check", tmp_path / "out" / "results.json", cwd=tmp_path)
+    no_traceback(check)
+    assert check.returncode == 0 and "3 records checked, 0 rejected" in check.stdout, check.stdout + check.stderr

@@ -28,6 +28,18 @@ class NotDeterministic(ValueError):
     """Two tracings of a claim gave different graphs."""
 
 
+def recursion_text() -> str:
+    """What a RecursionError met while a claim was traced means (Python's own message says neither whose frames
+    nor what to do).  The engine's walks of a graph are loops (a graph of 100,000 nested sums is traced, checked,
+    written and verified); what has a depth is the claim's own Python: a helper that calls itself once per term or
+    per level of nesting, with the engine's tracer on top of its frames."""
+    import sys
+    return (f"the claim's code went deeper than Python's recursion limit ({sys.getrecursionlimit()} frames, the "
+            "engine's tracer on top of the claim's own) while it was traced: an expression built by a function "
+            "that calls itself once per term or level of nesting is nested too deeply for Python; build it with a "
+            "loop (M = M + X in a for loop) or sum(terms, start), which the engine handles however deep")
+
+
 class GraphUnavailable(ValueError):
     """No graph of the claim at the size asked for is at hand (a claims file traced in a child process at the
     sizes a run needed only): not a fault of the claim, nothing said about it at that size."""

@@ -3585,7 +3585,11 @@ def _describe(exc: BaseException) -> str:
             named_by_file = sealed() or getattr(exc, "_recorded_at", None) is not None
             where = (f" (at {name}:{lineno}, as the code names its file)" if named_by_file
                      else f" (at {_shown_path(name)}:{lineno})")
-    return f"{type(exc).__name__}: {exc}{where}"
+    text = str(exc)
+    if type(exc) is RecursionError:         # Python's own message says neither whose frames nor what to do
+        from stiefelsym.ir import recursion_text
+        text = recursion_text()
+    return f"{type(exc).__name__}: {text}{where}"
 
 
 def _shown_path(name: str) -> str:

@@ -218,6 +218,9 @@ def _refusal(exc: BaseException) -> dict:
         message = str(exc)
     except Exception:   # noqa: BLE001 - a message that does not print
         message = "(no message)"
+    if type(exc) is RecursionError:
+        from stiefelsym.ir import recursion_text
+        message = recursion_text()
     return {"error": [type(exc).__name__, message], "at": where}
 
 
