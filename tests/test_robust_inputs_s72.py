@@ -148,3 +148,37 @@ def test_an_expression_nested_too_deeply_is_an_error_that_says_so(tmp_path):
     check = cli("check", tmp_path / "out" / "results.json", cwd=tmp_path)
     no_traceback(check)
     assert check.returncode == 0 and "3 records checked, 0 rejected" in check.stdout, check.stdout + check.stderr
+
+
+# --------------------------------------------------------------------------- 3. bad input at the command line
+
+def test_a_results_file_that_is_a_json_list_or_a_directory_is_bad_input(tmp_path):
+    """Stop 72: `check` of a JSON list said "TypeError: list indices must be integers or slices, not str", and
+    `check`/`report` of a directory said "results file not found" (it is there: it is a folder)."""
+    (tmp_path / "list.json").write_text("[1, 2]")
+    proc = cli("check", tmp_path / "list.json", cwd=tmp_path)
+    no_traceback(proc)
+    assert proc.returncode == 2 and "its top level is a JSON list, not an object" in proc.stderr, proc.stderr
+    for args in (("check", tmp_path), ("report", "--results", tmp_path, "--report-dir", tmp_path / "out")):
+        proc = cli(*args, cwd=tmp_path)
+        no_traceback(proc)
+        assert proc.returncode == 2 and f"{tmp_path} is a directory" in proc.stderr, proc.stderr
+        assert str(tmp_path / "results.json") in proc.stderr
+
+
+@pytest.mark.parametrize("args, message", [
+    (("verify", "euclidean-flow", "--size", "2,3"), "needs r <= n"),
+    (("verify", "euclidean-flow", "--size", "0,0"), "needs n >= 1"),
+    (("verify", "euclidean-flow", "--size", "3,2", "--timeout", "0"), "'--timeout'"),
+    (("verify", "euclidean-flow", "--size", "3,2", "--jobs", "0"), "'--jobs'"),
+    (("verify", "euclidean-flow", "--size", "3,2", "--seed", "-1"), "'--seed'"),
+    (("verify", "euclidean-flow", "--size", "3,2", "--memory", "0.0001"), "beyond the memory budget"),
+    (("verify", "euclidean-flow", "--size", "500,2", "--method", "exact"), "beyond the budget"),
+    (("mutate", "euclidean-flow", "--size", "0,0"), "needs 1 <= r <= n"),
+])
+def test_bad_options_are_refused_with_a_message(args, message):
+    """The sweep of stop 72 over sizes, seeds, jobs, budgets: each refused with exit status 2 and its reason (a
+    guard against a regression; each was already so)."""
+    proc = cli(*args)
+    no_traceback(proc)
+    assert proc.returncode == 2 and message in proc.stderr, proc.stderr

@@ -1165,6 +1165,9 @@ def report(results_file: Path | None, report_dir: Path | None, claims_files: tup
     hand in the file (a fails turned into checked, say) is rendered as edited; ``stiefelsym check FILE``
     or --check runs every record again and refuses such a file."""
     source = results_file or (report_dir or DEFAULT_REPORT_DIR) / "results.json"
+    if source.is_dir():
+        raise InputError(f"--results {source} is a directory: name the results file in it (e.g. "
+                         f"{source / 'results.json'}), or give the directory as --report-dir")
     if not source.is_file():
         raise InputError(f"results file not found: {source} (run `stiefelsym verify` first)")
     try:

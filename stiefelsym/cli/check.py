@@ -31,10 +31,17 @@ def check(results_file: Path, no_rerun: bool, claims_files: tuple[str, ...]) -> 
     """Re-trace every record's claim, compare the graph digests, run every fixed-size record again
     (its method, size and seed) and compare the verdicts, re-derive and re-check every
     dimension-free certificate; exit 1 if any record does not hold up."""
+    if results_file.is_dir():
+        raise InputError(f"{results_file} is a directory: name the results file in it (e.g. "
+                         f"{results_file / 'results.json'})")
     if not results_file.is_file():
         raise InputError(f"results file not found: {results_file}")
     try:
         payload = parse_json(results_file.read_text(encoding="utf-8"))
+        if not isinstance(payload, dict):
+            raise TypeError(f"its top level is a JSON {type(payload).__name__}, not an object with the results "
+                            "and the meta of a run (a file written by `stiefelsym verify --report-dir`, or "
+                            "--format json, is one)")
         records = payload["results"]
         meta = payload["meta"]
         if not isinstance(records, list) or not all(isinstance(r, dict) for r in records):
