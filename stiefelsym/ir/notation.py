@@ -149,14 +149,22 @@ def add(*terms: tuple[int, Expr]) -> Expr:
         kids.append(t)
     # A − A = 0: a letter and its negative cancel (a zero block written so); larger terms stay, so that a
     # change that makes two terms cancel reads as the change of one of them
-    i = 0
-    while i < len(kids):
-        j = None if kids[i].kind != "atom" else next(
-            (j for j in range(i + 1, len(kids)) if kids[j].key == kids[i].key and signs[j] == -signs[i]), None)
-        if j is None:
-            i += 1
+    # (in one pass: each letter cancels the first later one of the other sign not already cancelled, the pairs
+    # the quadratic search from the left made; the letters of one key left waiting all have one sign)
+    waiting: dict[bytes, list[int]] = {}
+    gone: set[int] = set()
+    for i, k in enumerate(kids):
+        if k.kind != "atom":
             continue
-        del kids[j], signs[j], kids[i], signs[i]
+        queue = waiting.setdefault(k.key, [])
+        if queue and signs[queue[0]] == -signs[i]:
+            gone.add(queue.pop(0))
+            gone.add(i)
+        else:
+            queue.append(i)
+    if gone:
+        signs = [u for i, u in enumerate(signs) if i not in gone]
+        kids = [k for i, k in enumerate(kids) if i not in gone]
     if not kids:
         return ZERO
     if len(kids) == 1 and signs[0] == 1:
