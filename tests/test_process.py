@@ -653,7 +653,8 @@ def _attempt_in_a_worker(task):
 def test_small_symbolic_attempts_stay_in_the_worker_and_heavy_ones_are_forked():
     from stiefelsym.methods import fixed_size as methods
     ok = _claim("ok", _ok, sizes=admissible(n_max=6))
-    assert not methods.isolates(ok, 3, 2, in_worker=True)
+    assert not methods.isolates(ok, 1, 1, in_worker=True)
+    assert methods.isolates(ok, 2, 1, in_worker=True) and methods.isolates(ok, 3, 2, in_worker=True)   # a user's, from n = 2
     assert methods.isolates(ok, 4, 2, in_worker=True)     # a claim the cost model never measured (a user's)
     assert methods.isolates(ok, methods.ISOLATE_MIN_N, 2, in_worker=True)
     from stiefelsym.claims import load_catalog

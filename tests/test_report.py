@@ -416,8 +416,8 @@ def test_mutation_section_in_markdown(results):
     md = render_markdown(results, {"seed": 0}, mutation=_mutation())
     assert re.findall(r"^## (.*)$", md, re.M)[-1] == "Mutation analysis"
     section = md[md.index("## Mutation analysis"):]
-    assert "| `prep` | rational | checked | 3 | 1 | 0 | 1 | 0 | 1 | 1 | 0 | 0 | 50.0% |" in section
-    assert "| `prep` | free | undecided | 3 | 0 | 0 | 1 | 0 | 1 | 1 | 0 | 0 | – |" in section
+    assert "| `prep` | rational | checked | 3 | 1 | 0 | 1 | 0 | 1 | 1 | 0 | 0 | 50.0% | 50.0% |" in section
+    assert "| `prep` | free | undecided | 3 | 1 | 0 | 1 | 0 | 1 | 1 | 0 | 0 | – | – |" in section
     assert "**1 survivor**" in section and "**survived float, free**" in section
     assert "`prep#2` line 14: remove the transpose in `Lam.T` in `Lam - Lam.T`" in section
     assert "Command: `stiefelsym mutate prep --seed 0`." in section
@@ -451,10 +451,19 @@ def test_mutation_section_in_latex_compiles(results, tmp_path):
 
 def test_kill_rate_is_never_rounded_up_to_100_percent():
     from stiefelsym.reports.report import kill_rate
-    assert kill_rate({"total": 1001, "killed": 1000, "equivalent": 0}) == "99.9%"
-    assert kill_rate({"total": 5, "killed": 4, "equivalent": 1}) == "100%"
+    assert kill_rate({"total": 1001, "fails": 999, "error": 1, "killed": 1000, "equivalent": 0}) == "99.9%"
+    assert kill_rate({"total": 1001, "killed": 1000, "equivalent": 0}, decisive=False) == "99.9%"
+    assert kill_rate({"total": 5, "fails": 2, "error": 2, "killed": 4, "equivalent": 1}) == "100%"
     assert kill_rate({"total": 5, "killed": 0, "equivalent": 5}) == "–"
-    assert kill_rate({"total": 5, "killed": 5, "equivalent": 0, "baseline_passes": False}) == "–"
+    assert kill_rate({"total": 5, "fails": 5, "killed": 5, "equivalent": 0, "baseline_passes": False}) == "–"
+
+
+def test_undecided_mutants_are_no_refutations():
+    """A method that leaves every mutant undecided refutes none of them (stop 72's review, D1): its refuted % is 0
+    and its not passed % 100."""
+    from stiefelsym.reports.report import kill_rate
+    row = {"total": 4, "killed": 3, "fails": 0, "error": 0, "inconclusive": 2, "undecided": 1, "equivalent": 1}
+    assert (kill_rate(row), kill_rate(row, decisive=False)) == ("0.0%", "100%")
 
 
 

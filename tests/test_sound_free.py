@@ -174,7 +174,7 @@ def test_a_claim_left_to_the_fixed_size_methods_says_what_it_reads():
     expect = {"pencil-rank-a1": "a rank", "mum-geod": "the eigenvalues a_i of A",
               "neumann-torus-dimension": "a Jacobian", "gen-chasles-momentum-ranges": "a count of dimensions",
               "gen-chasles2": "entries of a matrix on R^n",
-              "2r-integrals": "its statement depends on the sizes"}
+              "2r-integrals": "its statement uses a size as a number"}
     for cid, what in expect.items():
         res = run_free(cat.get(cid))
         assert res.verdict == "undecided" and "needs coordinates (fixed n, r)" in res.message, res.message
