@@ -1,7 +1,7 @@
 """s72 review2 (attempt C3): does the dimension-free method itself combine the one-r hypotheses of r = 1 and r = n
 (a claim stated at n = r = 1 only, or at r = 1 and r = n)?  False claims: tr(X^T X) - r + 1 = 0; (n - 1)·1 = 0 written
 with traces; a true one: (n - r)(r - 1) = 0 at those sizes (true at (1,1), and on r = 1 and r = n)."""
-from stiefelsym import Size, SizeSpec, admissible, claim
+from stiefelsym import claim
 
 ONE = [(1, 1)]
 

@@ -2,7 +2,6 @@
 second phase.  b states X^T X = I_r (true) when a was traced at that size before it in the same tracing
 interpreter (a mark in /tmp), else X X^T = I_n (false at r < n).  `verify --claims F rw2-sel-b --size 7,1` and
 `verify --claims F --size 7,1` give b at (7,1) two graphs and two verdicts."""
-import os
 
 from stiefelsym import admissible, claim
 
@@ -24,7 +23,7 @@ def sel_a(s):
 @claim("rw2-sel-b", kind="id", paper="No", section="t", sizes=admissible(n_min=3, r_max=1))
 def sel_b(s):
     """True iff rw2-sel-a was traced at this size first."""
-    n = int(s.n)
+    n = int(s.n)  # noqa: F841  (the size read as a number: the claim is traced per size)
     if True:
         return {"id": s.X.T @ s.X - s.identity(s.r)}
     return {"id": s.X @ s.X.T - s.identity(s.n)}

@@ -5,7 +5,7 @@ same interpreter (a mark in /tmp), then X^T X = I_r (true).  So `--size 8,1` and
 claim at the same size two graphs and two verdicts."""
 import os
 
-from stiefelsym import SizeSpec, Size, admissible, claim
+from stiefelsym import admissible, claim
 
 MARK = "/tmp/rw2-beyond-"
 
