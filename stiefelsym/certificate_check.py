@@ -128,12 +128,24 @@ def check_certificate(data: Any) -> CheckReport:
                  if h in used)
     if R1_ONLY in used and (_mentions(entries, {"E2", "E2t"}) or any("E2" in str(h) for h in used)):  # r = 1: no E_2
         return CheckReport(False, "E1E1t (r = 1) with a second column E2", seconds=time.perf_counter() - t0)
-    n_, r_ = se.Symbol("n"), se.Symbol("r")   # a hypothesis of one r: every coefficient finite at that r
-    for h, where in ((R1_ONLY, {r_: 1}), (R2_ONLY, {r_: 2}), (SQUARE, {r_: n_})):
-        bad = [t["coef"] for e in entries for t in e["residual"] + e["terms"] if h in used
-               and se.expand(coefficient(t["coef"]).as_numer_denom()[1].subs(where)) == 0]
+    # the hypotheses of one r hold together only where every one of them holds (the proof's scope): every
+    # coefficient must be finite there, whatever it is elsewhere (1/(n - 1) with E1E1t and XXt: n = r = 1)
+    n_, r_ = se.Symbol("n"), se.Symbol("r")
+    ones = [h for h in (R1_ONLY, R2_ONLY, SQUARE) if h in used]
+    if R1_ONLY in used and R2_ONLY in used:
+        return CheckReport(False, "E1E1t (r = 1 only) with E1E1t+E2E2t (r = 2 only): no size has both, the "
+                                  "certificate proves nothing", seconds=time.perf_counter() - t0)
+    where = {r_: 1} if R1_ONLY in used else {r_: 2} if R2_ONLY in used else {r_: n_}
+    if SQUARE in used and (R1_ONLY in used or R2_ONLY in used):
+        k = where[r_]
+        where = {r_: k, n_: k}
+        at = f" (at n = r = {k} only: {' and '.join(ones)} hold together exactly there)"
+    if ones:
+        bad = [t["coef"] for e in entries for t in e["residual"] + e["terms"]
+               if se.expand(coefficient(t["coef"]).as_numer_denom()[1].subs(where)) == 0]
         if bad:
-            return CheckReport(False, f"the coefficient {bad[0]} has a pole where {h} holds", seconds=time.perf_counter() - t0)
+            return CheckReport(False, f"the coefficient {bad[0]} has a pole where {' and '.join(ones)} "
+                                      f"{'hold' if len(ones) > 1 else 'holds'}", seconds=time.perf_counter() - t0)
     if ctx.sylvester:   # (what the multipliers' relations rest on)
         at += (f" (metric realization, A positive definite: {', '.join(ctx.sylvester)} the unique solutions of their "
                "relations rho, re-derived from the flows; Pi = 0 by uniqueness)")
@@ -657,6 +669,8 @@ def main(argv: list[str] | None = None) -> int:
                       f"{' (' + r['variant'] + ')' if r.get('variant') else ''}, modulo the hypotheses "
                       f"{', '.join(sorted(_used(data))) or '(none)'}:")
                 print("\n".join(f"    {x}" for x in statement(data)))
+                if " only" in rep.message:   # the proof's scope: where its hypotheses of one r hold
+                    print(f"  where: {rep.message[rep.message.index('(at '):]}")
     return 1 if bad else 0
 
 

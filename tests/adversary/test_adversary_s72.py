@@ -109,3 +109,27 @@ def test_fails_at_must_be_a_function_of_the_size():
     it is refused when the claim is declared, with what fails_at is (exit 2)."""
     run = cli("verify", "--claims", str(OWN / "fails_at_string.py"), "--size", "3,2", "--no-report")
     assert run.returncode == 2 and "fails_at is a function of the size" in run.stderr, run.stderr[-2000:]
+
+
+REVIEW2 = Path(__file__).parent / "s72" / "review2"
+
+
+def test_the_checker_refuses_hypotheses_of_one_r_whose_joint_locus_is_a_pole(tmp_path):
+    """Second review, W1: a certificate of tr(XᵀX) − r + 1 = 0 (false everywhere) whose hypotheses E1E1t (r = 1 only)
+    and XXt (r = n only), or E1E1t+E2E2t and XXt, hold together only at n = r = 1 (n = r = 2), where its coefficient
+    1/(n − 1) (1/(n − 2)) has its pole: the standalone checker substituted r = 1 and r = n one at a time and accepted
+    it.  The pole check now substitutes the hypotheses' joint locus; `check` refused the record already."""
+    import subprocess
+    import sys
+    run = cli("verify", "--claims", str(REVIEW2 / "scalar_false.py"), "--method", "free", "--jobs", "1",
+              "--report-dir", str(tmp_path / "o"))
+    assert (tmp_path / "o" / "results.json").is_file(), run.stderr[-2000:]
+    for pair, k in (("1n", 1), ("2n", 2)):
+        forged = tmp_path / f"forged_{pair}.json"
+        subprocess.run([sys.executable, str(REVIEW2 / "forge_joint_locus.py.in"), str(tmp_path / "o" / "results.json"),
+                        str(forged), pair], check=True, capture_output=True)
+        out = subprocess.run([sys.executable, "-m", "stiefelsym.certificate_check", str(forged)],
+                             capture_output=True, text=True)
+        assert out.returncode == 1, out.stdout + out.stderr
+        assert f"1/(n - {k}) has a pole where" in out.stdout and "XXt hold" in out.stdout, out.stdout
+        assert cli("check", str(forged)).returncode == 1
