@@ -1,7 +1,7 @@
 """What a user's claims file may leave behind once its interpreter has run: processes, and edits to the engine.
 
 A claims file is imported in a spawned interpreter (:mod:`stiefelsym.run.userfile`, :mod:`stiefelsym.run.sandbox`).
-In namespaces (where the platform has them) that interpreter writes nowhere but a private /tmp and its
+In namespaces (where the platform has them) that interpreter writes nowhere (its private /tmp is read-only) and its
 processes end with its pid namespace; without them it runs with the user's rights: it can start processes
 that outlive it, and write files.  Two things keep that from reaching a verdict of the verifying process,
 whichever confinement was used:

@@ -9,14 +9,18 @@ carrying the answer.  So the process that imports the file holds no
 parsed option, no command line and no environment of the run in its memory.
 
 Where the platform allows it (Linux, util-linux ``unshare``, user namespaces), the interpreter runs in new
-user, pid, mount and network namespaces with its own ``/proc`` (the verifying process and every process
+user, pid, mount, network and IPC namespaces with its own ``/proc`` (the verifying process and every process
 outside are not visible: no ``/proc/<ppid>/cmdline``), and, before anything of the file is read, it makes
 every mount read-only, mounts a private tmpfs on ``/tmp`` (what the interpreter reads there bound
 read-only into it: the claims file's folder, or the file alone when it lies in /tmp itself, never the host's
 whole /tmp; see :func:`_keep`), enters its working directory again by path in that view and locks that view by entering a user namespace of its own (mounts inherited
 from a more privileged namespace cannot be made writable again, nor unmounted, from a less privileged one).
-The file then writes nowhere but its private ``/tmp`` (and the pipes it was given), reaches no network and
-no process outside, and when the namespace's first process ends the kernel ends every process in it.
+The private ``/tmp`` is made read-only too once it holds what the interpreter reads: the file then writes nowhere
+(but the pipes it was given), reaches no network and no process outside, and when the namespace's first process
+ends the kernel ends every process in it.  Between two jobs of the interpreter (the import, each claim, each size
+of the second phase) the processes and System V IPC objects the job left are ended
+(:class:`stiefelsym.run.userfile._Between`) and no POSIX message queue can be made: nothing one claim or size saw
+reaches the next.
 
 Where that is not available (not Linux, no ``unshare``, user namespaces disabled, ``STIEFELSYM_CONFINE=spawn``)
 the same interpreter is spawned without namespaces (:data:`SPAWN`): it still holds nothing of the run, but
@@ -96,7 +100,7 @@ def namespaces_available() -> bool:
     if unshare is None:
         return False
     out = subprocess.run([unshare, "--user", "--map-root-user", "--pid", "--fork", "--mount", "--mount-proc",
-                          "--net", "true"], capture_output=True, timeout=60)
+                          "--net", "--ipc", "true"], capture_output=True, timeout=60)
     return out.returncode == 0
 
 
@@ -231,7 +235,7 @@ def _spawn(config: dict[str, Any], capture: int, seconds: float, unshare: str | 
     argv = [sys.executable, "-I", "-B", "-c", BOOT]
     if unshare is not None:
         argv = [unshare, "--user", "--map-root-user", "--pid", "--fork", "--kill-child", "--mount",
-                "--mount-proc", "--net", "--propagation", "private"] + argv
+                "--mount-proc", "--net", "--ipc", "--propagation", "private"] + argv
     conf = dict(config, confine=unshare is not None, sockets=_sockets() if unshare is not None else [])
     stdin = (json.dumps([os.path.abspath(__file__), _search_path(config.get("file"))]) + "\n"
              + json.dumps(conf)).encode()
@@ -474,6 +478,9 @@ def lock_down(keep: list[str], sockets: list[str] | None = None) -> None:
             _mount(libc, None, path, None, MS_REMOUNT | MS_BIND | MS_RDONLY | MS_NOSUID | MS_NODEV, None)
             os.close(fd)
         _mask(libc, sockets or [])
+        # the private /tmp read-only too, once what it holds is in place: no file the interpreter or its
+        # children write can carry what one claim or size saw to the next (every other mount is read-only)
+        _mount(libc, None, b"/tmp", None, MS_REMOUNT | MS_RDONLY | MS_NOSUID | MS_NODEV, TMP_OPTIONS)
         _drop_capabilities(libc)
         if libc.mount(None, b"/", None, ctypes.c_ulong(MS_REMOUNT | MS_BIND), None) == 0:
             raise OSError(0, "the root could be made writable again")
@@ -484,21 +491,18 @@ def lock_down(keep: list[str], sockets: list[str] | None = None) -> None:
 def _mask(libc: Any, sockets: list[str]) -> None:
     """An empty file mounted read-only over each of ``sockets`` that is a Unix socket in this view: a connection
     to it is refused (it is not a socket), and no mount can be changed once the capabilities are dropped."""
-    blank = "/tmp/.stiefelsym-masked-socket"
-    os.close(os.open(blank, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0))
-    try:
-        for path in sockets:
-            try:
-                if not stat.S_ISSOCK(os.lstat(path).st_mode):
-                    continue
-            except OSError:
+    blank = "/tmp/.stiefelsym-masked-socket"     # kept (empty, mode 0): the private /tmp is then made read-only,
+    os.close(os.open(blank, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0))    # which a deleted file still mounted forbids
+    for path in sockets:
+        try:
+            if not stat.S_ISSOCK(os.lstat(path).st_mode):
                 continue
-            target = path.encode("utf-8", "surrogateescape")
-            _mount(libc, blank.encode(), target, None, MS_BIND, None)
-            _mount(libc, None, target, None, MS_REMOUNT | MS_BIND | MS_RDONLY | MS_NOSUID | MS_NODEV | MS_NOEXEC,
-                   None)
-    finally:
-        os.unlink(blank)
+        except OSError:
+            continue
+        target = path.encode("utf-8", "surrogateescape")
+        _mount(libc, blank.encode(), target, None, MS_BIND, None)
+        _mount(libc, None, target, None, MS_REMOUNT | MS_BIND | MS_RDONLY | MS_NOSUID | MS_NODEV | MS_NOEXEC,
+               None)
 
 
 class _CapHeader(ctypes.Structure):
@@ -583,6 +587,21 @@ def _enter(folder: str) -> None:
         os.chdir("/")
 
 
+#: whether this process is the interpreter of a claims file confined in namespaces (set by :func:`host`): then its
+#: System V IPC objects are its own IPC namespace's, which :func:`stiefelsym.run.userfile` clears between jobs
+CONFINED = False
+
+
+def _no_message_queues() -> None:
+    """No POSIX message queue can be made by the file (RLIMIT_MSGQUEUE 0): a queue outlives the process that made
+    it, and nothing lists the queues of a namespace to clear them between jobs."""
+    try:
+        import resource
+        resource.setrlimit(resource.RLIMIT_MSGQUEUE, (0, 0))
+    except (ImportError, AttributeError, ValueError, OSError):
+        pass
+
+
 def host() -> None:
     """The spawned interpreter: read the configuration, confine itself, trace the file, write the answer."""
     config = json.loads(sys.stdin.buffer.read())
@@ -609,6 +628,9 @@ def host() -> None:
             sys.stderr.write(f"stiefelsym: no confinement for the claims file ({type(exc).__name__}: {exc})\n")
             sys.stderr.flush()
             os._exit(3)
+    global CONFINED
+    CONFINED = confined
+    _no_message_queues()
     send(_line(NAMESPACES if confined else SPAWN))     # before anything of the file runs
     import importlib
     userfile = importlib.import_module("stiefelsym.run.userfile")

@@ -410,52 +410,53 @@ def _run_claim(c: Claim, more: dict | None, timeout: float, memory: int | None) 
     has_free: dict = {}
     i = 0
     while i < len(jobs):
-        rfd, wfd = os.pipe()
-        gc.freeze()
-        pid = os.fork()
-        if pid == 0:
-            os.close(rfd)
-            code = 0
+        with _Between():     # a process the grandchild left ends with it (the next job sees none)
+            rfd, wfd = os.pipe()
+            gc.freeze()
+            pid = os.fork()
+            if pid == 0:
+                os.close(rfd)
+                code = 0
+                try:
+                    _jobs_lines(c, more, jobs, i, has_free, memory, wfd)
+                except BaseException:   # noqa: BLE001 - the parent sees where it stopped
+                    code = 1
+                finally:
+                    _flush()
+                    os._exit(code)
+            os.close(wfd)
+            gc.unfreeze()
+            buf = b""
+            timed_out = False
+            deadline = time.monotonic() + (META_SECONDS if jobs[i][0] == "meta" else timeout)
             try:
-                _jobs_lines(c, more, jobs, i, has_free, memory, wfd)
-            except BaseException:   # noqa: BLE001 - the parent sees where it stopped
-                code = 1
+                while i < len(jobs):
+                    chunk = next_chunk(rfd, deadline)
+                    if chunk is None:
+                        timed_out = True
+                        break
+                    if not chunk:
+                        break
+                    buf += chunk
+                    while b"\n" in buf and i < len(jobs):
+                        line, buf = buf.split(b"\n", 1)
+                        _beat()             # (before the line is read: a large graph takes time to parse)
+                        item = json.loads(line)
+                        if jobs[i][0] == "meta":
+                            if "failed" in item:
+                                raise ValueError(item["failed"])
+                            meta = item["meta"]
+                            jobs += _trace_jobs(c, meta)
+                        else:
+                            _, f, key = jobs[i]
+                            if key is None:
+                                has_free[f] = "error" not in item["job"]
+                            results.append([f, None if key is None else list(key), item["job"]])
+                        i = _next_job(jobs, i + 1, has_free)
+                        deadline = time.monotonic() + timeout     # (a trace: only the first job is the metadata)
             finally:
-                _flush()
-                os._exit(code)
-        os.close(wfd)
-        gc.unfreeze()
-        buf = b""
-        timed_out = False
-        deadline = time.monotonic() + (META_SECONDS if jobs[i][0] == "meta" else timeout)
-        try:
-            while i < len(jobs):
-                chunk = next_chunk(rfd, deadline)
-                if chunk is None:
-                    timed_out = True
-                    break
-                if not chunk:
-                    break
-                buf += chunk
-                while b"\n" in buf and i < len(jobs):
-                    line, buf = buf.split(b"\n", 1)
-                    _beat()             # (before the line is read: a large graph takes time to parse)
-                    item = json.loads(line)
-                    if jobs[i][0] == "meta":
-                        if "failed" in item:
-                            raise ValueError(item["failed"])
-                        meta = item["meta"]
-                        jobs += _trace_jobs(c, meta)
-                    else:
-                        _, f, key = jobs[i]
-                        if key is None:
-                            has_free[f] = "error" not in item["job"]
-                        results.append([f, None if key is None else list(key), item["job"]])
-                    i = _next_job(jobs, i + 1, has_free)
-                    deadline = time.monotonic() + timeout     # (a trace: only the first job is the metadata)
-        finally:
-            os.close(rfd)
-            _kill(pid, wait=not timed_out and i >= 0)
+                os.close(rfd)
+                _kill(pid, wait=not timed_out and i >= 0)
         _beat()         # the job that ran out of time or died has ended too
         if i >= len(jobs):
             break
@@ -562,9 +563,12 @@ def _tracer(path: str, more: dict | None, timeout: float, memory: int | None,
     except OSError:
         pass
     try:
-        reg = _import_bounded(path)
+        with _Between():        # what the import started ends with it: no process outlives it to the claims
+            reg = _import_bounded(path)
     except CatalogError as exc:
         return json.dumps({"error": str(exc)}).encode()
+    except ProcessesLeft as exc:
+        return json.dumps({"error": f"{path}: {exc}"}).encode()
     mark(IMPORTED)
     _BEAT = lambda: mark(BEAT)     # noqa: E731
     parts = []
@@ -605,36 +609,84 @@ def _tracer_by_size(path: str, requests: int, answer: int, timeout: float, memor
     import_engine()                     # once, before the forks: each child imports the file itself
     _flush()
     while True:
-        pid = os.fork()
-        if pid == 0:
-            code = 0
-            try:
-                line = b""
-                while not line.endswith(b"\n"):
-                    byte = os.read(requests, 1)      # one line only: the next is the next child's
-                    if not byte:
-                        break
-                    line += byte
-                os.close(requests)
-                if not line.strip():
-                    code = NO_MORE
-                else:
-                    data = _tracer(path, json.loads(line), timeout, memory,
-                                   lambda marker: write_fully(answer, marker)) + b"\n"
-                    write_fully(answer, data)
-            except BaseException:   # noqa: BLE001 - the verifying process sees a missing answer
-                code = 1
-            finally:
-                _flush()
-                os._exit(code)
-        _, status = os.waitpid(pid, 0)
+        with _Between():        # a process one size's child left ends with it: the next size's sees none
+            status, pid = _size_child(path, requests, answer, timeout, memory)
         if os.WIFEXITED(status) and os.WEXITSTATUS(status) == NO_MORE:
             return
         if not (os.WIFEXITED(status) and os.WEXITSTATUS(status) == 0):
-            _kill_tree_of(pid)
             how = "killed" if os.WIFSIGNALED(status) else f"exit status {os.WEXITSTATUS(status)}"
             data = json.dumps({"error": f"the tracing at one size ended without a result ({how})"}).encode()
             os.write(answer, b"\n" + data + b"\n")
+
+
+def _size_child(path: str, requests: int, answer: int, timeout: float, memory: int | None) -> tuple[int, int]:
+    """One child of the second phase (:func:`_tracer_by_size`): its wait status and pid."""
+    pid = os.fork()
+    if pid == 0:
+        code = 0
+        try:
+            line = b""
+            while not line.endswith(b"\n"):
+                byte = os.read(requests, 1)      # one line only: the next is the next child's
+                if not byte:
+                    break
+                line += byte
+            os.close(requests)
+            if not line.strip():
+                code = NO_MORE
+            else:
+                data = _tracer(path, json.loads(line), timeout, memory,
+                               lambda marker: write_fully(answer, marker)) + b"\n"
+                write_fully(answer, data)
+        except BaseException:   # noqa: BLE001 - the verifying process sees a missing answer
+            code = 1
+        finally:
+            _flush()
+            os._exit(code)
+    _, status = os.waitpid(pid, 0)
+    if not (os.WIFEXITED(status) and os.WEXITSTATUS(status) == 0):
+        _kill_tree_of(pid)
+    return status, pid
+
+
+class _Between:
+    """Between two jobs of a claims file's interpreter (the import and each claim's grandchild, each size's child of
+    the second phase): every process the job started is ended when it is (:class:`stiefelsym.run.confine.Confined`:
+    a subreaper, so that a double fork or ``setsid`` does not escape), and, confined in namespaces, the System V
+    IPC objects of the interpreter's own IPC namespace are removed.  With the read-only file system
+    (:func:`stiefelsym.run.sandbox.lock_down`) nothing a job saw reaches the next one: what a claim traces at a size
+    depends on the file and that size alone, not on which claims or sizes were traced before it."""
+
+    def __enter__(self) -> "_Between":
+        from stiefelsym.run.confine import Confined
+        self.confined = Confined().__enter__()
+        return self
+
+    def __exit__(self, *exc: Any) -> None:
+        try:
+            self.confined.__exit__(*exc)
+        finally:
+            from stiefelsym.run import sandbox
+            if sandbox.CONFINED:
+                _clear_ipc()
+
+
+def _clear_ipc() -> None:
+    """Remove every System V shared memory segment, semaphore set and message queue this IPC namespace holds (the
+    interpreter's own: ``unshare --ipc``)."""
+    import ctypes
+    libc = ctypes.CDLL(None, use_errno=True)
+    for kind, remove in (("shm", lambda i: libc.shmctl(i, 0, None)), ("sem", lambda i: libc.semctl(i, 0, 0)),
+                         ("msg", lambda i: libc.msgctl(i, 0, None))):
+        try:
+            with open(f"/proc/sysvipc/{kind}") as fh:
+                rows = fh.read().splitlines()[1:]
+        except OSError:
+            continue
+        for row in rows:
+            fields = row.split()
+            if len(fields) > 1 and fields[1].isdigit():
+                remove(int(fields[1]))      # IPC_RMID = 0
 
 
 def _kill_tree_of(pid: int) -> None:
@@ -1085,7 +1137,8 @@ def _second_phase(claims: list, needed: list[tuple[int, int]]) -> dict:
 
 
 def _by_size(more: dict) -> list[dict]:
-    """The second phase (:func:`_second_phase`) split by size: one interpreter per size, asked at that size only,
+    """The second phase (:func:`_second_phase`) split by size: one child of its interpreter per size, asked at that size
+    only (and, confined in namespaces, with nothing left by the child of another size: :class:`_Between`),
     so that a function traced there, or a size condition evaluated there, sees no other size of the run (what
     it is asked at a size depends on the file and that size alone)."""
     sizes = sorted({(p[0], p[1]) for m in more.values() for p in m["table"] + m["trace"]})

@@ -133,3 +133,26 @@ def test_the_checker_refuses_hypotheses_of_one_r_whose_joint_locus_is_a_pole(tmp
         assert out.returncode == 1, out.stdout + out.stderr
         assert f"1/(n - {k}) has a pole where" in out.stdout and "XXt hold" in out.stdout, out.stdout
         assert cli("check", str(forged)).returncode == 1
+
+
+def _verdict(run, cid):
+    line = next(ln for ln in run.stdout.splitlines() if ln.startswith(cid + " "))
+    return line.split(": ")[1].split()[0]
+
+
+def test_what_a_claim_traces_does_not_depend_on_what_was_traced_before_it():
+    """Second review, W2: claims traced at a size beyond the listed ones share one interpreter of the second phase,
+    and a claim read a mark that another left in its private /tmp (or a process it started: an abstract socket):
+    `verify CLAIM` said fails, the whole file checked, and `check` accepted the record spliced from one run into
+    the other.  The interpreter's /tmp is read-only now, and the processes and IPC objects a job leaves end with it:
+    the claim's graph, and its verdict, are the same in both runs."""
+    import pytest
+
+    from stiefelsym.run.sandbox import namespaces_available
+    if not namespaces_available():
+        pytest.skip("no user + pid + mount namespaces here (the plain spawn's stated limit)")
+    for name, b in (("tmp_state_select.py", "rw2-sel-b"), ("daemon_state_select.py", "rw2-dmn-b")):
+        common = ("--claims", str(REVIEW2 / name), "--size", "7,1", "--method", "modular", "--jobs", "1",
+                  "--no-report")
+        alone, whole = cli("verify", b, *common), cli("verify", *common)
+        assert _verdict(alone, b) == _verdict(whole, b) == "fails", alone.stdout + whole.stdout
