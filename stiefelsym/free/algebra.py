@@ -742,6 +742,8 @@ def memo_put(memo: dict, key: Any, value: Any, limit: int) -> Any:
 def _signed_term(c: Coef, body: str) -> str:
     sign, text, is_sum = _coef_parts(c)
     if not body:
+        if is_sum and sign.startswith("-"):     # − (n r + r), never − n r + r
+            return sign + rf"\left({text}\right)"
         return sign + (text if text is not None else "1")
     if text is None:
         return sign + body

@@ -156,3 +156,10 @@ def test_what_a_claim_traces_does_not_depend_on_what_was_traced_before_it():
                   "--no-report")
         alone, whole = cli("verify", b, *common), cli("verify", *common)
         assert _verdict(alone, b) == _verdict(whole, b) == "fails", alone.stdout + whole.stdout
+
+
+def test_a_derivation_puts_a_negative_constant_sum_in_parentheses():
+    """Second review, D1: for (n + 1)(tr XᵀX − r) = 0 the derivation printed R = − n r + r + (n + 1) tr(XᵀX) beside
+    nf(R) = 0 (the printed R's normal form is 2r); the constant term is − (n r + r)."""
+    run = cli("derive", "rw2-derive-sign", "--claims", str(REVIEW2 / "derive_signs.py"))
+    assert r"R &= - \left(n r + r\right) + \left(n + 1\right)" in run.stdout, run.stdout[-2000:]
