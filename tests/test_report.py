@@ -945,3 +945,16 @@ def test_a_witness_on_the_complex_stiefel_variety_is_said_in_the_papers_notation
     assert "TW\\_{n,r}, V = Ż" in md and "(Z̄ᵀZ = Iᵣ, Z̄ᵀV + V̄ᵀZ = 0 hold exactly)" in md and "Z*" not in md
     assert r"$\bar Z^TZ=I_r$" in _witness_place(w, ["Z*Z = I"], True)
     assert _realified(w).startswith(" realified") and _realified({"letters": {"X": [[1]]}}) == ""
+
+
+def test_no_line_of_a_latex_report_outgrows_texs_buffer():
+    """verification-runs.tex printed a derivation's source whole in one \\texttt, a line of 211,394 characters:
+    Debian's pdflatex (buf_size 200000) stopped there ("Unable to read an entire line").  Lines are broken at spaces
+    (a space to TeX), and a line with a comment is left whole."""
+    from stiefelsym.reports.report import TEX_LINE_MAX, short_lines
+    words = " ".join(f"w{i}" for i in range(20000))
+    out = short_lines("a\n" + words + "\nb")
+    assert max(len(x) for x in out.split("\n")) <= TEX_LINE_MAX
+    assert " ".join(out.split("\n")) == "a " + words + " b"
+    assert short_lines("% " + words) == "% " + words
+    assert short_lines(r"100\% " + words).count("\n") > 0

@@ -1512,6 +1512,44 @@ def shared_misprints(errata: Sequence[ClaimResults]) -> list[list[ClaimResults]]
     return [g for g in groups.values() if len(g) > 1]
 
 
+#: the longest line written to a LaTeX report (TeX reads a line into a buffer of its own: Debian's texlive has
+#: buf_size 200000, and a derivation's source printed whole in one \texttt once made a line of 211,394 characters)
+TEX_LINE_MAX = 2000
+
+
+def short_lines(tex: str, limit: int = TEX_LINE_MAX) -> str:
+    """``tex`` with every line longer than ``limit`` broken at spaces (an end of line is a space to TeX, so the
+    document typesets the same); a line that holds a comment (an unescaped %) is left whole."""
+    out = []
+    for line in tex.split("\n"):
+        if len(line) <= limit or _has_comment(line):
+            out.append(line)
+            continue
+        while len(line) > limit:
+            cut = line.rfind(" ", 1, limit)
+            if cut <= 0:
+                cut = line.find(" ", limit)
+                if cut <= 0:
+                    break
+            out.append(line[:cut])
+            line = line[cut + 1:]
+        out.append(line)
+    return "\n".join(out)
+
+
+def _has_comment(line: str) -> bool:
+    """Whether a line of TeX holds a % that is not escaped (preceded by an odd number of backslashes)."""
+    i = line.find("%")
+    while i >= 0:
+        k = i
+        while k > 0 and line[k - 1] == "\\":
+            k -= 1
+        if (i - k) % 2 == 0:
+            return True
+        i = line.find("%", i + 1)
+    return False
+
+
 def render_latex(results: Sequence[Result], meta: dict[str, Any] | None = None, mutation: Any = None,
                  detail: bool = False) -> str:
     """A complete ``article`` document (pdflatex, Debian's texlive-latex-base/recommended).
@@ -1577,7 +1615,7 @@ def render_latex(results: Sequence[Result], meta: dict[str, Any] | None = None, 
     out += [tex_escape(f) for f in _run_facts(meta)] + [""]
     if mutation:
         out += _tex_mutation_section(_mutation_data(mutation))
-    return "\n".join(out + [r"\end{document}", ""])
+    return short_lines("\n".join(out + [r"\end{document}", ""]))
 
 
 def _tex_claim_table(claims: list[ClaimResults]) -> list[str]:
