@@ -958,3 +958,15 @@ def test_no_line_of_a_latex_report_outgrows_texs_buffer():
     assert " ".join(out.split("\n")) == "a " + words + " b"
     assert short_lines("% " + words) == "% " + words
     assert short_lines(r"100\% " + words).count("\n") > 0
+
+
+def test_a_derivation_writes_no_term_of_coefficient_zero():
+    """The per-run document showed R = 0 tr(PᵀAξXGᵀ) + 0 tr(…) + … for twisted-form-closed: terms whose coefficient
+    expands to 0 are no terms of R."""
+    import re
+    import subprocess
+    import sys
+    out = subprocess.run([sys.executable, "-m", "stiefelsym", "derive", "twisted-form-closed"], capture_output=True,
+                         text=True, timeout=600)
+    assert out.returncode == 0 and r"R &= " in out.stdout, out.stderr[-2000:]
+    assert not re.search(r"(&= |[+-] )0 \\operatorname", out.stdout), out.stdout[:2000]

@@ -678,11 +678,15 @@ class NCPoly:
             return ["0"]
         out = []
         for (tm, w), c in self._sorted_terms():
+            if _coef_parts(c)[1] == "0":        # a coefficient that expands to 0 (the term is not there)
+                continue
             body = " ".join([rf"\operatorname{{tr}}({word_latex(t)})" for t in tm]
                             + ([word_latex(w)] if w else []))
             if not body and self.row != SCALAR:
                 body = rf"\mathbf{{I}}_{{{self.row}}}"
             out.append(_signed_term(c, body).strip())
+        if not out:
+            return ["0"]
         if out[0].startswith("+ "):
             out[0] = out[0][2:]
         return out
