@@ -1825,7 +1825,10 @@ def _tex_derivations(c: ClaimResults) -> list[str]:
         if cert:
             out.append(tex_words(cert + "."))
         for chunk in r.derivation[:MAX_DERIVATIONS]:
-            out.append(_fit_derivation(chunk) if tex_balanced(chunk) else r"\texttt{" + tex_escape(chunk) + "}")
+            # a derivation that is not balanced LaTeX is shown as its source, ragged right (a space of the typewriter
+            # font does not stretch: justified, its lines were overfull or underfull)
+            out.append(_fit_derivation(chunk) if tex_balanced(chunk)
+                       else r"{\raggedright\texttt{" + tex_escape(chunk) + r"}\par}")
         if len(r.derivation) > MAX_DERIVATIONS:
             out.append(tex_escape(f"… and {len(r.derivation) - MAX_DERIVATIONS} more entries "
                                   "(in full in results.json)."))
