@@ -315,6 +315,15 @@ def _tracing_budget_notes(reg: Registry, path: str) -> None:
                 click.echo(f"note: claim {c.id}{label} of {path}: {text}", err=True)
 
 
+def require_results_file(path: Path, option: str = "", missing: str = "", folder: str = "") -> None:
+    """Bad input unless ``path`` is a file: a directory is named as such (with the results file it may hold)."""
+    if path.is_dir():
+        raise InputError(f"{option}{path} is a directory: name the results file in it (e.g. "
+                         f"{path / 'results.json'}){folder}")
+    if not path.is_file():
+        raise InputError(f"results file not found: {path}{missing}")
+
+
 def claims_paths(paths: Sequence[str]) -> list[str]:
     """The claims files named: a directory stands for its ``*.py`` files (see
     :func:`stiefelsym.api.claims_files`); a directory without any is bad input."""
@@ -1165,11 +1174,8 @@ def report(results_file: Path | None, report_dir: Path | None, claims_files: tup
     hand in the file (a fails turned into checked, say) is rendered as edited; ``stiefelsym check FILE``
     or --check runs every record again and refuses such a file."""
     source = results_file or (report_dir or DEFAULT_REPORT_DIR) / "results.json"
-    if source.is_dir():
-        raise InputError(f"--results {source} is a directory: name the results file in it (e.g. "
-                         f"{source / 'results.json'}), or give the directory as --report-dir")
-    if not source.is_file():
-        raise InputError(f"results file not found: {source} (run `stiefelsym verify` first)")
+    require_results_file(source, "--results ", " (run `stiefelsym verify` first)",
+                         ", or give the directory as --report-dir")
     try:
         meta, results = load_results(source)
     except (OSError, ValueError, KeyError, TypeError, AttributeError, RecursionError) as exc:

@@ -13,7 +13,7 @@ from pathlib import Path
 
 import click
 
-from stiefelsym.cli import InputError, _registry, recorded_claims_files, standalone_command
+from stiefelsym.cli import InputError, _registry, recorded_claims_files, require_results_file, standalone_command
 from stiefelsym.methods.hard import HARD_CASES
 from stiefelsym.run.integrity import MAX_N_CHECKED, check_results, run_origin
 from stiefelsym.results import meta_problems, parse_json
@@ -31,11 +31,7 @@ def check(results_file: Path, no_rerun: bool, claims_files: tuple[str, ...]) -> 
     """Re-trace every record's claim, compare the graph digests, run every fixed-size record again
     (its method, size and seed) and compare the verdicts, re-derive and re-check every
     dimension-free certificate; exit 1 if any record does not hold up."""
-    if results_file.is_dir():
-        raise InputError(f"{results_file} is a directory: name the results file in it (e.g. "
-                         f"{results_file / 'results.json'})")
-    if not results_file.is_file():
-        raise InputError(f"results file not found: {results_file}")
+    require_results_file(results_file)
     try:
         payload = parse_json(results_file.read_text(encoding="utf-8"))
         if not isinstance(payload, dict):

@@ -2756,15 +2756,13 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
 
 def _constant_entries(R: Rank, field: Any) -> bool:
     """Whether every entry of the rank's matrix, evaluated over a field with degree markers, is a constant of
-    the point (numerator of degree 0 and no factor in its denominator, as in :func:`_lent_constant`)."""
+    the point: numerator of degree 0 and no factor in its denominator (the rank of [[1/x, 1/y], [1/y, 1/x]]
+    drops where x = ±y)."""
     marker = getattr(field, "marker", None)
     if marker is None:
         return False
-    for x in R.matrix._a.flat:
-        m = marker(x)
-        if not (m.num <= 0 and not any(m.f.factor_degree[k] for k in m.den)):
-            return False
-    return True
+    return all(m.num <= 0 and not any(m.f.factor_degree[k] for k in m.den)
+               for m in map(marker, R.matrix._a.flat))
 
 
 def _lent_constant(checks: dict[str, Any], field: PairField, deg: DegreeBound) -> bool:
@@ -2777,10 +2775,7 @@ def _lent_constant(checks: dict[str, Any], field: PairField, deg: DegreeBound) -
     every point."""
     if deg.numerator != 0:
         return False
-
-    def constant(m: Any) -> bool:
-        return m.num <= 0 and not any(m.f.factor_degree[k] for k in m.den)
-    return all(constant(field.marker(x)) for v in checks.values() if isinstance(v, Rank) for x in v.matrix._a.flat)
+    return all(_constant_entries(v, field) for v in checks.values() if isinstance(v, Rank))
 
 
 def _full_ranks(checks: dict[str, Any], evaluations: list[Evaluation]) -> bool:

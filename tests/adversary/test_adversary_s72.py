@@ -100,8 +100,22 @@ def test_a_constant_matrix_of_a_lower_rank_fails_under_rational():
     run = cli("verify", "--claims", str(OWN / "constant_rank.py"), "--method", "rational", "--method", "modular",
               "--method", "exact", "--size", "3,2", "--jobs", "1", "--no-report")
     verdicts = {ln.split()[2].rstrip(":"): ln.split(": ")[1].split()[0]
-                for ln in run.stdout.splitlines() if ln.startswith("t72-const-rank")}
+                for ln in run.stdout.splitlines() if ln.split()[:1] == ["t72-const-rank"]}
     assert verdicts == {"rational": "fails", "modular": "inconclusive", "exact": "fails"}, run.stdout[-2000:]
+    true = {ln.split()[2].rstrip(":"): ln.split(": ")[1].split()[0]
+            for ln in run.stdout.splitlines() if ln.split()[:1] == ["t72-const-rank-true"]}
+    assert set(true) == {"rational", "modular", "exact"} and set(true.values()) <= {"proved", "checked"}, true
+
+
+def test_ranks_of_matrices_that_depend_on_the_point_are_not_taken_for_constants():
+    """My own attempt at the constant-matrix rule: matrices whose entries are λ, a mix of constants and λ, and
+    tr(XᵀX) (a constant on V, built from the point), of true ranks: no method refutes them (the rule reads the
+    degree markers the engine computes, which a claim cannot write)."""
+    run = cli("verify", "--claims", str(OWN / "point_dependent_ranks.py"), "--method", "rational", "--method",
+              "modular", "--method", "exact", "--size", "3,2", "--size", "3,1", "--jobs", "1", "--no-report")
+    lines = [ln for ln in run.stdout.splitlines() if ln.startswith("t72-")]
+    assert len(lines) == 18 and run.returncode == 0, run.stdout[-3000:]
+    assert all(ln.split(": ")[1].split()[0] in ("proved", "checked") for ln in lines), run.stdout[-3000:]
 
 
 def test_fails_at_must_be_a_function_of_the_size():
