@@ -281,7 +281,7 @@ _MATH_SYMBOLS_ESCAPED = frozenset(" ,;:!{}|_%#&$\\")
 #: what the engine's own LaTeX of a dimension-free derivation adds to them (a record's derivation is data of a
 #: results file, which ``report`` renders: the same allow-list, with the few text commands the engine writes)
 DERIVATION_COMMANDS = MATH_COMMANDS | frozenset("paragraph item textbf emph texttt textbackslash ldots S P surd i j v "
-                                                 "c u".split())
+                                                 "c u nobreakspace mbox".split())
 DERIVATION_ENVIRONMENTS = MATH_ENVIRONMENTS | frozenset(("itemize", "enumerate"))
 #: ... and the control symbols of text that :func:`tex_escape` writes (accents, ``\^{}``, ``\~{}``, display math)
 _DERIVATION_SYMBOLS = frozenset("[]^~'`\".=")

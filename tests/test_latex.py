@@ -215,3 +215,17 @@ def test_a_rerun_command_breaks_before_an_option_not_after_it():
     from stiefelsym.reports.report import _tt
     tt = _tt("stiefelsym verify x --method exact --seed 0 --size 2,2 --size 3,1")
     assert r"--size\nobreakspace{}2,2 --size\nobreakspace{}3,1" in tt and r"--method\nobreakspace{}exact" in tt
+
+
+def test_tex_escape_stays_inside_the_derivation_vocabulary():
+    """Whatever tex_escape writes (specials, scripts, accents, no-break spaces of bound relations, Unicode math)
+    passes the allow-list a derivation of a results file is checked against: otherwise the engine's own
+    derivations are printed as their LaTeX source in the reports."""
+    from stiefelsym import latex as L
+    chars = (list(L._TEX_SPECIAL) + list(L._SUP) + list(L._SUB) + list(L._TEXT_ONLY) + list(L._MATH_SYMBOLS)
+             + [L.NBSP, "é", "ő", "Ż̄", "Q̇", "𝒳", "∑", "λ", "Σ̄", "\x07"])
+    text = " ".join(chars) + " with r = 2 and n ≤ 2r + 1, X^T X = I_r"
+    tex = tex_escape(text)
+    assert L._vocabulary_ok(tex, L.DERIVATION_COMMANDS, L.DERIVATION_ENVIRONMENTS,
+                            L._MATH_SYMBOLS_ESCAPED | L._DERIVATION_SYMBOLS), tex
+    assert tex_balanced(r"\begin{itemize}\item " + tex + r"\end{itemize}")
