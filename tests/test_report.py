@@ -970,3 +970,20 @@ def test_a_derivation_writes_no_term_of_coefficient_zero():
                          text=True, timeout=600)
     assert out.returncode == 0 and r"R &= " in out.stdout, out.stderr[-2000:]
     assert not re.search(r"(&= |[+-] )0 \\operatorname", out.stdout), out.stdout[:2000]
+
+
+def test_breaking_long_lines_makes_no_empty_line_and_no_control_space():
+    """Stop 73's review (D1): a statement with a run of 4,500 blanks was cut inside the run, leaving a line of blanks
+    (an empty line, a new paragraph: "Missing $ inserted" inside the display).  A break is made only between two
+    pieces of text, never after a backslash (a control space), and a line of blanks alone is left empty."""
+    from stiefelsym.reports.report import TEX_LINE_MAX, short_lines
+    blanks = " " * 4500
+    for tex in (r"$\displaystyle x" + blanks + "= y$", "a" + blanks + "b " + "w " * 3000 + blanks,
+                r"\ " * 1500 + "x " * 1500, "x" + " " * (TEX_LINE_MAX - 1) + "y z"):
+        out = short_lines(tex).split("\n")
+        assert all(ln.strip(" ") for ln in out), [ln[:20] for ln in out]
+        assert " ".join(out).split() == tex.split()
+        assert not any(ln.endswith("\\") for ln in out)
+    assert short_lines(blanks) == ""
+    words = " ".join(f"w{i}" for i in range(20000))
+    assert max(len(x) for x in short_lines(words).split("\n")) <= TEX_LINE_MAX

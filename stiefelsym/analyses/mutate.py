@@ -1673,12 +1673,15 @@ def search_corrections(claim: Claim, sizes: Sequence[Size] | None = None,
         return verdict == "proved" if meth == "free" else verdict in PASSING
 
     def vacuous(m: Mutant) -> bool:
-        """The candidate's left sides vanish too (at the first fixed-size cell): it reads 0 = 0."""
+        """The candidate's left sides vanish too, at every fixed-size cell of the plan: it reads 0 = 0.  (A
+        left side that vanishes at the smallest size only, Ψ = 0 at r = 1, is no reason to drop a candidate
+        that holds at the larger sizes; the largest sizes are tried first, where a left side rarely vanishes.)"""
         left = m.left() if m.left is not None else None
         fixed = [(s, meth) for s, meth in plan if meth != "free"]
         if left is None or not fixed:
             return False
-        return passes(Mutant(m.description + " (left sides)", m.lineno, left, expect=m.expect), *fixed[0])
+        sides = Mutant(m.description + " (left sides)", m.lineno, left, expect=m.expect)
+        return all(passes(sides, s, meth) for s, meth in reversed(fixed))
 
     found: list[Mutant] = []
     pool = list(correction_candidates(claim) if candidates is None else candidates)

@@ -411,6 +411,18 @@ def _evaluate(checks: dict[str, Any], field: Field, rank_fn: Callable[[Rank], tu
     return Evaluation(outcomes, nonzero, rank_problems, count_problems, rank_certain, every_point, full)
 
 
+def _telling_entry(nonzero: list, field: Any) -> tuple:
+    """The nonzero residual entry a witness names: over the rationals the largest in absolute value (the first
+    of them), so that a failure does not read like rounding (an entry of 10⁻³⁶ at a point near one where it
+    vanishes, beside entries of size 1); over a prime field, where values have no size, the first."""
+    if getattr(field, "name", "") != "rational" or len(nonzero) == 1:
+        return nonzero[0]
+    try:
+        return max(nonzero, key=lambda e: abs(getattr(e[2], "v", e[2])))     # (a Pair: its value)
+    except TypeError:
+        return nonzero[0]
+
+
 def _base_result(claim: Claim, n: int | None, r: int | None, method: str, seed: int | None) -> Result:
     return Result(claim=claim.id, paper=list(claim.paper), section=claim.section, kind=claim.kind,
                   title=claim.title, statement=claim.statement, n=n, r=r, method=method,
@@ -2639,7 +2651,7 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
         if kind == "modular":
             primes.append(field.p)
         if ev.nonzero and witness is None:
-            check, pos, val = ev.nonzero[0]
+            check, pos, val = _telling_entry(ev.nonzero, field)
             witness = {"seed": seed, "trial": t, "attempt": attempt, "component": comp, "field": field.name,
                        "check": check, "entry": pos, "value": field.describe(val),
                        "point": {k: field.describe(v) for k, v in scene._point_values().items()}}

@@ -1518,23 +1518,55 @@ TEX_LINE_MAX = 2000
 
 
 def short_lines(tex: str, limit: int = TEX_LINE_MAX) -> str:
-    """``tex`` with every line longer than ``limit`` broken at spaces (an end of line is a space to TeX, so the
-    document typesets the same); a line that holds a comment (an unescaped %) is left whole."""
+    """``tex`` with every line longer than ``limit`` broken at spaces, so that the document typesets the same:
+    TeX drops the spaces that end an input line and those that begin one, and reads the end of a line as one
+    space, so a break is made only between two pieces of text (never inside a run of blanks, which would leave a
+    line of blanks, an empty line: a new paragraph), and not after a backslash (a control space).  A line of
+    blanks alone is left empty (TeX reads it so), and a line that holds a comment (an unescaped %) is left
+    whole."""
     out = []
     for line in tex.split("\n"):
         if len(line) <= limit or _has_comment(line):
             out.append(line)
             continue
+        if not line.strip(" "):
+            out.append("")
+            continue
         while len(line) > limit:
-            cut = line.rfind(" ", 1, limit)
-            if cut <= 0:
-                cut = line.find(" ", limit)
-                if cut <= 0:
-                    break
+            cut = _break_at(line, limit)
+            if cut is None:
+                break
             out.append(line[:cut])
-            line = line[cut + 1:]
-        out.append(line)
+            line = line[cut:].lstrip(" ")
+        if line:
+            out.append(line)
     return "\n".join(out)
+
+
+def _break_at(line: str, limit: int) -> int | None:
+    """Where to end the first piece of ``line``: at the start of a run of blanks that has text before it (not a
+    backslash that would make its first blank a control space) and text after it, as late as possible within
+    ``limit``, else the first such place beyond it; None when there is none."""
+    def ok(i: int) -> bool:
+        if i <= 0 or line[i - 1] == " " or not line[i:].strip(" "):
+            return False
+        k = i
+        while k > 0 and line[k - 1] == "\\":
+            k -= 1
+        return (i - k) % 2 == 0
+    i = line.rfind(" ", 0, limit)
+    while i > 0:
+        while i > 0 and line[i - 1] == " ":
+            i -= 1
+        if ok(i):
+            return i
+        i = line.rfind(" ", 0, i)
+    i = line.find(" ", limit)
+    while i > 0:
+        if ok(i):
+            return i
+        i = line.find(" ", i + 1)
+    return None
 
 
 def _has_comment(line: str) -> bool:
