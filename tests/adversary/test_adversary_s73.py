@@ -5,7 +5,6 @@ smallest size only (D2)."""
 import shutil
 import subprocess
 
-import pytest
 from pathlib import Path
 
 from adversary_cli import cli
