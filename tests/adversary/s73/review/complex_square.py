@@ -33,7 +33,7 @@ def cplx_tangent_conj(s):
 @claim("s73-cplx-trace-real", kind="id", sizes=admissible(n_max=3, where=lambda n, r: r == n, condition="r = n"))
 def cplx_trace_real(s):
     """Im tr Z = 0 at r = n: FALSE (tr of a unitary matrix is complex). Realified: tr(J Zc) = -2 Im tr Z."""
-    J = s.conj(s.identity(2 * s.n, "n+n"))    # diag(I, -I): not i; use the block [[0,-I],[I,0]] below
+    J = s.conj(s.identity(2 * s.n, "n+n"))    # noqa: F841 - diag(I, -I): not i; use the block [[0,-I],[I,0]] below
     Z = s.Zc
     from stiefelsym import block
     Iz = s.identity(s.n, "n")
