@@ -55,8 +55,11 @@ def test_the_correction_search_of_a_users_claim_works_on_its_graph(monkeypatch, 
     out = json.loads(res.stdout)
     (c,) = out["claims"]
     assert c["on"] == "graphs" and out["graph_search_space"], out
-    assert [k["operator"] for k in c["corrections"]] == ["sign"], c
+    # the sign of either side: Ψ = XᵀP − PᵀX, or −Ψ = PᵀX − XᵀP, the same equation (the second was dropped as
+    # vacuous while the filter looked at (1,1) only, where its left side −Ψ is the 1 x 1 zero matrix)
+    assert [k["operator"] for k in c["corrections"]] == ["sign", "sign"], c
     assert "Ψ + PᵀX − XᵀP" in c["corrections"][0]["notation"], c
+    assert "Ψ → −Ψ" in c["corrections"][1]["notation"], c
 
 
 def test_the_correction_search_of_a_users_claim_traced_per_size_works_on_its_graphs(monkeypatch, tmp_path):
