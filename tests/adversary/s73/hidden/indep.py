@@ -1,3 +1,4 @@
+# ruff: noqa: E701, E702, F841 - a numpy check written compactly, kept as its author wrote it
 """s73: independent plain-numpy evaluation of every statement of claims.py and negatives.py (no stiefelsym).
 
 For each claim id and size: 3 random points of T*V(n, r) (XᵀX = I, XᵀP + PᵀX = 0; at r = n both components of

@@ -1,3 +1,4 @@
+# ruff: noqa: E701, E702, F841 - a numpy check written compactly, kept as its author wrote it
 """Plain numpy machinery for indep.py (no stiefelsym import): points of T*V(n, r), canonical and Dirac
 brackets and flows (gradients by complex step, exact to rounding for rational functions)."""
 import numpy as np
