@@ -317,6 +317,14 @@ def x_is_the_base_point_with_a_reason(s):
     return {"X_11": s.X[0, 0] - s.q(1)}
 
 
+def entry_of_xtx_with_a_reason(s):
+    """True: Σᵢ X_i1² = 1, read from the entries of X (coordinates of R^n)."""
+    total = s.X[0, 0] * s.X[0, 0]
+    for i in range(1, int(s.n)):
+        total = total + s.X[i, 0] * s.X[i, 0]
+    return {"|X e_1|^2": total - s.q(1)}
+
+
 def test_a_users_stated_reason_does_not_buy_the_reduction():
     c = Claim(id="trick", paper=("cond_XP",), kind="id", section="t", func=x_is_the_base_point_with_a_reason,
               sizes=admissible(8), equivariance="trust me: X_11 is an invariant")
@@ -324,8 +332,17 @@ def test_a_users_stated_reason_does_not_buy_the_reduction():
     for n, r in [(2, 1), (3, 2), (4, 2)]:
         res = run_one(c, Size(n, r), "exact", 0)
         assert res.verdict == "fails", (n, r, res.verdict)
-    # beyond the symbolic Cayley chart's limit the reason would have bought the equivariant chart
+    # beyond the symbolic Cayley chart's limit the reason would have bought the equivariant chart; a claims file's
+    # claim is evaluated at an exact rational point first, which refutes it there (before stop 73: inconclusive,
+    # "the reduction is relied on only for the reviewed catalog")
     res = run_one(c, Size(EXACT_CAYLEY_MAX_N + 1, 2), "exact", 0)
+    assert res.verdict == "fails" and res.witness and "limited to n <=" in res.certificate, \
+        (res.verdict, res.message, res.certificate)
+    # a true claim that reads coordinates with a reason: the point does not refute it, and the reason still buys
+    # nothing beyond the Cayley chart's limit
+    t = Claim(id="trick-true", paper=("cond_XP",), kind="id", section="t", func=entry_of_xtx_with_a_reason,
+              sizes=admissible(8), equivariance="trust me: an entry of XᵀX is an invariant")
+    res = run_one(t, Size(EXACT_CAYLEY_MAX_N + 1, 2), "exact", 0)
     assert res.verdict == "inconclusive" and "reviewed catalog" in res.message, (res.verdict, res.message)
 
 

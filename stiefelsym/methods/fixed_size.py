@@ -1203,10 +1203,21 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
     refuted: Result | None = None     # a rational point that refuted the claim before the Cayley chart (below)
     tried_point = False               # whether that point was evaluated (a budget met later does not repeat it)
     graph: Any = None
+    early = contextlib.ExitStack()    # the capped attempt after a claims file's claim was refuted at the point
     try:
-        with time_limit(time_budget):
+        with time_limit(time_budget), early:
             cons = REALIZATIONS[claim.realization or "standard"]
             graph = _claim_graph(func, n, r, (cons.name, cons.build))
+            if not claim.reviewed and whole:
+                # a claims file's claim is evaluated at the seed's first exact rational point of T*V before any
+                # symbolic chart (the Cayley chart does so for every claim, below): a false statement's symbolic
+                # residual can swell far beyond the true one's (on a complex point of W(3, 2): out of memory after
+                # 74 s, refuted at the point in a fraction of a second).  A refuted claim's symbolic residual is
+                # then written out only within a short capped attempt
+                tried_point = True
+                refuted = _refuting_point(claim, n, r, seed, func, graph)
+                if refuted is not None:
+                    early.enter_context(_capped_refutation(time_budget, USER_REFUTED_SECONDS))
             key = draw_key(claim, n, r, seed, func, graph)
             randomized = _RandomizedRank()
             charts: list[tuple[Scene, str]] = []
@@ -1314,6 +1325,9 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                 if unconstrained is not None:
                     charts.append(unconstrained[0])
                 elif n > EXACT_CAYLEY_MAX_N:
+                    if refuted is not None:         # (a claims file's claim, refuted at the point already)
+                        return _refuted_result(res, refuted, seed, RuntimeError(
+                            f"the symbolic Cayley chart is limited to n <= {EXACT_CAYLEY_MAX_N}"), t0)
                     res.verdict = "inconclusive"
                     unrelied = (" (a stated reason is relied on only for the reviewed catalog's claims and "
                                 "their registered corrections)"
@@ -1334,8 +1348,9 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                 comps = [] if unconstrained is not None else [0, 1] if r == n and not right else [0]
                 # a residual already nonzero at an exact rational point of T*V is refuted: the symbolic
                 # Cayley chart then only writes the residual out, within a capped attempt (below)
-                refuted = _refuting_point(claim, n, r, seed, func, graph) if comps else None
-                tried_point = bool(comps)
+                if comps and not tried_point:
+                    refuted = _refuting_point(claim, n, r, seed, func, graph)
+                tried_point = tried_point or bool(comps)
                 try:
                     with _capped_refutation(time_budget) if refuted is not None else contextlib.nullcontext():
                         for comp in comps:
@@ -1349,7 +1364,12 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                     if refuted is None:
                         raise
                     return _refuted_result(res, refuted, seed, exc, t0)
+    except _RefutedTimeout as exc:
+        # (only where the point refuted the claim: a claims file's claim, before the symbolic charts)
+        return _refuted_result(res, refuted, seed, exc, t0)
     except ExactTimeout as exc:
+        if refuted is not None:
+            return _refuted_result(res, refuted, seed, exc, t0)
         res.verdict = "inconclusive"
         res.message = (str(exc) if str(exc).startswith("the function-field rank") else
                        f"symbolic computation exceeded its budget of {time_budget:.0f} s")
@@ -1361,6 +1381,8 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
         res.seconds = time.perf_counter() - t0
         return res
     except SymbolicBudget as exc:
+        if refuted is not None:
+            return _refuted_result(res, refuted, seed, exc, t0)
         full = _decided_at_points(claim, n, r, seed, func, graph, exc, t0, tried_point)
         if full is not None:
             return full
@@ -1370,6 +1392,8 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
         res.seconds = time.perf_counter() - t0
         return res
     except MemoryError:
+        if refuted is not None:
+            return _refuted_result(res, refuted, seed, RuntimeError("out of memory"), t0)
         res.verdict = "inconclusive"
         res.message = "the symbolic computation exceeded the memory budget"
         res.seconds = time.perf_counter() - t0
@@ -1972,11 +1996,17 @@ class _RefutedTimeout(Exception):
     """The capped symbolic attempt after a refutation at a rational point ran out of its share of the time."""
 
 
+#: seconds of the capped symbolic attempt after a claims file's claim was refuted at the point (at most)
+USER_REFUTED_SECONDS = 5.0
+
+
 @contextmanager
-def _capped_refutation(time_budget: float | None) -> Iterator[None]:
+def _capped_refutation(time_budget: float | None, most: float | None = None) -> Iterator[None]:
     from stiefelsym.backends.polyfield import term_cap, _TERM_CAP as current
     limit = REFUTED_TERM_PRODUCTS if current is None else min(current, REFUTED_TERM_PRODUCTS)
     seconds = REFUTED_SHARE * time_budget if time_budget is not None else UNCONSTRAINED_SECONDS
+    if most is not None:
+        seconds = min(seconds, most)
     with term_cap(limit), deadline(seconds, "the symbolic residual of a refuted claim",
                                    lambda message: _RefutedTimeout(message)):
         yield
@@ -2041,7 +2071,7 @@ def _decided_at_points(claim: Claim, n: int, r: int, seed: int, func: Callable, 
 
 
 def _refuted_result(res: Result, point: Result, seed: int, why: Exception, t0: float,
-                    what: str = "the residual as a function on the symbolic Cayley chart was not written out") -> Result:
+                    what: str = "the residual as a function on the symbolic chart was not written out") -> Result:
     """The exact method's ``fails`` from a refuting rational point, where the symbolic residual is beyond its
     capped attempt (or a symbolic chart beyond budget)."""
     res.verdict = "fails"
@@ -3574,8 +3604,46 @@ def _run_exact_isolated(claim: Claim, n: int, r: int, seed: int, func: Callable 
         res.message = f"symbolic computation exceeded its budget of {time_budget:.0f} s (stopped)"
     except ChildDied as exc:
         res.message = f"the symbolic attempt ended without a verdict: {exc}"
+    refuted = _refuted_after_the_attempt(claim, n, r, seed, func, res.message, t0, time_budget)
+    if refuted is not None:
+        return refuted
     res.seconds = time.perf_counter() - t0
     return res
+
+
+#: seconds of the rational point tried after a symbolic attempt that ran out of time or memory (at most a quarter
+#: of the attempt's own budget)
+AFTER_ATTEMPT_SECONDS = 30.0
+
+
+def _refuted_after_the_attempt(claim: Claim, n: int, r: int, seed: int, func: Callable | None, why: str,
+                               t0: float, time_budget: float) -> Result | None:
+    """The exact method's ``fails`` from the seed's first exact rational point of T*V, where the symbolic attempt
+    ran out of its time or memory (a native abort included) before the point was tried: a chart that tries the
+    point first (the Cayley chart) has done so inside the attempt, the others (the equivariant chart, the complex
+    point's) had not.  None where the point does not refute the claim (a rank, a count, a nonvanishing claim, a
+    residual that vanishes there, anything that goes wrong): the attempt's verdict stands.  The point is
+    evaluated in a child of its own, within :data:`AFTER_ATTEMPT_SECONDS` and a quarter of the attempt's budget
+    (``auto`` goes on with the modular method after it)."""
+    from stiefelsym.run.isolate import ChildDied, HardTimeout, run_isolated
+    if claim.expect == "nonzero":
+        return None
+    fn = func or claim.func
+
+    def point() -> Result | None:
+        cons = REALIZATIONS[claim.realization or "standard"]
+        return _refuting_point(claim, n, r, seed, fn, _claim_graph(fn, n, r, (cons.name, cons.build)))
+    try:
+        found = run_isolated(point, min(AFTER_ATTEMPT_SECONDS, time_budget / 4), _describe)
+    except (HardTimeout, ChildDied):
+        return None
+    except Exception:   # noqa: BLE001 - the point decides nothing: the attempt's verdict stands
+        return None
+    if not isinstance(found, Result) or found.verdict != "fails" or not found.witness:
+        return None
+    res = _base_result(claim, n, r, "exact", seed)
+    return _refuted_result(res, found, seed, RuntimeError(why), t0,
+                           "the symbolic attempt ended without a verdict, and the point was evaluated after it")
 
 
 def _describe(exc: BaseException) -> str:

@@ -363,15 +363,20 @@ def _error(claim: Claim, size: Size | None, method: str, seed: int, message: str
     return res
 
 
-def _exact_runner(in_worker: bool, budget: float | None) -> Callable[..., Result]:
+def _exact_runner(in_worker: bool, budget: float | None, capped: bool = True) -> Callable[..., Result]:
     """The symbolic method: in a worker, a small attempt runs right there (the worker is the
     killable process) and a heavy one in its own forked child with the run's memory budget, so
     that the worker survives it (:func:`stiefelsym.methods.fixed_size.isolates`); elsewhere in its own
-    killable child."""
+    killable child.  ``capped``: the attempt gets at most EXACT_TIME_LIMIT (auto's attempt, which the modular
+    method follows); otherwise (``--method exact``) four fifths of the run's budget: its forked child is stopped at
+    1.1 times that, and the rational point tried after an attempt that ran out still fits in the run's budget."""
     if not in_worker:
         return METHOD_RUNNERS["exact"]
     from stiefelsym.methods.fixed_size import EXACT_TIME_LIMIT, run_exact_isolated
-    limit = EXACT_TIME_LIMIT if budget is None else min(EXACT_TIME_LIMIT, budget)
+    if budget is None:
+        limit = EXACT_TIME_LIMIT
+    else:
+        limit = min(EXACT_TIME_LIMIT, budget) if capped else 0.8 * budget
     return lambda c, n, r, seed, func=None, options=None: run_exact_isolated(c, n, r, seed, func, limit,
                                                                              in_worker=True)
 
@@ -390,7 +395,7 @@ def _dispatch(claim: Claim, size: Size | None, method: str, seed: int, func: Cal
     if method == "exact":
         if options:
             raise ValueError("hard cases are sampled points: use --method rational, modular or float")
-        return _run_exact(claim, size, seed, func, _exact_runner(in_worker, timeout), timeout)
+        return _run_exact(claim, size, seed, func, _exact_runner(in_worker, timeout, capped=False), timeout)
     return METHOD_RUNNERS[method](claim, size.n, size.r, seed, func, options)
 
 

@@ -38,3 +38,47 @@ def test_a_correction_whose_left_side_vanishes_at_the_smallest_size_only_is_offe
               "--jobs", "1")
     assert "1 of 15 candidates pass" in run.stdout + run.stderr, (run.stdout + run.stderr)[-2000:]
     assert "tr(ΨΨ)tr(ΨΨ) − 2tr(ΨΨΨΨ) − 1 → tr(ΨΨ)tr(ΨΨ) − 2tr(ΨΨΨΨ)" in run.stdout + run.stderr
+
+
+HIDDEN = Path(__file__).parent / "s73" / "hidden"
+
+
+def test_a_false_claim_of_a_claims_file_is_refuted_at_a_point_before_the_symbolic_charts():
+    """The hidden round's usability defect 1: a false claim on the complex point of W(3, 2) (Λ(ZU) = UΛU*) ran the
+    exact method's equivariant chart out of memory after 74 s (`inconclusive`), where the rational method refutes it
+    in a fraction of a second.  A claims file's claim is now evaluated at the seed's first exact rational point of T*V
+    before any symbolic chart."""
+    run = cli("verify", "--claims", str(HIDDEN / "negatives.py"), "n73-complex-lambda-order", "--size", "3,2",
+              "--method", "exact", "--jobs", "1", "--no-report", "--timeout", "60")
+    line = next(ln for ln in run.stdout.splitlines() if ln.startswith("n73-complex-lambda-order"))
+    assert "exact: fails" in line and "witness" in line, run.stdout + run.stderr[-2000:]
+
+
+def test_an_exact_attempt_that_runs_out_is_followed_by_the_point(tmp_path):
+    """A symbolic attempt that ran out of its time or memory before the point was tried (a chart that does not try
+    it first) is followed by the point, in a process of its own: `fails` with an exact witness for a false claim,
+    nothing for a true one (the attempt's verdict stands)."""
+    import time
+
+    from stiefelsym import load_claims_file
+    from stiefelsym.methods.fixed_size import _refuted_after_the_attempt
+    reg = load_claims_file(str(HIDDEN / "negatives.py"))
+    false = reg.get("n73-complex-lambda-order")
+    res = _refuted_after_the_attempt(false, 3, 2, 0, None, "the attempt died", time.perf_counter(), 120.0)
+    assert res is not None and res.verdict == "fails" and res.method == "exact" and res.witness
+    assert "the attempt died" in res.certificate
+    true = load_claims_file(str(HIDDEN / "claims.py")).get("h73-complex-u-r-symmetry")
+    assert _refuted_after_the_attempt(true, 3, 2, 0, None, "the attempt died", time.perf_counter(), 120.0) is None
+
+
+def test_the_exact_method_gets_the_runs_budget_and_autos_attempt_is_capped(monkeypatch):
+    """`--method exact` gets four fifths of `--timeout` (the guide: only auto's attempt is capped at 120 s); it had
+    min(120 s, timeout), so a true claim needing 150 s was `inconclusive` under `--timeout 300`."""
+    from stiefelsym.methods import fixed_size
+    from stiefelsym.run import runner
+    seen = []
+    monkeypatch.setattr(fixed_size, "run_exact_isolated", lambda c, n, r, seed, func, limit, in_worker: seen.append(limit))
+    runner._exact_runner(True, 300.0, capped=False)(None, 3, 2, 0)
+    runner._exact_runner(True, 150.0)(None, 3, 2, 0)
+    runner._exact_runner(True, 60.0)(None, 3, 2, 0)
+    assert seen == [240.0, fixed_size.EXACT_TIME_LIMIT, 60.0]
