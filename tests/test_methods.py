@@ -225,7 +225,10 @@ def test_entrywise_matrices_disable_the_equivariance_reduction():
     # the symbolic Cayley chart with one r x r inverse reaches n = 7; beyond, no symbolic chart
     res = run_exact(_claim(entrywise_constant_matrix), 7, 1, 0)
     assert res.verdict == "fails" and "S = [[S11, -K^T], [K, 0]]" in res.reductions[0]
-    assert run_exact(_claim(entrywise_constant_matrix), 8, 1, 0).verdict == "inconclusive"
+    # beyond, no symbolic chart: a claim not of the reviewed catalog is refuted at the exact rational point tried
+    # first (before stop 73: inconclusive)
+    res = run_exact(_claim(entrywise_constant_matrix), 8, 1, 0)
+    assert res.verdict == "fails" and res.witness["field"] == "rational" and "limited to n <=" in res.certificate
     assert run_points(_claim(entrywise_constant_matrix), 4, 1, "modular", 0).verdict == "fails"
 
 
