@@ -1187,9 +1187,36 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
     if refused is not None:
         return refused
     whole = _CHECKS.get() is None
+    t0 = time.perf_counter()
+    # a claims file's claim is evaluated at the seed's first exact rational point of T*V before any symbolic chart
+    # (the Cayley chart does so for every claim, below), also where its checks are decided group by group: a false
+    # statement's symbolic residual can swell far beyond the true one's (on a complex point of W(3, 2): out of
+    # memory after 74 s, refuted at the point in a fraction of a second)
+    early_point: Result | None = None
+    early_tried = False
+    if whole and not claim.reviewed:
+        try:
+            with time_limit(time_budget):
+                cons = REALIZATIONS[claim.realization or "standard"]
+                early_point = _refuting_point(claim, n, r, seed, func, _claim_graph(func, n, r, (cons.name, cons.build)))
+            early_tried = True
+        except ExactTimeout:
+            res = _base_result(claim, n, r, "exact", None)
+            res.verdict = "inconclusive"
+            res.message = f"the exact rational point tried first exceeded the budget of {time_budget:.0f} s"
+            res.seconds = time.perf_counter() - t0
+            return res
+        except Expired:
+            raise
+        except Exception:   # noqa: BLE001 - the claim's graph: what is wrong with it is the run's to say (below)
+            early_tried = False
     if whole:
         groups = _check_groups(claim, n, r, func)
         if groups is not None:
+            if early_point is not None:
+                return _refuted_result(_base_result(claim, n, r, "exact", None), early_point, seed,
+                                       RuntimeError("its checks are decided group by group"), t0,
+                                       "the symbolic residuals of its groups of checks were not written out")
             return _run_check_groups(claim, n, r, seed, func, time_budget, *groups)
     if PLANS and _LOAN is None and not _MUTATION_ANALYSIS and whole:
         plan = _PLANS.get((id(claim), id(func), n, r))
@@ -1198,24 +1225,22 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
             if fast is not None:
                 return fast
     res = _base_result(claim, n, r, "exact", None)
-    t0 = time.perf_counter()
+    if not early_tried:
+        t0 = time.perf_counter()
     calls: list = []        # the charts evaluated, each (key, its program or None)
     refuted: Result | None = None     # a rational point that refuted the claim before the Cayley chart (below)
     tried_point = False               # whether that point was evaluated (a budget met later does not repeat it)
     graph: Any = None
     early = contextlib.ExitStack()    # the capped attempt after a claims file's claim was refuted at the point
+    left = None if time_budget is None else max(time_budget - (time.perf_counter() - t0), 0.1)
     try:
-        with time_limit(time_budget), early:
+        with time_limit(left), early:
             cons = REALIZATIONS[claim.realization or "standard"]
             graph = _claim_graph(func, n, r, (cons.name, cons.build))
-            if not claim.reviewed and whole:
-                # a claims file's claim is evaluated at the seed's first exact rational point of T*V before any
-                # symbolic chart (the Cayley chart does so for every claim, below): a false statement's symbolic
-                # residual can swell far beyond the true one's (on a complex point of W(3, 2): out of memory after
-                # 74 s, refuted at the point in a fraction of a second).  A refuted claim's symbolic residual is
-                # then written out only within a short capped attempt
-                tried_point = True
-                refuted = _refuting_point(claim, n, r, seed, func, graph)
+            if early_tried:
+                # (a claims file's claim, evaluated at the point above): a refuted claim's symbolic residual is
+                # written out only within a short capped attempt
+                tried_point, refuted = True, early_point
                 if refuted is not None:
                     early.enter_context(_capped_refutation(time_budget, USER_REFUTED_SECONDS))
             key = draw_key(claim, n, r, seed, func, graph)
@@ -1373,6 +1398,10 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
         res.verdict = "inconclusive"
         res.message = (str(exc) if str(exc).startswith("the function-field rank") else
                        f"symbolic computation exceeded its budget of {time_budget:.0f} s")
+        if not tried_point and time_budget is not None:
+            after = _refuted_after_the_attempt(claim, n, r, seed, func, t0, time_budget)
+            if after is not None:
+                return after
         res.seconds = time.perf_counter() - t0
         return res
     except RankNotDecided as exc:
@@ -1394,6 +1423,10 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
     except MemoryError:
         if refuted is not None:
             return _refuted_result(res, refuted, seed, RuntimeError("out of memory"), t0)
+        if not tried_point and time_budget is not None:
+            after = _refuted_after_the_attempt(claim, n, r, seed, func, t0, time_budget)
+            if after is not None:
+                return after
         res.verdict = "inconclusive"
         res.message = "the symbolic computation exceeded the memory budget"
         res.seconds = time.perf_counter() - t0
@@ -3598,35 +3631,57 @@ def _run_exact_isolated(claim: Claim, n: int, r: int, seed: int, func: Callable 
     res = _base_result(claim, n, r, "exact", None)
     res.verdict = "inconclusive"
     try:
-        return run_isolated(lambda: run_exact(claim, n, r, seed, func, time_budget),
+        return run_isolated(lambda: _in_attempt_child(claim, n, r, seed, func, time_budget),
                             1.1 * time_budget + 1, _describe)
     except HardTimeout:
         res.message = f"symbolic computation exceeded its budget of {time_budget:.0f} s (stopped)"
     except ChildDied as exc:
         res.message = f"the symbolic attempt ended without a verdict: {exc}"
-    refuted = _refuted_after_the_attempt(claim, n, r, seed, func, res.message, t0, time_budget)
+    refuted = _refuted_after_the_attempt(claim, n, r, seed, func, t0, time_budget)
     if refuted is not None:
         return refuted
     res.seconds = time.perf_counter() - t0
     return res
 
 
-#: seconds of the rational point tried after a symbolic attempt that ran out of time or memory (at most a quarter
-#: of the attempt's own budget)
+def _in_attempt_child(claim: Claim, n: int, r: int, seed: int, func: Callable | None, time_budget: float) -> Result:
+    """run_exact in the forked child of :func:`run_exact_isolated`, which its parent stops at 1.1 times the budget
+    and a second: a point tried after its own deadline ends half a second before that."""
+    _ATTEMPT_ENDS.append(time.perf_counter() + 1.1 * time_budget + 0.5)
+    try:
+        return run_exact(claim, n, r, seed, func, time_budget)
+    finally:
+        _ATTEMPT_ENDS.pop()     # (where there is no fork, the attempt runs in this process)
+
+
+#: seconds of the rational point tried after a symbolic attempt that ran out of time or memory (at most)
 AFTER_ATTEMPT_SECONDS = 30.0
+#: ... and it ends by this multiple of the attempt's own budget, counted from the attempt's start (the exact
+#: method's budget is 0.7 of the run's under ``--method exact``, half of it at most under ``auto``: the point fits)
+AFTER_ATTEMPT_END = 4 / 3
+#: in a forked child of the attempt: when the point it may try must end (its parent stops it then), or None
+_ATTEMPT_ENDS: list[float] = []
 
 
-def _refuted_after_the_attempt(claim: Claim, n: int, r: int, seed: int, func: Callable | None, why: str,
-                               t0: float, time_budget: float) -> Result | None:
+def _refuted_after_the_attempt(claim: Claim, n: int, r: int, seed: int, func: Callable | None, t0: float,
+                               time_budget: float) -> Result | None:
     """The exact method's ``fails`` from the seed's first exact rational point of T*V, where the symbolic attempt
-    ran out of its time or memory (a native abort included) before the point was tried: a chart that tries the
-    point first (the Cayley chart) has done so inside the attempt, the others (the equivariant chart, the complex
-    point's) had not.  None where the point does not refute the claim (a rank, a count, a nonvanishing claim, a
-    residual that vanishes there, anything that goes wrong): the attempt's verdict stands.  The point is
-    evaluated in a child of its own, within :data:`AFTER_ATTEMPT_SECONDS` and a quarter of the attempt's budget
-    (``auto`` goes on with the modular method after it)."""
+    ran out of its time or memory (a native abort, a stop by the parent) before the point was tried: a chart that
+    tries the point first (the Cayley chart, and every chart for a claims file's claim) has done so inside the
+    attempt, the others (the equivariant chart, the complex point's) had not.  None where the point does not refute
+    the claim (a rank, a count, a nonvanishing claim, a residual that vanishes there, anything that goes wrong) or
+    no time is left: the attempt's verdict stands.  The point is evaluated in a child of its own, within
+    :data:`AFTER_ATTEMPT_SECONDS`, until :data:`AFTER_ATTEMPT_END` times the attempt's budget (``auto`` goes on
+    with the modular method after it).  Its certificate does not name the budget (a record checked again under
+    another budget says the same)."""
     from stiefelsym.run.isolate import ChildDied, HardTimeout, run_isolated
     if claim.expect == "nonzero":
+        return None
+    now = time.perf_counter()
+    seconds = min(AFTER_ATTEMPT_SECONDS, AFTER_ATTEMPT_END * time_budget - (now - t0))
+    if _ATTEMPT_ENDS:
+        seconds = min(seconds, _ATTEMPT_ENDS[-1] - now)
+    if seconds < 0.2:
         return None
     fn = func or claim.func
 
@@ -3634,7 +3689,7 @@ def _refuted_after_the_attempt(claim: Claim, n: int, r: int, seed: int, func: Ca
         cons = REALIZATIONS[claim.realization or "standard"]
         return _refuting_point(claim, n, r, seed, fn, _claim_graph(fn, n, r, (cons.name, cons.build)))
     try:
-        found = run_isolated(point, min(AFTER_ATTEMPT_SECONDS, time_budget / 4), _describe)
+        found = run_isolated(point, seconds, _describe)
     except (HardTimeout, ChildDied):
         return None
     except Exception:   # noqa: BLE001 - the point decides nothing: the attempt's verdict stands
@@ -3642,7 +3697,7 @@ def _refuted_after_the_attempt(claim: Claim, n: int, r: int, seed: int, func: Ca
     if not isinstance(found, Result) or found.verdict != "fails" or not found.witness:
         return None
     res = _base_result(claim, n, r, "exact", seed)
-    return _refuted_result(res, found, seed, RuntimeError(why), t0,
+    return _refuted_result(res, found, seed, RuntimeError("it ran out of its time or memory"), t0,
                            "the symbolic attempt ended without a verdict, and the point was evaluated after it")
 
 

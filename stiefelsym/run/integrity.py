@@ -605,8 +605,12 @@ def check_results(records: list[dict], registry: Registry, echo: Callable[[str],
                 bad += 1
                 continue
         if rerun and r.get("method") != "free":
+            # under the budget of the run that made the file (what the exact method may try depends on it)
+            budget = (meta or {}).get("timeout")
+            budget = float(budget) if isinstance(budget, (int, float)) and not isinstance(budget, bool) \
+                and 0 < budget <= 1e9 else None
             again_fixed = run_one(claim, size, r.get("method"), r.get("seed") or 0, func,
-                                 variant=r.get("variant"), hard=hard)
+                                 variant=r.get("variant"), hard=hard, timeout=budget)
             if again_fixed.verdict != r.get("verdict"):
                 echo(f"REJECTED {where}: the record says {r.get('verdict')!r}, a run again says "
                      f"{again_fixed.verdict!r}")
@@ -621,7 +625,8 @@ def check_results(records: list[dict], registry: Registry, echo: Callable[[str],
             edited = (_evidence_edits(record, again_fixed.to_json())
                       + _message_edits(record, again_fixed.to_json(), auto,
                                        lambda: run_one(claim, size, "auto", r.get("seed") or 0, func,
-                                                       variant=r.get("variant"), hard=hard).to_json()))
+                                                       variant=r.get("variant"), hard=hard,
+                                                       timeout=budget).to_json()))
             if small is not None and not edited and small_witness_edited(r, claim, func):
                 edited = ["witness (the small witness)"]
             if edited:

@@ -118,10 +118,11 @@ def plan(claims: list[Claim], sizes: list[Size] | None, methods: Iterable[str],
 # --------------------------------------------------------------------------- one run
 
 def run_one(claim: Claim, size: Size | None, method: str, seed: int, func: Callable | None = None,
-            variant: str | None = None, hard: str | None = None) -> Result:
+            variant: str | None = None, hard: str | None = None, timeout: float | None = None) -> Result:
     """One result for one (claim, size, method), computed in this process (no budgets but the
-    symbolic method's own); ``hard`` names a hard numerical case."""
-    return _finish(_guarded(claim, size, method, seed, func, hard), claim, variant, hard)
+    symbolic method's own, or those a run of ``timeout`` seconds gives it: ``check`` runs a record again
+    under its file's budget); ``hard`` names a hard numerical case."""
+    return _finish(_guarded(claim, size, method, seed, func, hard, timeout=timeout), claim, variant, hard)
 
 
 def _guarded(claim: Claim, size: Size | None, method: str, seed: int, func: Callable | None,
@@ -368,17 +369,22 @@ def _exact_runner(in_worker: bool, budget: float | None, capped: bool = True) ->
     killable process) and a heavy one in its own forked child with the run's memory budget, so
     that the worker survives it (:func:`stiefelsym.methods.fixed_size.isolates`); elsewhere in its own
     killable child.  ``capped``: the attempt gets at most EXACT_TIME_LIMIT (auto's attempt, which the modular
-    method follows); otherwise (``--method exact``) four fifths of the run's budget: its forked child is stopped at
-    1.1 times that, and the rational point tried after an attempt that ran out still fits in the run's budget."""
-    if not in_worker:
+    method follows); otherwise (``--method exact``) 0.7 of the run's budget: the rational point tried after an
+    attempt that ran out ends by 4/3 of the attempt's budget, inside the run's.  Outside a worker (``check``
+    running a record again with its file's budget), the same, in this process or a forked child."""
+    if not in_worker and budget is None:
         return METHOD_RUNNERS["exact"]
     from stiefelsym.methods.fixed_size import EXACT_TIME_LIMIT, run_exact_isolated
     if budget is None:
         limit = EXACT_TIME_LIMIT
     else:
-        limit = min(EXACT_TIME_LIMIT, budget) if capped else 0.8 * budget
+        limit = min(EXACT_TIME_LIMIT, budget) if capped else EXACT_SHARE * budget
     return lambda c, n, r, seed, func=None, options=None: run_exact_isolated(c, n, r, seed, func, limit,
-                                                                             in_worker=True)
+                                                                             in_worker=in_worker)
+
+
+#: the share of a run's budget (``--timeout``) that ``--method exact`` gives its symbolic attempt
+EXACT_SHARE = 0.7
 
 
 def _dispatch(claim: Claim, size: Size | None, method: str, seed: int, func: Callable | None,

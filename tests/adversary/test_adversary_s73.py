@@ -64,16 +64,20 @@ def test_an_exact_attempt_that_runs_out_is_followed_by_the_point(tmp_path):
     from stiefelsym.methods.fixed_size import _refuted_after_the_attempt
     reg = load_claims_file(str(HIDDEN / "negatives.py"))
     false = reg.get("n73-complex-lambda-order")
-    res = _refuted_after_the_attempt(false, 3, 2, 0, None, "the attempt died", time.perf_counter(), 120.0)
+    res = _refuted_after_the_attempt(false, 3, 2, 0, None, time.perf_counter(), 120.0)
     assert res is not None and res.verdict == "fails" and res.method == "exact" and res.witness
-    assert "the attempt died" in res.certificate
+    # (its certificate names no budget: a record checked again under another budget says the same)
+    assert "ran out of its time or memory" in res.certificate and " s" not in res.certificate.split("(")[-1]
     true = load_claims_file(str(HIDDEN / "claims.py")).get("h73-complex-u-r-symmetry")
-    assert _refuted_after_the_attempt(true, 3, 2, 0, None, "the attempt died", time.perf_counter(), 120.0) is None
+    assert _refuted_after_the_attempt(true, 3, 2, 0, None, time.perf_counter(), 120.0) is None
+    # no time left (the attempt used 4/3 of its budget already): the point is not tried
+    assert _refuted_after_the_attempt(false, 3, 2, 0, None, time.perf_counter() - 200.0, 120.0) is None
 
 
 def test_the_exact_method_gets_the_runs_budget_and_autos_attempt_is_capped(monkeypatch):
-    """`--method exact` gets four fifths of `--timeout` (the guide: only auto's attempt is capped at 120 s); it had
-    min(120 s, timeout), so a true claim needing 150 s was `inconclusive` under `--timeout 300`."""
+    """`--method exact` gets 0.7 of `--timeout` (the guide: only auto's attempt is capped at 120 s); it had
+    min(120 s, timeout), so a true claim needing 150 s was `inconclusive` under `--timeout 300`.  The point tried
+    after an attempt that ran out ends by 4/3 of the attempt's budget: inside the run's."""
     from stiefelsym.methods import fixed_size
     from stiefelsym.run import runner
     seen = []
@@ -81,4 +85,31 @@ def test_the_exact_method_gets_the_runs_budget_and_autos_attempt_is_capped(monke
     runner._exact_runner(True, 300.0, capped=False)(None, 3, 2, 0)
     runner._exact_runner(True, 150.0)(None, 3, 2, 0)
     runner._exact_runner(True, 60.0)(None, 3, 2, 0)
-    assert seen == [240.0, fixed_size.EXACT_TIME_LIMIT, 60.0]
+    assert seen == [210.0, fixed_size.EXACT_TIME_LIMIT, 60.0]
+    assert runner.EXACT_SHARE * fixed_size.AFTER_ATTEMPT_END < 1
+
+
+REVIEW2 = Path(__file__).parent / "s73" / "review2"
+
+
+def test_a_claim_decided_in_groups_of_checks_is_refuted_at_the_point_first():
+    """The second review (D1): a claims file's claim whose checks are proved group by group skipped the point
+    tried first, so the false Λ(ZU) = UΛU* beside checks that read coordinates was `inconclusive` after 49 s."""
+    run = cli("verify", "--claims", str(REVIEW2 / "groups.py"), "rv2-complex-lambda-order-grouped", "--size", "3,2",
+              "--method", "exact", "--jobs", "1", "--no-report", "--timeout", "60")
+    line = next(ln for ln in run.stdout.splitlines() if ln.startswith("rv2-complex-lambda-order-grouped"))
+    assert "exact: fails" in line and "witness" in line, run.stdout + run.stderr[-2000:]
+
+
+def test_an_attempt_stopped_by_its_own_deadline_is_followed_by_the_point(tmp_path):
+    """The second review (D2, D3): the catalog's manakov-dual-lax at (8,8) under --timeout 10: the symbolic attempt
+    reached its own deadline (no child was stopped), and no point followed: `inconclusive` where the rational method
+    refutes it in 0.4 s.  Now `fails` with the point's witness, within the run's budget; and `check` runs the record
+    again under the file's budget and accepts it (it ran it under 120 s and rejected the certificate)."""
+    out = tmp_path / "o"
+    run = cli("verify", "manakov-dual-lax", "--size", "8,8", "--method", "exact", "--jobs", "1", "--timeout", "10",
+              "--report-dir", str(out))
+    line = next(ln for ln in run.stdout.splitlines() if ln.startswith("manakov-dual-lax (8,8)"))
+    assert "exact: fails" in line, run.stdout + run.stderr[-2000:]
+    check = cli("check", str(out / "results.json"))
+    assert check.returncode == 0 and "0 rejected" in check.stdout, check.stdout + check.stderr[-2000:]
