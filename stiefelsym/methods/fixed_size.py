@@ -1187,6 +1187,13 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
     if refused is not None:
         return refused
     whole = _CHECKS.get() is None
+    # a graph proved by the symbolic charts in this process replays its compiled plan (a proof: no point refutes it)
+    if PLANS and _LOAN is None and not _MUTATION_ANALYSIS and whole:
+        plan = _PLANS.get((id(claim), id(func), n, r))
+        if plan is not None and plan.claim is claim and plan.func is func and plan.state == _plan_state(claim):
+            fast = plan.run(seed, time_budget)
+            if fast is not None:
+                return fast
     t0 = time.perf_counter()
     # a claims file's claim is evaluated at the seed's first exact rational point of T*V before any symbolic chart
     # (the Cayley chart does so for every claim, below), also where its checks are decided group by group: a false
@@ -1218,12 +1225,6 @@ def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
                                        RuntimeError("its checks are decided group by group"), t0,
                                        "the symbolic residuals of its groups of checks were not written out")
             return _run_check_groups(claim, n, r, seed, func, time_budget, *groups)
-    if PLANS and _LOAN is None and not _MUTATION_ANALYSIS and whole:
-        plan = _PLANS.get((id(claim), id(func), n, r))
-        if plan is not None and plan.claim is claim and plan.func is func and plan.state == _plan_state(claim):
-            fast = plan.run(seed, time_budget)
-            if fast is not None:
-                return fast
     res = _base_result(claim, n, r, "exact", None)
     if not early_tried:
         t0 = time.perf_counter()
