@@ -113,3 +113,21 @@ def test_an_attempt_stopped_by_its_own_deadline_is_followed_by_the_point(tmp_pat
     assert "exact: fails" in line, run.stdout + run.stderr[-2000:]
     check = cli("check", str(out / "results.json"))
     assert check.returncode == 0 and "0 rejected" in check.stdout, check.stdout + check.stderr[-2000:]
+
+
+def test_own_attempt_on_the_exact_methods_order():
+    """Stop 73's own attempt (s73/own/exact_order.py): a residual that vanishes at the chart's origin only (X₁₁ = 1),
+    a nonvanishing claim whose residual vanishes on V, and a true twin, under exact and auto with the run's budget
+    and with a budget of 1 s: no false claim passes, the true one is never refuted."""
+    for budget in ("300", "1"):
+        run = cli("verify", "--claims", str(Path(__file__).parent / "s73" / "own" / "exact_order.py"),
+                  "--size", "3,2", "--size", "4,4", "--method", "exact", "--method", "auto", "--jobs", "1",
+                  "--no-report", "--timeout", budget)
+        lines = [ln for ln in run.stdout.splitlines() if ln.startswith("s73-own-")]
+        assert len(lines) == 12, run.stdout + run.stderr[-2000:]
+        for ln in lines:
+            verdict = ln.split(": ")[1].split()[0]
+            if ln.startswith("s73-own-true"):
+                assert verdict in ("proved", "checked", "inconclusive"), ln
+            else:
+                assert verdict in ("fails", "inconclusive", "undecided"), ln
