@@ -1,0 +1,1 @@
+from stiefelsym import claim, Lax   # Lax does not exist

@@ -1,0 +1,4 @@
+from stiefelsym import claim
+@claim("nu-syntax", kind="id")
+def f(s)
+    return {"z": s.Phi}
