@@ -173,7 +173,7 @@ class SizeSpec:
         if self.r_in:
             parts.append(" or ".join(f"r = {v}" for v in self.r_in))
         text = ", ".join(parts) or "every n >= r >= 1"
-        if self.condition:
+        if self.condition and " ".join(self.condition.split()) not in (text, *parts):
             text += f" ({self.condition})"
         elif self.where is not None:
             text += " (with a further condition on n, r)"
@@ -544,6 +544,15 @@ def _pairs(by_n: dict[int, int] | None, what: str = "exact_max_r") -> tuple[tupl
     return tuple(sorted((n, r) for n, r in by_n.items()))
 
 
+def _section_of_labels(labels: tuple[str, ...]) -> str:
+    """The paper's section of a claim stated without one, from its labels: the one section they all lie in
+    (a user's claim labelled (No) is filed under §5, as the catalog's are), else ""."""
+    from stiefelsym.paperref import table
+    ref = table()
+    secs = {ref[label]["section"] for label in labels if label in ref and ref[label].get("section")}
+    return secs.pop() if len(secs) == 1 else ""
+
+
 def claim(id: str, *, paper: str | Iterable[str] = (), kind: str, section: str | None = None,
           sizes: SizeSpec | Iterable[tuple[int, int] | Size] | None = None, statement: str = "", realization: str = "standard",
           expect: str = "holds", exact_max_n: int | None = None, exact_max_r: dict[int, int] | None = None,
@@ -578,6 +587,8 @@ def claim(id: str, *, paper: str | Iterable[str] = (), kind: str, section: str |
         if sec is None:
             mod = sys.modules.get(fn.__module__)
             sec = getattr(mod, "SECTION", "") if mod else ""
+        if sec == "" and labels:
+            sec = _section_of_labels(labels)
         c = Claim(id=id, paper=labels, kind=kind, section=str(sec), func=fn,
                   sizes=_size_spec(id, sizes), statement=statement.strip(),
                   title=(inspect.getdoc(fn) or "").strip(), realization=realization,

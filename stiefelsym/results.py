@@ -29,9 +29,9 @@ def _clip(text: str, limit: int | None) -> str:
     return text[: max(limit - 3, 0)] + "..."
 
 
-def short_value(text: str, limit: int = 60, where: str = "the record") -> str:
+def short_value(text: str, limit: int = 60, where: str = "exact with --format json") -> str:
     """A witness's value for one line: a long exact rational as its magnitude, with its digits counted
-    (the exact value is in the record, results.json); anything else clipped."""
+    (the exact value is in the record: --format json, or results.json of --report-dir); anything else clipped."""
     m = _RATIONAL.fullmatch(text.strip())
     if len(text) <= limit or m is None:
         return _clip(text, limit)
@@ -40,7 +40,7 @@ def short_value(text: str, limit: int = 60, where: str = "the record") -> str:
         ctx.prec = 6
         approx = f"{decimal.Decimal(sign + num) / decimal.Decimal(den):.4E}".replace("E+", "e").replace("E", "e")
     digits = f"{len(num)} digits" if den == "1" else f"{len(num)}/{len(den)} digits"
-    return f"{approx} (a rational of {digits}; exact in {where})"
+    return f"{approx} (a rational of {digits}; {where})"
 
 
 _RATIONAL = re.compile(r"(-?)(\d+)(?:/(\d+))?")
@@ -131,6 +131,9 @@ class Result:
             w = self.witness or {}
             if w.get("entry") is not None and w.get("value") is not None:
                 text = f"witness {w['entry']} = {short_value(str(w['value']))}"
+                if self.method in ("float", "ball") and w.get("field") == "rational":
+                    # (the float point's own residual, in the message, is another number at another point)
+                    text += " at an exact rational point"
             elif self.residual:
                 text = f"residual {self.residual}"
             else:

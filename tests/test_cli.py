@@ -206,8 +206,11 @@ def test_format_junit_parses_with_failures_for_unexpected(fake, run):
     root = ET.fromstring(result.stdout)
     cases = root.findall(".//testcase")
     assert len(cases) == 6
-    failed = [c.get("name") for c in cases if c.find("failure") is not None]
+    # (s74: an unexpected error is a JUnit <error>, counted as one, not a <failure>)
+    failed = [c.get("name") for c in cases if c.find("error") is not None]
     assert failed == ["ddim[n=1,r=1]-auto", "ddim[n=2,r=1]-auto"]
+    assert not [c for c in cases if c.find("failure") is not None]
+    assert root.get("errors") == "2" and root.get("failures") == "0"
 
 
 def test_full_catalog_run_writes_reports_where_asked(fake, run, tmp_path):

@@ -94,7 +94,7 @@ def test_a_long_exact_witness_is_shown_by_its_magnitude():
     res = Result(claim="c", paper=[], section="3", kind="id", title="", statement="", n=3, r=2, method="exact",
                  verdict="fails", expected=True, seconds=0.1, seed=0, witness={"entry": "LA1[1,2]", "value": value})
     line = res.line()
-    assert "-3.7125e19 (a rational of 160/140 digits; exact in the record)" in line, line
+    assert "-3.7125e19 (a rational of 160/140 digits; exact with --format json)" in line, line
     assert short_value("12/7") == "12/7"
     assert short_value("x" * 80).endswith("...")
 

@@ -185,7 +185,7 @@ def main(ctx: click.Context) -> None:
     \b
       stiefelsym list                              the catalog of claims
       stiefelsym show euclidean-flow               statement, sizes, source
-      stiefelsym verify                            the catalog; writes reports/
+      stiefelsym verify --report-dir reports       the catalog, and its reports
       stiefelsym verify euclidean-flow --size 4,2  one claim, one size
       stiefelsym verify --claims my_claims.py      your own claims
       stiefelsym report                            re-render reports/
@@ -729,10 +729,10 @@ class _Stdout:
                    "a fresh seed (printed in every result): use it for claims you did not write, since a "
                    "claim that knows the seed could be built to vanish exactly at its random points.")
 @click.option("--claims", "claims_files", metavar="FILE", multiple=True,
-              help="A Python file of your own claims (written with @claim); verifies them all, "
-                   "or those named.  Repeatable (an id defined in two files is refused).")
+              help="A Python file of your own claims (written with @claim), or a folder (each of its .py "
+                   "files); verifies them all, or those named.  Repeatable (an id defined in two files is refused).")
 @click.option("--report-dir", type=str, callback=_report_dir, metavar="DIR",
-              help="Write the reports here (default: reports/, full catalog runs only).")
+              help="Write the reports here (none is written without it; `make verify` gives reports/).")
 @click.option("--format", "fmt", type=click.Choice(["text", "json", "junit"]), default="text",
               show_default=True,
               help="stdout: one line per result and a summary, or the JSON results, or JUnit XML.")
@@ -779,10 +779,9 @@ def verify(ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tuple[str, ..
     then verified at every size the claim was run at.
 
     Reports (results.json, verification.md, verification.tex) are written only after
-    the run has finished, each file atomically, and not at all when interrupted.  A
-    full catalog run (no CLAIM, --claims or --size) writes them to reports/; a partial
-    run writes them only to a --report-dir given explicitly, so that a subset never
-    silently overwrites the catalog's reports.
+    the run has finished, each file atomically, and not at all when interrupted.  They
+    are written only to a --report-dir given explicitly (`make verify` gives reports/),
+    so that no run silently overwrites the catalog's reports.
 
     With --format json or junit, stdout holds only that document; the result lines
     and the summary go to stderr.  Whatever claims print goes to stderr.  A progress

@@ -38,6 +38,10 @@ def check(results_file: Path, no_rerun: bool, claims_files: tuple[str, ...]) -> 
             raise TypeError(f"its top level is a JSON {type(payload).__name__}, not an object with the results "
                             "and the meta of a run (a file written by `stiefelsym verify --report-dir`, or "
                             "--format json, is one)")
+        missing = [k for k in ("results", "meta") if k not in payload]
+        if missing:
+            raise TypeError(f"no {' and no '.join(missing)} at its top level (a file written by `stiefelsym verify "
+                            "--report-dir`, or --format json, has the results and the meta of its run)")
         records = payload["results"]
         meta = payload["meta"]
         if not isinstance(records, list) or not all(isinstance(r, dict) for r in records):
@@ -47,8 +51,8 @@ def check(results_file: Path, no_rerun: bool, claims_files: tuple[str, ...]) -> 
     except (OSError, ValueError, KeyError, TypeError, RecursionError) as exc:
         # (ValueError: also bad JSON, bad UTF-8 and an integer of more digits than Python converts;
         # RecursionError: values nested deeper than the decoder goes)
-        raise InputError(f"{results_file} is not a stiefelsym results file: {type(exc).__name__}: "
-                         f"{str(exc)[:200]}") from None
+        what = str(exc)[:200] if isinstance(exc, TypeError) else f"{type(exc).__name__}: {str(exc)[:200]}"
+        raise InputError(f"{results_file} is not a stiefelsym results file: {what}") from None
     problems = meta_problems(meta, METHODS, tuple(HARD_CASES), MAX_N_CHECKED)
     if problems:
         raise InputError(f"{results_file}: its meta (the command the file is the run of) is malformed: "

@@ -10,7 +10,7 @@ from pathlib import Path
 
 import click
 
-from stiefelsym.cli import InputError, standalone_command
+from stiefelsym.cli import InputError, SeedType, standalone_command
 from stiefelsym.claims import Size
 
 _Command = standalone_command("stiefelsym discover")
@@ -40,7 +40,8 @@ def _size(text: str) -> Size:
 @click.option("--method", "methods", multiple=True, default=("auto", "free"), show_default=True,
               type=click.Choice(["auto", "exact", "rational", "modular", "float", "free"]),
               help="the methods that verify each integral found")
-@click.option("--seed", default=0, show_default=True, type=int)
+@click.option("--seed", default="0", show_default=True, type=SeedType(), metavar="N|random",
+              help="seed of every random choice ('random': a fresh one, printed)")
 @click.option("--lax", "lax", default=None,
               help="a Lax matrix L(λ) (LA2, module:function or file.py:function): find every A(λ) with "
                    "dL/dt = [A, L] instead of the conserved quantities")

@@ -9,6 +9,7 @@ cannot be written, or matplotlib missing); 130 interrupted (files already writte
 from __future__ import annotations
 
 import os
+import tempfile
 import time
 from pathlib import Path
 
@@ -30,6 +31,8 @@ _Command = standalone_command("stiefelsym flows")
 
 
 def _check_report_dir(d: Path) -> None:
+    """Bad input unless the report can be written to ``d``: the folder is made (a report written later
+    goes there) and a file is created in it and removed, before any flow is integrated."""
     p = Path(os.path.abspath(d))
     while not p.exists():
         p = p.parent
@@ -37,6 +40,29 @@ def _check_report_dir(d: Path) -> None:
         raise FlowsInputError(f"cannot write the flows report to {d}: {p} is not a writable directory")
     if (Path(d) / "flows.md").is_dir():
         raise FlowsInputError(f"cannot write the flows report to {d}: {Path(d) / 'flows.md'} is a directory")
+    try:
+        Path(d).mkdir(parents=True, exist_ok=True)
+        with tempfile.NamedTemporaryFile(dir=d, prefix=".flows-", suffix=".tmp"):
+            pass
+    except OSError as exc:
+        raise FlowsInputError(f"cannot write the flows report to {d}: {exc.strerror or exc}") from None
+
+
+def _check_results(path: Path, given: bool) -> None:
+    """Bad input unless ``path`` is a results file (a missing default one is allowed: the report then says
+    that no verdict is on record)."""
+    from stiefelsym.results import load_results
+    if not path.exists() and not given:
+        return
+    if path.is_dir():
+        raise FlowsInputError(f"--results {path} is a directory: name the results file in it "
+                              f"(e.g. {path / 'results.json'})")
+    if not path.is_file():
+        raise FlowsInputError(f"results file not found: {path}")
+    try:
+        load_results(path)
+    except (OSError, ValueError) as exc:
+        raise FlowsInputError(f"{path} is not a stiefelsym results file: {exc}") from None
 
 
 @click.command("flows", cls=_Command,
@@ -56,6 +82,8 @@ def flows(report_dir: Path | None, results_path: Path, quick: bool) -> int:
         raise FlowsInputError("give --report-dir DIR (for example reports/flows): the flows report is figures "
                               "and files, written only where asked")
     _check_report_dir(report_dir)
+    _check_results(Path(results_path), given=click.get_current_context().get_parameter_source("results_path")
+                   is not click.core.ParameterSource.DEFAULT)
     try:
         import matplotlib  # noqa: F401  (checked before any integration)
     except ImportError:

@@ -22,7 +22,7 @@ from typing import Any, Sequence
 
 import click
 
-from stiefelsym.cli import InputError, standalone_command
+from stiefelsym.cli import InputError, SeedType, standalone_command
 
 from stiefelsym.claims import CatalogError, Claim, Registry, Size, load_catalog
 from stiefelsym.results import write_atomic
@@ -149,8 +149,8 @@ def _command(ids: Sequence[str], sizes: Sequence[str], methods: Sequence[str], s
 @click.option("--method", "methods", multiple=True, metavar="METHOD",
               help="exact, rational, modular, float or free; repeatable (default: all five; with --corrections, "
                    "rational and modular).")
-@click.option("--seed", type=click.IntRange(min=0), default=0, show_default=True, metavar="N",
-              help="Seed of every random choice.")
+@click.option("--seed", type=SeedType(), default="0", show_default=True, metavar="N|random",
+              help="Seed of every random choice ('random': a fresh one, printed).")
 @click.option("--claims", "claims_file", metavar="FILE", help="Mutate the claims of your own Python file.")
 @click.option("--report-dir", type=click.Path(path_type=Path), metavar="DIR",
               help="Write mutation.json and mutation.md here (nothing is written without it; make mutate: reports/).")
@@ -160,8 +160,8 @@ def _command(ids: Sequence[str], sizes: Sequence[str], methods: Sequence[str], s
               help="At most K mutants per claim, evenly spread over its source.")
 @click.option("--mutant", "only", type=click.IntRange(min=0), multiple=True, metavar="K",
               help="Only the mutant with this index (as in 'CLAIM#K'); repeatable; needs one CLAIM.")
-@click.option("--jobs", type=click.IntRange(min=0), default=0, show_default=True, metavar="J",
-              help="Worker processes (0: one per CPU).  The results do not depend on it.")
+@click.option("--jobs", type=click.IntRange(min=0), default=1, show_default=True, metavar="J",
+              help="Worker processes (0: one per CPU), as for verify.  The results do not depend on it.")
 @click.option("--fresh-points", is_flag=True,
               help="Every mutant at points of its own, as a verify run of it would be.  By default the point "
                    "methods evaluate a mutant at the points of the claim as printed and recompute only what the "

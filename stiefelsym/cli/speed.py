@@ -18,7 +18,7 @@ from typing import Any
 
 import click
 
-from stiefelsym.cli import MOST_SECONDS, Amount, InputError, standalone_command
+from stiefelsym.cli import MOST_SECONDS, Amount, InputError, SeedType, standalone_command
 
 FLOAT_NS_FULL = [2, 3, 4, 5, 6, 8, 10, 12, 16, 20, 24, 32, 48, 64, 100, 128, 200]
 #: r = 2: the sizes to n = 200 (float64 and, as far as the cost model allows, every precision)
@@ -37,7 +37,7 @@ DIM_NOTE = ("Dimensions are integers (exact ranks and counts): there is no round
 @click.option("--quick", is_flag=True,
               help="Small sizes only, a reduced hard-case table, and the package's cost model is left alone "
                    "(a copy of the fit goes to DIR).")
-@click.option("--seed", type=click.IntRange(min=0), default=0, show_default=True, metavar="N")
+@click.option("--seed", type=SeedType(), default="0", show_default=True, metavar="N|random")
 @click.option("--no-hard", is_flag=True, help="Skip the hard-case table.")
 @click.option("--hard-only", is_flag=True,
               help="Only the hard-case tables (hard.md, hard.json; speed.json and speed.md take their count of "

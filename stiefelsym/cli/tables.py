@@ -13,7 +13,7 @@ from typing import Any
 
 import click
 
-from stiefelsym.cli import InputError, standalone_command
+from stiefelsym.cli import InputError, SeedType, standalone_command
 
 from stiefelsym.results import parse_json, record_problems, write_atomic
 
@@ -80,7 +80,8 @@ def _load_verdicts(paths: list[Path], explicit: bool) -> dict[str, Any]:
 @click.option("--results", "results", multiple=True, type=click.Path(dir_okay=False, path_type=Path),
               help="results.json for the verdict matrix (repeatable; default reports/results.json and "
                    "reports/all/results.json when present)")
-@click.option("--seed", type=int, default=0, show_default=True, help="seed of every random point and prime")
+@click.option("--seed", type=SeedType(), default="0", show_default=True, metavar="N|random",
+              help="seed of every random point and prime ('random': a fresh one, printed)")
 def tables(report_dir: Path | None, n_max: int, extended_n_max: int | None, sizes: tuple[str, ...], results: tuple[Path, ...], seed: int) -> None:
     """Appendix tables: dim V, ddim, 2l, δ₀, δ, the torus dimensions, N and the §6 lemmas, the paper's
     formula next to an exact computation with its certificate, every disagreement with its set of

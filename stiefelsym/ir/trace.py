@@ -557,7 +557,7 @@ class TraceScene:
         if name.startswith("_"):
             raise AttributeError(name)
         if name not in API:
-            return t.refuse(f"a scene has no {name!r}{_did_you_mean(name)} (see README: what a scene s offers)")
+            return t.refuse(f"a scene has no {name!r}{_did_you_mean(name)} (see docs/guide.md: what a scene s offers)")
         if name in MATRICES:
             return t.new("attr", (self._r, name), MAT, t.shape_of(MATRICES[name]))
         if name in NUMBERS:

@@ -478,10 +478,10 @@ def check_memory(method: str, claim: Any, n: int, r: int, memory_gib: float | No
                 k = mid
             else:
                 hi = mid
-        if k >= 1:
-            hint = f"; sizes up to n = {k} at the same r/n fit it"
+        hint = (f"sizes up to n = {k} at the same r/n fit it, or a larger --memory" if k >= 1
+                else "a larger --memory may")
         raise BudgetError(f"{cid} ({n},{r}) with --method {method}: predicted peak memory {format_bytes(need)}, "
-                          f"beyond the memory budget of {memory_gib:g} GiB (--memory){hint}; or a larger --memory")
+                          f"beyond the memory budget of {memory_gib:g} GiB (--memory); {hint}")
     return need
 
 

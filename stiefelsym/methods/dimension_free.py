@@ -396,7 +396,8 @@ def needs_text(claim: Claim, func: Callable, refusal: str, family: SizeFamily | 
         refused = not isinstance(exc, GraphUnavailable)
         at = str(exc).removeprefix("refused: ") if refused else ""
         return (f"the claim is refused with symbolic sizes ({refusal.removeprefix('refused: ')}) and at "
-                f"({z.n},{z.r}) too ({type(exc).__name__}" + (f": {at}" if at and at not in refusal else "") + ")"
+                f"({z.n},{z.r}) too ({type(exc).__name__}" + (f": {at}" if at and at not in refusal else "")
+                + f"; ({z.n},{z.r}) is a size it is stated for, traced to see what it needs)"
                 + ("; an error at the fixed sizes" if refused else "; decided by the fixed-size methods")), refused
     what = "; ".join(needs) if needs else ("its statement uses a size as a number (a loop, a condition, or a block of "
                                            "that size)")

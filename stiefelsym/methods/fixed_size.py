@@ -3069,7 +3069,7 @@ def _float_component(claim: Claim, n: int, r: int, seed: int, func: Callable, op
     key = draw_key(claim, n, r, seed, func)
     for dps in ladder:
         if dps is None and wide:
-            run.log.append(f"float64 skipped: the constant {short_value(str(wide[0]), where='the claim')} is outside its range "
+            run.log.append(f"float64 skipped: the constant {short_value(str(wide[0]), where='exact in the claim')} is outside its range "
                            f"(2^-{FLOAT_EXPONENT_LIMIT}, 2^{FLOAT_EXPONENT_LIMIT})")
             continue
         def build(dps=dps) -> tuple:

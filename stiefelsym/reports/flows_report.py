@@ -346,6 +346,13 @@ def collect(quick: bool = False, log: Callable[[str], None] = lambda s: None) ->
 
 # --------------------------------------------------------------------------- algebraic verdicts
 
+def _shown(path: Path) -> str:
+    """A results file as the report names it: as given when relative (reports/results.json), by its name
+    when absolute (no machine's folders in a report)."""
+    path = Path(path)
+    return path.name if path.is_absolute() else path.as_posix()
+
+
 def algebraic_verdicts(results_path: Path, labels: Sequence[str] = (), claims: Sequence[str] = (),
                        kinds: Sequence[str] = ("lax", "not")) -> list[dict[str, Any]]:
     """The catalog's verdicts, from a ``results.json``, on the named claims, or else on the claims stated
@@ -692,7 +699,7 @@ def render_markdown(data: dict[str, Any], results_path: Path, figures: Sequence[
         "constraints and H are kept to about 1e-10.")
     add("")
     add("| flow | n, r | method | Lax matrix | drift (fixed to) | eigenvalues | isospectral | ΔH, constraints "
-        "| algebraic verdict (reports/results.json) |")
+        f"| algebraic verdict ({_shown(results_path)}) |")
     add("| --- | --- | --- | --- | --- | --- | --- | --- | --- |")
     for row in data["spectra"]:
         wanted = catalog_claims(row)

@@ -656,19 +656,26 @@ def _xml(text: Any) -> str:
 def render_junit(results: Sequence[Result], meta: dict[str, Any] | None = None) -> str:
     """JUnit XML: one testsuite per paper section, one testcase per result.
 
-    An unexpected verdict is a ``<failure>`` whose text holds the line, the
-    message, the witness and the rerun command."""
+    An unexpected verdict is a ``<failure>`` (an unexpected ``error``, a claim that could not be
+    evaluated, an ``<error>``) whose text holds the line, the message, the witness and the rerun
+    command."""
     import xml.etree.ElementTree as ET     # only for this format
+    def errors(rs: Sequence[Result]) -> int:
+        return sum(not r.expected and r.verdict == "error" for r in rs)
+
+    def failures(rs: Sequence[Result]) -> int:
+        return sum(not r.expected and r.verdict != "error" for r in rs)
+
     root = ET.Element("testsuites", name="stiefelsym", tests=str(len(results)),
-                      failures=str(sum(not r.expected for r in results)),
+                      failures=str(failures(results)), errors=str(errors(results)),
                       time=f"{sum(r.seconds for r in results):.3f}")
     by_section: dict[str, list[Result]] = {}
     for r in results:
         by_section.setdefault(r.section or "", []).append(r)
     for sec, rs in sorted(by_section.items(), key=lambda kv: _section_key(kv[0])):
         suite = ET.SubElement(root, "testsuite", name=f"section {sec}" if sec else "other",
-                              tests=str(len(rs)), failures=str(sum(not r.expected for r in rs)),
-                              errors="0", skipped="0", time=f"{sum(r.seconds for r in rs):.3f}")
+                              tests=str(len(rs)), failures=str(failures(rs)), errors=str(errors(rs)),
+                              skipped="0", time=f"{sum(r.seconds for r in rs):.3f}")
         for r in rs:
             case = ET.SubElement(suite, "testcase", name=_xml(case_name(r)),
                                  classname=_xml(f"stiefelsym.section{sec}.{r.claim}"),
@@ -679,8 +686,8 @@ def render_junit(results: Sequence[Result], meta: dict[str, Any] | None = None) 
             if r.expected:
                 ET.SubElement(case, "system-out").text = _xml("\n".join(detail))
             else:
-                fail = ET.SubElement(case, "failure", type=r.verdict,
-                                     message=_xml(f"{r.verdict}: not the verdict the catalog expects"))
+                fail = ET.SubElement(case, "error" if r.verdict == "error" else "failure", type=r.verdict,
+                                     message=_xml(f"{r.verdict}: not the expected verdict"))
                 fail.text = _xml("\n".join(detail))
     ET.indent(root)
     return '<?xml version="1.0" encoding="UTF-8"?>\n' + ET.tostring(root, encoding="unicode") + "\n"

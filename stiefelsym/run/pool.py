@@ -247,6 +247,14 @@ def _worker_main(task_fd: int, result_fd: int, execute: Callable[[Any], Any],
         tune_worker_process()
         if memory is not None:
             import resource
+            # the native libraries are mapped before the budget applies: it bounds what a run computes, and a
+            # small budget would otherwise fail the first run that loads one as an ImportError ("failed to map
+            # segment"), not as the memory budget it is
+            for name in ("flint", "symengine"):
+                try:
+                    __import__(name)
+                except ImportError:
+                    pass
             soft, hard = resource.getrlimit(resource.RLIMIT_AS)
             limit = memory if hard == resource.RLIM_INFINITY else min(memory, hard)
             resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
