@@ -9,7 +9,7 @@ MJ = r"$\href{javascript:alert(1)}{X^T X} \style{color:red}{I} \class{x}{r} \uni
 TEX = r"$\input{/etc/passwd}$ \input{/etc/passwd} $\immediate\write18{id}$ $\catcode`\^^M=13$ $\csname input\endcsname{/etc/hostname}$"
 
 
-@claim("s74-html-title", kind="id", sizes=admissible(n_max=2), 
+@claim("s74-html-title", kind="id", sizes=admissible(n_max=2),
        statement=r"X^{T} X = I_r \href{javascript:alert(1)}{x}", paper=("prep",))
 def html_title(s):
     """XᵀX = I_r, TRUE. [click me](javascript:alert(1)) ![img](http://127.0.0.1:9/track.png) <img src=x onerror=alert(1)> $\\href{javascript:alert(1)}{X^T X} \\style{color:red}{I}$ `code` <script>alert(1)</script>"""
