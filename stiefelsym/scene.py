@@ -110,6 +110,11 @@ def _engine_property(attr: str, what: str) -> property:
     return property(get, doc=f"{what}: engine only")
 
 
+#: the parameters of the momentum P of the point (X, P): a hard case that rewrites them reaches a claim only when
+#: it reads P (they are drawn with X's, in one block)
+MOMENTUM_PARAMS = ("W_", "Z_")
+
+
 class SizeError(ValueError):
     """An inadmissible problem size."""
 
@@ -378,7 +383,10 @@ class Scene(PaperObjects):
             if hard is not None and self._rng is not None:
                 new = hard.rewrite(self, name, value)
                 if new is not value:
-                    self._options.setdefault("hard_hits", []).append(name)
+                    # a momentum's parameter (W, Z of P) is drawn with X's: the case reaches the claim only
+                    # when P is read (see :attr:`P`); any other parameter, when it is drawn
+                    pending = name.startswith(MOMENTUM_PARAMS) and "P read" not in self._options
+                    self._options.setdefault("hard_pending" if pending else "hard_hits", []).append(name)
                     value = self._field.exact_input(new)
             self._params[name] = value
         return self._params[name]
@@ -750,6 +758,11 @@ class Scene(PaperObjects):
 
     @property
     def P(self) -> Mat:
+        opts = self._options
+        if "P read" not in opts and opts.get("hard") is not None:
+            # (the scene's Phi, Psi, flows and gradients read P here too)
+            opts["P read"] = True
+            opts.setdefault("hard_hits", []).extend(opts.pop("hard_pending", ()))
         return self._point()[1]
 
     def _second_point(self):

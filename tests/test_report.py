@@ -222,15 +222,19 @@ def test_junit_one_testcase_per_result_failures_for_unexpected(results):
     root = ET.fromstring(render_junit(results))
     cases = root.findall(".//testcase")
     assert len(cases) == len(results)
+    # an unexpected error is a JUnit <error> (counted under errors), any other unexpected verdict a <failure>
     failed = {c.get("name") for c in cases if c.find("failure") is not None}
-    assert failed == {case_name(r) for r in results if not r.expected}
+    errored = {c.get("name") for c in cases if c.find("error") is not None}
+    assert failed == {case_name(r) for r in results if not r.expected and r.verdict != "error"}
+    assert errored == {case_name(r) for r in results if not r.expected and r.verdict == "error"}
     assert "prep[n=4,r=2]-modular" in {c.get("name") for c in cases}
-    assert root.get("failures") == "4"
+    assert int(root.get("failures")) + int(root.get("errors")) == 4
+    assert int(root.get("errors")) == len(errored)
 
 
 def test_junit_survives_control_characters():
     r = result("prep", 3, 1, "modular", "error", message="bad \x00\x07 bytes")
-    assert ET.fromstring(render_junit([r])).find(".//failure") is not None
+    assert ET.fromstring(render_junit([r])).find(".//error") is not None
 
 
 # --------------------------------------------------------------------------- pdflatex

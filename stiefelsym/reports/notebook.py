@@ -104,6 +104,10 @@ def claim_latex(c: Any) -> str:
 
 _NAME = re.compile(r"\b[A-Za-z][A-Za-z0-9]*_\d+,\d+\b|\b[A-Za-z_][A-Za-z0-9_]*\b")
 _MOD = re.compile(r"^\s*(-?\d+)\s*\(mod\s+(\d+)\)\s*$")
+_BALL = re.compile(r"^\s*\[\s*([-+0-9.eE]+)\s*\+/-\s*([-+0-9.eE]+)\s*\]\s*$")
+#: the largest exponent a residual's text may hold (an engine's residual has small ones; a record edited by
+#: hand could hold 9**9**9**9, which sympy would try to evaluate for ever)
+MOST_EXPONENT = 10_000
 
 
 def _sympy_text(text: str) -> Any:
@@ -113,6 +117,10 @@ def _sympy_text(text: str) -> Any:
     m = _MOD.match(text)
     if m:
         return sympy.Integer(int(m.group(1)) % int(m.group(2)))
+    m = _BALL.match(text)
+    if m:          # a ball of the ball method: the interval it encloses the exact value in
+        mid, rad = sympy.Float(m.group(1)), sympy.Float(m.group(2))
+        return sympy.Interval(mid - rad, mid + rad)
     names: dict[str, Any] = {}
     keys: dict[str, str] = {}
 
@@ -123,6 +131,10 @@ def _sympy_text(text: str) -> Any:
             names[keys[word]] = sympy.Symbol(word)
         return keys[word]
     code = _NAME.sub(name, text)
+    shape = sympy.parse_expr(code, local_dict=names, evaluate=False)
+    for node in sympy.preorder_traversal(shape):
+        if isinstance(node, sympy.Pow) and not (node.exp.is_Integer and abs(int(node.exp)) <= MOST_EXPONENT):
+            raise ValueError(f"not an engine's residual: a power with the exponent {str(node.exp)[:40]}")
     return sympy.parse_expr(code, local_dict=names, evaluate=True)
 
 
@@ -130,7 +142,8 @@ def residual_sympy(r: Result) -> Any:
     """The witness residual of a failing result as a sympy expression: the residual entry as a
     function of the chart's coordinates when the result holds it in full (the exact method), else
     its value at the witness point (a Rational; for the modular method the residue modulo
-    ``witness['prime']``; for floating point the Float)."""
+    ``witness['prime']``; for floating point the Float; for the ball method the Interval its ball
+    encloses the value in).  ValueError for a text no engine writes (a record edited by hand)."""
     if r.residual and not r.residual.endswith("...") and " = " in r.residual:
         text = r.residual.rpartition(" = ")[2]
         try:
@@ -139,7 +152,11 @@ def residual_sympy(r: Result) -> Any:
             pass
     w = r.witness or {}
     if w.get("value") is not None:
-        return _sympy_text(str(w["value"]))
+        try:
+            return _sympy_text(str(w["value"]))
+        except (SyntaxError, TypeError) as exc:
+            raise ValueError(f"{R.case_name(r)}: the witness value {str(w['value'])[:60]!r} is not a number "
+                             f"({type(exc).__name__})") from None
     raise ValueError(f"{R.case_name(r)}: {r.verdict}, no residual witness to convert")
 
 

@@ -696,10 +696,19 @@ def render_junit(results: Sequence[Result], meta: dict[str, Any] | None = None) 
 # --------------------------------------------------------------------------- Markdown
 
 def _md_escape(text: Any) -> str:
-    """Escape Markdown emphasis and HTML in running text, keeping ``$...$`` math."""
+    """Escape Markdown emphasis, HTML, links and images in running text, keeping ``$...$`` math whose
+    vocabulary is mathematics (:func:`math_ok`; other "math", \\href say, is shown as text).  A bracket that
+    would close a link's or an image's text (``](``, ``][``) is written as an HTML entity, not as ``\\]``,
+    which a notebook's MathJax takes for the end of a display."""
     out = []
     for is_math, seg in split_math(str(text)):
-        out.append(f"${_md_math(seg)}$" if is_math else re.sub(r"([\\*_`<>])", r"\\\1", seg))
+        if is_math and math_ok(seg):
+            out.append(f"${_md_math(seg)}$")
+            continue
+        if is_math:
+            seg = f"${seg}$"
+        seg = re.sub(r"([\\*_`<>$])", r"\\\1", seg)
+        out.append(re.sub(r"\](?=[(\[])", "&#93;", seg))
     return "".join(out)
 
 
@@ -708,6 +717,8 @@ def _md_paragraph(text: Any) -> str:
     joined, so that they make no table, heading, list or code block of the report's own, and a first character
     that would begin one escaped."""
     out = _md_escape(" ".join(str(text).split()))
+    if out.startswith("["):           # (a link's reference definition, "[x]: url", begins a line)
+        return "&#91;" + out[1:]
     return "\\" + out if re.match(r"[#>+=|~-]|\d+[.)]\s", out) else out
 
 
