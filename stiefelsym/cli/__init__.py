@@ -728,7 +728,7 @@ class _Stdout:
               help="Seed of every random choice; the same seed reproduces every verdict.  'random' draws "
                    "a fresh seed (printed in every result): use it for claims you did not write, since a "
                    "claim that knows the seed could be built to vanish exactly at its random points.")
-@click.option("--claims", "claims_files", metavar="FILE", multiple=True,
+@click.option("--claims", "claims_files", metavar="FILE|DIR", multiple=True,
               help="A Python file of your own claims (written with @claim), or a folder (each of its .py "
                    "files); verifies them all, or those named.  Repeatable (an id defined in two files is refused).")
 @click.option("--report-dir", type=str, callback=_report_dir, metavar="DIR",
@@ -1053,7 +1053,7 @@ def _sizes_text(sizes: Sequence[Size], limit: int = 4) -> str:
 
 
 @main.command("list")
-@click.option("--claims", "claims_files", metavar="FILE", multiple=True,
+@click.option("--claims", "claims_files", metavar="FILE|DIR", multiple=True,
               help="List the claims of this file (repeatable).")
 def list_claims(claims_files: tuple[str, ...]) -> None:
     """List the claims: id, paper label(s), kind, section, sizes."""
@@ -1069,7 +1069,7 @@ def list_claims(claims_files: tuple[str, ...]) -> None:
 
 @main.command()
 @click.argument("claim_id", metavar="CLAIM")
-@click.option("--claims", "claims_files", metavar="FILE", multiple=True,
+@click.option("--claims", "claims_files", metavar="FILE|DIR", multiple=True,
               help="Look the claim up in this file first (repeatable).")
 def show(claim_id: str, claims_files: tuple[str, ...]) -> None:
     """Show one claim: statement, docstring, sizes, source."""
@@ -1113,7 +1113,7 @@ def show(claim_id: str, claims_files: tuple[str, ...]) -> None:
 
 @main.command()
 @click.argument("claim_id", metavar="CLAIM")
-@click.option("--claims", "claims_files", metavar="FILE", multiple=True,
+@click.option("--claims", "claims_files", metavar="FILE|DIR", multiple=True,
               help="Look the claim up in this file first (repeatable).")
 def derive(claim_id: str, claims_files: tuple[str, ...]) -> None:
     """Print the dimension-free proof of CLAIM as LaTeX: each residual, the rules that

@@ -1,3 +1,4 @@
+# ruff: noqa: F401 - a user's unused import, kept as written
 """Mistakes a new user makes.  Every claim here must be an `error` with a clear one-line reason.
 
 Run:  stiefelsym verify --claims tests/adversary/s74/newuser/mistakes_claims.py --jobs 1 --max-n 3
