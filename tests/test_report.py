@@ -141,7 +141,7 @@ def test_errata_lists_failing_claim_with_witness_and_corrections(results):
     assert "- check dL/dt: residual nonzero, entry (1, 2) = 3/7" in errata
     assert "- rerun: `stiefelsym verify neumann-lax --size 3,1 --method rational --seed 0`" in errata
     assert "Candidate corrections: the claim as printed was run at 2 sizes (3,1), (4,2)" in errata
-    assert r"| sign of $\lambda A$ flipped | **verified** | verified at all 2 computed sizes by rational " \
+    assert r"| sign of $\lambda A$ flipped | **verified at the computed sizes** | verified at all 2 computed sizes by rational " \
            "(p ≤ 2.9e-34) |" in errata
     assert "| M transposed | rejected | fails at (3,1) by rational |" in errata
     for cid in CLAIMS[:-1]:  # only the failing claim is an erratum
@@ -338,10 +338,10 @@ def test_errata_table_aggregates_corrections_across_sizes():
         r.claim, r.section = "orbit", "2"
     md = render_markdown(rs)
     # the registered words in Markdown: a spaced <= as ≤
-    assert "| n ≤ 2r + 2 | **verified** | verified at all 5 computed sizes by exact |" in md
+    assert "| n ≤ 2r + 2 | **verified at the computed sizes** | verified at all 5 computed sizes by exact |" in md
     assert "| n ≤ 2r | rejected | passes at (2,1), (3,1), (3,2) by exact; fails at (4,2), (5,2) by exact |" in md
     tex = render_latex(rs, detail=True)
-    assert r"\textbf{verified} (verified at all 5 computed sizes by exact)." in tex
+    assert r"\textbf{verified at the computed sizes} (verified at all 5 computed sizes by exact)." in tex
 
 
 # --------------------------------------------------------------------------- rank and count statements

@@ -132,6 +132,22 @@ GRAPH_EXPLANATION = (
     "stiefelsym report with its check option) also runs every record again and refuses a file whose verdicts "
     "the runs do not give again.")
 
+REFERENCES_EXPLANATION = (
+    "A reference such as (9) §4 is equation (9) of Section 4: the paper numbers its equations afresh in each "
+    "section, and its theorems, propositions and lemmas by section (Theorem 4.4).  The word in brackets after a "
+    "reference, as in (9) §4 [LA-MAN3], is the paper's own label of it in its LaTeX source.")
+
+REDUCTIONS_EXPLANATION = (
+    "Each run states how the points of T*V were reached.  A chart is a rational parametrization of the points "
+    "(X, P) of T*V by free parameters: the Cayley chart X = (I − S)(I + S)⁻¹ E with S skew-symmetric, and P "
+    "tangent there, covers a dense open set of T*V; at r = n its two components (det X = 1 and −1, the two "
+    "components of O(n)) each get one.  An equivariance reduction uses a symmetry of the statement (a group "
+    "that acts on X, P, A and maps residuals to residuals) to move every point into a smaller chart, the "
+    "equivariant one, X = (E₁ … Eᵣ); each such run names the group and why the statement is covariant.  A proof "
+    "for every n and r rewrites the residual modulo XᵀX = I and XᵀP + PᵀX = 0 in the free algebra of the "
+    "letters X, P, A; its cofactor certificate writes the residual as a sum of products of those relations "
+    "(its hypotheses) and is checked on its own, without the rewriting.")
+
 EXPECTED_EXPLANATION = (
     "Each verdict is compared with what the catalog expects: a statement of the paper "
     "is expected to hold; a printed formula already known to be wrong is expected to "
@@ -566,6 +582,15 @@ def correction_summary(rs: list[Result], planned: Sequence[tuple[int, int]]) -> 
     return status, phrases
 
 
+def _status_label(status: str, rs: list[Result]) -> str:
+    """A correction's status as a reader sees it: "verified" says whether a proof for every n and r stands behind it
+    (the dimension-free method's) or the computed sizes only."""
+    if status != "verified":
+        return status
+    free = [r for r in rs if r.n is None and r.verdict == "proved"]
+    return f"proved for {free_scope(free[0])}" if free else "verified at the computed sizes"
+
+
 def _correction_status(rs: list[Result], planned: Sequence[tuple[int, int]] = ()) -> str:
     return correction_summary(rs, planned)[0]
 
@@ -829,6 +854,8 @@ def render_markdown(results: Sequence[Result], meta: dict[str, Any] | None = Non
     out += [f"- **{m}**: {_md_escape(t)}" for m, t in METHOD_MEANING.items()]
     out += ["", f"**The bound p.** {_md_escape(BOUND_EXPLANATION)}", "",
             f"**Graphs and digests.** {_md_escape(GRAPH_EXPLANATION)}", "",
+            f"**Charts, reductions, certificates.** {_md_escape(REDUCTIONS_EXPLANATION)}", "",
+            f"**References to the paper.** {_md_escape(REFERENCES_EXPLANATION)}", "",
             f"**Expected verdicts.** {_md_escape(EXPECTED_EXPLANATION)}", ""]
 
     out += ["## Errata", ""]
@@ -1263,7 +1290,8 @@ def _md_corrections(c: ClaimResults) -> list[str]:
     for var, rs in c.variants.items():
         status, phrases = correction_summary(rs, planned)
         change = _md_change(c.change_of(var)).replace("|", r"\|")
-        rows.append([change or "–", _md_cell(unicode_words(var)), f"**{status}**" if status == "verified" else status,
+        label = _status_label(status, rs)
+        rows.append([change or "–", _md_cell(unicode_words(var)), f"**{label}**" if status == "verified" else label,
                      _md_cell("; ".join(phrases))])
     # after the colon the sentence goes on in lower case, as in the PDF
     where = f" {_corrections_rule(planned)}" if planned else ""
@@ -1643,6 +1671,8 @@ def render_latex(results: Sequence[Result], meta: dict[str, Any] | None = None, 
     out += [r"\end{description}",
             r"\paragraph{The bound $p$.} " + tex_escape(BOUND_EXPLANATION),
             r"\paragraph{Graphs and digests.} " + tex_escape(GRAPH_EXPLANATION),
+            r"\paragraph{Charts, reductions, certificates.} " + tex_escape(REDUCTIONS_EXPLANATION),
+            r"\paragraph{References to the paper.} " + tex_escape(REFERENCES_EXPLANATION),
             r"\paragraph{Expected verdicts.} " + tex_escape(EXPECTED_EXPLANATION), ""]
 
     out += _toc_section("Errata")
@@ -1965,7 +1995,8 @@ def _tex_corrections(c: ClaimResults) -> list[str]:
     items = []
     for var, rs in c.variants.items():
         status, phrases = correction_summary(rs, planned)
-        items.append(_tex_with_change(c, var) + " --- " + (r"\textbf{verified}" if status == "verified" else status)
+        label = tex_escape(_status_label(status, rs))
+        items.append(_tex_with_change(c, var) + " --- " + (r"\textbf{" + label + "}" if status == "verified" else label)
                      + tex_escape(" (" + "; ".join(phrases) + ")."))
     intro = "Candidate corrections:"
     if planned:
