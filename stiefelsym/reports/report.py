@@ -800,10 +800,30 @@ def _md_verdict(r: Result) -> str:
     return v if r.expected else f"{v} (UNEXPECTED)"
 
 
+#: consecutive runs of a claim that say the same thing at this many sizes or more are one row of the table
+MD_RUNS_MERGED = 3
+
+
 def _md_results(rs: list[Result]) -> list[str]:
-    rows = [[_md_cell(r.size), r.method, _md_verdict(r), format_seconds(r.seconds),
-             _md_cell(short(quoted_value_words(r.certificate) if of_catalog(r) else r.certificate) or "–"), str(r.seed if r.seed is not None else "–"),
-             format_bound(r.false_pass_bound)] for r in rs]
+    """The runs of a claim, a row each; consecutive runs at fixed sizes that differ in nothing but their size (the
+    same method, verdict, certificate, seed and bound, and no time shown) are one row naming their sizes."""
+    cells = [[_md_cell(r.size), r.method, _md_verdict(r), format_seconds(r.seconds),
+              _md_cell(short(quoted_value_words(r.certificate) if of_catalog(r) else r.certificate) or "–"),
+              str(r.seed if r.seed is not None else "–"), format_bound(r.false_pass_bound)] for r in rs]
+    universe = [(r.n, r.r) for r in rs if r.n is not None]
+    rows: list[list[str]] = []
+    i = 0
+    while i < len(rs):
+        j = i + 1
+        if rs[i].n is not None:
+            while j < len(rs) and rs[j].n is not None and cells[j][1:] == cells[i][1:]:
+                j += 1
+        if j - i >= MD_RUNS_MERGED:
+            sizes = [(r.n, r.r) for r in rs[i:j]]
+            rows.append([_md_cell(format_sizes(sizes, MD_RUNS_MERGED, universe))] + cells[i][1:])
+        else:
+            rows += cells[i:j]
+        i = j
     return _md_table(["size (n,r)", "method", "verdict", "time", "certificate", "seed",
                       "p (false pass)"], rows, "lllrlrr")
 
