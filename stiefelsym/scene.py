@@ -384,9 +384,12 @@ class Scene(PaperObjects):
                 new = hard.rewrite(self, name, value)
                 if new is not value:
                     # a momentum's parameter (W, Z of P) is drawn with X's: the case reaches the claim only
-                    # when P is read (see :attr:`P`); any other parameter, when it is drawn
-                    pending = name.startswith(MOMENTUM_PARAMS) and "P read" not in self._options
-                    self._options.setdefault("hard_pending" if pending else "hard_hits", []).append(name)
+                    # when P is read (see :meth:`_momenta_read`); any other parameter, when it is drawn
+                    state = self._options.get("hard_momenta")
+                    if name.startswith(MOMENTUM_PARAMS) and state is not None and not state["read"]:
+                        state["pending"].append(name)
+                    else:
+                        self._options.setdefault("hard_hits", []).append(name)
                     value = self._field.exact_input(new)
             self._params[name] = value
         return self._params[name]
@@ -756,13 +759,18 @@ class Scene(PaperObjects):
     def X(self) -> Mat:
         return self._point()[0]
 
+    def _momenta_read(self) -> None:
+        """The claim reads P (itself, or through Phi, Psi, a flow, a gradient): the parameters of P a hard case
+        rewrote reach it."""
+        state = self._options.get("hard_momenta")
+        if state is not None and not state["read"]:
+            state["read"] = True
+            self._options.setdefault("hard_hits", []).extend(state["pending"])
+            state["pending"].clear()
+
     @property
     def P(self) -> Mat:
-        opts = self._options
-        if "P read" not in opts and opts.get("hard") is not None:
-            # (the scene's Phi, Psi, flows and gradients read P here too)
-            opts["P read"] = True
-            opts.setdefault("hard_hits", []).extend(opts.pop("hard_pending", ()))
+        self._momenta_read()
         return self._point()[1]
 
     def _second_point(self):
@@ -1823,6 +1831,7 @@ class _LiftedScene(Scene):
 
     @property
     def P(self) -> Mat:
+        self._momenta_read()
         return self._point()[1]
 
     @property

@@ -2575,6 +2575,9 @@ def _constant_rank(R: Rank) -> tuple[str, str]:
 def _prepare(options: dict | None) -> dict | None:
     if options and options.get("hard"):
         options.setdefault("hard_hits", [])   # the scene appends the parameters a hard case rewrites
+        # ... and those of the momentum P once a scene (or one lifted from it: each copies the options, sharing
+        # these) reads P (see Scene._param)
+        options.setdefault("hard_momenta", {"read": False, "pending": []})
     return options
 
 
@@ -2590,7 +2593,7 @@ def _hard_or_random(run: Callable[[dict | None], Result], options: dict | None) 
     res = run(options)
     if not _untouched(options):
         return res
-    plain = {k: v for k, v in options.items() if k not in ("hard", "hard_hits")} or None
+    plain = {k: v for k, v in options.items() if k not in ("hard", "hard_hits", "hard_momenta")} or None
     res = run(plain)
     note = (f"the hard case {options['hard'].name} changed no parameter of this claim: verified at random "
             f"points as without it")
@@ -2986,7 +2989,7 @@ def _confirm_numeric(res: Result, claim: Claim, n: int, r: int, seed: int, func:
     nonzero residual there refutes the claim; where no exact point can be evaluated the float verdict
     is not a pass (``inconclusive``, with the reason)."""
     what = "float64" if method == "float" else "the ball enclosure"
-    hard = {k: v for k, v in options.items() if k != "hard_hits"} if options else None
+    hard = {k: v for k, v in options.items() if k not in ("hard_hits", "hard_momenta")} if options else None
     if hard and hard.get("hard"):
         exact = run_points(claim, n, r, "modular", seed, func, trials=CONFIRM_POINTS, options=hard)
     else:
