@@ -50,6 +50,8 @@ tr(𝔸(skew u)·v) = tr(𝔸(skew v)·u) (linearity and symmetry, for a trace w
 """
 from __future__ import annotations
 
+import math
+
 import time
 from dataclasses import dataclass
 from typing import Any
@@ -477,7 +479,10 @@ def coefficient(text: Any) -> Any:
     e = _PARSED.get(text)
     if e is not None:
         return e
-    e = se.sympify(text)
+    try:
+        e = se.sympify(text)
+    except Exception as exc:   # noqa: BLE001 - symengine's parser refuses in its own words (a power too large, ...)
+        raise Rejected(f"the coefficient {text[:80]} does not parse ({type(exc).__name__}: {str(exc)[:80]})") from None
     _rational_function(e, text)
     if se.expand(e.as_numer_denom()[1]) == 0:
         raise Rejected(f"the coefficient {text} has a zero denominator")
@@ -487,13 +492,27 @@ def coefficient(text: Any) -> Any:
     return e
 
 
-def _rational_function(e: Any, text: str) -> None:
+#: the most terms a coefficient's expansion may have (bounded before anything is expanded: an engine's coefficients
+#: have a few; a hand-edited certificate with (x + y + z + 1)**1000 would expand for ever)
+MOST_COEFFICIENT_TERMS = 10**6
+
+
+def _rational_function(e: Any, text: str) -> int:
+    """Refuse anything but a rational function of the scalars with rational numbers; the number of terms its
+    expansion can have at most (numerator and denominator alike), refused beyond :data:`MOST_COEFFICIENT_TERMS`."""
     if isinstance(e, (se.Integer, se.Rational, se.Symbol)):
-        return
+        return 1
     if isinstance(e, (se.Add, se.Mul)) or (isinstance(e, se.Pow) and isinstance(e.args[1], se.Integer)):
-        for a in (e.args if not isinstance(e, se.Pow) else e.args[:1]):
-            _rational_function(a, text)
-        return
+        if isinstance(e, se.Pow):
+            k, base = abs(int(e.args[1])), _rational_function(e.args[0], text)
+            # the monomials of a sum of `base` terms to the power k: C(base + k - 1, k)
+            size = math.comb(base + k - 1, k) if base > 1 and k <= MOST_COEFFICIENT_TERMS else (1 if base <= 1 else math.inf)
+        else:
+            sizes = [_rational_function(a, text) for a in e.args]
+            size = sum(sizes) if isinstance(e, se.Add) else math.prod(sizes)
+        if size > MOST_COEFFICIENT_TERMS:
+            raise Rejected(f"the coefficient {text[:80]} would expand to more than {MOST_COEFFICIENT_TERMS:,} terms")
+        return size
     raise Rejected(f"the coefficient {text} is not a rational function of the scalars ({type(e).__name__})")
 
 

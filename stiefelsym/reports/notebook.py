@@ -102,18 +102,30 @@ def claim_latex(c: Any) -> str:
 
 # --------------------------------------------------------------------------- sympy
 
-_NAME = re.compile(r"\b[A-Za-z][A-Za-z0-9]*_\d+,\d+\b|\b[A-Za-z_][A-Za-z0-9_]*\b")
 _MOD = re.compile(r"^\s*(-?\d+)\s*\(mod\s+(\d+)\)\s*$")
 _BALL = re.compile(r"^\s*\[\s*([-+0-9.eE]+)\s*\+/-\s*([-+0-9.eE]+)\s*\]\s*$")
 #: the largest exponent a residual's text may hold (an engine's residual has small ones; a record edited by
-#: hand could hold 9**9**9**9, which sympy would try to evaluate for ever)
+#: hand could hold 9**9**9**9, which would be evaluated for ever)
 MOST_EXPONENT = 10_000
+#: the most bits a power of a number in a residual's text may have ((9**9999)**9999 has 10^8)
+MOST_POWER_BITS = 1 << 20
+#: the longest residual text read (an engine's residual entry is far shorter)
+MOST_CHARS = 1_000_000
+#: the tokens of a residual's text: a number, a chart coordinate (Z_2,1), a name (lambda, a_1), an operator
+_TOKEN = re.compile(r"\s*(?:(?P<num>\d+(?:\.\d*)?(?:[eE][-+]?\d+)?)|(?P<coord>[A-Za-z][A-Za-z0-9]*_\d+,\d+)"
+                    r"|(?P<name>[A-Za-z_][A-Za-z0-9_]*)|(?P<op>\*\*|[-+*/()]))", re.ASCII)
 
 
 def _sympy_text(text: str) -> Any:
     """An engine's residual or value text as sympy: chart coordinates such as ``Z_2,1`` become
-    symbols of that name, ``v (mod p)`` the residue v (an Integer)."""
+    symbols of that name, ``v (mod p)`` the residue v (an Integer), a ball ``[m +/- r]`` the Interval.
+
+    The text is read by a parser of its own (numbers, ASCII names, + − · / ** and parentheses), which builds the
+    sympy objects itself: nothing of it is evaluated as code (sympy's parser evaluates Python, and a record edited
+    by hand can hold anything); an exponent beyond :data:`MOST_EXPONENT` is refused.  ValueError otherwise."""
     import sympy
+    if len(text) > MOST_CHARS:
+        raise ValueError(f"not an engine's residual: {len(text):,} characters")
     m = _MOD.match(text)
     if m:
         return sympy.Integer(int(m.group(1)) % int(m.group(2)))
@@ -121,21 +133,89 @@ def _sympy_text(text: str) -> Any:
     if m:          # a ball of the ball method: the interval it encloses the exact value in
         mid, rad = sympy.Float(m.group(1)), sympy.Float(m.group(2))
         return sympy.Interval(mid - rad, mid + rad)
-    names: dict[str, Any] = {}
-    keys: dict[str, str] = {}
+    tokens: list[tuple[str, str]] = []
+    pos, stripped = 0, text.rstrip()
+    while pos < len(stripped):
+        t = _TOKEN.match(stripped, pos)
+        if t is None or t.end() == pos:
+            raise ValueError(f"not an engine's residual: {stripped[pos:pos + 20]!r} at character {pos + 1}")
+        kind = t.lastgroup or ""
+        tokens.append((kind, t.group(kind)))
+        pos = t.end()
+    symbols: dict[str, Any] = {}
+    at = [0]
 
-    def name(mt: re.Match) -> str:
-        word = mt.group(0)
-        if word not in keys:              # every name a symbol of that name (lambda included)
-            keys[word] = f"_s{len(keys)}"
-            names[keys[word]] = sympy.Symbol(word)
-        return keys[word]
-    code = _NAME.sub(name, text)
-    shape = sympy.parse_expr(code, local_dict=names, evaluate=False)
-    for node in sympy.preorder_traversal(shape):
-        if isinstance(node, sympy.Pow) and not (node.exp.is_Integer and abs(int(node.exp)) <= MOST_EXPONENT):
-            raise ValueError(f"not an engine's residual: a power with the exponent {str(node.exp)[:40]}")
-    return sympy.parse_expr(code, local_dict=names, evaluate=True)
+    def peek() -> str | None:
+        return tokens[at[0]][1] if at[0] < len(tokens) and tokens[at[0]][0] == "op" else None
+
+    def expr() -> Any:
+        out = term()
+        while peek() in ("+", "-"):
+            op = tokens[at[0]][1]
+            at[0] += 1
+            out = out + term() if op == "+" else out - term()
+        return out
+
+    def term() -> Any:
+        out = unary()
+        while peek() in ("*", "/"):
+            op = tokens[at[0]][1]
+            at[0] += 1
+            rhs = unary()
+            if op == "/" and rhs == 0:
+                raise ValueError("not an engine's residual: a division by 0")
+            out = out * rhs if op == "*" else out / rhs
+        return out
+
+    def unary() -> Any:
+        if peek() in ("-", "+"):
+            op = tokens[at[0]][1]
+            at[0] += 1
+            return -unary() if op == "-" else unary()
+        return power()
+
+    def power() -> Any:
+        base = atom()
+        if peek() == "**":
+            at[0] += 1
+            e = unary()
+            if not (isinstance(e, sympy.Integer) and abs(int(e)) <= MOST_EXPONENT):
+                raise ValueError(f"not an engine's residual: a power with the exponent {str(e)[:40]}")
+            if base == 0 and e < 0:
+                raise ValueError("not an engine's residual: a division by 0")
+            if isinstance(base, sympy.Rational):
+                bits = max(int(base.p).bit_length(), int(base.q).bit_length()) * abs(int(e))
+                if bits > MOST_POWER_BITS:
+                    raise ValueError(f"not an engine's residual: a power of about {bits:,} bits")
+            return base ** e
+        return base
+
+    def atom() -> Any:
+        if at[0] >= len(tokens):
+            raise ValueError("not an engine's residual: it ends too soon")
+        kind, value = tokens[at[0]]
+        at[0] += 1
+        if kind == "num":
+            return sympy.Integer(int(value)) if value.isdigit() else sympy.Float(value)
+        if kind in ("coord", "name"):
+            if value not in symbols:
+                symbols[value] = sympy.Symbol(value)
+            return symbols[value]
+        if value == "(":
+            out = expr()
+            if peek() != ")":
+                raise ValueError("not an engine's residual: a parenthesis is not closed")
+            at[0] += 1
+            return out
+        raise ValueError(f"not an engine's residual: {value!r} where a number or a name belongs")
+
+    try:
+        out = expr()
+    except RecursionError:
+        raise ValueError("not an engine's residual: nested deeper than Python's stack") from None
+    if at[0] != len(tokens):
+        raise ValueError(f"not an engine's residual: {tokens[at[0]][1]!r} after the end of an expression")
+    return out
 
 
 def residual_sympy(r: Result) -> Any:
@@ -148,15 +228,14 @@ def residual_sympy(r: Result) -> Any:
         text = r.residual.rpartition(" = ")[2]
         try:
             return _sympy_text(text)
-        except (SyntaxError, TypeError, ValueError):
+        except ValueError:
             pass
     w = r.witness or {}
     if w.get("value") is not None:
         try:
             return _sympy_text(str(w["value"]))
-        except (SyntaxError, TypeError) as exc:
-            raise ValueError(f"{R.case_name(r)}: the witness value {str(w['value'])[:60]!r} is not a number "
-                             f"({type(exc).__name__})") from None
+        except ValueError as exc:
+            raise ValueError(f"{R.case_name(r)}: the witness value {str(w['value'])[:60]!r}: {exc}") from None
     raise ValueError(f"{R.case_name(r)}: {r.verdict}, no residual witness to convert")
 
 

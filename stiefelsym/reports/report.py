@@ -722,18 +722,30 @@ def render_junit(results: Sequence[Result], meta: dict[str, Any] | None = None) 
 
 def _md_escape(text: Any) -> str:
     """Escape Markdown emphasis, HTML, links and images in running text, keeping ``$...$`` math whose
-    vocabulary is mathematics (:func:`math_ok`; other "math", \\href say, is shown as text).  A bracket that
-    would close a link's or an image's text (``](``, ``][``) is written as an HTML entity, not as ``\\]``,
-    which a notebook's MathJax takes for the end of a display."""
-    out = []
+    vocabulary is mathematics (:func:`math_ok`; other "math", \\href say, and any text with a backslash or a $ are
+    shown as code).  A bracket that would close a link's or an image's text (``](``, ``][``) is written as an HTML
+    entity, not as ``\\]``, which a notebook's MathJax takes for the end of a display, and so is the ``&`` of what
+    would read as an entity (``&#36;``: the claim's own entities stay text)."""
+    out: list[str] = []
+    code: list[str] = []          # consecutive pieces shown as code: one span (two adjacent ones would read as ``)
     for is_math, seg in split_math(str(text)):
         if is_math and math_ok(seg):
+            if code:
+                out.append(_md_code("".join(code)))
+                code = []
             out.append(f"${_md_math(seg)}$")
             continue
         if is_math:
             seg = f"${seg}$"
-        seg = re.sub(r"([\\*_`<>$])", r"\\\1", seg)
+        if "\\" in seg or "$" in seg or code:
+            # LaTeX that is not mathematics, or a lone $: shown verbatim as code, which no Markdown reader takes
+            # for math (a notebook's MathJax reads \\( in the text as the start of math, and skips code)
+            code.append(seg)
+            continue
+        seg = re.sub(r"([\\*_`<>])", r"\\\1", re.sub(r"&(?=#?[A-Za-z0-9]+;)", "&amp;", seg))
         out.append(re.sub(r"\](?=[(\[])", "&#93;", seg))
+    if code:
+        out.append(_md_code("".join(code)))
     return "".join(out)
 
 

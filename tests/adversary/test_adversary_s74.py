@@ -64,3 +64,27 @@ def test_every_seed_option_takes_random_and_refuses_negatives():
     assert run.returncode in (0, 1) and "seed: " in run.stderr and "Traceback" not in run.stderr, run.stderr[-2000:]
     run = cli("tables", "--size", "2,1", "--seed", "-5")
     assert run.returncode == 2 and "non-negative integer or 'random'" in run.stderr, run.stderr
+
+
+def test_texts_of_a_hand_edited_record_are_parsed_never_evaluated():
+    """The class of the second review's D1 (a residual's text run as code through sympy's parser): no text of a
+    results file is evaluated as Python, and none that would take for ever is expanded.  The notebook's residual
+    parser and the certificate checker's coefficients refuse power towers, huge expansions, attribute calls and
+    nesting beyond the stack, at once."""
+    import time
+
+    import pytest
+
+    from stiefelsym.certificate_check import Rejected, coefficient
+    from stiefelsym.reports.notebook import _sympy_text
+    t0 = time.perf_counter()
+    for text in ("9**9**9**9", "(9**9999)**9999", "(7).equals('1')", "__import__('os').getcwd()", "x**y",
+                 "(" * 50_000 + "1" + ")" * 50_000, "lambda: 0", "1/0"):
+        with pytest.raises(ValueError):
+            _sympy_text(text)
+    for text in ("9**9**9**9", "(kappa + lam + n + r + 1)**1000", "kappa lam", "sin(kappa)"):
+        with pytest.raises(Rejected):
+            coefficient(text)
+    assert time.perf_counter() - t0 < 60
+    assert str(_sympy_text("3/4*Z_2,1**2 - lambda*a_1 + 1")) == "3*Z_2,1**2/4 - a_1*lambda + 1"
+    assert str(coefficient("(kappa + 1)**2/(n - r)")) == "(1 + kappa)**2/(n - r)"

@@ -1,5 +1,7 @@
-"""Stop 74 second review (tests/adversary/s74/review2, FINDINGS.md): replays of the defects found, xfail(strict) while
-they fail.  No wrong verdict was found.  D1: Result.residual_sympy() runs code (and hangs) on a hand-edited record:
+"""Stop 74 second review (tests/adversary/s74/review2, FINDINGS.md): replays of the defects found, all closed (a
+residual's text is now read by a parser of the notebook's own, nothing evaluated as code; an entity-like & and any
+text with a backslash or a $ that is not mathematics are escaped or shown as code; a float or ball pass at a hard
+point is looked at at the hard case's exact points mod p).  No wrong verdict was found.  D1: Result.residual_sympy() runs code (and hangs) on a hand-edited record:
 fullwidth attribute names pass notebook._sympy_text's renaming of ASCII names, and Expr.equals sympifies a string.
 D2: HTML character references (&#36;, &#92;) in a claim's words reach the Markdown report and the Jupyter display
 unescaped: the rendered text holds $\\href{...}{...}$ for MathJax.  D3: under --hard large-momenta the float method
@@ -9,7 +11,6 @@ import os
 import subprocess
 import sys
 
-import pytest
 
 from pathlib import Path
 
@@ -19,7 +20,6 @@ REVIEW2 = Path(__file__).parent / "s74" / "review2"
 MARK = "/tmp/hE_residual_sympy_pwned"
 
 
-@pytest.mark.xfail(strict=True, reason="D1: residual_sympy evaluates a string sympified by Expr.equals")
 def test_residual_sympy_of_a_hand_edited_record_runs_no_code():
     if os.path.exists(MARK):
         os.remove(MARK)
@@ -29,14 +29,12 @@ def test_residual_sympy_of_a_hand_edited_record_runs_no_code():
     assert not os.path.exists(MARK), run.stdout
 
 
-@pytest.mark.xfail(strict=True, reason="D1: a power tower inside a sympified string is evaluated")
 def test_residual_sympy_of_a_hand_edited_record_returns():
     run = subprocess.run([sys.executable, str(REVIEW2 / "residual_hang.py.in")], capture_output=True, text=True,
                          timeout=120)
     assert "HANG" not in run.stdout, run.stdout
 
 
-@pytest.mark.xfail(strict=True, reason="D2: & is not escaped: &#36;&#92;href{..}{..}&#36; is $\\href in the DOM")
 def test_character_references_of_a_claims_words_make_no_mathjax_command(tmp_path):
     out = tmp_path / "o"
     run = cli("verify", "r2-h-entities", "--claims", str(REVIEW2 / "hostile_words.py"), "--method", "rational",
@@ -46,7 +44,6 @@ def test_character_references_of_a_claims_words_make_no_mathjax_command(tmp_path
     assert "&#92;href" not in md and "&#36;&#92;" not in md, "a character reference of a claim's words"
 
 
-@pytest.mark.xfail(strict=True, reason="D3: float's pass at a hard point is undecided with no exact confirmation")
 def test_float_refutes_at_large_momenta_what_modular_refutes_there():
     verdicts = {}
     for method in ("modular", "float"):
