@@ -139,11 +139,11 @@ REFERENCES_EXPLANATION = (
 
 REDUCTIONS_EXPLANATION = (
     "Each run states how the points of T*V were reached.  A chart is a rational parametrization of the points "
-    "(X, P) of T*V by free parameters: the Cayley chart X = (I − S)(I + S)⁻¹ E with S skew-symmetric, and P "
-    "tangent there, covers a dense open set of T*V; at r = n its two components (det X = 1 and −1, the two "
-    "components of O(n)) each get one.  An equivariance reduction uses a symmetry of the statement (a group "
-    "that acts on X, P, A and maps residuals to residuals) to move every point into a smaller chart, the "
-    "equivariant one, X = (E₁ … Eᵣ); each such run names the group and why the statement is covariant.  A proof "
+    "(X, P) of T*V by free parameters: the Cayley chart X = (I − S)(I + S)⁻¹X₀, with S skew-symmetric and X₀ = (E₁ … Eᵣ) "
+    "the first r columns of the identity, and P tangent there, covers a dense open set of T*V; at r = n its two "
+    "components (det X = 1 and −1, the two components of O(n)) each get one.  An equivariance reduction uses a "
+    "symmetry of the statement (a group that acts on X, P, A and maps residuals to residuals) to move every point "
+    "into a smaller chart, the equivariant one, X = X₀; each such run names the group and why the statement is covariant.  A proof "
     "for every n and r rewrites the residual modulo XᵀX = I and XᵀP + PᵀX = 0 in the free algebra of the "
     "letters X, P, A; its cofactor certificate writes the residual as a sum of products of those relations "
     "(its hypotheses) and is checked on its own, without the rewriting.")
