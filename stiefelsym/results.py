@@ -502,11 +502,29 @@ def parse_json(text: str) -> Any:
     return json.loads(text, parse_int=_file_int)
 
 
+def json_kind(value: Any) -> str:
+    """What JSON calls the kind of a parsed value (object, array, string, number, boolean, null)."""
+    if value is None:
+        return "null"
+    if isinstance(value, bool):
+        return "boolean"
+    if isinstance(value, (int, float)):
+        return "number"
+    if isinstance(value, dict):
+        return "object"
+    if isinstance(value, list):
+        return "array"
+    return "string" if isinstance(value, str) else type(value).__name__
+
+
 def load_results(path: str | Path) -> tuple[dict[str, Any], list[Result]]:
     """The meta data and the results of a results file (``stiefelsym verify --format json``,
     reports/results.json); ValueError, in one line, for anything else."""
     payload = parse_json(Path(path).read_text(encoding="utf-8"))
-    if not isinstance(payload, dict) or not isinstance(payload.get("results"), list):
+    if not isinstance(payload, dict):
+        raise ValueError(f"its top level is a JSON {json_kind(payload)}, not an object with a list of results (a file "
+                         "written by `stiefelsym verify`, --format json or reports/results.json, is one)")
+    if not isinstance(payload.get("results"), list):
         raise ValueError("no list of results at its top level (a file written by `stiefelsym verify`, "
                          "--format json or reports/results.json, has one)")
     if payload.get("schema", SCHEMA_VERSION) != SCHEMA_VERSION:

@@ -158,7 +158,7 @@ def test_a_results_file_that_is_a_json_list_or_a_directory_is_bad_input(tmp_path
     (tmp_path / "list.json").write_text("[1, 2]")
     proc = cli("check", tmp_path / "list.json", cwd=tmp_path)
     no_traceback(proc)
-    assert proc.returncode == 2 and "its top level is a JSON list, not an object" in proc.stderr, proc.stderr
+    assert proc.returncode == 2 and "its top level is a JSON array, not an object" in proc.stderr, proc.stderr
     for args in (("check", tmp_path), ("report", "--results", tmp_path, "--report-dir", tmp_path / "out")):
         proc = cli(*args, cwd=tmp_path)
         no_traceback(proc)

@@ -16,7 +16,7 @@ import click
 from stiefelsym.cli import InputError, _registry, recorded_claims_files, require_results_file, standalone_command
 from stiefelsym.methods.hard import HARD_CASES
 from stiefelsym.run.integrity import MAX_N_CHECKED, check_results, run_origin
-from stiefelsym.results import meta_problems, parse_json
+from stiefelsym.results import json_kind, meta_problems, parse_json
 from stiefelsym.run.runner import METHODS
 
 _Command = standalone_command("stiefelsym check")
@@ -35,7 +35,7 @@ def check(results_file: Path, no_rerun: bool, claims_files: tuple[str, ...]) -> 
     try:
         payload = parse_json(results_file.read_text(encoding="utf-8"))
         if not isinstance(payload, dict):
-            raise TypeError(f"its top level is a JSON {type(payload).__name__}, not an object with the results "
+            raise TypeError(f"its top level is a JSON {json_kind(payload)}, not an object with the results "
                             "and the meta of a run (a file written by `stiefelsym verify --report-dir`, or "
                             "--format json, is one)")
         missing = [k for k in ("results", "meta") if k not in payload]

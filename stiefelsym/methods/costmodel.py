@@ -479,7 +479,7 @@ def check_memory(method: str, claim: Any, n: int, r: int, memory_gib: float | No
             else:
                 hi = mid
         hint = (f"sizes up to n = {k} at the same r/n fit it, or a larger --memory" if k >= 1
-                else "a larger --memory may")
+                else "only a larger --memory fits it")
         raise BudgetError(f"{cid} ({n},{r}) with --method {method}: predicted peak memory {format_bytes(need)}, "
                           f"beyond the memory budget of {memory_gib:g} GiB (--memory); {hint}")
     return need
