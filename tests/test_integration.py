@@ -163,7 +163,7 @@ def test_report_of_another_file_is_one_line(tmp_path, run):
     assert out.exit_code == 2 and "lacks" in out.output and "Traceback" not in out.output
     f.write_text('[1, 2]')
     out = run("report", "--results", str(f))
-    assert out.exit_code == 2 and "no list of results" in out.output
+    assert out.exit_code == 2 and "its top level is a JSON array" in out.output
 
 
 def test_a_size_beyond_the_memory_budget_is_refused_up_front(run):
