@@ -110,11 +110,6 @@ def _engine_property(attr: str, what: str) -> property:
     return property(get, doc=f"{what}: engine only")
 
 
-#: the parameters of the momentum P of the point (X, P): a hard case that rewrites them reaches a claim only when
-#: it reads P (they are drawn with X's, in one block)
-MOMENTUM_PARAMS = ("W_", "Z_")
-
-
 class SizeError(ValueError):
     """An inadmissible problem size."""
 
@@ -383,10 +378,10 @@ class Scene(PaperObjects):
             if hard is not None and self._rng is not None:
                 new = hard.rewrite(self, name, value)
                 if new is not value:
-                    # a momentum's parameter (W, Z of P) is drawn with X's: the case reaches the claim only
-                    # when P is read (see :meth:`_momenta_read`); any other parameter, when it is drawn
+                    # a case that rewrites P's parameters (drawn with X's) reaches the claim only when it reads
+                    # P (see :meth:`_momenta_read`); any other, when the parameter is drawn
                     state = self._options.get("hard_momenta")
-                    if name.startswith(MOMENTUM_PARAMS) and state is not None and not state["read"]:
+                    if hard.through == "P" and state is not None and not state["read"]:
                         state["pending"].append(name)
                     else:
                         self._options.setdefault("hard_hits", []).append(name)

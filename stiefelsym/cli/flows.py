@@ -51,14 +51,11 @@ def _check_report_dir(d: Path) -> None:
 def _check_results(path: Path, given: bool) -> None:
     """Bad input unless ``path`` is a results file (a missing default one is allowed: the report then says
     that no verdict is on record)."""
+    from stiefelsym.cli import require_results_file
     from stiefelsym.results import load_results
     if not path.exists() and not given:
         return
-    if path.is_dir():
-        raise FlowsInputError(f"--results {path} is a directory: name the results file in it "
-                              f"(e.g. {path / 'results.json'})")
-    if not path.is_file():
-        raise FlowsInputError(f"results file not found: {path}")
+    require_results_file(path, "--results ")
     try:
         load_results(path)
     except (OSError, ValueError) as exc:

@@ -2967,9 +2967,7 @@ def run_float(claim: Claim, n: int, r: int, seed: int, func: Callable | None = N
         res = _hard_or_random(lambda o: _run_float(claim, n, r, seed, func or claim.func, o), options)
     if res.verdict == "numeric":
         res = _confirm_numeric(res, claim, n, r, seed, func, options)
-    elif getattr(res, "hard_resolved", False):
-        res = _confirm_hard(res, claim, n, r, seed, func, options)
-    return res
+    return _at_the_hard_point(res, options)
 
 
 #: a `numeric` verdict is confirmed at exact random points mod p, at every size: a residual far below
@@ -3019,25 +3017,15 @@ def _confirm_numeric(res: Result, claim: Claim, n: int, r: int, seed: int, func:
     return exact
 
 
-def _confirm_hard(res: Result, claim: Claim, n: int, r: int, seed: int, func: Callable | None,
-                  options: dict | None, method: str = "float") -> Result:
-    """A float or ball run resolved at a hard case's chosen point (``undecided``: it says nothing of the
-    statement), looked at exactly: the same hard case's exact points mod p refute a claim whose residual is not 0
-    there (``fails``, with the witness), as :func:`_confirm_numeric` does after a ``numeric``; otherwise the
-    verdict stays ``undecided``."""
-    hard = {k: v for k, v in options.items() if k not in ("hard_hits", "hard_momenta")} if options else None
-    try:
-        exact = run_points(claim, n, r, "modular", seed, func, trials=CONFIRM_POINTS, options=hard)
-    except Exception:   # noqa: BLE001 - the float run's verdict stands
-        return res
-    res.seconds += exact.seconds
-    if exact.verdict != "fails":
-        return res
-    what = "float64" if method == "float" else "the ball enclosure"
-    exact.method, exact.seconds = method, res.seconds
-    exact.message = (f"{what} resolved the residual at the hard point within its tolerance, but the residual is "
-                     "not 0 at the hard case's exact points mod p" + (f" ({exact.message})" if exact.message else ""))
-    return exact
+def _at_the_hard_point(res: Result, options: dict | None) -> Result:
+    """A float or ball pass, confirmed at the exact points of a hard case that reached the claim: the points are
+    chosen, not random, so it says nothing of the statement (``undecided``); a residual not 0 at the hard case's
+    exact points mod p was refuted by the confirmation already (:func:`_confirm_numeric`)."""
+    if res.verdict in ("numeric", "proved") and options and options.get("hard") and not _untouched(options):
+        res.verdict = "undecided"
+        res.message = ("not applicable: resolved at the hard point, which is chosen, not random, so no verdict on "
+                       "the statement follows; " + (res.message or res.certificate))
+    return res
 
 
 def _confirm_text(exact: Result) -> str:
@@ -3206,12 +3194,6 @@ def _run_float(claim: Claim, n: int, r: int, seed: int, func: Callable, options:
                                 for c, run in zip(comps, runs)))
 
     def done(verdict: str) -> Result:
-        if verdict == "numeric" and options and options.get("hard"):
-            # resolved at a chosen (not random) point: a test of the error model, not of the statement
-            verdict = "undecided"
-            res.message = ("not applicable: resolved at the hard point, which is chosen, not random, so no "
-                           "verdict on the statement follows; " + (res.message or res.certificate))
-            res.hard_resolved = True        # (run_float looks at the exact hard points mod p: _confirm_hard)
         res.verdict = verdict
         res.seconds = time.perf_counter() - t0
         return res
@@ -3307,9 +3289,7 @@ def run_ball(claim: Claim, n: int, r: int, seed: int, func: Callable | None = No
         res = _hard_or_random(lambda o: _run_ball(claim, n, r, seed, func or claim.func, o), options)
     if res.verdict == "numeric":
         res = _confirm_numeric(res, claim, n, r, seed, func, options, "ball")
-    elif getattr(res, "hard_resolved", False):
-        res = _confirm_hard(res, claim, n, r, seed, func, options, "ball")
-    return res
+    return _at_the_hard_point(res, options)
 
 
 class _Enclosures:
@@ -3470,11 +3450,6 @@ def _run_ball(claim: Claim, n: int, r: int, seed: int, func: Callable, options: 
     where = lambda c: f" (component {c + 1})" if len(comps) > 1 else ""  # noqa: E731
 
     def done(verdict: str) -> Result:
-        if verdict in ("numeric", "proved") and options and options.get("hard"):
-            verdict = "undecided"
-            res.message = ("not applicable: resolved at the hard point, which is chosen, not random, so no "
-                           "verdict on the statement follows; " + (res.certificate or res.message))
-            res.hard_resolved = True        # (run_ball looks at the exact hard points mod p: _confirm_hard)
         res.verdict = verdict
         res.seconds = time.perf_counter() - t0
         return res

@@ -16,6 +16,9 @@ class HardCase:
     name: str
     description: str
     rewrite: Callable[[Any, str, Any], Any]   # (scene, parameter name, drawn value) -> value
+    #: the scene's primitive whose parameters the case rewrites, when they are drawn with another's: the case reaches
+    #: a claim only once it reads that one ("P": the momenta are drawn with X's; "": as soon as they are drawn)
+    through: str = ""
 
 
 def _near_equal_a(gap: Fraction) -> Callable[[Any, str, Any], Any]:
@@ -72,7 +75,7 @@ HARD_CASES = {
                              _near_equal_a(Fraction(1, 10**9))),
     "near-pole": HardCase("near-pole", "lambda = a_1 + 1e-12 (spectral parameter next to a pole)",
                           _near_pole(Fraction(1, 10**12))),
-    "large-momenta": HardCase("large-momenta", "momenta scaled by 1e6", _large_momenta),
+    "large-momenta": HardCase("large-momenta", "momenta scaled by 1e6", _large_momenta, through="P"),
 }
 for _k in (3, 6, 12):
     HARD_CASES[f"near-equal-a-1e-{_k}"] = HardCase(
@@ -84,7 +87,7 @@ HARD_CASES["manakov-0/0"] = HardCase(
     "manakov-0/0", "a_2..a_n and the claim's b_2..b_n within 1e-9 of a_1, b_1 ((b_i - b_j)/(a_i - a_j) near 0/0)",
     _manakov_0_0)
 HARD_CASES["huge-momenta"] = HardCase("huge-momenta", "momenta scaled by 1e160 (products overflow float64: the "
-                                      "float method must escalate)", _huge_momenta)
+                                      "float method must escalate)", _huge_momenta, through="P")
 HARD_CASES["far-chart"] = HardCase(
     "far-chart", "Cayley parameters S scaled by 1e4 (a point far from the chart's origin)", _far_chart)
 
