@@ -9,21 +9,50 @@ No claim code runs here.
 """
 from __future__ import annotations
 
-import hashlib
 import operator
 from fractions import Fraction
 from typing import Any, Callable
 
+from stiefelsym.backends.fields import DegenerateError
 from stiefelsym.backends.matrix import CoordinateTracker, Mat
 from stiefelsym.backends.native import backend
 from stiefelsym.backends.matrix import block as _block
-from stiefelsym.ir.graph import Graph, Named, Ref, Size, _encode
+from stiefelsym.ir.graph import Graph, Named, Ref, Size, node_keys
 from stiefelsym.ir.statements import Count, InverseIdentities, Rank, RightInverseIdentities
 from stiefelsym.ir.trace import API, PRIMITIVES, VALUE_ATTRS
 
 
 class GraphError(ValueError):
     """A graph that is not a trace (an op or a name outside the IR)."""
+
+
+def at_node(exc: BaseException, g: Graph, i: int) -> None:
+    """Name in a division error's message the node whose evaluation raised it, in the paper's notation
+    (``…, at the division by tr(XᵀX) − r``): the first evaluation to see the error names it (the innermost
+    node: an enclosing node's evaluation sees it with its name already given).  The text is read from the
+    graph alone, so it is the same for every method and run; nothing is named where it cannot be read."""
+    if getattr(exc, "node_text", None) is not None or not exc.args or type(exc.args[0]) is not str or i < 0:
+        return
+    texts = g.cache.setdefault("node_texts", {})
+    what = texts.get(i)
+    if what is None:
+        what = texts[i] = _node_text(g, i)
+    exc.node_text = what
+    if what:
+        exc.args = (f"{exc.args[0]}, at {what}",) + exc.args[1:]
+
+
+def _node_text(g: Graph, i: int) -> str:
+    from stiefelsym.ir.notation import render
+    op, a = g.ops[i], g.args[i]
+    try:
+        if op == "div" and type(a[1]) is Ref:
+            return f"the division by {render(g, a[1])}"
+        if op == "inv" and type(a[0]) is Ref:
+            return f"the inverse of {render(g, a[0])}"
+        return f"the computation of {render(g, i)}"
+    except Exception:  # noqa: BLE001 - a name the notation cannot give is left out, never an error of its own
+        return ""
 
 
 _MISSING = object()
@@ -103,8 +132,13 @@ class Evaluator:
             prog = _program(self.g, self.deps, fused=_fuses(scene))
             plan = release_plan(self.g, prog) if forgets else None
             if plan is None:
-                for i, kernel in prog:
-                    memo[i] = kernel(memo, self)
+                i = -1
+                try:
+                    for i, kernel in prog:
+                        memo[i] = kernel(memo, self)
+                except (ZeroDivisionError, DegenerateError) as exc:
+                    at_node(exc, self.g, i)
+                    raise
                 return memo[self.g.output.i]
             # every value goes once the last node that reads it is computed: its arrays are
             # reused by the nodes after it instead of all living to the end of the evaluation
@@ -113,7 +147,11 @@ class Evaluator:
             live: dict[int, int] = {}
             held: dict[int, tuple] = {}
             for (i, kernel), dead in zip(prog, plan):
-                v = memo[i] = kernel(memo, self)
+                try:
+                    v = memo[i] = kernel(memo, self)
+                except (ZeroDivisionError, DegenerateError) as exc:
+                    at_node(exc, self.g, i)
+                    raise
                 xs = held[i] = _natives(v)
                 for x, _f in xs:
                     live[id(x)] = live.get(id(x), 0) + 1
@@ -146,7 +184,11 @@ class Evaluator:
             k = keys[i]
             hit = shared.get(k, _MISSING)
             if hit is _MISSING:
-                v, log = _recorded(tracker, lambda: kernel(memo, self))
+                try:
+                    v, log = _recorded(tracker, lambda: kernel(memo, self))
+                except (ZeroDivisionError, DegenerateError) as exc:
+                    at_node(exc, self.g, i)
+                    raise
                 if shareable(v):
                     shared[k] = (v, log)
             else:
@@ -196,7 +238,11 @@ class Evaluator:
                     continue
             # computed in the frame that owns it: a node read from an enclosing frame is that frame's
             # value, never one computed from values lifted into an inner function's scene
-            mj[j] = self._ops[ops[j]](self, args[j], fj)
+            try:
+                mj[j] = self._ops[ops[j]](self, args[j], fj)
+            except (ZeroDivisionError, DegenerateError) as exc:
+                at_node(exc, g, j)
+                raise
             stack.pop()
         v = memo[i]
         return v if memo is frame.memo or frame.fn == 0 else self._outer(v, memo, frame)
@@ -353,32 +399,6 @@ def shareable(v: Any) -> bool:
     if type(v) is dict:
         return all(shareable(x) for x in v.values())
     return True
-
-
-def node_keys(g: Graph) -> list[bytes]:
-    """For every node, a digest of its whole subgraph (its op, its literal arguments and, in place of
-    every reference, the digest of the node referred to): equal keys in two graphs name the same
-    computation, whatever the nodes' numbers."""
-    keys = g.cache.get("node_keys")
-    if keys is None:
-        keys = []
-
-        hexes: list[str] = []
-
-        def enc(a: Any) -> str:
-            t = type(a)
-            if t is Ref:
-                return "%" + hexes[a[0]]
-            if t is tuple:
-                return "(" + ",".join(["%" + hexes[x[0]] if type(x) is Ref else enc(x) for x in a]) + ")"
-            return _encode(a)
-        blake2b = hashlib.blake2b
-        for op, a in zip(g.ops, g.args):
-            k = blake2b((op + enc(a)).encode(), digest_size=20).digest()
-            keys.append(k)
-            hexes.append(k.hex())
-        g.cache["node_keys"] = keys
-    return keys
 
 
 def _rank(matrix: Any, expected: int, generic: bool, meaning: str, kernel: Any) -> Rank:

@@ -310,3 +310,29 @@ class Graph:
         self.index = {(o, a): i for i, (o, a) in enumerate(zip(self.ops, self.args))}
         self.cache = {}
         self.sites = None
+
+
+def node_keys(g: Graph) -> list[bytes]:
+    """For every node, a digest of its whole subgraph (its op, its literal arguments and, in place of
+    every reference, the digest of the node referred to): equal keys in two graphs name the same
+    computation, whatever the nodes' numbers."""
+    keys = g.cache.get("node_keys")
+    if keys is None:
+        keys = []
+
+        hexes: list[str] = []
+
+        def enc(a: Any) -> str:
+            t = type(a)
+            if t is Ref:
+                return "%" + hexes[a[0]]
+            if t is tuple:
+                return "(" + ",".join(["%" + hexes[x[0]] if type(x) is Ref else enc(x) for x in a]) + ")"
+            return _encode(a)
+        blake2b = hashlib.blake2b
+        for op, a in zip(g.ops, g.args):
+            k = blake2b((op + enc(a)).encode(), digest_size=20).digest()
+            keys.append(k)
+            hexes.append(k.hex())
+        g.cache["node_keys"] = keys
+    return keys

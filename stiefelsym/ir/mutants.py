@@ -43,8 +43,7 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any, Callable, Iterator
 
-from stiefelsym.ir.evaluate import node_keys
-from stiefelsym.ir.graph import Graph, Ref, Size
+from stiefelsym.ir.graph import Graph, Ref, Size, node_keys
 from stiefelsym.ir.replay import GraphClaim, SizedGraphClaim
 from stiefelsym.ir.sites import SourceSite
 

@@ -26,8 +26,7 @@ from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any, Sequence
 
-from stiefelsym.ir.graph import Graph, Named, Ref, Size
-from stiefelsym.ir.evaluate import node_keys
+from stiefelsym.ir.graph import Graph, Named, Ref, Size, node_keys
 
 #: at most this many letters and numbers of an expression are printed (beyond: an ellipsis)
 CAP = 40

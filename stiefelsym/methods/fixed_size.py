@@ -2654,6 +2654,7 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
         res.reductions.append(f"hard case: {options['hard'].description} (not uniform: no Schwartz-Zippel bound)")
     evaluations, resampled, primes_redrawn = [], 0, 0
     witness, primes = None, []
+    where = ""      # the node of the last degenerate point's division, in the paper's notation
     rational = RationalField(RATIONAL_BOUND)
     # for r = n the constraint set has two components (det X = +-1): each gets ``points`` points
     components = 2 if r == n else 1
@@ -2694,12 +2695,14 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
                 prime_attempt += 1
                 value_field = _prime_field(key, t, prime_attempt)
                 continue
-            except (DegenerateError, ZeroDivisionError):
+            except (DegenerateError, ZeroDivisionError) as exc:
                 resampled += 1
+                where = getattr(exc, "node_text", "") or where
                 continue
         else:
             res.verdict = "inconclusive"
-            res.message = f"every one of {MAX_RESAMPLE} sampled points was degenerate (a pole or singular system)"
+            res.message = (f"every one of {MAX_RESAMPLE} sampled points was degenerate (a pole or singular system"
+                           + (f"; the last at {where})" if where else ")"))
             res.seconds = time.perf_counter() - t0
             return res
         # no parameter entered the checks (on a lent point, whose parameters the printed claim drew,
