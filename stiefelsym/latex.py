@@ -18,6 +18,7 @@ _TEX_SPECIAL = {
     "<": r"\ensuremath{<}", ">": r"\ensuremath{>}", "|": r"\ensuremath{|}",
 }
 _SUP = dict(zip("⁰¹²³⁴⁵⁶⁷⁸⁹⁺⁻⁼⁽⁾ⁿⁱᵀᵗʳᵏʲ", "0123456789+-=()niTtrkj"))
+_SUP["ˣ"] = r"\times "        # the size of a matrix space written in superscripts: ℝⁿˣⁿ
 _SUB = dict(zip("₀₁₂₃₄₅₆₇₈₉₊₋₌₍₎ₐₑₒₓₕₖₗₘₙₚₛₜᵢⱼᵣ", "0123456789+-=()aeoxhklmnpstijr"))
 #: text-mode replacements; \S and \P in text mode would need a bitmap TS1 font
 _TEXT_ONLY = {"–": "--", "—": "---", "‘": "`", "’": "'", "“": "``", "”": "''",

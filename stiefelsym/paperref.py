@@ -206,3 +206,50 @@ def printed(label: str) -> str:
     if ref["kind"] == "display":      # its page depends on the paper's build: named by its section
         return f"unnumbered display in §{ref['section']}" if ref["section"] else "unnumbered display"
     return f"{ref['kind']} {ref['number']}"
+
+
+#: the words a theorem-like label follows in prose ("Theorem man-dual")
+_KIND_WORDS = ("Theorem", "Proposition", "Lemma", "Corollary", "Remark")
+
+
+@cache
+def _label_patterns() -> tuple[re.Pattern, re.Pattern] | None:
+    """(label in parentheses, kind word and label) for the labels of the table, longest first; an
+    underscore of a label may be written ``\\_`` (the LaTeX of a statement)."""
+    labels = sorted(table(), key=len, reverse=True)
+    if not labels:
+        return None
+    alt = "|".join(re.escape(k).replace("_", r"\\?_") for k in labels)
+    return (re.compile(r"\((" + alt + r")\)"),
+            re.compile(r"\b(" + "|".join(_KIND_WORDS) + r")[ ~]+(" + alt + r")(?![\w*()\-])"))
+
+
+def readable(text: str, statement: bool = False) -> str:
+    """``text`` with the paper's label keys replaced by the numbers the paper prints: "(dot_XP3*)" becomes
+    "(5) §4" ("(5) of Section 4" in a ``statement``, which is LaTeX), "Theorem man-dual" becomes
+    "Theorem 4.4", "(DUAL)" becomes "(Theorem 8.1)".  A label the table does not know, or of an unnumbered
+    display or a section, is left as it is: the keys stay in the headings, as the catalog's names."""
+    pats = _label_patterns()
+    if pats is None or not text:
+        return text
+    t = table()
+    paren, named = pats
+
+    def ref(m: re.Match) -> str:
+        key = m.group(1).replace("\\_", "_")
+        r = t.get(key)
+        if r is None:
+            return m.group(0)
+        if r["kind"] == "equation":
+            return f"({r['number']}) of Section {r['section']}" if statement else f"({r['number']}) §{r['section']}"
+        if r["kind"] in _KIND_WORDS:
+            return f"({r['kind']} {r['number']})"
+        return m.group(0)
+
+    def kind(m: re.Match) -> str:
+        r = t.get(m.group(2).replace("\\_", "_"))
+        if r is None or r["kind"] not in _KIND_WORDS:
+            return m.group(0)
+        return f"{r['kind']} {r['number']}"
+
+    return paren.sub(ref, named.sub(kind, text))

@@ -38,3 +38,27 @@ def test_an_unnumbered_display_is_named_by_its_section_not_its_page():
                     reason="the paper's source or pdflatex is not here")
 def test_the_committed_table_is_what_the_paper_compiles_to():
     assert paperref.build(PAPER) == paperref.table()
+
+
+def test_prose_cites_the_printed_numbers():
+    """The reports' words cite the paper as it prints its numbers: an equation's key in parentheses becomes
+    "(5) §4" ("(5) of Section 4" in a statement, LaTeX, where an underscore is written \\_), a theorem-like
+    label after its kind becomes the theorem's number; keys the table does not know, equations named after
+    a theorem's word, and words that only begin like a key stay as they are."""
+    from stiefelsym.paperref import readable
+    assert readable("the Manakov flow (dot_XP3*) (B = A²)") == "the Manakov flow (5) §4 (B = A²)"
+    assert readable(r"\text{along (dot\_XP3*)}", statement=True) == r"\text{along (5) of Section 4}"
+    assert readable("Theorem man-dual: the flow") == "Theorem 4.4: the flow"
+    assert readable("by (DUAL)") == "by (Theorem 8.1)"
+    assert readable("(foo) and Theorem man and (NEUMANN2x) and Lemma 2lx") == \
+        "(foo) and Theorem man and (NEUMANN2x) and Lemma 2lx"
+
+
+def test_the_reports_keep_the_keys_in_their_records():
+    """Only the rendering reads the numbers: the records keep the claims' own words."""
+    from stiefelsym.reports.report import readable_results
+    from stiefelsym.results import Result
+    r = Result(claim="c", paper=["man"], section="4", kind="id", title="along (dot_XP3*)", statement="", n=2, r=1,
+               method="exact", verdict="proved", seed=0, seconds=0.0, expected=True)
+    assert readable_results([r])[0].title == "along (5) §4"
+    assert r.title == "along (dot_XP3*)"

@@ -575,7 +575,7 @@ def test_the_headline_and_the_summary_table_count_the_same_claims_as_holding():
           result("b", 3, 1, "exact", "proved"), result("b", 6, 1, "modular", "checked")]
     claims = group_by_claim(rs)
     text, _ = headline(claims)
-    assert text.startswith("Of the paper's 2 checkable statements, 1 holds as printed at every size computed")
+    assert text.startswith("Of the catalog's 2 claims (the paper's checkable statements, and some forms of them: corrected, more general, or lemmas of a proof), 1 holds as printed at every size computed")
     assert "1 holds where decided but was left undecided at some size (a)" in text
     assert section_counts(claims)["every size"] == 1
 
@@ -587,7 +587,7 @@ def test_the_report_of_a_claims_file_counts_its_statements_not_the_papers():
     md = render_markdown(rs, {"claims_files": ["mine.py"], "title": "Verification of the claims of mine.py"})
     assert "Of the 2 statements verified, 2 hold as printed" in md and "the paper's" not in md.split("##")[0]
     assert "every verdict is the one its claim expects" in md
-    assert "Of the paper's 2 checkable statements" in render_markdown(rs)
+    assert "Of the catalog's 2 claims" in render_markdown(rs)
 
 
 def test_how_obtained_names_the_sizes_of_each_reduction():

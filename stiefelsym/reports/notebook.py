@@ -43,6 +43,7 @@ def _md_witness(r: Result) -> list[str]:
 
 
 def result_markdown(r: Result) -> str:
+    r = R.readable_results([r])[0]
     head = f"**{R._md_cell(R.case_name(r))}** {R._md_cell(R.labels(r.paper))}: {R._md_cell(r.title)}"
     return "\n".join([head, ""] + R._md_results([r]) + _md_witness(r)).rstrip() + "\n"
 
@@ -51,7 +52,7 @@ def results_markdown(results: Sequence[Result]) -> str:
     if not results:
         return "*no results*\n"
     out = ["```", R.render_summary(results).rstrip(), "```", ""]
-    for c in R.group_by_claim(results):
+    for c in R.group_by_claim(R.readable_results(results)):
         rs = list(c.printed) + [r for v in c.variants.values() for r in v]
         first = rs[0]
         out += [f"**{R._md_cell(first.claim)}** {R._md_cell(R.labels(first.paper))}: {R._md_cell(first.title)}",

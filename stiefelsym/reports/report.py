@@ -13,6 +13,7 @@ parsed contents are passed as ``mutation=``.
 """
 from __future__ import annotations
 
+import dataclasses
 import re
 import shlex
 import unicodedata
@@ -136,6 +137,15 @@ REFERENCES_EXPLANATION = (
     "A reference such as (9) §4 is equation (9) of Section 4: the paper numbers its equations afresh in each "
     "section, and its theorems, propositions and lemmas by section (Theorem 4.4).  The word in brackets after a "
     "reference, as in (9) §4 [LA-MAN3], is the paper's own label of it in its LaTeX source.")
+
+SCOPE_EXPLANATION = (
+    "A claim checks its statement as its display writes it.  Where the paper states a family for every power "
+    "(the integrals tr L(λ)^k, k = 1, …, n, and their Poisson brackets), the display names the powers checked, "
+    "k, m ≤ 3 for the brackets of most claims; the other powers are not checked (their conservation, not their "
+    "involution, follows from the Lax equations proved here).  A statement for every n is checked at the sizes "
+    "listed, or for every n and r at once where the dimension-free method proves it; the tables of dimensions "
+    "(tables.md) go further, to n = 12.  Where the appendix states a form of its own (a corrected statement, a "
+    "statement at every rank that the paper makes at r = 2, a lemma of a proof), its title says so.")
 
 REDUCTIONS_EXPLANATION = (
     "Each run states how the points of T*V were reached.  A chart is a rational parametrization of the points "
@@ -291,6 +301,15 @@ class ClaimResults:
 def _section_key(section: str) -> tuple:
     parts = re.split(r"(\d+)", section or "")
     return (section == "",) + tuple((0, int(p)) if p.isdigit() else (1, p) for p in parts)
+
+
+def readable_results(results: Iterable[Result]) -> list[Result]:
+    """Copies of the records whose words cite the paper by its printed numbers ((5) §4, Theorem 4.4) where
+    they name its label keys ((dot_XP3*), Theorem man-dual): what a reader looks up (:func:`.paperref.readable`).
+    The records themselves, and results.json, keep the words as the claims give them."""
+    rd = paperref.readable
+    return [dataclasses.replace(r, title=rd(r.title), statement=rd(r.statement, statement=True), erratum=rd(r.erratum),
+                                place=rd(r.place), slips=[rd(x) for x in r.slips]) for r in results]
 
 
 def group_by_claim(results: Iterable[Result]) -> list[ClaimResults]:
@@ -862,6 +881,7 @@ def render_markdown(results: Sequence[Result], meta: dict[str, Any] | None = Non
     """The Markdown report: the headline, the errata, the summary, the sections, how to reproduce,
     the vocabulary, and the mutation analysis when ``mutation`` (the parsed ``mutation.json``) is given."""
     meta = meta or {}
+    results = readable_results(results)
     claims = group_by_claim(results)
     unexpected = sum(not r.expected for r in results)
     text, errata = headline(claims, paper=not meta.get("claims_files"))
@@ -888,6 +908,7 @@ def render_markdown(results: Sequence[Result], meta: dict[str, Any] | None = Non
             f"**Graphs and digests.** {_md_escape(GRAPH_EXPLANATION)}", "",
             f"**Charts, reductions, certificates.** {_md_escape(REDUCTIONS_EXPLANATION)}", "",
             f"**References to the paper.** {_md_escape(REFERENCES_EXPLANATION)}", "",
+            *([f"**What a claim covers.** {_md_escape(SCOPE_EXPLANATION)}", ""] if not meta.get("claims_files") else []),
             f"**Expected verdicts.** {_md_escape(EXPECTED_EXPLANATION)}", ""]
 
     out += ["## Errata", ""]
@@ -1226,13 +1247,24 @@ def _count_witness_text(c: ClaimResults, r: Result, w: dict[str, Any], escape: A
     unknowns minus each rank, with the two ranks of the check (the numbers the engine computed) beside it."""
     head = "**A witness to check by hand:** " if escape is _md_words else ""
     kernel = count_kernel(c.id)
+    # a rank computed at an exact point bounds the generic rank from below only: a rank above the printed one
+    # refutes it, and says no more than "at least" (the kernel: "at most")
+    lower = any(ch.name == w["check"] and "so rank >= " in (ch.detail or "") for ch in r.checks)
     if kernel is not None:
         quantity, unknowns, system = kernel
         value, paper = w["value"], w["paper"]
+        if lower:
+            return head + escape(f"at (n, r) = {r.size}, {quantity}: at most {unknowns - value}, where the printed "
+                                 f"statement gives {unknowns - paper}; that is {unknowns} − {value} against {unknowns} − "
+                                 f"{paper}, where {value} is the rank of {system} at an exact point, so that its rank at a "
+                                 f"generic point is at least {value}.")
         return head + escape(f"at (n, r) = {r.size}, {quantity}: computed {unknowns - value}, where the printed "
                              f"statement gives {unknowns - paper}; that is {unknowns} − {value} against {unknowns} − "
                              f"{paper}, where {value} is the computed rank of {system}.")
     what = w.get("meaning") or unicode_name(w["check"])
+    if lower:
+        return head + escape(f"at (n, r) = {r.size}, {what}: at least {w['value']} (the rank at an exact point), where "
+                             f"the printed statement gives {w['paper']}.")
     return head + escape(f"at (n, r) = {r.size}, {what}: computed {w['value']}, where the printed statement "
                          f"gives {w['paper']}.")
 
@@ -1440,7 +1472,8 @@ def headline(claims: list[ClaimResults], paper: bool = True) -> tuple[str, list[
     nowhere = [c.id for c in undecided if not any(r.verdict in PASSING for r in c.printed)]
     named = ", ".join(open_[:5]) + (f" and {len(open_) - 5} more" if len(open_) > 5 else "")
     unnamed = ", ".join(nowhere[:5]) + (f" and {len(nowhere) - 5} more" if len(nowhere) > 5 else "")
-    whose = (f"the paper's {len(claims)} checkable statements" if paper else
+    whose = (f"the catalog's {len(claims)} claims (the paper's checkable statements, and some forms of them: "
+             f"corrected, more general, or lemmas of a proof)" if paper else
              f"the {len(claims)} {'statement' if len(claims) == 1 else 'statements'} verified")
     text = (f"Of {whose}, {holds} {'holds' if holds == 1 else 'hold'} as printed at "
             f"every size computed ({at_once}), "
@@ -1669,6 +1702,7 @@ def render_latex(results: Sequence[Result], meta: dict[str, Any] | None = None, 
     document) every run, reduction, derivation and certificate summary follows.  With ``mutation``
     (the parsed ``mutation.json``) a section "Mutation analysis" at the end."""
     meta = meta or {}
+    results = readable_results(results)
     claims = group_by_claim(results)
     unexpected = sum(not r.expected for r in results)
     text, errata = headline(claims, paper=not meta.get("claims_files"))
@@ -1705,6 +1739,7 @@ def render_latex(results: Sequence[Result], meta: dict[str, Any] | None = None, 
             r"\paragraph{Graphs and digests.} " + tex_escape(GRAPH_EXPLANATION),
             r"\paragraph{Charts, reductions, certificates.} " + tex_escape(REDUCTIONS_EXPLANATION),
             r"\paragraph{References to the paper.} " + tex_escape(REFERENCES_EXPLANATION),
+            *([r"\paragraph{What a claim covers.} " + tex_escape(SCOPE_EXPLANATION)] if not meta.get("claims_files") else []),
             r"\paragraph{Expected verdicts.} " + tex_escape(EXPECTED_EXPLANATION), ""]
 
     out += _toc_section("Errata")
