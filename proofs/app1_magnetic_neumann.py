@@ -2,7 +2,8 @@
 
 Flows are derived, never typed in: the magnetic flows are the Hamiltonian vector fields of the printed
 Hamiltonians for ω_ε = ω + ε π*ω_mag (stiefelsym.twisted: the Dirac construction with the twisted
-ambient bracket), the rigid-body flows those of H_CP, H_CPB on T*SO(n) = T*V(n, n) for the canonical form.
+ambient bracket), the rigid-body flows those of H_CP, H_CPB on T*V(n, n) = T*O(n) (T*SO(n) is its component det X = 1)
+for the canonical form.
 Two printed statements fail and are registered as errata with a correction: the sign of the Lorentz force
 in the n = 3 monopole remark (ym-monopole), and the condition η_so(r) = 0 (for η_so(n−r) = 0) in the
 reduction of the symmetric CPB body to V(n, r) (cpb-reduction-stiefel)."""
@@ -18,7 +19,7 @@ SECTION = "A1"
 #: V(n, 2): the magnetic form de_1 ∧ de_2 needs two columns
 ON_V_N2 = admissible(n_max=5, n_min=2, r_min=2, r_max=2, condition="r = 2")
 #: T*SO(n) realized as T*V(n, n) (both components of O(n) are sampled; the formulas hold on both)
-ON_SO_N = admissible(n_max=5, n_min=2, r_is_n=True, condition="r = n: T*SO(n) = T*V(n, n)")
+ON_SO_N = admissible(n_max=5, n_min=2, r_is_n=True, condition="r = n: T*V(n, n) = T*O(n), whose component det X = 1 is T*SO(n)")
 #: T*V(n, n − 1), identified with T*SO(n) by (iden1)
 ON_V_NN1 = admissible(n_max=5, n_min=2, where=lambda n, r: r == n - 1, condition="r = n - 1")
 
@@ -440,7 +441,7 @@ def magnetic_grassmannian_flow(s):
     return checks
 
 
-# -- Proposition YM: the rigid body on SO(n) = V(n, n) ----------------------------------------------
+# -- Proposition YM: the rigid body on SO(n), the component det X = 1 of V(n, n) = O(n) ------------
 
 def last(s):
     """e_n, the last column of 𝒳 = X ∈ SO(n) (r = n)."""
@@ -770,7 +771,7 @@ def cpb_reduction_checks(s, block):
        where Psi_so(n−r) = 0), does not follow the Neumann flow (4) §5 of the normal metric (the Yang–Mills field of
        SO(n − r) acts); it does where Psi_so(n−r) = 0.  Corrected: “if eta_so(n−r) = 0 (eta_so(r) = eta_so(n−r) = 0),
        we get the Neumann system with the normal metric on V_{n,r} (respectively, the Neumann system on G_{n,r})”.
-       The sizes (n, n) of this claim are those of the body's T*SO(n) = T*V_{n,n}, not the paper's (n, r): a run at
+       The sizes (n, n) of this claim are those of the body's T*SO(n) (the component det X = 1 of T*V_{n,n} = T*O(n); both components are computed), not the paper's (n, r): a run at
        (n, n) checks the printed condition and the correction at each of the paper's r = 1, …, n − 2 (the image of
        the first r columns in T*V_{n,r}), so at (3,3), the size of the witness, at r = 1 only.""",
        statement=r"\eta_{so(r)}=0:\ \text{the reduction of (10), (7) of Section 9 is the Neumann system with the normal "

@@ -357,11 +357,13 @@ BIG_CORRECTION = "(9) §10: −ν⁻¹ in front of the last term of L(ν), and d
 @claim("coupled-big-lax-normal", paper=("so(n,n)", "C-eq"), kind="lax", exact_max_n=SYMBOLIC_N_MAX,
        fails_at=lambda n, r: n >= 2,
        place="the big Lax pair (9) §10",
+       slips=("A(ν) = L₊(λ) for L₊(ν) in (9) §10",),
        erratum="(9) §10 for κ = 0, along the flow of the Hamiltonian (6) §10 with κ = 0 on T*V × T*V, that is "
                "along (7) §10 with YΠ in place of QΠ (the correction of coupled-neumann-flow): " + _BIG_ERRATUM
                + "  Along (7) §10 as printed, with QΠ, the ν⁰ part fails as well (n ≥ 2), for the printed and the "
                "corrected pair alike: dM/dt gains diag(0, QΠYᵀ − YΠQᵀ), so dM/dt ≠ [K, J], while dK/dt = [M, K] "
-               "still holds.",
+               "still holds.  (9) §10 also prints A(ν) = L₊(λ), a slip for L₊(ν): the pair has the one parameter ν, "
+               "and the statement here reads L₊(ν).",
        statement=r"\kappa=0:\ " + _BIG)
 def coupled_big_lax_normal(s):
     """The r-coupled Neumann system with the normal metric (κ = 0), the flow of (C-neumann) on T*V × T*V, implies the so(n,n) Lax equation (so(n,n)) with the spectral parameter ν."""

@@ -556,11 +556,12 @@ def l5_l6_matrix(s, printed):
        place="the proof of Lemma 6.3, at (17) §6",
        erratum="""The proof of Lemma 6.3 says that the solutions (ξ₁, η₁) of (16), (17) §6 within
        so(r)_{h₁} ⊕ Sym(r) form an r-dimensional space.  With (17) §6 as printed, [A₁, η₁] ∈ so(r, ℂ)^⊥ = Sym(r),
-       the skew matrix [A₁, η₁] must vanish, and the solutions form a 2-dimensional space for every r ≥ 3 (1 for
-       r = 1, 2 for r = 2): at r = 3 the dimension is 2, where the proof gives r = 3.  The number the witness
-       computes is the rank of the system, the number of unknowns minus that dimension: at r = 3 there are 7
-       unknowns (1 in the Cartan subalgebra so(3)_{h₁}, 6 in Sym(3)), and the rank is 5 = 7 − 2, where the printed
-       dimension gives 4 = 7 − 3.  What the restriction of Λ_{1,−1} to ker Λ₁ gives (pairing with ζ₁ in the Cartan
+       the skew matrix [A₁, η₁] must vanish, and at r = 3 the solutions form a 2-dimensional space (1 for r = 1,
+       2 for r = 2), where the proof gives r = 3.  The number the witness computes is the rank of the system, the
+       number of unknowns minus that dimension: at r = 3 there are 7 unknowns (1 in the Cartan subalgebra
+       so(3)_{h₁}, 6 in Sym(3)), and the rank is at least 5 (its rank at an exact point), where the printed
+       dimension gives 4 = 7 − 3; so the dimension is at most 2, and it is at least 2, since (ξ₁, η₁) = (0, I_r)
+       and (h₁, −A₁) solve the system as printed.  What the restriction of Λ_{1,−1} to ker Λ₁ gives (pairing with ζ₁ in the Cartan
        subalgebra so(r, ℂ)_{h₁}) is [A₁, η₁] ⟂ so(r, ℂ)_{h₁}; with that (17) §6 the solutions are r-dimensional and
        (11) §6 follows.""",
        statement=r"\dim\{(\xi_1,\eta_1)\in so(r)_{h_1}\oplus Sym(r)\mid [A_1,\xi_1]-[h_1,\eta_1]=0,\ "

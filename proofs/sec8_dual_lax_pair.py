@@ -405,8 +405,14 @@ def I2l_general_line(s, l):
        terms (e_j ∧ p_i)^2, i ≠ j, do not belong, the cross terms (e_j ∧ p_j)(e_k ∧ p_k) are missing).  The
        explicit I_2 and I_{2r} hold (claim 2r-integrals-explicit); at l = 1 the line holds for r = 1 only.
        Corrected: the second sum is ∑_{I_2} a/∏(λ − a_i) (∑_j e_j ∧ p_j)_{I_2}^2.  The subscript
-       I_{r+1} of the second sum is also a misprint of I_{l+1}.  The general line for 1 < l < r, whose “+ ⋯” states
-       no term that can be computed, is neither confirmed nor corrected here.""",
+       I_{r+1} of the second sum is also a misprint of I_{l+1}.  For 1 < l < r the printed “+ ⋯” states no term
+       that can be computed, so the line as printed is checked at l = 1 only.  The line that holds, found by
+       `stiefelsym discover` as the only solution in a space of such sums (discover.md) and verified at every
+       1 ≤ l ≤ r ≤ n ≤ 6 (randomized exact at most of these sizes, not proved for every n, r), is
+       I_{2l} = ∑_{k=0}^{l} ∑_{I_{l+k}} a/∏(λ − a_i) ∑_{J_{l−k}} (e_{j_1} ∧ … ∧ e_{j_{l−k}} ∧ ω^k/k!)^2_{I_{l+k}},
+       ω = ∑_j e_j ∧ p_j.  Its second sum, over I_{l+1}, is ∑_{J_{l−1}} (e_{j_1} ∧ … ∧ e_{j_{l−1}} ∧ ω)^2, not the
+       printed ∑_{J_l, 1≤i≤r} (e_{j_1} ∧ … ∧ e_{j_l} ∧ p_i)^2 (the two agree at l = r, the line of I_{2r}); at
+       l = 1 it is the correction above.""",
        statement=r"\mathcal I_{2}=\sum_{I_1}\frac{a(\lambda)}{\lambda-a_{i_1}}\sum_{J_1}(e_{j_1})_{I_1}^2"
                  r"+\sum_{I_2}\frac{a(\lambda)}{(\lambda-a_{i_1})(\lambda-a_{i_2})}\sum_{J_1,1\le i\le r}"
                  r"(e_{j_1}\wedge p_i)_{I_2}^2\quad(\text{the line }\mathcal I_{2l}\text{ at }l=1\text{; its printed "
@@ -735,7 +741,7 @@ def L_man_dual_mu(t, mu):
                  r"=\rank d\big(\mathcal L^*_{man}(\lambda_1),\dots,\mathcal L^*_{man}(\lambda_n)\big)\big|_{T(T^*V_{n,r})}"
                  r"=2\dim V_{n,r}=2rn-r(r+1)")
 def dual_lax_matrices_determine_the_point(s):
-    """Theorems DUAL and man-dual: (X, P) ↦ 𝓛*_neum(λ), and (X, P) ↦ 𝓛*_man(λ), is locally injective on T*V at a generic point (so the Lax equations determine the flows up to a discrete group, the reflections): the Jacobian of the entries at n values λ, λ + 1, …, λ + n − 1 (the residues at a_1..a_n: every λ), with the rows of the constraints (cond_XP), has rank 2 dim V + r(r + 1) = 2nr."""
+    """Theorems DUAL and man-dual: (X, P) ↦ 𝓛*_neum(λ), and (X, P) ↦ 𝓛*_man(λ), is locally injective on T*V at a generic point (so a Lax matrix has discrete fibres, which the reflections preserve; that the fibres are exactly the orbits of the reflections, as Theorems DUAL and man-dual say, is not checked here): the Jacobian of the entries at n values λ, λ + 1, …, λ + n − 1 (the residues at a_1..a_n: every λ), with the rows of the constraints (cond_XP), has rank 2 dim V + r(r + 1) = 2nr."""
     n, r = s.n, s.r
     constraints = s.jacobian(s.constraints.build)
     neum = s.jacobian(lambda t: [L_dual_mu(t, t.lam + t.q(j)) for j in range(t.n)])
@@ -880,9 +886,14 @@ def nontrivial_dual_integrals(n, r):
        erratum="""After the count N = (n − 1) + ⋯ + (n − r) = r(n − r) + r(r − 1)/2 of the nontrivial integrals of
        𝓛*_neum(λ), §8 says that N is bigger than half of the dimension 2l of (5) §6 of a generic symplectic leaf, and
        concludes that some of the integrals are dependent.  2N − 2l = r(r − 1)/2 + [r/2], which is 0 at r = 1: there
-       N = l = n − 1, not bigger, and the argument for a dependence does not apply.  Corrected: N ≥ l, with N > l
-       exactly when r ≥ 2.  The witness codes the inequality as a number: 1 where it holds, 0 where it fails; at
-       r = 1 it computes 0, where the printed statement gives 1.""",
+       N = l = n − 1, not bigger, and the argument for a dependence does not apply.  Nor does it at r = 2: commuting
+       functions on (T*V)/SO(r) number at most l + [r/2] (half the leaf and its [r/2] Casimirs), and N − l − [r/2] =
+       r(r − 1)/4 − [r/2]/2 is 0 for r ≤ 2, positive for r ≥ 3.  So the count shows a dependence only for r ≥ 3, and
+       at r ≤ 2 the conclusion fails: there the N integrals are independent (the rank of their differentials is N at
+       every size of the tables' computation, column “N indep.” of tables.md).  Corrected: N ≥ l, with N > l
+       exactly when r ≥ 2, and N > l + [r/2] (so some of the integrals are dependent) exactly when r ≥ 3.  The
+       witness codes the premise N > l as a number: 1 where it holds, 0 where it fails; at r = 1 it computes 0,
+       where the printed statement gives 1.""",
        statement=r"N=(n-1)+(n-2)+\dots+(n-r)=r(n-r)+\tfrac{r(r-1)}2>l,\qquad "
                  r"2l=2r(n-r)+\tfrac{r(r-1)}2-\left[\tfrac r2\right]")
 def dual_integrals_exceed_half_leaf(s):
@@ -897,7 +908,8 @@ def dual_integrals_exceed_half_leaf(s):
                            "N is bigger than half of the dimension 2l of (5) §6")}
 
 
-@dual_integrals_exceed_half_leaf.claim.correction("N ≥ l, with N > l exactly when r ≥ 2 (N = l = n − 1 at r = 1)")
+@dual_integrals_exceed_half_leaf.claim.correction("N ≥ l, with N > l exactly when r ≥ 2 (N = l = n − 1 at r = 1), and "
+                                                  "N > l + [r/2], which shows some integrals dependent, exactly when r ≥ 3")
 def dual_integrals_exceed_half_leaf_corrected(s):
     n, r = s.n, s.r
     N = nontrivial_dual_integrals(n, r)
@@ -905,7 +917,9 @@ def dual_integrals_exceed_half_leaf_corrected(s):
                                                    "twice N minus the dimension 2l of (5) §6"),
             "N ≥ l": Count(int(2 * N >= half_leaf_twice(n, r)), 1, "N is at least half of the dimension 2l"),
             "N > l iff r ≥ 2": Count(int(2 * N > half_leaf_twice(n, r)), int(r >= 2),
-                                      "N is bigger than half of 2l exactly when r >= 2")}
+                                      "N is bigger than half of 2l exactly when r >= 2"),
+            "N > l + [r/2] iff r ≥ 3": Count(int(2 * N > half_leaf_twice(n, r) + 2 * (r // 2)), int(r >= 3),
+                                              "N exceeds half of 2l plus the [r/2] Casimirs exactly when r >= 3")}
 
 
 @claim("manakov-curve-identity-size", paper=("Chasles-Manakov", "MAN-LA2"), kind="dim",
