@@ -713,6 +713,9 @@ def test_a_witness_bullet_says_which_value_the_printed_statement_gives():
         == "exact rank 12 over Q, so rank 12 at every point; the printed statement gives 13"
     assert printed_value_words("the sizes: 2 (claimed: 1)") == "the sizes: computed 2, where the claim states 1"
     assert printed_value_words("= 4") == "= 4"
+    # an agreeing count is not said as a contrast (the referee of stop 75: "computed 0, where ... gives 0")
+    assert printed_value_words("nontrivial integrals: 0 (paper: 0)") == \
+        "nontrivial integrals: computed 0, as the printed statement gives"
 
 
 def _misprinted(place: str = "") -> list[Result]:

@@ -477,6 +477,8 @@ def printed_value_words(detail: str) -> str:
     m = _COUNT_DETAIL.search(text)
     if m:
         whose = "the printed statement gives" if m.group(3) == "paper" else "the claim states"
+        if m.group(2) == m.group(4):        # agreeing: "computed 0, where the statement gives 0" reads as a contrast
+            return f"{text[:m.start()]}{m.group(1)}computed {m.group(2)}, as {whose}"
         return f"{text[:m.start()]}{m.group(1)}computed {m.group(2)}, where {whose} {m.group(4)}"
     m = _QUOTED_VALUE.search(text)
     if m:
@@ -2087,7 +2089,9 @@ MUTATION_EXPLANATION = (
     "another method refutes it; the dimension-free method survives a mutant when it proves one that "
     "is not equivalent.  Survivors are soundness or sensitivity problems.  A mutant that no method refutes, "
     "that some method leaves undecided and that another passes is unresolved in the row of the method that "
-    "passes it.  refuted % = refuted / (mutants - equivalent); not passed % = (refuted + undecided) / "
+    "passes it.  A method missed a mutant that it passed at every size it ran, where another method refuted it "
+    "at a size this one did not run (the symbolic method stops at smaller sizes than the point methods).  "
+    "refuted % = refuted / (mutants - equivalent); not passed % = (refuted + undecided) / "
     "(mutants - equivalent).  The dimension-free method proves or leaves undecided, it never refutes: its "
     "refuted mutants are those it refused (error), and its not passed % is the share it did not prove.  Unless the command says --fresh-points, the point methods (rational, "
     "modular, float) evaluate a mutant at the random points of the claim as printed and recompute "
