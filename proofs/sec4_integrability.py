@@ -350,7 +350,10 @@ def bracket_gram_psi(s):
        so the SO(n)-invariant functions are not conserved by the Euclidean geodesic flow) fails for r = 1, where
        Ψ = 0, and for r = n, where P = XW with W = XᵀP skew, Ψ = 2W and PᵀP = −Ψ²/4 is a function of
        Ψ, which commutes with the Casimir ⟨Ψ, Ψ⟩ of so(r) (verified by the claim
-       gram-commutes-with-psi-if-r-is-1-or-n).  It holds for 2 ≤ r ≤ n − 1.""",
+       gram-commutes-with-psi-if-r-is-1-or-n).  It holds for 2 ≤ r ≤ n − 1.  A reader may take 2 ≤ r ≤ n − 1 as the
+       remark's tacit hypothesis: at r = 1 (XᵀP = 0) and at r = n (H_κ = −(1 + κ) tr W² with P = XW) the metrics
+       ds²_κ all coincide up to a factor, so the Euclidean flow is the normal one there, up to a constant factor
+       of time.""",
        statement=r"\{(p_i,p_j),\langle\Psi,\Psi\rangle\}\not\equiv0")
 def gram_does_not_commute_with_psi_squared(s):
     """The remark after Theorem ET: the SO(n)-invariant functions (p_i, p_j) do not Poisson-commute with ⟨Ψ, Ψ⟩ (tested on Σ g_ij (p_i, p_j) = tr(G PᵀP) with generic G), so, as they commute with ⟨Φ, Φ⟩, they are not conserved by the Euclidean geodesic flow."""
