@@ -29,3 +29,31 @@ def correction_exists(s):
     tangent = {"X": P, "P": -(A @ X) * C + X @ X.T @ A @ X * C - X @ P.T @ P}
     return {"d(XᵀX)/dt": s.d(lambda t: t.X.T @ t.X, tangent),
             "d(XᵀP + PᵀX)/dt": s.d(lambda t: t.X.T @ t.P + t.P.T @ t.X, tangent)}
+
+
+from fractions import Fraction  # noqa: E402
+
+CB = 2**40 + 1
+
+
+def flow_still(s):
+    return {"X": s.X * 0, "P": s.X @ s.Psi}
+
+
+def L_big(t):
+    return t.X @ t.X.T + t.A * CB
+
+
+@claim("s75-printed-homogeneous", kind="lax", sizes=admissible(n_max=4))
+def printed_homogeneous(s):
+    """dL/dt = [A + (2097152/2097153)XXᵀ, L] for L = XXᵀ + (2⁴⁰ + 1)A along Ẋ = 0, Ṗ = XΨ (what discover printed as a
+    partner, "A(λ) = 0 + any multiple of A + 2097152/2097153·XXᵀ"): FALSE ((1 − kc)[A, XXᵀ] ≠ 0)."""
+    W = s.A + s.X @ s.X.T * s.q(2097152, 2097153)
+    return {"lax": s.d(L_big, flow_still(s)) - comm(W, L_big(s))}
+
+
+@claim("s75-true-homogeneous", kind="lax", sizes=admissible(n_max=4))
+def true_homogeneous(s):
+    """The same with A + XXᵀ/(2⁴⁰ + 1): TRUE (it is L/c)."""
+    W = s.A + s.X @ s.X.T * s.q(1, CB)
+    return {"lax": s.d(L_big, flow_still(s)) - comm(W, L_big(s))}
