@@ -22,6 +22,7 @@ step 4 (no element is reported without its verdicts).
 from __future__ import annotations
 
 import itertools
+import math
 import random
 from dataclasses import dataclass, field
 from fractions import Fraction
@@ -118,8 +119,9 @@ def ansatz(degree: int, max_a: int = 1, products: bool = True) -> list[Monomial]
 
 
 def _rational(a: int, p: int) -> Fraction | None:
-    """The rational u/v with |u|, v < sqrt(p/2) congruent to a mod p (None if there is none)."""
-    bound = int((p // 2) ** 0.5)
+    """The rational u/v with |u|, v < sqrt(p/2) congruent to a mod p (None if there is none); p may be any
+    modulus (a product of primes, :class:`_Lift`)."""
+    bound = math.isqrt(p // 2)
     r0, r1, t0, t1 = p, a % p, 0, 1
     while r1 > bound:
         q = r0 // r1
@@ -127,6 +129,52 @@ def _rational(a: int, p: int) -> Fraction | None:
     if t1 == 0 or abs(t1) > bound:
         return None
     return Fraction(r1, t1)
+
+
+#: at most this many primes for one reconstruction (a coefficient of height up to about 2^(61·LIFT_PRIMES/2))
+LIFT_PRIMES = 8
+
+
+def lift_primes() -> list[int]:
+    """The primes a search solves modulo, in turn: :data:`PRIMES`, then the primes below 2^61 − 1 downwards."""
+    import flint
+    out, q = list(PRIMES), PRIME - 2
+    while len(out) < LIFT_PRIMES:
+        if flint.fmpz(q).is_prime():
+            out.append(q)
+        q -= 2
+    return out
+
+
+class _Lift:
+    """Integer vectors known modulo a growing product of primes (Chinese remainders), reconstructed as rationals.
+
+    A linear search solves its system modulo one prime at a time and puts each solution into a canonical form
+    (reduced echelon rows), which modulo every prime but finitely many is the reduction of the one rational
+    solution.  The residues of the primes whose echelon shape (``key``: ranks and pivots) agrees are combined;
+    the reconstruction is accepted only when two successive moduli give the same rationals (a single prime may
+    reconstruct a wrong fraction of small height where the true coefficient is beyond its reach), and a prime of
+    another shape starts afresh."""
+
+    def __init__(self) -> None:
+        self.key: Any = None
+        self.m = 1
+        self.vals: list[int] = []
+        self.last: list[Fraction] | None = None
+        self.primes = 0
+
+    def add(self, key: Any, vals: Sequence[int], prime: int) -> list[Fraction] | None:
+        if key != self.key or len(vals) != len(self.vals):
+            self.key, self.m, self.vals, self.last, self.primes = key, 1, [0] * len(vals), None, 0
+        inv = pow(self.m % prime, -1, prime)
+        self.vals = [a + self.m * (((b - a) * inv) % prime) for a, b in zip(self.vals, vals)]
+        self.m *= prime
+        self.primes += 1
+        got = [_rational(x, self.m) if x else Fraction(0) for x in self.vals]
+        rec = None if any(q is None for q in got) else [q for q in got if q is not None]
+        stable = rec is not None and rec == self.last
+        self.last = rec
+        return rec if stable else None
 
 
 @dataclass
@@ -543,7 +591,8 @@ def word_text(word: tuple[str, ...], rows: str = "n") -> str:
 @dataclass
 class AffineSpace:
     """The solutions c of Σ cⱼ Tⱼ = R found at random points: a particular solution (None: there is
-    none, certified by a rank) and a basis of the homogeneous solutions."""
+    none, certified by a rank, or, with ``unreconstructed``, its coefficients were beyond the primes tried) and a
+    basis of the homogeneous solutions."""
 
     names: list[str]
     particular: list[Fraction] | None
@@ -552,8 +601,16 @@ class AffineSpace:
     rank: int
     rank_augmented: int
     prime: int = PRIME
+    #: solutions exist modulo every prime tried (rank = augmented rank), but their coefficients had no rational
+    #: reconstruction that two successive products of primes agreed on: no formula is given, none is excluded
+    unreconstructed: int = 0
 
     def certificate(self) -> str:
+        if self.particular is None and self.unreconstructed:
+            return (f"solutions exist modulo each of the {self.unreconstructed} primes tried (the "
+                    f"{self.equations} x {len(self.names)} system has rank {self.rank}, as its augmented matrix), "
+                    f"but their coefficients have no rational reconstruction from those primes: no formula is "
+                    f"given, and none is excluded")
         if self.particular is None:
             return (f"no formula in this {len(self.names)}-term space holds: over GF({_prime_text(self.prime)}) the "
                     f"{self.equations} x {len(self.names)} system has rank {self.rank} and its augmented "
@@ -576,9 +633,10 @@ class AffineSpace:
 
 def solve_affine(terms: Sequence[tuple[str, Callable[[Any], Any]]], target: Callable[[Any], Any], size: Size,
                  *, seed: int = 0, points: int | None = None, realization: str = "standard") -> AffineSpace:
-    """Every c with Σ cⱼ Tⱼ(s) = R(s) at random points of T*V over GF(p), p = 2^61 − 1 (the next of
-    :data:`PRIMES` where a constant is 0 or has no inverse mod p) (matrices: entry by entry), with
-    rational coefficients reconstructed; a verdict on any solution is for the caller."""
+    """Every c with Σ cⱼ Tⱼ(s) = R(s) at random points of T*V over GF(p), one prime after another (the next
+    where a constant is 0 or has no inverse mod p) (matrices: entry by entry), with rational coefficients
+    reconstructed from the residues of several primes (:class:`_Lift`); a verdict on any solution is for the
+    caller."""
     import flint
     from stiefelsym.ir import _compiled_graph as compile_claim
     from stiefelsym.backends.fields import DegenerateError, ModularField
@@ -592,45 +650,46 @@ def solve_affine(terms: Sequence[tuple[str, Callable[[Any], Any]]], target: Call
         return out
     cons = REALIZATIONS[realization]
     g = compile_claim(probe, size.n, size.r, (cons.name, cons.build))
+    names = [name for name, _ in terms]
     failed: list[str] = []
-    for prime in PRIMES:    # the next prime where a constant is 0 or has no inverse modulo this one
-        rng = random.Random(f"{seed}|affine|{size.n}|{size.r}|{N}" + (f"|{prime}" if prime != PRIMES[0] else ""))
-        rows: list[list[int]] = []
+    lift = _Lift()
+    tried = 0
+    rows: list[list[int]] = []
+    rank = rank_aug = 0
+    for prime in lift_primes():
+        rng = random.Random(f"{seed}|affine|{size.n}|{size.r}|{N}" + (f"|{prime}" if prime != PRIME else ""))
+        rows = []
         try:
             for k in range(points or max(4, N // max(1, size.n * size.n) + 4)):
                 scene = Scene(size.n, size.r, ModularField(prime), chart="cayley", rng=rng,
                               component=k % 2 if size.r == size.n else 0, realization=realization)
                 out = evaluate_derived(g, scene)
                 cols = [_entries_mod(out[f"T{j}"]) for j in range(N)] + [_entries_mod(out["R"])]
+                # the target first: the reduced echelon form of the solutions then has one row with t = 1
+                # (the particular solution) and the others with t = 0 (the homogeneous ones)
                 for e in range(len(cols[-1])):
-                    rows.append([c[e] for c in cols[:-1]] + [(-cols[-1][e]) % prime])
+                    rows.append([(-cols[-1][e]) % prime] + [c[e] for c in cols[:-1]])
         except (DegenerateError, ZeroDivisionError) as exc:
             failed.append(f"modulo p = {_prime_text(prime)}: {exc}")
             continue
-        break
-    else:
+        tried += 1
+        rank_aug = flint.nmod_mat(rows, prime).rank()
+        rank = flint.nmod_mat([r[1:] for r in rows], prime).rank() if N else 0
+        if rank != rank_aug:
+            return AffineSpace(names, None, [], len(rows), rank, rank_aug, prime)
+        vecs = _nullspace(rows, N + 1, prime)
+        if not vecs or not vecs[0][0]:
+            # no solution with t = 1 modulo this prime although the ranks agree: cannot happen over a field
+            # (rank = augmented rank), but a prime is never trusted with a certificate it does not give
+            continue
+        key = (rank, tuple(next(j for j, x in enumerate(v) if x) for v in vecs))
+        rec = lift.add(key, [x for v in vecs for x in v[1:]], prime)
+        if rec is not None:
+            chunks = [rec[i * N:(i + 1) * N] for i in range(len(vecs))]
+            return AffineSpace(names, chunks[0], chunks[1:], len(rows), rank, rank_aug, prime)
+    if not tried:
         raise ValueError("the terms cannot be evaluated modulo any of the primes tried: " + "; ".join(failed))
-    M = flint.nmod_mat(rows, prime)
-    rank_aug = M.rank()
-    rank = flint.nmod_mat([r[:-1] for r in rows], prime).rank() if N else 0
-    names = [name for name, _ in terms]
-    if rank != rank_aug:
-        return AffineSpace(names, None, [], len(rows), rank, rank_aug, prime)
-    X, nullity = M.nullspace()
-    vecs = [[int(X[i, j]) for i in range(N + 1)] for j in range(nullity)]
-    R = flint.nmod_mat(vecs, prime).rref()[0] if vecs else None
-    vecs = [[int(R[i, j]) for j in range(N + 1)] for i in range(nullity)] if vecs else []
-    # the row whose last coordinate is nonzero gives the particular solution (scaled to 1)
-    part = next((v for v in vecs if v[-1]), None)
-    particular = None
-    if part is not None:
-        inv = pow(part[-1], prime - 2, prime)
-        particular = [_rational(x * inv % prime, prime) if x else Fraction(0) for x in part[:-1]]
-    basis = [[_rational(x, prime) if x else Fraction(0) for x in v[:-1]] for v in vecs if not v[-1]]
-    if particular is not None and any(x is None for x in particular):
-        particular = None
-    basis = [b for b in basis if all(x is not None for x in b)]
-    return AffineSpace(names, particular, basis, len(rows), rank, rank_aug, prime)
+    return AffineSpace(names, None, [], len(rows), rank, rank_aug, PRIME, unreconstructed=tried)
 
 
 def _entries_mod(v: Any) -> list[int]:
@@ -663,16 +722,22 @@ def lax_partner(L: Callable[[Any], Any], flow: Callable[[Any], Any], size: Size,
     space = solve_affine(terms, lambda s: s.d(L, flow(s)), size, seed=seed)
     verdicts: dict[str, str] = {}
     if space.particular is not None:
-        coeffs = [(c, kw) for c, kw in zip(space.particular, shapes) if c]
+        # the particular solution and the particular one plus each direction of the space: every formula the
+        # search prints is verified (a verdict per method: the first that is not a pass, else the pass)
+        candidates = [space.particular] + [[a + b for a, b in zip(space.particular, h)] for h in space.basis]
+        found: dict[str, list[str]] = {}
+        for c in candidates:
+            coeffs = [(x, kw) for x, kw in zip(c, shapes) if x]
 
-        def check(s):
-            A = partner(s, coeffs) if coeffs else s.zeros(s.n, s.n, ("n", "n"))
-            return {"dL/dt - [A, L]": s.d(L, flow(s)) - _comm(A, L(s))}
-        claim = Claim(id="discovered-lax-partner", paper=("discover",), kind="lax", section="discover",
-                      func=check, sizes=admissible(max(size.n, 1)))
-        for m in verify:
-            res = run_one(claim, None if m == "free" else size, m, seed)
-            verdicts[m if m != "free" else "free (all n, r)"] = res.verdict
+            def check(s, coeffs=coeffs):
+                A = partner(s, coeffs) if coeffs else s.zeros(s.n, s.n, ("n", "n"))
+                return {"dL/dt - [A, L]": s.d(L, flow(s)) - _comm(A, L(s))}
+            claim = Claim(id="discovered-lax-partner", paper=("discover",), kind="lax", section="discover",
+                          func=check, sizes=admissible(max(size.n, 1)))
+            for m in verify:
+                res = run_one(claim, None if m == "free" else size, m, seed)
+                found.setdefault(m if m != "free" else "free (all n, r)", []).append(res.verdict)
+        verdicts = {m: next((v for v in vs if v not in ("proved", "checked")), vs[0]) for m, vs in found.items()}
     return space, verdicts
 
 
@@ -778,6 +843,11 @@ class CorrectionSpace:
     verdicts: dict[str, str] = field(default_factory=dict)
     contains_registered: bool | None = None
     contains_printed: bool | None = None
+    #: the prime of the ranks quoted
+    prime: int = PRIME
+    #: solutions exist modulo each of this many primes, but no rational reconstruction was agreed on (see
+    #: :class:`AffineSpace`): no formula is given, none is excluded
+    unreconstructed: int = 0
 
     @property
     def N(self) -> int:
@@ -797,9 +867,14 @@ class CorrectionSpace:
         return bool(self.verdicts) and all(v in ("proved", "checked") for v in self.verdicts.values())
 
     def certificate(self) -> str:
+        if self.particular is None and self.unreconstructed:
+            return (f"solutions exist modulo each of the {self.unreconstructed} primes tried (the {self.equations} x "
+                    f"{self.N} system has rank {self.rank}, as its augmented matrix), but their coefficients have no "
+                    f"rational reconstruction from those primes: no formula is given, and none is excluded")
         if self.particular is None:
-            return (f"no formula in this {self.N}-term space holds: over GF(2^61 - 1) the {self.equations} x "
-                    f"{self.N} system has rank {self.rank} and its augmented matrix rank {self.rank_augmented}")
+            return (f"no formula in this {self.N}-term space holds: over GF({_prime_text(self.prime)}) the "
+                    f"{self.equations} x {self.N} system has rank {self.rank} and its augmented matrix rank "
+                    f"{self.rank_augmented}")
         what = ("exactly one formula holds" if not self.basis else
                 f"a {len(self.basis)}-dimensional affine space of formulas holds")
         return (f"{what} in this {self.N}-term space, modulo the {self.zero_dim} independent combinations that "
@@ -895,6 +970,58 @@ def _rref(rows: list[list[int]], N: int, p: int) -> list[list[int]]:
     return [[int(R[i, j]) for j in range(N)] for i in range(rank)]
 
 
+def _correction_mod(g: Any, ansatz: CorrectionAnsatz, size: Size, N: int, order: list[int], prime: int, seed: int,
+                    points: int | None) -> tuple[int, int, int, list, list | None, list] | None:
+    """A correction search modulo one prime: the ranks of the sampled system and of its augmented matrix, the
+    number of equations, the reduced echelon bases of the combinations that vanish on the phase space (Z) and of
+    the homogeneous solutions modulo them (H), and the particular solution reduced modulo both (None where
+    there is none); None where the graph cannot be evaluated modulo ``prime``."""
+    import flint
+    from stiefelsym.backends.fields import DegenerateError, ModularField
+    from stiefelsym.scene import Scene
+    rng = random.Random(f"{seed}|correct|{ansatz.claim}|{size.n}|{size.r}|{N}" + (f"|{prime}" if prime != PRIME else ""))
+    slot_rows: list[list[int]] = []
+    rows: list[list[int]] = []
+    k, stable, last = 0, 0, (-1, -1)
+    # sample until the ranks of both systems stop growing (two more points change neither)
+    try:
+        while True:
+            scene = Scene(size.n, size.r, ModularField(prime), chart="cayley", rng=rng,
+                          component=k % 2 if size.r == size.n else 0, realization=ansatz.realization)
+            out = evaluate_derived(g, scene)
+            k += 1
+            S = [_entries_mod(out[f"S{j}"]) for j in order]
+            slot_rows += [[c[e] for c in S] for e in range(len(S[0]))]
+            keys = sorted((x for x in out if x.startswith("R|")), key=lambda x: int(x[2:]))
+            R0 = [e for x in keys for e in _entries_mod(out[x])]
+            cols = [[(a - b) % prime for a, b in zip((e for x in keys for e in _entries_mod(out[f"R{j}|{x[2:]}"])), R0)]
+                    for j in order]
+            # Σ cⱼ (Rⱼ − R₀) = −R₀: a null vector (c, t) of [Rⱼ − R₀ | R₀] with t ≠ 0 gives c / t
+            rows += [[c[e] for c in cols] + [R0[e]] for e in range(len(R0))]
+            if len(rows) >= N + 8 and len(slot_rows) >= N + 8:
+                ranks = (flint.nmod_mat(rows, prime).rank(), flint.nmod_mat(slot_rows, prime).rank())
+                stable = stable + 1 if ranks == last else 0
+                last = ranks
+                if stable >= 2 and k >= (points or 3):
+                    break
+    except (DegenerateError, ZeroDivisionError):
+        return None
+    rank_aug = flint.nmod_mat(rows, prime).rank()
+    rank = flint.nmod_mat([r[:-1] for r in rows], prime).rank()
+    Z = _rref(_nullspace(slot_rows, N, prime), N, prime)
+    if rank != rank_aug:
+        return rank, rank_aug, len(rows), Z, None, []
+    full = _nullspace(rows, N + 1, prime)
+    part = next((v for v in full if v[-1]), None)
+    homogeneous = [v[:-1] for v in full if not v[-1]]
+    H = _quotient(homogeneous, Z, prime) if homogeneous else []
+    if part is None:
+        return rank, rank_aug, len(rows), Z, None, H
+    inv = pow(part[-1], prime - 2, prime)
+    p0 = _reduce([x * inv % prime for x in part[:-1]], _rref(H + Z, N, prime), prime)
+    return rank, rank_aug, len(rows), Z, p0, H
+
+
 def correction_space(ansatz: CorrectionAnsatz, size: Size | None = None, *, seed: int = 0,
                      verify: Sequence[str] = ("auto",), points: int | None = None) -> CorrectionSpace:
     """Every formula Σ cⱼ Tⱼ of the ansatz that makes the claim's residual vanish on the phase space:
@@ -904,12 +1031,10 @@ def correction_space(ansatz: CorrectionAnsatz, size: Size | None = None, *, seed
     catalog's claim.  An inconsistent sampled system certifies that the space is empty."""
     import time
 
-    import flint
     from stiefelsym.claims import load_catalog
-    from stiefelsym.backends.fields import ModularField
     from stiefelsym.ir import _compiled_graph as compile_claim
     from stiefelsym.run.runner import run_one
-    from stiefelsym.scene import REALIZATIONS, Scene
+    from stiefelsym.scene import REALIZATIONS
 
     t0 = time.perf_counter()
     size = size or ansatz.size
@@ -931,34 +1056,6 @@ def correction_space(ansatz: CorrectionAnsatz, size: Size | None = None, *, seed
         return out
     cons = REALIZATIONS[ansatz.realization]
     g = compile_claim(probe, size.n, size.r, (cons.name, cons.build))
-    rng = random.Random(f"{seed}|correct|{ansatz.claim}|{size.n}|{size.r}|{N}")
-    slot_rows: list[list[int]] = []
-    rows: list[list[int]] = []
-    k, stable, last = 0, 0, (-1, -1)
-    # sample until the ranks of both systems stop growing (two more points change neither)
-    while True:
-        scene = Scene(size.n, size.r, ModularField(PRIME), chart="cayley", rng=rng,
-                      component=k % 2 if size.r == size.n else 0, realization=ansatz.realization)
-        out = evaluate_derived(g, scene)
-        k += 1
-        S = [_entries_mod(out[f"S{j}"]) for j in order]
-        slot_rows += [[c[e] for c in S] for e in range(len(S[0]))]
-        keys = sorted((x for x in out if x.startswith("R|")), key=lambda x: int(x[2:]))
-        R0 = [e for x in keys for e in _entries_mod(out[x])]
-        cols = [[(a - b) % PRIME for a, b in zip((e for x in keys for e in _entries_mod(out[f"R{j}|{x[2:]}"])), R0)]
-                for j in order]
-        # Σ cⱼ (Rⱼ − R₀) = −R₀: a null vector (c, t) of [Rⱼ − R₀ | R₀] with t ≠ 0 gives c / t
-        rows += [[c[e] for c in cols] + [R0[e]] for e in range(len(R0))]
-        if len(rows) >= N + 8 and len(slot_rows) >= N + 8:
-            ranks = (flint.nmod_mat(rows, PRIME).rank(), flint.nmod_mat(slot_rows, PRIME).rank())
-            stable = stable + 1 if ranks == last else 0
-            last = ranks
-            if stable >= 2 and k >= (points or 3):
-                break
-    M = flint.nmod_mat(rows, PRIME)
-    rank_aug = M.rank()
-    rank = flint.nmod_mat([r[:-1] for r in rows], PRIME).rank()
-    Z = _rref(_nullspace(slot_rows, N, PRIME), N, PRIME)
 
     def unorder(v: Sequence[Any]) -> list[Any]:
         out = [None] * N
@@ -966,22 +1063,35 @@ def correction_space(ansatz: CorrectionAnsatz, size: Size | None = None, *, seed
             out[j] = v[pos]
         return out
 
-    space = CorrectionSpace(ansatz, size, None, [], len(Z), len(rows), rank, rank_aug, seed)
-    if rank == rank_aug:
-        full = _nullspace(rows, N + 1, PRIME)
-        part = next((v for v in full if v[-1]), None)
-        homogeneous = [v[:-1] for v in full if not v[-1]]
-        H = _quotient(homogeneous, Z, PRIME) if homogeneous else []
-        if part is not None:
-            inv = pow(part[-1], PRIME - 2, PRIME)
-            p0 = [x * inv % PRIME for x in part[:-1]]
-            p0 = _reduce(p0, _rref(H + Z, N, PRIME), PRIME)
-            particular = [_rational(x, PRIME) if x else Fraction(0) for x in p0]
-            basis = [[_rational(x, PRIME) if x else Fraction(0) for x in h] for h in H]
-            if all(x is not None for x in particular) and all(x is not None for b in basis for x in b):
-                space.particular = unorder(particular)
-                space.basis = [unorder(b) for b in basis]
-    zero_basis = [unorder([_rational(x, PRIME) if x else Fraction(0) for x in z]) for z in Z]
+    space = CorrectionSpace(ansatz, size, None, [], 0, 0, 0, 0, seed)
+    lift = _Lift()
+    zero_basis: list[list[Fraction]] = []
+    tried = 0
+    for prime in lift_primes():
+        found = _correction_mod(g, ansatz, size, N, order, prime, seed, points)
+        if found is None:
+            continue            # a constant of the ansatz is 0 or has no inverse modulo this prime
+        tried += 1
+        rank, rank_aug, equations, Z, p0, H = found
+        space.zero_dim, space.equations, space.rank, space.rank_augmented = len(Z), equations, rank, rank_aug
+        space.prime = prime
+        if rank != rank_aug:
+            space.unreconstructed = 0
+            break                # certified empty: the sampled system is inconsistent
+        space.unreconstructed += 1
+        if p0 is None:
+            continue
+        shape = (rank, tuple(next(j for j, x in enumerate(v) if x) for v in H + Z), len(H), len(Z))
+        rec = lift.add(shape, p0 + [x for v in H + Z for x in v], prime)
+        if rec is not None:
+            chunks = [rec[i * N:(i + 1) * N] for i in range(1 + len(H) + len(Z))]
+            space.particular = unorder(chunks[0])
+            space.basis = [unorder(b) for b in chunks[1:1 + len(H)]]
+            zero_basis = [unorder(z) for z in chunks[1 + len(H):]]
+            space.unreconstructed = 0
+            break
+    if not tried:
+        raise ValueError(f"{ansatz.claim}: the ansatz cannot be evaluated modulo any of the primes tried")
     if space.particular is not None:
         span = space.basis + [z for z in zero_basis if all(x is not None for x in z)]
         for name, coeffs in (("registered", ansatz.registered), ("printed", ansatz.printed)):
