@@ -96,6 +96,10 @@ class Result:
     #: of a correction's record: what it changes in the claim's graph, in the paper's notation (one
     #: dict per change: where, old, new and their LaTeX old_tex, new_tex; see stiefelsym.ir.notation)
     change: list[dict[str, str]] = field(default_factory=list)
+    #: the claim's expectation of its residuals ("holds": they vanish; "nonzero": they do not vanish identically)
+    #: and its realization of T*V: part of what the verdict is about, bound to the claim like its words
+    expect: str = "holds"
+    realization: str = "standard"
 
     @property
     def size(self) -> str:

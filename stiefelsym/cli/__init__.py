@@ -1122,7 +1122,10 @@ def derive(claim_id: str, claims_files: tuple[str, ...]) -> None:
     registry, _ = _registry(claims_files, (claim_id,))
     c = _lookup(registry, claim_id)
     res = run_free_guarded(c)
-    click.echo(f"% {c.id} ({', '.join(c.paper)}): {res.verdict} for all n, r", err=False)
+    from stiefelsym.results import free_scope
+    # the proof's scope as its certificate gives it: every n and r, or every n at the r the claim is stated for
+    click.echo(f"% {c.id} ({', '.join(c.paper)}): {res.verdict} for "
+               f"{free_scope(res) if res.verdict == 'proved' else 'all n, r'}", err=False)
     if res.verdict != "proved":
         click.echo(f"% {res.message}")
         raise click.exceptions.Exit(EXIT_UNEXPECTED)

@@ -85,6 +85,17 @@ KIND_MEANING = {
     "geo": "a geometric statement, checked through its algebraic form",
 }
 
+def kind_words(c: "ClaimResults") -> str:
+    """What a claim of this kind states, and, where its residuals are expected not to vanish (``expect="nonzero"``),
+    that too: the kind alone would say they must vanish.  The realization of T*V when it is not the standard one."""
+    words = KIND_MEANING.get(c.kind, "")
+    if c.expect == "nonzero" and c.kind != "not":
+        words += "; its residuals are stated NOT to vanish identically (needs a certified witness)"
+    if c.realization != "standard":
+        words += f"; in the {c.realization} realization of T*V"
+    return words
+
+
 #: what each method does, for a mathematician reading "passes at … by modular"
 METHOD_MEANING = {
     "exact": ("symbolic computation at one size (n, r) in exact arithmetic: the residuals reduced to "
@@ -235,6 +246,8 @@ class ClaimResults:
         self.kind = first.kind
         self.title = first.title
         self.statement = first.statement
+        self.expect = first.expect
+        self.realization = first.realization
         self.printed: list[Result] = []
         self.variants: dict[str, list[Result]] = {}
 
@@ -957,7 +970,7 @@ def _md_claim(c: ClaimResults) -> list[str]:
     st = _md_statement(c.statement)
     if st:
         out += [st, ""]
-    out += [f"Kind: {c.kind}, {_md_escape(KIND_MEANING.get(c.kind, ''))}.", ""]
+    out += [f"Kind: {c.kind}, {_md_escape(kind_words(c))}.", ""]
     if c.printed:
         out += _md_results(c.printed)
     dims = dimension_checks(c)
@@ -1875,7 +1888,7 @@ def _tex_claim(c: ClaimResults) -> list[str]:
         out += [tex_words(c.title), ""]
     if c.statement.strip():
         out.append(tex_display(c.statement))
-    out += [tex_escape(f"Kind: {c.kind}, {KIND_MEANING.get(c.kind, '')}."), ""]
+    out += [tex_escape(f"Kind: {c.kind}, {kind_words(c)}."), ""]
     if c.printed:
         out += _tex_results(c.printed)
     dims = dimension_checks(c)

@@ -106,15 +106,26 @@ EVIDENCE = ("expected", "seed", "reductions", "certificate", "residual", "false_
 
 #: the fields of a record that state what the claim is (its labels and words): a run copies them from
 #: the registered claim, and a record must carry them unchanged
-CLAIM_FIELDS = ("paper", "section", "kind", "title", "statement")
+CLAIM_FIELDS = ("paper", "section", "kind", "title", "statement", "expect", "realization")
 
 
 def claim_field_edits(record: dict, claim: Any) -> list[str]:
     """The fields of ``CLAIM_FIELDS`` in which a record differs from its registered claim (a record whose
     statement or labels were edited names another claim than the one whose graph was verified)."""
+    stated = claim
+    variant = record.get("variant")
+    if variant is not None:       # a correction's record: what the correction expects (claims.Claim.corrected)
+        k = next((i for i, c in enumerate(getattr(claim, "corrections", ())) if c.description == variant), None)
+        stated = claim.corrected(k) if k is not None else claim
     own = {"paper": list(claim.paper), "section": claim.section, "kind": claim.kind, "title": claim.title,
-           "statement": claim.statement}
-    return [k for k in CLAIM_FIELDS if _canonical(record.get(k)) != _canonical(own[k])]
+           "statement": claim.statement, "expect": stated.expect, "realization": stated.realization}
+    # (a record written before records carried the expectation and the realization reads as the defaults)
+    return [k for k in CLAIM_FIELDS
+            if _canonical(record.get(k, _RECORD_DEFAULTS.get(k))) != _canonical(own[k])]
+
+
+#: the value of a field a record written before the field existed reads as
+_RECORD_DEFAULTS = {"expect": "holds", "realization": "standard"}
 
 
 def declared_edits(record: dict, claim: Any, policy: Callable | None = None) -> list[str]:

@@ -77,3 +77,43 @@ def test_unreconstructed_solutions_are_not_said_to_be_absent():
     from stiefelsym.analyses.discover import AffineSpace
     space = AffineSpace(["a", "b"], None, [], 10, 2, 2, unreconstructed=8)
     assert "holds" not in space.certificate() and "none is excluded" in space.certificate()
+
+
+def _swap(tmp_path, a, b, methods):
+    """A genuine run of claims file ``a``, reported beside file ``b`` of the same name (same id, function and words;
+    another expectation or realization): D5."""
+    import shutil
+    (tmp_path / "a").mkdir()
+    (tmp_path / "b").mkdir()
+    shutil.copy(REVIEW / a, tmp_path / "a" / "swap.py")
+    shutil.copy(REVIEW / b, tmp_path / "b" / "swap.py")
+    run = cli("verify", "--claims", "swap.py", *[x for m in methods for x in ("--method", m)], "--size", "3,2",
+              "--jobs", "1", "--report-dir", str(tmp_path / "rep"), cwd=tmp_path / "a")
+    assert (tmp_path / "rep" / "results.json").exists(), run.stderr[-2000:]
+    return cli("report", "--results", str(tmp_path / "rep" / "results.json"), "--report-dir", str(tmp_path / "out"),
+               cwd=tmp_path / "b")
+
+
+def test_a_record_is_not_reported_under_another_expectation(tmp_path):
+    run = _swap(tmp_path, "expect_swap_a.py", "expect_swap_b.py.in", ("exact", "modular"))
+    assert run.returncode == 2 and "its expect is not the claim's" in run.stderr, run.stderr[-2000:]
+    assert not (tmp_path / "out" / "verification.md").exists()
+
+
+def test_a_record_is_not_reported_under_another_realization(tmp_path):
+    run = _swap(tmp_path, "realization_swap_a.py", "realization_swap_b.py.in", ("exact", "modular"))
+    assert run.returncode == 2 and "its realization is not the claim's" in run.stderr, run.stderr[-2000:]
+    assert not (tmp_path / "out" / "verification.md").exists()
+
+
+def test_the_point_methods_describe_the_chart_of_the_metric_realization():
+    """D6: the rational, modular, float and ball records of a claim in the metric realization described the standard
+    chart (P = XW + (I − XXᵀ)Z, on which XᵀA⁻¹P is not skew)."""
+    import json
+    for method in ("modular", "float", "ball"):
+        run = cli("verify", "--claims", str(REVIEW / "metric_chart_text.py"), "--method", method, "--size", "3,2",
+                  "--jobs", "1", "--format", "json", "--no-report")
+        data = json.loads(run.stdout)
+        for rec in (data["results"] if isinstance(data, dict) else data):
+            text = rec["reductions"][0]
+            assert "P = A(XW + (I - XX^T)Z)" in text and "X^T A^{-1} P + P^T A^{-1} X = 0" in text, (method, text)
