@@ -132,7 +132,13 @@ def run_free_on(claim: Claim, func: Callable, family: SizeFamily | None, alone: 
     except (TypeError, ValueError, AttributeError, ArithmeticError) as exc:
         text = f"the claim does not run on the free algebra ({type(exc).__name__}: {exc})"
         refused = touched()
-        if refused is None and _fails_at_a_size(claim, func, family):
+        fails = refused is None and _fails_at_a_size(claim, func, family)
+        if refused is None and not fails:
+            # the claim runs at the fixed sizes: what raised is an operation of its graph the free algebra does
+            # not implement (a limit of this method), not a fault of the claim
+            return undecided(f"the dimension-free method cannot evaluate an operation of the claim's graph "
+                             f"({type(exc).__name__}: {exc}); decided by the fixed-size methods")
+        if fails:
             # its own code raises at a fixed size too: an ill-formed claim (an `error` there), not beyond the
             # free algebra
             res.verdict, res.message, res.seconds = "error", text + "; an error at the fixed sizes", \
