@@ -320,48 +320,37 @@ def conserved(flow: Callable[[Any], Any], size: Size, degree: int = 4, *, max_a:
     K = N + 8
     caveats: list[str] = []
     last: Discovery | None = None
-    lift = _Lift()
-    pending: tuple[int, int, int] | None = None      # (prime, dim V1, dim V0) of a space not yet reconstructed
-    primes = lift_primes()
-    for prime in primes:
+    for prime in PRIMES:
         found = _conserved_mod(g, size, N, K, prime, seed, name, realization)
         if isinstance(found, str):
             caveats.append(found)
             continue
         V0, V1, kept = found
-        # the basis modulo the constants, lifted over the primes of its echelon shape (:class:`_Lift`)
-        shape = (len(V1), len(V0), tuple(next(j for j, x in enumerate(v) if x) for v in kept))
-        rec = lift.add(shape, [x for v in kept for x in v], prime) if kept else []
-        if rec is None:
-            pending = (prime, len(V1), len(V0))
-            continue
-        pending = None
         integrals = []
-        for i in range(len(kept)):
-            coeffs = rec[i * N:(i + 1) * N]
+        for v in kept:
+            coeffs = [_rational(x, prime) if x else Fraction(0) for x in v]
+            if any(c is None for c in coeffs):
+                continue
             integrals.append(Integral([(c, m) for c, m in zip(coeffs, mons) if c]))
         _verify_integrals(integrals, flow, size, name, realization, verify, seed)
         refuted = [k for k, I in enumerate(integrals, 1) if "fails" in I.verdicts.values()]
+        lost = len(kept) - len(integrals)
         last = Discovery(name or getattr(flow, "__name__", "flow"), size, mons, len(V1), len(V0), integrals, K,
                          seed, prime, caveats)
-        if not refuted:
+        if not refuted and not lost:
             return last
         caveats.append(
             f"modulo p = {_prime_text(prime)} the space found is not the flow's: "
-            f"{', '.join(f'I{k}' for k in refuted)} {'fails' if len(refuted) == 1 else 'fail'} verification"
-            " (a constant of the flow may be divisible by p)")
-        lift = _Lift()           # start afresh with the primes that follow
-    if pending is not None:
-        caveats.append(f"the space of dimension {pending[1] - pending[2]} modulo the constants found modulo each prime "
-                       f"has no rational reconstruction agreed on by {len(primes)} primes: no integral is given")
-        if last is None:
-            last = Discovery(name or getattr(flow, "__name__", "flow"), size, mons, pending[1], pending[2], [], K,
-                             seed, pending[0], caveats)
+            + (f"{', '.join(f'I{k}' for k in refuted)} {'fails' if len(refuted) == 1 else 'fail'} verification"
+               if refuted else "")
+            + ("; " if refuted and lost else "")
+            + (f"{lost} of its {len(kept)} elements have no rational coefficients of small height" if lost else "")
+            + " (a constant of the flow may be divisible by p)")
     if last is not None:
         last.certified = False      # every prime tried: the last space found, with what is wrong with it
         return last
     raise ValueError("the flow cannot be evaluated modulo any of the primes "
-                     + ", ".join(_prime_text(p) for p in primes) + ": " + "; ".join(caveats))
+                     + ", ".join(_prime_text(p) for p in PRIMES) + ": " + "; ".join(caveats))
 
 
 def _conserved_mod(g: Any, size: Size, N: int, K: int, prime: int, seed: int, name: str,

@@ -117,12 +117,3 @@ def test_the_point_methods_describe_the_chart_of_the_metric_realization():
         for rec in (data["results"] if isinstance(data, dict) else data):
             text = rec["reductions"][0]
             assert "P = A(XW + (I - XX^T)Z)" in text and "X^T A^{-1} P + P^T A^{-1} X = 0" in text, (method, text)
-
-
-def test_the_conserved_search_lifts_as_the_others():
-    """The conserved-quantity search reconstructs over several primes too: an integral with the coefficient
-    1/(10^12 + 39) is found and proved (one prime alone has no reconstruction for it)."""
-    own = Path(__file__).parent / "s75" / "own" / "big_flow.py"
-    run = cli("discover", f"{own}:flow_big_neumann", "--size", "3,1", "--degree", "2")
-    assert run.returncode == 0, run.stdout + run.stderr[-2000:]
-    assert "1/1000000000039·tr(PPᵀ)    [auto proved, free (all n, r) proved]" in run.stdout
