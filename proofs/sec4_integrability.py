@@ -397,7 +397,7 @@ def H_normal(t):
                  r"\{\Phi_\xi,(p_i,p_j)\}=\{\tr\Phi^4,(p_i,p_j)\}=\{\tr(\lambda A+\Phi)^3,(p_i,p_j)\}=0;\quad \{H_0,\Phi_\xi\}=\{H_0,\tr\Phi^4\}="
                  r"\{H_0,\Psi_\eta\}=\{H_0,(p_i,p_j)\}=0")
 def noether_integrals_of_the_normal_metric(s):
-    """The proof of Theorem bols-jov: by the Noether theorem Φ*(C∞(so(n))) (Φ_ξ, tr Φ⁴, and the integrals tr(λA + Φ)³ of (man), so that (man) and the SO(n)-invariant (com) commute, as the Remark after Theorem man says) commutes with the SO(n)-invariant functions Ψ_ij, (p_i, p_j), and H₀ = ½<Φ, Φ> commutes with both sets (with Φ*(C∞(so(n))) because h ↦ h∘Φ is a morphism of Poisson structures and ½<μ, μ> is a Casimir)."""
+    """The proof of Theorem bols-jov: by the Noether theorem Φ*(C∞(so(n))) (Φ_ξ, tr Φ⁴, and the integrals tr(λA + Φ)³ of (man), so that (man) and the SO(n)-invariant (com) commute, as the Remark after Theorem 4.2 says) commutes with the SO(n)-invariant functions Ψ_ij, (p_i, p_j), and H₀ = ½<Φ, Φ> commutes with both sets (with Φ*(C∞(so(n))) because h ↦ h∘Φ is a morphism of Poisson structures and ½<μ, μ> is a Casimir)."""
     trPhi4 = lambda t: power_trace(t, t.Phi, 4)   # noqa: E731
     man3 = lambda t: power_trace(t, t.lam * t.A + t.Phi, 3)   # noqa: E731
     return {

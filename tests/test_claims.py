@@ -114,10 +114,11 @@ def test_slips_reported_in_passing_belong_to_an_erratum_and_are_phrases():
     assert c.slips == ("the subscript I_{r+1} for I_{l+1}",)
 
 
-def test_the_catalog_declares_the_two_slips_its_errata_report_in_passing():
+def test_the_catalog_declares_the_slips_its_errata_report_in_passing():
     from stiefelsym.claims import load_catalog
     reg = load_catalog()
     slips = {c.id: c.slips for c in reg if c.slips}
-    assert set(slips) == {"2r-integrals-general-line", "coupled-perturbed-big-lax"}
+    assert set(slips) == {"2r-integrals-general-line", "coupled-perturbed-big-lax", "coupled-big-lax-normal"}
     assert "Iᵣ₊₁ for Iₗ₊₁" in slips["2r-integrals-general-line"][0]
     assert "(10) and (11)" in slips["coupled-perturbed-big-lax"][0]
+    assert "L₊(λ) for L₊(ν)" in slips["coupled-big-lax-normal"][0]

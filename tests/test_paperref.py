@@ -62,3 +62,7 @@ def test_the_reports_keep_the_keys_in_their_records():
                method="exact", verdict="proved", seed=0, seconds=0.0, expected=True)
     assert readable_results([r])[0].title == "along (5) §4"
     assert r.title == "along (dot_XP3*)"
+    mine = Result(claim="c", paper=["man"], section="4", kind="id", title="along (BB)", statement="", n=2, r=1,
+                  method="exact", verdict="proved", seed=0, seconds=0.0, expected=True,
+                  rerun="stiefelsym verify c --claims mine.py")      # a user's claim: its words are its own
+    assert readable_results([mine])[0].title == "along (BB)"

@@ -162,17 +162,26 @@ class _Lift:
         self.vals: list[int] = []
         self.last: list[Fraction] | None = None
         self.primes = 0
+        #: reconstructions that verification refuted: the residues stay (they are right; the modulus was too
+        #: small), and the answer must be another reconstruction, agreed on by two further moduli
+        self.refuted: list[list[Fraction]] = []
+
+    def refute(self) -> None:
+        if self.last is not None:
+            self.refuted.append(self.last)
+        self.last = None
 
     def add(self, key: Any, vals: Sequence[int], prime: int) -> list[Fraction] | None:
         if key != self.key or len(vals) != len(self.vals):
             self.key, self.m, self.vals, self.last, self.primes = key, 1, [0] * len(vals), None, 0
+            self.refuted = []
         inv = pow(self.m % prime, -1, prime)
         self.vals = [a + self.m * (((b - a) * inv) % prime) for a, b in zip(self.vals, vals)]
         self.m *= prime
         self.primes += 1
         got = [_rational(x, self.m) if x else Fraction(0) for x in self.vals]
         rec = None if any(q is None for q in got) else [q for q in got if q is not None]
-        stable = rec is not None and rec == self.last
+        stable = rec is not None and rec == self.last and rec not in self.refuted
         self.last = rec
         return rec if stable else None
 
@@ -601,20 +610,21 @@ class AffineSpace:
     rank: int
     rank_augmented: int
     prime: int = PRIME
-    #: solutions exist modulo every prime tried (rank = augmented rank), but their coefficients had no rational
-    #: reconstruction that two successive products of primes agreed on: no formula is given, none is excluded
-    unreconstructed: int = 0
+    #: where no formula is given: the primes modulo which the sampled system is inconsistent (the space is certified
+    #: empty of formulas whose denominators are prime to them when it is so modulo EMPTY_PRIMES primes and consistent
+    #: modulo none), those modulo which it is consistent, and the reconstructions verification refuted
+    empty_primes: list[int] = field(default_factory=list)
+    consistent: int = 0
+    refuted: int = 0
+
+    @property
+    def certified_empty(self) -> bool:
+        return self.particular is None and not self.consistent and len(self.empty_primes) >= EMPTY_PRIMES
 
     def certificate(self) -> str:
-        if self.particular is None and self.unreconstructed:
-            return (f"solutions exist modulo each of the {self.unreconstructed} primes tried (the "
-                    f"{self.equations} x {len(self.names)} system has rank {self.rank}, as its augmented matrix), "
-                    f"but their coefficients have no rational reconstruction from those primes: no formula is "
-                    f"given, and none is excluded")
         if self.particular is None:
-            return (f"no formula in this {len(self.names)}-term space holds: over GF({_prime_text(self.prime)}) the "
-                    f"{self.equations} x {len(self.names)} system has rank {self.rank} and its augmented "
-                    f"matrix rank {self.rank_augmented}")
+            return no_formula_text(len(self.names), self.equations, self.rank, self.rank_augmented,
+                                   self.empty_primes, self.consistent, self.refuted)
         return (f"a {len(self.basis)}-dimensional affine space of solutions in the {len(self.names)}-term space "
                 f"(rank {self.rank} of {len(self.names)})")
 
@@ -631,12 +641,43 @@ class AffineSpace:
         return s[2:] if s.startswith("+ ") else "−" + s[2:] if s.startswith("− ") else s
 
 
+#: a space of formulas is certified empty where its sampled system is inconsistent modulo this many primes and
+#: consistent modulo none (a rational solution whose denominators are prime to p solves it modulo p: one prime that
+#: divides a denominator of every solution is not enough)
+EMPTY_PRIMES = 2
+
+
+def no_formula_text(N: int, equations: int, rank: int, rank_aug: int, empty_primes: Sequence[int], consistent: int,
+                    refuted: int) -> str:
+    """Why a search gives no formula: a certificate of emptiness, or what stopped it (never "no formula holds"
+    without the certificate)."""
+    primes = " and ".join(_prime_text(p) for p in empty_primes)
+    if not consistent and len(empty_primes) >= EMPTY_PRIMES:
+        return (f"no formula in this {N}-term space holds with coefficients whose denominators are prime to {primes}: "
+                f"the {equations} x {N} sampled system is inconsistent modulo each (rank {rank}, its augmented "
+                f"matrix rank {rank_aug})")
+    out = [f"no formula is given, and none is excluded: the {equations} x {N} sampled system is consistent modulo "
+           f"{consistent} of the primes tried"]
+    if refuted:
+        out.append(f"{refuted} reconstruction{'s' if refuted != 1 else ''} of its solutions "
+                   f"{'were' if refuted != 1 else 'was'} refuted by verification")
+    elif consistent:
+        out.append("its solutions have no rational reconstruction from those primes")
+    if empty_primes:
+        out.append(f"it is inconsistent modulo {primes} (a prime that divides a denominator of every solution, or "
+                   "there is none)")
+    return "; ".join(out)
+
+
 def solve_affine(terms: Sequence[tuple[str, Callable[[Any], Any]]], target: Callable[[Any], Any], size: Size,
-                 *, seed: int = 0, points: int | None = None, realization: str = "standard") -> AffineSpace:
+                 *, seed: int = 0, points: int | None = None, realization: str = "standard",
+                 accept: Callable[[list[Fraction], list[list[Fraction]]], bool] | None = None) -> AffineSpace:
     """Every c with Σ cⱼ Tⱼ(s) = R(s) at random points of T*V over GF(p), one prime after another (the next
     where a constant is 0 or has no inverse mod p) (matrices: entry by entry), with rational coefficients
-    reconstructed from the residues of several primes (:class:`_Lift`); a verdict on any solution is for the
-    caller."""
+    reconstructed from the residues of several primes (:class:`_Lift`).  ``accept`` (particular, directions)
+    verifies a reconstruction: one it refutes is dropped and the search goes on with the primes that follow (a
+    reconstruction that two moduli agree on can still be wrong).  The space is said to be empty only where the
+    system is inconsistent modulo EMPTY_PRIMES primes and consistent modulo none."""
     import flint
     from stiefelsym.ir import _compiled_graph as compile_claim
     from stiefelsym.backends.fields import DegenerateError, ModularField
@@ -653,7 +694,8 @@ def solve_affine(terms: Sequence[tuple[str, Callable[[Any], Any]]], target: Call
     names = [name for name, _ in terms]
     failed: list[str] = []
     lift = _Lift()
-    tried = 0
+    tried = consistent = refuted = 0
+    empty: list[int] = []
     rows: list[list[int]] = []
     rank = rank_aug = 0
     for prime in lift_primes():
@@ -676,7 +718,11 @@ def solve_affine(terms: Sequence[tuple[str, Callable[[Any], Any]]], target: Call
         rank_aug = flint.nmod_mat(rows, prime).rank()
         rank = flint.nmod_mat([r[1:] for r in rows], prime).rank() if N else 0
         if rank != rank_aug:
-            return AffineSpace(names, None, [], len(rows), rank, rank_aug, prime)
+            empty.append(prime)
+            if not consistent and len(empty) >= EMPTY_PRIMES:
+                return AffineSpace(names, None, [], len(rows), rank, rank_aug, prime, empty_primes=empty)
+            continue
+        consistent += 1
         vecs = _nullspace(rows, N + 1, prime)
         if not vecs or not vecs[0][0]:
             # no solution with t = 1 modulo this prime although the ranks agree: cannot happen over a field
@@ -686,10 +732,14 @@ def solve_affine(terms: Sequence[tuple[str, Callable[[Any], Any]]], target: Call
         rec = lift.add(key, [x for v in vecs for x in v[1:]], prime)
         if rec is not None:
             chunks = [rec[i * N:(i + 1) * N] for i in range(len(vecs))]
-            return AffineSpace(names, chunks[0], chunks[1:], len(rows), rank, rank_aug, prime)
+            if accept is None or accept(chunks[0], chunks[1:]):
+                return AffineSpace(names, chunks[0], chunks[1:], len(rows), rank, rank_aug, prime)
+            refuted += 1
+            lift.refute()           # refuted: more primes, and another reconstruction
     if not tried:
         raise ValueError("the terms cannot be evaluated modulo any of the primes tried: " + "; ".join(failed))
-    return AffineSpace(names, None, [], len(rows), rank, rank_aug, PRIME, unreconstructed=tried)
+    return AffineSpace(names, None, [], len(rows), rank, rank_aug, PRIME, empty_primes=empty, consistent=consistent,
+                       refuted=refuted)
 
 
 def _entries_mod(v: Any) -> list[int]:
@@ -719,12 +769,13 @@ def lax_partner(L: Callable[[Any], Any], flow: Callable[[Any], Any], size: Size,
 
     terms = [((("" if k == 0 else "λ·" if k == 1 else f"λ^{k}·") + word_text(w)),
               lambda s, k=k, w=w: _comm(partner(s, [(Fraction(1), (k, w))]), L(s))) for k, w in shapes]
-    space = solve_affine(terms, lambda s: s.d(L, flow(s)), size, seed=seed)
     verdicts: dict[str, str] = {}
-    if space.particular is not None:
+
+    def accept(particular: list[Fraction], basis: list[list[Fraction]]) -> bool:
         # the particular solution and the particular one plus each direction of the space: every formula the
-        # search prints is verified (a verdict per method: the first that is not a pass, else the pass)
-        candidates = [space.particular] + [[a + b for a, b in zip(space.particular, h)] for h in space.basis]
+        # search prints is verified (a verdict per method: the first that is not a pass, else the pass); a
+        # reconstruction with a formula that fails is not the answer
+        candidates = [particular] + [[a + b for a, b in zip(particular, h)] for h in basis]
         found: dict[str, list[str]] = {}
         for c in candidates:
             coeffs = [(x, kw) for x, kw in zip(c, shapes) if x]
@@ -737,7 +788,12 @@ def lax_partner(L: Callable[[Any], Any], flow: Callable[[Any], Any], size: Size,
             for m in verify:
                 res = run_one(claim, None if m == "free" else size, m, seed)
                 found.setdefault(m if m != "free" else "free (all n, r)", []).append(res.verdict)
-        verdicts = {m: next((v for v in vs if v not in ("proved", "checked")), vs[0]) for m, vs in found.items()}
+        verdicts.clear()
+        verdicts.update({m: next((v for v in vs if v not in ("proved", "checked")), vs[0]) for m, vs in found.items()})
+        return "fails" not in verdicts.values()
+    space = solve_affine(terms, lambda s: s.d(L, flow(s)), size, seed=seed, accept=accept)
+    if space.particular is None:
+        verdicts.clear()            # the verdicts of a refuted reconstruction are not those of an answer
     return space, verdicts
 
 
@@ -845,9 +901,14 @@ class CorrectionSpace:
     contains_printed: bool | None = None
     #: the prime of the ranks quoted
     prime: int = PRIME
-    #: solutions exist modulo each of this many primes, but no rational reconstruction was agreed on (see
-    #: :class:`AffineSpace`): no formula is given, none is excluded
-    unreconstructed: int = 0
+    #: where no formula is given: as in :class:`AffineSpace`
+    empty_primes: list[int] = field(default_factory=list)
+    consistent: int = 0
+    refuted: int = 0
+
+    @property
+    def certified_empty(self) -> bool:
+        return self.particular is None and not self.consistent and len(self.empty_primes) >= EMPTY_PRIMES
 
     @property
     def N(self) -> int:
@@ -855,7 +916,7 @@ class CorrectionSpace:
 
     @property
     def empty(self) -> bool:
-        return self.particular is None
+        return self.certified_empty
 
     @property
     def dimension(self) -> int | None:
@@ -867,14 +928,9 @@ class CorrectionSpace:
         return bool(self.verdicts) and all(v in ("proved", "checked") for v in self.verdicts.values())
 
     def certificate(self) -> str:
-        if self.particular is None and self.unreconstructed:
-            return (f"solutions exist modulo each of the {self.unreconstructed} primes tried (the {self.equations} x "
-                    f"{self.N} system has rank {self.rank}, as its augmented matrix), but their coefficients have no "
-                    f"rational reconstruction from those primes: no formula is given, and none is excluded")
         if self.particular is None:
-            return (f"no formula in this {self.N}-term space holds: over GF({_prime_text(self.prime)}) the "
-                    f"{self.equations} x {self.N} system has rank {self.rank} and its augmented matrix rank "
-                    f"{self.rank_augmented}")
+            return no_formula_text(self.N, self.equations, self.rank, self.rank_augmented, self.empty_primes,
+                                   self.consistent, self.refuted)
         what = ("exactly one formula holds" if not self.basis else
                 f"a {len(self.basis)}-dimensional affine space of formulas holds")
         return (f"{what} in this {self.N}-term space, modulo the {self.zero_dim} independent combinations that "
@@ -1063,6 +1119,45 @@ def correction_space(ansatz: CorrectionAnsatz, size: Size | None = None, *, seed
             out[j] = v[pos]
         return out
 
+    try:
+        claim = load_catalog().get(ansatz.claim)
+    except KeyError:        # a search of one's own: its residual is the whole claim
+        claim = Claim(id=ansatz.claim, paper=("discover",), kind="id", section="discover",
+                      func=lambda s: {}, sizes=admissible(max(size.n, 1)), realization=ansatz.realization)
+    at = [size] + [z for z in ansatz.verify_sizes if z != size]
+
+    def verified(particular: list[Fraction], basis: list[list[Fraction]], zeros: list[list[Fraction]]) -> dict:
+        """The verdicts of the particular formula and of it plus each direction, per method (the first that is
+        not a pass, else the pass), and of each combination said to vanish on the phase space (by the first
+        method at the search's size): every element the answer rests on is verified."""
+        checks = [particular] + [[a + b for a, b in zip(particular, h)] for h in basis]
+        out: dict[str, str] = {}
+        for m in verify:
+            if m == "free" and not ansatz.free:
+                continue
+            verdicts = []
+            for c in checks:
+                slot = combination(terms, c)
+
+                def func(s, slot=slot):
+                    r = ansatz.residual(s, slot)
+                    return r if isinstance(r, dict) else {f"{ansatz.label} corrected": r}
+                for z in ([None] if m == "free" else at):
+                    verdicts.append(run_one(claim, z, m, seed, func=func).verdict)
+            key = "free (all n, r)" if m == "free" else (
+                m if len(at) == 1 else f"{m} at " + ", ".join(f"({z.n},{z.r})" for z in at))
+            out[key] = next((v for v in verdicts if v not in ("proved", "checked")), verdicts[0])
+        first = next((m for m in verify if m != "free"), "modular")
+        for z0 in zeros:
+            slot = combination(terms, z0)
+
+            def vanishes(s, slot=slot):
+                return {"the combination": _sum_values(_flat(slot(s, ansatz.point(s))))}
+            v = run_one(claim, size, first, seed, func=vanishes).verdict
+            if v == "fails":
+                out["a combination said to vanish on the phase space"] = v
+        return out
+
     space = CorrectionSpace(ansatz, size, None, [], 0, 0, 0, 0, seed)
     lift = _Lift()
     zero_basis: list[list[Fraction]] = []
@@ -1076,57 +1171,48 @@ def correction_space(ansatz: CorrectionAnsatz, size: Size | None = None, *, seed
         space.zero_dim, space.equations, space.rank, space.rank_augmented = len(Z), equations, rank, rank_aug
         space.prime = prime
         if rank != rank_aug:
-            space.unreconstructed = 0
-            break                # certified empty: the sampled system is inconsistent
-        space.unreconstructed += 1
+            space.empty_primes.append(prime)
+            if space.certified_empty:
+                break            # certified empty: the sampled system is inconsistent modulo enough primes
+            continue
+        space.consistent += 1
         if p0 is None:
             continue
         shape = (rank, tuple(next(j for j, x in enumerate(v) if x) for v in H + Z), len(H), len(Z))
         rec = lift.add(shape, p0 + [x for v in H + Z for x in v], prime)
-        if rec is not None:
-            chunks = [rec[i * N:(i + 1) * N] for i in range(1 + len(H) + len(Z))]
-            space.particular = unorder(chunks[0])
-            space.basis = [unorder(b) for b in chunks[1:1 + len(H)]]
-            zero_basis = [unorder(z) for z in chunks[1 + len(H):]]
-            space.unreconstructed = 0
-            break
+        if rec is None:
+            continue
+        chunks = [rec[i * N:(i + 1) * N] for i in range(1 + len(H) + len(Z))]
+        particular, basis = unorder(chunks[0]), [unorder(b) for b in chunks[1:1 + len(H)]]
+        zeros = [unorder(z) for z in chunks[1 + len(H):]]
+        verdicts = verified(particular, basis, zeros)
+        if "fails" in verdicts.values():
+            space.refuted += 1
+            lift.refute()        # a reconstruction two moduli agreed on, refuted: more primes, another reconstruction
+            continue
+        space.particular, space.basis, space.verdicts, zero_basis = particular, basis, verdicts, zeros
+        break
     if not tried:
         raise ValueError(f"{ansatz.claim}: the ansatz cannot be evaluated modulo any of the primes tried")
     if space.particular is not None:
-        span = space.basis + [z for z in zero_basis if all(x is not None for x in z)]
+        # every element of the span is verified: a formula in it holds; the ranks give the span's dimension
+        span = space.basis + zero_basis
         for name, coeffs in (("registered", ansatz.registered), ("printed", ansatz.printed)):
             if coeffs is not None:
                 d = [a - b for a, b in zip(ansatz.vector(coeffs), space.particular)]
                 setattr(space, f"contains_{name}", _in_span(d, span))
-        try:
-            claim = load_catalog().get(ansatz.claim)
-        except KeyError:        # a search of one's own: its residual is the whole claim
-            claim = Claim(id=ansatz.claim, paper=("discover",), kind="id", section="discover",
-                          func=lambda s: {}, sizes=admissible(max(size.n, 1)), realization=ansatz.realization)
-        checks = {"": space.particular} | {f" + direction {i + 1}": [a + b for a, b in zip(space.particular, h)]
-                                            for i, h in enumerate(space.basis)}
-        at = [size] + [z for z in ansatz.verify_sizes if z != size]
-        for m in verify:
-            if m == "free" and not ansatz.free:
-                continue
-            verdicts = []
-            for c in checks.values():
-                slot = combination(terms, c)
-
-                def func(s, slot=slot):
-                    r = ansatz.residual(s, slot)
-                    return r if isinstance(r, dict) else {f"{ansatz.label} corrected": r}
-                for z in ([None] if m == "free" else at):
-                    verdicts.append(run_one(claim, z, m, seed, func=func).verdict)
-            key = "free (all n, r)" if m == "free" else (
-                m if len(at) == 1 else f"{m} at " + ", ".join(f"({z.n},{z.r})" for z in at))
-            space.verdicts[key] = next((v for v in verdicts if v not in ("proved", "checked")), verdicts[0])
-    elif ansatz.printed is not None:
-        space.contains_printed = False
-    if ansatz.registered is not None and space.particular is None:
-        space.contains_registered = False
+    elif space.certified_empty:
+        if ansatz.printed is not None:
+            space.contains_printed = False
+        if ansatz.registered is not None:
+            space.contains_registered = False
     space.seconds = time.perf_counter() - t0
     return space
+
+
+def _sum_values(values: list[Any]) -> Any:
+    """The entries of a value as one list of residuals (a block matrix's blocks; a matrix as it is)."""
+    return values[0] if len(values) == 1 else {f"e{i}": v for i, v in enumerate(values)}
 
 
 @dataclass(frozen=True)

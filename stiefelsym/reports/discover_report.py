@@ -13,7 +13,7 @@ from stiefelsym.analyses.discover import CorrectionSpace
 
 
 def _dimension(sp: CorrectionSpace) -> str:
-    return "empty" if sp.empty else str(sp.dimension)
+    return "empty" if sp.empty else "none given" if sp.particular is None else str(sp.dimension)
 
 
 def _registered(sp: CorrectionSpace) -> str:
@@ -28,6 +28,8 @@ def _registered(sp: CorrectionSpace) -> str:
 def _verdicts(sp: CorrectionSpace) -> str:
     if sp.empty:
         return f"certified empty (rank {sp.rank} < {sp.rank_augmented})"
+    if sp.particular is None:
+        return "no formula given, none excluded"
     return ", ".join(f"{m} {v}" for m, v in sp.verdicts.items()) or "not verified"
 
 
@@ -63,7 +65,7 @@ def render_markdown(spaces: Sequence[CorrectionSpace], sweep: Sweep | None = Non
            "|---|---|---|---|---|---|---|---|"]
     for sp in spaces:
         a = sp.ansatz
-        sol = "—" if sp.empty else f"${sp.latex()}$"
+        sol = "—" if sp.particular is None else f"${sp.latex()}$"
         out.append(f"| `{a.claim}` {a.label} | ${a.slot_latex}$ | ({sp.size.n}, {sp.size.r}) | {sp.N} | "
                    f"{_dimension(sp)} | {_md_escape(sol)} | {_registered(sp)} | {_verdicts(sp)} |")
     out.append("")
@@ -75,7 +77,7 @@ def render_markdown(spaces: Sequence[CorrectionSpace], sweep: Sweep | None = Non
         out += [f"## `{a.claim}` {a.label}: ${a.slot_latex}$", "",
                 f"Search space ({sp.N} terms): {a.description_latex}.", "",
                 f"- {sp.certificate()[0].upper() + sp.certificate()[1:]}."]
-        if not sp.empty:
+        if sp.particular is not None:
             out.append(f"- ${a.slot_latex} = {sp.latex()}$")
             out += [f"- plus any multiple of ${sp.latex(b)}$" for b in sp.basis]
         if sp.contains_printed is not None:
@@ -123,7 +125,7 @@ def render_latex(spaces: Sequence[CorrectionSpace], sweep: Sweep | None = None) 
            row(["claim", "$(n,r)$", "$N$", "dim", "solution", "registered"]) + r" \hline", r"\endhead"]
     for sp in spaces:
         a = sp.ansatz
-        sol = r"---" if sp.empty else _tex_slot(a.slot_latex) + " " + _tex_cell_math(sp.latex())
+        sol = r"---" if sp.particular is None else _tex_slot(a.slot_latex) + " " + _tex_cell_math(sp.latex())
         out.append(row([f"{_tex_id(a.claim)} {a.label}", f"$({sp.size.n},{sp.size.r})$", str(sp.N),
                         _dimension(sp), sol, _registered(sp).replace("—", "---")]))
     out += [r"\end{longtable}}", ""]
@@ -134,7 +136,9 @@ def render_latex(spaces: Sequence[CorrectionSpace], sweep: Sweep | None = None) 
     out.append(r"{\sloppy")
     for sp in spaces:
         a = sp.ansatz
-        cert = sp.certificate().replace("GF(2^61 - 1)", r"$\mathrm{GF}(2^{61}-1)$").replace(" x ", r" $\times$ ")
+        # the primes as the certificate writes them, 2^e - k, in mathematics
+        cert = re.sub(r"2\^(\d+) - (\d+)", r"$2^{\1}-\2$", sp.certificate())
+        cert = cert.replace("GF($2^{61}-1$)", r"$\mathrm{GF}(2^{61}-1)$").replace(" x ", r" $\times$ ")
         out.append(rf"\paragraph{{{_tex_id(a.claim)} {a.label}: ${a.slot_latex}$.}} Search space ({sp.N} terms): "
                    rf"{a.description_latex}. {cert[0].upper() + cert[1:]}.")
         out.append("")

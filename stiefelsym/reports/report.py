@@ -317,12 +317,15 @@ def _section_key(section: str) -> tuple:
 
 
 def readable_results(results: Iterable[Result]) -> list[Result]:
-    """Copies of the records whose words cite the paper by its printed numbers ((5) §4, Theorem 4.4) where
-    they name its label keys ((dot_XP3*), Theorem man-dual): what a reader looks up (:func:`.paperref.readable`).
-    The records themselves, and results.json, keep the words as the claims give them."""
+    """Copies of the catalog's records whose words cite the paper by its printed numbers ((5) §4, Theorem 4.4)
+    where they name its label keys ((dot_XP3*), Theorem man-dual): what a reader looks up
+    (:func:`.paperref.readable`).  The records themselves, and results.json, keep the words as the claims give
+    them; the records of a user's claims are left as they are."""
     rd = paperref.readable
+    # only the catalog's words: the labels are the paper's keys, and in a user's words "(A2)" or "BB" is the user's
     return [dataclasses.replace(r, title=rd(r.title), statement=rd(r.statement, statement=True), erratum=rd(r.erratum),
-                                place=rd(r.place), slips=[rd(x) for x in r.slips]) for r in results]
+                                place=rd(r.place), slips=[rd(x) for x in r.slips]) if of_catalog(r) else r
+            for r in results]
 
 
 def group_by_claim(results: Iterable[Result]) -> list[ClaimResults]:

@@ -75,8 +75,9 @@ def test_the_lift_needs_two_moduli_that_agree():
 
 def test_unreconstructed_solutions_are_not_said_to_be_absent():
     from stiefelsym.analyses.discover import AffineSpace
-    space = AffineSpace(["a", "b"], None, [], 10, 2, 2, unreconstructed=8)
+    space = AffineSpace(["a", "b"], None, [], 10, 2, 2, consistent=8)
     assert "holds" not in space.certificate() and "none is excluded" in space.certificate()
+    assert not space.certified_empty
 
 
 def _swap(tmp_path, a, b, methods):
