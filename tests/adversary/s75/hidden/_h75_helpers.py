@@ -98,3 +98,14 @@ def cross3(s, u, v):
 def H_sp1(t):
     """(sp1) as the Manakov Hamiltonian with B = −A⁻¹: −¼tr(A⁻¹ΦA⁻¹Φ)."""
     return -t.tr(t.Ainv @ t.Phi @ t.Ainv @ t.Phi) / 4
+
+
+def pf4(K):
+    """The Pfaffian of a 4 × 4 skew matrix: K₁₂K₃₄ − K₁₃K₂₄ + K₁₄K₂₃."""
+    return K[0, 1] * K[2, 3] - K[0, 2] * K[1, 3] + K[0, 3] * K[1, 2]
+
+
+def H_kappa_of(s, X, P):
+    """(EM) at a point (X, P) of one's own: ½tr(PᵀP) − (½ + κ)tr((XᵀP)²)."""
+    K = X.T @ P
+    return s.tr(P.T @ P) / 2 - (s.q(1, 2) + s.kappa) * s.tr(K @ K)

@@ -12,7 +12,7 @@ from stiefelsym import Count, Rank, admissible, claim, comm
 from stiefelsym.bases import matrix_of, matrix_units, so_basis
 from stiefelsym.systems import coupled_point, derivative, stiefel_pairs_flow
 
-from _h75_helpers import (H_B, H_K_of, H_coupled0, H_neum_kappa_A, H_normal, H_sp1, H_submersion,
+from _h75_helpers import (H_kappa_of, pf4, H_B, H_K_of, H_coupled0, H_neum_kappa_A, H_normal, H_sp1, H_submersion,
                           block_projectors, cross3, dim_fol, killing, lambda1_form, lambda1_op, repeated_A)
 
 SMALL = admissible(n_max=4)
@@ -22,6 +22,8 @@ N_GE_2 = admissible(n_max=4, n_min=2, condition="n >= 2 (a₁ = a₂ needs two e
 N_GE_3 = admissible(n_max=4, n_min=3, condition="n >= 3 (so(2) is abelian)")
 R_LT_N = admissible(n_max=5, where=lambda n, r: r < n, condition="r < n (G(n, n) is a point)")
 R_IS_N = admissible(n_max=5, n_min=2, where=lambda n, r: r == n, condition="r = n >= 2 (T*SO(n))")
+R_IS_4 = admissible(n_max=5, r_min=4, r_max=4, condition="r = 4 (so(4) is not simple)")
+SMALL5 = admissible(n_max=5)
 COUPLED_R2 = admissible(n_max=3, r_min=2, condition="r >= 2 (so(1) = 0)")
 N3_R1 = admissible(n_min=3, stated_n_max=3, r_max=1, condition="n = 3, r = 1 (the Poisson sphere S²)")
 
@@ -87,15 +89,21 @@ def submersion_phi_moves(s):
 
 
 # 6 ---------------------------------------------------------------------------------------------------
-@claim("h75-repeated-eigenvalue-noether", paper=("No", "neumann", "FF"), kind="id", sizes=N_GE_2)
-def repeated_eigenvalue_noether(s):
-    """§6, "Singular matrices A": for A' = diag(α, α, b₃, …) the isotropy so(n)_A' contains E₁∧E₂, and
-    the component Φ₁₂ of Φ_A = pr_{so(n)_A}Φ is a Noether integral of the Neumann flow (No) (any κ)."""
-    Ap = repeated_A(s)
-    E12 = s.mat([[1 if (i, j) == (0, 1) else (-1 if (i, j) == (1, 0) else 0) for j in range(int(s.n))]
-                 for i in range(int(s.n))], ("n", "n"))
-    fl = s.dirac_flow(H_neum_kappa_A(Ap))
-    return {"[E1^E2, A']": comm(E12, Ap), "d Phi_12 / dt": s.d(lambda t: t.Phi[0, 1], fl)}
+@claim("h75-pfaffian-invariant-form", paper=("EM", "P-neutral", "SO(n-r)-action"), kind="id", sizes=R_IS_4)
+def pfaffian_invariant_form(s):
+    """§4, the Proposition on SO(n) × SO(r)-invariant metrics, another form of the catalog's erratum
+    (invariant-metrics) at r = 4: the quadratic form Pf(XᵀP) = K₁₂K₃₄ − K₁₃K₂₄ + K₁₄K₂₃ (K = XᵀP) is invariant
+    under the left SO(n) and the right SO(r) actions (its derivatives along (ξX, ξP) and (Xη, Pη) vanish), so
+    ½tr(PᵀP) + b Pf(XᵀP) (b small) is an SO(n) × SO(4)-invariant metric; it changes sign under the reflection
+    (X, P) ↦ (XD, PD), D = diag(−1, 1, 1, 1), which leaves every H_κ of (EM) unchanged, so it is not a ds²_κ."""
+    D = s.mat([[(-1 if i == 0 else 1) if i == j else 0 for j in range(4)] for i in range(4)], ("r", "r"))
+    left = {"X": s.xi @ s.X, "P": s.xi @ s.P}
+    right = {"X": s.X @ s.eta, "P": s.P @ s.eta}
+    K = s.X.T @ s.P
+    return {"d Pf along left so(n)": s.d(lambda t: pf4(t.X.T @ t.P), left),
+            "d Pf along right so(r)": s.d(lambda t: pf4(t.X.T @ t.P), right),
+            "Pf(DKD) + Pf(K)": pf4(D @ K @ D) + pf4(K),
+            "H_kappa(XD, PD) - H_kappa(X, P)": H_kappa_of(s, s.X @ D, s.P @ D) - H_kappa_of(s, s.X, s.P)}
 
 
 # 7 ---------------------------------------------------------------------------------------------------
@@ -109,18 +117,32 @@ def ad_psi_rank(s):
 
 
 # 8 ---------------------------------------------------------------------------------------------------
-@claim("h75-grassmann-singular-leaf-rank", paper=("NEUMANN2", "LAMBDA12", "grassmannian"), kind="dim",
-       sizes=R_LT_N)
-def grassmann_singular_leaf_rank(s):
-    """§7, proof of Theorem NEUMANN2: at x = Θ(X₀, P₀) = h + v with (X₀, P₀) ∈ Ψ⁻¹(0) generic,
-    dim ker Λ₁(x) = dim(gl(r) ⊕ gl(n − r)), so rank Λ₁(x) = n² − r² − (n − r)² = 2r(n − r) = 2 dim G(n, r)
-    (a point of Ψ⁻¹(0): P₀ = (I − XXᵀ)P)."""
+@claim("h75-theta-covering-rank", paper=("LAMBDA12", "REDUCED_BRACKET", "dimension"), kind="dim", sizes=SMALL5)
+def theta_covering_rank(s):
+    """§6, proof of Theorem NEUMANN: Θ = Φ + XXᵀ is invariant under the right SO(r)-action (and (X, P) ↦
+    (−X, −P)) and induces a ℤ₂-covering θ: (T*V)/SO(r) → Θ(T*V); so the differential of Θ on T(T*V) has rank
+    dim T*V − dim SO(r) = 2nr − r(r + 1) − r(r − 1)/2.  Tangent vectors of T*V: (ξX, ξP) (ξ ∈ so(n), SO(n) is
+    transitive on V) and (0, Xw + (I − XXᵀ)Z) (w ∈ so(r), Z ∈ ℝ^{n×r})."""
     n, r = int(s.n), int(s.r)
-    X = s.X
-    P0 = s.P - X @ (X.T @ s.P)
-    x = P0 @ X.T - X @ P0.T + X @ X.T
-    M = matrix_of(s, lambda u: lambda1_op(x, u), matrix_units(s, "n", "n"), "general")
-    return {"X^T P0": X.T @ P0, "rank Lambda_1 at Theta(Psi^-1(0))": Rank(M, n * n - r * r - (n - r) ** 2)}
+    X, P = s.X, s.P
+    Pr = s.In - X @ X.T
+
+    def tangent(b):
+        kind, E = b
+        if kind == "xi":
+            return E @ X, E @ P
+        if kind == "w":
+            return X - X, X @ E
+        return X - X, Pr @ E
+
+    def dTheta(b):
+        dX, dP = tangent(b)
+        return dP @ X.T + P @ dX.T - dX @ P.T - X @ dP.T + dX @ X.T + X @ dX.T
+
+    basis = ([("xi", E) for E in so_basis(s, "n")] + [("w", E) for E in (so_basis(s, "r") if r >= 2 else [])]
+             + [("Z", E) for E in matrix_units(s, "n", "r")])
+    M = matrix_of(s, dTheta, basis, "general")
+    return {"rank dTheta on T(T*V)": Rank(M, 2 * n * r - r * (r + 1) - r * (r - 1) // 2)}
 
 
 # 9 ---------------------------------------------------------------------------------------------------

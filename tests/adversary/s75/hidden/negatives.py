@@ -10,7 +10,7 @@ from stiefelsym import Count, Rank, admissible, claim, comm
 from stiefelsym.bases import matrix_of, matrix_units, so_basis
 from stiefelsym.systems import coupled_point, derivative, stiefel_pairs_flow
 
-from _h75_helpers import (H_B, H_K_of, H_coupled0, H_neum_kappa_A, H_normal, H_sp1, H_submersion,
+from _h75_helpers import (pf4, H_B, H_K_of, H_coupled0, H_neum_kappa_A, H_normal, H_sp1, H_submersion,
                           block_projectors, cross3, dim_fol, killing, lambda1_form, lambda1_op, repeated_A)
 
 SMALL = admissible(n_max=4)
@@ -22,6 +22,7 @@ R_LT_N = admissible(n_max=5, where=lambda n, r: r < n, condition="r < n")
 R_IS_N = admissible(n_max=5, n_min=2, where=lambda n, r: r == n, condition="r = n >= 2")
 COUPLED_R2 = admissible(n_max=3, r_min=2, condition="r >= 2")
 N3_R1 = admissible(n_min=3, stated_n_max=3, r_max=1, condition="n = 3, r = 1")
+R_IS_4 = admissible(n_max=5, r_min=4, r_max=4, condition="r = 4")
 ALWAYS = lambda n, r: True
 
 
@@ -69,14 +70,13 @@ def normal_phi_moves(s):
     return {"Phidot": s.d(lambda t: t.Phi, fl)}
 
 
-@claim("n75-repeated-eigenvalue-phi13", kind="id", sizes=admissible(n_max=4, n_min=3, condition="n >= 3"),
-       fails_at=lambda n, r: r < n,
-       erratum="twin: Φ₁₃ conserved for A' = diag(α, α, b₃, …) (E₁∧E₃ is not in so(n)_A'; true at r = n)")
-def repeated_eigenvalue_phi13(s):
-    """False twin of h75-repeated-eigenvalue-noether: Φ₁₃ in place of Φ₁₂."""
-    Ap = repeated_A(s)
-    fl = s.dirac_flow(H_neum_kappa_A(Ap))
-    return {"d Phi_13 / dt": s.d(lambda t: t.Phi[0, 2], fl)}
+@claim("n75-pfaffian-reflection-invariant", kind="id", sizes=R_IS_4, fails_at=ALWAYS,
+       erratum="twin: Pf(XᵀP) unchanged by the reflection (X, P) ↦ (XD, PD) (it changes sign)")
+def pfaffian_reflection_invariant(s):
+    """False twin of h75-pfaffian-invariant-form: Pf(DKD) = Pf(K)."""
+    D = s.mat([[(-1 if i == 0 else 1) if i == j else 0 for j in range(4)] for i in range(4)], ("r", "r"))
+    K = s.X.T @ s.P
+    return {"Pf(DKD) - Pf(K)": pf4(D @ K @ D) - pf4(K)}
 
 
 @claim("n75-ad-psi-rank-ceil", kind="dim", sizes=R_GE_2, fails_at=lambda n, r: r % 2 == 1,
@@ -88,16 +88,30 @@ def ad_psi_rank_ceil(s):
     return {"rank ad_Psi": Rank(M, r * (r - 1) // 2 - (r + 1) // 2)}
 
 
-@claim("n75-grassmann-generic-leaf-rank", kind="dim", sizes=R_LT_N, fails_at=lambda n, r: r >= 3,
-       erratum="twin: the generic leaf dimension 2l of (dimension) at the singular leaf Θ(Ψ⁻¹(0))")
-def grassmann_generic_leaf_rank(s):
-    """False twin of h75-grassmann-singular-leaf-rank: rank 2l = 2r(n − r) + r(r − 1)/2 − [r/2]."""
+@claim("n75-theta-rank-no-quotient", kind="dim", sizes=admissible(n_max=5), fails_at=lambda n, r: r >= 2,
+       erratum="twin: rank dΘ = dim T*V (the right SO(r)-orbits forgotten; true at r = 1)")
+def theta_rank_no_quotient(s):
+    """False twin of h75-theta-covering-rank: rank 2nr − r(r + 1)."""
     n, r = int(s.n), int(s.r)
-    X = s.X
-    P0 = s.P - X @ (X.T @ s.P)
-    x = P0 @ X.T - X @ P0.T + X @ X.T
-    M = matrix_of(s, lambda u: lambda1_op(x, u), matrix_units(s, "n", "n"), "general")
-    return {"rank": Rank(M, 2 * r * (n - r) + r * (r - 1) // 2 - r // 2)}
+    X, P = s.X, s.P
+    Pr = s.In - X @ X.T
+
+    def tangent(b):
+        kind, E = b
+        if kind == "xi":
+            return E @ X, E @ P
+        if kind == "w":
+            return X - X, X @ E
+        return X - X, Pr @ E
+
+    def dTheta(b):
+        dX, dP = tangent(b)
+        return dP @ X.T + P @ dX.T - dX @ P.T - X @ dP.T + dX @ X.T + X @ dX.T
+
+    basis = ([("xi", E) for E in so_basis(s, "n")] + [("w", E) for E in (so_basis(s, "r") if r >= 2 else [])]
+             + [("Z", E) for E in matrix_units(s, "n", "r")])
+    M = matrix_of(s, dTheta, basis, "general")
+    return {"rank dTheta": Rank(M, 2 * n * r - r * (r + 1))}
 
 
 @claim("n75-manakov-r-n-euler-sign", kind="id", sizes=R_IS_N, fails_at=lambda n, r: n >= 3,
