@@ -256,7 +256,10 @@ def _worker_main(task_fd: int, result_fd: int, execute: Callable[[Any], Any],
                 except ImportError:
                     pass
             soft, hard = resource.getrlimit(resource.RLIMIT_AS)
-            limit = memory if hard == resource.RLIM_INFINITY else min(memory, hard)
+            # the budget is the run's: what the worker has mapped already (the interpreter, the libraries, and in
+            # a process that forks from a long-lived one, such as a test session, all it holds) comes on top
+            wanted = memory + _mapped_bytes()
+            limit = wanted if hard == resource.RLIM_INFINITY else min(wanted, hard)
             resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
         limit = None if recycle is None else resident_bytes() + recycle
         while True:
@@ -287,6 +290,15 @@ def _worker_main(task_fd: int, result_fd: int, execute: Callable[[Any], Any],
         code = 2
     finally:
         os._exit(code)
+
+
+def _mapped_bytes() -> int:
+    """The address space this process has mapped (Linux: /proc/self/statm; 0 where it cannot be read)."""
+    try:
+        with open("/proc/self/statm", encoding="ascii") as f:
+            return int(f.read().split()[0]) * os.sysconf("SC_PAGE_SIZE")
+    except (OSError, ValueError, IndexError, AttributeError):
+        return 0
 
 
 def _max_fd() -> int:
