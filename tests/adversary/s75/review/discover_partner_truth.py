@@ -31,7 +31,6 @@ def correction_exists(s):
             "d(XᵀP + PᵀX)/dt": s.d(lambda t: t.X.T @ t.P + t.P.T @ t.X, tangent)}
 
 
-from fractions import Fraction  # noqa: E402
 
 CB = 2**40 + 1
 

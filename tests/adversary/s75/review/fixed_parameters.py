@@ -1,6 +1,6 @@
 """Is any parameter of the scene fixed rather than generic?  Each residual is a scene scalar alone: FALSE
 (each is a free parameter) — a `proved`/`checked` would mean the engine fixed it."""
-from stiefelsym import admissible, claim
+from stiefelsym import claim
 
 SZ = [(3, 2)]
 

@@ -1,6 +1,6 @@
 """Statements that something does not vanish, where the something is identically 0 on T*V (a constraint) but not
 off it: all FALSE.  A ball or float point slightly off T*V would "prove" them."""
-from stiefelsym import admissible, claim
+from stiefelsym import claim
 
 SZ = [(3, 2), (4, 4)]
 

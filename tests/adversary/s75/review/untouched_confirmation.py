@@ -1,7 +1,7 @@
 """Claims that a hard case does not reach (they read neither λ nor P), verified under --hard near-pole /
 large-momenta: the float run is redone at random points, and its confirmation mod p is the hard-case branch
 (which accepts any verdict but fails and error).  Docstrings state the truth."""
-from stiefelsym import admissible, claim
+from stiefelsym import claim
 
 SZ = [(3, 2)]
 
