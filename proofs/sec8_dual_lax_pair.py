@@ -881,7 +881,7 @@ def nontrivial_dual_integrals(n, r):
 
 
 @claim("dual-integrals-exceed-half-leaf", paper=("2r-integrals", "dimension"), kind="dim", sizes=admissible(n_max=5),
-       fails_at=lambda n, r: r == 1,
+       fails_at=lambda n, r: r <= 2,
        place="the remark after (5) §8 (“Since the number N is bigger than half of dimension …”)",
        erratum="""After the count N = (n − 1) + ⋯ + (n − r) = r(n − r) + r(r − 1)/2 of the nontrivial integrals of
        𝓛*_neum(λ), §8 says that N is bigger than half of the dimension 2l of (5) §6 of a generic symplectic leaf, and
@@ -893,7 +893,8 @@ def nontrivial_dual_integrals(n, r):
        every size of the tables' computation, column “N indep.” of tables.md).  Corrected: N ≥ l, with N > l
        exactly when r ≥ 2, and N > l + [r/2] (so some of the integrals are dependent) exactly when r ≥ 3.  The
        witness codes the premise N > l as a number: 1 where it holds, 0 where it fails; at r = 1 it computes 0,
-       where the printed statement gives 1.""",
+       where the printed statement gives 1; and the conclusion as the count N > l + [r/2] that shows it: 1 for
+       r ≥ 3, 0 for r ≤ 2, where the printed statement gives 1.""",
        statement=r"N=(n-1)+(n-2)+\dots+(n-r)=r(n-r)+\tfrac{r(r-1)}2>l,\qquad "
                  r"2l=2r(n-r)+\tfrac{r(r-1)}2-\left[\tfrac r2\right]")
 def dual_integrals_exceed_half_leaf(s):
@@ -905,7 +906,10 @@ def dual_integrals_exceed_half_leaf(s):
     return {"N = r(n − r) + r(r − 1)/2": Count(N, r * (n - r) + r * (r - 1) // 2,
                                                "nontrivial integrals of L*_neum(lambda), (n - 1) + ... + (n - r)"),
             "N > l": Count(int(2 * N > half_leaf_twice(n, r)), 1,
-                           "N is bigger than half of the dimension 2l of (5) §6")}
+                           "N is bigger than half of the dimension 2l of (5) §6"),
+            "some integrals dependent": Count(int(2 * N > half_leaf_twice(n, r) + 2 * (r // 2)), 1,
+                                              "the count shows some of the N integrals dependent: N exceeds "
+                                              "l + [r/2], the most independent commuting functions on (T*V)/SO(r)")}
 
 
 @dual_integrals_exceed_half_leaf.claim.correction("N ≥ l, with N > l exactly when r ≥ 2 (N = l = n − 1 at r = 1), and "

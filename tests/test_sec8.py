@@ -50,7 +50,7 @@ GEOMETRY_SIZES = {
     "vvb-left-factor-size": ([], []),                            # fails at every size: an erratum
     "spectral-curve-identity-size": ([(2, 1)], [(4, 2)]),        # holds as printed only when n = 2r
     "manakov-curve-identity-size": ([], []),                     # 2r < n: fails at every size, an erratum
-    "dual-integrals-exceed-half-leaf": ([(2, 2), (3, 2)], [(4, 3)]),  # fails as printed at r = 1 only
+    "dual-integrals-exceed-half-leaf": ([(3, 3), (4, 3)], [(5, 3)]),  # fails as printed at r <= 2
     "vv-printed-shape": ([(1, 1), (2, 2)], [(3, 3)]),            # holds as printed only when n = r
     "gen-chasles-momentum-ranges": ([(2, 2), (3, 3)], [(4, 4)]),  # holds as printed only when r = n
     "dual-lax-determines-the-point": ([(2, 1), (3, 2)], [(3, 3), (4, 2), (5, 2)]),
@@ -434,8 +434,8 @@ def test_the_spectral_curve_of_a_r_1_neumann_system_is_moser_s():
 
 
 @pytest.mark.parametrize("cid, fails, holds", [("vvb-left-factor-size", [(3, 2), (4, 4)], []),
-                                               ("dual-integrals-exceed-half-leaf", [(1, 1), (4, 1)],
-                                                [(2, 2), (3, 2), (5, 3)]),
+                                               ("dual-integrals-exceed-half-leaf", [(1, 1), (4, 1), (2, 2), (3, 2)],
+                                                [(3, 3), (5, 3)]),
                                                ("gen-chasles-momentum-ranges", [(3, 1), (4, 2)], [(3, 3)]),
                                                ("spectral-curve-identity-size", [(3, 1), (3, 2), (5, 2)],
                                                 [(2, 1), (4, 2)]),

@@ -151,7 +151,7 @@ REFERENCES_EXPLANATION = (
 
 SCOPE_EXPLANATION = (
     "A claim checks its statement as its display writes it.  Where the paper states a family for every power "
-    "(the integrals tr L(λ)^k, k = 1, …, n, and their Poisson brackets), the display names the powers checked, "
+    "(the integrals tr L(λ)ᵏ, k = 1, …, n, and their Poisson brackets), the display names the powers checked, "
     "k, m ≤ 3 for the brackets of most claims; the other powers are not checked (their conservation, not their "
     "involution, follows from the Lax equations proved here).  A statement for every n is checked at the sizes "
     "listed, or for every n and r at once where the dimension-free method proves it; the tables of dimensions "
