@@ -87,7 +87,9 @@ def main():
     W = _letters()
     print(f"size (n, r) = {SIZE}")
     # a point of the complex Stiefel variety's tangent bundle TW_{n,r} (realified), else of T*V
-    on, check = ("TW_{n,r}", f"{CHECK} (realified)") if "ReZ" in W else ("T*V", CHECK)
+    on, check = (("TW_{n,r}", f"{CHECK} (realified)") if "ReZ" in W else
+                 ("the phase space of the double system", CHECK) if "Xdot" in W else
+                 ("T*V × T*V", CHECK) if "Y" in W else ("T*V", CHECK))
     for name, ok in _on_tstar_v(W):
         print(f"on {on}: {name}: {ok}")
     R = residuals(W)
@@ -95,7 +97,8 @@ def main():
     print(f"printed formula: entry {ENTRY or ''} = {_at(R['printed'])} (the report states {STATED})")
     zero = all(sp.simplify(x) == 0 for x in (R["corrected"] if isinstance(R["corrected"], sp.MatrixBase)
                                               else [R["corrected"]]))
-    print(f"correction: {check} = {_show(R['corrected'])}" + (" (zero)" if zero else " (NOT zero)"))
+    print(f"correction: the residual of the corrected formula = {_show(R['corrected'])}"
+          + (" (zero)" if zero else " (NOT zero)"))
     ok = all(ok for _, ok in _on_tstar_v(W)) and _at(R["printed"]) == STATED and STATED != 0 and zero
     print("the printed formula fails at this point, and the correction holds there" if ok
           else "MISMATCH: this script does not confirm the report")
