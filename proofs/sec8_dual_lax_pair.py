@@ -896,11 +896,12 @@ def nontrivial_dual_integrals(n, r):
        where the printed statement gives 1; and the conclusion as the count N > l + [r/2] that shows it: 1 for
        r ≥ 3, 0 for r ≤ 2, where the printed statement gives 1.""",
        statement=r"N=(n-1)+(n-2)+\dots+(n-r)=r(n-r)+\tfrac{r(r-1)}2>l,\qquad "
-                 r"2l=2r(n-r)+\tfrac{r(r-1)}2-\left[\tfrac r2\right]")
+                 r"2l=2r(n-r)+\tfrac{r(r-1)}2-\left[\tfrac r2\right],\qquad "
+                 r"\text{so some of the }N\text{ integrals are dependent}")
 def dual_integrals_exceed_half_leaf(s):
     """§8 after (2r-integrals): the number N of nontrivial integrals given by 𝓛*_neum(λ) (n − l for each 𝓘_{2l},
     whose leading coefficient is a constant on V) is r(n − r) + r(r − 1)/2, and it is bigger than half of the
-    dimension (dimension) of a generic symplectic leaf."""
+    dimension (dimension) of a generic symplectic leaf, so some of the integrals are dependent."""
     n, r = s.n, s.r
     N = nontrivial_dual_integrals(n, r)
     return {"N = r(n − r) + r(r − 1)/2": Count(N, r * (n - r) + r * (r - 1) // 2,

@@ -597,8 +597,22 @@ def word_text(word: tuple[str, ...], rows: str = "n") -> str:
     return "".join(names[x] for x in word) or f"I_{rows}"
 
 
+class _Answer:
+    """What a linear search answers where it gives no formula (the fields of :class:`AffineSpace` and
+    :class:`CorrectionSpace`): the space is empty, certified, only where the sampled system is inconsistent
+    modulo EMPTY_PRIMES primes and consistent modulo none."""
+
+    particular: list[Fraction] | None
+    empty_primes: list[int]
+    consistent: int
+
+    @property
+    def certified_empty(self) -> bool:
+        return self.particular is None and not self.consistent and len(self.empty_primes) >= EMPTY_PRIMES
+
+
 @dataclass
-class AffineSpace:
+class AffineSpace(_Answer):
     """The solutions c of Σ cⱼ Tⱼ = R found at random points: a particular solution (None: there is
     none, certified by a rank, or, with ``unreconstructed``, its coefficients were beyond the primes tried) and a
     basis of the homogeneous solutions."""
@@ -616,10 +630,6 @@ class AffineSpace:
     empty_primes: list[int] = field(default_factory=list)
     consistent: int = 0
     refuted: int = 0
-
-    @property
-    def certified_empty(self) -> bool:
-        return self.particular is None and not self.consistent and len(self.empty_primes) >= EMPTY_PRIMES
 
     def certificate(self) -> str:
         if self.particular is None:
@@ -882,7 +892,7 @@ def _flat(v: Any) -> list[Any]:
 
 
 @dataclass
-class CorrectionSpace:
+class CorrectionSpace(_Answer):
     """The solutions of one correction ansatz at one size: an affine space modulo the combinations that
     vanish identically on the phase space (certified empty when the sampled system is inconsistent)."""
 
@@ -905,10 +915,6 @@ class CorrectionSpace:
     empty_primes: list[int] = field(default_factory=list)
     consistent: int = 0
     refuted: int = 0
-
-    @property
-    def certified_empty(self) -> bool:
-        return self.particular is None and not self.consistent and len(self.empty_primes) >= EMPTY_PRIMES
 
     @property
     def N(self) -> int:
