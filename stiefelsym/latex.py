@@ -122,11 +122,24 @@ def bind_relations(text: str) -> str:
     return _RELATION_CHAIN.sub(_bound, text)
 
 
+#: a code span of Markdown in plain words, `like this` (no backtick, newline or dollar inside)
+_CODE_SPAN = re.compile(r"`([^`\n$]+)`")
+
+
 def tex_escape(text: Any) -> str:
     """Plain text to LaTeX text mode: specials escaped, Unicode mapped to LaTeX; a short relation kept on one line
-    (:func:`bind_relations`)."""
+    (:func:`bind_relations`); a code span `like this` set in typewriter type (TeX would print its backticks as
+    opening quotes)."""
+    text = str(text)
+    if "`" in text and _CODE_SPAN.search(text):
+        parts = _CODE_SPAN.split(text)           # text, code, text, code, ..., text
+        return "".join(r"\texttt{" + _tex_escape(p) + "}" if i % 2 else _tex_escape(p) for i, p in enumerate(parts))
+    return _tex_escape(text)
+
+
+def _tex_escape(text: str) -> str:
     out = []
-    for kind, piece in _script_runs(bind_relations(str(text))):
+    for kind, piece in _script_runs(bind_relations(text)):
         if kind == "sup":
             out.append(r"\ensuremath{^{" + "".join(_SUP[c] for c in piece) + "}}")
         elif kind == "sub":

@@ -229,3 +229,11 @@ def test_tex_escape_stays_inside_the_derivation_vocabulary():
     assert L._vocabulary_ok(tex, L.DERIVATION_COMMANDS, L.DERIVATION_ENVIRONMENTS,
                             L._MATH_SYMBOLS_ESCAPED | L._DERIVATION_SYMBOLS), tex
     assert tex_balanced(r"\begin{itemize}\item " + tex + r"\end{itemize}")
+
+
+def test_a_code_span_is_set_in_typewriter_type():
+    """`stiefelsym discover` in a claim's words printed its backticks as opening quotes in the PDF."""
+    from stiefelsym.latex import tex_escape
+    assert tex_escape("found by `stiefelsym discover` here") == r"found by \texttt{stiefelsym discover} here"
+    assert tex_escape("the term `a_1 & b`") == r"the term \texttt{a\_1 \& b}"
+    assert tex_escape("a lone ` backtick") == "a lone ` backtick"
