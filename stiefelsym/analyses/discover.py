@@ -161,7 +161,6 @@ class _Lift:
         self.m = 1
         self.vals: list[int] = []
         self.last: list[Fraction] | None = None
-        self.primes = 0
         #: reconstructions that verification refuted: the residues stay (they are right; the modulus was too
         #: small), and the answer must be another reconstruction, agreed on by two further moduli
         self.refuted: list[list[Fraction]] = []
@@ -173,12 +172,11 @@ class _Lift:
 
     def add(self, key: Any, vals: Sequence[int], prime: int) -> list[Fraction] | None:
         if key != self.key or len(vals) != len(self.vals):
-            self.key, self.m, self.vals, self.last, self.primes = key, 1, [0] * len(vals), None, 0
+            self.key, self.m, self.vals, self.last = key, 1, [0] * len(vals), None
             self.refuted = []
         inv = pow(self.m % prime, -1, prime)
         self.vals = [a + self.m * (((b - a) * inv) % prime) for a, b in zip(self.vals, vals)]
         self.m *= prime
-        self.primes += 1
         got = [_rational(x, self.m) if x else Fraction(0) for x in self.vals]
         rec = None if any(q is None for q in got) else [q for q in got if q is not None]
         stable = rec is not None and rec == self.last and rec not in self.refuted
@@ -613,9 +611,9 @@ class _Answer:
 
 @dataclass
 class AffineSpace(_Answer):
-    """The solutions c of Σ cⱼ Tⱼ = R found at random points: a particular solution (None: there is
-    none, certified by a rank, or, with ``unreconstructed``, its coefficients were beyond the primes tried) and a
-    basis of the homogeneous solutions."""
+    """The solutions c of Σ cⱼ Tⱼ = R found at random points: a particular solution (None: there is none, certified
+    by ranks modulo EMPTY_PRIMES primes, or none was found: see :func:`no_formula_text`) and a basis of the
+    homogeneous solutions."""
 
     names: list[str]
     particular: list[Fraction] | None
@@ -1158,10 +1156,12 @@ def correction_space(ansatz: CorrectionAnsatz, size: Size | None = None, *, seed
             slot = combination(terms, z0)
 
             def vanishes(s, slot=slot):
-                return {"the combination": _sum_values(_flat(slot(s, ansatz.point(s))))}
+                return {f"the combination, entry {i + 1}": v for i, v in enumerate(_flat(slot(s, ansatz.point(s))))}
             v = run_one(claim, size, first, seed, func=vanishes).verdict
-            if v == "fails":
+            if v not in ("proved", "checked"):
+                # refuted ("fails"), or not shown to vanish: containment is not read from it
                 out["a combination said to vanish on the phase space"] = v
+                break
         return out
 
     space = CorrectionSpace(ansatz, size, None, [], 0, 0, 0, 0, seed)
@@ -1200,7 +1200,7 @@ def correction_space(ansatz: CorrectionAnsatz, size: Size | None = None, *, seed
         break
     if not tried:
         raise ValueError(f"{ansatz.claim}: the ansatz cannot be evaluated modulo any of the primes tried")
-    if space.particular is not None:
+    if space.particular is not None and "a combination said to vanish on the phase space" not in space.verdicts:
         # every element of the span is verified: a formula in it holds; the ranks give the span's dimension
         span = space.basis + zero_basis
         for name, coeffs in (("registered", ansatz.registered), ("printed", ansatz.printed)):
@@ -1214,11 +1214,6 @@ def correction_space(ansatz: CorrectionAnsatz, size: Size | None = None, *, seed
             space.contains_registered = False
     space.seconds = time.perf_counter() - t0
     return space
-
-
-def _sum_values(values: list[Any]) -> Any:
-    """The entries of a value as one list of residuals (a block matrix's blocks; a matrix as it is)."""
-    return values[0] if len(values) == 1 else {f"e{i}": v for i, v in enumerate(values)}
 
 
 @dataclass(frozen=True)
