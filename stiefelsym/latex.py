@@ -547,8 +547,9 @@ def _fitted_display(body: str, pieces: list[str]) -> str:
 
 #: a script in ASCII notation in plain words: ^{...} or _{...} (one level of nested braces), ^ and digits
 #: (an optional minus), ^⊥, or _ and one letter or digit that no letter or digit follows (I_n, F_Ω; not
-#: the underscore inside a name such as N0_XP2)
-_ASCII_SCRIPT = re.compile(r"(\^|_)(\{(?:[^{}]|\{[^{}]*\})*\}|-?\d+(?![^\W_])|⊥|[^\W_](?![^\W_]))")
+#: the underscore inside a name such as N0_XP2), or an integer or one letter in parentheses, whose
+#: parentheses are then the script's braces ((μI_n - A)^(-1), A^(k))
+_ASCII_SCRIPT = re.compile(r"(\^|_)(\{(?:[^{}]|\{[^{}]*\})*\}|\(-?(?:\d+|[^\W\d_])\)|-?\d+(?![^\W_])|⊥|[^\W_](?![^\W_]))")
 
 
 _UNICODE_SUB = dict(zip("0123456789+-−=()aehijklmnoprstuvx", "₀₁₂₃₄₅₆₇₈₉₊₋₋₌₍₎ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ"))
@@ -610,7 +611,7 @@ def _unicode_scripts(text: str) -> str:
     def one(m: re.Match) -> str:
         if m.start() == 0 or text[m.start() - 1] == " ":
             return m.group(0)                 # a script needs a base before it
-        body = m.group(2)[1:-1] if m.group(2).startswith("{") else m.group(2)
+        body = m.group(2)[1:-1] if m.group(2)[0] in "{(" else m.group(2)
         table = _UNICODE_SUP if m.group(1) == "^" else _UNICODE_SUB
         if body and all(c in table for c in body):
             return "".join(table[c] for c in body)
@@ -644,7 +645,7 @@ def _ascii_scripts(text: str) -> str:
         if m.start() == 0 or text[m.start() - 1] == " ":
             continue                      # a script needs a base before it
         body = m.group(2)
-        if body.startswith("{"):
+        if body[0] in "{(":
             body = body[1:-1]
         body = body.replace("-", "−")     # a script is mathematics: n-r, -1 with minus signs
         out.append(tex_escape(text[at:m.start()]))

@@ -95,6 +95,20 @@ def test_the_registered_words_of_a_correction_set_their_scripts():
     assert r"N0\_XP2" in tex and "\\^{}" not in tex
 
 
+def test_a_power_in_parentheses_and_the_powers_in_a_check_name_are_scripts():
+    """(μI_n − A)^(-1) in a certificate and tr(μ + λA)^3 in the title of a free derivation are set as
+    superscripts in the PDF (⁻¹ and ³ in Markdown), not with a literal caret; a caret before a group of
+    several letters in parentheses stays as written."""
+    from stiefelsym.latex import tex_words, unicode_words
+    from stiefelsym.methods.dimension_free import entry_title
+    tex = tex_words("(μ I_n - A)^(-1) X, A^(k)")
+    assert tex.count(r"\ensuremath{^{") == 2 and "\\^{}" not in tex
+    assert unicode_words("(μ I_n - A)^(-1)") == "(μ Iₙ - A)⁻¹"
+    title = entry_title("{1/2<mu, AA mu>, tr(mu + lambda A)^3} (+)")
+    assert r"\ensuremath{^{3}}" in title and "\\^{}" not in title
+    assert "\\^{}" in tex_words("g^(ab)")
+
+
 def test_the_registered_words_set_a_spaced_inequality_as_one():
     """n <= 2r + 2 in the words of a correction or of what is wrong is n ≤ 2r + 2 in the PDF; a bracket
     <a, b> (no = after <) and <= inside a word stay as they are."""

@@ -38,7 +38,7 @@ from stiefelsym.free.algebra import REFUSED, OperatorLetter, recording, refusals
 from stiefelsym.free.certificates import CertificateWriter
 from stiefelsym.free.columns import COMPLETE
 from stiefelsym.free.rewriting import latex_text
-from stiefelsym.latex import tex_text, unicode_name
+from stiefelsym.latex import tex_words, unicode_name
 from stiefelsym.ir import GraphUnavailable, SizeFamily, TraceRefused
 from stiefelsym.methods.families import size_families
 
@@ -291,7 +291,7 @@ def run_free_on(claim: Claim, func: Callable, family: SizeFamily | None, alone: 
 @functools.lru_cache(maxsize=4096)
 def entry_title(pos: str) -> str:
     """The title of a residual entry's derivation, in LaTeX (a function of the position's text)."""
-    return tex_text(unicode_name(pos))
+    return tex_words(unicode_name(pos))
 
 
 def family_sizes(claim: Claim, family: SizeFamily | None) -> list[Size]:
