@@ -107,6 +107,7 @@ def test_a_power_in_parentheses_and_the_powers_in_a_check_name_are_scripts():
     title = entry_title("{1/2<mu, AA mu>, tr(mu + lambda A)^3} (+)")
     assert r"\ensuremath{^{3}}" in title and "\\^{}" not in title
     assert "\\^{}" in tex_words("g^(ab)")
+    assert tex_words("ξ_(m)^{2k}").startswith(r"\ensuremath{\xi}\_(m)")     # an index in parentheses stays one
 
 
 def test_the_registered_words_set_a_spaced_inequality_as_one():
