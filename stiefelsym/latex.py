@@ -576,6 +576,8 @@ _MATH_IDIOMS = (
     # a size: r x r, 2r x 2r, n x r, (n + r) x 2r
     (re.compile(r"(\b\d*[nrkm]\b|\b\d+\b|\)) x (?=\(|\d*[nrkm]\b|\d+\b)"), lambda m: m.group(1) + " × "),
     (re.compile(r"\b([XPYQ])0\b"), lambda m: m.group(1) + "₀"),
+    # a second derivative in Leibniz's notation: d^2X/dt^2, d^2(X^T P)
+    (re.compile(r"(?<![^\W\d_])d\^(\d)(?=[^\W\d_]|\()"), lambda m: "d^{" + m.group(1) + "}"),
 )
 
 

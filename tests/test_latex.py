@@ -107,6 +107,8 @@ def test_a_power_in_parentheses_and_the_powers_in_a_check_name_are_scripts():
     title = entry_title("{1/2<mu, AA mu>, tr(mu + lambda A)^3} (+)")
     assert r"\ensuremath{^{3}}" in title and "\\^{}" not in title
     assert "\\^{}" in tex_words("g^(ab)")
+    assert unicode_words("d^2X/dt^2, d^2(X^T P)") == "d²X/dt², d²(Xᵀ P)"     # Leibniz's second derivative
+    assert "\\^{}" not in entry_title("d^2X/dt^2 - F")
     assert tex_words("ξ_(m)^{2k}").startswith(r"\ensuremath{\xi}\_(m)")     # an index in parentheses stays one
 
 
