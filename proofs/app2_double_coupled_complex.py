@@ -1,6 +1,8 @@
 """Appendix 2. Double, coupled and complex Neumann systems: the Lagrangian systems, their flows, conserved quantities and Lax pairs."""
 from __future__ import annotations
 
+from fractions import Fraction
+
 from stiefelsym import Count, admissible, block, claim, comm, twisted  # noqa: F401
 from stiefelsym.systems import (complex_coordinates, complex_point, coupled_point, ctranspose,
                                 derivative, double_point, euler_lagrange, hermitian_entries,
@@ -164,7 +166,7 @@ def double_neumann_dual_lax_extends_la3_corrected(s):
                  r"(X,Y)\mapsto(XR^T,YR^{-1})\ \text{preserves (D-Lag), (D0)},\ "
                  r"\tfrac{d}{dt}\left(X^T\dot Y-\dot X^TY\right)=0")
 def double_neumann_momentum(s):
-    """The matrix XᵀẎ − YᵀẊ is conserved along (D-eq); the action (X, Y) ↦ (XRᵀ, YR⁻¹), R ∈ GL(r), leaves (D-Lag) and (D0) invariant, its Noether momentum XᵀẎ − ẊᵀY (of which the printed integral is the symmetric part, as XᵀẎ + ẊᵀY = 0) is conserved too."""
+    """The matrix XᵀẎ − YᵀẊ is conserved along (D-eq); the action (X, Y) ↦ (XRᵀ, YR⁻¹), R ∈ GL(r), leaves (D-Lag) and (D0) invariant, and its Noether momentum N = XᵀẎ − ẊᵀY is conserved too (claim double-neumann-printed-integral compares the two)."""
     z = double_point(s)
     flow = flow_double(s, z)
     xi = s.generic("xi", "r", "r")
@@ -178,13 +180,34 @@ def double_neumann_momentum(s):
     }
 
 
+@claim("double-neumann-printed-integral", paper=("dual-D", "D0", "D-eq", "NE_XP"), kind="id",
+       statement=r"X^T\dot Y-Y^T\dot X=\tfrac12\big(N+N^T\big),\ N=X^T\dot Y-\dot X^TY;\quad "
+                 r"X=Y,\ \dot X=\dot Y=P:\ X^T\dot Y-Y^T\dot X=0,\ N=\Psi=X^TP-P^TX")
+def double_neumann_printed_integral(s):
+    """The matrix integral XᵀẎ − YᵀẊ printed after Theorem 10.1 is the symmetric part of the GL(r)-momentum N = XᵀẎ − ẊᵀY (on the phase space XᵀẎ + ẊᵀY = 0, the derivative of (D0)), and on the solutions X = Y, Ẋ = Ẏ = P, which the paper identifies with the Neumann system (NE_XP), it vanishes while N is Ψ = XᵀP − PᵀX, the momentum of that system's SO(r)-symmetry: the printed matrix is read as a slip for N (see the typographical slips)."""
+    def printed(w):
+        return w["X"].T @ w["Ydot"] - w["Y"].T @ w["Xdot"]
+
+    def noether(w):
+        return w["X"].T @ w["Ydot"] - w["Xdot"].T @ w["Y"]
+
+    z = double_point(s)
+    neumann = {"X": s.X, "Y": s.X, "Xdot": s.P, "Ydot": s.P}
+    return {"(X^T Y' - Y^T X') - (N + N^T)/2": printed(z) - (noether(z) + noether(z).T) * Fraction(1, 2),
+            "X^T Y' - Y^T X' at X = Y, X' = Y' = P": printed(neumann),
+            "N - Psi at X = Y, X' = Y' = P": noether(neumann) - s.Psi}
+
+
 @claim("double-neumann-symmetry-group", paper=("dual-D", "D-eq"), kind="dim", exact_max_n=7,
        sizes=admissible(n_max=5), fails_at=lambda n, r: r != n,
        place="the paragraph after Theorem 10.1",
        erratum="""After Theorem 10.1 the matrix integral XᵀẎ − YᵀẊ is said to come from the GL(n, ℝ)-symmetry
        (X, Y, Ẋ, Ẏ) ↦ (XRᵀ, YR^{-1}, ẊRᵀ, ẎR^{-1}), R ∈ GL(n, ℝ); R multiplies the n × r matrices X, Y on the
        right, so it is r × r, and the integral is r × r too.  Corrected: R ∈ GL(r, ℝ) (claim
-       double-neumann-momentum proves the integral conserved and the action a symmetry).""",
+       double-neumann-momentum proves the integral conserved and the action a symmetry).  The same sentence
+       names XᵀẎ − YᵀẊ as this symmetry's integral: it is conserved, but it is only the symmetric part of the
+       symmetry's momentum XᵀẎ − ẊᵀY and vanishes on the solutions X = Y, Ẋ = Ẏ, where the momentum is Ψ
+       (claim double-neumann-momentum); it is listed among the typographical slips.""",
        statement=r"(X,Y,\dot X,\dot Y)\mapsto(XR^T,YR^{-1},\dot XR^T,\dot YR^{-1}),\ R\in GL(n,\mathbb R):\ "
                  r"\text{size of }R=\text{number of columns of }X")
 def double_neumann_symmetry_group(s):

@@ -23,7 +23,7 @@ def entries(M, m, k):
        with (1) §1 at r = n in the same way: §2 says that the left SO(n)-action on V_{n,r} is transitive and,
        after (2) §2, identifies V_{n,r} with SO(n)/SO(n − r) (as the abstract does); that holds for r < n, while
        at r = n the orbit of X₀ = I_n under SO(n) is SO(n), the component det X = 1 of V_{n,n} = O(n); and §7, in
-       “The special case r − 1”, writes SO(n) = V_{n,n} again.  The check reads “V_{n,n} is SO(n)” as det X = 1 on
+       “The special case r − 1” (sic: r = n − 1), writes SO(n) = V_{n,n} again.  The check reads “V_{n,n} is SO(n)” as det X = 1 on
        V_{n,n}: its witness, a point of det X = −1 beside X = I_n (det X = 1), shows that V_{n,n} has points in both
        components of O(n), so it is not connected and not diffeomorphic to the connected SO(n).""",
        statement=r"V_{n,n}\cong SO(n):\quad \det X=1\ \text{for every }X\in V_{n,n}")

@@ -546,10 +546,10 @@ def _fitted_display(body: str, pieces: list[str]) -> str:
 
 
 #: a script in ASCII notation in plain words: ^{...} or _{...} (one level of nested braces), ^ and digits
-#: (an optional minus), ^⊥, or _ and one letter or digit that no letter or digit follows (I_n, F_Ω; not
+#: (an optional minus), ^⊥, ^∞, or _ and one letter or digit that no letter or digit follows (I_n, F_Ω; not
 #: the underscore inside a name such as N0_XP2), or ^ and an integer or one letter in parentheses, whose
 #: parentheses are then the script's braces ((μI_n - A)^(-1), A^(k); a subscript _(m) keeps them)
-_ASCII_SCRIPT = re.compile(r"(\^|_)(\{(?:[^{}]|\{[^{}]*\})*\}|(?<=\^)\(-?(?:\d+|[^\W\d_])\)|-?\d+(?![^\W_])|⊥|[^\W_](?![^\W_]))")
+_ASCII_SCRIPT = re.compile(r"(\^|_)(\{(?:[^{}]|\{[^{}]*\})*\}|(?<=\^)\(-?(?:\d+|[^\W\d_])\)|-?\d+(?![^\W_])|⊥|∞|[^\W_](?![^\W_]))")
 
 
 _UNICODE_SUB = dict(zip("0123456789+-−=()aehijklmnoprstuvx", "₀₁₂₃₄₅₆₇₈₉₊₋₋₌₍₎ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ"))

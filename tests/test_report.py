@@ -283,7 +283,9 @@ def test_latex_report_of_real_catalog_runs_compiles(tmp_path):
     assert any(r.derivation for r in results) and any(r.verdict == "fails" for r in results)
     # the errata's witnesses to check by hand: a double-system point (X, Y, Ẋ, Ẏ) in display math
     assert attach_small_witnesses(results, {i: cat.get(i) for i in ids}) >= 1
-    (tmp_path / "verification.tex").write_text(render_latex(results, {"seed": 0}), encoding="utf-8")
+    # with the list of the paper's typographical slips, as a report of the whole catalog has it
+    (tmp_path / "verification.tex").write_text(render_latex(results, {"seed": 0, "whole_catalog": True}),
+                                               encoding="utf-8")
     (tmp_path / "runs.tex").write_text(render_latex(results, {"seed": 0}, detail=True), encoding="utf-8")
     for name in ("verification", "runs"):
         for _ in range(2):
@@ -1001,3 +1003,34 @@ def test_breaking_long_lines_makes_no_empty_line_and_no_control_space():
     assert short_lines(blanks) == ""
     words = " ".join(f"w{i}" for i in range(20000))
     assert max(len(x) for x in short_lines(words).split("\n")) <= TEX_LINE_MAX
+
+
+# --------------------------------------------------------------------------- typographical slips
+
+def test_the_typographical_slips_are_listed_in_a_report_of_the_whole_catalog_only():
+    """A report of a run of the whole catalog lists the paper's typographical slips after the errata (both
+    documents, the headline counting them); a report of some claims, of a claims file, or the per-run
+    document does not."""
+    from stiefelsym.proofs.slips import SLIPS
+    r = result("prep", 3, 1, "exact", "proved")
+    md = render_markdown([r], {"whole_catalog": True})
+    assert "## Typographical slips" in md and f"lists {len(SLIPS)} more slips" in md
+    assert md.index("## Errata") < md.index("## Typographical slips") < md.index("## Summary")
+    # the slip of (5) §8's neighbour, a dropped "= n", with its place and the claim that computes it
+    assert "(source line 1432).** Printed: “Therefore, dim ker Λ" in md and "computed by pencil-rank-a1" in md
+    tex = render_latex([r], {"whole_catalog": True})
+    assert r"\section*{Typographical slips}" in tex and "Printed:" in tex
+    for meta in ({}, {"whole_catalog": True, "claims_files": ["mine.py"]}):
+        assert "Typographical slips" not in render_markdown([r], meta) + render_latex([r], meta)
+    assert "Typographical slips" not in render_latex([r], {"whole_catalog": True}, detail=True)
+
+
+def test_every_slip_names_a_section_and_claims_of_the_catalog():
+    from stiefelsym.claims import load_catalog
+    from stiefelsym.proofs import SECTION_TITLES
+    from stiefelsym.proofs.slips import SLIPS
+    ids = set(load_catalog().ids())
+    for slip in SLIPS:
+        assert slip.section in SECTION_TITLES and slip.lines and slip.printed and slip.meant and slip.why
+        assert set(slip.claims) <= ids, slip
+    assert len({(s.lines, s.printed) for s in SLIPS}) == len(SLIPS)

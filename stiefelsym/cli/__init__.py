@@ -977,6 +977,8 @@ def _verify(out: Any, ids: tuple[str, ...], sizes: tuple[Size, ...], methods: tu
             "sizes": None if max_n is not None else ([f"{s.n},{s.r}" for s in sizes] or None),
             "claims_file": claims_files[0] if claims_files else None,
             "claims_files": list(claims_files),
+            # a run of every claim of the catalog (its report lists the paper's typographical slips too)
+            "whole_catalog": not ids and not claims_files,
             "timeout": timeout, "memory_gib": memory, "jobs": jobs, "budget": budget,
             "scheduler": scheduler,
             "date": started.strftime("%Y-%m-%d %H:%M:%S UTC"),
