@@ -793,6 +793,12 @@ def _diff_at(a: Expr, b: Expr, deep: bool, memo: dict) -> list[tuple]:
                     and out[0][1].key in (kid.key, kid.kids[0].key if kid.kind == "post" else None)):
                 return [out[0][:3] + ((a, b),)]       # a letter in a short product: QΠ → YΠ, not Q → Y
             if len({(o[1].key, o[2].key) for o in out}) <= 1:      # one change (perhaps repeated)
+                if (len(changed) > 1 and out and max(a.size, b.size) <= 3 * SMALL
+                        and not _shown_in((out[0][3] or out[0][1:])[0], [a.kids[i] for i in changed])):
+                    # the same change made in several parts where a part does not print the changed
+                    # expression as it is (one node read as XᵀP and, transposed, as PᵀX in XᵀP + PᵀX):
+                    # the node is the change, so that every place shows
+                    return [(ctx, a, b, None)]
                 return out
             # parts moved (operands swapped: a new part is an old part), or every part changed: the
             # node is the change
@@ -829,6 +835,13 @@ def _diff_at(a: Expr, b: Expr, deep: bool, memo: dict) -> list[tuple]:
             term = add(*extra)
             return [(ctx, term, ZERO, None) if longer is ta else (ctx, ZERO, term, None)]
     return [(ctx, a, b, None)]
+
+
+def _shown_in(x: Expr, parts: Sequence[Expr]) -> bool:
+    """Whether every part prints the expression x as x prints (a change of x is then seen at each place)."""
+    pr = Printer(False, 4 * CAP)
+    shown = pr(x)
+    return all(shown in pr(p) for p in parts)
 
 
 def _terms(e: Expr) -> list[tuple[int, Expr]]:
