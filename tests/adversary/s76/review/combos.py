@@ -85,3 +85,17 @@ def mixed_moving(s):
     a = s.d(lambda t: t.d(H_weird, {"P": t.X}), {"X": U})
     b = s.d(lambda t: t.d(H_weird, {"X": U}), {"P": s.X})
     return {"mixed": a - b - s.d(H_weird, {"P": U})}
+
+
+@claim("s76-mutant92", kind="id", sizes=SZ)
+def mutant92(s):
+    """FALSE (H_weird is not O(r)-invariant): the mutant #92 of s76-dirac-tangent, d(XᵀX + PᵀX)/dt = 0."""
+    f = s.dirac_flow(H_weird)
+    return {"sym": s.d(lambda t: t.X.T @ t.X + t.P.T @ t.X, f)}
+
+
+@claim("s76-psi-dot", kind="id", sizes=SZ)
+def psi_dot(s):
+    """FALSE (H_weird is not O(r)-invariant): dΨ/dt = 0 along its Dirac flow."""
+    f = s.dirac_flow(H_weird)
+    return {"dPsi": s.d(lambda t: t.Psi, f)}
