@@ -77,7 +77,7 @@ def coupled_antidiagonal(s):
 
 
 @claim("n76-j-along-non-manakov", paper=("Chasles-Manakov",), kind="pb", sizes=TWO_R_LE_N,
-       fails_at=lambda n, r: n >= 3, erratum="false twin (s76 hidden round)")
+       fails_at=lambda n, r: n >= 3 and n != 2 * r, erratum="false twin (s76 hidden round)")
 def j_along_non_manakov(s):
     """Twin of h76-manakov-ainv-shares-j: the operator ξ ↦ AξA (A in place of A⁻¹, not a Manakov operator)."""
     r = int(s.r)
