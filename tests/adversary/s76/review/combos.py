@@ -1,6 +1,6 @@
 """Combinations: a derivative along a user flow of functions with a moving resolvent, blocks, slices,
 determinants and inverses; the Jacobian against the derivative; mixed second derivatives."""
-from stiefelsym import admissible, block, claim, det, elementary
+from stiefelsym import block, claim, det, elementary
 
 SZ = [(3, 2), (4, 2)]
 

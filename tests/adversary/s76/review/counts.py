@@ -1,5 +1,5 @@
 """Counts whose value is a scalar of the scene (not a plain int)."""
-from stiefelsym import Count, admissible, claim
+from stiefelsym import Count, claim
 
 
 @claim("s76-count-trxtx", kind="dim", sizes=[(3, 2)])

@@ -1,6 +1,6 @@
 """Inverse statements whose op scales by a parameter that vanishes for some admissible value
 (tr A, det A, a_1, kappa + 1/2, lambda, a scalar c, a_1 - a_2): op is then NOT invertible there."""
-from stiefelsym import Inverse, admissible, claim, det
+from stiefelsym import Inverse, claim, det
 
 SZ = [(3, 2)]
 

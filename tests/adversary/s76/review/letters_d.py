@@ -1,5 +1,5 @@
 """Derivatives along letters other than X and P: A, Y, Zc."""
-from stiefelsym import admissible, claim
+from stiefelsym import claim
 
 SZ = [(3, 2), (4, 4)]
 

@@ -1,5 +1,5 @@
 """Energy conservation of H along its own Dirac flow: every mutant of H that changes both uses alike is true."""
-from stiefelsym import admissible, claim
+from stiefelsym import claim
 
 
 def H(t):
