@@ -783,8 +783,8 @@ def _diff_at(a: Expr, b: Expr, deep: bool, memo: dict) -> list[tuple]:
     if a.kind == b.kind and a.kind not in ("atom", "num") and len(a.kids) == len(b.kids):
         if a.data == b.data:
             changed = [i for i, (x, y) in enumerate(zip(a.kids, b.kids)) if x.key != y.key]
-            for i in changed:
-                out += _diff(a.kids[i], b.kids[i], _where(a, i), deep, memo)
+            per = [(i, _diff(a.kids[i], b.kids[i], _where(a, i), deep, memo)) for i in changed]
+            out = [o for _, found in per for o in found]
             if a.kind == "post" and a.data == ("inv",) and len(out) == 1 and out[0][1:] == (a.kids[0], b.kids[0], None):
                 return [(ctx, a, b, None)]     # an inverse whose whole argument changed: (Iₙ − λA)⁻¹ → (λIₙ − A)⁻¹
             kid = a.kids[changed[0]] if changed else a
@@ -793,12 +793,17 @@ def _diff_at(a: Expr, b: Expr, deep: bool, memo: dict) -> list[tuple]:
                     and out[0][1].key in (kid.key, kid.kids[0].key if kid.kind == "post" else None)):
                 return [out[0][:3] + ((a, b),)]       # a letter in a short product: QΠ → YΠ, not Q → Y
             if len({(o[1].key, o[2].key) for o in out}) <= 1:      # one change (perhaps repeated)
-                if (len(changed) > 1 and out and max(a.size, b.size) <= 3 * SMALL
-                        and not _shown_in((out[0][3] or out[0][1:])[0], [a.kids[i] for i in changed])):
-                    # the same change made in several parts where a part does not print the changed
-                    # expression as it is (one node read as XᵀP and, transposed, as PᵀX in XᵀP + PᵀX):
-                    # the node is the change, so that every place shows
+                # the same change made in several parts, where a part does not print the changed expression
+                # as it is (one node read as XᵀP and, transposed, as PᵀX in XᵀP + PᵀX): the node is the
+                # change if it is small, else each such part is changed whole, so that every place shows
+                shown = (out[0][3] or out[0][1:])[0] if out else None
+                hidden = {i for i in changed if len(changed) > 1 and shown is not None
+                          and max(a.kids[i].size, b.kids[i].size) <= 3 * SMALL and not _shown_in(shown, [a.kids[i]])}
+                if hidden and max(a.size, b.size) <= 3 * SMALL:
                     return [(ctx, a, b, None)]
+                if hidden:
+                    out = [o for i, found in per
+                           for o in (found if i not in hidden else [(_where(a, i), a.kids[i], b.kids[i], None)])]
                 return out
             # parts moved (operands swapped: a new part is an old part), or every part changed: the
             # node is the change
@@ -838,10 +843,11 @@ def _diff_at(a: Expr, b: Expr, deep: bool, memo: dict) -> list[tuple]:
 
 
 def _shown_in(x: Expr, parts: Sequence[Expr]) -> bool:
-    """Whether every part prints the expression x as x prints (a change of x is then seen at each place)."""
+    """Whether every part prints the expression x as x prints (a change of x is then seen at each place); a
+    part the printer cuts short (…) is taken to show it."""
     pr = Printer(False, 4 * CAP)
     shown = pr(x)
-    return all(shown in pr(p) for p in parts)
+    return all(shown in t or "…" in t for t in map(pr, parts))
 
 
 def _terms(e: Expr) -> list[tuple[int, Expr]]:
