@@ -180,22 +180,14 @@ def double_neumann_momentum(s):
     }
 
 
-@claim("double-neumann-printed-integral", paper=("dual-D", "D0", "D-eq", "NE_XP"), kind="id",
-       statement=r"X^T\dot Y-Y^T\dot X=\tfrac12\big(N+N^T\big),\ N=X^T\dot Y-\dot X^TY;\quad "
-                 r"X=Y,\ \dot X=\dot Y=P:\ X^T\dot Y-Y^T\dot X=0,\ N=\Psi=X^TP-P^TX")
+@claim("double-neumann-printed-integral", paper=("dual-D", "D0", "D-eq"), kind="id",
+       statement=r"X^T\dot Y-Y^T\dot X=\tfrac12\big(N+N^T\big),\quad N=X^T\dot Y-\dot X^TY")
 def double_neumann_printed_integral(s):
-    """The matrix integral XᵀẎ − YᵀẊ printed after Theorem 10.1 is the symmetric part of the GL(r)-momentum N = XᵀẎ − ẊᵀY (on the phase space XᵀẎ + ẊᵀY = 0, the derivative of (D0)), and on the solutions X = Y, Ẋ = Ẏ = P, which the paper identifies with the Neumann system (NE_XP), it vanishes while N is Ψ = XᵀP − PᵀX, the momentum of that system's SO(r)-symmetry: the printed matrix is read as a slip for N (see the typographical slips)."""
-    def printed(w):
-        return w["X"].T @ w["Ydot"] - w["Y"].T @ w["Xdot"]
-
-    def noether(w):
-        return w["X"].T @ w["Ydot"] - w["Xdot"].T @ w["Y"]
-
+    """The matrix integral XᵀẎ − YᵀẊ printed after Theorem 10.1 is the symmetric part of the GL(r)-momentum N = XᵀẎ − ẊᵀY of the symmetry (X, Y) ↦ (XRᵀ, YR⁻¹) (on the phase space XᵀẎ + ẊᵀY = 0, the derivative of (D0)).  Its antisymmetric part is lost: on the solutions X = Y, Ẋ = Ẏ = P (claim double-neumann-diagonal: they are those of the Neumann system (NE_XP)), the printed matrix is XᵀP − XᵀP = 0, while N is XᵀP − PᵀX = Ψ, the momentum of that system's SO(r)-symmetry.  So the printed matrix is read as a slip for N (see the typographical slips)."""
     z = double_point(s)
-    neumann = {"X": s.X, "Y": s.X, "Xdot": s.P, "Ydot": s.P}
-    return {"(X^T Y' - Y^T X') - (N + N^T)/2": printed(z) - (noether(z) + noether(z).T) * Fraction(1, 2),
-            "X^T Y' - Y^T X' at X = Y, X' = Y' = P": printed(neumann),
-            "N - Psi at X = Y, X' = Y' = P": noether(neumann) - s.Psi}
+    printed = z["X"].T @ z["Ydot"] - z["Y"].T @ z["Xdot"]
+    noether = z["X"].T @ z["Ydot"] - z["Xdot"].T @ z["Y"]
+    return {"(X^T Y' - Y^T X') - (N + N^T)/2": printed - (noether + noether.T) * Fraction(1, 2)}
 
 
 @claim("double-neumann-symmetry-group", paper=("dual-D", "D-eq"), kind="dim", exact_max_n=7,
@@ -207,7 +199,7 @@ def double_neumann_printed_integral(s):
        double-neumann-momentum proves the integral conserved and the action a symmetry).  The same sentence
        names XᵀẎ − YᵀẊ as this symmetry's integral: it is conserved, but it is only the symmetric part of the
        symmetry's momentum XᵀẎ − ẊᵀY and vanishes on the solutions X = Y, Ẋ = Ẏ, where the momentum is Ψ
-       (claim double-neumann-momentum); it is listed among the typographical slips.""",
+       (claim double-neumann-printed-integral); it is listed among the typographical slips.""",
        statement=r"(X,Y,\dot X,\dot Y)\mapsto(XR^T,YR^{-1},\dot XR^T,\dot YR^{-1}),\ R\in GL(n,\mathbb R):\ "
                  r"\text{size of }R=\text{number of columns of }X")
 def double_neumann_symmetry_group(s):

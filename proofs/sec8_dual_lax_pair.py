@@ -884,7 +884,8 @@ def nontrivial_dual_integrals(n, r):
        fails_at=lambda n, r: r <= 2,
        place="the remark after (5) §8 (“Since the number N is bigger than half of dimension …”)",
        erratum="""After the count N = (n − 1) + ⋯ + (n − r) = r(n − r) + r(r − 1)/2 of the nontrivial integrals of
-       𝓛*_neum(λ), §8 says that N is bigger than half of the dimension 2l of (5) §6 of a generic symplectic leaf, and
+       𝓛*_neum(λ), §8 says that N is bigger than half of the dimension 2l of (5) §6 of a generic symplectic leaf (the l of
+       §6, not the orbit's of Lemma 2.5), and
        concludes that some of the integrals are dependent.  2N − 2l = r(r − 1)/2 + [r/2], which is 0 at r = 1: there
        N = l = n − 1, not bigger, and the argument for a dependence does not apply.  Nor does it at r = 2: commuting
        functions on (T*V)/SO(r) number at most l + [r/2] (half the leaf and its [r/2] Casimirs), and N − l − [r/2] =

@@ -30,15 +30,15 @@ class Slip:
 
 
 SLIPS: tuple[Slip, ...] = (
-    Slip("2", "the basis vectors before (1) §2", "193", "E_1 = (1,0,,0,…,0)ᵀ", "E_1 = (1,0,0,…,0)ᵀ",
+    Slip("2", "the basis vectors (1) §2", "193", "E_1 = (1,0,,0,…,0)ᵀ", "E_1 = (1,0,0,…,0)ᵀ",
          "a doubled comma; E_2 and E_n on the same line have none."),
     Slip("3", "the paragraph on the normal metric", "638", "“induced by the negative Killing form [Be]) on "
          "SO(n)/SO(n − r)”", "no closing parenthesis", "none is opened."),
     Slip("3", "the paragraph after the Lagrangian L_A", "731", "M_{n×r}(ℝ)", "M_{n,r}(ℝ)",
          "the notation of the rest of the paper, six lines later included."),
     Slip("3", "the remark on the metric ds²_A at r = 1 and r = n", "768", "“while for r it is a right-invariant Manakov rigid body "
-         "metric on SO(n)”", "for r = n", "V_{n,r} is the group O(n) only at r = n; the Remark of §3 says "
-         "“for r = n” of the same passage to SO(n)."),
+         "metric on SO(n)”", "for r = n", "V_{n,r} is the group O(n) only at r = n; the Remark of §3 (source line "
+         "627) says “for r = n” of the same passage to the group SO(n)."),
     Slip("4", "ten times, in §4 and §6", "813, 956, 1275, 1277, 1281, 1502, 1534, 1570", "Φ*(C^∞(so(n)) + Ψ*(C^∞(so(r))", "Φ*(C^∞(so(n))) + Ψ*(C^∞(so(r)))",
          "a closing parenthesis is missing in each term; the paper closes it in Φ*(C^∞(𝔤*)) and, once, in "
          "Ψ*(C^∞(so(r)))."),
@@ -54,6 +54,8 @@ SLIPS: tuple[Slip, ...] = (
     Slip("6", "the paragraph of (8) §6", "1296", "“see also Section 7”",
          "Appendix 1 (§9)", "§7 does not mention the Clebsch–Perelomov–Bogoyavlenski systems; §9 treats them "
          "in its paragraph on the symmetric Clebsch–Perelomov–Bogoyavlenski rigid bodies.", probable=True),
+    Slip("6", "the proof of Lemma 6.2", "1355", "[ξ_1, h_1] = 0,, ξ_2", "[ξ_1, h_1] = 0, ξ_2",
+         "a doubled comma."),
     Slip("6", "(11) §6 [A2], in the proof of Lemma 6.3", "1396–1398",
          "“has dimension n,” then the display dim{(ξ + η ∈ ker Λ₁(x) | Λ_{1,−1}(ξ + η, ker Λ₁(x))|_x = 0}.",
          "dim{ξ + η ∈ ker Λ₁(x) | … = 0} = n", "the display states no value (the “= n” stays in the "
@@ -73,12 +75,14 @@ SLIPS: tuple[Slip, ...] = (
     Slip("6", "the paragraph after the proof of Lemma 6.3", "1484",
          "“By modifying the proof of Lemma 6.2 and Bolsinov's Theorem 1.5”", "Lemma 6.3",
          "the completeness on Θ(T*V) is what Lemma 6.3 proves, through (A1) and (A2); Lemma 6.2 computes the "
-         "dimension of the leaves.", probable=True),
+         "dimension of the leaves (the sentence may also mean the kernel computation in the proof of Lemma 6.2).",
+         probable=True),
     Slip("6", "a paragraph near the end of §6", "1563", "“differs from those described in Theorem 2.6”",
          "a statement that exists, most likely the set 𝔄 of (20) §2",
          "§2 has no Theorem 2.6 (it has Propositions 2.1, 2.2 and Lemmas 2.3–2.5); §2 itself compares 𝔄 of "
          "(20) §2 with Theorem 6.4 “below”."),
-    Slip("6", "the same paragraph", "1571", "the Neumann flows ({(3) are", "(3), with no brace left open",
+    Slip("6", "the same paragraph", "1571", "in the source, “the Neumann flows ({\\ref{No}) are”, which prints (3)",
+         "the brace closed",
          "a brace of the source opens a group that stays open to the end of the document (nothing shows in "
          "print)."),
     Slip("7", "the first paragraph of §7", "1613", "“the right SO(r)-action described in Section 1”",
@@ -90,7 +94,7 @@ SLIPS: tuple[Slip, ...] = (
     Slip("7", "the proof of Theorem 7.1", "1672", "“by modifying the proof of Lemma 6.2 one can prove conditions "
          "(A1) and (A2) for x = h + v with h_1 = 0”", "Lemma 6.3",
          "(A1) and (A2) are stated and proved in the proof of Lemma 6.3; Lemma 6.2 has no such conditions (the "
-         "same sentence rightly uses Lemma 6.2 for dim ker Λ₁).", probable=True),
+         "sentence before it rightly uses Lemma 6.2 for dim ker Λ₁).", probable=True),
     Slip("7", "the paragraph “The special case r − 1” and its sequels in §7 and §9", "1681, 1699, 2187",
          "“The special case r − 1”, “for r − 1 the second term … vanishes”, “the case r − 1”", "r = n − 1",
          "the paragraph treats V_{n,n−1} and G_{n,n−1}, the second term of (1) §7 vanishes because every ė_i "
@@ -102,27 +106,29 @@ SLIPS: tuple[Slip, ...] = (
     Slip("8", "the first paragraph of §8 and the paragraph after (5) §8", "1735, 1844, 1845",
          "V(r,n), T*V(r,n)", "V_{n,r}, T*V_{n,r}",
          "the only places with this notation, whose indices are in the other order."),
-    Slip("8", "the paragraph before (4) §8", "1780",
+    Slip("8", "the Remark after Theorem 8.1", "1780",
          "“For r the considered Neumann flows become geodesic flows of bi-invariant metrics on SO(n)”",
          "For r = n", "the next sentence speaks of the 2n × 2n dual Lax matrix, which is 2r × 2r at r = n.",
          claims=("dual-invariants-manakov-r-n",)),
-    Slip("8", "the sentence before (5) §8", "1799–1800", "the wedge products e_{j_1} ∧ ⋯ ∧ e_{j_j}",
+    Slip("8", "the display before (4) §8", "1796", "… + a^{2r−1}𝓘_{2r}(λ)", "a^{2r−1}(λ)𝓘_{2r}(λ)",
+         "every other term of the display writes the argument of a(λ)."),
+    Slip("8", "the sentence before (4) §8", "1799–1800", "the wedge products e_{j_1} ∧ ⋯ ∧ e_{j_j}",
          "e_{j_1} ∧ ⋯ ∧ e_{j_l}", "𝓘₂ₗ involves l-fold products; (5) §8 writes e_{j_1} ∧ ⋯ ∧ e_{j_l} with "
          "J_l = {j_1, …, j_l}."),
     Slip("8", "the paragraphs after (5) §8", "1846, 1856–1857",
          "“the Lax matrix 𝓛*_neum(λ) in (3)”; “the “big” Lax matrix 𝓛_neum(λ) in (7)”",
          "the display (2) §8; (8) §5", "(3) §8 holds only the matrices 𝓐*_neum; (7) §5 is the Lax equation, "
-         "its matrix 𝓛_neum is (8) §5, which §5 cites rightly.", probable=True),
+         "its matrix 𝓛_neum is (8) §5, which the first paragraph of §6 cites rightly.", probable=True),
     Slip("8", "the sentence after the Plücker coordinates, before Proposition 8.4", "1885",
          "I = {i_1, …, i_k} ⊂ {1, …, n}, 1 ≤ i_1 < ⋯ < i_k ≤ n", "⊂ {1, …, m}, i_k ≤ m",
          "the k-planes are in ℝ^m(x_1, …, x_m), and the proof of Theorem 8.2 uses the statement with "
          "m = n + r."),
-    Slip("8", "the corollary for r = 1 after Theorem 8.2", "1922–1923",
+    Slip("8", "the paragraph on r = 1 after Theorem 8.2", "1922–1923",
          "“tangent to n − 1 fixed quadrics Q(c_1), …, Q(c_{n−r})”", "Q(c_{n−1})",
          "the sentence is at r = 1 and says n − 1; n − r is left from Theorem 8.2.", probable=True),
     Slip("8", "the paragraph before (9) §8", "1960–1961", "“Let us now set m + r and consider the family of "
          "cones (7)”", "set m = n + r", "Proposition 8.4 is applied to 2r-planes in ℝ^{n+r}."),
-    Slip("8", "the proof of Theorem 8.5", "2018–2019",
+    Slip("8", "the paragraph “Restriction to ℝⁿ” after (9) §8, before Theorem 8.5", "2018–2019",
          "d𝔦(T_{(x_1,…,x_n)} Q(λ)) = T_{𝔦(x_1,…,x_n)} Q̄(λ) ∩ {y_1 = 1, …, y_r = 1}", "Q_r(λ)",
          "𝔦⁻¹(Q̄(λ) ∩ {y = 1}) is Q_r(λ) of (9) §8; Q(λ) is the family of r = 1, and the passage is about "
          "r > 1.", probable=True),
@@ -132,7 +138,7 @@ SLIPS: tuple[Slip, ...] = (
     Slip("8", "the last sentence of §8", "2179–2180", "“tangent to n − 2 fixed confocal quadrics of the family "
          "Q_0(λ)”", "confocal cones", "Q_0(λ) are the cones of Theorem 8.6, which calls them cones.",
          probable=True),
-    Slip("A1", "the magnetic form ω_mag after (13) §9", "2436", "ω_mag = de_1 ∧ de_2 = Σ_{i=1}^n de_1^i ∧ de_2^j",
+    Slip("A1", "the magnetic form ω_mag, defined before (13) §9", "2436", "ω_mag = de_1 ∧ de_2 = Σ_{i=1}^n de_1^i ∧ de_2^j",
          "Σ_{i=1}^n de_1^i ∧ de_2^i", "j is a free index; with de_2^i the form gives the printed flows (15), "
          "(16) §9 and the momentum map (14) §9.",
          claims=("twisted-form", "magnetic-euclidean-flow", "magnetic-normal-flow", "magnetic-momentum-map")),
@@ -144,7 +150,7 @@ SLIPS: tuple[Slip, ...] = (
          "conserved too, but it is only the symmetric part of that momentum (XᵀẎ + ẊᵀY = 0 on the phase "
          "space) and vanishes on the solutions X = Y, Ẋ = Ẏ that the paper has just identified with the "
          "Neumann system, where the momentum is Ψ = XᵀẊ − ẊᵀX.", probable=True,
-         claims=("double-neumann-momentum",)),
+         claims=("double-neumann-printed-integral", "double-neumann-momentum")),
     Slip("A2", "the matrix F_λ of the small Lax pair in §10", "2638", "F_λ(X, Y) = Xᵀ(A² − λ²)⁻¹Y", "Xᵀ(A² − λ²I_n)⁻¹Y",
          "every other resolvent of the paper writes the identity."),
     Slip("A2", "the paragraph on complex Stiefel varieties", "2691–2692",

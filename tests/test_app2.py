@@ -22,6 +22,7 @@ FREE_PROVED = ("coupled-corrected-flow-invariants", "coupled-dual-lax-along-corr
                "coupled-big-lax-along-corrected-flow", "coupled-neumann-momentum", "coupled-dual-lax",
                "coupled-perturbed-dual-lax",
                "double-neumann-momentum", "double-neumann-flow",   # the double point (X, Y, Ẋ, Ẏ) as letters
+               "double-neumann-printed-integral",
                "double-neumann-diagonal",                           # with (D0) as rules, Euler-Lagrange solved there
                "complex-neumann-flow",        # Z = U + iV, Ż = U̇ + iV̇ as letters with (W0) and its derivative
                "complex-neumann-real-data",   # as rules, Euler-Lagrange solved there with a Hermitian multiplier
@@ -39,7 +40,7 @@ FREE_CORRECTED = ("coupled-neumann-flow", "coupled-big-lax-normal", "coupled-per
 #: matrix expressions at a point of T*V, no flow: not proved for all n, r as printed, its correction is
 MATRIX_ONLY = ("double-neumann-dual-lax-extends-la3",)
 #: hold as printed
-HOLDS = ("double-neumann-flow", "double-neumann-momentum", "double-neumann-diagonal", "complex-neumann-flow",
+HOLDS = ("double-neumann-flow", "double-neumann-momentum", "double-neumann-printed-integral", "double-neumann-diagonal", "complex-neumann-flow",
          "complex-neumann-momenta", "complex-neumann-real-data") + FREE_PROVED
 #: fail as printed (documented errata with a registered correction)
 ERRATA = ("double-neumann-dual-lax", "double-neumann-dual-lax-extends-la3", "coupled-neumann-flow", "coupled-big-lax-normal", "coupled-perturbed-big-lax",
@@ -85,6 +86,12 @@ def double_flow_of_another_lagrangian(s):
     acc, _ = euler_lagrange(s, a.T_double, lambda t, q: -a.U_double(t, q), a.D0, {"X": z["X"], "Y": z["Y"]},
                             {"X": z["Xdot"], "Y": z["Ydot"]}, real_coordinates(s, ["X", "Y"]))
     return {"X''": acc["X"] - a.flow_double(s, z)["Xdot"]}
+
+
+def double_printed_integral_is_the_momentum(s):
+    """Corrupted reading: XᵀẎ − YᵀẊ is the momentum N = XᵀẎ − ẊᵀY itself (it is only its symmetric part)."""
+    z = a.double_point(s)
+    return {"printed - N": (z["X"].T @ z["Ydot"] - z["Y"].T @ z["Xdot"]) - (z["X"].T @ z["Ydot"] - z["Xdot"].T @ z["Y"])}
 
 
 def double_momentum_of_one_point(s):
@@ -254,6 +261,7 @@ CORRUPTIONS = [
     ("double-neumann-flow", double_flow_without_transpose),
     ("double-neumann-flow", double_flow_of_another_lagrangian),
     ("double-neumann-momentum", double_momentum_of_one_point),
+    ("double-neumann-printed-integral", double_printed_integral_is_the_momentum),
     ("double-neumann-diagonal", double_diagonal_sign),
     ("double-neumann-dual-lax", double_lax_commutator_swapped),
     ("double-neumann-dual-lax-extends-la3", double_lax_extends_the_normal_pair),

@@ -150,9 +150,9 @@ def test_flipped_resolvent_is_written_as_printed(cid, display):
 
 
 @pytest.mark.parametrize("fragment, expected", [
-    ("flip the sign of the term `s.lam * s.A` in `s.Phi + s.lam * s.A`", "in Lax (B = A^1), Lax (B = A^2): λA → −λA"),
-    ("replace `s.A` by `s.Ainv` in `s.lam * s.A`", "in Lax (B = A^1), Lax (B = A^2): λA → λA⁻¹"),
-    ("invert the matrix `s.Phi + s.lam * s.A`", "in Lax (B = A^1), Lax (B = A^2): Φ + λA → (Φ + λA)⁻¹"),
+    ("flip the sign of the term `s.lam * s.A` in `s.Phi + s.lam * s.A`", "in Lax (B = A^1), Lax (B = A^2), at the 3rd of its 3 places: λA → −λA"),
+    ("replace `s.A` by `s.Ainv` in `s.lam * s.A`", "in Lax (B = A^1), Lax (B = A^2), at the 3rd of its 3 places: λA → λA⁻¹"),
+    ("invert the matrix `s.Phi + s.lam * s.A`", "in Lax (B = A^1), Lax (B = A^2), at the 3rd of its 3 places: Φ + λA → (Φ + λA)⁻¹"),
     # [𝔸(Φ) + λB, Φ + λA] → [Φ + λA, 𝔸(Φ) + λB] with B = A^k and 𝔸(Φ) = Σ A^m Φ A^(k-1-m), at (3, 2): k = 1, 2
     ("swap the operands of comm in `comm(M, L)`",
      "in Lax (B = A^2): [ΦA + AΦ + λAA, Φ + λA] → [Φ + λA, ΦA + AΦ + λAA]"),   # at B = A, 𝓐 = 𝓛
@@ -274,14 +274,14 @@ def test_a_corrections_change_read_in_the_worker_is_the_parents_and_bound_to_its
     c = _wrong_order("wrong-order-w")
     forked = [r for r in verify([c], methods=("modular",), sizes=[Size(3, 2)], jobs=2) if r.variant]
     here = [r for r in verify([c], methods=("modular",), sizes=[Size(3, 2)], jobs=1, fork=False) if r.variant]
-    assert forked and changes_text(forked[0].change) == changes_text(here[0].change) == "in E: [Φ, A] → [A, Φ]"
+    assert forked and changes_text(forked[0].change) == changes_text(here[0].change) == "in E, at the 2nd of its 2 places: [Φ, A] → [A, Φ]"
     # a record that says it read its change at another size (a run shared across r, copied) is read again
     task = (0, 3, 2, "modular", 0)
     res = runner._execute([c], 0, None, 60.0, False, task)
     res.change = [{"where": "E", "old": "forged", "new": "forged", "old_tex": "", "new_tex": ""}]
     res._change_at = (3, 1)
     settled = runner._settle(Outcome("ok", res), task, [c], 0, None)
-    assert changes_text(settled.change) == "in E: [Φ, A] → [A, Φ]"
+    assert changes_text(settled.change) == "in E, at the 2nd of its 2 places: [Φ, A] → [A, Φ]"
 
 
 def test_registered_correction_records_carry_their_change_and_reports_show_it():
@@ -289,16 +289,16 @@ def test_registered_correction_records_carry_their_change_and_reports_show_it():
     results = verify([c], methods=("modular",), sizes=[Size(3, 2)], jobs=1, fork=False)
     corrected = [r for r in results if r.variant is not None]
     assert corrected and corrected[0].verdict == "checked"
-    assert changes_text(corrected[0].change) == "in E: [Φ, A] → [A, Φ]"
+    assert changes_text(corrected[0].change) == "in E, at the 2nd of its 2 places: [Φ, A] → [A, Φ]"
     md = render_markdown(results)
     # the note for the authors gives the registered words; the list of candidates has the change and the words
     assert ("It holds at every size checked with the correction: the operands of the second commutator swapped (the "
             "change of the formula as computed is in the candidate corrections below).") in md
-    row = "| in E: \\[Φ, A\\] → \\[A, Φ\\] | the operands of the second commutator swapped | **"
+    row = "| in E, at the 2nd of its 2 places: \\[Φ, A\\] → \\[A, Φ\\] | the operands of the second commutator swapped | **"
     assert row + "verified at the computed sizes** |" in md or row + "proved for all n, r** |" in md
     assert md == render_markdown(results)
     tex = render_latex(results)
-    assert r"in E: $[\Phi, A]$ $\to$ $[A, \Phi]$ {\small (registered as: the operands of the second" in tex
+    assert r"in E, at the 2nd of its 2 places: $[\Phi, A]$ $\to$ $[A, \Phi]$ {\small (registered as: the operands of the second" in tex
 
 
 def test_a_hand_edited_change_of_a_correction_is_caught():

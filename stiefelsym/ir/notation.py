@@ -886,6 +886,74 @@ NO_SUCH_CHECK, DROPPED, SAME_TEXT = "(no such check)", "(dropped)", "written the
 BIG_MATRIX = "matrix)"
 
 
+#: the largest expression (in nodes) whose change is read back literally (:func:`_read_literally`)
+LITERAL_MAX = 400
+
+
+def _read_literally(found: list[tuple], pairs: list[tuple[str, Expr, Expr]]) -> dict[tuple, str]:
+    """Each output's change read back as a reader reads it: every place the old text is printed in the
+    output becomes the new text.  Where an output has one change (outside blocks) and that reading does not
+    give the new output, because the old text is also printed where nothing changed (XᵀP inside XᵀPλ beside a
+    changed K = XᵀP), the places that do give it, by (output, old key, new key): "the 1st and 2nd of its 3
+    places".  A change whose places cannot be read back so (a sign set into a sum) has none."""
+    exprs = {name: (ea, eb) for name, ea, eb in pairs}
+    whole = Printer(False, 10**9)
+    out: dict[tuple, str] = {}
+    for name, ctx, x, y, alt in found:
+        ea, eb = exprs.get(name, (None, None))
+        alone = sum(1 for f in found if f[0] == name) == 1
+        if ea is not None and alone and ctx == () and max(ea.size, eb.size) <= LITERAL_MAX:
+            u, v = (whole(e) for e in (alt if alt is not None else (x, y)))
+            places = _places_changed(whole(ea), whole(eb), u, v)
+            if places is not None:
+                out[(name, x.key, y.key)] = places
+    return out
+
+
+def _ordinal(k: int) -> str:
+    return f"{k}{'th' if 10 <= k % 100 <= 20 else {1: 'st', 2: 'nd', 3: 'rd'}.get(k % 10, 'th')}"
+
+
+def _places_changed(old: str, new: str, u: str, v: str, most: int = 8) -> str | None:
+    """None where replacing every printed u by v in ``old`` gives ``new`` (the change reads literally) or
+    where no choice of the places of u does; else the places that do, in words ("the 1st and 3rd of its 4
+    places"), the first such choice with the fewest places.  A sign flipped in a sum is read as its printed
+    operator: λA → −λA turns "+ λA" into "− λA"."""
+    if not u or u == v:
+        return None
+    readings = [(u, v)]
+    if v.startswith("−") and not u.startswith("−"):
+        readings.append(("+ " + u, "− " + v[1:]))
+    if any(old.replace(a, b) == new for a, b in readings):
+        return None
+    for a, b in readings:
+        found = _choose_places(old, new, a, b, most)
+        if found is not None:
+            return found
+    return None
+
+
+def _choose_places(old: str, new: str, u: str, v: str, most: int) -> str | None:
+    at, i = [], old.find(u)
+    while i >= 0:
+        at.append(i)
+        i = old.find(u, i + len(u))
+    if not 1 < len(at) <= most:
+        return None
+    from itertools import combinations
+    for k in range(1, len(at)):
+        for chosen in combinations(range(len(at)), k):
+            text, last = [], 0
+            for j in chosen:
+                text += [old[last:at[j]], v]
+                last = at[j] + len(u)
+            if "".join(text) + old[last:] == new:
+                which = [_ordinal(j + 1) for j in chosen]
+                listed = which[0] if k == 1 else ", ".join(which[:-1]) + " and " + which[-1]
+                return f"the {listed} of its {len(at)} places"
+    return None
+
+
 def diff(old: Graph, new: Graph, cap: int = 24, blocks_of: str = "") -> list[Change]:
     """The changes from ``old`` (the claim as printed) to ``new`` (a mutant or a correction traced at
     the same size), per output: the topmost changed subexpressions under an unchanged context, each
@@ -924,6 +992,7 @@ def diff(old: Graph, new: Graph, cap: int = 24, blocks_of: str = "") -> list[Cha
         if distinct(deep) < distinct(shallow):
             shallow = deep
     found += shallow or same
+    qualified = _read_literally(shallow, pairs)
     # one change per (old, new), with every output and block where it is made
     # (a changed letter is shown in its short product where that product is the same at every place)
     grouped: dict[tuple, dict[str, dict[tuple, None]]] = {}     # (ordered sets of places)
@@ -942,6 +1011,14 @@ def diff(old: Graph, new: Graph, cap: int = 24, blocks_of: str = "") -> list[Cha
         texts = [_place(nm, list(blocks), blocks_of) for nm, blocks in grouped[k].items()]
         if len(texts) > 2 and set(grouped[k]) == set(names) and all(list(b) == [()] for b in grouped[k].values()):
             texts = [f"every check ({len(texts)})"]
+        quals = {qualified.get((nm,) + k) for nm in grouped[k]}
+        if quals != {None}:
+            # the places of the old text that changed, once for every output where they are the same
+            if len(quals) == 1:
+                texts[-1] += f", at {quals.pop()}"
+            else:
+                texts = [t + (f", at {q}" if q else "") for t, q in
+                         zip(texts, (qualified.get((nm,) + k) for nm in grouped[k]))]
         where = ("; " if any(", block" in p for p in texts) else ", ").join(texts)
         wide = cap
         while po(x) == po(y) and x.key != y.key and wide < 2 * cap:   # cut short to the same text
