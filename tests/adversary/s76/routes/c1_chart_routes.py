@@ -3,7 +3,6 @@
 At the right-reduced equivariant chart A11 = XᵀAX is diagonal, at the diagonal chart A is diagonal.
 Each claim below reads an off-diagonal entry without an `entry` node.  All FALSE at (3,2) unless said.
 """
-from fractions import Fraction
 from stiefelsym import admissible, claim
 
 SZ = admissible(n_max=3)
@@ -12,7 +11,7 @@ SZ = admissible(n_max=3)
 @claim("c1-mat-rr-offdiag", paper="t", kind="id", section="0", sizes=SZ)
 def mat_rr(s):
     """E11 (XᵀAX) E22 = 0 with E11, E22 r×r constant matrices of s.mat tagged (r, r). FALSE."""
-    r = 2
+    r = 2  # noqa: F841
     E11 = s.mat([[1, 0], [0, 0]], ("r", "r"))
     E22 = s.mat([[0, 0], [0, 1]], ("r", "r"))
     return {"x": E11 @ s.X.T @ s.A @ s.X @ E22}
@@ -30,7 +29,7 @@ def mat_untyped(s):
 def mat_trace(s):
     """tr(N XᵀAX) = 0 with N = [[0,1],[-1,0]]... that is 0 (XᵀAX symmetric) -- control TRUE;
     and tr(M XᵀAX) with M = [[0,1],[0,0]] (reads the (2,1) entry): FALSE."""
-    N = s.mat([[0, 1], [-1, 0]], ("r", "r"))
+    N = s.mat([[0, 1], [-1, 0]], ("r", "r"))  # noqa: F841
     M = s.mat([[0, 1], [0, 0]], ("r", "r"))
     return {"x": s.tr(M @ s.X.T @ s.A @ s.X)}
 

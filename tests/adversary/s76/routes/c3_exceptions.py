@@ -13,7 +13,6 @@
   a TRUE or a FALSE residual); the two traces must agree.
 """
 import os
-import sys
 from stiefelsym import admissible, claim
 
 SZ = admissible(n_max=3)

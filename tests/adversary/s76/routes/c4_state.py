@@ -52,7 +52,7 @@ def gen(s):
     return {"r": s.X @ s.X.T - s.In}
 
 
-def H(t, acc=[]):
+def H(t, acc=[]):  # noqa: B006 - the state across calls is the trick
     acc.append(1)
     return t.tr(t.P.T @ t.P) / 2 * len(acc)
 

@@ -2,7 +2,6 @@
 __code__.co_filename inside the package) and takes a catalog claim's id, with a trivially TRUE graph
 (XᵀX = I_r) standing for `dirac-bracket-multipliers`.  The verdict on the graph is right (TRUE); the question
 is whether the records and reports present it as the catalog's reviewed claim."""
-import types
 from stiefelsym import admissible, claim
 
 SRC = '''
