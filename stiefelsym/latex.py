@@ -547,8 +547,8 @@ def _fitted_display(body: str, pieces: list[str]) -> str:
 
 #: a script in ASCII notation in plain words: ^{...} or _{...} (one level of nested braces), ^ and digits
 #: (an optional minus), ^⊥, ^∞, or _ and one letter or digit that no letter or digit follows (I_n, F_Ω; not
-#: the underscore inside a name such as N0_XP2), or ^ and an integer or one letter in parentheses, whose
-#: parentheses are then the script's braces ((μI_n - A)^(-1), A^(k); a subscript _(m) keeps them)
+#: the underscore inside a name such as N0_XP2), or ^ and an integer or one letter in parentheses (the
+#: parentheses of a negative power dropped, (μI_n - A)^(-1); kept in f^(k); a subscript _(m) stays as written)
 _ASCII_SCRIPT = re.compile(r"(\^|_)(\{(?:[^{}]|\{[^{}]*\})*\}|(?<=\^)\(-?(?:\d+|[^\W\d_])\)|-?\d+(?![^\W_])|⊥|∞|[^\W_](?![^\W_]))")
 
 
@@ -577,7 +577,7 @@ _MATH_IDIOMS = (
     (re.compile(r"(\b\d*[nrkm]\b|\b\d+\b|\)) x (?=\(|\d*[nrkm]\b|\d+\b)"), lambda m: m.group(1) + " × "),
     (re.compile(r"\b([XPYQ])0\b"), lambda m: m.group(1) + "₀"),
     # a second derivative in Leibniz's notation: d^2X/dt^2, d^2(X^T P)
-    (re.compile(r"(?<![^\W\d_])d\^(\d)(?=[^\W\d_]|\()"), lambda m: "d^{" + m.group(1) + "}"),
+    (re.compile(r"(?<![^\W\d_])d\^(\d+)(?=[^\W\d_]|\()"), lambda m: "d^{" + m.group(1) + "}"),
 )
 
 
@@ -605,6 +605,21 @@ def math_idioms(text: str, tex: bool = False) -> str:
     return text
 
 
+#: letters that are not set as a script (accented Latin letters, Cyrillic: LaTeX's text accents fail in math)
+_NOT_SCRIPT = re.compile("[\u00c0-\u024f\u0400-\u04ff]")
+
+
+def _script_body(group: str) -> str | None:
+    """The body of a script as matched: braces dropped, the parentheses of a negative integer dropped
+    ((μI − A)^(-1) is the power −1) and kept otherwise (f^(k), the order of a derivative); None where the body
+    holds a letter that is not set as a script (é, ß, ж)."""
+    if _NOT_SCRIPT.search(group):
+        return None
+    if group.startswith("{") or re.fullmatch(r"\(-\d+\)", group):
+        return group[1:-1]
+    return group
+
+
 def _unicode_scripts(text: str) -> str:
     text = math_idioms(text)
     text = re.sub(r"(?<=\s)([<>])=(?=\s)", lambda m: "≤" if m.group(1) == "<" else "≥", text.replace(" ^ ", " ∧ "))
@@ -613,7 +628,9 @@ def _unicode_scripts(text: str) -> str:
     def one(m: re.Match) -> str:
         if m.start() == 0 or text[m.start() - 1] == " ":
             return m.group(0)                 # a script needs a base before it
-        body = m.group(2)[1:-1] if m.group(2)[0] in "{(" else m.group(2)
+        body = _script_body(m.group(2))
+        if body is None:
+            return m.group(0)
         table = _UNICODE_SUP if m.group(1) == "^" else _UNICODE_SUB
         if body and all(c in table for c in body):
             return "".join(table[c] for c in body)
@@ -646,9 +663,9 @@ def _ascii_scripts(text: str) -> str:
     for m in _ASCII_SCRIPT.finditer(text):
         if m.start() == 0 or text[m.start() - 1] == " ":
             continue                      # a script needs a base before it
-        body = m.group(2)
-        if body[0] in "{(":
-            body = body[1:-1]
+        body = _script_body(m.group(2))
+        if body is None:
+            continue                      # left as it is written (escaped with the text around it)
         body = body.replace("-", "−")     # a script is mathematics: n-r, -1 with minus signs
         out.append(tex_escape(text[at:m.start()]))
         out.append(r"\ensuremath{" + m.group(1) + "{" + _ascii_scripts(body) + "}}")

@@ -109,6 +109,9 @@ def test_a_power_in_parentheses_and_the_powers_in_a_check_name_are_scripts():
     assert "\\^{}" in tex_words("g^(ab)")
     assert unicode_words("d^2X/dt^2, d^2(X^T P)") == "d²X/dt², d²(Xᵀ P)"     # Leibniz's second derivative
     assert "\\^{}" not in entry_title("d^2X/dt^2 - F")
+    # the order of a derivative keeps its parentheses; Leibniz with two digits; an accented letter is no script
+    assert unicode_words("f^(k), d^10X/dt^10") == "f⁽ᵏ⁾, d¹⁰X/dt¹⁰"
+    assert r"\ensuremath{" not in tex_words("u^(é), y_é")
     assert tex_words("ξ_(m)^{2k}").startswith(r"\ensuremath{\xi}\_(m)")     # an index in parentheses stays one
 
 

@@ -183,6 +183,10 @@ def _compile(func: Callable, n: int | None, r: int | None, constraints: tuple[st
         free = _compile(func, None, None, constraints, cached=cached)
         if isinstance(free, Graph):
             return _typed_at(func, free, n, r, constraints, cached)
+        if isinstance(free, NotDeterministic):
+            # two traces with symbolic sizes disagreed: the claim is not deterministic, at every size (a trace at
+            # (n, r) would only be a later call of the same code, whose graphs may agree)
+            return free
         # a claim stated on a family of sizes that traces on it: that graph is its graph at each of its sizes
         # (the claim's code runs at the numbers of a size only to be compared with it: the dimension-free
         # method's proof on the family is about the graph every method evaluates at every size of it)

@@ -39,7 +39,7 @@ from stiefelsym.free.certificates import CertificateWriter
 from stiefelsym.free.columns import COMPLETE
 from stiefelsym.free.rewriting import latex_text
 from stiefelsym.latex import tex_words, unicode_name
-from stiefelsym.ir import GraphUnavailable, SizeFamily, TraceRefused
+from stiefelsym.ir import GraphUnavailable, NotDeterministic, SizeFamily, TraceRefused
 from stiefelsym.methods.families import size_families
 
 
@@ -129,6 +129,10 @@ def run_free_on(claim: Claim, func: Callable, family: SizeFamily | None, alone: 
         return undecided(text)
     except (FreeSolveError, RewritingError) as exc:
         return touched() or undecided(f"outside the rewriting backend: {exc}")
+    except NotDeterministic as exc:
+        # two traces of the claim disagreed: no verdict under any method
+        res.verdict, res.message, res.seconds = "error", f"NotDeterministic: {exc}", time.perf_counter() - t0
+        return res
     except (TypeError, ValueError, AttributeError, ArithmeticError) as exc:
         text = f"the claim does not run on the free algebra ({type(exc).__name__}: {exc})"
         refused = touched()

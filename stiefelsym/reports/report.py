@@ -1778,10 +1778,10 @@ def _has_comment(line: str) -> bool:
 #: the first words of the per-run document, in place of the summary it would repeat ({what}: the
 #: paper's errata, or a claims file's statements that fail)
 RUNS_PREFACE = ("This document is the companion of verification.tex, which summarizes the verdicts and lists "
-                "{what} with their corrections.  Here every run follows, claim by claim: its verdict, the "
-                "reductions its proof used (the chart of T*V, an equivariance, the dimension-free proof "
-                "specialised to a size), its residual and its certificate, or its witness and the command that "
-                "reruns it.")
+                "{what} with their corrections.  Here the errata come first again, each with more of its failing "
+                "runs; then every run follows, claim by claim: its verdict, the reductions its proof used (the "
+                "chart of T*V, an equivariance, the dimension-free proof specialised to a size), its residual and "
+                "its certificate, or its witness and the command that reruns it.")
 
 
 def render_latex(results: Sequence[Result], meta: dict[str, Any] | None = None, mutation: Any = None,

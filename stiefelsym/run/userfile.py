@@ -221,7 +221,22 @@ def _refusal(exc: BaseException) -> dict:
     if type(exc) is RecursionError:
         from stiefelsym.ir import recursion_text
         message = recursion_text()
-    return {"error": [type(exc).__name__, message], "at": where}
+    name = type(exc).__name__
+    if not _genuine(type(exc)):
+        # a class of the file's own that takes the name of an engine's or a builtin exception (TraceRefused,
+        # MemoryError): recorded under its name, never replayed as that exception
+        name, message = "ClaimException", f"{name} (a class of the claims file's own): {message}"
+    return {"error": [name, message], "at": where}
+
+
+def _genuine(cls: type) -> bool:
+    """Whether an exception class is the builtin or the engine's class of its name (not a claims file's class
+    named so)."""
+    from stiefelsym.ir import NotDeterministic, TraceRefused
+    from stiefelsym.ir.replay import ReplayError
+    name = cls.__name__
+    return cls is getattr(builtins, name, None) or cls in (TraceRefused, NotDeterministic, ReplayError, ClaimTimeout,
+                                                           NoGraph, EngineStateChanged)
 
 
 def _trace_one(func: Callable, realization: str, key: Any) -> Any:
@@ -362,7 +377,9 @@ def _jobs_lines(c: Claim, more: dict | None, jobs: list, start: int, has_free: d
             continue
         out = _trace_one(funcs[f], c.realization, key)
         if key is None:
-            has_free[f] = "error" not in out
+            # a graph with symbolic sizes is the graph at every size; a claim found not deterministic there is
+            # not traced at a size either (its later calls may agree with each other)
+            has_free[f] = "error" not in out or _not_deterministic(out)
         write({"job": out})
 
 
@@ -450,7 +467,7 @@ def _run_claim(c: Claim, more: dict | None, timeout: float, memory: int | None) 
                         else:
                             _, f, key = jobs[i]
                             if key is None:
-                                has_free[f] = "error" not in item["job"]
+                                has_free[f] = "error" not in item["job"] or _not_deterministic(item["job"])
                             results.append([f, None if key is None else list(key), item["job"]])
                         i = _next_job(jobs, i + 1, has_free)
                         deadline = time.monotonic() + timeout     # (a trace: only the first job is the metadata)
@@ -733,6 +750,10 @@ class _Recorded:
             b = getattr(builtins, self.name, None)
             base = b if isinstance(b, type) and issubclass(b, Exception) else Exception
         message = self.message
+        if base is MemoryError:
+            # raised while the claim was traced in its child (by the claim's code, or the tracing ran out of that
+            # process's address space): not a method's memory budget
+            base, message = Exception, f"MemoryError while the claim was traced in its claims file's child process: {message}"
         for cls in (base, Exception):
             try:
                 kind = type(self.name, (cls,), {"__str__": lambda self: message, "__module__": cls.__module__})
@@ -1103,12 +1124,20 @@ def _phase(path: Path, parts: list[dict] | None, capture: int,
     return out, how
 
 
+def _not_deterministic(data: Any) -> bool:
+    """Whether a recorded refusal says that the function is not deterministic."""
+    err = data.get("error") if type(data) is dict else None
+    return type(err) is list and len(err) == 2 and err[0] == "NotDeterministic"
+
+
 def _refused(entries: list) -> bool:
-    """Whether a function's graphs hold no graph with symbolic sizes (refused there, or its process died)."""
+    """Whether a function's graphs hold no graph with symbolic sizes (refused there, or its process died; not a
+    function found not deterministic there, which is traced at no size)."""
     for entry in entries:
         if type(entry) is list and len(entry) == 2 and entry[0] is None:
             data = entry[1]
-            return type(data) is dict and ("error" in data or data.get("budget") == "died")
+            return (type(data) is dict and ("error" in data or data.get("budget") == "died")
+                    and not _not_deterministic(data))
     return False
 
 

@@ -93,4 +93,6 @@ def test_a_claims_file_cannot_ask_to_be_traced_once():
     with_call = verdicts_each("s68/own_trace_once.py", ("exact", "modular", "free"))
     for method, by_claim in with_call.items():
         assert by_claim.get("ot-flip") not in ("proved", "checked", "numeric"), (method, by_claim)
-    assert with_call["exact"]["ot-flip"] == "fails" and with_call["modular"]["ot-flip"] == "fails"
+    # (stop 76: its two traces with symbolic sizes differ, so it is not deterministic at every size, `error`; it was
+    # traced at the sizes after that and failed there, on the graph of its later calls)
+    assert with_call["exact"]["ot-flip"] == "error" and with_call["modular"]["ot-flip"] == "error"
