@@ -22,6 +22,7 @@ import functools
 import inspect
 import sys
 from fractions import Fraction
+import math
 from typing import Any, Callable, Iterator
 
 from stiefelsym.ir.seal import refuse_registration
@@ -635,10 +636,20 @@ def _m_q(s, num, den=1):
     return _call(s, "q", (num, den), SCALAR)
 
 
+def _reduced(q: Fraction) -> bool:
+    """Whether a Fraction is one Fraction(p, q) makes: int parts, in lowest terms, a positive denominator (one
+    made by hand, with other parts, compares and hashes otherwise and changes when the graph is copied)."""
+    num, den = getattr(q, "_numerator", None), getattr(q, "_denominator", None)
+    return type(num) is int and type(den) is int and den > 0 and math.gcd(num, den) == 1
+
+
 def _m_const(s, q):
     t = s._t
     if type(q) not in (int, Fraction):
         return t.refuse(f"a constant is an int or a Fraction, not a {type(q).__name__}")
+    if type(q) is Fraction and not _reduced(q):
+        return t.refuse("a Fraction that is not in lowest terms with int parts and a positive denominator "
+                        "(made by hand): write Fraction(p, q)")
     return _call(s, "const", (q,), SCALAR)
 
 
@@ -1069,6 +1080,9 @@ class Trace:
             if x._t is not self:
                 return self.refuse("a traced value of another trace")
             return x._r
+        if tx is Fraction and not _reduced(x):
+            return self.refuse("a Fraction that is not in lowest terms with int parts and a positive denominator "
+                               "(made by hand): write Fraction(p, q)")
         if tx is int or tx is bool or tx is Fraction or tx is str or x is None:
             return x
         if tx is Dim:
@@ -1246,7 +1260,7 @@ class Trace:
             return self.statement(v, "count", (v.value, v.expected, v.meaning))
         if tv is Inverse or tv is RightInverse:
             return self.refuse(f"an {tv.__name__} statement is a check of the claim (a value of the dict it returns)")
-        if tv is int or tv is Fraction:
+        if tv is int or (tv is Fraction and _reduced(v)):
             return self.g.add("const", (v,))
         return self.arg(v)
 

@@ -94,3 +94,13 @@ def test_a_claims_file_class_named_as_an_engine_exception_is_not_replayed_as_one
     assert len(lines) == 4 and all(": error " in ln and "a class of the claims file's own" in ln for ln in lines), \
         run.stdout[-2000:]
     assert "memory budget" not in run.stdout
+
+
+def test_a_fraction_made_by_hand_is_refused_with_its_reason():
+    """Routes D3, D4 (class 2): Fractions made by hand (a numerator that lies about being 0, a zero, negative or
+    unreduced denominator) were refused with the wrong reason ("no graph at the sizes", "not deterministic")."""
+    f = HERE / "routes" / "c2_disguised_constants.py"
+    ids = ["c2-fraction-lying-zero", "c2-fraction-zero-den", "c2-fraction-unnormalised", "c2-fraction-negative-den"]
+    run = cli("verify", "--claims", str(f), *ids, "--method", "exact", "--size", "3,2", "--jobs", "1")
+    lines = [ln for ln in run.stdout.splitlines() if ln.startswith("c2-")]
+    assert len(lines) == 4 and all(": error " in ln and "not in lowest terms" in ln for ln in lines), run.stdout[-2000:]
