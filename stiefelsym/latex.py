@@ -606,7 +606,7 @@ def math_idioms(text: str, tex: bool = False) -> str:
 
 
 #: letters that are not set as a script (accented Latin letters, Cyrillic: LaTeX's text accents fail in math)
-_NOT_SCRIPT = re.compile("[\u00c0-\u024f\u0400-\u04ff]")
+_NOT_SCRIPT = re.compile("[\u00c0-\u00d6\u00d8-\u00f6\u00f8-\u024f\u0400-\u04ff]")   # (not × and ÷)
 
 
 def _script_body(group: str) -> str | None:

@@ -112,6 +112,7 @@ def test_a_power_in_parentheses_and_the_powers_in_a_check_name_are_scripts():
     # the order of a derivative keeps its parentheses; Leibniz with two digits; an accented letter is no script
     assert unicode_words("f^(k), d^10X/dt^10") == "f⁽ᵏ⁾, d¹⁰X/dt¹⁰"
     assert r"\ensuremath{" not in tex_words("u^(é), y_é")
+    assert tex_words("M_{n×r}(ℝ)").startswith(r"M\ensuremath{_{n\ensuremath{\times}r}}")
     assert tex_words("ξ_(m)^{2k}").startswith(r"\ensuremath{\xi}\_(m)")     # an index in parentheses stays one
 
 
