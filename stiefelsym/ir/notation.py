@@ -1009,17 +1009,15 @@ def diff(old: Graph, new: Graph, cap: int = 24, blocks_of: str = "") -> list[Cha
         if alt is not None and len(contexts[k]) == 1:
             x, y = alt
         texts = [_place(nm, list(blocks), blocks_of) for nm, blocks in grouped[k].items()]
-        if len(texts) > 2 and set(grouped[k]) == set(names) and all(list(b) == [()] for b in grouped[k].values()):
+        quals = [qualified.get((nm,) + k) for nm in grouped[k]]
+        if len(set(quals)) > 1:
+            # the places of the old text that changed differ between the outputs: each output says its own
+            texts = [t + (f", at {q}" if q else "") for t, q in zip(texts, quals)]
+        elif len(texts) > 2 and set(grouped[k]) == set(names) and all(list(b) == [()] for b in grouped[k].values()):
             texts = [f"every check ({len(texts)})"]
-        quals = {qualified.get((nm,) + k) for nm in grouped[k]}
-        if quals != {None}:
-            # the places of the old text that changed, once for every output where they are the same
-            if len(quals) == 1:
-                texts[-1] += f", at {quals.pop()}"
-            else:
-                texts = [t + (f", at {q}" if q else "") for t, q in
-                         zip(texts, (qualified.get((nm,) + k) for nm in grouped[k]))]
-        where = ("; " if any(", block" in p for p in texts) else ", ").join(texts)
+        where = ("; " if any(", block" in p or ", at the " in p for p in texts) else ", ").join(texts)
+        if len(set(quals)) == 1 and quals[0]:
+            where += f", at {quals[0]}"      # the same places in every output: said once
         wide = cap
         while po(x) == po(y) and x.key != y.key and wide < 2 * cap:   # cut short to the same text
             wide *= 4

@@ -636,6 +636,11 @@ def _m_q(s, num, den=1):
     return _call(s, "q", (num, den), SCALAR)
 
 
+#: the refusal of a Fraction :func:`_reduced` rejects
+MALFORMED_FRACTION = ("a Fraction that is not in lowest terms with int parts and a positive denominator (made by "
+                      "hand): write Fraction(p, q)")
+
+
 def _reduced(q: Fraction) -> bool:
     """Whether a Fraction is one Fraction(p, q) makes: int parts, in lowest terms, a positive denominator (one
     made by hand, with other parts, compares and hashes otherwise and changes when the graph is copied)."""
@@ -648,8 +653,7 @@ def _m_const(s, q):
     if type(q) not in (int, Fraction):
         return t.refuse(f"a constant is an int or a Fraction, not a {type(q).__name__}")
     if type(q) is Fraction and not _reduced(q):
-        return t.refuse("a Fraction that is not in lowest terms with int parts and a positive denominator "
-                        "(made by hand): write Fraction(p, q)")
+        return t.refuse(MALFORMED_FRACTION)
     return _call(s, "const", (q,), SCALAR)
 
 
@@ -1081,8 +1085,7 @@ class Trace:
                 return self.refuse("a traced value of another trace")
             return x._r
         if tx is Fraction and not _reduced(x):
-            return self.refuse("a Fraction that is not in lowest terms with int parts and a positive denominator "
-                               "(made by hand): write Fraction(p, q)")
+            return self.refuse(MALFORMED_FRACTION)
         if tx is int or tx is bool or tx is Fraction or tx is str or x is None:
             return x
         if tx is Dim:

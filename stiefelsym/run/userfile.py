@@ -377,10 +377,14 @@ def _jobs_lines(c: Claim, more: dict | None, jobs: list, start: int, has_free: d
             continue
         out = _trace_one(funcs[f], c.realization, key)
         if key is None:
-            # a graph with symbolic sizes is the graph at every size; a claim found not deterministic there is
-            # not traced at a size either (its later calls may agree with each other)
-            has_free[f] = "error" not in out or _not_deterministic(out)
+            has_free[f] = _traced_at_no_size(out)
         write({"job": out})
+
+
+def _traced_at_no_size(out: dict) -> bool:
+    """Whether a function's outcome with symbolic sizes ends its tracing: a graph there is its graph at every
+    size; a function found not deterministic there is traced at no size either (its later calls may agree)."""
+    return "error" not in out or _not_deterministic(out)
 
 
 def _skipped(job: tuple, has_free: dict) -> bool:
@@ -467,7 +471,7 @@ def _run_claim(c: Claim, more: dict | None, timeout: float, memory: int | None) 
                         else:
                             _, f, key = jobs[i]
                             if key is None:
-                                has_free[f] = "error" not in item["job"] or _not_deterministic(item["job"])
+                                has_free[f] = _traced_at_no_size(item["job"])
                             results.append([f, None if key is None else list(key), item["job"]])
                         i = _next_job(jobs, i + 1, has_free)
                         deadline = time.monotonic() + timeout     # (a trace: only the first job is the metadata)

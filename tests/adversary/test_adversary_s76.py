@@ -104,3 +104,13 @@ def test_a_fraction_made_by_hand_is_refused_with_its_reason():
     run = cli("verify", "--claims", str(f), *ids, "--method", "exact", "--size", "3,2", "--jobs", "1")
     lines = [ln for ln in run.stdout.splitlines() if ln.startswith("c2-")]
     assert len(lines) == 4 and all(": error " in ln and "not in lowest terms" in ln for ln in lines), run.stdout[-2000:]
+
+
+def test_each_check_names_its_own_places_of_a_change(tmp_path):
+    """The own attempt after the review: one correction of the shared K = XᵀP in three checks, two of which also
+    print XᵀP where nothing changes.  Each check says its own places (the collapsed list could carry one check's)."""
+    own = HERE / "own" / "mixed_places.py"
+    cli("verify", "--claims", str(own), "--method", "exact", "--jobs", "1", "--report-dir", str(tmp_path))
+    md = (tmp_path / "verification.md").read_text(encoding="utf-8")
+    assert ("| in a, at the 1st and 2nd of its 3 places; b, at the 1st and 2nd of its 3 places; c: XᵀP → XᵀX |"
+            in md), md[-3000:]
