@@ -2614,6 +2614,10 @@ def _hard_or_random(run: Callable[[dict | None], Result], options: dict | None) 
     return res
 
 
+#: how the message of a point method whose every sampled point was degenerate begins
+DEGENERATE_POINTS = "every one of"
+
+
 @_quoting
 def run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callable | None = None,
                trials: int | None = None, options: dict | None = None, target: float = POINTS_TARGET,
@@ -2715,7 +2719,7 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
                 continue
         else:
             res.verdict = "inconclusive"
-            res.message = (f"every one of {MAX_RESAMPLE} sampled points was degenerate (a pole or singular system"
+            res.message = (f"{DEGENERATE_POINTS} {MAX_RESAMPLE} sampled points was degenerate (a pole or singular system"
                            + (f"; the last at {where})" if where else ")"))
             res.seconds = time.perf_counter() - t0
             return res
@@ -3069,7 +3073,7 @@ def _confirm_text(exact: Result) -> str:
 
 @dataclass
 class _FloatRun:
-    status: str                 # "pass", "bad", "nonzero", "zero", "unresolved", "empty"
+    status: str                 # "pass", "bad", "nonzero", "zero", "unresolved", "empty", "pole"
     field: str = ""
     log: list[str] = dc_field(default_factory=list)
     entry: tuple[str, Any] | None = None
@@ -3093,6 +3097,18 @@ def _finite(x: ErrNum) -> bool:
         return all(mpmath.isfinite(y) for y in (x.v, x.e, x.m))
     except (TypeError, ValueError):
         return False
+
+
+def _pole_everywhere(claim: Claim, n: int, r: int, seed: int, func: Callable, options: dict | None) -> str | None:
+    """After float64 met a division by a number indistinguishable from 0: the modular method's account when
+    its exact points (every one it samples, each at its own prime) are poles too, so that the divisor
+    vanishes wherever the claim is evaluated (a constant of the size that is 0, say) and the precision ladder
+    could only spend its time (minutes at n = 100) to the same end; None when an exact point is no pole (the
+    float64 division was a matter of precision: the ladder goes on)."""
+    probe = run_points(claim, n, r, "modular", seed, func, trials=1, options=options)
+    if probe.verdict == "inconclusive" and (probe.message or "").startswith(DEGENERATE_POINTS):
+        return f"exact points modulo primes: {probe.message}"
+    return None
 
 
 def _float_component(claim: Claim, n: int, r: int, seed: int, func: Callable, options: dict | None,
@@ -3139,6 +3155,12 @@ def _float_component(claim: Claim, n: int, r: int, seed: int, func: Callable, op
             continue
         except DegenerateError as exc:
             run.log.append(f"{field.name}: {exc}")
+            if dps is None:
+                pole = _pole_everywhere(claim, n, r, seed, func, options)
+                if pole is not None:        # no precision at this point can resolve it: the ladder stops
+                    run.status = "pole"
+                    run.log.append(pole)
+                    return run
             continue
         finally:
             release = getattr(field.__dict__.get("_backend"), "release", None)
@@ -3198,6 +3220,12 @@ def _run_float(claim: Claim, n: int, r: int, seed: int, func: Callable, options:
         runs += [_float_component(claim, n, r, seed, func, options, c, first) for c in comps[2:]]
     log = "; ".join((f"component {c + 1}: " if len(comps) > 1 else "") + "; ".join(run.log)
                     for c, run in zip(comps, runs))
+    if any(run.status == "pole" for run in runs):
+        res.message = ("a pole wherever the claim is evaluated: float64 met a division by a number "
+                       "indistinguishable from 0, and so did the exact points modulo primes; more precision "
+                       "cannot resolve it (" + log + ")")
+        res.verdict, res.seconds = "inconclusive", time.perf_counter() - t0
+        return res
     decided = None
     if identity and any(run.status == "unresolved" for run in runs) and not any(run.status == "bad" for run in runs):
         ball = _run_ball(claim, n, r, seed, func, options)
