@@ -7,6 +7,10 @@ the paper's printed numbering, the display or paragraph; the line of the paper's
 printed, what is meant, and the evidence from the paper itself.  "probable" marks a slip whose intended
 reading is clear but not forced; ``claims`` names the catalog's claims that compute the intended
 reading, where there are some.  The reports render this list in a catalog report.
+
+``SPELLING`` lists the paper's slips of spelling and punctuation, which have no mathematical content: each
+with its place as a slip's, the source's text as it stands on those lines (LaTeX) and the text meant, in the
+same form.  The reports render them after the slips.
 """
 from __future__ import annotations
 
@@ -156,4 +160,57 @@ SLIPS: tuple[Slip, ...] = (
     Slip("A2", "the paragraph on complex Stiefel varieties", "2691–2692",
          "“the space of r ordered orthogonal vectors (z_1, …, z_n)”", "r ordered orthonormal vectors "
          "(z_1, …, z_r)", "there are r vectors, Z = (z_1, …, z_r), of unit length by (11) §10 (Z̄ᵀZ = I_r)."),
+)
+
+
+@dataclass(frozen=True)
+class Spelling:
+    """A slip of spelling or punctuation of the paper: no mathematical content."""
+    #: the section, as the catalog's sections are keyed, or "" outside them (the abstract, the references)
+    section: str
+    #: where in that section (the paragraph, the environment, a display's printed number; "the references, [25]")
+    where: str
+    #: the line(s) of the paper's LaTeX source: one line, a range "a–b" read as one text, or several "a, b"
+    lines: str
+    #: the source's text, verbatim, on each of those lines (or on the range)
+    printed: str
+    #: the text meant, in the same form
+    meant: str
+    #: a word on the correction where it is not plain
+    note: str = ""
+
+
+SPELLING: tuple[Spelling, ...] = (
+    Spelling("", "the abstract", "47", "and proves their integrability", "and prove their integrability",
+             "the subject is “We”."),
+    Spelling("2", "the paragraph “The Poisson structure”, the sentence before (7) §2", "269",
+             "described by the using Lagrange", "described by using Lagrange"),
+    Spelling("3", "the paragraph “Einstein metrics”", "719", "than among the metrics", "then among the metrics",
+             "“proved that if …, then …”."),
+    Spelling("5", "the definition of the Neumann systems, the first paragraph of §5", "1004",
+             "a Neumann on the", "a Neumann system on the"),
+    Spelling("5", "the paragraph on the dual Lax pairs that ends §5", "1114", "which are does equivalent to",
+             "which are equivalent to", "“does” is superfluous (perhaps “thus” was meant)."),
+    Spelling("6", "the proof of Theorem 6.1, before (7) §6", "1258", r"p_1\circ \theta,\dots p_l\circ \theta",
+             r"p_1\circ \theta,\dots, p_l\circ \theta", "a comma is missing after the dots, as (7) §6 has it."),
+    Spelling("6", "the paragraph “Singular matrices A and the Einstein metrics”", "1482–1483",
+             "set of function on", "set of functions on"),
+    Spelling("6", "the same paragraph", "1488", "is out the scope of this", "is out of the scope of this"),
+    Spelling("8", "the multi-indices after (5) §8 and before (7) §8, and Proposition 8.4", "1830, 1885, 1950",
+             r"\{i_1,\ldots i_k\}", r"\{i_1,\ldots, i_k\}",
+             "a comma is missing after the dots, as {1, …, n} on the same lines has it."),
+    Spelling("8", "the paragraph “Geometric interpretation of the integrals”, before (7) §8", "1888",
+             "completely contan", "completely contain"),
+    Spelling("8", "the sentence introducing the cones (7) §8", "1891", r"y_1\dots, y_r", r"y_1,\dots, y_r",
+             "x_1, …, x_n in the same parenthesis has its commas, and so has the display of the 2r-plane twenty "
+             "lines before."),
+    Spelling("8", "Proposition 8.4", "1953", r"(b_1,\dots b_m)", r"(b_1,\dots, b_m)",
+             "a comma is missing after the dots."),
+    Spelling("A1", "the paragraph “Magnetic Neumann flows on V_{n,2} and G_{n,2}”", "2406", "Kirillov--Konstant",
+             "Kirillov--Kostant", "the Kirillov–Kostant form of a coadjoint orbit."),
+    Spelling("", "the references, [25]", "2924", "F. Griffits, J. Harris", "P. Griffiths, J. Harris",
+             "Phillip Griffiths is the author, with J. Harris, of Principles of Algebraic Geometry."),
+    Spelling("", "the references, [26]", "2927", "Cambrige University press", "Cambridge University Press"),
+    Spelling("", "the references, [44]", "3007", "Semonov-Tian-Shanski", "Semenov-Tian-Shanski",
+             "the introduction spells the name so (source line 139, “Semenov–Tian-Shanski”)."),
 )

@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import json
+from pathlib import Path
 import re
 from dataclasses import replace
 import shutil
@@ -13,6 +14,8 @@ import pytest
 from stiefelsym.reports.report import (_tex_change, case_name, grouped_reruns, quoted_value_words, render_junit, render_latex, render_markdown,
                                render_mutation_markdown, render_summary)
 from stiefelsym.results import CheckOutcome, Result, dump_results, load_results
+
+PAPER = Path(__file__).resolve().parents[2] / "shared" / "paper" / "fedorov-jovanovic-stiefel.tex"
 
 NASTY = r"50% of #cases & ~x^2 {b} \foo <a|b> under_score, Božidar Jovanović, dΦ/dt = [XXᵀ, A] ≤ ½"
 
@@ -1022,7 +1025,49 @@ def test_the_typographical_slips_are_listed_in_a_report_of_the_whole_catalog_onl
     assert r"\section*{Typographical slips}" in tex and "Printed:" in tex
     for meta in ({}, {"whole_catalog": True, "claims_files": ["mine.py"]}):
         assert "Typographical slips" not in render_markdown([r], meta) + render_latex([r], meta)
+        assert "Spelling and punctuation" not in render_markdown([r], meta) + render_latex([r], meta)
     assert "Typographical slips" not in render_latex([r], {"whole_catalog": True}, detail=True)
+    assert "Spelling and punctuation" not in render_latex([r], {"whole_catalog": True}, detail=True)
+
+
+def test_the_slips_of_spelling_and_punctuation_follow_the_typographical_slips():
+    """A report of the whole catalog lists the paper's slips of spelling and punctuation after its typographical
+    slips, each with its place, the source's text and the text meant (monospace in the LaTeX, escaped); the
+    headline counts them after the slips."""
+    from stiefelsym.proofs.slips import SLIPS, SPELLING
+    r = result("prep", 3, 1, "exact", "proved")
+    md = render_markdown([r], {"whole_catalog": True})
+    assert md.index("## Typographical slips") < md.index("## Spelling and punctuation") < md.index("## Summary")
+    assert (f"lists {len(SLIPS)} more slips, in passages whose mathematics holds; the section Spelling and "
+            f"punctuation lists {len(SPELLING)} slips without mathematical content.") in md
+    assert ("- **The references, [44] (source line 3007).** Printed `Semonov-Tian-Shanski`, meant "
+            "`Semenov-Tian-Shanski`: ") in md
+    assert "Printed `\\{i_1,\\ldots i_k\\}`, meant `\\{i_1,\\ldots, i_k\\}`" in md
+    tex = render_latex([r], {"whole_catalog": True})
+    assert tex.index(r"\section*{Typographical slips}") < tex.index(r"\section*{Spelling and punctuation}")
+    assert (r"Printed \texttt{\textbackslash{}\{i\_1,\allowbreak{}\textbackslash{}ldots i\_k\textbackslash{}\}}"
+            in tex)
+    assert r"\texttt{Semonov-\allowbreak{}Tian-\allowbreak{}Shanski}" in tex
+
+
+@pytest.mark.skipif(not PAPER.exists(), reason="the paper is not next to the repository")
+def test_every_spelling_slip_is_printed_at_its_lines_of_the_paper():
+    """The text a slip of spelling or punctuation quotes stands in the paper's source on each of its lines (a
+    range "a–b" read as one text, spaces as one), its correction differs from it, and its place is a section of
+    the catalog or outside them (the abstract, the references)."""
+    from stiefelsym.proofs import SECTION_TITLES
+    from stiefelsym.proofs.slips import SPELLING
+    source = PAPER.read_text(encoding="utf-8").split("\n")
+    assert len(SPELLING) == 16
+    for slip in SPELLING:
+        assert slip.printed != slip.meant and slip.where, slip
+        assert slip.section in SECTION_TITLES or (not slip.section and slip.where.startswith(("the abstract",
+                                                                                               "the references"))), slip
+        for part in slip.lines.split(", "):
+            first, _, last = part.partition("–")
+            text = " ".join(" ".join(source[int(first) - 1:int(last or first)]).split())
+            assert " ".join(slip.printed.split()) in text, (slip.lines, part, slip.printed)
+    assert len({(s.lines, s.printed) for s in SPELLING}) == len(SPELLING)
 
 
 def test_every_slip_names_a_section_and_claims_of_the_catalog():
