@@ -52,7 +52,7 @@ SLIPS: tuple[Slip, ...] = (
          claims=("dual-invariants-manakov-r-n",)),
     Slip("5", "the spectral curve (9) §5", "1094", "Γ ⊂ ℂ²{λ, ν}: det(𝓛_neum(λ) − μI_n) = 0",
          "ℂ²{λ, μ}", "the curve's second coordinate is the eigenvalue μ of its equation; it has no ν."),
-    Slip("5", "the last paragraph of §5", "1111", "“flows on V_{n,2} in detail in Section 7 and Appendix 2”",
+    Slip("5", "the paragraph on the Lax pairs of Moser and [RS], before the last paragraph of §5", "1111", "“flows on V_{n,2} in detail in Section 7 and Appendix 2”",
          "Appendix 1", "the magnetic flows on V_{n,2} are Appendix 1 (§9), as the introduction says; "
          "Appendix 2 holds the double, coupled and complex systems."),
     Slip("6", "the paragraph of (8) §6", "1296", "“see also Section 7”",
@@ -69,14 +69,14 @@ SLIPS: tuple[Slip, ...] = (
          "“Therefore, dim ker Λ_{1,−1}(h + v).”", "dim ker Λ_{1,−1}(h + v) = n",
          "an unfinished sentence: η is one of the n diagonal matrices of (13) §6 and ξ is determined by (14) "
          "§6, so the kernel has dimension n, the rank n² − n that (A1) states.", claims=("pencil-rank-a1",)),
-    Slip("6", "the end of the proof of Lemma 6.3", "1474–1475", "a_{n+1−k_r} = … = a_n,  k_1 + k_2 + … + k_r.",
+    Slip("6", "the first display of the paragraph “Singular matrices A and the Einstein metrics” (§6)", "1474–1475", "a_{n+1−k_r} = … = a_n,  k_1 + k_2 + … + k_r.",
          "k_1 + k_2 + … + k_r = n", "the sizes of the groups of equal eigenvalues of A add up to n (§10 writes "
          "“k_1 + k_2 + ⋯ + k_l = r.” with its “=”)."),
-    Slip("6", "the end of the proof of Lemma 6.3 and the paragraph after it", "1474–1479, 1491",
+    Slip("6", "the paragraph “Singular matrices A and the Einstein metrics” (§6)", "1474–1479, 1491",
          "the number of distinct eigenvalues of A called r (k_r, so(k_r), SO(k_r))", "another letter",
          "r is the rank of the Stiefel variety in the same passage, about Θ(T*V_{n,r}); §10 calls the number "
          "of blocks l.", probable=True),
-    Slip("6", "the paragraph after the proof of Lemma 6.3", "1484",
+    Slip("6", "the paragraph “Singular matrices A and the Einstein metrics” (§6)", "1484",
          "“By modifying the proof of Lemma 6.2 and Bolsinov's Theorem 1.5”", "Lemma 6.3",
          "the completeness on Θ(T*V) is what Lemma 6.3 proves, through (A1) and (A2); Lemma 6.2 computes the "
          "dimension of the leaves (the sentence may also mean the kernel computation in the proof of Lemma 6.2).",
