@@ -54,8 +54,13 @@ def load(files: PathLike | Iterable[PathLike] = (), catalog: bool | None = None,
             merged.add(c)
             origin[c.id] = str(f)
     merged.origin = origin
-    if catalog or (catalog is None and not paths):
-        for c in load_catalog():
+    with_catalog = catalog or (catalog is None and not paths)
+    cat = load_catalog() if paths or with_catalog else None
+    if paths and cat is not None:
+        # a claim of a file with a catalog claim's id: its results say so (Result.shadows)
+        merged.mark_shadowing(cat.ids())
+    if cat is not None and with_catalog:
+        for c in cat:
             if c.id not in merged:
                 merged.add(c)
     return merged

@@ -455,14 +455,25 @@ class Registry:
         self.reviewed = reviewed
         #: the file each claim of a user's file comes from (claim id -> path), for messages and rerun commands
         self.origin: dict[str, str] = {}
+        #: the claims of a user's file that have the id of a catalog claim (and replace it in a run)
+        self.shadowing: set[str] = set()
 
     def rerun_naming_file(self, result: Any) -> None:
         """The result's rerun command with ``--claims FILE`` added, for a claim of a user's file (the command
-        finds the claim there only)."""
+        finds the claim there only); a result of a claim that has a catalog claim's id is marked so
+        (``Result.shadows``): its identity is the file's claim's, and the reports file it under its file."""
         path = self.origin.get(result.claim)
         if path is not None and result.rerun and "--claims" not in result.rerun:
             import shlex
             result.rerun += " --claims " + shlex.quote(path)
+        if path is not None and result.claim in self.shadowing:
+            result.shadows = True
+
+    def mark_shadowing(self, catalog_ids: Iterable[str]) -> set[str]:
+        """Note (and return) the claims of the users' files here whose ids are among ``catalog_ids``."""
+        ids = set(catalog_ids)
+        self.shadowing = {cid for cid in self.origin if cid in ids}
+        return self.shadowing
 
     def add(self, c: Claim) -> Claim:
         if c.id in self._claims:

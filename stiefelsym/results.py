@@ -100,6 +100,10 @@ class Result:
     #: and its realization of T*V: part of what the verdict is about, bound to the claim like its words
     expect: str = "holds"
     realization: str = "standard"
+    #: of a claim of a claims file that has the id of a catalog claim (and replaced it in the run): the record is the
+    #: file's claim, not the paper's statement of that id, and the reports file it under its claims file.  Written
+    #: only when true (a record of the catalog, or of a claim of a file with an id of its own, has no such key)
+    shadows: bool = False
 
     @property
     def size(self) -> str:
@@ -162,6 +166,8 @@ class Result:
         handed out as they are, to be read, not changed."""
         d = asdict(replace(self, certificate_data=None))
         d["certificate_data"] = self.certificate_data
+        if not self.shadows:
+            del d["shadows"]
         return d
 
     @classmethod
@@ -230,7 +236,7 @@ def dump_results(results: Iterable[Result], meta: dict[str, Any]) -> str:
 
 def _record(r: Result) -> dict[str, Any]:
     """The fields of a record as to_json gives them, without copying (only to be encoded)."""
-    d = {f: getattr(r, f) for f in _FIELDS}
+    d = {f: getattr(r, f) for f in _FIELDS if f != "shadows" or r.shadows}
     d["checks"] = [asdict(c) for c in r.checks]
     return d
 
@@ -387,6 +393,7 @@ _FIELD_TYPES: tuple[tuple[str, Callable[[Any], bool], str], ...] = (
     ("certificate", lambda x: type(x) is str, "a string"), ("rerun", lambda x: type(x) is str, "a string"),
     ("message", lambda x: type(x) is str, "a string"), ("erratum", lambda x: type(x) is str, "a string"),
     ("place", lambda x: type(x) is str, "a string"), ("slips", _strings, "a list of strings"),
+    ("shadows", lambda x: type(x) is bool, "true or false"),
     ("digest", lambda x: type(x) is str, "a string"),
     ("residual", lambda x: x is None or type(x) is str, "a string or null"),
     ("false_pass_bound", lambda x: x is None or (_number(x) and 0 <= x <= 1), "a probability or null"),

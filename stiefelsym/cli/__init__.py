@@ -334,14 +334,17 @@ def claims_paths(paths: Sequence[str]) -> list[str]:
         raise InputError(str(exc)) from None
 
 
-def _shadowing_note(user: Registry) -> None:
-    """Warn (stderr) about a claim of the user's files that has the id of a catalog claim."""
-    try:
-        catalog_ids = set(load_catalog().ids())
-    except (ImportError, CatalogError, ValueError):
-        return
+def _shadowing_note(user: Registry, catalog_ids: Sequence[str] | None = None) -> None:
+    """Warn (stderr) about a claim of the user's files that has the id of a catalog claim, and mark it so in
+    ``user`` (:meth:`Registry.mark_shadowing`: its records say that they are the file's claim, not the catalog's)."""
+    if catalog_ids is None:
+        try:
+            catalog_ids = load_catalog().ids()
+        except (ImportError, CatalogError, ValueError):
+            return
+    shadowing = user.mark_shadowing(catalog_ids)
     for cid in user.ids():
-        if cid in catalog_ids:
+        if cid in shadowing:
             click.echo(f"warning: claim {cid!r} of {user.origin[cid]} has the id of a catalog claim "
                        "and replaces it in this run; give it an id of its own", err=True)
 
@@ -379,13 +382,18 @@ def _registry(claims_files: str | Sequence[str] | None, ids: Sequence[str] = (),
     merged = Registry()
     for c in user:
         merged.add(c)
+    _shadowing_note(user, catalog.ids())
     for c in catalog:
-        if c.id in merged:
-            click.echo(f"warning: claim {c.id!r} of {user.origin[c.id]} has the id of a catalog claim "
-                       "and replaces it in this run; give it an id of its own", err=True)
-        else:
+        if c.id not in merged:
             merged.add(c)
+    merged.shadowing = user.shadowing
     return merged, user
+
+
+def _record_ids(records: Sequence[dict]) -> list[str]:
+    """The claim ids of a results file's records, in order: with claims files, those the registry must hold (the
+    files' claims, and the catalog's that the run verified beside them)."""
+    return list(dict.fromkeys(r["claim"] for r in records if isinstance(r, dict) and type(r.get("claim")) is str))
 
 
 def _lookup(registry: Registry, cid: str) -> Claim:
@@ -1186,7 +1194,7 @@ def report(results_file: Path | None, report_dir: Path | None, claims_files: tup
         raise InputError(f"{source} is not a stiefelsym results file: {_one_line(exc)}") from None
     from stiefelsym.run.integrity import (MAX_N_CHECKED, certificate_binding_problems, certificate_problems, claim_field_edits,
                             declared_edits, record_graph, small_witness_edited,
-                            missing_runs, rerun_problems, run_origin, size_method_problems,
+                            missing_runs, rerun_problems, run_origin, shadowing_problems, size_method_problems,
                             unbound_graphs, unstated_runs)
     from stiefelsym.methods.hard import HARD_CASES
     from stiefelsym.results import meta_problems
@@ -1205,12 +1213,20 @@ def report(results_file: Path | None, report_dir: Path | None, claims_files: tup
                          "(`stiefelsym check` re-checks every record)")
     files = recorded_claims_files(claims_files, meta)
     # a user's claims traced at the records' sizes: each record is bound to its claim's graph there (below)
-    registry, user = _registry(files or None, (), sorted({(r.n, r.r) for r in results if type(r.n) is int
+    # the claims of the records: those of the files, and the catalog's where the run named some beside them
+    registry, user = _registry(files or None, _record_ids(records), sorted({(r.n, r.r) for r in results if type(r.n) is int
                                                            and type(r.r) is int}) if files else ())
     reruns = rerun_problems(records, meta, run_origin(user.origin if user is not None else None, files, meta))
     if reruns:
         raise InputError(f"{source}: refused, {len(reruns)} record(s) whose rerun command is not their own: "
                          f"{reruns[0]} (`stiefelsym check` re-checks every record)")
+    shadowing = user.shadowing if user is not None else set()
+    shadows = shadowing_problems(records, shadowing)
+    if shadows:
+        raise InputError(f"{source}: refused, {len(shadows)} record(s) whose claim is not what they say: {shadows[0]} "
+                         "(`stiefelsym check` re-checks every record)")
+    for r in results:   # (a record written before records carried the flag is given the one the claims say)
+        r.shadows = r.claim in shadowing
     for r, record in zip(results, records):
         cid = getattr(r, "claim", None)
         if cid not in registry:

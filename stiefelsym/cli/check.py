@@ -13,7 +13,7 @@ from pathlib import Path
 
 import click
 
-from stiefelsym.cli import InputError, _registry, recorded_claims_files, require_results_file, standalone_command
+from stiefelsym.cli import InputError, _record_ids, _registry, recorded_claims_files, require_results_file, standalone_command
 from stiefelsym.methods.hard import HARD_CASES
 from stiefelsym.run.integrity import MAX_N_CHECKED, check_results, run_origin
 from stiefelsym.results import json_kind, meta_problems, parse_json
@@ -63,7 +63,8 @@ def check(results_file: Path, no_rerun: bool, claims_files: tuple[str, ...]) -> 
                                                          "the run that wrote the file)"), err=True)
     # the sizes the records were run at: a user's claims are traced there (in child processes)
     sizes = [(r.get("n"), r.get("r")) for r in records]
-    registry, user = _registry(files or None, (), [(n, r) for n, r in sizes if type(n) is int and type(r) is int])
+    registry, user = _registry(files or None, _record_ids(records),
+                               [(n, r) for n, r in sizes if type(n) is int and type(r) is int])
     bad = check_results(records, registry, echo=click.echo, rerun=not no_rerun, hard=meta.get("hard"), meta=meta,
                         origin=run_origin(getattr(user, "origin", None), files, meta))
     raise SystemExit(1 if bad else 0)

@@ -248,6 +248,9 @@ class ClaimResults:
         self.statement = first.statement
         self.expect = first.expect
         self.realization = first.realization
+        #: a claim of a claims file with the id of a catalog claim: shown as the file's claim, under its file
+        self.shadows = bool(first.shadows)
+        self.claims_file = claims_file_of(first)
         self.printed: list[Result] = []
         self.variants: dict[str, list[Result]] = {}
 
@@ -316,6 +319,46 @@ def _section_key(section: str) -> tuple:
     return (section == "",) + tuple((0, int(p)) if p.isdigit() else (1, p) for p in parts)
 
 
+def claims_file_of(r: Result) -> str:
+    """The claims file a record's rerun command names (``--claims FILE``), "" for a record of the catalog."""
+    try:
+        words = shlex.split(r.rerun or "")
+    except ValueError:
+        return ""
+    return next((words[i + 1] for i, w in enumerate(words[:-1]) if w == "--claims"), "")
+
+
+def _file_name(path: str) -> str:
+    return path.replace("\\", "/").rstrip("/").rsplit("/", 1)[-1] or path
+
+
+#: the key of the group of a claims file's claims that have catalog claims' ids (never a section: sections are
+#: letters, digits, dots and hyphens), followed by the file's path
+SHADOW_GROUP = "claims file: "
+
+
+def group_of(c: "ClaimResults") -> str:
+    """Where a claim is shown: its section (its record's), or, for a claims file's claim with the id of a catalog
+    claim, the group of its file, whatever section its own labels give it (the catalog's section of that id is
+    the paper's statement's, not the file's)."""
+    return SHADOW_GROUP + c.claims_file if c.shadows else (c.section or "")
+
+
+def shadow_words(c: "ClaimResults") -> str:
+    """What a reader is told of a claims file's claim with the id of a catalog claim ("" for any other)."""
+    if not c.shadows:
+        return ""
+    where = _file_name(c.claims_file) if c.claims_file else "a claims file"
+    return (f"A claim of {where}, not of the paper's catalog: it has the id of a catalog claim, which it replaced in "
+            "this run (it shadows it). Its statement, labels and verdicts are the file's own; they are not the "
+            "paper's statement of that id, which this run did not verify.")
+
+
+def _shadow_tag(c: "ClaimResults") -> str:
+    """After a claim's id in a list: whose claim it is, for a claims file's claim with a catalog claim's id."""
+    return f" (the claim of {_file_name(c.claims_file) or 'a claims file'}, not the catalog's)" if c.shadows else ""
+
+
 def readable_results(results: Iterable[Result]) -> list[Result]:
     """Copies of the catalog's records whose words cite the paper by its printed numbers ((5) §4, Theorem 4.4)
     where they name its label keys ((dot_XP3*), Theorem man-dual): what a reader looks up
@@ -335,17 +378,20 @@ def group_by_claim(results: Iterable[Result]) -> list[ClaimResults]:
         if r.claim not in out:
             out[r.claim] = ClaimResults(r)
         out[r.claim].add(r)
-    return sorted(out.values(), key=lambda c: _section_key(c.section))
+    # a claims file's claims with catalog claims' ids last, by file (never among the paper's sections)
+    return sorted(out.values(), key=lambda c: (c.shadows, c.claims_file if c.shadows else "", _section_key(c.section)))
 
 
 def group_by_section(claims: list[ClaimResults]) -> list[tuple[str, list[ClaimResults]]]:
     secs: dict[str, list[ClaimResults]] = {}
     for c in claims:
-        secs.setdefault(c.section or "", []).append(c)
+        secs.setdefault(group_of(c), []).append(c)
     return list(secs.items())
 
 
 def _section_heading(section: str, meta: dict[str, Any]) -> str:
+    if section.startswith(SHADOW_GROUP):
+        return f"Claims of {_file_name(section[len(SHADOW_GROUP):]) or 'a claims file'} with the ids of catalog claims"
     if not section:
         return "Claims outside the paper's sections"
     name = (meta.get("sections") or {}).get(section, "")
@@ -733,7 +779,8 @@ def render_junit(results: Sequence[Result], meta: dict[str, Any] | None = None) 
                       time=f"{sum(r.seconds for r in results):.3f}")
     by_section: dict[str, list[Result]] = {}
     for r in results:
-        by_section.setdefault(r.section or "", []).append(r)
+        # a claims file's claim with a catalog claim's id is not filed under the paper's section of that id
+        by_section.setdefault("" if r.shadows else r.section or "", []).append(r)
     for sec, rs in sorted(by_section.items(), key=lambda kv: _section_key(kv[0])):
         suite = ET.SubElement(root, "testsuite", name=f"section {sec}" if sec else "other",
                               tests=str(len(rs)), failures=str(failures(rs)), errors=str(errors(rs)),
@@ -914,7 +961,7 @@ def render_markdown(results: Sequence[Result], meta: dict[str, Any] | None = Non
                                        else f"**{unexpected} verdicts not as expected.**"), ""]
     if errata:
         out += ["Fails as printed:", ""]
-        out += [f"- `{c.id}` {_placed(c, _md_escape(labels(c.paper)), lambda s: _md_escape(unicode_words(s)))}"
+        out += [f"- `{c.id}`{_md_escape(_shadow_tag(c))} {_placed(c, _md_escape(labels(c.paper)), lambda s: _md_escape(unicode_words(s)))}"
                 + _md_escape(_listed_correction(c, unicode_words, errata if not meta.get("claims_files") else ()))
                 for c in errata]
         out += [""]
@@ -933,7 +980,8 @@ def render_markdown(results: Sequence[Result], meta: dict[str, Any] | None = Non
 
     out += ["## Errata", ""]
     out += _errata_body(claims, _md_escape, _md_erratum,
-                        lambda c: [f"### `{c.id}` {_md_escape(labels(c.paper))}", ""] + _md_corrections(c))
+                        lambda c: [f"### `{c.id}` {_md_escape(labels(c.paper))}", ""]
+                        + ([f"**{_md_escape(shadow_words(c))}**", ""] if c.shadows else []) + _md_corrections(c))
     out += _md_typo_section(slips)
     out += _md_spelling_section(spelling)
 
@@ -952,7 +1000,7 @@ def render_markdown(results: Sequence[Result], meta: dict[str, Any] | None = Non
     out += ["For each claim as printed: the verdict of the dimension-free method (all n, r "
             "at once), then the runs at fixed sizes (n, r) by verdict.", ""]
     out += _md_table(["claim", "paper", "§", "kind"] + present + ["status"],
-                     [[f"`{c.id}`", _md_cell(labels(c.paper)), c.section or "–", c.kind]
+                     [[f"`{c.id}`", _md_cell(labels(c.paper)), "–" if c.shadows else c.section or "–", c.kind]
                       + [str(k or "") for k in counts] + [status if status == "as expected"
                                                           else f"**{status}**"]
                       for c, counts, status in rows],
@@ -972,6 +1020,8 @@ def render_markdown(results: Sequence[Result], meta: dict[str, Any] | None = Non
 
 def _md_claim(c: ClaimResults) -> list[str]:
     out = [f"### `{c.id}` {_md_escape(labels(c.paper))}".rstrip(), ""]
+    if c.shadows:
+        out += [f"**{_md_escape(shadow_words(c))}**", ""]
     if c.title:
         out += [_md_paragraph(c.title), ""]
     st = _md_statement(c.statement)
@@ -1036,7 +1086,7 @@ def _erratum_note(c: ClaimResults, facts: dict[str, Any], escape=lambda s: s, co
     ``words`` the place of the misprint)."""
     w = c.failures[0]
     where = (f"Appendix {c.section[1:]}, " if c.section.startswith("A") else f"§{c.section}, ") \
-        if c.section and not all(p in paperref.table() for p in c.paper) else ""
+        if c.section and not c.shadows and not all(p in paperref.table() for p in c.paper) else ""
     at = f"{where}{labels(c.paper)}".removesuffix(", ")
     if c.place:
         # the misprint sits beside the labelled statements (in a proof, a remark, a paragraph): named first, so
@@ -1082,6 +1132,8 @@ def _errata_body(claims: list[ClaimResults], escape: Callable[[str], str], errat
 def _md_erratum(c: ClaimResults) -> list[str]:
     facts = _erratum_facts(c)
     out = [f"### `{c.id}` {_md_escape(labels(c.paper))}".rstrip(), ""]
+    if c.shadows:
+        out += [f"**{_md_escape(shadow_words(c))}**", ""]
     out += [f"**{_note_heading(c)}** "
             f"{_md_escape(_erratum_note(c, facts, correction=lambda v: _with_change(c, v, note=True), words=unicode_words))}",
             ""]
@@ -1268,7 +1320,7 @@ def _count_witness_text(c: ClaimResults, r: Result, w: dict[str, Any], escape: A
     statement is about a kernel (``KERNEL``, see :func:`count_kernel`), the paper's quantity, the number of
     unknowns minus each rank, with the two ranks of the check (the numbers the engine computed) beside it."""
     head = "**A witness to check by hand:** " if escape is _md_words else ""
-    kernel = count_kernel(c.id)
+    kernel = None if c.own else count_kernel(c.id)
     # a rank computed at an exact point bounds the generic rank from below only: a rank above the printed one
     # refutes it, and says no more than "at least" (the kernel: "at most")
     lower = any(ch.name == w["check"] and "so rank >= " in (ch.detail or "") for ch in r.checks)
@@ -1314,8 +1366,10 @@ def _entry_words(entry: str, realified: str = "") -> str:
 
 
 def _has_script(c: ClaimResults) -> bool:
+    """Whether a witness script is written for the claim: a template of the catalog's claim of its id recomputes the
+    paper's formula, never a claims file's claim's (which may have that id; its scripts are not written)."""
     from stiefelsym.methods.witness_scripts import template
-    return template(c.id) is not None
+    return not c.own and template(c.id) is not None
 
 
 #: a claim's own parameter named by a Greek letter's name is written as that letter
@@ -1505,8 +1559,23 @@ def headline(claims: list[ClaimResults], paper: bool = True) -> tuple[str, list[
                if nowhere else "")
             + f"and {len(errata)} {'fails' if len(errata) == 1 else 'fail'} as printed{_misprint_words(errata) if paper else ''}"
             f"{_errata_words(errata)} ({_corrections_proved_words(corrected_free, errata if paper else [])})."
-            + (_slips_words(errata) if paper else ""))
+            + (_slips_words(errata) if paper else "") + _shadowing_words(claims))
     return text, errata
+
+
+def _shadowing_words(claims: list[ClaimResults]) -> str:
+    """The headline's sentence on the claims of claims files that have catalog claims' ids ("" without one): what
+    their verdicts are about, so that none is read as a verdict on the paper's statement of that id."""
+    shadows = [c for c in claims if c.shadows]
+    if not shadows:
+        return ""
+    one = len(shadows) == 1
+    ids = ", ".join(c.id for c in shadows[:5]) + (f" and {len(shadows) - 5} more" if len(shadows) > 5 else "")
+    return (f" {len(shadows)} of the claims verified ({ids}) {'is a claim' if one else 'are claims'} of a claims file "
+            f"with the id of a catalog claim, which {'it' if one else 'they'} replaced in this run: "
+            f"{'its verdicts are' if one else 'their verdicts are'} about the file's "
+            f"{'statement' if one else 'statements'}, not the paper's (see the section of "
+            f"{'its' if one else 'their'} claims file).")
 
 
 def _slips_words(errata: list[ClaimResults]) -> str:
@@ -1874,7 +1943,8 @@ def render_latex(results: Sequence[Result], meta: dict[str, Any] | None = None, 
               if not unexpected else f"\\textbf{{{unexpected} verdicts not as expected.}}"), ""]
     if errata and not detail:
         out += [tex_escape("Fails as printed:")]
-        out += _tex_items([r"\texttt{" + tex_escape(c.id) + "} " + _placed(c, tex_labels(c.paper), tex_words)
+        out += _tex_items([r"\texttt{" + tex_escape(c.id) + "}" + tex_escape(_shadow_tag(c)) + " "
+                           + _placed(c, tex_labels(c.paper), tex_words)
                            + _listed_correction(c, tex_words, errata if not meta.get("claims_files") else ())
                            for c in errata])
     if not detail:
@@ -1938,7 +2008,7 @@ def _tex_claim_table(claims: list[ClaimResults]) -> list[str]:
     for c, counts, status in rows:
         out.append(" & ".join([r"\texttt{" + tex_escape(c.id).replace("-", r"-\allowbreak{}") + "}",
                                tex_labels(c.paper),
-                               tex_escape(c.section or "--")]
+                               tex_escape("--" if c.shadows else c.section or "--")]
                               + [tex_escape(str(k or "")) for k in counts]
                               + [tex_escape(status) if status == "as expected"
                                  else rf"\textbf{{{tex_escape(status)}}}"])
@@ -2021,7 +2091,9 @@ def _brief_reason(message: str | None) -> str:
 
 
 def _tex_claim_heading(c: ClaimResults) -> str:
-    return r"\subsection*{\texttt{" + tex_escape(c.id) + "} " + tex_labels(c.paper) + "}"
+    heading = r"\subsection*{\texttt{" + tex_escape(c.id) + "} " + tex_labels(c.paper) + "}"
+    # a claims file's claim with a catalog claim's id says whose it is, wherever its heading stands
+    return heading + ("\n" + r"\textbf{" + tex_escape(shadow_words(c)) + "}\n" if c.shadows else "")
 
 
 def _tex_claim(c: ClaimResults) -> list[str]:

@@ -149,6 +149,18 @@ def declared_edits(record: dict, claim: Any, policy: Callable | None = None) -> 
     return out
 
 
+def shadowing_problems(records: list[dict], shadowing: set[str]) -> list[str]:
+    """The records whose flag ``shadows`` (a claim of a claims file with the id of a catalog claim, which the
+    reports file under its claims file, not under the paper's statement of that id) is not what the claims
+    loaded now say: ``shadowing``, the ids of the users' claims that have a catalog claim's id
+    (:meth:`stiefelsym.claims.Registry.mark_shadowing`).  A record without the flag (written before records carried
+    it) is given the flag the claims loaded now say by ``stiefelsym report``, which reads records through
+    :class:`~stiefelsym.results.Result` (the flag written only when true: one taken off is given back there too)."""
+    return [f"{_where_run(r)}: it says its claim {'is' if r.get('shadows') else 'is not'} a claims file's claim with "
+            f"the id of a catalog claim, and the claims loaded now say otherwise"
+            for r in records if "shadows" in r and bool(r.get("shadows")) != (r.get("claim") in shadowing)]
+
+
 def _evidence_edits(record: dict, again: dict) -> list[str]:
     """The evidence fields of a decided record that differ from a run again (none for a verdict that
     depends on time: inconclusive, error)."""
@@ -528,7 +540,10 @@ def small_witness_edited(record: dict, claim: Claim, func: Callable | None) -> b
         if template_size(cid) != (record.get("n"), record.get("r")) or not claim.reviewed:
             return True     # a count witness is attached to a catalog claim at its template's size only
         return values != stated or template_counts(cid) != stated
-    found = small_witness(claim, record.get("n"), record.get("r"), func, check=template_check(str(record.get("claim"))))
+    # the template's check is the catalog claim's (a claim of a file with its id searched at no particular check,
+    # as attach_small_witnesses searched it)
+    found = small_witness(claim, record.get("n"), record.get("r"), func,
+                          check=template_check(str(record.get("claim"))) if claim.reviewed else None)
     return found is None or _canonical(encoded(found)) != _canonical(small)
 
 
@@ -577,6 +592,9 @@ def check_results(records: list[dict], registry: Registry, echo: Callable[[str],
             echo(f"REJECTED {p}")
             bad += 1
     for p in rerun_problems(records, meta, origin):
+        echo(f"REJECTED {p}")
+        bad += 1
+    for p in shadowing_problems(records, getattr(registry, "shadowing", set())):
         echo(f"REJECTED {p}")
         bad += 1
     unstated = unstated_records(records, registry, meta)
