@@ -236,3 +236,16 @@ def test_a_catalog_run_has_no_flag_and_renders_as_before():
     assert "shadows" not in r.to_json() and '"shadows"' not in dump_results([r], {})
     r.shadows = True
     assert r.to_json()["shadows"] is True and '"shadows": true' in dump_results([r], {})
+
+
+def test_a_files_claim_keeps_its_own_slips(tmp_path):
+    """The identity a file's decorator gives a claim reaches its records whole: its slips too (they were lost on
+    the way from the file's interpreter)."""
+    from stiefelsym.run.userfile import load_claims_isolated
+    f = tmp_path / "slips.py"
+    f.write_text('from stiefelsym import admissible, claim\n\n\n'
+                 '@claim("my-slip", kind="id", sizes=admissible(n_max=2), fails_at=lambda n, r: r >= 2,\n'
+                 '       erratum="mine fails", slips=("my own slip of a passage",))\n'
+                 'def mine(s):\n    """Mine."""\n    return {"w": s.X.T @ s.P}\n', encoding="utf-8")
+    (c,) = list(load_claims_isolated(f, []))
+    assert c.slips == ("my own slip of a passage",) and not c.reviewed

@@ -180,6 +180,13 @@ def _loads(data: bytes) -> Any:
         raise WireError(f"not JSON: {exc}") from None
 
 
+def _slips(v: list) -> tuple[str, ...]:
+    """A claim's slips of the paper, as the file's decorator gave them (strings; the claim validates them)."""
+    if not all(type(x) is str for x in v):
+        raise WireError("a slip that is not a string")
+    return tuple(v)
+
+
 def _get(d: Any, key: str, *types_: type, optional: bool = False) -> Any:
     if type(d) is not dict:
         raise WireError("a record that is not a mapping")
@@ -302,7 +309,8 @@ def _claim_data(c: Claim, needed: Sequence[tuple[int, int]] = ()) -> dict:
         "id": c.id, "paper": list(c.paper), "kind": c.kind, "section": c.section, "statement": c.statement,
         "title": c.title, "realization": c.realization, "expect": c.expect, "exact_max_n": c.exact_max_n,
         "exact_max_r": [list(p) for p in c.exact_max_r], "exact_corank": [list(p) for p in c.exact_corank],
-        "erratum": c.erratum, "place": c.place, "equivariance": c.equivariance, "source": c.source, "path": path,
+        "erratum": c.erratum, "place": c.place, "slips": [str(x) for x in c.slips], "equivariance": c.equivariance,
+        "source": c.source, "path": path,
         "line": line if type(line) is int else 0, "name": getattr(c.func, "__name__", c.id),
         "sizes": {"list": [list(p) for p in listed], "n_min": spec.n_min, "r_min": spec.r_min,
                   "r_max": spec.r_max, "n_max": spec.n_max, "r_is_n": bool(spec.r_is_n),
@@ -1039,6 +1047,7 @@ def _claim(d: Any, path: str, confinement: str = "namespaces") -> Claim:
               corrections=corrections, source=_get(d, "source", str),
               fails_at=None if fails is None else _Lookup("erratum sizes (fails_at)", fails),
               erratum=_get(d, "erratum", str), place=_get(d, "place", str, optional=True) or "",
+              slips=_slips(_get(d, "slips", list, optional=True) or []),
               equivariance=_get(d, "equivariance", str), reviewed=False)
     for f in [c.func] + [k.func for k in corrections]:
         f.loaded_from = path             # the file this process loaded (not what the file's code says of itself)
