@@ -1500,9 +1500,12 @@ class FreeScene(PaperObjects):
         """What the graph may compute of the flows and brackets here (see :mod:`stiefelsym.ir.derivative`):
         the bracket, as the derivative along the Dirac flow, which the scene solves (and the magnetic
         bracket of :mod:`stiefelsym.twisted`, along the scene's own magnetic flow), and the derivative at its own
-        point of :mod:`stiefelsym.systems`, along the tangent vector."""
-        from stiefelsym.ir.derivative import BRACKET_ALONG_FLOW, POINT_DERIVATIVES, SYSTEMS_OWN, TWISTED_ALONG_FLOW
-        return frozenset({BRACKET_ALONG_FLOW, TWISTED_ALONG_FLOW, SYSTEMS_OWN, POINT_DERIVATIVES})
+        point of :mod:`stiefelsym.systems`, along the tangent vector; a derivative nested in the function of
+        another, as nodes over the enclosing function's scene (the scene's dual numbers do not nest: a tangent
+        scene's primitives are the letters X, P moved once)."""
+        from stiefelsym.ir.derivative import (BRACKET_ALONG_FLOW, NESTED_DERIVATIVES, POINT_DERIVATIVES, SYSTEMS_OWN,
+                                              TWISTED_ALONG_FLOW)
+        return frozenset({BRACKET_ALONG_FLOW, TWISTED_ALONG_FLOW, SYSTEMS_OWN, POINT_DERIVATIVES, NESTED_DERIVATIVES})
 
     def _share(self, base: "FreeScene") -> None:
         """What a scene made from ``base`` (its tangent scene, a function's scene) shares with it: the

@@ -140,8 +140,43 @@ def derivatives(g: Graph, flows: frozenset = frozenset()) -> Graph:
     out = g.cache.get(key)
     if out is None:
         out, report = _transform(g, frozenset(flows))
+        if NESTED_DERIVATIVES in flows and any(nm == "d" and why in _NESTING for _, nm, why in report):
+            out, report = _nested(out, report, frozenset(flows))
         g.cache[key], g.cache[key + ":report"] = out, report
     return out
+
+
+#: what a scene says (``_graph_flows``) when a derivative along a flow nested in the function of another
+#: derivative may be graph nodes (:func:`_nested`): the inner derivative written as nodes over the enclosing
+#: function's scene, then differentiated with them along the outer flow (the tangent map of the tangent map)
+NESTED_DERIVATIVES = "derivatives nested in derivatives"
+#: the flag of the passes that rewrite the ``d`` nodes of a function's scene (see :func:`_nested`)
+_NESTED_PASS = "a pass over the derivatives inside functions"
+#: the reasons the first pass gives for the derivatives :func:`_nested` may rewrite
+_NESTING = ("a derivative on a scene other than the claim's (inside a function of the scene)",
+            "s.d inside the function (a nested derivative along a flow)")
+
+
+def _nested(g: Graph, report: list, flows: frozenset) -> tuple[Graph, list]:
+    """The graph ``g`` (the first pass's) with its nested derivatives rewritten from the inside out: each pass
+    writes every ``d`` node whose function holds no derivative as nodes, a derivative on a function's scene
+    too (its tangent step reads the function's scene), and the next pass differentiates those nodes along the
+    enclosing derivative's flow (a tangent step's components move as the flow's components do).  Kept only when
+    every tangent step of the result is the claim's own (no derivative left inside a function the scene
+    evaluates, a Hamiltonian say): otherwise the first pass's graph, where the scene differentiates as before."""
+    out, inner = g, flows | {_NESTED_PASS}
+    for _ in range(16):
+        nxt, _report = _transform(out, inner)
+        if nxt is out:
+            break
+        out = nxt
+    probe = Graph()
+    probe.cache["flows"] = flows
+    if out is g or any(op == "prim" and type(a[0]) is Named and a[0].qualname == TANGENT
+                       and not _claim_scene(out, a[1], probe, True) for op, a in zip(out.ops, out.args)):
+        return g, report
+    left = any(op == "call" and a[1] == "d" for op, a in zip(out.ops, out.args))
+    return out, [(i, nm, None if nm == "d" and why in _NESTING and not left else why) for i, nm, why in report]
 
 
 def coverage(g: Graph, name: str = "d", flows: frozenset = POINT_FLOWS) -> list[tuple[int, str | None]]:
@@ -185,10 +220,14 @@ def _transform(g: Graph, flows: frozenset = frozenset()) -> tuple[Graph, list]:
         new.ops, new.args = g.ops[:start], g.args[:start]
         new.index = dict(itertools.islice(g.index.items(), start))
         remap.update((i, _ref(i)) for i in range(start))
+    nested = _NESTED_PASS in flows      # only the derivatives along flows (see :func:`_nested`)
     for i in range(start, len(g.ops)):
         op, a = g.ops[i], g.args[i]
         rewrite = None
-        if op == "call" and a[1] in _PASSES:
+        if nested:
+            if op == "call" and a[1] == "d":
+                rewrite = _Derivative
+        elif op == "call" and a[1] in _PASSES:
             rewrite = _PASSES[a[1]]
         elif op == "call" and a[1] in _FLOW_PASSES:
             if a[1] in flows:
@@ -288,7 +327,10 @@ class _Derivative:
             f, flow = args
         else:
             flow = None                     # made by :meth:`make_flow` when the derivative is built
-        if not _claim_scene(g, scene, new, name == "d"):
+        if not (_claim_scene(g, scene, new, name == "d") or (
+                name == "d" and _NESTED_PASS in new.cache.get("flows", ()) and type(scene) is Ref
+                and g.ops[scene.i] == "scene")):
+            # (a pass over nested derivatives: one on a function's scene too, see :func:`_nested`)
             raise Unsupported(f"{_WHAT.get(name, 'a derivative')} on a scene other than the claim's (inside a "
                               "function of the scene)")
         if type(f) is not Ref or g.ops[f.i] != "fn" or (flow is not None and type(flow) is not Ref):
@@ -339,6 +381,13 @@ class _Derivative:
             return self.add("call", (self.S, "const", (0,), ()))
         if op in ("list", "tuple", "dict"):
             return self.hand_on(None, j)
+        if op == "item" and type(a[0]) is Ref and g.ops[a[0].i] in ("list", "tuple", "dict"):
+            # a part of a container (the value of a nested derivative, paired with its tangent step): its zero
+            parts, key = g.args[a[0].i], a[1]
+            if g.ops[a[0].i] == "dict" and key in parts[0]:
+                return self.zero(parts[1][parts[0].index(key)])
+            if g.ops[a[0].i] != "dict" and type(key) is int and -len(parts) <= key < len(parts):
+                return self.zero(parts[key])
         if op == "attr":
             numeric = a[1] in MATRICES or a[1] in NUMBERS or a[1] in ("Xdot", "Pdot")
         elif op == "call":
@@ -479,6 +528,8 @@ class _Derivative:
             base, key = a
             if type(base) is Ref and g.ops[base.i] in ("list", "tuple", "dict"):
                 return (op,)
+            if type(base) is Ref and self._tangent_of_own(base.i):
+                return (op,)                # a component of a flow, read by a nested derivative
             if type(base) is Ref and g.ops[base.i] == "attr" and g.args[base.i][1] == "a":
                 return None                 # an eigenvalue of A
             raise Unsupported("a part of an engine value that moves with the point")
@@ -493,12 +544,32 @@ class _Derivative:
             return (op,)                    # 𝔸 linear with constant coefficients: d𝔸(x) = 𝔸(dx)
         if op == "prim" and type(a[0]) is Named and a[0].qualname == SOLVE:
             return ("solve",)               # x = C⁻¹b: dx = C⁻¹(db − dC·x)
+        if self._tangent_of_own(j):
+            # a derivative nested in this one, written as nodes (see :func:`_nested`): its tangent step reads
+            # the components of its flow, which move as the flow's parts do (a flow given by its parts)
+            flow = a[2]
+            if not self.moves(flow):
+                return None
+            if type(flow) is not Ref or g.ops[flow.i] != "dict":
+                raise Unsupported("a derivative nested in the function along a flow that moves with the point "
+                                  "and is not given by its components")
+            return ("tangent",)
         if op == "prim" and type(a[0]) is Named and a[0].qualname == SYM_COORDS:
             return ("linear",)              # a linear step of its matrix
         if op in ("prim", "apply"):
             what = a[0].qualname.rsplit(".", 1)[-1] if op == "prim" and type(a[0]) is Named else "an operator"
             raise Unsupported(f"an engine step ({what}) that moves with the point")
         raise Unsupported(f"a {op} inside the function")
+
+    def _tangent_of_own(self, j: int) -> bool:
+        """Whether node j is the tangent step of a derivative on the function's own scene (a derivative
+        nested in this one, written as nodes by an earlier pass)."""
+        g = self.g
+        if g.ops[j] != "prim":
+            return False
+        a = g.args[j]
+        return (type(a[0]) is Named and a[0].qualname == TANGENT and len(a) == 4 and type(a[1]) is Ref
+                and g.ops[a[1].i] == "scene" and g.args[a[1].i] == (self.k,))
 
     def moves(self, a: Any) -> bool:
         """Whether an argument of the body moves with the point (reads the function's scene through
@@ -529,8 +600,8 @@ class _Derivative:
 
     def emit(self, j: int, plan: Any) -> Any:
         """Write the derivative of one node into the new graph (its arguments' derivatives written)."""
-        if plan is None or plan == ("scene",):
-            return None
+        if plan is None or plan == ("scene",) or plan == ("tangent",):
+            return None                     # (a tangent step: its components' derivatives are read by item)
         if plan[0] == "component":
             return self.resolve(plan)
         if plan[0] in ("Phi", "Psi"):
@@ -609,6 +680,9 @@ class _Derivative:
         if op == "item":
             base, key = a
             bop, ba = g.ops[base.i], g.args[base.i]
+            if bop == "prim":               # the component ``key`` of a nested derivative's flow
+                keys, vals = g.args[ba[2].i]
+                return self.dref(vals[keys.index(key)]) if key in keys else None
             if bop == "dict":
                 keys, vals = ba
                 return d(vals[keys.index(key)]) if key in keys else None
@@ -2114,6 +2188,9 @@ class _PointSecond(_PointDerivative):
         if op == "item":
             base, key = a
             bop, ba = g.ops[base.i], g.args[base.i]
+            if bop == "prim":               # the component ``key`` of a nested derivative's flow
+                keys, vals = g.args[ba[2].i]
+                return self.dref(vals[keys.index(key)]) if key in keys else None
             if bop == "dict":
                 return self.d2(ba[1][ba[0].index(key)]) if key in ba[0] else None
             return self.d2(ba[key])
