@@ -657,7 +657,8 @@ def test_what_the_scene_keeps_computing():
     s = Scene(4, 2, ModularField(P61), chart="cayley", rng=random.Random(1), realization="metric")
     assert "dirac_flow" not in scene_flows(s) and "canonical_flow" in scene_flows(s)
     assert scene_flows(FreeScene(lazy=True)) == frozenset({deriv.BRACKET_ALONG_FLOW, deriv.TWISTED_ALONG_FLOW,
-                                                           deriv.SYSTEMS_OWN, deriv.POINT_DERIVATIVES})
+                                                           deriv.SYSTEMS_OWN, deriv.POINT_DERIVATIVES,
+                                                           deriv.NESTED_DERIVATIVES})
     (_, why), = coverage(g, "dirac_flow", scene_flows(s))
     assert why is None and _agree(g, 4, 2, "metric")
     (_, why), = coverage(g, "dirac_flow", scene_flows(s) - {deriv.GRADIENT_FLOW})

@@ -1631,6 +1631,14 @@ class FreeTangentScene(FreeScene):
         record_refusal("a flow built along a tangent", self.tracker)
         raise TypeError("flows are built on the base scene, not along a tangent")
 
+    def d(self, F: Function | Any, flow: Flow | Mapping[str, Mat]) -> Any:
+        """Refused (recorded): a derivative inside a function this scene's dual numbers differentiate.  The
+        dual numbers do not nest (a tangent scene's primitives are the letters moved once, a value of it is
+        not a polynomial the derivation takes): the graph writes a nested derivative as nodes where the
+        functions allow (see :mod:`stiefelsym.ir.derivative`), and what it leaves needs fixed sizes."""
+        raise refuse("a derivative along a flow nested in a derivative, in a form the graph does not write as "
+                     "nodes (the dimension-free scene's dual numbers do not nest)", self.tracker)
+
 
 #: the letters of a point of T*V (and of a second point): a function handed to a scene gets fresh ones
 _POINT_LETTERS = (X, P, Y, Q)

@@ -175,8 +175,9 @@ def _nested(g: Graph, report: list, flows: frozenset) -> tuple[Graph, list]:
     if out is g or any(op == "prim" and type(a[0]) is Named and a[0].qualname == TANGENT
                        and not _claim_scene(out, a[1], probe, True) for op, a in zip(out.ops, out.args)):
         return g, report
-    left = any(op == "call" and a[1] == "d" for op, a in zip(out.ops, out.args))
-    return out, [(i, nm, None if nm == "d" and why in _NESTING and not left else why) for i, nm, why in report]
+    left = any(op == "call" and a[1] in ("d", "bracket") for op, a in zip(out.ops, out.args))
+    return out, [(i, nm, None if nm in ("d", "bracket") and why in _NESTING and not left else why)
+                 for i, nm, why in report]
 
 
 def coverage(g: Graph, name: str = "d", flows: frozenset = POINT_FLOWS) -> list[tuple[int, str | None]]:
@@ -227,6 +228,8 @@ def _transform(g: Graph, flows: frozenset = frozenset()) -> tuple[Graph, list]:
         if nested:
             if op == "call" and a[1] == "d":
                 rewrite = _Derivative
+            elif op == "call" and a[1] == "bracket" and BRACKET_ALONG_FLOW in flows:
+                rewrite = _BracketAlongFlow     # the derivative along the scene's own Dirac flow
         elif op == "call" and a[1] in _PASSES:
             rewrite = _PASSES[a[1]]
         elif op == "call" and a[1] in _FLOW_PASSES:
@@ -381,13 +384,12 @@ class _Derivative:
             return self.add("call", (self.S, "const", (0,), ()))
         if op in ("list", "tuple", "dict"):
             return self.hand_on(None, j)
-        if op == "item" and type(a[0]) is Ref and g.ops[a[0].i] in ("list", "tuple", "dict"):
+        if op == "item" and type(a[0]) is Ref:
             # a part of a container (the value of a nested derivative, paired with its tangent step): its zero
-            parts, key = g.args[a[0].i], a[1]
-            if g.ops[a[0].i] == "dict" and key in parts[0]:
-                return self.zero(parts[1][parts[0].index(key)])
-            if g.ops[a[0].i] != "dict" and type(key) is int and -len(parts) <= key < len(parts):
-                return self.zero(parts[key])
+            base = a[0] if g.ops[a[0].i] in ("list", "tuple", "dict") else self.container(a[0])
+            part = None if base is None else _part(g, base, a[1])
+            if part is not None:
+                return self.zero(part)
         if op == "attr":
             numeric = a[1] in MATRICES or a[1] in NUMBERS or a[1] in ("Xdot", "Pdot")
         elif op == "call":
@@ -530,6 +532,8 @@ class _Derivative:
                 return (op,)
             if type(base) is Ref and self._tangent_of_own(base.i):
                 return (op,)                # a component of a flow, read by a nested derivative
+            if type(base) is Ref and self.container(base) is not None:
+                return (op,)                # a part of a part of a container (a nested derivative's value)
             if type(base) is Ref and g.ops[base.i] == "attr" and g.args[base.i][1] == "a":
                 return None                 # an eigenvalue of A
             raise Unsupported("a part of an engine value that moves with the point")
@@ -560,6 +564,26 @@ class _Derivative:
             what = a[0].qualname.rsplit(".", 1)[-1] if op == "prim" and type(a[0]) is Named else "an operator"
             raise Unsupported(f"an engine step ({what}) that moves with the point")
         raise Unsupported(f"a {op} inside the function")
+
+    def container(self, a: Ref) -> Ref | None:
+        """The list, tuple or dict node that ``a``, a part of a part of a container (an ``item`` of an
+        ``item`` ... of a container, each key of the container), stands for (None when it is not one)."""
+        g = self.g
+        seen = 0
+        while g.ops[a.i] == "item" and seen < 64:
+            base, key = g.args[a.i]
+            if type(base) is not Ref or g.ops[base.i] not in ("list", "tuple", "dict", "item"):
+                return None
+            if g.ops[base.i] == "item":
+                inner = self.container(base)
+                if inner is None:
+                    return None
+                base = inner
+            part = _part(g, base, key)
+            if type(part) is not Ref:
+                return None
+            a, seen = part, seen + 1
+        return a if g.ops[a.i] in ("list", "tuple", "dict") else None
 
     def _tangent_of_own(self, j: int) -> bool:
         """Whether node j is the tangent step of a derivative on the function's own scene (a derivative
@@ -683,6 +707,9 @@ class _Derivative:
             if bop == "prim":               # the component ``key`` of a nested derivative's flow
                 keys, vals = g.args[ba[2].i]
                 return self.dref(vals[keys.index(key)]) if key in keys else None
+            if bop == "item":               # a part of a part of a container
+                part = _part(g, self.container(base), key)
+                return d(part) if type(part) is Ref else None
             if bop == "dict":
                 keys, vals = ba
                 return d(vals[keys.index(key)]) if key in keys else None
@@ -737,6 +764,18 @@ AT_POINT = "stiefelsym.twisted.at_point"
 #: at another point of T*V (``twisted.at_point``) may be graph nodes: the point's values and the flow's
 #: components there are the point scene's own (computed at its generic point, then evaluated at the point)
 POINT_DERIVATIVES = "derivatives at the problem at another point"
+
+
+def _part(g: Graph, base: Any, key: Any) -> Any:
+    """The part ``key`` of a list, tuple or dict node ``base`` (None when there is no such part)."""
+    if type(base) is not Ref:
+        return None
+    op, a = g.ops[base.i], g.args[base.i]
+    if op == "dict":
+        return a[1][a[0].index(key)] if key in a[0] else None
+    if op in ("list", "tuple") and type(key) is int and -len(a) <= key < len(a):
+        return a[key]
+    return None
 
 
 def _claim_scene(g: Graph, scene: Any, new: Graph, derivative: bool = False) -> bool:
@@ -2191,6 +2230,9 @@ class _PointSecond(_PointDerivative):
             if bop == "prim":               # the component ``key`` of a nested derivative's flow
                 keys, vals = g.args[ba[2].i]
                 return self.dref(vals[keys.index(key)]) if key in keys else None
+            if bop == "item":               # a part of a part of a container
+                part = _part(g, self.container(base), key)
+                return d(part) if type(part) is Ref else None
             if bop == "dict":
                 return self.d2(ba[1][ba[0].index(key)]) if key in ba[0] else None
             return self.d2(ba[key])
