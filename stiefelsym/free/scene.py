@@ -1636,8 +1636,16 @@ class FreeTangentScene(FreeScene):
         dual numbers do not nest (a tangent scene's primitives are the letters moved once, a value of it is
         not a polynomial the derivation takes): the graph writes a nested derivative as nodes where the
         functions allow (see :mod:`stiefelsym.ir.derivative`), and what it leaves needs fixed sizes."""
-        raise refuse("a derivative along a flow nested in a derivative, in a form the graph does not write as "
-                     "nodes (the dimension-free scene's dual numbers do not nest)", self.tracker)
+        raise refuse(_NESTED_DUALS, self.tracker)
+
+    def tangent(self, flow: Mapping[str, Mat]) -> "FreeTangentScene":
+        """Refused (recorded): a tangent scene of a tangent scene (see :meth:`d`)."""
+        raise refuse(_NESTED_DUALS, self.tracker)
+
+
+#: the refusal of a derivative (or tangent scene) inside a function the free scene's dual numbers differentiate
+_NESTED_DUALS = ("a derivative along a flow nested in a derivative, in a form the graph does not write as nodes "
+                 "(the dimension-free scene's dual numbers do not nest)")
 
 
 #: the letters of a point of T*V (and of a second point): a function handed to a scene gets fresh ones

@@ -30,7 +30,10 @@ A body with an operation whose derivative the graph does not show (a nested
 derivative, gradient, flow or bracket, an engine step, an operator applied,
 the double point, a resolvent at a point-dependent μ) keeps its ``call`` node:
 the scene differentiates it as before.  :func:`coverage` says, per ``d`` node,
-whether it was transformed and, if not, why.
+whether it was transformed and, if not, why.  On a scene that says so (``NESTED_DERIVATIVES``: the
+dimension-free scene, whose dual numbers do not nest) a derivative nested in the function of another is
+written as nodes from the inside out (:func:`_nested`): the inner one over the enclosing function's scene,
+its tangent step's components then moving along the outer flow as the flow's parts do.
 
 ``s.gradient(H)`` of a number H built by matrix operations is rewritten the
 same way, in reverse mode: the adjoint of each node of H's body, from H down to
@@ -2227,12 +2230,6 @@ class _PointSecond(_PointDerivative):
         if op == "item":
             base, key = a
             bop, ba = g.ops[base.i], g.args[base.i]
-            if bop == "prim":               # the component ``key`` of a nested derivative's flow
-                keys, vals = g.args[ba[2].i]
-                return self.dref(vals[keys.index(key)]) if key in keys else None
-            if bop == "item":               # a part of a part of a container
-                part = _part(g, self.container(base), key)
-                return d(part) if type(part) is Ref else None
             if bop == "dict":
                 return self.d2(ba[1][ba[0].index(key)]) if key in ba[0] else None
             return self.d2(ba[key])
