@@ -776,7 +776,7 @@ def render_junit(results: Sequence[Result], meta: dict[str, Any] | None = None) 
 
     root = ET.Element("testsuites", name="stiefelsym", tests=str(len(results)),
                       failures=str(failures(results)), errors=str(errors(results)),
-                      time=f"{sum(r.seconds for r in results):.3f}")
+                      time=f"{sum(r.seconds or 0.0 for r in results):.3f}")
     by_section: dict[str, list[Result]] = {}
     for r in results:
         # a claims file's claim with a catalog claim's id is not filed under the paper's section of that id
@@ -784,11 +784,11 @@ def render_junit(results: Sequence[Result], meta: dict[str, Any] | None = None) 
     for sec, rs in sorted(by_section.items(), key=lambda kv: _section_key(kv[0])):
         suite = ET.SubElement(root, "testsuite", name=f"section {sec}" if sec else "other",
                               tests=str(len(rs)), failures=str(failures(rs)), errors=str(errors(rs)),
-                              skipped="0", time=f"{sum(r.seconds for r in rs):.3f}")
+                              skipped="0", time=f"{sum(r.seconds or 0.0 for r in rs):.3f}")
         for r in rs:
             case = ET.SubElement(suite, "testcase", name=_xml(case_name(r)),
                                  classname=_xml(f"stiefelsym.section{sec}.{r.claim}"),
-                                 time=f"{r.seconds:.3f}")
+                                 time=f"{r.seconds or 0.0:.3f}")
             detail = [r.line()] + ([r.message] if r.message else [])
             detail += [f"{k}: {v}" for k, v in witness_lines(r.witness, where="the record: --format json")]
             detail += [f"rerun: {r.rerun}"] if r.rerun else []
