@@ -128,8 +128,10 @@ class Result:
         # r = 1"); the size field keeps its one form for every dimension-free run
         scope = free_scope(self) if self.n is None and self.verdict == "proved" else "all n, r"
         scope = f" for {scope}" if scope != "all n, r" else ""
+        # (a record read back from results.json has no time: reports keep no timings)
+        took = "no time recorded" if self.seconds is None else f"{self.seconds:.2f}s"
         return (f"{self.claim}{var} {self.size} {self.method}: {self.verdict}{scope}{bound}"
-                f" ({self.seconds:.2f}s{seed}){tag}" + (f" -- {reason}" if reason else ""))
+                f" ({took}{seed}){tag}" + (f" -- {reason}" if reason else ""))
 
     def reason(self, limit: int | None = REASON_LIMIT) -> str:
         """Why the verdict, in one line (at most ``limit`` characters; None: all of it):
