@@ -2026,8 +2026,27 @@ def _checked_tangent(base: Scene, flow: Mapping[str, Any]) -> dict[str, Mat]:
                 unify(t, p, f"the {key}-component of a tangent vector", base.tracker)
         if v._coords:
             base.tracker.touch("matrices built entrywise")
-        out[key] = v
+        out[key] = v if v._field is base._field else _at_level_of(v, base, key)
     return out
+
+
+def _at_level_of(v: Mat, base: Scene, key: str) -> Mat:
+    """A component ``v`` of a tangent vector of ``base`` that is a value of an enclosing scene (a function's scene
+    of fewer dual levels: the outer point t.X handed to a derivative inside a function of u), as a matrix of
+    ``base``'s numbers, with a zero part at each level it lacks.  Taken as it is, the parts of its own levels
+    would be read as the parts of base's (t.X = X + ε₁U as X + ε₂U).  A value of no enclosing scene (a sibling
+    scene's, or a scene inside this one) is refused."""
+    chain = []
+    f = base._field
+    while f is not v._field:
+        chain.append(f)
+        f = getattr(f, "base", None)
+        if f is None:
+            raise TypeError(f"the {key}-component of a tangent vector is a value of a scene that does not enclose "
+                            "the one it moves (a flow must be made of values of its own scene or of an enclosing one)")
+    for f in reversed(chain):
+        v = v._dual(None, f, base.tracker)
+    return v
 
 
 def _on_its_space(on_n: Callable[[Mat], Mat], make_on_r: Callable[[], Callable[[Mat], Mat]]) -> Callable[[Mat], Mat]:
