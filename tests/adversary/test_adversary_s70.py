@@ -38,6 +38,13 @@ def test_a_claims_files_twin_of_a_catalog_claim_is_not_rendered_as_the_catalogs(
     for r in data["results"]:
         r["rerun"] = re.sub(r" --claims \S+", "", r["rerun"])
     (out / "results.json").write_text(json.dumps(data, indent=1))
+    # (stop 77: the twin's records say they shadow a catalog claim, which the claims loaded now deny)
+    refused = cli("report", "--results", str(out / "results.json"), "--report-dir", str(tmp_path / "rendered"))
+    assert refused.returncode == 2, refused.stdout[-2000:] + refused.stderr[-2000:]
+    assert "with the id of a catalog claim, and the claims loaded now say otherwise" in refused.stderr
+    for r in data["results"]:
+        assert r.pop("shadows") is True
+    (out / "results.json").write_text(json.dumps(data, indent=1))
     refused = cli("report", "--results", str(out / "results.json"), "--report-dir", str(tmp_path / "rendered"))
     assert refused.returncode == 2, refused.stdout[-2000:] + refused.stderr[-2000:]
     assert "whose graph is not their catalog claim's" in refused.stderr
