@@ -257,15 +257,34 @@ class Evaluator:
         if not _liftable(v):
             return v
         inner = frame.bind.get(frame.fn)
-        lift = getattr(type(inner), "_lift_primitive", None)
-        if lift is None:
+        if getattr(type(inner), "_lift_primitive", None) is None:
             return v
         owner = frame.parent
         while owner is not None and owner.memo is not memo:
             owner = owner.parent
-        if owner is None or getattr(inner, "base", None) is not owner.bind.get(owner.fn):
+        if owner is None:
             return v
-        return lift(inner, v, None)
+        home = owner.bind.get(owner.fn)
+        # the scenes from the function's own up to (not including) the one the value was computed on: the value
+        # is lifted once per level, from the outermost in (a value of a scene two levels up lifted once, or not at
+        # all, kept the ε of its own level, which the inner level's numbers took for theirs: review F2)
+        chain, sc = [], inner
+        while sc is not home and sc is not None:
+            chain.append(sc)
+            sc = getattr(sc, "base", None)
+        if sc is None:
+            if getattr(inner, "_field", None) is getattr(home, "_field", None):
+                return v
+            raise TypeError("a value computed on a scene that does not enclose the function reading it (a "
+                            "derivative or gradient taken on another scene inside a function): its numbers are "
+                            "of another level")
+        for sc in reversed(chain):
+            lift = getattr(type(sc), "_lift_primitive", None)
+            if lift is not None:
+                v = lift(sc, v, None)
+            elif getattr(sc, "_field", None) is not getattr(getattr(sc, "base", None), "_field", None):
+                raise TypeError("a value of an enclosing scene read through a scene that cannot lift it")
+        return v
 
 
     def arg(self, a: Any, frame: _Frame) -> Any:

@@ -80,3 +80,18 @@ def test_nested_derivatives_free_and_exact_agree_on_the_reviews_claims():
                     assert verdict not in ("proved", "checked", "numeric"), (path.name, method, cid)
                 if cid.endswith("-true"):
                     assert verdict != "fails", (path.name, method, cid)
+
+
+def test_a_value_of_a_scene_two_levels_up_is_lifted_at_every_level():
+    """Review F2 (s77/levels): a value of the scene t read in a function two levels below it (w inside u inside t,
+    or the scene of a gradient, bracket or Dirac flow taken in u's function) was lifted once, or not at all: its ε₁
+    was taken for the inner level's, and exact proved the false twins (checked by modular, numeric by float) of 15
+    pairs: factors, entries, inverses, resolvents, blocks, gradients, brackets, Dirac flows, along P.  The
+    evaluator now lifts such a value once per level, from the outermost in."""
+    for path in sorted((HERE / "levels").glob("skip_*.py")):
+        for method in ("exact", "modular", "float"):
+            for cid, verdict in _verdicts(path, method, "--size", "3,2").items():
+                if cid.endswith("-false"):
+                    assert verdict in ("fails", "error"), (path.name, method, cid, verdict)
+                elif cid.endswith("-true"):
+                    assert verdict in ("proved", "checked", "numeric"), (path.name, method, cid, verdict)
