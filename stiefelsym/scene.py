@@ -2034,8 +2034,15 @@ def _at_level_of(v: Mat, base: Scene, key: str) -> Mat:
     """A component ``v`` of a tangent vector of ``base`` that is a value of an enclosing scene (a function's scene
     of fewer dual levels: the outer point t.X handed to a derivative inside a function of u), as a matrix of
     ``base``'s numbers, with a zero part at each level it lacks.  Taken as it is, the parts of its own levels
-    would be read as the parts of base's (t.X = X + ε₁U as X + ε₂U).  A value of no enclosing scene (a sibling
-    scene's, or a scene inside this one) is refused."""
+    would be read as the parts of base's (t.X = X + ε₁U as X + ε₂U).  A value of a scene inside base's (a
+    derivative on the claim's scene along a flow of a function's scene) is left as it is; one of neither (a
+    sibling scene's) is refused."""
+    f = getattr(v._field, "base", None)
+    while f is not None:
+        if f is base._field:
+            return v        # a value of a scene inside base's (a flow that moves with an enclosing derivative): its
+            #                 numbers are of a higher level than base's, whose tangent the layered arithmetic takes
+        f = getattr(f, "base", None)
     chain = []
     f = base._field
     while f is not v._field:

@@ -927,13 +927,35 @@ class DualField(Field):
         return Dual(self.base.const(q), self.base.const(0))
 
     def lift(self, x):
+        if type(x) in LAYERED and tower_level(x) < self.level:
+            # a number of a field below this one's (a value of an enclosing scene): a constant here, its own ε
+            # kept in its level, never taken for this one's
+            return Dual(self.base.lift(x) if tower_level(x) < self.level - 1 else x, self.base.const(0))
         return x if isinstance(x, Dual) else Dual(x, self.base.const(0))
 
+    @property
+    def level(self) -> int:
+        """How many layers of engine numbers this field's numbers have (see :func:`tower_level`)."""
+        lv = self.__dict__.get("_level")
+        if lv is None:
+            lv = self.__dict__["_level"] = tower_level(self.const(0))
+        return lv
+
+    def _above(self, x) -> bool:
+        """Whether x is a number of a field built over this one (a value of the scene of a function inside this
+        scene's, handed to one of its methods): the helpers below take it part by part, each part a number of
+        this field or again of one above it, never reading its parts as this field's value and ε-part."""
+        return type(x) is Dual and tower_level(x) > self.level
+
     def is_zero(self, x):
+        if self._above(x):
+            return self.is_zero(x.a) and self.is_zero(x.b)
         x = self.lift(x)
         return self.base.is_zero(x.a) and self.base.is_zero(x.b)
 
     def is_exact_zero(self, x):
+        if self._above(x):
+            return self.is_exact_zero(x.a) and self.is_exact_zero(x.b)
         x = self.lift(x)
         return self.base.is_exact_zero(x.a) and self.base.is_exact_zero(x.b)
 
@@ -944,6 +966,8 @@ class DualField(Field):
         return Dual(base.absorb(a.a, g.a, b.a), base.absorb(base.absorb(a.b, g.a, b.b), g.b, b.a))
 
     def normalize(self, x):
+        if self._above(x):
+            return Dual(self.normalize(x.a), self.normalize(x.b))
         x = self.lift(x)
         return Dual(self.base.normalize(x.a), self.base.normalize(x.b))
 

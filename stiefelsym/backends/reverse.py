@@ -167,7 +167,18 @@ class RevField(Field):
         return Rev(self.base.const(q))
 
     def lift(self, x):
+        if type(x) in LAYERED and tower_level(x) < self.level:
+            # a number of a field below this one's: a constant of the tape, its own layers kept (see DualField.lift)
+            return Rev(self.base.lift(x) if tower_level(x) < self.level - 1 else x)
         return x if isinstance(x, Rev) else Rev(x)
+
+    @property
+    def level(self) -> int:
+        """How many layers of engine numbers this field's numbers have (see :func:`tower_level`)."""
+        lv = self.__dict__.get("_level")
+        if lv is None:
+            lv = self.__dict__["_level"] = tower_level(self.const(0))
+        return lv
 
     def normalize(self, x):
         return x
