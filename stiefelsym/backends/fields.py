@@ -111,6 +111,15 @@ class Field:
     #: map applied to diagonal entries by Mat.trace (None: entries are scalars)
     entry_trace = None
 
+    @property
+    def level(self) -> int:
+        """How many layers of engine numbers (dual, reverse, degree-paired) this field's numbers have (see
+        :func:`tower_level`): a dual or reverse field lifts a number of a lower level as a constant."""
+        lv = self.__dict__.get("_level")
+        if lv is None:
+            lv = self.__dict__["_level"] = tower_level(self.const(0))
+        return lv
+
     def const(self, q: int | Fraction) -> Any:
         raise NotImplementedError
 
@@ -932,14 +941,6 @@ class DualField(Field):
             # kept in its level, never taken for this one's
             return Dual(self.base.lift(x) if tower_level(x) < self.level - 1 else x, self.base.const(0))
         return x if isinstance(x, Dual) else Dual(x, self.base.const(0))
-
-    @property
-    def level(self) -> int:
-        """How many layers of engine numbers this field's numbers have (see :func:`tower_level`)."""
-        lv = self.__dict__.get("_level")
-        if lv is None:
-            lv = self.__dict__["_level"] = tower_level(self.const(0))
-        return lv
 
     def _above(self, x) -> bool:
         """Whether x is a number of a field built over this one (a value of the scene of a function inside this

@@ -172,14 +172,6 @@ class RevField(Field):
             return Rev(self.base.lift(x) if tower_level(x) < self.level - 1 else x)
         return x if isinstance(x, Rev) else Rev(x)
 
-    @property
-    def level(self) -> int:
-        """How many layers of engine numbers this field's numbers have (see :func:`tower_level`)."""
-        lv = self.__dict__.get("_level")
-        if lv is None:
-            lv = self.__dict__["_level"] = tower_level(self.const(0))
-        return lv
-
     def normalize(self, x):
         return x
 
