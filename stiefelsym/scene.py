@@ -26,9 +26,10 @@ from typing import Any, Callable, Mapping
 
 import numpy as np
 
-from stiefelsym.backends.fields import DegreeField, Dual, DualField, Field, FloatField, DegenerateError
+from stiefelsym.backends.fields import LAYERED, DegreeField, Dual, DualField, Field, FloatField, DegenerateError
 from stiefelsym.backends.polyfield import SymbolicField
-from stiefelsym.backends.matrix import CoordinateTracker, Mat, block, check_element, definite, scalar_matrix, unify
+from stiefelsym.backends.matrix import (DEEPER_NUMBER, CoordinateTracker, Mat, _deeper, block, check_element, definite,
+                                       scalar_matrix, unify)
 from stiefelsym.backends.native import _binop, _buf, backend
 from stiefelsym.ir.trace import generic_kind_problem
 from stiefelsym.backends.reverse import Rev, RevField, RevMat, Unsupported, gradient as rev_gradient, leaf as rev_leaf
@@ -1163,7 +1164,8 @@ class Scene(PaperObjects):
 
     def resolvent(self, mu: Scalar) -> Mat:
         """(mu I_n - A)^{-1}."""
-        mu = mu
+        if type(mu) in LAYERED and _deeper(mu, self._field):
+            raise TypeError(DEEPER_NUMBER)
 
         def build():
             if self.chart == "cayley":
@@ -1796,7 +1798,8 @@ class Scene(PaperObjects):
     def d(self, F: Function, flow: Flow | Mapping[str, Mat]) -> Any:
         """The derivative of F (a function of the scene) along a flow."""
         tangent = flow.tangent() if isinstance(flow, Flow) else dict(flow)
-        value = _derivative_part(F(self.tangent(tangent)), self)
+        ts = self.tangent(tangent)
+        value = _derivative_part(F(ts), self, getattr(ts, "under", self._field))
         return _opaque(self, value)
 
 
@@ -1918,8 +1921,18 @@ class TangentScene(_LiftedScene):
 
     def __init__(self, base: Scene, flow: Mapping[str, Mat]) -> None:
         self.base = base
-        self.flow = _checked_tangent(base, flow)
-        super().__init__(base.n, base.r, DualField(base._field), chart=base.chart, rng=base._rng,
+        flow = _checked_tangent(base, flow)
+        #: the field the dual numbers of this scene are built over: the base scene's, or, for a flow made of
+        #: values of a scene inside the base scene's function (t.d along u.X, u a scene of a function inside
+        #: t's), that scene's field, so that this scene's ε is a level of its own above every level the flow
+        #: carries (the flow's ε is never taken for this one's); the base scene's primitives are lifted to it
+        #: as constants of the levels they lack
+        self.under = _flow_field(base, flow)
+        if self.under is not base._field:
+            flow = {k: _lifted_to(v, self.under, base.tracker, f"the {k}-component of a tangent vector")
+                    for k, v in flow.items()}
+        self.flow = flow
+        super().__init__(base.n, base.r, DualField(self.under), chart=base.chart, rng=base._rng,
                          component=base.component, realization=base.realization,
                          options=base._options, tracker=base.tracker)
         self._params, self._param_blocks = base._params, base._param_blocks
@@ -1945,7 +1958,8 @@ class TangentScene(_LiftedScene):
         the derivative B' - B'^T, B' = P' X^T + P X'^T (P', X' the flow's; a missing one is 0)."""
         b = self.base
         dX, dP = self.flow.get("X"), self.flow.get("P")
-        if not self._field.exact or any(v is not None and v._field is not b._field for v in (dX, dP)):
+        if (not self._field.exact or self.under is not b._field
+                or any(v is not None and v._field is not b._field for v in (dX, dP))):
             return PaperObjects.Phi.fget(self)
 
         def build():
@@ -1959,7 +1973,10 @@ class TangentScene(_LiftedScene):
         return self._cached("Phi", build)
 
     def _lift(self, M: Any, dot: Mat | None = None) -> Any:
+        under = self.under
         if isinstance(M, Mat):
+            if M._field is not under:
+                M = _lifted_to(M, under, self.tracker, "a primitive of the scene")
             return M._dual(dot, self._field, self.tracker)
         if isinstance(M, list):
             return [self._lift(x) for x in M]
@@ -1967,7 +1984,34 @@ class TangentScene(_LiftedScene):
             return tuple(self._lift(x) for x in M)
         if callable(M):
             return M
-        return Dual(M, self.base._field.const(0))
+        if under is not self.base._field:
+            M = under.lift(M)
+        return Dual(M, under.const(0))
+
+
+class ConstantScene(_LiftedScene):
+    """The base scene's problem over a field built on the base scene's own (the numbers of a scene inside a
+    function of it, some dual levels deeper): every primitive of the base scene a constant there, with a zero part
+    at each level it lacks.  The problem at a point given by values of such a scene (twisted.at_point) is taken
+    on it, so that the point's derivative parts stay in their levels and a derivative taken there gets a level
+    of its own above them."""
+
+    def __init__(self, base: Scene, field: Field) -> None:
+        self.base = base
+        super().__init__(base.n, base.r, field, chart=base.chart, rng=base._rng, component=base.component,
+                         realization=base.realization, options=base._options, tracker=base.tracker)
+        self._params, self._param_blocks = base._params, base._param_blocks
+
+    def _lift_primitive(self, M: Any, key: str | None) -> Any:
+        if isinstance(M, Mat):
+            return M if M._field is self._field else _lifted_to(M, self._field, self.tracker, "a primitive of the scene")
+        if isinstance(M, list):
+            return [self._lift_primitive(x, None) for x in M]
+        if isinstance(M, tuple):
+            return tuple(self._lift_primitive(x, None) for x in M)
+        if callable(M):
+            return M
+        return self._field.lift(M)
 
 
 class ReverseScene(_LiftedScene):
@@ -2037,23 +2081,55 @@ def _at_level_of(v: Mat, base: Scene, key: str) -> Mat:
     would be read as the parts of base's (t.X = X + ε₁U as X + ε₂U).  A value of a scene inside base's (a
     derivative on the claim's scene along a flow of a function's scene) is left as it is; one of neither (a
     sibling scene's) is refused."""
-    f = getattr(v._field, "base", None)
+    if _built_over(v._field, base._field):
+        return v        # a value of a scene inside base's (a flow that moves with an enclosing derivative): the
+        #                 tangent scene is built over its field (see TangentScene.under)
+    if not _built_over(base._field, v._field):
+        raise TypeError(f"the {key}-component of a tangent vector is a value of a scene that does not enclose "
+                        "the one it moves (a flow must be made of values of its own scene or of an enclosing one)")
+    return _lifted_to(v, base._field, base.tracker, f"the {key}-component of a tangent vector")
+
+
+def _built_over(f: Any, g: Any) -> bool:
+    """Whether the field f is g or a field built over g (its base, or its base's base, ...)."""
     while f is not None:
-        if f is base._field:
-            return v        # a value of a scene inside base's (a flow that moves with an enclosing derivative): its
-            #                 numbers are of a higher level than base's, whose tangent the layered arithmetic takes
+        if f is g:
+            return True
         f = getattr(f, "base", None)
+    return False
+
+
+def _lifted_to(v: Mat, field: Any, tracker: Any, what: str) -> Mat:
+    """The matrix v of a field below ``field`` (``field`` is built over v's, through dual levels) as a matrix of
+    ``field``'s numbers: a constant, with a zero part at each level v lacks."""
     chain = []
-    f = base._field
+    f = field
     while f is not v._field:
+        if not isinstance(f, DualField):
+            raise TypeError(f"{what} is a value of another scene's numbers (not a derivative level below this one's)")
         chain.append(f)
-        f = getattr(f, "base", None)
-        if f is None:
-            raise TypeError(f"the {key}-component of a tangent vector is a value of a scene that does not enclose "
-                            "the one it moves (a flow must be made of values of its own scene or of an enclosing one)")
+        f = f.base
     for f in reversed(chain):
-        v = v._dual(None, f, base.tracker)
+        v = v._dual(None, f, tracker)
     return v
+
+
+def _flow_field(base: Scene, flow: Mapping[str, Mat]) -> Any:
+    """The field a tangent scene of ``base`` along ``flow`` is built over: base's own, or the highest field among
+    the flow's components that is built over base's (values of scenes inside base's function), which must then
+    hold every other component's field (one chain of levels: components of two sibling scenes are refused)."""
+    top = base._field
+    for key, v in flow.items():
+        f = v._field
+        if f is top or _built_over(top, f):
+            continue
+        if _built_over(f, top):
+            top = f
+            continue
+        raise TypeError(f"the {key}-component of a tangent vector is a value of a scene on another chain of derivative "
+                        "levels than the other components' (a flow must be made of values of one scene and of "
+                        "scenes enclosing it)")
+    return top
 
 
 def _on_its_space(on_n: Callable[[Mat], Mat], make_on_r: Callable[[], Callable[[Mat], Mat]]) -> Callable[[Mat], Mat]:
@@ -2089,29 +2165,33 @@ def _flatten_value(v: Any, symmetric_lists: bool) -> list[Any]:
     return [v]
 
 
-def _derivative_part(v: Any, scene: Scene) -> Any:
-    """The ε-part of a value over the dual numbers (a Mat, a scalar, or a dict/list/tuple of
-    them): whole matrices natively where the dual backend holds them."""
-    if isinstance(v, Mat) and v._n is not None and type(v._n) is tuple and getattr(v._field, "base", None) is scene._field:
-        return Mat._wrap_native(v._n[1], scene._field, v.tags, scene.tracker, v._coords)
+def _derivative_part(v: Any, scene: Scene, field: Any = None) -> Any:
+    """The ε-part of a value over the dual numbers built over ``field`` (the scene's own by default; see
+    TangentScene.under) (a Mat, a scalar, or a dict/list/tuple of them): whole matrices natively where the dual
+    backend holds them."""
+    field = scene._field if field is None else field
+    if isinstance(v, Mat) and v._n is not None and type(v._n) is tuple and getattr(v._field, "base", None) is field:
+        return Mat._wrap_native(v._n[1], field, v.tags, scene.tracker, v._coords)
     if isinstance(v, dict):
-        return {k: _derivative_part(x, scene) for k, x in v.items()}
+        return {k: _derivative_part(x, scene, field) for k, x in v.items()}
     if isinstance(v, (list, tuple)):
-        return type(v)(_derivative_part(x, scene) for x in v)
-    return map_entries(v, lambda x: x.b if isinstance(x, Dual) else scene.const(0), scene)
+        return type(v)(_derivative_part(x, scene, field) for x in v)
+    return map_entries(v, lambda x: x.b if isinstance(x, Dual) else field.const(0), scene, field)
 
 
-def map_entries(v: Any, f, scene: Any) -> Any:
-    """Apply f to every entry of a value (a Mat, a scalar, or a dict/list/tuple of them)."""
+def map_entries(v: Any, f, scene: Any, field: Any = None) -> Any:
+    """Apply f to every entry of a value (a Mat, a scalar, or a dict/list/tuple of them); the matrices of the
+    result are of ``field`` (the scene's by default)."""
+    field = scene._field if field is None else field
     if isinstance(v, Mat):
         a = np.empty(v._a.shape, dtype=object)
         for idx, x in np.ndenumerate(v._a):
             a[idx] = f(x)
-        return Mat._wrap(a, scene._field, v.tags, scene.tracker, v._coords)
+        return Mat._wrap(a, field, v.tags, scene.tracker, v._coords)
     if isinstance(v, dict):
-        return {k: map_entries(x, f, scene) for k, x in v.items()}
+        return {k: map_entries(x, f, scene, field) for k, x in v.items()}
     if isinstance(v, (list, tuple)):
-        return type(v)(map_entries(x, f, scene) for x in v)
+        return type(v)(map_entries(x, f, scene, field) for x in v)
     return f(v)
 
 

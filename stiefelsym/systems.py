@@ -54,7 +54,7 @@ from typing import Any, Callable, Hashable, Mapping, Sequence
 import numpy as np
 
 from stiefelsym import scene as scene_module
-from stiefelsym.ir.trace import PRIMITIVES, TraceScene, primitive
+from stiefelsym.ir.trace import PRIMITIVES, STEP_GRAPH_CHECKS, TraceScene, primitive
 from stiefelsym.backends.matrix import Mat, NeedsCoordinates, _coordinates, _refused, backend, block, definite
 from stiefelsym.backends.reverse import Node, Rev, RevMat, Unsupported, gradient as rev_gradient, leaf as rev_leaf
 from stiefelsym.scene import double_point_of, HermitianComponents, ReverseScene, Scene, _LiftedScene
@@ -578,6 +578,7 @@ def euler_lagrange(s: Scene, T: Callable[[Scene, dict], Any], U: Callable[[Scene
 
     layout = _Layout(s, coords, position)
     K = _kinetic_matrix(s, T, velocity, layout)
+    _check_quadratic(s, lambda v: T(s, v), velocity, layout, K)
     gradU = _jacobian(s, U, position, layout)                                      # 1 × N
     Ja = _jacobian(s, lambda t, q: _flat(constraints(t, q)), position, layout)    # m × N
     # D²g(q̇, q̇) = d/dε [Dg(q + εq̇)·q̇]
@@ -585,6 +586,45 @@ def euler_lagrange(s: Scene, T: Callable[[Scene, dict], Any], U: Callable[[Scene
     hess = _flat(derivative(s, lambda t, z: derivative(t, g, z, {("q", k): z[("v", k)] for k in names}),
                             point, along))
     return _solve_euler_lagrange(layout, K, gradU, Ja, hess, position)
+
+
+#: what the Euler-Lagrange equations refuse of a kinetic energy (every method: see the dimension-free scene's)
+NOT_QUADRATIC = ("a kinetic energy that is not a quadratic form in the velocities (T(v) − T(0) = ½vᵀKv with "
+                 "constant K): the equations are solved for one")
+
+
+def _check_quadratic(s: Scene, value: Callable[[Point], Any], velocity: Point, layout: _Layout, K: np.ndarray) -> None:
+    """Refuse a kinetic energy that is not a quadratic form in the velocities: T(w) − T(0) = ½cᵀKc at a generic
+    velocity w = Σ c_b b_b (the coefficients c the engine's own parameters, which no claim can name; drawn
+    without changing the draws that follow).  K is read from the gradients at the basis vectors, which see
+    the quadratic part only: a linear or cubic term (a product of entries no basis vector makes nonzero
+    together) would otherwise be dropped without a word, and the equations solved for another Lagrangian.
+    Decided where the field's test of zero decides it (exact fields, error bounds); a homogeneous part of
+    degree k != 2 in w vanishes with the difference."""
+    from stiefelsym.brackets import _AFFINE_CHECKED, _field_in
+    if not _field_in(s, _AFFINE_CHECKED) or not layout.coords:
+        return
+    field = s._field
+    N = len(layout.coords)
+    rng = getattr(s, "_rng", None)
+    state = rng.getstate() if rng is not None else None
+    try:
+        c = s._general_params("euler_lagrange:w", N, 1, ("?", "?"))._view()[:, 0]
+    finally:
+        if state is not None:
+            rng.setstate(state)
+    zero_v = {k: M - M for k, M in velocity.items()}
+    w = dict(zero_v)
+    for (name, B), cb in zip(layout.coords, c):
+        w[name] = w[name] + B * cb
+    quad = field.const(0)
+    for a in range(N):
+        row = field.const(0)
+        for b in range(N):
+            row = row + K[a, b] * c[b]
+        quad = quad + c[a] * row
+    if not field.is_zero(value(w) - value(zero_v) - quad * field.const(Fraction(1, 2))):
+        raise ValueError(f"euler_lagrange: {NOT_QUADRATIC}")
 
 
 def _solve_euler_lagrange(layout: _Layout, K: np.ndarray, gradU: np.ndarray, Ja: np.ndarray, hess: list,
@@ -933,6 +973,7 @@ def graph_euler_lagrange(s: Scene, position: Point, velocity: Point, coords: Coo
         g = dict(zip(wrt, kinetic(s, {k: (zero_v[k] + B if k == name else zero_v[k]) for k in velocity})[:n]))
         cols.append({k: _difference(g[k], g0[k]) for k in wrt})
     K = layout.project(cols).T.copy()                  # column b: ∇T(b_b) − ∇T(0) = K b_b
+    _check_quadratic(s, lambda v: kinetic(s, v)[n], velocity, layout, K)
     gradU = layout.project([dict(zip(wrt, potential[:n]))])
     flat = [_flat(column(s, {name: B})) for name, B in layout.coords]
     Ja = np.empty((len(flat[0]) if flat else 0, len(flat)), dtype=object)
@@ -949,8 +990,59 @@ PRIMITIVES[f"{__name__}.stiefel_pairs_flow:graph"] = graph_pairs_flow
 # the functions that need the engine's scene (coordinates, derivatives at points of other phase
 # spaces) are single steps of a claim's graph; the points and the complex helpers are traced with it
 derivative = primitive(derivative, like={"F": "point"}, returns=("like", "F"))
+#: what a kinetic energy's function may read of its scene besides its velocity: the problem's constants (the
+#: position, the point, flows and brackets are refused: the equations are solved for constant coefficients)
+KINETIC_CONSTANT_ATTRS = frozenset({"A", "Ainv", "In", "Ir", "a", "eps", "kappa", "lam", "eta", "theta", "xi", "zeta"})
+KINETIC_CONSTANT_CALLS = frozenset({"conj", "const", "fresh", "general_params", "generic", "identity", "mat", "q",
+                                    "realify", "resolvent", "scalar", "scalar_matrix", "sym_operator", "tr", "zeros"})
+KINETIC_CONSTANT_STEPS = frozenset(f"stiefelsym.{x}" for x in (
+    "systems.real_coordinates", "systems.complex_coordinates", "systems.hermitian_entries", "twisted.basis_vector",
+    "twisted.block_projector", "twisted.reflection", "twisted.last_basis_vector", "twisted.leading_basis_vectors",
+    "twisted.first_basis_vectors", "twisted.coordinate_projector", "twisted.kernel_frame",
+    "twisted.kernel_annihilator", "twisted.magnetic_matrix"))
+
+
+def _kinetic_reads_point(g: Any, fn: int) -> str | None:
+    """What the body of the traced function ``fn`` (a kinetic energy T(t, v)) reads that may move with the point,
+    directly or through a value of the claim it closes over (the position z["X"], t.X, a flow, a bracket), or
+    None: its own velocity, constants, the scene's constant parameters and steps of constants only."""
+    seen: set = set()
+    stack = [fn]
+    while stack:
+        j = stack.pop()
+        if j in seen:
+            continue
+        seen.add(j)
+        op, a = g.ops[j], g.args[j]
+        if op == "param":
+            continue            # a function's variable (its last argument only gives its shape)
+        if op == "attr" and a[1] not in KINETIC_CONSTANT_ATTRS:
+            return f"the scene's {a[1]}"
+        if op == "call" and a[1] not in KINETIC_CONSTANT_CALLS:
+            return f"the scene's {a[1]}(...)"
+        if op == "prim" and a[0].qualname not in KINETIC_CONSTANT_STEPS:
+            return f"the engine step {a[0].qualname.rsplit('.', 1)[-1]}"
+        stack.extend(g.refs(j))
+    return None
+
+
+def _traced_kinetic(t: Any, ref: Any) -> None:
+    """While a claim is traced: the kinetic energy given to :func:`euler_lagrange` must have constant
+    coefficients, decided from the graph (the same refusal for every method): K is read from its gradients at the
+    point, and d/dt ∂T/∂q̇ = K q̈ and ∂T/∂q = 0 hold only where T does not move with the position."""
+    a = t.g.args[ref.i]
+    T = a[2] if len(a) > 2 else None
+    if type(T) is not type(ref) or t.g.ops[T.i] != "fn":
+        return
+    what = _kinetic_reads_point(t.g, T.i)
+    if what is not None:
+        t.refuse(f"a kinetic energy whose coefficients may depend on the position (it reads {what}): T(t, v) is a "
+                 "quadratic form in the velocities v with constant coefficients")
+
+
 euler_lagrange = primitive(euler_lagrange, returns=2, like={"T": "velocity", "U": "position",
                                                             "constraints": "position"})
+STEP_GRAPH_CHECKS["stiefelsym.systems.euler_lagrange"] = _traced_kinetic
 hamiltonian_flow = primitive(hamiltonian_flow, returns=2, like={"H": "point", "constraints": "point"})
 stiefel_pairs_flow = primitive(stiefel_pairs_flow, like={"H": "point"})
 real_coordinates = primitive(real_coordinates)

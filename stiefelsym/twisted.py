@@ -24,7 +24,7 @@ from typing import Any, Callable, Mapping
 
 from stiefelsym.backends.fields import DegenerateError, Dual, DualField
 from stiefelsym.backends.matrix import Mat, _refused
-from stiefelsym.scene import Flow, Scene
+from stiefelsym.scene import ConstantScene, Flow, Scene, _built_over, _lifted_to
 from stiefelsym.ir.trace import PRIMITIVES, TraceScene, primitive
 
 Function = Callable[[Any], Any]
@@ -469,11 +469,27 @@ def at_point(s, X: Mat, P: Mat) -> Scene:
     for M, name in ((X, "X"), (P, "P")):
         if not isinstance(M, Mat) or M._a.shape != (s.n, s.r):
             raise TypeError(f"{name} must be an n x r matrix of the scene")
+    # the field of the point: s's, or that of a scene inside s's function whose values X or P are (their
+    # derivative parts kept in their levels: the problem is then taken over that field, s's primitives constants)
+    top = s.field
+    for M, name in ((X, "X"), (P, "P")):
+        if M._field is top or _built_over(top, M._field):
+            continue
+        if not _built_over(M._field, top):
+            raise TypeError(f"{name} is a value of a scene on another chain of derivative levels than the "
+                            "scene's and the other component's")
+        top = M._field
+    if top is not s.field:
+        s = ConstantScene(s, top)
+    point = []
+    for M, name in ((X, "X"), (P, "P")):
+        if M._field is not top:
+            M = _lifted_to(M, top, s.tracker, name)     # a value of an enclosing scene: a constant here
+        point.append(Mat._wrap(M._a.copy(), top, ("n", "r"), s.tracker, M._coords))
     other = copy.copy(s)            # the same problem: field, chart, parameters, record, options
     other._cache = {}
     other._point_given = True       # on V only if the claim made it so: no closed form is taken on trust
-    other._cache["point"] = (Mat._wrap(X._a.copy(), s.field, ("n", "r"), s.tracker, X._coords),
-                             Mat._wrap(P._a.copy(), s.field, ("n", "r"), s.tracker, P._coords))
+    other._cache["point"] = tuple(point)
     return other
 
 

@@ -28,7 +28,7 @@ from typing import Any, Sequence
 import numpy as np
 
 from stiefelsym._lazy import symengine_opaque
-from stiefelsym.backends.fields import Deg, Dual, ErrNum, Field
+from stiefelsym.backends.fields import LAYERED, Deg, Dual, ErrNum, Field, tower_level
 from stiefelsym.backends.native import backend
 
 
@@ -243,6 +243,20 @@ def is_scene_number(x: Any) -> bool:
     return t.__module__.startswith(("flint", "symengine", "mpmath")) and t in _library_types()
 
 
+#: the refusal of a number of a derivative level deeper than the field it is made an entry of
+DEEPER_NUMBER = ("a value of a scene inside this scene's function (a derivative's scene, one or more levels deeper) "
+                 "cannot be an entry of this scene's matrices: its derivative parts would be read as this scene's; "
+                 "build the matrix on that scene (w.mat(...), w.scalar_matrix(...), w.resolvent(...))")
+
+
+def _deeper(x: Any, field: Field) -> bool:
+    """Whether x is a number of a field built over ``field`` (more layers of engine numbers than its own; a dual
+    number of plain Python numbers is no layer's)."""
+    if type(x) is Dual and type(x.a) in (int, Fraction) and type(x.b) in (int, Fraction):
+        return False
+    return tower_level(x) > field.level
+
+
 def check_element(field: Field, x: Any) -> Any:
     """x as an entry of a matrix or a residual over ``field``: integers and fractions become
     constants of the field; anything else must be a number of the engine's or its libraries'
@@ -250,6 +264,8 @@ def check_element(field: Field, x: Any) -> Any:
     t = type(x)
     if t is int or t is Fraction:
         return field.const(x)
+    if t in LAYERED and _deeper(x, field):
+        raise TypeError(DEEPER_NUMBER)
     if t is Dual:
         check_element(field, x.a)
         check_element(field, x.b)

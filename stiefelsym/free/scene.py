@@ -823,6 +823,7 @@ class FreeScene(PaperObjects):
                                 L.adjoint.latex)[0] for k, L in DOUBLE.items()}
         back = {fresh[k]: _w(L) for k, L in DOUBLE.items()}
         kinetic = self._trace_form(T(self, {k: self._const_mat(_w(fresh[k + "dot"])) for k in ("X", "Y")}))
+        _refuse_unless_quadratic(kinetic, [fresh[k + "dot"] for k in ("X", "Y")], self.tracker)
         potential = self._trace_form(U(self, {k: self._const_mat(_w(fresh[k])) for k in ("X", "Y")}))
         force = trace(_w(M.adjoint) * D0)
         equations = []
@@ -897,6 +898,7 @@ class FreeScene(PaperObjects):
             acc[L].adjoint = Letter(f"dd{L}t", "r", "n")
             acc[L].adjoint.adjoint = acc[L]
         kinetic = self._trace_form(T(self, {"Z": at(CUd, CVd)}))
+        _refuse_unless_quadratic(kinetic, [fresh[CUd], fresh[CVd]], self.tracker)
         potential = self._trace_form(U(self, {"Z": at(CU, CV)}))
         force = trace(_w(W0_RE) * g1) + trace(_w(W0_IM) * g2)
         positions = {CU, CV, CUt, CVt} | {x for L in (CU, CV) for x in (fresh[L], fresh[L].adjoint)}
@@ -1589,6 +1591,19 @@ class FreeScene(PaperObjects):
         if q != normal_form:
             raise RewritingError("the certificate's normal form is not the reduction's")
         return Certificate(p, q, terms)
+
+
+def _refuse_unless_quadratic(kinetic: NCPoly, velocities: list, tracker: Any) -> None:
+    """Refuse a kinetic energy that is not a quadratic form in the velocities (a constant aside), as the fixed
+    sizes refuse it (systems.NOT_QUADRATIC): d/dt ∂T/∂q̇ is ∂T/∂q̇ at q̇ ↦ q̈ for such a form only (a linear term
+    would leave its constant gradient, a cubic one a term quadratic in q̈).  T(2v) − T(0) − 4(T(v) − T(0)) is
+    the sum of (2ᵏ − 4)T_k over T's homogeneous parts T_k in the velocity letters, which are free letters (no
+    rule relates them): it has no term exactly when every T_k with k != 0, 2 is 0."""
+    zero = substitute(kinetic, {L: NCPoly.zero(L.row, L.col) for L in velocities})
+    twice = substitute(kinetic, {L: _w(L) * 2 for L in velocities})
+    if (twice - zero - (kinetic - zero) * 4).expand().terms:
+        from stiefelsym.systems import NOT_QUADRATIC
+        raise refuse(NOT_QUADRATIC, tracker)
 
 
 class FreeTangentScene(FreeScene):

@@ -97,6 +97,11 @@ def primitive(f: Callable | None = None, *, returns: Any = None, like: dict[str,
     return wrapper
 
 
+#: checks of an engine step's node made from the graph once its functions are traced (qualname -> check(trace,
+#: ref)): they refuse (``trace.refuse``) what the step is not defined for, the same refusal whatever the method
+STEP_GRAPH_CHECKS: dict[str, Callable[["Trace", Any], None]] = {}
+
+
 def named(qualname: str, obj: Any) -> Any:
     """Register an engine constant (an operator space, an engine function) a claim may pass on."""
     refuse_registration("an engine constant (named)")
@@ -1513,6 +1518,9 @@ class Trace:
             ref = self.g.add("prim", (Named(qual),) + tuple(self.arg(a, True) for a in args) + self.kw(kw))
         finally:
             self._like = {}
+        check = STEP_GRAPH_CHECKS.get(qual)
+        if check is not None:
+            check(self, ref)
         if returns == "scene":
             return TraceScene(self, ref)
         if type(returns) is tuple:              # ("like", name): shaped like a function argument's value
