@@ -578,7 +578,7 @@ def euler_lagrange(s: Scene, T: Callable[[Scene, dict], Any], U: Callable[[Scene
 
     layout = _Layout(s, coords, position)
     K = _kinetic_matrix(s, T, velocity, layout)
-    _check_quadratic(s, lambda v: T(s, v), velocity, layout, K)
+    _check_quadratic(s, lambda v: T(s, v), velocity, layout)
     gradU = _jacobian(s, U, position, layout)                                      # 1 × N
     Ja = _jacobian(s, lambda t, q: _flat(constraints(t, q)), position, layout)    # m × N
     # D²g(q̇, q̇) = d/dε [Dg(q + εq̇)·q̇]
@@ -589,22 +589,23 @@ def euler_lagrange(s: Scene, T: Callable[[Scene, dict], Any], U: Callable[[Scene
 
 
 #: what the Euler-Lagrange equations refuse of a kinetic energy (every method: see the dimension-free scene's)
-NOT_QUADRATIC = ("a kinetic energy that is not a quadratic form in the velocities (T(v) − T(0) = ½vᵀKv with "
-                 "constant K): the equations are solved for one")
+NOT_QUADRATIC = ("a kinetic energy that is not a quadratic form in the velocities (plus a linear and a constant "
+                 "term): the equations are solved for one")
 
 
-def _check_quadratic(s: Scene, value: Callable[[Point], Any], velocity: Point, layout: _Layout, K: np.ndarray) -> None:
-    """Refuse a kinetic energy that is not a quadratic form in the velocities: T(w) − T(0) = ½cᵀKc at a generic
-    velocity w = Σ c_b b_b (the coefficients c the engine's own parameters, which no claim can name; drawn
-    without changing the draws that follow).  K is read from the gradients at the basis vectors, which see
-    the quadratic part only: a linear or cubic term (a product of entries no basis vector makes nonzero
-    together) would otherwise be dropped without a word, and the equations solved for another Lagrangian.
-    Decided where the field's test of zero decides it (exact fields, error bounds); a homogeneous part of
-    degree k != 2 in w vanishes with the difference."""
+def _check_quadratic(s: Scene, value: Callable[[Point], Any], velocity: Point, layout: _Layout) -> None:
+    """Refuse a kinetic energy that is not of degree at most 2 in the velocities: its third difference
+    T(3w) − 3T(2w) + 3T(w) − T(0) = Σ_k (3ᵏ − 3·2ᵏ + 3 − 0ᵏ) T_k(w), whose coefficient is 0 for k <= 2 and
+    positive for k >= 3, must vanish at a generic velocity w = Σ c_b b_b (the coefficients c the engine's own
+    parameters, which no claim can name; drawn without changing the draws that follow).  K is read from the
+    gradients at the basis vectors, which see the quadratic part only: a cubic term (a product of entries no
+    basis vector makes nonzero together) would otherwise be dropped without a word, and the equations solved
+    for another Lagrangian.  (A linear term with constant coefficients changes nothing: d/dt of a constant
+    covector is 0, and K does not see it.)  Decided where the field's test of zero decides it (exact fields,
+    error bounds)."""
     from stiefelsym.brackets import _AFFINE_CHECKED, _field_in
     if not _field_in(s, _AFFINE_CHECKED) or not layout.coords:
         return
-    field = s._field
     N = len(layout.coords)
     rng = getattr(s, "_rng", None)
     state = rng.getstate() if rng is not None else None
@@ -614,16 +615,14 @@ def _check_quadratic(s: Scene, value: Callable[[Point], Any], velocity: Point, l
         if state is not None:
             rng.setstate(state)
     zero_v = {k: M - M for k, M in velocity.items()}
-    w = dict(zero_v)
-    for (name, B), cb in zip(layout.coords, c):
-        w[name] = w[name] + B * cb
-    quad = field.const(0)
-    for a in range(N):
-        row = field.const(0)
-        for b in range(N):
-            row = row + K[a, b] * c[b]
-        quad = quad + c[a] * row
-    if not field.is_zero(value(w) - value(zero_v) - quad * field.const(Fraction(1, 2))):
+
+    def at(m: int) -> Any:
+        w = dict(zero_v)
+        for (name, B), cb in zip(layout.coords, c):
+            w[name] = w[name] + B * (cb * m)
+        return value(w)
+    third = at(3) - at(2) * 3 + at(1) * 3 - value(zero_v)
+    if not s._field.is_zero(third):
         raise ValueError(f"euler_lagrange: {NOT_QUADRATIC}")
 
 
@@ -973,7 +972,7 @@ def graph_euler_lagrange(s: Scene, position: Point, velocity: Point, coords: Coo
         g = dict(zip(wrt, kinetic(s, {k: (zero_v[k] + B if k == name else zero_v[k]) for k in velocity})[:n]))
         cols.append({k: _difference(g[k], g0[k]) for k in wrt})
     K = layout.project(cols).T.copy()                  # column b: ∇T(b_b) − ∇T(0) = K b_b
-    _check_quadratic(s, lambda v: kinetic(s, v)[n], velocity, layout, K)
+    _check_quadratic(s, lambda v: kinetic(s, v)[n], velocity, layout)
     gradU = layout.project([dict(zip(wrt, potential[:n]))])
     flat = [_flat(column(s, {name: B})) for name, B in layout.coords]
     Ja = np.empty((len(flat[0]) if flat else 0, len(flat)), dtype=object)

@@ -832,8 +832,11 @@ class FreeScene(PaperObjects):
             if momentum.letters() & {DX, DY, DXt, DYt, fresh["X"], fresh["Y"], fresh["X"].adjoint,
                                      fresh["Y"].adjoint}:
                 raise refuse("a kinetic energy whose coefficients depend on the position", self.tracker)
-            # d/dt ∂T/∂q̇ = ∂T/∂q̇ at q̇ ↦ q̈ (constant coefficients): F's own velocities only
-            momentum = substitute(momentum, {fresh[k + "dot"]: _w(acc[k]) for k in ("X", "Y")})
+            # d/dt ∂T/∂q̇ = ∂T/∂q̇ at q̇ ↦ q̈ less its value at q̇ = 0 (constant coefficients, degree <= 2: ∂T/∂q̇ =
+            # Kq̇ + b, whose derivative is Kq̈): F's own velocities only
+            momentum = (substitute(momentum, {fresh[k + "dot"]: _w(acc[k]) for k in ("X", "Y")})
+                        - substitute(momentum, {fresh[k + "dot"]: NCPoly.zero(fresh[k + "dot"].row,
+                                                                              fresh[k + "dot"].col) for k in ("X", "Y")}))
             equations.append(substitute(momentum, back) + substitute(gradient(potential, fresh[key]), back)
                              - gradient(force, L))
         nf = self.system.normal_form
@@ -907,8 +910,10 @@ class FreeScene(PaperObjects):
             momentum = gradient(kinetic, fresh[qd])
             if momentum.letters() & positions:
                 raise refuse("a kinetic energy whose coefficients depend on the position", self.tracker)
-            # d/dt ∂T/∂q̇ = ∂T/∂q̇ at q̇ ↦ q̈ (constant coefficients): T's own velocities only
-            momentum = substitute(momentum, {fresh[CUd]: _w(acc[CU]), fresh[CVd]: _w(acc[CV])})
+            # d/dt ∂T/∂q̇ = ∂T/∂q̇ at q̇ ↦ q̈ less its value at q̇ = 0 (constant coefficients, degree <= 2): T's own
+            # velocities only
+            momentum = (substitute(momentum, {fresh[CUd]: _w(acc[CU]), fresh[CVd]: _w(acc[CV])})
+                        - substitute(momentum, {fresh[L]: NCPoly.zero(fresh[L].row, fresh[L].col) for L in (CUd, CVd)}))
             equations.append(substitute(momentum, back) + substitute(gradient(potential, fresh[q]), back)
                              - gradient(force, q))
         nf = self.system.normal_form
@@ -1594,14 +1599,13 @@ class FreeScene(PaperObjects):
 
 
 def _refuse_unless_quadratic(kinetic: NCPoly, velocities: list, tracker: Any) -> None:
-    """Refuse a kinetic energy that is not a quadratic form in the velocities (a constant aside), as the fixed
-    sizes refuse it (systems.NOT_QUADRATIC): d/dt ∂T/∂q̇ is ∂T/∂q̇ at q̇ ↦ q̈ for such a form only (a linear term
-    would leave its constant gradient, a cubic one a term quadratic in q̈).  T(2v) − T(0) − 4(T(v) − T(0)) is
-    the sum of (2ᵏ − 4)T_k over T's homogeneous parts T_k in the velocity letters, which are free letters (no
-    rule relates them): it has no term exactly when every T_k with k != 0, 2 is 0."""
-    zero = substitute(kinetic, {L: NCPoly.zero(L.row, L.col) for L in velocities})
-    twice = substitute(kinetic, {L: _w(L) * 2 for L in velocities})
-    if (twice - zero - (kinetic - zero) * 4).expand().terms:
+    """Refuse a kinetic energy of degree above 2 in the velocities, as the fixed sizes refuse it
+    (systems.NOT_QUADRATIC): its third difference T(3v) − 3T(2v) + 3T(v) − T(0) is Σ_k (3ᵏ − 3·2ᵏ + 3 − 0ᵏ)T_k
+    over T's homogeneous parts T_k in the velocity letters, with coefficient 0 for k <= 2 and positive for
+    k >= 3; the letters are free (no rule relates them), so it has no term exactly when every T_k, k >= 3, is 0."""
+    def scaled(m: int) -> NCPoly:
+        return substitute(kinetic, {L: (_w(L) * m if m else NCPoly.zero(L.row, L.col)) for L in velocities})
+    if (scaled(3) - scaled(2) * 3 + scaled(1) * 3 - scaled(0)).expand().terms:
         from stiefelsym.systems import NOT_QUADRATIC
         raise refuse(NOT_QUADRATIC, tracker)
 

@@ -52,3 +52,18 @@ def el_constant_ok(s):
         return t.tr(v["X"].T @ v["Y"]) * (t.tr(t.A) + 1)
     _, acc = _run(s, T)
     return {"Xdd": acc["X"] - acc["X"]}
+
+
+@claim("o78-el-cubic-trace", paper="prep", kind="id", sizes=[(2, 1), (3, 2)])
+def el_cubic_trace(s):
+    """False: T = tr(ẊᵀẎ) + tr(ẊᵀẊẎᵀG) (a cubic trace form, G constant) has (D-eq)'s accelerations.  Refused
+    by every method, the dimension-free one included (it took ∂T/∂q̇ at q̇ ↦ q̈, quadratic in q̈)."""
+    G = s.generic("G", "n", "r")
+    z = double_point(s)
+
+    def T(t, v):
+        return t.tr(v["X"].T @ v["Y"]) + t.tr(v["X"].T @ v["X"] @ v["Y"].T @ G)
+    _, acc = _run(s, T)
+    X, Y, Xd, Yd, A = z["X"], z["Y"], z["Xdot"], z["Ydot"], s.A
+    Lam = X.T @ A @ Y - Xd.T @ Yd
+    return {"Xdd": acc["X"] - (-(A @ X) + X @ Lam.T), "Ydd": acc["Y"] - (-(A @ Y) + Y @ Lam)}
