@@ -20,7 +20,8 @@ TWO_R_LE_N = admissible(n_max=6, n_min=2, where=lambda n, r: 2 * r <= n, conditi
 ERR = "false twin (s78 hidden round)"
 
 
-@claim("n78-thimm-plus-sign", paper=("iso",), kind="pb", sizes=SMALL, fails_at=lambda n, r: r >= 2, erratum=ERR)
+@claim("n78-thimm-plus-sign", paper=("iso",), kind="pb", sizes=SMALL,
+       fails_at=lambda n, r: r >= 2 and n >= 3, erratum=ERR)
 def thimm_plus_sign(s):
     """Twin of h78-thimm-invariant-bracket: the (+) Lie–Poisson sign {F, G} = +⟨Φ, [∇f̃, ∇g̃]⟩."""
     S = s.generic("S", "r", "r", "sym")
