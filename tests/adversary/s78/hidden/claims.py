@@ -197,3 +197,44 @@ def dual_lax_a_symplectic(s):
     A0 = block([[K, I], [Lam - s.lam * I, -K.T]])
     AE = block([[Z, I], [Lam - s.lam * I, Z]])
     return {"J A0 sym": J @ A0 - (J @ A0).T, "J AE sym": J @ AE - (J @ AE).T}
+
+
+# 13 -----------------------------------------------------------------------------------------------------------
+from stiefelsym import Rank
+from stiefelsym.systems import complex_point, ctranspose, re_trace, real_complex_point, realify_real
+
+
+def _psi0(t, z):
+    """ψ₀ = ZᵀŻ̄ − ŻᵀZ̄ (realified)."""
+    return ctranspose(t, z["Z"]) @ t.conj(z["Zdot"]) - ctranspose(t, z["Zdot"]) @ t.conj(z["Z"])
+
+
+def _u1_sum(t, z):
+    """M = ŻZ̄ᵀ − ZŻ̄ᵀ (n × n), whose diagonal entries are the ψ_j of (u(1)): Σ_j ψ_j = tr M."""
+    return z["Zdot"] @ ctranspose(t, t.conj(z["Z"])) - z["Z"] @ ctranspose(t, t.conj(z["Zdot"]))
+
+
+@claim("h78-complex-u1-center", paper=("u(1)", "W-eq", "dual-complex"), kind="id", sizes=SMALL,
+       statement=r"\sum_{j=1}^n\psi_j=-\tr\psi_0,\quad \psi_0|_{Z=\bar Z=X,\ \dot Z=P}=X^TP-P^TX=\Psi")
+def complex_u1_center(s):
+    """App. 2, after (u(1)): for ρ₁ = … = ρₙ the left U(1)-action Z ↦ ρZ is the action of the centre of the right
+    U(r) (Z ↦ Zρ), so its momentum Σⱼ ψⱼ (ψⱼ = Σᵢ ż_i^j z̄_i^j − z_i^j ż̄_i^j) is −tr ψ₀ (ψ₀ = ZᵀŻ̄ − ŻᵀZ̄, the u(r)
+    momentum); at real data (V(n, r) ⊂ W(n, r)) ψ₀ is the right momentum Ψ = XᵀP − PᵀX of (momentum_right_map)."""
+    z = complex_point(s)
+    In_i = s.realify(s.In - s.In, s.In)
+    Ir_i = s.realify(s.Ir - s.Ir, s.Ir)
+    M, p0 = _u1_sum(s, z), _psi0(s, z)
+    zr = real_complex_point(s)
+    return {"Re(tr M + tr psi_0)": re_trace(s, M) + re_trace(s, p0),
+            "Im(tr M + tr psi_0)": re_trace(s, In_i @ M) + re_trace(s, Ir_i @ p0),
+            "psi_0 at real data - Psi": _psi0(s, zr) - realify_real(s, s.Psi)}
+
+
+# 14 -----------------------------------------------------------------------------------------------------------
+@claim("h78-psi-generic-rank", paper=("NEUMANN", "dim_fol", "torus", "momentum_right_map"), kind="dim",
+       sizes=admissible(n_max=5), statement=r"\operatorname{rank}\Psi(X,P)=2\left[\tfrac r2\right]\ \text{(generic)}")
+def psi_generic_rank(s):
+    """§6, Theorem NEUMANN and its proof: the generic trajectories are those where the momentum Ψ has maximal rank,
+    which is 2[r/2] (an element of so(r)); (dim_fol) counts [r/2] Casimirs J_k for this rank."""
+    r = int(s.r)
+    return {"rank Psi": Rank(s.Psi, 2 * (r // 2))}

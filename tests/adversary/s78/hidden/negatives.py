@@ -150,3 +150,36 @@ def dual_lax_a_sign(s):
     A0 = block([[K, I], [Lam - s.lam * I, K.T]])
     AE = block([[Z, I], [Lam - s.lam * I, Z]])
     return {"J A0 sym": J @ A0 - (J @ A0).T, "J AE sym": J @ AE - (J @ AE).T}
+
+
+from stiefelsym import Rank
+from stiefelsym.systems import complex_point, ctranspose, re_trace, real_complex_point, realify_real
+
+
+def _psi0(t, z):
+    return ctranspose(t, z["Z"]) @ t.conj(z["Zdot"]) - ctranspose(t, z["Zdot"]) @ t.conj(z["Z"])
+
+
+def _u1_sum(t, z):
+    return z["Zdot"] @ ctranspose(t, t.conj(z["Z"])) - z["Z"] @ ctranspose(t, t.conj(z["Zdot"]))
+
+
+@claim("n78-complex-u1-center-sign", paper=("u(1)",), kind="id", sizes=SMALL, fails_at=lambda n, r: True,
+       erratum=ERR)
+def complex_u1_center_sign(s):
+    """Twin of h78-complex-u1-center: Σⱼ ψⱼ = +tr ψ₀."""
+    z = complex_point(s)
+    In_i = s.realify(s.In - s.In, s.In)
+    Ir_i = s.realify(s.Ir - s.Ir, s.Ir)
+    M, p0 = _u1_sum(s, z), _psi0(s, z)
+    zr = real_complex_point(s)
+    return {"Re(tr M - tr psi_0)": re_trace(s, M) - re_trace(s, p0),
+            "Im(tr M - tr psi_0)": re_trace(s, In_i @ M) - re_trace(s, Ir_i @ p0),
+            "psi_0 at real data - Psi": _psi0(s, zr) - realify_real(s, s.Psi)}
+
+
+@claim("n78-psi-generic-rank-r", paper=("NEUMANN",), kind="dim", sizes=admissible(n_max=5),
+       fails_at=lambda n, r: r % 2 == 1, erratum=ERR)
+def psi_generic_rank_r(s):
+    """Twin of h78-psi-generic-rank: rank Ψ = r (false for odd r: Ψ ∈ so(r))."""
+    return {"rank Psi": Rank(s.Psi, int(s.r))}
