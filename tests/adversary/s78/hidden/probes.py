@@ -58,3 +58,15 @@ def generic_r_commutes_psi(s):
     S = s.generic("S", "r", "r", "sym")
     M = s.X.T @ s.A @ s.X
     return {"[S, X^TAX]": S @ M - M @ S}
+
+
+@claim("p78-xtp-zero-r1", kind="id", sizes=admissible(n_max=5, r_max=1, condition="r = 1"), erratum="")
+def xtp_zero_r1(s):
+    """TRUE at r = 1 only (XᵀP + PᵀX = 0 is 2XᵀP = 0 there): a dimension-free proof must be one 'at r = 1'."""
+    return {"X^T P": s.X.T @ s.P}
+
+
+@claim("p78-xxt-identity-r-n", kind="id", sizes=admissible(n_max=4, r_is_n=True, condition="r = n"), erratum="")
+def xxt_identity_r_n(s):
+    """TRUE at r = n only (XXᵀ = I there): a dimension-free proof must be one 'at r = n'."""
+    return {"XX^T - I": s.X @ s.X.T - s.In}
