@@ -425,8 +425,8 @@ def _check_affine(s: Any, form: Callable[[Any, Mat], Scalar], space: Space, base
     """Refuse a form that is not affine on the space, as the dimension-free scene refuses it: the sum
     over a basis is the gradient only of an affine form (for any other it is a secant through the basis
     vectors).  form(w) − form(0) − <G, w> must vanish at a generic element w of the space, whose
-    parameters are the engine's own (no claim can name them; drawn without changing the draws that
-    follow).  Its homogeneous parts of degree k >= 2 in w vanish with it, so the form is affine."""
+    parameters are the engine's own (Scene._engine_params: independent of the claim's draws, which they do not
+    change).  Its homogeneous parts of degree k >= 2 in w vanish with it, so the form is affine."""
     field = getattr(s, "_field", None)
     if not _field_in(s, _AFFINE_CHECKED):
         return
@@ -448,16 +448,10 @@ def _field_in(s: Any, fields: tuple[str, ...]) -> bool:
 
 
 def _engine_element(s: Any, space: Space, tag: str) -> Mat:
-    """A generic element of the space whose parameters are the engine's own (named by ``tag``, which no
-    claim can name), drawn without changing the draws that follow."""
+    """A generic element of the space whose parameters are the engine's own (``Scene._engine_params``: independent
+    of the claim's draws, which they do not change)."""
     m = space.size(s)
-    rng = getattr(s, "_rng", None)
-    state = rng.getstate() if rng is not None else None
-    try:
-        return space.project(s._general_params(f"{tag}:w:{space.name}", m, m, (space.index, space.index)))
-    finally:
-        if state is not None:
-            rng.setstate(state)
+    return space.project(s._engine_params(f"{tag}:w:{space.name}", m, m, (space.index, space.index)))
 
 
 _affine_form_gradient = form_gradient
@@ -482,7 +476,7 @@ def polynomial_gradient(s: Any, form: Callable[[Any, Mat], Scalar], point: Mat, 
     One step of the IR whose degree is the engine's, never a claim's: the degree d of the form in y is
     derived here, as the least d <= MAX_FORM_DEGREE whose (d+1)-th finite difference
     Δ_w^{d+1} form(point) vanishes along a generic element w of the space (parameters of the engine's
-    own, drawn without changing the draws that follow); for a polynomial of degree D > d its part of
+    own, Scene._engine_params: independent of the claim's draws); for a polynomial of degree D > d its part of
     degree D in w is a nonzero multiple of the top part of the form at w, so it does not vanish, and a
     form that is not a polynomial has no such d and is refused.  The derivative along each basis vector
     is then the exact interpolation of t ↦ form(point + t·e) at t = 0, ..., d (for d <= 1:

@@ -517,6 +517,26 @@ class Scene(PaperObjects):
                 a[i, j] = self._param(param_name(name, i, j))
         return M
 
+    def _engine_params(self, tag: str, m: int, k: int, tags=("?", "?")) -> Mat:
+        """An m x k matrix of parameters of the engine's own (a generic velocity or element at which a step
+        checks a claim's function), independent of the claim's draws: over a field of numbers drawn from a
+        generator seeded by a digest of the tag, a count of such draws and the state of the scene's generator,
+        which they neither read from nor advance (the claim's next draws are the same with or without them,
+        and equal none of them but by chance); over a symbolic field, symbols of names no claim can give.
+        Drawn as the scene's own parameters would be, they were the claim's next draws (stop 78)."""
+        count = self.__dict__.get("_engine_draws", 0) + 1
+        self.__dict__["_engine_draws"] = count
+        rng = self._rng
+        import hashlib
+        seed = hashlib.sha256(repr((tag, count, rng.getstate() if rng is not None else None)).encode()).digest()
+        own = random.Random(int.from_bytes(seed[:16], "big"))
+        M = self.zeros(m, k, tags)
+        a = M._a
+        for i in range(m):
+            for j in range(k):
+                a[i, j] = self._field.param(f"{tag}#{count}:{param_name('w', i, j)}", own)
+        return M
+
     def _normal_params(self, name: str, n: int, r: int) -> Mat:
         """The n x r matrix Z of the normal part (I − XXᵀ)Z of a tangent vector at a point X of a
         symbolic chart, with its first r rows 0 and the rest fresh parameters (named by their rows,
@@ -1914,6 +1934,9 @@ class _LiftedScene(Scene):
 
     def _general_params(self, name, m, k, tags):
         return self._lift_primitive(self.base._general_params(name, m, k, tags), None)
+
+    def _engine_params(self, tag, m, k, tags=("?", "?")):
+        return self._lift_primitive(self.base._engine_params(tag, m, k, tags), None)
 
 
 class TangentScene(_LiftedScene):

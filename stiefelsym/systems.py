@@ -597,7 +597,7 @@ def _check_quadratic(s: Scene, value: Callable[[Point], Any], velocity: Point, l
     """Refuse a kinetic energy that is not of degree at most 2 in the velocities: its third difference
     T(3w) − 3T(2w) + 3T(w) − T(0) = Σ_k (3ᵏ − 3·2ᵏ + 3 − 0ᵏ) T_k(w), whose coefficient is 0 for k <= 2 and
     positive for k >= 3, must vanish at a generic velocity w = Σ c_b b_b (the coefficients c the engine's own
-    parameters, which no claim can name; drawn without changing the draws that follow).  K is read from the
+    parameters, Scene._engine_params: independent of the claim's draws).  K is read from the
     gradients at the basis vectors, which see the quadratic part only: a cubic term (a product of entries no
     basis vector makes nonzero together) would otherwise be dropped without a word, and the equations solved
     for another Lagrangian.  (A linear term with constant coefficients changes nothing: d/dt of a constant
@@ -607,13 +607,7 @@ def _check_quadratic(s: Scene, value: Callable[[Point], Any], velocity: Point, l
     if not _field_in(s, _AFFINE_CHECKED) or not layout.coords:
         return
     N = len(layout.coords)
-    rng = getattr(s, "_rng", None)
-    state = rng.getstate() if rng is not None else None
-    try:
-        c = s._general_params("euler_lagrange:w", N, 1, ("?", "?"))._view()[:, 0]
-    finally:
-        if state is not None:
-            rng.setstate(state)
+    c = s._engine_params("euler_lagrange:w", N, 1)._view()[:, 0]
     zero_v = {k: M - M for k, M in velocity.items()}
 
     def at(m: int) -> Any:
@@ -1002,9 +996,12 @@ KINETIC_CONSTANT_STEPS = frozenset(f"stiefelsym.{x}" for x in (
 
 
 def _kinetic_reads_point(g: Any, fn: int) -> str | None:
-    """What the body of the traced function ``fn`` (a kinetic energy T(t, v)) reads that may move with the point,
-    directly or through a value of the claim it closes over (the position z["X"], t.X, a flow, a bracket), or
-    None: its own velocity, constants, the scene's constant parameters and steps of constants only."""
+    """What the body of the traced function ``fn`` (the kinetic energy T(t, v), the potential U(t, q) or the
+    constraints g(t, q)) reads that may move with the point other than its own variable, directly or through a
+    value of the claim it closes over (the position z["X"], t.X, a flow, a bracket, a variable of a function
+    enclosing it), or None: its own variable, those of functions inside it, constants, the scene's constant
+    parameters and steps of constants only."""
+    own = {g.args[fn][0]}
     seen: set = set()
     stack = [fn]
     while stack:
@@ -1013,8 +1010,12 @@ def _kinetic_reads_point(g: Any, fn: int) -> str | None:
             continue
         seen.add(j)
         op, a = g.ops[j], g.args[j]
+        if op == "fn":
+            own.add(a[0])       # a function inside it: its variables are bound there
         if op == "param":
-            continue            # a function's variable (its last argument only gives its shape)
+            if a[0] not in own:
+                return "a variable of a function enclosing it"
+            continue            # its own variable (its last argument only gives its shape)
         if op == "attr" and a[1] not in KINETIC_CONSTANT_ATTRS:
             return f"the scene's {a[1]}"
         if op == "call" and a[1] not in KINETIC_CONSTANT_CALLS:
@@ -1027,16 +1028,23 @@ def _kinetic_reads_point(g: Any, fn: int) -> str | None:
 
 def _traced_kinetic(t: Any, ref: Any) -> None:
     """While a claim is traced: the kinetic energy given to :func:`euler_lagrange` must have constant
-    coefficients, decided from the graph (the same refusal for every method): K is read from its gradients at the
-    point, and d/dt ∂T/∂q̇ = K q̈ and ∂T/∂q = 0 hold only where T does not move with the position."""
+    coefficients, and the potential and the constraints must depend on the position through their variable
+    only, decided from the graph (the same refusal for every method): K is read from T's gradients at the
+    point, and d/dt ∂T/∂q̇ = K q̈ and ∂T/∂q = 0 hold only where T does not move with the position; ∇U and Dg
+    are taken in their variable q, so a dependence on the velocity or on the point by another road (a value
+    closed over) would be a constant there, and the equations those of another Lagrangian."""
     a = t.g.args[ref.i]
-    T = a[2] if len(a) > 2 else None
-    if type(T) is not type(ref) or t.g.ops[T.i] != "fn":
-        return
-    what = _kinetic_reads_point(t.g, T.i)
-    if what is not None:
-        t.refuse(f"a kinetic energy whose coefficients may depend on the position (it reads {what}): T(t, v) is a "
-                 "quadratic form in the velocities v with constant coefficients")
+    for i, who, must in ((2, "a kinetic energy", "T(t, v) is a quadratic form in the velocities v with constant "
+                                                 "coefficients"),
+                         (3, "a potential", "U(t, q) depends on the position q only, through q"),
+                         (4, "constraints", "g(t, q) depend on the position q only, through q")):
+        f = a[i] if len(a) > i else None
+        if type(f) is not type(ref) or t.g.ops[f.i] != "fn":
+            continue
+        what = _kinetic_reads_point(t.g, f.i)
+        if what is not None:
+            t.refuse(f"{who} that may depend on the point other than through its variable (it reads {what}): "
+                     f"{must}")
 
 
 euler_lagrange = primitive(euler_lagrange, returns=2, like={"T": "velocity", "U": "position",

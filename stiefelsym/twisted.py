@@ -24,7 +24,7 @@ from typing import Any, Callable, Mapping
 
 from stiefelsym.backends.fields import DegenerateError, Dual, DualField
 from stiefelsym.backends.matrix import Mat, _refused
-from stiefelsym.scene import ConstantScene, Flow, Scene, _built_over, _lifted_to
+from stiefelsym.scene import ConstantScene, Flow, Scene, _LiftedScene, _built_over, _lifted_to
 from stiefelsym.ir.trace import PRIMITIVES, TraceScene, primitive
 
 Function = Callable[[Any], Any]
@@ -479,7 +479,10 @@ def at_point(s, X: Mat, P: Mat) -> Scene:
             raise TypeError(f"{name} is a value of a scene on another chain of derivative levels than the "
                             "scene's and the other component's")
         top = M._field
-    if top is not s.field:
+    if top is not s.field or isinstance(s, _LiftedScene):
+        # over a field built on s's, or from a derivative's or a gradient's scene, whose primitives are its
+        # base's lifted and some of whose values have closed forms in its base's point (a tangent scene's Φ,
+        # Ψ): a scene of its own, every primitive a constant of it and every value computed from the point
         s = ConstantScene(s, top)
     point = []
     for M, name in ((X, "X"), (P, "P")):
